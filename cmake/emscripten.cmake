@@ -1,0 +1,33 @@
+# Every Emscripten flag of the project (Debian emscripten 3.1.6); included only when EMSCRIPTEN.
+set(NIWA_WARNINGS -Wall -Wextra -Wno-unused-command-line-argument -Werror)
+set(ENV{NODE_PATH} "/usr/share/nodejs")  # acorn for emcc's JS optimizer (TOOLCHAIN gotcha 1)
+
+# Header-only libraries through a folder of symlinks: never -I/usr/include (gotcha 2).
+set(NIWA_SYSINC ${CMAKE_BINARY_DIR}/sysinc)
+file(MAKE_DIRECTORY ${NIWA_SYSINC})
+foreach(entry glm nlohmann CLI tiny_gltf.h stb_image.h stb_image_write.h)
+  if(NOT EXISTS ${NIWA_SYSINC}/${entry})
+    file(CREATE_LINK /usr/include/${entry} ${NIWA_SYSINC}/${entry} SYMBOLIC)
+  endif()
+endforeach()
+if(NOT EXISTS ${NIWA_SYSINC}/stb_image.h AND EXISTS /usr/include/stb/stb_image.h)
+  file(CREATE_LINK /usr/include/stb/stb_image.h ${NIWA_SYSINC}/stb_image.h SYMBOLIC)
+endif()
+set(NIWA_THIRD_PARTY_INCLUDES ${NIWA_SYSINC})
+
+# C++ exceptions (nlohmann-json, CLI11, GoogleTest) as real WASM exceptions.
+add_compile_options(-fwasm-exceptions)
+add_link_options(-fwasm-exceptions -sALLOW_MEMORY_GROWTH=1)
+
+# Programs that run under node (CLI, tests, benchmarks): synchronous compile (gotcha 4) and the real
+# file system (gotcha 6).
+function(niwa_node_program target)
+  target_link_options(${target} PRIVATE -sWASM_ASYNC_COMPILATION=0 -sNODERAWFS=1 -sEXIT_RUNTIME=1
+                     )
+  set_target_properties(${target} PROPERTIES SUFFIX ".js")
+endfunction()
+
+# The web module: ES6 factory for the Web Worker, embind, no HTML (gotcha 3).
+set(NIWA_WEB_LINK_OPTIONS -lembind -sMODULARIZE=1 -sEXPORT_ES6=1 -sEXPORT_NAME=createNiwaModule
+    -sENVIRONMENT=worker -sFILESYSTEM=0)
+set(CMAKE_CROSSCOMPILING_EMULATOR node)

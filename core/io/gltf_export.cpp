@@ -1,0 +1,179 @@
+// Binary glTF 2.0 (.glb) export of a tree mesh with tinygltf, into memory (the one tinygltf TU).
+#include "io/gltf_export.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <sstream>
+
+#define TINYGLTF_IMPLEMENTATION
+#define TINYGLTF_NO_STB_IMAGE
+#define TINYGLTF_NO_STB_IMAGE_WRITE
+#define TINYGLTF_NO_EXTERNAL_IMAGE
+#ifndef TINYGLTF_USE_CPP14
+#define TINYGLTF_USE_CPP14
+#endif
+#include <tiny_gltf.h>
+
+namespace niwa {
+namespace {
+
+// glTF enums (spec 5.1.3, 5.11.2).
+constexpr int kArrayBuffer = 34962;
+constexpr int kElementArrayBuffer = 34963;
+
+struct MaterialSpec {
+  const char* name;
+  double r, g, b;
+  double roughness;
+  bool double_sided;
+};
+
+// Appends raw bytes to the buffer at a 4-byte aligned offset; returns the new bufferView's index.
+template <typename T>
+int AddBufferView(tinygltf::Model* model, const std::vector<T>& data, int target) {
+  std::vector<unsigned char>& buffer = model->buffers[0].data;
+  buffer.resize((buffer.size() + 3) / 4 * 4, 0);
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = buffer.size();
+  view.byteLength = data.size() * sizeof(T);
+  view.target = target;
+  std::size_t offset = buffer.size();
+  buffer.resize(offset + view.byteLength);
+  std::memcpy(buffer.data() + offset, data.data(), view.byteLength);
+  model->bufferViews.push_back(std::move(view));
+  return static_cast<int>(model->bufferViews.size()) - 1;
+}
+
+int AddAccessor(tinygltf::Model* model, int view, int component_type, int type, std::size_t count,
+                std::vector<double> min_values = {}, std::vector<double> max_values = {}) {
+  tinygltf::Accessor accessor;
+  accessor.bufferView = view;
+  accessor.byteOffset = 0;
+  accessor.componentType = component_type;
+  accessor.type = type;
+  accessor.count = count;
+  accessor.normalized = false;
+  accessor.minValues = std::move(min_values);
+  accessor.maxValues = std::move(max_values);
+  model->accessors.push_back(std::move(accessor));
+  return static_cast<int>(model->accessors.size()) - 1;
+}
+
+int AddMaterial(tinygltf::Model* model, const MaterialSpec& spec) {
+  tinygltf::Material material;
+  material.name = spec.name;
+  material.emissiveFactor = {0.0, 0.0, 0.0};  // tinygltf would otherwise write an empty array
+  material.doubleSided = spec.double_sided;
+  material.pbrMetallicRoughness.baseColorFactor = {spec.r, spec.g, spec.b, 1.0};
+  material.pbrMetallicRoughness.metallicFactor = 0.0;
+  material.pbrMetallicRoughness.roughnessFactor = spec.roughness;
+  model->materials.push_back(std::move(material));
+  return static_cast<int>(model->materials.size()) - 1;
+}
+
+// Checks the buffers of one primitive; returns "" or what is wrong.
+std::string CheckBuffers(const MeshBuffers& buffers, const char* name) {
+  std::size_t vertices = buffers.vertex_count();
+  if (buffers.positions.size() != vertices * 3 || buffers.normals.size() != vertices * 3 ||
+      buffers.uvs.size() != vertices * 2) {
+    return std::string(name) + ": positions, normals and uvs disagree on the vertex count";
+  }
+  if (buffers.indices.size() % 3 != 0) {
+    return std::string(name) + ": index count is not a multiple of 3";
+  }
+  if (vertices > std::numeric_limits<uint32_t>::max()) {
+    return std::string(name) + ": too many vertices for 32-bit indices";
+  }
+  for (uint32_t index : buffers.indices) {
+    if (index >= vertices) return std::string(name) + ": index out of range";
+  }
+  for (float x : buffers.positions) {
+    if (!std::isfinite(x)) return std::string(name) + ": position is not finite";
+  }
+  return "";
+}
+
+void AddPrimitive(tinygltf::Model* model, const MeshBuffers& buffers, const MaterialSpec& spec) {
+  std::vector<double> lo(3, std::numeric_limits<double>::infinity());
+  std::vector<double> hi(3, -std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < buffers.positions.size(); ++i) {
+    double x = static_cast<double>(buffers.positions[i]);  // exact float32 values, as required
+    lo[i % 3] = std::min(lo[i % 3], x);
+    hi[i % 3] = std::max(hi[i % 3], x);
+  }
+  std::size_t vertices = buffers.vertex_count();
+  tinygltf::Primitive primitive;
+  primitive.mode = TINYGLTF_MODE_TRIANGLES;
+  primitive.attributes["POSITION"] =
+      AddAccessor(model, AddBufferView(model, buffers.positions, kArrayBuffer),
+                  TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, vertices, lo, hi);
+  primitive.attributes["NORMAL"] =
+      AddAccessor(model, AddBufferView(model, buffers.normals, kArrayBuffer),
+                  TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, vertices);
+  primitive.attributes["TEXCOORD_0"] =
+      AddAccessor(model, AddBufferView(model, buffers.uvs, kArrayBuffer),
+                  TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, vertices);
+  primitive.indices = AddAccessor(model, AddBufferView(model, buffers.indices, kElementArrayBuffer),
+                                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
+                                  buffers.indices.size());
+  primitive.material = AddMaterial(model, spec);
+  model->meshes[0].primitives.push_back(std::move(primitive));
+}
+
+}  // namespace
+
+std::string WriteGlb(const TreeMesh& mesh, std::vector<unsigned char>* bytes) {
+  if (bytes == nullptr) return "no output buffer";
+  bytes->clear();
+  struct Part {
+    const MeshBuffers* buffers;
+    MaterialSpec material;
+  };
+  const Part parts[] = {
+      {&mesh.bark, {"bark", 0.36, 0.25, 0.17, 0.9, false}},
+      {&mesh.leaves, {"leaves", 0.25, 0.55, 0.18, 0.7, true}},
+      {&mesh.flowers, {"flowers", 0.98, 0.72, 0.80, 0.6, true}},
+  };
+  for (const Part& part : parts) {
+    std::string error = CheckBuffers(*part.buffers, part.material.name);
+    if (!error.empty()) return error;
+  }
+
+  tinygltf::Model model;
+  model.asset.version = "2.0";
+  model.asset.generator = "niwa";
+  tinygltf::Node node;
+  node.name = "tree";
+  bool any = std::any_of(std::begin(parts), std::end(parts),
+                         [](const Part& p) { return !p.buffers->indices.empty(); });
+  if (any) {
+    model.buffers.emplace_back();
+    model.meshes.emplace_back();
+    model.meshes[0].name = "tree";
+    for (const Part& part : parts) {
+      if (part.buffers->indices.empty()) continue;
+      AddPrimitive(&model, *part.buffers, part.material);
+    }
+    node.mesh = 0;
+  }
+  model.nodes.push_back(std::move(node));
+  tinygltf::Scene scene;
+  scene.name = "tree";
+  scene.nodes.push_back(0);
+  model.scenes.push_back(std::move(scene));
+  model.defaultScene = 0;
+
+  std::ostringstream stream;
+  tinygltf::TinyGLTF writer;
+  if (!writer.WriteGltfSceneToStream(&model, stream, false, true) || !stream) {
+    return "glTF serialization failed";
+  }
+  const std::string glb = stream.str();
+  bytes->assign(glb.begin(), glb.end());
+  return "";
+}
+
+}  // namespace niwa

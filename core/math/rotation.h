@@ -1,0 +1,49 @@
+// Small vector helpers for growth geometry: rotation about an axis and towards a target direction.
+#pragma once
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+namespace niwa {
+
+constexpr float kPi = 3.14159265358979323846f;
+inline float Radians(float degrees) { return degrees * (kPi / 180.0f); }
+
+// Rodrigues rotation of v about the unit axis by angle (radians).
+inline glm::vec3 RotateAbout(const glm::vec3& v, const glm::vec3& axis, float angle) {
+  float c = std::cos(angle), s = std::sin(angle);
+  return v * c + glm::cross(axis, v) * s + axis * (glm::dot(axis, v) * (1.0f - c));
+}
+
+// Unit vector perpendicular to unit v, stable for every v.
+inline glm::vec3 AnyPerpendicular(const glm::vec3& v) {
+  glm::vec3 other = std::fabs(v.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+  return glm::normalize(glm::cross(v, other));
+}
+
+// Angle in radians between unit vectors (thesis eqs. 2.6, 2.8).
+inline float AngleBetween(const glm::vec3& a, const glm::vec3& b) {
+  float d = glm::dot(a, b);
+  d = d > 1.0f ? 1.0f : (d < -1.0f ? -1.0f : d);
+  return std::acos(d);
+}
+
+// Rotates unit v by angle (radians) in the plane of v and unit target, towards target
+// (negative angle: away from it). Returns v unchanged when the two are parallel.
+inline glm::vec3 RotateToward(const glm::vec3& v, const glm::vec3& target, float angle) {
+  glm::vec3 axis = glm::cross(v, target);
+  float length = glm::length(axis);
+  if (length < 1e-6f) return v;
+  return glm::normalize(RotateAbout(v, axis / length, angle));
+}
+
+// Removes from v its component along unit n and normalizes; fallback when degenerate.
+inline glm::vec3 Orthonormalize(const glm::vec3& v, const glm::vec3& n) {
+  glm::vec3 p = v - n * glm::dot(v, n);
+  float length = glm::length(p);
+  return length < 1e-6f ? AnyPerpendicular(n) : p / length;
+}
+
+}  // namespace niwa

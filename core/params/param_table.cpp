@@ -1,0 +1,217 @@
+// Definition of every model parameter (thesis table 2.1 plus the choices documented in docs/growth-model.md).
+#include "params/param_table.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace niwa {
+namespace {
+
+using P = ParamId;
+
+// Defaults are the sakura column of thesis table 2.2. "a ~ b" ranges are split into *_low (value at
+// hormone 0, or for P_l at age 0) and *_high (value at hormone H_sat, or at age P_l_years).
+const std::array<ParamSpec, kParamCount> kTable = {{
+    {P::kAlphaT, "alpha_t", "α_t", "", 0.7, 0, 1, false, "hormone",
+     "Share of the parent's hormone inherited by the terminal shoot (eq. 2.1)."},
+    {P::kAlphaTl, "alpha_tl", "α_tl", "", 0.55, 0, 1, false, "hormone",
+     "Share of the parent's hormone inherited by a terminally-lateral shoot (eq. 2.1)."},
+    {P::kAlphaL, "alpha_l", "α_l", "", 0.4, 0, 1, false, "hormone",
+     "Share of the parent's hormone inherited by a lateral shoot (eq. 2.1)."},
+    {P::kBetaC, "beta_c", "β_c", "", 0.2, 0, 1, false, "hormone",
+     "Share of its initial hormone a new shoot keeps after growing (eq. 2.2)."},
+    {P::kBetaP, "beta_p", "β_p", "", 0.25, 0, 1, false, "hormone",
+     "Share of last year's hormone an older branch keeps (eq. 2.3)."},
+    {P::kHS, "h_s", "h_s", "", 0.2, 0, 5, false, "hormone",
+     "Hormone a dwarf shoot makes per unit of received light (eq. 2.2)."},
+    {P::kHL, "h_l", "h_l", "", 0.5, 0, 5, false, "hormone",
+     "Hormone a long shoot makes per unit of received light (eq. 2.2)."},
+    {P::kGamma, "gamma", "γ", "", 0.2, 0, 1, false, "hormone",
+     "Share of the children's hormone passed down to the parent branch (eq. 2.3)."},
+    {P::kHShort, "H_s", "H_s", "", 0.1, 0, 10, false, "hormone",
+     "Dwarf-shoot threshold: a shoot whose initial hormone is below it is a dwarf shoot."},
+    {P::kHInit, "H_init", "H_0", "", 1.0, 0, 10, false, "hormone",
+     "Initial hormone of the seedling's first shoot (not in the thesis; see docs)."},
+    {P::kHSat, "H_sat", "H_sat", "", 1.0, 0.01, 10, false, "hormone",
+     "Hormone at which the hormone-dependent ranges reach their second value (figs. 2.5, 2.6, 2.8)."},
+
+    {P::kNLow, "N_low", "N", "nodes", 6, 1, 100, true, "branching",
+     "Nodes per shoot at hormone 0 (first value of the range N in table 2.2)."},
+    {P::kNHigh, "N_high", "N", "nodes", 25, 1, 100, true, "branching",
+     "Nodes per shoot at hormone H_sat (second value of the range N in table 2.2)."},
+    {P::kDLow, "D_low", "D", "cm", 0.2, 0.01, 100, false, "branching",
+     "Internode length at hormone 0 (first value of the range D)."},
+    {P::kDHigh, "D_high", "D", "cm", 3.0, 0.01, 100, false, "branching",
+     "Internode length at hormone H_sat (second value of the range D)."},
+    {P::kDwarfInternodeRatio, "D_s_ratio", "D_s/D_l", "", 1.0, 0.01, 4, false, "branching",
+     "Dwarf-shoot internode length as a fraction of the long-shoot length (fig. 2.13)."},
+    {P::kBT, "B_t", "B_t", "buds", 1, 0, 1, true, "branching", "Terminal buds per shoot."},
+    {P::kBTl, "B_tl", "B_tl", "buds", 1, 0, 8, true, "branching",
+     "Terminally-lateral buds at the tip of each shoot."},
+    {P::kBL, "B_l", "B_l", "buds/node", 1, 0, 8, true, "branching",
+     "Lateral buds (and leaves) per node: 1 alternate, 2 decussate, 3+ verticillate."},
+    {P::kPhi, "phi", "ϕ", "turn", 0.4, 0, 1, false, "branching",
+     "Phyllotaxis: turn between successive nodes (1/2, 1/3, 2/5, 3/8; 1/4 for decussate)."},
+    {P::kThetaN, "theta_N", "θ_N", "deg", 0, -90, 90, false, "branching",
+     "Bend at each node of a sympodial shoot, alternating side (zigzag)."},
+    {P::kSympodial, "sympodial", "", "", 0, 0, 1, true, "branching",
+     "1: sympodial branching (no true terminal bud; the top lateral bud takes over)."},
+    {P::kPsiT, "psi_t", "ψ_t", "deg", 0, -90, 90, false, "branching",
+     "Branching angle of the terminal shoot from its parent's tip direction."},
+    {P::kPsiTl, "psi_tl", "ψ_tl", "deg", 45, -90, 90, false, "branching",
+     "Branching angle of terminally-lateral shoots."},
+    {P::kPsiL, "psi_l", "ψ_l", "deg", 45, -90, 90, false, "branching",
+     "Branching angle of lateral shoots."},
+    {P::kPTlS, "P_tl_s", "P_tl^s", "", 0, 0, 1, false, "branching",
+     "Largest break probability of a dwarf shoot's terminally-lateral buds (fig. 2.8)."},
+    {P::kPTlL, "P_tl_l", "P_tl^l", "", 0.9, 0, 1, false, "branching",
+     "Largest break probability of a long shoot's terminally-lateral buds (fig. 2.8)."},
+    {P::kPLYoung, "P_l_young", "P_l", "", 0.1, 0, 1, false, "branching",
+     "Largest break probability of a long shoot's lateral buds in a young tree (fig. 2.9)."},
+    {P::kPLOld, "P_l_old", "P_l", "", 0.6, 0, 1, false, "branching",
+     "Largest break probability of a long shoot's lateral buds from age P_l_years on (fig. 2.9)."},
+    {P::kPLYears, "P_l_years", "", "years", 10, 1, 100, false, "branching",
+     "Tree age at which the lateral break probability reaches P_l_old."},
+    {P::kDwarfLateralFlowers, "dwarf_flowers", "", "", 1, 0, 1, true, "branching",
+     "1: the lateral buds of dwarf shoots are flower buds (sakura, thesis 2.5.4)."},
+
+    {P::kUseLight, "use_light", "", "", 1, 0, 1, true, "light",
+     "1: light model on (death and phototropism); 0: every shoot gets full light, straight up."},
+    {P::kKDeath, "k_death", "k", "", 0.1, 0, 1, false, "light",
+     "A new shoot dies when its light is below k × U(0.5, 1) (2.4.1)."},
+    {P::kSphereOpacity, "sphere_opacity", "", "", 0.5, 0, 0.99, false, "light",
+     "Share of light stopped by a ray through the full diameter of one leaf sphere."},
+    {P::kSunElevation, "sun_elevation", "", "deg", 60, 5, 90, false, "light",
+     "Elevation of the sun above the horizon."},
+    {P::kSunAzimuth, "sun_azimuth", "", "deg", 0, -180, 180, false, "light",
+     "Azimuth of the sun, from +x towards +z."},
+    {P::kSunWeight, "sun_weight", "", "", 0.3, 0, 1, false, "light",
+     "Share of the light that comes from the sun; the rest is the overcast sky."},
+
+    {P::kBLLow, "b_L_low", "b_L", "", 0.12, 0, 1, false, "bending",
+     "Phototropism rate at hormone 0 (fig. 2.6)."},
+    {P::kBLHigh, "b_L_high", "b_L", "", 0.01, 0, 1, false, "bending",
+     "Phototropism rate at hormone H_sat (fig. 2.6)."},
+    {P::kBGLow, "b_g_low", "b_g", "", 0.01, 0, 1, false, "bending",
+     "Negative geotropism rate at hormone 0 (fig. 2.6)."},
+    {P::kBGHigh, "b_g_high", "b_g", "", 0.02, 0, 1, false, "bending",
+     "Negative geotropism rate at hormone H_sat (fig. 2.6)."},
+    {P::kThetaBmaxN, "theta_bmax_N", "θ_bmax^N", "deg", 15, 0, 180, false, "bending",
+     "Largest bend at one node (eq. 2.9)."},
+    {P::kThetaBmaxB, "theta_bmax_b", "θ_bmax^b", "deg", 20, 0, 180, false, "bending",
+     "Largest change of the branching angle (eq. 2.7)."},
+
+    {P::kHBL, "H_b_l", "H_b^l", "", 0.05, 0, 10, false, "dormancy_break",
+     "An old branch whose hormone falls below this breaks dormant buds (0: off)."},
+    {P::kDeltaL, "delta_l", "δ_l", "", 0.3, 0, 1, false, "dormancy_break",
+     "Chance of each dormant bud to break when the threshold is crossed."},
+    {P::kBBL, "B_b_l", "B_b^l", "buds", 2, 0, 20, true, "dormancy_break",
+     "Most dormant buds one branch breaks through the threshold."},
+    {P::kHNL, "H_n_l", "H_n^l", "", 0.3, 0, 10, false, "dormancy_break",
+     "Extra initial hormone of a bud broken through the threshold."},
+    {P::kHBD, "h_b_d", "h_b^d", "", 4, 0, 100, false, "dormancy_break",
+     "A sudden drop H < H'/h_b^d breaks dormant buds (0: off)."},
+    {P::kDeltaD, "delta_d", "δ_d", "", 0.35, 0, 1, false, "dormancy_break",
+     "Chance of each dormant bud to break after a sudden drop."},
+    {P::kBBD, "B_b_d", "B_b^d", "buds", 2, 0, 20, true, "dormancy_break",
+     "Most dormant buds one branch breaks after a sudden drop."},
+    {P::kHND, "H_n_d", "H_n^d", "", 0.4, 0, 10, false, "dormancy_break",
+     "Extra initial hormone of a bud broken after a sudden drop."},
+
+    {P::kUseHormone, "use_hormone", "", "", 1, 0, 1, true, "shape",
+     "1: hormone model on; 0: every shoot long, with the high end of every range (2.5.1)."},
+    {P::kPipeAreaPerLeaf, "pipe_area", "", "cm²/leaf", 0.02, 0, 10, false, "shape",
+     "Cross-section added to a branch each year per leaf above it (pipe model, 2.4.4)."},
+    {P::kLeafSize, "leaf_size", "", "cm", 6, 0.1, 50, false, "shape",
+     "Leaf length, used for drawing and for the leaf-sphere radius."},
+    {P::kMaxInternodes, "max_internodes", "", "internodes", 2000000, 1000, 5000000, true, "shape",
+     "Safety limit: growth stops adding shoots past this many internodes."},
+}};
+
+bool CheckTableOrder() {
+  for (std::size_t i = 0; i < kTable.size(); ++i) {
+    if (static_cast<std::size_t>(kTable[i].id) != i) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+const std::array<ParamSpec, kParamCount>& ParamTable() {
+  static const bool ordered = CheckTableOrder();
+  if (!ordered) std::abort();  // programming error: table rows out of ParamId order
+  return kTable;
+}
+
+const ParamSpec& Spec(ParamId id) { return ParamTable()[static_cast<std::size_t>(id)]; }
+
+std::optional<ParamId> FindParam(std::string_view key) {
+  for (const ParamSpec& spec : ParamTable()) {
+    if (key == spec.key) return spec.id;
+  }
+  return std::nullopt;
+}
+
+ParamSet::ParamSet() {
+  for (const ParamSpec& spec : ParamTable()) {
+    values_[static_cast<std::size_t>(spec.id)] = spec.default_value;
+  }
+}
+
+std::string FormatNumber(double value) {
+  char buffer[32];
+  if (std::floor(value) == value && std::fabs(value) < 1e15) {
+    std::snprintf(buffer, sizeof buffer, "%.0f", value);  // whole numbers without exponent
+    return buffer;
+  }
+  for (int precision = 1; precision <= 17; ++precision) {
+    std::snprintf(buffer, sizeof buffer, "%.*g", precision, value);
+    if (std::strtod(buffer, nullptr) == value) break;
+  }
+  return buffer;
+}
+
+std::string RangeText(const ParamSpec& spec) {
+  return std::string(spec.integer ? "a whole number" : "a number") + " in [" +
+         FormatNumber(spec.min_value) + ", " + FormatNumber(spec.max_value) + "]";
+}
+
+std::optional<double> ParseNumber(std::string_view text) {
+  if (text.empty() || text.size() > 64) return std::nullopt;
+  for (char c : text) {
+    bool ok = (c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+' || c == 'e' || c == 'E';
+    if (!ok) return std::nullopt;
+  }
+  std::string copy(text);
+  char* end = nullptr;
+  double value = std::strtod(copy.c_str(), &end);
+  if (end != copy.c_str() + copy.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+std::string ParamSet::Set(ParamId id, double value) {
+  const ParamSpec& spec = Spec(id);
+  bool whole = std::floor(value) == value;
+  if (!std::isfinite(value) || value < spec.min_value || value > spec.max_value ||
+      (spec.integer && !whole)) {
+    return std::string(spec.key) + ": " + (std::isfinite(value) ? FormatNumber(value) : "value") +
+           " is out of range; must be " + RangeText(spec);
+  }
+  values_[static_cast<std::size_t>(id)] = value;
+  return "";
+}
+
+std::string ParamSet::SetFromText(std::string_view key, std::string_view text) {
+  std::optional<ParamId> id = FindParam(key);
+  if (!id) return "unknown parameter '" + std::string(key.substr(0, 64)) + "'";
+  std::optional<double> value = ParseNumber(text);
+  if (!value) {
+    return std::string(key) + ": '" + std::string(text.substr(0, 32)) + "' is not " +
+           RangeText(Spec(*id));
+  }
+  return Set(*id, *value);
+}
+
+}  // namespace niwa

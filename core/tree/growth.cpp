@@ -1,0 +1,427 @@
+// The yearly growth loop (thesis 2.4): branching model, light model, hormone model, bending, dormancy break.
+#include "tree/growth.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "math/rotation.h"
+#include "random/pcg32.h"
+#include "tree/light.h"
+
+namespace niwa {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double MsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+float Clamp01(float x) { return x < 0.0f ? 0.0f : (x > 1.0f ? 1.0f : x); }
+
+const glm::vec3 kUp(0.0f, 1.0f, 0.0f);
+
+// Direction of each internode and the phyllotaxis azimuth of each node (index 1..N).
+struct NodeFrames {
+  std::vector<glm::vec3> direction, azimuth;
+};
+
+NodeFrames ComputeNodeFrames(const Branch& shoot, float phi) {
+  NodeFrames frames;
+  std::size_t n = shoot.nodes.size();
+  frames.direction.resize(n, kUp);
+  frames.azimuth.resize(n, glm::vec3(1, 0, 0));
+  glm::vec3 transported = shoot.azimuth;
+  for (std::size_t i = 1; i < n; ++i) {
+    glm::vec3 d = glm::normalize(shoot.nodes[i] - shoot.nodes[i - 1]);
+    transported = Orthonormalize(transported, d);  // parallel transport along the shoot
+    frames.direction[i] = d;
+    frames.azimuth[i] = RotateAbout(transported, d, 2.0f * kPi * phi * static_cast<float>(i));
+  }
+  return frames;
+}
+
+}  // namespace
+
+float HormoneRamp(const ParamSet& params, float hormone, ParamId low, ParamId high) {
+  float t = params.GetBool(ParamId::kUseHormone)
+                ? Clamp01(hormone / static_cast<float>(params.Get(ParamId::kHSat)))
+                : 1.0f;
+  float a = static_cast<float>(params.Get(low)), b = static_cast<float>(params.Get(high));
+  return a + (b - a) * t;
+}
+
+float BreakProbability(float hormone, float h_short, float h_sat, float p_dwarf, float p_long) {
+  // Fig. 2.8 as described in 2.5.2: at most p_dwarf below the dwarf threshold H_s, at least p_dwarf
+  // above it, rising linearly to p_long at H_sat.
+  if (hormone < h_short) return h_short > 0.0f ? p_dwarf * Clamp01(hormone / h_short) : p_dwarf;
+  if (h_sat <= h_short) return p_long;
+  return p_dwarf + (p_long - p_dwarf) * Clamp01((hormone - h_short) / (h_sat - h_short));
+}
+
+Grower::Grower(const GrowRequest& request) : request_(request), rng_(request.seed) {
+  tree_.preset = request.preset;
+  tree_.seed = request.seed;
+  tree_.params = request.params;
+}
+
+void Grower::Kill(int branch_id) {
+  // Iterative so that deep trees cannot overflow the stack.
+  std::vector<int> stack{branch_id};
+  while (!stack.empty()) {
+    Branch& b = tree_.branches[static_cast<std::size_t>(stack.back())];
+    stack.pop_back();
+    if (!b.alive) continue;
+    b.alive = false;
+    internodes_ -= static_cast<long>(b.nodes.size()) - 1;
+    for (int child : b.children) stack.push_back(child);
+  }
+}
+
+void Grower::BreakBuds() {
+  const ParamSet& p = tree_.params;
+  new_shoots_.clear();
+  auto make_shoot = [&](int parent, int parent_node, ShootKind kind, glm::vec3 direction,
+                        glm::vec3 azimuth, float hormone_initial) {
+    Branch shoot{};
+    shoot.id = static_cast<int>(tree_.branches.size());
+    shoot.parent = parent;
+    shoot.parent_node = parent_node;
+    shoot.year = tree_.years;
+    shoot.kind = kind;
+    shoot.alive = true;
+    shoot.bud_direction = direction;
+    shoot.azimuth = Orthonormalize(azimuth, direction);
+    shoot.hormone_initial = hormone_initial;
+    shoot.dwarf = p.GetBool(ParamId::kUseHormone) &&
+                  hormone_initial < static_cast<float>(p.Get(ParamId::kHShort));
+    // Step 1 of 2.4.3: node count N and internode length D from the hormone (fig. 2.5).
+    int nodes = std::max(1, static_cast<int>(std::lround(
+                                HormoneRamp(p, hormone_initial, ParamId::kNLow, ParamId::kNHigh))));
+    float length = HormoneRamp(p, hormone_initial, ParamId::kDLow, ParamId::kDHigh);
+    if (shoot.dwarf) length *= static_cast<float>(p.Get(ParamId::kDwarfInternodeRatio));
+    shoot.internode_length = length;
+    if (internodes_ + nodes > p.GetInt(ParamId::kMaxInternodes)) {
+      tree_.truncated = true;
+      return;
+    }
+    internodes_ += nodes;
+    glm::vec3 base = parent < 0 ? glm::vec3(0.0f)
+                                : tree_.branches[static_cast<std::size_t>(parent)]
+                                      .nodes[static_cast<std::size_t>(parent_node)];
+    shoot.nodes.assign(static_cast<std::size_t>(nodes) + 1, base);
+    shoot.light = 1.0f;
+    shoot.light_direction = kUp;
+    if (parent >= 0) tree_.branches[static_cast<std::size_t>(parent)].children.push_back(shoot.id);
+    new_shoots_.push_back(shoot.id);
+    tree_.branches.push_back(std::move(shoot));
+  };
+
+  for (Branch& b : tree_.branches) {  // leaves fall, flowers fade (deciduous)
+    b.leaves.clear();
+    b.flowers.clear();
+  }
+  if (tree_.branches.empty()) {
+    make_shoot(-1, 0, ShootKind::kSeedling, kUp, glm::vec3(1, 0, 0),
+               static_cast<float>(p.Get(ParamId::kHInit)));
+    return;
+  }
+  std::size_t existing = tree_.branches.size();
+  for (std::size_t id = 0; id < existing; ++id) {
+    if (!tree_.branches[id].alive) continue;
+    for (std::size_t k = 0; k < tree_.branches[id].buds.size(); ++k) {
+      Bud bud = tree_.branches[id].buds[k];
+      if (bud.state != BudState::kBreaking) continue;
+      tree_.branches[id].buds[k].state = BudState::kUsed;
+      if (bud.flower) {
+        tree_.branches[id].flowers.push_back(bud.node);
+        continue;
+      }
+      // Eq. 2.1: the new shoot inherits a share of its parent's hormone of last year.
+      ParamId alpha = bud.kind == ShootKind::kLateral             ? ParamId::kAlphaL
+                      : bud.kind == ShootKind::kTerminallyLateral ? ParamId::kAlphaTl
+                                                                  : ParamId::kAlphaT;
+      float inherited = static_cast<float>(p.Get(alpha)) * tree_.branches[id].hormone;
+      make_shoot(static_cast<int>(id), bud.node, bud.kind, bud.direction, bud.azimuth,
+                 inherited + bud.extra_hormone);
+    }
+  }
+}
+
+void Grower::LayOutShoot(Branch& shoot, bool bend) {
+  const ParamSet& p = tree_.params;
+  float phi = static_cast<float>(p.Get(ParamId::kPhi));
+  bool sympodial = p.GetBool(ParamId::kSympodial);
+  float theta_n = Radians(static_cast<float>(p.Get(ParamId::kThetaN)));
+  // Steps 2-3 of 2.4.3: bending rates from the hormone, eqs. 2.4 and 2.5.
+  float b = 0.0f;
+  glm::vec3 target = kUp;
+  if (bend) {
+    float b_light = HormoneRamp(p, shoot.hormone, ParamId::kBLLow, ParamId::kBLHigh);
+    float b_gravity = HormoneRamp(p, shoot.hormone, ParamId::kBGLow, ParamId::kBGHigh);
+    glm::vec3 pull = b_light * shoot.light_direction + b_gravity * kUp;  // b_L v_L - b_g v_g
+    b = glm::length(pull);                                              // eq. 2.4
+    if (b > 0.0f) target = pull / b;                                    // eq. 2.5
+  }
+  float cap_branch = Radians(static_cast<float>(p.Get(ParamId::kThetaBmaxB)));
+  float cap_node = Radians(static_cast<float>(p.Get(ParamId::kThetaBmaxN)));
+  glm::vec3 direction = shoot.bud_direction;
+  glm::vec3 azimuth = shoot.azimuth;
+  for (std::size_t i = 1; i < shoot.nodes.size(); ++i) {
+    if (b > 0.0f) {
+      float difference = AngleBetween(direction, target);       // eqs. 2.6, 2.8
+      float cap = i == 1 ? cap_branch : cap_node;                // eqs. 2.7, 2.9
+      direction = RotateToward(direction, target, std::min(b * difference, cap));
+    }
+    if (sympodial && theta_n != 0.0f) {
+      // Sympodial zigzag: each node turns θ_N away from the side its bud sits on (steps 5, 8).
+      glm::vec3 side = RotateAbout(Orthonormalize(azimuth, direction), direction,
+                                   2.0f * kPi * phi * static_cast<float>(i));
+      direction = RotateToward(direction, side, -theta_n);
+    }
+    azimuth = Orthonormalize(azimuth, direction);
+    shoot.nodes[i] = shoot.nodes[i - 1] + direction * shoot.internode_length;
+  }
+}
+
+void Grower::ComputeLight() {
+  const ParamSet& p = tree_.params;
+  if (!p.GetBool(ParamId::kUseLight)) return;  // L = 1, v_L = up, no death
+  std::vector<LeafSphere> spheres;
+  spheres.reserve(new_shoots_.size());
+  float leaf = static_cast<float>(p.Get(ParamId::kLeafSize));
+  for (int id : new_shoots_) {
+    const Branch& s = tree_.branches[static_cast<std::size_t>(id)];
+    glm::vec3 base = s.nodes.front(), tip = s.nodes.back();
+    spheres.push_back({0.5f * (base + tip), 0.5f * glm::length(tip - base) + 0.5f * leaf});
+  }
+  Sky sky = MakeSky(static_cast<float>(p.Get(ParamId::kSunElevation)),
+                    static_cast<float>(p.Get(ParamId::kSunAzimuth)),
+                    static_cast<float>(p.Get(ParamId::kSunWeight)));
+  std::vector<LightSample> samples =
+      ComputeLightGrid(spheres, sky, static_cast<float>(p.Get(ParamId::kSphereOpacity)));
+  float k = static_cast<float>(p.Get(ParamId::kKDeath));
+  for (std::size_t i = 0; i < new_shoots_.size(); ++i) {
+    Branch& s = tree_.branches[static_cast<std::size_t>(new_shoots_[i])];
+    s.light = samples[i].light;
+    s.light_direction = samples[i].direction;
+    // 2.4.1: death below a threshold drawn from k × U(0.5, 1).
+    float threshold = k * static_cast<float>(rng_.Uniform(0.5, 1.0));
+    if (s.parent >= 0 && s.light < threshold) Kill(s.id);
+  }
+}
+
+void Grower::ComputeHormone() {
+  const ParamSet& p = tree_.params;
+  float beta_c = static_cast<float>(p.Get(ParamId::kBetaC));
+  float beta_p = static_cast<float>(p.Get(ParamId::kBetaP));
+  float gamma = static_cast<float>(p.Get(ParamId::kGamma));
+  float h_dwarf = static_cast<float>(p.Get(ParamId::kHS));
+  float h_long = static_cast<float>(p.Get(ParamId::kHL));
+  // Children always have larger ids, so a descending sweep sees every child before its parent:
+  // hormone flows from the tips towards the trunk (thesis 2.4.2, rule 4).
+  for (std::size_t n = tree_.branches.size(); n-- > 0;) {
+    Branch& b = tree_.branches[n];
+    if (!b.alive) continue;
+    b.hormone_previous = b.hormone;
+    if (b.year == tree_.years) {
+      b.hormone_previous = b.hormone_initial;
+      b.hormone = beta_c * b.hormone_initial + (b.dwarf ? h_dwarf : h_long) * b.light;  // eq. 2.2
+    } else {
+      float from_children = 0.0f;
+      for (int c : b.children) {
+        const Branch& child = tree_.branches[static_cast<std::size_t>(c)];
+        if (child.alive) from_children += child.hormone;
+      }
+      b.hormone = beta_p * b.hormone_previous + gamma * from_children;  // eq. 2.3
+    }
+  }
+}
+
+void Grower::ThickenBranches() {
+  // Pipe model (2.4.4): each branch's cross-section grows in proportion to all leaves above it.
+  float per_leaf = static_cast<float>(tree_.params.Get(ParamId::kPipeAreaPerLeaf));
+  std::vector<int> leaves_above(tree_.branches.size(), 0);
+  for (std::size_t n = tree_.branches.size(); n-- > 0;) {
+    Branch& b = tree_.branches[n];
+    if (!b.alive) continue;
+    leaves_above[n] += static_cast<int>(b.leaves.size());
+    b.cross_section += per_leaf * static_cast<float>(leaves_above[n]);
+    if (b.parent >= 0) leaves_above[static_cast<std::size_t>(b.parent)] += leaves_above[n];
+  }
+}
+
+void Grower::SetNextYearBuds() {
+  const ParamSet& p = tree_.params;
+  float phi = static_cast<float>(p.Get(ParamId::kPhi));
+  bool hormone_on = p.GetBool(ParamId::kUseHormone);
+  float h_short = static_cast<float>(p.Get(ParamId::kHShort));
+  float h_sat = static_cast<float>(p.Get(ParamId::kHSat));
+  float age = Clamp01(static_cast<float>(tree_.years - 1) /
+                      static_cast<float>(p.Get(ParamId::kPLYears)));
+  float p_lateral_max = static_cast<float>(p.Get(ParamId::kPLYoung) +
+                                           (p.Get(ParamId::kPLOld) - p.Get(ParamId::kPLYoung)) * age);
+  int terminal_buds = p.GetInt(ParamId::kBT), tl_buds = p.GetInt(ParamId::kBTl);
+  int lateral_buds = p.GetInt(ParamId::kBL);
+  float psi_t = Radians(static_cast<float>(p.Get(ParamId::kPsiT)));
+  float psi_tl = Radians(static_cast<float>(p.Get(ParamId::kPsiTl)));
+  float psi_l = Radians(static_cast<float>(p.Get(ParamId::kPsiL)));
+  bool dwarf_flowers = p.GetBool(ParamId::kDwarfLateralFlowers);
+  float leaf_lift = 0.6f;
+
+  for (int id : new_shoots_) {
+    Branch& s = tree_.branches[static_cast<std::size_t>(id)];
+    if (!s.alive) continue;
+    NodeFrames f = ComputeNodeFrames(s, phi);
+    int tip = static_cast<int>(s.nodes.size()) - 1;
+    // Leaves: one per lateral bud position at every node (at least one per node).
+    int per_node = std::max(1, lateral_buds);
+    for (int i = 1; i <= tip; ++i) {
+      for (int k = 0; k < per_node; ++k) {
+        glm::vec3 side = RotateAbout(f.azimuth[static_cast<std::size_t>(i)],
+                                     f.direction[static_cast<std::size_t>(i)],
+                                     2.0f * kPi * static_cast<float>(k) / static_cast<float>(per_node));
+        s.leaves.push_back(
+            {i, glm::normalize(side + f.direction[static_cast<std::size_t>(i)] * leaf_lift)});
+      }
+    }
+    auto add_bud = [&](ShootKind kind, int node, glm::vec3 side, float angle, float probability,
+                       bool flower) {
+      glm::vec3 d = f.direction[static_cast<std::size_t>(node)];
+      Bud bud{};
+      bud.kind = kind;
+      bud.node = node;
+      bud.direction = RotateToward(d, side, angle);
+      bud.azimuth = Orthonormalize(side, bud.direction);
+      bud.flower = flower;
+      bool breaks = flower || rng_.Bernoulli(probability);
+      bud.state = breaks ? BudState::kBreaking : BudState::kDormant;
+      s.buds.push_back(bud);
+    };
+    float h = s.hormone;
+    // Fig. 2.8: break probabilities from the shoot's hormone; without hormone, the maxima.
+    float p_terminal = hormone_on ? BreakProbability(h, h_short, h_sat, 1.0f, 1.0f) : 1.0f;
+    float p_tl = hormone_on ? BreakProbability(h, h_short, h_sat,
+                                               static_cast<float>(p.Get(ParamId::kPTlS)),
+                                               static_cast<float>(p.Get(ParamId::kPTlL)))
+                            : static_cast<float>(p.Get(ParamId::kPTlL));
+    float p_lateral = s.dwarf ? 0.0f
+                      : hormone_on ? p_lateral_max * Clamp01(h / h_sat)
+                                   : p_lateral_max;
+    glm::vec3 tip_azimuth = f.azimuth[static_cast<std::size_t>(tip)];
+    glm::vec3 tip_direction = f.direction[static_cast<std::size_t>(tip)];
+    if (terminal_buds > 0) {
+      add_bud(ShootKind::kTerminal, tip, tip_azimuth, psi_t, p_terminal, false);
+      // The terminal shoot continues the phyllotaxis spiral.
+      s.buds.back().azimuth = Orthonormalize(
+          RotateAbout(tip_azimuth, tip_direction, 2.0f * kPi * phi), s.buds.back().direction);
+    }
+    for (int k = 0; k < tl_buds; ++k) {
+      glm::vec3 side = RotateAbout(tip_azimuth, tip_direction,
+                                   2.0f * kPi * static_cast<float>(k) / static_cast<float>(tl_buds));
+      add_bud(ShootKind::kTerminallyLateral, tip, side, psi_tl, p_tl, false);
+    }
+    for (int i = 1; i < tip; ++i) {
+      for (int k = 0; k < lateral_buds; ++k) {
+        glm::vec3 side = RotateAbout(f.azimuth[static_cast<std::size_t>(i)],
+                                     f.direction[static_cast<std::size_t>(i)],
+                                     2.0f * kPi * static_cast<float>(k) / static_cast<float>(lateral_buds));
+        add_bud(ShootKind::kLateral, i, side, psi_l, p_lateral, s.dwarf && dwarf_flowers);
+      }
+    }
+  }
+
+  // Dormancy break (2.4.6) on the older branches: by threshold, and by a sudden drop.
+  struct Trigger {
+    ParamId threshold, chance, most, extra;
+  };
+  const Trigger by_threshold{ParamId::kHBL, ParamId::kDeltaL, ParamId::kBBL, ParamId::kHNL};
+  const Trigger by_drop{ParamId::kHBD, ParamId::kDeltaD, ParamId::kBBD, ParamId::kHND};
+  for (Branch& b : tree_.branches) {
+    if (!b.alive || b.year == tree_.years) continue;
+    float h_b_l = static_cast<float>(p.Get(ParamId::kHBL));
+    float h_b_d = static_cast<float>(p.Get(ParamId::kHBD));
+    bool low = h_b_l > 0.0f && b.hormone < h_b_l;
+    bool dropped = h_b_d > 0.0f && b.hormone < b.hormone_previous / h_b_d;
+    for (const Trigger* trigger : {low ? &by_threshold : nullptr, dropped ? &by_drop : nullptr}) {
+      if (!trigger) continue;
+      float chance = static_cast<float>(p.Get(trigger->chance));
+      int most = p.GetInt(trigger->most), broken = 0;
+      for (Bud& bud : b.buds) {  // Step 1: each dormant bud breaks with chance δ; Step 2: cap B_b
+        if (broken >= most) break;
+        if (bud.state != BudState::kDormant || bud.flower) continue;
+        if (!rng_.Bernoulli(chance)) continue;
+        bud.state = BudState::kBreaking;
+        bud.extra_hormone = static_cast<float>(p.Get(trigger->extra));  // Step 3: H_n
+        ++broken;
+      }
+    }
+  }
+}
+
+void Grower::ApplyPrunes() {
+  for (const Prune& prune : request_.prunes) {
+    if (prune.year != tree_.years) continue;
+    if (prune.branch >= 0 && prune.branch < static_cast<int>(tree_.branches.size())) {
+      Kill(prune.branch);
+    }
+    if (prune.since_year >= 0) {
+      for (Branch& b : tree_.branches) {
+        if (b.alive && b.year >= prune.since_year) Kill(b.id);
+      }
+    }
+  }
+}
+
+void Grower::GrowYear() {
+  Clock::time_point start = Clock::now();
+  ++tree_.years;
+  BreakBuds();
+  for (int id : new_shoots_) LayOutShoot(tree_.branches[static_cast<std::size_t>(id)], false);
+  double branching = MsSince(start);
+
+  Clock::time_point light_start = Clock::now();
+  ComputeLight();
+  timings_.ms_light += MsSince(light_start);
+
+  Clock::time_point hormone_start = Clock::now();
+  ComputeHormone();
+  timings_.ms_hormone += MsSince(hormone_start);
+
+  Clock::time_point shape_start = Clock::now();
+  for (int id : new_shoots_) {
+    Branch& s = tree_.branches[static_cast<std::size_t>(id)];
+    if (s.alive) LayOutShoot(s, true);
+  }
+  SetNextYearBuds();
+  ThickenBranches();
+  ApplyPrunes();
+  timings_.ms_branching += branching + MsSince(shape_start);
+  timings_.ms_total += MsSince(start);
+}
+
+Tree GrowTree(const GrowRequest& request, GrowthTimings* timings) {
+  Grower grower(request);
+  while (grower.year() < request.years) grower.GrowYear();
+  if (timings) *timings = grower.timings();
+  return grower.TakeTree();
+}
+
+TreeStats ComputeStats(const Tree& tree) {
+  TreeStats stats;
+  for (const Branch& b : tree.branches) {
+    if (!b.alive) continue;
+    ++stats.branches;
+    stats.internodes += static_cast<int>(b.nodes.size()) - 1;
+    stats.leaves += static_cast<int>(b.leaves.size());
+    stats.flowers += static_cast<int>(b.flowers.size());
+    for (const glm::vec3& n : b.nodes) stats.height = std::max(stats.height, double(n.y));
+  }
+  return stats;
+}
+
+float BranchRadius(const Branch& branch) {
+  return std::max(0.05f, std::sqrt(branch.cross_section / kPi));
+}
+
+}  // namespace niwa

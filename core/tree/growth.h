@@ -1,0 +1,65 @@
+// Yearly growth loop of thesis 2.4: bud break, light, hormone, elongation and bending, next year's buds.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "random/pcg32.h"
+#include "tree/tree.h"
+
+namespace niwa {
+
+// Remove a branch and everything above it after the growth of `year` (thesis figs. 2.15, 2.18).
+struct Prune {
+  int year = 0;
+  int branch = -1;      // a branch id from the JSON output, or -1
+  int since_year = -1;  // or: every shoot grown in this year or later, or -1
+};
+
+struct GrowRequest {
+  std::string preset;
+  ParamSet params;
+  uint64_t seed = 1;
+  int years = 10;
+  std::vector<Prune> prunes;
+};
+
+// Grows a tree one year at a time, so callers can show every age and report progress.
+class Grower {
+ public:
+  explicit Grower(const GrowRequest& request);
+  // Grows one more year (thesis 2.4 steps 1-5) and applies the prunes of that year.
+  void GrowYear();
+  int year() const { return tree_.years; }
+  const Tree& tree() const { return tree_; }
+  Tree TakeTree() { return std::move(tree_); }
+  const GrowthTimings& timings() const { return timings_; }
+
+ private:
+  void BreakBuds();                           // step 1
+  void LayOutShoot(Branch& shoot, bool bend); // step 4 geometry (also straight, before light)
+  void ComputeLight();                        // step 2
+  void ComputeHormone();                      // step 3
+  void ThickenBranches();                     // 2.4.4
+  void SetNextYearBuds();                     // step 5, including dormancy break (2.4.6)
+  void ApplyPrunes();
+  void Kill(int branch_id);
+
+  GrowRequest request_;
+  Tree tree_;
+  GrowthTimings timings_;
+  std::vector<int> new_shoots_;  // ids of this year's shoots
+  long internodes_ = 0;
+  Pcg32 rng_;
+};
+
+// Convenience: grows request.years years in one call.
+Tree GrowTree(const GrowRequest& request, GrowthTimings* timings = nullptr);
+
+// Hormone-dependent ranges of table 2.2 ("a ~ b"): value at H = 0 is `low`, at H >= H_sat `high`.
+float HormoneRamp(const ParamSet& params, float hormone, ParamId low, ParamId high);
+// Break probability of a bud with maximum p_dwarf / p_long on a shoot of hormone H (fig. 2.8).
+float BreakProbability(float hormone, float h_short, float h_sat, float p_dwarf, float p_long);
+
+}  // namespace niwa

@@ -1,0 +1,37 @@
+// Light model (thesis 2.3.2): leaves as shading spheres; light L and its direction v_L per shoot.
+#pragma once
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace niwa {
+
+struct LeafSphere {
+  glm::vec3 center;
+  float radius;
+};
+
+// Sky: overcast directions over the upper hemisphere plus the sun, weights summing to 1.
+struct Sky {
+  std::vector<glm::vec3> directions;  // unit, pointing towards the light
+  std::vector<float> weights;
+};
+
+struct LightSample {
+  float light;          // L in [0, 1]
+  glm::vec3 direction;  // v_L: unit resultant direction of the received light
+};
+
+// 16 overcast directions (Fibonacci spiral, weights ∝ cos zenith) plus the sun.
+Sky MakeSky(float sun_elevation_deg, float sun_azimuth_deg, float sun_weight);
+
+// Exact pairwise reference, O(n² · directions): light at each sphere's centre from every other sphere.
+std::vector<LightSample> ComputeLightReference(const std::vector<LeafSphere>& spheres,
+                                               const Sky& sky, float opacity);
+
+// Near-linear production model: sphere density rasterized into a voxel grid, rays marched through it.
+std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres, const Sky& sky,
+                                          float opacity);
+
+}  // namespace niwa

@@ -1,0 +1,269 @@
+// niwa CLI commands (presets, params, tree grow) over the core library, parsed with CLI11.
+#include "cli.h"
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "io/gltf_export.h"
+#include "io/json_io.h"
+#include "io/svg_export.h"
+#include "io/url_codec.h"
+#include "tree/growth.h"
+#include "tree/mesh.h"
+#include "tree/presets.h"
+
+namespace niwa {
+namespace {
+
+struct BadInput {
+  std::string message;
+};
+
+std::string Extension(const std::string& path) {
+  std::size_t dot = path.find_last_of('.');
+  std::size_t slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  return path.substr(dot);
+}
+
+std::string ReadFile(const std::string& path, bool* ok) {
+  std::ifstream in(path, std::ios::binary);
+  *ok = static_cast<bool>(in);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+// Options shared by every command that grows a tree.
+struct GrowOptions {
+  std::string preset = "sakura";
+  int years = -1;  // -1: the preset's own
+  uint64_t seed = 0;
+  bool seed_given = false;
+  std::vector<std::string> sets, prunes;
+  std::string params_file, url;
+};
+
+void AddGrowOptions(CLI::App* cmd, GrowOptions* o) {
+  cmd->add_option("--preset", o->preset, "Species preset (see 'niwa presets')");
+  cmd->add_option("--years", o->years, "Years to grow, 0..100 (default: the preset's)");
+  cmd->add_option("--seed", o->seed, "Random seed, 0..4294967295 (default: the preset's)");
+  cmd->add_option("--set", o->sets, "Override a parameter: key=value (repeatable; see 'niwa params')");
+  cmd->add_option("--params", o->params_file, "JSON file of parameters {\"key\": value, ...}");
+  cmd->add_option("--prune", o->prunes,
+                  "Prune after a year: YEAR:bID (branch id from the JSON) or YEAR:sinceY (repeatable)");
+  cmd->add_option("--url", o->url, "A share-link hash (preset=...&seed=...); other flags override it");
+}
+
+GrowRequest ResolveGrowRequest(const GrowOptions& o, CLI::App* cmd) {
+  GrowRequest request;
+  TreeState state;
+  if (!o.url.empty()) {
+    std::vector<std::string> notices;
+    state = DecodeStateHash(o.url, &notices);
+    if (!notices.empty()) throw BadInput{"--url: " + notices.front()};
+  }
+  if (cmd->count("--preset") || o.url.empty()) {
+    const Preset* preset = FindPreset(o.preset);
+    if (!preset) {
+      throw BadInput{"--preset: unknown '" + o.preset + "', must be one of " + PresetNames()};
+    }
+    if (o.url.empty() || state.preset != preset->name) {
+      state.preset = preset->name;
+      state.params = preset->params;
+      state.years = preset->years;
+      state.seed = preset->seed;
+    }
+  }
+  request.preset = state.preset;
+  request.params = state.params;
+  request.years = state.years;
+  request.seed = state.seed;
+  request.prunes = state.prunes;
+  if (cmd->count("--years")) {
+    if (o.years < 0 || o.years > kMaxYears) {
+      throw BadInput{"--years: " + std::to_string(o.years) + " is out of range; must be a whole number in [0, " +
+                     std::to_string(kMaxYears) + "]"};
+    }
+    request.years = o.years;
+  }
+  if (cmd->count("--seed")) {
+    if (o.seed > 4294967295ULL) {
+      throw BadInput{"--seed: must be a whole number in [0, 4294967295]"};
+    }
+    request.seed = o.seed;
+  }
+  if (!o.params_file.empty()) {
+    bool ok = false;
+    std::string text = ReadFile(o.params_file, &ok);
+    if (!ok) throw BadInput{"--params: cannot read '" + o.params_file + "'"};
+    std::string error = ApplyParamsJson(text, &request.params);
+    if (!error.empty()) throw BadInput{"--params " + o.params_file + ": " + error};
+  }
+  for (const std::string& item : o.sets) {
+    std::size_t eq = item.find('=');
+    if (eq == std::string::npos) throw BadInput{"--set: '" + item + "' must be key=value"};
+    std::string error = request.params.SetFromText(item.substr(0, eq), item.substr(eq + 1));
+    if (!error.empty()) throw BadInput{"--set: " + error};
+  }
+  for (const std::string& item : o.prunes) {
+    Prune prune;
+    std::string error;
+    if (!ParsePrune(item, &prune, &error)) throw BadInput{"--" + error};
+    request.prunes.push_back(prune);
+  }
+  return request;
+}
+
+std::string StatsJson(const Tree& tree, const GrowthTimings& t) {
+  TreeStats s = ComputeStats(tree);
+  nlohmann::ordered_json j;
+  j["preset"] = tree.preset;
+  j["seed"] = tree.seed;
+  j["years"] = tree.years;
+  j["internodes"] = s.internodes;
+  j["branches"] = s.branches;
+  j["leaves"] = s.leaves;
+  j["flowers"] = s.flowers;
+  j["height"] = s.height;
+  j["truncated"] = tree.truncated;
+  j["ms"] = t.ms_total;
+  j["ms_light"] = t.ms_light;
+  j["ms_hormone"] = t.ms_hormone;
+  j["ms_branching"] = t.ms_branching;
+  return j.dump();
+}
+
+int RunGrow(const GrowOptions& options, CLI::App* cmd, const std::string& out_path, bool stats,
+            std::ostream& out) {
+  std::string ext = Extension(out_path);
+  if (!out_path.empty() && ext != ".glb" && ext != ".json" && ext != ".svg") {
+    throw BadInput{"--out: '" + out_path + "' must end in .glb, .json or .svg"};
+  }
+  GrowRequest request = ResolveGrowRequest(options, cmd);
+  GrowthTimings timings;
+  Tree tree = GrowTree(request, &timings);
+  if (!out_path.empty()) {
+    std::string bytes;
+    if (ext == ".json") {
+      bytes = TreeToJson(tree);
+    } else if (ext == ".svg") {
+      bytes = TreeToSvg(tree);
+    } else {
+      std::vector<unsigned char> glb;
+      std::string error = WriteGlb(BuildTreeMesh(tree), &glb);
+      if (!error.empty()) throw BadInput{"--out: " + error};
+      bytes.assign(glb.begin(), glb.end());
+    }
+    std::string error = WriteFileAtomically(out_path, bytes);
+    if (!error.empty()) throw BadInput{"--out: " + error};
+  }
+  if (stats) out << StatsJson(tree, timings) << "\n";
+  return 0;
+}
+
+}  // namespace
+
+std::string WriteFileAtomically(const std::string& path, const std::string& bytes) {
+  std::string temp = path + ".niwa-partial";
+  {
+    std::ofstream file(temp, std::ios::binary | std::ios::trunc);
+    if (!file) return "cannot write '" + path + "'";
+    file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    file.flush();
+    if (!file) {
+      file.close();
+      std::remove(temp.c_str());
+      return "cannot write '" + path + "'";
+    }
+  }
+  if (std::rename(temp.c_str(), path.c_str()) != 0) {
+    std::remove(temp.c_str());
+    return "cannot write '" + path + "'";
+  }
+  return "";
+}
+
+int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  CLI::App app{"niwa: procedural nature lab (tree growth after Kanayama 1998)", "niwa"};
+  app.require_subcommand(1);
+  app.set_help_all_flag("--help-all", "Help for every command");
+
+  CLI::App* presets = app.add_subcommand("presets", "List the species presets");
+  CLI::App* params = app.add_subcommand("params", "List every model parameter with its range");
+  bool params_json = false;
+  params->add_flag("--json", params_json, "Print the table as JSON");
+
+  CLI::App* tree = app.add_subcommand("tree", "Grow and export trees");
+  tree->require_subcommand(1);
+  CLI::App* grow = tree->add_subcommand("grow", "Grow a tree and write it or its statistics");
+  GrowOptions grow_options;
+  std::string out_path;
+  bool stats = false;
+  AddGrowOptions(grow, &grow_options);
+  grow->add_option("--out", out_path, "Write the tree: .glb (binary glTF), .json or .svg (side view)");
+  grow->add_flag("--stats", stats, "Print one JSON object of statistics on stdout");
+
+  try {
+    // Name unknown commands ourselves: CLI11 would only say that a subcommand is required.
+    auto check_command = [](const CLI::App* parent, const std::string& word) {
+      if (word.empty() || word[0] == '-') return;
+      std::string names;
+      for (const CLI::App* sub : parent->get_subcommands({})) {
+        if (sub->get_name() == word) return;
+        names += (names.empty() ? "" : ", ") + sub->get_name();
+      }
+      throw BadInput{"unknown command '" + word + "', must be one of " + names};
+    };
+    if (!args.empty()) check_command(&app, args[0]);
+    if (args.size() > 1 && args[0] == "tree") check_command(tree, args[1]);
+    std::vector<std::string> reversed(args.rbegin(), args.rend());
+    app.parse(reversed);
+    if (*presets) {
+      for (const Preset& p : Presets()) {
+        out << p.name << "\t" << p.title << "\t" << p.years << " years\t" << p.source << "\n";
+      }
+      return 0;
+    }
+    if (*params) {
+      if (params_json) {
+        out << ParamTableJson() << "\n";
+        return 0;
+      }
+      for (const ParamSpec& s : ParamTable()) {
+        out << s.key << "\t" << s.symbol << "\t" << (*s.unit ? s.unit : "-") << "\tdefault "
+            << FormatNumber(s.default_value) << "\t" << RangeText(s) << "\t" << s.help << "\n";
+      }
+      return 0;
+    }
+    if (*grow) return RunGrow(grow_options, grow, out_path, stats, out);
+  } catch (const CLI::CallForHelp&) {
+    out << app.help();  // CLI11 delegates to the innermost selected subcommand
+    return 0;
+  } catch (const CLI::CallForAllHelp&) {
+    out << app.help("", CLI::AppFormatMode::All);
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    std::string message = e.what();
+    for (char& c : message) {
+      if (c == '\n') c = ' ';
+    }
+    err << "niwa: error: " << message << " (see --help)\n";
+    return 2;
+  } catch (const BadInput& e) {
+    err << "niwa: error: " << e.message << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    err << "niwa: internal error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace niwa

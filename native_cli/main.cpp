@@ -1,0 +1,11 @@
+// Entry point of the niwa CLI (native and WASM under node): a thin wrapper over RunCli.
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli.h"
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  return niwa::RunCli(args, std::cout, std::cerr);
+}

@@ -1,0 +1,145 @@
+// Tests of the CLI library: commands, --stats, outputs, and one-line errors with exit code 2.
+#include "cli.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace niwa {
+namespace {
+
+struct Result {
+  int code;
+  std::string out, err;
+};
+
+Result RunNiwa(std::vector<std::string> args) {
+  std::ostringstream out, err;
+  int code = RunCli(args, out, err);
+  return {code, out.str(), err.str()};
+}
+
+std::string TempPath(const std::string& name) {
+  return ::testing::TempDir() + "niwa_cli_test_" + name;
+}
+
+bool Exists(const std::string& path) { return static_cast<bool>(std::ifstream(path)); }
+
+void ExpectOneLineError(const Result& r, const std::string& must_contain) {
+  EXPECT_EQ(r.code, 2);
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  ASSERT_FALSE(r.err.empty());
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;  // exactly one line
+  EXPECT_NE(r.err.find(must_contain), std::string::npos) << r.err;
+}
+
+TEST(Cli, PresetsListsEveryPreset) {
+  Result r = RunNiwa({"presets"});
+  EXPECT_EQ(r.code, 0);
+  for (const char* name : {"binary", "sakura", "keyaki", "tsutsuji"}) {
+    EXPECT_NE(r.out.find(std::string(name) + "\t"), std::string::npos) << name;
+  }
+}
+
+TEST(Cli, HelpOnEveryCommand) {
+  for (auto args : std::vector<std::vector<std::string>>{
+           {"--help"}, {"presets", "--help"}, {"params", "--help"}, {"tree", "--help"},
+           {"tree", "grow", "--help"}}) {
+    Result r = RunNiwa(args);
+    EXPECT_EQ(r.code, 0) << args.back();
+    EXPECT_NE(r.out.find("Usage"), std::string::npos) << r.out;
+  }
+  EXPECT_NE(RunNiwa({"tree", "grow", "--help"}).out.find("--stats"), std::string::npos);
+}
+
+TEST(Cli, StatsPrintsOneJsonObjectWithTheRequiredFields) {
+  Result r = RunNiwa({"tree", "grow", "--preset", "tsutsuji", "--years", "6", "--seed", "4", "--stats"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  for (const char* key : {"internodes", "branches", "leaves", "flowers", "height", "years", "seed",
+                          "preset", "ms", "ms_light", "ms_hormone", "ms_branching"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["years"], 6);
+  EXPECT_EQ(j["seed"], 4);
+  EXPECT_EQ(j["preset"], "tsutsuji");
+  EXPECT_GT(j["internodes"].get<int>(), 0);
+}
+
+TEST(Cli, SetAndParamsFileChangeTheTree) {
+  Result base = RunNiwa({"tree", "grow", "--preset", "sakura", "--years", "5", "--stats"});
+  Result set = RunNiwa({"tree", "grow", "--preset", "sakura", "--years", "5", "--set", "N_high=10",
+                    "--stats"});
+  std::string file = TempPath("params.json");
+  std::ofstream(file) << R"({"N_high": 10})";
+  Result json = RunNiwa({"tree", "grow", "--preset", "sakura", "--years", "5", "--params", file, "--stats"});
+  ASSERT_EQ(set.code, 0);
+  auto a = nlohmann::json::parse(base.out), b = nlohmann::json::parse(set.out),
+       c = nlohmann::json::parse(json.out);
+  EXPECT_NE(a["internodes"], b["internodes"]);
+  EXPECT_EQ(b["internodes"], c["internodes"]);
+}
+
+TEST(Cli, BadInputGivesOneLineNamingTheFieldAndExit2) {
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--preset", "oak"}), "--preset: unknown 'oak', must be one of");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--set", "alpha_t=3"}),
+                     "alpha_t: 3 is out of range; must be a number in [0, 1]");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--set", "nope=1"}), "unknown parameter 'nope'");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--set", "gamma"}), "--set: 'gamma' must be key=value");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--years", "500"}), "--years: 500 is out of range");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--years", "abc"}), "--years");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--prune", "x"}), "prune");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--out", "tree.obj"}), "must end in .glb, .json or .svg");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--bogus"}), "--bogus");
+  ExpectOneLineError(RunNiwa({"frobnicate"}), "frobnicate");
+  std::string bad = TempPath("bad.json");
+  std::ofstream(bad) << "{\"gamma\": ";
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--params", bad}), "malformed JSON");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--params", TempPath("missing.json")}), "cannot read");
+}
+
+TEST(Cli, UnwritablePathFailsCleanlyAndLeavesNoFile) {
+  std::string path = "/nonexistent-dir/tree.json";
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--years", "2", "--out", path}), "cannot write");
+  EXPECT_FALSE(Exists(path));
+  EXPECT_FALSE(Exists(path + ".niwa-partial"));
+}
+
+TEST(Cli, WritesJsonAndSvg) {
+  for (std::string ext : {".json", ".svg"}) {
+    std::string path = TempPath("tree" + ext);
+    std::remove(path.c_str());
+    Result r = RunNiwa({"tree", "grow", "--preset", "binary", "--years", "5", "--out", path});
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::stringstream content;
+    content << std::ifstream(path).rdbuf();
+    if (ext == ".json") {
+      auto j = nlohmann::json::parse(content.str());
+      EXPECT_EQ(j["preset"], "binary");
+      EXPECT_GT(j["branches"].size(), 1u);
+    } else {
+      EXPECT_EQ(content.str().rfind("<svg", 0), 0u);
+      EXPECT_NE(content.str().find("<polyline"), std::string::npos);
+    }
+    EXPECT_FALSE(Exists(path + ".niwa-partial"));
+  }
+}
+
+TEST(Cli, UrlGrowsTheSameTreeAsTheFlags) {
+  Result flags = RunNiwa({"tree", "grow", "--preset", "keyaki", "--years", "7", "--seed", "3", "--set",
+                      "gamma=0.3", "--prune", "6:b2", "--stats"});
+  Result url = RunNiwa({"tree", "grow", "--url", "#preset=keyaki&seed=3&years=7&gamma=0.3&prune=6:b2",
+                    "--stats"});
+  ASSERT_EQ(url.code, 0) << url.err;
+  auto a = nlohmann::json::parse(flags.out), b = nlohmann::json::parse(url.out);
+  EXPECT_EQ(a["internodes"], b["internodes"]);
+  EXPECT_EQ(a["leaves"], b["leaves"]);
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--url", "preset=keyaki&gamma=9"}), "--url: gamma");
+}
+
+}  // namespace
+}  // namespace niwa

@@ -1,0 +1,141 @@
+// Grows every preset with the native CLI, validates each .glb with Khronos' gltf-validator and loads it with three.js.
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+
+const native = process.env.NIWA_NATIVE;
+const root = process.env.NIWA_ROOT;
+if (!native || !root) {
+  console.log('FAIL set NIWA_NATIVE (native niwa binary) and NIWA_ROOT (repo root)');
+  process.exit(2);
+}
+
+const require = createRequire(join(root, 'package.json'));
+const validatorModule = await import(pathToFileURL(require.resolve('gltf-validator')).href);
+const validator = validatorModule.default ?? validatorModule;
+const three = join(root, 'node_modules', 'three');
+const { GLTFLoader } = await import(
+  pathToFileURL(join(three, 'examples', 'jsm', 'loaders', 'GLTFLoader.js')).href);
+
+let failures = 0;
+function check(ok, label, detail = '') {
+  console.log(`${ok ? 'ok  ' : 'FAIL'} ${label}${detail ? ` (${detail})` : ''}`);
+  if (!ok) failures += 1;
+}
+
+function niwa(args) {
+  return execFileSync(native, args, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+}
+
+async function validate(bytes) {
+  return validator.validateBytes(new Uint8Array(bytes), { maxIssues: 50 });
+}
+
+function loadGltf(bytes) {
+  const buffer = bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength);
+  return new Promise((resolve, reject) => {
+    new GLTFLoader().parse(buffer, '', resolve, reject);
+  });
+}
+
+function meshesByMaterial(gltf) {
+  const found = {};
+  gltf.scene.traverse((object) => {
+    if (!object.isMesh) return;
+    const name = object.material?.name ?? '';
+    found[name] = (found[name] ?? 0) + object.geometry.getAttribute('position').count;
+  });
+  return found;
+}
+
+// The same .glb with a wrong POSITION max: the validator must reject it (proves the check can fail).
+function withWrongPositionMax(bytes) {
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const jsonLength = view.getUint32(12, true);
+  const json = JSON.parse(new TextDecoder().decode(bytes.subarray(20, 20 + jsonLength)));
+  const accessor = json.accessors[json.meshes[0].primitives[0].attributes.POSITION];
+  accessor.max[1] += 1;
+  let text = JSON.stringify(json);
+  while (text.length % 4) text += ' ';
+  const rest = bytes.subarray(20 + jsonLength);
+  const out = new Uint8Array(20 + text.length + rest.length);
+  const outView = new DataView(out.buffer);
+  out.set(bytes.subarray(0, 12));
+  outView.setUint32(8, out.length, true);
+  outView.setUint32(12, text.length, true);
+  outView.setUint32(16, 0x4e4f534a, true);
+  out.set(new TextEncoder().encode(text), 20);
+  out.set(rest, 20 + text.length);
+  return out;
+}
+
+const presets = niwa(['presets'])
+  .split('\n')
+  .filter((line) => line.trim())
+  .map((line) => line.split('\t')[0]);
+check(presets.length > 0, 'niwa presets lists presets', presets.join(', '));
+
+let tampered = null;
+const dir = mkdtempSync(join(tmpdir(), 'niwa-gltf-'));
+try {
+  const cases = presets.map((p) => ({ label: p, args: ['--preset', p, '--years', '6'], empty: false }));
+  if (presets.includes('sakura')) {  // sakura flowers from its 7th year on
+    cases.push({ label: 'sakura at 8 years', args: ['--preset', 'sakura', '--years', '8'],
+                 empty: false, flowers: true });
+  }
+  if (presets.length) {
+    cases.push({ label: `${presets[0]} at 0 years`, args: ['--preset', presets[0], '--years', '0'],
+                 empty: true });
+  }
+  for (const c of cases) {
+    const out = join(dir, `${c.label.replace(/\W+/g, '_')}.glb`);
+    try {
+      niwa(['tree', 'grow', ...c.args, '--out', out]);
+    } catch (error) {
+      check(false, `${c.label}: niwa tree grow`, String(error.stderr ?? error.message).trim());
+      continue;
+    }
+    const bytes = readFileSync(out);
+    check(bytes.subarray(0, 4).toString('latin1') === 'glTF', `${c.label}: glb magic`);
+
+    const report = await validate(bytes);
+    const { numErrors, numWarnings } = report.issues;
+    const errors = report.issues.messages.filter((m) => m.severity === 0).slice(0, 5)
+      .map((m) => `${m.code} ${m.pointer ?? ''}: ${m.message}`);
+    check(numErrors === 0, `${c.label}: gltf-validator`,
+          `${numErrors} errors, ${numWarnings} warnings, ${report.issues.numInfos} infos` +
+          (errors.length ? '; ' + errors.join('; ') : ''));
+    if (!c.empty && !tampered) tampered = await validate(withWrongPositionMax(bytes));
+
+    let gltf;
+    try {
+      gltf = await loadGltf(bytes);
+    } catch (error) {
+      check(false, `${c.label}: three.js GLTFLoader`, String(error?.message ?? error));
+      continue;
+    }
+    const found = meshesByMaterial(gltf);
+    const summary = Object.entries(found).map(([k, v]) => `${k} ${v} vertices`).join(', ');
+    if (c.empty) {
+      check(Object.keys(found).length === 0, `${c.label}: three.js loads an empty scene`, summary);
+    } else {
+      check((found.bark ?? 0) > 0 && (found.leaves ?? 0) > 0,
+            `${c.label}: three.js finds bark and leaf meshes`, summary);
+    }
+    if (c.flowers) {
+      check((found.flowers ?? 0) > 0, `${c.label}: three.js finds the flower mesh`, summary);
+    }
+  }
+  check(tampered !== null && tampered.issues.numErrors > 0,
+        'gltf-validator rejects a .glb with a wrong POSITION max',
+        tampered ? tampered.issues.messages.filter((m) => m.severity === 0).map((m) => m.code)
+          .slice(0, 3).join(', ') : 'no valid tree to tamper with');
+} finally {
+  rmSync(dir, { recursive: true, force: true });
+}
+
+console.log(failures ? `${failures} check(s) failed` : 'all checks passed');
+process.exit(failures ? 1 : 0);

@@ -1,0 +1,238 @@
+// Unit tests of the .glb writer: container, JSON chunk, accessors, materials, binary payload.
+#include "io/gltf_export.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tree/growth.h"
+#include "tree/mesh.h"
+#include "tree/presets.h"
+
+namespace niwa {
+namespace {
+
+using nlohmann::json;
+
+constexpr int kFloat = 5126;
+constexpr int kUnsignedInt = 5125;
+constexpr int kArrayBuffer = 34962;
+constexpr int kElementArrayBuffer = 34963;
+
+Tree Grow(const std::string& preset, int years) {
+  GrowRequest r;
+  r.preset = preset;
+  r.params = FindPreset(preset)->params;
+  r.years = years;
+  r.seed = 1;
+  return GrowTree(r);
+}
+
+uint32_t ReadU32(const std::vector<unsigned char>& bytes, std::size_t offset) {
+  uint32_t value = 0;
+  std::memcpy(&value, bytes.data() + offset, 4);  // glb is little-endian, as are both targets
+  return value;
+}
+
+// A parsed .glb: its JSON and its BIN chunk payload.
+struct Glb {
+  json gltf;
+  std::vector<unsigned char> bin;
+};
+
+// Parses the container, checking the header and chunk layout (glTF 2.0 spec, 4.4).
+Glb ParseGlb(const std::vector<unsigned char>& bytes) {
+  Glb glb;
+  EXPECT_GE(bytes.size(), 20u);
+  if (bytes.size() < 20) return glb;
+  EXPECT_EQ(std::string(bytes.begin(), bytes.begin() + 4), "glTF");
+  EXPECT_EQ(ReadU32(bytes, 4), 2u);
+  EXPECT_EQ(ReadU32(bytes, 8), bytes.size());
+  EXPECT_EQ(bytes.size() % 4, 0u);
+  uint32_t json_length = ReadU32(bytes, 12);
+  EXPECT_EQ(json_length % 4, 0u);
+  EXPECT_EQ(ReadU32(bytes, 16), 0x4E4F534Au);  // "JSON"
+  EXPECT_LE(20u + json_length, bytes.size());
+  if (20u + json_length > bytes.size()) return glb;
+  glb.gltf = json::parse(bytes.begin() + 20, bytes.begin() + 20 + json_length);
+  std::size_t next = 20u + json_length;
+  if (next < bytes.size()) {
+    EXPECT_GE(bytes.size(), next + 8);
+    uint32_t bin_length = ReadU32(bytes, next);
+    EXPECT_EQ(ReadU32(bytes, next + 4), 0x004E4942u);  // "BIN\0"
+    EXPECT_EQ(next + 8 + bin_length, bytes.size());
+    glb.bin.assign(bytes.begin() + static_cast<std::ptrdiff_t>(next + 8), bytes.end());
+  }
+  return glb;
+}
+
+template <typename T>
+std::vector<T> ReadAccessor(const Glb& glb, int index) {
+  const json& accessor = glb.gltf["accessors"][static_cast<std::size_t>(index)];
+  const json& view = glb.gltf["bufferViews"][accessor["bufferView"].get<std::size_t>()];
+  std::size_t offset = view.value("byteOffset", std::size_t{0}) + accessor.value("byteOffset", 0u);
+  std::size_t length = view["byteLength"].get<std::size_t>();
+  std::vector<T> values(length / sizeof(T));
+  EXPECT_LE(offset + length, glb.bin.size());
+  if (offset + length <= glb.bin.size())
+    std::memcpy(values.data(), glb.bin.data() + offset, length);
+  return values;
+}
+
+void ExpectPrimitiveMatches(const Glb& glb, const json& primitive, const MeshBuffers& buffers,
+                            const std::string& material, bool double_sided) {
+  SCOPED_TRACE(material);
+  const json& attributes = primitive["attributes"];
+  ASSERT_TRUE(attributes.contains("POSITION"));
+  ASSERT_TRUE(attributes.contains("NORMAL"));
+  ASSERT_TRUE(attributes.contains("TEXCOORD_0"));
+  ASSERT_TRUE(primitive.contains("indices"));
+  EXPECT_EQ(primitive.value("mode", 4), 4);  // triangles
+
+  const json& accessors = glb.gltf["accessors"];
+  const json& position = accessors[attributes["POSITION"].get<std::size_t>()];
+  EXPECT_EQ(position["count"].get<std::size_t>(), buffers.vertex_count());
+  EXPECT_EQ(position["componentType"], kFloat);
+  EXPECT_EQ(position["type"], "VEC3");
+  ASSERT_EQ(position["min"].size(), 3u);
+  ASSERT_EQ(position["max"].size(), 3u);
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+    for (std::size_t v = 0; v < buffers.vertex_count(); ++v) {
+      lo = std::min(lo, buffers.positions[3 * v + axis]);
+      hi = std::max(hi, buffers.positions[3 * v + axis]);
+    }
+    EXPECT_EQ(position["min"][axis].get<double>(), static_cast<double>(lo));
+    EXPECT_EQ(position["max"][axis].get<double>(), static_cast<double>(hi));
+  }
+  const json& normal = accessors[attributes["NORMAL"].get<std::size_t>()];
+  EXPECT_EQ(normal["count"].get<std::size_t>(), buffers.vertex_count());
+  EXPECT_EQ(normal["type"], "VEC3");
+  const json& uv = accessors[attributes["TEXCOORD_0"].get<std::size_t>()];
+  EXPECT_EQ(uv["count"].get<std::size_t>(), buffers.vertex_count());
+  EXPECT_EQ(uv["type"], "VEC2");
+  const json& indices = accessors[primitive["indices"].get<std::size_t>()];
+  EXPECT_EQ(indices["count"].get<std::size_t>(), buffers.indices.size());
+  EXPECT_EQ(indices["componentType"], kUnsignedInt);
+  EXPECT_EQ(indices["type"], "SCALAR");
+
+  // The bytes behind the accessors are the mesh's own.
+  EXPECT_EQ(ReadAccessor<float>(glb, attributes["POSITION"].get<int>()), buffers.positions);
+  EXPECT_EQ(ReadAccessor<float>(glb, attributes["NORMAL"].get<int>()), buffers.normals);
+  EXPECT_EQ(ReadAccessor<float>(glb, attributes["TEXCOORD_0"].get<int>()), buffers.uvs);
+  EXPECT_EQ(ReadAccessor<uint32_t>(glb, primitive["indices"].get<int>()), buffers.indices);
+
+  const json& mat = glb.gltf["materials"][primitive["material"].get<std::size_t>()];
+  EXPECT_EQ(mat["name"], material);
+  EXPECT_EQ(mat.value("doubleSided", false), double_sided);
+  ASSERT_TRUE(mat.contains("pbrMetallicRoughness"));
+  EXPECT_EQ(mat["pbrMetallicRoughness"]["baseColorFactor"].size(), 4u);
+  if (mat.contains("emissiveFactor")) {
+    EXPECT_EQ(mat["emissiveFactor"].size(), 3u);
+  }
+}
+
+TEST(GltfExportTest, WritesAGlbWithBarkLeavesAndFlowers) {
+  TreeMesh mesh = BuildTreeMesh(Grow("sakura", 8));
+  ASSERT_GT(mesh.flowers.vertex_count(), 0u);
+  std::vector<unsigned char> bytes;
+  ASSERT_EQ(WriteGlb(mesh, &bytes), "");
+  Glb glb = ParseGlb(bytes);
+  const json& gltf = glb.gltf;
+  EXPECT_EQ(gltf["asset"]["version"], "2.0");
+  ASSERT_EQ(gltf["scenes"].size(), 1u);
+  ASSERT_EQ(gltf["nodes"].size(), 1u);
+  EXPECT_EQ(gltf["scenes"][0]["nodes"], json::array({0}));
+  EXPECT_EQ(gltf["nodes"][0]["mesh"], 0);
+  ASSERT_EQ(gltf["meshes"].size(), 1u);
+  const json& primitives = gltf["meshes"][0]["primitives"];
+  ASSERT_EQ(primitives.size(), 3u);
+  ExpectPrimitiveMatches(glb, primitives[0], mesh.bark, "bark", false);
+  ExpectPrimitiveMatches(glb, primitives[1], mesh.leaves, "leaves", true);
+  ExpectPrimitiveMatches(glb, primitives[2], mesh.flowers, "flowers", true);
+
+  // One buffer (the BIN chunk), aligned views with their targets.
+  ASSERT_EQ(gltf["buffers"].size(), 1u);
+  EXPECT_FALSE(gltf["buffers"][0].contains("uri"));
+  std::size_t buffer_length = gltf["buffers"][0]["byteLength"].get<std::size_t>();
+  EXPECT_LE(buffer_length, glb.bin.size());
+  EXPECT_LT(glb.bin.size(), buffer_length + 4);
+  for (const json& view : gltf["bufferViews"]) {
+    EXPECT_EQ(view["buffer"], 0);
+    EXPECT_EQ(view.value("byteOffset", std::size_t{0}) % 4, 0u);
+    EXPECT_LE(view.value("byteOffset", std::size_t{0}) + view["byteLength"].get<std::size_t>(),
+              buffer_length);
+    ASSERT_TRUE(view.contains("target"));
+    EXPECT_TRUE(view["target"] == kArrayBuffer || view["target"] == kElementArrayBuffer);
+  }
+  for (const json& primitive : primitives) {
+    std::size_t index_view =
+        gltf["accessors"][primitive["indices"].get<std::size_t>()]["bufferView"].get<std::size_t>();
+    EXPECT_EQ(gltf["bufferViews"][index_view]["target"], kElementArrayBuffer);
+  }
+}
+
+TEST(GltfExportTest, SkipsEmptyPrimitives) {
+  TreeMesh mesh = BuildTreeMesh(Grow("keyaki", 4));
+  ASSERT_EQ(mesh.flowers.vertex_count(), 0u);
+  std::vector<unsigned char> bytes;
+  ASSERT_EQ(WriteGlb(mesh, &bytes), "");
+  Glb glb = ParseGlb(bytes);
+  const json& primitives = glb.gltf["meshes"][0]["primitives"];
+  ASSERT_EQ(primitives.size(), 2u);
+  ExpectPrimitiveMatches(glb, primitives[0], mesh.bark, "bark", false);
+  ExpectPrimitiveMatches(glb, primitives[1], mesh.leaves, "leaves", true);
+  EXPECT_EQ(glb.gltf["materials"].size(), 2u);
+}
+
+TEST(GltfExportTest, EmptyMeshGivesAValidSceneWithoutMesh) {
+  std::vector<unsigned char> bytes{1, 2, 3};  // stale content is replaced
+  ASSERT_EQ(WriteGlb(BuildTreeMesh(Grow("sakura", 0)), &bytes), "");
+  Glb glb = ParseGlb(bytes);
+  EXPECT_TRUE(glb.bin.empty());
+  EXPECT_EQ(glb.gltf["asset"]["version"], "2.0");
+  ASSERT_EQ(glb.gltf["scenes"].size(), 1u);
+  ASSERT_EQ(glb.gltf["nodes"].size(), 1u);
+  EXPECT_FALSE(glb.gltf["nodes"][0].contains("mesh"));
+  EXPECT_FALSE(glb.gltf.contains("meshes"));
+  EXPECT_FALSE(glb.gltf.contains("buffers"));
+  EXPECT_FALSE(glb.gltf.contains("accessors"));
+}
+
+TEST(GltfExportTest, RejectsInconsistentBuffers) {
+  TreeMesh good = BuildTreeMesh(Grow("tsutsuji", 3));
+  std::vector<unsigned char> bytes;
+
+  TreeMesh out_of_range = good;
+  out_of_range.leaves.indices.back() = static_cast<uint32_t>(good.leaves.vertex_count());
+  std::string error = WriteGlb(out_of_range, &bytes);
+  EXPECT_NE(error.find("leaves"), std::string::npos) << error;
+  EXPECT_EQ(error.find('\n'), std::string::npos);
+  EXPECT_TRUE(bytes.empty());
+
+  TreeMesh short_normals = good;
+  short_normals.bark.normals.pop_back();
+  EXPECT_NE(WriteGlb(short_normals, &bytes), "");
+
+  TreeMesh partial_triangle = good;
+  partial_triangle.bark.indices.push_back(0);
+  EXPECT_NE(WriteGlb(partial_triangle, &bytes), "");
+
+  EXPECT_NE(WriteGlb(good, nullptr), "");
+}
+
+TEST(GltfExportTest, OutputIsDeterministic) {
+  TreeMesh mesh = BuildTreeMesh(Grow("sakura", 5));
+  std::vector<unsigned char> a, b;
+  ASSERT_EQ(WriteGlb(mesh, &a), "");
+  ASSERT_EQ(WriteGlb(mesh, &b), "");
+  EXPECT_EQ(a, b);
+}
+
+}  // namespace
+}  // namespace niwa

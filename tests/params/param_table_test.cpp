@@ -1,0 +1,70 @@
+// Tests of the parameter table: completeness, defaults in range, one-line errors naming field and range.
+#include "params/param_table.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+namespace niwa {
+namespace {
+
+TEST(ParamTable, RowsAreInIdOrderWithUniqueKeysAndDefaultsInRange) {
+  std::set<std::string> keys;
+  for (std::size_t i = 0; i < ParamTable().size(); ++i) {
+    const ParamSpec& s = ParamTable()[i];
+    EXPECT_EQ(static_cast<std::size_t>(s.id), i) << s.key;
+    EXPECT_TRUE(keys.insert(s.key).second) << "duplicate key " << s.key;
+    EXPECT_LE(s.min_value, s.default_value) << s.key;
+    EXPECT_GE(s.max_value, s.default_value) << s.key;
+    EXPECT_STRNE(s.help, "") << s.key;
+    EXPECT_STRNE(s.group, "") << s.key;
+  }
+}
+
+TEST(ParamTable, EverySymbolOfThesisTable21IsPresent) {
+  const char* symbols[] = {"α_t", "α_tl", "α_l", "β_c", "β_p", "h_s", "h_l", "γ", "H_s", "N", "D",
+                           "B_t", "B_tl", "B_l", "ϕ", "θ_N", "ψ_t", "ψ_tl", "ψ_l", "P_tl^s",
+                           "P_tl^l", "P_l", "b_L", "b_g", "θ_bmax^N", "θ_bmax^b", "H_b^l", "δ_l",
+                           "B_b^l", "H_n^l", "h_b^d", "δ_d", "B_b^d", "H_n^d"};
+  for (const char* symbol : symbols) {
+    bool found = false;
+    for (const ParamSpec& s : ParamTable()) found = found || std::string(s.symbol) == symbol;
+    EXPECT_TRUE(found) << symbol;
+  }
+}
+
+TEST(ParamSet, SetRejectsOutOfRangeAndNonIntegersWithOneLineNamingKeyAndRange) {
+  ParamSet p;
+  EXPECT_EQ(p.Set(ParamId::kAlphaT, 0.5), "");
+  EXPECT_EQ(p.Get(ParamId::kAlphaT), 0.5);
+  std::string error = p.Set(ParamId::kAlphaT, 1.5);
+  EXPECT_EQ(error, "alpha_t: 1.5 is out of range; must be a number in [0, 1]");
+  EXPECT_EQ(p.Get(ParamId::kAlphaT), 0.5);  // unchanged
+  error = p.Set(ParamId::kNHigh, 2.5);
+  EXPECT_EQ(error, "N_high: 2.5 is out of range; must be a whole number in [1, 100]");
+  EXPECT_EQ(error.find('\n'), std::string::npos);
+}
+
+TEST(ParamSet, SetFromTextParsesStrictly) {
+  ParamSet p;
+  EXPECT_EQ(p.SetFromText("gamma", "0.25"), "");
+  EXPECT_EQ(p.Get(ParamId::kGamma), 0.25);
+  EXPECT_EQ(p.SetFromText("gamma", "0.3x"), "gamma: '0.3x' is not a number in [0, 1]");
+  EXPECT_EQ(p.SetFromText("gamma", "nan"), "gamma: 'nan' is not a number in [0, 1]");
+  EXPECT_EQ(p.SetFromText("gamma", "1e999"), "gamma: '1e999' is not a number in [0, 1]");
+  EXPECT_EQ(p.SetFromText("nope", "1"), "unknown parameter 'nope'");
+  EXPECT_EQ(p.Get(ParamId::kGamma), 0.25);
+}
+
+TEST(FormatNumber, RoundTripsExactly) {
+  for (double v : {0.1, 1.0 / 3.0, 2.0 / 5.0, 1e-7, 123456.789, 0.0, -4.0}) {
+    EXPECT_EQ(*ParseNumber(FormatNumber(v)), v) << FormatNumber(v);
+  }
+  EXPECT_EQ(FormatNumber(0.4), "0.4");
+  EXPECT_FALSE(ParseNumber(""));
+  EXPECT_FALSE(ParseNumber("1 2"));
+}
+
+}  // namespace
+}  // namespace niwa

@@ -1,0 +1,296 @@
+// Tests of the growth model: hand-computed equations, properties of grown trees, pruning, determinism.
+#include "tree/growth.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "math/rotation.h"
+#include "tree/presets.h"
+
+namespace niwa {
+namespace {
+
+GrowRequest RequestFor(const std::string& preset, int years, uint64_t seed = 1) {
+  GrowRequest r;
+  r.preset = preset;
+  r.params = FindPreset(preset)->params;
+  r.years = years;
+  r.seed = seed;
+  return r;
+}
+
+TEST(HormoneRamp, InterpolatesTableRangesByHormone) {
+  ParamSet p = FindPreset("sakura")->params;  // N 6 ~ 25, H_sat 1
+  EXPECT_FLOAT_EQ(HormoneRamp(p, 0.0f, ParamId::kNLow, ParamId::kNHigh), 6.0f);
+  EXPECT_FLOAT_EQ(HormoneRamp(p, 0.5f, ParamId::kNLow, ParamId::kNHigh), 15.5f);
+  EXPECT_FLOAT_EQ(HormoneRamp(p, 3.0f, ParamId::kNLow, ParamId::kNHigh), 25.0f);
+  EXPECT_FLOAT_EQ(HormoneRamp(p, 0.5f, ParamId::kBLLow, ParamId::kBLHigh), 0.065f);  // 0.12 ~ 0.01
+  p.Set(ParamId::kUseHormone, 0);
+  EXPECT_FLOAT_EQ(HormoneRamp(p, 0.0f, ParamId::kNLow, ParamId::kNHigh), 25.0f);
+}
+
+TEST(BreakProbability, FollowsFig28AroundTheDwarfThreshold) {
+  // Below H_s at most P^s, above at least P^s, reaching P^l at H_sat.
+  EXPECT_FLOAT_EQ(BreakProbability(0.05f, 0.1f, 1.0f, 0.3f, 1.0f), 0.15f);
+  EXPECT_FLOAT_EQ(BreakProbability(0.1f, 0.1f, 1.0f, 0.3f, 1.0f), 0.3f);
+  EXPECT_FLOAT_EQ(BreakProbability(0.55f, 0.1f, 1.0f, 0.3f, 1.0f), 0.65f);
+  EXPECT_FLOAT_EQ(BreakProbability(2.0f, 0.1f, 1.0f, 0.3f, 1.0f), 1.0f);
+  EXPECT_FLOAT_EQ(BreakProbability(0.0f, 0.1f, 1.0f, 0.3f, 1.0f), 0.0f);
+}
+
+TEST(HormoneModel, Equations21To23OnTheBinaryTreeByHand) {
+  // binary: alpha_t 1, alpha_tl 0.4, beta_c 0.8, beta_p 0, h_s 0.1, h_l 0.3, gamma 0.5, H_s 0.5,
+  // light off (L = 1), H_init 1.
+  Grower grower(RequestFor("binary", 2));
+  grower.GrowYear();
+  const Branch& seedling = grower.tree().branches[0];
+  EXPECT_FLOAT_EQ(seedling.hormone_initial, 1.0f);
+  EXPECT_FALSE(seedling.dwarf);
+  EXPECT_FLOAT_EQ(seedling.hormone, 0.8f * 1.0f + 0.3f * 1.0f);  // eq. 2.2, long shoot
+  grower.GrowYear();
+  const Tree& tree = grower.tree();
+  ASSERT_EQ(tree.branches.size(), 3u);  // P_tl at H >= H_sat is P_tl^l = 1: both buds break
+  const Branch& terminal = tree.branches[1];
+  const Branch& lateral = tree.branches[2];
+  EXPECT_EQ(terminal.kind, ShootKind::kTerminal);
+  EXPECT_EQ(lateral.kind, ShootKind::kTerminallyLateral);
+  EXPECT_FLOAT_EQ(terminal.hormone_initial, 1.0f * 1.1f);     // eq. 2.1, alpha_t
+  EXPECT_FLOAT_EQ(lateral.hormone_initial, 0.4f * 1.1f);      // eq. 2.1, alpha_tl
+  EXPECT_TRUE(lateral.dwarf);                                 // 0.44 < H_s = 0.5
+  EXPECT_FLOAT_EQ(terminal.hormone, 0.8f * 1.1f + 0.3f);      // eq. 2.2, long
+  EXPECT_FLOAT_EQ(lateral.hormone, 0.8f * 0.44f + 0.1f);      // eq. 2.2, dwarf
+  EXPECT_FLOAT_EQ(tree.branches[0].hormone,
+                  0.0f * 1.1f + 0.5f * (terminal.hormone + lateral.hormone));  // eq. 2.3
+  EXPECT_FLOAT_EQ(tree.branches[0].hormone_previous, 1.1f);
+}
+
+TEST(Branching, BinaryTreeSplitsInTwoWithTheTableAngles) {
+  Tree tree = GrowTree(RequestFor("binary", 2));
+  const Branch& parent = tree.branches[0];
+  glm::vec3 up = glm::normalize(parent.nodes[1] - parent.nodes[0]);
+  for (const Branch& child : {tree.branches[1], tree.branches[2]}) {
+    float angle = AngleBetween(up, child.bud_direction) * 180.0f / kPi;
+    EXPECT_NEAR(angle, child.kind == ShootKind::kTerminal ? 10.0f : 30.0f, 1e-3f);
+    EXPECT_EQ(child.nodes[0], parent.nodes[1]);
+  }
+  // psi_t = -10 turns the terminal shoot away from the terminally-lateral side.
+  EXPECT_LT(glm::dot(tree.branches[1].bud_direction - up, tree.branches[2].bud_direction - up), 0.0f);
+}
+
+// Straight shoot (no light, no bending) with lateral buds on every node.
+Tree StraightShoot(double phi, int buds_per_node) {
+  GrowRequest r = RequestFor("sakura", 1);
+  r.params.Set(ParamId::kUseLight, 0);
+  r.params.Set(ParamId::kUseHormone, 0);
+  r.params.Set(ParamId::kBGLow, 0);
+  r.params.Set(ParamId::kBGHigh, 0);
+  r.params.Set(ParamId::kBLLow, 0);
+  r.params.Set(ParamId::kBLHigh, 0);
+  r.params.Set(ParamId::kPhi, phi);
+  r.params.Set(ParamId::kBL, buds_per_node);
+  r.params.Set(ParamId::kPsiL, 90);
+  return GrowTree(r);
+}
+
+float AzimuthDegrees(const glm::vec3& v) {
+  return std::atan2(v.z, v.x) * 180.0f / kPi;
+}
+
+float TurnBetween(const glm::vec3& a, const glm::vec3& b) {
+  float turn = AzimuthDegrees(b) - AzimuthDegrees(a);
+  while (turn < 0) turn += 360.0f;
+  while (turn >= 360.0f) turn -= 360.0f;
+  return std::min(turn, 360.0f - turn);  // divergence angle, either sense of the spiral
+}
+
+TEST(Phyllotaxis, AlternateTwoFifthsTurns144DegreesPerNode) {
+  Tree tree = StraightShoot(0.4, 1);
+  std::vector<glm::vec3> laterals;
+  for (const Bud& bud : tree.branches[0].buds) {
+    if (bud.kind == ShootKind::kLateral) laterals.push_back(bud.direction);
+  }
+  ASSERT_EQ(laterals.size(), 24u);  // N = 25 nodes, laterals on nodes 1..24
+  for (std::size_t i = 1; i < laterals.size(); ++i) {
+    EXPECT_NEAR(TurnBetween(laterals[i - 1], laterals[i]), 144.0f, 1e-2f) << i;
+    EXPECT_NEAR(laterals[i].y, 0.0f, 1e-4f);  // psi_l = 90: horizontal
+  }
+}
+
+TEST(Phyllotaxis, DecussatePairsAreOppositeAndCrossed) {
+  Tree tree = StraightShoot(0.25, 2);
+  std::vector<glm::vec3> laterals;
+  for (const Bud& bud : tree.branches[0].buds) {
+    if (bud.kind == ShootKind::kLateral) laterals.push_back(bud.direction);
+  }
+  ASSERT_EQ(laterals.size(), 48u);
+  for (std::size_t i = 0; i + 3 < laterals.size(); i += 2) {
+    EXPECT_NEAR(TurnBetween(laterals[i], laterals[i + 1]), 180.0f, 1e-2f);
+    EXPECT_NEAR(TurnBetween(laterals[i], laterals[i + 2]), 90.0f, 1e-2f);
+  }
+}
+
+TEST(Bending, StepCapsOfEquations27And29Hold) {
+  GrowRequest r = RequestFor("sakura", 6);
+  r.params.Set(ParamId::kBLLow, 1);  // strong phototropism so the caps bind
+  r.params.Set(ParamId::kBLHigh, 1);
+  Tree tree = GrowTree(r);
+  float cap_b = 20.0f, cap_n = 15.0f;
+  int checked = 0;
+  for (const Branch& b : tree.branches) {
+    if (!b.alive) continue;
+    glm::vec3 previous = b.bud_direction;
+    for (std::size_t i = 1; i < b.nodes.size(); ++i) {
+      glm::vec3 d = glm::normalize(b.nodes[i] - b.nodes[i - 1]);
+      float bend = AngleBetween(previous, d) * 180.0f / kPi;
+      EXPECT_LE(bend, (i == 1 ? cap_b : cap_n) + 1e-2f);
+      previous = d;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 100);
+}
+
+TEST(LightDeath, ShootsBelowKTimesHalfAlwaysDieAndAboveKNeverDo) {
+  GrowRequest r = RequestFor("sakura", 8);
+  r.params.Set(ParamId::kKDeath, 0.5);
+  Tree tree = GrowTree(r);
+  int dead = 0;
+  for (const Branch& b : tree.branches) {
+    if (b.parent < 0) continue;
+    if (b.alive) {
+      EXPECT_GE(b.light, 0.5f * 0.5f) << b.id;
+    }
+    if (b.light >= 0.5f) {
+      EXPECT_TRUE(b.alive || !tree.branches[static_cast<std::size_t>(b.parent)].alive);
+    }
+    dead += b.alive ? 0 : 1;
+  }
+  EXPECT_GT(dead, 0);
+  r.params.Set(ParamId::kKDeath, 0.0);
+  for (const Branch& b : GrowTree(r).branches) EXPECT_TRUE(b.alive);
+}
+
+void ExpectConsistentTree(const Tree& tree) {
+  for (const Branch& b : tree.branches) {
+    ASSERT_GE(b.nodes.size(), 2u);
+    for (const glm::vec3& n : b.nodes) ASSERT_TRUE(std::isfinite(n.x + n.y + n.z)) << b.id;
+    for (std::size_t i = 1; i < b.nodes.size(); ++i) {
+      EXPECT_NEAR(glm::length(b.nodes[i] - b.nodes[i - 1]), b.internode_length,
+                  1e-3f * b.internode_length + 1e-5f);
+      EXPECT_GT(b.internode_length, 0.0f);
+    }
+    EXPECT_TRUE(std::isfinite(b.hormone));
+    EXPECT_GE(b.hormone, 0.0f);
+    EXPECT_GE(b.light, 0.0f);
+    EXPECT_LE(b.light, 1.0f);
+    EXPECT_GT(b.cross_section, -1e-9f);
+    if (b.parent >= 0) {
+      const Branch& parent = tree.branches[static_cast<std::size_t>(b.parent)];
+      EXPECT_LT(parent.id, b.id);
+      EXPECT_LT(parent.year, b.year);
+      EXPECT_EQ(b.nodes[0], parent.nodes[static_cast<std::size_t>(b.parent_node)]);
+      EXPECT_NE(std::find(parent.children.begin(), parent.children.end(), b.id), parent.children.end());
+      if (b.alive) {
+        EXPECT_TRUE(parent.alive) << b.id;
+      }
+      if (b.alive) {
+        EXPECT_GE(parent.cross_section, b.cross_section);  // pipe model
+      }
+    }
+  }
+}
+
+TEST(Properties, EveryPresetGrowsAConsistentTree) {
+  for (const Preset& preset : Presets()) {
+    SCOPED_TRACE(preset.name);
+    Tree tree = GrowTree(RequestFor(preset.name, 8, 3));
+    ExpectConsistentTree(tree);
+    TreeStats stats = ComputeStats(tree);
+    EXPECT_GT(stats.internodes, 1);
+    EXPECT_GT(stats.height, 0.0);
+  }
+}
+
+TEST(Determinism, SameSeedSameTreeOtherSeedOtherTree) {
+  Tree a = GrowTree(RequestFor("sakura", 8, 5));
+  Tree b = GrowTree(RequestFor("sakura", 8, 5));
+  Tree c = GrowTree(RequestFor("sakura", 8, 6));
+  ASSERT_EQ(a.branches.size(), b.branches.size());
+  for (std::size_t i = 0; i < a.branches.size(); ++i) {
+    EXPECT_EQ(a.branches[i].nodes, b.branches[i].nodes);
+    EXPECT_EQ(a.branches[i].alive, b.branches[i].alive);
+  }
+  EXPECT_NE(ComputeStats(a).internodes, ComputeStats(c).internodes);
+}
+
+TEST(Pruning, CutPartsNeverReturnAndRegrowthComesFromDormancyBreak) {
+  GrowRequest r = RequestFor("binary", 13);
+  r.prunes.push_back({10, -1, 7});  // fig. 2.15: at year 10 remove all growth since year 7
+  Grower grower(r);
+  while (grower.year() < 10) grower.GrowYear();
+  std::vector<char> alive_after_prune;
+  int internodes_after_prune = ComputeStats(grower.tree()).internodes;
+  for (const Branch& b : grower.tree().branches) {
+    alive_after_prune.push_back(b.alive);
+    if (b.alive) {
+      EXPECT_LT(b.year, 7);
+    }
+  }
+  while (grower.year() < 13) grower.GrowYear();
+  const Tree& tree = grower.tree();
+  for (std::size_t i = 0; i < alive_after_prune.size(); ++i) {
+    if (!alive_after_prune[i]) {
+      EXPECT_FALSE(tree.branches[i].alive) << "branch " << i << " came back";
+    }
+  }
+  EXPECT_GT(ComputeStats(tree).internodes, internodes_after_prune);
+
+  // Without dormancy break there is nothing left to grow from.
+  r.params.Set(ParamId::kDeltaL, 0);
+  r.params.Set(ParamId::kDeltaD, 0);
+  Grower still(r);
+  while (still.year() < 10) still.GrowYear();
+  int before = ComputeStats(still.tree()).internodes;
+  while (still.year() < 13) still.GrowYear();
+  EXPECT_EQ(ComputeStats(still.tree()).internodes, before);
+}
+
+TEST(Pruning, BranchSelectorRemovesTheBranchAndEverythingAbove) {
+  GrowRequest r = RequestFor("sakura", 6);
+  Tree full = GrowTree(r);
+  int target = full.branches[1].id;
+  r.prunes.push_back({6, target, -1});
+  Tree cut = GrowTree(r);
+  EXPECT_FALSE(cut.branches[static_cast<std::size_t>(target)].alive);
+  for (int child : cut.branches[static_cast<std::size_t>(target)].children) {
+    EXPECT_FALSE(cut.branches[static_cast<std::size_t>(child)].alive);
+  }
+  EXPECT_LT(ComputeStats(cut).internodes, ComputeStats(full).internodes);
+}
+
+TEST(Limits, MaxInternodesStopsGrowthAndFlagsTruncation) {
+  GrowRequest r = RequestFor("sakura", 15);
+  r.params.Set(ParamId::kMaxInternodes, 1000);
+  Tree tree = GrowTree(r);
+  EXPECT_TRUE(tree.truncated);
+  EXPECT_LE(ComputeStats(tree).internodes, 1000);
+}
+
+TEST(Flowers, SakuraDwarfShootLateralsBloom) {
+  Tree tree = GrowTree(RequestFor("sakura", 12));
+  EXPECT_GT(ComputeStats(tree).flowers, 0);
+  for (const Branch& b : tree.branches) {
+    for (const Bud& bud : b.buds) {
+      if (bud.flower) {
+        EXPECT_TRUE(b.dwarf && bud.kind == ShootKind::kLateral);
+      }
+    }
+  }
+  GrowRequest r = RequestFor("sakura", 12);
+  r.params.Set(ParamId::kDwarfLateralFlowers, 0);
+  EXPECT_EQ(ComputeStats(GrowTree(r)).flowers, 0);
+}
+
+}  // namespace
+}  // namespace niwa

@@ -1,0 +1,97 @@
+// Tests of the leaf-sphere light model: unshaded and shaded cases, and the grid against the reference.
+#include "tree/light.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "tree/growth.h"
+#include "tree/presets.h"
+
+namespace niwa {
+namespace {
+
+Sky DefaultSky() { return MakeSky(60.0f, 0.0f, 0.3f); }
+
+TEST(Sky, WeightsSumToOneAndDirectionsPointUp) {
+  Sky sky = MakeSky(45.0f, 30.0f, 0.25f);
+  float total = 0.0f;
+  for (std::size_t k = 0; k < sky.directions.size(); ++k) {
+    total += sky.weights[k];
+    EXPECT_GT(sky.directions[k].y, 0.0f);
+    EXPECT_NEAR(glm::length(sky.directions[k]), 1.0f, 1e-5f);
+  }
+  EXPECT_NEAR(total, 1.0f, 1e-5f);
+  EXPECT_NEAR(sky.weights.back(), 0.25f, 1e-6f);
+  EXPECT_NEAR(sky.directions.back().y, std::sin(45.0f * 3.14159265f / 180.0f), 1e-5f);
+}
+
+TEST(Light, LoneSphereGetsFullLightTowardsTheBrightSky) {
+  std::vector<LeafSphere> one = {{glm::vec3(0, 10, 0), 2.0f}};
+  for (const auto& samples : {ComputeLightReference(one, DefaultSky(), 0.5f),
+                              ComputeLightGrid(one, DefaultSky(), 0.5f)}) {
+    EXPECT_NEAR(samples[0].light, 1.0f, 1e-4f);
+    EXPECT_GT(samples[0].direction.y, 0.7f);
+  }
+}
+
+TEST(Light, SphereBelowAnotherIsShadedAndLeansAway) {
+  // Reference by hand for the zenith ray: the lower centre sees one full diameter of the upper sphere.
+  std::vector<LeafSphere> pair = {{glm::vec3(0, 0, 0), 1.0f}, {glm::vec3(0, 3, 0), 1.0f}};
+  Sky zenith;
+  zenith.directions = {glm::vec3(0, 1, 0)};
+  zenith.weights = {1.0f};
+  auto exact = ComputeLightReference(pair, zenith, 0.5f);
+  EXPECT_NEAR(exact[0].light, 0.5f, 1e-5f);  // (1 - opacity) after one diameter
+  EXPECT_NEAR(exact[1].light, 1.0f, 1e-6f);
+  auto sky = ComputeLightReference(pair, DefaultSky(), 0.5f);
+  EXPECT_LT(sky[0].light, sky[1].light);
+  auto grid = ComputeLightGrid(pair, DefaultSky(), 0.5f);
+  EXPECT_LT(grid[0].light, grid[1].light);
+}
+
+double Pearson(const std::vector<double>& a, const std::vector<double>& b) {
+  double ma = 0, mb = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) { ma += a[i]; mb += b[i]; }
+  ma /= static_cast<double>(a.size());
+  mb /= static_cast<double>(b.size());
+  double sab = 0, saa = 0, sbb = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    sab += (a[i] - ma) * (b[i] - mb);
+    saa += (a[i] - ma) * (a[i] - ma);
+    sbb += (b[i] - mb) * (b[i] - mb);
+  }
+  return sab / std::sqrt(saa * sbb);
+}
+
+TEST(Light, GridAgreesWithReferenceOnEveryPresetAt8Years) {
+  for (const Preset& preset : Presets()) {
+    GrowRequest r;
+    r.preset = preset.name;
+    r.params = preset.params;
+    r.years = 8;
+    Tree tree = GrowTree(r);
+    std::vector<LeafSphere> spheres;
+    float leaf = static_cast<float>(preset.params.Get(ParamId::kLeafSize));
+    for (const Branch& b : tree.branches) {  // the same spheres the growth model uses
+      if (!b.alive || b.year != tree.years) continue;
+      spheres.push_back({0.5f * (b.nodes.front() + b.nodes.back()),
+                         0.5f * glm::length(b.nodes.back() - b.nodes.front()) + 0.5f * leaf});
+    }
+    if (spheres.size() < 10) continue;  // too few shoots to correlate
+    auto exact = ComputeLightReference(spheres, DefaultSky(), 0.5f);
+    auto fast = ComputeLightGrid(spheres, DefaultSky(), 0.5f);
+    std::vector<double> a, b;
+    for (std::size_t i = 0; i < spheres.size(); ++i) {
+      a.push_back(exact[i].light);
+      b.push_back(fast[i].light);
+    }
+    double r_value = Pearson(a, b);
+    EXPECT_GE(r_value, 0.95) << preset.name << " with " << spheres.size() << " spheres";
+  }
+}
+
+}  // namespace
+}  // namespace niwa

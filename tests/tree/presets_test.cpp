@@ -1,0 +1,35 @@
+// Tests that the preset files load and carry the values of thesis table 2.2.
+#include "tree/presets.h"
+
+#include <gtest/gtest.h>
+
+namespace niwa {
+namespace {
+
+TEST(Presets, ThesisSpeciesLoadWithTable22Values) {
+  ASSERT_NE(FindPreset("binary"), nullptr);
+  ASSERT_NE(FindPreset("sakura"), nullptr);
+  ASSERT_NE(FindPreset("keyaki"), nullptr);
+  ASSERT_NE(FindPreset("tsutsuji"), nullptr);
+  EXPECT_EQ(FindPreset("nope"), nullptr);
+  const ParamSet& binary = FindPreset("binary")->params;
+  EXPECT_EQ(binary.Get(ParamId::kPsiT), -10);
+  EXPECT_EQ(binary.Get(ParamId::kPTlS), 0.3);
+  EXPECT_EQ(binary.Get(ParamId::kHBD), 2);
+  const ParamSet& sakura = FindPreset("sakura")->params;
+  EXPECT_EQ(sakura.Get(ParamId::kNLow), 6);
+  EXPECT_EQ(sakura.Get(ParamId::kNHigh), 25);
+  EXPECT_EQ(sakura.Get(ParamId::kPhi), 0.4);
+  EXPECT_EQ(sakura.Get(ParamId::kThetaBmaxB), 20);
+  const ParamSet& keyaki = FindPreset("keyaki")->params;
+  EXPECT_EQ(keyaki.Get(ParamId::kThetaN), 6);
+  EXPECT_EQ(keyaki.Get(ParamId::kSympodial), 1);
+  EXPECT_EQ(keyaki.Get(ParamId::kPLOld), 0.7);
+  const ParamSet& tsutsuji = FindPreset("tsutsuji")->params;
+  EXPECT_EQ(tsutsuji.Get(ParamId::kBTl), 3);
+  EXPECT_EQ(tsutsuji.Get(ParamId::kDeltaD), 0.8);
+  EXPECT_EQ(PresetNames().find("binary"), 0u);
+}
+
+}  // namespace
+}  // namespace niwa

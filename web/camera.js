@@ -1,0 +1,147 @@
+// Orbit camera: yaw/pitch/distance around a target, driven by mouse drag, wheel, touch and keys.
+
+const clamp = (x, lo, hi) => Math.min(hi, Math.max(lo, x));
+
+export class OrbitCamera {
+  constructor() {
+    this.yaw = 0.6;         // radians around +y
+    this.pitch = 0.25;      // radians above the horizon
+    this.distance = 10;     // metres
+    this.target = [0, 2, 0];
+    this.fov = (45 * Math.PI) / 180;
+    this.near = 0.05;
+    this.far = 500;
+  }
+
+  // Frames an axis-aligned box {min:[x,y,z], max:[x,y,z]} (metres), keeping yaw and pitch.
+  frame(bounds) {
+    const min = bounds.min, max = bounds.max;
+    const size = [max[0] - min[0], max[1] - min[1], max[2] - min[2]];
+    const radius = Math.max(0.25, 0.5 * Math.hypot(size[0], size[1], size[2]));
+    this.target = [(min[0] + max[0]) / 2, (min[1] + max[1]) / 2, (min[2] + max[2]) / 2];
+    this.distance = (radius / Math.sin(this.fov / 2)) * 1.02;
+    this.far = Math.max(100, this.distance * 20);
+    this.near = Math.max(0.01, this.distance / 1000);
+  }
+
+  orbit(dYaw, dPitch) {
+    this.yaw += dYaw;
+    this.pitch = clamp(this.pitch + dPitch, -0.1, 1.5);
+  }
+
+  zoom(factor) {
+    this.distance = clamp(this.distance * factor, 0.2, 400);
+  }
+
+  position() {
+    const cp = Math.cos(this.pitch);
+    return [
+      this.target[0] + this.distance * cp * Math.sin(this.yaw),
+      this.target[1] + this.distance * Math.sin(this.pitch),
+      this.target[2] + this.distance * cp * Math.cos(this.yaw),
+    ];
+  }
+
+  viewProjection(aspect) {
+    return multiply(perspective(this.fov, aspect, this.near, this.far), lookAt(this.position(), this.target, [0, 1, 0]));
+  }
+
+  // Mouse drag / one-finger orbit, wheel zoom, two-finger pinch, arrow and +/- keys on `element`.
+  attach(element, onChange) {
+    const pointers = new Map();
+    let pinch = 0;
+    const spread = () => {
+      const [a, b] = [...pointers.values()];
+      return Math.hypot(a.x - b.x, a.y - b.y);
+    };
+    element.addEventListener('pointerdown', (e) => {
+      element.setPointerCapture(e.pointerId);
+      pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
+      if (pointers.size === 2) pinch = spread();
+    });
+    element.addEventListener('pointermove', (e) => {
+      const p = pointers.get(e.pointerId);
+      if (!p) return;
+      if (pointers.size === 1) {
+        this.orbit(-(e.clientX - p.x) * 0.008, (e.clientY - p.y) * 0.008);
+        p.x = e.clientX;
+        p.y = e.clientY;
+        onChange();
+      } else if (pointers.size === 2) {
+        p.x = e.clientX;
+        p.y = e.clientY;
+        const now = spread();
+        if (pinch > 0 && now > 0) this.zoom(pinch / now);
+        pinch = now;
+        onChange();
+      }
+    });
+    const end = (e) => {
+      pointers.delete(e.pointerId);
+      pinch = pointers.size === 2 ? spread() : 0;
+    };
+    element.addEventListener('pointerup', end);
+    element.addEventListener('pointercancel', end);
+    element.addEventListener('wheel', (e) => {
+      e.preventDefault();
+      this.zoom(Math.exp(clamp(e.deltaY, -200, 200) * 0.0015));
+      onChange();
+    }, { passive: false });
+    element.addEventListener('keydown', (e) => {
+      const step = 0.08;
+      const actions = {
+        ArrowLeft: () => this.orbit(step, 0),
+        ArrowRight: () => this.orbit(-step, 0),
+        ArrowUp: () => this.orbit(0, step),
+        ArrowDown: () => this.orbit(0, -step),
+        '+': () => this.zoom(0.9),
+        '=': () => this.zoom(0.9),
+        '-': () => this.zoom(1 / 0.9),
+      };
+      const action = actions[e.key];
+      if (action) {
+        e.preventDefault();
+        action();
+        onChange();
+      }
+    });
+  }
+}
+
+// Column-major 4x4 matrices (WebGL convention).
+export function perspective(fov, aspect, near, far) {
+  const f = 1 / Math.tan(fov / 2);
+  const nf = 1 / (near - far);
+  return new Float32Array([f / aspect, 0, 0, 0, 0, f, 0, 0, 0, 0, (far + near) * nf, -1, 0, 0, 2 * far * near * nf, 0]);
+}
+
+export function lookAt(eye, center, up) {
+  let zx = eye[0] - center[0], zy = eye[1] - center[1], zz = eye[2] - center[2];
+  let len = Math.hypot(zx, zy, zz) || 1;
+  zx /= len; zy /= len; zz /= len;
+  let xx = up[1] * zz - up[2] * zy, xy = up[2] * zx - up[0] * zz, xz = up[0] * zy - up[1] * zx;
+  len = Math.hypot(xx, xy, xz) || 1;
+  xx /= len; xy /= len; xz /= len;
+  const yx = zy * xz - zz * xy, yy = zz * xx - zx * xz, yz = zx * xy - zy * xx;
+  return new Float32Array([
+    xx, yx, zx, 0,
+    xy, yy, zy, 0,
+    xz, yz, zz, 0,
+    -(xx * eye[0] + xy * eye[1] + xz * eye[2]),
+    -(yx * eye[0] + yy * eye[1] + yz * eye[2]),
+    -(zx * eye[0] + zy * eye[1] + zz * eye[2]),
+    1,
+  ]);
+}
+
+export function multiply(a, b) {
+  const out = new Float32Array(16);
+  for (let c = 0; c < 4; ++c) {
+    for (let r = 0; r < 4; ++r) {
+      let s = 0;
+      for (let k = 0; k < 4; ++k) s += a[k * 4 + r] * b[c * 4 + k];
+      out[c * 4 + r] = s;
+    }
+  }
+  return out;
+}

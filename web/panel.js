@@ -1,0 +1,127 @@
+// Parameter panel built FROM THE PARAMETER TABLE sent by the worker (no parameter list in JS):
+// one collapsible section per `group`, each field labelled with key, symbol and unit, limited by the
+// table's min/max, with the help text as title and aria-describedby.
+
+const GROUP_TITLES = {
+  hormone: 'Hormone',
+  branching: 'Branching',
+  light: 'Light',
+  bending: 'Bending',
+  dormancy_break: 'Dormancy break',
+  shape: 'Shape and limits',
+};
+
+function groupTitle(group) {
+  return GROUP_TITLES[group] || group.replace(/_/g, ' ').replace(/^./, (c) => c.toUpperCase());
+}
+
+// Slider step: 1 for whole numbers, else a power of ten about a thousandth of the range.
+function stepOf(spec) {
+  if (spec.integer) return 1;
+  const range = spec.max - spec.min;
+  return range > 0 ? 10 ** (Math.floor(Math.log10(range)) - 3) : 'any';
+}
+
+const isFlag = (spec) => spec.integer && spec.min === 0 && spec.max === 1 && !spec.unit;
+
+function el(tag, attrs = {}, text) {
+  const node = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs)) node.setAttribute(k, v);
+  if (text !== undefined) node.textContent = text;
+  return node;
+}
+
+export class ParamPanel {
+  // container: element to fill; onChange(): called after any edit.
+  constructor(container, paramTable, onChange) {
+    this.fields = new Map();  // key -> {spec, read(), write(value), setInvalid(bool)}
+    const groups = new Map();
+    for (const spec of paramTable) {
+      if (!groups.has(spec.group)) groups.set(spec.group, []);
+      groups.get(spec.group).push(spec);
+    }
+    let first = true;
+    for (const [group, specs] of groups) {
+      const details = el('details', { class: 'group' });
+      if (first) details.open = true;
+      first = false;
+      details.append(el('summary', {}, `${groupTitle(group)} (${specs.length})`));
+      for (const spec of specs) details.append(this.#field(spec, onChange));
+      container.append(details);
+    }
+  }
+
+  #field(spec, onChange) {
+    const id = `param-${spec.key}`;
+    const helpId = `help-${spec.key}`;
+    const row = el('div', { class: 'field', title: spec.help });
+    const label = el('label', { for: id });
+    label.append(el('span', { class: 'key' }, spec.key));
+    const extra = [spec.symbol, spec.unit].filter(Boolean).join(', ');
+    if (extra) label.append(el('span', { class: 'symbol' }, ` (${extra})`));
+    const help = el('span', { id: helpId, class: 'help' }, spec.help);
+    row.append(label);
+
+    if (isFlag(spec)) {
+      const box = el('input', { id, type: 'checkbox', 'aria-describedby': helpId, 'data-key': spec.key });
+      box.addEventListener('change', onChange);
+      row.classList.add('flag');
+      row.append(box, help);
+      this.fields.set(spec.key, {
+        spec,
+        read: () => (box.checked ? 1 : 0),
+        write: (v) => { box.checked = Number(v) !== 0; },
+        setInvalid: () => {},
+      });
+      return row;
+    }
+
+    const step = stepOf(spec);
+    const range = el('input', {
+      type: 'range', min: spec.min, max: spec.max, step, tabindex: '-1',
+      'aria-hidden': 'true', class: 'slider',
+    });
+    const number = el('input', {
+      id, type: 'number', min: spec.min, max: spec.max, step: spec.integer ? 1 : 'any',
+      inputmode: spec.integer ? 'numeric' : 'decimal', 'aria-describedby': helpId, 'data-key': spec.key,
+    });
+    range.addEventListener('input', () => {
+      number.value = range.value;
+      onChange();
+    });
+    number.addEventListener('input', () => {
+      if (number.value !== '' && Number.isFinite(Number(number.value))) range.value = number.value;
+      onChange();
+    });
+    const controls = el('div', { class: 'controls' });
+    controls.append(range, number);
+    row.append(controls, help);
+    this.fields.set(spec.key, {
+      spec,
+      // Valid numbers go as numbers, anything else as text: the core checks both and says what is wrong.
+      read: () => (number.value.trim() !== '' && Number.isFinite(Number(number.value)) ? Number(number.value) : number.value),
+      write: (v) => { number.value = String(v); range.value = String(v); },
+      setInvalid: (bad) => { number.setAttribute('aria-invalid', bad ? 'true' : 'false'); },
+    });
+    return row;
+  }
+
+  // params: {key: value}
+  setValues(params) {
+    for (const [key, value] of Object.entries(params)) this.fields.get(key)?.write(value);
+  }
+
+  values() {
+    const out = {};
+    for (const [key, field] of this.fields) out[key] = field.read();
+    return out;
+  }
+
+  // Marks the field named at the start of a core error line ("alpha_t must be ...").
+  markError(message) {
+    for (const [key, field] of this.fields) {
+      const bad = typeof message === 'string' && (message.startsWith(`${key}:`) || message.startsWith(`${key} `));
+      field.setInvalid(bad);
+    }
+  }
+}
