@@ -1,0 +1,52 @@
+// Native vs WASM CLI: for every preset, same --stats counts, same JSON topology, positions within 1e-5 of height.
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, existsSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+
+const root = process.env.NIWA_ROOT;
+const native = process.env.NIWA_NATIVE;
+const wasm = join(root, 'build/wasm/bin/niwa.js');
+const years = Number(process.env.NIWA_DETERMINISM_YEARS || 15);
+let passed = 0, failed = 0;
+const check = (ok, what) => { ok ? passed++ : failed++; console.log(`${ok ? 'PASS' : 'FAIL'} ${what}`); };
+
+if (!existsSync(wasm)) {
+  console.log(`FAIL WASM CLI missing at ${wasm}: build the wasm-release preset first`);
+  process.exit(1);
+}
+const run = (cmd, args) => cmd.endsWith('.js')
+  ? execFileSync('node', [cmd, ...args], { encoding: 'utf8' })
+  : execFileSync(cmd, args, { encoding: 'utf8' });
+
+const dir = mkdtempSync(join(tmpdir(), 'niwa-det-'));
+const presets = run(native, ['presets']).trim().split('\n').map((l) => l.split('\t')[0]);
+check(presets.length >= 4, `presets listed: ${presets.join(', ')}`);
+for (const preset of presets) {
+  for (const seed of [1, 7]) {
+    const args = ['tree', 'grow', '--preset', preset, '--years', String(years), '--seed', String(seed)];
+    const a = JSON.parse(run(native, [...args, '--stats', '--out', join(dir, `${preset}-n.json`)]));
+    const b = JSON.parse(run(wasm, [...args, '--stats', '--out', join(dir, `${preset}-w.json`)]));
+    const keys = ['internodes', 'branches', 'leaves', 'flowers', 'years', 'seed', 'preset'];
+    const same = keys.every((k) => a[k] === b[k]);
+    check(same, `${preset} seed ${seed}: stats native ${JSON.stringify(keys.map((k) => a[k]))} wasm ${JSON.stringify(keys.map((k) => b[k]))}`);
+    const ta = JSON.parse(readFileSync(join(dir, `${preset}-n.json`), 'utf8'));
+    const tb = JSON.parse(readFileSync(join(dir, `${preset}-w.json`), 'utf8'));
+    let topology = ta.branches.length === tb.branches.length;
+    let worst = 0;
+    for (let i = 0; topology && i < ta.branches.length; i++) {
+      const x = ta.branches[i], y = tb.branches[i];
+      topology = x.id === y.id && x.parent === y.parent && x.parent_node === y.parent_node &&
+        x.nodes.length === y.nodes.length && x.leaves.length === y.leaves.length &&
+        x.buds.length === y.buds.length && x.flowers.length === y.flowers.length;
+      for (let n = 0; topology && n < x.nodes.length; n++) {
+        for (let c = 0; c < 3; c++) worst = Math.max(worst, Math.abs(x.nodes[n][c] - y.nodes[n][c]));
+      }
+    }
+    check(topology, `${preset} seed ${seed}: same topology (${ta.branches.length} branches)`);
+    const tolerance = 1e-5 * Math.max(a.height, 1e-9);
+    check(worst <= tolerance, `${preset} seed ${seed}: largest position difference ${worst.toExponential(2)} cm <= ${tolerance.toExponential(2)}`);
+  }
+}
+console.log(`${passed} passed, ${failed} failed`);
+process.exit(failed ? 1 : 0);
