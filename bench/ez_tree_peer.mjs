@@ -21,8 +21,8 @@ const tree = new Tree();
 tree.loadPreset(preset);  // also generates once (warm-up)
 const times = [];
 let total = 0;
-// Same policy as the C++ runner: at least 3 repetitions and about 0.5 s, at most 15.
-while (times.length < 3 || (total < 500 && times.length < 15)) {
+// Same policy as the C++ runner: at least 3 repetitions and at least 0.3 s, at most 200.
+while (times.length < 3 || (total < 300 && times.length < 200)) {
   const t0 = performance.now();
   tree.generate();
   const ms = performance.now() - t0;

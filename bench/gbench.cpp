@@ -1,0 +1,35 @@
+// Google Benchmark binary (native only): registers every shared workload as one benchmark, in ms.
+#include <memory>
+
+#include <benchmark/benchmark.h>
+
+#include "workloads.h"
+
+namespace niwa {
+namespace {
+
+void RegisterAll() {
+  for (const Workload& w : Workloads()) {
+    // Prepared on first use and kept, since Google Benchmark calls the function several times.
+    auto body = std::make_shared<WorkloadBody>();
+    const Workload* workload = &w;
+    benchmark::RegisterBenchmark(w.name.c_str(),
+                                 [workload, body](benchmark::State& state) {
+                                   if (!*body) *body = workload->prepare();
+                                   for (auto _ : state) benchmark::DoNotOptimize((*body)());
+                                 })
+        ->Unit(benchmark::kMillisecond);
+  }
+}
+
+}  // namespace
+}  // namespace niwa
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  niwa::RegisterAll();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

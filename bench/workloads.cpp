@@ -1,0 +1,118 @@
+// Benchmark workloads: growth of every preset, sakura at several ages, mesh, .glb and the light model.
+#include "workloads.h"
+
+#include <memory>
+
+#include <glm/vec3.hpp>
+
+#include "io/gltf_export.h"
+#include "random/pcg32.h"
+#include "tree/growth.h"
+#include "tree/light.h"
+#include "tree/mesh.h"
+#include "tree/presets.h"
+#include "tree/tree.h"
+
+namespace niwa {
+namespace {
+
+constexpr int kLightSpheres = 2000;
+
+GrowRequest PresetRequest(const Preset& preset, int years) {
+  GrowRequest r;
+  r.preset = preset.name;
+  r.params = preset.params;
+  r.years = years;
+  r.seed = 1;
+  return r;
+}
+
+const Preset& Sakura() { return *FindPreset("sakura"); }
+
+Workload GrowWorkload(const Preset& preset, int years) {
+  GrowRequest request = PresetRequest(preset, years);
+  return {"grow/" + preset.name + "-" + std::to_string(years) + "y",
+          "GrowTree, " + preset.name + " " + std::to_string(years) + " years, seed 1",
+          [request]() -> WorkloadBody {
+            return [request]() {
+              Tree tree = GrowTree(request);
+              return static_cast<double>(ComputeStats(tree).internodes);
+            };
+          }};
+}
+
+// 2,000 leaf spheres scattered through a crown-sized box (cm), from the project's PCG32.
+std::vector<LeafSphere> RandomSpheres(int count) {
+  Pcg32 rng(12345);
+  std::vector<LeafSphere> spheres;
+  spheres.reserve(static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i) {
+    // One draw per statement: argument evaluation order differs between g++ and clang (em++).
+    float x = static_cast<float>(rng.Uniform(-150.0, 150.0));
+    float y = static_cast<float>(rng.Uniform(100.0, 400.0));
+    float z = static_cast<float>(rng.Uniform(-150.0, 150.0));
+    float radius = static_cast<float>(rng.Uniform(3.0, 12.0));
+    spheres.push_back({glm::vec3(x, y, z), radius});
+  }
+  return spheres;
+}
+
+double LightChecksum(const std::vector<LightSample>& samples) {
+  double sum = 0;
+  for (const LightSample& s : samples) sum += s.light;
+  return sum;
+}
+
+Workload LightWorkload(bool reference) {
+  std::string n = std::to_string(kLightSpheres);
+  return {reference ? "light/reference-" + n : "light/grid-" + n,
+          reference ? "ComputeLightReference (pairwise), " + n + " random spheres"
+                    : "ComputeLightGrid (voxel grid), " + n + " random spheres",
+          [reference]() -> WorkloadBody {
+            auto spheres = std::make_shared<std::vector<LeafSphere>>(RandomSpheres(kLightSpheres));
+            auto sky = std::make_shared<Sky>(MakeSky(60.0f, 0.0f, 0.3f));
+            return [spheres, sky, reference]() {
+              return LightChecksum(reference ? ComputeLightReference(*spheres, *sky, 0.5f)
+                                             : ComputeLightGrid(*spheres, *sky, 0.5f));
+            };
+          }};
+}
+
+std::vector<Workload> MakeWorkloads() {
+  std::vector<Workload> all;
+  for (const Preset& p : Presets()) all.push_back(GrowWorkload(p, p.years));
+  for (int years : {10, 20, 30}) {
+    if (years != Sakura().years) all.push_back(GrowWorkload(Sakura(), years));
+  }
+  all.push_back({"mesh/sakura-15y", "BuildTreeMesh of sakura 15 years (tree grown untimed)", [] {
+                   auto tree = std::make_shared<Tree>(GrowTree(PresetRequest(Sakura(), 15)));
+                   return WorkloadBody([tree]() {
+                     TreeMesh mesh = BuildTreeMesh(*tree);
+                     return static_cast<double>(mesh.bark.vertex_count() +
+                                                mesh.leaves.vertex_count() +
+                                                mesh.flowers.vertex_count());
+                   });
+                 }});
+  all.push_back({"glb/sakura-15y", "WriteGlb in memory of the sakura 15 years mesh (mesh untimed)",
+                 [] {
+                   auto mesh = std::make_shared<TreeMesh>(
+                       BuildTreeMesh(GrowTree(PresetRequest(Sakura(), 15))));
+                   return WorkloadBody([mesh]() {
+                     std::vector<unsigned char> bytes;
+                     WriteGlb(*mesh, &bytes);
+                     return static_cast<double>(bytes.size());
+                   });
+                 }});
+  all.push_back(LightWorkload(false));
+  all.push_back(LightWorkload(true));
+  return all;
+}
+
+}  // namespace
+
+const std::vector<Workload>& Workloads() {
+  static const std::vector<Workload> workloads = MakeWorkloads();
+  return workloads;
+}
+
+}  // namespace niwa

@@ -1,0 +1,24 @@
+// Named benchmark workloads over the public core API, shared by Google Benchmark and the node runner.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace niwa {
+
+// The timed part of a workload. It returns a checksum of its result so the work cannot be optimized
+// away (and so native and WASM runs can be seen to compute the same thing).
+using WorkloadBody = std::function<double()>;
+
+struct Workload {
+  std::string name;      // "grow/sakura-15y", "light/grid-2000", ...
+  std::string note;      // one line: what is timed
+  // Untimed setup (grow the tree to mesh, make the spheres, ...); returns the timed body.
+  std::function<WorkloadBody()> prepare;
+};
+
+// Every workload, in table order.
+const std::vector<Workload>& Workloads();
+
+}  // namespace niwa
