@@ -2,13 +2,11 @@
 #include "cli.h"
 
 #include <CLI/CLI.hpp>
-
 #include <chrono>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "io/gltf_export.h"
 #include "io/json_io.h"
@@ -54,11 +52,14 @@ void AddGrowOptions(CLI::App* cmd, GrowOptions* o) {
   cmd->add_option("--preset", o->preset, "Species preset (see 'niwa presets')");
   cmd->add_option("--years", o->years, "Years to grow, 0..100 (default: the preset's)");
   cmd->add_option("--seed", o->seed, "Random seed, 0..4294967295 (default: the preset's)");
-  cmd->add_option("--set", o->sets, "Override a parameter: key=value (repeatable; see 'niwa params')");
+  cmd->add_option("--set", o->sets,
+                  "Override a parameter: key=value (repeatable; see 'niwa params')");
   cmd->add_option("--params", o->params_file, "JSON file of parameters {\"key\": value, ...}");
-  cmd->add_option("--prune", o->prunes,
-                  "Prune after a year: YEAR:bID (branch id from the JSON) or YEAR:sinceY (repeatable)");
-  cmd->add_option("--url", o->url, "A share-link hash (preset=...&seed=...); other flags override it");
+  cmd->add_option(
+      "--prune", o->prunes,
+      "Prune after a year: YEAR:bID (branch id from the JSON) or YEAR:sinceY (repeatable)");
+  cmd->add_option("--url", o->url,
+                  "A share-link hash (preset=...&seed=...); other flags override it");
 }
 
 GrowRequest ResolveGrowRequest(const GrowOptions& o, CLI::App* cmd) {
@@ -88,7 +89,8 @@ GrowRequest ResolveGrowRequest(const GrowOptions& o, CLI::App* cmd) {
   request.prunes = state.prunes;
   if (cmd->count("--years")) {
     if (o.years < 0 || o.years > kMaxYears) {
-      throw BadInput{"--years: " + std::to_string(o.years) + " is out of range; must be a whole number in [0, " +
+      throw BadInput{"--years: " + std::to_string(o.years) +
+                     " is out of range; must be a whole number in [0, " +
                      std::to_string(kMaxYears) + "]"};
     }
     request.years = o.years;
@@ -207,7 +209,8 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   std::string out_path;
   bool stats = false;
   AddGrowOptions(grow, &grow_options);
-  grow->add_option("--out", out_path, "Write the tree: .glb (binary glTF), .json or .svg (side view)");
+  grow->add_option("--out", out_path,
+                   "Write the tree: .glb (binary glTF), .json or .svg (side view)");
   grow->add_flag("--stats", stats, "Print one JSON object of statistics on stdout");
 
   try {

@@ -1,21 +1,22 @@
 // The one embind file: exposes the Niwa core to the Web Worker (web/worker.js).
 //
-// Everything that crosses from JavaScript arrives as text (JSON or a URL hash) and is checked by the
-// core itself (FindPreset, ParamSet::Set / SetFromText, ParsePrune). Nothing here throws or aborts on
-// bad input: errors come back as strings, either as the "error" field of a JSON answer or from
-// GrowSession::error().
+// Everything that crosses from JavaScript arrives as text (JSON or a URL hash) and is checked by
+// the core itself (FindPreset, ParamSet::Set / SetFromText, ParsePrune). Nothing here throws or
+// aborts on bad input: errors come back as strings, either as the "error" field of a JSON answer or
+// from GrowSession::error().
 //
 // Exposed to JS:
-//   paramTableJson()      -> the parameter table [{key, symbol, unit, default, min, max, integer, group, help}]
-//   presetsJson()         -> [{name, title, years, seed, source, params:{key:value}}]
+//   paramTableJson()      -> the parameter table [{key, symbol, unit, default, min, max, integer,
+//   group, help}] presetsJson()         -> [{name, title, years, seed, source, params:{key:value}}]
 //   decodeHash(hash)      -> {state:{preset, seed, years, params, prunes, camera}, notices:[...]}
 //   encodeHash(stateJson) -> {hash} or {error}
 //   GrowSession(stateJson): error(), years(), year(), growYear(), done(), buildMesh(), statsJson(),
-//                           barkPositions() ... flowersIndices() as typed-array views into WASM memory.
+//                           barkPositions() ... flowersIndices() as typed-array views into WASM
+//                           memory.
 //
-// The mesh views (emscripten::typed_memory_view) point into the WASM heap: they stay valid only until
-// the next call that may allocate. The worker copies each one ONCE into a fresh ArrayBuffer right away
-// and transfers that buffer to the main thread (no second copy).
+// The mesh views (emscripten::typed_memory_view) point into the WASM heap: they stay valid only
+// until the next call that may allocate. The worker copies each one ONCE into a fresh ArrayBuffer
+// right away and transfers that buffer to the main thread (no second copy).
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
@@ -24,11 +25,10 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "io/json_io.h"
 #include "io/url_codec.h"
@@ -68,8 +68,8 @@ ordered_json StateObject(const TreeState& state) {
 
 // A whole number in [min, max] from a JSON number or a numeric string; error line or "".
 std::string WholeNumber(const json& value, const char* key, double min, double max, double* out) {
-  std::string range = std::string(key) + ": must be a whole number in [" + FormatNumber(min) + ", " +
-                      FormatNumber(max) + "]";
+  std::string range = std::string(key) + ": must be a whole number in [" + FormatNumber(min) +
+                      ", " + FormatNumber(max) + "]";
   double number = 0;
   if (value.is_number()) {
     number = value.get<double>();
@@ -80,7 +80,8 @@ std::string WholeNumber(const json& value, const char* key, double min, double m
   } else {
     return range;
   }
-  if (!std::isfinite(number) || std::floor(number) != number || number < min || number > max) return range;
+  if (!std::isfinite(number) || std::floor(number) != number || number < min || number > max)
+    return range;
   *out = number;
   return "";
 }
@@ -97,7 +98,8 @@ std::string StateFromJson(const std::string& text, TreeState* state) {
   if (document.contains("preset")) {
     const json& name = document["preset"];
     if (!name.is_string() || !FindPreset(name.get<std::string>())) {
-      std::string shown = name.is_string() ? name.get<std::string>().substr(0, 40) : name.dump().substr(0, 40);
+      std::string shown =
+          name.is_string() ? name.get<std::string>().substr(0, 40) : name.dump().substr(0, 40);
       return "preset: unknown '" + shown + "', must be one of " + PresetNames();
     }
     result.preset = name.get<std::string>();
@@ -155,10 +157,11 @@ std::string StateFromJson(const std::string& text, TreeState* state) {
   }
   if (document.contains("camera")) {
     const json& camera = document["camera"];
-    bool ok = camera.is_string() && camera.get<std::string>().size() < 128 &&
-              std::all_of(camera.get<std::string>().begin(), camera.get<std::string>().end(), [](char c) {
-                return (c >= '0' && c <= '9') || c == '.' || c == ',' || c == '-' || c == 'e';
-              });
+    bool ok =
+        camera.is_string() && camera.get<std::string>().size() < 128 &&
+        std::all_of(camera.get<std::string>().begin(), camera.get<std::string>().end(), [](char c) {
+          return (c >= '0' && c <= '9') || c == '.' || c == ',' || c == '-' || c == 'e';
+        });
     if (!ok) return "camera: must be numbers separated by commas";
     result.camera = camera.get<std::string>();
   }
@@ -242,7 +245,8 @@ class GrowSession {
     mesh_ = BuildTreeMesh(grower_->tree());
   }
 
-  // {internodes, branches, leaves, flowers, height (cm), years, seed, preset, truncated, ms, bounds}
+  // {internodes, branches, leaves, flowers, height (cm), years, seed, preset, truncated, ms,
+  // bounds}
   std::string statsJson() const {
     ordered_json j;
     if (!grower_) {

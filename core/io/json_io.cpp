@@ -18,9 +18,9 @@ std::string ApplyParamsJson(const std::string& text, ParamSet* params) {
   for (auto it = values.begin(); it != values.end(); ++it) {
     std::optional<ParamId> id = FindParam(it.key());
     if (!id) {
-      if (&values == &document && (it.key() == "name" || it.key() == "title" ||
-                                   it.key() == "source" || it.key() == "years" ||
-                                   it.key() == "seed")) {
+      if (&values == &document &&
+          (it.key() == "name" || it.key() == "title" || it.key() == "source" ||
+           it.key() == "years" || it.key() == "seed")) {
         continue;
       }
       return "unknown parameter '" + it.key().substr(0, 64) + "'";
@@ -47,20 +47,28 @@ ordered_json Vec(const glm::vec3& v) { return ordered_json::array({v.x, v.y, v.z
 
 const char* KindName(ShootKind kind) {
   switch (kind) {
-    case ShootKind::kSeedling: return "seedling";
-    case ShootKind::kTerminal: return "terminal";
-    case ShootKind::kTerminallyLateral: return "terminally_lateral";
-    case ShootKind::kLateral: return "lateral";
+    case ShootKind::kSeedling:
+      return "seedling";
+    case ShootKind::kTerminal:
+      return "terminal";
+    case ShootKind::kTerminallyLateral:
+      return "terminally_lateral";
+    case ShootKind::kLateral:
+      return "lateral";
   }
   return "unknown";
 }
 
 const char* StateName(BudState state) {
   switch (state) {
-    case BudState::kWaiting: return "waiting";
-    case BudState::kBreaking: return "breaking";
-    case BudState::kDormant: return "dormant";
-    case BudState::kUsed: return "used";
+    case BudState::kWaiting:
+      return "waiting";
+    case BudState::kBreaking:
+      return "breaking";
+    case BudState::kDormant:
+      return "dormant";
+    case BudState::kUsed:
+      return "used";
   }
   return "unknown";
 }
@@ -93,8 +101,10 @@ std::string TreeToJson(const Tree& tree) {
     j["nodes"] = std::move(nodes);
     ordered_json buds = ordered_json::array();
     for (const Bud& bud : b.buds) {
-      buds.push_back({{"node", bud.node}, {"kind", KindName(bud.kind)},
-                      {"state", StateName(bud.state)}, {"flower", bud.flower}});
+      buds.push_back({{"node", bud.node},
+                      {"kind", KindName(bud.kind)},
+                      {"state", StateName(bud.state)},
+                      {"flower", bud.flower}});
     }
     j["buds"] = std::move(buds);
     ordered_json leaves = ordered_json::array();
@@ -112,9 +122,15 @@ std::string TreeToJson(const Tree& tree) {
 std::string ParamTableJson() {
   ordered_json out = ordered_json::array();
   for (const ParamSpec& s : ParamTable()) {
-    out.push_back({{"key", s.key},     {"symbol", s.symbol}, {"unit", s.unit},
-                   {"default", s.default_value}, {"min", s.min_value}, {"max", s.max_value},
-                   {"integer", s.integer}, {"group", s.group}, {"help", s.help}});
+    out.push_back({{"key", s.key},
+                   {"symbol", s.symbol},
+                   {"unit", s.unit},
+                   {"default", s.default_value},
+                   {"min", s.min_value},
+                   {"max", s.max_value},
+                   {"integer", s.integer},
+                   {"group", s.group},
+                   {"help", s.help}});
   }
   return out.dump();
 }

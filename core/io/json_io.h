@@ -13,7 +13,8 @@ namespace niwa {
 std::string ApplyParamsJson(const std::string& text, ParamSet* params);
 // {"key": value, ...} for every parameter, in table order.
 std::string ParamsToJson(const ParamSet& params, int indent = 2);
-// The whole tree: settings, parameters and every branch with its internodes, buds, leaves and flowers.
+// The whole tree: settings, parameters and every branch with its internodes, buds, leaves and
+// flowers.
 std::string TreeToJson(const Tree& tree);
 // The parameter table itself, for the web panel: [{key, symbol, unit, default, min, max, ...}].
 std::string ParamTableJson();

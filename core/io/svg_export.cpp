@@ -1,4 +1,5 @@
-// Side view (x right, y up) of every living branch as a polyline whose stroke follows the pipe radius.
+// Side view (x right, y up) of every living branch as a polyline whose stroke follows the pipe
+// radius.
 #include "io/svg_export.h"
 
 #include <algorithm>
@@ -21,7 +22,9 @@ std::string TreeToSvg(const Tree& tree, const SvgOptions& options) {
   float span = std::max(max_x - min_x, max_y);
   float scale = (static_cast<float>(std::min(options.width, options.height)) - 2 * margin) / span;
   float center_x = 0.5f * (min_x + max_x);
-  auto sx = [&](float x) { return 0.5f * static_cast<float>(options.width) + (x - center_x) * scale; };
+  auto sx = [&](float x) {
+    return 0.5f * static_cast<float>(options.width) + (x - center_x) * scale;
+  };
   auto sy = [&](float y) { return static_cast<float>(options.height) - margin - y * scale; };
 
   std::string out;
@@ -35,7 +38,8 @@ std::string TreeToSvg(const Tree& tree, const SvgOptions& options) {
                 "<line x1=\"0\" y1=\"%.2f\" x2=\"%d\" y2=\"%.2f\" stroke=\"#aaa\"/>\n", sy(0),
                 options.width, sy(0));
   out += buf;
-  out += "<g fill=\"none\" stroke=\"#4a3520\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+  out +=
+      "<g fill=\"none\" stroke=\"#4a3520\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
   for (const Branch& b : tree.branches) {
     if (!b.alive) continue;
     float width = std::max(0.4f, 2.0f * BranchRadius(b) * scale);
@@ -79,12 +83,17 @@ std::string TreeToSvg(const Tree& tree, const SvgOptions& options) {
   if (!options.caption.empty()) {
     std::string safe;
     for (char c : options.caption) {
-      if (c == '<') safe += "&lt;";
-      else if (c == '>') safe += "&gt;";
-      else if (c == '&') safe += "&amp;";
-      else safe += c;
+      if (c == '<')
+        safe += "&lt;";
+      else if (c == '>')
+        safe += "&gt;";
+      else if (c == '&')
+        safe += "&amp;";
+      else
+        safe += c;
     }
-    std::snprintf(buf, sizeof buf, "<text x=\"10\" y=\"%d\" font-family=\"sans-serif\" font-size=\"14\">",
+    std::snprintf(buf, sizeof buf,
+                  "<text x=\"10\" y=\"%d\" font-family=\"sans-serif\" font-size=\"14\">",
                   options.height - 4);
     out += buf + safe + "</text>\n";
   }

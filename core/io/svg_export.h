@@ -10,7 +10,7 @@ namespace niwa {
 struct SvgOptions {
   int width = 600, height = 600;  // pixels
   bool leaves = true, flowers = true;
-  std::string caption;            // optional text under the tree
+  std::string caption;  // optional text under the tree
 };
 
 std::string TreeToSvg(const Tree& tree, const SvgOptions& options = {});

@@ -16,7 +16,8 @@ std::string Decode(const std::string& text) {
     char c = text[i];
     if (c == '+') {
       out += ' ';
-    } else if (c == '%' && i + 2 < text.size() && std::isxdigit(static_cast<unsigned char>(text[i + 1])) &&
+    } else if (c == '%' && i + 2 < text.size() &&
+               std::isxdigit(static_cast<unsigned char>(text[i + 1])) &&
                std::isxdigit(static_cast<unsigned char>(text[i + 2]))) {
       out += static_cast<char>(std::stoi(text.substr(i + 1, 2), nullptr, 16));
       i += 2;
@@ -42,8 +43,8 @@ std::string Printable(const std::string& text) {
 bool ParsePrune(const std::string& text, Prune* prune, std::string* error) {
   std::size_t colon = text.find(':');
   auto fail = [&]() {
-    *error = "prune: '" + Printable(text) +
-             "' must be YEAR:bID or YEAR:sinceY with YEAR in [1, " + std::to_string(kMaxYears) + "]";
+    *error = "prune: '" + Printable(text) + "' must be YEAR:bID or YEAR:sinceY with YEAR in [1, " +
+             std::to_string(kMaxYears) + "]";
     return false;
   };
   if (colon == std::string::npos) return fail();
@@ -56,7 +57,8 @@ bool ParsePrune(const std::string& text, Prune* prune, std::string* error) {
     std::optional<double> since = ParseNumber(selector.substr(5));
     if (!since || *since < 1 || *since > kMaxYears || std::floor(*since) != *since) return fail();
     result.since_year = static_cast<int>(*since);
-  } else if (!selector.empty() && (selector[0] == 'b' || std::isdigit(static_cast<unsigned char>(selector[0])))) {
+  } else if (!selector.empty() &&
+             (selector[0] == 'b' || std::isdigit(static_cast<unsigned char>(selector[0])))) {
     std::optional<double> id = ParseNumber(selector[0] == 'b' ? selector.substr(1) : selector);
     if (!id || *id < 0 || *id > 1e8 || std::floor(*id) != *id) return fail();
     result.branch = static_cast<int>(*id);
@@ -112,7 +114,8 @@ TreeState DecodeStateHash(const std::string& hash, std::vector<std::string>* not
     if (FindPreset(value)) {
       state.preset = value;
     } else {
-      notices->push_back("preset: unknown '" + Printable(value) + "', must be one of " + PresetNames());
+      notices->push_back("preset: unknown '" + Printable(value) + "', must be one of " +
+                         PresetNames());
     }
   }
   const Preset* preset = FindPreset(state.preset);
@@ -128,8 +131,9 @@ TreeState DecodeStateHash(const std::string& hash, std::vector<std::string>* not
       double max = key == "seed" ? 4294967295.0 : kMaxYears;
       double min = key == "seed" ? 0 : 0;
       if (!number || std::floor(*number) != *number) {
-        notices->push_back(key + ": '" + Printable(value) + "' dropped, must be a whole number in [" +
-                           FormatNumber(min) + ", " + FormatNumber(max) + "]");
+        notices->push_back(key + ": '" + Printable(value) +
+                           "' dropped, must be a whole number in [" + FormatNumber(min) + ", " +
+                           FormatNumber(max) + "]");
         continue;
       }
       double clamped = std::min(max, std::max(min, *number));
@@ -137,8 +141,10 @@ TreeState DecodeStateHash(const std::string& hash, std::vector<std::string>* not
         notices->push_back(key + ": clamped to " + FormatNumber(clamped) + ", must be in [" +
                            FormatNumber(min) + ", " + FormatNumber(max) + "]");
       }
-      if (key == "seed") state.seed = static_cast<uint64_t>(clamped);
-      else state.years = static_cast<int>(clamped);
+      if (key == "seed")
+        state.seed = static_cast<uint64_t>(clamped);
+      else
+        state.years = static_cast<int>(clamped);
     } else if (key == "prune") {
       Prune prune;
       std::string error;
@@ -150,23 +156,28 @@ TreeState DecodeStateHash(const std::string& hash, std::vector<std::string>* not
         notices->push_back(error + " (dropped)");
       }
     } else if (key == "cam") {
-      bool ok = value.size() < 128 &&
-                std::all_of(value.begin(), value.end(), [](char c) {
-                  return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == ',' || c == '-' || c == 'e';
+      bool ok = value.size() < 128 && std::all_of(value.begin(), value.end(), [](char c) {
+                  return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == ',' ||
+                         c == '-' || c == 'e';
                 });
-      if (ok) state.camera = value;
-      else notices->push_back("cam: '" + Printable(value) + "' dropped, must be numbers separated by commas");
+      if (ok)
+        state.camera = value;
+      else
+        notices->push_back("cam: '" + Printable(value) +
+                           "' dropped, must be numbers separated by commas");
     } else if (std::optional<ParamId> id = FindParam(key)) {
       const ParamSpec& spec = Spec(*id);
       std::optional<double> number = ParseNumber(value);
       if (!number) {
-        notices->push_back(key + ": '" + Printable(value) + "' dropped, must be " + RangeText(spec));
+        notices->push_back(key + ": '" + Printable(value) + "' dropped, must be " +
+                           RangeText(spec));
         continue;
       }
       double clamped = std::min(spec.max_value, std::max(spec.min_value, *number));
       if (spec.integer) clamped = std::round(clamped);
       if (clamped != *number) {
-        notices->push_back(key + ": clamped to " + FormatNumber(clamped) + ", must be " + RangeText(spec));
+        notices->push_back(key + ": clamped to " + FormatNumber(clamped) + ", must be " +
+                           RangeText(spec));
       }
       state.params.Set(*id, clamped);
     } else {

@@ -14,9 +14,9 @@ struct TreeState {
   std::string preset = "sakura";
   uint64_t seed = 1;
   int years = 15;
-  ParamSet params;            // full values (preset values plus overrides)
+  ParamSet params;  // full values (preset values plus overrides)
   std::vector<Prune> prunes;
-  std::string camera;         // opaque "yaw,pitch,distance,tx,ty,tz" kept for the page
+  std::string camera;  // opaque "yaw,pitch,distance,tx,ty,tz" kept for the page
 };
 
 constexpr int kMaxYears = 100;

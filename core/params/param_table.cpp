@@ -1,4 +1,5 @@
-// Definition of every model parameter (thesis table 2.1 plus the choices documented in docs/growth-model.md).
+// Definition of every model parameter (thesis table 2.1 plus the choices documented in
+// docs/growth-model.md).
 #include "params/param_table.h"
 
 #include <cmath>
@@ -35,7 +36,8 @@ const std::array<ParamSpec, kParamCount> kTable = {{
     {P::kHInit, "H_init", "H_0", "", 1.0, 0, 10, false, "hormone",
      "Initial hormone of the seedling's first shoot (not in the thesis; see docs)."},
     {P::kHSat, "H_sat", "H_sat", "", 1.0, 0.01, 10, false, "hormone",
-     "Hormone at which the hormone-dependent ranges reach their second value (figs. 2.5, 2.6, 2.8)."},
+     "Hormone at which the hormone-dependent ranges reach their second value (figs. 2.5, 2.6, "
+     "2.8)."},
 
     {P::kNLow, "N_low", "N", "nodes", 6, 1, 100, true, "branching",
      "Nodes per shoot at hormone 0 (first value of the range N in table 2.2)."},

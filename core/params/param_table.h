@@ -12,18 +12,66 @@ namespace niwa {
 // One entry per parameter; the order is the order of the web panel within each group.
 enum class ParamId : int {
   // hormone model (thesis 2.4.2, eqs. 2.1-2.3)
-  kAlphaT, kAlphaTl, kAlphaL, kBetaC, kBetaP, kHS, kHL, kGamma, kHShort, kHInit, kHSat,
+  kAlphaT,
+  kAlphaTl,
+  kAlphaL,
+  kBetaC,
+  kBetaP,
+  kHS,
+  kHL,
+  kGamma,
+  kHShort,
+  kHInit,
+  kHSat,
   // branching model (thesis 2.3.1, table 2.1)
-  kNLow, kNHigh, kDLow, kDHigh, kDwarfInternodeRatio, kBT, kBTl, kBL, kPhi, kThetaN, kSympodial,
-  kPsiT, kPsiTl, kPsiL, kPTlS, kPTlL, kPLYoung, kPLOld, kPLYears, kDwarfLateralFlowers,
+  kNLow,
+  kNHigh,
+  kDLow,
+  kDHigh,
+  kDwarfInternodeRatio,
+  kBT,
+  kBTl,
+  kBL,
+  kPhi,
+  kThetaN,
+  kSympodial,
+  kPsiT,
+  kPsiTl,
+  kPsiL,
+  kPTlS,
+  kPTlL,
+  kPLYoung,
+  kPLOld,
+  kPLYears,
+  kDwarfLateralFlowers,
   // light model (thesis 2.3.2, 2.4.1)
-  kUseLight, kKDeath, kSphereOpacity, kSunElevation, kSunAzimuth, kSunWeight,
+  kUseLight,
+  kKDeath,
+  kSphereOpacity,
+  kSunElevation,
+  kSunAzimuth,
+  kSunWeight,
   // bending (thesis 2.4.3, eqs. 2.4-2.9)
-  kBLLow, kBLHigh, kBGLow, kBGHigh, kThetaBmaxN, kThetaBmaxB,
+  kBLLow,
+  kBLHigh,
+  kBGLow,
+  kBGHigh,
+  kThetaBmaxN,
+  kThetaBmaxB,
   // dormancy break (thesis 2.4.6)
-  kHBL, kDeltaL, kBBL, kHNL, kHBD, kDeltaD, kBBD, kHND,
+  kHBL,
+  kDeltaL,
+  kBBL,
+  kHNL,
+  kHBD,
+  kDeltaD,
+  kBBD,
+  kHND,
   // shape (thickness, leaves) and limits
-  kUseHormone, kPipeAreaPerLeaf, kLeafSize, kMaxInternodes,
+  kUseHormone,
+  kPipeAreaPerLeaf,
+  kLeafSize,
+  kMaxInternodes,
   kCount
 };
 
@@ -37,8 +85,8 @@ struct ParamSpec {
   double default_value;
   double min_value;
   double max_value;
-  bool integer;        // value must be a whole number
-  const char* group;   // "hormone", "branching", "light", "bending", "dormancy_break", "shape"
+  bool integer;       // value must be a whole number
+  const char* group;  // "hormone", "branching", "light", "bending", "dormancy_break", "shape"
   const char* help;
 };
 
@@ -55,7 +103,8 @@ class ParamSet {
   double Get(ParamId id) const { return values_[static_cast<std::size_t>(id)]; }
   int GetInt(ParamId id) const { return static_cast<int>(Get(id)); }
   bool GetBool(ParamId id) const { return Get(id) != 0.0; }
-  // Sets a value after checking it; returns an error line naming the key and range, or "" on success.
+  // Sets a value after checking it; returns an error line naming the key and range, or "" on
+  // success.
   std::string Set(ParamId id, double value);
   // Parses text (e.g. from --set key=value or a URL) and sets it; error line or "".
   std::string SetFromText(std::string_view key, std::string_view text);

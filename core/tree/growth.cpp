@@ -1,4 +1,5 @@
-// The yearly growth loop (thesis 2.4): branching model, light model, hormone model, bending, dormancy break.
+// The yearly growth loop (thesis 2.4): branching model, light model, hormone model, bending,
+// dormancy break.
 #include "tree/growth.h"
 
 #include <algorithm>
@@ -160,8 +161,8 @@ void Grower::LayOutShoot(Branch& shoot, bool bend) {
     float b_light = HormoneRamp(p, shoot.hormone, ParamId::kBLLow, ParamId::kBLHigh);
     float b_gravity = HormoneRamp(p, shoot.hormone, ParamId::kBGLow, ParamId::kBGHigh);
     glm::vec3 pull = b_light * shoot.light_direction + b_gravity * kUp;  // b_L v_L - b_g v_g
-    b = glm::length(pull);                                              // eq. 2.4
-    if (b > 0.0f) target = pull / b;                                    // eq. 2.5
+    b = glm::length(pull);                                               // eq. 2.4
+    if (b > 0.0f) target = pull / b;                                     // eq. 2.5
   }
   float cap_branch = Radians(static_cast<float>(p.Get(ParamId::kThetaBmaxB)));
   float cap_node = Radians(static_cast<float>(p.Get(ParamId::kThetaBmaxN)));
@@ -169,8 +170,8 @@ void Grower::LayOutShoot(Branch& shoot, bool bend) {
   glm::vec3 azimuth = shoot.azimuth;
   for (std::size_t i = 1; i < shoot.nodes.size(); ++i) {
     if (b > 0.0f) {
-      float difference = AngleBetween(direction, target);       // eqs. 2.6, 2.8
-      float cap = i == 1 ? cap_branch : cap_node;                // eqs. 2.7, 2.9
+      float difference = AngleBetween(direction, target);  // eqs. 2.6, 2.8
+      float cap = i == 1 ? cap_branch : cap_node;          // eqs. 2.7, 2.9
       direction = RotateToward(direction, target, std::min(b * difference, cap));
     }
     if (sympodial && theta_n != 0.0f) {
@@ -257,10 +258,10 @@ void Grower::SetNextYearBuds() {
   bool hormone_on = p.GetBool(ParamId::kUseHormone);
   float h_short = static_cast<float>(p.Get(ParamId::kHShort));
   float h_sat = static_cast<float>(p.Get(ParamId::kHSat));
-  float age = Clamp01(static_cast<float>(tree_.years - 1) /
-                      static_cast<float>(p.Get(ParamId::kPLYears)));
-  float p_lateral_max = static_cast<float>(p.Get(ParamId::kPLYoung) +
-                                           (p.Get(ParamId::kPLOld) - p.Get(ParamId::kPLYoung)) * age);
+  float age =
+      Clamp01(static_cast<float>(tree_.years - 1) / static_cast<float>(p.Get(ParamId::kPLYears)));
+  float p_lateral_max = static_cast<float>(
+      p.Get(ParamId::kPLYoung) + (p.Get(ParamId::kPLOld) - p.Get(ParamId::kPLYoung)) * age);
   int terminal_buds = p.GetInt(ParamId::kBT), tl_buds = p.GetInt(ParamId::kBTl);
   int lateral_buds = p.GetInt(ParamId::kBL);
   float psi_t = Radians(static_cast<float>(p.Get(ParamId::kPsiT)));
@@ -278,9 +279,9 @@ void Grower::SetNextYearBuds() {
     int per_node = std::max(1, lateral_buds);
     for (int i = 1; i <= tip; ++i) {
       for (int k = 0; k < per_node; ++k) {
-        glm::vec3 side = RotateAbout(f.azimuth[static_cast<std::size_t>(i)],
-                                     f.direction[static_cast<std::size_t>(i)],
-                                     2.0f * kPi * static_cast<float>(k) / static_cast<float>(per_node));
+        glm::vec3 side = RotateAbout(
+            f.azimuth[static_cast<std::size_t>(i)], f.direction[static_cast<std::size_t>(i)],
+            2.0f * kPi * static_cast<float>(k) / static_cast<float>(per_node));
         s.leaves.push_back(
             {i, glm::normalize(side + f.direction[static_cast<std::size_t>(i)] * leaf_lift)});
       }
@@ -301,11 +302,11 @@ void Grower::SetNextYearBuds() {
     float h = s.hormone;
     // Fig. 2.8: break probabilities from the shoot's hormone; without hormone, the maxima.
     float p_terminal = hormone_on ? BreakProbability(h, h_short, h_sat, 1.0f, 1.0f) : 1.0f;
-    float p_tl = hormone_on ? BreakProbability(h, h_short, h_sat,
-                                               static_cast<float>(p.Get(ParamId::kPTlS)),
-                                               static_cast<float>(p.Get(ParamId::kPTlL)))
-                            : static_cast<float>(p.Get(ParamId::kPTlL));
-    float p_lateral = s.dwarf ? 0.0f
+    float p_tl =
+        hormone_on ? BreakProbability(h, h_short, h_sat, static_cast<float>(p.Get(ParamId::kPTlS)),
+                                      static_cast<float>(p.Get(ParamId::kPTlL)))
+                   : static_cast<float>(p.Get(ParamId::kPTlL));
+    float p_lateral = s.dwarf      ? 0.0f
                       : hormone_on ? p_lateral_max * Clamp01(h / h_sat)
                                    : p_lateral_max;
     glm::vec3 tip_azimuth = f.azimuth[static_cast<std::size_t>(tip)];
@@ -317,15 +318,16 @@ void Grower::SetNextYearBuds() {
           RotateAbout(tip_azimuth, tip_direction, 2.0f * kPi * phi), s.buds.back().direction);
     }
     for (int k = 0; k < tl_buds; ++k) {
-      glm::vec3 side = RotateAbout(tip_azimuth, tip_direction,
-                                   2.0f * kPi * static_cast<float>(k) / static_cast<float>(tl_buds));
+      glm::vec3 side =
+          RotateAbout(tip_azimuth, tip_direction,
+                      2.0f * kPi * static_cast<float>(k) / static_cast<float>(tl_buds));
       add_bud(ShootKind::kTerminallyLateral, tip, side, psi_tl, p_tl, false);
     }
     for (int i = 1; i < tip; ++i) {
       for (int k = 0; k < lateral_buds; ++k) {
-        glm::vec3 side = RotateAbout(f.azimuth[static_cast<std::size_t>(i)],
-                                     f.direction[static_cast<std::size_t>(i)],
-                                     2.0f * kPi * static_cast<float>(k) / static_cast<float>(lateral_buds));
+        glm::vec3 side = RotateAbout(
+            f.azimuth[static_cast<std::size_t>(i)], f.direction[static_cast<std::size_t>(i)],
+            2.0f * kPi * static_cast<float>(k) / static_cast<float>(lateral_buds));
         add_bud(ShootKind::kLateral, i, side, psi_l, p_lateral, s.dwarf && dwarf_flowers);
       }
     }

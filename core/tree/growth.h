@@ -1,4 +1,5 @@
-// Yearly growth loop of thesis 2.4: bud break, light, hormone, elongation and bending, next year's buds.
+// Yearly growth loop of thesis 2.4: bud break, light, hormone, elongation and bending, next year's
+// buds.
 #pragma once
 
 #include <cstdint>
@@ -37,12 +38,12 @@ class Grower {
   const GrowthTimings& timings() const { return timings_; }
 
  private:
-  void BreakBuds();                           // step 1
-  void LayOutShoot(Branch& shoot, bool bend); // step 4 geometry (also straight, before light)
-  void ComputeLight();                        // step 2
-  void ComputeHormone();                      // step 3
-  void ThickenBranches();                     // 2.4.4
-  void SetNextYearBuds();                     // step 5, including dormancy break (2.4.6)
+  void BreakBuds();                            // step 1
+  void LayOutShoot(Branch& shoot, bool bend);  // step 4 geometry (also straight, before light)
+  void ComputeLight();                         // step 2
+  void ComputeHormone();                       // step 3
+  void ThickenBranches();                      // 2.4.4
+  void SetNextYearBuds();                      // step 5, including dormancy break (2.4.6)
   void ApplyPrunes();
   void Kill(int branch_id);
 

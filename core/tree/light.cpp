@@ -104,9 +104,7 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
   int ny = std::max(1, static_cast<int>(std::ceil(extent.y / cell)));
   int nz = std::max(1, static_cast<int>(std::ceil(extent.z / cell)));
   std::vector<float> density(static_cast<std::size_t>(nx) * ny * nz, 0.0f);
-  auto index = [&](int x, int y, int z) {
-    return (static_cast<std::size_t>(z) * ny + y) * nx + x;
-  };
+  auto index = [&](int x, int y, int z) { return (static_cast<std::size_t>(z) * ny + y) * nx + x; };
   // Rasterize: every voxel whose centre lies in a sphere gets that sphere's extinction.
   for (const LeafSphere& s : spheres) {
     float sigma = Extinction(opacity, s.radius);

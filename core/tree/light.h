@@ -1,9 +1,8 @@
 // Light model (thesis 2.3.2): leaves as shading spheres; light L and its direction v_L per shoot.
 #pragma once
 
-#include <vector>
-
 #include <glm/vec3.hpp>
+#include <vector>
 
 namespace niwa {
 
@@ -26,11 +25,13 @@ struct LightSample {
 // 16 overcast directions (Fibonacci spiral, weights ∝ cos zenith) plus the sun.
 Sky MakeSky(float sun_elevation_deg, float sun_azimuth_deg, float sun_weight);
 
-// Exact pairwise reference, O(n² · directions): light at each sphere's centre from every other sphere.
+// Exact pairwise reference, O(n² · directions): light at each sphere's centre from every other
+// sphere.
 std::vector<LightSample> ComputeLightReference(const std::vector<LeafSphere>& spheres,
                                                const Sky& sky, float opacity);
 
-// Near-linear production model: sphere density rasterized into a voxel grid, rays marched through it.
+// Near-linear production model: sphere density rasterized into a voxel grid, rays marched through
+// it.
 std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres, const Sky& sky,
                                           float opacity);
 

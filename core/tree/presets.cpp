@@ -1,9 +1,9 @@
-// Parses the embedded preset JSON files once (they are checked by tests, so a bad file fails loudly).
+// Parses the embedded preset JSON files once (they are checked by tests, so a bad file fails
+// loudly).
 #include "tree/presets.h"
 
-#include <cstdlib>
 #include <cstdio>
-
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 
 #include "io/json_io.h"
@@ -17,7 +17,8 @@ const std::vector<Preset>& Presets() {
     for (const EmbeddedPreset& file : EmbeddedPresets()) {
       nlohmann::json j = nlohmann::json::parse(file.json, nullptr, false);
       Preset preset;
-      std::string error = j.is_discarded() ? "malformed JSON" : ApplyParamsJson(file.json, &preset.params);
+      std::string error =
+          j.is_discarded() ? "malformed JSON" : ApplyParamsJson(file.json, &preset.params);
       if (!error.empty() || !j.contains("name") || !j.contains("years")) {
         std::fprintf(stderr, "niwa: preset file %s is invalid: %s\n", file.file, error.c_str());
         std::abort();  // a build-time data error, caught by the preset tests

@@ -2,10 +2,9 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/vec3.hpp>
 
 #include "params/param_table.h"
 
@@ -23,41 +22,41 @@ enum class BudState : uint8_t {
 
 struct Bud {
   ShootKind kind;
-  int node;                // index into Branch::nodes where the bud sits
-  glm::vec3 direction;     // unit growth direction of the shoot it would make
-  glm::vec3 azimuth;       // unit vector across the direction, phyllotaxis reference for the shoot
+  int node;             // index into Branch::nodes where the bud sits
+  glm::vec3 direction;  // unit growth direction of the shoot it would make
+  glm::vec3 azimuth;    // unit vector across the direction, phyllotaxis reference for the shoot
   BudState state;
-  bool flower;             // flower bud (sakura: laterals of dwarf shoots)
-  float extra_hormone;     // H_n added at bud break when broken through dormancy break
+  bool flower;          // flower bud (sakura: laterals of dwarf shoots)
+  float extra_hormone;  // H_n added at bud break when broken through dormancy break
 };
 
 struct Leaf {
-  int node;                // node of the branch the leaf sits at
-  glm::vec3 direction;     // unit direction from the node along the leaf
+  int node;             // node of the branch the leaf sits at
+  glm::vec3 direction;  // unit direction from the node along the leaf
 };
 
 struct Branch {
   int id;
-  int parent;              // -1 for the seedling shoot
-  int parent_node;         // node of the parent the shoot starts from
-  int year;                // year the shoot grew (1 = first year)
+  int parent;       // -1 for the seedling shoot
+  int parent_node;  // node of the parent the shoot starts from
+  int year;         // year the shoot grew (1 = first year)
   ShootKind kind;
-  bool dwarf;              // initial hormone below H_s (2.4.2)
-  bool alive;              // false once dead or pruned: not drawn, not counted
+  bool dwarf;                    // initial hormone below H_s (2.4.2)
+  bool alive;                    // false once dead or pruned: not drawn, not counted
   std::vector<glm::vec3> nodes;  // nodes[0] = base on the parent, nodes[1..N] = node points
-  glm::vec3 bud_direction; // v_tp: direction the bud pointed, before bending (eq. 2.6)
-  glm::vec3 azimuth;       // phyllotaxis reference across the first internode
-  float internode_length;  // D, cm
-  float hormone_initial;   // H^0 (eq. 2.1)
-  float hormone;           // H after this year's update (eqs. 2.2, 2.3)
-  float hormone_previous;  // H' (last year's H), for the sudden-drop dormancy break
-  float light;             // L in [0, 1] (light model)
-  glm::vec3 light_direction;  // v_L, unit
-  float cross_section;     // cm² (pipe model, 2.4.4)
+  glm::vec3 bud_direction;       // v_tp: direction the bud pointed, before bending (eq. 2.6)
+  glm::vec3 azimuth;             // phyllotaxis reference across the first internode
+  float internode_length;        // D, cm
+  float hormone_initial;         // H^0 (eq. 2.1)
+  float hormone;                 // H after this year's update (eqs. 2.2, 2.3)
+  float hormone_previous;        // H' (last year's H), for the sudden-drop dormancy break
+  float light;                   // L in [0, 1] (light model)
+  glm::vec3 light_direction;     // v_L, unit
+  float cross_section;           // cm² (pipe model, 2.4.4)
   std::vector<int> children;
   std::vector<Bud> buds;
-  std::vector<Leaf> leaves;    // only on the current year's shoots (deciduous)
-  std::vector<int> flowers;    // node index of each open flower this year
+  std::vector<Leaf> leaves;  // only on the current year's shoots (deciduous)
+  std::vector<int> flowers;  // node index of each open flower this year
 };
 
 // A whole grown tree plus the settings that produced it.

@@ -5,9 +5,8 @@
 
 #include <cstdio>
 #include <fstream>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 namespace niwa {
 namespace {
@@ -46,9 +45,11 @@ TEST(Cli, PresetsListsEveryPreset) {
 }
 
 TEST(Cli, HelpOnEveryCommand) {
-  for (auto args : std::vector<std::vector<std::string>>{
-           {"--help"}, {"presets", "--help"}, {"params", "--help"}, {"tree", "--help"},
-           {"tree", "grow", "--help"}}) {
+  for (auto args : std::vector<std::vector<std::string>>{{"--help"},
+                                                         {"presets", "--help"},
+                                                         {"params", "--help"},
+                                                         {"tree", "--help"},
+                                                         {"tree", "grow", "--help"}}) {
     Result r = RunNiwa(args);
     EXPECT_EQ(r.code, 0) << args.back();
     EXPECT_NE(r.out.find("Usage"), std::string::npos) << r.out;
@@ -57,7 +58,8 @@ TEST(Cli, HelpOnEveryCommand) {
 }
 
 TEST(Cli, StatsPrintsOneJsonObjectWithTheRequiredFields) {
-  Result r = RunNiwa({"tree", "grow", "--preset", "tsutsuji", "--years", "6", "--seed", "4", "--stats"});
+  Result r =
+      RunNiwa({"tree", "grow", "--preset", "tsutsuji", "--years", "6", "--seed", "4", "--stats"});
   ASSERT_EQ(r.code, 0) << r.err;
   nlohmann::json j = nlohmann::json::parse(r.out);
   for (const char* key : {"internodes", "branches", "leaves", "flowers", "height", "years", "seed",
@@ -72,11 +74,12 @@ TEST(Cli, StatsPrintsOneJsonObjectWithTheRequiredFields) {
 
 TEST(Cli, SetAndParamsFileChangeTheTree) {
   Result base = RunNiwa({"tree", "grow", "--preset", "sakura", "--years", "5", "--stats"});
-  Result set = RunNiwa({"tree", "grow", "--preset", "sakura", "--years", "5", "--set", "N_high=10",
-                    "--stats"});
+  Result set = RunNiwa(
+      {"tree", "grow", "--preset", "sakura", "--years", "5", "--set", "N_high=10", "--stats"});
   std::string file = TempPath("params.json");
   std::ofstream(file) << R"({"N_high": 10})";
-  Result json = RunNiwa({"tree", "grow", "--preset", "sakura", "--years", "5", "--params", file, "--stats"});
+  Result json =
+      RunNiwa({"tree", "grow", "--preset", "sakura", "--years", "5", "--params", file, "--stats"});
   ASSERT_EQ(set.code, 0);
   auto a = nlohmann::json::parse(base.out), b = nlohmann::json::parse(set.out),
        c = nlohmann::json::parse(json.out);
@@ -85,21 +88,25 @@ TEST(Cli, SetAndParamsFileChangeTheTree) {
 }
 
 TEST(Cli, BadInputGivesOneLineNamingTheFieldAndExit2) {
-  ExpectOneLineError(RunNiwa({"tree", "grow", "--preset", "oak"}), "--preset: unknown 'oak', must be one of");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--preset", "oak"}),
+                     "--preset: unknown 'oak', must be one of");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--set", "alpha_t=3"}),
                      "alpha_t: 3 is out of range; must be a number in [0, 1]");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--set", "nope=1"}), "unknown parameter 'nope'");
-  ExpectOneLineError(RunNiwa({"tree", "grow", "--set", "gamma"}), "--set: 'gamma' must be key=value");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--set", "gamma"}),
+                     "--set: 'gamma' must be key=value");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--years", "500"}), "--years: 500 is out of range");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--years", "abc"}), "--years");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--prune", "x"}), "prune");
-  ExpectOneLineError(RunNiwa({"tree", "grow", "--out", "tree.obj"}), "must end in .glb, .json or .svg");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--out", "tree.obj"}),
+                     "must end in .glb, .json or .svg");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--bogus"}), "--bogus");
   ExpectOneLineError(RunNiwa({"frobnicate"}), "frobnicate");
   std::string bad = TempPath("bad.json");
   std::ofstream(bad) << "{\"gamma\": ";
   ExpectOneLineError(RunNiwa({"tree", "grow", "--params", bad}), "malformed JSON");
-  ExpectOneLineError(RunNiwa({"tree", "grow", "--params", TempPath("missing.json")}), "cannot read");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--params", TempPath("missing.json")}),
+                     "cannot read");
 }
 
 TEST(Cli, UnwritablePathFailsCleanlyAndLeavesNoFile) {
@@ -130,10 +137,10 @@ TEST(Cli, WritesJsonAndSvg) {
 }
 
 TEST(Cli, UrlGrowsTheSameTreeAsTheFlags) {
-  Result flags = RunNiwa({"tree", "grow", "--preset", "keyaki", "--years", "7", "--seed", "3", "--set",
-                      "gamma=0.3", "--prune", "6:b2", "--stats"});
-  Result url = RunNiwa({"tree", "grow", "--url", "#preset=keyaki&seed=3&years=7&gamma=0.3&prune=6:b2",
-                    "--stats"});
+  Result flags = RunNiwa({"tree", "grow", "--preset", "keyaki", "--years", "7", "--seed", "3",
+                          "--set", "gamma=0.3", "--prune", "6:b2", "--stats"});
+  Result url = RunNiwa(
+      {"tree", "grow", "--url", "#preset=keyaki&seed=3&years=7&gamma=0.3&prune=6:b2", "--stats"});
   ASSERT_EQ(url.code, 0) << url.err;
   auto a = nlohmann::json::parse(flags.out), b = nlohmann::json::parse(url.out);
   EXPECT_EQ(a["internodes"], b["internodes"]);

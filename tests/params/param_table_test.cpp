@@ -1,4 +1,5 @@
-// Tests of the parameter table: completeness, defaults in range, one-line errors naming field and range.
+// Tests of the parameter table: completeness, defaults in range, one-line errors naming field and
+// range.
 #include "params/param_table.h"
 
 #include <gtest/gtest.h>
@@ -23,10 +24,11 @@ TEST(ParamTable, RowsAreInIdOrderWithUniqueKeysAndDefaultsInRange) {
 }
 
 TEST(ParamTable, EverySymbolOfThesisTable21IsPresent) {
-  const char* symbols[] = {"α_t", "α_tl", "α_l", "β_c", "β_p", "h_s", "h_l", "γ", "H_s", "N", "D",
-                           "B_t", "B_tl", "B_l", "ϕ", "θ_N", "ψ_t", "ψ_tl", "ψ_l", "P_tl^s",
-                           "P_tl^l", "P_l", "b_L", "b_g", "θ_bmax^N", "θ_bmax^b", "H_b^l", "δ_l",
-                           "B_b^l", "H_n^l", "h_b^d", "δ_d", "B_b^d", "H_n^d"};
+  const char* symbols[] = {"α_t",   "α_tl",  "α_l",   "β_c",      "β_p",      "h_s",    "h_l",
+                           "γ",     "H_s",   "N",     "D",        "B_t",      "B_tl",   "B_l",
+                           "ϕ",     "θ_N",   "ψ_t",   "ψ_tl",     "ψ_l",      "P_tl^s", "P_tl^l",
+                           "P_l",   "b_L",   "b_g",   "θ_bmax^N", "θ_bmax^b", "H_b^l",  "δ_l",
+                           "B_b^l", "H_n^l", "h_b^d", "δ_d",      "B_b^d",    "H_n^d"};
   for (const char* symbol : symbols) {
     bool found = false;
     for (const ParamSpec& s : ParamTable()) found = found || std::string(s.symbol) == symbol;

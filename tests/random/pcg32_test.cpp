@@ -9,7 +9,8 @@ namespace {
 TEST(Pcg32, MatchesReferenceSequenceForSeed42Stream54) {
   // pcg32-demo (pcg-c-basic) output for pcg32_srandom_r(&rng, 42u, 54u).
   Pcg32 rng(42u, 54u);
-  const uint32_t expected[] = {0xa15c02b7, 0x7b47f409, 0xba1d3330, 0x83d2f293, 0xbfa4784b, 0xcbed606e};
+  const uint32_t expected[] = {0xa15c02b7, 0x7b47f409, 0xba1d3330,
+                               0x83d2f293, 0xbfa4784b, 0xcbed606e};
   for (uint32_t value : expected) EXPECT_EQ(rng.NextU32(), value);
 }
 

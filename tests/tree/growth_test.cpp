@@ -1,4 +1,5 @@
-// Tests of the growth model: hand-computed equations, properties of grown trees, pruning, determinism.
+// Tests of the growth model: hand-computed equations, properties of grown trees, pruning,
+// determinism.
 #include "tree/growth.h"
 
 #include <gtest/gtest.h>
@@ -55,11 +56,11 @@ TEST(HormoneModel, Equations21To23OnTheBinaryTreeByHand) {
   const Branch& lateral = tree.branches[2];
   EXPECT_EQ(terminal.kind, ShootKind::kTerminal);
   EXPECT_EQ(lateral.kind, ShootKind::kTerminallyLateral);
-  EXPECT_FLOAT_EQ(terminal.hormone_initial, 1.0f * 1.1f);     // eq. 2.1, alpha_t
-  EXPECT_FLOAT_EQ(lateral.hormone_initial, 0.4f * 1.1f);      // eq. 2.1, alpha_tl
-  EXPECT_TRUE(lateral.dwarf);                                 // 0.44 < H_s = 0.5
-  EXPECT_FLOAT_EQ(terminal.hormone, 0.8f * 1.1f + 0.3f);      // eq. 2.2, long
-  EXPECT_FLOAT_EQ(lateral.hormone, 0.8f * 0.44f + 0.1f);      // eq. 2.2, dwarf
+  EXPECT_FLOAT_EQ(terminal.hormone_initial, 1.0f * 1.1f);  // eq. 2.1, alpha_t
+  EXPECT_FLOAT_EQ(lateral.hormone_initial, 0.4f * 1.1f);   // eq. 2.1, alpha_tl
+  EXPECT_TRUE(lateral.dwarf);                              // 0.44 < H_s = 0.5
+  EXPECT_FLOAT_EQ(terminal.hormone, 0.8f * 1.1f + 0.3f);   // eq. 2.2, long
+  EXPECT_FLOAT_EQ(lateral.hormone, 0.8f * 0.44f + 0.1f);   // eq. 2.2, dwarf
   EXPECT_FLOAT_EQ(tree.branches[0].hormone,
                   0.0f * 1.1f + 0.5f * (terminal.hormone + lateral.hormone));  // eq. 2.3
   EXPECT_FLOAT_EQ(tree.branches[0].hormone_previous, 1.1f);
@@ -75,7 +76,8 @@ TEST(Branching, BinaryTreeSplitsInTwoWithTheTableAngles) {
     EXPECT_EQ(child.nodes[0], parent.nodes[1]);
   }
   // psi_t = -10 turns the terminal shoot away from the terminally-lateral side.
-  EXPECT_LT(glm::dot(tree.branches[1].bud_direction - up, tree.branches[2].bud_direction - up), 0.0f);
+  EXPECT_LT(glm::dot(tree.branches[1].bud_direction - up, tree.branches[2].bud_direction - up),
+            0.0f);
 }
 
 // Straight shoot (no light, no bending) with lateral buds on every node.
@@ -93,9 +95,7 @@ Tree StraightShoot(double phi, int buds_per_node) {
   return GrowTree(r);
 }
 
-float AzimuthDegrees(const glm::vec3& v) {
-  return std::atan2(v.z, v.x) * 180.0f / kPi;
-}
+float AzimuthDegrees(const glm::vec3& v) { return std::atan2(v.z, v.x) * 180.0f / kPi; }
 
 float TurnBetween(const glm::vec3& a, const glm::vec3& b) {
   float turn = AzimuthDegrees(b) - AzimuthDegrees(a);
@@ -190,7 +190,8 @@ void ExpectConsistentTree(const Tree& tree) {
       EXPECT_LT(parent.id, b.id);
       EXPECT_LT(parent.year, b.year);
       EXPECT_EQ(b.nodes[0], parent.nodes[static_cast<std::size_t>(b.parent_node)]);
-      EXPECT_NE(std::find(parent.children.begin(), parent.children.end(), b.id), parent.children.end());
+      EXPECT_NE(std::find(parent.children.begin(), parent.children.end(), b.id),
+                parent.children.end());
       if (b.alive) {
         EXPECT_TRUE(parent.alive) << b.id;
       }

@@ -1,10 +1,10 @@
-// Tests of the leaf-sphere light model: unshaded and shaded cases, and the grid against the reference.
+// Tests of the leaf-sphere light model: unshaded and shaded cases, and the grid against the
+// reference.
 #include "tree/light.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-
 #include <glm/geometric.hpp>
 
 #include "tree/growth.h"
@@ -38,7 +38,8 @@ TEST(Light, LoneSphereGetsFullLightTowardsTheBrightSky) {
 }
 
 TEST(Light, SphereBelowAnotherIsShadedAndLeansAway) {
-  // Reference by hand for the zenith ray: the lower centre sees one full diameter of the upper sphere.
+  // Reference by hand for the zenith ray: the lower centre sees one full diameter of the upper
+  // sphere.
   std::vector<LeafSphere> pair = {{glm::vec3(0, 0, 0), 1.0f}, {glm::vec3(0, 3, 0), 1.0f}};
   Sky zenith;
   zenith.directions = {glm::vec3(0, 1, 0)};
@@ -54,7 +55,10 @@ TEST(Light, SphereBelowAnotherIsShadedAndLeansAway) {
 
 double Pearson(const std::vector<double>& a, const std::vector<double>& b) {
   double ma = 0, mb = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) { ma += a[i]; mb += b[i]; }
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ma += a[i];
+    mb += b[i];
+  }
   ma /= static_cast<double>(a.size());
   mb /= static_cast<double>(b.size());
   double sab = 0, saa = 0, sbb = 0;
