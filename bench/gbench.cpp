@@ -1,7 +1,7 @@
 // Google Benchmark binary (native only): registers every shared workload as one benchmark, in ms.
-#include <memory>
-
 #include <benchmark/benchmark.h>
+
+#include <memory>
 
 #include "workloads.h"
 
@@ -13,12 +13,10 @@ void RegisterAll() {
     // Prepared on first use and kept, since Google Benchmark calls the function several times.
     auto body = std::make_shared<WorkloadBody>();
     const Workload* workload = &w;
-    benchmark::RegisterBenchmark(w.name.c_str(),
-                                 [workload, body](benchmark::State& state) {
-                                   if (!*body) *body = workload->prepare();
-                                   for (auto _ : state) benchmark::DoNotOptimize((*body)());
-                                 })
-        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(w.name.c_str(), [workload, body](benchmark::State& state) {
+      if (!*body) *body = workload->prepare();
+      for (auto _ : state) benchmark::DoNotOptimize((*body)());
+    })->Unit(benchmark::kMillisecond);
   }
 }
 

@@ -1,10 +1,11 @@
 // Plain benchmark runner (native and WASM under node): times every workload, prints JSON lines.
 //
-// Usage: niwa_bench_runner [--filter SUBSTRING] [--min-ms MS] [--min-reps N] [--max-reps N] [--list]
-// Each workload is prepared once, run once untimed (warm-up), then repeated until it has run at
-// least --min-reps times and for at least --min-ms in total (never more than --max-reps). One line
-// per workload: {"build":"native","workload":"grow/sakura-15y","ms":median,"min_ms":..,"reps":..,
-// "check":..}, with "check" the workload's checksum (equal on both builds when results agree).
+// Usage: niwa_bench_runner [--filter SUBSTRING] [--min-ms MS] [--min-reps N] [--max-reps N]
+// [--list] Each workload is prepared once, run once untimed (warm-up), then repeated until it has
+// run at least --min-reps times and for at least --min-ms in total (never more than --max-reps).
+// One line per workload:
+// {"build":"native","workload":"grow/sakura-15y","ms":median,"min_ms":..,"reps":.., "check":..},
+// with "check" the workload's checksum (equal on both builds when results agree).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

@@ -1,9 +1,9 @@
-// Benchmark workloads: growth of every preset, sakura at several ages, mesh, .glb and the light model.
+// Benchmark workloads: growth of every preset, sakura at several ages, mesh, .glb and the light
+// model.
 #include "workloads.h"
 
-#include <memory>
-
 #include <glm/vec3.hpp>
+#include <memory>
 
 #include "io/gltf_export.h"
 #include "random/pcg32.h"
@@ -93,16 +93,16 @@ std::vector<Workload> MakeWorkloads() {
                                                 mesh.flowers.vertex_count());
                    });
                  }});
-  all.push_back({"glb/sakura-15y", "WriteGlb in memory of the sakura 15 years mesh (mesh untimed)",
-                 [] {
-                   auto mesh = std::make_shared<TreeMesh>(
-                       BuildTreeMesh(GrowTree(PresetRequest(Sakura(), 15))));
-                   return WorkloadBody([mesh]() {
-                     std::vector<unsigned char> bytes;
-                     WriteGlb(*mesh, &bytes);
-                     return static_cast<double>(bytes.size());
-                   });
-                 }});
+  all.push_back(
+      {"glb/sakura-15y", "WriteGlb in memory of the sakura 15 years mesh (mesh untimed)", [] {
+         auto mesh =
+             std::make_shared<TreeMesh>(BuildTreeMesh(GrowTree(PresetRequest(Sakura(), 15))));
+         return WorkloadBody([mesh]() {
+           std::vector<unsigned char> bytes;
+           WriteGlb(*mesh, &bytes);
+           return static_cast<double>(bytes.size());
+         });
+       }});
   all.push_back(LightWorkload(false));
   all.push_back(LightWorkload(true));
   return all;

@@ -1,4 +1,5 @@
-// Named benchmark workloads over the public core API, shared by Google Benchmark and the node runner.
+// Named benchmark workloads over the public core API, shared by Google Benchmark and the node
+// runner.
 #pragma once
 
 #include <functional>
@@ -12,8 +13,8 @@ namespace niwa {
 using WorkloadBody = std::function<double()>;
 
 struct Workload {
-  std::string name;      // "grow/sakura-15y", "light/grid-2000", ...
-  std::string note;      // one line: what is timed
+  std::string name;  // "grow/sakura-15y", "light/grid-2000", ...
+  std::string note;  // one line: what is timed
   // Untimed setup (grow the tree to mesh, make the spheres, ...); returns the timed body.
   std::function<WorkloadBody()> prepare;
 };

@@ -31,3 +31,10 @@ endfunction()
 set(NIWA_WEB_LINK_OPTIONS -lembind -sMODULARIZE=1 -sEXPORT_ES6=1 -sEXPORT_NAME=createNiwaModule
     -sENVIRONMENT=worker -sFILESYSTEM=0)
 set(CMAKE_CROSSCOMPILING_EMULATOR node)
+
+# The node-script tests compare both builds and are registered once, by the native build.
+function(niwa_add_node_script_tests dir)
+endfunction()
+
+# Google Benchmark exists as a Debian library for the native build only.
+set(NIWA_GOOGLE_BENCHMARK OFF)

@@ -8,3 +8,18 @@ endif()
 # Link a binary that runs natively (no-op here; the WASM build sets node-runner flags).
 function(niwa_node_program target)
 endfunction()
+
+# Registers every <dir>/*.test.mjs as a ctest test run by node with the native CLI and the repo root.
+function(niwa_add_node_script_tests dir)
+  find_program(NODE_EXECUTABLE node REQUIRED)
+  file(GLOB scripts CONFIGURE_DEPENDS ${dir}/*.test.mjs)
+  foreach(script ${scripts})
+    get_filename_component(name ${script} NAME_WE)
+    add_test(NAME cli_${name} COMMAND ${NODE_EXECUTABLE} ${script})
+    set_tests_properties(cli_${name} PROPERTIES LABELS cli
+      ENVIRONMENT "NIWA_NATIVE=${CMAKE_BINARY_DIR}/bin/niwa;NIWA_ROOT=${PROJECT_SOURCE_DIR}")
+  endforeach()
+endfunction()
+
+# Google Benchmark exists as a Debian library for the native build only.
+set(NIWA_GOOGLE_BENCHMARK ON)
