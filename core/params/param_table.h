@@ -58,6 +58,7 @@ enum class ParamId : int {
   kBGHigh,
   kThetaBmaxN,
   kThetaBmaxB,
+  kBLByLight,
   // dormancy break (thesis 2.4.6)
   kHBL,
   kDeltaL,

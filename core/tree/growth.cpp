@@ -158,7 +158,12 @@ void Grower::LayOutShoot(Branch& shoot, bool bend) {
   float b = 0.0f;
   glm::vec3 target = kUp;
   if (bend) {
-    float b_light = HormoneRamp(p, shoot.hormone, ParamId::kBLLow, ParamId::kBLHigh);
+    // Fig. 2.16 (d), the thesis's own: the rate follows the hormone; (c): it follows the light L.
+    float b_light = p.GetBool(ParamId::kBLByLight)
+                        ? static_cast<float>(p.Get(ParamId::kBLLow) +
+                                             (p.Get(ParamId::kBLHigh) - p.Get(ParamId::kBLLow)) *
+                                                 static_cast<double>(shoot.light))
+                        : HormoneRamp(p, shoot.hormone, ParamId::kBLLow, ParamId::kBLHigh);
     float b_gravity = HormoneRamp(p, shoot.hormone, ParamId::kBGLow, ParamId::kBGHigh);
     glm::vec3 pull = b_light * shoot.light_direction + b_gravity * kUp;  // b_L v_L - b_g v_g
     b = glm::length(pull);                                               // eq. 2.4
@@ -306,6 +311,8 @@ void Grower::SetNextYearBuds() {
         hormone_on ? BreakProbability(h, h_short, h_sat, static_cast<float>(p.Get(ParamId::kPTlS)),
                                       static_cast<float>(p.Get(ParamId::kPTlL)))
                    : static_cast<float>(p.Get(ParamId::kPTlL));
+    // A long shoot's lateral buds: P_l (fig. 2.9) scaled by the shoot's hormone, reaching it at
+    // H_sat (fig. 2.8); dwarf shoots' lateral buds do not break (they are flowers for sakura).
     float p_lateral = s.dwarf      ? 0.0f
                       : hormone_on ? p_lateral_max * Clamp01(h / h_sat)
                                    : p_lateral_max;
@@ -343,7 +350,8 @@ void Grower::SetNextYearBuds() {
     if (!b.alive || b.year == tree_.years) continue;
     float h_b_l = static_cast<float>(p.Get(ParamId::kHBL));
     float h_b_d = static_cast<float>(p.Get(ParamId::kHBD));
-    bool low = h_b_l > 0.0f && b.hormone < h_b_l;
+    // "H becomes <= H_b^l" (2.4.6): an event when H crosses the threshold, not every year below it.
+    bool low = h_b_l > 0.0f && b.hormone < h_b_l && b.hormone_previous >= h_b_l;
     bool dropped = h_b_d > 0.0f && b.hormone < b.hormone_previous / h_b_d;
     for (const Trigger* trigger : {low ? &by_threshold : nullptr, dropped ? &by_drop : nullptr}) {
       if (!trigger) continue;

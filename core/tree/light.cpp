@@ -30,16 +30,21 @@ float ChordLength(const glm::vec3& origin, const glm::vec3& dir, const LeafSpher
   return t1 - t0;
 }
 
+// L is the weighted transmitted light; v_L the direction where the received light is strongest
+// (thesis 2.4.3 step 3: "光の強い方向を示す単位ベクトル").
 LightSample Resolve(const Sky& sky, const float* transmittance) {
-  float light = 0.0f;
-  glm::vec3 resultant(0.0f);
+  float light = 0.0f, strongest = -1.0f;
+  glm::vec3 direction(0, 1, 0);
   for (std::size_t k = 0; k < sky.directions.size(); ++k) {
     float received = sky.weights[k] * transmittance[k];
     light += received;
-    resultant += sky.directions[k] * received;
+    // Compare radiance (received per unit weight), so the sun is not favoured for its weight alone.
+    float radiance = transmittance[k];
+    if (radiance > strongest) {
+      strongest = radiance;
+      direction = sky.directions[k];
+    }
   }
-  float length = glm::length(resultant);
-  glm::vec3 direction = length > 1e-9f ? resultant / length : glm::vec3(0, 1, 0);
   return {std::min(1.0f, light), direction};
 }
 
@@ -50,13 +55,16 @@ Sky MakeSky(float sun_elevation_deg, float sun_azimuth_deg, float sun_weight) {
   float total = 0.0f;
   const float golden = kPi * (3.0f - std::sqrt(5.0f));
   for (int i = 0; i < kSkyDirections; ++i) {
-    // Fibonacci points on the upper hemisphere, y up; cos(zenith) from 1 down to ~0.03.
+    // Fibonacci points on the upper hemisphere (equal solid angle each), y up.
     float y = 1.0f - (static_cast<float>(i) + 0.5f) / kSkyDirections;
     float ring = std::sqrt(1.0f - y * y);
     float angle = golden * static_cast<float>(i);
     sky.directions.push_back(glm::vec3(ring * std::cos(angle), y, ring * std::sin(angle)));
-    sky.weights.push_back(y);  // uniform overcast sky: irradiance ∝ cos(zenith)
-    total += y;
+    // CIE standard overcast sky: radiance ∝ (1 + 2 sin(elevation)) / 3. A leaf sphere receives
+    // radiance × solid angle from every side (no cosine factor, unlike a horizontal surface).
+    float weight = (1.0f + 2.0f * y) / 3.0f;
+    sky.weights.push_back(weight);
+    total += weight;
   }
   for (float& w : sky.weights) w *= (1.0f - sun_weight) / total;
   float elevation = Radians(sun_elevation_deg), azimuth = Radians(sun_azimuth_deg);
@@ -96,23 +104,27 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     hi = glm::max(hi, s.center + glm::vec3(s.radius));
     radius_sum += s.radius;
   }
-  // Cell about half a mean sphere radius, at most 64 cells along the longest side.
+  // Cell about half a mean sphere radius, at most 48 cells along the longest side.
   glm::vec3 extent = hi - lo;
   float longest = std::max(extent.x, std::max(extent.y, extent.z));
-  float cell = std::max(0.5f * radius_sum / static_cast<float>(spheres.size()), longest / 64.0f);
-  int nx = std::max(1, static_cast<int>(std::ceil(extent.x / cell)));
-  int ny = std::max(1, static_cast<int>(std::ceil(extent.y / cell)));
-  int nz = std::max(1, static_cast<int>(std::ceil(extent.z / cell)));
-  std::vector<float> density(static_cast<std::size_t>(nx) * ny * nz, 0.0f);
-  auto index = [&](int x, int y, int z) { return (static_cast<std::size_t>(z) * ny + y) * nx + x; };
+  float cell = std::max(0.5f * radius_sum / static_cast<float>(spheres.size()), longest / 48.0f);
+  const int n[3] = {std::max(1, static_cast<int>(std::ceil(extent.x / cell))),
+                    std::max(1, static_cast<int>(std::ceil(extent.y / cell))),
+                    std::max(1, static_cast<int>(std::ceil(extent.z / cell)))};
+  auto index = [&](int x, int y, int z) {
+    return (static_cast<std::size_t>(z) * static_cast<std::size_t>(n[1]) +
+            static_cast<std::size_t>(y)) * static_cast<std::size_t>(n[0]) +
+           static_cast<std::size_t>(x);
+  };
+  std::vector<float> density(static_cast<std::size_t>(n[0]) * n[1] * n[2], 0.0f);
   // Rasterize: every voxel whose centre lies in a sphere gets that sphere's extinction.
   for (const LeafSphere& s : spheres) {
     float sigma = Extinction(opacity, s.radius);
     glm::vec3 a = (s.center - glm::vec3(s.radius) - lo) / cell;
     glm::vec3 b = (s.center + glm::vec3(s.radius) - lo) / cell;
-    int x0 = std::max(0, static_cast<int>(a.x)), x1 = std::min(nx - 1, static_cast<int>(b.x));
-    int y0 = std::max(0, static_cast<int>(a.y)), y1 = std::min(ny - 1, static_cast<int>(b.y));
-    int z0 = std::max(0, static_cast<int>(a.z)), z1 = std::min(nz - 1, static_cast<int>(b.z));
+    int x0 = std::max(0, static_cast<int>(a.x)), x1 = std::min(n[0] - 1, static_cast<int>(b.x));
+    int y0 = std::max(0, static_cast<int>(a.y)), y1 = std::min(n[1] - 1, static_cast<int>(b.y));
+    int z0 = std::max(0, static_cast<int>(a.z)), z1 = std::min(n[2] - 1, static_cast<int>(b.z));
     float r2 = s.radius * s.radius;
     for (int z = z0; z <= z1; ++z) {
       for (int y = y0; y <= y1; ++y) {
@@ -124,32 +136,75 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
       }
     }
   }
-  std::vector<float> transmittance(sky.directions.size());
-  for (std::size_t i = 0; i < spheres.size(); ++i) {
-    const LeafSphere& own = spheres[i];
-    float own_sigma = Extinction(opacity, own.radius);
-    for (std::size_t k = 0; k < sky.directions.size(); ++k) {
-      const glm::vec3& dir = sky.directions[k];
-      float depth = 0.0f;
-      // March from the centre out of the grid, half a cell at a time.
-      float step = 0.5f * cell;
-      for (float t = 0.5f * step;; t += step) {
-        glm::vec3 g = (own.center + dir * t - lo) / cell;
-        if (g.x < 0 || g.y < 0 || g.z < 0 || g.x >= static_cast<float>(nx) ||
-            g.y >= static_cast<float>(ny) || g.z >= static_cast<float>(nz)) {
-          break;
-        }
-        int x = static_cast<int>(g.x), y = static_cast<int>(g.y), z = static_cast<int>(g.z);
-        float sigma = density[index(x, y, z)];
-        // The shoot's own sphere does not shade it: remove exactly what it rasterized here.
-        glm::vec3 voxel_center = lo + (glm::vec3(x, y, z) + 0.5f) * cell - own.center;
-        if (glm::dot(voxel_center, voxel_center) <= own.radius * own.radius) sigma -= own_sigma;
-        depth += sigma * step;
-      }
-      depth = std::max(0.0f, depth);
-      transmittance[k] = std::exp(-depth);
+
+  // Shadow propagation, one direction at a time: depth(v) = σ(v)·s + depth(v + d·s), swept along the
+  // dominant axis of d so that v + d·s lies on the slice swept just before (bilinear there).
+  std::vector<float> depth(density.size());
+  std::vector<float> transmittance(spheres.size() * sky.directions.size());
+  const std::size_t directions = sky.directions.size();
+  for (std::size_t k = 0; k < directions; ++k) {
+    const glm::vec3& d = sky.directions[k];
+    const float comp[3] = {d.x, d.y, d.z};
+    int axis = 0;
+    for (int c = 1; c < 3; ++c) {
+      if (std::fabs(comp[c]) > std::fabs(comp[axis])) axis = c;
     }
-    result[i] = Resolve(sky, transmittance.data());
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const float along = std::fabs(comp[axis]);
+    const float step = cell / along;                    // path length between slices
+    const float du = comp[u] / along, dv = comp[v] / along;  // offset in cells on the next slice
+    const int sign = comp[axis] > 0 ? 1 : -1;
+    const int iu = static_cast<int>(std::floor(du)), iv = static_cast<int>(std::floor(dv));
+    const float fu = du - static_cast<float>(iu), fv = dv - static_cast<float>(iv);
+    int coord[3];
+    auto at = [&](int a, int b, int c) {  // axis, u, v coordinates -> index
+      coord[axis] = a;
+      coord[u] = b;
+      coord[v] = c;
+      return index(coord[0], coord[1], coord[2]);
+    };
+    auto upstream = [&](int a, int b, int c) -> float {  // depth on slice a, 0 outside the grid
+      if (a < 0 || a >= n[axis] || b < 0 || b >= n[u] || c < 0 || c >= n[v]) return 0.0f;
+      return depth[at(a, b, c)];
+    };
+    const int first = sign > 0 ? n[axis] - 1 : 0;
+    for (int a = first; a >= 0 && a < n[axis]; a -= sign) {
+      const int up = a + sign;
+      for (int c = 0; c < n[v]; ++c) {
+        for (int b = 0; b < n[u]; ++b) {
+          float before = (1 - fu) * (1 - fv) * upstream(up, b + iu, c + iv) +
+                         fu * (1 - fv) * upstream(up, b + iu + 1, c + iv) +
+                         (1 - fu) * fv * upstream(up, b + iu, c + iv + 1) +
+                         fu * fv * upstream(up, b + iu + 1, c + iv + 1);
+          std::size_t here = at(a, b, c);
+          depth[here] = density[here] * step + before;
+        }
+      }
+    }
+    // Trilinear lookup at each sphere centre, minus half of the centre cell's own step and the
+    // shoot's own sphere (a ray from its centre crosses one radius of it).
+    for (std::size_t i = 0; i < spheres.size(); ++i) {
+      const LeafSphere& own = spheres[i];
+      glm::vec3 g = (own.center - lo) / cell - 0.5f;
+      int x = static_cast<int>(std::floor(g.x)), y = static_cast<int>(std::floor(g.y)),
+          z = static_cast<int>(std::floor(g.z));
+      float tx = g.x - static_cast<float>(x), ty = g.y - static_cast<float>(y),
+            tz = g.z - static_cast<float>(z);
+      float sum = 0.0f;
+      for (int corner = 0; corner < 8; ++corner) {
+        int cx = std::min(n[0] - 1, std::max(0, x + (corner & 1)));
+        int cy = std::min(n[1] - 1, std::max(0, y + ((corner >> 1) & 1)));
+        int cz = std::min(n[2] - 1, std::max(0, z + ((corner >> 2) & 1)));
+        float w = ((corner & 1) ? tx : 1 - tx) * (((corner >> 1) & 1) ? ty : 1 - ty) *
+                  (((corner >> 2) & 1) ? tz : 1 - tz);
+        sum += w * (depth[index(cx, cy, cz)] - 0.5f * density[index(cx, cy, cz)] * step);
+      }
+      float own_depth = Extinction(opacity, own.radius) * own.radius;
+      transmittance[i * directions + k] = std::exp(-std::max(0.0f, sum - own_depth));
+    }
+  }
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    result[i] = Resolve(sky, &transmittance[i * directions]);
   }
   return result;
 }

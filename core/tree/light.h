@@ -22,7 +22,7 @@ struct LightSample {
   glm::vec3 direction;  // v_L: unit resultant direction of the received light
 };
 
-// 16 overcast directions (Fibonacci spiral, weights ∝ cos zenith) plus the sun.
+// 16 overcast directions (equal-area Fibonacci spiral, CIE overcast radiance) plus the sun.
 Sky MakeSky(float sun_elevation_deg, float sun_azimuth_deg, float sun_weight);
 
 // Exact pairwise reference, O(n² · directions): light at each sphere's centre from every other
