@@ -142,12 +142,33 @@ std::string StatsJson(const Tree& tree, const GrowthTimings& t) {
   return j.dump();
 }
 
+// SVG-only drawing options of 'tree grow' (used by scripts/figures).
+void AddSvgOptions(CLI::App* cmd, SvgOptions* o) {
+  cmd->add_option("--svg-width", o->width, "SVG width in pixels, 100..10000 (default 600)");
+  cmd->add_option("--svg-height", o->height, "SVG height in pixels, 100..10000 (default 600)");
+  cmd->add_option("--svg-leaves", o->leaves, "SVG: draw leaves, 0 or 1 (default 1)");
+  cmd->add_option("--svg-flowers", o->flowers, "SVG: draw flowers, 0 or 1 (default 1)");
+  cmd->add_option("--caption", o->caption, "SVG: text under the tree");
+}
+
+void CheckSvgOptions(const SvgOptions& o, CLI::App* cmd, const std::string& ext) {
+  for (const char* name : {"--svg-width", "--svg-height", "--svg-leaves", "--svg-flowers",
+                           "--caption"}) {
+    if (cmd->count(name) && ext != ".svg") {
+      throw BadInput{std::string(name) + ": only applies with --out FILE.svg"};
+    }
+  }
+  if (o.width < 100 || o.width > 10000) throw BadInput{"--svg-width: must be in [100, 10000]"};
+  if (o.height < 100 || o.height > 10000) throw BadInput{"--svg-height: must be in [100, 10000]"};
+}
+
 int RunGrow(const GrowOptions& options, CLI::App* cmd, const std::string& out_path, bool stats,
-            std::ostream& out) {
+            const SvgOptions& svg, std::ostream& out) {
   std::string ext = Extension(out_path);
   if (!out_path.empty() && ext != ".glb" && ext != ".json" && ext != ".svg") {
     throw BadInput{"--out: '" + out_path + "' must end in .glb, .json or .svg"};
   }
+  CheckSvgOptions(svg, cmd, ext);
   GrowRequest request = ResolveGrowRequest(options, cmd);
   GrowthTimings timings;
   Tree tree = GrowTree(request, &timings);
@@ -156,7 +177,7 @@ int RunGrow(const GrowOptions& options, CLI::App* cmd, const std::string& out_pa
     if (ext == ".json") {
       bytes = TreeToJson(tree);
     } else if (ext == ".svg") {
-      bytes = TreeToSvg(tree);
+      bytes = TreeToSvg(tree, svg);
     } else {
       std::vector<unsigned char> glb;
       std::string error = WriteGlb(BuildTreeMesh(tree), &glb);
@@ -212,6 +233,8 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   grow->add_option("--out", out_path,
                    "Write the tree: .glb (binary glTF), .json or .svg (side view)");
   grow->add_flag("--stats", stats, "Print one JSON object of statistics on stdout");
+  SvgOptions svg_options;
+  AddSvgOptions(grow, &svg_options);
 
   try {
     // Name unknown commands ourselves: CLI11 would only say that a subcommand is required.
@@ -245,7 +268,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       }
       return 0;
     }
-    if (*grow) return RunGrow(grow_options, grow, out_path, stats, out);
+    if (*grow) return RunGrow(grow_options, grow, out_path, stats, svg_options, out);
   } catch (const CLI::CallForHelp&) {
     out << app.help();  // CLI11 delegates to the innermost selected subcommand
     return 0;

@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+
+#include "math/det_math.h"
 #include <glm/vec3.hpp>
 
 namespace niwa {
@@ -12,7 +14,7 @@ inline float Radians(float degrees) { return degrees * (kPi / 180.0f); }
 
 // Rodrigues rotation of v about the unit axis by angle (radians).
 inline glm::vec3 RotateAbout(const glm::vec3& v, const glm::vec3& axis, float angle) {
-  float c = std::cos(angle), s = std::sin(angle);
+  float c = det::Cosf(angle), s = det::Sinf(angle);
   return v * c + glm::cross(axis, v) * s + axis * (glm::dot(axis, v) * (1.0f - c));
 }
 
@@ -26,7 +28,7 @@ inline glm::vec3 AnyPerpendicular(const glm::vec3& v) {
 inline float AngleBetween(const glm::vec3& a, const glm::vec3& b) {
   float d = glm::dot(a, b);
   d = d > 1.0f ? 1.0f : (d < -1.0f ? -1.0f : d);
-  return std::acos(d);
+  return det::Acosf(d);
 }
 
 // Rotates unit v by angle (radians) in the plane of v and unit target, towards target

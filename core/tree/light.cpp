@@ -13,7 +13,7 @@ constexpr int kSkyDirections = 16;
 
 // Extinction per cm inside a sphere: a ray through the whole diameter keeps (1 - opacity).
 float Extinction(float opacity, float radius) {
-  return -std::log(1.0f - opacity) / (2.0f * radius);
+  return -det::Logf(1.0f - opacity) / (2.0f * radius);
 }
 
 // Length of the ray origin + t·dir, t > 0, inside the sphere.
@@ -59,7 +59,7 @@ Sky MakeSky(float sun_elevation_deg, float sun_azimuth_deg, float sun_weight) {
     float y = 1.0f - (static_cast<float>(i) + 0.5f) / kSkyDirections;
     float ring = std::sqrt(1.0f - y * y);
     float angle = golden * static_cast<float>(i);
-    sky.directions.push_back(glm::vec3(ring * std::cos(angle), y, ring * std::sin(angle)));
+    sky.directions.push_back(glm::vec3(ring * det::Cosf(angle), y, ring * det::Sinf(angle)));
     // CIE standard overcast sky: radiance ∝ (1 + 2 sin(elevation)) / 3. A leaf sphere receives
     // radiance × solid angle from every side (no cosine factor, unlike a horizontal surface).
     float weight = (1.0f + 2.0f * y) / 3.0f;
@@ -68,8 +68,8 @@ Sky MakeSky(float sun_elevation_deg, float sun_azimuth_deg, float sun_weight) {
   }
   for (float& w : sky.weights) w *= (1.0f - sun_weight) / total;
   float elevation = Radians(sun_elevation_deg), azimuth = Radians(sun_azimuth_deg);
-  sky.directions.push_back(glm::vec3(std::cos(elevation) * std::cos(azimuth), std::sin(elevation),
-                                     std::cos(elevation) * std::sin(azimuth)));
+  sky.directions.push_back(glm::vec3(det::Cosf(elevation) * det::Cosf(azimuth), det::Sinf(elevation),
+                                     det::Cosf(elevation) * det::Sinf(azimuth)));
   sky.weights.push_back(sun_weight);
   return sky;
 }
@@ -86,7 +86,7 @@ std::vector<LightSample> ComputeLightReference(const std::vector<LeafSphere>& sp
         float chord = ChordLength(spheres[i].center, sky.directions[k], spheres[j]);
         if (chord > 0.0f) depth += Extinction(opacity, spheres[j].radius) * chord;
       }
-      transmittance[k] = std::exp(-depth);
+      transmittance[k] = det::Expf(-depth);
     }
     result[i] = Resolve(sky, transmittance.data());
   }
@@ -108,40 +108,54 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
   glm::vec3 extent = hi - lo;
   float longest = std::max(extent.x, std::max(extent.y, extent.z));
   float cell = std::max(0.5f * radius_sum / static_cast<float>(spheres.size()), longest / 48.0f);
+  // Interior cells 1..n per axis inside a border of empty cells, so sweeps need no bounds checks.
   const int n[3] = {std::max(1, static_cast<int>(std::ceil(extent.x / cell))),
                     std::max(1, static_cast<int>(std::ceil(extent.y / cell))),
                     std::max(1, static_cast<int>(std::ceil(extent.z / cell)))};
-  auto index = [&](int x, int y, int z) {
-    return (static_cast<std::size_t>(z) * static_cast<std::size_t>(n[1]) +
-            static_cast<std::size_t>(y)) * static_cast<std::size_t>(n[0]) +
-           static_cast<std::size_t>(x);
+  const std::ptrdiff_t stride[3] = {1, n[0] + 2, static_cast<std::ptrdiff_t>(n[0] + 2) * (n[1] + 2)};
+  const std::size_t volume = static_cast<std::size_t>(stride[2]) * static_cast<std::size_t>(n[2] + 2);
+  auto index = [&](int x, int y, int z) {  // interior coordinates 0..n-1
+    return static_cast<std::size_t>((x + 1) * stride[0] + (y + 1) * stride[1] + (z + 1) * stride[2]);
   };
-  std::vector<float> density(static_cast<std::size_t>(n[0]) * n[1] * n[2], 0.0f);
-  // Rasterize: every voxel whose centre lies in a sphere gets that sphere's extinction.
+  std::vector<float> density(volume, 0.0f);
+  // Rasterize, conserving each sphere's extinction mass σ·V: spread over the voxels whose centres lie
+  // inside it, or put in the voxel of its centre when it is smaller than a cell and hits none.
+  std::vector<std::size_t> covered;
+  const float cell_volume = cell * cell * cell;
   for (const LeafSphere& s : spheres) {
     float sigma = Extinction(opacity, s.radius);
+    float mass = sigma * (4.0f / 3.0f) * static_cast<float>(det::kPi) * s.radius * s.radius * s.radius;
     glm::vec3 a = (s.center - glm::vec3(s.radius) - lo) / cell;
     glm::vec3 b = (s.center + glm::vec3(s.radius) - lo) / cell;
     int x0 = std::max(0, static_cast<int>(a.x)), x1 = std::min(n[0] - 1, static_cast<int>(b.x));
     int y0 = std::max(0, static_cast<int>(a.y)), y1 = std::min(n[1] - 1, static_cast<int>(b.y));
     int z0 = std::max(0, static_cast<int>(a.z)), z1 = std::min(n[2] - 1, static_cast<int>(b.z));
     float r2 = s.radius * s.radius;
+    covered.clear();
     for (int z = z0; z <= z1; ++z) {
       for (int y = y0; y <= y1; ++y) {
         for (int x = x0; x <= x1; ++x) {
           glm::vec3 p = lo + (glm::vec3(x, y, z) + 0.5f) * cell;
           glm::vec3 d = p - s.center;
-          if (glm::dot(d, d) <= r2) density[index(x, y, z)] += sigma;
+          if (glm::dot(d, d) <= r2) covered.push_back(index(x, y, z));
         }
       }
     }
+    if (covered.empty()) {
+      glm::vec3 g = (s.center - lo) / cell;
+      covered.push_back(index(std::min(n[0] - 1, static_cast<int>(g.x)),
+                              std::min(n[1] - 1, static_cast<int>(g.y)),
+                              std::min(n[2] - 1, static_cast<int>(g.z))));
+    }
+    float each = mass / (static_cast<float>(covered.size()) * cell_volume);
+    for (std::size_t at : covered) density[at] += each;
   }
 
   // Shadow propagation, one direction at a time: depth(v) = σ(v)·s + depth(v + d·s), swept along the
   // dominant axis of d so that v + d·s lies on the slice swept just before (bilinear there).
-  std::vector<float> depth(density.size());
-  std::vector<float> transmittance(spheres.size() * sky.directions.size());
+  std::vector<float> depth(volume, 0.0f);
   const std::size_t directions = sky.directions.size();
+  std::vector<float> transmittance(spheres.size() * directions);
   for (std::size_t k = 0; k < directions; ++k) {
     const glm::vec3& d = sky.directions[k];
     const float comp[3] = {d.x, d.y, d.z};
@@ -151,56 +165,55 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     }
     const int u = (axis + 1) % 3, v = (axis + 2) % 3;
     const float along = std::fabs(comp[axis]);
-    const float step = cell / along;                    // path length between slices
-    const float du = comp[u] / along, dv = comp[v] / along;  // offset in cells on the next slice
-    const int sign = comp[axis] > 0 ? 1 : -1;
-    const int iu = static_cast<int>(std::floor(du)), iv = static_cast<int>(std::floor(dv));
+    const float step = cell / along;  // path length between two slices
+    // Offset (in cells) of the upstream point on the neighbouring slice: |du|, |dv| <= 1.
+    const float du = comp[u] / along, dv = comp[v] / along;
+    const int iu = du >= 1.0f ? 0 : static_cast<int>(std::floor(du));
+    const int iv = dv >= 1.0f ? 0 : static_cast<int>(std::floor(dv));
     const float fu = du - static_cast<float>(iu), fv = dv - static_cast<float>(iv);
-    int coord[3];
-    auto at = [&](int a, int b, int c) {  // axis, u, v coordinates -> index
-      coord[axis] = a;
-      coord[u] = b;
-      coord[v] = c;
-      return index(coord[0], coord[1], coord[2]);
-    };
-    auto upstream = [&](int a, int b, int c) -> float {  // depth on slice a, 0 outside the grid
-      if (a < 0 || a >= n[axis] || b < 0 || b >= n[u] || c < 0 || c >= n[v]) return 0.0f;
-      return depth[at(a, b, c)];
-    };
-    const int first = sign > 0 ? n[axis] - 1 : 0;
-    for (int a = first; a >= 0 && a < n[axis]; a -= sign) {
-      const int up = a + sign;
-      for (int c = 0; c < n[v]; ++c) {
-        for (int b = 0; b < n[u]; ++b) {
-          float before = (1 - fu) * (1 - fv) * upstream(up, b + iu, c + iv) +
-                         fu * (1 - fv) * upstream(up, b + iu + 1, c + iv) +
-                         (1 - fu) * fv * upstream(up, b + iu, c + iv + 1) +
-                         fu * fv * upstream(up, b + iu + 1, c + iv + 1);
-          std::size_t here = at(a, b, c);
-          depth[here] = density[here] * step + before;
+    const float w00 = (1 - fu) * (1 - fv), w10 = fu * (1 - fv), w01 = (1 - fu) * fv, w11 = fu * fv;
+    const int sign = comp[axis] > 0 ? 1 : -1;
+    const std::ptrdiff_t up = sign * stride[axis] + iu * stride[u] + iv * stride[v];
+    const std::ptrdiff_t su = stride[u], sv = stride[v];
+    float* out = depth.data();
+    const float* sigma = density.data();
+    const int first = sign > 0 ? n[axis] : 1;  // padded slice coordinates 1..n
+    for (int a = first; a >= 1 && a <= n[axis]; a -= sign) {
+      for (int c = 1; c <= n[v]; ++c) {
+        std::ptrdiff_t row = a * stride[axis] + c * sv;
+        for (int b = 1; b <= n[u]; ++b) {
+          std::ptrdiff_t here = row + b * su, there = here + up;
+          out[here] = sigma[here] * step + w00 * out[there] + w10 * out[there + su] +
+                      w01 * out[there + sv] + w11 * out[there + su + sv];
         }
       }
     }
-    // Trilinear lookup at each sphere centre, minus half of the centre cell's own step and the
-    // shoot's own sphere (a ray from its centre crosses one radius of it).
+    // Trilinear lookup at each sphere centre, minus half of each cell's own step and the shoot's
+    // own sphere (a ray from its centre crosses one radius of it).
     for (std::size_t i = 0; i < spheres.size(); ++i) {
       const LeafSphere& own = spheres[i];
       glm::vec3 g = (own.center - lo) / cell - 0.5f;
-      int x = static_cast<int>(std::floor(g.x)), y = static_cast<int>(std::floor(g.y)),
-          z = static_cast<int>(std::floor(g.z));
-      float tx = g.x - static_cast<float>(x), ty = g.y - static_cast<float>(y),
-            tz = g.z - static_cast<float>(z);
+      int x = std::min(n[0] - 2, std::max(0, static_cast<int>(std::floor(g.x))));
+      int y = std::min(n[1] - 2, std::max(0, static_cast<int>(std::floor(g.y))));
+      int z = std::min(n[2] - 2, std::max(0, static_cast<int>(std::floor(g.z))));
+      x = std::max(0, x);
+      y = std::max(0, y);
+      z = std::max(0, z);
+      float tx = std::min(1.0f, std::max(0.0f, g.x - static_cast<float>(x)));
+      float ty = std::min(1.0f, std::max(0.0f, g.y - static_cast<float>(y)));
+      float tz = std::min(1.0f, std::max(0.0f, g.z - static_cast<float>(z)));
+      std::size_t base = index(x, y, z);
       float sum = 0.0f;
       for (int corner = 0; corner < 8; ++corner) {
-        int cx = std::min(n[0] - 1, std::max(0, x + (corner & 1)));
-        int cy = std::min(n[1] - 1, std::max(0, y + ((corner >> 1) & 1)));
-        int cz = std::min(n[2] - 1, std::max(0, z + ((corner >> 2) & 1)));
+        std::size_t at = base + static_cast<std::size_t>((corner & 1) * stride[0] +
+                                                         ((corner >> 1) & 1) * stride[1] +
+                                                         ((corner >> 2) & 1) * stride[2]);
         float w = ((corner & 1) ? tx : 1 - tx) * (((corner >> 1) & 1) ? ty : 1 - ty) *
                   (((corner >> 2) & 1) ? tz : 1 - tz);
-        sum += w * (depth[index(cx, cy, cz)] - 0.5f * density[index(cx, cy, cz)] * step);
+        sum += w * (depth[at] - 0.5f * density[at] * step);
       }
       float own_depth = Extinction(opacity, own.radius) * own.radius;
-      transmittance[i * directions + k] = std::exp(-std::max(0.0f, sum - own_depth));
+      transmittance[i * directions + k] = det::Expf(-std::max(0.0f, sum - own_depth));
     }
   }
   for (std::size_t i = 0; i < spheres.size(); ++i) {

@@ -84,7 +84,7 @@ glm::vec3 TransportNormal(const glm::vec3& normal, const glm::vec3& from, const 
   float s = glm::length(axis);
   float c = glm::dot(from, to);
   glm::vec3 moved = normal;
-  if (s > kEpsilon) moved = RotateAbout(normal, axis / s, std::atan2(s, c));
+  if (s > kEpsilon) moved = RotateAbout(normal, axis / s, det::Atan2f(s, c));
   return Orthonormalize(moved, to);
 }
 
@@ -132,7 +132,7 @@ void AddBranchTube(const Tree& tree, const Branch& branch, float v_start,
     for (int j = 0; j <= sides; ++j) {
       float angle = 2.0f * kPi * static_cast<float>(j % sides) / static_cast<float>(sides);
       glm::vec3 radial =
-          SafeNormalize(normal * std::cos(angle) + binormal * std::sin(angle), normal);
+          SafeNormalize(normal * det::Cosf(angle) + binormal * det::Sinf(angle), normal);
       PushVertex(&bark, center + radial * radius, radial,
                  static_cast<float>(j) / static_cast<float>(sides), (*node_v)[i]);
       out->bark_branch_id.push_back(id);
@@ -155,7 +155,7 @@ void AddBranchTube(const Tree& tree, const Branch& branch, float v_start,
   out->bark_branch_id.push_back(id);
   for (int j = 0; j < sides; ++j) {
     float angle = 2.0f * kPi * static_cast<float>(j) / static_cast<float>(sides);
-    float c = std::cos(angle), s = std::sin(angle);
+    float c = det::Cosf(angle), s = det::Sinf(angle);
     PushVertex(&bark, tip_center + (normal * c + binormal * s) * cap_radius, tip_tangent,
                0.5f + 0.5f * c, 0.5f + 0.5f * s);
     out->bark_branch_id.push_back(id);
@@ -217,7 +217,7 @@ void AddFlower(const Branch& branch, int node, const MeshOptions& options, MeshB
     for (int k = 0; k < kOutline; ++k) {
       float angle = 2.0f * kPi * static_cast<float>(k) / static_cast<float>(kOutline);
       float r = (k % 2 == 0) ? kFlowerOuterRadius : kFlowerInnerRadius;
-      float c = std::cos(angle) * r, s = std::sin(angle) * r;
+      float c = det::Cosf(angle) * r, s = det::Sinf(angle) * r;
       PushVertex(flowers, center + (a * c + b * s) * scale, normal,
                  0.5f + 0.5f * c / kFlowerOuterRadius, 0.5f + 0.5f * s / kFlowerOuterRadius);
     }

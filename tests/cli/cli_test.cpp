@@ -136,6 +136,26 @@ TEST(Cli, WritesJsonAndSvg) {
   }
 }
 
+TEST(Cli, SvgOptionsChangeTheDrawing) {
+  std::string path = TempPath("options.svg");
+  Result r = RunNiwa({"tree", "grow", "--preset", "binary", "--years", "4", "--out", path,
+                      "--svg-width", "300", "--svg-height", "200", "--svg-leaves", "0",
+                      "--caption", "(a) P<1"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::stringstream content;
+  content << std::ifstream(path).rdbuf();
+  EXPECT_NE(content.str().find("width=\"300\" height=\"200\""), std::string::npos);
+  EXPECT_EQ(content.str().find("stroke=\"#3f8f3a\""), std::string::npos);  // no leaf group
+  EXPECT_NE(content.str().find("(a) P&lt;1</text>"), std::string::npos);
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--svg-width", "300", "--out", TempPath("t.json")}),
+                     "--svg-width: only applies with --out FILE.svg");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--caption", "x"}), "--caption: only applies");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--svg-width", "5", "--out", path}),
+                     "--svg-width: must be in [100, 10000]");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--svg-leaves", "maybe", "--out", path}),
+                     "--svg-leaves");
+}
+
 TEST(Cli, UrlGrowsTheSameTreeAsTheFlags) {
   Result flags = RunNiwa({"tree", "grow", "--preset", "keyaki", "--years", "7", "--seed", "3",
                           "--set", "gamma=0.3", "--prune", "6:b2", "--stats"});
