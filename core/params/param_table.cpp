@@ -89,8 +89,10 @@ const std::array<ParamSpec, kParamCount> kTable = {{
      "Elevation of the sun above the horizon."},
     {P::kSunAzimuth, "sun_azimuth", "", "deg", 0, -180, 180, false, "light",
      "Azimuth of the sun, from +x towards +z."},
-    {P::kSunWeight, "sun_weight", "", "", 0.3, 0, 1, false, "light",
+    {P::kSunWeight, "sun_weight", "", "", 0.1, 0, 1, false, "light",
      "Share of the light that comes from the sun; the rest is the overcast sky."},
+    {P::kSkyZenithRatio, "sky_zenith_ratio", "", "", 1, 1, 3, false, "light",
+     "Sky radiance at the zenith over that at the horizon: 1 uniform sky, 3 CIE overcast sky."},
 
     {P::kBLLow, "b_L_low", "b_L", "", 0.12, 0, 1, false, "bending",
      "Phototropism rate at hormone 0 (fig. 2.6)."},

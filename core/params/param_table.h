@@ -51,6 +51,7 @@ enum class ParamId : int {
   kSunElevation,
   kSunAzimuth,
   kSunWeight,
+  kSkyZenithRatio,
   // bending (thesis 2.4.3, eqs. 2.4-2.9)
   kBLLow,
   kBLHigh,

@@ -203,7 +203,8 @@ void Grower::ComputeLight() {
   }
   Sky sky = MakeSky(static_cast<float>(p.Get(ParamId::kSunElevation)),
                     static_cast<float>(p.Get(ParamId::kSunAzimuth)),
-                    static_cast<float>(p.Get(ParamId::kSunWeight)));
+                    static_cast<float>(p.Get(ParamId::kSunWeight)),
+                    static_cast<float>(p.Get(ParamId::kSkyZenithRatio)));
   std::vector<LightSample> samples =
       ComputeLightGrid(spheres, sky, static_cast<float>(p.Get(ParamId::kSphereOpacity)));
   float k = static_cast<float>(p.Get(ParamId::kKDeath));

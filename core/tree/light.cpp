@@ -38,10 +38,9 @@ LightSample Resolve(const Sky& sky, const float* transmittance) {
   for (std::size_t k = 0; k < sky.directions.size(); ++k) {
     float received = sky.weights[k] * transmittance[k];
     light += received;
-    // Compare radiance (received per unit weight), so the sun is not favoured for its weight alone.
-    float radiance = transmittance[k];
-    if (radiance > strongest) {
-      strongest = radiance;
+    // Strongest received light: the sun when it is not shaded, else the brightest open patch of sky.
+    if (received > strongest) {
+      strongest = received;
       direction = sky.directions[k];
     }
   }
@@ -50,19 +49,20 @@ LightSample Resolve(const Sky& sky, const float* transmittance) {
 
 }  // namespace
 
-Sky MakeSky(float sun_elevation_deg, float sun_azimuth_deg, float sun_weight) {
+Sky MakeSky(float sun_elevation_deg, float sun_azimuth_deg, float sun_weight, float zenith_ratio) {
   Sky sky;
   float total = 0.0f;
   const float golden = kPi * (3.0f - std::sqrt(5.0f));
   for (int i = 0; i < kSkyDirections; ++i) {
-    // Fibonacci points on the upper hemisphere (equal solid angle each), y up.
-    float y = 1.0f - (static_cast<float>(i) + 0.5f) / kSkyDirections;
+    // Fibonacci points on the upper hemisphere (about equal solid angle each), y up, the first at
+    // the zenith so that an unshaded shoot's strongest sky light is straight up.
+    float y = 1.0f - static_cast<float>(i) / kSkyDirections;
     float ring = std::sqrt(1.0f - y * y);
     float angle = golden * static_cast<float>(i);
     sky.directions.push_back(glm::vec3(ring * det::Cosf(angle), y, ring * det::Sinf(angle)));
-    // CIE standard overcast sky: radiance ∝ (1 + 2 sin(elevation)) / 3. A leaf sphere receives
+    // Radiance 1 + (zenith_ratio - 1)·sin(elevation) (CIE overcast: ratio 3). A leaf sphere receives
     // radiance × solid angle from every side (no cosine factor, unlike a horizontal surface).
-    float weight = (1.0f + 2.0f * y) / 3.0f;
+    float weight = 1.0f + (zenith_ratio - 1.0f) * y;
     sky.weights.push_back(weight);
     total += weight;
   }

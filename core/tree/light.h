@@ -22,8 +22,10 @@ struct LightSample {
   glm::vec3 direction;  // v_L: unit resultant direction of the received light
 };
 
-// 16 overcast directions (equal-area Fibonacci spiral, CIE overcast radiance) plus the sun.
-Sky MakeSky(float sun_elevation_deg, float sun_azimuth_deg, float sun_weight);
+// 16 sky directions (Fibonacci spiral from the zenith) plus the sun. Sky radiance rises linearly
+// in sin(elevation) from 1 at the horizon to zenith_ratio (1: uniform, 3: CIE overcast sky).
+Sky MakeSky(float sun_elevation_deg, float sun_azimuth_deg, float sun_weight,
+            float zenith_ratio = 1.0f);
 
 // Exact pairwise reference, O(n² · directions): light at each sphere's centre from every other
 // sphere.
