@@ -13,10 +13,12 @@ void RegisterAll() {
     // Prepared on first use and kept, since Google Benchmark calls the function several times.
     auto body = std::make_shared<WorkloadBody>();
     const Workload* workload = &w;
-    benchmark::RegisterBenchmark(w.name.c_str(), [workload, body](benchmark::State& state) {
+    benchmark::internal::Benchmark* bench = benchmark::RegisterBenchmark(w.name.c_str(), [workload, body](benchmark::State& state) {
       if (!*body) *body = workload->prepare();
       for (auto _ : state) benchmark::DoNotOptimize((*body)());
-    })->Unit(benchmark::kMillisecond);
+    });
+    bench->Unit(benchmark::kMillisecond);
+    if (w.once) bench->Iterations(1);  // slow: one timed run
   }
 }
 

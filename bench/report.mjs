@@ -59,7 +59,49 @@ if (peer.length) {
   }
 }
 
-const out = `${table}\n${peerTable ? peerTable + '\n' : ''}${notes.map((n) => `- ${n}`).join('\n')}\n`;
+// Speed goals of the growth-model issue, each against the measured number (pass / MISSED).
+const goals = [];
+const goal = (what, value, ok) => goals.push(`| ${what} | ${value} | ${ok === undefined ? '—' : ok ? 'met' : '**missed**'} |`);
+const ms = (map, name) => map.get(name)?.ms;
+for (const name of ['grow/sakura-15y', 'grow/keyaki-15y', 'grow/tsutsuji-15y']) {
+  const n = ms(native, name), w = ms(wasm, name);
+  if (n !== undefined) goal(`${name}: native ≤ 20 ms`, `${fmt(n)} ms`, n <= 20);
+  if (n !== undefined && w !== undefined) goal(`${name}: WASM ≤ 2× native`, `${(w / n).toFixed(2)}×`, w <= 2 * n);
+}
+const m10 = native.get('grow/maple-10y'), m20 = native.get('grow/maple-20y'), m40 = native.get('grow/maple-40y');
+if (m10 && m20 && m40) {
+  for (const [a, b] of [[m10, m20], [m20, m40]]) {
+    const size = b.check / a.check, time = b.ms / a.ms;
+    const perDoubling = Math.pow(time, 1 / Math.log2(size));
+    goal(`${a.workload} → ${b.workload}: time per doubling of the tree ≤ 2.5×`,
+         `internodes ×${size.toFixed(1)}, time ×${time.toFixed(1)}: ${perDoubling.toFixed(2)}× per doubling`, perDoubling <= 2.5);
+  }
+}
+const big = native.get('grow/sakura-20y');
+if (big) goal(`100,000-internode tree (sakura 20 years, ${big.check} internodes) < 1 s native`, `${fmt(big.ms)} ms`, big.ms < 1000);
+const g20 = ms(native, 'light/grid-20000'), r20 = ms(native, 'light/reference-20000');
+if (g20 && r20) goal('light at 20,000 spheres: grid ≥ 50× faster than the reference (native)', `${(r20 / g20).toFixed(0)}×`, r20 / g20 >= 50);
+const gm = ms(wasm, 'grow+mesh/sakura-15y');
+if (gm && peer.length) {
+  goal(`sakura 15 years grown + meshed in WASM faster than ez-tree ${peer[0].workload}`,
+       `${fmt(gm)} ms vs ${fmt(peer[0].ms)} ms: ${(gm / peer[0].ms).toFixed(2)}× its time`, gm < peer[0].ms);
+}
+const goalsTable = goals.length ? `| goal | measured | |\n|---|---|---|\n${goals.join('\n')}\n` : '';
+
+// Per-sub-model split like thesis table 2.3, from the CLI's --stats (native).
+let splitTable = '';
+if (args.split) {
+  const rows = readLines(args.split);
+  if (rows.length) {
+    splitTable = '| preset (15 years) | internodes | branching | light | hormone | total ms |\n|---|--:|--:|--:|--:|--:|\n' +
+      rows.map((r) => `| ${r.preset} | ${r.internodes} | ${(100 * r.ms_branching / r.ms).toFixed(1)} % | ` +
+        `${(100 * r.ms_light / r.ms).toFixed(1)} % | ${(100 * r.ms_hormone / r.ms).toFixed(1)} % | ${fmt(r.ms)} |`).join('\n') + '\n';
+  }
+}
+
+const out = `${table}\n${peerTable ? peerTable + '\n' : ''}${notes.map((n) => `- ${n}`).join('\n')}\n` +
+  (goalsTable ? `\n### Speed goals\n\n${goalsTable}` : '') +
+  (splitTable ? `\n### Time per sub-model (like thesis table 2.3; native CLI --stats, one run)\n\n${splitTable}` : '');
 process.stdout.write(out);
 
 if (args.record) {
@@ -86,7 +128,8 @@ ${out}
 Workloads:
 
 - \`grow/<preset>-<N>y\`: \`GrowTree\` of a preset with its parameters for N years, seed 1 (every
-  preset at its default age, plus sakura at 10, 20 and 30 years; 40 years would take about 4 s natively).
+  preset at its default age, plus sakura at 10 and 20 years and maple at 10, 20 and 40 years for scaling).
+- `grow+mesh/sakura-15y`: `GrowTree` then `BuildTreeMesh`, the job compared with ez-tree.
 - \`mesh/sakura-15y\`: \`BuildTreeMesh\` of the sakura 15-year tree (grown untimed).
 - \`glb/sakura-15y\`: \`WriteGlb\` of that mesh into memory.
 - Native \`glb/sakura-15y\` swings between about 20 ms and 75 ms from run to run: each iteration

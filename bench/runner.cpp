@@ -65,11 +65,18 @@ double ElapsedMs(std::chrono::steady_clock::time_point start) {
 
 void Run(const Workload& w, const Options& o) {
   WorkloadBody body = w.prepare();
-  double check = body();  // warm-up
   std::vector<double> times;
   double total = 0;
-  while (static_cast<int>(times.size()) < o.min_reps ||
-         (total < o.min_ms && static_cast<int>(times.size()) < o.max_reps)) {
+  double check = 0;
+  if (w.once) {  // slow workload: one timed run is the measurement
+    auto start = std::chrono::steady_clock::now();
+    check = body();
+    times.push_back(ElapsedMs(start));
+  } else {
+    check = body();  // warm-up
+  }
+  while (!w.once && (static_cast<int>(times.size()) < o.min_reps ||
+                     (total < o.min_ms && static_cast<int>(times.size()) < o.max_reps))) {
     auto start = std::chrono::steady_clock::now();
     double c = body();
     double ms = ElapsedMs(start);

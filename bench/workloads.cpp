@@ -63,27 +63,38 @@ double LightChecksum(const std::vector<LightSample>& samples) {
   return sum;
 }
 
-Workload LightWorkload(bool reference) {
-  std::string n = std::to_string(kLightSpheres);
+Workload LightWorkload(bool reference, int spheres_count = kLightSpheres) {
+  std::string n = std::to_string(spheres_count);
   return {reference ? "light/reference-" + n : "light/grid-" + n,
           reference ? "ComputeLightReference (pairwise), " + n + " random spheres"
                     : "ComputeLightGrid (voxel grid), " + n + " random spheres",
-          [reference]() -> WorkloadBody {
-            auto spheres = std::make_shared<std::vector<LeafSphere>>(RandomSpheres(kLightSpheres));
+          [reference, spheres_count]() -> WorkloadBody {
+            auto spheres = std::make_shared<std::vector<LeafSphere>>(RandomSpheres(spheres_count));
             auto sky = std::make_shared<Sky>(MakeSky(60.0f, 0.0f, 0.3f));
             return [spheres, sky, reference]() {
               return LightChecksum(reference ? ComputeLightReference(*spheres, *sky, 0.5f)
                                              : ComputeLightGrid(*spheres, *sky, 0.5f));
             };
-          }};
+          },
+          reference && spheres_count > kLightSpheres};
 }
 
 std::vector<Workload> MakeWorkloads() {
   std::vector<Workload> all;
   for (const Preset& p : Presets()) all.push_back(GrowWorkload(p, p.years));
-  for (int years : {10, 20, 30}) {
+  for (int years : {10, 20}) {  // sakura 20 years: about 120,000 internodes
     if (years != Sakura().years) all.push_back(GrowWorkload(Sakura(), years));
   }
+  // Scaling with the number of leaves (issue: at most 2.5x time per doubling of leaves).
+  for (int years : {10, 20, 40}) all.push_back(GrowWorkload(*FindPreset("maple"), years));
+  all.push_back({"grow+mesh/sakura-15y", "GrowTree and BuildTreeMesh of sakura 15 years", [] {
+                   return WorkloadBody([]() {
+                     TreeMesh mesh = BuildTreeMesh(GrowTree(PresetRequest(Sakura(), 15)));
+                     return static_cast<double>(mesh.bark.indices.size() / 3 +
+                                                mesh.leaves.indices.size() / 3 +
+                                                mesh.flowers.indices.size() / 3);
+                   });
+                 }});
   all.push_back({"mesh/sakura-15y", "BuildTreeMesh of sakura 15 years (tree grown untimed)", [] {
                    auto tree = std::make_shared<Tree>(GrowTree(PresetRequest(Sakura(), 15)));
                    return WorkloadBody([tree]() {
@@ -105,6 +116,8 @@ std::vector<Workload> MakeWorkloads() {
        }});
   all.push_back(LightWorkload(false));
   all.push_back(LightWorkload(true));
+  all.push_back(LightWorkload(false, 20000));
+  all.push_back(LightWorkload(true, 20000));  // about half a minute: timed once
   return all;
 }
 

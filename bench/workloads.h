@@ -17,6 +17,7 @@ struct Workload {
   std::string note;  // one line: what is timed
   // Untimed setup (grow the tree to mesh, make the spheres, ...); returns the timed body.
   std::function<WorkloadBody()> prepare;
+  bool once = false;  // slow (tens of seconds): timed once, without warm-up or repeats
 };
 
 // Every workload, in table order.

@@ -16,7 +16,9 @@ endif()
 set(NIWA_THIRD_PARTY_INCLUDES ${NIWA_SYSINC})
 
 # C++ exceptions (nlohmann-json, CLI11, GoogleTest) as real WASM exceptions.
-add_compile_options(-fwasm-exceptions)
+# SIMD128 auto-vectorization: lane-wise IEEE operations, no reassociation (no fast-math), so the
+# results stay identical to the native build.
+add_compile_options(-fwasm-exceptions -msimd128)
 add_link_options(-fwasm-exceptions -sALLOW_MEMORY_GROWTH=1)
 
 # Programs that run under node (CLI, tests, benchmarks): synchronous compile (gotcha 4) and the real

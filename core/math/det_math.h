@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace niwa {
 namespace det {
@@ -10,10 +12,18 @@ namespace det {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kLn2 = 0.69314718055994530942;
 
+// 2^k for -1022 <= k <= 1023, built from its bit pattern (exact).
+inline double Pow2(int k) {
+  uint64_t bits = static_cast<uint64_t>(k + 1023) << 52;
+  double out;
+  std::memcpy(&out, &bits, sizeof out);
+  return out;
+}
+
 // e^x for |x| < ~700: x = k·ln2 + r, |r| <= ln2/2, Taylor series of e^r (error < 1e-15 relative).
 inline double Exp(double x) {
   if (x < -700.0) return 0.0;
-  if (x > 700.0) x = 700.0;
+  if (x > 700.0) x = 700.0;  // |k| <= 1010: Pow2 stays in range
   double k = std::floor(x / kLn2 + 0.5);
   double r = x - k * kLn2;
   double term = 1.0, sum = 1.0;
@@ -21,7 +31,7 @@ inline double Exp(double x) {
     term *= r / i;
     sum += term;
   }
-  return std::ldexp(sum, static_cast<int>(k));  // exact scaling by 2^k
+  return sum * Pow2(static_cast<int>(k));  // exact scaling by 2^k
 }
 
 // ln x for x > 0: x = m·2^e with m in [√½, √2), ln m = 2·atanh((m-1)/(m+1)) by its series.
@@ -53,8 +63,7 @@ inline void SinCos(double x, double* s, double* c) {
     sin_r += ts;
     cos_r += tc;
   }
-  int quadrant = static_cast<int>(std::fmod(q, 4.0));
-  if (quadrant < 0) quadrant += 4;
+  int quadrant = static_cast<int>(static_cast<int64_t>(q) & 3);  // two's complement: also for q < 0
   switch (quadrant) {
     case 0: *s = sin_r; *c = cos_r; break;
     case 1: *s = cos_r; *c = -sin_r; break;

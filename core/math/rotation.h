@@ -12,10 +12,14 @@ namespace niwa {
 constexpr float kPi = 3.14159265358979323846f;
 inline float Radians(float degrees) { return degrees * (kPi / 180.0f); }
 
+// Rodrigues rotation of v about the unit axis by the angle whose cosine and sine are c and s.
+inline glm::vec3 RotateAbout(const glm::vec3& v, const glm::vec3& axis, float c, float s) {
+  return v * c + glm::cross(axis, v) * s + axis * (glm::dot(axis, v) * (1.0f - c));
+}
+
 // Rodrigues rotation of v about the unit axis by angle (radians).
 inline glm::vec3 RotateAbout(const glm::vec3& v, const glm::vec3& axis, float angle) {
-  float c = det::Cosf(angle), s = det::Sinf(angle);
-  return v * c + glm::cross(axis, v) * s + axis * (glm::dot(axis, v) * (1.0f - c));
+  return RotateAbout(v, axis, det::Cosf(angle), det::Sinf(angle));
 }
 
 // Unit vector perpendicular to unit v, stable for every v.

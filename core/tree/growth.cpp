@@ -27,7 +27,8 @@ struct NodeFrames {
   std::vector<glm::vec3> direction, azimuth;
 };
 
-NodeFrames ComputeNodeFrames(const Branch& shoot, float phi) {
+NodeFrames ComputeNodeFrames(const Branch& shoot, const std::vector<float>& turn_cos,
+                             const std::vector<float>& turn_sin) {
   NodeFrames frames;
   std::size_t n = shoot.nodes.size();
   frames.direction.resize(n, kUp);
@@ -37,7 +38,7 @@ NodeFrames ComputeNodeFrames(const Branch& shoot, float phi) {
     glm::vec3 d = glm::normalize(shoot.nodes[i] - shoot.nodes[i - 1]);
     transported = Orthonormalize(transported, d);  // parallel transport along the shoot
     frames.direction[i] = d;
-    frames.azimuth[i] = RotateAbout(transported, d, 2.0f * kPi * phi * static_cast<float>(i));
+    frames.azimuth[i] = RotateAbout(transported, d, turn_cos[i], turn_sin[i]);
   }
   return frames;
 }
@@ -61,6 +62,13 @@ float BreakProbability(float hormone, float h_short, float h_sat, float p_dwarf,
 }
 
 Grower::Grower(const GrowRequest& request) : request_(request), rng_(request.seed) {
+  // cos and sin of the phyllotaxis turn 2πϕ·i at node i (N <= 100), computed once per tree.
+  float phi = static_cast<float>(request.params.Get(ParamId::kPhi));
+  for (int i = 0; i <= 101; ++i) {
+    float angle = 2.0f * kPi * phi * static_cast<float>(i);
+    turn_cos_.push_back(det::Cosf(angle));
+    turn_sin_.push_back(det::Sinf(angle));
+  }
   tree_.preset = request.preset;
   tree_.seed = request.seed;
   tree_.params = request.params;
@@ -151,7 +159,6 @@ void Grower::BreakBuds() {
 
 void Grower::LayOutShoot(Branch& shoot, bool bend) {
   const ParamSet& p = tree_.params;
-  float phi = static_cast<float>(p.Get(ParamId::kPhi));
   bool sympodial = p.GetBool(ParamId::kSympodial);
   float theta_n = Radians(static_cast<float>(p.Get(ParamId::kThetaN)));
   // Steps 2-3 of 2.4.3: bending rates from the hormone, eqs. 2.4 and 2.5.
@@ -173,6 +180,12 @@ void Grower::LayOutShoot(Branch& shoot, bool bend) {
   float cap_node = Radians(static_cast<float>(p.Get(ParamId::kThetaBmaxN)));
   glm::vec3 direction = shoot.bud_direction;
   glm::vec3 azimuth = shoot.azimuth;
+  if (b == 0.0f && !(sympodial && theta_n != 0.0f)) {  // straight: no rotations needed
+    for (std::size_t i = 1; i < shoot.nodes.size(); ++i) {
+      shoot.nodes[i] = shoot.nodes[i - 1] + direction * shoot.internode_length;
+    }
+    return;
+  }
   for (std::size_t i = 1; i < shoot.nodes.size(); ++i) {
     if (b > 0.0f) {
       float difference = AngleBetween(direction, target);  // eqs. 2.6, 2.8
@@ -181,8 +194,8 @@ void Grower::LayOutShoot(Branch& shoot, bool bend) {
     }
     if (sympodial && theta_n != 0.0f) {
       // Sympodial zigzag: each node turns θ_N away from the side its bud sits on (steps 5, 8).
-      glm::vec3 side = RotateAbout(Orthonormalize(azimuth, direction), direction,
-                                   2.0f * kPi * phi * static_cast<float>(i));
+      glm::vec3 side =
+          RotateAbout(Orthonormalize(azimuth, direction), direction, turn_cos_[i], turn_sin_[i]);
       direction = RotateToward(direction, side, -theta_n);
     }
     azimuth = Orthonormalize(azimuth, direction);
@@ -260,7 +273,6 @@ void Grower::ThickenBranches() {
 
 void Grower::SetNextYearBuds() {
   const ParamSet& p = tree_.params;
-  float phi = static_cast<float>(p.Get(ParamId::kPhi));
   bool hormone_on = p.GetBool(ParamId::kUseHormone);
   float h_short = static_cast<float>(p.Get(ParamId::kHShort));
   float h_sat = static_cast<float>(p.Get(ParamId::kHSat));
@@ -279,7 +291,7 @@ void Grower::SetNextYearBuds() {
   for (int id : new_shoots_) {
     Branch& s = tree_.branches[static_cast<std::size_t>(id)];
     if (!s.alive) continue;
-    NodeFrames f = ComputeNodeFrames(s, phi);
+    NodeFrames f = ComputeNodeFrames(s, turn_cos_, turn_sin_);
     int tip = static_cast<int>(s.nodes.size()) - 1;
     // Leaves: one per lateral bud position at every node (at least one per node).
     int per_node = std::max(1, lateral_buds);
@@ -323,7 +335,7 @@ void Grower::SetNextYearBuds() {
       add_bud(ShootKind::kTerminal, tip, tip_azimuth, psi_t, p_terminal, false);
       // The terminal shoot continues the phyllotaxis spiral.
       s.buds.back().azimuth = Orthonormalize(
-          RotateAbout(tip_azimuth, tip_direction, 2.0f * kPi * phi), s.buds.back().direction);
+          RotateAbout(tip_azimuth, tip_direction, turn_cos_[1], turn_sin_[1]), s.buds.back().direction);
     }
     for (int k = 0; k < tl_buds; ++k) {
       glm::vec3 side =

@@ -51,6 +51,7 @@ class Grower {
   Tree tree_;
   GrowthTimings timings_;
   std::vector<int> new_shoots_;  // ids of this year's shoots
+  std::vector<float> turn_cos_, turn_sin_;  // phyllotaxis turn 2πϕ·i per node index i
   long internodes_ = 0;
   Pcg32 rng_;
 };

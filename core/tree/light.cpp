@@ -178,11 +178,14 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     float* out = depth.data();
     const float* sigma = density.data();
     const int first = sign > 0 ? n[axis] : 1;  // padded slice coordinates 1..n
+    // Inner loop along whichever of u, v is contiguous in memory (x when possible).
+    const int inner = stride[u] < stride[v] ? u : v, outer = inner == u ? v : u;
+    const std::ptrdiff_t si = stride[inner], so = stride[outer];
     for (int a = first; a >= 1 && a <= n[axis]; a -= sign) {
-      for (int c = 1; c <= n[v]; ++c) {
-        std::ptrdiff_t row = a * stride[axis] + c * sv;
-        for (int b = 1; b <= n[u]; ++b) {
-          std::ptrdiff_t here = row + b * su, there = here + up;
+      for (int o = 1; o <= n[outer]; ++o) {
+        std::ptrdiff_t row = a * stride[axis] + o * so;
+        for (int i = 1; i <= n[inner]; ++i) {
+          std::ptrdiff_t here = row + i * si, there = here + up;
           out[here] = sigma[here] * step + w00 * out[there] + w10 * out[there + su] +
                       w01 * out[there + sv] + w11 * out[there + su + sv];
         }
