@@ -13,10 +13,11 @@ void RegisterAll() {
     // Prepared on first use and kept, since Google Benchmark calls the function several times.
     auto body = std::make_shared<WorkloadBody>();
     const Workload* workload = &w;
-    benchmark::internal::Benchmark* bench = benchmark::RegisterBenchmark(w.name.c_str(), [workload, body](benchmark::State& state) {
-      if (!*body) *body = workload->prepare();
-      for (auto _ : state) benchmark::DoNotOptimize((*body)());
-    });
+    benchmark::internal::Benchmark* bench =
+        benchmark::RegisterBenchmark(w.name.c_str(), [workload, body](benchmark::State& state) {
+          if (!*body) *body = workload->prepare();
+          for (auto _ : state) benchmark::DoNotOptimize((*body)());
+        });
     bench->Unit(benchmark::kMillisecond);
     if (w.once) bench->Iterations(1);  // slow: one timed run
   }

@@ -83,7 +83,7 @@ const g20 = ms(native, 'light/grid-20000'), r20 = ms(native, 'light/reference-20
 if (g20 && r20) goal('light at 20,000 spheres: grid ≥ 50× faster than the reference (native)', `${(r20 / g20).toFixed(0)}×`, r20 / g20 >= 50);
 const gm = ms(wasm, 'grow+mesh/sakura-15y');
 if (gm && peer.length) {
-  goal(`sakura 15 years grown + meshed in WASM faster than ez-tree ${peer[0].workload}`,
+  goal(`sakura 15 years grown + meshed in WASM faster than ${peer[0].workload}`,
        `${fmt(gm)} ms vs ${fmt(peer[0].ms)} ms: ${(gm / peer[0].ms).toFixed(2)}× its time`, gm < peer[0].ms);
 }
 const goalsTable = goals.length ? `| goal | measured | |\n|---|---|---|\n${goals.join('\n')}\n` : '';
@@ -129,7 +129,8 @@ Workloads:
 
 - \`grow/<preset>-<N>y\`: \`GrowTree\` of a preset with its parameters for N years, seed 1 (every
   preset at its default age, plus sakura at 10 and 20 years and maple at 10, 20 and 40 years for scaling).
-- `grow+mesh/sakura-15y`: `GrowTree` then `BuildTreeMesh`, the job compared with ez-tree.
+- \`grow+mesh/sakura-15y\`: \`GrowTree\` then \`BuildTreeMesh\`, the job compared with ez-tree.
+- \`light/grid-20000\`, \`light/reference-20000\`: as below with 20,000 spheres; the reference is timed once.
 - \`mesh/sakura-15y\`: \`BuildTreeMesh\` of the sakura 15-year tree (grown untimed).
 - \`glb/sakura-15y\`: \`WriteGlb\` of that mesh into memory.
 - Native \`glb/sakura-15y\` swings between about 20 ms and 75 ms from run to run: each iteration
@@ -137,8 +138,7 @@ Workloads:
   \`GLIBC_TUNABLES=glibc.malloc.mmap_threshold=2000000000:glibc.malloc.trim_threshold=2000000000\`
   it took 19 ms). The WASM heap only grows and is reused, so WASM does not pay this cost.
 - \`light/grid-2000\`, \`light/reference-2000\`: \`ComputeLightGrid\` and \`ComputeLightReference\` on
-  2,000 leaf spheres drawn from \`Pcg32\` (seed 12345) in a 300 × 300 × 300 cm crown box, sky of the
-  default parameters (sun at 60°, weight 0.3), opacity 0.5.
+  2,000 leaf spheres drawn from \`Pcg32\` (seed 12345) in a 300 × 300 × 300 cm crown box, sky \`MakeSky(60°, 0°, sun weight 0.3)\`, opacity 0.5.
 
 ## Google Benchmark (native)
 

@@ -76,7 +76,7 @@ Workload LightWorkload(bool reference, int spheres_count = kLightSpheres) {
                                              : ComputeLightGrid(*spheres, *sky, 0.5f));
             };
           },
-          reference && spheres_count > kLightSpheres};
+          reference&& spheres_count > kLightSpheres};
 }
 
 std::vector<Workload> MakeWorkloads() {

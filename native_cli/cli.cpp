@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -152,8 +153,8 @@ void AddSvgOptions(CLI::App* cmd, SvgOptions* o) {
 }
 
 void CheckSvgOptions(const SvgOptions& o, CLI::App* cmd, const std::string& ext) {
-  for (const char* name : {"--svg-width", "--svg-height", "--svg-leaves", "--svg-flowers",
-                           "--caption"}) {
+  for (const char* name :
+       {"--svg-width", "--svg-height", "--svg-leaves", "--svg-flowers", "--caption"}) {
     if (cmd->count(name) && ext != ".svg") {
       throw BadInput{std::string(name) + ": only applies with --out FILE.svg"};
     }
@@ -189,6 +190,43 @@ int RunGrow(const GrowOptions& options, CLI::App* cmd, const std::string& out_pa
   }
   if (stats) out << StatsJson(tree, timings) << "\n";
   return 0;
+}
+
+// Shortest text that reads back as the same float (the model computes in float).
+std::string FormatFloat(float value) {
+  char buffer[32];
+  for (int precision = 1; precision <= 9; ++precision) {
+    std::snprintf(buffer, sizeof buffer, "%.*g", precision, static_cast<double>(value));
+    if (std::strtof(buffer, nullptr) == value) break;
+  }
+  return buffer;
+}
+
+// The hormone- and age-dependent ranges as CSV, computed by the growth model's own functions
+// (docs/growth-model.md plots them through scripts/figures).
+void PrintMappings(const GrowRequest& request, std::ostream& out) {
+  const ParamSet& p = request.params;
+  double h_sat = p.Get(ParamId::kHSat);
+  out << "hormone,N,D_long_cm,D_dwarf_cm,b_L,b_g,P_terminal,P_tl,P_lateral_at_age_P_l_years\n";
+  for (int i = 0; i <= 60; ++i) {
+    float h = static_cast<float>(1.5 * h_sat * i / 60.0);
+    float d = HormoneRamp(p, h, ParamId::kDLow, ParamId::kDHigh);
+    BreakChances chance =
+        BudBreakChances(p, h, false, 1 + static_cast<int>(p.Get(ParamId::kPLYears)));
+    out << FormatFloat(h) << ","
+        << FormatFloat(HormoneRamp(p, h, ParamId::kNLow, ParamId::kNHigh)) << ","
+        << FormatFloat(d) << ","
+        << FormatFloat(d * static_cast<float>(p.Get(ParamId::kDwarfInternodeRatio))) << ","
+        << FormatFloat(HormoneRamp(p, h, ParamId::kBLLow, ParamId::kBLHigh)) << ","
+        << FormatFloat(HormoneRamp(p, h, ParamId::kBGLow, ParamId::kBGHigh)) << ","
+        << FormatFloat(chance.terminal) << "," << FormatFloat(chance.terminally_lateral) << ","
+        << FormatFloat(chance.lateral) << "\n";
+  }
+  out << "\nyear,P_l_max\n";
+  int last = static_cast<int>(p.Get(ParamId::kPLYears)) + 5;
+  for (int year = 1; year <= last; ++year) {
+    out << year << "," << FormatFloat(LateralBreakMax(p, year)) << "\n";
+  }
 }
 
 }  // namespace
@@ -233,6 +271,11 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   grow->add_option("--out", out_path,
                    "Write the tree: .glb (binary glTF), .json or .svg (side view)");
   grow->add_flag("--stats", stats, "Print one JSON object of statistics on stdout");
+  CLI::App* mappings = tree->add_subcommand(
+      "mappings",
+      "Print the hormone- and age-dependent ranges (N, D, b_L, b_g, break chances) as CSV");
+  GrowOptions mapping_options;
+  AddGrowOptions(mappings, &mapping_options);
   SvgOptions svg_options;
   AddSvgOptions(grow, &svg_options);
 
@@ -266,6 +309,10 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         out << s.key << "\t" << s.symbol << "\t" << (*s.unit ? s.unit : "-") << "\tdefault "
             << FormatNumber(s.default_value) << "\t" << RangeText(s) << "\t" << s.help << "\n";
       }
+      return 0;
+    }
+    if (*mappings) {
+      PrintMappings(ResolveGrowRequest(mapping_options, mappings), out);
       return 0;
     }
     if (*grow) return RunGrow(grow_options, grow, out_path, stats, svg_options, out);

@@ -1,5 +1,5 @@
-// Deterministic exp, log, sin, cos, acos, atan2: only +, -, *, / and sqrt (exact in IEEE 754), so the
-// native and WASM builds give bit-identical results, unlike glibc's and musl's libm.
+// Deterministic exp, log, sin, cos, acos, atan2: only +, -, *, / and sqrt (exact in IEEE 754), so
+// the native and WASM builds give bit-identical results, unlike glibc's and musl's libm.
 #pragma once
 
 #include <cmath>
@@ -65,14 +65,34 @@ inline void SinCos(double x, double* s, double* c) {
   }
   int quadrant = static_cast<int>(static_cast<int64_t>(q) & 3);  // two's complement: also for q < 0
   switch (quadrant) {
-    case 0: *s = sin_r; *c = cos_r; break;
-    case 1: *s = cos_r; *c = -sin_r; break;
-    case 2: *s = -sin_r; *c = -cos_r; break;
-    default: *s = -cos_r; *c = sin_r; break;
+    case 0:
+      *s = sin_r;
+      *c = cos_r;
+      break;
+    case 1:
+      *s = cos_r;
+      *c = -sin_r;
+      break;
+    case 2:
+      *s = -sin_r;
+      *c = -cos_r;
+      break;
+    default:
+      *s = -cos_r;
+      *c = sin_r;
+      break;
   }
 }
-inline double Sin(double x) { double s, c; SinCos(x, &s, &c); return s; }
-inline double Cos(double x) { double s, c; SinCos(x, &s, &c); return c; }
+inline double Sin(double x) {
+  double s, c;
+  SinCos(x, &s, &c);
+  return s;
+}
+inline double Cos(double x) {
+  double s, c;
+  SinCos(x, &s, &c);
+  return c;
+}
 
 // atan of |x| <= 1 after two argument halvings, atan(x) = 2·atan(x / (1 + √(1 + x²))).
 inline double AtanUnit(double x) {

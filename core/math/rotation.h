@@ -3,9 +3,9 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 
 #include "math/det_math.h"
-#include <glm/vec3.hpp>
 
 namespace niwa {
 

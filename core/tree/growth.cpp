@@ -61,6 +61,29 @@ float BreakProbability(float hormone, float h_short, float h_sat, float p_dwarf,
   return p_dwarf + (p_long - p_dwarf) * Clamp01((hormone - h_short) / (h_sat - h_short));
 }
 
+float LateralBreakMax(const ParamSet& p, int year) {
+  float age = Clamp01(static_cast<float>(year - 1) / static_cast<float>(p.Get(ParamId::kPLYears)));
+  return static_cast<float>(p.Get(ParamId::kPLYoung) +
+                            (p.Get(ParamId::kPLOld) - p.Get(ParamId::kPLYoung)) * age);
+}
+
+BreakChances BudBreakChances(const ParamSet& p, float hormone, bool dwarf, int year) {
+  float p_lateral_max = LateralBreakMax(p, year);
+  float p_tl_long = static_cast<float>(p.Get(ParamId::kPTlL));
+  if (!p.GetBool(ParamId::kUseHormone)) return {1.0f, p_tl_long, p_lateral_max};
+  float h_short = static_cast<float>(p.Get(ParamId::kHShort));
+  float h_sat = static_cast<float>(p.Get(ParamId::kHSat));
+  BreakChances chance;
+  // Fig. 2.8: break probabilities from the shoot's hormone.
+  chance.terminal = BreakProbability(hormone, h_short, h_sat, 1.0f, 1.0f);
+  chance.terminally_lateral = BreakProbability(
+      hormone, h_short, h_sat, static_cast<float>(p.Get(ParamId::kPTlS)), p_tl_long);
+  // A long shoot's lateral buds: P_l (fig. 2.9) scaled by the shoot's hormone, reaching it at
+  // H_sat; dwarf shoots' lateral buds do not break (they are flowers for sakura).
+  chance.lateral = dwarf ? 0.0f : p_lateral_max * Clamp01(hormone / h_sat);
+  return chance;
+}
+
 Grower::Grower(const GrowRequest& request) : request_(request), rng_(request.seed) {
   // cos and sin of the phyllotaxis turn 2πϕ·i at node i (N <= 100), computed once per tree.
   float phi = static_cast<float>(request.params.Get(ParamId::kPhi));
@@ -273,13 +296,6 @@ void Grower::ThickenBranches() {
 
 void Grower::SetNextYearBuds() {
   const ParamSet& p = tree_.params;
-  bool hormone_on = p.GetBool(ParamId::kUseHormone);
-  float h_short = static_cast<float>(p.Get(ParamId::kHShort));
-  float h_sat = static_cast<float>(p.Get(ParamId::kHSat));
-  float age =
-      Clamp01(static_cast<float>(tree_.years - 1) / static_cast<float>(p.Get(ParamId::kPLYears)));
-  float p_lateral_max = static_cast<float>(
-      p.Get(ParamId::kPLYoung) + (p.Get(ParamId::kPLOld) - p.Get(ParamId::kPLYoung)) * age);
   int terminal_buds = p.GetInt(ParamId::kBT), tl_buds = p.GetInt(ParamId::kBTl);
   int lateral_buds = p.GetInt(ParamId::kBL);
   float psi_t = Radians(static_cast<float>(p.Get(ParamId::kPsiT)));
@@ -317,25 +333,17 @@ void Grower::SetNextYearBuds() {
       bud.state = breaks ? BudState::kBreaking : BudState::kDormant;
       s.buds.push_back(bud);
     };
-    float h = s.hormone;
-    // Fig. 2.8: break probabilities from the shoot's hormone; without hormone, the maxima.
-    float p_terminal = hormone_on ? BreakProbability(h, h_short, h_sat, 1.0f, 1.0f) : 1.0f;
-    float p_tl =
-        hormone_on ? BreakProbability(h, h_short, h_sat, static_cast<float>(p.Get(ParamId::kPTlS)),
-                                      static_cast<float>(p.Get(ParamId::kPTlL)))
-                   : static_cast<float>(p.Get(ParamId::kPTlL));
-    // A long shoot's lateral buds: P_l (fig. 2.9) scaled by the shoot's hormone, reaching it at
-    // H_sat (fig. 2.8); dwarf shoots' lateral buds do not break (they are flowers for sakura).
-    float p_lateral = s.dwarf      ? 0.0f
-                      : hormone_on ? p_lateral_max * Clamp01(h / h_sat)
-                                   : p_lateral_max;
+    BreakChances chance = BudBreakChances(p, s.hormone, s.dwarf, tree_.years);
+    float p_terminal = chance.terminal, p_tl = chance.terminally_lateral,
+          p_lateral = chance.lateral;
     glm::vec3 tip_azimuth = f.azimuth[static_cast<std::size_t>(tip)];
     glm::vec3 tip_direction = f.direction[static_cast<std::size_t>(tip)];
     if (terminal_buds > 0) {
       add_bud(ShootKind::kTerminal, tip, tip_azimuth, psi_t, p_terminal, false);
       // The terminal shoot continues the phyllotaxis spiral.
-      s.buds.back().azimuth = Orthonormalize(
-          RotateAbout(tip_azimuth, tip_direction, turn_cos_[1], turn_sin_[1]), s.buds.back().direction);
+      s.buds.back().azimuth =
+          Orthonormalize(RotateAbout(tip_azimuth, tip_direction, turn_cos_[1], turn_sin_[1]),
+                         s.buds.back().direction);
     }
     for (int k = 0; k < tl_buds; ++k) {
       glm::vec3 side =

@@ -50,7 +50,7 @@ class Grower {
   GrowRequest request_;
   Tree tree_;
   GrowthTimings timings_;
-  std::vector<int> new_shoots_;  // ids of this year's shoots
+  std::vector<int> new_shoots_;             // ids of this year's shoots
   std::vector<float> turn_cos_, turn_sin_;  // phyllotaxis turn 2πϕ·i per node index i
   long internodes_ = 0;
   Pcg32 rng_;
@@ -63,5 +63,13 @@ Tree GrowTree(const GrowRequest& request, GrowthTimings* timings = nullptr);
 float HormoneRamp(const ParamSet& params, float hormone, ParamId low, ParamId high);
 // Break probability of a bud with maximum p_dwarf / p_long on a shoot of hormone H (fig. 2.8).
 float BreakProbability(float hormone, float h_short, float h_sat, float p_dwarf, float p_long);
+// Largest lateral-bud break probability P_l at a tree age in years (fig. 2.9).
+float LateralBreakMax(const ParamSet& params, int year);
+
+struct BreakChances {
+  float terminal = 1, terminally_lateral = 0, lateral = 0;
+};
+// Next year's break probability of each kind of bud on a shoot (2.4.5); the maxima without hormone.
+BreakChances BudBreakChances(const ParamSet& params, float hormone, bool dwarf, int year);
 
 }  // namespace niwa

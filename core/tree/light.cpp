@@ -38,7 +38,8 @@ LightSample Resolve(const Sky& sky, const float* transmittance) {
   for (std::size_t k = 0; k < sky.directions.size(); ++k) {
     float received = sky.weights[k] * transmittance[k];
     light += received;
-    // Strongest received light: the sun when it is not shaded, else the brightest open patch of sky.
+    // Strongest received light: the sun when it is not shaded, else the brightest open patch of
+    // sky.
     if (received > strongest) {
       strongest = received;
       direction = sky.directions[k];
@@ -60,15 +61,17 @@ Sky MakeSky(float sun_elevation_deg, float sun_azimuth_deg, float sun_weight, fl
     float ring = std::sqrt(1.0f - y * y);
     float angle = golden * static_cast<float>(i);
     sky.directions.push_back(glm::vec3(ring * det::Cosf(angle), y, ring * det::Sinf(angle)));
-    // Radiance 1 + (zenith_ratio - 1)·sin(elevation) (CIE overcast: ratio 3). A leaf sphere receives
-    // radiance × solid angle from every side (no cosine factor, unlike a horizontal surface).
+    // Radiance 1 + (zenith_ratio - 1)·sin(elevation) (CIE overcast: ratio 3). A leaf sphere
+    // receives radiance × solid angle from every side (no cosine factor, unlike a horizontal
+    // surface).
     float weight = 1.0f + (zenith_ratio - 1.0f) * y;
     sky.weights.push_back(weight);
     total += weight;
   }
   for (float& w : sky.weights) w *= (1.0f - sun_weight) / total;
   float elevation = Radians(sun_elevation_deg), azimuth = Radians(sun_azimuth_deg);
-  sky.directions.push_back(glm::vec3(det::Cosf(elevation) * det::Cosf(azimuth), det::Sinf(elevation),
+  sky.directions.push_back(glm::vec3(det::Cosf(elevation) * det::Cosf(azimuth),
+                                     det::Sinf(elevation),
                                      det::Cosf(elevation) * det::Sinf(azimuth)));
   sky.weights.push_back(sun_weight);
   return sky;
@@ -112,19 +115,23 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
   const int n[3] = {std::max(1, static_cast<int>(std::ceil(extent.x / cell))),
                     std::max(1, static_cast<int>(std::ceil(extent.y / cell))),
                     std::max(1, static_cast<int>(std::ceil(extent.z / cell)))};
-  const std::ptrdiff_t stride[3] = {1, n[0] + 2, static_cast<std::ptrdiff_t>(n[0] + 2) * (n[1] + 2)};
-  const std::size_t volume = static_cast<std::size_t>(stride[2]) * static_cast<std::size_t>(n[2] + 2);
+  const std::ptrdiff_t stride[3] = {1, n[0] + 2,
+                                    static_cast<std::ptrdiff_t>(n[0] + 2) * (n[1] + 2)};
+  const std::size_t volume =
+      static_cast<std::size_t>(stride[2]) * static_cast<std::size_t>(n[2] + 2);
   auto index = [&](int x, int y, int z) {  // interior coordinates 0..n-1
-    return static_cast<std::size_t>((x + 1) * stride[0] + (y + 1) * stride[1] + (z + 1) * stride[2]);
+    return static_cast<std::size_t>((x + 1) * stride[0] + (y + 1) * stride[1] +
+                                    (z + 1) * stride[2]);
   };
   std::vector<float> density(volume, 0.0f);
-  // Rasterize, conserving each sphere's extinction mass σ·V: spread over the voxels whose centres lie
-  // inside it, or put in the voxel of its centre when it is smaller than a cell and hits none.
+  // Rasterize, conserving each sphere's extinction mass σ·V: spread over the voxels whose centres
+  // lie inside it, or put in the voxel of its centre when it is smaller than a cell and hits none.
   std::vector<std::size_t> covered;
   const float cell_volume = cell * cell * cell;
   for (const LeafSphere& s : spheres) {
     float sigma = Extinction(opacity, s.radius);
-    float mass = sigma * (4.0f / 3.0f) * static_cast<float>(det::kPi) * s.radius * s.radius * s.radius;
+    float mass =
+        sigma * (4.0f / 3.0f) * static_cast<float>(det::kPi) * s.radius * s.radius * s.radius;
     glm::vec3 a = (s.center - glm::vec3(s.radius) - lo) / cell;
     glm::vec3 b = (s.center + glm::vec3(s.radius) - lo) / cell;
     int x0 = std::max(0, static_cast<int>(a.x)), x1 = std::min(n[0] - 1, static_cast<int>(b.x));
@@ -151,8 +158,8 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     for (std::size_t at : covered) density[at] += each;
   }
 
-  // Shadow propagation, one direction at a time: depth(v) = σ(v)·s + depth(v + d·s), swept along the
-  // dominant axis of d so that v + d·s lies on the slice swept just before (bilinear there).
+  // Shadow propagation, one direction at a time: depth(v) = σ(v)·s + depth(v + d·s), swept along
+  // the dominant axis of d so that v + d·s lies on the slice swept just before (bilinear there).
   std::vector<float> depth(volume, 0.0f);
   const std::size_t directions = sky.directions.size();
   std::vector<float> transmittance(spheres.size() * directions);

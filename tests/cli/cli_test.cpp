@@ -138,9 +138,9 @@ TEST(Cli, WritesJsonAndSvg) {
 
 TEST(Cli, SvgOptionsChangeTheDrawing) {
   std::string path = TempPath("options.svg");
-  Result r = RunNiwa({"tree", "grow", "--preset", "binary", "--years", "4", "--out", path,
-                      "--svg-width", "300", "--svg-height", "200", "--svg-leaves", "0",
-                      "--caption", "(a) P<1"});
+  Result r =
+      RunNiwa({"tree", "grow", "--preset", "binary", "--years", "4", "--out", path, "--svg-width",
+               "300", "--svg-height", "200", "--svg-leaves", "0", "--caption", "(a) P<1"});
   ASSERT_EQ(r.code, 0) << r.err;
   std::stringstream content;
   content << std::ifstream(path).rdbuf();
@@ -166,6 +166,33 @@ TEST(Cli, UrlGrowsTheSameTreeAsTheFlags) {
   EXPECT_EQ(a["internodes"], b["internodes"]);
   EXPECT_EQ(a["leaves"], b["leaves"]);
   ExpectOneLineError(RunNiwa({"tree", "grow", "--url", "preset=keyaki&gamma=9"}), "--url: gamma");
+}
+
+}  // namespace
+}  // namespace niwa
+
+namespace niwa {
+namespace {
+
+TEST(Cli, MappingsPrintTheHormoneAndAgeRangesAsCsv) {
+  std::ostringstream out, err;
+  ASSERT_EQ(RunCli({"tree", "mappings", "--preset", "sakura"}, out, err), 0) << err.str();
+  std::istringstream lines(out.str());
+  std::string header, first, line;
+  std::getline(lines, header);
+  EXPECT_EQ(header,
+            "hormone,N,D_long_cm,D_dwarf_cm,b_L,b_g,P_terminal,P_tl,P_lateral_at_age_P_l_years");
+  std::getline(lines, first);
+  EXPECT_EQ(first.rfind("0,6,0.2", 0), 0u) << first;  // H = 0: N_low 6, D_low 0.2 (table 2.2)
+  int rows = 1;
+  while (std::getline(lines, line) && !line.empty()) ++rows;
+  EXPECT_EQ(rows, 61);
+  std::getline(lines, line);
+  EXPECT_EQ(line, "year,P_l_max");
+  std::getline(lines, line);
+  EXPECT_EQ(line, "1,0.1");  // P_l young
+  std::ostringstream bad_out, bad_err;
+  EXPECT_EQ(RunCli({"tree", "mappings", "--set", "H_sat=0"}, bad_out, bad_err), 2);
 }
 
 }  // namespace
