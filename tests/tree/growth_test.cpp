@@ -295,3 +295,83 @@ TEST(Flowers, SakuraDwarfShootLateralsBloom) {
 
 }  // namespace
 }  // namespace niwa
+
+namespace niwa {
+namespace {
+
+// Sakura without light (L = 1), pruned back to the seedling after year 3: in year 4 the seedling's
+// hormone falls to β_p·H' (eq. 2.3 with no living children), which is what triggers dormancy break.
+struct CutBack {
+  Tree tree;
+  float hormone_before_cut;  // the seedling's H after year 3 (H')
+  float hormone_after_cut;   // its H after year 4, which next year's shoots inherit from
+};
+
+CutBack GrowCutBack(double threshold, double drop_ratio, int most) {
+  GrowRequest r = RequestFor("sakura", 5);
+  r.params.Set(ParamId::kUseLight, 0);
+  r.params.Set(ParamId::kHBL, threshold);
+  r.params.Set(ParamId::kDeltaL, 1);
+  r.params.Set(ParamId::kBBL, most);
+  r.params.Set(ParamId::kHBD, drop_ratio);
+  r.params.Set(ParamId::kDeltaD, 1);
+  r.params.Set(ParamId::kBBD, most);
+  r.prunes.push_back({3, -1, 2});  // after year 3 remove all growth since year 2
+  Grower grower(r);
+  while (grower.year() < 3) grower.GrowYear();
+  float before = grower.tree().branches[0].hormone;
+  grower.GrowYear();
+  float after = grower.tree().branches[0].hormone;
+  grower.GrowYear();
+  return {grower.TakeTree(), before, after};
+}
+
+// Eq. 2.1 share for a shoot of this kind (sakura: α_t 0.7, α_tl 0.55, α_l 0.4).
+float SakuraAlpha(ShootKind kind) {
+  return kind == ShootKind::kLateral ? 0.4f : kind == ShootKind::kTerminallyLateral ? 0.55f : 0.7f;
+}
+
+int SproutsInYear5(const Tree& tree) {
+  int count = 0;
+  for (const Branch& b : tree.branches) count += (b.parent == 0 && b.year == 5) ? 1 : 0;
+  return count;
+}
+
+TEST(DormancyBreak, SuddenDropBreaksAtMostBbDormantBudsWithExtraHormone) {
+  CutBack cut = GrowCutBack(/*threshold=*/0, /*drop_ratio=*/2, /*most=*/3);
+  const Branch& seedling = cut.tree.branches[0];
+  // Year 4: H = β_p·H' + γ·(what survived) falls below H'/2, so 3 dormant buds break (δ_d = 1,
+  // B_b^d = 3).
+  ASSERT_LT(cut.hormone_after_cut, cut.hormone_before_cut / 2);
+  EXPECT_EQ(SproutsInYear5(cut.tree), 3);
+  for (const Branch& b : cut.tree.branches) {
+    if (b.parent == 0 && b.year == 5) {
+      // Eq. 2.1 plus H_n^d = 0.4.
+      EXPECT_NEAR(b.hormone_initial, SakuraAlpha(b.kind) * cut.hormone_after_cut + 0.4f, 1e-5f);
+    }
+  }
+  EXPECT_GT(seedling.buds.size(), 3u);
+}
+
+TEST(DormancyBreak, ThresholdBreaksWhenHormoneCrossesBelowIt) {
+  // A threshold between H after the cut and H' before it: a crossing (δ_l = 1, B_b^l = 2).
+  CutBack probe = GrowCutBack(0, 0, 2);
+  double threshold = 0.5 * (probe.hormone_before_cut + probe.hormone_after_cut);
+  CutBack cut = GrowCutBack(threshold, /*drop_ratio=*/0, /*most=*/2);
+  ASSERT_LT(cut.hormone_after_cut, threshold);
+  ASSERT_GE(cut.hormone_before_cut, threshold);
+  EXPECT_EQ(SproutsInYear5(cut.tree), 2);
+  for (const Branch& b : cut.tree.branches) {
+    if (b.parent == 0 && b.year == 5) {
+      // Eq. 2.1 plus H_n^l = 0.3.
+      EXPECT_NEAR(b.hormone_initial, SakuraAlpha(b.kind) * cut.hormone_after_cut + 0.3f, 1e-5f);
+    }
+  }
+}
+
+TEST(DormancyBreak, NothingBreaksWithBothTriggersOff) {
+  EXPECT_EQ(SproutsInYear5(GrowCutBack(0, 0, 3).tree), 0);
+}
+
+}  // namespace
+}  // namespace niwa
