@@ -19,11 +19,7 @@
 namespace niwa {
 namespace {
 
-#ifdef __EMSCRIPTEN__
-constexpr const char* kBuild = "wasm";
-#else
-constexpr const char* kBuild = "native";
-#endif
+constexpr const char* kBuild = NIWA_BUILD_NAME;  // "native" or "wasm", from cmake/<platform>.cmake
 
 struct Options {
   std::string filter;

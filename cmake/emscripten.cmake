@@ -40,3 +40,6 @@ endfunction()
 
 # Google Benchmark exists as a Debian library for the native build only.
 set(NIWA_GOOGLE_BENCHMARK OFF)
+
+# Which build a program belongs to, for reports (bench runner).
+add_compile_definitions(NIWA_BUILD_NAME="wasm")
