@@ -1,4 +1,4 @@
-// niwa CLI commands (presets, params, tree grow) over the core library, parsed with CLI11.
+// niwa CLI commands (presets, params, tree grow/mappings/sway) over the core library, with CLI11.
 #include "cli.h"
 
 #include <CLI/CLI.hpp>
@@ -7,12 +7,14 @@
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "io/gltf_export.h"
 #include "io/json_io.h"
 #include "io/svg_export.h"
 #include "io/url_codec.h"
+#include "sway/sway.h"
 #include "tree/growth.h"
 #include "tree/mesh.h"
 #include "tree/presets.h"
@@ -229,6 +231,107 @@ void PrintMappings(const GrowRequest& request, std::ostream& out) {
   }
 }
 
+// ---- tree sway: node-point wind sway of thesis chapter 3 (core/sway, docs/sway-model.md) ----
+struct SwayOptions {
+  double wind = 0, wind_dir = 0, dt = 0, duration = 0;
+  std::string gust, csv_path, svg_path;
+  std::vector<std::string> sets;
+  bool stats = false;
+  int tips = 4;
+};
+
+void AddSwayOptions(CLI::App* cmd, SwayOptions* o) {
+  cmd->add_option("--wind", o->wind, "Wind speed while the gust blows, m/s, 0..100 (default 5)");
+  cmd->add_option("--wind-dir", o->wind_dir,
+                  "Wind azimuth, degrees, -360..360: 0 blows towards +x, 90 towards +z");
+  cmd->add_option("--gust", o->gust,
+                  "ON_S:OFF_S: the wind starts at ON and stops at OFF (default 1:6)");
+  cmd->add_option("--dt", o->dt, "Time step, s, 0.0001..0.1 (default 1/30)");
+  cmd->add_option("--duration", o->duration, "Simulated time, s, 0..600 (default 12)");
+  cmd->add_option("--set-sway", o->sets,
+                  "Override a sway parameter: key=value (repeatable; see docs/sway-model.md)");
+  cmd->add_option("--tips", o->tips, "Tips traced in --csv and --svg, 1..50 (default 4)");
+  cmd->add_option("--csv", o->csv_path, "Write tip trajectories: time,node,x,y,z (s, cm)");
+  cmd->add_option("--svg", o->svg_path, "Write a plot of tip displacement against time");
+  cmd->add_flag("--stats", o->stats, "Print one JSON object of statistics on stdout");
+}
+
+SwayParams ResolveSwayParams(const SwayOptions& o, CLI::App* cmd) {
+  SwayParams params;
+  for (const std::string& item : o.sets) {
+    std::size_t eq = item.find('=');
+    if (eq == std::string::npos) throw BadInput{"--set-sway: '" + item + "' must be key=value"};
+    std::string error = params.SetFromText(item.substr(0, eq), item.substr(eq + 1));
+    if (!error.empty()) throw BadInput{"--set-sway: " + error};
+  }
+  auto set = [&](const char* flag, SwayParamId id, double value) {
+    if (!cmd->count(flag)) return;
+    std::string error = params.Set(id, value);
+    if (!error.empty()) throw BadInput{std::string(flag) + ": " + error};
+  };
+  set("--wind", SwayParamId::kWindSpeed, o.wind);
+  set("--wind-dir", SwayParamId::kWindDir, o.wind_dir);
+  set("--dt", SwayParamId::kDt, o.dt);
+  set("--duration", SwayParamId::kDuration, o.duration);
+  if (cmd->count("--gust")) {
+    std::size_t colon = o.gust.find(':');
+    std::optional<double> on, off;
+    if (colon != std::string::npos) {
+      on = ParseNumber(o.gust.substr(0, colon));
+      off = ParseNumber(o.gust.substr(colon + 1));
+    }
+    if (!on || !off) throw BadInput{"--gust: '" + o.gust + "' must be ON_S:OFF_S, e.g. 1:6"};
+    set("--gust", SwayParamId::kGustOn, *on);
+    set("--gust", SwayParamId::kGustOff, *off);
+  }
+  std::string error = params.Validate();
+  if (!error.empty()) throw BadInput{(cmd->count("--gust") ? "--gust: " : "--set-sway: ") + error};
+  if (o.tips < 1 || o.tips > 50) throw BadInput{"--tips: must be a whole number in [1, 50]"};
+  if (!o.csv_path.empty() && Extension(o.csv_path) != ".csv") {
+    throw BadInput{"--csv: '" + o.csv_path + "' must end in .csv"};
+  }
+  if (!o.svg_path.empty() && Extension(o.svg_path) != ".svg") {
+    throw BadInput{"--svg: '" + o.svg_path + "' must end in .svg"};
+  }
+  return params;
+}
+
+int RunSwayCommand(const GrowOptions& grow_options, const SwayOptions& o, CLI::App* cmd,
+                   std::ostream& out) {
+  SwayParams params = ResolveSwayParams(o, cmd);
+  GrowRequest request = ResolveGrowRequest(grow_options, cmd);
+  Tree tree = GrowTree(request);
+  SwayRun run = RunSway(tree, params, o.tips);
+  if (!o.csv_path.empty()) {
+    std::string error = WriteFileAtomically(o.csv_path, SwayCsv(run));
+    if (!error.empty()) throw BadInput{"--csv: " + error};
+  }
+  if (!o.svg_path.empty()) {
+    std::string error = WriteFileAtomically(o.svg_path, SwayPlotSvg(run, params));
+    if (!error.empty()) throw BadInput{"--svg: " + error};
+  }
+  if (o.stats) {
+    nlohmann::ordered_json j;
+    j["preset"] = tree.preset;
+    j["seed"] = tree.seed;
+    j["years"] = tree.years;
+    j["node_points"] = run.node_points;
+    j["moving"] = run.moving;
+    j["followers"] = run.followers;
+    j["fixed"] = run.fixed;
+    j["internodes"] = run.internodes;
+    j["steps"] = run.steps;
+    j["dt"] = params.Get(SwayParamId::kDt);
+    j["wind"] = params.Get(SwayParamId::kWindSpeed);
+    j["ms"] = run.ms;
+    j["ns_per_internode"] = run.ns_per_internode;
+    j["max_tip_displacement"] = run.max_tip_displacement;
+    j["finite"] = run.finite;
+    out << j.dump() << "\n";
+  }
+  return 0;
+}
+
 }  // namespace
 
 std::string WriteFileAtomically(const std::string& path, const std::string& bytes) {
@@ -278,6 +381,12 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   AddGrowOptions(mappings, &mapping_options);
   SvgOptions svg_options;
   AddSvgOptions(grow, &svg_options);
+  CLI::App* sway = tree->add_subcommand(
+      "sway", "Sway a grown tree in a gust of wind (thesis chapter 3 node-point model)");
+  GrowOptions sway_grow_options;
+  SwayOptions sway_options;
+  AddGrowOptions(sway, &sway_grow_options);
+  AddSwayOptions(sway, &sway_options);
 
   try {
     // Name unknown commands ourselves: CLI11 would only say that a subcommand is required.
@@ -316,6 +425,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       return 0;
     }
     if (*grow) return RunGrow(grow_options, grow, out_path, stats, svg_options, out);
+    if (*sway) return RunSwayCommand(sway_grow_options, sway_options, sway, out);
   } catch (const CLI::CallForHelp&) {
     out << app.help();  // CLI11 delegates to the innermost selected subcommand
     return 0;

@@ -61,8 +61,6 @@ const char* KindName(ShootKind kind) {
 
 const char* StateName(BudState state) {
   switch (state) {
-    case BudState::kWaiting:
-      return "waiting";
     case BudState::kBreaking:
       return "breaking";
     case BudState::kDormant:

@@ -14,7 +14,6 @@ namespace niwa {
 enum class ShootKind : uint8_t { kSeedling, kTerminal, kTerminallyLateral, kLateral };
 
 enum class BudState : uint8_t {
-  kWaiting,   // formed this year, decides next year whether it breaks
   kBreaking,  // will break at the start of next year (step 1 of the yearly loop)
   kDormant,   // did not break; can break later through dormancy break (2.4.6)
   kUsed,      // has become a shoot or a flower

@@ -1,0 +1,97 @@
+// Tests of 'niwa tree sway': --stats JSON, --csv and --svg files, one-line errors with exit code 2.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli.h"
+
+namespace niwa {
+namespace {
+
+struct Result {
+  int code;
+  std::string out, err;
+};
+
+Result RunNiwa(std::vector<std::string> args) {
+  std::ostringstream out, err;
+  int code = RunCli(args, out, err);
+  return {code, out.str(), err.str()};
+}
+
+std::string ReadAll(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+void ExpectOneLineError(const Result& r, const std::string& must_contain) {
+  EXPECT_EQ(r.code, 2);
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  ASSERT_FALSE(r.err.empty());
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+  EXPECT_NE(r.err.find(must_contain), std::string::npos) << r.err;
+}
+
+TEST(SwayCli, StatsHasTheCounts) {
+  Result r = RunNiwa({"tree", "sway", "--preset", "sakura", "--years", "5", "--wind", "10",
+                      "--gust", "0.2:1", "--duration", "2", "--stats"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  for (const char* key : {"node_points", "moving", "followers", "fixed", "internodes",
+                          "ns_per_internode", "max_tip_displacement", "steps"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["node_points"].get<int>(),
+            j["moving"].get<int>() + j["followers"].get<int>() + j["fixed"].get<int>());
+  EXPECT_EQ(j["steps"].get<int>(), 60);
+  EXPECT_GT(j["max_tip_displacement"].get<double>(), 0.0);
+  EXPECT_TRUE(j["finite"].get<bool>());
+}
+
+TEST(SwayCli, WritesCsvAndSvg) {
+  std::string csv = ::testing::TempDir() + "niwa_sway_test.csv";
+  std::string svg = ::testing::TempDir() + "niwa_sway_test.svg";
+  Result r = RunNiwa({"tree", "sway", "--preset", "binary", "--years", "6", "--duration", "1",
+                      "--dt", "0.05", "--tips", "2", "--csv", csv, "--svg", svg});
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::string text = ReadAll(csv);
+  EXPECT_EQ(text.rfind("time,node,x,y,z\n", 0), 0u);
+  std::size_t lines = 0;
+  for (char c : text) lines += c == '\n';
+  EXPECT_EQ(lines, 1u + 2u * 21u);  // header + 2 tips × (t = 0 and 20 steps)
+  std::string plot = ReadAll(svg);
+  EXPECT_NE(plot.find("<svg"), std::string::npos);
+  EXPECT_NE(plot.find("<polyline"), std::string::npos);
+  std::remove(csv.c_str());
+  std::remove(svg.c_str());
+}
+
+TEST(SwayCli, BadInputIsOneLine) {
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--wind", "200"}),
+                     "--wind: wind: 200 is out of range; must be a number in [0, 100]");
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--gust", "5:2"}), "--gust:");
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--gust", "soon"}), "must be ON_S:OFF_S");
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--set-sway", "K_rev=2"}),
+                     "--set-sway: K_rev: 2 is out of range; must be a number in [0, 1]");
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--set-sway", "nope=1"}), "unknown sway parameter");
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--dt", "1"}), "--dt: dt: 1 is out of range");
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--csv", "out.txt"}), "must end in .csv");
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--tips", "0"}), "--tips");
+}
+
+TEST(SwayCli, HelpListsTheOptions) {
+  Result r = RunNiwa({"tree", "sway", "--help"});
+  EXPECT_EQ(r.code, 0);
+  for (const char* option : {"--wind", "--wind-dir", "--gust", "--dt", "--duration", "--set-sway",
+                             "--csv", "--svg", "--stats", "--preset"}) {
+    EXPECT_NE(r.out.find(option), std::string::npos) << option;
+  }
+}
+
+}  // namespace
+}  // namespace niwa

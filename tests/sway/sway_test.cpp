@@ -1,0 +1,363 @@
+// Tests of the node-point sway model (thesis chapter 3): lengths, stability, decay, omission,
+// symmetry.
+#include "sway/sway.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "tree/growth.h"
+#include "tree/presets.h"
+
+namespace niwa {
+namespace {
+
+using glm::dvec3;
+
+// Adds a straight branch from the parent's node `parent_node` (or from `base` for the seedling)
+// to `tip` with `segments` internodes, radius (cm) and leaves.
+int AddBranch(Tree* tree, int parent, int parent_node, glm::vec3 base, glm::vec3 tip, int segments,
+              float radius, int leaves = 0) {
+  Branch b{};
+  b.id = static_cast<int>(tree->branches.size());
+  b.parent = parent;
+  b.parent_node = parent_node;
+  b.alive = true;
+  if (parent >= 0)
+    base = tree->branches[static_cast<std::size_t>(parent)]
+               .nodes[static_cast<std::size_t>(parent_node)];
+  for (int k = 0; k <= segments; ++k) {
+    float f = static_cast<float>(k) / static_cast<float>(segments);
+    b.nodes.push_back(base + (tip - base) * f);
+  }
+  b.cross_section = 3.14159265f * radius * radius;
+  for (int k = 0; k < leaves; ++k) b.leaves.push_back(Leaf{1 + k % segments, glm::vec3(1, 0, 0)});
+  if (parent >= 0) tree->branches[static_cast<std::size_t>(parent)].children.push_back(b.id);
+  tree->branches.push_back(b);
+  return b.id;
+}
+
+// Mirror-symmetric (x -> -x) tree: trunk, two arms, each with a twig.
+Tree SymmetricTree() {
+  Tree t;
+  int trunk = AddBranch(&t, -1, 0, {0, 0, 0}, {0, 60, 0}, 6, 1.2f);
+  int left = AddBranch(&t, trunk, 6, {}, {-30, 85, 0}, 5, 0.4f, 5);
+  int right = AddBranch(&t, trunk, 6, {}, {30, 85, 0}, 5, 0.4f, 5);
+  AddBranch(&t, left, 3, {}, {-40, 95, 5}, 4, 0.2f, 4);
+  AddBranch(&t, right, 3, {}, {40, 95, 5}, 4, 0.2f, 4);
+  AddBranch(&t, trunk, 6, {}, {0, 100, 0}, 8, 0.6f, 8);
+  return t;
+}
+
+Tree GrownTree(int years) {
+  GrowRequest request;
+  const Preset* preset = FindPreset("sakura");
+  request.preset = preset->name;
+  request.params = preset->params;
+  request.seed = preset->seed;
+  request.years = years;
+  return GrowTree(request);
+}
+
+SwayParams Params(std::initializer_list<std::pair<SwayParamId, double>> values) {
+  SwayParams p;
+  for (const auto& [id, value] : values) {
+    std::string error = p.Set(id, value);
+    EXPECT_EQ(error, "");
+  }
+  return p;
+}
+
+double MaxDisplacement(const SwaySimulator& sim) {
+  double d = 0;
+  for (std::size_t u = 0; u < sim.model().nodes.size(); ++u) {
+    d = std::max(d, glm::length(sim.tips()[u] - sim.model().nodes[u].rest_tip));
+  }
+  return d;
+}
+
+double MaxSpeed(const SwaySimulator& sim) {
+  double v = 0;
+  for (const dvec3& x : sim.velocities()) v = std::max(v, glm::length(x));
+  return v;
+}
+
+TEST(SwayParams, DefaultsAreTable31AndSettersCheckRanges) {
+  SwayParams p;
+  EXPECT_EQ(p.Get(SwayParamId::kKWind), 0.1);
+  EXPECT_EQ(p.Get(SwayParamId::kKRev), 0.8);
+  EXPECT_EQ(p.Get(SwayParamId::kKVdel), 1.0);
+  EXPECT_EQ(p.Get(SwayParamId::kDensity), 0.12);
+  EXPECT_EQ(p.Get(SwayParamId::kMLeaf), 3.0);
+  EXPECT_EQ(p.Get(SwayParamId::kSLeaf), 30.0);
+  EXPECT_EQ(p.Get(SwayParamId::kAlpha), 2.0);
+  EXPECT_EQ(p.Get(SwayParamId::kDt), 1.0 / 30.0);
+  EXPECT_EQ(p.Set(SwayParamId::kKRev, 1.5),
+            "K_rev: 1.5 is out of range; must be a number in [0, 1]");
+  EXPECT_EQ(p.Get(SwayParamId::kKRev), 0.8);  // unchanged after a rejected value
+  EXPECT_EQ(p.SetFromText("gravity_preload", "0.5"),
+            "gravity_preload: 0.5 is out of range; must be a whole number in [0, 1]");
+  EXPECT_EQ(p.SetFromText("nope", "1"), "unknown sway parameter 'nope'");
+  EXPECT_EQ(p.SetFromText("wind", "abc"), "wind: 'abc' is not a number in [0, 100]");
+  EXPECT_EQ(p.SetFromText("wind", "12.5"), "");
+  EXPECT_EQ(p.Get(SwayParamId::kWindSpeed), 12.5);
+  EXPECT_EQ(p.Validate(), "");
+  EXPECT_EQ(p.Set(SwayParamId::kGustOff, 0.5), "");
+  EXPECT_NE(p.Validate(), "");
+  for (const SwayParamSpec& s : SwayParamTable()) {
+    EXPECT_LE(s.min_value, s.default_value) << s.key;
+    EXPECT_GE(s.max_value, s.default_value) << s.key;
+    EXPECT_EQ(FindSwayParam(s.key), s.id) << s.key;
+  }
+}
+
+TEST(SwayModel, MassAreaAndOmissionOnHandBuiltTree) {
+  Tree t;
+  // Thick short trunk: thesis eq. 3.16 holds -> parent is the root -> fixed.
+  int trunk = AddBranch(&t, -1, 0, {0, 0, 0}, {0, 10, 0}, 2, 5.0f);
+  // Long thin arm: moves.
+  int arm = AddBranch(&t, trunk, 2, {}, {0, 10, 100}, 10, 0.3f);
+  // Short thin twig on the fixed trunk: fixed.
+  int stub = AddBranch(&t, trunk, 1, {}, {5, 5, 0}, 1, 0.3f);
+  // Short twig on the moving arm: follower; and its own short child follows too.
+  int twig = AddBranch(&t, arm, 10, {}, {0, 13, 100}, 1, 0.2f);
+  int twig2 = AddBranch(&t, twig, 1, {}, {0, 15, 100}, 1, 0.1f);
+  // The same short twig on the fixed trunk but with heavy leaves: moves (eq. 3.3 raises m).
+  int leafy = AddBranch(&t, trunk, 2, {}, {-5, 10, 0}, 5, 0.3f, 5);
+  SwayParams p;
+  SwayModel m = BuildSwayModel(t, p);
+  auto node = [&](int branch) {
+    return m.nodes[static_cast<std::size_t>(m.node_of_branch[static_cast<std::size_t>(branch)])];
+  };
+  EXPECT_EQ(node(trunk).kind, SwayKind::kFixed);
+  EXPECT_EQ(node(arm).kind, SwayKind::kMoving);
+  EXPECT_EQ(node(stub).kind, SwayKind::kFixed);
+  EXPECT_EQ(node(twig).kind, SwayKind::kFollower);
+  EXPECT_EQ(node(twig2).kind, SwayKind::kFollower);
+  EXPECT_EQ(node(leafy).kind, SwayKind::kMoving);
+  EXPECT_EQ(m.moving, 2);
+  EXPECT_EQ(m.followers, 2);
+  EXPECT_EQ(m.fixed, 2);
+  EXPECT_EQ(m.internodes, 2 + 10 + 1 + 1 + 1 + 5);
+
+  // thesis eqs. 3.1-3.4 by hand for the leafy twig: d = 0.3, l = 5, n = 5.
+  const double pi = 3.14159265358979323846;
+  double d = static_cast<double>(BranchRadius(t.branches[static_cast<std::size_t>(leafy)]));
+  EXPECT_NEAR(d, 0.3, 1e-6);
+  EXPECT_NEAR(node(leafy).mass, pi * d * d * 5.0 * 0.12 + 5 * 3.0, 1e-4);
+  EXPECT_NEAR(node(leafy).area, 2 * pi * d * 5.0 + 5 * 30.0, 1e-4);
+  // K_dir linear in radius from tip (thinnest -> 50000 + ...) to trunk (thickest -> 150000).
+  EXPECT_NEAR(node(trunk).k_dir, 150000.0, 1e-6);
+  EXPECT_NEAR(node(arm).k_dir, 50000.0 + 100000.0 * (0.3 / 5.0), 1e-2);
+  // The stiffness and eq. 3.16 by hand for the stub: ratio far above 1.
+  double k = node(stub).k_dir * pi * d * d / 5.0;
+  EXPECT_NEAR(node(stub).stiffness, k, 1e-3 * k);
+  EXPECT_GT(k, 3.0 * node(stub).mass * 900.0);
+
+  // Without leaf mass the leafy twig is as stiff as the stub (eq. 3.16): fixed.
+  SwayModel bare = BuildSwayModel(t, Params({{SwayParamId::kMLeaf, 0}}));
+  EXPECT_EQ(
+      bare.nodes[static_cast<std::size_t>(bare.node_of_branch[static_cast<std::size_t>(leafy)])]
+          .kind,
+      SwayKind::kFixed);
+  EXPECT_EQ(bare.moving, 1);
+  EXPECT_EQ(bare.moving + bare.followers + bare.fixed, 6);
+}
+
+TEST(SwayModel, DeadBranchesAreLeftOut) {
+  Tree t = SymmetricTree();
+  t.branches[1].alive = false;  // the left arm and, with it, its twig
+  SwayModel m = BuildSwayModel(t, SwayParams());
+  EXPECT_EQ(m.nodes.size(), 4u);
+  EXPECT_EQ(m.node_of_branch[1], -1);
+  EXPECT_EQ(m.node_of_branch[3], -1);
+}
+
+TEST(SwaySimulator, StillAirStaysAtRest) {
+  Tree t = SymmetricTree();
+  SwaySimulator sim(t, Params({{SwayParamId::kWindSpeed, 0}}));
+  for (int k = 0; k < 300; ++k) sim.Step();
+  EXPECT_LT(MaxDisplacement(sim), 1e-9);
+  EXPECT_LT(MaxSpeed(sim), 1e-9);
+  // Also on a grown tree.
+  Tree grown = GrownTree(6);
+  SwaySimulator sim2(grown, Params({{SwayParamId::kWindSpeed, 0}}));
+  for (int k = 0; k < 150; ++k) sim2.Step();
+  EXPECT_LT(MaxDisplacement(sim2), 1e-6);
+}
+
+TEST(SwaySimulator, WithoutPreloadGravitySagsButSettles) {
+  // K_rev = 0: with reactions and a sag of ~90 degrees the soft twigs can flutter slowly
+  // (docs/sway-model.md, open points).
+  Tree t = SymmetricTree();
+  SwaySimulator sim(t, Params({{SwayParamId::kWindSpeed, 0},
+                               {SwayParamId::kGravityPreload, 0},
+                               {SwayParamId::kKRev, 0}}));
+  for (int k = 0; k < 30 * 20; ++k) sim.Step();
+  EXPECT_GT(MaxDisplacement(sim), 1e-3);  // the thesis's sag under the weight of the leaves
+  EXPECT_LT(MaxSpeed(sim), 1e-2);         // and at rest again
+}
+
+TEST(SwaySimulator, RestLengthsKeptAfterEveryStep) {
+  Tree grown = GrownTree(7);
+  SwaySimulator sim(grown, Params({{SwayParamId::kWindSpeed, 20},
+                                   {SwayParamId::kGustOn, 0},
+                                   {SwayParamId::kGustOff, 3}}));
+  ASSERT_GT(sim.model().moving, 0);
+  for (int k = 0; k < 150; ++k) {
+    sim.Step();
+    for (std::size_t u = 0; u < sim.model().nodes.size(); ++u) {
+      const SwayNode& s = sim.model().nodes[u];
+      double len = glm::length(sim.tips()[u] - sim.anchors()[u]);
+      ASSERT_NEAR(len, s.rest_length, 1e-6 * std::max(s.rest_length, 1e-3))
+          << "step " << k << " node " << u;
+    }
+  }
+  EXPECT_GT(MaxDisplacement(sim), 0.1);
+}
+
+TEST(SwaySimulator, NoBlowUpAt50MetresPerSecond) {
+  Tree grown = GrownTree(8);
+  SwayParams p = Params({{SwayParamId::kWindSpeed, 50},
+                         {SwayParamId::kGustOn, 0.5},
+                         {SwayParamId::kGustOff, 5},
+                         {SwayParamId::kDuration, 15}});
+  SwayRun run = RunSway(grown, p, 4);
+  EXPECT_TRUE(run.finite);
+  EXPECT_GT(run.max_tip_displacement, 1.0);
+  SwaySimulator sim(grown, p);
+  double max_speed = 0;
+  for (int k = 0; k < 30 * 15; ++k) {
+    sim.Step();
+    max_speed = std::max(max_speed, MaxSpeed(sim));
+    for (const dvec3& x : sim.tips()) ASSERT_TRUE(std::isfinite(x.x + x.y + x.z)) << k;
+  }
+  EXPECT_LT(max_speed, 2.0 * 5000.0);  // cm/s: never faster than twice the wind
+  EXPECT_LT(MaxDisplacement(sim), 0.5 * run.max_tip_displacement);  // calming down at t = 15
+}
+
+TEST(SwaySimulator, MotionDecaysAfterTheWindStops) {
+  Tree t = SymmetricTree();
+  SwaySimulator sim(t, Params({{SwayParamId::kWindSpeed, 10},
+                               {SwayParamId::kGustOn, 0},
+                               {SwayParamId::kGustOff, 3}}));
+  double during = 0;
+  for (int k = 0; k < 90; ++k) {
+    sim.Step();
+    during = std::max(during, MaxDisplacement(sim));
+  }
+  EXPECT_GT(during, 1.0);  // cm: the wind really bends the tree
+  for (int k = 0; k < 30 * 30; ++k) sim.Step();
+  EXPECT_LT(MaxDisplacement(sim), 1e-3 * during);
+  EXPECT_LT(MaxSpeed(sim), 1e-2);
+}
+
+TEST(SwaySimulator, GrownTreeComesToRestAfterTheGust) {
+  Tree grown = GrownTree(9);
+  SwaySimulator sim(grown, Params({{SwayParamId::kWindSpeed, 20},
+                                   {SwayParamId::kGustOn, 0.5},
+                                   {SwayParamId::kGustOff, 3}}));
+  double during = 0;
+  for (int k = 0; k < 90; ++k) {
+    sim.Step();
+    during = std::max(during, MaxDisplacement(sim));
+  }
+  for (int k = 0; k < 30 * 20; ++k) sim.Step();
+  EXPECT_GT(during, 5.0);
+  EXPECT_LT(MaxDisplacement(sim), 0.05 * during);
+  EXPECT_LT(MaxSpeed(sim), 5.0);
+}
+
+TEST(SwaySimulator, SymmetricWindGivesSymmetricMotion) {
+  Tree t = SymmetricTree();
+  // Wind along +z: the tree and the wind are both symmetric under x -> -x.
+  SwaySimulator sim(t, Params({{SwayParamId::kWindDir, 90},
+                               {SwayParamId::kGustOn, 0},
+                               {SwayParamId::kWindSpeed, 8}}));
+  const SwayModel& m = sim.model();
+  auto at = [&](int branch) {
+    return sim.tips()[static_cast<std::size_t>(m.node_of_branch[static_cast<std::size_t>(branch)])];
+  };
+  double moved = 0;
+  for (int k = 0; k < 240; ++k) {
+    sim.Step();
+    for (auto [l, r] : {std::pair<int, int>{1, 2}, {3, 4}}) {
+      dvec3 a = at(l), b = at(r);
+      ASSERT_NEAR(a.x, -b.x, 1e-9) << k;
+      ASSERT_NEAR(a.y, b.y, 1e-9) << k;
+      ASSERT_NEAR(a.z, b.z, 1e-9) << k;
+    }
+    ASSERT_NEAR(at(0).x, 0.0, 1e-9);
+    ASSERT_NEAR(at(5).x, 0.0, 1e-9);
+    moved = std::max(moved, at(3).z - 5.0);
+  }
+  EXPECT_GT(moved, 1.0);  // downwind, cm
+}
+
+TEST(SwaySimulator, ReactionReachesTheParent) {
+  // thesis eqs. 3.9-3.10: with K_rev > 0 the trunk moves more than without.
+  Tree t = SymmetricTree();
+  double trunk[2];
+  for (int c = 0; c < 2; ++c) {
+    SwaySimulator sim(
+        t, Params({{SwayParamId::kKRev, c == 0 ? 0.0 : 1.0}, {SwayParamId::kGustOn, 0}}));
+    ASSERT_EQ(sim.model().nodes[0].kind, SwayKind::kMoving);
+    trunk[c] = 0;
+    for (int k = 0; k < 60; ++k) {
+      sim.Step();
+      trunk[c] = std::max(trunk[c], glm::length(sim.tips()[0] - sim.model().nodes[0].rest_tip));
+    }
+  }
+  EXPECT_GT(trunk[1], 1.05 * trunk[0]);
+}
+
+TEST(SwaySimulator, InterpolationKeepsEndsAndRestPose) {
+  Tree t = SymmetricTree();
+  SwaySimulator sim(t, Params({{SwayParamId::kGustOn, 0}}));
+  Tree rest = sim.DeformedTree(t);
+  for (std::size_t b = 0; b < t.branches.size(); ++b) {
+    for (std::size_t k = 0; k < t.branches[b].nodes.size(); ++k) {
+      EXPECT_NEAR(glm::length(rest.branches[b].nodes[k] - t.branches[b].nodes[k]), 0.0f, 1e-5f);
+    }
+  }
+  for (int k = 0; k < 30; ++k) sim.Step();
+  for (std::size_t u = 0; u < sim.model().nodes.size(); ++u) {
+    int i = static_cast<int>(u),
+        last = static_cast<int>(sim.model().nodes[u].rest_nodes.size()) - 1;
+    EXPECT_EQ(sim.NodePosition(i, 0), sim.anchors()[u]);
+    EXPECT_NEAR(glm::length(sim.NodePosition(i, last) - sim.tips()[u]), 0.0, 1e-9);
+  }
+  // A child's base stays on its parent's interpolated node (the tree does not come apart).
+  Tree moved = sim.DeformedTree(t);
+  for (const Branch& b : moved.branches) {
+    if (b.parent < 0) continue;
+    const Branch& parent = moved.branches[static_cast<std::size_t>(b.parent)];
+    EXPECT_NEAR(glm::length(b.nodes[0] - parent.nodes[static_cast<std::size_t>(b.parent_node)]),
+                0.0f, 1e-4f);
+  }
+  // Eq. 3.15 with α = 2 bends less near the base than α = 1 (a straight chord).
+  const SwayNode& arm = sim.model().nodes[1];
+  dvec3 mid = sim.NodePosition(1, 2);
+  dvec3 chord = sim.anchors()[1] + (sim.tips()[1] - sim.anchors()[1]) * arm.arc_ratio[2];
+  EXPECT_GT(glm::length(mid - chord), 1e-6);
+}
+
+TEST(SwaySimulator, SameRunTwiceIsIdentical) {
+  Tree grown = GrownTree(6);
+  SwayParams p = Params({{SwayParamId::kWindSpeed, 15}, {SwayParamId::kDuration, 4}});
+  SwayRun a = RunSway(grown, p, 5), b = RunSway(grown, p, 5);
+  ASSERT_EQ(a.tip_positions.size(), b.tip_positions.size());
+  EXPECT_EQ(a.tip_branches, b.tip_branches);
+  for (std::size_t t = 0; t < a.tip_positions.size(); ++t) {
+    ASSERT_EQ(a.tip_positions[t].size(), b.tip_positions[t].size());
+    for (std::size_t k = 0; k < a.tip_positions[t].size(); ++k) {
+      ASSERT_EQ(a.tip_positions[t][k], b.tip_positions[t][k]);
+    }
+  }
+  EXPECT_EQ(a.max_tip_displacement, b.max_tip_displacement);
+  EXPECT_EQ(SwayCsv(a), SwayCsv(b));
+}
+
+}  // namespace
+}  // namespace niwa
