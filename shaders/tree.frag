@@ -5,6 +5,7 @@ precision highp float;
 
 in vec3 vNormal;
 in vec3 vWorld;
+in float vSelected;  // 1 on the selected branch, 0.5 above it (drawn highlighted)
 
 uniform vec3 uColor;
 uniform vec3 uColorVariation;  // added with a per-position hash (leaf-to-leaf variation)
@@ -12,6 +13,7 @@ uniform vec3 uLightDirection;  // unit, towards the sun
 uniform vec3 uCameraPosition;
 uniform float uDoubleSided;
 uniform float uSpecular;
+uniform float uXray;  // 1 in the see-through pass that shows a selection hidden behind leaves
 
 out vec4 outColor;
 
@@ -22,6 +24,7 @@ float hash(vec3 p) {
 }
 
 void main() {
+  if (uXray > 0.5 && vSelected <= 0.0) discard;
   vec3 n = normalize(vNormal);
   if (uDoubleSided > 0.5 && !gl_FrontFacing) n = -n;
   vec3 base = uColor + uColorVariation * (hash(floor(vWorld * 40.0)) - 0.5);
@@ -34,5 +37,7 @@ void main() {
   vec3 halfway = normalize(view + uLightDirection);
   float spec = uSpecular * pow(max(dot(n, halfway), 0.0), 24.0);
   vec3 color = base * (ambient + vec3(1.0, 0.97, 0.9) * diffuse * 0.85) + vec3(spec);
-  outColor = vec4(pow(color, vec3(1.0 / 1.1)), 1.0);
+  vec3 mark = vSelected > 0.75 ? vec3(1.0, 0.55, 0.1) : vec3(1.0, 0.85, 0.25);
+  color = mix(color, mark * (0.45 + 0.75 * diffuse), vSelected > 0.0 ? 0.85 : 0.0);
+  outColor = vec4(pow(color, vec3(1.0 / 1.1)), uXray > 0.5 ? 0.65 : 1.0);
 }

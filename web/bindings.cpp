@@ -12,7 +12,10 @@
 //   encodeHash(stateJson) -> {hash} or {error}
 //   GrowSession(stateJson): error(), years(), year(), growYear(), done(), buildMesh(), statsJson(),
 //                           barkPositions() ... flowersIndices() as typed-array views into WASM
-//                           memory.
+//                           memory; barkBranchIds() (Uint32, one per bark vertex);
+//                           branchParents() (Int32 parent id per branch, -1 at the root);
+//                           buildGlb() -> "" or error, then glbBytes() (Uint8 view of the .glb);
+//                           paramsJson() (ParamsToJson of the state's parameters).
 //
 // The mesh views (emscripten::typed_memory_view) point into the WASM heap: they stay valid only
 // until the next call that may allocate. The worker copies each one ONCE into a fresh ArrayBuffer
@@ -30,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "io/gltf_export.h"
 #include "io/json_io.h"
 #include "io/url_codec.h"
 #include "params/param_table.h"
@@ -157,13 +161,13 @@ std::string StateFromJson(const std::string& text, TreeState* state) {
   }
   if (document.contains("camera")) {
     const json& camera = document["camera"];
-    bool ok =
-        camera.is_string() && camera.get<std::string>().size() < 128 &&
-        std::all_of(camera.get<std::string>().begin(), camera.get<std::string>().end(), [](char c) {
-          return (c >= '0' && c <= '9') || c == '.' || c == ',' || c == '-' || c == 'e';
-        });
+    // One copy of the text: begin() and end() must come from the same string.
+    const std::string text = camera.is_string() ? camera.get<std::string>() : std::string("?");
+    bool ok = text.size() < 128 && std::all_of(text.begin(), text.end(), [](char c) {
+                return (c >= '0' && c <= '9') || c == '.' || c == ',' || c == '-' || c == 'e';
+              });
     if (!ok) return "camera: must be numbers separated by commas";
-    result.camera = camera.get<std::string>();
+    result.camera = text;
   }
   *state = std::move(result);
   return "";
@@ -243,6 +247,8 @@ class GrowSession {
   void buildMesh() {
     if (!grower_) return;
     mesh_ = BuildTreeMesh(grower_->tree());
+    parents_.clear();
+    for (const Branch& branch : grower_->tree().branches) parents_.push_back(branch.parent);
   }
 
   // {internodes, branches, leaves, flowers, height (cm), years, seed, preset, truncated, ms,
@@ -292,6 +298,21 @@ class GrowSession {
   emscripten::val flowersPositions() const { return View(mesh_.flowers.positions); }
   emscripten::val flowersNormals() const { return View(mesh_.flowers.normals); }
   emscripten::val flowersIndices() const { return View(mesh_.flowers.indices); }
+  // Branch id of each bark vertex (picking and the selection highlight).
+  emscripten::val barkBranchIds() const { return View(mesh_.bark_branch_id); }
+  // Parent branch id of every branch (-1 for the seedling shoot): what a cut takes with it.
+  emscripten::val branchParents() const { return View(parents_); }
+
+  // Binary glTF of the mesh last built (buildMesh); "" or one error line. Then glbBytes() views it.
+  std::string buildGlb() {
+    glb_.clear();
+    if (!grower_) return error_.empty() ? "no tree" : error_;
+    return WriteGlb(mesh_, &glb_);
+  }
+  emscripten::val glbBytes() const { return View(glb_); }
+
+  // The state's full parameter set as JSON (ParamsToJson), for the "Download .json" button.
+  std::string paramsJson() const { return ParamsToJson(state_.params); }
 
  private:
   template <typename T>
@@ -303,6 +324,8 @@ class GrowSession {
   std::string error_;
   std::unique_ptr<Grower> grower_;
   TreeMesh mesh_;
+  std::vector<int32_t> parents_;
+  std::vector<unsigned char> glb_;
 };
 
 }  // namespace niwa
@@ -331,5 +354,10 @@ EMSCRIPTEN_BINDINGS(niwa) {
       .function("leavesIndices", &niwa::GrowSession::leavesIndices)
       .function("flowersPositions", &niwa::GrowSession::flowersPositions)
       .function("flowersNormals", &niwa::GrowSession::flowersNormals)
-      .function("flowersIndices", &niwa::GrowSession::flowersIndices);
+      .function("flowersIndices", &niwa::GrowSession::flowersIndices)
+      .function("barkBranchIds", &niwa::GrowSession::barkBranchIds)
+      .function("branchParents", &niwa::GrowSession::branchParents)
+      .function("buildGlb", &niwa::GrowSession::buildGlb)
+      .function("glbBytes", &niwa::GrowSession::glbBytes)
+      .function("paramsJson", &niwa::GrowSession::paramsJson);
 }

@@ -13,15 +13,35 @@ export class OrbitCamera {
     this.far = 500;
   }
 
-  // Frames an axis-aligned box {min:[x,y,z], max:[x,y,z]} (metres), keeping yaw and pitch.
-  frame(bounds) {
+  // Frames an axis-aligned box {min:[x,y,z], max:[x,y,z]} (metres), keeping yaw and pitch;
+  // margin > 1 leaves room around it.
+  frame(bounds, margin = 1.02) {
     const min = bounds.min, max = bounds.max;
     const size = [max[0] - min[0], max[1] - min[1], max[2] - min[2]];
     const radius = Math.max(0.25, 0.5 * Math.hypot(size[0], size[1], size[2]));
     this.target = [(min[0] + max[0]) / 2, (min[1] + max[1]) / 2, (min[2] + max[2]) / 2];
-    this.distance = (radius / Math.sin(this.fov / 2)) * 1.02;
+    this.distance = (radius / Math.sin(this.fov / 2)) * margin;
     this.far = Math.max(100, this.distance * 20);
     this.near = Math.max(0.01, this.distance / 1000);
+  }
+
+  // "yaw,pitch,distance,tx,ty,tz" for the share link's cam= field.
+  toHash() {
+    const r = (x, d) => String(Number(x.toFixed(d)));
+    return [r(this.yaw, 4), r(this.pitch, 4), r(this.distance, 3), ...this.target.map((t) => r(t, 3))].join(',');
+  }
+
+  // Reads toHash()'s text; false (camera unchanged) unless it holds six finite numbers.
+  fromHash(text) {
+    const v = String(text || '').split(',').map(Number);
+    if (v.length !== 6 || !v.every(Number.isFinite)) return false;
+    this.yaw = v[0];
+    this.pitch = clamp(v[1], -0.1, 1.5);
+    this.distance = clamp(v[2], 0.2, 400);
+    this.target = v.slice(3);
+    this.far = Math.max(100, this.distance * 20);
+    this.near = Math.max(0.01, this.distance / 1000);
+    return true;
   }
 
   orbit(dYaw, dPitch) {
@@ -31,6 +51,8 @@ export class OrbitCamera {
 
   zoom(factor) {
     this.distance = clamp(this.distance * factor, 0.2, 400);
+    this.far = Math.max(100, this.distance * 20);
+    this.near = Math.max(0.01, this.distance / 1000);
   }
 
   position() {

@@ -2,6 +2,7 @@
 // Shaders (GLSL ES 3.00) are fetched at runtime from /shaders/.
 
 const BACKGROUND = [0.86, 0.90, 0.94];
+const NONE = 0xffffffff;  // "no branch" for the branch-id attribute and the selection
 
 const PARTS = {
   bark: { color: [0.36, 0.25, 0.18], variation: [0.04, 0.03, 0.02], doubleSided: 0, specular: 0.03 },
@@ -61,10 +62,13 @@ export class Renderer {
   }
 
   async init(shaderBase = new URL('../shaders/', import.meta.url).href) {
-    const [treeVert, treeFrag, groundVert, groundFrag] = await Promise.all(
-      ['tree.vert', 'tree.frag', 'ground.vert', 'ground.frag'].map((f) => fetchText(new URL(f, shaderBase).href)));
+    const [treeVert, treeFrag, groundVert, groundFrag, pickVert, pickFrag] = await Promise.all(
+      ['tree.vert', 'tree.frag', 'ground.vert', 'ground.frag', 'pick.vert', 'pick.frag']
+        .map((f) => fetchText(new URL(f, shaderBase).href)));
     const gl = this.gl;
     this.treeProgram = link(gl, treeVert, treeFrag, 'tree');
+    this.pickProgram = link(gl, pickVert, pickFrag, 'pick');
+    this.selected = NONE;
     this.groundProgram = link(gl, groundVert, groundFrag, 'ground');
     this.groundVao = gl.createVertexArray();
     gl.bindVertexArray(this.groundVao);
@@ -76,7 +80,8 @@ export class Renderer {
     gl.bindVertexArray(null);
   }
 
-  // mesh: {bark|leaves|flowers: {positions, normals, indices}} as ArrayBuffers; bounds in metres.
+  // mesh: {bark|leaves|flowers: {positions, normals, indices}} as ArrayBuffers (bark also has
+  // branchIds: Uint32 per vertex); bounds in metres.
   setTree(mesh, bounds) {
     const gl = this.gl;
     for (const part of Object.values(this.parts)) {
@@ -84,6 +89,7 @@ export class Renderer {
       part.buffers.forEach((b) => gl.deleteBuffer(b));
     }
     this.parts = {};
+    this.highlight = null;
     for (const name of Object.keys(PARTS)) {
       const data = mesh[name];
       if (!data || data.indices.byteLength === 0) continue;
@@ -100,12 +106,32 @@ export class Renderer {
       };
       attribute(0, data.positions);
       attribute(1, data.normals);
+      if (data.branchIds && data.branchIds.byteLength === data.positions.byteLength / 3) {
+        const buffer = gl.createBuffer();
+        gl.bindBuffer(gl.ARRAY_BUFFER, buffer);
+        gl.bufferData(gl.ARRAY_BUFFER, data.branchIds, gl.STATIC_DRAW);
+        gl.enableVertexAttribArray(2);
+        gl.vertexAttribIPointer(2, 1, gl.UNSIGNED_INT, 0, 0);
+        buffers.push(buffer);
+        // Selection highlight per vertex (select() fills it).
+        this.branchIds = new Uint32Array(data.branchIds);
+        this.branchParents = new Int32Array(data.branchParents || new ArrayBuffer(0));
+        this.highlight = new Float32Array(this.branchIds.length);
+        this.highlightBuffer = gl.createBuffer();
+        gl.bindBuffer(gl.ARRAY_BUFFER, this.highlightBuffer);
+        gl.bufferData(gl.ARRAY_BUFFER, this.highlight, gl.DYNAMIC_DRAW);
+        gl.enableVertexAttribArray(3);
+        gl.vertexAttribPointer(3, 1, gl.FLOAT, false, 0, 0);
+        buffers.push(this.highlightBuffer);
+      } else {
+        gl.disableVertexAttribArray(2);
+      }
       const index = gl.createBuffer();
       gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, index);
       gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, data.indices, gl.STATIC_DRAW);
       buffers.push(index);
       gl.bindVertexArray(null);
-      this.parts[name] = { vao, buffers, count: data.indices.byteLength / 4 };
+      this.parts[name] = { vao, buffers, count: data.indices.byteLength / 4, picking: Boolean(data.branchIds) };
     }
     const min = bounds.min, max = bounds.max;
     this.center = [(min[0] + max[0]) / 2, 0, (min[2] + max[2]) / 2];
@@ -152,16 +178,118 @@ export class Renderer {
     gl.uniformMatrix4fv(t.uniforms.uViewProjection, false, viewProjection);
     gl.uniform3fv(t.uniforms.uLightDirection, this.light);
     gl.uniform3fv(t.uniforms.uCameraPosition, camera.position());
+    gl.vertexAttrib1f(3, 0);  // no highlight on parts without branch ids
     for (const [name, part] of Object.entries(this.parts)) {
       const look = PARTS[name];
       gl.uniform3fv(t.uniforms.uColor, look.color);
       gl.uniform3fv(t.uniforms.uColorVariation, look.variation);
       gl.uniform1f(t.uniforms.uDoubleSided, look.doubleSided);
       gl.uniform1f(t.uniforms.uSpecular, look.specular);
+      gl.uniform1f(t.uniforms.uXray, 0);
       gl.bindVertexArray(part.vao);
       gl.drawElements(gl.TRIANGLES, part.count, gl.UNSIGNED_INT, 0);
     }
+    // The selection once more, faintly through everything, so a branch behind leaves shows.
+    if (this.selected !== NONE && this.parts.bark) {
+      gl.uniform1f(t.uniforms.uXray, 1);
+      gl.uniform3fv(t.uniforms.uColor, PARTS.bark.color);
+      gl.uniform1f(t.uniforms.uDoubleSided, 0);
+      gl.disable(gl.DEPTH_TEST);
+      gl.enable(gl.BLEND);
+      gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
+      gl.bindVertexArray(this.parts.bark.vao);
+      gl.drawElements(gl.TRIANGLES, this.parts.bark.count, gl.UNSIGNED_INT, 0);
+      gl.disable(gl.BLEND);
+      gl.enable(gl.DEPTH_TEST);
+    }
     gl.bindVertexArray(null);
+  }
+
+  // Highlights one branch (id) and, fainter, every branch growing from it (what a cut removes);
+  // null clears the highlight.
+  select(id) {
+    this.selected = Number.isInteger(id) && id >= 0 ? id : NONE;
+    if (!this.highlight || !this.parts.bark) return;
+    const parents = this.branchParents;
+    const mark = new Float32Array(parents.length);  // per branch: 0, 0.5 above, 1 selected
+    if (this.selected !== NONE && this.selected < parents.length) {
+      mark[this.selected] = 1;
+      // Parents come before their children (ids grow with time), so one pass in id order suffices.
+      for (let b = this.selected + 1; b < parents.length; ++b) {
+        const p = parents[b];
+        if (p >= 0 && mark[p] > 0) mark[b] = 0.5;
+      }
+    }
+    for (let v = 0; v < this.branchIds.length; ++v) this.highlight[v] = mark[this.branchIds[v]] || 0;
+    const gl = this.gl;
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.highlightBuffer);
+    gl.bufferSubData(gl.ARRAY_BUFFER, 0, this.highlight);
+    gl.bindBuffer(gl.ARRAY_BUFFER, null);
+  }
+
+  // Branch id under canvas pixel (x, y) in CSS pixels from the top left, or null: draws the bark's
+  // branch ids into an offscreen framebuffer and reads a small square around the point (the
+  // nearest hit wins, so thin twigs can be clicked).
+  pick(camera, x, y, radius = 4) {
+    const gl = this.gl;
+    const bark = this.parts.bark;
+    if (!this.pickProgram || !bark || !bark.picking) return null;
+    this.resize();
+    const w = this.canvas.width, h = this.canvas.height;
+    if (!this.pickTarget || this.pickTarget.w !== w || this.pickTarget.h !== h) {
+      if (this.pickTarget) {
+        gl.deleteFramebuffer(this.pickTarget.fb);
+        gl.deleteRenderbuffer(this.pickTarget.color);
+        gl.deleteRenderbuffer(this.pickTarget.depth);
+      }
+      const fb = gl.createFramebuffer();
+      const color = gl.createRenderbuffer();
+      const depth = gl.createRenderbuffer();
+      gl.bindRenderbuffer(gl.RENDERBUFFER, color);
+      gl.renderbufferStorage(gl.RENDERBUFFER, gl.RGBA8, w, h);
+      gl.bindRenderbuffer(gl.RENDERBUFFER, depth);
+      gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, w, h);
+      gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+      gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.RENDERBUFFER, color);
+      gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depth);
+      this.pickTarget = { fb, color, depth, w, h };
+    }
+    gl.bindFramebuffer(gl.FRAMEBUFFER, this.pickTarget.fb);
+    gl.viewport(0, 0, w, h);
+    gl.clearColor(0, 0, 0, 0);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    gl.enable(gl.DEPTH_TEST);
+    gl.disable(gl.BLEND);
+    gl.disable(gl.DITHER);  // ids must come back bit-exact
+    const p = this.pickProgram;
+    gl.useProgram(p.program);
+    gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, camera.viewProjection(w / h));
+    gl.bindVertexArray(bark.vao);
+    gl.drawElements(gl.TRIANGLES, bark.count, gl.UNSIGNED_INT, 0);
+    gl.bindVertexArray(null);
+
+    const scale = w / Math.max(1, this.canvas.clientWidth);
+    const px = Math.round(x * scale), py = Math.round(h - 1 - y * scale);
+    const r = Math.round(radius * scale);
+    const x0 = Math.max(0, px - r), y0 = Math.max(0, py - r);
+    const x1 = Math.min(w - 1, px + r), y1 = Math.min(h - 1, py + r);
+    let best = null, bestDistance = Infinity;
+    if (x1 >= x0 && y1 >= y0) {
+      const rw = x1 - x0 + 1, rh = y1 - y0 + 1;
+      const data = new Uint8Array(rw * rh * 4);
+      gl.readPixels(x0, y0, rw, rh, gl.RGBA, gl.UNSIGNED_BYTE, data);
+      for (let j = 0; j < rh; ++j) {
+        for (let i = 0; i < rw; ++i) {
+          const k = (j * rw + i) * 4;
+          const v = data[k] | (data[k + 1] << 8) | (data[k + 2] << 16);
+          const d = (x0 + i - px) ** 2 + (y0 + j - py) ** 2;
+          if (v > 0 && d < bestDistance) { bestDistance = d; best = v - 1; }
+        }
+      }
+    }
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.enable(gl.DITHER);
+    return best;
   }
 }
 

@@ -48,5 +48,14 @@ for (const preset of presets) {
     check(worst <= tolerance, `${preset} seed ${seed}: largest position difference ${worst.toExponential(2)} cm <= ${tolerance.toExponential(2)}`);
   }
 }
+// Sway (thesis ch. 3): the tip trajectories are the same bytes in both builds.
+for (const preset of ['keyaki', 'tsutsuji']) {
+  const args = ['tree', 'sway', '--preset', preset, '--years', '8', '--wind', '12', '--gust', '0.5:3',
+    '--duration', '5'];
+  run(native, [...args, '--csv', join(dir, `${preset}-n.csv`)]);
+  run(wasm, [...args, '--csv', join(dir, `${preset}-w.csv`)]);
+  const a = readFileSync(join(dir, `${preset}-n.csv`), 'utf8'), b = readFileSync(join(dir, `${preset}-w.csv`), 'utf8');
+  check(a.length > 100 && a === b, `${preset} sway: native and WASM tip trajectories identical (${a.split('\n').length} lines)`);
+}
 console.log(`${passed} passed, ${failed} failed`);
 process.exit(failed ? 1 : 0);

@@ -1,0 +1,393 @@
+// Browser test of the Niwa page's editing features: node tests/browser/features.test.mjs (exit 0 = pass).
+// Year scrubber and play, click-to-prune with undo/redo, share link with camera, back/forward,
+// exports (.glb checked with gltf-validator, .json, PNG), the embed dialog and malformed hashes.
+// Screenshots of each state go to build/artifacts/features-*.png.
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+import validator from 'gltf-validator';
+import { startServer } from '../../scripts/serve.mjs';
+
+const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
+const NATIVE = process.env.NIWA_NATIVE || path.join(ROOT, 'build/native/bin/niwa');
+const ARTIFACTS = path.join(ROOT, 'build/artifacts');
+const TIMEOUT = 180_000;
+fs.mkdirSync(ARTIFACTS, { recursive: true });
+
+let passed = 0, failed = 0;
+function check(name, ok, detail = '') {
+  if (ok) ++passed; else ++failed;
+  console.log(`${ok ? 'PASS' : 'FAIL'} ${name}${detail ? ` — ${detail}` : ''}`);
+}
+
+function nativeStats(args) {
+  const out = execFileSync(NATIVE, ['tree', 'grow', ...args, '--stats'], { encoding: 'utf8' });
+  return JSON.parse(out.trim().split('\n').pop());
+}
+
+const dataset = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
+const serialOf = async (page) => Number((await dataset(page)).treeSerial || 0);
+const statsWithoutTime = (text) => text.replace(/ · grown in \d+ ms$/, '');
+
+async function waitReady(page, serialAbove) {
+  await page.waitForFunction(
+    (n) => document.documentElement.dataset.status === 'ready' && Number(document.documentElement.dataset.treeSerial) > n,
+    serialAbove, { timeout: TIMEOUT, polling: 100 });
+  await page.waitForTimeout(300);  // let the frame for the new tree be drawn
+}
+
+// Runs action() and waits for the tree it causes.
+async function andWait(page, action) {
+  const serial = await serialOf(page);
+  await action();
+  await waitReady(page, serial);
+}
+
+// Luma spread and bark/highlight pixel shares of a canvas (the page's, or one in a shadow root).
+async function canvasPixels(page, selector = '#view') {
+  return page.evaluate((sel) => {
+    const [host, inner] = sel.split(' >>> ');
+    const src = inner ? document.querySelector(host).shadowRoot.querySelector(inner) : document.querySelector(host);
+    const c = document.createElement('canvas');
+    c.width = src.width;
+    c.height = src.height;
+    const ctx = c.getContext('2d', { willReadFrequently: true });
+    ctx.drawImage(src, 0, 0);
+    const data = ctx.getImageData(0, 0, c.width, c.height).data;
+    let sum = 0, sum2 = 0, n = 0, orange = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      const r = data[i], g = data[i + 1], b = data[i + 2];
+      const y = 0.299 * r + 0.587 * g + 0.114 * b;
+      sum += y; sum2 += y * y; ++n;
+      if (r > 150 && r - b > 90 && g < r - 20) ++orange;  // the selection highlight (orange, yellow)
+    }
+    const mean = sum / n;
+    return { width: c.width, height: c.height, std: Math.sqrt(Math.max(0, sum2 / n - mean * mean)), orange: orange / n };
+  }, selector);
+}
+
+// CSS-pixel point on the trunk: the lowest bark-coloured pixels near the middle of the view.
+async function findTrunk(page) {
+  return page.evaluate(() => {
+    const src = document.getElementById('view');
+    const c = document.createElement('canvas');
+    c.width = src.width;
+    c.height = src.height;
+    const ctx = c.getContext('2d', { willReadFrequently: true });
+    ctx.drawImage(src, 0, 0);
+    const data = ctx.getImageData(0, 0, c.width, c.height).data;
+    const scale = src.width / src.clientWidth;
+    for (let y = c.height - 1; y > c.height * 0.3; --y) {
+      const row = [];
+      for (let x = Math.floor(c.width * 0.3); x < c.width * 0.7; ++x) {
+        const i = (y * c.width + x) * 4;
+        const r = data[i], g = data[i + 1], b = data[i + 2];
+        if (r > g + 10 && g > b && r < 130) row.push(x);
+      }
+      if (row.length >= 3) {
+        const x = row[Math.floor(row.length / 2)];
+        return { x: x / scale, y: (y - 12 * scale) / scale };
+      }
+    }
+    return null;
+  });
+}
+
+const server = await startServer({ port: 0 });
+const browser = await chromium.launch({
+  executablePath: '/usr/bin/chromium',
+  headless: true,
+  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-gpu-sandbox',
+    '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update',
+    '--disable-sync'],
+});
+const problems = [];
+function watch(page) {
+  page.on('console', (m) => {
+    if (m.type() === 'error' || m.type() === 'warning') problems.push(`${m.type()}: ${m.text()}`);
+  });
+  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  page.on('requestfailed', (r) => { if (!r.url().startsWith('blob:')) problems.push(`requestfailed: ${r.url()}`); });
+  return page;
+}
+
+const START = 'preset=maple&seed=2&years=10';
+try {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, acceptDownloads: true });
+  await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: server.url.replace(/\/$/, '') });
+  const page = watch(await context.newPage());
+
+  // 1. A share link opens that tree; stats equal the native CLI.
+  await page.goto(`${server.url}#${START}`);
+  await waitReady(page, 0);
+  const full = await page.textContent('#stats');
+  const native10 = nativeStats(['--preset', 'maple', '--seed', '2', '--years', '10']);
+  check('link opens its tree (stats equal native CLI)', (await dataset(page)).internodes === String(native10.internodes),
+    `${full} / native ${native10.internodes}`);
+  const hash0 = await page.evaluate(() => location.hash);
+  check('camera is written into the hash', /&cam=-?[\d.]+(,-?[\d.e-]+){5}$/.test(hash0), hash0);
+
+  // 2. Changing a parameter changes the URL; reloading that URL gives the same stats and camera.
+  //    While the worker grows, the progress bar shows the years done.
+  await page.evaluate(() => {
+    const bar = document.getElementById('grow-progress');
+    window.progressSeen = [];
+    new MutationObserver(() => {
+      if (!bar.hidden) window.progressSeen.push(`${bar.value}/${bar.max}`);
+    }).observe(bar, { attributes: true });
+  });
+  await andWait(page, () => page.fill('#param-alpha_l', '0.5'));
+  const progressSeen = await page.evaluate(() => window.progressSeen);
+  check('progress bar shows the growing years', progressSeen.includes('5/10') && (await page.isHidden('#grow-progress')),
+    `${progressSeen.length} updates, e.g. ${progressSeen.slice(0, 4).join(' ')}; hidden when done`);
+  const editedHash = await page.evaluate(() => location.hash);
+  const edited = await page.textContent('#stats');
+  check('parameter change changes the URL', editedHash !== hash0 && editedHash.includes('alpha_l=0.5'), editedHash);
+  await page.reload();
+  await waitReady(page, 0);
+  const reloaded = await page.textContent('#stats');
+  check('reloading the URL gives the same stats', statsWithoutTime(reloaded) === statsWithoutTime(edited), reloaded);
+  check('reloading keeps the hash (camera included)', (await page.evaluate(() => location.hash)) === editedHash);
+  await page.screenshot({ path: path.join(ARTIFACTS, 'features-edited.png') });
+
+  // 3. Year scrubber: another age shows another tree (equal to the CLI at that age); the hash keeps
+  //    the full years; the keyboard moves it too; play animates to the full age.
+  await andWait(page, () => page.evaluate(() => {
+    const r = document.getElementById('year');
+    r.value = '5';
+    r.dispatchEvent(new Event('input', { bubbles: true }));
+  }));
+  const at5 = await dataset(page);
+  const native5 = nativeStats(['--preset', 'maple', '--seed', '2', '--years', '5', '--set', 'alpha_l=0.5']);
+  check('scrubbing to year 5 shows the 5-year tree', at5.year === '5' && at5.internodes === String(native5.internodes),
+    `year ${at5.year} internodes ${at5.internodes} native ${native5.internodes}`);
+  check('scrubbing keeps years in the hash', (await page.evaluate(() => location.hash)).includes('years=10'));
+  check('year label follows', (await page.textContent('#year-text')) === '5 of 10');
+  await page.screenshot({ path: path.join(ARTIFACTS, 'features-year5.png') });
+  await andWait(page, async () => {
+    await page.focus('#year');
+    await page.keyboard.press('ArrowRight');
+  });
+  check('arrow key on the scrubber moves one year', (await dataset(page)).year === '6');
+  const seen = new Set();
+  await page.click('#play');
+  const t0 = Date.now();
+  while (Date.now() - t0 < TIMEOUT) {
+    const d = await dataset(page);
+    if (d.status === 'ready') seen.add(d.year);
+    if ((await page.textContent('#play')) === 'Play' && d.status === 'ready') break;
+    await page.waitForTimeout(50);
+  }
+  check('play grows the tree year by year', seen.size >= 4 && (await dataset(page)).year === '10',
+    `years seen: ${[...seen].join(',')}`);
+
+  // 4. Prune by clicking the trunk: selected (highlighted), Delete cuts it, undo/redo and back restore.
+  const before = await dataset(page);
+  const hashBeforeCut = await page.evaluate(() => location.hash);
+  const trunk = await findTrunk(page);
+  check('trunk found in the picture', trunk !== null, JSON.stringify(trunk));
+  const box = await page.locator('#view').boundingBox();
+  await page.mouse.click(box.x + trunk.x, box.y + trunk.y);
+  await page.waitForTimeout(400);
+  const selected = (await dataset(page)).selected;
+  const highlight = await canvasPixels(page);
+  check('clicking the trunk selects a branch', /^\d+$/.test(selected || ''), `branch ${selected}; ${await page.textContent('#selection')}`);
+  check('selected branch is highlighted', highlight.orange > 0.0005, `orange ${(highlight.orange * 100).toFixed(3)}%`);
+  check('Cut is enabled', await page.isEnabled('#cut'));
+  await page.screenshot({ path: path.join(ARTIFACTS, 'features-selected.png') });
+  await andWait(page, () => page.keyboard.press('Delete'));
+  const cut = await dataset(page);
+  const cutHash = await page.evaluate(() => location.hash);
+  check('Delete prunes: internodes drop', Number(cut.internodes) < Number(before.internodes), `${before.internodes} -> ${cut.internodes}`);
+  check('prune is in the hash', cutHash.includes(`prune=10:b${selected}`), cutHash);
+  const nativeCut = nativeStats(['--preset', 'maple', '--seed', '2', '--years', '10', '--set', 'alpha_l=0.5', '--prune', `10:b${selected}`]);
+  check('pruned tree equals native CLI', cut.internodes === String(nativeCut.internodes), `web ${cut.internodes} native ${nativeCut.internodes}`);
+  await page.screenshot({ path: path.join(ARTIFACTS, 'features-pruned.png') });
+  await andWait(page, () => page.click('#undo'));
+  check('Undo restores the tree', (await dataset(page)).internodes === before.internodes);
+  check('Undo restores the hash', (await page.evaluate(() => location.hash)) === hashBeforeCut);
+  await andWait(page, async () => {
+    await page.focus('#view');
+    await page.keyboard.press('Control+Shift+Z');
+  });
+  check('Ctrl-Shift-Z redoes the cut', (await dataset(page)).internodes === cut.internodes);
+  await andWait(page, () => page.keyboard.press('Control+Z'));
+  check('Ctrl-Z undoes it again', (await dataset(page)).internodes === before.internodes);
+  // Back/forward walk through the edits: back from here is the tree before the parameter change.
+  await andWait(page, () => page.goBack());
+  check('Back goes to the previous edit', (await page.evaluate(() => location.hash)).includes('alpha_l') === false
+    && (await page.inputValue('#param-alpha_l')) !== '0.5', await page.evaluate(() => location.hash));
+  await andWait(page, () => page.goForward());
+  check('Forward comes back', (await page.inputValue('#param-alpha_l')) === '0.5');
+
+  // A side branch higher up: the Cut button removes it and what grows from it, not the whole tree.
+  let side = null, sideAt = null;
+  for (let dy = 60; dy < 400 && side === null; dy += 12) {
+    for (const dx of [0, -20, 20, -40, 40]) {
+      await page.mouse.click(box.x + trunk.x + dx, box.y + trunk.y - dy);
+      await page.waitForTimeout(60);
+      const id = Number((await dataset(page)).selected || 0);
+      // A branch big enough to see (tiny twigs are a pixel or two wide).
+      if (id > 10 && (await canvasPixels(page)).orange > 0.00003) {
+        side = id;
+        sideAt = { x: box.x + trunk.x + dx, y: box.y + trunk.y - dy };
+        break;
+      }
+    }
+  }
+  check('clicking higher up selects a visible side branch', side !== null, `branch ${side}`);
+  await page.waitForTimeout(300);
+  const sideHighlight = await canvasPixels(page);
+  check('the side branch is highlighted (also behind leaves)', sideHighlight.orange > 0.00002, `orange ${(sideHighlight.orange * 100).toFixed(4)}%`);
+  await page.screenshot({ path: path.join(ARTIFACTS, 'features-side-selected.png') });
+  if (sideAt) await page.screenshot({ path: path.join(ARTIFACTS, 'features-side-selected-zoom.png'), clip: { x: sideAt.x - 60, y: sideAt.y - 60, width: 120, height: 120 } });
+  await andWait(page, () => page.click('#cut'));
+  const sideCut = await dataset(page);
+  const nativeSide = nativeStats(['--preset', 'maple', '--seed', '2', '--years', '10', '--set', 'alpha_l=0.5', '--prune', `10:b${side}`]);
+  check('Cut removes only that part (equal to native CLI)', Number(sideCut.internodes) > 0 && Number(sideCut.internodes) < Number(before.internodes)
+    && sideCut.internodes === String(nativeSide.internodes), `${before.internodes} -> ${sideCut.internodes}, native ${nativeSide.internodes}`);
+  await page.screenshot({ path: path.join(ARTIFACTS, 'features-side-pruned.png') });
+
+  // 5. Camera: a drag rewrites cam= in the hash (no new history entry); Copy link copies the URL.
+  const camBefore = await page.evaluate(() => location.hash.split('&cam=')[1]);
+  const historyLength = await page.evaluate(() => history.length);
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width / 2 + 120, box.y + box.height / 2 + 30, { steps: 5 });
+  await page.mouse.up();
+  await page.waitForTimeout(800);
+  const camAfter = await page.evaluate(() => location.hash.split('&cam=')[1]);
+  check('orbiting rewrites cam= in the hash', camAfter && camAfter !== camBefore, `${camBefore} -> ${camAfter}`);
+  check('orbiting adds no history entry', (await page.evaluate(() => history.length)) === historyLength);
+  await page.click('#copy-link');
+  await page.waitForTimeout(300);
+  const clip = await page.evaluate(() => navigator.clipboard.readText());
+  check('Copy link copies the URL with the camera', clip === (await page.evaluate(() => location.href)) && clip.includes('cam='), clip);
+
+  // 6. Exports.
+  const [glbDownload] = await Promise.all([page.waitForEvent('download', { timeout: TIMEOUT }), page.click('#download-glb')]);
+  const glbPath = path.join(ARTIFACTS, 'features-export.glb');
+  await glbDownload.saveAs(glbPath);
+  const glb = new Uint8Array(fs.readFileSync(glbPath));
+  const report = await validator.validateBytes(glb);
+  check('.glb downloads and passes gltf-validator', report.issues.numErrors === 0 && glb.length > 1000,
+    `${glbDownload.suggestedFilename()} ${glb.length} bytes, ${report.issues.numErrors} errors, ${report.issues.numWarnings} warnings`);
+  const [jsonDownload] = await Promise.all([page.waitForEvent('download', { timeout: TIMEOUT }), page.click('#download-json')]);
+  const jsonPath = path.join(ARTIFACTS, 'features-params.json');
+  await jsonDownload.saveAs(jsonPath);
+  let params = null;
+  try { params = JSON.parse(fs.readFileSync(jsonPath, 'utf8')); } catch { /* checked below */ }
+  check('.json downloads the parameters', params && JSON.stringify(params).includes('alpha_l') && JSON.stringify(params).includes('0.5'),
+    `${jsonDownload.suggestedFilename()} ${fs.statSync(jsonPath).size} bytes`);
+  const [pngDownload] = await Promise.all([page.waitForEvent('download', { timeout: TIMEOUT }), page.click('#download-png')]);
+  const pngPath = path.join(ARTIFACTS, 'features-download.png');
+  await pngDownload.saveAs(pngPath);
+  const png = fs.readFileSync(pngPath);
+  check('PNG downloads', png.subarray(1, 4).toString() === 'PNG' && png.length > 10000, `${pngDownload.suggestedFilename()} ${png.length} bytes`);
+
+  // 7. Embed dialog: both snippets name the current state; the iframe form shows the same tree.
+  const current = (await dataset(page)).internodes;
+  await page.click('#embed');
+  const element = await page.inputValue('#embed-element');
+  const iframe = await page.inputValue('#embed-iframe');
+  check('Embed shows the custom-element snippet', element.includes('niwa-embed.js') && element.includes('<niwa-tree state="preset=maple&amp;seed=2'), element);
+  check('Embed shows the iframe snippet', /<iframe src="http:\/\/[^"]+\/embed\.html#preset=maple&amp;seed=2/.test(iframe), iframe);
+  await page.screenshot({ path: path.join(ARTIFACTS, 'features-embed-dialog.png') });
+  await page.keyboard.press('Escape');
+  const iframePage = watch(await context.newPage());
+  await iframePage.setViewportSize({ width: 480, height: 360 });
+  await iframePage.goto(iframe.match(/src="([^"]+)"/)[1].replace(/&amp;/g, '&'));
+  await iframePage.waitForFunction(() => document.querySelector('niwa-tree')?.dataset.status === 'ready', null, { timeout: TIMEOUT });
+  await iframePage.waitForTimeout(400);
+  const framed = await iframePage.evaluate(() => document.querySelector('niwa-tree').dataset.internodes);
+  check('iframe form shows the tree of the link', framed === current, `internodes ${framed}, page ${current}`);
+  await iframePage.screenshot({ path: path.join(ARTIFACTS, 'features-iframe.png') });
+  await iframePage.close();
+
+  // A hash typed into the address bar (same document) is decoded and grown, as a new history entry.
+  const backTo = await page.evaluate(() => location.hash);
+  await andWait(page, () => page.evaluate(() => { location.hash = 'preset=maple&seed=5&years=4'; }));
+  const typed = await dataset(page);
+  check('a typed hash is grown', typed.year === '4' && (await page.inputValue('#seed')) === '5'
+    && typed.internodes === String(nativeStats(['--preset', 'maple', '--seed', '5', '--years', '4']).internodes), `internodes ${typed.internodes}`);
+  await andWait(page, () => page.click('#undo'));
+  check('Undo after a typed hash goes back', (await page.evaluate(() => location.hash)) === backTo);
+
+  // 8. Narrow screen with the new controls.
+  await page.setViewportSize({ width: 375, height: 740 });
+  await page.waitForTimeout(500);
+  const overflow = await page.evaluate(() => document.scrollingElement.scrollWidth - window.innerWidth);
+  check('usable at 375 px wide', overflow <= 0, `horizontal overflow ${overflow}px`);
+  await page.screenshot({ path: path.join(ARTIFACTS, 'features-375.png'), fullPage: true });
+  const unlabelled = await page.evaluate(() =>
+    [...document.querySelectorAll('input:not([aria-hidden="true"]), select, button, textarea')]
+      .filter((e) => !(e.labels && e.labels.length) && !e.getAttribute('aria-label') && !e.textContent.trim())
+      .map((e) => e.id || e.outerHTML.slice(0, 60)));
+  check('every control is labelled', unlabelled.length === 0, unlabelled.join(', '));
+  await page.close();
+
+  // 9. Ten malformed hashes: each gives visible text notices and still a tree.
+  const bad = [
+    'preset=nope&years=3',
+    'preset=maple&years=abc',
+    'preset=maple&years=3&seed=-5',
+    'preset=maple&years=3&alpha_t=%3Cimg%20src%3Dx%20onerror%3Dalert(1)%3E',
+    'preset=maple&years=3&prune=xx',
+    'preset=maple&years=3&cam=1,2,abc',
+    'preset=maple&years=3&%E0%A4%A=1',
+    'preset=maple&years=3&bogus=1',
+    'preset=maple&years=3&gamma=1e999',
+    'preset=maple&years=3&prune=3:b&&==&cam=<script>',
+  ];
+  const badPage = watch(await context.newPage());
+  let shownAll = true;
+  const details = [];
+  for (const [i, hash] of bad.entries()) {
+    await badPage.goto('about:blank');
+    await badPage.goto(`${server.url}#${hash}`);
+    await waitReady(badPage, 0);
+    const visible = await badPage.isVisible('#notice');
+    const text = (await badPage.textContent('#notice')).trim();
+    const markup = await badPage.evaluate(() => document.querySelectorAll('#notice *').length);
+    if (!visible || !text || markup !== 0) shownAll = false;
+    details.push(`${i + 1}: ${text.split('\n')[0].slice(0, 70)}`);
+    if (i === 3) await badPage.screenshot({ path: path.join(ARTIFACTS, 'features-bad-hash.png') });
+  }
+  console.log(`  ${details.join('\n  ')}`);
+  check('ten malformed hashes each show a text notice and a tree', shownAll);
+  await badPage.close();
+
+  // 10. embed-example.html: two different trees, two non-blank canvases, one worker.
+  const embed = watch(await context.newPage());
+  let workers = 0;
+  embed.on('worker', () => { ++workers; });
+  await embed.goto(`${server.url}embed-example.html`);
+  await embed.waitForFunction(() => [...document.querySelectorAll('niwa-tree')].every((e) => e.dataset.status === 'ready'),
+    null, { timeout: TIMEOUT });
+  await embed.waitForTimeout(500);
+  const animated = new Set();
+  for (let i = 0; i < 40 && animated.size < 3; ++i) {
+    animated.add(await embed.evaluate(() => document.getElementById('maple').dataset.year));
+    await embed.waitForTimeout(150);
+  }
+  check('embed example: animate grows the tree year by year', animated.size >= 3, `years seen ${[...animated].join(',')}`);
+  const a = await canvasPixels(embed, '#sakura >>> canvas');
+  const b = await canvasPixels(embed, '#maple >>> canvas');
+  const counts = await embed.evaluate(() => [...document.querySelectorAll('niwa-tree')].map((e) => e.dataset.internodes));
+  check('embed example: two non-blank canvases', a.std > 8 && b.std > 8, `luma std ${a.std.toFixed(1)}, ${b.std.toFixed(1)}`);
+  check('embed example: two different trees', counts[0] !== counts[1], `internodes ${counts.join(', ')}`);
+  check('embed example: one shared worker', workers === 1, `${workers} workers`);
+  await embed.screenshot({ path: path.join(ARTIFACTS, 'features-embed-example.png') });
+  await embed.close();
+
+  check('no console errors or warnings', problems.length === 0, problems.slice(0, 5).join(' | '));
+} catch (e) {
+  check('test ran to the end', false, e.stack || String(e));
+} finally {
+  await browser.close();
+  await server.close();
+}
+console.log(`${passed} passed, ${failed} failed`);
+process.exit(failed === 0 ? 0 : 1);
