@@ -215,9 +215,8 @@ void PrintMappings(const GrowRequest& request, std::ostream& out) {
     float d = HormoneRamp(p, h, ParamId::kDLow, ParamId::kDHigh);
     BreakChances chance =
         BudBreakChances(p, h, false, 1 + static_cast<int>(p.Get(ParamId::kPLYears)));
-    out << FormatFloat(h) << ","
-        << FormatFloat(HormoneRamp(p, h, ParamId::kNLow, ParamId::kNHigh)) << ","
-        << FormatFloat(d) << ","
+    out << FormatFloat(h) << "," << FormatFloat(HormoneRamp(p, h, ParamId::kNLow, ParamId::kNHigh))
+        << "," << FormatFloat(d) << ","
         << FormatFloat(d * static_cast<float>(p.Get(ParamId::kDwarfInternodeRatio))) << ","
         << FormatFloat(HormoneRamp(p, h, ParamId::kBLLow, ParamId::kBLHigh)) << ","
         << FormatFloat(HormoneRamp(p, h, ParamId::kBGLow, ParamId::kBGHigh)) << ","
