@@ -2,47 +2,24 @@
 // Year scrubber and play, click-to-prune with undo/redo, share link with camera, back/forward,
 // exports (.glb checked with gltf-validator, .json, PNG), the embed dialog and malformed hashes.
 // Screenshots of each state go to build/artifacts/features-*.png.
-import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
 import validator from 'gltf-validator';
 import { startServer } from '../../scripts/serve.mjs';
-
-const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
-const NATIVE = process.env.NIWA_NATIVE || path.join(ROOT, 'build/native/bin/niwa');
-const ARTIFACTS = path.join(ROOT, 'build/artifacts');
-const TIMEOUT = 180_000;
-fs.mkdirSync(ARTIFACTS, { recursive: true });
-
-let passed = 0, failed = 0;
-function check(name, ok, detail = '') {
-  if (ok) ++passed; else ++failed;
-  console.log(`${ok ? 'PASS' : 'FAIL'} ${name}${detail ? ` — ${detail}` : ''}`);
-}
-
-function nativeStats(args) {
-  const out = execFileSync(NATIVE, ['tree', 'grow', ...args, '--stats'], { encoding: 'utf8' });
-  return JSON.parse(out.trim().split('\n').pop());
-}
+import {
+  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, finish, launchChromium, nativeStats, waitReady,
+} from './harness.mjs';
 
 const dataset = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
 const serialOf = async (page) => Number((await dataset(page)).treeSerial || 0);
 const statsWithoutTime = (text) => text.replace(/ · grown in \d+ ms$/, '');
 
-async function waitReady(page, serialAbove) {
-  await page.waitForFunction(
-    (n) => document.documentElement.dataset.status === 'ready' && Number(document.documentElement.dataset.treeSerial) > n,
-    serialAbove, { timeout: TIMEOUT, polling: 100 });
-  await page.waitForTimeout(300);  // let the frame for the new tree be drawn
-}
 
 // Runs action() and waits for the tree it causes.
 async function andWait(page, action) {
   const serial = await serialOf(page);
   await action();
-  await waitReady(page, serial);
+  await waitReady(page, serial, 100);
 }
 
 // Luma spread and bark/highlight pixel shares of a canvas (the page's, or one in a shadow root).
@@ -96,13 +73,7 @@ async function findTrunk(page) {
 }
 
 const server = await startServer({ port: 0 });
-const browser = await chromium.launch({
-  executablePath: '/usr/bin/chromium',
-  headless: true,
-  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-gpu-sandbox',
-    '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update',
-    '--disable-sync'],
-});
+const browser = await launchChromium();
 const problems = [];
 function watch(page) {
   page.on('console', (m) => {
@@ -121,7 +92,7 @@ try {
 
   // 1. A share link opens that tree; stats equal the native CLI.
   await page.goto(`${server.url}#${START}`);
-  await waitReady(page, 0);
+  await waitReady(page, 0, 100);
   const full = await page.textContent('#stats');
   const native10 = nativeStats(['--preset', 'maple', '--seed', '2', '--years', '10']);
   check('link opens its tree (stats equal native CLI)', (await dataset(page)).internodes === String(native10.internodes),
@@ -146,7 +117,7 @@ try {
   const edited = await page.textContent('#stats');
   check('parameter change changes the URL', editedHash !== hash0 && editedHash.includes('alpha_l=0.5'), editedHash);
   await page.reload();
-  await waitReady(page, 0);
+  await waitReady(page, 0, 100);
   const reloaded = await page.textContent('#stats');
   check('reloading the URL gives the same stats', statsWithoutTime(reloaded) === statsWithoutTime(edited), reloaded);
   check('reloading keeps the hash (camera included)', (await page.evaluate(() => location.hash)) === editedHash);
@@ -347,7 +318,7 @@ try {
   for (const [i, hash] of bad.entries()) {
     await badPage.goto('about:blank');
     await badPage.goto(`${server.url}#${hash}`);
-    await waitReady(badPage, 0);
+    await waitReady(badPage, 0, 100);
     const visible = await badPage.isVisible('#notice');
     const text = (await badPage.textContent('#notice')).trim();
     const markup = await badPage.evaluate(() => document.querySelectorAll('#notice *').length);
@@ -389,5 +360,4 @@ try {
   await browser.close();
   await server.close();
 }
-console.log(`${passed} passed, ${failed} failed`);
-process.exit(failed === 0 ? 0 : 1);
+finish();

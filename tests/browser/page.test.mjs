@@ -1,29 +1,12 @@
 // Browser test of the Niwa page: node tests/browser/page.test.mjs (exit code 0 = pass).
 // Starts scripts/serve.mjs on a free port, drives Debian chromium (SwiftShader WebGL2) through
 // playwright-core, and compares the page's stats with the native CLI ($NIWA_NATIVE).
-import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
 import { startServer } from '../../scripts/serve.mjs';
-
-const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
-const NATIVE = process.env.NIWA_NATIVE || path.join(ROOT, 'build/native/bin/niwa');
-const ARTIFACTS = path.join(ROOT, 'build/artifacts');
-const TIMEOUT = 180_000;  // SwiftShader and a first WASM compile are slow
-fs.mkdirSync(ARTIFACTS, { recursive: true });
-
-let passed = 0, failed = 0;
-function check(name, ok, detail = '') {
-  if (ok) ++passed; else ++failed;
-  console.log(`${ok ? 'PASS' : 'FAIL'} ${name}${detail ? ` — ${detail}` : ''}`);
-}
-
-function nativeStats(args) {
-  const out = execFileSync(NATIVE, ['tree', 'grow', ...args, '--stats'], { encoding: 'utf8' });
-  return JSON.parse(out.trim().split('\n').pop());
-}
+import {
+  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, finish, launchChromium, nativeStats, waitReady,
+} from './harness.mjs';
 
 function parseStats(text) {
   const number = (name) => {
@@ -33,12 +16,6 @@ function parseStats(text) {
   return { internodes: number('internodes'), leaves: number('leaves'), flowers: number('flowers') };
 }
 
-async function waitReady(page, serialAbove) {
-  await page.waitForFunction(
-    (n) => document.documentElement.dataset.status === 'ready' && Number(document.documentElement.dataset.treeSerial) > n,
-    serialAbove, { timeout: TIMEOUT, polling: 250 });
-  await page.waitForTimeout(300);  // let the frame for the new tree be drawn
-}
 
 // Pixel statistics of the WebGL canvas (preserveDrawingBuffer keeps the last frame readable).
 async function canvasPixels(page) {
@@ -65,13 +42,7 @@ async function canvasPixels(page) {
 }
 
 const server = await startServer({ port: 0 });
-const browser = await chromium.launch({
-  executablePath: '/usr/bin/chromium',
-  headless: true,
-  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-gpu-sandbox',
-    '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update',
-    '--disable-sync'],
-});
+const browser = await launchChromium();
 const problems = [];
 try {
   const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
@@ -196,5 +167,4 @@ try {
   await browser.close();
   await server.close();
 }
-console.log(`${passed} passed, ${failed} failed`);
-process.exit(failed === 0 ? 0 : 1);
+finish();

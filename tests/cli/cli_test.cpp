@@ -1,6 +1,4 @@
 // Tests of the CLI library: commands, --stats, outputs, and one-line errors with exit code 2.
-#include "cli.h"
-
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -8,19 +6,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "cli_runner.h"
+
 namespace niwa {
 namespace {
 
-struct Result {
-  int code;
-  std::string out, err;
-};
-
-Result RunNiwa(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  int code = RunCli(args, out, err);
-  return {code, out.str(), err.str()};
-}
+using Result = CliResult;
 
 std::string TempPath(const std::string& name) {
   return ::testing::TempDir() + "niwa_cli_test_" + name;

@@ -6,21 +6,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "cli.h"
+#include "../cli/cli_runner.h"
 
 namespace niwa {
 namespace {
 
-struct Result {
-  int code;
-  std::string out, err;
-};
-
-Result RunNiwa(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  int code = RunCli(args, out, err);
-  return {code, out.str(), err.str()};
-}
+using Result = CliResult;
 
 std::string ReadAll(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
