@@ -169,6 +169,7 @@ class NiwaTree extends HTMLElement {
     if (msg.type === 'decoded') {
       const { camera, ...state } = msg.state;
       if (this.camera.fromHash(camera)) this.framed = true;
+      this.sun = [state.params?.sun_elevation, state.params?.sun_azimuth];  // the light model's sun
       this.start(state, msg.notices);
     } else if (msg.type === 'tree' && msg.id === this.latestId) {
       this.years = msg.stats.years;
@@ -184,6 +185,7 @@ class NiwaTree extends HTMLElement {
   showTree(msg) {
     this.pendingTree = null;
     this.renderer.setTree(msg.mesh, msg.stats.bounds);
+    if (this.sun) this.renderer.setSun(...this.sun);
     if (!this.framed) {
       this.camera.frame(msg.stats.bounds);
       this.framed = true;

@@ -10,6 +10,8 @@ const ui = {
   canvas: $('view'),
   notice: $('notice'),
   stats: $('stats'),
+  frameStats: $('frame-stats'),
+  sunInfo: $('sun-info'),
   progress: $('progress'),
   progressBar: $('grow-progress'),
   preset: $('preset'),
@@ -58,8 +60,33 @@ function requestFrame() {
   frameRequested = true;
   requestAnimationFrame(() => {
     frameRequested = false;
-    renderer.render(camera);
+    const drawn = renderer.render(camera);
+    if (drawn) showFrameStats(drawn);
   });
+}
+
+// Draw primitives and frame cost: triangles and draw calls of the last frame (from the index counts
+// drawn), and the CPU time of the render call averaged over the last 30 frames drawn (frames are
+// drawn on demand, so there is no steady frame rate to report; GPU time is not measurable here).
+const frameTimes = [];
+function showFrameStats(drawn) {
+  frameTimes.push(drawn.cpuMs);
+  if (frameTimes.length > 30) frameTimes.shift();
+  const avg = frameTimes.reduce((a, b) => a + b, 0) / frameTimes.length;
+  ui.frameStats.textContent = `tris ${Math.round(drawn.triangles).toLocaleString('en-US')} · draw calls ${drawn.drawCalls}`
+    + ` · frame ${avg.toFixed(1)} ms CPU`;
+  ui.frameStats.title = `CPU time of the render call, mean of the last ${frameTimes.length} frames drawn (GPU time is not measured)`;
+}
+
+// The renderer's light is the light model's sun (parameters sun_elevation and sun_azimuth).
+function showSun() {
+  if (!panel) return;
+  const v = panel.values();
+  const el = Number(v.sun_elevation), az = Number(v.sun_azimuth);
+  if (!Number.isFinite(el) || !Number.isFinite(az)) return;
+  ui.sunInfo.textContent = `sun: az ${az}°, el ${el}° (lights the view and the growth model)`;
+  renderer?.setSun(el, az);
+  requestFrame();
 }
 
 // Camera moves rewrite the cam= field of the current history entry (no new entry), a moment later.
@@ -121,6 +148,7 @@ function applyState(state) {
   currentPrunes = [...(state.prunes || [])];
   showPresetSource();
   showPrunes();
+  showSun();
 }
 
 function showPresetSource() {
@@ -179,7 +207,7 @@ function fullHash() {
 }
 
 function entryState() {
-  return { niwa: { index: historyIndex, showYear } };
+  return { niwa: { index: historyIndex, max: historyMax, showYear } };
 }
 
 // Rewrites the current history entry (camera moves, scrubbing: no new entry).
@@ -230,12 +258,19 @@ worker.onmessage = (event) => {
     case 'ready': {
       presets = msg.presets;
       for (const p of presets) ui.preset.append(new Option(`${p.title} (${p.name})`, p.name));
-      panel = new ParamPanel(ui.params, msg.paramTable, scheduleUpdate);
+      panel = new ParamPanel(ui.params, msg.paramTable, () => {
+        showSun();
+        scheduleUpdate();
+      });
       applyState(msg.decoded.state);
       hashNotices = msg.decoded.notices;
       if (camera.fromHash(msg.decoded.state.camera)) frameNext = false;
       const saved = history.state?.niwa;
-      if (saved && Number.isInteger(saved.index)) historyIndex = historyMax = saved.index;
+      if (saved && Number.isInteger(saved.index)) {
+        historyIndex = saved.index;
+        // After a reload the forward entries are still there: redo stays available.
+        historyMax = Math.max(saved.index, Number.isInteger(saved.max) ? saved.max : 0);
+      }
       showNotices();
       updateUndoButtons();
       sendUpdate('restore');
@@ -427,6 +462,7 @@ window.addEventListener('popstate', (event) => {
     showYear = null;
   }
   updateUndoButtons();
+  history.replaceState(entryState(), '', location.href);  // remembers historyMax for a reload
   baseHash = '';
   worker.postMessage({ type: 'decode', id: ++nextId, hash: location.hash });
 });

@@ -58,7 +58,16 @@ export class Renderer {
     this.center = [0, 0, 0];
     this.shadowRadius = 1;
     this.extent = 20;
-    this.light = normalize([0.45, 0.8, 0.4]);
+    this.setSun(60, 0);
+    this.lastFrame = { triangles: 0, drawCalls: 0, cpuMs: 0 };
+  }
+
+  // The light model's sun (the core's convention): elevation and azimuth in degrees, y up, azimuth
+  // measured from +x towards +z; direction = (cos el cos az, sin el, cos el sin az), towards the sun.
+  setSun(elevationDeg, azimuthDeg) {
+    const el = (Number(elevationDeg) * Math.PI) / 180, az = (Number(azimuthDeg) * Math.PI) / 180;
+    if (!Number.isFinite(el) || !Number.isFinite(az)) return;
+    this.light = normalize([Math.cos(el) * Math.cos(az), Math.sin(el), Math.cos(el) * Math.sin(az)]);
   }
 
   async init(shaderBase = new URL('../shaders/', import.meta.url).href) {
@@ -135,6 +144,7 @@ export class Renderer {
     }
     const min = bounds.min, max = bounds.max;
     this.center = [(min[0] + max[0]) / 2, 0, (min[2] + max[2]) / 2];
+    this.crownHeight = Math.max(0, 0.6 * max[1]);
     this.shadowRadius = Math.max(0.3, 0.5 * Math.max(max[0] - min[0], max[2] - min[2]));
     this.extent = Math.max(6, 4 * Math.max(max[1] - min[1], this.shadowRadius * 2));
   }
@@ -152,6 +162,8 @@ export class Renderer {
   render(camera) {
     const gl = this.gl;
     if (!this.treeProgram) return;
+    const start = performance.now();
+    let triangles = 0, drawCalls = 0;
     this.resize();
     gl.viewport(0, 0, this.canvas.width, this.canvas.height);
     gl.clearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
@@ -165,12 +177,17 @@ export class Renderer {
     gl.uniform3fv(g.uniforms.uCenter, this.center);
     gl.uniform1f(g.uniforms.uExtent, this.extent);
     gl.uniform1f(g.uniforms.uShadowRadius, this.shadowRadius);
+    // The crown's shadow falls away from the sun (crown centre projected along the light).
+    const reach = (this.crownHeight || 0) / Math.max(this.light[1], 0.25);
+    gl.uniform2fv(g.uniforms.uShadowOffset, [-this.light[0] * reach, -this.light[2] * reach]);
     gl.uniform3fv(g.uniforms.uBackground, BACKGROUND);
     gl.disable(gl.CULL_FACE);
     gl.enable(gl.POLYGON_OFFSET_FILL);
     gl.polygonOffset(1, 1);
     gl.bindVertexArray(this.groundVao);
     gl.drawArrays(gl.TRIANGLE_STRIP, 0, 4);
+    triangles += 2;
+    drawCalls += 1;
     gl.disable(gl.POLYGON_OFFSET_FILL);
 
     const t = this.treeProgram;
@@ -188,6 +205,8 @@ export class Renderer {
       gl.uniform1f(t.uniforms.uXray, 0);
       gl.bindVertexArray(part.vao);
       gl.drawElements(gl.TRIANGLES, part.count, gl.UNSIGNED_INT, 0);
+      triangles += part.count / 3;
+      drawCalls += 1;
     }
     // The selection once more, faintly through everything, so a branch behind leaves shows.
     if (this.selected !== NONE && this.parts.bark) {
@@ -199,10 +218,16 @@ export class Renderer {
       gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
       gl.bindVertexArray(this.parts.bark.vao);
       gl.drawElements(gl.TRIANGLES, this.parts.bark.count, gl.UNSIGNED_INT, 0);
+      triangles += this.parts.bark.count / 3;
+      drawCalls += 1;
       gl.disable(gl.BLEND);
       gl.enable(gl.DEPTH_TEST);
     }
     gl.bindVertexArray(null);
+    // What this frame drew (from the index counts drawn) and the CPU time of this call; GPU time is
+    // not measured (no timer queries on SwiftShader).
+    this.lastFrame = { triangles, drawCalls, cpuMs: performance.now() - start };
+    return this.lastFrame;
   }
 
   // Highlights one branch (id) and, fainter, every branch growing from it (what a cut removes);

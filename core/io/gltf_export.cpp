@@ -16,6 +16,8 @@
 #endif
 #include <tiny_gltf.h>
 
+#include "render/textures.h"
+
 namespace niwa {
 namespace {
 
@@ -23,11 +25,21 @@ namespace {
 constexpr int kArrayBuffer = 34962;
 constexpr int kElementArrayBuffer = 34963;
 
+// glTF sampler enums (spec 5.26).
+constexpr int kLinear = 9729;
+constexpr int kLinearMipmapLinear = 9987;
+constexpr int kRepeat = 10497;
+constexpr int kClampToEdge = 33071;
+
+enum class TextureKind { kBark, kLeaf, kFlower };
+
+// The base colour comes from the texture (factor white); leaves and flowers are cut out by alpha.
 struct MaterialSpec {
   const char* name;
-  double r, g, b;
+  TextureKind texture;
   double roughness;
   bool double_sided;
+  bool alpha_mask;
 };
 
 // Appends raw bytes to the buffer at a 4-byte aligned offset; returns the new bufferView's index.
@@ -62,12 +74,55 @@ int AddAccessor(tinygltf::Model* model, int view, int component_type, int type, 
   return static_cast<int>(model->accessors.size()) - 1;
 }
 
+// Appends a PNG image (its own bufferView, no target), a sampler and a texture; returns the
+// texture's index.
+int AddPngTexture(tinygltf::Model* model, const std::vector<unsigned char>& png, const char* name,
+                  int wrap) {
+  if (png.empty()) return -1;  // encoding failed: the material stays untextured
+  tinygltf::Image image;
+  image.name = name;
+  image.mimeType = "image/png";
+  image.bufferView = AddBufferView(model, png, 0);
+  model->images.push_back(std::move(image));
+  tinygltf::Sampler sampler;
+  sampler.magFilter = kLinear;
+  sampler.minFilter = kLinearMipmapLinear;
+  sampler.wrapS = wrap;
+  sampler.wrapT = wrap;
+  model->samplers.push_back(std::move(sampler));
+  tinygltf::Texture texture;
+  texture.name = name;
+  texture.source = static_cast<int>(model->images.size()) - 1;
+  texture.sampler = static_cast<int>(model->samplers.size()) - 1;
+  model->textures.push_back(std::move(texture));
+  return static_cast<int>(model->textures.size()) - 1;
+}
+
+// Bark repeats around (u 0..1) and along the wood (one repeat per metre of v); leaf and flower
+// textures cover their quad or star once and are clamped.
+int AddTexture(tinygltf::Model* model, TextureKind kind) {
+  switch (kind) {
+    case TextureKind::kBark:
+      return AddPngTexture(model, EncodePng(MakeBarkTexture()), "bark", kRepeat);
+    case TextureKind::kLeaf:
+      return AddPngTexture(model, EncodePng(MakeLeafTexture()), "leaf", kClampToEdge);
+    case TextureKind::kFlower:
+    default:
+      return AddPngTexture(model, EncodePng(MakeFlowerTexture()), "flower", kClampToEdge);
+  }
+}
+
 int AddMaterial(tinygltf::Model* model, const MaterialSpec& spec) {
   tinygltf::Material material;
   material.name = spec.name;
   material.emissiveFactor = {0.0, 0.0, 0.0};  // tinygltf would otherwise write an empty array
   material.doubleSided = spec.double_sided;
-  material.pbrMetallicRoughness.baseColorFactor = {spec.r, spec.g, spec.b, 1.0};
+  if (spec.alpha_mask) {
+    material.alphaMode = "MASK";
+    material.alphaCutoff = 0.5;  // the default, so tinygltf leaves it out of the JSON
+  }
+  material.pbrMetallicRoughness.baseColorFactor = {1.0, 1.0, 1.0, 1.0};
+  material.pbrMetallicRoughness.baseColorTexture.index = AddTexture(model, spec.texture);
   material.pbrMetallicRoughness.metallicFactor = 0.0;
   material.pbrMetallicRoughness.roughnessFactor = spec.roughness;
   model->materials.push_back(std::move(material));
@@ -133,9 +188,9 @@ std::string WriteGlb(const TreeMesh& mesh, std::vector<unsigned char>* bytes) {
     MaterialSpec material;
   };
   const Part parts[] = {
-      {&mesh.bark, {"bark", 0.36, 0.25, 0.17, 0.9, false}},
-      {&mesh.leaves, {"leaves", 0.25, 0.55, 0.18, 0.7, true}},
-      {&mesh.flowers, {"flowers", 0.98, 0.72, 0.80, 0.6, true}},
+      {&mesh.bark, {"bark", TextureKind::kBark, 0.9, false, false}},
+      {&mesh.leaves, {"leaves", TextureKind::kLeaf, 0.7, true, true}},
+      {&mesh.flowers, {"flowers", TextureKind::kFlower, 0.6, true, true}},
   };
   for (const Part& part : parts) {
     std::string error = CheckBuffers(*part.buffers, part.material.name);

@@ -4,6 +4,7 @@
 // Screenshots of each state go to build/artifacts/features-*.png.
 import fs from 'node:fs';
 import path from 'node:path';
+import { pathToFileURL } from 'node:url';
 import validator from 'gltf-validator';
 import { startServer } from '../../scripts/serve.mjs';
 import {
@@ -72,6 +73,24 @@ async function findTrunk(page) {
   });
 }
 
+// three.js' GLTFLoader (an independent reader) parses the bytes in node.
+async function loadWithThree(bytes) {
+  // Node has no DOM: GLTFLoader needs `self` and createImageBitmap for the embedded PNG textures.
+  // The stand-in reads the PNG's size from its header (the bytes themselves are checked elsewhere).
+  globalThis.self ??= globalThis;
+  globalThis.createImageBitmap ??= async (blob) => {
+    const b = new Uint8Array(await blob.arrayBuffer());
+    const v = new DataView(b.buffer, b.byteOffset);
+    return { width: v.getUint32(16), height: v.getUint32(20), close() {} };
+  };
+  const { GLTFLoader } = await import(pathToFileURL(path.join(ROOT, 'node_modules/three/examples/jsm/loaders/GLTFLoader.js')).href);
+  const buffer = bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength);
+  return new Promise((resolve, reject) => {
+    const timer = setTimeout(() => reject(new Error('GLTFLoader timed out')), 30_000);
+    new GLTFLoader().parse(buffer, '', (gltf) => { clearTimeout(timer); resolve(gltf); }, (e) => { clearTimeout(timer); reject(e); });
+  });
+}
+
 const server = await startServer({ port: 0 });
 const browser = await launchChromium();
 const problems = [];
@@ -97,6 +116,10 @@ try {
   const native10 = nativeStats(['--preset', 'maple', '--seed', '2', '--years', '10']);
   check('link opens its tree (stats equal native CLI)', (await dataset(page)).internodes === String(native10.internodes),
     `${full} / native ${native10.internodes}`);
+  const frameStats = await page.textContent('#frame-stats');
+  const tris = Number((frameStats.match(/^tris ([\d,]+)/) || [, '0'])[1].replace(/,/g, ''));
+  check('stats line shows draw primitives and frame time', /^tris [\d,]+ · draw calls \d+ · frame [\d.]+ ms CPU$/.test(frameStats)
+    && tris > 1000, `${full} · ${frameStats}`);
   const hash0 = await page.evaluate(() => location.hash);
   check('camera is written into the hash', /&cam=-?[\d.]+(,-?[\d.e-]+){5}$/.test(hash0), hash0);
 
@@ -179,6 +202,9 @@ try {
   await andWait(page, () => page.click('#undo'));
   check('Undo restores the tree', (await dataset(page)).internodes === before.internodes);
   check('Undo restores the hash', (await page.evaluate(() => location.hash)) === hashBeforeCut);
+  await page.reload();
+  await waitReady(page, 0, 100);
+  check('Redo stays available after a reload', await page.isEnabled('#redo'), `undo ${await page.isEnabled('#undo')}`);
   await andWait(page, async () => {
     await page.focus('#view');
     await page.keyboard.press('Control+Shift+Z');
@@ -245,6 +271,19 @@ try {
   const report = await validator.validateBytes(glb);
   check('.glb downloads and passes gltf-validator', report.issues.numErrors === 0 && glb.length > 1000,
     `${glbDownload.suggestedFilename()} ${glb.length} bytes, ${report.issues.numErrors} errors, ${report.issues.numWarnings} warnings`);
+  let threeDetail = '';
+  let threeOk = false;
+  try {
+    const gltf = await loadWithThree(glb);
+    const meshes = [];
+    gltf.scene.traverse((o) => { if (o.isMesh) meshes.push(o); });
+    const triangles = meshes.reduce((n, m) => n + (m.geometry.index ? m.geometry.index.count / 3 : 0), 0);
+    threeOk = meshes.length > 0 && triangles > 0;
+    threeDetail = `${meshes.length} meshes, ${triangles} triangles`;
+  } catch (e) {
+    threeDetail = String(e?.message ?? e);
+  }
+  check('.glb loads in three.js GLTFLoader', threeOk, threeDetail);
   const [jsonDownload] = await Promise.all([page.waitForEvent('download', { timeout: TIMEOUT }), page.click('#download-json')]);
   const jsonPath = path.join(ARTIFACTS, 'features-params.json');
   await jsonDownload.saveAs(jsonPath);
@@ -285,6 +324,41 @@ try {
     && typed.internodes === String(nativeStats(['--preset', 'maple', '--seed', '5', '--years', '4']).internodes), `internodes ${typed.internodes}`);
   await andWait(page, () => page.click('#undo'));
   check('Undo after a typed hash goes back', (await page.evaluate(() => location.hash)) === backTo);
+
+  // The view's light is the light model's sun: changing sun_azimuth changes the hash and, at once
+  // (before the regrown tree arrives), the shading of the tree on screen.
+  const sunHash = await page.evaluate(() => location.hash);
+  const shading = await page.evaluate(async () => {
+    const grab = () => {
+      const src = document.getElementById('view');
+      const c = document.createElement('canvas');
+      c.width = src.width;
+      c.height = src.height;
+      const ctx = c.getContext('2d', { willReadFrequently: true });
+      ctx.drawImage(src, 0, 0);
+      return ctx.getImageData(0, 0, c.width, c.height).data;
+    };
+    const frame = () => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve)));
+    const serial = document.documentElement.dataset.treeSerial;
+    const a = grab();
+    const input = document.getElementById('param-sun_azimuth');
+    input.value = String(Number(input.value) >= 0 ? Number(input.value) - 150 : Number(input.value) + 150);
+    input.dispatchEvent(new Event('input', { bubbles: true }));
+    await frame();
+    const b = grab();
+    let changed = 0;
+    for (let i = 0; i < a.length; i += 4) {
+      if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 12) ++changed;
+    }
+    return { serial: Number(serial), changed: changed / (a.length / 4), sameTree: serial === document.documentElement.dataset.treeSerial,
+      azimuth: input.value, info: document.getElementById('sun-info').textContent };
+  });
+  check('changing sun_azimuth changes the shading', shading.changed > 0.005 && shading.info.includes(`az ${shading.azimuth}°`),
+    `${(shading.changed * 100).toFixed(2)}% of pixels changed${shading.sameTree ? ' (same mesh, new light)' : ''}; ${shading.info}`);
+  await waitReady(page, shading.serial, 100);
+  const sunHashAfter = await page.evaluate(() => location.hash);
+  check('changing sun_azimuth changes the hash', sunHashAfter !== sunHash && sunHashAfter.includes('sun_azimuth='), sunHashAfter);
+  await page.screenshot({ path: path.join(ARTIFACTS, 'features-sun.png') });
 
   // 8. Narrow screen with the new controls.
   await page.setViewportSize({ width: 375, height: 740 });

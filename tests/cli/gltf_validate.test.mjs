@@ -1,4 +1,5 @@
-// Grows every preset with the native CLI, validates each .glb with Khronos' gltf-validator and loads it with three.js.
+// Grows every preset with the native CLI, validates each .glb with Khronos' gltf-validator (0 errors,
+// embedded PNG textures decoded) and loads it with three.js (bark, leaf and flower materials with maps).
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { createRequire } from 'node:module';
@@ -19,6 +20,24 @@ const validator = validatorModule.default ?? validatorModule;
 const three = join(root, 'node_modules', 'three');
 const { GLTFLoader } = await import(
   pathToFileURL(join(three, 'examples', 'jsm', 'loaders', 'GLTFLoader.js')).href);
+
+// GLTFLoader decodes embedded images through Blob -> object URL -> fetch -> createImageBitmap (it
+// uses `self.URL`). Node 20 has Blob, object URLs and fetch of blob: URLs, but no `self` and no
+// createImageBitmap: stand-ins that read the PNG's own header, so a material's `map` proves that
+// three.js found PNG bytes of the expected size behind the image's bufferView.
+globalThis.self ??= globalThis;
+const decodedImages = [];
+globalThis.createImageBitmap ??= async (blob) => {
+  const bytes = new Uint8Array(await blob.arrayBuffer());
+  const magic = [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a];
+  if (blob.type !== 'image/png' || !magic.every((b, i) => bytes[i] === b)) {
+    throw new Error(`not a PNG (${blob.type}, ${bytes.length} bytes)`);
+  }
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const bitmap = { width: view.getUint32(16), height: view.getUint32(20), png: true, close() {} };
+  decodedImages.push(bitmap);
+  return bitmap;
+};
 
 let failures = 0;
 function check(ok, label, detail = '') {
@@ -49,6 +68,32 @@ function meshesByMaterial(gltf) {
     found[name] = (found[name] ?? 0) + object.geometry.getAttribute('position').count;
   });
   return found;
+}
+
+function materialsByName(gltf) {
+  const found = {};
+  gltf.scene.traverse((object) => {
+    if (object.isMesh && object.material) found[object.material.name] = object.material;
+  });
+  return found;
+}
+
+// Texture set-up of one three.js material: its map (the embedded PNG), wrapping and cut-out.
+function checkTexturedMaterial(label, material, { cutOut }) {
+  const map = material?.map;
+  const image = map?.image;
+  check(Boolean(map && image?.png && image.width > 0 && image.height > 0),
+        `${label}: three.js material has a PNG texture map`,
+        image ? `${image.width}x${image.height}` : 'no map');
+  if (!map) return;
+  const wrap = cutOut ? 1001 : 1000;  // THREE.ClampToEdgeWrapping : THREE.RepeatWrapping
+  check(map.wrapS === wrap && map.wrapT === wrap, `${label}: texture wrapping`,
+        `${map.wrapS}/${map.wrapT}`);
+  if (cutOut) {
+    check(material.alphaTest === 0.5 && material.side === 2 && !material.transparent,
+          `${label}: alpha-masked and double-sided`,
+          `alphaTest ${material.alphaTest}, side ${material.side}, transparent ${material.transparent}`);
+  }
 }
 
 // The same .glb with a wrong POSITION max: the validator must reject it (proves the check can fail).
@@ -108,6 +153,19 @@ try {
     check(numErrors === 0, `${c.label}: gltf-validator`,
           `${numErrors} errors, ${numWarnings} warnings, ${report.issues.numInfos} infos` +
           (errors.length ? '; ' + errors.join('; ') : ''));
+    if (!c.empty) {
+      // The validator decodes every embedded image: RGBA PNGs in buffer views, one per material.
+      const images = (report.info?.resources ?? []).filter((r) => r.pointer?.startsWith('/images/'));
+      const decoded = images.filter((r) => r.mimeType === 'image/png' && r.storage === 'buffer-view' &&
+                                           r.image?.width > 0 && r.image?.height > 0);
+      const jsonLength = bytes.readUInt32LE(12);
+      const materials = JSON.parse(bytes.subarray(20, 20 + jsonLength).toString('utf8')).materials ?? [];
+      check(decoded.length === materials.length && decoded.length === images.length &&
+            decoded.length >= (c.flowers ? 3 : 2),
+            `${c.label}: gltf-validator decodes the embedded PNG textures`,
+            images.map((r) => `${r.pointer} ${r.image?.width}x${r.image?.height} ${r.image?.format}`)
+              .join(', '));
+    }
     if (!c.empty && !tampered) tampered = await validate(withWrongPositionMax(bytes));
 
     let gltf;
@@ -127,6 +185,12 @@ try {
     }
     if (c.flowers) {
       check((found.flowers ?? 0) > 0, `${c.label}: three.js finds the flower mesh`, summary);
+    }
+    if (!c.empty) {
+      const materials = materialsByName(gltf);
+      checkTexturedMaterial(`${c.label} bark`, materials.bark, { cutOut: false });
+      checkTexturedMaterial(`${c.label} leaves`, materials.leaves, { cutOut: true });
+      if (c.flowers) checkTexturedMaterial(`${c.label} flowers`, materials.flowers, { cutOut: true });
     }
   }
   check(tampered !== null && tampered.issues.numErrors > 0,

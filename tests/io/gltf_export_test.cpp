@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "render/textures.h"
 #include "tree/growth.h"
 #include "tree/mesh.h"
 #include "tree/presets.h"
@@ -23,6 +24,8 @@ constexpr int kFloat = 5126;
 constexpr int kUnsignedInt = 5125;
 constexpr int kArrayBuffer = 34962;
 constexpr int kElementArrayBuffer = 34963;
+constexpr int kRepeat = 10497;
+constexpr int kClampToEdge = 33071;
 
 Tree Grow(const std::string& preset, int years) {
   GrowRequest r;
@@ -84,6 +87,46 @@ std::vector<T> ReadAccessor(const Glb& glb, int index) {
   return values;
 }
 
+// The material's base colour comes from an embedded PNG (bufferView + mimeType) through a texture
+// and sampler; double-sided cut-outs (leaves, flowers) are alpha-masked and clamped, bark repeats.
+void ExpectTexturedMaterial(const Glb& glb, const json& mat, bool cut_out) {
+  const json& gltf = glb.gltf;
+  const json& pbr = mat["pbrMetallicRoughness"];
+  ASSERT_TRUE(pbr.contains("baseColorTexture"));
+  EXPECT_EQ(pbr["baseColorTexture"].value("texCoord", 0), 0);
+  std::size_t texture_index = pbr["baseColorTexture"]["index"].get<std::size_t>();
+  ASSERT_LT(texture_index, gltf["textures"].size());
+  const json& texture = gltf["textures"][texture_index];
+  std::size_t image_index = texture["source"].get<std::size_t>();
+  ASSERT_LT(image_index, gltf["images"].size());
+  const json& image = gltf["images"][image_index];
+  EXPECT_EQ(image["mimeType"], "image/png");
+  EXPECT_FALSE(image.contains("uri"));
+  std::size_t view_index = image["bufferView"].get<std::size_t>();
+  ASSERT_LT(view_index, gltf["bufferViews"].size());
+  const json& view = gltf["bufferViews"][view_index];
+  std::size_t offset = view.value("byteOffset", std::size_t{0});
+  std::size_t length = view["byteLength"].get<std::size_t>();
+  ASSERT_GT(length, 8u);
+  ASSERT_LE(offset + length, glb.bin.size());
+  static const unsigned char kPngMagic[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
+  EXPECT_TRUE(std::equal(kPngMagic, kPngMagic + 8, glb.bin.begin() + static_cast<long>(offset)));
+  EXPECT_EQ(std::string(glb.bin.begin() + static_cast<long>(offset + length - 8),
+                        glb.bin.begin() + static_cast<long>(offset + length - 4)),
+            "IEND");  // the whole file, up to its last chunk
+  ASSERT_TRUE(texture.contains("sampler"));
+  const json& sampler = gltf["samplers"][texture["sampler"].get<std::size_t>()];
+  const int wrap = cut_out ? kClampToEdge : kRepeat;
+  EXPECT_EQ(sampler.value("wrapS", kRepeat), wrap);
+  EXPECT_EQ(sampler.value("wrapT", kRepeat), wrap);
+  if (cut_out) {
+    EXPECT_EQ(mat.value("alphaMode", std::string("OPAQUE")), "MASK");
+    EXPECT_EQ(mat.value("alphaCutoff", 0.5), 0.5);
+  } else {
+    EXPECT_EQ(mat.value("alphaMode", std::string("OPAQUE")), "OPAQUE");
+  }
+}
+
 void ExpectPrimitiveMatches(const Glb& glb, const json& primitive, const MeshBuffers& buffers,
                             const std::string& material, bool double_sided) {
   SCOPED_TRACE(material);
@@ -131,10 +174,13 @@ void ExpectPrimitiveMatches(const Glb& glb, const json& primitive, const MeshBuf
   EXPECT_EQ(mat["name"], material);
   EXPECT_EQ(mat.value("doubleSided", false), double_sided);
   ASSERT_TRUE(mat.contains("pbrMetallicRoughness"));
-  EXPECT_EQ(mat["pbrMetallicRoughness"]["baseColorFactor"].size(), 4u);
+  // The colour is the texture's: the factor is white (the default, which tinygltf omits).
+  EXPECT_EQ(mat["pbrMetallicRoughness"].value("baseColorFactor", json::array({1.0, 1.0, 1.0, 1.0})),
+            json::array({1.0, 1.0, 1.0, 1.0}));
   if (mat.contains("emissiveFactor")) {
     EXPECT_EQ(mat["emissiveFactor"].size(), 3u);
   }
+  ExpectTexturedMaterial(glb, mat, double_sided);
 }
 
 TEST(GltfExportTest, WritesAGlbWithBarkLeavesAndFlowers) {
@@ -156,17 +202,48 @@ TEST(GltfExportTest, WritesAGlbWithBarkLeavesAndFlowers) {
   ExpectPrimitiveMatches(glb, primitives[1], mesh.leaves, "leaves", true);
   ExpectPrimitiveMatches(glb, primitives[2], mesh.flowers, "flowers", true);
 
+  // One procedural texture per material, embedded byte for byte.
+  ASSERT_EQ(gltf["textures"].size(), 3u);
+  ASSERT_EQ(gltf["images"].size(), 3u);
+  const std::vector<unsigned char> expected[3] = {
+      EncodePng(MakeBarkTexture()), EncodePng(MakeLeafTexture()), EncodePng(MakeFlowerTexture())};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const json& mat = gltf["materials"][primitives[i]["material"].get<std::size_t>()];
+    std::size_t texture = mat["pbrMetallicRoughness"]["baseColorTexture"]["index"];
+    const json& view =
+        gltf["bufferViews"]
+            [gltf["images"][gltf["textures"][texture]["source"].get<std::size_t>()]["bufferView"]
+                 .get<std::size_t>()];
+    std::size_t offset = view.value("byteOffset", std::size_t{0});
+    std::size_t length = view["byteLength"].get<std::size_t>();
+    ASSERT_LE(offset + length, glb.bin.size());
+    EXPECT_EQ(std::vector<unsigned char>(glb.bin.begin() + static_cast<long>(offset),
+                                         glb.bin.begin() + static_cast<long>(offset + length)),
+              expected[i])
+        << i;
+  }
+
   // One buffer (the BIN chunk), aligned views with their targets.
   ASSERT_EQ(gltf["buffers"].size(), 1u);
   EXPECT_FALSE(gltf["buffers"][0].contains("uri"));
   std::size_t buffer_length = gltf["buffers"][0]["byteLength"].get<std::size_t>();
   EXPECT_LE(buffer_length, glb.bin.size());
   EXPECT_LT(glb.bin.size(), buffer_length + 4);
-  for (const json& view : gltf["bufferViews"]) {
+  std::vector<bool> image_view(gltf["bufferViews"].size(), false);
+  for (const json& image : gltf["images"]) {
+    image_view.at(image["bufferView"].get<std::size_t>()) = true;
+  }
+  for (std::size_t i = 0; i < gltf["bufferViews"].size(); ++i) {
+    const json& view = gltf["bufferViews"][i];
     EXPECT_EQ(view["buffer"], 0);
     EXPECT_EQ(view.value("byteOffset", std::size_t{0}) % 4, 0u);
     EXPECT_LE(view.value("byteOffset", std::size_t{0}) + view["byteLength"].get<std::size_t>(),
               buffer_length);
+    if (image_view[i]) {  // image data: no vertex/index target
+      EXPECT_FALSE(view.contains("target"));
+      EXPECT_FALSE(view.contains("byteStride"));
+      continue;
+    }
     ASSERT_TRUE(view.contains("target"));
     EXPECT_TRUE(view["target"] == kArrayBuffer || view["target"] == kElementArrayBuffer);
   }
@@ -188,6 +265,8 @@ TEST(GltfExportTest, SkipsEmptyPrimitives) {
   ExpectPrimitiveMatches(glb, primitives[0], mesh.bark, "bark", false);
   ExpectPrimitiveMatches(glb, primitives[1], mesh.leaves, "leaves", true);
   EXPECT_EQ(glb.gltf["materials"].size(), 2u);
+  EXPECT_EQ(glb.gltf["textures"].size(), 2u);  // no flower texture without flowers
+  EXPECT_EQ(glb.gltf["images"].size(), 2u);
 }
 
 TEST(GltfExportTest, EmptyMeshGivesAValidSceneWithoutMesh) {
@@ -202,6 +281,8 @@ TEST(GltfExportTest, EmptyMeshGivesAValidSceneWithoutMesh) {
   EXPECT_FALSE(glb.gltf.contains("meshes"));
   EXPECT_FALSE(glb.gltf.contains("buffers"));
   EXPECT_FALSE(glb.gltf.contains("accessors"));
+  EXPECT_FALSE(glb.gltf.contains("images"));
+  EXPECT_FALSE(glb.gltf.contains("textures"));
 }
 
 TEST(GltfExportTest, RejectsInconsistentBuffers) {
