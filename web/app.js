@@ -29,6 +29,7 @@ const ui = {
   redo: $('redo'),
   prunes: $('prunes'),
   copyLink: $('copy-link'),
+  resetView: $('reset-view'),
   embed: $('embed'),
   downloadGlb: $('download-glb'),
   downloadJson: $('download-json'),
@@ -130,6 +131,7 @@ let showYear = null;       // the scrubber's year, or null for the state's full 
 let shownYear = 0;         // the age of the tree on screen
 let baseHash = '';         // the core's hash of the current state (without cam=)
 let frameNext = true;      // frame the camera on the next tree
+let lastBounds = null;    // bounds of the tree on screen (Reset view)
 let selected = null;       // selected branch id
 let historyIndex = 0;      // position of this page's entry among the edits (undo/redo)
 let historyMax = 0;
@@ -309,6 +311,7 @@ worker.onmessage = (event) => {
       shownYear = msg.stats.years;
       if (renderer) {
         renderer.setTree(msg.mesh, msg.stats.bounds);
+        lastBounds = msg.stats.bounds;
         if (frameNext) {
           camera.frame(msg.stats.bounds, 1.12);  // room for the year bar over the view
           frameNext = false;
@@ -499,6 +502,11 @@ ui.downloadPng.addEventListener('click', () => {
     if (blob) download(blob, `${fileStem()}.png`);
     else ui.shareStatus.textContent = 'The picture could not be saved.';
   }, 'image/png');
+});
+
+ui.resetView.addEventListener('click', () => {
+  camera.reset(lastBounds);
+  cameraMoved();
 });
 
 ui.copyLink.addEventListener('click', async () => {

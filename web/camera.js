@@ -1,11 +1,11 @@
-// Orbit camera: yaw/pitch/distance around a target, driven by mouse drag, wheel, touch and keys.
+// Orbit camera: yaw/pitch/distance around a target; orbit, pan and zoom by mouse, wheel, touch and keys.
 
 const clamp = (x, lo, hi) => Math.min(hi, Math.max(lo, x));
 
 export class OrbitCamera {
   constructor() {
-    this.yaw = 0.6;         // radians around +y
-    this.pitch = 0.25;      // radians above the horizon
+    this.yaw = OrbitCamera.DEFAULT_YAW;      // radians around +y
+    this.pitch = OrbitCamera.DEFAULT_PITCH;  // radians above the horizon
     this.distance = 10;     // metres
     this.target = [0, 2, 0];
     this.fov = (45 * Math.PI) / 180;
@@ -44,6 +44,21 @@ export class OrbitCamera {
     return true;
   }
 
+  // Default angle, framed on bounds: the "Reset view" button.
+  reset(bounds) {
+    this.yaw = OrbitCamera.DEFAULT_YAW;
+    this.pitch = OrbitCamera.DEFAULT_PITCH;
+    if (bounds) this.frame(bounds, 1.12);
+  }
+
+  // Moves the target across the view by a drag of (dx, dy) pixels on a view viewHeight pixels high.
+  pan(dx, dy, viewHeight) {
+    const perPixel = (2 * this.distance * Math.tan(this.fov / 2)) / Math.max(1, viewHeight);
+    const sy = Math.sin(this.yaw), cy = Math.cos(this.yaw), sp = Math.sin(this.pitch), cp = Math.cos(this.pitch);
+    const right = [cy, 0, -sy], up = [-sp * sy, cp, -sp * cy];
+    for (let i = 0; i < 3; ++i) this.target[i] += (-dx * right[i] + dy * up[i]) * perPixel;
+  }
+
   orbit(dYaw, dPitch) {
     this.yaw += dYaw;
     this.pitch = clamp(this.pitch + dPitch, -0.1, 1.5);
@@ -68,10 +83,18 @@ export class OrbitCamera {
     return multiply(perspective(this.fov, aspect, this.near, this.far), lookAt(this.position(), this.target, [0, 1, 0]));
   }
 
-  // Mouse drag / one-finger orbit, wheel zoom, two-finger pinch, arrow and +/- keys on `element`.
+  // Drag / one-finger orbit; right- or Shift-drag / two-finger drag pan; wheel / pinch zoom;
+  // arrows orbit, Shift+arrows pan, +/- zoom, on `element`.
   attach(element, onChange) {
     const pointers = new Map();
     let pinch = 0;
+    let panning = false;
+    const middle = () => {
+      const [a, b] = [...pointers.values()];
+      return { x: (a.x + b.x) / 2, y: (a.y + b.y) / 2 };
+    };
+    let mid = null;
+    element.addEventListener('contextmenu', (e) => e.preventDefault());
     const spread = () => {
       const [a, b] = [...pointers.values()];
       return Math.hypot(a.x - b.x, a.y - b.y);
@@ -79,13 +102,18 @@ export class OrbitCamera {
     element.addEventListener('pointerdown', (e) => {
       element.setPointerCapture(e.pointerId);
       pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
-      if (pointers.size === 2) pinch = spread();
+      panning = e.button === 2 || e.shiftKey;
+      if (pointers.size === 2) {
+        pinch = spread();
+        mid = middle();
+      }
     });
     element.addEventListener('pointermove', (e) => {
       const p = pointers.get(e.pointerId);
       if (!p) return;
       if (pointers.size === 1) {
-        this.orbit(-(e.clientX - p.x) * 0.008, (e.clientY - p.y) * 0.008);
+        if (panning) this.pan(e.clientX - p.x, e.clientY - p.y, element.clientHeight);
+        else this.orbit(-(e.clientX - p.x) * 0.008, (e.clientY - p.y) * 0.008);
         p.x = e.clientX;
         p.y = e.clientY;
         onChange();
@@ -95,12 +123,16 @@ export class OrbitCamera {
         const now = spread();
         if (pinch > 0 && now > 0) this.zoom(pinch / now);
         pinch = now;
+        const m = middle();
+        if (mid) this.pan(m.x - mid.x, m.y - mid.y, element.clientHeight);
+        mid = m;
         onChange();
       }
     });
     const end = (e) => {
       pointers.delete(e.pointerId);
       pinch = pointers.size === 2 ? spread() : 0;
+      mid = pointers.size === 2 ? middle() : null;
     };
     element.addEventListener('pointerup', end);
     element.addEventListener('pointercancel', end);
@@ -110,8 +142,13 @@ export class OrbitCamera {
       onChange();
     }, { passive: false });
     element.addEventListener('keydown', (e) => {
-      const step = 0.08;
-      const actions = {
+      const step = 0.08, px = 30, h = element.clientHeight;
+      const actions = e.shiftKey ? {
+        ArrowLeft: () => this.pan(px, 0, h),
+        ArrowRight: () => this.pan(-px, 0, h),
+        ArrowUp: () => this.pan(0, px, h),
+        ArrowDown: () => this.pan(0, -px, h),
+      } : {
         ArrowLeft: () => this.orbit(step, 0),
         ArrowRight: () => this.orbit(-step, 0),
         ArrowUp: () => this.orbit(0, step),
@@ -129,6 +166,9 @@ export class OrbitCamera {
     });
   }
 }
+
+OrbitCamera.DEFAULT_YAW = 0.6;
+OrbitCamera.DEFAULT_PITCH = 0.25;
 
 // Column-major 4x4 matrices (WebGL convention).
 export function perspective(fov, aspect, near, far) {

@@ -258,6 +258,24 @@ try {
   const camAfter = await page.evaluate(() => location.hash.split('&cam=')[1]);
   check('orbiting rewrites cam= in the hash', camAfter && camAfter !== camBefore, `${camBefore} -> ${camAfter}`);
   check('orbiting adds no history entry', (await page.evaluate(() => history.length)) === historyLength);
+  // Pan: a right-drag moves the target (the last three cam= numbers), not the angle.
+  const camField = async () => (await page.evaluate(() => location.hash.split('&cam=')[1] || '')).split(',').map(Number);
+  const beforePan = await camField();
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.down({ button: 'right' });
+  await page.mouse.move(box.x + box.width / 2 + 100, box.y + box.height / 2 - 40, { steps: 5 });
+  await page.mouse.up({ button: 'right' });
+  await page.waitForTimeout(800);
+  const afterPan = await camField();
+  check('right-drag pans: target moves, angle kept',
+    afterPan.length === 6 && afterPan[0] === beforePan[0] && afterPan[1] === beforePan[1] &&
+    afterPan.slice(3).some((t, i) => Math.abs(t - beforePan[3 + i]) > 1e-3), `${beforePan} -> ${afterPan}`);
+  await page.click('#reset-view');
+  await page.waitForTimeout(800);
+  const afterReset = await camField();
+  check('Reset view restores the default angle and frames the tree',
+    afterReset[0] === 0.6 && afterReset[1] === 0.25 && afterReset.slice(3).some((t, i) => Math.abs(t - afterPan[3 + i]) > 1e-3),
+    `${afterPan} -> ${afterReset}`);
   await page.click('#copy-link');
   await page.waitForTimeout(300);
   const clip = await page.evaluate(() => navigator.clipboard.readText());
