@@ -80,6 +80,8 @@ function handle(req, res) {
       'Content-Length': stat.size,
       'Cache-Control': 'no-cache',
       'X-Content-Type-Options': 'nosniff',
+      // Public, read-only files: other sites may load niwa-embed.js, the worker and the WASM module.
+      'Access-Control-Allow-Origin': '*',
     });
     if (req.method === 'HEAD') return res.end();
     fs.createReadStream(file).on('error', () => res.destroy()).pipe(res);

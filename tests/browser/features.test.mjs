@@ -3,6 +3,7 @@
 // exports (.glb checked with gltf-validator, .json, PNG), the embed dialog and malformed hashes.
 // Screenshots of each state go to build/artifacts/features-*.png.
 import fs from 'node:fs';
+import http from 'node:http';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import validator from 'gltf-validator';
@@ -446,6 +447,24 @@ try {
   await embed.close();
 
   check('no console errors or warnings', problems.length === 0, problems.slice(0, 5).join(' | '));
+  // 9. Embedding from another site: a page served from another origin (another port) loads the element.
+  const hostBody = `<!doctype html><meta charset="utf-8"><title>host</title>
+    <script type="module" src="${server.url}niwa-embed.js"></script>
+    <niwa-tree preset="tsutsuji" years="6" seed="2" style="display:block;width:320px;height:240px"></niwa-tree>`;
+  const hostServer = http.createServer((req, res) => {
+    res.writeHead(200, { 'Content-Type': 'text/html; charset=utf-8' });
+    res.end(hostBody);
+  });
+  await new Promise((resolve) => hostServer.listen(0, '127.0.0.1', resolve));
+  const host = watch(await context.newPage());
+  await host.goto(`http://127.0.0.1:${hostServer.address().port}/host.html`);
+  await host.waitForFunction(() => document.querySelector('niwa-tree')?.dataset.status === 'ready', null, { timeout: TIMEOUT });
+  await host.waitForTimeout(500);
+  const foreign = await canvasPixels(host, 'niwa-tree >>> canvas');
+  check('<niwa-tree> works embedded in a page of another origin', foreign.std > 5, `luma std ${foreign.std.toFixed(1)}`);
+  await host.screenshot({ path: path.join(ARTIFACTS, 'features-cross-origin.png') });
+  await host.close();
+  hostServer.close();
 } catch (e) {
   check('test ran to the end', false, e.stack || String(e));
 } finally {
