@@ -179,9 +179,23 @@ std::string FormatNumber(double value) {
   return buffer;
 }
 
+std::string RangeText(double min_value, double max_value, bool integer) {
+  return std::string(integer ? "a whole number" : "a number") + " in [" + FormatNumber(min_value) +
+         ", " + FormatNumber(max_value) + "]";
+}
+
 std::string RangeText(const ParamSpec& spec) {
-  return std::string(spec.integer ? "a whole number" : "a number") + " in [" +
-         FormatNumber(spec.min_value) + ", " + FormatNumber(spec.max_value) + "]";
+  return RangeText(spec.min_value, spec.max_value, spec.integer);
+}
+
+std::string CheckValue(const char* key, double value, double min_value, double max_value,
+                       bool integer) {
+  bool whole = std::floor(value) == value;
+  if (std::isfinite(value) && value >= min_value && value <= max_value && (!integer || whole)) {
+    return "";
+  }
+  return std::string(key) + ": " + (std::isfinite(value) ? FormatNumber(value) : "value") +
+         " is out of range; must be " + RangeText(min_value, max_value, integer);
 }
 
 std::optional<double> ParseNumber(std::string_view text) {
@@ -199,14 +213,9 @@ std::optional<double> ParseNumber(std::string_view text) {
 
 std::string ParamSet::Set(ParamId id, double value) {
   const ParamSpec& spec = Spec(id);
-  bool whole = std::floor(value) == value;
-  if (!std::isfinite(value) || value < spec.min_value || value > spec.max_value ||
-      (spec.integer && !whole)) {
-    return std::string(spec.key) + ": " + (std::isfinite(value) ? FormatNumber(value) : "value") +
-           " is out of range; must be " + RangeText(spec);
-  }
-  values_[static_cast<std::size_t>(id)] = value;
-  return "";
+  std::string error = CheckValue(spec.key, value, spec.min_value, spec.max_value, spec.integer);
+  if (error.empty()) values_[static_cast<std::size_t>(id)] = value;
+  return error;
 }
 
 std::string ParamSet::SetFromText(std::string_view key, std::string_view text) {

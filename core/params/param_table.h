@@ -119,6 +119,11 @@ class ParamSet {
 
 // "alpha_t must be a number in [0, 1]" style description of the allowed range.
 std::string RangeText(const ParamSpec& spec);
+std::string RangeText(double min_value, double max_value, bool integer);
+// "" when value lies in [min, max] (and is whole when integer), else the one-line error
+// "key: 1.5 is out of range; must be a number in [0, 1]". Shared by every parameter table.
+std::string CheckValue(const char* key, double value, double min_value, double max_value,
+                       bool integer);
 // Shortest text that parses back to exactly the same double.
 std::string FormatNumber(double value);
 // Strict number parser: whole text must be a finite decimal number.

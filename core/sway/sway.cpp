@@ -109,8 +109,7 @@ std::optional<SwayParamId> FindSwayParam(std::string_view key) {
 }
 
 std::string SwayRangeText(const SwayParamSpec& spec) {
-  return std::string(spec.integer ? "a whole number" : "a number") + " in [" +
-         FormatNumber(spec.min_value) + ", " + FormatNumber(spec.max_value) + "]";
+  return RangeText(spec.min_value, spec.max_value, spec.integer);
 }
 
 SwayParams::SwayParams() {
@@ -121,14 +120,9 @@ SwayParams::SwayParams() {
 
 std::string SwayParams::Set(SwayParamId id, double value) {
   const SwayParamSpec& spec = SwaySpec(id);
-  bool whole = std::floor(value) == value;
-  if (!std::isfinite(value) || value < spec.min_value || value > spec.max_value ||
-      (spec.integer && !whole)) {
-    return std::string(spec.key) + ": " + (std::isfinite(value) ? FormatNumber(value) : "value") +
-           " is out of range; must be " + SwayRangeText(spec);
-  }
-  values_[static_cast<std::size_t>(id)] = value;
-  return "";
+  std::string error = CheckValue(spec.key, value, spec.min_value, spec.max_value, spec.integer);
+  if (error.empty()) values_[static_cast<std::size_t>(id)] = value;
+  return error;
 }
 
 std::string SwayParams::SetFromText(std::string_view key, std::string_view text) {
