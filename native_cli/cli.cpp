@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -14,6 +15,8 @@
 #include "io/json_io.h"
 #include "io/svg_export.h"
 #include "io/url_codec.h"
+#include "math/rotation.h"
+#include "render/hybrid.h"
 #include "sway/sway.h"
 #include "tree/growth.h"
 #include "tree/mesh.h"
@@ -331,6 +334,146 @@ int RunSwayCommand(const GrowOptions& grow_options, const SwayOptions& o, CLI::A
   return 0;
 }
 
+// ---- tree render-stats: thesis chapter 4 hybrid rendering counts (core/render/hybrid) ----
+struct RenderStatsOptions {
+  int width = 512, height = 512;
+  std::string cam, target, mode = "hybrid", leaf_mode = "cluster";
+  float yaw = kDefaultYaw, pitch = kDefaultPitch, distance = 10, fov_deg = 45;
+  RenderOptions render;
+};
+
+void AddRenderStatsOptions(CLI::App* cmd, RenderStatsOptions* o) {
+  cmd->add_option("--width", o->width, "Viewport width in pixels, 16..16384 (default 512)");
+  cmd->add_option("--height", o->height, "Viewport height in pixels, 16..16384 (default 512)");
+  cmd->add_option("--cam", o->cam,
+                  "Camera as in the share link's cam=: yaw,pitch,distance,tx,ty,tz (default: the "
+                  "page's framing of a new tree)");
+  cmd->add_option("--yaw", o->yaw, "Camera yaw, radians (overrides --cam)");
+  cmd->add_option("--pitch", o->pitch, "Camera pitch, radians, -0.1..1.5 (overrides --cam)");
+  cmd->add_option("--distance", o->distance,
+                  "Camera distance to the target, metres, 0.2..400 (overrides --cam)");
+  cmd->add_option("--target", o->target, "Camera target x,y,z in metres (overrides --cam)");
+  cmd->add_option("--fov", o->fov_deg, "Vertical field of view, degrees, 1..170 (default 45)");
+  cmd->add_option("--mode", o->mode, "hybrid (thesis 4.2) or full (every polygon)");
+  cmd->add_option("--threshold", o->render.threshold_px,
+                  "Eq. 4.1 card/line threshold, pixels, 0.1..1000 (default 4)");
+  cmd->add_option("--leaf-mode", o->leaf_mode,
+                  "cluster (leaf-cluster cards, thesis 5.2; default) or branch (thesis 4.2.1)");
+  cmd->add_option("--card-planes", o->render.card_planes,
+                  "Card planes per branch, 2..8 (default 2)");
+  cmd->add_option("--line-segments", o->render.line_segments,
+                  "Most line segments per line branch, 1..64 (default 1)");
+}
+
+int RunRenderStats(const GrowOptions& grow_options, RenderStatsOptions o, CLI::App* cmd,
+                   std::ostream& out) {
+  if (o.width < 16 || o.width > 16384)
+    throw BadInput{"--width: must be a whole number in [16, 16384]"};
+  if (o.height < 16 || o.height > 16384) {
+    throw BadInput{"--height: must be a whole number in [16, 16384]"};
+  }
+  if (!(o.fov_deg >= 1 && o.fov_deg <= 170)) throw BadInput{"--fov: must be a number in [1, 170]"};
+  if (o.mode != "hybrid" && o.mode != "full") {
+    throw BadInput{"--mode: '" + o.mode + "' must be hybrid or full"};
+  }
+  if (o.leaf_mode != "cluster" && o.leaf_mode != "branch") {
+    throw BadInput{"--leaf-mode: '" + o.leaf_mode + "' must be cluster or branch"};
+  }
+  o.render.leaf_mode = o.leaf_mode == "branch" ? LeafMode::kBranchCards : LeafMode::kClusterCards;
+  std::string error = CheckRenderOptions(o.render);
+  if (!error.empty()) {
+    std::string field = error.substr(0, error.find(':'));
+    for (char& c : field) c = c == '_' ? '-' : c;
+    throw BadInput{"--" + field + error.substr(error.find(':'))};
+  }
+  OrbitView view;
+  if (!o.cam.empty() && !ParseOrbitView(o.cam, &view, &error)) throw BadInput{"--" + error};
+  if (cmd->count("--yaw")) {
+    if (!std::isfinite(o.yaw)) throw BadInput{"--yaw: must be a finite number (radians)"};
+    view.yaw = o.yaw;
+  }
+  if (cmd->count("--pitch")) {
+    if (!(o.pitch >= kMinPitch && o.pitch <= kMaxPitch)) {
+      throw BadInput{"--pitch: must be a number in [-0.1, 1.5] (radians)"};
+    }
+    view.pitch = o.pitch;
+  }
+  if (cmd->count("--distance")) {
+    if (!(o.distance >= kMinDistance && o.distance <= kMaxDistance)) {
+      throw BadInput{"--distance: must be a number in [0.2, 400] (metres)"};
+    }
+    view.distance = o.distance;
+  }
+  if (cmd->count("--target")) {
+    std::stringstream stream(o.target);
+    std::string item;
+    std::vector<double> xyz;
+    while (std::getline(stream, item, ',')) {
+      std::optional<double> v = ParseNumber(item);
+      if (!v || !std::isfinite(*v)) break;
+      xyz.push_back(*v);
+    }
+    if (xyz.size() != 3 || o.target.back() == ',') {
+      throw BadInput{"--target: '" + o.target + "' must be three numbers x,y,z (metres)"};
+    }
+    view.target = glm::vec3(static_cast<float>(xyz[0]), static_cast<float>(xyz[1]),
+                            static_cast<float>(xyz[2]));
+  }
+  GrowRequest request = ResolveGrowRequest(grow_options, cmd);
+  auto start = std::chrono::steady_clock::now();
+  Tree tree = GrowTree(request);
+  TreeMesh mesh = BuildTreeMesh(tree);
+  const float fov = o.fov_deg * (kPi / 180.0f);
+  bool explicit_camera = !o.cam.empty();
+  for (const char* flag : {"--yaw", "--pitch", "--distance", "--target"}) {
+    explicit_camera = explicit_camera || cmd->count(flag) > 0;
+  }
+  if (!explicit_camera) view = FrameOrbitView(MeshBounds(mesh), fov);  // as the page frames it
+  RenderCamera camera = CameraFromOrbit(view, o.width, o.height, fov);
+  auto select_start = std::chrono::steady_clock::now();
+  HybridScene scene = BuildHybridScene(tree, o.render);
+  auto scene_end = std::chrono::steady_clock::now();
+  HybridSelection selection = SelectHybrid(tree, scene, camera, nullptr);
+  RenderStats stats = CountHybrid(scene, selection);
+  auto select_end = std::chrono::steady_clock::now();
+  CountFull(mesh, &stats);
+  auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+  const bool full = o.mode == "full";
+  nlohmann::ordered_json j;
+  j["mode"] = o.mode;
+  j["preset"] = tree.preset;
+  j["seed"] = tree.seed;
+  j["years"] = tree.years;
+  j["width"] = o.width;
+  j["height"] = o.height;
+  j["cam"] = FormatOrbitView(view);
+  j["threshold"] = o.render.threshold_px;
+  j["leaf_mode"] = o.leaf_mode;
+  j["lines"] = full ? 0 : stats.lines;
+  j["line_branches"] = full ? 0 : stats.line_branches;
+  j["card_branches"] = full ? 0 : stats.card_branches;
+  j["branch_polygons"] = full ? stats.full_bark : stats.branch_polygons;
+  j["leaf_polygons"] = full ? stats.full_leaves + stats.full_flowers : stats.leaf_polygons;
+  j["total_polygons"] = full ? stats.full_polygons : stats.total_polygons;
+  j["primitives"] = full ? stats.full_polygons : stats.primitives;
+  j["textures"] = full ? 0 : stats.textures;
+  j["texture_groups"] = full ? 0 : stats.texture_groups;
+  j["atlas_tiles"] = full ? 0 : stats.atlas_tiles;
+  j["atlas_fits"] = scene.atlas_fits;
+  j["leaf_clusters"] = full ? 0 : stats.leaf_clusters;
+  j["full_polygons"] = stats.full_polygons;
+  j["full_bark"] = stats.full_bark;
+  j["full_leaves"] = stats.full_leaves;
+  j["full_flowers"] = stats.full_flowers;
+  j["primitive_ratio"] =
+      stats.full_polygons > 0 ? static_cast<double>(stats.primitives) / stats.full_polygons : 0.0;
+  j["ms_grow_mesh"] = ms(start, select_start);
+  j["ms_scene"] = ms(select_start, scene_end);
+  j["ms_select"] = ms(scene_end, select_end);
+  out << j.dump() << "\n";
+  return 0;
+}
+
 }  // namespace
 
 std::string WriteFileAtomically(const std::string& path, const std::string& bytes) {
@@ -386,6 +529,13 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   SwayOptions sway_options;
   AddGrowOptions(sway, &sway_grow_options);
   AddSwayOptions(sway, &sway_options);
+  CLI::App* render_stats = tree->add_subcommand(
+      "render-stats",
+      "Count what hybrid rendering (thesis ch. 4: cards and lines) draws for a view, as JSON");
+  GrowOptions render_grow_options;
+  RenderStatsOptions render_options;
+  AddGrowOptions(render_stats, &render_grow_options);
+  AddRenderStatsOptions(render_stats, &render_options);
 
   try {
     // Name unknown commands ourselves: CLI11 would only say that a subcommand is required.
@@ -424,6 +574,9 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       return 0;
     }
     if (*grow) return RunGrow(grow_options, grow, out_path, stats, svg_options, out);
+    if (*render_stats) {
+      return RunRenderStats(render_grow_options, render_options, render_stats, out);
+    }
     if (*sway) return RunSwayCommand(sway_grow_options, sway_options, sway, out);
   } catch (const CLI::CallForHelp&) {
     out << app.help();  // CLI11 delegates to the innermost selected subcommand
