@@ -251,30 +251,32 @@ void AddSwayOptions(CLI::App* cmd, SwayOptions* o) {
   cmd->add_option("--dt", o->dt, "Time step, s, 0.0001..0.1 (default 1/30)");
   cmd->add_option("--duration", o->duration, "Simulated time, s, 0..600 (default 12)");
   cmd->add_option("--set-sway", o->sets,
-                  "Override a sway parameter: key=value (repeatable; see docs/sway-model.md)");
+                  "Same as --set (kept for old scripts): sway and wind parameters are rows of "
+                  "the one table, see 'niwa params'");
   cmd->add_option("--tips", o->tips, "Tips traced in --csv and --svg, 1..50 (default 4)");
   cmd->add_option("--csv", o->csv_path, "Write tip trajectories: time,node,x,y,z (s, cm)");
   cmd->add_option("--svg", o->svg_path, "Write a plot of tip displacement against time");
   cmd->add_flag("--stats", o->stats, "Print one JSON object of statistics on stdout");
 }
 
-SwayParams ResolveSwayParams(const SwayOptions& o, CLI::App* cmd) {
-  SwayParams params;
+// Sway and wind parameters are rows of the one table: --url, --params, --set (and its alias
+// --set-sway) reach them through the grow request; the flags below override those.
+SwayParams ResolveSwayParams(const SwayOptions& o, CLI::App* cmd, ParamSet* params) {
   for (const std::string& item : o.sets) {
     std::size_t eq = item.find('=');
     if (eq == std::string::npos) throw BadInput{"--set-sway: '" + item + "' must be key=value"};
-    std::string error = params.SetFromText(item.substr(0, eq), item.substr(eq + 1));
+    std::string error = params->SetFromText(item.substr(0, eq), item.substr(eq + 1));
     if (!error.empty()) throw BadInput{"--set-sway: " + error};
   }
-  auto set = [&](const char* flag, SwayParamId id, double value) {
+  auto set = [&](const char* flag, ParamId id, double value) {
     if (!cmd->count(flag)) return;
-    std::string error = params.Set(id, value);
+    std::string error = params->Set(id, value);
     if (!error.empty()) throw BadInput{std::string(flag) + ": " + error};
   };
-  set("--wind", SwayParamId::kWindSpeed, o.wind);
-  set("--wind-dir", SwayParamId::kWindDir, o.wind_dir);
-  set("--dt", SwayParamId::kDt, o.dt);
-  set("--duration", SwayParamId::kDuration, o.duration);
+  set("--wind", ParamId::kWindSpeed, o.wind);
+  set("--wind-dir", ParamId::kWindDir, o.wind_dir);
+  set("--dt", ParamId::kSwayDt, o.dt);
+  set("--duration", ParamId::kSwayDuration, o.duration);
   if (cmd->count("--gust")) {
     std::size_t colon = o.gust.find(':');
     std::optional<double> on, off;
@@ -283,11 +285,11 @@ SwayParams ResolveSwayParams(const SwayOptions& o, CLI::App* cmd) {
       off = ParseNumber(o.gust.substr(colon + 1));
     }
     if (!on || !off) throw BadInput{"--gust: '" + o.gust + "' must be ON_S:OFF_S, e.g. 1:6"};
-    set("--gust", SwayParamId::kGustOn, *on);
-    set("--gust", SwayParamId::kGustOff, *off);
+    set("--gust", ParamId::kGustOn, *on);
+    set("--gust", ParamId::kGustOff, *off);
   }
-  std::string error = params.Validate();
-  if (!error.empty()) throw BadInput{(cmd->count("--gust") ? "--gust: " : "--set-sway: ") + error};
+  std::string error = CheckSwayParams(*params);
+  if (!error.empty()) throw BadInput{(cmd->count("--gust") ? "--gust: " : "--set: ") + error};
   if (o.tips < 1 || o.tips > 50) throw BadInput{"--tips: must be a whole number in [1, 50]"};
   if (!o.csv_path.empty() && Extension(o.csv_path) != ".csv") {
     throw BadInput{"--csv: '" + o.csv_path + "' must end in .csv"};
@@ -295,13 +297,13 @@ SwayParams ResolveSwayParams(const SwayOptions& o, CLI::App* cmd) {
   if (!o.svg_path.empty() && Extension(o.svg_path) != ".svg") {
     throw BadInput{"--svg: '" + o.svg_path + "' must end in .svg"};
   }
-  return params;
+  return SwayParams(*params);
 }
 
 int RunSwayCommand(const GrowOptions& grow_options, const SwayOptions& o, CLI::App* cmd,
                    std::ostream& out) {
-  SwayParams params = ResolveSwayParams(o, cmd);
   GrowRequest request = ResolveGrowRequest(grow_options, cmd);
+  SwayParams params = ResolveSwayParams(o, cmd, &request.params);
   Tree tree = GrowTree(request);
   SwayRun run = RunSway(tree, params, o.tips);
   if (!o.csv_path.empty()) {
@@ -323,8 +325,8 @@ int RunSwayCommand(const GrowOptions& grow_options, const SwayOptions& o, CLI::A
     j["fixed"] = run.fixed;
     j["internodes"] = run.internodes;
     j["steps"] = run.steps;
-    j["dt"] = params.Get(SwayParamId::kDt);
-    j["wind"] = params.Get(SwayParamId::kWindSpeed);
+    j["dt"] = params.dt;
+    j["wind"] = params.wind_speed;
     j["ms"] = run.ms;
     j["ns_per_internode"] = run.ns_per_internode;
     j["max_tip_displacement"] = run.max_tip_displacement;

@@ -134,6 +134,55 @@ const std::array<ParamSpec, kParamCount> kTable = {{
      "Leaf length, used for drawing and for the leaf-sphere radius."},
     {P::kMaxInternodes, "max_internodes", "", "internodes", 2000000, 1000, 5000000, true, "shape",
      "Safety limit: growth stops adding shoots past this many internodes."},
+
+    // Wind sway (thesis ch. 3). Units as table 3.1: cgs inside the model (cm, g, s, dyn); wind
+    // speed in m/s and g in m/s². Defaults: examples 2-4 of table 3.1 (docs/sway-model.md).
+    {P::kKWind, "K_wind", "K_wind", "g/(cm²·s)", 0.1, 0, 100, false, "sway",
+     "Wind force per unit area and unit relative speed (eq. 3.5; table 3.1: 0.1)."},
+    {P::kKDirTrunk, "K_dir_trunk", "K_dir", "dyn/cm²", 150000, 0, 1e9, false, "sway",
+     "Direction-restoring coefficient at the thickest branch (eq. 3.8; table 3.1: 50000~150000)."},
+    {P::kKDirTip, "K_dir_tip", "K_dir", "dyn/cm²", 50000, 0, 1e9, false, "sway",
+     "Direction-restoring coefficient at the thinnest branch; linear in radius between (eq. 3.8)."},
+    {P::kKRev, "K_rev", "K_rev", "", 0.8, 0, 1, false, "sway",
+     "Share of the restoring force's reaction passed to the parent node (eq. 3.10; table 3.1: "
+     "0.8)."},
+    {P::kKVdel, "K_vdel", "K_vdel", "", 1, 0, 1, false, "sway",
+     "Velocity kept per step, damping by the tree itself (eq. 3.13; table 3.1: 1)."},
+    {P::kWoodDensity, "wood_density", "δ", "g/cm³", 0.12, 0.01, 2, false, "sway",
+     "Branch density (eqs. 3.1, 3.3; table 3.1: 0.12)."},
+    {P::kMLeaf, "m_leaf", "m_leaf", "g", 3, 0, 100, false, "sway",
+     "Mass of one leaf (eq. 3.3; table 3.1: 3 g, exaggerated in the thesis). 0: no leaf mass."},
+    {P::kSLeaf, "s_leaf", "s_leaf", "cm²", 30, 0, 1000, false, "sway",
+     "Surface area of one leaf (eq. 3.4; table 3.1: 30 cm²). 0: no leaf area."},
+    {P::kSwayAlpha, "sway_alpha", "α", "", 2, 1, 8, false, "sway",
+     "Exponent of the interpolation of intermediate nodes (eq. 3.15); 1 bends at the node."},
+    {P::kGravity, "gravity", "g", "m/s²", 9.8, 0, 100, false, "sway",
+     "Gravitational acceleration, along -y (eq. 3.6)."},
+    {P::kGravityPreload, "gravity_preload", "", "", 1, 0, 1, true, "sway",
+     "1: the grown shape is the rest pose under gravity (no sag at t = 0); 0: as the thesis."},
+    {P::kSwayDt, "dt", "dt", "s", 1.0 / 30.0, 0.0001, 0.1, false, "sway",
+     "Time step of the sway simulation (eqs. 3.13, 3.14, 3.16; table 3.1: 1/30 s)."},
+
+    {P::kWindSpeed, "wind_speed", "v_wind", "m/s", 5, 0, 100, false, "wind",
+     "Wind speed while the gust blows (eq. 3.5; thesis examples: 5, 10, 20)."},
+    {P::kWindDir, "wind_dir", "", "deg", 0, -360, 360, false, "wind",
+     "Wind azimuth in the horizontal plane: 0 blows towards +x, 90 towards +z."},
+    {P::kGustOn, "gust_on", "", "s", 1, 0, 3600, false, "wind",
+     "Time the wind starts suddenly from still air (thesis 3.5); at the origin with a gust front."},
+    {P::kGustOff, "gust_off", "", "s", 6, 0, 3600, false, "wind",
+     "Time the wind stops suddenly; must be after gust_on."},
+    {P::kGustFrontSpeed, "gust_front_speed", "", "m/s", 0, 0, 100, false, "wind",
+     "Speed of the gust front along the wind: a point d m downwind of the origin gets the wind "
+     "d / speed s later (start and stop). 0: everywhere at once, as the thesis."},
+    {P::kWindVariation, "wind_variation", "", "", 0, 0, 1, false, "wind",
+     "Amplitude v of a gust wave travelling with the wind: speed × (1 + v sin(2π(x/λ - t/T))). 0: "
+     "uniform, as the thesis."},
+    {P::kWindWavelength, "wind_wavelength", "λ", "m", 25, 1, 1000, false, "wind",
+     "Wavelength λ of the travelling gust wave along the wind (with wind_variation > 0)."},
+    {P::kWindPeriod, "wind_period", "T", "s", 5, 0.1, 600, false, "wind",
+     "Period T of the travelling gust wave at a fixed point (with wind_variation > 0)."},
+    {P::kSwayDuration, "duration", "", "s", 12, 0, 600, false, "wind",
+     "Simulated time of a sway run."},
 }};
 
 bool CheckTableOrder() {

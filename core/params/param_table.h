@@ -74,6 +74,29 @@ enum class ParamId : int {
   kPipeAreaPerLeaf,
   kLeafSize,
   kMaxInternodes,
+  // wind sway, node-point model (thesis ch. 3, eqs. 3.1-3.16, table 3.1; docs/sway-model.md)
+  kKWind,
+  kKDirTrunk,
+  kKDirTip,
+  kKRev,
+  kKVdel,
+  kWoodDensity,
+  kMLeaf,
+  kSLeaf,
+  kSwayAlpha,
+  kGravity,
+  kGravityPreload,
+  kSwayDt,
+  // wind: the thesis's sudden gust (3.5) and a field varying in space and time (not in the thesis)
+  kWindSpeed,
+  kWindDir,
+  kGustOn,
+  kGustOff,
+  kGustFrontSpeed,
+  kWindVariation,
+  kWindWavelength,
+  kWindPeriod,
+  kSwayDuration,
   kCount
 };
 
@@ -88,7 +111,8 @@ struct ParamSpec {
   double min_value;
   double max_value;
   bool integer;       // value must be a whole number
-  const char* group;  // "hormone", "branching", "light", "bending", "dormancy_break", "shape"
+  const char* group;  // "hormone", "branching", "light", "bending", "dormancy_break", "shape",
+                      // "sway", "wind"
   const char* help;
 };
 

@@ -14,47 +14,9 @@
 namespace niwa {
 namespace {
 
-using S = SwayParamId;
 using glm::dvec3;
 
 // Internal units are cgs (cm, g, s, dyn), as the tree (cm) and thesis table 3.1 (g, cm², g/cm³).
-const std::array<SwayParamSpec, kSwayParamCount> kSwayTable = {{
-    {S::kKWind, "K_wind", "K_wind", "g/(cm²·s)", 0.1, 0, 100, false, "sway",
-     "Wind force per unit area and unit relative speed (eq. 3.5; table 3.1: 0.1)."},
-    {S::kKDirTrunk, "K_dir_trunk", "K_dir", "dyn/cm²", 150000, 0, 1e9, false, "sway",
-     "Direction-restoring coefficient at the thickest branch (eq. 3.8; table 3.1: 50000~150000)."},
-    {S::kKDirTip, "K_dir_tip", "K_dir", "dyn/cm²", 50000, 0, 1e9, false, "sway",
-     "Direction-restoring coefficient at the thinnest branch; linear in radius between (eq. 3.8)."},
-    {S::kKRev, "K_rev", "K_rev", "", 0.8, 0, 1, false, "sway",
-     "Share of the restoring force's reaction passed to the parent node (eq. 3.10; table 3.1: "
-     "0.8)."},
-    {S::kKVdel, "K_vdel", "K_vdel", "", 1, 0, 1, false, "sway",
-     "Velocity kept per step, damping by the tree itself (eq. 3.13; table 3.1: 1)."},
-    {S::kDensity, "delta", "δ", "g/cm³", 0.12, 0.01, 2, false, "sway",
-     "Branch density (eqs. 3.1, 3.3; table 3.1: 0.12)."},
-    {S::kMLeaf, "m_leaf", "m_leaf", "g", 3, 0, 100, false, "sway",
-     "Mass of one leaf (eq. 3.3; table 3.1: 3 g, exaggerated in the thesis). 0: no leaf mass."},
-    {S::kSLeaf, "s_leaf", "s_leaf", "cm²", 30, 0, 1000, false, "sway",
-     "Surface area of one leaf (eq. 3.4; table 3.1: 30 cm²). 0: no leaf area."},
-    {S::kAlpha, "alpha", "α", "", 2, 1, 8, false, "sway",
-     "Exponent of the interpolation of intermediate nodes (eq. 3.15); 1 bends at the node."},
-    {S::kGravity, "g", "g", "m/s²", 9.8, 0, 100, false, "sway",
-     "Gravitational acceleration, along -y (eq. 3.6)."},
-    {S::kGravityPreload, "gravity_preload", "", "", 1, 0, 1, true, "sway",
-     "1: the grown shape is the rest pose under gravity (no sag at t = 0); 0: as the thesis."},
-    {S::kWindSpeed, "wind", "v_wind", "m/s", 5, 0, 100, false, "wind",
-     "Wind speed while the gust blows (eq. 3.5; thesis examples: 5, 10, 20)."},
-    {S::kWindDir, "wind_dir", "", "deg", 0, -360, 360, false, "wind",
-     "Wind azimuth in the horizontal plane: 0 blows towards +x, 90 towards +z."},
-    {S::kGustOn, "gust_on", "", "s", 1, 0, 3600, false, "wind",
-     "Time the wind starts suddenly from still air (thesis 3.5)."},
-    {S::kGustOff, "gust_off", "", "s", 6, 0, 3600, false, "wind",
-     "Time the wind stops suddenly; must be after gust_on."},
-    {S::kDt, "dt", "dt", "s", 1.0 / 30.0, 0.0001, 0.1, false, "wind",
-     "Time step (eqs. 3.13, 3.14, 3.16; table 3.1: 1/30 s)."},
-    {S::kDuration, "duration", "", "s", 12, 0, 600, false, "wind", "Simulated time."},
-}};
-
 constexpr double kCmPerM = 100.0;
 constexpr double kOmitLimit = 3.0;  // thesis eq. 3.16: K_x <= 3 m / dt²
 
@@ -86,60 +48,34 @@ double PowAlpha(double x, double alpha) {
 
 // ---- parameters ----
 
-const std::array<SwayParamSpec, kSwayParamCount>& SwayParamTable() {
-  static const bool ordered = [] {
-    for (std::size_t i = 0; i < kSwayParamCount; ++i) {
-      if (static_cast<std::size_t>(kSwayTable[i].id) != i) return false;
-    }
-    return true;
-  }();
-  if (!ordered) std::abort();  // programming error: rows out of SwayParamId order
-  return kSwayTable;
-}
+SwayParams::SwayParams(const ParamSet& p)
+    : k_wind(p.Get(ParamId::kKWind)),
+      k_dir_trunk(p.Get(ParamId::kKDirTrunk)),
+      k_dir_tip(p.Get(ParamId::kKDirTip)),
+      k_rev(p.Get(ParamId::kKRev)),
+      k_vdel(p.Get(ParamId::kKVdel)),
+      density(p.Get(ParamId::kWoodDensity)),
+      m_leaf(p.Get(ParamId::kMLeaf)),
+      s_leaf(p.Get(ParamId::kSLeaf)),
+      alpha(p.Get(ParamId::kSwayAlpha)),
+      gravity(p.Get(ParamId::kGravity)),
+      gravity_preload(p.GetBool(ParamId::kGravityPreload)),
+      dt(p.Get(ParamId::kSwayDt)),
+      wind_speed(p.Get(ParamId::kWindSpeed)),
+      wind_dir(p.Get(ParamId::kWindDir)),
+      gust_on(p.Get(ParamId::kGustOn)),
+      gust_off(p.Get(ParamId::kGustOff)),
+      gust_front_speed(p.Get(ParamId::kGustFrontSpeed)),
+      wind_variation(p.Get(ParamId::kWindVariation)),
+      wind_wavelength(p.Get(ParamId::kWindWavelength)),
+      wind_period(p.Get(ParamId::kWindPeriod)),
+      duration(p.Get(ParamId::kSwayDuration)) {}
 
-const SwayParamSpec& SwaySpec(SwayParamId id) {
-  return SwayParamTable()[static_cast<std::size_t>(id)];
-}
-
-std::optional<SwayParamId> FindSwayParam(std::string_view key) {
-  for (const SwayParamSpec& spec : SwayParamTable()) {
-    if (key == spec.key) return spec.id;
-  }
-  return std::nullopt;
-}
-
-std::string SwayRangeText(const SwayParamSpec& spec) {
-  return RangeText(spec.min_value, spec.max_value, spec.integer);
-}
-
-SwayParams::SwayParams() {
-  for (const SwayParamSpec& spec : SwayParamTable()) {
-    values_[static_cast<std::size_t>(spec.id)] = spec.default_value;
-  }
-}
-
-std::string SwayParams::Set(SwayParamId id, double value) {
-  const SwayParamSpec& spec = SwaySpec(id);
-  std::string error = CheckValue(spec.key, value, spec.min_value, spec.max_value, spec.integer);
-  if (error.empty()) values_[static_cast<std::size_t>(id)] = value;
-  return error;
-}
-
-std::string SwayParams::SetFromText(std::string_view key, std::string_view text) {
-  std::optional<SwayParamId> id = FindSwayParam(key);
-  if (!id) return "unknown sway parameter '" + std::string(key.substr(0, 64)) + "'";
-  std::optional<double> value = ParseNumber(text);
-  if (!value) {
-    return std::string(key) + ": '" + std::string(text.substr(0, 32)) + "' is not " +
-           SwayRangeText(SwaySpec(*id));
-  }
-  return Set(*id, *value);
-}
-
-std::string SwayParams::Validate() const {
-  if (Get(S::kGustOff) <= Get(S::kGustOn)) {
-    return "gust_off: " + FormatNumber(Get(S::kGustOff)) + " must be greater than gust_on (" +
-           FormatNumber(Get(S::kGustOn)) + ")";
+std::string CheckSwayParams(const ParamSet& params) {
+  double on = params.Get(ParamId::kGustOn), off = params.Get(ParamId::kGustOff);
+  if (off <= on) {
+    return "gust_off: " + FormatNumber(off) + " must be greater than gust_on (" + FormatNumber(on) +
+           ")";
   }
   return "";
 }
@@ -166,10 +102,10 @@ SwayModel BuildSwayModel(const Tree& tree, const SwayParams& params) {
   }
 
   const double pi = det::kPi;
-  const double delta = params.Get(S::kDensity);
-  const double m_leaf = params.Get(S::kMLeaf), s_leaf = params.Get(S::kSLeaf);
-  const double alpha = params.Get(S::kAlpha);
-  const double dt = params.Get(S::kDt);
+  const double delta = params.density;
+  const double m_leaf = params.m_leaf, s_leaf = params.s_leaf;
+  const double alpha = params.alpha;
+  const double dt = params.dt;
   double max_radius = 0;
   for (int id : order) {
     const Branch& b = tree.branches[static_cast<std::size_t>(id)];
@@ -215,8 +151,8 @@ SwayModel BuildSwayModel(const Tree& tree, const SwayParams& params) {
     model.nodes.push_back(std::move(n));
   }
 
-  const double k_trunk = params.Get(S::kKDirTrunk), k_tip = params.Get(S::kKDirTip);
-  const double k_rev = params.Get(S::kKRev);
+  const double k_trunk = params.k_dir_trunk, k_tip = params.k_dir_tip;
+  const double k_rev = params.k_rev;
   for (SwayNode& n : model.nodes) {
     double w = max_radius > 0 ? n.radius / max_radius : 1.0;
     n.k_dir = k_tip + (k_trunk - k_tip) * w;
@@ -259,27 +195,56 @@ SwayModel BuildSwayModel(const Tree& tree, const SwayParams& params) {
   return model;
 }
 
-dvec3 WindAt(const SwayParams& params, double t) {
-  if (t < params.Get(S::kGustOn) || t >= params.Get(S::kGustOff)) return dvec3(0.0);
+WindField::WindField(const SwayParams& params)
+    : speed_(params.wind_speed * kCmPerM),
+      gust_on_(params.gust_on),
+      gust_off_(params.gust_off),
+      front_speed_(params.gust_front_speed),
+      variation_(params.wind_variation),
+      wavelength_(params.wind_wavelength),
+      period_(params.wind_period) {
   double s = 0, c = 1;
-  det::SinCos(params.Get(S::kWindDir) * (det::kPi / 180.0), &s, &c);
-  double speed = params.Get(S::kWindSpeed) * kCmPerM;
-  return dvec3(speed * c, 0.0, speed * s);
+  det::SinCos(params.wind_dir * (det::kPi / 180.0), &s, &c);
+  dir_ = dvec3(c, 0.0, s);
+  uniform_ = front_speed_ == 0.0 && variation_ == 0.0;
+}
+
+double WindField::Along(const dvec3& position) const { return glm::dot(position, dir_) / kCmPerM; }
+
+dvec3 WindField::AtAlong(double along, double t) const {
+  // The gust front reaches a point `along` m downwind of the origin along / c s after the origin.
+  double delay = front_speed_ > 0.0 ? along / front_speed_ : 0.0;
+  if (t < gust_on_ + delay || t >= gust_off_ + delay) return dvec3(0.0);
+  double speed = speed_;
+  if (variation_ > 0.0) {
+    // A wave of speed travelling with the wind: 1 + v sin(2π (x/λ - t/T)), in [1 - v, 1 + v].
+    double phase = 2.0 * det::kPi * (along / wavelength_ - t / period_);
+    speed *= 1.0 + variation_ * det::Sin(phase);
+  }
+  return dvec3(speed * dir_.x, 0.0, speed * dir_.z);
+}
+
+dvec3 WindAt(const SwayParams& params, const dvec3& position, double t) {
+  return WindField(params).At(position, t);
 }
 
 // ---- simulator ----
 
-SwaySimulator::SwaySimulator(const Tree& tree, const SwayParams& params)
-    : params_(params), model_(BuildSwayModel(tree, params)) {
+SwaySimulator::SwaySimulator(const Tree& tree, const SwayParams& params, const dvec3& origin)
+    : params_(params), model_(BuildSwayModel(tree, params)), wind_(params) {
   const std::size_t n = model_.nodes.size();
+  // The wind each node point feels is taken at its rest tip in the world (the tree moves by cm,
+  // the field varies over metres).
+  along_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) along_[i] = wind_.Along(origin + model_.nodes[i].rest_tip);
   tip_.resize(n);
   anchor_.resize(n);
   dir_.resize(n);
   velocity_.assign(n, dvec3(0.0));
   force_.assign(n, dvec3(0.0));
   preload_.assign(n, dvec3(0.0));
-  const double g = params_.Get(S::kGravity) * kCmPerM;
-  const bool preload = params_.Get(S::kGravityPreload) != 0.0;
+  const double g = params_.gravity * kCmPerM;
+  const bool preload = params_.gravity_preload;
   for (std::size_t i = 0; i < n; ++i) {
     const SwayNode& s = model_.nodes[i];
     tip_[i] = s.rest_tip;
@@ -350,12 +315,13 @@ void SwaySimulator::UpdateAnchorAndPose(int i) {
 }
 
 void SwaySimulator::Step() {
-  const double dt = params_.Get(S::kDt);
-  const double k_wind = params_.Get(S::kKWind);
-  const double k_rev = params_.Get(S::kKRev);
-  const double k_vdel = params_.Get(S::kKVdel);
-  const dvec3 gravity(0.0, -params_.Get(S::kGravity) * kCmPerM, 0.0);
-  const dvec3 wind = WindAt(params_, time_);
+  const double dt = params_.dt;
+  const double k_wind = params_.k_wind;
+  const double k_rev = params_.k_rev;
+  const double k_vdel = params_.k_vdel;
+  const dvec3 gravity(0.0, -params_.gravity * kCmPerM, 0.0);
+  const bool uniform = wind_.uniform();
+  const dvec3 uniform_wind = uniform ? wind_.AtAlong(0.0, time_) : dvec3(0.0);
   const std::size_t n = model_.nodes.size();
 
   std::fill(force_.begin(), force_.end(), dvec3(0.0));
@@ -368,6 +334,7 @@ void SwaySimulator::Step() {
     dvec3 f_dir = s.stiffness * (p - tip_[u]);  // thesis eq. 3.8
     // thesis eq. 3.5 is K_wind s (v_wind - v_i), v_i the node's own velocity of eq. 3.13; its
     // -K_wind s v_i part is taken at t + dt below.
+    const dvec3 wind = uniform ? uniform_wind : wind_.AtAlong(along_[u], time_);
     dvec3 f = k_wind * s.area * wind  // thesis eq. 3.5 (wind part)
               + s.mass * gravity      // thesis eq. 3.6
               + f_dir + preload_[u];
@@ -473,8 +440,8 @@ SwayRun RunSway(const Tree& tree, const SwayParams& params, int tips) {
     }
   };
   record();
-  const double dt = params.Get(S::kDt);
-  const long steps = static_cast<long>(std::floor(params.Get(S::kDuration) / dt + 0.5));
+  const double dt = params.dt;
+  const long steps = static_cast<long>(std::floor(params.duration / dt + 0.5));
   double ms = 0;
   for (long k = 0; k < steps; ++k) {
     Clock::time_point start = Clock::now();
@@ -512,28 +479,36 @@ std::string SwayCsv(const SwayRun& run) {
 }
 
 std::string SwayPlotSvg(const SwayRun& run, const SwayParams& params) {
-  const double width = 800, height = 400, left = 60, right = 20, top = 30, bottom = 50;
+  const double width = 800, height = 400, left = 70, right = 20, top = 30, bottom = 50;
   const double plot_w = width - left - right, plot_h = height - top - bottom;
   double t_max = run.times.empty() ? 1.0 : std::max(run.times.back(), 1e-9);
-  double d_max = 0;
-  for (std::size_t t = 0; t < run.tip_positions.size(); ++t) {
-    for (const dvec3& p : run.tip_positions[t]) {
-      d_max = std::max(d_max, glm::length(p - run.tip_positions[t].front()));
+  // Signed displacement along the wind (positive downwind), so that the swing back past rest after
+  // the wind stops shows; the distance from rest is drawn faintly behind it.
+  double s = 0, c = 1;
+  det::SinCos(params.wind_dir * (det::kPi / 180.0), &s, &c);
+  const dvec3 along(c, 0.0, s);
+  double lo = 0, hi = 0;
+  for (const std::vector<dvec3>& series : run.tip_positions) {
+    for (const dvec3& p : series) {
+      double d = glm::length(p - series.front());
+      if (!std::isfinite(d)) continue;
+      hi = std::max(hi, d);
+      lo = std::min(lo, glm::dot(p - series.front(), along));
     }
   }
-  if (!(d_max > 0) || !std::isfinite(d_max)) d_max = 1;
+  if (!(hi > 0)) hi = 1;
+  if (lo < 0) lo = std::min(lo, -0.05 * hi);  // room for the zero line's label
   auto px = [&](double t) { return left + plot_w * t / t_max; };
-  auto py = [&](double d) { return top + plot_h * (1.0 - d / d_max); };
+  auto py = [&](double d) { return top + plot_h * (hi - d) / (hi - lo); };
   std::string svg;
-  char buf[256];
+  char buf[320];
   std::snprintf(buf, sizeof buf,
                 "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" "
                 "viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\" font-size=\"12\">\n",
                 width, height, width, height);
   svg += buf;
   svg += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  double on = std::min(params.Get(S::kGustOn), t_max),
-         off = std::min(params.Get(S::kGustOff), t_max);
+  double on = std::min(params.gust_on, t_max), off = std::min(params.gust_off, t_max);
   if (off > on) {
     std::snprintf(buf, sizeof buf,
                   "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"#e8f0fb\"/>\n",
@@ -544,31 +519,50 @@ std::string SwayPlotSvg(const SwayRun& run, const SwayParams& params) {
                 "<path d=\"M%.2f %.2f V%.2f H%.2f\" fill=\"none\" stroke=\"black\"/>\n", left, top,
                 top + plot_h, left + plot_w);
   svg += buf;
+  // Zero line (rest) and the value labels of the vertical axis.
+  std::snprintf(buf, sizeof buf,
+                "<path d=\"M%.2f %.2f H%.2f\" stroke=\"#888\" stroke-dasharray=\"4 3\"/>\n"
+                "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"end\">0</text>\n"
+                "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"end\">%.3g</text>\n",
+                left, py(0), left + plot_w, left - 4, py(0) + 4, left - 4, top + 4, hi);
+  svg += buf;
+  if (lo < 0) {
+    std::snprintf(buf, sizeof buf, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"end\">%.3g</text>\n",
+                  left - 4, top + plot_h + 4, lo);
+    svg += buf;
+  }
   std::snprintf(buf, sizeof buf,
                 "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\">time (s), 0 to %.3g; shaded: "
                 "wind %.3g m/s</text>\n",
-                left + plot_w / 2, height - 15, t_max, params.Get(S::kWindSpeed));
+                left + plot_w / 2, height - 15, t_max, params.wind_speed);
   svg += buf;
   std::snprintf(buf, sizeof buf,
                 "<text x=\"15\" y=\"%.2f\" transform=\"rotate(-90 15 %.2f)\" "
-                "text-anchor=\"middle\">tip displacement (cm), 0 to %.3g</text>\n",
-                top + plot_h / 2, top + plot_h / 2, d_max);
+                "text-anchor=\"middle\">tip displacement along the wind (cm); faint: distance "
+                "from rest</text>\n",
+                top + plot_h / 2, top + plot_h / 2);
   svg += buf;
   static const char* kColors[] = {"#d62728", "#1f77b4", "#2ca02c", "#ff7f0e",
                                   "#9467bd", "#8c564b", "#e377c2", "#7f7f7f"};
   for (std::size_t t = 0; t < run.tip_positions.size(); ++t) {
     const std::vector<dvec3>& series = run.tip_positions[t];
-    std::string points;
+    std::string signed_points, distance_points;
     for (std::size_t k = 0; k < series.size(); ++k) {
-      double d = glm::length(series[k] - series.front());
+      dvec3 moved = series[k] - series.front();
+      double d = glm::length(moved);
       if (!std::isfinite(d)) continue;
-      std::snprintf(buf, sizeof buf, "%s%.2f,%.2f", points.empty() ? "" : " ", px(run.times[k]),
-                    py(d));
-      points += buf;
+      std::snprintf(buf, sizeof buf, "%s%.2f,%.2f", signed_points.empty() ? "" : " ",
+                    px(run.times[k]), py(glm::dot(moved, along)));
+      signed_points += buf;
+      std::snprintf(buf, sizeof buf, "%s%.2f,%.2f", distance_points.empty() ? "" : " ",
+                    px(run.times[k]), py(d));
+      distance_points += buf;
     }
     const char* color = kColors[t % (sizeof kColors / sizeof kColors[0])];
     svg += "<polyline fill=\"none\" stroke=\"" + std::string(color) +
-           "\" stroke-width=\"1.5\" points=\"" + points + "\"/>\n";
+           "\" stroke-width=\"1\" stroke-opacity=\"0.3\" points=\"" + distance_points + "\"/>\n";
+    svg += "<polyline fill=\"none\" stroke=\"" + std::string(color) +
+           "\" stroke-width=\"1.5\" points=\"" + signed_points + "\"/>\n";
     std::snprintf(buf, sizeof buf, "<text x=\"%.2f\" y=\"%.2f\" fill=\"%s\">branch %d</text>\n",
                   left + 10 + 90.0 * static_cast<double>(t), top - 10, color, run.tip_branches[t]);
     svg += buf;

@@ -11,66 +11,45 @@
 #include <string_view>
 #include <vector>
 
+#include "params/param_table.h"
 #include "tree/tree.h"
 
 namespace niwa {
 
-// ---- Parameters (same shape as core/params/param_table.h; see docs/sway-model.md) ----
+// ---- Parameters ----
+// Every sway and wind parameter is a row of the one parameter table (core/params/param_table.h,
+// groups "sway" and "wind"); SwayParams is the model's typed copy of those rows of a ParamSet.
+struct SwayParams {
+  SwayParams() : SwayParams(ParamSet()) {}  // table defaults
+  explicit SwayParams(const ParamSet& p);
 
-enum class SwayParamId : int {
-  kKWind,           // K_wind (eq. 3.5)
-  kKDirTrunk,       // K_dir at the thickest branch (eq. 3.8)
-  kKDirTip,         // K_dir at the thinnest branch (eq. 3.8)
-  kKRev,            // K_rev (eq. 3.10)
-  kKVdel,           // K_vdel (eq. 3.13)
-  kDensity,         // δ (eq. 3.1)
-  kMLeaf,           // m_leaf (eq. 3.3)
-  kSLeaf,           // s_leaf (eq. 3.4)
-  kAlpha,           // α (eq. 3.15)
-  kGravity,         // |g| (eq. 3.6)
-  kGravityPreload,  // 1: the grown shape is the equilibrium under gravity
-  kWindSpeed,       // |v_wind| (eq. 3.5)
-  kWindDir,         // azimuth of the wind in the horizontal plane
-  kGustOn,          // wind starts (s)
-  kGustOff,         // wind stops (s)
-  kDt,              // dt (eqs. 3.13, 3.14, 3.16)
-  kDuration,        // simulated time (s)
-  kCount
+  // model (thesis 3.3, table 3.1), cgs
+  double k_wind;       // K_wind, g/(cm²·s) (eq. 3.5)
+  double k_dir_trunk;  // K_dir at the thickest branch, dyn/cm² (eq. 3.8)
+  double k_dir_tip;    // K_dir at the thinnest branch, dyn/cm² (eq. 3.8)
+  double k_rev;        // K_rev (eq. 3.10)
+  double k_vdel;       // K_vdel (eq. 3.13)
+  double density;      // δ, g/cm³ (eq. 3.1)
+  double m_leaf;       // g (eq. 3.3)
+  double s_leaf;       // cm² (eq. 3.4)
+  double alpha;        // α (eq. 3.15)
+  double gravity;      // |g|, m/s² (eq. 3.6)
+  bool gravity_preload;
+  double dt;  // s (eqs. 3.13, 3.14, 3.16)
+  // wind (thesis 3.5 plus the wind field of docs/sway-model.md)
+  double wind_speed;        // m/s
+  double wind_dir;          // deg, 0: towards +x, 90: towards +z
+  double gust_on;           // s, at the origin
+  double gust_off;          // s, at the origin
+  double gust_front_speed;  // m/s, 0: the gust starts and stops everywhere at once
+  double wind_variation;    // amplitude v of the travelling wave, 0..1
+  double wind_wavelength;   // λ, m
+  double wind_period;       // T, s
+  double duration;          // s
 };
 
-constexpr std::size_t kSwayParamCount = static_cast<std::size_t>(SwayParamId::kCount);
-
-struct SwayParamSpec {
-  SwayParamId id;
-  const char* key;     // stable name used by --set-sway key=value
-  const char* symbol;  // the paper's symbol
-  const char* unit;    // "" when dimensionless
-  double default_value;
-  double min_value;
-  double max_value;
-  bool integer;
-  const char* group;  // "sway" (model) or "wind" (input)
-  const char* help;
-};
-
-const std::array<SwayParamSpec, kSwayParamCount>& SwayParamTable();
-const SwayParamSpec& SwaySpec(SwayParamId id);
-std::optional<SwayParamId> FindSwayParam(std::string_view key);
-std::string SwayRangeText(const SwayParamSpec& spec);
-
-class SwayParams {
- public:
-  SwayParams();  // table defaults
-  double Get(SwayParamId id) const { return values_[static_cast<std::size_t>(id)]; }
-  // Checked setters: "" or one line "key: value is out of range; must be a number in [a, b]".
-  std::string Set(SwayParamId id, double value);
-  std::string SetFromText(std::string_view key, std::string_view text);
-  // Cross-parameter checks (gust_off > gust_on); "" or one line.
-  std::string Validate() const;
-
- private:
-  std::array<double, kSwayParamCount> values_;
-};
+// Cross-parameter checks of a ParamSet's sway rows (gust_off > gust_on); "" or one line.
+std::string CheckSwayParams(const ParamSet& params);
 
 // ---- The node-point model ----
 
@@ -114,12 +93,37 @@ struct SwayModel {
 // Builds the node points, masses, areas, stiffnesses and the omission classes of a grown tree.
 SwayModel BuildSwayModel(const Tree& tree, const SwayParams& params);
 
-// Wind vector (cm/s) at time t: speed·(cos dir, 0, sin dir) while gust_on <= t < gust_off.
-glm::dvec3 WindAt(const SwayParams& params, double t);
+// The wind field (docs/sway-model.md, "Wind"). Defaults: the thesis's uniform sudden gust (3.5),
+// speed·(cos dir, 0, sin dir) while gust_on <= t < gust_off. Beyond the thesis, so that trees of a
+// grove do not sway in unison: with gust_front_speed c > 0 the gust starts and stops at a point x m
+// downwind of the origin x / c s later, and with wind_variation v > 0 the speed is multiplied by
+// 1 + v sin(2π (x/λ - t/T)), a wave travelling with the wind.
+class WindField {
+ public:
+  explicit WindField(const SwayParams& params);
+  // Distance (m) along the wind direction from the world origin to a world position (cm).
+  double Along(const glm::dvec3& position) const;
+  // Wind vector (cm/s) at a point `along` m downwind of the origin, at time t (s).
+  glm::dvec3 AtAlong(double along, double t) const;
+  glm::dvec3 At(const glm::dvec3& position, double t) const { return AtAlong(Along(position), t); }
+  // True when the wind is the same everywhere (no front, no variation).
+  bool uniform() const { return uniform_; }
+
+ private:
+  double speed_, gust_on_, gust_off_, front_speed_, variation_, wavelength_, period_;
+  glm::dvec3 dir_{1, 0, 0};  // unit, horizontal
+  bool uniform_ = true;
+};
+
+// Wind vector (cm/s) at world position (cm) and time t (s).
+glm::dvec3 WindAt(const SwayParams& params, const glm::dvec3& position, double t);
 
 class SwaySimulator {
  public:
-  SwaySimulator(const Tree& tree, const SwayParams& params);
+  // origin: where the tree's root stands in the world (cm); only the wind field sees it, every
+  // position below stays in the tree's own frame.
+  SwaySimulator(const Tree& tree, const SwayParams& params,
+                const glm::dvec3& origin = glm::dvec3(0.0));
   void Step();  // one time step dt
   double time() const { return time_; }
   long steps() const { return steps_; }
@@ -139,6 +143,8 @@ class SwaySimulator {
 
   SwayParams params_;
   SwayModel model_;
+  WindField wind_;
+  std::vector<double> along_;  // per node point: distance (m) of its rest tip along the wind
   std::vector<glm::dvec3> tip_, velocity_, anchor_, dir_, force_, preload_;
   std::vector<glm::dvec3> prev_dir_;  // dir_ before this step's pose update
   double time_ = 0;
@@ -161,7 +167,8 @@ struct SwayRun {
 SwayRun RunSway(const Tree& tree, const SwayParams& params, int tips);
 // CSV "time,node,x,y,z" (cm) of the traced tips.
 std::string SwayCsv(const SwayRun& run);
-// SVG plot of each traced tip's displacement from rest (cm) against time, gust shaded.
+// SVG plot against time of each traced tip's signed displacement from rest along the wind (cm),
+// its full distance from rest faint behind it, the gust shaded.
 std::string SwayPlotSvg(const SwayRun& run, const SwayParams& params);
 
 }  // namespace niwa

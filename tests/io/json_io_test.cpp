@@ -33,6 +33,19 @@ TEST(ParamsJson, WriteThenReadIsIdentity) {
   EXPECT_EQ(p, q);
 }
 
+TEST(ParamsJson, SwayAndWindRowsRoundTrip) {
+  ParamSet p;
+  EXPECT_EQ(ApplyParamsJson(R"({"wind_speed": 20, "K_rev": 0.7, "gust_front_speed": 4})", &p), "");
+  EXPECT_EQ(p.Get(ParamId::kWindSpeed), 20.0);
+  EXPECT_EQ(p.Get(ParamId::kKRev), 0.7);
+  EXPECT_EQ(p.Get(ParamId::kGustFrontSpeed), 4.0);
+  ParamSet q;
+  EXPECT_EQ(ApplyParamsJson(ParamsToJson(p), &q), "");
+  EXPECT_EQ(p, q);
+  EXPECT_EQ(ApplyParamsJson(R"({"K_vdel": 1.5})", &p),
+            "K_vdel: 1.5 is out of range; must be a number in [0, 1]");
+}
+
 TEST(TreeJson, HoldsEveryLivingBranchWithItsNodesBudsAndLeaves) {
   GrowRequest r;
   r.preset = "sakura";

@@ -31,6 +31,32 @@ TEST(UrlCodec, RoundTripKeepsOnlyChangedParameters) {
   EXPECT_EQ(back.prunes[1].since_year, 3);
 }
 
+TEST(UrlCodec, RoundTripsSwayAndWindParameters) {
+  TreeState state;
+  state.preset = "sakura";
+  state.params = FindPreset("sakura")->params;
+  state.params.Set(ParamId::kWindSpeed, 12.5);
+  state.params.Set(ParamId::kWindVariation, 0.3);
+  state.params.Set(ParamId::kSwayDt, 1.0 / 60.0);
+  std::string hash = EncodeStateHash(state);
+  // Only the changed rows, in table order, with the shortest exact number text.
+  EXPECT_NE(hash.find("&dt=0.016666666666666666&wind_speed=12.5&wind_variation=0.3"),
+            std::string::npos)
+      << hash;
+  EXPECT_EQ(hash.find("K_wind"), std::string::npos) << hash;
+  EXPECT_EQ(hash.find("gust_on"), std::string::npos) << hash;
+  std::vector<std::string> notices;
+  TreeState back = DecodeStateHash(hash, &notices);
+  EXPECT_TRUE(notices.empty());
+  EXPECT_EQ(back.params, state.params);
+  EXPECT_EQ(back.params.Get(ParamId::kSwayDt), 1.0 / 60.0);
+  // Out of range: clamped with a notice naming the key and its range.
+  back = DecodeStateHash("wind_variation=3", &notices);
+  EXPECT_EQ(back.params.Get(ParamId::kWindVariation), 1.0);
+  ASSERT_EQ(notices.size(), 1u);
+  EXPECT_EQ(notices[0], "wind_variation: clamped to 1, must be a number in [0, 1]");
+}
+
 TEST(UrlCodec, HostileInputIsClampedOrDroppedWithNotices) {
   std::vector<std::string> notices;
   TreeState s = DecodeStateHash(

@@ -36,6 +36,35 @@ TEST(ParamTable, EverySymbolOfThesisTable21IsPresent) {
   }
 }
 
+TEST(ParamTable, SwayAndWindRowsCarryTheSymbolsOfThesisTable31) {
+  // The sway model's rows (thesis ch. 3), grouped after the growth rows, each with a unit.
+  const std::set<std::string> sway_symbols = {"K_wind", "K_dir",  "K_rev", "K_vdel", "δ",
+                                              "m_leaf", "s_leaf", "α",     "g",      "dt"};
+  std::set<std::string> found;
+  bool seen_sway = false;
+  for (const ParamSpec& s : ParamTable()) {
+    std::string group = s.group;
+    bool sway = group == "sway" || group == "wind";
+    if (sway) seen_sway = true;
+    EXPECT_TRUE(sway || !seen_sway) << s.key << ": growth rows come before the sway rows";
+    if (group == "sway") found.insert(s.symbol);
+  }
+  for (const std::string& symbol : sway_symbols) EXPECT_EQ(found.count(symbol), 1u) << symbol;
+  EXPECT_EQ(Spec(ParamId::kWindSpeed).group, std::string("wind"));
+  EXPECT_EQ(Spec(ParamId::kWindSpeed).unit, std::string("m/s"));
+  EXPECT_EQ(Spec(ParamId::kKDirTrunk).default_value, 150000.0);  // table 3.1, examples 2-4
+  EXPECT_EQ(Spec(ParamId::kKDirTip).default_value, 50000.0);
+  EXPECT_EQ(Spec(ParamId::kSwayDt).default_value, 1.0 / 30.0);
+  // The wind-field rows beyond the thesis default to the thesis's uniform gust.
+  EXPECT_EQ(Spec(ParamId::kGustFrontSpeed).default_value, 0.0);
+  EXPECT_EQ(Spec(ParamId::kWindVariation).default_value, 0.0);
+  ParamSet p;
+  EXPECT_EQ(p.SetFromText("gust_front_speed", "101"),
+            "gust_front_speed: 101 is out of range; must be a number in [0, 100]");
+  EXPECT_EQ(p.SetFromText("K_dir_tip", "90000"), "");
+  EXPECT_EQ(p.Get(ParamId::kKDirTip), 90000.0);
+}
+
 TEST(ParamSet, SetRejectsOutOfRangeAndNonIntegersWithOneLineNamingKeyAndRange) {
   ParamSet p;
   EXPECT_EQ(p.Set(ParamId::kAlphaT, 0.5), "");

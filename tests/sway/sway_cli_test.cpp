@@ -64,15 +64,68 @@ TEST(SwayCli, WritesCsvAndSvg) {
 
 TEST(SwayCli, BadInputIsOneLine) {
   ExpectOneLineError(RunNiwa({"tree", "sway", "--wind", "200"}),
-                     "--wind: wind: 200 is out of range; must be a number in [0, 100]");
+                     "--wind: wind_speed: 200 is out of range; must be a number in [0, 100]");
   ExpectOneLineError(RunNiwa({"tree", "sway", "--gust", "5:2"}), "--gust:");
   ExpectOneLineError(RunNiwa({"tree", "sway", "--gust", "soon"}), "must be ON_S:OFF_S");
+  // Sway rows of the one parameter table, through --set and its old alias --set-sway.
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--set", "K_rev=2"}),
+                     "--set: K_rev: 2 is out of range; must be a number in [0, 1]");
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--set", "wind_variation=-0.5"}),
+                     "--set: wind_variation: -0.5 is out of range; must be a number in [0, 1]");
   ExpectOneLineError(RunNiwa({"tree", "sway", "--set-sway", "K_rev=2"}),
                      "--set-sway: K_rev: 2 is out of range; must be a number in [0, 1]");
-  ExpectOneLineError(RunNiwa({"tree", "sway", "--set-sway", "nope=1"}), "unknown sway parameter");
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--set", "nope=1"}), "unknown parameter 'nope'");
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--set", "gust_on=8"}),
+                     "--set: gust_off: 6 must be greater than gust_on (8)");
   ExpectOneLineError(RunNiwa({"tree", "sway", "--dt", "1"}), "--dt: dt: 1 is out of range");
   ExpectOneLineError(RunNiwa({"tree", "sway", "--csv", "out.txt"}), "must end in .csv");
   ExpectOneLineError(RunNiwa({"tree", "sway", "--tips", "0"}), "--tips");
+}
+
+TEST(SwayCli, SetReachesTheSwayAndWindRows) {
+  auto stats = [](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"tree", "sway",       "--preset", "binary", "--years",
+                                     "6",    "--duration", "2",        "--stats"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    Result r = RunNiwa(args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(r.out.empty() ? "{}" : r.out);
+  };
+  nlohmann::json base = stats({});
+  nlohmann::json flag = stats({"--wind", "12"});
+  nlohmann::json set = stats({"--set", "wind_speed=12"});
+  nlohmann::json alias = stats({"--set-sway", "wind_speed=12"});
+  nlohmann::json url = stats({"--url", "preset=binary&years=6&wind_speed=12"});
+  EXPECT_EQ(set["wind"].get<double>(), 12.0);
+  EXPECT_EQ(set["max_tip_displacement"], flag["max_tip_displacement"]);
+  EXPECT_EQ(alias["max_tip_displacement"], flag["max_tip_displacement"]);
+  EXPECT_EQ(url["max_tip_displacement"], flag["max_tip_displacement"]);
+  EXPECT_NE(set["max_tip_displacement"], base["max_tip_displacement"]);
+  // A model row too: stiffer twigs move less.
+  nlohmann::json stiff = stats({"--set", "K_dir_tip=150000"});
+  EXPECT_LT(stiff["max_tip_displacement"].get<double>(),
+            base["max_tip_displacement"].get<double>());
+  // The flag wins over --set.
+  nlohmann::json both = stats({"--set", "wind_speed=3", "--wind", "12"});
+  EXPECT_EQ(both["max_tip_displacement"], flag["max_tip_displacement"]);
+}
+
+TEST(SwayCli, ParamsListsTheSwayAndWindGroups) {
+  Result r = RunNiwa({"params", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json table = nlohmann::json::parse(r.out);
+  int sway = 0, wind = 0;
+  for (const auto& row : table) {
+    sway += row["group"] == "sway";
+    wind += row["group"] == "wind";
+  }
+  EXPECT_EQ(sway, 12);
+  EXPECT_EQ(wind, 9);
+  Result text = RunNiwa({"params"});
+  for (const char* key : {"K_wind", "K_dir_trunk", "wood_density", "sway_alpha", "wind_speed",
+                          "gust_front_speed", "wind_variation", "duration"}) {
+    EXPECT_NE(text.out.find(std::string("\n") + key + "\t"), std::string::npos) << key;
+  }
 }
 
 TEST(SwayCli, HelpListsTheOptions) {

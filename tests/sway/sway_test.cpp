@@ -7,6 +7,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "math/det_math.h"
 #include "tree/growth.h"
 #include "tree/presets.h"
 
@@ -60,13 +61,15 @@ Tree GrownTree(int years) {
   return GrowTree(request);
 }
 
-SwayParams Params(std::initializer_list<std::pair<SwayParamId, double>> values) {
-  SwayParams p;
+// Sway parameters through the one parameter table (checked setters), as the CLI builds them.
+SwayParams Params(std::initializer_list<std::pair<ParamId, double>> values) {
+  ParamSet p;
   for (const auto& [id, value] : values) {
     std::string error = p.Set(id, value);
     EXPECT_EQ(error, "");
   }
-  return p;
+  EXPECT_EQ(CheckSwayParams(p), "");
+  return SwayParams(p);
 }
 
 double MaxDisplacement(const SwaySimulator& sim) {
@@ -83,33 +86,72 @@ double MaxSpeed(const SwaySimulator& sim) {
   return v;
 }
 
-TEST(SwayParams, DefaultsAreTable31AndSettersCheckRanges) {
+TEST(SwayParams, DefaultsAreTable31AndComeFromTheParamTable) {
   SwayParams p;
-  EXPECT_EQ(p.Get(SwayParamId::kKWind), 0.1);
-  EXPECT_EQ(p.Get(SwayParamId::kKRev), 0.8);
-  EXPECT_EQ(p.Get(SwayParamId::kKVdel), 1.0);
-  EXPECT_EQ(p.Get(SwayParamId::kDensity), 0.12);
-  EXPECT_EQ(p.Get(SwayParamId::kMLeaf), 3.0);
-  EXPECT_EQ(p.Get(SwayParamId::kSLeaf), 30.0);
-  EXPECT_EQ(p.Get(SwayParamId::kAlpha), 2.0);
-  EXPECT_EQ(p.Get(SwayParamId::kDt), 1.0 / 30.0);
-  EXPECT_EQ(p.Set(SwayParamId::kKRev, 1.5),
-            "K_rev: 1.5 is out of range; must be a number in [0, 1]");
-  EXPECT_EQ(p.Get(SwayParamId::kKRev), 0.8);  // unchanged after a rejected value
+  EXPECT_EQ(p.k_wind, 0.1);
+  EXPECT_EQ(p.k_rev, 0.8);
+  EXPECT_EQ(p.k_vdel, 1.0);
+  EXPECT_EQ(p.density, 0.12);
+  EXPECT_EQ(p.m_leaf, 3.0);
+  EXPECT_EQ(p.s_leaf, 30.0);
+  EXPECT_EQ(p.alpha, 2.0);
+  EXPECT_EQ(p.dt, 1.0 / 30.0);
+  EXPECT_TRUE(p.gravity_preload);
+  // The new wind-field rows default to the thesis's uniform gust.
+  EXPECT_EQ(p.gust_front_speed, 0.0);
+  EXPECT_EQ(p.wind_variation, 0.0);
+  // Every field is read from its own row.
+  ParamSet set;
+  for (ParamId id : {ParamId::kKWind,          ParamId::kKDirTrunk,     ParamId::kKDirTip,
+                     ParamId::kKRev,           ParamId::kKVdel,         ParamId::kWoodDensity,
+                     ParamId::kMLeaf,          ParamId::kSLeaf,         ParamId::kSwayAlpha,
+                     ParamId::kGravity,        ParamId::kSwayDt,        ParamId::kWindSpeed,
+                     ParamId::kWindDir,        ParamId::kGustOn,        ParamId::kGustOff,
+                     ParamId::kGustFrontSpeed, ParamId::kWindVariation, ParamId::kWindWavelength,
+                     ParamId::kWindPeriod,     ParamId::kSwayDuration}) {
+    const ParamSpec& spec = Spec(id);
+    EXPECT_EQ(set.Set(id, 0.5 * (spec.default_value + spec.max_value)), "") << spec.key;
+  }
+  SwayParams q(set);
+  auto mid = [](ParamId id) { return 0.5 * (Spec(id).default_value + Spec(id).max_value); };
+  EXPECT_EQ(q.k_wind, mid(ParamId::kKWind));
+  EXPECT_EQ(q.k_dir_trunk, mid(ParamId::kKDirTrunk));
+  EXPECT_EQ(q.k_dir_tip, mid(ParamId::kKDirTip));
+  EXPECT_EQ(q.k_rev, mid(ParamId::kKRev));
+  EXPECT_EQ(q.k_vdel, mid(ParamId::kKVdel));
+  EXPECT_EQ(q.density, mid(ParamId::kWoodDensity));
+  EXPECT_EQ(q.m_leaf, mid(ParamId::kMLeaf));
+  EXPECT_EQ(q.s_leaf, mid(ParamId::kSLeaf));
+  EXPECT_EQ(q.alpha, mid(ParamId::kSwayAlpha));
+  EXPECT_EQ(q.gravity, mid(ParamId::kGravity));
+  EXPECT_EQ(q.dt, mid(ParamId::kSwayDt));
+  EXPECT_EQ(q.wind_speed, mid(ParamId::kWindSpeed));
+  EXPECT_EQ(q.wind_dir, mid(ParamId::kWindDir));
+  EXPECT_EQ(q.gust_on, mid(ParamId::kGustOn));
+  EXPECT_EQ(q.gust_off, mid(ParamId::kGustOff));
+  EXPECT_EQ(q.gust_front_speed, mid(ParamId::kGustFrontSpeed));
+  EXPECT_EQ(q.wind_variation, mid(ParamId::kWindVariation));
+  EXPECT_EQ(q.wind_wavelength, mid(ParamId::kWindWavelength));
+  EXPECT_EQ(q.wind_period, mid(ParamId::kWindPeriod));
+  EXPECT_EQ(q.duration, mid(ParamId::kSwayDuration));
+  EXPECT_EQ(set.Set(ParamId::kGravityPreload, 0), "");
+  EXPECT_FALSE(SwayParams(set).gravity_preload);
+}
+
+TEST(SwayParams, RangeAndCrossChecksAreOneLine) {
+  ParamSet p;
+  EXPECT_EQ(p.Set(ParamId::kKRev, 1.5), "K_rev: 1.5 is out of range; must be a number in [0, 1]");
+  EXPECT_EQ(p.Get(ParamId::kKRev), 0.8);  // unchanged after a rejected value
   EXPECT_EQ(p.SetFromText("gravity_preload", "0.5"),
             "gravity_preload: 0.5 is out of range; must be a whole number in [0, 1]");
-  EXPECT_EQ(p.SetFromText("nope", "1"), "unknown sway parameter 'nope'");
-  EXPECT_EQ(p.SetFromText("wind", "abc"), "wind: 'abc' is not a number in [0, 100]");
-  EXPECT_EQ(p.SetFromText("wind", "12.5"), "");
-  EXPECT_EQ(p.Get(SwayParamId::kWindSpeed), 12.5);
-  EXPECT_EQ(p.Validate(), "");
-  EXPECT_EQ(p.Set(SwayParamId::kGustOff, 0.5), "");
-  EXPECT_NE(p.Validate(), "");
-  for (const SwayParamSpec& s : SwayParamTable()) {
-    EXPECT_LE(s.min_value, s.default_value) << s.key;
-    EXPECT_GE(s.max_value, s.default_value) << s.key;
-    EXPECT_EQ(FindSwayParam(s.key), s.id) << s.key;
-  }
+  EXPECT_EQ(p.SetFromText("wind_speed", "abc"), "wind_speed: 'abc' is not a number in [0, 100]");
+  EXPECT_EQ(p.SetFromText("wind_variation", "1.2"),
+            "wind_variation: 1.2 is out of range; must be a number in [0, 1]");
+  EXPECT_EQ(p.SetFromText("wind_speed", "12.5"), "");
+  EXPECT_EQ(SwayParams(p).wind_speed, 12.5);
+  EXPECT_EQ(CheckSwayParams(p), "");
+  EXPECT_EQ(p.Set(ParamId::kGustOff, 0.5), "");
+  EXPECT_EQ(CheckSwayParams(p), "gust_off: 0.5 must be greater than gust_on (1)");
 }
 
 TEST(SwayModel, MassAreaAndOmissionOnHandBuiltTree) {
@@ -156,7 +198,7 @@ TEST(SwayModel, MassAreaAndOmissionOnHandBuiltTree) {
   EXPECT_GT(k, 3.0 * node(stub).mass * 900.0);
 
   // Without leaf mass the leafy twig is as stiff as the stub (eq. 3.16): fixed.
-  SwayModel bare = BuildSwayModel(t, Params({{SwayParamId::kMLeaf, 0}}));
+  SwayModel bare = BuildSwayModel(t, Params({{ParamId::kMLeaf, 0}}));
   EXPECT_EQ(
       bare.nodes[static_cast<std::size_t>(bare.node_of_branch[static_cast<std::size_t>(leafy)])]
           .kind,
@@ -176,13 +218,13 @@ TEST(SwayModel, DeadBranchesAreLeftOut) {
 
 TEST(SwaySimulator, StillAirStaysAtRest) {
   Tree t = SymmetricTree();
-  SwaySimulator sim(t, Params({{SwayParamId::kWindSpeed, 0}}));
+  SwaySimulator sim(t, Params({{ParamId::kWindSpeed, 0}}));
   for (int k = 0; k < 300; ++k) sim.Step();
   EXPECT_LT(MaxDisplacement(sim), 1e-9);
   EXPECT_LT(MaxSpeed(sim), 1e-9);
   // Also on a grown tree.
   Tree grown = GrownTree(6);
-  SwaySimulator sim2(grown, Params({{SwayParamId::kWindSpeed, 0}}));
+  SwaySimulator sim2(grown, Params({{ParamId::kWindSpeed, 0}}));
   for (int k = 0; k < 150; ++k) sim2.Step();
   EXPECT_LT(MaxDisplacement(sim2), 1e-6);
 }
@@ -191,9 +233,8 @@ TEST(SwaySimulator, WithoutPreloadGravitySagsButSettles) {
   // K_rev = 0: with reactions and a sag of ~90 degrees the soft twigs can flutter slowly
   // (docs/sway-model.md, open points).
   Tree t = SymmetricTree();
-  SwaySimulator sim(t, Params({{SwayParamId::kWindSpeed, 0},
-                               {SwayParamId::kGravityPreload, 0},
-                               {SwayParamId::kKRev, 0}}));
+  SwaySimulator sim(
+      t, Params({{ParamId::kWindSpeed, 0}, {ParamId::kGravityPreload, 0}, {ParamId::kKRev, 0}}));
   for (int k = 0; k < 30 * 20; ++k) sim.Step();
   EXPECT_GT(MaxDisplacement(sim), 1e-3);  // the thesis's sag under the weight of the leaves
   EXPECT_LT(MaxSpeed(sim), 1e-2);         // and at rest again
@@ -201,9 +242,8 @@ TEST(SwaySimulator, WithoutPreloadGravitySagsButSettles) {
 
 TEST(SwaySimulator, RestLengthsKeptAfterEveryStep) {
   Tree grown = GrownTree(7);
-  SwaySimulator sim(grown, Params({{SwayParamId::kWindSpeed, 20},
-                                   {SwayParamId::kGustOn, 0},
-                                   {SwayParamId::kGustOff, 3}}));
+  SwaySimulator sim(
+      grown, Params({{ParamId::kWindSpeed, 20}, {ParamId::kGustOn, 0}, {ParamId::kGustOff, 3}}));
   ASSERT_GT(sim.model().moving, 0);
   for (int k = 0; k < 150; ++k) {
     sim.Step();
@@ -219,10 +259,10 @@ TEST(SwaySimulator, RestLengthsKeptAfterEveryStep) {
 
 TEST(SwaySimulator, NoBlowUpAt50MetresPerSecond) {
   Tree grown = GrownTree(8);
-  SwayParams p = Params({{SwayParamId::kWindSpeed, 50},
-                         {SwayParamId::kGustOn, 0.5},
-                         {SwayParamId::kGustOff, 5},
-                         {SwayParamId::kDuration, 15}});
+  SwayParams p = Params({{ParamId::kWindSpeed, 50},
+                         {ParamId::kGustOn, 0.5},
+                         {ParamId::kGustOff, 5},
+                         {ParamId::kSwayDuration, 15}});
   SwayRun run = RunSway(grown, p, 4);
   EXPECT_TRUE(run.finite);
   EXPECT_GT(run.max_tip_displacement, 1.0);
@@ -239,9 +279,8 @@ TEST(SwaySimulator, NoBlowUpAt50MetresPerSecond) {
 
 TEST(SwaySimulator, MotionDecaysAfterTheWindStops) {
   Tree t = SymmetricTree();
-  SwaySimulator sim(t, Params({{SwayParamId::kWindSpeed, 10},
-                               {SwayParamId::kGustOn, 0},
-                               {SwayParamId::kGustOff, 3}}));
+  SwaySimulator sim(
+      t, Params({{ParamId::kWindSpeed, 10}, {ParamId::kGustOn, 0}, {ParamId::kGustOff, 3}}));
   double during = 0;
   for (int k = 0; k < 90; ++k) {
     sim.Step();
@@ -255,9 +294,8 @@ TEST(SwaySimulator, MotionDecaysAfterTheWindStops) {
 
 TEST(SwaySimulator, GrownTreeComesToRestAfterTheGust) {
   Tree grown = GrownTree(9);
-  SwaySimulator sim(grown, Params({{SwayParamId::kWindSpeed, 20},
-                                   {SwayParamId::kGustOn, 0.5},
-                                   {SwayParamId::kGustOff, 3}}));
+  SwaySimulator sim(
+      grown, Params({{ParamId::kWindSpeed, 20}, {ParamId::kGustOn, 0.5}, {ParamId::kGustOff, 3}}));
   double during = 0;
   for (int k = 0; k < 90; ++k) {
     sim.Step();
@@ -272,9 +310,8 @@ TEST(SwaySimulator, GrownTreeComesToRestAfterTheGust) {
 TEST(SwaySimulator, SymmetricWindGivesSymmetricMotion) {
   Tree t = SymmetricTree();
   // Wind along +z: the tree and the wind are both symmetric under x -> -x.
-  SwaySimulator sim(t, Params({{SwayParamId::kWindDir, 90},
-                               {SwayParamId::kGustOn, 0},
-                               {SwayParamId::kWindSpeed, 8}}));
+  SwaySimulator sim(
+      t, Params({{ParamId::kWindDir, 90}, {ParamId::kGustOn, 0}, {ParamId::kWindSpeed, 8}}));
   const SwayModel& m = sim.model();
   auto at = [&](int branch) {
     return sim.tips()[static_cast<std::size_t>(m.node_of_branch[static_cast<std::size_t>(branch)])];
@@ -300,8 +337,7 @@ TEST(SwaySimulator, ReactionReachesTheParent) {
   Tree t = SymmetricTree();
   double trunk[2];
   for (int c = 0; c < 2; ++c) {
-    SwaySimulator sim(
-        t, Params({{SwayParamId::kKRev, c == 0 ? 0.0 : 1.0}, {SwayParamId::kGustOn, 0}}));
+    SwaySimulator sim(t, Params({{ParamId::kKRev, c == 0 ? 0.0 : 1.0}, {ParamId::kGustOn, 0}}));
     ASSERT_EQ(sim.model().nodes[0].kind, SwayKind::kMoving);
     trunk[c] = 0;
     for (int k = 0; k < 60; ++k) {
@@ -314,7 +350,7 @@ TEST(SwaySimulator, ReactionReachesTheParent) {
 
 TEST(SwaySimulator, InterpolationKeepsEndsAndRestPose) {
   Tree t = SymmetricTree();
-  SwaySimulator sim(t, Params({{SwayParamId::kGustOn, 0}}));
+  SwaySimulator sim(t, Params({{ParamId::kGustOn, 0}}));
   Tree rest = sim.DeformedTree(t);
   for (std::size_t b = 0; b < t.branches.size(); ++b) {
     for (std::size_t k = 0; k < t.branches[b].nodes.size(); ++k) {
@@ -343,9 +379,151 @@ TEST(SwaySimulator, InterpolationKeepsEndsAndRestPose) {
   EXPECT_GT(glm::length(mid - chord), 1e-6);
 }
 
+// ---- wind field (beyond the thesis; docs/sway-model.md, "Wind") ----
+
+// Tip trajectories of every node point over `steps` steps.
+std::vector<std::vector<dvec3>> Trajectories(const Tree& tree, const SwayParams& p, int steps,
+                                             dvec3 origin = dvec3(0.0)) {
+  SwaySimulator sim(tree, p, origin);
+  std::vector<std::vector<dvec3>> out;
+  for (int k = 0; k < steps; ++k) {
+    sim.Step();
+    out.push_back(sim.tips());
+  }
+  return out;
+}
+
+// First step after which any tip is more than 1e-6 cm from rest; -1 if none.
+int FirstMovingStep(const std::vector<std::vector<dvec3>>& traj, const SwayModel& model) {
+  for (std::size_t k = 0; k < traj.size(); ++k) {
+    for (std::size_t u = 0; u < model.nodes.size(); ++u) {
+      if (glm::length(traj[k][u] - model.nodes[u].rest_tip) > 1e-6) return static_cast<int>(k);
+    }
+  }
+  return -1;
+}
+
+// The thesis's sudden uniform gust, as the model computed it before the wind field was added.
+dvec3 ThesisWind(const SwayParams& p, double t) {
+  if (t < p.gust_on || t >= p.gust_off) return dvec3(0.0);
+  double s = 0, c = 1;
+  det::SinCos(p.wind_dir * (det::kPi / 180.0), &s, &c);
+  double speed = p.wind_speed * 100.0;
+  return dvec3(speed * c, 0.0, speed * s);
+}
+
+TEST(WindField, DefaultsAreTheThesisUniformGustBitForBit) {
+  SwayParams p = Params({{ParamId::kWindDir, 33}, {ParamId::kWindSpeed, 7}});
+  WindField field(p);
+  EXPECT_TRUE(field.uniform());
+  for (double t : {0.0, 0.99, 1.0, 3.3, 5.999, 6.0, 9.0}) {
+    for (dvec3 x : {dvec3(0.0), dvec3(1000, 0, 0), dvec3(-3e4, 500, 7e3)}) {
+      EXPECT_EQ(WindAt(p, x, t), ThesisWind(p, t)) << t;
+    }
+  }
+  // Trajectories: a tree at another origin sways exactly as at 0 (the wind is the same).
+  Tree grown = GrownTree(6);
+  auto a = Trajectories(grown, p, 120);
+  auto b = Trajectories(grown, p, 120, dvec3(2500, 0, -800));
+  EXPECT_EQ(a, b);
+}
+
+TEST(WindField, FrontAndWaveFollowTheirFormulas) {
+  SwayParams p = Params({{ParamId::kGustFrontSpeed, 4},
+                         {ParamId::kWindVariation, 0.5},
+                         {ParamId::kWindWavelength, 20},
+                         {ParamId::kWindPeriod, 4},
+                         {ParamId::kWindSpeed, 10},
+                         {ParamId::kWindDir, 90}});
+  WindField field(p);
+  EXPECT_FALSE(field.uniform());
+  // 12 m downwind (+z for wind_dir 90): the gust arrives 12 / 4 = 3 s after gust_on = 1 s.
+  dvec3 x(0, 0, 1200);
+  EXPECT_NEAR(field.Along(x), 12.0, 1e-12);
+  EXPECT_EQ(field.At(x, 3.99), dvec3(0.0));
+  EXPECT_NE(field.At(x, 4.01), dvec3(0.0));
+  EXPECT_NE(field.At(x, 8.99), dvec3(0.0));
+  EXPECT_EQ(field.At(x, 9.0), dvec3(0.0));  // gust_off + 3 s
+  // Speed × (1 + v sin(2π (x/λ - t/T))) along +z.
+  double t = 5.0;
+  double expected = 1000.0 * (1.0 + 0.5 * std::sin(2.0 * det::kPi * (12.0 / 20.0 - t / 4.0)));
+  dvec3 w = field.At(x, t);
+  EXPECT_NEAR(w.z, expected, 1e-9);
+  EXPECT_NEAR(w.x, 0.0, 1e-9);
+  EXPECT_EQ(w.y, 0.0);
+  // Upwind points get it earlier.
+  EXPECT_NE(field.At(dvec3(0, 0, -400), 0.01), dvec3(0.0));  // 4 m upwind: from t = 0
+}
+
+TEST(WindField, TreeDownwindStartsLaterByDistanceOverFrontSpeed) {
+  Tree t = SymmetricTree();
+  const double front = 5.0;  // m/s
+  SwayParams p = Params({{ParamId::kGustFrontSpeed, front},
+                         {ParamId::kGustOn, 0.5},
+                         {ParamId::kGustOff, 20},
+                         {ParamId::kWindSpeed, 8}});
+  SwayModel model = BuildSwayModel(t, p);
+  auto here = Trajectories(t, p, 150);
+  auto there = Trajectories(t, p, 150, dvec3(1000, 0, 0));  // 10 m downwind (wind_dir 0)
+  int start_here = FirstMovingStep(here, model), start_there = FirstMovingStep(there, model);
+  ASSERT_GE(start_here, 0);
+  ASSERT_GE(start_there, 0);
+  int expected = static_cast<int>(std::lround(10.0 / front / p.dt));  // 2 s = 60 steps
+  EXPECT_NEAR(start_there - start_here, expected, 1) << start_here << " " << start_there;
+  // Crosswind (10 m along z) is no later.
+  auto side = Trajectories(t, p, 150, dvec3(0, 0, 1000));
+  EXPECT_EQ(FirstMovingStep(side, model), start_here);
+}
+
+TEST(WindField, VariationMakesTreesAtDifferentPlacesSwayDifferently) {
+  Tree grown = GrownTree(6);
+  for (double v : {0.0, 0.4}) {
+    SwayParams p = Params({{ParamId::kWindVariation, v}, {ParamId::kWindSpeed, 10}});
+    auto a = Trajectories(grown, p, 150);
+    auto b = Trajectories(grown, p, 150, dvec3(700, 0, 0));  // 7 m downwind
+    if (v == 0.0) {
+      EXPECT_EQ(a, b);
+    } else {
+      double largest = 0;
+      for (std::size_t k = 0; k < a.size(); ++k) {
+        for (std::size_t u = 0; u < a[k].size(); ++u) {
+          largest = std::max(largest, glm::length(a[k][u] - b[k][u]));
+        }
+      }
+      EXPECT_GT(largest, 0.5);  // cm
+    }
+  }
+}
+
+TEST(WindField, SymmetryHoldsWithFrontAndWave) {
+  // Wind along +z with a front and a wave: the field is still symmetric under x -> -x.
+  Tree t = SymmetricTree();
+  SwaySimulator sim(t, Params({{ParamId::kWindDir, 90},
+                               {ParamId::kGustOn, 0},
+                               {ParamId::kWindSpeed, 8},
+                               {ParamId::kGustFrontSpeed, 2},
+                               {ParamId::kWindVariation, 0.5}}));
+  const SwayModel& m = sim.model();
+  auto at = [&](int branch) {
+    return sim.tips()[static_cast<std::size_t>(m.node_of_branch[static_cast<std::size_t>(branch)])];
+  };
+  double moved = 0;
+  for (int k = 0; k < 240; ++k) {
+    sim.Step();
+    for (auto [l, r] : {std::pair<int, int>{1, 2}, {3, 4}}) {
+      dvec3 a = at(l), b = at(r);
+      ASSERT_NEAR(a.x, -b.x, 1e-9) << k;
+      ASSERT_NEAR(a.y, b.y, 1e-9) << k;
+      ASSERT_NEAR(a.z, b.z, 1e-9) << k;
+    }
+    moved = std::max(moved, at(3).z - 5.0);
+  }
+  EXPECT_GT(moved, 1.0);  // downwind, cm
+}
+
 TEST(SwaySimulator, SameRunTwiceIsIdentical) {
   Tree grown = GrownTree(6);
-  SwayParams p = Params({{SwayParamId::kWindSpeed, 15}, {SwayParamId::kDuration, 4}});
+  SwayParams p = Params({{ParamId::kWindSpeed, 15}, {ParamId::kSwayDuration, 4}});
   SwayRun a = RunSway(grown, p, 5), b = RunSway(grown, p, 5);
   ASSERT_EQ(a.tip_positions.size(), b.tip_positions.size());
   EXPECT_EQ(a.tip_branches, b.tip_branches);
