@@ -186,5 +186,58 @@ TEST(Cli, MappingsPrintTheHormoneAndAgeRangesAsCsv) {
   EXPECT_EQ(RunCli({"tree", "mappings", "--set", "H_sat=0"}, bad_out, bad_err), 2);
 }
 
+// ---- tree render-stats (thesis ch. 4 hybrid rendering counts) ----
+
+TEST(CliRenderStats, PrintsOneJsonObjectWithTheTable41Keys) {
+  Result r = RunNiwa({"tree", "render-stats", "--preset", "sakura", "--years", "6"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out.find('\n'), r.out.size() - 1);
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  for (const char* key : {"lines", "branch_polygons", "leaf_polygons", "total_polygons", "textures",
+                          "full_polygons", "primitives", "cam", "width", "height", "mode"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["width"], 512);
+  EXPECT_EQ(j["total_polygons"].get<int>(),
+            j["branch_polygons"].get<int>() + j["leaf_polygons"].get<int>());
+  EXPECT_GT(j["full_polygons"].get<int>(), 20 * j["primitives"].get<int>());
+  // Full mode reports the full mesh; a closer camera makes more cards.
+  Result full =
+      RunNiwa({"tree", "render-stats", "--preset", "sakura", "--years", "6", "--mode", "full"});
+  ASSERT_EQ(full.code, 0) << full.err;
+  nlohmann::json f = nlohmann::json::parse(full.out);
+  EXPECT_EQ(f["lines"], 0);
+  EXPECT_EQ(f["total_polygons"], j["full_polygons"]);
+  std::string cam = j["cam"].get<std::string>();
+  Result same =
+      RunNiwa({"tree", "render-stats", "--preset", "sakura", "--years", "6", "--cam", cam});
+  ASSERT_EQ(same.code, 0) << same.err;
+  EXPECT_EQ(nlohmann::json::parse(same.out)["lines"], j["lines"]);
+  Result close = RunNiwa({"tree", "render-stats", "--preset", "sakura", "--years", "6", "--cam",
+                          cam, "--distance", "0.5"});
+  ASSERT_EQ(close.code, 0) << close.err;
+  EXPECT_GT(nlohmann::json::parse(close.out)["branch_polygons"].get<int>(),
+            j["branch_polygons"].get<int>());
+}
+
+TEST(CliRenderStats, BadFlagsAreOneLineErrorsWithExitCode2) {
+  std::vector<std::string> base = {"tree", "render-stats", "--preset", "binary", "--years", "3"};
+  auto run = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = base;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return RunNiwa(args);
+  };
+  ExpectOneLineError(run({"--width", "0"}), "--width: must be a whole number in [16, 16384]");
+  ExpectOneLineError(run({"--height", "99999"}), "--height");
+  ExpectOneLineError(run({"--mode", "fast"}), "--mode");
+  ExpectOneLineError(run({"--threshold", "-1"}), "--threshold: must be a number in [0.1, 1000]");
+  ExpectOneLineError(run({"--card-planes", "1"}), "--card-planes");
+  ExpectOneLineError(run({"--cam", "1,2,3"}), "--cam");
+  ExpectOneLineError(run({"--pitch", "3"}), "--pitch: must be a number in [-0.1, 1.5]");
+  ExpectOneLineError(run({"--distance", "0"}), "--distance");
+  ExpectOneLineError(run({"--target", "1,2"}), "--target");
+  ExpectOneLineError(run({"--leaf-mode", "none"}), "--leaf-mode");
+}
+
 }  // namespace
 }  // namespace niwa
