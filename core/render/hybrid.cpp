@@ -524,6 +524,38 @@ HybridScene BuildHybridScene(const Tree& tree, const RenderOptions& options) {
   return scene;
 }
 
+std::vector<AtlasJob> AtlasJobs(const HybridScene& scene) {
+  std::vector<AtlasJob> jobs;
+  const bool leaves_on_cards = scene.options.leaf_mode == LeafMode::kBranchCards;
+  for (std::size_t g = 0; g < scene.group_representative.size(); ++g) {
+    const int rep = scene.group_representative[g];
+    const CardFrame& frame = scene.frames[static_cast<std::size_t>(rep)];
+    for (std::size_t k = 0; k < frame.planes.size(); ++k) {
+      AtlasJob job;
+      job.tile = scene.group_tiles[g][k];
+      job.origin = frame.origin;
+      job.plane = frame.planes[k];
+      job.branches = {rep};
+      job.with_leaves = leaves_on_cards;
+      jobs.push_back(job);
+    }
+  }
+  for (std::size_t c = 0; c < scene.clusters.size(); ++c) {
+    const LeafCluster& cluster = scene.clusters[c];
+    for (std::size_t k = 0; k < cluster.planes.size(); ++k) {
+      AtlasJob job;
+      job.tile = scene.cluster_tiles[c][k];
+      job.origin = cluster.origin;
+      job.plane = cluster.planes[k];
+      job.branches = cluster.branches;
+      job.with_wood = false;
+      job.with_leaves = true;
+      jobs.push_back(job);
+    }
+  }
+  return jobs;
+}
+
 void CardCorners(const HybridScene& scene, int id, int plane, glm::vec3 out[4]) {
   const std::size_t i = static_cast<std::size_t>(id);
   const CardFrame& frame = scene.frames[i];
@@ -596,11 +628,12 @@ void PushCard(const glm::vec3 (&corners)[4], const AtlasTile& tile, int atlas_si
   uint32_t base = static_cast<uint32_t>(list->card_positions.size() / 3);
   for (const glm::vec3& c : corners)
     list->card_positions.insert(list->card_positions.end(), {c.x, c.y, c.z});
-  // v0 (the branch base) at the tile's last row, v1 (the tip) at its first row.
+  // GL texture space: the tile is the atlas framebuffer's viewport (x, y, w, h), so the card's
+  // (u0, v0) corner (branch base) is at (x, y) and (u1, v1) at (x + w, y + h).
   float inv = 1.0f / static_cast<float>(atlas_size);
   float x0 = static_cast<float>(tile.x) * inv, x1 = static_cast<float>(tile.x + tile.w) * inv;
   float y0 = static_cast<float>(tile.y) * inv, y1 = static_cast<float>(tile.y + tile.h) * inv;
-  list->card_uvs.insert(list->card_uvs.end(), {x0, y1, x1, y1, x1, y0, x0, y0});
+  list->card_uvs.insert(list->card_uvs.end(), {x0, y0, x1, y0, x1, y1, x0, y1});
   list->card_indices.insert(list->card_indices.end(),
                             {base, base + 1, base + 2, base, base + 2, base + 3});
   list->card_branch.push_back(branch);
@@ -641,6 +674,8 @@ HybridDrawList BuildDrawList(const Tree& tree, const HybridScene& scene,
         list.line_positions.insert(list.line_positions.end(), {p.x, p.y, p.z, q.x, q.y, q.z});
         list.line_colors.insert(list.line_colors.end(), {color.r, color.g, color.b});
         list.line_widths.push_back(width);
+        list.line_branch.push_back(static_cast<int>(i));
+        list.line_nodes.insert(list.line_nodes.end(), {a, b});
       }
     }
   }

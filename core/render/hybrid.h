@@ -149,8 +149,11 @@ struct LeafCluster {
   std::vector<CardPlane> planes;
 };
 
+// A tile of the square atlas in texels, as a GL viewport of the atlas framebuffer: (x, y) is its
+// lower-left corner in GL texture space (t = y / atlas_size). Render the plane's rectangle
+// orthographically into it looking along −normal with up = plane.up (screen right = plane.right).
 struct AtlasTile {
-  int x = 0, y = 0, w = 0, h = 0;  // texels; (0, 0) is the atlas's first row
+  int x = 0, y = 0, w = 0, h = 0;
 };
 
 // Everything that does not depend on the view: build once per tree, reuse for every frame.
@@ -184,6 +187,20 @@ void CardCorners(const HybridScene& scene, int id, int plane, glm::vec3 out[4]);
 // y = b, z = normal of plane 0; metres of the representative) to world for branch `id`.
 void GroupToBranchMatrix(const HybridScene& scene, int id, float out[16]);
 
+// One orthographic render that fills one atlas tile (thesis 4.2.2 texture generation): draw the
+// bark of `branches` (and, when with_leaves, their leaves and flowers) as in BuildTreeMesh, seen
+// from origin + plane.normal looking along −plane.normal, up = plane.up, the view volume's x and y
+// spanning [u0, u1] and [v0, v1] of the plane, into the viewport `tile`; transparent elsewhere.
+struct AtlasJob {
+  AtlasTile tile;
+  glm::vec3 origin{0.0f};
+  CardPlane plane;
+  std::vector<int> branches;  // the group's representative, or every branch of a leaf cluster
+  bool with_wood = true;      // false for leaf-cluster tiles (leaves and flowers only)
+  bool with_leaves = false;   // leaves and flowers of those branches
+};
+std::vector<AtlasJob> AtlasJobs(const HybridScene& scene);
+
 // ---- per view ----
 
 enum class BranchDraw : uint8_t { kHidden, kLine, kCard };
@@ -208,12 +225,14 @@ struct LineShading {
 // What to draw this frame: GL-ready arrays (metres, atlas texel coordinates / atlas_size).
 struct HybridDrawList {
   std::vector<float> card_positions;   // 4 corners × xyz per card
-  std::vector<float> card_uvs;         // 4 × uv per card, in [0, 1] of the atlas
+  std::vector<float> card_uvs;         // 4 × uv per card: GL texture coordinates of its tile
   std::vector<uint32_t> card_indices;  // 2 triangles per card
   std::vector<int> card_branch;        // branch id per card, -1 for leaf-cluster cards
   std::vector<float> line_positions;   // 2 endpoints × xyz per segment
   std::vector<float> line_colors;      // rgb per segment (eq. 4.2)
   std::vector<float> line_widths;      // pixels per segment (eq. 4.1, at least 1)
+  std::vector<int> line_branch;        // branch id per segment
+  std::vector<int> line_nodes;         // 2 per segment: the branch's node index at each endpoint
 };
 
 HybridDrawList BuildDrawList(const Tree& tree, const HybridScene& scene,

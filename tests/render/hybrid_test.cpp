@@ -391,6 +391,28 @@ TEST(Counts, SakuraFifteenYearsDefaultViewMeetsOneTwentieth) {
     // Goal: hybrid draws at most 1/20 of the full mode's primitives.
     EXPECT_LE(20 * stats.primitives, stats.full_polygons)
         << "primitives " << stats.primitives << " full " << stats.full_polygons;
+    // The first card's base corner samples its tile's lower-left texel corner.
+    ASSERT_FALSE(list.card_branch.empty());
+    if (list.card_branch[0] >= 0) {
+      std::size_t id = static_cast<std::size_t>(list.card_branch[0]);
+      glm::vec3 centre =
+          scene.frames[id].origin + scene.frames[id].b * (0.5f * scene.frames[id].length);
+      int plane = ChooseCardPlane(scene.frames[id].planes, centre - camera.eye);
+      const AtlasTile& tile = scene.group_tiles[static_cast<std::size_t>(scene.group_of_branch[id])]
+                                               [static_cast<std::size_t>(plane)];
+      EXPECT_FLOAT_EQ(list.card_uvs[0],
+                      static_cast<float>(tile.x) / static_cast<float>(scene.atlas_size));
+      EXPECT_FLOAT_EQ(list.card_uvs[5],
+                      static_cast<float>(tile.y + tile.h) / static_cast<float>(scene.atlas_size));
+    }
+    // One atlas job per tile, clusters render leaves only.
+    std::vector<AtlasJob> jobs = AtlasJobs(scene);
+    EXPECT_EQ(static_cast<int>(jobs.size()), stats.atlas_tiles);
+    for (const AtlasJob& job : jobs) {
+      EXPECT_FALSE(job.branches.empty());
+      EXPECT_GT(job.plane.u1, job.plane.u0);
+      EXPECT_GT(job.plane.v1, job.plane.v0);
+    }
     // Atlas: every tile inside, none overlapping.
     EXPECT_TRUE(scene.atlas_fits);
     std::vector<AtlasTile> tiles;
