@@ -262,6 +262,12 @@ dvec3 SwaySimulator::ParentRotate(int i, const dvec3& v) const {
                    dir_[static_cast<std::size_t>(p)], v);
 }
 
+glm::dmat3 SwaySimulator::ParentRotation(int i) const {
+  // RotateMin is linear in v: its columns are the images of the unit axes.
+  return glm::dmat3(ParentRotate(i, dvec3(1, 0, 0)), ParentRotate(i, dvec3(0, 1, 0)),
+                    ParentRotate(i, dvec3(0, 0, 1)));
+}
+
 dvec3 SwaySimulator::NodePosition(int i, int n) const {
   const SwayNode& s = model_.nodes[static_cast<std::size_t>(i)];
   const std::size_t k = static_cast<std::size_t>(n);

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 #include <optional>
 #include <string>
@@ -134,6 +135,9 @@ class SwaySimulator {
   const std::vector<glm::dvec3>& velocities() const { return velocity_; }
   // Position of original node n of node point i, interpolated with eq. 3.15.
   glm::dvec3 NodePosition(int i, int n) const;
+  // The rotation of node point i's parent rod (eq. 3.11) as a matrix: R v = ParentRotate(i, v);
+  // identity for a node point on the root. Used by core/sway/skin.h.
+  glm::dmat3 ParentRotation(int i) const;
   // The rest tree with every alive branch's nodes moved to the current interpolated pose (3.3.3).
   Tree DeformedTree(const Tree& rest) const;
 

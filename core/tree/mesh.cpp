@@ -136,6 +136,7 @@ void AddBranchTube(const Tree& tree, const Branch& branch, float v_start,
       PushVertex(&bark, center + radial * radius, radial,
                  static_cast<float>(j) / static_cast<float>(sides), (*node_v)[i]);
       out->bark_branch_id.push_back(id);
+      out->bark_node_index.push_back(static_cast<uint32_t>(i));
     }
   }
   for (uint32_t i = 0; i + 1 < rings; ++i) {
@@ -151,14 +152,17 @@ void AddBranchTube(const Tree& tree, const Branch& branch, float v_start,
   const glm::vec3 tip_center = branch.nodes[rings - 1] * scale;
   const float cap_radius = tip_radius * scale;
   const uint32_t center_index = NextIndex(bark);
+  const uint32_t tip_node = static_cast<uint32_t>(rings - 1);
   PushVertex(&bark, tip_center, tip_tangent, 0.5f, 0.5f);
   out->bark_branch_id.push_back(id);
+  out->bark_node_index.push_back(tip_node);
   for (int j = 0; j < sides; ++j) {
     float angle = 2.0f * kPi * static_cast<float>(j) / static_cast<float>(sides);
     float c = det::Cosf(angle), s = det::Sinf(angle);
     PushVertex(&bark, tip_center + (normal * c + binormal * s) * cap_radius, tip_tangent,
                0.5f + 0.5f * c, 0.5f + 0.5f * s);
     out->bark_branch_id.push_back(id);
+    out->bark_node_index.push_back(tip_node);
   }
   for (uint32_t j = 0; j < static_cast<uint32_t>(sides); ++j) {
     uint32_t next = (j + 1) % static_cast<uint32_t>(sides);
@@ -251,8 +255,17 @@ TreeMesh BuildTreeMesh(const Tree& tree, const MeshOptions& options) {
       }
     }
     AddBranchTube(tree, branch, v_start, options, &mesh, &node_v[n]);
-    for (const Leaf& leaf : branch.leaves) AddLeaf(branch, leaf, leaf_size, options, &mesh.leaves);
-    for (int node : branch.flowers) AddFlower(branch, node, options, &mesh.flowers);
+    const uint32_t id = static_cast<uint32_t>(branch.id);
+    for (const Leaf& leaf : branch.leaves) {
+      AddLeaf(branch, leaf, leaf_size, options, &mesh.leaves);
+      mesh.leaf_branch_id.resize(mesh.leaves.vertex_count(), id);
+      mesh.leaf_node_index.resize(mesh.leaves.vertex_count(), static_cast<uint32_t>(leaf.node));
+    }
+    for (int node : branch.flowers) {
+      AddFlower(branch, node, options, &mesh.flowers);
+      mesh.flower_branch_id.resize(mesh.flowers.vertex_count(), id);
+      mesh.flower_node_index.resize(mesh.flowers.vertex_count(), static_cast<uint32_t>(node));
+    }
   }
   return mesh;
 }

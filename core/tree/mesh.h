@@ -18,11 +18,19 @@ struct MeshBuffers {
   std::size_t vertex_count() const { return positions.size() / 3; }
 };
 
+// Every per-vertex id vector holds one entry per vertex of its buffer: the branch a vertex hangs on
+// and which of that branch's nodes (a ring's node; a cap's tip node; the node a leaf or flower is
+// attached to). core/sway/skin.h turns them into skinning joints and weights (thesis eq. 3.15).
 struct TreeMesh {
   MeshBuffers bark;  // generalized cylinders, one ring per node, end caps at tips
-  std::vector<uint32_t> bark_branch_id;  // branch id of each bark vertex (picking, pruning)
+  std::vector<uint32_t> bark_branch_id;   // branch id of each bark vertex (picking, pruning)
+  std::vector<uint32_t> bark_node_index;  // node of that branch (ring or tip of the cap)
   MeshBuffers leaves;                    // one double-sided quad (two triangles each side) per leaf
-  MeshBuffers flowers;                   // a small five-petal star per open flower
+  std::vector<uint32_t> leaf_branch_id;  // branch the leaf grows on
+  std::vector<uint32_t> leaf_node_index;    // node of that branch the leaf sits at
+  MeshBuffers flowers;                      // a small five-petal star per open flower
+  std::vector<uint32_t> flower_branch_id;   // branch the flower grows on
+  std::vector<uint32_t> flower_node_index;  // node of that branch the flower sits at
 };
 
 struct MeshOptions {

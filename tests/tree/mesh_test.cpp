@@ -150,6 +150,44 @@ TEST(MeshTest, BuffersAreWellFormedForEveryPreset) {
   ExpectWellFormed(flowering.flowers, "sakura flowers");
 }
 
+// The per-vertex branch/node ids (used for sway skinning) name the node each vertex hangs on:
+// a ring vertex lies one radius from its node, a leaf's base corners and a flower's hub near it.
+TEST(MeshTest, VertexNodeIdsNameTheNodeEachVertexHangsOn) {
+  Tree tree = Grow("sakura", 8);
+  TreeMesh mesh = BuildTreeMesh(tree);
+  ASSERT_EQ(mesh.bark_node_index.size(), mesh.bark.vertex_count());
+  ASSERT_EQ(mesh.leaf_branch_id.size(), mesh.leaves.vertex_count());
+  ASSERT_EQ(mesh.leaf_node_index.size(), mesh.leaves.vertex_count());
+  ASSERT_EQ(mesh.flower_branch_id.size(), mesh.flowers.vertex_count());
+  ASSERT_EQ(mesh.flower_node_index.size(), mesh.flowers.vertex_count());
+  ASSERT_GT(mesh.flowers.vertex_count(), 0u);
+  auto node_of = [&](uint32_t branch, uint32_t node) {
+    EXPECT_LT(branch, tree.branches.size());
+    const Branch& b = tree.branches[branch];
+    EXPECT_TRUE(b.alive);
+    EXPECT_LT(node, b.nodes.size());
+    return b.nodes[std::min<std::size_t>(node, b.nodes.size() - 1)] * kScale;
+  };
+  for (std::size_t v = 0; v < mesh.bark.vertex_count(); ++v) {
+    const Branch& b = tree.branches[mesh.bark_branch_id[v]];
+    float radius = BranchRadius(b) * kScale;  // the base radius bounds every ring
+    glm::vec3 node = node_of(mesh.bark_branch_id[v], mesh.bark_node_index[v]);
+    ASSERT_LE(glm::length(Vec(mesh.bark.positions, v) - node), radius * 1.001f + 1e-6f) << v;
+  }
+  const float leaf_size = static_cast<float>(tree.params.Get(ParamId::kLeafSize)) * kScale;
+  for (std::size_t v = 0; v < mesh.leaves.vertex_count(); ++v) {
+    glm::vec3 node = node_of(mesh.leaf_branch_id[v], mesh.leaf_node_index[v]);
+    ASSERT_LE(glm::length(Vec(mesh.leaves.positions, v) - node), 1.1f * leaf_size) << v;
+    if (v % 4 < 2) {  // the two base corners: a quarter of the size across the node
+      ASSERT_LE(glm::length(Vec(mesh.leaves.positions, v) - node), 0.26f * leaf_size) << v;
+    }
+  }
+  for (std::size_t v = 0; v < mesh.flowers.vertex_count(); ++v) {
+    glm::vec3 node = node_of(mesh.flower_branch_id[v], mesh.flower_node_index[v]);
+    ASSERT_LE(glm::length(Vec(mesh.flowers.positions, v) - node), 1.1f * kScale) << v;  // 1 cm
+  }
+}
+
 TEST(MeshTest, SidesStayInRangeAndGrowWithRadius) {
   Tree tree = Grow("sakura", 8);
   MeshOptions options;
