@@ -467,8 +467,8 @@ int RunRenderStats(const GrowOptions& grow_options, RenderStatsOptions o, CLI::A
   j["full_bark"] = stats.full_bark;
   j["full_leaves"] = stats.full_leaves;
   j["full_flowers"] = stats.full_flowers;
-  j["primitive_ratio"] =
-      stats.full_polygons > 0 ? static_cast<double>(stats.primitives) / stats.full_polygons : 0.0;
+  j["primitive_ratio"] =  // primitives drawn / full_polygons
+      stats.full_polygons > 0 ? j["primitives"].get<double>() / stats.full_polygons : 0.0;
   j["ms_grow_mesh"] = ms(start, select_start);
   j["ms_scene"] = ms(select_start, scene_end);
   j["ms_select"] = ms(scene_end, select_end);
