@@ -710,6 +710,10 @@ RenderStats CountHybrid(const HybridScene& scene, const HybridSelection& selecti
     }
   }
   stats.leaf_clusters = static_cast<int>(scene.clusters.size());
+  for (std::size_t i = 0; i < selection.draw.size(); ++i) {
+    if (selection.draw[i] != BranchDraw::kHidden && scene.carries_leaves[i])
+      stats.leaf_branches += 1;
+  }
   stats.leaf_polygons += 2 * stats.leaf_clusters;
   stats.total_polygons = stats.branch_polygons + stats.leaf_polygons;
   stats.primitives = stats.total_polygons + stats.lines;

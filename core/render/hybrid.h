@@ -253,6 +253,7 @@ struct RenderStats {
   int texture_groups = 0;   // groups used by this view's branch cards
   int atlas_tiles = 0;      // every tile of the atlas (all groups and clusters, all planes)
   int leaf_clusters = 0;
+  int leaf_branches = 0;  // living branches carrying leaves or flowers
   int full_bark = 0, full_leaves = 0, full_flowers = 0;
   int full_polygons = 0;  // triangles of BuildTreeMesh: bark + leaves + flowers
 };
