@@ -22,17 +22,36 @@ float Clamp01(float x) { return x < 0.0f ? 0.0f : (x > 1.0f ? 1.0f : x); }
 
 const glm::vec3 kUp(0.0f, 1.0f, 0.0f);
 
-// Direction of each internode and the phyllotaxis azimuth of each node (index 1..N).
+CosSin MakeTurn(float angle) { return {det::Cosf(angle), det::Sinf(angle)}; }
+
+// RotateToward (math/rotation.h) with the angle given by its cosine and sine: same arithmetic.
+glm::vec3 RotateToward(const glm::vec3& v, const glm::vec3& target, const CosSin& turn) {
+  glm::vec3 axis = glm::cross(v, target);
+  float length = glm::length(axis);
+  if (length < 1e-6f) return v;
+  return glm::normalize(RotateAbout(v, axis / length, turn.c, turn.s));
+}
+
+// Turns 2π·k/count for k = 0..count-1 (bud and leaf positions around a node).
+std::vector<CosSin> MakeTurnsAround(int count) {
+  std::vector<CosSin> turns;
+  for (int k = 0; k < count; ++k) {
+    turns.push_back(MakeTurn(2.0f * kPi * static_cast<float>(k) / static_cast<float>(count)));
+  }
+  return turns;
+}
+
+// Direction of each internode and the phyllotaxis azimuth of each node (index 1..N); buffers
+// reused from shoot to shoot.
 struct NodeFrames {
   std::vector<glm::vec3> direction, azimuth;
 };
 
-NodeFrames ComputeNodeFrames(const Branch& shoot, const std::vector<float>& turn_cos,
-                             const std::vector<float>& turn_sin) {
-  NodeFrames frames;
+void ComputeNodeFrames(const Branch& shoot, const std::vector<float>& turn_cos,
+                       const std::vector<float>& turn_sin, NodeFrames& frames) {
   std::size_t n = shoot.nodes.size();
-  frames.direction.resize(n, kUp);
-  frames.azimuth.resize(n, glm::vec3(1, 0, 0));
+  frames.direction.assign(n, kUp);
+  frames.azimuth.assign(n, glm::vec3(1, 0, 0));
   glm::vec3 transported = shoot.azimuth;
   for (std::size_t i = 1; i < n; ++i) {
     glm::vec3 d = glm::normalize(shoot.nodes[i] - shoot.nodes[i - 1]);
@@ -40,7 +59,6 @@ NodeFrames ComputeNodeFrames(const Branch& shoot, const std::vector<float>& turn
     frames.direction[i] = d;
     frames.azimuth[i] = RotateAbout(transported, d, turn_cos[i], turn_sin[i]);
   }
-  return frames;
 }
 
 }  // namespace
@@ -92,6 +110,16 @@ Grower::Grower(const GrowRequest& request) : request_(request), rng_(request.see
     turn_cos_.push_back(det::Cosf(angle));
     turn_sin_.push_back(det::Sinf(angle));
   }
+  const ParamSet& p = request.params;
+  cap_branch_ = MakeTurn(Radians(static_cast<float>(p.Get(ParamId::kThetaBmaxB))));
+  cap_node_ = MakeTurn(Radians(static_cast<float>(p.Get(ParamId::kThetaBmaxN))));
+  sympodial_turn_ = MakeTurn(-Radians(static_cast<float>(p.Get(ParamId::kThetaN))));
+  psi_t_ = MakeTurn(Radians(static_cast<float>(p.Get(ParamId::kPsiT))));
+  psi_tl_ = MakeTurn(Radians(static_cast<float>(p.Get(ParamId::kPsiTl))));
+  psi_l_ = MakeTurn(Radians(static_cast<float>(p.Get(ParamId::kPsiL))));
+  around_leaves_ = MakeTurnsAround(std::max(1, p.GetInt(ParamId::kBL)));
+  around_tl_ = MakeTurnsAround(p.GetInt(ParamId::kBTl));
+  around_laterals_ = MakeTurnsAround(p.GetInt(ParamId::kBL));
   tree_.preset = request.preset;
   tree_.seed = request.seed;
   tree_.params = request.params;
@@ -213,13 +241,21 @@ void Grower::LayOutShoot(Branch& shoot, bool bend) {
     if (b > 0.0f) {
       float difference = AngleBetween(direction, target);  // eqs. 2.6, 2.8
       float cap = i == 1 ? cap_branch : cap_node;          // eqs. 2.7, 2.9
-      direction = RotateToward(direction, target, std::min(b * difference, cap));
+      float angle = b * difference;
+      if (!(cap < angle)) {  // std::min(angle, cap)
+        double c, s;
+        det::SinCos(angle, &s, &c);  // as det::Cosf, det::Sinf, in one call
+        direction =
+            RotateToward(direction, target, CosSin{static_cast<float>(c), static_cast<float>(s)});
+      } else {
+        direction = RotateToward(direction, target, i == 1 ? cap_branch_ : cap_node_);
+      }
     }
     if (sympodial && theta_n != 0.0f) {
       // Sympodial zigzag: each node turns θ_N away from the side its bud sits on (steps 5, 8).
       glm::vec3 side =
           RotateAbout(Orthonormalize(azimuth, direction), direction, turn_cos_[i], turn_sin_[i]);
-      direction = RotateToward(direction, side, -theta_n);
+      direction = RotateToward(direction, side, sympodial_turn_);
     }
     azimuth = Orthonormalize(azimuth, direction);
     shoot.nodes[i] = shoot.nodes[i - 1] + direction * shoot.internode_length;
@@ -298,30 +334,31 @@ void Grower::SetNextYearBuds() {
   const ParamSet& p = tree_.params;
   int terminal_buds = p.GetInt(ParamId::kBT), tl_buds = p.GetInt(ParamId::kBTl);
   int lateral_buds = p.GetInt(ParamId::kBL);
-  float psi_t = Radians(static_cast<float>(p.Get(ParamId::kPsiT)));
-  float psi_tl = Radians(static_cast<float>(p.Get(ParamId::kPsiTl)));
-  float psi_l = Radians(static_cast<float>(p.Get(ParamId::kPsiL)));
   bool dwarf_flowers = p.GetBool(ParamId::kDwarfLateralFlowers);
   float leaf_lift = 0.6f;
 
+  NodeFrames f;
   for (int id : new_shoots_) {
     Branch& s = tree_.branches[static_cast<std::size_t>(id)];
     if (!s.alive) continue;
-    NodeFrames f = ComputeNodeFrames(s, turn_cos_, turn_sin_);
+    ComputeNodeFrames(s, turn_cos_, turn_sin_, f);
     int tip = static_cast<int>(s.nodes.size()) - 1;
     // Leaves: one per lateral bud position at every node (at least one per node).
     int per_node = std::max(1, lateral_buds);
+    s.leaves.reserve(static_cast<std::size_t>(tip * per_node));
+    s.buds.reserve(
+        static_cast<std::size_t>((terminal_buds > 0 ? 1 : 0) + tl_buds + (tip - 1) * lateral_buds));
     for (int i = 1; i <= tip; ++i) {
       for (int k = 0; k < per_node; ++k) {
-        glm::vec3 side = RotateAbout(
-            f.azimuth[static_cast<std::size_t>(i)], f.direction[static_cast<std::size_t>(i)],
-            2.0f * kPi * static_cast<float>(k) / static_cast<float>(per_node));
+        const CosSin& turn = around_leaves_[static_cast<std::size_t>(k)];
+        glm::vec3 side = RotateAbout(f.azimuth[static_cast<std::size_t>(i)],
+                                     f.direction[static_cast<std::size_t>(i)], turn.c, turn.s);
         s.leaves.push_back(
             {i, glm::normalize(side + f.direction[static_cast<std::size_t>(i)] * leaf_lift)});
       }
     }
-    auto add_bud = [&](ShootKind kind, int node, glm::vec3 side, float angle, float probability,
-                       bool flower) {
+    auto add_bud = [&](ShootKind kind, int node, glm::vec3 side, const CosSin& angle,
+                       float probability, bool flower) {
       glm::vec3 d = f.direction[static_cast<std::size_t>(node)];
       Bud bud{};
       bud.kind = kind;
@@ -339,24 +376,23 @@ void Grower::SetNextYearBuds() {
     glm::vec3 tip_azimuth = f.azimuth[static_cast<std::size_t>(tip)];
     glm::vec3 tip_direction = f.direction[static_cast<std::size_t>(tip)];
     if (terminal_buds > 0) {
-      add_bud(ShootKind::kTerminal, tip, tip_azimuth, psi_t, p_terminal, false);
+      add_bud(ShootKind::kTerminal, tip, tip_azimuth, psi_t_, p_terminal, false);
       // The terminal shoot continues the phyllotaxis spiral.
       s.buds.back().azimuth =
           Orthonormalize(RotateAbout(tip_azimuth, tip_direction, turn_cos_[1], turn_sin_[1]),
                          s.buds.back().direction);
     }
     for (int k = 0; k < tl_buds; ++k) {
-      glm::vec3 side =
-          RotateAbout(tip_azimuth, tip_direction,
-                      2.0f * kPi * static_cast<float>(k) / static_cast<float>(tl_buds));
-      add_bud(ShootKind::kTerminallyLateral, tip, side, psi_tl, p_tl, false);
+      const CosSin& turn = around_tl_[static_cast<std::size_t>(k)];
+      glm::vec3 side = RotateAbout(tip_azimuth, tip_direction, turn.c, turn.s);
+      add_bud(ShootKind::kTerminallyLateral, tip, side, psi_tl_, p_tl, false);
     }
     for (int i = 1; i < tip; ++i) {
       for (int k = 0; k < lateral_buds; ++k) {
-        glm::vec3 side = RotateAbout(
-            f.azimuth[static_cast<std::size_t>(i)], f.direction[static_cast<std::size_t>(i)],
-            2.0f * kPi * static_cast<float>(k) / static_cast<float>(lateral_buds));
-        add_bud(ShootKind::kLateral, i, side, psi_l, p_lateral, s.dwarf && dwarf_flowers);
+        const CosSin& turn = around_laterals_[static_cast<std::size_t>(k)];
+        glm::vec3 side = RotateAbout(f.azimuth[static_cast<std::size_t>(i)],
+                                     f.direction[static_cast<std::size_t>(i)], turn.c, turn.s);
+        add_bud(ShootKind::kLateral, i, side, psi_l_, p_lateral, s.dwarf && dwarf_flowers);
       }
     }
   }

@@ -26,6 +26,11 @@ struct GrowRequest {
   std::vector<Prune> prunes;
 };
 
+// Cosine and sine of a rotation angle.
+struct CosSin {
+  float c = 1.0f, s = 0.0f;
+};
+
 // Grows a tree one year at a time, so callers can show every age and report progress.
 class Grower {
  public:
@@ -52,6 +57,11 @@ class Grower {
   GrowthTimings timings_;
   std::vector<int> new_shoots_;             // ids of this year's shoots
   std::vector<float> turn_cos_, turn_sin_;  // phyllotaxis turn 2πϕ·i per node index i
+  // Fixed angles of the parameters, computed once per tree: bending caps θ_bmax^b, θ_bmax^N
+  // (eqs. 2.7, 2.9), the sympodial turn −θ_N, bud angles ψ_t, ψ_tl, ψ_l, and the turns 2π·k/B
+  // around a node for leaves, terminally-lateral and lateral buds.
+  CosSin cap_branch_, cap_node_, sympodial_turn_, psi_t_, psi_tl_, psi_l_;
+  std::vector<CosSin> around_leaves_, around_tl_, around_laterals_;
   long internodes_ = 0;
   Pcg32 rng_;
 };

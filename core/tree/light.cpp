@@ -11,10 +11,11 @@ namespace {
 
 constexpr int kSkyDirections = 16;
 
+// -ln(1 - opacity): the optical depth of one sphere diameter (computed once per call).
+float DiameterDepth(float opacity) { return -det::Logf(1.0f - opacity); }
+
 // Extinction per cm inside a sphere: a ray through the whole diameter keeps (1 - opacity).
-float Extinction(float opacity, float radius) {
-  return -det::Logf(1.0f - opacity) / (2.0f * radius);
-}
+float Extinction(float diameter_depth, float radius) { return diameter_depth / (2.0f * radius); }
 
 // Length of the ray origin + t·dir, t > 0, inside the sphere.
 float ChordLength(const glm::vec3& origin, const glm::vec3& dir, const LeafSphere& sphere) {
@@ -81,13 +82,14 @@ std::vector<LightSample> ComputeLightReference(const std::vector<LeafSphere>& sp
                                                const Sky& sky, float opacity) {
   std::vector<LightSample> result(spheres.size());
   std::vector<float> transmittance(sky.directions.size());
+  const float diameter_depth = DiameterDepth(opacity);
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     for (std::size_t k = 0; k < sky.directions.size(); ++k) {
       float depth = 0.0f;
       for (std::size_t j = 0; j < spheres.size(); ++j) {
         if (j == i) continue;
         float chord = ChordLength(spheres[i].center, sky.directions[k], spheres[j]);
-        if (chord > 0.0f) depth += Extinction(opacity, spheres[j].radius) * chord;
+        if (chord > 0.0f) depth += Extinction(diameter_depth, spheres[j].radius) * chord;
       }
       transmittance[k] = det::Expf(-depth);
     }
@@ -127,9 +129,11 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
   // Rasterize, conserving each sphere's extinction mass σ·V: spread over the voxels whose centres
   // lie inside it, or put in the voxel of its centre when it is smaller than a cell and hits none.
   std::vector<std::size_t> covered;
+  std::vector<float> dx2;
   const float cell_volume = cell * cell * cell;
+  const float diameter_depth = DiameterDepth(opacity);
   for (const LeafSphere& s : spheres) {
-    float sigma = Extinction(opacity, s.radius);
+    float sigma = Extinction(diameter_depth, s.radius);
     float mass =
         sigma * (4.0f / 3.0f) * static_cast<float>(det::kPi) * s.radius * s.radius * s.radius;
     glm::vec3 a = (s.center - glm::vec3(s.radius) - lo) / cell;
@@ -139,12 +143,22 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     int z0 = std::max(0, static_cast<int>(a.z)), z1 = std::min(n[2] - 1, static_cast<int>(b.z));
     float r2 = s.radius * s.radius;
     covered.clear();
+    // Squared distance from the centre to each voxel centre, per axis (as glm::dot sums them).
+    auto offset2 = [&](int i, int axis) {
+      float d = lo[axis] + (static_cast<float>(i) + 0.5f) * cell - s.center[axis];
+      return d * d;
+    };
+    dx2.clear();
+    for (int x = x0; x <= x1; ++x) dx2.push_back(offset2(x, 0));
     for (int z = z0; z <= z1; ++z) {
+      float dz2 = offset2(z, 2);
       for (int y = y0; y <= y1; ++y) {
+        float dy2 = offset2(y, 1);
+        std::size_t row = index(0, y, z);
         for (int x = x0; x <= x1; ++x) {
-          glm::vec3 p = lo + (glm::vec3(x, y, z) + 0.5f) * cell;
-          glm::vec3 d = p - s.center;
-          if (glm::dot(d, d) <= r2) covered.push_back(index(x, y, z));
+          if (dx2[static_cast<std::size_t>(x - x0)] + dy2 + dz2 <= r2) {
+            covered.push_back(row + static_cast<std::size_t>(x));
+          }
         }
       }
     }
@@ -158,9 +172,64 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     for (std::size_t at : covered) density[at] += each;
   }
 
+  // A second copy of the grid with x as the slowest axis (y fastest, then z), for the directions
+  // swept along x: every sweep then runs its innermost loop over contiguous memory, so the
+  // compiler vectorizes it. Same values, same arithmetic per cell: only the memory order differs.
+  const std::ptrdiff_t stride_x_major[3] = {static_cast<std::ptrdiff_t>(n[1] + 2) * (n[2] + 2), 1,
+                                            n[1] + 2};
+  const std::ptrdiff_t* layout_stride[2] = {stride, stride_x_major};
+  std::vector<float> density_x_major;
+  bool x_major_used = false;
+  for (const glm::vec3& d : sky.directions) {
+    x_major_used |= std::fabs(d.x) > std::fabs(d.y) && std::fabs(d.x) >= std::fabs(d.z);
+  }
+  if (x_major_used) {
+    density_x_major.assign(volume, 0.0f);
+    for (int z = 0; z < n[2] + 2; ++z) {
+      for (int y = 0; y < n[1] + 2; ++y) {
+        for (int x = 0; x < n[0] + 2; ++x) {
+          density_x_major[static_cast<std::size_t>(x * stride_x_major[0] + y + z * (n[1] + 2))] =
+              density[static_cast<std::size_t>(x + y * stride[1] + z * stride[2])];
+        }
+      }
+    }
+  }
+  const float* layout_density[2] = {density.data(), density_x_major.data()};
+
+  // Each sphere's trilinear lookup cell and weights do not depend on the direction: computed once.
+  struct Lookup {
+    int cell[3];      // lower corner, interior coordinates
+    float weight[8];  // corner c = (c & 1: +x, c & 2: +y, c & 4: +z)
+    float own_depth;  // optical depth of the shoot's own sphere from its centre (one radius)
+  };
+  std::vector<Lookup> lookups(spheres.size());
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    const LeafSphere& own = spheres[i];
+    Lookup& at = lookups[i];
+    glm::vec3 g = (own.center - lo) / cell - 0.5f;
+    int x = std::min(n[0] - 2, std::max(0, static_cast<int>(std::floor(g.x))));
+    int y = std::min(n[1] - 2, std::max(0, static_cast<int>(std::floor(g.y))));
+    int z = std::min(n[2] - 2, std::max(0, static_cast<int>(std::floor(g.z))));
+    x = std::max(0, x);
+    y = std::max(0, y);
+    z = std::max(0, z);
+    float tx = std::min(1.0f, std::max(0.0f, g.x - static_cast<float>(x)));
+    float ty = std::min(1.0f, std::max(0.0f, g.y - static_cast<float>(y)));
+    float tz = std::min(1.0f, std::max(0.0f, g.z - static_cast<float>(z)));
+    at.cell[0] = x;
+    at.cell[1] = y;
+    at.cell[2] = z;
+    for (int corner = 0; corner < 8; ++corner) {
+      at.weight[corner] = ((corner & 1) ? tx : 1 - tx) * (((corner >> 1) & 1) ? ty : 1 - ty) *
+                          (((corner >> 2) & 1) ? tz : 1 - tz);
+    }
+    at.own_depth = Extinction(diameter_depth, own.radius) * own.radius;
+  }
+
   // Shadow propagation, one direction at a time: depth(v) = σ(v)·s + depth(v + d·s), swept along
   // the dominant axis of d so that v + d·s lies on the slice swept just before (bilinear there).
-  std::vector<float> depth(volume, 0.0f);
+  // One depth buffer per memory layout: each keeps its own border of zeros.
+  std::vector<float> depth_buffer[2];
   const std::size_t directions = sky.directions.size();
   std::vector<float> transmittance(spheres.size() * directions);
   for (std::size_t k = 0; k < directions; ++k) {
@@ -170,6 +239,10 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     for (int c = 1; c < 3; ++c) {
       if (std::fabs(comp[c]) > std::fabs(comp[axis])) axis = c;
     }
+    const int layout = axis == 0 ? 1 : 0;
+    const std::ptrdiff_t* st = layout_stride[layout];
+    std::vector<float>& depth = depth_buffer[layout];
+    if (depth.empty()) depth.assign(volume, 0.0f);
     const int u = (axis + 1) % 3, v = (axis + 2) % 3;
     const float along = std::fabs(comp[axis]);
     const float step = cell / along;  // path length between two slices
@@ -180,50 +253,45 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     const float fu = du - static_cast<float>(iu), fv = dv - static_cast<float>(iv);
     const float w00 = (1 - fu) * (1 - fv), w10 = fu * (1 - fv), w01 = (1 - fu) * fv, w11 = fu * fv;
     const int sign = comp[axis] > 0 ? 1 : -1;
-    const std::ptrdiff_t up = sign * stride[axis] + iu * stride[u] + iv * stride[v];
-    const std::ptrdiff_t su = stride[u], sv = stride[v];
+    const std::ptrdiff_t up = sign * st[axis] + iu * st[u] + iv * st[v];
+    const std::ptrdiff_t su = st[u], sv = st[v];
     float* out = depth.data();
-    const float* sigma = density.data();
+    const float* sigma = layout_density[layout];
     const int first = sign > 0 ? n[axis] : 1;  // padded slice coordinates 1..n
-    // Inner loop along whichever of u, v is contiguous in memory (x when possible).
-    const int inner = stride[u] < stride[v] ? u : v, outer = inner == u ? v : u;
-    const std::ptrdiff_t si = stride[inner], so = stride[outer];
+    // Inner loop along whichever of u, v is contiguous in memory (stride 1 in this layout).
+    const int inner = st[u] < st[v] ? u : v, outer = inner == u ? v : u;
+    const std::ptrdiff_t so = st[outer];
+    const int count = n[inner];
     for (int a = first; a >= 1 && a <= n[axis]; a -= sign) {
       for (int o = 1; o <= n[outer]; ++o) {
-        std::ptrdiff_t row = a * stride[axis] + o * so;
-        for (int i = 1; i <= n[inner]; ++i) {
-          std::ptrdiff_t here = row + i * si, there = here + up;
-          out[here] = sigma[here] * step + w00 * out[there] + w10 * out[there + su] +
-                      w01 * out[there + sv] + w11 * out[there + su + sv];
+        std::ptrdiff_t row = a * st[axis] + o * so + 1;
+        // The row written and the rows read lie on different slices: no overlap.
+        float* __restrict here = out + row;
+        const float* __restrict there = out + row + up;
+        const float* __restrict own_sigma = sigma + row;
+        for (int i = 0; i < count; ++i) {
+          here[i] = own_sigma[i] * step + w00 * there[i] + w10 * there[i + su] +
+                    w01 * there[i + sv] + w11 * there[i + su + sv];
         }
       }
     }
     // Trilinear lookup at each sphere centre, minus half of each cell's own step and the shoot's
     // own sphere (a ray from its centre crosses one radius of it).
+    std::ptrdiff_t corner_offset[8];
+    for (int corner = 0; corner < 8; ++corner) {
+      corner_offset[corner] =
+          (corner & 1) * st[0] + ((corner >> 1) & 1) * st[1] + ((corner >> 2) & 1) * st[2];
+    }
     for (std::size_t i = 0; i < spheres.size(); ++i) {
-      const LeafSphere& own = spheres[i];
-      glm::vec3 g = (own.center - lo) / cell - 0.5f;
-      int x = std::min(n[0] - 2, std::max(0, static_cast<int>(std::floor(g.x))));
-      int y = std::min(n[1] - 2, std::max(0, static_cast<int>(std::floor(g.y))));
-      int z = std::min(n[2] - 2, std::max(0, static_cast<int>(std::floor(g.z))));
-      x = std::max(0, x);
-      y = std::max(0, y);
-      z = std::max(0, z);
-      float tx = std::min(1.0f, std::max(0.0f, g.x - static_cast<float>(x)));
-      float ty = std::min(1.0f, std::max(0.0f, g.y - static_cast<float>(y)));
-      float tz = std::min(1.0f, std::max(0.0f, g.z - static_cast<float>(z)));
-      std::size_t base = index(x, y, z);
+      const Lookup& at = lookups[i];
+      std::ptrdiff_t base =
+          (at.cell[0] + 1) * st[0] + (at.cell[1] + 1) * st[1] + (at.cell[2] + 1) * st[2];
       float sum = 0.0f;
       for (int corner = 0; corner < 8; ++corner) {
-        std::size_t at = base + static_cast<std::size_t>((corner & 1) * stride[0] +
-                                                         ((corner >> 1) & 1) * stride[1] +
-                                                         ((corner >> 2) & 1) * stride[2]);
-        float w = ((corner & 1) ? tx : 1 - tx) * (((corner >> 1) & 1) ? ty : 1 - ty) *
-                  (((corner >> 2) & 1) ? tz : 1 - tz);
-        sum += w * (depth[at] - 0.5f * density[at] * step);
+        std::ptrdiff_t c = base + corner_offset[corner];
+        sum += at.weight[corner] * (out[c] - 0.5f * sigma[c] * step);
       }
-      float own_depth = Extinction(opacity, own.radius) * own.radius;
-      transmittance[i * directions + k] = det::Expf(-std::max(0.0f, sum - own_depth));
+      transmittance[i * directions + k] = det::Expf(-std::max(0.0f, sum - at.own_depth));
     }
   }
   for (std::size_t i = 0; i < spheres.size(); ++i) {
