@@ -17,6 +17,11 @@ void RegisterAll() {
         benchmark::RegisterBenchmark(w.name.c_str(), [workload, body](benchmark::State& state) {
           if (!*body) *body = workload->prepare();
           for (auto _ : state) benchmark::DoNotOptimize((*body)());
+          if (*workload->units > 0) {  // e.g. sway: seconds per internode-step (shown as 24.4n)
+            state.counters["per_" + workload->unit] =
+                benchmark::Counter(*workload->units, benchmark::Counter::kIsIterationInvariantRate |
+                                                         benchmark::Counter::kInvert);
+          }
         });
     bench->Unit(benchmark::kMillisecond);
     if (w.once) bench->Iterations(1);  // slow: one timed run

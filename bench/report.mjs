@@ -86,6 +86,13 @@ if (gm && peer.length) {
   goal(`sakura 15 years grown + meshed in WASM faster than ${peer[0].workload}`,
        `${fmt(gm)} ms vs ${fmt(peer[0].ms)} ms: ${(gm / peer[0].ms).toFixed(2)}× its time`, gm < peer[0].ms);
 }
+// Sway (thesis ch. 3, issue 6): one dynamics step plus the eq. 3.15 node positions per internode.
+const perUnit = (r) => (r ? r.ns_per_unit ?? (r.units ? (r.ms * 1e6) / r.units : undefined) : undefined);
+for (const name of names.filter((n) => n.startsWith('sway'))) {
+  const n = perUnit(native.get(name)), w = perUnit(wasm.get(name));
+  if (n !== undefined) goal(`${name}: sway step + ${name.startsWith('sway-poses') ? 'skin poses' : 'node positions'} ≤ 50 ns per internode (native)`, `${n.toFixed(1)} ns`, n <= 50);
+  if (n !== undefined && w !== undefined) goal(`${name}: sway WASM ≤ 2× native`, `${w.toFixed(1)} ns, ${(w / n).toFixed(2)}×`, w <= 2 * n);
+}
 const goalsTable = goals.length ? `| goal | measured | |\n|---|---|---|\n${goals.join('\n')}\n` : '';
 
 // Per-sub-model split like thesis table 2.3, from the CLI's --stats (native).
@@ -133,6 +140,11 @@ Workloads:
 - \`light/grid-20000\`, \`light/reference-20000\`: as below with 20,000 spheres; the reference is timed once.
 - \`mesh/sakura-15y\`: \`BuildTreeMesh\` of the sakura 15-year tree (grown untimed).
 - \`glb/sakura-15y\`: \`WriteGlb\` of that mesh into memory.
+- \`sway/sakura-<N>y\`: one second of wind sway (thesis ch. 3) on sakura N years in a 10 m/s gust:
+  30 \`SwaySimulator::Step\`s, each followed by the eq. 3.15 position of every original node; each run
+  restarts from one state prepared 2 s into the gust. The speed goal is per internode and step.
+- \`sway-poses/sakura-<N>y\`: the same with \`WriteSwayPoses\` (16 floats per node point, what the page
+  uploads each frame) instead of the position of every node.
 - Native \`glb/sakura-15y\` swings between about 20 ms and 75 ms from run to run: each iteration
   allocates about 13 MB of fresh buffers that glibc maps and unmaps, so page faults dominate (with
   \`GLIBC_TUNABLES=glibc.malloc.mmap_threshold=2000000000:glibc.malloc.trim_threshold=2000000000\`

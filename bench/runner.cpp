@@ -5,7 +5,9 @@
 // run at least --min-reps times and for at least --min-ms in total (never more than --max-reps).
 // One line per workload:
 // {"build":"native","workload":"grow/sakura-15y","ms":median,"min_ms":..,"reps":.., "check":..},
-// with "check" the workload's checksum (equal on both builds when results agree).
+// with "check" the workload's checksum (equal on both builds when results agree), plus
+// "unit", "units" and "ns_per_unit" (median) for workloads that count units (sway:
+// internode-steps).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -83,10 +85,17 @@ void Run(const Workload& w, const Options& o) {
   std::sort(times.begin(), times.end());
   double median = times[times.size() / 2];
   if (times.size() % 2 == 0) median = 0.5 * (median + times[times.size() / 2 - 1]);
+  std::string per_unit;
+  if (*w.units > 0) {
+    char buffer[160];
+    std::snprintf(buffer, sizeof buffer, ",\"unit\":\"%s\",\"units\":%.0f,\"ns_per_unit\":%.3f",
+                  w.unit.c_str(), *w.units, median * 1e6 / *w.units);
+    per_unit = buffer;
+  }
   std::printf(
       "{\"build\":\"%s\",\"workload\":\"%s\",\"ms\":%.4f,\"min_ms\":%.4f,\"reps\":%zu,"
-      "\"check\":%.17g}\n",
-      kBuild, w.name.c_str(), median, times.front(), times.size(), check);
+      "\"check\":%.17g%s}\n",
+      kBuild, w.name.c_str(), median, times.front(), times.size(), check, per_unit.c_str());
   std::fflush(stdout);
 }
 

@@ -1,5 +1,5 @@
-// Benchmark workloads: growth of every preset, sakura at several ages, mesh, .glb and the light
-// model.
+// Benchmark workloads: growth of every preset, sakura at several ages, mesh, .glb, the light
+// model and wind sway.
 #include "workloads.h"
 
 #include <glm/vec3.hpp>
@@ -7,6 +7,8 @@
 
 #include "io/gltf_export.h"
 #include "random/pcg32.h"
+#include "sway/skin.h"
+#include "sway/sway.h"
 #include "tree/growth.h"
 #include "tree/light.h"
 #include "tree/mesh.h"
@@ -79,6 +81,51 @@ Workload LightWorkload(bool reference, int spheres_count = kLightSpheres) {
           reference&& spheres_count > kLightSpheres};
 }
 
+// One second of sway animation (thesis ch. 3) on sakura of the given age in a 10 m/s gust: 30
+// dynamics steps (dt 1/30 s), each followed by what a renderer needs for the frame: with `poses`
+// the skin poses of every node point (WriteSwayPoses, what the page uploads), else the eq. 3.15
+// position of every original node (NodePositions). Each run restarts from one simulator state
+// prepared 2 s into the gust, so the checksum is the same every run. Reported per internode-step.
+Workload SwayWorkload(int years, bool poses) {
+  constexpr int kSteps = 30;
+  Workload w;
+  w.name = std::string(poses ? "sway-poses" : "sway") + "/sakura-" + std::to_string(years) + "y";
+  w.note = "30 sway steps + " + std::string(poses ? "WriteSwayPoses" : "NodePositions (eq. 3.15)") +
+           ", sakura " + std::to_string(years) + " years, 10 m/s";
+  w.unit = "internode-step";
+  std::shared_ptr<double> units = w.units;
+  w.prepare = [years, poses, units]() -> WorkloadBody {
+    Tree tree = GrowTree(PresetRequest(Sakura(), years));
+    ParamSet params = Sakura().params;
+    params.Set(ParamId::kWindSpeed, 10);
+    auto base = std::make_shared<SwaySimulator>(tree, SwayParams(params));
+    while (base->time() < 3.0) base->Step();  // 2 s into the gust (gust_on 1 s)
+    *units = static_cast<double>(kSteps) * static_cast<double>(base->model().internodes);
+    auto sim = std::make_shared<SwaySimulator>(*base);
+    auto positions = std::make_shared<std::vector<glm::dvec3>>();
+    auto pose = std::make_shared<std::vector<float>>(base->model().nodes.size() * kSwayPoseFloats);
+    return [base, sim, positions, pose, poses]() {
+      *sim = *base;
+      for (int k = 0; k < kSteps; ++k) {
+        sim->Step();
+        if (poses) {
+          WriteSwayPoses(*sim, MeshOptions{}.cm_to_units, pose->data());
+        } else {
+          sim->NodePositions(positions.get());
+        }
+      }
+      double sum = 0;
+      if (poses) {
+        for (float f : *pose) sum += static_cast<double>(f);
+      } else {
+        for (const glm::dvec3& p : *positions) sum += p.x + p.y + p.z;
+      }
+      return sum;
+    };
+  };
+  return w;
+}
+
 std::vector<Workload> MakeWorkloads() {
   std::vector<Workload> all;
   for (const Preset& p : Presets()) all.push_back(GrowWorkload(p, p.years));
@@ -118,6 +165,9 @@ std::vector<Workload> MakeWorkloads() {
   all.push_back(LightWorkload(true));
   all.push_back(LightWorkload(false, 20000));
   all.push_back(LightWorkload(true, 20000));  // about half a minute: timed once
+  for (bool poses : {false, true}) {
+    for (int years : {6, 10, 15}) all.push_back(SwayWorkload(years, poses));
+  }
   return all;
 }
 

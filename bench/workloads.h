@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,10 @@ struct Workload {
   // Untimed setup (grow the tree to mesh, make the spheres, ...); returns the timed body.
   std::function<WorkloadBody()> prepare;
   bool once = false;  // slow (tens of seconds): timed once, without warm-up or repeats
+  // Optional: how many units (e.g. internode-steps) one run of the body handles, filled in by
+  // prepare(); when > 0 the runners also report the time per unit (`unit` names it).
+  std::string unit = "";
+  std::shared_ptr<double> units = std::make_shared<double>(0.0);
 };
 
 // Every workload, in table order.

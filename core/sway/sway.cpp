@@ -280,6 +280,33 @@ dvec3 SwaySimulator::NodePosition(int i, int n) const {
   return rigid + s.weight[k] * (tip_[static_cast<std::size_t>(i)] - rigid_tip);
 }
 
+void SwaySimulator::NodePositions(std::vector<dvec3>* out) const {
+  out->clear();
+  out->reserve(static_cast<std::size_t>(model_.internodes) + model_.nodes.size());
+  for (std::size_t u = 0; u < model_.nodes.size(); ++u) {
+    const SwayNode& s = model_.nodes[u];
+    const dvec3& anchor = anchor_[u];
+    // The parent rod's turn of eq. 3.11 (identity on the root), as in ParentRotate; RotateMin's
+    // axis and cosine taken once (the same arithmetic, so the same values).
+    const dvec3 from =
+        s.parent >= 0 ? model_.nodes[static_cast<std::size_t>(s.parent)].rest_dir : dvec3(0, 1, 0);
+    const dvec3 to = s.parent >= 0 ? dir_[static_cast<std::size_t>(s.parent)] : from;
+    const dvec3 w = glm::cross(from, to);
+    const double c = glm::dot(from, to);
+    const bool general = from != to && c > -0.999999;
+    auto turn = [&](const dvec3& v) {
+      if (general) return v * c + glm::cross(w, v) + w * (glm::dot(w, v) / (1.0 + c));
+      return RotateMin(from, to, v);  // identity or half turn
+    };
+    // thesis eq. 3.15: P_jn(t) = P'_jn + (l_jn / l_j)^α (P_j(t) - P'_j)
+    const dvec3 moved = tip_[u] - (anchor + turn(s.rest_tip - s.rest_anchor));
+    out->push_back(anchor);
+    for (std::size_t k = 1; k < s.rest_nodes.size(); ++k) {
+      out->push_back(anchor + turn(s.rest_nodes[k] - s.rest_anchor) + s.weight[k] * moved);
+    }
+  }
+}
+
 void SwaySimulator::UpdateAnchorAndPose(int i) {
   const std::size_t u = static_cast<std::size_t>(i);
   const SwayNode& s = model_.nodes[u];

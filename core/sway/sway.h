@@ -135,6 +135,10 @@ class SwaySimulator {
   const std::vector<glm::dvec3>& velocities() const { return velocity_; }
   // Position of original node n of node point i, interpolated with eq. 3.15.
   glm::dvec3 NodePosition(int i, int n) const;
+  // Every original node of every node point (eq. 3.15), node point after node point in model order,
+  // nodes 0..n-1 each: the same values as NodePosition, with the parent's turn taken once per node
+  // point (what a renderer needs per frame; bench/ sway workloads).
+  void NodePositions(std::vector<glm::dvec3>* out) const;
   // The rotation of node point i's parent rod (eq. 3.11) as a matrix: R v = ParentRotate(i, v);
   // identity for a node point on the root. Used by core/sway/skin.h.
   glm::dmat3 ParentRotation(int i) const;

@@ -364,6 +364,18 @@ TEST(SwaySimulator, InterpolationKeepsEndsAndRestPose) {
     EXPECT_EQ(sim.NodePosition(i, 0), sim.anchors()[u]);
     EXPECT_NEAR(glm::length(sim.NodePosition(i, last) - sim.tips()[u]), 0.0, 1e-9);
   }
+  // The batched form gives exactly the same positions, node point after node point.
+  std::vector<dvec3> all;
+  sim.NodePositions(&all);
+  std::size_t at = 0;
+  for (std::size_t u = 0; u < sim.model().nodes.size(); ++u) {
+    for (std::size_t k = 0; k < sim.model().nodes[u].rest_nodes.size(); ++k, ++at) {
+      ASSERT_LT(at, all.size());
+      EXPECT_EQ(all[at], sim.NodePosition(static_cast<int>(u), static_cast<int>(k)))
+          << u << " " << k;
+    }
+  }
+  EXPECT_EQ(at, all.size());
   // A child's base stays on its parent's interpolated node (the tree does not come apart).
   Tree moved = sim.DeformedTree(t);
   for (const Branch& b : moved.branches) {
