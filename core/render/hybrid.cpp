@@ -3,6 +3,7 @@
 #include "render/hybrid.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -80,7 +81,7 @@ void BranchPoints(const Branch& branch, float leaf_size_cm, bool with_leaves, fl
 }
 
 CardFrame MakeCardFrame(const Branch& branch, float leaf_size_cm, bool with_leaves,
-                        const RenderOptions& options) {
+                        const RenderOptions& options, std::vector<PaddedPoint>* scratch) {
   CardFrame frame;
   const float scale = options.cm_to_units;
   frame.origin = branch.nodes.front() * scale;
@@ -103,9 +104,11 @@ CardFrame MakeCardFrame(const Branch& branch, float leaf_size_cm, bool with_leav
   glm::vec3 right0 = largest > 1e-3f * frame.length && largest > kEpsilon
                          ? deviation / largest
                          : Orthonormalize(branch.azimuth, frame.b);
-  std::vector<PaddedPoint> points;
+  std::vector<PaddedPoint>& points = *scratch;  // reused across branches: no allocation per branch
+  points.clear();
   BranchPoints(branch, leaf_size_cm, with_leaves, scale, frame.origin, &points);
   const int planes = options.card_planes;
+  frame.planes.reserve(static_cast<std::size_t>(planes));
   for (int k = 0; k < planes; ++k) {
     CardPlane plane;
     float angle = kPi * static_cast<float>(k) / static_cast<float>(planes);
@@ -485,7 +488,8 @@ HybridScene BuildHybridScene(const Tree& tree, const RenderOptions& options) {
   scene.cluster_of_branch.assign(n, -1);
   // Groups (thesis 4.2.2): same bins of length, thickness, internodes and bend (and, when the
   // leaves are drawn on the branch's card, of leaf count and whether it flowers).
-  std::map<std::vector<int>, int> group_of_key;
+  std::map<std::array<int, 6>, int> group_of_key;
+  std::vector<PaddedPoint> scratch;
   for (std::size_t i = 0; i < n; ++i) {
     const Branch& branch = tree.branches[i];
     scene.shapes[i] = MeasureBranch(branch);
@@ -493,13 +497,16 @@ HybridScene BuildHybridScene(const Tree& tree, const RenderOptions& options) {
     const BranchShape& s = scene.shapes[i];
     scene.thickness_units[i] = s.thickness_cm * options.cm_to_units;
     scene.carries_leaves[i] = s.leaves > 0 || s.flowers > 0;
-    scene.frames[i] = MakeCardFrame(branch, leaf_size, leaves_on_cards, options);
-    std::vector<int> key = {LogBin(s.length_cm, options.length_tolerance),
-                            LogBin(s.thickness_cm, options.thickness_tolerance), s.internodes,
-                            static_cast<int>(std::floor(s.bend_deg / options.bend_tolerance_deg))};
+    scene.frames[i] = MakeCardFrame(branch, leaf_size, leaves_on_cards, options, &scratch);
+    std::array<int, 6> key = {LogBin(s.length_cm, options.length_tolerance),
+                              LogBin(s.thickness_cm, options.thickness_tolerance),
+                              s.internodes,
+                              static_cast<int>(std::floor(s.bend_deg / options.bend_tolerance_deg)),
+                              0,
+                              0};
     if (leaves_on_cards) {
-      key.push_back(s.leaves == 0 ? -1000 : LogBin(static_cast<float>(s.leaves), 0.5f));
-      key.push_back(s.flowers > 0 ? 1 : 0);
+      key[4] = s.leaves == 0 ? -1000 : LogBin(static_cast<float>(s.leaves), 0.5f);
+      key[5] = s.flowers > 0 ? 1 : 0;
     }
     auto found = group_of_key.find(key);
     int g = 0;
