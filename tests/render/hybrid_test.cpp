@@ -449,5 +449,40 @@ TEST(Counts, ZoomingInTurnsLinesIntoCards) {
   EXPECT_GT(last_cards, 0);
 }
 
+// A zoom in and back out with hysteresis: no living branch is ever undrawn, each switches at most
+// twice (card → line → card or the reverse), and cards turn into lines and back.
+TEST(Counts, ZoomSequenceNeverDropsABranchAndDoesNotFlicker) {
+  Tree tree = Grow("sakura", 8);
+  TreeMesh mesh = BuildTreeMesh(tree);
+  OrbitView view = FrameOrbitView(MeshBounds(mesh));
+  HybridScene scene = BuildHybridScene(tree, RenderOptions{});
+  std::vector<int> switches(tree.branches.size(), 0);
+  HybridSelection previous;
+  int min_cards = 1 << 30, max_cards = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int k = 0; k <= 40; ++k) {
+      int step = pass == 0 ? k : 40 - k;
+      OrbitView v = view;
+      // 1× → 1/8× distance, with a ±6 % wobble (larger than one step of 5 %).
+      v.distance *= det::Expf(-0.052f * static_cast<float>(step)) * (step % 2 ? 1.06f : 0.94f);
+      HybridSelection now = SelectHybrid(tree, scene, CameraFromOrbit(v, 512, 512),
+                                         previous.draw.empty() ? nullptr : &previous);
+      int cards = 0;
+      for (std::size_t i = 0; i < tree.branches.size(); ++i) {
+        bool alive = tree.branches[i].alive && tree.branches[i].nodes.size() >= 2;
+        ASSERT_EQ(now.draw[i] != BranchDraw::kHidden, alive) << "branch " << i;
+        if (!previous.draw.empty() && now.draw[i] != previous.draw[i]) ++switches[i];
+        cards += now.draw[i] == BranchDraw::kCard ? 1 : 0;
+      }
+      min_cards = std::min(min_cards, cards);
+      max_cards = std::max(max_cards, cards);
+      previous = now;
+    }
+  }
+  EXPECT_LE(*std::max_element(switches.begin(), switches.end()), 2);
+  EXPECT_GT(std::count(switches.begin(), switches.end(), 2), 0);  // some went there and back
+  EXPECT_GT(max_cards, 2 * min_cards);
+}
+
 }  // namespace
 }  // namespace niwa
