@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "io/gltf_export.h"
+#include "io/gltf_sway.h"
 #include "io/json_io.h"
 #include "io/svg_export.h"
 #include "io/url_codec.h"
@@ -240,6 +241,8 @@ struct SwayOptions {
   std::vector<std::string> sets;
   bool stats = false;
   int tips = 4;
+  std::string out_path;  // .glb (skinned, animated), .csv or .svg
+  double fps = 30;       // keys per second in the .glb
 };
 
 void AddSwayOptions(CLI::App* cmd, SwayOptions* o) {
@@ -257,6 +260,12 @@ void AddSwayOptions(CLI::App* cmd, SwayOptions* o) {
   cmd->add_option("--csv", o->csv_path, "Write tip trajectories: time,node,x,y,z (s, cm)");
   cmd->add_option("--svg", o->svg_path, "Write a plot of tip displacement against time");
   cmd->add_flag("--stats", o->stats, "Print one JSON object of statistics on stdout");
+  cmd->add_option("--out", o->out_path,
+                  "Write the sway: .glb (tree mesh skinned to the node points, one animation clip "
+                  "of the run), .csv (as --csv) or .svg (as --svg)");
+  cmd->add_option("--fps", o->fps,
+                  "Animation keys per second of simulated time in --out .glb, 1..240 (default "
+                  "30); each key is the state at the nearest time step");
 }
 
 // Sway and wind parameters are rows of the one table: --url, --params, --set (and its alias
@@ -302,10 +311,32 @@ SwayParams ResolveSwayParams(const SwayOptions& o, CLI::App* cmd, ParamSet* para
 
 int RunSwayCommand(const GrowOptions& grow_options, const SwayOptions& o, CLI::App* cmd,
                    std::ostream& out) {
+  const std::string out_ext = Extension(o.out_path);
+  if (!o.out_path.empty() && out_ext != ".glb" && out_ext != ".csv" && out_ext != ".svg") {
+    throw BadInput{"--out: '" + o.out_path + "' must end in .glb, .csv or .svg"};
+  }
+  if (cmd->count("--fps") && out_ext != ".glb") {
+    throw BadInput{"--fps: only applies with --out FILE.glb"};
+  }
+  if (!(o.fps >= 1 && o.fps <= 240)) throw BadInput{"--fps: must be a number in [1, 240]"};
   GrowRequest request = ResolveGrowRequest(grow_options, cmd);
   SwayParams params = ResolveSwayParams(o, cmd, &request.params);
   Tree tree = GrowTree(request);
+  if (out_ext == ".glb") {  // core/io/gltf_sway: exact two-joint skinning of eq. 3.15
+    std::vector<unsigned char> glb;
+    SwayGlbOptions glb_options;
+    glb_options.fps = o.fps;
+    std::string error = WriteSwayGlb(tree, params, glb_options, &glb);
+    if (!error.empty()) throw BadInput{"--out: " + error};
+    error = WriteFileAtomically(o.out_path, std::string(glb.begin(), glb.end()));
+    if (!error.empty()) throw BadInput{"--out: " + error};
+  }
   SwayRun run = RunSway(tree, params, o.tips);
+  if (out_ext == ".csv" || out_ext == ".svg") {
+    std::string error = WriteFileAtomically(
+        o.out_path, out_ext == ".csv" ? SwayCsv(run) : SwayPlotSvg(run, params));
+    if (!error.empty()) throw BadInput{"--out: " + error};
+  }
   if (!o.csv_path.empty()) {
     std::string error = WriteFileAtomically(o.csv_path, SwayCsv(run));
     if (!error.empty()) throw BadInput{"--csv: " + error};

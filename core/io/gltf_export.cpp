@@ -151,7 +151,8 @@ std::string CheckBuffers(const MeshBuffers& buffers, const char* name) {
   return "";
 }
 
-void AddPrimitive(tinygltf::Model* model, const MeshBuffers& buffers, const MaterialSpec& spec) {
+void AddPrimitive(tinygltf::Model* model, const MeshBuffers& buffers, const MaterialSpec& spec,
+                  const std::vector<uint16_t>* joints, const std::vector<float>* weights) {
   std::vector<double> lo(3, std::numeric_limits<double>::infinity());
   std::vector<double> hi(3, -std::numeric_limits<double>::infinity());
   for (std::size_t i = 0; i < buffers.positions.size(); ++i) {
@@ -174,13 +175,106 @@ void AddPrimitive(tinygltf::Model* model, const MeshBuffers& buffers, const Mate
   primitive.indices = AddAccessor(model, AddBufferView(model, buffers.indices, kElementArrayBuffer),
                                   TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
                                   buffers.indices.size());
+  if (joints != nullptr && weights != nullptr) {
+    primitive.attributes["JOINTS_0"] =
+        AddAccessor(model, AddBufferView(model, *joints, kArrayBuffer),
+                    TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC4, vertices);
+    primitive.attributes["WEIGHTS_0"] =
+        AddAccessor(model, AddBufferView(model, *weights, kArrayBuffer),
+                    TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, vertices);
+  }
   primitive.material = AddMaterial(model, spec);
   model->meshes[0].primitives.push_back(std::move(primitive));
 }
 
-}  // namespace
+// Checks the skin against the mesh; returns "" or what is wrong.
+std::string CheckSkinning(const GltfSkinning& skin, const MeshBuffers* const (&parts)[3]) {
+  if (skin.joints.empty()) return "skin: no joints";
+  if (skin.joints.size() > kMaxGltfJoints) return "skin: more than 65536 joints";
+  for (std::size_t k = 0; k < 3; ++k) {
+    std::size_t n = 4 * parts[k]->vertex_count();
+    if (skin.joints0[k].size() != n || skin.weights0[k].size() != n) {
+      return "skin: joints/weights disagree with the vertex count";
+    }
+    for (uint16_t j : skin.joints0[k]) {
+      if (j >= skin.joints.size()) return "skin: joint index out of range";
+    }
+  }
+  for (std::size_t k = 1; k < skin.times.size(); ++k) {
+    if (!(skin.times[k] > skin.times[k - 1])) return "animation: times must increase";
+  }
+  for (const GltfJoint& joint : skin.joints) {
+    if (joint.translation_keys.empty() && joint.rotation_keys.empty()) continue;
+    if (joint.translation_keys.size() != 3 * skin.times.size() ||
+        joint.rotation_keys.size() != 4 * skin.times.size()) {
+      return "animation: keys disagree with the times";
+    }
+  }
+  return "";
+}
 
-std::string WriteGlb(const TreeMesh& mesh, std::vector<unsigned char>* bytes) {
+// Skeleton nodes, the skin and the clip; `mesh_node` gets the skin.
+void AddSkinAndAnimation(tinygltf::Model* model, const GltfSkinning& skin, int mesh_node) {
+  const int first = static_cast<int>(model->nodes.size());
+  tinygltf::Skin gltf_skin;
+  gltf_skin.name = "tree";
+  gltf_skin.skeleton = first;
+  std::vector<float> inverse_bind;
+  for (std::size_t j = 0; j < skin.joints.size(); ++j) {
+    const GltfJoint& joint = skin.joints[j];
+    tinygltf::Node node;
+    node.name = joint.name;
+    if (joint.translation != std::array<float, 3>{0, 0, 0}) {
+      node.translation = {joint.translation[0], joint.translation[1], joint.translation[2]};
+    }
+    if (j == 0) {
+      for (std::size_t c = 1; c < skin.joints.size(); ++c)
+        node.children.push_back(first + static_cast<int>(c));
+    }
+    model->nodes.push_back(std::move(node));
+    gltf_skin.joints.push_back(first + static_cast<int>(j));
+    const std::array<float, 3>& o = joint.inverse_bind_offset;  // column-major 4x4
+    inverse_bind.insert(inverse_bind.end(),
+                        {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, o[0], o[1], o[2], 1});
+  }
+  gltf_skin.inverseBindMatrices =
+      AddAccessor(model, AddBufferView(model, inverse_bind, 0), TINYGLTF_COMPONENT_TYPE_FLOAT,
+                  TINYGLTF_TYPE_MAT4, skin.joints.size());
+  model->skins.push_back(std::move(gltf_skin));
+  model->nodes[static_cast<std::size_t>(mesh_node)].skin = 0;
+
+  if (skin.times.empty()) return;
+  tinygltf::Animation clip;
+  clip.name = skin.clip_name;
+  const int input = AddAccessor(model, AddBufferView(model, skin.times, 0),
+                                TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR,
+                                skin.times.size(), {static_cast<double>(skin.times.front())},
+                                {static_cast<double>(skin.times.back())});
+  auto add_channel = [&](int node, const std::vector<float>& keys, int type, const char* path) {
+    tinygltf::AnimationSampler sampler;
+    sampler.input = input;
+    sampler.interpolation = "LINEAR";
+    sampler.output = AddAccessor(model, AddBufferView(model, keys, 0),
+                                 TINYGLTF_COMPONENT_TYPE_FLOAT, type, skin.times.size());
+    clip.samplers.push_back(std::move(sampler));
+    tinygltf::AnimationChannel channel;
+    channel.sampler = static_cast<int>(clip.samplers.size()) - 1;
+    channel.target_node = node;
+    channel.target_path = path;
+    clip.channels.push_back(std::move(channel));
+  };
+  for (std::size_t j = 0; j < skin.joints.size(); ++j) {
+    const GltfJoint& joint = skin.joints[j];
+    if (joint.translation_keys.empty()) continue;
+    add_channel(first + static_cast<int>(j), joint.translation_keys, TINYGLTF_TYPE_VEC3,
+                "translation");
+    add_channel(first + static_cast<int>(j), joint.rotation_keys, TINYGLTF_TYPE_VEC4, "rotation");
+  }
+  model->animations.push_back(std::move(clip));
+}
+
+std::string WriteModel(const TreeMesh& mesh, const GltfSkinning* skin,
+                       std::vector<unsigned char>* bytes) {
   if (bytes == nullptr) return "no output buffer";
   bytes->clear();
   struct Part {
@@ -196,6 +290,11 @@ std::string WriteGlb(const TreeMesh& mesh, std::vector<unsigned char>* bytes) {
     std::string error = CheckBuffers(*part.buffers, part.material.name);
     if (!error.empty()) return error;
   }
+  if (skin != nullptr) {
+    const MeshBuffers* const buffers[3] = {&mesh.bark, &mesh.leaves, &mesh.flowers};
+    std::string error = CheckSkinning(*skin, buffers);
+    if (!error.empty()) return error;
+  }
 
   tinygltf::Model model;
   model.asset.version = "2.0";
@@ -208,9 +307,11 @@ std::string WriteGlb(const TreeMesh& mesh, std::vector<unsigned char>* bytes) {
     model.buffers.emplace_back();
     model.meshes.emplace_back();
     model.meshes[0].name = "tree";
-    for (const Part& part : parts) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      const Part& part = parts[k];
       if (part.buffers->indices.empty()) continue;
-      AddPrimitive(&model, *part.buffers, part.material);
+      AddPrimitive(&model, *part.buffers, part.material, skin ? &skin->joints0[k] : nullptr,
+                   skin ? &skin->weights0[k] : nullptr);
     }
     node.mesh = 0;
   }
@@ -218,6 +319,10 @@ std::string WriteGlb(const TreeMesh& mesh, std::vector<unsigned char>* bytes) {
   tinygltf::Scene scene;
   scene.name = "tree";
   scene.nodes.push_back(0);
+  if (any && skin != nullptr) {
+    AddSkinAndAnimation(&model, *skin, 0);
+    scene.nodes.push_back(1);  // the skeleton root
+  }
   model.scenes.push_back(std::move(scene));
   model.defaultScene = 0;
 
@@ -229,6 +334,17 @@ std::string WriteGlb(const TreeMesh& mesh, std::vector<unsigned char>* bytes) {
   const std::string glb = stream.str();
   bytes->assign(glb.begin(), glb.end());
   return "";
+}
+
+}  // namespace
+
+std::string WriteGlb(const TreeMesh& mesh, std::vector<unsigned char>* bytes) {
+  return WriteModel(mesh, nullptr, bytes);
+}
+
+std::string WriteSkinnedGlb(const TreeMesh& mesh, const GltfSkinning& skinning,
+                            std::vector<unsigned char>* bytes) {
+  return WriteModel(mesh, &skinning, bytes);
 }
 
 }  // namespace niwa

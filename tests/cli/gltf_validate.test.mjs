@@ -1,7 +1,10 @@
 // Grows every preset with the native CLI, validates each .glb with Khronos' gltf-validator (0 errors,
 // embedded PNG textures decoded) and loads it with three.js (bark, leaf and flower materials with maps).
-import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+// Sway export: `niwa tree sway --out x.glb` (native and, when built, the WASM CLI: NIWA_WASM or
+// build/wasm/bin/niwa.js) validates, is a three.js SkinnedMesh whose clip moves the bones, and the
+// sway command's --out errors are one line, exit 2, with no file left behind.
+import { execFileSync, spawnSync } from 'node:child_process';
+import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -18,6 +21,7 @@ const require = createRequire(join(root, 'package.json'));
 const validatorModule = await import(pathToFileURL(require.resolve('gltf-validator')).href);
 const validator = validatorModule.default ?? validatorModule;
 const three = join(root, 'node_modules', 'three');
+const THREE = await import(pathToFileURL(join(three, 'build', 'three.module.js')).href);
 const { GLTFLoader } = await import(
   pathToFileURL(join(three, 'examples', 'jsm', 'loaders', 'GLTFLoader.js')).href);
 
@@ -193,6 +197,102 @@ try {
       if (c.flowers) checkTexturedMaterial(`${c.label} flowers`, materials.flowers, { cutOut: true });
     }
   }
+
+  // ---- sway export: skinned mesh + one animation clip ----
+  const wasm = process.env.NIWA_WASM ?? join(root, 'build/wasm/bin/niwa.js');
+  const runners = [{ label: 'native', cmd: native, pre: [] }];
+  if (existsSync(wasm)) runners.push({ label: 'wasm', cmd: process.execPath, pre: [wasm] });
+  else console.log(`note: no WASM CLI at ${wasm}; sway .glb checked on the native CLI only`);
+  const swayArgs = ['tree', 'sway', '--preset', 'sakura', '--years', '6', '--wind', '10', '--gust', '0:4',
+                    '--duration', '6'];
+  const swayBytes = {};
+  for (const r of runners) {
+    const out = join(dir, `sway-${r.label}.glb`);
+    const run = spawnSync(r.cmd, [...r.pre, ...swayArgs, '--out', out, '--stats'], { encoding: 'utf8' });
+    check(run.status === 0, `sway ${r.label}: niwa tree sway --out sway.glb`, run.stderr.trim());
+    if (run.status !== 0) continue;
+    const stats = JSON.parse(run.stdout);
+    const bytes = readFileSync(out);
+    swayBytes[r.label] = bytes;
+    const report = await validate(bytes);
+    const errors = report.issues.messages.filter((m) => m.severity === 0).slice(0, 5)
+      .map((m) => `${m.code} ${m.pointer ?? ''}: ${m.message}`);
+    check(report.issues.numErrors === 0 && report.info?.hasSkins && report.info?.animationCount === 1,
+          `sway ${r.label}: gltf-validator, a skin and one animation`,
+          `${report.issues.numErrors} errors, ${report.issues.numWarnings} warnings, ` +
+          `${(bytes.length / 1e6).toFixed(2)} MB` + (errors.length ? '; ' + errors.join('; ') : ''));
+    if (r.label !== 'native') continue;
+
+    const joints = 1 + 2 * stats.moving + stats.followers;
+    let gltf;
+    try {
+      gltf = await loadGltf(bytes);
+    } catch (error) {
+      check(false, 'sway: three.js GLTFLoader', String(error?.message ?? error));
+      continue;
+    }
+    const skinned = [];
+    gltf.scene.traverse((o) => { if (o.isSkinnedMesh) skinned.push(o); });
+    const bones = skinned[0]?.skeleton?.bones ?? [];
+    check(skinned.length >= 2 && bones.length === joints,
+          'sway: three.js finds SkinnedMeshes with one bone per joint',
+          `${skinned.length} skinned meshes, ${bones.length} bones, expected ${joints} ` +
+          `(1 + 2 x ${stats.moving} moving + ${stats.followers} followers)`);
+    const clip = gltf.animations[0];
+    check(gltf.animations.length === 1 && clip.tracks.length === 2 * (joints - 1) &&
+          Math.abs(clip.duration - 6) < 1e-3,
+          'sway: one clip, a translation and a rotation track per joint but the root, 6 s',
+          `${gltf.animations.length} clips, ${clip?.tracks.length} tracks, ${clip?.duration} s`);
+    gltf.scene.updateMatrixWorld(true);
+    const rest = bones.map((b) => new THREE.Vector3().setFromMatrixPosition(b.matrixWorld));
+    const mixer = new THREE.AnimationMixer(gltf.scene);
+    mixer.clipAction(clip).play();
+    mixer.update(3.0);  // inside the gust
+    gltf.scene.updateMatrixWorld(true);
+    let moved = 0;
+    bones.forEach((b, k) => {
+      moved = Math.max(moved, new THREE.Vector3().setFromMatrixPosition(b.matrixWorld).distanceTo(rest[k]));
+    });
+    check(moved > 0.01, 'sway: AnimationMixer moves the bones (largest bone displacement at 3 s, m)',
+          moved.toFixed(4));
+    // The skinned tip of the farthest bark vertex follows: three.js' own CPU skinning.
+    const bark = skinned.find((m) => m.material?.name === 'bark');
+    let vertexMoved = 0;
+    if (bark) {
+      const position = bark.geometry.getAttribute('position');
+      const a = new THREE.Vector3(), b = new THREE.Vector3();
+      for (let v = 0; v < position.count; v += 7) {
+        a.fromBufferAttribute(position, v);
+        b.copy(a);
+        bark.applyBoneTransform(v, b);
+        vertexMoved = Math.max(vertexMoved, a.distanceTo(b));
+      }
+    }
+    check(vertexMoved > 0.01, 'sway: three.js skins bark vertices away from rest at 3 s (m)',
+          vertexMoved.toFixed(4));
+  }
+  if (swayBytes.native && swayBytes.wasm) {
+    check(Buffer.compare(swayBytes.native, swayBytes.wasm) === 0, 'sway: native and WASM .glb identical',
+          `${swayBytes.native.length} vs ${swayBytes.wasm.length} bytes`);
+  }
+  // One-line errors, exit 2, nothing written.
+  for (const [args, label, want] of [
+    [['--out', join(dir, 'bad.obj')], 'bad --out extension', '--out:'],
+    [['--out', join(dir, 'bad.glb'), '--fps', '0'], '--fps 0', '--fps:'],
+    [['--fps', '30'], '--fps without .glb', '--fps:'],
+  ]) {
+    const before = readdirSync(dir).length;
+    const run = spawnSync(native, [...swayArgs, ...args], { encoding: 'utf8' });
+    const lines = run.stderr.trim().split('\n');
+    check(run.status === 2 && lines.length === 1 && lines[0].includes(want) &&
+          readdirSync(dir).length === before, `sway ${label}: one-line error, exit 2, no file`,
+          `exit ${run.status}: ${run.stderr.trim()}`);
+  }
+  const csv = join(dir, 'sway.csv');
+  const csvRun = spawnSync(native, [...swayArgs, '--out', csv], { encoding: 'utf8' });
+  check(csvRun.status === 0 && readFileSync(csv, 'utf8').startsWith('time,node,x,y,z'),
+        'sway --out .csv writes the tip trajectories', csvRun.stderr.trim());
+
   check(tampered !== null && tampered.issues.numErrors > 0,
         'gltf-validator rejects a .glb with a wrong POSITION max',
         tampered ? tampered.issues.messages.filter((m) => m.severity === 0).map((m) => m.code)
