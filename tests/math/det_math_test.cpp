@@ -36,5 +36,37 @@ TEST(DetMath, TrigonometryMatchesLibm) {
   EXPECT_DOUBLE_EQ(det::Acos(-1.0), det::kPi);
 }
 
+// The series are truncated for the widest reduced argument: check there, where the first left-out
+// term is largest (|r| = ln2/2 for exp, m = √2 for log, |r| = π/4 for sin and cos, |x| = 1 for
+// atan before its two halvings).
+TEST(DetMath, SeriesHoldAtTheEdgesOfTheirReducedRanges) {
+  for (int k = -20; k <= 20; ++k) {
+    for (double r : {-0.5 * det::kLn2, 0.5 * det::kLn2}) {
+      for (double nudge : {-1e-9, 0.0, 1e-9}) {
+        double x = k * det::kLn2 + r + nudge;
+        EXPECT_NEAR(det::Exp(x), std::exp(x), 2e-15 * std::exp(x)) << x;
+      }
+    }
+  }
+  for (double m : {0.70710678118654752440, 1.41421356237309504880, 1.0 + 1e-12, 1.0 - 1e-12}) {
+    for (int e = -30; e <= 30; e += 3) {
+      double x = std::ldexp(m, e);
+      EXPECT_NEAR(det::Log(x), std::log(x), 2e-15 * std::max(1.0, std::fabs(std::log(x)))) << x;
+    }
+  }
+  for (int q = -4; q <= 4; ++q) {  // small |q|: little argument-reduction error
+    for (double nudge : {-1e-9, 0.0, 1e-9}) {
+      double x = (q + 0.5) * det::kPi / 2.0 + nudge;
+      double s = 0, c = 0;
+      det::SinCos(x, &s, &c);
+      EXPECT_NEAR(s, std::sin(x), 1e-15) << x;
+      EXPECT_NEAR(c, std::cos(x), 1e-15) << x;
+    }
+  }
+  for (double x : {-1.0, -0.999999, 0.999999, 1.0}) {
+    EXPECT_NEAR(det::Atan2(x, 1.0), std::atan2(x, 1.0), 1e-15) << x;
+  }
+}
+
 }  // namespace
 }  // namespace niwa
