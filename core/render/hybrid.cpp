@@ -601,7 +601,9 @@ HybridSelection SelectHybrid(const Tree& tree, const HybridScene& scene, const R
   HybridSelection selection;
   selection.draw.assign(n, BranchDraw::kHidden);
   selection.screen_width_px.assign(n, 0.0f);
-  const bool use_previous = previous && previous->draw.size() == n;
+  // Branch ids are stable while a tree grows (Tree::branches: index == id, dead ones stay), so a
+  // previous selection of fewer branches (the same tree a year earlier) still applies to its ids.
+  const std::size_t known = previous && previous->draw.size() <= n ? previous->draw.size() : 0;
   const float target_depth = camera.Depth(camera.target);
   for (std::size_t i = 0; i < n; ++i) {
     if (!Usable(tree.branches[i]) || i >= scene.frames.size() || scene.frames[i].planes.empty())
@@ -616,9 +618,9 @@ HybridSelection SelectHybrid(const Tree& tree, const HybridScene& scene, const R
     bool card = false;
     if (o.leaf_mode == LeafMode::kBranchCards && scene.carries_leaves[i]) {
       card = true;  // thesis 4.2.1: branches with leaves always use textures
-    } else if (use_previous && previous->draw[i] == BranchDraw::kCard) {
+    } else if (i < known && previous->draw[i] == BranchDraw::kCard) {
       card = d_px >= o.threshold_px * (1.0f - o.hysteresis);
-    } else if (use_previous && previous->draw[i] == BranchDraw::kLine) {
+    } else if (i < known && previous->draw[i] == BranchDraw::kLine) {
       card = d_px > o.threshold_px * (1.0f + o.hysteresis);
     } else {
       card = d_px > o.threshold_px;

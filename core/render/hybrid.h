@@ -210,7 +210,9 @@ struct HybridSelection {
   std::vector<float> screen_width_px;  // D_i per branch id (eq. 4.1)
 };
 
-// Eq. 4.1 per branch; with `previous` (same tree) the threshold has hysteresis.
+// Eq. 4.1 per branch; with `previous` (the last frame of the same tree, possibly a year younger:
+// fewer branches) the threshold has hysteresis for the branches it knows. A previous selection with
+// more branches than the tree is ignored; pass nullptr after switching to another tree.
 HybridSelection SelectHybrid(const Tree& tree, const HybridScene& scene, const RenderCamera& camera,
                              const HybridSelection* previous);
 

@@ -148,10 +148,24 @@ TEST(Hysteresis, ThresholdsAreTimesOneMinusAndOnePlusH) {
   // D = 2.56 px (depth 2 m): a card becomes a line; D = 5.12 px (depth 1 m): a line a card.
   EXPECT_EQ(SelectHybrid(tree, scene, CameraAt(2.0f), &card).draw[0], BranchDraw::kLine);
   EXPECT_EQ(SelectHybrid(tree, scene, CameraAt(1.0f), &line).draw[0], BranchDraw::kCard);
-  // A previous selection of another tree (other size) is ignored.
+  // A previous selection with more branches than the tree is ignored (plain threshold: line).
   HybridSelection other;
   other.draw = {BranchDraw::kCard, BranchDraw::kCard};
   EXPECT_EQ(SelectHybrid(tree, scene, CameraAt(1.6f), &other).draw[0], BranchDraw::kLine);
+}
+
+TEST(Hysteresis, AYearOlderTreeKeepsTheChoicesOfItsOldBranches) {
+  // Year 1: one branch; year 2: the same branch (id 0) and a new one (id 1), both 3.2 px wide.
+  Tree young = MakeTree({MakeBranch(0, {{0, -10, 0}, {0, 10, 0}}, 1.0f)});
+  Tree older = MakeTree({MakeBranch(0, {{0, -10, 0}, {0, 10, 0}}, 1.0f),
+                         MakeBranch(0, {{5, -10, 0}, {5, 10, 0}}, 1.0f)});
+  HybridScene scene = BuildHybridScene(older, RenderOptions{});
+  HybridSelection last;
+  last.draw = {BranchDraw::kCard};  // young tree's frame: branch 0 was a card
+  ASSERT_EQ(young.branches.size(), last.draw.size());
+  HybridSelection now = SelectHybrid(older, scene, CameraAt(1.6f), &last);
+  EXPECT_EQ(now.draw[0], BranchDraw::kCard);  // 3.2 px >= 3: stays a card
+  EXPECT_EQ(now.draw[1], BranchDraw::kLine);  // new: 3.2 px <= 4, plain threshold
 }
 
 TEST(Leaves, LeafBranchesAreAlwaysCardsInBranchMode) {
