@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <glm/geometric.hpp>
 
 #include "tree/growth.h"
@@ -119,7 +120,9 @@ void ExpectSkinMatchesNodePositions(const Tree& tree, const SwayParams& params, 
     }
   }
   EXPECT_GT(moved, 1e-3 * extent);  // the wind really moved the tree
-  ::testing::Test::RecordProperty("worst_relative_error", std::to_string(worst));
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", worst);
+  ::testing::Test::RecordProperty("worst_relative_error", text);
 }
 
 TEST(SwaySkin, HandTreeNodesMatchEq315After30Steps) {
