@@ -37,18 +37,22 @@ TEST(ParamTable, EverySymbolOfThesisTable21IsPresent) {
 }
 
 TEST(ParamTable, SwayAndWindRowsCarryTheSymbolsOfThesisTable31) {
-  // The sway model's rows (thesis ch. 3), grouped after the growth rows, each with a unit.
+  // The sway model's rows (thesis ch. 3): one block, "sway" then "wind", after the growth rows.
   const std::set<std::string> sway_symbols = {"K_wind", "K_dir",  "K_rev", "K_vdel", "δ",
                                               "m_leaf", "s_leaf", "α",     "g",      "dt"};
   std::set<std::string> found;
-  bool seen_sway = false;
+  std::string groups;  // one letter per row: s(way), w(ind), o(ther)
   for (const ParamSpec& s : ParamTable()) {
     std::string group = s.group;
-    bool sway = group == "sway" || group == "wind";
-    if (sway) seen_sway = true;
-    EXPECT_TRUE(sway || !seen_sway) << s.key << ": growth rows come before the sway rows";
+    groups += group == "sway" ? 's' : group == "wind" ? 'w' : 'o';
     if (group == "sway") found.insert(s.symbol);
   }
+  std::size_t first = groups.find('s');
+  ASSERT_NE(first, std::string::npos);
+  EXPECT_EQ(groups.substr(first, 21), std::string(12, 's') + std::string(9, 'w'));
+  EXPECT_EQ(groups.find_first_of("sw", first + 21), std::string::npos);
+  EXPECT_EQ(groups.substr(0, first).find_first_of("sw"), std::string::npos);
+  EXPECT_EQ(static_cast<std::size_t>(ParamId::kKWind), first);
   for (const std::string& symbol : sway_symbols) EXPECT_EQ(found.count(symbol), 1u) << symbol;
   EXPECT_EQ(Spec(ParamId::kWindSpeed).group, std::string("wind"));
   EXPECT_EQ(Spec(ParamId::kWindSpeed).unit, std::string("m/s"));
