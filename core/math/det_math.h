@@ -1,7 +1,8 @@
 // Deterministic exp, log, sin, cos, acos, atan2: only +, -, *, / and sqrt (exact in IEEE 754), so
 // the native and WASM builds give bit-identical results, unlike glibc's and musl's libm. The series
-// are evaluated by Horner's rule with their coefficients written out as double literals (1/n! and
-// 1/n rounded once, by the compiler): multiplications and additions only, no division per term.
+// are evaluated by Estrin's scheme (pairs of terms combined with x², x⁴, x⁸: a short dependency
+// chain) with their coefficients written out as double literals (1/n! and 1/n rounded once, by the
+// compiler): multiplications and additions only, no division per term.
 #pragma once
 
 #include <cmath>
@@ -29,20 +30,15 @@ inline double Exp(double x) {
   if (x > 700.0) x = 700.0;  // |k| <= 1010: Pow2 stays in range
   double k = std::floor(x / kLn2 + 0.5);
   double r = x - k * kLn2;
-  // 1/n! for n = 14 down to 2.
-  double p = 1.1470745597729725e-11;
-  p = p * r + 1.6059043836821613e-10;
-  p = p * r + 2.08767569878681e-09;
-  p = p * r + 2.505210838544172e-08;
-  p = p * r + 2.755731922398589e-07;
-  p = p * r + 2.7557319223985893e-06;
-  p = p * r + 2.48015873015873e-05;
-  p = p * r + 0.0001984126984126984;
-  p = p * r + 0.001388888888888889;
-  p = p * r + 0.008333333333333333;
-  p = p * r + 0.041666666666666664;
-  p = p * r + 0.16666666666666666;
-  p = p * r + 0.5;
+  // p = Σ r^(n-2)/n! for n = 2..14, by Estrin's scheme.
+  double r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
+  double q0 = 0.5 + 0.16666666666666666 * r, q1 = 0.041666666666666664 + 0.008333333333333333 * r;
+  double q2 = 0.001388888888888889 + 0.0001984126984126984 * r;
+  double q3 = 2.48015873015873e-05 + 2.7557319223985893e-06 * r;
+  double q4 = 2.755731922398589e-07 + 2.505210838544172e-08 * r;
+  double q5 = 2.08767569878681e-09 + 1.6059043836821613e-10 * r;
+  double q6 = 1.1470745597729725e-11;
+  double p = ((q0 + q1 * r2) + (q2 + q3 * r2) * r4) + ((q4 + q5 * r2) + q6 * r4) * r8;
   double sum = 1.0 + r * (1.0 + r * p);
   return sum * Pow2(static_cast<int>(k));  // exact scaling by 2^k
 }
@@ -58,18 +54,14 @@ inline double Log(double x) {
     --e;
   }
   double t = (m - 1.0) / (m + 1.0), t2 = t * t;
-  // 1/n for odd n = 23 down to 3.
-  double p = 0.043478260869565216;
-  p = p * t2 + 0.047619047619047616;
-  p = p * t2 + 0.05263157894736842;
-  p = p * t2 + 0.058823529411764705;
-  p = p * t2 + 0.06666666666666667;
-  p = p * t2 + 0.07692307692307693;
-  p = p * t2 + 0.09090909090909091;
-  p = p * t2 + 0.1111111111111111;
-  p = p * t2 + 0.14285714285714285;
-  p = p * t2 + 0.2;
-  p = p * t2 + 0.3333333333333333;
+  // p = Σ t2^(k-1)/(2k+1) for k = 1..11, by Estrin's scheme.
+  double t4 = t2 * t2, t8 = t4 * t4;
+  double p =
+      (((0.3333333333333333 + 0.2 * t2) + (0.14285714285714285 + 0.1111111111111111 * t2) * t4) +
+       ((0.09090909090909091 + 0.07692307692307693 * t2) +
+        (0.06666666666666667 + 0.058823529411764705 * t2) * t4) *
+           t8) +
+      ((0.05263157894736842 + 0.047619047619047616 * t2) + 0.043478260869565216 * t4) * (t8 * t8);
   double sum = t + t * (t2 * p);
   return 2.0 * sum + e * kLn2;
 }
@@ -80,26 +72,21 @@ inline void SinCos(double x, double* s, double* c) {
   double q = std::floor(x / (kPi / 2.0) + 0.5);
   double r = x - q * (kPi / 2.0);
   double r2 = r * r;
-  // (-1)^n/(2n+1)! and (-1)^n/(2n)! for n = 9 (sin), 10 (cos) down to 1.
-  double ps = -8.22063524662433e-18;
-  ps = ps * r2 + 2.8114572543455206e-15;
-  ps = ps * r2 - 7.647163731819816e-13;
-  ps = ps * r2 + 1.6059043836821613e-10;
-  ps = ps * r2 - 2.505210838544172e-08;
-  ps = ps * r2 + 2.7557319223985893e-06;
-  ps = ps * r2 - 0.0001984126984126984;
-  ps = ps * r2 + 0.008333333333333333;
-  ps = ps * r2 - 0.16666666666666666;
-  double pc = 4.110317623312165e-19;
-  pc = pc * r2 - 1.5619206968586225e-16;
-  pc = pc * r2 + 4.779477332387385e-14;
-  pc = pc * r2 - 1.1470745597729725e-11;
-  pc = pc * r2 + 2.08767569878681e-09;
-  pc = pc * r2 - 2.755731922398589e-07;
-  pc = pc * r2 + 2.48015873015873e-05;
-  pc = pc * r2 - 0.001388888888888889;
-  pc = pc * r2 + 0.041666666666666664;
-  pc = pc * r2 - 0.5;
+  // ps = Σ (-1)^n r2^(n-1)/(2n+1)! for n = 1..9, pc = Σ (-1)^n r2^(n-1)/(2n)! for n = 1..10, by
+  // Estrin's scheme.
+  double r4 = r2 * r2, r8 = r4 * r4;
+  double ps = ((-0.16666666666666666 + 0.008333333333333333 * r2) +
+               (-0.0001984126984126984 + 2.7557319223985893e-06 * r2) * r4) +
+              ((-2.505210838544172e-08 + 1.6059043836821613e-10 * r2) +
+               (-7.647163731819816e-13 + 2.8114572543455206e-15 * r2) * r4) *
+                  r8 +
+              -8.22063524662433e-18 * (r8 * r8);
+  double pc = ((-0.5 + 0.041666666666666664 * r2) +
+               (-0.001388888888888889 + 2.48015873015873e-05 * r2) * r4) +
+              ((-2.755731922398589e-07 + 2.08767569878681e-09 * r2) +
+               (-1.1470745597729725e-11 + 4.779477332387385e-14 * r2) * r4) *
+                  r8 +
+              (-1.5619206968586225e-16 + 4.110317623312165e-19 * r2) * (r8 * r8);
   double sin_r = r + r * (r2 * ps);
   double cos_r = 1.0 + r2 * pc;
   int quadrant = static_cast<int>(static_cast<int64_t>(q) & 3);  // two's complement: also for q < 0
@@ -138,19 +125,16 @@ inline double Cos(double x) {
 inline double AtanUnit(double x) {
   for (int i = 0; i < 2; ++i) x = x / (1.0 + std::sqrt(1.0 + x * x));
   double x2 = x * x;
-  // (-1)^n/(2n+1) for n = 12 down to 1.
-  double p = 0.04;
-  p = p * x2 - 0.043478260869565216;
-  p = p * x2 + 0.047619047619047616;
-  p = p * x2 - 0.05263157894736842;
-  p = p * x2 + 0.058823529411764705;
-  p = p * x2 - 0.06666666666666667;
-  p = p * x2 + 0.07692307692307693;
-  p = p * x2 - 0.09090909090909091;
-  p = p * x2 + 0.1111111111111111;
-  p = p * x2 - 0.14285714285714285;
-  p = p * x2 + 0.2;
-  p = p * x2 - 0.3333333333333333;
+  // p = Σ (-1)^n x2^(n-1)/(2n+1) for n = 1..12, by Estrin's scheme.
+  double x4 = x2 * x2, x8 = x4 * x4;
+  double p =
+      (((-0.3333333333333333 + 0.2 * x2) + (-0.14285714285714285 + 0.1111111111111111 * x2) * x4) +
+       ((-0.09090909090909091 + 0.07692307692307693 * x2) +
+        (-0.06666666666666667 + 0.058823529411764705 * x2) * x4) *
+           x8) +
+      ((-0.05263157894736842 + 0.047619047619047616 * x2) +
+       (-0.043478260869565216 + 0.04 * x2) * x4) *
+          (x8 * x8);
   return 4.0 * (x + x * (x2 * p));
 }
 
