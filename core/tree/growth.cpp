@@ -126,8 +126,9 @@ Grower::Grower(const GrowRequest& request) : request_(request), rng_(request.see
 }
 
 void Grower::Kill(int branch_id) {
-  // Iterative so that deep trees cannot overflow the stack.
-  std::vector<int> stack{branch_id};
+  // Iterative so that deep trees cannot overflow the stack (a buffer kept between calls).
+  std::vector<int>& stack = kill_stack_;
+  stack.assign(1, branch_id);
   while (!stack.empty()) {
     Branch& b = tree_.branches[static_cast<std::size_t>(stack.back())];
     stack.pop_back();
@@ -140,6 +141,11 @@ void Grower::Kill(int branch_id) {
 
 void Grower::BreakBuds() {
   const ParamSet& p = tree_.params;
+  // Leaves fall, flowers fade (deciduous): leaves grow only on the last year's shoots, flowers on
+  // the branches listed when they opened.
+  for (int id : new_shoots_) tree_.branches[static_cast<std::size_t>(id)].leaves.clear();
+  for (int id : flowering_) tree_.branches[static_cast<std::size_t>(id)].flowers.clear();
+  flowering_.clear();
   new_shoots_.clear();
   auto make_shoot = [&](int parent, int parent_node, ShootKind kind, glm::vec3 direction,
                         glm::vec3 azimuth, float hormone_initial) {
@@ -177,10 +183,6 @@ void Grower::BreakBuds() {
     tree_.branches.push_back(std::move(shoot));
   };
 
-  for (Branch& b : tree_.branches) {  // leaves fall, flowers fade (deciduous)
-    b.leaves.clear();
-    b.flowers.clear();
-  }
   if (tree_.branches.empty()) {
     make_shoot(-1, 0, ShootKind::kSeedling, kUp, glm::vec3(1, 0, 0),
                static_cast<float>(p.Get(ParamId::kHInit)));
@@ -189,6 +191,17 @@ void Grower::BreakBuds() {
   std::size_t existing = tree_.branches.size();
   for (std::size_t id = 0; id < existing; ++id) {
     if (!tree_.branches[id].alive) continue;
+    // Room for this year's shoots and flowers at once, instead of growing the lists one by one.
+    std::size_t shoots = 0, flowers = 0;
+    for (const Bud& bud : tree_.branches[id].buds) {
+      if (bud.state == BudState::kBreaking) ++(bud.flower ? flowers : shoots);
+    }
+    if (shoots == 0 && flowers == 0) continue;
+    tree_.branches[id].children.reserve(tree_.branches[id].children.size() + shoots);
+    if (flowers > 0) {
+      tree_.branches[id].flowers.reserve(flowers);
+      flowering_.push_back(static_cast<int>(id));
+    }
     for (std::size_t k = 0; k < tree_.branches[id].buds.size(); ++k) {
       Bud bud = tree_.branches[id].buds[k];
       if (bud.state != BudState::kBreaking) continue;

@@ -56,6 +56,7 @@ class Grower {
   Tree tree_;
   GrowthTimings timings_;
   std::vector<int> new_shoots_;             // ids of this year's shoots
+  std::vector<int> flowering_;              // ids of the branches with flowers this year
   std::vector<float> turn_cos_, turn_sin_;  // phyllotaxis turn 2πϕ·i per node index i
   // Fixed angles of the parameters, computed once per tree: bending caps θ_bmax^b, θ_bmax^N
   // (eqs. 2.7, 2.9), the sympodial turn −θ_N, bud angles ψ_t, ψ_tl, ψ_l, and the turns 2π·k/B
@@ -63,6 +64,7 @@ class Grower {
   CosSin cap_branch_, cap_node_, sympodial_turn_, psi_t_, psi_tl_, psi_l_;
   std::vector<CosSin> around_leaves_, around_tl_, around_laterals_;
   long internodes_ = 0;
+  std::vector<int> kill_stack_;  // Kill's work list
   Pcg32 rng_;
 };
 
