@@ -128,7 +128,6 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
   std::vector<float> density(volume, 0.0f);
   // Rasterize, conserving each sphere's extinction mass σ·V: spread over the voxels whose centres
   // lie inside it, or put in the voxel of its centre when it is smaller than a cell and hits none.
-  std::vector<std::size_t> covered;
   std::vector<float> dx2;
   const float cell_volume = cell * cell * cell;
   const float diameter_depth = DiameterDepth(opacity);
@@ -142,7 +141,6 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     int y0 = std::max(0, static_cast<int>(a.y)), y1 = std::min(n[1] - 1, static_cast<int>(b.y));
     int z0 = std::max(0, static_cast<int>(a.z)), z1 = std::min(n[2] - 1, static_cast<int>(b.z));
     float r2 = s.radius * s.radius;
-    covered.clear();
     // Squared distance from the centre to each voxel centre, per axis (as glm::dot sums them).
     auto offset2 = [&](int i, int axis) {
       float d = lo[axis] + (static_cast<float>(i) + 0.5f) * cell - s.center[axis];
@@ -150,26 +148,35 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     };
     dx2.clear();
     for (int x = x0; x <= x1; ++x) dx2.push_back(offset2(x, 0));
+    const float* row_dx2 = dx2.data();
+    const int width = x1 - x0 + 1;
+    // Two passes over the box, both without branches: count the covered voxels, then add each
+    // one's share (adding 0 to the others leaves them unchanged).
+    int count = 0;
     for (int z = z0; z <= z1; ++z) {
       float dz2 = offset2(z, 2);
       for (int y = y0; y <= y1; ++y) {
         float dy2 = offset2(y, 1);
-        std::size_t row = index(0, y, z);
-        for (int x = x0; x <= x1; ++x) {
-          if (dx2[static_cast<std::size_t>(x - x0)] + dy2 + dz2 <= r2) {
-            covered.push_back(row + static_cast<std::size_t>(x));
-          }
-        }
+        for (int i = 0; i < width; ++i) count += row_dx2[i] + dy2 + dz2 <= r2 ? 1 : 0;
       }
     }
-    if (covered.empty()) {
+    if (count == 0) {
       glm::vec3 g = (s.center - lo) / cell;
-      covered.push_back(index(std::min(n[0] - 1, static_cast<int>(g.x)),
-                              std::min(n[1] - 1, static_cast<int>(g.y)),
-                              std::min(n[2] - 1, static_cast<int>(g.z))));
+      density[index(std::min(n[0] - 1, static_cast<int>(g.x)),
+                    std::min(n[1] - 1, static_cast<int>(g.y)),
+                    std::min(n[2] - 1, static_cast<int>(g.z)))] +=
+          mass / (static_cast<float>(1) * cell_volume);
+      continue;
     }
-    float each = mass / (static_cast<float>(covered.size()) * cell_volume);
-    for (std::size_t at : covered) density[at] += each;
+    const float each = mass / (static_cast<float>(count) * cell_volume);
+    for (int z = z0; z <= z1; ++z) {
+      float dz2 = offset2(z, 2);
+      for (int y = y0; y <= y1; ++y) {
+        float dy2 = offset2(y, 1);
+        float* row = density.data() + index(x0, y, z);
+        for (int i = 0; i < width; ++i) row[i] += row_dx2[i] + dy2 + dz2 <= r2 ? each : 0.0f;
+      }
+    }
   }
 
   // A second copy of the grid with x as the slowest axis (y fastest, then z), for the directions
