@@ -290,8 +290,8 @@ void Grower::ComputeLight() {
                     static_cast<float>(p.Get(ParamId::kSunAzimuth)),
                     static_cast<float>(p.Get(ParamId::kSunWeight)),
                     static_cast<float>(p.Get(ParamId::kSkyZenithRatio)));
-  std::vector<LightSample> samples =
-      ComputeLightGrid(spheres, sky, static_cast<float>(p.Get(ParamId::kSphereOpacity)));
+  std::vector<LightSample> samples = ComputeLightGrid(
+      spheres, sky, static_cast<float>(p.Get(ParamId::kSphereOpacity)), light_buffers_);
   float k = static_cast<float>(p.Get(ParamId::kKDeath));
   for (std::size_t i = 0; i < new_shoots_.size(); ++i) {
     Branch& s = tree_.branches[static_cast<std::size_t>(new_shoots_[i])];

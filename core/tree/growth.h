@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "random/pcg32.h"
+#include "tree/light.h"
 #include "tree/tree.h"
 
 namespace niwa {
@@ -65,6 +66,7 @@ class Grower {
   std::vector<CosSin> around_leaves_, around_tl_, around_laterals_;
   long internodes_ = 0;
   std::vector<int> kill_stack_;  // Kill's work list
+  LightGridBuffers light_buffers_;
   Pcg32 rng_;
 };
 

@@ -100,6 +100,12 @@ std::vector<LightSample> ComputeLightReference(const std::vector<LeafSphere>& sp
 
 std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres, const Sky& sky,
                                           float opacity) {
+  LightGridBuffers buffers;
+  return ComputeLightGrid(spheres, sky, opacity, buffers);
+}
+
+std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres, const Sky& sky,
+                                          float opacity, LightGridBuffers& buffers) {
   std::vector<LightSample> result(spheres.size());
   if (spheres.empty()) return result;
   glm::vec3 lo(spheres[0].center), hi(spheres[0].center);
@@ -125,10 +131,11 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     return static_cast<std::size_t>((x + 1) * stride[0] + (y + 1) * stride[1] +
                                     (z + 1) * stride[2]);
   };
-  std::vector<float> density(volume, 0.0f);
+  std::vector<float>& density = buffers.density;
+  density.assign(volume, 0.0f);
   // Rasterize, conserving each sphere's extinction mass σ·V: spread over the voxels whose centres
   // lie inside it, or put in the voxel of its centre when it is smaller than a cell and hits none.
-  std::vector<float> dx2;
+  std::vector<float>& dx2 = buffers.dx2;
   const float cell_volume = cell * cell * cell;
   const float diameter_depth = DiameterDepth(opacity);
   for (const LeafSphere& s : spheres) {
@@ -185,7 +192,7 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
   const std::ptrdiff_t stride_x_major[3] = {static_cast<std::ptrdiff_t>(n[1] + 2) * (n[2] + 2), 1,
                                             n[1] + 2};
   const std::ptrdiff_t* layout_stride[2] = {stride, stride_x_major};
-  std::vector<float> density_x_major;
+  std::vector<float>& density_x_major = buffers.density_x_major;
   bool x_major_used = false;
   for (const glm::vec3& d : sky.directions) {
     x_major_used |= std::fabs(d.x) > std::fabs(d.y) && std::fabs(d.x) >= std::fabs(d.z);
@@ -204,12 +211,9 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
   const float* layout_density[2] = {density.data(), density_x_major.data()};
 
   // Each sphere's trilinear lookup cell and weights do not depend on the direction: computed once.
-  struct Lookup {
-    int cell[3];      // lower corner, interior coordinates
-    float weight[8];  // corner c = (c & 1: +x, c & 2: +y, c & 4: +z)
-    float own_depth;  // optical depth of the shoot's own sphere from its centre (one radius)
-  };
-  std::vector<Lookup> lookups(spheres.size());
+  using Lookup = LightGridBuffers::Lookup;
+  std::vector<Lookup>& lookups = buffers.lookups;
+  lookups.resize(spheres.size());
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     const LeafSphere& own = spheres[i];
     Lookup& at = lookups[i];
@@ -236,9 +240,12 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
   // Shadow propagation, one direction at a time: depth(v) = σ(v)·s + depth(v + d·s), swept along
   // the dominant axis of d so that v + d·s lies on the slice swept just before (bilinear there).
   // One depth buffer per memory layout: each keeps its own border of zeros.
-  std::vector<float> depth_buffer[2];
+  std::vector<float>* depth_buffer = buffers.depth;
+  depth_buffer[0].clear();  // zeroed below on first use in this call (each keeps a zero border)
+  depth_buffer[1].clear();
   const std::size_t directions = sky.directions.size();
-  std::vector<float> transmittance(spheres.size() * directions);
+  std::vector<float>& transmittance = buffers.transmittance;
+  transmittance.resize(spheres.size() * directions);
   for (std::size_t k = 0; k < directions; ++k) {
     const glm::vec3& d = sky.directions[k];
     const float comp[3] = {d.x, d.y, d.z};

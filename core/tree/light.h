@@ -37,4 +37,18 @@ std::vector<LightSample> ComputeLightReference(const std::vector<LeafSphere>& sp
 std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres, const Sky& sky,
                                           float opacity);
 
+// Working memory of ComputeLightGrid, kept by a caller that calls it again and again (the growth
+// loop, once a year) so that the grids are not given back and touched afresh on every call.
+struct LightGridBuffers {
+  struct Lookup {
+    int cell[3];      // lower corner of a sphere centre's trilinear cell, interior coordinates
+    float weight[8];  // corner c = (c & 1: +x, c & 2: +y, c & 4: +z)
+    float own_depth;  // optical depth of the shoot's own sphere from its centre (one radius)
+  };
+  std::vector<float> density, density_x_major, depth[2], transmittance, dx2;
+  std::vector<Lookup> lookups;
+};
+std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres, const Sky& sky,
+                                          float opacity, LightGridBuffers& buffers);
+
 }  // namespace niwa
