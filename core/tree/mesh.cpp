@@ -2,6 +2,7 @@
 #include "tree/mesh.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
@@ -19,9 +20,15 @@ constexpr float kThinRadius = 0.1f;
 constexpr float kThickRadius = 4.0f;
 
 constexpr int kFlowerPetals = 5;
-constexpr float kFlowerOuterRadius = 1.0f;  // cm: the flower is about 2 cm across
-constexpr float kFlowerInnerRadius = 0.4f;  // cm: notches between the petals
-constexpr float kFlowerLift = 0.3f;         // cm: offset from the node along the facing direction
+constexpr int kFlowerOutline = 2 * kFlowerPetals;  // outer and inner points around a flower
+constexpr float kFlowerOuterRadius = 1.0f;         // cm: the flower is about 2 cm across
+constexpr float kFlowerInnerRadius = 0.4f;         // cm: notches between the petals
+constexpr float kFlowerLift = 0.3f;  // cm: offset from the node along the facing direction
+
+// Vertex and index counts of the pieces, for sizing the buffers once.
+constexpr std::size_t kLeafVertices = 8, kLeafIndices = 12;  // two quads, two triangles each
+constexpr std::size_t kFlowerVertices = 2 * (1 + kFlowerOutline);
+constexpr std::size_t kFlowerIndices = 2 * 3 * kFlowerOutline;
 
 // Unit vector, or fallback when v is (nearly) zero or not finite.
 glm::vec3 SafeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
@@ -30,32 +37,88 @@ glm::vec3 SafeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
   return v / length;
 }
 
-int SidesForRadius(float radius_cm, const MeshOptions& options) {
-  int lo = std::max(3, options.min_sides);
-  int hi = std::max(lo, options.max_sides);
+int SidesForRadius(float radius_cm, int lo, int hi) {
   float t = (radius_cm - kThinRadius) / (kThickRadius - kThinRadius);
   t = std::sqrt(std::min(1.0f, std::max(0.0f, t)));
   return lo + static_cast<int>(std::lround(t * static_cast<float>(hi - lo)));
 }
 
-void PushVertex(MeshBuffers* mesh, const glm::vec3& position, const glm::vec3& normal, float u,
-                float v) {
-  mesh->positions.insert(mesh->positions.end(), {position.x, position.y, position.z});
-  mesh->normals.insert(mesh->normals.end(), {normal.x, normal.y, normal.z});
-  mesh->uvs.insert(mesh->uvs.end(), {u, v});
+// A mesh being filled in place: the buffers are sized once up front and written through cursors,
+// so building a tree's mesh allocates a fixed handful of times, not once per vertex.
+struct Writer {
+  float* position;
+  float* normal;
+  float* uv;
+  uint32_t* index;
+  uint32_t* branch_id;
+  uint32_t* node_index;
+  uint32_t next = 0;  // index of the next vertex
+
+  void Vertex(const glm::vec3& p, const glm::vec3& n, float u, float v, uint32_t branch,
+              uint32_t node) {
+    position[0] = p.x;
+    position[1] = p.y;
+    position[2] = p.z;
+    position += 3;
+    normal[0] = n.x;
+    normal[1] = n.y;
+    normal[2] = n.z;
+    normal += 3;
+    uv[0] = u;
+    uv[1] = v;
+    uv += 2;
+    *branch_id++ = branch;
+    *node_index++ = node;
+    ++next;
+  }
+  void Triangle(uint32_t a, uint32_t b, uint32_t c) {
+    index[0] = a;
+    index[1] = b;
+    index[2] = c;
+    index += 3;
+  }
+};
+
+Writer StartWriting(MeshBuffers* mesh, std::vector<uint32_t>* branch_id,
+                    std::vector<uint32_t>* node_index, std::size_t vertices, std::size_t indices) {
+  mesh->positions.resize(3 * vertices);
+  mesh->normals.resize(3 * vertices);
+  mesh->uvs.resize(2 * vertices);
+  mesh->indices.resize(indices);
+  branch_id->resize(vertices);
+  node_index->resize(vertices);
+  return {mesh->positions.data(), mesh->normals.data(), mesh->uvs.data(),
+          mesh->indices.data(),   branch_id->data(),    node_index->data()};
 }
 
-void PushTriangle(MeshBuffers* mesh, uint32_t a, uint32_t b, uint32_t c) {
-  mesh->indices.insert(mesh->indices.end(), {a, b, c});
-}
-
-uint32_t NextIndex(const MeshBuffers& mesh) { return static_cast<uint32_t>(mesh.vertex_count()); }
+// cos and sin of the angles 2π·j/sides, j = 0..sides-1, for every side count a tube may have.
+struct RingTable {
+  int lo = 3;
+  std::vector<std::vector<float>> cos, sin;
+  RingTable(int lo_sides, int hi_sides) : lo(lo_sides) {
+    for (int sides = lo_sides; sides <= hi_sides; ++sides) {
+      std::vector<float> c(static_cast<std::size_t>(sides)), s(static_cast<std::size_t>(sides));
+      for (int j = 0; j < sides; ++j) {
+        float angle = 2.0f * kPi * static_cast<float>(j) / static_cast<float>(sides);
+        c[static_cast<std::size_t>(j)] = det::Cosf(angle);
+        s[static_cast<std::size_t>(j)] = det::Sinf(angle);
+      }
+      cos.push_back(std::move(c));
+      sin.push_back(std::move(s));
+    }
+  }
+  const float* Cos(int sides) const { return cos[static_cast<std::size_t>(sides - lo)].data(); }
+  const float* Sin(int sides) const { return sin[static_cast<std::size_t>(sides - lo)].data(); }
+};
 
 // Unit tangent of the branch at each node: mean of the neighbouring internode directions.
-std::vector<glm::vec3> NodeTangents(const Branch& branch) {
+// `segment` and `tangent` are scratch buffers reused from branch to branch.
+void NodeTangents(const Branch& branch, std::vector<glm::vec3>* segment_buffer,
+                  std::vector<glm::vec3>* tangent_buffer) {
   std::size_t n = branch.nodes.size();
   glm::vec3 fallback = SafeNormalize(branch.bud_direction, kUp);
-  std::vector<glm::vec3> segment(n > 1 ? n - 1 : 0);
+  std::vector<glm::vec3>& segment = *segment_buffer;
+  segment.resize(n > 1 ? n - 1 : 0);
   for (std::size_t i = 0; i + 1 < n; ++i) {
     fallback = SafeNormalize(branch.nodes[i + 1] - branch.nodes[i], fallback);
     segment[i] = fallback;
@@ -64,7 +127,8 @@ std::vector<glm::vec3> NodeTangents(const Branch& branch) {
   for (std::size_t i = segment.size(); i-- > 1;) {
     if (glm::length(branch.nodes[i] - branch.nodes[i - 1]) <= kEpsilon) segment[i - 1] = segment[i];
   }
-  std::vector<glm::vec3> tangent(n, fallback);
+  std::vector<glm::vec3>& tangent = *tangent_buffer;
+  tangent.assign(n, fallback);
   for (std::size_t i = 0; i < n; ++i) {
     if (segment.empty()) break;
     if (i == 0) {
@@ -75,7 +139,6 @@ std::vector<glm::vec3> NodeTangents(const Branch& branch) {
       tangent[i] = SafeNormalize(segment[i - 1] + segment[i], segment[i]);
     }
   }
-  return tangent;
 }
 
 // Rotates the frame normal by the smallest rotation that carries tangent `from` onto `to`.
@@ -101,24 +164,34 @@ float TipRadius(const Tree& tree, const Branch& branch, float base_radius) {
   return radius > 0.0f ? std::min(radius, base_radius) : base_radius;
 }
 
-void AddBranchTube(const Tree& tree, const Branch& branch, float v_start,
-                   const MeshOptions& options, TreeMesh* out, std::vector<float>* node_v) {
+// Scratch buffers of AddBranchTube, kept across branches.
+struct TubeScratch {
+  std::vector<glm::vec3> segment, tangent;
+};
+
+// One generalized cylinder: a ring of `sides` + 1 vertices (the seam duplicated) per node, frames
+// carried along by parallel transport, radius tapering linearly in arc length, and a flat end cap.
+// node_v receives the v coordinate (metres of wood from the root) of every node.
+void AddBranchTube(const Tree& tree, const Branch& branch, int sides, float v_start,
+                   const MeshOptions& options, const RingTable& ring, TubeScratch* scratch,
+                   Writer* bark, float* node_v) {
   const float scale = options.cm_to_units;
   const std::size_t rings = branch.nodes.size();
   const float base_radius = BranchRadius(branch);
   const float tip_radius = TipRadius(tree, branch, base_radius);
-  const int sides = SidesForRadius(base_radius, options);
-  const std::vector<glm::vec3> tangent = NodeTangents(branch);
+  NodeTangents(branch, &scratch->segment, &scratch->tangent);
+  const std::vector<glm::vec3>& tangent = scratch->tangent;
+  const float* ring_cos = ring.Cos(sides);
+  const float* ring_sin = ring.Sin(sides);
 
   // Arc length (metres) of every node, continuing the parent's v at the attachment.
-  node_v->assign(rings, v_start);
+  node_v[0] = v_start;
   for (std::size_t i = 1; i < rings; ++i) {
-    (*node_v)[i] = (*node_v)[i - 1] + glm::length(branch.nodes[i] - branch.nodes[i - 1]) * scale;
+    node_v[i] = node_v[i - 1] + glm::length(branch.nodes[i] - branch.nodes[i - 1]) * scale;
   }
-  const float length = (*node_v)[rings - 1] - v_start;
+  const float length = node_v[rings - 1] - v_start;
 
-  MeshBuffers& bark = out->bark;
-  const uint32_t first = NextIndex(bark);
+  const uint32_t first = bark->next;
   const uint32_t stride = static_cast<uint32_t>(sides) + 1;  // the seam vertex is duplicated
   const uint32_t id = static_cast<uint32_t>(branch.id);
   glm::vec3 normal = Orthonormalize(branch.azimuth, tangent[0]);
@@ -126,24 +199,22 @@ void AddBranchTube(const Tree& tree, const Branch& branch, float v_start,
   for (std::size_t i = 0; i < rings; ++i) {
     if (i > 0) normal = TransportNormal(normal, tangent[i - 1], tangent[i]);
     binormal = SafeNormalize(glm::cross(tangent[i], normal), AnyPerpendicular(tangent[i]));
-    float t = length > 0.0f ? ((*node_v)[i] - v_start) / length : 0.0f;
+    float t = length > 0.0f ? (node_v[i] - v_start) / length : 0.0f;
     float radius = (base_radius + (tip_radius - base_radius) * t) * scale;
     glm::vec3 center = branch.nodes[i] * scale;
     for (int j = 0; j <= sides; ++j) {
-      float angle = 2.0f * kPi * static_cast<float>(j % sides) / static_cast<float>(sides);
-      glm::vec3 radial =
-          SafeNormalize(normal * det::Cosf(angle) + binormal * det::Sinf(angle), normal);
-      PushVertex(&bark, center + radial * radius, radial,
-                 static_cast<float>(j) / static_cast<float>(sides), (*node_v)[i]);
-      out->bark_branch_id.push_back(id);
-      out->bark_node_index.push_back(static_cast<uint32_t>(i));
+      int k = j % sides;
+      glm::vec3 radial = SafeNormalize(normal * ring_cos[k] + binormal * ring_sin[k], normal);
+      bark->Vertex(center + radial * radius, radial,
+                   static_cast<float>(j) / static_cast<float>(sides), node_v[i], id,
+                   static_cast<uint32_t>(i));
     }
   }
   for (uint32_t i = 0; i + 1 < rings; ++i) {
     for (uint32_t j = 0; j < static_cast<uint32_t>(sides); ++j) {
       uint32_t a = first + i * stride + j, b = a + 1, c = b + stride, d = a + stride;
-      PushTriangle(&bark, a, b, c);
-      PushTriangle(&bark, a, c, d);
+      bark->Triangle(a, b, c);
+      bark->Triangle(a, c, d);
     }
   }
 
@@ -151,45 +222,43 @@ void AddBranchTube(const Tree& tree, const Branch& branch, float v_start,
   const glm::vec3 tip_tangent = tangent[rings - 1];
   const glm::vec3 tip_center = branch.nodes[rings - 1] * scale;
   const float cap_radius = tip_radius * scale;
-  const uint32_t center_index = NextIndex(bark);
+  const uint32_t center_index = bark->next;
   const uint32_t tip_node = static_cast<uint32_t>(rings - 1);
-  PushVertex(&bark, tip_center, tip_tangent, 0.5f, 0.5f);
-  out->bark_branch_id.push_back(id);
-  out->bark_node_index.push_back(tip_node);
+  bark->Vertex(tip_center, tip_tangent, 0.5f, 0.5f, id, tip_node);
   for (int j = 0; j < sides; ++j) {
-    float angle = 2.0f * kPi * static_cast<float>(j) / static_cast<float>(sides);
-    float c = det::Cosf(angle), s = det::Sinf(angle);
-    PushVertex(&bark, tip_center + (normal * c + binormal * s) * cap_radius, tip_tangent,
-               0.5f + 0.5f * c, 0.5f + 0.5f * s);
-    out->bark_branch_id.push_back(id);
-    out->bark_node_index.push_back(tip_node);
+    float c = ring_cos[j], s = ring_sin[j];
+    bark->Vertex(tip_center + (normal * c + binormal * s) * cap_radius, tip_tangent,
+                 0.5f + 0.5f * c, 0.5f + 0.5f * s, id, tip_node);
   }
   for (uint32_t j = 0; j < static_cast<uint32_t>(sides); ++j) {
     uint32_t next = (j + 1) % static_cast<uint32_t>(sides);
-    PushTriangle(&bark, center_index, center_index + 1 + j, center_index + 1 + next);
+    bark->Triangle(center_index, center_index + 1 + j, center_index + 1 + next);
   }
 }
 
 // One quad seen from the front (normal n) and one from the back (-n), vertex order 0..3 around.
-void AddDoubleSidedQuad(MeshBuffers* mesh, const glm::vec3 (&corners)[4], const glm::vec3& n,
-                        const glm::vec2 (&uv)[4]) {
+void AddDoubleSidedQuad(Writer* mesh, const glm::vec3 (&corners)[4], const glm::vec3& n,
+                        const glm::vec2 (&uv)[4], uint32_t branch, uint32_t node) {
   for (int side = 0; side < 2; ++side) {
-    uint32_t base = NextIndex(*mesh);
+    uint32_t base = mesh->next;
     glm::vec3 normal = side == 0 ? n : -n;
-    for (int k = 0; k < 4; ++k) PushVertex(mesh, corners[k], normal, uv[k].x, uv[k].y);
+    for (int k = 0; k < 4; ++k) mesh->Vertex(corners[k], normal, uv[k].x, uv[k].y, branch, node);
     if (side == 0) {
-      PushTriangle(mesh, base, base + 1, base + 2);
-      PushTriangle(mesh, base, base + 2, base + 3);
+      mesh->Triangle(base, base + 1, base + 2);
+      mesh->Triangle(base, base + 2, base + 3);
     } else {
-      PushTriangle(mesh, base, base + 2, base + 1);
-      PushTriangle(mesh, base, base + 3, base + 2);
+      mesh->Triangle(base, base + 2, base + 1);
+      mesh->Triangle(base, base + 3, base + 2);
     }
   }
 }
 
+bool ValidNode(const Branch& branch, int node) {
+  return node >= 0 && node < static_cast<int>(branch.nodes.size());
+}
+
 void AddLeaf(const Branch& branch, const Leaf& leaf, float leaf_size, const MeshOptions& options,
-             MeshBuffers* leaves) {
-  if (leaf.node < 0 || leaf.node >= static_cast<int>(branch.nodes.size())) return;
+             Writer* leaves) {
   const float scale = options.cm_to_units;
   glm::vec3 along = SafeNormalize(leaf.direction, kUp);
   // The blade's width runs horizontally when it can, so the leaf faces the sky.
@@ -200,12 +269,27 @@ void AddLeaf(const Branch& branch, const Leaf& leaf, float leaf_size, const Mesh
   glm::vec3 half = across * (0.25f * leaf_size * scale);
   const glm::vec3 corners[4] = {base - half, base + half, tip + half, tip - half};
   const glm::vec2 uv[4] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}};
-  AddDoubleSidedQuad(leaves, corners, normal, uv);
+  AddDoubleSidedQuad(leaves, corners, normal, uv, static_cast<uint32_t>(branch.id),
+                     static_cast<uint32_t>(leaf.node));
 }
 
-void AddFlower(const Branch& branch, int node, const MeshOptions& options, MeshBuffers* flowers) {
-  if (node < 0 || node >= static_cast<int>(branch.nodes.size())) return;
+// cos and sin of the flower outline's angles 2π·k/10, scaled by the petal or notch radius.
+struct FlowerTable {
+  float c[kFlowerOutline], s[kFlowerOutline];
+  FlowerTable() {
+    for (int k = 0; k < kFlowerOutline; ++k) {
+      float angle = 2.0f * kPi * static_cast<float>(k) / static_cast<float>(kFlowerOutline);
+      float r = (k % 2 == 0) ? kFlowerOuterRadius : kFlowerInnerRadius;
+      c[k] = det::Cosf(angle) * r;
+      s[k] = det::Sinf(angle) * r;
+    }
+  }
+};
+
+void AddFlower(const Branch& branch, int node, const MeshOptions& options,
+               const FlowerTable& outline, Writer* flowers) {
   const float scale = options.cm_to_units;
+  const uint32_t id = static_cast<uint32_t>(branch.id), at = static_cast<uint32_t>(node);
   glm::vec3 position = branch.nodes[static_cast<std::size_t>(node)];
   // Faces up and away from the trunk axis.
   glm::vec3 outward = SafeNormalize(glm::vec3(position.x, 0.0f, position.z), glm::vec3(0.0f));
@@ -213,25 +297,23 @@ void AddFlower(const Branch& branch, int node, const MeshOptions& options, MeshB
   glm::vec3 a = AnyPerpendicular(facing);
   glm::vec3 b = SafeNormalize(glm::cross(facing, a), AnyPerpendicular(a));
   glm::vec3 center = (position + facing * kFlowerLift) * scale;
-  constexpr int kOutline = 2 * kFlowerPetals;
   for (int side = 0; side < 2; ++side) {
     glm::vec3 normal = side == 0 ? facing : -facing;
-    uint32_t hub = NextIndex(*flowers);
-    PushVertex(flowers, center, normal, 0.5f, 0.5f);
-    for (int k = 0; k < kOutline; ++k) {
-      float angle = 2.0f * kPi * static_cast<float>(k) / static_cast<float>(kOutline);
-      float r = (k % 2 == 0) ? kFlowerOuterRadius : kFlowerInnerRadius;
-      float c = det::Cosf(angle) * r, s = det::Sinf(angle) * r;
-      PushVertex(flowers, center + (a * c + b * s) * scale, normal,
-                 0.5f + 0.5f * c / kFlowerOuterRadius, 0.5f + 0.5f * s / kFlowerOuterRadius);
+    uint32_t hub = flowers->next;
+    flowers->Vertex(center, normal, 0.5f, 0.5f, id, at);
+    for (int k = 0; k < kFlowerOutline; ++k) {
+      float c = outline.c[k], s = outline.s[k];
+      flowers->Vertex(center + (a * c + b * s) * scale, normal,
+                      0.5f + 0.5f * c / kFlowerOuterRadius, 0.5f + 0.5f * s / kFlowerOuterRadius,
+                      id, at);
     }
     // a x b = facing, so increasing angle is counter-clockwise seen from the front.
-    for (uint32_t k = 0; k < static_cast<uint32_t>(kOutline); ++k) {
-      uint32_t p = hub + 1 + k, q = hub + 1 + (k + 1) % static_cast<uint32_t>(kOutline);
+    for (uint32_t k = 0; k < static_cast<uint32_t>(kFlowerOutline); ++k) {
+      uint32_t p = hub + 1 + k, q = hub + 1 + (k + 1) % static_cast<uint32_t>(kFlowerOutline);
       if (side == 0) {
-        PushTriangle(flowers, hub, p, q);
+        flowers->Triangle(hub, p, q);
       } else {
-        PushTriangle(flowers, hub, q, p);
+        flowers->Triangle(hub, q, p);
       }
     }
   }
@@ -242,29 +324,60 @@ void AddFlower(const Branch& branch, int node, const MeshOptions& options, MeshB
 TreeMesh BuildTreeMesh(const Tree& tree, const MeshOptions& options) {
   TreeMesh mesh;
   const float leaf_size = static_cast<float>(tree.params.Get(ParamId::kLeafSize));
-  // v coordinate (metres along the wood) of every node, so children continue their parent's v.
-  std::vector<std::vector<float>> node_v(tree.branches.size());
-  for (std::size_t n = 0; n < tree.branches.size(); ++n) {
+  const int lo_sides = std::max(3, options.min_sides);
+  const int hi_sides = std::max(lo_sides, options.max_sides);
+  const std::size_t count = tree.branches.size();
+
+  // Pass 1: which branches are drawn, their sides, and the size of every buffer.
+  std::vector<int> sides(count, 0);                // 0: not drawn
+  std::vector<std::size_t> node_offset(count, 0);  // first entry of the branch in node_v
+  std::size_t nodes = 0, bark_vertices = 0, bark_indices = 0;
+  std::size_t leaf_count = 0, flower_count = 0;
+  for (std::size_t n = 0; n < count; ++n) {
     const Branch& branch = tree.branches[n];
     if (!branch.alive || branch.nodes.size() < 2) continue;
+    const std::size_t rings = branch.nodes.size();
+    const int s = SidesForRadius(BranchRadius(branch), lo_sides, hi_sides);
+    const std::size_t side_count = static_cast<std::size_t>(s);
+    sides[n] = s;
+    node_offset[n] = nodes;
+    nodes += rings;
+    bark_vertices += rings * (side_count + 1) + 1 + side_count;
+    bark_indices += 6 * (rings - 1) * side_count + 3 * side_count;
+    for (const Leaf& leaf : branch.leaves) leaf_count += ValidNode(branch, leaf.node) ? 1 : 0;
+    for (int node : branch.flowers) flower_count += ValidNode(branch, node) ? 1 : 0;
+  }
+  Writer bark = StartWriting(&mesh.bark, &mesh.bark_branch_id, &mesh.bark_node_index, bark_vertices,
+                             bark_indices);
+  Writer leaves = StartWriting(&mesh.leaves, &mesh.leaf_branch_id, &mesh.leaf_node_index,
+                               leaf_count * kLeafVertices, leaf_count * kLeafIndices);
+  Writer flowers = StartWriting(&mesh.flowers, &mesh.flower_branch_id, &mesh.flower_node_index,
+                                flower_count * kFlowerVertices, flower_count * kFlowerIndices);
+
+  // Pass 2: the geometry. v coordinate (metres along the wood) of every node, so children continue
+  // their parent's v.
+  const RingTable ring(lo_sides, hi_sides);
+  const FlowerTable outline;
+  TubeScratch scratch;
+  std::vector<float> node_v(nodes);
+  for (std::size_t n = 0; n < count; ++n) {
+    if (sides[n] == 0) continue;
+    const Branch& branch = tree.branches[n];
     float v_start = 0.0f;
     if (branch.parent >= 0 && branch.parent < static_cast<int>(n)) {
-      const std::vector<float>& parent_v = node_v[static_cast<std::size_t>(branch.parent)];
-      if (branch.parent_node >= 0 && branch.parent_node < static_cast<int>(parent_v.size())) {
-        v_start = parent_v[static_cast<std::size_t>(branch.parent_node)];
+      const std::size_t parent = static_cast<std::size_t>(branch.parent);
+      if (sides[parent] != 0 && branch.parent_node >= 0 &&
+          branch.parent_node < static_cast<int>(tree.branches[parent].nodes.size())) {
+        v_start = node_v[node_offset[parent] + static_cast<std::size_t>(branch.parent_node)];
       }
     }
-    AddBranchTube(tree, branch, v_start, options, &mesh, &node_v[n]);
-    const uint32_t id = static_cast<uint32_t>(branch.id);
+    AddBranchTube(tree, branch, sides[n], v_start, options, ring, &scratch, &bark,
+                  node_v.data() + node_offset[n]);
     for (const Leaf& leaf : branch.leaves) {
-      AddLeaf(branch, leaf, leaf_size, options, &mesh.leaves);
-      mesh.leaf_branch_id.resize(mesh.leaves.vertex_count(), id);
-      mesh.leaf_node_index.resize(mesh.leaves.vertex_count(), static_cast<uint32_t>(leaf.node));
+      if (ValidNode(branch, leaf.node)) AddLeaf(branch, leaf, leaf_size, options, &leaves);
     }
     for (int node : branch.flowers) {
-      AddFlower(branch, node, options, &mesh.flowers);
-      mesh.flower_branch_id.resize(mesh.flowers.vertex_count(), id);
-      mesh.flower_node_index.resize(mesh.flowers.vertex_count(), static_cast<uint32_t>(node));
+      if (ValidNode(branch, node)) AddFlower(branch, node, options, outline, &flowers);
     }
   }
   return mesh;
