@@ -3,9 +3,11 @@
 //   <script type="module" src="https://HOST/niwa-embed.js"></script>
 //   <niwa-tree preset="sakura" years="12" seed="3"></niwa-tree>
 //   <niwa-tree state="preset=maple&amp;seed=2&amp;years=10" animate></niwa-tree>
+//   <niwa-tree preset="keyaki" wind></niwa-tree>
 //
 // Attributes: preset, seed, years, or state (a share link's hash, which wins over the other three);
-// animate grows the tree year by year once it is shown. Drag, wheel, pinch or the arrow and +/- keys
+// animate grows the tree year by year once it is shown; wind sways it in the state's wind (thesis
+// chapter 3, the gust schedule repeating). Drag, wheel, pinch or the arrow and +/- keys
 // orbit and zoom. Every <niwa-tree> on a page shares ONE Web Worker and so one WASM instance (the
 // worker keeps their requests apart by a client id). Messages are shown as text, never as markup.
 import { OrbitCamera } from './web/camera.js';
@@ -45,7 +47,7 @@ p:empty { display: none; }
 `;
 
 class NiwaTree extends HTMLElement {
-  static get observedAttributes() { return ['preset', 'seed', 'years', 'state']; }
+  static get observedAttributes() { return ['preset', 'seed', 'years', 'state', 'wind']; }
 
   constructor() {
     super();
@@ -81,6 +83,7 @@ class NiwaTree extends HTMLElement {
   disconnectedCallback() {
     clients.delete(this.client);
     this.animating = false;
+    worker?.postMessage({ type: 'wind', client: this.client, play: false });
   }
 
   attributeChangedCallback() {
@@ -92,7 +95,10 @@ class NiwaTree extends HTMLElement {
       const renderer = new Renderer(this.canvas);
       await renderer.init();
       this.renderer = renderer;
-      this.camera.attach(this.canvas, () => this.requestFrame());
+      this.camera.attach(this.canvas, () => {
+        this.requestFrame();
+        this.requestView();
+      });
       new ResizeObserver(() => this.requestFrame()).observe(this.canvas);
       if (this.pendingTree) this.showTree(this.pendingTree);
     } catch (e) {
@@ -111,7 +117,23 @@ class NiwaTree extends HTMLElement {
     requestAnimationFrame(() => {
       this.frameRequested = false;
       this.renderer.render(this.camera);
+      if (this.poseDrawPending) {  // the worker sends the next pose once this one is on screen
+        this.poseDrawPending = false;
+        sharedWorker().postMessage({ type: 'poseDone', client: this.client });
+      }
     });
+  }
+
+  // Hybrid mode (render_mode 1 in the state): one view request at a time, the newest camera wins.
+  requestView() {
+    if (!this.hybridOn || !this.renderer) return;
+    if (this.viewInFlight) {
+      this.viewDirty = true;
+      return;
+    }
+    this.viewInFlight = true;
+    this.viewDirty = false;
+    sharedWorker().postMessage({ type: 'view', client: this.client, camera: this.renderer.viewFor(this.camera) });
   }
 
   // Reads the attributes: state= goes through the core's hash decoder; the others are checked by the
@@ -176,6 +198,21 @@ class NiwaTree extends HTMLElement {
       if (this.renderer) this.showTree(msg);
       else this.pendingTree = msg;
       this.resolveTree?.(true);
+    } else if (msg.type === 'drawList') {
+      this.viewInFlight = false;
+      if (!this.hybridOn || !this.renderer) return;
+      this.renderer.setDrawList(msg);
+      this.requestFrame();
+      if (this.viewDirty) this.requestView();
+    } else if (msg.type === 'pose') {
+      if (!this.hasAttribute('wind') || !this.renderer) {
+        sharedWorker().postMessage({ type: 'poseDone', client: this.client });
+        return;
+      }
+      this.renderer.setPoses(new Float32Array(msg.poses), msg.wind, msg.time);
+      this.poseDrawPending = true;
+      this.dataset.swayTime = msg.time.toFixed(3);
+      this.requestFrame();
     } else if (msg.type === 'error' && (msg.id === undefined || msg.id === this.latestId)) {
       this.showMessage(msg.message);
       this.resolveTree?.(false);
@@ -184,13 +221,17 @@ class NiwaTree extends HTMLElement {
 
   showTree(msg) {
     this.pendingTree = null;
-    this.renderer.setTree(msg.mesh, msg.stats.bounds);
+    this.renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid);
+    this.hybridOn = Boolean(msg.hybrid);
+    this.viewInFlight = false;
     if (this.sun) this.renderer.setSun(...this.sun);
+    sharedWorker().postMessage({ type: 'wind', client: this.client, play: this.hasAttribute('wind') });
     if (!this.framed) {
       this.camera.frame(msg.stats.bounds);
       this.framed = true;
     }
     this.requestFrame();
+    this.requestView();
     Object.assign(this.dataset, { status: 'ready', internodes: String(msg.stats.internodes), year: String(msg.stats.years) });
   }
 }

@@ -38,6 +38,11 @@ const ui = {
   embedDialog: $('embed-dialog'),
   embedElement: $('embed-element'),
   embedIframe: $('embed-iframe'),
+  wind: $('wind'),
+  windInfo: $('wind-info'),
+  renderMode: $('render-mode'),
+  renderTable: $('render-table'),
+  renderCol: $('render-col'),
 };
 const root = document.documentElement;
 
@@ -56,6 +61,7 @@ function showNotices() {
 const camera = new OrbitCamera();
 let renderer = null;
 let frameRequested = false;
+let poseDrawPending = false;
 function requestFrame() {
   if (!renderer || frameRequested) return;
   frameRequested = true;
@@ -63,6 +69,10 @@ function requestFrame() {
     frameRequested = false;
     const drawn = renderer.render(camera);
     if (drawn) showFrameStats(drawn);
+    if (poseDrawPending) {  // the worker sends the next pose once this one is on screen
+      poseDrawPending = false;
+      worker.postMessage({ type: 'poseDone' });
+    }
   });
 }
 
@@ -77,6 +87,55 @@ function showFrameStats(drawn) {
   ui.frameStats.textContent = `tris ${Math.round(drawn.triangles).toLocaleString('en-US')} · draw calls ${drawn.drawCalls}`
     + ` · frame ${avg.toFixed(1)} ms CPU`;
   ui.frameStats.title = `CPU time of the render call, mean of the last ${frameTimes.length} frames drawn (GPU time is not measured)`;
+  const column = drawn.mode === 'hybrid' ? 'row' : 'full';
+  setCell(column, 'draw_calls', drawn.drawCalls);
+  setCell(column, 'frame_ms', `${avg.toFixed(1)} ms`);
+  if (drawn.mode !== 'hybrid') for (const key of ['draw_calls', 'frame_ms']) setCell('row', key, '');
+}
+
+// ---------------------------------------------------------------- render table (thesis table 4.1)
+function setCell(column, key, value) {
+  const cell = ui.renderTable.querySelector(`[data-${column}="${key}"]`);
+  if (cell) cell.textContent = typeof value === 'number' ? value.toLocaleString('en-US') : String(value);
+}
+function showFullCounts(mesh) {
+  const tris = (part) => (part ? part.indices.byteLength / 12 : 0);
+  const bark = tris(mesh.bark), leaves = tris(mesh.leaves) + tris(mesh.flowers);
+  setCell('full', 'branch_polygons', bark);
+  setCell('full', 'leaf_polygons', leaves);
+  setCell('full', 'total_polygons', bark + leaves);
+}
+function showHybridCounts(stats) {
+  ui.renderCol.textContent = stats ? 'hybrid' : 'this view';
+  for (const key of ['lines', 'branch_polygons', 'leaf_polygons', 'total_polygons', 'textures']) {
+    setCell('row', key, stats ? stats[key] : '');
+  }
+  if (!stats) return;
+  Object.assign(root.dataset, {
+    renderLines: String(stats.lines),
+    renderPolygons: String(stats.total_polygons),
+    renderTextures: String(stats.textures),
+    renderFull: String(stats.full_polygons),
+    // Every alive branch is a line or a card in every view (none vanishes while switching).
+    renderUnassigned: String(stats.alive_branches - stats.line_branches - stats.card_branches),
+    renderViews: String(Number(root.dataset.renderViews || 0) + 1),
+  });
+}
+
+// Hybrid mode: the worker chooses card or line per branch for each view (eq. 4.1 with hysteresis);
+// one request at a time, the newest camera wins.
+let hybridOn = false;
+let viewInFlight = false;
+let viewDirty = false;
+function requestView() {
+  if (!hybridOn || !renderer) return;
+  if (viewInFlight) {
+    viewDirty = true;
+    return;
+  }
+  viewInFlight = true;
+  viewDirty = false;
+  worker.postMessage({ type: 'view', camera: renderer.viewFor(camera) });
 }
 
 // The renderer's light is the light model's sun (parameters sun_elevation and sun_azimuth).
@@ -94,6 +153,7 @@ function showSun() {
 let cameraTimer = 0;
 function cameraMoved() {
   requestFrame();
+  requestView();
   clearTimeout(cameraTimer);
   cameraTimer = setTimeout(writeHash, 400);
 }
@@ -103,7 +163,10 @@ async function startRenderer() {
     renderer = new Renderer(ui.canvas);
     await renderer.init();
     camera.attach(ui.canvas, cameraMoved);
-    new ResizeObserver(requestFrame).observe(ui.canvas);
+    new ResizeObserver(() => {
+      requestFrame();
+      requestView();
+    }).observe(ui.canvas);
     ui.canvas.addEventListener('webglcontextlost', (e) => {
       e.preventDefault();
       webglMessage = 'The WebGL2 context was lost; reload the page to draw again.';
@@ -151,6 +214,7 @@ function applyState(state) {
   showPresetSource();
   showPrunes();
   showSun();
+  ui.renderMode.value = String(Number(state.params.render_mode) === 1 ? 1 : 0);
 }
 
 function showPresetSource() {
@@ -262,6 +326,7 @@ worker.onmessage = (event) => {
       for (const p of presets) ui.preset.append(new Option(`${p.title} (${p.name})`, p.name));
       panel = new ParamPanel(ui.params, msg.paramTable, () => {
         showSun();
+        ui.renderMode.value = String(Number(panel.values().render_mode) === 1 ? 1 : 0);
         scheduleUpdate();
       });
       applyState(msg.decoded.state);
@@ -310,7 +375,8 @@ worker.onmessage = (event) => {
       ui.progressBar.hidden = true;
       shownYear = msg.stats.years;
       if (renderer) {
-        renderer.setTree(msg.mesh, msg.stats.bounds);
+        renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid);
+        renderer.leafLength = Number(panel.values().leaf_size) / 100 || 0.05;
         lastBounds = msg.stats.bounds;
         if (frameNext) {
           camera.frame(msg.stats.bounds, 1.12);  // room for the year bar over the view
@@ -319,6 +385,12 @@ worker.onmessage = (event) => {
         }
         requestFrame();
       }
+      showFullCounts(msg.mesh);
+      hybridOn = Boolean(msg.hybrid);
+      viewInFlight = false;
+      showHybridCounts(null);
+      root.dataset.renderMode = hybridOn ? 'hybrid' : 'full';
+      requestView();
       if (latestRequest.kind !== 'scrub') select(null); else select(selected);
       Object.assign(root.dataset, {
         status: 'ready',
@@ -329,8 +401,28 @@ worker.onmessage = (event) => {
         year: String(msg.stats.years),
       });
       waiters.splice(0).forEach((resolve) => resolve(true));
+      if (windPlaying) worker.postMessage({ type: 'wind', play: true });  // sway the new tree too
+      else showWind(null);
       break;
     }
+    case 'drawList':
+      viewInFlight = false;
+      if (!hybridOn || !renderer) break;
+      renderer.setDrawList(msg);
+      showHybridCounts(msg.stats);
+      requestFrame();
+      if (viewDirty) requestView();
+      break;
+    case 'pose':
+      if (!windPlaying || !renderer) {
+        worker.postMessage({ type: 'poseDone' });
+        break;
+      }
+      renderer.setPoses(new Float32Array(msg.poses), msg.wind, msg.time);
+      poseDrawPending = true;
+      showWind(msg);
+      requestFrame();
+      break;
     case 'export':
       exportIds.delete(msg.id);
       download(new Blob([msg.bytes], { type: msg.format === 'glb' ? 'model/gltf-binary' : 'application/json' }),
@@ -468,6 +560,39 @@ window.addEventListener('popstate', (event) => {
   history.replaceState(entryState(), '', location.href);  // remembers historyMax for a reload
   baseHash = '';
   worker.postMessage({ type: 'decode', id: ++nextId, hash: location.hash });
+});
+
+// ---------------------------------------------------------------- wind (thesis chapter 3)
+// Blow runs the node-point sway of the tree on screen in the worker; each pose (16 floats per node
+// point) skins the mesh in the vertex shader. The wind is the state's wind parameters.
+let windPlaying = false;
+function showWind(pose) {
+  if (!pose) {
+    ui.windInfo.textContent = windPlaying ? 'starting the wind…' : 'Still air. Blow sways the tree with the wind settings (speed, direction, gusts).';
+    root.dataset.swayTime = '';
+    return;
+  }
+  const speed = pose.wind > 0 ? `${pose.wind.toFixed(1)} m/s` : 'calm';
+  ui.windInfo.textContent = `t = ${pose.time.toFixed(1)} s · wind ${speed}`;
+  root.dataset.swayTime = pose.time.toFixed(3);
+}
+function setWind(play) {
+  windPlaying = play;
+  ui.wind.textContent = play ? 'Still' : 'Blow';
+  ui.wind.setAttribute('aria-pressed', String(play));
+  worker.postMessage({ type: 'wind', play });
+  if (!play) {
+    renderer?.setRestPoses(renderer.poseNodes);
+    requestFrame();
+  }
+  showWind(null);
+}
+ui.wind.addEventListener('click', () => setWind(!windPlaying));
+
+ui.renderMode.addEventListener('change', () => {
+  if (!panel) return;
+  panel.setValues({ render_mode: Number(ui.renderMode.value) });
+  scheduleUpdate();
 });
 
 // ---------------------------------------------------------------- share and export

@@ -15,7 +15,21 @@
 //                           memory; barkBranchIds() (Uint32, one per bark vertex);
 //                           branchParents() (Int32 parent id per branch, -1 at the root);
 //                           buildGlb() -> "" or error, then glbBytes() (Uint8 view of the .glb);
-//                           paramsJson() (ParamsToJson of the state's parameters).
+//                           paramsJson() (ParamsToJson of the state's parameters);
+//                           leavesUvs() (uv per leaf vertex: v = 0 at the petiole, 1 at the tip);
+//                           sway skinning of the mesh (core/sway/skin.h): barkJoints() /
+//                           barkWeights() (and leaves*, flowers*), one node point and one eq. 3.15
+//                           weight per vertex; swayNodes() node points; swayStart() -> "" or error
+//                           (rest pose, time 0, the state's wind); swayStep(n) advances n steps of
+//                           dt and returns the time; swayPoses() (16 floats per node point, see
+//                           WriteSwayPoses); swayDt(), swayDuration(), swayWindSpeed() (m/s now);
+//                           hybrid rendering (thesis ch. 4, core/render): buildHybrid() -> "" or
+//                           error (scene + atlas geometry: atlasSize(), atlasBarkPositions() ...
+//                           atlasFlowersIndices(), clip-space triangles that paint the card atlas);
+//                           hybridView(ex,ey,ez, tx,ty,tz, fovY, width, height) -> table 4.1 JSON
+//                           and the draw list: card{Positions,Uvs,Indices,Joints,Weights}(),
+//                           line{Positions,Colors,Widths,Joints,Weights}() (eq. 4.1 with
+//                           hysteresis against the previous view, eq. 4.2 colours).
 //
 // The mesh views (emscripten::typed_memory_view) point into the WASM heap: they stay valid only
 // until the next call that may allocate. The worker copies each one ONCE into a fresh ArrayBuffer
@@ -37,6 +51,10 @@
 #include "io/json_io.h"
 #include "io/url_codec.h"
 #include "params/param_table.h"
+#include "render/atlas_mesh.h"
+#include "render/hybrid.h"
+#include "sway/skin.h"
+#include "sway/sway.h"
 #include "tree/growth.h"
 #include "tree/mesh.h"
 #include "tree/presets.h"
@@ -49,6 +67,9 @@ using nlohmann::json;
 using nlohmann::ordered_json;
 
 constexpr double kMaxSeed = 4294967295.0;
+
+// The sway and wind parameters of a state (rows of the one parameter table, groups "sway", "wind").
+SwayParams SwayParamsOf(const ParamSet& params) { return SwayParams(params); }
 
 // {"key": value} for every parameter (full values), as a JSON object.
 ordered_json ParamsObject(const ParamSet& params) {
@@ -249,6 +270,44 @@ class GrowSession {
     mesh_ = BuildTreeMesh(grower_->tree());
     parents_.clear();
     for (const Branch& branch : grower_->tree().branches) parents_.push_back(branch.parent);
+    // The node points of this tree and the skin that ties every vertex to one of them (thesis
+    // 3.3.1, eq. 3.15); the pose texture starts at rest.
+    sway_.reset();
+    sway_model_ = BuildSwayModel(grower_->tree(), SwayParams(state_.params));
+    skin_ = BuildTreeSkin(mesh_, sway_model_);
+    poses_.assign(sway_model_.nodes.size() * kSwayPoseFloats, 0.0f);
+    RestSwayPoses(sway_model_.nodes.size(), poses_.data());
+  }
+
+  // ---- Sway (thesis chapter 3) of the tree last meshed ----
+  int swayNodes() const { return static_cast<int>(sway_model_.nodes.size()); }
+
+  // (Re)starts the sway from rest at time 0 with the state's sway and wind parameters.
+  std::string swayStart() {
+    if (!grower_) return error_.empty() ? "no tree" : error_;
+    SwayParams params = SwayParamsOf(state_.params);
+    std::string error = CheckSwayParams(state_.params);
+    if (!error.empty()) return error;
+    sway_ = std::make_unique<SwaySimulator>(grower_->tree(), params);
+    sway_params_ = params;
+    RestSwayPoses(sway_model_.nodes.size(), poses_.data());
+    return "";
+  }
+
+  // Advances `steps` time steps (at most 64 per call) and writes the poses; returns the time (s).
+  double swayStep(int steps) {
+    if (!sway_) return 0;
+    for (int i = 0; i < std::min(std::max(steps, 0), 64); ++i) sway_->Step();
+    if (poses_.size() == sway_->model().nodes.size() * kSwayPoseFloats)
+      WriteSwayPoses(*sway_, MeshOptions{}.cm_to_units, poses_.data());
+    return sway_->time();
+  }
+  double swayDt() const { return sway_params_.dt; }
+  double swayDuration() const { return sway_params_.duration; }
+  // Wind speed (m/s) at the tree's root now: drives the leaf flutter in the shader.
+  double swayWindSpeed() const {
+    if (!sway_) return 0;
+    return glm::length(WindAt(sway_params_, glm::dvec3(0.0), sway_->time())) / 100.0;
   }
 
   // {internodes, branches, leaves, flowers, height (cm), years, seed, preset, truncated, ms,
@@ -311,6 +370,93 @@ class GrowSession {
   }
   emscripten::val glbBytes() const { return View(glb_); }
 
+  emscripten::val leavesUvs() const { return View(mesh_.leaves.uvs); }
+  emscripten::val barkJoints() const { return View(skin_.bark.joint); }
+  emscripten::val barkWeights() const { return View(skin_.bark.weight); }
+  emscripten::val leavesJoints() const { return View(skin_.leaves.joint); }
+  emscripten::val leavesWeights() const { return View(skin_.leaves.weight); }
+  emscripten::val flowersJoints() const { return View(skin_.flowers.joint); }
+  emscripten::val flowersWeights() const { return View(skin_.flowers.weight); }
+  emscripten::val swayPoses() const { return View(poses_); }
+
+  // ---- Hybrid rendering (thesis chapter 4) of the tree last meshed ----
+  std::string buildHybrid() {
+    if (!grower_) return error_.empty() ? "no tree" : error_;
+    RenderOptions options = RenderOptionsFromParams(state_.params);
+    std::string error = CheckRenderOptions(options);
+    if (!error.empty()) return error;
+    hybrid_ = BuildHybridScene(grower_->tree(), options);
+    atlas_ = BuildAtlasMesh(mesh_, hybrid_);
+    has_selection_ = false;
+    return hybrid_.atlas_fits ? "" : "render: the card atlas does not fit; lower card_planes";
+  }
+  int atlasSize() const { return hybrid_.atlas_size; }
+  int renderMode() const { return static_cast<int>(state_.params.Get(ParamId::kRenderMode)); }
+  emscripten::val atlasBarkPositions() const { return View(atlas_.bark.positions); }
+  emscripten::val atlasBarkNormals() const { return View(atlas_.bark.normals); }
+  emscripten::val atlasBarkIndices() const { return View(atlas_.bark.indices); }
+  emscripten::val atlasLeavesPositions() const { return View(atlas_.leaves.positions); }
+  emscripten::val atlasLeavesNormals() const { return View(atlas_.leaves.normals); }
+  emscripten::val atlasLeavesIndices() const { return View(atlas_.leaves.indices); }
+  emscripten::val atlasFlowersPositions() const { return View(atlas_.flowers.positions); }
+  emscripten::val atlasFlowersNormals() const { return View(atlas_.flowers.normals); }
+  emscripten::val atlasFlowersIndices() const { return View(atlas_.flowers.indices); }
+
+  // Card-or-line per branch for this camera (metres, radians, pixels), the draw list and its skin;
+  // returns the table 4.1 counts as JSON (CountHybrid + CountFull), or {"error": ...}.
+  std::string hybridView(double ex, double ey, double ez, double tx, double ty, double tz,
+                         double fov_y, int width, int height) {
+    ordered_json j;
+    if (!grower_ || hybrid_.frames.empty()) {
+      j["error"] = "no hybrid scene";
+      return j.dump();
+    }
+    const Tree& tree = grower_->tree();
+    RenderCamera camera;
+    camera.eye = glm::vec3(static_cast<float>(ex), static_cast<float>(ey), static_cast<float>(ez));
+    camera.target =
+        glm::vec3(static_cast<float>(tx), static_cast<float>(ty), static_cast<float>(tz));
+    camera.fov_y = static_cast<float>(fov_y);
+    camera.width = std::max(1, width);
+    camera.height = std::max(1, height);
+    selection_ = SelectHybrid(tree, hybrid_, camera, has_selection_ ? &selection_ : nullptr);
+    has_selection_ = true;
+    LineShading shading;  // eq. 4.2 lit by the light model's sun (renderer.js setSun)
+    const double el = state_.params.Get(ParamId::kSunElevation) * 3.14159265358979 / 180.0;
+    const double az = state_.params.Get(ParamId::kSunAzimuth) * 3.14159265358979 / 180.0;
+    shading.light_dir =
+        glm::vec3(static_cast<float>(std::cos(el) * std::cos(az)), static_cast<float>(std::sin(el)),
+                  static_cast<float>(std::cos(el) * std::sin(az)));
+    draw_ = BuildDrawList(tree, hybrid_, selection_, camera, shading);
+    draw_skin_ = BuildDrawListSkin(tree, hybrid_, draw_, sway_model_);
+    RenderStats stats = CountHybrid(hybrid_, selection_);
+    CountFull(mesh_, &stats);
+    j["lines"] = stats.lines;
+    j["line_branches"] = stats.line_branches;
+    j["card_branches"] = stats.card_branches;
+    j["branch_polygons"] = stats.branch_polygons;
+    j["leaf_polygons"] = stats.leaf_polygons;
+    j["total_polygons"] = stats.total_polygons;
+    j["primitives"] = stats.primitives;
+    j["textures"] = stats.textures;
+    j["leaf_clusters"] = stats.leaf_clusters;
+    j["full_polygons"] = stats.full_polygons;
+    int alive = 0;
+    for (const Branch& b : tree.branches) alive += b.alive ? 1 : 0;
+    j["alive_branches"] = alive;
+    return j.dump();
+  }
+  emscripten::val cardPositions() const { return View(draw_.card_positions); }
+  emscripten::val cardUvs() const { return View(draw_.card_uvs); }
+  emscripten::val cardIndices() const { return View(draw_.card_indices); }
+  emscripten::val cardJoints() const { return View(draw_skin_.cards.joint); }
+  emscripten::val cardWeights() const { return View(draw_skin_.cards.weight); }
+  emscripten::val linePositions() const { return View(draw_.line_positions); }
+  emscripten::val lineColors() const { return View(draw_.line_colors); }
+  emscripten::val lineWidths() const { return View(draw_.line_widths); }
+  emscripten::val lineJoints() const { return View(draw_skin_.lines.joint); }
+  emscripten::val lineWeights() const { return View(draw_skin_.lines.weight); }
+
   // The state's full parameter set as JSON (ParamsToJson), for the "Download .json" button.
   std::string paramsJson() const { return ParamsToJson(state_.params); }
 
@@ -326,6 +472,17 @@ class GrowSession {
   TreeMesh mesh_;
   std::vector<int32_t> parents_;
   std::vector<unsigned char> glb_;
+  SwayModel sway_model_;
+  TreeSkin skin_;
+  SwayParams sway_params_;
+  std::unique_ptr<SwaySimulator> sway_;
+  std::vector<float> poses_;
+  HybridScene hybrid_;
+  AtlasMesh atlas_;
+  HybridSelection selection_;
+  bool has_selection_ = false;
+  HybridDrawList draw_;
+  DrawListSkin draw_skin_;
 };
 
 }  // namespace niwa
@@ -359,5 +516,42 @@ EMSCRIPTEN_BINDINGS(niwa) {
       .function("branchParents", &niwa::GrowSession::branchParents)
       .function("buildGlb", &niwa::GrowSession::buildGlb)
       .function("glbBytes", &niwa::GrowSession::glbBytes)
-      .function("paramsJson", &niwa::GrowSession::paramsJson);
+      .function("paramsJson", &niwa::GrowSession::paramsJson)
+      .function("leavesUvs", &niwa::GrowSession::leavesUvs)
+      .function("barkJoints", &niwa::GrowSession::barkJoints)
+      .function("barkWeights", &niwa::GrowSession::barkWeights)
+      .function("leavesJoints", &niwa::GrowSession::leavesJoints)
+      .function("leavesWeights", &niwa::GrowSession::leavesWeights)
+      .function("flowersJoints", &niwa::GrowSession::flowersJoints)
+      .function("flowersWeights", &niwa::GrowSession::flowersWeights)
+      .function("swayNodes", &niwa::GrowSession::swayNodes)
+      .function("swayStart", &niwa::GrowSession::swayStart)
+      .function("swayStep", &niwa::GrowSession::swayStep)
+      .function("swayPoses", &niwa::GrowSession::swayPoses)
+      .function("swayDt", &niwa::GrowSession::swayDt)
+      .function("swayDuration", &niwa::GrowSession::swayDuration)
+      .function("swayWindSpeed", &niwa::GrowSession::swayWindSpeed)
+      .function("buildHybrid", &niwa::GrowSession::buildHybrid)
+      .function("atlasSize", &niwa::GrowSession::atlasSize)
+      .function("renderMode", &niwa::GrowSession::renderMode)
+      .function("atlasBarkPositions", &niwa::GrowSession::atlasBarkPositions)
+      .function("atlasBarkNormals", &niwa::GrowSession::atlasBarkNormals)
+      .function("atlasBarkIndices", &niwa::GrowSession::atlasBarkIndices)
+      .function("atlasLeavesPositions", &niwa::GrowSession::atlasLeavesPositions)
+      .function("atlasLeavesNormals", &niwa::GrowSession::atlasLeavesNormals)
+      .function("atlasLeavesIndices", &niwa::GrowSession::atlasLeavesIndices)
+      .function("atlasFlowersPositions", &niwa::GrowSession::atlasFlowersPositions)
+      .function("atlasFlowersNormals", &niwa::GrowSession::atlasFlowersNormals)
+      .function("atlasFlowersIndices", &niwa::GrowSession::atlasFlowersIndices)
+      .function("hybridView", &niwa::GrowSession::hybridView)
+      .function("cardPositions", &niwa::GrowSession::cardPositions)
+      .function("cardUvs", &niwa::GrowSession::cardUvs)
+      .function("cardIndices", &niwa::GrowSession::cardIndices)
+      .function("cardJoints", &niwa::GrowSession::cardJoints)
+      .function("cardWeights", &niwa::GrowSession::cardWeights)
+      .function("linePositions", &niwa::GrowSession::linePositions)
+      .function("lineColors", &niwa::GrowSession::lineColors)
+      .function("lineWidths", &niwa::GrowSession::lineWidths)
+      .function("lineJoints", &niwa::GrowSession::lineJoints)
+      .function("lineWeights", &niwa::GrowSession::lineWeights);
 }

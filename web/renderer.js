@@ -1,8 +1,13 @@
-// WebGL2 renderer: bark tubes, double-sided leaves and flowers, and a ground plane.
-// Shaders (GLSL ES 3.00) are fetched at runtime from /shaders/.
+// WebGL2 renderer: bark tubes, double-sided leaves and flowers, and a ground plane (full-polygon
+// mode), or the hybrid mode of thesis chapter 4: texture cards from a card atlas plus lines.
+// Shaders (GLSL ES 3.00) are fetched at runtime from /shaders/; `#include "skin.glsl"` in a shader
+// is replaced by that file (the sway skinning shared by every vertex shader).
 
 const BACKGROUND = [0.86, 0.90, 0.94];
 const NONE = 0xffffffff;  // "no branch" for the branch-id attribute and the selection
+// Sway poses (core/sway/skin.h): 16 floats = 4 RGBA32F texels per node point, rows of 1024 texels.
+const POSE_TEXELS = 4;
+const POSE_ROW = 1024;
 
 const PARTS = {
   bark: { color: [0.36, 0.25, 0.18], variation: [0.04, 0.03, 0.02], doubleSided: 0, specular: 0.03 },
@@ -60,6 +65,48 @@ export class Renderer {
     this.extent = 20;
     this.setSun(60, 0);
     this.lastFrame = { triangles: 0, drawCalls: 0, cpuMs: 0 };
+    this.poseTexture = gl.createTexture();
+    this.poseNodes = 0;
+    this.wind = 0;         // wind speed (m/s) at the tree now: leaf flutter
+    this.swayTime = 0;     // simulated time (s) of the pose shown
+    this.swaying = false;  // poses differ from rest
+    this.leafLength = 0.05;  // metres (the tree's leaf_size)
+    this.setRestPoses(1);
+  }
+
+  // Identity poses for `nodes` node points (the grown shape).
+  setRestPoses(nodes) {
+    const rest = new Float32Array(Math.max(1, nodes) * 16);
+    for (let i = 0; i < rest.length; i += 16) {
+      rest[i] = 1;
+      rest[i + 5] = 1;
+      rest[i + 10] = 1;
+    }
+    this.setPoses(rest);
+    this.swaying = false;
+  }
+
+  // poses: Float32Array, 16 per node point (R columns with M in w, then T): the worker's 'pose'.
+  setPoses(poses, wind = 0, time = 0) {
+    const gl = this.gl;
+    const nodes = Math.floor(poses.length / 16);
+    const rows = Math.max(1, Math.ceil((nodes * POSE_TEXELS) / POSE_ROW));
+    const padded = new Float32Array(rows * POSE_ROW * 4);
+    padded.set(poses.subarray(0, nodes * 16));
+    gl.bindTexture(gl.TEXTURE_2D, this.poseTexture);
+    if (this.poseRows !== rows) {
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, POSE_ROW, rows, 0, gl.RGBA, gl.FLOAT, padded);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+      this.poseRows = rows;
+    } else {
+      gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, POSE_ROW, rows, gl.RGBA, gl.FLOAT, padded);
+    }
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    this.poseNodes = nodes;
+    this.wind = Number(wind) || 0;
+    this.swayTime = Number(time) || 0;
+    this.swaying = true;
   }
 
   // The light model's sun (the core's convention): elevation and azimuth in degrees, y up, azimuth
@@ -71,12 +118,18 @@ export class Renderer {
   }
 
   async init(shaderBase = new URL('../shaders/', import.meta.url).href) {
-    const [treeVert, treeFrag, groundVert, groundFrag, pickVert, pickFrag] = await Promise.all(
-      ['tree.vert', 'tree.frag', 'ground.vert', 'ground.frag', 'pick.vert', 'pick.frag']
-        .map((f) => fetchText(new URL(f, shaderBase).href)));
+    const names = ['tree.vert', 'tree.frag', 'ground.vert', 'ground.frag', 'pick.vert', 'pick.frag', 'skin.glsl',
+      'atlas.vert', 'card.vert', 'card.frag', 'line.vert', 'line.frag'];
+    const text = Object.fromEntries(await Promise.all(
+      names.map(async (f) => [f, await fetchText(new URL(f, shaderBase).href)])));
+    const source = (name) => text[name].replace('#include "skin.glsl"', text['skin.glsl']);
     const gl = this.gl;
-    this.treeProgram = link(gl, treeVert, treeFrag, 'tree');
-    this.pickProgram = link(gl, pickVert, pickFrag, 'pick');
+    this.treeProgram = link(gl, source('tree.vert'), source('tree.frag'), 'tree');
+    this.pickProgram = link(gl, source('pick.vert'), source('pick.frag'), 'pick');
+    this.atlasProgram = link(gl, source('atlas.vert'), source('tree.frag'), 'atlas');
+    this.cardProgram = link(gl, source('card.vert'), source('card.frag'), 'card');
+    this.lineProgram = link(gl, source('line.vert'), source('line.frag'), 'line');
+    const groundVert = source('ground.vert'), groundFrag = source('ground.frag');
     this.selected = NONE;
     this.groundProgram = link(gl, groundVert, groundFrag, 'ground');
     this.groundVao = gl.createVertexArray();
@@ -89,10 +142,14 @@ export class Renderer {
     gl.bindVertexArray(null);
   }
 
-  // mesh: {bark|leaves|flowers: {positions, normals, indices}} as ArrayBuffers (bark also has
-  // branchIds: Uint32 per vertex); bounds in metres.
-  setTree(mesh, bounds) {
+  // mesh: {bark|leaves|flowers: {positions, normals, indices, joints, weights}} as ArrayBuffers
+  // (bark also has branchIds: Uint32 per vertex; leaves uvs); bounds in metres; swayNodes: node
+  // points of the sway skin (poses start at rest); hybrid: the worker's card-atlas geometry when the
+  // state's render_mode is 1 (then render() draws the draw list of setDrawList), else null.
+  setTree(mesh, bounds, swayNodes = 0, hybrid = null) {
     const gl = this.gl;
+    this.setRestPoses(swayNodes);
+    this.#setHybrid(hybrid);
     for (const part of Object.values(this.parts)) {
       gl.deleteVertexArray(part.vao);
       part.buffers.forEach((b) => gl.deleteBuffer(b));
@@ -115,6 +172,29 @@ export class Renderer {
       };
       attribute(0, data.positions);
       attribute(1, data.normals);
+      // Sway skin: node point (uint) and eq. 3.15 weight per vertex; uv for the leaf flutter.
+      const vertices = data.positions.byteLength / 12;
+      if (data.joints && data.joints.byteLength === vertices * 4) {
+        const joints = gl.createBuffer();
+        gl.bindBuffer(gl.ARRAY_BUFFER, joints);
+        gl.bufferData(gl.ARRAY_BUFFER, data.joints, gl.STATIC_DRAW);
+        gl.enableVertexAttribArray(4);
+        gl.vertexAttribIPointer(4, 1, gl.UNSIGNED_INT, 0, 0);
+        const weights = gl.createBuffer();
+        gl.bindBuffer(gl.ARRAY_BUFFER, weights);
+        gl.bufferData(gl.ARRAY_BUFFER, data.weights, gl.STATIC_DRAW);
+        gl.enableVertexAttribArray(5);
+        gl.vertexAttribPointer(5, 1, gl.FLOAT, false, 0, 0);
+        buffers.push(joints, weights);
+      }
+      if (data.uvs && data.uvs.byteLength === vertices * 8) {
+        const uvs = gl.createBuffer();
+        gl.bindBuffer(gl.ARRAY_BUFFER, uvs);
+        gl.bufferData(gl.ARRAY_BUFFER, data.uvs, gl.STATIC_DRAW);
+        gl.enableVertexAttribArray(6);
+        gl.vertexAttribPointer(6, 2, gl.FLOAT, false, 0, 0);
+        buffers.push(uvs);
+      }
       if (data.branchIds && data.branchIds.byteLength === data.positions.byteLength / 3) {
         const buffer = gl.createBuffer();
         gl.bindBuffer(gl.ARRAY_BUFFER, buffer);
@@ -147,6 +227,194 @@ export class Renderer {
     this.crownHeight = Math.max(0, 0.6 * max[1]);
     this.shadowRadius = Math.max(0.3, 0.5 * Math.max(max[0] - min[0], max[2] - min[2]));
     this.extent = Math.max(6, 4 * Math.max(max[1] - min[1], this.shadowRadius * 2));
+  }
+
+  // Hybrid mode (thesis 4.2): paints the card atlas once per tree from the worker's clip-space
+  // triangles (group representatives and leaf clusters, each projected onto its tile), lit by the
+  // sun like the full view, transparent elsewhere; mipmapped for distant cards.
+  #setHybrid(hybrid) {
+    const gl = this.gl;
+    this.hybrid = null;
+    this.#deleteDrawList();
+    if (!hybrid) return;
+    const size = hybrid.atlasSize;
+    if (!this.atlas || this.atlas.size !== size) {
+      if (this.atlas) {
+        gl.deleteTexture(this.atlas.texture);
+        gl.deleteFramebuffer(this.atlas.fb);
+        gl.deleteRenderbuffer(this.atlas.depth);
+      }
+      const texture = gl.createTexture();
+      gl.bindTexture(gl.TEXTURE_2D, texture);
+      gl.texStorage2D(gl.TEXTURE_2D, Math.floor(Math.log2(size)) + 1, gl.RGBA8, size, size);
+      const depth = gl.createRenderbuffer();
+      gl.bindRenderbuffer(gl.RENDERBUFFER, depth);
+      gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, size, size);
+      const fb = gl.createFramebuffer();
+      gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+      gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
+      gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depth);
+      this.atlas = { texture, depth, fb, size };
+    }
+    gl.bindFramebuffer(gl.FRAMEBUFFER, this.atlas.fb);
+    gl.viewport(0, 0, size, size);
+    gl.clearColor(0, 0, 0, 0);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    gl.enable(gl.DEPTH_TEST);
+    gl.disable(gl.BLEND);
+    const a = this.atlasProgram;
+    gl.useProgram(a.program);
+    gl.uniform3fv(a.uniforms.uLightDirection, this.light);
+    gl.uniform3fv(a.uniforms.uCameraPosition, [0, 0, 10]);
+    gl.uniform1f(a.uniforms.uXray, 0);
+    let triangles = 0;
+    for (const name of ['bark', 'leaves', 'flowers']) {
+      const part = hybrid[name];
+      const count = part.indices.byteLength / 4;
+      if (count === 0) continue;
+      const vao = gl.createVertexArray();
+      gl.bindVertexArray(vao);
+      const buffers = [];
+      for (const [location, bytes] of [[0, part.positions], [1, part.normals]]) {
+        const buffer = gl.createBuffer();
+        gl.bindBuffer(gl.ARRAY_BUFFER, buffer);
+        gl.bufferData(gl.ARRAY_BUFFER, bytes, gl.STATIC_DRAW);
+        gl.enableVertexAttribArray(location);
+        gl.vertexAttribPointer(location, 3, gl.FLOAT, false, 0, 0);
+        buffers.push(buffer);
+      }
+      const index = gl.createBuffer();
+      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, index);
+      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, part.indices, gl.STATIC_DRAW);
+      buffers.push(index);
+      const look = PARTS[name];
+      gl.uniform3fv(a.uniforms.uColor, look.color);
+      gl.uniform3fv(a.uniforms.uColorVariation, look.variation);
+      gl.uniform1f(a.uniforms.uDoubleSided, look.doubleSided);
+      gl.uniform1f(a.uniforms.uSpecular, 0);
+      gl.drawElements(gl.TRIANGLES, count, gl.UNSIGNED_INT, 0);
+      triangles += count / 3;
+      gl.bindVertexArray(null);
+      buffers.forEach((b) => gl.deleteBuffer(b));
+      gl.deleteVertexArray(vao);
+    }
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.bindTexture(gl.TEXTURE_2D, this.atlas.texture);
+    gl.generateMipmap(gl.TEXTURE_2D);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    this.hybrid = { atlasSize: size, atlasTriangles: triangles };
+  }
+
+  #deleteDrawList() {
+    const gl = this.gl;
+    if (!this.drawList) return;
+    for (const part of [this.drawList.cards, this.drawList.lines]) {
+      if (!part) continue;
+      gl.deleteVertexArray(part.vao);
+      part.buffers.forEach((b) => gl.deleteBuffer(b));
+    }
+    this.drawList = null;
+  }
+
+  // The worker's 'drawList' for the current view (hybrid mode): cards and line segments.
+  setDrawList(msg) {
+    const gl = this.gl;
+    this.#deleteDrawList();
+    if (!this.hybrid) return;
+    const buffer = (bytes, target = gl.ARRAY_BUFFER) => {
+      const b = gl.createBuffer();
+      gl.bindBuffer(target, b);
+      gl.bufferData(target, bytes, gl.STATIC_DRAW);
+      return b;
+    };
+    const float = (location, b, size, stride = 0, offset = 0, divisor = 0) => {
+      gl.bindBuffer(gl.ARRAY_BUFFER, b);
+      gl.enableVertexAttribArray(location);
+      gl.vertexAttribPointer(location, size, gl.FLOAT, false, stride, offset);
+      gl.vertexAttribDivisor(location, divisor);
+    };
+    const uint = (location, b, size, divisor = 0) => {
+      gl.bindBuffer(gl.ARRAY_BUFFER, b);
+      gl.enableVertexAttribArray(location);
+      gl.vertexAttribIPointer(location, size, gl.UNSIGNED_INT, 0, 0);
+      gl.vertexAttribDivisor(location, divisor);
+    };
+    const list = { stats: msg.stats, cards: null, lines: null };
+    const c = msg.cards;
+    if (c.indices.byteLength > 0) {
+      const vao = gl.createVertexArray();
+      gl.bindVertexArray(vao);
+      const buffers = [buffer(c.positions), buffer(c.uvs), buffer(c.joints), buffer(c.weights)];
+      float(0, buffers[0], 3);
+      float(1, buffers[1], 2);
+      uint(4, buffers[2], 1);
+      float(5, buffers[3], 1);
+      buffers.push(buffer(c.indices, gl.ELEMENT_ARRAY_BUFFER));
+      gl.bindVertexArray(null);
+      list.cards = { vao, buffers, count: c.indices.byteLength / 4 };
+    }
+    const l = msg.lines;
+    const segments = l.widths.byteLength / 4;
+    if (segments > 0) {
+      const vao = gl.createVertexArray();
+      gl.bindVertexArray(vao);
+      const positions = buffer(l.positions);
+      float(0, positions, 3, 24, 0, 1);
+      float(1, positions, 3, 24, 12, 1);
+      const buffers = [positions, buffer(l.colors), buffer(l.widths), buffer(l.joints), buffer(l.weights)];
+      float(2, buffers[1], 3, 0, 0, 1);
+      float(3, buffers[2], 1, 0, 0, 1);
+      uint(4, buffers[3], 2, 1);
+      float(5, buffers[4], 2, 0, 0, 1);
+      gl.bindVertexArray(null);
+      list.lines = { vao, buffers, count: segments };
+    }
+    this.drawList = list;
+  }
+
+  // Cards and lines of the current draw list; returns [triangles, lines, draw calls].
+  #renderHybrid(viewProjection) {
+    const gl = this.gl;
+    let triangles = 0, lines = 0, drawCalls = 0;
+    if (!this.drawList) return [0, 0, 0];
+    const { cards, lines: segs } = this.drawList;
+    if (cards) {
+      const p = this.cardProgram;
+      gl.useProgram(p.program);
+      gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, viewProjection);
+      this.#bindPoses(p);
+      gl.activeTexture(gl.TEXTURE1);
+      gl.bindTexture(gl.TEXTURE_2D, this.atlas.texture);
+      gl.uniform1i(p.uniforms.uAtlas, 1);
+      gl.bindVertexArray(cards.vao);
+      gl.drawElements(gl.TRIANGLES, cards.count, gl.UNSIGNED_INT, 0);
+      triangles += cards.count / 3;
+      drawCalls += 1;
+      gl.activeTexture(gl.TEXTURE0);
+    }
+    if (segs) {
+      const p = this.lineProgram;
+      gl.useProgram(p.program);
+      gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, viewProjection);
+      gl.uniform2f(p.uniforms.uViewport, this.canvas.width, this.canvas.height);
+      this.#bindPoses(p);
+      gl.bindVertexArray(segs.vao);
+      gl.drawArraysInstanced(gl.TRIANGLE_STRIP, 0, 4, segs.count);
+      lines += segs.count;
+      drawCalls += 1;
+    }
+    gl.bindVertexArray(null);
+    return [triangles, lines, drawCalls];
+  }
+
+  // The camera the worker needs for the hybrid selection (eq. 4.1) at the canvas's pixel size.
+  viewFor(camera) {
+    this.resize();
+    return { eye: camera.position(), target: [...camera.target], fovY: camera.fov, width: this.canvas.width, height: this.canvas.height };
   }
 
   resize() {
@@ -190,12 +458,20 @@ export class Renderer {
     drawCalls += 1;
     gl.disable(gl.POLYGON_OFFSET_FILL);
 
+    let lines = 0;
+    if (this.hybrid) {
+      const [tris, segs, calls] = this.#renderHybrid(viewProjection);
+      this.lastFrame = { triangles: triangles + tris, lines: segs, drawCalls: drawCalls + calls, cpuMs: performance.now() - start, mode: 'hybrid' };
+      return this.lastFrame;
+    }
     const t = this.treeProgram;
     gl.useProgram(t.program);
     gl.uniformMatrix4fv(t.uniforms.uViewProjection, false, viewProjection);
     gl.uniform3fv(t.uniforms.uLightDirection, this.light);
     gl.uniform3fv(t.uniforms.uCameraPosition, camera.position());
+    this.#bindPoses(t);
     gl.vertexAttrib1f(3, 0);  // no highlight on parts without branch ids
+    gl.vertexAttrib2f(6, 0, 0);  // no flutter on parts without uvs
     for (const [name, part] of Object.entries(this.parts)) {
       const look = PARTS[name];
       gl.uniform3fv(t.uniforms.uColor, look.color);
@@ -203,6 +479,8 @@ export class Renderer {
       gl.uniform1f(t.uniforms.uDoubleSided, look.doubleSided);
       gl.uniform1f(t.uniforms.uSpecular, look.specular);
       gl.uniform1f(t.uniforms.uXray, 0);
+      gl.uniform1f(t.uniforms.uFlutter, name === 'leaves' ? this.#flutter() : 0);
+      gl.uniform1f(t.uniforms.uLeafLength, this.leafLength);
       gl.bindVertexArray(part.vao);
       gl.drawElements(gl.TRIANGLES, part.count, gl.UNSIGNED_INT, 0);
       triangles += part.count / 3;
@@ -213,6 +491,7 @@ export class Renderer {
       gl.uniform1f(t.uniforms.uXray, 1);
       gl.uniform3fv(t.uniforms.uColor, PARTS.bark.color);
       gl.uniform1f(t.uniforms.uDoubleSided, 0);
+      gl.uniform1f(t.uniforms.uFlutter, 0);
       gl.disable(gl.DEPTH_TEST);
       gl.enable(gl.BLEND);
       gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
@@ -226,8 +505,23 @@ export class Renderer {
     gl.bindVertexArray(null);
     // What this frame drew (from the index counts drawn) and the CPU time of this call; GPU time is
     // not measured (no timer queries on SwiftShader).
-    this.lastFrame = { triangles, drawCalls, cpuMs: performance.now() - start };
+    this.lastFrame = { triangles, lines, drawCalls, cpuMs: performance.now() - start, mode: 'full' };
     return this.lastFrame;
+  }
+
+  // The pose texture on unit 0 for a program with uPoses (and uTime for the flutter).
+  #bindPoses(program) {
+    const gl = this.gl;
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, this.poseTexture);
+    gl.uniform1i(program.uniforms.uPoses, 0);
+    if (program.uniforms.uTime) gl.uniform1f(program.uniforms.uTime, this.swayTime);
+  }
+
+  // Leaf flutter amplitude (fraction of the leaf length): grows with the wind, none at rest.
+  #flutter() {
+    if (!this.swaying) return 0;
+    return 0.35 * Math.min(1, this.wind / 12);
   }
 
   // Highlights one branch (id) and, fainter, every branch growing from it (what a cut removes);
@@ -289,6 +583,7 @@ export class Renderer {
     const p = this.pickProgram;
     gl.useProgram(p.program);
     gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, camera.viewProjection(w / h));
+    this.#bindPoses(p);
     gl.bindVertexArray(bark.vao);
     gl.drawElements(gl.TRIANGLES, bark.count, gl.UNSIGNED_INT, 0);
     gl.bindVertexArray(null);

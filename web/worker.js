@@ -10,6 +10,23 @@
 //                                               out {type:'progress', id, client, year, years} (after each year)
 //                                               out {type:'tree', id, client, stats, mesh}     (ArrayBuffers transferred;
 //                                                   mesh.bark also has branchIds per vertex and branchParents per branch)
+//         every part also has joints (Uint32) and weights (Float32) per vertex: the sway skin of
+//         core/sway/skin.h; leaves have uvs; the message has swayNodes (node points)
+//   in  {type:'wind', client, play}          starts (play: true, from rest) or stops the sway of the
+//                                            client's last tree, with the wind of its state
+//                                            -> out {type:'pose', client, time, wind, poses}  (Float32
+//                                               ArrayBuffer transferred: 16 floats per node point),
+//                                               one at a time: the next is sent after
+//   in  {type:'poseDone', client}            the client has drawn the last pose.
+//                                               The simulation follows the wall clock (steps of dt,
+//                                               at most 8 per tick) and loops at the wind's duration.
+//         with render_mode 1 the tree message also has hybrid: {atlasSize, bark|leaves|flowers:
+//         {positions, normals, indices}}: clip-space triangles that paint the card atlas (thesis 4.2.1)
+//   in  {type:'view', client, camera:{eye, target, fovY, width, height}}   (hybrid mode, after a tree)
+//                                            -> out {type:'drawList', client, stats, cards:{positions,
+//                                               uvs, indices, joints, weights}, lines:{positions,
+//                                               colors, widths, joints, weights}} (transferred): eq. 4.1
+//                                               selection with hysteresis against the client's last view
 //   in  {type:'export', id, client, format:'glb'|'json'}   (the client's last finished tree)
 //                                            -> out {type:'export', id, client, format, bytes} (ArrayBuffer transferred)
 //   any failure                              -> out {type:'error', id, client, message}
@@ -50,14 +67,108 @@ function takeMesh(session, transfer) {
     const positions = copyView(session[`${name}Positions`](), Float32Array);
     const normals = copyView(session[`${name}Normals`](), Float32Array);
     const indices = copyView(session[`${name}Indices`](), Uint32Array);
-    transfer.push(positions, normals, indices);
-    return { positions, normals, indices };
+    const joints = copyView(session[`${name}Joints`](), Uint32Array);
+    const weights = copyView(session[`${name}Weights`](), Float32Array);
+    transfer.push(positions, normals, indices, joints, weights);
+    return { positions, normals, indices, joints, weights };
   };
+  const leaves = part('leaves');
+  leaves.uvs = copyView(session.leavesUvs(), Float32Array);
+  transfer.push(leaves.uvs);
   const bark = part('bark');
   bark.branchIds = copyView(session.barkBranchIds(), Uint32Array);
   bark.branchParents = copyView(session.branchParents(), Int32Array);
   transfer.push(bark.branchIds, bark.branchParents);
-  return { bark, leaves: part('leaves'), flowers: part('flowers') };
+  return { bark, leaves, flowers: part('flowers') };
+}
+
+// ---- Wind: one sway loop per client, following the wall clock ----
+const sways = new Map();  // client -> {session, start, steps, waiting, timer}
+
+function stopWind(client) {
+  const sway = sways.get(client);
+  if (!sway) return;
+  clearTimeout(sway.timer);
+  sways.delete(client);
+}
+
+function startWind(client) {
+  stopWind(client);
+  const session = finished.get(client);
+  if (!session) return;
+  const error = session.swayStart();
+  if (error) {
+    postMessage({ type: 'error', client, message: error });
+    return;
+  }
+  const sway = { session, start: performance.now(), steps: 0, waiting: false, timer: 0 };
+  sways.set(client, sway);
+  windTick(client, sway);
+}
+
+function windTick(client, sway) {
+  if (sways.get(client) !== sway) return;
+  const session = sway.session;
+  const dt = session.swayDt();
+  if (!sway.waiting) {
+    const due = Math.floor((performance.now() - sway.start) / (1000 * dt)) - sway.steps;
+    if (due > 0) {
+      let time = session.swayStep(Math.min(due, 8));
+      sway.steps += Math.min(due, 8);
+      if (due > 8) sway.start += (due - 8) * 1000 * dt;  // too slow: let the clock slip, not pile up
+      if (time >= session.swayDuration()) {  // the gust schedule is over: again from rest
+        session.swayStart();
+        sway.start = performance.now();
+        sway.steps = 0;
+        time = 0;
+      }
+      const poses = copyView(session.swayPoses(), Float32Array);
+      sway.waiting = true;
+      postMessage({ type: 'pose', client, time, wind: session.swayWindSpeed(), poses }, [poses]);
+    }
+  }
+  sway.timer = setTimeout(() => windTick(client, sway), 8);
+}
+
+// The card-atlas geometry of a hybrid-mode tree (copied once, transferred).
+function takeAtlas(session, transfer) {
+  const part = (name) => {
+    const positions = copyView(session[`atlas${name}Positions`](), Float32Array);
+    const normals = copyView(session[`atlas${name}Normals`](), Float32Array);
+    const indices = copyView(session[`atlas${name}Indices`](), Uint32Array);
+    transfer.push(positions, normals, indices);
+    return { positions, normals, indices };
+  };
+  return { atlasSize: session.atlasSize(), bark: part('Bark'), leaves: part('Leaves'), flowers: part('Flowers') };
+}
+
+// One view of a hybrid-mode tree: selection, draw list and its sway skin.
+function hybridView(client, camera) {
+  const session = finished.get(client);
+  if (!session || session.renderMode() !== 1) return;
+  const n = (x, d) => (Number.isFinite(Number(x)) ? Number(x) : d);
+  const eye = camera?.eye || [0, 0, 10], target = camera?.target || [0, 0, 0];
+  const stats = JSON.parse(session.hybridView(n(eye[0], 0), n(eye[1], 0), n(eye[2], 10), n(target[0], 0),
+    n(target[1], 0), n(target[2], 0), n(camera?.fovY, Math.PI / 4), Math.round(n(camera?.width, 512)),
+    Math.round(n(camera?.height, 512))));
+  if (stats.error) throw new Error(stats.error);
+  const transfer = [];
+  const take = (name, Type) => {
+    const buffer = copyView(session[name](), Type);
+    transfer.push(buffer);
+    return buffer;
+  };
+  const cards = {
+    positions: take('cardPositions', Float32Array), uvs: take('cardUvs', Float32Array),
+    indices: take('cardIndices', Uint32Array), joints: take('cardJoints', Uint32Array),
+    weights: take('cardWeights', Float32Array),
+  };
+  const lines = {
+    positions: take('linePositions', Float32Array), colors: take('lineColors', Float32Array),
+    widths: take('lineWidths', Float32Array), joints: take('lineJoints', Uint32Array),
+    weights: take('lineWeights', Float32Array),
+  };
+  postMessage({ type: 'drawList', client, stats, cards, lines }, transfer);
 }
 
 async function grow(id, client, state, until) {
@@ -93,7 +204,17 @@ async function grow(id, client, state, until) {
     const stats = JSON.parse(session.statsJson());
     const transfer = [];
     const mesh = takeMesh(session, transfer);
-    postMessage({ type: 'tree', id, client, stats, mesh }, transfer);
+    let hybrid = null;
+    if (session.renderMode() === 1) {
+      const error = session.buildHybrid();
+      if (error) {
+        postMessage({ type: 'error', id, client, message: error });
+        return;
+      }
+      hybrid = takeAtlas(session, transfer);
+    }
+    postMessage({ type: 'tree', id, client, stats, mesh, hybrid, swayNodes: session.swayNodes() }, transfer);
+    stopWind(client);  // the client restarts the wind on the new tree if it is playing
     finished.get(client)?.delete();
     finished.set(client, session);
     keep = true;
@@ -142,6 +263,14 @@ self.onmessage = async (event) => {
     } else if (msg.type === 'update') {
       latest.set(client, msg.id);
       await grow(msg.id, client, msg.state, msg.until);
+    } else if (msg.type === 'wind') {
+      if (msg.play) startWind(client); else stopWind(client);
+    } else if (msg.type === 'view') {
+      await loadModule();
+      hybridView(client, msg.camera);
+    } else if (msg.type === 'poseDone') {
+      const sway = sways.get(client);
+      if (sway) sway.waiting = false;
     } else if (msg.type === 'export') {
       await loadModule();
       exportTree(msg.id, client, msg.format);

@@ -183,6 +183,18 @@ const std::array<ParamSpec, kParamCount> kTable = {{
      "Period T of the travelling gust wave at a fixed point (with wind_variation > 0)."},
     {P::kSwayDuration, "duration", "", "s", 12, 0, 600, false, "wind",
      "Simulated time of a sway run."},
+    {P::kRenderMode, "render_mode", "", "", 0, 0, 1, true, "render",
+     "0: full polygons (generalized cylinders, leaf quads; what glTF export writes); 1: hybrid "
+     "(thesis ch. 4: thick branches and leaves as texture cards, thin twigs as lines)."},
+    {P::kLineThreshold, "line_threshold", "", "px", 4, 0.1, 1000, false, "render",
+     "Hybrid mode: a branch whose on-screen width D_i (eq. 4.1) is below this is drawn as a line, "
+     "above it as a card (with hysteresis, so nothing pops while the view moves)."},
+    {P::kCardPlanes, "card_planes", "", "", 2, 2, 8, true, "render",
+     "Hybrid mode: card planes per branch, rotated about the branch axis b_i; the plane facing the "
+     "viewer is drawn (thesis 4.2.1 uses at least 2)."},
+    {P::kLeafClusterCards, "leaf_cluster_cards", "", "", 1, 0, 1, true, "render",
+     "Hybrid mode: 1 merges the leaves of nearby branches into leaf-cluster cards (thesis 5.2); "
+     "0 draws leaves on their branch's card (thesis 4.2.1)."},
 }};
 
 bool CheckTableOrder() {

@@ -97,6 +97,11 @@ enum class ParamId : int {
   kWindWavelength,
   kWindPeriod,
   kSwayDuration,
+  // rendering (thesis chapter 4, docs/rendering-model.md)
+  kRenderMode,        // 0: full polygons, 1: hybrid cards + lines
+  kLineThreshold,     // eq. 4.1 threshold on D_i, px
+  kCardPlanes,        // card planes per branch
+  kLeafClusterCards,  // 1: leaf-cluster cards (thesis 5.2), 0: leaves on branch cards (4.2.1)
   kCount
 };
 

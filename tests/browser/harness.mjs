@@ -47,3 +47,43 @@ export function launchChromium() {
       '--disable-sync'],
   });
 }
+
+// Keeps a copy of a canvas's pixels in the page under `name` (selector as in canvasPixels:
+// '#id' or 'host >>> canvas' for a shadow root) and returns the centroid (x in [0, 1]) and share of
+// the dark pixels (luma < 100: bark, leaves, the ground's shadow; not the sky or the ground).
+export async function snapshotCanvas(page, name, selector = '#view') {
+  return page.evaluate(([key, sel]) => {
+    const [host, inner] = sel.split(' >>> ');
+    const src = inner ? document.querySelector(host).shadowRoot.querySelector(inner) : document.querySelector(host);
+    const c = document.createElement('canvas');
+    c.width = src.width;
+    c.height = src.height;
+    const ctx = c.getContext('2d', { willReadFrequently: true });
+    ctx.drawImage(src, 0, 0);
+    const image = ctx.getImageData(0, 0, c.width, c.height);
+    (window.__snapshots ||= {})[key] = image;
+    const d = image.data;
+    let sx = 0, n = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      if (0.299 * d[i] + 0.587 * d[i + 1] + 0.114 * d[i + 2] < 100) {
+        sx += ((i / 4) % c.width) / c.width;
+        ++n;
+      }
+    }
+    return { centroidX: n ? sx / n : 0, share: n / (d.length / 4) };
+  }, [name, selector]);
+}
+
+// Share of pixels whose colour differs by more than `tolerance` (sum over RGB) between two
+// snapshots taken with snapshotCanvas.
+export async function snapshotDifference(page, a, b, tolerance = 0) {
+  return page.evaluate(([ka, kb, tol]) => {
+    const x = window.__snapshots[ka].data, y = window.__snapshots[kb].data;
+    if (x.length !== y.length) return 1;
+    let n = 0;
+    for (let i = 0; i < x.length; i += 4) {
+      if (Math.abs(x[i] - y[i]) + Math.abs(x[i + 1] - y[i + 1]) + Math.abs(x[i + 2] - y[i + 2]) > tol) ++n;
+    }
+    return n / (x.length / 4);
+  }, [a, b, tolerance]);
+}

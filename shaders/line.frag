@@ -1,0 +1,8 @@
+#version 300 es
+// Hybrid mode lines: the eq. 4.2 colour (same output curve as tree.frag).
+precision highp float;
+
+in vec3 vColor;
+out vec4 outColor;
+
+void main() { outColor = vec4(pow(vColor, vec3(1.0 / 1.1)), 1.0); }
