@@ -3,19 +3,19 @@
 // Shaders (GLSL ES 3.00) are fetched at runtime from /shaders/; `#include "skin.glsl"` in a shader
 // is replaced by that file (the sway skinning shared by every vertex shader).
 
-const BACKGROUND = [0.86, 0.90, 0.94];
+export const BACKGROUND = [0.86, 0.90, 0.94];
 const NONE = 0xffffffff;  // "no branch" for the branch-id attribute and the selection
 // Sway poses (core/sway/skin.h): 16 floats = 4 RGBA32F texels per node point, rows of 1024 texels.
 const POSE_TEXELS = 4;
 const POSE_ROW = 1024;
 
-const PARTS = {
+export const PARTS = {
   bark: { color: [0.36, 0.25, 0.18], variation: [0.04, 0.03, 0.02], doubleSided: 0, specular: 0.03 },
   leaves: { color: [0.30, 0.55, 0.20], variation: [0.10, 0.14, 0.06], doubleSided: 1, specular: 0.05 },
   flowers: { color: [0.98, 0.74, 0.84], variation: [0.02, 0.08, 0.06], doubleSided: 1, specular: 0.08 },
 };
 
-async function fetchText(url) {
+export async function fetchText(url) {
   const response = await fetch(url);
   if (!response.ok) throw new Error(`cannot load ${url} (${response.status})`);
   return response.text();
@@ -33,7 +33,7 @@ function compile(gl, type, source, name) {
   return shader;
 }
 
-function link(gl, vertexSource, fragmentSource, name) {
+export function link(gl, vertexSource, fragmentSource, name) {
   const program = gl.createProgram();
   const vs = compile(gl, gl.VERTEX_SHADER, vertexSource, `${name}.vert`);
   const fs = compile(gl, gl.FRAGMENT_SHADER, fragmentSource, `${name}.frag`);
