@@ -17,6 +17,7 @@
 #include "io/svg_export.h"
 #include "io/url_codec.h"
 #include "math/rotation.h"
+#include "render/atlas_mesh.h"
 #include "render/hybrid.h"
 #include "sway/sway.h"
 #include "tree/growth.h"
@@ -389,11 +390,13 @@ void AddRenderStatsOptions(CLI::App* cmd, RenderStatsOptions* o) {
   cmd->add_option("--fov", o->fov_deg, "Vertical field of view, degrees, 1..170 (default 45)");
   cmd->add_option("--mode", o->mode, "hybrid (thesis 4.2) or full (every polygon)");
   cmd->add_option("--threshold", o->render.threshold_px,
-                  "Eq. 4.1 card/line threshold, pixels, 0.1..1000 (default 4)");
+                  "Eq. 4.1 card/line threshold, pixels, 0.1..1000 (overrides the line_threshold "
+                  "parameter, default 4)");
   cmd->add_option("--leaf-mode", o->leaf_mode,
-                  "cluster (leaf-cluster cards, thesis 5.2; default) or branch (thesis 4.2.1)");
+                  "cluster (leaf-cluster cards, thesis 5.2) or branch (thesis 4.2.1); overrides "
+                  "the leaf_cluster_cards parameter (default 1: cluster)");
   cmd->add_option("--card-planes", o->render.card_planes,
-                  "Card planes per branch, 2..8 (default 2)");
+                  "Card planes per branch, 2..8 (overrides the card_planes parameter, default 2)");
   cmd->add_option("--line-segments", o->render.line_segments,
                   "Most line segments per line branch, 1..64 (default 1)");
 }
@@ -412,7 +415,6 @@ int RunRenderStats(const GrowOptions& grow_options, RenderStatsOptions o, CLI::A
   if (o.leaf_mode != "cluster" && o.leaf_mode != "branch") {
     throw BadInput{"--leaf-mode: '" + o.leaf_mode + "' must be cluster or branch"};
   }
-  o.render.leaf_mode = o.leaf_mode == "branch" ? LeafMode::kBranchCards : LeafMode::kClusterCards;
   std::string error = CheckRenderOptions(o.render);
   if (!error.empty()) {
     std::string field = error.substr(0, error.find(':'));
@@ -453,6 +455,17 @@ int RunRenderStats(const GrowOptions& grow_options, RenderStatsOptions o, CLI::A
                             static_cast<float>(xyz[2]));
   }
   GrowRequest request = ResolveGrowRequest(grow_options, cmd);
+  // The render rows of the parameter table (--set, --params, --url) give the options; the
+  // --threshold, --leaf-mode and --card-planes flags override them.
+  RenderOptions render = RenderOptionsFromParams(request.params);
+  render.line_segments = o.render.line_segments;
+  if (cmd->count("--threshold")) render.threshold_px = o.render.threshold_px;
+  if (cmd->count("--card-planes")) render.card_planes = o.render.card_planes;
+  if (cmd->count("--leaf-mode")) {
+    render.leaf_mode = o.leaf_mode == "branch" ? LeafMode::kBranchCards : LeafMode::kClusterCards;
+  }
+  o.render = render;
+  o.leaf_mode = render.leaf_mode == LeafMode::kBranchCards ? "branch" : "cluster";
   auto start = std::chrono::steady_clock::now();
   Tree tree = GrowTree(request);
   TreeMesh mesh = BuildTreeMesh(tree);

@@ -220,6 +220,30 @@ TEST(CliRenderStats, PrintsOneJsonObjectWithTheTable41Keys) {
             j["branch_polygons"].get<int>());
 }
 
+TEST(CliRenderStats, RenderRowsOfTheParameterTableSetTheOptions) {
+  auto run = [](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"tree", "render-stats", "--preset", "sakura", "--years", "6"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    Result r = RunNiwa(args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  };
+  nlohmann::json plain = run({});
+  nlohmann::json by_set = run({"--set", "line_threshold=12"});
+  nlohmann::json by_flag = run({"--threshold", "12"});
+  nlohmann::json by_url = run({"--url", "preset=sakura&years=6&line_threshold=12"});
+  EXPECT_EQ(by_set["threshold"], 12.0);
+  EXPECT_EQ(by_set["lines"], by_flag["lines"]);
+  EXPECT_EQ(by_url["lines"], by_flag["lines"]);
+  EXPECT_GT(by_set["lines"].get<int>(), plain["lines"].get<int>());  // fewer cards
+  // The flag wins over the parameter.
+  EXPECT_EQ(run({"--set", "line_threshold=12", "--threshold", "4"})["lines"], plain["lines"]);
+  nlohmann::json branch_cards = run({"--set", "leaf_cluster_cards=0"});
+  EXPECT_EQ(branch_cards["leaf_mode"], "branch");
+  EXPECT_EQ(branch_cards["leaf_clusters"], 0);
+  EXPECT_GT(run({"--set", "card_planes=3"})["textures"].get<int>(), plain["textures"].get<int>());
+}
+
 TEST(CliRenderStats, BadFlagsAreOneLineErrorsWithExitCode2) {
   std::vector<std::string> base = {"tree", "render-stats", "--preset", "binary", "--years", "3"};
   auto run = [&](std::vector<std::string> extra) {
