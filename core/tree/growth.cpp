@@ -29,7 +29,7 @@ glm::vec3 RotateToward(const glm::vec3& v, const glm::vec3& target, const CosSin
   glm::vec3 axis = glm::cross(v, target);
   float length = glm::length(axis);
   if (length < 1e-6f) return v;
-  return glm::normalize(RotateAbout(v, axis / length, turn.c, turn.s));
+  return glm::normalize(RotateAbout(v, Divide(axis, length), turn.c, turn.s));
 }
 
 // Turns 2π·k/count for k = 0..count-1 (bud and leaf positions around a node).
@@ -221,58 +221,87 @@ void Grower::BreakBuds() {
   }
 }
 
-void Grower::LayOutShoot(Branch& shoot, bool bend) {
+void Grower::LayOutShoots(bool bend) {
   const ParamSet& p = tree_.params;
-  bool sympodial = p.GetBool(ParamId::kSympodial);
-  float theta_n = Radians(static_cast<float>(p.Get(ParamId::kThetaN)));
-  // Steps 2-3 of 2.4.3: bending rates from the hormone, eqs. 2.4 and 2.5.
-  float b = 0.0f;
-  glm::vec3 target = kUp;
-  if (bend) {
-    // Fig. 2.16 (d), the thesis's own: the rate follows the hormone; (c): it follows the light L.
-    float b_light = p.GetBool(ParamId::kBLByLight)
-                        ? static_cast<float>(p.Get(ParamId::kBLLow) +
-                                             (p.Get(ParamId::kBLHigh) - p.Get(ParamId::kBLLow)) *
-                                                 static_cast<double>(shoot.light))
-                        : HormoneRamp(p, shoot.hormone, ParamId::kBLLow, ParamId::kBLHigh);
-    float b_gravity = HormoneRamp(p, shoot.hormone, ParamId::kBGLow, ParamId::kBGHigh);
-    glm::vec3 pull = b_light * shoot.light_direction + b_gravity * kUp;  // b_L v_L - b_g v_g
-    b = glm::length(pull);                                               // eq. 2.4
-    if (b > 0.0f) target = pull / b;                                     // eq. 2.5
-  }
-  float cap_branch = Radians(static_cast<float>(p.Get(ParamId::kThetaBmaxB)));
-  float cap_node = Radians(static_cast<float>(p.Get(ParamId::kThetaBmaxN)));
-  glm::vec3 direction = shoot.bud_direction;
-  glm::vec3 azimuth = shoot.azimuth;
-  if (b == 0.0f && !(sympodial && theta_n != 0.0f)) {  // straight: no rotations needed
-    for (std::size_t i = 1; i < shoot.nodes.size(); ++i) {
-      shoot.nodes[i] = shoot.nodes[i - 1] + direction * shoot.internode_length;
-    }
-    return;
-  }
-  for (std::size_t i = 1; i < shoot.nodes.size(); ++i) {
-    if (b > 0.0f) {
-      float difference = AngleBetween(direction, target);  // eqs. 2.6, 2.8
-      float cap = i == 1 ? cap_branch : cap_node;          // eqs. 2.7, 2.9
-      float angle = b * difference;
+  const bool sympodial = p.GetBool(ParamId::kSympodial);
+  const float theta_n = Radians(static_cast<float>(p.Get(ParamId::kThetaN)));
+  const bool zigzag = sympodial && theta_n != 0.0f;
+  const float cap_branch = Radians(static_cast<float>(p.Get(ParamId::kThetaBmaxB)));
+  const float cap_node = Radians(static_cast<float>(p.Get(ParamId::kThetaBmaxN)));
+
+  // Node i of a shoot that bends or zigzags: eqs. 2.6-2.9 and the sympodial turn.
+  auto step = [&](ShootLayout& l, std::size_t i) {
+    if (l.b > 0.0f) {
+      float difference = AngleBetween(l.direction, l.target);  // eqs. 2.6, 2.8
+      float cap = i == 1 ? cap_branch : cap_node;              // eqs. 2.7, 2.9
+      float angle = l.b * difference;
       if (!(cap < angle)) {  // std::min(angle, cap)
         double c, s;
         det::SinCos(angle, &s, &c);  // as det::Cosf, det::Sinf, in one call
-        direction =
-            RotateToward(direction, target, CosSin{static_cast<float>(c), static_cast<float>(s)});
+        l.direction = RotateToward(l.direction, l.target,
+                                   CosSin{static_cast<float>(c), static_cast<float>(s)});
       } else {
-        direction = RotateToward(direction, target, i == 1 ? cap_branch_ : cap_node_);
+        l.direction = RotateToward(l.direction, l.target, i == 1 ? cap_branch_ : cap_node_);
       }
     }
-    if (sympodial && theta_n != 0.0f) {
+    if (zigzag) {
       // Sympodial zigzag: each node turns θ_N away from the side its bud sits on (steps 5, 8).
-      glm::vec3 side =
-          RotateAbout(Orthonormalize(azimuth, direction), direction, turn_cos_[i], turn_sin_[i]);
-      direction = RotateToward(direction, side, sympodial_turn_);
+      glm::vec3 side = RotateAbout(Orthonormalize(l.azimuth, l.direction), l.direction,
+                                   turn_cos_[i], turn_sin_[i]);
+      l.direction = RotateToward(l.direction, side, sympodial_turn_);
     }
-    azimuth = Orthonormalize(azimuth, direction);
-    shoot.nodes[i] = shoot.nodes[i - 1] + direction * shoot.internode_length;
+    l.azimuth = Orthonormalize(l.azimuth, l.direction);
+    Branch& shoot = *l.shoot;
+    shoot.nodes[i] = shoot.nodes[i - 1] + l.direction * shoot.internode_length;
+  };
+
+  // Every node depends on the one before it through a long chain of square roots and divisions,
+  // so shoots are laid out kLanes at a time, node i of each in turn: the processor overlaps the
+  // independent chains. Each shoot gets exactly the arithmetic it would get alone.
+  constexpr std::size_t kLanes = 4;
+  ShootLayout lanes[kLanes];
+  std::size_t used = 0, longest = 0;
+  auto flush = [&]() {
+    for (std::size_t i = 1; i < longest; ++i) {
+      for (std::size_t k = 0; k < used; ++k) {
+        if (i < lanes[k].shoot->nodes.size()) step(lanes[k], i);
+      }
+    }
+    used = 0;
+    longest = 0;
+  };
+
+  for (int id : new_shoots_) {
+    Branch& shoot = tree_.branches[static_cast<std::size_t>(id)];
+    if (!shoot.alive) continue;
+    // Steps 2-3 of 2.4.3: bending rates from the hormone, eqs. 2.4 and 2.5.
+    float b = 0.0f;
+    glm::vec3 target = kUp;
+    if (bend) {
+      // Fig. 2.16 (d), the thesis's own: the rate follows the hormone; (c): it follows the light
+      // L.
+      float b_light = p.GetBool(ParamId::kBLByLight)
+                          ? static_cast<float>(p.Get(ParamId::kBLLow) +
+                                               (p.Get(ParamId::kBLHigh) - p.Get(ParamId::kBLLow)) *
+                                                   static_cast<double>(shoot.light))
+                          : HormoneRamp(p, shoot.hormone, ParamId::kBLLow, ParamId::kBLHigh);
+      float b_gravity = HormoneRamp(p, shoot.hormone, ParamId::kBGLow, ParamId::kBGHigh);
+      glm::vec3 pull = b_light * shoot.light_direction + b_gravity * kUp;  // b_L v_L - b_g v_g
+      b = glm::length(pull);                                               // eq. 2.4
+      if (b > 0.0f) target = pull / b;                                     // eq. 2.5
+    }
+    if (b == 0.0f && !zigzag) {  // straight: no rotations needed
+      const glm::vec3 direction = shoot.bud_direction;
+      for (std::size_t i = 1; i < shoot.nodes.size(); ++i) {
+        shoot.nodes[i] = shoot.nodes[i - 1] + direction * shoot.internode_length;
+      }
+      continue;
+    }
+    lanes[used++] = {&shoot, shoot.bud_direction, shoot.azimuth, target, b};
+    longest = std::max(longest, shoot.nodes.size());
+    if (used == kLanes) flush();
   }
+  flush();
 }
 
 void Grower::ComputeLight() {
@@ -457,7 +486,7 @@ void Grower::GrowYear() {
   Clock::time_point start = Clock::now();
   ++tree_.years;
   BreakBuds();
-  for (int id : new_shoots_) LayOutShoot(tree_.branches[static_cast<std::size_t>(id)], false);
+  LayOutShoots(false);
   double branching = MsSince(start);
 
   Clock::time_point light_start = Clock::now();
@@ -469,10 +498,7 @@ void Grower::GrowYear() {
   timings_.ms_hormone += MsSince(hormone_start);
 
   Clock::time_point shape_start = Clock::now();
-  for (int id : new_shoots_) {
-    Branch& s = tree_.branches[static_cast<std::size_t>(id)];
-    if (s.alive) LayOutShoot(s, true);
-  }
+  LayOutShoots(true);
   SetNextYearBuds();
   ThickenBranches();
   ApplyPrunes();

@@ -32,6 +32,14 @@ struct CosSin {
   float c = 1.0f, s = 0.0f;
 };
 
+// A shoot being laid out node by node (step 4 of 2.4.3): its current direction, phyllotaxis
+// azimuth, bending target v (eq. 2.5) and rate b (eq. 2.4).
+struct ShootLayout {
+  Branch* shoot = nullptr;
+  glm::vec3 direction, azimuth, target;
+  float b = 0.0f;
+};
+
 // Grows a tree one year at a time, so callers can show every age and report progress.
 class Grower {
  public:
@@ -44,12 +52,13 @@ class Grower {
   const GrowthTimings& timings() const { return timings_; }
 
  private:
-  void BreakBuds();                            // step 1
-  void LayOutShoot(Branch& shoot, bool bend);  // step 4 geometry (also straight, before light)
-  void ComputeLight();                         // step 2
-  void ComputeHormone();                       // step 3
-  void ThickenBranches();                      // 2.4.4
-  void SetNextYearBuds();                      // step 5, including dormancy break (2.4.6)
+  void BreakBuds();  // step 1
+  // Step 4 geometry of this year's living shoots (also straight, before light).
+  void LayOutShoots(bool bend);
+  void ComputeLight();     // step 2
+  void ComputeHormone();   // step 3
+  void ThickenBranches();  // 2.4.4
+  void SetNextYearBuds();  // step 5, including dormancy break (2.4.6)
   void ApplyPrunes();
   void Kill(int branch_id);
 
