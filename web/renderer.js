@@ -8,6 +8,8 @@ const NONE = 0xffffffff;  // "no branch" for the branch-id attribute and the sel
 // Sway poses (core/sway/skin.h): 16 floats = 4 RGBA32F texels per node point, rows of 1024 texels.
 const POSE_TEXELS = 4;
 const POSE_ROW = 1024;
+// Hybrid line segments as data textures (shaders/line.vert): rows of 1024 texels.
+const DATA_ROW = 1024;
 
 export const PARTS = {
   bark: { color: [0.36, 0.25, 0.18], variation: [0.04, 0.03, 0.02], doubleSided: 0, specular: 0.03 },
@@ -316,8 +318,28 @@ export class Renderer {
       if (!part) continue;
       gl.deleteVertexArray(part.vao);
       part.buffers.forEach((b) => gl.deleteBuffer(b));
+      part.textures?.forEach((t) => gl.deleteTexture(t));
     }
     this.drawList = null;
+  }
+
+  // A texture of `data` (a typed array view of `comps` values per texel) in rows of DATA_ROW texels,
+  // uploaded straight from the array (no padding copy), for texelFetch in a vertex shader.
+  #dataTexture(data, comps, internalFormat, format, type) {
+    const gl = this.gl;
+    const texels = data.length / comps;
+    const rows = Math.floor(texels / DATA_ROW), rest = texels - rows * DATA_ROW;
+    const texture = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, texture);
+    gl.texStorage2D(gl.TEXTURE_2D, 1, internalFormat, DATA_ROW, rows + (rest > 0 ? 1 : 0) || 1);
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+    if (rows > 0) gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, DATA_ROW, rows, format, type, data.subarray(0, rows * DATA_ROW * comps));
+    if (rest > 0) gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, rows, rest, 1, format, type, data.subarray(rows * DATA_ROW * comps));
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    return texture;
   }
 
   // The worker's 'drawList' for the current view (hybrid mode): cards and line segments.
@@ -357,21 +379,20 @@ export class Renderer {
       gl.bindVertexArray(null);
       list.cards = { vao, buffers, count: c.indices.byteLength / 4 };
     }
+    // Lines: the per-segment arrays become data textures read by line.vert with texelFetch, and one
+    // plain draw of 6 vertices per segment expands them (no instancing: SwiftShader, the CPU WebGL
+    // of machines without a GPU, pays a draw's setup per instance).
     const l = msg.lines;
     const segments = l.widths.byteLength / 4;
     if (segments > 0) {
-      const vao = gl.createVertexArray();
-      gl.bindVertexArray(vao);
-      const positions = buffer(l.positions);
-      float(0, positions, 3, 24, 0, 1);
-      float(1, positions, 3, 24, 12, 1);
-      const buffers = [positions, buffer(l.colors), buffer(l.widths), buffer(l.joints), buffer(l.weights)];
-      float(2, buffers[1], 3, 0, 0, 1);
-      float(3, buffers[2], 1, 0, 0, 1);
-      uint(4, buffers[3], 2, 1);
-      float(5, buffers[4], 2, 0, 0, 1);
-      gl.bindVertexArray(null);
-      list.lines = { vao, buffers, count: segments };
+      const textures = [
+        this.#dataTexture(new Float32Array(l.positions), 3, gl.RGB32F, gl.RGB, gl.FLOAT),  // p0, p1
+        this.#dataTexture(new Float32Array(l.colors), 3, gl.RGB32F, gl.RGB, gl.FLOAT),
+        this.#dataTexture(new Float32Array(l.widths), 1, gl.R32F, gl.RED, gl.FLOAT),
+        this.#dataTexture(new Uint32Array(l.joints), 2, gl.RG32UI, gl.RG_INTEGER, gl.UNSIGNED_INT),
+        this.#dataTexture(new Float32Array(l.weights), 2, gl.RG32F, gl.RG, gl.FLOAT),
+      ];
+      list.lines = { vao: gl.createVertexArray(), buffers: [], textures, count: segments };
     }
     this.drawList = list;
   }
@@ -402,13 +423,40 @@ export class Renderer {
       gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, viewProjection);
       gl.uniform2f(p.uniforms.uViewport, this.canvas.width, this.canvas.height);
       this.#bindPoses(p);
+      segs.textures.forEach((texture, i) => {
+        gl.activeTexture(gl.TEXTURE2 + i);
+        gl.bindTexture(gl.TEXTURE_2D, texture);
+      });
+      for (const [i, name] of ['uLinePositions', 'uLineColors', 'uLineWidths', 'uLineJoints', 'uLineWeights'].entries()) {
+        gl.uniform1i(p.uniforms[name], 2 + i);
+      }
+      gl.activeTexture(gl.TEXTURE0);
       gl.bindVertexArray(segs.vao);
-      gl.drawArraysInstanced(gl.TRIANGLE_STRIP, 0, 4, segs.count);
+      gl.drawArrays(gl.TRIANGLES, 0, 6 * segs.count);
       lines += segs.count;
       drawCalls += 1;
     }
     gl.bindVertexArray(null);
     return [triangles, lines, drawCalls];
+  }
+
+  // Frame time with the GPU's work included: draws `frames` frames, each followed by reading one
+  // pixel back (which returns only once the frame is finished), and resolves to the median and the
+  // primitives drawn. One animation frame between draws keeps the page responsive.
+  async timeFrames(camera, frames = 10) {
+    const gl = this.gl;
+    const pixel = new Uint8Array(4);
+    const times = [];
+    let drawn = null;
+    for (let i = 0; i <= frames; ++i) {
+      await new Promise((resolve) => requestAnimationFrame(resolve));
+      const start = performance.now();
+      drawn = this.render(camera);
+      gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+      if (i > 0) times.push(performance.now() - start);  // the first is a warm-up
+    }
+    times.sort((a, b) => a - b);
+    return { ms: times[Math.floor(times.length / 2)], frames, ...drawn };
   }
 
   // The camera the worker needs for the hybrid selection (eq. 4.1) at the canvas's pixel size.
