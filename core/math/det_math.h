@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 
@@ -152,6 +153,13 @@ inline double Acos(double x) {
   return Atan2(std::sqrt((1.0 - x) * (1.0 + x)), x);
 }
 
+// values[i] = Expf(values[i]) for i < n, bit for bit, two at a time with SIMD where there is SIMD
+// (SSE2 natively, simd128 in WASM). Same operations as Exp lane by lane: the floor becomes
+// rounding to an integer by adding and subtracting 1.5·2^52 (exact for |y| < 2^51) and stepping
+// down where that rounded up, Pow2 puts k + 1023 into the exponent field the same way, and the
+// branches become masks. For arguments of Exp's range (finite floats).
+inline void ExpfInPlace(float* values, std::size_t n);
+
 // Float conveniences for the geometry code.
 inline float Expf(float x) { return static_cast<float>(Exp(x)); }
 inline float Logf(float x) { return static_cast<float>(Log(x)); }
@@ -159,6 +167,43 @@ inline float Sinf(float x) { return static_cast<float>(Sin(x)); }
 inline float Cosf(float x) { return static_cast<float>(Cos(x)); }
 inline float Acosf(float x) { return static_cast<float>(Acos(x)); }
 inline float Atan2f(float y, float x) { return static_cast<float>(Atan2(y, x)); }
+
+inline void ExpfInPlace(float* values, std::size_t n) {
+  std::size_t i = 0;
+#if defined(__SSE2__) || defined(__wasm_simd128__)
+  typedef double Double2 __attribute__((vector_size(16)));
+  typedef int64_t Int2 __attribute__((vector_size(16)));
+  const Double2 kRound = {6755399441055744.0, 6755399441055744.0};  // 1.5·2^52
+  const Int2 kOneBits = {0x3FF0000000000000, 0x3FF0000000000000};   // 1.0
+  for (; i + 2 <= n; i += 2) {
+    Double2 x = {static_cast<double>(values[i]), static_cast<double>(values[i + 1])};
+    const Int2 tiny = (Int2)(x < -700.0);  // Exp: 0
+    const Int2 huge = (Int2)(x > 700.0);   // Exp: clamped to 700
+    const Double2 clamp = {700.0, 700.0};
+    x = (Double2)(((Int2)x & ~huge) | ((Int2)clamp & huge));
+    const Double2 y = x / kLn2 + 0.5;
+    const Double2 nearest = (y + kRound) - kRound;
+    const Double2 k = nearest - (Double2)((Int2)(nearest > y) & kOneBits);  // floor(y)
+    const Double2 r = x - k * kLn2;
+    const Double2 r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
+    const Double2 q0 = 0.5 + 0.16666666666666666 * r;
+    const Double2 q1 = 0.041666666666666664 + 0.008333333333333333 * r;
+    const Double2 q2 = 0.001388888888888889 + 0.0001984126984126984 * r;
+    const Double2 q3 = 2.48015873015873e-05 + 2.7557319223985893e-06 * r;
+    const Double2 q4 = 2.755731922398589e-07 + 2.505210838544172e-08 * r;
+    const Double2 q5 = 2.08767569878681e-09 + 1.6059043836821613e-10 * r;
+    const double q6 = 1.1470745597729725e-11;
+    const Double2 p = ((q0 + q1 * r2) + (q2 + q3 * r2) * r4) + ((q4 + q5 * r2) + q6 * r4) * r8;
+    const Double2 sum = 1.0 + r * (1.0 + r * p);
+    const Int2 biased = (Int2)(k + (1023.0 + 6755399441055744.0)) & 0x7FF;  // k + 1023
+    const Double2 scaled = sum * (Double2)(biased << 52);
+    const Double2 out = (Double2)((Int2)scaled & ~tiny);
+    values[i] = static_cast<float>(out[0]);
+    values[i + 1] = static_cast<float>(out[1]);
+  }
+#endif
+  for (; i < n; ++i) values[i] = Expf(values[i]);
+}
 
 }  // namespace det
 }  // namespace niwa

@@ -305,9 +305,11 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
         std::ptrdiff_t c = base + corner_offset[corner];
         sum += at.weight[corner] * (out[c] - 0.5f * sigma[c] * step);
       }
-      transmittance[i * directions + k] = det::Expf(-std::max(0.0f, sum - at.own_depth));
+      // The exponent for now; transmittance = e^exponent for all of them at once below.
+      transmittance[i * directions + k] = -std::max(0.0f, sum - at.own_depth);
     }
   }
+  det::ExpfInPlace(transmittance.data(), transmittance.size());
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     result[i] = Resolve(sky, &transmittance[i * directions]);
   }

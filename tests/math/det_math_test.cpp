@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
 
 namespace niwa {
 namespace {
@@ -65,6 +68,35 @@ TEST(DetMath, SeriesHoldAtTheEdgesOfTheirReducedRanges) {
   }
   for (double x : {-1.0, -0.999999, 0.999999, 1.0}) {
     EXPECT_NEAR(det::Atan2(x, 1.0), std::atan2(x, 1.0), 1e-15) << x;
+  }
+}
+
+}  // namespace
+}  // namespace niwa
+
+namespace niwa {
+namespace {
+
+// The batched exp (SIMD where available) gives Expf's result bit for bit.
+TEST(DetMath, ExpfInPlaceMatchesExpf) {
+  std::vector<float> inputs = {0.0f,       -0.0f,       1e-30f,   -1e-30f, 0.5f,   -0.5f,
+                               0.3465736f, -0.3465736f, 1.0f,     -1.0f,   -88.0f, 88.0f,
+                               -699.9f,    -700.0f,     -700.1f,  -800.0f, 699.9f, 700.0f,
+                               700.1f,     800.0f,      -103.97f, -87.33f, 1e-8f,  -3.0f};
+  uint64_t state = 12345;
+  for (int i = 0; i < 200000; ++i) {  // spread over [-800, 800] and densely over [-20, 0]
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    float u = static_cast<float>(state >> 40) / static_cast<float>(1 << 24);
+    inputs.push_back(i % 2 == 0 ? -800.0f + 1600.0f * u : -20.0f * u);
+  }
+  std::vector<float> batch = inputs;
+  det::ExpfInPlace(batch.data(), batch.size());
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    float expected = det::Expf(inputs[i]);
+    uint32_t a, b;
+    std::memcpy(&a, &batch[i], sizeof a);
+    std::memcpy(&b, &expected, sizeof b);
+    ASSERT_EQ(a, b) << "x = " << inputs[i];
   }
 }
 
