@@ -188,8 +188,9 @@ void Grower::BreakBuds() {
                static_cast<float>(p.Get(ParamId::kHInit)));
     return;
   }
-  std::size_t existing = tree_.branches.size();
-  for (std::size_t id = 0; id < existing; ++id) {
+  // Only the branches with a breaking bud (listed by SetNextYearBuds, in id order) are visited.
+  for (int breaking_id : breaking_) {
+    const std::size_t id = static_cast<std::size_t>(breaking_id);
     if (!tree_.branches[id].alive) continue;
     // Room for this year's shoots and flowers at once, instead of growing the lists one by one.
     std::size_t shoots = 0, flowers = 0;
@@ -380,6 +381,7 @@ void Grower::SetNextYearBuds() {
   float leaf_lift = 0.6f;
 
   NodeFrames f;
+  breaking_.clear();
   for (int id : new_shoots_) {
     Branch& s = tree_.branches[static_cast<std::size_t>(id)];
     if (!s.alive) continue;
@@ -399,6 +401,7 @@ void Grower::SetNextYearBuds() {
             {i, glm::normalize(side + f.direction[static_cast<std::size_t>(i)] * leaf_lift)});
       }
     }
+    bool any_breaking = false;
     auto add_bud = [&](ShootKind kind, int node, glm::vec3 side, const CosSin& angle,
                        float probability, bool flower) {
       glm::vec3 d = f.direction[static_cast<std::size_t>(node)];
@@ -410,6 +413,7 @@ void Grower::SetNextYearBuds() {
       bud.flower = flower;
       bool breaks = flower || rng_.Bernoulli(probability);
       bud.state = breaks ? BudState::kBreaking : BudState::kDormant;
+      any_breaking |= breaks;
       s.buds.push_back(bud);
     };
     BreakChances chance = BudBreakChances(p, s.hormone, s.dwarf, tree_.years);
@@ -437,7 +441,9 @@ void Grower::SetNextYearBuds() {
         add_bud(ShootKind::kLateral, i, side, psi_l_, p_lateral, s.dwarf && dwarf_flowers);
       }
     }
+    if (any_breaking) breaking_.push_back(id);
   }
+  const std::size_t new_breaking = breaking_.size();
 
   // Dormancy break (2.4.6) on the older branches: by threshold, and by a sudden drop.
   struct Trigger {
@@ -464,8 +470,15 @@ void Grower::SetNextYearBuds() {
         bud.extra_hormone = static_cast<float>(p.Get(trigger->extra));  // Step 3: H_n
         ++broken;
       }
+      if (broken > 0 && (breaking_.size() == new_breaking || breaking_.back() != b.id)) {
+        breaking_.push_back(b.id);
+      }
     }
   }
+  // Both parts are in id order: merged, BreakBuds visits the branches in id order as before.
+  std::inplace_merge(breaking_.begin(),
+                     breaking_.begin() + static_cast<std::ptrdiff_t>(new_breaking),
+                     breaking_.end());
 }
 
 void Grower::ApplyPrunes() {

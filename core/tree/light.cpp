@@ -33,11 +33,12 @@ float ChordLength(const glm::vec3& origin, const glm::vec3& dir, const LeafSpher
 
 // L is the weighted transmitted light; v_L the direction where the received light is strongest
 // (thesis 2.4.3 step 3: "光の強い方向を示す単位ベクトル").
-LightSample Resolve(const Sky& sky, const float* transmittance) {
+// transmittance[k * stride] is the transmittance towards sky direction k.
+LightSample Resolve(const Sky& sky, const float* transmittance, std::size_t stride) {
   float light = 0.0f, strongest = -1.0f;
   glm::vec3 direction(0, 1, 0);
   for (std::size_t k = 0; k < sky.directions.size(); ++k) {
-    float received = sky.weights[k] * transmittance[k];
+    float received = sky.weights[k] * transmittance[k * stride];
     light += received;
     // Strongest received light: the sun when it is not shaded, else the brightest open patch of
     // sky.
@@ -93,7 +94,7 @@ std::vector<LightSample> ComputeLightReference(const std::vector<LeafSphere>& sp
       }
       transmittance[k] = det::Expf(-depth);
     }
-    result[i] = Resolve(sky, transmittance.data());
+    result[i] = Resolve(sky, transmittance.data(), 1);
   }
   return result;
 }
@@ -245,7 +246,7 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
   depth_buffer[1].clear();
   const std::size_t directions = sky.directions.size();
   std::vector<float>& transmittance = buffers.transmittance;
-  transmittance.resize(spheres.size() * directions);
+  transmittance.resize(spheres.size() * directions);  // one row of all spheres per direction
   for (std::size_t k = 0; k < directions; ++k) {
     const glm::vec3& d = sky.directions[k];
     const float comp[3] = {d.x, d.y, d.z};
@@ -306,12 +307,12 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
         sum += at.weight[corner] * (out[c] - 0.5f * sigma[c] * step);
       }
       // The exponent for now; transmittance = e^exponent for all of them at once below.
-      transmittance[i * directions + k] = -std::max(0.0f, sum - at.own_depth);
+      transmittance[k * spheres.size() + i] = -std::max(0.0f, sum - at.own_depth);
     }
   }
   det::ExpfInPlace(transmittance.data(), transmittance.size());
   for (std::size_t i = 0; i < spheres.size(); ++i) {
-    result[i] = Resolve(sky, &transmittance[i * directions]);
+    result[i] = Resolve(sky, &transmittance[i], spheres.size());
   }
   return result;
 }
