@@ -4,7 +4,7 @@
 // (rows of 1024 texels) by gl_VertexID, and both ends are skinned to the sway.
 uniform highp sampler2D uLinePositions;  // 2 texels per segment: p0, p1 (metres)
 uniform highp sampler2D uLineColors;     // eq. 4.2
-uniform highp sampler2D uLineWidths;     // pixels
+uniform highp sampler2D uLineWidths;     // D_i, pixels (may be below 1)
 uniform highp usampler2D uLineJoints;    // node points of p0, p1
 uniform highp sampler2D uLineWeights;    // their eq. 3.15 weights
 
@@ -12,6 +12,7 @@ uniform mat4 uViewProjection;
 uniform vec2 uViewport;  // pixels
 
 out vec3 vColor;
+out float vCoverage;  // a line thinner than a pixel is drawn 1 px wide and this opaque
 
 #include "skin.glsl"
 
@@ -26,7 +27,9 @@ void main() {
   vec3 p1 = texelFetch(uLinePositions, texelOf(2 * segment + 1), 0).xyz;
   uvec2 joints = texelFetch(uLineJoints, texelOf(segment), 0).xy;
   vec2 weights = texelFetch(uLineWeights, texelOf(segment), 0).xy;
-  float width = texelFetch(uLineWidths, texelOf(segment), 0).x;
+  float d = texelFetch(uLineWidths, texelOf(segment), 0).x;
+  float width = max(d, 1.0);
+  vCoverage = clamp(d, 0.0, 1.0);
   vec4 c0 = uViewProjection * vec4(skinPosition(joints.x, weights.x, p0), 1.0);
   vec4 c1 = uViewProjection * vec4(skinPosition(joints.y, weights.y, p1), 1.0);
   bool far = corner >= 2;

@@ -432,7 +432,13 @@ export class Renderer {
       }
       gl.activeTexture(gl.TEXTURE0);
       gl.bindVertexArray(segs.vao);
+      // Sub-pixel lines blend by their coverage; they leave the depth buffer to the cards.
+      gl.enable(gl.BLEND);
+      gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
+      gl.depthMask(false);
       gl.drawArrays(gl.TRIANGLES, 0, 6 * segs.count);
+      gl.depthMask(true);
+      gl.disable(gl.BLEND);
       lines += segs.count;
       drawCalls += 1;
     }

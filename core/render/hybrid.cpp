@@ -675,7 +675,9 @@ HybridDrawList BuildDrawList(const Tree& tree, const HybridScene& scene,
       const int internodes = static_cast<int>(branch.nodes.size()) - 1;
       glm::vec3 color = LineColor(shading.branch_color, shading.light_color, f.b, shading.light_dir,
                                   shading.k_d, shading.k_a);  // eq. 4.2
-      float width = std::max(1.0f, selection.screen_width_px[i]);
+      // D_i itself: a line thinner than a pixel is drawn 1 px wide with coverage D_i (the page's
+      // line shader), so that a crown of sub-pixel twigs does not turn into solid wood.
+      float width = selection.screen_width_px[i];
       for (int k = 0; k < segments; ++k) {
         int a = k * internodes / segments, b = (k + 1) * internodes / segments;
         glm::vec3 p = branch.nodes[static_cast<std::size_t>(a)] * scale;

@@ -232,7 +232,7 @@ struct HybridDrawList {
   std::vector<int> card_branch;        // branch id per card, -1 for leaf-cluster cards
   std::vector<float> line_positions;   // 2 endpoints × xyz per segment
   std::vector<float> line_colors;      // rgb per segment (eq. 4.2)
-  std::vector<float> line_widths;      // pixels per segment (eq. 4.1, at least 1)
+  std::vector<float> line_widths;      // D_i in pixels per segment (eq. 4.1; may be below 1)
   std::vector<int> line_branch;        // branch id per segment
   std::vector<int> line_nodes;         // 2 per segment: the branch's node index at each endpoint
 };
