@@ -29,7 +29,11 @@
 //                           hybridView(ex,ey,ez, tx,ty,tz, fovY, width, height) -> table 4.1 JSON
 //                           and the draw list: card{Positions,Uvs,Indices,Joints,Weights}(),
 //                           line{Positions,Colors,Widths,Joints,Weights}() (eq. 4.1 with
-//                           hysteresis against the previous view, eq. 4.2 colours).
+//                           hysteresis against the previous view, eq. 4.2 colours);
+//                           hybridViewSlot(slot, ex,ey,ez, tx,ty,tz, fovY, width, height): the same
+//                           with the hysteresis against the previous view OF THAT SLOT (0..255), so
+//                           one tree can keep several draw lists (the grove page: one per distance
+//                           band); the slots are cleared by buildHybrid().
 //
 // The mesh views (emscripten::typed_memory_view) point into the WASM heap: they stay valid only
 // until the next call that may allocate. The worker copies each one ONCE into a fresh ArrayBuffer
@@ -388,6 +392,7 @@ class GrowSession {
     hybrid_ = BuildHybridScene(grower_->tree(), options);
     atlas_ = BuildAtlasMesh(mesh_, hybrid_);
     has_selection_ = false;
+    slots_.clear();
     return hybrid_.atlas_fits ? "" : "render: the card atlas does not fit; lower card_planes";
   }
   int atlasSize() const { return hybrid_.atlas_size; }
@@ -446,6 +451,20 @@ class GrowSession {
     j["alive_branches"] = alive;
     return j.dump();
   }
+  // hybridView with its own previous selection per slot (the default view keeps its own).
+  std::string hybridViewSlot(int slot, double ex, double ey, double ez, double tx, double ty,
+                             double tz, double fov_y, int width, int height) {
+    if (slot < 0 || slot > 255)
+      return R"({"error":"view: slot must be a whole number in [0, 255]"})";
+    if (slots_.size() <= static_cast<size_t>(slot)) slots_.resize(slot + 1);
+    Slot& s = slots_[slot];
+    std::swap(selection_, s.selection);
+    std::swap(has_selection_, s.has_selection);
+    std::string out = hybridView(ex, ey, ez, tx, ty, tz, fov_y, width, height);
+    std::swap(selection_, s.selection);
+    std::swap(has_selection_, s.has_selection);
+    return out;
+  }
   emscripten::val cardPositions() const { return View(draw_.card_positions); }
   emscripten::val cardUvs() const { return View(draw_.card_uvs); }
   emscripten::val cardIndices() const { return View(draw_.card_indices); }
@@ -483,6 +502,11 @@ class GrowSession {
   bool has_selection_ = false;
   HybridDrawList draw_;
   DrawListSkin draw_skin_;
+  struct Slot {
+    HybridSelection selection;
+    bool has_selection = false;
+  };
+  std::vector<Slot> slots_;  // hybridViewSlot's previous selections
 };
 
 }  // namespace niwa
@@ -544,6 +568,7 @@ EMSCRIPTEN_BINDINGS(niwa) {
       .function("atlasFlowersNormals", &niwa::GrowSession::atlasFlowersNormals)
       .function("atlasFlowersIndices", &niwa::GrowSession::atlasFlowersIndices)
       .function("hybridView", &niwa::GrowSession::hybridView)
+      .function("hybridViewSlot", &niwa::GrowSession::hybridViewSlot)
       .function("cardPositions", &niwa::GrowSession::cardPositions)
       .function("cardUvs", &niwa::GrowSession::cardUvs)
       .function("cardIndices", &niwa::GrowSession::cardIndices)

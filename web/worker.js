@@ -27,6 +27,9 @@
 //                                               uvs, indices, joints, weights}, lines:{positions,
 //                                               colors, widths, joints, weights}} (transferred): eq. 4.1
 //                                               selection with hysteresis against the client's last view
+//         optional slot (whole number 0..255): the hysteresis is kept per (client, slot) instead,
+//         so one tree can keep several draw lists (the grove page: one per distance band); the
+//         answer then carries slot and the message's tag (any value, echoed back)
 //   in  {type:'export', id, client, format:'glb'|'json'}   (the client's last finished tree)
 //                                            -> out {type:'export', id, client, format, bytes} (ArrayBuffer transferred)
 //   any failure                              -> out {type:'error', id, client, message}
@@ -143,14 +146,17 @@ function takeAtlas(session, transfer) {
 }
 
 // One view of a hybrid-mode tree: selection, draw list and its sway skin.
-function hybridView(client, camera) {
+function hybridView(client, camera, slot, tag) {
   const session = finished.get(client);
   if (!session || session.renderMode() !== 1) return;
   const n = (x, d) => (Number.isFinite(Number(x)) ? Number(x) : d);
   const eye = camera?.eye || [0, 0, 10], target = camera?.target || [0, 0, 0];
-  const stats = JSON.parse(session.hybridView(n(eye[0], 0), n(eye[1], 0), n(eye[2], 10), n(target[0], 0),
+  const view = [n(eye[0], 0), n(eye[1], 0), n(eye[2], 10), n(target[0], 0),
     n(target[1], 0), n(target[2], 0), n(camera?.fovY, Math.PI / 4), Math.round(n(camera?.width, 512)),
-    Math.round(n(camera?.height, 512))));
+    Math.round(n(camera?.height, 512))];
+  const slotted = slot !== undefined && slot !== null;
+  const stats = JSON.parse(slotted ? session.hybridViewSlot(Number.isInteger(slot) ? slot : -1, ...view)
+    : session.hybridView(...view));
   if (stats.error) throw new Error(stats.error);
   const transfer = [];
   const take = (name, Type) => {
@@ -168,7 +174,8 @@ function hybridView(client, camera) {
     widths: take('lineWidths', Float32Array), joints: take('lineJoints', Uint32Array),
     weights: take('lineWeights', Float32Array),
   };
-  postMessage({ type: 'drawList', client, stats, cards, lines }, transfer);
+  const extra = slotted ? { slot, tag } : {};
+  postMessage({ type: 'drawList', client, stats, cards, lines, ...extra }, transfer);
 }
 
 async function grow(id, client, state, until) {
@@ -267,7 +274,7 @@ self.onmessage = async (event) => {
       if (msg.play) startWind(client); else stopWind(client);
     } else if (msg.type === 'view') {
       await loadModule();
-      hybridView(client, msg.camera);
+      hybridView(client, msg.camera, msg.slot, msg.tag);
     } else if (msg.type === 'poseDone') {
       const sway = sways.get(client);
       if (sway) sway.waiting = false;

@@ -1,0 +1,37 @@
+#version 300 es
+// Grove, hybrid mode: the line segments of one (unique tree, distance band) draw list as screen-space
+// quads (like line.vert), for every instance of the band at once: the segments are read from a
+// float texture (3 RGBA texels each: p0 + width px, p1, eq. 4.2 colour; rows of 1024 texels),
+// 4 indexed vertices per segment, one GL instance per tree instance. Shaded by grove_line.frag.
+layout(location = 0) in vec4 aInstance;   // xyz: position of the tree's base, w: scale
+layout(location = 1) in float aWidthScale;  // band representative's depth / this instance's depth
+
+uniform highp sampler2D uSegments;
+uniform mat4 uViewProjection;
+uniform vec2 uViewport;  // pixels
+
+out vec3 vColor;
+out float vCoverage;  // a line thinner than a pixel is drawn 1 px wide and this opaque
+
+vec4 texel(int i) { return texelFetch(uSegments, ivec2(i % 1024, i / 1024), 0); }
+
+void main() {
+  int segment = gl_VertexID / 4;  // indexed: 4 vertices per segment (triangles 0 1 2, 2 1 3)
+  int k = gl_VertexID % 4;
+  vec4 a = texel(segment * 3), b = texel(segment * 3 + 1), c = texel(segment * 3 + 2);
+  vec4 c0 = uViewProjection * vec4(aInstance.xyz + aInstance.w * a.xyz, 1.0);
+  vec4 c1 = uViewProjection * vec4(aInstance.xyz + aInstance.w * b.xyz, 1.0);
+  bool far = k >= 2;
+  float side = (k & 1) == 0 ? -1.0 : 1.0;
+  vec2 s0 = c0.xy / max(c0.w, 1e-6) * uViewport * 0.5;
+  vec2 s1 = c1.xy / max(c1.w, 1e-6) * uViewport * 0.5;
+  vec2 along = s1 - s0;
+  vec2 normal = length(along) > 1e-6 ? normalize(vec2(-along.y, along.x)) : vec2(1.0, 0.0);
+  float d = a.w * aWidthScale;  // eq. 4.1 D_i at this instance's distance and scale, pixels
+  float width = max(d, 1.0);
+  vCoverage = clamp(d, 0.0, 1.0);
+  vec4 clip = far ? c1 : c0;
+  clip.xy += normal * side * 0.5 * width / (uViewport * 0.5) * clip.w;
+  vColor = c.rgb;
+  gl_Position = clip;
+}

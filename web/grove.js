@@ -1,0 +1,317 @@
+// Grove page (public/grove.html): 100 trees made of 10 unique trees (5 presets × 2 seeds), each grown
+// once in the shared worker and drawn instanced, in full mode or hybrid mode (thesis ch. 4) with one
+// eq. 4.1 draw list per (unique tree, distance band). Hash: #mode=full|hybrid&cam=yaw,pitch,dist,tx,ty,tz.
+import { OrbitCamera } from './camera.js';
+import { GroveRenderer } from './grove_renderer.js';
+
+// The unique trees: a few seconds of growing in total.
+export const UNIQUE = [
+  { preset: 'sakura', seed: 1, years: 9 }, { preset: 'sakura', seed: 2, years: 9 },
+  { preset: 'keyaki', seed: 1, years: 12 }, { preset: 'keyaki', seed: 2, years: 12 },
+  { preset: 'maple', seed: 1, years: 10 }, { preset: 'maple', seed: 2, years: 10 },
+  { preset: 'ginkgo', seed: 1, years: 10 }, { preset: 'ginkgo', seed: 2, years: 10 },
+  { preset: 'pine', seed: 1, years: 10 }, { preset: 'pine', seed: 2, years: 10 },
+];
+const ROWS = 10, SPACING = 4.2;  // 10 × 10 trees, metres apart (jittered)
+const BAND_RATIO = 1.4;  // distance bands: [d, 1.4 d) share one draw list per unique tree
+
+const root = document.documentElement;
+const ui = {
+  canvas: document.getElementById('view'),
+  mode: document.getElementById('mode'),
+  stats: document.getElementById('stats'),
+  time: document.getElementById('time'),
+  frames: document.getElementById('frames'),
+  timing: document.getElementById('timing'),
+  message: document.getElementById('message'),
+  reset: document.getElementById('reset-view'),
+};
+
+// The grove: instance -> unique tree, base position and scale (a fixed pseudo-random layout).
+function layout() {
+  let state = 20240531;
+  const random = () => {  // mulberry32
+    state = (state + 0x6d2b79f5) | 0;
+    let t = Math.imul(state ^ (state >>> 15), 1 | state);
+    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+  const out = [];
+  for (let r = 0; r < ROWS; ++r) {
+    for (let c = 0; c < ROWS; ++c) {
+      out.push({
+        tree: (r * 3 + c) % UNIQUE.length,
+        position: [(c - (ROWS - 1) / 2 + (random() - 0.5) * 0.5) * SPACING, 0,
+          (r - (ROWS - 1) / 2 + (random() - 0.5) * 0.5) * SPACING],
+        scale: 0.8 + 0.4 * random(),
+      });
+    }
+  }
+  return out;
+}
+const INSTANCES = layout();
+
+let renderer = null;
+const camera = new OrbitCamera();
+const trees = [];  // unique tree index -> {bounds, stats} once grown
+let mode = 'hybrid';
+let timing = null;  // last "Time N frames" result
+let viewRound = 0, viewPending = null, viewDirty = false, viewMs = 0;
+const worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+
+function readHash() {
+  const params = new URLSearchParams(location.hash.slice(1));
+  mode = params.get('mode') === 'full' ? 'full' : 'hybrid';
+  ui.mode.value = mode;
+  root.dataset.mode = mode;
+  return params.get('cam');
+}
+
+function writeHash() {
+  const hash = `#mode=${mode}&cam=${camera.toHash()}`;
+  if (location.hash !== hash) history.replaceState(null, '', hash);
+}
+
+function resetCamera() {
+  camera.yaw = 0.6;
+  camera.pitch = 0.34;
+  const half = (ROWS / 2) * SPACING;
+  camera.frame({ min: [-half, 0, -half], max: [half, 5, half] }, 0.58);
+  camera.target[1] = 1;
+}
+
+function showMessage(text) {
+  ui.message.textContent = text;
+  ui.message.hidden = !text;
+}
+
+function fail(text) {
+  root.dataset.status = 'error';
+  showMessage(text);
+}
+
+const n = (x) => Math.round(x).toLocaleString('en-US');
+function updateStats(frame) {
+  const grown = trees.filter(Boolean).length;
+  const parts = [`${frame.instances} trees (${frame.uniqueDrawn} unique of ${UNIQUE.length})`, mode,
+    `${n(frame.triangles)} triangles`, `${n(frame.lines)} lines`, `${frame.drawCalls} draw calls`];
+  if (mode === 'hybrid' && viewMs) parts.push(`draw lists ${viewMs.toFixed(0)} ms`);
+  if (timing) parts.push(`${timing.median.toFixed(1)} ms/frame (${timing.mode}, median of ${timing.frames})`);
+  ui.stats.textContent = grown < UNIQUE.length ? `growing ${grown}/${UNIQUE.length} unique trees…` : parts.join(' · ');
+  Object.assign(root.dataset, {
+    instances: frame.instances, uniqueDrawn: frame.uniqueDrawn, unique: UNIQUE.length,
+    triangles: frame.triangles, lines: frame.lines, drawCalls: frame.drawCalls, drawnMode: frame.mode,
+  });
+}
+
+let frameRequested = false;
+function requestFrame() {
+  if (!renderer || frameRequested) return;
+  frameRequested = true;
+  requestAnimationFrame(() => {
+    frameRequested = false;
+    updateStats(renderer.render(camera, mode));
+    root.dataset.frameSerial = Number(root.dataset.frameSerial || 0) + 1;
+  });
+}
+
+// Hybrid mode: one 'view' per (unique tree, distance band) with that band's nearest instance's
+// camera in the tree's own frame; the worker keeps the hysteresis per (tree, band) slot. One round
+// at a time; the last round's draw lists stay on screen until the next is complete.
+function requestViews() {
+  if (mode !== 'hybrid' || !renderer || trees.filter(Boolean).length < UNIQUE.length) return;
+  if (viewPending) {
+    viewDirty = true;
+    return;
+  }
+  viewDirty = false;
+  renderer.resize();
+  const eye = camera.position();
+  const groups = new Map();
+  for (const instance of INSTANCES) {
+    const b = trees[instance.tree].bounds;
+    const s = instance.scale, p = instance.position;
+    const centre = [0, 1, 2].map((k) => p[k] + s * (b.min[k] + b.max[k]) / 2);
+    const distance = Math.hypot(eye[0] - centre[0], eye[1] - centre[1], eye[2] - centre[2]);
+    const band = Math.max(0, Math.min(255, Math.floor(Math.log(Math.max(distance, 0.5)) / Math.log(BAND_RATIO)) + 3));
+    const key = `${instance.tree}:${band}`;
+    if (!groups.has(key)) groups.set(key, { tree: instance.tree, band, members: [] });
+    groups.get(key).members.push({ instance, distance });
+  }
+  const round = ++viewRound;
+  viewPending = { round, start: performance.now(), waiting: groups.size, lists: [] };
+  root.dataset.viewPending = '1';
+  for (const group of groups.values()) {
+    group.members.sort((a, b) => a.distance - b.distance);
+    const rep = group.members[0];
+    const s = rep.instance.scale, p = rep.instance.position;
+    const local = (v) => v.map((x, k) => (x - p[k]) / s);
+    const members = new Float32Array(group.members.length * 5);
+    group.members.forEach((m, i) => {
+      members.set([...m.instance.position, m.instance.scale, (m.instance.scale / s) * (rep.distance / m.distance)], i * 5);
+    });
+    viewPending.lists.push({ tree: group.tree, band: group.band, members });
+    worker.postMessage({
+      type: 'view', client: `grove-${group.tree}`, slot: group.band, tag: round,
+      camera: { eye: local(eye), target: local(camera.target), fovY: camera.fov, width: renderer.canvas.width, height: renderer.canvas.height },
+    });
+  }
+}
+
+function onDrawList(msg) {
+  if (!viewPending || msg.tag !== viewPending.round) return;
+  const tree = Number(msg.client.slice('grove-'.length));
+  const list = viewPending.lists.find((l) => l.tree === tree && l.band === msg.slot);
+  if (!list) return;
+  Object.assign(list, { cards: msg.cards, lines: msg.lines });
+  if (--viewPending.waiting > 0) return;
+  renderer.setBands(viewPending.lists);
+  viewMs = performance.now() - viewPending.start;
+  viewPending = null;
+  root.dataset.viewSerial = Number(root.dataset.viewSerial || 0) + 1;
+  root.dataset.viewMs = viewMs.toFixed(1);
+  if (viewDirty) requestViews();
+  else root.dataset.viewPending = '0';
+  requestFrame();
+}
+
+function onTree(msg) {
+  const index = Number(msg.client.slice('grove-'.length));
+  const mine = INSTANCES.filter((i) => i.tree === index);
+  const instances = new Float32Array(mine.length * 4);
+  mine.forEach((i, k) => instances.set([...i.position, i.scale], k * 4));
+  renderer.addTree(index, msg.mesh, instances, msg.hybrid);
+  trees[index] = { bounds: msg.stats.bounds, stats: msg.stats };
+  if (trees.filter(Boolean).length === UNIQUE.length) {
+    root.dataset.status = 'ready';
+    requestViews();
+  }
+  requestFrame();
+}
+
+worker.onmessage = (event) => {
+  const msg = event.data;
+  if (msg.type === 'ready') {
+    UNIQUE.forEach((u, index) => worker.postMessage({
+      type: 'update', id: index + 1, client: `grove-${index}`,
+      state: { preset: u.preset, seed: u.seed, years: u.years, params: { render_mode: 1 } },
+    }));
+  } else if (msg.type === 'tree') {
+    onTree(msg);
+  } else if (msg.type === 'drawList') {
+    onDrawList(msg);
+  } else if (msg.type === 'progress' && renderer) {
+    requestFrame();
+  } else if (msg.type === 'error') {
+    fail(`${msg.client || 'worker'}: ${msg.message}`);
+  }
+};
+worker.onerror = (e) => {
+  e.preventDefault();
+  fail('The simulation worker failed to start.');
+};
+
+// Times `frames` frames of the current view (after one untimed frame): each is drawn and then
+// waited for (gl.readPixels of one pixel blocks until the GPU is done); the median is shown.
+// only = -1 times the ground alone (the frame's fixed cost), as render().
+async function timeFrames(frames = 20, only = undefined) {
+  if (!renderer || root.dataset.status !== 'ready') return null;
+  root.dataset.timing = 'running';
+  ui.time.disabled = true;
+  const nextFrame = () => new Promise((resolve) => requestAnimationFrame(resolve));
+  const times = [];
+  let frame = null;
+  for (let i = -1; i < frames; ++i) {
+    await nextFrame();
+    const start = performance.now();
+    frame = renderer.render(camera, mode, only);
+    renderer.finish();
+    if (i >= 0) times.push(performance.now() - start);
+  }
+  times.sort((a, b) => a - b);
+  const median = times.length % 2 ? times[(times.length - 1) / 2] : (times[times.length / 2 - 1] + times[times.length / 2]) / 2;
+  timing = { mode: only === undefined ? mode : 'ground only', frames, median, min: times[0], max: times[times.length - 1], ...frame };
+  ui.timing.textContent = `${timing.mode}: ${median.toFixed(1)} ms per frame (median of ${frames}; ` +
+    `${times[0].toFixed(1)}–${times[times.length - 1].toFixed(1)} ms), ${renderer.canvas.width}×${renderer.canvas.height} px`;
+  Object.assign(root.dataset, { timing: 'done', frameMs: median.toFixed(2), timedMode: timing.mode, timedFrames: frames });
+  ui.time.disabled = false;
+  if (only !== undefined) requestFrame();  // the whole grove back on screen
+  else updateStats(frame);
+  return { ...timing, width: renderer.canvas.width, height: renderer.canvas.height, viewMs };
+}
+
+// Share of canvas pixels each unique tree covers when its instances are drawn alone (differs from
+// the bare ground by more than a faint amount): every unique tree must show in both modes.
+function coverage() {
+  if (!renderer) return [];
+  renderer.render(camera, mode, -1);
+  const empty = renderer.readCanvas();
+  const shares = UNIQUE.map((_, index) => {
+    renderer.render(camera, mode, index);
+    const pixels = renderer.readCanvas();
+    let count = 0;
+    for (let i = 0; i < pixels.length; i += 4) {
+      if (Math.abs(pixels[i] - empty[i]) + Math.abs(pixels[i + 1] - empty[i + 1]) + Math.abs(pixels[i + 2] - empty[i + 2]) > 24) ++count;
+    }
+    return count / (pixels.length / 4);
+  });
+  updateStats(renderer.render(camera, mode));
+  return shares;
+}
+
+function setMode(next) {
+  mode = next === 'full' ? 'full' : 'hybrid';
+  ui.mode.value = mode;
+  root.dataset.mode = mode;
+  writeHash();
+  requestViews();
+  requestFrame();
+}
+
+async function start() {
+  root.dataset.status = 'loading';
+  root.dataset.viewPending = '0';
+  const cam = readHash();
+  resetCamera();
+  if (cam) camera.fromHash(cam);
+  try {
+    renderer = new GroveRenderer(ui.canvas);
+    await renderer.init();
+  } catch (e) {
+    fail(`Cannot draw: ${e.message}`);
+    return;
+  }
+  renderer.setSun(60, 0);
+  camera.attach(ui.canvas, () => {
+    writeHash();
+    requestViews();
+    requestFrame();
+  });
+  new ResizeObserver(() => {
+    requestViews();
+    requestFrame();
+  }).observe(ui.canvas);
+  ui.mode.addEventListener('change', () => setMode(ui.mode.value));
+  ui.reset.addEventListener('click', () => {
+    resetCamera();
+    writeHash();
+    requestViews();
+    requestFrame();
+  });
+  ui.frames.addEventListener('input', () => {
+    ui.time.textContent = `Time ${Math.max(1, Math.min(200, Number(ui.frames.value) || 20))} frames`;
+  });
+  ui.time.addEventListener('click', () => timeFrames(Math.max(1, Math.min(200, Number(ui.frames.value) || 20))));
+  window.addEventListener('hashchange', () => {
+    const cam = readHash();
+    if (cam) camera.fromHash(cam);
+    requestViews();
+    requestFrame();
+  });
+  writeHash();
+  worker.postMessage({ type: 'init', client: 'grove', hash: '' });
+  requestFrame();
+}
+
+window.grove = { timeFrames, coverage, instances: INSTANCES.length, unique: UNIQUE.length };
+start();

@@ -1,0 +1,363 @@
+// WebGL2 renderer of the grove page: a few unique trees drawn many times with instancing, in full
+// mode (bark/leaves/flowers meshes) or hybrid mode (thesis ch. 4: each unique tree's card atlas,
+// shared by all its instances, and one draw list of cards + lines per (unique tree, distance band)).
+import { BACKGROUND, PARTS, fetchText, link } from './renderer.js';
+
+const SEGMENT_ROW = 1024;  // texels per row of a line-segment texture (grove_line.vert)
+
+export class GroveRenderer {
+  // Throws an Error with a readable message when WebGL2 is missing.
+  constructor(canvas) {
+    this.canvas = canvas;
+    const gl = canvas.getContext('webgl2', { antialias: true, preserveDrawingBuffer: true, alpha: false });
+    if (!gl) throw new Error('WebGL2 is not available in this browser, so the grove cannot be drawn.');
+    this.gl = gl;
+    this.trees = [];      // per unique tree: {parts: {name: {vao, count}}, atlas, instances, ...}
+    this.bands = new Map();  // `${tree}:${band}` -> {tree, vaoCards, cardCount, vaoLines, segments, texture, members}
+    this.light = [0.5, 0.866, 0];
+    this.extent = 60;
+    this.lastFrame = { triangles: 0, lines: 0, drawCalls: 0, instances: 0, uniqueDrawn: 0, cpuMs: 0 };
+  }
+
+  async init(shaderBase = new URL('../shaders/', import.meta.url).href) {
+    const names = ['grove_tree.vert', 'tree.frag', 'grove_card.vert', 'card.frag', 'grove_line.vert', 'grove_line.frag',
+      'atlas.vert', 'ground.vert', 'ground.frag'];
+    const text = Object.fromEntries(await Promise.all(
+      names.map(async (f) => [f, await fetchText(new URL(f, shaderBase).href)])));
+    const gl = this.gl;
+    this.treeProgram = link(gl, text['grove_tree.vert'], text['tree.frag'], 'grove_tree');
+    this.cardProgram = link(gl, text['grove_card.vert'], text['card.frag'], 'grove_card');
+    this.lineProgram = link(gl, text['grove_line.vert'], text['grove_line.frag'], 'grove_line');
+    this.atlasProgram = link(gl, text['atlas.vert'], text['tree.frag'], 'atlas');
+    this.groundProgram = link(gl, text['ground.vert'], text['ground.frag'], 'ground');
+    this.groundVao = gl.createVertexArray();
+    gl.bindVertexArray(this.groundVao);
+    gl.bindBuffer(gl.ARRAY_BUFFER, gl.createBuffer());
+    gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([-1, -1, 1, -1, -1, 1, 1, 1]), gl.STATIC_DRAW);
+    gl.enableVertexAttribArray(0);
+    gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
+    gl.bindVertexArray(null);
+  }
+
+  // Light direction (unit, towards the sun), as Renderer.setSun.
+  setSun(elevationDeg, azimuthDeg) {
+    const el = (elevationDeg * Math.PI) / 180, az = (azimuthDeg * Math.PI) / 180;
+    this.light = [Math.cos(el) * Math.cos(az), Math.sin(el), Math.cos(el) * Math.sin(az)];
+  }
+
+  #buffer(bytes, target = this.gl.ARRAY_BUFFER) {
+    const gl = this.gl;
+    const b = gl.createBuffer();
+    gl.bindBuffer(target, b);
+    gl.bufferData(target, bytes, gl.STATIC_DRAW);
+    return b;
+  }
+
+  // Per-instance attributes on the bound VAO: `location` = vec4 (x, y, z, scale) from `b` (stride
+  // `floats` floats) and, when floats is 5, location + 1 = the width scale (grove_line.vert).
+  #instanceAttributes(b, floats, location = 7) {
+    const gl = this.gl;
+    gl.bindBuffer(gl.ARRAY_BUFFER, b);
+    gl.enableVertexAttribArray(location);
+    gl.vertexAttribPointer(location, 4, gl.FLOAT, false, floats * 4, 0);
+    gl.vertexAttribDivisor(location, 1);
+    if (floats === 5) {
+      gl.enableVertexAttribArray(location + 1);
+      gl.vertexAttribPointer(location + 1, 1, gl.FLOAT, false, 20, 16);
+      gl.vertexAttribDivisor(location + 1, 1);
+    }
+  }
+
+  // Unique tree `index`: the worker's mesh (bark/leaves/flowers ArrayBuffers) drawn at every
+  // instance of `instances` (Float32Array, 4 per instance: x, y, z, scale), and its card atlas
+  // painted once from the worker's hybrid geometry (null: no hybrid mode for this tree).
+  addTree(index, mesh, instances, hybrid) {
+    const gl = this.gl;
+    const instanceBuffer = this.#buffer(instances);
+    const parts = {};
+    for (const name of Object.keys(PARTS)) {
+      const data = mesh[name];
+      if (!data || data.indices.byteLength === 0) continue;
+      const vao = gl.createVertexArray();
+      gl.bindVertexArray(vao);
+      for (const [location, bytes] of [[0, data.positions], [1, data.normals]]) {
+        this.#buffer(bytes);
+        gl.enableVertexAttribArray(location);
+        gl.vertexAttribPointer(location, 3, gl.FLOAT, false, 0, 0);
+      }
+      this.#instanceAttributes(instanceBuffer, 4);
+      this.#buffer(data.indices, gl.ELEMENT_ARRAY_BUFFER);
+      gl.bindVertexArray(null);
+      parts[name] = { vao, count: data.indices.byteLength / 4 };
+    }
+    this.trees[index] = { parts, instances: instances.length / 4, atlas: hybrid ? this.#paintAtlas(hybrid) : null };
+  }
+
+  // The card atlas of one unique tree (thesis 4.2.1), painted once from clip-space triangles, lit
+  // by the sun like the full view, transparent elsewhere, mipmapped; shared by all its instances.
+  #paintAtlas(hybrid) {
+    const gl = this.gl;
+    const size = hybrid.atlasSize;
+    const texture = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, texture);
+    gl.texStorage2D(gl.TEXTURE_2D, Math.floor(Math.log2(size)) + 1, gl.RGBA8, size, size);
+    if (!this.atlasDepth || this.atlasDepth.size !== size) {
+      if (this.atlasDepth) gl.deleteRenderbuffer(this.atlasDepth.rb);
+      const rb = gl.createRenderbuffer();
+      gl.bindRenderbuffer(gl.RENDERBUFFER, rb);
+      gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, size, size);
+      this.atlasDepth = { rb, size };
+    }
+    const fb = gl.createFramebuffer();
+    gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
+    gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, this.atlasDepth.rb);
+    gl.viewport(0, 0, size, size);
+    gl.clearColor(0, 0, 0, 0);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    gl.enable(gl.DEPTH_TEST);
+    gl.disable(gl.BLEND);
+    const a = this.atlasProgram;
+    gl.useProgram(a.program);
+    gl.uniform3fv(a.uniforms.uLightDirection, this.light);
+    gl.uniform3fv(a.uniforms.uCameraPosition, [0, 0, 10]);
+    gl.uniform1f(a.uniforms.uXray, 0);
+    gl.uniform1f(a.uniforms.uSpecular, 0);
+    for (const name of Object.keys(PARTS)) {
+      const part = hybrid[name];
+      const count = part.indices.byteLength / 4;
+      if (count === 0) continue;
+      const vao = gl.createVertexArray();
+      gl.bindVertexArray(vao);
+      const buffers = [[0, part.positions], [1, part.normals]].map(([location, bytes]) => {
+        const b = this.#buffer(bytes);
+        gl.enableVertexAttribArray(location);
+        gl.vertexAttribPointer(location, 3, gl.FLOAT, false, 0, 0);
+        return b;
+      });
+      buffers.push(this.#buffer(part.indices, gl.ELEMENT_ARRAY_BUFFER));
+      const look = PARTS[name];
+      gl.uniform3fv(a.uniforms.uColor, look.color);
+      gl.uniform3fv(a.uniforms.uColorVariation, look.variation);
+      gl.uniform1f(a.uniforms.uDoubleSided, look.doubleSided);
+      gl.drawElements(gl.TRIANGLES, count, gl.UNSIGNED_INT, 0);
+      gl.bindVertexArray(null);
+      buffers.forEach((b) => gl.deleteBuffer(b));
+      gl.deleteVertexArray(vao);
+    }
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.deleteFramebuffer(fb);
+    gl.bindTexture(gl.TEXTURE_2D, texture);
+    gl.generateMipmap(gl.TEXTURE_2D);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    return texture;
+  }
+
+  // Replaces every band's draw list at once. lists: [{tree, band, cards, lines, members}] with the
+  // worker's 'drawList' buffers and members = Float32Array, 5 per instance (x, y, z, scale, width scale).
+  setBands(lists) {
+    const gl = this.gl;
+    for (const band of this.bands.values()) {
+      band.buffers.forEach((b) => gl.deleteBuffer(b));
+      if (band.vaoCards) gl.deleteVertexArray(band.vaoCards);
+      if (band.vaoLines) gl.deleteVertexArray(band.vaoLines);
+      if (band.texture) gl.deleteTexture(band.texture);
+    }
+    this.bands = new Map();
+    for (const list of lists) {
+      const members = this.#buffer(list.members);
+      const band = { tree: list.tree, buffers: [members], instances: list.members.length / 5, cardCount: 0, segments: 0 };
+      const c = list.cards;
+      if (c.indices.byteLength > 0) {
+        band.vaoCards = gl.createVertexArray();
+        gl.bindVertexArray(band.vaoCards);
+        for (const [location, bytes, size] of [[0, c.positions, 3], [1, c.uvs, 2]]) {
+          band.buffers.push(this.#buffer(bytes));
+          gl.enableVertexAttribArray(location);
+          gl.vertexAttribPointer(location, size, gl.FLOAT, false, 0, 0);
+        }
+        this.#instanceAttributes(members, 5);
+        band.buffers.push(this.#buffer(c.indices, gl.ELEMENT_ARRAY_BUFFER));
+        gl.bindVertexArray(null);
+        band.cardCount = c.indices.byteLength / 4;
+      }
+      const l = list.lines;
+      const segments = l.widths.byteLength / 4;
+      if (segments > 0) {
+        // One texture per draw list: 3 RGBA32F texels per segment (p0 + width, p1, colour).
+        // The width is the draw list's D_i (pixels, may be below 1: grove_line.vert blends by it).
+        const rows = Math.ceil((segments * 3) / SEGMENT_ROW);
+        const data = new Float32Array(rows * SEGMENT_ROW * 4);
+        const p = new Float32Array(l.positions), col = new Float32Array(l.colors), w = new Float32Array(l.widths);
+        for (let s = 0; s < segments; ++s) {
+          const o = s * 12;
+          data.set(p.subarray(s * 6, s * 6 + 3), o);
+          data[o + 3] = w[s];
+          data.set(p.subarray(s * 6 + 3, s * 6 + 6), o + 4);
+          data.set(col.subarray(s * 3, s * 3 + 3), o + 8);
+        }
+        band.texture = gl.createTexture();
+        gl.bindTexture(gl.TEXTURE_2D, band.texture);
+        gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, SEGMENT_ROW, rows, 0, gl.RGBA, gl.FLOAT, data);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+        gl.bindTexture(gl.TEXTURE_2D, null);
+        band.vaoLines = gl.createVertexArray();
+        gl.bindVertexArray(band.vaoLines);
+        this.#instanceAttributes(members, 5, 0);  // no per-vertex attributes: the segments are a texture
+        gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, this.#quadIndices(segments));
+        gl.bindVertexArray(null);
+        band.segments = segments;
+      }
+      this.bands.set(`${list.tree}:${list.band}`, band);
+    }
+  }
+
+  // Indices of `segments` quads (vertices 4 s .. 4 s + 3; triangles 0 1 2 and 2 1 3), shared by
+  // every line draw list and grown when needed: 4 vertices per segment instead of 6.
+  #quadIndices(segments) {
+    const gl = this.gl;
+    if (!this.quads || this.quads.segments < segments) {
+      const count = Math.max(segments, 2 * (this.quads?.segments || 1024));
+      const indices = new Uint32Array(count * 6);
+      for (let s = 0; s < count; ++s) indices.set([4 * s, 4 * s + 1, 4 * s + 2, 4 * s + 2, 4 * s + 1, 4 * s + 3], s * 6);
+      if (this.quads) gl.deleteBuffer(this.quads.buffer);  // VAOs keep a deleted buffer alive
+      this.quads = { buffer: gl.createBuffer(), segments: count };
+      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, this.quads.buffer);
+      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, indices, gl.STATIC_DRAW);
+    }
+    return this.quads.buffer;
+  }
+
+  resize() {
+    const dpr = Math.min(window.devicePixelRatio || 1, 2);
+    const w = Math.max(1, Math.round(this.canvas.clientWidth * dpr));
+    const h = Math.max(1, Math.round(this.canvas.clientHeight * dpr));
+    if (this.canvas.width !== w || this.canvas.height !== h) {
+      this.canvas.width = w;
+      this.canvas.height = h;
+    }
+  }
+
+  // Draws the ground and the grove in `mode` ('full' or 'hybrid'); only = a unique tree index to
+  // draw that tree's instances alone, -1 for none (the coverage check), undefined for all.
+  // Returns what was drawn: triangles, lines (segments), draw calls, tree instances, unique trees.
+  render(camera, mode, only) {
+    const gl = this.gl;
+    const start = performance.now();
+    this.resize();
+    gl.viewport(0, 0, this.canvas.width, this.canvas.height);
+    gl.clearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    gl.enable(gl.DEPTH_TEST);
+    gl.disable(gl.CULL_FACE);
+    gl.disable(gl.BLEND);
+    const viewProjection = camera.viewProjection(this.canvas.width / this.canvas.height);
+    let triangles = 0, lines = 0, drawCalls = 0, instances = 0;
+    const drawn = new Set();
+    const g = this.groundProgram;
+    gl.useProgram(g.program);
+    gl.uniformMatrix4fv(g.uniforms.uViewProjection, false, viewProjection);
+    gl.uniform3fv(g.uniforms.uCenter, [0, 0, 0]);
+    gl.uniform1f(g.uniforms.uExtent, this.extent);
+    gl.uniform1f(g.uniforms.uShadowRadius, 0.05);
+    gl.uniform2fv(g.uniforms.uShadowOffset, [1e4, 1e4]);  // no single contact shadow in a grove
+    gl.uniform3fv(g.uniforms.uBackground, BACKGROUND);
+    gl.enable(gl.POLYGON_OFFSET_FILL);
+    gl.polygonOffset(1, 1);
+    gl.bindVertexArray(this.groundVao);
+    gl.drawArrays(gl.TRIANGLE_STRIP, 0, 4);
+    gl.disable(gl.POLYGON_OFFSET_FILL);
+    triangles += 2;
+    drawCalls += 1;
+    const wanted = (tree) => only === undefined || only === tree;
+
+    if (mode === 'hybrid') {
+      const cp = this.cardProgram;
+      gl.useProgram(cp.program);
+      gl.uniformMatrix4fv(cp.uniforms.uViewProjection, false, viewProjection);
+      gl.uniform1i(cp.uniforms.uAtlas, 0);
+      gl.activeTexture(gl.TEXTURE0);
+      for (const band of this.bands.values()) {
+        const tree = this.trees[band.tree];
+        if (!band.cardCount || !wanted(band.tree) || !tree?.atlas) continue;
+        gl.bindTexture(gl.TEXTURE_2D, tree.atlas);
+        gl.bindVertexArray(band.vaoCards);
+        gl.drawElementsInstanced(gl.TRIANGLES, band.cardCount, gl.UNSIGNED_INT, 0, band.instances);
+        triangles += (band.cardCount / 3) * band.instances;
+        drawCalls += 1;
+      }
+      const lp = this.lineProgram;
+      gl.useProgram(lp.program);
+      gl.uniformMatrix4fv(lp.uniforms.uViewProjection, false, viewProjection);
+      gl.uniform2f(lp.uniforms.uViewport, this.canvas.width, this.canvas.height);
+      gl.uniform1i(lp.uniforms.uSegments, 0);
+      // Sub-pixel lines blend by their coverage; they leave the depth buffer to the cards.
+      gl.enable(gl.BLEND);
+      gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
+      gl.depthMask(false);
+      for (const band of this.bands.values()) {
+        if (!band.segments || !wanted(band.tree)) continue;
+        gl.bindTexture(gl.TEXTURE_2D, band.texture);
+        gl.bindVertexArray(band.vaoLines);
+        gl.drawElementsInstanced(gl.TRIANGLES, band.segments * 6, gl.UNSIGNED_INT, 0, band.instances);
+        lines += band.segments * band.instances;
+        drawCalls += 1;
+      }
+      gl.depthMask(true);
+      gl.disable(gl.BLEND);
+      for (const band of this.bands.values()) {
+        if (!wanted(band.tree) || !(band.cardCount || band.segments)) continue;
+        instances += band.instances;
+        drawn.add(band.tree);
+      }
+      gl.bindTexture(gl.TEXTURE_2D, null);
+    } else {
+      const t = this.treeProgram;
+      gl.useProgram(t.program);
+      gl.uniformMatrix4fv(t.uniforms.uViewProjection, false, viewProjection);
+      gl.uniform3fv(t.uniforms.uLightDirection, this.light);
+      gl.uniform3fv(t.uniforms.uCameraPosition, camera.position());
+      gl.uniform1f(t.uniforms.uXray, 0);
+      this.trees.forEach((tree, index) => {
+        if (!tree || !wanted(index)) return;
+        for (const [name, part] of Object.entries(tree.parts)) {
+          const look = PARTS[name];
+          gl.uniform3fv(t.uniforms.uColor, look.color);
+          gl.uniform3fv(t.uniforms.uColorVariation, look.variation);
+          gl.uniform1f(t.uniforms.uDoubleSided, look.doubleSided);
+          gl.uniform1f(t.uniforms.uSpecular, look.specular);
+          gl.bindVertexArray(part.vao);
+          gl.drawElementsInstanced(gl.TRIANGLES, part.count, gl.UNSIGNED_INT, 0, tree.instances);
+          triangles += (part.count / 3) * tree.instances;
+          drawCalls += 1;
+        }
+        instances += tree.instances;
+        drawn.add(index);
+      });
+    }
+    gl.bindVertexArray(null);
+    this.lastFrame = { triangles, lines, drawCalls, instances, uniqueDrawn: drawn.size, cpuMs: performance.now() - start, mode };
+    return this.lastFrame;
+  }
+
+  // Blocks until the GPU has finished everything drawn so far: reads one pixel back.
+  finish() {
+    const gl = this.gl;
+    const pixel = new Uint8Array(4);
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    return pixel;
+  }
+
+  // The whole canvas as RGBA bytes (bottom row first), for the coverage check.
+  readCanvas() {
+    const gl = this.gl;
+    const data = new Uint8Array(this.canvas.width * this.canvas.height * 4);
+    gl.readPixels(0, 0, this.canvas.width, this.canvas.height, gl.RGBA, gl.UNSIGNED_BYTE, data);
+    return data;
+  }
+}
