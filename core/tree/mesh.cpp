@@ -141,25 +141,37 @@ void NodeTangents(const Branch& branch, std::vector<glm::vec3>* segment_buffer,
   }
 }
 
-// Rotates the frame normal by the smallest rotation that carries tangent `from` onto `to`.
+// Rotates the frame normal by the smallest rotation that carries unit tangent `from` onto unit
+// `to` (parallel transport): about from × to, by the angle whose sine and cosine are |from × to|
+// and from · to, used directly (normalized) instead of through atan2, cos and sin.
 glm::vec3 TransportNormal(const glm::vec3& normal, const glm::vec3& from, const glm::vec3& to) {
   glm::vec3 axis = glm::cross(from, to);
   float s = glm::length(axis);
   float c = glm::dot(from, to);
   glm::vec3 moved = normal;
-  if (s > kEpsilon) moved = RotateAbout(normal, axis / s, det::Atan2f(s, c));
+  if (s > kEpsilon) {
+    float h = std::sqrt(s * s + c * c);
+    moved = RotateAbout(normal, Divide(axis, s), c / h, s / h);
+  }
   return Orthonormalize(moved, to);
 }
 
+// What TipRadius needs of each branch, packed so the children loop stays in cache: the node of
+// its parent it starts from, and its radius (cm), or -1 when it is not alive.
+struct ChildInfo {
+  int parent_node;
+  float radius;
+};
+
 // Radius of the tube at its tip: that of the thickest living shoot continuing from the tip, so the
 // trunk tapers smoothly into its terminal shoot; the branch's own radius when nothing continues.
-float TipRadius(const Tree& tree, const Branch& branch, float base_radius) {
+float TipRadius(const std::vector<ChildInfo>& info, const Branch& branch, float base_radius) {
   int tip = static_cast<int>(branch.nodes.size()) - 1;
   float radius = -1.0f;
   for (int id : branch.children) {
-    if (id < 0 || id >= static_cast<int>(tree.branches.size())) continue;
-    const Branch& child = tree.branches[static_cast<std::size_t>(id)];
-    if (child.alive && child.parent_node == tip) radius = std::max(radius, BranchRadius(child));
+    if (id < 0 || id >= static_cast<int>(info.size())) continue;
+    const ChildInfo& child = info[static_cast<std::size_t>(id)];
+    if (child.radius >= 0.0f && child.parent_node == tip) radius = std::max(radius, child.radius);
   }
   return radius > 0.0f ? std::min(radius, base_radius) : base_radius;
 }
@@ -172,13 +184,12 @@ struct TubeScratch {
 // One generalized cylinder: a ring of `sides` + 1 vertices (the seam duplicated) per node, frames
 // carried along by parallel transport, radius tapering linearly in arc length, and a flat end cap.
 // node_v receives the v coordinate (metres of wood from the root) of every node.
-void AddBranchTube(const Tree& tree, const Branch& branch, int sides, float v_start,
-                   const MeshOptions& options, const RingTable& ring, TubeScratch* scratch,
-                   Writer* bark, float* node_v) {
+void AddBranchTube(const std::vector<ChildInfo>& info, const Branch& branch, float base_radius,
+                   int sides, float v_start, const MeshOptions& options, const RingTable& ring,
+                   TubeScratch* scratch, Writer* bark, float* node_v) {
   const float scale = options.cm_to_units;
   const std::size_t rings = branch.nodes.size();
-  const float base_radius = BranchRadius(branch);
-  const float tip_radius = TipRadius(tree, branch, base_radius);
+  const float tip_radius = TipRadius(info, branch, base_radius);
   NodeTangents(branch, &scratch->segment, &scratch->tangent);
   const std::vector<glm::vec3>& tangent = scratch->tangent;
   const float* ring_cos = ring.Cos(sides);
@@ -204,7 +215,8 @@ void AddBranchTube(const Tree& tree, const Branch& branch, int sides, float v_st
     glm::vec3 center = branch.nodes[i] * scale;
     for (int j = 0; j <= sides; ++j) {
       int k = j % sides;
-      glm::vec3 radial = SafeNormalize(normal * ring_cos[k] + binormal * ring_sin[k], normal);
+      // Unit within rounding: normal and binormal are orthonormal, cos² + sin² = 1.
+      glm::vec3 radial = normal * ring_cos[k] + binormal * ring_sin[k];
       bark->Vertex(center + radial * radius, radial,
                    static_cast<float>(j) / static_cast<float>(sides), node_v[i], id,
                    static_cast<uint32_t>(i));
@@ -333,11 +345,16 @@ TreeMesh BuildTreeMesh(const Tree& tree, const MeshOptions& options) {
   std::vector<std::size_t> node_offset(count, 0);  // first entry of the branch in node_v
   std::size_t nodes = 0, bark_vertices = 0, bark_indices = 0;
   std::size_t leaf_count = 0, flower_count = 0;
+  std::vector<ChildInfo> info(count);
+  for (std::size_t n = 0; n < count; ++n) {
+    const Branch& branch = tree.branches[n];
+    info[n] = {branch.parent_node, branch.alive ? BranchRadius(branch) : -1.0f};
+  }
   for (std::size_t n = 0; n < count; ++n) {
     const Branch& branch = tree.branches[n];
     if (!branch.alive || branch.nodes.size() < 2) continue;
     const std::size_t rings = branch.nodes.size();
-    const int s = SidesForRadius(BranchRadius(branch), lo_sides, hi_sides);
+    const int s = SidesForRadius(info[n].radius, lo_sides, hi_sides);
     const std::size_t side_count = static_cast<std::size_t>(s);
     sides[n] = s;
     node_offset[n] = nodes;
@@ -371,7 +388,7 @@ TreeMesh BuildTreeMesh(const Tree& tree, const MeshOptions& options) {
         v_start = node_v[node_offset[parent] + static_cast<std::size_t>(branch.parent_node)];
       }
     }
-    AddBranchTube(tree, branch, sides[n], v_start, options, ring, &scratch, &bark,
+    AddBranchTube(info, branch, info[n].radius, sides[n], v_start, options, ring, &scratch, &bark,
                   node_v.data() + node_offset[n]);
     for (const Leaf& leaf : branch.leaves) {
       if (ValidNode(branch, leaf.node)) AddLeaf(branch, leaf, leaf_size, options, &leaves);
