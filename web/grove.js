@@ -112,6 +112,8 @@ function requestFrame() {
     frameRequested = false;
     updateStats(renderer.render(camera, mode));
     root.dataset.frameSerial = Number(root.dataset.frameSerial || 0) + 1;
+    // Ready once a frame with every unique tree is on screen (hybrid: see data-view-pending too).
+    if (trees.filter(Boolean).length === UNIQUE.length && root.dataset.status === 'loading') root.dataset.status = 'ready';
   });
 }
 
@@ -182,10 +184,7 @@ function onTree(msg) {
   mine.forEach((i, k) => instances.set([...i.position, i.scale], k * 4));
   renderer.addTree(index, msg.mesh, instances, msg.hybrid);
   trees[index] = { bounds: msg.stats.bounds, stats: msg.stats };
-  if (trees.filter(Boolean).length === UNIQUE.length) {
-    root.dataset.status = 'ready';
-    requestViews();
-  }
+  if (trees.filter(Boolean).length === UNIQUE.length) requestViews();
   requestFrame();
 }
 
