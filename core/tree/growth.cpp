@@ -251,7 +251,7 @@ void Grower::LayOutShoots(bool bend) {
                                    turn_cos_[i], turn_sin_[i]);
       l.direction = RotateToward(l.direction, side, sympodial_turn_);
     }
-    l.azimuth = Orthonormalize(l.azimuth, l.direction);
+    if (zigzag) l.azimuth = Orthonormalize(l.azimuth, l.direction);  // only the zigzag reads it
     Branch& shoot = *l.shoot;
     shoot.nodes[i] = shoot.nodes[i - 1] + l.direction * shoot.internode_length;
   };
