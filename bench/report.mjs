@@ -1,9 +1,9 @@
 // Formats scripts/bench results: the native/WASM markdown table on stdout, and docs/BENCHMARKS.md.
 //
 // node bench/report.mjs --native N.jsonl --wasm W.jsonl [--peer P.jsonl] [--gbench G.txt]
-//                       [--meta META.json] [--record docs/BENCHMARKS.md]
-// N/W/P hold one JSON object per line as printed by niwa_bench_runner / ez_tree_peer.mjs; META holds
-// {date, machine, cpu, cores, tools, load, command, seconds}.
+//                       [--grove GR.jsonl] [--meta META.json] [--record docs/BENCHMARKS.md]
+// N/W/P hold one JSON object per line as printed by niwa_bench_runner / ez_tree_peer.mjs, GR the lines
+// of bench/grove.mjs (one per mode); META holds {date, machine, cpu, cores, tools, load, command, seconds}.
 import {readFileSync, writeFileSync, existsSync} from 'node:fs';
 
 const args = {};
@@ -106,10 +106,34 @@ if (args.split) {
   }
 }
 
+// Grove (thesis ch. 4): 100 instanced trees in the browser, full vs hybrid mode, from bench/grove.mjs.
+const grove = new Map(readLines(args.grove).map((r) => [r.mode, r]));
+let groveSection = '';
+if (grove.size) {
+  const int = (x) => (x === undefined ? '—' : Number(x).toLocaleString('en-US'));
+  groveSection = '| mode | ms per frame (median) | frames | min–max ms | triangles | lines | primitives | draw calls |\n' +
+    '|---|--:|--:|--:|--:|--:|--:|--:|\n';
+  for (const mode of ['full', 'hybrid']) {
+    const r = grove.get(mode);
+    if (!r) continue;
+    groveSection += `| ${mode} | ${fmt(r.ms)} | ${r.frames} | ${fmt(r.min_ms)}–${fmt(r.max_ms)} | ${int(r.triangles)} | ` +
+      `${int(r.lines)} | ${int(r.primitives)} | ${r.draw_calls} |\n`;
+  }
+  const f = grove.get('full'), h = grove.get('hybrid'), any = f || h;
+  const facts = [`${any.instances} trees (${any.unique} unique), ${any.width} × ${any.height} px; ` +
+    `the ground alone takes ${fmt(any.ground_ms)} ms per frame.`];
+  if (f && h) {
+    facts.push(`Hybrid / full: ${(h.ms / f.ms).toFixed(3)} of the frame time (full takes ${(f.ms / h.ms).toFixed(1)}× as long), ` +
+      `${(h.primitives / f.primitives).toFixed(4)} of the primitives.`);
+  }
+  if (h) facts.push(`Hybrid: the worker's eq. 4.1 selection and draw lists of the first view (all distance bands, while the page loads) took ${fmt(h.view_ms)} ms.`);
+  groveSection += `\n${facts.map((x) => `- ${x}`).join('\n')}\n`;
+}
+
 const out = `${table}\n${peerTable ? peerTable + '\n' : ''}${notes.map((n) => `- ${n}`).join('\n')}\n` +
   (goalsTable ? `\n### Speed goals\n\n${goalsTable}` : '') +
   (splitTable ? `\n### Time per sub-model (like thesis table 2.3; native CLI --stats, one run)\n\n${splitTable}` : '');
-process.stdout.write(out);
+process.stdout.write(out + (groveSection ? `\n### Grove (100 trees, headless chromium, SwiftShader)\n\n${groveSection}` : ''));
 
 if (args.record) {
   const doc = `# Benchmarks
@@ -152,6 +176,18 @@ Workloads:
 - \`light/grid-2000\`, \`light/reference-2000\`: \`ComputeLightGrid\` and \`ComputeLightReference\` on
   2,000 leaf spheres drawn from \`Pcg32\` (seed 12345) in a 300 × 300 × 300 cm crown box, sky \`MakeSky(60°, 0°, sun weight 0.3)\`, opacity 0.5.
 
+## Grove (100 trees, headless chromium, SwiftShader)
+
+\`node bench/grove.mjs\`: \`public/grove.html\` (10 unique trees — sakura, keyaki, maple, ginkgo, pine × 2
+seeds, 9–12 years — each grown once in the page's worker, 100 instances drawn with instancing) in Debian
+chromium, headless, WebGL2 on SwiftShader: every vertex and pixel is processed on the CPU, so compare the
+modes with each other, not with a GPU. Per mode the page's "Time N frames" button draws N frames of the
+first view, each followed by a 1-pixel \`gl.readPixels\` that waits for the frame to finish; the median
+is shown (full mode times fewer frames: each takes seconds). Full: bark tubes, leaf quads and flowers of
+every tree; hybrid (thesis ch. 4): each unique tree's card atlas, shared by its instances, and one eq. 4.1
+draw list of cards + lines per (unique tree, distance band); see \`docs/rendering-model.md\`, "Grove".
+
+${groveSection || '(not run)\n'}
 ## Google Benchmark (native)
 
 \`build/native/bin/niwa_gbench --benchmark_min_time=0.05\`, same workloads (short run: one

@@ -236,7 +236,8 @@ async function timeFrames(frames = 20, only = undefined) {
   ui.time.disabled = false;
   if (only !== undefined) requestFrame();  // the whole grove back on screen
   else updateStats(frame);
-  return { ...timing, width: renderer.canvas.width, height: renderer.canvas.height, viewMs };
+  window.grove.lastTiming = { ...timing, width: renderer.canvas.width, height: renderer.canvas.height, viewMs };
+  return window.grove.lastTiming;
 }
 
 // Share of canvas pixels each unique tree covers when its instances are drawn alone (differs from
@@ -312,5 +313,6 @@ async function start() {
   requestFrame();
 }
 
-window.grove = { timeFrames, coverage, instances: INSTANCES.length, unique: UNIQUE.length };
+// For tests and bench/grove.mjs; lastTiming is the last "Time N frames" result.
+window.grove = { timeFrames, coverage, instances: INSTANCES.length, unique: UNIQUE.length, lastTiming: null };
 start();
