@@ -2,13 +2,17 @@
 // Grove, hybrid mode: the line segments of one (unique tree, distance band) draw list as screen-space
 // quads (like line.vert), for every instance of the band at once: the segments are read from a
 // float texture (3 RGBA texels each: p0 + width px, p1, eq. 4.2 colour; rows of 1024 texels),
-// 4 indexed vertices per segment, one GL instance per tree instance. Shaded by grove_line.frag.
+// 4 indexed vertices per segment (uThin false), or 2 per segment drawn as gl.LINES for segments at
+// most a pixel wide (uThin true, from segment uFirst on); one GL instance per tree instance. Shaded
+// by grove_line.frag.
 layout(location = 0) in vec4 aInstance;   // xyz: position of the tree's base, w: scale
 layout(location = 1) in float aWidthScale;  // band representative's depth / this instance's depth
 
 uniform highp sampler2D uSegments;
 uniform mat4 uViewProjection;
 uniform vec2 uViewport;  // pixels
+uniform bool uThin;      // gl.LINES: vertex 2 s is p0 of segment uFirst + s, 2 s + 1 its p1
+uniform int uFirst;
 
 out vec3 vColor;
 out float vCoverage;  // a line thinner than a pixel is drawn 1 px wide and this opaque
@@ -16,6 +20,15 @@ out float vCoverage;  // a line thinner than a pixel is drawn 1 px wide and this
 vec4 texel(int i) { return texelFetch(uSegments, ivec2(i % 1024, i / 1024), 0); }
 
 void main() {
+  if (uThin) {
+    int segment = uFirst + gl_VertexID / 2;
+    vec4 a = texel(segment * 3);
+    vec3 p = (gl_VertexID & 1) == 0 ? a.xyz : texel(segment * 3 + 1).xyz;
+    vCoverage = clamp(a.w * aWidthScale, 0.0, 1.0);
+    vColor = texel(segment * 3 + 2).rgb;
+    gl_Position = uViewProjection * vec4(aInstance.xyz + aInstance.w * p, 1.0);
+    return;
+  }
   int segment = gl_VertexID / 4;  // indexed: 4 vertices per segment (triangles 0 1 2, 2 1 3)
   int k = gl_VertexID % 4;
   vec4 a = texel(segment * 3), b = texel(segment * 3 + 1), c = texel(segment * 3 + 2);

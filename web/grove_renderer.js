@@ -190,16 +190,24 @@ export class GroveRenderer {
       if (segments > 0) {
         // One texture per draw list: 3 RGBA32F texels per segment (p0 + width, p1, colour).
         // The width is the draw list's D_i (pixels, may be below 1: grove_line.vert blends by it).
+        // Segments no instance of the band sees wider than a pixel go last: they are drawn as
+        // gl.LINES (2 vertices each), the others as quads (4 indexed vertices each).
+        let widest = 0;
+        for (let i = 4; i < list.members.length; i += 5) widest = Math.max(widest, list.members[i]);
+        const p = new Float32Array(l.positions), col = new Float32Array(l.colors), w = new Float32Array(l.widths);
+        const order = [];
+        for (let s = 0; s < segments; ++s) if (w[s] * widest > 1) order.push(s);
+        band.thick = order.length;
+        for (let s = 0; s < segments; ++s) if (!(w[s] * widest > 1)) order.push(s);
         const rows = Math.ceil((segments * 3) / SEGMENT_ROW);
         const data = new Float32Array(rows * SEGMENT_ROW * 4);
-        const p = new Float32Array(l.positions), col = new Float32Array(l.colors), w = new Float32Array(l.widths);
-        for (let s = 0; s < segments; ++s) {
-          const o = s * 12;
+        order.forEach((s, k) => {
+          const o = k * 12;
           data.set(p.subarray(s * 6, s * 6 + 3), o);
           data[o + 3] = w[s];
           data.set(p.subarray(s * 6 + 3, s * 6 + 6), o + 4);
           data.set(col.subarray(s * 3, s * 3 + 3), o + 8);
-        }
+        });
         band.texture = gl.createTexture();
         gl.bindTexture(gl.TEXTURE_2D, band.texture);
         gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, SEGMENT_ROW, rows, 0, gl.RGBA, gl.FLOAT, data);
@@ -209,7 +217,7 @@ export class GroveRenderer {
         band.vaoLines = gl.createVertexArray();
         gl.bindVertexArray(band.vaoLines);
         this.#instanceAttributes(members, 5, 0);  // no per-vertex attributes: the segments are a texture
-        gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, this.#quadIndices(segments));
+        if (band.thick > 0) gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, this.#quadIndices(band.thick));
         gl.bindVertexArray(null);
         band.segments = segments;
       }
@@ -304,9 +312,18 @@ export class GroveRenderer {
         if (!band.segments || !wanted(band.tree)) continue;
         gl.bindTexture(gl.TEXTURE_2D, band.texture);
         gl.bindVertexArray(band.vaoLines);
-        gl.drawElementsInstanced(gl.TRIANGLES, band.segments * 6, gl.UNSIGNED_INT, 0, band.instances);
+        if (band.thick > 0) {
+          gl.uniform1i(lp.uniforms.uThin, 0);
+          gl.drawElementsInstanced(gl.TRIANGLES, band.thick * 6, gl.UNSIGNED_INT, 0, band.instances);
+          drawCalls += 1;
+        }
+        if (band.segments > band.thick) {
+          gl.uniform1i(lp.uniforms.uThin, 1);
+          gl.uniform1i(lp.uniforms.uFirst, band.thick);
+          gl.drawArraysInstanced(gl.LINES, 0, (band.segments - band.thick) * 2, band.instances);
+          drawCalls += 1;
+        }
         lines += band.segments * band.instances;
-        drawCalls += 1;
       }
       gl.depthMask(true);
       gl.disable(gl.BLEND);
