@@ -5,6 +5,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#if defined(__wasm_simd128__)
+#include <wasm_simd128.h>
+#elif defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "math/rotation.h"
 #include "random/pcg32.h"
@@ -30,6 +36,82 @@ glm::vec3 RotateToward(const glm::vec3& v, const glm::vec3& target, const CosSin
   float length = glm::length(axis);
   if (length < 1e-6f) return v;
   return glm::normalize(RotateAbout(v, Divide(axis, length), turn.c, turn.s));
+}
+
+// For each bud b of buds[0..count): b.direction = RotateToward(d, side, turns[i]) and
+// b.azimuth = Orthonormalize(side, b.direction), where on entry b.direction holds d (the node's
+// direction) and b.azimuth the side. Four buds at a time with SIMD where there is SIMD (SSE2,
+// WASM simd128), lane by lane the same IEEE operations in the same order as the scalar functions
+// (glm's cross, dot as (x + y) + z, normalize as v · (1 / sqrt(dot))), so the results are the
+// same bits; the square roots and divisions, which bound this step, take a quarter of the
+// instructions.
+void TurnBuds(Bud* buds, const CosSin* turns, std::size_t count) {
+  std::size_t i = 0;
+#if defined(__SSE2__) || defined(__wasm_simd128__)
+  typedef float Float4 __attribute__((vector_size(16)));
+  typedef int32_t Int4 __attribute__((vector_size(16)));
+  struct Vec4 {
+    Float4 x, y, z;
+  };
+  auto cross = [](const Vec4& a, const Vec4& b) {
+    return Vec4{a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y};
+  };
+  auto dot = [](const Vec4& a, const Vec4& b) {
+    Float4 tx = a.x * b.x, ty = a.y * b.y, tz = a.z * b.z;
+    return (tx + ty) + tz;
+  };
+  auto sqrt4 = [](Float4 v) {
+#if defined(__wasm_simd128__)
+    return (Float4)wasm_f32x4_sqrt((v128_t)v);
+#else
+    return (Float4)_mm_sqrt_ps((__m128)v);
+#endif
+  };
+  auto select = [](Int4 mask, Float4 yes, Float4 no) {
+    return (Float4)(((Int4)yes & mask) | ((Int4)no & ~mask));
+  };
+  for (; i + 4 <= count; i += 4) {
+    const Bud &b0 = buds[i], &b1 = buds[i + 1], &b2 = buds[i + 2], &b3 = buds[i + 3];
+    const Vec4 d{Float4{b0.direction.x, b1.direction.x, b2.direction.x, b3.direction.x},
+                 Float4{b0.direction.y, b1.direction.y, b2.direction.y, b3.direction.y},
+                 Float4{b0.direction.z, b1.direction.z, b2.direction.z, b3.direction.z}};
+    const Vec4 side{Float4{b0.azimuth.x, b1.azimuth.x, b2.azimuth.x, b3.azimuth.x},
+                    Float4{b0.azimuth.y, b1.azimuth.y, b2.azimuth.y, b3.azimuth.y},
+                    Float4{b0.azimuth.z, b1.azimuth.z, b2.azimuth.z, b3.azimuth.z}};
+    const Float4 c{turns[i].c, turns[i + 1].c, turns[i + 2].c, turns[i + 3].c};
+    const Float4 s{turns[i].s, turns[i + 1].s, turns[i + 2].s, turns[i + 3].s};
+    // RotateToward(d, side, turn): Rodrigues about the unit axis d × side, then normalize.
+    Vec4 axis = cross(d, side);
+    Float4 length = sqrt4(dot(axis, axis));
+    Int4 parallel = (Int4)(length < 1e-6f);  // RotateToward returns d unchanged
+    Vec4 u{axis.x / length, axis.y / length, axis.z / length};
+    Vec4 turned = cross(u, d);
+    Float4 along = dot(u, d) * (1.0f - c);
+    Vec4 r{(d.x * c + turned.x * s) + u.x * along, (d.y * c + turned.y * s) + u.y * along,
+           (d.z * c + turned.z * s) + u.z * along};
+    Float4 inverse = 1.0f / sqrt4(dot(r, r));
+    Vec4 direction{select(parallel, d.x, r.x * inverse), select(parallel, d.y, r.y * inverse),
+                   select(parallel, d.z, r.z * inverse)};
+    // Orthonormalize(side, direction).
+    Float4 projection = dot(side, direction);
+    Vec4 q{side.x - direction.x * projection, side.y - direction.y * projection,
+           side.z - direction.z * projection};
+    Float4 q_length = sqrt4(dot(q, q));
+    Vec4 azimuth{q.x / q_length, q.y / q_length, q.z / q_length};
+    for (int k = 0; k < 4; ++k) {
+      Bud& b = buds[i + static_cast<std::size_t>(k)];
+      b.direction = glm::vec3(direction.x[k], direction.y[k], direction.z[k]);
+      b.azimuth = q_length[k] < 1e-6f ? AnyPerpendicular(b.direction)
+                                      : glm::vec3(azimuth.x[k], azimuth.y[k], azimuth.z[k]);
+    }
+  }
+#endif
+  for (; i < count; ++i) {
+    Bud& b = buds[i];
+    glm::vec3 side = b.azimuth;
+    b.direction = RotateToward(b.direction, side, turns[i]);
+    b.azimuth = Orthonormalize(side, b.direction);
+  }
 }
 
 // Turns 2π·k/count for k = 0..count-1 (bud and leaf positions around a node).
@@ -402,14 +484,24 @@ void Grower::SetNextYearBuds() {
       }
     }
     bool any_breaking = false;
+    // The terminal bud is turned at once (its azimuth is set from its direction below); the
+    // others are stored with the node's direction and their side and turned in one batch
+    // (TurnBuds) at the end: the random draws do not depend on the geometry.
+    bud_turns_.clear();
     auto add_bud = [&](ShootKind kind, int node, glm::vec3 side, const CosSin& angle,
                        float probability, bool flower) {
       glm::vec3 d = f.direction[static_cast<std::size_t>(node)];
       Bud bud{};
       bud.kind = kind;
       bud.node = node;
-      bud.direction = RotateToward(d, side, angle);
-      bud.azimuth = Orthonormalize(side, bud.direction);
+      if (kind == ShootKind::kTerminal) {
+        bud.direction = RotateToward(d, side, angle);
+        bud.azimuth = Orthonormalize(side, bud.direction);
+      } else {
+        bud.direction = d;
+        bud.azimuth = side;
+        bud_turns_.push_back(angle);
+      }
       bud.flower = flower;
       bool breaks = flower || rng_.Bernoulli(probability);
       bud.state = breaks ? BudState::kBreaking : BudState::kDormant;
@@ -441,6 +533,8 @@ void Grower::SetNextYearBuds() {
         add_bud(ShootKind::kLateral, i, side, psi_l_, p_lateral, s.dwarf && dwarf_flowers);
       }
     }
+    TurnBuds(s.buds.data() + (s.buds.size() - bud_turns_.size()), bud_turns_.data(),
+             bud_turns_.size());
     if (any_breaking) breaking_.push_back(id);
   }
   const std::size_t new_breaking = breaking_.size();

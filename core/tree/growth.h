@@ -65,9 +65,10 @@ class Grower {
   GrowRequest request_;
   Tree tree_;
   GrowthTimings timings_;
-  std::vector<int> new_shoots_;  // ids of this year's shoots
-  std::vector<int> flowering_;   // ids of the branches with flowers this year
-  std::vector<int> breaking_;    // ids of the branches with a bud to break next year, ascending
+  std::vector<int> new_shoots_;    // ids of this year's shoots
+  std::vector<int> flowering_;     // ids of the branches with flowers this year
+  std::vector<CosSin> bud_turns_;  // SetNextYearBuds: turn of each bud awaiting TurnBuds
+  std::vector<int> breaking_;      // ids of the branches with a bud to break next year, ascending
   std::vector<float> turn_cos_, turn_sin_;  // phyllotaxis turn 2πϕ·i per node index i
   // Fixed angles of the parameters, computed once per tree: bending caps θ_bmax^b, θ_bmax^N
   // (eqs. 2.7, 2.9), the sympodial turn −θ_N, bud angles ψ_t, ψ_tl, ψ_l, and the turns 2π·k/B
