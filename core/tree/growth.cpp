@@ -38,6 +38,45 @@ glm::vec3 RotateToward(const glm::vec3& v, const glm::vec3& target, const CosSin
   return glm::normalize(RotateAbout(v, Divide(axis, length), turn.c, turn.s));
 }
 
+#if defined(__SSE2__) || defined(__wasm_simd128__)
+// Four vec3 at a time (one per lane) for the batched geometry below: each helper does, lane by
+// lane, exactly the IEEE operations of its glm counterpart in glm's order, so batched and scalar
+// results are the same bits.
+typedef float Float4 __attribute__((vector_size(16)));
+typedef int32_t Int4 __attribute__((vector_size(16)));
+struct Vec4 {
+  Float4 x, y, z;
+};
+Vec4 Cross(const Vec4& a, const Vec4& b) {  // glm::cross
+  return Vec4{a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y};
+}
+Float4 Dot(const Vec4& a, const Vec4& b) {  // glm::dot: (x + y) + z
+  Float4 tx = a.x * b.x, ty = a.y * b.y, tz = a.z * b.z;
+  return (tx + ty) + tz;
+}
+Float4 Sqrt(Float4 v) {
+#if defined(__wasm_simd128__)
+  return (Float4)wasm_f32x4_sqrt((v128_t)v);
+#else
+  return (Float4)_mm_sqrt_ps((__m128)v);
+#endif
+}
+Float4 Select(Int4 mask, Float4 yes, Float4 no) {
+  return (Float4)(((Int4)yes & mask) | ((Int4)no & ~mask));
+}
+// RotateAbout(v, axis, c, s) of math/rotation.h.
+Vec4 RotateAbout4(const Vec4& v, const Vec4& axis, Float4 c, Float4 s) {
+  Vec4 turned = Cross(axis, v);
+  Float4 along = Dot(axis, v) * (1.0f - c);
+  return Vec4{(v.x * c + turned.x * s) + axis.x * along, (v.y * c + turned.y * s) + axis.y * along,
+              (v.z * c + turned.z * s) + axis.z * along};
+}
+Vec4 Normalize4(const Vec4& v) {  // glm::normalize: v · (1 / sqrt(dot(v, v)))
+  Float4 inverse = 1.0f / Sqrt(Dot(v, v));
+  return Vec4{v.x * inverse, v.y * inverse, v.z * inverse};
+}
+#endif
+
 // For each bud b of buds[0..count): b.direction = RotateToward(d, side, turns[i]) and
 // b.azimuth = Orthonormalize(side, b.direction), where on entry b.direction holds d (the node's
 // direction) and b.azimuth the side. Four buds at a time with SIMD where there is SIMD (SSE2,
@@ -48,28 +87,6 @@ glm::vec3 RotateToward(const glm::vec3& v, const glm::vec3& target, const CosSin
 void TurnBuds(Bud* buds, const CosSin* turns, std::size_t count) {
   std::size_t i = 0;
 #if defined(__SSE2__) || defined(__wasm_simd128__)
-  typedef float Float4 __attribute__((vector_size(16)));
-  typedef int32_t Int4 __attribute__((vector_size(16)));
-  struct Vec4 {
-    Float4 x, y, z;
-  };
-  auto cross = [](const Vec4& a, const Vec4& b) {
-    return Vec4{a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y};
-  };
-  auto dot = [](const Vec4& a, const Vec4& b) {
-    Float4 tx = a.x * b.x, ty = a.y * b.y, tz = a.z * b.z;
-    return (tx + ty) + tz;
-  };
-  auto sqrt4 = [](Float4 v) {
-#if defined(__wasm_simd128__)
-    return (Float4)wasm_f32x4_sqrt((v128_t)v);
-#else
-    return (Float4)_mm_sqrt_ps((__m128)v);
-#endif
-  };
-  auto select = [](Int4 mask, Float4 yes, Float4 no) {
-    return (Float4)(((Int4)yes & mask) | ((Int4)no & ~mask));
-  };
   for (; i + 4 <= count; i += 4) {
     const Bud &b0 = buds[i], &b1 = buds[i + 1], &b2 = buds[i + 2], &b3 = buds[i + 3];
     const Vec4 d{Float4{b0.direction.x, b1.direction.x, b2.direction.x, b3.direction.x},
@@ -81,22 +98,18 @@ void TurnBuds(Bud* buds, const CosSin* turns, std::size_t count) {
     const Float4 c{turns[i].c, turns[i + 1].c, turns[i + 2].c, turns[i + 3].c};
     const Float4 s{turns[i].s, turns[i + 1].s, turns[i + 2].s, turns[i + 3].s};
     // RotateToward(d, side, turn): Rodrigues about the unit axis d × side, then normalize.
-    Vec4 axis = cross(d, side);
-    Float4 length = sqrt4(dot(axis, axis));
+    Vec4 axis = Cross(d, side);
+    Float4 length = Sqrt(Dot(axis, axis));
     Int4 parallel = (Int4)(length < 1e-6f);  // RotateToward returns d unchanged
     Vec4 u{axis.x / length, axis.y / length, axis.z / length};
-    Vec4 turned = cross(u, d);
-    Float4 along = dot(u, d) * (1.0f - c);
-    Vec4 r{(d.x * c + turned.x * s) + u.x * along, (d.y * c + turned.y * s) + u.y * along,
-           (d.z * c + turned.z * s) + u.z * along};
-    Float4 inverse = 1.0f / sqrt4(dot(r, r));
-    Vec4 direction{select(parallel, d.x, r.x * inverse), select(parallel, d.y, r.y * inverse),
-                   select(parallel, d.z, r.z * inverse)};
+    Vec4 r = Normalize4(RotateAbout4(d, u, c, s));
+    Vec4 direction{Select(parallel, d.x, r.x), Select(parallel, d.y, r.y),
+                   Select(parallel, d.z, r.z)};
     // Orthonormalize(side, direction).
-    Float4 projection = dot(side, direction);
+    Float4 projection = Dot(side, direction);
     Vec4 q{side.x - direction.x * projection, side.y - direction.y * projection,
            side.z - direction.z * projection};
-    Float4 q_length = sqrt4(dot(q, q));
+    Float4 q_length = Sqrt(Dot(q, q));
     Vec4 azimuth{q.x / q_length, q.y / q_length, q.z / q_length};
     for (int k = 0; k < 4; ++k) {
       Bud& b = buds[i + static_cast<std::size_t>(k)];
@@ -112,6 +125,46 @@ void TurnBuds(Bud* buds, const CosSin* turns, std::size_t count) {
     b.direction = RotateToward(b.direction, side, turns[i]);
     b.azimuth = Orthonormalize(side, b.direction);
   }
+}
+
+// Leaf directions of a shoot: leaf j = (i - 1)·per_node + k sits at node i, turned turns[k]
+// around it: normalize(RotateAbout(azimuth[i], direction[i], turn) + direction[i]·lift). Four
+// leaves at a time with SIMD where there is SIMD, the same bits as the scalar expression.
+void LeafDirections(Leaf* leaves, std::size_t count, const glm::vec3* azimuth,
+                    const glm::vec3* direction, const CosSin* turns, std::size_t per_node,
+                    float lift) {
+  auto scalar = [&](std::size_t j) {
+    const std::size_t i = j / per_node + 1;
+    const CosSin& turn = turns[j % per_node];
+    glm::vec3 side = RotateAbout(azimuth[i], direction[i], turn.c, turn.s);
+    leaves[j].direction = glm::normalize(side + direction[i] * lift);
+  };
+  std::size_t j = 0;
+#if defined(__SSE2__) || defined(__wasm_simd128__)
+  for (; j + 4 <= count; j += 4) {
+    std::size_t node[4];
+    float c[4], s[4];
+    for (std::size_t k = 0; k < 4; ++k) {
+      node[k] = (j + k) / per_node + 1;
+      c[k] = turns[(j + k) % per_node].c;
+      s[k] = turns[(j + k) % per_node].s;
+    }
+    const glm::vec3 &a0 = azimuth[node[0]], &a1 = azimuth[node[1]], &a2 = azimuth[node[2]],
+                    &a3 = azimuth[node[3]];
+    const glm::vec3 &d0 = direction[node[0]], &d1 = direction[node[1]], &d2 = direction[node[2]],
+                    &d3 = direction[node[3]];
+    const Vec4 a{Float4{a0.x, a1.x, a2.x, a3.x}, Float4{a0.y, a1.y, a2.y, a3.y},
+                 Float4{a0.z, a1.z, a2.z, a3.z}};
+    const Vec4 d{Float4{d0.x, d1.x, d2.x, d3.x}, Float4{d0.y, d1.y, d2.y, d3.y},
+                 Float4{d0.z, d1.z, d2.z, d3.z}};
+    Vec4 side = RotateAbout4(a, d, Float4{c[0], c[1], c[2], c[3]}, Float4{s[0], s[1], s[2], s[3]});
+    Vec4 out = Normalize4(Vec4{side.x + d.x * lift, side.y + d.y * lift, side.z + d.z * lift});
+    for (std::size_t k = 0; k < 4; ++k) {
+      leaves[j + k].direction = glm::vec3(out.x[k], out.y[k], out.z[k]);
+    }
+  }
+#endif
+  for (; j < count; ++j) scalar(j);
 }
 
 // Turns 2π·k/count for k = 0..count-1 (bud and leaf positions around a node).
@@ -474,15 +527,13 @@ void Grower::SetNextYearBuds() {
     s.leaves.reserve(static_cast<std::size_t>(tip * per_node));
     s.buds.reserve(
         static_cast<std::size_t>((terminal_buds > 0 ? 1 : 0) + tl_buds + (tip - 1) * lateral_buds));
+    const std::size_t first_leaf = s.leaves.size();
     for (int i = 1; i <= tip; ++i) {
-      for (int k = 0; k < per_node; ++k) {
-        const CosSin& turn = around_leaves_[static_cast<std::size_t>(k)];
-        glm::vec3 side = RotateAbout(f.azimuth[static_cast<std::size_t>(i)],
-                                     f.direction[static_cast<std::size_t>(i)], turn.c, turn.s);
-        s.leaves.push_back(
-            {i, glm::normalize(side + f.direction[static_cast<std::size_t>(i)] * leaf_lift)});
-      }
+      for (int k = 0; k < per_node; ++k) s.leaves.push_back({i, glm::vec3(0.0f)});
     }
+    LeafDirections(s.leaves.data() + first_leaf, s.leaves.size() - first_leaf, f.azimuth.data(),
+                   f.direction.data(), around_leaves_.data(), static_cast<std::size_t>(per_node),
+                   leaf_lift);
     bool any_breaking = false;
     // The terminal bud is turned at once (its azimuth is set from its direction below); the
     // others are stored with the node's direction and their side and turned in one batch
