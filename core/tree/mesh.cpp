@@ -34,7 +34,14 @@ constexpr std::size_t kFlowerIndices = 2 * 3 * kFlowerOutline;
 glm::vec3 SafeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
   float length = glm::length(v);
   if (!(length > kEpsilon) || !std::isfinite(length)) return fallback;
-  return v / length;
+  return Divide(v, length);
+}
+
+// SafeNormalize(v, AnyPerpendicular(to)), the fallback computed only when it is needed.
+glm::vec3 SafeNormalizeOrPerpendicular(const glm::vec3& v, const glm::vec3& to) {
+  float length = glm::length(v);
+  if (!(length > kEpsilon) || !std::isfinite(length)) return AnyPerpendicular(to);
+  return Divide(v, length);
 }
 
 int SidesForRadius(float radius_cm, int lo, int hi) {
@@ -94,19 +101,25 @@ Writer StartWriting(MeshBuffers* mesh, std::vector<uint32_t>* branch_id,
 // cos and sin of the angles 2π·j/sides, j = 0..sides-1, for every side count a tube may have.
 struct RingTable {
   int lo = 3;
-  std::vector<std::vector<float>> cos, sin;
+  std::vector<std::vector<float>> cos, sin, u;  // u: j / sides for j = 0..sides (the seam: 1)
   RingTable(int lo_sides, int hi_sides) : lo(lo_sides) {
     for (int sides = lo_sides; sides <= hi_sides; ++sides) {
       std::vector<float> c(static_cast<std::size_t>(sides)), s(static_cast<std::size_t>(sides));
+      std::vector<float> around(static_cast<std::size_t>(sides) + 1);
       for (int j = 0; j < sides; ++j) {
         float angle = 2.0f * kPi * static_cast<float>(j) / static_cast<float>(sides);
         c[static_cast<std::size_t>(j)] = det::Cosf(angle);
         s[static_cast<std::size_t>(j)] = det::Sinf(angle);
       }
+      for (int j = 0; j <= sides; ++j) {
+        around[static_cast<std::size_t>(j)] = static_cast<float>(j) / static_cast<float>(sides);
+      }
       cos.push_back(std::move(c));
       sin.push_back(std::move(s));
+      u.push_back(std::move(around));
     }
   }
+  const float* U(int sides) const { return u[static_cast<std::size_t>(sides - lo)].data(); }
   const float* Cos(int sides) const { return cos[static_cast<std::size_t>(sides - lo)].data(); }
   const float* Sin(int sides) const { return sin[static_cast<std::size_t>(sides - lo)].data(); }
 };
@@ -194,6 +207,7 @@ void AddBranchTube(const std::vector<ChildInfo>& info, const Branch& branch, flo
   const std::vector<glm::vec3>& tangent = scratch->tangent;
   const float* ring_cos = ring.Cos(sides);
   const float* ring_sin = ring.Sin(sides);
+  const float* ring_u = ring.U(sides);
 
   // Arc length (metres) of every node, continuing the parent's v at the attachment.
   node_v[0] = v_start;
@@ -209,7 +223,7 @@ void AddBranchTube(const std::vector<ChildInfo>& info, const Branch& branch, flo
   glm::vec3 binormal(0.0f);
   for (std::size_t i = 0; i < rings; ++i) {
     if (i > 0) normal = TransportNormal(normal, tangent[i - 1], tangent[i]);
-    binormal = SafeNormalize(glm::cross(tangent[i], normal), AnyPerpendicular(tangent[i]));
+    binormal = SafeNormalizeOrPerpendicular(glm::cross(tangent[i], normal), tangent[i]);
     float t = length > 0.0f ? (node_v[i] - v_start) / length : 0.0f;
     float radius = (base_radius + (tip_radius - base_radius) * t) * scale;
     glm::vec3 center = branch.nodes[i] * scale;
@@ -217,8 +231,7 @@ void AddBranchTube(const std::vector<ChildInfo>& info, const Branch& branch, flo
       int k = j % sides;
       // Unit within rounding: normal and binormal are orthonormal, cos² + sin² = 1.
       glm::vec3 radial = normal * ring_cos[k] + binormal * ring_sin[k];
-      bark->Vertex(center + radial * radius, radial,
-                   static_cast<float>(j) / static_cast<float>(sides), node_v[i], id,
+      bark->Vertex(center + radial * radius, radial, ring_u[j], node_v[i], id,
                    static_cast<uint32_t>(i));
     }
   }
@@ -274,7 +287,7 @@ void AddLeaf(const Branch& branch, const Leaf& leaf, float leaf_size, const Mesh
   const float scale = options.cm_to_units;
   glm::vec3 along = SafeNormalize(leaf.direction, kUp);
   // The blade's width runs horizontally when it can, so the leaf faces the sky.
-  glm::vec3 across = SafeNormalize(glm::cross(along, kUp), AnyPerpendicular(along));
+  glm::vec3 across = SafeNormalizeOrPerpendicular(glm::cross(along, kUp), along);
   glm::vec3 normal = SafeNormalize(glm::cross(across, along), kUp);
   glm::vec3 base = branch.nodes[static_cast<std::size_t>(leaf.node)] * scale;
   glm::vec3 tip = base + along * (leaf_size * scale);
@@ -307,7 +320,7 @@ void AddFlower(const Branch& branch, int node, const MeshOptions& options,
   glm::vec3 outward = SafeNormalize(glm::vec3(position.x, 0.0f, position.z), glm::vec3(0.0f));
   glm::vec3 facing = SafeNormalize(kUp + 0.5f * outward, kUp);
   glm::vec3 a = AnyPerpendicular(facing);
-  glm::vec3 b = SafeNormalize(glm::cross(facing, a), AnyPerpendicular(a));
+  glm::vec3 b = SafeNormalizeOrPerpendicular(glm::cross(facing, a), a);
   glm::vec3 center = (position + facing * kFlowerLift) * scale;
   for (int side = 0; side < 2; ++side) {
     glm::vec3 normal = side == 0 ? facing : -facing;
