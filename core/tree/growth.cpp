@@ -75,6 +75,89 @@ Vec4 Normalize4(const Vec4& v) {  // glm::normalize: v · (1 / sqrt(dot(v, v)))
   Float4 inverse = 1.0f / Sqrt(Dot(v, v));
   return Vec4{v.x * inverse, v.y * inverse, v.z * inverse};
 }
+// RotateToward(v, target, turn) of this file: v unchanged where v and target are parallel.
+Vec4 RotateToward4(const Vec4& v, const Vec4& target, Float4 c, Float4 s) {
+  Vec4 axis = Cross(v, target);
+  Float4 length = Sqrt(Dot(axis, axis));
+  Int4 parallel = (Int4)(length < 1e-6f);
+  Vec4 u{axis.x / length, axis.y / length, axis.z / length};
+  Vec4 r = Normalize4(RotateAbout4(v, u, c, s));
+  return Vec4{Select(parallel, v.x, r.x), Select(parallel, v.y, r.y), Select(parallel, v.z, r.z)};
+}
+
+// Two doubles at a time: det::Acos and det::SinCos lane by lane (same operations, same order;
+// branches as masks, floor by adding and subtracting 1.5·2^52, exact for |y| < 2^51).
+typedef double Double2 __attribute__((vector_size(16)));
+typedef int64_t Long2 __attribute__((vector_size(16)));
+constexpr double kRound = 6755399441055744.0;  // 1.5·2^52
+Double2 Sqrt(Double2 v) {
+#if defined(__wasm_simd128__)
+  return (Double2)wasm_f64x2_sqrt((v128_t)v);
+#else
+  return (Double2)_mm_sqrt_pd((__m128d)v);
+#endif
+}
+Double2 Select(Long2 mask, Double2 yes, Double2 no) {
+  return (Double2)(((Long2)yes & mask) | ((Long2)no & ~mask));
+}
+Double2 Floor(Double2 y) {
+  const Double2 nearest = (y + kRound) - kRound;
+  const Long2 one = {0x3FF0000000000000, 0x3FF0000000000000};  // 1.0
+  return nearest - (Double2)((Long2)(nearest > y) & one);
+}
+Double2 AtanUnit(Double2 x) {  // det::AtanUnit
+  for (int i = 0; i < 2; ++i) x = x / (1.0 + Sqrt(1.0 + x * x));
+  Double2 x2 = x * x;
+  Double2 x4 = x2 * x2, x8 = x4 * x4;
+  Double2 p =
+      (((-0.3333333333333333 + 0.2 * x2) + (-0.14285714285714285 + 0.1111111111111111 * x2) * x4) +
+       ((-0.09090909090909091 + 0.07692307692307693 * x2) +
+        (-0.06666666666666667 + 0.058823529411764705 * x2) * x4) *
+           x8) +
+      ((-0.05263157894736842 + 0.047619047619047616 * x2) +
+       (-0.043478260869565216 + 0.04 * x2) * x4) *
+          (x8 * x8);
+  return 4.0 * (x + x * (x2 * p));
+}
+// det::Acos for x in [-1, 1]: Atan2(sqrt((1 - x)(1 + x)), x), whose y is >= 0.
+Double2 Acos(Double2 x) {
+  const Double2 y = Sqrt((1.0 - x) * (1.0 + x));
+  const Long2 abs_mask = {0x7FFFFFFFFFFFFFFF, 0x7FFFFFFFFFFFFFFF};
+  const Double2 ax = (Double2)((Long2)x & abs_mask), ay = y;
+  const Long2 flat = (Long2)(ay <= ax);
+  const Double2 a = AtanUnit(Select(flat, ay, ax) / Select(flat, ax, ay));
+  Double2 angle = Select(flat, a, det::kPi / 2.0 - a);
+  angle = Select((Long2)(x < 0.0), det::kPi - angle, angle);
+  angle = Select((Long2)(x >= 1.0), Double2{0.0, 0.0}, angle);
+  return Select((Long2)(x <= -1.0), Double2{det::kPi, det::kPi}, angle);
+}
+void SinCos(Double2 x, Double2* s, Double2* c) {  // det::SinCos
+  const Double2 q = Floor(x / (det::kPi / 2.0) + 0.5);
+  const Double2 r = x - q * (det::kPi / 2.0);
+  const Double2 r2 = r * r;
+  const Double2 r4 = r2 * r2, r8 = r4 * r4;
+  const Double2 ps = ((-0.16666666666666666 + 0.008333333333333333 * r2) +
+                      (-0.0001984126984126984 + 2.7557319223985893e-06 * r2) * r4) +
+                     ((-2.505210838544172e-08 + 1.6059043836821613e-10 * r2) +
+                      (-7.647163731819816e-13 + 2.8114572543455206e-15 * r2) * r4) *
+                         r8 +
+                     -8.22063524662433e-18 * (r8 * r8);
+  const Double2 pc = ((-0.5 + 0.041666666666666664 * r2) +
+                      (-0.001388888888888889 + 2.48015873015873e-05 * r2) * r4) +
+                     ((-2.755731922398589e-07 + 2.08767569878681e-09 * r2) +
+                      (-1.1470745597729725e-11 + 4.779477332387385e-14 * r2) * r4) *
+                         r8 +
+                     (-1.5619206968586225e-16 + 4.110317623312165e-19 * r2) * (r8 * r8);
+  const Double2 sin_r = r + r * (r2 * ps);
+  const Double2 cos_r = 1.0 + r2 * pc;
+  // Quadrant q & 3 from the low bits of q + 1.5·2^52 (2^51 is a multiple of 4).
+  const Long2 quadrant = (Long2)(q + kRound) & 3;
+  const Long2 swap = -(quadrant & 1), sin_negative = -((quadrant >> 1) & 1);
+  const Long2 cos_negative = -((quadrant ^ (quadrant >> 1)) & 1);
+  const Double2 s0 = Select(swap, cos_r, sin_r), c0 = Select(swap, sin_r, cos_r);
+  *s = Select(sin_negative, -s0, s0);
+  *c = Select(cos_negative, -c0, c0);
+}
 #endif
 
 // For each bud b of buds[0..count): b.direction = RotateToward(d, side, turns[i]) and
@@ -398,6 +481,62 @@ void Grower::LayOutShoots(bool bend) {
   ShootLayout lanes[kLanes];
   std::size_t used = 0, longest = 0;
   auto flush = [&]() {
+#if defined(__SSE2__) || defined(__wasm_simd128__)
+    if (!zigzag) {
+      // Without the zigzag every lane is a bending shoot (b > 0): node i of all four lanes at
+      // once with SIMD, eqs. 2.6-2.9 as in `step` (det_math two lanes at a time, the rotation
+      // four), the same bits. Idle lanes turn a dummy and are not written.
+      for (std::size_t i = 1; i < longest; ++i) {
+        Vec4 direction{}, target{};
+        Float4 b{}, difference_of_lane{};
+        for (std::size_t k = 0; k < used; ++k) {
+          const ShootLayout& l = lanes[k];
+          direction.x[k] = l.direction.x;
+          direction.y[k] = l.direction.y;
+          direction.z[k] = l.direction.z;
+          target.x[k] = l.target.x;
+          target.y[k] = l.target.y;
+          target.z[k] = l.target.z;
+          b[k] = l.b;
+        }
+        // AngleBetween (eqs. 2.6, 2.8): the dot product clamped to [-1, 1], then det::Acosf.
+        Float4 cosine = Dot(direction, target);
+        cosine = Select((Int4)(cosine > 1.0f), Float4{1, 1, 1, 1}, cosine);
+        cosine = Select((Int4)(cosine < -1.0f), Float4{-1, -1, -1, -1}, cosine);
+        Double2 low = Acos(Double2{cosine[0], cosine[1]});
+        Double2 high = Acos(Double2{cosine[2], cosine[3]});
+        difference_of_lane = Float4{static_cast<float>(low[0]), static_cast<float>(low[1]),
+                                    static_cast<float>(high[0]), static_cast<float>(high[1])};
+        const Float4 angle = b * difference_of_lane;
+        Double2 s_low, c_low, s_high, c_high;
+        SinCos(Double2{angle[0], angle[1]}, &s_low, &c_low);
+        SinCos(Double2{angle[2], angle[3]}, &s_high, &c_high);
+        // Eqs. 2.7, 2.9: angles above the cap turn by the cap.
+        const float cap = i == 1 ? cap_branch : cap_node;
+        const CosSin& cap_turn = i == 1 ? cap_branch_ : cap_node_;
+        const Int4 capped = (Int4)(cap < angle);
+        const Float4 c =
+            Select(capped, Float4{cap_turn.c, cap_turn.c, cap_turn.c, cap_turn.c},
+                   Float4{static_cast<float>(c_low[0]), static_cast<float>(c_low[1]),
+                          static_cast<float>(c_high[0]), static_cast<float>(c_high[1])});
+        const Float4 s =
+            Select(capped, Float4{cap_turn.s, cap_turn.s, cap_turn.s, cap_turn.s},
+                   Float4{static_cast<float>(s_low[0]), static_cast<float>(s_low[1]),
+                          static_cast<float>(s_high[0]), static_cast<float>(s_high[1])});
+        const Vec4 turned = RotateToward4(direction, target, c, s);
+        for (std::size_t k = 0; k < used; ++k) {
+          ShootLayout& l = lanes[k];
+          Branch& shoot = *l.shoot;
+          if (i >= shoot.nodes.size()) continue;
+          if (l.b > 0.0f) l.direction = glm::vec3(turned.x[k], turned.y[k], turned.z[k]);
+          shoot.nodes[i] = shoot.nodes[i - 1] + l.direction * shoot.internode_length;
+        }
+      }
+      used = 0;
+      longest = 0;
+      return;
+    }
+#endif
     for (std::size_t i = 1; i < longest; ++i) {
       for (std::size_t k = 0; k < used; ++k) {
         if (i < lanes[k].shoot->nodes.size()) step(lanes[k], i);
