@@ -22,7 +22,16 @@
 //                           weight per vertex; swayNodes() node points; swayStart() -> "" or error
 //                           (rest pose, time 0, the state's wind); swayStep(n) advances n steps of
 //                           dt and returns the time; swayPoses() (16 floats per node point, see
-//                           WriteSwayPoses); swayDt(), swayDuration(), swayWindSpeed() (m/s now);
+//                           WriteSwayPoses); swayDt(), swayDuration(), swayWindSpeed() (m/s now,
+//                           at the world origin);
+//                           swayStartAt(origins) -> "" or error: the same tree swayed as N
+//                           instances (the grove page): origins = JS array of 3 N numbers, each
+//                           instance's base in the world in METRES (x, y, z; converted to the
+//                           model's cm), one SwaySimulator per instance, so each feels the wind
+//                           field (travelling front and wave) at its own place; swayStep(n) then
+//                           steps all N and swayPoses() holds N blocks of swayNodes() x 16 floats,
+//                           instance k's node point j at floats (k swayNodes() + j) 16;
+//                           swayInstances() -> N (1 after swayStart(), 0 before any start);
 //                           hybrid rendering (thesis ch. 4, core/render): buildHybrid() -> "" or
 //                           error (scene + atlas geometry: atlasSize(), atlasBarkPositions() ...
 //                           atlasFlowersIndices(), clip-space triangles that paint the card atlas);
@@ -276,7 +285,7 @@ class GrowSession {
     for (const Branch& branch : grower_->tree().branches) parents_.push_back(branch.parent);
     // The node points of this tree and the skin that ties every vertex to one of them (thesis
     // 3.3.1, eq. 3.15); the pose texture starts at rest.
-    sway_.reset();
+    sways_.clear();
     sway_model_ = BuildSwayModel(grower_->tree(), SwayParams(state_.params));
     skin_ = BuildTreeSkin(mesh_, sway_model_);
     poses_.assign(sway_model_.nodes.size() * kSwayPoseFloats, 0.0f);
@@ -287,31 +296,45 @@ class GrowSession {
   int swayNodes() const { return static_cast<int>(sway_model_.nodes.size()); }
 
   // (Re)starts the sway from rest at time 0 with the state's sway and wind parameters.
-  std::string swayStart() {
-    if (!grower_) return error_.empty() ? "no tree" : error_;
-    SwayParams params = SwayParamsOf(state_.params);
-    std::string error = CheckSwayParams(state_.params);
-    if (!error.empty()) return error;
-    sway_ = std::make_unique<SwaySimulator>(grower_->tree(), params);
-    sway_params_ = params;
-    RestSwayPoses(sway_model_.nodes.size(), poses_.data());
-    return "";
-  }
+  std::string swayStart() { return StartSway({glm::dvec3(0.0)}); }
 
-  // Advances `steps` time steps (at most 64 per call) and writes the poses; returns the time (s).
+  // The same with one simulator per instance; origins: 3 numbers per instance, metres.
+  std::string swayStartAt(emscripten::val origins) {
+    if (!origins.isArray()) return "sway: origins must be an array of 3 numbers per instance";
+    const std::vector<double> o = emscripten::vecFromJSArray<double>(origins);
+    if (o.empty() || o.size() % 3 != 0 || o.size() / 3 > kMaxSwayInstances)
+      return "sway: origins must hold 3 numbers per instance, 1 to " +
+             std::to_string(kMaxSwayInstances) + " instances";
+    std::vector<glm::dvec3> at;
+    for (std::size_t i = 0; i < o.size(); i += 3) {
+      if (!std::isfinite(o[i]) || !std::isfinite(o[i + 1]) || !std::isfinite(o[i + 2]))
+        return "sway: origins must be finite numbers";
+      at.emplace_back(o[i] * 100.0, o[i + 1] * 100.0, o[i + 2] * 100.0);  // m -> cm
+    }
+    return StartSway(at);
+  }
+  int swayInstances() const { return static_cast<int>(sways_.size()); }
+
+  // Advances every instance `steps` time steps (at most 64 per call) and writes the poses (one
+  // block per instance); returns the time (s).
   double swayStep(int steps) {
-    if (!sway_) return 0;
-    for (int i = 0; i < std::min(std::max(steps, 0), 64); ++i) sway_->Step();
-    if (poses_.size() == sway_->model().nodes.size() * kSwayPoseFloats)
-      WriteSwayPoses(*sway_, MeshOptions{}.cm_to_units, poses_.data());
-    return sway_->time();
+    if (sways_.empty()) return 0;
+    const std::size_t nodes = sway_model_.nodes.size();
+    const int n = std::min(std::max(steps, 0), 64);
+    for (std::size_t k = 0; k < sways_.size(); ++k) {
+      for (int i = 0; i < n; ++i) sways_[k]->Step();
+      if (poses_.size() == sways_.size() * nodes * kSwayPoseFloats)
+        WriteSwayPoses(*sways_[k], MeshOptions{}.cm_to_units,
+                       poses_.data() + k * nodes * kSwayPoseFloats);
+    }
+    return sways_[0]->time();
   }
   double swayDt() const { return sway_params_.dt; }
   double swayDuration() const { return sway_params_.duration; }
   // Wind speed (m/s) at the tree's root now: drives the leaf flutter in the shader.
   double swayWindSpeed() const {
-    if (!sway_) return 0;
-    return glm::length(WindAt(sway_params_, glm::dvec3(0.0), sway_->time())) / 100.0;
+    if (sways_.empty()) return 0;
+    return glm::length(WindAt(sway_params_, glm::dvec3(0.0), sways_[0]->time())) / 100.0;
   }
 
   // {internodes, branches, leaves, flowers, height (cm), years, seed, preset, truncated, ms,
@@ -480,6 +503,24 @@ class GrowSession {
   std::string paramsJson() const { return ParamsToJson(state_.params); }
 
  private:
+  static constexpr std::size_t kMaxSwayInstances = 4096;
+
+  // One simulator per origin (cm), from rest at time 0; the poses at rest.
+  std::string StartSway(const std::vector<glm::dvec3>& origins) {
+    if (!grower_) return error_.empty() ? "no tree" : error_;
+    SwayParams params = SwayParamsOf(state_.params);
+    std::string error = CheckSwayParams(state_.params);
+    if (!error.empty()) return error;
+    sways_.clear();
+    for (const glm::dvec3& origin : origins)
+      sways_.push_back(std::make_unique<SwaySimulator>(grower_->tree(), params, origin));
+    sway_params_ = params;
+    const std::size_t points = origins.size() * sway_model_.nodes.size();
+    poses_.assign(points * kSwayPoseFloats, 0.0f);
+    RestSwayPoses(points, poses_.data());
+    return "";
+  }
+
   template <typename T>
   static emscripten::val View(const std::vector<T>& data) {
     return emscripten::val(emscripten::typed_memory_view(data.size(), data.data()));
@@ -494,8 +535,8 @@ class GrowSession {
   SwayModel sway_model_;
   TreeSkin skin_;
   SwayParams sway_params_;
-  std::unique_ptr<SwaySimulator> sway_;
-  std::vector<float> poses_;
+  std::vector<std::unique_ptr<SwaySimulator>> sways_;  // one per instance (swayStartAt)
+  std::vector<float> poses_;  // sways_.size() blocks of nodes x 16 floats (one at rest before)
   HybridScene hybrid_;
   AtlasMesh atlas_;
   HybridSelection selection_;
@@ -550,6 +591,8 @@ EMSCRIPTEN_BINDINGS(niwa) {
       .function("flowersWeights", &niwa::GrowSession::flowersWeights)
       .function("swayNodes", &niwa::GrowSession::swayNodes)
       .function("swayStart", &niwa::GrowSession::swayStart)
+      .function("swayStartAt", &niwa::GrowSession::swayStartAt)
+      .function("swayInstances", &niwa::GrowSession::swayInstances)
       .function("swayStep", &niwa::GrowSession::swayStep)
       .function("swayPoses", &niwa::GrowSession::swayPoses)
       .function("swayDt", &niwa::GrowSession::swayDt)

@@ -1,6 +1,10 @@
 // Grove page (public/grove.html): 100 trees made of 10 unique trees (5 presets × 2 seeds), each grown
 // once in the shared worker and drawn instanced, in full mode or hybrid mode (thesis ch. 4) with one
-// eq. 4.1 draw list per (unique tree, distance band). Hash: #mode=full|hybrid&cam=yaw,pitch,dist,tx,ty,tz.
+// eq. 4.1 draw list per (unique tree, distance band). Hash: #mode=full|hybrid&cam=yaw,pitch,dist,tx,ty,tz
+// &wind=1 (blowing) and any of the wind rows of the parameter table (WIND below), read at load.
+// Wind (issue 6, beyond the thesis): Blow sways every instance with the wind at ITS position: the
+// worker runs one SwaySimulator per instance (origin = the instance's base) for each unique tree and
+// sends all instances' poses of that tree in one 'pose'; the shaders skin each instance with its block.
 import { OrbitCamera } from './camera.js';
 import { GroveRenderer } from './grove_renderer.js';
 
@@ -14,6 +18,14 @@ export const UNIQUE = [
 ];
 const ROWS = 10, SPACING = 4.2;  // 10 × 10 trees, metres apart (jittered)
 const BAND_RATIO = 1.4;  // distance bands: [d, 1.4 d) share one draw list per unique tree
+// The grove's wind (rows of the parameter table, group "wind"): 8 m/s towards +x with a gust front
+// travelling downwind at 4 m/s that enters the grove's upwind edge (x ≈ −20 m) as Blow is pressed
+// (gust_on 5 s at x = 0) and crosses it in about 10 s, and a ±40 % wave 25 m long every 5 s; the wind
+// then blows for the 10 minutes of the run. A hash key of the same name overrides a value.
+export const WIND = {
+  wind_speed: 8, wind_dir: 0, gust_on: 5, gust_off: 600, duration: 600,
+  gust_front_speed: 4, wind_variation: 0.4, wind_wavelength: 25, wind_period: 5,
+};
 
 const root = document.documentElement;
 const ui = {
@@ -25,6 +37,8 @@ const ui = {
   timing: document.getElementById('timing'),
   message: document.getElementById('message'),
   reset: document.getElementById('reset-view'),
+  wind: document.getElementById('wind'),
+  windInfo: document.getElementById('wind-info'),
 };
 
 // The grove: instance -> unique tree, base position and scale (a fixed pseudo-random layout).
@@ -37,10 +51,13 @@ function layout() {
     return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
   };
   const out = [];
+  const blocks = new Array(UNIQUE.length).fill(0);
   for (let r = 0; r < ROWS; ++r) {
     for (let c = 0; c < ROWS; ++c) {
+      const tree = (r * 3 + c) % UNIQUE.length;
       out.push({
-        tree: (r * 3 + c) % UNIQUE.length,
+        tree,
+        block: blocks[tree]++,  // its index among the tree's instances: its pose block
         position: [(c - (ROWS - 1) / 2 + (random() - 0.5) * 0.5) * SPACING, 0,
           (r - (ROWS - 1) / 2 + (random() - 0.5) * 0.5) * SPACING],
         scale: 0.8 + 0.4 * random(),
@@ -57,6 +74,10 @@ const trees = [];  // unique tree index -> {bounds, stats} once grown
 let mode = 'hybrid';
 let timing = null;  // last "Time N frames" result
 let viewRound = 0, viewPending = null, viewDirty = false, viewMs = 0;
+let wind = { ...WIND };   // the wind of every unique tree's state (WIND with the hash's overrides)
+let windPlaying = false, windRound = 0;
+const sway = [];          // unique tree -> {time, wind, stepMs, poses} of the last pose drawn
+const poseDone = new Set();  // clients whose pose is waiting for the next frame
 const worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
 
 function readHash() {
@@ -64,11 +85,13 @@ function readHash() {
   mode = params.get('mode') === 'full' ? 'full' : 'hybrid';
   ui.mode.value = mode;
   root.dataset.mode = mode;
-  return params.get('cam');
+  return { cam: params.get('cam'), wind: params.get('wind') === '1' };
 }
 
 function writeHash() {
-  const hash = `#mode=${mode}&cam=${camera.toHash()}`;
+  const params = new URLSearchParams(location.hash.slice(1));
+  const extra = Object.keys(WIND).filter((k) => params.has(k)).map((k) => `&${k}=${params.get(k)}`).join('');
+  const hash = `#mode=${mode}&cam=${camera.toHash()}${windPlaying ? '&wind=1' : ''}${extra}`;
   if (location.hash !== hash) history.replaceState(null, '', hash);
 }
 
@@ -96,6 +119,10 @@ function updateStats(frame) {
   const parts = [`${frame.instances} trees (${frame.uniqueDrawn} unique of ${UNIQUE.length})`, mode,
     `${n(frame.triangles)} triangles`, `${n(frame.lines)} lines`, `${frame.drawCalls} draw calls`];
   if (mode === 'hybrid' && viewMs) parts.push(`draw lists ${viewMs.toFixed(0)} ms`);
+  if (windPlaying && sway.length) {
+    const cost = sway.reduce((sum, s) => sum + (s?.stepMs || 0), 0);
+    parts.push(`sway ${cost.toFixed(1)} ms/step (${INSTANCES.length} trees)`);
+  }
   if (timing) parts.push(`${timing.median.toFixed(1)} ms/frame (${timing.mode}, median of ${timing.frames})`);
   ui.stats.textContent = grown < UNIQUE.length ? `growing ${grown}/${UNIQUE.length} unique trees…` : parts.join(' · ');
   Object.assign(root.dataset, {
@@ -110,8 +137,13 @@ function requestFrame() {
   frameRequested = true;
   requestAnimationFrame(() => {
     frameRequested = false;
+    const pending = [...poseDone];
+    poseDone.clear();
     updateStats(renderer.render(camera, mode));
     root.dataset.frameSerial = Number(root.dataset.frameSerial || 0) + 1;
+    if (windPlaying) showWind();
+    // The worker sends a tree's next pose once this one is on screen.
+    for (const client of pending) worker.postMessage({ type: 'poseDone', client });
     // Ready once a frame with every unique tree is on screen (hybrid: see data-view-pending too).
     if (trees.filter(Boolean).length === UNIQUE.length && root.dataset.status === 'loading') root.dataset.status = 'ready';
   });
@@ -148,9 +180,10 @@ function requestViews() {
     const rep = group.members[0];
     const s = rep.instance.scale, p = rep.instance.position;
     const local = (v) => v.map((x, k) => (x - p[k]) / s);
-    const members = new Float32Array(group.members.length * 5);
+    const members = new Float32Array(group.members.length * 6);  // grove_renderer MEMBER_FLOATS
     group.members.forEach((m, i) => {
-      members.set([...m.instance.position, m.instance.scale, (m.instance.scale / s) * (rep.distance / m.distance)], i * 5);
+      members.set([...m.instance.position, m.instance.scale, (m.instance.scale / s) * (rep.distance / m.distance),
+        m.instance.block], i * 6);
     });
     viewPending.lists.push({ tree: group.tree, band: group.band, members });
     worker.postMessage({
@@ -182,10 +215,103 @@ function onTree(msg) {
   const mine = INSTANCES.filter((i) => i.tree === index);
   const instances = new Float32Array(mine.length * 4);
   mine.forEach((i, k) => instances.set([...i.position, i.scale], k * 4));
-  renderer.addTree(index, msg.mesh, instances, msg.hybrid);
-  trees[index] = { bounds: msg.stats.bounds, stats: msg.stats };
-  if (trees.filter(Boolean).length === UNIQUE.length) requestViews();
+  renderer.addTree(index, msg.mesh, instances, msg.hybrid, msg.swayNodes);
+  trees[index] = { bounds: msg.stats.bounds, stats: msg.stats, nodes: msg.swayNodes };
+  if (trees.filter(Boolean).length === UNIQUE.length) {
+    requestViews();
+    if (windPlaying) startWind();
+  }
   requestFrame();
+}
+
+// ---- Wind: every unique tree's instances swayed in the worker, all on one shared clock ----
+function startWind() {
+  if (trees.filter(Boolean).length < UNIQUE.length) return;  // starts once every tree is grown
+  const clock = `grove-wind-${++windRound}`;
+  UNIQUE.forEach((_, index) => {
+    const origins = INSTANCES.filter((i) => i.tree === index).flatMap((i) => i.position);  // metres, block order
+    worker.postMessage({ type: 'wind', client: `grove-${index}`, play: true, origins, clock });
+  });
+}
+
+function setWind(play) {
+  windPlaying = play;
+  ui.wind.textContent = play ? 'Still' : 'Blow';
+  ui.wind.setAttribute('aria-pressed', String(play));
+  root.dataset.wind = play ? 'on' : 'off';
+  writeHash();
+  sway.length = 0;
+  if (play) {
+    startWind();
+  } else {
+    UNIQUE.forEach((_, index) => {
+      worker.postMessage({ type: 'wind', client: `grove-${index}`, play: false });
+      renderer?.setRestPoses(index);
+    });
+  }
+  showWind();
+  requestFrame();
+}
+
+function onPose(msg) {
+  const index = Number(msg.client.slice('grove-'.length));
+  if (!windPlaying || !renderer || !trees[index]) {
+    worker.postMessage({ type: 'poseDone', client: msg.client });
+    return;
+  }
+  const poses = new Float32Array(msg.poses);
+  renderer.setPoses(index, poses);
+  sway[index] = { time: msg.time, wind: msg.wind, stepMs: msg.stepMs, poses };
+  poseDone.add(msg.client);
+  requestFrame();
+}
+
+// The wind line and data-sway-time (the earliest simulated time among the unique trees on screen).
+function showWind() {
+  if (!windPlaying) {
+    ui.windInfo.textContent = 'Still air. Blow: a gust front crosses the grove from the left (−x), each tree sways with the wind at its place.';
+    root.dataset.swayTime = '';
+    return;
+  }
+  const shown = sway.filter(Boolean);
+  if (shown.length < UNIQUE.length) {
+    ui.windInfo.textContent = 'starting the wind…';
+    return;
+  }
+  const time = Math.min(...shown.map((s) => s.time));
+  const cost = shown.reduce((sum, s) => sum + s.stepMs, 0);
+  ui.windInfo.textContent = `t = ${time.toFixed(1)} s · wind ${shown[0].wind.toFixed(1)} m/s at the centre · front ${wind.gust_front_speed} m/s`;
+  root.dataset.swayTime = time.toFixed(3);
+  root.dataset.swayStepMs = cost.toFixed(2);
+}
+
+// For the tests: per instance of unique tree `tree`, its position and a measure of its sway in the
+// last pose drawn: the sum over node points of |M_j| (eq. 3.15 tip offsets, metres) and the mean
+// M_j.x (along the default wind); null while no pose was drawn.
+function swayProbe(tree) {
+  const s = sway[tree];
+  if (!s || !trees[tree]) return null;
+  const nodes = trees[tree].nodes;
+  const out = INSTANCES.filter((i) => i.tree === tree).map((instance, k) => {
+    let sum = 0, x = 0;
+    for (let j = 0; j < nodes; ++j) {
+      const o = (k * nodes + j) * 16;
+      sum += Math.hypot(s.poses[o + 3], s.poses[o + 7], s.poses[o + 11]);
+      x += s.poses[o + 3];
+    }
+    return { position: instance.position, block: instance.block, tipOffsetSum: sum, meanOffsetX: x / nodes };
+  });
+  return { time: s.time, nodes, instances: out };
+}
+
+// Largest difference between two instances' pose blocks of unique tree `tree` (0: identical).
+function poseBlockDifference(tree, a, b) {
+  const s = sway[tree];
+  if (!s) return null;
+  const n = trees[tree].nodes * 16;
+  let most = 0;
+  for (let i = 0; i < n; ++i) most = Math.max(most, Math.abs(s.poses[a * n + i] - s.poses[b * n + i]));
+  return most;
 }
 
 worker.onmessage = (event) => {
@@ -193,10 +319,12 @@ worker.onmessage = (event) => {
   if (msg.type === 'ready') {
     UNIQUE.forEach((u, index) => worker.postMessage({
       type: 'update', id: index + 1, client: `grove-${index}`,
-      state: { preset: u.preset, seed: u.seed, years: u.years, params: { render_mode: 1 } },
+      state: { preset: u.preset, seed: u.seed, years: u.years, params: { render_mode: 1, ...wind } },
     }));
   } else if (msg.type === 'tree') {
     onTree(msg);
+  } else if (msg.type === 'pose') {
+    onPose(msg);
   } else if (msg.type === 'drawList') {
     onDrawList(msg);
   } else if (msg.type === 'progress' && renderer) {
@@ -271,7 +399,10 @@ function setMode(next) {
 async function start() {
   root.dataset.status = 'loading';
   root.dataset.viewPending = '0';
-  const cam = readHash();
+  const { cam, wind: blowing } = readHash();
+  // The wind settings are part of every unique tree's state: read once, before the trees are grown.
+  const params = new URLSearchParams(location.hash.slice(1));
+  for (const key of Object.keys(WIND)) if (params.has(key)) wind[key] = Number(params.get(key));
   resetCamera();
   if (cam) camera.fromHash(cam);
   try {
@@ -292,6 +423,8 @@ async function start() {
     requestFrame();
   }).observe(ui.canvas);
   ui.mode.addEventListener('change', () => setMode(ui.mode.value));
+  ui.wind.addEventListener('click', () => setWind(!windPlaying));
+  setWind(blowing);
   ui.reset.addEventListener('click', () => {
     resetCamera();
     writeHash();
@@ -303,8 +436,9 @@ async function start() {
   });
   ui.time.addEventListener('click', () => timeFrames(Math.max(1, Math.min(200, Number(ui.frames.value) || 20))));
   window.addEventListener('hashchange', () => {
-    const cam = readHash();
+    const { cam, wind: blowing } = readHash();
     if (cam) camera.fromHash(cam);
+    if (blowing !== windPlaying) setWind(blowing);
     requestViews();
     requestFrame();
   });
@@ -314,5 +448,8 @@ async function start() {
 }
 
 // For tests and bench/grove.mjs; lastTiming is the last "Time N frames" result.
-window.grove = { timeFrames, coverage, instances: INSTANCES.length, unique: UNIQUE.length, lastTiming: null };
+window.grove = {
+  timeFrames, coverage, swayProbe, poseBlockDifference, requestFrame, instances: INSTANCES.length, unique: UNIQUE.length,
+  layout: INSTANCES, lastTiming: null,
+};
 start();

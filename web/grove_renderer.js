@@ -1,9 +1,14 @@
 // WebGL2 renderer of the grove page: a few unique trees drawn many times with instancing, in full
 // mode (bark/leaves/flowers meshes) or hybrid mode (thesis ch. 4: each unique tree's card atlas,
 // shared by all its instances, and one draw list of cards + lines per (unique tree, distance band)).
+// Wind: every instance is skinned to its own sway poses (one pose texture per unique tree, instance
+// k's node point j at texel (k · nodes + j) · 4, as shaders/skin.glsl reads them).
 import { BACKGROUND, PARTS, fetchText, link } from './renderer.js';
 
 const SEGMENT_ROW = 1024;  // texels per row of a line-segment texture (grove_line.vert)
+const SEGMENT_TEXELS = 4;  // p0 + width, p1, colour, skin (joint0, joint1, weight0, weight1)
+const POSE_ROW = 1024;     // texels per row of a pose texture (skin.glsl): 4 per node point
+const MEMBER_FLOATS = 6;   // per band member: x, y, z, scale, width scale, pose block
 
 export class GroveRenderer {
   // Throws an Error with a readable message when WebGL2 is missing.
@@ -21,13 +26,14 @@ export class GroveRenderer {
 
   async init(shaderBase = new URL('../shaders/', import.meta.url).href) {
     const names = ['grove_tree.vert', 'tree.frag', 'grove_card.vert', 'card.frag', 'grove_line.vert', 'grove_line.frag',
-      'atlas.vert', 'ground.vert', 'ground.frag'];
+      'atlas.vert', 'ground.vert', 'ground.frag', 'skin.glsl'];
     const text = Object.fromEntries(await Promise.all(
       names.map(async (f) => [f, await fetchText(new URL(f, shaderBase).href)])));
+    const source = (name) => text[name].replace('#include "skin.glsl"', text['skin.glsl']);
     const gl = this.gl;
-    this.treeProgram = link(gl, text['grove_tree.vert'], text['tree.frag'], 'grove_tree');
-    this.cardProgram = link(gl, text['grove_card.vert'], text['card.frag'], 'grove_card');
-    this.lineProgram = link(gl, text['grove_line.vert'], text['grove_line.frag'], 'grove_line');
+    this.treeProgram = link(gl, source('grove_tree.vert'), text['tree.frag'], 'grove_tree');
+    this.cardProgram = link(gl, source('grove_card.vert'), text['card.frag'], 'grove_card');
+    this.lineProgram = link(gl, source('grove_line.vert'), text['grove_line.frag'], 'grove_line');
     this.atlasProgram = link(gl, text['atlas.vert'], text['tree.frag'], 'atlas');
     this.groundProgram = link(gl, text['ground.vert'], text['ground.frag'], 'ground');
     this.groundVao = gl.createVertexArray();
@@ -54,24 +60,41 @@ export class GroveRenderer {
   }
 
   // Per-instance attributes on the bound VAO: `location` = vec4 (x, y, z, scale) from `b` (stride
-  // `floats` floats) and, when floats is 5, location + 1 = the width scale (grove_line.vert).
+  // `floats` floats) and, when floats is MEMBER_FLOATS, location + 1 = the width scale
+  // (grove_line.vert) and location + 2 = the instance's pose block (grove_card/line.vert).
   #instanceAttributes(b, floats, location = 7) {
     const gl = this.gl;
     gl.bindBuffer(gl.ARRAY_BUFFER, b);
     gl.enableVertexAttribArray(location);
     gl.vertexAttribPointer(location, 4, gl.FLOAT, false, floats * 4, 0);
     gl.vertexAttribDivisor(location, 1);
-    if (floats === 5) {
-      gl.enableVertexAttribArray(location + 1);
-      gl.vertexAttribPointer(location + 1, 1, gl.FLOAT, false, 20, 16);
-      gl.vertexAttribDivisor(location + 1, 1);
+    if (floats === MEMBER_FLOATS) {
+      for (const k of [1, 2]) {
+        gl.enableVertexAttribArray(location + k);
+        gl.vertexAttribPointer(location + k, 1, gl.FLOAT, false, floats * 4, 12 + 4 * k);
+        gl.vertexAttribDivisor(location + k, 1);
+      }
     }
   }
 
-  // Unique tree `index`: the worker's mesh (bark/leaves/flowers ArrayBuffers) drawn at every
-  // instance of `instances` (Float32Array, 4 per instance: x, y, z, scale), and its card atlas
-  // painted once from the worker's hybrid geometry (null: no hybrid mode for this tree).
-  addTree(index, mesh, instances, hybrid) {
+  // Per-vertex sway skin on the bound VAO: joints (Uint32, location 4) and weights (location 5).
+  #skinAttributes(joints, weights) {
+    const gl = this.gl;
+    const buffers = [this.#buffer(joints), this.#buffer(weights)];
+    gl.bindBuffer(gl.ARRAY_BUFFER, buffers[0]);
+    gl.enableVertexAttribArray(4);
+    gl.vertexAttribIPointer(4, 1, gl.UNSIGNED_INT, 0, 0);
+    gl.bindBuffer(gl.ARRAY_BUFFER, buffers[1]);
+    gl.enableVertexAttribArray(5);
+    gl.vertexAttribPointer(5, 1, gl.FLOAT, false, 0, 0);
+    return buffers;
+  }
+
+  // Unique tree `index`: the worker's mesh (bark/leaves/flowers ArrayBuffers with their sway skin)
+  // drawn at every instance of `instances` (Float32Array, 4 per instance: x, y, z, scale; instance
+  // k uses pose block k), `nodes` sway node points (the worker's swayNodes), poses at rest, and its
+  // card atlas painted once from the worker's hybrid geometry (null: no hybrid mode for this tree).
+  addTree(index, mesh, instances, hybrid, nodes = 1) {
     const gl = this.gl;
     const instanceBuffer = this.#buffer(instances);
     const parts = {};
@@ -85,12 +108,64 @@ export class GroveRenderer {
         gl.enableVertexAttribArray(location);
         gl.vertexAttribPointer(location, 3, gl.FLOAT, false, 0, 0);
       }
+      this.#skinAttributes(data.joints, data.weights);
       this.#instanceAttributes(instanceBuffer, 4);
       this.#buffer(data.indices, gl.ELEMENT_ARRAY_BUFFER);
       gl.bindVertexArray(null);
       parts[name] = { vao, count: data.indices.byteLength / 4 };
     }
-    this.trees[index] = { parts, instances: instances.length / 4, atlas: hybrid ? this.#paintAtlas(hybrid) : null };
+    this.trees[index] = {
+      parts, instances: instances.length / 4, atlas: hybrid ? this.#paintAtlas(hybrid) : null,
+      nodes: Math.max(1, nodes), poseTexture: gl.createTexture(), poseRows: 0,
+    };
+    this.setRestPoses(index);
+  }
+
+  // Sway poses of unique tree `index`: Float32Array (the worker's 'pose'), instances × nodes × 16
+  // floats; instance k's node point j at floats (k · nodes + j) · 16.
+  setPoses(index, poses) {
+    const gl = this.gl, tree = this.trees[index];
+    if (!tree) return;
+    const points = tree.instances * tree.nodes;
+    const rows = Math.max(1, Math.ceil((points * 4) / POSE_ROW));
+    let data = poses;
+    if (poses.length !== rows * POSE_ROW * 4) {
+      data = new Float32Array(rows * POSE_ROW * 4);
+      data.set(poses.subarray(0, Math.min(poses.length, points * 16)));
+    }
+    gl.bindTexture(gl.TEXTURE_2D, tree.poseTexture);
+    if (tree.poseRows !== rows) {
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, POSE_ROW, rows, 0, gl.RGBA, gl.FLOAT, data);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+      tree.poseRows = rows;
+    } else {
+      gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, POSE_ROW, rows, gl.RGBA, gl.FLOAT, data);
+    }
+    gl.bindTexture(gl.TEXTURE_2D, null);
+  }
+
+  // Every instance of unique tree `index` at rest (identity poses: the grown shape exactly).
+  setRestPoses(index) {
+    const tree = this.trees[index];
+    if (!tree) return;
+    const rest = new Float32Array(tree.instances * tree.nodes * 16);
+    for (let i = 0; i < rest.length; i += 16) {
+      rest[i] = 1;
+      rest[i + 5] = 1;
+      rest[i + 10] = 1;
+    }
+    this.setPoses(index, rest);
+  }
+
+  // The pose texture of a unique tree on unit 1 for a program with uPoses and uNodes.
+  #bindPoses(program, tree) {
+    const gl = this.gl;
+    gl.activeTexture(gl.TEXTURE1);
+    gl.bindTexture(gl.TEXTURE_2D, tree.poseTexture);
+    gl.uniform1i(program.uniforms.uPoses, 1);
+    gl.uniform1i(program.uniforms.uNodes, tree.nodes);
+    gl.activeTexture(gl.TEXTURE0);
   }
 
   // The card atlas of one unique tree (thesis 4.2.1), painted once from clip-space triangles, lit
@@ -158,7 +233,9 @@ export class GroveRenderer {
   }
 
   // Replaces every band's draw list at once. lists: [{tree, band, cards, lines, members}] with the
-  // worker's 'drawList' buffers and members = Float32Array, 5 per instance (x, y, z, scale, width scale).
+  // worker's 'drawList' buffers (with the sway skin: cards.joints/weights per vertex,
+  // lines.joints/weights 2 per segment) and members = Float32Array, MEMBER_FLOATS per instance
+  // (x, y, z, scale, width scale, pose block = the instance's index among its unique tree's instances).
   setBands(lists) {
     const gl = this.gl;
     for (const band of this.bands.values()) {
@@ -170,7 +247,7 @@ export class GroveRenderer {
     this.bands = new Map();
     for (const list of lists) {
       const members = this.#buffer(list.members);
-      const band = { tree: list.tree, buffers: [members], instances: list.members.length / 5, cardCount: 0, segments: 0 };
+      const band = { tree: list.tree, buffers: [members], instances: list.members.length / MEMBER_FLOATS, cardCount: 0, segments: 0 };
       const c = list.cards;
       if (c.indices.byteLength > 0) {
         band.vaoCards = gl.createVertexArray();
@@ -180,7 +257,8 @@ export class GroveRenderer {
           gl.enableVertexAttribArray(location);
           gl.vertexAttribPointer(location, size, gl.FLOAT, false, 0, 0);
         }
-        this.#instanceAttributes(members, 5);
+        band.buffers.push(...this.#skinAttributes(c.joints, c.weights));
+        this.#instanceAttributes(members, MEMBER_FLOATS);
         band.buffers.push(this.#buffer(c.indices, gl.ELEMENT_ARRAY_BUFFER));
         gl.bindVertexArray(null);
         band.cardCount = c.indices.byteLength / 4;
@@ -188,25 +266,29 @@ export class GroveRenderer {
       const l = list.lines;
       const segments = l.widths.byteLength / 4;
       if (segments > 0) {
-        // One texture per draw list: 3 RGBA32F texels per segment (p0 + width, p1, colour).
+        // One texture per draw list: 4 RGBA32F texels per segment (p0 + width, p1, colour, skin:
+        // joint0, joint1 as floats (exact below 2^24), weight0, weight1).
         // The width is the draw list's D_i (pixels, may be below 1: grove_line.vert blends by it).
         // Segments no instance of the band sees wider than a pixel go last: they are drawn as
         // gl.LINES (2 vertices each), the others as quads (4 indexed vertices each).
         let widest = 0;
-        for (let i = 4; i < list.members.length; i += 5) widest = Math.max(widest, list.members[i]);
+        for (let i = 4; i < list.members.length; i += MEMBER_FLOATS) widest = Math.max(widest, list.members[i]);
         const p = new Float32Array(l.positions), col = new Float32Array(l.colors), w = new Float32Array(l.widths);
+        const joints = new Uint32Array(l.joints), weights = new Float32Array(l.weights);
         const order = [];
         for (let s = 0; s < segments; ++s) if (w[s] * widest > 1) order.push(s);
         band.thick = order.length;
         for (let s = 0; s < segments; ++s) if (!(w[s] * widest > 1)) order.push(s);
-        const rows = Math.ceil((segments * 3) / SEGMENT_ROW);
+        const rows = Math.ceil((segments * SEGMENT_TEXELS) / SEGMENT_ROW);
         const data = new Float32Array(rows * SEGMENT_ROW * 4);
+        const skinned = joints.length === 2 * segments && weights.length === 2 * segments;
         order.forEach((s, k) => {
-          const o = k * 12;
+          const o = k * SEGMENT_TEXELS * 4;
           data.set(p.subarray(s * 6, s * 6 + 3), o);
           data[o + 3] = w[s];
           data.set(p.subarray(s * 6 + 3, s * 6 + 6), o + 4);
           data.set(col.subarray(s * 3, s * 3 + 3), o + 8);
+          if (skinned) data.set([joints[2 * s], joints[2 * s + 1], weights[2 * s], weights[2 * s + 1]], o + 12);
         });
         band.texture = gl.createTexture();
         gl.bindTexture(gl.TEXTURE_2D, band.texture);
@@ -216,7 +298,7 @@ export class GroveRenderer {
         gl.bindTexture(gl.TEXTURE_2D, null);
         band.vaoLines = gl.createVertexArray();
         gl.bindVertexArray(band.vaoLines);
-        this.#instanceAttributes(members, 5, 0);  // no per-vertex attributes: the segments are a texture
+        this.#instanceAttributes(members, MEMBER_FLOATS, 0);  // no per-vertex attributes: the segments are a texture
         if (band.thick > 0) gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, this.#quadIndices(band.thick));
         gl.bindVertexArray(null);
         band.segments = segments;
@@ -293,6 +375,7 @@ export class GroveRenderer {
       for (const band of this.bands.values()) {
         const tree = this.trees[band.tree];
         if (!band.cardCount || !wanted(band.tree) || !tree?.atlas) continue;
+        this.#bindPoses(cp, tree);
         gl.bindTexture(gl.TEXTURE_2D, tree.atlas);
         gl.bindVertexArray(band.vaoCards);
         gl.drawElementsInstanced(gl.TRIANGLES, band.cardCount, gl.UNSIGNED_INT, 0, band.instances);
@@ -309,7 +392,8 @@ export class GroveRenderer {
       gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
       gl.depthMask(false);
       for (const band of this.bands.values()) {
-        if (!band.segments || !wanted(band.tree)) continue;
+        if (!band.segments || !wanted(band.tree) || !this.trees[band.tree]) continue;
+        this.#bindPoses(lp, this.trees[band.tree]);
         gl.bindTexture(gl.TEXTURE_2D, band.texture);
         gl.bindVertexArray(band.vaoLines);
         if (band.thick > 0) {
@@ -333,6 +417,9 @@ export class GroveRenderer {
         drawn.add(band.tree);
       }
       gl.bindTexture(gl.TEXTURE_2D, null);
+      gl.activeTexture(gl.TEXTURE1);
+      gl.bindTexture(gl.TEXTURE_2D, null);
+      gl.activeTexture(gl.TEXTURE0);
     } else {
       const t = this.treeProgram;
       gl.useProgram(t.program);
@@ -342,6 +429,7 @@ export class GroveRenderer {
       gl.uniform1f(t.uniforms.uXray, 0);
       this.trees.forEach((tree, index) => {
         if (!tree || !wanted(index)) return;
+        this.#bindPoses(t, tree);
         for (const [name, part] of Object.entries(tree.parts)) {
           const look = PARTS[name];
           gl.uniform3fv(t.uniforms.uColor, look.color);

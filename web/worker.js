@@ -12,14 +12,23 @@
 //                                                   mesh.bark also has branchIds per vertex and branchParents per branch)
 //         every part also has joints (Uint32) and weights (Float32) per vertex: the sway skin of
 //         core/sway/skin.h; leaves have uvs; the message has swayNodes (node points)
-//   in  {type:'wind', client, play}          starts (play: true, from rest) or stops the sway of the
+//   in  {type:'wind', client, play, origins, clock}
+//                                            starts (play: true, from rest) or stops the sway of the
 //                                            client's last tree, with the wind of its state
-//                                            -> out {type:'pose', client, time, wind, poses}  (Float32
-//                                               ArrayBuffer transferred: 16 floats per node point),
-//                                               one at a time: the next is sent after
+//                                            -> out {type:'pose', client, time, wind, instances, stepMs,
+//                                               poses}  (Float32 ArrayBuffer transferred: 16 floats per
+//                                               node point and instance), one at a time: the next is sent after
 //   in  {type:'poseDone', client}            the client has drawn the last pose.
 //                                               The simulation follows the wall clock (steps of dt,
 //                                               at most 8 per tick) and loops at the wind's duration.
+//         optional origins (the grove page): array of 3 numbers per instance, each instance's base
+//         in the world in metres; the tree is then swayed once per instance (one SwaySimulator each,
+//         swayStartAt), each in the wind field at its own place (travelling gust front and wave),
+//         and poses holds instances × swayNodes × 16 floats (instance k's node point j at
+//         (k · swayNodes + j) · 16); without origins one instance at the world origin.
+//         optional clock (a name): sways started with the same name share one wall clock and its
+//         slips, so several clients (a grove's unique trees) stay at the same simulated time.
+//         stepMs: wall time of one step of all the client's instances (and writing their poses).
 //         with render_mode 1 the tree message also has hybrid: {atlasSize, bark|leaves|flowers:
 //         {positions, normals, indices}}: clip-space triangles that paint the card atlas (thesis 4.2.1)
 //   in  {type:'view', client, camera:{eye, target, fovY, width, height}}   (hybrid mode, after a tree)
@@ -86,25 +95,40 @@ function takeMesh(session, transfer) {
 }
 
 // ---- Wind: one sway loop per client, following the wall clock ----
-const sways = new Map();  // client -> {session, start, steps, waiting, timer}
+const sways = new Map();   // client -> {session, origins, clock, clockName, base, steps, waiting, timer}
+const clocks = new Map();  // name -> {start}: wall-clock origin shared by the sways started with it
 
 function stopWind(client) {
   const sway = sways.get(client);
   if (!sway) return;
   clearTimeout(sway.timer);
   sways.delete(client);
+  if (typeof sway.clockName === 'string' && ![...sways.values()].some((s) => s.clock === sway.clock)) {
+    clocks.delete(sway.clockName);
+  }
 }
 
-function startWind(client) {
+// origins: optional, metres, 3 per instance (the grove): one simulator per instance, each in the
+// wind at its own place; clock: optional name; sways started with the same name share one wall
+// clock (and its slips), so the unique trees of a grove stay at the same simulated time.
+function startWind(client, origins, clockName) {
   stopWind(client);
   const session = finished.get(client);
   if (!session) return;
-  const error = session.swayStart();
+  const at = origins ? Array.from(origins, Number) : null;
+  const error = at ? session.swayStartAt(at) : session.swayStart();
   if (error) {
     postMessage({ type: 'error', client, message: error });
     return;
   }
-  const sway = { session, start: performance.now(), steps: 0, waiting: false, timer: 0 };
+  let clock = typeof clockName === 'string' ? clocks.get(clockName) : null;
+  if (!clock) {
+    clock = { start: performance.now() };
+    if (typeof clockName === 'string') clocks.set(clockName, clock);
+  }
+  // Simulated time 0 is at the clock's start: a sway joining a running clock catches up, and when
+  // it is more than 8 steps behind, the shared clock slips back to it (the others wait).
+  const sway = { session, origins: at, clock, clockName, base: 0, steps: 0, waiting: false, timer: 0 };
   sways.set(client, sway);
   windTick(client, sway);
 }
@@ -114,20 +138,24 @@ function windTick(client, sway) {
   const session = sway.session;
   const dt = session.swayDt();
   if (!sway.waiting) {
-    const due = Math.floor((performance.now() - sway.start) / (1000 * dt)) - sway.steps;
+    const now = Math.floor((performance.now() - sway.clock.start) / (1000 * dt));
+    const due = now - sway.base - sway.steps;
     if (due > 0) {
+      const started = performance.now();
       let time = session.swayStep(Math.min(due, 8));
+      const stepMs = (performance.now() - started) / Math.min(due, 8);  // per step, all instances
       sway.steps += Math.min(due, 8);
-      if (due > 8) sway.start += (due - 8) * 1000 * dt;  // too slow: let the clock slip, not pile up
+      if (due > 8) sway.clock.start += (due - 8) * 1000 * dt;  // too slow: let the clock slip, not pile up
       if (time >= session.swayDuration()) {  // the gust schedule is over: again from rest
-        session.swayStart();
-        sway.start = performance.now();
+        if (sway.origins) session.swayStartAt(sway.origins); else session.swayStart();
+        sway.base += sway.steps;
         sway.steps = 0;
         time = 0;
       }
       const poses = copyView(session.swayPoses(), Float32Array);
       sway.waiting = true;
-      postMessage({ type: 'pose', client, time, wind: session.swayWindSpeed(), poses }, [poses]);
+      postMessage({ type: 'pose', client, time, wind: session.swayWindSpeed(), instances: session.swayInstances(),
+        stepMs, poses }, [poses]);
     }
   }
   sway.timer = setTimeout(() => windTick(client, sway), 8);
@@ -271,7 +299,7 @@ self.onmessage = async (event) => {
       latest.set(client, msg.id);
       await grow(msg.id, client, msg.state, msg.until);
     } else if (msg.type === 'wind') {
-      if (msg.play) startWind(client); else stopWind(client);
+      if (msg.play) startWind(client, msg.origins, msg.clock); else stopWind(client);
     } else if (msg.type === 'view') {
       await loadModule();
       hybridView(client, msg.camera, msg.slot, msg.tag);
