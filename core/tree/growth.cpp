@@ -75,6 +75,9 @@ Vec4 Normalize4(const Vec4& v) {  // glm::normalize: v · (1 / sqrt(dot(v, v)))
   Float4 inverse = 1.0f / Sqrt(Dot(v, v));
   return Vec4{v.x * inverse, v.y * inverse, v.z * inverse};
 }
+#if defined(__SSE2__)
+// For the bending of four shoots at a time (native only: in WASM under V8 the scalar lanes were
+// faster).
 // RotateToward(v, target, turn) of this file: v unchanged where v and target are parallel.
 Vec4 RotateToward4(const Vec4& v, const Vec4& target, Float4 c, Float4 s) {
   Vec4 axis = Cross(v, target);
@@ -90,13 +93,7 @@ Vec4 RotateToward4(const Vec4& v, const Vec4& target, Float4 c, Float4 s) {
 typedef double Double2 __attribute__((vector_size(16)));
 typedef int64_t Long2 __attribute__((vector_size(16)));
 constexpr double kRound = 6755399441055744.0;  // 1.5·2^52
-Double2 Sqrt(Double2 v) {
-#if defined(__wasm_simd128__)
-  return (Double2)wasm_f64x2_sqrt((v128_t)v);
-#else
-  return (Double2)_mm_sqrt_pd((__m128d)v);
-#endif
-}
+Double2 Sqrt(Double2 v) { return (Double2)_mm_sqrt_pd((__m128d)v); }
 Double2 Select(Long2 mask, Double2 yes, Double2 no) {
   return (Double2)(((Long2)yes & mask) | ((Long2)no & ~mask));
 }
@@ -158,6 +155,7 @@ void SinCos(Double2 x, Double2* s, Double2* c) {  // det::SinCos
   *s = Select(sin_negative, -s0, s0);
   *c = Select(cos_negative, -c0, c0);
 }
+#endif  // __SSE2__
 #endif
 
 // For each bud b of buds[0..count): b.direction = RotateToward(d, side, turns[i]) and
@@ -481,7 +479,7 @@ void Grower::LayOutShoots(bool bend) {
   ShootLayout lanes[kLanes];
   std::size_t used = 0, longest = 0;
   auto flush = [&]() {
-#if defined(__SSE2__) || defined(__wasm_simd128__)
+#if defined(__SSE2__)  // in WASM (V8) the scalar lanes below were faster: 22.8 vs 26.6 ms
     if (!zigzag) {
       // Without the zigzag every lane is a bending shoot (b > 0): node i of all four lanes at
       // once with SIMD, eqs. 2.6-2.9 as in `step` (det_math two lanes at a time, the rotation
