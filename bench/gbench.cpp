@@ -3,6 +3,7 @@
 
 #include <memory>
 
+#include "process_heap.h"
 #include "workloads.h"
 
 namespace niwa {
@@ -32,6 +33,7 @@ void RegisterAll() {
 }  // namespace niwa
 
 int main(int argc, char** argv) {
+  niwa::KeepFreedMemoryForReuse();  // as the CLI does (native_cli/process_heap.h)
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   niwa::RegisterAll();

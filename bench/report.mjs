@@ -169,10 +169,11 @@ Workloads:
   restarts from one state prepared 2 s into the gust. The speed goal is per internode and step.
 - \`sway-poses/sakura-<N>y\`: the same with \`WriteSwayPoses\` (16 floats per node point, what the page
   uploads each frame) instead of the position of every node.
-- Native \`glb/sakura-15y\` swings between about 20 ms and 75 ms from run to run: each iteration
-  allocates about 13 MB of fresh buffers that glibc maps and unmaps, so page faults dominate (with
-  \`GLIBC_TUNABLES=glibc.malloc.mmap_threshold=2000000000:glibc.malloc.trim_threshold=2000000000\`
-  it took 19 ms). The WASM heap only grows and is reused, so WASM does not pay this cost.
+- Native runs (the CLI, both runners) keep freed memory in the process
+  (\`native_cli/process_heap.h\`: glibc's mmap and trim thresholds raised), as the WASM heap does:
+  otherwise glibc maps every large block afresh and returns it on free, and page faults dominate the
+  jobs that grow and free big vectors (on 2026-11-29, one run each: \`glb/sakura-15y\` 347 ms against
+  28 ms, \`grow/maple-40y\` about 400 ms against 265 ms).
 - \`light/grid-2000\`, \`light/reference-2000\`: \`ComputeLightGrid\` and \`ComputeLightReference\` on
   2,000 leaf spheres drawn from \`Pcg32\` (seed 12345) in a 300 × 300 × 300 cm crown box, sky \`MakeSky(60°, 0°, sun weight 0.3)\`, opacity 0.5.
 

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "process_heap.h"
 #include "workloads.h"
 
 namespace niwa {
@@ -103,6 +104,7 @@ void Run(const Workload& w, const Options& o) {
 }  // namespace niwa
 
 int main(int argc, char** argv) {
+  niwa::KeepFreedMemoryForReuse();  // as the CLI does (native_cli/process_heap.h)
   niwa::Options options;
   if (!niwa::ParseOptions(argc, argv, &options)) return 2;
   for (const niwa::Workload& w : niwa::Workloads()) {

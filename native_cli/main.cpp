@@ -4,8 +4,10 @@
 #include <vector>
 
 #include "cli.h"
+#include "process_heap.h"
 
 int main(int argc, char** argv) {
+  niwa::KeepFreedMemoryForReuse();
   std::vector<std::string> args(argv + 1, argv + argc);
   return niwa::RunCli(args, std::cout, std::cerr);
 }
