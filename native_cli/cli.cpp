@@ -17,7 +17,6 @@
 #include "io/svg_export.h"
 #include "io/url_codec.h"
 #include "math/rotation.h"
-#include "render/atlas_mesh.h"
 #include "render/hybrid.h"
 #include "sway/sway.h"
 #include "tree/growth.h"

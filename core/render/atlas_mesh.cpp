@@ -82,15 +82,6 @@ void AppendProjected(const MeshBuffers& part, const std::vector<uint32_t>& trian
 
 }  // namespace
 
-RenderOptions RenderOptionsFromParams(const ParamSet& params) {
-  RenderOptions options;
-  options.threshold_px = static_cast<float>(params.Get(ParamId::kLineThreshold));
-  options.card_planes = static_cast<int>(params.Get(ParamId::kCardPlanes));
-  options.leaf_mode = params.Get(ParamId::kLeafClusterCards) != 0.0 ? LeafMode::kClusterCards
-                                                                    : LeafMode::kBranchCards;
-  return options;
-}
-
 AtlasMesh BuildAtlasMesh(const TreeMesh& mesh, const HybridScene& scene) {
   AtlasMesh atlas;
   const std::size_t branches = scene.frames.size();

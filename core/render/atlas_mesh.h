@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "params/param_table.h"
 #include "render/hybrid.h"
 #include "sway/skin.h"
 #include "sway/sway.h"
@@ -14,10 +13,6 @@
 #include "tree/tree.h"
 
 namespace niwa {
-
-// Hybrid options from the "render" rows of the parameter table (line_threshold, card_planes,
-// leaf_cluster_cards); the other options keep their defaults.
-RenderOptions RenderOptionsFromParams(const ParamSet& params);
 
 // One part (bark, leaves or flowers) of every tile's source, already projected: positions are atlas
 // clip coordinates (x, y in [-1, 1] over the whole atlas, z in [-1, 1] the depth along the plane's

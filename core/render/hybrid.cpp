@@ -400,6 +400,15 @@ RenderCamera CameraFromOrbit(const OrbitView& view, int width, int height, float
   return camera;
 }
 
+RenderOptions RenderOptionsFromParams(const ParamSet& params) {
+  RenderOptions options;
+  options.threshold_px = static_cast<float>(params.Get(ParamId::kLineThreshold));
+  options.card_planes = static_cast<int>(params.Get(ParamId::kCardPlanes));
+  options.leaf_mode = params.Get(ParamId::kLeafClusterCards) != 0.0 ? LeafMode::kClusterCards
+                                                                    : LeafMode::kBranchCards;
+  return options;
+}
+
 std::string CheckRenderOptions(const RenderOptions& o) {
   auto in = [](double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; };
   if (!in(o.threshold_px, 0.1, 1000)) return RangeError("threshold", "a number in [0.1, 1000]");

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "params/param_table.h"
 #include "tree/mesh.h"
 #include "tree/tree.h"
 
@@ -99,6 +100,10 @@ struct RenderOptions {
 
 // "" or a one-line error naming the field and its allowed range.
 std::string CheckRenderOptions(const RenderOptions& options);
+
+// Hybrid options from the "render" rows of the parameter table (line_threshold, card_planes,
+// leaf_cluster_cards); the other options keep their defaults.
+RenderOptions RenderOptionsFromParams(const ParamSet& params);
 
 // ---- eq. 4.1 and eq. 4.2 ----
 
