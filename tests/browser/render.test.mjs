@@ -19,31 +19,26 @@ const problems = [];
 const root = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
 const camOf = (hash) => (hash.match(/cam=([^&]*)/) || [])[1];
 
-// Grey values (Rec. 601 luma) of the view's canvas, and the box around the tree's pixels (bark
-// dark, leaves green) with a margin of 8 px.
-async function canvasGrey(page) {
-  return page.evaluate(() => {
-    const src = document.getElementById('view');
-    const c = document.createElement('canvas');
-    c.width = src.width;
-    c.height = src.height;
-    const ctx = c.getContext('2d', { willReadFrequently: true });
-    ctx.drawImage(src, 0, 0);
-    const d = ctx.getImageData(0, 0, c.width, c.height).data;
-    const grey = new Array(c.width * c.height);
-    let x0 = c.width, y0 = c.height, x1 = 0, y1 = 0;
+// Grey values (Rec. 601 luma) of the view's canvas (through the harness's snapshot), and the box
+// around the tree's pixels (bark dark, leaves green) with a margin of 8 px.
+async function canvasGrey(page, key) {
+  await snapshotCanvas(page, key);
+  return page.evaluate((k) => {
+    const { data: d, width, height } = window.__snapshots[k];
+    const grey = new Array(width * height);
+    let x0 = width, y0 = height, x1 = 0, y1 = 0;
     for (let i = 0; i < grey.length; ++i) {
       const r = d[4 * i], g = d[4 * i + 1], b = d[4 * i + 2];
       grey[i] = 0.299 * r + 0.587 * g + 0.114 * b;
       if (grey[i] < 80 || g - Math.max(r, b) > 25) {
-        const x = i % c.width, y = Math.floor(i / c.width);
+        const x = i % width, y = Math.floor(i / width);
         x0 = Math.min(x0, x); x1 = Math.max(x1, x + 1); y0 = Math.min(y0, y); y1 = Math.max(y1, y + 1);
       }
     }
     const m = 8;
-    return { grey, width: c.width, height: c.height,
-      box: { x0: Math.max(0, x0 - m), y0: Math.max(0, y0 - m), x1: Math.min(c.width, x1 + m), y1: Math.min(c.height, y1 + m) } };
-  });
+    return { grey, width, height,
+      box: { x0: Math.max(0, x0 - m), y0: Math.max(0, y0 - m), x1: Math.min(width, x1 + m), y1: Math.min(height, y1 + m) } };
+  }, key);
 }
 
 async function timeFrames(page, key) {
@@ -70,7 +65,7 @@ try {
   check('the view is 512 x 512', size[0] === SIZE && size[1] === SIZE, size.join(' x '));
   check('full mode is the default', (await root(page)).renderMode === 'full' && (await page.inputValue('#render-mode')) === '0');
   const cam = camOf(await page.evaluate(() => location.hash));
-  const fullImage = await canvasGrey(page);
+  const fullImage = await canvasGrey(page, 'full');
   await page.locator('#view').screenshot({ path: path.join(ARTIFACTS, 'render-full.png') });
   const full = await timeFrames(page, 'timedFull');
   const fullCells = await cell(page, 'data-full');
@@ -84,7 +79,7 @@ try {
   const hash = await page.evaluate(() => location.hash);
   check('the mode is in the URL', hash.includes('render_mode=1'), hash);
   check('the camera is the same in both modes', camOf(hash) === cam, `${cam} / ${camOf(hash)}`);
-  const hybridImage = await canvasGrey(page);
+  const hybridImage = await canvasGrey(page, 'hybrid');
   await page.locator('#view').screenshot({ path: path.join(ARTIFACTS, 'render-hybrid.png') });
   await page.screenshot({ path: path.join(ARTIFACTS, 'render-hybrid-page.png') });
   const hybrid = await timeFrames(page, 'timedHybrid');
