@@ -123,12 +123,15 @@ inline double Cos(double x) {
 
 // atan of |x| <= 1 after two argument halvings, atan(x) = 2·atan(x / (1 + √(1 + x²))), then its
 // series x - x³/3 + ... + x²⁵/25 on |x| <= tan(π/16) (next term below 1e-18 relative).
-inline double AtanUnit(double x) {
-  for (int i = 0; i < 2; ++i) x = x / (1.0 + std::sqrt(1.0 + x * x));
-  double x2 = x * x;
+// Written once for a scalar and for SIMD lanes (T = double, or a vector of doubles with its own
+// lane-wise square root `sqrt`): each lane does the scalar's IEEE operations in the same order.
+template <typename T, typename Sqrt>
+inline T AtanUnitOf(T x, Sqrt sqrt) {
+  for (int i = 0; i < 2; ++i) x = x / (1.0 + sqrt(1.0 + x * x));
+  T x2 = x * x;
   // p = Σ (-1)^n x2^(n-1)/(2n+1) for n = 1..12, by Estrin's scheme.
-  double x4 = x2 * x2, x8 = x4 * x4;
-  double p =
+  T x4 = x2 * x2, x8 = x4 * x4;
+  T p =
       (((-0.3333333333333333 + 0.2 * x2) + (-0.14285714285714285 + 0.1111111111111111 * x2) * x4) +
        ((-0.09090909090909091 + 0.07692307692307693 * x2) +
         (-0.06666666666666667 + 0.058823529411764705 * x2) * x4) *
@@ -137,6 +140,9 @@ inline double AtanUnit(double x) {
        (-0.043478260869565216 + 0.04 * x2) * x4) *
           (x8 * x8);
   return 4.0 * (x + x * (x2 * p));
+}
+inline double AtanUnit(double x) {
+  return AtanUnitOf(x, [](double v) { return std::sqrt(v); });
 }
 
 inline double Atan2(double y, double x) {

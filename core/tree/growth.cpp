@@ -102,19 +102,8 @@ Double2 Floor(Double2 y) {
   const Long2 one = {0x3FF0000000000000, 0x3FF0000000000000};  // 1.0
   return nearest - (Double2)((Long2)(nearest > y) & one);
 }
-Double2 AtanUnit(Double2 x) {  // det::AtanUnit
-  for (int i = 0; i < 2; ++i) x = x / (1.0 + Sqrt(1.0 + x * x));
-  Double2 x2 = x * x;
-  Double2 x4 = x2 * x2, x8 = x4 * x4;
-  Double2 p =
-      (((-0.3333333333333333 + 0.2 * x2) + (-0.14285714285714285 + 0.1111111111111111 * x2) * x4) +
-       ((-0.09090909090909091 + 0.07692307692307693 * x2) +
-        (-0.06666666666666667 + 0.058823529411764705 * x2) * x4) *
-           x8) +
-      ((-0.05263157894736842 + 0.047619047619047616 * x2) +
-       (-0.043478260869565216 + 0.04 * x2) * x4) *
-          (x8 * x8);
-  return 4.0 * (x + x * (x2 * p));
+Double2 AtanUnit(Double2 x) {  // det::AtanUnit, two lanes
+  return det::AtanUnitOf(x, [](Double2 v) { return Sqrt(v); });
 }
 // det::Acos for x in [-1, 1]: Atan2(sqrt((1 - x)(1 + x)), x), whose y is >= 0.
 Double2 Acos(Double2 x) {
