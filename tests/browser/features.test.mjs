@@ -9,7 +9,7 @@ import { pathToFileURL } from 'node:url';
 import validator from 'gltf-validator';
 import { startServer } from '../../scripts/serve.mjs';
 import {
-  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, finish, launchChromium, nativeStats, waitReady,
+  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, finish, launchChromium, nativeStats, waitReady, watchPage,
 } from './harness.mjs';
 
 const dataset = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
@@ -96,10 +96,7 @@ const server = await startServer({ port: 0 });
 const browser = await launchChromium();
 const problems = [];
 function watch(page) {
-  page.on('console', (m) => {
-    if (m.type() === 'error' || m.type() === 'warning') problems.push(`${m.type()}: ${m.text()}`);
-  });
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  watchPage(page, problems);
   page.on('requestfailed', (r) => { if (!r.url().startsWith('blob:')) problems.push(`requestfailed: ${r.url()}`); });
   return page;
 }

@@ -4,7 +4,7 @@
 // camera live in the hash, orbiting asks for new draw lists. Screenshots: build/artifacts/grove-*.png.
 import path from 'node:path';
 import { startServer } from '../../scripts/serve.mjs';
-import { ARTIFACTS, TIMEOUT, check, finish, launchChromium } from './harness.mjs';
+import { ARTIFACTS, TIMEOUT, check, finish, launchChromium, watchPage } from './harness.mjs';
 
 const server = await startServer({ port: 0 });
 const browser = await launchChromium();
@@ -21,10 +21,7 @@ const drawn = (page, mode, viewSerialAbove = 0) => page.waitForFunction(([m, v])
 try {
   const context = await browser.newContext({ viewport: { width: 900, height: 620 } });
   const page = await context.newPage();
-  page.on('console', (m) => {
-    if (m.type() === 'error' || m.type() === 'warning') problems.push(`${m.type()}: ${m.text()}`);
-  });
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  watchPage(page, problems);
 
   // Full mode from the hash.
   const started = Date.now();

@@ -5,7 +5,7 @@
 // restores the rest image exactly. Screenshots: build/artifacts/grove-wind*.png.
 import path from 'node:path';
 import { startServer } from '../../scripts/serve.mjs';
-import { ARTIFACTS, TIMEOUT, check, finish, launchChromium, snapshotCanvas, snapshotDifference } from './harness.mjs';
+import { ARTIFACTS, TIMEOUT, check, finish, launchChromium, snapshotCanvas, snapshotDifference, watchPage } from './harness.mjs';
 
 const server = await startServer({ port: 0 });
 const browser = await launchChromium();
@@ -28,10 +28,7 @@ const cam = 'cam=0.6000,0.3400,55.0000,0.0000,1.0000,0.0000';
 try {
   const context = await browser.newContext({ viewport: { width: 900, height: 620 } });
   const page = await context.newPage();
-  page.on('console', (m) => {
-    if (m.type() === 'error' || m.type() === 'warning') problems.push(`${m.type()}: ${m.text()}`);
-  });
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  watchPage(page, problems);
 
   // Full mode at rest (one frame, ~7 s on SwiftShader), then hybrid mode at rest.
   const started = Date.now();
@@ -107,10 +104,7 @@ try {
 
   // No front and no wave: every instance of a unique tree sways identically.
   const uniform = await context.newPage();
-  uniform.on('console', (m) => {
-    if (m.type() === 'error' || m.type() === 'warning') problems.push(`${m.type()}: ${m.text()}`);
-  });
-  uniform.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  watchPage(uniform, problems);
   await page.close();
   await uniform.goto(`${server.url}grove.html#mode=hybrid&${cam}&wind=1&gust_front_speed=0&wind_variation=0&gust_on=0.5`);
   await drawn(uniform, 'hybrid');

@@ -37,6 +37,16 @@ export async function waitReady(page, serialAbove, polling = 250) {
   await page.waitForTimeout(300);  // let the frame for the new tree be drawn
 }
 
+// Adds the console errors and warnings and the uncaught errors of `page` to `problems` (a test
+// ends with a check that it stayed empty); returns the page.
+export function watchPage(page, problems) {
+  page.on('console', (m) => {
+    if (m.type() === 'error' || m.type() === 'warning') problems.push(`${m.type()}: ${m.text()}`);
+  });
+  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  return page;
+}
+
 // Debian chromium with a real WebGL2 context on SwiftShader (see ../shared/TOOLCHAIN.md).
 export function launchChromium() {
   return chromium.launch({

@@ -5,7 +5,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { startServer } from '../../scripts/serve.mjs';
 import {
-  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, finish, launchChromium, nativeStats, waitReady,
+  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, finish, launchChromium, nativeStats, waitReady, watchPage,
 } from './harness.mjs';
 
 function parseStats(text) {
@@ -47,10 +47,7 @@ const problems = [];
 try {
   const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
   const page = await context.newPage();
-  page.on('console', (m) => {
-    if (m.type() === 'error' || m.type() === 'warning') problems.push(`${m.type()}: ${m.text()}`);
-  });
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  watchPage(page, problems);
   page.on('requestfailed', (r) => problems.push(`requestfailed: ${r.url()}`));
   page.on('request', (r) => {
     if (!r.url().startsWith(server.url) && !r.url().startsWith('data:')) problems.push(`external request: ${r.url()}`);
@@ -134,10 +131,7 @@ try {
 
   // 4. A hostile hash: notices shown as text, never as markup; a usable tree is still grown.
   const page2 = await context.newPage();
-  page2.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  page2.on('console', (m) => {
-    if (m.type() === 'error' || m.type() === 'warning') problems.push(`${m.type()}: ${m.text()}`);
-  });
+  watchPage(page2, problems);
   await page2.goto(`${server.url}#preset=nope&years=7&alpha_t=%3Cimg%20src%3Dx%20onerror%3Dalert(1)%3E&bogus=1`);
   await waitReady(page2, 0);
   const notice = await page2.textContent('#notice');

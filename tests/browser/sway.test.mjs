@@ -5,24 +5,17 @@
 import path from 'node:path';
 import { startServer } from '../../scripts/serve.mjs';
 import {
-  ARTIFACTS, TIMEOUT, check, finish, launchChromium, snapshotCanvas, snapshotDifference, waitReady,
+  ARTIFACTS, TIMEOUT, check, finish, launchChromium, snapshotCanvas, snapshotDifference, waitReady, watchPage,
 } from './harness.mjs';
 
 const server = await startServer({ port: 0 });
 const browser = await launchChromium();
 const problems = [];
-function watch(page) {
-  page.on('console', (m) => {
-    if (m.type() === 'error' || m.type() === 'warning') problems.push(`${m.type()}: ${m.text()}`);
-  });
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  return page;
-}
 const swayTime = (page) => page.evaluate(() => Number(document.documentElement.dataset.swayTime || -1));
 
 try {
   const context = await browser.newContext({ viewport: { width: 1100, height: 760 } });
-  const page = watch(await context.newPage());
+  const page = watchPage(await context.newPage(), problems);
   // A small tree seen from +z (yaw 0): the wind's +x direction (wind_dir 0) is to the right.
   await page.goto(`${server.url}#preset=keyaki&seed=1&years=7`);
   await waitReady(page, 0, 100);
@@ -91,7 +84,7 @@ try {
   await page.click('#wind');
 
   // <niwa-tree wind>: an embedded tree sways by itself.
-  const embed = watch(await context.newPage());
+  const embed = watchPage(await context.newPage(), problems);
   await embed.goto(`${server.url}embed-example.html`);
   await embed.evaluate(() => {
     const tree = document.createElement('niwa-tree');
