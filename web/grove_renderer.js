@@ -3,7 +3,7 @@
 // shared by all its instances, and one draw list of cards + lines per (unique tree, distance band)).
 // Wind: every instance is skinned to its own sway poses (one pose texture per unique tree, instance
 // k's node point j at texel (k · nodes + j) · 4, as shaders/skin.glsl reads them).
-import { BACKGROUND, PARTS, fetchText, link } from './renderer.js';
+import { BACKGROUND, PARTS, fetchText, link, paintAtlas } from './renderer.js';
 
 const SEGMENT_ROW = 1024;  // texels per row of a line-segment texture (grove_line.vert)
 const SEGMENT_TEXELS = 4;  // p0 + width, p1, colour, skin (joint0, joint1, weight0, weight1)
@@ -187,48 +187,8 @@ export class GroveRenderer {
     gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
     gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
     gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, this.atlasDepth.rb);
-    gl.viewport(0, 0, size, size);
-    gl.clearColor(0, 0, 0, 0);
-    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
-    gl.enable(gl.DEPTH_TEST);
-    gl.disable(gl.BLEND);
-    const a = this.atlasProgram;
-    gl.useProgram(a.program);
-    gl.uniform3fv(a.uniforms.uLightDirection, this.light);
-    gl.uniform3fv(a.uniforms.uCameraPosition, [0, 0, 10]);
-    gl.uniform1f(a.uniforms.uXray, 0);
-    gl.uniform1f(a.uniforms.uSpecular, 0);
-    for (const name of Object.keys(PARTS)) {
-      const part = hybrid[name];
-      const count = part.indices.byteLength / 4;
-      if (count === 0) continue;
-      const vao = gl.createVertexArray();
-      gl.bindVertexArray(vao);
-      const buffers = [[0, part.positions], [1, part.normals]].map(([location, bytes]) => {
-        const b = this.#buffer(bytes);
-        gl.enableVertexAttribArray(location);
-        gl.vertexAttribPointer(location, 3, gl.FLOAT, false, 0, 0);
-        return b;
-      });
-      buffers.push(this.#buffer(part.indices, gl.ELEMENT_ARRAY_BUFFER));
-      const look = PARTS[name];
-      gl.uniform3fv(a.uniforms.uColor, look.color);
-      gl.uniform3fv(a.uniforms.uColorVariation, look.variation);
-      gl.uniform1f(a.uniforms.uDoubleSided, look.doubleSided);
-      gl.drawElements(gl.TRIANGLES, count, gl.UNSIGNED_INT, 0);
-      gl.bindVertexArray(null);
-      buffers.forEach((b) => gl.deleteBuffer(b));
-      gl.deleteVertexArray(vao);
-    }
-    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    paintAtlas(gl, this.atlasProgram, hybrid, fb, texture, this.light);
     gl.deleteFramebuffer(fb);
-    gl.bindTexture(gl.TEXTURE_2D, texture);
-    gl.generateMipmap(gl.TEXTURE_2D);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
-    gl.bindTexture(gl.TEXTURE_2D, null);
     return texture;
   }
 

@@ -54,6 +54,64 @@ export function link(gl, vertexSource, fragmentSource, name) {
   return { program, uniforms };
 }
 
+// Paints a card atlas (thesis 4.2.1) into the framebuffer `fb` (hybrid.atlasSize square, colour =
+// `texture`, with a depth buffer) from the worker's clip-space triangles of the group
+// representatives and leaf clusters, lit by `light` like the full view and transparent elsewhere,
+// then mipmaps `texture` for distant cards. Returns the triangles drawn. Used by the page and the grove.
+export function paintAtlas(gl, program, hybrid, fb, texture, light) {
+  const size = hybrid.atlasSize;
+  gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+  gl.viewport(0, 0, size, size);
+  gl.clearColor(0, 0, 0, 0);
+  gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+  gl.enable(gl.DEPTH_TEST);
+  gl.disable(gl.BLEND);
+  gl.useProgram(program.program);
+  gl.uniform3fv(program.uniforms.uLightDirection, light);
+  gl.uniform3fv(program.uniforms.uCameraPosition, [0, 0, 10]);
+  gl.uniform1f(program.uniforms.uXray, 0);
+  gl.uniform1f(program.uniforms.uSpecular, 0);
+  let triangles = 0;
+  for (const name of ['bark', 'leaves', 'flowers']) {
+    const part = hybrid[name];
+    const count = part.indices.byteLength / 4;
+    if (count === 0) continue;
+    const vao = gl.createVertexArray();
+    gl.bindVertexArray(vao);
+    const buffers = [];
+    for (const [location, bytes] of [[0, part.positions], [1, part.normals]]) {
+      const buffer = gl.createBuffer();
+      gl.bindBuffer(gl.ARRAY_BUFFER, buffer);
+      gl.bufferData(gl.ARRAY_BUFFER, bytes, gl.STATIC_DRAW);
+      gl.enableVertexAttribArray(location);
+      gl.vertexAttribPointer(location, 3, gl.FLOAT, false, 0, 0);
+      buffers.push(buffer);
+    }
+    const index = gl.createBuffer();
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, index);
+    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, part.indices, gl.STATIC_DRAW);
+    buffers.push(index);
+    const look = PARTS[name];
+    gl.uniform3fv(program.uniforms.uColor, look.color);
+    gl.uniform3fv(program.uniforms.uColorVariation, look.variation);
+    gl.uniform1f(program.uniforms.uDoubleSided, look.doubleSided);
+    gl.drawElements(gl.TRIANGLES, count, gl.UNSIGNED_INT, 0);
+    triangles += count / 3;
+    gl.bindVertexArray(null);
+    buffers.forEach((b) => gl.deleteBuffer(b));
+    gl.deleteVertexArray(vao);
+  }
+  gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+  gl.bindTexture(gl.TEXTURE_2D, texture);
+  gl.generateMipmap(gl.TEXTURE_2D);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+  gl.bindTexture(gl.TEXTURE_2D, null);
+  return triangles;
+}
+
 export class Renderer {
   // Throws an Error with a readable message when WebGL2 is missing.
   constructor(canvas) {
@@ -258,56 +316,7 @@ export class Renderer {
       gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depth);
       this.atlas = { texture, depth, fb, size };
     }
-    gl.bindFramebuffer(gl.FRAMEBUFFER, this.atlas.fb);
-    gl.viewport(0, 0, size, size);
-    gl.clearColor(0, 0, 0, 0);
-    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
-    gl.enable(gl.DEPTH_TEST);
-    gl.disable(gl.BLEND);
-    const a = this.atlasProgram;
-    gl.useProgram(a.program);
-    gl.uniform3fv(a.uniforms.uLightDirection, this.light);
-    gl.uniform3fv(a.uniforms.uCameraPosition, [0, 0, 10]);
-    gl.uniform1f(a.uniforms.uXray, 0);
-    let triangles = 0;
-    for (const name of ['bark', 'leaves', 'flowers']) {
-      const part = hybrid[name];
-      const count = part.indices.byteLength / 4;
-      if (count === 0) continue;
-      const vao = gl.createVertexArray();
-      gl.bindVertexArray(vao);
-      const buffers = [];
-      for (const [location, bytes] of [[0, part.positions], [1, part.normals]]) {
-        const buffer = gl.createBuffer();
-        gl.bindBuffer(gl.ARRAY_BUFFER, buffer);
-        gl.bufferData(gl.ARRAY_BUFFER, bytes, gl.STATIC_DRAW);
-        gl.enableVertexAttribArray(location);
-        gl.vertexAttribPointer(location, 3, gl.FLOAT, false, 0, 0);
-        buffers.push(buffer);
-      }
-      const index = gl.createBuffer();
-      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, index);
-      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, part.indices, gl.STATIC_DRAW);
-      buffers.push(index);
-      const look = PARTS[name];
-      gl.uniform3fv(a.uniforms.uColor, look.color);
-      gl.uniform3fv(a.uniforms.uColorVariation, look.variation);
-      gl.uniform1f(a.uniforms.uDoubleSided, look.doubleSided);
-      gl.uniform1f(a.uniforms.uSpecular, 0);
-      gl.drawElements(gl.TRIANGLES, count, gl.UNSIGNED_INT, 0);
-      triangles += count / 3;
-      gl.bindVertexArray(null);
-      buffers.forEach((b) => gl.deleteBuffer(b));
-      gl.deleteVertexArray(vao);
-    }
-    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-    gl.bindTexture(gl.TEXTURE_2D, this.atlas.texture);
-    gl.generateMipmap(gl.TEXTURE_2D);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
-    gl.bindTexture(gl.TEXTURE_2D, null);
+    const triangles = paintAtlas(gl, this.atlasProgram, hybrid, this.atlas.fb, this.atlas.texture, this.light);
     this.hybrid = { atlasSize: size, atlasTriangles: triangles };
   }
 
