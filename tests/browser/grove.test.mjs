@@ -4,19 +4,12 @@
 // camera live in the hash, orbiting asks for new draw lists. Screenshots: build/artifacts/grove-*.png.
 import path from 'node:path';
 import { startServer } from '../../scripts/serve.mjs';
-import { ARTIFACTS, TIMEOUT, check, finish, launchChromium, watchPage } from './harness.mjs';
+import { ARTIFACTS, TIMEOUT, check, finish, launchChromium, watchPage, waitGroveDrawn } from './harness.mjs';
 
 const server = await startServer({ port: 0 });
 const browser = await launchChromium();
 const problems = [];
 const data = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
-// Waits until the page has drawn `mode` with everything it needs (all trees; the draw lists of the
-// current view in hybrid mode).
-const drawn = (page, mode, viewSerialAbove = 0) => page.waitForFunction(([m, v]) => {
-  const d = document.documentElement.dataset;
-  if (d.status === 'error') return true;
-  return d.status === 'ready' && d.drawnMode === m && d.viewPending === '0' && (m === 'full' || Number(d.viewSerial || 0) > v);
-}, [mode, viewSerialAbove], { timeout: TIMEOUT, polling: 200 });
 
 try {
   const context = await browser.newContext({ viewport: { width: 900, height: 620 } });
@@ -26,7 +19,7 @@ try {
   // Full mode from the hash.
   const started = Date.now();
   await page.goto(`${server.url}grove.html#mode=full`);
-  await drawn(page, 'full');
+  await waitGroveDrawn(page, 'full');
   let d = await data(page);
   check('the grove loads (10 unique trees grown in the worker)', d.status === 'ready',
     `${((Date.now() - started) / 1000).toFixed(1)} s${d.status === 'error' ? `: ${await page.textContent('#message')}` : ''}`);
@@ -44,7 +37,7 @@ try {
 
   // Hybrid mode from the page's control: the hash follows.
   await page.selectOption('#mode', 'hybrid');
-  await drawn(page, 'hybrid');
+  await waitGroveDrawn(page, 'hybrid');
   d = await data(page);
   check('the mode switch writes the hash (#mode=hybrid)', (await page.evaluate(() => location.hash)).includes('mode=hybrid'));
   check('hybrid: 100 tree instances drawn', d.instances === '100', `instances ${d.instances}`);
@@ -77,7 +70,7 @@ try {
   await page.mouse.down();
   await page.mouse.move(box.x + box.width / 2 + 120, box.y + box.height / 2 + 30, { steps: 4 });
   await page.mouse.up();
-  await drawn(page, 'hybrid', serial);
+  await waitGroveDrawn(page, 'hybrid', serial);
   d = await data(page);
   const hashAfter = await page.evaluate(() => location.hash);
   check('orbiting re-selects cards and lines (new draw lists) and updates cam= in the hash',

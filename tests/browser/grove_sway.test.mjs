@@ -5,17 +5,12 @@
 // restores the rest image exactly. Screenshots: build/artifacts/grove-wind*.png.
 import path from 'node:path';
 import { startServer } from '../../scripts/serve.mjs';
-import { ARTIFACTS, TIMEOUT, check, finish, launchChromium, snapshotCanvas, snapshotDifference, watchPage } from './harness.mjs';
+import { ARTIFACTS, TIMEOUT, check, finish, launchChromium, snapshotCanvas, snapshotDifference, watchPage, waitGroveDrawn } from './harness.mjs';
 
 const server = await startServer({ port: 0 });
 const browser = await launchChromium();
 const problems = [];
 const data = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
-const drawn = (page, mode, viewSerialAbove = 0) => page.waitForFunction(([m, v]) => {
-  const d = document.documentElement.dataset;
-  if (d.status === 'error') return true;
-  return d.status === 'ready' && d.drawnMode === m && d.viewPending === '0' && (m === 'full' || Number(d.viewSerial || 0) > v);
-}, [mode, viewSerialAbove], { timeout: TIMEOUT, polling: 200 });
 const swayAt = (page, t) => page.waitForFunction((x) => Number(document.documentElement.dataset.swayTime || -1) >= x,
   t, { timeout: TIMEOUT, polling: 100 });
 // The most upwind and most downwind instance (x = along the wind, wind_dir 0) of unique tree 0.
@@ -34,13 +29,13 @@ try {
   const started = Date.now();
   const stamp = (what) => console.log(`  … ${what} at ${((Date.now() - started) / 1000).toFixed(0)} s`);
   await page.goto(`${server.url}grove.html#mode=full&${cam}`);
-  await drawn(page, 'full');
+  await waitGroveDrawn(page, 'full');
   let d = await data(page);
   check('the grove loads, wind off', d.status === 'ready' && d.wind === 'off' && d.instances === '100',
     `${((Date.now() - started) / 1000).toFixed(1)} s${d.status === 'error' ? `: ${await page.textContent('#message')}` : ''}`);
   await snapshotCanvas(page, 'rest-full');
   await page.selectOption('#mode', 'hybrid');
-  await drawn(page, 'hybrid');
+  await waitGroveDrawn(page, 'hybrid');
   await snapshotCanvas(page, 'rest-hybrid');
   await page.screenshot({ path: path.join(ARTIFACTS, 'grove-wind-still.png') });
   stamp('rest frames');
@@ -96,7 +91,7 @@ try {
   check('full: Still restores the rest image pixel for pixel', backFull === 0, `${(backFull * 100).toFixed(3)}% of pixels differ`);
   const views = Number((await data(page)).viewSerial);
   await page.selectOption('#mode', 'hybrid');
-  await drawn(page, 'hybrid', views);
+  await waitGroveDrawn(page, 'hybrid', views);
   await snapshotCanvas(page, 'still-hybrid');
   const back = await snapshotDifference(page, 'rest-hybrid', 'still-hybrid', 0);
   check('hybrid: Still restores the rest image pixel for pixel', back === 0, `${(back * 100).toFixed(3)}% of pixels differ`);
@@ -107,7 +102,7 @@ try {
   watchPage(uniform, problems);
   await page.close();
   await uniform.goto(`${server.url}grove.html#mode=hybrid&${cam}&wind=1&gust_front_speed=0&wind_variation=0&gust_on=0.5`);
-  await drawn(uniform, 'hybrid');
+  await waitGroveDrawn(uniform, 'hybrid');
   await swayAt(uniform, 2);
   const flat = await uniform.evaluate(() => window.grove.swayProbe(0));
   const [u0, u1] = farApart(flat);

@@ -47,6 +47,16 @@ export function watchPage(page, problems) {
   return page;
 }
 
+// Grove page: waits until it has drawn `mode` with everything it needs (all trees; in hybrid mode the
+// draw lists of a view newer than viewSerialAbove), or shows an error.
+export function waitGroveDrawn(page, mode, viewSerialAbove = 0) {
+  return page.waitForFunction(([m, v]) => {
+    const d = document.documentElement.dataset;
+    if (d.status === 'error') return true;
+    return d.status === 'ready' && d.drawnMode === m && d.viewPending === '0' && (m === 'full' || Number(d.viewSerial || 0) > v);
+  }, [mode, viewSerialAbove], { timeout: TIMEOUT, polling: 200 });
+}
+
 // Debian chromium with a real WebGL2 context on SwiftShader (see ../shared/TOOLCHAIN.md).
 export function launchChromium() {
   return chromium.launch({
