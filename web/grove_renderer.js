@@ -3,11 +3,10 @@
 // shared by all its instances, and one draw list of cards + lines per (unique tree, distance band)).
 // Wind: every instance is skinned to its own sway poses (one pose texture per unique tree, instance
 // k's node point j at texel (k · nodes + j) · 4, as shaders/skin.glsl reads them).
-import { BACKGROUND, PARTS, fetchText, link, paintAtlas } from './renderer.js';
+import { BACKGROUND, PARTS, fetchText, link, paintAtlas, uploadPoses } from './renderer.js';
 
 const SEGMENT_ROW = 1024;  // texels per row of a line-segment texture (grove_line.vert)
 const SEGMENT_TEXELS = 4;  // p0 + width, p1, colour, skin (joint0, joint1, weight0, weight1)
-const POSE_ROW = 1024;     // texels per row of a pose texture (skin.glsl): 4 per node point
 const MEMBER_FLOATS = 6;   // per band member: x, y, z, scale, width scale, pose block
 
 export class GroveRenderer {
@@ -127,22 +126,7 @@ export class GroveRenderer {
     const gl = this.gl, tree = this.trees[index];
     if (!tree) return;
     const points = tree.instances * tree.nodes;
-    const rows = Math.max(1, Math.ceil((points * 4) / POSE_ROW));
-    let data = poses;
-    if (poses.length !== rows * POSE_ROW * 4) {
-      data = new Float32Array(rows * POSE_ROW * 4);
-      data.set(poses.subarray(0, Math.min(poses.length, points * 16)));
-    }
-    gl.bindTexture(gl.TEXTURE_2D, tree.poseTexture);
-    if (tree.poseRows !== rows) {
-      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, POSE_ROW, rows, 0, gl.RGBA, gl.FLOAT, data);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
-      tree.poseRows = rows;
-    } else {
-      gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, POSE_ROW, rows, gl.RGBA, gl.FLOAT, data);
-    }
-    gl.bindTexture(gl.TEXTURE_2D, null);
+    tree.poseRows = uploadPoses(gl, tree.poseTexture, poses, points, tree.poseRows);
   }
 
   // Every instance of unique tree `index` at rest (identity poses: the grown shape exactly).

@@ -54,6 +54,25 @@ export function link(gl, vertexSource, fragmentSource, name) {
   return { program, uniforms };
 }
 
+// Uploads sway poses (16 floats = 4 RGBA32F texels per node point, skin.glsl's rows of POSE_ROW
+// texels) of `points` node points into `texture`, straight from the array (no padded copy); the
+// texture is reallocated when its row count (`rows`, as last returned) changes. Returns the rows.
+export function uploadPoses(gl, texture, poses, points, rows) {
+  const needed = Math.max(1, Math.ceil((points * POSE_TEXELS) / POSE_ROW));
+  gl.bindTexture(gl.TEXTURE_2D, texture);
+  if (rows !== needed) {
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, POSE_ROW, needed, 0, gl.RGBA, gl.FLOAT, null);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+  }
+  const texels = Math.min(points * POSE_TEXELS, Math.floor(poses.length / 4));
+  const full = Math.floor(texels / POSE_ROW), rest = texels - full * POSE_ROW;
+  if (full > 0) gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, POSE_ROW, full, gl.RGBA, gl.FLOAT, poses.subarray(0, full * POSE_ROW * 4));
+  if (rest > 0) gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, full, rest, 1, gl.RGBA, gl.FLOAT, poses.subarray(full * POSE_ROW * 4, texels * 4));
+  gl.bindTexture(gl.TEXTURE_2D, null);
+  return needed;
+}
+
 // Paints a card atlas (thesis 4.2.1) into the framebuffer `fb` (hybrid.atlasSize square, colour =
 // `texture`, with a depth buffer) from the worker's clip-space triangles of the group
 // representatives and leaf clusters, lit by `light` like the full view and transparent elsewhere,
@@ -150,19 +169,7 @@ export class Renderer {
   setPoses(poses, wind = 0, time = 0) {
     const gl = this.gl;
     const nodes = Math.floor(poses.length / 16);
-    const rows = Math.max(1, Math.ceil((nodes * POSE_TEXELS) / POSE_ROW));
-    const padded = new Float32Array(rows * POSE_ROW * 4);
-    padded.set(poses.subarray(0, nodes * 16));
-    gl.bindTexture(gl.TEXTURE_2D, this.poseTexture);
-    if (this.poseRows !== rows) {
-      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, POSE_ROW, rows, 0, gl.RGBA, gl.FLOAT, padded);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
-      this.poseRows = rows;
-    } else {
-      gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, POSE_ROW, rows, gl.RGBA, gl.FLOAT, padded);
-    }
-    gl.bindTexture(gl.TEXTURE_2D, null);
+    this.poseRows = uploadPoses(gl, this.poseTexture, poses, nodes, this.poseRows);
     this.poseNodes = nodes;
     this.wind = Number(wind) || 0;
     this.swayTime = Number(time) || 0;
