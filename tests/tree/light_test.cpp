@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <utility>
 
 #include "tree/growth.h"
 #include "tree/presets.h"
@@ -93,15 +94,27 @@ TEST(Light, GridAgreesWithReferenceOnEveryPresetAt8Years) {
                          0.5f * glm::length(b.nodes.back() - b.nodes.front()) + 0.5f * leaf});
     }
     if (spheres.size() < 10) continue;  // too few shoots to correlate
-    auto exact = ComputeLightReference(spheres, DefaultSky(), 0.5f);
-    auto fast = ComputeLightGrid(spheres, DefaultSky(), 0.5f);
-    std::vector<double> a, b;
-    for (std::size_t i = 0; i < spheres.size(); ++i) {
-      a.push_back(exact[i].light);
-      b.push_back(fast[i].light);
+    // Twice: under the light the preset grows in (its own sky, sun and leaf-sphere opacity), and
+    // under a strong sun (weight 0.3) with denser spheres (opacity 0.5).
+    const ParamSet& p = preset.params;
+    const Sky own_sky = MakeSky(static_cast<float>(p.Get(ParamId::kSunElevation)),
+                                static_cast<float>(p.Get(ParamId::kSunAzimuth)),
+                                static_cast<float>(p.Get(ParamId::kSunWeight)),
+                                static_cast<float>(p.Get(ParamId::kSkyZenithRatio)));
+    const float own_opacity = static_cast<float>(p.Get(ParamId::kSphereOpacity));
+    const std::pair<Sky, float> settings[] = {{own_sky, own_opacity}, {DefaultSky(), 0.5f}};
+    for (const auto& [sky, opacity] : settings) {
+      auto exact = ComputeLightReference(spheres, sky, opacity);
+      auto fast = ComputeLightGrid(spheres, sky, opacity);
+      std::vector<double> a, b;
+      for (std::size_t i = 0; i < spheres.size(); ++i) {
+        a.push_back(exact[i].light);
+        b.push_back(fast[i].light);
+      }
+      double r_value = Pearson(a, b);
+      EXPECT_GE(r_value, 0.95) << preset.name << " with " << spheres.size() << " spheres, opacity "
+                               << opacity;
     }
-    double r_value = Pearson(a, b);
-    EXPECT_GE(r_value, 0.95) << preset.name << " with " << spheres.size() << " spheres";
   }
 }
 
