@@ -89,10 +89,14 @@ const std::array<ParamSpec, kParamCount> kTable = {{
      "Elevation of the sun above the horizon."},
     {P::kSunAzimuth, "sun_azimuth", "", "deg", 0, -180, 180, false, "light",
      "Azimuth of the sun, from +x towards +z."},
-    {P::kSunWeight, "sun_weight", "", "", 0.1, 0, 1, false, "light",
-     "Share of the light that comes from the sun; the rest is the overcast sky."},
+    {P::kSunWeight, "sun_weight", "", "", 0, 0, 1, false, "light",
+     "Share of the light that comes from the sun; the rest is the overcast sky. Default 0: the "
+     "thesis's light is sky light only, and a sun makes every tree lean towards it."},
     {P::kSkyZenithRatio, "sky_zenith_ratio", "", "", 1, 1, 3, false, "light",
      "Sky radiance at the zenith over that at the horizon: 1 uniform sky, 3 CIE overcast sky."},
+    {P::kLightScale, "light_scale", "", "", 1, 0.1, 1, false, "light",
+     "L = this × the light reaching the shoot's leaf sphere (1 = open sky): sets the scale of L, "
+     "which the thesis does not give, against table 2.2's hormone values."},
 
     {P::kBLLow, "b_L_low", "b_L", "", 0.12, 0, 1, false, "bending",
      "Phototropism rate at hormone 0 (fig. 2.6)."},

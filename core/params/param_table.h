@@ -52,6 +52,7 @@ enum class ParamId : int {
   kSunAzimuth,
   kSunWeight,
   kSkyZenithRatio,
+  kLightScale,
   // bending (thesis 2.4.3, eqs. 2.4-2.9)
   kBLLow,
   kBLHigh,

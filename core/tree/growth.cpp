@@ -301,9 +301,11 @@ BreakChances BudBreakChances(const ParamSet& p, float hormone, bool dwarf, int y
   chance.terminal = BreakProbability(hormone, h_short, h_sat, 1.0f, 1.0f);
   chance.terminally_lateral = BreakProbability(
       hormone, h_short, h_sat, static_cast<float>(p.Get(ParamId::kPTlS)), p_tl_long);
-  // A long shoot's lateral buds: P_l (fig. 2.9) scaled by the shoot's hormone, reaching it at
-  // H_sat; dwarf shoots' lateral buds do not break (they are flowers for sakura).
-  chance.lateral = dwarf ? 0.0f : p_lateral_max * Clamp01(hormone / h_sat);
+  // Lateral buds: P_l (fig. 2.9) scaled by the shoot's hormone, reaching it at H_sat. A dwarf
+  // shoot's low hormone keeps the chance low; its lateral buds are flowers instead when
+  // dwarf_flowers = 1 (sakura), which SetNextYearBuds decides.
+  (void)dwarf;
+  chance.lateral = p_lateral_max * Clamp01(hormone / h_sat);
   return chance;
 }
 
@@ -584,9 +586,10 @@ void Grower::ComputeLight() {
   std::vector<LightSample> samples = ComputeLightGrid(
       spheres, sky, static_cast<float>(p.Get(ParamId::kSphereOpacity)), light_buffers_);
   float k = static_cast<float>(p.Get(ParamId::kKDeath));
+  float light_scale = static_cast<float>(p.Get(ParamId::kLightScale));
   for (std::size_t i = 0; i < new_shoots_.size(); ++i) {
     Branch& s = tree_.branches[static_cast<std::size_t>(new_shoots_[i])];
-    s.light = samples[i].light;
+    s.light = light_scale * samples[i].light;
     s.light_direction = samples[i].direction;
     // 2.4.1: death below a threshold drawn from k × U(0.5, 1).
     float threshold = k * static_cast<float>(rng_.Uniform(0.5, 1.0));

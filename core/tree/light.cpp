@@ -116,10 +116,12 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     hi = glm::max(hi, s.center + glm::vec3(s.radius));
     radius_sum += s.radius;
   }
-  // Cell about half a mean sphere radius, at most 48 cells along the longest side.
+  // Cell about half a mean sphere radius, at most 56 cells along the longest side (48 left the
+  // grid at r 0.951 against the pairwise reference on ginkgo at 8 years; 56 gives r >= 0.968 on
+  // every preset at 20 % more light time than 48).
   glm::vec3 extent = hi - lo;
   float longest = std::max(extent.x, std::max(extent.y, extent.z));
-  float cell = std::max(0.5f * radius_sum / static_cast<float>(spheres.size()), longest / 48.0f);
+  float cell = std::max(0.5f * radius_sum / static_cast<float>(spheres.size()), longest / 56.0f);
   // Interior cells 1..n per axis inside a border of empty cells, so sweeps need no bounds checks.
   const int n[3] = {std::max(1, static_cast<int>(std::ceil(extent.x / cell))),
                     std::max(1, static_cast<int>(std::ceil(extent.y / cell))),
@@ -195,8 +197,10 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
   const std::ptrdiff_t* layout_stride[2] = {stride, stride_x_major};
   std::vector<float>& density_x_major = buffers.density_x_major;
   bool x_major_used = false;
-  for (const glm::vec3& d : sky.directions) {
-    x_major_used |= std::fabs(d.x) > std::fabs(d.y) && std::fabs(d.x) >= std::fabs(d.z);
+  for (std::size_t k = 0; k < sky.directions.size(); ++k) {
+    const glm::vec3& d = sky.directions[k];
+    x_major_used |= sky.weights[k] != 0.0f && std::fabs(d.x) > std::fabs(d.y) &&
+                    std::fabs(d.x) >= std::fabs(d.z);
   }
   if (x_major_used) {
     density_x_major.assign(volume, 0.0f);
@@ -248,6 +252,11 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
   std::vector<float>& transmittance = buffers.transmittance;
   transmittance.resize(spheres.size() * directions);  // one row of all spheres per direction
   for (std::size_t k = 0; k < directions; ++k) {
+    if (sky.weights[k] == 0.0f) {  // a sun of weight 0: its light adds nothing, skip the sweep
+      std::fill_n(transmittance.begin() + static_cast<std::ptrdiff_t>(k * spheres.size()),
+                  spheres.size(), 0.0f);
+      continue;
+    }
     const glm::vec3& d = sky.directions[k];
     const float comp[3] = {d.x, d.y, d.z};
     int axis = 0;

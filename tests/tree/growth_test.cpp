@@ -22,11 +22,11 @@ GrowRequest RequestFor(const std::string& preset, int years, uint64_t seed = 1) 
 }
 
 TEST(HormoneRamp, InterpolatesTableRangesByHormone) {
-  ParamSet p = FindPreset("sakura")->params;  // N 6 ~ 25, H_sat 1
+  ParamSet p = FindPreset("sakura")->params;  // N 6 ~ 25, H_sat 0.58
   EXPECT_FLOAT_EQ(HormoneRamp(p, 0.0f, ParamId::kNLow, ParamId::kNHigh), 6.0f);
-  EXPECT_FLOAT_EQ(HormoneRamp(p, 0.5f, ParamId::kNLow, ParamId::kNHigh), 15.5f);
+  EXPECT_FLOAT_EQ(HormoneRamp(p, 0.29f, ParamId::kNLow, ParamId::kNHigh), 15.5f);
   EXPECT_FLOAT_EQ(HormoneRamp(p, 3.0f, ParamId::kNLow, ParamId::kNHigh), 25.0f);
-  EXPECT_FLOAT_EQ(HormoneRamp(p, 0.5f, ParamId::kBLLow, ParamId::kBLHigh), 0.065f);  // 0.12 ~ 0.01
+  EXPECT_FLOAT_EQ(HormoneRamp(p, 0.29f, ParamId::kBLLow, ParamId::kBLHigh), 0.065f);  // 0.12 ~ 0.01
   p.Set(ParamId::kUseHormone, 0);
   EXPECT_FLOAT_EQ(HormoneRamp(p, 0.0f, ParamId::kNLow, ParamId::kNHigh), 25.0f);
 }
@@ -169,6 +169,21 @@ TEST(LightDeath, ShootsBelowKTimesHalfAlwaysDieAndAboveKNeverDo) {
   EXPECT_GT(dead, 0);
   r.params.Set(ParamId::kKDeath, 0.0);
   for (const Branch& b : GrowTree(r).branches) EXPECT_TRUE(b.alive);
+}
+
+// light_scale multiplies L: the lone first-year shoot sees the open sky (light 1 before scaling),
+// and a dimmer L (less hormone by eq. 2.2, more deaths) grows a smaller tree.
+TEST(LightScale, MultipliesTheLightOfEveryShoot) {
+  GrowRequest r = RequestFor("sakura", 1);
+  r.params.Set(ParamId::kLightScale, 1.0);
+  float open_sky = GrowTree(r).branches[0].light;
+  EXPECT_NEAR(open_sky, 1.0f, 1e-3f);  // the grid removes the shoot's own sphere approximately
+  r.params.Set(ParamId::kLightScale, 0.6);
+  EXPECT_FLOAT_EQ(GrowTree(r).branches[0].light, 0.6f * open_sky);
+  r.years = 10;
+  std::size_t dim = GrowTree(r).branches.size();
+  r.params.Set(ParamId::kLightScale, 1.0);
+  EXPECT_LT(2 * dim, GrowTree(r).branches.size());
 }
 
 void ExpectConsistentTree(const Tree& tree) {

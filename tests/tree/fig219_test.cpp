@@ -1,0 +1,177 @@
+// Fig. 2.19 (thesis 2.5.4): the three species at 15 years show the forms the thesis describes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <string>
+#include <vector>
+
+#include "tree/growth.h"
+#include "tree/presets.h"
+
+namespace niwa {
+namespace {
+
+Tree Grow15(const std::string& name) {
+  const Preset* preset = FindPreset(name);
+  EXPECT_NE(preset, nullptr) << name;
+  GrowRequest r;
+  r.preset = name;
+  r.params = preset->params;
+  r.seed = preset->seed;
+  r.years = 15;
+  return GrowTree(r);
+}
+
+float Length(const Branch& b) {
+  float sum = 0.0f;
+  for (std::size_t i = 1; i < b.nodes.size(); ++i) sum += glm::length(b.nodes[i] - b.nodes[i - 1]);
+  return sum;
+}
+
+float Median(std::vector<float> v) {
+  if (v.empty()) return 0.0f;
+  std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+struct Shape {
+  float height = 0, width = 0, lean_deg = 0;
+};
+
+glm::vec3 Centroid(const Tree& tree) {
+  glm::vec3 sum(0.0f);
+  double count = 0;
+  for (const Branch& b : tree.branches) {
+    if (!b.alive) continue;
+    for (const glm::vec3& n : b.nodes) {
+      sum += n;
+      count += 1;
+    }
+  }
+  return sum / static_cast<float>(count);
+}
+
+Shape ShapeOf(const Tree& tree) {
+  glm::vec3 lo(1e9f), hi(-1e9f), sum(0.0f);
+  double count = 0;
+  for (const Branch& b : tree.branches) {
+    if (!b.alive) continue;
+    for (const glm::vec3& n : b.nodes) {
+      lo = glm::min(lo, n);
+      hi = glm::max(hi, n);
+      sum += n;
+      count += 1;
+    }
+  }
+  glm::vec3 c = sum / static_cast<float>(count);
+  Shape s;
+  s.height = hi.y;
+  s.width = std::max(hi.x - lo.x, hi.z - lo.z);
+  s.lean_deg = std::atan2(std::hypot(c.x, c.z), c.y) * 180.0f / 3.14159265f;
+  return s;
+}
+
+// (a) "長枝と短枝の長さが非常に異なる。長枝は数10cmにもなるが、短枝は1cmにも満たないことが多い";
+// "頂生枝が長枝となって勢いよく伸びており、側生枝はごく短い短枝になることが多い"; dwarfing occurs
+// "主に側生枝に" (2.3.3 e).
+TEST(Fig219, SakuraHasLongTerminalShootsAndVeryShortDwarfShoots) {
+  Tree tree = Grow15("sakura");
+  std::vector<float> dwarf, terminal_long;
+  int terminals = 0, terminal_dwarfs = 0, laterals = 0, lateral_dwarfs = 0, dwarfs = 0;
+  float longest = 0.0f;
+  for (const Branch& b : tree.branches) {
+    if (!b.alive || b.parent < 0) continue;
+    float length = Length(b);
+    if (b.dwarf) {
+      dwarf.push_back(length);
+      ++dwarfs;
+    }
+    // A long shoot's terminal bud grows a long shoot; a dwarf shoot's grows a dwarf shoot again.
+    const bool parent_long = !tree.branches[static_cast<std::size_t>(b.parent)].dwarf;
+    if (b.kind == ShootKind::kTerminal && parent_long) {
+      ++terminals;
+      if (b.dwarf)
+        ++terminal_dwarfs;
+      else
+        terminal_long.push_back(length);
+      longest = std::max(longest, length);
+    }
+    if (b.kind == ShootKind::kLateral) {
+      ++laterals;
+      if (b.dwarf) ++lateral_dwarfs;
+    }
+  }
+  ASSERT_GT(dwarfs, 0);
+  // Dwarf shoots barely grow: none longer than 2 cm (six nodes of table 2.2's shortest internode
+  // are 1.2 cm).
+  EXPECT_LE(*std::max_element(dwarf.begin(), dwarf.end()), 2.0f);
+  // Long terminal shoots several tens of cm at most, and typically many times a dwarf shoot.
+  EXPECT_GE(longest, 30.0f);
+  EXPECT_GE(Median(terminal_long), 5.0f * Median(dwarf));
+  // Terminal shoots of long shoots are long (apical dominance); dwarfing falls mainly on lateral
+  // shoots.
+  EXPECT_LE(terminal_dwarfs, terminals / 10);
+  EXPECT_GE(3 * lateral_dwarfs, 2 * dwarfs);
+  EXPECT_GE(4 * lateral_dwarfs, laterals);  // at least a quarter of the lateral shoots are dwarf
+}
+
+// (b) "初めは幹を伸ばすために側芽の発芽を抑制しているので分枝せずに幹が長く伸びているが、その後枝が
+// 細かく分枝しており、全体にホウキを逆さに立てたような樹形".
+TEST(Fig219, KeyakiIsABareTrunkUnderAFinelyBranchedBroom) {
+  Tree tree = Grow15("keyaki");
+  Shape s = ShapeOf(tree);
+  int shoots = 0, leaves = 0, low_leaves = 0;
+  for (const Branch& b : tree.branches) {
+    if (!b.alive) continue;
+    ++shoots;
+    for (const Leaf& leaf : b.leaves) {
+      ++leaves;
+      if (b.nodes[static_cast<std::size_t>(leaf.node)].y < s.height / 3.0f) ++low_leaves;
+    }
+  }
+  EXPECT_GE(shoots, 1000);              // fine branching, not a few long stems
+  EXPECT_GE(s.width, 0.4f * s.height);  // a broom head, not a whip
+  EXPECT_LE(low_leaves * 20, leaves);   // the lower third is bare trunk (under 5 % of leaves)
+}
+
+// (c) "長枝、短枝の差があまりなく、全体に丸い樹形".
+TEST(Fig219, TsutsujiIsRoundWithLittleLongDwarfDifference) {
+  Tree tree = Grow15("tsutsuji");
+  Shape s = ShapeOf(tree);
+  std::vector<float> dwarf, long_shoots;
+  for (const Branch& b : tree.branches) {
+    if (!b.alive || b.parent < 0) continue;
+    (b.dwarf ? dwarf : long_shoots).push_back(Length(b));
+  }
+  EXPECT_GE(s.width, 0.8f * s.height);
+  ASSERT_FALSE(dwarf.empty());
+  ASSERT_FALSE(long_shoots.empty());
+  EXPECT_LE(Median(long_shoots), 2.5f * Median(dwarf));
+}
+
+// The thesis's trees stand upright: with the default sky light (no sun) none leans to one side.
+// Each seed's tree leans a few degrees its own way; a sun would lean them all the same way, so the
+// lean of the centroid averaged over three seeds is checked (keyaki's sympodial zig-zag, which
+// starts the same way for every seed, leaves it 4.3 deg).
+TEST(Fig219, ThesisSpeciesDoNotLean) {
+  for (const char* name : {"sakura", "keyaki", "tsutsuji"}) {
+    glm::vec3 mean(0.0f);
+    for (uint64_t seed = 1; seed <= 3; ++seed) {
+      const Preset* preset = FindPreset(name);
+      GrowRequest r;
+      r.preset = name;
+      r.params = preset->params;
+      r.seed = seed;
+      r.years = 15;
+      mean += Centroid(GrowTree(r)) / 3.0f;
+    }
+    float lean_deg = std::atan2(std::hypot(mean.x, mean.z), mean.y) * 180.0f / 3.14159265f;
+    EXPECT_LE(lean_deg, 5.0f) << name;  // with a sun of weight 0.1 they leaned 11-12 deg
+  }
+}
+
+}  // namespace
+}  // namespace niwa
