@@ -21,7 +21,7 @@ namespace niwa {
 namespace {
 
 constexpr float kEpsilon = 1e-6f;
-constexpr float kFlowerPad_cm = 1.3f;  // flower radius 1 cm plus its 0.3 cm lift (mesh.cpp)
+constexpr float kFlowerPad_cm = kFlowerOuterRadius_cm + kFlowerLift_cm;  // a flower's reach (mesh.h)
 
 glm::vec3 SafeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
   float length = glm::length(v);

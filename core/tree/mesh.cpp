@@ -21,9 +21,6 @@ constexpr float kThickRadius = 4.0f;
 
 constexpr int kFlowerPetals = 5;
 constexpr int kFlowerOutline = 2 * kFlowerPetals;  // outer and inner points around a flower
-constexpr float kFlowerOuterRadius = 1.0f;         // cm: the flower is about 2 cm across
-constexpr float kFlowerInnerRadius = 0.4f;         // cm: notches between the petals
-constexpr float kFlowerLift = 0.3f;  // cm: offset from the node along the facing direction
 
 // Vertex and index counts of the pieces, for sizing the buffers once.
 constexpr std::size_t kLeafVertices = 8, kLeafIndices = 12;  // two quads, two triangles each
@@ -304,7 +301,7 @@ struct FlowerTable {
   FlowerTable() {
     for (int k = 0; k < kFlowerOutline; ++k) {
       float angle = 2.0f * kPi * static_cast<float>(k) / static_cast<float>(kFlowerOutline);
-      float r = (k % 2 == 0) ? kFlowerOuterRadius : kFlowerInnerRadius;
+      float r = (k % 2 == 0) ? kFlowerOuterRadius_cm : kFlowerInnerRadius_cm;
       c[k] = det::Cosf(angle) * r;
       s[k] = det::Sinf(angle) * r;
     }
@@ -321,7 +318,7 @@ void AddFlower(const Branch& branch, int node, const MeshOptions& options,
   glm::vec3 facing = SafeNormalize(kUp + 0.5f * outward, kUp);
   glm::vec3 a = AnyPerpendicular(facing);
   glm::vec3 b = SafeNormalizeOrPerpendicular(glm::cross(facing, a), a);
-  glm::vec3 center = (position + facing * kFlowerLift) * scale;
+  glm::vec3 center = (position + facing * kFlowerLift_cm) * scale;
   for (int side = 0; side < 2; ++side) {
     glm::vec3 normal = side == 0 ? facing : -facing;
     uint32_t hub = flowers->next;
@@ -329,8 +326,8 @@ void AddFlower(const Branch& branch, int node, const MeshOptions& options,
     for (int k = 0; k < kFlowerOutline; ++k) {
       float c = outline.c[k], s = outline.s[k];
       flowers->Vertex(center + (a * c + b * s) * scale, normal,
-                      0.5f + 0.5f * c / kFlowerOuterRadius, 0.5f + 0.5f * s / kFlowerOuterRadius,
-                      id, at);
+                      0.5f + 0.5f * c / kFlowerOuterRadius_cm,
+                      0.5f + 0.5f * s / kFlowerOuterRadius_cm, id, at);
     }
     // a x b = facing, so increasing angle is counter-clockwise seen from the front.
     for (uint32_t k = 0; k < static_cast<uint32_t>(kFlowerOutline); ++k) {

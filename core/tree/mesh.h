@@ -9,6 +9,11 @@
 
 namespace niwa {
 
+// A flower: five petals, 3.2 cm across (a Somei-yoshino flower is 3-3.5 cm), lifted off its node.
+constexpr float kFlowerOuterRadius_cm = 1.6f;   // petal tips
+constexpr float kFlowerInnerRadius_cm = 0.64f;  // notches between the petals
+constexpr float kFlowerLift_cm = 0.3f;          // offset from the node along the facing direction
+
 // One indexed triangle list (GL/glTF ready: 32-bit indices, interleaving left to the consumer).
 struct MeshBuffers {
   std::vector<float> positions;   // xyz per vertex, metres, y up

@@ -184,7 +184,8 @@ TEST(MeshTest, VertexNodeIdsNameTheNodeEachVertexHangsOn) {
   }
   for (std::size_t v = 0; v < mesh.flowers.vertex_count(); ++v) {
     glm::vec3 node = node_of(mesh.flower_branch_id[v], mesh.flower_node_index[v]);
-    ASSERT_LE(glm::length(Vec(mesh.flowers.positions, v) - node), 1.1f * kScale) << v;  // 1 cm
+    // A petal tip is 1.6 cm out from the hub, which sits 0.3 cm off the node.
+    ASSERT_LE(glm::length(Vec(mesh.flowers.positions, v) - node), 1.63f * kScale) << v;
   }
 }
 
@@ -325,7 +326,7 @@ TEST(MeshTest, LeafQuadsLieAlongTheLeafDirection) {
   EXPECT_EQ(mesh.leaves.vertex_count(), 8 * quad);
 }
 
-TEST(MeshTest, FlowersAreAboutTwoCentimetresAcrossAndFaceUp) {
+TEST(MeshTest, FlowersAreThreePointTwoCentimetresAcrossAndFaceUp) {
   Tree tree = Grow("sakura", 8);
   TreeMesh mesh = BuildTreeMesh(tree);
   ASSERT_GT(mesh.flowers.vertex_count(), 0u);
@@ -335,7 +336,7 @@ TEST(MeshTest, FlowersAreAboutTwoCentimetresAcrossAndFaceUp) {
     for (std::size_t k = 1; k <= 10; ++k) {
       widest = std::max(widest, glm::length(Vec(mesh.flowers.positions, f + k) - hub));
     }
-    EXPECT_NEAR(2.0f * widest, 2.0f * kScale, 1e-5f);
+    EXPECT_NEAR(2.0f * widest, 3.2f * kScale, 1e-5f);
     EXPECT_GT(Vec(mesh.flowers.normals, f).y, 0.5f);
     EXPECT_EQ(Vec(mesh.flowers.normals, f + 11), -Vec(mesh.flowers.normals, f));
   }
