@@ -5,7 +5,7 @@
 // restores the rest image exactly. Screenshots: build/artifacts/grove-wind*.png.
 import path from 'node:path';
 import { startServer } from '../../scripts/serve.mjs';
-import { ARTIFACTS, TIMEOUT, check, finish, launchChromium, snapshotCanvas, snapshotDifference, watchPage, waitGroveDrawn } from './harness.mjs';
+import { ARTIFACTS, TIMEOUT, check, finish, launchChromium, saveCanvasPng, snapshotCanvas, snapshotDifference, watchPage, waitGroveDrawn } from './harness.mjs';
 
 const server = await startServer({ port: 0 });
 const browser = await launchChromium();
@@ -75,7 +75,7 @@ try {
     return Number(dd.frameSerial) > n && dd.drawnMode === 'full';
   }, serial, { timeout: TIMEOUT, polling: 100 });
   await snapshotCanvas(page, 'blow-full');
-  await page.screenshot({ path: path.join(ARTIFACTS, 'grove-wind-full.png') });
+  await saveCanvasPng(page, 'grove-wind-full.png');
   const movedFull = await snapshotDifference(page, 'rest-full', 'blow-full', 30);
   const tFull = Number((await data(page)).swayTime);
   check('full: the grove moves in the wind', movedFull > 0.003, `${(movedFull * 100).toFixed(2)}% of pixels changed at t = ${tFull.toFixed(2)} s`);

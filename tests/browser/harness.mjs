@@ -94,6 +94,14 @@ export async function snapshotCanvas(page, name, selector = '#view') {
   }, [name, selector]);
 }
 
+// Writes the canvas's current image (drawing buffer preserved) to build/artifacts/FILE as PNG.
+// Unlike page.screenshot it needs no new compositor frame, which a grove redrawing in full mode
+// every frame under SwiftShader may not give within a timeout on a loaded machine.
+export async function saveCanvasPng(page, file, selector = '#view') {
+  const url = await page.evaluate((sel) => document.querySelector(sel).toDataURL('image/png'), selector);
+  fs.writeFileSync(path.join(ARTIFACTS, file), Buffer.from(url.split(',')[1], 'base64'));
+}
+
 // Share of pixels whose colour differs by more than `tolerance` (sum over RGB) between two
 // snapshots taken with snapshotCanvas.
 export async function snapshotDifference(page, a, b, tolerance = 0) {
