@@ -77,8 +77,12 @@ if (m10 && m20 && m40) {
          `internodes ×${size.toFixed(1)}, time ×${time.toFixed(1)}: ${perDoubling.toFixed(2)}× per doubling`, perDoubling <= 2.5);
   }
 }
-const big = native.get('grow/sakura-20y');
-if (big) goal(`100,000-internode tree (sakura 20 years, ${big.check} internodes) < 1 s native`, `${fmt(big.ms)} ms`, big.ms < 1000);
+// The smallest grown tree of at least 100,000 internodes (sakura 20 years has fewer since the
+// growth model's retune; maple at 40 years has about 400,000).
+const big = [...native.values()].filter((r) => r.workload.startsWith('grow/') && r.check >= 100000)
+  .sort((a, b) => a.check - b.check)[0];
+if (big) goal(`100,000-internode tree (${big.workload}, ${big.check} internodes) < 1 s native`, `${fmt(big.ms)} ms`, big.ms < 1000);
+else goal('100,000-internode tree < 1 s native', 'no grow workload reaches 100,000 internodes', false);
 const g20 = ms(native, 'light/grid-20000'), r20 = ms(native, 'light/reference-20000');
 if (g20 && r20) goal('light at 20,000 spheres: grid ≥ 50× faster than the reference (native)', `${(r20 / g20).toFixed(0)}×`, r20 / g20 >= 50);
 const gm = ms(wasm, 'grow+mesh/sakura-15y');
