@@ -695,10 +695,11 @@ void Grower::SetNextYearBuds() {
     glm::vec3 tip_direction = f.direction[static_cast<std::size_t>(tip)];
     if (terminal_buds > 0) {
       add_bud(ShootKind::kTerminal, tip, tip_azimuth, psi_t_, p_terminal, false);
-      // The terminal shoot continues the phyllotaxis spiral.
-      s.buds.back().azimuth =
-          Orthonormalize(RotateAbout(tip_azimuth, tip_direction, turn_cos_[1], turn_sin_[1]),
-                         s.buds.back().direction);
+      // The terminal shoot continues the phyllotaxis spiral: its node 1 is one step (φ) past this
+      // shoot's tip node, as node i + 1 is one step past node i. (It used to start one step later:
+      // with φ = 1/2 and one node per shoot, the binary pattern then split to the same side every
+      // year and its main axis curved over by 45° in eight years.)
+      s.buds.back().azimuth = Orthonormalize(tip_azimuth, s.buds.back().direction);
     }
     for (int k = 0; k < tl_buds; ++k) {
       const CosSin& turn = around_tl_[static_cast<std::size_t>(k)];

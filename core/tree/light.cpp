@@ -117,7 +117,7 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     radius_sum += s.radius;
   }
   // Cell about half a mean sphere radius, at most 56 cells along the longest side (48 left the
-  // grid at r 0.951 against the pairwise reference on ginkgo at 8 years; 56 gives r >= 0.968 on
+  // grid at r 0.951 against the pairwise reference on ginkgo at 8 years; 56 gives r >= 0.964 on
   // every preset at 20 % more light time than 48).
   glm::vec3 extent = hi - lo;
   float longest = std::max(extent.x, std::max(extent.y, extent.z));

@@ -155,7 +155,7 @@ TEST(Fig219, TsutsujiIsRoundWithLittleLongDwarfDifference) {
 // The thesis's trees stand upright: with the default sky light (no sun) none leans to one side.
 // Each seed's tree leans a few degrees its own way; a sun would lean them all the same way, so the
 // lean of the centroid averaged over three seeds is checked (keyaki's sympodial zig-zag, which
-// starts the same way for every seed, leaves it 4.3 deg).
+// starts the same way for every seed, leaves it 3.4 deg).
 TEST(Fig219, ThesisSpeciesDoNotLean) {
   for (const char* name : {"sakura", "keyaki", "tsutsuji"}) {
     glm::vec3 mean(0.0f);

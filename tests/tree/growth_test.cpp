@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "math/rotation.h"
 #include "tree/presets.h"
@@ -128,6 +129,41 @@ TEST(Phyllotaxis, DecussatePairsAreOppositeAndCrossed) {
     EXPECT_NEAR(TurnBetween(laterals[i], laterals[i + 1]), 180.0f, 1e-2f);
     EXPECT_NEAR(TurnBetween(laterals[i], laterals[i + 2]), 90.0f, 1e-2f);
   }
+}
+
+// The spiral runs on across the yearly shoots: with φ = 1/2 the terminal shoot's first node is
+// opposite its parent's tip node, so its first lateral bud sits on the side of the parent's last
+// lateral bud (two steps of 180°), not opposite it.
+TEST(Phyllotaxis, TerminalShootContinuesTheSpiral) {
+  GrowRequest r = RequestFor("sakura", 2);
+  for (auto [id, value] : {std::pair{ParamId::kUseLight, 0.0},
+                           {ParamId::kUseHormone, 0.0},
+                           {ParamId::kBGLow, 0.0},
+                           {ParamId::kBGHigh, 0.0},
+                           {ParamId::kBLLow, 0.0},
+                           {ParamId::kBLHigh, 0.0},
+                           {ParamId::kPhi, 0.5},
+                           {ParamId::kPsiL, 90.0},
+                           {ParamId::kPsiT, 0.0},
+                           {ParamId::kPTlL, 0.0},
+                           {ParamId::kPLYoung, 0.0}}) {
+    ASSERT_EQ(r.params.Set(id, value), "");
+  }
+  Tree tree = GrowTree(r);
+  const Branch& parent = tree.branches[0];
+  const Branch* child = nullptr;
+  for (const Branch& b : tree.branches) {
+    if (b.parent == 0 && b.kind == ShootKind::kTerminal) child = &b;
+  }
+  ASSERT_NE(child, nullptr);
+  auto last_lateral = [](const Branch& b, bool first) {
+    const Bud* pick = nullptr;
+    for (const Bud& bud : b.buds) {
+      if (bud.kind == ShootKind::kLateral && (pick == nullptr || !first)) pick = &bud;
+    }
+    return pick->direction;
+  };
+  EXPECT_NEAR(TurnBetween(last_lateral(parent, false), last_lateral(*child, true)), 0.0f, 1e-2f);
 }
 
 TEST(Bending, StepCapsOfEquations27And29Hold) {
