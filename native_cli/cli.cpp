@@ -217,8 +217,7 @@ void PrintMappings(const GrowRequest& request, std::ostream& out) {
   for (int i = 0; i <= 60; ++i) {
     float h = static_cast<float>(1.5 * h_sat * i / 60.0);
     float d = HormoneRamp(p, h, ParamId::kDLow, ParamId::kDHigh);
-    BreakChances chance =
-        BudBreakChances(p, h, false, 1 + static_cast<int>(p.Get(ParamId::kPLYears)));
+    BreakChances chance = BudBreakChances(p, h, 1 + static_cast<int>(p.Get(ParamId::kPLYears)));
     out << FormatFloat(h) << "," << FormatFloat(HormoneRamp(p, h, ParamId::kNLow, ParamId::kNHigh))
         << "," << FormatFloat(d) << ","
         << FormatFloat(d * static_cast<float>(p.Get(ParamId::kDwarfInternodeRatio))) << ","

@@ -290,7 +290,14 @@ float LateralBreakMax(const ParamSet& p, int year) {
                             (p.Get(ParamId::kPLOld) - p.Get(ParamId::kPLYoung)) * age);
 }
 
-BreakChances BudBreakChances(const ParamSet& p, float hormone, bool dwarf, int year) {
+Sky GrowthSky(const ParamSet& p) {
+  return MakeSky(static_cast<float>(p.Get(ParamId::kSunElevation)),
+                 static_cast<float>(p.Get(ParamId::kSunAzimuth)),
+                 static_cast<float>(p.Get(ParamId::kSunWeight)),
+                 static_cast<float>(p.Get(ParamId::kSkyZenithRatio)));
+}
+
+BreakChances BudBreakChances(const ParamSet& p, float hormone, int year) {
   float p_lateral_max = LateralBreakMax(p, year);
   float p_tl_long = static_cast<float>(p.Get(ParamId::kPTlL));
   if (!p.GetBool(ParamId::kUseHormone)) return {1.0f, p_tl_long, p_lateral_max};
@@ -304,7 +311,6 @@ BreakChances BudBreakChances(const ParamSet& p, float hormone, bool dwarf, int y
   // Lateral buds: P_l (fig. 2.9) scaled by the shoot's hormone, reaching it at H_sat. A dwarf
   // shoot's low hormone keeps the chance low; its lateral buds are flowers instead when
   // dwarf_flowers = 1 (sakura), which SetNextYearBuds decides.
-  (void)dwarf;
   chance.lateral = p_lateral_max * Clamp01(hormone / h_sat);
   return chance;
 }
@@ -579,10 +585,7 @@ void Grower::ComputeLight() {
     glm::vec3 base = s.nodes.front(), tip = s.nodes.back();
     spheres.push_back({0.5f * (base + tip), 0.5f * glm::length(tip - base) + 0.5f * leaf});
   }
-  Sky sky = MakeSky(static_cast<float>(p.Get(ParamId::kSunElevation)),
-                    static_cast<float>(p.Get(ParamId::kSunAzimuth)),
-                    static_cast<float>(p.Get(ParamId::kSunWeight)),
-                    static_cast<float>(p.Get(ParamId::kSkyZenithRatio)));
+  Sky sky = GrowthSky(p);
   std::vector<LightSample> samples = ComputeLightGrid(
       spheres, sky, static_cast<float>(p.Get(ParamId::kSphereOpacity)), light_buffers_);
   float k = static_cast<float>(p.Get(ParamId::kKDeath));
@@ -688,7 +691,7 @@ void Grower::SetNextYearBuds() {
       any_breaking |= breaks;
       s.buds.push_back(bud);
     };
-    BreakChances chance = BudBreakChances(p, s.hormone, s.dwarf, tree_.years);
+    BreakChances chance = BudBreakChances(p, s.hormone, tree_.years);
     float p_terminal = chance.terminal, p_tl = chance.terminally_lateral,
           p_lateral = chance.lateral;
     glm::vec3 tip_azimuth = f.azimuth[static_cast<std::size_t>(tip)];

@@ -94,7 +94,10 @@ float LateralBreakMax(const ParamSet& params, int year);
 struct BreakChances {
   float terminal = 1, terminally_lateral = 0, lateral = 0;
 };
+// The sky the growth model lights its shoots with: the sun and sky rows of the parameters.
+Sky GrowthSky(const ParamSet& params);
+
 // Next year's break probability of each kind of bud on a shoot (2.4.5); the maxima without hormone.
-BreakChances BudBreakChances(const ParamSet& params, float hormone, bool dwarf, int year);
+BreakChances BudBreakChances(const ParamSet& params, float hormone, int year);
 
 }  // namespace niwa

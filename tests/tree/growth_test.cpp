@@ -156,14 +156,14 @@ TEST(Phyllotaxis, TerminalShootContinuesTheSpiral) {
     if (b.parent == 0 && b.kind == ShootKind::kTerminal) child = &b;
   }
   ASSERT_NE(child, nullptr);
-  auto last_lateral = [](const Branch& b, bool first) {
+  auto lateral_bud = [](const Branch& b, bool first) {  // the first or the last one
     const Bud* pick = nullptr;
     for (const Bud& bud : b.buds) {
       if (bud.kind == ShootKind::kLateral && (pick == nullptr || !first)) pick = &bud;
     }
     return pick->direction;
   };
-  EXPECT_NEAR(TurnBetween(last_lateral(parent, false), last_lateral(*child, true)), 0.0f, 1e-2f);
+  EXPECT_NEAR(TurnBetween(lateral_bud(parent, false), lateral_bud(*child, true)), 0.0f, 1e-2f);
 }
 
 TEST(Bending, StepCapsOfEquations27And29Hold) {

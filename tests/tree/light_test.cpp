@@ -96,12 +96,8 @@ TEST(Light, GridAgreesWithReferenceOnEveryPresetAt8Years) {
     if (spheres.size() < 10) continue;  // too few shoots to correlate
     // Twice: under the light the preset grows in (its own sky, sun and leaf-sphere opacity), and
     // under a strong sun (weight 0.3) with denser spheres (opacity 0.5).
-    const ParamSet& p = preset.params;
-    const Sky own_sky = MakeSky(static_cast<float>(p.Get(ParamId::kSunElevation)),
-                                static_cast<float>(p.Get(ParamId::kSunAzimuth)),
-                                static_cast<float>(p.Get(ParamId::kSunWeight)),
-                                static_cast<float>(p.Get(ParamId::kSkyZenithRatio)));
-    const float own_opacity = static_cast<float>(p.Get(ParamId::kSphereOpacity));
+    const Sky own_sky = GrowthSky(preset.params);
+    const float own_opacity = static_cast<float>(preset.params.Get(ParamId::kSphereOpacity));
     const std::pair<Sky, float> settings[] = {{own_sky, own_opacity}, {DefaultSky(), 0.5f}};
     for (const auto& [sky, opacity] : settings) {
       auto exact = ComputeLightReference(spheres, sky, opacity);
