@@ -143,9 +143,10 @@ function requestView() {
 function showSun() {
   if (!panel) return;
   const v = panel.values();
-  const el = Number(v.sun_elevation), az = Number(v.sun_azimuth);
+  const el = Number(v.sun_elevation), az = Number(v.sun_azimuth), weight = Number(v.sun_weight);
   if (!Number.isFinite(el) || !Number.isFinite(az)) return;
-  ui.sunInfo.textContent = `sun: az ${az}°, el ${el}° (lights the view and the growth model)`;
+  const growth = weight > 0 ? `and the growth model, weight ${weight}` : 'only; the growth model has sky light (sun_weight 0)';
+  ui.sunInfo.textContent = `sun: az ${az}°, el ${el}° (lights the view ${growth})`;
   renderer?.setSun(el, az);
   requestFrame();
 }
