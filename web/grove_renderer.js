@@ -3,7 +3,9 @@
 // shared by all its instances, and one draw list of cards + lines per (unique tree, distance band)).
 // Wind: every instance is skinned to its own sway poses (one pose texture per unique tree, instance
 // k's node point j at texel (k · nodes + j) · 4, as shaders/skin.glsl reads them).
-import { BACKGROUND, PARTS, fetchText, link, paintAtlas, uploadPoses } from './renderer.js';
+import {
+  BACKGROUND, PARTS, fetchText, floatAttribute, link, paintAtlas, staticBuffer, uintAttribute, uploadPoses,
+} from './renderer.js';
 
 const SEGMENT_ROW = 1024;  // texels per row of a line-segment texture (grove_line.vert)
 const SEGMENT_TEXELS = 4;  // p0 + width, p1, colour, skin (joint0, joint1, weight0, weight1)
@@ -50,42 +52,21 @@ export class GroveRenderer {
     this.light = [Math.cos(el) * Math.cos(az), Math.sin(el), Math.cos(el) * Math.sin(az)];
   }
 
-  #buffer(bytes, target = this.gl.ARRAY_BUFFER) {
-    const gl = this.gl;
-    const b = gl.createBuffer();
-    gl.bindBuffer(target, b);
-    gl.bufferData(target, bytes, gl.STATIC_DRAW);
-    return b;
-  }
-
   // Per-instance attributes on the bound VAO: `location` = vec4 (x, y, z, scale) from `b` (stride
   // `floats` floats) and, when floats is MEMBER_FLOATS, location + 1 = the width scale
   // (grove_line.vert) and location + 2 = the instance's pose block (grove_card/line.vert).
   #instanceAttributes(b, floats, location = 7) {
-    const gl = this.gl;
-    gl.bindBuffer(gl.ARRAY_BUFFER, b);
-    gl.enableVertexAttribArray(location);
-    gl.vertexAttribPointer(location, 4, gl.FLOAT, false, floats * 4, 0);
-    gl.vertexAttribDivisor(location, 1);
+    floatAttribute(this.gl, location, b, 4, floats * 4, 0, 1);
     if (floats === MEMBER_FLOATS) {
-      for (const k of [1, 2]) {
-        gl.enableVertexAttribArray(location + k);
-        gl.vertexAttribPointer(location + k, 1, gl.FLOAT, false, floats * 4, 12 + 4 * k);
-        gl.vertexAttribDivisor(location + k, 1);
-      }
+      for (const k of [1, 2]) floatAttribute(this.gl, location + k, b, 1, floats * 4, 12 + 4 * k, 1);
     }
   }
 
   // Per-vertex sway skin on the bound VAO: joints (Uint32, location 4) and weights (location 5).
   #skinAttributes(joints, weights) {
-    const gl = this.gl;
-    const buffers = [this.#buffer(joints), this.#buffer(weights)];
-    gl.bindBuffer(gl.ARRAY_BUFFER, buffers[0]);
-    gl.enableVertexAttribArray(4);
-    gl.vertexAttribIPointer(4, 1, gl.UNSIGNED_INT, 0, 0);
-    gl.bindBuffer(gl.ARRAY_BUFFER, buffers[1]);
-    gl.enableVertexAttribArray(5);
-    gl.vertexAttribPointer(5, 1, gl.FLOAT, false, 0, 0);
+    const buffers = [staticBuffer(this.gl, joints), staticBuffer(this.gl, weights)];
+    uintAttribute(this.gl, 4, buffers[0], 1);
+    floatAttribute(this.gl, 5, buffers[1], 1);
     return buffers;
   }
 
@@ -95,21 +76,18 @@ export class GroveRenderer {
   // card atlas painted once from the worker's hybrid geometry (null: no hybrid mode for this tree).
   addTree(index, mesh, instances, hybrid, nodes = 1) {
     const gl = this.gl;
-    const instanceBuffer = this.#buffer(instances);
+    const instanceBuffer = staticBuffer(gl, instances);
     const parts = {};
     for (const name of Object.keys(PARTS)) {
       const data = mesh[name];
       if (!data || data.indices.byteLength === 0) continue;
       const vao = gl.createVertexArray();
       gl.bindVertexArray(vao);
-      for (const [location, bytes] of [[0, data.positions], [1, data.normals]]) {
-        this.#buffer(bytes);
-        gl.enableVertexAttribArray(location);
-        gl.vertexAttribPointer(location, 3, gl.FLOAT, false, 0, 0);
-      }
+      floatAttribute(gl, 0, staticBuffer(gl, data.positions), 3);
+      floatAttribute(gl, 1, staticBuffer(gl, data.normals), 3);
       this.#skinAttributes(data.joints, data.weights);
       this.#instanceAttributes(instanceBuffer, 4);
-      this.#buffer(data.indices, gl.ELEMENT_ARRAY_BUFFER);
+      staticBuffer(gl, data.indices, gl.ELEMENT_ARRAY_BUFFER);
       gl.bindVertexArray(null);
       parts[name] = { vao, count: data.indices.byteLength / 4 };
     }
@@ -190,20 +168,19 @@ export class GroveRenderer {
     }
     this.bands = new Map();
     for (const list of lists) {
-      const members = this.#buffer(list.members);
+      const members = staticBuffer(gl, list.members);
       const band = { tree: list.tree, buffers: [members], instances: list.members.length / MEMBER_FLOATS, cardCount: 0, segments: 0 };
       const c = list.cards;
       if (c.indices.byteLength > 0) {
         band.vaoCards = gl.createVertexArray();
         gl.bindVertexArray(band.vaoCards);
         for (const [location, bytes, size] of [[0, c.positions, 3], [1, c.uvs, 2]]) {
-          band.buffers.push(this.#buffer(bytes));
-          gl.enableVertexAttribArray(location);
-          gl.vertexAttribPointer(location, size, gl.FLOAT, false, 0, 0);
+          band.buffers.push(staticBuffer(gl, bytes));
+          floatAttribute(gl, location, band.buffers.at(-1), size);
         }
         band.buffers.push(...this.#skinAttributes(c.joints, c.weights));
         this.#instanceAttributes(members, MEMBER_FLOATS);
-        band.buffers.push(this.#buffer(c.indices, gl.ELEMENT_ARRAY_BUFFER));
+        band.buffers.push(staticBuffer(gl, c.indices, gl.ELEMENT_ARRAY_BUFFER));
         gl.bindVertexArray(null);
         band.cardCount = c.indices.byteLength / 4;
       }

@@ -73,6 +73,30 @@ export function uploadPoses(gl, texture, poses, points, rows) {
   return needed;
 }
 
+// A new STATIC_DRAW buffer holding `bytes`, left bound to `target`.
+export function staticBuffer(gl, bytes, target = gl.ARRAY_BUFFER) {
+  const b = gl.createBuffer();
+  gl.bindBuffer(target, b);
+  gl.bufferData(target, bytes, gl.STATIC_DRAW);
+  return b;
+}
+
+// Attribute `location` of the bound VAO reads `size` floats (or, with floatAttribute's twin
+// uintAttribute, unsigned ints) per vertex — or per instance with a divisor — from buffer `b`.
+export function floatAttribute(gl, location, b, size, stride = 0, offset = 0, divisor = 0) {
+  gl.bindBuffer(gl.ARRAY_BUFFER, b);
+  gl.enableVertexAttribArray(location);
+  gl.vertexAttribPointer(location, size, gl.FLOAT, false, stride, offset);
+  gl.vertexAttribDivisor(location, divisor);
+}
+
+export function uintAttribute(gl, location, b, size, divisor = 0) {
+  gl.bindBuffer(gl.ARRAY_BUFFER, b);
+  gl.enableVertexAttribArray(location);
+  gl.vertexAttribIPointer(location, size, gl.UNSIGNED_INT, 0, 0);
+  gl.vertexAttribDivisor(location, divisor);
+}
+
 // Paints a card atlas (thesis 4.2.1) into the framebuffer `fb` (hybrid.atlasSize square, colour =
 // `texture`, with a depth buffer) from the worker's clip-space triangles of the group
 // representatives and leaf clusters, lit by `light` like the full view and transparent elsewhere,
@@ -97,19 +121,10 @@ export function paintAtlas(gl, program, hybrid, fb, texture, light) {
     if (count === 0) continue;
     const vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
-    const buffers = [];
-    for (const [location, bytes] of [[0, part.positions], [1, part.normals]]) {
-      const buffer = gl.createBuffer();
-      gl.bindBuffer(gl.ARRAY_BUFFER, buffer);
-      gl.bufferData(gl.ARRAY_BUFFER, bytes, gl.STATIC_DRAW);
-      gl.enableVertexAttribArray(location);
-      gl.vertexAttribPointer(location, 3, gl.FLOAT, false, 0, 0);
-      buffers.push(buffer);
-    }
-    const index = gl.createBuffer();
-    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, index);
-    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, part.indices, gl.STATIC_DRAW);
-    buffers.push(index);
+    const buffers = [staticBuffer(gl, part.positions), staticBuffer(gl, part.normals)];
+    floatAttribute(gl, 0, buffers[0], 3);
+    floatAttribute(gl, 1, buffers[1], 3);
+    buffers.push(staticBuffer(gl, part.indices, gl.ELEMENT_ARRAY_BUFFER));
     const look = PARTS[name];
     gl.uniform3fv(program.uniforms.uColor, look.color);
     gl.uniform3fv(program.uniforms.uColorVariation, look.variation);
@@ -228,46 +243,25 @@ export class Renderer {
       if (!data || data.indices.byteLength === 0) continue;
       const vao = gl.createVertexArray();
       gl.bindVertexArray(vao);
-      const buffers = [];
-      const attribute = (location, bytes) => {
-        const buffer = gl.createBuffer();
-        gl.bindBuffer(gl.ARRAY_BUFFER, buffer);
-        gl.bufferData(gl.ARRAY_BUFFER, bytes, gl.STATIC_DRAW);
-        gl.enableVertexAttribArray(location);
-        gl.vertexAttribPointer(location, 3, gl.FLOAT, false, 0, 0);
-        buffers.push(buffer);
-      };
-      attribute(0, data.positions);
-      attribute(1, data.normals);
+      const buffers = [staticBuffer(gl, data.positions), staticBuffer(gl, data.normals)];
+      floatAttribute(gl, 0, buffers[0], 3);
+      floatAttribute(gl, 1, buffers[1], 3);
       // Sway skin: node point (uint) and eq. 3.15 weight per vertex; uv for the leaf flutter.
       const vertices = data.positions.byteLength / 12;
       if (data.joints && data.joints.byteLength === vertices * 4) {
-        const joints = gl.createBuffer();
-        gl.bindBuffer(gl.ARRAY_BUFFER, joints);
-        gl.bufferData(gl.ARRAY_BUFFER, data.joints, gl.STATIC_DRAW);
-        gl.enableVertexAttribArray(4);
-        gl.vertexAttribIPointer(4, 1, gl.UNSIGNED_INT, 0, 0);
-        const weights = gl.createBuffer();
-        gl.bindBuffer(gl.ARRAY_BUFFER, weights);
-        gl.bufferData(gl.ARRAY_BUFFER, data.weights, gl.STATIC_DRAW);
-        gl.enableVertexAttribArray(5);
-        gl.vertexAttribPointer(5, 1, gl.FLOAT, false, 0, 0);
+        const joints = staticBuffer(gl, data.joints), weights = staticBuffer(gl, data.weights);
+        uintAttribute(gl, 4, joints, 1);
+        floatAttribute(gl, 5, weights, 1);
         buffers.push(joints, weights);
       }
       if (data.uvs && data.uvs.byteLength === vertices * 8) {
-        const uvs = gl.createBuffer();
-        gl.bindBuffer(gl.ARRAY_BUFFER, uvs);
-        gl.bufferData(gl.ARRAY_BUFFER, data.uvs, gl.STATIC_DRAW);
-        gl.enableVertexAttribArray(6);
-        gl.vertexAttribPointer(6, 2, gl.FLOAT, false, 0, 0);
+        const uvs = staticBuffer(gl, data.uvs);
+        floatAttribute(gl, 6, uvs, 2);
         buffers.push(uvs);
       }
       if (data.branchIds && data.branchIds.byteLength === data.positions.byteLength / 3) {
-        const buffer = gl.createBuffer();
-        gl.bindBuffer(gl.ARRAY_BUFFER, buffer);
-        gl.bufferData(gl.ARRAY_BUFFER, data.branchIds, gl.STATIC_DRAW);
-        gl.enableVertexAttribArray(2);
-        gl.vertexAttribIPointer(2, 1, gl.UNSIGNED_INT, 0, 0);
+        const buffer = staticBuffer(gl, data.branchIds);
+        uintAttribute(gl, 2, buffer, 1);
         buffers.push(buffer);
         // Selection highlight per vertex (select() fills it).
         this.branchIds = new Uint32Array(data.branchIds);
@@ -282,10 +276,7 @@ export class Renderer {
       } else {
         gl.disableVertexAttribArray(2);
       }
-      const index = gl.createBuffer();
-      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, index);
-      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, data.indices, gl.STATIC_DRAW);
-      buffers.push(index);
+      buffers.push(staticBuffer(gl, data.indices, gl.ELEMENT_ARRAY_BUFFER));
       gl.bindVertexArray(null);
       this.parts[name] = { vao, buffers, count: data.indices.byteLength / 4, picking: Boolean(data.branchIds) };
     }
@@ -363,35 +354,17 @@ export class Renderer {
     const gl = this.gl;
     this.#deleteDrawList();
     if (!this.hybrid) return;
-    const buffer = (bytes, target = gl.ARRAY_BUFFER) => {
-      const b = gl.createBuffer();
-      gl.bindBuffer(target, b);
-      gl.bufferData(target, bytes, gl.STATIC_DRAW);
-      return b;
-    };
-    const float = (location, b, size, stride = 0, offset = 0, divisor = 0) => {
-      gl.bindBuffer(gl.ARRAY_BUFFER, b);
-      gl.enableVertexAttribArray(location);
-      gl.vertexAttribPointer(location, size, gl.FLOAT, false, stride, offset);
-      gl.vertexAttribDivisor(location, divisor);
-    };
-    const uint = (location, b, size, divisor = 0) => {
-      gl.bindBuffer(gl.ARRAY_BUFFER, b);
-      gl.enableVertexAttribArray(location);
-      gl.vertexAttribIPointer(location, size, gl.UNSIGNED_INT, 0, 0);
-      gl.vertexAttribDivisor(location, divisor);
-    };
     const list = { stats: msg.stats, cards: null, lines: null };
     const c = msg.cards;
     if (c.indices.byteLength > 0) {
       const vao = gl.createVertexArray();
       gl.bindVertexArray(vao);
-      const buffers = [buffer(c.positions), buffer(c.uvs), buffer(c.joints), buffer(c.weights)];
-      float(0, buffers[0], 3);
-      float(1, buffers[1], 2);
-      uint(4, buffers[2], 1);
-      float(5, buffers[3], 1);
-      buffers.push(buffer(c.indices, gl.ELEMENT_ARRAY_BUFFER));
+      const buffers = [c.positions, c.uvs, c.joints, c.weights].map((bytes) => staticBuffer(gl, bytes));
+      floatAttribute(gl, 0, buffers[0], 3);
+      floatAttribute(gl, 1, buffers[1], 2);
+      uintAttribute(gl, 4, buffers[2], 1);
+      floatAttribute(gl, 5, buffers[3], 1);
+      buffers.push(staticBuffer(gl, c.indices, gl.ELEMENT_ARRAY_BUFFER));
       gl.bindVertexArray(null);
       list.cards = { vao, buffers, count: c.indices.byteLength / 4 };
     }
