@@ -38,6 +38,9 @@ LightSample Resolve(const Sky& sky, const float* transmittance, std::size_t stri
   float light = 0.0f, strongest = -1.0f;
   glm::vec3 direction(0, 1, 0);
   for (std::size_t k = 0; k < sky.directions.size(); ++k) {
+    // Once `strongest` is at least 0, a direction of weight 0 (a sun left out) would add 0 and
+    // could not be the strongest: skipped, with the same result.
+    if (sky.weights[k] == 0.0f && strongest >= 0.0f) continue;
     float received = sky.weights[k] * transmittance[k * stride];
     light += received;
     // Strongest received light: the sun when it is not shaded, else the brightest open patch of
@@ -50,33 +53,82 @@ LightSample Resolve(const Sky& sky, const float* transmittance, std::size_t stri
   return {std::min(1.0f, light), direction};
 }
 
-// One direction's shadow propagation over the whole grid (see ComputeLightGrid).
+// Resolve for `count` spheres at once from rows of transmittance (row k: every sphere towards
+// direction k), direction by direction: for each sphere the same operations in the same order as
+// Resolve, so the same results, with the inner loops over contiguous memory.
+void ResolveRows(const Sky& sky, const float* transmittance, std::size_t count,
+                 LightGridBuffers& buffers, LightSample* result) {
+  std::vector<float>& light = buffers.received;
+  std::vector<float>& strongest = buffers.strongest;
+  std::vector<int>& strongest_direction = buffers.strongest_direction;
+  light.assign(count, 0.0f);
+  strongest.assign(count, -1.0f);
+  strongest_direction.assign(count, -1);
+  for (std::size_t k = 0; k < sky.directions.size(); ++k) {
+    const float weight = sky.weights[k];
+    // After the first direction every `strongest` is at least 0 (see Resolve).
+    if (weight == 0.0f && k > 0) continue;
+    const float* row = transmittance + k * count;
+    const int direction = static_cast<int>(k);
+    for (std::size_t i = 0; i < count; ++i) {
+      const float received = weight * row[i];
+      light[i] += received;
+      const bool stronger = received > strongest[i];  // selects, so that the loop vectorizes
+      strongest[i] = stronger ? received : strongest[i];
+      strongest_direction[i] = stronger ? direction : strongest_direction[i];
+    }
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    const int k = strongest_direction[i];
+    result[i] = {std::min(1.0f, light[i]),
+                 k < 0 ? glm::vec3(0, 1, 0) : sky.directions[static_cast<std::size_t>(k)]};
+  }
+}
+
+// One direction's shadow propagation over the whole grid (see ComputeLightGrid), in a memory layout
+// where the swept axis is the slowest and the rows of a slice lie one after another.
 struct Sweep {
-  float* out;          // depth, padded grid
-  const float* sigma;  // extinction, same layout
-  int first, sign, slices, rows, count;
-  std::ptrdiff_t slice_stride, row_stride, up, su, sv;
+  float* out;                            // depth, padded grid
+  const float* sigma;                    // extinction, same layout
+  int first, sign, slices, rows, count;  // slices 1..slices, rows 1..rows of count interior cells
+  std::ptrdiff_t slice_stride, up, su, sv;
   float step, w00, w10, w01, w11;
 };
 
-// The hot loop of the light model. On x86-64 with GCC it is also compiled for AVX2 and picked at
-// run time: eight lanes of the same IEEE single-precision operations as the four of SSE2 (no FMA:
-// -ffp-contract=off), so every result is bit-identical, natively and against WASM.
+// The hot loop of the light model. The whole of a slice, from its first interior cell to its
+// last, is one loop, long enough for the vector lanes; the border cells between its rows that the
+// loop also writes are set back to zero, and the other border cells are zeroed here before they
+// are read, so the buffer's earlier contents do not matter. On x86-64 with GCC it is also compiled
+// for AVX2 and picked at run time: eight lanes of the same IEEE single-precision operations as the
+// four of SSE2 (no FMA: -ffp-contract=off), so every result is bit-identical, natively and against
+// WASM.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
 __attribute__((target_clones("avx2", "default")))
 #endif
 void SweepSlices(const Sweep& w) {
+  const std::ptrdiff_t row_stride = w.count + 2;
+  const std::ptrdiff_t slice_cells = row_stride * (w.rows + 2);
+  // The border slice upstream of the first one, and each slice's border rows (and the two border
+  // cells at the ends of the loop below).
+  std::fill_n(w.out + (w.first + w.sign) * w.slice_stride, slice_cells, 0.0f);
+  const int span = static_cast<int>((w.rows - 1) * row_stride + w.count);
   for (int a = w.first; a >= 1 && a <= w.slices; a -= w.sign) {
-    for (int o = 1; o <= w.rows; ++o) {
-      std::ptrdiff_t row = a * w.slice_stride + o * w.row_stride + 1;
-      // The row written and the rows read lie on different slices: no overlap.
-      float* __restrict here = w.out + row;
-      const float* __restrict there = w.out + row + w.up;
-      const float* __restrict own_sigma = w.sigma + row;
-      for (int i = 0; i < w.count; ++i) {
-        here[i] = own_sigma[i] * w.step + w.w00 * there[i] + w.w10 * there[i + w.su] +
-                  w.w01 * there[i + w.sv] + w.w11 * there[i + w.su + w.sv];
-      }
+    float* slice = w.out + a * w.slice_stride;
+    std::fill_n(slice, row_stride + 1, 0.0f);
+    std::fill_n(slice + slice_cells - row_stride - 1, row_stride + 1, 0.0f);
+    const std::ptrdiff_t start = a * w.slice_stride + row_stride + 1;
+    // The cells written and the cells read lie on different slices (or on this slice's border
+    // rows, which this loop does not write): no overlap.
+    float* __restrict here = w.out + start;
+    const float* __restrict there = w.out + start + w.up;
+    const float* __restrict own_sigma = w.sigma + start;
+    for (int i = 0; i < span; ++i) {
+      here[i] = own_sigma[i] * w.step + w.w00 * there[i] + w.w10 * there[i + w.su] +
+                w.w01 * there[i + w.sv] + w.w11 * there[i + w.su + w.sv];
+    }
+    for (int o = 1; o < w.rows; ++o) {
+      here[o * row_stride - 2] = 0.0f;  // last border cell of row o
+      here[o * row_stride - 1] = 0.0f;  // first border cell of row o + 1
     }
   }
 }
@@ -220,31 +272,48 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     }
   }
 
-  // A second copy of the grid with x as the slowest axis (y fastest, then z), for the directions
-  // swept along x: every sweep then runs its innermost loop over contiguous memory, so the
-  // compiler vectorizes it. Same values, same arithmetic per cell: only the memory order differs.
-  const std::ptrdiff_t stride_x_major[3] = {static_cast<std::ptrdiff_t>(n[1] + 2) * (n[2] + 2), 1,
-                                            n[1] + 2};
-  const std::ptrdiff_t* layout_stride[2] = {stride, stride_x_major};
-  std::vector<float>& density_x_major = buffers.density_x_major;
-  bool x_major_used = false;
-  for (std::size_t k = 0; k < sky.directions.size(); ++k) {
+  // The sweep axis of each sky direction: the dominant component of its direction.
+  const std::size_t directions = sky.directions.size();
+  std::vector<int> sweep_axis(directions);
+  bool axis_used[3] = {false, false, false};
+  for (std::size_t k = 0; k < directions; ++k) {
     const glm::vec3& d = sky.directions[k];
-    x_major_used |= sky.weights[k] != 0.0f && std::fabs(d.x) > std::fabs(d.y) &&
-                    std::fabs(d.x) >= std::fabs(d.z);
+    const float comp[3] = {d.x, d.y, d.z};
+    int axis = 0;
+    for (int c = 1; c < 3; ++c) {
+      if (std::fabs(comp[c]) > std::fabs(comp[axis])) axis = c;
+    }
+    sweep_axis[k] = axis;
+    axis_used[axis] |= sky.weights[k] != 0.0f;  // a sun of weight 0 is not swept
   }
-  if (x_major_used) {
-    density_x_major.assign(volume, 0.0f);
+  // One copy of the grid per sweep axis, with that axis the slowest in memory and x (or y, for the
+  // x sweeps) the fastest: the slices of every sweep are contiguous, so its loop runs over long
+  // stretches of memory and the compiler vectorizes it. Same values, same arithmetic per cell: only
+  // the memory order differs. The z sweeps use the rasterized grid itself.
+  const std::ptrdiff_t layout_stride[3][3] = {
+      {static_cast<std::ptrdiff_t>(n[1] + 2) * (n[2] + 2), 1, n[1] + 2},  // x sweeps: y, z, x
+      {1, static_cast<std::ptrdiff_t>(n[0] + 2) * (n[2] + 2), n[0] + 2},  // y sweeps: x, z, y
+      {stride[0], stride[1], stride[2]}};                                 // z sweeps: x, y, z
+  std::vector<float>* density_copy[2] = {&buffers.density_x_major, &buffers.density_y_major};
+  for (int axis = 0; axis < 2; ++axis) {
+    if (!axis_used[axis]) continue;
+    std::vector<float>& copy = *density_copy[axis];
+    copy.resize(volume);  // every cell is written below
+    const std::ptrdiff_t* to = layout_stride[axis];
     for (int z = 0; z < n[2] + 2; ++z) {
       for (int y = 0; y < n[1] + 2; ++y) {
-        for (int x = 0; x < n[0] + 2; ++x) {
-          density_x_major[static_cast<std::size_t>(x * stride_x_major[0] + y + z * (n[1] + 2))] =
-              density[static_cast<std::size_t>(x + y * stride[1] + z * stride[2])];
+        const float* from = density.data() + y * stride[1] + z * stride[2];
+        float* row = copy.data() + y * to[1] + z * to[2];
+        if (to[0] == 1) {
+          std::copy(from, from + n[0] + 2, row);
+        } else {
+          for (int x = 0; x < n[0] + 2; ++x) row[x * to[0]] = from[x];
         }
       }
     }
   }
-  const float* layout_density[2] = {density.data(), density_x_major.data()};
+  const float* layout_density[3] = {buffers.density_x_major.data(), buffers.density_y_major.data(),
+                                    density.data()};
 
   // Each sphere's trilinear lookup cell and weights do not depend on the direction: computed once.
   using Lookup = LightGridBuffers::Lookup;
@@ -270,16 +339,16 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
       at.weight[corner] = ((corner & 1) ? tx : 1 - tx) * (((corner >> 1) & 1) ? ty : 1 - ty) *
                           (((corner >> 2) & 1) ? tz : 1 - tz);
     }
+    for (int corner = 0; corner < 8; ++corner) {
+      at.half_sigma[corner] =
+          0.5f * density[index(x + (corner & 1), y + ((corner >> 1) & 1), z + ((corner >> 2) & 1))];
+    }
     at.own_depth = Extinction(diameter_depth, own.radius) * own.radius;
   }
 
   // Shadow propagation, one direction at a time: depth(v) = σ(v)·s + depth(v + d·s), swept along
   // the dominant axis of d so that v + d·s lies on the slice swept just before (bilinear there).
-  // One depth buffer per memory layout: each keeps its own border of zeros.
-  std::vector<float>* depth_buffer = buffers.depth;
-  depth_buffer[0].clear();  // zeroed below on first use in this call (each keeps a zero border)
-  depth_buffer[1].clear();
-  const std::size_t directions = sky.directions.size();
+  // One depth buffer per sweep axis, in that axis's layout.
   std::vector<float>& transmittance = buffers.transmittance;
   transmittance.resize(spheres.size() * directions);  // one row of all spheres per direction
   for (std::size_t k = 0; k < directions; ++k) {
@@ -290,14 +359,10 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     }
     const glm::vec3& d = sky.directions[k];
     const float comp[3] = {d.x, d.y, d.z};
-    int axis = 0;
-    for (int c = 1; c < 3; ++c) {
-      if (std::fabs(comp[c]) > std::fabs(comp[axis])) axis = c;
-    }
-    const int layout = axis == 0 ? 1 : 0;
-    const std::ptrdiff_t* st = layout_stride[layout];
-    std::vector<float>& depth = depth_buffer[layout];
-    if (depth.empty()) depth.assign(volume, 0.0f);
+    const int axis = sweep_axis[k];
+    const std::ptrdiff_t* st = layout_stride[axis];
+    std::vector<float>& depth = buffers.depth[axis];
+    depth.resize(volume);  // SweepSlices writes or zeroes every cell it reads
     const int u = (axis + 1) % 3, v = (axis + 2) % 3;
     const float along = std::fabs(comp[axis]);
     const float step = cell / along;  // path length between two slices
@@ -311,13 +376,11 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     const std::ptrdiff_t up = sign * st[axis] + iu * st[u] + iv * st[v];
     const std::ptrdiff_t su = st[u], sv = st[v];
     float* out = depth.data();
-    const float* sigma = layout_density[layout];
+    const float* sigma = layout_density[axis];
     const int first = sign > 0 ? n[axis] : 1;  // padded slice coordinates 1..n
-    // Inner loop along whichever of u, v is contiguous in memory (stride 1 in this layout).
+    // In this layout the rows of a slice run along whichever of u, v has stride 1.
     const int inner = st[u] < st[v] ? u : v, outer = inner == u ? v : u;
-    const std::ptrdiff_t so = st[outer];
-    const int count = n[inner];
-    SweepSlices({out, sigma, first, sign, n[axis], n[outer], count, st[axis], so, up, su, sv, step,
+    SweepSlices({out, sigma, first, sign, n[axis], n[outer], n[inner], st[axis], up, su, sv, step,
                  w00, w10, w01, w11});
     // Trilinear lookup at each sphere centre, minus half of each cell's own step and the shoot's
     // own sphere (a ray from its centre crosses one radius of it).
@@ -333,16 +396,17 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
       float sum = 0.0f;
       for (int corner = 0; corner < 8; ++corner) {
         std::ptrdiff_t c = base + corner_offset[corner];
-        sum += at.weight[corner] * (out[c] - 0.5f * sigma[c] * step);
+        sum += at.weight[corner] * (out[c] - at.half_sigma[corner] * step);
       }
       // The exponent for now; transmittance = e^exponent for all of them at once below.
       transmittance[k * spheres.size() + i] = -std::max(0.0f, sum - at.own_depth);
     }
   }
-  det::ExpfInPlace(transmittance.data(), transmittance.size());
-  for (std::size_t i = 0; i < spheres.size(); ++i) {
-    result[i] = Resolve(sky, &transmittance[i], spheres.size());
-  }
+  // Rows of weight-0 directions (a sun left out; it is last) are not needed by Resolve.
+  std::size_t rows = directions;
+  while (rows > 0 && sky.weights[rows - 1] == 0.0f) --rows;
+  det::ExpfInPlace(transmittance.data(), rows * spheres.size());
+  ResolveRows(sky, transmittance.data(), spheres.size(), buffers, result.data());
   return result;
 }
 

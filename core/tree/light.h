@@ -43,10 +43,13 @@ struct LightGridBuffers {
   struct Lookup {
     int cell[3];      // lower corner of a sphere centre's trilinear cell, interior coordinates
     float weight[8];  // corner c = (c & 1: +x, c & 2: +y, c & 4: +z)
+    float half_sigma[8];  // half of each corner cell's extinction (the same in every layout)
     float own_depth;  // optical depth of the shoot's own sphere from its centre (one radius)
   };
-  std::vector<float> density, density_x_major, depth[2], transmittance, dx2;
+  std::vector<float> density, density_x_major, density_y_major, depth[3], transmittance, dx2;
   std::vector<Lookup> lookups;
+  std::vector<float> received, strongest;  // per sphere, while resolving L and v_L
+  std::vector<int> strongest_direction;
 };
 std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres, const Sky& sky,
                                           float opacity, LightGridBuffers& buffers);
