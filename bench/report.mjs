@@ -125,6 +125,9 @@ if (args.split) {
   }
 }
 
+const splitNote = 'Each row is one cold run in a fresh CLI process (about 2,600 first-touch page faults for ' +
+  'sakura, cold caches), so the totals are well above the warm repetitions of the table above; compare the shares.';
+
 // Grove (thesis ch. 4): 100 instanced trees in the browser, full vs hybrid mode, from bench/grove.mjs.
 const grove = new Map(readLines(args.grove).map((r) => [r.mode, r]));
 let groveSection = '';
@@ -151,7 +154,7 @@ if (grove.size) {
 
 const out = `${table}\n${peerTable ? peerTable + '\n' : ''}${notes.map((n) => `- ${n}`).join('\n')}\n` +
   (goalsTable ? `\n### Speed goals\n\n${goalsTable}` : '') +
-  (splitTable ? `\n### Time per sub-model (like thesis table 2.3; native CLI --stats, one run)\n\n${splitTable}` : '');
+  (splitTable ? `\n### Time per sub-model (like thesis table 2.3; native CLI --stats, one run)\n\n${splitNote}\n\n${splitTable}` : '');
 process.stdout.write(out + (groveSection ? `\n### Grove (100 trees, headless chromium, SwiftShader)\n\n${groveSection}` : ''));
 
 if (args.record) {
