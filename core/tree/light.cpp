@@ -97,8 +97,8 @@ struct Sweep {
 
 // The hot loop of the light model. The whole of a slice, from its first interior cell to its
 // last, is one loop, long enough for the vector lanes; the border cells between its rows that the
-// loop also writes are set back to zero, and the other border cells are zeroed here before they
-// are read, so the buffer's earlier contents do not matter. On x86-64 with GCC it is also compiled
+// loop also writes are set back to zero, and the other border cells are zeroed here, so the
+// buffer's earlier contents do not matter. On x86-64 with GCC it is also compiled
 // for AVX2 and picked at run time: eight lanes of the same IEEE single-precision operations as the
 // four of SSE2 (no FMA: -ffp-contract=off), so every result is bit-identical, natively and against
 // WASM.
@@ -108,9 +108,11 @@ __attribute__((target_clones("avx2", "default")))
 void SweepSlices(const Sweep& w) {
   const std::ptrdiff_t row_stride = w.count + 2;
   const std::ptrdiff_t slice_cells = row_stride * (w.rows + 2);
-  // The border slice upstream of the first one, and each slice's border rows (and the two border
-  // cells at the ends of the loop below).
-  std::fill_n(w.out + (w.first + w.sign) * w.slice_stride, slice_cells, 0.0f);
+  // The border slices at both ends (upstream of the first slice, and downstream of the last, which
+  // the lookups read when the grid is one cell thick), and below each slice's border rows (and the
+  // two border cells at the ends of the loop): every border cell ends up zero.
+  std::fill_n(w.out, slice_cells, 0.0f);
+  std::fill_n(w.out + (w.slices + 1) * w.slice_stride, slice_cells, 0.0f);
   const int span = static_cast<int>((w.rows - 1) * row_stride + w.count);
   for (int a = w.first; a >= 1 && a <= w.slices; a -= w.sign) {
     float* slice = w.out + a * w.slice_stride;

@@ -62,6 +62,35 @@ TEST(Light, SphereBelowAnotherIsShadedAndLeansAway) {
   EXPECT_LT(grid[0].light, grid[1].light);
 }
 
+// The growth loop reuses one LightGridBuffers from year to year: what an earlier grid left in it
+// must not leak into the next call. A grid one cell thick is the case to watch: its lookups reach
+// the border cells beyond it, where a thicker grid before it had depths.
+TEST(Light, ReusedBuffersGiveTheSameLightAsFreshOnes) {
+  // A pole 200 cm tall of dense spheres (r 1.5 cm) on the y axis with small ones on its +x side,
+  // one cell (3.6 cm) thick in x and z; `thick` adds a copy 3 cm further along x: two cells thick,
+  // the same cells in y and z.
+  std::vector<LeafSphere> pole;
+  for (int i = 0; i <= 200; ++i) {
+    pole.push_back({glm::vec3(0.0f, static_cast<float>(i), 0.0f), 1.5f});
+    pole.push_back({glm::vec3(1.5f, static_cast<float>(i) + 0.5f, 0.0f), 0.05f});
+  }
+  std::vector<LeafSphere> thick = pole;
+  for (const LeafSphere& s : pole) thick.push_back({s.center + glm::vec3(3.0f, 0, 0), s.radius});
+  for (float x : {-1.0f, 1.0f}) {  // one low sun alone, from -x (the bad case) and from +x
+    Sky sky;
+    sky.directions = {glm::normalize(glm::vec3(x, 0.2f, 0.0f))};
+    sky.weights = {1.0f};
+    LightGridBuffers reused;
+    ComputeLightGrid(thick, sky, 0.5f, reused);
+    const auto again = ComputeLightGrid(pole, sky, 0.5f, reused);
+    const auto fresh = ComputeLightGrid(pole, sky, 0.5f);
+    ASSERT_EQ(again.size(), fresh.size());
+    for (std::size_t i = 0; i < fresh.size(); ++i) {
+      ASSERT_EQ(again[i].light, fresh[i].light) << "sun x " << x << ", sphere " << i;
+    }
+  }
+}
+
 double Pearson(const std::vector<double>& a, const std::vector<double>& b) {
   double ma = 0, mb = 0;
   for (std::size_t i = 0; i < a.size(); ++i) {
