@@ -9,7 +9,7 @@ import { pathToFileURL } from 'node:url';
 import validator from 'gltf-validator';
 import { startServer } from '../../scripts/serve.mjs';
 import {
-  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, finish, launchChromium, nativeStats, waitReady, watchPage,
+  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, finish, launchChromium, newContext, nativeStats, waitReady, watchPage,
 } from './harness.mjs';
 
 const dataset = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
@@ -27,14 +27,8 @@ async function andWait(page, action) {
 // Luma spread and bark/highlight pixel shares of a canvas (the page's, or one in a shadow root).
 async function canvasPixels(page, selector = '#view') {
   return page.evaluate((sel) => {
-    const [host, inner] = sel.split(' >>> ');
-    const src = inner ? document.querySelector(host).shadowRoot.querySelector(inner) : document.querySelector(host);
-    const c = document.createElement('canvas');
-    c.width = src.width;
-    c.height = src.height;
-    const ctx = c.getContext('2d', { willReadFrequently: true });
-    ctx.drawImage(src, 0, 0);
-    const data = ctx.getImageData(0, 0, c.width, c.height).data;
+    const image = window.__niwaCanvasImage(sel);  // see newContext in harness.mjs
+    const data = image.data;
     let sum = 0, sum2 = 0, n = 0, orange = 0;
     for (let i = 0; i < data.length; i += 4) {
       const r = data[i], g = data[i + 1], b = data[i + 2];
@@ -43,7 +37,7 @@ async function canvasPixels(page, selector = '#view') {
       if (r > 150 && r - b > 90 && g < r - 20) ++orange;  // the selection highlight (orange, yellow)
     }
     const mean = sum / n;
-    return { width: c.width, height: c.height, std: Math.sqrt(Math.max(0, sum2 / n - mean * mean)), orange: orange / n };
+    return { width: image.width, height: image.height, std: Math.sqrt(Math.max(0, sum2 / n - mean * mean)), orange: orange / n };
   }, selector);
 }
 
@@ -51,12 +45,8 @@ async function canvasPixels(page, selector = '#view') {
 async function findTrunk(page) {
   return page.evaluate(() => {
     const src = document.getElementById('view');
-    const c = document.createElement('canvas');
-    c.width = src.width;
-    c.height = src.height;
-    const ctx = c.getContext('2d', { willReadFrequently: true });
-    ctx.drawImage(src, 0, 0);
-    const data = ctx.getImageData(0, 0, c.width, c.height).data;
+    const c = window.__niwaCanvasImage('#view');  // ImageData: width, height, data
+    const data = c.data;
     const scale = src.width / src.clientWidth;
     for (let y = c.height - 1; y > c.height * 0.3; --y) {
       const row = [];
@@ -103,7 +93,7 @@ function watch(page) {
 
 const START = 'preset=maple&seed=2&years=10';
 try {
-  const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, acceptDownloads: true });
+  const context = await newContext(browser, { viewport: { width: 1280, height: 800 }, acceptDownloads: true });
   await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: server.url.replace(/\/$/, '') });
   const page = watch(await context.newPage());
 
@@ -345,15 +335,7 @@ try {
   // (before the regrown tree arrives), the shading of the tree on screen.
   const sunHash = await page.evaluate(() => location.hash);
   const shading = await page.evaluate(async () => {
-    const grab = () => {
-      const src = document.getElementById('view');
-      const c = document.createElement('canvas');
-      c.width = src.width;
-      c.height = src.height;
-      const ctx = c.getContext('2d', { willReadFrequently: true });
-      ctx.drawImage(src, 0, 0);
-      return ctx.getImageData(0, 0, c.width, c.height).data;
-    };
+    const grab = () => window.__niwaCanvasImage('#view').data;
     const frame = () => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve)));
     const serial = document.documentElement.dataset.treeSerial;
     const a = grab();

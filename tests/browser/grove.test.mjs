@@ -4,7 +4,7 @@
 // camera live in the hash, orbiting asks for new draw lists. Screenshots: build/artifacts/grove-*.png.
 import path from 'node:path';
 import { startServer } from '../../scripts/serve.mjs';
-import { ARTIFACTS, TIMEOUT, check, finish, launchChromium, watchPage, waitGroveDrawn } from './harness.mjs';
+import { ARTIFACTS, TIMEOUT, check, finish, launchChromium, newContext, watchPage, waitGroveDrawn } from './harness.mjs';
 
 const server = await startServer({ port: 0 });
 const browser = await launchChromium();
@@ -12,7 +12,7 @@ const problems = [];
 const data = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
 
 try {
-  const context = await browser.newContext({ viewport: { width: 900, height: 620 } });
+  const context = await newContext(browser, { viewport: { width: 900, height: 620 } });
   const page = await context.newPage();
   watchPage(page, problems);
 

@@ -5,7 +5,7 @@
 // restores the rest image exactly. Screenshots: build/artifacts/grove-wind*.png.
 import path from 'node:path';
 import { startServer } from '../../scripts/serve.mjs';
-import { ARTIFACTS, TIMEOUT, check, finish, launchChromium, saveCanvasPng, snapshotCanvas, snapshotDifference, watchPage, waitGroveDrawn } from './harness.mjs';
+import { ARTIFACTS, TIMEOUT, check, finish, launchChromium, newContext, saveCanvasPng, snapshotCanvas, snapshotDifference, watchPage, waitGroveDrawn } from './harness.mjs';
 
 const server = await startServer({ port: 0 });
 const browser = await launchChromium();
@@ -21,7 +21,7 @@ function farApart(probe) {
 const cam = 'cam=0.6000,0.3400,55.0000,0.0000,1.0000,0.0000';
 
 try {
-  const context = await browser.newContext({ viewport: { width: 900, height: 620 } });
+  const context = await newContext(browser, { viewport: { width: 900, height: 620 } });
   const page = await context.newPage();
   watchPage(page, problems);
 

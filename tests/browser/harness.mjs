@@ -68,25 +68,39 @@ export function launchChromium() {
   });
 }
 
-// Keeps a copy of a canvas's pixels in the page under `name` (selector as in canvasPixels:
-// '#id' or 'host >>> canvas' for a shadow root) and returns the centroid (x in [0, 1]) and share of
-// the dark pixels (luma < 100: bark, leaves, the ground's shadow; not the sky or the ground).
+// A browser context whose pages (and their frames) all have window.__niwaCanvasImage(selector):
+// the ImageData of a canvas ('#id', or 'host >>> canvas' for one in a shadow root), read through a
+// 2D canvas (the page's WebGL canvas keeps its last frame: preserveDrawingBuffer). The one canvas
+// reader of the browser tests.
+export async function newContext(browser, options) {
+  const context = await browser.newContext(options);
+  await context.addInitScript(() => {
+    window.__niwaCanvasImage = (selector) => {
+      const [host, inner] = selector.split(' >>> ');
+      const src = inner ? document.querySelector(host).shadowRoot.querySelector(inner) : document.querySelector(host);
+      const c = document.createElement('canvas');
+      c.width = src.width;
+      c.height = src.height;
+      const ctx = c.getContext('2d', { willReadFrequently: true });
+      ctx.drawImage(src, 0, 0);
+      return ctx.getImageData(0, 0, c.width, c.height);
+    };
+  });
+  return context;
+}
+
+// Keeps a copy of a canvas's pixels in the page under `name` (selector as in newContext) and
+// returns the centroid (x in [0, 1]) and share of the dark pixels (luma < 100: bark, leaves, the
+// ground's shadow; not the sky or the ground).
 export async function snapshotCanvas(page, name, selector = '#view') {
   return page.evaluate(([key, sel]) => {
-    const [host, inner] = sel.split(' >>> ');
-    const src = inner ? document.querySelector(host).shadowRoot.querySelector(inner) : document.querySelector(host);
-    const c = document.createElement('canvas');
-    c.width = src.width;
-    c.height = src.height;
-    const ctx = c.getContext('2d', { willReadFrequently: true });
-    ctx.drawImage(src, 0, 0);
-    const image = ctx.getImageData(0, 0, c.width, c.height);
+    const image = window.__niwaCanvasImage(sel);
     (window.__snapshots ||= {})[key] = image;
     const d = image.data;
     let sx = 0, n = 0;
     for (let i = 0; i < d.length; i += 4) {
       if (0.299 * d[i] + 0.587 * d[i + 1] + 0.114 * d[i + 2] < 100) {
-        sx += ((i / 4) % c.width) / c.width;
+        sx += ((i / 4) % image.width) / image.width;
         ++n;
       }
     }

@@ -5,7 +5,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { startServer } from '../../scripts/serve.mjs';
 import {
-  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, finish, launchChromium, nativeStats, waitReady, watchPage,
+  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, finish, launchChromium, newContext, nativeStats, waitReady, watchPage,
 } from './harness.mjs';
 
 function parseStats(text) {
@@ -20,13 +20,8 @@ function parseStats(text) {
 // Pixel statistics of the WebGL canvas (preserveDrawingBuffer keeps the last frame readable).
 async function canvasPixels(page) {
   return page.evaluate(() => {
-    const src = document.getElementById('view');
-    const c = document.createElement('canvas');
-    c.width = src.width;
-    c.height = src.height;
-    const ctx = c.getContext('2d', { willReadFrequently: true });
-    ctx.drawImage(src, 0, 0);
-    const data = ctx.getImageData(0, 0, c.width, c.height).data;
+    const image = window.__niwaCanvasImage('#view');  // see newContext in harness.mjs
+    const data = image.data;
     let sum = 0, sum2 = 0, n = 0, green = 0, pink = 0, brown = 0;
     for (let i = 0; i < data.length; i += 4) {
       const r = data[i], g = data[i + 1], b = data[i + 2];
@@ -37,7 +32,7 @@ async function canvasPixels(page) {
       if (r > g + 15 && g > b + 5 && r < 150) ++brown;
     }
     const mean = sum / n;
-    return { width: c.width, height: c.height, std: Math.sqrt(Math.max(0, sum2 / n - mean * mean)), green: green / n, pink: pink / n, brown: brown / n };
+    return { width: image.width, height: image.height, std: Math.sqrt(Math.max(0, sum2 / n - mean * mean)), green: green / n, pink: pink / n, brown: brown / n };
   });
 }
 
@@ -45,7 +40,7 @@ const server = await startServer({ port: 0 });
 const browser = await launchChromium();
 const problems = [];
 try {
-  const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const context = await newContext(browser, { viewport: { width: 1280, height: 800 } });
   const page = await context.newPage();
   watchPage(page, problems);
   page.on('requestfailed', (r) => problems.push(`requestfailed: ${r.url()}`));

@@ -8,7 +8,7 @@
 import { execFileSync } from 'node:child_process';
 import path from 'node:path';
 import { startServer } from '../../scripts/serve.mjs';
-import { ARTIFACTS, NATIVE, TIMEOUT, check, finish, launchChromium, snapshotCanvas, snapshotDifference, waitReady, watchPage } from './harness.mjs';
+import { ARTIFACTS, NATIVE, TIMEOUT, check, finish, launchChromium, newContext, snapshotCanvas, snapshotDifference, waitReady, watchPage } from './harness.mjs';
 import { ssim } from './ssim.mjs';
 
 const SIZE = 512;
@@ -53,7 +53,7 @@ const cell = (page, attr) => page.$$eval(`#render-table [${attr}]`, (cells) =>
 
 try {
   // The stage is the window less the 340 px panel: a 512 x 512 canvas at device pixel ratio 1.
-  const context = await browser.newContext({ viewport: { width: SIZE + 340, height: SIZE } });
+  const context = await newContext(browser, { viewport: { width: SIZE + 340, height: SIZE } });
   const page = await context.newPage();
   watchPage(page, problems);
 

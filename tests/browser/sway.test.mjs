@@ -5,7 +5,7 @@
 import path from 'node:path';
 import { startServer } from '../../scripts/serve.mjs';
 import {
-  ARTIFACTS, TIMEOUT, check, finish, launchChromium, snapshotCanvas, snapshotDifference, waitReady, watchPage,
+  ARTIFACTS, TIMEOUT, check, finish, launchChromium, newContext, snapshotCanvas, snapshotDifference, waitReady, watchPage,
 } from './harness.mjs';
 
 const server = await startServer({ port: 0 });
@@ -14,7 +14,7 @@ const problems = [];
 const swayTime = (page) => page.evaluate(() => Number(document.documentElement.dataset.swayTime || -1));
 
 try {
-  const context = await browser.newContext({ viewport: { width: 1100, height: 760 } });
+  const context = await newContext(browser, { viewport: { width: 1100, height: 760 } });
   const page = watchPage(await context.newPage(), problems);
   // A small tree seen from +z (yaw 0): the wind's +x direction (wind_dir 0) is to the right.
   await page.goto(`${server.url}#preset=keyaki&seed=1&years=7`);
