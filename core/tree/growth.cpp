@@ -729,10 +729,10 @@ void Grower::SetNextYearBuds() {
   };
   const Trigger by_threshold{ParamId::kHBL, ParamId::kDeltaL, ParamId::kBBL, ParamId::kHNL};
   const Trigger by_drop{ParamId::kHBD, ParamId::kDeltaD, ParamId::kBBD, ParamId::kHND};
+  const float h_b_l = static_cast<float>(p.Get(ParamId::kHBL));
+  const float h_b_d = static_cast<float>(p.Get(ParamId::kHBD));
   for (Branch& b : tree_.branches) {
     if (!b.alive || b.year == tree_.years) continue;
-    float h_b_l = static_cast<float>(p.Get(ParamId::kHBL));
-    float h_b_d = static_cast<float>(p.Get(ParamId::kHBD));
     // "H becomes <= H_b^l" (2.4.6): an event when H crosses the threshold, not every year below it.
     bool low = h_b_l > 0.0f && b.hormone < h_b_l && b.hormone_previous >= h_b_l;
     bool dropped = h_b_d > 0.0f && b.hormone < b.hormone_previous / h_b_d;

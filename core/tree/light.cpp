@@ -303,13 +303,16 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     copy.resize(volume);  // every cell is written below
     const std::ptrdiff_t* to = layout_stride[axis];
     for (int z = 0; z < n[2] + 2; ++z) {
-      for (int y = 0; y < n[1] + 2; ++y) {
-        const float* from = density.data() + y * stride[1] + z * stride[2];
-        float* row = copy.data() + y * to[1] + z * to[2];
-        if (to[0] == 1) {
-          std::copy(from, from + n[0] + 2, row);
-        } else {
-          for (int x = 0; x < n[0] + 2; ++x) row[x * to[0]] = from[x];
+      if (to[0] == 1) {  // y-slowest: the x rows stay whole
+        for (int y = 0; y < n[1] + 2; ++y) {
+          const float* from = density.data() + y * stride[1] + z * stride[2];
+          std::copy(from, from + n[0] + 2, copy.data() + y * to[1] + z * to[2]);
+        }
+      } else {  // x-slowest, y fastest: written in order, read down the columns of this z plane
+        for (int x = 0; x < n[0] + 2; ++x) {
+          const float* from = density.data() + x + z * stride[2];
+          float* row = copy.data() + x * to[0] + z * to[2];
+          for (int y = 0; y < n[1] + 2; ++y) row[y] = from[y * stride[1]];
         }
       }
     }
