@@ -1,8 +1,10 @@
-// Fig. 2.18 (thesis 2.5.3): after the trunk is cut, the tree regrows its crown and the stub's dormant
-// buds break.
+// Fig. 2.18 (thesis 2.5.3): after the trunk is cut, the tree regrows its crown and the stub's
+// dormant buds break.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "tree/growth.h"
@@ -19,9 +21,13 @@ GrowRequest Fig218(int seed, int years) {
   GrowRequest r;
   r.preset = "binary";
   r.params = preset->params;
-  for (auto [id, value] : {std::pair{ParamId::kUseLight, 1.0}, {ParamId::kDwarfInternodeRatio, 0.25},
-                           {ParamId::kNLow, 2.0}, {ParamId::kNHigh, 2.0}, {ParamId::kBL, 1.0},
-                           {ParamId::kPsiL, 45.0}, {ParamId::kPLYoung, 0.0},
+  for (auto [id, value] : {std::pair{ParamId::kUseLight, 1.0},
+                           {ParamId::kDwarfInternodeRatio, 0.25},
+                           {ParamId::kNLow, 2.0},
+                           {ParamId::kNHigh, 2.0},
+                           {ParamId::kBL, 1.0},
+                           {ParamId::kPsiL, 45.0},
+                           {ParamId::kPLYoung, 0.0},
                            {ParamId::kPLOld, 0.0}}) {
     EXPECT_EQ(r.params.Set(id, value), "");
   }
@@ -69,13 +75,12 @@ TEST(Fig218, TheCutTreeRegrowsAndItsStubBreaksDormantBuds) {
          id = at10.branches[static_cast<std::size_t>(id)].parent) {
       stub.push_back(id);
     }
+    // A shoot on the stub in years 11-13 can only come from dormancy break: the stub's shoots are
+    // from years 1-2, and their buds break normally only the year after they grew.
     bool stub_shoots = false;
     for (const Branch& b : cut.branches) {
       if (b.year <= 10 || b.year > 13 || b.parent < 0) continue;
-      if (std::find(stub.begin(), stub.end(), b.parent) == stub.end()) continue;
-      // Only dormancy break makes shoots on a branch older than last year's.
-      EXPECT_GT(b.year - cut.branches[static_cast<std::size_t>(b.parent)].year, 1);
-      stub_shoots = true;
+      if (std::find(stub.begin(), stub.end(), b.parent) != stub.end()) stub_shoots = true;
     }
     seeds_with_stub_shoots += stub_shoots ? 1 : 0;
     // Nothing above the cut lives on.
