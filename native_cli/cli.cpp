@@ -130,6 +130,14 @@ GrowRequest ResolveGrowRequest(const GrowOptions& o, CLI::App* cmd) {
   return request;
 }
 
+// A prune that cuts nothing is bad input (a mistyped id or year), found once the tree has grown.
+void CheckPrunes(const GrowRequest& request, const Tree& tree) {
+  for (const Prune& prune : request.prunes) {
+    std::string reason = IdlePruneReason(prune, tree);
+    if (!reason.empty()) throw BadInput{"--prune: " + FormatPrune(prune) + ": " + reason};
+  }
+}
+
 std::string StatsJson(const Tree& tree, const GrowthTimings& t) {
   TreeStats s = ComputeStats(tree);
   nlohmann::ordered_json j;
@@ -179,6 +187,7 @@ int RunGrow(const GrowOptions& options, CLI::App* cmd, const std::string& out_pa
   GrowRequest request = ResolveGrowRequest(options, cmd);
   GrowthTimings timings;
   Tree tree = GrowTree(request, &timings);
+  CheckPrunes(request, tree);
   if (!out_path.empty()) {
     std::string bytes;
     if (ext == ".json") {
@@ -321,6 +330,7 @@ int RunSwayCommand(const GrowOptions& grow_options, const SwayOptions& o, CLI::A
   GrowRequest request = ResolveGrowRequest(grow_options, cmd);
   SwayParams params = ResolveSwayParams(o, cmd, &request.params);
   Tree tree = GrowTree(request);
+  CheckPrunes(request, tree);
   if (out_ext == ".glb") {  // core/io/gltf_sway: exact two-joint skinning of eq. 3.15
     std::vector<unsigned char> glb;
     SwayGlbOptions glb_options;
@@ -466,6 +476,7 @@ int RunRenderStats(const GrowOptions& grow_options, RenderStatsOptions o, CLI::A
   o.leaf_mode = render.leaf_mode == LeafMode::kBranchCards ? "branch" : "cluster";
   auto start = std::chrono::steady_clock::now();
   Tree tree = GrowTree(request);
+  CheckPrunes(request, tree);
   TreeMesh mesh = BuildTreeMesh(tree);
   const float fov = o.fov_deg * (kPi / 180.0f);
   bool explicit_camera = !o.cam.empty();

@@ -48,12 +48,13 @@ const ui = {
 const root = document.documentElement;
 
 let hashNotices = [];   // from decoding the URL hash at start (or after navigation)
+let pruneNotices = [];  // prunes of the current state that cut nothing (from the grown tree)
 let errorMessage = '';  // from the core, for the current state
 let webglMessage = '';
 
 // Notices are shown as text only (textContent), never as markup: they may echo the URL.
 function showNotices() {
-  const lines = [webglMessage, errorMessage, ...hashNotices].filter(Boolean);
+  const lines = [webglMessage, errorMessage, ...hashNotices, ...pruneNotices].filter(Boolean);
   ui.notice.textContent = lines.join('\n');
   ui.notice.hidden = lines.length === 0;
 }
@@ -370,6 +371,7 @@ worker.onmessage = (event) => {
     case 'tree': {
       if (msg.id !== latestId) break;
       errorMessage = '';
+      pruneNotices = msg.stats.idle_prunes || [];
       panel.markError('');
       showNotices();
       ui.stats.textContent = formatStats(msg.stats);

@@ -338,7 +338,7 @@ class GrowSession {
   }
 
   // {internodes, branches, leaves, flowers, height (cm), years, seed, preset, truncated, ms,
-  // bounds}
+  // idle_prunes: ["prune 12:b40: why it cut nothing"], bounds}
   std::string statsJson() const {
     ordered_json j;
     if (!grower_) {
@@ -357,6 +357,14 @@ class GrowSession {
     j["preset"] = tree.preset;
     j["truncated"] = tree.truncated;
     j["ms"] = grower_->timings().ms_total;
+    // Prunes that cut nothing (a URL may name a year or branch the tree does not have), one
+    // notice each, once the tree has all its years.
+    ordered_json idle = ordered_json::array();
+    for (const Prune& prune : state_.prunes) {
+      std::string reason = done() ? IdlePruneReason(prune, tree) : "";
+      if (!reason.empty()) idle.push_back("prune " + FormatPrune(prune) + ": " + reason);
+    }
+    j["idle_prunes"] = std::move(idle);
     // Axis-aligned bounds of every mesh vertex (metres), for framing the camera.
     float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
     bool any = false;

@@ -27,6 +27,12 @@ struct GrowRequest {
   std::vector<Prune> prunes;
 };
 
+// Why `prune` cuts nothing from `grown`, the tree its request grew, or "" when it cuts: its year is
+// after the last year grown, its branch id is not among the branches the tree had by that year
+// (shoots take ids in the order they grow), or its "since" year is after its own year. One line,
+// for the CLI's error and the page's notice.
+std::string IdlePruneReason(const Prune& prune, const Tree& grown);
+
 // Cosine and sine of a rotation angle.
 struct CosSin {
   float c = 1.0f, s = 0.0f;

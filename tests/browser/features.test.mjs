@@ -400,6 +400,13 @@ try {
   }
   console.log(`  ${details.join('\n  ')}`);
   check('ten malformed hashes each show a text notice and a tree', shownAll);
+  // A well-formed prune that cuts nothing (its year is after the tree's last) is named too.
+  await badPage.goto('about:blank');
+  await badPage.goto(`${server.url}#preset=maple&years=3&prune=9:b1`);
+  await waitReady(badPage, 0, 100);
+  const idle = (await badPage.textContent('#notice')).trim();
+  check('a prune that cuts nothing shows why', (await badPage.isVisible('#notice')) &&
+    idle.includes('prune 9:b1: year 9 is after the last year grown (3)'), idle);
   await badPage.close();
 
   // 10. embed-example.html: two different trees, two non-blank canvases, one worker.

@@ -89,6 +89,16 @@ TEST(Cli, BadInputGivesOneLineNamingTheFieldAndExit2) {
   ExpectOneLineError(RunNiwa({"tree", "grow", "--years", "500"}), "--years: 500 is out of range");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--years", "abc"}), "--years");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--prune", "x"}), "prune");
+  // Prunes that cut nothing: no output file is written.
+  std::string pruned = TempPath("pruned.json");
+  std::remove(pruned.c_str());
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--preset", "binary", "--years", "10", "--prune",
+                              "99:b1", "--out", pruned}),
+                     "--prune: 99:b1: year 99 is after the last year grown (10)");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--preset", "binary", "--years", "10", "--prune",
+                              "10:b999999", "--out", pruned}),
+                     "--prune: 10:b999999: the tree had no branch b999999 by year 10 (ids 0 to");
+  EXPECT_FALSE(std::ifstream(pruned).good());
   ExpectOneLineError(RunNiwa({"tree", "grow", "--out", "tree.obj"}),
                      "must end in .glb, .json or .svg");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--bogus"}), "--bogus");

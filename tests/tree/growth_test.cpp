@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <utility>
 
 #include "math/rotation.h"
@@ -319,6 +320,25 @@ TEST(Pruning, BranchSelectorRemovesTheBranchAndEverythingAbove) {
     EXPECT_FALSE(cut.branches[static_cast<std::size_t>(child)].alive);
   }
   EXPECT_LT(ComputeStats(cut).internodes, ComputeStats(full).internodes);
+}
+
+// A prune that cuts nothing is reported (the CLI fails with it, the page shows it); the ones that
+// cut are not.
+TEST(Pruning, IdlePrunesAreNamedWithTheReason) {
+  GrowRequest r = RequestFor("sakura", 6);
+  Tree tree = GrowTree(r);
+  std::size_t by_year_3 = 0;
+  while (tree.branches[by_year_3].year <= 3) ++by_year_3;
+  EXPECT_EQ(IdlePruneReason({6, 1, -1}, tree), "");
+  EXPECT_EQ(IdlePruneReason({6, -1, 4}, tree), "");
+  EXPECT_EQ(IdlePruneReason({3, static_cast<int>(by_year_3) - 1, -1}, tree), "");
+  EXPECT_EQ(IdlePruneReason({7, 1, -1}, tree), "year 7 is after the last year grown (6)");
+  // The first shoot of year 4 did not exist yet at year 3.
+  EXPECT_EQ(IdlePruneReason({3, static_cast<int>(by_year_3), -1}, tree),
+            "the tree had no branch b" + std::to_string(by_year_3) + " by year 3 (ids 0 to " +
+                std::to_string(by_year_3 - 1) + ")");
+  EXPECT_EQ(IdlePruneReason({5, 999999, -1}, tree).rfind("the tree had no branch b999999", 0), 0u);
+  EXPECT_EQ(IdlePruneReason({4, -1, 5}, tree), "nothing had grown since year 5 by year 4");
 }
 
 TEST(Limits, MaxInternodesStopsGrowthAndFlagsTruncation) {
