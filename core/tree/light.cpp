@@ -38,9 +38,6 @@ LightSample Resolve(const Sky& sky, const float* transmittance, std::size_t stri
   float light = 0.0f, strongest = -1.0f;
   glm::vec3 direction(0, 1, 0);
   for (std::size_t k = 0; k < sky.directions.size(); ++k) {
-    // Once `strongest` is at least 0, a direction of weight 0 (a sun left out) would add 0 and
-    // could not be the strongest: skipped, with the same result.
-    if (sky.weights[k] == 0.0f && strongest >= 0.0f) continue;
     float received = sky.weights[k] * transmittance[k * stride];
     light += received;
     // Strongest received light: the sun when it is not shaded, else the brightest open patch of
@@ -66,7 +63,8 @@ void ResolveRows(const Sky& sky, const float* transmittance, std::size_t count,
   strongest_direction.assign(count, -1);
   for (std::size_t k = 0; k < sky.directions.size(); ++k) {
     const float weight = sky.weights[k];
-    // After the first direction every `strongest` is at least 0 (see Resolve).
+    // After the first direction every `strongest` is at least 0, so a later direction of weight 0
+    // (a sun left out, whose row is not exponentiated) would add 0 and could not be the strongest.
     if (weight == 0.0f && k > 0) continue;
     const float* row = transmittance + k * count;
     const int direction = static_cast<int>(k);
