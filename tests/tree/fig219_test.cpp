@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <string>
@@ -105,9 +106,13 @@ TEST(Fig219, SakuraHasLongTerminalShootsAndVeryShortDwarfShoots) {
     }
   }
   ASSERT_GT(dwarfs, 0);
-  // Dwarf shoots barely grow: none longer than 2 cm (six nodes of table 2.2's shortest internode
-  // are 1.2 cm).
+  // Dwarf shoots barely grow: "短枝は1cmにも満たないことが多い" (2.5.4), mostly under 1 cm, none
+  // over 2 cm.
   EXPECT_LE(*std::max_element(dwarf.begin(), dwarf.end()), 2.0f);
+  EXPECT_LT(Median(dwarf), 1.0f);
+  const auto under_1cm =
+      std::count_if(dwarf.begin(), dwarf.end(), [](float l) { return l < 1.0f; });
+  EXPECT_GE(3 * under_1cm, 2 * static_cast<long>(dwarf.size()));  // at least two thirds
   // Long terminal shoots several tens of cm at most, and typically many times a dwarf shoot.
   EXPECT_GE(longest, 30.0f);
   EXPECT_GE(Median(terminal_long), 5.0f * Median(dwarf));
@@ -137,6 +142,32 @@ TEST(Fig219, KeyakiIsABareTrunkUnderAFinelyBranchedBroom) {
   EXPECT_LE(low_leaves * 20, leaves);   // the lower third is bare trunk (under 5 % of leaves)
 }
 
+// (b) again: the trunk "grows long" at first. Its line of terminal shoots stays long (H^0 >= H_s)
+// for at least its first eight years in seeds 1-3. Under table 2.2's keyaki values a line stays
+// long only where L >= 0.80 (eqs. 2.1-2.2 in steady state), so this fails if L cannot reach that
+// (it did with light_scale 0.6: the line turned dwarf in year 3).
+TEST(Fig219, KeyakiTrunkLineStaysLongForEightYears) {
+  for (std::uint32_t seed : {1u, 2u, 3u}) {
+    GrowRequest r;
+    r.preset = "keyaki";
+    r.params = FindPreset("keyaki")->params;
+    r.seed = seed;
+    r.years = 15;
+    Tree tree = GrowTree(r);
+    int id = 0, long_years = 0;
+    while (id >= 0 && !tree.branches[static_cast<std::size_t>(id)].dwarf) {
+      ++long_years;
+      int next = -1;
+      for (int c : tree.branches[static_cast<std::size_t>(id)].children) {
+        const Branch& child = tree.branches[static_cast<std::size_t>(c)];
+        if (child.alive && child.kind == ShootKind::kTerminal) next = c;
+      }
+      id = next;
+    }
+    EXPECT_GE(long_years, 8) << "seed " << seed;
+  }
+}
+
 // (c) "長枝、短枝の差があまりなく、全体に丸い樹形".
 TEST(Fig219, TsutsujiIsRoundWithLittleLongDwarfDifference) {
   Tree tree = Grow15("tsutsuji");
@@ -155,7 +186,7 @@ TEST(Fig219, TsutsujiIsRoundWithLittleLongDwarfDifference) {
 // The thesis's trees stand upright: with the default sky light (no sun) none leans to one side.
 // Each seed's tree leans a few degrees its own way; a sun would lean them all the same way, so the
 // lean of the centroid averaged over three seeds is checked (keyaki's sympodial zig-zag, which
-// starts the same way for every seed, leaves it 3.4 deg).
+// starts the same way for every seed, leaves it 2.3 deg).
 TEST(Fig219, ThesisSpeciesDoNotLean) {
   for (const char* name : {"sakura", "keyaki", "tsutsuji"}) {
     glm::vec3 mean(0.0f);
