@@ -2,6 +2,7 @@
 #include "cli.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -371,6 +372,9 @@ int RunSwayCommand(const GrowOptions& grow_options, const SwayOptions& o, CLI::A
     j["ns_per_internode"] = run.ns_per_internode;
     j["max_tip_displacement"] = run.max_tip_displacement;
     j["finite"] = run.finite;
+    // Over the last two seconds of the gust (or the part of it that was run).
+    double to = std::min(params.gust_off, params.duration);
+    j["jittering_tips"] = CountJitteringTips(run, std::max(params.gust_on, to - 2.0), to);
     out << j.dump() << "\n";
   }
   return 0;

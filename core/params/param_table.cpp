@@ -166,6 +166,9 @@ const std::array<ParamSpec, kParamCount> kTable = {{
      "1: the grown shape is the rest pose under gravity (no sag at t = 0); 0: as the thesis."},
     {P::kSwayDt, "dt", "dt", "s", 1.0 / 30.0, 0.0001, 0.1, false, "sway",
      "Time step of the sway simulation (eqs. 3.13, 3.14, 3.16; table 3.1: 1/30 s)."},
+    {P::kOmitLimit, "omit_limit", "", "", 1, 0.1, 4, false, "sway",
+     "A node point moves only if K_x dt²/m is at most this: 3 in eq. 3.16; 1 (default) keeps "
+     "thin tips from jittering (docs/sway-model.md)."},
 
     {P::kWindSpeed, "wind_speed", "v_wind", "m/s", 5, 0, 100, false, "wind",
      "Wind speed while the gust blows (eq. 3.5; thesis examples: 5, 10, 20)."},

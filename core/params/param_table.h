@@ -88,6 +88,7 @@ enum class ParamId : int {
   kGravity,
   kGravityPreload,
   kSwayDt,
+  kOmitLimit,
   // wind: the thesis's sudden gust (3.5) and a field varying in space and time (not in the thesis)
   kWindSpeed,
   kWindDir,

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "math/det_math.h"
@@ -18,7 +19,6 @@ using glm::dvec3;
 
 // Internal units are cgs (cm, g, s, dyn), as the tree (cm) and thesis table 3.1 (g, cm², g/cm³).
 constexpr double kCmPerM = 100.0;
-constexpr double kOmitLimit = 3.0;  // thesis eq. 3.16: K_x <= 3 m / dt²
 
 // Minimal rotation taking unit `from` to unit `to`, applied to v (Rodrigues with the unnormalized
 // axis from × to; no trigonometry needed). Equals the thesis's θ(0)⁻¹·dθ(t)⁻¹·θ(0) (eq. 3.11).
@@ -61,6 +61,7 @@ SwayParams::SwayParams(const ParamSet& p)
       gravity(p.Get(ParamId::kGravity)),
       gravity_preload(p.GetBool(ParamId::kGravityPreload)),
       dt(p.Get(ParamId::kSwayDt)),
+      omit_limit(p.Get(ParamId::kOmitLimit)),
       wind_speed(p.Get(ParamId::kWindSpeed)),
       wind_dir(p.Get(ParamId::kWindDir)),
       gust_on(p.Get(ParamId::kGustOn)),
@@ -167,7 +168,7 @@ SwayModel BuildSwayModel(const Tree& tree, const SwayParams& params) {
   std::vector<bool> omitted(model.nodes.size(), false);
   for (std::size_t u = model.nodes.size(); u-- > 0;) {
     SwayNode& n = model.nodes[u];
-    omitted[u] = !(n.mass > 0) || !(n.restoring <= kOmitLimit * n.mass / (dt * dt));
+    omitted[u] = !(n.mass > 0) || !(n.restoring <= params.omit_limit * n.mass / (dt * dt));
     if (!omitted[u] && n.parent >= 0) {
       SwayNode& parent = model.nodes[static_cast<std::size_t>(n.parent)];
       if (parent.rest_length > 1e-9) {
@@ -495,6 +496,30 @@ SwayRun RunSway(const Tree& tree, const SwayParams& params, int tips) {
         ms * 1e6 / (static_cast<double>(steps) * static_cast<double>(run.internodes));
   }
   return run;
+}
+
+int CountJitteringTips(const SwayRun& run, double from, double to) {
+  int jittering = 0;
+  for (const std::vector<dvec3>& track : run.tip_positions) {
+    dvec3 lo(HUGE_VAL), hi(-HUGE_VAL), last_step(0.0);
+    int steps = 0, reversals = 0;
+    const dvec3* previous = nullptr;
+    for (std::size_t k = 0; k < track.size() && k < run.times.size(); ++k) {
+      if (run.times[k] < from || run.times[k] > to) continue;
+      const dvec3& p = track[k];
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+      if (previous) {
+        dvec3 step = p - *previous;
+        if (steps > 0 && glm::dot(step, last_step) < 0.0) ++reversals;
+        last_step = step;
+        ++steps;
+      }
+      previous = &p;
+    }
+    if (steps >= 2 && glm::length(hi - lo) > 2.0 && reversals > 0.4 * (steps - 1)) ++jittering;
+  }
+  return jittering;
 }
 
 std::string SwayCsv(const SwayRun& run) {

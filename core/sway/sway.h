@@ -36,7 +36,8 @@ struct SwayParams {
   double alpha;        // α (eq. 3.15)
   double gravity;      // |g|, m/s² (eq. 3.6)
   bool gravity_preload;
-  double dt;  // s (eqs. 3.13, 3.14, 3.16)
+  double dt;          // s (eqs. 3.13, 3.14, 3.16)
+  double omit_limit;  // largest K_x dt² / m of a moving node point (eq. 3.16: 3)
   // wind (thesis 3.5 plus the wind field of docs/sway-model.md)
   double wind_speed;        // m/s
   double wind_dir;          // deg, 0: towards +x, 90: towards +z
@@ -173,6 +174,11 @@ struct SwayRun {
 
 // Runs params' duration; traces up to `tips` moving tips farthest from the root.
 SwayRun RunSway(const Tree& tree, const SwayParams& params, int tips);
+// Traced tips that jitter between `from` and `to` seconds (docs/sway-model.md, "Omission"): each
+// spans more than 2 cm there and its step-to-step motion reverses (negative dot product of two
+// successive steps) on more than 40 % of the steps. A swing the time step resolves reverses about
+// twice a period; a tip ringing near the eq. 3.16 bound reverses on nearly every step.
+int CountJitteringTips(const SwayRun& run, double from, double to);
 // CSV "time,node,x,y,z" (cm) of the traced tips.
 std::string SwayCsv(const SwayRun& run);
 // SVG plot against time of each traced tip's signed displacement from rest along the wind (cm),

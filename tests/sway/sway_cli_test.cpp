@@ -34,7 +34,7 @@ TEST(SwayCli, StatsHasTheCounts) {
   ASSERT_EQ(r.code, 0) << r.err;
   nlohmann::json j = nlohmann::json::parse(r.out);
   for (const char* key : {"node_points", "moving", "followers", "fixed", "internodes",
-                          "ns_per_internode", "max_tip_displacement", "steps"}) {
+                          "ns_per_internode", "max_tip_displacement", "steps", "jittering_tips"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   EXPECT_EQ(j["node_points"].get<int>(),
@@ -42,6 +42,7 @@ TEST(SwayCli, StatsHasTheCounts) {
   EXPECT_EQ(j["steps"].get<int>(), 60);
   EXPECT_GT(j["max_tip_displacement"].get<double>(), 0.0);
   EXPECT_TRUE(j["finite"].get<bool>());
+  EXPECT_EQ(j["jittering_tips"].get<int>(), 0);  // over the gust's last 2 s (here 0.2-1 s)
 }
 
 TEST(SwayCli, WritesCsvAndSvg) {
@@ -119,7 +120,7 @@ TEST(SwayCli, ParamsListsTheSwayAndWindGroups) {
     sway += row["group"] == "sway";
     wind += row["group"] == "wind";
   }
-  EXPECT_EQ(sway, 12);
+  EXPECT_EQ(sway, 13);
   EXPECT_EQ(wind, 9);
   Result text = RunNiwa({"params"});
   for (const char* key : {"K_wind", "K_dir_trunk", "wood_density", "sway_alpha", "wind_speed",
