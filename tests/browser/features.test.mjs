@@ -7,9 +7,8 @@ import http from 'node:http';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import validator from 'gltf-validator';
-import { startServer } from '../../scripts/serve.mjs';
 import {
-  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, finish, launchChromium, newContext, nativeStats, waitReady, watchPage,
+  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, nativeStats, newContext, runBrowserTest, waitReady, watchPage,
 } from './harness.mjs';
 
 const dataset = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
@@ -82,8 +81,6 @@ async function loadWithThree(bytes) {
   });
 }
 
-const server = await startServer({ port: 0 });
-const browser = await launchChromium();
 const problems = [];
 function watch(page) {
   watchPage(page, problems);
@@ -92,7 +89,7 @@ function watch(page) {
 }
 
 const START = 'preset=maple&seed=2&years=10';
-try {
+await runBrowserTest(async (server, browser) => {
   const context = await newContext(browser, { viewport: { width: 1280, height: 800 }, acceptDownloads: true });
   await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: server.url.replace(/\/$/, '') });
   const page = watch(await context.newPage());
@@ -451,10 +448,4 @@ try {
   await host.screenshot({ path: path.join(ARTIFACTS, 'features-cross-origin.png') });
   await host.close();
   hostServer.close();
-} catch (e) {
-  check('test ran to the end', false, e.stack || String(e));
-} finally {
-  await browser.close();
-  await server.close();
-}
-finish();
+});

@@ -3,15 +3,12 @@
 // tree is drawn in both modes, hybrid draws far fewer primitives and frames faster, the mode and the
 // camera live in the hash, orbiting asks for new draw lists. Screenshots: build/artifacts/grove-*.png.
 import path from 'node:path';
-import { startServer } from '../../scripts/serve.mjs';
-import { ARTIFACTS, TIMEOUT, check, finish, launchChromium, newContext, watchPage, waitGroveDrawn } from './harness.mjs';
+import { ARTIFACTS, TIMEOUT, check, newContext, runBrowserTest, waitGroveDrawn, watchPage } from './harness.mjs';
 
-const server = await startServer({ port: 0 });
-const browser = await launchChromium();
 const problems = [];
 const data = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
 
-try {
+await runBrowserTest(async (server, browser) => {
   const context = await newContext(browser, { viewport: { width: 900, height: 620 } });
   const page = await context.newPage();
   watchPage(page, problems);
@@ -79,10 +76,4 @@ try {
 
   check('no console errors or warnings', problems.length === 0, problems.slice(0, 5).join(' | '));
   console.log(`grove test took ${((Date.now() - started) / 1000).toFixed(0)} s`);
-} catch (e) {
-  check('test ran to the end', false, e.stack || String(e));
-} finally {
-  await browser.close();
-  await server.close();
-}
-finish();
+});

@@ -4,11 +4,8 @@
 // at different phases with a travelling gust front and wave, and identical without them; Still
 // restores the rest image exactly. Screenshots: build/artifacts/grove-wind*.png.
 import path from 'node:path';
-import { startServer } from '../../scripts/serve.mjs';
-import { ARTIFACTS, TIMEOUT, check, finish, launchChromium, newContext, saveCanvasPng, snapshotCanvas, snapshotDifference, watchPage, waitGroveDrawn } from './harness.mjs';
+import { ARTIFACTS, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, snapshotCanvas, snapshotDifference, waitGroveDrawn, watchPage } from './harness.mjs';
 
-const server = await startServer({ port: 0 });
-const browser = await launchChromium();
 const problems = [];
 const data = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
 const swayAt = (page, t) => page.waitForFunction((x) => Number(document.documentElement.dataset.swayTime || -1) >= x,
@@ -20,7 +17,7 @@ function farApart(probe) {
 }
 const cam = 'cam=0.6000,0.3400,55.0000,0.0000,1.0000,0.0000';
 
-try {
+await runBrowserTest(async (server, browser) => {
   const context = await newContext(browser, { viewport: { width: 900, height: 620 } });
   const page = await context.newPage();
   watchPage(page, problems);
@@ -115,10 +112,4 @@ try {
 
   check('no console errors or warnings', problems.length === 0, problems.slice(0, 5).join(' | '));
   console.log(`grove sway test took ${((Date.now() - started) / 1000).toFixed(0)} s`);
-} catch (e) {
-  check('test ran to the end', false, e.stack || String(e));
-} finally {
-  await browser.close();
-  await server.close();
-}
-finish();
+});

@@ -4,6 +4,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
+import { startServer } from '../../scripts/serve.mjs';
 
 export const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 export const NATIVE = process.env.NIWA_NATIVE || path.join(ROOT, 'build/native/bin/niwa');
@@ -66,6 +67,23 @@ export function launchChromium() {
       '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update',
       '--disable-sync'],
   });
+}
+
+// Runs one browser test: serves the app on a free port, launches Chromium, awaits
+// body(server, browser), counts a throw as the failed check 'test ran to the end', closes both
+// whatever happens and prints the results (finish).
+export async function runBrowserTest(body) {
+  const server = await startServer({ port: 0 });
+  const browser = await launchChromium();
+  try {
+    await body(server, browser);
+  } catch (e) {
+    check('test ran to the end', false, e.stack || String(e));
+  } finally {
+    await browser.close();
+    await server.close();
+  }
+  finish();
 }
 
 // A browser context whose pages (and their frames) all have window.__niwaCanvasImage(selector):

@@ -3,9 +3,8 @@
 // playwright-core, and compares the page's stats with the native CLI ($NIWA_NATIVE).
 import fs from 'node:fs';
 import path from 'node:path';
-import { startServer } from '../../scripts/serve.mjs';
 import {
-  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, finish, launchChromium, newContext, nativeStats, waitReady, watchPage,
+  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, nativeStats, newContext, runBrowserTest, waitReady, watchPage,
 } from './harness.mjs';
 
 function parseStats(text) {
@@ -36,10 +35,8 @@ async function canvasPixels(page) {
   });
 }
 
-const server = await startServer({ port: 0 });
-const browser = await launchChromium();
 const problems = [];
-try {
+await runBrowserTest(async (server, browser) => {
   const context = await newContext(browser, { viewport: { width: 1280, height: 800 } });
   const page = await context.newPage();
   watchPage(page, problems);
@@ -150,10 +147,4 @@ try {
   check('every control is labelled', unlabelled.length === 0, unlabelled.join(', '));
 
   check('no console errors or warnings', problems.length === 0, problems.slice(0, 5).join(' | '));
-} catch (e) {
-  check('test ran to the end', false, e.stack || String(e));
-} finally {
-  await browser.close();
-  await server.close();
-}
-finish();
+});

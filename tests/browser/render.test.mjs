@@ -7,14 +7,11 @@
 // build/artifacts/render-*.png.
 import { execFileSync } from 'node:child_process';
 import path from 'node:path';
-import { startServer } from '../../scripts/serve.mjs';
-import { ARTIFACTS, NATIVE, TIMEOUT, check, finish, launchChromium, newContext, snapshotCanvas, snapshotDifference, waitReady, watchPage } from './harness.mjs';
+import { ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, snapshotCanvas, snapshotDifference, waitReady, watchPage } from './harness.mjs';
 import { ssim } from './ssim.mjs';
 
 const SIZE = 512;
 const TREE = 'preset=sakura&seed=1&years=15';
-const server = await startServer({ port: 0 });
-const browser = await launchChromium();
 const problems = [];
 const root = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
 const camOf = (hash) => (hash.match(/cam=([^&]*)/) || [])[1];
@@ -51,7 +48,7 @@ async function timeFrames(page, key) {
 const cell = (page, attr) => page.$$eval(`#render-table [${attr}]`, (cells) =>
   Object.fromEntries(cells.map((c) => [c.dataset.row || c.dataset.full, c.textContent.replace(/,/g, '')])));
 
-try {
+await runBrowserTest(async (server, browser) => {
   // The stage is the window less the 340 px panel: a 512 x 512 canvas at device pixel ratio 1.
   const context = await newContext(browser, { viewport: { width: SIZE + 340, height: SIZE } });
   const page = await context.newPage();
@@ -161,10 +158,4 @@ try {
   check('Still puts cards and lines back exactly', back === 0, `${(back * 100).toFixed(3)}% of pixels differ`);
 
   check('no console errors or warnings', problems.length === 0, problems.slice(0, 5).join(' | '));
-} catch (e) {
-  check('test ran to the end', false, e.stack || String(e));
-} finally {
-  await browser.close();
-  await server.close();
-}
-finish();
+});

@@ -3,17 +3,14 @@
 // crown bends with the wind (+x is to the right in the view used), the pose clock runs, leaves and
 // branches move, and Still restores the grown shape pixel for pixel. Screenshots: build/artifacts/sway-*.png.
 import path from 'node:path';
-import { startServer } from '../../scripts/serve.mjs';
 import {
-  ARTIFACTS, TIMEOUT, check, finish, launchChromium, newContext, snapshotCanvas, snapshotDifference, waitReady, watchPage,
+  ARTIFACTS, TIMEOUT, check, newContext, runBrowserTest, snapshotCanvas, snapshotDifference, waitReady, watchPage,
 } from './harness.mjs';
 
-const server = await startServer({ port: 0 });
-const browser = await launchChromium();
 const problems = [];
 const swayTime = (page) => page.evaluate(() => Number(document.documentElement.dataset.swayTime || -1));
 
-try {
+await runBrowserTest(async (server, browser) => {
   const context = await newContext(browser, { viewport: { width: 1100, height: 760 } });
   const page = watchPage(await context.newPage(), problems);
   // A small tree seen from +z (yaw 0): the wind's +x direction (wind_dir 0) is to the right.
@@ -102,10 +99,4 @@ try {
   await embed.close();
 
   check('no console errors or warnings', problems.length === 0, problems.slice(0, 5).join(' | '));
-} catch (e) {
-  check('test ran to the end', false, e.stack || String(e));
-} finally {
-  await browser.close();
-  await server.close();
-}
-finish();
+});
