@@ -9,6 +9,7 @@
 
 #include "tree/growth.h"
 #include "tree/presets.h"
+#include "trunk_line.h"
 
 namespace niwa {
 namespace {
@@ -40,11 +41,7 @@ GrowRequest Fig218(int seed, int years) {
 int TrunkShoot(const Tree& tree, int year) {
   int id = 0;
   for (;;) {
-    int next = -1;
-    for (int c : tree.branches[static_cast<std::size_t>(id)].children) {
-      const Branch& child = tree.branches[static_cast<std::size_t>(c)];
-      if (child.alive && child.kind == ShootKind::kTerminal) next = c;
-    }
+    const int next = LiveTerminalChild(tree, id);
     if (next < 0 || tree.branches[static_cast<std::size_t>(next)].year > year) return id;
     id = next;
   }

@@ -11,20 +11,23 @@
 
 #include "tree/growth.h"
 #include "tree/presets.h"
+#include "trunk_line.h"
 
 namespace niwa {
 namespace {
 
-Tree Grow15(const std::string& name) {
+// The preset grown 15 years from `seed`, or from its own seed.
+Tree Grow15(const std::string& name, std::uint64_t seed) {
   const Preset* preset = FindPreset(name);
   EXPECT_NE(preset, nullptr) << name;
   GrowRequest r;
   r.preset = name;
   r.params = preset->params;
-  r.seed = preset->seed;
+  r.seed = seed;
   r.years = 15;
   return GrowTree(r);
 }
+Tree Grow15(const std::string& name) { return Grow15(name, FindPreset(name)->seed); }
 
 float Length(const Branch& b) {
   float sum = 0.0f;
@@ -148,21 +151,11 @@ TEST(Fig219, KeyakiIsABareTrunkUnderAFinelyBranchedBroom) {
 // (it did with light_scale 0.6: the line turned dwarf in year 3).
 TEST(Fig219, KeyakiTrunkLineStaysLongForEightYears) {
   for (std::uint32_t seed : {1u, 2u, 3u}) {
-    GrowRequest r;
-    r.preset = "keyaki";
-    r.params = FindPreset("keyaki")->params;
-    r.seed = seed;
-    r.years = 15;
-    Tree tree = GrowTree(r);
+    Tree tree = Grow15("keyaki", seed);
     int id = 0, long_years = 0;
     while (id >= 0 && !tree.branches[static_cast<std::size_t>(id)].dwarf) {
       ++long_years;
-      int next = -1;
-      for (int c : tree.branches[static_cast<std::size_t>(id)].children) {
-        const Branch& child = tree.branches[static_cast<std::size_t>(c)];
-        if (child.alive && child.kind == ShootKind::kTerminal) next = c;
-      }
-      id = next;
+      id = LiveTerminalChild(tree, id);
     }
     EXPECT_GE(long_years, 8) << "seed " << seed;
   }
@@ -190,15 +183,7 @@ TEST(Fig219, TsutsujiIsRoundWithLittleLongDwarfDifference) {
 TEST(Fig219, ThesisSpeciesDoNotLean) {
   for (const char* name : {"sakura", "keyaki", "tsutsuji"}) {
     glm::vec3 mean(0.0f);
-    for (uint64_t seed = 1; seed <= 3; ++seed) {
-      const Preset* preset = FindPreset(name);
-      GrowRequest r;
-      r.preset = name;
-      r.params = preset->params;
-      r.seed = seed;
-      r.years = 15;
-      mean += Centroid(GrowTree(r)) / 3.0f;
-    }
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) mean += Centroid(Grow15(name, seed)) / 3.0f;
     float lean_deg = std::atan2(std::hypot(mean.x, mean.z), mean.y) * 180.0f / 3.14159265f;
     EXPECT_LE(lean_deg, 5.0f) << name;  // with a sun of weight 0.1 they leaned 11-12 deg
   }
