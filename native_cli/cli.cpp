@@ -223,14 +223,19 @@ std::string FormatFloat(float value) {
 void PrintMappings(const GrowRequest& request, std::ostream& out) {
   const ParamSet& p = request.params;
   double h_sat = p.Get(ParamId::kHSat);
-  out << "hormone,N,D_long_cm,D_dwarf_cm,b_L,b_g,P_terminal,P_tl,P_lateral_at_age_P_l_years\n";
+  out << "hormone,N_long,N_dwarf,D_long_cm,D_dwarf_cm,b_L,b_g,P_terminal,P_tl,"
+         "P_lateral_at_age_P_l_years\n";
   for (int i = 0; i <= 60; ++i) {
     float h = static_cast<float>(1.5 * h_sat * i / 60.0);
-    float d = HormoneRamp(p, h, ParamId::kDLow, ParamId::kDHigh);
+    // A long and a dwarf shoot of initial hormone h, as BreakBuds sizes them (fig. 2.5, fig. 2.13).
+    float d_dwarf = ShootLengthRamp(p, h, true, ParamId::kDLow, ParamId::kDHigh) *
+                    static_cast<float>(p.Get(ParamId::kDwarfInternodeRatio));
     BreakChances chance = BudBreakChances(p, h, 1 + static_cast<int>(p.Get(ParamId::kPLYears)));
-    out << FormatFloat(h) << "," << FormatFloat(HormoneRamp(p, h, ParamId::kNLow, ParamId::kNHigh))
-        << "," << FormatFloat(d) << ","
-        << FormatFloat(d * static_cast<float>(p.Get(ParamId::kDwarfInternodeRatio))) << ","
+    out << FormatFloat(h) << ","
+        << FormatFloat(ShootLengthRamp(p, h, false, ParamId::kNLow, ParamId::kNHigh)) << ","
+        << FormatFloat(ShootLengthRamp(p, h, true, ParamId::kNLow, ParamId::kNHigh)) << ","
+        << FormatFloat(ShootLengthRamp(p, h, false, ParamId::kDLow, ParamId::kDHigh)) << ","
+        << FormatFloat(d_dwarf) << ","
         << FormatFloat(HormoneRamp(p, h, ParamId::kBLLow, ParamId::kBLHigh)) << ","
         << FormatFloat(HormoneRamp(p, h, ParamId::kBGLow, ParamId::kBGHigh)) << ","
         << FormatFloat(chance.terminal) << "," << FormatFloat(chance.terminally_lateral) << ","

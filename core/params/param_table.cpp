@@ -49,6 +49,9 @@ const std::array<ParamSpec, kParamCount> kTable = {{
      "Internode length at hormone H_sat (second value of the range D)."},
     {P::kDwarfInternodeRatio, "D_s_ratio", "D_s/D_l", "", 1.0, 0.01, 4, false, "branching",
      "Dwarf-shoot internode length as a fraction of the long-shoot length (fig. 2.13)."},
+    {P::kLengthStep, "length_step", "", "", 0, 0, 1, false, "branching",
+     "Share of the N and D ranges that jumps at the dwarf threshold H_s (fig. 2.5): 0 linear in "
+     "the initial hormone; 1 dwarf shoots at the first value, long shoots at the second."},
     {P::kBT, "B_t", "B_t", "buds", 1, 0, 1, true, "branching", "Terminal buds per shoot."},
     {P::kBTl, "B_tl", "B_tl", "buds", 1, 0, 8, true, "branching",
      "Terminally-lateral buds at the tip of each shoot."},

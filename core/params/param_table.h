@@ -29,6 +29,7 @@ enum class ParamId : int {
   kDLow,
   kDHigh,
   kDwarfInternodeRatio,
+  kLengthStep,
   kBT,
   kBTl,
   kBL,

@@ -266,14 +266,28 @@ void ComputeNodeFrames(const Branch& shoot, const std::vector<float>& turn_cos,
   }
 }
 
+// Share t in [0, 1] of a hormone-dependent range: H / H_sat, or 1 with the hormone model off.
+float HormoneShare(const ParamSet& params, float hormone) {
+  return params.GetBool(ParamId::kUseHormone)
+             ? Clamp01(hormone / static_cast<float>(params.Get(ParamId::kHSat)))
+             : 1.0f;
+}
+
+float RangeAt(const ParamSet& params, ParamId low, ParamId high, float share) {
+  float a = static_cast<float>(params.Get(low)), b = static_cast<float>(params.Get(high));
+  return a + (b - a) * share;
+}
 }  // namespace
 
 float HormoneRamp(const ParamSet& params, float hormone, ParamId low, ParamId high) {
-  float t = params.GetBool(ParamId::kUseHormone)
-                ? Clamp01(hormone / static_cast<float>(params.Get(ParamId::kHSat)))
-                : 1.0f;
-  float a = static_cast<float>(params.Get(low)), b = static_cast<float>(params.Get(high));
-  return a + (b - a) * t;
+  return RangeAt(params, low, high, HormoneShare(params, hormone));
+}
+
+float ShootLengthRamp(const ParamSet& params, float hormone_initial, bool dwarf, ParamId low,
+                      ParamId high) {
+  float t = HormoneShare(params, hormone_initial);
+  float step = static_cast<float>(params.Get(ParamId::kLengthStep));
+  return RangeAt(params, low, high, dwarf ? (1.0f - step) * t : t + step * (1.0f - t));
 }
 
 float BreakProbability(float hormone, float h_short, float h_sat, float p_dwarf, float p_long) {
@@ -375,9 +389,11 @@ void Grower::BreakBuds() {
     shoot.dwarf = p.GetBool(ParamId::kUseHormone) &&
                   hormone_initial < static_cast<float>(p.Get(ParamId::kHShort));
     // Step 1 of 2.4.3: node count N and internode length D from the hormone (fig. 2.5).
-    int nodes = std::max(1, static_cast<int>(std::lround(
-                                HormoneRamp(p, hormone_initial, ParamId::kNLow, ParamId::kNHigh))));
-    float length = HormoneRamp(p, hormone_initial, ParamId::kDLow, ParamId::kDHigh);
+    int nodes =
+        std::max(1, static_cast<int>(std::lround(ShootLengthRamp(
+                        p, hormone_initial, shoot.dwarf, ParamId::kNLow, ParamId::kNHigh))));
+    float length =
+        ShootLengthRamp(p, hormone_initial, shoot.dwarf, ParamId::kDLow, ParamId::kDHigh);
     if (shoot.dwarf) length *= static_cast<float>(p.Get(ParamId::kDwarfInternodeRatio));
     shoot.internode_length = length;
     if (internodes_ + nodes > p.GetInt(ParamId::kMaxInternodes)) {

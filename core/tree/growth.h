@@ -92,6 +92,11 @@ Tree GrowTree(const GrowRequest& request, GrowthTimings* timings = nullptr);
 
 // Hormone-dependent ranges of table 2.2 ("a ~ b"): value at H = 0 is `low`, at H >= H_sat `high`.
 float HormoneRamp(const ParamSet& params, float hormone, ParamId low, ParamId high);
+// N or D of a new shoot with initial hormone H⁰ (fig. 2.5, 2.4.3 step 1): HormoneRamp's share t of
+// the range, moved by `length_step` j away from the dwarf threshold H_s: (1 − j)·t for a dwarf
+// shoot, t + j·(1 − t) for a long one.
+float ShootLengthRamp(const ParamSet& params, float hormone_initial, bool dwarf, ParamId low,
+                      ParamId high);
 // Break probability of a bud with maximum p_dwarf / p_long on a shoot of hormone H (fig. 2.8).
 float BreakProbability(float hormone, float h_short, float h_sat, float p_dwarf, float p_long);
 // Largest lateral-bud break probability P_l at a tree age in years (fig. 2.9).

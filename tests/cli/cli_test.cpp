@@ -182,9 +182,11 @@ TEST(Cli, MappingsPrintTheHormoneAndAgeRangesAsCsv) {
   std::string header, first, line;
   std::getline(lines, header);
   EXPECT_EQ(header,
-            "hormone,N,D_long_cm,D_dwarf_cm,b_L,b_g,P_terminal,P_tl,P_lateral_at_age_P_l_years");
+            "hormone,N_long,N_dwarf,D_long_cm,D_dwarf_cm,b_L,b_g,P_terminal,P_tl,"
+            "P_lateral_at_age_P_l_years");
   std::getline(lines, first);
-  EXPECT_EQ(first.rfind("0,6,0.2", 0), 0u) << first;  // H = 0: N_low 6, D_low 0.2 (table 2.2)
+  // H = 0: N_low 6, D_low 0.2 (table 2.2); the dwarf shoot's D is D_s_ratio 0.17 of that.
+  EXPECT_EQ(first.rfind("0,6,6,0.2,0.034", 0), 0u) << first;
   int rows = 1;
   while (std::getline(lines, line) && !line.empty()) ++rows;
   EXPECT_EQ(rows, 61);

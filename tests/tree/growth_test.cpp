@@ -33,6 +33,29 @@ TEST(HormoneRamp, InterpolatesTableRangesByHormone) {
   EXPECT_FLOAT_EQ(HormoneRamp(p, 0.0f, ParamId::kNLow, ParamId::kNHigh), 25.0f);
 }
 
+TEST(ShootLengthRamp, LengthStepMovesLongAndDwarfShootsApartAtTheThreshold) {
+  ParamSet p = FindPreset("keyaki")->params;  // N 7 ~ 10, D 2 ~ 5 cm, H_sat 0.69
+  const float h = 0.276f;                     // share t = 0.4 of the ranges
+  // length_step 0 (every preset): HormoneRamp's value for long and dwarf shoots alike.
+  for (bool dwarf : {false, true}) {
+    EXPECT_FLOAT_EQ(ShootLengthRamp(p, h, dwarf, ParamId::kNLow, ParamId::kNHigh),
+                    HormoneRamp(p, h, ParamId::kNLow, ParamId::kNHigh));
+  }
+  EXPECT_FLOAT_EQ(ShootLengthRamp(p, h, false, ParamId::kDLow, ParamId::kDHigh), 3.2f);
+  p.Set(ParamId::kLengthStep, 0.5);
+  // Long: t + 0.5 (1 - t) = 0.7 -> D 2 + 3 x 0.7 = 4.1 cm, N 9.1; dwarf: 0.5 t = 0.2 -> 2.6 cm,
+  // N 7.6.
+  EXPECT_FLOAT_EQ(ShootLengthRamp(p, h, false, ParamId::kDLow, ParamId::kDHigh), 4.1f);
+  EXPECT_FLOAT_EQ(ShootLengthRamp(p, h, false, ParamId::kNLow, ParamId::kNHigh), 9.1f);
+  EXPECT_FLOAT_EQ(ShootLengthRamp(p, h, true, ParamId::kDLow, ParamId::kDHigh), 2.6f);
+  EXPECT_FLOAT_EQ(ShootLengthRamp(p, h, true, ParamId::kNLow, ParamId::kNHigh), 7.6f);
+  p.Set(ParamId::kLengthStep, 1);  // a pure step: dwarf shoots at 'a', long shoots at 'b'
+  EXPECT_FLOAT_EQ(ShootLengthRamp(p, 0.01f, false, ParamId::kDLow, ParamId::kDHigh), 5.0f);
+  EXPECT_FLOAT_EQ(ShootLengthRamp(p, 0.6f, true, ParamId::kDLow, ParamId::kDHigh), 2.0f);
+  p.Set(ParamId::kUseHormone, 0);  // hormone off: every shoot long, at 'b' (2.5.1)
+  EXPECT_FLOAT_EQ(ShootLengthRamp(p, 0.0f, false, ParamId::kNLow, ParamId::kNHigh), 10.0f);
+}
+
 TEST(BreakProbability, FollowsFig28AroundTheDwarfThreshold) {
   // Below H_s at most P^s, above at least P^s, reaching P^l at H_sat.
   EXPECT_FLOAT_EQ(BreakProbability(0.05f, 0.1f, 1.0f, 0.3f, 1.0f), 0.15f);
