@@ -93,7 +93,7 @@ TEST(Fig218, TheCutTreeRegrowsItsTopOnDormancyBreakShoots) {
     cut_gain += Height(cut) - Height(after_cut);
     uncut_gain += Height(uncut) - Height(at10);
     // The regrown trunk: the cut tree's top grows on shoots that broke by dormancy break on the
-    // stub (all of it in seeds 1-5, against 3-19 % of the uncut tree's top).
+    // branches left below the cut (all of it in seeds 1-5, against 3-19 % of the uncut tree's top).
     const float cut_top = TopShareOnDormancyBreak(cut), uncut_top = TopShareOnDormancyBreak(uncut);
     EXPECT_GE(cut_top, 0.9f) << "seed " << seed;
     EXPECT_GT(cut_top, uncut_top + 0.5f) << "seed " << seed;
