@@ -141,6 +141,8 @@ function requestFrame() {
     poseDone.clear();
     updateStats(renderer.render(camera, mode));
     root.dataset.frameSerial = Number(root.dataset.frameSerial || 0) + 1;
+    // The round of draw lists this frame drew (hybrid): a test waits for it, not just for the lists.
+    root.dataset.drawnViewSerial = mode === 'hybrid' ? root.dataset.viewSerial || '0' : '0';
     if (windPlaying) showWind();
     // The worker sends a tree's next pose once this one is on screen.
     for (const client of pending) worker.postMessage({ type: 'poseDone', client });

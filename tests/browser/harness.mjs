@@ -48,13 +48,15 @@ export function watchPage(page, problems) {
   return page;
 }
 
-// Grove page: waits until it has drawn `mode` with everything it needs (all trees; in hybrid mode the
-// draw lists of a view newer than viewSerialAbove), or shows an error.
+// Grove page: waits until it has drawn `mode` with everything it needs (all trees; in hybrid mode a
+// frame drawn with the draw lists of a view newer than viewSerialAbove: the lists arrive before the
+// frame that draws them, and a snapshot in between shows the previous lists), or shows an error.
 export function waitGroveDrawn(page, mode, viewSerialAbove = 0) {
   return page.waitForFunction(([m, v]) => {
     const d = document.documentElement.dataset;
     if (d.status === 'error') return true;
-    return d.status === 'ready' && d.drawnMode === m && d.viewPending === '0' && (m === 'full' || Number(d.viewSerial || 0) > v);
+    return d.status === 'ready' && d.drawnMode === m && d.viewPending === '0' &&
+      (m === 'full' || Number(d.drawnViewSerial || 0) > v);
   }, [mode, viewSerialAbove], { timeout: TIMEOUT, polling: 200 });
 }
 
