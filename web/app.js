@@ -71,6 +71,7 @@ function requestFrame() {
     frameRequested = false;
     const drawn = renderer.render(camera);
     if (drawn) showFrameStats(drawn);
+    root.dataset.drawnTreeSerial = String(treeSerial);  // tests wait for the new tree's frame
     if (poseDrawPending) {  // the worker sends the next pose once this one is on screen
       poseDrawPending = false;
       worker.postMessage({ type: 'poseDone' });
@@ -178,6 +179,7 @@ async function startRenderer() {
     requestFrame();
   } catch (e) {
     renderer = null;
+    root.dataset.drawing = 'off';  // no frames will come (tests stop waiting for them)
     webglMessage = `Cannot draw: ${e.message}`;
     showNotices();
   }

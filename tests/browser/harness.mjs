@@ -32,10 +32,13 @@ export function nativeStats(args) {
 
 // Waits until the page has drawn a tree newer than serialAbove (the page's data-tree-serial).
 export async function waitReady(page, serialAbove, polling = 250) {
-  await page.waitForFunction(
-    (n) => document.documentElement.dataset.status === 'ready' && Number(document.documentElement.dataset.treeSerial) > n,
-    serialAbove, { timeout: TIMEOUT, polling });
-  await page.waitForTimeout(300);  // let the frame for the new tree be drawn
+  await page.waitForFunction((n) => {
+    const d = document.documentElement.dataset;
+    // Ready with a tree newer than n, and a frame drawn with it (unless the page cannot draw).
+    return d.status === 'ready' && Number(d.treeSerial) > n &&
+      (d.drawnTreeSerial === d.treeSerial || d.drawing === 'off');
+  }, serialAbove, { timeout: TIMEOUT, polling });
+  await page.waitForTimeout(300);  // hybrid mode: let the draw list of the new tree arrive
 }
 
 // Adds the console errors and warnings and the uncaught errors of `page` to `problems` (a test
