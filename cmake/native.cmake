@@ -26,3 +26,14 @@ set(NIWA_GOOGLE_BENCHMARK ON)
 
 # Which build a program belongs to, for reports (bench runner).
 add_compile_definitions(NIWA_BUILD_NAME="native")
+
+# Draco (Debian libdraco-dev) decodes KHR_draco_mesh_compression in io/gltf_reader; native only (the
+# page decodes Draco with npm draco3d before the WASM core sees the mesh).
+find_path(NIWA_DRACO_INCLUDE draco/compression/decode.h)
+find_library(NIWA_DRACO_LIBRARY draco)
+if(NIWA_DRACO_INCLUDE AND NIWA_DRACO_LIBRARY)
+  set(NIWA_DRACO_DEFINITIONS NIWA_HAVE_DRACO)
+else()
+  set(NIWA_DRACO_LIBRARY "")
+  set(NIWA_DRACO_DEFINITIONS "")
+endif()
