@@ -1,0 +1,66 @@
+// Bvh: a deterministic bounding volume hierarchy over a TriMesh's triangles (binned SAH, flat node
+// array), the accelerator under closest_point, ray_cast and their users (ivy adhesion and
+// collisions, moss photons). Does not: answer queries (closest_point.h, ray_cast.h do), refit or
+// update after the mesh changes (build again), or own the mesh.
+//
+// Why no library: Debian has libembree-dev (Embree 3: compiled x86 SIMD kernels, no Emscripten
+// build), libbullet-dev (compiled .so; btDbvt is a dynamic AABB tree) and libcgal-dev (AABB_tree
+// is header-only but needs Boost and GMP/MPFR, which the WASM build does not have);
+// `apt-cache search bvh` finds no BVH library, and no well-kept header-only BVH builds with both
+// g++ 12 and em++ 3.1.6 here. Niwa needs the same tree and the same answers natively and in WASM,
+// so this is a small one, checked against the brute-force twins in linear_queries.h.
+//
+// Determinism: the build is single-threaded, in a fixed order (recursive, left child first),
+// with float bounds and double SAH costs; ties between split candidates go to the lowest axis and
+// bin. Same mesh, same options: the same nodes, bit for bit, on every build.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "geom/bounds.h"
+#include "geom/tri_mesh.h"
+
+namespace niwa::geom {
+
+struct BvhOptions {
+  int bins = 16;               // SAH bins per axis, clamped to [2, 64]
+  int max_leaf_triangles = 4;  // a node with at most this many triangles stays a leaf; [1, 16]
+};
+
+// One node, 32 bytes. A leaf (count > 0) holds triangles order[first .. first + count); an inner
+// node (count == 0) has children first and first + 1 (allocated as a pair).
+struct BvhNode {
+  Bounds3 bounds;  // padded a few ulps outward so rounding in the queries never misses a triangle
+  uint32_t first = 0;
+  uint32_t count = 0;
+  bool is_leaf() const { return count > 0; }
+};
+
+class Bvh {
+ public:
+  Bvh() = default;
+  // Builds over every triangle of `mesh` (which should pass ValidateMesh; a mesh with no
+  // triangles gives an empty tree that every query misses). Degenerate triangles are kept (they
+  // never win a query the linear twins would not also give them).
+  static Bvh Build(const TriMesh& mesh, const BvhOptions& options = {});
+
+  int node_count() const { return static_cast<int>(nodes_.size()); }
+  int depth() const { return depth_; }  // levels; 1 for a single leaf, 0 when empty
+  std::size_t triangle_count() const { return order_.size(); }
+  bool empty() const { return nodes_.empty(); }
+
+  // Root is node 0.
+  const std::vector<BvhNode>& nodes() const { return nodes_; }
+  // Triangle indices in leaf order.
+  const std::vector<uint32_t>& order() const { return order_; }
+
+ private:
+  friend struct BvhTestAccess;  // tests break a node on purpose to see the oracle tests fail
+  std::vector<BvhNode> nodes_;
+  std::vector<uint32_t> order_;
+  int depth_ = 0;
+};
+
+}  // namespace niwa::geom

@@ -1,0 +1,177 @@
+// Internal to core/geom: the per-triangle steps and result building that the BVH queries and
+// their linear twins share, so both give the same bits. Does not: traverse anything.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <limits>
+
+#include "geom/bounds.h"
+#include "geom/closest_point.h"
+#include "geom/ray_cast.h"
+#include "geom/tri_mesh.h"
+#include "geom/triangle_queries.h"
+
+namespace niwa::geom::detail {
+
+// Deepest BVH (bvh.cpp keeps it <= 132) plus room: the traversal stacks' size.
+constexpr int kMaxStack = 256;
+
+inline void Corners(const TriMesh& mesh, uint32_t t, DVec3* a, DVec3* b, DVec3* c) {
+  const std::size_t i = 3 * static_cast<std::size_t>(t);
+  *a = ToD(mesh.positions[mesh.indices[i]]);
+  *b = ToD(mesh.positions[mesh.indices[i + 1]]);
+  *c = ToD(mesh.positions[mesh.indices[i + 2]]);
+}
+
+inline glm::vec3 ToF(const DVec3& v) {
+  return glm::vec3(static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z));
+}
+
+// Squared max distance, or a negative value when nothing can be found (negative or NaN).
+inline double MaxDistanceSquared(float max_distance) {
+  if (!(max_distance >= 0.0f)) return -1.0;
+  double d = max_distance;
+  return d * d;
+}
+
+// Best-so-far of a closest-point search: smallest squared distance, ties to the lowest triangle.
+struct ClosestState {
+  explicit ClosestState(double max_d2) : best_d2(max_d2) {}
+  double best_d2;
+  uint32_t best_t = std::numeric_limits<uint32_t>::max();
+  TrianglePoint best_point;
+  bool found = false;
+
+  void Test(const TriMesh& mesh, const DVec3& p, uint32_t t) {
+    DVec3 a, b, c;
+    Corners(mesh, t, &a, &b, &c);
+    TrianglePoint q = ClosestPointOnTriangle(p, a, b, c);
+    if (q.distance_squared < best_d2 || (q.distance_squared == best_d2 && t < best_t)) {
+      best_d2 = q.distance_squared;
+      best_t = t;
+      best_point = q;
+      found = true;
+    }
+  }
+  ClosestHit Result() const {
+    ClosestHit h;
+    if (!found) return h;
+    h.found = true;
+    h.distance = static_cast<float>(std::sqrt(best_d2));
+    h.point = ToF(best_point.point);
+    h.triangle = best_t;
+    h.barycentric = glm::vec3(static_cast<float>(best_point.u), static_cast<float>(best_point.v),
+                              static_cast<float>(best_point.w));
+    return h;
+  }
+};
+
+// A ray prepared once per query: origin, unit direction (in double), and the inverse direction
+// for the slab test. valid is false for a zero or non-finite direction.
+struct PreparedRay {
+  DVec3 origin, dir, inv;
+  bool valid = false;
+};
+
+inline PreparedRay PrepareRay(const glm::vec3& origin, const glm::vec3& dir, bool normalize) {
+  PreparedRay r;
+  r.origin = ToD(origin);
+  r.dir = ToD(dir);
+  if (normalize) {
+    double len = std::sqrt(Dot(r.dir, r.dir));
+    if (!(len > 0.0) || !std::isfinite(len)) return r;
+    r.dir = Mul(r.dir, 1.0 / len);
+  } else if (!(Dot(r.dir, r.dir) > 0.0) || !std::isfinite(Dot(r.dir, r.dir))) {
+    return r;
+  }
+  if (!std::isfinite(r.origin.x) || !std::isfinite(r.origin.y) || !std::isfinite(r.origin.z))
+    return r;
+  r.inv = {1.0 / r.dir.x, 1.0 / r.dir.y, 1.0 / r.dir.z};  // ±inf on a zero component
+  r.valid = true;
+  return r;
+}
+
+// First hit so far: smallest t, ties to the lowest triangle.
+struct RayState {
+  explicit RayState(double max_t) : best_t(max_t) {}
+  double best_t;
+  uint32_t best_tri = std::numeric_limits<uint32_t>::max();
+  double best_u = 0, best_v = 0;
+  bool hit = false;
+
+  void Test(const TriMesh& mesh, const PreparedRay& ray, uint32_t tri) {
+    DVec3 a, b, c;
+    Corners(mesh, tri, &a, &b, &c);
+    double t, u, v;
+    if (!RayTriangle(ray.origin, ray.dir, a, b, c, 0.0, best_t, &t, &u, &v)) return;
+    if (t < best_t || tri < best_tri) {  // t <= best_t here: ties go to the lower index
+      best_t = t;
+      best_tri = tri;
+      best_u = u;
+      best_v = v;
+      hit = true;
+    }
+  }
+  RayHit Result(const TriMesh& mesh, const PreparedRay& ray) const {
+    RayHit h;
+    if (!hit) return h;
+    h.hit = true;
+    h.distance = static_cast<float>(best_t);
+    h.point = ToF(Add(ray.origin, Mul(ray.dir, best_t)));
+    h.triangle = best_tri;
+    h.barycentric = glm::vec3(static_cast<float>(1.0 - best_u - best_v), static_cast<float>(best_u),
+                              static_cast<float>(best_v));
+    DVec3 a, b, c;
+    Corners(mesh, best_tri, &a, &b, &c);
+    DVec3 n = Cross(Sub(b, a), Sub(c, a));
+    double len = std::sqrt(Dot(n, n));
+    if (len > 0.0) h.normal = ToF(Mul(n, 1.0 / len));
+    return h;
+  }
+};
+
+// Does the segment/ray origin + t dir, t in [0, 1] (unnormalized dir), touch triangle tri?
+inline bool SegmentTriangle(const TriMesh& mesh, const PreparedRay& seg, uint32_t tri) {
+  DVec3 a, b, c;
+  Corners(mesh, tri, &a, &b, &c);
+  double t, u, v;
+  return RayTriangle(seg.origin, seg.dir, a, b, c, 0.0, 1.0, &t, &u, &v);
+}
+
+// Squared distance from p to box b (0 inside), in double.
+inline double BoxDistanceSquared(const Bounds3& b, const DVec3& p) {
+  double dx =
+      std::max({static_cast<double>(b.min.x) - p.x, 0.0, p.x - static_cast<double>(b.max.x)});
+  double dy =
+      std::max({static_cast<double>(b.min.y) - p.y, 0.0, p.y - static_cast<double>(b.max.y)});
+  double dz =
+      std::max({static_cast<double>(b.min.z) - p.z, 0.0, p.z - static_cast<double>(b.max.z)});
+  return dx * dx + dy * dy + dz * dz;
+}
+
+// Slab test: does origin + t dir meet box b for some t in [0, t_max]? Sets *t_near (entry, >= 0).
+inline bool RayBox(const Bounds3& b, const PreparedRay& r, double t_max, double* t_near) {
+  double lo = 0.0, hi = t_max;
+  const double o[3] = {r.origin.x, r.origin.y, r.origin.z};
+  const double d[3] = {r.dir.x, r.dir.y, r.dir.z};
+  const double inv[3] = {r.inv.x, r.inv.y, r.inv.z};
+  for (int k = 0; k < 3; ++k) {
+    double bmin = b.min[k], bmax = b.max[k];
+    if (d[k] == 0.0) {  // parallel to this slab: inside it or never
+      if (o[k] < bmin || o[k] > bmax) return false;
+      continue;
+    }
+    double t1 = (bmin - o[k]) * inv[k], t2 = (bmax - o[k]) * inv[k];
+    if (t1 > t2) std::swap(t1, t2);
+    lo = std::max(lo, t1);
+    hi = std::min(hi, t2);
+    if (lo > hi) return false;
+  }
+  *t_near = lo;
+  return true;
+}
+
+}  // namespace niwa::geom::detail
