@@ -12,6 +12,7 @@
 #include <optional>
 #include <sstream>
 
+#include "cli_common.h"
 #include "io/gltf_export.h"
 #include "io/gltf_sway.h"
 #include "io/json_io.h"
@@ -25,6 +26,9 @@
 #include "tree/presets.h"
 
 namespace niwa {
+namespace cli {
+void AddMeshCommands(CLI::App& app, CommandList& commands);  // mesh_commands.cpp
+}  // namespace cli
 namespace {
 
 struct BadInput {
@@ -601,6 +605,8 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   RenderStatsOptions render_options;
   AddGrowOptions(render_stats, &render_grow_options);
   AddRenderStatsOptions(render_stats, &render_options);
+  cli::CommandList commands;
+  cli::AddMeshCommands(app, commands);
 
   try {
     // Name unknown commands ourselves: CLI11 would only say that a subcommand is required.
@@ -643,6 +649,9 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       return RunRenderStats(render_grow_options, render_options, render_stats, out);
     }
     if (*sway) return RunSwayCommand(sway_grow_options, sway_options, sway, out);
+    for (const cli::Command& command : commands) {
+      if (*command.app) return command.run(out);
+    }
   } catch (const CLI::CallForHelp&) {
     out << app.help();  // CLI11 delegates to the innermost selected subcommand
     return 0;
@@ -657,6 +666,9 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     err << "niwa: error: " << message << " (see --help)\n";
     return 2;
   } catch (const BadInput& e) {
+    err << "niwa: error: " << e.message << "\n";
+    return 2;
+  } catch (const cli::BadInput& e) {
     err << "niwa: error: " << e.message << "\n";
     return 2;
   } catch (const std::exception& e) {
