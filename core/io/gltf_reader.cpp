@@ -270,8 +270,8 @@ Status Reader::View(int accessor, const std::string& what, AccessorView* view) c
   return Status::Ok();
 }
 
-// Component c of element i as a double; normalized integers map to [0, 1] or [-1, 1] (glTF 2.0
-// spec 3.11, "Animation" table of normalized values).
+// Component c of element i as a double; normalized integers map to [0, 1] or [-1, 1] as the glTF
+// 2.0 spec decodes them (f = c / 255 for UNSIGNED_BYTE, max(c / 127, -1) for BYTE, and so on).
 double Component(const AccessorView& v, std::size_t i, int c) {
   const unsigned char* p = v.data + i * v.stride;
   switch (v.component_type) {
@@ -459,8 +459,8 @@ Status Reader::AddMesh(int mesh_index, const glm::dmat4& world) {
   const glm::dmat3 linear(world);
   const double det = glm::determinant(linear);
   const bool mirrored = det < 0.0;
-  // Normals by the inverse transpose of the linear part (zero scale: normals left as transformed
-  // by the cofactor-free identity, then re-normalized where possible).
+  // Normals by the inverse transpose of the linear part; a singular one (a zero scale) has no
+  // inverse, so its normals go through the linear part itself and are re-normalized where possible.
   const glm::dmat3 normal_matrix = det != 0.0 ? glm::transpose(glm::inverse(linear)) : linear;
   for (std::size_t pi = 0; pi < m.primitives.size(); ++pi) {
     const tinygltf::Primitive& p = m.primitives[pi];
@@ -508,7 +508,8 @@ Status Reader::AddMesh(int mesh_index, const glm::dmat4& world) {
     }
     if (mesh_.triangle_count() + tris.size() / 3 > kMaxMeshTriangles) {
       return Error("more than " + std::to_string(kMaxMeshTriangles) +
-                   " triangles (4 M); the limit is " + std::to_string(kMaxMeshTriangles));
+                   " triangles in the scene; the limit is " + std::to_string(kMaxMeshTriangles) +
+                   " (4 M)");
     }
     // Transform the vertices (positions by the world matrix, normals by its inverse transpose).
     const uint32_t base = static_cast<uint32_t>(mesh_.positions.size());

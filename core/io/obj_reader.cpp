@@ -166,8 +166,8 @@ Status ObjParser::Line(std::size_t number, std::string_view line, geom::TriMesh*
     for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
       if (mesh->triangle_count() + 1 > kMaxMeshTriangles) {
         return Error(number, "more than " + std::to_string(kMaxMeshTriangles) +
-                                 " triangles (4 M); the limit is " +
-                                 std::to_string(kMaxMeshTriangles));
+                                 " triangles; the limit is " + std::to_string(kMaxMeshTriangles) +
+                                 " (4 M)");
       }
       uint32_t a = corners[0], b = corners[k], c = corners[k + 1];
       if (a == b || b == c || a == c ||
