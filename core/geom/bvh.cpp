@@ -195,7 +195,13 @@ Bvh Bvh::Build(const TriMesh& mesh, const BvhOptions& options_in) {
   bvh.nodes_.emplace_back();
   b.Build(0, 0, tris, 1, bounds, cbounds);
   bvh.order_.resize(tris);
-  for (std::size_t i = 0; i < tris; ++i) bvh.order_[i] = b.prims[i].tri;
+  bvh.corners_.resize(3 * tris);
+  for (std::size_t i = 0; i < tris; ++i) {
+    uint32_t t = b.prims[i].tri;
+    bvh.order_[i] = t;
+    for (std::size_t k = 0; k < 3; ++k)
+      bvh.corners_[3 * i + k] = mesh.positions[mesh.indices[3 * static_cast<std::size_t>(t) + k]];
+  }
   bvh.depth_ = b.max_depth;
   return bvh;
 }
