@@ -4,6 +4,7 @@
 
 #include <glm/vec3.hpp>
 #include <memory>
+#include <utility>
 
 #include "io/gltf_export.h"
 #include "random/pcg32.h"
@@ -168,6 +169,7 @@ std::vector<Workload> MakeWorkloads() {
   for (bool poses : {false, true}) {
     for (int years : {6, 10, 15}) all.push_back(SwayWorkload(years, poses));
   }
+  for (Workload& w : GeomWorkloads()) all.push_back(std::move(w));
   return all;
 }
 

@@ -28,4 +28,7 @@ struct Workload {
 // Every workload, in table order.
 const std::vector<Workload>& Workloads();
 
+// Each study's workloads, in its own <study>_workloads.cpp; Workloads() appends them.
+std::vector<Workload> GeomWorkloads();  // geom_workloads.cpp
+
 }  // namespace niwa

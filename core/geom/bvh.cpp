@@ -5,123 +5,164 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <glm/common.hpp>
+#include <memory>
 
 namespace niwa::geom {
 namespace {
 
 // Beyond this depth the build halves ranges instead of SAH splits, so depth stays <= this + 32 and
-// the queries' fixed stacks (bvh_traversal.h kMaxStack) never overflow.
+// the queries' fixed stacks (query_detail.h kMaxStack) never overflow.
 constexpr int kSahDepthLimit = 100;
+constexpr int kMaxBins = 64;
+
+// One triangle's box and centroid (the box centre), moved as a whole by the partition so every
+// pass over a node's range reads memory in order.
+struct Prim {
+  glm::vec3 lo, hi, c;
+  uint32_t tri;
+};
+
+struct Bin {
+  Bounds3 bounds;  // union of the triangle boxes: min of their lo, max of their hi
+  std::size_t count = 0;
+};
 
 struct Builder {
+  Builder(const BvhOptions& o, std::vector<BvhNode>& n) : options(o), nodes(n) {}
   const BvhOptions& options;
-  std::vector<Bounds3> tri_bounds;
-  std::vector<glm::vec3> centroids;
-  std::vector<uint32_t>& order;
+  std::vector<Prim> prims;
   std::vector<BvhNode>& nodes;
   int max_depth = 0;
+  Bin bins[3][kMaxBins];  // scratch, reused by every node (not on the recursion's stack)
 
   // Pads a node box outward by about 8 float ulps of its largest coordinate, so double-precision
   // query rounding and the Möller–Trumbore edge slack never put a hit outside its leaf's box.
-  static void Pad(Bounds3* b) {
+  static Bounds3 Padded(Bounds3 b) {
     float m = 0.0f;
-    for (int k = 0; k < 3; ++k) m = std::max({m, std::fabs(b->min[k]), std::fabs(b->max[k])});
+    for (int k = 0; k < 3; ++k) m = std::max({m, std::fabs(b.min[k]), std::fabs(b.max[k])});
     float pad = m * 1e-6f + 1e-30f;
-    b->min -= glm::vec3(pad);
-    b->max += glm::vec3(pad);
-  }
-
-  Bounds3 RangeBounds(std::size_t begin, std::size_t end) const {
-    Bounds3 b;
-    for (std::size_t i = begin; i < end; ++i) b.Extend(tri_bounds[order[i]]);
+    b.min -= glm::vec3(pad);
+    b.max += glm::vec3(pad);
     return b;
   }
 
-  // Bin index of a centroid coordinate; the same expression in the sweep and the partition.
+  void RangeBounds(std::size_t begin, std::size_t end, Bounds3* b, Bounds3* cb) const {
+    for (std::size_t i = begin; i < end; ++i) {
+      b->Extend(prims[i].lo);
+      b->Extend(prims[i].hi);
+      cb->Extend(prims[i].c);
+    }
+  }
+
+  // Bin index of a centroid coordinate; the same expression in the binning and the partition.
   static int BinOf(float c, float lo, float scale, int bins) {
     float f = (c - lo) * scale;
     int i = f > 0.0f ? static_cast<int>(f) : 0;  // NaN and negatives go to bin 0
     return std::min(i, bins - 1);
   }
 
-  void Build(uint32_t node_index, std::size_t begin, std::size_t end, int depth) {
+  // bounds/cbounds: the exact union of the range's triangle boxes and of its centroids.
+  void Build(uint32_t node_index, std::size_t begin, std::size_t end, int depth,
+             const Bounds3& bounds, const Bounds3& cbounds) {
     max_depth = std::max(max_depth, depth);
-    Bounds3 bounds = RangeBounds(begin, end);
-    Pad(&bounds);
-    nodes[node_index].bounds = bounds;
+    nodes[node_index].bounds = Padded(bounds);
     const std::size_t count = end - begin;
     if (count <= static_cast<std::size_t>(options.max_leaf_triangles)) {
       nodes[node_index].first = static_cast<uint32_t>(begin);
       nodes[node_index].count = static_cast<uint32_t>(count);
       return;
     }
-    std::size_t mid = begin + count / 2;  // fallback: halve the range in its current order
+    const int nb = options.bins;
+    int best_axis = -1, best_split = 0;
+    Bounds3 left_b, left_cb, right_b, right_cb;
     if (depth < kSahDepthLimit) {
-      Bounds3 cb;
-      for (std::size_t i = begin; i < end; ++i) cb.Extend(centroids[order[i]]);
-      const int bins = options.bins;
-      int best_axis = -1, best_split = 0;
-      double best_cost = 0.0;
-      for (int axis = 0; axis < 3; ++axis) {
-        float lo = cb.min[axis], extent = cb.max[axis] - lo;
-        if (!(extent > 0.0f)) continue;
-        float scale = static_cast<float>(bins) / extent;
-        Bounds3 bin_bounds[64];
-        std::size_t bin_count[64] = {};
-        for (std::size_t i = begin; i < end; ++i) {
-          uint32_t t = order[i];
-          int b = BinOf(centroids[t][axis], lo, scale, bins);
-          bin_bounds[b].Extend(tri_bounds[t]);
-          ++bin_count[b];
+      float lo[3] = {0, 0, 0}, scale[3] = {0, 0, 0};
+      bool axis_ok[3] = {false, false, false};
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = cbounds.min[a];
+        float extent = cbounds.max[a] - lo[a];
+        axis_ok[a] = extent > 0.0f;
+        scale[a] = axis_ok[a] ? static_cast<float>(nb) / extent : 0.0f;
+        for (int b = 0; b < nb; ++b) bins[a][b] = Bin();
+      }
+      for (std::size_t i = begin; i < end; ++i) {  // one pass bins all three axes
+        const Prim& p = prims[i];
+        for (int a = 0; a < 3; ++a) {
+          if (!axis_ok[a]) continue;
+          Bin& bin = bins[a][BinOf(p.c[a], lo[a], scale[a], nb)];
+          bin.bounds.min = glm::min(bin.bounds.min, p.lo);
+          bin.bounds.max = glm::max(bin.bounds.max, p.hi);
+          ++bin.count;
         }
-        double right_area[64];
-        std::size_t right_count[64];
+      }
+      double best_cost = 0.0;
+      for (int a = 0; a < 3; ++a) {
+        if (!axis_ok[a]) continue;
+        double right_area[kMaxBins];
+        std::size_t right_count[kMaxBins];
         Bounds3 acc;
         std::size_t n = 0;
-        for (int b = bins - 1; b > 0; --b) {  // right side of split b: bins b .. bins-1
-          acc.Extend(bin_bounds[b]);
-          n += bin_count[b];
+        for (int b = nb - 1; b > 0; --b) {  // right of split b: bins b .. nb-1
+          acc.Extend(bins[a][b].bounds);
+          n += bins[a][b].count;
           right_area[b] = acc.SurfaceArea();
           right_count[b] = n;
         }
         acc = Bounds3();
         n = 0;
-        for (int b = 1; b < bins; ++b) {  // left side of split b: bins 0 .. b-1
-          acc.Extend(bin_bounds[b - 1]);
-          n += bin_count[b - 1];
+        for (int b = 1; b < nb; ++b) {  // left of split b: bins 0 .. b-1
+          acc.Extend(bins[a][b - 1].bounds);
+          n += bins[a][b - 1].count;
           if (n == 0 || right_count[b] == 0) continue;
           double cost = static_cast<double>(n) * acc.SurfaceArea() +
                         static_cast<double>(right_count[b]) * right_area[b];
           if (best_axis < 0 || cost < best_cost) {  // ties: lowest axis, then lowest bin
-            best_axis = axis;
+            best_axis = a;
             best_split = b;
             best_cost = cost;
           }
         }
       }
       if (best_axis >= 0) {
-        float lo = cb.min[best_axis];
-        float scale = static_cast<float>(bins) / (cb.max[best_axis] - lo);
-        // Hand-written partition (std::partition's order differs between libstdc++ and libc++).
-        std::size_t i = begin, j = end;
-        while (i < j) {
-          if (BinOf(centroids[order[i]][best_axis], lo, scale, bins) < best_split) {
-            ++i;
-          } else {
-            --j;
-            std::swap(order[i], order[j]);
-          }
-        }
-        mid = i;
+        for (int b = 0; b < nb; ++b)
+          (b < best_split ? left_b : right_b).Extend(bins[best_axis][b].bounds);
       }
+    }
+    std::size_t mid;
+    if (best_axis >= 0) {
+      float lo = cbounds.min[best_axis];
+      float scale = static_cast<float>(nb) / (cbounds.max[best_axis] - lo);
+      // Hand-written partition (std::partition's order differs between libstdc++ and libc++);
+      // it also gathers each side's centroid bounds for the children's bins.
+      std::size_t i = begin, j = end;
+      while (i < j) {
+        if (BinOf(prims[i].c[best_axis], lo, scale, nb) < best_split) {
+          left_cb.min = glm::min(left_cb.min, prims[i].c);
+          left_cb.max = glm::max(left_cb.max, prims[i].c);
+          ++i;
+        } else {
+          --j;
+          std::swap(prims[i], prims[j]);
+        }
+      }
+      mid = i;
+      for (std::size_t k = mid; k < end; ++k) {
+        right_cb.min = glm::min(right_cb.min, prims[k].c);
+        right_cb.max = glm::max(right_cb.max, prims[k].c);
+      }
+    } else {  // no SAH split (equal centroids, or too deep): halve the range in its order
+      mid = begin + count / 2;
+      RangeBounds(begin, mid, &left_b, &left_cb);
+      RangeBounds(mid, end, &right_b, &right_cb);
     }
     uint32_t left = static_cast<uint32_t>(nodes.size());
     nodes.emplace_back();
     nodes.emplace_back();
     nodes[node_index].first = left;
     nodes[node_index].count = 0;
-    Build(left, begin, mid, depth + 1);
-    Build(left + 1, mid, end, depth + 1);
+    Build(left, begin, mid, depth + 1, left_b, left_cb);
+    Build(left + 1, mid, end, depth + 1, right_b, right_cb);
   }
 };
 
@@ -129,26 +170,38 @@ struct Builder {
 
 Bvh Bvh::Build(const TriMesh& mesh, const BvhOptions& options_in) {
   BvhOptions options = options_in;
-  options.bins = std::clamp(options.bins, 2, 64);
+  options.bins = std::clamp(options.bins, 2, kMaxBins);
   options.max_leaf_triangles = std::clamp(options.max_leaf_triangles, 1, 16);
   Bvh bvh;
   const std::size_t tris = mesh.triangle_count();
   if (tris == 0) return bvh;
-  Builder b{options, {}, {}, bvh.order_, bvh.nodes_};
-  b.tri_bounds.resize(tris);
-  b.centroids.resize(tris);
-  bvh.order_.resize(tris);
+  auto builder = std::make_unique<Builder>(options, bvh.nodes_);
+  Builder& b = *builder;
+  b.prims.resize(tris);
+  Bounds3 bounds, cbounds;
   for (std::size_t t = 0; t < tris; ++t) {
     Bounds3 tb;
     for (int k = 0; k < 3; ++k)
       tb.Extend(mesh.positions[mesh.indices[3 * t + static_cast<std::size_t>(k)]]);
-    b.tri_bounds[t] = tb;
-    b.centroids[t] = (tb.min + tb.max) * 0.5f;
-    bvh.order_[t] = static_cast<uint32_t>(t);
+    Prim& p = b.prims[t];
+    p.lo = tb.min;
+    p.hi = tb.max;
+    p.c = (tb.min + tb.max) * 0.5f;
+    p.tri = static_cast<uint32_t>(t);
+    bounds.Extend(tb);
+    cbounds.Extend(p.c);
   }
   bvh.nodes_.reserve(2 * tris / static_cast<std::size_t>(options.max_leaf_triangles) + 1);
   bvh.nodes_.emplace_back();
-  b.Build(0, 0, tris, 1);
+  b.Build(0, 0, tris, 1, bounds, cbounds);
+  bvh.order_.resize(tris);
+  bvh.corners_.resize(3 * tris);
+  for (std::size_t i = 0; i < tris; ++i) {
+    uint32_t t = b.prims[i].tri;
+    bvh.order_[i] = t;
+    for (std::size_t k = 0; k < 3; ++k)
+      bvh.corners_[3 * i + k] = mesh.positions[mesh.indices[3 * static_cast<std::size_t>(t) + k]];
+  }
   bvh.depth_ = b.max_depth;
   return bvh;
 }

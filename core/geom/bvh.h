@@ -41,9 +41,10 @@ struct BvhNode {
 class Bvh {
  public:
   Bvh() = default;
-  // Builds over every triangle of `mesh` (which should pass ValidateMesh; a mesh with no
-  // triangles gives an empty tree that every query misses). Degenerate triangles are kept (they
-  // never win a query the linear twins would not also give them).
+  // Builds over every triangle of `mesh` (which should pass ValidateMesh; queries must pass the
+  // same, unchanged mesh; a mesh with no triangles gives an empty tree that every query misses).
+  // Degenerate triangles are kept (they never win a query the linear twins would not also give
+  // them).
   static Bvh Build(const TriMesh& mesh, const BvhOptions& options = {});
 
   int node_count() const { return static_cast<int>(nodes_.size()); }
@@ -55,11 +56,15 @@ class Bvh {
   const std::vector<BvhNode>& nodes() const { return nodes_; }
   // Triangle indices in leaf order.
   const std::vector<uint32_t>& order() const { return order_; }
+  // The corners of order()[i] at 3i, 3i+1, 3i+2: a copy of the mesh's positions in leaf order, so a
+  // leaf's triangles are read from one run of memory (36 bytes per triangle).
+  const std::vector<glm::vec3>& corners() const { return corners_; }
 
  private:
   friend struct BvhTestAccess;  // tests break a node on purpose to see the oracle tests fail
   std::vector<BvhNode> nodes_;
   std::vector<uint32_t> order_;
+  std::vector<glm::vec3> corners_;
   int depth_ = 0;
 };
 

@@ -10,10 +10,12 @@ ClosestHit ClosestPoint(const TriMesh& mesh, const Bvh& bvh, glm::vec3 p, float 
                         QueryStats* stats) {
   if (stats) ++stats->queries;
   detail::ClosestState state(detail::MaxDistanceSquared(max_distance));
-  if (state.best_d2 < 0.0 || bvh.empty()) return {};
+  if (state.best_d2 < 0.0 || bvh.empty() || bvh.triangle_count() != mesh.triangle_count())
+    return {};
   const DVec3 pd = ToD(p);
   const std::vector<BvhNode>& nodes = bvh.nodes();
   const std::vector<uint32_t>& order = bvh.order();
+  const std::vector<glm::vec3>& corners = bvh.corners();
   uint64_t visited = 1, tested = 0;
   struct Entry {
     uint32_t node;
@@ -28,7 +30,8 @@ ClosestHit ClosestPoint(const TriMesh& mesh, const Bvh& bvh, glm::vec3 p, float 
     if (e.d2 > state.best_d2) continue;  // the best got closer since this was pushed
     const BvhNode& n = nodes[e.node];
     if (n.is_leaf()) {
-      for (uint32_t i = n.first; i < n.first + n.count; ++i) state.Test(mesh, pd, order[i]);
+      for (uint32_t i = n.first; i < n.first + n.count; ++i)
+        state.Test(&corners[3 * static_cast<std::size_t>(i)], pd, order[i]);
       tested += n.count;
       continue;
     }

@@ -12,7 +12,7 @@ ClosestHit ClosestPointLinear(const TriMesh& mesh, glm::vec3 p, float max_distan
   if (state.best_d2 < 0.0) return {};
   const DVec3 pd = ToD(p);
   const uint32_t tris = static_cast<uint32_t>(mesh.triangle_count());
-  for (uint32_t t = 0; t < tris; ++t) state.Test(mesh, pd, t);
+  for (uint32_t t = 0; t < tris; ++t) state.Test(detail::MeshCorners(mesh, t).v, pd, t);
   if (stats) stats->triangles_tested += tris;
   return state.Result();
 }
@@ -25,7 +25,7 @@ RayHit FirstHitLinear(const TriMesh& mesh, glm::vec3 origin, glm::vec3 dir, floa
   if (!ray.valid) return {};
   detail::RayState state(static_cast<double>(max_distance));
   const uint32_t tris = static_cast<uint32_t>(mesh.triangle_count());
-  for (uint32_t t = 0; t < tris; ++t) state.Test(mesh, ray, t);
+  for (uint32_t t = 0; t < tris; ++t) state.Test(detail::MeshCorners(mesh, t).v, ray, t);
   if (stats) stats->triangles_tested += tris;
   return state.Result(mesh, ray);
 }
@@ -37,7 +37,7 @@ bool SegmentHitsLinear(const TriMesh& mesh, glm::vec3 a, glm::vec3 b, QueryStats
   const uint32_t tris = static_cast<uint32_t>(mesh.triangle_count());
   for (uint32_t t = 0; t < tris; ++t) {
     if (stats) ++stats->triangles_tested;
-    if (detail::SegmentTriangle(mesh, seg, t)) return true;
+    if (detail::SegmentTriangle(detail::MeshCorners(mesh, t).v, seg)) return true;
   }
   return false;
 }

@@ -26,6 +26,18 @@ inline void Corners(const TriMesh& mesh, uint32_t t, DVec3* a, DVec3* b, DVec3* 
   *c = ToD(mesh.positions[mesh.indices[i + 2]]);
 }
 
+// Triangle t's corners from the mesh, as three consecutive floats triples (the layout of
+// Bvh::corners()), so both paths feed the same floats to the same routine.
+struct MeshCorners {
+  glm::vec3 v[3];
+  MeshCorners(const TriMesh& mesh, uint32_t t) {
+    const std::size_t i = 3 * static_cast<std::size_t>(t);
+    v[0] = mesh.positions[mesh.indices[i]];
+    v[1] = mesh.positions[mesh.indices[i + 1]];
+    v[2] = mesh.positions[mesh.indices[i + 2]];
+  }
+};
+
 inline glm::vec3 ToF(const DVec3& v) {
   return glm::vec3(static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z));
 }
@@ -45,10 +57,9 @@ struct ClosestState {
   TrianglePoint best_point;
   bool found = false;
 
-  void Test(const TriMesh& mesh, const DVec3& p, uint32_t t) {
-    DVec3 a, b, c;
-    Corners(mesh, t, &a, &b, &c);
-    TrianglePoint q = ClosestPointOnTriangle(p, a, b, c);
+  // abc: the triangle's three corners, consecutive.
+  void Test(const glm::vec3* abc, const DVec3& p, uint32_t t) {
+    TrianglePoint q = ClosestPointOnTriangle(p, ToD(abc[0]), ToD(abc[1]), ToD(abc[2]));
     if (q.distance_squared < best_d2 || (q.distance_squared == best_d2 && t < best_t)) {
       best_d2 = q.distance_squared;
       best_t = t;
@@ -102,11 +113,11 @@ struct RayState {
   double best_u = 0, best_v = 0;
   bool hit = false;
 
-  void Test(const TriMesh& mesh, const PreparedRay& ray, uint32_t tri) {
-    DVec3 a, b, c;
-    Corners(mesh, tri, &a, &b, &c);
+  void Test(const glm::vec3* abc, const PreparedRay& ray, uint32_t tri) {
     double t, u, v;
-    if (!RayTriangle(ray.origin, ray.dir, a, b, c, 0.0, best_t, &t, &u, &v)) return;
+    if (!RayTriangle(ray.origin, ray.dir, ToD(abc[0]), ToD(abc[1]), ToD(abc[2]), 0.0, best_t, &t,
+                     &u, &v))
+      return;
     if (t < best_t || tri < best_tri) {  // t <= best_t here: ties go to the lower index
       best_t = t;
       best_tri = tri;
@@ -134,11 +145,10 @@ struct RayState {
 };
 
 // Does the segment/ray origin + t dir, t in [0, 1] (unnormalized dir), touch triangle tri?
-inline bool SegmentTriangle(const TriMesh& mesh, const PreparedRay& seg, uint32_t tri) {
-  DVec3 a, b, c;
-  Corners(mesh, tri, &a, &b, &c);
+inline bool SegmentTriangle(const glm::vec3* abc, const PreparedRay& seg) {
   double t, u, v;
-  return RayTriangle(seg.origin, seg.dir, a, b, c, 0.0, 1.0, &t, &u, &v);
+  return RayTriangle(seg.origin, seg.dir, ToD(abc[0]), ToD(abc[1]), ToD(abc[2]), 0.0, 1.0, &t, &u,
+                     &v);
 }
 
 // Squared distance from p to box b (0 inside), in double.

@@ -9,12 +9,14 @@ namespace niwa::geom {
 RayHit FirstHit(const TriMesh& mesh, const Bvh& bvh, glm::vec3 origin, glm::vec3 dir,
                 float max_distance, QueryStats* stats) {
   if (stats) ++stats->queries;
-  if (!(max_distance >= 0.0f) || bvh.empty()) return {};
+  if (!(max_distance >= 0.0f) || bvh.empty() || bvh.triangle_count() != mesh.triangle_count())
+    return {};
   detail::PreparedRay ray = detail::PrepareRay(origin, dir, /*normalize=*/true);
   if (!ray.valid) return {};
   detail::RayState state(static_cast<double>(max_distance));
   const std::vector<BvhNode>& nodes = bvh.nodes();
   const std::vector<uint32_t>& order = bvh.order();
+  const std::vector<glm::vec3>& corners = bvh.corners();
   uint64_t visited = 1, tested = 0;
   struct Entry {
     uint32_t node;
@@ -29,7 +31,8 @@ RayHit FirstHit(const TriMesh& mesh, const Bvh& bvh, glm::vec3 origin, glm::vec3
     if (e.t_near > state.best_t) continue;
     const BvhNode& n = nodes[e.node];
     if (n.is_leaf()) {
-      for (uint32_t i = n.first; i < n.first + n.count; ++i) state.Test(mesh, ray, order[i]);
+      for (uint32_t i = n.first; i < n.first + n.count; ++i)
+        state.Test(&corners[3 * static_cast<std::size_t>(i)], ray, order[i]);
       tested += n.count;
       continue;
     }
@@ -61,11 +64,11 @@ RayHit FirstHit(const TriMesh& mesh, const Bvh& bvh, glm::vec3 origin, glm::vec3
 
 bool SegmentHits(const TriMesh& mesh, const Bvh& bvh, glm::vec3 a, glm::vec3 b, QueryStats* stats) {
   if (stats) ++stats->queries;
-  if (bvh.empty()) return false;
+  if (bvh.empty() || bvh.triangle_count() != mesh.triangle_count()) return false;
   detail::PreparedRay seg = detail::PrepareRay(a, b - a, /*normalize=*/false);
   if (!seg.valid) return false;
   const std::vector<BvhNode>& nodes = bvh.nodes();
-  const std::vector<uint32_t>& order = bvh.order();
+  const std::vector<glm::vec3>& corners = bvh.corners();
   uint64_t visited = 1, tested = 0;
   uint32_t stack[detail::kMaxStack];
   int top = 0;
@@ -77,7 +80,7 @@ bool SegmentHits(const TriMesh& mesh, const Bvh& bvh, glm::vec3 a, glm::vec3 b, 
     if (n.is_leaf()) {
       for (uint32_t i = n.first; i < n.first + n.count && !hit; ++i) {
         ++tested;
-        hit = detail::SegmentTriangle(mesh, seg, order[i]);
+        hit = detail::SegmentTriangle(&corners[3 * static_cast<std::size_t>(i)], seg);
       }
       continue;
     }

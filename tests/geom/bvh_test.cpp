@@ -1,0 +1,150 @@
+// Bvh: structure (every triangle in exactly one leaf, boxes nest and contain their triangles),
+// determinism, options, and that the oracle comparison catches a wrongly skipped subtree.
+#include "geom/bvh.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+#include "geom/mesh_metrics.h"
+#include "geom/primitives.h"
+#include "geom_oracle.h"
+#include "support/test_meshes.h"
+
+namespace niwa::geom {
+
+// Reaches into a Bvh to break it on purpose.
+struct BvhTestAccess {
+  static std::vector<BvhNode>& nodes(Bvh& bvh) { return bvh.nodes_; }
+};
+
+namespace {
+
+bool BoxContains(const Bounds3& outer, const Bounds3& inner) {
+  return outer.min.x <= inner.min.x && outer.min.y <= inner.min.y && outer.min.z <= inner.min.z &&
+         outer.max.x >= inner.max.x && outer.max.y >= inner.max.y && outer.max.z >= inner.max.z;
+}
+
+// Walks the tree: checks nesting, leaf sizes and triangle containment; returns the depth.
+int CheckSubtree(const TriMesh& mesh, const Bvh& bvh, uint32_t node, std::vector<int>* seen,
+                 int max_leaf) {
+  const BvhNode& n = bvh.nodes()[node];
+  if (n.is_leaf()) {
+    EXPECT_LE(static_cast<int>(n.count), max_leaf);
+    for (uint32_t i = n.first; i < n.first + n.count; ++i) {
+      uint32_t t = bvh.order()[i];
+      ++(*seen)[t];
+      for (int k = 0; k < 3; ++k)
+        EXPECT_TRUE(
+            n.bounds.Contains(mesh.positions[mesh.indices[3 * t + static_cast<uint32_t>(k)]]))
+            << "triangle " << t << " outside its leaf " << node;
+    }
+    return 1;
+  }
+  EXPECT_LT(n.first + 1, static_cast<uint32_t>(bvh.node_count()));
+  EXPECT_TRUE(BoxContains(n.bounds, bvh.nodes()[n.first].bounds));
+  EXPECT_TRUE(BoxContains(n.bounds, bvh.nodes()[n.first + 1].bounds));
+  return 1 + std::max(CheckSubtree(mesh, bvh, n.first, seen, max_leaf),
+                      CheckSubtree(mesh, bvh, n.first + 1, seen, max_leaf));
+}
+
+void CheckStructure(const TriMesh& mesh, const BvhOptions& options = {}) {
+  Bvh bvh = Bvh::Build(mesh, options);
+  std::vector<int> seen(mesh.triangle_count(), 0);
+  int depth = CheckSubtree(mesh, bvh, 0, &seen, options.max_leaf_triangles);
+  EXPECT_EQ(depth, bvh.depth());
+  for (std::size_t t = 0; t < seen.size(); ++t) ASSERT_EQ(seen[t], 1) << "triangle " << t;
+  EXPECT_EQ(bvh.triangle_count(), mesh.triangle_count());
+  EXPECT_EQ(bvh.node_count() % 2, 1);  // root + pairs
+  // Leaves of at most L triangles: at least N / L leaves, so at least 2 N / L - 1 nodes.
+  const int leaves = static_cast<int>(mesh.triangle_count()) / options.max_leaf_triangles;
+  EXPECT_GE(bvh.node_count(), 2 * leaves - 1);
+}
+
+TEST(Bvh, StructureOnEveryTestMesh) {
+  CheckStructure(MakeIcosphere(1.0f, 3));
+  CheckStructure(Subdivide(MakeBox({2, 1, 3}), 3));
+  CheckStructure(test::RandomSoup(3000, 7));
+  CheckStructure(test::ThinDegenerateMesh(3));
+  CheckStructure(MakePlane(4, 4, 30, 30), BvhOptions{8, 1});
+  CheckStructure(MakePlane(4, 4, 30, 30), BvhOptions{2, 16});
+}
+
+TEST(Bvh, EmptyAndSingleTriangle) {
+  TriMesh empty;
+  Bvh e = Bvh::Build(empty);
+  EXPECT_TRUE(e.empty());
+  EXPECT_EQ(e.node_count(), 0);
+  EXPECT_EQ(e.depth(), 0);
+  EXPECT_FALSE(ClosestPoint(empty, e, glm::vec3(0), 1e9f).found);
+  EXPECT_FALSE(SegmentHits(empty, e, glm::vec3(-1), glm::vec3(1)));
+  TriMesh one;
+  one.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  one.indices = {0, 1, 2};
+  Bvh b = Bvh::Build(one);
+  EXPECT_EQ(b.node_count(), 1);
+  EXPECT_EQ(b.depth(), 1);
+}
+
+TEST(Bvh, AllCentroidsEqualStillGivesSmallLeaves) {
+  // 200 copies of one triangle: no SAH split exists, so the build halves the range.
+  TriMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  for (int i = 0; i < 200; ++i) m.indices.insert(m.indices.end(), {0u, 1u, 2u});
+  CheckStructure(m);
+  Bvh bvh = Bvh::Build(m);
+  ClosestHit h = ClosestPoint(m, bvh, glm::vec3(0.2f, 0.2f, 1.0f), 5.0f);
+  ASSERT_TRUE(h.found);
+  EXPECT_EQ(h.triangle, 0u);  // all tie: the lowest index wins
+  RayHit r = FirstHit(m, bvh, glm::vec3(0.2f, 0.2f, 1.0f), glm::vec3(0, 0, -1), 5.0f);
+  ASSERT_TRUE(r.hit);
+  EXPECT_EQ(r.triangle, 0u);
+}
+
+TEST(Bvh, SameMeshSameTreeBitForBit) {
+  TriMesh m = test::RandomSoup(5000, 11);
+  Bvh a = Bvh::Build(m), b = Bvh::Build(m);
+  ASSERT_EQ(a.node_count(), b.node_count());
+  EXPECT_EQ(a.depth(), b.depth());
+  EXPECT_EQ(a.order(), b.order());
+  EXPECT_EQ(0, std::memcmp(a.nodes().data(), b.nodes().data(), a.nodes().size() * sizeof(BvhNode)));
+}
+
+TEST(Bvh, OptionsAreClamped) {
+  TriMesh m = test::RandomSoup(500, 2);
+  Bvh wild = Bvh::Build(m, BvhOptions{-5, 1000});
+  Bvh clamped = Bvh::Build(m, BvhOptions{2, 16});
+  EXPECT_EQ(wild.order(), clamped.order());
+  EXPECT_EQ(wild.node_count(), clamped.node_count());
+}
+
+// The oracle comparison must be able to fail: move one subtree's box to a point far away (so the
+// traversal skips that subtree) and the BVH answers must now differ from the linear ones.
+TEST(Bvh, OracleCatchesASkippedSubtree) {
+  TriMesh m = MakeIcosphere(1.0f, 3);
+  Bvh bvh = Bvh::Build(m);
+  test::OracleCounts ok = test::CompareWithLinear(m, bvh, 2000, 5);
+  EXPECT_EQ(ok.closest_mismatch + ok.ray_mismatch + ok.segment_mismatch, 0) << ok.first_mismatch;
+  // Node 2 is the root's right child: half the sphere. Its box moved far away, the traversal
+  // never enters it.
+  std::vector<BvhNode>& nodes = BvhTestAccess::nodes(bvh);
+  ASSERT_GE(nodes.size(), 3u);
+  nodes[2].bounds = Bounds3{glm::vec3(50.0f), glm::vec3(50.0f)};
+  test::OracleCounts bad = test::CompareWithLinear(m, bvh, 2000, 5);
+  EXPECT_GT(bad.closest_mismatch, 0);
+  EXPECT_GT(bad.ray_mismatch, 0);
+  EXPECT_GT(bad.segment_mismatch, 0);
+}
+
+TEST(Bvh, DepthAndNodeCountStaySmallOnALargeWall) {
+  TriMesh wall = Subdivide(MakePlane(2.0f, 1.0f, 2, 1), 6);  // 16384 triangles
+  Bvh bvh = Bvh::Build(wall);
+  std::printf("wall 16384 tris: %d nodes, depth %d\n", bvh.node_count(), bvh.depth());
+  EXPECT_LE(bvh.depth(), 40);
+  EXPECT_LE(bvh.node_count(), static_cast<int>(wall.triangle_count()));
+}
+
+}  // namespace
+}  // namespace niwa::geom

@@ -1,0 +1,109 @@
+// FirstHit and SegmentHits: hand-computed hits, watertightness through shared edges and vertices
+// of closed meshes, and the BVH against the linear twins on thousands of seeded queries.
+#include "geom/ray_cast.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "geom/linear_queries.h"
+#include "geom/primitives.h"
+#include "geom_oracle.h"
+#include "support/test_meshes.h"
+
+namespace niwa::geom {
+namespace {
+
+TEST(FirstHit, HandComputedBoxHit) {
+  TriMesh box = MakeBox({2.0f, 2.0f, 2.0f});  // faces at ±1
+  Bvh bvh = Bvh::Build(box);
+  // From (0.25, 0.5, 5) straight down -z (dir not unit: it is normalized): hits z = +1 at 4.
+  RayHit h = FirstHit(box, bvh, {0.25f, 0.5f, 5.0f}, {0.0f, 0.0f, -3.0f}, 100.0f);
+  ASSERT_TRUE(h.hit);
+  EXPECT_FLOAT_EQ(h.distance, 4.0f);
+  EXPECT_FLOAT_EQ(h.point.z, 1.0f);
+  EXPECT_FLOAT_EQ(h.normal.z, 1.0f);  // the +z face, outward
+  EXPECT_EQ(h.triangle / 2, 4u);      // face 4 of MakeBox is +z
+  EXPECT_NEAR(h.barycentric.x + h.barycentric.y + h.barycentric.z, 1.0f, 1e-6f);
+  // Max distance is inclusive; shorter misses; zero or NaN direction misses.
+  EXPECT_TRUE(FirstHit(box, bvh, {0.25f, 0.5f, 5.0f}, {0, 0, -1}, 4.0f).hit);
+  EXPECT_FALSE(FirstHit(box, bvh, {0.25f, 0.5f, 5.0f}, {0, 0, -1}, 3.99f).hit);
+  EXPECT_FALSE(FirstHit(box, bvh, {0.25f, 0.5f, 5.0f}, {0, 0, 0}, 10.0f).hit);
+  EXPECT_FALSE(FirstHit(box, bvh, {0.25f, 0.5f, 5.0f}, {std::nanf(""), 0, 0}, 10.0f).hit);
+  EXPECT_FALSE(FirstHit(box, bvh, {0.25f, 0.5f, 5.0f}, {0, 0, -1}, -1.0f).hit);
+  // From inside: the back faces count (no culling).
+  RayHit inside = FirstHit(box, bvh, {0, 0, 0}, {1, 0, 0}, 10.0f);
+  ASSERT_TRUE(inside.hit);
+  EXPECT_FLOAT_EQ(inside.distance, 1.0f);
+  // Pointing away: nothing.
+  EXPECT_FALSE(FirstHit(box, bvh, {0, 0, 5}, {0, 0, 1}, 100.0f).hit);
+}
+
+TEST(SegmentHits, HandComputedCases) {
+  TriMesh box = MakeBox({2.0f, 2.0f, 2.0f});
+  Bvh bvh = Bvh::Build(box);
+  EXPECT_TRUE(SegmentHits(box, bvh, {0, 0, 0}, {0, 0, 3}));                  // inside → out
+  EXPECT_FALSE(SegmentHits(box, bvh, {0, 0, 0}, {0, 0, 0.9f}));              // stays inside
+  EXPECT_FALSE(SegmentHits(box, bvh, {0, 0, 1.5f}, {0, 0, 3}));              // stays outside
+  EXPECT_TRUE(SegmentHits(box, bvh, {-3, 0.2f, 0.1f}, {3, 0.2f, 0.1f}));     // through both sides
+  EXPECT_TRUE(SegmentHits(box, bvh, {0, 0, 3}, {0, 0, 1}));                  // ends on the face
+  EXPECT_FALSE(SegmentHits(box, bvh, {0, 0, 3}, {0, 0, 3}));                 // a point
+  EXPECT_FALSE(SegmentHits(box, bvh, {1.5f, 1.5f, 1.5f}, {3, 1.5f, 1.5f}));  // passes by
+}
+
+// Watertight: on a closed mesh every segment from inside to outside crosses the surface, even
+// when it passes exactly through a shared edge (box quads' diagonals, face borders) or a vertex.
+void ExpectWatertight(const TriMesh& mesh, const glm::vec3& inside, float out_scale) {
+  Bvh bvh = Bvh::Build(mesh);
+  int missed = 0, tried = 0;
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    glm::vec3 a = mesh.positions[mesh.indices[3 * t]], b = mesh.positions[mesh.indices[3 * t + 1]];
+    for (const glm::vec3& target : {a, (a + b) * 0.5f, a * 0.75f + b * 0.25f}) {
+      glm::vec3 far = inside + (target - inside) * out_scale;
+      ++tried;
+      bool bvh_hit = SegmentHits(mesh, bvh, inside, far);
+      bool linear_hit = SegmentHitsLinear(mesh, inside, far);
+      RayHit ray = FirstHit(mesh, bvh, inside, target - inside, 1e6f);
+      if (!bvh_hit || !linear_hit || !ray.hit) ++missed;
+    }
+  }
+  EXPECT_EQ(missed, 0) << "of " << tried << " segments through edges and vertices";
+}
+
+TEST(SegmentHits, WatertightThroughSharedEdgesAndVertices) {
+  ExpectWatertight(MakeBox({2, 2, 2}), glm::vec3(0.1f, 0.05f, -0.02f), 3.0f);
+  ExpectWatertight(Subdivide(MakeBox({2, 1, 3}), 2), glm::vec3(0), 2.0f);
+  ExpectWatertight(MakeIcosphere(1.0f, 2), glm::vec3(0), 2.0f);
+  ExpectWatertight(MakeCylinder(0.5f, 2.0f, 16, true), glm::vec3(0.0f, 1.0f, 0.0f), 3.0f);
+}
+
+TEST(RayCast, BvhEqualsLinearOnThousandsOfQueries) {
+  uint64_t seed = 200;
+  for (const test::OracleCase& c : test::OracleMeshes()) {
+    Bvh bvh = Bvh::Build(c.mesh);
+    test::OracleCounts counts = test::CompareWithLinear(c.mesh, bvh, 3000, seed++);
+    SCOPED_TRACE(c.name);
+    EXPECT_EQ(counts.ray_mismatch, 0) << counts.first_mismatch;
+    EXPECT_EQ(counts.segment_mismatch, 0) << counts.first_mismatch;
+    EXPECT_GT(counts.ray_hits, 300);  // both hits and misses were compared
+    EXPECT_LT(counts.ray_hits, 3000);
+    EXPECT_GT(counts.segment_hits, 300);
+    EXPECT_LT(counts.segment_hits, 3000);
+  }
+}
+
+TEST(RayCast, StatsCountQueries) {
+  TriMesh m = MakeIcosphere(1.0f, 4);
+  Bvh bvh = Bvh::Build(m);
+  QueryStats s;
+  (void)FirstHit(m, bvh, {0, 0, 5}, {0, 0, -1}, 10.0f, &s);
+  (void)SegmentHits(m, bvh, {0, 0, 5}, {0, 0, 0}, &s);
+  EXPECT_EQ(s.queries, 2u);
+  EXPECT_GT(s.nodes_visited, 2u);
+  EXPECT_GT(s.triangles_tested, 0u);
+  EXPECT_LT(s.triangles_tested, 100u);  // of 5120
+}
+
+}  // namespace
+}  // namespace niwa::geom
