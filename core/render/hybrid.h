@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "params/param_table.h"
+#include "tree/tree_params.h"
 #include "tree/mesh.h"
 #include "tree/tree.h"
 
