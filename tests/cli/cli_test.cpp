@@ -6,7 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "cli_runner.h"
+#include "support/cli_runner.h"
+#include "support/expect_error.h"
 
 namespace niwa {
 namespace {
@@ -18,14 +19,6 @@ std::string TempPath(const std::string& name) {
 }
 
 bool Exists(const std::string& path) { return static_cast<bool>(std::ifstream(path)); }
-
-void ExpectOneLineError(const Result& r, const std::string& must_contain) {
-  EXPECT_EQ(r.code, 2);
-  EXPECT_TRUE(r.out.empty()) << r.out;
-  ASSERT_FALSE(r.err.empty());
-  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;  // exactly one line
-  EXPECT_NE(r.err.find(must_contain), std::string::npos) << r.err;
-}
 
 TEST(Cli, PresetsListsEveryPreset) {
   Result r = RunNiwa({"presets"});
@@ -152,7 +145,7 @@ TEST(Cli, SvgOptionsChangeTheDrawing) {
                      "--svg-width: only applies with --out FILE.svg");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--caption", "x"}), "--caption: only applies");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--svg-width", "5", "--out", path}),
-                     "--svg-width: must be in [100, 10000]");
+                     "--svg-width: must be a whole number in [100, 10000]");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--svg-leaves", "maybe", "--out", path}),
                      "--svg-leaves");
 }
