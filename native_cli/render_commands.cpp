@@ -32,6 +32,10 @@ struct RenderStatsOptions {
   RenderOptions render;
 };
 
+// The range of a render row of the tree table ("0.1..1000"): the flags that override a row take
+// its range (checked by CheckRenderOptions).
+std::string RowRange(ParamId id) { return RangeHelp(Spec(id)); }
+
 void AddRenderStatsOptions(CLI::App* cmd, RenderStatsOptions* o) {
   cmd->add_option("--width", o->width,
                   "Viewport width in pixels, " + RangeHelp(kViewport) + " (default 512)");
@@ -51,13 +55,16 @@ void AddRenderStatsOptions(CLI::App* cmd, RenderStatsOptions* o) {
                   "Vertical field of view, degrees, " + RangeHelp(kFov) + " (default 45)");
   cmd->add_option("--mode", o->mode, "hybrid (thesis 4.2) or full (every polygon)");
   cmd->add_option("--threshold", o->render.threshold_px,
-                  "Eq. 4.1 card/line threshold, pixels, 0.1..1000 (overrides the line_threshold "
-                  "parameter, default 4)");
+                  "Eq. 4.1 card/line threshold, pixels, " + RowRange(ParamId::kLineThreshold) +
+                      " (overrides the line_threshold parameter, default " +
+                      FormatNumber(Spec(ParamId::kLineThreshold).default_value) + ")");
   cmd->add_option("--leaf-mode", o->leaf_mode,
                   "cluster (leaf-cluster cards, thesis 5.2) or branch (thesis 4.2.1); overrides "
                   "the leaf_cluster_cards parameter (default 1: cluster)");
   cmd->add_option("--card-planes", o->render.card_planes,
-                  "Card planes per branch, 2..8 (overrides the card_planes parameter, default 2)");
+                  "Card planes per branch, " + RowRange(ParamId::kCardPlanes) +
+                      " (overrides the card_planes parameter, default " +
+                      FormatNumber(Spec(ParamId::kCardPlanes).default_value) + ")");
   cmd->add_option("--line-segments", o->render.line_segments,
                   "Most line segments per line branch, 1..64 (default 1)");
 }
