@@ -12,8 +12,8 @@
 #include <string_view>
 #include <vector>
 
-#include "tree/tree_params.h"
 #include "tree/tree.h"
+#include "tree/tree_params.h"
 
 namespace niwa {
 
