@@ -88,12 +88,6 @@ ordered_json ParamsObject(const ParamSet& params) {
   return ordered_json::parse(ParamsToJson(params, -1));
 }
 
-// The state from the worker's state JSON (core/tree/tree_state: the one resolver); "" or the error.
-std::string StateFromJson(const std::string& text, TreeState* state) {
-  *state = TreeState();
-  return ApplyStateJson(text, state).Line();
-}
-
 }  // namespace
 
 std::string ParamTableJsonForJs() { return ParamTableJson(TreeParamTable()); }
@@ -126,7 +120,7 @@ std::string DecodeHashJson(const std::string& hash) {
 std::string EncodeHashJson(const std::string& state_json) {
   TreeState state;
   ordered_json out;
-  std::string error = StateFromJson(state_json, &state);
+  std::string error = ApplyStateJson(state_json, &state).Line();
   if (error.empty()) {
     out["hash"] = EncodeTreeHash(state);
   } else {
@@ -140,7 +134,7 @@ std::string EncodeHashJson(const std::string& state_json) {
 class GrowSession {
  public:
   explicit GrowSession(const std::string& state_json) {
-    error_ = StateFromJson(state_json, &state_);
+    error_ = ApplyStateJson(state_json, &state_).Line();  // core/tree/tree_state
     if (!error_.empty()) return;
     grower_ = std::make_unique<Grower>(state_);  // a TreeState is its GrowRequest
   }
