@@ -2,6 +2,7 @@
 // model and wind sway.
 #include "workloads.h"
 
+#include <cstdlib>
 #include <glm/vec3.hpp>
 #include <memory>
 #include <utility>
@@ -97,8 +98,8 @@ Workload SwayWorkload(int years, bool poses) {
   std::shared_ptr<double> units = w.units;
   w.prepare = [years, poses, units]() -> WorkloadBody {
     Tree tree = GrowTree(PresetRequest(Sakura(), years));
-    ParamSet params = Sakura().params;
-    params.Set(ParamId::kWindSpeed, 10);
+    TreeParams params = Sakura().params;
+    if (!params.Set(ParamId::kWindSpeed, 10).ok()) std::abort();
     auto base = std::make_shared<SwaySimulator>(tree, SwayParams(params));
     while (base->time() < 3.0) base->Step();  // 2 s into the gust (gust_on 1 s)
     *units = static_cast<double>(kSteps) * static_cast<double>(base->model().internodes);

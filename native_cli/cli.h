@@ -11,8 +11,4 @@ namespace niwa {
 // 1 an internal failure.
 int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
-// Writes bytes to path through a temporary file and a rename, so no half-written file remains.
-// Returns "" or an error line.
-std::string WriteFileAtomically(const std::string& path, const std::string& bytes);
-
 }  // namespace niwa

@@ -1,16 +1,16 @@
 // The one embind file: exposes the Niwa core to the Web Worker (web/worker.js).
 //
 // Everything that crosses from JavaScript arrives as text (JSON or a URL hash) and is checked by
-// the core itself (FindPreset, ParamSet::Set / SetFromText, ParsePrune). Nothing here throws or
-// aborts on bad input: errors come back as strings, either as the "error" field of a JSON answer or
-// from GrowSession::error().
+// the core itself (core/tree/tree_state: ApplyStateJson, DecodeTreeHash). Nothing here throws or
+// aborts on bad input: errors come back as strings (Status::Line()), either as the "error" field of
+// a JSON answer or from GrowSession::error().
 //
 // Exposed to JS:
 //   paramTableJson()      -> the parameter table [{key, symbol, unit, default, min, max, integer,
-//   group, help}] presetsJson()         -> [{name, title, years, seed, source, params:{key:value}}]
-//   decodeHash(hash)      -> {state:{preset, seed, years, params, prunes, camera}, notices:[...]}
-//   encodeHash(stateJson) -> {hash} or {error}
-//   GrowSession(stateJson): error(), years(), year(), growYear(), done(), buildMesh(), statsJson(),
+//   group, group_title, stage, help}] presetsJson()         -> [{name, title, years, seed, source,
+//   params:{key:value}}] decodeHash(hash)      -> {state:{preset, seed, years, params, prunes,
+//   camera}, notices:[...]} encodeHash(stateJson) -> {hash} or {error} GrowSession(stateJson):
+//   error(), years(), year(), growYear(), done(), buildMesh(), statsJson(),
 //                           barkPositions() ... flowersIndices() as typed-array views into WASM
 //                           memory; barkBranchIds() (Uint32, one per bark vertex);
 //                           branchParents() (Int32 parent id per branch, -1 at the root);
@@ -61,9 +61,7 @@
 #include <vector>
 
 #include "io/gltf_export.h"
-#include "io/json_io.h"
-#include "io/url_codec.h"
-#include "params/param_table.h"
+#include "params/param_json.h"
 #include "render/atlas_mesh.h"
 #include "render/hybrid.h"
 #include "sway/skin.h"
@@ -72,6 +70,9 @@
 #include "tree/mesh.h"
 #include "tree/presets.h"
 #include "tree/tree.h"
+#include "tree/tree_params.h"
+#include "tree/tree_report.h"
+#include "tree/tree_state.h"
 
 namespace niwa {
 namespace {
@@ -79,137 +80,17 @@ namespace {
 using nlohmann::json;
 using nlohmann::ordered_json;
 
-constexpr double kMaxSeed = 4294967295.0;
-
-// The sway and wind parameters of a state (rows of the one parameter table, groups "sway", "wind").
+// The sway and wind parameters of a state (rows of the tree table, groups "sway", "wind").
 SwayParams SwayParamsOf(const ParamSet& params) { return SwayParams(params); }
 
 // {"key": value} for every parameter (full values), as a JSON object.
 ordered_json ParamsObject(const ParamSet& params) {
-  ordered_json out = ordered_json::object();
-  for (const ParamSpec& spec : ParamTable()) out[spec.key] = params.Get(spec.id);
-  return out;
-}
-
-ordered_json StateObject(const TreeState& state) {
-  ordered_json out;
-  out["preset"] = state.preset;
-  out["seed"] = state.seed;
-  out["years"] = state.years;
-  out["params"] = ParamsObject(state.params);
-  ordered_json prunes = ordered_json::array();
-  for (const Prune& prune : state.prunes) prunes.push_back(FormatPrune(prune));
-  out["prunes"] = std::move(prunes);
-  out["camera"] = state.camera;
-  return out;
-}
-
-// A whole number in [min, max] from a JSON number or a numeric string; error line or "".
-std::string WholeNumber(const json& value, const char* key, double min, double max, double* out) {
-  std::string range = std::string(key) + ": must be a whole number in [" + FormatNumber(min) +
-                      ", " + FormatNumber(max) + "]";
-  double number = 0;
-  if (value.is_number()) {
-    number = value.get<double>();
-  } else if (value.is_string()) {
-    std::optional<double> parsed = ParseNumber(value.get<std::string>());
-    if (!parsed) return range;
-    number = *parsed;
-  } else {
-    return range;
-  }
-  if (!std::isfinite(number) || std::floor(number) != number || number < min || number > max)
-    return range;
-  *out = number;
-  return "";
-}
-
-// Reads {preset, seed, years, params:{key:value}, prunes:["12:b42"], camera} into a TreeState.
-// Missing fields take the preset's values; params are applied on top of the preset's parameters.
-// Returns "" or one error line; state is only meaningful on success.
-std::string StateFromJson(const std::string& text, TreeState* state) {
-  json document = json::parse(text, nullptr, /*allow_exceptions=*/false);
-  if (document.is_discarded()) return "state: malformed JSON";
-  if (!document.is_object()) return "state: must be a JSON object";
-
-  TreeState result;
-  if (document.contains("preset")) {
-    const json& name = document["preset"];
-    if (!name.is_string() || !FindPreset(name.get<std::string>())) {
-      std::string shown =
-          name.is_string() ? name.get<std::string>().substr(0, 40) : name.dump().substr(0, 40);
-      return "preset: unknown '" + shown + "', must be one of " + PresetNames();
-    }
-    result.preset = name.get<std::string>();
-  }
-  const Preset* preset = FindPreset(result.preset);
-  if (!preset) return "preset: unknown '" + result.preset + "', must be one of " + PresetNames();
-  result.params = preset->params;
-  result.seed = preset->seed;
-  result.years = preset->years;
-
-  if (document.contains("seed")) {
-    double seed = 0;
-    std::string error = WholeNumber(document["seed"], "seed", 0, kMaxSeed, &seed);
-    if (!error.empty()) return error;
-    result.seed = static_cast<uint64_t>(seed);
-  }
-  if (document.contains("years")) {
-    double years = 0;
-    std::string error = WholeNumber(document["years"], "years", 0, kMaxYears, &years);
-    if (!error.empty()) return error;
-    result.years = static_cast<int>(years);
-  }
-  if (document.contains("params")) {
-    const json& params = document["params"];
-    if (!params.is_object()) return "params: must be an object of key: value";
-    for (auto it = params.begin(); it != params.end(); ++it) {
-      std::string error;
-      if (it.value().is_number()) {
-        std::optional<ParamId> id = FindParam(it.key());
-        if (!id) return "unknown parameter '" + it.key().substr(0, 64) + "'";
-        error = result.params.Set(*id, it.value().get<double>());
-      } else if (it.value().is_string()) {
-        error = result.params.SetFromText(it.key(), it.value().get<std::string>());
-      } else if (it.value().is_boolean()) {
-        error = result.params.SetFromText(it.key(), it.value().get<bool>() ? "1" : "0");
-      } else {
-        std::optional<ParamId> id = FindParam(it.key());
-        if (!id) return "unknown parameter '" + it.key().substr(0, 64) + "'";
-        error = it.key() + ": must be " + RangeText(Spec(*id));
-      }
-      if (!error.empty()) return error;
-    }
-  }
-  if (document.contains("prunes")) {
-    const json& prunes = document["prunes"];
-    if (!prunes.is_array()) return "prunes: must be an array of \"YEAR:bID\" or \"YEAR:sinceY\"";
-    if (prunes.size() > 256) return "prunes: at most 256";
-    for (const json& item : prunes) {
-      if (!item.is_string()) return "prunes: each must be a string \"YEAR:bID\" or \"YEAR:sinceY\"";
-      Prune prune;
-      std::string error;
-      if (!ParsePrune(item.get<std::string>(), &prune, &error)) return error;
-      result.prunes.push_back(prune);
-    }
-  }
-  if (document.contains("camera")) {
-    const json& camera = document["camera"];
-    // One copy of the text: begin() and end() must come from the same string.
-    const std::string text = camera.is_string() ? camera.get<std::string>() : std::string("?");
-    bool ok = text.size() < 128 && std::all_of(text.begin(), text.end(), [](char c) {
-                return (c >= '0' && c <= '9') || c == '.' || c == ',' || c == '-' || c == 'e';
-              });
-    if (!ok) return "camera: must be numbers separated by commas";
-    result.camera = text;
-  }
-  *state = std::move(result);
-  return "";
+  return ordered_json::parse(ParamsToJson(params, -1));
 }
 
 }  // namespace
 
-std::string ParamTableJsonForJs() { return ParamTableJson(); }
+std::string ParamTableJsonForJs() { return ParamTableJson(TreeParamTable()); }
 
 std::string PresetsJson() {
   ordered_json out = ordered_json::array();
@@ -228,9 +109,9 @@ std::string PresetsJson() {
 
 std::string DecodeHashJson(const std::string& hash) {
   std::vector<std::string> notices;
-  TreeState state = DecodeStateHash(hash, &notices);
+  TreeState state = DecodeTreeHash(hash, &notices);
   ordered_json out;
-  out["state"] = StateObject(state);
+  out["state"] = ordered_json::parse(TreeStateJson(state));
   out["notices"] = notices;
   // Notices echo pieces of the (hostile) hash; replace bytes that are not valid UTF-8 for dump().
   return out.dump(-1, ' ', false, json::error_handler_t::replace);
@@ -239,9 +120,9 @@ std::string DecodeHashJson(const std::string& hash) {
 std::string EncodeHashJson(const std::string& state_json) {
   TreeState state;
   ordered_json out;
-  std::string error = StateFromJson(state_json, &state);
+  std::string error = ApplyStateJson(state_json, &state).Line();
   if (error.empty()) {
-    out["hash"] = EncodeStateHash(state);
+    out["hash"] = EncodeTreeHash(state);
   } else {
     out["error"] = error;
   }
@@ -253,22 +134,16 @@ std::string EncodeHashJson(const std::string& state_json) {
 class GrowSession {
  public:
   explicit GrowSession(const std::string& state_json) {
-    error_ = StateFromJson(state_json, &state_);
+    error_ = ApplyStateJson(state_json, &state_).Line();  // core/tree/tree_state
     if (!error_.empty()) return;
-    GrowRequest request;
-    request.preset = state_.preset;
-    request.params = state_.params;
-    request.seed = state_.seed;
-    request.years = state_.years;
-    request.prunes = state_.prunes;
-    grower_ = std::make_unique<Grower>(request);
+    grower_ = std::make_unique<Grower>(state_);  // a TreeState is its GrowRequest
   }
 
   std::string error() const { return error_; }
   int years() const { return state_.years; }
   int year() const { return grower_ ? grower_->year() : 0; }
   bool done() const { return !grower_ || grower_->year() >= state_.years; }
-  std::string hash() const { return error_.empty() ? EncodeStateHash(state_) : ""; }
+  std::string hash() const { return error_.empty() ? EncodeTreeHash(state_) : ""; }
 
   // Grows one more year; false when the tree already has all its years (or the state was bad).
   bool growYear() {
@@ -337,49 +212,20 @@ class GrowSession {
     return glm::length(WindAt(sway_params_, glm::dvec3(0.0), sways_[0]->time())) / 100.0;
   }
 
-  // {internodes, branches, leaves, flowers, height (cm), years, seed, preset, truncated, ms,
-  // idle_prunes: ["prune 12:b40: why it cut nothing"], bounds}
+  // core/tree/tree_report's stats JSON {preset, seed, years, internodes, ..., ms, ms_light, ...}
+  // with idle_prunes (["prune 12:b40: why it cut nothing"], once the tree has all its years) and
+  // the bounds of the mesh.
   std::string statsJson() const {
-    ordered_json j;
     if (!grower_) {
+      ordered_json j;
       j["error"] = error_;
       return j.dump();
     }
-    const Tree& tree = grower_->tree();
-    TreeStats s = ComputeStats(tree);
-    j["internodes"] = s.internodes;
-    j["branches"] = s.branches;
-    j["leaves"] = s.leaves;
-    j["flowers"] = s.flowers;
-    j["height"] = s.height;
-    j["years"] = tree.years;
-    j["seed"] = tree.seed;
-    j["preset"] = tree.preset;
-    j["truncated"] = tree.truncated;
-    j["ms"] = grower_->timings().ms_total;
-    // Prunes that cut nothing (a URL may name a year or branch the tree does not have), one
-    // notice each, once the tree has all its years.
-    ordered_json idle = ordered_json::array();
-    for (const Prune& prune : state_.prunes) {
-      std::string reason = done() ? IdlePruneReason(prune, tree) : "";
-      if (!reason.empty()) idle.push_back("prune " + FormatPrune(prune) + ": " + reason);
-    }
-    j["idle_prunes"] = std::move(idle);
-    // Axis-aligned bounds of every mesh vertex (metres), for framing the camera.
-    float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-    bool any = false;
-    for (const MeshBuffers* m : {&mesh_.bark, &mesh_.leaves, &mesh_.flowers}) {
-      for (std::size_t i = 0; i + 2 < m->positions.size(); i += 3) {
-        for (std::size_t k = 0; k < 3; ++k) {
-          float v = m->positions[i + k];
-          lo[k] = any ? std::min(lo[k], v) : v;
-          hi[k] = any ? std::max(hi[k], v) : v;
-        }
-        any = true;
-      }
-    }
-    j["bounds"] = {{"min", {lo[0], lo[1], lo[2]}}, {"max", {hi[0], hi[1], hi[2]}}};
-    return j.dump();
+    static const std::vector<Prune> kNone;
+    TreeStatsExtras extras;
+    extras.idle_prunes = done() ? &state_.prunes : &kNone;
+    extras.mesh = &mesh_;
+    return TreeStatsJson(grower_->tree(), grower_->timings(), extras);
   }
 
   // Typed-array views into WASM memory (valid until the next allocating call: copy at once).

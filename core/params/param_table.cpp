@@ -1,303 +1,98 @@
-// Definition of every model parameter (thesis table 2.1 plus the choices documented in
-// docs/growth-model.md).
+// The parameter mechanism: table checks, lookup and the checked setters of ParamSet.
 #include "params/param_table.h"
 
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <string>
+#include <set>
 
 namespace niwa {
 namespace {
 
-using P = ParamId;
-
-// Defaults are the sakura column of thesis table 2.2. "a ~ b" ranges are split into *_low (value at
-// hormone 0, or for P_l at age 0) and *_high (value at hormone H_sat, or at age P_l_years).
-const std::array<ParamSpec, kParamCount> kTable = {{
-    {P::kAlphaT, "alpha_t", "α_t", "", 0.7, 0, 1, false, "hormone",
-     "Share of the parent's hormone inherited by the terminal shoot (eq. 2.1)."},
-    {P::kAlphaTl, "alpha_tl", "α_tl", "", 0.55, 0, 1, false, "hormone",
-     "Share of the parent's hormone inherited by a terminally-lateral shoot (eq. 2.1)."},
-    {P::kAlphaL, "alpha_l", "α_l", "", 0.4, 0, 1, false, "hormone",
-     "Share of the parent's hormone inherited by a lateral shoot (eq. 2.1)."},
-    {P::kBetaC, "beta_c", "β_c", "", 0.2, 0, 1, false, "hormone",
-     "Share of its initial hormone a new shoot keeps after growing (eq. 2.2)."},
-    {P::kBetaP, "beta_p", "β_p", "", 0.25, 0, 1, false, "hormone",
-     "Share of last year's hormone an older branch keeps (eq. 2.3)."},
-    {P::kHS, "h_s", "h_s", "", 0.2, 0, 5, false, "hormone",
-     "Hormone a dwarf shoot makes per unit of received light (eq. 2.2)."},
-    {P::kHL, "h_l", "h_l", "", 0.5, 0, 5, false, "hormone",
-     "Hormone a long shoot makes per unit of received light (eq. 2.2)."},
-    {P::kGamma, "gamma", "γ", "", 0.2, 0, 1, false, "hormone",
-     "Share of the children's hormone passed down to the parent branch (eq. 2.3)."},
-    {P::kHShort, "H_s", "H_s", "", 0.1, 0, 10, false, "hormone",
-     "Dwarf-shoot threshold: a shoot whose initial hormone is below it is a dwarf shoot."},
-    {P::kHInit, "H_init", "H_0", "", 1.0, 0, 10, false, "hormone",
-     "Initial hormone of the seedling's first shoot (not in the thesis; see docs)."},
-    {P::kHSat, "H_sat", "H_sat", "", 1.0, 0.01, 10, false, "hormone",
-     "Hormone at which the hormone-dependent ranges reach their second value (figs. 2.5, 2.6, "
-     "2.8)."},
-
-    {P::kNLow, "N_low", "N", "nodes", 6, 1, 100, true, "branching",
-     "Nodes per shoot at hormone 0 (first value of the range N in table 2.2)."},
-    {P::kNHigh, "N_high", "N", "nodes", 25, 1, 100, true, "branching",
-     "Nodes per shoot at hormone H_sat (second value of the range N in table 2.2)."},
-    {P::kDLow, "D_low", "D", "cm", 0.2, 0.01, 100, false, "branching",
-     "Internode length at hormone 0 (first value of the range D)."},
-    {P::kDHigh, "D_high", "D", "cm", 3.0, 0.01, 100, false, "branching",
-     "Internode length at hormone H_sat (second value of the range D)."},
-    {P::kDwarfInternodeRatio, "D_s_ratio", "D_s/D_l", "", 1.0, 0.01, 4, false, "branching",
-     "Dwarf-shoot internode length as a fraction of the long-shoot length (fig. 2.13)."},
-    {P::kLengthStep, "length_step", "", "", 0, 0, 1, false, "branching",
-     "Share of the N and D ranges that jumps at the dwarf threshold H_s (fig. 2.5): 0 linear in "
-     "the initial hormone; 1 dwarf shoots at the first value, long shoots at the second."},
-    {P::kBT, "B_t", "B_t", "buds", 1, 0, 1, true, "branching", "Terminal buds per shoot."},
-    {P::kBTl, "B_tl", "B_tl", "buds", 1, 0, 8, true, "branching",
-     "Terminally-lateral buds at the tip of each shoot."},
-    {P::kBL, "B_l", "B_l", "buds/node", 1, 0, 8, true, "branching",
-     "Lateral buds (and leaves) per node: 1 alternate, 2 decussate, 3+ verticillate."},
-    {P::kPhi, "phi", "ϕ", "turn", 0.4, 0, 1, false, "branching",
-     "Phyllotaxis: turn between successive nodes (1/2, 1/3, 2/5, 3/8; 1/4 for decussate)."},
-    {P::kThetaN, "theta_N", "θ_N", "deg", 0, -90, 90, false, "branching",
-     "Bend at each node of a sympodial shoot, alternating side (zigzag)."},
-    {P::kSympodial, "sympodial", "", "", 0, 0, 1, true, "branching",
-     "1: sympodial branching (no true terminal bud; the top lateral bud takes over)."},
-    {P::kPsiT, "psi_t", "ψ_t", "deg", 0, -90, 90, false, "branching",
-     "Branching angle of the terminal shoot from its parent's tip direction."},
-    {P::kPsiTl, "psi_tl", "ψ_tl", "deg", 45, -90, 90, false, "branching",
-     "Branching angle of terminally-lateral shoots."},
-    {P::kPsiL, "psi_l", "ψ_l", "deg", 45, -90, 90, false, "branching",
-     "Branching angle of lateral shoots."},
-    {P::kPTlS, "P_tl_s", "P_tl^s", "", 0, 0, 1, false, "branching",
-     "Largest break probability of a dwarf shoot's terminally-lateral buds (fig. 2.8)."},
-    {P::kPTlL, "P_tl_l", "P_tl^l", "", 0.9, 0, 1, false, "branching",
-     "Largest break probability of a long shoot's terminally-lateral buds (fig. 2.8)."},
-    {P::kPLYoung, "P_l_young", "P_l", "", 0.1, 0, 1, false, "branching",
-     "Largest break probability of a long shoot's lateral buds in a young tree (fig. 2.9)."},
-    {P::kPLOld, "P_l_old", "P_l", "", 0.6, 0, 1, false, "branching",
-     "Largest break probability of a long shoot's lateral buds from age P_l_years on (fig. 2.9)."},
-    {P::kPLYears, "P_l_years", "", "years", 10, 1, 100, false, "branching",
-     "Tree age at which the lateral break probability reaches P_l_old."},
-    {P::kDwarfLateralFlowers, "dwarf_flowers", "", "", 1, 0, 1, true, "branching",
-     "1: the lateral buds of dwarf shoots are flower buds (sakura, thesis 2.5.4)."},
-
-    {P::kUseLight, "use_light", "", "", 1, 0, 1, true, "light",
-     "1: light model on (death and phototropism); 0: every shoot gets full light, straight up."},
-    {P::kKDeath, "k_death", "k", "", 0.1, 0, 1, false, "light",
-     "A new shoot dies when its light is below k × U(0.5, 1) (2.4.1)."},
-    {P::kSphereOpacity, "sphere_opacity", "", "", 0.3, 0, 0.99, false, "light",
-     "Share of light stopped by a ray through the full diameter of one leaf sphere."},
-    {P::kSunElevation, "sun_elevation", "", "deg", 60, 5, 90, false, "light",
-     "Elevation of the sun above the horizon."},
-    {P::kSunAzimuth, "sun_azimuth", "", "deg", 0, -180, 180, false, "light",
-     "Azimuth of the sun, from +x towards +z."},
-    {P::kSunWeight, "sun_weight", "", "", 0, 0, 1, false, "light",
-     "Share of the light that comes from the sun; the rest is the overcast sky. Default 0: the "
-     "thesis's light is sky light only, and a sun makes every tree lean towards it."},
-    {P::kSkyZenithRatio, "sky_zenith_ratio", "", "", 1, 1, 3, false, "light",
-     "Sky radiance at the zenith over that at the horizon: 1 uniform sky, 3 CIE overcast sky."},
-    {P::kLightScale, "light_scale", "", "", 1, 0.1, 1, false, "light",
-     "L = this × the light reaching the shoot's leaf sphere (1 = open sky): sets the scale of L, "
-     "which the thesis does not give, against table 2.2's hormone values."},
-
-    {P::kBLLow, "b_L_low", "b_L", "", 0.12, 0, 1, false, "bending",
-     "Phototropism rate at hormone 0 (fig. 2.6)."},
-    {P::kBLHigh, "b_L_high", "b_L", "", 0.01, 0, 1, false, "bending",
-     "Phototropism rate at hormone H_sat (fig. 2.6)."},
-    {P::kBGLow, "b_g_low", "b_g", "", 0.01, -1, 1, false, "bending",
-     "Negative geotropism rate at hormone 0 (fig. 2.6); below 0 shoots droop (weeping forms)."},
-    {P::kBGHigh, "b_g_high", "b_g", "", 0.02, -1, 1, false, "bending",
-     "Negative geotropism rate at hormone H_sat (fig. 2.6); below 0 shoots droop (weeping forms)."},
-    {P::kThetaBmaxN, "theta_bmax_N", "θ_bmax^N", "deg", 15, 0, 180, false, "bending",
-     "Largest bend at one node (eq. 2.9)."},
-    {P::kThetaBmaxB, "theta_bmax_b", "θ_bmax^b", "deg", 20, 0, 180, false, "bending",
-     "Largest change of the branching angle (eq. 2.7)."},
-    {P::kBLByLight, "b_L_by_light", "", "", 0, 0, 1, true, "bending",
-     "1: phototropism rate follows the received light L instead of the hormone (fig. 2.16 c)."},
-
-    {P::kHBL, "H_b_l", "H_b^l", "", 0.05, 0, 10, false, "dormancy_break",
-     "An old branch whose hormone falls below this breaks dormant buds (0: off)."},
-    {P::kDeltaL, "delta_l", "δ_l", "", 0.3, 0, 1, false, "dormancy_break",
-     "Chance of each dormant bud to break when the threshold is crossed."},
-    {P::kBBL, "B_b_l", "B_b^l", "buds", 2, 0, 20, true, "dormancy_break",
-     "Most dormant buds one branch breaks through the threshold."},
-    {P::kHNL, "H_n_l", "H_n^l", "", 0.3, 0, 10, false, "dormancy_break",
-     "Extra initial hormone of a bud broken through the threshold."},
-    {P::kHBD, "h_b_d", "h_b^d", "", 4, 0, 100, false, "dormancy_break",
-     "A sudden drop H < H'/h_b^d breaks dormant buds (0: off)."},
-    {P::kDeltaD, "delta_d", "δ_d", "", 0.35, 0, 1, false, "dormancy_break",
-     "Chance of each dormant bud to break after a sudden drop."},
-    {P::kBBD, "B_b_d", "B_b^d", "buds", 2, 0, 20, true, "dormancy_break",
-     "Most dormant buds one branch breaks after a sudden drop."},
-    {P::kHND, "H_n_d", "H_n^d", "", 0.4, 0, 10, false, "dormancy_break",
-     "Extra initial hormone of a bud broken after a sudden drop."},
-
-    {P::kUseHormone, "use_hormone", "", "", 1, 0, 1, true, "shape",
-     "1: hormone model on; 0: every shoot long, with the high end of every range (2.5.1)."},
-    {P::kPipeAreaPerLeaf, "pipe_area", "", "cm²/leaf", 0.02, 0, 10, false, "shape",
-     "Cross-section added to a branch each year per leaf above it (pipe model, 2.4.4)."},
-    {P::kLeafSize, "leaf_size", "", "cm", 6, 0.1, 50, false, "shape",
-     "Leaf length, used for drawing and for the leaf-sphere radius."},
-    {P::kMaxInternodes, "max_internodes", "", "internodes", 2000000, 1000, 5000000, true, "shape",
-     "Safety limit: growth stops adding shoots past this many internodes."},
-
-    // Wind sway (thesis ch. 3). Units as table 3.1: cgs inside the model (cm, g, s, dyn); wind
-    // speed in m/s and g in m/s². Defaults: examples 2-4 of table 3.1 (docs/sway-model.md).
-    {P::kKWind, "K_wind", "K_wind", "g/(cm²·s)", 0.1, 0, 100, false, "sway",
-     "Wind force per unit area and unit relative speed (eq. 3.5; table 3.1: 0.1)."},
-    {P::kKDirTrunk, "K_dir_trunk", "K_dir", "dyn/cm²", 150000, 0, 1e9, false, "sway",
-     "Direction-restoring coefficient at the thickest branch (eq. 3.8; table 3.1: 50000~150000)."},
-    {P::kKDirTip, "K_dir_tip", "K_dir", "dyn/cm²", 50000, 0, 1e9, false, "sway",
-     "Direction-restoring coefficient at the thinnest branch; linear in radius between (eq. 3.8)."},
-    {P::kKRev, "K_rev", "K_rev", "", 0.8, 0, 1, false, "sway",
-     "Share of the restoring force's reaction passed to the parent node (eq. 3.10; table 3.1: "
-     "0.8)."},
-    {P::kKVdel, "K_vdel", "K_vdel", "", 1, 0, 1, false, "sway",
-     "Velocity kept per step, damping by the tree itself (eq. 3.13; table 3.1: 1)."},
-    {P::kWoodDensity, "wood_density", "δ", "g/cm³", 0.12, 0.01, 2, false, "sway",
-     "Branch density (eqs. 3.1, 3.3; table 3.1: 0.12)."},
-    {P::kMLeaf, "m_leaf", "m_leaf", "g", 3, 0, 100, false, "sway",
-     "Mass of one leaf (eq. 3.3; table 3.1: 3 g, exaggerated in the thesis). 0: no leaf mass."},
-    {P::kSLeaf, "s_leaf", "s_leaf", "cm²", 30, 0, 1000, false, "sway",
-     "Surface area of one leaf (eq. 3.4; table 3.1: 30 cm²). 0: no leaf area."},
-    {P::kSwayAlpha, "sway_alpha", "α", "", 2, 1, 8, false, "sway",
-     "Exponent of the interpolation of intermediate nodes (eq. 3.15); 1 bends at the node."},
-    {P::kGravity, "gravity", "g", "m/s²", 9.8, 0, 100, false, "sway",
-     "Gravitational acceleration, along -y (eq. 3.6)."},
-    {P::kGravityPreload, "gravity_preload", "", "", 1, 0, 1, true, "sway",
-     "1: the grown shape is the rest pose under gravity (no sag at t = 0); 0: as the thesis."},
-    {P::kSwayDt, "dt", "dt", "s", 1.0 / 30.0, 0.0001, 0.1, false, "sway",
-     "Time step of the sway simulation (eqs. 3.13, 3.14, 3.16; table 3.1: 1/30 s)."},
-    {P::kOmitLimit, "omit_limit", "", "", 1, 0.1, 4, false, "sway",
-     "A node point moves only if K_x dt²/m is at most this: 3 in eq. 3.16; 1 (default) keeps "
-     "thin tips from jittering (docs/sway-model.md)."},
-
-    {P::kWindSpeed, "wind_speed", "v_wind", "m/s", 5, 0, 100, false, "wind",
-     "Wind speed while the gust blows (eq. 3.5; thesis examples: 5, 10, 20)."},
-    {P::kWindDir, "wind_dir", "", "deg", 0, -360, 360, false, "wind",
-     "Wind azimuth in the horizontal plane: 0 blows towards +x, 90 towards +z."},
-    {P::kGustOn, "gust_on", "", "s", 1, 0, 3600, false, "wind",
-     "Time the wind starts suddenly from still air (thesis 3.5); at the origin with a gust front."},
-    {P::kGustOff, "gust_off", "", "s", 6, 0, 3600, false, "wind",
-     "Time the wind stops suddenly; must be after gust_on."},
-    {P::kGustFrontSpeed, "gust_front_speed", "", "m/s", 0, 0, 100, false, "wind",
-     "Speed of the gust front along the wind: a point d m downwind of the origin gets the wind "
-     "d / speed s later (start and stop). 0: everywhere at once, as the thesis."},
-    {P::kWindVariation, "wind_variation", "", "", 0, 0, 1, false, "wind",
-     "Amplitude v of a gust wave travelling with the wind: speed × (1 + v sin(2π(x/λ - t/T))). 0: "
-     "uniform, as the thesis."},
-    {P::kWindWavelength, "wind_wavelength", "λ", "m", 25, 1, 1000, false, "wind",
-     "Wavelength λ of the travelling gust wave along the wind (with wind_variation > 0)."},
-    {P::kWindPeriod, "wind_period", "T", "s", 5, 0.1, 600, false, "wind",
-     "Period T of the travelling gust wave at a fixed point (with wind_variation > 0)."},
-    {P::kSwayDuration, "duration", "", "s", 12, 0, 600, false, "wind",
-     "Simulated time of a sway run."},
-    {P::kRenderMode, "render_mode", "", "", 0, 0, 1, true, "render",
-     "0: full polygons (generalized cylinders, leaf quads; what glTF export writes); 1: hybrid "
-     "(thesis ch. 4: thick branches and leaves as texture cards, thin twigs as lines)."},
-    {P::kLineThreshold, "line_threshold", "", "px", 4, 0.1, 1000, false, "render",
-     "Hybrid mode: a branch whose on-screen width D_i (eq. 4.1) is below this is drawn as a line, "
-     "above it as a card (with hysteresis, so nothing pops while the view moves)."},
-    {P::kCardPlanes, "card_planes", "", "", 2, 2, 8, true, "render",
-     "Hybrid mode: card planes per branch, rotated about the branch axis b_i; the plane facing the "
-     "viewer is drawn (thesis 4.2.1 uses at least 2)."},
-    {P::kLeafClusterCards, "leaf_cluster_cards", "", "", 1, 0, 1, true, "render",
-     "Hybrid mode: 1 merges the leaves of nearby branches into leaf-cluster cards (thesis 5.2); "
-     "0 draws leaves on their branch's card (thesis 4.2.1)."},
-}};
-
-bool CheckTableOrder() {
-  for (std::size_t i = 0; i < kTable.size(); ++i) {
-    if (static_cast<std::size_t>(kTable[i].id) != i) return false;
-  }
-  return true;
+[[noreturn]] void BadTable(const std::string& table, const char* key, const char* what) {
+  std::fprintf(stderr, "niwa: parameter table %s, row %s: %s\n", table.c_str(), key, what);
+  std::abort();  // a programming error in a table's rows, caught by every test binary
 }
 
 }  // namespace
 
-const std::array<ParamSpec, kParamCount>& ParamTable() {
-  static const bool ordered = CheckTableOrder();
-  if (!ordered) std::abort();  // programming error: table rows out of ParamId order
-  return kTable;
+const char* StageName(Stage stage) {
+  switch (stage) {
+    case Stage::kGrow:
+      return "grow";
+    case Stage::kMesh:
+      return "mesh";
+    case Stage::kSway:
+      return "sway";
+    case Stage::kView:
+      return "view";
+  }
+  return "grow";
 }
 
-const ParamSpec& Spec(ParamId id) { return ParamTable()[static_cast<std::size_t>(id)]; }
+ParamTable::ParamTable(std::string name, std::vector<ParamSpec> rows,
+                       std::vector<ParamGroup> groups)
+    : name_(std::move(name)), rows_(std::move(rows)), groups_(std::move(groups)) {
+  std::set<std::string_view> keys;
+  for (std::size_t i = 0; i < rows_.size(); ++i) {
+    const ParamSpec& s = rows_[i];
+    if (static_cast<std::size_t>(s.id) != i) BadTable(name_, s.key, "out of id order");
+    if (!keys.insert(s.key).second) BadTable(name_, s.key, "key repeats");
+    if (!CheckValue(s.key, s.default_value, s.min_value, s.max_value, s.integer).ok()) {
+      BadTable(name_, s.key, "default out of range");
+    }
+    if (*GroupTitle(s.group) == '\0') BadTable(name_, s.key, "group not in the table's groups");
+  }
+}
 
-std::optional<ParamId> FindParam(std::string_view key) {
-  for (const ParamSpec& spec : ParamTable()) {
-    if (key == spec.key) return spec.id;
+std::optional<std::size_t> ParamTable::Find(std::string_view key) const {
+  for (std::size_t i = 0; i < rows_.size(); ++i) {
+    if (key == rows_[i].key) return i;
   }
   return std::nullopt;
 }
 
-ParamSet::ParamSet() {
-  for (const ParamSpec& spec : ParamTable()) {
-    values_[static_cast<std::size_t>(spec.id)] = spec.default_value;
+const char* ParamTable::GroupTitle(std::string_view group) const {
+  for (const ParamGroup& g : groups_) {
+    if (group == g.key) return g.title;
   }
-}
-
-std::string FormatNumber(double value) {
-  char buffer[32];
-  if (std::floor(value) == value && std::fabs(value) < 1e15) {
-    std::snprintf(buffer, sizeof buffer, "%.0f", value);  // whole numbers without exponent
-    return buffer;
-  }
-  for (int precision = 1; precision <= 17; ++precision) {
-    std::snprintf(buffer, sizeof buffer, "%.*g", precision, value);
-    if (std::strtod(buffer, nullptr) == value) break;
-  }
-  return buffer;
-}
-
-std::string RangeText(double min_value, double max_value, bool integer) {
-  return std::string(integer ? "a whole number" : "a number") + " in [" + FormatNumber(min_value) +
-         ", " + FormatNumber(max_value) + "]";
+  return "";
 }
 
 std::string RangeText(const ParamSpec& spec) {
   return RangeText(spec.min_value, spec.max_value, spec.integer);
 }
 
-std::string CheckValue(const char* key, double value, double min_value, double max_value,
-                       bool integer) {
-  bool whole = std::floor(value) == value;
-  if (std::isfinite(value) && value >= min_value && value <= max_value && (!integer || whole)) {
-    return "";
+ParamSet::ParamSet(const ParamTable& table) : table_(&table) {
+  values_.reserve(table.size());
+  for (const ParamSpec& spec : table) values_.push_back(spec.default_value);
+}
+
+Status ParamSet::Set(std::size_t row, double value) {
+  const ParamSpec& spec = table_->row(row);
+  Status status = CheckValue(spec.key, value, spec.min_value, spec.max_value, spec.integer);
+  if (status.ok()) values_[row] = value;
+  return status;
+}
+
+Status ParamSet::SetFromText(std::string_view key, std::string_view text) {
+  std::optional<std::size_t> row = table_->Find(key);
+  if (!row) {
+    return Status::Error("", "unknown parameter '" + std::string(key.substr(0, 64)) + "'");
   }
-  return std::string(key) + ": " + (std::isfinite(value) ? FormatNumber(value) : "value") +
-         " is out of range; must be " + RangeText(min_value, max_value, integer);
-}
-
-std::optional<double> ParseNumber(std::string_view text) {
-  if (text.empty() || text.size() > 64) return std::nullopt;
-  for (char c : text) {
-    bool ok = (c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+' || c == 'e' || c == 'E';
-    if (!ok) return std::nullopt;
-  }
-  std::string copy(text);
-  char* end = nullptr;
-  double value = std::strtod(copy.c_str(), &end);
-  if (end != copy.c_str() + copy.size() || !std::isfinite(value)) return std::nullopt;
-  return value;
-}
-
-std::string ParamSet::Set(ParamId id, double value) {
-  const ParamSpec& spec = Spec(id);
-  std::string error = CheckValue(spec.key, value, spec.min_value, spec.max_value, spec.integer);
-  if (error.empty()) values_[static_cast<std::size_t>(id)] = value;
-  return error;
-}
-
-std::string ParamSet::SetFromText(std::string_view key, std::string_view text) {
-  std::optional<ParamId> id = FindParam(key);
-  if (!id) return "unknown parameter '" + std::string(key.substr(0, 64)) + "'";
   std::optional<double> value = ParseNumber(text);
   if (!value) {
-    return std::string(key) + ": '" + std::string(text.substr(0, 32)) + "' is not " +
-           RangeText(Spec(*id));
+    return Status::Error(std::string(key), "'" + std::string(text.substr(0, 32)) + "' is not " +
+                                               RangeText(table_->row(*row)));
   }
-  return Set(*id, *value);
+  return Set(*row, *value);
+}
+
+Status ParamSet::SetFromAssignment(std::string_view assignment) {
+  std::size_t eq = assignment.find('=');
+  if (eq == std::string_view::npos) {
+    return Status::Error("", "'" + std::string(assignment) + "' must be key=value");
+  }
+  return SetFromText(assignment.substr(0, eq), assignment.substr(eq + 1));
 }
 
 }  // namespace niwa

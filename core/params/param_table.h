@@ -1,117 +1,37 @@
-// The one table of model parameters: key, paper symbol, unit, default, range, group and help.
+// The one parameter mechanism: ParamSpec rows, a named ParamTable of them with group titles, and a
+// ParamSet of values bound to one table. Each study declares its own table
+// (core/<study>/<study>_params.cpp; the tree's is core/tree/tree_params.cpp).
+// Does not: hold any study's rows, read JSON or URL text (params/param_json, io/hash_codec), or
+// print anything.
 #pragma once
 
 #include <array>
+#include <cassert>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <vector>
+
+#include "base/status.h"
+#include "params/param_text.h"
 
 namespace niwa {
 
-// One entry per parameter; the order is the order of the web panel within each group.
-enum class ParamId : int {
-  // hormone model (thesis 2.4.2, eqs. 2.1-2.3)
-  kAlphaT,
-  kAlphaTl,
-  kAlphaL,
-  kBetaC,
-  kBetaP,
-  kHS,
-  kHL,
-  kGamma,
-  kHShort,
-  kHInit,
-  kHSat,
-  // branching model (thesis 2.3.1, table 2.1)
-  kNLow,
-  kNHigh,
-  kDLow,
-  kDHigh,
-  kDwarfInternodeRatio,
-  kLengthStep,
-  kBT,
-  kBTl,
-  kBL,
-  kPhi,
-  kThetaN,
-  kSympodial,
-  kPsiT,
-  kPsiTl,
-  kPsiL,
-  kPTlS,
-  kPTlL,
-  kPLYoung,
-  kPLOld,
-  kPLYears,
-  kDwarfLateralFlowers,
-  // light model (thesis 2.3.2, 2.4.1)
-  kUseLight,
-  kKDeath,
-  kSphereOpacity,
-  kSunElevation,
-  kSunAzimuth,
-  kSunWeight,
-  kSkyZenithRatio,
-  kLightScale,
-  // bending (thesis 2.4.3, eqs. 2.4-2.9)
-  kBLLow,
-  kBLHigh,
-  kBGLow,
-  kBGHigh,
-  kThetaBmaxN,
-  kThetaBmaxB,
-  kBLByLight,
-  // dormancy break (thesis 2.4.6)
-  kHBL,
-  kDeltaL,
-  kBBL,
-  kHNL,
-  kHBD,
-  kDeltaD,
-  kBBD,
-  kHND,
-  // shape (thickness, leaves) and limits
-  kUseHormone,
-  kPipeAreaPerLeaf,
-  kLeafSize,
-  kMaxInternodes,
-  // wind sway, node-point model (thesis ch. 3, eqs. 3.1-3.16, table 3.1; docs/sway-model.md)
-  kKWind,
-  kKDirTrunk,
-  kKDirTip,
-  kKRev,
-  kKVdel,
-  kWoodDensity,
-  kMLeaf,
-  kSLeaf,
-  kSwayAlpha,
-  kGravity,
-  kGravityPreload,
-  kSwayDt,
-  kOmitLimit,
-  // wind: the thesis's sudden gust (3.5) and a field varying in space and time (not in the thesis)
-  kWindSpeed,
-  kWindDir,
-  kGustOn,
-  kGustOff,
-  kGustFrontSpeed,
-  kWindVariation,
-  kWindWavelength,
-  kWindPeriod,
-  kSwayDuration,
-  // rendering (thesis chapter 4, docs/rendering-model.md)
-  kRenderMode,        // 0: full polygons, 1: hybrid cards + lines
-  kLineThreshold,     // eq. 4.1 threshold on D_i, px
-  kCardPlanes,        // card planes per branch
-  kLeafClusterCards,  // 1: leaf-cluster cards (thesis 5.2), 0: leaves on branch cards (4.2.1)
-  kCount
+// What an edit of a row invalidates, earliest first: a page reruns that stage and the ones after it
+// (grow, then mesh, then sway, then view), as mapgen4 reruns its phases.
+enum class Stage : uint8_t {
+  kGrow,  // the model run itself (regrow)
+  kMesh,  // only the geometry built from the model's result
+  kSway,  // only the animation of the built geometry
+  kView,  // only how it is drawn (no new geometry)
 };
-
-constexpr std::size_t kParamCount = static_cast<std::size_t>(ParamId::kCount);
+const char* StageName(Stage stage);  // "grow", "mesh", "sway", "view"
 
 struct ParamSpec {
-  ParamId id;
+  int id;              // row index; equal to the study's enum value (checked by ParamTable)
   const char* key;     // stable name used in JSON, URL hash and CLI --set
   const char* symbol;  // the paper's symbol, e.g. "α_t"
   const char* unit;    // "" when dimensionless
@@ -119,46 +39,100 @@ struct ParamSpec {
   double min_value;
   double max_value;
   bool integer;       // value must be a whole number
-  const char* group;  // "hormone", "branching", "light", "bending", "dormancy_break", "shape",
-                      // "sway", "wind"
+  const char* group;  // one of the table's group keys
+  Stage stage;        // what an edit of this row invalidates
   const char* help;
 };
 
-// The table itself, indexed by ParamId.
-const std::array<ParamSpec, kParamCount>& ParamTable();
-const ParamSpec& Spec(ParamId id);
-// Finds a parameter by its key; nullopt when unknown.
-std::optional<ParamId> FindParam(std::string_view key);
+// A panel section: the group key of the rows and its title.
+struct ParamGroup {
+  const char* key;    // "hormone"
+  const char* title;  // "Hormone"
+};
 
-// A full set of parameter values, indexed by ParamId.
+// One study's table: its name ("tree"), rows in id order and groups in panel order.
+class ParamTable {
+ public:
+  // Aborts (a programming error, caught by every test) when a row's id is not its index, a key
+  // repeats, a default is out of range or a row names a group the table does not have.
+  ParamTable(std::string name, std::vector<ParamSpec> rows, std::vector<ParamGroup> groups);
+
+  const std::string& name() const { return name_; }
+  std::size_t size() const { return rows_.size(); }
+  const ParamSpec& row(std::size_t index) const { return rows_[index]; }
+  const ParamSpec& operator[](std::size_t index) const { return rows_[index]; }
+  std::vector<ParamSpec>::const_iterator begin() const { return rows_.begin(); }
+  std::vector<ParamSpec>::const_iterator end() const { return rows_.end(); }
+  const std::vector<ParamGroup>& groups() const { return groups_; }
+  // Index of the row with this key; nullopt when unknown.
+  std::optional<std::size_t> Find(std::string_view key) const;
+  // The title of a group key ("" when unknown).
+  const char* GroupTitle(std::string_view group) const;
+
+ private:
+  std::string name_;
+  std::vector<ParamSpec> rows_;
+  std::vector<ParamGroup> groups_;
+};
+
+// "alpha_t must be a number in [0, 1]" style description of a row's allowed range.
+std::string RangeText(const ParamSpec& spec);
+
+// A full set of values of one table, indexed by row. A study's enum reads it typed:
+// params.Get(TreeParam::kGamma), checked (in debug builds) to be the enum of the bound table.
+// A study's enum E declares `const ParamTable& TableOf(E)` beside it (found by argument lookup).
 class ParamSet {
  public:
-  ParamSet();  // every value at its table default
-  double Get(ParamId id) const { return values_[static_cast<std::size_t>(id)]; }
-  int GetInt(ParamId id) const { return static_cast<int>(Get(id)); }
-  bool GetBool(ParamId id) const { return Get(id) != 0.0; }
-  // Sets a value after checking it; returns an error line naming the key and range, or "" on
-  // success.
-  std::string Set(ParamId id, double value);
-  // Parses text (e.g. from --set key=value or a URL) and sets it; error line or "".
-  std::string SetFromText(std::string_view key, std::string_view text);
-  bool operator==(const ParamSet& other) const { return values_ == other.values_; }
+  explicit ParamSet(const ParamTable& table);  // every value at its table default
+  const ParamTable& table() const { return *table_; }
+  std::size_t size() const { return values_.size(); }
+
+  double Get(std::size_t row) const { return values_[row]; }
+  template <typename E, typename = std::enable_if_t<std::is_enum_v<E>>>
+  double Get(E id) const {
+    assert(&TableOf(id) == table_);
+    return values_[static_cast<std::size_t>(id)];
+  }
+  template <typename E, typename = std::enable_if_t<std::is_enum_v<E>>>
+  int GetInt(E id) const {
+    return static_cast<int>(Get(id));
+  }
+  template <typename E, typename = std::enable_if_t<std::is_enum_v<E>>>
+  bool GetBool(E id) const {
+    return Get(id) != 0.0;
+  }
+
+  // Sets a value after checking it against its row; the error names the key and the range.
+  Status Set(std::size_t row, double value);
+  template <typename E, typename = std::enable_if_t<std::is_enum_v<E>>>
+  Status Set(E id, double value) {
+    assert(&TableOf(id) == table_);
+    return Set(static_cast<std::size_t>(id), value);
+  }
+  // Parses text (from --set key=value, a URL or JSON) and sets it.
+  Status SetFromText(std::string_view key, std::string_view text);
+  // "key=value" as given to --set.
+  Status SetFromAssignment(std::string_view assignment);
+
+  bool operator==(const ParamSet& other) const {
+    return table_ == other.table_ && values_ == other.values_;
+  }
   bool operator!=(const ParamSet& other) const { return !(*this == other); }
 
  private:
-  std::array<double, kParamCount> values_;
+  const ParamTable* table_;
+  std::vector<double> values_;
 };
 
-// "alpha_t must be a number in [0, 1]" style description of the allowed range.
-std::string RangeText(const ParamSpec& spec);
-std::string RangeText(double min_value, double max_value, bool integer);
-// "" when value lies in [min, max] (and is whole when integer), else the one-line error
-// "key: 1.5 is out of range; must be a number in [0, 1]". Shared by every parameter table.
-std::string CheckValue(const char* key, double value, double min_value, double max_value,
-                       bool integer);
-// Shortest text that parses back to exactly the same double.
-std::string FormatNumber(double value);
-// Strict number parser: whole text must be a finite decimal number.
-std::optional<double> ParseNumber(std::string_view text);
+// A ParamSet whose default constructor binds it to the table of the study enum E: what a study
+// stores (e.g. TreeParams = StudyParams<TreeParam>).
+template <typename E>
+class StudyParams : public ParamSet {
+ public:
+  StudyParams() : ParamSet(TableOf(E{})) {}
+  explicit StudyParams(const ParamSet& values) : ParamSet(values) {
+    assert(&values.table() == &TableOf(E{}));
+  }
+};
 
 }  // namespace niwa

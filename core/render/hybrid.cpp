@@ -15,7 +15,7 @@
 
 #include "math/det_math.h"
 #include "math/rotation.h"
-#include "params/param_table.h"
+#include "tree/tree_params.h"
 
 namespace niwa {
 namespace {

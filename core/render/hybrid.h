@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "params/param_table.h"
 #include "tree/mesh.h"
 #include "tree/tree.h"
+#include "tree/tree_params.h"
 
 namespace niwa {
 

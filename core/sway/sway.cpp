@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "math/det_math.h"
-#include "params/param_table.h"
+#include "tree/tree_params.h"
 
 namespace niwa {
 namespace {

@@ -12,16 +12,16 @@
 #include <string_view>
 #include <vector>
 
-#include "params/param_table.h"
 #include "tree/tree.h"
+#include "tree/tree_params.h"
 
 namespace niwa {
 
 // ---- Parameters ----
-// Every sway and wind parameter is a row of the one parameter table (core/params/param_table.h,
+// Every sway and wind parameter is a row of the one parameter table (core/tree/tree_params.h,
 // groups "sway" and "wind"); SwayParams is the model's typed copy of those rows of a ParamSet.
 struct SwayParams {
-  SwayParams() : SwayParams(ParamSet()) {}  // table defaults
+  SwayParams() : SwayParams(TreeParams()) {}  // table defaults
   explicit SwayParams(const ParamSet& p);
 
   // model (thesis 3.3, table 3.1), cgs

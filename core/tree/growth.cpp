@@ -820,26 +820,6 @@ Tree GrowTree(const GrowRequest& request, GrowthTimings* timings) {
   return grower.TakeTree();
 }
 
-std::string IdlePruneReason(const Prune& prune, const Tree& grown) {
-  const std::string year = std::to_string(prune.year);
-  if (prune.year > grown.years) {
-    return "year " + year + " is after the last year grown (" + std::to_string(grown.years) + ")";
-  }
-  if (prune.branch >= 0) {
-    // The branches grown by that year are the first ones: ids follow the order of growth.
-    std::size_t count = 0;
-    while (count < grown.branches.size() && grown.branches[count].year <= prune.year) ++count;
-    if (static_cast<std::size_t>(prune.branch) >= count) {
-      return "the tree had no branch b" + std::to_string(prune.branch) + " by year " + year +
-             (count > 0 ? " (ids 0 to " + std::to_string(count - 1) + ")" : "");
-    }
-  }
-  if (prune.since_year > prune.year) {
-    return "nothing had grown since year " + std::to_string(prune.since_year) + " by year " + year;
-  }
-  return "";
-}
-
 TreeStats ComputeStats(const Tree& tree) {
   TreeStats stats;
   for (const Branch& b : tree.branches) {

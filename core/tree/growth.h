@@ -8,30 +8,19 @@
 
 #include "random/pcg32.h"
 #include "tree/light.h"
+#include "tree/prune.h"
 #include "tree/tree.h"
+#include "tree/tree_params.h"
 
 namespace niwa {
 
-// Remove a branch and everything above it after the growth of `year` (thesis figs. 2.15, 2.18).
-struct Prune {
-  int year = 0;
-  int branch = -1;      // a branch id from the JSON output, or -1
-  int since_year = -1;  // or: every shoot grown in this year or later, or -1
-};
-
 struct GrowRequest {
   std::string preset;
-  ParamSet params;
+  TreeParams params;
   uint64_t seed = 1;
   int years = 10;
   std::vector<Prune> prunes;
 };
-
-// Why `prune` cuts nothing from `grown`, the tree its request grew, or "" when it cuts: its year is
-// after the last year grown, its branch id is not among the branches the tree had by that year
-// (shoots take ids in the order they grow), or its "since" year is after its own year. One line,
-// for the CLI's error and the page's notice.
-std::string IdlePruneReason(const Prune& prune, const Tree& grown);
 
 // Cosine and sine of a rotation angle.
 struct CosSin {

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
-#include "io/json_io.h"
+#include "params/param_json.h"
 #include "tree/presets_embedded.h"
 
 namespace niwa {
@@ -18,7 +18,8 @@ const std::vector<Preset>& Presets() {
       nlohmann::json j = nlohmann::json::parse(file.json, nullptr, false);
       Preset preset;
       std::string error =
-          j.is_discarded() ? "malformed JSON" : ApplyParamsJson(file.json, &preset.params);
+          j.is_discarded() ? "malformed JSON"
+                           : ApplyParamsJson(file.json, &preset.params, PresetFileFields()).Line();
       if (!error.empty() || !j.contains("name") || !j.contains("years")) {
         std::fprintf(stderr, "niwa: preset file %s is invalid: %s\n", file.file, error.c_str());
         std::abort();  // a build-time data error, caught by the preset tests
@@ -33,6 +34,11 @@ const std::vector<Preset>& Presets() {
     return list;
   }();
   return presets;
+}
+
+const std::vector<std::string_view>& PresetFileFields() {
+  static const std::vector<std::string_view> fields = {"name", "title", "source", "years", "seed"};
+  return fields;
 }
 
 const Preset* FindPreset(const std::string& name) {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "params/param_table.h"
+#include "tree/tree_params.h"
 
 namespace niwa {
 
@@ -58,12 +58,15 @@ struct Branch {
   std::vector<int> flowers;  // node index of each open flower this year
 };
 
+// Most years a tree grows (the state, prunes and the CLI check against it).
+constexpr int kMaxYears = 100;
+
 // A whole grown tree plus the settings that produced it.
 struct Tree {
   std::string preset;
   uint64_t seed = 1;
   int years = 0;
-  ParamSet params;
+  TreeParams params;
   std::vector<Branch> branches;  // index == id; dead branches stay with alive == false
   bool truncated = false;        // max_internodes was reached
 };

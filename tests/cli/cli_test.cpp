@@ -6,7 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "cli_runner.h"
+#include "support/cli_runner.h"
+#include "support/expect_error.h"
 
 namespace niwa {
 namespace {
@@ -18,14 +19,6 @@ std::string TempPath(const std::string& name) {
 }
 
 bool Exists(const std::string& path) { return static_cast<bool>(std::ifstream(path)); }
-
-void ExpectOneLineError(const Result& r, const std::string& must_contain) {
-  EXPECT_EQ(r.code, 2);
-  EXPECT_TRUE(r.out.empty()) << r.out;
-  ASSERT_FALSE(r.err.empty());
-  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;  // exactly one line
-  EXPECT_NE(r.err.find(must_contain), std::string::npos) << r.err;
-}
 
 TEST(Cli, PresetsListsEveryPreset) {
   Result r = RunNiwa({"presets"});
@@ -152,7 +145,7 @@ TEST(Cli, SvgOptionsChangeTheDrawing) {
                      "--svg-width: only applies with --out FILE.svg");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--caption", "x"}), "--caption: only applies");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--svg-width", "5", "--out", path}),
-                     "--svg-width: must be in [100, 10000]");
+                     "--svg-width: must be a whole number in [100, 10000]");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--svg-leaves", "maybe", "--out", path}),
                      "--svg-leaves");
 }
@@ -273,6 +266,69 @@ TEST(CliRenderStats, BadFlagsAreOneLineErrorsWithExitCode2) {
   ExpectOneLineError(run({"--distance", "0"}), "--distance");
   ExpectOneLineError(run({"--target", "1,2"}), "--target");
   ExpectOneLineError(run({"--leaf-mode", "none"}), "--leaf-mode");
+}
+
+// 'niwa params' lists the tree table as before; a study name picks a study's table.
+TEST(Cli, ParamsListsAStudysTableWithStagesAndGroupTitlesInJson) {
+  Result plain = RunNiwa({"params"});
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_EQ(plain.out.rfind("alpha_t\tα_t\t-\tdefault 0.7\ta number in [0, 1]\t", 0), 0u);
+  EXPECT_EQ(RunNiwa({"params", "tree"}).out, plain.out);
+  Result json = RunNiwa({"params", "--json"});
+  ASSERT_EQ(json.code, 0) << json.err;
+  nlohmann::json rows = nlohmann::json::parse(json.out);
+  ASSERT_GT(rows.size(), 80u);
+  for (const auto& row : rows) {
+    EXPECT_TRUE(row.contains("stage")) << row["key"];
+    EXPECT_TRUE(row.contains("group_title")) << row["key"];
+  }
+  EXPECT_EQ(rows[0]["stage"], "grow");
+  EXPECT_EQ(RunNiwa({"presets", "tree"}).out, RunNiwa({"presets"}).out);
+  ExpectOneLineError(RunNiwa({"params", "bark-beetle"}),
+                     "study: unknown 'bark-beetle', must be one of tree");
+}
+
+// Every command file's commands are registered (the list is generated from the glob), in the order
+// of their cli-order lines.
+TEST(Cli, CommandsOfEveryStudyFileAreRegistered) {
+  ExpectOneLineError(RunNiwa({"tree", "frob"}),
+                     "unknown command 'frob', must be one of grow, mappings, sway, render-stats");
+  Result help = RunNiwa({"tree", "--help"});
+  ASSERT_EQ(help.code, 0);
+  for (const char* command : {"grow", "mappings", "sway", "render-stats"}) {
+    EXPECT_NE(help.out.find(command), std::string::npos) << command;
+  }
+}
+
+// Each flag's range is written once: the help text shows the range the check enforces.
+TEST(Cli, FlagHelpAndCheckShowTheSameRange) {
+  std::string sway_help = RunNiwa({"tree", "sway", "--help"}).out;
+  EXPECT_NE(sway_help.find("1..50 (default 4)"), std::string::npos);
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--tips", "51"}),
+                     "--tips: must be a whole number in [1, 50]");
+  EXPECT_NE(sway_help.find("m/s, 0..100 (default 5)"), std::string::npos);
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--wind", "101"}),
+                     "--wind: wind_speed: 101 is out of range; must be a number in [0, 100]");
+  std::string render_help = RunNiwa({"tree", "render-stats", "--help"}).out;
+  EXPECT_NE(render_help.find("radians, -0.1..1.5"), std::string::npos);
+  EXPECT_NE(render_help.find("metres, 0.2..400"), std::string::npos);
+  std::string grow_help = RunNiwa({"tree", "grow", "--help"}).out;
+  EXPECT_NE(grow_help.find("Years to grow, 0..100"), std::string::npos);
+  EXPECT_NE(grow_help.find("SVG width in pixels, 100..10000"), std::string::npos);
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--seed", "4294967296"}),
+                     "--seed: 4294967296 is out of range; must be a whole number in [0, "
+                     "4294967295]");
+}
+
+// A --params file may carry a preset's own fields (name, years, ...) beside the values.
+TEST(Cli, ParamsFileMayBeAPresetFile) {
+  std::string file = TempPath("preset_like.json");
+  std::ofstream(file) << R"({"name": "mine", "years": 3, "N_high": 10})";
+  Result r = RunNiwa({"tree", "grow", "--years", "3", "--params", file, "--stats"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  Result set = RunNiwa({"tree", "grow", "--years", "3", "--set", "N_high=10", "--stats"});
+  EXPECT_EQ(nlohmann::json::parse(r.out)["internodes"],
+            nlohmann::json::parse(set.out)["internodes"]);
 }
 
 }  // namespace

@@ -322,11 +322,11 @@ TEST(GltfExportTest, OutputIsDeterministic) {
 // ---- sway export (core/io/gltf_sway): skinned mesh + one animation clip ----
 
 SwayParams ShortGust() {
-  ParamSet ps;
-  EXPECT_EQ(ps.Set(ParamId::kWindSpeed, 8.0), "");
-  EXPECT_EQ(ps.Set(ParamId::kGustOn, 0.0), "");
-  EXPECT_EQ(ps.Set(ParamId::kGustOff, 5.0), "");
-  EXPECT_EQ(ps.Set(ParamId::kSwayDuration, 1.0), "");
+  TreeParams ps;
+  EXPECT_EQ(ps.Set(ParamId::kWindSpeed, 8.0).Line(), "");
+  EXPECT_EQ(ps.Set(ParamId::kGustOn, 0.0).Line(), "");
+  EXPECT_EQ(ps.Set(ParamId::kGustOff, 5.0).Line(), "");
+  EXPECT_EQ(ps.Set(ParamId::kSwayDuration, 1.0).Line(), "");
   return SwayParams(ps);
 }
 

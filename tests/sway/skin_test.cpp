@@ -70,10 +70,10 @@ Tree Sakura(int years) {
 }
 
 SwayParams Gust(double speed) {
-  ParamSet ps;
-  EXPECT_EQ(ps.Set(ParamId::kWindSpeed, speed), "");
-  EXPECT_EQ(ps.Set(ParamId::kGustOn, 0.0), "");
-  EXPECT_EQ(ps.Set(ParamId::kGustOff, 5.0), "");
+  TreeParams ps;
+  EXPECT_EQ(ps.Set(ParamId::kWindSpeed, speed).Line(), "");
+  EXPECT_EQ(ps.Set(ParamId::kGustOn, 0.0).Line(), "");
+  EXPECT_EQ(ps.Set(ParamId::kGustOff, 5.0).Line(), "");
   return SwayParams(ps);
 }
 

@@ -6,7 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "../cli/cli_runner.h"
+#include "support/cli_runner.h"
+#include "support/expect_error.h"
 
 namespace niwa {
 namespace {
@@ -18,14 +19,6 @@ std::string ReadAll(const std::string& path) {
   std::stringstream buffer;
   buffer << in.rdbuf();
   return buffer.str();
-}
-
-void ExpectOneLineError(const Result& r, const std::string& must_contain) {
-  EXPECT_EQ(r.code, 2);
-  EXPECT_TRUE(r.out.empty()) << r.out;
-  ASSERT_FALSE(r.err.empty());
-  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
-  EXPECT_NE(r.err.find(must_contain), std::string::npos) << r.err;
 }
 
 TEST(SwayCli, StatsHasTheCounts) {

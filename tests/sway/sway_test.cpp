@@ -64,9 +64,9 @@ Tree GrownTree(int years) {
 
 // Sway parameters through the one parameter table (checked setters), as the CLI builds them.
 SwayParams Params(std::initializer_list<std::pair<ParamId, double>> values) {
-  ParamSet p;
+  TreeParams p;
   for (const auto& [id, value] : values) {
-    std::string error = p.Set(id, value);
+    std::string error = p.Set(id, value).Line();
     EXPECT_EQ(error, "");
   }
   EXPECT_EQ(CheckSwayParams(p), "");
@@ -102,7 +102,7 @@ TEST(SwayParams, DefaultsAreTable31AndComeFromTheParamTable) {
   EXPECT_EQ(p.gust_front_speed, 0.0);
   EXPECT_EQ(p.wind_variation, 0.0);
   // Every field is read from its own row.
-  ParamSet set;
+  TreeParams set;
   for (ParamId id : {ParamId::kKWind,          ParamId::kKDirTrunk,     ParamId::kKDirTip,
                      ParamId::kKRev,           ParamId::kKVdel,         ParamId::kWoodDensity,
                      ParamId::kMLeaf,          ParamId::kSLeaf,         ParamId::kSwayAlpha,
@@ -111,7 +111,7 @@ TEST(SwayParams, DefaultsAreTable31AndComeFromTheParamTable) {
                      ParamId::kGustFrontSpeed, ParamId::kWindVariation, ParamId::kWindWavelength,
                      ParamId::kWindPeriod,     ParamId::kSwayDuration,  ParamId::kOmitLimit}) {
     const ParamSpec& spec = Spec(id);
-    EXPECT_EQ(set.Set(id, 0.5 * (spec.default_value + spec.max_value)), "") << spec.key;
+    EXPECT_EQ(set.Set(id, 0.5 * (spec.default_value + spec.max_value)).Line(), "") << spec.key;
   }
   SwayParams q(set);
   auto mid = [](ParamId id) { return 0.5 * (Spec(id).default_value + Spec(id).max_value); };
@@ -136,23 +136,25 @@ TEST(SwayParams, DefaultsAreTable31AndComeFromTheParamTable) {
   EXPECT_EQ(q.wind_wavelength, mid(ParamId::kWindWavelength));
   EXPECT_EQ(q.wind_period, mid(ParamId::kWindPeriod));
   EXPECT_EQ(q.duration, mid(ParamId::kSwayDuration));
-  EXPECT_EQ(set.Set(ParamId::kGravityPreload, 0), "");
+  EXPECT_EQ(set.Set(ParamId::kGravityPreload, 0).Line(), "");
   EXPECT_FALSE(SwayParams(set).gravity_preload);
 }
 
 TEST(SwayParams, RangeAndCrossChecksAreOneLine) {
-  ParamSet p;
-  EXPECT_EQ(p.Set(ParamId::kKRev, 1.5), "K_rev: 1.5 is out of range; must be a number in [0, 1]");
+  TreeParams p;
+  EXPECT_EQ(p.Set(ParamId::kKRev, 1.5).Line(),
+            "K_rev: 1.5 is out of range; must be a number in [0, 1]");
   EXPECT_EQ(p.Get(ParamId::kKRev), 0.8);  // unchanged after a rejected value
-  EXPECT_EQ(p.SetFromText("gravity_preload", "0.5"),
+  EXPECT_EQ(p.SetFromText("gravity_preload", "0.5").Line(),
             "gravity_preload: 0.5 is out of range; must be a whole number in [0, 1]");
-  EXPECT_EQ(p.SetFromText("wind_speed", "abc"), "wind_speed: 'abc' is not a number in [0, 100]");
-  EXPECT_EQ(p.SetFromText("wind_variation", "1.2"),
+  EXPECT_EQ(p.SetFromText("wind_speed", "abc").Line(),
+            "wind_speed: 'abc' is not a number in [0, 100]");
+  EXPECT_EQ(p.SetFromText("wind_variation", "1.2").Line(),
             "wind_variation: 1.2 is out of range; must be a number in [0, 1]");
-  EXPECT_EQ(p.SetFromText("wind_speed", "12.5"), "");
+  EXPECT_EQ(p.SetFromText("wind_speed", "12.5").Line(), "");
   EXPECT_EQ(SwayParams(p).wind_speed, 12.5);
   EXPECT_EQ(CheckSwayParams(p), "");
-  EXPECT_EQ(p.Set(ParamId::kGustOff, 0.5), "");
+  EXPECT_EQ(p.Set(ParamId::kGustOff, 0.5).Line(), "");
   EXPECT_EQ(CheckSwayParams(p), "gust_off: 0.5 must be greater than gust_on (1)");
 }
 

@@ -31,7 +31,7 @@ GrowRequest Fig218(int seed, int years) {
                            {ParamId::kPsiL, 45.0},
                            {ParamId::kPLYoung, 0.0},
                            {ParamId::kPLOld, 0.0}}) {
-    EXPECT_EQ(r.params.Set(id, value), "");
+    EXPECT_EQ(r.params.Set(id, value).Line(), "");
   }
   r.seed = static_cast<std::uint64_t>(seed);
   r.years = years;

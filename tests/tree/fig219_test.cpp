@@ -26,7 +26,7 @@ Tree Grow15(const std::string& name, std::uint64_t seed,
   GrowRequest r;
   r.preset = name;
   r.params = preset->params;
-  for (const auto& [id, value] : changes) EXPECT_EQ(r.params.Set(id, value), "");
+  for (const auto& [id, value] : changes) EXPECT_EQ(r.params.Set(id, value).Line(), "");
   r.seed = seed;
   r.years = 15;
   return GrowTree(r);

@@ -24,35 +24,37 @@ GrowRequest RequestFor(const std::string& preset, int years, uint64_t seed = 1) 
 }
 
 TEST(HormoneRamp, InterpolatesTableRangesByHormone) {
-  ParamSet p = FindPreset("sakura")->params;  // N 6 ~ 25, H_sat 0.58
+  TreeParams p = FindPreset("sakura")->params;  // N 6 ~ 25, H_sat 0.58
   EXPECT_FLOAT_EQ(HormoneRamp(p, 0.0f, ParamId::kNLow, ParamId::kNHigh), 6.0f);
   EXPECT_FLOAT_EQ(HormoneRamp(p, 0.29f, ParamId::kNLow, ParamId::kNHigh), 15.5f);
   EXPECT_FLOAT_EQ(HormoneRamp(p, 3.0f, ParamId::kNLow, ParamId::kNHigh), 25.0f);
   EXPECT_FLOAT_EQ(HormoneRamp(p, 0.29f, ParamId::kBLLow, ParamId::kBLHigh), 0.065f);  // 0.12 ~ 0.01
-  p.Set(ParamId::kUseHormone, 0);
+  EXPECT_TRUE(p.Set(ParamId::kUseHormone, 0).ok());
   EXPECT_FLOAT_EQ(HormoneRamp(p, 0.0f, ParamId::kNLow, ParamId::kNHigh), 25.0f);
 }
 
 TEST(ShootLengthRamp, LengthStepMovesLongAndDwarfShootsApartAtTheThreshold) {
-  ParamSet p = FindPreset("keyaki")->params;  // N 7 ~ 10, D 2 ~ 5 cm, H_sat 0.69
-  const float h = 0.276f;                     // share t = 0.4 of the ranges
+  TreeParams p = FindPreset("keyaki")->params;  // N 7 ~ 10, D 2 ~ 5 cm, H_sat 0.69
+  const float h = 0.276f;                       // share t = 0.4 of the ranges
   // length_step 0 (every preset): HormoneRamp's value for long and dwarf shoots alike.
   for (bool dwarf : {false, true}) {
     EXPECT_FLOAT_EQ(ShootLengthRamp(p, h, dwarf, ParamId::kNLow, ParamId::kNHigh),
                     HormoneRamp(p, h, ParamId::kNLow, ParamId::kNHigh));
   }
   EXPECT_FLOAT_EQ(ShootLengthRamp(p, h, false, ParamId::kDLow, ParamId::kDHigh), 3.2f);
-  p.Set(ParamId::kLengthStep, 0.5);
+  EXPECT_TRUE(p.Set(ParamId::kLengthStep, 0.5).ok());
   // Long: t + 0.5 (1 - t) = 0.7 -> D 2 + 3 x 0.7 = 4.1 cm, N 9.1; dwarf: 0.5 t = 0.2 -> 2.6 cm,
   // N 7.6.
   EXPECT_FLOAT_EQ(ShootLengthRamp(p, h, false, ParamId::kDLow, ParamId::kDHigh), 4.1f);
   EXPECT_FLOAT_EQ(ShootLengthRamp(p, h, false, ParamId::kNLow, ParamId::kNHigh), 9.1f);
   EXPECT_FLOAT_EQ(ShootLengthRamp(p, h, true, ParamId::kDLow, ParamId::kDHigh), 2.6f);
   EXPECT_FLOAT_EQ(ShootLengthRamp(p, h, true, ParamId::kNLow, ParamId::kNHigh), 7.6f);
-  p.Set(ParamId::kLengthStep, 1);  // a pure step: dwarf shoots at 'a', long shoots at 'b'
+  EXPECT_TRUE(
+      p.Set(ParamId::kLengthStep, 1).ok());  // a pure step: dwarf shoots at 'a', long shoots at 'b'
   EXPECT_FLOAT_EQ(ShootLengthRamp(p, 0.01f, false, ParamId::kDLow, ParamId::kDHigh), 5.0f);
   EXPECT_FLOAT_EQ(ShootLengthRamp(p, 0.6f, true, ParamId::kDLow, ParamId::kDHigh), 2.0f);
-  p.Set(ParamId::kUseHormone, 0);  // hormone off: every shoot long, at 'b' (2.5.1)
+  EXPECT_TRUE(
+      p.Set(ParamId::kUseHormone, 0).ok());  // hormone off: every shoot long, at 'b' (2.5.1)
   EXPECT_FLOAT_EQ(ShootLengthRamp(p, 0.0f, false, ParamId::kNLow, ParamId::kNHigh), 10.0f);
 }
 
@@ -108,15 +110,15 @@ TEST(Branching, BinaryTreeSplitsInTwoWithTheTableAngles) {
 // Straight shoot (no light, no bending) with lateral buds on every node.
 Tree StraightShoot(double phi, int buds_per_node) {
   GrowRequest r = RequestFor("sakura", 1);
-  r.params.Set(ParamId::kUseLight, 0);
-  r.params.Set(ParamId::kUseHormone, 0);
-  r.params.Set(ParamId::kBGLow, 0);
-  r.params.Set(ParamId::kBGHigh, 0);
-  r.params.Set(ParamId::kBLLow, 0);
-  r.params.Set(ParamId::kBLHigh, 0);
-  r.params.Set(ParamId::kPhi, phi);
-  r.params.Set(ParamId::kBL, buds_per_node);
-  r.params.Set(ParamId::kPsiL, 90);
+  EXPECT_TRUE(r.params.Set(ParamId::kUseLight, 0).ok());
+  EXPECT_TRUE(r.params.Set(ParamId::kUseHormone, 0).ok());
+  EXPECT_TRUE(r.params.Set(ParamId::kBGLow, 0).ok());
+  EXPECT_TRUE(r.params.Set(ParamId::kBGHigh, 0).ok());
+  EXPECT_TRUE(r.params.Set(ParamId::kBLLow, 0).ok());
+  EXPECT_TRUE(r.params.Set(ParamId::kBLHigh, 0).ok());
+  EXPECT_TRUE(r.params.Set(ParamId::kPhi, phi).ok());
+  EXPECT_TRUE(r.params.Set(ParamId::kBL, buds_per_node).ok());
+  EXPECT_TRUE(r.params.Set(ParamId::kPsiL, 90).ok());
   return GrowTree(r);
 }
 
@@ -171,7 +173,7 @@ TEST(Phyllotaxis, TerminalShootContinuesTheSpiral) {
                            {ParamId::kPsiT, 0.0},
                            {ParamId::kPTlL, 0.0},
                            {ParamId::kPLYoung, 0.0}}) {
-    ASSERT_EQ(r.params.Set(id, value), "");
+    ASSERT_EQ(r.params.Set(id, value).Line(), "");
   }
   Tree tree = GrowTree(r);
   const Branch& parent = tree.branches[0];
@@ -192,8 +194,8 @@ TEST(Phyllotaxis, TerminalShootContinuesTheSpiral) {
 
 TEST(Bending, StepCapsOfEquations27And29Hold) {
   GrowRequest r = RequestFor("sakura", 6);
-  r.params.Set(ParamId::kBLLow, 1);  // strong phototropism so the caps bind
-  r.params.Set(ParamId::kBLHigh, 1);
+  EXPECT_TRUE(r.params.Set(ParamId::kBLLow, 1).ok());  // strong phototropism so the caps bind
+  EXPECT_TRUE(r.params.Set(ParamId::kBLHigh, 1).ok());
   Tree tree = GrowTree(r);
   float cap_b = 20.0f, cap_n = 15.0f;
   int checked = 0;
@@ -213,7 +215,7 @@ TEST(Bending, StepCapsOfEquations27And29Hold) {
 
 TEST(LightDeath, ShootsBelowKTimesHalfAlwaysDieAndAboveKNeverDo) {
   GrowRequest r = RequestFor("sakura", 8);
-  r.params.Set(ParamId::kKDeath, 0.5);
+  EXPECT_TRUE(r.params.Set(ParamId::kKDeath, 0.5).ok());
   Tree tree = GrowTree(r);
   int dead = 0;
   for (const Branch& b : tree.branches) {
@@ -227,7 +229,7 @@ TEST(LightDeath, ShootsBelowKTimesHalfAlwaysDieAndAboveKNeverDo) {
     dead += b.alive ? 0 : 1;
   }
   EXPECT_GT(dead, 0);
-  r.params.Set(ParamId::kKDeath, 0.0);
+  EXPECT_TRUE(r.params.Set(ParamId::kKDeath, 0.0).ok());
   for (const Branch& b : GrowTree(r).branches) EXPECT_TRUE(b.alive);
 }
 
@@ -235,14 +237,14 @@ TEST(LightDeath, ShootsBelowKTimesHalfAlwaysDieAndAboveKNeverDo) {
 // and a dimmer L (less hormone by eq. 2.2, more deaths) grows a smaller tree.
 TEST(LightScale, MultipliesTheLightOfEveryShoot) {
   GrowRequest r = RequestFor("sakura", 1);
-  r.params.Set(ParamId::kLightScale, 1.0);
+  EXPECT_TRUE(r.params.Set(ParamId::kLightScale, 1.0).ok());
   float open_sky = GrowTree(r).branches[0].light;
   EXPECT_NEAR(open_sky, 1.0f, 1e-3f);  // the grid removes the shoot's own sphere approximately
-  r.params.Set(ParamId::kLightScale, 0.6);
+  EXPECT_TRUE(r.params.Set(ParamId::kLightScale, 0.6).ok());
   EXPECT_FLOAT_EQ(GrowTree(r).branches[0].light, 0.6f * open_sky);
   r.years = 10;
   std::size_t dim = GrowTree(r).branches.size();
-  r.params.Set(ParamId::kLightScale, 1.0);
+  EXPECT_TRUE(r.params.Set(ParamId::kLightScale, 1.0).ok());
   EXPECT_LT(2 * dim, GrowTree(r).branches.size());
 }
 
@@ -323,8 +325,8 @@ TEST(Pruning, CutPartsNeverReturnAndRegrowthComesFromDormancyBreak) {
   EXPECT_GT(ComputeStats(tree).internodes, internodes_after_prune);
 
   // Without dormancy break there is nothing left to grow from.
-  r.params.Set(ParamId::kDeltaL, 0);
-  r.params.Set(ParamId::kDeltaD, 0);
+  EXPECT_TRUE(r.params.Set(ParamId::kDeltaL, 0).ok());
+  EXPECT_TRUE(r.params.Set(ParamId::kDeltaD, 0).ok());
   Grower still(r);
   while (still.year() < 10) still.GrowYear();
   int before = ComputeStats(still.tree()).internodes;
@@ -352,21 +354,24 @@ TEST(Pruning, IdlePrunesAreNamedWithTheReason) {
   Tree tree = GrowTree(r);
   std::size_t by_year_3 = 0;
   while (tree.branches[by_year_3].year <= 3) ++by_year_3;
-  EXPECT_EQ(IdlePruneReason({6, 1, -1}, tree), "");
-  EXPECT_EQ(IdlePruneReason({6, -1, 4}, tree), "");
-  EXPECT_EQ(IdlePruneReason({3, static_cast<int>(by_year_3) - 1, -1}, tree), "");
-  EXPECT_EQ(IdlePruneReason({7, 1, -1}, tree), "year 7 is after the last year grown (6)");
+  EXPECT_EQ(IdlePruneReason({6, 1, -1}, tree).message(), "");
+  EXPECT_EQ(IdlePruneReason({6, -1, 4}, tree).message(), "");
+  EXPECT_EQ(IdlePruneReason({3, static_cast<int>(by_year_3) - 1, -1}, tree).message(), "");
+  EXPECT_EQ(IdlePruneReason({7, 1, -1}, tree).message(), "year 7 is after the last year grown (6)");
   // The first shoot of year 4 did not exist yet at year 3.
-  EXPECT_EQ(IdlePruneReason({3, static_cast<int>(by_year_3), -1}, tree),
+  EXPECT_EQ(IdlePruneReason({3, static_cast<int>(by_year_3), -1}, tree).message(),
             "the tree had no branch b" + std::to_string(by_year_3) + " by year 3 (ids 0 to " +
                 std::to_string(by_year_3 - 1) + ")");
-  EXPECT_EQ(IdlePruneReason({5, 999999, -1}, tree).rfind("the tree had no branch b999999", 0), 0u);
-  EXPECT_EQ(IdlePruneReason({4, -1, 5}, tree), "nothing had grown since year 5 by year 4");
+  EXPECT_EQ(
+      IdlePruneReason({5, 999999, -1}, tree).message().rfind("the tree had no branch b999999", 0),
+      0u);
+  EXPECT_EQ(IdlePruneReason({4, -1, 5}, tree).message(),
+            "nothing had grown since year 5 by year 4");
 }
 
 TEST(Limits, MaxInternodesStopsGrowthAndFlagsTruncation) {
   GrowRequest r = RequestFor("sakura", 15);
-  r.params.Set(ParamId::kMaxInternodes, 1000);
+  EXPECT_TRUE(r.params.Set(ParamId::kMaxInternodes, 1000).ok());
   Tree tree = GrowTree(r);
   EXPECT_TRUE(tree.truncated);
   EXPECT_LE(ComputeStats(tree).internodes, 1000);
@@ -383,7 +388,7 @@ TEST(Flowers, SakuraDwarfShootLateralsBloom) {
     }
   }
   GrowRequest r = RequestFor("sakura", 12);
-  r.params.Set(ParamId::kDwarfLateralFlowers, 0);
+  EXPECT_TRUE(r.params.Set(ParamId::kDwarfLateralFlowers, 0).ok());
   EXPECT_EQ(ComputeStats(GrowTree(r)).flowers, 0);
 }
 
@@ -403,13 +408,13 @@ struct CutBack {
 
 CutBack GrowCutBack(double threshold, double drop_ratio, int most) {
   GrowRequest r = RequestFor("sakura", 5);
-  r.params.Set(ParamId::kUseLight, 0);
-  r.params.Set(ParamId::kHBL, threshold);
-  r.params.Set(ParamId::kDeltaL, 1);
-  r.params.Set(ParamId::kBBL, most);
-  r.params.Set(ParamId::kHBD, drop_ratio);
-  r.params.Set(ParamId::kDeltaD, 1);
-  r.params.Set(ParamId::kBBD, most);
+  EXPECT_TRUE(r.params.Set(ParamId::kUseLight, 0).ok());
+  EXPECT_TRUE(r.params.Set(ParamId::kHBL, threshold).ok());
+  EXPECT_TRUE(r.params.Set(ParamId::kDeltaL, 1).ok());
+  EXPECT_TRUE(r.params.Set(ParamId::kBBL, most).ok());
+  EXPECT_TRUE(r.params.Set(ParamId::kHBD, drop_ratio).ok());
+  EXPECT_TRUE(r.params.Set(ParamId::kDeltaD, 1).ok());
+  EXPECT_TRUE(r.params.Set(ParamId::kBBD, most).ok());
   r.prunes.push_back({3, -1, 2});  // after year 3 remove all growth since year 2
   Grower grower(r);
   while (grower.year() < 3) grower.GrowYear();

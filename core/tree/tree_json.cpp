@@ -1,45 +1,13 @@
-// JSON reading and writing of parameters and trees with nlohmann-json.
-#include "io/json_io.h"
+// JSON writing of whole trees with nlohmann-json.
+#include "tree/tree_json.h"
 
 #include <nlohmann/json.hpp>
 
+#include "params/param_json.h"
+
 namespace niwa {
 
-using nlohmann::json;
 using nlohmann::ordered_json;
-
-std::string ApplyParamsJson(const std::string& text, ParamSet* params) {
-  json document = json::parse(text, nullptr, /*allow_exceptions=*/false);
-  if (document.is_discarded()) return "params: malformed JSON";
-  if (!document.is_object()) return "params: the JSON must be an object of key: number";
-  const json& values = document.contains("params") ? document["params"] : document;
-  if (!values.is_object()) return "params: 'params' must be an object of key: number";
-  ParamSet result = *params;
-  for (auto it = values.begin(); it != values.end(); ++it) {
-    std::optional<ParamId> id = FindParam(it.key());
-    if (!id) {
-      if (&values == &document &&
-          (it.key() == "name" || it.key() == "title" || it.key() == "source" ||
-           it.key() == "years" || it.key() == "seed")) {
-        continue;
-      }
-      return "unknown parameter '" + it.key().substr(0, 64) + "'";
-    }
-    if (!it.value().is_number()) {
-      return it.key() + ": must be " + RangeText(Spec(*id));
-    }
-    std::string error = result.Set(*id, it.value().get<double>());
-    if (!error.empty()) return error;
-  }
-  *params = result;
-  return "";
-}
-
-std::string ParamsToJson(const ParamSet& params, int indent) {
-  ordered_json out = ordered_json::object();
-  for (const ParamSpec& spec : ParamTable()) out[spec.key] = params.Get(spec.id);
-  return out.dump(indent);
-}
 
 namespace {
 
@@ -115,22 +83,6 @@ std::string TreeToJson(const Tree& tree) {
   }
   out["branches"] = std::move(branches);
   return out.dump(1);
-}
-
-std::string ParamTableJson() {
-  ordered_json out = ordered_json::array();
-  for (const ParamSpec& s : ParamTable()) {
-    out.push_back({{"key", s.key},
-                   {"symbol", s.symbol},
-                   {"unit", s.unit},
-                   {"default", s.default_value},
-                   {"min", s.min_value},
-                   {"max", s.max_value},
-                   {"integer", s.integer},
-                   {"group", s.group},
-                   {"help", s.help}});
-  }
-  return out.dump();
 }
 
 }  // namespace niwa

@@ -1,0 +1,102 @@
+// Generic hash codec for shared links; hostile input is clamped or dropped with a notice.
+#include "io/hash_codec.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <optional>
+
+namespace niwa {
+namespace {
+
+int HexDigit(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  return c - 'A' + 10;
+}
+
+}  // namespace
+
+std::string PercentDecode(std::string_view text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    char c = text[i];
+    if (c == '+') {
+      out += ' ';
+    } else if (c == '%' && i + 2 < text.size() &&
+               std::isxdigit(static_cast<unsigned char>(text[i + 1])) &&
+               std::isxdigit(static_cast<unsigned char>(text[i + 2]))) {
+      out += static_cast<char>(HexDigit(text[i + 1]) * 16 + HexDigit(text[i + 2]));
+      i += 2;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+std::string Printable(std::string_view text) {
+  std::string out;
+  for (char c : text.substr(0, 40)) {
+    bool markup = c == '<' || c == '>' || c == '&' || c == '"' || c == '\'';
+    out += (c >= 32 && c < 127 && !markup) ? c : '?';
+  }
+  return out;
+}
+
+HashPairs SplitHash(std::string_view hash) {
+  std::string_view text = hash.substr(0, kMaxHashLength);
+  if (!text.empty() && text[0] == '#') text.remove_prefix(1);
+  HashPairs pairs;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t end = text.find('&', start);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view item = text.substr(start, end - start);
+    if (!item.empty()) {
+      std::size_t eq = item.find('=');
+      std::string key = PercentDecode(item.substr(0, eq));
+      std::string value = eq == std::string_view::npos ? "" : PercentDecode(item.substr(eq + 1));
+      pairs.emplace_back(std::move(key), std::move(value));
+    }
+    start = end + 1;
+  }
+  return pairs;
+}
+
+bool ApplyHashParam(std::string_view key, std::string_view value, std::string_view prefix,
+                    ParamSet* params, std::vector<std::string>* notices) {
+  if (key.substr(0, prefix.size()) != prefix) return false;
+  std::optional<std::size_t> row = params->table().Find(key.substr(prefix.size()));
+  if (!row) return false;
+  const ParamSpec& spec = params->table().row(*row);
+  const std::string name(key);
+  std::optional<double> number = ParseNumber(value);
+  if (!number) {
+    notices->push_back(name + ": '" + Printable(value) + "' dropped, must be " + RangeText(spec));
+    return true;
+  }
+  double clamped = std::min(spec.max_value, std::max(spec.min_value, *number));
+  if (spec.integer) clamped = std::round(clamped);
+  if (clamped != *number) {
+    notices->push_back(name + ": clamped to " + FormatNumber(clamped) + ", must be " +
+                       RangeText(spec));
+  }
+  // Clamped into the row's range (and whole when integer), so the check passes.
+  if (!params->Set(*row, clamped).ok()) notices->push_back(name + ": dropped");
+  return true;
+}
+
+std::string EncodeChangedParams(const ParamSet& params, const ParamSet& base,
+                                std::string_view prefix) {
+  std::string out;
+  for (std::size_t i = 0; i < params.size(); ++i) {
+    if (params.Get(i) != base.Get(i)) {
+      out +=
+          "&" + std::string(prefix) + params.table().row(i).key + "=" + FormatNumber(params.Get(i));
+    }
+  }
+  return out;
+}
+
+}  // namespace niwa

@@ -1,0 +1,38 @@
+// The generic share-link hash codec: "k=v&k=v" split with percent-decoding, printable notices, and
+// clamp-with-notice of table rows, for any parameter table and an optional key prefix ("ivy." on a
+// composed page). Does not: know any study's state fields (preset, seed, prunes, camera): those
+// are read by core/<study>/<study>_state over these functions.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "params/param_table.h"
+
+namespace niwa {
+
+using HashPairs = std::vector<std::pair<std::string, std::string>>;
+
+// Longest hash read; the rest is ignored.
+constexpr std::size_t kMaxHashLength = 16384;
+
+// Splits "#k=v&k2=v2" (the '#' optional) into decoded (key, value) pairs in order; empty items are
+// skipped, a missing '=' gives an empty value. '+' is a space and %XX a byte.
+HashPairs SplitHash(std::string_view hash);
+std::string PercentDecode(std::string_view text);
+// Text safe to show in a notice: at most 40 characters, without control or markup characters
+// (each becomes '?'); the page shows notices as text, the CLI as one line.
+std::string Printable(std::string_view text);
+
+// If key is prefix + a row key of params' table, sets that row from the text, clamped into its
+// range (and rounded when whole numbers only) with a notice, or dropped with a notice when the
+// text is not a number; returns true. False when the key is not a row of the table.
+bool ApplyHashParam(std::string_view key, std::string_view value, std::string_view prefix,
+                    ParamSet* params, std::vector<std::string>* notices);
+// "&k=v" for every row whose value differs from base (same table), in row order, keys prefixed.
+std::string EncodeChangedParams(const ParamSet& params, const ParamSet& base,
+                                std::string_view prefix = "");
+
+}  // namespace niwa

@@ -1,0 +1,59 @@
+// The tree state flags of the niwa CLI, over the core's one state resolver.
+#include "tree_cli.h"
+
+#include "cli_common.h"
+#include "params/param_json.h"
+#include "tree/presets.h"
+
+namespace niwa::cli {
+
+void AddStateOptions(CLI::App* cmd, const ParamTable& table, StateOptions* o) {
+  const std::string params_command =
+      table.name() == "tree" ? "'niwa params'" : "'niwa params " + table.name() + "'";
+  cmd->add_option("--preset", o->preset, "Species preset (see 'niwa presets')");
+  cmd->add_option("--years", o->years,
+                  "Years to grow, " + RangeHelp(0, kMaxYears) + " (default: the preset's)");
+  cmd->add_option("--seed", o->seed,
+                  "Random seed, " + RangeHelp(0, kMaxSeed) + " (default: the preset's)");
+  cmd->add_option("--set", o->sets,
+                  "Override a parameter: key=value (repeatable; see " + params_command + ")");
+  cmd->add_option("--params", o->params_file, "JSON file of parameters {\"key\": value, ...}");
+  cmd->add_option(
+      "--prune", o->prunes,
+      "Prune after a year: YEAR:bID (branch id from the JSON) or YEAR:sinceY (repeatable)");
+  cmd->add_option("--url", o->url,
+                  "A share-link hash (preset=...&seed=...); other flags override it");
+}
+
+TreeState ResolveTreeState(const StateOptions& o, const CLI::App& cmd) {
+  TreeState state;
+  if (!o.url.empty()) {
+    std::vector<std::string> notices;
+    state = DecodeTreeHash(o.url, &notices);
+    if (!notices.empty()) throw BadInput{"--url: " + notices.front()};
+  }
+  // --preset replaces the url's preset (and its values) only when it names another one.
+  if ((cmd.count("--preset") || o.url.empty()) && (o.url.empty() || state.preset != o.preset)) {
+    Check(AsFlag(SetStatePreset(o.preset, &state), "--preset"));
+  }
+  if (cmd.count("--years")) Check(AsFlag(SetStateYears(o.years, &state), "--years"));
+  if (cmd.count("--seed")) {
+    Check(AsFlag(SetStateSeed(static_cast<double>(o.seed), &state), "--seed"));
+  }
+  if (!o.params_file.empty()) {
+    Result<std::string> text = ReadFile(o.params_file, "--params");
+    Check(text.status());
+    Check(ApplyParamsJson(*text, &state.params, PresetFileFields())
+              .Within("--params " + o.params_file));
+  }
+  for (const std::string& item : o.sets)
+    Check(state.params.SetFromAssignment(item).Within("--set"));
+  for (const std::string& item : o.prunes) Check(AsFlag(AddStatePrune(item, &state), "--prune"));
+  return state;
+}
+
+void CheckPrunes(const GrowRequest& request, const Tree& tree) {
+  for (const Prune& prune : request.prunes) Check(IdlePruneReason(prune, tree).Within("--prune"));
+}
+
+}  // namespace niwa::cli

@@ -1,0 +1,33 @@
+// The tree state flags shared by every command that grows a tree (tree grow, mappings, sway,
+// render-stats): --preset, --years, --seed, --set, --params, --prune, --url, resolved through
+// core/tree/tree_state. Does not: register commands (native_cli/*_commands.cpp do).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "tree/tree.h"
+#include "tree/tree_state.h"
+
+namespace niwa::cli {
+
+struct StateOptions {
+  std::string preset = kDefaultPreset;
+  int years = -1;  // -1: the preset's own
+  uint64_t seed = 0;
+  std::vector<std::string> sets, prunes;
+  std::string params_file, url;
+};
+
+// Adds the state flags of `table` (its --set keys; see 'niwa params') to cmd.
+void AddStateOptions(CLI::App* cmd, const ParamTable& table, StateOptions* options);
+
+// The state the flags give: --url (any notice is an error), then --preset, --years, --seed,
+// --params, --set and --prune on top, each through the tree_state setters. Throws BadInput.
+TreeState ResolveTreeState(const StateOptions& options, const CLI::App& cmd);
+
+// A prune that cuts nothing is bad input (a mistyped id or year), found once the tree has grown.
+void CheckPrunes(const GrowRequest& request, const Tree& tree);
+
+}  // namespace niwa::cli
