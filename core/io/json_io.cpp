@@ -117,6 +117,29 @@ std::string TreeToJson(const Tree& tree) {
   return out.dump(1);
 }
 
+namespace {
+
+// What an edit of a row invalidates (the web page reruns only that): sway and wind rows restart
+// the sway, render rows redraw, every other row regrows the tree.
+const char* ParamStage(const std::string& group) {
+  if (group == "sway" || group == "wind") return "sway";
+  if (group == "render") return "view";
+  return "grow";
+}
+
+// The panel's section title of a group.
+std::string ParamGroupTitle(const std::string& group) {
+  if (group == "dormancy_break") return "Dormancy break";
+  if (group == "shape") return "Shape and limits";
+  std::string title = group;
+  for (char& c : title) c = c == '_' ? ' ' : c;
+  if (!title.empty() && title[0] >= 'a' && title[0] <= 'z')
+    title[0] = static_cast<char>(title[0] - 'a' + 'A');
+  return title;
+}
+
+}  // namespace
+
 std::string ParamTableJson() {
   ordered_json out = ordered_json::array();
   for (const ParamSpec& s : ParamTable()) {
@@ -128,6 +151,8 @@ std::string ParamTableJson() {
                    {"max", s.max_value},
                    {"integer", s.integer},
                    {"group", s.group},
+                   {"group_title", ParamGroupTitle(s.group)},
+                   {"stage", ParamStage(s.group)},
                    {"help", s.help}});
   }
   return out.dump();

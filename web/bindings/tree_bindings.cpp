@@ -1,52 +1,37 @@
-// The one embind file: exposes the Niwa core to the Web Worker (web/worker.js).
+// The tree study's bindings: TreeSession, one tree grown year by year for the worker
+// (web/worker/tree_handler.js), with its mesh, sway, hybrid views and exports.
 //
-// Everything that crosses from JavaScript arrives as text (JSON or a URL hash) and is checked by
-// the core itself (FindPreset, ParamSet::Set / SetFromText, ParsePrune). Nothing here throws or
-// aborts on bad input: errors come back as strings, either as the "error" field of a JSON answer or
-// from GrowSession::error().
-//
-// Exposed to JS:
-//   paramTableJson()      -> the parameter table [{key, symbol, unit, default, min, max, integer,
-//   group, help}] presetsJson()         -> [{name, title, years, seed, source, params:{key:value}}]
-//   decodeHash(hash)      -> {state:{preset, seed, years, params, prunes, camera}, notices:[...]}
-//   encodeHash(stateJson) -> {hash} or {error}
-//   GrowSession(stateJson): error(), years(), year(), growYear(), done(), buildMesh(), statsJson(),
-//                           barkPositions() ... flowersIndices() as typed-array views into WASM
-//                           memory; barkBranchIds() (Uint32, one per bark vertex);
-//                           branchParents() (Int32 parent id per branch, -1 at the root);
-//                           buildGlb() -> "" or error, then glbBytes() (Uint8 view of the .glb);
-//                           paramsJson() (ParamsToJson of the state's parameters);
-//                           leavesUvs() (uv per leaf vertex: v = 0 at the petiole, 1 at the tip);
-//                           sway skinning of the mesh (core/sway/skin.h): barkJoints() /
-//                           barkWeights() (and leaves*, flowers*), one node point and one eq. 3.15
-//                           weight per vertex; swayNodes() node points; swayStart() -> "" or error
-//                           (rest pose, time 0, the state's wind); swayStep(n) advances n steps of
-//                           dt and returns the time; swayPoses() (16 floats per node point, see
-//                           WriteSwayPoses); swayDt(), swayDuration(), swayWindSpeed() (m/s now,
-//                           at the world origin);
-//                           swayStartAt(origins) -> "" or error: the same tree swayed as N
-//                           instances (the grove page): origins = JS array of 3 N numbers, each
-//                           instance's base in the world in METRES (x, y, z; converted to the
-//                           model's cm), one SwaySimulator per instance, so each feels the wind
-//                           field (travelling front and wave) at its own place; swayStep(n) then
-//                           steps all N and swayPoses() holds N blocks of swayNodes() x 16 floats,
-//                           instance k's node point j at floats (k swayNodes() + j) 16;
-//                           swayInstances() -> N (1 after swayStart(), 0 before any start);
-//                           hybrid rendering (thesis ch. 4, core/render): buildHybrid() -> "" or
-//                           error (scene + atlas geometry: atlasSize(), atlasBarkPositions() ...
-//                           atlasFlowersIndices(), clip-space triangles that paint the card atlas);
-//                           hybridView(ex,ey,ez, tx,ty,tz, fovY, width, height) -> table 4.1 JSON
-//                           and the draw list: card{Positions,Uvs,Indices,Joints,Weights}(),
-//                           line{Positions,Colors,Widths,Joints,Weights}() (eq. 4.1 with
-//                           hysteresis against the previous view, eq. 4.2 colours);
-//                           hybridViewSlot(slot, ex,ey,ez, tx,ty,tz, fovY, width, height): the same
-//                           with the hysteresis against the previous view OF THAT SLOT (0..255), so
-//                           one tree can keep several draw lists (the grove page: one per distance
-//                           band); the slots are cleared by buildHybrid().
-//
-// The mesh views (emscripten::typed_memory_view) point into the WASM heap: they stay valid only
-// until the next call that may allocate. The worker copies each one ONCE into a fresh ArrayBuffer
-// right away and transfers that buffer to the main thread (no second copy).
+// JS BINDINGS DESIGN
+// - One WASM module (niwa_web) holds every study: one EMSCRIPTEN_BINDINGS(niwa_<study>) block per
+//   file (this one is niwa_tree; the table, presets and hash codec are common_bindings.cpp).
+// - Everything that crosses from JavaScript arrives as text (JSON or a URL hash) and is checked by
+//   the core itself (FindPreset, ParamSet::Set / SetFromText, ParsePrune). Nothing here throws or
+//   aborts on bad input: errors come back as one line, either as the "error" field of a JSON
+//   answer or as a returned string ("" = success), or from TreeSession::error().
+// - Buffers leave through ONE generic accessor, buffers(group) -> {name: typed view} (buffers.h),
+//   not one getter per buffer. The views point into the WASM heap and stay valid only until the
+//   next call that may allocate: the worker copies each one ONCE right away and transfers that
+//   copy to the main thread (web/worker/transfer.js). Groups:
+//     "bark" | "leaves" | "flowers"   positions, normals (Float32 xyz), indices (Uint32), joints
+//                                     (Uint32, node point per vertex) and weights (Float32,
+//                                     eq. 3.15) of the sway skin (core/sway/skin.h); leaves also
+//                                     uvs (v = 0 at the petiole); bark also branchIds (Uint32 per
+//                                     vertex) and branchParents (Int32 per branch, -1 at the root)
+//     "atlas.bark" | "atlas.leaves" | "atlas.flowers"   positions, normals, indices: clip-space
+//                                     triangles that paint the card atlas (after buildHybrid)
+//     "cards"                         positions, uvs, indices, joints, weights (after hybridView)
+//     "lines"                         positions, colors, widths, joints, weights (after hybridView)
+//     "sway"                          poses (16 floats per node point and instance, WriteSwayPoses)
+//     "glb"                           bytes (Uint8, after buildGlb)
+//   An unknown group gives null.
+// - Calls, in order: TreeSession(stateJson) -> error(), hash(), years(); growYear() until done();
+//   buildMesh(); statsJson(); buffers(...). restate(stateJson) swaps in a state that grows the same
+//   tree (sway and render edits: re-skins, clears the hybrid scene). swayStart() /
+//   swayStartAt(origins in metres, 3 per instance) -> "" or error, swayStep(n) -> time, swayDt(),
+//   swayDuration(), swayWindSpeed(), swayInstances(). buildHybrid() -> "" or error, atlasSize(),
+//   renderMode(), hybridView(ex,ey,ez, tx,ty,tz, fovY, width, height) -> table 4.1 JSON,
+//   hybridViewSlot(slot, ...) with the hysteresis of that slot (0..255). buildGlb() -> "" or error;
+//   paramsJson().
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
@@ -60,12 +45,14 @@
 #include <string>
 #include <vector>
 
+#include "buffers.h"
 #include "io/gltf_export.h"
 #include "io/json_io.h"
 #include "io/url_codec.h"
 #include "params/param_table.h"
 #include "render/atlas_mesh.h"
 #include "render/hybrid.h"
+#include "state_json.h"
 #include "sway/skin.h"
 #include "sway/sway.h"
 #include "tree/growth.h"
@@ -83,26 +70,6 @@ constexpr double kMaxSeed = 4294967295.0;
 
 // The sway and wind parameters of a state (rows of the one parameter table, groups "sway", "wind").
 SwayParams SwayParamsOf(const ParamSet& params) { return SwayParams(params); }
-
-// {"key": value} for every parameter (full values), as a JSON object.
-ordered_json ParamsObject(const ParamSet& params) {
-  ordered_json out = ordered_json::object();
-  for (const ParamSpec& spec : ParamTable()) out[spec.key] = params.Get(spec.id);
-  return out;
-}
-
-ordered_json StateObject(const TreeState& state) {
-  ordered_json out;
-  out["preset"] = state.preset;
-  out["seed"] = state.seed;
-  out["years"] = state.years;
-  out["params"] = ParamsObject(state.params);
-  ordered_json prunes = ordered_json::array();
-  for (const Prune& prune : state.prunes) prunes.push_back(FormatPrune(prune));
-  out["prunes"] = std::move(prunes);
-  out["camera"] = state.camera;
-  return out;
-}
 
 // A whole number in [min, max] from a JSON number or a numeric string; error line or "".
 std::string WholeNumber(const json& value, const char* key, double min, double max, double* out) {
@@ -122,6 +89,28 @@ std::string WholeNumber(const json& value, const char* key, double min, double m
     return range;
   *out = number;
   return "";
+}
+
+}  // namespace
+
+// {"key": value} for every parameter (full values), as a JSON object.
+ordered_json ParamsObject(const ParamSet& params) {
+  ordered_json out = ordered_json::object();
+  for (const ParamSpec& spec : ParamTable()) out[spec.key] = params.Get(spec.id);
+  return out;
+}
+
+ordered_json StateObject(const TreeState& state) {
+  ordered_json out;
+  out["preset"] = state.preset;
+  out["seed"] = state.seed;
+  out["years"] = state.years;
+  out["params"] = ParamsObject(state.params);
+  ordered_json prunes = ordered_json::array();
+  for (const Prune& prune : state.prunes) prunes.push_back(FormatPrune(prune));
+  out["prunes"] = std::move(prunes);
+  out["camera"] = state.camera;
+  return out;
 }
 
 // Reads {preset, seed, years, params:{key:value}, prunes:["12:b42"], camera} into a TreeState.
@@ -207,52 +196,11 @@ std::string StateFromJson(const std::string& text, TreeState* state) {
   return "";
 }
 
-}  // namespace
-
-std::string ParamTableJsonForJs() { return ParamTableJson(); }
-
-std::string PresetsJson() {
-  ordered_json out = ordered_json::array();
-  for (const Preset& p : Presets()) {
-    ordered_json j;
-    j["name"] = p.name;
-    j["title"] = p.title;
-    j["years"] = p.years;
-    j["seed"] = p.seed;
-    j["source"] = p.source;
-    j["params"] = ParamsObject(p.params);
-    out.push_back(std::move(j));
-  }
-  return out.dump();
-}
-
-std::string DecodeHashJson(const std::string& hash) {
-  std::vector<std::string> notices;
-  TreeState state = DecodeStateHash(hash, &notices);
-  ordered_json out;
-  out["state"] = StateObject(state);
-  out["notices"] = notices;
-  // Notices echo pieces of the (hostile) hash; replace bytes that are not valid UTF-8 for dump().
-  return out.dump(-1, ' ', false, json::error_handler_t::replace);
-}
-
-std::string EncodeHashJson(const std::string& state_json) {
-  TreeState state;
-  ordered_json out;
-  std::string error = StateFromJson(state_json, &state);
-  if (error.empty()) {
-    out["hash"] = EncodeStateHash(state);
-  } else {
-    out["error"] = error;
-  }
-  return out.dump(-1, ' ', false, json::error_handler_t::replace);
-}
-
-// One tree grown year by year for the worker, which yields to its event loop between years so a
-// newer request can supersede this one.
-class GrowSession {
+// One tree grown year by year for the worker (web/worker/tree_handler.js), which yields to its
+// event loop between years so a newer request can supersede this one.
+class TreeSession {
  public:
-  explicit GrowSession(const std::string& state_json) {
+  explicit TreeSession(const std::string& state_json) {
     error_ = StateFromJson(state_json, &state_);
     if (!error_.empty()) return;
     GrowRequest request;
@@ -269,6 +217,88 @@ class GrowSession {
   int year() const { return grower_ ? grower_->year() : 0; }
   bool done() const { return !grower_ || grower_->year() >= state_.years; }
   std::string hash() const { return error_.empty() ? EncodeStateHash(state_) : ""; }
+
+  // Swaps in `state_json` for the tree already grown (the page's sway and render edits): "" or one
+  // error line, and the session is unchanged on error. The state must grow the same tree (preset,
+  // seed, years and prunes; the worker also compares the growth rows). The sway model and skin are
+  // rebuilt from the new sway rows (eq. 3.15 weights depend on sway_alpha), any sway stops, and the
+  // hybrid scene is cleared (buildHybrid() rebuilds it with the new render rows).
+  std::string restate(const std::string& state_json) {
+    TreeState next;
+    std::string error = StateFromJson(state_json, &next);
+    if (!error.empty()) return error;
+    if (!grower_ || !error_.empty()) return "restate: no tree has been grown";
+    std::vector<std::string> a, b;
+    for (const Prune& prune : state_.prunes) a.push_back(FormatPrune(prune));
+    for (const Prune& prune : next.prunes) b.push_back(FormatPrune(prune));
+    if (next.preset != state_.preset || next.seed != state_.seed || next.years != state_.years ||
+        a != b)
+      return "restate: preset, seed, years and prunes must be those of the tree grown";
+    state_ = std::move(next);
+    sways_.clear();
+    sway_model_ = BuildSwayModel(grower_->tree(), SwayParams(state_.params));
+    skin_ = BuildTreeSkin(mesh_, sway_model_);
+    poses_.assign(sway_model_.nodes.size() * kSwayPoseFloats, 0.0f);
+    RestSwayPoses(sway_model_.nodes.size(), poses_.data());
+    hybrid_ = HybridScene{};
+    atlas_ = AtlasMesh{};
+    has_selection_ = false;
+    slots_.clear();
+    draw_ = HybridDrawList{};
+    draw_skin_ = DrawListSkin{};
+    return "";
+  }
+
+  // The typed views of one buffer group (see JS BINDINGS DESIGN above), or null.
+  emscripten::val buffers(const std::string& group) const {
+    NamedBuffers out;
+    const auto part = [&out](const MeshBuffers& mesh, const VertexSkin& skin) {
+      out.Add("positions", mesh.positions)
+          .Add("normals", mesh.normals)
+          .Add("indices", mesh.indices)
+          .Add("joints", skin.joint)
+          .Add("weights", skin.weight);
+    };
+    const auto atlas = [&out](const MeshBuffers& mesh) {
+      out.Add("positions", mesh.positions)
+          .Add("normals", mesh.normals)
+          .Add("indices", mesh.indices);
+    };
+    if (group == "bark") {
+      part(mesh_.bark, skin_.bark);
+      out.Add("branchIds", mesh_.bark_branch_id).Add("branchParents", parents_);
+    } else if (group == "leaves") {
+      part(mesh_.leaves, skin_.leaves);
+      out.Add("uvs", mesh_.leaves.uvs);
+    } else if (group == "flowers") {
+      part(mesh_.flowers, skin_.flowers);
+    } else if (group == "atlas.bark") {
+      atlas(atlas_.bark);
+    } else if (group == "atlas.leaves") {
+      atlas(atlas_.leaves);
+    } else if (group == "atlas.flowers") {
+      atlas(atlas_.flowers);
+    } else if (group == "cards") {
+      out.Add("positions", draw_.card_positions)
+          .Add("uvs", draw_.card_uvs)
+          .Add("indices", draw_.card_indices)
+          .Add("joints", draw_skin_.cards.joint)
+          .Add("weights", draw_skin_.cards.weight);
+    } else if (group == "lines") {
+      out.Add("positions", draw_.line_positions)
+          .Add("colors", draw_.line_colors)
+          .Add("widths", draw_.line_widths)
+          .Add("joints", draw_skin_.lines.joint)
+          .Add("weights", draw_skin_.lines.weight);
+    } else if (group == "sway") {
+      out.Add("poses", poses_);
+    } else if (group == "glb") {
+      out.Add("bytes", glb_);
+    } else {
+      return emscripten::val::null();
+    }
+    return out.ToJs();
+  }
 
   // Grows one more year; false when the tree already has all its years (or the state was bad).
   bool growYear() {
@@ -382,37 +412,12 @@ class GrowSession {
     return j.dump();
   }
 
-  // Typed-array views into WASM memory (valid until the next allocating call: copy at once).
-  emscripten::val barkPositions() const { return View(mesh_.bark.positions); }
-  emscripten::val barkNormals() const { return View(mesh_.bark.normals); }
-  emscripten::val barkIndices() const { return View(mesh_.bark.indices); }
-  emscripten::val leavesPositions() const { return View(mesh_.leaves.positions); }
-  emscripten::val leavesNormals() const { return View(mesh_.leaves.normals); }
-  emscripten::val leavesIndices() const { return View(mesh_.leaves.indices); }
-  emscripten::val flowersPositions() const { return View(mesh_.flowers.positions); }
-  emscripten::val flowersNormals() const { return View(mesh_.flowers.normals); }
-  emscripten::val flowersIndices() const { return View(mesh_.flowers.indices); }
-  // Branch id of each bark vertex (picking and the selection highlight).
-  emscripten::val barkBranchIds() const { return View(mesh_.bark_branch_id); }
-  // Parent branch id of every branch (-1 for the seedling shoot): what a cut takes with it.
-  emscripten::val branchParents() const { return View(parents_); }
-
   // Binary glTF of the mesh last built (buildMesh); "" or one error line. Then glbBytes() views it.
   std::string buildGlb() {
     glb_.clear();
     if (!grower_) return error_.empty() ? "no tree" : error_;
     return WriteGlb(mesh_, &glb_);
   }
-  emscripten::val glbBytes() const { return View(glb_); }
-
-  emscripten::val leavesUvs() const { return View(mesh_.leaves.uvs); }
-  emscripten::val barkJoints() const { return View(skin_.bark.joint); }
-  emscripten::val barkWeights() const { return View(skin_.bark.weight); }
-  emscripten::val leavesJoints() const { return View(skin_.leaves.joint); }
-  emscripten::val leavesWeights() const { return View(skin_.leaves.weight); }
-  emscripten::val flowersJoints() const { return View(skin_.flowers.joint); }
-  emscripten::val flowersWeights() const { return View(skin_.flowers.weight); }
-  emscripten::val swayPoses() const { return View(poses_); }
 
   // ---- Hybrid rendering (thesis chapter 4) of the tree last meshed ----
   std::string buildHybrid() {
@@ -428,15 +433,6 @@ class GrowSession {
   }
   int atlasSize() const { return hybrid_.atlas_size; }
   int renderMode() const { return static_cast<int>(state_.params.Get(ParamId::kRenderMode)); }
-  emscripten::val atlasBarkPositions() const { return View(atlas_.bark.positions); }
-  emscripten::val atlasBarkNormals() const { return View(atlas_.bark.normals); }
-  emscripten::val atlasBarkIndices() const { return View(atlas_.bark.indices); }
-  emscripten::val atlasLeavesPositions() const { return View(atlas_.leaves.positions); }
-  emscripten::val atlasLeavesNormals() const { return View(atlas_.leaves.normals); }
-  emscripten::val atlasLeavesIndices() const { return View(atlas_.leaves.indices); }
-  emscripten::val atlasFlowersPositions() const { return View(atlas_.flowers.positions); }
-  emscripten::val atlasFlowersNormals() const { return View(atlas_.flowers.normals); }
-  emscripten::val atlasFlowersIndices() const { return View(atlas_.flowers.indices); }
 
   // Card-or-line per branch for this camera (metres, radians, pixels), the draw list and its skin;
   // returns the table 4.1 counts as JSON (CountHybrid + CountFull), or {"error": ...}.
@@ -496,16 +492,6 @@ class GrowSession {
     std::swap(has_selection_, s.has_selection);
     return out;
   }
-  emscripten::val cardPositions() const { return View(draw_.card_positions); }
-  emscripten::val cardUvs() const { return View(draw_.card_uvs); }
-  emscripten::val cardIndices() const { return View(draw_.card_indices); }
-  emscripten::val cardJoints() const { return View(draw_skin_.cards.joint); }
-  emscripten::val cardWeights() const { return View(draw_skin_.cards.weight); }
-  emscripten::val linePositions() const { return View(draw_.line_positions); }
-  emscripten::val lineColors() const { return View(draw_.line_colors); }
-  emscripten::val lineWidths() const { return View(draw_.line_widths); }
-  emscripten::val lineJoints() const { return View(draw_skin_.lines.joint); }
-  emscripten::val lineWeights() const { return View(draw_skin_.lines.weight); }
 
   // The state's full parameter set as JSON (ParamsToJson), for the "Download .json" button.
   std::string paramsJson() const { return ParamsToJson(state_.params); }
@@ -527,11 +513,6 @@ class GrowSession {
     poses_.assign(points * kSwayPoseFloats, 0.0f);
     RestSwayPoses(points, poses_.data());
     return "";
-  }
-
-  template <typename T>
-  static emscripten::val View(const std::vector<T>& data) {
-    return emscripten::val(emscripten::typed_memory_view(data.size(), data.data()));
   }
 
   TreeState state_;
@@ -560,74 +541,33 @@ class GrowSession {
 
 }  // namespace niwa
 
-EMSCRIPTEN_BINDINGS(niwa) {
+EMSCRIPTEN_BINDINGS(niwa_tree) {
   using namespace emscripten;
-  function("paramTableJson", &niwa::ParamTableJsonForJs);
-  function("presetsJson", &niwa::PresetsJson);
-  function("decodeHash", &niwa::DecodeHashJson);
-  function("encodeHash", &niwa::EncodeHashJson);
-  class_<niwa::GrowSession>("GrowSession")
+  class_<niwa::TreeSession>("TreeSession")
       .constructor<std::string>()
-      .function("error", &niwa::GrowSession::error)
-      .function("years", &niwa::GrowSession::years)
-      .function("year", &niwa::GrowSession::year)
-      .function("done", &niwa::GrowSession::done)
-      .function("hash", &niwa::GrowSession::hash)
-      .function("growYear", &niwa::GrowSession::growYear)
-      .function("buildMesh", &niwa::GrowSession::buildMesh)
-      .function("statsJson", &niwa::GrowSession::statsJson)
-      .function("barkPositions", &niwa::GrowSession::barkPositions)
-      .function("barkNormals", &niwa::GrowSession::barkNormals)
-      .function("barkIndices", &niwa::GrowSession::barkIndices)
-      .function("leavesPositions", &niwa::GrowSession::leavesPositions)
-      .function("leavesNormals", &niwa::GrowSession::leavesNormals)
-      .function("leavesIndices", &niwa::GrowSession::leavesIndices)
-      .function("flowersPositions", &niwa::GrowSession::flowersPositions)
-      .function("flowersNormals", &niwa::GrowSession::flowersNormals)
-      .function("flowersIndices", &niwa::GrowSession::flowersIndices)
-      .function("barkBranchIds", &niwa::GrowSession::barkBranchIds)
-      .function("branchParents", &niwa::GrowSession::branchParents)
-      .function("buildGlb", &niwa::GrowSession::buildGlb)
-      .function("glbBytes", &niwa::GrowSession::glbBytes)
-      .function("paramsJson", &niwa::GrowSession::paramsJson)
-      .function("leavesUvs", &niwa::GrowSession::leavesUvs)
-      .function("barkJoints", &niwa::GrowSession::barkJoints)
-      .function("barkWeights", &niwa::GrowSession::barkWeights)
-      .function("leavesJoints", &niwa::GrowSession::leavesJoints)
-      .function("leavesWeights", &niwa::GrowSession::leavesWeights)
-      .function("flowersJoints", &niwa::GrowSession::flowersJoints)
-      .function("flowersWeights", &niwa::GrowSession::flowersWeights)
-      .function("swayNodes", &niwa::GrowSession::swayNodes)
-      .function("swayStart", &niwa::GrowSession::swayStart)
-      .function("swayStartAt", &niwa::GrowSession::swayStartAt)
-      .function("swayInstances", &niwa::GrowSession::swayInstances)
-      .function("swayStep", &niwa::GrowSession::swayStep)
-      .function("swayPoses", &niwa::GrowSession::swayPoses)
-      .function("swayDt", &niwa::GrowSession::swayDt)
-      .function("swayDuration", &niwa::GrowSession::swayDuration)
-      .function("swayWindSpeed", &niwa::GrowSession::swayWindSpeed)
-      .function("buildHybrid", &niwa::GrowSession::buildHybrid)
-      .function("atlasSize", &niwa::GrowSession::atlasSize)
-      .function("renderMode", &niwa::GrowSession::renderMode)
-      .function("atlasBarkPositions", &niwa::GrowSession::atlasBarkPositions)
-      .function("atlasBarkNormals", &niwa::GrowSession::atlasBarkNormals)
-      .function("atlasBarkIndices", &niwa::GrowSession::atlasBarkIndices)
-      .function("atlasLeavesPositions", &niwa::GrowSession::atlasLeavesPositions)
-      .function("atlasLeavesNormals", &niwa::GrowSession::atlasLeavesNormals)
-      .function("atlasLeavesIndices", &niwa::GrowSession::atlasLeavesIndices)
-      .function("atlasFlowersPositions", &niwa::GrowSession::atlasFlowersPositions)
-      .function("atlasFlowersNormals", &niwa::GrowSession::atlasFlowersNormals)
-      .function("atlasFlowersIndices", &niwa::GrowSession::atlasFlowersIndices)
-      .function("hybridView", &niwa::GrowSession::hybridView)
-      .function("hybridViewSlot", &niwa::GrowSession::hybridViewSlot)
-      .function("cardPositions", &niwa::GrowSession::cardPositions)
-      .function("cardUvs", &niwa::GrowSession::cardUvs)
-      .function("cardIndices", &niwa::GrowSession::cardIndices)
-      .function("cardJoints", &niwa::GrowSession::cardJoints)
-      .function("cardWeights", &niwa::GrowSession::cardWeights)
-      .function("linePositions", &niwa::GrowSession::linePositions)
-      .function("lineColors", &niwa::GrowSession::lineColors)
-      .function("lineWidths", &niwa::GrowSession::lineWidths)
-      .function("lineJoints", &niwa::GrowSession::lineJoints)
-      .function("lineWeights", &niwa::GrowSession::lineWeights);
+      .function("error", &niwa::TreeSession::error)
+      .function("years", &niwa::TreeSession::years)
+      .function("year", &niwa::TreeSession::year)
+      .function("done", &niwa::TreeSession::done)
+      .function("hash", &niwa::TreeSession::hash)
+      .function("restate", &niwa::TreeSession::restate)
+      .function("buffers", &niwa::TreeSession::buffers)
+      .function("growYear", &niwa::TreeSession::growYear)
+      .function("buildMesh", &niwa::TreeSession::buildMesh)
+      .function("statsJson", &niwa::TreeSession::statsJson)
+      .function("buildGlb", &niwa::TreeSession::buildGlb)
+      .function("paramsJson", &niwa::TreeSession::paramsJson)
+      .function("swayNodes", &niwa::TreeSession::swayNodes)
+      .function("swayStart", &niwa::TreeSession::swayStart)
+      .function("swayStartAt", &niwa::TreeSession::swayStartAt)
+      .function("swayInstances", &niwa::TreeSession::swayInstances)
+      .function("swayStep", &niwa::TreeSession::swayStep)
+      .function("swayDt", &niwa::TreeSession::swayDt)
+      .function("swayDuration", &niwa::TreeSession::swayDuration)
+      .function("swayWindSpeed", &niwa::TreeSession::swayWindSpeed)
+      .function("buildHybrid", &niwa::TreeSession::buildHybrid)
+      .function("atlasSize", &niwa::TreeSession::atlasSize)
+      .function("renderMode", &niwa::TreeSession::renderMode)
+      .function("hybridView", &niwa::TreeSession::hybridView)
+      .function("hybridViewSlot", &niwa::TreeSession::hybridViewSlot);
 }
