@@ -55,6 +55,18 @@ await runBrowserTest(async (server, browser) => {
     && (await page.getAttribute('#wind', 'aria-pressed')) === 'true', `grow requests ${sway.before.grows} -> ${sway.after.grows}`);
   await page.click('#wind');
 
+  // A bad wind value: the core's one line naming the field, no grow; a good value recovers.
+  const badBefore = await hooks(page);
+  await page.fill('#param-wind_speed', '1000');
+  await page.waitForFunction(() => document.documentElement.dataset.status === 'error', null, { timeout: TIMEOUT });
+  const notice = await page.textContent('#notice');
+  const bad = await hooks(page);
+  check('a bad wind value shows the core error and grows nothing', /^wind_speed\b.*\[0, 100\]/.test(notice.trim()) && bad.grows === badBefore.grows,
+    `${notice.trim()}; grow requests ${badBefore.grows} -> ${bad.grows}`);
+  await page.fill('#param-wind_speed', '9');
+  await waitReady(page, bad.serial, 100);
+  check('a good wind value recovers', !(await page.isVisible('#notice')) && (await hooks(page)).grows === badBefore.grows);
+
   // A render row: hybrid mode from the tree already grown (its atlas and draw list, no grow).
   const beforeMode = await hooks(page);
   await page.selectOption('#render-mode', '1');
@@ -78,8 +90,13 @@ await runBrowserTest(async (server, browser) => {
 
   // A wind edit and a growth edit within one debounce: one grow that carries both.
   const both = await hooks(page);
-  await page.fill('#param-wind_speed', '4');
-  await page.fill('#param-alpha_l', '0.5');
+  await page.evaluate(() => {  // both inside one 250 ms debounce, whatever the machine's load
+    for (const [key, value] of [['wind_speed', '4'], ['alpha_l', '0.5']]) {
+      const input = document.getElementById(`param-${key}`);
+      input.value = value;
+      input.dispatchEvent(new Event('input', { bubbles: true }));
+    }
+  });
   await waitReady(page, both.serial, 100);
   const after = await hooks(page);
   const hash = await page.evaluate(() => location.hash);

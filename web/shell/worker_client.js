@@ -31,9 +31,11 @@ function sharedWorker() {
 let nextId = 0;  // ids are unique across the page's clients
 
 export class WorkerClient {
-  // name: the protocol's client string (unique on the page). onFailure(text): the worker failed.
-  constructor(name, { onFailure } = {}) {
+  // name: the protocol's client string (unique on the page); study: the worker handler its
+  // messages go to (omitted: the worker's default, 'tree'); onFailure(text): the worker failed.
+  constructor(name, { study, onFailure } = {}) {
     this.name = name;
+    this.study = study;
     this.handlers = new Map();  // type -> handler(msg)
     this.pending = new Map();   // id -> {group, done: Set of reply types, resolve}
     this.latest = new Map();    // group -> newest id
@@ -51,7 +53,8 @@ export class WorkerClient {
 
   // Sends {type, client, ...fields} without expecting a reply (transfer: ArrayBuffers to move).
   post(type, fields = {}, transfer = []) {
-    sharedWorker().worker.postMessage({ ...fields, type, client: this.name }, transfer);
+    const envelope = this.study ? { type, client: this.name, study: this.study } : { type, client: this.name };
+    sharedWorker().worker.postMessage({ ...fields, ...envelope }, transfer);
   }
 
   // Sends a request with a fresh id; a newer request of the same `group` supersedes it (its later
