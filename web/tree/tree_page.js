@@ -9,10 +9,11 @@ import { FrameLoop } from '../gl/frame_loop.js';
 import { HashHistory } from '../shell/hash_history.js';
 import { ParamPanel } from '../shell/param_panel.js';
 import {
-  FrameTimes, Notices, copyLink, download, mountStudyNav, showEmbedDialog,
+  Notices, copyLink, download, mountStudyNav, showEmbedDialog,
 } from '../shell/study_page.js';
 import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
 import { WorkerClient } from '../shell/worker_client.js';
+import { RenderTable } from './render_table.js';
 import { Renderer } from './tree_renderer.js';
 
 const $ = (id) => document.getElementById(id);
@@ -43,10 +44,10 @@ const worker = new WorkerClient('app', {
 const camera = new OrbitCamera();
 let renderer = null;
 let poseDrawPending = false;
-const frameTimes = new FrameTimes();
+const table = new RenderTable(ui.renderTable, ui.renderCol, ui.frameStats);
 const frames = new FrameLoop(() => {
   const drawn = renderer.render(camera);
-  if (drawn) showFrameStats(drawn);
+  if (drawn) table.showFrame(drawn);
   setHooks({ drawnTreeSerial: treeSerial });  // tests wait for the new tree's frame
   if (poseDrawPending) {  // the worker sends the next pose once this one is on screen
     poseDrawPending = false;
@@ -54,48 +55,6 @@ const frames = new FrameLoop(() => {
   }
 });
 const requestFrame = () => { if (renderer) frames.request(); };
-
-// Draw primitives and frame cost: triangles and draw calls of the last frame (from the index counts
-// drawn), and the CPU time of the render call averaged over the last 30 frames drawn.
-function showFrameStats(drawn) {
-  const avg = frameTimes.push(drawn.cpuMs);
-  ui.frameStats.textContent = `tris ${Math.round(drawn.triangles).toLocaleString('en-US')} · draw calls ${drawn.drawCalls}`
-    + ` · frame ${avg.toFixed(1)} ms CPU`;
-  ui.frameStats.title = `CPU time of the render call, mean of the last ${frameTimes.count} frames drawn (GPU time is not measured)`;
-  const column = drawn.mode === 'hybrid' ? 'row' : 'full';
-  setCell(column, 'draw_calls', drawn.drawCalls);
-  setCell(column, 'frame_ms', `${avg.toFixed(1)} ms`);
-  if (drawn.mode !== 'hybrid') for (const key of ['draw_calls', 'frame_ms']) setCell('row', key, '');
-}
-
-// ---------------------------------------------------------------- render table (thesis table 4.1)
-function setCell(column, key, value) {
-  const cell = ui.renderTable.querySelector(`[data-${column}="${key}"]`);
-  if (cell) cell.textContent = typeof value === 'number' ? value.toLocaleString('en-US') : String(value);
-}
-function showFullCounts(mesh) {
-  const tris = (part) => (part ? part.indices.byteLength / 12 : 0);
-  const bark = tris(mesh.bark), leaves = tris(mesh.leaves) + tris(mesh.flowers);
-  setCell('full', 'branch_polygons', bark);
-  setCell('full', 'leaf_polygons', leaves);
-  setCell('full', 'total_polygons', bark + leaves);
-}
-function showHybridCounts(stats) {
-  ui.renderCol.textContent = stats ? 'hybrid' : 'this view';
-  for (const key of ['lines', 'branch_polygons', 'leaf_polygons', 'total_polygons', 'textures']) {
-    setCell('row', key, stats ? stats[key] : '');
-  }
-  if (!stats) return;
-  setHooks({
-    renderLines: stats.lines,
-    renderPolygons: stats.total_polygons,
-    renderTextures: stats.textures,
-    renderFull: stats.full_polygons,
-    // Every alive branch is a line or a card in every view (none vanishes while switching).
-    renderUnassigned: stats.alive_branches - stats.line_branches - stats.card_branches,
-  });
-  bumpHook('renderViews');
-}
 
 // Hybrid mode: the worker chooses card or line per branch for each view (eq. 4.1 with hysteresis);
 // one request at a time, the newest camera wins.
@@ -265,8 +224,8 @@ function scheduleUpdate(stage = 'grow') {
   debounceTimer = setTimeout(() => sendUpdate('edit'), 250);
 }
 
-function fullHash() {
-  const base = history_.base;
+// The hash of the state `base` (the core's text) with the camera appended.
+function fullHash(base = history_.base) {
   return `#${base}${base && renderer ? `&cam=${camera.toHash()}` : ''}`;
 }
 
@@ -323,7 +282,7 @@ worker.on('decoded', (msg) => {
 worker.on('hash', (msg) => {
   if (msg.id !== latestRequest?.id) return;
   if (latestRequest.commit) {
-    history_.commit(msg.hash, `#${msg.hash}${msg.hash && renderer ? `&cam=${camera.toHash()}` : ''}`, showYear);
+    history_.commit(msg.hash, fullHash(msg.hash), showYear);
   } else {
     history_.base = msg.hash;
     writeHash();
@@ -357,10 +316,10 @@ worker.on('tree', (msg) => {
     }
     requestFrame();
   }
-  showFullCounts(msg.mesh);
+  table.showFullCounts(msg.mesh);
   hybridOn = Boolean(msg.hybrid);
   viewInFlight = false;
-  showHybridCounts(null);
+  table.showHybridCounts(null);
   setHooks({ renderMode: hybridOn ? 'hybrid' : 'full' });
   requestView();
   // A new tree clears the selection; another age of it, or a later stage of it, keeps it.
@@ -380,7 +339,7 @@ worker.on('drawList', (msg) => {
   viewInFlight = false;
   if (!hybridOn || !renderer) return;
   renderer.setDrawList(msg);
-  showHybridCounts(msg.stats);
+  table.showHybridCounts(msg.stats);
   requestFrame();
   if (viewDirty) requestView();
 });
@@ -540,7 +499,7 @@ ui.timeFrames.addEventListener('click', async () => {
   ui.timeFrames.disabled = true;
   try {
     const timed = await renderer.timeFrames(camera, 10);
-    setCell(timed.mode === 'hybrid' ? 'row' : 'full', 'timed_ms', `${timed.ms.toFixed(1)} ms`);
+    table.set(timed.mode === 'hybrid' ? 'row' : 'full', 'timed_ms', `${timed.ms.toFixed(1)} ms`);
     setHooks({ [timed.mode === 'hybrid' ? 'timedHybrid' : 'timedFull']:
       JSON.stringify({ ms: timed.ms, triangles: timed.triangles, lines: timed.lines, drawCalls: timed.drawCalls }) });
   } finally {
