@@ -10,31 +10,14 @@
 // chapter 3, the gust schedule repeating). Drag, wheel, pinch or the arrow and +/- keys
 // orbit and zoom. Every <niwa-tree> on a page shares ONE Web Worker and so one WASM instance (the
 // worker keeps their requests apart by a client id). Messages are shown as text, never as markup.
-import { OrbitCamera } from './web/camera.js';
-import { Renderer } from './web/renderer.js';
+import { OrbitCamera } from './web/gl/orbit_camera.js';
+import { FrameLoop } from './web/gl/frame_loop.js';
+import { setHooks } from './web/shell/test_hooks.js';
+import { WorkerClient } from './web/shell/worker_client.js';
+import { Renderer } from './web/tree/tree_renderer.js';
 
-const clients = new Map();  // client id -> element
-let worker = null;
 let nextClient = 0;
-let nextId = 0;
-
-function sharedWorker() {
-  if (!worker) {
-    const url = new URL('./web/worker.js', import.meta.url);
-    // A worker script must be same-origin; from another site a one-line module shim imports it
-    // (the host then has to send CORS headers for web/, shaders/ and wasm/).
-    worker = url.origin === location.origin
-      ? new Worker(url, { type: 'module' })
-      : new Worker(URL.createObjectURL(new Blob([`import ${JSON.stringify(url.href)};`], { type: 'text/javascript' })), { type: 'module' });
-    worker.onmessage = (event) => clients.get(event.data.client)?.onWorkerMessage(event.data);
-    worker.onerror = (e) => {
-      e.preventDefault();
-      for (const element of clients.values()) element.showMessage('The simulation worker failed to start.');
-    };
-    worker.postMessage({ type: 'init', client: 'embed', hash: '' });
-  }
-  return worker;
-}
+let ready = null;  // the shared worker's module, loaded once for every element (its 'ready')
 
 const STYLE = `
 :host { display: inline-block; position: relative; width: 320px; height: 320px; contain: content; }
@@ -66,24 +49,33 @@ class NiwaTree extends HTMLElement {
     this.renderer = null;
     this.rendererReady = null;
     this.framed = false;
-    this.frameRequested = false;
-    this.latestId = 0;
+    this.frames = new FrameLoop(() => this.drawFrame());
+    this.worker = null;
     this.state = null;
     this.years = 0;
     this.animating = false;
     this.pendingTree = null;
   }
 
+  // This element's client of the page's one worker (attributes may arrive before connectedCallback).
+  ensureWorker() {
+    if (this.worker) return;
+    this.worker = new WorkerClient(this.client, { onFailure: (text) => this.showMessage(text) });
+    for (const type of ['decoded', 'tree', 'drawList', 'pose', 'error']) this.worker.on(type, (msg) => this.onWorkerMessage(msg));
+    // One init for the page's worker (its module and tables), from the first element.
+    if (!ready) ready = this.worker.request('init', { hash: '' }, { done: ['ready'] }).reply;
+  }
+
   connectedCallback() {
-    clients.set(this.client, this);
+    this.ensureWorker();
     if (!this.rendererReady) this.rendererReady = this.startRenderer();
     this.load();
   }
 
   disconnectedCallback() {
-    clients.delete(this.client);
     this.animating = false;
-    worker?.postMessage({ type: 'wind', client: this.client, play: false });
+    this.worker?.post('wind', { play: false });
+    this.worker?.cancel('tree');
   }
 
   attributeChangedCallback() {
@@ -108,20 +100,19 @@ class NiwaTree extends HTMLElement {
 
   showMessage(text) {
     this.line.textContent = text;
-    this.dataset.status = 'error';
+    setHooks({ status: 'error' }, this);
   }
 
   requestFrame() {
-    if (!this.renderer || this.frameRequested) return;
-    this.frameRequested = true;
-    requestAnimationFrame(() => {
-      this.frameRequested = false;
-      this.renderer.render(this.camera);
-      if (this.poseDrawPending) {  // the worker sends the next pose once this one is on screen
-        this.poseDrawPending = false;
-        sharedWorker().postMessage({ type: 'poseDone', client: this.client });
-      }
-    });
+    if (this.renderer) this.frames.request();
+  }
+
+  drawFrame() {
+    this.renderer.render(this.camera);
+    if (this.poseDrawPending) {  // the worker sends the next pose once this one is on screen
+      this.poseDrawPending = false;
+      this.worker.post('poseDone');
+    }
   }
 
   // Hybrid mode (render_mode 1 in the state): one view request at a time, the newest camera wins.
@@ -133,17 +124,18 @@ class NiwaTree extends HTMLElement {
     }
     this.viewInFlight = true;
     this.viewDirty = false;
-    sharedWorker().postMessage({ type: 'view', client: this.client, camera: this.renderer.viewFor(this.camera) });
+    this.worker.post('view', { camera: this.renderer.viewFor(this.camera) });
   }
 
   // Reads the attributes: state= goes through the core's hash decoder; the others are checked by the
   // core when the tree is grown (missing ones take the preset's values).
   load() {
+    this.ensureWorker();
     this.framed = false;
-    this.dataset.status = 'growing';
+    setHooks({ status: 'growing' }, this);
     const hash = this.getAttribute('state');
     if (hash !== null) {
-      sharedWorker().postMessage({ type: 'decode', id: ++nextId, client: this.client, hash });
+      this.worker.request('decode', { hash }, { done: ['decoded'] });
       return;
     }
     const state = {};
@@ -164,12 +156,12 @@ class NiwaTree extends HTMLElement {
     }
   }
 
-  grow(until) {
-    this.latestId = ++nextId;
-    const message = { type: 'update', id: this.latestId, client: this.client, state: this.state };
+  // Resolves to true with the tree, false on an error or when a newer request superseded it.
+  async grow(until) {
+    const message = { state: this.state };
     if (until !== undefined) message.until = until;
-    sharedWorker().postMessage(message);
-    return new Promise((resolve) => { this.resolveTree = resolve; });
+    const reply = await this.worker.request('update', message, { group: 'tree', done: ['tree'] }).reply;
+    return Boolean(reply && reply.type === 'tree');
   }
 
   // Grows the tree year by year, from a seedling to its full age.
@@ -193,11 +185,10 @@ class NiwaTree extends HTMLElement {
       if (this.camera.fromHash(camera)) this.framed = true;
       this.sun = [state.params?.sun_elevation, state.params?.sun_azimuth];  // the light model's sun
       this.start(state, msg.notices);
-    } else if (msg.type === 'tree' && msg.id === this.latestId) {
+    } else if (msg.type === 'tree') {
       this.years = msg.stats.years;
       if (this.renderer) this.showTree(msg);
       else this.pendingTree = msg;
-      this.resolveTree?.(true);
     } else if (msg.type === 'drawList') {
       this.viewInFlight = false;
       if (!this.hybridOn || !this.renderer) return;
@@ -206,16 +197,15 @@ class NiwaTree extends HTMLElement {
       if (this.viewDirty) this.requestView();
     } else if (msg.type === 'pose') {
       if (!this.hasAttribute('wind') || !this.renderer) {
-        sharedWorker().postMessage({ type: 'poseDone', client: this.client });
+        this.worker.post('poseDone');
         return;
       }
       this.renderer.setPoses(new Float32Array(msg.poses), msg.wind, msg.time);
       this.poseDrawPending = true;
-      this.dataset.swayTime = msg.time.toFixed(3);
+      setHooks({ swayTime: msg.time.toFixed(3) }, this);
       this.requestFrame();
-    } else if (msg.type === 'error' && (msg.id === undefined || msg.id === this.latestId)) {
+    } else if (msg.type === 'error' && (msg.id === undefined || msg.id === this.worker.latestId('tree'))) {
       this.showMessage(msg.message);
-      this.resolveTree?.(false);
     }
   }
 
@@ -225,14 +215,14 @@ class NiwaTree extends HTMLElement {
     this.hybridOn = Boolean(msg.hybrid);
     this.viewInFlight = false;
     if (this.sun) this.renderer.setSun(...this.sun);
-    sharedWorker().postMessage({ type: 'wind', client: this.client, play: this.hasAttribute('wind') });
+    this.worker.post('wind', { play: this.hasAttribute('wind') });
     if (!this.framed) {
       this.camera.frame(msg.stats.bounds);
       this.framed = true;
     }
     this.requestFrame();
     this.requestView();
-    Object.assign(this.dataset, { status: 'ready', internodes: String(msg.stats.internodes), year: String(msg.stats.years) });
+    setHooks({ status: 'ready', internodes: msg.stats.internodes, year: msg.stats.years }, this);
   }
 }
 

@@ -1,9 +1,9 @@
 #!/usr/bin/env node
 // Dependency-free static file server for the Niwa page, bound to 127.0.0.1.
 //   node scripts/serve.mjs [--port 8080]      (--port 0 picks a free port)
-// Routes: /          -> public/
-//         /web/      -> web/
-//         /shaders/  -> shaders/
+// Routes: /          -> public/       (index.html = tree, grove.html, embed*.html, niwa-embed.js)
+//         /web/      -> web/          (shell/, gl/, worker/, tree/, and each study's folder)
+//         /shaders/  -> shaders/      (common/ and one folder per study)
 //         /wasm/     -> build/wasm/web/   (the Emscripten output of the niwa_web target)
 // Requests that would leave those roots (.., encoded slashes, NUL) are refused.
 import http from 'node:http';

@@ -2,10 +2,14 @@
 // mode (bark/leaves/flowers meshes) or hybrid mode (thesis ch. 4: each unique tree's card atlas,
 // shared by all its instances, and one draw list of cards + lines per (unique tree, distance band)).
 // Wind: every instance is skinned to its own sway poses (one pose texture per unique tree, instance
-// k's node point j at texel (k · nodes + j) · 4, as shaders/skin.glsl reads them).
-import {
-  BACKGROUND, PARTS, fetchText, floatAttribute, link, paintAtlas, staticBuffer, uintAttribute, uploadPoses,
-} from './renderer.js';
+// k's node point j at texel (k · nodes + j) · 4, as shaders/common/skin.glsl reads them).
+// Does not: grow trees, lay out the grove or choose draw lists (grove_page.js and the worker do).
+import { beginFrame, createContext, finishGpu, resizeCanvas, sunDirection } from '../gl/context.js';
+import { floatAttribute, staticBuffer, uintAttribute } from '../gl/buffers.js';
+import { Ground } from '../gl/ground.js';
+import { loadPrograms } from '../gl/program.js';
+import { restPoses, uploadPoses } from '../gl/textures.js';
+import { PARTS, SHADERS, paintAtlas } from './tree_renderer.js';
 
 const SEGMENT_ROW = 1024;  // texels per row of a line-segment texture (grove_line.vert)
 const SEGMENT_TEXELS = 4;  // p0 + width, p1, colour, skin (joint0, joint1, weight0, weight1)
@@ -15,8 +19,7 @@ export class GroveRenderer {
   // Throws an Error with a readable message when WebGL2 is missing.
   constructor(canvas) {
     this.canvas = canvas;
-    const gl = canvas.getContext('webgl2', { antialias: true, preserveDrawingBuffer: true, alpha: false });
-    if (!gl) throw new Error('WebGL2 is not available in this browser, so the grove cannot be drawn.');
+    const gl = createContext(canvas, 'the grove');
     this.gl = gl;
     this.trees = [];      // per unique tree: {parts: {name: {vao, count}}, atlas, instances, ...}
     this.bands = new Map();  // `${tree}:${band}` -> {tree, vaoCards, cardCount, vaoLines, segments, texture, members}
@@ -25,31 +28,22 @@ export class GroveRenderer {
     this.lastFrame = { triangles: 0, lines: 0, drawCalls: 0, instances: 0, uniqueDrawn: 0, cpuMs: 0 };
   }
 
-  async init(shaderBase = new URL('../shaders/', import.meta.url).href) {
-    const names = ['grove_tree.vert', 'tree.frag', 'grove_card.vert', 'card.frag', 'grove_line.vert', 'grove_line.frag',
-      'atlas.vert', 'ground.vert', 'ground.frag', 'skin.glsl'];
-    const text = Object.fromEntries(await Promise.all(
-      names.map(async (f) => [f, await fetchText(new URL(f, shaderBase).href)])));
-    const source = (name) => text[name].replace('#include "skin.glsl"', text['skin.glsl']);
-    const gl = this.gl;
-    this.treeProgram = link(gl, source('grove_tree.vert'), text['tree.frag'], 'grove_tree');
-    this.cardProgram = link(gl, source('grove_card.vert'), text['card.frag'], 'grove_card');
-    this.lineProgram = link(gl, source('grove_line.vert'), text['grove_line.frag'], 'grove_line');
-    this.atlasProgram = link(gl, text['atlas.vert'], text['tree.frag'], 'atlas');
-    this.groundProgram = link(gl, text['ground.vert'], text['ground.frag'], 'ground');
-    this.groundVao = gl.createVertexArray();
-    gl.bindVertexArray(this.groundVao);
-    gl.bindBuffer(gl.ARRAY_BUFFER, gl.createBuffer());
-    gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([-1, -1, 1, -1, -1, 1, 1, 1]), gl.STATIC_DRAW);
-    gl.enableVertexAttribArray(0);
-    gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
-    gl.bindVertexArray(null);
+  async init(shaderBase = SHADERS) {
+    const p = await loadPrograms(this.gl, shaderBase, {
+      tree: ['grove_tree.vert', 'tree.frag'], card: ['grove_card.vert', 'card.frag'],
+      line: ['grove_line.vert', 'grove_line.frag'], atlas: ['atlas.vert', 'tree.frag'],
+      ground: ['../common/ground.vert', '../common/ground.frag'],
+    });
+    this.treeProgram = p.tree;
+    this.cardProgram = p.card;
+    this.lineProgram = p.line;
+    this.atlasProgram = p.atlas;
+    this.ground = new Ground(this.gl, p.ground);
   }
 
   // Light direction (unit, towards the sun), as Renderer.setSun.
   setSun(elevationDeg, azimuthDeg) {
-    const el = (elevationDeg * Math.PI) / 180, az = (azimuthDeg * Math.PI) / 180;
-    this.light = [Math.cos(el) * Math.cos(az), Math.sin(el), Math.cos(el) * Math.sin(az)];
+    this.light = sunDirection(elevationDeg, azimuthDeg) || this.light;
   }
 
   // Per-instance attributes on the bound VAO: `location` = vec4 (x, y, z, scale) from `b` (stride
@@ -111,13 +105,7 @@ export class GroveRenderer {
   setRestPoses(index) {
     const tree = this.trees[index];
     if (!tree) return;
-    const rest = new Float32Array(tree.instances * tree.nodes * 16);
-    for (let i = 0; i < rest.length; i += 16) {
-      rest[i] = 1;
-      rest[i + 5] = 1;
-      rest[i + 10] = 1;
-    }
-    this.setPoses(index, rest);
+    this.setPoses(index, restPoses(tree.instances * tree.nodes));
   }
 
   // The pose texture of a unique tree on unit 1 for a program with uPoses and uNodes.
@@ -245,13 +233,7 @@ export class GroveRenderer {
   }
 
   resize() {
-    const dpr = Math.min(window.devicePixelRatio || 1, 2);
-    const w = Math.max(1, Math.round(this.canvas.clientWidth * dpr));
-    const h = Math.max(1, Math.round(this.canvas.clientHeight * dpr));
-    if (this.canvas.width !== w || this.canvas.height !== h) {
-      this.canvas.width = w;
-      this.canvas.height = h;
-    }
+    resizeCanvas(this.canvas);
   }
 
   // Draws the ground and the grove in `mode` ('full' or 'hybrid'); only = a unique tree index to
@@ -260,31 +242,16 @@ export class GroveRenderer {
   render(camera, mode, only) {
     const gl = this.gl;
     const start = performance.now();
-    this.resize();
-    gl.viewport(0, 0, this.canvas.width, this.canvas.height);
-    gl.clearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
-    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
-    gl.enable(gl.DEPTH_TEST);
+    beginFrame(gl, this.canvas);
     gl.disable(gl.CULL_FACE);
     gl.disable(gl.BLEND);
     const viewProjection = camera.viewProjection(this.canvas.width / this.canvas.height);
     let triangles = 0, lines = 0, drawCalls = 0, instances = 0;
     const drawn = new Set();
-    const g = this.groundProgram;
-    gl.useProgram(g.program);
-    gl.uniformMatrix4fv(g.uniforms.uViewProjection, false, viewProjection);
-    gl.uniform3fv(g.uniforms.uCenter, [0, 0, 0]);
-    gl.uniform1f(g.uniforms.uExtent, this.extent);
-    gl.uniform1f(g.uniforms.uShadowRadius, 0.05);
-    gl.uniform2fv(g.uniforms.uShadowOffset, [1e4, 1e4]);  // no single contact shadow in a grove
-    gl.uniform3fv(g.uniforms.uBackground, BACKGROUND);
-    gl.enable(gl.POLYGON_OFFSET_FILL);
-    gl.polygonOffset(1, 1);
-    gl.bindVertexArray(this.groundVao);
-    gl.drawArrays(gl.TRIANGLE_STRIP, 0, 4);
-    gl.disable(gl.POLYGON_OFFSET_FILL);
-    triangles += 2;
-    drawCalls += 1;
+    // No single contact shadow in a grove (the shadow is moved far away).
+    const ground = this.ground.draw(viewProjection, { center: [0, 0, 0], extent: this.extent, shadowRadius: 0.05, shadowOffset: [1e4, 1e4] });
+    triangles += ground.triangles;
+    drawCalls += ground.drawCalls;
     const wanted = (tree) => only === undefined || only === tree;
 
     if (mode === 'hybrid') {
@@ -373,10 +340,7 @@ export class GroveRenderer {
 
   // Blocks until the GPU has finished everything drawn so far: reads one pixel back.
   finish() {
-    const gl = this.gl;
-    const pixel = new Uint8Array(4);
-    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-    return pixel;
+    return finishGpu(this.gl);
   }
 
   // The whole canvas as RGBA bytes (bottom row first), for the coverage check.

@@ -10,7 +10,7 @@ uniform mat4 uViewProjection;
 
 flat out uint vBranch;
 
-#include "skin.glsl"
+#include "../common/skin.glsl"
 
 void main() {
   vBranch = aBranch;

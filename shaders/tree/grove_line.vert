@@ -23,7 +23,7 @@ out float vCoverage;  // a line thinner than a pixel is drawn 1 px wide and this
 
 vec4 texel(int i) { return texelFetch(uSegments, ivec2(i % 1024, i / 1024), 0); }
 
-#include "skin.glsl"
+#include "../common/skin.glsl"
 
 // End `end` (0: p0, 1: p1) of a segment at p, swayed with this instance's poses, in the world.
 vec3 world(vec3 p, vec4 skin, int end) {

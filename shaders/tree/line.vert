@@ -14,7 +14,7 @@ uniform vec2 uViewport;  // pixels
 out vec3 vColor;
 out float vCoverage;  // a line thinner than a pixel is drawn 1 px wide and this opaque
 
-#include "skin.glsl"
+#include "../common/skin.glsl"
 
 ivec2 texelOf(int i) { return ivec2(i % 1024, i / 1024); }
 

@@ -1,19 +1,18 @@
 // Parameter panel built FROM THE PARAMETER TABLE sent by the worker (no parameter list in JS):
-// one collapsible section per `group`, each field labelled with key, symbol and unit, limited by the
-// table's min/max, with the help text as title and aria-describedby.
+// one collapsible section per `group`, titled by the table's `group_title`, each field labelled
+// with key, symbol and unit, limited by the table's min/max, with the help text as title and
+// aria-describedby. Each edit reports the row's `stage` (grow | mesh | sway | view) so the page
+// reruns only what the edit invalidates.
+// Does not: validate values (the core does and its error line is shown), or send anything.
 
-const GROUP_TITLES = {
-  hormone: 'Hormone',
-  branching: 'Branching',
-  light: 'Light',
-  bending: 'Bending',
-  dormancy_break: 'Dormancy break',
-  shape: 'Shape and limits',
-};
-
-function groupTitle(group) {
-  return GROUP_TITLES[group] || group.replace(/_/g, ' ').replace(/^./, (c) => c.toUpperCase());
+// A readable title when a table has no group_title (older WASM builds).
+function groupTitle(spec) {
+  if (typeof spec.group_title === 'string' && spec.group_title) return spec.group_title;
+  return spec.group.replace(/_/g, ' ').replace(/^./, (c) => c.toUpperCase());
 }
+
+// The row's stage; rows without one are growth rows (an edit regrows: always correct, if slow).
+export const stageOf = (spec) => (['grow', 'mesh', 'sway', 'view'].includes(spec?.stage) ? spec.stage : 'grow');
 
 // Slider step: 1 for whole numbers, else a power of ten about a thousandth of the range.
 function stepOf(spec) {
@@ -32,7 +31,7 @@ function el(tag, attrs = {}, text) {
 }
 
 export class ParamPanel {
-  // container: element to fill; onChange(): called after any edit.
+  // container: element to fill; onChange(spec, stage): called after any edit of the row `spec`.
   constructor(container, paramTable, onChange) {
     this.fields = new Map();  // key -> {spec, read(), write(value), setInvalid(bool)}
     const groups = new Map();
@@ -40,18 +39,20 @@ export class ParamPanel {
       if (!groups.has(spec.group)) groups.set(spec.group, []);
       groups.get(spec.group).push(spec);
     }
+    this.stages = new Map(paramTable.map((spec) => [spec.key, stageOf(spec)]));
     let first = true;
     for (const [group, specs] of groups) {
       const details = el('details', { class: 'group' });
       if (first) details.open = true;
       first = false;
-      details.append(el('summary', {}, `${groupTitle(group)} (${specs.length})`));
+      details.append(el('summary', {}, `${groupTitle(specs[0])} (${specs.length})`));
       for (const spec of specs) details.append(this.#field(spec, onChange));
       container.append(details);
     }
   }
 
-  #field(spec, onChange) {
+  #field(spec, report) {
+    const onChange = () => report(spec, stageOf(spec));
     const id = `param-${spec.key}`;
     const helpId = `help-${spec.key}`;
     const row = el('div', { class: 'field', title: spec.help });
@@ -104,6 +105,11 @@ export class ParamPanel {
       setInvalid: (bad) => { number.setAttribute('aria-invalid', bad ? 'true' : 'false'); },
     });
     return row;
+  }
+
+  // The stage of row `key` ('grow' for unknown keys).
+  stage(key) {
+    return this.stages.get(key) || 'grow';
   }
 
   // params: {key: value}

@@ -15,7 +15,7 @@ uniform int uNodes;  // node points per pose block
 
 out vec2 vUv;
 
-#include "skin.glsl"
+#include "../common/skin.glsl"
 
 void main() {
   vUv = aUv;

@@ -1,4 +1,5 @@
-// Sway skinning shared by the vertex shaders (inserted where a shader says #include "skin.glsl"):
+// Sway skinning shared by the vertex shaders (web/gl/program.js inserts it where a shader says
+// #include "../common/skin.glsl", relative to that shader):
 // node-point poses from core/sway/skin.h in a float texture, 4 RGBA32F texels per node point
 // (R columns with M in w, then T), rows of 1024 texels. p' = R p + T + w M, n' = R n.
 uniform highp sampler2D uPoses;

@@ -1,101 +1,23 @@
-// WebGL2 renderer: bark tubes, double-sided leaves and flowers, and a ground plane (full-polygon
-// mode), or the hybrid mode of thesis chapter 4: texture cards from a card atlas plus lines.
-// Shaders (GLSL ES 3.00) are fetched at runtime from /shaders/; `#include "skin.glsl"` in a shader
-// is replaced by that file (the sway skinning shared by every vertex shader).
+// The tree study's WebGL2 renderer: bark tubes, double-sided leaves and flowers on the shared
+// ground (full-polygon mode), or the hybrid mode of thesis chapter 4: texture cards from a card
+// atlas plus lines. Shaders (GLSL ES 3.00) are shaders/tree/*, including shaders/common/*.
+// Does not: grow or mesh trees (the worker does), keep page state, or own the camera.
+import { beginFrame, createContext, finishGpu, resizeCanvas, sunDirection } from '../gl/context.js';
+import { floatAttribute, staticBuffer, uintAttribute } from '../gl/buffers.js';
+import { Ground } from '../gl/ground.js';
+import { PickTarget } from '../gl/pick.js';
+import { loadPrograms } from '../gl/program.js';
+import { dataTexture, restPoses, uploadPoses } from '../gl/textures.js';
 
-export const BACKGROUND = [0.86, 0.90, 0.94];
+export { BACKGROUND } from '../gl/context.js';
+export const SHADERS = new URL('../../shaders/tree/', import.meta.url).href;
 const NONE = 0xffffffff;  // "no branch" for the branch-id attribute and the selection
-// Sway poses (core/sway/skin.h): 16 floats = 4 RGBA32F texels per node point, rows of 1024 texels.
-const POSE_TEXELS = 4;
-const POSE_ROW = 1024;
-// Hybrid line segments as data textures (shaders/line.vert): rows of 1024 texels.
-const DATA_ROW = 1024;
 
 export const PARTS = {
   bark: { color: [0.36, 0.25, 0.18], variation: [0.04, 0.03, 0.02], doubleSided: 0, specular: 0.03 },
   leaves: { color: [0.30, 0.55, 0.20], variation: [0.10, 0.14, 0.06], doubleSided: 1, specular: 0.05 },
   flowers: { color: [0.98, 0.74, 0.84], variation: [0.02, 0.08, 0.06], doubleSided: 1, specular: 0.08 },
 };
-
-export async function fetchText(url) {
-  const response = await fetch(url);
-  if (!response.ok) throw new Error(`cannot load ${url} (${response.status})`);
-  return response.text();
-}
-
-function compile(gl, type, source, name) {
-  const shader = gl.createShader(type);
-  gl.shaderSource(shader, source);
-  gl.compileShader(shader);
-  if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) {
-    const log = gl.getShaderInfoLog(shader);
-    gl.deleteShader(shader);
-    throw new Error(`shader ${name}: ${log}`);
-  }
-  return shader;
-}
-
-export function link(gl, vertexSource, fragmentSource, name) {
-  const program = gl.createProgram();
-  const vs = compile(gl, gl.VERTEX_SHADER, vertexSource, `${name}.vert`);
-  const fs = compile(gl, gl.FRAGMENT_SHADER, fragmentSource, `${name}.frag`);
-  gl.attachShader(program, vs);
-  gl.attachShader(program, fs);
-  gl.linkProgram(program);
-  gl.deleteShader(vs);
-  gl.deleteShader(fs);
-  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) throw new Error(`program ${name}: ${gl.getProgramInfoLog(program)}`);
-  const uniforms = {};
-  const count = gl.getProgramParameter(program, gl.ACTIVE_UNIFORMS);
-  for (let i = 0; i < count; ++i) {
-    const info = gl.getActiveUniform(program, i);
-    uniforms[info.name] = gl.getUniformLocation(program, info.name);
-  }
-  return { program, uniforms };
-}
-
-// Uploads sway poses (16 floats = 4 RGBA32F texels per node point, skin.glsl's rows of POSE_ROW
-// texels) of `points` node points into `texture`, straight from the array (no padded copy); the
-// texture is reallocated when its row count (`rows`, as last returned) changes. Returns the rows.
-export function uploadPoses(gl, texture, poses, points, rows) {
-  const needed = Math.max(1, Math.ceil((points * POSE_TEXELS) / POSE_ROW));
-  gl.bindTexture(gl.TEXTURE_2D, texture);
-  if (rows !== needed) {
-    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, POSE_ROW, needed, 0, gl.RGBA, gl.FLOAT, null);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
-  }
-  const texels = Math.min(points * POSE_TEXELS, Math.floor(poses.length / 4));
-  const full = Math.floor(texels / POSE_ROW), rest = texels - full * POSE_ROW;
-  if (full > 0) gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, POSE_ROW, full, gl.RGBA, gl.FLOAT, poses.subarray(0, full * POSE_ROW * 4));
-  if (rest > 0) gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, full, rest, 1, gl.RGBA, gl.FLOAT, poses.subarray(full * POSE_ROW * 4, texels * 4));
-  gl.bindTexture(gl.TEXTURE_2D, null);
-  return needed;
-}
-
-// A new STATIC_DRAW buffer holding `bytes`, left bound to `target`.
-export function staticBuffer(gl, bytes, target = gl.ARRAY_BUFFER) {
-  const b = gl.createBuffer();
-  gl.bindBuffer(target, b);
-  gl.bufferData(target, bytes, gl.STATIC_DRAW);
-  return b;
-}
-
-// Attribute `location` of the bound VAO reads `size` floats (or, with floatAttribute's twin
-// uintAttribute, unsigned ints) per vertex — or per instance with a divisor — from buffer `b`.
-export function floatAttribute(gl, location, b, size, stride = 0, offset = 0, divisor = 0) {
-  gl.bindBuffer(gl.ARRAY_BUFFER, b);
-  gl.enableVertexAttribArray(location);
-  gl.vertexAttribPointer(location, size, gl.FLOAT, false, stride, offset);
-  gl.vertexAttribDivisor(location, divisor);
-}
-
-export function uintAttribute(gl, location, b, size, divisor = 0) {
-  gl.bindBuffer(gl.ARRAY_BUFFER, b);
-  gl.enableVertexAttribArray(location);
-  gl.vertexAttribIPointer(location, size, gl.UNSIGNED_INT, 0, 0);
-  gl.vertexAttribDivisor(location, divisor);
-}
 
 // Paints a card atlas (thesis 4.2.1) into the framebuffer `fb` (hybrid.atlasSize square, colour =
 // `texture`, with a depth buffer) from the worker's clip-space triangles of the group
@@ -150,8 +72,7 @@ export class Renderer {
   // Throws an Error with a readable message when WebGL2 is missing.
   constructor(canvas) {
     this.canvas = canvas;
-    const gl = canvas.getContext('webgl2', { antialias: true, preserveDrawingBuffer: true, alpha: false });
-    if (!gl) throw new Error('WebGL2 is not available in this browser, so the tree cannot be drawn.');
+    const gl = createContext(canvas, 'the tree');
     this.gl = gl;
     this.parts = {};
     this.center = [0, 0, 0];
@@ -170,13 +91,7 @@ export class Renderer {
 
   // Identity poses for `nodes` node points (the grown shape).
   setRestPoses(nodes) {
-    const rest = new Float32Array(Math.max(1, nodes) * 16);
-    for (let i = 0; i < rest.length; i += 16) {
-      rest[i] = 1;
-      rest[i + 5] = 1;
-      rest[i + 10] = 1;
-    }
-    this.setPoses(rest);
+    this.setPoses(restPoses(nodes));
     this.swaying = false;
   }
 
@@ -194,34 +109,24 @@ export class Renderer {
   // The light model's sun (the core's convention): elevation and azimuth in degrees, y up, azimuth
   // measured from +x towards +z; direction = (cos el cos az, sin el, cos el sin az), towards the sun.
   setSun(elevationDeg, azimuthDeg) {
-    const el = (Number(elevationDeg) * Math.PI) / 180, az = (Number(azimuthDeg) * Math.PI) / 180;
-    if (!Number.isFinite(el) || !Number.isFinite(az)) return;
-    this.light = normalize([Math.cos(el) * Math.cos(az), Math.sin(el), Math.cos(el) * Math.sin(az)]);
+    const light = sunDirection(elevationDeg, azimuthDeg);
+    if (light) this.light = light;
   }
 
-  async init(shaderBase = new URL('../shaders/', import.meta.url).href) {
-    const names = ['tree.vert', 'tree.frag', 'ground.vert', 'ground.frag', 'pick.vert', 'pick.frag', 'skin.glsl',
-      'atlas.vert', 'card.vert', 'card.frag', 'line.vert', 'line.frag'];
-    const text = Object.fromEntries(await Promise.all(
-      names.map(async (f) => [f, await fetchText(new URL(f, shaderBase).href)])));
-    const source = (name) => text[name].replace('#include "skin.glsl"', text['skin.glsl']);
+  async init(shaderBase = SHADERS) {
     const gl = this.gl;
-    this.treeProgram = link(gl, source('tree.vert'), source('tree.frag'), 'tree');
-    this.pickProgram = link(gl, source('pick.vert'), source('pick.frag'), 'pick');
-    this.atlasProgram = link(gl, source('atlas.vert'), source('tree.frag'), 'atlas');
-    this.cardProgram = link(gl, source('card.vert'), source('card.frag'), 'card');
-    this.lineProgram = link(gl, source('line.vert'), source('line.frag'), 'line');
-    const groundVert = source('ground.vert'), groundFrag = source('ground.frag');
+    const p = await loadPrograms(gl, shaderBase, {
+      tree: ['tree.vert', 'tree.frag'], pick: ['pick.vert', '../common/pick.frag'], atlas: ['atlas.vert', 'tree.frag'],
+      card: ['card.vert', 'card.frag'], line: ['line.vert', 'line.frag'], ground: ['../common/ground.vert', '../common/ground.frag'],
+    });
+    this.treeProgram = p.tree;
+    this.pickProgram = p.pick;
+    this.atlasProgram = p.atlas;
+    this.cardProgram = p.card;
+    this.lineProgram = p.line;
+    this.ground = new Ground(gl, p.ground);
+    this.pickTarget = new PickTarget(gl);
     this.selected = NONE;
-    this.groundProgram = link(gl, groundVert, groundFrag, 'ground');
-    this.groundVao = gl.createVertexArray();
-    gl.bindVertexArray(this.groundVao);
-    const corners = gl.createBuffer();
-    gl.bindBuffer(gl.ARRAY_BUFFER, corners);
-    gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([-1, -1, 1, -1, -1, 1, 1, 1]), gl.STATIC_DRAW);
-    gl.enableVertexAttribArray(0);
-    gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
-    gl.bindVertexArray(null);
   }
 
   // mesh: {bark|leaves|flowers: {positions, normals, indices, joints, weights}} as ArrayBuffers
@@ -231,7 +136,7 @@ export class Renderer {
   setTree(mesh, bounds, swayNodes = 0, hybrid = null) {
     const gl = this.gl;
     this.setRestPoses(swayNodes);
-    this.#setHybrid(hybrid);
+    this.setHybrid(hybrid);
     for (const part of Object.values(this.parts)) {
       gl.deleteVertexArray(part.vao);
       part.buffers.forEach((b) => gl.deleteBuffer(b));
@@ -290,7 +195,7 @@ export class Renderer {
   // Hybrid mode (thesis 4.2): paints the card atlas once per tree from the worker's clip-space
   // triangles (group representatives and leaf clusters, each projected onto its tile), lit by the
   // sun like the full view, transparent elsewhere; mipmapped for distant cards.
-  #setHybrid(hybrid) {
+  setHybrid(hybrid) {
     const gl = this.gl;
     this.hybrid = null;
     this.#deleteDrawList();
@@ -330,25 +235,6 @@ export class Renderer {
     this.drawList = null;
   }
 
-  // A texture of `data` (a typed array view of `comps` values per texel) in rows of DATA_ROW texels,
-  // uploaded straight from the array (no padding copy), for texelFetch in a vertex shader.
-  #dataTexture(data, comps, internalFormat, format, type) {
-    const gl = this.gl;
-    const texels = data.length / comps;
-    const rows = Math.floor(texels / DATA_ROW), rest = texels - rows * DATA_ROW;
-    const texture = gl.createTexture();
-    gl.bindTexture(gl.TEXTURE_2D, texture);
-    gl.texStorage2D(gl.TEXTURE_2D, 1, internalFormat, DATA_ROW, rows + (rest > 0 ? 1 : 0) || 1);
-    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
-    if (rows > 0) gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, DATA_ROW, rows, format, type, data.subarray(0, rows * DATA_ROW * comps));
-    if (rest > 0) gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, rows, rest, 1, format, type, data.subarray(rows * DATA_ROW * comps));
-    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
-    gl.bindTexture(gl.TEXTURE_2D, null);
-    return texture;
-  }
-
   // The worker's 'drawList' for the current view (hybrid mode): cards and line segments.
   setDrawList(msg) {
     const gl = this.gl;
@@ -375,11 +261,11 @@ export class Renderer {
     const segments = l.widths.byteLength / 4;
     if (segments > 0) {
       const textures = [
-        this.#dataTexture(new Float32Array(l.positions), 3, gl.RGB32F, gl.RGB, gl.FLOAT),  // p0, p1
-        this.#dataTexture(new Float32Array(l.colors), 3, gl.RGB32F, gl.RGB, gl.FLOAT),
-        this.#dataTexture(new Float32Array(l.widths), 1, gl.R32F, gl.RED, gl.FLOAT),
-        this.#dataTexture(new Uint32Array(l.joints), 2, gl.RG32UI, gl.RG_INTEGER, gl.UNSIGNED_INT),
-        this.#dataTexture(new Float32Array(l.weights), 2, gl.RG32F, gl.RG, gl.FLOAT),
+        dataTexture(gl, new Float32Array(l.positions), 3, gl.RGB32F, gl.RGB, gl.FLOAT),  // p0, p1
+        dataTexture(gl, new Float32Array(l.colors), 3, gl.RGB32F, gl.RGB, gl.FLOAT),
+        dataTexture(gl, new Float32Array(l.widths), 1, gl.R32F, gl.RED, gl.FLOAT),
+        dataTexture(gl, new Uint32Array(l.joints), 2, gl.RG32UI, gl.RG_INTEGER, gl.UNSIGNED_INT),
+        dataTexture(gl, new Float32Array(l.weights), 2, gl.RG32F, gl.RG, gl.FLOAT),
       ];
       list.lines = { vao: gl.createVertexArray(), buffers: [], textures, count: segments };
     }
@@ -440,14 +326,13 @@ export class Renderer {
   // primitives drawn. One animation frame between draws keeps the page responsive.
   async timeFrames(camera, frames = 10) {
     const gl = this.gl;
-    const pixel = new Uint8Array(4);
     const times = [];
     let drawn = null;
     for (let i = 0; i <= frames; ++i) {
       await new Promise((resolve) => requestAnimationFrame(resolve));
       const start = performance.now();
       drawn = this.render(camera);
-      gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+      finishGpu(gl);
       if (i > 0) times.push(performance.now() - start);  // the first is a warm-up
     }
     times.sort((a, b) => a - b);
@@ -461,13 +346,7 @@ export class Renderer {
   }
 
   resize() {
-    const dpr = Math.min(window.devicePixelRatio || 1, 2);
-    const w = Math.max(1, Math.round(this.canvas.clientWidth * dpr));
-    const h = Math.max(1, Math.round(this.canvas.clientHeight * dpr));
-    if (this.canvas.width !== w || this.canvas.height !== h) {
-      this.canvas.width = w;
-      this.canvas.height = h;
-    }
+    resizeCanvas(this.canvas);
   }
 
   render(camera) {
@@ -475,31 +354,17 @@ export class Renderer {
     if (!this.treeProgram) return;
     const start = performance.now();
     let triangles = 0, drawCalls = 0;
-    this.resize();
-    gl.viewport(0, 0, this.canvas.width, this.canvas.height);
-    gl.clearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
-    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
-    gl.enable(gl.DEPTH_TEST);
+    beginFrame(gl, this.canvas);
     const viewProjection = camera.viewProjection(this.canvas.width / this.canvas.height);
 
-    const g = this.groundProgram;
-    gl.useProgram(g.program);
-    gl.uniformMatrix4fv(g.uniforms.uViewProjection, false, viewProjection);
-    gl.uniform3fv(g.uniforms.uCenter, this.center);
-    gl.uniform1f(g.uniforms.uExtent, this.extent);
-    gl.uniform1f(g.uniforms.uShadowRadius, this.shadowRadius);
     // The crown's shadow falls away from the sun (crown centre projected along the light).
     const reach = (this.crownHeight || 0) / Math.max(this.light[1], 0.25);
-    gl.uniform2fv(g.uniforms.uShadowOffset, [-this.light[0] * reach, -this.light[2] * reach]);
-    gl.uniform3fv(g.uniforms.uBackground, BACKGROUND);
-    gl.disable(gl.CULL_FACE);
-    gl.enable(gl.POLYGON_OFFSET_FILL);
-    gl.polygonOffset(1, 1);
-    gl.bindVertexArray(this.groundVao);
-    gl.drawArrays(gl.TRIANGLE_STRIP, 0, 4);
-    triangles += 2;
-    drawCalls += 1;
-    gl.disable(gl.POLYGON_OFFSET_FILL);
+    const ground = this.ground.draw(viewProjection, {
+      center: this.center, extent: this.extent, shadowRadius: this.shadowRadius,
+      shadowOffset: [-this.light[0] * reach, -this.light[2] * reach],
+    });
+    triangles += ground.triangles;
+    drawCalls += ground.drawCalls;
 
     let lines = 0;
     if (this.hybrid) {
@@ -598,31 +463,7 @@ export class Renderer {
     if (!this.pickProgram || !bark || !bark.picking) return null;
     this.resize();
     const w = this.canvas.width, h = this.canvas.height;
-    if (!this.pickTarget || this.pickTarget.w !== w || this.pickTarget.h !== h) {
-      if (this.pickTarget) {
-        gl.deleteFramebuffer(this.pickTarget.fb);
-        gl.deleteRenderbuffer(this.pickTarget.color);
-        gl.deleteRenderbuffer(this.pickTarget.depth);
-      }
-      const fb = gl.createFramebuffer();
-      const color = gl.createRenderbuffer();
-      const depth = gl.createRenderbuffer();
-      gl.bindRenderbuffer(gl.RENDERBUFFER, color);
-      gl.renderbufferStorage(gl.RENDERBUFFER, gl.RGBA8, w, h);
-      gl.bindRenderbuffer(gl.RENDERBUFFER, depth);
-      gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, w, h);
-      gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
-      gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.RENDERBUFFER, color);
-      gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depth);
-      this.pickTarget = { fb, color, depth, w, h };
-    }
-    gl.bindFramebuffer(gl.FRAMEBUFFER, this.pickTarget.fb);
-    gl.viewport(0, 0, w, h);
-    gl.clearColor(0, 0, 0, 0);
-    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
-    gl.enable(gl.DEPTH_TEST);
-    gl.disable(gl.BLEND);
-    gl.disable(gl.DITHER);  // ids must come back bit-exact
+    this.pickTarget.begin(w, h);
     const p = this.pickProgram;
     gl.useProgram(p.program);
     gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, camera.viewProjection(w / h));
@@ -634,29 +475,6 @@ export class Renderer {
     const scale = w / Math.max(1, this.canvas.clientWidth);
     const px = Math.round(x * scale), py = Math.round(h - 1 - y * scale);
     const r = Math.round(radius * scale);
-    const x0 = Math.max(0, px - r), y0 = Math.max(0, py - r);
-    const x1 = Math.min(w - 1, px + r), y1 = Math.min(h - 1, py + r);
-    let best = null, bestDistance = Infinity;
-    if (x1 >= x0 && y1 >= y0) {
-      const rw = x1 - x0 + 1, rh = y1 - y0 + 1;
-      const data = new Uint8Array(rw * rh * 4);
-      gl.readPixels(x0, y0, rw, rh, gl.RGBA, gl.UNSIGNED_BYTE, data);
-      for (let j = 0; j < rh; ++j) {
-        for (let i = 0; i < rw; ++i) {
-          const k = (j * rw + i) * 4;
-          const v = data[k] | (data[k + 1] << 8) | (data[k + 2] << 16);
-          const d = (x0 + i - px) ** 2 + (y0 + j - py) ** 2;
-          if (v > 0 && d < bestDistance) { bestDistance = d; best = v - 1; }
-        }
-      }
-    }
-    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-    gl.enable(gl.DITHER);
-    return best;
+    return this.pickTarget.read(px, py, r);
   }
-}
-
-function normalize(v) {
-  const l = Math.hypot(v[0], v[1], v[2]);
-  return v.map((x) => x / l);
 }

@@ -9,7 +9,7 @@ uniform mat4 uViewProjection;
 
 out vec2 vUv;
 
-#include "skin.glsl"
+#include "../common/skin.glsl"
 
 void main() {
   vUv = aUv;

@@ -16,7 +16,7 @@ out vec3 vNormal;
 out vec3 vWorld;
 out float vSelected;
 
-#include "skin.glsl"
+#include "../common/skin.glsl"
 
 void main() {
   vec3 translation, tipOffset;

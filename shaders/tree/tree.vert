@@ -19,7 +19,7 @@ out vec3 vNormal;
 out vec3 vWorld;
 out float vSelected;
 
-#include "skin.glsl"
+#include "../common/skin.glsl"
 
 float hash1(float x) { return fract(sin(x * 12.9898) * 43758.5453); }
 

@@ -1,0 +1,415 @@
+// The tree study's bindings: TreeSession, one tree grown year by year for the worker
+// (web/worker/tree_handler.js), with its mesh, sway, hybrid views and exports.
+//
+// JS BINDINGS DESIGN
+// - One WASM module (niwa_web) holds every study: one EMSCRIPTEN_BINDINGS(niwa_<study>) block per
+//   file (this one is niwa_tree; the table, presets and hash codec are common_bindings.cpp).
+// - Everything that crosses from JavaScript arrives as text (JSON or a URL hash) and is checked by
+//   the core itself (core/tree/tree_state: ApplyStateJson, DecodeTreeHash). Nothing here throws or
+//   aborts on bad input: errors come back as one line, either as the "error" field of a JSON
+//   answer or as a returned string ("" = success), or from TreeSession::error().
+// - Buffers leave through ONE generic accessor, buffers(group) -> {name: typed view} (buffers.h),
+//   not one getter per buffer. The views point into the WASM heap and stay valid only until the
+//   next call that may allocate: the worker copies each one ONCE right away and transfers that
+//   copy to the main thread (web/worker/transfer.js). Groups:
+//     "bark" | "leaves" | "flowers"   positions, normals (Float32 xyz), indices (Uint32), joints
+//                                     (Uint32, node point per vertex) and weights (Float32,
+//                                     eq. 3.15) of the sway skin (core/sway/skin.h); leaves also
+//                                     uvs (v = 0 at the petiole); bark also branchIds (Uint32 per
+//                                     vertex) and branchParents (Int32 per branch, -1 at the root)
+//     "atlas.bark" | "atlas.leaves" | "atlas.flowers"   positions, normals, indices: clip-space
+//                                     triangles that paint the card atlas (after buildHybrid)
+//     "cards"                         positions, uvs, indices, joints, weights (after hybridView)
+//     "lines"                         positions, colors, widths, joints, weights (after hybridView)
+//     "sway"                          poses (16 floats per node point and instance, WriteSwayPoses)
+//     "glb"                           bytes (Uint8, after buildGlb)
+//   An unknown group gives null.
+// - Calls, in order: TreeSession(stateJson) -> error(), hash(), years(); growYear() until done();
+//   buildMesh(); statsJson(); buffers(...). restate(stateJson) swaps in a state that grows the same
+//   tree (sway and render edits: re-skins, clears the hybrid scene). swayStart() /
+//   swayStartAt(origins in metres, 3 per instance) -> "" or error, swayStep(n) -> time, swayDt(),
+//   swayDuration(), swayWindSpeed(), swayInstances(). buildHybrid() -> "" or error, atlasSize(),
+//   renderMode(), hybridView(ex,ey,ez, tx,ty,tz, fovY, width, height) -> table 4.1 JSON,
+//   hybridViewSlot(slot, ...) with the hysteresis of that slot (0..255). buildGlb() -> "" or error;
+//   paramsJson().
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "buffers.h"
+#include "io/gltf_export.h"
+#include "params/param_json.h"
+#include "params/param_table.h"
+#include "render/atlas_mesh.h"
+#include "render/hybrid.h"
+#include "sway/skin.h"
+#include "sway/sway.h"
+#include "tree/growth.h"
+#include "tree/prune.h"
+#include "tree/tree_params.h"
+#include "tree/tree_report.h"
+#include "tree/tree_state.h"
+#include "tree/mesh.h"
+#include "tree/presets.h"
+#include "tree/tree.h"
+
+namespace niwa {
+namespace {
+
+using nlohmann::json;
+using nlohmann::ordered_json;
+
+
+// The sway and wind parameters of a state (rows of the one parameter table, groups "sway", "wind").
+SwayParams SwayParamsOf(const ParamSet& params) { return SwayParams(params); }
+
+}  // namespace
+
+// One tree grown year by year for the worker (web/worker/tree_handler.js), which yields to its
+// event loop between years so a newer request can supersede this one.
+class TreeSession {
+ public:
+  explicit TreeSession(const std::string& state_json) {
+    error_ = ApplyStateJson(state_json, &state_).Line();  // core/tree/tree_state
+    if (!error_.empty()) return;
+    grower_ = std::make_unique<Grower>(state_);  // a TreeState is its GrowRequest
+  }
+
+  std::string error() const { return error_; }
+  int years() const { return state_.years; }
+  int year() const { return grower_ ? grower_->year() : 0; }
+  bool done() const { return !grower_ || grower_->year() >= state_.years; }
+  std::string hash() const { return error_.empty() ? EncodeTreeHash(state_) : ""; }
+
+  // Swaps in `state_json` for the tree already grown (the page's sway and render edits): "" or one
+  // error line, and the session is unchanged on error. The state must grow the same tree (preset,
+  // seed, years and prunes; the worker also compares the growth rows). The sway model and skin are
+  // rebuilt from the new sway rows (eq. 3.15 weights depend on sway_alpha), any sway stops, and the
+  // hybrid scene is cleared (buildHybrid() rebuilds it with the new render rows).
+  std::string restate(const std::string& state_json) {
+    TreeState next;
+    std::string error = ApplyStateJson(state_json, &next).Line();
+    if (!error.empty()) return error;
+    if (!grower_ || !error_.empty()) return "restate: no tree has been grown";
+    std::vector<std::string> a, b;
+    for (const Prune& prune : state_.prunes) a.push_back(FormatPrune(prune));
+    for (const Prune& prune : next.prunes) b.push_back(FormatPrune(prune));
+    if (next.preset != state_.preset || next.seed != state_.seed || next.years != state_.years ||
+        a != b)
+      return "restate: preset, seed, years and prunes must be those of the tree grown";
+    state_ = std::move(next);
+    sways_.clear();
+    sway_model_ = BuildSwayModel(grower_->tree(), SwayParams(state_.params));
+    skin_ = BuildTreeSkin(mesh_, sway_model_);
+    poses_.assign(sway_model_.nodes.size() * kSwayPoseFloats, 0.0f);
+    RestSwayPoses(sway_model_.nodes.size(), poses_.data());
+    hybrid_ = HybridScene{};
+    atlas_ = AtlasMesh{};
+    has_selection_ = false;
+    slots_.clear();
+    draw_ = HybridDrawList{};
+    draw_skin_ = DrawListSkin{};
+    return "";
+  }
+
+  // The typed views of one buffer group (see JS BINDINGS DESIGN above), or null.
+  emscripten::val buffers(const std::string& group) const {
+    NamedBuffers out;
+    const auto part = [&out](const MeshBuffers& mesh, const VertexSkin& skin) {
+      out.Add("positions", mesh.positions)
+          .Add("normals", mesh.normals)
+          .Add("indices", mesh.indices)
+          .Add("joints", skin.joint)
+          .Add("weights", skin.weight);
+    };
+    const auto atlas = [&out](const MeshBuffers& mesh) {
+      out.Add("positions", mesh.positions)
+          .Add("normals", mesh.normals)
+          .Add("indices", mesh.indices);
+    };
+    if (group == "bark") {
+      part(mesh_.bark, skin_.bark);
+      out.Add("branchIds", mesh_.bark_branch_id).Add("branchParents", parents_);
+    } else if (group == "leaves") {
+      part(mesh_.leaves, skin_.leaves);
+      out.Add("uvs", mesh_.leaves.uvs);
+    } else if (group == "flowers") {
+      part(mesh_.flowers, skin_.flowers);
+    } else if (group == "atlas.bark") {
+      atlas(atlas_.bark);
+    } else if (group == "atlas.leaves") {
+      atlas(atlas_.leaves);
+    } else if (group == "atlas.flowers") {
+      atlas(atlas_.flowers);
+    } else if (group == "cards") {
+      out.Add("positions", draw_.card_positions)
+          .Add("uvs", draw_.card_uvs)
+          .Add("indices", draw_.card_indices)
+          .Add("joints", draw_skin_.cards.joint)
+          .Add("weights", draw_skin_.cards.weight);
+    } else if (group == "lines") {
+      out.Add("positions", draw_.line_positions)
+          .Add("colors", draw_.line_colors)
+          .Add("widths", draw_.line_widths)
+          .Add("joints", draw_skin_.lines.joint)
+          .Add("weights", draw_skin_.lines.weight);
+    } else if (group == "sway") {
+      out.Add("poses", poses_);
+    } else if (group == "glb") {
+      out.Add("bytes", glb_);
+    } else {
+      return emscripten::val::null();
+    }
+    return out.ToJs();
+  }
+
+  // Grows one more year; false when the tree already has all its years (or the state was bad).
+  bool growYear() {
+    if (done()) return false;
+    grower_->GrowYear();
+    return true;
+  }
+
+  // Builds the triangle meshes of the tree as grown so far; call before the buffer views.
+  void buildMesh() {
+    if (!grower_) return;
+    mesh_ = BuildTreeMesh(grower_->tree());
+    parents_.clear();
+    for (const Branch& branch : grower_->tree().branches) parents_.push_back(branch.parent);
+    // The node points of this tree and the skin that ties every vertex to one of them (thesis
+    // 3.3.1, eq. 3.15); the pose texture starts at rest.
+    sways_.clear();
+    sway_model_ = BuildSwayModel(grower_->tree(), SwayParams(state_.params));
+    skin_ = BuildTreeSkin(mesh_, sway_model_);
+    poses_.assign(sway_model_.nodes.size() * kSwayPoseFloats, 0.0f);
+    RestSwayPoses(sway_model_.nodes.size(), poses_.data());
+  }
+
+  // ---- Sway (thesis chapter 3) of the tree last meshed ----
+  int swayNodes() const { return static_cast<int>(sway_model_.nodes.size()); }
+
+  // (Re)starts the sway from rest at time 0 with the state's sway and wind parameters.
+  std::string swayStart() { return StartSway({glm::dvec3(0.0)}); }
+
+  // The same with one simulator per instance; origins: 3 numbers per instance, metres.
+  std::string swayStartAt(emscripten::val origins) {
+    if (!origins.isArray()) return "sway: origins must be an array of 3 numbers per instance";
+    const std::vector<double> o = emscripten::vecFromJSArray<double>(origins);
+    if (o.empty() || o.size() % 3 != 0 || o.size() / 3 > kMaxSwayInstances)
+      return "sway: origins must hold 3 numbers per instance, 1 to " +
+             std::to_string(kMaxSwayInstances) + " instances";
+    std::vector<glm::dvec3> at;
+    for (std::size_t i = 0; i < o.size(); i += 3) {
+      if (!std::isfinite(o[i]) || !std::isfinite(o[i + 1]) || !std::isfinite(o[i + 2]))
+        return "sway: origins must be finite numbers";
+      at.emplace_back(o[i] * 100.0, o[i + 1] * 100.0, o[i + 2] * 100.0);  // m -> cm
+    }
+    return StartSway(at);
+  }
+  int swayInstances() const { return static_cast<int>(sways_.size()); }
+
+  // Advances every instance `steps` time steps (at most 64 per call) and writes the poses (one
+  // block per instance); returns the time (s).
+  double swayStep(int steps) {
+    if (sways_.empty()) return 0;
+    const std::size_t nodes = sway_model_.nodes.size();
+    const int n = std::min(std::max(steps, 0), 64);
+    for (std::size_t k = 0; k < sways_.size(); ++k) {
+      for (int i = 0; i < n; ++i) sways_[k]->Step();
+      if (poses_.size() == sways_.size() * nodes * kSwayPoseFloats)
+        WriteSwayPoses(*sways_[k], MeshOptions{}.cm_to_units,
+                       poses_.data() + k * nodes * kSwayPoseFloats);
+    }
+    return sways_[0]->time();
+  }
+  double swayDt() const { return sway_params_.dt; }
+  double swayDuration() const { return sway_params_.duration; }
+  // Wind speed (m/s) at the tree's root now: drives the leaf flutter in the shader.
+  double swayWindSpeed() const {
+    if (sways_.empty()) return 0;
+    return glm::length(WindAt(sway_params_, glm::dvec3(0.0), sways_[0]->time())) / 100.0;
+  }
+
+  // The stats JSON of core/tree/tree_report (the CLI's --stats), plus idle_prunes (prunes that cut
+  // nothing, once the tree has all its years) and bounds (of every mesh vertex, metres).
+  std::string statsJson() const {
+    if (!grower_) {
+      ordered_json j;
+      j["error"] = error_;
+      return j.dump();
+    }
+    static const std::vector<Prune> kNone;
+    TreeStatsExtras extras;
+    extras.idle_prunes = done() ? &state_.prunes : &kNone;
+    extras.mesh = &mesh_;
+    return TreeStatsJson(grower_->tree(), grower_->timings(), extras);
+  }
+
+  // Binary glTF of the mesh last built (buildMesh); "" or one error line. Then glbBytes() views it.
+  std::string buildGlb() {
+    glb_.clear();
+    if (!grower_) return error_.empty() ? "no tree" : error_;
+    return WriteGlb(mesh_, &glb_);
+  }
+
+  // ---- Hybrid rendering (thesis chapter 4) of the tree last meshed ----
+  std::string buildHybrid() {
+    if (!grower_) return error_.empty() ? "no tree" : error_;
+    RenderOptions options = RenderOptionsFromParams(state_.params);
+    std::string error = CheckRenderOptions(options);
+    if (!error.empty()) return error;
+    hybrid_ = BuildHybridScene(grower_->tree(), options);
+    atlas_ = BuildAtlasMesh(mesh_, hybrid_);
+    has_selection_ = false;
+    slots_.clear();
+    return hybrid_.atlas_fits ? "" : "render: the card atlas does not fit; lower card_planes";
+  }
+  int atlasSize() const { return hybrid_.atlas_size; }
+  int renderMode() const { return static_cast<int>(state_.params.Get(ParamId::kRenderMode)); }
+
+  // Card-or-line per branch for this camera (metres, radians, pixels), the draw list and its skin;
+  // returns the table 4.1 counts as JSON (CountHybrid + CountFull), or {"error": ...}.
+  std::string hybridView(double ex, double ey, double ez, double tx, double ty, double tz,
+                         double fov_y, int width, int height) {
+    ordered_json j;
+    if (!grower_ || hybrid_.frames.empty()) {
+      j["error"] = "no hybrid scene";
+      return j.dump();
+    }
+    const Tree& tree = grower_->tree();
+    RenderCamera camera;
+    camera.eye = glm::vec3(static_cast<float>(ex), static_cast<float>(ey), static_cast<float>(ez));
+    camera.target =
+        glm::vec3(static_cast<float>(tx), static_cast<float>(ty), static_cast<float>(tz));
+    camera.fov_y = static_cast<float>(fov_y);
+    camera.width = std::max(1, width);
+    camera.height = std::max(1, height);
+    selection_ = SelectHybrid(tree, hybrid_, camera, has_selection_ ? &selection_ : nullptr);
+    has_selection_ = true;
+    LineShading shading;  // eq. 4.2 lit by the light model's sun (renderer.js setSun)
+    const double el = state_.params.Get(ParamId::kSunElevation) * 3.14159265358979 / 180.0;
+    const double az = state_.params.Get(ParamId::kSunAzimuth) * 3.14159265358979 / 180.0;
+    shading.light_dir =
+        glm::vec3(static_cast<float>(std::cos(el) * std::cos(az)), static_cast<float>(std::sin(el)),
+                  static_cast<float>(std::cos(el) * std::sin(az)));
+    draw_ = BuildDrawList(tree, hybrid_, selection_, camera, shading);
+    draw_skin_ = BuildDrawListSkin(tree, hybrid_, draw_, sway_model_);
+    RenderStats stats = CountHybrid(hybrid_, selection_);
+    CountFull(mesh_, &stats);
+    j["lines"] = stats.lines;
+    j["line_branches"] = stats.line_branches;
+    j["card_branches"] = stats.card_branches;
+    j["branch_polygons"] = stats.branch_polygons;
+    j["leaf_polygons"] = stats.leaf_polygons;
+    j["total_polygons"] = stats.total_polygons;
+    j["primitives"] = stats.primitives;
+    j["textures"] = stats.textures;
+    j["leaf_clusters"] = stats.leaf_clusters;
+    j["full_polygons"] = stats.full_polygons;
+    int alive = 0;
+    for (const Branch& b : tree.branches) alive += b.alive ? 1 : 0;
+    j["alive_branches"] = alive;
+    return j.dump();
+  }
+  // hybridView with its own previous selection per slot (the default view keeps its own).
+  std::string hybridViewSlot(int slot, double ex, double ey, double ez, double tx, double ty,
+                             double tz, double fov_y, int width, int height) {
+    if (slot < 0 || slot > 255)
+      return R"({"error":"view: slot must be a whole number in [0, 255]"})";
+    if (slots_.size() <= static_cast<size_t>(slot)) slots_.resize(slot + 1);
+    Slot& s = slots_[slot];
+    std::swap(selection_, s.selection);
+    std::swap(has_selection_, s.has_selection);
+    std::string out = hybridView(ex, ey, ez, tx, ty, tz, fov_y, width, height);
+    std::swap(selection_, s.selection);
+    std::swap(has_selection_, s.has_selection);
+    return out;
+  }
+
+  // The state's full parameter set as JSON (ParamsToJson), for the "Download .json" button.
+  std::string paramsJson() const { return ParamsToJson(state_.params); }
+
+ private:
+  static constexpr std::size_t kMaxSwayInstances = 4096;
+
+  // One simulator per origin (cm), from rest at time 0; the poses at rest.
+  std::string StartSway(const std::vector<glm::dvec3>& origins) {
+    if (!grower_) return error_.empty() ? "no tree" : error_;
+    SwayParams params = SwayParamsOf(state_.params);
+    std::string error = CheckSwayParams(state_.params);
+    if (!error.empty()) return error;
+    sways_.clear();
+    for (const glm::dvec3& origin : origins)
+      sways_.push_back(std::make_unique<SwaySimulator>(grower_->tree(), params, origin));
+    sway_params_ = params;
+    const std::size_t points = origins.size() * sway_model_.nodes.size();
+    poses_.assign(points * kSwayPoseFloats, 0.0f);
+    RestSwayPoses(points, poses_.data());
+    return "";
+  }
+
+  TreeState state_;
+  std::string error_;
+  std::unique_ptr<Grower> grower_;
+  TreeMesh mesh_;
+  std::vector<int32_t> parents_;
+  std::vector<unsigned char> glb_;
+  SwayModel sway_model_;
+  TreeSkin skin_;
+  SwayParams sway_params_;
+  std::vector<std::unique_ptr<SwaySimulator>> sways_;  // one per instance (swayStartAt)
+  std::vector<float> poses_;  // sways_.size() blocks of nodes x 16 floats (one at rest before)
+  HybridScene hybrid_;
+  AtlasMesh atlas_;
+  HybridSelection selection_;
+  bool has_selection_ = false;
+  HybridDrawList draw_;
+  DrawListSkin draw_skin_;
+  struct Slot {
+    HybridSelection selection;
+    bool has_selection = false;
+  };
+  std::vector<Slot> slots_;  // hybridViewSlot's previous selections
+};
+
+}  // namespace niwa
+
+EMSCRIPTEN_BINDINGS(niwa_tree) {
+  using namespace emscripten;
+  class_<niwa::TreeSession>("TreeSession")
+      .constructor<std::string>()
+      .function("error", &niwa::TreeSession::error)
+      .function("years", &niwa::TreeSession::years)
+      .function("year", &niwa::TreeSession::year)
+      .function("done", &niwa::TreeSession::done)
+      .function("hash", &niwa::TreeSession::hash)
+      .function("restate", &niwa::TreeSession::restate)
+      .function("buffers", &niwa::TreeSession::buffers)
+      .function("growYear", &niwa::TreeSession::growYear)
+      .function("buildMesh", &niwa::TreeSession::buildMesh)
+      .function("statsJson", &niwa::TreeSession::statsJson)
+      .function("buildGlb", &niwa::TreeSession::buildGlb)
+      .function("paramsJson", &niwa::TreeSession::paramsJson)
+      .function("swayNodes", &niwa::TreeSession::swayNodes)
+      .function("swayStart", &niwa::TreeSession::swayStart)
+      .function("swayStartAt", &niwa::TreeSession::swayStartAt)
+      .function("swayInstances", &niwa::TreeSession::swayInstances)
+      .function("swayStep", &niwa::TreeSession::swayStep)
+      .function("swayDt", &niwa::TreeSession::swayDt)
+      .function("swayDuration", &niwa::TreeSession::swayDuration)
+      .function("swayWindSpeed", &niwa::TreeSession::swayWindSpeed)
+      .function("buildHybrid", &niwa::TreeSession::buildHybrid)
+      .function("atlasSize", &niwa::TreeSession::atlasSize)
+      .function("renderMode", &niwa::TreeSession::renderMode)
+      .function("hybridView", &niwa::TreeSession::hybridView)
+      .function("hybridViewSlot", &niwa::TreeSession::hybridViewSlot);
+}

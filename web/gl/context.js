@@ -1,0 +1,49 @@
+// WebGL2 context setup shared by every renderer: the context with the options the pages rely on
+// (a preserved drawing buffer for PNG downloads and test read-backs), canvas sizing, read-backs.
+// Does not: draw anything, own programs or buffers, or handle context loss (the page does).
+
+export const BACKGROUND = [0.86, 0.90, 0.94];
+
+// The canvas's WebGL2 context; throws an Error naming `what` when WebGL2 is missing.
+export function createContext(canvas, what = 'the scene') {
+  const gl = canvas.getContext('webgl2', { antialias: true, preserveDrawingBuffer: true, alpha: false });
+  if (!gl) throw new Error(`WebGL2 is not available in this browser, so ${what} cannot be drawn.`);
+  return gl;
+}
+
+// Matches the drawing buffer to the canvas's CSS size (device pixel ratio at most 2).
+export function resizeCanvas(canvas) {
+  const dpr = Math.min(window.devicePixelRatio || 1, 2);
+  const w = Math.max(1, Math.round(canvas.clientWidth * dpr));
+  const h = Math.max(1, Math.round(canvas.clientHeight * dpr));
+  if (canvas.width !== w || canvas.height !== h) {
+    canvas.width = w;
+    canvas.height = h;
+  }
+}
+
+// Clears the default framebuffer to the background with depth testing on.
+export function beginFrame(gl, canvas) {
+  resizeCanvas(canvas);
+  gl.viewport(0, 0, canvas.width, canvas.height);
+  gl.clearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
+  gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+  gl.enable(gl.DEPTH_TEST);
+}
+
+// Blocks until the GPU has finished everything drawn so far (reads one pixel back).
+export function finishGpu(gl) {
+  const pixel = new Uint8Array(4);
+  gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+  return pixel;
+}
+
+// The light model's sun (the core's convention): elevation and azimuth in degrees, y up, azimuth
+// from +x towards +z; returns the unit direction towards the sun, or null for non-numbers.
+export function sunDirection(elevationDeg, azimuthDeg) {
+  const el = (Number(elevationDeg) * Math.PI) / 180, az = (Number(azimuthDeg) * Math.PI) / 180;
+  if (!Number.isFinite(el) || !Number.isFinite(az)) return null;
+  const v = [Math.cos(el) * Math.cos(az), Math.sin(el), Math.cos(el) * Math.sin(az)];
+  const l = Math.hypot(v[0], v[1], v[2]);
+  return v.map((x) => x / l);
+}

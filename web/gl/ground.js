@@ -1,0 +1,41 @@
+// The ground plane (shaders/common/ground.*): a square of half-size `extent` at y = 0 with a soft
+// contact shadow, fading into the background. Shared by every study's view.
+// Does not: cast real shadows or follow a terrain (the terrain study draws its own surface).
+import { BACKGROUND } from './context.js';
+
+export class Ground {
+  // program: the linked ground program ({program, uniforms}).
+  constructor(gl, program) {
+    this.gl = gl;
+    this.program = program;
+    this.vao = gl.createVertexArray();
+    gl.bindVertexArray(this.vao);
+    this.corners = gl.createBuffer();
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.corners);
+    gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([-1, -1, 1, -1, -1, 1, 1, 1]), gl.STATIC_DRAW);
+    gl.enableVertexAttribArray(0);
+    gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
+    gl.bindVertexArray(null);
+  }
+
+  // Draws the ground (2 triangles, 1 draw call) pushed back by a polygon offset.
+  // center: [x, y, z] m; shadowOffset: [x, z] m of the shadow's centre from `center`.
+  draw(viewProjection, { center, extent, shadowRadius, shadowOffset }) {
+    const gl = this.gl, g = this.program;
+    gl.useProgram(g.program);
+    gl.uniformMatrix4fv(g.uniforms.uViewProjection, false, viewProjection);
+    gl.uniform3fv(g.uniforms.uCenter, center);
+    gl.uniform1f(g.uniforms.uExtent, extent);
+    gl.uniform1f(g.uniforms.uShadowRadius, shadowRadius);
+    gl.uniform2fv(g.uniforms.uShadowOffset, shadowOffset);
+    gl.uniform3fv(g.uniforms.uBackground, BACKGROUND);
+    gl.disable(gl.CULL_FACE);
+    gl.enable(gl.POLYGON_OFFSET_FILL);
+    gl.polygonOffset(1, 1);
+    gl.bindVertexArray(this.vao);
+    gl.drawArrays(gl.TRIANGLE_STRIP, 0, 4);
+    gl.bindVertexArray(null);
+    gl.disable(gl.POLYGON_OFFSET_FILL);
+    return { triangles: 2, drawCalls: 1 };
+  }
+}

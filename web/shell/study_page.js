@@ -1,0 +1,108 @@
+// The shell every study page shares: the header nav linking the studies' pages, the notices box
+// (text only, never markup: notices may echo the URL), the share line, downloads, Copy link and
+// the embed dialog. A study page module wires only its own controls on top of these.
+// Does not: talk to the worker, keep history (hash_history.js), or draw (web/gl, web/<study>).
+
+// The studies' pages, in nav order: the ONE list of them. A study's entry is marked `live` in the
+// commit that adds its page (public/<page>), so the nav never links a page that does not exist.
+export const STUDIES = [
+  { id: 'tree', title: 'Tree', page: 'index.html', live: true },
+  { id: 'grove', title: 'Grove', page: 'grove.html', live: true },
+  { id: 'ivy', title: 'Ivy', page: 'ivy.html', live: false },
+  { id: 'terrain', title: 'Terrain', page: 'terrain.html', live: false },
+  { id: 'moss', title: 'Moss', page: 'moss.html', live: false },
+  { id: 'bark', title: 'Bark', page: 'bark.html', live: false },
+];
+
+// Fills `nav` (a <nav> element) with links to the live studies' pages; `current` (a study id) is
+// marked aria-current. Links are relative to the page's folder (public/).
+export function mountStudyNav(nav, current) {
+  if (!nav) return;
+  const list = document.createElement('ul');
+  for (const study of STUDIES.filter((s) => s.live)) {
+    const item = document.createElement('li');
+    const link = document.createElement('a');
+    link.href = study.page === 'index.html' ? './' : study.page;
+    link.textContent = study.title;
+    if (study.id === current) link.setAttribute('aria-current', 'page');
+    item.append(link);
+    list.append(item);
+  }
+  nav.replaceChildren(list);
+}
+
+// Named sources of notice lines shown together in one element (textContent only).
+export class Notices {
+  constructor(element, order = []) {
+    this.element = element;
+    this.sources = new Map(order.map((name) => [name, []]));
+  }
+
+  // Replaces the lines of `source` (a string, an array of strings, or '' / [] for none).
+  set(source, lines) {
+    this.sources.set(source, (Array.isArray(lines) ? lines : [lines]).filter(Boolean).map(String));
+    this.show();
+  }
+
+  show() {
+    const lines = [...this.sources.values()].flat();
+    this.element.textContent = lines.join('\n');
+    this.element.hidden = lines.length === 0;
+  }
+}
+
+// Saves `blob` as `name` through a temporary link; says so on `status` (an element, optional).
+export function download(blob, name, status) {
+  const url = URL.createObjectURL(blob);
+  const a = document.createElement('a');
+  a.href = url;
+  a.download = name;
+  document.body.append(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 1000);
+  if (status) status.textContent = `Saved ${name}`;
+}
+
+// Copies location.href to the clipboard, or shows it for copying by hand.
+export async function copyLink(status) {
+  try {
+    await navigator.clipboard.writeText(location.href);
+    status.textContent = 'Link copied.';
+  } catch {
+    status.textContent = `Copy this link: ${location.href}`;
+  }
+}
+
+// Opens the embed dialog with the custom-element and iframe snippets for the current hash.
+// ui: {dialog, element, iframe} (the textareas); tag: the custom element (e.g. 'niwa-tree');
+// title: the iframe's title.
+export function showEmbedDialog(ui, { tag, title }) {
+  const base = new URL('.', location.href).href;
+  const state = location.hash.slice(1).replace(/&/g, '&amp;').replace(/"/g, '&quot;');
+  ui.element.value = `<script type="module" src="${base}niwa-embed.js"></script>\n`
+    + `<${tag} state="${state}" style="width:480px;height:360px"></${tag}>`;
+  ui.iframe.value = `<iframe src="${base}embed.html#${state}" width="480" height="360" title="${title}" loading="lazy"></iframe>`;
+  ui.dialog.showModal();
+  ui.element.select();
+}
+
+// The stats line's frame cost: the mean CPU time of the last `size` frames drawn (frames are drawn
+// on demand, so there is no steady frame rate to report; GPU time is not measurable here).
+export class FrameTimes {
+  constructor(size = 30) {
+    this.size = size;
+    this.times = [];
+  }
+
+  // Adds one frame's CPU ms; returns the mean over the kept frames.
+  push(ms) {
+    this.times.push(ms);
+    if (this.times.length > this.size) this.times.shift();
+    return this.times.reduce((a, b) => a + b, 0) / this.times.length;
+  }
+
+  get count() {
+    return this.times.length;
+  }
+}

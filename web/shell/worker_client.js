@@ -1,0 +1,116 @@
+// The pages' side of the worker protocol (web/worker/protocol.js): one shared module worker per
+// page, and per client (the tree page, each grove tree, each <niwa-tree>) request ids, supersede
+// and promise replies. Every page and the embed talk to the worker through this file only.
+// Does not: know any study's messages beyond their envelope {type, id, client}, retry, or time out.
+
+const WORKER_URL = new URL('../worker/worker.js', import.meta.url);
+
+let shared = null;  // {worker, clients: Map(name -> WorkerClient)}
+
+// The page's one worker (created on first use). From another origin (the embed on a foreign page)
+// a one-line module shim imports it, since a worker script must be same-origin.
+function sharedWorker() {
+  if (shared) return shared;
+  const url = WORKER_URL;
+  const worker = url.origin === location.origin
+    ? new Worker(url, { type: 'module' })
+    : new Worker(URL.createObjectURL(new Blob([`import ${JSON.stringify(url.href)};`], { type: 'text/javascript' })), { type: 'module' });
+  shared = { worker, clients: new Map() };
+  worker.onmessage = (event) => {
+    const msg = event.data || {};
+    shared.clients.get(typeof msg.client === 'string' ? msg.client : 'app')?.deliver(msg);
+  };
+  worker.onerror = (e) => {
+    e.preventDefault();
+    const text = `The simulation worker failed to start${e.message ? `: ${e.message}` : ''}.`;
+    for (const client of shared.clients.values()) client.failed(text);
+  };
+  return shared;
+}
+
+let nextId = 0;  // ids are unique across the page's clients
+
+export class WorkerClient {
+  // name: the protocol's client string (unique on the page); study: the worker handler its
+  // messages go to (omitted: the worker's default, 'tree'); onFailure(text): the worker failed.
+  constructor(name, { study, onFailure } = {}) {
+    this.name = name;
+    this.study = study;
+    this.handlers = new Map();  // type -> handler(msg)
+    this.pending = new Map();   // id -> {group, done: Set of reply types, resolve}
+    this.latest = new Map();    // group -> newest id
+    this.onFailure = onFailure || (() => {});
+    const { clients } = sharedWorker();
+    if (clients.has(name)) throw new Error(`worker client '${name}' exists already`);
+    clients.set(name, this);
+  }
+
+  // Calls handler(msg) for every current message of `type` (superseded replies never arrive).
+  on(type, handler) {
+    this.handlers.set(type, handler);
+    return this;
+  }
+
+  // Sends {type, client, ...fields} without expecting a reply (transfer: ArrayBuffers to move).
+  post(type, fields = {}, transfer = []) {
+    const envelope = this.study ? { type, client: this.name, study: this.study } : { type, client: this.name };
+    sharedWorker().worker.postMessage({ ...fields, ...envelope }, transfer);
+  }
+
+  // Sends a request with a fresh id; a newer request of the same `group` supersedes it (its later
+  // replies are dropped and its promise resolves to null). Resolves to the first reply whose type
+  // is in `done` (or an 'error' with this id). Returns {id, reply}.
+  request(type, fields = {}, { group = type, done = [] } = {}) {
+    const id = ++nextId;
+    const superseded = this.latest.get(group);
+    if (superseded !== undefined) this.#settle(superseded, null);
+    this.latest.set(group, id);
+    let resolve;
+    const reply = new Promise((r) => { resolve = r; });
+    this.pending.set(id, { group, done: new Set([...done, 'error']), resolve });
+    this.post(type, { ...fields, id });
+    return { id, reply };
+  }
+
+  // The newest id of `group` (0 before any request).
+  latestId(group) {
+    return this.latest.get(group) || 0;
+  }
+
+  // Drops every pending request of `group` (their replies are ignored from now on).
+  cancel(group) {
+    const id = this.latest.get(group);
+    if (id !== undefined) this.#settle(id, null);
+    this.latest.delete(group);
+  }
+
+  // Unregisters the client (its replies are dropped).
+  close() {
+    for (const id of [...this.pending.keys()]) this.#settle(id, null);
+    sharedWorker().clients.delete(this.name);
+  }
+
+  deliver(msg) {
+    const entry = msg.id === undefined ? null : this.pending.get(msg.id);
+    // A reply with an id this client no longer waits for: superseded or cancelled.
+    if (msg.id !== undefined && !entry && this.#wasRequested(msg.id)) return;
+    this.handlers.get(msg.type)?.(msg);
+    if (entry && entry.done.has(msg.type)) this.#settle(msg.id, msg);
+  }
+
+  failed(text) {
+    this.onFailure(text);
+  }
+
+  // Ids come from this page's counter: any id at most nextId that is not pending was settled.
+  #wasRequested(id) {
+    return Number.isInteger(id) && id > 0 && id <= nextId;
+  }
+
+  #settle(id, value) {
+    const entry = this.pending.get(id);
+    if (!entry) return;
+    this.pending.delete(id);
+    entry.resolve(value);
+  }
+}

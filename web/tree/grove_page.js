@@ -1,0 +1,448 @@
+// Grove page (public/grove.html): 100 trees made of 10 unique trees (5 presets × 2 seeds), each grown
+// once in the shared worker and drawn instanced, in full mode or hybrid mode (thesis ch. 4) with one
+// eq. 4.1 draw list per (unique tree, distance band). Hash: #mode=full|hybrid&cam=yaw,pitch,dist,tx,ty,tz
+// &wind=1 (blowing) and any of the wind rows of the parameter table (WIND below), read at load.
+// Wind (issue 6, beyond the thesis): Blow sways every instance with the wind at ITS position: the
+// worker runs one SwaySimulator per instance (origin = the instance's base) for each unique tree and
+// sends all instances' poses of that tree in one 'pose'; the shaders skin each instance with its block.
+// Does not: grow or sway trees (the worker does) or draw directly (grove_renderer.js does).
+import { OrbitCamera } from '../gl/orbit_camera.js';
+import { FrameLoop, nextFrame } from '../gl/frame_loop.js';
+import { mountStudyNav } from '../shell/study_page.js';
+import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
+import { WorkerClient } from '../shell/worker_client.js';
+import { GroveRenderer } from './grove_renderer.js';
+
+// The unique trees: a few seconds of growing in total.
+export const UNIQUE = [
+  { preset: 'sakura', seed: 1, years: 9 }, { preset: 'sakura', seed: 2, years: 9 },
+  { preset: 'keyaki', seed: 1, years: 12 }, { preset: 'keyaki', seed: 2, years: 12 },
+  { preset: 'maple', seed: 1, years: 10 }, { preset: 'maple', seed: 2, years: 10 },
+  { preset: 'ginkgo', seed: 1, years: 10 }, { preset: 'ginkgo', seed: 2, years: 10 },
+  { preset: 'pine', seed: 1, years: 10 }, { preset: 'pine', seed: 2, years: 10 },
+];
+const ROWS = 10, SPACING = 4.2;  // 10 × 10 trees, metres apart (jittered)
+const BAND_RATIO = 1.4;  // distance bands: [d, 1.4 d) share one draw list per unique tree
+// The grove's wind (rows of the parameter table, group "wind"): 8 m/s towards +x with a gust front
+// travelling downwind at 4 m/s that enters the grove's upwind edge (x ≈ −20 m) as Blow is pressed
+// (gust_on 5 s at x = 0) and crosses it in about 10 s, and a ±40 % wave 25 m long every 5 s; the wind
+// then blows for the 10 minutes of the run. A hash key of the same name overrides a value.
+export const WIND = {
+  wind_speed: 8, wind_dir: 0, gust_on: 5, gust_off: 600, duration: 600,
+  gust_front_speed: 4, wind_variation: 0.4, wind_wavelength: 25, wind_period: 5,
+};
+
+const ui = {
+  canvas: document.getElementById('view'),
+  mode: document.getElementById('mode'),
+  stats: document.getElementById('stats'),
+  time: document.getElementById('time'),
+  frames: document.getElementById('frames'),
+  timing: document.getElementById('timing'),
+  message: document.getElementById('message'),
+  reset: document.getElementById('reset-view'),
+  wind: document.getElementById('wind'),
+  windInfo: document.getElementById('wind-info'),
+};
+
+// The grove: instance -> unique tree, base position and scale (a fixed pseudo-random layout).
+function layout() {
+  let state = 20240531;
+  const random = () => {  // mulberry32
+    state = (state + 0x6d2b79f5) | 0;
+    let t = Math.imul(state ^ (state >>> 15), 1 | state);
+    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+  const out = [];
+  const blocks = new Array(UNIQUE.length).fill(0);
+  for (let r = 0; r < ROWS; ++r) {
+    for (let c = 0; c < ROWS; ++c) {
+      const tree = (r * 3 + c) % UNIQUE.length;
+      out.push({
+        tree,
+        block: blocks[tree]++,  // its index among the tree's instances: its pose block
+        position: [(c - (ROWS - 1) / 2 + (random() - 0.5) * 0.5) * SPACING, 0,
+          (r - (ROWS - 1) / 2 + (random() - 0.5) * 0.5) * SPACING],
+        scale: 0.8 + 0.4 * random(),
+      });
+    }
+  }
+  return out;
+}
+const INSTANCES = layout();
+
+let renderer = null;
+const camera = new OrbitCamera();
+const trees = [];  // unique tree index -> {bounds, stats} once grown
+let mode = 'hybrid';
+let timing = null;  // last "Time N frames" result
+let viewRound = 0, viewPending = null, viewDirty = false, viewMs = 0;
+let wind = { ...WIND };   // the wind of every unique tree's state (WIND with the hash's overrides)
+let windPlaying = false, windRound = 0;
+const sway = [];          // unique tree -> {time, wind, stepMs, poses} of the last pose drawn
+const poseDone = new Set();  // clients whose pose is waiting for the next frame
+// One worker client per unique tree ('grove-0' ...) plus 'grove' for the module's ready message.
+const onFailure = () => fail('The simulation worker failed to start.');
+const treeClients = UNIQUE.map((_, index) => new WorkerClient(`grove-${index}`, { onFailure }));
+const groveClient = new WorkerClient('grove', { onFailure });
+mountStudyNav(document.getElementById('studies'), 'grove');
+
+function readHash() {
+  const params = new URLSearchParams(location.hash.slice(1));
+  mode = params.get('mode') === 'full' ? 'full' : 'hybrid';
+  ui.mode.value = mode;
+  setHooks({ mode });
+  return { cam: params.get('cam'), wind: params.get('wind') === '1' };
+}
+
+function writeHash() {
+  const params = new URLSearchParams(location.hash.slice(1));
+  const extra = Object.keys(WIND).filter((k) => params.has(k)).map((k) => `&${k}=${params.get(k)}`).join('');
+  const hash = `#mode=${mode}&cam=${camera.toHash()}${windPlaying ? '&wind=1' : ''}${extra}`;
+  if (location.hash !== hash) history.replaceState(null, '', hash);
+}
+
+function resetCamera() {
+  camera.yaw = 0.6;
+  camera.pitch = 0.34;
+  const half = (ROWS / 2) * SPACING;
+  camera.frame({ min: [-half, 0, -half], max: [half, 5, half] }, 0.58);
+  camera.target[1] = 1;
+}
+
+function showMessage(text) {
+  ui.message.textContent = text;
+  ui.message.hidden = !text;
+}
+
+function fail(text) {
+  setHooks({ status: 'error' });
+  showMessage(text);
+}
+
+const n = (x) => Math.round(x).toLocaleString('en-US');
+function updateStats(frame) {
+  const grown = trees.filter(Boolean).length;
+  const parts = [`${frame.instances} trees (${frame.uniqueDrawn} unique of ${UNIQUE.length})`, mode,
+    `${n(frame.triangles)} triangles`, `${n(frame.lines)} lines`, `${frame.drawCalls} draw calls`];
+  if (mode === 'hybrid' && viewMs) parts.push(`draw lists ${viewMs.toFixed(0)} ms`);
+  if (windPlaying && sway.length) {
+    const cost = sway.reduce((sum, s) => sum + (s?.stepMs || 0), 0);
+    parts.push(`sway ${cost.toFixed(1)} ms/step (${INSTANCES.length} trees)`);
+  }
+  if (timing) parts.push(`${timing.median.toFixed(1)} ms/frame (${timing.mode}, median of ${timing.frames})`);
+  ui.stats.textContent = grown < UNIQUE.length ? `growing ${grown}/${UNIQUE.length} unique trees…` : parts.join(' · ');
+  setHooks({
+    instances: frame.instances, uniqueDrawn: frame.uniqueDrawn, unique: UNIQUE.length,
+    triangles: frame.triangles, lines: frame.lines, drawCalls: frame.drawCalls, drawnMode: frame.mode,
+  });
+}
+
+const frameLoop = new FrameLoop(() => {
+  const pending = [...poseDone];
+  poseDone.clear();
+  updateStats(renderer.render(camera, mode));
+  bumpHook('frameSerial');
+  // The round of draw lists this frame drew (hybrid): a test waits for it, not just for the lists.
+  setHooks({ drawnViewSerial: mode === 'hybrid' ? hookValue('viewSerial') || '0' : '0' });
+  if (windPlaying) showWind();
+  // The worker sends a tree's next pose once this one is on screen.
+  for (const client of pending) treeClients[Number(client.slice('grove-'.length))].post('poseDone');
+  // Ready once a frame with every unique tree is on screen (hybrid: see data-view-pending too).
+  if (trees.filter(Boolean).length === UNIQUE.length && hookValue('status') === 'loading') setHooks({ status: 'ready' });
+});
+function requestFrame() {
+  if (renderer) frameLoop.request();
+}
+
+// Hybrid mode: one 'view' per (unique tree, distance band) with that band's nearest instance's
+// camera in the tree's own frame; the worker keeps the hysteresis per (tree, band) slot. One round
+// at a time; the last round's draw lists stay on screen until the next is complete.
+function requestViews() {
+  if (mode !== 'hybrid' || !renderer || trees.filter(Boolean).length < UNIQUE.length) return;
+  if (viewPending) {
+    viewDirty = true;
+    return;
+  }
+  viewDirty = false;
+  renderer.resize();
+  const eye = camera.position();
+  const groups = new Map();
+  for (const instance of INSTANCES) {
+    const b = trees[instance.tree].bounds;
+    const s = instance.scale, p = instance.position;
+    const centre = [0, 1, 2].map((k) => p[k] + s * (b.min[k] + b.max[k]) / 2);
+    const distance = Math.hypot(eye[0] - centre[0], eye[1] - centre[1], eye[2] - centre[2]);
+    const band = Math.max(0, Math.min(255, Math.floor(Math.log(Math.max(distance, 0.5)) / Math.log(BAND_RATIO)) + 3));
+    const key = `${instance.tree}:${band}`;
+    if (!groups.has(key)) groups.set(key, { tree: instance.tree, band, members: [] });
+    groups.get(key).members.push({ instance, distance });
+  }
+  const round = ++viewRound;
+  viewPending = { round, start: performance.now(), waiting: groups.size, lists: [] };
+  setHooks({ viewPending: 1 });
+  for (const group of groups.values()) {
+    group.members.sort((a, b) => a.distance - b.distance);
+    const rep = group.members[0];
+    const s = rep.instance.scale, p = rep.instance.position;
+    const local = (v) => v.map((x, k) => (x - p[k]) / s);
+    const members = new Float32Array(group.members.length * 6);  // grove_renderer MEMBER_FLOATS
+    group.members.forEach((m, i) => {
+      members.set([...m.instance.position, m.instance.scale, (m.instance.scale / s) * (rep.distance / m.distance),
+        m.instance.block], i * 6);
+    });
+    viewPending.lists.push({ tree: group.tree, band: group.band, members });
+    treeClients[group.tree].post('view', {
+      slot: group.band, tag: round,
+      camera: { eye: local(eye), target: local(camera.target), fovY: camera.fov, width: renderer.canvas.width, height: renderer.canvas.height },
+    });
+  }
+}
+
+function onDrawList(msg) {
+  if (!viewPending || msg.tag !== viewPending.round) return;
+  const tree = Number(msg.client.slice('grove-'.length));
+  const list = viewPending.lists.find((l) => l.tree === tree && l.band === msg.slot);
+  if (!list) return;
+  Object.assign(list, { cards: msg.cards, lines: msg.lines });
+  if (--viewPending.waiting > 0) return;
+  renderer.setBands(viewPending.lists);
+  viewMs = performance.now() - viewPending.start;
+  viewPending = null;
+  bumpHook('viewSerial');
+  setHooks({ viewMs: viewMs.toFixed(1) });
+  if (viewDirty) requestViews();
+  else setHooks({ viewPending: 0 });
+  requestFrame();
+}
+
+function onTree(msg) {
+  const index = Number(msg.client.slice('grove-'.length));
+  const mine = INSTANCES.filter((i) => i.tree === index);
+  const instances = new Float32Array(mine.length * 4);
+  mine.forEach((i, k) => instances.set([...i.position, i.scale], k * 4));
+  renderer.addTree(index, msg.mesh, instances, msg.hybrid, msg.swayNodes);
+  trees[index] = { bounds: msg.stats.bounds, stats: msg.stats, nodes: msg.swayNodes };
+  if (trees.filter(Boolean).length === UNIQUE.length) {
+    requestViews();
+    if (windPlaying) startWind();
+  }
+  requestFrame();
+}
+
+// ---- Wind: every unique tree's instances swayed in the worker, all on one shared clock ----
+function startWind() {
+  if (trees.filter(Boolean).length < UNIQUE.length) return;  // starts once every tree is grown
+  const clock = `grove-wind-${++windRound}`;
+  UNIQUE.forEach((_, index) => {
+    const origins = INSTANCES.filter((i) => i.tree === index).flatMap((i) => i.position);  // metres, block order
+    treeClients[index].post('wind', { play: true, origins, clock });
+  });
+}
+
+function setWind(play) {
+  windPlaying = play;
+  ui.wind.textContent = play ? 'Still' : 'Blow';
+  ui.wind.setAttribute('aria-pressed', String(play));
+  setHooks({ wind: play ? 'on' : 'off' });
+  writeHash();
+  sway.length = 0;
+  if (play) {
+    startWind();
+  } else {
+    UNIQUE.forEach((_, index) => {
+      treeClients[index].post('wind', { play: false });
+      renderer?.setRestPoses(index);
+    });
+  }
+  showWind();
+  requestFrame();
+}
+
+function onPose(msg) {
+  const index = Number(msg.client.slice('grove-'.length));
+  if (!windPlaying || !renderer || !trees[index]) {
+    treeClients[index].post('poseDone');
+    return;
+  }
+  const poses = new Float32Array(msg.poses);
+  renderer.setPoses(index, poses);
+  sway[index] = { time: msg.time, wind: msg.wind, stepMs: msg.stepMs, poses };
+  poseDone.add(msg.client);
+  requestFrame();
+}
+
+// The wind line and data-sway-time (the earliest simulated time among the unique trees on screen).
+function showWind() {
+  if (!windPlaying) {
+    ui.windInfo.textContent = 'Still air. Blow: a gust front crosses the grove from the left (−x), each tree sways with the wind at its place.';
+    setHooks({ swayTime: '' });
+    return;
+  }
+  const shown = sway.filter(Boolean);
+  if (shown.length < UNIQUE.length) {
+    ui.windInfo.textContent = 'starting the wind…';
+    return;
+  }
+  const time = Math.min(...shown.map((s) => s.time));
+  const cost = shown.reduce((sum, s) => sum + s.stepMs, 0);
+  ui.windInfo.textContent = `t = ${time.toFixed(1)} s · wind ${shown[0].wind.toFixed(1)} m/s at the centre · front ${wind.gust_front_speed} m/s`;
+  setHooks({ swayTime: time.toFixed(3), swayStepMs: cost.toFixed(2) });
+}
+
+// For the tests: per instance of unique tree `tree`, its position and a measure of its sway in the
+// last pose drawn: the sum over node points of |M_j| (eq. 3.15 tip offsets, metres) and the mean
+// M_j.x (along the default wind); null while no pose was drawn.
+function swayProbe(tree) {
+  const s = sway[tree];
+  if (!s || !trees[tree]) return null;
+  const nodes = trees[tree].nodes;
+  const out = INSTANCES.filter((i) => i.tree === tree).map((instance, k) => {
+    let sum = 0, x = 0;
+    for (let j = 0; j < nodes; ++j) {
+      const o = (k * nodes + j) * 16;
+      sum += Math.hypot(s.poses[o + 3], s.poses[o + 7], s.poses[o + 11]);
+      x += s.poses[o + 3];
+    }
+    return { position: instance.position, block: instance.block, tipOffsetSum: sum, meanOffsetX: x / nodes };
+  });
+  return { time: s.time, nodes, instances: out };
+}
+
+// Largest difference between two instances' pose blocks of unique tree `tree` (0: identical).
+function poseBlockDifference(tree, a, b) {
+  const s = sway[tree];
+  if (!s) return null;
+  const n = trees[tree].nodes * 16;
+  let most = 0;
+  for (let i = 0; i < n; ++i) most = Math.max(most, Math.abs(s.poses[a * n + i] - s.poses[b * n + i]));
+  return most;
+}
+
+// The module is ready: every unique tree is grown once (each client's own request).
+groveClient.on('ready', () => {
+  UNIQUE.forEach((u, index) => treeClients[index].request('update', {
+    state: { preset: u.preset, seed: u.seed, years: u.years, params: { render_mode: 1, ...wind } },
+  }, { done: ['tree'] }));
+});
+groveClient.on('error', (msg) => fail(`${msg.client || 'worker'}: ${msg.message}`));
+for (const client of treeClients) {
+  client.on('tree', onTree).on('pose', onPose).on('drawList', onDrawList)
+    .on('progress', () => requestFrame())
+    .on('error', (msg) => fail(`${msg.client || 'worker'}: ${msg.message}`));
+}
+
+// Times `frames` frames of the current view (after one untimed frame): each is drawn and then
+// waited for (gl.readPixels of one pixel blocks until the GPU is done); the median is shown.
+// only = -1 times the ground alone (the frame's fixed cost), as render().
+async function timeFrames(frames = 20, only = undefined) {
+  if (!renderer || hookValue('status') !== 'ready') return null;
+  setHooks({ timing: 'running' });
+  ui.time.disabled = true;
+  const times = [];
+  let frame = null;
+  for (let i = -1; i < frames; ++i) {
+    await nextFrame();
+    const start = performance.now();
+    frame = renderer.render(camera, mode, only);
+    renderer.finish();
+    if (i >= 0) times.push(performance.now() - start);
+  }
+  times.sort((a, b) => a - b);
+  const median = times.length % 2 ? times[(times.length - 1) / 2] : (times[times.length / 2 - 1] + times[times.length / 2]) / 2;
+  timing = { mode: only === undefined ? mode : 'ground only', frames, median, min: times[0], max: times[times.length - 1], ...frame };
+  ui.timing.textContent = `${timing.mode}: ${median.toFixed(1)} ms per frame (median of ${frames}; ` +
+    `${times[0].toFixed(1)}–${times[times.length - 1].toFixed(1)} ms), ${renderer.canvas.width}×${renderer.canvas.height} px`;
+  setHooks({ timing: 'done', frameMs: median.toFixed(2), timedMode: timing.mode, timedFrames: frames });
+  ui.time.disabled = false;
+  if (only !== undefined) requestFrame();  // the whole grove back on screen
+  else updateStats(frame);
+  window.grove.lastTiming = { ...timing, width: renderer.canvas.width, height: renderer.canvas.height, viewMs };
+  return window.grove.lastTiming;
+}
+
+// Share of canvas pixels each unique tree covers when its instances are drawn alone (differs from
+// the bare ground by more than a faint amount): every unique tree must show in both modes.
+function coverage() {
+  if (!renderer) return [];
+  renderer.render(camera, mode, -1);
+  const empty = renderer.readCanvas();
+  const shares = UNIQUE.map((_, index) => {
+    renderer.render(camera, mode, index);
+    const pixels = renderer.readCanvas();
+    let count = 0;
+    for (let i = 0; i < pixels.length; i += 4) {
+      if (Math.abs(pixels[i] - empty[i]) + Math.abs(pixels[i + 1] - empty[i + 1]) + Math.abs(pixels[i + 2] - empty[i + 2]) > 24) ++count;
+    }
+    return count / (pixels.length / 4);
+  });
+  updateStats(renderer.render(camera, mode));
+  return shares;
+}
+
+function setMode(next) {
+  mode = next === 'full' ? 'full' : 'hybrid';
+  ui.mode.value = mode;
+  setHooks({ mode });
+  writeHash();
+  requestViews();
+  requestFrame();
+}
+
+async function start() {
+  setHooks({ status: 'loading', viewPending: 0 });
+  const { cam, wind: blowing } = readHash();
+  // The wind settings are part of every unique tree's state: read once, before the trees are grown.
+  const params = new URLSearchParams(location.hash.slice(1));
+  for (const key of Object.keys(WIND)) if (params.has(key)) wind[key] = Number(params.get(key));
+  resetCamera();
+  if (cam) camera.fromHash(cam);
+  try {
+    renderer = new GroveRenderer(ui.canvas);
+    await renderer.init();
+  } catch (e) {
+    fail(`Cannot draw: ${e.message}`);
+    return;
+  }
+  renderer.setSun(60, 0);
+  camera.attach(ui.canvas, () => {
+    writeHash();
+    requestViews();
+    requestFrame();
+  });
+  new ResizeObserver(() => {
+    requestViews();
+    requestFrame();
+  }).observe(ui.canvas);
+  ui.mode.addEventListener('change', () => setMode(ui.mode.value));
+  ui.wind.addEventListener('click', () => setWind(!windPlaying));
+  setWind(blowing);
+  ui.reset.addEventListener('click', () => {
+    resetCamera();
+    writeHash();
+    requestViews();
+    requestFrame();
+  });
+  ui.frames.addEventListener('input', () => {
+    ui.time.textContent = `Time ${Math.max(1, Math.min(200, Number(ui.frames.value) || 20))} frames`;
+  });
+  ui.time.addEventListener('click', () => timeFrames(Math.max(1, Math.min(200, Number(ui.frames.value) || 20))));
+  window.addEventListener('hashchange', () => {
+    const { cam, wind: blowing } = readHash();
+    if (cam) camera.fromHash(cam);
+    if (blowing !== windPlaying) setWind(blowing);
+    requestViews();
+    requestFrame();
+  });
+  writeHash();
+  groveClient.request('init', { hash: '' }, { done: ['ready'] });
+  requestFrame();
+}
+
+// For tests and bench/grove.mjs; lastTiming is the last "Time N frames" result.
+window.grove = {
+  timeFrames, coverage, swayProbe, poseBlockDifference, requestFrame, instances: INSTANCES.length, unique: UNIQUE.length,
+  layout: INSTANCES, lastTiming: null,
+};
+start();

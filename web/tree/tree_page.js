@@ -1,0 +1,556 @@
+// The tree study's page (public/index.html, main thread): builds the panel from the parameter
+// table, keeps the state in location.hash (one history entry per committed edit), reruns only the
+// stage an edit invalidates (a growth row regrows; a wind or sway row re-skins and restarts the
+// sway; a render row rebuilds the hybrid view, all on the tree already grown) and draws each tree
+// with WebGL2. Growth runs in the worker (web/worker/tree_handler.js).
+// Does not: parse or check states (the core does), or draw directly (tree_renderer.js does).
+import { OrbitCamera } from '../gl/orbit_camera.js';
+import { FrameLoop } from '../gl/frame_loop.js';
+import { HashHistory } from '../shell/hash_history.js';
+import { ParamPanel } from '../shell/param_panel.js';
+import {
+  Notices, copyLink, download, mountStudyNav, showEmbedDialog,
+} from '../shell/study_page.js';
+import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
+import { WorkerClient } from '../shell/worker_client.js';
+import { RenderTable } from './render_table.js';
+import { Renderer } from './tree_renderer.js';
+
+const $ = (id) => document.getElementById(id);
+const ui = {
+  canvas: $('view'), stats: $('stats'), frameStats: $('frame-stats'), sunInfo: $('sun-info'),
+  progress: $('progress'), progressBar: $('grow-progress'), preset: $('preset'), presetSource: $('preset-source'),
+  seed: $('seed'), years: $('years'), params: $('params'), reset: $('reset'), play: $('play'), year: $('year'),
+  yearText: $('year-text'), selection: $('selection'), cut: $('cut'), undo: $('undo'), redo: $('redo'),
+  prunes: $('prunes'), copyLink: $('copy-link'), resetView: $('reset-view'), embed: $('embed'),
+  downloadGlb: $('download-glb'), downloadJson: $('download-json'), downloadPng: $('download-png'),
+  shareStatus: $('share-status'), wind: $('wind'), windInfo: $('wind-info'), renderMode: $('render-mode'),
+  renderTable: $('render-table'), renderCol: $('render-col'), timeFrames: $('time-frames'),
+  embedUi: { dialog: $('embed-dialog'), element: $('embed-element'), iframe: $('embed-iframe') },
+};
+mountStudyNav($('studies'), 'tree');
+
+// webgl: drawing problems; error: the core's line for the current state; hash: from decoding the
+// URL hash; prunes: prunes of the current state that cut nothing (from the grown tree).
+const notices = new Notices($('notice'), ['webgl', 'error', 'hash', 'prunes']);
+const worker = new WorkerClient('app', {
+  onFailure: (text) => {
+    notices.set('error', text);
+    setHooks({ status: 'error' });
+  },
+});
+
+// ---------------------------------------------------------------- rendering
+const camera = new OrbitCamera();
+let renderer = null;
+let poseDrawPending = false;
+const table = new RenderTable(ui.renderTable, ui.renderCol, ui.frameStats);
+const frames = new FrameLoop(() => {
+  const drawn = renderer.render(camera);
+  if (drawn) table.showFrame(drawn);
+  setHooks({ drawnTreeSerial: treeSerial });  // tests wait for the new tree's frame
+  if (poseDrawPending) {  // the worker sends the next pose once this one is on screen
+    poseDrawPending = false;
+    worker.post('poseDone');
+  }
+});
+const requestFrame = () => { if (renderer) frames.request(); };
+
+// Hybrid mode: the worker chooses card or line per branch for each view (eq. 4.1 with hysteresis);
+// one request at a time, the newest camera wins.
+let hybridOn = false;
+let viewInFlight = false;
+let viewDirty = false;
+function requestView() {
+  if (!hybridOn || !renderer) return;
+  if (viewInFlight) {
+    viewDirty = true;
+    return;
+  }
+  viewInFlight = true;
+  viewDirty = false;
+  worker.post('view', { camera: renderer.viewFor(camera) });
+}
+
+// The renderer's light is the light model's sun (parameters sun_elevation and sun_azimuth).
+function showSun() {
+  if (!panel) return;
+  const v = panel.values();
+  const el = Number(v.sun_elevation), az = Number(v.sun_azimuth), weight = Number(v.sun_weight);
+  if (!Number.isFinite(el) || !Number.isFinite(az)) return;
+  const growth = weight > 0 ? `and the growth model, weight ${weight}` : 'only; the growth model has sky light (sun_weight 0)';
+  ui.sunInfo.textContent = `sun: az ${az}°, el ${el}° (lights the view ${growth})`;
+  renderer?.setSun(el, az);
+  requestFrame();
+}
+
+// Camera moves rewrite the cam= field of the current history entry (no new entry), a moment later.
+let cameraTimer = 0;
+function cameraMoved() {
+  requestFrame();
+  requestView();
+  clearTimeout(cameraTimer);
+  cameraTimer = setTimeout(writeHash, 400);
+}
+
+async function startRenderer() {
+  try {
+    renderer = new Renderer(ui.canvas);
+    await renderer.init();
+    camera.attach(ui.canvas, cameraMoved);
+    new ResizeObserver(() => {
+      requestFrame();
+      requestView();
+    }).observe(ui.canvas);
+    ui.canvas.addEventListener('webglcontextlost', (e) => {
+      e.preventDefault();
+      notices.set('webgl', 'The WebGL2 context was lost; reload the page to draw again.');
+    });
+    requestFrame();
+  } catch (e) {
+    renderer = null;
+    setHooks({ drawing: 'off' });  // no frames will come (tests stop waiting for them)
+    notices.set('webgl', `Cannot draw: ${e.message}`);
+  }
+}
+
+// ---------------------------------------------------------------- state
+let panel = null;
+let presets = [];
+let latestRequest = null;  // {id, kind, stage, state, commit}
+let treeSerial = 0;
+let debounceTimer = 0;
+let currentPrunes = [];
+let showYear = null;       // the scrubber's year, or null for the state's full age
+let shownYear = 0;         // the age of the tree on screen
+let frameNext = true;      // frame the camera on the next tree
+let lastBounds = null;     // bounds of the tree on screen (Reset view)
+let selected = null;       // selected branch id
+let editPending = false;   // an edit waits for its debounce
+let pendingStage = null;   // the earliest stage the pending edits invalidate
+
+const history_ = new HashHistory({
+  onChange: updateUndoButtons,
+  // Back/forward (and undo/redo, which use them) restore the entry's state; a hash typed by the
+  // user arrives here too and becomes a new entry.
+  onRestore: ({ extra }) => {
+    stopPlaying();
+    showYear = Number.isInteger(extra) ? extra : null;
+    worker.request('decode', { hash: location.hash }, { done: ['decoded'] });
+  },
+});
+
+function currentState() {
+  const text = (input) => (input.value.trim() !== '' && Number.isFinite(Number(input.value)) ? Number(input.value) : input.value);
+  // The camera is appended by the page (writeHash), so the core hashes the tree state only.
+  return { preset: ui.preset.value, seed: text(ui.seed), years: text(ui.years), params: panel.values(), prunes: [...currentPrunes] };
+}
+
+function applyState(state) {
+  ui.preset.value = state.preset;
+  ui.seed.value = String(state.seed);
+  ui.years.value = String(state.years);
+  panel.setValues(state.params);
+  currentPrunes = [...(state.prunes || [])];
+  showPresetSource();
+  showPrunes();
+  showSun();
+  ui.renderMode.value = String(Number(state.params.render_mode) === 1 ? 1 : 0);
+}
+
+function showPresetSource() {
+  const preset = presets.find((p) => p.name === ui.preset.value);
+  ui.presetSource.textContent = preset ? preset.source : '';
+}
+
+function showPrunes() {
+  ui.prunes.textContent = currentPrunes.length ? `Cuts (year:branch): ${currentPrunes.join(', ')}` : '';
+}
+
+function fullYears() {
+  const n = Number(ui.years.value);
+  return Number.isInteger(n) && n >= 0 && n <= 100 ? n : null;
+}
+
+// Scrubber range follows the Years field; at its end it shows the full-grown tree.
+function syncScrubber() {
+  const n = fullYears();
+  if (n === null) return;
+  ui.year.max = String(n);
+  if (showYear !== null && showYear >= n) showYear = null;
+  ui.year.value = String(showYear ?? n);
+  ui.yearText.textContent = `${showYear ?? n} of ${n}`;
+}
+
+// Which stage an edit invalidates: grow (regrow), mesh, sway (re-skin and restart the sway on the
+// tree grown) or view (rebuild the hybrid view). Pending edits add up to the earliest stage.
+const STAGE_ORDER = ['grow', 'mesh', 'sway', 'view'];
+const earlierStage = (a, b) => (a === null ? b : STAGE_ORDER[Math.min(STAGE_ORDER.indexOf(a), STAGE_ORDER.indexOf(b))]);
+
+// kind: 'edit' (a committed change: new history entry), 'prune' (committed, camera kept), 'scrub'
+// (another age of the same state), 'restore' (undo/redo/back/forward). A growth edit also frames
+// the camera on the new tree; edits of later stages keep the tree and the camera.
+function sendUpdate(kind = 'edit') {
+  clearTimeout(debounceTimer);
+  syncScrubber();
+  const state = currentState();
+  // An edit still waiting for its debounce is committed by whichever request carries it.
+  const commit = kind === 'edit' || kind === 'prune' || editPending;
+  const stage = kind === 'edit' && pendingStage ? pendingStage : 'grow';
+  editPending = false;
+  pendingStage = null;
+  if (kind === 'edit' && stage === 'grow') frameNext = true;
+  setHooks({ status: 'growing' });
+  const message = { state };
+  if (showYear !== null) message.until = showYear;
+  let request;
+  if (stage === 'grow' || stage === 'mesh') {
+    request = worker.request('update', message, { group: 'tree', done: ['tree'] });
+    bumpHook('growRequests');
+  } else {
+    request = worker.request('restage', { ...message, stage }, { group: 'tree', done: ['tree'] });
+    bumpHook('restageRequests');
+  }
+  latestRequest = { id: request.id, kind, stage, state, commit };
+  return request;
+}
+
+function scheduleUpdate(stage = 'grow') {
+  editPending = true;
+  pendingStage = earlierStage(pendingStage, stage);
+  notices.set('hash', []);
+  clearTimeout(debounceTimer);
+  setHooks({ status: 'pending' });
+  debounceTimer = setTimeout(() => sendUpdate('edit'), 250);
+}
+
+// The hash of the state `base` (the core's text) with the camera appended.
+function fullHash(base = history_.base) {
+  return `#${base}${base && renderer ? `&cam=${camera.toHash()}` : ''}`;
+}
+
+// Rewrites the current history entry (camera moves, scrubbing: no new entry).
+function writeHash() {
+  if (!history_.base) return;
+  history_.replace(fullHash(), showYear);
+}
+
+function updateUndoButtons() {
+  ui.undo.disabled = !history_.canUndo();
+  ui.redo.disabled = !history_.canRedo();
+}
+
+function formatStats(s) {
+  const height = s.height >= 100 ? s.height.toFixed(0) : s.height.toFixed(1);
+  return `internodes ${s.internodes} · leaves ${s.leaves} · flowers ${s.flowers} · height ${height} cm · grown in ${s.ms.toFixed(0)} ms`;
+}
+
+function select(id) {
+  selected = Number.isInteger(id) ? id : null;
+  renderer?.select(selected);
+  ui.cut.disabled = selected === null || shownYear < 1;
+  ui.selection.textContent = selected === null
+    ? 'Click a branch in the view to select it.'
+    : `Branch ${selected} selected: Cut (or the Delete key) removes it and everything above it after year ${shownYear}.`;
+  setHooks({ selected: selected === null ? '' : selected });
+  requestFrame();
+}
+
+// ---------------------------------------------------------------- worker replies
+worker.on('ready', (msg) => {
+  presets = msg.presets;
+  for (const p of presets) ui.preset.append(new Option(`${p.title} (${p.name})`, p.name));
+  panel = new ParamPanel(ui.params, msg.paramTable, (spec, stage) => {
+    showSun();
+    ui.renderMode.value = String(Number(panel.values().render_mode) === 1 ? 1 : 0);
+    scheduleUpdate(stage);
+  });
+  applyState(msg.decoded.state);
+  notices.set('hash', msg.decoded.notices);
+  if (camera.fromHash(msg.decoded.state.camera)) frameNext = false;
+  updateUndoButtons();
+  sendUpdate('restore');
+});
+
+worker.on('decoded', (msg) => {
+  applyState(msg.state);
+  notices.set('hash', msg.notices);
+  if (camera.fromHash(msg.state.camera)) frameNext = false;
+  sendUpdate('restore');
+});
+
+worker.on('hash', (msg) => {
+  if (msg.id !== latestRequest?.id) return;
+  if (latestRequest.commit) {
+    history_.commit(msg.hash, fullHash(msg.hash), showYear);
+  } else {
+    history_.base = msg.hash;
+    writeHash();
+  }
+});
+
+worker.on('progress', (msg) => {
+  ui.progressBar.hidden = false;
+  ui.progressBar.max = Math.max(1, msg.years);
+  ui.progressBar.value = msg.year;
+  ui.progress.textContent = msg.year < msg.years ? `growing: year ${msg.year} of ${msg.years}` : 'building mesh';
+});
+
+worker.on('tree', (msg) => {
+  if (msg.id !== latestRequest?.id) return;
+  notices.set('error', '');
+  notices.set('prunes', msg.stats.idle_prunes || []);
+  panel.markError('');
+  ui.stats.textContent = formatStats(msg.stats);
+  ui.progress.textContent = msg.stats.truncated ? 'stopped at max_internodes' : '';
+  ui.progressBar.hidden = true;
+  shownYear = msg.stats.years;
+  if (renderer) {
+    renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid);
+    renderer.leafLength = Number(panel.values().leaf_size) / 100 || 0.05;
+    lastBounds = msg.stats.bounds;
+    if (frameNext) {
+      camera.frame(msg.stats.bounds, 1.12);  // room for the year bar over the view
+      frameNext = false;
+      writeHash();
+    }
+    requestFrame();
+  }
+  table.showFullCounts(msg.mesh);
+  hybridOn = Boolean(msg.hybrid);
+  viewInFlight = false;
+  table.showHybridCounts(null);
+  setHooks({ renderMode: hybridOn ? 'hybrid' : 'full' });
+  requestView();
+  // A new tree clears the selection; another age of it, or a later stage of it, keeps it.
+  const sameTree = latestRequest.kind === 'scrub' || !msg.grown;
+  select(sameTree ? selected : null);
+  treeSerial += 1;
+  if (msg.grown) bumpHook('treesGrown');
+  setHooks({
+    status: 'ready', treeSerial, internodes: msg.stats.internodes, leaves: msg.stats.leaves,
+    flowers: msg.stats.flowers, year: msg.stats.years,
+  });
+  if (windPlaying) worker.post('wind', { play: true });  // sway the new tree (or new wind) too
+  else showWind(null);
+});
+
+worker.on('drawList', (msg) => {
+  viewInFlight = false;
+  if (!hybridOn || !renderer) return;
+  renderer.setDrawList(msg);
+  table.showHybridCounts(msg.stats);
+  requestFrame();
+  if (viewDirty) requestView();
+});
+
+worker.on('pose', (msg) => {
+  if (!windPlaying || !renderer) {
+    worker.post('poseDone');
+    return;
+  }
+  renderer.setPoses(new Float32Array(msg.poses), msg.wind, msg.time);
+  poseDrawPending = true;
+  showWind(msg);
+  requestFrame();
+});
+
+const exportIds = new Set();
+worker.on('export', (msg) => {
+  exportIds.delete(msg.id);
+  download(new Blob([msg.bytes], { type: msg.format === 'glb' ? 'model/gltf-binary' : 'application/json' }),
+    `${fileStem()}${msg.format === 'json' ? '-params' : ''}.${msg.format}`, ui.shareStatus);
+});
+
+worker.on('error', (msg) => {
+  if (exportIds.delete(msg.id)) {
+    ui.shareStatus.textContent = `Export failed: ${msg.message}`;
+    return;
+  }
+  if (msg.id !== undefined && msg.id !== latestRequest?.id) return;
+  notices.set('error', msg.message);
+  panel?.markError(msg.message);
+  ui.progress.textContent = '';
+  ui.progressBar.hidden = true;
+  setHooks({ status: 'error' });
+});
+
+// ---------------------------------------------------------------- controls
+ui.preset.addEventListener('change', () => {
+  const preset = presets.find((p) => p.name === ui.preset.value);
+  if (preset) applyState({ preset: preset.name, seed: preset.seed, years: preset.years, params: preset.params, prunes: [] });
+  showYear = null;
+  scheduleUpdate();
+});
+ui.seed.addEventListener('input', () => scheduleUpdate());
+ui.years.addEventListener('input', () => {
+  syncScrubber();
+  scheduleUpdate();
+});
+ui.reset.addEventListener('click', () => {
+  ui.preset.dispatchEvent(new Event('change'));
+});
+
+// Year scrubber and play: each age is a regrow in the worker; a newer request supersedes older ones.
+ui.year.addEventListener('input', () => {
+  stopPlaying();
+  const y = Number(ui.year.value);
+  showYear = y >= Number(ui.year.max) ? null : y;
+  sendUpdate('scrub');
+});
+
+let playing = false;
+function stopPlaying() {
+  playing = false;
+  ui.play.textContent = 'Play';
+  ui.play.setAttribute('aria-pressed', 'false');
+}
+ui.play.addEventListener('click', async () => {
+  if (playing) return stopPlaying();
+  const n = fullYears();
+  if (n === null || panel === null) return;
+  playing = true;
+  ui.play.textContent = 'Pause';
+  ui.play.setAttribute('aria-pressed', 'true');
+  let y = showYear === null || showYear >= n ? 0 : showYear;
+  while (playing && y <= n) {
+    showYear = y >= n ? null : y;
+    const reply = await sendUpdate('scrub').reply;  // null when superseded
+    if (!reply || reply.type !== 'tree' || !playing) break;
+    await new Promise((resolve) => setTimeout(resolve, 250));
+    y += 1;
+  }
+  stopPlaying();
+});
+
+// Picking: a click (not a drag) on the view selects the branch under the pointer.
+let down = null;
+ui.canvas.addEventListener('pointerdown', (e) => {
+  down = { x: e.clientX, y: e.clientY, t: performance.now() };
+});
+ui.canvas.addEventListener('pointerup', (e) => {
+  if (!down || !renderer) return;
+  const moved = Math.hypot(e.clientX - down.x, e.clientY - down.y);
+  const quick = performance.now() - down.t < 600;
+  down = null;
+  if (moved > 5 || !quick) return;
+  const rect = ui.canvas.getBoundingClientRect();
+  select(renderer.pick(camera, e.clientX - rect.left, e.clientY - rect.top));
+});
+
+function cutSelected() {
+  if (selected === null || shownYear < 1) return;
+  const prune = `${shownYear}:b${selected}`;
+  if (!currentPrunes.includes(prune)) currentPrunes.push(prune);
+  showPrunes();
+  select(null);
+  sendUpdate('prune');
+}
+ui.cut.addEventListener('click', cutSelected);
+ui.undo.addEventListener('click', () => history_.undo());
+ui.redo.addEventListener('click', () => history_.redo());
+
+const editable = (t) => t instanceof HTMLElement && (t.isContentEditable || ['INPUT', 'TEXTAREA', 'SELECT'].includes(t.tagName));
+document.addEventListener('keydown', (e) => {
+  if (editable(e.target)) return;  // the fields keep their own undo and Delete
+  const key = e.key.toLowerCase();
+  if ((e.ctrlKey || e.metaKey) && (key === 'z' || key === 'y')) {
+    e.preventDefault();
+    (key === 'y' || e.shiftKey ? ui.redo : ui.undo).click();
+  } else if ((e.key === 'Delete' || e.key === 'Backspace') && selected !== null) {
+    e.preventDefault();
+    cutSelected();
+  } else if (e.key === 'Escape' && selected !== null) {
+    select(null);
+  }
+});
+
+// ---------------------------------------------------------------- wind (thesis chapter 3)
+// Blow runs the node-point sway of the tree on screen in the worker; each pose (16 floats per node
+// point) skins the mesh in the vertex shader. The wind is the state's wind parameters.
+let windPlaying = false;
+function showWind(pose) {
+  if (!pose) {
+    ui.windInfo.textContent = windPlaying ? 'starting the wind…' : 'Still air. Blow sways the tree with the wind settings (speed, direction, gusts).';
+    setHooks({ swayTime: '' });
+    return;
+  }
+  const speed = pose.wind > 0 ? `${pose.wind.toFixed(1)} m/s` : 'calm';
+  ui.windInfo.textContent = `t = ${pose.time.toFixed(1)} s · wind ${speed}`;
+  setHooks({ swayTime: pose.time.toFixed(3) });
+}
+function setWind(play) {
+  windPlaying = play;
+  ui.wind.textContent = play ? 'Still' : 'Blow';
+  ui.wind.setAttribute('aria-pressed', String(play));
+  worker.post('wind', { play });
+  if (!play) {
+    renderer?.setRestPoses(renderer.poseNodes);
+    requestFrame();
+  }
+  showWind(null);
+}
+ui.wind.addEventListener('click', () => setWind(!windPlaying));
+
+// Frame time of this view with the GPU's work included (the "frame (CPU)" row is only the CPU time
+// of issuing the draw calls), into the column of the mode shown.
+ui.timeFrames.addEventListener('click', async () => {
+  if (!renderer || ui.timeFrames.disabled) return;
+  ui.timeFrames.disabled = true;
+  try {
+    const timed = await renderer.timeFrames(camera, 10);
+    table.set(timed.mode === 'hybrid' ? 'row' : 'full', 'timed_ms', `${timed.ms.toFixed(1)} ms`);
+    setHooks({ [timed.mode === 'hybrid' ? 'timedHybrid' : 'timedFull']:
+      JSON.stringify({ ms: timed.ms, triangles: timed.triangles, lines: timed.lines, drawCalls: timed.drawCalls }) });
+  } finally {
+    ui.timeFrames.disabled = false;
+  }
+});
+
+// The mode select mirrors the render_mode row (a view-stage edit: the tree is not regrown).
+ui.renderMode.addEventListener('change', () => {
+  if (!panel) return;
+  panel.setValues({ render_mode: Number(ui.renderMode.value) });
+  scheduleUpdate(panel.stage('render_mode'));
+});
+
+// ---------------------------------------------------------------- share and export
+function fileStem() {
+  return `niwa-${ui.preset.value}-seed${ui.seed.value}-year${shownYear}`;
+}
+
+let exports = 0;
+function requestExport(format) {
+  const { id } = worker.request('export', { format }, { group: `export-${++exports}`, done: ['export'] });
+  exportIds.add(id);
+}
+ui.downloadGlb.addEventListener('click', () => requestExport('glb'));
+ui.downloadJson.addEventListener('click', () => requestExport('json'));
+ui.downloadPng.addEventListener('click', () => {
+  if (!renderer) return;
+  renderer.render(camera);
+  ui.canvas.toBlob((blob) => {
+    if (blob) download(blob, `${fileStem()}.png`, ui.shareStatus);
+    else ui.shareStatus.textContent = 'The picture could not be saved.';
+  }, 'image/png');
+});
+
+ui.resetView.addEventListener('click', () => {
+  camera.reset(lastBounds);
+  cameraMoved();
+});
+
+ui.copyLink.addEventListener('click', () => {
+  writeHash();
+  copyLink(ui.shareStatus);
+});
+
+ui.embed.addEventListener('click', () => {
+  writeHash();
+  showEmbedDialog(ui.embedUi, { tag: 'niwa-tree', title: 'Niwa tree' });
+});
+
+setHooks({ status: 'loading' });
+if (hookValue('growRequests') === undefined) setHooks({ growRequests: 0, restageRequests: 0, treesGrown: 0 });
+startRenderer();
+worker.request('init', { hash: location.hash }, { done: ['ready'] });

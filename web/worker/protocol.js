@@ -1,0 +1,92 @@
+// The worker protocol as JSDoc types: every message between the pages (web/shell/worker_client.js)
+// and the worker (web/worker/worker.js and its per-study handlers). Init, then update messages;
+// buffers are transferred, never copied twice. Type-only module: it exports nothing at run time
+// but the list of message types, which the router checks.
+// Does not: validate values (the core does; the worker answers {type:'error'} with its line).
+
+/**
+ * Fields of every message. `client` (any string, default 'app') keeps clients apart: a newer
+ * superseding request (update, restage) of a client drops the older one of THE SAME client. `study`
+ * picks the handler (default 'tree'). Replies echo `id` and `client`.
+ * @typedef {{type: string, id?: number, client?: string, study?: string}} Envelope
+ */
+
+/**
+ * Tree state as the page sends it: anything missing takes the preset's values; the core checks it.
+ * @typedef {{preset?: string, seed?: number|string, years?: number|string,
+ *   params?: Object<string, number|string>, prunes?: string[], camera?: string}} TreeStateJson
+ */
+
+/**
+ * @typedef {Envelope & {type: 'init', hash?: string}} InitMessage
+ *   -> ReadyMessage
+ * @typedef {Envelope & {type: 'ready', paramTable: ParamRow[], presets: Object[],
+ *   decoded: {state: TreeStateJson, notices: string[]}}} ReadyMessage
+ * @typedef {{key: string, symbol: string, unit: string, default: number, min: number, max: number,
+ *   integer: boolean, group: string, group_title?: string, stage?: 'grow'|'mesh'|'sway'|'view',
+ *   help: string}} ParamRow
+ *
+ * @typedef {Envelope & {type: 'decode', hash: string}} DecodeMessage
+ *   -> {type: 'decoded', id, client, state: TreeStateJson, notices: string[]}
+ */
+
+/**
+ * Grows state.years years, or only `until` years when given (the year scrubber).
+ * @typedef {Envelope & {type: 'update', state: TreeStateJson, until?: number}} UpdateMessage
+ *   -> HashMessage (state accepted), ProgressMessage (after each year), TreeMessage
+ *
+ * The page's sway and view edits: the same tree (the grow-stage fields equal the client's last tree)
+ * with a new state; the worker re-skins it (sway rows), rebuilds the hybrid scene (render rows) and
+ * answers like an update without growing. When the tree would differ (or none was grown) it grows.
+ * @typedef {Envelope & {type: 'restage', state: TreeStateJson, until?: number,
+ *   stage: 'sway'|'view'}} RestageMessage
+ *   -> HashMessage, TreeMessage (grown: false)
+ *
+ * @typedef {Envelope & {type: 'hash', hash: string}} HashMessage
+ * @typedef {Envelope & {type: 'progress', year: number, years: number}} ProgressMessage
+ */
+
+/**
+ * Mesh parts as ArrayBuffers (transferred). Every part has joints (Uint32) and weights (Float32)
+ * per vertex: the sway skin of core/sway/skin.h; leaves have uvs; bark has branchIds per vertex and
+ * branchParents per branch.
+ * @typedef {{positions: ArrayBuffer, normals: ArrayBuffer, indices: ArrayBuffer, joints: ArrayBuffer,
+ *   weights: ArrayBuffer, uvs?: ArrayBuffer, branchIds?: ArrayBuffer, branchParents?: ArrayBuffer}} MeshPart
+ * With render_mode 1, hybrid holds the clip-space triangles that paint the card atlas (thesis 4.2.1).
+ * @typedef {{atlasSize: number, bark: MeshPart, leaves: MeshPart, flowers: MeshPart}} HybridAtlas
+ * @typedef {Envelope & {type: 'tree', stats: Object, mesh: {bark: MeshPart, leaves: MeshPart,
+ *   flowers: MeshPart}, hybrid: HybridAtlas|null, swayNodes: number, grown: boolean}} TreeMessage
+ *   grown: false when the tree on screen was re-skinned or re-viewed (restage), not grown again.
+ */
+
+/**
+ * Starts (play: true, from rest) or stops the sway of the client's last tree in its state's wind.
+ * origins (the grove): 3 numbers (metres) per instance, each swayed in the wind at its place;
+ * poses then holds instances × swayNodes × 16 floats. clock: sways started with one name share a
+ * wall clock. The simulation follows the wall clock (steps of dt, at most 8 per tick) and loops
+ * at the wind's duration; the next pose is sent after the client's poseDone.
+ * @typedef {Envelope & {type: 'wind', play: boolean, origins?: number[], clock?: string}} WindMessage
+ *   -> PoseMessage, one at a time
+ * @typedef {Envelope & {type: 'poseDone'}} PoseDoneMessage
+ * @typedef {Envelope & {type: 'pose', time: number, wind: number, instances: number, stepMs: number,
+ *   poses: ArrayBuffer}} PoseMessage
+ */
+
+/**
+ * Hybrid mode, after a tree: eq. 4.1 selection with hysteresis against the client's last view (or
+ * the slot's: 0..255, one draw list per slot, the grove's distance bands; slot and tag echoed).
+ * @typedef {Envelope & {type: 'view', camera: {eye: number[], target: number[], fovY: number,
+ *   width: number, height: number}, slot?: number, tag?: any}} ViewMessage
+ *   -> {type: 'drawList', client, stats, cards: {positions, uvs, indices, joints, weights},
+ *       lines: {positions, colors, widths, joints, weights}, slot?, tag?} (transferred)
+ */
+
+/**
+ * @typedef {Envelope & {type: 'export', format: 'glb'|'json'}} ExportMessage
+ *   -> {type: 'export', id, client, format, bytes: ArrayBuffer} (the client's last finished tree)
+ * Any failure -> {type: 'error', id, client, message} (one line, naming the field and its range).
+ * @typedef {Envelope & {type: 'error', message: string}} ErrorMessage
+ */
+
+// The message types a page may send (the router answers any other with an error).
+export const REQUEST_TYPES = ['init', 'decode', 'update', 'restage', 'wind', 'poseDone', 'view', 'export'];

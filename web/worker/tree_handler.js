@@ -1,0 +1,239 @@
+// The tree study's worker handler: grows trees year by year (superseded between years), sends
+// their meshes, re-skins or re-views the tree already grown for sway and render edits (restage),
+// runs the wind, the hybrid views and the exports. One TreeSession (web/bindings/tree_bindings.cpp)
+// per client keeps the client's last finished tree. Messages: web/worker/protocol.js.
+// Does not: load the module, route messages or catch errors (web/worker/worker.js does).
+import { copyView, takeBuffers } from './transfer.js';
+
+const yieldToEvents = () => new Promise((resolve) => setTimeout(resolve, 0));
+
+// ctx: {post(msg, transfer), isLatest(client, id)} from the router.
+export function createTreeHandler(Module, ctx) {
+  const { post, isLatest } = ctx;
+  const paramTable = JSON.parse(Module.paramTableJson());
+  // Rows whose edits change the grown tree (stage grow or mesh; rows without a stage too).
+  const treeKeys = paramTable.filter((row) => !['sway', 'view'].includes(row.stage)).map((row) => row.key);
+  const finished = new Map();  // client -> {session, state, until} of its last tree sent
+
+  // True when states a and b (as the pages send them) grow the same tree.
+  function sameTree(a, b) {
+    const text = (v) => (v === undefined || v === null ? '' : String(v));
+    if (text(a.state.preset) !== text(b.state.preset) || text(a.state.seed) !== text(b.state.seed)) return false;
+    if (text(a.state.years) !== text(b.state.years) || text(a.until) !== text(b.until)) return false;
+    if ((a.state.prunes || []).join(',') !== (b.state.prunes || []).join(',')) return false;
+    const pa = a.state.params || {}, pb = b.state.params || {};
+    return treeKeys.every((key) => text(pa[key]) === text(pb[key]));
+  }
+
+  function takeMesh(session, transfer) {
+    return { bark: takeBuffers(session.buffers('bark'), transfer), leaves: takeBuffers(session.buffers('leaves'), transfer),
+      flowers: takeBuffers(session.buffers('flowers'), transfer) };
+  }
+
+  // The card-atlas geometry of a hybrid-mode tree (copied once, transferred).
+  function takeAtlas(session, transfer) {
+    const part = (name) => takeBuffers(session.buffers(`atlas.${name}`), transfer);
+    return { atlasSize: session.atlasSize(), bark: part('bark'), leaves: part('leaves'), flowers: part('flowers') };
+  }
+
+  // The 'tree' message of a session whose mesh is built; false (after an error message) when the
+  // hybrid scene cannot be built.
+  function sendTree(id, client, session, grown) {
+    const stats = JSON.parse(session.statsJson());
+    const transfer = [];
+    const mesh = takeMesh(session, transfer);
+    let hybrid = null;
+    if (session.renderMode() === 1) {
+      const error = session.buildHybrid();
+      if (error) {
+        post({ type: 'error', id, client, message: error });
+        return false;
+      }
+      hybrid = takeAtlas(session, transfer);
+    }
+    post({ type: 'tree', id, client, stats, mesh, hybrid, swayNodes: session.swayNodes(), grown }, transfer);
+    return true;
+  }
+
+  async function grow(msg, client) {
+    const { id, state, until } = msg;
+    let session;
+    try {
+      session = new Module.TreeSession(JSON.stringify(state));
+    } catch (e) {
+      post({ type: 'error', id, client, message: String(e && e.message ? e.message : e) });
+      return;
+    }
+    let keep = false;
+    try {
+      const error = session.error();
+      if (error) {
+        post({ type: 'error', id, client, message: error });
+        return;
+      }
+      post({ type: 'hash', id, client, hash: session.hash() });
+      const full = session.years();
+      const years = Number.isInteger(until) ? Math.max(0, Math.min(until, full)) : full;
+      post({ type: 'progress', id, client, year: 0, years });
+      while (session.year() < years && !session.done()) {
+        await yieldToEvents();
+        if (!isLatest(client, id)) return;  // superseded by a newer request: drop this one
+        session.growYear();
+        post({ type: 'progress', id, client, year: session.year(), years });
+      }
+      await yieldToEvents();
+      if (!isLatest(client, id)) return;
+      session.buildMesh();
+      if (!sendTree(id, client, session, true)) return;
+      stopWind(client);  // the client restarts the wind on the new tree if it is playing
+      finished.get(client)?.session.delete();
+      finished.set(client, { session, state, until });
+      keep = true;
+    } finally {
+      if (!keep) session.delete();
+    }
+  }
+
+  // A sway or view edit: the client's last tree with the new state, not grown again (or a grow
+  // when the state grows another tree).
+  async function restage(msg, client) {
+    const last = finished.get(client);
+    if (!last || !sameTree(last, msg)) return grow(msg, client);
+    const error = last.session.restate(JSON.stringify(msg.state));
+    if (error) {
+      post({ type: 'error', id: msg.id, client, message: error });
+      return;
+    }
+    post({ type: 'hash', id: msg.id, client, hash: last.session.hash() });
+    stopWind(client);  // the sway restarts in the new wind (the client asks when it is playing)
+    last.state = msg.state;
+    sendTree(msg.id, client, last.session, false);
+  }
+
+  // ---- Wind: one sway loop per client, following the wall clock ----
+  const sways = new Map();   // client -> {session, origins, clock, clockName, base, steps, waiting, timer}
+  const clocks = new Map();  // name -> {start}: wall-clock origin shared by the sways started with it
+
+  function stopWind(client) {
+    const sway = sways.get(client);
+    if (!sway) return;
+    clearTimeout(sway.timer);
+    sways.delete(client);
+    if (typeof sway.clockName === 'string' && ![...sways.values()].some((s) => s.clock === sway.clock)) {
+      clocks.delete(sway.clockName);
+    }
+  }
+
+  // origins: optional, metres, 3 per instance (the grove): one simulator per instance, each in the
+  // wind at its own place; clock: optional name; sways started with the same name share one wall
+  // clock (and its slips), so the unique trees of a grove stay at the same simulated time.
+  function startWind(client, origins, clockName) {
+    stopWind(client);
+    const session = finished.get(client)?.session;
+    if (!session) return;
+    const at = origins ? Array.from(origins, Number) : null;
+    const error = at ? session.swayStartAt(at) : session.swayStart();
+    if (error) {
+      post({ type: 'error', client, message: error });
+      return;
+    }
+    let clock = typeof clockName === 'string' ? clocks.get(clockName) : null;
+    if (!clock) {
+      clock = { start: performance.now() };
+      if (typeof clockName === 'string') clocks.set(clockName, clock);
+    }
+    // Simulated time 0 is at the clock's start: a sway joining a running clock catches up, and when
+    // it is more than 8 steps behind, the shared clock slips back to it (the others wait).
+    const sway = { session, origins: at, clock, clockName, base: 0, steps: 0, waiting: false, timer: 0 };
+    sways.set(client, sway);
+    windTick(client, sway);
+  }
+
+  function windTick(client, sway) {
+    if (sways.get(client) !== sway) return;
+    const session = sway.session;
+    const dt = session.swayDt();
+    if (!sway.waiting) {
+      const now = Math.floor((performance.now() - sway.clock.start) / (1000 * dt));
+      const due = now - sway.base - sway.steps;
+      if (due > 0) {
+        const started = performance.now();
+        let time = session.swayStep(Math.min(due, 8));
+        const stepMs = (performance.now() - started) / Math.min(due, 8);  // per step, all instances
+        sway.steps += Math.min(due, 8);
+        if (due > 8) sway.clock.start += (due - 8) * 1000 * dt;  // too slow: let the clock slip, not pile up
+        if (time >= session.swayDuration()) {  // the gust schedule is over: again from rest
+          if (sway.origins) session.swayStartAt(sway.origins); else session.swayStart();
+          sway.base += sway.steps;
+          sway.steps = 0;
+          time = 0;
+        }
+        const poses = copyView(session.buffers('sway').poses);
+        sway.waiting = true;
+        post({ type: 'pose', client, time, wind: session.swayWindSpeed(), instances: session.swayInstances(),
+          stepMs, poses }, [poses]);
+      }
+    }
+    sway.timer = setTimeout(() => windTick(client, sway), 8);
+  }
+
+  // One view of a hybrid-mode tree: selection, draw list and its sway skin.
+  function hybridView(msg, client) {
+    const session = finished.get(client)?.session;
+    if (!session || session.renderMode() !== 1) return;
+    const { camera, slot, tag } = msg;
+    const n = (x, d) => (Number.isFinite(Number(x)) ? Number(x) : d);
+    const eye = camera?.eye || [0, 0, 10], target = camera?.target || [0, 0, 0];
+    const view = [n(eye[0], 0), n(eye[1], 0), n(eye[2], 10), n(target[0], 0),
+      n(target[1], 0), n(target[2], 0), n(camera?.fovY, Math.PI / 4), Math.round(n(camera?.width, 512)),
+      Math.round(n(camera?.height, 512))];
+    const slotted = slot !== undefined && slot !== null;
+    const stats = JSON.parse(slotted ? session.hybridViewSlot(Number.isInteger(slot) ? slot : -1, ...view)
+      : session.hybridView(...view));
+    if (stats.error) throw new Error(stats.error);
+    const transfer = [];
+    const cards = takeBuffers(session.buffers('cards'), transfer);
+    const lines = takeBuffers(session.buffers('lines'), transfer);
+    const extra = slotted ? { slot, tag } : {};
+    post({ type: 'drawList', client, stats, cards, lines, ...extra }, transfer);
+  }
+
+  function exportTree(msg, client) {
+    const session = finished.get(client)?.session;
+    if (!session) throw new Error('no tree has been grown yet');
+    let bytes;
+    if (msg.format === 'glb') {
+      const error = session.buildGlb();
+      if (error) throw new Error(error);
+      bytes = copyView(session.buffers('glb').bytes);
+    } else if (msg.format === 'json') {
+      bytes = new TextEncoder().encode(session.paramsJson()).buffer;
+    } else {
+      throw new Error(`unknown export format '${String(msg.format)}'`);
+    }
+    post({ type: 'export', id: msg.id, client, format: msg.format, bytes }, [bytes]);
+  }
+
+  const decode = (hash) => JSON.parse(Module.decodeHash(String(hash ?? '')));
+
+  return {
+    // Requests of these types supersede the client's older ones.
+    superseding: ['update', 'restage'],
+    ready: (msg) => ({ paramTable, presets: JSON.parse(Module.presetsJson()), decoded: decode(msg.hash) }),
+    messages: {
+      decode: (msg, client) => {
+        const { state, notices } = decode(msg.hash);
+        post({ type: 'decoded', id: msg.id, client, state, notices });
+      },
+      update: grow,
+      restage,
+      wind: (msg, client) => (msg.play ? startWind(client, msg.origins, msg.clock) : stopWind(client)),
+      poseDone: (msg, client) => {
+        const sway = sways.get(client);
+        if (sway) sway.waiting = false;
+      },
+      view: hybridView,
+      export: exportTree,
+    },
+  };
+}

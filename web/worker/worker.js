@@ -1,0 +1,62 @@
+// Niwa's Web Worker (ES module worker): a small router over the WASM core. It loads the one
+// module (niwa_web), keeps the clients apart (a newer update of a client supersedes its older one),
+// dispatches each message to its study's handler (msg.study, default 'tree') and answers any
+// failure with one error envelope. One worker and one WASM instance serve every client on a page.
+// Protocol (init, then update messages; buffers transferred, never copied twice): ./protocol.js.
+// Does not: know any study's messages (web/worker/<study>_handler.js do).
+import { REQUEST_TYPES } from './protocol.js';
+import { createTreeHandler } from './tree_handler.js';
+
+const MODULE_URL = new URL('../../wasm/niwa_web.js', import.meta.url).href;
+
+// Study -> handler factory (Module, ctx) -> {superseding, ready(msg), messages: {type: fn(msg, client)}}.
+const STUDIES = { tree: createTreeHandler };
+
+let modulePromise = null;
+const handlers = new Map();  // study -> handler (created once the module is loaded)
+const latest = new Map();    // client -> id of its newest superseding request
+
+function loadModule() {
+  if (!modulePromise) {
+    modulePromise = import(MODULE_URL).then((factory) =>
+      factory.default({
+        locateFile: (file) => new URL(file, MODULE_URL).href,
+        print: () => {},
+        printErr: () => {},
+      }));
+  }
+  return modulePromise;
+}
+
+const ctx = {
+  post: (msg, transfer = []) => postMessage(msg, transfer),
+  isLatest: (client, id) => latest.get(client) === id,
+};
+
+async function handlerFor(study) {
+  if (!Object.hasOwn(STUDIES, study)) throw new Error(`unknown study '${study.slice(0, 40)}', must be one of ${Object.keys(STUDIES).join(', ')}`);
+  if (!handlers.has(study)) handlers.set(study, STUDIES[study](await loadModule(), ctx));
+  return handlers.get(study);
+}
+
+const messageOf = (e) => String(e && e.message ? e.message : e);
+
+self.onmessage = async (event) => {
+  const msg = event.data || {};
+  const client = typeof msg.client === 'string' ? msg.client : 'app';
+  const study = typeof msg.study === 'string' ? msg.study : 'tree';
+  try {
+    if (!REQUEST_TYPES.includes(msg.type)) throw new Error(`unknown message type '${String(msg.type).slice(0, 40)}'`);
+    const handler = await handlerFor(study);
+    if (msg.type === 'init') {
+      postMessage({ type: 'ready', id: msg.id, client, study, ...handler.ready(msg) });
+      return;
+    }
+    const run = handler.messages[msg.type];
+    if (!run) throw new Error(`study '${study}' has no message '${msg.type}'`);
+    if (handler.superseding.includes(msg.type)) latest.set(client, msg.id);
+    await run(msg, client);
+  } catch (e) {
+    postMessage({ type: 'error', id: msg.id, client, message: `worker: ${messageOf(e)}` });
+  }
+};
