@@ -12,17 +12,17 @@
 #include <optional>
 #include <sstream>
 
-#include "io/gltf_export.h"
-#include "io/gltf_sway.h"
 #include "io/json_io.h"
-#include "io/svg_export.h"
 #include "io/url_codec.h"
 #include "math/rotation.h"
 #include "render/hybrid.h"
 #include "sway/sway.h"
+#include "sway/sway_gltf.h"
 #include "tree/growth.h"
 #include "tree/mesh.h"
 #include "tree/presets.h"
+#include "tree/tree_gltf.h"
+#include "tree/tree_svg.h"
 
 namespace niwa {
 namespace {
@@ -197,7 +197,7 @@ int RunGrow(const GrowOptions& options, CLI::App* cmd, const std::string& out_pa
       bytes = TreeToSvg(tree, svg);
     } else {
       std::vector<unsigned char> glb;
-      std::string error = WriteGlb(BuildTreeMesh(tree), &glb);
+      std::string error = WriteTreeGlb(BuildTreeMesh(tree), &glb).Line();
       if (!error.empty()) throw BadInput{"--out: " + error};
       bytes.assign(glb.begin(), glb.end());
     }
@@ -337,11 +337,11 @@ int RunSwayCommand(const GrowOptions& grow_options, const SwayOptions& o, CLI::A
   SwayParams params = ResolveSwayParams(o, cmd, &request.params);
   Tree tree = GrowTree(request);
   CheckPrunes(request, tree);
-  if (out_ext == ".glb") {  // core/io/gltf_sway: exact two-joint skinning of eq. 3.15
+  if (out_ext == ".glb") {  // core/sway/sway_gltf: exact two-joint skinning of eq. 3.15
     std::vector<unsigned char> glb;
     SwayGlbOptions glb_options;
     glb_options.fps = o.fps;
-    std::string error = WriteSwayGlb(tree, params, glb_options, &glb);
+    std::string error = WriteSwayGlb(tree, params, glb_options, &glb).Line();
     if (!error.empty()) throw BadInput{"--out: " + error};
     error = WriteFileAtomically(o.out_path, std::string(glb.begin(), glb.end()));
     if (!error.empty()) throw BadInput{"--out: " + error};

@@ -60,7 +60,6 @@
 #include <string>
 #include <vector>
 
-#include "io/gltf_export.h"
 #include "io/json_io.h"
 #include "io/url_codec.h"
 #include "params/param_table.h"
@@ -72,6 +71,7 @@
 #include "tree/mesh.h"
 #include "tree/presets.h"
 #include "tree/tree.h"
+#include "tree/tree_gltf.h"
 
 namespace niwa {
 namespace {
@@ -401,7 +401,7 @@ class GrowSession {
   std::string buildGlb() {
     glb_.clear();
     if (!grower_) return error_.empty() ? "no tree" : error_;
-    return WriteGlb(mesh_, &glb_);
+    return WriteTreeGlb(mesh_, &glb_).Line();
   }
   emscripten::val glbBytes() const { return View(glb_); }
 
