@@ -152,7 +152,7 @@ std::vector<Workload> MakeWorkloads() {
                    });
                  }});
   all.push_back(
-      {"glb/sakura-15y", "WriteTreeGlb in memory of the sakura 15 years mesh (mesh untimed)", [] {
+      {"glb/sakura-15y", "WriteGlb in memory of the sakura 15 years mesh (mesh untimed)", [] {
          auto mesh =
              std::make_shared<TreeMesh>(BuildTreeMesh(GrowTree(PresetRequest(Sakura(), 15))));
          return WorkloadBody([mesh]() {

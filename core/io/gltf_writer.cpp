@@ -144,6 +144,10 @@ Status CheckPrimitive(const Primitive& p, const Document& doc, const std::string
       return Status::Error(field,
                            std::to_string(a.components) + " components; a colour must have 3 or 4");
     }
+    if (semantic == "TANGENT" && a.components != 4) {
+      return Status::Error(field, std::to_string(a.components) +
+                                      " components; a tangent must have 4 (xyz, w = +-1)");
+    }
     if (texcoord && a.components != 2) {
       return Status::Error(
           field, std::to_string(a.components) + " components; a texture coordinate must have 2");
@@ -546,6 +550,13 @@ class ModelBuilder {
     out.matrix = node.matrix;
     NIWA_RETURN_IF_ERROR(
         ParseExtras(node.extras_json, "nodes[" + std::to_string(i) + "]", &out.extras));
+    if (out.name.empty() && out.mesh < 0 && out.children.empty() && out.translation.empty() &&
+        out.rotation.empty() && out.scale.empty() && out.matrix.empty() &&
+        out.extras.Type() == tinygltf::NULL_TYPE) {
+      // tinygltf writes a node without properties as null, which is not valid glTF: give it an
+      // empty extras object, so it is written as {"extras": {}}.
+      out.extras = tinygltf::Value(tinygltf::Value::Object());
+    }
     model_->nodes.push_back(std::move(out));
     return Status::Ok();
   }
@@ -618,7 +629,9 @@ std::string AttributeSemantic(const std::string& name) {
         (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
     if (!ok) return "";
   }
-  if (IsStandard(name, "COLOR_") || IsStandard(name, "TEXCOORD_")) return name;
+  if (IsStandard(name, "COLOR_") || IsStandard(name, "TEXCOORD_") || name == "TANGENT") {
+    return name;
+  }
   std::string out = "_";
   for (char c : name[0] == '_' ? name.substr(1) : name) {
     out += (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;

@@ -9,7 +9,8 @@
 //   or image; vertex views get target ARRAY_BUFFER, index views ELEMENT_ARRAY_BUFFER (3.6.2);
 // - per primitive: POSITION (float VEC3 with min/max, 3.7.2.1), NORMAL, TEXCOORD_0, then the
 //   TriMesh's named attributes (below), indices, JOINTS_0 (unsigned short) and WEIGHTS_0;
-// - named attributes: "COLOR_n" (3 or 4 floats) and "TEXCOORD_n" (2) keep their glTF semantic;
+// - named attributes: "COLOR_n" (3 or 4 floats), "TEXCOORD_n" (2) and "TANGENT" (4: xyz and the
+//   bitangent sign w, for normal textures) keep their glTF semantic;
 //   every other name is application-specific and written as "_" + its name in upper case
 //   ("birth_step" -> "_BIRTH_STEP", 3.7.2.1: "Application-specific attribute semantics MUST start
 //   with an underscore"), 1-4 floats as SCALAR/VEC2/VEC3/VEC4;
@@ -155,7 +156,8 @@ Result<std::vector<unsigned char>> WriteGlb(const Document& document);
 Result<std::string> WriteGltfJson(const Document& document);
 
 // The attribute name written for a TriMesh attribute ("birth_step" -> "_BIRTH_STEP",
-// "COLOR_0" -> "COLOR_0"); "" when the name cannot be one (empty, or not [A-Za-z0-9_]).
+// "COLOR_0" -> "COLOR_0", "TANGENT" -> "TANGENT"); "" when the name cannot be one (empty, or not
+// [A-Za-z0-9_]).
 std::string AttributeSemantic(const std::string& name);
 
 }  // namespace niwa::gltf
