@@ -253,6 +253,26 @@ Status CheckDocument(const Document& doc) {
       }
       parent[static_cast<std::size_t>(c)] = static_cast<int>(i);
     }
+    const std::size_t instances = node.instance_count();
+    if (!node.instance_translations.empty() || !node.instance_rotations.empty() ||
+        !node.instance_scales.empty()) {
+      if (node.mesh < 0 || node.skin >= 0) {
+        return Status::Error(field, "instances need a mesh and no skin");
+      }
+      if (instances == 0 ||
+          (!node.instance_translations.empty() &&
+           node.instance_translations.size() != 3 * instances) ||
+          (!node.instance_rotations.empty() && node.instance_rotations.size() != 4 * instances) ||
+          (!node.instance_scales.empty() && node.instance_scales.size() != 3 * instances)) {
+        return Status::Error(field,
+                             "instance translations (3), rotations (4) and scales (3 per "
+                             "instance) must each be empty or agree on the instance count");
+      }
+      if (!AllFinite(node.instance_translations) || !AllFinite(node.instance_rotations) ||
+          !AllFinite(node.instance_scales)) {
+        return Status::Error(field, "an instance transform is not finite");
+      }
+    }
     if (node.skin >= 0) {  // joint indices within the skin
       const std::size_t joints = doc.skins[static_cast<std::size_t>(node.skin)].joints.size();
       for (const Primitive& p : doc.meshes[static_cast<std::size_t>(node.mesh)].primitives) {
@@ -557,8 +577,30 @@ class ModelBuilder {
       // empty extras object, so it is written as {"extras": {}}.
       out.extras = tinygltf::Value(tinygltf::Value::Object());
     }
+    if (node.instance_count() > 0) AddInstances(node, &out);
     model_->nodes.push_back(std::move(out));
     return Status::Ok();
+  }
+
+  // EXT_mesh_gpu_instancing: TRANSLATION, ROTATION, SCALE accessors of the node's instances.
+  void AddInstances(const Node& node, tinygltf::Node* out) {
+    const char* kExtension = "EXT_mesh_gpu_instancing";
+    tinygltf::Value::Object attributes;
+    auto add = [&](const char* name, const std::vector<float>& values, int type) {
+      if (values.empty()) return;
+      attributes[name] = tinygltf::Value(AddAccessor(
+          AddView(values, 0), TINYGLTF_COMPONENT_TYPE_FLOAT, type, node.instance_count()));
+    };
+    add("TRANSLATION", node.instance_translations, TINYGLTF_TYPE_VEC3);
+    add("ROTATION", node.instance_rotations, TINYGLTF_TYPE_VEC4);
+    add("SCALE", node.instance_scales, TINYGLTF_TYPE_VEC3);
+    tinygltf::Value::Object extension;
+    extension["attributes"] = tinygltf::Value(std::move(attributes));
+    out->extensions[kExtension] = tinygltf::Value(std::move(extension));
+    if (std::find(model_->extensionsUsed.begin(), model_->extensionsUsed.end(), kExtension) ==
+        model_->extensionsUsed.end()) {
+      model_->extensionsUsed.push_back(kExtension);
+    }
   }
 
   void AddSkin(const Skin& skin) {

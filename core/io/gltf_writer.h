@@ -16,11 +16,13 @@
 //   with an underscore"), 1-4 floats as SCALAR/VEC2/VEC3/VEC4;
 // - materials and textures in the order the primitives first use them (then the unused ones), one
 //   sampler per texture, so the bytes of a Document are fixed by its content;
-// - skins, then animations (one sampler per channel; every input accessor has min/max, 3.11).
+// - then per node its EXT_mesh_gpu_instancing accessors (if any), skins, then animations (one
+//   sampler per channel; every input accessor has min/max, 3.11).
 // Same Document, same bytes (natively and in WASM): no clocks, no hash-ordered containers.
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -106,6 +108,17 @@ struct Node {
   std::array<double, 3> scale{1, 1, 1};
   std::vector<double> matrix;  // empty, or 16 values column-major
   std::string extras_json;
+  // EXT_mesh_gpu_instancing: the node's mesh drawn once per instance, each with its own TRS
+  // (translations 3, rotations 4 (unit quaternion x, y, z, w), scales 3 floats per instance; each
+  // empty or for every instance). Needs a mesh and no skin; adds the extension to extensionsUsed.
+  std::vector<float> instance_translations;
+  std::vector<float> instance_rotations;
+  std::vector<float> instance_scales;
+  std::size_t instance_count() const {
+    return !instance_translations.empty() ? instance_translations.size() / 3
+           : !instance_rotations.empty()  ? instance_rotations.size() / 4
+                                          : instance_scales.size() / 3;
+  }
 };
 
 struct Skin {

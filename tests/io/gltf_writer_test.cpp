@@ -372,6 +372,20 @@ TEST(GltfWriter, ExtrasMatrixJsonAndDeterminism) {
   EXPECT_EQ(text_model.accessors.size(), model.accessors.size());
   EXPECT_EQ(text_model.buffers.at(0).data, model.buffers.at(0).data);
 
+  // EXT_mesh_gpu_instancing: three copies of the mesh, translated and scaled.
+  Document instanced = OneMesh({Triangle()});
+  instanced.nodes[0].instance_translations = {0, 0, 0, 1, 0, 0, 2, 0, 0};
+  instanced.nodes[0].instance_scales = {1, 1, 1, 2, 2, 2, 0.5f, 0.5f, 0.5f};
+  const tinygltf::Model copies = Parse(*WriteGlb(instanced));
+  EXPECT_EQ(copies.extensionsUsed, (std::vector<std::string>{"EXT_mesh_gpu_instancing"}));
+  ASSERT_EQ(copies.nodes.at(0).extensions.count("EXT_mesh_gpu_instancing"), 1u);
+  const tinygltf::Value& ext = copies.nodes[0].extensions.at("EXT_mesh_gpu_instancing");
+  const int translations = ext.Get("attributes").Get("TRANSLATION").Get<int>();
+  EXPECT_EQ(Read<float>(copies, translations), instanced.nodes[0].instance_translations);
+  EXPECT_EQ(Read<float>(copies, ext.Get("attributes").Get("SCALE").Get<int>()),
+            instanced.nodes[0].instance_scales);
+  EXPECT_FALSE(ext.Get("attributes").Has("ROTATION"));
+
   // A scene without meshes has no buffer.
   Document empty;
   empty.nodes.push_back({});
@@ -459,6 +473,10 @@ TEST(GltfWriter, BadDocumentsAreOneLineErrors) {
   bad = doc;
   bad.nodes[0].skin = 0;
   ExpectError(bad, "skin 0 must be -1 or < 0");
+  bad = doc;
+  bad.nodes[0].instance_translations = {0, 0, 0, 1, 0, 0};
+  bad.nodes[0].instance_rotations = {0, 0, 0, 1};
+  ExpectError(bad, "must each be empty or agree on the instance count");
   bad = doc;
   bad.asset_extras_json = "{seed: 3";
   ExpectError(bad, "asset: extras must be JSON text");
