@@ -7,7 +7,6 @@
 #include <memory>
 #include <utility>
 
-#include "io/gltf_export.h"
 #include "random/pcg32.h"
 #include "sway/skin.h"
 #include "sway/sway.h"
@@ -16,6 +15,7 @@
 #include "tree/mesh.h"
 #include "tree/presets.h"
 #include "tree/tree.h"
+#include "tree/tree_gltf.h"
 
 namespace niwa {
 namespace {
@@ -159,7 +159,7 @@ std::vector<Workload> MakeWorkloads() {
              std::make_shared<TreeMesh>(BuildTreeMesh(GrowTree(PresetRequest(Sakura(), 15))));
          return WorkloadBody([mesh]() {
            std::vector<unsigned char> bytes;
-           WriteGlb(*mesh, &bytes);
+           (void)WriteTreeGlb(*mesh, &bytes);
            return static_cast<double>(bytes.size());
          });
        }});

@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "cli_common.h"
-#include "io/gltf_sway.h"
+#include "sway/sway_gltf.h"
 #include "sway/sway.h"
 #include "tree/growth.h"
 #include "tree_cli.h"
@@ -110,11 +110,11 @@ int RunSwayCommand(const SwayOptions& o, const CLI::App& cmd, std::ostream& out)
   SwayParams params = ResolveSwayParams(o, cmd, &state.params);
   Tree tree = GrowTree(state);
   CheckPrunes(state, tree);
-  if (out_ext == ".glb") {  // core/io/gltf_sway: exact two-joint skinning of eq. 3.15
+  if (out_ext == ".glb") {  // core/sway/sway_gltf: exact two-joint skinning of eq. 3.15
     std::vector<unsigned char> glb;
     SwayGlbOptions glb_options;
     glb_options.fps = o.fps;
-    std::string error = WriteSwayGlb(tree, params, glb_options, &glb);
+    std::string error = WriteSwayGlb(tree, params, glb_options, &glb).Line();
     if (!error.empty()) throw BadInput{"--out: " + error};
     Check(WriteFileAtomically(o.out_path, std::string(glb.begin(), glb.end())).Within("--out"));
   }

@@ -3,8 +3,8 @@
 #include <memory>
 
 #include "cli_common.h"
-#include "io/gltf_export.h"
-#include "io/svg_export.h"
+#include "tree/tree_gltf.h"
+#include "tree/tree_svg.h"
 #include "tree/growth.h"
 #include "tree/mesh.h"
 #include "tree/presets.h"
@@ -64,7 +64,7 @@ int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
       bytes = TreeToSvg(tree, o.svg);
     } else {
       std::vector<unsigned char> glb;
-      std::string error = WriteGlb(BuildTreeMesh(tree), &glb);
+      std::string error = WriteTreeGlb(BuildTreeMesh(tree), &glb).Line();
       if (!error.empty()) throw BadInput{"--out: " + error};
       bytes.assign(glb.begin(), glb.end());
     }

@@ -46,7 +46,7 @@
 #include <vector>
 
 #include "buffers.h"
-#include "io/gltf_export.h"
+#include "tree/tree_gltf.h"
 #include "params/param_json.h"
 #include "params/param_table.h"
 #include "render/atlas_mesh.h"
@@ -258,7 +258,7 @@ class TreeSession {
   std::string buildGlb() {
     glb_.clear();
     if (!grower_) return error_.empty() ? "no tree" : error_;
-    return WriteGlb(mesh_, &glb_);
+    return WriteTreeGlb(mesh_, &glb_).Line();
   }
 
   // ---- Hybrid rendering (thesis chapter 4) of the tree last meshed ----

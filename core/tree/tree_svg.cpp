@@ -1,6 +1,6 @@
 // Side view (x right, y up) of every living branch as a polyline whose stroke follows the pipe
 // radius.
-#include "io/svg_export.h"
+#include "tree/tree_svg.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,13 +1,15 @@
 // Sway export: a grown tree's wind sway (thesis ch. 3) as a skinned, animated .glb (exact
-// two-joint linear blend skinning form of eq. 3.15; docs/sway-model.md "Skinning and glTF export").
+// two-joint linear blend skinning form of eq. 3.15; docs/sway-model.md "Skinning and glTF export"),
+// over the tree's glTF document (tree/tree_gltf.h). Does not: write files or draw.
 #pragma once
 
 #include <cstddef>
 #include <string>
 #include <vector>
 
-#include "io/gltf_export.h"
+#include "base/status.h"
 #include "sway/sway.h"
+#include "tree/tree_gltf.h"
 
 namespace niwa {
 
@@ -32,8 +34,8 @@ struct SwayGlbInfo {
 };
 
 // Key k is the state after step round(k / (fps dt)) (keys falling on the same step are merged),
-// for k / fps <= duration. Returns "" or one error line (e.g. too many joints for JOINTS_0).
-std::string WriteSwayGlb(const Tree& tree, const SwayParams& params, const SwayGlbOptions& options,
-                         std::vector<unsigned char>* bytes, SwayGlbInfo* info = nullptr);
+// for k / fps <= duration. Errors are one line (e.g. too many joints for JOINTS_0).
+Status WriteSwayGlb(const Tree& tree, const SwayParams& params, const SwayGlbOptions& options,
+                    std::vector<unsigned char>* bytes, SwayGlbInfo* info = nullptr);
 
 }  // namespace niwa

@@ -1,5 +1,5 @@
 // Sway export: skinned .glb of the node-point sway (thesis eq. 3.15 as two-joint skinning).
-#include "io/gltf_sway.h"
+#include "sway/sway_gltf.h"
 
 #include <cmath>
 #include <glm/gtc/quaternion.hpp>
@@ -52,11 +52,13 @@ SwayJoints MapSwayJoints(const SwayModel& model) {
   return joints;
 }
 
-std::string WriteSwayGlb(const Tree& tree, const SwayParams& params, const SwayGlbOptions& options,
-                         std::vector<unsigned char>* bytes, SwayGlbInfo* info) {
-  if (bytes == nullptr) return "no output buffer";
+Status WriteSwayGlb(const Tree& tree, const SwayParams& params, const SwayGlbOptions& options,
+                    std::vector<unsigned char>* bytes, SwayGlbInfo* info) {
+  if (bytes == nullptr) return Status::Error("glb", "no output buffer");
   bytes->clear();
-  if (!(options.fps > 0) || !std::isfinite(options.fps)) return "fps must be positive";
+  if (!(options.fps > 0) || !std::isfinite(options.fps)) {
+    return Status::Error("fps", "must be a positive number");
+  }
   SwaySimulator sim(tree, params);
   const SwayModel& model = sim.model();
   const SwayJoints joints = MapSwayJoints(model);
@@ -65,9 +67,10 @@ std::string WriteSwayGlb(const Tree& tree, const SwayParams& params, const SwayG
     info->node_points = model.nodes.size();
   }
   if (joints.count > kMaxGltfJoints) {
-    return "the sway needs " + std::to_string(joints.count) +
-           " joints (1 root + 2 per moving and 1 per follower node point) but JOINTS_0 (unsigned "
-           "short) indexes at most 65536; grow fewer years";
+    return Status::Error("", "the sway needs " + std::to_string(joints.count) +
+                                 " joints (1 root + 2 per moving and 1 per follower node point) "
+                                 "but JOINTS_0 (unsigned short) indexes at most 65536; grow "
+                                 "fewer years");
   }
   MeshOptions mesh_options;
   mesh_options.cm_to_units = options.cm_to_units;
@@ -134,7 +137,7 @@ std::string WriteSwayGlb(const Tree& tree, const SwayParams& params, const SwayG
     info->keys = out.times.size();
     info->seconds = out.times.empty() ? 0.0 : static_cast<double>(out.times.back());
   }
-  return WriteSkinnedGlb(mesh, out, bytes);
+  return WriteSkinnedTreeGlb(mesh, out, bytes);
 }
 
 }  // namespace niwa

@@ -1,16 +1,10 @@
-// Procedural bark, leaf and flower textures (integer hashes + det:: math) and PNG encoding with
-// stb_image_write (the project's one stb_image_write implementation; tinygltf is built without it).
-#include "render/textures.h"
+// Procedural bark, leaf and flower textures of the tree (integer hashes + det:: math).
+#include "tree/tree_textures.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "math/det_math.h"
-
-#define STB_IMAGE_WRITE_STATIC
-#define STBI_WRITE_NO_STDIO
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#include <stb/stb_image_write.h>
 
 namespace niwa {
 namespace {
@@ -67,29 +61,14 @@ double PeriodicFbm(double u, double v, int px, int py, int octaves, uint32_t see
 unsigned char ToByte(double x) { return static_cast<unsigned char>(Clamp01(x) * 255.0 + 0.5); }
 
 void SetPixel(Rgba8Image* image, int x, int y, double r, double g, double b, double a) {
-  unsigned char* p = image->pixels.data() +
-                     4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(image->width) +
-                          static_cast<std::size_t>(x));
+  unsigned char* p = image->At(x, y);
   p[0] = ToByte(r);
   p[1] = ToByte(g);
   p[2] = ToByte(b);
   p[3] = ToByte(a);
 }
 
-Rgba8Image Allocate(int width, int height) {
-  Rgba8Image image;
-  if (width <= 0 || height <= 0) return image;
-  image.width = width;
-  image.height = height;
-  image.pixels.assign(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
-  return image;
-}
-
-void AppendBytes(void* context, void* data, int size) {
-  auto* out = static_cast<std::vector<unsigned char>*>(context);
-  const auto* bytes = static_cast<const unsigned char*>(data);
-  out->insert(out->end(), bytes, bytes + size);
-}
+Rgba8Image Allocate(int width, int height) { return image::MakeRgba8(width, height, 0, 0, 0, 0); }
 
 }  // namespace
 
@@ -181,20 +160,6 @@ Rgba8Image MakeFlowerTexture(int size) {
     }
   }
   return image;
-}
-
-std::vector<unsigned char> EncodePng(const Rgba8Image& image) {
-  std::vector<unsigned char> png;
-  if (image.width <= 0 || image.height <= 0 ||
-      image.pixels.size() !=
-          4 * static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height)) {
-    return png;
-  }
-  if (!stbi_write_png_to_func(AppendBytes, &png, image.width, image.height, 4, image.pixels.data(),
-                              4 * image.width)) {
-    png.clear();
-  }
-  return png;
 }
 
 }  // namespace niwa

@@ -1,4 +1,5 @@
-// Orthographic side-view SVG of a tree, drawn like the thesis's line figures.
+// Orthographic side-view SVG of a tree, drawn like the thesis's line figures. Does not: draw
+// meshes, perspective views or other studies.
 #pragma once
 
 #include <string>

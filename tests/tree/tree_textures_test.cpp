@@ -1,10 +1,13 @@
-// Unit tests of the procedural material textures: determinism, leaf/flower alpha, bark tiling, PNG.
-#include "render/textures.h"
+// Unit tests of the tree's procedural material textures: determinism, leaf/flower alpha, bark
+// tiling, PNG.
+#include "tree/tree_textures.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <string>
+
+#include "image/png.h"
 
 namespace niwa {
 namespace {
@@ -40,21 +43,22 @@ TEST(TexturesTest, SizesAndPixelCounts) {
   Rgba8Image flower = MakeFlowerTexture(32);
   EXPECT_EQ(flower.pixels.size(), 4u * 32u * 32u);
   EXPECT_TRUE(MakeBarkTexture(0, 16).pixels.empty());
-  EXPECT_TRUE(EncodePng(Rgba8Image{}).empty());
+  EXPECT_FALSE(image::EncodeRgba8Png(Rgba8Image{}).ok());
 }
 
 TEST(TexturesTest, DeterministicPixelsAndPngBytes) {
   EXPECT_EQ(MakeBarkTexture().pixels, MakeBarkTexture().pixels);
   EXPECT_EQ(MakeLeafTexture().pixels, MakeLeafTexture().pixels);
   EXPECT_EQ(MakeFlowerTexture().pixels, MakeFlowerTexture().pixels);
-  EXPECT_EQ(EncodePng(MakeBarkTexture()), EncodePng(MakeBarkTexture()));
-  EXPECT_EQ(EncodePng(MakeLeafTexture()), EncodePng(MakeLeafTexture()));
-  EXPECT_EQ(EncodePng(MakeFlowerTexture()), EncodePng(MakeFlowerTexture()));
+  EXPECT_EQ(*image::EncodeRgba8Png(MakeBarkTexture()), *image::EncodeRgba8Png(MakeBarkTexture()));
+  EXPECT_EQ(*image::EncodeRgba8Png(MakeLeafTexture()), *image::EncodeRgba8Png(MakeLeafTexture()));
+  EXPECT_EQ(*image::EncodeRgba8Png(MakeFlowerTexture()),
+            *image::EncodeRgba8Png(MakeFlowerTexture()));
 }
 
 TEST(TexturesTest, PngHeaderMatchesTheImage) {
   Rgba8Image leaf = MakeLeafTexture();
-  std::vector<unsigned char> png = EncodePng(leaf);
+  std::vector<unsigned char> png = *image::EncodeRgba8Png(leaf);
   ASSERT_TRUE(HasPngMagic(png));
   ASSERT_GT(png.size(), 33u);
   EXPECT_EQ(std::string(png.begin() + 12, png.begin() + 16), "IHDR");
@@ -63,8 +67,8 @@ TEST(TexturesTest, PngHeaderMatchesTheImage) {
   EXPECT_EQ(png[24], 8);                    // bit depth
   EXPECT_EQ(png[25], 6);                    // colour type RGBA
   EXPECT_EQ(std::string(png.end() - 8, png.end() - 4), "IEND");
-  EXPECT_TRUE(HasPngMagic(EncodePng(MakeBarkTexture())));
-  EXPECT_TRUE(HasPngMagic(EncodePng(MakeFlowerTexture())));
+  EXPECT_TRUE(HasPngMagic(*image::EncodeRgba8Png(MakeBarkTexture())));
+  EXPECT_TRUE(HasPngMagic(*image::EncodeRgba8Png(MakeFlowerTexture())));
 }
 
 TEST(TexturesTest, LeafIsOpaqueInsideAndTransparentOutside) {

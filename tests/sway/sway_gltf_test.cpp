@@ -1,0 +1,223 @@
+// Unit tests of the sway export (sway/sway_gltf): a skinned tree mesh and one animation clip whose
+// poses, evaluated from the .glb alone, are the simulator's (thesis eq. 3.15).
+#include "sway/sway_gltf.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "support/glb_parse.h"
+#include "sway/skin.h"
+#include "tree/growth.h"
+#include "tree/mesh.h"
+#include "tree/presets.h"
+
+namespace niwa {
+namespace {
+
+using nlohmann::json;
+using testing::Glb;
+using testing::ParseGlb;
+using testing::ReadAccessor;
+
+Tree Grow(const std::string& preset, int years) {
+  GrowRequest r;
+  r.preset = preset;
+  r.params = FindPreset(preset)->params;
+  r.years = years;
+  r.seed = 1;
+  return GrowTree(r);
+}
+
+SwayParams ShortGust() {
+  ParamSet ps;
+  EXPECT_EQ(ps.Set(ParamId::kWindSpeed, 8.0), "");
+  EXPECT_EQ(ps.Set(ParamId::kGustOn, 0.0), "");
+  EXPECT_EQ(ps.Set(ParamId::kGustOff, 5.0), "");
+  EXPECT_EQ(ps.Set(ParamId::kSwayDuration, 1.0), "");
+  return SwayParams(ps);
+}
+
+// The skinned position of vertex v of one primitive at key k, evaluated from the .glb alone:
+// sum_i w_i (translate(t_i(k)) rotate(q_i(k))) IBM_i p (glTF 2.0 spec, 3.7.3).
+struct GlbSkinEval {
+  const Glb* glb;
+  std::vector<std::vector<float>> translation, rotation;  // per joint, keys (empty: rest)
+  std::vector<std::array<float, 3>> rest, inverse_offset;
+  glm::dvec3 At(std::size_t key, const std::vector<uint16_t>& joints,
+                const std::vector<float>& weights, std::size_t v, const glm::dvec3& p) const {
+    glm::dvec3 out(0.0);
+    for (std::size_t c = 0; c < 4; ++c) {
+      const double w = weights[4 * v + c];
+      if (w == 0) continue;
+      const std::size_t j = joints[4 * v + c];
+      glm::dvec3 t(rest[j][0], rest[j][1], rest[j][2]);
+      glm::dquat q(1, 0, 0, 0);
+      if (!translation[j].empty()) {
+        const float* a = &translation[j][3 * key];
+        const float* b = &rotation[j][4 * key];
+        t = glm::dvec3(a[0], a[1], a[2]);
+        q = glm::dquat(b[3], b[0], b[1], b[2]);
+      }
+      glm::dvec3 local =
+          p + glm::dvec3(inverse_offset[j][0], inverse_offset[j][1], inverse_offset[j][2]);
+      out += w * (q * local + t);
+    }
+    return out;
+  }
+};
+
+TEST(GltfSwayTest, SkinnedGlbHasJointsClipAndReproducesTheSkinnedPoses) {
+  const Tree tree = Grow("sakura", 5);
+  const SwayParams params = ShortGust();
+  std::vector<unsigned char> bytes;
+  SwayGlbInfo info;
+  ASSERT_EQ(WriteSwayGlb(tree, params, SwayGlbOptions{}, &bytes, &info).Line(), "");
+  const Glb glb = ParseGlb(bytes);
+  const json& gltf = glb.gltf;
+
+  SwaySimulator sim(tree, params);
+  const SwayModel& model = sim.model();
+  ASSERT_GT(model.moving, 0);
+  const SwayJoints map = MapSwayJoints(model);
+  const std::size_t joints =
+      1 + 2 * static_cast<std::size_t>(model.moving) + static_cast<std::size_t>(model.followers);
+  EXPECT_EQ(map.count, joints);
+  EXPECT_EQ(info.joints, joints);
+  ASSERT_EQ(gltf["skins"].size(), 1u);
+  const json& skin = gltf["skins"][0];
+  ASSERT_EQ(skin["joints"].size(), joints);
+  EXPECT_EQ(gltf["accessors"][skin["inverseBindMatrices"].get<std::size_t>()]["count"], joints);
+  EXPECT_EQ(gltf["nodes"][0]["skin"], 0);
+  EXPECT_EQ(gltf["scenes"][0]["nodes"].size(), 2u);  // the mesh and the skeleton root, at top
+
+  // One clip; every joint but the root (fixed node points) has one translation and one rotation
+  // channel; the keys are the steps (fps 30 = 1 / dt), 0 to 1 s.
+  ASSERT_EQ(gltf["animations"].size(), 1u);
+  const json& clip = gltf["animations"][0];
+  std::vector<int> translation_channels(joints, 0), rotation_channels(joints, 0);
+  GlbSkinEval eval{&glb, {}, {}, {}, {}};
+  eval.translation.resize(joints);
+  eval.rotation.resize(joints);
+  std::vector<float> times;
+  for (const json& channel : clip["channels"]) {
+    const int node = channel["target"]["node"].get<int>();
+    auto it = std::find(skin["joints"].begin(), skin["joints"].end(), node);
+    ASSERT_NE(it, skin["joints"].end());
+    const std::size_t j = static_cast<std::size_t>(it - skin["joints"].begin());
+    const json& sampler = clip["samplers"][channel["sampler"].get<std::size_t>()];
+    EXPECT_EQ(sampler.value("interpolation", "LINEAR"), "LINEAR");
+    times = ReadAccessor<float>(glb, sampler["input"].get<int>());
+    if (channel["target"]["path"] == "translation") {
+      ++translation_channels[j];
+      eval.translation[j] = ReadAccessor<float>(glb, sampler["output"].get<int>());
+    } else {
+      ASSERT_EQ(channel["target"]["path"], "rotation");
+      ++rotation_channels[j];
+      eval.rotation[j] = ReadAccessor<float>(glb, sampler["output"].get<int>());
+    }
+  }
+  for (std::size_t j = 0; j < joints; ++j) {
+    EXPECT_EQ(translation_channels[j], j == 0 ? 0 : 1) << j;
+    EXPECT_EQ(rotation_channels[j], j == 0 ? 0 : 1) << j;
+  }
+  ASSERT_EQ(times.size(), 31u);
+  EXPECT_EQ(info.keys, 31u);
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    EXPECT_NEAR(times[k], static_cast<double>(k) * params.dt, 1e-6);
+  }
+  for (std::size_t j = 0; j < joints; ++j) {
+    const json& node = gltf["nodes"][skin["joints"][j].get<std::size_t>()];
+    std::array<float, 3> t{0, 0, 0};
+    if (node.contains("translation")) {
+      for (int c = 0; c < 3; ++c) t[c] = node["translation"][c].get<float>();
+    }
+    eval.rest.push_back(t);
+  }
+  const std::vector<float> ibm = ReadAccessor<float>(glb, skin["inverseBindMatrices"].get<int>());
+  ASSERT_EQ(ibm.size(), 16 * joints);
+  for (std::size_t j = 0; j < joints; ++j) {
+    eval.inverse_offset.push_back({ibm[16 * j + 12], ibm[16 * j + 13], ibm[16 * j + 14]});
+  }
+
+  // Keys 0 and 15 against the skin formula with WriteSwayPoses (core/sway/skin.h) on every
+  // vertex of every primitive, and the moved tree really moves at key 15.
+  const TreeMesh mesh = BuildTreeMesh(tree);
+  const TreeSkin tree_skin = BuildTreeSkin(mesh, model);
+  const json& primitives = gltf["meshes"][0]["primitives"];
+  const MeshBuffers* buffers[3] = {&mesh.bark, &mesh.leaves, &mesh.flowers};
+  const VertexSkin* vertex_skin[3] = {&tree_skin.bark, &tree_skin.leaves, &tree_skin.flowers};
+  std::vector<float> poses(kSwayPoseFloats * model.nodes.size());
+  double moved = 0;
+  for (std::size_t key : {std::size_t{0}, std::size_t{15}}) {
+    while (sim.steps() < static_cast<long>(key)) sim.Step();
+    WriteSwayPoses(sim, 0.01f, poses.data());
+    std::size_t primitive = 0;
+    for (std::size_t part = 0; part < 3; ++part) {
+      if (buffers[part]->indices.empty()) continue;
+      const json& attributes = primitives[primitive++]["attributes"];
+      const int joints_accessor = attributes["JOINTS_0"].get<int>();
+      EXPECT_EQ(gltf["accessors"][static_cast<std::size_t>(joints_accessor)]["componentType"],
+                5123);  // unsigned short
+      const std::vector<uint16_t> j0 = ReadAccessor<uint16_t>(glb, joints_accessor);
+      const std::vector<float> w0 = ReadAccessor<float>(glb, attributes["WEIGHTS_0"].get<int>());
+      const std::vector<float> positions =
+          ReadAccessor<float>(glb, attributes["POSITION"].get<int>());
+      ASSERT_EQ(j0.size(), 4 * buffers[part]->vertex_count());
+      for (std::size_t v = 0; v < buffers[part]->vertex_count(); ++v) {
+        glm::vec3 p(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
+        EXPECT_NEAR(w0[4 * v] + w0[4 * v + 1] + w0[4 * v + 2] + w0[4 * v + 3], 1.0, 1e-6);
+        glm::dvec3 got = eval.At(key, j0, w0, v, glm::dvec3(p));
+        glm::vec3 want = SkinPosition(poses.data(), vertex_skin[part]->joint[v],
+                                      vertex_skin[part]->weight[v], p);
+        ASSERT_LE(glm::length(got - glm::dvec3(want)), 1e-4) << "part " << part << " v " << v;
+        if (key == 0) {
+          ASSERT_LE(glm::length(got - glm::dvec3(p)), 1e-5);
+        }
+        moved = std::max(moved, glm::length(got - glm::dvec3(p)));
+      }
+    }
+  }
+  EXPECT_GT(moved, 0.01);  // metres
+}
+
+TEST(GltfSwayTest, TooManyJointsIsAOneLineError) {
+  // 33,000 long thin twigs with leaves on one trunk: every twig moves, 2 joints each.
+  Tree tree;
+  auto add = [&](int parent, glm::vec3 a, glm::vec3 b, float radius, int leaves) {
+    Branch br{};
+    br.id = static_cast<int>(tree.branches.size());
+    br.parent = parent;
+    br.parent_node = parent < 0 ? 0 : 1;
+    br.alive = true;
+    br.nodes = {a, b};
+    br.cross_section = 3.14159265f * radius * radius;
+    for (int k = 0; k < leaves; ++k) br.leaves.push_back(Leaf{1, glm::vec3(1, 0, 0)});
+    if (parent >= 0) tree.branches[static_cast<std::size_t>(parent)].children.push_back(br.id);
+    tree.branches.push_back(br);
+  };
+  add(-1, {0, 0, 0}, {0, 100, 0}, 3.0f, 0);
+  for (int k = 0; k < 33000; ++k) {
+    float a = static_cast<float>(k) * 0.001f;
+    add(0, {0, 100, 0}, {60 * std::cos(a), 100, 60 * std::sin(a)}, 0.2f, 5);
+  }
+  SwayParams params;
+  ASSERT_GT(MapSwayJoints(BuildSwayModel(tree, params)).count, kMaxGltfJoints);
+  std::vector<unsigned char> bytes;
+  SwayGlbInfo info;
+  std::string error = WriteSwayGlb(tree, params, SwayGlbOptions{}, &bytes, &info).Line();
+  EXPECT_NE(error.find("65536"), std::string::npos) << error;
+  EXPECT_NE(error.find("fewer years"), std::string::npos) << error;
+  EXPECT_EQ(error.find('\n'), std::string::npos);
+  EXPECT_GT(info.joints, kMaxGltfJoints);
+  EXPECT_TRUE(bytes.empty());
+}
+
+}  // namespace
+}  // namespace niwa
