@@ -107,6 +107,7 @@ std::string DetachDracoIndices(const std::string& bytes, bool binary, DracoIndex
   } else {
     json_text = bytes;
   }
+  if (json_text.find(kDraco) == std::string::npos) return "";  // the common case: parse once
   nlohmann::json j = nlohmann::json::parse(json_text, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("meshes") || !j["meshes"].is_array() ||
       !j.contains("accessors") || !j["accessors"].is_array()) {
