@@ -621,6 +621,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     };
     if (!args.empty()) check_command(&app, args[0]);
     if (args.size() > 1 && args[0] == "tree") check_command(tree, args[1]);
+    if (args.size() > 1 && args[0] == "mesh") check_command(app.get_subcommand("mesh"), args[1]);
     std::vector<std::string> reversed(args.rbegin(), args.rend());
     app.parse(reversed);
     if (*presets) {
