@@ -75,6 +75,7 @@ TEST(MeshCli, BadInputIsOneLineAndExitTwo) {
        "niwa: error: --point: 'a,b,c' is out of range; must be three numbers X,Y,Z, each in "
        "[-1e30, "
        "1e30]\n"},
+      {{"mesh", "foo"}, "niwa: error: unknown command 'foo', must be one of stats, closest, ray\n"},
       {{"mesh", "ray", "--scene", "cylinder", "--origin", "0,0,0", "--dir", "0,0,0"},
        "niwa: error: --dir: '0,0,0' is zero; must be a non-zero direction X,Y,Z\n"},
   };
