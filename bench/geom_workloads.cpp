@@ -1,6 +1,8 @@
 // Mesh geometry workloads (core/geom): BVH build per triangle, closest-point and segment queries
 // at 4 k .. 4 M triangles, and the BVH against brute force at 262 k triangles.
+#include <algorithm>
 #include <cstdint>
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <memory>
 #include <string>
@@ -38,6 +40,29 @@ struct Scene {
 };
 
 float U(Pcg32& rng, double lo, double hi) { return static_cast<float>(rng.Uniform(lo, hi)); }
+
+// Queries in walk order (ivy's pattern: each query near the last): a random walk over the wall in
+// steps of about L, y within ±5 cm, segments from each point onward by L.
+void MakeWalk(Scene* s) {
+  Pcg32 rng(78);
+  glm::vec3 p(0.0f);
+  s->points.clear();
+  s->seg_a.clear();
+  s->seg_b.clear();
+  for (int i = 0; i < kQueries; ++i) {
+    float dx = U(rng, -1.0, 1.0);
+    float dz = U(rng, -1.0, 1.0);
+    float y = U(rng, -0.05, 0.05);
+    glm::vec3 q = p + glm::vec3(dx, 0.0f, dz) * kSegment;
+    q.x = std::clamp(q.x, -1.0f, 1.0f);
+    q.z = std::clamp(q.z, -0.5f, 0.5f);
+    q.y = y;
+    s->points.push_back(p);
+    s->seg_a.push_back(p);
+    s->seg_b.push_back(q);
+    p = q;
+  }
+}
 
 std::shared_ptr<Scene> MakeScene(const WallSize& w, bool build_bvh) {
   auto s = std::make_shared<Scene>();
@@ -81,18 +106,21 @@ Workload BuildWorkload(const WallSize& w, bool cold) {
   return wl;
 }
 
-// kind: "closest" or "segment"; linear: brute force on the first kLinearQueries queries.
-Workload QueryWorkload(const WallSize& w, const std::string& kind, bool linear) {
+// kind: "closest" or "segment"; linear: brute force on the first kLinearQueries queries; walk:
+// queries in walk order (MakeWalk) instead of uniformly scattered.
+Workload QueryWorkload(const WallSize& w, const std::string& kind, bool linear, bool walk = false) {
   Workload wl;
   const int n = linear ? kLinearQueries : kQueries;
-  wl.name = "geom/" + kind + (linear ? "-linear" : "") + "/wall-" + w.label;
+  wl.name = "geom/" + kind + (linear ? "-linear" : "") + (walk ? "-walk" : "") + "/wall-" + w.label;
   wl.note = std::to_string(n) +
             (kind == "closest" ? " ClosestPoint (r 5 cm)" : " SegmentHits (6.25 cm)") +
-            (linear ? " by brute force" : " through the BVH") + ", " + w.label + "-triangle wall";
+            (linear ? " by brute force" : " through the BVH") + (walk ? " in walk order" : "") +
+            ", " + w.label + "-triangle wall";
   wl.unit = "query";
   std::shared_ptr<double> units = wl.units;
-  wl.prepare = [w, kind, linear, n, units]() -> WorkloadBody {
+  wl.prepare = [w, kind, linear, walk, n, units]() -> WorkloadBody {
     auto s = MakeScene(w, !linear);
+    if (walk) MakeWalk(s.get());
     *units = n;
     if (kind == "closest") {
       return [s, linear, n]() {
@@ -128,6 +156,7 @@ std::vector<Workload> GeomWorkloads() {
   for (const char* kind : {"closest", "segment"}) {
     for (const WallSize& w : kWalls) all.push_back(QueryWorkload(w, kind, false));
     all.push_back(QueryWorkload(kWalls[2], kind, true));  // brute force at 262 k
+    for (int k : {0, 4}) all.push_back(QueryWorkload(kWalls[k], kind, false, /*walk=*/true));
   }
   return all;
 }
