@@ -10,6 +10,9 @@
 // g++ 12 and em++ 3.1.6 here. Niwa needs the same tree and the same answers natively and in WASM,
 // so this is a small one, checked against the brute-force twins in linear_queries.h.
 //
+// Build: centroids binned along the widest axis (Wald 2007), SAH cost N_L·A_L + N_R·A_R per bin
+// boundary, leaves of at most max_leaf_triangles.
+//
 // Determinism: the build is single-threaded, in a fixed order (recursive, left child first),
 // with float bounds and double SAH costs; ties between split candidates go to the lowest axis and
 // bin. Same mesh, same options: the same nodes, bit for bit, on every build.
@@ -27,6 +30,7 @@ namespace niwa::geom {
 struct BvhOptions {
   int bins = 16;               // SAH bins per axis, clamped to [2, 64]
   int max_leaf_triangles = 4;  // a node with at most this many triangles stays a leaf; [1, 16]
+  bool all_axes = false;       // SAH over all three axes, not only the widest (slower build)
 };
 
 // One node, 32 bytes. A leaf (count > 0) holds triangles order[first .. first + count); an inner
