@@ -81,7 +81,8 @@ TEST(Determinism, SameDigestNativelyAndInWasm) {
   uint64_t digest = GeometryDigest();
   std::printf("geometry digest %016" PRIx64 "\n", digest);
   EXPECT_EQ(digest, GeometryDigest());  // and within one run
-  EXPECT_EQ(digest, 0xe6611b9b483d9349ULL) << "recorded digest of both builds; see the file's first lines";
+  EXPECT_EQ(digest, 0xe6611b9b483d9349ULL)
+      << "recorded digest of both builds; see the file's first lines";
 }
 
 }  // namespace
