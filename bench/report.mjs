@@ -112,6 +112,19 @@ for (const name of names.filter((n) => n.startsWith('sway'))) {
   if (n !== undefined) goal(`${name}: sway step + ${name.startsWith('sway-poses') ? 'skin poses' : 'node positions'} ≤ 50 ns per internode (native)`, `${n.toFixed(1)} ns`, n <= 50);
   if (n !== undefined && w !== undefined) goal(`${name}: sway WASM ≤ 2× native`, `${w.toFixed(1)} ns, ${(w / n).toFixed(2)}×`, w <= 2 * n);
 }
+// Mesh geometry (core/geom, issue 15): BVH build per triangle, query growth 4 k → 4 M, BVH vs brute force.
+for (const name of ['geom/bvh-build/wall-1m', 'geom/bvh-build-cold/wall-4m']) {
+  const n = perUnit(native.get(name));
+  if (n !== undefined) goal(`${name}: build ≤ 0.5 s per M triangles (native)`, `${(n / 1000).toFixed(2)} s/M`, n <= 500);
+}
+for (const kind of ['closest', 'segment']) {
+  const small = perUnit(native.get(`geom/${kind}/wall-4k`)), large = perUnit(native.get(`geom/${kind}/wall-4m`));
+  if (small !== undefined && large !== undefined)
+    goal(`geom/${kind}: query cost grows ≤ 3× from 4 k to 4 M triangles (native)`, `${fmt(small)} → ${fmt(large)} ns: ${(large / small).toFixed(1)}×`, large <= 3 * small);
+  const bvh = perUnit(native.get(`geom/${kind}/wall-262k`)), linear = perUnit(native.get(`geom/${kind}-linear/wall-262k`));
+  if (bvh !== undefined && linear !== undefined)
+    goal(`geom/${kind}: BVH ≥ 100× brute force at 262 k triangles (native)`, `${(linear / bvh).toFixed(0)}×`, linear >= 100 * bvh);
+}
 const goalsTable = goals.length ? `| goal | measured | |\n|---|---|---|\n${goals.join('\n')}\n` : '';
 
 // Per-sub-model split like thesis table 2.3, from the CLI's --stats (native).

@@ -3,12 +3,17 @@
 // collisions, moss photons). Does not: answer queries (closest_point.h, ray_cast.h do), refit or
 // update after the mesh changes (build again), or own the mesh.
 //
-// Why no library: Debian has libembree-dev (Embree 3: compiled x86 SIMD kernels, no Emscripten
-// build), libbullet-dev (compiled .so; btDbvt is a dynamic AABB tree) and libcgal-dev (AABB_tree
-// is header-only but needs Boost and GMP/MPFR, which the WASM build does not have);
-// `apt-cache search bvh` finds no BVH library, and no well-kept header-only BVH builds with both
-// g++ 12 and em++ 3.1.6 here. Niwa needs the same tree and the same answers natively and in WASM,
-// so this is a small one, checked against the brute-force twins in linear_queries.h.
+// Why no library (apt-cache, 2026-12-01; none of these is installed here, none was built):
+// libembree-dev (Embree 3: compiled x86 SIMD kernels, no Emscripten build), libbullet-dev
+// (compiled .so; btDbvt is a dynamic AABB tree) and libcgal-dev 5.5.1 (AABB_tree is header-only
+// but needs the Boost headers, and GMP unless CGAL_DISABLE_GMP; not tried under em++ 3.1.6).
+// `apt-cache search bvh` finds no BVH library. Beyond the build, the callers need what none of them
+// gives: the very per-triangle routine and lowest-index tie rule of the brute-force twins (same
+// triangle, same distance bits), segment any-hit with a stated edge epsilon, and visit counts
+// (QueryStats). So this is a small one, checked against linear_queries.h on every test mesh.
+//
+// Build: centroids binned along the widest axis (Wald 2007), SAH cost N_L·A_L + N_R·A_R per bin
+// boundary, leaves of at most max_leaf_triangles.
 //
 // Determinism: the build is single-threaded, in a fixed order (recursive, left child first),
 // with float bounds and double SAH costs; ties between split candidates go to the lowest axis and
@@ -27,6 +32,7 @@ namespace niwa::geom {
 struct BvhOptions {
   int bins = 16;               // SAH bins per axis, clamped to [2, 64]
   int max_leaf_triangles = 4;  // a node with at most this many triangles stays a leaf; [1, 16]
+  bool all_axes = false;       // SAH over all three axes, not only the widest (slower build)
 };
 
 // One node, 32 bytes. A leaf (count > 0) holds triangles order[first .. first + count); an inner

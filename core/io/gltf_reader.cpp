@@ -107,6 +107,7 @@ std::string DetachDracoIndices(const std::string& bytes, bool binary, DracoIndex
   } else {
     json_text = bytes;
   }
+  if (json_text.find(kDraco) == std::string::npos) return "";  // the common case: parse once
   nlohmann::json j = nlohmann::json::parse(json_text, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("meshes") || !j["meshes"].is_array() ||
       !j.contains("accessors") || !j["accessors"].is_array()) {
@@ -158,6 +159,7 @@ struct LocalPrimitive {
   std::vector<glm::dvec3> positions;
   std::vector<glm::dvec3> normals;  // empty or one per position
   std::vector<glm::vec2> uvs;       // empty or one per position
+  std::vector<glm::vec4> colors;    // empty or one per position (COLOR_0)
   std::vector<uint32_t> indices;    // the primitive's index list (or 0..n-1), before mode assembly
 };
 
@@ -200,7 +202,8 @@ class Reader {
   const DracoIndexCounts& draco_counts_;
   MeshReadStats* stats_;
   geom::TriMesh mesh_;
-  bool all_normals_ = true, all_uvs_ = true;
+  bool all_normals_ = true, all_uvs_ = true, any_color_ = false;
+  std::vector<float> colors_, materials_;  // per vertex: kColorAttribute, kMaterialAttribute
   std::size_t triangle_primitives_ = 0, line_point_primitives_ = 0;
   std::vector<bool> on_path_;  // nodes on the current root-to-node path (cycle check)
   bool counting_ = false;      // first pass: count triangles only
@@ -358,10 +361,12 @@ Status Reader::ReadDraco(int mesh, int prim, const tinygltf::Value& ext, LocalPr
   }
   const draco::PointAttribute* nrm = attribute("NORMAL");
   const draco::PointAttribute* uv = attribute("TEXCOORD_0");
+  const draco::PointAttribute* color = attribute("COLOR_0");
   const std::size_t n = dm->num_points();
   local->positions.resize(n);
   if (nrm != nullptr && nrm->num_components() >= 3) local->normals.resize(n);
   if (uv != nullptr && uv->num_components() >= 2) local->uvs.resize(n);
+  if (color != nullptr && color->num_components() >= 3) local->colors.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     draco::PointIndex point(static_cast<uint32_t>(i));
     float v[3];
@@ -374,6 +379,12 @@ Status Reader::ReadDraco(int mesh, int prim, const tinygltf::Value& ext, LocalPr
     if (!local->uvs.empty()) {
       uv->ConvertValue<float>(uv->mapped_index(point), 2, v);
       local->uvs[i] = glm::vec2(v[0], v[1]);
+    }
+    if (!local->colors.empty()) {
+      float c[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+      color->ConvertValue<float>(color->mapped_index(point), color->num_components() >= 4 ? 4 : 3,
+                                 c);
+      local->colors[i] = glm::vec4(c[0], c[1], c[2], c[3]);
     }
   }
   local->indices.resize(static_cast<std::size_t>(dm->num_faces()) * 3);
@@ -436,6 +447,20 @@ Status Reader::ReadPrimitive(int mesh, int prim, LocalPrimitive* local) {
       }
     }
   }
+  auto color_it = p.attributes.find("COLOR_0");
+  if (color_it != p.attributes.end()) {
+    AccessorView color;
+    NIWA_RETURN_IF_ERROR(View(color_it->second, label + " COLOR_0", &color));
+    if ((color.components == 3 || color.components == 4) && color.count == pos.count) {
+      local->colors.resize(pos.count);
+      for (std::size_t i = 0; i < pos.count; ++i) {
+        local->colors[i] = glm::vec4(
+            static_cast<float>(Component(color, i, 0)), static_cast<float>(Component(color, i, 1)),
+            static_cast<float>(Component(color, i, 2)),
+            color.components == 4 ? static_cast<float>(Component(color, i, 3)) : 1.0f);
+      }
+    }
+  }
   if (p.indices >= 0) {
     AccessorView idx;
     NIWA_RETURN_IF_ERROR(View(p.indices, label + " indices", &idx));
@@ -479,6 +504,10 @@ Status Reader::AddMesh(int mesh_index, const glm::dmat4& world) {
     }
     LocalPrimitive local;
     NIWA_RETURN_IF_ERROR(ReadPrimitive(mesh_index, prim, &local));
+    const int material =
+        p.material >= 0 && static_cast<std::size_t>(p.material) < model_.materials.size()
+            ? p.material
+            : -1;
     ++triangle_primitives_;
     if (stats_ != nullptr) ++stats_->primitives;
     const std::string label = MeshLabel(mesh_index, prim);
@@ -533,7 +562,11 @@ Status Reader::AddMesh(int mesh_index, const glm::dmat4& world) {
       }
       mesh_.normals.push_back(glm::vec3(wn));
       mesh_.uvs.push_back(local.uvs.empty() ? glm::vec2(0.0f) : local.uvs[i]);
+      const glm::vec4 c = local.colors.empty() ? glm::vec4(1.0f) : local.colors[i];
+      colors_.insert(colors_.end(), {c.x, c.y, c.z, c.w});
+      materials_.push_back(static_cast<float>(material));
     }
+    if (!local.colors.empty()) any_color_ = true;
     if (local.normals.empty()) all_normals_ = false;
     if (local.uvs.empty()) all_uvs_ = false;
     for (std::size_t t = 0; t + 2 < tris.size(); t += 3) {
@@ -654,6 +687,25 @@ Status Reader::Run(geom::TriMesh* out) {
   if (mesh_.indices.empty()) return Error("every triangle is degenerate (zero area)");
   if (!all_normals_) mesh_.normals.clear();
   if (!all_uvs_) mesh_.uvs.clear();
+  if (!model_.materials.empty()) {
+    mesh_.attributes.push_back({kMaterialAttribute, 1, std::move(materials_)});
+  }
+  if (any_color_) mesh_.attributes.push_back({kColorAttribute, 4, std::move(colors_)});
+  if (stats_ != nullptr) {
+    for (const tinygltf::Material& m : model_.materials) {
+      MeshMaterial material;
+      material.name = m.name;
+      const std::vector<double>& f = m.pbrMetallicRoughness.baseColorFactor;
+      if (f.size() == 4) {
+        material.base_color = glm::vec4(static_cast<float>(f[0]), static_cast<float>(f[1]),
+                                        static_cast<float>(f[2]), static_cast<float>(f[3]));
+      }
+      if (m.extras.IsObject() && m.extras.Has("niwa_ivy") && m.extras.Get("niwa_ivy").IsBool()) {
+        material.ivy_support = m.extras.Get("niwa_ivy").Get<bool>();
+      }
+      stats_->materials.push_back(std::move(material));
+    }
+  }
   *out = std::move(mesh_);
   return Status::Ok();
 }

@@ -5,12 +5,30 @@
 
 #include <cstddef>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <string>
+#include <vector>
 
 #include "base/status.h"
 #include "geom/tri_mesh.h"
 
 namespace niwa::io {
+
+// A glTF material as the studies need it: its name (ivy: a name starting with "noivy" marks an
+// obstacle; moss: "humus"/"sand"/"asphalt" set the geology), baseColorFactor, and extras.niwa_ivy
+// (false: obstacle, not support). Textures are not read.
+struct MeshMaterial {
+  std::string name;
+  glm::vec4 base_color{1.0f};  // linear RGBA, glTF default (1, 1, 1, 1)
+  bool ivy_support = true;     // extras.niwa_ivy, default true
+};
+
+// Per-vertex attributes the glTF reader adds to the TriMesh (vertices are never shared across
+// primitives, so a vertex's material is its triangles' material):
+inline constexpr const char* kMaterialAttribute =
+    "material";  // 1 float: index in materials, -1 none
+inline constexpr const char* kColorAttribute =
+    "color";  // 4 floats: COLOR_0 RGBA, (1,1,1,1) if absent
 
 // What a reader saw beside the triangles it kept.
 struct MeshReadStats {
@@ -19,6 +37,8 @@ struct MeshReadStats {
   std::size_t skipped_points_lines = 0;  // glTF POINTS/LINES primitives, OBJ `p`/`l` lines
   std::size_t draco_primitives = 0;      // primitives decoded from KHR_draco_mesh_compression
   std::size_t degenerate = 0;  // triangles skipped: a repeated vertex or zero area in world space
+  // glTF materials in file order (kMaterialAttribute indexes them); empty for OBJ.
+  std::vector<MeshMaterial> materials;
 };
 
 // Limits every reader enforces, each named in its error line.

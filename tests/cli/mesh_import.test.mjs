@@ -4,6 +4,8 @@ import { spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { createRequire } from 'node:module';
+import { pathToFileURL } from 'node:url';
 import draco3d from 'draco3d';
 import { importMesh, parseGlb, dracoPrimitiveCount } from '../../web/mesh/mesh_import.js';
 
@@ -23,6 +25,9 @@ const run = (bin, args) => {
 const haveWasm = existsSync(wasm);
 check(haveWasm, `WASM CLI at ${wasm}`);
 const draco = await draco3d.createDecoderModule({});
+const require = createRequire(import.meta.url);
+const validatorModule = await import(pathToFileURL(require.resolve('gltf-validator')).href);
+const validator = validatorModule.default ?? validatorModule;
 const dir = mkdtempSync(join(tmpdir(), 'niwa-import-'));
 
 for (const file of ['draco.glb', 'rock1.glb']) {
@@ -31,6 +36,10 @@ for (const file of ['draco.glb', 'rock1.glb']) {
   const { json } = parseGlb(out.bytes);
   check(out.dracoPrimitives === 1 && dracoPrimitiveCount(json) === 0 && !(json.extensionsRequired ?? []).includes('KHR_draco_mesh_compression'),
     `${file}: 1 Draco primitive decoded, extension gone (required now ${JSON.stringify(json.extensionsRequired ?? [])})`);
+  // Khronos' validator: no errors in the rewritten file (images are not decoded: webp is not its concern here).
+  const report = await validator.validateBytes(new Uint8Array(out.bytes), { maxIssues: 50 });
+  const errors = (report.issues.messages ?? []).filter((m) => m.severity === 0);
+  check(report.issues.numErrors === 0, `${file}: gltf-validator on the rewritten file: ${report.issues.numErrors} errors ${JSON.stringify(errors.slice(0, 3).map((m) => m.code + ' ' + m.pointer))}`);
   const plain = join(dir, file.replace('.glb', '_plain.glb'));
   writeFileSync(plain, out.bytes);
   const queries = [['stats'], ['closest', '--point', '0.3,0.9,0.2'], ['closest', '--point', '-2,4,1'],
@@ -44,6 +53,11 @@ for (const file of ['draco.glb', 'rock1.glb']) {
       check(w === want, `${file} ${q.join(' ')}: WASM on the JS-decoded file == native on the original`);
     }
   }
+}
+// The hand-made valid test meshes are valid glTF themselves (so the reader tests test real glTF).
+for (const file of ['hierarchy.glb', 'draco.glb', 'draco_twin.glb', 'embedded.gltf']) {
+  const report = await validator.validateBytes(new Uint8Array(readFileSync(join(data, file))), { maxIssues: 50 });
+  check(report.issues.numErrors === 0, `${file}: gltf-validator ${report.issues.numErrors} errors, ${report.issues.numWarnings} warnings`);
 }
 // A file without Draco comes back byte for byte.
 const grass = readFileSync(join(data, 'grass.glb'));

@@ -68,8 +68,9 @@ TEST(Bvh, StructureOnEveryTestMesh) {
   CheckStructure(Subdivide(MakeBox({2, 1, 3}), 3));
   CheckStructure(test::RandomSoup(3000, 7));
   CheckStructure(test::ThinDegenerateMesh(3));
-  CheckStructure(MakePlane(4, 4, 30, 30), BvhOptions{8, 1});
-  CheckStructure(MakePlane(4, 4, 30, 30), BvhOptions{2, 16});
+  CheckStructure(MakePlane(4, 4, 30, 30), BvhOptions{8, 1, false});
+  CheckStructure(test::RandomSoup(3000, 8), BvhOptions{16, 4, true});
+  CheckStructure(MakePlane(4, 4, 30, 30), BvhOptions{2, 16, false});
 }
 
 TEST(Bvh, EmptyAndSingleTriangle) {
@@ -114,8 +115,8 @@ TEST(Bvh, SameMeshSameTreeBitForBit) {
 
 TEST(Bvh, OptionsAreClamped) {
   TriMesh m = test::RandomSoup(500, 2);
-  Bvh wild = Bvh::Build(m, BvhOptions{-5, 1000});
-  Bvh clamped = Bvh::Build(m, BvhOptions{2, 16});
+  Bvh wild = Bvh::Build(m, BvhOptions{-5, 1000, false});
+  Bvh clamped = Bvh::Build(m, BvhOptions{2, 16, false});
   EXPECT_EQ(wild.order(), clamped.order());
   EXPECT_EQ(wild.node_count(), clamped.node_count());
 }
@@ -136,6 +137,15 @@ TEST(Bvh, OracleCatchesASkippedSubtree) {
   EXPECT_GT(bad.closest_mismatch, 0);
   EXPECT_GT(bad.ray_mismatch, 0);
   EXPECT_GT(bad.segment_mismatch, 0);
+}
+
+TEST(Bvh, AllAxesTreesAgreeWithLinearToo) {
+  for (const test::OracleCase& c : test::OracleMeshes()) {
+    Bvh bvh = Bvh::Build(c.mesh, BvhOptions{16, 4, true});
+    test::OracleCounts counts = test::CompareWithLinear(c.mesh, bvh, 500, 300);
+    EXPECT_EQ(counts.closest_mismatch + counts.ray_mismatch + counts.segment_mismatch, 0)
+        << c.name << ": " << counts.first_mismatch;
+  }
 }
 
 TEST(Bvh, DepthAndNodeCountStaySmallOnALargeWall) {

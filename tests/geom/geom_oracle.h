@@ -104,8 +104,14 @@ inline OracleCounts CompareWithLinear(const geom::TriMesh& mesh, const geom::Bvh
     }
 
     glm::vec3 a = RandomPoint(rng, outer);
-    glm::vec3 b = i % 2 ? a + (target() - a) * UniformF(rng, 0.5, 1.5)
-                        : a + RandomDirection(rng) * UniformF(rng, 0.0, scale * 0.5);
+    glm::vec3 b;
+    if (i % 2) {
+      glm::vec3 t = target();
+      b = a + (t - a) * UniformF(rng, 0.5, 1.5);
+    } else {
+      glm::vec3 d = RandomDirection(rng);
+      b = a + d * UniformF(rng, 0.0, scale * 0.5);
+    }
     bool sh = geom::SegmentHits(mesh, bvh, a, b);
     bool sl = geom::SegmentHitsLinear(mesh, a, b);
     c.segment_hits += sl ? 1 : 0;

@@ -218,6 +218,34 @@ TEST(GltfReader, HostileFilesGiveOneLine) {
   EXPECT_EQ(line.find('\n'), std::string::npos) << line;
 }
 
+TEST(GltfReader, MaterialsAndVertexColours) {
+  MeshReadStats stats;
+  Result<geom::TriMesh> mesh = ReadGltfFile(MeshPath("materials.glb"), &stats);
+  ASSERT_TRUE(mesh.ok()) << mesh.status().Line();
+  ASSERT_EQ(stats.materials.size(), 2u);
+  EXPECT_EQ(stats.materials[0].name, "noivy_glass");
+  EXPECT_FALSE(stats.materials[0].ivy_support);
+  EXPECT_EQ(stats.materials[0].base_color, glm::vec4(0.5f, 0.625f, 0.75f, 0.875f));
+  EXPECT_EQ(stats.materials[1].name, "humus");
+  EXPECT_TRUE(stats.materials[1].ivy_support);
+  EXPECT_EQ(stats.materials[1].base_color, glm::vec4(1.0f));
+  const geom::VertexAttribute* material = mesh->FindAttribute(kMaterialAttribute);
+  const geom::VertexAttribute* color = mesh->FindAttribute(kColorAttribute);
+  ASSERT_NE(material, nullptr);
+  ASSERT_NE(color, nullptr);
+  ASSERT_EQ(mesh->vertex_count(), 9u);
+  ASSERT_EQ(material->values.size(), 9u);
+  ASSERT_EQ(color->values.size(), 36u);
+  // Vertices 0-2 glass (material 0, no COLOR_0: white), 3-5 soil (material 1, normalized bytes
+  // 255 -> 1, 51 -> 0.2), 6-8 no material (-1).
+  const std::vector<float> want_material = {0, 0, 0, 1, 1, 1, -1, -1, -1};
+  EXPECT_EQ(material->values, want_material);
+  for (int k = 0; k < 12; ++k) EXPECT_EQ(color->values[static_cast<std::size_t>(k)], 1.0f);
+  const std::vector<float> soil(color->values.begin() + 12, color->values.begin() + 24);
+  const std::vector<float> want_soil = {1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 0.2f};
+  EXPECT_EQ(soil, want_soil);
+}
+
 TEST(GltfReader, MeshFileDispatchesByExtension) {
   Result<geom::TriMesh> glb = ReadMeshFile(MeshPath("hierarchy.glb"));
   ASSERT_TRUE(glb.ok()) << glb.status().Line();

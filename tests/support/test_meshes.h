@@ -17,15 +17,26 @@ inline float UniformF(Pcg32& rng, double lo, double hi) {
   return static_cast<float>(rng.Uniform(lo, hi));
 }
 
+// Every helper draws one number per statement: argument evaluation order differs between g++ and
+// clang (em++), and the native and WASM tests must see the same inputs.
+inline glm::vec3 RandomVec(Pcg32& rng, double lo, double hi) {
+  float x = UniformF(rng, lo, hi);
+  float y = UniformF(rng, lo, hi);
+  float z = UniformF(rng, lo, hi);
+  return glm::vec3(x, y, z);
+}
+
 inline glm::vec3 RandomPoint(Pcg32& rng, const geom::Bounds3& box) {
-  return glm::vec3(UniformF(rng, box.min.x, box.max.x), UniformF(rng, box.min.y, box.max.y),
-                   UniformF(rng, box.min.z, box.max.z));
+  float x = UniformF(rng, box.min.x, box.max.x);
+  float y = UniformF(rng, box.min.y, box.max.y);
+  float z = UniformF(rng, box.min.z, box.max.z);
+  return glm::vec3(x, y, z);
 }
 
 // Uniform on the unit sphere by rejection from the cube (no std distributions).
 inline glm::vec3 RandomDirection(Pcg32& rng) {
   for (;;) {
-    glm::vec3 v(UniformF(rng, -1, 1), UniformF(rng, -1, 1), UniformF(rng, -1, 1));
+    glm::vec3 v = RandomVec(rng, -1, 1);
     float l2 = glm::dot(v, v);
     if (l2 > 1e-4f && l2 <= 1.0f) return v / std::sqrt(l2);
   }
@@ -37,11 +48,10 @@ inline geom::TriMesh RandomSoup(int count, uint64_t seed, float size = 0.3f) {
   Pcg32 rng(seed);
   geom::TriMesh m;
   for (int i = 0; i < count; ++i) {
-    glm::vec3 c(UniformF(rng, -1, 1), UniformF(rng, -1, 1), UniformF(rng, -1, 1));
+    glm::vec3 c = RandomVec(rng, -1, 1);
     for (int k = 0; k < 3; ++k) {
       m.indices.push_back(static_cast<uint32_t>(m.positions.size()));
-      m.positions.push_back(c + glm::vec3(UniformF(rng, -size, size), UniformF(rng, -size, size),
-                                          UniformF(rng, -size, size)));
+      m.positions.push_back(c + RandomVec(rng, -size, size));
     }
   }
   return m;
@@ -53,21 +63,22 @@ inline geom::TriMesh RandomSoup(int count, uint64_t seed, float size = 0.3f) {
 inline geom::TriMesh ThinDegenerateMesh(uint64_t seed) {
   Pcg32 rng(seed);
   geom::TriMesh m;
-  for (int i = 0; i < 60; ++i)
-    m.positions.push_back(
-        glm::vec3(UniformF(rng, -1, 1), UniformF(rng, -1, 1), UniformF(rng, -1, 1)));
+  for (int i = 0; i < 60; ++i) m.positions.push_back(RandomVec(rng, -1, 1));
   auto vertex = [&]() { return static_cast<uint32_t>(rng.NextU32() % 60u); };
   auto add = [&](uint32_t a, uint32_t b, uint32_t c) {
     m.indices.insert(m.indices.end(), {a, b, c});
   };
   for (int i = 0; i < 150; ++i) {
-    uint32_t a = vertex(), b = vertex(), c = vertex();
+    uint32_t a = vertex();
+    uint32_t b = vertex();
+    uint32_t c = vertex();
     add(a, b, c);
     if (i % 5 == 0) add(b, c, a);  // duplicate, rotated
     if (i % 7 == 0) add(a, a, b);  // repeated index
   }
   for (int i = 0; i < 40; ++i) {  // slivers and collinear triangles from new vertices
-    glm::vec3 p = m.positions[vertex()], q = m.positions[vertex()];
+    glm::vec3 p = m.positions[vertex()];
+    glm::vec3 q = m.positions[vertex()];
     uint32_t ip = static_cast<uint32_t>(m.positions.size());
     m.positions.push_back(p);
     m.positions.push_back(q);

@@ -25,7 +25,7 @@ class Gltf {
     return this.json.bufferViews.length - 1;
   }
   accessor(array, componentType, type, extra = {}) {
-    const n = { SCALAR: 1, VEC2: 2, VEC3: 3 }[type];
+    const n = { SCALAR: 1, VEC2: 2, VEC3: 3, VEC4: 4 }[type];
     const a = { bufferView: this.view(array), componentType, count: array.length / n, type, ...extra };
     this.json.accessors.push(a);
     return this.json.accessors.length - 1;
@@ -231,6 +231,26 @@ write('not_gltf.glb', Buffer.from('This is a text file, not a mesh.\n'));
   g.node({ mesh: tri, children: [0] });
   g.json.scenes = [{ nodes: [0] }];
   write('cycle.glb', g.glb());
+}
+
+// materials.glb: an obstacle material (name noivy_glass, extras.niwa_ivy false), a humus material with COLOR_0 as
+// normalized unsigned bytes, and a mesh without a material.
+{
+  const g = new Gltf();
+  const tri = [0, 0, 0, 1, 0, 0, 0, 1, 0];
+  g.json.materials = [
+    { name: 'noivy_glass', pbrMetallicRoughness: { baseColorFactor: [0.5, 0.625, 0.75, 0.875] }, extras: { niwa_ivy: false } },
+    { name: 'humus' },
+  ];
+  g.mesh('glass', [{ attributes: { POSITION: g.positions(tri) }, material: 0 }]);
+  const color = g.accessor(new Uint8Array([255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 51]), 5121, 'VEC4', { normalized: true });
+  g.mesh('soil', [{ attributes: { POSITION: g.positions(tri), COLOR_0: color }, material: 1 }]);
+  g.mesh('bare', [{ attributes: { POSITION: g.positions(tri) } }]);
+  g.node({ mesh: 0 });
+  g.node({ mesh: 1, translation: [0, 0, 1] });
+  g.node({ mesh: 2, translation: [0, 0, 2] });
+  g.json.scenes = [{ nodes: [0, 1, 2] }];
+  write('materials.glb', g.glb());
 }
 
 // OBJ: a unit cube's top as a quad (fan-triangulated), a pentagon with negative indices, the v/vt/vn forms.
