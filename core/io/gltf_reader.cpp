@@ -15,14 +15,7 @@
 #include <utility>
 #include <vector>
 
-// Declarations only: TINYGLTF_IMPLEMENTATION is defined once, in the glTF writer's .cpp.
-#define TINYGLTF_NO_STB_IMAGE
-#define TINYGLTF_NO_STB_IMAGE_WRITE
-#define TINYGLTF_NO_EXTERNAL_IMAGE
-#ifndef TINYGLTF_USE_CPP14
-#define TINYGLTF_USE_CPP14
-#endif
-#include <tiny_gltf.h>
+#include "io/tinygltf.h"  // declarations only: the implementation is io/tinygltf_impl.cpp
 
 #ifdef NIWA_HAVE_DRACO
 #include <draco/compression/decode.h>

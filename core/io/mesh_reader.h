@@ -1,6 +1,6 @@
 // Mesh input shared by the glTF and OBJ readers: read statistics, limits, and ReadMeshFile, which
 // picks the reader by extension (.glb, .gltf, .obj). Does not: build a BVH, weld vertices across
-// primitives, read materials or textures, or write meshes (io/gltf_export does).
+// primitives, read materials or textures, or write meshes (io/gltf_writer does).
 #pragma once
 
 #include <cstddef>

@@ -3,32 +3,53 @@
 // the embed dialog. A study page module wires only its own controls on top of these.
 // Does not: talk to the worker, keep history (hash_history.js), or draw (web/gl, web/<study>).
 
-// The studies' pages, in nav order: the ONE list of them. A study's entry is marked `live` in the
-// commit that adds its page (public/<page>), so the nav never links a page that does not exist.
+// The studies' pages, in nav order: the ONE list of them (the five papers' studies, plus the grove).
+// The tree and grove pages always exist; the others are linked once their page is served (a HEAD
+// request per page finds out), so adding a study's page needs no edit here.
 export const STUDIES = [
-  { id: 'tree', title: 'Tree', page: 'index.html', live: true },
-  { id: 'grove', title: 'Grove', page: 'grove.html', live: true },
-  { id: 'ivy', title: 'Ivy', page: 'ivy.html', live: false },
-  { id: 'terrain', title: 'Terrain', page: 'terrain.html', live: false },
-  { id: 'moss', title: 'Moss', page: 'moss.html', live: false },
-  { id: 'bark', title: 'Bark', page: 'bark.html', live: false },
+  { id: 'tree', title: 'Tree', page: 'index.html', always: true },
+  { id: 'grove', title: 'Grove', page: 'grove.html', always: true },
+  { id: 'ivy', title: 'Ivy', page: 'ivy.html' },
+  { id: 'terrain', title: 'Terrain', page: 'terrain.html' },
+  { id: 'moss', title: 'Moss', page: 'moss.html' },
+  { id: 'bark', title: 'Bark', page: 'bark.html' },
 ];
 
-// Fills `nav` (a <nav> element) with links to the live studies' pages; `current` (a study id) is
-// marked aria-current. Links are relative to the page's folder (public/).
-export function mountStudyNav(nav, current) {
+async function pageServed(page) {
+  try {
+    const response = await fetch(page, { method: 'HEAD', cache: 'no-cache' });
+    return response.ok;
+  } catch {
+    return false;
+  }
+}
+
+// Fills `nav` (a <nav> element) with links to the studies' pages that exist; `current` (a study
+// id) is marked aria-current. Links are relative to the page's folder (public/). Resolves once the
+// nav is complete.
+export async function mountStudyNav(nav, current) {
   if (!nav) return;
   const list = document.createElement('ul');
-  for (const study of STUDIES.filter((s) => s.live)) {
-    const item = document.createElement('li');
-    const link = document.createElement('a');
-    link.href = study.page === 'index.html' ? './' : study.page;
-    link.textContent = study.title;
-    if (study.id === current) link.setAttribute('aria-current', 'page');
-    item.append(link);
-    list.append(item);
-  }
+  const draw = (shown) => {
+    list.replaceChildren();
+    for (const study of STUDIES.filter((s) => shown.has(s.id))) {
+      const item = document.createElement('li');
+      const link = document.createElement('a');
+      link.href = study.page === 'index.html' ? './' : study.page;
+      link.textContent = study.title;
+      if (study.id === current) link.setAttribute('aria-current', 'page');
+      item.append(link);
+      list.append(item);
+    }
+  };
+  const shown = new Set(STUDIES.filter((s) => s.always || s.id === current).map((s) => s.id));
+  draw(shown);
   nav.replaceChildren(list);
+  const probes = STUDIES.filter((s) => !shown.has(s.id)).map(async (s) => {
+    if (await pageServed(s.page)) shown.add(s.id);
+  });
+  await Promise.all(probes);
+  draw(shown);
 }
 
 // Named sources of notice lines shown together in one element (textContent only).

@@ -8,7 +8,7 @@ import { copyView, takeBuffers } from './transfer.js';
 const yieldToEvents = () => new Promise((resolve) => setTimeout(resolve, 0));
 
 // ctx: {post(msg, transfer), isLatest(client, id)} from the router.
-export function createTreeHandler(Module, ctx) {
+export function createHandler(Module, ctx) {
   const { post, isLatest } = ctx;
   const paramTable = JSON.parse(Module.paramTableJson());
   // Rows whose edits change the grown tree (stage grow or mesh; rows without a stage too).

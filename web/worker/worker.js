@@ -5,15 +5,16 @@
 // Protocol (init, then update messages; buffers transferred, never copied twice): ./protocol.js.
 // Does not: know any study's messages (web/worker/<study>_handler.js do).
 import { REQUEST_TYPES } from './protocol.js';
-import { createTreeHandler } from './tree_handler.js';
 
 const MODULE_URL = new URL('../../wasm/niwa_web.js', import.meta.url).href;
 
-// Study -> handler factory (Module, ctx) -> {superseding, ready(msg), messages: {type: fn(msg, client)}}.
-const STUDIES = { tree: createTreeHandler };
+// A study's handler is the module ./<study>_handler.js, loaded on its first message: its
+// createHandler(Module, ctx) returns {superseding, ready(msg), messages: {type: fn(msg, client)}}.
+// Adding a study adds that file; nothing here changes.
+const STUDY_NAME = /^[a-z][a-z_]{0,31}$/;
 
 let modulePromise = null;
-const handlers = new Map();  // study -> handler (created once the module is loaded)
+const handlers = new Map();  // study -> promise of its handler (created once the module is loaded)
 const latest = new Map();    // client -> id of its newest superseding request
 
 function loadModule() {
@@ -34,8 +35,14 @@ const ctx = {
 };
 
 async function handlerFor(study) {
-  if (!Object.hasOwn(STUDIES, study)) throw new Error(`unknown study '${study.slice(0, 40)}', must be one of ${Object.keys(STUDIES).join(', ')}`);
-  if (!handlers.has(study)) handlers.set(study, STUDIES[study](await loadModule(), ctx));
+  if (!handlers.has(study)) {
+    if (!STUDY_NAME.test(study)) throw new Error(`unknown study '${study.slice(0, 40)}': must be a lower-case name`);
+    const loaded = import(`./${study}_handler.js`).then(
+      async (module) => module.createHandler(await loadModule(), ctx),
+      () => { throw new Error(`unknown study '${study}': no web/worker/${study}_handler.js`); });
+    handlers.set(study, loaded);
+    loaded.catch(() => handlers.delete(study));
+  }
   return handlers.get(study);
 }
 
