@@ -170,7 +170,7 @@ std::vector<Workload> MakeWorkloads() {
   for (bool poses : {false, true}) {
     for (int years : {6, 10, 15}) all.push_back(SwayWorkload(years, poses));
   }
-  for (Workload& w : GeomWorkloads()) all.push_back(std::move(w));
+  for (Workload& w : AreaWorkloads()) all.push_back(std::move(w));
   return all;
 }
 

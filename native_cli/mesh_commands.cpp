@@ -17,7 +17,7 @@
 #include "geom/primitives.h"
 #include "geom/ray_cast.h"
 #include "io/mesh_reader.h"
-#include "params/param_table.h"
+#include "params/param_text.h"
 
 namespace niwa::cli {
 namespace {

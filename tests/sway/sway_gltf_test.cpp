@@ -17,6 +17,7 @@
 #include "tree/growth.h"
 #include "tree/mesh.h"
 #include "tree/presets.h"
+#include "tree/tree_params.h"
 
 namespace niwa {
 namespace {
@@ -36,11 +37,11 @@ Tree Grow(const std::string& preset, int years) {
 }
 
 SwayParams ShortGust() {
-  ParamSet ps;
-  EXPECT_EQ(ps.Set(ParamId::kWindSpeed, 8.0), "");
-  EXPECT_EQ(ps.Set(ParamId::kGustOn, 0.0), "");
-  EXPECT_EQ(ps.Set(ParamId::kGustOff, 5.0), "");
-  EXPECT_EQ(ps.Set(ParamId::kSwayDuration, 1.0), "");
+  TreeParams ps;
+  EXPECT_EQ(ps.Set(ParamId::kWindSpeed, 8.0).Line(), "");
+  EXPECT_EQ(ps.Set(ParamId::kGustOn, 0.0).Line(), "");
+  EXPECT_EQ(ps.Set(ParamId::kGustOff, 5.0).Line(), "");
+  EXPECT_EQ(ps.Set(ParamId::kSwayDuration, 1.0).Line(), "");
   return SwayParams(ps);
 }
 

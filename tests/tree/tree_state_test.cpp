@@ -135,7 +135,7 @@ TEST(TreeState, FlagsJsonAndHashResolveToTheSameState) {
             ComputeStats(GrowTree(by_setters)).internodes);
 }
 
-// What web/app.js sends today: numbers or numeric strings, booleans for 0/1 rows.
+// What the tree page (web/tree/tree_page.js) sends: numbers or numeric strings, booleans for 0/1 rows.
 TEST(TreeState, TheStateJsonOfThePageReadsAsBefore) {
   TreeState state;
   ASSERT_EQ(ApplyStateJson(R"({"preset":"maple","seed":"12","years":"4",
