@@ -6,20 +6,14 @@
 
 #include <string>
 
+#include "support/grow.h"
 #include "tree/growth.h"
 #include "tree/presets.h"
 
 namespace niwa {
 namespace {
 
-Tree Grow(const std::string& preset, int years) {
-  GrowRequest r;
-  r.preset = preset;
-  r.params = FindPreset(preset)->params;
-  r.seed = FindPreset(preset)->seed;
-  r.years = years;
-  return GrowTree(r);
-}
+Tree Grow(const std::string& preset, int years) { return testing::GrowPreset(preset, years); }
 
 // True when clip point (x, y) lies in some tile (half a texel of slack).
 bool InSomeTile(const HybridScene& scene, float x, float y) {

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "math/rotation.h"
+#include "support/grow.h"
 #include "tree/growth.h"
 #include "tree/mesh.h"
 #include "tree/presets.h"
@@ -53,14 +54,7 @@ RenderCamera CameraAt(float distance_m, int width = 512, int height = 512) {
   return c;
 }
 
-Tree Grow(const std::string& preset, int years) {
-  GrowRequest r;
-  r.preset = preset;
-  r.params = FindPreset(preset)->params;
-  r.years = years;
-  r.seed = FindPreset(preset)->seed;
-  return GrowTree(r);
-}
+Tree Grow(const std::string& preset, int years) { return testing::GrowPreset(preset, years); }
 
 TEST(Eq41, ScreenWidthByHand) {
   // d = 0.02 m, R = 10 m, 512 × 512: D = 0.02 · 512 / 20 = 0.512 px.

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "support/glb_parse.h"
+#include "support/grow.h"
 #include "sway/skin.h"
 #include "tree/growth.h"
 #include "tree/mesh.h"
@@ -27,14 +28,7 @@ using testing::Glb;
 using testing::ParseGlb;
 using testing::ReadAccessor;
 
-Tree Grow(const std::string& preset, int years) {
-  GrowRequest r;
-  r.preset = preset;
-  r.params = FindPreset(preset)->params;
-  r.years = years;
-  r.seed = 1;
-  return GrowTree(r);
-}
+Tree Grow(const std::string& preset, int years) { return testing::GrowPreset(preset, years, 1); }
 
 SwayParams ShortGust() {
   TreeParams ps;

@@ -10,6 +10,7 @@
 #include <map>
 #include <string>
 
+#include "support/grow.h"
 #include "tree/growth.h"
 #include "tree/presets.h"
 
@@ -18,14 +19,7 @@ namespace {
 
 constexpr float kScale = 0.01f;  // default cm_to_units
 
-Tree Grow(const std::string& preset, int years) {
-  GrowRequest r;
-  r.preset = preset;
-  r.params = FindPreset(preset)->params;
-  r.years = years;
-  r.seed = 1;
-  return GrowTree(r);
-}
+Tree Grow(const std::string& preset, int years) { return testing::GrowPreset(preset, years, 1); }
 
 glm::vec3 Vec(const std::vector<float>& data, std::size_t vertex) {
   return {data[3 * vertex], data[3 * vertex + 1], data[3 * vertex + 2]};

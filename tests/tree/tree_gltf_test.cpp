@@ -14,6 +14,7 @@
 
 #include "image/png.h"
 #include "support/glb_parse.h"
+#include "support/grow.h"
 #include "tree/growth.h"
 #include "tree/mesh.h"
 #include "tree/presets.h"
@@ -34,14 +35,7 @@ constexpr int kElementArrayBuffer = 34963;
 constexpr int kRepeat = 10497;
 constexpr int kClampToEdge = 33071;
 
-Tree Grow(const std::string& preset, int years) {
-  GrowRequest r;
-  r.preset = preset;
-  r.params = FindPreset(preset)->params;
-  r.years = years;
-  r.seed = 1;
-  return GrowTree(r);
-}
+Tree Grow(const std::string& preset, int years) { return testing::GrowPreset(preset, years, 1); }
 
 // The material's base colour comes from an embedded PNG (bufferView + mimeType) through a texture
 // and sampler; double-sided cut-outs (leaves, flowers) are alpha-masked and clamped, bark repeats.

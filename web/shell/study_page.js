@@ -4,8 +4,8 @@
 // Does not: talk to the worker, keep history (hash_history.js), or draw (web/gl, web/<study>).
 
 // The studies' pages, in nav order: the ONE list of them (the five papers' studies, plus the grove).
-// The tree and grove pages always exist; the others are linked once their page is served (a HEAD
-// request per page finds out), so adding a study's page needs no edit here.
+// The tree and grove pages always exist; the others are linked once public/ holds their page, which
+// the build lists in wasm/studies.json (web/CMakeLists.txt), so adding a study's page needs no edit here.
 export const STUDIES = [
   { id: 'tree', title: 'Tree', page: 'index.html', always: true },
   { id: 'grove', title: 'Grove', page: 'grove.html', always: true },
@@ -15,12 +15,15 @@ export const STUDIES = [
   { id: 'bark', title: 'Bark', page: 'bark.html' },
 ];
 
-async function pageServed(page) {
+const PAGES_URL = new URL('../../wasm/studies.json', import.meta.url);
+
+async function servedPages() {
   try {
-    const response = await fetch(page, { method: 'HEAD', cache: 'no-cache' });
-    return response.ok;
+    const response = await fetch(PAGES_URL, { cache: 'no-cache' });
+    const list = response.ok ? (await response.json()).pages : [];
+    return new Set(Array.isArray(list) ? list : []);
   } catch {
-    return false;
+    return new Set();
   }
 }
 
@@ -45,10 +48,8 @@ export async function mountStudyNav(nav, current) {
   const shown = new Set(STUDIES.filter((s) => s.always || s.id === current).map((s) => s.id));
   draw(shown);
   nav.replaceChildren(list);
-  const probes = STUDIES.filter((s) => !shown.has(s.id)).map(async (s) => {
-    if (await pageServed(s.page)) shown.add(s.id);
-  });
-  await Promise.all(probes);
+  const pages = await servedPages();
+  for (const s of STUDIES) if (pages.has(s.page)) shown.add(s.id);
   draw(shown);
 }
 
