@@ -79,12 +79,14 @@ int RunRenderStats(RenderStatsOptions o, const CLI::App& cmd, std::ostream& out)
   if (o.leaf_mode != "cluster" && o.leaf_mode != "branch") {
     throw BadInput{"--leaf-mode: '" + o.leaf_mode + "' must be cluster or branch"};
   }
-  std::string error = CheckRenderOptions(o.render);
-  if (!error.empty()) {
-    std::string field = error.substr(0, error.find(':'));
-    for (char& c : field) c = c == '_' ? '-' : c;
-    throw BadInput{"--" + field + error.substr(error.find(':'))};
+  Status render_status = CheckRenderOptions(o.render);
+  if (!render_status
+           .ok()) {  // the options' fields are the flags' names: card_planes -> --card-planes
+    std::string flag = render_status.field();
+    for (char& c : flag) c = c == '_' ? '-' : c;
+    Fail(Status::Error("--" + flag, render_status.message()));
   }
+  std::string error;
   OrbitView view;
   if (!o.cam.empty() && !ParseOrbitView(o.cam, &view, &error)) throw BadInput{"--" + error};
   if (cmd.count("--yaw")) {

@@ -15,13 +15,15 @@
 
 #include "math/det_math.h"
 #include "math/rotation.h"
+#include "params/param_text.h"
 #include "tree/tree_params.h"
 
 namespace niwa {
 namespace {
 
 constexpr float kEpsilon = 1e-6f;
-constexpr float kFlowerPad_cm = kFlowerOuterRadius_cm + kFlowerLift_cm;  // a flower's reach (mesh.h)
+constexpr float kFlowerPad_cm =
+    kFlowerOuterRadius_cm + kFlowerLift_cm;  // a flower's reach (mesh.h)
 
 glm::vec3 SafeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
   float length = glm::length(v);
@@ -286,10 +288,6 @@ void BuildClusters(const Tree& tree, float leaf_size_cm, HybridScene* scene) {
   }
 }
 
-std::string RangeError(const char* field, const std::string& range) {
-  return std::string(field) + ": must be " + range;
-}
-
 }  // namespace
 
 void Bounds3::Add(const glm::vec3& p) {
@@ -409,29 +407,30 @@ RenderOptions RenderOptionsFromParams(const ParamSet& params) {
   return options;
 }
 
-std::string CheckRenderOptions(const RenderOptions& o) {
-  auto in = [](double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; };
-  if (!in(o.threshold_px, 0.1, 1000)) return RangeError("threshold", "a number in [0.1, 1000]");
-  if (!in(o.hysteresis, 0, 0.9)) return RangeError("hysteresis", "a number in [0, 0.9]");
-  if (!in(o.card_planes, 2, 8)) return RangeError("card_planes", "a whole number in [2, 8]");
-  if (!in(o.cluster_cells, 1, 64)) return RangeError("cluster_cells", "a whole number in [1, 64]");
-  if (!in(o.cluster_planes, 1, 3)) return RangeError("cluster_planes", "a whole number in [1, 3]");
-  if (!in(o.line_segments, 1, 64)) return RangeError("line_segments", "a whole number in [1, 64]");
-  if (!in(o.length_tolerance, 0.01, 4))
-    return RangeError("length_tolerance", "a number in [0.01, 4]");
-  if (!in(o.thickness_tolerance, 0.01, 4))
-    return RangeError("thickness_tolerance", "a number in [0.01, 4]");
-  if (!in(o.bend_tolerance_deg, 1, 180))
-    return RangeError("bend_tolerance", "a number in [1, 180] (degrees)");
-  bool power_of_two = o.atlas_size > 0 && (o.atlas_size & (o.atlas_size - 1)) == 0;
-  if (!in(o.atlas_size, 256, 16384) || !power_of_two)
-    return RangeError("atlas_size", "a power of two in [256, 16384]");
-  if (!in(o.atlas_padding, 0, 16)) return RangeError("atlas_padding", "a whole number in [0, 16]");
-  if (!in(o.min_tile_px, 1, 256)) return RangeError("min_tile_px", "a whole number in [1, 256]");
-  if (!in(o.max_tile_px, 8, 4096) || o.max_tile_px < o.min_tile_px)
-    return RangeError("max_tile_px", "a whole number in [8, 4096], at least min_tile_px");
-  if (!in(o.cm_to_units, 1e-6, 1e6)) return RangeError("cm_to_units", "a number in [1e-6, 1e6]");
-  return "";
+Status CheckRenderOptions(const RenderOptions& o) {
+  // Each range once, through params' CheckValue (the same one-line text as every parameter).
+  NIWA_RETURN_IF_ERROR(CheckValue("threshold", o.threshold_px, 0.1, 1000, false));
+  NIWA_RETURN_IF_ERROR(CheckValue("hysteresis", o.hysteresis, 0, 0.9, false));
+  NIWA_RETURN_IF_ERROR(CheckValue("card_planes", o.card_planes, 2, 8, true));
+  NIWA_RETURN_IF_ERROR(CheckValue("cluster_cells", o.cluster_cells, 1, 64, true));
+  NIWA_RETURN_IF_ERROR(CheckValue("cluster_planes", o.cluster_planes, 1, 3, true));
+  NIWA_RETURN_IF_ERROR(CheckValue("line_segments", o.line_segments, 1, 64, true));
+  NIWA_RETURN_IF_ERROR(CheckValue("length_tolerance", o.length_tolerance, 0.01, 4, false));
+  NIWA_RETURN_IF_ERROR(CheckValue("thickness_tolerance", o.thickness_tolerance, 0.01, 4, false));
+  NIWA_RETURN_IF_ERROR(CheckValue("bend_tolerance", o.bend_tolerance_deg, 1, 180, false));
+  NIWA_RETURN_IF_ERROR(CheckValue("atlas_size", o.atlas_size, 256, 16384, true));
+  if ((o.atlas_size & (o.atlas_size - 1)) != 0) {
+    return Status::Error("atlas_size", FormatNumber(o.atlas_size) + " must be a power of two");
+  }
+  NIWA_RETURN_IF_ERROR(CheckValue("atlas_padding", o.atlas_padding, 0, 16, true));
+  NIWA_RETURN_IF_ERROR(CheckValue("min_tile_px", o.min_tile_px, 1, 256, true));
+  NIWA_RETURN_IF_ERROR(CheckValue("max_tile_px", o.max_tile_px, 8, 4096, true));
+  if (o.max_tile_px < o.min_tile_px) {
+    return Status::Error("max_tile_px",
+                         FormatNumber(o.max_tile_px) + " must be at least min_tile_px");
+  }
+  NIWA_RETURN_IF_ERROR(CheckValue("cm_to_units", o.cm_to_units, 1e-6, 1e6, false));
+  return Status::Ok();
 }
 
 float ScreenWidthPx(float d_i, float sphere_radius, int width, int height) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "base/status.h"
 #include "tree/mesh.h"
 #include "tree/tree.h"
 #include "tree/tree_params.h"
@@ -99,7 +100,7 @@ struct RenderOptions {
 };
 
 // "" or a one-line error naming the field and its allowed range.
-std::string CheckRenderOptions(const RenderOptions& options);
+Status CheckRenderOptions(const RenderOptions& options);
 
 // Hybrid options from the "render" rows of the parameter table (line_threshold, card_planes,
 // leaf_cluster_cards); the other options keep their defaults.

@@ -259,7 +259,8 @@ TEST(CliRenderStats, BadFlagsAreOneLineErrorsWithExitCode2) {
   ExpectOneLineError(run({"--width", "0"}), "--width: must be a whole number in [16, 16384]");
   ExpectOneLineError(run({"--height", "99999"}), "--height");
   ExpectOneLineError(run({"--mode", "fast"}), "--mode");
-  ExpectOneLineError(run({"--threshold", "-1"}), "--threshold: must be a number in [0.1, 1000]");
+  ExpectOneLineError(run({"--threshold", "-1"}),
+                     "--threshold: -1 is out of range; must be a number in [0.1, 1000]");
   ExpectOneLineError(run({"--card-planes", "1"}), "--card-planes");
   ExpectOneLineError(run({"--cam", "1,2,3"}), "--cam");
   ExpectOneLineError(run({"--pitch", "3"}), "--pitch: must be a number in [-0.1, 1.5]");

@@ -356,17 +356,17 @@ TEST(Camera, OrbitViewMatchesThePage) {
 }
 
 TEST(Options, CheckNamesTheFieldAndRange) {
-  EXPECT_EQ(CheckRenderOptions(RenderOptions{}), "");
+  EXPECT_TRUE(CheckRenderOptions(RenderOptions{}).ok());
   RenderOptions o;
   o.threshold_px = 0;
-  EXPECT_NE(CheckRenderOptions(o).find("threshold"), std::string::npos);
+  EXPECT_EQ(CheckRenderOptions(o).field(), "threshold");
   o = RenderOptions{};
   o.card_planes = 1;
-  EXPECT_NE(CheckRenderOptions(o).find("card_planes: must be a whole number in [2, 8]"),
-            std::string::npos);
+  EXPECT_EQ(CheckRenderOptions(o).Line(),
+            "card_planes: 1 is out of range; must be a whole number in [2, 8]");
   o = RenderOptions{};
   o.atlas_size = 1000;
-  EXPECT_NE(CheckRenderOptions(o).find("power of two"), std::string::npos);
+  EXPECT_NE(CheckRenderOptions(o).Line().find("power of two"), std::string::npos);
 }
 
 // Counts agree with the draw list, and the sakura goal of the issue holds at the page's view.

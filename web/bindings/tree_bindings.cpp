@@ -265,7 +265,7 @@ class TreeSession {
   std::string buildHybrid() {
     if (!grower_) return error_.empty() ? "no tree" : error_;
     RenderOptions options = RenderOptionsFromParams(state_.params);
-    std::string error = CheckRenderOptions(options);
+    std::string error = CheckRenderOptions(options).Line();
     if (!error.empty()) return error;
     hybrid_ = BuildHybridScene(grower_->tree(), options);
     atlas_ = BuildAtlasMesh(mesh_, hybrid_);
