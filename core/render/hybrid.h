@@ -15,7 +15,7 @@
 
 namespace niwa {
 
-// ---- camera: the page's orbit camera (web/camera.js), in metres ----
+// ---- camera: the page's orbit camera (web/gl/orbit_camera.js), in metres ----
 
 constexpr float kDefaultYaw = 0.6f;         // OrbitCamera.DEFAULT_YAW, radians about +y
 constexpr float kDefaultPitch = 0.25f;      // OrbitCamera.DEFAULT_PITCH, radians above the horizon
