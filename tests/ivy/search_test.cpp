@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "geom/bvh.h"
+#include "geom/primitives.h"
 #include "ivy/growth.h"
 #include "ivy/ivy_report.h"
 #include "ivy/lstring.h"
@@ -150,6 +151,31 @@ TEST(IvyWall, TheApexStopsAtTheFreeTopEdgeAndReleasesADormantBud) {
   EXPECT_LE(top, 1200.0 + 20.0);
   EXPECT_GE(r.stats.p3_A, 1);
   EXPECT_GE(r.stats.released_breaks, 1);
+}
+
+}  // namespace
+}  // namespace niwa::ivy
+
+namespace niwa::ivy {
+namespace {
+
+// Subdivision invariance (spec §6): the same shape in 4^K coplanar triangles grows the same ivy.
+TEST(IvySubdivide, SameShapeMoreTrianglesSameIvy) {
+  for (const char* name : {"wall", "cubes4"}) {
+    IvyScene scene = *MakeIvyScene(name);
+    std::string first;
+    for (int k = 0; k <= 3; ++k) {
+      geom::TriMesh mesh = geom::Subdivide(scene.mesh, k);
+      geom::Bvh bvh = geom::Bvh::Build(mesh);
+      Result<IvyModel> m = Grow(Support{&mesh, &bvh, Accel::kBvh}, {scene.seeds[0].pos},
+                                IvyParams(), 50, 3, nullptr);
+      ASSERT_TRUE(m.ok());
+      const std::string text = PrintLString(*m);
+      if (k == 0) first = text;
+      EXPECT_EQ(text, first) << name << " K " << k;
+      EXPECT_GT(m->internodes.size(), 20u);
+    }
+  }
 }
 
 }  // namespace
