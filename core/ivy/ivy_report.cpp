@@ -124,6 +124,16 @@ IvyStats MeasureIvy(const IvyModel& m, const GrowLog& log, const geom::TriMesh* 
     s.up_min = std::min(s.up_min, u);
     up_sum += u;
   }
+  for (const Internode& in : m.internodes) {
+    const Bud& a = BudOf(m, in.from_bud);
+    const Bud& b = BudOf(m, in.to_bud);
+    if (glm::dot(a.outward, b.outward) >= 0.5) continue;  // cos 60°
+    if (glm::dot(b.anchor - a.anchor, a.outward) < 0) {
+      ++s.convex_crossings;
+    } else {
+      ++s.concave_crossings;
+    }
+  }
   s.up_mean = m.internodes.empty() ? 0 : up_sum / static_cast<double>(m.internodes.size());
   for (int root : m.roots) {
     const double y0 = glm::dot(BudOf(m, root).pos, up);
@@ -206,6 +216,8 @@ std::string IvyStatsJson(const IvyStats& s, const GrowLog& log, const IvyModel& 
   j["frac_nodes_within_d"] = s.frac_nodes_within_d;
   j["clearance"] = {{"min", s.clearance_min}, {"max", s.clearance_max}};
   j["internode_hits"] = s.internode_hits;
+  j["convex_crossings"] = s.convex_crossings;
+  j["concave_crossings"] = s.concave_crossings;
   j["internode_len_err_max"] = s.internode_len_err_max;
   j["up_min"] = s.up_min;
   j["up_mean"] = s.up_mean;

@@ -24,6 +24,8 @@ struct IvyStats {
   double frac_nodes_within_d = 0;  // ε <= clearance <= d, re-measured by brute force (C1)
   double clearance_min = 0, clearance_max = 0;
   int internode_hits = 0;  // internodes crossing a face, re-tested by brute force (C1)
+  // Internodes whose end normals differ by > 60°: convex iff (anchor_to - anchor_from)·n_from < 0.
+  int convex_crossings = 0, concave_crossings = 0;
   double internode_len_err_max = 0;
   double up_min = 0, up_mean = 0, rise = 0;  // C2
   double bend_max = 0;                       // degrees (P1)

@@ -81,6 +81,21 @@ TEST(IvyCubes4, PaperClaimsHoldForSeeds1To5) {
   EXPECT_GE(lateral_window_ok, runs * 9 / 10);
 }
 
+TEST(IvyCubes4, ConvexAndConcaveEdgesAreCrossedNearTheObject) {
+  int convex_runs = 0, concave_runs = 0;
+  for (uint64_t seed = 1; seed <= 10; ++seed) {
+    SceneRun r = GrowScene("cubes4", "side", IvyParams(), 50, seed);
+    convex_runs += r.stats.convex_crossings > 0;
+    concave_runs += r.stats.concave_crossings > 0;
+    EXPECT_EQ(r.stats.frac_nodes_within_d, 1.0);
+    EXPECT_EQ(r.stats.internode_hits, 0);
+  }
+  std::printf("side seeds 1-10: convex crossings in %d runs, concave in %d\n", convex_runs,
+              concave_runs);
+  EXPECT_GE(convex_runs, 1);
+  EXPECT_GE(concave_runs, 1);
+}
+
 TEST(IvyCubes4, BvhAndLinearGrowTheSameIvy) {
   SceneRun a = GrowScene("cubes4", "side", IvyParams(), 50, 3, Accel::kBvh);
   SceneRun b = GrowScene("cubes4", "side", IvyParams(), 50, 3, Accel::kLinear);
