@@ -57,11 +57,12 @@ const jsonLength = new DataView(glb.buffer, glb.byteOffset).getUint32(12, true);
 const gltf = JSON.parse(new TextDecoder().decode(glb.subarray(20, 20 + jsonLength)));
 const names = gltf.nodes.map((n) => n.name);
 check(['ivy_stems', 'ivy_leaves', 'ivy_suckers'].every((n) => names.includes(n)), `ivy.glb nodes: ${names.join(', ')}`);
-check(gltf.meshes.every((m) => '_BIRTH_STEP' in m.primitives[0].attributes), 'every ivy.glb primitive has _BIRTH_STEP');
+const ivyMeshes = gltf.meshes.filter((m) => m.name.startsWith('ivy_'));
+check(ivyMeshes.length === 3 && ivyMeshes.every((m) => '_BIRTH_STEP' in m.primitives[0].attributes), 'every ivy_* primitive of ivy.glb has _BIRTH_STEP');
 
 // Hostile input: one line, exit 2, no file.
 const hostile = [
-  [['--set', 't1=0.9'], 't1'], [['--steps', '-1'], '--steps'], [['--set', 'L=nan'], 'L'],
+  [['--set', 't1=0.9'], 't1'], [['--steps', '-1'], '--steps'], [['--set', 'L=nan'], '--set: L'],
   [['--seed-point', '600,10,450'], '--seed-point'], [['--url', 'steps=-3'], '--url'],
   [['--url', 't1=abc'], '--url'], [['--preset', 'x'], '--preset'], [['--scene', 'moon'], '--scene'],
   [['--seed', '-2'], '--seed'], [['--set', 'eps=30'], 'eps'], [['--mesh', join(dir, 'none.glb'), '--seed-point', '0,0,0'], '--mesh'],
