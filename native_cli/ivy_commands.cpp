@@ -123,8 +123,9 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
     Fail(Status::Error("--mesh", "give either --mesh FILE or --scene NAME, not both"));
   }
   ivy::IvyScene scene;
+  io::MeshReadStats read;
   if (!o.mesh.empty()) {
-    Result<geom::TriMesh> mesh = io::ReadMeshFile(o.mesh);
+    Result<geom::TriMesh> mesh = io::ReadMeshFile(o.mesh, &read);
     if (!mesh.ok()) Fail(mesh.status().Within("--mesh"));
     scene.name = o.mesh;
     scene.mesh = std::move(mesh).value();
@@ -153,12 +154,20 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
     seeds.push_back(scene.seeds[0].pos);
   }
   const auto t_bvh0 = std::chrono::steady_clock::now();
-  geom::Bvh bvh;
+  geom::Bvh bvh, attach_bvh;
+  std::size_t obstacles = 0;
+  geom::TriMesh attach;
+  if (!o.mesh.empty()) attach = ivy::IvyAttachTriangles(scene.mesh, read.materials, &obstacles);
   if (!scene.free && o.accel == "bvh") bvh = geom::Bvh::Build(scene.mesh);
+  if (obstacles > 0 && o.accel == "bvh") attach_bvh = geom::Bvh::Build(attach);
   const auto t_bvh1 = std::chrono::steady_clock::now();
   ivy::Support support;
   if (!scene.free) {
     support = {&scene.mesh, &bvh, o.accel == "bvh" ? ivy::Accel::kBvh : ivy::Accel::kLinear};
+    if (obstacles > 0) {
+      support.attach_mesh = &attach;
+      support.attach_bvh = &attach_bvh;
+    }
   }
   ivy::GrowLog log;
   Result<ivy::IvyModel> model =
@@ -185,8 +194,8 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
     Check(WriteFileAtomically(o.out_path, bytes).Within("--out"));
   }
   if (o.stats) {
-    ivy::IvyStats stats =
-        ivy::MeasureIvy(*model, log, scene.free ? nullptr : &scene.mesh, state.params);
+    ivy::IvyStats stats = ivy::MeasureIvy(*model, log, scene.free ? nullptr : &scene.mesh,
+                                          state.params, obstacles > 0 ? &attach : nullptr);
     t.ms = Ms(t_start, std::chrono::steady_clock::now());
     out << ivy::IvyStatsJson(stats, log, *model, t) << "\n";
   }

@@ -114,6 +114,13 @@ class Grower {
   bool free() const { return s_.mesh == nullptr; }
 
   geom::ClosestHit Closest(const glm::dvec3& q, double max_distance) {
+    if (s_.attach_mesh != nullptr) {
+      if (s_.accel == Accel::kLinear)
+        return geom::ClosestPointLinear(*s_.attach_mesh, F(q), static_cast<float>(max_distance),
+                                        &log_->closest);
+      return geom::ClosestPoint(*s_.attach_mesh, *s_.attach_bvh, F(q),
+                                static_cast<float>(max_distance), &log_->closest);
+    }
     if (s_.accel == Accel::kLinear)
       return geom::ClosestPointLinear(*s_.mesh, F(q), static_cast<float>(max_distance),
                                       &log_->closest);
@@ -156,7 +163,9 @@ class Grower {
         }
         const glm::dvec3 cp(hit.point);
         glm::dvec3 n = seeds[i] - cp;
-        n = Length(n) > 1e-9 * L_ ? Unit(n) : TriangleNormal(*s_.mesh, hit.triangle);
+        n = Length(n) > 1e-9 * L_
+                ? Unit(n)
+                : TriangleNormal(s_.attach_mesh ? *s_.attach_mesh : *s_.mesh, hit.triangle);
         // §4 item 13: snapped to anchor + N·d/2; initial direction = up in the face's plane.
         b.pos = cp + n * (d_ / 2);
         glm::dvec3 t = up_ - glm::dot(up_, n) * n;
@@ -537,6 +546,11 @@ Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& see
   }
   if (support.mesh != nullptr && support.mesh->triangle_count() == 0) {
     return Status::Error("--mesh", "has no triangles; the support needs at least 1");
+  }
+  if (support.attach_mesh != nullptr && support.attach_mesh->triangle_count() == 0) {
+    return Status::Error("--mesh",
+                         "has only obstacle triangles (noivy materials); ivy needs at "
+                         "least 1 support triangle");
   }
   Grower g(support, params, seed, log);
   NIWA_RETURN_IF_ERROR(g.PlaceSeeds(seeds));

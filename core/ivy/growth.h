@@ -20,9 +20,13 @@ enum class Accel { kBvh, kLinear };
 // What the ivy climbs. mesh == nullptr: no support (every search accepts p + L·v0; the nutrient
 // replay of the spec). The mesh and BVH must outlive the grow.
 struct Support {
-  const geom::TriMesh* mesh = nullptr;
+  const geom::TriMesh* mesh = nullptr;  // every triangle: collisions (E8 "collision")
   const geom::Bvh* bvh = nullptr;
   Accel accel = Accel::kBvh;
+  // Optional: the triangles ivy may attach to (distances, anchors, seeds); nullptr = all of mesh.
+  // Obstacle-only triangles (material "noivy*" or extras.niwa_ivy false) are in mesh, not here.
+  const geom::TriMesh* attach_mesh = nullptr;
+  const geom::Bvh* attach_bvh = nullptr;
 };
 
 constexpr int kMaxSteps = 10000;

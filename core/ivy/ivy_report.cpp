@@ -40,7 +40,7 @@ int InternodesAt(const IvyModel& model, int step) {
 }
 
 IvyStats MeasureIvy(const IvyModel& m, const GrowLog& log, const geom::TriMesh* mesh,
-                    const IvyParams& params) {
+                    const IvyParams& params, const geom::TriMesh* attach_mesh) {
   IvyStats s;
   const double d = params.Get(IvyParam::kD), eps = params.Get(IvyParam::kEps);
   const double L = params.Get(IvyParam::kL), r_tip = params.Get(IvyParam::kRTip);
@@ -103,7 +103,8 @@ IvyStats MeasureIvy(const IvyModel& m, const GrowLog& log, const geom::TriMesh* 
     double c = b.clearance;
     if (mesh) {
       geom::ClosestHit h =
-          geom::ClosestPointLinear(*mesh, glm::vec3(b.pos), std::numeric_limits<float>::infinity());
+          geom::ClosestPointLinear(attach_mesh ? *attach_mesh : *mesh, glm::vec3(b.pos),
+                                   std::numeric_limits<float>::infinity());
       c = static_cast<double>(h.distance);
     }
     s.clearance_min = std::min(s.clearance_min, c);

@@ -36,9 +36,10 @@ struct IvyStats {
   std::size_t tri_count = 0;
 };
 
-// Measures a model grown on `mesh` (nullptr for the free scene).
+// Measures a model grown on `mesh` (nullptr for the free scene); distances are re-measured to
+// `attach_mesh` when given (the support without its obstacle-only triangles).
 IvyStats MeasureIvy(const IvyModel& model, const GrowLog& log, const geom::TriMesh* mesh,
-                    const IvyParams& params);
+                    const IvyParams& params, const geom::TriMesh* attach_mesh = nullptr);
 
 // Laterals (axes of order >= 1) alive at the end of step `step` (born at or before it).
 int LateralsAt(const IvyModel& model, int step);

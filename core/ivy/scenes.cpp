@@ -141,6 +141,33 @@ IvyScene Free() {
 
 }  // namespace
 
+geom::TriMesh IvyAttachTriangles(const geom::TriMesh& mesh,
+                                 const std::vector<io::MeshMaterial>& materials,
+                                 std::size_t* obstacles) {
+  *obstacles = 0;
+  const geom::VertexAttribute* mat = mesh.FindAttribute(io::kMaterialAttribute);
+  geom::TriMesh out;
+  out.positions = mesh.positions;
+  out.normals = mesh.normals;
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    bool attach = true;
+    if (mat != nullptr) {
+      const float index = mat->values[mesh.indices[3 * t]];
+      if (index >= 0 && static_cast<std::size_t>(index) < materials.size()) {
+        const io::MeshMaterial& m = materials[static_cast<std::size_t>(index)];
+        attach = m.ivy_support && m.name.rfind("noivy", 0) != 0;
+      }
+    }
+    if (!attach) {
+      ++*obstacles;
+      continue;
+    }
+    out.indices.insert(out.indices.end(), mesh.indices.begin() + static_cast<std::ptrdiff_t>(3 * t),
+                       mesh.indices.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
+  }
+  return out;
+}
+
 const std::vector<std::string>& IvySceneNames() {
   static const std::vector<std::string> names = {"cubes4", "wall",   "overhang", "stairs",
                                                  "pillar", "sphere", "free"};

@@ -11,6 +11,7 @@
 
 #include "base/status.h"
 #include "geom/tri_mesh.h"
+#include "io/mesh_reader.h"
 
 namespace niwa::ivy {
 
@@ -28,6 +29,13 @@ struct IvyScene {
 };
 
 const std::vector<std::string>& IvySceneNames();
+
+// The triangles of a read mesh that ivy may attach to: all but those whose material (the reader's
+// "material" vertex attribute) is named "noivy..." or has extras.niwa_ivy false. `obstacles` gets
+// the count left out.
+geom::TriMesh IvyAttachTriangles(const geom::TriMesh& mesh,
+                                 const std::vector<io::MeshMaterial>& materials,
+                                 std::size_t* obstacles);
 // Error: {"--scene", "'x' is unknown; must be one of cubes4, ..."}.
 Result<IvyScene> MakeIvyScene(std::string_view name);
 

@@ -85,6 +85,22 @@ TEST(IvyCli, ParamsAndScenesAreListed) {
   EXPECT_NE(s.out.find("cubes4\t20 tris"), std::string::npos);
 }
 
+TEST(IvyCli, ObstacleMaterialsAreNotSupports) {
+  // materials.glb: a unit triangle of material noivy_glass at z = 0, soil at z = 1, bare at z = 2.
+  const std::string mesh = std::string(NIWA_SOURCE_DIR) + "/tests/data/meshes/materials.glb";
+  CliResult glass = RunNiwa({"ivy", "grow", "--mesh", mesh, "--preset", "metric", "--seed-point",
+                             "0.2,0.2,0.01", "--steps", "5"});
+  EXPECT_EQ(glass.code, 2);
+  EXPECT_NE(glass.err.find("from the nearest face; must be within d = 0.02"), std::string::npos)
+      << glass.err;
+  CliResult soil = RunNiwa({"ivy", "grow", "--mesh", mesh, "--preset", "metric", "--seed-point",
+                            "0.2,0.2,1.01", "--steps", "20", "--stats"});
+  ASSERT_EQ(soil.code, 0) << soil.err;
+  nlohmann::json j = nlohmann::json::parse(soil.out);
+  EXPECT_GT(j["internodes"].get<int>(), 3);
+  EXPECT_EQ(j["frac_nodes_within_d"], 1.0);
+}
+
 TEST(IvyCli, BadInputIsOneLineExit2NoFile) {
   const std::string out = "ivy_cli_bad.json";
   for (std::vector<std::string> args :
