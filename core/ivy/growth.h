@@ -1,0 +1,48 @@
+// Ivy growth (§3): the support (a TriMesh with its BVH, or none: the RNG-free "free" replay), the
+// seed placement, and Grow: S steps of rules p0-p3 with the nutrient bookkeeping (E1-E5) and the
+// directed random walk (E6-E10) that places every new internode. Does not: mesh, print or report.
+#pragma once
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <vector>
+
+#include "base/status.h"
+#include "geom/bvh.h"
+#include "geom/tri_mesh.h"
+#include "ivy/ivy.h"
+#include "ivy/ivy_params.h"
+
+namespace niwa::ivy {
+
+enum class Accel { kBvh, kLinear };
+
+// What the ivy climbs. mesh == nullptr: no support (every search accepts p + L·v0; the nutrient
+// replay of the spec). The mesh and BVH must outlive the grow.
+struct Support {
+  const geom::TriMesh* mesh = nullptr;  // every triangle: collisions (E8 "collision")
+  const geom::Bvh* bvh = nullptr;
+  Accel accel = Accel::kBvh;
+  // Optional: the triangles ivy may attach to (distances, anchors, seeds); nullptr = all of mesh.
+  // Obstacle-only triangles (material "noivy*" or extras.niwa_ivy false) are in mesh, not here.
+  const geom::TriMesh* attach_mesh = nullptr;
+  const geom::Bvh* attach_bvh = nullptr;
+};
+
+constexpr int kMaxSteps = 10000;
+constexpr int kMaxSeedPoints = 64;
+
+// Grows one plant from every seed point for `steps` steps (stops early when no A or D is left).
+// Errors: steps outside [0, 10000], no seed point, a seed farther than d from every face ("seed
+// point 1: 35.2 px from the nearest face; must be within d = 20"), invalid parameters.
+Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& seeds,
+                      const IvyParams& params, int steps, uint64_t seed, GrowLog* log);
+
+// The geometric normal of a triangle (unit, from its winding).
+glm::dvec3 TriangleNormal(const geom::TriMesh& mesh, uint32_t triangle);
+
+// Shortest distance between segments p1-q1 and p2-q2 (Ericson, RTCD §5.1.9), in double.
+double SegmentSegmentDistance(const glm::dvec3& p1, const glm::dvec3& q1, const glm::dvec3& p2,
+                              const glm::dvec3& q2);
+
+}  // namespace niwa::ivy

@@ -1,0 +1,193 @@
+// Ivy tubes, leaves and suckers as TriMeshes (spec §1.5), and the .glb.
+#include "ivy/ivy_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include "io/gltf_writer.h"
+#include "math/det_math.h"
+#include "params/param_json.h"
+
+namespace niwa::ivy {
+namespace {
+
+constexpr int kSides = 6;
+
+glm::dvec3 Unit(const glm::dvec3& v) {
+  double l = std::sqrt(glm::dot(v, v));
+  return l > 0 ? v / l : glm::dvec3(0, 1, 0);
+}
+
+// Any unit vector perpendicular to v.
+glm::dvec3 Perpendicular(const glm::dvec3& v) {
+  glm::dvec3 a = std::fabs(v.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+  return Unit(glm::cross(v, a));
+}
+
+struct Builder {
+  geom::TriMesh mesh;
+  std::vector<float> birth;
+  uint32_t Vertex(const glm::dvec3& p, const glm::dvec3& n, double step) {
+    mesh.positions.push_back(glm::vec3(p));
+    mesh.normals.push_back(glm::vec3(n));
+    birth.push_back(static_cast<float>(step));
+    return static_cast<uint32_t>(mesh.positions.size() - 1);
+  }
+  void Tri(uint32_t a, uint32_t b, uint32_t c) {
+    mesh.indices.insert(mesh.indices.end(), {a, b, c});
+  }
+  // An open tube from a (radius ra) to b (radius rb).
+  void Tube(const glm::dvec3& a, const glm::dvec3& b, double ra, double rb, double step) {
+    const glm::dvec3 h = Unit(b - a), e1 = Perpendicular(h), e2 = glm::cross(h, e1);
+    uint32_t first = static_cast<uint32_t>(mesh.positions.size());
+    for (int k = 0; k < kSides; ++k) {
+      double s, c;
+      det::SinCos(2.0 * det::kPi * k / kSides, &s, &c);
+      const glm::dvec3 n = c * e1 + s * e2;
+      Vertex(a + ra * n, n, step);
+      Vertex(b + rb * n, n, step);
+    }
+    for (uint32_t k = 0; k < kSides; ++k) {
+      const uint32_t k2 = (k + 1) % kSides;
+      const uint32_t a0 = first + 2 * k, b0 = a0 + 1, a1 = first + 2 * k2, b1 = a1 + 1;
+      Tri(a0, a1, b1);
+      Tri(a0, b1, b0);
+    }
+  }
+  // A flat polygon fan around `centre` in the plane (u, v), outline radii per angle.
+  void Fan(const glm::dvec3& centre, const glm::dvec3& u, const glm::dvec3& v,
+           const std::vector<glm::dvec2>& outline, double step) {
+    const glm::dvec3 n = Unit(glm::cross(u, v));
+    uint32_t c = Vertex(centre, n, step);
+    uint32_t first = static_cast<uint32_t>(mesh.positions.size());
+    for (const glm::dvec2& o : outline) Vertex(centre + o.x * u + o.y * v, n, step);
+    const uint32_t count = static_cast<uint32_t>(outline.size());
+    for (uint32_t k = 0; k < count; ++k) Tri(c, first + k, first + (k + 1) % count);
+  }
+  geom::TriMesh Done() {
+    mesh.AddAttribute("birth_step", 1).values = birth;
+    return std::move(mesh);
+  }
+};
+
+// A 3-lobed Parthenocissus-like outline of width 1 (x across, y along the blade), from the petiole
+// end at (0, 0): 10 points, counter-clockwise.
+std::vector<glm::dvec2> LeafOutline(double width) {
+  static const double pts[10][2] = {{0.0, 0.0},   {0.35, 0.15}, {0.5, 0.45},  {0.3, 0.5},
+                                    {0.2, 0.85},  {0.0, 1.0},   {-0.2, 0.85}, {-0.3, 0.5},
+                                    {-0.5, 0.45}, {-0.35, 0.15}};
+  std::vector<glm::dvec2> out;
+  for (const auto& p : pts) out.push_back({p[0] * width, p[1] * width});
+  return out;
+}
+
+}  // namespace
+
+IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p) {
+  const double r_tip = p.Get(IvyParam::kRTip), pipe = p.Get(IvyParam::kPipeExp);
+  const double leaf = p.Get(IvyParam::kLeafSize), petiole = p.Get(IvyParam::kPetiole);
+  const double tau = p.Get(IvyParam::kLeafAge), tilt = p.Get(IvyParam::kLeafTilt);
+  const double L = p.Get(IvyParam::kL);
+  const glm::dvec3 up =
+      Unit(glm::dvec3(p.Get(IvyParam::kUpX), p.Get(IvyParam::kUpY), p.Get(IvyParam::kUpZ)));
+  // Tips below each bud (pipe model r = r_tip · n_tips^(1/pipe_exp)), children before parents.
+  std::vector<int> tips(m.buds.size(), 0);
+  for (std::size_t i = m.buds.size(); i-- > 0;) {
+    const Bud& b = m.buds[i];
+    if (b.child[0] < 0 && b.child[1] < 0) tips[i] = 1;
+    if (b.parent >= 0) tips[static_cast<std::size_t>(b.parent)] += tips[i];
+  }
+  auto radius = [&](int id) {
+    const Bud& b = m.buds[static_cast<std::size_t>(id)];
+    double r =
+        r_tip * det::Exp(det::Log(static_cast<double>(tips[static_cast<std::size_t>(id)])) / pipe);
+    // No tube crosses the support at a node.
+    return std::min(r, std::max(r_tip, 0.9 * b.clearance));
+  };
+  int last_step = 0;
+  for (const Bud& b : m.buds) last_step = std::max(last_step, b.born_step);
+  Builder stems, leaves, suckers;
+  for (const Internode& in : m.internodes) {
+    const Bud& a = m.buds[static_cast<std::size_t>(in.from_bud)];
+    const Bud& b = m.buds[static_cast<std::size_t>(in.to_bud)];
+    stems.Tube(a.pos, b.pos, radius(a.id), radius(b.id), in.step);
+  }
+  for (const Bud& b : m.buds) {
+    // Sucker: pos -> anchor, a disc of radius 0.1 L at the anchor facing the surface.
+    const glm::dvec3 n = b.outward;
+    suckers.Tube(b.pos, b.anchor + 0.01 * L * n, 0.2 * r_tip, 0.2 * r_tip, b.born_step);
+    const glm::dvec3 t1 = Perpendicular(n), t2 = glm::cross(n, t1);
+    std::vector<glm::dvec2> disc;
+    for (int k = 0; k < 8; ++k) {
+      double s, c;
+      det::SinCos(2.0 * det::kPi * k / 8, &s, &c);
+      disc.push_back({0.1 * L * c, 0.1 * L * s});
+    }
+    suckers.Fan(b.anchor + 0.01 * L * n, t1, t2, disc, b.born_step);
+    if (b.parent < 0) continue;
+    // Leaf opposite the sucker: petiole along n tilted toward up, blade normal ≈ n.
+    double st, ct;
+    det::SinCos(tilt * det::kPi / 180.0, &st, &ct);
+    glm::dvec3 up_t = up - glm::dot(up, n) * n;
+    up_t = glm::dot(up_t, up_t) > 1e-12 ? Unit(up_t) : t1;
+    const glm::dvec3 pet_dir = Unit(ct * n + st * up_t);
+    const glm::dvec3 base = b.pos + petiole * pet_dir;
+    const double age = static_cast<double>(last_step - b.born_step);
+    const double width = leaf * std::min(1.0, (age + 1.0) / tau);
+    const glm::dvec3 across = Unit(glm::cross(up_t, n));
+    leaves.Tube(b.pos, base, 0.3 * r_tip, 0.3 * r_tip, b.born_step);
+    leaves.Fan(base, across, up_t, LeafOutline(width), b.born_step);
+  }
+  return {stems.Done(), leaves.Done(), suckers.Done()};
+}
+
+Result<std::vector<unsigned char>> WriteIvyGlb(const IvyModel& model, const IvyParams& params,
+                                               uint64_t seed, int steps,
+                                               const geom::TriMesh* support) {
+  IvyMeshes meshes = BuildIvyMeshes(model, params);
+  gltf::Document doc;
+  doc.scene_name = "ivy";
+  nlohmann::json extras;
+  extras["params"] = nlohmann::json::parse(ParamsToJson(params, -1));
+  extras["seed"] = seed;
+  extras["steps"] = steps;
+  doc.asset_extras_json = extras.dump();
+  auto material = [&](const char* name, std::array<double, 4> colour) {
+    gltf::Material mat;
+    mat.name = name;
+    mat.base_color_factor = colour;
+    mat.metallic_factor = 0;
+    mat.roughness_factor = 0.8;
+    mat.double_sided = true;
+    doc.materials.push_back(mat);
+    return static_cast<int>(doc.materials.size() - 1);
+  };
+  auto add = [&](const char* name, geom::TriMesh mesh, int mat) {
+    if (mesh.triangle_count() == 0) return;
+    gltf::Primitive prim;
+    prim.mesh = std::move(mesh);
+    prim.material = mat;
+    prim.index_type = gltf::IndexType::kUint32;
+    doc.meshes.push_back({name, {prim}});
+    gltf::Node node;
+    node.name = name;
+    node.mesh = static_cast<int>(doc.meshes.size() - 1);
+    doc.nodes.push_back(node);
+    doc.scene_nodes.push_back(static_cast<int>(doc.nodes.size() - 1));
+  };
+  add("ivy_stems", std::move(meshes.stems), material("stem", {0.35, 0.22, 0.12, 1}));
+  add("ivy_leaves", std::move(meshes.leaves), material("leaf", {0.16, 0.45, 0.12, 1}));
+  add("ivy_suckers", std::move(meshes.suckers), material("sucker", {0.55, 0.4, 0.25, 1}));
+  if (support != nullptr) {
+    geom::TriMesh s;
+    s.positions = support->positions;
+    s.indices = support->indices;
+    if (support->normals.size() == support->positions.size()) s.normals = support->normals;
+    add("support", std::move(s), material("support", {0.7, 0.7, 0.7, 1}));
+  }
+  return gltf::WriteGlb(doc);
+}
+
+}  // namespace niwa::ivy

@@ -1,0 +1,30 @@
+// "Birth" geometry of a grown ivy (spec §1.5; the paper only says "I: Draw a tube"): stems as
+// 6-sided tubes with pipe-model radii, one 3-lobed leaf per bud on the side opposite its sucker,
+// one sucker per bud (a thin tube to the anchor ending in a disc), each vertex carrying its
+// birth_step; and the .glb over io/gltf_writer. Does not: grow, read files, or write them.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "base/status.h"
+#include "geom/tri_mesh.h"
+#include "ivy/ivy.h"
+#include "ivy/ivy_params.h"
+
+namespace niwa::ivy {
+
+struct IvyMeshes {
+  geom::TriMesh stems, leaves, suckers;  // each with the attribute "birth_step" (1 float)
+};
+
+IvyMeshes BuildIvyMeshes(const IvyModel& model, const IvyParams& params);
+
+// The .glb: nodes ivy_stems, ivy_leaves, ivy_suckers (+ support when given), asset extras =
+// {params, seed, steps}. `_BIRTH_STEP` per vertex.
+Result<std::vector<unsigned char>> WriteIvyGlb(const IvyModel& model, const IvyParams& params,
+                                               uint64_t seed, int steps,
+                                               const geom::TriMesh* support = nullptr);
+
+}  // namespace niwa::ivy

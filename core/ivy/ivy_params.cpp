@@ -1,0 +1,173 @@
+// The ivy table's rows (Table 2 of Shindo & Sakamoto and the choices of docs/ivy-model.md), the
+// cross-row checks and the four presets.
+#include "ivy/ivy_params.h"
+
+#include <cmath>
+
+#include "params/param_text.h"
+
+namespace niwa {
+namespace {
+
+std::vector<ParamSpec> Rows() {
+  const Stage g = Stage::kGrow;
+  const Stage m = Stage::kMesh;
+  return {
+      {0, "L", "L", "px", 50, 1e-6, 1e6, false, "rules", g,
+       "Internode length = sucker-to-sucker distance (Table 2)."},
+      {1, "d", "d", "px", 20, 1e-6, 1e7, false, "rules", g,
+       "Sucker length: the largest node-to-face distance (Table 2)."},
+      {2, "t1", "t₁", "", 0.2, 0, 100, false, "rules", g,
+       "Growth threshold of p0; must be below t2 (Table 2)."},
+      {3, "t2", "t₂", "", 0.8, 0, 100, false, "rules", g,
+       "Dormancy-breaking threshold of p1; must be above t1 (Table 2)."},
+      {4, "n0", "N₀", "", 0.2, 0, 100, false, "rules", g, "Nutrient of the seed apex at step 0."},
+      {5, "delta_a", "δ_A", "1/step", 0.12, 0, 10, false, "rules", g,
+       "p2 accumulation per step of an apical bud (times λ^order)."},
+      {6, "delta_d", "δ_D", "1/step", 0.035, 0, 10, false, "rules", g,
+       "p2 accumulation per step of a dormant bud (times λ^order)."},
+      {7, "alpha", "α", "", 0.75, 0.5, 1, false, "rules", g,
+       "p0: share of the remainder given to the new apex (> 1/2: 'A more than D')."},
+      {8, "kappa", "κ", "", 1, 0, 1, false, "rules", g,
+       "Fraction of its threshold a firing rule consumes."},
+      {9, "lambda", "λ", "", 0.5, 1e-6, 1, false, "rules", g,
+       "p2 factor per branch order (dominance between axes)."},
+      {10, "obstacle_break", "", "", 1, 0, 1, true, "rules", g,
+       "An apex that cannot grow releases the nearest dormant bud (§2.2)."},
+      {11, "theta_x", "θx", "deg", 0, -180, 180, false, "lateral", g,
+       "R() of p1: roll about the parent direction H."},
+      {12, "theta_y", "θy", "deg", 0, -180, 180, false, "lateral", g,
+       "R() of p1: pitch about the binormal B."},
+      {13, "theta_z", "θz", "deg", 45, -180, 180, false, "lateral", g,
+       "R() of p1: yaw about the surface normal (turns within the surface)."},
+      {14, "alternate", "", "", 1, 0, 1, true, "lateral", g,
+       "Alternate the sign of θz along an axis."},
+      {15, "candidates", "n_c", "", 16, 1, 256, true, "search", g,
+       "Candidate points per attempt (E6)."},
+      {16, "phi", "φ", "deg", 30, 1e-6, 90, false, "search", g, "Candidate cone half-angle."},
+      {17, "retries", "R_max", "", 3, 0, 8, true, "search", g,
+       "Corrected retries after every candidate failed (E10)."},
+      {18, "phi_step", "Δφ", "deg", 15, 0, 90, false, "search", g, "Cone widening per retry."},
+      {19, "g_min", "g_min", "", 0, -1, 1, false, "search", g,
+       "Gravitropism: least u·ĝ of an internode (0: never downwards)."},
+      {20, "w_dist", "w_d", "", 1, 0, 10, false, "search", g, "Score weight: distance to a face."},
+      {21, "w_angle", "w_a", "", 1, 0, 10, false, "search", g,
+       "Score weight: angle to the preferred direction."},
+      {22, "w_grav", "w_g", "", 1, 0, 10, false, "search", g, "Score weight: gravitropism."},
+      {23, "eps", "ε", "px", 2, 0, 1e7, false, "search", g,
+       "Least node clearance (keeps tubes out of the support); must be below d."},
+      {24, "up_x", "ĝx", "", 0, -1, 1, false, "search", g, "Anti-gravity direction, x."},
+      {25, "up_y", "ĝy", "", 1, -1, 1, false, "search", g, "Anti-gravity direction, y."},
+      {26, "up_z", "ĝz", "", 0, -1, 1, false, "search", g, "Anti-gravity direction, z."},
+      {27, "max_bend", "β_max", "deg", 180, 1e-6, 180, false, "improved", g,
+       "Largest turn between consecutive internodes (180: off; fixes §4 problem 1)."},
+      {28, "avoid", "r_avoid", "px", 0, 0, 1e6, false, "improved", g,
+       "Least distance to other internodes (0: off; fixes §4 problem 2)."},
+      {29, "r_tip", "r_tip", "px", 1.5, 1e-6, 1e6, false, "look", m, "Tube radius at a tip."},
+      {30, "pipe_exp", "", "", 2, 1, 4, false, "look", m, "Pipe-model exponent of tube radii."},
+      {31, "leaf_size", "s_leaf", "px", 50, 0, 1e6, false, "look", m, "Leaf blade width."},
+      {32, "petiole", "l_p", "px", 20, 0, 1e6, false, "look", m, "Petiole length."},
+      {33, "leaf_age", "τ_leaf", "step", 5, 1e-6, 1e4, false, "look", m,
+       "Steps until a leaf reaches full size."},
+      {34, "leaf_tilt", "", "deg", 30, -90, 90, false, "look", m,
+       "Petiole tilt from the surface normal toward up."},
+  };
+}
+
+struct Preset {
+  const char* name;
+  std::vector<std::pair<std::string, double>> overrides;
+};
+
+const std::vector<Preset>& Presets() {
+  static const std::vector<Preset> presets = {
+      {"paper", {}},
+      {"literal", {{"kappa", 0}, {"lambda", 1}}},
+      {"improved", {{"max_bend", 60}, {"avoid", 10}, {"candidates", 32}}},
+      {"metric",
+       {{"L", 0.05},
+        {"d", 0.02},
+        {"eps", 0.002},
+        {"r_tip", 0.0015},
+        {"leaf_size", 0.05},
+        {"petiole", 0.02}}},
+  };
+  return presets;
+}
+
+}  // namespace
+
+const ParamTable& IvyTable() {
+  static const ParamTable table("ivy", Rows(),
+                                {{"rules", "Nutrient rules (Table 2, p0-p3)"},
+                                 {"lateral", "Lateral rotation R(θx, θy, θz)"},
+                                 {"search", "Position search (§3.2)"},
+                                 {"improved", "The paper's two problems (§4)"},
+                                 {"look", "Tubes, leaves, suckers"}});
+  return table;
+}
+
+const ParamTable& TableOf(IvyParam) { return IvyTable(); }
+
+Status ValidateIvyParams(const IvyParams& p) {
+  const double t1 = p.Get(IvyParam::kT1), t2 = p.Get(IvyParam::kT2);
+  if (!(t1 < t2)) {
+    return Status::Error("t1", FormatNumber(t1) + " is not below t2 = " + FormatNumber(t2) +
+                                   "; must be in [0, t2) (§3.1: t1 < t2)");
+  }
+  if (!(p.Get(IvyParam::kAlpha) > 0.5)) {
+    return Status::Error("alpha", FormatNumber(p.Get(IvyParam::kAlpha)) +
+                                      " is out of range; must be a number in (0.5, 1]");
+  }
+  const double d = p.Get(IvyParam::kD), eps = p.Get(IvyParam::kEps), L = p.Get(IvyParam::kL);
+  if (!(eps < d)) {
+    return Status::Error(
+        "eps", FormatNumber(eps) + " is not below d = " + FormatNumber(d) + "; must be in [0, d)");
+  }
+  if (d > 10 * L) {
+    return Status::Error("d", FormatNumber(d) + " is out of range; must be in (0, 10 L] = (0, " +
+                                  FormatNumber(10 * L) + "]");
+  }
+  if (p.Get(IvyParam::kAvoid) > L) {
+    return Status::Error("avoid", FormatNumber(p.Get(IvyParam::kAvoid)) +
+                                      " is out of range; must be in [0, L] = [0, " +
+                                      FormatNumber(L) + "]");
+  }
+  const double ux = p.Get(IvyParam::kUpX), uy = p.Get(IvyParam::kUpY), uz = p.Get(IvyParam::kUpZ);
+  if (ux * ux + uy * uy + uz * uz < 1e-12) {
+    return Status::Error("up_y", "the up vector (up_x, up_y, up_z) is zero; must be non-zero");
+  }
+  return Status::Ok();
+}
+
+const std::vector<std::string>& IvyPresetNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const Preset& p : Presets()) n.push_back(p.name);
+    return n;
+  }();
+  return names;
+}
+
+std::vector<std::pair<std::string, double>> IvyPresetOverrides(std::string_view name) {
+  for (const Preset& p : Presets())
+    if (name == p.name) return p.overrides;
+  return {};
+}
+
+Result<IvyParams> IvyPreset(std::string_view name) {
+  for (const Preset& preset : Presets()) {
+    if (name != preset.name) continue;
+    IvyParams params;
+    for (const auto& [key, value] : preset.overrides) {
+      std::optional<std::size_t> row = IvyTable().Find(key);
+      NIWA_RETURN_IF_ERROR(params.Set(*row, value));
+    }
+    return params;
+  }
+  return Status::Error("preset", "'" + std::string(name) +
+                                     "' is unknown; must be one of paper, literal, improved, "
+                                     "metric");
+}
+
+}  // namespace niwa

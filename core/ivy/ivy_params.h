@@ -1,0 +1,76 @@
+// The ivy study's parameter table ("ivy"): Shindo & Sakamoto's Table 2 (L, d, t1, t2) and every
+// value the paper leaves open (docs/ivy-model.md), with bare keys on the ivy page and "ivy." on a
+// composed page; the presets paper, literal, improved and metric; the cross-row checks (t1 < t2,
+// eps < d, alpha > 1/2). Does not: parse text or JSON (params/, io/hash_codec, ivy_state) or grow.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "base/status.h"
+#include "params/param_table.h"
+
+namespace niwa {
+
+// One entry per row of the ivy table, in panel order within each group.
+enum class IvyParam : int {
+  // Table 2 and the nutrient rules p0-p3 (§3.1)
+  kL,
+  kD,
+  kT1,
+  kT2,
+  kN0,
+  kDeltaA,
+  kDeltaD,
+  kAlpha,
+  kKappa,
+  kLambda,
+  kObstacleBreak,
+  // lateral rotation R(θx, θy, θz) of p1 (E11)
+  kThetaX,
+  kThetaY,
+  kThetaZ,
+  kAlternate,
+  // position search (§3.2, E6-E10)
+  kCandidates,
+  kPhi,
+  kRetries,
+  kPhiStep,
+  kGMin,
+  kWDist,
+  kWAngle,
+  kWGrav,
+  kEps,
+  kUpX,
+  kUpY,
+  kUpZ,
+  // the paper's two problems (§4), off in `paper`
+  kMaxBend,
+  kAvoid,
+  // birth geometry (§1.5 of the spec): tubes, leaves, suckers
+  kRTip,
+  kPipeExp,
+  kLeafSize,
+  kPetiole,
+  kLeafAge,
+  kLeafTilt,
+  kCount
+};
+
+const ParamTable& IvyTable();
+const ParamTable& TableOf(IvyParam);
+using IvyParams = StudyParams<IvyParam>;
+
+// Checks what one row's range cannot: t1 < t2 (§3.1), alpha > 1/2 ("A more than D"), eps < d, a
+// non-zero up vector. The error names the row and its allowed range.
+Status ValidateIvyParams(const IvyParams& params);
+
+// The preset names, in the order `niwa presets ivy` prints them.
+const std::vector<std::string>& IvyPresetNames();
+// The table defaults with the preset's overrides; error names "preset" and the allowed names.
+Result<IvyParams> IvyPreset(std::string_view name);
+// The overrides of one preset as (key, value) pairs (for printing).
+std::vector<std::pair<std::string, double>> IvyPresetOverrides(std::string_view name);
+
+}  // namespace niwa

@@ -1,0 +1,62 @@
+// What a grown ivy measures (the paper's claims C1-C4 and problems P1-P2 as numbers, spec §3) and
+// its JSON: the --stats object and the model (buds, internodes, axes, params). Does not: grow,
+// time anything itself (the caller passes the ms fields) or write files.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "geom/tri_mesh.h"
+#include "ivy/growth.h"
+#include "ivy/ivy.h"
+#include "ivy/ivy_params.h"
+
+namespace niwa::ivy {
+
+struct IvyStats {
+  int steps_run = 0, extinct_step = -1;
+  int internodes = 0, buds_A = 0, buds_D = 0, buds_Z = 0;
+  int axes = 0, laterals = 0, max_order = 0, main_axis_internodes = 0;
+  int first_break_step = -1, released_breaks = 0, reiterations = 0, p3_A = 0, p3_D = 0;
+  double rho = 0;  // Σ lateral internodes / Σ parent internodes in the same windows (C4)
+  int lateral_longer_than_parent = 0;
+  double frac_nodes_within_d = 0;  // ε <= clearance <= d, re-measured by brute force (C1)
+  double clearance_min = 0, clearance_max = 0;
+  int internode_hits = 0;  // internodes crossing a face, re-tested by brute force (C1)
+  // Internodes whose end normals differ by > 60°: convex iff (anchor_to - anchor_from)·n_from < 0.
+  int convex_crossings = 0, concave_crossings = 0;
+  double internode_len_err_max = 0;
+  double up_min = 0, up_mean = 0, rise = 0;  // C2
+  double bend_max = 0;                       // degrees (P1)
+  int overlap_pairs = 0;                     // non-adjacent internodes closer than 2 r_tip (P2)
+  int leaves = 0, suckers = 0;
+  double nutrient_total = 0, ledger_err = 0;
+  bool lstring_ok = false;
+  std::size_t tri_count = 0;
+};
+
+// Measures a model grown on `mesh` (nullptr for the free scene); distances are re-measured to
+// `attach_mesh` when given (the support without its obstacle-only triangles).
+IvyStats MeasureIvy(const IvyModel& model, const GrowLog& log, const geom::TriMesh* mesh,
+                    const IvyParams& params, const geom::TriMesh* attach_mesh = nullptr);
+
+// Laterals (axes of order >= 1) alive at the end of step `step` (born at or before it).
+int LateralsAt(const IvyModel& model, int step);
+// Internodes made at or before `step`.
+int InternodesAt(const IvyModel& model, int step);
+
+// Timings the caller measured, printed as ms and ms_<stage>.
+struct IvyTimings {
+  double ms = 0, ms_bvh = 0, ms_rules = 0, ms_search = 0, ms_mesh = 0;
+};
+
+// The --stats object (one line). bvh_visits_per_query is 0 with --accel linear.
+std::string IvyStatsJson(const IvyStats& stats, const GrowLog& log, const IvyModel& model,
+                         const IvyTimings& timings);
+// The model: {buds: [{id, kind, pos, dir, N, parent, children, axis, order, born_step, died_step,
+// anchor, clearance}], internodes: [{from, to, step, axis}], axes: [...], params: {...}, seed,
+// steps}.
+std::string IvyModelJson(const IvyModel& model, const IvyParams& params, uint64_t seed, int steps);
+
+}  // namespace niwa::ivy

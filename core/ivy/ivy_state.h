@@ -1,0 +1,46 @@
+// The one resolver of an ivy run's state (preset, seed, steps, parameters) from a state JSON (the
+// page, --params FILE) or a share-link hash (the page, --url), bare keys on the ivy page and the
+// "ivy." prefix on a composed page. Does not: grow (growth.h), pick the scene or seed points (the
+// CLI and the page do), or parse parameter JSON itself (params/param_json).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "base/status.h"
+#include "ivy/ivy_params.h"
+
+namespace niwa::ivy {
+
+constexpr double kMaxIvySeed = 4294967295.0;
+
+struct IvyState {
+  std::string preset = "paper";
+  IvyParams params;  // the preset's values, then overrides
+  uint64_t seed = 1;
+  int steps = 50;
+};
+
+// Each setter checks its value and leaves the state unchanged on error (field: "preset", "seed",
+// "steps"; the CLI renames it to its flag).
+Status SetIvyPreset(std::string_view name, IvyState* state);  // resets params to the preset's
+Status SetIvySeed(double seed, IvyState* state);              // whole number in [0, 4294967295]
+Status SetIvySteps(double steps, IvyState* state);            // whole number in [0, 10000]
+
+// Applies {preset, seed, steps, params: {key: value}} (or the keys at the top level) onto state; a
+// "preset" resets the parameters first. Strict: the first bad field is the error, state unchanged.
+// The cross-row checks (t1 < t2, ...) are ValidateIvyParams's.
+Status ApplyIvyStateJson(const std::string& text, IvyState* state);
+
+// Applies "#preset=paper&seed=3&steps=50&t1=0.3" (keys prefixed with `prefix`, e.g. "ivy."); keys
+// that are not the ivy's are skipped when `prefix` is non-empty (they belong to another study on a
+// composed page) and dropped with a notice otherwise; bad values are clamped or dropped with a
+// notice (notices are printable one-liners).
+void ApplyIvyHash(std::string_view hash, std::string_view prefix, IvyState* state,
+                  std::vector<std::string>* notices);
+// The hash of a state: preset, seed, steps, and every parameter that differs from the preset.
+std::string EncodeIvyHash(const IvyState& state, std::string_view prefix = "");
+
+}  // namespace niwa::ivy

@@ -1,0 +1,256 @@
+// `niwa ivy grow|scenes`: grow Shindo & Sakamoto's ivy on a built-in scene or a .glb/.gltf/.obj
+// mesh and print its statistics or write it as .json, .lsys (the L-string) or .glb.
+// cli-order: 40
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli_common.h"
+#include "geom/bvh.h"
+#include "geom/mesh_metrics.h"
+#include "geom/primitives.h"
+#include "io/mesh_reader.h"
+#include "ivy/growth.h"
+#include "ivy/ivy_mesh.h"
+#include "ivy/ivy_params.h"
+#include "ivy/ivy_report.h"
+#include "ivy/ivy_state.h"
+#include "ivy/lstring.h"
+#include "ivy/scenes.h"
+#include "params/param_text.h"
+
+namespace niwa::cli {
+namespace {
+
+constexpr int kMaxSubdivide = 8;
+constexpr double kMaxCoordinate = 1e30;
+
+struct IvyOptions {
+  std::string scene, mesh, steps, seed, preset, params_file, url, accel = "bvh", subdivide = "0";
+  std::string out_path;
+  std::vector<std::string> seed_points, sets;
+  bool stats = false;
+};
+
+double Ms(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+double ParseFlagNumber(const std::string& flag, const std::string& text, const FlagRange& range) {
+  std::optional<double> x = ParseNumber(text);
+  if (!x) {
+    Fail(Status::Error(flag, "'" + text + "' is not a number; must be " +
+                                 RangeText(range.min, range.max, range.integer)));
+  }
+  Check(CheckFlag(flag, *x, range));
+  return *x;
+}
+
+// "X,Y,Z" or a named seed of the scene.
+glm::dvec3 ParseSeedPoint(const std::string& text, const ivy::IvyScene* scene) {
+  if (scene != nullptr) {
+    for (const ivy::NamedSeed& s : scene->seeds)
+      if (s.name == text) return s.pos;
+  }
+  std::string names;
+  if (scene != nullptr) {
+    for (const ivy::NamedSeed& s : scene->seeds) names += (names.empty() ? "" : ", ") + s.name;
+  }
+  const std::string range = "must be X,Y,Z (each in [-1e30, 1e30])" +
+                            (names.empty() ? std::string() : " or one of " + names);
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  while (true) {
+    std::size_t comma = text.find(',', start);
+    parts.push_back(text.substr(start, comma == std::string::npos ? comma : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (parts.size() != 3) Fail(Status::Error("--seed-point", "'" + text + "' is unknown; " + range));
+  glm::dvec3 p;
+  for (int i = 0; i < 3; ++i) {
+    std::optional<double> x = ParseNumber(parts[static_cast<std::size_t>(i)]);
+    if (!x || std::fabs(*x) > kMaxCoordinate) {
+      Fail(Status::Error("--seed-point", "'" + text + "' is out of range; " + range));
+    }
+    p[i] = *x;
+  }
+  return p;
+}
+
+ivy::IvyState ResolveState(const IvyOptions& o) {
+  ivy::IvyState state;
+  if (!o.preset.empty()) Check(AsFlag(ivy::SetIvyPreset(o.preset, &state), "--preset"));
+  if (!o.params_file.empty()) {
+    Result<std::string> text = ReadFile(o.params_file, "--params");
+    if (!text.ok()) Fail(text.status());
+    Check(ivy::ApplyIvyStateJson(*text, &state).Within("--params"));
+  }
+  if (!o.url.empty()) {
+    std::vector<std::string> notices;
+    ivy::ApplyIvyHash(o.url, "", &state, &notices);
+    if (!notices.empty()) Fail(Status::Error("--url", notices[0]));
+  }
+  for (const std::string& set : o.sets) Check(state.params.SetFromAssignment(set).Within("--set"));
+  if (!o.steps.empty()) {
+    state.steps = static_cast<int>(ParseFlagNumber("--steps", o.steps, {0, 10000, true}));
+  }
+  if (!o.seed.empty()) {
+    state.seed =
+        static_cast<uint64_t>(ParseFlagNumber("--seed", o.seed, {0, ivy::kMaxIvySeed, true}));
+  }
+  Check(ValidateIvyParams(state.params));
+  return state;
+}
+
+int RunGrow(const IvyOptions& o, std::ostream& out) {
+  const auto t_start = std::chrono::steady_clock::now();
+  const std::string ext = o.out_path.empty() ? "" : Extension(o.out_path);
+  if (!o.out_path.empty() && ext != ".json" && ext != ".lsys" && ext != ".glb") {
+    Fail(Status::Error("--out", "'" + o.out_path + "' must end in .json, .lsys or .glb"));
+  }
+  if (o.accel != "bvh" && o.accel != "linear") {
+    Fail(Status::Error("--accel", "'" + o.accel + "' is unknown; must be bvh or linear"));
+  }
+  const int levels =
+      static_cast<int>(ParseFlagNumber("--subdivide", o.subdivide, {0, kMaxSubdivide, true}));
+  ivy::IvyState state = ResolveState(o);
+  if (!o.mesh.empty() && !o.scene.empty()) {
+    Fail(Status::Error("--mesh", "give either --mesh FILE or --scene NAME, not both"));
+  }
+  ivy::IvyScene scene;
+  io::MeshReadStats read;
+  if (!o.mesh.empty()) {
+    Result<geom::TriMesh> mesh = io::ReadMeshFile(o.mesh, &read);
+    if (!mesh.ok()) Fail(mesh.status().Within("--mesh"));
+    scene.name = o.mesh;
+    scene.mesh = std::move(mesh).value();
+    Check(geom::ValidateMesh(scene.mesh, "--mesh"));
+  } else {
+    Result<ivy::IvyScene> s = ivy::MakeIvyScene(o.scene.empty() ? "cubes4" : o.scene);
+    if (!s.ok()) Fail(s.status());
+    scene = std::move(s).value();
+  }
+  if (levels > 0 && !scene.free) {
+    double after = static_cast<double>(scene.mesh.triangle_count()) * std::pow(4.0, levels);
+    if (after > static_cast<double>(io::kMaxMeshTriangles)) {
+      Fail(Status::Error("--subdivide", std::to_string(levels) + " would make " +
+                                            FormatNumber(after) +
+                                            " triangles; the limit is 4000000 (4 M)"));
+    }
+    scene.mesh = geom::Subdivide(scene.mesh, levels);
+  }
+  std::vector<glm::dvec3> seeds;
+  for (const std::string& s : o.seed_points)
+    seeds.push_back(ParseSeedPoint(s, o.mesh.empty() ? &scene : nullptr));
+  if (seeds.empty()) {
+    if (!o.mesh.empty()) {
+      Fail(Status::Error("--seed-point", "required with --mesh; must be X,Y,Z within d of a face"));
+    }
+    seeds.push_back(scene.seeds[0].pos);
+  }
+  const auto t_bvh0 = std::chrono::steady_clock::now();
+  geom::Bvh bvh, attach_bvh;
+  std::size_t obstacles = 0;
+  geom::TriMesh attach;
+  if (!o.mesh.empty()) attach = ivy::IvyAttachTriangles(scene.mesh, read.materials, &obstacles);
+  if (!scene.free && o.accel == "bvh") bvh = geom::Bvh::Build(scene.mesh);
+  if (obstacles > 0 && o.accel == "bvh") attach_bvh = geom::Bvh::Build(attach);
+  const auto t_bvh1 = std::chrono::steady_clock::now();
+  ivy::Support support;
+  if (!scene.free) {
+    support = {&scene.mesh, &bvh, o.accel == "bvh" ? ivy::Accel::kBvh : ivy::Accel::kLinear};
+    if (obstacles > 0) {
+      support.attach_mesh = &attach;
+      support.attach_bvh = &attach_bvh;
+    }
+  }
+  ivy::GrowLog log;
+  Result<ivy::IvyModel> model =
+      ivy::Grow(support, seeds, state.params, state.steps, state.seed, &log);
+  if (!model.ok()) Fail(model.status());
+  ivy::IvyTimings t;
+  t.ms_bvh = Ms(t_bvh0, t_bvh1);
+  t.ms_rules = log.ms_rules;
+  t.ms_search = log.ms_search;
+  if (!o.out_path.empty()) {
+    std::string bytes;
+    if (ext == ".json") {
+      bytes = ivy::IvyModelJson(*model, state.params, state.seed, state.steps) + "\n";
+    } else if (ext == ".lsys") {
+      bytes = ivy::PrintLString(*model);
+    } else {
+      const auto t0 = std::chrono::steady_clock::now();
+      Result<std::vector<unsigned char>> glb = ivy::WriteIvyGlb(
+          *model, state.params, state.seed, state.steps, scene.free ? nullptr : &scene.mesh);
+      t.ms_mesh = Ms(t0, std::chrono::steady_clock::now());
+      if (!glb.ok()) Fail(glb.status().Within("--out"));
+      bytes.assign(glb->begin(), glb->end());
+    }
+    Check(WriteFileAtomically(o.out_path, bytes).Within("--out"));
+  }
+  if (o.stats) {
+    ivy::IvyStats stats = ivy::MeasureIvy(*model, log, scene.free ? nullptr : &scene.mesh,
+                                          state.params, obstacles > 0 ? &attach : nullptr);
+    t.ms = Ms(t_start, std::chrono::steady_clock::now());
+    out << ivy::IvyStatsJson(stats, log, *model, t) << "\n";
+  }
+  return 0;
+}
+
+int RunScenes(std::ostream& out) {
+  for (const std::string& name : ivy::IvySceneNames()) {
+    ivy::IvyScene s = *ivy::MakeIvyScene(name);
+    out << name << "\t" << s.mesh.triangle_count() << " tris\tseeds";
+    for (const ivy::NamedSeed& seed : s.seeds) {
+      out << " " << seed.name << "=(" << FormatNumber(seed.pos.x) << "," << FormatNumber(seed.pos.y)
+          << "," << FormatNumber(seed.pos.z) << ")";
+    }
+    out << "\t" << s.description << "\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+void AddIvyCommands(CLI::App& app, CommandList& commands) {
+  commands.studies.push_back({"ivy", &IvyTable(), [](std::ostream& out) {
+                                for (const std::string& name : IvyPresetNames()) {
+                                  out << name;
+                                  for (const auto& [key, value] : IvyPresetOverrides(name))
+                                    out << "\t" << key << "=" << FormatNumber(value);
+                                  out << "\n";
+                                }
+                              }});
+  CLI::App* ivy_app = Subcommand(app, "ivy", "Grow climbing ivy over a mesh (Shindo & Sakamoto)");
+  ivy_app->require_subcommand(1);
+  auto o = std::make_shared<IvyOptions>();
+  CLI::App* grow = ivy_app->add_subcommand(
+      "grow", "Grow ivy on a built-in scene or a mesh; print --stats or write --out");
+  grow->add_option("--scene", o->scene,
+                   "Built-in support: cubes4 (default), wall, overhang, stairs, pillar, sphere, "
+                   "free (see 'niwa ivy scenes')");
+  grow->add_option("--mesh", o->mesh, "Support mesh file: .glb, .gltf or .obj");
+  grow->add_option("--seed-point", o->seed_points,
+                   "Growth start X,Y,Z or a scene's named seed; repeat for several plants");
+  grow->add_option("--steps", o->steps, "Final step number, 0..10000 (default 50)");
+  grow->add_option("--seed", o->seed, "Random seed, 0..4294967295 (default 1)");
+  grow->add_option("--preset", o->preset, "paper (default), literal, improved or metric");
+  grow->add_option("--set", o->sets, "KEY=VALUE of the ivy table ('niwa params ivy')");
+  grow->add_option("--params", o->params_file, "State JSON {preset, seed, steps, params}");
+  grow->add_option("--url", o->url, "Share-link hash: preset=..&seed=..&steps=..&KEY=V");
+  grow->add_option("--accel", o->accel, "Geometry queries: bvh (default) or linear (brute force)");
+  grow->add_option("--subdivide", o->subdivide,
+                   "Split every support triangle into 4^K coplanar ones, K in [0, 8]");
+  grow->add_flag("--stats", o->stats, "Print one JSON object of statistics on stdout");
+  grow->add_option("--out", o->out_path, "Write .json (buds, internodes), .lsys or .glb");
+  commands.push_back({grow, [o](std::ostream& out) { return RunGrow(*o, out); }});
+  CLI::App* scenes = ivy_app->add_subcommand("scenes", "List the built-in scenes and seeds");
+  commands.push_back({scenes, [](std::ostream& out) { return RunScenes(out); }});
+}
+
+}  // namespace niwa::cli

@@ -1,0 +1,82 @@
+// Ivy CLI: native == WASM `niwa ivy grow --stats` (minus the ms fields) and the .json, byte for byte,
+// for every built-in scene and seeds 1-5; the .glb validates with Khronos' gltf-validator (0 errors)
+// and carries _BIRTH_STEP; hostile input is one line naming the field, exit 2, no file left behind.
+import { execFileSync, spawnSync } from 'node:child_process';
+import { existsSync, mkdtempSync, readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+
+const root = process.env.NIWA_ROOT;
+const native = process.env.NIWA_NATIVE;
+const wasm = process.env.NIWA_WASM || join(root, 'build/wasm/bin/niwa.js');
+let passed = 0, failed = 0;
+const check = (ok, what) => { ok ? passed++ : failed++; console.log(`${ok ? 'PASS' : 'FAIL'} ${what}`); };
+if (!existsSync(wasm)) {
+  console.log(`FAIL WASM CLI missing at ${wasm}: build the wasm-release preset first`);
+  process.exit(1);
+}
+const run = (cmd, args) => cmd.endsWith('.js')
+  ? execFileSync('node', [cmd, ...args], { encoding: 'utf8' })
+  : execFileSync(cmd, args, { encoding: 'utf8' });
+const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => !k.startsWith('ms')));
+
+const dir = mkdtempSync(join(tmpdir(), 'niwa-ivy-'));
+const scenes = run(native, ['ivy', 'scenes']).trim().split('\n').map((l) => l.split('\t')[0]);
+check(scenes.includes('cubes4') && scenes.length >= 7, `scenes listed: ${scenes.join(', ')}`);
+for (const scene of scenes) {
+  for (let seed = 1; seed <= 5; seed++) {
+    const args = ['ivy', 'grow', '--scene', scene, '--steps', '50', '--seed', String(seed), '--stats'];
+    const a = JSON.parse(run(native, [...args, '--out', join(dir, `${scene}-${seed}-n.json`)]));
+    const b = JSON.parse(run(wasm, [...args, '--out', join(dir, `${scene}-${seed}-w.json`)]));
+    const same = JSON.stringify(withoutMs(a)) === JSON.stringify(withoutMs(b));
+    check(same, `${scene} seed ${seed}: --stats native == WASM (${a.internodes} internodes, ${a.laterals} laterals)`);
+    const ja = readFileSync(join(dir, `${scene}-${seed}-n.json`), 'utf8');
+    const jb = readFileSync(join(dir, `${scene}-${seed}-w.json`), 'utf8');
+    check(ja.length > 100 && ja === jb, `${scene} seed ${seed}: .json identical (${ja.length} bytes)`);
+  }
+}
+// cubes4 side with two seed points, and the improved preset, also agree.
+for (const extra of [['--seed-point', 'side', '--seed-point', 'column'], ['--preset', 'improved']]) {
+  const args = ['ivy', 'grow', '--scene', 'cubes4', ...extra, '--stats'];
+  const a = JSON.parse(run(native, args)), b = JSON.parse(run(wasm, args));
+  check(JSON.stringify(withoutMs(a)) === JSON.stringify(withoutMs(b)), `cubes4 ${extra.join(' ')}: native == WASM`);
+}
+
+// .glb: validator-clean, with _BIRTH_STEP.
+const require = createRequire(join(root, 'package.json'));
+const validatorModule = await import(pathToFileURL(require.resolve('gltf-validator')).href);
+const validator = validatorModule.default ?? validatorModule;
+const glbPath = join(dir, 'ivy.glb');
+run(native, ['ivy', 'grow', '--scene', 'cubes4', '--out', glbPath]);
+const glb = new Uint8Array(readFileSync(glbPath));
+const report = await validator.validateBytes(glb);
+check(report.issues.numErrors === 0, `ivy.glb: ${report.issues.numErrors} validator errors, ${report.issues.numWarnings} warnings`);
+const jsonLength = new DataView(glb.buffer, glb.byteOffset).getUint32(12, true);
+const gltf = JSON.parse(new TextDecoder().decode(glb.subarray(20, 20 + jsonLength)));
+const names = gltf.nodes.map((n) => n.name);
+check(['ivy_stems', 'ivy_leaves', 'ivy_suckers'].every((n) => names.includes(n)), `ivy.glb nodes: ${names.join(', ')}`);
+const ivyMeshes = gltf.meshes.filter((m) => m.name.startsWith('ivy_'));
+check(ivyMeshes.length === 3 && ivyMeshes.every((m) => '_BIRTH_STEP' in m.primitives[0].attributes), 'every ivy_* primitive of ivy.glb has _BIRTH_STEP');
+
+// Hostile input: one line, exit 2, no file.
+const hostile = [
+  [['--set', 't1=0.9'], 't1'], [['--steps', '-1'], '--steps'], [['--set', 'L=nan'], '--set: L'],
+  [['--seed-point', '600,10,450'], '--seed-point'], [['--url', 'steps=-3'], '--url'],
+  [['--url', 't1=abc'], '--url'], [['--preset', 'x'], '--preset'], [['--scene', 'moon'], '--scene'],
+  [['--seed', '-2'], '--seed'], [['--set', 'eps=30'], 'eps'], [['--mesh', join(dir, 'none.glb'), '--seed-point', '0,0,0'], '--mesh'],
+];
+for (const [args, field] of hostile) {
+  for (const cmd of [native, wasm]) {
+    const out = join(dir, 'bad.json');
+    const r = cmd.endsWith('.js')
+      ? spawnSync('node', [cmd, 'ivy', 'grow', ...args, '--out', out], { encoding: 'utf8' })
+      : spawnSync(cmd, ['ivy', 'grow', ...args, '--out', out], { encoding: 'utf8' });
+    const lines = r.stderr.trim().split('\n');
+    check(r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${field}`) && !existsSync(out),
+      `${cmd.endsWith('.js') ? 'wasm' : 'native'} ${args.join(' ')}: exit ${r.status}, "${lines[0]}"`);
+  }
+}
+console.log(`${passed} passed, ${failed} failed`);
+process.exit(failed ? 1 : 0);

@@ -1,0 +1,125 @@
+// `niwa ivy` in-process (natively and under node on WASM): --stats carries every key the issue
+// names, --out .lsys re-interprets to the .json's internodes, `niwa params ivy` lists Table 2, and
+// bad input is one line with exit 2 and no file.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "ivy/lstring.h"
+#include "support/cli_runner.h"
+
+namespace niwa {
+namespace {
+
+std::string Slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(IvyCli, StatsHaveEveryNamedKey) {
+  CliResult r = RunNiwa({"ivy", "grow", "--scene", "cubes4", "--seed-point", "column", "--stats"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  for (const char* key : {"steps_run",
+                          "internodes",
+                          "buds",
+                          "laterals",
+                          "first_break_step",
+                          "main_axis_internodes",
+                          "rho",
+                          "frac_nodes_within_d",
+                          "internode_hits",
+                          "up_min",
+                          "bend_max",
+                          "overlap_pairs",
+                          "leaves",
+                          "tri_count",
+                          "queries",
+                          "bvh_visits_per_query",
+                          "ms",
+                          "ms_bvh",
+                          "ms_rules",
+                          "ms_search",
+                          "ms_mesh",
+                          "ledger_err",
+                          "lstring_ok"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["steps_run"], 50);
+  EXPECT_EQ(j["tri_count"], 20);
+  EXPECT_EQ(j["frac_nodes_within_d"], 1.0);
+  EXPECT_EQ(j["internode_hits"], 0);
+  EXPECT_EQ(j["lstring_ok"], true);
+  EXPECT_GT(j["queries"]["closest"].get<int>(), 0);
+  EXPECT_EQ(j["buds"]["A"].get<int>() + j["buds"]["D"].get<int>() + j["buds"]["Z"].get<int>(),
+            j["internodes"].get<int>() + 1);
+}
+
+TEST(IvyCli, LsysAndJsonDescribeTheSameIvy) {
+  const std::string lsys = "ivy_cli_test.lsys", json = "ivy_cli_test.json";
+  ASSERT_EQ(RunNiwa({"ivy", "grow", "--seed", "4", "--out", lsys}).code, 0);
+  ASSERT_EQ(RunNiwa({"ivy", "grow", "--seed", "4", "--out", json}).code, 0);
+  auto drawn = ivy::InterpretLString(Slurp(lsys));
+  ASSERT_TRUE(drawn.ok()) << drawn.status().Line();
+  nlohmann::json j = nlohmann::json::parse(Slurp(json));
+  ASSERT_EQ(drawn->size(), j["internodes"].size());
+  EXPECT_EQ(j["params"]["L"], 50.0);
+  EXPECT_EQ(j["buds"].size(), j["internodes"].size() + 1);
+  EXPECT_EQ(j["buds"][0]["kind"].get<std::string>().size(), 1u);
+  std::remove(lsys.c_str());
+  std::remove(json.c_str());
+}
+
+TEST(IvyCli, ParamsAndScenesAreListed) {
+  CliResult p = RunNiwa({"params", "ivy"});
+  ASSERT_EQ(p.code, 0) << p.err;
+  EXPECT_NE(p.out.find("t1\tt₁"), std::string::npos);
+  EXPECT_NE(p.out.find("default 0.8"), std::string::npos);
+  CliResult s = RunNiwa({"ivy", "scenes"});
+  ASSERT_EQ(s.code, 0);
+  EXPECT_NE(s.out.find("cubes4\t20 tris"), std::string::npos);
+}
+
+TEST(IvyCli, ObstacleMaterialsAreNotSupports) {
+  // materials.glb: a unit triangle of material noivy_glass at z = 0, soil at z = 1, bare at z = 2.
+  const std::string mesh = std::string(NIWA_SOURCE_DIR) + "/tests/data/meshes/materials.glb";
+  CliResult glass = RunNiwa({"ivy", "grow", "--mesh", mesh, "--preset", "metric", "--seed-point",
+                             "0.2,0.2,0.01", "--steps", "5"});
+  EXPECT_EQ(glass.code, 2);
+  EXPECT_NE(glass.err.find("from the nearest face; must be within d = 0.02"), std::string::npos)
+      << glass.err;
+  CliResult soil = RunNiwa({"ivy", "grow", "--mesh", mesh, "--preset", "metric", "--seed-point",
+                            "0.2,0.2,1.01", "--steps", "20", "--stats"});
+  ASSERT_EQ(soil.code, 0) << soil.err;
+  nlohmann::json j = nlohmann::json::parse(soil.out);
+  EXPECT_GT(j["internodes"].get<int>(), 3);
+  EXPECT_EQ(j["frac_nodes_within_d"], 1.0);
+}
+
+TEST(IvyCli, BadInputIsOneLineExit2NoFile) {
+  const std::string out = "ivy_cli_bad.json";
+  for (std::vector<std::string> args :
+       std::vector<std::vector<std::string>>{{"--set", "t1=0.9"},
+                                             {"--steps", "-1"},
+                                             {"--set", "d=nan"},
+                                             {"--seed-point", "600,10,450"},
+                                             {"--url", "t2=x"}}) {
+    std::vector<std::string> full = {"ivy", "grow"};
+    full.insert(full.end(), args.begin(), args.end());
+    full.push_back("--out");
+    full.push_back(out);
+    CliResult r = RunNiwa(full);
+    EXPECT_EQ(r.code, 2) << args[0];
+    EXPECT_EQ(r.err.find("niwa: error: "), 0u) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+    EXPECT_FALSE(std::ifstream(out).good()) << args[0];
+  }
+}
+
+}  // namespace
+}  // namespace niwa
