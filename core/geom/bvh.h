@@ -15,6 +15,16 @@
 // Build: centroids binned along the widest axis (Wald 2007), SAH cost N_L·A_L + N_R·A_R per bin
 // boundary, leaves of at most max_leaf_triangles.
 //
+// Layout (why: at 4 M triangles the tree is ~67 MB and a query's cost is cache misses, one per
+// level, not box tests): the binary SAH tree (nodes(), 32-byte nodes, children as a pair) is
+// collapsed into a 4-wide tree (wide_nodes()), which is what the queries traverse. A wide node is
+// 128 bytes, 64-aligned (two adjacent cache lines), holds its up-to-four children's boxes side by
+// side (so they are tested from the parent, and a pruned child is never fetched) and is stored
+// depth first. That halves the dependent fetches per query (depth ~21 -> ~11 at 4 M); pushed
+// children are prefetched. Measured 4 M / 4 k query cost, one run: closest 5.0x -> 3.8x,
+// segment 3.4x -> 2.5x (commit message of this change has the table). The binary nodes stay:
+// the build, the structure tests and the determinism digest read them.
+//
 // Determinism: the build is single-threaded, in a fixed order (recursive, left child first),
 // with float bounds and double SAH costs; ties between split candidates go to the lowest axis and
 // bin. Same mesh, same options: the same nodes, bit for bit, on every build.
@@ -55,7 +65,8 @@ struct alignas(64) BvhWideNode {
   uint32_t child[4];  // inner child: its wide node index; leaf child: its first slot in order()
   uint32_t count[4];  // 0: inner child; 1..16: a leaf of that many triangles; kEmpty: unused
   Bounds3 ChildBounds(int k) const {
-    return Bounds3{glm::vec3(min_x[k], min_y[k], min_z[k]), glm::vec3(max_x[k], max_y[k], max_z[k])};
+    return Bounds3{glm::vec3(min_x[k], min_y[k], min_z[k]),
+                   glm::vec3(max_x[k], max_y[k], max_z[k])};
   }
 };
 
