@@ -27,7 +27,7 @@ ClosestHit ClosestPoint(const TriMesh& mesh, const Bvh& bvh, glm::vec3 p, float 
     if (e.key > state.best_d2) continue;  // the best got closer since this was pushed
     if (e.count > 0) {                    // a leaf
       for (uint32_t i = e.index; i < e.index + e.count; ++i)
-        state.TestLazy(&corners[3 * static_cast<std::size_t>(i)], pd, &order[i]);
+        state.Test(&corners[3 * static_cast<std::size_t>(i)], pd, order[i]);
       tested += e.count;
       continue;
     }

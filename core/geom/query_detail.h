@@ -101,18 +101,6 @@ struct ClosestState {
       found = true;
     }
   }
-  // Test with the triangle index read from *t only when the triangle can win (d2 <= best), so a
-  // BVH leaf's order() entries are not fetched for triangles that lose: the same result as Test.
-  void TestLazy(const glm::vec3* abc, const DVec3& p, const uint32_t* t) {
-    TrianglePoint q = ClosestPointOnTriangle(p, ToD(abc[0]), ToD(abc[1]), ToD(abc[2]));
-    if (!(q.distance_squared <= best_d2)) return;  // also drops NaN, as Test does
-    if (q.distance_squared < best_d2 || *t < best_t) {
-      best_d2 = q.distance_squared;
-      best_t = *t;
-      best_point = q;
-      found = true;
-    }
-  }
   ClosestHit Result() const {
     ClosestHit h;
     if (!found) return h;
