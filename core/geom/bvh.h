@@ -20,10 +20,13 @@
 // collapsed into a 4-wide tree (wide_nodes()), which is what the queries traverse. A wide node is
 // 128 bytes, 64-aligned (two adjacent cache lines), holds its up-to-four children's boxes side by
 // side (so they are tested from the parent, and a pruned child is never fetched) and is stored
-// depth first. That halves the dependent fetches per query (depth ~21 -> ~11 at 4 M); pushed
-// children are prefetched. Measured 4 M / 4 k query cost, one run: closest 5.0x -> 3.8x,
-// segment 3.4x -> 2.5x (commit message of this change has the table). The binary nodes stay:
-// the build, the structure tests and the determinism digest read them.
+// depth first. That halves the dependent fetches per query (depth 13 -> 6 on a 16 k wall); pushed
+// children are prefetched (a hint; its own gain was within the noise). Measured (native, one
+// interleaved run of 5 rounds against the binary traversal, loaded 2-core machine, median ns per
+// query, 4 M / 4 k): closest 5.2x -> 3.4x, closest-walk 6.9x -> 3.3x, segment 5.2x -> 4.3x (fastest
+// reps: 6.1 -> 3.7, 5.6 -> 4.0, 2.9 -> 2.6). Tried and dropped: reading order() only for a winning
+// triangle (did not pay). The binary nodes stay (the wide tree adds ~1/6 of their count at 128
+// bytes each): the build, the structure tests and the determinism digest read them.
 //
 // Determinism: the build is single-threaded, in a fixed order (recursive, left child first),
 // with float bounds and double SAH costs; ties between split candidates go to the lowest axis and
