@@ -175,7 +175,84 @@ struct Builder {
   }
 };
 
+// Collapses the binary tree into 4-wide nodes, depth first (a node's first inner child follows it
+// in memory), children kept in their left-to-right binary order.
+struct Widener {
+  const std::vector<BvhNode>& nodes;
+  std::vector<BvhWideNode>& wide;
+  int max_depth = 0;
+
+  // b: a binary node; returns the index of the wide node holding b's children (or b itself when b
+  // is a leaf, which happens only for a single-leaf tree's root).
+  uint32_t Emit(uint32_t b, int depth) {
+    max_depth = std::max(max_depth, depth);
+    const uint32_t w = static_cast<uint32_t>(wide.size());
+    wide.emplace_back();
+    uint32_t kids[4];
+    int k = 0;
+    if (nodes[b].is_leaf()) {
+      kids[k++] = b;
+    } else {
+      kids[k++] = nodes[b].first;
+      kids[k++] = nodes[b].first + 1;
+    }
+    while (k < 4) {  // open the inner child of largest surface area (ties: the leftmost)
+      int pick = -1;
+      float best = 0.0f;
+      for (int i = 0; i < k; ++i) {
+        if (nodes[kids[i]].is_leaf()) continue;
+        float a = nodes[kids[i]].bounds.SurfaceArea();
+        if (pick < 0 || a > best) {
+          pick = i;
+          best = a;
+        }
+      }
+      if (pick < 0) break;
+      const uint32_t first = nodes[kids[pick]].first;
+      for (int i = k; i > pick + 1; --i) kids[i] = kids[i - 1];
+      kids[pick] = first;
+      kids[pick + 1] = first + 1;
+      ++k;
+    }
+    for (int i = 0; i < 4; ++i) {
+      BvhWideNode& n = wide[w];
+      if (i >= k) {
+        n.min_x[i] = n.min_y[i] = n.min_z[i] = 0.0f;
+        n.max_x[i] = n.max_y[i] = n.max_z[i] = 0.0f;
+        n.child[i] = 0;
+        n.count[i] = BvhWideNode::kEmpty;
+        continue;
+      }
+      const BvhNode& c = nodes[kids[i]];
+      n.min_x[i] = c.bounds.min.x;
+      n.min_y[i] = c.bounds.min.y;
+      n.min_z[i] = c.bounds.min.z;
+      n.max_x[i] = c.bounds.max.x;
+      n.max_y[i] = c.bounds.max.y;
+      n.max_z[i] = c.bounds.max.z;
+      n.count[i] = c.count;
+      n.child[i] = c.first;
+    }
+    for (int i = 0; i < k; ++i) {
+      if (nodes[kids[i]].is_leaf()) continue;
+      const uint32_t child = Emit(kids[i], depth + 1);  // may grow `wide`: index it afresh
+      wide[w].child[i] = child;
+    }
+    return w;
+  }
+};
+
 }  // namespace
+
+void Bvh::BuildWide() {
+  wide_.clear();
+  wide_depth_ = 0;
+  if (nodes_.empty()) return;
+  wide_.reserve(nodes_.size() / 3 + 1);
+  Widener widener{nodes_, wide_};
+  widener.Emit(0, 1);
+  wide_depth_ = widener.max_depth;
+}
 
 Bvh Bvh::Build(const TriMesh& mesh, const BvhOptions& options_in) {
   BvhOptions options = options_in;
@@ -211,6 +288,7 @@ Bvh Bvh::Build(const TriMesh& mesh, const BvhOptions& options_in) {
       bvh.corners_[3 * i + k] = mesh.positions[mesh.indices[3 * static_cast<std::size_t>(t) + k]];
   }
   bvh.depth_ = b.max_depth;
+  bvh.BuildWide();
   return bvh;
 }
 

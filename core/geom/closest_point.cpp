@@ -1,5 +1,6 @@
-// ClosestPoint through the BVH: depth-first, nearer child first, pruning boxes farther than the
-// best distance so far (ties kept, so the lowest triangle index wins as in the linear twin).
+// ClosestPoint through the BVH's 4-wide tree: depth-first, the four child boxes of a node tested
+// from the node itself and entered nearest first, pruning boxes farther than the best distance so
+// far (ties kept, so the lowest triangle index wins as in the linear twin).
 #include "geom/closest_point.h"
 
 #include "geom/query_detail.h"
@@ -13,39 +14,36 @@ ClosestHit ClosestPoint(const TriMesh& mesh, const Bvh& bvh, glm::vec3 p, float 
   if (state.best_d2 < 0.0 || bvh.empty() || bvh.triangle_count() != mesh.triangle_count())
     return {};
   const DVec3 pd = ToD(p);
-  const std::vector<BvhNode>& nodes = bvh.nodes();
-  const std::vector<uint32_t>& order = bvh.order();
-  const std::vector<glm::vec3>& corners = bvh.corners();
+  const BvhWideNode* wide = bvh.wide_nodes().data();
+  const uint32_t* order = bvh.order().data();
+  const glm::vec3* corners = bvh.corners().data();
   uint64_t visited = 1, tested = 0;
-  struct Entry {
-    uint32_t node;
-    double d2;
-  };
-  Entry stack[detail::kMaxStack];
+  detail::WideEntry stack[detail::kMaxStack];
   int top = 0;
-  double root_d2 = detail::BoxDistanceSquared(nodes[0].bounds, pd);
-  if (root_d2 <= state.best_d2) stack[top++] = {0, root_d2};
+  double root_d2 = detail::BoxDistanceSquared(bvh.nodes()[0].bounds, pd);
+  if (root_d2 <= state.best_d2) stack[top++] = {0, 0, root_d2};
   while (top > 0) {
-    Entry e = stack[--top];
-    if (e.d2 > state.best_d2) continue;  // the best got closer since this was pushed
-    const BvhNode& n = nodes[e.node];
-    if (n.is_leaf()) {
-      for (uint32_t i = n.first; i < n.first + n.count; ++i)
+    const detail::WideEntry e = stack[--top];
+    if (e.key > state.best_d2) continue;  // the best got closer since this was pushed
+    if (e.count > 0) {                    // a leaf
+      for (uint32_t i = e.index; i < e.index + e.count; ++i)
         state.Test(&corners[3 * static_cast<std::size_t>(i)], pd, order[i]);
-      tested += n.count;
+      tested += e.count;
       continue;
     }
-    uint32_t l = n.first, r = n.first + 1;
-    double dl = detail::BoxDistanceSquared(nodes[l].bounds, pd);
-    double dr = detail::BoxDistanceSquared(nodes[r].bounds, pd);
-    visited += 2;
+    const BvhWideNode& n = wide[e.index];
+    detail::WideEntry kids[4];
+    int k = 0;
+    for (int i = 0; i < 4 && n.count[i] != BvhWideNode::kEmpty; ++i) {
+      ++visited;
+      double d2 = detail::WideBoxDistanceSquared(n, i, pd);
+      if (d2 <= state.best_d2) kids[k++] = {n.child[i], n.count[i], d2};
+    }
     // Push the farther first so the nearer is searched first (left first on equal distance).
-    if (dl <= dr) {
-      if (dr <= state.best_d2) stack[top++] = {r, dr};
-      if (dl <= state.best_d2) stack[top++] = {l, dl};
-    } else {
-      if (dl <= state.best_d2) stack[top++] = {l, dl};
-      if (dr <= state.best_d2) stack[top++] = {r, dr};
+    detail::SortDescending(kids, k);
+    for (int i = 0; i < k; ++i) {
+      detail::Prefetch(kids[i], wide, corners);
+      stack[top++] = kids[i];
     }
   }
   if (stats) {

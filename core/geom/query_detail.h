@@ -2,13 +2,16 @@
 // their linear twins share, so both give the same bits. Does not: traverse anything.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <limits>
+#include <utility>
 
 #include "geom/bounds.h"
+#include "geom/bvh.h"
 #include "geom/closest_point.h"
 #include "geom/ray_cast.h"
 #include "geom/tri_mesh.h"
@@ -16,8 +19,39 @@
 
 namespace niwa::geom::detail {
 
-// Deepest BVH (bvh.cpp keeps it <= 132) plus room: the traversal stacks' size.
-constexpr int kMaxStack = 256;
+// The traversal stacks' size. A wide node pushes at most 4 entries for the 1 it pops, and the wide
+// tree is no deeper than the binary one (bvh.cpp keeps that <= 132): <= 3 * 132 + 1 entries.
+constexpr int kMaxStack = 512;
+
+// A stack entry of the wide traversals: a wide node (count == 0) or a leaf's triangles order()
+// [index, index + count); key: the box's squared distance or slab entry, for pruning on pop.
+struct WideEntry {
+  uint32_t index;
+  uint32_t count;
+  double key;
+};
+
+// Sorts kids[0..k) by key, largest first, so pushing them in this order puts the nearest on top
+// (on equal keys the leftmost child is pushed last, so it is searched first).
+inline void SortDescending(WideEntry* kids, int k) {
+  for (int i = 1; i < k; ++i)
+    for (int j = i; j > 0 && kids[j - 1].key <= kids[j].key; --j) std::swap(kids[j - 1], kids[j]);
+}
+
+// Asks the cache for what popping e will read (a hint only: no effect on any result).
+inline void Prefetch(const WideEntry& e, const BvhWideNode* wide, const glm::vec3* corners) {
+#if defined(__GNUC__) || defined(__clang__)
+  if (e.count == 0) {
+    const char* p = reinterpret_cast<const char*>(wide + e.index);
+    __builtin_prefetch(p);
+    __builtin_prefetch(p + 64);
+  } else {
+    __builtin_prefetch(corners + 3 * static_cast<std::size_t>(e.index));
+  }
+#else
+  (void)e, (void)wide, (void)corners;
+#endif
+}
 
 inline void Corners(const TriMesh& mesh, uint32_t t, DVec3* a, DVec3* b, DVec3* c) {
   const std::size_t i = 3 * static_cast<std::size_t>(t);
@@ -160,6 +194,11 @@ inline double BoxDistanceSquared(const Bounds3& b, const DVec3& p) {
   double dz =
       std::max({static_cast<double>(b.min.z) - p.z, 0.0, p.z - static_cast<double>(b.max.z)});
   return dx * dx + dy * dy + dz * dz;
+}
+
+// BoxDistanceSquared of child slot k of a wide node.
+inline double WideBoxDistanceSquared(const BvhWideNode& n, int k, const DVec3& p) {
+  return BoxDistanceSquared(n.ChildBounds(k), p);
 }
 
 // Slab test: does origin + t dir meet box b for some t in [0, t_max]? Sets *t_near (entry, >= 0).

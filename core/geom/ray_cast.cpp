@@ -1,5 +1,6 @@
-// FirstHit and SegmentHits through the BVH: depth-first, nearer child (by slab entry) first; a box
-// entered beyond the best hit so far is skipped (ties kept for the lowest triangle index).
+// FirstHit and SegmentHits through the BVH's 4-wide tree: depth-first, a node's four child boxes
+// slab-tested from the node, nearer entry first; a box entered beyond the best hit so far is
+// skipped (ties kept for the lowest triangle index).
 #include "geom/ray_cast.h"
 
 #include "geom/query_detail.h"
@@ -14,45 +15,36 @@ RayHit FirstHit(const TriMesh& mesh, const Bvh& bvh, glm::vec3 origin, glm::vec3
   detail::PreparedRay ray = detail::PrepareRay(origin, dir, /*normalize=*/true);
   if (!ray.valid) return {};
   detail::RayState state(static_cast<double>(max_distance));
-  const std::vector<BvhNode>& nodes = bvh.nodes();
-  const std::vector<uint32_t>& order = bvh.order();
-  const std::vector<glm::vec3>& corners = bvh.corners();
+  const BvhWideNode* wide = bvh.wide_nodes().data();
+  const uint32_t* order = bvh.order().data();
+  const glm::vec3* corners = bvh.corners().data();
   uint64_t visited = 1, tested = 0;
-  struct Entry {
-    uint32_t node;
-    double t_near;
-  };
-  Entry stack[detail::kMaxStack];
+  detail::WideEntry stack[detail::kMaxStack];
   int top = 0;
   double t0;
-  if (detail::RayBox(nodes[0].bounds, ray, state.best_t, &t0)) stack[top++] = {0, t0};
+  if (detail::RayBox(bvh.nodes()[0].bounds, ray, state.best_t, &t0)) stack[top++] = {0, 0, t0};
   while (top > 0) {
-    Entry e = stack[--top];
-    if (e.t_near > state.best_t) continue;
-    const BvhNode& n = nodes[e.node];
-    if (n.is_leaf()) {
-      for (uint32_t i = n.first; i < n.first + n.count; ++i)
+    const detail::WideEntry e = stack[--top];
+    if (e.key > state.best_t) continue;
+    if (e.count > 0) {  // a leaf
+      for (uint32_t i = e.index; i < e.index + e.count; ++i)
         state.Test(&corners[3 * static_cast<std::size_t>(i)], ray, order[i]);
-      tested += n.count;
+      tested += e.count;
       continue;
     }
-    uint32_t l = n.first, r = n.first + 1;
-    double tl = 0, tr = 0;
-    bool hl = detail::RayBox(nodes[l].bounds, ray, state.best_t, &tl);
-    bool hr = detail::RayBox(nodes[r].bounds, ray, state.best_t, &tr);
-    visited += 2;
-    if (hl && hr) {
-      if (tl <= tr) {
-        stack[top++] = {r, tr};
-        stack[top++] = {l, tl};
-      } else {
-        stack[top++] = {l, tl};
-        stack[top++] = {r, tr};
-      }
-    } else if (hl) {
-      stack[top++] = {l, tl};
-    } else if (hr) {
-      stack[top++] = {r, tr};
+    const BvhWideNode& n = wide[e.index];
+    detail::WideEntry kids[4];
+    int k = 0;
+    for (int i = 0; i < 4 && n.count[i] != BvhWideNode::kEmpty; ++i) {
+      ++visited;
+      double t_near;
+      if (detail::RayBox(n.ChildBounds(i), ray, state.best_t, &t_near))
+        kids[k++] = {n.child[i], n.count[i], t_near};
+    }
+    detail::SortDescending(kids, k);  // nearest entry on top
+    for (int i = 0; i < k; ++i) {
+      detail::Prefetch(kids[i], wide, corners);
+      stack[top++] = kids[i];
     }
   }
   if (stats) {
@@ -67,26 +59,33 @@ bool SegmentHits(const TriMesh& mesh, const Bvh& bvh, glm::vec3 a, glm::vec3 b, 
   if (bvh.empty() || bvh.triangle_count() != mesh.triangle_count()) return false;
   detail::PreparedRay seg = detail::PrepareRay(a, b - a, /*normalize=*/false);
   if (!seg.valid) return false;
-  const std::vector<BvhNode>& nodes = bvh.nodes();
-  const std::vector<glm::vec3>& corners = bvh.corners();
+  const BvhWideNode* wide = bvh.wide_nodes().data();
+  const glm::vec3* corners = bvh.corners().data();
   uint64_t visited = 1, tested = 0;
-  uint32_t stack[detail::kMaxStack];
+  detail::WideEntry stack[detail::kMaxStack];
   int top = 0;
   double t_near;
   bool hit = false;
-  if (detail::RayBox(nodes[0].bounds, seg, 1.0, &t_near)) stack[top++] = 0;
+  if (detail::RayBox(bvh.nodes()[0].bounds, seg, 1.0, &t_near)) stack[top++] = {0, 0, 0.0};
   while (top > 0 && !hit) {
-    const BvhNode& n = nodes[stack[--top]];
-    if (n.is_leaf()) {
-      for (uint32_t i = n.first; i < n.first + n.count && !hit; ++i) {
+    const detail::WideEntry e = stack[--top];
+    if (e.count > 0) {  // a leaf
+      for (uint32_t i = e.index; i < e.index + e.count && !hit; ++i) {
         ++tested;
         hit = detail::SegmentTriangle(&corners[3 * static_cast<std::size_t>(i)], seg);
       }
       continue;
     }
-    visited += 2;
-    if (detail::RayBox(nodes[n.first + 1].bounds, seg, 1.0, &t_near)) stack[top++] = n.first + 1;
-    if (detail::RayBox(nodes[n.first].bounds, seg, 1.0, &t_near)) stack[top++] = n.first;
+    const BvhWideNode& n = wide[e.index];
+    for (int i = 3; i >= 0; --i) {  // left child on top
+      if (n.count[i] == BvhWideNode::kEmpty) continue;
+      ++visited;
+      if (detail::RayBox(n.ChildBounds(i), seg, 1.0, &t_near)) {
+        const detail::WideEntry c{n.child[i], n.count[i], 0.0};
+        detail::Prefetch(c, wide, corners);
+        stack[top++] = c;
+      }
+    }
   }
   if (stats) {
     stats->nodes_visited += visited;

@@ -18,6 +18,7 @@ namespace niwa::geom {
 // Reaches into a Bvh to break it on purpose.
 struct BvhTestAccess {
   static std::vector<BvhNode>& nodes(Bvh& bvh) { return bvh.nodes_; }
+  static void Rewiden(Bvh& bvh) { bvh.BuildWide(); }  // the queries' wide tree from nodes_ again
 };
 
 namespace {
@@ -50,12 +51,54 @@ int CheckSubtree(const TriMesh& mesh, const Bvh& bvh, uint32_t node, std::vector
                       CheckSubtree(mesh, bvh, n.first + 1, seen, max_leaf));
 }
 
+// Walks the wide tree below wide node w (whose box is `box`): slots fill from 0, child boxes nest
+// in `box`, leaves hold their triangles; returns the depth in wide levels.
+int CheckWideSubtree(const TriMesh& mesh, const Bvh& bvh, uint32_t w, const Bounds3& box,
+                     std::vector<int>* seen, int max_leaf) {
+  EXPECT_LT(w, bvh.wide_nodes().size());
+  const BvhWideNode& n = bvh.wide_nodes()[w];
+  int depth = 1, used = 0;
+  bool ended = false;
+  for (int k = 0; k < 4; ++k) {
+    if (n.count[k] == BvhWideNode::kEmpty) {
+      ended = true;
+      continue;
+    }
+    EXPECT_FALSE(ended) << "slot " << k << " used after an empty one in wide node " << w;
+    ++used;
+    const Bounds3 b = n.ChildBounds(k);
+    EXPECT_TRUE(BoxContains(box, b)) << "wide node " << w << " slot " << k;
+    if (n.count[k] == 0) {
+      EXPECT_GT(n.child[k], w);  // depth first: children after their parent
+      depth = std::max(depth, 1 + CheckWideSubtree(mesh, bvh, n.child[k], b, seen, max_leaf));
+      continue;
+    }
+    EXPECT_LE(static_cast<int>(n.count[k]), max_leaf);
+    for (uint32_t i = n.child[k]; i < n.child[k] + n.count[k]; ++i) {
+      uint32_t t = bvh.order()[i];
+      ++(*seen)[t];
+      for (int c = 0; c < 3; ++c)
+        EXPECT_TRUE(b.Contains(mesh.positions[mesh.indices[3 * t + static_cast<uint32_t>(c)]]))
+            << "triangle " << t << " outside its wide leaf";
+    }
+  }
+  EXPECT_GE(used, w == 0 ? 1 : 2);
+  return depth;
+}
+
 void CheckStructure(const TriMesh& mesh, const BvhOptions& options = {}) {
   Bvh bvh = Bvh::Build(mesh, options);
   std::vector<int> seen(mesh.triangle_count(), 0);
   int depth = CheckSubtree(mesh, bvh, 0, &seen, options.max_leaf_triangles);
   EXPECT_EQ(depth, bvh.depth());
   for (std::size_t t = 0; t < seen.size(); ++t) ASSERT_EQ(seen[t], 1) << "triangle " << t;
+  std::vector<int> wide_seen(mesh.triangle_count(), 0);
+  const int wide_depth =
+      CheckWideSubtree(mesh, bvh, 0, bvh.nodes()[0].bounds, &wide_seen, options.max_leaf_triangles);
+  EXPECT_EQ(wide_depth, bvh.wide_depth());
+  EXPECT_LE(wide_depth, depth);  // each wide level descends at least one binary level
+  for (std::size_t t = 0; t < wide_seen.size(); ++t)
+    ASSERT_EQ(wide_seen[t], 1) << "triangle " << t << " in the wide tree";
   EXPECT_EQ(bvh.triangle_count(), mesh.triangle_count());
   EXPECT_EQ(bvh.node_count() % 2, 1);  // root + pairs
   // Leaves of at most L triangles: at least N / L leaves, so at least 2 N / L - 1 nodes.
@@ -133,6 +176,7 @@ TEST(Bvh, OracleCatchesASkippedSubtree) {
   std::vector<BvhNode>& nodes = BvhTestAccess::nodes(bvh);
   ASSERT_GE(nodes.size(), 3u);
   nodes[2].bounds = Bounds3{glm::vec3(50.0f), glm::vec3(50.0f)};
+  BvhTestAccess::Rewiden(bvh);
   test::OracleCounts bad = test::CompareWithLinear(m, bvh, 2000, 5);
   EXPECT_GT(bad.closest_mismatch, 0);
   EXPECT_GT(bad.ray_mismatch, 0);
@@ -151,7 +195,9 @@ TEST(Bvh, AllAxesTreesAgreeWithLinearToo) {
 TEST(Bvh, DepthAndNodeCountStaySmallOnALargeWall) {
   TriMesh wall = Subdivide(MakePlane(2.0f, 1.0f, 2, 1), 6);  // 16384 triangles
   Bvh bvh = Bvh::Build(wall);
-  std::printf("wall 16384 tris: %d nodes, depth %d\n", bvh.node_count(), bvh.depth());
+  std::printf("wall 16384 tris: %d nodes, depth %d; wide: %zu nodes, depth %d\n", bvh.node_count(),
+              bvh.depth(), bvh.wide_nodes().size(), bvh.wide_depth());
+  EXPECT_LE(2 * bvh.wide_depth(), bvh.depth() + 2);  // the wide tree: about half the depth
   EXPECT_LE(bvh.depth(), 40);
   EXPECT_LE(bvh.node_count(), static_cast<int>(wall.triangle_count()));
 }
