@@ -410,18 +410,51 @@ Ring RawOffsetPath(const Ring& ring, const ShrinkOptions& o) {
   const std::size_t n = ring.size();
   const double side = o.outward ? -1.0 : 1.0;
   const IRing g = ToGrid(ring);
+  // Per vertex: the offset side normals, whether a gap opens, and how far the crossing of the two
+  // overlapping offset edges lies from A1 and A2 along them (d·tan(α/2), 0 at a gap vertex).
+  std::vector<Vec2> u(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 nn = LeftNormal(ring[i], ring[(i + 1) % n]);
+    u[i] = {side * nn.x, side * nn.y};
+  }
+  std::vector<double> shift(n, 0.0);
+  std::vector<bool> gap(n, false);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& u1 = u[(i + n - 1) % n];
+    const Vec2& u2 = u[i];
+    const int turn = Orient(g[(i + n - 1) % n], g[i], g[(i + 1) % n]);
+    gap[i] = o.outward ? turn > 0 : turn < 0;
+    if (!gap[i]) {
+      const double cosang = u1.x * u2.x + u1.y * u2.y;
+      const double sinang = std::fabs(u1.x * u2.y - u1.y * u2.x);
+      shift[i] = cosang > -1 + 1e-12 ? o.d * sinang / (1 + cosang) : 1e300;
+    }
+  }
+  auto edge_len = [&](std::size_t i) {
+    const Vec2& a = ring[i];
+    const Vec2& b = ring[(i + 1) % n];
+    return std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
+  };
   Ring path;
   path.reserve(n * 3);
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec2& prev = ring[(i + n - 1) % n];
+    const std::size_t ip = (i + n - 1) % n, in = (i + 1) % n;
     const Vec2& v = ring[i];
-    const Vec2& next = ring[(i + 1) % n];
-    const Vec2 n1 = LeftNormal(prev, v), n2 = LeftNormal(v, next);
-    const Vec2 u1{side * n1.x, side * n1.y}, u2{side * n2.x, side * n2.y};
+    const Vec2& u1 = u[ip];
+    const Vec2& u2 = u[i];
+    const double cosang = u1.x * u2.x + u1.y * u2.y;
+    if (!gap[i] && cosang > 0 && edge_len(ip) > shift[ip] + shift[i] &&
+        edge_len(i) > shift[i] + shift[in]) {
+      // The two offset edges overlap (Fig 2(b)) and both keep a positive length after the cut:
+      // their crossing V + d·(u1 + u2)/(1 + u1·u2) replaces A1, A2 and the tail between, which is
+      // a clockwise loop the union drops anyway (and sub-grid when the turn is small).
+      const double k = o.d / (1 + cosang);
+      path.push_back({v.x + k * (u1.x + u2.x), v.y + k * (u1.y + u2.y)});
+      continue;
+    }
     path.push_back({v.x + o.d * u1.x, v.y + o.d * u1.y});
-    const int turn = Orient(g[(i + n - 1) % n], g[i], g[(i + 1) % n]);
     // The gap of Fig 2(a) opens at a reflex vertex when shrinking, at a convex one when enlarging.
-    if (o.outward ? turn > 0 : turn < 0) JoinPoints(v, u1, u2, o, &path);
+    if (gap[i]) JoinPoints(v, u1, u2, o, &path);
     path.push_back({v.x + o.d * u2.x, v.y + o.d * u2.y});
   }
   return path;
@@ -469,15 +502,33 @@ std::vector<Ring> Shrink(const Ring& ring, const ShrinkOptions& o, ShrinkCounts*
   if (counts) counts->cleaned_points += cleaned;
   r = Normalise(r);
   if (r.size() < 3) return {};
-  // Steps 3-4: the faces of winding ≥ 1 of the ring with the swept pieces (−1 each when
-  // shrinking). The same faces as the CCW cycles of the raw offset path (Fig 6d), without the
-  // faces that path's winding keeps although they lie within d of another edge.
-  std::vector<Ring> paths{r};
-  for (Ring& piece : SweptPieces(r, o)) paths.push_back(std::move(piece));
+  // Steps 3-4: the faces of winding ≥ 1 of the raw offset path (Fig 6d: its CCW cycles), or,
+  // with options.swept, of the ring with the swept pieces (−1 each when shrinking): the exact
+  // erosion/dilation, quadratic when d spans many edges (the test twin of the raw path).
+  std::vector<Ring> paths;
+  if (o.swept) {
+    paths.push_back(r);
+    for (Ring& piece : SweptPieces(r, o)) paths.push_back(std::move(piece));
+  } else {
+    paths.push_back(RawOffsetPath(r, o));
+  }
   std::vector<Ring> rings = PositiveUnion(paths, counts);
   // Slivers the rounding onto the grid can leave (area below 1e-4·d²) are dropped and counted.
+  const IRing g = ToGrid(r);
   std::vector<Ring> out;
   for (Ring& q : rings) {
+    // A kept face lies on the offset side, about d away (a guard against faces of the raw path
+    // that belong to no offset region).
+    bool far = false;  // some vertex at the offset distance (offset edges are at d from all)
+    for (const Vec2& v : q)
+      if (RingDistance(r, v) >= o.d * (1 - 1e-3) - 2 / kGridPerMetre) {
+        far = true;
+        break;
+      }
+    if (Inside(g, ToGrid(q[0])) == o.outward || !far) {
+      if (counts) ++counts->dropped_rings;
+      continue;
+    }
     if (Area(q) < 1e-4 * o.d * o.d) {
       if (counts) ++counts->dropped_rings;
       continue;

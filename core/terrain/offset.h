@@ -25,6 +25,7 @@ struct ShrinkOptions {
   double clean_len = 0;        // Fig 8 pre-clean: drop a point of an edge shorter than this (m)
   double clean_angle_deg = 0;  // Fig 8 pre-clean: drop a vertex with interior angle below this
   bool outward = false;        // grow toward the foot (clockwise offset, holes filled)
+  bool swept = false;          // exact swept-piece union instead of the raw path (the test twin)
 };
 
 struct ShrinkCounts {
