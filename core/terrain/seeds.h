@@ -1,7 +1,5 @@
 // Built-in seed contours, each with where it comes from: disk (the cone oracle), dumbbell (splits
-// into two peaks), lobes7 (seven valleys), jacksboro900 (the 900 m contour of the USGS Jacksboro
-// Fault DEM shipped in Debian's python-matplotlib-data; extracted by
-// scripts/terrain_extract_contour.py into core/terrain/seeds/jacksboro900.json and embedded here).
+// into two peaks), lobes7 (seven valleys). The DEM seed (jacksboro900) is not extracted yet.
 // Does not: read files at run time.
 #pragma once
 
