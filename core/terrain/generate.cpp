@@ -89,7 +89,7 @@ std::vector<Ring> Perturb(const Ring& shrunk, const TerrainParams& p, double d0,
     const auto t0 = std::chrono::steady_clock::now();
     r = FourierPerturb(r, p.GetInt(P::kNfft), p.GetInt(P::kF0), p.Get(P::kPhaseAmp), rng);
     if (method == static_cast<int>(Method::kImproved)) {
-      r = RemoveCollinearToShare(r, d0, p.Get(P::kLongFrac), d);
+      r = RemoveCollinearToShare(r, d0, p.Get(P::kLongFrac), 0.1 * d);  // eps ≤ 0.1·d: no collapse
     }
     counts->ms_fd += Ms(t0);
   }
@@ -123,14 +123,19 @@ Ring MidpointDisplace(const Ring& ring, double d0, double d2, double tmin, doubl
 
 Ring RemoveNearlyCollinear(const Ring& ring, double eps) {
   if (ring.size() <= 3) return ring;
-  Ring out;
   const std::size_t n = ring.size();
-  out.push_back(ring[0]);
+  Ring out{ring[0]};
+  std::size_t last = 0;  // index of the last kept point
   for (std::size_t i = 1; i < n; ++i) {
-    const Vec2& prev = out.back();
+    // Point i may go when it and every point dropped since the last kept one lie within eps of
+    // the chord from the last kept point to point i + 1.
     const Vec2& next = ring[(i + 1) % n];
-    if (SegmentDistance(ring[i], prev, next) < eps && out.size() + (n - i - 1) >= 3) continue;
+    bool near = out.size() + (n - i - 1) >= 3;
+    for (std::size_t k = last + 1; k <= i && near; ++k)
+      if (SegmentDistance(ring[k], ring[last], next) >= eps) near = false;
+    if (near) continue;
     out.push_back(ring[i]);
+    last = i;
   }
   return out.size() >= 3 ? out : ring;
 }
