@@ -190,8 +190,6 @@ TEST(Fourier, PhaseRandomisationKeepsMagnitudesLowFrequenciesAndClosure) {
   // Closure: the sum of the new steps is h·n·c(0), as before.
   const Ring shaken = CurveFromDescriptor(c2, h, z[0]);
   const Vec2 last = shaken.back();
-  const std::complex<double> w_last = c2[0] * 0.0;  // (the step out of the last point)
-  (void)w_last;
   double sx = 0, sy = 0;
   for (std::size_t i = 0; i + 1 < shaken.size(); ++i) {
     sx += shaken[i + 1].x - shaken[i].x;
