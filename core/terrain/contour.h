@@ -1,0 +1,63 @@
+// Terrain data types: a contour ring in metres, the contour tree (parent, children, elevation) and
+// the summits of its top contours (Misawa, Chiba, Saito 1987, §3). Does not: shrink, perturb or
+// interpolate anything (core/terrain/offset, generate, heightfield).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace niwa::terrain {
+
+// A point in metres (x east, y north).
+struct Vec2 {
+  double x = 0, y = 0;
+  bool operator==(const Vec2& o) const { return x == o.x && y == o.y; }
+  bool operator!=(const Vec2& o) const { return !(*this == o); }
+};
+
+// A closed simple polygon p_0..p_{n-1} (the closing edge p_{n-1} -> p_0 is implied), counter-
+// clockwise (interior on the left), every coordinate on the 1/kGridPerMetre m grid.
+using Ring = std::vector<Vec2>;
+
+// Coordinates of every contour leaving the generator are multiples of 1/kGridPerMetre metres, so
+// orientation tests on them are exact integer arithmetic (int64 with __int128 products).
+constexpr double kGridPerMetre = 1024.0;
+
+// One contour of the tree: a ring one interval above its parent.
+struct ContourNode {
+  Ring ring;
+  int level = 0;         // 0 = the seed
+  double elevation = 0;  // h_k = h0 + k·Δh (m)
+  int parent = -1;       // index into Terrain::contours; -1 for the seed
+  std::vector<int> children;
+};
+
+// The summit placed inside a top contour: its pole of inaccessibility (§1.9 of our reading).
+struct Summit {
+  int contour = -1;  // the top contour (a leaf)
+  Vec2 position;
+  double radius = 0;  // inscribed-circle radius r of the top contour at the summit (m)
+  double elevation = 0;
+};
+
+// What the generator counted while growing.
+struct GrowCounts {
+  int loops_removed = 0;           // loops cut by §4.4 method 1 or 2
+  int union_fallbacks = 0;         // contours whose loops needed the positive-winding union
+  int perturbations_reverted = 0;  // perturbed contours that crossed their parent or a sibling
+  int cleaned_points = 0;          // Fig 8 pre-clean: points dropped (short edges, acute angles)
+  int holes_filled = 0;            // clockwise rings dropped by the union (holes)
+  int dropped_rings = 0;           // rings the union could not make simple (never emitted)
+  bool truncated = false;          // stopped at the level or vertex cap
+  double ms_shrink = 0, ms_mpd = 0, ms_fd = 0, ms_loops = 0;
+};
+
+// A whole mountain: contours in breadth-first order (the seed first, parents before children).
+struct Terrain {
+  std::vector<ContourNode> contours;
+  std::vector<Summit> summits;  // one per top contour, in contour order
+  double h0 = 0, dh = 0, d = 0;
+  GrowCounts counts;
+};
+
+}  // namespace niwa::terrain

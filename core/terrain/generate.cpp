@@ -1,0 +1,373 @@
+// The four contour generation methods and the contour tree (§3-4.4; see generate.h).
+#include "terrain/generate.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <string>
+
+#include "math/det_math.h"
+#include "terrain/fourier.h"
+#include "terrain/loops.h"
+#include "terrain/offset.h"
+#include "terrain/polygon.h"
+
+namespace niwa::terrain {
+namespace {
+
+using P = TerrainParam;
+constexpr double kPi = 3.14159265358979323846;
+
+double Ms(std::chrono::steady_clock::time_point a) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a).count();
+}
+
+double MeanEdge(const Ring& r) { return Perimeter(r) / static_cast<double>(r.size()); }
+
+double EdgeLen(const Vec2& a, const Vec2& b) {
+  return std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
+}
+
+void SplitEdge(const Vec2& a, const Vec2& b, double d0, double d2, double tmin, double tmax,
+               Pcg32* rng, int depth, Ring* out) {
+  const double len = EdgeLen(a, b);
+  if (len < 2.0 * d0 || depth > 40) {
+    out->push_back(a);
+    return;
+  }
+  const double l = 0.5 * len;
+  const double theta = rng->Uniform(tmin, tmax);
+  const double side = rng->Uniform() < 0.5 ? -1.0 : 1.0;
+  const double delta = MidpointDelta(l, theta, d2);
+  const Vec2 n{-(b.y - a.y) / len, (b.x - a.x) / len};
+  const Vec2 m{0.5 * (a.x + b.x) + side * delta * n.x, 0.5 * (a.y + b.y) + side * delta * n.y};
+  SplitEdge(a, m, d0, d2, tmin, tmax, rng, depth + 1, out);
+  SplitEdge(m, b, d0, d2, tmin, tmax, rng, depth + 1, out);
+}
+
+// A perturbed ring made simple: as is, untwisted (§4.4), or by the positive-winding union.
+std::vector<Ring> MakeSimple(const Ring& ring, const TerrainParams& p, GrowCounts* counts) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<Ring> out;
+  Ring r = Normalise(ring);
+  if (r.size() >= 3 && IsSimple(ToGrid(r))) {
+    out.push_back(r);
+  } else {
+    const int method = p.GetInt(P::kLoopMethod);
+    const int threshold = method == 1 ? p.GetInt(P::kLoopFaces) : p.GetInt(P::kLoopRun);
+    Ring u = Normalise(UntwistRing(Snap(ring), method, threshold, &counts->loops_removed));
+    if (u.size() >= 3 && IsSimple(ToGrid(u))) {
+      out.push_back(u);
+    } else {
+      ++counts->union_fallbacks;
+      ShrinkCounts sc;
+      out = PositiveUnion({Snap(ring)}, &sc);
+      counts->holes_filled += sc.holes_filled;
+      counts->dropped_rings += sc.dropped_rings;
+    }
+  }
+  counts->ms_loops += Ms(t0);
+  return out;
+}
+
+// The method's perturbation of one freshly shrunk ring (§4.1-4.3 steps 1.2-1.3).
+std::vector<Ring> Perturb(const Ring& shrunk, const TerrainParams& p, double d0, Pcg32* rng,
+                          GrowCounts* counts) {
+  const int method = p.GetInt(P::kMethod);
+  if (method == static_cast<int>(Method::kSimple)) return {shrunk};
+  const double d = p.Get(P::kD);
+  Ring r = shrunk;
+  if (method == static_cast<int>(Method::kMidpoint) ||
+      method == static_cast<int>(Method::kImproved)) {
+    const auto t0 = std::chrono::steady_clock::now();
+    r = MidpointDisplace(r, d0, p.Get(P::kD2) * d, p.Get(P::kThetaMin), p.Get(P::kThetaMax), rng);
+    counts->ms_mpd += Ms(t0);
+  }
+  if (method == static_cast<int>(Method::kFourier) ||
+      method == static_cast<int>(Method::kImproved)) {
+    const auto t0 = std::chrono::steady_clock::now();
+    r = FourierPerturb(r, p.GetInt(P::kNfft), p.GetInt(P::kF0), p.Get(P::kPhaseAmp), rng);
+    if (method == static_cast<int>(Method::kImproved)) {
+      r = RemoveCollinearToShare(r, d0, p.Get(P::kLongFrac), 0.1 * d);  // eps ≤ 0.1·d: no collapse
+    }
+    counts->ms_fd += Ms(t0);
+  }
+  return MakeSimple(r, p, counts);
+}
+
+bool Conflicts(const IRing& ring, const IRing& parent, const std::vector<IRing>& others) {
+  if (RingsIntersect(ring, parent) || !Inside(parent, ring[0])) return true;
+  for (const IRing& o : others) {
+    if (RingsIntersect(ring, o) || Inside(o, ring[0]) || Inside(ring, o[0])) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+double MidpointDelta(double l, double theta_deg, double d2) {
+  double s, c;
+  det::SinCos(theta_deg * kPi / 180.0, &s, &c);
+  return std::min(d2, std::fabs(l * s / c));
+}
+
+Ring MidpointDisplace(const Ring& ring, double d0, double d2, double tmin, double tmax,
+                      Pcg32* rng) {
+  Ring out;
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i)
+    SplitEdge(ring[i], ring[(i + 1) % n], d0, d2, tmin, tmax, rng, 0, &out);
+  return out;
+}
+
+Ring RemoveNearlyCollinear(const Ring& ring, double eps) {
+  if (ring.size() <= 3) return ring;
+  const std::size_t n = ring.size();
+  Ring out{ring[0]};
+  std::size_t last = 0;  // index of the last kept point
+  for (std::size_t i = 1; i < n; ++i) {
+    // Point i may go when it and every point dropped since the last kept one lie within eps of
+    // the chord from the last kept point to point i + 1.
+    const Vec2& next = ring[(i + 1) % n];
+    bool near = out.size() + (n - i - 1) >= 3;
+    for (std::size_t k = last + 1; k <= i && near; ++k)
+      if (SegmentDistance(ring[k], ring[last], next) >= eps) near = false;
+    if (near) continue;
+    out.push_back(ring[i]);
+    last = i;
+  }
+  return out.size() >= 3 ? out : ring;
+}
+
+Ring RemoveCollinearToShare(const Ring& ring, double d0, double long_frac, double max_eps) {
+  auto share = [&](const Ring& r) {
+    std::size_t longs = 0;
+    for (std::size_t i = 0; i < r.size(); ++i)
+      if (EdgeLen(r[i], r[(i + 1) % r.size()]) >= 2.0 * d0) ++longs;
+    return static_cast<double>(longs) / static_cast<double>(r.size());
+  };
+  if (share(ring) >= long_frac) return ring;
+  double lo = 0, hi = max_eps;
+  Ring best = RemoveNearlyCollinear(ring, hi);
+  if (share(best) < long_frac) return best;
+  for (int it = 0; it < 24; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    Ring r = RemoveNearlyCollinear(ring, mid);
+    if (share(r) >= long_frac) {
+      hi = mid;
+      best = std::move(r);
+    } else {
+      lo = mid;
+    }
+  }
+  return best;
+}
+
+Vec2 PoleOfInaccessibility(const Ring& ring, double* radius) {
+  double x0 = ring[0].x, x1 = x0, y0 = ring[0].y, y1 = y0;
+  for (const Vec2& v : ring) {
+    x0 = std::min(x0, v.x);
+    x1 = std::max(x1, v.x);
+    y0 = std::min(y0, v.y);
+    y1 = std::max(y1, v.y);
+  }
+  Vec2 best{0.5 * (x0 + x1), 0.5 * (y0 + y1)};
+  double best_r = InsideDouble(ring, best) ? RingDistance(ring, best) : -1;
+  const int k = 16;
+  double w = x1 - x0, h = y1 - y0;
+  Vec2 c = best;
+  for (int round = 0; round < 12; ++round) {
+    for (int j = 0; j <= k; ++j) {
+      for (int i = 0; i <= k; ++i) {
+        const Vec2 q{c.x - 0.5 * w + w * i / k, c.y - 0.5 * h + h * j / k};
+        if (!InsideDouble(ring, q)) continue;
+        const double r = RingDistance(ring, q);
+        if (r > best_r) {
+          best_r = r;
+          best = q;
+        }
+      }
+    }
+    c = best;
+    w *= 0.25;
+    h *= 0.25;
+  }
+  if (best_r < 0) {  // degenerate: the centroid of the vertices
+    best = {0, 0};
+    for (const Vec2& v : ring) best = {best.x + v.x, best.y + v.y};
+    best = {best.x / static_cast<double>(ring.size()), best.y / static_cast<double>(ring.size())};
+    best_r = 0;
+  }
+  *radius = best_r;
+  return best;
+}
+
+Result<Ring> CheckSeed(const Ring& seed) {
+  if (seed.size() < 3) {
+    return Status::Error("contour",
+                         std::to_string(seed.size()) + " points; must have 3 to 1000000 points");
+  }
+  if (seed.size() > kMaxSeedPoints) {
+    return Status::Error("contour",
+                         std::to_string(seed.size()) + " points; must have 3 to 1000000 points");
+  }
+  for (std::size_t i = 0; i < seed.size(); ++i) {
+    const Vec2& v = seed[i];
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || std::fabs(v.x) > kMaxCoordinate ||
+        std::fabs(v.y) > kMaxCoordinate) {
+      return Status::Error("contour", "point " + std::to_string(i) +
+                                          " is not a finite coordinate; each must be a number "
+                                          "in [-1e6, 1e6] m");
+    }
+  }
+  Ring r = Normalise(seed);
+  if (r.size() < 3 || !IsSimple(ToGrid(r))) {
+    return Status::Error("contour",
+                         "self-intersects or has no area; must be a simple closed polygon");
+  }
+  return r;
+}
+
+Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p) {
+  NIWA_RETURN_IF_ERROR(CheckTerrainParams(p));
+  Result<Ring> seed = CheckSeed(seed_in);
+  if (!seed.ok()) return seed.status();
+  Terrain t;
+  t.d = p.Get(P::kD);
+  t.dh = p.Get(P::kDh);
+  t.h0 = p.Get(P::kH0);
+  const double d = t.d;
+  const double d0 = MeanEdge(*seed);
+  ShrinkOptions so;
+  so.d = d;
+  so.join = static_cast<Join>(p.GetInt(P::kJoin));
+  so.c = p.Get(P::kC);
+  so.clean_len = p.Get(P::kCleanLen) * d;
+  so.clean_angle_deg = p.Get(P::kCleanAngle);
+  const uint64_t rng_seed = static_cast<uint64_t>(p.Get(P::kSeed));
+  const int max_levels = p.GetInt(P::kMaxLevels);
+
+  // Growth below the seed (§2 enlarging): a chain of enlarged contours, the lowest the root.
+  std::vector<Ring> below;
+  {
+    ShrinkOptions out = so;
+    out.outward = true;
+    Ring cur = *seed;
+    for (int k = 0; k < p.GetInt(P::kDown); ++k) {
+      ShrinkCounts sc;
+      std::vector<Ring> rs = Shrink(cur, out, &sc);
+      t.counts.holes_filled += sc.holes_filled;
+      if (rs.empty()) break;
+      std::size_t big = 0;
+      for (std::size_t i = 1; i < rs.size(); ++i)
+        if (Area(rs[i]) > Area(rs[big])) big = i;
+      cur = rs[big];
+      below.push_back(cur);
+    }
+  }
+  const int down = static_cast<int>(below.size());
+  for (int k = down - 1; k >= 0; --k) {
+    ContourNode node;
+    node.ring = below[static_cast<std::size_t>(k)];
+    node.level = -(k + 1);
+    node.elevation = t.h0 + node.level * t.dh;
+    node.parent = t.contours.empty() ? -1 : static_cast<int>(t.contours.size()) - 1;
+    if (node.parent >= 0)
+      t.contours[static_cast<std::size_t>(node.parent)].children.push_back(
+          static_cast<int>(t.contours.size()));
+    t.contours.push_back(node);
+  }
+  {
+    ContourNode root;
+    root.ring = *seed;
+    root.level = 0;
+    root.elevation = t.h0;
+    root.parent = t.contours.empty() ? -1 : static_cast<int>(t.contours.size()) - 1;
+    if (root.parent >= 0)
+      t.contours[static_cast<std::size_t>(root.parent)].children.push_back(
+          static_cast<int>(t.contours.size()));
+    t.contours.push_back(root);
+  }
+
+  std::deque<int> queue{static_cast<int>(t.contours.size()) - 1};
+  while (!queue.empty()) {
+    const int at = queue.front();
+    queue.pop_front();
+    if (t.contours[static_cast<std::size_t>(at)].level >= max_levels ||
+        t.contours.size() >= kMaxContours) {
+      t.counts.truncated = true;
+      continue;
+    }
+    const Ring parent = t.contours[static_cast<std::size_t>(at)].ring;
+    const int level = t.contours[static_cast<std::size_t>(at)].level + 1;
+    const auto t0 = std::chrono::steady_clock::now();
+    ShrinkCounts sc;
+    std::vector<Ring> shrunk = Shrink(parent, so, &sc);
+    t.counts.cleaned_points += sc.cleaned_points;
+    t.counts.holes_filled += sc.holes_filled;
+    t.counts.dropped_rings += sc.dropped_rings;
+    t.counts.ms_shrink += Ms(t0);
+    if (shrunk.empty()) continue;
+    // One RNG stream per contour, from the seed and the parent's index (order-independent).
+    Pcg32 rng(rng_seed, static_cast<uint64_t>(at) * 2654435761ULL + 1);
+    std::vector<std::vector<Ring>> groups;
+    for (const Ring& r : shrunk) groups.push_back(Perturb(r, p, d0, &rng, &t.counts));
+    // Perturbed rings must lie inside the parent and apart from their siblings; offenders go back
+    // to the unperturbed shrink (which is both), until none is left.
+    const IRing gp = ToGrid(parent);
+    bool changed = true;
+    for (std::size_t i = 0; i < groups.size(); ++i)
+      if (groups[i].empty()) {
+        groups[i] = {shrunk[i]};
+        ++t.counts.perturbations_reverted;
+      }
+    while (changed) {
+      changed = false;
+      for (std::size_t i = 0; i < groups.size(); ++i) {
+        if (groups[i].size() == 1 && groups[i][0] == shrunk[i]) continue;
+        std::vector<IRing> others;
+        for (std::size_t j = 0; j < groups.size(); ++j)
+          if (j != i)
+            for (const Ring& r : groups[j]) others.push_back(ToGrid(r));
+        bool bad = false;
+        for (const Ring& r : groups[i])
+          if (Conflicts(ToGrid(r), gp, others)) bad = true;
+        if (bad) {
+          groups[i] = {shrunk[i]};
+          ++t.counts.perturbations_reverted;
+          changed = true;
+        }
+      }
+    }
+    for (const std::vector<Ring>& g : groups) {
+      for (const Ring& r : g) {
+        if (r.size() > kMaxContourVertices) {
+          t.counts.truncated = true;
+          continue;
+        }
+        ContourNode node;
+        node.ring = r;
+        node.level = level;
+        node.elevation = t.h0 + level * t.dh;
+        node.parent = at;
+        const int id = static_cast<int>(t.contours.size());
+        t.contours[static_cast<std::size_t>(at)].children.push_back(id);
+        t.contours.push_back(std::move(node));
+        queue.push_back(id);
+      }
+    }
+  }
+  // A summit on every top contour: h_T + Δh·min(1, r/d) at the pole of inaccessibility.
+  for (std::size_t i = 0; i < t.contours.size(); ++i) {
+    if (!t.contours[i].children.empty()) continue;
+    Summit s;
+    s.contour = static_cast<int>(i);
+    s.position = PoleOfInaccessibility(t.contours[i].ring, &s.radius);
+    s.elevation = t.contours[i].elevation + t.dh * std::min(1.0, s.radius / d);
+    t.summits.push_back(s);
+  }
+  return t;
+}
+
+}  // namespace niwa::terrain

@@ -1,0 +1,43 @@
+// The contour generation methods (§3 simple, §4.1 midpoint displacement, §4.2 Fourier
+// descriptors, §4.3 improved): from one seed contour, every higher contour of the mountain as a
+// tree (splits into several peaks, each grown on), and a summit on each top contour. Does not:
+// build surfaces (heightfield.h) or read files (contour_io.h).
+#pragma once
+
+#include "base/status.h"
+#include "random/pcg32.h"
+#include "terrain/contour.h"
+#include "terrain/terrain_params.h"
+
+namespace niwa::terrain {
+
+// Largest seed accepted, in points.
+constexpr std::size_t kMaxSeedPoints = 1000000;
+// Caps while growing (the result then says truncated).
+constexpr std::size_t kMaxContourVertices = 200000;
+constexpr std::size_t kMaxContours = 100000;
+
+// The seed checked and normalised (finite, |x|, |y| ≤ 1e6 m, 3..1e6 points, snapped, CCW, simple);
+// the error names "contour" and what is allowed.
+Result<Ring> CheckSeed(const Ring& seed);
+
+// §4.1 (Fig 12): every edge ≥ 2·d0 is split at its midpoint displaced by s·min(d'', |l·tan θ|)
+// along its normal (s = ±1, θ ~ U(θmin, θmax) degrees), recursively, until all edges are < 2·d0.
+Ring MidpointDisplace(const Ring& ring, double d0, double d2, double theta_min_deg,
+                      double theta_max_deg, Pcg32* rng);
+// δ of Fig 12 for an edge of length 2l: min(d'', |l·tan θ|).
+double MidpointDelta(double l, double theta_deg, double d2);
+
+// §4.3 step 1.3: nearly collinear points (closer than eps to their neighbours' chord) removed.
+Ring RemoveNearlyCollinear(const Ring& ring, double eps);
+// The same with eps found by bisection so that the share of edges ≥ 2·d0 reaches long_frac.
+Ring RemoveCollinearToShare(const Ring& ring, double d0, double long_frac, double max_eps);
+
+// The pole of inaccessibility of a ring (the centre of its largest inscribed circle, by a grid
+// search refined 12 times) and that circle's radius.
+Vec2 PoleOfInaccessibility(const Ring& ring, double* radius);
+
+// Grows the whole mountain from the seed with the table's method and constants.
+Result<Terrain> Grow(const Ring& seed, const TerrainParams& params);
+
+}  // namespace niwa::terrain

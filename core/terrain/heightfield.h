@@ -1,0 +1,45 @@
+// The surface from the contour tree (our choice, docs/terrain-model.md): each cell lies in one band
+// (inside contour C, outside C's children) and gets h = h_C + Δh·a/(a + b), a = distance to C,
+// b = distance to C's children (in a top band: to the summit, Δh -> h_s − h_C). Continuous, every
+// level set on its contour, no interior pits. Also the terrain's statistics. Does not: write
+// files (terrain_output.h).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "terrain/contour.h"
+
+namespace niwa::terrain {
+
+// Row 0 is the north (largest y); cell (i, j) has its centre at (x0 + (i + ½)·cell,
+// y1 − (j + ½)·cell).
+struct Heightfield {
+  int width = 0, height = 0;
+  double x0 = 0, y1 = 0, cell = 1;
+  std::vector<double> h;  // width·height elevations (m)
+  std::vector<int> band;  // contour whose band holds the cell; −1 outside the lowest contour
+  double At(int i, int j) const { return h[static_cast<std::size_t>(j) * width + i]; }
+  Vec2 Centre(int i, int j) const { return {x0 + (i + 0.5) * cell, y1 - (j + 0.5) * cell}; }
+};
+
+// The heightfield with `res` cells along the longer side of the lowest contour's box (plus one
+// cell of margin each side); cells outside it get the lowest elevation.
+Heightfield BuildHeightfield(const Terrain& terrain, int res);
+
+struct TerrainStats {
+  int levels = 0, contours = 0, peaks = 0, splits = 0;
+  std::size_t vertices = 0;
+  int self_intersections = 0;  // contours that are not simple (always 0)
+  int nesting_violations = 0;  // children crossing or outside their parent, siblings meeting (0)
+  double relief = 0;           // highest summit − lowest contour (m)
+  double hypsometric_integral = 0;  // (mean − min)/(max − min) of the cells inside the lowest one
+  double mean_slope_deg = 0;        // central differences, inside cells with inside neighbours
+  int pits = 0;                     // interior cells below all 8 neighbours
+};
+
+// Counts and exact checks of the contours; surface metrics when hf is given.
+TerrainStats ComputeStats(const Terrain& terrain, const Heightfield* hf);
+
+}  // namespace niwa::terrain

@@ -1,0 +1,541 @@
+// Polygon shrinking (Figs 5-8) and the positive-winding union (Fig 6 steps 3-4); see offset.h.
+#include "terrain/offset.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "math/det_math.h"
+
+namespace niwa::terrain {
+namespace {
+
+struct Seg {
+  IPoint a, b;
+};
+
+bool OnSeg(const IPoint& a, const IPoint& b, const IPoint& p) {
+  return Orient(a, b, p) == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
+         std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
+}
+
+// Splits every segment at the points where it meets another (crossings rounded onto the grid),
+// repeated while rounding makes new crossings (at most a few passes).
+std::vector<Seg> SplitAtIntersections(std::vector<Seg> segs) {
+  for (int pass = 0; pass < 6; ++pass) {
+    const std::size_t n = segs.size();
+    std::vector<std::vector<IPoint>> splits(n);
+    std::vector<std::size_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = i;
+    auto lo = [&](std::size_t i) { return std::min(segs[i].a.x, segs[i].b.x); };
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+      return lo(x) < lo(y) || (lo(x) == lo(y) && x < y);
+    });
+    bool any = false;
+    for (std::size_t s = 0; s < n; ++s) {
+      const std::size_t i = order[s];
+      const Seg& si = segs[i];
+      const int64_t end = std::max(si.a.x, si.b.x);
+      const int64_t ylo = std::min(si.a.y, si.b.y), yhi = std::max(si.a.y, si.b.y);
+      for (std::size_t t = s + 1; t < n && lo(order[t]) <= end; ++t) {
+        const std::size_t j = order[t];
+        const Seg& sj = segs[j];
+        if (std::max(sj.a.y, sj.b.y) < ylo || std::min(sj.a.y, sj.b.y) > yhi) continue;
+        if (!SegmentsIntersect(si.a, si.b, sj.a, sj.b)) continue;
+        // Endpoints of one lying inside the other.
+        auto add_if_inside = [&](const Seg& host, std::size_t h, const IPoint& p) {
+          if (p != host.a && p != host.b && OnSeg(host.a, host.b, p)) {
+            splits[h].push_back(p);
+            any = true;
+          }
+        };
+        add_if_inside(si, i, sj.a);
+        add_if_inside(si, i, sj.b);
+        add_if_inside(sj, j, si.a);
+        add_if_inside(sj, j, si.b);
+        const int o1 = Orient(si.a, si.b, sj.a), o2 = Orient(si.a, si.b, sj.b);
+        const int o3 = Orient(sj.a, sj.b, si.a), o4 = Orient(sj.a, sj.b, si.b);
+        if (o1 * o2 < 0 && o3 * o4 < 0) {
+          const double ax = static_cast<double>(si.a.x), ay = static_cast<double>(si.a.y);
+          const double rx = static_cast<double>(si.b.x - si.a.x);
+          const double ry = static_cast<double>(si.b.y - si.a.y);
+          const double sx = static_cast<double>(sj.b.x - sj.a.x);
+          const double sy = static_cast<double>(sj.b.y - sj.a.y);
+          const double qx = static_cast<double>(sj.a.x) - ax, qy = static_cast<double>(sj.a.y) - ay;
+          const double den = rx * sy - ry * sx;
+          const double tpar = (qx * sy - qy * sx) / den;
+          IPoint p{static_cast<int64_t>(std::llround(ax + tpar * rx)),
+                   static_cast<int64_t>(std::llround(ay + tpar * ry))};
+          if (p != si.a && p != si.b) splits[i].push_back(p);
+          if (p != sj.a && p != sj.b) splits[j].push_back(p);
+          any = true;
+        }
+      }
+    }
+    if (!any) break;
+    std::vector<Seg> out;
+    out.reserve(n * 2);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (splits[i].empty()) {
+        out.push_back(segs[i]);
+        continue;
+      }
+      const Seg& s = segs[i];
+      std::vector<IPoint>& pts = splits[i];
+      const int64_t dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+      auto key = [&](const IPoint& p) {
+        return static_cast<Int128>(p.x - s.a.x) * dx + static_cast<Int128>(p.y - s.a.y) * dy;
+      };
+      std::sort(pts.begin(), pts.end(), [&](const IPoint& p, const IPoint& q) {
+        const Int128 kp = key(p), kq = key(q);
+        return kp < kq || (kp == kq && p < q);
+      });
+      pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+      IPoint prev = s.a;
+      for (const IPoint& p : pts) {
+        if (p != prev) out.push_back({prev, p});
+        prev = p;
+      }
+      if (prev != s.b) out.push_back({prev, s.b});
+    }
+    segs.swap(out);
+  }
+  return segs;
+}
+
+struct WEdge {
+  IPoint a, b;  // a < b
+  int weight;   // net number of path edges a -> b minus b -> a: left winding = right + weight
+};
+
+// Winding number just beside the midpoint of edge `self`, on the +x side (or +y side for a
+// horizontal edge), from every other edge (Sunday's crossing rule on doubled coordinates).
+int WindingBeside(const std::vector<WEdge>& edges, const std::vector<std::size_t>& candidates,
+                  std::size_t self, bool vertical_ray) {
+  const WEdge& e = edges[self];
+  IPoint m{e.a.x + e.b.x, e.a.y + e.b.y};
+  int wn = 0;
+  for (std::size_t idx : candidates) {
+    if (idx == self) continue;
+    const WEdge& f = edges[idx];
+    IPoint a{2 * f.a.x, 2 * f.a.y}, b{2 * f.b.x, 2 * f.b.y};
+    if (vertical_ray) {  // mirror x <-> y: winding changes sign
+      std::swap(a.x, a.y);
+      std::swap(b.x, b.y);
+    }
+    IPoint p = vertical_ray ? IPoint{m.y, m.x} : m;
+    if (a.y <= p.y) {
+      if (b.y > p.y && Orient(a, b, p) > 0) wn += vertical_ray ? -f.weight : f.weight;
+    } else if (b.y <= p.y && Orient(a, b, p) < 0) {
+      wn -= vertical_ray ? -f.weight : f.weight;
+    }
+  }
+  return wn;
+}
+
+// Relative turn order at a vertex: true when w2 turns further left than w1 from direction u.
+bool TurnsMoreLeft(const IPoint& u, const IPoint& w1, const IPoint& w2) {
+  auto half = [&](const IPoint& w) {
+    const Int128 cross = static_cast<Int128>(u.x) * w.y - static_cast<Int128>(u.y) * w.x;
+    const Int128 dot = static_cast<Int128>(u.x) * w.x + static_cast<Int128>(u.y) * w.y;
+    return (cross > 0 || (cross == 0 && dot < 0)) ? 1 : 0;
+  };
+  const int h1 = half(w1), h2 = half(w2);
+  if (h1 != h2) return h2 > h1;
+  const Int128 c = static_cast<Int128>(w1.x) * w2.y - static_cast<Int128>(w1.y) * w2.x;
+  return c > 0;
+}
+
+IRing CleanRing(IRing r) {
+  bool changed = true;
+  while (changed && r.size() >= 3) {
+    changed = false;
+    IRing out;
+    const std::size_t n = r.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const IPoint& prev = out.empty() ? r[(i + n - 1) % n] : out.back();
+      const IPoint& cur = r[i];
+      const IPoint& next = r[(i + 1) % n];
+      if (cur == prev || Orient(prev, cur, next) == 0) {
+        changed = true;
+        continue;
+      }
+      out.push_back(cur);
+    }
+    r.swap(out);
+  }
+  return r;
+}
+
+std::vector<Ring> UnionOnce(const std::vector<IRing>& paths, ShrinkCounts* counts, int depth);
+
+std::vector<Ring> UnionOnce(const std::vector<IRing>& paths, ShrinkCounts* counts, int depth) {
+  std::vector<Seg> segs;
+  for (const IRing& p : paths)
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p[i] != p[(i + 1) % p.size()]) segs.push_back({p[i], p[(i + 1) % p.size()]});
+  segs = SplitAtIntersections(std::move(segs));
+  // Merge coincident edges into one weighted edge.
+  std::map<std::pair<IPoint, IPoint>, int> merged;
+  for (const Seg& s : segs) {
+    if (s.a < s.b) {
+      merged[{s.a, s.b}] += 1;
+    } else {
+      merged[{s.b, s.a}] -= 1;
+    }
+  }
+  std::vector<WEdge> edges;
+  for (const auto& [key, w] : merged)
+    if (w != 0) edges.push_back({key.first, key.second, w});
+  // Horizontal strips of edges for the +x rays.
+  int64_t ymin = 0, ymax = 0;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const int64_t lo = std::min(edges[i].a.y, edges[i].b.y),
+                  hi = std::max(edges[i].a.y, edges[i].b.y);
+    if (i == 0 || lo < ymin) ymin = lo;
+    if (i == 0 || hi > ymax) ymax = hi;
+  }
+  const std::size_t strips = std::max<std::size_t>(
+      1, static_cast<std::size_t>(std::sqrt(static_cast<double>(edges.size()))));
+  const double span = static_cast<double>(ymax - ymin) + 1.0;
+  auto strip_of = [&](int64_t y) {
+    double f = static_cast<double>(y - ymin) / span * static_cast<double>(strips);
+    return std::min(strips - 1, static_cast<std::size_t>(std::max(0.0, f)));
+  };
+  std::vector<std::vector<std::size_t>> bucket(strips);
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const std::size_t s0 = strip_of(std::min(edges[i].a.y, edges[i].b.y));
+    const std::size_t s1 = strip_of(std::max(edges[i].a.y, edges[i].b.y));
+    for (std::size_t s = s0; s <= s1; ++s) bucket[s].push_back(i);
+  }
+  std::vector<std::size_t> all(edges.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+  // Keep the edges between winding ≥ 1 and winding < 1, directed with the inside on the left.
+  std::vector<Seg> kept;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const WEdge& e = edges[i];
+    const int64_t dx = e.b.x - e.a.x, dy = e.b.y - e.a.y;
+    int left = 0, right = 0;
+    if (dy != 0) {
+      // The midpoint's doubled y is a.y + b.y; its strip holds every edge a +x ray can cross.
+      const int64_t my2 = e.a.y + e.b.y;
+      const int64_t my = my2 >= 0 ? my2 / 2 : -((-my2 + 1) / 2);  // floor
+      const std::size_t s = strip_of(my);
+      const int w = WindingBeside(edges, bucket[s], i, false);
+      if (dy > 0) {
+        right = w;
+        left = w + e.weight;
+      } else {
+        left = w;
+        right = w - e.weight;
+      }
+    } else {
+      const int w = WindingBeside(edges, all, i, true);
+      if (dx > 0) {
+        left = w;
+        right = w - e.weight;
+      } else {
+        right = w;
+        left = w + e.weight;
+      }
+    }
+    const bool in_left = left >= 1, in_right = right >= 1;
+    if (in_left && !in_right) kept.push_back({e.a, e.b});
+    if (in_right && !in_left) kept.push_back({e.b, e.a});
+  }
+  // Chain the kept edges into rings, turning furthest left at shared vertices.
+  std::multimap<IPoint, std::size_t> outgoing;
+  for (std::size_t i = 0; i < kept.size(); ++i) outgoing.insert({kept[i].a, i});
+  std::vector<bool> used(kept.size(), false);
+  std::vector<Ring> result;
+  for (std::size_t start = 0; start < kept.size(); ++start) {
+    if (used[start]) continue;
+    used[start] = true;
+    IRing ring{kept[start].a};
+    std::size_t cur = start;
+    bool closed = false;
+    for (std::size_t guard = 0; guard <= kept.size(); ++guard) {
+      const IPoint v = kept[cur].b;
+      const IPoint u{kept[cur].b.x - kept[cur].a.x, kept[cur].b.y - kept[cur].a.y};
+      std::size_t best = kept.size();
+      auto range = outgoing.equal_range(v);
+      for (auto it = range.first; it != range.second; ++it) {
+        const std::size_t cand = it->second;
+        if (used[cand] && cand != start) continue;
+        if (best == kept.size()) {
+          best = cand;
+          continue;
+        }
+        const IPoint w1{kept[best].b.x - v.x, kept[best].b.y - v.y};
+        const IPoint w2{kept[cand].b.x - v.x, kept[cand].b.y - v.y};
+        if (TurnsMoreLeft(u, w1, w2)) best = cand;
+      }
+      if (best == kept.size()) break;
+      if (best == start) {
+        closed = true;
+        break;
+      }
+      used[best] = true;
+      ring.push_back(v);
+      cur = best;
+    }
+    if (!closed) {
+      if (counts) ++counts->dropped_rings;
+      continue;
+    }
+    ring = CleanRing(std::move(ring));
+    if (ring.size() < 3) continue;
+    const Int128 area = TwiceArea(ring);
+    if (area <= 0) {
+      if (area < 0 && counts) ++counts->holes_filled;
+      continue;
+    }
+    if (!IsSimple(ring)) {
+      if (depth < 2) {
+        std::vector<Ring> again = UnionOnce({ring}, counts, depth + 1);
+        result.insert(result.end(), again.begin(), again.end());
+      } else if (counts) {
+        ++counts->dropped_rings;
+      }
+      continue;
+    }
+    result.push_back(FromGrid(ring));
+  }
+  return result;
+}
+
+Vec2 Sub(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
+double Len(const Vec2& a) { return std::sqrt(a.x * a.x + a.y * a.y); }
+Vec2 LeftNormal(const Vec2& a, const Vec2& b) {
+  const Vec2 e = Sub(b, a);
+  const double l = Len(e);
+  return {-e.y / l, e.x / l};
+}
+
+}  // namespace
+
+Vec2 CappedJoinPoint(const Vec2& v, const Vec2& n1, const Vec2& n2, double d, double c) {
+  const Vec2 s{n1.x + n2.x, n1.y + n2.y};
+  const double len = Len(s);  // = 2·cos(ψ/2)
+  if (len < 1e-12) {
+    // ψ = 180°: the bisector is the incoming edge's direction (n1 turned right by 90°).
+    return {v.x + c * d * n1.y, v.y - c * d * n1.x};
+  }
+  const double cos_half = 0.5 * len;
+  const double dist = std::min(c * d, d / cos_half);  // Fig 7: min(c·d, d/cos(ψ/2))
+  return {v.x + dist * s.x / len, v.y + dist * s.y / len};
+}
+
+Ring Normalise(const Ring& ring) {
+  IRing r = ToGrid(ring);
+  r = CleanRing(std::move(r));
+  if (r.size() >= 3 && TwiceArea(r) < 0) std::reverse(r.begin(), r.end());
+  return FromGrid(r);
+}
+
+Ring PreClean(const Ring& ring, double min_len, double min_angle_deg, int* dropped) {
+  Ring r = ring;
+  const double min_angle = min_angle_deg * 3.14159265358979323846 / 180.0;
+  for (std::size_t pass = 0; pass < ring.size() && r.size() > 3; ++pass) {
+    bool changed = false;
+    for (std::size_t i = 0; i < r.size() && r.size() > 3;) {
+      const std::size_t n = r.size();
+      const Vec2& prev = r[(i + n - 1) % n];
+      const Vec2& cur = r[i];
+      const Vec2& next = r[(i + 1) % n];
+      const Vec2 e1 = Sub(cur, prev), e2 = Sub(next, cur);
+      const double l1 = Len(e1), l2 = Len(e2);
+      bool drop = l2 < min_len && min_len > 0;  // drop the end point of a very short edge
+      std::size_t victim = (i + 1) % n;
+      if (!drop && min_angle > 0 && l1 > 0 && l2 > 0) {
+        // Interior (or exterior) angle at cur below the limit: an acute spike or notch.
+        const double cosang = -(e1.x * e2.x + e1.y * e2.y) / (l1 * l2);
+        const double angle = det::Acos(std::clamp(cosang, -1.0, 1.0));  // in [0, π]
+        if (angle < min_angle) {
+          drop = true;
+          victim = i;
+        }
+      }
+      if (drop) {
+        r.erase(r.begin() + static_cast<std::ptrdiff_t>(victim));
+        if (dropped) ++*dropped;
+        changed = true;
+        if (victim < i) --i;
+      } else {
+        ++i;
+      }
+    }
+    if (!changed) break;
+  }
+  return r;
+}
+
+namespace {
+
+// The points strictly between A1 = V + d·u1 and A2 = V + d·u2 that close the gap at a vertex
+// whose offset side normals are u1 (incoming edge) and u2 (outgoing edge).
+void JoinPoints(const Vec2& v, const Vec2& u1, const Vec2& u2, const ShrinkOptions& o, Ring* out) {
+  switch (o.join) {
+    case Join::kBevel:
+      return;
+    case Join::kMiter:
+    case Join::kCapped:
+      out->push_back(CappedJoinPoint(v, u1, u2, o.d, o.join == Join::kMiter ? kMiterLimit : o.c));
+      return;
+    case Join::kRound: {
+      // Arc of radius d around V from u1 to u2 (chord sagitta ≤ 1 % of d).
+      const double cross = u1.x * u2.y - u1.y * u2.x;
+      const double dot = u1.x * u2.x + u1.y * u2.y;
+      const double psi = det::Atan2(cross, dot);  // signed
+      const double step = 2.0 * det::Acos(1.0 - 0.01);
+      const int m = std::max(1, static_cast<int>(std::ceil(std::fabs(psi) / step)));
+      for (int k = 1; k < m; ++k) {
+        double s, co;
+        det::SinCos(psi * k / m, &s, &co);
+        out->push_back({v.x + o.d * (co * u1.x - s * u1.y), v.y + o.d * (s * u1.x + co * u1.y)});
+      }
+      return;
+    }
+  }
+}
+
+Ring Oriented(Ring r, bool ccw) {
+  if ((Area(r) > 0) != ccw) std::reverse(r.begin(), r.end());
+  return r;
+}
+
+}  // namespace
+
+Ring RawOffsetPath(const Ring& ring, const ShrinkOptions& o) {
+  const std::size_t n = ring.size();
+  const double side = o.outward ? -1.0 : 1.0;
+  const IRing g = ToGrid(ring);
+  // Per vertex: the offset side normals, whether a gap opens, and how far the crossing of the two
+  // overlapping offset edges lies from A1 and A2 along them (d·tan(α/2), 0 at a gap vertex).
+  std::vector<Vec2> u(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 nn = LeftNormal(ring[i], ring[(i + 1) % n]);
+    u[i] = {side * nn.x, side * nn.y};
+  }
+  std::vector<double> shift(n, 0.0);
+  std::vector<bool> gap(n, false);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& u1 = u[(i + n - 1) % n];
+    const Vec2& u2 = u[i];
+    const int turn = Orient(g[(i + n - 1) % n], g[i], g[(i + 1) % n]);
+    gap[i] = o.outward ? turn > 0 : turn < 0;
+    if (!gap[i]) {
+      const double cosang = u1.x * u2.x + u1.y * u2.y;
+      const double sinang = std::fabs(u1.x * u2.y - u1.y * u2.x);
+      shift[i] = cosang > -1 + 1e-12 ? o.d * sinang / (1 + cosang) : 1e300;
+    }
+  }
+  auto edge_len = [&](std::size_t i) {
+    const Vec2& a = ring[i];
+    const Vec2& b = ring[(i + 1) % n];
+    return std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
+  };
+  Ring path;
+  path.reserve(n * 3);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t ip = (i + n - 1) % n, in = (i + 1) % n;
+    const Vec2& v = ring[i];
+    const Vec2& u1 = u[ip];
+    const Vec2& u2 = u[i];
+    const double cosang = u1.x * u2.x + u1.y * u2.y;
+    if (!gap[i] && cosang > 0 && edge_len(ip) > shift[ip] + shift[i] &&
+        edge_len(i) > shift[i] + shift[in]) {
+      // The two offset edges overlap (Fig 2(b)) and both keep a positive length after the cut:
+      // their crossing V + d·(u1 + u2)/(1 + u1·u2) replaces A1, A2 and the tail between, which is
+      // a clockwise loop the union drops anyway (and sub-grid when the turn is small).
+      const double k = o.d / (1 + cosang);
+      path.push_back({v.x + k * (u1.x + u2.x), v.y + k * (u1.y + u2.y)});
+      continue;
+    }
+    path.push_back({v.x + o.d * u1.x, v.y + o.d * u1.y});
+    // The gap of Fig 2(a) opens at a reflex vertex when shrinking, at a convex one when enlarging.
+    if (gap[i]) JoinPoints(v, u1, u2, o, &path);
+    path.push_back({v.x + o.d * u2.x, v.y + o.d * u2.y});
+  }
+  return path;
+}
+
+// The region swept within d of the ring on the offset side, as pieces: one rectangle per edge and
+// one join wedge V, A1, join points, A2 per gap vertex. Shrinking keeps the ring minus these
+// (winding: ring +1, pieces −1), enlarging the ring plus these (all +1).
+std::vector<Ring> SweptPieces(const Ring& ring, const ShrinkOptions& o) {
+  const std::size_t n = ring.size();
+  const double side = o.outward ? -1.0 : 1.0;
+  const IRing g = ToGrid(ring);
+  std::vector<Ring> pieces;
+  pieces.reserve(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& a = ring[i];
+    const Vec2& b = ring[(i + 1) % n];
+    const Vec2 nn = LeftNormal(a, b);
+    const Vec2 u{side * nn.x, side * nn.y};
+    pieces.push_back(Oriented(
+        {a, b, {b.x + o.d * u.x, b.y + o.d * u.y}, {a.x + o.d * u.x, a.y + o.d * u.y}}, o.outward));
+    const Vec2& prev = ring[(i + n - 1) % n];
+    const int turn = Orient(g[(i + n - 1) % n], g[i], g[(i + 1) % n]);
+    if (o.outward ? turn > 0 : turn < 0) {
+      const Vec2 n1 = LeftNormal(prev, a);
+      const Vec2 u1{side * n1.x, side * n1.y};
+      Ring wedge{a, {a.x + o.d * u1.x, a.y + o.d * u1.y}};
+      JoinPoints(a, u1, u, o, &wedge);
+      wedge.push_back({a.x + o.d * u.x, a.y + o.d * u.y});
+      if (wedge.size() >= 3) pieces.push_back(Oriented(wedge, o.outward));
+    }
+  }
+  return pieces;
+}
+
+std::vector<Ring> PositiveUnion(const std::vector<Ring>& paths, ShrinkCounts* counts) {
+  std::vector<IRing> g;
+  for (const Ring& p : paths) g.push_back(ToGrid(p));
+  return UnionOnce(g, counts, 0);
+}
+
+std::vector<Ring> Shrink(const Ring& ring, const ShrinkOptions& o, ShrinkCounts* counts) {
+  int cleaned = 0;
+  Ring r = PreClean(ring, o.clean_len, o.clean_angle_deg, &cleaned);
+  if (counts) counts->cleaned_points += cleaned;
+  r = Normalise(r);
+  if (r.size() < 3) return {};
+  // Steps 3-4: the faces of winding ≥ 1 of the raw offset path (Fig 6d: its CCW cycles), or,
+  // with options.swept, of the ring with the swept pieces (−1 each when shrinking): the exact
+  // erosion/dilation, quadratic when d spans many edges (the test twin of the raw path).
+  std::vector<Ring> paths;
+  if (o.swept) {
+    paths.push_back(r);
+    for (Ring& piece : SweptPieces(r, o)) paths.push_back(std::move(piece));
+  } else {
+    paths.push_back(RawOffsetPath(r, o));
+  }
+  std::vector<Ring> rings = PositiveUnion(paths, counts);
+  // Slivers the rounding onto the grid can leave (area below 1e-4·d²) are dropped and counted.
+  const IRing g = ToGrid(r);
+  std::vector<Ring> out;
+  for (Ring& q : rings) {
+    // A kept face lies on the offset side, about d away (a guard against faces of the raw path
+    // that belong to no offset region).
+    bool far = false;  // some vertex at the offset distance (offset edges are at d from all)
+    for (const Vec2& v : q)
+      if (RingDistance(r, v) >= o.d * (1 - 1e-3) - 2 / kGridPerMetre) {
+        far = true;
+        break;
+      }
+    if (Inside(g, ToGrid(q[0])) == o.outward || !far) {
+      if (counts) ++counts->dropped_rings;
+      continue;
+    }
+    if (Area(q) < 1e-4 * o.d * o.d) {
+      if (counts) ++counts->dropped_rings;
+      continue;
+    }
+    out.push_back(std::move(q));
+  }
+  return out;
+}
+
+}  // namespace niwa::terrain

@@ -1,0 +1,61 @@
+// The polygon shrinking algorithm (Fig 6) with the four joins of Figs 5 and 7, the Fig 8 pre-clean,
+// and the positive-winding union that turns a raw offset path into simple rings (steps 3-4).
+// Written here (no library): Clipper, the usual choice, is a native-only .so in Debian, and the
+// union must run on exact integer coordinates so that no self-intersecting ring ever leaves it.
+// Does not: perturb (generate.h) or decide elevations.
+#pragma once
+
+#include <vector>
+
+#include "terrain/contour.h"
+#include "terrain/polygon.h"
+
+namespace niwa::terrain {
+
+// How the gap at a valley (reflex) vertex is closed: Fig 5(a) miter, 5(b) bevel, 5(c) round, and
+// the Fig 7 capped polyline A1 -> P -> A2 with P = V + min(c·d, d/cos(ψ/2))·b.
+enum class Join : int { kMiter = 0, kBevel = 1, kRound = 2, kCapped = 3 };
+// The plain miter is the capped join with this c (Fig 5(a) up to ψ = 2·acos(1/10) ≈ 168.5°).
+constexpr double kMiterLimit = 10.0;
+
+struct ShrinkOptions {
+  double d = 1;  // offset distance (m), > 0
+  Join join = Join::kCapped;
+  double c = 1.4;              // Fig 7 cap, ≥ 1
+  double clean_len = 0;        // Fig 8 pre-clean: drop a point of an edge shorter than this (m)
+  double clean_angle_deg = 0;  // Fig 8 pre-clean: drop a vertex with interior angle below this
+  bool outward = false;        // grow toward the foot (clockwise offset, holes filled)
+  bool swept = false;          // exact swept-piece union instead of the raw path (the test twin)
+};
+
+struct ShrinkCounts {
+  int cleaned_points = 0;
+  int holes_filled = 0;
+  int dropped_rings = 0;
+};
+
+// The join point P of Fig 7 for a reflex vertex V with left unit normals n1, n2 of its edges.
+Vec2 CappedJoinPoint(const Vec2& v, const Vec2& n1, const Vec2& n2, double d, double c);
+
+// Fig 8 pre-clean of a counter-clockwise ring (returns the ring; counts the points dropped).
+Ring PreClean(const Ring& ring, double min_len, double min_angle_deg, int* dropped);
+
+// Step 1-2: the raw offset path (offset edges plus the join pieces), unsnapped.
+Ring RawOffsetPath(const Ring& ring, const ShrinkOptions& options);
+
+// The region within d of the ring on the offset side as pieces (a rectangle per edge, a join
+// wedge V, A1, join points, A2 per gap vertex), oriented clockwise when shrinking.
+std::vector<Ring> SweptPieces(const Ring& ring, const ShrinkOptions& options);
+
+// Steps 3-4: the regions of winding number ≥ 1 of a set of closed paths, as simple
+// counter-clockwise rings on the grid (clockwise rings = holes are dropped and counted).
+std::vector<Ring> PositiveUnion(const std::vector<Ring>& paths, ShrinkCounts* counts);
+
+// The whole Fig 6 algorithm: 0, 1 or several simple counter-clockwise rings at distance d inside
+// the ring (outside when options.outward).
+std::vector<Ring> Shrink(const Ring& ring, const ShrinkOptions& options, ShrinkCounts* counts);
+
+// Ring made counter-clockwise, snapped, without repeated or collinear points.
+Ring Normalise(const Ring& ring);
+
+}  // namespace niwa::terrain

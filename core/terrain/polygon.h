@@ -1,0 +1,61 @@
+// Exact polygon predicates on the 1/1024 m grid: snapping, orientation, signed area, segment
+// intersection, simplicity, point-in-ring, distances. Written here because no header-only library
+// that builds for both targets gives exact integer predicates (Clipper is native-only in Debian);
+// each routine is checked against a brute-force twin in tests/terrain/polygon_test.cpp.
+// Does not: offset, union or perturb (core/terrain/offset, generate).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "terrain/contour.h"
+
+namespace niwa::terrain {
+
+__extension__ typedef __int128 Int128;
+
+struct IPoint {
+  int64_t x = 0, y = 0;
+  bool operator==(const IPoint& o) const { return x == o.x && y == o.y; }
+  bool operator!=(const IPoint& o) const { return !(*this == o); }
+  bool operator<(const IPoint& o) const { return x < o.x || (x == o.x && y < o.y); }
+};
+using IRing = std::vector<IPoint>;
+
+// Largest coordinate accepted (m): keeps every product exact in __int128.
+constexpr double kMaxCoordinate = 1e6;
+
+IPoint ToGrid(const Vec2& p);
+Vec2 FromGrid(const IPoint& p);
+IRing ToGrid(const Ring& ring);
+Ring FromGrid(const IRing& ring);
+// The ring snapped onto the grid (Vec2 values that are exact multiples of 1/1024).
+Ring Snap(const Ring& ring);
+
+// Sign of the cross product (b − a) × (c − a): +1 left turn, −1 right turn, 0 collinear.
+int Orient(const IPoint& a, const IPoint& b, const IPoint& c);
+// Twice the signed area (positive for counter-clockwise).
+Int128 TwiceArea(const IRing& ring);
+double Area(const Ring& ring);  // signed, m²
+double Perimeter(const Ring& ring);
+
+// Closed segments ab and cd share at least one point.
+bool SegmentsIntersect(const IPoint& a, const IPoint& b, const IPoint& c, const IPoint& d);
+// Index pairs (i, j), i < j, of ring edges (edge i = p_i -> p_{i+1}) that meet other than at the
+// shared vertex of two neighbouring edges. A sort on x prunes the pairs.
+std::vector<std::pair<int, int>> SelfIntersections(const IRing& ring, int max_pairs = 1 << 30);
+std::vector<std::pair<int, int>> SelfIntersectionsBruteForce(const IRing& ring);
+// At least 3 distinct points, no repeated vertex, no two edges meeting except neighbours at
+// their shared vertex, non-zero area.
+bool IsSimple(const IRing& ring);
+// Any edge of a meets any edge of b.
+bool RingsIntersect(const IRing& a, const IRing& b);
+// Point strictly inside (crossing rule; points on the boundary count as outside).
+bool Inside(const IRing& ring, const IPoint& p);
+bool InsideDouble(const Ring& ring, const Vec2& p);  // for cell centres (not on the grid)
+
+// Distance from p to segment ab, and to a ring's boundary.
+double SegmentDistance(const Vec2& p, const Vec2& a, const Vec2& b);
+double RingDistance(const Ring& ring, const Vec2& p);
+
+}  // namespace niwa::terrain

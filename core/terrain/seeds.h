@@ -1,0 +1,24 @@
+// Built-in seed contours, each with where it comes from: disk (the cone oracle), dumbbell (splits
+// into two peaks), lobes7 (seven valleys). The DEM seed (jacksboro900) is not extracted yet.
+// Does not: read files at run time.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "base/status.h"
+#include "terrain/contour.h"
+
+namespace niwa::terrain {
+
+struct SeedInfo {
+  std::string name;
+  std::string source;              // provenance, one line
+  double d = 20, dh = 10, h0 = 0;  // defaults that suit its size
+};
+
+const std::vector<SeedInfo>& BuiltinSeeds();
+// The ring of a built-in seed (metres, counter-clockwise); the error lists the names.
+Result<Ring> BuiltinSeed(const std::string& name);
+
+}  // namespace niwa::terrain

@@ -1,0 +1,170 @@
+// The terrain table and its figure presets (paper values in docs/terrain-model.md).
+#include "terrain/terrain_params.h"
+
+#include "params/param_text.h"
+
+namespace niwa::terrain {
+namespace {
+
+using P = TerrainParam;
+constexpr int Id(P p) { return static_cast<int>(p); }
+constexpr Stage kGrow = Stage::kGrow;
+constexpr Stage kMesh = Stage::kMesh;
+constexpr Stage kView = Stage::kView;
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+const ParamTable& TerrainTable() {
+  static const ParamTable table(
+      "terrain",
+      {
+          {Id(P::kMethod), "method", "", "", 3, 0, 3, true, "method", kGrow,
+           "0 simple (§3), 1 midpoint displacement (§4.1), 2 Fourier descriptors (§4.2), 3 "
+           "improved "
+           "(§4.3)."},
+          {Id(P::kJoin), "join", "", "", 3, 0, 3, true, "shrink", kGrow,
+           "Valley join: 0 miter (Fig 5a), 1 bevel (5b), 2 round (5c), 3 capped polyline (Fig 7)."},
+          {Id(P::kD), "d", "d", "m", 20, 0.01, 100000, false, "shrink", kGrow,
+           "Horizontal offset between successive contours."},
+          {Id(P::kDh), "dh", "Δh", "m", 10, 0.001, 100000, false, "shrink", kGrow,
+           "Contour interval."},
+          {Id(P::kH0), "h0", "h_0", "m", 0, -100000, 100000, false, "shrink", kGrow,
+           "Elevation of the seed contour."},
+          {Id(P::kC), "c", "c", "", 3, 1, 100, false, "shrink", kGrow,
+           "Fig 7 cap: the join point lies at most c·d (= d') from the valley vertex."},
+          {Id(P::kD2), "d2", "d''", "d", 0.5, 0, 10, false, "midpoint", kGrow,
+           "Cap of one midpoint displacement, as a multiple of d (Fig 12)."},
+          {Id(P::kThetaMin), "theta_min", "θ_min", "deg", 20, 0, 89, false, "midpoint", kGrow,
+           "Smallest displacement angle θ (Fig 12)."},
+          {Id(P::kThetaMax), "theta_max", "θ_max", "deg", 40, 0, 89, false, "midpoint", kGrow,
+           "Largest displacement angle θ (Fig 12)."},
+          {Id(P::kNfft), "nfft", "n", "", 1024, 16, 16384, true, "fourier", kGrow,
+           "FFT samples (equal edges) per contour (§4.2: 1,024)."},
+          {Id(P::kF0), "f0", "f_0", "", 256, 1, 8192, true, "fourier", kGrow,
+           "Phases of every component with |k| ≥ f0 are randomised; at most nfft/2."},
+          {Id(P::kPhaseAmp), "phase_amp", "a", "rad", kPi, 0, kPi, false, "fourier", kGrow,
+           "Phase noise: arg c(k) + U(−a, a); π is a fully random phase."},
+          {Id(P::kLongFrac), "long_frac", "", "", 0.2, 0.01, 1, false, "fourier", kGrow,
+           "§4.3 step 1.3: collinear points are removed until this share of edges is ≥ 2·d0."},
+          {Id(P::kLoopMethod), "loop_method", "", "", 2, 1, 2, true, "loops", kGrow,
+           "§4.4 loop removal: 1 delete small faces, 2 cut from each crossing to its twin."},
+          {Id(P::kLoopFaces), "loop_faces", "T", "", 5, 3, 100000, true, "loops", kGrow,
+           "Method 1: faces with fewer segments are deleted (Fig 18: any value > 4)."},
+          {Id(P::kLoopRun), "loop_run", "T_2", "", 5, 1, 100000, true, "loops", kGrow,
+           "Method 2: the walk starts on a run of at least this many points."},
+          {Id(P::kCleanLen), "clean_len", "", "d", 0.05, 0, 1, false, "shrink", kGrow,
+           "Fig 8 pre-clean: a point of an edge shorter than this (× d) is dropped."},
+          {Id(P::kCleanAngle), "clean_angle", "", "deg", 10, 0, 60, false, "shrink", kGrow,
+           "Fig 8 pre-clean: a vertex whose angle is sharper than this is dropped."},
+          {Id(P::kSeed), "seed", "", "", 1, 0, 4294967295.0, true, "method", kGrow,
+           "RNG seed (one PCG32 stream per contour from the seed and the contour's path)."},
+          {Id(P::kMaxLevels), "max_levels", "", "", 1000, 1, 10000, true, "method", kGrow,
+           "Levels grown at most (the result says truncated when hit)."},
+          {Id(P::kDown), "down", "", "", 0, 0, 1000, true, "method", kGrow,
+           "Contours grown below the seed by enlarging it (§2, clockwise offset)."},
+          {Id(P::kRes), "res", "", "cells", 256, 8, 4096, true, "surface", kMesh,
+           "Heightfield cells along the longer side of the mountain."},
+          {Id(P::kTint), "tint", "", "", 1, 0, 1, true, "surface", kView,
+           "Hypsometric vertex colours on the mesh (1) or plain grey (0)."},
+      },
+      {{"method", "Method"},
+       {"shrink", "Shrinking (Figs 5-8)"},
+       {"midpoint", "Midpoint displacement (§4.1)"},
+       {"fourier", "Fourier descriptors (§4.2-4.3)"},
+       {"loops", "Loops (§4.4)"},
+       {"surface", "Surface"}});
+  return table;
+}
+
+const ParamTable& TableOf(TerrainParam) { return TerrainTable(); }
+
+const char* MethodName(int method) {
+  static const char* names[] = {"simple", "midpoint", "fourier", "improved"};
+  return method >= 0 && method < 4 ? names[method] : "";
+}
+int MethodFromName(const std::string& name) {
+  for (int i = 0; i < 4; ++i)
+    if (name == MethodName(i)) return i;
+  return -1;
+}
+const char* JoinName(int join) {
+  static const char* names[] = {"miter", "bevel", "round", "capped"};
+  return join >= 0 && join < 4 ? names[join] : "";
+}
+int JoinFromName(const std::string& name) {
+  for (int i = 0; i < 4; ++i)
+    if (name == JoinName(i)) return i;
+  return -1;
+}
+
+const std::vector<FigurePreset>& FigurePresets() {
+  using V = std::vector<std::pair<TerrainParam, double>>;
+  auto simple = [](double join, double c) {
+    return V{{P::kMethod, 0}, {P::kJoin, join}, {P::kC, c}};
+  };
+  auto mpd = [](double tmax) {
+    return V{{P::kMethod, 1}, {P::kJoin, 3},     {P::kC, 1.4},
+             {P::kD2, 0.3},   {P::kThetaMin, 0}, {P::kThetaMax, tmax}};
+  };
+  auto fd = [](double f0) {
+    return V{{P::kMethod, 2}, {P::kJoin, 3}, {P::kC, 1.4}, {P::kF0, f0}, {P::kNfft, 1024}};
+  };
+  static const std::vector<FigurePreset> presets = {
+      {"fig9a", "simple method, miter join (Fig 5a)", simple(0, 1.4)},
+      {"fig9b", "simple method, bevel join (Fig 5b)", simple(1, 1.4)},
+      {"fig9c", "simple method, Fig 7 join, d' = 1.4d", simple(3, 1.4)},
+      {"fig10a", "simple method, Fig 7 join, d' = 1.4d", simple(3, 1.4)},
+      {"fig10b", "simple method, Fig 7 join, d' = 1.6d", simple(3, 1.6)},
+      {"fig13a", "midpoint displacement, d' = 1.4d, d'' = 0.3d, θ in (0°, 10°)", mpd(10)},
+      {"fig13b", "midpoint displacement, d' = 1.4d, d'' = 0.3d, θ in (0°, 20°)", mpd(20)},
+      {"fig13c", "midpoint displacement, d' = 1.4d, d'' = 0.3d, θ in (0°, 30°)", mpd(30)},
+      {"fig14a", "phase randomisation, n = 1024, f0 = 64", fd(64)},
+      {"fig14b", "phase randomisation, n = 1024, f0 = 128", fd(128)},
+      {"fig14c", "phase randomisation, n = 1024, f0 = 256", fd(256)},
+      {"fig15", "Fourier-descriptor method, Fig 7 join, d' = 1.4d, f0 = 256", fd(256)},
+      {"fig16", "improved method: d' = 3d, d'' = 0.5d, θ in (20°, 40°), f0 = 256",
+       V{{P::kMethod, 3},
+         {P::kJoin, 3},
+         {P::kC, 3},
+         {P::kD2, 0.5},
+         {P::kThetaMin, 20},
+         {P::kThetaMax, 40},
+         {P::kF0, 256},
+         {P::kNfft, 1024}}},
+  };
+  return presets;
+}
+
+Status ApplyPreset(const std::string& name, TerrainParams* params) {
+  std::string key = name;
+  if (name == "simple") key = "fig9c";
+  if (name == "midpoint") key = "fig13b";
+  if (name == "fourier") key = "fig15";
+  if (name == "improved") key = "fig16";
+  for (const FigurePreset& p : FigurePresets()) {
+    if (key != p.name) continue;
+    for (const auto& [row, value] : p.values) NIWA_RETURN_IF_ERROR(params->Set(row, value));
+    return Status::Ok();
+  }
+  return Status::Error("preset", "'" + name +
+                                     "' is unknown; must be simple, midpoint, fourier, improved, "
+                                     "fig9a-c, fig10a-b, fig13a-c, fig14a-c, fig15 or fig16");
+}
+
+Status CheckTerrainParams(const TerrainParams& p) {
+  if (p.GetInt(P::kF0) > p.GetInt(P::kNfft) / 2) {
+    return Status::Error("f0", FormatNumber(p.Get(P::kF0)) +
+                                   " is out of range; must be a whole "
+                                   "number in [1, nfft/2 = " +
+                                   std::to_string(p.GetInt(P::kNfft) / 2) + "]");
+  }
+  if (p.Get(P::kThetaMin) > p.Get(P::kThetaMax)) {
+    return Status::Error("theta_min", FormatNumber(p.Get(P::kThetaMin)) +
+                                          " is out of range; must be a number in [0, theta_max = " +
+                                          FormatNumber(p.Get(P::kThetaMax)) + "]");
+  }
+  return Status::Ok();
+}
+
+}  // namespace niwa::terrain

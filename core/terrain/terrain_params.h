@@ -1,0 +1,65 @@
+// The terrain study's parameter table (Misawa, Chiba, Saito 1987; docs/terrain-model.md): one row
+// per constant of the contour generation methods, the surface and the RNG, and the figure presets
+// (Figs 9, 10, 13, 14, 15, 16) as row values. Does not: grow anything (generate.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "base/status.h"
+#include "params/param_table.h"
+
+namespace niwa::terrain {
+
+enum class TerrainParam : int {
+  kMethod,    // 0 simple (§3), 1 midpoint (§4.1), 2 fourier (§4.2), 3 improved (§4.3)
+  kJoin,      // 0 miter (Fig 5a), 1 bevel (5b), 2 round (5c), 3 capped (Fig 7)
+  kD,         // d: offset between successive contours (m)
+  kDh,        // Δh: contour interval (m)
+  kH0,        // elevation of the seed contour (m)
+  kC,         // c: Fig 7 cap, d' = c·d
+  kD2,        // d'' as a multiple of d: cap of a midpoint displacement
+  kThetaMin,  // θ range (deg) of the midpoint displacement
+  kThetaMax,
+  kNfft,        // n: FFT samples per contour
+  kF0,          // f0: first randomised frequency
+  kPhaseAmp,    // a: phase = arg c(k) + U(−a, a)
+  kLongFrac,    // share of edges ≥ 2·d0 kept by the collinear removal of §4.3 step 1.3
+  kLoopMethod,  // 1 or 2 (§4.4)
+  kLoopFaces,   // method 1: delete faces with fewer segments
+  kLoopRun,     // method 2: the start run's length
+  kCleanLen,    // Fig 8 pre-clean: short edge, as a multiple of d
+  kCleanAngle,  // Fig 8 pre-clean: acute angle (deg)
+  kSeed,        // RNG seed
+  kMaxLevels,   // level cap
+  kDown,        // contours grown below the seed (enlarging, §2)
+  kRes,         // heightfield cells along the longer side
+  kTint,        // hypsometric vertex colours in the mesh (0/1)
+  kCount
+};
+
+const niwa::ParamTable& TerrainTable();
+const niwa::ParamTable& TableOf(TerrainParam);
+using TerrainParams = niwa::StudyParams<TerrainParam>;
+
+enum class Method : int { kSimple = 0, kMidpoint = 1, kFourier = 2, kImproved = 3 };
+const char* MethodName(int method);           // "simple", ...
+int MethodFromName(const std::string& name);  // −1 when unknown
+const char* JoinName(int join);
+int JoinFromName(const std::string& name);
+
+// A figure preset: its name ("fig16"), what it reproduces, and its row values.
+struct FigurePreset {
+  const char* name;
+  const char* caption;
+  std::vector<std::pair<TerrainParam, double>> values;
+};
+const std::vector<FigurePreset>& FigurePresets();
+// Applies a preset by name ("fig9c") or by method name ("improved" = fig16, "simple" = fig9c,
+// "midpoint" = fig13b, "fourier" = fig15); error names the field and the allowed names.
+Status ApplyPreset(const std::string& name, TerrainParams* params);
+
+// Cross-row checks the table's ranges cannot state (f0 ≤ n/2, θmin ≤ θmax).
+Status CheckTerrainParams(const TerrainParams& params);
+
+}  // namespace niwa::terrain

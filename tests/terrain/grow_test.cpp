@@ -1,0 +1,228 @@
+// The contour generation methods: the cone of the disk seed, the Fig 4 split, Fig 18's loop
+// sequence, the Fourier invariants, and no self-intersection or nesting violation for every
+// built-in seed × method; bad seeds and parameters give one line naming the field.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "terrain/fourier.h"
+#include "terrain/generate.h"
+#include "terrain/heightfield.h"
+#include "terrain/loops.h"
+#include "terrain/polygon.h"
+#include "terrain/seeds.h"
+
+namespace niwa::terrain {
+namespace {
+
+using P = TerrainParam;
+
+TerrainParams For(const std::string& method) {
+  TerrainParams p;
+  EXPECT_TRUE(ApplyPreset(method, &p).ok());
+  return p;
+}
+
+TEST(Grow, DiskSeedGivesAConeWithTheSimpleMethod) {
+  Result<Ring> seed = BuiltinSeed("disk");
+  ASSERT_TRUE(seed.ok());
+  TerrainParams p = For("simple");
+  Result<Terrain> t = Grow(*seed, p);
+  ASSERT_TRUE(t.ok()) << t.status().Line();
+  EXPECT_EQ(t->summits.size(), 1u);
+  // Summit = h0 + Δh·R/d = 10·200/20 = 100 m (the 256-gon's inscribed radius is 199.985 m).
+  EXPECT_NEAR(t->summits[0].elevation, 100.0, 0.5);
+  Heightfield hf = BuildHeightfield(*t, 128);
+  TerrainStats s = ComputeStats(*t, &hf);
+  EXPECT_NEAR(s.hypsometric_integral, 1.0 / 3.0, 0.02);
+  EXPECT_EQ(s.self_intersections, 0);
+  EXPECT_EQ(s.nesting_violations, 0);
+  EXPECT_EQ(s.pits, 0);
+  EXPECT_EQ(s.peaks, 1);
+  EXPECT_NEAR(s.mean_slope_deg, std::atan(10.0 / 20.0) * 180 / 3.14159265358979, 1.5);
+}
+
+TEST(Grow, DumbbellSplitsIntoTwoPeaksEachGrownOn) {
+  Result<Ring> seed = BuiltinSeed("dumbbell");
+  ASSERT_TRUE(seed.ok());
+  Result<Terrain> t = Grow(*seed, For("simple"));
+  ASSERT_TRUE(t.ok());
+  ASSERT_EQ(t->contours[0].children.size(), 2u);
+  TerrainStats s = ComputeStats(*t, nullptr);
+  EXPECT_EQ(s.peaks, 2);
+  EXPECT_EQ(s.splits, 1);
+  for (int c : t->contours[0].children)
+    EXPECT_FALSE(t->contours[static_cast<std::size_t>(c)].children.empty());
+}
+
+TEST(Grow, NoSelfIntersectionOrNestingViolationForEverySeedAndMethod) {
+  for (const SeedInfo& info : BuiltinSeeds()) {
+    Result<Ring> seed = BuiltinSeed(info.name);
+    ASSERT_TRUE(seed.ok());
+    for (const char* method : {"simple", "midpoint", "fourier", "improved"}) {
+      for (double rng_seed : {1.0, 7.0}) {
+        TerrainParams p = For(method);
+        ASSERT_TRUE(p.Set(P::kD, info.d).ok());
+        ASSERT_TRUE(p.Set(P::kSeed, rng_seed).ok());
+        Result<Terrain> t = Grow(*seed, p);
+        ASSERT_TRUE(t.ok()) << info.name << " " << method << ": " << t.status().Line();
+        TerrainStats s = ComputeStats(*t, nullptr);
+        EXPECT_EQ(s.self_intersections, 0) << info.name << " " << method;
+        EXPECT_EQ(s.nesting_violations, 0) << info.name << " " << method;
+        EXPECT_GE(s.levels, 2) << info.name << " " << method;
+        EXPECT_FALSE(t->counts.truncated);
+        // Same input, same contours.
+        Result<Terrain> again = Grow(*seed, p);
+        ASSERT_TRUE(again.ok());
+        ASSERT_EQ(again->contours.size(), t->contours.size());
+        for (std::size_t i = 0; i < t->contours.size(); ++i)
+          EXPECT_EQ(again->contours[i].ring, t->contours[i].ring);
+      }
+    }
+  }
+}
+
+TEST(Grow, HeightfieldLevelSetsLieOnTheirContours) {
+  Result<Ring> seed = BuiltinSeed("lobes7");
+  ASSERT_TRUE(seed.ok());
+  Result<Terrain> t = Grow(*seed, For("improved"));
+  ASSERT_TRUE(t.ok());
+  Heightfield hf = BuildHeightfield(*t, 96);
+  int checked = 0;
+  for (int j = 0; j < hf.height; ++j)
+    for (int i = 0; i < hf.width; ++i) {
+      const int b = hf.band[static_cast<std::size_t>(j) * hf.width + i];
+      if (b < 0) continue;
+      const ContourNode& c = t->contours[static_cast<std::size_t>(b)];
+      double top = c.elevation + t->dh;
+      for (const Summit& s : t->summits)
+        if (s.contour == b) top = s.elevation;
+      // Inside contour C and outside its children: between h_C and the next level.
+      EXPECT_GE(hf.At(i, j), c.elevation - 1e-9);
+      EXPECT_LE(hf.At(i, j), top + 1e-9);
+      ++checked;
+    }
+  EXPECT_GT(checked, 1000);
+  EXPECT_EQ(ComputeStats(*t, &hf).pits, 0);
+}
+
+// Fig 18: …1-2-3-④-⑤-6-7-8-⑤-9-④-10-11-12-13-⑭-15-16-⑭-17… -> …1-2-3-④-10-11-12-13-⑭-17…
+std::vector<SeqItem> Fig18() {
+  std::vector<SeqItem> s;
+  for (int id : {1, 2, 3}) s.push_back({-1, id});
+  s.push_back({4, 4});
+  s.push_back({5, 5});
+  for (int id : {6, 7, 8}) s.push_back({-1, id});
+  s.push_back({5, 5});
+  s.push_back({-1, 9});
+  s.push_back({4, 4});
+  for (int id : {10, 11, 12, 13}) s.push_back({-1, id});
+  s.push_back({14, 14});
+  for (int id : {15, 16}) s.push_back({-1, id});
+  s.push_back({14, 14});
+  s.push_back({-1, 17});
+  return s;
+}
+
+// The ids of a closed sequence, rotated to start at id 1 (the walk's start is its own choice).
+std::vector<int> Ids(const std::vector<SeqItem>& s) {
+  std::vector<int> out;
+  for (const SeqItem& it : s) out.push_back(it.id);
+  auto one = std::find(out.begin(), out.end(), 1);
+  if (one != out.end()) std::rotate(out.begin(), one, out.end());
+  return out;
+}
+
+TEST(Loops, Fig18SequenceWithBothMethods) {
+  const std::vector<int> expected{1, 2, 3, 4, 10, 11, 12, 13, 14, 17};
+  int removed = 0;
+  // The walk starts on a run of ≥ 4 plain points (10-11-12-13; 6-7-8 inside the loop is too short).
+  EXPECT_EQ(Ids(RemoveLoopsMethod2(Fig18(), 4, &removed)), expected);
+  EXPECT_EQ(removed, 2);  // ④…④ (with ⑤…⑤ inside) and ⑭…⑭
+  removed = 0;
+  EXPECT_EQ(Ids(RemoveLoopsMethod1(Fig18(), 5, &removed)), expected);
+  EXPECT_EQ(removed, 3);  // faces C (4 segments), B (3), D (3)
+  // Threshold 4 keeps face C (4 segments): its loop stays.
+  removed = 0;
+  std::vector<int> kept = Ids(RemoveLoopsMethod1(Fig18(), 4, &removed));
+  EXPECT_EQ(removed, 1);  // only D; B encloses C's twist, so it is no longer innermost-small
+  EXPECT_GT(kept.size(), expected.size());
+}
+
+TEST(Loops, TwistedRingIsUntwisted) {
+  // A square with a figure-eight twist on its top edge.
+  const Ring r{{0, 0}, {10, 0}, {10, 10}, {6, 10}, {4, 12}, {4, 11}, {6, 11}, {4, 10}, {0, 10}};
+  EXPECT_FALSE(IsSimple(ToGrid(r)));
+  int removed = 0;
+  Ring u = UntwistRing(r, 2, 3, &removed);
+  EXPECT_EQ(removed, 1);
+  EXPECT_TRUE(IsSimple(ToGrid(Snap(u))));
+}
+
+TEST(Fourier, PhaseRandomisationKeepsMagnitudesLowFrequenciesAndClosure) {
+  Result<Ring> seed = BuiltinSeed("lobes7");
+  ASSERT_TRUE(seed.ok());
+  const Ring z = ResampleEqual(*seed, 1024);
+  double h = 0;
+  std::vector<std::complex<double>> c = PTypeDescriptor(z, &h);
+  std::vector<std::complex<double>> c2 = c;
+  Pcg32 rng(3, 9);
+  RandomisePhases(&c2, 128, 3.14159265358979, &rng);
+  int changed = 0;
+  for (int idx = 0; idx < 1024; ++idx) {
+    const int k = idx < 512 ? idx : idx - 1024;
+    EXPECT_NEAR(std::abs(c2[static_cast<std::size_t>(idx)]),
+                std::abs(c[static_cast<std::size_t>(idx)]), 1e-12);
+    if (std::abs(k) < 128) {
+      EXPECT_EQ(c2[static_cast<std::size_t>(idx)], c[static_cast<std::size_t>(idx)]);
+    } else if (c2[static_cast<std::size_t>(idx)] != c[static_cast<std::size_t>(idx)]) {
+      ++changed;
+    }
+  }
+  EXPECT_GT(changed, 700);  // 768 randomised
+  const Ring back = CurveFromDescriptor(c, h, z[0]);
+  for (std::size_t i = 0; i < z.size(); i += 97) {
+    EXPECT_NEAR(back[i].x, z[i].x, 1e-9);
+    EXPECT_NEAR(back[i].y, z[i].y, 1e-9);
+  }
+  // Closure: the sum of the new steps is h·n·c(0), as before.
+  const Ring shaken = CurveFromDescriptor(c2, h, z[0]);
+  const Vec2 last = shaken.back();
+  double sx = 0, sy = 0;
+  for (std::size_t i = 0; i + 1 < shaken.size(); ++i) {
+    sx += shaken[i + 1].x - shaken[i].x;
+    sy += shaken[i + 1].y - shaken[i].y;
+  }
+  EXPECT_NEAR(last.x - z[0].x, sx, 1e-9);
+  EXPECT_NEAR(std::abs(c2[0]), std::abs(c[0]), 1e-15);
+}
+
+TEST(Midpoint, Fig12DeltaIsTheSmallerOfCapAndLTanTheta) {
+  EXPECT_NEAR(MidpointDelta(10, 45, 3), 3.0, 1e-12);
+  EXPECT_NEAR(MidpointDelta(10, 10, 3), 10 * std::tan(10 * 3.14159265358979323846 / 180), 1e-12);
+}
+
+TEST(BadInput, SeedsAndParametersGiveOneLineNamingTheField) {
+  TerrainParams p;
+  EXPECT_EQ(Grow({{0, 0}, {1, 1}}, p).status().Line(),
+            "contour: 2 points; must have 3 to 1000000 points");
+  EXPECT_EQ(Grow({{0, 0}, {10, 10}, {10, 0}, {0, 10}}, p).status().Line(),
+            "contour: self-intersects or has no area; must be a simple closed polygon");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(Grow({{0, 0}, {nan, 0}, {0, 1}}, p).status().Line(),
+            "contour: point 1 is not a finite coordinate; each must be a number in [-1e6, 1e6] m");
+  Ring huge(1000001, Vec2{0, 0});
+  EXPECT_EQ(Grow(huge, p).status().Line(),
+            "contour: 1000001 points; must have 3 to 1000000 points");
+  EXPECT_EQ(p.Set(P::kC, 0.5).Line(), "c: 0.5 is out of range; must be a number in [1, 100]");
+  EXPECT_EQ(p.Set(P::kD, 0).Line(), "d: 0 is out of range; must be a number in [0.01, 100000]");
+  ASSERT_TRUE(p.Set(P::kNfft, 256).ok());
+  ASSERT_TRUE(p.Set(P::kF0, 200).ok());
+  EXPECT_EQ(Grow(*BuiltinSeed("disk"), p).status().Line(),
+            "f0: 200 is out of range; must be a whole number in [1, nfft/2 = 128]");
+}
+
+}  // namespace
+}  // namespace niwa::terrain

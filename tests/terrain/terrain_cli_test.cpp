@@ -1,0 +1,84 @@
+// 'niwa terrain grow|seeds' and 'niwa params terrain' in-process: stats of every method, bad input
+// as one line with exit code 2 and no file left.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_runner.h"
+
+namespace niwa {
+namespace {
+
+TEST(TerrainCli, GrowPrintsStatsForEveryMethod) {
+  for (const char* method : {"simple", "midpoint", "fourier", "improved"}) {
+    CliResult r = RunNiwa({"terrain", "grow", "--builtin", "lobes7", "--method", method, "--seed",
+                           "3", "--stats", "--set", "res=64"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["method"], method);
+    EXPECT_GE(j["levels"].get<int>(), 8) << method;  // lobes7 at d = 20 m: about 12 levels
+    EXPECT_EQ(j["self_intersections"], 0);
+    EXPECT_EQ(j["nesting_violations"], 0);
+    EXPECT_EQ(j["pits"], 0);
+  }
+}
+
+TEST(TerrainCli, ContoursFileAndSeedsList) {
+  const std::string path = ::testing::TempDir() + "terrain_contours.json";
+  std::remove(path.c_str());
+  CliResult r = RunNiwa(
+      {"terrain", "grow", "--builtin", "dumbbell", "--method", "simple", "--contours", path});
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream in(path);
+  nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["contours"][0]["children"].size(), 2u);
+  EXPECT_EQ(j["summits"].size(), 2u);
+  CliResult seeds = RunNiwa({"terrain", "seeds"});
+  ASSERT_EQ(seeds.code, 0);
+  EXPECT_EQ(nlohmann::json::parse(seeds.out).size(), 3u);
+  CliResult params = RunNiwa({"params", "terrain"});
+  ASSERT_EQ(params.code, 0);
+  EXPECT_NE(params.out.find("f0"), std::string::npos);
+}
+
+TEST(TerrainCli, BadInputIsOneLineExitTwoAndNoFile) {
+  const std::string out = ::testing::TempDir() + "terrain_never.json";
+  const std::string bowtie = ::testing::TempDir() + "terrain_bowtie.json";
+  std::ofstream(bowtie) << R"({"points": [[0, 0], [10, 10], [10, 0], [0, 10]]})";
+  const std::string nan = ::testing::TempDir() + "terrain_nan.json";
+  std::ofstream(nan) << R"({"points": [[0, 0], [1, 0], "x"]})";
+  struct Case {
+    std::vector<std::string> args;
+    std::string line;
+  };
+  const std::vector<Case> cases = {
+      {{"--contour", bowtie},
+       "niwa: error: contour: self-intersects or has no area; must be a simple closed polygon\n"},
+      {{"--contour", nan},
+       "niwa: error: --contour: contour: a point is not [x, y] numbers; must be {\"points\": [[x, "
+       "y], ...]} in metres or a GeoJSON Polygon or LineString\n"},
+      {{"--builtin", "disk", "--set", "c=0.9"},
+       "niwa: error: --set: c: 0.9 is out of range; must be a number in [1, 100]\n"},
+      {{"--builtin", "disk", "--set", "d=0"},
+       "niwa: error: --set: d: 0 is out of range; must be a number in [0.01, 100000]\n"},
+      {{"--builtin", "disk", "--set", "f0=600"},
+       "niwa: error: f0: 600 is out of range; must be a whole number in [1, nfft/2 = 512]\n"},
+      {{"--builtin", "nope"},
+       "niwa: error: --builtin: 'nope' is unknown; must be disk, dumbbell or lobes7\n"},
+  };
+  for (const Case& c : cases) {
+    std::vector<std::string> args{"terrain", "grow"};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    args.push_back("--contours");
+    args.push_back(out);
+    CliResult r = RunNiwa(args);
+    EXPECT_EQ(r.code, 2) << c.line;
+    EXPECT_EQ(r.err, c.line);
+    EXPECT_FALSE(std::ifstream(out).good()) << c.line;
+  }
+}
+
+}  // namespace
+}  // namespace niwa
