@@ -50,6 +50,9 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
     Result<terrain::SeedFile> file = terrain::ParseContourJson(*text);
     if (!file.ok()) Fail(file.status().Within("--contour"));
     seed = file->ring;
+    // A contour that cannot seed a mountain is the file's fault: name the flag (Grow checks again).
+    Result<terrain::Ring> checked = terrain::CheckSeed(seed);
+    if (!checked.ok()) Fail(checked.status().Within("--contour"));
     if (file->has_elevation)
       Check(AsFlag(params.Set(TerrainParam::kH0, file->elevation), "elevation"));
   }

@@ -187,15 +187,7 @@ TEST(Fourier, PhaseRandomisationKeepsMagnitudesLowFrequenciesAndClosure) {
     EXPECT_NEAR(back[i].x, z[i].x, 1e-9);
     EXPECT_NEAR(back[i].y, z[i].y, 1e-9);
   }
-  // Closure: the sum of the new steps is h·n·c(0), as before.
-  const Ring shaken = CurveFromDescriptor(c2, h, z[0]);
-  const Vec2 last = shaken.back();
-  double sx = 0, sy = 0;
-  for (std::size_t i = 0; i + 1 < shaken.size(); ++i) {
-    sx += shaken[i + 1].x - shaken[i].x;
-    sy += shaken[i + 1].y - shaken[i].y;
-  }
-  EXPECT_NEAR(last.x - z[0].x, sx, 1e-9);
+  // The mean step c(0) (which closes the curve) keeps its magnitude under the phase shake.
   EXPECT_NEAR(std::abs(c2[0]), std::abs(c[0]), 1e-15);
 }
 

@@ -1,0 +1,60 @@
+// Terrain CLI: native == WASM `niwa terrain grow --stats` (minus the ms fields) and the contour-tree
+// .json, byte for byte, for every built-in seed × method and two RNG seeds; hostile input is one line
+// naming the field, exit 2, no file left behind.
+import { execFileSync, spawnSync } from 'node:child_process';
+import { existsSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+
+const root = process.env.NIWA_ROOT;
+const native = process.env.NIWA_NATIVE;
+const wasm = process.env.NIWA_WASM || join(root, 'build/wasm/bin/niwa.js');
+let passed = 0, failed = 0;
+const check = (ok, what) => { ok ? passed++ : failed++; console.log(`${ok ? 'PASS' : 'FAIL'} ${what}`); };
+if (!existsSync(wasm)) {
+  console.log(`FAIL WASM CLI missing at ${wasm}: build the wasm-release preset first`);
+  process.exit(1);
+}
+const run = (cmd, args) => cmd.endsWith('.js')
+  ? execFileSync('node', [cmd, ...args], { encoding: 'utf8' })
+  : execFileSync(cmd, args, { encoding: 'utf8' });
+const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => !k.startsWith('ms')));
+
+const dir = mkdtempSync(join(tmpdir(), 'niwa-terrain-'));
+const seeds = JSON.parse(run(native, ['terrain', 'seeds'])).map((s) => s.name);
+check(seeds.includes('disk') && seeds.length >= 3, `seeds listed: ${seeds.join(', ')}`);
+for (const seedName of seeds) {
+  for (const method of ['simple', 'midpoint', 'fourier', 'improved']) {
+    for (const rng of [1, 2]) {
+      const args = ['terrain', 'grow', '--builtin', seedName, '--method', method, '--seed', String(rng), '--stats'];
+      const na = join(dir, `${seedName}-${method}-${rng}-n.json`), wa = join(dir, `${seedName}-${method}-${rng}-w.json`);
+      const a = JSON.parse(run(native, [...args, '--contours', na]));
+      const b = JSON.parse(run(wasm, [...args, '--contours', wa]));
+      check(JSON.stringify(withoutMs(a)) === JSON.stringify(withoutMs(b)),
+        `${seedName} ${method} seed ${rng}: --stats native == WASM (${a.levels} levels, ${a.peaks} peaks)`);
+      const ja = readFileSync(na, 'utf8'), jb = readFileSync(wa, 'utf8');
+      check(ja.length > 100 && ja === jb, `${seedName} ${method} seed ${rng}: contours .json identical (${ja.length} bytes)`);
+    }
+  }
+}
+
+// Hostile input: one line, exit 2, no file.
+const crossing = join(dir, 'crossing.json');
+writeFileSync(crossing, JSON.stringify({ points: [[0, 0], [100, 100], [100, 0], [0, 100]] }));
+const hostile = [
+  [['--builtin', 'moon'], '--builtin'], [['--method', 'x'], '--method'], [['--seed', '-1'], '--seed'],
+  [['--set', 'c=0.5'], '--set'], [['--set', 'd=0'], '--set'], [['--set', 'd=nan'], '--set'],
+  [['--contour', join(dir, 'none.json')], '--contour'], [['--contour', crossing], '--contour'],
+];
+for (const [args, field] of hostile) {
+  for (const cmd of [native, wasm]) {
+    const out = join(dir, 'bad.json');
+    const full = ['terrain', 'grow', ...(args[0] === '--builtin' || args[0] === '--contour' ? [] : ['--builtin', 'disk']), ...args, '--contours', out];
+    const r = cmd.endsWith('.js') ? spawnSync('node', [cmd, ...full], { encoding: 'utf8' }) : spawnSync(cmd, full, { encoding: 'utf8' });
+    const lines = r.stderr.trim().split('\n');
+    check(r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${field}`) && !existsSync(out),
+      `${cmd.endsWith('.js') ? 'wasm' : 'native'} ${args.join(' ')}: exit ${r.status}, "${lines[0]}"`);
+  }
+}
+console.log(`${passed} passed, ${failed} failed`);
+process.exit(failed ? 1 : 0);
