@@ -52,7 +52,7 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
     seed = file->ring;
     // A contour that cannot seed a mountain is the file's fault: name the flag (Grow checks again).
     Result<terrain::Ring> checked = terrain::CheckSeed(seed);
-    if (!checked.ok()) Fail(checked.status().Within("--contour"));
+    if (!checked.ok()) Fail(Status::Error("--contour", checked.status().message()));
     if (file->has_elevation)
       Check(AsFlag(params.Set(TerrainParam::kH0, file->elevation), "elevation"));
   }

@@ -55,7 +55,7 @@ TEST(TerrainCli, BadInputIsOneLineExitTwoAndNoFile) {
   };
   const std::vector<Case> cases = {
       {{"--contour", bowtie},
-       "niwa: error: contour: self-intersects or has no area; must be a simple closed polygon\n"},
+       "niwa: error: --contour: self-intersects or has no area; must be a simple closed polygon\n"},
       {{"--contour", nan},
        "niwa: error: --contour: contour: a point is not [x, y] numbers; must be {\"points\": [[x, "
        "y], ...]} in metres or a GeoJSON Polygon or LineString\n"},
