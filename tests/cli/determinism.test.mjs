@@ -1,23 +1,11 @@
 // Native vs WASM CLI: for every preset, same --stats counts, same JSON topology, positions within 1e-5 of height.
-import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, existsSync } from 'node:fs';
+import { mkdtempSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { check, finish, native, requireWasm, run, wasm } from '../support/cli_pair.mjs';
 
-const root = process.env.NIWA_ROOT;
-const native = process.env.NIWA_NATIVE;
-const wasm = join(root, 'build/wasm/bin/niwa.js');
 const years = Number(process.env.NIWA_DETERMINISM_YEARS || 15);
-let passed = 0, failed = 0;
-const check = (ok, what) => { ok ? passed++ : failed++; console.log(`${ok ? 'PASS' : 'FAIL'} ${what}`); };
-
-if (!existsSync(wasm)) {
-  console.log(`FAIL WASM CLI missing at ${wasm}: build the wasm-release preset first`);
-  process.exit(1);
-}
-const run = (cmd, args) => cmd.endsWith('.js')
-  ? execFileSync('node', [cmd, ...args], { encoding: 'utf8' })
-  : execFileSync(cmd, args, { encoding: 'utf8' });
+requireWasm();
 
 const dir = mkdtempSync(join(tmpdir(), 'niwa-det-'));
 const presets = run(native, ['presets']).trim().split('\n').map((l) => l.split('\t')[0]);
@@ -57,5 +45,4 @@ for (const preset of ['keyaki', 'tsutsuji']) {
   const a = readFileSync(join(dir, `${preset}-n.csv`), 'utf8'), b = readFileSync(join(dir, `${preset}-w.csv`), 'utf8');
   check(a.length > 100 && a === b, `${preset} sway: native and WASM tip trajectories identical (${a.split('\n').length} lines)`);
 }
-console.log(`${passed} passed, ${failed} failed`);
-process.exit(failed ? 1 : 0);
+finish();

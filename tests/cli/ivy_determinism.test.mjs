@@ -1,26 +1,14 @@
 // Ivy CLI: native == WASM `niwa ivy grow --stats` (minus the ms fields) and the .json, byte for byte,
 // for every built-in scene and seeds 1-5; the .glb validates with Khronos' gltf-validator (0 errors)
 // and carries _BIRTH_STEP; hostile input is one line naming the field, exit 2, no file left behind.
-import { execFileSync, spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
+import { buildName, check, finish, native, requireWasm, root, run, spawn, wasm, withoutMs } from '../support/cli_pair.mjs';
 
-const root = process.env.NIWA_ROOT;
-const native = process.env.NIWA_NATIVE;
-const wasm = process.env.NIWA_WASM || join(root, 'build/wasm/bin/niwa.js');
-let passed = 0, failed = 0;
-const check = (ok, what) => { ok ? passed++ : failed++; console.log(`${ok ? 'PASS' : 'FAIL'} ${what}`); };
-if (!existsSync(wasm)) {
-  console.log(`FAIL WASM CLI missing at ${wasm}: build the wasm-release preset first`);
-  process.exit(1);
-}
-const run = (cmd, args) => cmd.endsWith('.js')
-  ? execFileSync('node', [cmd, ...args], { encoding: 'utf8' })
-  : execFileSync(cmd, args, { encoding: 'utf8' });
-const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => !k.startsWith('ms')));
+requireWasm();
 
 const dir = mkdtempSync(join(tmpdir(), 'niwa-ivy-'));
 const scenes = run(native, ['ivy', 'scenes']).trim().split('\n').map((l) => l.split('\t')[0]);
@@ -70,13 +58,10 @@ const hostile = [
 for (const [args, field] of hostile) {
   for (const cmd of [native, wasm]) {
     const out = join(dir, 'bad.json');
-    const r = cmd.endsWith('.js')
-      ? spawnSync('node', [cmd, 'ivy', 'grow', ...args, '--out', out], { encoding: 'utf8' })
-      : spawnSync(cmd, ['ivy', 'grow', ...args, '--out', out], { encoding: 'utf8' });
+    const r = spawn(cmd, ['ivy', 'grow', ...args, '--out', out]);
     const lines = r.stderr.trim().split('\n');
     check(r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${field}`) && !existsSync(out),
-      `${cmd.endsWith('.js') ? 'wasm' : 'native'} ${args.join(' ')}: exit ${r.status}, "${lines[0]}"`);
+      `${buildName(cmd)} ${args.join(' ')}: exit ${r.status}, "${lines[0]}"`);
   }
 }
-console.log(`${passed} passed, ${failed} failed`);
-process.exit(failed ? 1 : 0);
+finish();

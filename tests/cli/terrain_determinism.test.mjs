@@ -1,24 +1,12 @@
 // Terrain CLI: native == WASM `niwa terrain grow --stats` (minus the ms fields) and the contour-tree
 // .json, byte for byte, for every built-in seed × method and two RNG seeds; hostile input is one line
 // naming the field, exit 2, no file left behind.
-import { execFileSync, spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { buildName, check, finish, native, requireWasm, run, spawn, wasm, withoutMs } from '../support/cli_pair.mjs';
 
-const root = process.env.NIWA_ROOT;
-const native = process.env.NIWA_NATIVE;
-const wasm = process.env.NIWA_WASM || join(root, 'build/wasm/bin/niwa.js');
-let passed = 0, failed = 0;
-const check = (ok, what) => { ok ? passed++ : failed++; console.log(`${ok ? 'PASS' : 'FAIL'} ${what}`); };
-if (!existsSync(wasm)) {
-  console.log(`FAIL WASM CLI missing at ${wasm}: build the wasm-release preset first`);
-  process.exit(1);
-}
-const run = (cmd, args) => cmd.endsWith('.js')
-  ? execFileSync('node', [cmd, ...args], { encoding: 'utf8' })
-  : execFileSync(cmd, args, { encoding: 'utf8' });
-const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => !k.startsWith('ms')));
+requireWasm();
 
 const dir = mkdtempSync(join(tmpdir(), 'niwa-terrain-'));
 const seeds = JSON.parse(run(native, ['terrain', 'seeds'])).map((s) => s.name);
@@ -50,11 +38,10 @@ for (const [args, field] of hostile) {
   for (const cmd of [native, wasm]) {
     const out = join(dir, 'bad.json');
     const full = ['terrain', 'grow', ...(args[0] === '--builtin' || args[0] === '--contour' ? [] : ['--builtin', 'disk']), ...args, '--contours', out];
-    const r = cmd.endsWith('.js') ? spawnSync('node', [cmd, ...full], { encoding: 'utf8' }) : spawnSync(cmd, full, { encoding: 'utf8' });
+    const r = spawn(cmd, full);
     const lines = r.stderr.trim().split('\n');
     check(r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${field}`) && !existsSync(out),
-      `${cmd.endsWith('.js') ? 'wasm' : 'native'} ${args.join(' ')}: exit ${r.status}, "${lines[0]}"`);
+      `${buildName(cmd)} ${args.join(' ')}: exit ${r.status}, "${lines[0]}"`);
   }
 }
-console.log(`${passed} passed, ${failed} failed`);
-process.exit(failed ? 1 : 0);
+finish();

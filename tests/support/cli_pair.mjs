@@ -1,0 +1,34 @@
+// Shared by the node CLI tests that compare the native and the WASM `niwa`: where both are, a
+// PASS/FAIL counter, run/spawn for either build, and the closing "N passed, N failed" line.
+import { execFileSync, spawnSync } from 'node:child_process';
+import { existsSync } from 'node:fs';
+import { join } from 'node:path';
+
+export const root = process.env.NIWA_ROOT;
+export const native = process.env.NIWA_NATIVE;
+export const wasm = process.env.NIWA_WASM || join(root, 'build/wasm/bin/niwa.js');
+
+let passed = 0, failed = 0;
+export const check = (ok, what) => { ok ? passed++ : failed++; console.log(`${ok ? 'PASS' : 'FAIL'} ${what}`); };
+
+// Stops the test when the WASM CLI has not been built.
+export function requireWasm() {
+  if (!existsSync(wasm)) {
+    console.log(`FAIL WASM CLI missing at ${wasm}: build the wasm-release preset first`);
+    process.exit(1);
+  }
+}
+
+const argv = (cmd, args) => (cmd.endsWith('.js') ? ['node', [cmd, ...args]] : [cmd, args]);
+// stdout of a successful run (throws on a non-zero exit).
+export const run = (cmd, args) => execFileSync(...argv(cmd, args), { encoding: 'utf8' });
+// {status, stdout, stderr} of any run.
+export const spawn = (cmd, args) => spawnSync(...argv(cmd, args), { encoding: 'utf8' });
+export const buildName = (cmd) => (cmd.endsWith('.js') ? 'wasm' : 'native');
+// A --stats object without its timing fields (ms, ms_*), which differ run to run.
+export const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => !k.startsWith('ms')));
+
+export function finish() {
+  console.log(`${passed} passed, ${failed} failed`);
+  process.exit(failed ? 1 : 0);
+}
