@@ -37,3 +37,9 @@ else()
   set(NIWA_DRACO_LIBRARY "")
   set(NIWA_DRACO_DEFINITIONS "")
 endif()
+
+# Threads (native only): the BVH build runs the root's two halves on two threads (core/geom/bvh.cpp;
+# the same nodes as one thread, bit for bit). The WASM build has no threads and builds on one.
+find_package(Threads REQUIRED)
+set(NIWA_THREADS_LIBRARY Threads::Threads)
+set(NIWA_THREADS_DEFINITIONS NIWA_HAVE_THREADS=1)

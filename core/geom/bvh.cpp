@@ -5,8 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <exception>
 #include <glm/common.hpp>
 #include <memory>
+#if NIWA_HAVE_THREADS
+#include <thread>
+#endif
 
 namespace niwa::geom {
 namespace {
@@ -30,13 +34,25 @@ struct Bin {
   std::size_t count = 0;
 };
 
+#if NIWA_HAVE_THREADS
+// Ranges at least this long have their two halves built on two threads (native builds with
+// NIWA_HAVE_THREADS): each half into its own node array, spliced back in the order the one-thread
+// build allocates (so the nodes are the same, bit for bit, with or without threads).
+constexpr std::size_t kParallelMin = 1 << 16;
+#endif
+
 struct Builder {
-  Builder(const BvhOptions& o, std::vector<BvhNode>& n) : options(o), nodes(n) {}
+  Builder(const BvhOptions& o, std::vector<BvhNode>& n, std::vector<Prim>& p)
+      : options(o), prims(p), nodes(n) {}
   const BvhOptions& options;
-  std::vector<Prim> prims;
+  std::vector<Prim>& prims;  // shared: each builder partitions only its own range
   std::vector<BvhNode>& nodes;
   int max_depth = 0;
-  Bin bins[3][kMaxBins];  // scratch, reused by every node (not on the recursion's stack)
+  // Scratch, reused by every node (not on the recursion's stack): two sets that take alternate
+  // triangles, so a run of triangles falling in one bin does not wait on its own last store, then
+  // merged (min, max and sums: the same bins as one set would give, bit for bit).
+  Bin bins[3][kMaxBins];
+  Bin bins_odd[3][kMaxBins];
 
   // Pads a node box outward by about 8 float ulps of its largest coordinate, so double-precision
   // query rounding and the Möller–Trumbore edge slack never put a hit outside its leaf's box.
@@ -91,16 +107,37 @@ struct Builder {
         lo[a] = cbounds.min[a];
         axis_ok[a] = extent[a] > 0.0f && (options.all_axes || a == dominant);
         scale[a] = axis_ok[a] ? static_cast<float>(nb) / extent[a] : 0.0f;
-        for (int b = 0; b < nb; ++b) bins[a][b] = Bin();
       }
-      for (std::size_t i = begin; i < end; ++i) {  // one pass bins every axis in use
-        const Prim& p = prims[i];
+      // Two sets pay on long ranges only; most nodes are small, and clearing bins is their cost.
+      const bool two_sets = count >= 64;
+      for (int a = 0; a < 3; ++a) {
+        if (!axis_ok[a]) continue;
+        for (int b = 0; b < nb; ++b) bins[a][b] = Bin();
+        if (two_sets)
+          for (int b = 0; b < nb; ++b) bins_odd[a][b] = Bin();
+      }
+      auto add = [&](Bin(*set)[kMaxBins], const Prim& p) {
         for (int a = 0; a < 3; ++a) {
           if (!axis_ok[a]) continue;
-          Bin& bin = bins[a][BinOf(p.C(a), lo[a], scale[a], nb)];
+          Bin& bin = set[a][BinOf(p.C(a), lo[a], scale[a], nb)];
           bin.bounds.min = glm::min(bin.bounds.min, p.lo);
           bin.bounds.max = glm::max(bin.bounds.max, p.hi);
           ++bin.count;
+        }
+      };
+      std::size_t i = begin;
+      if (two_sets) {
+        for (; i + 1 < end; i += 2) {  // one pass bins every axis in use
+          add(bins, prims[i]);
+          add(bins_odd, prims[i + 1]);
+        }
+      }
+      for (; i < end; ++i) add(bins, prims[i]);
+      for (int a = 0; a < 3 && two_sets; ++a) {
+        if (!axis_ok[a]) continue;
+        for (int b = 0; b < nb; ++b) {
+          bins[a][b].bounds.Extend(bins_odd[a][b].bounds);
+          bins[a][b].count += bins_odd[a][b].count;
         }
       }
       double best_cost = 0.0;
@@ -140,26 +177,27 @@ struct Builder {
     if (best_axis >= 0) {
       float lo = cbounds.min[best_axis];
       float scale = static_cast<float>(nb) / (cbounds.max[best_axis] - lo);
-      // Hand-written partition (std::partition's order differs between libstdc++ and libc++);
-      // it also gathers each side's centroid bounds for the children's bins.
+      // Hand-written Hoare partition (std::partition's order differs between libstdc++ and
+      // libc++): one swap per misplaced pair, and each side's centroid bounds gathered in the same
+      // pass for the children's bins.
+      auto left_of = [&](const Prim& p) {
+        return BinOf(p.C(best_axis), lo, scale, nb) < best_split;
+      };
+      auto gather = [](Bounds3* cb, const Prim& p) {
+        const glm::vec3 c = p.C();
+        cb->min = glm::min(cb->min, c);
+        cb->max = glm::max(cb->max, c);
+      };
       std::size_t i = begin, j = end;
-      while (i < j) {
-        if (BinOf(prims[i].C(best_axis), lo, scale, nb) < best_split) {
-          const glm::vec3 c = prims[i].C();
-          left_cb.min = glm::min(left_cb.min, c);
-          left_cb.max = glm::max(left_cb.max, c);
-          ++i;
-        } else {
-          --j;
-          std::swap(prims[i], prims[j]);
-        }
+      for (;;) {
+        while (i < j && left_of(prims[i])) gather(&left_cb, prims[i++]);
+        while (i < j && !left_of(prims[j - 1])) gather(&right_cb, prims[--j]);
+        if (i >= j) break;
+        std::swap(prims[i], prims[j - 1]);
+        gather(&left_cb, prims[i++]);
+        gather(&right_cb, prims[--j]);
       }
       mid = i;
-      for (std::size_t k = mid; k < end; ++k) {
-        const glm::vec3 c = prims[k].C();
-        right_cb.min = glm::min(right_cb.min, c);
-        right_cb.max = glm::max(right_cb.max, c);
-      }
     } else {  // no SAH split (equal centroids, or too deep): halve the range in its order
       mid = begin + count / 2;
       RangeBounds(begin, mid, &left_b, &left_cb);
@@ -170,9 +208,65 @@ struct Builder {
     nodes.emplace_back();
     nodes[node_index].first = left;
     nodes[node_index].count = 0;
+#if NIWA_HAVE_THREADS
+    if (options.threads && depth == 1 && count >= kParallelMin) {
+      BuildHalvesInParallel(left, begin, mid, end, depth + 1, left_b, left_cb, right_b, right_cb);
+      return;
+    }
+#endif
     Build(left, begin, mid, depth + 1, left_b, left_cb);
     Build(left + 1, mid, end, depth + 1, right_b, right_cb);
   }
+
+#if NIWA_HAVE_THREADS
+  // Builds nodes left and left + 1 (the children of a node whose pair was just allocated, with
+  // nothing allocated after it): each into its own array from a local root 0, the left one on a
+  // second thread, then copies them back, local node k >= 1 of the left half at left + 1 + k and
+  // of the right half after the whole left half, as the one-thread recursion would place them.
+  void BuildHalvesInParallel(uint32_t left, std::size_t begin, std::size_t mid, std::size_t end,
+                             int depth, const Bounds3& left_b, const Bounds3& left_cb,
+                             const Bounds3& right_b, const Bounds3& right_cb) {
+    std::vector<BvhNode> half_nodes[2];
+    auto half_builder = [&](int h) {
+      half_nodes[h].reserve(2 * ((h == 0 ? mid - begin : end - mid) /
+                                 static_cast<std::size_t>(options.max_leaf_triangles)) +
+                            1);
+      half_nodes[h].emplace_back();
+      return std::make_unique<Builder>(options, half_nodes[h], prims);
+    };
+    std::unique_ptr<Builder> halves[2] = {half_builder(0), half_builder(1)};
+    std::exception_ptr failure;
+    std::thread worker([&] {
+      try {
+        halves[0]->Build(0, begin, mid, depth, left_b, left_cb);
+      } catch (...) {
+        failure = std::current_exception();
+      }
+    });
+    try {
+      halves[1]->Build(0, mid, end, depth, right_b, right_cb);
+    } catch (...) {
+      worker.join();
+      throw;
+    }
+    worker.join();
+    if (failure) std::rethrow_exception(failure);
+    const uint32_t base[2] = {left + 2 - 1,
+                              left + 2 - 1 + static_cast<uint32_t>(half_nodes[0].size() - 1)};
+    nodes.reserve(nodes.size() + half_nodes[0].size() + half_nodes[1].size() - 2);
+    for (int h = 0; h < 2; ++h) {
+      for (std::size_t k = 0; k < half_nodes[h].size(); ++k) {
+        BvhNode n = half_nodes[h][k];
+        if (!n.is_leaf()) n.first += base[h];  // a local pair k >= 1 moves to base + k
+        if (k == 0)
+          nodes[left + static_cast<uint32_t>(h)] = n;
+        else
+          nodes.push_back(n);
+      }
+      max_depth = std::max(max_depth, halves[h]->max_depth);
+    }
+  }
+#endif
 };
 
 // Collapses the binary tree into 4-wide nodes, depth first (a node's first inner child follows it
@@ -261,9 +355,9 @@ Bvh Bvh::Build(const TriMesh& mesh, const BvhOptions& options_in) {
   Bvh bvh;
   const std::size_t tris = mesh.triangle_count();
   if (tris == 0) return bvh;
-  auto builder = std::make_unique<Builder>(options, bvh.nodes_);
+  std::vector<Prim> prims(tris);
+  auto builder = std::make_unique<Builder>(options, bvh.nodes_, prims);
   Builder& b = *builder;
-  b.prims.resize(tris);
   Bounds3 bounds, cbounds;
   for (std::size_t t = 0; t < tris; ++t) {
     Bounds3 tb;

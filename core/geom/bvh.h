@@ -28,9 +28,11 @@
 // triangle (did not pay). The binary nodes stay (the wide tree adds ~1/6 of their count at 128
 // bytes each): the build, the structure tests and the determinism digest read them.
 //
-// Determinism: the build is single-threaded, in a fixed order (recursive, left child first),
-// with float bounds and double SAH costs; ties between split candidates go to the lowest axis and
-// bin. Same mesh, same options: the same nodes, bit for bit, on every build.
+// Determinism: the build runs in a fixed order (recursive, left child first), with float bounds
+// and double SAH costs; ties between split candidates go to the lowest axis and bin. Natively
+// (NIWA_HAVE_THREADS) the root's two halves of a mesh of 64 k triangles or more are built on two
+// threads, each into its own array, and spliced in the one-thread order. Same mesh, same options:
+// the same nodes, bit for bit, on every build, with or without threads (native == WASM).
 #pragma once
 
 #include <cstddef>
@@ -46,6 +48,7 @@ struct BvhOptions {
   int bins = 16;               // SAH bins per axis, clamped to [2, 64]
   int max_leaf_triangles = 4;  // a node with at most this many triangles stays a leaf; [1, 16]
   bool all_axes = false;       // SAH over all three axes, not only the widest (slower build)
+  bool threads = true;         // where the build has threads: the root's halves on two (same nodes)
 };
 
 // One node, 32 bytes. A leaf (count > 0) holds triangles order[first .. first + count); an inner
