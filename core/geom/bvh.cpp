@@ -276,6 +276,57 @@ struct Widener {
   std::vector<BvhWideNode>& wide;
   int max_depth = 0;
 
+  // Fills node n's slots with the binary nodes kids[0..k): counts, children, and the child boxes
+  // on an 8-bit grid over their union, each side rounded outward until the decoded float (the
+  // expression ChildBounds() uses) contains the binary box exactly.
+  void Quantise(BvhWideNode& n, const uint32_t* kids, int k) const {
+    Bounds3 all;
+    for (int i = 0; i < k; ++i) all.Extend(nodes[kids[i]].bounds);
+    for (int a = 0; a < 3; ++a) {
+      const float origin = all.min[a];
+      // The smallest step 2^e with origin + 255 * 2^e >= the union's max (e in [-126, 127]).
+      int e = -126;
+      const double extent = static_cast<double>(all.max[a]) - static_cast<double>(origin);
+      if (extent > 0.0) {
+        std::frexp(extent / 255.0, &e);  // extent / 255 < 2^e
+        e = std::clamp(e, -126, 127);
+      }
+      while (e < 127 && BvhWideNode::Decode(origin, 255,
+                                            BvhWideNode::Step(static_cast<int8_t>(e))) < all.max[a])
+        ++e;
+      n.origin[a] = origin;
+      n.exponent[a] = static_cast<int8_t>(e);
+      const float step = BvhWideNode::Step(n.exponent[a]);
+      for (int i = 0; i < 4; ++i) {
+        if (i >= k) {
+          n.lo[a][i] = n.hi[a][i] = 0;
+          continue;
+        }
+        const Bounds3& b = nodes[kids[i]].bounds;
+        const double lo_q = std::floor((static_cast<double>(b.min[a]) - origin) / step);
+        const double hi_q = std::ceil((static_cast<double>(b.max[a]) - origin) / step);
+        int lo = static_cast<int>(std::clamp(lo_q, 0.0, 255.0));
+        int hi = static_cast<int>(std::clamp(hi_q, 0.0, 255.0));
+        while (lo > 0 && BvhWideNode::Decode(origin, static_cast<uint8_t>(lo), step) > b.min[a])
+          --lo;
+        while (hi < 255 && BvhWideNode::Decode(origin, static_cast<uint8_t>(hi), step) < b.max[a])
+          ++hi;
+        n.lo[a][i] = static_cast<uint8_t>(lo);
+        n.hi[a][i] = static_cast<uint8_t>(hi);
+      }
+    }
+    for (int i = 0; i < 4; ++i) {
+      if (i >= k) {
+        n.count[i] = BvhWideNode::kEmpty;
+        n.child[i] = 0;
+        continue;
+      }
+      const BvhNode& c = nodes[kids[i]];
+      n.count[i] = static_cast<uint8_t>(c.count);
+      n.child[i] = c.first;
+    }
+  }
+
   // b: a binary node; returns the index of the wide node holding b's children (or b itself when b
   // is a leaf, which happens only for a single-leaf tree's root).
   uint32_t Emit(uint32_t b, int depth) {
@@ -308,25 +359,7 @@ struct Widener {
       kids[pick + 1] = first + 1;
       ++k;
     }
-    for (int i = 0; i < 4; ++i) {
-      BvhWideNode& n = wide[w];
-      if (i >= k) {
-        n.min_x[i] = n.min_y[i] = n.min_z[i] = 0.0f;
-        n.max_x[i] = n.max_y[i] = n.max_z[i] = 0.0f;
-        n.child[i] = 0;
-        n.count[i] = BvhWideNode::kEmpty;
-        continue;
-      }
-      const BvhNode& c = nodes[kids[i]];
-      n.min_x[i] = c.bounds.min.x;
-      n.min_y[i] = c.bounds.min.y;
-      n.min_z[i] = c.bounds.min.z;
-      n.max_x[i] = c.bounds.max.x;
-      n.max_y[i] = c.bounds.max.y;
-      n.max_z[i] = c.bounds.max.z;
-      n.count[i] = c.count;
-      n.child[i] = c.first;
-    }
+    Quantise(wide[w], kids, k);
     for (int i = 0; i < k; ++i) {
       if (nodes[kids[i]].is_leaf()) continue;
       const uint32_t child = Emit(kids[i], depth + 1);  // may grow `wide`: index it afresh

@@ -18,15 +18,16 @@
 // Layout (why: at 4 M triangles the tree is ~67 MB and a query's cost is cache misses, one per
 // level, not box tests): the binary SAH tree (nodes(), 32-byte nodes, children as a pair) is
 // collapsed into a 4-wide tree (wide_nodes()), which is what the queries traverse. A wide node is
-// 128 bytes, 64-aligned (two adjacent cache lines), holds its up-to-four children's boxes side by
-// side (so they are tested from the parent, and a pruned child is never fetched) and is stored
-// depth first. That halves the dependent fetches per query (depth 13 -> 6 on a 16 k wall); pushed
-// children are prefetched (a hint; its own gain was within the noise). Measured (native, one
-// interleaved run of 5 rounds against the binary traversal, loaded 2-core machine, median ns per
-// query, 4 M / 4 k): closest 5.2x -> 3.4x, closest-walk 6.9x -> 3.3x, segment 5.2x -> 4.3x (fastest
-// reps: 6.1 -> 3.7, 5.6 -> 4.0, 2.9 -> 2.6). Tried and dropped: reading order() only for a winning
-// triangle (did not pay). The binary nodes stay (the wide tree adds ~1/6 of their count at 128
-// bytes each): the build, the structure tests and the determinism digest read them.
+// 64 bytes (one cache line; it was 128 with float child boxes, see BvhWideNode), holds its
+// up-to-four children's boxes side by side (so they are tested from the parent, and a pruned child
+// is never fetched) and is stored depth first. That halves the dependent fetches per query (depth
+// 13 -> 6 on a 16 k wall); pushed children are prefetched (a hint; its own gain was within the
+// noise). Measured (native, one interleaved run of 5 rounds against the binary traversal, loaded
+// 2-core machine, median ns per query, 4 M / 4 k): closest 5.2x -> 3.4x, closest-walk 6.9x -> 3.3x,
+// segment 5.2x -> 4.3x (fastest reps: 6.1 -> 3.7, 5.6 -> 4.0, 2.9 -> 2.6). Tried and dropped:
+// reading order() only for a winning triangle (did not pay). The binary nodes stay (the wide tree
+// adds ~1/6 of their count at 64 bytes each): the build, the structure tests and the determinism
+// digest read them.
 //
 // Determinism: the build runs in a fixed order (recursive, left child first), with float bounds
 // and double SAH costs; ties between split candidates go to the lowest axis and bin. Natively
@@ -37,6 +38,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "geom/bounds.h"
@@ -63,18 +65,39 @@ struct BvhNode {
 // The queries' tree: the binary tree collapsed to 4 wide (each node keeps up to four of the binary
 // nodes below it, splitting the child of largest surface area first). A node holds its children's
 // boxes, so a traversal tests all four from the parent and fetches only the children it enters:
-// one 128-byte, 64-aligned node (two cache lines) per step, about half the binary depth.
+// one 64-byte, 64-aligned node (one cache line) per step, about half the binary depth.
+// The child boxes are quantised to 8 bits per side on a grid over the node's own box (origin plus
+// q * 2^exponent per axis), rounded outward and checked in the build with the very float
+// expression ChildBounds() uses, so a decoded box always contains the binary child's box: the
+// queries prune a little less, never wrongly, and their answers stay those of the linear twins.
 struct alignas(64) BvhWideNode {
-  static constexpr uint32_t kEmpty = 0xffffffffu;  // count of an unused slot (slots fill from 0)
-  // Child k's box: min_x[k] .. max_z[k] (the binary node's padded bounds, copied exactly).
-  float min_x[4], min_y[4], min_z[4], max_x[4], max_y[4], max_z[4];
-  uint32_t child[4];  // inner child: its wide node index; leaf child: its first slot in order()
-  uint32_t count[4];  // 0: inner child; 1..16: a leaf of that many triangles; kEmpty: unused
+  static constexpr uint8_t kEmpty = 0xff;  // count of an unused slot (slots fill from 0)
+  float origin[3];     // the grid's origin: the min corner of the union of the child boxes
+  int8_t exponent[3];  // grid step 2^exponent per axis, in [-126, 127]
+  uint8_t count[4];    // 0: inner child; 1..16: a leaf of that many triangles; kEmpty: unused
+  uint8_t lo[3][4];    // child k's box on axis a: origin[a] + lo[a][k] * step[a] ..
+  uint8_t hi[3][4];    //                          origin[a] + hi[a][k] * step[a]
+  uint32_t child[4];   // inner child: its wide node index; leaf child: its first slot in order()
+  static float Step(int8_t e) {  // 2^e for e in [-126, 127], from its bits (no libm)
+    uint32_t bits = static_cast<uint32_t>(e + 127) << 23;
+    float f;
+    std::memcpy(&f, &bits, sizeof f);
+    return f;
+  }
+  static float Decode(float origin, uint8_t q, float step) {
+    return origin + static_cast<float>(q) * step;
+  }
   Bounds3 ChildBounds(int k) const {
-    return Bounds3{glm::vec3(min_x[k], min_y[k], min_z[k]),
-                   glm::vec3(max_x[k], max_y[k], max_z[k])};
+    glm::vec3 lo_c, hi_c;
+    for (int a = 0; a < 3; ++a) {
+      const float step = Step(exponent[a]);
+      lo_c[a] = Decode(origin[a], lo[a][k], step);
+      hi_c[a] = Decode(origin[a], hi[a][k], step);
+    }
+    return Bounds3{lo_c, hi_c};
   }
 };
+static_assert(sizeof(BvhWideNode) == 64, "one cache line");
 
 class Bvh {
  public:

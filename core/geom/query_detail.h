@@ -42,9 +42,7 @@ inline void SortDescending(WideEntry* kids, int k) {
 inline void Prefetch(const WideEntry& e, const BvhWideNode* wide, const glm::vec3* corners) {
 #if defined(__GNUC__) || defined(__clang__)
   if (e.count == 0) {
-    const char* p = reinterpret_cast<const char*>(wide + e.index);
-    __builtin_prefetch(p);
-    __builtin_prefetch(p + 64);
+    __builtin_prefetch(wide + e.index);  // one cache line
   } else {
     __builtin_prefetch(corners + 3 * static_cast<std::size_t>(e.index));
   }
