@@ -221,4 +221,45 @@ inline bool RayBox(const Bounds3& b, const PreparedRay& r, double t_max, double*
   return true;
 }
 
+// The nearest-first depth-first walk that ClosestPoint and FirstHit share. From the root (pushed
+// with root_key), it pops an entry, skips it when its key is beyond query.Bound() (the best got
+// closer since it was pushed; ties kept), tests a leaf's triangles with
+// query.Test(corners of slot i, order()[i]), and for a wide node keys each child with
+// query.Key(box, &key) (false: pruned), pushes the kept ones farthest first (so the nearest, or
+// the leftmost on equal keys, is searched first) and prefetches them. Counts into *visited (boxes
+// tested, the root's included) and *tested (triangles).
+template <typename Query>
+void NearestFirstWalk(const Bvh& bvh, double root_key, Query& query, uint64_t* visited,
+                      uint64_t* tested) {
+  const BvhWideNode* wide = bvh.wide_nodes().data();
+  const uint32_t* order = bvh.order().data();
+  const glm::vec3* corners = bvh.corners().data();
+  WideEntry stack[kMaxStack];
+  int top = 0;
+  stack[top++] = {0, 0, root_key};
+  while (top > 0) {
+    const WideEntry e = stack[--top];
+    if (e.key > query.Bound()) continue;
+    if (e.count > 0) {  // a leaf
+      for (uint32_t i = e.index; i < e.index + e.count; ++i)
+        query.Test(&corners[3 * static_cast<std::size_t>(i)], order[i]);
+      *tested += e.count;
+      continue;
+    }
+    const BvhWideNode& n = wide[e.index];
+    WideEntry kids[4];
+    int k = 0;
+    for (int i = 0; i < 4 && n.count[i] != BvhWideNode::kEmpty; ++i) {
+      ++*visited;
+      double key;
+      if (query.Key(n.ChildBounds(i), &key)) kids[k++] = {n.child[i], n.count[i], key};
+    }
+    SortDescending(kids, k);
+    for (int i = 0; i < k; ++i) {
+      Prefetch(kids[i], wide, corners);
+      stack[top++] = kids[i];
+    }
+  }
+}
+
 }  // namespace niwa::geom::detail

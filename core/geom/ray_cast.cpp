@@ -7,51 +7,38 @@
 
 namespace niwa::geom {
 
+namespace {
+
+// RayState as NearestFirstWalk's query: keys are slab entry distances along the ray.
+struct FirstHitQuery {
+  detail::RayState state;
+  detail::PreparedRay ray;
+  double Bound() const { return state.best_t; }
+  bool Key(const Bounds3& box, double* key) const {
+    return detail::RayBox(box, ray, state.best_t, key);
+  }
+  void Test(const glm::vec3* abc, uint32_t t) { state.Test(abc, ray, t); }
+};
+
+}  // namespace
+
 RayHit FirstHit(const TriMesh& mesh, const Bvh& bvh, glm::vec3 origin, glm::vec3 dir,
                 float max_distance, QueryStats* stats) {
   if (stats) ++stats->queries;
   if (!(max_distance >= 0.0f) || bvh.empty() || bvh.triangle_count() != mesh.triangle_count())
     return {};
-  detail::PreparedRay ray = detail::PrepareRay(origin, dir, /*normalize=*/true);
-  if (!ray.valid) return {};
-  detail::RayState state(static_cast<double>(max_distance));
-  const BvhWideNode* wide = bvh.wide_nodes().data();
-  const uint32_t* order = bvh.order().data();
-  const glm::vec3* corners = bvh.corners().data();
+  FirstHitQuery query{detail::RayState(static_cast<double>(max_distance)),
+                      detail::PrepareRay(origin, dir, /*normalize=*/true)};
+  if (!query.ray.valid) return {};
   uint64_t visited = 1, tested = 0;
-  detail::WideEntry stack[detail::kMaxStack];
-  int top = 0;
   double t0;
-  if (detail::RayBox(bvh.nodes()[0].bounds, ray, state.best_t, &t0)) stack[top++] = {0, 0, t0};
-  while (top > 0) {
-    const detail::WideEntry e = stack[--top];
-    if (e.key > state.best_t) continue;
-    if (e.count > 0) {  // a leaf
-      for (uint32_t i = e.index; i < e.index + e.count; ++i)
-        state.Test(&corners[3 * static_cast<std::size_t>(i)], ray, order[i]);
-      tested += e.count;
-      continue;
-    }
-    const BvhWideNode& n = wide[e.index];
-    detail::WideEntry kids[4];
-    int k = 0;
-    for (int i = 0; i < 4 && n.count[i] != BvhWideNode::kEmpty; ++i) {
-      ++visited;
-      double t_near;
-      if (detail::RayBox(n.ChildBounds(i), ray, state.best_t, &t_near))
-        kids[k++] = {n.child[i], n.count[i], t_near};
-    }
-    detail::SortDescending(kids, k);  // nearest entry on top
-    for (int i = 0; i < k; ++i) {
-      detail::Prefetch(kids[i], wide, corners);
-      stack[top++] = kids[i];
-    }
-  }
+  if (detail::RayBox(bvh.nodes()[0].bounds, query.ray, query.state.best_t, &t0))
+    detail::NearestFirstWalk(bvh, t0, query, &visited, &tested);
   if (stats) {
     stats->nodes_visited += visited;
     stats->triangles_tested += tested;
   }
-  return state.Result(mesh, ray);
+  return query.state.Result(mesh, query.ray);
 }
 
 bool SegmentHits(const TriMesh& mesh, const Bvh& bvh, glm::vec3 a, glm::vec3 b, QueryStats* stats) {
