@@ -19,6 +19,7 @@
 #include "ivy/ivy_params.h"
 #include "ivy/ivy_report.h"
 #include "ivy/ivy_state.h"
+#include "ivy/ivy_svg.h"
 #include "ivy/lstring.h"
 #include "ivy/scenes.h"
 #include "params/param_text.h"
@@ -33,7 +34,7 @@ struct IvyOptions {
   std::string scene, mesh, steps, seed, preset, params_file, url, accel = "bvh", subdivide = "0";
   std::string out_path;
   std::vector<std::string> seed_points, sets;
-  bool stats = false;
+  bool stats = false, with_support = false;
 };
 
 double Ms(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
@@ -110,8 +111,8 @@ ivy::IvyState ResolveState(const IvyOptions& o) {
 int RunGrow(const IvyOptions& o, std::ostream& out) {
   const auto t_start = std::chrono::steady_clock::now();
   const std::string ext = o.out_path.empty() ? "" : Extension(o.out_path);
-  if (!o.out_path.empty() && ext != ".json" && ext != ".lsys" && ext != ".glb") {
-    Fail(Status::Error("--out", "'" + o.out_path + "' must end in .json, .lsys or .glb"));
+  if (!o.out_path.empty() && ext != ".json" && ext != ".lsys" && ext != ".glb" && ext != ".svg") {
+    Fail(Status::Error("--out", "'" + o.out_path + "' must end in .json, .lsys, .glb or .svg"));
   }
   if (o.accel != "bvh" && o.accel != "linear") {
     Fail(Status::Error("--accel", "'" + o.accel + "' is unknown; must be bvh or linear"));
@@ -131,7 +132,11 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
     scene.mesh = std::move(mesh).value();
     Check(geom::ValidateMesh(scene.mesh, "--mesh"));
   } else {
-    Result<ivy::IvyScene> s = ivy::MakeIvyScene(o.scene.empty() ? "cubes4" : o.scene);
+    // --scene, else the state's (--url scene=, --params "scene"), else cubes4.
+    const std::string name = !o.scene.empty()      ? o.scene
+                             : state.scene.empty() ? std::string("cubes4")
+                                                   : state.scene;
+    Result<ivy::IvyScene> s = ivy::MakeIvyScene(name);
     if (!s.ok()) Fail(s.status());
     scene = std::move(s).value();
   }
@@ -147,6 +152,7 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   std::vector<glm::dvec3> seeds;
   for (const std::string& s : o.seed_points)
     seeds.push_back(ParseSeedPoint(s, o.mesh.empty() ? &scene : nullptr));
+  if (seeds.empty()) seeds = state.seed_points;  // the state's at= (the page's clicks)
   if (seeds.empty()) {
     if (!o.mesh.empty()) {
       Fail(Status::Error("--seed-point", "required with --mesh; must be X,Y,Z within d of a face"));
@@ -183,10 +189,13 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
       bytes = ivy::IvyModelJson(*model, state.params, state.seed, state.steps) + "\n";
     } else if (ext == ".lsys") {
       bytes = ivy::PrintLString(*model);
+    } else if (ext == ".svg") {
+      bytes = ivy::IvySvg(*model, state.params, scene.free ? nullptr : &scene.mesh, {});
     } else {
       const auto t0 = std::chrono::steady_clock::now();
-      Result<std::vector<unsigned char>> glb = ivy::WriteIvyGlb(
-          *model, state.params, state.seed, state.steps, scene.free ? nullptr : &scene.mesh);
+      Result<std::vector<unsigned char>> glb =
+          ivy::WriteIvyGlb(*model, state.params, state.seed, state.steps,
+                           scene.free || !o.with_support ? nullptr : &scene.mesh);
       t.ms_mesh = Ms(t0, std::chrono::steady_clock::now());
       if (!glb.ok()) Fail(glb.status().Within("--out"));
       bytes.assign(glb->begin(), glb->end());
@@ -247,7 +256,9 @@ void AddIvyCommands(CLI::App& app, CommandList& commands) {
   grow->add_option("--subdivide", o->subdivide,
                    "Split every support triangle into 4^K coplanar ones, K in [0, 8]");
   grow->add_flag("--stats", o->stats, "Print one JSON object of statistics on stdout");
-  grow->add_option("--out", o->out_path, "Write .json (buds, internodes), .lsys or .glb");
+  grow->add_option("--out", o->out_path,
+                   "Write .json (buds, internodes), .lsys, .glb or .svg (front and side views)");
+  grow->add_flag("--with-support", o->with_support, "The .glb also holds the support mesh");
   commands.push_back({grow, [o](std::ostream& out) { return RunGrow(*o, out); }});
   CLI::App* scenes = ivy_app->add_subcommand("scenes", "List the built-in scenes and seeds");
   commands.push_back({scenes, [](std::ostream& out) { return RunScenes(out); }});
