@@ -18,8 +18,10 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -27,6 +29,7 @@
 
 #include "buffers.h"
 #include "geom/bvh.h"
+#include "geom/closest_point.h"
 #include "geom/mesh_metrics.h"
 #include "geom/ray_cast.h"
 #include "io/gltf_reader.h"
@@ -206,6 +209,19 @@ class IvyLab {
     mesh_name_ = name;
     attach_ = ivy::IvyAttachTriangles(scene_.mesh, read.materials, &obstacles_);
     Prepare();
+    // A default seed, so a dropped mesh grows at once: the surface point nearest to a point in
+    // front of the mesh (+z) at a tenth of its height (Grow lifts it to d/2 off that face).
+    const geom::TriMesh& seedable = obstacles_ > 0 ? attach_ : scene_.mesh;
+    const geom::Bvh& seed_bvh = obstacles_ > 0 ? attach_bvh_ : bvh_;
+    if (seedable.triangle_count() > 0) {
+      const geom::Bounds3 b = geom::MeshBounds(seedable);
+      const glm::vec3 size = b.max - b.min;
+      const glm::vec3 probe(0.5f * (b.min.x + b.max.x), b.min.y + 0.1f * size.y,
+                            b.max.z + std::max({size.x, size.y, size.z}));
+      geom::ClosestHit hit =
+          geom::ClosestPoint(seedable, seed_bvh, probe, std::numeric_limits<float>::infinity());
+      if (hit.found) scene_.seeds.push_back({"front", glm::dvec3(hit.point)});
+    }
     ms_bvh_ = Ms(t0, Clock::now());
     return "";
   }

@@ -228,9 +228,32 @@ worker.on('support', (msg) => {
   showSeeds();
   if (msg.id === meshRequest) {  // a dropped mesh: grow on it once it is loaded
     ui.progress.textContent = '';
+    fitPresetToMesh();
+    // Its default seed goes into the state, so the link (with the mesh file) regrows this ivy.
+    if (!seedPoints.length && support.seeds?.length) seedPoints = [support.seeds[0].pos];
+    showSeeds();
     sendUpdate(true);
   }
 });
+
+// The built-in scenes are in px (L = 50 on a scene 1200 px high); assets come in any unit. When
+// L is far from the dropped mesh's size (over a quarter of it, or under 1/400), the length rows
+// (those the metric preset rescales: L, d, eps, r_tip, leaf_size, petiole) are set to the paper's
+// values times extent / 1200, so the ivy covers the mesh as it covers cubes4; a notice says so.
+function fitPresetToMesh() {
+  const b = support?.bounds;
+  if (!b) return;
+  const extent = Math.max(b.max[0] - b.min[0], b.max[1] - b.min[1], b.max[2] - b.min[2]);
+  const L = Number(panel.values().L);
+  const paper = presets.find((p) => p.name === 'paper');
+  const metric = presets.find((p) => p.name === 'metric');
+  if (!paper || !metric || !(extent > 0) || (L <= extent / 4 && L >= extent / 400)) return;
+  const factor = Number((extent / 1200).toPrecision(3));
+  const scaled = {};
+  for (const key of Object.keys(metric.overrides)) scaled[key] = Number((paper.params[key] * factor).toPrecision(4));
+  panel.setValues(scaled);
+  notices.set('drop', `${support.name} is ${Number(extent.toPrecision(3))} units across: ${Object.keys(scaled).join(', ')} set to the paper's values × ${factor} (L = ${scaled.L}).`);
+}
 
 worker.on('ivy', (msg) => {
   if (msg.id !== latestId) return;
@@ -255,7 +278,7 @@ worker.on('ivy', (msg) => {
   commitNext = false;
   ivySerial += 1;
   setHooks({
-    status: 'ready', ivySerial, internodes: s.internodes, leaves: s.leaves, laterals: s.laterals,
+    status: 'ready', error: '', meshError: '', ivySerial, internodes: s.internodes, leaves: s.leaves, laterals: s.laterals,
     steps: msg.steps, stats: JSON.stringify(s), hash: msg.hash,
   });
   requestFrame();
