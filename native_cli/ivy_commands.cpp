@@ -22,6 +22,7 @@
 #include "ivy/ivy_svg.h"
 #include "ivy/lstring.h"
 #include "ivy/scenes.h"
+#include "ivy_tree_support.h"
 #include "params/param_text.h"
 
 namespace niwa::cli {
@@ -32,6 +33,7 @@ constexpr double kMaxCoordinate = 1e30;
 
 struct IvyOptions {
   std::string scene, mesh, steps, seed, preset, params_file, url, accel = "bvh", subdivide = "0";
+  std::string tree_preset, tree_years = "10";
   std::string out_path;
   std::vector<std::string> seed_points, sets;
   bool stats = false, with_support = false;
@@ -85,6 +87,8 @@ glm::dvec3 ParseSeedPoint(const std::string& text, const ivy::IvyScene* scene) {
 
 ivy::IvyState ResolveState(const IvyOptions& o) {
   ivy::IvyState state;
+  // A tree is in metres: its default preset is metric.
+  if (!o.tree_preset.empty()) Check(AsFlag(ivy::SetIvyPreset("metric", &state), "--preset"));
   if (!o.preset.empty()) Check(AsFlag(ivy::SetIvyPreset(o.preset, &state), "--preset"));
   if (!o.params_file.empty()) {
     Result<std::string> text = ReadFile(o.params_file, "--params");
@@ -120,12 +124,18 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   const int levels =
       static_cast<int>(ParseFlagNumber("--subdivide", o.subdivide, {0, kMaxSubdivide, true}));
   ivy::IvyState state = ResolveState(o);
-  if (!o.mesh.empty() && !o.scene.empty()) {
-    Fail(Status::Error("--mesh", "give either --mesh FILE or --scene NAME, not both"));
+  if (!o.mesh.empty() + !o.scene.empty() + !o.tree_preset.empty() > 1) {
+    Fail(Status::Error(o.mesh.empty() ? "--scene" : "--mesh",
+                       "give one of --mesh FILE, --scene NAME or --tree-preset NAME"));
   }
   ivy::IvyScene scene;
   io::MeshReadStats read;
-  if (!o.mesh.empty()) {
+  if (!o.tree_preset.empty()) {
+    const double years = ParseFlagNumber("--tree-years", o.tree_years, {1, kMaxYears, true});
+    Result<ivy::IvyScene> s = TreeSupportScene(o.tree_preset, years);
+    if (!s.ok()) Fail(s.status());
+    scene = std::move(s).value();
+  } else if (!o.mesh.empty()) {
     Result<geom::TriMesh> mesh = io::ReadMeshFile(o.mesh, &read);
     if (!mesh.ok()) Fail(mesh.status().Within("--mesh"));
     scene.name = o.mesh;
@@ -151,7 +161,7 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   }
   std::vector<glm::dvec3> seeds;
   for (const std::string& s : o.seed_points)
-    seeds.push_back(ParseSeedPoint(s, o.mesh.empty() ? &scene : nullptr));
+    seeds.push_back(ParseSeedPoint(s, o.mesh.empty() ? &scene : nullptr));  // scene or tree seeds
   if (seeds.empty()) seeds = state.seed_points;  // the state's at= (the page's clicks)
   if (seeds.empty()) {
     if (!o.mesh.empty()) {
@@ -244,6 +254,9 @@ void AddIvyCommands(CLI::App& app, CommandList& commands) {
                    "Built-in support: cubes4 (default), wall, overhang, stairs, pillar, sphere, "
                    "free (see 'niwa ivy scenes')");
   grow->add_option("--mesh", o->mesh, "Support mesh file: .glb, .gltf or .obj");
+  grow->add_option("--tree-preset", o->tree_preset,
+                   "Climb a Niwa tree's bark ('niwa presets tree'; default ivy preset: metric)");
+  grow->add_option("--tree-years", o->tree_years, "Age of that tree, 1..100 (default 10)");
   grow->add_option("--seed-point", o->seed_points,
                    "Growth start X,Y,Z or a scene's named seed; repeat for several plants");
   grow->add_option("--steps", o->steps, "Final step number, 0..10000 (default 50)");

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <limits>
+#include <vector>
 
 namespace niwa::ivy {
 namespace {
@@ -27,6 +29,72 @@ std::string Escape(const std::string& text) {
       out += "&amp;";
     else
       out += c;
+  }
+  return out;
+}
+
+// A large support as its silhouette: the triangles rasterised (cell centres inside a projected
+// triangle) into kCell-pixel cells of one panel, each row's covered runs one <rect>. Bounded output
+// whatever the triangle count.
+template <typename Project>
+std::string Silhouette(const geom::TriMesh& mesh, Project project, int x0, int panel) {
+  constexpr int kCell = 2;
+  const int n = panel / kCell;
+  std::vector<unsigned char> covered(static_cast<std::size_t>(n) * static_cast<std::size_t>(n), 0);
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    glm::dvec2 q[3];
+    for (int c = 0; c < 3; ++c) {
+      q[c] = project(glm::dvec3(mesh.positions[mesh.indices[3 * t + static_cast<std::size_t>(c)]]));
+      q[c].x -= x0;
+    }
+    const double area =
+        (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[2].x - q[0].x) * (q[1].y - q[0].y);
+    if (area == 0) continue;
+    const auto cell = [&](double v) { return std::clamp(static_cast<int>(v / kCell), 0, n - 1); };
+    const int i0 = cell(std::min({q[0].x, q[1].x, q[2].x})),
+              i1 = cell(std::max({q[0].x, q[1].x, q[2].x}));
+    const int j0 = cell(std::min({q[0].y, q[1].y, q[2].y})),
+              j1 = cell(std::max({q[0].y, q[1].y, q[2].y}));
+    for (int j = j0; j <= j1; ++j) {
+      for (int i = i0; i <= i1; ++i) {
+        const glm::dvec2 c((i + 0.5) * kCell, (j + 0.5) * kCell);
+        bool inside = true;
+        for (int e = 0; e < 3 && inside; ++e) {
+          const glm::dvec2 a = q[e], b = q[(e + 1) % 3];
+          const double side = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+          inside = area > 0 ? side >= 0 : side <= 0;
+        }
+        if (inside)
+          covered[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) +
+                  static_cast<std::size_t>(i)] = 1;
+      }
+    }
+  }
+  // Cells no triangle centre fell in but a vertex did (thin branches thinner than a cell).
+  for (const glm::vec3& v : mesh.positions) {
+    glm::dvec2 q = project(glm::dvec3(v));
+    const int i = static_cast<int>((q.x - x0) / kCell), j = static_cast<int>(q.y / kCell);
+    if (i >= 0 && i < n && j >= 0 && j < n)
+      covered[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) +
+              static_cast<std::size_t>(i)] = 1;
+  }
+  std::string out;
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n;) {
+      if (!covered[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) +
+                   static_cast<std::size_t>(i)]) {
+        ++i;
+        continue;
+      }
+      int k = i;
+      while (k < n && covered[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) +
+                              static_cast<std::size_t>(k)])
+        ++k;
+      out += "<rect x=\"" + std::to_string(x0 + i * kCell) + "\" y=\"" + std::to_string(j * kCell) +
+             "\" width=\"" + std::to_string((k - i) * kCell) + "\" height=\"" +
+             std::to_string(kCell) + "\"/>\n";
+      i = k;
+    }
   }
   return out;
 }
@@ -75,10 +143,9 @@ std::string IvySvg(const IvyModel& model, const IvyParams& params, const geom::T
           s += "Z\"/>\n";
         }
       } else {
-        const glm::dvec3 a = lo, b = hi;
-        const double x0 = std::min(X(view, a), X(view, b)), x1 = std::max(X(view, a), X(view, b));
-        s += "<rect x=\"" + Num(x0) + "\" y=\"" + Num(Y(b)) + "\" width=\"" + Num(x1 - x0) +
-             "\" height=\"" + Num(Y(a) - Y(b)) + "\"/>\n";
+        s += Silhouette(
+            *support, [&](const glm::dvec3& p) { return glm::dvec2(X(view, p), Y(p)); },
+            view * o.panel, o.panel);
       }
       s += "</g>\n";
     }

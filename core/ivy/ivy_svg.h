@@ -19,7 +19,7 @@ struct IvySvgOptions {
   std::string caption;  // optional text under the views
 };
 
-// Supports of more than kSvgMaxSupportTriangles triangles are drawn as their bounding box only.
+// Supports of more than kSvgMaxSupportTriangles triangles are drawn as a rasterised silhouette.
 constexpr std::size_t kSvgMaxSupportTriangles = 20000;
 
 std::string IvySvg(const IvyModel& model, const IvyParams& params, const geom::TriMesh* support,
