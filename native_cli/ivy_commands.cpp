@@ -34,6 +34,7 @@ constexpr double kMaxCoordinate = 1e30;
 struct IvyOptions {
   std::string scene, mesh, steps, seed, preset, params_file, url, accel = "bvh", subdivide = "0";
   std::string tree_preset, tree_years = "10";
+  std::string svg_leaves = "1", caption;
   std::string out_path;
   std::vector<std::string> seed_points, sets;
   bool stats = false, with_support = false;
@@ -200,7 +201,10 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
     } else if (ext == ".lsys") {
       bytes = ivy::PrintLString(*model);
     } else if (ext == ".svg") {
-      bytes = ivy::IvySvg(*model, state.params, scene.free ? nullptr : &scene.mesh, {});
+      ivy::IvySvgOptions svg;
+      svg.leaves = ParseFlagNumber("--svg-leaves", o.svg_leaves, {0, 1, true}) != 0;
+      svg.caption = o.caption;
+      bytes = ivy::IvySvg(*model, state.params, scene.free ? nullptr : &scene.mesh, svg);
     } else {
       const auto t0 = std::chrono::steady_clock::now();
       Result<std::vector<unsigned char>> glb =
@@ -272,6 +276,8 @@ void AddIvyCommands(CLI::App& app, CommandList& commands) {
   grow->add_option("--out", o->out_path,
                    "Write .json (buds, internodes), .lsys, .glb or .svg (front and side views)");
   grow->add_flag("--with-support", o->with_support, "The .glb also holds the support mesh");
+  grow->add_option("--svg-leaves", o->svg_leaves, ".svg: draw the leaves, 0 or 1 (default 1)");
+  grow->add_option("--caption", o->caption, ".svg: a line of text under the views");
   commands.push_back({grow, [o](std::ostream& out) { return RunGrow(*o, out); }});
   CLI::App* scenes = ivy_app->add_subcommand("scenes", "List the built-in scenes and seeds");
   commands.push_back({scenes, [](std::ostream& out) { return RunScenes(out); }});
