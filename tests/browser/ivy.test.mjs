@@ -108,6 +108,20 @@ await runBrowserTest(async (server, browser) => {
     r.dispatchEvent(new Event('input'));
   });
 
+  // 2b. The toggles: leaves off draws no leaf triangles (and less green); buds on adds a draw call.
+  const before = await page.evaluate(() => ({ ...document.documentElement.dataset }));
+  await page.click('#show-leaves');
+  await page.waitForFunction((n) => Number(document.documentElement.dataset.drawnTriangles) < n, Number(before.drawnTriangles), { timeout: TIMEOUT });
+  const noLeaves = await colours(page);
+  check('Leaves off hides the leaves', noLeaves.green < full.green / 4, `green ${(noLeaves.green * 100).toFixed(2)}% (with leaves ${(full.green * 100).toFixed(2)}%)`);
+  await page.click('#show-leaves');
+  await page.click('#show-buds');
+  const budCalls = await page.waitForFunction((n) => Number(document.documentElement.dataset.drawCalls) > n, Number(before.drawCalls), { timeout: 20_000 })
+    .then(() => page.evaluate(() => Number(document.documentElement.dataset.drawCalls)), () => Number(before.drawCalls));
+  check('Buds A/D/Z adds the bud markers', budCalls === Number(before.drawCalls) + 1, `draw calls ${before.drawCalls} -> ${budCalls}`);
+  await saveCanvasPng(page, 'ivy-cubes4-buds.png');
+  await page.click('#show-buds');
+
   // 3. A click on the support (the front face of the lower cubes) adds a seed point and regrows.
   const box = await page.locator('#view').boundingBox();
   let serial = Number(data.ivySerial);
@@ -160,6 +174,59 @@ await runBrowserTest(async (server, browser) => {
   await page.setInputFiles('#mesh-file', { name: 'notes.txt', mimeType: 'text/plain', buffer: Buffer.from('hello') });
   const refused = await page.textContent('#notice');
   check('a .txt is refused with one line', refused.includes('notes.txt: not a mesh file'), refused);
+
+  // 7. A 1 M-triangle glTF (a wall of 708 x 708 quads, 10 m, made here) is read, gets its BVH and
+  // grows within seconds, with its stages shown on the progress line.
+  {
+    const n = 708, size = 10;
+    const positions = new Float32Array((n + 1) * (n + 1) * 3);
+    for (let j = 0; j <= n; ++j) {
+      for (let i = 0; i <= n; ++i) {
+        const k = 3 * (j * (n + 1) + i);
+        positions[k] = (i / n - 0.5) * size;
+        positions[k + 1] = (j / n) * size;
+        positions[k + 2] = 0;
+      }
+    }
+    const indices = new Uint32Array(n * n * 6);
+    for (let j = 0, t = 0; j < n; ++j) {
+      for (let i = 0; i < n; ++i, t += 6) {
+        const a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+        indices.set([a, b, d, a, d, c], t);
+      }
+    }
+    const bin = new Uint8Array(positions.byteLength + indices.byteLength);
+    bin.set(new Uint8Array(positions.buffer), 0);
+    bin.set(new Uint8Array(indices.buffer), positions.byteLength);
+    const json = {
+      asset: { version: '2.0' }, scenes: [{ nodes: [0] }], scene: 0, nodes: [{ mesh: 0, name: 'wall' }],
+      meshes: [{ primitives: [{ attributes: { POSITION: 0 }, indices: 1 }] }],
+      buffers: [{ byteLength: bin.length }],
+      bufferViews: [{ buffer: 0, byteOffset: 0, byteLength: positions.byteLength },
+        { buffer: 0, byteOffset: positions.byteLength, byteLength: indices.byteLength }],
+      accessors: [{ bufferView: 0, componentType: 5126, count: positions.length / 3, type: 'VEC3', min: [-size / 2, 0, 0], max: [size / 2, size, 0] },
+        { bufferView: 1, componentType: 5125, count: indices.length, type: 'SCALAR' }],
+    };
+    const { buildGlb } = await import('../../web/mesh/mesh_import.js');
+    const big = path.join(ARTIFACTS, 'ivy-wall-1m.glb');
+    fs.writeFileSync(big, buildGlb(json, bin));
+    serial = Number((await page.evaluate(() => ({ ...document.documentElement.dataset }))).ivySerial);
+    const stages = [];
+    await page.exposeFunction('__ivyProgress', (text) => stages.push(text));
+    await page.evaluate(() => {
+      new MutationObserver(() => window.__ivyProgress(document.getElementById('progress').textContent))
+        .observe(document.getElementById('progress'), { childList: true, characterData: true, subtree: true });
+    });
+    const t0 = Date.now();
+    await page.setInputFiles('#mesh-file', big);
+    data = await waitIvy(page, serial);
+    const seconds = (Date.now() - t0) / 1000;
+    const shown = stages.filter(Boolean);
+    check('a 1 M-triangle glTF grows ivy within seconds', data.status === 'ready' && data.supportTriangles === String(2 * n * n) && Number(data.internodes) > 10 && seconds < 60,
+      `${data.supportTriangles} triangles, ${data.internodes} internodes in ${seconds.toFixed(1)} s (SwiftShader, shared CPU); ${data.error || data.meshError || ''}`);
+    check('its stages are shown while it loads', shown.some((t) => t.startsWith('reading')) && shown.some((t) => t.includes('BVH')) && shown.includes('growing'), shown.join(' | '));
+    await saveCanvasPng(page, 'ivy-wall-1m.png');
+  }
 
   check('no console errors, page errors or external requests', problems.length === 0, problems.join(' | '));
 });

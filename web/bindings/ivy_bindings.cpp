@@ -9,6 +9,8 @@
 //   "support"                    positions, normals (Float32 xyz), indices (Uint32)
 //   "stems" | "leaves" | "suckers"  positions, normals, indices, birth (Float32 per vertex: the
 //                                birth_step of core/ivy/ivy_mesh.h, the .glb's _BIRTH_STEP)
+//   "buds"                       positions (Float32 xyz), kind (Float32: 0 A, 1 D, 2 Z, as at the
+//                                last step), birth (Float32: the step the bud was made)
 //   "glb"                        bytes (Uint8, after buildGlb)
 // Calls: loadScene(name) or loadMesh(bytes, name) -> ""/error, supportJson(); grow(stateJson) ->
 // ""/error, then statsJson(), buffers(..), modelJson(), lstring(), buildGlb(withSupport);
@@ -283,6 +285,14 @@ class IvyLab {
     stems_ = Flatten(meshes_.stems);
     leaves_ = Flatten(meshes_.leaves);
     suckers_ = Flatten(meshes_.suckers);
+    buds_ = FlatMesh{};
+    for (const ivy::Bud& b : model_.buds) {
+      buds_.positions.insert(
+          buds_.positions.end(),
+          {static_cast<float>(b.pos.x), static_cast<float>(b.pos.y), static_cast<float>(b.pos.z)});
+      buds_.normals.push_back(static_cast<float>(static_cast<int>(b.kind)));
+      buds_.birth.push_back(static_cast<float>(b.born_step));
+    }
     timings_ = {};
     timings_.ms_mesh = Ms(t1, Clock::now());
     timings_.ms_bvh = ms_bvh_;
@@ -358,6 +368,8 @@ class IvyLab {
       part(leaves_);
     } else if (group == "suckers") {
       part(suckers_);
+    } else if (group == "buds") {
+      out.Add("positions", buds_.positions).Add("kind", buds_.normals).Add("birth", buds_.birth);
     } else if (group == "glb") {
       out.Add("bytes", glb_);
     } else {
@@ -376,7 +388,7 @@ class IvyLab {
       support_.normals = FaceNormals(scene_.mesh);
     grown_ = false;
     model_ = ivy::IvyModel{};
-    stems_ = leaves_ = suckers_ = FlatMesh{};
+    stems_ = leaves_ = suckers_ = buds_ = FlatMesh{};
     glb_.clear();
   }
 
@@ -394,6 +406,7 @@ class IvyLab {
   ivy::IvyTimings timings_;
   ivy::IvyMeshes meshes_;
   FlatMesh stems_, leaves_, suckers_;
+  FlatMesh buds_;  // positions, kind (in normals), birth
   std::vector<unsigned char> glb_;
 };
 

@@ -24,7 +24,7 @@ const ui = {
   stage: $('stage'), canvas: $('view'), stats: $('stats'), progress: $('progress'), scene: $('scene'),
   sceneHelp: $('scene-help'), meshFile: $('mesh-file'), preset: $('preset'), seed: $('seed'), steps: $('steps'),
   reset: $('reset'), seeds: $('seeds'), clickSeeds: $('click-seeds'), clearSeeds: $('clear-seeds'),
-  showLeaves: $('show-leaves'), showSuckers: $('show-suckers'), showSupport: $('show-support'), showSeeds: $('show-seeds'),
+  showLeaves: $('show-leaves'), showSuckers: $('show-suckers'), showSupport: $('show-support'), showSeeds: $('show-seeds'), showBuds: $('show-buds'),
   resetView: $('reset-view'), copyLink: $('copy-link'), downloadGlb: $('download-glb'), glbSupport: $('glb-support'),
   downloadJson: $('download-json'), downloadLsys: $('download-lsys'), shareStatus: $('share-status'), params: $('params'),
   play: $('play'), step: $('step'), stepText: $('step-text'),
@@ -50,7 +50,7 @@ const frames = new FrameLoop(() => {
   const drawn = renderer.render(camera);
   const counts = renderer.drawnCounts();
   setHooks({
-    drawnSerial: ivySerial, drawnStep: scrubber.value, drawnTriangles: drawn.triangles,
+    drawnSerial: ivySerial, drawnStep: scrubber.value, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls,
     drawnStems: counts.stems, drawnLeaves: counts.leaves, drawnSuckers: counts.suckers,
   });
 });
@@ -264,6 +264,7 @@ worker.on('ivy', (msg) => {
   ui.stats.textContent = `internodes ${s.internodes} · leaves ${s.leaves} · laterals ${s.laterals} · buds A ${s.buds.A} D ${s.buds.D} Z ${s.buds.Z} · grown in ${s.ms.toFixed(1)} ms`;
   if (renderer) {
     renderer.setIvy(msg.mesh);
+    renderer.setBuds(msg.mesh.buds);
     if (frameNext && renderer.bounds()) {
       camera.reset(renderer.bounds());
       frameNext = false;
@@ -413,7 +414,7 @@ ui.clearSeeds.addEventListener('click', () => {
   showSeeds();
   scheduleUpdate();
 });
-for (const [input, part] of [[ui.showLeaves, 'leaves'], [ui.showSuckers, 'suckers'], [ui.showSupport, 'support'], [ui.showSeeds, 'seeds']]) {
+for (const [input, part] of [[ui.showLeaves, 'leaves'], [ui.showSuckers, 'suckers'], [ui.showSupport, 'support'], [ui.showSeeds, 'seeds'], [ui.showBuds, 'buds']]) {
   input.addEventListener('change', () => {
     renderer?.setVisible({ [part]: input.checked });
     requestFrame();

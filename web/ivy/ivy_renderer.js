@@ -1,5 +1,5 @@
 // The ivy page's WebGL2 view (shaders/ivy/): the support mesh in stone grey, the ivy's stems,
-// leaves and suckers over it, and the seed points as dots. Positions stay in the scene's units
+// leaves and suckers over it, and the seed points and (optionally) the buds A/D/Z as dots. Positions stay in the scene's units
 // (px for the built-in scenes, metres for most assets); uModel scales the support into a view of
 // about ten units so one orbit camera fits every scene. The step scrubber hides what was born after
 // step k in the vertex shader (aBirth), so replaying the growth needs no regrow.
@@ -43,7 +43,8 @@ export class IvyRenderer {
     this.parts = {};  // name -> {vao, buffers, count, births}
     this.model = [0, 0, 0, 1];
     this.step = Infinity;
-    this.visible = { support: true, stems: true, leaves: true, suckers: true, seeds: true };
+    this.visible = { support: true, stems: true, leaves: true, suckers: true, seeds: true, buds: false };
+    this.buds = { vao: null, buffers: [], count: 0 };
     this.seeds = { vao: null, buffer: null, count: 0 };
     this.light = sunDirection(50, 30);
     this.boundsView = null;
@@ -130,6 +131,28 @@ export class IvyRenderer {
 
   clearIvy() {
     for (const name of ['stems', 'leaves', 'suckers']) this.#drop(name);
+    this.#dropBuds();
+  }
+
+  // The buds as markers ({positions, kind, birth}).
+  setBuds(b) {
+    const gl = this.gl;
+    this.#dropBuds();
+    const vao = gl.createVertexArray();
+    gl.bindVertexArray(vao);
+    const buffers = [new Float32Array(b.positions), new Float32Array(b.kind), new Float32Array(b.birth)].map((a) => staticBuffer(gl, a));
+    floatAttribute(gl, 0, buffers[0], 3);
+    floatAttribute(gl, 1, buffers[1], 1);
+    floatAttribute(gl, 2, buffers[2], 1);
+    gl.bindVertexArray(null);
+    this.buds = { vao, buffers, count: new Float32Array(b.kind).length };
+  }
+
+  #dropBuds() {
+    if (!this.buds.vao) return;
+    this.gl.deleteVertexArray(this.buds.vao);
+    for (const b of this.buds.buffers) this.gl.deleteBuffer(b);
+    this.buds = { vao: null, buffers: [], count: 0 };
   }
 
   // Seed points in scene units ([[x, y, z], ...]).
@@ -144,6 +167,10 @@ export class IvyRenderer {
     gl.bufferData(gl.ARRAY_BUFFER, new Float32Array(points.flat()), gl.DYNAMIC_DRAW);
     gl.enableVertexAttribArray(0);
     gl.vertexAttribPointer(0, 3, gl.FLOAT, false, 0, 0);
+    gl.disableVertexAttribArray(1);
+    gl.vertexAttrib1f(1, 3);  // kind 3: a seed point
+    gl.disableVertexAttribArray(2);
+    gl.vertexAttrib1f(2, 0);  // always drawn
     gl.bindVertexArray(null);
     this.seeds.count = points.length;
   }
@@ -213,17 +240,23 @@ export class IvyRenderer {
       triangles += part.count / 3;
       ++drawCalls;
     }
-    if (this.seeds.count && this.visible.seeds) {
+    const markers = [];
+    if (this.buds.count && this.visible.buds) markers.push(this.buds);
+    if (this.seeds.count && this.visible.seeds) markers.push(this.seeds);
+    if (markers.length) {
       const m = this.programs.marker;
       gl.useProgram(m.program);
       gl.uniformMatrix4fv(m.uniforms.uViewProjection, false, vp);
       gl.uniform4fv(m.uniforms.uModel, this.model);
       gl.uniform1f(m.uniforms.uPointSize, 12 * Math.min(window.devicePixelRatio || 1, 2));
+      gl.uniform1f(m.uniforms.uStep, Number.isFinite(this.step) ? this.step : 1e9);
       gl.disable(gl.DEPTH_TEST);
-      gl.bindVertexArray(this.seeds.vao);
-      gl.drawArrays(gl.POINTS, 0, this.seeds.count);
+      for (const marker of markers) {
+        gl.bindVertexArray(marker.vao);
+        gl.drawArrays(gl.POINTS, 0, marker.count);
+        ++drawCalls;
+      }
       gl.enable(gl.DEPTH_TEST);
-      ++drawCalls;
     }
     gl.bindVertexArray(null);
     return { triangles, drawCalls };

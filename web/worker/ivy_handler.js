@@ -61,7 +61,7 @@ export function createHandler(Module, ctx) {
     const stats = JSON.parse(entry.lab.statsJson());
     const transfer = [];
     const mesh = {};
-    for (const part of ['stems', 'leaves', 'suckers']) mesh[part] = takeBuffers(entry.lab.buffers(part), transfer);
+    for (const part of ['stems', 'leaves', 'suckers', 'buds']) mesh[part] = takeBuffers(entry.lab.buffers(part), transfer);
     post({ type: 'ivy', id, client, stats, mesh, steps: entry.lab.steps(), hash: entry.lab.hash(),
       wallMs: performance.now() - t0 }, transfer);
   }

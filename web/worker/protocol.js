@@ -93,7 +93,8 @@
  * seed_points: "X,Y,Z;..", params}; ready also carries `scenes` [{name, description, seeds}].
  * @typedef {Envelope & {type: 'update', state: Object, useMesh?: boolean}} IvyUpdateMessage
  *   -> SupportMessage (when the scene changed), ProgressMessage {stage, text},
- *      {type: 'ivy', stats, mesh: {stems, leaves, suckers: {positions, normals, indices, birth}},
+ *      {type: 'ivy', stats, mesh: {stems, leaves, suckers: {positions, normals, indices, birth},
+ *       buds: {positions, kind, birth}},
  *       steps, hash, wallMs}
  * @typedef {Envelope & {type: 'mesh', name: string, bytes: ArrayBuffer}} IvyMeshMessage
  *   -> {type: 'support', support: {name, dropped, free, triangles, bounds, seeds}, buffers:
