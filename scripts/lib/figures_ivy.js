@@ -50,8 +50,14 @@ function panel(p) {
   return { svg: fs.readFileSync(file, 'utf8'), stats: st };
 }
 
-// The inner markup of a CLI drawing (without its <svg> element and white background).
-const inner = (svg) => svg.replace(/^<svg[^>]*>\n/, '').replace(/<\/svg>\n?$/, '').replace(/<rect width="100%"[^>]*\/>\n/, '');
+// The markup of one view of a CLI drawing (0 front, 1 side: its <g id="front"> or <g id="side">
+// group, without the <svg> element, the white background or the caption).
+function inner(svg, view) {
+  const body = svg.replace(/^<svg[^>]*>\n/, '').replace(/<\/svg>\n?$/, '').replace(/<rect width="100%"[^>]*\/>\n/, '');
+  const at = body.indexOf('<g id="side">');
+  const end = body.lastIndexOf('<text x="8" y="');  // the caption, if any, follows the side group
+  return view === 0 ? body.slice(0, at) : body.slice(at, end > at && !body.slice(end).includes('<g') ? end : undefined);
+}
 
 // Writes a figure: cells of `views` (0 front, 1 side) of the panels, side by side, labelled.
 function figure(name, title, cells, cols = cells.length) {
@@ -65,7 +71,7 @@ function figure(name, title, cells, cols = cells.length) {
     const x = (i % cols) * PANEL, y = top + Math.floor(i / cols) * (PANEL + label);
     // The CLI draws the front view at x 0..480 and the side view at 480..960.
     out += `<svg x="${x}" y="${y}" width="${PANEL}" height="${PANEL}" viewBox="${c.view * PANEL} 0 ${PANEL} ${PANEL}">\n`;
-    out += inner(c.svg) + '</svg>\n';
+    out += inner(c.svg, c.view) + '</svg>\n';
     c.label.forEach((line, k) => {
       out += `<text x="${x + 8}" y="${y + PANEL + 14 + 15 * k}" font-family="sans-serif" font-size="12">${esc(line)}</text>\n`;
     });
