@@ -19,8 +19,10 @@
 #include "ivy/ivy_params.h"
 #include "ivy/ivy_report.h"
 #include "ivy/ivy_state.h"
+#include "ivy/ivy_svg.h"
 #include "ivy/lstring.h"
 #include "ivy/scenes.h"
+#include "ivy_tree_support.h"
 #include "params/param_text.h"
 
 namespace niwa::cli {
@@ -31,9 +33,11 @@ constexpr double kMaxCoordinate = 1e30;
 
 struct IvyOptions {
   std::string scene, mesh, steps, seed, preset, params_file, url, accel = "bvh", subdivide = "0";
+  std::string tree_preset, tree_years = "10";
+  std::string svg_leaves = "1", caption;
   std::string out_path;
   std::vector<std::string> seed_points, sets;
-  bool stats = false;
+  bool stats = false, with_support = false;
 };
 
 double Ms(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
@@ -84,6 +88,8 @@ glm::dvec3 ParseSeedPoint(const std::string& text, const ivy::IvyScene* scene) {
 
 ivy::IvyState ResolveState(const IvyOptions& o) {
   ivy::IvyState state;
+  // A tree is in metres: its default preset is metric.
+  if (!o.tree_preset.empty()) Check(AsFlag(ivy::SetIvyPreset("metric", &state), "--preset"));
   if (!o.preset.empty()) Check(AsFlag(ivy::SetIvyPreset(o.preset, &state), "--preset"));
   if (!o.params_file.empty()) {
     Result<std::string> text = ReadFile(o.params_file, "--params");
@@ -110,8 +116,8 @@ ivy::IvyState ResolveState(const IvyOptions& o) {
 int RunGrow(const IvyOptions& o, std::ostream& out) {
   const auto t_start = std::chrono::steady_clock::now();
   const std::string ext = o.out_path.empty() ? "" : Extension(o.out_path);
-  if (!o.out_path.empty() && ext != ".json" && ext != ".lsys" && ext != ".glb") {
-    Fail(Status::Error("--out", "'" + o.out_path + "' must end in .json, .lsys or .glb"));
+  if (!o.out_path.empty() && ext != ".json" && ext != ".lsys" && ext != ".glb" && ext != ".svg") {
+    Fail(Status::Error("--out", "'" + o.out_path + "' must end in .json, .lsys, .glb or .svg"));
   }
   if (o.accel != "bvh" && o.accel != "linear") {
     Fail(Status::Error("--accel", "'" + o.accel + "' is unknown; must be bvh or linear"));
@@ -119,19 +125,29 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   const int levels =
       static_cast<int>(ParseFlagNumber("--subdivide", o.subdivide, {0, kMaxSubdivide, true}));
   ivy::IvyState state = ResolveState(o);
-  if (!o.mesh.empty() && !o.scene.empty()) {
-    Fail(Status::Error("--mesh", "give either --mesh FILE or --scene NAME, not both"));
+  if (!o.mesh.empty() + !o.scene.empty() + !o.tree_preset.empty() > 1) {
+    Fail(Status::Error(o.mesh.empty() ? "--scene" : "--mesh",
+                       "give one of --mesh FILE, --scene NAME or --tree-preset NAME"));
   }
   ivy::IvyScene scene;
   io::MeshReadStats read;
-  if (!o.mesh.empty()) {
+  if (!o.tree_preset.empty()) {
+    const double years = ParseFlagNumber("--tree-years", o.tree_years, {1, kMaxYears, true});
+    Result<ivy::IvyScene> s = TreeSupportScene(o.tree_preset, years);
+    if (!s.ok()) Fail(s.status());
+    scene = std::move(s).value();
+  } else if (!o.mesh.empty()) {
     Result<geom::TriMesh> mesh = io::ReadMeshFile(o.mesh, &read);
     if (!mesh.ok()) Fail(mesh.status().Within("--mesh"));
     scene.name = o.mesh;
     scene.mesh = std::move(mesh).value();
     Check(geom::ValidateMesh(scene.mesh, "--mesh"));
   } else {
-    Result<ivy::IvyScene> s = ivy::MakeIvyScene(o.scene.empty() ? "cubes4" : o.scene);
+    // --scene, else the state's (--url scene=, --params "scene"), else cubes4.
+    const std::string name = !o.scene.empty()      ? o.scene
+                             : state.scene.empty() ? std::string("cubes4")
+                                                   : state.scene;
+    Result<ivy::IvyScene> s = ivy::MakeIvyScene(name);
     if (!s.ok()) Fail(s.status());
     scene = std::move(s).value();
   }
@@ -146,7 +162,8 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   }
   std::vector<glm::dvec3> seeds;
   for (const std::string& s : o.seed_points)
-    seeds.push_back(ParseSeedPoint(s, o.mesh.empty() ? &scene : nullptr));
+    seeds.push_back(ParseSeedPoint(s, o.mesh.empty() ? &scene : nullptr));  // scene or tree seeds
+  if (seeds.empty()) seeds = state.seed_points;  // the state's at= (the page's clicks)
   if (seeds.empty()) {
     if (!o.mesh.empty()) {
       Fail(Status::Error("--seed-point", "required with --mesh; must be X,Y,Z within d of a face"));
@@ -183,10 +200,16 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
       bytes = ivy::IvyModelJson(*model, state.params, state.seed, state.steps) + "\n";
     } else if (ext == ".lsys") {
       bytes = ivy::PrintLString(*model);
+    } else if (ext == ".svg") {
+      ivy::IvySvgOptions svg;
+      svg.leaves = ParseFlagNumber("--svg-leaves", o.svg_leaves, {0, 1, true}) != 0;
+      svg.caption = o.caption;
+      bytes = ivy::IvySvg(*model, state.params, scene.free ? nullptr : &scene.mesh, svg);
     } else {
       const auto t0 = std::chrono::steady_clock::now();
-      Result<std::vector<unsigned char>> glb = ivy::WriteIvyGlb(
-          *model, state.params, state.seed, state.steps, scene.free ? nullptr : &scene.mesh);
+      Result<std::vector<unsigned char>> glb =
+          ivy::WriteIvyGlb(*model, state.params, state.seed, state.steps,
+                           scene.free || !o.with_support ? nullptr : &scene.mesh);
       t.ms_mesh = Ms(t0, std::chrono::steady_clock::now());
       if (!glb.ok()) Fail(glb.status().Within("--out"));
       bytes.assign(glb->begin(), glb->end());
@@ -235,6 +258,9 @@ void AddIvyCommands(CLI::App& app, CommandList& commands) {
                    "Built-in support: cubes4 (default), wall, overhang, stairs, pillar, sphere, "
                    "free (see 'niwa ivy scenes')");
   grow->add_option("--mesh", o->mesh, "Support mesh file: .glb, .gltf or .obj");
+  grow->add_option("--tree-preset", o->tree_preset,
+                   "Climb a Niwa tree's bark ('niwa presets tree'; default ivy preset: metric)");
+  grow->add_option("--tree-years", o->tree_years, "Age of that tree, 1..100 (default 10)");
   grow->add_option("--seed-point", o->seed_points,
                    "Growth start X,Y,Z or a scene's named seed; repeat for several plants");
   grow->add_option("--steps", o->steps, "Final step number, 0..10000 (default 50)");
@@ -247,7 +273,11 @@ void AddIvyCommands(CLI::App& app, CommandList& commands) {
   grow->add_option("--subdivide", o->subdivide,
                    "Split every support triangle into 4^K coplanar ones, K in [0, 8]");
   grow->add_flag("--stats", o->stats, "Print one JSON object of statistics on stdout");
-  grow->add_option("--out", o->out_path, "Write .json (buds, internodes), .lsys or .glb");
+  grow->add_option("--out", o->out_path,
+                   "Write .json (buds, internodes), .lsys, .glb or .svg (front and side views)");
+  grow->add_flag("--with-support", o->with_support, "The .glb also holds the support mesh");
+  grow->add_option("--svg-leaves", o->svg_leaves, ".svg: draw the leaves, 0 or 1 (default 1)");
+  grow->add_option("--caption", o->caption, ".svg: a line of text under the views");
   commands.push_back({grow, [o](std::ostream& out) { return RunGrow(*o, out); }});
   CLI::App* scenes = ivy_app->add_subcommand("scenes", "List the built-in scenes and seeds");
   commands.push_back({scenes, [](std::ostream& out) { return RunScenes(out); }});

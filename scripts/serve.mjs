@@ -5,6 +5,7 @@
 //         /web/      -> web/          (shell/, gl/, worker/, tree/, and each study's folder)
 //         /shaders/  -> shaders/      (common/ and one folder per study)
 //         /wasm/     -> build/wasm/web/   (the Emscripten output of the niwa_web target)
+//         /vendor/draco3d/ -> node_modules/draco3d/ (Google's Draco decoder for dropped meshes)
 // Requests that would leave those roots (.., encoded slashes, NUL) are refused.
 import http from 'node:http';
 import fs from 'node:fs';
@@ -17,6 +18,7 @@ const ROUTES = [
   ['/web/', path.join(ROOT, 'web')],
   ['/shaders/', path.join(ROOT, 'shaders')],
   ['/wasm/', path.join(ROOT, 'build', 'wasm', 'web')],
+  ['/vendor/draco3d/', path.join(ROOT, 'node_modules', 'draco3d')],
   ['/', path.join(ROOT, 'public')],
 ];
 

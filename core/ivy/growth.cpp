@@ -11,6 +11,7 @@
 #include "geom/closest_point.h"
 #include "geom/linear_queries.h"
 #include "geom/ray_cast.h"
+#include "ivy/segment_grid.h"
 #include "math/det_math.h"
 #include "params/param_text.h"
 #include "random/pcg32.h"
@@ -109,6 +110,8 @@ class Grower {
     d_ = p.Get(IvyParam::kD);
     eps_ = p.Get(IvyParam::kEps);
     up_ = Unit(glm::dvec3(p.Get(IvyParam::kUpX), p.Get(IvyParam::kUpY), p.Get(IvyParam::kUpZ)));
+    // Cells at least as large as the avoidance radius: a query touches at most 4^3 cells.
+    grid_ = SegmentGrid(std::max(L_, p.Get(IvyParam::kAvoid)));
   }
 
   bool free() const { return s_.mesh == nullptr; }
@@ -220,14 +223,16 @@ class Grower {
 
   // Crowding (improved preset): is segment p-q closer than r_avoid to an internode not touching
   // bud `from`?
+  // The internodes near p-q come from the grid (segment_grid.h); the answer is the loop's over
+  // every internode (tests/ivy/segment_grid_test.cpp checks the two against each other).
   bool Crowded(int from, const glm::dvec3& p, const glm::dvec3& q, double r_avoid) const {
-    for (const Internode& in : m_.internodes) {
-      if (in.from_bud == from || in.to_bud == from) continue;
+    return grid_.Any(p, q, r_avoid, [&](int i) {
+      const Internode& in = m_.internodes[static_cast<std::size_t>(i)];
+      if (in.from_bud == from || in.to_bud == from) return false;
       const Bud& a = m_.buds[static_cast<std::size_t>(in.from_bud)];
       const Bud& b = m_.buds[static_cast<std::size_t>(in.to_bud)];
-      if (SegmentSegmentDistance(p, q, a.pos, b.pos) < r_avoid) return true;
-    }
-    return false;
+      return SegmentSegmentDistance(p, q, a.pos, b.pos) < r_avoid;
+    });
   }
 
   // E6-E10: a new node for bud `from` with preferred direction v0; false when every attempt failed.
@@ -365,6 +370,7 @@ class Grower {
       b.clearance = static_cast<double>(pl.anchor.distance);
       b.outward = Unit(b.pos - b.anchor);
     }
+    grid_.Insert(static_cast<int>(m_.internodes.size()), from.pos, b.pos);
     m_.internodes.push_back({from.id, b.id, step, axis});
     m_.buds.push_back(b);
     return b.id;
@@ -518,6 +524,7 @@ class Grower {
   const IvyParams& p_;
   uint64_t seed_;
   GrowLog* log_;
+  SegmentGrid grid_{1.0};  // the internodes, cell L (set in the constructor)
   double L_ = 0, d_ = 0, eps_ = 0;
   glm::dvec3 up_{0, 1, 0};
   IvyModel m_;

@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 
 #include "io/hash_codec.h"
+#include "ivy/growth.h"
+#include "ivy/scenes.h"
 #include "params/param_json.h"
 #include "params/param_text.h"
 
@@ -28,6 +30,68 @@ Status SetIvySteps(double steps, IvyState* state) {
   NIWA_RETURN_IF_ERROR(CheckValue("steps", steps, 0, 10000, true));
   state->steps = static_cast<int>(steps);
   return Status::Ok();
+}
+
+Status SetIvyScene(std::string_view name, IvyState* state) {
+  if (!name.empty()) {
+    const std::vector<std::string>& names = IvySceneNames();
+    bool known = false;
+    std::string list;
+    for (const std::string& n : names) {
+      known = known || n == name;
+      list += (list.empty() ? "" : ", ") + n;
+    }
+    if (!known) {
+      return Status::Error("scene", "'" + Printable(name) + "' is unknown; must be one of " + list);
+    }
+  }
+  state->scene = std::string(name);
+  return Status::Ok();
+}
+
+Status SetIvySeedPoints(std::string_view text, IvyState* state) {
+  std::vector<glm::dvec3> points;
+  const std::string range = "must be X,Y,Z;X,Y,Z... (at most " + std::to_string(kMaxSeedPoints) +
+                            " points, each coordinate in [-1e30, 1e30])";
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t semi = text.find(';', start);
+    std::string_view point =
+        text.substr(start, semi == std::string_view::npos ? std::string_view::npos : semi - start);
+    glm::dvec3 p;
+    std::size_t at = 0;
+    for (int i = 0; i < 3; ++i) {
+      std::size_t comma = i < 2 ? point.find(',', at) : point.size();
+      if (comma == std::string_view::npos ||
+          (i == 2 && point.find(',', at) != std::string_view::npos)) {
+        return Status::Error("at", "'" + Printable(point) + "' is not X,Y,Z; " + range);
+      }
+      std::optional<double> x = ParseNumber(point.substr(at, comma - at));
+      if (!x || !(std::fabs(*x) <= 1e30)) {
+        return Status::Error("at", "'" + Printable(point) + "' is out of range; " + range);
+      }
+      p[i] = *x;
+      at = comma + 1;
+    }
+    points.push_back(p);
+    if (points.size() > static_cast<std::size_t>(kMaxSeedPoints)) {
+      return Status::Error("at",
+                           "more than " + std::to_string(kMaxSeedPoints) + " points; " + range);
+    }
+    if (semi == std::string_view::npos) break;
+    start = semi + 1;
+  }
+  state->seed_points = std::move(points);
+  return Status::Ok();
+}
+
+std::string FormatSeedPoints(const std::vector<glm::dvec3>& points) {
+  std::string out;
+  for (const glm::dvec3& p : points) {
+    if (!out.empty()) out += ";";
+    out += FormatNumber(p.x) + "," + FormatNumber(p.y) + "," + FormatNumber(p.z);
+  }
+  return out;
 }
 
 namespace {
@@ -63,8 +127,18 @@ Status ApplyIvyStateJson(const std::string& text, IvyState* state) {
     if (!v.ok()) return v.status();
     NIWA_RETURN_IF_ERROR(SetIvySteps(*v, &next));
   }
-  NIWA_RETURN_IF_ERROR(
-      ApplyParamsJson(text, &next.params, {"preset", "seed", "steps", "name", "scene"}));
+  if (j.contains("scene")) {
+    if (!j["scene"].is_string()) return Status::Error("scene", "must be a scene name");
+    NIWA_RETURN_IF_ERROR(SetIvyScene(j["scene"].get<std::string>(), &next));
+  }
+  if (j.contains("seed_points")) {
+    if (!j["seed_points"].is_string()) {
+      return Status::Error("seed_points", "must be text X,Y,Z;X,Y,Z...");
+    }
+    NIWA_RETURN_IF_ERROR(SetIvySeedPoints(j["seed_points"].get<std::string>(), &next));
+  }
+  NIWA_RETURN_IF_ERROR(ApplyParamsJson(
+      text, &next.params, {"preset", "seed", "steps", "name", "scene", "seed_points"}));
   *state = next;
   return Status::Ok();
 }
@@ -92,6 +166,11 @@ void ApplyIvyHash(std::string_view hash, std::string_view prefix, IvyState* stat
       if (!s.ok()) notices->push_back(Printable(key) + ": " + s.message() + "; dropped");
       continue;
     }
+    if (key == pre + "scene" || key == pre + "at") {
+      Status s = key == pre + "scene" ? SetIvyScene(value, state) : SetIvySeedPoints(value, state);
+      if (!s.ok()) notices->push_back(Printable(key) + ": " + s.message() + "; dropped");
+      continue;
+    }
     if (ApplyHashParam(key, value, prefix, &state->params, notices)) continue;
     if (prefix.empty() || key.rfind(pre, 0) == 0) {
       notices->push_back("unknown key '" + Printable(key) + "' dropped");
@@ -104,6 +183,8 @@ std::string EncodeIvyHash(const IvyState& state, std::string_view prefix) {
   std::string out = pre + "preset=" + state.preset + "&" + pre +
                     "seed=" + std::to_string(state.seed) + "&" + pre +
                     "steps=" + std::to_string(state.steps);
+  if (!state.scene.empty()) out += "&" + pre + "scene=" + state.scene;
+  if (!state.seed_points.empty()) out += "&" + pre + "at=" + FormatSeedPoints(state.seed_points);
   Result<IvyParams> base = IvyPreset(state.preset);
   out += EncodeChangedParams(state.params, base.ok() ? *base : IvyParams(), prefix);
   return out;

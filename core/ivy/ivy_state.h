@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,6 +22,11 @@ struct IvyState {
   IvyParams params;  // the preset's values, then overrides
   uint64_t seed = 1;
   int steps = 50;
+  // Where it grows, when the state says so (the page's share link; the CLI's --scene and
+  // --seed-point win over these): a built-in scene name ("" = the caller's default) and seed points
+  // in scene units (empty = the scene's first named seed).
+  std::string scene;
+  std::vector<glm::dvec3> seed_points;
 };
 
 // Each setter checks its value and leaves the state unchanged on error (field: "preset", "seed",
@@ -28,19 +34,25 @@ struct IvyState {
 Status SetIvyPreset(std::string_view name, IvyState* state);  // resets params to the preset's
 Status SetIvySeed(double seed, IvyState* state);              // whole number in [0, 4294967295]
 Status SetIvySteps(double steps, IvyState* state);            // whole number in [0, 10000]
+Status SetIvyScene(std::string_view name, IvyState* state);   // a built-in scene name or ""
+// "X,Y,Z;X,Y,Z" (at most kMaxSeedPoints points, each coordinate in [-1e30, 1e30]); "" = none.
+Status SetIvySeedPoints(std::string_view text, IvyState* state);
+// The seed points as SetIvySeedPoints reads them (shortest round-trip numbers).
+std::string FormatSeedPoints(const std::vector<glm::dvec3>& points);
 
-// Applies {preset, seed, steps, params: {key: value}} (or the keys at the top level) onto state; a
-// "preset" resets the parameters first. Strict: the first bad field is the error, state unchanged.
-// The cross-row checks (t1 < t2, ...) are ValidateIvyParams's.
+// Applies {preset, seed, steps, scene, seed_points: "X,Y,Z;..", params: {key: value}} (or the keys
+// at the top level) onto state; a "preset" resets the parameters first. Strict: the first bad field
+// is the error, state unchanged. The cross-row checks (t1 < t2, ...) are ValidateIvyParams's.
 Status ApplyIvyStateJson(const std::string& text, IvyState* state);
 
-// Applies "#preset=paper&seed=3&steps=50&t1=0.3" (keys prefixed with `prefix`, e.g. "ivy."); keys
-// that are not the ivy's are skipped when `prefix` is non-empty (they belong to another study on a
-// composed page) and dropped with a notice otherwise; bad values are clamped or dropped with a
-// notice (notices are printable one-liners).
+// Applies "#preset=paper&seed=3&steps=50&scene=wall&at=0,10,10&t1=0.3" (keys prefixed with
+// `prefix`, e.g. "ivy."); keys that are not the ivy's are skipped when `prefix` is non-empty (they
+// belong to another study on a composed page) and dropped with a notice otherwise; bad values are
+// clamped or dropped with a notice (notices are printable one-liners).
 void ApplyIvyHash(std::string_view hash, std::string_view prefix, IvyState* state,
                   std::vector<std::string>* notices);
-// The hash of a state: preset, seed, steps, and every parameter that differs from the preset.
+// The hash of a state: preset, seed, steps, scene and at (when set), and every parameter that
+// differs from the preset.
 std::string EncodeIvyHash(const IvyState& state, std::string_view prefix = "");
 
 }  // namespace niwa::ivy

@@ -88,5 +88,22 @@
  * @typedef {Envelope & {type: 'error', message: string}} ErrorMessage
  */
 
+/**
+ * The ivy page (study: 'ivy', web/worker/ivy_handler.js). State: {preset, seed, steps, scene,
+ * seed_points: "X,Y,Z;..", params}; ready also carries `scenes` [{name, description, seeds}].
+ * @typedef {Envelope & {type: 'update', state: Object, useMesh?: boolean}} IvyUpdateMessage
+ *   -> SupportMessage (when the scene changed), ProgressMessage {stage, text},
+ *      {type: 'ivy', stats, mesh: {stems, leaves, suckers: {positions, normals, indices, birth},
+ *       buds: {positions, kind, birth}},
+ *       steps, hash, wallMs}
+ * @typedef {Envelope & {type: 'mesh', name: string, bytes: ArrayBuffer}} IvyMeshMessage
+ *   -> {type: 'support', support: {name, dropped, free, triangles, bounds, seeds}, buffers:
+ *       {positions, normals, indices}}
+ * @typedef {Envelope & {type: 'pick', origin: number[], direction: number[]}} IvyPickMessage
+ *   -> {type: 'picked', hit: {hit, point?, normal?, distance?}}
+ * @typedef {Envelope & {type: 'encode', state: Object}} IvyEncodeMessage -> {type: 'encoded', hash|error}
+ * export: format 'glb' (withSupport?) | 'json' | 'lsys'.
+ */
+
 // The message types a page may send (the router answers any other with an error).
-export const REQUEST_TYPES = ['init', 'decode', 'update', 'restage', 'wind', 'poseDone', 'view', 'export'];
+export const REQUEST_TYPES = ['init', 'decode', 'update', 'restage', 'wind', 'poseDone', 'view', 'export', 'mesh', 'pick', 'encode'];

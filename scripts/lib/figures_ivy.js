@@ -1,0 +1,169 @@
+#!/usr/bin/env node
+// Regenerates paper 004's Fig. 3 (Shindo & Sakamoto: the ivy on four 400 px cubes at steps 10-50,
+// and the last step with leaves) and measures the claims of its §4 through the CLI
+// (build/native/bin/niwa, from `scripts/build native`, or $NIWA) into docs/figures/ivy/: fig3_steps.svg,
+// fig3_leaves.svg, problems.svg (the paper's two problems in `paper` and `improved`), scenes.svg
+// (convex and concave supports), tree.svg (ivy on Niwa's sakura), and claims.md (the numbers,
+// seeds 1-5). docs/FIGURES.md shows them. Deterministic. Usage: scripts/figures ivy [NAME...]
+// e.g. `scripts/figures ivy claims` to redo only the numbers.
+'use strict';
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+const { execFileSync } = require('child_process');
+
+const root = path.resolve(__dirname, '..', '..');
+const niwa = process.env.NIWA ? path.resolve(process.env.NIWA) : path.join(root, 'build/native/bin/niwa');
+const outDir = path.join(root, 'docs/figures/ivy');
+const tmpDir = fs.mkdtempSync(path.join(os.tmpdir(), 'niwa-ivy-figures-'));
+
+if (!fs.existsSync(niwa)) {
+  console.error(`figures: ${path.relative(root, niwa)} is missing; run scripts/build native first`);
+  process.exit(1);
+}
+fs.mkdirSync(outDir, { recursive: true });
+
+const PANEL = 480;  // the CLI's .svg: two square views of 480 px (front x-y, side z-y)
+const esc = (s) => s.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
+
+function run(args) {
+  return execFileSync(niwa, args, { encoding: 'utf8', maxBuffer: 1 << 28 });
+}
+
+function growArgs(p) {
+  const args = ['ivy', 'grow'];
+  if (p.tree) args.push('--tree-preset', p.tree, '--tree-years', String(p.treeYears || 10));
+  else args.push('--scene', p.scene || 'cubes4');
+  args.push('--preset', p.preset || 'paper', '--seed', String(p.seed ?? 1), '--steps', String(p.steps ?? 50));
+  for (const s of p.seedPoints || []) args.push('--seed-point', s);
+  return args;
+}
+
+function stats(p) {
+  return JSON.parse(run([...growArgs(p), '--stats']));
+}
+
+// One CLI drawing (both views) and its stats.
+function panel(p) {
+  const file = path.join(tmpDir, 'panel.svg');
+  const st = JSON.parse(run([...growArgs(p), '--out', file, '--stats', '--svg-leaves', p.leaves === false ? '0' : '1']));
+  return { svg: fs.readFileSync(file, 'utf8'), stats: st };
+}
+
+// The markup of one view of a CLI drawing (0 front, 1 side: its <g id="front"> or <g id="side">
+// group, without the <svg> element, the white background or the caption).
+function inner(svg, view) {
+  const body = svg.replace(/^<svg[^>]*>\n/, '').replace(/<\/svg>\n?$/, '').replace(/<rect width="100%"[^>]*\/>\n/, '');
+  const at = body.indexOf('<g id="side">');
+  const end = body.lastIndexOf('<text x="8" y="');  // the caption, if any, follows the side group
+  return view === 0 ? body.slice(0, at) : body.slice(at, end > at && !body.slice(end).includes('<g') ? end : undefined);
+}
+
+// Writes a figure: cells of `views` (0 front, 1 side) of the panels, side by side, labelled.
+function figure(name, title, cells, cols = cells.length) {
+  const rows = Math.ceil(cells.length / cols);
+  const top = 30, label = 36;
+  const w = cols * PANEL, h = top + rows * (PANEL + label);
+  let out = `<svg xmlns="http://www.w3.org/2000/svg" width="${w}" height="${h}" viewBox="0 0 ${w} ${h}">\n`;
+  out += '<rect width="100%" height="100%" fill="#fff"/>\n';
+  out += `<text x="8" y="20" font-family="sans-serif" font-size="15" font-weight="bold">${esc(title)}</text>\n`;
+  cells.forEach((c, i) => {
+    const x = (i % cols) * PANEL, y = top + Math.floor(i / cols) * (PANEL + label);
+    // The CLI draws the front view at x 0..480 and the side view at 480..960.
+    out += `<svg x="${x}" y="${y}" width="${PANEL}" height="${PANEL}" viewBox="${c.view * PANEL} 0 ${PANEL} ${PANEL}">\n`;
+    out += inner(c.svg, c.view) + '</svg>\n';
+    c.label.forEach((line, k) => {
+      out += `<text x="${x + 8}" y="${y + PANEL + 14 + 15 * k}" font-family="sans-serif" font-size="12">${esc(line)}</text>\n`;
+    });
+  });
+  out += '</svg>\n';
+  const file = path.join(outDir, `${name}.svg`);
+  fs.writeFileSync(file, out);
+  console.log(`wrote ${path.relative(root, file)}`);
+}
+
+const fmt = (x, d = 2) => (Number.isFinite(x) ? String(Number(x.toFixed(d))) : String(x));
+
+const FIGURES = {
+  // Fig. 3: steps 10, 20, 30, 40, 50 (front views, no leaves), as the paper's "step ごとの推移".
+  fig3_steps() {
+    const cells = [10, 20, 30, 40, 50].map((steps) => {
+      const { svg, stats: s } = panel({ steps, leaves: false });
+      console.log(`  step ${steps}: ${s.internodes} internodes, ${s.laterals} laterals, buds A ${s.buds.A} D ${s.buds.D} Z ${s.buds.Z}`);
+      return { svg, view: 0, label: [`step ${steps}`, `${s.internodes} internodes, ${s.laterals} laterals`] };
+    });
+    figure('fig3_steps', 'Fig. 3 (paper 004): cubes4, preset paper, seed 1, steps 10-50 (front view)', cells, 5);
+  },
+  // Fig. 3's last panel: step 50 with leaves, front and side.
+  fig3_leaves() {
+    const { svg, stats: s } = panel({ steps: 50 });
+    const line = `step 50 with leaves: ${s.leaves} leaves, ${s.internodes} internodes`;
+    figure('fig3_leaves', 'Fig. 3, last step with leaves (cubes4, paper, seed 1)', [
+      { svg, view: 0, label: ['front (x-y)', line] }, { svg, view: 1, label: ['side (z-y)', ''] }]);
+  },
+  // §4's two problems: extreme bends and overlapping branches, in paper and in improved.
+  problems() {
+    const cells = [];
+    for (const preset of ['paper', 'improved']) {
+      for (const seed of [1, 3]) {
+        const { svg, stats: s } = panel({ preset, seed, leaves: false });
+        console.log(`  ${preset} seed ${seed}: bend_max ${fmt(s.bend_max, 1)}°, overlap_pairs ${s.overlap_pairs}`);
+        cells.push({ svg, view: 0, label: [`${preset}, seed ${seed}`, `bend_max ${fmt(s.bend_max, 1)}°, overlap_pairs ${s.overlap_pairs}, ${s.internodes} internodes`] });
+      }
+    }
+    figure('problems', '§4 problems: extreme bends and overlapping branches (paper) against improved (max_bend 60°, avoid 10 px)', cells, 4);
+  },
+  // Convex and concave supports: every built-in scene but free.
+  scenes() {
+    const cells = ['wall', 'overhang', 'stairs', 'pillar', 'sphere'].map((scene) => {
+      const { svg, stats: s } = panel({ scene, leaves: true });
+      console.log(`  ${scene}: within d ${s.frac_nodes_within_d}, hits ${s.internode_hits}, convex ${s.convex_crossings}, concave ${s.concave_crossings}`);
+      return { svg, view: scene === 'stairs' ? 1 : 0, label: [`${scene}${scene === 'stairs' ? ' (side)' : ''}`,
+        `within d ${fmt(s.frac_nodes_within_d, 3)}, hits ${s.internode_hits}, convex ${s.convex_crossings}, concave ${s.concave_crossings}`] };
+    });
+    figure('scenes', 'The other built-in scenes (preset paper, seed 1, 50 steps)', cells, 5);
+  },
+  // Ivy on a Niwa tree (metric preset, --tree-preset sakura --tree-years 10).
+  tree() {
+    const cells = [];
+    for (const steps of [50, 150]) {
+      const { svg, stats: s } = panel({ tree: 'sakura', treeYears: 10, preset: 'metric', steps });
+      console.log(`  sakura, ${steps} steps: ${s.internodes} internodes, rise ${fmt(s.rise)} m, tri_count ${s.tri_count}`);
+      cells.push({ svg, view: 0, label: [`sakura 10 years, ${steps} steps`, `${s.internodes} internodes, rise ${fmt(s.rise)} m, within d ${fmt(s.frac_nodes_within_d, 3)}, hits ${s.internode_hits}`] });
+    }
+    figure('tree', 'Ivy on Niwa\'s sakura (metric preset: L = 5 cm, d = 2 cm)', cells, 2);
+  },
+  // §4's claims as numbers, seeds 1-5, cubes4, 50 steps.
+  claims() {
+    const rows = [];
+    for (const preset of ['paper', 'literal', 'improved']) {
+      for (let seed = 1; seed <= 5; ++seed) {
+        const s = stats({ preset, seed });
+        rows.push({ preset, seed, s });
+      }
+    }
+    let md = '| preset | seed | within d | hits | convex / concave | up_min | first break | laterals at 20 → 30 | rho | bend_max | overlap pairs |\n';
+    md += '|---|---|---|---|---|---|---|---|---|---|---|\n';
+    for (const { preset, seed, s } of rows) {
+      md += `| ${preset} | ${seed} | ${fmt(s.frac_nodes_within_d, 3)} | ${s.internode_hits} | ${s.convex_crossings} / ${s.concave_crossings} | ${fmt(s.up_min, 3)} | ${s.first_break_step} | ${s.laterals_at['20']} → ${s.laterals_at['30']} | ${fmt(s.rho, 2)} | ${fmt(s.bend_max, 1)}° | ${s.overlap_pairs} |\n`;
+    }
+    const file = path.join(outDir, 'claims.md');
+    fs.writeFileSync(file, md);
+    console.log(md);
+    console.log(`wrote ${path.relative(root, file)}`);
+  },
+};
+
+const wanted = process.argv.slice(2);
+for (const name of wanted) {
+  if (!FIGURES[name]) {
+    console.error(`figures ivy: '${name}' is unknown; must be one of ${Object.keys(FIGURES).join(', ')}`);
+    process.exit(2);
+  }
+}
+for (const [name, make] of Object.entries(FIGURES)) {
+  if (wanted.length && !wanted.includes(name)) continue;
+  console.log(`${name}:`);
+  make();
+}
+fs.rmSync(tmpDir, { recursive: true, force: true });

@@ -1,0 +1,34 @@
+#version 300 es
+// Lit ivy parts and support: half-Lambert sun plus a sky/ground hemisphere ambient, both faces lit
+// (leaves are thin and a dropped mesh may be wound either way); uVariation adds a per-position
+// hash so leaves differ from one another.
+precision highp float;
+
+in vec3 vNormal;
+in vec3 vWorld;
+
+uniform vec3 uColor;
+uniform vec3 uVariation;
+uniform vec3 uLightDirection;  // unit, towards the sun
+uniform vec3 uCameraPosition;
+
+out vec4 outColor;
+
+float hash(vec3 p) {
+  p = fract(p * vec3(12.9898, 78.233, 37.719));
+  p += dot(p, p.yzx + 19.19);
+  return fract((p.x + p.y) * p.z);
+}
+
+void main() {
+  vec3 n = normalize(vNormal);
+  vec3 view = normalize(uCameraPosition - vWorld);
+  if (dot(n, view) < 0.0) n = -n;
+  vec3 base = uColor + uVariation * (hash(floor(vWorld * 6.0)) - 0.5);
+  float diffuse = 0.2 + 0.8 * max(dot(n, uLightDirection), 0.0);
+  vec3 sky = vec3(0.62, 0.72, 0.85);
+  vec3 ground = vec3(0.32, 0.30, 0.24);
+  vec3 ambient = mix(ground, sky, 0.5 + 0.5 * n.y) * 0.45;
+  vec3 color = base * (ambient + vec3(1.0, 0.97, 0.9) * diffuse * 0.8);
+  outColor = vec4(pow(color, vec3(1.0 / 1.1)), 1.0);
+}

@@ -1,0 +1,232 @@
+// Browser test of the ivy page (public/ivy.html): node tests/browser/ivy.test.mjs (exit 0 = pass).
+// The page opens with cubes4 grown and its --stats equal the native CLI's for the page's own hash
+// (`niwa ivy grow --url HASH --stats`, every field but the timings); the step scrubber changes
+// what is drawn without regrowing; a click on the support adds a seed point (the hash gains at=,
+// and the CLI agrees again); a bad value is one line beside its field and the page recovers; a
+// real Draco asset dropped on the view grows ivy (the CLI agrees with --mesh); screenshots go to
+// build/artifacts/ivy-*.png.
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import {
+  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, snapshotCanvas,
+  snapshotDifference, watchPage,
+} from './harness.mjs';
+
+const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => k !== 'ms' && !k.startsWith('ms_')));
+
+function nativeIvyStats(args) {
+  const out = execFileSync(NATIVE, ['ivy', 'grow', ...args, '--stats'], { encoding: 'utf8' });
+  return JSON.parse(out.trim().split('\n').pop());
+}
+
+// Waits for an ivy newer than serialAbove drawn on screen (or an error); returns the dataset.
+async function waitIvy(page, serialAbove) {
+  await page.waitForFunction((n) => {
+    const d = document.documentElement.dataset;
+    if (d.status === 'error') return true;
+    return d.status === 'ready' && Number(d.ivySerial) > n && (d.drawnSerial === d.ivySerial || d.drawing === 'off');
+  }, serialAbove, { timeout: TIMEOUT, polling: 200 });
+  return page.evaluate(() => ({ ...document.documentElement.dataset }));
+}
+
+// Leaf green and stem brown shares of the canvas.
+async function colours(page) {
+  return page.evaluate(() => {
+    const d = window.__niwaCanvasImage('#view').data;
+    let green = 0, brown = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      const r = d[i], g = d[i + 1], b = d[i + 2];
+      if (g > r + 25 && g > b + 25) ++green;
+      if (r > g + 12 && g > b + 5 && r < 160) ++brown;
+    }
+    const n = d.length / 4;
+    return { green: green / n, brown: brown / n };
+  });
+}
+
+function compareWithNative(name, data, args) {
+  let native = null;
+  try {
+    native = nativeIvyStats(args);
+  } catch (e) {
+    check(`${name}: native CLI runs`, false, `${NATIVE} ${args.join(' ')}: ${e.message.split('\n')[0]}`);
+    return;
+  }
+  const web = withoutMs(JSON.parse(data.stats));
+  const same = JSON.stringify(web) === JSON.stringify(withoutMs(native));
+  check(`${name}: page --stats == native CLI (${args.join(' ')})`, same,
+    same ? `${web.internodes} internodes, ${web.leaves} leaves, ${web.laterals} laterals`
+      : `web ${JSON.stringify(web).slice(0, 300)} native ${JSON.stringify(withoutMs(native)).slice(0, 300)}`);
+}
+
+const problems = [];
+await runBrowserTest(async (server, browser) => {
+  const context = await newContext(browser, { viewport: { width: 1200, height: 760 } });
+  const page = await context.newPage();
+  watchPage(page, problems);
+  page.on('request', (r) => {
+    if (!r.url().startsWith(server.url) && !r.url().startsWith('data:') && !r.url().startsWith('blob:')) problems.push(`external request: ${r.url()}`);
+  });
+
+  // 1. Opens with cubes4 grown: a result without input.
+  await page.goto(`${server.url}ivy.html`, { waitUntil: 'load' });
+  let data = await waitIvy(page, 0);
+  check('opens with an ivy grown', data.status === 'ready' && Number(data.internodes) > 20, `status ${data.status}, ${data.internodes} internodes, ${data.error || ''}`);
+  check('the support is cubes4', data.supportName === 'cubes4' && data.supportTriangles === '20', `${data.supportName}, ${data.supportTriangles} tris`);
+  check('the hash is the ivy state', /^#preset=paper&seed=1&steps=50&scene=cubes4/.test(await page.evaluate(() => location.hash)), await page.evaluate(() => location.hash));
+  compareWithNative('cubes4', data, ['--url', data.hash]);
+  const navIvy = await page.locator('#studies a[aria-current="page"]').textContent().catch(() => '');
+  check('the studies nav marks Ivy', navIvy === 'Ivy', navIvy);
+  const full = await colours(page);
+  check('leaves and stems are drawn', full.green > 0.01 && full.brown > 0.0005, `green ${(full.green * 100).toFixed(2)}%, brown ${(full.brown * 100).toFixed(3)}%`);
+  await saveCanvasPng(page, 'ivy-cubes4.png');
+  await snapshotCanvas(page, 'full');
+
+  // 2. The step scrubber replays the growth from the birth steps: less is drawn, nothing regrows.
+  const grows = Number(data.growRequests);
+  const fullLeaves = Number(data.drawnLeaves), fullStems = Number(data.drawnStems);
+  await page.evaluate(() => {
+    const r = document.getElementById('step');
+    r.value = '15';
+    r.dispatchEvent(new Event('input'));
+  });
+  await page.waitForFunction(() => document.documentElement.dataset.drawnStep === '15', null, { timeout: TIMEOUT });
+  data = await page.evaluate(() => ({ ...document.documentElement.dataset }));
+  await snapshotCanvas(page, 'step15');
+  const diff = await snapshotDifference(page, 'full', 'step15', 30);
+  const early = await colours(page);
+  check('step 15 draws fewer leaves and stems', Number(data.drawnLeaves) > 0 && Number(data.drawnLeaves) < fullLeaves &&
+    Number(data.drawnStems) > 0 && Number(data.drawnStems) < fullStems,
+  `stems ${data.drawnStems} of ${fullStems}, leaves ${data.drawnLeaves} of ${fullLeaves} triangles at step 15`);
+  check('step 15 looks different from step 50', diff > 0.002 && early.green < full.green, `${(diff * 100).toFixed(2)}% of pixels changed, green ${(early.green * 100).toFixed(2)}% vs ${(full.green * 100).toFixed(2)}%`);
+  check('scrubbing does not regrow', Number(data.growRequests) === grows, `grow requests ${grows} -> ${data.growRequests}`);
+  await saveCanvasPng(page, 'ivy-cubes4-step15.png');
+  await page.evaluate(() => {
+    const r = document.getElementById('step');
+    r.value = r.max;
+    r.dispatchEvent(new Event('input'));
+  });
+
+  // 2b. The toggles: leaves off draws no leaf triangles (and less green); buds on adds a draw call.
+  const before = await page.evaluate(() => ({ ...document.documentElement.dataset }));
+  await page.click('#show-leaves');
+  await page.waitForFunction((n) => Number(document.documentElement.dataset.drawnTriangles) < n, Number(before.drawnTriangles), { timeout: TIMEOUT });
+  const noLeaves = await colours(page);
+  check('Leaves off hides the leaves', noLeaves.green < full.green / 4, `green ${(noLeaves.green * 100).toFixed(2)}% (with leaves ${(full.green * 100).toFixed(2)}%)`);
+  await page.click('#show-leaves');
+  await page.click('#show-buds');
+  const budCalls = await page.waitForFunction((n) => Number(document.documentElement.dataset.drawCalls) > n, Number(before.drawCalls), { timeout: 20_000 })
+    .then(() => page.evaluate(() => Number(document.documentElement.dataset.drawCalls)), () => Number(before.drawCalls));
+  check('Buds A/D/Z adds the bud markers', budCalls === Number(before.drawCalls) + 1, `draw calls ${before.drawCalls} -> ${budCalls}`);
+  await saveCanvasPng(page, 'ivy-cubes4-buds.png');
+  await page.click('#show-buds');
+
+  // 3. A click on the support (the front face of the lower cubes) adds a seed point and regrows.
+  const box = await page.locator('#view').boundingBox();
+  let serial = Number(data.ivySerial);
+  await page.mouse.click(box.x + box.width * 0.42, box.y + box.height * 0.8);
+  data = await waitIvy(page, serial);
+  const hash = await page.evaluate(() => location.hash);
+  check('a click adds a seed point', data.seedClicks === '1' && /&at=[-0-9.e]+,[-0-9.e]+,[-0-9.e]+/.test(hash), `${hash.slice(0, 120)}; ${data.error || ''}`);
+  if (data.status === 'ready') compareWithNative('clicked seed', data, ['--url', data.hash]);
+  await saveCanvasPng(page, 'ivy-clicked-seed.png');
+
+  // 4. A bad value: one line beside its field, and the page keeps working.
+  serial = Number(data.ivySerial);
+  await page.fill('#param-t1', '0.9');
+  await page.waitForFunction(() => document.documentElement.dataset.status === 'error', null, { timeout: TIMEOUT });
+  const beside = await page.evaluate(() => {
+    const row = document.getElementById('param-t1').closest('.field');
+    const line = row.querySelector('.field-error');
+    return line && !line.hidden ? line.textContent : '';
+  });
+  const notice = await page.textContent('#notice');
+  check('t1 >= t2 is a notice beside t1', /^t1: 0\.9 is not below t2 = 0\.8; must be in \[0, t2\)/.test(beside) && notice.includes('t1:'), `beside: '${beside}', notice: '${notice}'`);
+  await page.screenshot({ path: path.join(ARTIFACTS, 'ivy-bad-t1.png') });
+  await page.fill('#param-t1', '0.2');
+  data = await waitIvy(page, serial);
+  check('the page recovers after the bad value', data.status === 'ready', `status ${data.status}`);
+
+  // 5. A real Draco asset dropped on the view grows ivy (and the CLI agrees, given the same file).
+  serial = Number(data.ivySerial);
+  const file = path.join(ROOT, 'tests/data/meshes/rock1.glb');
+  const bytes = fs.readFileSync(file).toString('base64');
+  await page.evaluate(async (b64) => {
+    const raw = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
+    const transfer = new DataTransfer();
+    transfer.items.add(new File([raw], 'rock1.glb', { type: 'model/gltf-binary' }));
+    const stage = document.getElementById('stage');
+    stage.dispatchEvent(new DragEvent('dragenter', { dataTransfer: transfer, bubbles: true }));
+    stage.dispatchEvent(new DragEvent('drop', { dataTransfer: transfer, bubbles: true }));
+  }, bytes);
+  data = await waitIvy(page, serial);
+  check('the dropped Draco rock grows ivy', data.status === 'ready' && data.supportName === 'rock1.glb' && data.supportDropped === 'true' && Number(data.internodes) > 10,
+    `${data.supportName}: ${data.supportTriangles} tris, ${data.internodes} internodes, ${data.error || data.meshError || ''}`);
+  const dropNotice = await page.textContent('#notice');
+  check('the notice says the dropped mesh is not part of the link', dropNotice.includes('not part of the link'), dropNotice);
+  if (data.status === 'ready') compareWithNative('rock1.glb', data, ['--mesh', file, '--url', data.hash]);
+  const rock = await colours(page);
+  check('leaves are drawn on the rock', rock.green > 0.005, `green ${(rock.green * 100).toFixed(2)}%`);
+  await saveCanvasPng(page, 'ivy-rock1.png');
+
+  // 6. A file that is not a mesh is refused with a notice; the rock stays.
+  await page.setInputFiles('#mesh-file', { name: 'notes.txt', mimeType: 'text/plain', buffer: Buffer.from('hello') });
+  const refused = await page.textContent('#notice');
+  check('a .txt is refused with one line', refused.includes('notes.txt: not a mesh file'), refused);
+
+  // 7. A 1 M-triangle glTF (a wall of 708 x 708 quads, 10 m, made here) is read, gets its BVH and
+  // grows within seconds, with its stages shown on the progress line.
+  {
+    const n = 708, size = 10;
+    const positions = new Float32Array((n + 1) * (n + 1) * 3);
+    for (let j = 0; j <= n; ++j) {
+      for (let i = 0; i <= n; ++i) {
+        const k = 3 * (j * (n + 1) + i);
+        positions[k] = (i / n - 0.5) * size;
+        positions[k + 1] = (j / n) * size;
+        positions[k + 2] = 0;
+      }
+    }
+    const indices = new Uint32Array(n * n * 6);
+    for (let j = 0, t = 0; j < n; ++j) {
+      for (let i = 0; i < n; ++i, t += 6) {
+        const a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+        indices.set([a, b, d, a, d, c], t);
+      }
+    }
+    const bin = new Uint8Array(positions.byteLength + indices.byteLength);
+    bin.set(new Uint8Array(positions.buffer), 0);
+    bin.set(new Uint8Array(indices.buffer), positions.byteLength);
+    const json = {
+      asset: { version: '2.0' }, scenes: [{ nodes: [0] }], scene: 0, nodes: [{ mesh: 0, name: 'wall' }],
+      meshes: [{ primitives: [{ attributes: { POSITION: 0 }, indices: 1 }] }],
+      buffers: [{ byteLength: bin.length }],
+      bufferViews: [{ buffer: 0, byteOffset: 0, byteLength: positions.byteLength },
+        { buffer: 0, byteOffset: positions.byteLength, byteLength: indices.byteLength }],
+      accessors: [{ bufferView: 0, componentType: 5126, count: positions.length / 3, type: 'VEC3', min: [-size / 2, 0, 0], max: [size / 2, size, 0] },
+        { bufferView: 1, componentType: 5125, count: indices.length, type: 'SCALAR' }],
+    };
+    const { buildGlb } = await import('../../web/mesh/mesh_import.js');
+    const big = path.join(ARTIFACTS, 'ivy-wall-1m.glb');
+    fs.writeFileSync(big, buildGlb(json, bin));
+    serial = Number((await page.evaluate(() => ({ ...document.documentElement.dataset }))).ivySerial);
+    const stages = [];
+    await page.exposeFunction('__ivyProgress', (text) => stages.push(text));
+    await page.evaluate(() => {
+      new MutationObserver(() => window.__ivyProgress(document.getElementById('progress').textContent))
+        .observe(document.getElementById('progress'), { childList: true, characterData: true, subtree: true });
+    });
+    const t0 = Date.now();
+    await page.setInputFiles('#mesh-file', big);
+    data = await waitIvy(page, serial);
+    const seconds = (Date.now() - t0) / 1000;
+    const shown = stages.filter(Boolean);
+    check('a 1 M-triangle glTF grows ivy within seconds', data.status === 'ready' && data.supportTriangles === String(2 * n * n) && Number(data.internodes) > 10 && seconds < 60,
+      `${data.supportTriangles} triangles, ${data.internodes} internodes in ${seconds.toFixed(1)} s (SwiftShader, shared CPU); ${data.error || data.meshError || ''}`);
+    check('its stages are shown while it loads', shown.some((t) => t.startsWith('reading')) && shown.some((t) => t.includes('BVH')) && shown.includes('growing'), shown.join(' | '));
+    await saveCanvasPng(page, 'ivy-wall-1m.png');
+  }
+
+  check('no console errors, page errors or external requests', problems.length === 0, problems.join(' | '));
+});

@@ -1,0 +1,71 @@
+// Ivy CLI outputs added with the page, native against WASM: --tree-preset (stats and .json equal),
+// .svg byte for byte, the share link's scene= and at= (the page's hash) equal to the flags, and
+// --with-support's .glb validator-clean with the support node; hostile values of the new flags are
+// one line naming the flag, exit 2, no file left behind.
+import { existsSync, mkdtempSync, readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { buildName, check, finish, native, requireWasm, root, run, spawn, wasm, withoutMs } from '../support/cli_pair.mjs';
+
+requireWasm();
+const dir = mkdtempSync(join(tmpdir(), 'niwa-ivy-out-'));
+
+// A tree support: native == WASM.
+const tree = ['ivy', 'grow', '--tree-preset', 'sakura', '--tree-years', '6', '--stats'];
+const ta = JSON.parse(run(native, [...tree, '--out', join(dir, 'tree-n.json')]));
+const tb = JSON.parse(run(wasm, [...tree, '--out', join(dir, 'tree-w.json')]));
+check(JSON.stringify(withoutMs(ta)) === JSON.stringify(withoutMs(tb)) && ta.internodes > 10,
+  `--tree-preset sakura --tree-years 6: --stats native == WASM (${ta.tri_count} bark triangles, ${ta.internodes} internodes, rise ${ta.rise.toFixed(3)} m)`);
+check(readFileSync(join(dir, 'tree-n.json'), 'utf8') === readFileSync(join(dir, 'tree-w.json'), 'utf8'), '--tree-preset .json identical');
+
+// .svg byte for byte, for a small and a large (silhouette) support.
+for (const args of [['--scene', 'overhang', '--seed', '2'], ['--tree-preset', 'pine', '--tree-years', '5', '--svg-leaves', '0']]) {
+  run(native, ['ivy', 'grow', ...args, '--out', join(dir, 'n.svg')]);
+  run(wasm, ['ivy', 'grow', ...args, '--out', join(dir, 'w.svg')]);
+  const a = readFileSync(join(dir, 'n.svg'), 'utf8'), b = readFileSync(join(dir, 'w.svg'), 'utf8');
+  check(a.startsWith('<svg ') && a === b, `${args.join(' ')}: .svg native == WASM (${a.length} bytes, ${(a.match(/<line /g) || []).length} lines)`);
+}
+
+// The page's hash (scene=, at=) grows what the flags grow, in both builds.
+for (const cmd of [native, wasm]) {
+  const flags = withoutMs(JSON.parse(run(cmd, ['ivy', 'grow', '--scene', 'pillar', '--seed-point', '0,10,210', '--seed-point', '150,10,150', '--steps', '40', '--stats'])));
+  const url = withoutMs(JSON.parse(run(cmd, ['ivy', 'grow', '--url', 'steps=40&scene=pillar&at=0,10,210;150,10,150', '--stats'])));
+  check(JSON.stringify(flags) === JSON.stringify(url), `${buildName(cmd)}: --url scene=pillar&at=.. == --scene pillar --seed-point ..`);
+}
+
+// --with-support: validator-clean, with the support node; without it, no support node.
+const require = createRequire(join(root, 'package.json'));
+const validatorModule = await import(pathToFileURL(require.resolve('gltf-validator')).href);
+const validator = validatorModule.default ?? validatorModule;
+const nodesOf = (glb) => {
+  const length = new DataView(glb.buffer, glb.byteOffset).getUint32(12, true);
+  return JSON.parse(new TextDecoder().decode(glb.subarray(20, 20 + length))).nodes.map((n) => n.name);
+};
+for (const withSupport of [true, false]) {
+  const file = join(dir, `s${withSupport}.glb`);
+  run(wasm, ['ivy', 'grow', '--scene', 'stairs', '--out', file, ...(withSupport ? ['--with-support'] : [])]);
+  const glb = new Uint8Array(readFileSync(file));
+  const report = await validator.validateBytes(glb);
+  const names = nodesOf(glb);
+  check(report.issues.numErrors === 0 && names.includes('support') === withSupport,
+    `stairs .glb ${withSupport ? 'with' : 'without'} --with-support: ${report.issues.numErrors} validator errors, nodes ${names.join(', ')}`);
+}
+
+// Hostile values of the new flags and hash keys.
+const hostile = [
+  [['--tree-preset', 'oak'], '--tree-preset'], [['--tree-preset', 'sakura', '--tree-years', '101'], '--tree-years'],
+  [['--tree-preset', 'sakura', '--tree-years', 'x'], '--tree-years'], [['--svg-leaves', '2'], '--svg-leaves'],
+  [['--url', 'at=1,2,3,4'], '--url'], [['--url', 'scene=%3Cb%3E'], '--url'], [['--out', join(dir, 'x.png')], '--out'],
+];
+for (const [args, field] of hostile) {
+  for (const cmd of [native, wasm]) {
+    const out = join(dir, 'bad.svg');
+    const r = spawn(cmd, ['ivy', 'grow', ...args, ...(args.includes('--out') ? [] : ['--out', out])]);
+    const lines = r.stderr.trim().split('\n');
+    check(r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${field}`) && !existsSync(out) && !existsSync(join(dir, 'x.png')),
+      `${buildName(cmd)} ${args.join(' ')}: exit ${r.status}, "${lines[0]}"`);
+  }
+}
+finish();

@@ -1,0 +1,436 @@
+// The ivy study's bindings (paper 004): IvyLab, one support (a built-in scene or a dropped mesh,
+// with its BVH) and the last ivy grown on it, for the worker (web/worker/ivy_handler.js); and the
+// ivy table, presets, scenes and hash codec as JSON.
+//
+// Design (as the tree's "JS BINDINGS DESIGN" note in tree_bindings.cpp): everything from
+// JavaScript arrives as text or bytes and is checked by the core (core/ivy/ivy_state,
+// io/gltf_reader, ivy::Grow); nothing throws, errors come back as one line ("" = success).
+// Buffers leave through buffers(group) (buffers.h), copied once by the worker. Groups:
+//   "support"                    positions, normals (Float32 xyz), indices (Uint32)
+//   "stems" | "leaves" | "suckers"  positions, normals, indices, birth (Float32 per vertex: the
+//                                birth_step of core/ivy/ivy_mesh.h, the .glb's _BIRTH_STEP)
+//   "buds"                       positions (Float32 xyz), kind (Float32: 0 A, 1 D, 2 Z, as at the
+//                                last step), birth (Float32: the step the bud was made)
+//   "glb"                        bytes (Uint8, after buildGlb)
+// Calls: loadScene(name) or loadMesh(bytes, name) -> ""/error, supportJson(); grow(stateJson) ->
+// ""/error, then statsJson(), buffers(..), modelJson(), lstring(), buildGlb(withSupport);
+// rayCast(ox, oy, oz, dx, dy, dz) -> {hit, point, normal, distance} on the support.
+// Does not: grow trees (the ivy page climbs built-in scenes and dropped meshes only), decode
+// Draco (web/mesh/mesh_import.js does before the bytes arrive), or keep more than one ivy.
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "buffers.h"
+#include "geom/bvh.h"
+#include "geom/closest_point.h"
+#include "geom/mesh_metrics.h"
+#include "geom/ray_cast.h"
+#include "io/gltf_reader.h"
+#include "io/mesh_reader.h"
+#include "io/obj_reader.h"
+#include "ivy/growth.h"
+#include "ivy/ivy_mesh.h"
+#include "ivy/ivy_params.h"
+#include "ivy/ivy_report.h"
+#include "ivy/ivy_state.h"
+#include "ivy/lstring.h"
+#include "ivy/scenes.h"
+#include "params/param_json.h"
+
+namespace niwa {
+namespace {
+
+using nlohmann::json;
+using nlohmann::ordered_json;
+using Clock = std::chrono::steady_clock;
+
+double Ms(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+json Vec(const glm::dvec3& v) { return json::array({v.x, v.y, v.z}); }
+
+std::string Dump(const ordered_json& j) {
+  // Errors and notices may echo hostile text: replace bytes that are not UTF-8.
+  return j.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+// Flat float views of a TriMesh's vectors (glm::vec3 is three packed floats).
+struct FlatMesh {
+  std::vector<float> positions, normals, birth;
+  std::vector<uint32_t> indices;
+};
+
+FlatMesh Flatten(const geom::TriMesh& mesh) {
+  FlatMesh out;
+  out.positions.reserve(mesh.positions.size() * 3);
+  for (const glm::vec3& p : mesh.positions)
+    out.positions.insert(out.positions.end(), {p.x, p.y, p.z});
+  out.normals.reserve(mesh.normals.size() * 3);
+  for (const glm::vec3& n : mesh.normals) out.normals.insert(out.normals.end(), {n.x, n.y, n.z});
+  out.indices = mesh.indices;
+  if (const geom::VertexAttribute* birth = mesh.FindAttribute("birth_step"))
+    out.birth = birth->values;
+  return out;
+}
+
+// Per-vertex normals of a support without them: each vertex gets its triangles' face normal
+// (the readers never share vertices across primitives; shared vertices get the area-weighted sum).
+std::vector<float> FaceNormals(const geom::TriMesh& mesh) {
+  std::vector<glm::vec3> sum(mesh.positions.size(), glm::vec3(0.0f));
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    const uint32_t a = mesh.indices[3 * t], b = mesh.indices[3 * t + 1],
+                   c = mesh.indices[3 * t + 2];
+    const glm::vec3 n =
+        glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+    sum[a] += n;
+    sum[b] += n;
+    sum[c] += n;
+  }
+  std::vector<float> out;
+  out.reserve(sum.size() * 3);
+  for (const glm::vec3& n : sum) {
+    const float l = std::sqrt(glm::dot(n, n));
+    const glm::vec3 u = l > 0 ? n / l : glm::vec3(0, 1, 0);
+    out.insert(out.end(), {u.x, u.y, u.z});
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string IvyParamTableJson() { return ParamTableJson(IvyTable()); }
+
+std::string IvyPresetsJson() {
+  ordered_json out = ordered_json::array();
+  for (const std::string& name : IvyPresetNames()) {
+    ordered_json j;
+    j["name"] = name;
+    ordered_json overrides = ordered_json::object();
+    for (const auto& [key, value] : IvyPresetOverrides(name)) overrides[key] = value;
+    j["overrides"] = overrides;
+    j["params"] = ordered_json::parse(ParamsToJson(*IvyPreset(name), -1));
+    out.push_back(std::move(j));
+  }
+  return out.dump();
+}
+
+std::string IvyScenesJson() {
+  ordered_json out = ordered_json::array();
+  for (const std::string& name : ivy::IvySceneNames()) {
+    Result<ivy::IvyScene> s = ivy::MakeIvyScene(name);
+    if (!s.ok()) continue;
+    ordered_json seeds = ordered_json::array();
+    for (const ivy::NamedSeed& seed : s->seeds)
+      seeds.push_back({{"name", seed.name}, {"pos", Vec(seed.pos)}});
+    out.push_back({{"name", name},
+                   {"description", s->description},
+                   {"free", s->free},
+                   {"triangles", s->mesh.triangle_count()},
+                   {"seeds", seeds}});
+  }
+  return out.dump();
+}
+
+// {preset, seed, steps, scene, seed_points, params} of a state.
+ordered_json IvyStateObject(const ivy::IvyState& state) {
+  ordered_json j;
+  j["preset"] = state.preset;
+  j["seed"] = state.seed;
+  j["steps"] = state.steps;
+  j["scene"] = state.scene;
+  j["seed_points"] = ivy::FormatSeedPoints(state.seed_points);
+  j["params"] = ordered_json::parse(ParamsToJson(state.params, -1));
+  return j;
+}
+
+// {state, notices}: the hash read as the CLI's --url reads it (bad values clamped or dropped, each
+// with a notice).
+std::string IvyDecodeHash(const std::string& hash) {
+  ivy::IvyState state;
+  std::vector<std::string> notices;
+  ivy::ApplyIvyHash(hash, "", &state, &notices);
+  ordered_json out;
+  out["state"] = IvyStateObject(state);
+  out["notices"] = notices;
+  return Dump(out);
+}
+
+// {hash} or {error} of a state JSON.
+std::string IvyEncodeHash(const std::string& state_json) {
+  ivy::IvyState state;
+  ordered_json out;
+  std::string error = ivy::ApplyIvyStateJson(state_json, &state).Line();
+  if (error.empty()) {
+    out["hash"] = ivy::EncodeIvyHash(state);
+  } else {
+    out["error"] = error;
+  }
+  return Dump(out);
+}
+
+class IvyLab {
+ public:
+  // A built-in scene: "" or one error line ("scene: 'x' is unknown; must be one of ...").
+  std::string loadScene(const std::string& name) {
+    Result<ivy::IvyScene> s = ivy::MakeIvyScene(name);
+    if (!s.ok()) return Status::Error("scene", s.status().message()).Line();
+    const auto t0 = Clock::now();
+    scene_ = std::move(s).value();
+    mesh_name_.clear();
+    attach_ = geom::TriMesh{};
+    obstacles_ = 0;
+    Prepare();
+    ms_bvh_ = Ms(t0, Clock::now());
+    return "";
+  }
+
+  // A dropped .glb/.gltf/.obj (bytes; Draco already decoded): "" or one error line naming it.
+  std::string loadMesh(const std::string& bytes, const std::string& name) {
+    io::MeshReadStats read;
+    const bool obj = name.size() >= 4 && (name.compare(name.size() - 4, 4, ".obj") == 0 ||
+                                          name.compare(name.size() - 4, 4, ".OBJ") == 0);
+    Result<geom::TriMesh> mesh =
+        obj ? io::ReadObjMesh(bytes, name, &read) : io::ReadGltfMesh(bytes, name, "", &read);
+    if (!mesh.ok()) return mesh.status().Line();
+    Status valid = geom::ValidateMesh(*mesh, name);
+    if (!valid.ok()) return valid.Line();
+    const auto t0 = Clock::now();
+    scene_ = ivy::IvyScene{};
+    scene_.name = name;
+    scene_.mesh = std::move(mesh).value();
+    mesh_name_ = name;
+    attach_ = ivy::IvyAttachTriangles(scene_.mesh, read.materials, &obstacles_);
+    Prepare();
+    // A default seed, so a dropped mesh grows at once: the surface point nearest to a point in
+    // front of the mesh (+z) at a tenth of its height (Grow lifts it to d/2 off that face).
+    const geom::TriMesh& seedable = obstacles_ > 0 ? attach_ : scene_.mesh;
+    const geom::Bvh& seed_bvh = obstacles_ > 0 ? attach_bvh_ : bvh_;
+    if (seedable.triangle_count() > 0) {
+      const geom::Bounds3 b = geom::MeshBounds(seedable);
+      const glm::vec3 size = b.max - b.min;
+      const glm::vec3 probe(0.5f * (b.min.x + b.max.x), b.min.y + 0.1f * size.y,
+                            b.max.z + std::max({size.x, size.y, size.z}));
+      geom::ClosestHit hit =
+          geom::ClosestPoint(seedable, seed_bvh, probe, std::numeric_limits<float>::infinity());
+      if (hit.found) scene_.seeds.push_back({"front", glm::dvec3(hit.point)});
+    }
+    ms_bvh_ = Ms(t0, Clock::now());
+    return "";
+  }
+
+  // {name, dropped, free, triangles, obstacles, bounds: {min, max}, seeds: [{name, pos}], ms_bvh}.
+  std::string supportJson() const {
+    ordered_json j;
+    j["name"] = scene_.name;
+    j["dropped"] = !mesh_name_.empty();
+    j["free"] = scene_.free;
+    j["triangles"] = scene_.mesh.triangle_count();
+    j["obstacles"] = obstacles_;
+    const geom::Bounds3 b = geom::MeshBounds(scene_.mesh);
+    if (scene_.mesh.triangle_count() > 0) {
+      j["bounds"] = {{"min", {b.min.x, b.min.y, b.min.z}}, {"max", {b.max.x, b.max.y, b.max.z}}};
+    } else {
+      j["bounds"] = nullptr;
+    }
+    ordered_json seeds = ordered_json::array();
+    for (const ivy::NamedSeed& seed : scene_.seeds)
+      seeds.push_back({{"name", seed.name}, {"pos", Vec(seed.pos)}});
+    j["seeds"] = seeds;
+    j["ms_bvh"] = ms_bvh_;
+    return Dump(j);
+  }
+
+  // Grows the state (JSON, as ApplyIvyStateJson reads it) on the support loaded: "" or one error
+  // line. Seed points: the state's, else the scene's first named seed (a dropped mesh needs one).
+  std::string grow(const std::string& state_json) {
+    const auto t0 = Clock::now();
+    grown_ = false;
+    ivy::IvyState state;
+    Status s = ivy::ApplyIvyStateJson(state_json, &state);
+    if (s.ok()) s = ValidateIvyParams(state.params);
+    if (!s.ok()) return s.Line();
+    std::vector<glm::dvec3> seeds = state.seed_points;
+    if (seeds.empty() && !scene_.seeds.empty()) seeds.push_back(scene_.seeds[0].pos);
+    if (seeds.empty()) {
+      return Status::Error("at",
+                           "a dropped mesh needs a seed point; click its surface to place one")
+          .Line();
+    }
+    ivy::Support support;
+    if (!scene_.free) {
+      support = {&scene_.mesh, &bvh_, ivy::Accel::kBvh};
+      if (obstacles_ > 0) {
+        support.attach_mesh = &attach_;
+        support.attach_bvh = &attach_bvh_;
+      }
+    }
+    log_ = ivy::GrowLog{};
+    Result<ivy::IvyModel> model =
+        ivy::Grow(support, seeds, state.params, state.steps, state.seed, &log_);
+    if (!model.ok()) return model.status().Line();
+    state_ = state;
+    model_ = std::move(model).value();
+    const auto t1 = Clock::now();
+    meshes_ = ivy::BuildIvyMeshes(model_, state_.params);
+    stems_ = Flatten(meshes_.stems);
+    leaves_ = Flatten(meshes_.leaves);
+    suckers_ = Flatten(meshes_.suckers);
+    buds_ = FlatMesh{};
+    for (const ivy::Bud& b : model_.buds) {
+      buds_.positions.insert(
+          buds_.positions.end(),
+          {static_cast<float>(b.pos.x), static_cast<float>(b.pos.y), static_cast<float>(b.pos.z)});
+      buds_.normals.push_back(static_cast<float>(static_cast<int>(b.kind)));
+      buds_.birth.push_back(static_cast<float>(b.born_step));
+    }
+    timings_ = {};
+    timings_.ms_mesh = Ms(t1, Clock::now());
+    timings_.ms_bvh = ms_bvh_;
+    timings_.ms_rules = log_.ms_rules;
+    timings_.ms_search = log_.ms_search;
+    timings_.ms = Ms(t0, Clock::now()) + ms_bvh_;
+    glb_.clear();
+    grown_ = true;
+    return "";
+  }
+
+  // The --stats object of the last grow (as `niwa ivy grow --stats`), or "{}".
+  std::string statsJson() const {
+    if (!grown_) return "{}";
+    ivy::IvyStats stats = ivy::MeasureIvy(model_, log_, scene_.free ? nullptr : &scene_.mesh,
+                                          state_.params, obstacles_ > 0 ? &attach_ : nullptr);
+    return ivy::IvyStatsJson(stats, log_, model_, timings_);
+  }
+
+  std::string hash() const { return grown_ ? ivy::EncodeIvyHash(state_) : ""; }
+  int steps() const { return grown_ ? state_.steps : 0; }
+  std::string modelJson() const {
+    return grown_ ? ivy::IvyModelJson(model_, state_.params, state_.seed, state_.steps) + "\n" : "";
+  }
+  std::string lstring() const { return grown_ ? ivy::PrintLString(model_) : ""; }
+
+  // The .glb of the last grow (with the support when asked): "" or one error line.
+  std::string buildGlb(bool with_support) {
+    if (!grown_) return "glb: nothing grown yet";
+    Result<std::vector<unsigned char>> glb =
+        ivy::WriteIvyGlb(model_, state_.params, state_.seed, state_.steps,
+                         with_support && !scene_.free ? &scene_.mesh : nullptr);
+    if (!glb.ok()) return glb.status().Line();
+    glb_ = std::move(glb).value();
+    return "";
+  }
+
+  // The first support face hit by the ray: {hit, point, normal, distance, triangle}.
+  std::string rayCast(double ox, double oy, double oz, double dx, double dy, double dz) const {
+    ordered_json j;
+    j["hit"] = false;
+    if (!scene_.free && scene_.mesh.triangle_count() > 0 &&
+        std::isfinite(ox + oy + oz + dx + dy + dz)) {
+      geom::RayHit h =
+          geom::FirstHit(scene_.mesh, bvh_, glm::vec3(ox, oy, oz), glm::vec3(dx, dy, dz),
+                         std::numeric_limits<float>::infinity());
+      if (h.hit) {
+        j["hit"] = true;
+        j["point"] = {h.point.x, h.point.y, h.point.z};
+        j["normal"] = {h.normal.x, h.normal.y, h.normal.z};
+        j["distance"] = h.distance;
+        j["triangle"] = h.triangle;
+      }
+    }
+    return Dump(j);
+  }
+
+  emscripten::val buffers(const std::string& group) const {
+    NamedBuffers out;
+    const auto part = [&out](const FlatMesh& m) {
+      out.Add("positions", m.positions)
+          .Add("normals", m.normals)
+          .Add("indices", m.indices)
+          .Add("birth", m.birth);
+    };
+    if (group == "support") {
+      out.Add("positions", support_.positions)
+          .Add("normals", support_.normals)
+          .Add("indices", support_.indices);
+    } else if (group == "stems") {
+      part(stems_);
+    } else if (group == "leaves") {
+      part(leaves_);
+    } else if (group == "suckers") {
+      part(suckers_);
+    } else if (group == "buds") {
+      out.Add("positions", buds_.positions).Add("kind", buds_.normals).Add("birth", buds_.birth);
+    } else if (group == "glb") {
+      out.Add("bytes", glb_);
+    } else {
+      return emscripten::val::null();
+    }
+    return out.ToJs();
+  }
+
+ private:
+  // The BVHs and the flat support buffers of the scene just loaded; forgets the last ivy.
+  void Prepare() {
+    bvh_ = scene_.free ? geom::Bvh{} : geom::Bvh::Build(scene_.mesh);
+    attach_bvh_ = obstacles_ > 0 ? geom::Bvh::Build(attach_) : geom::Bvh{};
+    support_ = Flatten(scene_.mesh);
+    if (support_.normals.size() != support_.positions.size())
+      support_.normals = FaceNormals(scene_.mesh);
+    grown_ = false;
+    model_ = ivy::IvyModel{};
+    stems_ = leaves_ = suckers_ = buds_ = FlatMesh{};
+    glb_.clear();
+  }
+
+  ivy::IvyScene scene_;
+  std::string mesh_name_;
+  geom::TriMesh attach_;
+  std::size_t obstacles_ = 0;
+  geom::Bvh bvh_, attach_bvh_;
+  double ms_bvh_ = 0;
+  FlatMesh support_;
+  bool grown_ = false;
+  ivy::IvyState state_;
+  ivy::IvyModel model_;
+  ivy::GrowLog log_;
+  ivy::IvyTimings timings_;
+  ivy::IvyMeshes meshes_;
+  FlatMesh stems_, leaves_, suckers_;
+  FlatMesh buds_;  // positions, kind (in normals), birth
+  std::vector<unsigned char> glb_;
+};
+
+}  // namespace niwa
+
+EMSCRIPTEN_BINDINGS(niwa_ivy) {
+  using namespace emscripten;
+  function("ivyParamTableJson", &niwa::IvyParamTableJson);
+  function("ivyPresetsJson", &niwa::IvyPresetsJson);
+  function("ivyScenesJson", &niwa::IvyScenesJson);
+  function("ivyDecodeHash", &niwa::IvyDecodeHash);
+  function("ivyEncodeHash", &niwa::IvyEncodeHash);
+  class_<niwa::IvyLab>("IvyLab")
+      .constructor<>()
+      .function("loadScene", &niwa::IvyLab::loadScene)
+      .function("loadMesh", &niwa::IvyLab::loadMesh)
+      .function("supportJson", &niwa::IvyLab::supportJson)
+      .function("grow", &niwa::IvyLab::grow)
+      .function("statsJson", &niwa::IvyLab::statsJson)
+      .function("hash", &niwa::IvyLab::hash)
+      .function("steps", &niwa::IvyLab::steps)
+      .function("modelJson", &niwa::IvyLab::modelJson)
+      .function("lstring", &niwa::IvyLab::lstring)
+      .function("buildGlb", &niwa::IvyLab::buildGlb)
+      .function("rayCast", &niwa::IvyLab::rayCast)
+      .function("buffers", &niwa::IvyLab::buffers);
+}

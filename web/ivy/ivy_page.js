@@ -1,0 +1,439 @@
+// The ivy study's page (public/ivy.html, main thread; paper 004, Shindo & Sakamoto): opens with
+// cubes4 grown, builds the panel from the ivy table, keeps the state in location.hash through the
+// ivy hash codec (the same text `niwa ivy grow --url` reads: preset, seed, steps, scene, at=
+// seed points, changed parameters), picks a built-in scene or takes a dropped .glb/.gltf/.obj
+// (Draco decoded here by web/mesh/mesh_import.js), adds a seed point where the surface is clicked,
+// replays the growth with the step scrubber (the vertices' birth steps; nothing regrows), and
+// downloads .glb, .json and .lsys. Growth runs in the worker (web/worker/ivy_handler.js).
+// Does not: parse or check states (the core does; its one line is shown beside its field), draw
+// directly (ivy_renderer.js), or grow on trees (the CLI's --tree-preset does).
+import { OrbitCamera } from '../gl/orbit_camera.js';
+import { FrameLoop } from '../gl/frame_loop.js';
+import { dracoPrimitiveCount, importMesh, isGlb, parseGlb } from '../mesh/mesh_import.js';
+import { FileDrop, extensionOf } from '../shell/file_drop.js';
+import { HashHistory } from '../shell/hash_history.js';
+import { ParamPanel } from '../shell/param_panel.js';
+import { StepScrubber } from '../shell/step_scrubber.js';
+import { Notices, copyLink, download, mountStudyNav } from '../shell/study_page.js';
+import { bumpHook, setHooks } from '../shell/test_hooks.js';
+import { WorkerClient } from '../shell/worker_client.js';
+import { IvyRenderer } from './ivy_renderer.js';
+
+const $ = (id) => document.getElementById(id);
+const ui = {
+  stage: $('stage'), canvas: $('view'), stats: $('stats'), progress: $('progress'), scene: $('scene'),
+  sceneHelp: $('scene-help'), meshFile: $('mesh-file'), preset: $('preset'), seed: $('seed'), steps: $('steps'),
+  reset: $('reset'), seeds: $('seeds'), clickSeeds: $('click-seeds'), clearSeeds: $('clear-seeds'),
+  showLeaves: $('show-leaves'), showSuckers: $('show-suckers'), showSupport: $('show-support'), showSeeds: $('show-seeds'), showBuds: $('show-buds'),
+  resetView: $('reset-view'), copyLink: $('copy-link'), downloadGlb: $('download-glb'), glbSupport: $('glb-support'),
+  downloadJson: $('download-json'), downloadLsys: $('download-lsys'), shareStatus: $('share-status'), params: $('params'),
+  play: $('play'), step: $('step'), stepText: $('step-text'),
+};
+mountStudyNav($('studies'), 'ivy');
+
+// webgl: drawing problems; error: the core's line for the current state; hash: decoding notices;
+// mesh: the dropped mesh (not part of the link); drop: refused files.
+const notices = new Notices($('notice'), ['webgl', 'error', 'hash', 'mesh', 'drop']);
+const worker = new WorkerClient('ivy', {
+  study: 'ivy',
+  onFailure: (text) => {
+    notices.set('error', text);
+    setHooks({ status: 'error' });
+  },
+});
+
+// ---------------------------------------------------------------- rendering
+const camera = new OrbitCamera();
+let renderer = null;
+let ivySerial = 0;
+const frames = new FrameLoop(() => {
+  const drawn = renderer.render(camera);
+  const counts = renderer.drawnCounts();
+  setHooks({
+    drawnSerial: ivySerial, drawnStep: scrubber.value, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls,
+    drawnStems: counts.stems, drawnLeaves: counts.leaves, drawnSuckers: counts.suckers,
+  });
+});
+const requestFrame = () => { if (renderer) frames.request(); };
+
+const scrubber = new StepScrubber({ range: ui.step, text: ui.stepText, play: ui.play }, (k) => {
+  renderer?.setStep(k);
+  setHooks({ stepShown: k });
+  requestFrame();
+});
+
+async function startRenderer() {
+  try {
+    renderer = new IvyRenderer(ui.canvas);
+    await renderer.init();
+    camera.attach(ui.canvas, requestFrame);
+    new ResizeObserver(requestFrame).observe(ui.canvas);
+    ui.canvas.addEventListener('webglcontextlost', (e) => {
+      e.preventDefault();
+      notices.set('webgl', 'The WebGL2 context was lost; reload the page to draw again.');
+    });
+    requestFrame();
+  } catch (e) {
+    renderer = null;
+    setHooks({ drawing: 'off' });
+    notices.set('webgl', `Cannot draw: ${e.message}`);
+  }
+}
+
+// ---------------------------------------------------------------- state
+let panel = null;
+let presets = [];
+let scenes = [];
+let support = null;       // the worker's description of the current support
+let seedPoints = [];      // [[x, y, z], ...] in scene units; [] = the scene's first named seed
+let useMesh = false;      // grow on the dropped mesh, not a built-in scene
+let meshName = '';
+let latestId = 0;
+let commitNext = false;   // the next grown state is a new history entry
+let frameNext = true;
+let debounceTimer = 0;
+
+const history_ = new HashHistory({
+  onRestore: () => worker.request('decode', { hash: location.hash }, { done: ['decoded'] }),
+});
+
+const numberOr = (input) => (input.value.trim() !== '' && Number.isFinite(Number(input.value)) ? Number(input.value) : input.value);
+const formatPoint = (p) => p.map((x) => String(Number(x.toPrecision(7)))).join(',');
+
+function currentState() {
+  const state = {
+    preset: ui.preset.value, seed: numberOr(ui.seed), steps: numberOr(ui.steps),
+    seed_points: seedPoints.map(formatPoint).join(';'), params: panel.values(),
+  };
+  if (!useMesh) state.scene = ui.scene.value;
+  return state;
+}
+
+function applyState(state) {
+  ui.preset.value = state.preset;
+  ui.seed.value = String(state.seed);
+  ui.steps.value = String(state.steps);
+  panel.setValues(state.params);
+  if (state.scene) {
+    ui.scene.value = state.scene;
+    useMesh = false;
+  }
+  seedPoints = String(state.seed_points || '').split(';').filter(Boolean).map((p) => p.split(',').map(Number));
+  showScene();
+  showSeeds();
+}
+
+function showScene() {
+  const scene = scenes.find((s) => s.name === ui.scene.value);
+  ui.sceneHelp.textContent = useMesh ? `Growing on the dropped mesh ${meshName}.` : scene ? scene.description : '';
+}
+
+function showSeeds() {
+  const named = support?.seeds?.[0];
+  ui.seeds.textContent = seedPoints.length
+    ? `${seedPoints.length} seed point${seedPoints.length > 1 ? 's' : ''}: ${seedPoints.map((p) => `(${formatPoint(p)})`).join(' ')}`
+    : named ? `The scene's seed '${named.name}' (${formatPoint(named.pos)}). Click the surface to place your own.`
+      : 'Click the surface to place a seed point.';
+  renderer?.setSeeds(seedPoints.length ? seedPoints : named ? [named.pos] : []);
+  requestFrame();
+}
+
+// Sends the state to grow; commit: a new history entry once it has grown.
+function sendUpdate(commit) {
+  clearTimeout(debounceTimer);
+  commitNext = commitNext || commit;
+  setHooks({ status: 'growing' });
+  const request = worker.request('update', { state: currentState(), useMesh }, { group: 'ivy', done: ['ivy'] });
+  latestId = request.id;
+  bumpHook('growRequests');
+  return request;
+}
+
+function scheduleUpdate() {
+  notices.set('hash', []);
+  clearTimeout(debounceTimer);
+  setHooks({ status: 'pending' });
+  debounceTimer = setTimeout(() => sendUpdate(true), 250);
+}
+
+// ---------------------------------------------------------------- errors beside their fields
+const BASIC_FIELDS = { seed: 'seed-error', steps: 'steps-error', at: 'at-error', seed_points: 'at-error' };
+
+function fieldErrorElement(key) {
+  if (BASIC_FIELDS[key]) return $(BASIC_FIELDS[key]);
+  const input = document.getElementById(`param-${key}`);
+  const row = input?.closest('.field');
+  if (!row) return null;
+  let line = row.querySelector('.field-error');
+  if (!line) {
+    line = document.createElement('p');
+    line.className = 'field-error';
+    line.setAttribute('role', 'alert');
+    line.hidden = true;
+    row.append(line);
+  }
+  return line;
+}
+
+// Shows `message` (a core error line "key: ...") beside its field, clearing every other one.
+function showFieldError(message) {
+  for (const line of document.querySelectorAll('.field-error')) {
+    line.hidden = true;
+    line.textContent = '';
+  }
+  panel?.markError(message || '');
+  if (!message) return;
+  const key = /^([A-Za-z_][A-Za-z_0-9]*):/.exec(message)?.[1];
+  const line = key ? fieldErrorElement(key) : null;
+  if (!line) return;
+  line.textContent = message;
+  line.hidden = false;
+  setHooks({ fieldError: key });
+}
+
+// ---------------------------------------------------------------- worker replies
+worker.on('ready', (msg) => {
+  presets = msg.presets;
+  scenes = msg.scenes;
+  for (const p of presets) ui.preset.append(new Option(p.name, p.name));
+  for (const s of scenes) ui.scene.append(new Option(`${s.name} (${s.triangles} tris)`, s.name));
+  panel = new ParamPanel(ui.params, msg.paramTable, () => scheduleUpdate());
+  applyState(msg.decoded.state);
+  if (!msg.decoded.state.scene) ui.scene.value = 'cubes4';
+  notices.set('hash', msg.decoded.notices);
+  sendUpdate(false);
+});
+
+worker.on('decoded', (msg) => {
+  applyState(msg.state);
+  notices.set('hash', msg.notices);
+  sendUpdate(false);
+});
+
+worker.on('progress', (msg) => {
+  ui.progress.textContent = msg.text;
+});
+
+worker.on('support', (msg) => {
+  support = msg.support;
+  if (renderer) {
+    renderer.clearIvy();
+    renderer.setSupport(msg.buffers, support.bounds);
+    frameNext = true;
+  }
+  notices.set('mesh', support.dropped
+    ? `Growing on the dropped mesh ${support.name} (${support.triangles} triangles${support.obstacles ? `, ${support.obstacles} obstacle-only` : ''}); a dropped mesh is not part of the link.`
+    : '');
+  setHooks({ supportName: support.name, supportTriangles: support.triangles, supportDropped: support.dropped });
+  showSeeds();
+  if (msg.id === meshRequest) {  // a dropped mesh: grow on it once it is loaded
+    ui.progress.textContent = '';
+    fitPresetToMesh();
+    // Its default seed goes into the state, so the link (with the mesh file) regrows this ivy.
+    if (!seedPoints.length && support.seeds?.length) seedPoints = [support.seeds[0].pos];
+    showSeeds();
+    sendUpdate(true);
+  }
+});
+
+// The built-in scenes are in px (L = 50 on a scene 1200 px high); assets come in any unit. When
+// L is far from the dropped mesh's size (over a quarter of it, or under 1/400), the length rows
+// (those the metric preset rescales: L, d, eps, r_tip, leaf_size, petiole) are set to the paper's
+// values times extent / 1200, so the ivy covers the mesh as it covers cubes4; a notice says so.
+function fitPresetToMesh() {
+  const b = support?.bounds;
+  if (!b) return;
+  const extent = Math.max(b.max[0] - b.min[0], b.max[1] - b.min[1], b.max[2] - b.min[2]);
+  const L = Number(panel.values().L);
+  const paper = presets.find((p) => p.name === 'paper');
+  const metric = presets.find((p) => p.name === 'metric');
+  if (!paper || !metric || !(extent > 0) || (L <= extent / 4 && L >= extent / 400)) return;
+  const factor = Number((extent / 1200).toPrecision(3));
+  const scaled = {};
+  for (const key of Object.keys(metric.overrides)) scaled[key] = Number((paper.params[key] * factor).toPrecision(4));
+  panel.setValues(scaled);
+  notices.set('drop', `${support.name} is ${Number(extent.toPrecision(3))} units across: ${Object.keys(scaled).join(', ')} set to the paper's values × ${factor} (L = ${scaled.L}).`);
+}
+
+worker.on('ivy', (msg) => {
+  if (msg.id !== latestId) return;
+  const s = msg.stats;
+  notices.set('error', '');
+  showFieldError('');
+  ui.progress.textContent = '';
+  ui.stats.textContent = `internodes ${s.internodes} · leaves ${s.leaves} · laterals ${s.laterals} · buds A ${s.buds.A} D ${s.buds.D} Z ${s.buds.Z} · grown in ${s.ms.toFixed(1)} ms`;
+  if (renderer) {
+    renderer.setIvy(msg.mesh);
+    renderer.setBuds(msg.mesh.buds);
+    if (frameNext && renderer.bounds()) {
+      camera.reset(renderer.bounds());
+      frameNext = false;
+    }
+  }
+  scrubber.reset(msg.steps);
+  if (commitNext) history_.commit(msg.hash, `#${msg.hash}`);
+  else {
+    history_.base = msg.hash;
+    history_.replace(`#${msg.hash}`);
+  }
+  commitNext = false;
+  ivySerial += 1;
+  setHooks({
+    status: 'ready', error: '', meshError: '', ivySerial, internodes: s.internodes, leaves: s.leaves, laterals: s.laterals,
+    steps: msg.steps, stats: JSON.stringify(s), hash: msg.hash,
+  });
+  requestFrame();
+});
+
+worker.on('picked', (msg) => {
+  if (!msg.hit.hit) {
+    ui.shareStatus.textContent = 'That click missed the support.';
+    return;
+  }
+  // Half the sucker length off the face along its normal (the seed must be within d of a face).
+  const d = Number(panel.values().d);
+  const lift = Number.isFinite(d) && d > 0 ? d / 2 : 0;
+  seedPoints.push(msg.hit.point.map((x, i) => x + lift * msg.hit.normal[i]));
+  showSeeds();
+  bumpHook('seedClicks');
+  scheduleUpdate();
+});
+
+const exportIds = new Set();
+worker.on('export', (msg) => {
+  if (!exportIds.delete(msg.id)) return;
+  const type = { glb: 'model/gltf-binary', json: 'application/json', lsys: 'text/plain' }[msg.format];
+  download(new Blob([msg.bytes], { type }), `ivy.${msg.format}`, ui.shareStatus);
+  setHooks({ exported: `${msg.format}:${msg.bytes.byteLength}` });
+});
+
+let meshRequest = 0;
+worker.on('error', (msg) => {
+  if (exportIds.delete(msg.id)) {
+    ui.shareStatus.textContent = `Export failed: ${msg.message}`;
+    return;
+  }
+  if (msg.id === meshRequest) {
+    notices.set('mesh', msg.message);
+    ui.progress.textContent = '';
+    setHooks({ status: 'error', meshError: msg.message });
+    return;
+  }
+  if (msg.id !== undefined && msg.id !== latestId) return;
+  notices.set('error', msg.message);
+  showFieldError(msg.message);
+  ui.progress.textContent = '';
+  setHooks({ status: 'error', error: msg.message });
+});
+
+// ---------------------------------------------------------------- dropped meshes
+let dracoModule = null;
+function dracoDecoder() {
+  if (!dracoModule) {
+    dracoModule = new Promise((resolve, reject) => {
+      const script = document.createElement('script');
+      script.src = '/vendor/draco3d/draco_decoder_nodejs.js';
+      script.onload = () => globalThis.DracoDecoderModule({
+        locateFile: (file) => `/vendor/draco3d/${file}`,
+      }).then(resolve, reject);
+      script.onerror = () => reject(new Error('the Draco decoder could not be loaded'));
+      document.head.append(script);
+    });
+  }
+  return dracoModule;
+}
+
+async function loadMeshFile(file) {
+  notices.set('drop', '');
+  ui.progress.textContent = `reading ${file.name}`;
+  try {
+    let bytes = new Uint8Array(await file.arrayBuffer());
+    if (extensionOf(file.name) !== '.obj') {
+      // Draco primitives are decoded here (the WASM core cannot link Draco); a file that is not
+      // even glTF goes to the core as it is, which names what is wrong with it.
+      let json = null;
+      try {
+        json = isGlb(bytes) ? parseGlb(bytes).json : JSON.parse(new TextDecoder().decode(bytes));
+      } catch {
+        json = null;
+      }
+      if (json && dracoPrimitiveCount(json) > 0) bytes = importMesh(bytes, { draco: await dracoDecoder() }).bytes;
+    }
+    meshName = file.name;
+    useMesh = true;
+    seedPoints = [];
+    showScene();
+    const request = worker.request('mesh', { name: file.name, bytes: bytes.buffer }, { group: 'mesh', done: ['support'] });
+    meshRequest = request.id;
+    bumpHook('meshDrops');
+  } catch (e) {
+    ui.progress.textContent = '';
+    notices.set('drop', `${file.name}: ${e.message}`);
+    setHooks({ status: 'error', meshError: e.message });
+  }
+}
+
+new FileDrop({
+  target: ui.stage, input: ui.meshFile, accept: ['.glb', '.gltf', '.obj'],
+  onFiles: (files) => loadMeshFile(files[0]),
+  onRefuse: (line) => notices.set('drop', line),
+});
+
+// ---------------------------------------------------------------- controls
+// A click (not a drag) on the view adds a seed point where the ray meets the support.
+let down = null;
+ui.canvas.addEventListener('pointerdown', (e) => { down = { x: e.clientX, y: e.clientY, button: e.button, shift: e.shiftKey }; });
+ui.canvas.addEventListener('pointerup', (e) => {
+  if (!down || !renderer || !ui.clickSeeds.checked) return;
+  const moved = Math.hypot(e.clientX - down.x, e.clientY - down.y);
+  const plain = down.button === 0 && !down.shift;
+  down = null;
+  if (moved > 4 || !plain) return;
+  const rect = ui.canvas.getBoundingClientRect();
+  const ray = renderer.rayAt(camera, e.clientX - rect.left, e.clientY - rect.top);
+  worker.request('pick', ray, { done: ['picked'] });
+});
+
+ui.scene.addEventListener('change', () => {
+  useMesh = false;
+  seedPoints = [];
+  showScene();
+  frameNext = true;
+  scheduleUpdate();
+});
+ui.preset.addEventListener('change', () => {
+  const preset = presets.find((p) => p.name === ui.preset.value);
+  if (preset) panel.setValues(preset.params);
+  scheduleUpdate();
+});
+ui.seed.addEventListener('input', () => scheduleUpdate());
+ui.steps.addEventListener('input', () => scheduleUpdate());
+ui.reset.addEventListener('click', () => ui.preset.dispatchEvent(new Event('change')));
+ui.clearSeeds.addEventListener('click', () => {
+  seedPoints = [];
+  showSeeds();
+  scheduleUpdate();
+});
+for (const [input, part] of [[ui.showLeaves, 'leaves'], [ui.showSuckers, 'suckers'], [ui.showSupport, 'support'], [ui.showSeeds, 'seeds'], [ui.showBuds, 'buds']]) {
+  input.addEventListener('change', () => {
+    renderer?.setVisible({ [part]: input.checked });
+    requestFrame();
+  });
+}
+ui.resetView.addEventListener('click', () => {
+  if (renderer?.bounds()) camera.reset(renderer.bounds());
+  requestFrame();
+});
+ui.copyLink.addEventListener('click', () => copyLink(ui.shareStatus));
+const exportAs = (format) => {
+  const { id } = worker.request('export', { format, withSupport: ui.glbSupport.checked }, { group: `export-${format}`, done: ['export'] });
+  exportIds.add(id);
+};
+ui.downloadGlb.addEventListener('click', () => exportAs('glb'));
+ui.downloadJson.addEventListener('click', () => exportAs('json'));
+ui.downloadLsys.addEventListener('click', () => exportAs('lsys'));
+
+// ---------------------------------------------------------------- start
+setHooks({ status: 'loading' });
+await startRenderer();
+worker.request('init', { hash: location.hash }, { done: ['ready'] });

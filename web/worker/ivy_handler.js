@@ -1,0 +1,122 @@
+// The ivy study's worker handler (paper 004): one IvyLab (web/bindings/ivy_bindings.cpp) per
+// client holds its support (a built-in scene, or a dropped mesh sent once with 'mesh') and the last
+// ivy grown on it. An 'update' loads the state's scene when it changed, grows, and sends the stats
+// and the stems, leaves and suckers (with their birth steps, so the page replays the growth
+// without regrowing); 'pick' casts a ray on the support (a click places a seed point); 'export'
+// builds .glb, .json or .lsys. Messages: web/worker/protocol.js.
+// Does not: load the module, route messages or catch errors (web/worker/worker.js does).
+import { takeBuffers } from './transfer.js';
+
+const yieldToEvents = () => new Promise((resolve) => setTimeout(resolve, 0));
+
+// ctx: {post(msg, transfer), isLatest(client, id)} from the router.
+export function createHandler(Module, ctx) {
+  const { post, isLatest } = ctx;
+  const paramTable = JSON.parse(Module.ivyParamTableJson());
+  const presets = JSON.parse(Module.ivyPresetsJson());
+  const scenes = JSON.parse(Module.ivyScenesJson());
+  const labs = new Map();  // client -> {lab, support: 'scene:<name>' | 'mesh:<name>' | null}
+
+  function labOf(client) {
+    if (!labs.has(client)) labs.set(client, { lab: new Module.IvyLab(), support: null });
+    return labs.get(client);
+  }
+
+  // Sends the support's description and triangles (once per support change).
+  function sendSupport(id, client, entry) {
+    const transfer = [];
+    const support = JSON.parse(entry.lab.supportJson());
+    const buffers = takeBuffers(entry.lab.buffers('support'), transfer);
+    post({ type: 'support', id, client, support, buffers }, transfer);
+  }
+
+  async function update(msg, client) {
+    const { id, state } = msg;
+    const entry = labOf(client);
+    const scene = typeof state?.scene === 'string' && state.scene ? state.scene : 'cubes4';
+    // A dropped mesh stays the support until the page asks for a built-in scene (state.scene set
+    // and msg.useMesh false).
+    const wantMesh = msg.useMesh === true && entry.support?.startsWith('mesh:');
+    if (!wantMesh && entry.support !== `scene:${scene}`) {
+      post({ type: 'progress', id, client, stage: 'scene', text: `loading scene ${scene}` });
+      const error = entry.lab.loadScene(scene);
+      if (error) {
+        post({ type: 'error', id, client, message: error });
+        return;
+      }
+      entry.support = `scene:${scene}`;
+      sendSupport(id, client, entry);
+    }
+    const grown = { ...state };
+    if (wantMesh) delete grown.scene;  // the dropped mesh is not a built-in scene
+    await yieldToEvents();
+    if (!isLatest(client, id)) return;
+    post({ type: 'progress', id, client, stage: 'grow', text: 'growing' });
+    const t0 = performance.now();
+    const error = entry.lab.grow(JSON.stringify(grown));
+    if (error) {
+      post({ type: 'error', id, client, message: error });
+      return;
+    }
+    const stats = JSON.parse(entry.lab.statsJson());
+    const transfer = [];
+    const mesh = {};
+    for (const part of ['stems', 'leaves', 'suckers', 'buds']) mesh[part] = takeBuffers(entry.lab.buffers(part), transfer);
+    post({ type: 'ivy', id, client, stats, mesh, steps: entry.lab.steps(), hash: entry.lab.hash(),
+      wallMs: performance.now() - t0 }, transfer);
+  }
+
+  // A dropped mesh (bytes, Draco already decoded by the page): becomes the client's support.
+  async function mesh(msg, client) {
+    const { id, name } = msg;
+    const entry = labOf(client);
+    post({ type: 'progress', id, client, stage: 'mesh', text: `reading ${name} and building its BVH` });
+    await yieldToEvents();
+    const error = entry.lab.loadMesh(new Uint8Array(msg.bytes), String(name));
+    if (error) {  // the lab keeps its old support when a read fails
+      post({ type: 'error', id, client, message: error });
+      return;
+    }
+    entry.support = `mesh:${name}`;
+    sendSupport(id, client, entry);
+  }
+
+  function pick(msg, client) {
+    const [ox, oy, oz] = msg.origin, [dx, dy, dz] = msg.direction;
+    const hit = JSON.parse(labOf(client).lab.rayCast(ox, oy, oz, dx, dy, dz));
+    post({ type: 'picked', id: msg.id, client, hit });
+  }
+
+  function exportIvy(msg, client) {
+    const { lab } = labOf(client);
+    const text = (s) => new TextEncoder().encode(s).buffer;
+    let bytes;
+    if (msg.format === 'glb') {
+      const error = lab.buildGlb(Boolean(msg.withSupport));
+      if (error) throw new Error(error);
+      const transfer = [];
+      bytes = takeBuffers(lab.buffers('glb'), transfer).bytes;
+    } else if (msg.format === 'json') {
+      bytes = text(lab.modelJson());
+    } else if (msg.format === 'lsys') {
+      bytes = text(lab.lstring());
+    } else {
+      throw new Error(`export: format '${String(msg.format).slice(0, 20)}' is unknown; must be glb, json or lsys`);
+    }
+    if (bytes.byteLength === 0) throw new Error('export: nothing grown yet');
+    post({ type: 'export', id: msg.id, client, format: msg.format, bytes }, [bytes]);
+  }
+
+  return {
+    superseding: ['update'],
+    ready: (msg) => ({ paramTable, presets, scenes, decoded: JSON.parse(Module.ivyDecodeHash(String(msg.hash || ''))) }),
+    messages: {
+      decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...JSON.parse(Module.ivyDecodeHash(String(msg.hash || ''))) }),
+      encode: (msg, client) => post({ type: 'encoded', id: msg.id, client, ...JSON.parse(Module.ivyEncodeHash(JSON.stringify(msg.state || {}))) }),
+      update,
+      mesh,
+      pick,
+      export: exportIvy,
+    },
+  };
+}
