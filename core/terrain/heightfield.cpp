@@ -1,4 +1,5 @@
-// Band distance-ratio heightfield and terrain statistics (see heightfield.h).
+// Band distance-ratio heightfield (segment grids, and the brute-force twin) and terrain statistics
+// (see heightfield.h).
 #include "terrain/heightfield.h"
 
 #include <algorithm>
@@ -7,22 +8,35 @@
 
 #include "math/det_math.h"
 #include "terrain/polygon.h"
+#include "terrain/segment_grid.h"
 
 namespace niwa::terrain {
 namespace {
 
-// Marks the cells whose centres lie inside the ring with `id` (even-odd spans per row).
-void Paint(const Ring& ring, int id, Heightfield* hf) {
+// Marks the cells whose centres lie inside the ring with `id` (even-odd spans per row; each edge
+// adds its crossing to the rows it spans only).
+void Paint(const Ring& ring, int id, Heightfield* hf, std::vector<std::vector<double>>* rows) {
   const std::size_t n = ring.size();
-  std::vector<double> xs;
-  for (int j = 0; j < hf->height; ++j) {
-    const double y = hf->y1 - (j + 0.5) * hf->cell;
-    xs.clear();
-    for (std::size_t k = 0; k < n; ++k) {
-      const Vec2& a = ring[k];
-      const Vec2& b = ring[(k + 1) % n];
-      if ((a.y > y) != (b.y > y)) xs.push_back(a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
+  rows->resize(static_cast<std::size_t>(hf->height));
+  int jlo = hf->height, jhi = -1;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec2& a = ring[k];
+    const Vec2& b = ring[(k + 1) % n];
+    // Rows j whose centre y = y1 − (j + ½)·cell has (a.y > y) != (b.y > y).
+    const double ylo = std::min(a.y, b.y), yhi = std::max(a.y, b.y);
+    const int j0 = std::max(0, static_cast<int>(std::floor((hf->y1 - yhi) / hf->cell - 0.5)));
+    const int j1 =
+        std::min(hf->height - 1, static_cast<int>(std::ceil((hf->y1 - ylo) / hf->cell - 0.5)));
+    for (int j = j0; j <= j1; ++j) {
+      const double y = hf->y1 - (j + 0.5) * hf->cell;
+      if ((a.y > y) == (b.y > y)) continue;
+      (*rows)[static_cast<std::size_t>(j)].push_back(a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
+      jlo = std::min(jlo, j);
+      jhi = std::max(jhi, j);
     }
+  }
+  for (int j = jlo; j <= jhi; ++j) {
+    std::vector<double>& xs = (*rows)[static_cast<std::size_t>(j)];
     std::sort(xs.begin(), xs.end());
     for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {
       const int i0 = std::max(0, static_cast<int>(std::ceil((xs[k] - hf->x0) / hf->cell - 0.5)));
@@ -30,14 +44,13 @@ void Paint(const Ring& ring, int id, Heightfield* hf) {
                               static_cast<int>(std::floor((xs[k + 1] - hf->x0) / hf->cell - 0.5)));
       for (int i = i0; i <= i1; ++i) hf->band[static_cast<std::size_t>(j) * hf->width + i] = id;
     }
+    xs.clear();
   }
 }
 
-}  // namespace
-
-Heightfield BuildHeightfield(const Terrain& t, int res) {
+// The grid, the bands painted and every cell at the lowest elevation.
+Heightfield PaintedGrid(const Terrain& t, int res) {
   Heightfield hf;
-  if (t.contours.empty()) return hf;
   const Ring& root = t.contours[0].ring;
   double x0 = root[0].x, x1 = x0, y0 = root[0].y, y1 = y0;
   for (const Vec2& v : root) {
@@ -55,8 +68,67 @@ Heightfield BuildHeightfield(const Terrain& t, int res) {
   const std::size_t cells = static_cast<std::size_t>(hf.width) * hf.height;
   hf.h.assign(cells, t.contours[0].elevation);
   hf.band.assign(cells, -1);
+  std::vector<std::vector<double>> rows;
   for (std::size_t c = 0; c < t.contours.size(); ++c)
-    Paint(t.contours[c].ring, static_cast<int>(c), &hf);
+    Paint(t.contours[c].ring, static_cast<int>(c), &hf, &rows);
+  return hf;
+}
+
+// h = h_C + Δh·a/(a + b) (heightfield.h).
+double BandHeight(const ContourNode& node, double a, double up, double dh) {
+  return a + up > 0 ? node.elevation + dh * a / (a + up) : node.elevation;
+}
+
+}  // namespace
+
+Heightfield BuildHeightfield(const Terrain& t, int res) {
+  if (t.contours.empty()) return Heightfield();
+  Heightfield hf = PaintedGrid(t, res);
+  // Per contour: a grid over its own ring (a) and one over its children's rings (b).
+  const std::size_t nc = t.contours.size();
+  std::vector<SegmentGrid> own(nc), kids(nc);
+  std::vector<int> summit_of(nc, -1);
+  for (std::size_t s = 0; s < t.summits.size(); ++s)
+    summit_of[static_cast<std::size_t>(t.summits[s].contour)] = static_cast<int>(s);
+  std::vector<char> used(nc, 0);
+  for (int b : hf.band)
+    if (b >= 0) used[static_cast<std::size_t>(b)] = 1;
+  for (std::size_t c = 0; c < nc; ++c) {
+    if (!used[c]) continue;
+    own[c].AddRing(t.contours[c].ring);
+    own[c].Build();
+    for (int k : t.contours[c].children)
+      kids[c].AddRing(t.contours[static_cast<std::size_t>(k)].ring);
+    kids[c].Build();
+  }
+  std::vector<int> hint_a(nc, -1), hint_b(nc, -1);
+  for (int j = 0; j < hf.height; ++j) {
+    for (int i = 0; i < hf.width; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * hf.width + i;
+      const int b = hf.band[k];
+      if (b < 0) continue;
+      const std::size_t ub = static_cast<std::size_t>(b);
+      const ContourNode& node = t.contours[ub];
+      const Vec2 p = hf.Centre(i, j);
+      const double a = own[ub].Distance(p, &hint_a[ub]);
+      double up, dh = t.dh;
+      if (node.children.empty()) {
+        const Summit& s = t.summits[static_cast<std::size_t>(summit_of[ub])];
+        up = std::sqrt((p.x - s.position.x) * (p.x - s.position.x) +
+                       (p.y - s.position.y) * (p.y - s.position.y));
+        dh = s.elevation - node.elevation;
+      } else {
+        up = kids[ub].Distance(p, &hint_b[ub]);
+      }
+      hf.h[k] = BandHeight(node, a, up, dh);
+    }
+  }
+  return hf;
+}
+
+Heightfield BuildHeightfieldBruteForce(const Terrain& t, int res) {
+  if (t.contours.empty()) return Heightfield();
+  Heightfield hf = PaintedGrid(t, res);
   std::vector<int> summit_of(t.contours.size(), -1);
   for (std::size_t s = 0; s < t.summits.size(); ++s)
     summit_of[static_cast<std::size_t>(t.summits[s].contour)] = static_cast<int>(s);
@@ -79,7 +151,7 @@ Heightfield BuildHeightfield(const Terrain& t, int res) {
         for (int c : node.children)
           up = std::min(up, RingDistance(t.contours[static_cast<std::size_t>(c)].ring, p));
       }
-      hf.h[k] = a + up > 0 ? node.elevation + dh * a / (a + up) : node.elevation;
+      hf.h[k] = BandHeight(node, a, up, dh);
     }
   }
   return hf;
