@@ -10,6 +10,7 @@
 
 #include "cli_common.h"
 #include "io/gltf_writer.h"
+#include "terrain/compare.h"
 #include "terrain/contour_io.h"
 #include "terrain/generate.h"
 #include "terrain/heightfield.h"
@@ -193,6 +194,58 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   return 0;
 }
 
+nlohmann::json MeasuresJson(const terrain::SurfaceMeasures& m) {
+  return {{"cells", m.cells},
+          {"relief", m.relief},
+          {"hypsometric_integral", m.hypsometric_integral},
+          {"mean_slope_deg", m.mean_slope_deg},
+          {"slope_p90_deg", m.slope_p90_deg},
+          {"slope_share", m.slope_share},
+          {"peaks", m.peaks}};
+}
+
+int RunCompare(const GrowOptions& o, const std::string& dem_path, std::ostream& out) {
+  CheckOutPath(dem_path, "--dem", {".png"});
+  Result<std::string> png = ReadFile(dem_path, "--dem");
+  if (!png.ok()) Fail(png.status());
+  const std::string side_path = dem_path.substr(0, dem_path.size() - 4) + ".json";
+  Result<std::string> side = ReadFile(side_path, "--dem");
+  if (!side.ok()) Fail(side.status());
+  Result<terrain::Heightfield> dem =
+      terrain::ReadHeightmap(std::vector<unsigned char>(png->begin(), png->end()), *side, "--dem");
+  if (!dem.ok()) Fail(dem.status());
+  terrain::TerrainState state = ResolveTerrainState(o);
+  Result<terrain::Ring> seed = terrain::StateSeed(state);
+  if (!seed.ok()) Fail(seed.status());
+  Result<terrain::Terrain> t = terrain::Grow(*seed, state.params);
+  if (!t.ok()) Fail(t.status());
+  const terrain::Comparison c = terrain::CompareTerrain(*dem, *t);
+  if (c.real.cells == 0) {
+    Fail(Status::Error("--dem", "no DEM cell lies inside the seed contour; must cover it"));
+  }
+  nlohmann::json j;
+  j["method"] = terrain::MethodName(state.params.GetInt(TerrainParam::kMethod));
+  j["seed"] = state.params.GetInt(TerrainParam::kSeed);
+  j["h0"] = t->h0;
+  j["dh"] = t->dh;
+  j["d"] = t->d;
+  j["url"] = terrain::EncodeTerrainHash(state);
+  j["real"] = MeasuresJson(c.real);
+  j["grown"] = MeasuresJson(c.grown);
+  nlohmann::json levels = nlohmann::json::array();
+  for (const terrain::LevelOverlap& l : c.levels)
+    levels.push_back({{"level", l.level},
+                      {"elevation", l.elevation},
+                      {"real_cells", l.real_cells},
+                      {"grown_cells", l.grown_cells},
+                      {"iou", l.iou}});
+  j["levels"] = levels;
+  j["mean_iou"] = c.mean_iou;
+  j["slope_share_l1"] = c.slope_share_l1;
+  out << j.dump() << "\n";
+  return 0;
+}
+
 }  // namespace
 
 void AddTerrainCommands(CLI::App& app, CommandList& commands) {
@@ -202,7 +255,7 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
   auto o = std::make_shared<GrowOptions>();
   grow->add_option("--contour", o->contour,
                    "Seed contour: {\"points\": [[x, y], ...]} in metres, or GeoJSON");
-  grow->add_option("--builtin", o->builtin, "Built-in seed: disk, dumbbell, lobes7");
+  grow->add_option("--builtin", o->builtin, "Built-in seed: disk, dumbbell, lobes7, jacksboro");
   grow->add_option("--method", o->method,
                    "simple (Fig 9c), midpoint (Fig 13b), fourier (Fig 15), improved (Fig 16) or a "
                    "figure preset fig9a..fig16");
@@ -224,6 +277,24 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
                    "Write a 16-bit greyscale .png and its sidecar FILE.json (min, max, cell, "
                    "origin)");
   commands.push_back({grow, [o](std::ostream& out) { return RunGrow(*o, out); }});
+
+  CLI::App* compare = terrain_cmd->add_subcommand(
+      "compare",
+      "Grow from one contour of a real DEM and compare the two mountains (hypsometric integral, "
+      "slopes, peaks, each level's IoU) as one JSON object");
+  auto co = std::make_shared<GrowOptions>();
+  auto dem = std::make_shared<std::string>();
+  compare->add_option("--dem", *dem, "The real DEM: a 16-bit .png with its sidecar FILE.json")
+      ->required();
+  compare->add_option("--contour", co->contour, "Its seed contour (a file, as for grow)");
+  compare->add_option("--builtin", co->builtin, "Or a built-in seed (jacksboro)");
+  compare->add_option("--method", co->method, "As for grow");
+  compare->add_option("--seed", co->seed, "RNG seed, a whole number in [0, 4294967295]");
+  compare->add_option("--set", co->sets, "KEY=VALUE of the terrain table");
+  compare->add_option("--params", co->params_file, "State JSON, as for grow");
+  compare->add_option("--url", co->url, "A share-link hash, as for grow");
+  commands.push_back(
+      {compare, [co, dem](std::ostream& out) { return RunCompare(*co, *dem, out); }});
 
   CLI::App* seeds = terrain_cmd->add_subcommand("seeds", "List the built-in seed contours");
   commands.push_back({seeds, [](std::ostream& out) {

@@ -48,8 +48,8 @@ void Paint(const Ring& ring, int id, Heightfield* hf, std::vector<std::vector<do
   }
 }
 
-// The grid, the bands painted and every cell at the lowest elevation.
-Heightfield PaintedGrid(const Terrain& t, int res) {
+// The grid of `res` cells along the root's longer side (heightfield.h).
+Heightfield GridFor(const Terrain& t, int res) {
   Heightfield hf;
   const Ring& root = t.contours[0].ring;
   double x0 = root[0].x, x1 = x0, y0 = root[0].y, y1 = y0;
@@ -65,6 +65,17 @@ Heightfield PaintedGrid(const Terrain& t, int res) {
   hf.height = static_cast<int>(std::ceil((y1 - y0) / hf.cell)) + 2;
   hf.x0 = x0 - hf.cell;
   hf.y1 = y1 + hf.cell;
+  return hf;
+}
+
+// The grid's bands painted and every cell at the lowest elevation.
+Heightfield PaintedGrid(const Terrain& t, const Heightfield& grid) {
+  Heightfield hf;
+  hf.width = grid.width;
+  hf.height = grid.height;
+  hf.x0 = grid.x0;
+  hf.y1 = grid.y1;
+  hf.cell = grid.cell;
   const std::size_t cells = static_cast<std::size_t>(hf.width) * hf.height;
   hf.h.assign(cells, t.contours[0].elevation);
   hf.band.assign(cells, -1);
@@ -83,7 +94,12 @@ double BandHeight(const ContourNode& node, double a, double up, double dh) {
 
 Heightfield BuildHeightfield(const Terrain& t, int res) {
   if (t.contours.empty()) return Heightfield();
-  Heightfield hf = PaintedGrid(t, res);
+  return BuildHeightfieldOn(t, GridFor(t, res));
+}
+
+Heightfield BuildHeightfieldOn(const Terrain& t, const Heightfield& grid) {
+  if (t.contours.empty()) return Heightfield();
+  Heightfield hf = PaintedGrid(t, grid);
   // Per contour: a grid over its own ring (a) and one over its children's rings (b).
   const std::size_t nc = t.contours.size();
   std::vector<SegmentGrid> own(nc), kids(nc);
@@ -128,7 +144,7 @@ Heightfield BuildHeightfield(const Terrain& t, int res) {
 
 Heightfield BuildHeightfieldBruteForce(const Terrain& t, int res) {
   if (t.contours.empty()) return Heightfield();
-  Heightfield hf = PaintedGrid(t, res);
+  Heightfield hf = PaintedGrid(t, GridFor(t, res));
   std::vector<int> summit_of(t.contours.size(), -1);
   for (std::size_t s = 0; s < t.summits.size(); ++s)
     summit_of[static_cast<std::size_t>(t.summits[s].contour)] = static_cast<int>(s);
