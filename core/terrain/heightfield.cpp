@@ -100,24 +100,55 @@ Heightfield BuildHeightfield(const Terrain& t, int res) {
 Heightfield BuildHeightfieldOn(const Terrain& t, const Heightfield& grid) {
   if (t.contours.empty()) return Heightfield();
   Heightfield hf = PaintedGrid(t, grid);
-  // Per contour: a grid over its own ring (a) and one over its children's rings (b).
   const std::size_t nc = t.contours.size();
+  const std::size_t cells = hf.h.size();
+  // Stamping: every segment of contour C writes its squared distance into the cells within ρ of
+  // it that lie in C's band (their a) or in C's parent's band (their b). A cell whose least stamped
+  // value is within ρ has its exact nearest segment among the stamped ones; the others (wide bands)
+  // ask a SegmentGrid. ρ = d: neighbouring contours are about d apart.
+  const double rho = t.d > 0 ? t.d : 4 * hf.cell;
+  const double rho_in = rho - (rho * 1e-6 + 1e-6);  // a margin for the index rounding
+  std::vector<double> A(cells, 1e300), B(cells, 1e300);
+  for (std::size_t c = 0; c < nc && rho_in > 0; ++c) {
+    const Ring& ring = t.contours[c].ring;
+    const int parent = t.contours[c].parent;
+    const int id = static_cast<int>(c);
+    const std::size_t n = ring.size();
+    for (std::size_t s = 0; s < n; ++s) {
+      const Vec2& a = ring[s];
+      const Vec2& e = ring[(s + 1) % n];
+      const int i0 = std::max(
+          0, static_cast<int>(std::ceil((std::min(a.x, e.x) - rho - hf.x0) / hf.cell - 0.5)));
+      const int i1 = std::min(
+          hf.width - 1,
+          static_cast<int>(std::floor((std::max(a.x, e.x) + rho - hf.x0) / hf.cell - 0.5)));
+      const int j0 = std::max(
+          0, static_cast<int>(std::ceil((hf.y1 - std::max(a.y, e.y) - rho) / hf.cell - 0.5)));
+      const int j1 = std::min(
+          hf.height - 1,
+          static_cast<int>(std::floor((hf.y1 - std::min(a.y, e.y) + rho) / hf.cell - 0.5)));
+      for (int j = j0; j <= j1; ++j) {
+        const std::size_t row = static_cast<std::size_t>(j) * hf.width;
+        for (int i = i0; i <= i1; ++i) {
+          const std::size_t k = row + static_cast<std::size_t>(i);
+          const int b = hf.band[k];
+          if (b != id && (b != parent || parent < 0)) continue;
+          const double d2 = SegmentDist2(hf.Centre(i, j), a, e);
+          double& slot = b == id ? A[k] : B[k];
+          if (d2 < slot) slot = d2;
+        }
+      }
+    }
+  }
+  // The fallback grids, made when first needed: a grid over a contour's own ring (a) and one over
+  // its children's rings (b).
   std::vector<SegmentGrid> own(nc), kids(nc);
+  std::vector<char> own_built(nc, 0), kids_built(nc, 0);
   std::vector<int> summit_of(nc, -1);
   for (std::size_t s = 0; s < t.summits.size(); ++s)
     summit_of[static_cast<std::size_t>(t.summits[s].contour)] = static_cast<int>(s);
-  std::vector<char> used(nc, 0);
-  for (int b : hf.band)
-    if (b >= 0) used[static_cast<std::size_t>(b)] = 1;
-  for (std::size_t c = 0; c < nc; ++c) {
-    if (!used[c]) continue;
-    own[c].AddRing(t.contours[c].ring);
-    own[c].Build();
-    for (int k : t.contours[c].children)
-      kids[c].AddRing(t.contours[static_cast<std::size_t>(k)].ring);
-    kids[c].Build();
-  }
   std::vector<int> hint_a(nc, -1), hint_b(nc, -1);
+  const double limit = rho_in > 0 ? rho_in * rho_in : -1;
   for (int j = 0; j < hf.height; ++j) {
     for (int i = 0; i < hf.width; ++i) {
       const std::size_t k = static_cast<std::size_t>(j) * hf.width + i;
@@ -126,14 +157,32 @@ Heightfield BuildHeightfieldOn(const Terrain& t, const Heightfield& grid) {
       const std::size_t ub = static_cast<std::size_t>(b);
       const ContourNode& node = t.contours[ub];
       const Vec2 p = hf.Centre(i, j);
-      const double a = own[ub].Distance(p, &hint_a[ub]);
+      double a;
+      if (A[k] <= limit) {
+        a = std::sqrt(A[k]);
+      } else {
+        if (!own_built[ub]) {
+          own[ub].AddRing(node.ring);
+          own[ub].Build();
+          own_built[ub] = 1;
+        }
+        a = own[ub].Distance(p, &hint_a[ub]);
+      }
       double up, dh = t.dh;
       if (node.children.empty()) {
         const Summit& s = t.summits[static_cast<std::size_t>(summit_of[ub])];
         up = std::sqrt((p.x - s.position.x) * (p.x - s.position.x) +
                        (p.y - s.position.y) * (p.y - s.position.y));
         dh = s.elevation - node.elevation;
+      } else if (B[k] <= limit) {
+        up = std::sqrt(B[k]);
       } else {
+        if (!kids_built[ub]) {
+          for (int c : node.children)
+            kids[ub].AddRing(t.contours[static_cast<std::size_t>(c)].ring);
+          kids[ub].Build();
+          kids_built[ub] = 1;
+        }
         up = kids[ub].Distance(p, &hint_b[ub]);
       }
       hf.h[k] = BandHeight(node, a, up, dh);

@@ -57,16 +57,7 @@ void SegmentGrid::Build() {
 }
 
 double SegmentGrid::Dist2(const Vec2& p, std::size_t s) const {
-  // polygon.cpp SegmentDistance without the square root (sqrt is monotone and correctly rounded,
-  // so the root of the least square is the least root: the brute force's value, bit for bit).
-  const Vec2& a = a_[s];
-  const Vec2& b = b_[s];
-  const double ex = b.x - a.x, ey = b.y - a.y;
-  const double len2 = ex * ex + ey * ey;
-  double t = len2 > 0 ? ((p.x - a.x) * ex + (p.y - a.y) * ey) / len2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  const double dx = a.x + t * ex - p.x, dy = a.y + t * ey - p.y;
-  return dx * dx + dy * dy;
+  return SegmentDist2(p, a_[s], b_[s]);
 }
 
 double SegmentGrid::Distance(const Vec2& p, int* hint) const {

@@ -14,6 +14,17 @@
 
 namespace niwa::terrain {
 
+// polygon.cpp's SegmentDistance without the square root (sqrt is monotone and correctly rounded,
+// so the root of the least square is the least root: the brute force's value, bit for bit).
+inline double SegmentDist2(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const double ex = b.x - a.x, ey = b.y - a.y;
+  const double len2 = ex * ex + ey * ey;
+  double t = len2 > 0 ? ((p.x - a.x) * ex + (p.y - a.y) * ey) / len2 : 0.0;
+  t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+  const double dx = a.x + t * ex - p.x, dy = a.y + t * ey - p.y;
+  return dx * dx + dy * dy;
+}
+
 class SegmentGrid {
  public:
   SegmentGrid() = default;
