@@ -12,6 +12,7 @@
 #include "terrain/loops.h"
 #include "terrain/offset.h"
 #include "terrain/polygon.h"
+#include "terrain/segment_grid.h"
 
 namespace niwa::terrain {
 namespace {
@@ -126,13 +127,20 @@ Ring RemoveNearlyCollinear(const Ring& ring, double eps) {
   const std::size_t n = ring.size();
   Ring out{ring[0]};
   std::size_t last = 0;  // index of the last kept point
+  const double eps2_hi = eps * eps * (1 + 1e-9), eps2_lo = eps * eps * (1 - 1e-9);
   for (std::size_t i = 1; i < n; ++i) {
     // Point i may go when it and every point dropped since the last kept one lie within eps of
     // the chord from the last kept point to point i + 1.
+    // The newest point first (it is the likeliest to be far); the squared distance against eps²
+    // decides unless it is within a hair of it, where SegmentDistance itself does (so the result
+    // is SegmentDistance(...) >= eps exactly, only faster).
     const Vec2& next = ring[(i + 1) % n];
     bool near = out.size() + (n - i - 1) >= 3;
-    for (std::size_t k = last + 1; k <= i && near; ++k)
-      if (SegmentDistance(ring[k], ring[last], next) >= eps) near = false;
+    for (std::size_t k = i; k > last && near; --k) {
+      const double d2 = SegmentDist2(ring[k], ring[last], next);
+      if (d2 > eps2_hi || (d2 >= eps2_lo && SegmentDistance(ring[k], ring[last], next) >= eps))
+        near = false;
+    }
     if (near) continue;
     out.push_back(ring[i]);
     last = i;
