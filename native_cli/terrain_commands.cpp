@@ -83,10 +83,10 @@ terrain::TerrainState ResolveTerrainState(const GrowOptions& o) {
     state.points = file->ring;
     file_elevation = file->has_elevation;
     elevation = file->elevation;
-  } else if (o.url.empty()) {
+  } else if (o.url.empty() && o.params_file.empty()) {
     Fail(Status::Error("--contour",
                        "give one of --contour FILE, --builtin NAME (disk, dumbbell, lobes7, "
-                       "jacksboro) or --url HASH"));
+                       "jacksboro), --url HASH or --params FILE"));
   }
   // Without --url the preset is always applied (the built-in's d, Δh, h0, then the method's rows).
   if (!o.method.empty() || o.url.empty())

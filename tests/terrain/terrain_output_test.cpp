@@ -162,3 +162,61 @@ TEST(TerrainOutput, SeveralOutputsAreAllOrNone) {
 
 }  // namespace
 }  // namespace niwa
+
+namespace niwa {
+namespace {
+
+TEST(TerrainOutput, ParamsFileGrowsWhatItsUrlGrows) {
+  const std::string dir = ::testing::TempDir();
+  const std::string state = dir + "t_state.json", a = dir + "t_state_a.json";
+  const std::string b = dir + "t_state_b.json";
+  std::ofstream(state) << R"({"preset": "fig13c", "contour": [[0, 0], [300, 0], [300, 120],
+      [160, 120], [160, 260], [0, 260]], "params": {"seed": 4, "dh": 8}})";
+  CliResult r = RunNiwa({"terrain", "grow", "--params", state, "--stats", "--contours", a});
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json stats = nlohmann::json::parse(r.out);
+  const std::string url = stats["url"];
+  EXPECT_EQ(url.rfind("preset=fig13c&contour=0,0;300,0;300,120;160,120;160,260;0,260", 0), 0u)
+      << url;
+  ASSERT_EQ(RunNiwa({"terrain", "grow", "--url", url, "--contours", b}).code, 0);
+  EXPECT_EQ(Slurp(a), Slurp(b));
+  EXPECT_GT(Slurp(a).size(), 1000u);
+}
+
+TEST(TerrainOutput, HostileUrlsAndFlagsAreOneLineExitTwoNoFile) {
+  const std::string out = ::testing::TempDir() + "t_hostile.glb";
+  struct Case {
+    std::vector<std::string> args;
+    std::string line;
+  };
+  const std::vector<Case> cases = {
+      {{"--url", "contour=1,2;3,4"},
+       "niwa: error: --url: contour: 2 points; must be 3 to 2000 (a longer one goes in a "
+       "--contour file); dropped\n"},
+      {{"--url", "builtin=disk&d=abc"},
+       "niwa: error: --url: d: 'abc' dropped, must be a number in [0.01, 100000]\n"},
+      {{"--url", "builtin=disk&%3Cscript%3E=1"},
+       "niwa: error: --url: unknown key '?script?' dropped\n"},
+      {{"--url", "contour=0,0;1e300,0;0,1"},
+       "niwa: error: --url: contour: a point is not finite or beyond 1e6 m; must be numbers in "
+       "[-1000000, 1000000]; dropped\n"},
+      {{"--builtin", "disk", "--res", "2"},
+       "niwa: error: --res: 2 is out of range; must be a whole number in [8, 4096]\n"},
+      {{"--builtin", "disk", "--contours", "x.kml"},
+       "niwa: error: --contours: 'x.kml' must end in .json, .geojson or .svg\n"},
+  };
+  for (const Case& c : cases) {
+    std::remove(out.c_str());
+    std::vector<std::string> args{"terrain", "grow"};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    args.push_back("--out");
+    args.push_back(out);
+    CliResult r = RunNiwa(args);
+    EXPECT_EQ(r.code, 2) << c.line;
+    EXPECT_EQ(r.err, c.line);
+    EXPECT_FALSE(std::ifstream(out).good()) << c.line;
+  }
+}
+
+}  // namespace
+}  // namespace niwa
