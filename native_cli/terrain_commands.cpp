@@ -2,17 +2,22 @@
 // Misawa, Chiba, Saito 1987; core/terrain, docs/terrain-model.md) and 'terrain seeds'.
 // cli-order: 40
 #include <chrono>
+#include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "cli_common.h"
+#include "io/gltf_writer.h"
+#include "terrain/compare.h"
 #include "terrain/contour_io.h"
 #include "terrain/generate.h"
 #include "terrain/heightfield.h"
 #include "terrain/seeds.h"
+#include "terrain/terrain_output.h"
 #include "terrain/terrain_params.h"
+#include "terrain/terrain_state.h"
 
 namespace niwa::cli {
 namespace {
@@ -20,58 +25,145 @@ namespace {
 using terrain::TerrainParam;
 
 struct GrowOptions {
-  std::string contour, builtin, method, seed, contours_out;
+  std::string contour, builtin, method, seed, contours_out, params_file, url, out, heightmap;
   std::vector<std::string> sets;
+  int res = 0;
   bool stats = false;
 };
 
-int RunGrow(const GrowOptions& o, std::ostream& out) {
-  const auto t0 = std::chrono::steady_clock::now();
-  if (o.contour.empty() == o.builtin.empty()) {
-    Fail(Status::Error("--contour",
-                       "give exactly one of --contour FILE or --builtin NAME "
-                       "(disk, dumbbell, lobes7)"));
-  }
-  terrain::TerrainParams params;
-  terrain::Ring seed;
-  if (!o.builtin.empty()) {
-    Result<terrain::Ring> r = terrain::BuiltinSeed(o.builtin);
-    if (!r.ok()) Fail(r.status());
-    seed = std::move(r).value();
-    for (const terrain::SeedInfo& info : terrain::BuiltinSeeds()) {
-      if (info.name != o.builtin) continue;
-      Check(params.Set(TerrainParam::kD, info.d));
-      Check(params.Set(TerrainParam::kDh, info.dh));
-      Check(params.Set(TerrainParam::kH0, info.h0));
+// Several outputs of one run are all written or none: each is staged beside its target through
+// WriteFileAtomically, and only when every one is staged are they renamed into place.
+void WriteAllOrNone(const std::vector<std::pair<std::string, std::string>>& files) {
+  std::vector<std::string> staged;
+  const auto drop = [&staged] {
+    for (const std::string& s : staged) std::remove(s.c_str());
+  };
+  for (const auto& [path, bytes] : files) {
+    const std::string stage = path + ".niwa-stage";
+    Status s = WriteFileAtomically(stage, bytes);
+    if (!s.ok()) {
+      drop();
+      Fail(Status::Error("", "cannot write '" + path + "'"));
     }
-  } else {
+    staged.push_back(stage);
+  }
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    if (std::rename(staged[k].c_str(), files[k].first.c_str()) != 0) {
+      for (std::size_t m = 0; m < k; ++m) std::remove(files[m].first.c_str());
+      drop();
+      Fail(Status::Error("", "cannot write '" + files[k].first + "'"));
+    }
+  }
+}
+
+// The state from --url, then the seed flags, --method, --params, --seed, --set and --res.
+terrain::TerrainState ResolveTerrainState(const GrowOptions& o) {
+  terrain::TerrainState state;
+  if (!o.url.empty()) {
+    std::vector<std::string> notices;
+    terrain::ApplyTerrainHash(o.url, "", &state, &notices);
+    if (!notices.empty()) throw BadInput{"--url: " + notices.front()};
+  }
+  if (!o.contour.empty() && !o.builtin.empty()) {
+    Fail(Status::Error("--contour", "give one of --contour FILE or --builtin NAME, not both"));
+  }
+  bool file_elevation = false;
+  double elevation = 0;
+  if (!o.builtin.empty()) {
+    Check(AsFlag(terrain::SetTerrainBuiltin(o.builtin, &state), "--builtin"));
+  } else if (!o.contour.empty()) {
     Result<std::string> text = ReadFile(o.contour, "--contour");
     if (!text.ok()) Fail(text.status());
     Result<terrain::SeedFile> file = terrain::ParseContourJson(*text);
     if (!file.ok()) Fail(file.status().Within("--contour"));
-    seed = file->ring;
     // A contour that cannot seed a mountain is the file's fault: name the flag (Grow checks again).
-    Result<terrain::Ring> checked = terrain::CheckSeed(seed);
+    Result<terrain::Ring> checked = terrain::CheckSeed(file->ring);
     if (!checked.ok()) Fail(Status::Error("--contour", checked.status().message()));
-    if (file->has_elevation)
-      Check(AsFlag(params.Set(TerrainParam::kH0, file->elevation), "elevation"));
+    state.builtin.clear();
+    state.points = file->ring;
+    file_elevation = file->has_elevation;
+    elevation = file->elevation;
+  } else if (o.url.empty() && o.params_file.empty()) {
+    Fail(Status::Error("--contour",
+                       "give one of --contour FILE, --builtin NAME (disk, dumbbell, lobes7, "
+                       "jacksboro), --url HASH or --params FILE"));
   }
-  if (!o.method.empty()) Check(AsFlag(terrain::ApplyPreset(o.method, &params), "--method"));
-  if (!o.seed.empty()) Check(AsFlag(params.SetFromText("seed", o.seed), "--seed"));
-  for (const std::string& s : o.sets) Check(params.SetFromAssignment(s).Within("--set"));
-  Result<terrain::Terrain> t = terrain::Grow(seed, params);
+  // Without --url the preset is always applied (the built-in's d, Δh, h0, then the method's rows).
+  if (!o.method.empty() || o.url.empty())
+    Check(AsFlag(terrain::SetTerrainPreset(o.method, &state), "--method"));
+  if (file_elevation) Check(AsFlag(state.params.Set(TerrainParam::kH0, elevation), "elevation"));
+  if (!o.params_file.empty()) {
+    Result<std::string> text = ReadFile(o.params_file, "--params");
+    if (!text.ok()) Fail(text.status());
+    Check(terrain::ApplyTerrainStateJson(*text, &state).Within("--params " + o.params_file));
+  }
+  if (!o.seed.empty()) Check(AsFlag(state.params.SetFromText("seed", o.seed), "--seed"));
+  for (const std::string& s : o.sets) Check(state.params.SetFromAssignment(s).Within("--set"));
+  if (o.res != 0) Check(AsFlag(state.params.Set(TerrainParam::kRes, o.res), "--res"));
+  return state;
+}
+
+void CheckOutPath(const std::string& path, const std::string& flag,
+                  const std::vector<std::string>& extensions) {
+  if (path.empty()) return;
+  const std::string ext = Extension(path);
+  std::string allowed;
+  for (std::size_t k = 0; k < extensions.size(); ++k) {
+    if (ext == extensions[k]) return;
+    allowed += (k == 0 ? "" : k + 1 == extensions.size() ? " or " : ", ") + extensions[k];
+  }
+  Fail(Status::Error(flag, "'" + path + "' must end in " + allowed));
+}
+
+int RunGrow(const GrowOptions& o, std::ostream& out) {
+  const auto t0 = std::chrono::steady_clock::now();
+  CheckOutPath(o.contours_out, "--contours", {".json", ".geojson", ".svg"});
+  CheckOutPath(o.out, "--out", {".glb"});
+  CheckOutPath(o.heightmap, "--heightmap", {".png"});
+  if (!o.heightmap.empty() &&
+      o.heightmap.substr(0, o.heightmap.size() - 4) + ".json" == o.contours_out) {
+    Fail(Status::Error("--contours", "'" + o.contours_out +
+                                         "' is the --heightmap sidecar; "
+                                         "must be another file"));
+  }
+  terrain::TerrainState state = ResolveTerrainState(o);
+  const terrain::TerrainParams& params = state.params;
+  Result<terrain::Ring> seed = terrain::StateSeed(state);
+  if (!seed.ok()) Fail(seed.status());
+  Result<terrain::Terrain> t = terrain::Grow(*seed, params);
   if (!t.ok()) Fail(t.status());
   const auto t1 = std::chrono::steady_clock::now();
   terrain::Heightfield hf = terrain::BuildHeightfield(*t, params.GetInt(TerrainParam::kRes));
   const auto t2 = std::chrono::steady_clock::now();
+  std::vector<std::pair<std::string, std::string>> files;
   if (!o.contours_out.empty()) {
-    if (Extension(o.contours_out) != ".json") {
-      Fail(Status::Error("--contours", "'" + o.contours_out + "' must end in .json"));
-    }
-    Check(WriteFileAtomically(o.contours_out, terrain::TerrainToJson(*t)));
+    const std::string ext = Extension(o.contours_out);
+    files.push_back({o.contours_out, ext == ".json"      ? terrain::TerrainToJson(*t)
+                                     : ext == ".geojson" ? terrain::TerrainToGeoJson(*t)
+                                                         : terrain::TerrainToSvg(*t)});
   }
+  if (!o.out.empty()) {
+    nlohmann::json extras;
+    extras["generator"] = "niwa terrain grow";
+    extras["url"] = terrain::EncodeTerrainHash(state);
+    Result<std::vector<unsigned char>> glb = gltf::WriteGlb(
+        terrain::TerrainDocument(*t, hf, params.GetBool(TerrainParam::kTint), extras.dump()));
+    if (!glb.ok()) Fail(glb.status().Within("--out"));
+    files.push_back({o.out, std::string(glb->begin(), glb->end())});
+  }
+  if (!o.heightmap.empty()) {
+    Result<terrain::Heightmap> hm = terrain::EncodeHeightmap(hf);
+    if (!hm.ok()) Fail(hm.status());
+    files.push_back({o.heightmap, std::string(hm->png.begin(), hm->png.end())});
+    const std::string stem = o.heightmap.substr(0, o.heightmap.size() - 4);
+    files.push_back({stem + ".json", hm->sidecar_json});
+  }
+  const auto t3 = std::chrono::steady_clock::now();
+  WriteAllOrNone(files);
+  const auto t4 = std::chrono::steady_clock::now();
   if (o.stats) {
     terrain::TerrainStats s = terrain::ComputeStats(*t, &hf);
+    const auto t5 = std::chrono::steady_clock::now();
     nlohmann::json j;
     j["method"] = terrain::MethodName(params.GetInt(TerrainParam::kMethod));
     j["seed"] = params.GetInt(TerrainParam::kSeed);
@@ -89,14 +181,73 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
     j["loops_removed"] = t->counts.loops_removed;
     j["perturbations_reverted"] = t->counts.perturbations_reverted;
     j["truncated"] = t->counts.truncated;
-    j["ms"] = std::chrono::duration<double, std::milli>(t2 - t0).count();
+    j["res"] = params.GetInt(TerrainParam::kRes);
+    j["cells"] = hf.h.size();
+    j["url"] = terrain::EncodeTerrainHash(state);
+    j["ms"] = std::chrono::duration<double, std::milli>(t5 - t0).count();  // the whole run
+    j["ms_grow"] = std::chrono::duration<double, std::milli>(t1 - t0).count();
     j["ms_shrink"] = t->counts.ms_shrink;
     j["ms_mpd"] = t->counts.ms_mpd;
     j["ms_fd"] = t->counts.ms_fd;
     j["ms_loops"] = t->counts.ms_loops;
     j["ms_heightfield"] = std::chrono::duration<double, std::milli>(t2 - t1).count();
+    j["ms_encode"] = std::chrono::duration<double, std::milli>(t3 - t2).count();
+    j["ms_write"] = std::chrono::duration<double, std::milli>(t4 - t3).count();
+    j["ms_stats"] = std::chrono::duration<double, std::milli>(t5 - t4).count();
     out << j.dump() << "\n";
   }
+  return 0;
+}
+
+nlohmann::json MeasuresJson(const terrain::SurfaceMeasures& m) {
+  return {{"cells", m.cells},
+          {"relief", m.relief},
+          {"hypsometric_integral", m.hypsometric_integral},
+          {"mean_slope_deg", m.mean_slope_deg},
+          {"slope_p90_deg", m.slope_p90_deg},
+          {"slope_share", m.slope_share},
+          {"peaks", m.peaks}};
+}
+
+int RunCompare(const GrowOptions& o, const std::string& dem_path, std::ostream& out) {
+  CheckOutPath(dem_path, "--dem", {".png"});
+  Result<std::string> png = ReadFile(dem_path, "--dem");
+  if (!png.ok()) Fail(png.status());
+  const std::string side_path = dem_path.substr(0, dem_path.size() - 4) + ".json";
+  Result<std::string> side = ReadFile(side_path, "--dem");
+  if (!side.ok()) Fail(side.status());
+  Result<terrain::Heightfield> dem =
+      terrain::ReadHeightmap(std::vector<unsigned char>(png->begin(), png->end()), *side, "--dem");
+  if (!dem.ok()) Fail(dem.status());
+  terrain::TerrainState state = ResolveTerrainState(o);
+  Result<terrain::Ring> seed = terrain::StateSeed(state);
+  if (!seed.ok()) Fail(seed.status());
+  Result<terrain::Terrain> t = terrain::Grow(*seed, state.params);
+  if (!t.ok()) Fail(t.status());
+  const terrain::Comparison c = terrain::CompareTerrain(*dem, *t);
+  if (c.real.cells == 0) {
+    Fail(Status::Error("--dem", "no DEM cell lies inside the seed contour; must cover it"));
+  }
+  nlohmann::json j;
+  j["method"] = terrain::MethodName(state.params.GetInt(TerrainParam::kMethod));
+  j["seed"] = state.params.GetInt(TerrainParam::kSeed);
+  j["h0"] = t->h0;
+  j["dh"] = t->dh;
+  j["d"] = t->d;
+  j["url"] = terrain::EncodeTerrainHash(state);
+  j["real"] = MeasuresJson(c.real);
+  j["grown"] = MeasuresJson(c.grown);
+  nlohmann::json levels = nlohmann::json::array();
+  for (const terrain::LevelOverlap& l : c.levels)
+    levels.push_back({{"level", l.level},
+                      {"elevation", l.elevation},
+                      {"real_cells", l.real_cells},
+                      {"grown_cells", l.grown_cells},
+                      {"iou", l.iou}});
+  j["levels"] = levels;
+  j["mean_iou"] = c.mean_iou;
+  j["slope_share_l1"] = c.slope_share_l1;
+  out << j.dump() << "\n";
   return 0;
 }
 
@@ -109,15 +260,46 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
   auto o = std::make_shared<GrowOptions>();
   grow->add_option("--contour", o->contour,
                    "Seed contour: {\"points\": [[x, y], ...]} in metres, or GeoJSON");
-  grow->add_option("--builtin", o->builtin, "Built-in seed: disk, dumbbell, lobes7");
+  grow->add_option("--builtin", o->builtin, "Built-in seed: disk, dumbbell, lobes7, jacksboro");
   grow->add_option("--method", o->method,
                    "simple (Fig 9c), midpoint (Fig 13b), fourier (Fig 15), improved (Fig 16) or a "
                    "figure preset fig9a..fig16");
   grow->add_option("--seed", o->seed, "RNG seed, a whole number in [0, 4294967295]");
   grow->add_option("--set", o->sets, "KEY=VALUE of the terrain table (niwa params terrain)");
+  grow->add_option("--params", o->params_file,
+                   "State JSON {preset, builtin, contour: [[x, y], ...], params: {key: value}}");
+  grow->add_option("--url", o->url,
+                   "A share-link hash (preset=...&builtin=... or contour=x,y;...); other flags "
+                   "override it");
+  grow->add_option("--res", o->res, "Heightfield cells along the longer side (the res row)");
   grow->add_flag("--stats", o->stats, "Print the statistics as one JSON object");
-  grow->add_option("--contours", o->contours_out, "Write the contour tree as JSON (.json)");
+  grow->add_option("--contours", o->contours_out,
+                   "Write the contour tree as .json, .geojson (Polygons, summits) or .svg (plan)");
+  grow->add_option(
+      "--out", o->out,
+      "Write the surface as .glb (metres, y up, normals, tint row, contours as lines)");
+  grow->add_option("--heightmap", o->heightmap,
+                   "Write a 16-bit greyscale .png and its sidecar FILE.json (min, max, cell, "
+                   "origin)");
   commands.push_back({grow, [o](std::ostream& out) { return RunGrow(*o, out); }});
+
+  CLI::App* compare = terrain_cmd->add_subcommand(
+      "compare",
+      "Grow from one contour of a real DEM and compare the two mountains (hypsometric integral, "
+      "slopes, peaks, each level's IoU) as one JSON object");
+  auto co = std::make_shared<GrowOptions>();
+  auto dem = std::make_shared<std::string>();
+  compare->add_option("--dem", *dem, "The real DEM: a 16-bit .png with its sidecar FILE.json")
+      ->required();
+  compare->add_option("--contour", co->contour, "Its seed contour (a file, as for grow)");
+  compare->add_option("--builtin", co->builtin, "Or a built-in seed (jacksboro)");
+  compare->add_option("--method", co->method, "As for grow");
+  compare->add_option("--seed", co->seed, "RNG seed, a whole number in [0, 4294967295]");
+  compare->add_option("--set", co->sets, "KEY=VALUE of the terrain table");
+  compare->add_option("--params", co->params_file, "State JSON, as for grow");
+  compare->add_option("--url", co->url, "A share-link hash, as for grow");
+  commands.push_back(
+      {compare, [co, dem](std::ostream& out) { return RunCompare(*co, *dem, out); }});
 
   CLI::App* seeds = terrain_cmd->add_subcommand("seeds", "List the built-in seed contours");
   commands.push_back({seeds, [](std::ostream& out) {

@@ -6,12 +6,14 @@
 #include <cmath>
 #include <deque>
 #include <string>
+#include <unordered_map>
 
 #include "math/det_math.h"
 #include "terrain/fourier.h"
 #include "terrain/loops.h"
 #include "terrain/offset.h"
 #include "terrain/polygon.h"
+#include "terrain/segment_grid.h"
 
 namespace niwa::terrain {
 namespace {
@@ -121,23 +123,64 @@ Ring MidpointDisplace(const Ring& ring, double d0, double d2, double tmin, doubl
   return out;
 }
 
-Ring RemoveNearlyCollinear(const Ring& ring, double eps) {
+namespace {
+
+// What one test "may point i go with `last` the last kept point" found, kept across the eps values
+// of RemoveCollinearToShare's bisection (the squared distances do not depend on eps): m is the
+// largest squared distance to the chord of the points checked; full when every point was checked,
+// else only the newest (then m is a lower bound).
+struct ChordTest {
+  double m = 0;
+  bool full = false;
+};
+using ChordMemo = std::unordered_map<uint64_t, ChordTest>;
+
+Ring RemoveNearlyCollinearMemo(const Ring& ring, double eps, ChordMemo* memo) {
   if (ring.size() <= 3) return ring;
   const std::size_t n = ring.size();
   Ring out{ring[0]};
   std::size_t last = 0;  // index of the last kept point
+  // Squared distances against eps² decide unless within a hair of it, where SegmentDistance
+  // itself does: the result is exactly "every SegmentDistance(...) < eps", only faster.
+  const double eps2_hi = eps * eps * (1 + 1e-9), eps2_lo = eps * eps * (1 - 1e-9);
   for (std::size_t i = 1; i < n; ++i) {
     // Point i may go when it and every point dropped since the last kept one lie within eps of
     // the chord from the last kept point to point i + 1.
+    if (out.size() + (n - i - 1) < 3) {
+      out.push_back(ring[i]);
+      last = i;
+      continue;
+    }
+    const Vec2& a = ring[last];
     const Vec2& next = ring[(i + 1) % n];
-    bool near = out.size() + (n - i - 1) >= 3;
-    for (std::size_t k = last + 1; k <= i && near; ++k)
-      if (SegmentDistance(ring[k], ring[last], next) >= eps) near = false;
+    ChordTest& test = (*memo)[(static_cast<uint64_t>(last) << 32) | i];
+    if (!test.full && test.m <= eps2_hi) {
+      // The newest point first (the likeliest to be far), then all of them.
+      test.m = SegmentDist2(ring[i], a, next);
+      if (test.m <= eps2_hi) {
+        for (std::size_t k = last + 1; k < i; ++k)
+          test.m = std::max(test.m, SegmentDist2(ring[k], a, next));
+        test.full = true;
+      }
+    }
+    bool near = test.m < eps2_lo;
+    if (test.m <= eps2_hi && !near) {  // within a hair of eps: the exact test
+      near = true;
+      for (std::size_t k = last + 1; k <= i && near; ++k)
+        if (SegmentDistance(ring[k], a, next) >= eps) near = false;
+    }
     if (near) continue;
     out.push_back(ring[i]);
     last = i;
   }
   return out.size() >= 3 ? out : ring;
+}
+
+}  // namespace
+
+Ring RemoveNearlyCollinear(const Ring& ring, double eps) {
+  ChordMemo memo;
+  return RemoveNearlyCollinearMemo(ring, eps, &memo);
 }
 
 Ring RemoveCollinearToShare(const Ring& ring, double d0, double long_frac, double max_eps) {
@@ -149,11 +192,12 @@ Ring RemoveCollinearToShare(const Ring& ring, double d0, double long_frac, doubl
   };
   if (share(ring) >= long_frac) return ring;
   double lo = 0, hi = max_eps;
-  Ring best = RemoveNearlyCollinear(ring, hi);
+  ChordMemo memo;
+  Ring best = RemoveNearlyCollinearMemo(ring, hi, &memo);
   if (share(best) < long_frac) return best;
   for (int it = 0; it < 24; ++it) {
     const double mid = 0.5 * (lo + hi);
-    Ring r = RemoveNearlyCollinear(ring, mid);
+    Ring r = RemoveNearlyCollinearMemo(ring, mid, &memo);
     if (share(r) >= long_frac) {
       hi = mid;
       best = std::move(r);

@@ -1,4 +1,5 @@
-// Band distance-ratio heightfield and terrain statistics (see heightfield.h).
+// Band distance-ratio heightfield (segment grids, and the brute-force twin) and terrain statistics
+// (see heightfield.h).
 #include "terrain/heightfield.h"
 
 #include <algorithm>
@@ -7,22 +8,35 @@
 
 #include "math/det_math.h"
 #include "terrain/polygon.h"
+#include "terrain/segment_grid.h"
 
 namespace niwa::terrain {
 namespace {
 
-// Marks the cells whose centres lie inside the ring with `id` (even-odd spans per row).
-void Paint(const Ring& ring, int id, Heightfield* hf) {
+// Marks the cells whose centres lie inside the ring with `id` (even-odd spans per row; each edge
+// adds its crossing to the rows it spans only).
+void Paint(const Ring& ring, int id, Heightfield* hf, std::vector<std::vector<double>>* rows) {
   const std::size_t n = ring.size();
-  std::vector<double> xs;
-  for (int j = 0; j < hf->height; ++j) {
-    const double y = hf->y1 - (j + 0.5) * hf->cell;
-    xs.clear();
-    for (std::size_t k = 0; k < n; ++k) {
-      const Vec2& a = ring[k];
-      const Vec2& b = ring[(k + 1) % n];
-      if ((a.y > y) != (b.y > y)) xs.push_back(a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
+  rows->resize(static_cast<std::size_t>(hf->height));
+  int jlo = hf->height, jhi = -1;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec2& a = ring[k];
+    const Vec2& b = ring[(k + 1) % n];
+    // Rows j whose centre y = y1 − (j + ½)·cell has (a.y > y) != (b.y > y).
+    const double ylo = std::min(a.y, b.y), yhi = std::max(a.y, b.y);
+    const int j0 = std::max(0, static_cast<int>(std::floor((hf->y1 - yhi) / hf->cell - 0.5)));
+    const int j1 =
+        std::min(hf->height - 1, static_cast<int>(std::ceil((hf->y1 - ylo) / hf->cell - 0.5)));
+    for (int j = j0; j <= j1; ++j) {
+      const double y = hf->y1 - (j + 0.5) * hf->cell;
+      if ((a.y > y) == (b.y > y)) continue;
+      (*rows)[static_cast<std::size_t>(j)].push_back(a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
+      jlo = std::min(jlo, j);
+      jhi = std::max(jhi, j);
     }
+  }
+  for (int j = jlo; j <= jhi; ++j) {
+    std::vector<double>& xs = (*rows)[static_cast<std::size_t>(j)];
     std::sort(xs.begin(), xs.end());
     for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {
       const int i0 = std::max(0, static_cast<int>(std::ceil((xs[k] - hf->x0) / hf->cell - 0.5)));
@@ -30,14 +44,13 @@ void Paint(const Ring& ring, int id, Heightfield* hf) {
                               static_cast<int>(std::floor((xs[k + 1] - hf->x0) / hf->cell - 0.5)));
       for (int i = i0; i <= i1; ++i) hf->band[static_cast<std::size_t>(j) * hf->width + i] = id;
     }
+    xs.clear();
   }
 }
 
-}  // namespace
-
-Heightfield BuildHeightfield(const Terrain& t, int res) {
+// The grid of `res` cells along the root's longer side (heightfield.h).
+Heightfield GridFor(const Terrain& t, int res) {
   Heightfield hf;
-  if (t.contours.empty()) return hf;
   const Ring& root = t.contours[0].ring;
   double x0 = root[0].x, x1 = x0, y0 = root[0].y, y1 = y0;
   for (const Vec2& v : root) {
@@ -52,11 +65,135 @@ Heightfield BuildHeightfield(const Terrain& t, int res) {
   hf.height = static_cast<int>(std::ceil((y1 - y0) / hf.cell)) + 2;
   hf.x0 = x0 - hf.cell;
   hf.y1 = y1 + hf.cell;
+  return hf;
+}
+
+// The grid's bands painted and every cell at the lowest elevation.
+Heightfield PaintedGrid(const Terrain& t, const Heightfield& grid) {
+  Heightfield hf;
+  hf.width = grid.width;
+  hf.height = grid.height;
+  hf.x0 = grid.x0;
+  hf.y1 = grid.y1;
+  hf.cell = grid.cell;
   const std::size_t cells = static_cast<std::size_t>(hf.width) * hf.height;
   hf.h.assign(cells, t.contours[0].elevation);
   hf.band.assign(cells, -1);
+  std::vector<std::vector<double>> rows;
   for (std::size_t c = 0; c < t.contours.size(); ++c)
-    Paint(t.contours[c].ring, static_cast<int>(c), &hf);
+    Paint(t.contours[c].ring, static_cast<int>(c), &hf, &rows);
+  return hf;
+}
+
+// h = h_C + Δh·a/(a + b) (heightfield.h).
+double BandHeight(const ContourNode& node, double a, double up, double dh) {
+  return a + up > 0 ? node.elevation + dh * a / (a + up) : node.elevation;
+}
+
+}  // namespace
+
+Heightfield BuildHeightfield(const Terrain& t, int res) {
+  if (t.contours.empty()) return Heightfield();
+  return BuildHeightfieldOn(t, GridFor(t, res));
+}
+
+Heightfield BuildHeightfieldOn(const Terrain& t, const Heightfield& grid) {
+  if (t.contours.empty()) return Heightfield();
+  Heightfield hf = PaintedGrid(t, grid);
+  const std::size_t nc = t.contours.size();
+  const std::size_t cells = hf.h.size();
+  // Stamping: every segment of contour C writes its squared distance into the cells within ρ of
+  // it that lie in C's band (their a) or in C's parent's band (their b). A cell whose least stamped
+  // value is within ρ has its exact nearest segment among the stamped ones; the others (wide bands)
+  // ask a SegmentGrid. ρ = d: neighbouring contours are about d apart.
+  const double rho = t.d > 0 ? t.d : 4 * hf.cell;
+  const double rho_in = rho - (rho * 1e-6 + 1e-6);  // a margin for the index rounding
+  std::vector<double> A(cells, 1e300), B(cells, 1e300);
+  for (std::size_t c = 0; c < nc && rho_in > 0; ++c) {
+    const Ring& ring = t.contours[c].ring;
+    const int parent = t.contours[c].parent;
+    const int id = static_cast<int>(c);
+    const std::size_t n = ring.size();
+    for (std::size_t s = 0; s < n; ++s) {
+      const Vec2& a = ring[s];
+      const Vec2& e = ring[(s + 1) % n];
+      const int i0 = std::max(
+          0, static_cast<int>(std::ceil((std::min(a.x, e.x) - rho - hf.x0) / hf.cell - 0.5)));
+      const int i1 = std::min(
+          hf.width - 1,
+          static_cast<int>(std::floor((std::max(a.x, e.x) + rho - hf.x0) / hf.cell - 0.5)));
+      const int j0 = std::max(
+          0, static_cast<int>(std::ceil((hf.y1 - std::max(a.y, e.y) - rho) / hf.cell - 0.5)));
+      const int j1 = std::min(
+          hf.height - 1,
+          static_cast<int>(std::floor((hf.y1 - std::min(a.y, e.y) + rho) / hf.cell - 0.5)));
+      for (int j = j0; j <= j1; ++j) {
+        const std::size_t row = static_cast<std::size_t>(j) * hf.width;
+        for (int i = i0; i <= i1; ++i) {
+          const std::size_t k = row + static_cast<std::size_t>(i);
+          const int b = hf.band[k];
+          if (b != id && (b != parent || parent < 0)) continue;
+          const double d2 = SegmentDist2(hf.Centre(i, j), a, e);
+          double& slot = b == id ? A[k] : B[k];
+          if (d2 < slot) slot = d2;
+        }
+      }
+    }
+  }
+  // The fallback grids, made when first needed: a grid over a contour's own ring (a) and one over
+  // its children's rings (b).
+  std::vector<SegmentGrid> own(nc), kids(nc);
+  std::vector<char> own_built(nc, 0), kids_built(nc, 0);
+  std::vector<int> summit_of(nc, -1);
+  for (std::size_t s = 0; s < t.summits.size(); ++s)
+    summit_of[static_cast<std::size_t>(t.summits[s].contour)] = static_cast<int>(s);
+  std::vector<int> hint_a(nc, -1), hint_b(nc, -1);
+  const double limit = rho_in > 0 ? rho_in * rho_in : -1;
+  for (int j = 0; j < hf.height; ++j) {
+    for (int i = 0; i < hf.width; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * hf.width + i;
+      const int b = hf.band[k];
+      if (b < 0) continue;
+      const std::size_t ub = static_cast<std::size_t>(b);
+      const ContourNode& node = t.contours[ub];
+      const Vec2 p = hf.Centre(i, j);
+      double a;
+      if (A[k] <= limit) {
+        a = std::sqrt(A[k]);
+      } else {
+        if (!own_built[ub]) {
+          own[ub].AddRing(node.ring);
+          own[ub].Build();
+          own_built[ub] = 1;
+        }
+        a = own[ub].Distance(p, &hint_a[ub]);
+      }
+      double up, dh = t.dh;
+      if (node.children.empty()) {
+        const Summit& s = t.summits[static_cast<std::size_t>(summit_of[ub])];
+        up = std::sqrt((p.x - s.position.x) * (p.x - s.position.x) +
+                       (p.y - s.position.y) * (p.y - s.position.y));
+        dh = s.elevation - node.elevation;
+      } else if (B[k] <= limit) {
+        up = std::sqrt(B[k]);
+      } else {
+        if (!kids_built[ub]) {
+          for (int c : node.children)
+            kids[ub].AddRing(t.contours[static_cast<std::size_t>(c)].ring);
+          kids[ub].Build();
+          kids_built[ub] = 1;
+        }
+        up = kids[ub].Distance(p, &hint_b[ub]);
+      }
+      hf.h[k] = BandHeight(node, a, up, dh);
+    }
+  }
+  return hf;
+}
+
+Heightfield BuildHeightfieldBruteForce(const Terrain& t, int res) {
+  if (t.contours.empty()) return Heightfield();
+  Heightfield hf = PaintedGrid(t, GridFor(t, res));
   std::vector<int> summit_of(t.contours.size(), -1);
   for (std::size_t s = 0; s < t.summits.size(); ++s)
     summit_of[static_cast<std::size_t>(t.summits[s].contour)] = static_cast<int>(s);
@@ -79,7 +216,7 @@ Heightfield BuildHeightfield(const Terrain& t, int res) {
         for (int c : node.children)
           up = std::min(up, RingDistance(t.contours[static_cast<std::size_t>(c)].ring, p));
       }
-      hf.h[k] = a + up > 0 ? node.elevation + dh * a / (a + up) : node.elevation;
+      hf.h[k] = BandHeight(node, a, up, dh);
     }
   }
   return hf;

@@ -26,7 +26,12 @@ struct Heightfield {
 
 // The heightfield with `res` cells along the longer side of the lowest contour's box (plus one
 // cell of margin each side); cells outside it get the lowest elevation.
+// Distances through a SegmentGrid per contour (segment_grid.h): O(cells), not O(cells·vertices).
 Heightfield BuildHeightfield(const Terrain& terrain, int res);
+// The same on another grid's cells (its width, height, x0, y1, cell; e.g. a real DEM's).
+Heightfield BuildHeightfieldOn(const Terrain& terrain, const Heightfield& grid);
+// The same by brute force over every segment: the test oracle (equal bit for bit).
+Heightfield BuildHeightfieldBruteForce(const Terrain& terrain, int res);
 
 struct TerrainStats {
   int levels = 0, contours = 0, peaks = 0, splits = 0;

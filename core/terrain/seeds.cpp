@@ -31,7 +31,13 @@ const std::vector<SeedInfo>& BuiltinSeeds() {
        20, 10, 0},
       {"lobes7", "synthetic: r = 300 m·(1 + 0.25 cos 7φ), 350 points: seven lobes, seven valleys",
        20, 10, 0},
-      // jacksboro900 (the DEM contour) is not extracted yet: see docs/terrain-model.md.
+      {"jacksboro",
+       "real: the 800 m contour of the USGS Jacksboro fault DEM (Tennessee; public domain USGS "
+       "data shipped as matplotlib's sample data, Debian python-matplotlib-data), extracted by "
+       "scripts/terrain_dem_seed.py 800 (tests/data/terrain/jacksboro_800.json, DEM beside it); d "
+       "= 70 m so that Δh/d = tan 16° "
+       "is the DEM's mean slope inside it (15.5°)",
+       70, 20, 800},
   };
   return seeds;
 }
@@ -39,11 +45,20 @@ const std::vector<SeedInfo>& BuiltinSeeds() {
 Result<Ring> BuiltinSeed(const std::string& name) {
   if (name == "disk") return Radial(256, 200, 0, 0);
   if (name == "lobes7") return Radial(350, 300, 7, 0.25);
+  if (name == "jacksboro") {
+    static const double points[][2] = {
+#include "terrain/seed_jacksboro.inc"
+    };
+    Ring r;
+    for (const auto& p : points) r.push_back({p[0], p[1]});
+    return r;
+  }
   if (name == "dumbbell") {
     return Ring{{0, 0},     {200, 0},   {200, 85},  {260, 85},  {260, 0},   {460, 0},
                 {460, 200}, {260, 200}, {260, 115}, {200, 115}, {200, 200}, {0, 200}};
   }
-  return Status::Error("--builtin", "'" + name + "' is unknown; must be disk, dumbbell or lobes7");
+  return Status::Error("--builtin",
+                       "'" + name + "' is unknown; must be disk, dumbbell, lobes7 or jacksboro");
 }
 
 }  // namespace niwa::terrain

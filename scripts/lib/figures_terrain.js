@@ -1,0 +1,201 @@
+#!/usr/bin/env node
+// Regenerates the terrain paper's figures (Misawa, Chiba, Saito; paper 002: Figs. 9, 10, 13-18)
+// through the CLI (build/native/bin/niwa, or $NIWA) into docs/figures/terrain_figN.svg (contour
+// plans side by side, `niwa terrain grow --contours x.svg`) and docs/figures/terrain_measures.json
+// (the numbers docs/FIGURES.md quotes), and prints them. Every run is deterministic (fixed seeds).
+// The seed is the real one (`--builtin jacksboro`, the 800 m contour of a USGS DEM) as the paper's is
+// a real map's contour (Mt. Nakitsura). Figs. 2-8 and 12 are geometric cases checked by unit tests
+// (tests/terrain/shrink_test.cpp, grow_test.cpp), not drawn here. Usage: scripts/figures terrain [N...]
+'use strict';
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+const { execFileSync } = require('child_process');
+
+const root = path.resolve(__dirname, '..', '..');
+const niwa = process.env.NIWA ? path.resolve(process.env.NIWA) : path.join(root, 'build/native/bin/niwa');
+const outDir = path.join(root, 'docs/figures');
+const tmpDir = fs.mkdtempSync(path.join(os.tmpdir(), 'niwa-terrain-figures-'));
+const dem = path.join(root, 'tests/data/terrain/jacksboro_dem.png');
+
+if (!fs.existsSync(niwa)) {
+  console.error(`figures: ${path.relative(root, niwa)} is missing; run scripts/build native first`);
+  process.exit(1);
+}
+
+const run = (args) => execFileSync(niwa, args, { encoding: 'utf8', maxBuffer: 1 << 28 });
+
+// One panel: `grow` with the preset (and --set), its contour JSON, plan SVG and stats.
+function grow(p) {
+  const base = ['terrain', 'grow', '--builtin', p.seed || 'jacksboro', '--method', p.preset,
+    '--seed', String(p.rng ?? 1)];
+  for (const [k, v] of Object.entries(p.set || {})) base.push('--set', `${k}=${v}`);
+  const json = path.join(tmpDir, 'c.json'), svg = path.join(tmpDir, 'c.svg');
+  const stats = JSON.parse(run([...base, '--stats', '--res', '128', '--contours', json]));
+  run([...base, '--contours', svg]);
+  return { stats, tree: JSON.parse(fs.readFileSync(json, 'utf8')), svg: fs.readFileSync(svg, 'utf8') };
+}
+
+// Contour measures (specs/mountains.md §3): per ring its area, perimeter, compactness Q = 4πA/P²,
+// turning angles; valley sharpness = p95 turning angle at reflex vertices over all contours above
+// the seed, roughness = mean absolute turning angle (degrees per vertex).
+function ringMeasures(points) {
+  const n = points.length;
+  let area = 0, per = 0;
+  const turns = [], reflex = [];
+  for (let i = 0; i < n; ++i) {
+    const a = points[(i + n - 1) % n], b = points[i], c = points[(i + 1) % n];
+    area += b[0] * c[1] - c[0] * b[1];
+    per += Math.hypot(c[0] - b[0], c[1] - b[1]);
+    const t = Math.atan2((b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]),
+      (b[0] - a[0]) * (c[0] - b[0]) + (b[1] - a[1]) * (c[1] - b[1])) * 180 / Math.PI;
+    turns.push(Math.abs(t));
+    if (t < 0) reflex.push(-t);  // a right turn on a counter-clockwise ring: a valley vertex
+  }
+  return { area: area / 2, per, q: (4 * Math.PI * area / 2) / (per * per), turns, reflex };
+}
+
+const pct = (xs, p) => {
+  if (!xs.length) return 0;
+  const s = [...xs].sort((x, y) => x - y);
+  return s[Math.min(s.length - 1, Math.floor(p * (s.length - 1)))];
+};
+const mean = (xs) => xs.length ? xs.reduce((a, b) => a + b, 0) / xs.length : 0;
+const r2 = (v) => Math.round(v * 100) / 100;
+const r3 = (v) => Math.round(v * 1000) / 1000;
+
+function measures(g) {
+  const upper = g.tree.contours.filter((c) => c.level > 0).map((c) => ringMeasures(c.points));
+  const vertsByLevel = {};
+  for (const c of g.tree.contours) vertsByLevel[c.level] = (vertsByLevel[c.level] || 0) + c.points.length;
+  return {
+    levels: g.stats.levels, contours: g.stats.contours, peaks: g.stats.peaks, vertices: g.stats.vertices,
+    loops_removed: g.stats.loops_removed, hi: r3(g.stats.hypsometric_integral),
+    slope: r2(g.stats.mean_slope_deg), relief: r2(g.stats.relief),
+    valley_sharpness: r2(pct(upper.flatMap((m) => m.reflex), 0.95)),
+    roughness: r2(mean(upper.flatMap((m) => m.turns))),
+    q_mean: r3(mean(upper.map((m) => m.q))),
+    vertices_by_level: Object.keys(vertsByLevel).sort((a, b) => a - b).map((k) => vertsByLevel[k]),
+  };
+}
+
+// Panels side by side, each the CLI's plan SVG nested at 360 px with its label.
+function figure(name, title, panels) {
+  const W = 360, H = 380;
+  let body = '';
+  panels.forEach((p, i) => {
+    const inner = p.g.svg.replace(/^<svg[^>]*>/, '').replace(/<\/svg>\s*$/, '');
+    const vb = p.g.svg.match(/viewBox="([^"]+)"/)[1];
+    body += `<svg x="${i * W}" y="30" width="${W}" height="${W}" viewBox="${vb}">${inner}</svg>\n`;
+    body += `<text x="${i * W + W / 2}" y="${H + 10}" text-anchor="middle" font-size="13">${p.label}</text>\n`;
+  });
+  const svg = `<svg xmlns="http://www.w3.org/2000/svg" width="${W * panels.length}" height="${H + 24}">\n` +
+    `<rect width="100%" height="100%" fill="#fff"/>\n<text x="8" y="20" font-size="15">${title}</text>\n${body}</svg>\n`;
+  fs.writeFileSync(path.join(outDir, `terrain_${name}.svg`), svg);
+}
+
+function compare(preset, rng, demFile = dem, seed = 'jacksboro') {
+  return JSON.parse(run(['terrain', 'compare', '--dem', demFile, '--builtin', seed, '--method', preset,
+    '--seed', String(rng)]));
+}
+
+const figures = {
+  fig9() {
+    const ps = [['fig9a', '(a) miter'], ['fig9b', '(b) bevel'], ['fig9c', '(c) Fig 7 join, c = 1.4']];
+    const panels = ps.map(([preset, label]) => ({ label, g: grow({ preset }) }));
+    figure('fig9', 'Fig. 9: simple method, three joins (seed: jacksboro 800 m)', panels);
+    return Object.fromEntries(panels.map((p, i) => [ps[i][0], measures(p.g)]));
+  },
+  fig10() {
+    const ps = [['fig10a', "(a) d' = 1.4d"], ['fig10b', "(b) d' = 1.6d"]];
+    const panels = ps.map(([preset, label]) => ({ label, g: grow({ preset }) }));
+    figure('fig10', "Fig. 10: simple method, Fig 7 join, d' = 1.4d and 1.6d", panels);
+    return Object.fromEntries(panels.map((p, i) => [ps[i][0], measures(p.g)]));
+  },
+  fig13() {
+    const ps = [['fig13a', 'θ in (0°, 10°)'], ['fig13b', 'θ in (0°, 20°)'], ['fig13c', 'θ in (0°, 30°)']];
+    const panels = ps.map(([preset, label]) => ({ label, g: grow({ preset }) }));
+    figure('fig13', "Fig. 13: midpoint displacement, d' = 1.4d, d'' = 0.3d", panels);
+    return Object.fromEntries(panels.map((p, i) => [ps[i][0], measures(p.g)]));
+  },
+  fig14() {
+    // How much shape survives: each level's IoU against the simple method's mountain (fig9c) on
+    // the same cells (`compare` with the simple mountain's heightmap as the "real" DEM).
+    const simplePng = path.join(tmpDir, 'simple.png');
+    run(['terrain', 'grow', '--builtin', 'jacksboro', '--method', 'fig9c', '--res', '160',
+      '--heightmap', simplePng]);
+    const ps = [['fig14a', 'f0 = 64'], ['fig14b', 'f0 = 128'], ['fig14c', 'f0 = 256']];
+    const panels = ps.map(([preset, label]) => ({ label, g: grow({ preset }) }));
+    figure('fig14', 'Fig. 14: phase randomisation, n = 1024', panels);
+    return Object.fromEntries(panels.map((p, i) => {
+      const c = compare(ps[i][0], 1, simplePng);
+      return [ps[i][0], { ...measures(p.g), iou_vs_simple: r3(c.mean_iou) }];
+    }));
+  },
+  fig15() {
+    const g = grow({ preset: 'fig15' });
+    figure('fig15', "Fig. 15: Fourier-descriptor method, Fig 7 join, d' = 1.4d, f0 = 256",
+      [{ label: 'fourier', g }]);
+    return { fig15: measures(g) };
+  },
+  fig16() {
+    const ps = [1, 2, 3].map((rng) => ({ label: `improved, seed ${rng}`, g: grow({ preset: 'fig16', rng }) }));
+    figure('fig16', "Fig. 16: improved method (d' = 3d, d'' = 0.5d, θ in (20°, 40°), f0 = 256)", ps);
+    return Object.fromEntries(ps.map((p, i) => [`fig16_seed${i + 1}`, measures(p.g)]));
+  },
+  fig17() {
+    // The paper's claim: the improved method looks most like the real map. As numbers, on the real
+    // DEM, seeds 1-5 for each method.
+    const out = {};
+    for (const preset of ['simple', 'midpoint', 'fourier', 'improved']) {
+      const rows = [1, 2, 3, 4, 5].map((rng) => compare(preset, rng));
+      out[preset] = {
+        mean_iou: r3(mean(rows.map((r) => r.mean_iou))),
+        mean_iou_range: [r3(Math.min(...rows.map((r) => r.mean_iou))), r3(Math.max(...rows.map((r) => r.mean_iou)))],
+        slope_share_l1: r3(mean(rows.map((r) => r.slope_share_l1))),
+        hi_grown: r3(mean(rows.map((r) => r.grown.hypsometric_integral))),
+        hi_real: r3(rows[0].real.hypsometric_integral),
+        slope_grown: r2(mean(rows.map((r) => r.grown.mean_slope_deg))),
+        slope_real: r2(rows[0].real.mean_slope_deg),
+        peaks_grown: r2(mean(rows.map((r) => r.grown.peaks))),
+        peaks_real: rows[0].real.peaks,
+        relief_grown: r2(mean(rows.map((r) => r.grown.relief))),
+        relief_real: r2(rows[0].real.relief),
+      };
+    }
+    return out;
+  },
+  fig18() {
+    // Loops: how many each perturbing method removes on lobes7 and jacksboro (method 1 and 2).
+    const out = {};
+    for (const seed of ['lobes7', 'jacksboro']) {
+      for (const preset of ['fig13c', 'fig14a', 'fig16']) {
+        for (const lm of [1, 2]) {
+          const s = JSON.parse(run(['terrain', 'grow', '--builtin', seed, '--method', preset, '--seed', '1',
+            '--set', `loop_method=${lm}`, '--stats', '--res', '32']));
+          out[`${seed}_${preset}_m${lm}`] = { loops_removed: s.loops_removed, self_intersections: s.self_intersections,
+            contours: s.contours };
+        }
+      }
+    }
+    return out;
+  },
+};
+
+const wanted = process.argv.slice(2).map((a) => (a.startsWith('fig') ? a : `fig${a}`));
+const names = wanted.length ? wanted : Object.keys(figures);
+const file = path.join(outDir, 'terrain_measures.json');
+const all = fs.existsSync(file) ? JSON.parse(fs.readFileSync(file, 'utf8')) : {};
+fs.mkdirSync(outDir, { recursive: true });
+for (const name of names) {
+  if (!figures[name]) {
+    console.error(`figures terrain: unknown figure '${name}'; must be one of ${Object.keys(figures).join(', ')}`);
+    process.exit(2);
+  }
+  const t0 = Date.now();
+  all[name] = figures[name]();
+  console.log(`${name} (${Date.now() - t0} ms)`);
+  console.log(JSON.stringify(all[name], null, 1).replace(/\n\s*/g, ' '));
+}
+fs.writeFileSync(file, JSON.stringify(all, null, 2) + '\n');
+fs.rmSync(tmpDir, { recursive: true, force: true });

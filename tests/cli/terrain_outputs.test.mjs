@@ -1,0 +1,48 @@
+// Terrain outputs across builds: for every built-in seed (improved method), native == WASM byte for
+// byte for the .glb, the 16-bit heightmap .png and its .json sidecar, the .geojson and the .svg
+// contours; every .glb is gltf-validator clean (0 errors, 0 warnings); `--url` of the stats regrows
+// the same .glb; `terrain compare` on the real DEM prints the same JSON in both builds.
+import { mkdtempSync, readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { check, finish, native, requireWasm, root, run, wasm } from '../support/cli_pair.mjs';
+
+requireWasm();
+const require = createRequire(join(root, 'package.json'));
+const validatorModule = await import(pathToFileURL(require.resolve('gltf-validator')).href);
+const validator = validatorModule.default ?? validatorModule;
+
+const dir = mkdtempSync(join(tmpdir(), 'niwa-terrain-out-'));
+const seeds = JSON.parse(run(native, ['terrain', 'seeds'])).map((s) => s.name);
+for (const seed of seeds) {
+  const files = {};
+  for (const [build, cmd] of [['n', native], ['w', wasm]]) {
+    const f = (ext) => join(dir, `${seed}-${build}.${ext}`);
+    const stats = JSON.parse(run(cmd, ['terrain', 'grow', '--builtin', seed, '--method', 'improved', '--seed', '2',
+      '--res', '96', '--stats', '--out', f('glb'), '--heightmap', f('png'), '--contours', f('geojson')]));
+    run(cmd, ['terrain', 'grow', '--builtin', seed, '--method', 'improved', '--seed', '2', '--contours', f('svg')]);
+    files[build] = { stats, f };
+  }
+  for (const ext of ['glb', 'png', 'json', 'geojson', 'svg']) {
+    const a = readFileSync(files.n.f(ext)), b = readFileSync(files.w.f(ext));
+    check(a.length > 100 && a.equals(b), `${seed}: .${ext} native == WASM (${a.length} bytes)`);
+  }
+  const report = await validator.validateBytes(new Uint8Array(readFileSync(files.n.f('glb'))), { maxIssues: 20 });
+  check(report.issues.numErrors === 0 && report.issues.numWarnings === 0,
+    `${seed}: .glb gltf-validator ${report.issues.numErrors} errors, ${report.issues.numWarnings} warnings`);
+  const again = join(dir, `${seed}-url.glb`);
+  run(wasm, ['terrain', 'grow', '--url', files.n.stats.url, '--out', again]);
+  check(readFileSync(again).equals(readFileSync(files.n.f('glb'))),
+    `${seed}: the WASM CLI's --url '${files.n.stats.url}' regrows the native .glb`);
+}
+
+const dem = join(root, 'tests/data/terrain/jacksboro_dem.png');
+for (const method of ['simple', 'improved']) {
+  const args = ['terrain', 'compare', '--dem', dem, '--builtin', 'jacksboro', '--method', method, '--seed', '3'];
+  const a = run(native, args), b = run(wasm, args);
+  check(a === b && JSON.parse(a).levels.length > 3,
+    `compare ${method}: native == WASM (mean IoU ${JSON.parse(a).mean_iou.toFixed(3)})`);
+}
+finish();

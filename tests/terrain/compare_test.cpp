@@ -1,0 +1,98 @@
+// 'niwa terrain compare': a DEM that is the grown mountain's own heightmap compares as (almost)
+// identical, the shipped real DEM and its contour give sane measures, the built-in jacksboro seed
+// is the checked-in contour file, bad DEMs are one line with exit code 2.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_runner.h"
+#include "terrain/contour_io.h"
+#include "terrain/seeds.h"
+
+namespace niwa {
+namespace {
+
+const std::string kData = std::string(NIWA_SOURCE_DIR) + "/tests/data/terrain/";
+
+TEST(TerrainCompare, OwnHeightmapComparesAsTheSameMountain) {
+  const std::string png = ::testing::TempDir() + "t_cmp_self.png";
+  ASSERT_EQ(RunNiwa({"terrain", "grow", "--builtin", "dumbbell", "--method", "improved", "--seed",
+                     "4", "--res", "120", "--heightmap", png})
+                .code,
+            0);
+  CliResult r = RunNiwa({"terrain", "compare", "--dem", png, "--builtin", "dumbbell", "--method",
+                         "improved", "--seed", "4"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["real"]["cells"].get<int>(), 1000);
+  EXPECT_EQ(j["real"]["cells"], j["grown"]["cells"]);
+  EXPECT_NEAR(j["real"]["hypsometric_integral"].get<double>(),
+              j["grown"]["hypsometric_integral"].get<double>(), 1e-3);
+  EXPECT_EQ(j["real"]["peaks"], j["grown"]["peaks"]);
+  EXPECT_LT(j["slope_share_l1"].get<double>(), 0.01);
+  ASSERT_GE(j["levels"].size(), 3u);
+  for (const auto& level : j["levels"]) EXPECT_GT(level["iou"].get<double>(), 0.97) << level;
+  // Another method grown from the same contour differs.
+  CliResult other =
+      RunNiwa({"terrain", "compare", "--dem", png, "--builtin", "dumbbell", "--method", "simple"});
+  ASSERT_EQ(other.code, 0);
+  EXPECT_LT(nlohmann::json::parse(other.out)["mean_iou"].get<double>(),
+            j["mean_iou"].get<double>());
+}
+
+TEST(TerrainCompare, RealDemAndItsContour) {
+  CliResult r = RunNiwa({"terrain", "compare", "--dem", kData + "jacksboro_dem.png", "--contour",
+                         kData + "jacksboro_800.json", "--set", "d=70", "--set", "dh=20",
+                         "--method", "improved"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["h0"], 800);  // the file's elevation
+  const auto& real = j["real"];
+  EXPECT_GT(real["cells"].get<int>(), 1000);
+  EXPECT_GT(real["hypsometric_integral"].get<double>(), 0.2);
+  EXPECT_LT(real["hypsometric_integral"].get<double>(), 0.6);
+  EXPECT_GT(real["relief"].get<double>(), 100);  // the DEM tops out at 1072 m
+  EXPECT_GT(j["mean_iou"].get<double>(), 0.2);
+  EXPECT_LT(j["mean_iou"].get<double>(), 0.95);
+  double share = 0;
+  for (double s : real["slope_share"]) share += s;
+  EXPECT_NEAR(share, 1.0, 1e-9);
+}
+
+TEST(TerrainCompare, BuiltinJacksboroIsTheCheckedInContour) {
+  std::ifstream in(kData + "jacksboro_800.json");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  Result<terrain::SeedFile> file = terrain::ParseContourJson(text);
+  ASSERT_TRUE(file.ok());
+  Result<terrain::Ring> builtin = terrain::BuiltinSeed("jacksboro");
+  ASSERT_TRUE(builtin.ok());
+  EXPECT_EQ(file->ring, *builtin);
+  EXPECT_EQ(file->elevation, 800);
+}
+
+TEST(TerrainCompare, BadDemIsOneLine) {
+  const std::string dir = ::testing::TempDir();
+  const std::string lone = dir + "t_cmp_lone.png";
+  std::remove((dir + "t_cmp_lone.json").c_str());
+  std::ofstream(lone) << "not a png";
+  CliResult missing = RunNiwa({"terrain", "compare", "--dem", lone, "--builtin", "disk"});
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_EQ(missing.err, "niwa: error: --dem: cannot read '" + dir + "t_cmp_lone.json'\n");
+  std::ofstream(dir + "t_cmp_lone.json") << "{}";
+  CliResult bad = RunNiwa({"terrain", "compare", "--dem", lone, "--builtin", "disk"});
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_EQ(bad.err.rfind("niwa: error: --dem: not a PNG file", 0), 0u) << bad.err;
+  // A contour 5 km south-west of the real DEM's corner.
+  const std::string away = dir + "t_cmp_away.json";
+  std::ofstream(away) << R"({"points": [[-5000, -5000], [-4000, -5000], [-4500, -4000]]})";
+  CliResult off =
+      RunNiwa({"terrain", "compare", "--dem", kData + "jacksboro_dem.png", "--contour", away});
+  EXPECT_EQ(off.code, 2) << off.out.substr(0, 300);
+  EXPECT_EQ(off.err,
+            "niwa: error: --dem: no DEM cell lies inside the seed contour; must cover it\n");
+}
+
+}  // namespace
+}  // namespace niwa

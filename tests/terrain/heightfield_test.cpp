@@ -1,0 +1,105 @@
+// The heightfield through segment grids equals its brute-force twin bit for bit (every built-in
+// seed and method), SegmentGrid equals RingDistance on scattered points, and the surface is what
+// heightfield.h promises: continuous across contours, each contour's level set on it, no pits.
+#include "terrain/heightfield.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "random/pcg32.h"
+#include "terrain/generate.h"
+#include "terrain/polygon.h"
+#include "terrain/seeds.h"
+#include "terrain/segment_grid.h"
+#include "terrain/terrain_state.h"
+
+namespace niwa::terrain {
+namespace {
+
+Terrain GrowBuiltin(const std::string& seed, const std::string& method, int rng) {
+  TerrainState s;
+  EXPECT_TRUE(SetTerrainBuiltin(seed, &s).ok());
+  EXPECT_TRUE(SetTerrainPreset(method, &s).ok());
+  EXPECT_TRUE(s.params.Set(TerrainParam::kSeed, rng).ok());
+  Result<Terrain> t = Grow(*StateSeed(s), s.params);
+  EXPECT_TRUE(t.ok());
+  return t.ok() ? *t : Terrain();
+}
+
+TEST(SegmentGrid, EqualsBruteForceDistance) {
+  const Terrain t = GrowBuiltin("lobes7", "improved", 4);
+  Pcg32 rng(9);
+  for (std::size_t c = 0; c < t.contours.size(); c += 3) {
+    const Ring& ring = t.contours[c].ring;
+    SegmentGrid grid;
+    grid.AddRing(ring);
+    grid.Build();
+    int hint = -1;
+    for (int q = 0; q < 400; ++q) {
+      // Inside, near and far outside the ring's box (the far points test the outside bound).
+      const Vec2 p{rng.Uniform(-900, 900), rng.Uniform(-900, 900)};
+      EXPECT_EQ(grid.Distance(p, q % 2 ? &hint : nullptr), RingDistance(ring, p));
+    }
+  }
+}
+
+TEST(Heightfield, GridEqualsBruteForceTwin) {
+  double fast_ms = 0, brute_ms = 0;
+  for (const SeedInfo& info : BuiltinSeeds()) {
+    for (const char* method : {"simple", "improved"}) {
+      const Terrain t = GrowBuiltin(info.name, method, 2);
+      const auto t0 = std::chrono::steady_clock::now();
+      const Heightfield fast = BuildHeightfield(t, 96);
+      const auto t1 = std::chrono::steady_clock::now();
+      const Heightfield brute = BuildHeightfieldBruteForce(t, 96);
+      const auto t2 = std::chrono::steady_clock::now();
+      fast_ms += std::chrono::duration<double, std::milli>(t1 - t0).count();
+      brute_ms += std::chrono::duration<double, std::milli>(t2 - t1).count();
+      ASSERT_EQ(fast.h.size(), brute.h.size());
+      EXPECT_EQ(fast.band, brute.band);
+      for (std::size_t k = 0; k < fast.h.size(); ++k)
+        ASSERT_EQ(fast.h[k], brute.h[k]) << info.name << " " << method << " cell " << k;
+    }
+  }
+  std::printf("heightfield 96: grid %.1f ms, brute force %.1f ms\n", fast_ms, brute_ms);
+}
+
+// Along a segment between two adjacent cell centres that crosses a contour of elevation e, the
+// bilinear surface crosses e where the contour is (within the cell's slope), and no cell is a pit.
+TEST(Heightfield, ContinuousLevelSetsOnContoursNoPits) {
+  for (const char* seed : {"disk", "dumbbell", "lobes7"}) {
+    const Terrain t = GrowBuiltin(seed, "improved", 5);
+    const Heightfield hf = BuildHeightfield(t, 128);
+    const TerrainStats s = ComputeStats(t, &hf);
+    EXPECT_EQ(s.pits, 0) << seed;
+    // Continuity: neighbours differ by at most the steepest band's slope times the cell size.
+    double max_step = 0;
+    for (int j = 0; j < hf.height; ++j)
+      for (int i = 0; i + 1 < hf.width; ++i)
+        max_step = std::max(max_step, std::fabs(hf.At(i + 1, j) - hf.At(i, j)));
+    EXPECT_LT(max_step, t.dh) << seed;  // a jump would be a whole interval
+    // Level sets: cells in the band of contour C lie in [h_C, h_C + Δh] (summit bands: to h_s),
+    // and a cell next to a contour (within half a cell) is within one cell's slope of h_C.
+    for (int j = 0; j < hf.height; ++j) {
+      for (int i = 0; i < hf.width; ++i) {
+        const int b = hf.band[static_cast<std::size_t>(j) * hf.width + i];
+        if (b < 0) continue;
+        const ContourNode& node = t.contours[static_cast<std::size_t>(b)];
+        double top = node.elevation + t.dh;
+        for (const Summit& sm : t.summits)
+          if (sm.contour == b) top = sm.elevation;
+        EXPECT_GE(hf.At(i, j), node.elevation);
+        EXPECT_LE(hf.At(i, j), top + 1e-9);
+        const double a = RingDistance(node.ring, hf.Centre(i, j));
+        if (a < 0.5 * hf.cell) {
+          EXPECT_LT(hf.At(i, j) - node.elevation, t.dh * 0.75) << seed;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace niwa::terrain

@@ -1,0 +1,113 @@
+// terrain_state: the hash and the state JSON read back to the same state (bit for bit, drawn
+// contours included), hostile hashes give notices and a usable state, strict JSON errors name the
+// field.
+#include "terrain/terrain_state.h"
+
+#include <gtest/gtest.h>
+
+#include "terrain/generate.h"
+
+namespace niwa::terrain {
+namespace {
+
+TEST(TerrainState, HashRoundTripsBuiltinPresetAndOverrides) {
+  TerrainState s;
+  ASSERT_TRUE(SetTerrainBuiltin("lobes7", &s).ok());
+  ASSERT_TRUE(SetTerrainPreset("fig13c", &s).ok());
+  ASSERT_TRUE(s.params.Set(TerrainParam::kSeed, 7).ok());
+  ASSERT_TRUE(s.params.Set(TerrainParam::kD, 17.5).ok());
+  const std::string hash = EncodeTerrainHash(s);
+  EXPECT_EQ(hash, "preset=fig13c&builtin=lobes7&d=17.5&seed=7");
+  TerrainState back;
+  std::vector<std::string> notices;
+  ApplyTerrainHash("#" + hash, "", &back, &notices);
+  EXPECT_TRUE(notices.empty());
+  EXPECT_EQ(back.preset, "fig13c");
+  EXPECT_EQ(back.builtin, "lobes7");
+  EXPECT_TRUE(back.params == s.params);
+}
+
+TEST(TerrainState, DrawnContourRoundTripsBitForBit) {
+  TerrainState s;
+  Ring drawn = {{0.1, 0.2}, {100.0 / 3.0, -1e-5}, {50.123456789, 80.5}, {-20.25, 40}};
+  ASSERT_TRUE(SetTerrainPoints(drawn, &s).ok());
+  ASSERT_TRUE(SetTerrainPreset("improved", &s).ok());
+  const std::string hash = EncodeTerrainHash(s, "terrain.");
+  TerrainState back;
+  std::vector<std::string> notices;
+  ApplyTerrainHash(hash + "&tree.years=3", "terrain.", &back, &notices);
+  EXPECT_TRUE(notices.empty()) << notices.front();
+  EXPECT_TRUE(back.builtin.empty());
+  ASSERT_EQ(back.points.size(), drawn.size());
+  for (std::size_t k = 0; k < drawn.size(); ++k) EXPECT_EQ(back.points[k], drawn[k]) << k;
+  EXPECT_TRUE(back.params == s.params);
+}
+
+TEST(TerrainState, HostileHashesGiveNoticesAndAUsableState) {
+  const std::vector<std::string> hashes = {"builtin=nope",
+                                           "contour=1,2;3",
+                                           "contour=a,b;c,d;e,f",
+                                           "preset=<script>",
+                                           "d=-5",
+                                           "seed=abc",
+                                           "zzz=1",
+                                           "contour=nan,1;2,3;4,5",
+                                           "contour=1e300,0;1,1;0,1",
+                                           std::string(20000, '&'),
+                                           "d=1e999"};
+  for (const std::string& h : hashes) {
+    TerrainState s;
+    std::vector<std::string> notices;
+    ApplyTerrainHash(h, "", &s, &notices);
+    if (h.find_first_not_of('&') != std::string::npos) {
+      EXPECT_FALSE(notices.empty()) << h;
+    }
+    for (const std::string& n : notices) EXPECT_EQ(n.find('<'), std::string::npos) << n;
+    EXPECT_TRUE(StateSeed(s).ok()) << h;  // still the default disk or a valid point list
+  }
+  TerrainState s;
+  std::vector<std::string> notices;
+  ApplyTerrainHash("d=-5", "", &s, &notices);
+  EXPECT_EQ(s.params.Get(TerrainParam::kD), 0.01);  // clamped into the row's range
+}
+
+TEST(TerrainState, StateJsonIsStrictAndRoundTrips) {
+  TerrainState s;
+  ASSERT_TRUE(ApplyTerrainStateJson(
+                  R"({"preset": "fig16", "contour": [[0,0],[100,0],[100,80],[0,80]],
+                      "params": {"seed": 5, "dh": 12}})",
+                  &s)
+                  .ok());
+  EXPECT_EQ(s.params.GetInt(TerrainParam::kSeed), 5);
+  EXPECT_EQ(s.params.Get(TerrainParam::kDh), 12);
+  EXPECT_EQ(s.points.size(), 4u);
+  TerrainState back;
+  ASSERT_TRUE(ApplyTerrainStateJson(TerrainStateJson(s), &back).ok());
+  EXPECT_TRUE(back.params == s.params);
+  EXPECT_EQ(back.points, s.points);
+  const TerrainState before = back;
+  Status bad = ApplyTerrainStateJson(R"({"preset": "fig16", "params": {"c": 0.5}})", &back);
+  EXPECT_EQ(bad.Line(), "c: 0.5 is out of range; must be a number in [1, 100]");
+  EXPECT_TRUE(back.params == before.params);  // unchanged on error
+  EXPECT_EQ(ApplyTerrainStateJson(R"({"contour": [[0,0],[1,1]]})", &back).field(), "contour");
+  EXPECT_EQ(ApplyTerrainStateJson(R"({"builtin": "x"})", &back).field(), "builtin");
+}
+
+TEST(TerrainState, HashRegrowsTheSameMountain) {
+  TerrainState s;
+  ASSERT_TRUE(SetTerrainBuiltin("dumbbell", &s).ok());
+  ASSERT_TRUE(SetTerrainPreset("improved", &s).ok());
+  ASSERT_TRUE(s.params.Set(TerrainParam::kSeed, 11).ok());
+  TerrainState back;
+  std::vector<std::string> notices;
+  ApplyTerrainHash(EncodeTerrainHash(s), "", &back, &notices);
+  Result<Terrain> a = Grow(*StateSeed(s), s.params);
+  Result<Terrain> b = Grow(*StateSeed(back), back.params);
+  ASSERT_TRUE(a.ok() && b.ok());
+  ASSERT_EQ(a->contours.size(), b->contours.size());
+  for (std::size_t c = 0; c < a->contours.size(); ++c)
+    EXPECT_EQ(a->contours[c].ring, b->contours[c].ring);
+}
+
+}  // namespace
+}  // namespace niwa::terrain
