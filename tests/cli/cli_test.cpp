@@ -48,7 +48,8 @@ TEST(Cli, StatsPrintsOneJsonObjectWithTheRequiredFields) {
   ASSERT_EQ(r.code, 0) << r.err;
   nlohmann::json j = nlohmann::json::parse(r.out);
   for (const char* key : {"internodes", "branches", "leaves", "flowers", "height", "years", "seed",
-                          "preset", "ms", "ms_light", "ms_hormone", "ms_branching"}) {
+                          "preset", "ms", "ms_light", "ms_hormone", "ms_branching", "crown_width",
+                          "crown_base_height", "drooping_tips_share"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   EXPECT_EQ(j["years"], 6);

@@ -287,6 +287,37 @@ TEST(Species, WeepingShootsHangBelowTheirBases) {
   EXPECT_GT(static_cast<double>(hanging) / total, 0.7);
 }
 
+// The three --stats form fields on a hand-built tree whose answers are known.
+TEST(SpeciesForm, TreeFormFieldsFollowTheirDefinitions) {
+  Tree t;
+  t.years = 3;
+  auto add = [&t](int year, bool alive, std::vector<glm::vec3> nodes, std::vector<int> leaf_nodes) {
+    Branch b{};
+    b.id = static_cast<int>(t.branches.size());
+    b.parent = b.id == 0 ? -1 : 0;
+    b.year = year;
+    b.alive = alive;
+    b.nodes = std::move(nodes);
+    for (int n : leaf_nodes) b.leaves.push_back({n, kUp});
+    t.branches.push_back(b);
+  };
+  add(1, true, {{0, 0, 0}, {0, 100, 0}, {0, 200, 0}}, {2});         // trunk, leaf at 200
+  add(3, true, {{0, 100, 0}, {60, 120, 0}, {90, 110, 0}}, {1, 2});  // tip points down
+  add(3, true, {{0, 150, 0}, {0, 160, -40}, {0, 170, -70}}, {1});   // tip points up
+  add(3, true, {{0, 200, 0}, {-30, 190, 10}}, {});                  // one internode, down
+  add(3, false, {{0, 50, 0}, {500, 10, 500}}, {1});                 // dead: ignored
+  add(2, true, {{0, 120, 0}, {-50, 80, 0}, {-60, 70, 0}}, {1, 2});  // old year: no tip count
+  TreeForm f = ComputeTreeForm(t);
+  EXPECT_DOUBLE_EQ(f.crown_width, 150.0);              // x from -60 to 90 (z spans 80)
+  EXPECT_DOUBLE_EQ(f.crown_base_height, 70.0);         // the lowest leaf node: (-60, 70, 0)
+  EXPECT_DOUBLE_EQ(f.drooping_tips_share, 2.0 / 3.0);  // of the three living year-3 shoots
+  t.branches.clear();
+  f = ComputeTreeForm(t);
+  EXPECT_EQ(f.crown_width, 0.0);
+  EXPECT_EQ(f.crown_base_height, 0.0);
+  EXPECT_EQ(f.drooping_tips_share, 0.0);
+}
+
 // ---- Issue 17 item 1: the forms people know, measured as on the .glb ----
 
 // Sakura (Somei-yoshino) at 20 years: 5-9 m tall, crown at least as wide as tall, clear trunk.
