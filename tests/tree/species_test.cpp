@@ -386,27 +386,28 @@ TEST(SpeciesForm, GinkgoIsUprightWhenYoung) {
   EXPECT_GT(f.height, f.width);
 }
 
-// Issue 17 item 7: every species at 15 years grows within 2x the time of sakura-thesis at 15
-// (best of three, so a busy machine does not decide it).
+// Issue 17 item 7: every species at 15 years grows within 2x the time of sakura-thesis at 15.
+// The machine is shared, so each species is timed in turns with sakura-thesis (thesis, species,
+// thesis, ...) and the best of each is compared: a slow spell then slows both.
 TEST(SpeciesForm, EverySpeciesGrowsWithinTwiceSakuraThesisTime) {
-  auto best_ms = [](const std::string& name) {
-    double best = 1e30;
-    for (int i = 0; i < 3; ++i) {
-      GrowthTimings timings;
-      const Preset* p = FindPreset(name);
-      GrowRequest r;
-      r.preset = name;
-      r.params = p->params;
-      r.seed = p->seed;
-      r.years = 15;
-      Tree t = GrowTree(r, &timings);
-      best = std::min(best, timings.ms_total);
-    }
-    return best;
+  auto grow_ms = [](const std::string& name) {
+    GrowthTimings timings;
+    const Preset* p = FindPreset(name);
+    GrowRequest r;
+    r.preset = name;
+    r.params = p->params;
+    r.seed = p->seed;
+    r.years = 15;
+    Tree t = GrowTree(r, &timings);
+    return timings.ms_total;
   };
-  double thesis = best_ms("sakura-thesis");
   for (const char* name : {"sakura", "weeping", "pine", "tsutsuji", "keyaki", "maple", "ginkgo"}) {
-    EXPECT_LE(best_ms(name), 2.0 * thesis) << name;
+    double thesis = 1e30, species = 1e30;
+    for (int i = 0; i < 4; ++i) {
+      thesis = std::min(thesis, grow_ms("sakura-thesis"));
+      species = std::min(species, grow_ms(name));
+    }
+    EXPECT_LE(species, 2.0 * thesis) << name << ": " << species << " ms, sakura-thesis " << thesis;
   }
 }
 
