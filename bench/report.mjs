@@ -66,7 +66,7 @@ for (const p of peer) {
   peerTable += `| ${p.workload} | ${fmt(p.ms)} | ${runList(p)} | ${p.vertices ?? '—'} |\n`;
 }
 if (peer.length) {
-  const g = wasm.get('grow/sakura-15y'), m = wasm.get('mesh/sakura-15y');
+  const g = wasm.get('grow/sakura-thesis-15y'), m = wasm.get('mesh/sakura-thesis-15y');
   if (g && m) {
     notes.push(`Peer: ez-tree builds a different kind of tree (a recursive branching recipe straight to geometry, ` +
                `no simulation). The closest Niwa job, growing sakura 15 years and building its mesh in WASM, ` +
@@ -78,7 +78,7 @@ if (peer.length) {
 const goals = [];
 const goal = (what, value, ok) => goals.push(`| ${what} | ${value} | ${ok === undefined ? '—' : ok ? 'met' : '**missed**'} |`);
 const ms = (map, name) => map.get(name)?.ms;
-for (const name of ['grow/sakura-15y', 'grow/keyaki-15y', 'grow/tsutsuji-15y']) {
+for (const name of ['grow/sakura-thesis-15y', 'grow/keyaki-thesis-15y', 'grow/tsutsuji-thesis-15y']) {
   const n = ms(native, name), w = ms(wasm, name);
   if (n !== undefined) goal(`${name}: native ≤ 20 ms`, `${fmt(n)} ms`, n <= 20);
   if (n !== undefined && w !== undefined) goal(`${name}: WASM ≤ 2× native`, `${(w / n).toFixed(2)}×`, w <= 2 * n);
@@ -100,7 +100,7 @@ if (big) goal(`100,000-internode tree (${big.workload}, ${big.check} internodes)
 else goal('100,000-internode tree < 1 s native', 'no grow workload reaches 100,000 internodes', false);
 const g20 = ms(native, 'light/grid-20000'), r20 = ms(native, 'light/reference-20000');
 if (g20 && r20) goal('light at 20,000 spheres: grid ≥ 50× faster than the reference (native)', `${(r20 / g20).toFixed(0)}×`, r20 / g20 >= 50);
-const gm = ms(wasm, 'grow+mesh/sakura-15y');
+const gm = ms(wasm, 'grow+mesh/sakura-thesis-15y');
 if (gm && peer.length) {
   goal(`sakura 15 years grown + meshed in WASM faster than ${peer[0].workload}`,
        `${fmt(gm)} ms vs ${fmt(peer[0].ms)} ms: ${(gm / peer[0].ms).toFixed(2)}× its time`, gm < peer[0].ms);
@@ -198,19 +198,19 @@ Workloads:
 
 - \`grow/<preset>-<N>y\`: \`GrowTree\` of a preset with its parameters for N years, seed 1 (every
   preset at its default age, plus sakura at 10 and 20 years and maple at 10, 20 and 40 years for scaling).
-- \`grow+mesh/sakura-15y\`: \`GrowTree\` then \`BuildTreeMesh\`, the job compared with ez-tree.
+- \`grow+mesh/sakura-thesis-15y\`: \`GrowTree\` then \`BuildTreeMesh\`, the job compared with ez-tree.
 - \`light/grid-20000\`, \`light/reference-20000\`: as below with 20,000 spheres; the reference is timed once.
-- \`mesh/sakura-15y\`: \`BuildTreeMesh\` of the sakura 15-year tree (grown untimed).
-- \`glb/sakura-15y\`: \`WriteGlb\` of that mesh into memory.
-- \`sway/sakura-<N>y\`: one second of wind sway (thesis ch. 3) on sakura N years in a 10 m/s gust:
+- \`mesh/sakura-thesis-15y\`: \`BuildTreeMesh\` of the sakura 15-year tree (grown untimed).
+- \`glb/sakura-thesis-15y\`: \`WriteGlb\` of that mesh into memory.
+- \`sway/sakura-thesis-<N>y\`: one second of wind sway (thesis ch. 3) on sakura N years in a 10 m/s gust:
   30 \`SwaySimulator::Step\`s, each followed by the eq. 3.15 position of every original node; each run
   restarts from one state prepared 2 s into the gust. The speed goal is per internode and step.
-- \`sway-poses/sakura-<N>y\`: the same with \`WriteSwayPoses\` (16 floats per node point, what the page
+- \`sway-poses/sakura-thesis-<N>y\`: the same with \`WriteSwayPoses\` (16 floats per node point, what the page
   uploads each frame) instead of the position of every node.
 - Native runs (the CLI, both runners) keep freed memory in the process
   (\`native_cli/process_heap.h\`: glibc's mmap and trim thresholds raised), as the WASM heap does:
   otherwise glibc maps every large block afresh and returns it on free, and page faults dominate the
-  jobs that grow and free big vectors (on 2026-11-29, one run each: \`glb/sakura-15y\` 347 ms against
+  jobs that grow and free big vectors (on 2026-11-29, one run each: \`glb/sakura-thesis-15y\` 347 ms against
   28 ms, \`grow/maple-40y\` about 400 ms against 265 ms).
 - \`light/grid-2000\`, \`light/reference-2000\`: \`ComputeLightGrid\` and \`ComputeLightReference\` on
   2,000 leaf spheres drawn from \`Pcg32\` (seed 12345) in a 300 × 300 × 300 cm crown box, sky \`MakeSky(60°, 0°, sun weight 0.3)\`, opacity 0.5.

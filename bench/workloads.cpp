@@ -31,7 +31,7 @@ GrowRequest PresetRequest(const Preset& preset, int years) {
   return r;
 }
 
-const Preset& Sakura() { return *FindPreset("sakura"); }
+const Preset& Sakura() { return *FindPreset("sakura-thesis"); }
 
 Workload GrowWorkload(const Preset& preset, int years) {
   GrowRequest request = PresetRequest(preset, years);
@@ -91,9 +91,10 @@ Workload LightWorkload(bool reference, int spheres_count = kLightSpheres) {
 Workload SwayWorkload(int years, bool poses) {
   constexpr int kSteps = 30;
   Workload w;
-  w.name = std::string(poses ? "sway-poses" : "sway") + "/sakura-" + std::to_string(years) + "y";
+  w.name =
+      std::string(poses ? "sway-poses" : "sway") + "/sakura-thesis-" + std::to_string(years) + "y";
   w.note = "30 sway steps + " + std::string(poses ? "WriteSwayPoses" : "NodePositions (eq. 3.15)") +
-           ", sakura " + std::to_string(years) + " years, 10 m/s";
+           ", sakura-thesis " + std::to_string(years) + " years, 10 m/s";
   w.unit = "internode-step";
   std::shared_ptr<double> units = w.units;
   w.prepare = [years, poses, units]() -> WorkloadBody {
@@ -136,15 +137,17 @@ std::vector<Workload> MakeWorkloads() {
   }
   // Scaling with the number of leaves (issue: at most 2.5x time per doubling of leaves).
   for (int years : {10, 20, 40}) all.push_back(GrowWorkload(*FindPreset("maple"), years));
-  all.push_back({"grow+mesh/sakura-15y", "GrowTree and BuildTreeMesh of sakura 15 years", [] {
-                   return WorkloadBody([]() {
-                     TreeMesh mesh = BuildTreeMesh(GrowTree(PresetRequest(Sakura(), 15)));
-                     return static_cast<double>(mesh.bark.indices.size() / 3 +
-                                                mesh.leaves.indices.size() / 3 +
-                                                mesh.flowers.indices.size() / 3);
-                   });
-                 }});
-  all.push_back({"mesh/sakura-15y", "BuildTreeMesh of sakura 15 years (tree grown untimed)", [] {
+  all.push_back(
+      {"grow+mesh/sakura-thesis-15y", "GrowTree and BuildTreeMesh of sakura-thesis 15 years", [] {
+         return WorkloadBody([]() {
+           TreeMesh mesh = BuildTreeMesh(GrowTree(PresetRequest(Sakura(), 15)));
+           return static_cast<double>(mesh.bark.indices.size() / 3 +
+                                      mesh.leaves.indices.size() / 3 +
+                                      mesh.flowers.indices.size() / 3);
+         });
+       }});
+  all.push_back({"mesh/sakura-thesis-15y",
+                 "BuildTreeMesh of sakura-thesis 15 years (tree grown untimed)", [] {
                    auto tree = std::make_shared<Tree>(GrowTree(PresetRequest(Sakura(), 15)));
                    return WorkloadBody([tree]() {
                      TreeMesh mesh = BuildTreeMesh(*tree);
@@ -153,16 +156,16 @@ std::vector<Workload> MakeWorkloads() {
                                                 mesh.flowers.vertex_count());
                    });
                  }});
-  all.push_back(
-      {"glb/sakura-15y", "WriteGlb in memory of the sakura 15 years mesh (mesh untimed)", [] {
-         auto mesh =
-             std::make_shared<TreeMesh>(BuildTreeMesh(GrowTree(PresetRequest(Sakura(), 15))));
-         return WorkloadBody([mesh]() {
-           std::vector<unsigned char> bytes;
-           (void)WriteTreeGlb(*mesh, &bytes);
-           return static_cast<double>(bytes.size());
-         });
-       }});
+  all.push_back({"glb/sakura-thesis-15y",
+                 "WriteGlb in memory of the sakura-thesis 15 years mesh (mesh untimed)", [] {
+                   auto mesh = std::make_shared<TreeMesh>(
+                       BuildTreeMesh(GrowTree(PresetRequest(Sakura(), 15))));
+                   return WorkloadBody([mesh]() {
+                     std::vector<unsigned char> bytes;
+                     (void)WriteTreeGlb(*mesh, &bytes);
+                     return static_cast<double>(bytes.size());
+                   });
+                 }});
   all.push_back(LightWorkload(false));
   all.push_back(LightWorkload(true));
   all.push_back(LightWorkload(false, 20000));

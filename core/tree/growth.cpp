@@ -789,6 +789,30 @@ void Grower::ApplyPrunes() {
   }
 }
 
+void Grower::RaiseCrown() {
+  // Gardener's trim (docs/tree-species.md): cut every shoot whose tip hangs below trim_height.
+  float trim = static_cast<float>(tree_.params.Get(ParamId::kTrimHeight));
+  if (trim > 0.0f) {
+    for (const Branch& b : tree_.branches) {
+      if (b.alive && b.parent >= 0 && b.nodes.back().y < trim) Kill(b.id);
+    }
+  }
+  // Nursery crown raising (docs/tree-species.md): cut every side shoot whose base sits below
+  // min(clear_stem, 0.4 height); the seedling and its chain of terminal shoots (the trunk) stay.
+  float clear_stem = static_cast<float>(tree_.params.Get(ParamId::kClearStem));
+  if (clear_stem <= 0.0f) return;
+  float height = 0.0f;
+  for (const Branch& b : tree_.branches) {
+    if (!b.alive) continue;
+    for (const glm::vec3& n : b.nodes) height = std::max(height, n.y);
+  }
+  float line = std::min(clear_stem, 0.4f * height);
+  for (const Branch& b : tree_.branches) {
+    if (!b.alive || b.kind == ShootKind::kSeedling || b.kind == ShootKind::kTerminal) continue;
+    if (b.nodes.front().y < line) Kill(b.id);
+  }
+}
+
 void Grower::GrowYear() {
   Clock::time_point start = Clock::now();
   ++tree_.years;
@@ -809,6 +833,7 @@ void Grower::GrowYear() {
   SetNextYearBuds();
   ThickenBranches();
   ApplyPrunes();
+  RaiseCrown();
   timings_.ms_branching += branching + MsSince(shape_start);
   timings_.ms_total += MsSince(start);
 }

@@ -55,6 +55,7 @@ class Grower {
   void ThickenBranches();  // 2.4.4
   void SetNextYearBuds();  // step 5, including dormancy break (2.4.6)
   void ApplyPrunes();
+  void RaiseCrown();
   void Kill(int branch_id);
 
   GrowRequest request_;

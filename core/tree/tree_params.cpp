@@ -87,6 +87,12 @@ const std::vector<ParamSpec>& Rows() {
        "Tree age at which the lateral break probability reaches P_l_old."},
       {Id(P::kDwarfLateralFlowers), "dwarf_flowers", "", "", 1, 0, 1, true, "branching", kGrow,
        "1: the lateral buds of dwarf shoots are flower buds (sakura, thesis 2.5.4)."},
+      {Id(P::kClearStem), "clear_stem", "", "cm", 0, 0, 1000, false, "branching", kGrow,
+       "Nursery crown raising (not in the thesis): each year, side shoots starting below "
+       "min(clear_stem, 0.4 × height) are cut; 0: off."},
+      {Id(P::kTrimHeight), "trim_height", "", "cm", 0, 0, 500, false, "branching", kGrow,
+       "Gardener's trim of hanging shoots (not in the thesis): each year, a shoot whose tip hangs "
+       "below this height is cut; 0: off."},
 
       {Id(P::kUseLight), "use_light", "", "", 1, 0, 1, true, "light", kGrow,
        "1: light model on (death and phototropism); 0: every shoot gets full light, straight up."},

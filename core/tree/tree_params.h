@@ -50,6 +50,8 @@ enum class TreeParam : int {
   kPLOld,
   kPLYears,
   kDwarfLateralFlowers,
+  kClearStem,   // not in the thesis: nursery crown raising (docs/tree-species.md)
+  kTrimHeight,  // not in the thesis: hanging shoots cut above the ground (docs/tree-species.md)
   // light model (thesis 2.3.2, 2.4.1)
   kUseLight,
   kKDeath,

@@ -22,6 +22,38 @@ std::string FormatFloat(float value) {
 
 }  // namespace
 
+TreeForm ComputeTreeForm(const Tree& tree) {
+  TreeForm form;
+  float lo[2] = {0, 0}, hi[2] = {0, 0};
+  bool any_node = false, any_leaf = false;
+  int tips = 0, drooping = 0;
+  for (const Branch& b : tree.branches) {
+    if (!b.alive) continue;
+    for (const glm::vec3& n : b.nodes) {
+      float xz[2] = {n.x, n.z};
+      for (int k = 0; k < 2; ++k) {
+        lo[k] = any_node ? std::min(lo[k], xz[k]) : xz[k];
+        hi[k] = any_node ? std::max(hi[k], xz[k]) : xz[k];
+      }
+      any_node = true;
+    }
+    for (const Leaf& leaf : b.leaves) {
+      double y = b.nodes[static_cast<std::size_t>(leaf.node)].y;
+      form.crown_base_height = any_leaf ? std::min(form.crown_base_height, y) : y;
+      any_leaf = true;
+    }
+    if (b.year == tree.years && b.nodes.size() >= 2) {
+      ++tips;
+      const glm::vec3& tip = b.nodes.back();
+      const glm::vec3& before = b.nodes[b.nodes.size() - 2];
+      if (tip.y < before.y) ++drooping;
+    }
+  }
+  form.crown_width = std::max(double(hi[0]) - lo[0], double(hi[1]) - lo[1]);
+  form.drooping_tips_share = tips > 0 ? double(drooping) / tips : 0.0;
+  return form;
+}
+
 std::vector<std::string> IdlePruneNotices(const std::vector<Prune>& prunes, const Tree& grown) {
   std::vector<std::string> notices;
   for (const Prune& prune : prunes) {
@@ -43,6 +75,10 @@ std::string TreeStatsJson(const Tree& tree, const GrowthTimings& t, const TreeSt
   j["flowers"] = s.flowers;
   j["height"] = s.height;
   j["truncated"] = tree.truncated;
+  TreeForm form = ComputeTreeForm(tree);
+  j["crown_width"] = form.crown_width;
+  j["crown_base_height"] = form.crown_base_height;
+  j["drooping_tips_share"] = form.drooping_tips_share;
   j["ms"] = t.ms_total;
   j["ms_light"] = t.ms_light;
   j["ms_hormone"] = t.ms_hormone;

@@ -279,8 +279,8 @@ const ex24 = { K_dir_trunk: 150000, K_dir_tip: 50000, K_rev: 0.8, K_vdel: 1, omi
 const bare = { m_leaf: 0, s_leaf: 0 };
 const ex5 = { K_dir_trunk: 700000, K_dir_tip: 90000, K_rev: 0.7, K_vdel: 1, m_leaf: 5, s_leaf: 20,
   omit_limit: 3 };
-const spreading = { preset: 'sakura', years: 5 };
-const upright = { preset: 'keyaki', years: 6 };
+const spreading = { preset: 'sakura-thesis', years: 5 };
+const upright = { preset: 'keyaki-thesis', years: 6 };
 
 // ---------------------------------------------------------------------------------------------
 // The figures of thesis section 2.5
@@ -378,9 +378,9 @@ const FIGURES = {
     for (let seed = 1; seed <= 5; ++seed) regrowthReport({ ...p10, seed });
   },
   '2.19': () => figure('fig2_19', 'Fig. 2.19: the three species at 15 years (own scales)', [
-    { preset: 'sakura', years: 15, leaves: false, label: '(a) sakura (no leaves drawn)' },
-    { preset: 'keyaki', years: 15, label: '(b) keyaki' },
-    { preset: 'tsutsuji', years: 15, label: '(c) tsutsuji' },
+    { preset: 'sakura-thesis', years: 15, leaves: false, label: '(a) sakura (no leaves drawn)' },
+    { preset: 'keyaki-thesis', years: 15, label: '(b) keyaki' },
+    { preset: 'tsutsuji-thesis', years: 15, label: '(c) tsutsuji' },
   ], { ownScale: true }).forEach((g) => shootReport(g.p)),
   '2.20': () => {
     const rows = growthRows();
@@ -401,7 +401,7 @@ const FIGURES = {
     ]);
   },
   '2.22': () => figure('fig2_22', 'Fig. 2.22: sakura growing (years 3 to 15, one scale; leaves not drawn)',
-    [3, 6, 9, 12, 15].map((y, i) => ({ preset: 'sakura', years: y, leaves: false,
+    [3, 6, 9, 12, 15].map((y, i) => ({ preset: 'sakura-thesis', years: y, leaves: false,
       label: `(${'abcde'[i]}) year ${y}` }))),
   mappings: () => {
     // Hormone- and age-dependent ranges of table 2.2 as the model computes them (docs/growth-model.md).
@@ -423,7 +423,7 @@ const FIGURES = {
       [m.series(`${key}_long${unit === 'cm' ? '_cm' : ''}`, 'long shoot', '#8a5a2b'),
         m.series(`${key}_dwarf${unit === 'cm' ? '_cm' : ''}`, 'dwarf shoot', '#c9a36b')],
       { xMin: 0, xTicks: ticks, width: 420 });
-    const sakura = mappings('sakura');
+    const sakura = mappings('sakura-thesis');
     plotsFigure('mappings_sakura', [
       longDwarf(sakura, 'N', 'N vs hormone (sakura)', 'nodes'),
       longDwarf(sakura, 'D', 'D vs hormone', 'cm'),
@@ -437,7 +437,7 @@ const FIGURES = {
         points: sakura.age.map((r) => [r.year, r.P_l_max]) }], { xMin: 1, xTicks: [1, 5, 10, 15], width: 420 }),
     ]);
     // Fig. 2.5's shape: keyaki's D as the preset has it (length_step 0) and with length_step 0.5.
-    const keyaki = mappings('keyaki'), stepped = mappings('keyaki', ['length_step=0.5']);
+    const keyaki = mappings('keyaki-thesis'), stepped = mappings('keyaki-thesis', ['length_step=0.5']);
     plotsFigure('mappings_keyaki_length_step', [
       longDwarf(keyaki, 'D', 'keyaki D, length_step 0 (preset)', 'cm'),
       longDwarf(stepped, 'D', 'keyaki D, length_step 0.5', 'cm'),
@@ -445,7 +445,7 @@ const FIGURES = {
     ]);
   },
   '2.23': () => figure('fig2_23', 'Fig. 2.23: keyaki, same conditions, seeds 1 to 4 (15 years)',
-    [1, 2, 3, 4].map((s, i) => ({ preset: 'keyaki', years: 15, seed: s,
+    [1, 2, 3, 4].map((s, i) => ({ preset: 'keyaki-thesis', years: 15, seed: s,
       label: `(${'abcd'[i]}) seed ${s}` }))).forEach((g) => shootReport(g.p)),
 };
 
@@ -537,7 +537,7 @@ function trunkToCut(tree, year) {
   }
 }
 
-const SPECIES = [['sakura', '#d0407a'], ['keyaki', '#2a7a2a'], ['tsutsuji', '#c08000']];
+const SPECIES = [['sakura-thesis', '#d0407a'], ['keyaki-thesis', '#2a7a2a'], ['tsutsuji-thesis', '#c08000']];
 let growthCache = null;
 function growthRows(timed = false) {
   if (!growthCache || (timed && !growthCache.timed)) {

@@ -11,7 +11,7 @@ import { ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, snapshot
 import { ssim } from './ssim.mjs';
 
 const SIZE = 512;
-const TREE = 'preset=sakura&seed=1&years=15';
+const TREE = 'preset=sakura-thesis&seed=1&years=15';
 const problems = [];
 const root = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
 const camOf = (hash) => (hash.match(/cam=([^&]*)/) || [])[1];

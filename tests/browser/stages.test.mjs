@@ -27,7 +27,7 @@ async function edit(page, key, value) {
 await runBrowserTest(async (server, browser) => {
   const context = await newContext(browser, { viewport: { width: 1100, height: 760 } });
   const page = watchPage(await context.newPage(), problems);
-  await page.goto(`${server.url}#preset=keyaki&seed=1&years=6`);
+  await page.goto(`${server.url}#preset=keyaki-thesis&seed=1&years=6`);
   await waitReady(page, 0, 100);
   const start = await hooks(page);
   check('the first tree is one grow', start.grows === 1 && start.grown === 1 && start.restages === 0, JSON.stringify(start));
@@ -84,7 +84,7 @@ await runBrowserTest(async (server, browser) => {
   const growth = await edit(page, 'alpha_l', '0.6');
   check('a growth edit sends one grow', growth.after.grows === growth.before.grows + 1 && growth.after.grown === growth.before.grown + 1,
     `grow requests ${growth.before.grows} -> ${growth.after.grows}, grown ${growth.before.grown} -> ${growth.after.grown}`);
-  const native = nativeStats(['--preset', 'keyaki', '--seed', '1', '--years', '6', '--set', 'alpha_l=0.6']);
+  const native = nativeStats(['--preset', 'keyaki-thesis', '--seed', '1', '--years', '6', '--set', 'alpha_l=0.6']);
   check('the regrown tree equals the native CLI', growth.after.internodes === String(native.internodes),
     `web ${growth.after.internodes} native ${native.internodes}`);
 

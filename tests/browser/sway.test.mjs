@@ -14,12 +14,12 @@ await runBrowserTest(async (server, browser) => {
   const context = await newContext(browser, { viewport: { width: 1100, height: 760 } });
   const page = watchPage(await context.newPage(), problems);
   // A small tree seen from +z (yaw 0): the wind's +x direction (wind_dir 0) is to the right.
-  await page.goto(`${server.url}#preset=keyaki&seed=1&years=7`);
+  await page.goto(`${server.url}#preset=keyaki-thesis&seed=1&years=7`);
   await waitReady(page, 0, 100);
   const cam = (await page.evaluate(() => location.hash)).match(/cam=([^&]*)/)[1].split(',');
   cam[0] = '0';
   cam[1] = '0.15';
-  await page.goto(`${server.url}#preset=keyaki&seed=1&years=7&cam=${cam.join(',')}`);
+  await page.goto(`${server.url}#preset=keyaki-thesis&seed=1&years=7&cam=${cam.join(',')}`);
   await page.reload();
   await waitReady(page, 0, 100);
   const still = await snapshotCanvas(page, 'still');

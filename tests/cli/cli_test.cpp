@@ -23,7 +23,8 @@ bool Exists(const std::string& path) { return static_cast<bool>(std::ifstream(pa
 TEST(Cli, PresetsListsEveryPreset) {
   Result r = RunNiwa({"presets"});
   EXPECT_EQ(r.code, 0);
-  for (const char* name : {"binary", "sakura", "keyaki", "tsutsuji"}) {
+  for (const char* name : {"binary", "sakura-thesis", "keyaki-thesis", "tsutsuji-thesis", "sakura",
+                           "keyaki", "tsutsuji", "weeping", "pine", "maple", "ginkgo"}) {
     EXPECT_NE(r.out.find(std::string(name) + "\t"), std::string::npos) << name;
   }
 }
@@ -42,28 +43,29 @@ TEST(Cli, HelpOnEveryCommand) {
 }
 
 TEST(Cli, StatsPrintsOneJsonObjectWithTheRequiredFields) {
-  Result r =
-      RunNiwa({"tree", "grow", "--preset", "tsutsuji", "--years", "6", "--seed", "4", "--stats"});
+  Result r = RunNiwa(
+      {"tree", "grow", "--preset", "tsutsuji-thesis", "--years", "6", "--seed", "4", "--stats"});
   ASSERT_EQ(r.code, 0) << r.err;
   nlohmann::json j = nlohmann::json::parse(r.out);
   for (const char* key : {"internodes", "branches", "leaves", "flowers", "height", "years", "seed",
-                          "preset", "ms", "ms_light", "ms_hormone", "ms_branching"}) {
+                          "preset", "ms", "ms_light", "ms_hormone", "ms_branching", "crown_width",
+                          "crown_base_height", "drooping_tips_share"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   EXPECT_EQ(j["years"], 6);
   EXPECT_EQ(j["seed"], 4);
-  EXPECT_EQ(j["preset"], "tsutsuji");
+  EXPECT_EQ(j["preset"], "tsutsuji-thesis");
   EXPECT_GT(j["internodes"].get<int>(), 0);
 }
 
 TEST(Cli, SetAndParamsFileChangeTheTree) {
-  Result base = RunNiwa({"tree", "grow", "--preset", "sakura", "--years", "5", "--stats"});
-  Result set = RunNiwa(
-      {"tree", "grow", "--preset", "sakura", "--years", "5", "--set", "N_high=10", "--stats"});
+  Result base = RunNiwa({"tree", "grow", "--preset", "sakura-thesis", "--years", "5", "--stats"});
+  Result set = RunNiwa({"tree", "grow", "--preset", "sakura-thesis", "--years", "5", "--set",
+                        "N_high=10", "--stats"});
   std::string file = TempPath("params.json");
   std::ofstream(file) << R"({"N_high": 10})";
-  Result json =
-      RunNiwa({"tree", "grow", "--preset", "sakura", "--years", "5", "--params", file, "--stats"});
+  Result json = RunNiwa(
+      {"tree", "grow", "--preset", "sakura-thesis", "--years", "5", "--params", file, "--stats"});
   ASSERT_EQ(set.code, 0);
   auto a = nlohmann::json::parse(base.out), b = nlohmann::json::parse(set.out),
        c = nlohmann::json::parse(json.out);
@@ -151,15 +153,16 @@ TEST(Cli, SvgOptionsChangeTheDrawing) {
 }
 
 TEST(Cli, UrlGrowsTheSameTreeAsTheFlags) {
-  Result flags = RunNiwa({"tree", "grow", "--preset", "keyaki", "--years", "7", "--seed", "3",
-                          "--set", "gamma=0.3", "--prune", "6:b2", "--stats"});
-  Result url = RunNiwa(
-      {"tree", "grow", "--url", "#preset=keyaki&seed=3&years=7&gamma=0.3&prune=6:b2", "--stats"});
+  Result flags = RunNiwa({"tree", "grow", "--preset", "keyaki-thesis", "--years", "7", "--seed",
+                          "3", "--set", "gamma=0.3", "--prune", "6:b2", "--stats"});
+  Result url = RunNiwa({"tree", "grow", "--url",
+                        "#preset=keyaki-thesis&seed=3&years=7&gamma=0.3&prune=6:b2", "--stats"});
   ASSERT_EQ(url.code, 0) << url.err;
   auto a = nlohmann::json::parse(flags.out), b = nlohmann::json::parse(url.out);
   EXPECT_EQ(a["internodes"], b["internodes"]);
   EXPECT_EQ(a["leaves"], b["leaves"]);
-  ExpectOneLineError(RunNiwa({"tree", "grow", "--url", "preset=keyaki&gamma=9"}), "--url: gamma");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--url", "preset=keyaki-thesis&gamma=9"}),
+                     "--url: gamma");
 }
 
 }  // namespace
@@ -170,7 +173,7 @@ namespace {
 
 TEST(Cli, MappingsPrintTheHormoneAndAgeRangesAsCsv) {
   std::ostringstream out, err;
-  ASSERT_EQ(RunCli({"tree", "mappings", "--preset", "sakura"}, out, err), 0) << err.str();
+  ASSERT_EQ(RunCli({"tree", "mappings", "--preset", "sakura-thesis"}, out, err), 0) << err.str();
   std::istringstream lines(out.str());
   std::string header, first, line;
   std::getline(lines, header);
@@ -194,7 +197,7 @@ TEST(Cli, MappingsPrintTheHormoneAndAgeRangesAsCsv) {
 // ---- tree render-stats (thesis ch. 4 hybrid rendering counts) ----
 
 TEST(CliRenderStats, PrintsOneJsonObjectWithTheTable41Keys) {
-  Result r = RunNiwa({"tree", "render-stats", "--preset", "sakura", "--years", "6"});
+  Result r = RunNiwa({"tree", "render-stats", "--preset", "sakura-thesis", "--years", "6"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.out.find('\n'), r.out.size() - 1);
   nlohmann::json j = nlohmann::json::parse(r.out);
@@ -207,19 +210,19 @@ TEST(CliRenderStats, PrintsOneJsonObjectWithTheTable41Keys) {
             j["branch_polygons"].get<int>() + j["leaf_polygons"].get<int>());
   EXPECT_GT(j["full_polygons"].get<int>(), 20 * j["primitives"].get<int>());
   // Full mode reports the full mesh; a closer camera makes more cards.
-  Result full =
-      RunNiwa({"tree", "render-stats", "--preset", "sakura", "--years", "6", "--mode", "full"});
+  Result full = RunNiwa(
+      {"tree", "render-stats", "--preset", "sakura-thesis", "--years", "6", "--mode", "full"});
   ASSERT_EQ(full.code, 0) << full.err;
   nlohmann::json f = nlohmann::json::parse(full.out);
   EXPECT_EQ(f["lines"], 0);
   EXPECT_EQ(f["total_polygons"], j["full_polygons"]);
   std::string cam = j["cam"].get<std::string>();
   Result same =
-      RunNiwa({"tree", "render-stats", "--preset", "sakura", "--years", "6", "--cam", cam});
+      RunNiwa({"tree", "render-stats", "--preset", "sakura-thesis", "--years", "6", "--cam", cam});
   ASSERT_EQ(same.code, 0) << same.err;
   EXPECT_EQ(nlohmann::json::parse(same.out)["lines"], j["lines"]);
-  Result close = RunNiwa({"tree", "render-stats", "--preset", "sakura", "--years", "6", "--cam",
-                          cam, "--distance", "0.5"});
+  Result close = RunNiwa({"tree", "render-stats", "--preset", "sakura-thesis", "--years", "6",
+                          "--cam", cam, "--distance", "0.5"});
   ASSERT_EQ(close.code, 0) << close.err;
   EXPECT_GT(nlohmann::json::parse(close.out)["branch_polygons"].get<int>(),
             j["branch_polygons"].get<int>());
@@ -227,7 +230,8 @@ TEST(CliRenderStats, PrintsOneJsonObjectWithTheTable41Keys) {
 
 TEST(CliRenderStats, RenderRowsOfTheParameterTableSetTheOptions) {
   auto run = [](std::vector<std::string> extra) {
-    std::vector<std::string> args = {"tree", "render-stats", "--preset", "sakura", "--years", "6"};
+    std::vector<std::string> args = {"tree",          "render-stats", "--preset",
+                                     "sakura-thesis", "--years",      "6"};
     args.insert(args.end(), extra.begin(), extra.end());
     Result r = RunNiwa(args);
     EXPECT_EQ(r.code, 0) << r.err;
@@ -236,7 +240,7 @@ TEST(CliRenderStats, RenderRowsOfTheParameterTableSetTheOptions) {
   nlohmann::json plain = run({});
   nlohmann::json by_set = run({"--set", "line_threshold=12"});
   nlohmann::json by_flag = run({"--threshold", "12"});
-  nlohmann::json by_url = run({"--url", "preset=sakura&years=6&line_threshold=12"});
+  nlohmann::json by_url = run({"--url", "preset=sakura-thesis&years=6&line_threshold=12"});
   EXPECT_EQ(by_set["threshold"], 12.0);
   EXPECT_EQ(by_set["lines"], by_flag["lines"]);
   EXPECT_EQ(by_url["lines"], by_flag["lines"]);

@@ -15,7 +15,8 @@ for (const preset of presets) {
     const args = ['tree', 'grow', '--preset', preset, '--years', String(years), '--seed', String(seed)];
     const a = JSON.parse(run(native, [...args, '--stats', '--out', join(dir, `${preset}-n.json`)]));
     const b = JSON.parse(run(wasm, [...args, '--stats', '--out', join(dir, `${preset}-w.json`)]));
-    const keys = ['internodes', 'branches', 'leaves', 'flowers', 'years', 'seed', 'preset'];
+    const keys = ['internodes', 'branches', 'leaves', 'flowers', 'years', 'seed', 'preset',
+      'crown_width', 'crown_base_height', 'drooping_tips_share'];
     const same = keys.every((k) => a[k] === b[k]);
     check(same, `${preset} seed ${seed}: stats native ${JSON.stringify(keys.map((k) => a[k]))} wasm ${JSON.stringify(keys.map((k) => b[k]))}`);
     const ta = JSON.parse(readFileSync(join(dir, `${preset}-n.json`), 'utf8'));

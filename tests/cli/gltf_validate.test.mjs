@@ -131,8 +131,8 @@ let tampered = null;
 const dir = mkdtempSync(join(tmpdir(), 'niwa-gltf-'));
 try {
   const cases = presets.map((p) => ({ label: p, args: ['--preset', p, '--years', '6'], empty: false }));
-  if (presets.includes('sakura')) {  // sakura flowers from its 7th year on
-    cases.push({ label: 'sakura at 8 years', args: ['--preset', 'sakura', '--years', '8'],
+  if (presets.includes('sakura-thesis')) {  // sakura flowers from its 7th year on
+    cases.push({ label: 'sakura at 8 years', args: ['--preset', 'sakura-thesis', '--years', '8'],
                  empty: false, flowers: true });
   }
   if (presets.length) {
@@ -203,7 +203,7 @@ try {
   const runners = [{ label: 'native', cmd: native, pre: [] }];
   if (existsSync(wasm)) runners.push({ label: 'wasm', cmd: process.execPath, pre: [wasm] });
   else console.log(`note: no WASM CLI at ${wasm}; sway .glb checked on the native CLI only`);
-  const swayArgs = ['tree', 'sway', '--preset', 'sakura', '--years', '6', '--wind', '10', '--gust', '0:4',
+  const swayArgs = ['tree', 'sway', '--preset', 'sakura-thesis', '--years', '6', '--wind', '10', '--gust', '0:4',
                     '--duration', '6'];
   const swayBytes = {};
   for (const r of runners) {

@@ -30,7 +30,7 @@ TEST(ParamsJson, AppliesValidValuesAndRejectsBadOnesWithoutChanges) {
 }
 
 TEST(ParamsJson, WriteThenReadIsIdentity) {
-  TreeParams p = FindPreset("tsutsuji")->params;
+  TreeParams p = FindPreset("tsutsuji-thesis")->params;
   TreeParams q;
   EXPECT_EQ(ApplyParamsJson(ParamsToJson(p), &q).Line(), "");
   EXPECT_EQ(p, q);

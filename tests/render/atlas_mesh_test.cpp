@@ -44,7 +44,7 @@ void ExpectInTiles(const HybridScene& scene, const MeshBuffers& part, const char
 }
 
 TEST(AtlasMesh, EveryProjectedVertexLandsInATileInBothLeafModes) {
-  Tree tree = Grow("sakura", 6);
+  Tree tree = Grow("sakura-thesis", 6);
   TreeMesh mesh = BuildTreeMesh(tree);
   for (LeafMode mode : {LeafMode::kBranchCards, LeafMode::kClusterCards}) {
     RenderOptions options;
@@ -63,7 +63,7 @@ TEST(AtlasMesh, EveryProjectedVertexLandsInATileInBothLeafModes) {
 
 // Bark triangles in the atlas = the representatives' triangles times the planes per card.
 TEST(AtlasMesh, BarkTrianglesAreTheRepresentativesOnEveryPlane) {
-  Tree tree = Grow("keyaki", 6);
+  Tree tree = Grow("keyaki-thesis", 6);
   TreeMesh mesh = BuildTreeMesh(tree);
   RenderOptions options;
   options.card_planes = 3;
@@ -128,7 +128,7 @@ TEST(AtlasMesh, StraightBranchIsUprightInItsTile) {
 }
 
 TEST(DrawListSkin, CardCornersAndLineEndsFollowTheirNodes) {
-  Tree tree = Grow("sakura", 6);
+  Tree tree = Grow("sakura-thesis", 6);
   HybridScene scene = BuildHybridScene(tree, RenderOptions{});
   OrbitView view = FrameOrbitView(MeshBounds(BuildTreeMesh(tree)));
   RenderCamera camera = CameraFromOrbit(view, 512, 512);

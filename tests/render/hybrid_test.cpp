@@ -185,7 +185,7 @@ TEST(Leaves, LeafBranchesAreAlwaysCardsInBranchMode) {
 }
 
 TEST(Leaves, ClusterModeCoversEveryLeafBranchWithACluster) {
-  Tree tree = Grow("sakura", 6);
+  Tree tree = Grow("sakura-thesis", 6);
   RenderOptions options;  // kClusterCards
   HybridScene scene = BuildHybridScene(tree, options);
   int leaf_branches = 0;
@@ -371,7 +371,7 @@ TEST(Options, CheckNamesTheFieldAndRange) {
 
 // Counts agree with the draw list, and the sakura goal of the issue holds at the page's view.
 TEST(Counts, SakuraFifteenYearsDefaultViewMeetsOneTwentieth) {
-  Tree tree = Grow("sakura", 15);
+  Tree tree = Grow("sakura-thesis", 15);
   TreeMesh mesh = BuildTreeMesh(tree);
   RenderCamera camera = CameraFromOrbit(FrameOrbitView(MeshBounds(mesh)), 512, 512);
   for (LeafMode mode : {LeafMode::kClusterCards, LeafMode::kBranchCards}) {
@@ -441,7 +441,7 @@ TEST(Counts, SakuraFifteenYearsDefaultViewMeetsOneTwentieth) {
 }
 
 TEST(Counts, ZoomingInTurnsLinesIntoCards) {
-  Tree tree = Grow("sakura", 8);
+  Tree tree = Grow("sakura-thesis", 8);
   TreeMesh mesh = BuildTreeMesh(tree);
   OrbitView view = FrameOrbitView(MeshBounds(mesh));
   HybridScene scene = BuildHybridScene(tree, RenderOptions{});
@@ -460,7 +460,7 @@ TEST(Counts, ZoomingInTurnsLinesIntoCards) {
 // A zoom in and back out with hysteresis: no living branch is ever undrawn, each switches at most
 // twice (card → line → card or the reverse), and cards turn into lines and back.
 TEST(Counts, ZoomSequenceNeverDropsABranchAndDoesNotFlicker) {
-  Tree tree = Grow("sakura", 8);
+  Tree tree = Grow("sakura-thesis", 8);
   TreeMesh mesh = BuildTreeMesh(tree);
   OrbitView view = FrameOrbitView(MeshBounds(mesh));
   HybridScene scene = BuildHybridScene(tree, RenderOptions{});

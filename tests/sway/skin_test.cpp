@@ -61,7 +61,7 @@ Tree HandTree() {
 
 Tree Sakura(int years) {
   GrowRequest request;
-  const Preset* preset = FindPreset("sakura");
+  const Preset* preset = FindPreset("sakura-thesis");
   request.preset = preset->name;
   request.params = preset->params;
   request.seed = preset->seed;

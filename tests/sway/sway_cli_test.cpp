@@ -22,7 +22,7 @@ std::string ReadAll(const std::string& path) {
 }
 
 TEST(SwayCli, StatsHasTheCounts) {
-  Result r = RunNiwa({"tree", "sway", "--preset", "sakura", "--years", "5", "--wind", "10",
+  Result r = RunNiwa({"tree", "sway", "--preset", "sakura-thesis", "--years", "5", "--wind", "10",
                       "--gust", "0.2:1", "--duration", "2", "--stats"});
   ASSERT_EQ(r.code, 0) << r.err;
   nlohmann::json j = nlohmann::json::parse(r.out);

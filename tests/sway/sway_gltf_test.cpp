@@ -69,7 +69,7 @@ struct GlbSkinEval {
 };
 
 TEST(GltfSwayTest, SkinnedGlbHasJointsClipAndReproducesTheSkinnedPoses) {
-  const Tree tree = Grow("sakura", 5);
+  const Tree tree = Grow("sakura-thesis", 5);
   const SwayParams params = ShortGust();
   std::vector<unsigned char> bytes;
   SwayGlbInfo info;

@@ -54,7 +54,7 @@ Tree SymmetricTree() {
 
 Tree GrownTree(int years) {
   GrowRequest request;
-  const Preset* preset = FindPreset("sakura");
+  const Preset* preset = FindPreset("sakura-thesis");
   request.preset = preset->name;
   request.params = preset->params;
   request.seed = preset->seed;

@@ -99,7 +99,7 @@ Shape ShapeOf(const Tree& tree) {
 // "頂生枝が長枝となって勢いよく伸びており、側生枝はごく短い短枝になることが多い"; dwarfing occurs
 // "主に側生枝に" (2.3.3 e).
 TEST(Fig219, SakuraHasLongTerminalShootsAndVeryShortDwarfShoots) {
-  Tree tree = Grow15("sakura");
+  Tree tree = Grow15("sakura-thesis");
   std::vector<float> dwarf, terminal_long;
   int terminals = 0, terminal_dwarfs = 0, laterals = 0, lateral_dwarfs = 0, dwarfs = 0;
   float longest = 0.0f;
@@ -146,7 +146,7 @@ TEST(Fig219, SakuraHasLongTerminalShootsAndVeryShortDwarfShoots) {
 // (b) "初めは幹を伸ばすために側芽の発芽を抑制しているので分枝せずに幹が長く伸びているが、その後枝が
 // 細かく分枝しており、全体にホウキを逆さに立てたような樹形".
 TEST(Fig219, KeyakiIsABareTrunkUnderAFinelyBranchedBroom) {
-  Tree tree = Grow15("keyaki");
+  Tree tree = Grow15("keyaki-thesis");
   Shape s = ShapeOf(tree);
   int shoots = 0, leaves = 0, low_leaves = 0;
   for (const Branch& b : tree.branches) {
@@ -168,7 +168,7 @@ TEST(Fig219, KeyakiIsABareTrunkUnderAFinelyBranchedBroom) {
 // (it did with light_scale 0.6: the line turned dwarf in year 3).
 TEST(Fig219, KeyakiTrunkLineStaysLongForEightYears) {
   for (std::uint32_t seed : {1u, 2u, 3u}) {
-    Tree tree = Grow15("keyaki", seed);
+    Tree tree = Grow15("keyaki-thesis", seed);
     int id = 0, long_years = 0;
     while (id >= 0 && !tree.branches[static_cast<std::size_t>(id)].dwarf) {
       ++long_years;
@@ -185,7 +185,8 @@ TEST(Fig219, KeyakiTrunkLineStaysLongForEightYears) {
 // becomes a narrow spire; the preset keeps 0 (docs/FIGURES.md, fig. 2.19). If a change makes both
 // hold, this fails and the preset should take the step.
 TEST(Fig219, KeyakiLengthStepTradesTheBroomForSeveralTimesLongerLongShoots) {
-  Tree tree = Grow15("keyaki", FindPreset("keyaki")->seed, {{ParamId::kLengthStep, 0.5}});
+  Tree tree =
+      Grow15("keyaki-thesis", FindPreset("keyaki-thesis")->seed, {{ParamId::kLengthStep, 0.5}});
   const auto [long_shoots, dwarf] = LongAndDwarf(tree);
   ASSERT_FALSE(long_shoots.empty());
   ASSERT_FALSE(dwarf.empty());
@@ -196,7 +197,7 @@ TEST(Fig219, KeyakiLengthStepTradesTheBroomForSeveralTimesLongerLongShoots) {
 
 // (c) "長枝、短枝の差があまりなく、全体に丸い樹形".
 TEST(Fig219, TsutsujiIsRoundWithLittleLongDwarfDifference) {
-  Tree tree = Grow15("tsutsuji");
+  Tree tree = Grow15("tsutsuji-thesis");
   Shape s = ShapeOf(tree);
   const auto [long_shoots, dwarf] = LongAndDwarf(tree);
   EXPECT_GE(s.width, 0.8f * s.height);
@@ -210,7 +211,7 @@ TEST(Fig219, TsutsujiIsRoundWithLittleLongDwarfDifference) {
 // lean of the centroid averaged over three seeds is checked (keyaki's sympodial zig-zag, which
 // starts the same way for every seed, leaves it 2.3 deg).
 TEST(Fig219, ThesisSpeciesDoNotLean) {
-  for (const char* name : {"sakura", "keyaki", "tsutsuji"}) {
+  for (const char* name : {"sakura-thesis", "keyaki-thesis", "tsutsuji-thesis"}) {
     glm::vec3 mean(0.0f);
     for (std::uint64_t seed = 1; seed <= 3; ++seed) mean += Centroid(Grow15(name, seed)) / 3.0f;
     float lean_deg = std::atan2(std::hypot(mean.x, mean.z), mean.y) * 180.0f / 3.14159265f;

@@ -24,7 +24,7 @@ GrowRequest RequestFor(const std::string& preset, int years, uint64_t seed = 1) 
 }
 
 TEST(HormoneRamp, InterpolatesTableRangesByHormone) {
-  TreeParams p = FindPreset("sakura")->params;  // N 6 ~ 25, H_sat 0.58
+  TreeParams p = FindPreset("sakura-thesis")->params;  // N 6 ~ 25, H_sat 0.58
   EXPECT_FLOAT_EQ(HormoneRamp(p, 0.0f, ParamId::kNLow, ParamId::kNHigh), 6.0f);
   EXPECT_FLOAT_EQ(HormoneRamp(p, 0.29f, ParamId::kNLow, ParamId::kNHigh), 15.5f);
   EXPECT_FLOAT_EQ(HormoneRamp(p, 3.0f, ParamId::kNLow, ParamId::kNHigh), 25.0f);
@@ -34,8 +34,8 @@ TEST(HormoneRamp, InterpolatesTableRangesByHormone) {
 }
 
 TEST(ShootLengthRamp, LengthStepMovesLongAndDwarfShootsApartAtTheThreshold) {
-  TreeParams p = FindPreset("keyaki")->params;  // N 7 ~ 10, D 2 ~ 5 cm, H_sat 0.69
-  const float h = 0.276f;                       // share t = 0.4 of the ranges
+  TreeParams p = FindPreset("keyaki-thesis")->params;  // N 7 ~ 10, D 2 ~ 5 cm, H_sat 0.69
+  const float h = 0.276f;                              // share t = 0.4 of the ranges
   // length_step 0 (every preset): HormoneRamp's value for long and dwarf shoots alike.
   for (bool dwarf : {false, true}) {
     EXPECT_FLOAT_EQ(ShootLengthRamp(p, h, dwarf, ParamId::kNLow, ParamId::kNHigh),
@@ -109,7 +109,7 @@ TEST(Branching, BinaryTreeSplitsInTwoWithTheTableAngles) {
 
 // Straight shoot (no light, no bending) with lateral buds on every node.
 Tree StraightShoot(double phi, int buds_per_node) {
-  GrowRequest r = RequestFor("sakura", 1);
+  GrowRequest r = RequestFor("sakura-thesis", 1);
   EXPECT_TRUE(r.params.Set(ParamId::kUseLight, 0).ok());
   EXPECT_TRUE(r.params.Set(ParamId::kUseHormone, 0).ok());
   EXPECT_TRUE(r.params.Set(ParamId::kBGLow, 0).ok());
@@ -161,7 +161,7 @@ TEST(Phyllotaxis, DecussatePairsAreOppositeAndCrossed) {
 // opposite its parent's tip node, so its first lateral bud sits on the side of the parent's last
 // lateral bud (two steps of 180°), not opposite it.
 TEST(Phyllotaxis, TerminalShootContinuesTheSpiral) {
-  GrowRequest r = RequestFor("sakura", 2);
+  GrowRequest r = RequestFor("sakura-thesis", 2);
   for (auto [id, value] : {std::pair{ParamId::kUseLight, 0.0},
                            {ParamId::kUseHormone, 0.0},
                            {ParamId::kBGLow, 0.0},
@@ -193,7 +193,7 @@ TEST(Phyllotaxis, TerminalShootContinuesTheSpiral) {
 }
 
 TEST(Bending, StepCapsOfEquations27And29Hold) {
-  GrowRequest r = RequestFor("sakura", 6);
+  GrowRequest r = RequestFor("sakura-thesis", 6);
   EXPECT_TRUE(r.params.Set(ParamId::kBLLow, 1).ok());  // strong phototropism so the caps bind
   EXPECT_TRUE(r.params.Set(ParamId::kBLHigh, 1).ok());
   Tree tree = GrowTree(r);
@@ -214,7 +214,7 @@ TEST(Bending, StepCapsOfEquations27And29Hold) {
 }
 
 TEST(LightDeath, ShootsBelowKTimesHalfAlwaysDieAndAboveKNeverDo) {
-  GrowRequest r = RequestFor("sakura", 8);
+  GrowRequest r = RequestFor("sakura-thesis", 8);
   EXPECT_TRUE(r.params.Set(ParamId::kKDeath, 0.5).ok());
   Tree tree = GrowTree(r);
   int dead = 0;
@@ -236,7 +236,7 @@ TEST(LightDeath, ShootsBelowKTimesHalfAlwaysDieAndAboveKNeverDo) {
 // light_scale multiplies L: the lone first-year shoot sees the open sky (light 1 before scaling),
 // and a dimmer L (less hormone by eq. 2.2, more deaths) grows a smaller tree.
 TEST(LightScale, MultipliesTheLightOfEveryShoot) {
-  GrowRequest r = RequestFor("sakura", 1);
+  GrowRequest r = RequestFor("sakura-thesis", 1);
   EXPECT_TRUE(r.params.Set(ParamId::kLightScale, 1.0).ok());
   float open_sky = GrowTree(r).branches[0].light;
   EXPECT_NEAR(open_sky, 1.0f, 1e-3f);  // the grid removes the shoot's own sphere approximately
@@ -291,9 +291,9 @@ TEST(Properties, EveryPresetGrowsAConsistentTree) {
 }
 
 TEST(Determinism, SameSeedSameTreeOtherSeedOtherTree) {
-  Tree a = GrowTree(RequestFor("sakura", 8, 5));
-  Tree b = GrowTree(RequestFor("sakura", 8, 5));
-  Tree c = GrowTree(RequestFor("sakura", 8, 6));
+  Tree a = GrowTree(RequestFor("sakura-thesis", 8, 5));
+  Tree b = GrowTree(RequestFor("sakura-thesis", 8, 5));
+  Tree c = GrowTree(RequestFor("sakura-thesis", 8, 6));
   ASSERT_EQ(a.branches.size(), b.branches.size());
   for (std::size_t i = 0; i < a.branches.size(); ++i) {
     EXPECT_EQ(a.branches[i].nodes, b.branches[i].nodes);
@@ -335,7 +335,7 @@ TEST(Pruning, CutPartsNeverReturnAndRegrowthComesFromDormancyBreak) {
 }
 
 TEST(Pruning, BranchSelectorRemovesTheBranchAndEverythingAbove) {
-  GrowRequest r = RequestFor("sakura", 6);
+  GrowRequest r = RequestFor("sakura-thesis", 6);
   Tree full = GrowTree(r);
   int target = full.branches[1].id;
   r.prunes.push_back({6, target, -1});
@@ -350,7 +350,7 @@ TEST(Pruning, BranchSelectorRemovesTheBranchAndEverythingAbove) {
 // A prune that cuts nothing is reported (the CLI fails with it, the page shows it); the ones that
 // cut are not.
 TEST(Pruning, IdlePrunesAreNamedWithTheReason) {
-  GrowRequest r = RequestFor("sakura", 6);
+  GrowRequest r = RequestFor("sakura-thesis", 6);
   Tree tree = GrowTree(r);
   std::size_t by_year_3 = 0;
   while (tree.branches[by_year_3].year <= 3) ++by_year_3;
@@ -370,7 +370,7 @@ TEST(Pruning, IdlePrunesAreNamedWithTheReason) {
 }
 
 TEST(Limits, MaxInternodesStopsGrowthAndFlagsTruncation) {
-  GrowRequest r = RequestFor("sakura", 15);
+  GrowRequest r = RequestFor("sakura-thesis", 15);
   EXPECT_TRUE(r.params.Set(ParamId::kMaxInternodes, 1000).ok());
   Tree tree = GrowTree(r);
   EXPECT_TRUE(tree.truncated);
@@ -378,7 +378,7 @@ TEST(Limits, MaxInternodesStopsGrowthAndFlagsTruncation) {
 }
 
 TEST(Flowers, SakuraDwarfShootLateralsBloom) {
-  Tree tree = GrowTree(RequestFor("sakura", 12));
+  Tree tree = GrowTree(RequestFor("sakura-thesis", 12));
   EXPECT_GT(ComputeStats(tree).flowers, 0);
   for (const Branch& b : tree.branches) {
     for (const Bud& bud : b.buds) {
@@ -387,7 +387,7 @@ TEST(Flowers, SakuraDwarfShootLateralsBloom) {
       }
     }
   }
-  GrowRequest r = RequestFor("sakura", 12);
+  GrowRequest r = RequestFor("sakura-thesis", 12);
   EXPECT_TRUE(r.params.Set(ParamId::kDwarfLateralFlowers, 0).ok());
   EXPECT_EQ(ComputeStats(GrowTree(r)).flowers, 0);
 }
@@ -407,7 +407,7 @@ struct CutBack {
 };
 
 CutBack GrowCutBack(double threshold, double drop_ratio, int most) {
-  GrowRequest r = RequestFor("sakura", 5);
+  GrowRequest r = RequestFor("sakura-thesis", 5);
   EXPECT_TRUE(r.params.Set(ParamId::kUseLight, 0).ok());
   EXPECT_TRUE(r.params.Set(ParamId::kHBL, threshold).ok());
   EXPECT_TRUE(r.params.Set(ParamId::kDeltaL, 1).ok());

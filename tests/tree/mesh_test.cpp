@@ -89,7 +89,7 @@ void ExpectWellFormed(const MeshBuffers& m, const char* what) {
 }
 
 TEST(MeshTest, EmptyTreeGivesEmptyBuffers) {
-  for (const Tree& tree : {Tree{}, Grow("sakura", 0)}) {
+  for (const Tree& tree : {Tree{}, Grow("sakura-thesis", 0)}) {
     TreeMesh mesh = BuildTreeMesh(tree);
     EXPECT_EQ(mesh.bark.vertex_count(), 0u);
     EXPECT_TRUE(mesh.bark.indices.empty());
@@ -102,7 +102,7 @@ TEST(MeshTest, EmptyTreeGivesEmptyBuffers) {
 }
 
 TEST(MeshTest, CountsMatchTheFormulaWithFixedSides) {
-  Tree tree = Grow("sakura", 8);
+  Tree tree = Grow("sakura-thesis", 8);
   MeshOptions options;
   options.min_sides = options.max_sides = 6;
   TreeMesh mesh = BuildTreeMesh(tree, options);
@@ -139,7 +139,7 @@ TEST(MeshTest, BuffersAreWellFormedForEveryPreset) {
     ExpectWellFormed(mesh.leaves, "leaves");
     ExpectWellFormed(mesh.flowers, "flowers");
   }
-  TreeMesh flowering = BuildTreeMesh(Grow("sakura", 8));
+  TreeMesh flowering = BuildTreeMesh(Grow("sakura-thesis", 8));
   ASSERT_GT(flowering.flowers.vertex_count(), 0u);
   ExpectWellFormed(flowering.flowers, "sakura flowers");
 }
@@ -147,7 +147,7 @@ TEST(MeshTest, BuffersAreWellFormedForEveryPreset) {
 // The per-vertex branch/node ids (used for sway skinning) name the node each vertex hangs on:
 // a ring vertex lies one radius from its node, a leaf's base corners and a flower's hub near it.
 TEST(MeshTest, VertexNodeIdsNameTheNodeEachVertexHangsOn) {
-  Tree tree = Grow("sakura", 8);
+  Tree tree = Grow("sakura-thesis", 8);
   TreeMesh mesh = BuildTreeMesh(tree);
   ASSERT_EQ(mesh.bark_node_index.size(), mesh.bark.vertex_count());
   ASSERT_EQ(mesh.leaf_branch_id.size(), mesh.leaves.vertex_count());
@@ -184,7 +184,7 @@ TEST(MeshTest, VertexNodeIdsNameTheNodeEachVertexHangsOn) {
 }
 
 TEST(MeshTest, SidesStayInRangeAndGrowWithRadius) {
-  Tree tree = Grow("sakura", 8);
+  Tree tree = Grow("sakura-thesis", 8);
   MeshOptions options;
   options.min_sides = 4;
   options.max_sides = 10;
@@ -215,7 +215,7 @@ TEST(MeshTest, SidesStayInRangeAndGrowWithRadius) {
 }
 
 TEST(MeshTest, FirstRingOfAChildSitsOnItsParentsNode) {
-  Tree tree = Grow("sakura", 6);
+  Tree tree = Grow("sakura-thesis", 6);
   TreeMesh mesh = BuildTreeMesh(tree);
   auto blocks = BarkBlocks(mesh);
   int checked = 0;
@@ -290,7 +290,7 @@ TEST(MeshTest, DegenerateBranchesGiveNoNaN) {
 }
 
 TEST(MeshTest, LeafQuadsLieAlongTheLeafDirection) {
-  Tree tree = Grow("keyaki", 5);
+  Tree tree = Grow("keyaki-thesis", 5);
   const float size = static_cast<float>(tree.params.Get(ParamId::kLeafSize));
   TreeMesh mesh = BuildTreeMesh(tree);
   std::size_t quad = 0;
@@ -321,7 +321,7 @@ TEST(MeshTest, LeafQuadsLieAlongTheLeafDirection) {
 }
 
 TEST(MeshTest, FlowersAreThreePointTwoCentimetresAcrossAndFaceUp) {
-  Tree tree = Grow("sakura", 8);
+  Tree tree = Grow("sakura-thesis", 8);
   TreeMesh mesh = BuildTreeMesh(tree);
   ASSERT_GT(mesh.flowers.vertex_count(), 0u);
   for (std::size_t f = 0; f < mesh.flowers.vertex_count(); f += 22) {
@@ -337,7 +337,7 @@ TEST(MeshTest, FlowersAreThreePointTwoCentimetresAcrossAndFaceUp) {
 }
 
 TEST(MeshTest, UnitsScaleEveryPosition) {
-  Tree tree = Grow("tsutsuji", 4);
+  Tree tree = Grow("tsutsuji-thesis", 4);
   MeshOptions cm;
   cm.cm_to_units = 1.0f;
   TreeMesh in_cm = BuildTreeMesh(tree, cm);

@@ -1,6 +1,7 @@
 // Tests that each species preset beyond the thesis grows the branching rule that defines it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <glm/geometric.hpp>
@@ -9,7 +10,9 @@
 #include <vector>
 
 #include "tree/growth.h"
+#include "tree/mesh.h"
 #include "tree/presets.h"
+#include "tree/tree_report.h"
 
 namespace niwa {
 namespace {
@@ -28,6 +31,95 @@ Tree GrowPreset(const std::string& name, int years) {
 }
 
 const glm::vec3 kUp(0.0f, 1.0f, 0.0f);
+
+// The form as issue 17 measures it on the exported .glb, here on the TreeMesh the .glb writes
+// (metres): height = vertical extent, width = the larger horizontal extent, of every vertex.
+struct MeshForm {
+  double bottom = 0, top = 0, height = 0, width = 0;
+  double lowest_leaf = 0;             // lowest leaf vertex
+  double top_x = 0, top_z = 0;        // horizontal position of the highest vertex
+  double centre_x = 0, centre_z = 0;  // middle of the horizontal extents (trunk foot: 0, 0)
+  double leaf_x = 0, leaf_z = 0;      // horizontal centroid of the leaf vertices (trunk foot: 0, 0)
+  std::vector<double> band_width;     // width of the vertices in each tenth of the height
+};
+
+MeshForm MeasureMesh(const TreeMesh& mesh) {
+  MeshForm f;
+  double lo[3] = {1e9, 1e9, 1e9}, hi[3] = {-1e9, -1e9, -1e9};
+  f.lowest_leaf = 1e9;
+  for (const MeshBuffers* m : {&mesh.bark, &mesh.leaves, &mesh.flowers}) {
+    for (std::size_t i = 0; i + 2 < m->positions.size(); i += 3) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        lo[k] = std::min(lo[k], double(m->positions[i + k]));
+        hi[k] = std::max(hi[k], double(m->positions[i + k]));
+      }
+      if (m->positions[i + 1] >= hi[1]) {
+        f.top_x = m->positions[i];
+        f.top_z = m->positions[i + 2];
+      }
+      if (m == &mesh.leaves) {
+        f.lowest_leaf = std::min(f.lowest_leaf, double(m->positions[i + 1]));
+        f.leaf_x += double(m->positions[i]) / double(m->vertex_count());
+        f.leaf_z += double(m->positions[i + 2]) / double(m->vertex_count());
+      }
+    }
+  }
+  f.bottom = lo[1];
+  f.top = hi[1];
+  f.height = hi[1] - lo[1];
+  f.width = std::max(hi[0] - lo[0], hi[2] - lo[2]);
+  f.centre_x = 0.5 * (lo[0] + hi[0]);
+  f.centre_z = 0.5 * (lo[2] + hi[2]);
+  const int bands = 10;
+  std::vector<double> bx0(bands, 1e9), bx1(bands, -1e9), bz0(bands, 1e9), bz1(bands, -1e9);
+  for (const MeshBuffers* m : {&mesh.bark, &mesh.leaves}) {
+    for (std::size_t i = 0; i + 2 < m->positions.size(); i += 3) {
+      int band = static_cast<int>((m->positions[i + 1] - f.bottom) / f.height * bands);
+      band = std::min(std::max(band, 0), bands - 1);
+      auto b = static_cast<std::size_t>(band);
+      bx0[b] = std::min(bx0[b], double(m->positions[i]));
+      bx1[b] = std::max(bx1[b], double(m->positions[i]));
+      bz0[b] = std::min(bz0[b], double(m->positions[i + 2]));
+      bz1[b] = std::max(bz1[b], double(m->positions[i + 2]));
+    }
+  }
+  for (std::size_t b = 0; b < bands; ++b) {
+    f.band_width.push_back(bx1[b] < bx0[b] ? 0.0 : std::max(bx1[b] - bx0[b], bz1[b] - bz0[b]));
+  }
+  return f;
+}
+
+MeshForm PresetForm(const std::string& name, int years, Tree* grown = nullptr) {
+  Tree t = GrowPreset(name, years);
+  MeshForm f = MeasureMesh(BuildTreeMesh(t));
+  if (grown) *grown = std::move(t);
+  return f;
+}
+
+// Stems from the base: living shoots that start within the lowest 10 % of the tree and whose
+// own subtree reaches above 40 % of its height (the trunk itself counts as one).
+int StemsFromBase(const Tree& t) {
+  double height = ComputeStats(t).height;
+  int stems = 0;
+  for (const Branch& b : t.branches) {
+    if (!b.alive || b.nodes.front().y > 0.1 * height) continue;
+    if (b.parent >= 0 &&
+        t.branches[static_cast<std::size_t>(b.parent)].nodes.front().y <= 0.1 * height &&
+        b.kind == ShootKind::kTerminal)
+      continue;  // the continuation of a low shoot is the same stem
+    double reach = 0;
+    std::vector<int> stack = {b.id};
+    while (!stack.empty()) {
+      const Branch& c = t.branches[static_cast<std::size_t>(stack.back())];
+      stack.pop_back();
+      if (!c.alive) continue;
+      for (const glm::vec3& n : c.nodes) reach = std::max(reach, double(n.y));
+      for (int child : c.children) stack.push_back(child);
+    }
+    if (reach > 0.4 * height) ++stems;
+  }
+  return stems;
+}
 
 // Unit direction of the internode that ends at `node`.
 glm::vec3 NodeDirection(const Branch& b, int node) {
@@ -193,6 +285,130 @@ TEST(Species, WeepingShootsHangBelowTheirBases) {
   }
   ASSERT_GT(total, 100);
   EXPECT_GT(static_cast<double>(hanging) / total, 0.7);
+}
+
+// The three --stats form fields on a hand-built tree whose answers are known.
+TEST(SpeciesForm, TreeFormFieldsFollowTheirDefinitions) {
+  Tree t;
+  t.years = 3;
+  auto add = [&t](int year, bool alive, std::vector<glm::vec3> nodes, std::vector<int> leaf_nodes) {
+    Branch b{};
+    b.id = static_cast<int>(t.branches.size());
+    b.parent = b.id == 0 ? -1 : 0;
+    b.year = year;
+    b.alive = alive;
+    b.nodes = std::move(nodes);
+    for (int n : leaf_nodes) b.leaves.push_back({n, kUp});
+    t.branches.push_back(b);
+  };
+  add(1, true, {{0, 0, 0}, {0, 100, 0}, {0, 200, 0}}, {2});         // trunk, leaf at 200
+  add(3, true, {{0, 100, 0}, {60, 120, 0}, {90, 110, 0}}, {1, 2});  // tip points down
+  add(3, true, {{0, 150, 0}, {0, 160, -40}, {0, 170, -70}}, {1});   // tip points up
+  add(3, true, {{0, 200, 0}, {-30, 190, 10}}, {});                  // one internode, down
+  add(3, false, {{0, 50, 0}, {500, 10, 500}}, {1});                 // dead: ignored
+  add(2, true, {{0, 120, 0}, {-50, 80, 0}, {-60, 70, 0}}, {1, 2});  // old year: no tip count
+  TreeForm f = ComputeTreeForm(t);
+  EXPECT_DOUBLE_EQ(f.crown_width, 150.0);              // x from -60 to 90 (z spans 80)
+  EXPECT_DOUBLE_EQ(f.crown_base_height, 70.0);         // the lowest leaf node: (-60, 70, 0)
+  EXPECT_DOUBLE_EQ(f.drooping_tips_share, 2.0 / 3.0);  // of the three living year-3 shoots
+  t.branches.clear();
+  f = ComputeTreeForm(t);
+  EXPECT_EQ(f.crown_width, 0.0);
+  EXPECT_EQ(f.crown_base_height, 0.0);
+  EXPECT_EQ(f.drooping_tips_share, 0.0);
+}
+
+// ---- Issue 17 item 1: the forms people know, measured as on the .glb ----
+
+// Sakura (Somei-yoshino) at 20 years: 5-9 m tall, crown at least as wide as tall, clear trunk.
+TEST(SpeciesForm, SakuraIsASpreadingSomeiYoshinoWithAClearTrunk) {
+  MeshForm f = PresetForm("sakura", 20);
+  EXPECT_GE(f.height, 5.0);
+  EXPECT_LE(f.height, 9.0);
+  EXPECT_GE(f.width, f.height);
+  EXPECT_GE(f.lowest_leaf - f.bottom, 0.25 * f.height);
+}
+
+// Weeping (shidare-zakura) at 20 years: at least half of the last year's shoot tips point below
+// the horizontal, crown wider than 0.8 x height.
+TEST(SpeciesForm, WeepingCherryHangsAndSpreads) {
+  Tree t;
+  MeshForm f = PresetForm("weeping", 20, &t);
+  EXPECT_GE(ComputeTreeForm(t).drooping_tips_share, 0.5);
+  EXPECT_GT(f.width, 0.8 * f.height);
+  EXPECT_GE(f.bottom, -0.05) << "hanging shoots go below the ground";
+}
+
+// Pine at 15 years: conical, widest in its lower third, narrowing to the top.
+TEST(SpeciesForm, PineIsConicalAndWidestInItsLowerThird) {
+  MeshForm f = PresetForm("pine", 15);
+  std::size_t widest = 0;
+  for (std::size_t b = 0; b < f.band_width.size(); ++b) {
+    if (f.band_width[b] > f.band_width[widest]) widest = b;
+  }
+  EXPECT_LE(widest, 3u) << "widest band " << widest << " of 10";
+  EXPECT_LT(f.band_width[8], 0.6 * f.band_width[widest]);
+}
+
+// Tsutsuji at 15 years: a low mound at most 1.5 m tall and 1.2 x as wide, several stems from the
+// base, leaves down to the ground.
+TEST(SpeciesForm, TsutsujiIsALowMoundOfSeveralStemsLeafyToTheGround) {
+  Tree t;
+  MeshForm f = PresetForm("tsutsuji", 15, &t);
+  EXPECT_LE(f.height, 1.5);
+  EXPECT_GE(f.width, 1.2 * f.height);
+  EXPECT_LE(f.lowest_leaf - f.bottom, 0.1 * f.height);
+  EXPECT_GE(StemsFromBase(t), 3);
+}
+
+// Keyaki at 15 years and the default sun: the vase stands upright (the middle of the crown's
+// extents within 4 % of its height of the trunk's foot, horizontally, and so the centroid of its
+// foliage within 5 %) and is wider than a third of its height.
+TEST(SpeciesForm, KeyakiIsAnUprightVase) {
+  MeshForm f = PresetForm("keyaki", 15);
+  EXPECT_LT(std::hypot(f.centre_x, f.centre_z), 0.04 * f.height)
+      << "crown centre at " << f.centre_x << ", " << f.centre_z << " m, height " << f.height;
+  EXPECT_LT(std::hypot(f.leaf_x, f.leaf_z), 0.05 * f.height)
+      << "foliage centroid at " << f.leaf_x << ", " << f.leaf_z << " m, height " << f.height;
+  EXPECT_GT(f.width, 0.33 * f.height);
+}
+
+// Maple (Acer palmatum) at 15 years: a rounded, spreading crown, at least 0.7 x as wide as tall.
+TEST(SpeciesForm, MapleHasARoundedSpreadingCrown) {
+  MeshForm f = PresetForm("maple", 15);
+  EXPECT_GE(f.width, 0.7 * f.height);
+  EXPECT_LE(f.height, 8.0);
+}
+
+// Ginkgo at 15 years: young ginkgos are upright and sparse, taller than wide.
+TEST(SpeciesForm, GinkgoIsUprightWhenYoung) {
+  MeshForm f = PresetForm("ginkgo", 15);
+  EXPECT_GT(f.height, f.width);
+}
+
+// Issue 17 item 7: every species at 15 years grows within 2x the time of sakura-thesis at 15.
+// The machine is shared, so each species is timed in turns with sakura-thesis (thesis, species,
+// thesis, ...) and the best of each is compared: a slow spell then slows both.
+TEST(SpeciesForm, EverySpeciesGrowsWithinTwiceSakuraThesisTime) {
+  auto grow_ms = [](const std::string& name) {
+    GrowthTimings timings;
+    const Preset* p = FindPreset(name);
+    GrowRequest r;
+    r.preset = name;
+    r.params = p->params;
+    r.seed = p->seed;
+    r.years = 15;
+    Tree t = GrowTree(r, &timings);
+    return timings.ms_total;
+  };
+  for (const char* name : {"sakura", "weeping", "pine", "tsutsuji", "keyaki", "maple", "ginkgo"}) {
+    double thesis = 1e30, species = 1e30;
+    for (int i = 0; i < 4; ++i) {
+      thesis = std::min(thesis, grow_ms("sakura-thesis"));
+      species = std::min(species, grow_ms(name));
+    }
+    EXPECT_LE(species, 2.0 * thesis) << name << ": " << species << " ms, sakura-thesis " << thesis;
+  }
 }
 
 }  // namespace

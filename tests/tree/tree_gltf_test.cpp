@@ -134,7 +134,7 @@ void ExpectPrimitiveMatches(const Glb& glb, const json& primitive, const MeshBuf
 }
 
 TEST(TreeGltf, WritesAGlbWithBarkLeavesAndFlowers) {
-  TreeMesh mesh = BuildTreeMesh(Grow("sakura", 8));
+  TreeMesh mesh = BuildTreeMesh(Grow("sakura-thesis", 8));
   ASSERT_GT(mesh.flowers.vertex_count(), 0u);
   std::vector<unsigned char> bytes;
   ASSERT_EQ(WriteTreeGlb(mesh, &bytes).Line(), "");
@@ -206,7 +206,7 @@ TEST(TreeGltf, WritesAGlbWithBarkLeavesAndFlowers) {
 }
 
 TEST(TreeGltf, SkipsEmptyPrimitives) {
-  TreeMesh mesh = BuildTreeMesh(Grow("keyaki", 4));
+  TreeMesh mesh = BuildTreeMesh(Grow("keyaki-thesis", 4));
   ASSERT_EQ(mesh.flowers.vertex_count(), 0u);
   std::vector<unsigned char> bytes;
   ASSERT_EQ(WriteTreeGlb(mesh, &bytes).Line(), "");
@@ -222,7 +222,7 @@ TEST(TreeGltf, SkipsEmptyPrimitives) {
 
 TEST(TreeGltf, EmptyMeshGivesAValidSceneWithoutMesh) {
   std::vector<unsigned char> bytes{1, 2, 3};  // stale content is replaced
-  ASSERT_EQ(WriteTreeGlb(BuildTreeMesh(Grow("sakura", 0)), &bytes).Line(), "");
+  ASSERT_EQ(WriteTreeGlb(BuildTreeMesh(Grow("sakura-thesis", 0)), &bytes).Line(), "");
   Glb glb = ParseGlb(bytes);
   EXPECT_TRUE(glb.bin.empty());
   EXPECT_EQ(glb.gltf["asset"]["version"], "2.0");
@@ -237,7 +237,7 @@ TEST(TreeGltf, EmptyMeshGivesAValidSceneWithoutMesh) {
 }
 
 TEST(TreeGltf, RejectsInconsistentBuffers) {
-  TreeMesh good = BuildTreeMesh(Grow("tsutsuji", 3));
+  TreeMesh good = BuildTreeMesh(Grow("tsutsuji-thesis", 3));
   std::vector<unsigned char> bytes;
 
   TreeMesh out_of_range = good;
@@ -259,7 +259,7 @@ TEST(TreeGltf, RejectsInconsistentBuffers) {
 }
 
 TEST(TreeGltf, OutputIsDeterministic) {
-  TreeMesh mesh = BuildTreeMesh(Grow("sakura", 5));
+  TreeMesh mesh = BuildTreeMesh(Grow("sakura-thesis", 5));
   std::vector<unsigned char> a, b;
   ASSERT_EQ(WriteTreeGlb(mesh, &a).Line(), "");
   ASSERT_EQ(WriteTreeGlb(mesh, &b).Line(), "");

@@ -14,8 +14,8 @@ namespace {
 
 TEST(TreeJson, HoldsEveryLivingBranchWithItsNodesBudsAndLeaves) {
   GrowRequest r;
-  r.preset = "sakura";
-  r.params = FindPreset("sakura")->params;
+  r.preset = "sakura-thesis";
+  r.params = FindPreset("sakura-thesis")->params;
   r.years = 4;
   Tree tree = GrowTree(r);
   nlohmann::json j = nlohmann::json::parse(TreeToJson(tree));

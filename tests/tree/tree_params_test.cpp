@@ -42,8 +42,8 @@ double OtherValue(const ParamSpec& s) {
 
 TEST(TreeParamStages, RowsAfterGrowLeaveTheTreeAndItsMeshUnchanged) {
   GrowRequest base;
-  base.preset = "sakura";
-  base.params = FindPreset("sakura")->params;
+  base.preset = "sakura-thesis";
+  base.params = FindPreset("sakura-thesis")->params;
   base.years = 4;
   const Tree grown = GrowTree(base);
   const std::string tree_json = TreeToJson(grown);
@@ -70,8 +70,8 @@ TEST(TreeParamStages, RowsAfterGrowLeaveTheTreeAndItsMeshUnchanged) {
 TEST(TreeParamStages, AGrowRowDoesChangeTheTree) {
   // The check above can fail: the same comparison on a grow row sees another tree.
   GrowRequest base;
-  base.preset = "sakura";
-  base.params = FindPreset("sakura")->params;
+  base.preset = "sakura-thesis";
+  base.params = FindPreset("sakura-thesis")->params;
   base.years = 4;
   GrowRequest edited = base;
   ASSERT_TRUE(edited.params.Set(TreeParam::kGamma, OtherValue(Spec(TreeParam::kGamma))).ok());

@@ -13,19 +13,19 @@ namespace {
 
 TEST(TreeHash, RoundTripKeepsOnlyChangedParameters) {
   TreeState state;
-  state.preset = "keyaki";
-  state.params = FindPreset("keyaki")->params;
+  state.preset = "keyaki-thesis";
+  state.params = FindPreset("keyaki-thesis")->params;
   state.seed = 9;
   state.years = 7;
   EXPECT_TRUE(state.params.Set(ParamId::kGamma, 0.35).ok());
   state.prunes.push_back({5, 12, -1});
   state.prunes.push_back({6, -1, 3});
   std::string hash = EncodeTreeHash(state);
-  EXPECT_EQ(hash, "preset=keyaki&seed=9&years=7&gamma=0.35&prune=5:b12&prune=6:since3");
+  EXPECT_EQ(hash, "preset=keyaki-thesis&seed=9&years=7&gamma=0.35&prune=5:b12&prune=6:since3");
   std::vector<std::string> notices;
   TreeState back = DecodeTreeHash("#" + hash, &notices);
   EXPECT_TRUE(notices.empty());
-  EXPECT_EQ(back.preset, "keyaki");
+  EXPECT_EQ(back.preset, "keyaki-thesis");
   EXPECT_EQ(back.seed, 9u);
   EXPECT_EQ(back.years, 7);
   EXPECT_EQ(back.params, state.params);
@@ -36,8 +36,8 @@ TEST(TreeHash, RoundTripKeepsOnlyChangedParameters) {
 
 TEST(TreeHash, RoundTripsSwayAndWindParameters) {
   TreeState state;
-  state.preset = "sakura";
-  state.params = FindPreset("sakura")->params;
+  state.preset = "sakura-thesis";
+  state.params = FindPreset("sakura-thesis")->params;
   EXPECT_TRUE(state.params.Set(ParamId::kWindSpeed, 12.5).ok());
   EXPECT_TRUE(state.params.Set(ParamId::kWindVariation, 0.3).ok());
   EXPECT_TRUE(state.params.Set(ParamId::kSwayDt, 1.0 / 60.0).ok());
@@ -65,10 +65,10 @@ TEST(TreeHash, HostileInputIsClampedOrDroppedWithNotices) {
   TreeState s = DecodeTreeHash(
       "preset=%3Cscript%3E&years=1e9&seed=-5&gamma=abc&alpha_t=7&evil=1&N_high=2.6&prune=x&cam=<b>",
       &notices);
-  EXPECT_EQ(s.preset, "sakura");
+  EXPECT_EQ(s.preset, kDefaultPreset);
   EXPECT_EQ(s.years, kMaxYears);
   EXPECT_EQ(s.seed, 0u);
-  EXPECT_EQ(s.params.Get(ParamId::kGamma), FindPreset("sakura")->params.Get(ParamId::kGamma));
+  EXPECT_EQ(s.params.Get(ParamId::kGamma), FindPreset(kDefaultPreset)->params.Get(ParamId::kGamma));
   EXPECT_EQ(s.params.Get(ParamId::kAlphaT), 1.0);
   EXPECT_EQ(s.params.Get(ParamId::kNHigh), 3.0);
   EXPECT_TRUE(s.prunes.empty());
@@ -84,14 +84,14 @@ TEST(TreeHash, EmptyHashGivesTheDefaultPreset) {
   std::vector<std::string> notices;
   TreeState s = DecodeTreeHash("", &notices);
   EXPECT_TRUE(notices.empty());
-  EXPECT_EQ(s.preset, "sakura");
-  EXPECT_EQ(s.years, FindPreset("sakura")->years);
+  EXPECT_EQ(s.preset, kDefaultPreset);
+  EXPECT_EQ(s.years, FindPreset(kDefaultPreset)->years);
 }
 
 // One state given three ways, as the CLI flags, the page's state JSON and a share link give it.
 TEST(TreeState, FlagsJsonAndHashResolveToTheSameState) {
   TreeState by_setters;  // what 'niwa tree grow --preset keyaki --years 7 --seed 3 ...' does
-  ASSERT_TRUE(SetStatePreset("keyaki", &by_setters).ok());
+  ASSERT_TRUE(SetStatePreset("keyaki-thesis", &by_setters).ok());
   ASSERT_TRUE(SetStateYears(7, &by_setters).ok());
   ASSERT_TRUE(SetStateSeed(3, &by_setters).ok());
   ASSERT_TRUE(by_setters.params.SetFromAssignment("gamma=0.3").ok());
@@ -101,7 +101,7 @@ TEST(TreeState, FlagsJsonAndHashResolveToTheSameState) {
   ASSERT_TRUE(SetStateCamera("0.6,0.25,10,0,1,0", &by_setters).ok());
 
   TreeState by_json;
-  ASSERT_EQ(ApplyStateJson(R"({"preset": "keyaki", "years": 7, "seed": 3,
+  ASSERT_EQ(ApplyStateJson(R"({"preset": "keyaki-thesis", "years": 7, "seed": 3,
       "params": {"gamma": 0.3, "wind_speed": 12}, "prunes": ["6:b2", "7:since5"],
       "camera": "0.6,0.25,10,0,1,0"})",
                            &by_json)
@@ -109,7 +109,8 @@ TEST(TreeState, FlagsJsonAndHashResolveToTheSameState) {
             "");
   std::vector<std::string> notices;
   TreeState by_hash = DecodeTreeHash(
-      "#preset=keyaki&seed=3&years=7&gamma=0.3&wind_speed=12&prune=6:b2&prune=7:since5&cam=0.6,"
+      "#preset=keyaki-thesis&seed=3&years=7&gamma=0.3&wind_speed=12&prune=6:b2&prune=7:since5&cam="
+      "0.6,"
       "0.25,10,0,1,0",
       &notices);
   EXPECT_TRUE(notices.empty());
@@ -127,15 +128,17 @@ TEST(TreeState, FlagsJsonAndHashResolveToTheSameState) {
   TreeState again;
   ASSERT_TRUE(ApplyStateJson(TreeStateJson(by_setters), &again).ok());
   EXPECT_EQ(EncodeTreeHash(again), EncodeTreeHash(by_setters));
-  EXPECT_EQ(EncodeTreeHash(by_setters),
-            "preset=keyaki&seed=3&years=7&gamma=0.3&wind_speed=12&prune=6:b2&prune=7:since5&cam=0."
-            "6,0.25,10,0,1,0");
+  EXPECT_EQ(
+      EncodeTreeHash(by_setters),
+      "preset=keyaki-thesis&seed=3&years=7&gamma=0.3&wind_speed=12&prune=6:b2&prune=7:since5&cam=0."
+      "6,0.25,10,0,1,0");
   // The same tree grows from each.
   EXPECT_EQ(ComputeStats(GrowTree(by_json)).internodes,
             ComputeStats(GrowTree(by_setters)).internodes);
 }
 
-// What the tree page (web/tree/tree_page.js) sends: numbers or numeric strings, booleans for 0/1 rows.
+// What the tree page (web/tree/tree_page.js) sends: numbers or numeric strings, booleans for 0/1
+// rows.
 TEST(TreeState, TheStateJsonOfThePageReadsAsBefore) {
   TreeState state;
   ASSERT_EQ(ApplyStateJson(R"({"preset":"maple","seed":"12","years":"4",
