@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "base/echo.h"
 #include "cli_common.h"
 #include "terrain/contour_io.h"
 #include "terrain/generate.h"
@@ -45,7 +46,7 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
       Check(params.Set(TerrainParam::kH0, info.h0));
     }
   } else {
-    Result<std::string> text = ReadFile(o.contour, "--contour");
+    Result<std::string> text = ReadFile(o.contour, "--contour", kMaxContourFileBytes);
     if (!text.ok()) Fail(text.status());
     Result<terrain::SeedFile> file = terrain::ParseContourJson(*text);
     if (!file.ok()) Fail(file.status().Within("--contour"));
@@ -66,9 +67,11 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   const auto t2 = std::chrono::steady_clock::now();
   if (!o.contours_out.empty()) {
     if (Extension(o.contours_out) != ".json") {
-      Fail(Status::Error("--contours", "'" + o.contours_out + "' must end in .json"));
+      Fail(Status::Error("--contours", "'" + Echo(o.contours_out) + "' must end in .json"));
     }
-    Check(WriteFileAtomically(o.contours_out, terrain::TerrainToJson(*t)));
+    StagedOutputs outputs;  // every output of a run is staged, then renamed together
+    Check(outputs.Stage("--contours", o.contours_out, terrain::TerrainToJson(*t)));
+    Check(outputs.Commit());
   }
   if (o.stats) {
     terrain::TerrainStats s = terrain::ComputeStats(*t, &hf);

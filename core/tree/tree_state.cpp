@@ -130,7 +130,16 @@ Status SetStateCamera(std::string_view text, TreeState* state) {
   return Status::Ok();
 }
 
+Status CheckGustOrder(const ParamSet& params) {
+  const double on = params.Get(static_cast<std::size_t>(ParamId::kGustOn));
+  const double off = params.Get(static_cast<std::size_t>(ParamId::kGustOff));
+  if (off > on) return Status::Ok();
+  return Status::Error(
+      "gust_off", FormatNumber(off) + " must be greater than gust_on (" + FormatNumber(on) + ")");
+}
+
 Status ApplyStateJson(const std::string& text, TreeState* state) {
+  NIWA_RETURN_IF_ERROR(CheckJsonKeys(text, "state"));
   json document = json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (document.is_discarded()) return Status::Error("state", "malformed JSON");
   if (!document.is_object()) return Status::Error("state", "must be a JSON object");
@@ -189,7 +198,8 @@ TreeState DecodeTreeHash(std::string_view hash, std::vector<std::string>* notice
                          std::string_view prefix) {
   TreeState state;
   HashPairs pairs;
-  for (auto& [key, value] : SplitHash(hash)) {
+  const std::string prune_key = std::string(prefix) + "prune";
+  for (auto& [key, value] : SplitHash(hash, notices, {prune_key})) {
     if (key.compare(0, prefix.size(), prefix) != 0) continue;  // another study's key
     pairs.emplace_back(key.substr(prefix.size()), std::move(value));
   }
@@ -227,6 +237,15 @@ TreeState DecodeTreeHash(std::string_view hash, std::vector<std::string>* notice
     } else if (!ApplyHashParam(p + key, value, p, &state.params, notices)) {
       notices->push_back("unknown key '" + Printable(p + key) + "' dropped");
     }
+  }
+  if (Status gust = CheckGustOrder(state.params); !gust.ok()) {
+    const Preset* preset = FindPreset(state.preset);
+    const TreeParams base = preset ? preset->params : TreeParams();
+    (void)state.params.Set(ParamId::kGustOn, base.Get(ParamId::kGustOn));
+    (void)state.params.Set(ParamId::kGustOff, base.Get(ParamId::kGustOff));
+    notices->push_back(p + gust.field() + ": " + gust.message() + "; both put back to " +
+                       FormatNumber(base.Get(ParamId::kGustOn)) + " and " +
+                       FormatNumber(base.Get(ParamId::kGustOff)));
   }
   return state;
 }

@@ -1,0 +1,42 @@
+// Echo: the one way a user's text is shown back in a message (CLI stderr, page notice, Status
+// line). Control characters, ANSI escapes and non-ASCII bytes become "\xNN" and the text is cut
+// short, so a hostile value can neither drive a terminal nor flood a log. Does not: escape for XML,
+// JSON or HTML (core/base/markup_escape.h does), or know where the message goes.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace niwa {
+
+// Longest echoed value, in output characters, before "..." is appended.
+constexpr std::size_t kMaxEchoLength = 60;
+// Longest whole message line (Status::Line()), in output characters, before "...".
+constexpr std::size_t kMaxMessageLength = 400;
+
+// Text with every byte outside printable ASCII (0x20..0x7e) written as "\xNN" (ESC is "\x1b"), cut
+// after max_length output characters (never inside an escape) with "..." appended.
+inline std::string EscapeControl(std::string_view text, std::size_t max_length) {
+  static const char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    const bool printable = byte >= 0x20 && byte < 0x7f;
+    const std::size_t width = printable ? 1 : 4;
+    if (out.size() + width > max_length) return out + "...";
+    if (printable) {
+      out += static_cast<char>(byte);
+    } else {
+      out += "\\x";
+      out += kHex[byte >> 4];
+      out += kHex[byte & 15];
+    }
+  }
+  return out;
+}
+
+// A user's value as it may appear in a message: escaped and at most kMaxEchoLength characters.
+inline std::string Echo(std::string_view text) { return EscapeControl(text, kMaxEchoLength); }
+
+}  // namespace niwa
