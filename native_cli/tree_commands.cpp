@@ -18,6 +18,7 @@ namespace {
 
 const FlagRange kSvgSize = {100, 10000, true};
 const FlagRange kZeroOne = {0, 1, true};
+constexpr std::size_t kMaxCaption = 200;  // bytes of --caption
 
 struct GrowOptions {
   StateOptions state;
@@ -44,6 +45,19 @@ void CheckSvgOptions(const SvgOptions& o, const CLI::App& cmd, const std::string
     if (cmd.count(name) && ext != ".svg") {
       throw BadInput{std::string(name) + ": only applies with --out FILE.svg"};
     }
+  }
+  // The caption goes into the SVG escaped (base/markup_escape.h); control characters, which XML
+  // cannot carry, are refused here rather than silently removed.
+  for (char c : o.caption) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7f) {
+      throw BadInput{"--caption: '" + Echo(o.caption) +
+                     "' holds a control character; must be printable text"};
+    }
+  }
+  if (o.caption.size() > kMaxCaption) {
+    throw BadInput{"--caption: " + std::to_string(o.caption.size()) + " bytes; must be at most " +
+                   std::to_string(kMaxCaption)};
   }
   Check(CheckFlag("--svg-width", o.width, kSvgSize));
   Check(CheckFlag("--svg-height", o.height, kSvgSize));

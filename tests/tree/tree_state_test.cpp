@@ -135,7 +135,8 @@ TEST(TreeState, FlagsJsonAndHashResolveToTheSameState) {
             ComputeStats(GrowTree(by_setters)).internodes);
 }
 
-// What the tree page (web/tree/tree_page.js) sends: numbers or numeric strings, booleans for 0/1 rows.
+// What the tree page (web/tree/tree_page.js) sends: numbers or numeric strings, booleans for 0/1
+// rows.
 TEST(TreeState, TheStateJsonOfThePageReadsAsBefore) {
   TreeState state;
   ASSERT_EQ(ApplyStateJson(R"({"preset":"maple","seed":"12","years":"4",
@@ -185,7 +186,11 @@ TEST(TreeState, BadStateJsonIsOneLineNamingTheFieldAndChangesNothing) {
             "prunes: must be an array of \"YEAR:bID\" or \"YEAR:sinceY\"");
   EXPECT_EQ(error(R"({"prunes": ["6:x"]})"),
             "prune: '6:x' must be YEAR:bID or YEAR:sinceY with YEAR in [1, 100]");
-  EXPECT_EQ(error(R"({"camera": "<b>"})"), "camera: must be numbers separated by commas");
+  EXPECT_EQ(error(R"({"camera": "<b>"})").rfind("camera: must be yaw,pitch,distance,tx,ty,tz", 0),
+            0u);
+  // Issue 16 item 9: a far or infinite camera is refused, not drawn as a blank canvas.
+  EXPECT_NE(error(R"({"camera": "0,0.3,10,1e39,0,0"})"), "");
+  EXPECT_NE(error(R"({"camera": "0,0.3,10,20000,0,0"})"), "");
 }
 
 TEST(TreeState, SettersCheckTheirRangesAndKeepTheStateOnError) {
