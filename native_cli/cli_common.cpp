@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <optional>
 
 #include "base/echo.h"
@@ -78,8 +79,15 @@ double FlagNumber(const std::string& flag, const std::string& text, const FlagRa
   if (!value) {
     Fail(Status::Error(flag, "'" + Echo(text) + "' is not a decimal number; must be " + allowed));
   }
-  Check(CheckFlag(flag, *value, range));
-  return *value;
+  // A float flag (range.single) is checked as the float it becomes: "--distance 0.2" is the
+  // float 0.2f, the bound itself.
+  double checked = *value;
+  if (range.single &&
+      std::fabs(checked) <= static_cast<double>(std::numeric_limits<float>::max())) {
+    checked = static_cast<double>(static_cast<float>(checked));
+  }
+  Check(CheckFlag(flag, checked, range));
+  return checked;
 }
 
 std::string Extension(const std::string& path) {

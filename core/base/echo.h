@@ -16,13 +16,16 @@ constexpr std::size_t kMaxEchoLength = 60;
 constexpr std::size_t kMaxMessageLength = 400;
 
 // Text with every byte outside printable ASCII (0x20..0x7e) written as "\xNN" (ESC is "\x1b"), cut
-// after max_length output characters (never inside an escape) with "..." appended.
-inline std::string EscapeControl(std::string_view text, std::size_t max_length) {
+// after max_length output characters (never inside an escape) with "..." appended. With markup,
+// the characters < > & " ' are written as "\xNN" too (notices that a page shows).
+inline std::string EscapeControl(std::string_view text, std::size_t max_length,
+                                 bool markup = false) {
   static const char kHex[] = "0123456789abcdef";
   std::string out;
   for (std::size_t i = 0; i < text.size(); ++i) {
     const auto byte = static_cast<unsigned char>(text[i]);
-    const bool printable = byte >= 0x20 && byte < 0x7f;
+    const bool is_markup = byte == '<' || byte == '>' || byte == '&' || byte == '"' || byte == '\'';
+    const bool printable = byte >= 0x20 && byte < 0x7f && !(markup && is_markup);
     const std::size_t width = printable ? 1 : 4;
     if (out.size() + width > max_length) return out + "...";
     if (printable) {
@@ -38,5 +41,9 @@ inline std::string EscapeControl(std::string_view text, std::size_t max_length) 
 
 // A user's value as it may appear in a message: escaped and at most kMaxEchoLength characters.
 inline std::string Echo(std::string_view text) { return EscapeControl(text, kMaxEchoLength); }
+// The same for a notice a page may show: markup characters escaped as well.
+inline std::string EchoNoMarkup(std::string_view text) {
+  return EscapeControl(text, kMaxEchoLength, true);
+}
 
 }  // namespace niwa

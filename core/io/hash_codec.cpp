@@ -38,7 +38,7 @@ std::string PercentDecode(std::string_view text) {
   return out;
 }
 
-std::string Printable(std::string_view text) { return Echo(text); }
+std::string Printable(std::string_view text) { return EchoNoMarkup(text); }
 
 HashPairs SplitHash(std::string_view hash, std::vector<std::string>* notices,
                     const std::vector<std::string_view>& repeatable) {

@@ -29,8 +29,8 @@ HashPairs SplitHash(std::string_view hash, std::vector<std::string>* notices = n
 // decoded value written back cannot add keys ('&', '=', '#', '%' are encoded).
 std::string PercentEncode(std::string_view text);
 std::string PercentDecode(std::string_view text);
-// Text safe to show in a notice: base/echo.h's Echo (control and non-ASCII bytes as "\xNN", cut at
-// 60 characters + "..."); the page shows notices as text (never as HTML), the CLI as one line.
+// Text safe to show in a notice: base/echo.h's EchoNoMarkup (control, non-ASCII and markup bytes as
+// "\xNN", cut at 60 characters + "..."); the page shows notices as text, the CLI as one line.
 std::string Printable(std::string_view text);
 
 // If key is prefix + a row key of params' table, sets that row from the text, clamped into its

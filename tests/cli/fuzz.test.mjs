@@ -1,5 +1,5 @@
 // Issue 16 fuzz test: random flags, values, JSON files and hashes from a fixed seed, a bounded count
-// (NIWA_FUZZ_COUNT, default 300), against the CLI in NIWA_NATIVE (the release build under ctest, the
+// (NIWA_FUZZ_COUNT, default 600), against the CLI in NIWA_NATIVE (the release build under ctest, the
 // ASan + UBSan build under scripts/test). Every run must exit 0 or 2 (never 1, 134 or a signal),
 // within 30 s, with exactly one stderr line when it fails, and leave no file behind on failure
 // (no temporary ever). A failing case is printed with its arguments so it can be replayed.
@@ -9,8 +9,9 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { check, finish, native } from '../support/cli_pair.mjs';
 
-const COUNT = Number(process.env.NIWA_FUZZ_COUNT || 300);
-let state = 16;  // mulberry32, fixed seed: the same cases on every run
+const COUNT = Number(process.env.NIWA_FUZZ_COUNT || 600);
+const SEED = Number(process.env.NIWA_FUZZ_SEED || 16);
+let state = SEED;  // mulberry32, fixed seed (16): the same cases on every run
 const random = () => {
   state = (state + 0x6d2b79f5) | 0;
   let t = Math.imul(state ^ (state >>> 15), 1 | state);
@@ -107,6 +108,7 @@ function caseArgs() {
 const show = (args) => JSON.stringify(args.map((a) => (a.length > 80 ? `${a.slice(0, 40)}...(${a.length})` : a)));
 const started = Date.now();
 let bad = 0;
+const exits = { 0: 0, 2: 0 };
 for (let n = 0; n < COUNT; ++n) {
   const args = caseArgs();
   rmSync(outs, { recursive: true, force: true });
@@ -114,6 +116,7 @@ for (let n = 0; n < COUNT; ++n) {
   const r = spawnSync(native, args, { encoding: 'utf8', timeout: 30000, maxBuffer: 64 << 20 });
   const lines = r.stderr ? r.stderr.trimEnd().split('\n') : [];
   const left = readdirSync(outs);
+  if (r.status === 0 || r.status === 2) ++exits[r.status];
   const problems = [];
   if (r.error) problems.push(`did not finish: ${r.error.code}`);
   if (r.status !== 0 && r.status !== 2) problems.push(`exit ${r.status} signal ${r.signal}`);
@@ -127,6 +130,8 @@ for (let n = 0; n < COUNT; ++n) {
     check(false, `case ${n} ${show(args)}: ${problems.join('; ')} :: ${(r.stderr || '').slice(0, 300)}`);
   }
 }
-check(bad === 0, `${COUNT} fuzz cases (seed 16) in ${((Date.now() - started) / 1000).toFixed(1)} s: exit 0 or 2, one stderr line, nothing left on failure`);
+check(bad === 0, `${COUNT} fuzz cases (seed ${SEED}) in ${((Date.now() - started) / 1000).toFixed(1)} s (${exits[0]} exit 0, ${exits[2]} exit 2): exit 0 or 2, one stderr line, nothing left on failure`);
+// The sample must reach both sides: runs that succeed (and write) and runs that are refused.
+check(exits[0] >= COUNT / 10 && exits[2] >= COUNT / 10, `both outcomes reached: ${exits[0]} succeeded, ${exits[2]} refused`);
 rmSync(work, { recursive: true, force: true });
 finish();

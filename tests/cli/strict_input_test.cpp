@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cli_common.h"
+#include "io/hash_codec.h"
 #include "support/cli_runner.h"
 #include "support/expect_error.h"
 
@@ -119,6 +120,9 @@ TEST(StrictInput, VectorFlagsAreFiniteAndInRange) {
                      "--target: '1e39,0,0' must be three numbers x,y,z, each in [-10000, 10000]");
   ExpectOneLineError(with({"--yaw", "1e39"}), "--yaw: 1e+39 is out of range");
   EXPECT_EQ(with({"--cam", "0.5,0.3,10,0,1,0"}).code, 0);
+  // A float flag's bounds are the floats it becomes: 0.2 and 0.1 are in range.
+  EXPECT_EQ(with({"--distance", "0.2"}).code, 0);
+  EXPECT_EQ(with({"--threshold", "0.1", "--pitch", "-0.1"}).code, 0);
   ExpectOneLineError(RunNiwa({"ivy", "grow", "--seed-point", "1e39,0,0"}), "--seed-point");
 }
 

@@ -27,7 +27,7 @@ TEST(HashCodec, SplitsDecodesAndSkipsEmptyItems) {
 // could read "...&years=10" as years=1); at the maximum it is read.
 TEST(HashCodec, HashOverTheMaximumIsRefusedNotCut) {
   std::vector<std::string> notices;
-  std::string at_limit = "a=" + std::string(kMaxHashLength - 7, '1') + "&b=2";
+  std::string at_limit = "a=" + std::string(kMaxHashLength - 6, '1') + "&b=2";
   ASSERT_EQ(at_limit.size(), kMaxHashLength);
   EXPECT_EQ(SplitHash(at_limit, &notices).size(), 2u);
   EXPECT_TRUE(notices.empty());
@@ -58,8 +58,9 @@ TEST(HashCodec, PercentEncodeRoundTripsAndCannotInjectKeys) {
   EXPECT_EQ(PercentEncode("a-b_c.d~1:2,3"), "a-b_c.d~1:2,3");
 }
 
-TEST(HashCodec, PrintableEscapesControlAndIsShort) {
+TEST(HashCodec, PrintableEscapesControlAndMarkupAndIsShort) {
   EXPECT_EQ(Printable("ok text"), "ok text");
+  EXPECT_EQ(Printable("<img src='x'>&"), "\\x3cimg src=\\x27x\\x27\\x3e\\x26");
   EXPECT_EQ(Printable("a\x1b[31mb\n"), "a\\x1b[31mb\\x0a");
   EXPECT_EQ(Printable(std::string(100, 'a')), std::string(60, 'a') + "...");
 }
@@ -80,7 +81,7 @@ TEST(HashCodec, RowsAreClampedRoundedOrDroppedWithOneNoticeEach) {
   ASSERT_EQ(notices.size(), 3u);
   EXPECT_EQ(notices[0], "gamma: clamped to 1, must be a number in [0, 1]");
   EXPECT_EQ(notices[1], "N_high: clamped to 3, must be a whole number in [1, 100]");
-  EXPECT_EQ(notices[2], "alpha_t: '<b>' dropped, must be a number in [0, 1]");
+  EXPECT_EQ(notices[2], "alpha_t: '\\x3cb\\x3e' dropped, must be a number in [0, 1]");
   TreeParams base;
   EXPECT_EQ(EncodeChangedParams(params, base), "&gamma=1&N_high=3");
   EXPECT_EQ(EncodeChangedParams(params, base, "tree."), "&tree.gamma=1&tree.N_high=3");
