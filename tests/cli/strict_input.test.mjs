@@ -19,7 +19,7 @@ writeFileSync(join(dir, 'both.json'), '{"params": {"gamma": 0.1}, "alpha_t": 0.2
 writeFileSync(join(dir, 'gust.json'), '{"gust_on": 7, "gust_off": 6.5}');
 const grow = ['tree', 'grow', '--preset', 'binary', '--years', '2'];
 const cases = [
-  [[...grow, '--years', '0x10'], "--years: '0x10' is not a decimal number; must be a whole number in [0, 100]"],
+  [[...grow.slice(0, 4), '--years', '0x10'], "--years: '0x10' is not a decimal number; must be a whole number in [0, 100]"],
   [[...grow.slice(0, 4), '--years', ''], '--years: empty; must be a whole number in [0, 100]'],
   [[...grow, '--seed', '-18446744073709551615'], '--seed: -1.8446744073709552e+19 is out of range; must be a whole number in [0, 4294967295]'],
   [['tree', 'sway', '--preset', 'binary', '--wind', '0x1p3'], "--wind: '0x1p3' is not a decimal number; must be a number in [0, 100]"],
