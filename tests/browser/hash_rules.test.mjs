@@ -48,7 +48,7 @@ await runBrowserTest(async (server, browser) => {
   const d = await grove.evaluate(() => ({ ...document.documentElement.dataset }));
   const message = await grove.textContent('#message');
   check('the grove grows despite bad wind values in the hash', d.status === 'ready', `${d.status}: ${message}`);
-  check('each bad wind value is one notice naming it', /wind_speed: '5&mode=hybrid' dropped/.test(message) &&
+  check('each bad wind value is one notice naming it', /wind_speed: '5\\x26mode=hybrid' dropped/.test(message) &&
     /wind_period: 'abc' dropped/.test(message), JSON.stringify(message));
   const hash = await grove.evaluate(() => location.hash);
   const params = new URLSearchParams(hash.slice(1));
