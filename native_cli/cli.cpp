@@ -129,13 +129,13 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     for (char& c : message) {
       if (c == '\n') c = ' ';
     }
-    err << "niwa: error: " << EscapeControl(message, kMaxMessageLength) << " (see --help)\n";
+    err << "niwa: error: " << EscapeLine(message, kMaxMessageLength) << " (see --help)\n";
     return 2;
   } catch (const cli::BadInput& e) {
-    err << "niwa: error: " << EscapeControl(e.message, kMaxMessageLength) << "\n";
+    err << "niwa: error: " << EscapeLine(e.message, kMaxMessageLength) << "\n";
     return 2;
   } catch (const std::exception& e) {
-    err << "niwa: internal error: " << EscapeControl(e.what(), kMaxMessageLength) << "\n";
+    err << "niwa: internal error: " << EscapeLine(e.what(), kMaxMessageLength) << "\n";
     return 1;
   }
   return 0;

@@ -39,6 +39,35 @@ inline std::string EscapeControl(std::string_view text, std::size_t max_length,
   return out;
 }
 
+// A whole message line (Status::Line(), the CLI's last line of defence): C0 control characters,
+// DEL and the C1 controls (UTF-8 C2 80..C2 9F) as "\xNN", other UTF-8 kept (the core's own text
+// says "§3.1"), cut after max_length characters with "...". Values inside were cut by Echo().
+inline std::string EscapeLine(std::string_view text, std::size_t max_length) {
+  static const char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    const bool c1 = byte == 0xc2 && i + 1 < text.size() &&
+                    static_cast<unsigned char>(text[i + 1]) >= 0x80 &&
+                    static_cast<unsigned char>(text[i + 1]) <= 0x9f;
+    const bool control = byte < 0x20 || byte == 0x7f;
+    const std::size_t width = c1 ? 8 : control ? 4 : 1;
+    if (out.size() + width > max_length) return out + "...";
+    if (!control && !c1) {
+      out += static_cast<char>(byte);
+      continue;
+    }
+    for (std::size_t k = 0; k < (c1 ? 2u : 1u); ++k) {
+      const auto b = static_cast<unsigned char>(text[i + k]);
+      out += "\\x";
+      out += kHex[b >> 4];
+      out += kHex[b & 15];
+    }
+    if (c1) ++i;
+  }
+  return out;
+}
+
 // A user's value as it may appear in a message: escaped and at most kMaxEchoLength characters.
 inline std::string Echo(std::string_view text) { return EscapeControl(text, kMaxEchoLength); }
 // The same for a notice a page may show: markup characters escaped as well.

@@ -29,11 +29,11 @@ class [[nodiscard]] Status {
   const std::string& field() const { return field_; }
   const std::string& message() const { return message_; }
   // The one-line error text: "field: message" (or the message alone when there is no field),
-  // with control characters escaped and cut at kMaxMessageLength (base/echo.h); values inside the
-  // message are cut shorter by their makers through Echo().
+  // with control characters escaped and cut at kMaxMessageLength (base/echo.h EscapeLine); values
+  // inside the message are cut shorter by their makers through Echo().
   std::string Line() const {
     if (ok_) return "";
-    return EscapeControl(field_.empty() ? message_ : field_ + ": " + message_, kMaxMessageLength);
+    return EscapeLine(field_.empty() ? message_ : field_ + ": " + message_, kMaxMessageLength);
   }
   // The same error under an outer field, e.g. "--params: alpha_t: ...".
   Status Within(const std::string& outer) const {

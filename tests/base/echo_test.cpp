@@ -31,6 +31,13 @@ TEST(Echo, StatusLineIsOneEscapedShortLine) {
   EXPECT_EQ(line.rfind("--out: cannot write 'a\\x0ab\\x1b[2J'", 0), 0u);
 }
 
+// The whole line keeps the core's own UTF-8 ("§3.1") but not C0/C1 control characters.
+TEST(Echo, LineKeepsUtf8ButNotControls) {
+  EXPECT_EQ(Status::Error("t1", "must be in [0, t2) (\xc2\xa7" "3.1)").Line(),
+            "t1: must be in [0, t2) (\xc2\xa7" "3.1)");
+  EXPECT_EQ(EscapeLine("a\x1b\xc2\x9b" "b", 100), "a\\x1b\\xc2\\x9bb");
+}
+
 TEST(MarkupEscape, EntitiesControlAndBadUtf8) {
   EXPECT_EQ(XmlEscape("P<1 & \"q\" 'r' >"), "P&lt;1 &amp; &quot;q&quot; &apos;r&apos; &gt;");
   EXPECT_EQ(XmlEscape("a\x01\x1b[0m\x7f"
