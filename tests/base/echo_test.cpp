@@ -33,9 +33,16 @@ TEST(Echo, StatusLineIsOneEscapedShortLine) {
 
 // The whole line keeps the core's own UTF-8 ("§3.1") but not C0/C1 control characters.
 TEST(Echo, LineKeepsUtf8ButNotControls) {
-  EXPECT_EQ(Status::Error("t1", "must be in [0, t2) (\xc2\xa7" "3.1)").Line(),
-            "t1: must be in [0, t2) (\xc2\xa7" "3.1)");
-  EXPECT_EQ(EscapeLine("a\x1b\xc2\x9b" "b", 100), "a\\x1b\\xc2\\x9bb");
+  EXPECT_EQ(Status::Error("t1",
+                          "must be in [0, t2) (\xc2\xa7"
+                          "3.1)")
+                .Line(),
+            "t1: must be in [0, t2) (\xc2\xa7"
+            "3.1)");
+  EXPECT_EQ(EscapeLine("a\x1b\xc2\x9b"
+                       "b",
+                       100),
+            "a\\x1b\\xc2\\x9bb");
 }
 
 TEST(MarkupEscape, EntitiesControlAndBadUtf8) {
@@ -44,8 +51,8 @@ TEST(MarkupEscape, EntitiesControlAndBadUtf8) {
                       "b"),
             "a[0mb");
   EXPECT_EQ(XmlEscape("caf\xc3\xa9 \xe6\x9c\xa8"), "caf\xc3\xa9 \xe6\x9c\xa8");  // kept
-  EXPECT_EQ(XmlEscape("\xff\xc3(\xed\xa0\x80\xc2\x85"), "??(???");  // bad, surrogate, C1
-  EXPECT_EQ(XmlEscape("\xef\xbf\xbf"), "???");                     // U+FFFF
+  EXPECT_EQ(XmlEscape("\xff\xc3(\xed\xa0\x80\xc2\x85"), "?\?(???");  // bad, surrogate, C1
+  EXPECT_EQ(XmlEscape("\xef\xbf\xbf"), "???");                      // U+FFFF
 }
 
 }  // namespace
