@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "base/echo.h"
 #include "cli_common.h"
 #include "commands_registry.h"
 #include "params/param_json.h"
@@ -20,7 +21,44 @@ void CheckCommand(const CLI::App& parent, const std::string& word) {
     if (sub->get_name() == word) return;
     names += (names.empty() ? "" : ", ") + sub->get_name();
   }
-  throw cli::BadInput{"unknown command '" + word + "', must be one of " + names};
+  throw cli::BadInput{"unknown command '" + Echo(word) + "', must be one of " + names};
+}
+
+// Every option of app and its subcommands, for the checks CLI11 does not make.
+void CollectOptions(const CLI::App& app, std::vector<const CLI::Option*>* options) {
+  for (const CLI::Option* opt : app.get_options()) options->push_back(opt);
+  for (const CLI::App* sub : app.get_subcommands({})) CollectOptions(*sub, options);
+}
+
+// Booleans are flags: "--stats=yes" (any value given to a flag) is refused naming the flag.
+void CheckFlagValues(const CLI::App& app, const std::vector<std::string>& args) {
+  std::vector<const CLI::Option*> options;
+  CollectOptions(app, &options);
+  for (const std::string& arg : args) {
+    if (arg == "--") return;  // what follows is positional
+    if (arg.size() < 3 || arg.compare(0, 2, "--") != 0) continue;
+    const std::size_t eq = arg.find('=');
+    if (eq == std::string::npos) continue;
+    const std::string name = arg.substr(0, eq);
+    for (const CLI::Option* opt : options) {
+      if (opt->get_expected_max() == 0 && opt->check_lname(name.substr(2))) {
+        throw cli::BadInput{name + ": is a flag and takes no value; give " + name + " alone"};
+      }
+    }
+  }
+}
+
+// A given option with an empty value ("--out ''") is refused naming it; numeric flags already
+// refuse it through their parser. Free text (a caption) may be empty.
+void CheckEmptyValues(const CLI::App& app) {
+  for (const CLI::Option* opt : app.get_options()) {
+    if (opt->count() == 0 || opt->get_expected_max() == 0) continue;
+    if (opt->check_lname("caption")) continue;
+    for (const std::string& value : opt->results()) {
+      if (value.empty()) throw cli::BadInput{opt->get_name() + ": empty; give a value"};
+    }
+  }
+  for (const CLI::App* sub : app.get_subcommands()) CheckEmptyValues(*sub);
 }
 
 const cli::Study& FindStudy(const cli::CommandList& commands, const std::string& name) {
@@ -29,7 +67,7 @@ const cli::Study& FindStudy(const cli::CommandList& commands, const std::string&
     if (name.empty() || study.name == name) return study;
     names += (names.empty() ? "" : ", ") + study.name;
   }
-  throw cli::BadInput{"study: unknown '" + name + "', must be one of " + names};
+  throw cli::BadInput{"study: unknown '" + Echo(name) + "', must be one of " + names};
 }
 
 void PrintTable(const ParamTable& table, bool json, std::ostream& out) {
@@ -73,8 +111,10 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       if (args.size() > 1 && args[0] == group->get_name() && group->get_require_subcommand_min())
         CheckCommand(*group, args[1]);
     }
+    CheckFlagValues(app, args);
     std::vector<std::string> reversed(args.rbegin(), args.rend());
     app.parse(reversed);
+    CheckEmptyValues(app);
     for (const cli::Command& command : commands) {
       if (*command.app) return command.run(out);
     }
@@ -89,13 +129,13 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     for (char& c : message) {
       if (c == '\n') c = ' ';
     }
-    err << "niwa: error: " << message << " (see --help)\n";
+    err << "niwa: error: " << EscapeLine(message, kMaxMessageLength) << " (see --help)\n";
     return 2;
   } catch (const cli::BadInput& e) {
-    err << "niwa: error: " << e.message << "\n";
+    err << "niwa: error: " << EscapeLine(e.message, kMaxMessageLength) << "\n";
     return 2;
   } catch (const std::exception& e) {
-    err << "niwa: internal error: " << e.what() << "\n";
+    err << "niwa: internal error: " << EscapeLine(e.what(), kMaxMessageLength) << "\n";
     return 1;
   }
   return 0;

@@ -1,12 +1,15 @@
 // Shared parts of the niwa CLI's per-study command files: the bad-input error, the command list,
-// flag ranges written once (help text and check), file reading and atomic writing.
+// flag ranges written once (help text and check), strict numeric flags, size-capped file reading
+// and all-or-none atomic writing (docs/input-rules.md).
 // Does not: hold any study's commands (those live in native_cli/<study>_commands.cpp).
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstddef>
 #include <functional>
 #include <ostream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "base/status.h"
@@ -60,12 +63,63 @@ std::string RangeHelp(const ParamSpec& spec);
 // Ok when value is in range (params' CheckValue), else {flag, "must be a number in [a, b]"}.
 Status CheckFlag(const std::string& flag, double value, const FlagRange& range);
 
+// The FlagRange of a table row: a flag that overrides the row takes its range.
+FlagRange RowFlagRange(const ParamSpec& spec);
+
+// The value of a numeric flag's text through the one strict parser (params/strict_number.h):
+// decimal only, never empty, then CheckFlag. Throws BadInput naming the flag and its range.
+double FlagNumber(const std::string& flag, const std::string& text, const FlagRange& range);
+
+// Adds a numeric flag read as text and parsed by FlagNumber into *value when CLI11 stores it, so
+// CLI11's own conversions (hex, octal, wrapping) never see it. T: int, uint64_t, float or double.
+template <typename T>
+CLI::Option* AddNumberFlag(CLI::App* cmd, const std::string& flag, T* value, const FlagRange& range,
+                           const std::string& help) {
+  static_assert(std::is_arithmetic_v<T>);
+  return cmd->add_option_function<std::string>(
+      flag,
+      [flag, value, range](const std::string& text) {
+        *value = static_cast<T>(FlagNumber(flag, text, range));
+      },
+      help);
+}
+
+// Largest file read by --params (1 MiB) and --contour (16 MiB); --mesh uses io::kMaxMeshFileBytes.
+constexpr std::size_t kMaxParamsFileBytes = std::size_t{1} << 20;
+constexpr std::size_t kMaxContourFileBytes = std::size_t{16} << 20;
+// Largest elevation model read by terrain compare --dem (a 16-bit PNG; 64 MiB holds 4096^2 cells).
+constexpr std::size_t kMaxDemFileBytes = std::size_t{64} << 20;
+
 // ".glb" of "out/tree.glb" ("" when none).
 std::string Extension(const std::string& path);
-// The whole file; {field, "cannot read 'path'"} when it cannot be read.
-Result<std::string> ReadFile(const std::string& path, const std::string& field);
-// Writes bytes to path through a temporary file and a rename, so no half-written file remains;
-// the error is {"", "cannot write 'path'"}.
+// The whole file, refused before reading when it is not a regular file or larger than max_bytes:
+// {field, "'path' has N bytes; the limit is M (1 MiB)"}, {field, "cannot read 'path'"}.
+Result<std::string> ReadFile(const std::string& path, const std::string& field,
+                             std::size_t max_bytes);
+
+// The outputs of one run, written all or none: Stage writes each to a unique temporary file in its
+// target's folder (created with O_CREAT|O_EXCL|O_NOFOLLOW, mode 0644 under the umask, fsynced);
+// Commit renames them all into place. A failure (or destruction before Commit) removes every
+// temporary; a rename failing after others succeeded removes the outputs already renamed.
+class StagedOutputs {
+ public:
+  StagedOutputs() = default;
+  StagedOutputs(const StagedOutputs&) = delete;
+  StagedOutputs& operator=(const StagedOutputs&) = delete;
+  ~StagedOutputs();
+  // The error is {field, "cannot write 'path'"} (field: the flag, e.g. "--out").
+  Status Stage(const std::string& field, const std::string& path, const std::string& bytes);
+  Status Commit();
+
+ private:
+  struct Staged {
+    std::string field, path, temp;
+  };
+  void RemoveTemps();
+  std::vector<Staged> staged_;
+};
+
+// One output through StagedOutputs; the error is {"", "cannot write 'path'"}.
 Status WriteFileAtomically(const std::string& path, const std::string& bytes);
 
 }  // namespace niwa::cli

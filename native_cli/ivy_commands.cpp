@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "base/echo.h"
 #include "cli_common.h"
 #include "geom/bvh.h"
 #include "geom/mesh_metrics.h"
@@ -45,13 +46,7 @@ double Ms(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::ti
 }
 
 double ParseFlagNumber(const std::string& flag, const std::string& text, const FlagRange& range) {
-  std::optional<double> x = ParseNumber(text);
-  if (!x) {
-    Fail(Status::Error(flag, "'" + text + "' is not a number; must be " +
-                                 RangeText(range.min, range.max, range.integer)));
-  }
-  Check(CheckFlag(flag, *x, range));
-  return *x;
+  return FlagNumber(flag, text, range);  // the one strict parser (cli_common)
 }
 
 // "X,Y,Z" or a named seed of the scene.
@@ -74,12 +69,13 @@ glm::dvec3 ParseSeedPoint(const std::string& text, const ivy::IvyScene* scene) {
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
-  if (parts.size() != 3) Fail(Status::Error("--seed-point", "'" + text + "' is unknown; " + range));
+  if (parts.size() != 3)
+    Fail(Status::Error("--seed-point", "'" + Echo(text) + "' is unknown; " + range));
   glm::dvec3 p;
   for (int i = 0; i < 3; ++i) {
     std::optional<double> x = ParseNumber(parts[static_cast<std::size_t>(i)]);
     if (!x || std::fabs(*x) > kMaxCoordinate) {
-      Fail(Status::Error("--seed-point", "'" + text + "' is out of range; " + range));
+      Fail(Status::Error("--seed-point", "'" + Echo(text) + "' is out of range; " + range));
     }
     p[i] = *x;
   }
@@ -92,7 +88,7 @@ ivy::IvyState ResolveState(const IvyOptions& o) {
   if (!o.tree_preset.empty()) Check(AsFlag(ivy::SetIvyPreset("metric", &state), "--preset"));
   if (!o.preset.empty()) Check(AsFlag(ivy::SetIvyPreset(o.preset, &state), "--preset"));
   if (!o.params_file.empty()) {
-    Result<std::string> text = ReadFile(o.params_file, "--params");
+    Result<std::string> text = ReadFile(o.params_file, "--params", kMaxParamsFileBytes);
     if (!text.ok()) Fail(text.status());
     Check(ivy::ApplyIvyStateJson(*text, &state).Within("--params"));
   }
@@ -117,10 +113,11 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   const auto t_start = std::chrono::steady_clock::now();
   const std::string ext = o.out_path.empty() ? "" : Extension(o.out_path);
   if (!o.out_path.empty() && ext != ".json" && ext != ".lsys" && ext != ".glb" && ext != ".svg") {
-    Fail(Status::Error("--out", "'" + o.out_path + "' must end in .json, .lsys, .glb or .svg"));
+    Fail(Status::Error("--out",
+                       "'" + Echo(o.out_path) + "' must end in .json, .lsys, .glb or .svg"));
   }
   if (o.accel != "bvh" && o.accel != "linear") {
-    Fail(Status::Error("--accel", "'" + o.accel + "' is unknown; must be bvh or linear"));
+    Fail(Status::Error("--accel", "'" + Echo(o.accel) + "' is unknown; must be bvh or linear"));
   }
   const int levels =
       static_cast<int>(ParseFlagNumber("--subdivide", o.subdivide, {0, kMaxSubdivide, true}));
@@ -214,7 +211,9 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
       if (!glb.ok()) Fail(glb.status().Within("--out"));
       bytes.assign(glb->begin(), glb->end());
     }
-    Check(WriteFileAtomically(o.out_path, bytes).Within("--out"));
+    StagedOutputs outputs;
+    Check(outputs.Stage("--out", o.out_path, bytes));
+    Check(outputs.Commit());
   }
   if (o.stats) {
     ivy::IvyStats stats = ivy::MeasureIvy(*model, log, scene.free ? nullptr : &scene.mesh,

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "base/echo.h"
 #include "cli_common.h"
 #include "geom/bvh.h"
 #include "geom/closest_point.h"
@@ -61,12 +62,13 @@ glm::vec3 ParseVec3(const std::string& flag, const std::string& text) {
   }
   const std::string range = "must be three numbers X,Y,Z, each in [-1e30, 1e30]";
   if (text.empty()) Fail(Status::Error(flag, "required; " + range));
-  if (parts.size() != 3) Fail(Status::Error(flag, "'" + text + "' is not three numbers; " + range));
+  if (parts.size() != 3)
+    Fail(Status::Error(flag, "'" + Echo(text) + "' is not three numbers; " + range));
   glm::vec3 v;
   for (int i = 0; i < 3; ++i) {
     std::optional<double> x = ParseNumber(parts[static_cast<std::size_t>(i)]);
     if (!x || std::fabs(*x) > kMaxCoordinate) {
-      Fail(Status::Error(flag, "'" + text + "' is out of range; " + range));
+      Fail(Status::Error(flag, "'" + Echo(text) + "' is out of range; " + range));
     }
     v[i] = static_cast<float>(*x);
   }
@@ -190,7 +192,7 @@ int RunRay(const MeshSource& s, const std::string& origin, const std::string& di
   const glm::vec3 o = ParseVec3("--origin", origin);
   const glm::vec3 d = ParseVec3("--dir", dir);
   if (d.x == 0.0f && d.y == 0.0f && d.z == 0.0f) {
-    Fail(Status::Error("--dir", "'" + dir + "' is zero; must be a non-zero direction X,Y,Z"));
+    Fail(Status::Error("--dir", "'" + Echo(dir) + "' is zero; must be a non-zero direction X,Y,Z"));
   }
   const float r = ParseMaxDistance(max_distance);
   LoadedMesh m = Load(s);

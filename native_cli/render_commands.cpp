@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 
+#include "base/echo.h"
 #include "cli_common.h"
 #include "math/rotation.h"
 #include "render/hybrid.h"
@@ -22,6 +23,10 @@ const FlagRange kViewport = {16, 16384, true};
 const FlagRange kFov = {1, 170, false};
 const FlagRange kPitch = {kMinPitch, kMaxPitch, false, " (radians)", true};
 const FlagRange kDistance = {kMinDistance, kMaxDistance, false, " (metres)", true};
+const FlagRange kYaw = {-kMaxYaw, kMaxYaw, false, " (radians)"};
+const FlagRange kThreshold = {0.1, 1000, false, "", true};
+const FlagRange kCardPlanes = {2, 8, true};
+const FlagRange kLineSegments = {1, 64, true};
 
 // ---- tree render-stats: thesis chapter 4 hybrid rendering counts (core/render/hybrid) ----
 struct RenderStatsOptions {
@@ -37,36 +42,39 @@ struct RenderStatsOptions {
 std::string RowRange(ParamId id) { return RangeHelp(Spec(id)); }
 
 void AddRenderStatsOptions(CLI::App* cmd, RenderStatsOptions* o) {
-  cmd->add_option("--width", o->width,
-                  "Viewport width in pixels, " + RangeHelp(kViewport) + " (default 512)");
-  cmd->add_option("--height", o->height,
-                  "Viewport height in pixels, " + RangeHelp(kViewport) + " (default 512)");
+  AddNumberFlag(cmd, "--width", &o->width, kViewport,
+                "Viewport width in pixels, " + RangeHelp(kViewport) + " (default 512)");
+  AddNumberFlag(cmd, "--height", &o->height, kViewport,
+                "Viewport height in pixels, " + RangeHelp(kViewport) + " (default 512)");
   cmd->add_option("--cam", o->cam,
-                  "Camera as in the share link's cam=: yaw,pitch,distance,tx,ty,tz (default: the "
-                  "page's framing of a new tree)");
-  cmd->add_option("--yaw", o->yaw, "Camera yaw, radians (overrides --cam)");
-  cmd->add_option("--pitch", o->pitch,
-                  "Camera pitch, radians, " + RangeHelp(kPitch) + " (overrides --cam)");
-  cmd->add_option(
-      "--distance", o->distance,
+                  "Camera as in the share link's cam=: yaw,pitch,distance,tx,ty,tz, yaw in "
+                  "[-1000, 1000] rad, pitch and distance as below, each target coordinate in "
+                  "[-10000, 10000] m (default: the page's framing of a new tree)");
+  AddNumberFlag(cmd, "--yaw", &o->yaw, kYaw,
+                "Camera yaw, radians, " + RangeHelp(kYaw) + " (overrides --cam)");
+  AddNumberFlag(cmd, "--pitch", &o->pitch, kPitch,
+                "Camera pitch, radians, " + RangeHelp(kPitch) + " (overrides --cam)");
+  AddNumberFlag(
+      cmd, "--distance", &o->distance, kDistance,
       "Camera distance to the target, metres, " + RangeHelp(kDistance) + " (overrides --cam)");
-  cmd->add_option("--target", o->target, "Camera target x,y,z in metres (overrides --cam)");
-  cmd->add_option("--fov", o->fov_deg,
-                  "Vertical field of view, degrees, " + RangeHelp(kFov) + " (default 45)");
+  cmd->add_option("--target", o->target,
+                  "Camera target x,y,z in metres, each in [-10000, 10000] (overrides --cam)");
+  AddNumberFlag(cmd, "--fov", &o->fov_deg, kFov,
+                "Vertical field of view, degrees, " + RangeHelp(kFov) + " (default 45)");
   cmd->add_option("--mode", o->mode, "hybrid (thesis 4.2) or full (every polygon)");
-  cmd->add_option("--threshold", o->render.threshold_px,
-                  "Eq. 4.1 card/line threshold, pixels, " + RowRange(ParamId::kLineThreshold) +
-                      " (overrides the line_threshold parameter, default " +
-                      FormatNumber(Spec(ParamId::kLineThreshold).default_value) + ")");
+  AddNumberFlag(cmd, "--threshold", &o->render.threshold_px, kThreshold,
+                "Eq. 4.1 card/line threshold, pixels, " + RowRange(ParamId::kLineThreshold) +
+                    " (overrides the line_threshold parameter, default " +
+                    FormatNumber(Spec(ParamId::kLineThreshold).default_value) + ")");
   cmd->add_option("--leaf-mode", o->leaf_mode,
                   "cluster (leaf-cluster cards, thesis 5.2) or branch (thesis 4.2.1); overrides "
                   "the leaf_cluster_cards parameter (default 1: cluster)");
-  cmd->add_option("--card-planes", o->render.card_planes,
-                  "Card planes per branch, " + RowRange(ParamId::kCardPlanes) +
-                      " (overrides the card_planes parameter, default " +
-                      FormatNumber(Spec(ParamId::kCardPlanes).default_value) + ")");
-  cmd->add_option("--line-segments", o->render.line_segments,
-                  "Most line segments per line branch, 1..64 (default 1)");
+  AddNumberFlag(cmd, "--card-planes", &o->render.card_planes, kCardPlanes,
+                "Card planes per branch, " + RowRange(ParamId::kCardPlanes) +
+                    " (overrides the card_planes parameter, default " +
+                    FormatNumber(Spec(ParamId::kCardPlanes).default_value) + ")");
+  AddNumberFlag(cmd, "--line-segments", &o->render.line_segments, kLineSegments,
+                "Most line segments per line branch, 1..64 (default 1)");
 }
 
 int RunRenderStats(RenderStatsOptions o, const CLI::App& cmd, std::ostream& out) {
@@ -74,10 +82,10 @@ int RunRenderStats(RenderStatsOptions o, const CLI::App& cmd, std::ostream& out)
   Check(CheckFlag("--height", o.height, kViewport));
   Check(CheckFlag("--fov", o.fov_deg, kFov));
   if (o.mode != "hybrid" && o.mode != "full") {
-    throw BadInput{"--mode: '" + o.mode + "' must be hybrid or full"};
+    throw BadInput{"--mode: '" + Echo(o.mode) + "' must be hybrid or full"};
   }
   if (o.leaf_mode != "cluster" && o.leaf_mode != "branch") {
-    throw BadInput{"--leaf-mode: '" + o.leaf_mode + "' must be cluster or branch"};
+    throw BadInput{"--leaf-mode: '" + Echo(o.leaf_mode) + "' must be cluster or branch"};
   }
   Status render_status = CheckRenderOptions(o.render);
   if (!render_status
@@ -107,11 +115,12 @@ int RunRenderStats(RenderStatsOptions o, const CLI::App& cmd, std::ostream& out)
     std::vector<double> xyz;
     while (std::getline(stream, item, ',')) {
       std::optional<double> v = ParseNumber(item);
-      if (!v || !std::isfinite(*v)) break;
+      if (!v || !(std::fabs(*v) <= kMaxTarget)) break;
       xyz.push_back(*v);
     }
     if (xyz.size() != 3 || o.target.back() == ',') {
-      throw BadInput{"--target: '" + o.target + "' must be three numbers x,y,z (metres)"};
+      throw BadInput{"--target: '" + Echo(o.target) +
+                     "' must be three numbers x,y,z, each in [-10000, 10000] (metres)"};
     }
     view.target = glm::vec3(static_cast<float>(xyz[0]), static_cast<float>(xyz[1]),
                             static_cast<float>(xyz[2]));

@@ -6,9 +6,10 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "base/echo.h"
 #include "cli_common.h"
-#include "sway/sway_gltf.h"
 #include "sway/sway.h"
+#include "sway/sway_gltf.h"
 #include "tree/growth.h"
 #include "tree_cli.h"
 
@@ -33,32 +34,44 @@ struct SwayOptions {
 std::string RowHelp(ParamId id) { return std::string(Spec(id).unit) + ", " + RangeHelp(Spec(id)); }
 
 void AddSwayOptions(CLI::App* cmd, SwayOptions* o) {
-  cmd->add_option("--wind", o->wind,
-                  "Wind speed while the gust blows, " + RowHelp(ParamId::kWindSpeed) +
-                      " (default " + FormatNumber(Spec(ParamId::kWindSpeed).default_value) + ")");
-  cmd->add_option("--wind-dir", o->wind_dir,
-                  "Wind azimuth, degrees, " + RangeHelp(Spec(ParamId::kWindDir)) +
-                      ": 0 blows towards +x, 90 towards +z");
+  AddNumberFlag(cmd, "--wind", &o->wind, RowFlagRange(Spec(ParamId::kWindSpeed)),
+                "Wind speed while the gust blows, " + RowHelp(ParamId::kWindSpeed) + " (default " +
+                    FormatNumber(Spec(ParamId::kWindSpeed).default_value) + ")");
+  AddNumberFlag(cmd, "--wind-dir", &o->wind_dir, RowFlagRange(Spec(ParamId::kWindDir)),
+                "Wind azimuth, degrees, " + RangeHelp(Spec(ParamId::kWindDir)) +
+                    ": 0 blows towards +x, 90 towards +z");
   cmd->add_option("--gust", o->gust,
                   "ON_S:OFF_S: the wind starts at ON and stops at OFF (default 1:6)");
-  cmd->add_option("--dt", o->dt, "Time step, " + RowHelp(ParamId::kSwayDt) + " (default 1/30)");
-  cmd->add_option("--duration", o->duration,
-                  "Simulated time, " + RowHelp(ParamId::kSwayDuration) + " (default " +
-                      FormatNumber(Spec(ParamId::kSwayDuration).default_value) + ")");
+  AddNumberFlag(cmd, "--dt", &o->dt, RowFlagRange(Spec(ParamId::kSwayDt)),
+                "Time step, " + RowHelp(ParamId::kSwayDt) + " (default 1/30)");
+  AddNumberFlag(cmd, "--duration", &o->duration, RowFlagRange(Spec(ParamId::kSwayDuration)),
+                "Simulated time, " + RowHelp(ParamId::kSwayDuration) + " (default " +
+                    FormatNumber(Spec(ParamId::kSwayDuration).default_value) + ")");
   cmd->add_option("--set-sway", o->sets,
                   "Same as --set (kept for old scripts): sway and wind parameters are rows of "
                   "the one table, see 'niwa params'");
-  cmd->add_option("--tips", o->tips,
-                  "Tips traced in --csv and --svg, " + RangeHelp(kTips) + " (default 4)");
+  AddNumberFlag(cmd, "--tips", &o->tips, kTips,
+                "Tips traced in --csv and --svg, " + RangeHelp(kTips) + " (default 4)");
   cmd->add_option("--csv", o->csv_path, "Write tip trajectories: time,node,x,y,z (s, cm)");
   cmd->add_option("--svg", o->svg_path, "Write a plot of tip displacement against time");
   cmd->add_flag("--stats", o->stats, "Print one JSON object of statistics on stdout");
   cmd->add_option("--out", o->out_path,
                   "Write the sway: .glb (tree mesh skinned to the node points, one animation clip "
                   "of the run), .csv (as --csv) or .svg (as --svg)");
-  cmd->add_option("--fps", o->fps,
-                  "Animation keys per second of simulated time in --out .glb, " + RangeHelp(kFps) +
-                      " (default 30); each key is the state at the nearest time step");
+  AddNumberFlag(cmd, "--fps", &o->fps, kFps,
+                "Animation keys per second of simulated time in --out .glb, " + RangeHelp(kFps) +
+                    " (default 30); each key is the state at the nearest time step");
+}
+
+// The flag whose values made CheckSwayParams fail: the last given of --gust, --set-sway, --set,
+// --params and --url (in the order they apply: --url, --params, --set, --set-sway, --gust).
+std::string SwayErrorSource(const SwayOptions& o, const CLI::App& cmd) {
+  if (cmd.count("--gust")) return "--gust";
+  if (!o.sets.empty()) return "--set-sway";
+  if (!o.state.sets.empty()) return "--set";
+  if (!o.state.params_file.empty()) return "--params";
+  if (!o.state.url.empty()) return "--url";
+  return "--set";
 }
 
 // Sway and wind parameters are rows of the tree table: --url, --params, --set (and its alias
@@ -81,18 +94,20 @@ SwayParams ResolveSwayParams(const SwayOptions& o, const CLI::App& cmd, TreePara
       on = ParseNumber(o.gust.substr(0, colon));
       off = ParseNumber(o.gust.substr(colon + 1));
     }
-    if (!on || !off) throw BadInput{"--gust: '" + o.gust + "' must be ON_S:OFF_S, e.g. 1:6"};
+    if (!on || !off) {
+      throw BadInput{"--gust: '" + Echo(o.gust) + "' must be ON_S:OFF_S, e.g. 1:6"};
+    }
     set("--gust", ParamId::kGustOn, *on);
     set("--gust", ParamId::kGustOff, *off);
   }
   std::string error = CheckSwayParams(*params);
-  if (!error.empty()) throw BadInput{(cmd.count("--gust") ? "--gust: " : "--set: ") + error};
+  if (!error.empty()) throw BadInput{SwayErrorSource(o, cmd) + ": " + error};
   Check(CheckFlag("--tips", o.tips, kTips));
   if (!o.csv_path.empty() && Extension(o.csv_path) != ".csv") {
-    throw BadInput{"--csv: '" + o.csv_path + "' must end in .csv"};
+    throw BadInput{"--csv: '" + Echo(o.csv_path) + "' must end in .csv"};
   }
   if (!o.svg_path.empty() && Extension(o.svg_path) != ".svg") {
-    throw BadInput{"--svg: '" + o.svg_path + "' must end in .svg"};
+    throw BadInput{"--svg: '" + Echo(o.svg_path) + "' must end in .svg"};
   }
   return SwayParams(*params);
 }
@@ -100,7 +115,7 @@ SwayParams ResolveSwayParams(const SwayOptions& o, const CLI::App& cmd, TreePara
 int RunSwayCommand(const SwayOptions& o, const CLI::App& cmd, std::ostream& out) {
   const std::string out_ext = Extension(o.out_path);
   if (!o.out_path.empty() && out_ext != ".glb" && out_ext != ".csv" && out_ext != ".svg") {
-    throw BadInput{"--out: '" + o.out_path + "' must end in .glb, .csv or .svg"};
+    throw BadInput{"--out: '" + Echo(o.out_path) + "' must end in .glb, .csv or .svg"};
   }
   if (cmd.count("--fps") && out_ext != ".glb") {
     throw BadInput{"--fps: only applies with --out FILE.glb"};
@@ -110,24 +125,24 @@ int RunSwayCommand(const SwayOptions& o, const CLI::App& cmd, std::ostream& out)
   SwayParams params = ResolveSwayParams(o, cmd, &state.params);
   Tree tree = GrowTree(state);
   CheckPrunes(state, tree);
+  // Every output is staged first and renamed only when all were written (all or none).
+  StagedOutputs outputs;
   if (out_ext == ".glb") {  // core/sway/sway_gltf: exact two-joint skinning of eq. 3.15
     std::vector<unsigned char> glb;
     SwayGlbOptions glb_options;
     glb_options.fps = o.fps;
     std::string error = WriteSwayGlb(tree, params, glb_options, &glb).Line();
     if (!error.empty()) throw BadInput{"--out: " + error};
-    Check(WriteFileAtomically(o.out_path, std::string(glb.begin(), glb.end())).Within("--out"));
+    Check(outputs.Stage("--out", o.out_path, std::string(glb.begin(), glb.end())));
   }
   SwayRun run = RunSway(tree, params, o.tips);
   if (out_ext == ".csv" || out_ext == ".svg") {
-    Check(
-        WriteFileAtomically(o.out_path, out_ext == ".csv" ? SwayCsv(run) : SwayPlotSvg(run, params))
-            .Within("--out"));
+    Check(outputs.Stage("--out", o.out_path,
+                        out_ext == ".csv" ? SwayCsv(run) : SwayPlotSvg(run, params)));
   }
-  if (!o.csv_path.empty()) Check(WriteFileAtomically(o.csv_path, SwayCsv(run)).Within("--csv"));
-  if (!o.svg_path.empty()) {
-    Check(WriteFileAtomically(o.svg_path, SwayPlotSvg(run, params)).Within("--svg"));
-  }
+  if (!o.csv_path.empty()) Check(outputs.Stage("--csv", o.csv_path, SwayCsv(run)));
+  if (!o.svg_path.empty()) Check(outputs.Stage("--svg", o.svg_path, SwayPlotSvg(run, params)));
+  Check(outputs.Commit());
   if (o.stats) {
     nlohmann::ordered_json j;
     j["preset"] = tree.preset;

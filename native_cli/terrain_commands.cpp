@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "base/echo.h"
 #include "cli_common.h"
 #include "io/gltf_writer.h"
 #include "terrain/compare.h"
@@ -31,29 +32,15 @@ struct GrowOptions {
   bool stats = false;
 };
 
-// Several outputs of one run are all written or none: each is staged beside its target through
-// WriteFileAtomically, and only when every one is staged are they renamed into place.
-void WriteAllOrNone(const std::vector<std::pair<std::string, std::string>>& files) {
-  std::vector<std::string> staged;
-  const auto drop = [&staged] {
-    for (const std::string& s : staged) std::remove(s.c_str());
-  };
-  for (const auto& [path, bytes] : files) {
-    const std::string stage = path + ".niwa-stage";
-    Status s = WriteFileAtomically(stage, bytes);
-    if (!s.ok()) {
-      drop();
-      Fail(Status::Error("", "cannot write '" + path + "'"));
-    }
-    staged.push_back(stage);
-  }
-  for (std::size_t k = 0; k < files.size(); ++k) {
-    if (std::rename(staged[k].c_str(), files[k].first.c_str()) != 0) {
-      for (std::size_t m = 0; m < k; ++m) std::remove(files[m].first.c_str());
-      drop();
-      Fail(Status::Error("", "cannot write '" + files[k].first + "'"));
-    }
-  }
+// Several outputs of one run are all written or none (cli::StagedOutputs: each staged to a
+// unique temporary file beside its target, then all renamed; any failure removes them all).
+struct OutputFile {
+  std::string field, path, bytes;
+};
+void WriteAllOrNone(const std::vector<OutputFile>& files) {
+  StagedOutputs outputs;
+  for (const OutputFile& f : files) Check(outputs.Stage(f.field, f.path, f.bytes));
+  Check(outputs.Commit());
 }
 
 // The state from --url, then the seed flags, --method, --params, --seed, --set and --res.
@@ -72,7 +59,7 @@ terrain::TerrainState ResolveTerrainState(const GrowOptions& o) {
   if (!o.builtin.empty()) {
     Check(AsFlag(terrain::SetTerrainBuiltin(o.builtin, &state), "--builtin"));
   } else if (!o.contour.empty()) {
-    Result<std::string> text = ReadFile(o.contour, "--contour");
+    Result<std::string> text = ReadFile(o.contour, "--contour", kMaxContourFileBytes);
     if (!text.ok()) Fail(text.status());
     Result<terrain::SeedFile> file = terrain::ParseContourJson(*text);
     if (!file.ok()) Fail(file.status().Within("--contour"));
@@ -93,7 +80,7 @@ terrain::TerrainState ResolveTerrainState(const GrowOptions& o) {
     Check(AsFlag(terrain::SetTerrainPreset(o.method, &state), "--method"));
   if (file_elevation) Check(AsFlag(state.params.Set(TerrainParam::kH0, elevation), "elevation"));
   if (!o.params_file.empty()) {
-    Result<std::string> text = ReadFile(o.params_file, "--params");
+    Result<std::string> text = ReadFile(o.params_file, "--params", kMaxParamsFileBytes);
     if (!text.ok()) Fail(text.status());
     Check(terrain::ApplyTerrainStateJson(*text, &state).Within("--params " + o.params_file));
   }
@@ -135,12 +122,13 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   const auto t1 = std::chrono::steady_clock::now();
   terrain::Heightfield hf = terrain::BuildHeightfield(*t, params.GetInt(TerrainParam::kRes));
   const auto t2 = std::chrono::steady_clock::now();
-  std::vector<std::pair<std::string, std::string>> files;
+  std::vector<OutputFile> files;
   if (!o.contours_out.empty()) {
     const std::string ext = Extension(o.contours_out);
-    files.push_back({o.contours_out, ext == ".json"      ? terrain::TerrainToJson(*t)
-                                     : ext == ".geojson" ? terrain::TerrainToGeoJson(*t)
-                                                         : terrain::TerrainToSvg(*t)});
+    files.push_back({"--contours", o.contours_out,
+                     ext == ".json"      ? terrain::TerrainToJson(*t)
+                     : ext == ".geojson" ? terrain::TerrainToGeoJson(*t)
+                                         : terrain::TerrainToSvg(*t)});
   }
   if (!o.out.empty()) {
     nlohmann::json extras;
@@ -149,14 +137,14 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
     Result<std::vector<unsigned char>> glb = gltf::WriteGlb(
         terrain::TerrainDocument(*t, hf, params.GetBool(TerrainParam::kTint), extras.dump()));
     if (!glb.ok()) Fail(glb.status().Within("--out"));
-    files.push_back({o.out, std::string(glb->begin(), glb->end())});
+    files.push_back({"--out", o.out, std::string(glb->begin(), glb->end())});
   }
   if (!o.heightmap.empty()) {
     Result<terrain::Heightmap> hm = terrain::EncodeHeightmap(hf);
     if (!hm.ok()) Fail(hm.status());
-    files.push_back({o.heightmap, std::string(hm->png.begin(), hm->png.end())});
+    files.push_back({"--heightmap", o.heightmap, std::string(hm->png.begin(), hm->png.end())});
     const std::string stem = o.heightmap.substr(0, o.heightmap.size() - 4);
-    files.push_back({stem + ".json", hm->sidecar_json});
+    files.push_back({"--heightmap", stem + ".json", hm->sidecar_json});
   }
   const auto t3 = std::chrono::steady_clock::now();
   WriteAllOrNone(files);
@@ -211,10 +199,10 @@ nlohmann::json MeasuresJson(const terrain::SurfaceMeasures& m) {
 
 int RunCompare(const GrowOptions& o, const std::string& dem_path, std::ostream& out) {
   CheckOutPath(dem_path, "--dem", {".png"});
-  Result<std::string> png = ReadFile(dem_path, "--dem");
+  Result<std::string> png = ReadFile(dem_path, "--dem", kMaxDemFileBytes);
   if (!png.ok()) Fail(png.status());
   const std::string side_path = dem_path.substr(0, dem_path.size() - 4) + ".json";
-  Result<std::string> side = ReadFile(side_path, "--dem");
+  Result<std::string> side = ReadFile(side_path, "--dem", kMaxParamsFileBytes);
   if (!side.ok()) Fail(side.status());
   Result<terrain::Heightfield> dem =
       terrain::ReadHeightmap(std::vector<unsigned char>(png->begin(), png->end()), *side, "--dem");

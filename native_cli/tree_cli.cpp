@@ -1,6 +1,7 @@
 // The tree state flags of the niwa CLI, over the core's one state resolver.
 #include "tree_cli.h"
 
+#include "base/echo.h"
 #include "cli_common.h"
 #include "params/param_json.h"
 #include "tree/presets.h"
@@ -11,10 +12,10 @@ void AddStateOptions(CLI::App* cmd, const ParamTable& table, StateOptions* o) {
   const std::string params_command =
       table.name() == "tree" ? "'niwa params'" : "'niwa params " + table.name() + "'";
   cmd->add_option("--preset", o->preset, "Species preset (see 'niwa presets')");
-  cmd->add_option("--years", o->years,
-                  "Years to grow, " + RangeHelp(0, kMaxYears) + " (default: the preset's)");
-  cmd->add_option("--seed", o->seed,
-                  "Random seed, " + RangeHelp(0, kMaxSeed) + " (default: the preset's)");
+  AddNumberFlag(cmd, "--years", &o->years, {0, kMaxYears, true},
+                "Years to grow, " + RangeHelp(0, kMaxYears) + " (default: the preset's)");
+  AddNumberFlag(cmd, "--seed", &o->seed, {0, kMaxSeed, true},
+                "Random seed, decimal, " + RangeHelp(0, kMaxSeed) + " (default: the preset's)");
   cmd->add_option("--set", o->sets,
                   "Override a parameter: key=value (repeatable; see " + params_command + ")");
   cmd->add_option("--params", o->params_file, "JSON file of parameters {\"key\": value, ...}");
@@ -30,7 +31,7 @@ TreeState ResolveTreeState(const StateOptions& o, const CLI::App& cmd) {
   if (!o.url.empty()) {
     std::vector<std::string> notices;
     state = DecodeTreeHash(o.url, &notices);
-    if (!notices.empty()) throw BadInput{"--url: " + notices.front()};
+    if (!notices.empty()) Fail(Status::Error("--url", notices.front()));
   }
   // --preset replaces the url's preset (and its values) only when it names another one.
   if ((cmd.count("--preset") || o.url.empty()) && (o.url.empty() || state.preset != o.preset)) {
@@ -41,14 +42,23 @@ TreeState ResolveTreeState(const StateOptions& o, const CLI::App& cmd) {
     Check(AsFlag(SetStateSeed(static_cast<double>(o.seed), &state), "--seed"));
   }
   if (!o.params_file.empty()) {
-    Result<std::string> text = ReadFile(o.params_file, "--params");
+    Result<std::string> text = ReadFile(o.params_file, "--params", kMaxParamsFileBytes);
     Check(text.status());
     Check(ApplyParamsJson(*text, &state.params, PresetFileFields())
-              .Within("--params " + o.params_file));
+              .Within("--params " + Echo(o.params_file)));
   }
   for (const std::string& item : o.sets)
     Check(state.params.SetFromAssignment(item).Within("--set"));
   for (const std::string& item : o.prunes) Check(AsFlag(AddStatePrune(item, &state), "--prune"));
+  // Refused at load, labelled by the last source that set parameters (applied --url, --params,
+  // --set in that order).
+  if (Status gust = CheckGustOrder(state.params); !gust.ok()) {
+    const char* source = !o.sets.empty()          ? "--set"
+                         : !o.params_file.empty() ? "--params"
+                         : !o.url.empty()         ? "--url"
+                                                  : "--preset";
+    Fail(gust.Within(source));
+  }
   return state;
 }
 

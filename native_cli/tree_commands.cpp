@@ -2,20 +2,23 @@
 // cli-order: 10
 #include <memory>
 
+#include "base/echo.h"
 #include "cli_common.h"
-#include "tree/tree_gltf.h"
-#include "tree/tree_svg.h"
 #include "tree/growth.h"
 #include "tree/mesh.h"
 #include "tree/presets.h"
+#include "tree/tree_gltf.h"
 #include "tree/tree_json.h"
 #include "tree/tree_report.h"
+#include "tree/tree_svg.h"
 #include "tree_cli.h"
 
 namespace niwa::cli {
 namespace {
 
 const FlagRange kSvgSize = {100, 10000, true};
+const FlagRange kZeroOne = {0, 1, true};
+constexpr std::size_t kMaxCaption = 200;  // bytes of --caption
 
 struct GrowOptions {
   StateOptions state;
@@ -26,12 +29,13 @@ struct GrowOptions {
 
 // SVG-only drawing options of 'tree grow' (used by scripts/figures).
 void AddSvgOptions(CLI::App* cmd, SvgOptions* o) {
-  cmd->add_option("--svg-width", o->width,
-                  "SVG width in pixels, " + RangeHelp(kSvgSize) + " (default 600)");
-  cmd->add_option("--svg-height", o->height,
-                  "SVG height in pixels, " + RangeHelp(kSvgSize) + " (default 600)");
-  cmd->add_option("--svg-leaves", o->leaves, "SVG: draw leaves, 0 or 1 (default 1)");
-  cmd->add_option("--svg-flowers", o->flowers, "SVG: draw flowers, 0 or 1 (default 1)");
+  AddNumberFlag(cmd, "--svg-width", &o->width, kSvgSize,
+                "SVG width in pixels, " + RangeHelp(kSvgSize) + " (default 600)");
+  AddNumberFlag(cmd, "--svg-height", &o->height, kSvgSize,
+                "SVG height in pixels, " + RangeHelp(kSvgSize) + " (default 600)");
+  AddNumberFlag(cmd, "--svg-leaves", &o->leaves, kZeroOne, "SVG: draw leaves, 0 or 1 (default 1)");
+  AddNumberFlag(cmd, "--svg-flowers", &o->flowers, kZeroOne,
+                "SVG: draw flowers, 0 or 1 (default 1)");
   cmd->add_option("--caption", o->caption, "SVG: text under the tree");
 }
 
@@ -42,6 +46,19 @@ void CheckSvgOptions(const SvgOptions& o, const CLI::App& cmd, const std::string
       throw BadInput{std::string(name) + ": only applies with --out FILE.svg"};
     }
   }
+  // The caption goes into the SVG escaped (base/markup_escape.h); control characters, which XML
+  // cannot carry, are refused here rather than silently removed.
+  for (char c : o.caption) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7f) {
+      throw BadInput{"--caption: '" + Echo(o.caption) +
+                     "' holds a control character; must be printable text"};
+    }
+  }
+  if (o.caption.size() > kMaxCaption) {
+    throw BadInput{"--caption: " + std::to_string(o.caption.size()) + " bytes; must be at most " +
+                   std::to_string(kMaxCaption)};
+  }
   Check(CheckFlag("--svg-width", o.width, kSvgSize));
   Check(CheckFlag("--svg-height", o.height, kSvgSize));
 }
@@ -49,7 +66,7 @@ void CheckSvgOptions(const SvgOptions& o, const CLI::App& cmd, const std::string
 int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
   std::string ext = Extension(o.out_path);
   if (!o.out_path.empty() && ext != ".glb" && ext != ".json" && ext != ".svg") {
-    throw BadInput{"--out: '" + o.out_path + "' must end in .glb, .json or .svg"};
+    throw BadInput{"--out: '" + Echo(o.out_path) + "' must end in .glb, .json or .svg"};
   }
   CheckSvgOptions(o.svg, cmd, ext);
   TreeState state = ResolveTreeState(o.state, cmd);
@@ -68,7 +85,9 @@ int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
       if (!error.empty()) throw BadInput{"--out: " + error};
       bytes.assign(glb.begin(), glb.end());
     }
-    Check(WriteFileAtomically(o.out_path, bytes).Within("--out"));
+    StagedOutputs outputs;
+    Check(outputs.Stage("--out", o.out_path, bytes));
+    Check(outputs.Commit());
   }
   if (o.stats) out << TreeStatsJson(tree, timings) << "\n";
   return 0;
@@ -103,8 +122,10 @@ void AddTreeCommands(CLI::App& app, CommandList& commands) {
   // Added after 'mappings' so that 'tree grow --help' lists its options as before.
   AddSvgOptions(grow, &grow_options->svg);
   commands.push_back({mappings, [mappings, mapping_options](std::ostream& out) {
-                        out << TreeMappingsCsv(
-                            ResolveTreeState(*mapping_options, *mappings).params);
+                        // A prune is checked against the tree it cuts, as 'tree grow' does.
+                        TreeState state = ResolveTreeState(*mapping_options, *mappings);
+                        if (!state.prunes.empty()) CheckPrunes(state, GrowTree(state));
+                        out << TreeMappingsCsv(state.params);
                         return 0;
                       }});
 }

@@ -8,6 +8,8 @@
 #include <string>
 #include <utility>
 
+#include "base/echo.h"
+
 namespace niwa {
 
 class [[nodiscard]] Status {
@@ -26,15 +28,17 @@ class [[nodiscard]] Status {
   bool ok() const { return ok_; }
   const std::string& field() const { return field_; }
   const std::string& message() const { return message_; }
-  // The one-line error text: "field: message" (or the message alone when there is no field).
+  // The one-line error text: "field: message" (or the message alone when there is no field),
+  // with control characters escaped and cut at kMaxMessageLength (base/echo.h EscapeLine); values
+  // inside the message are cut shorter by their makers through Echo().
   std::string Line() const {
     if (ok_) return "";
-    return field_.empty() ? message_ : field_ + ": " + message_;
+    return EscapeLine(field_.empty() ? message_ : field_ + ": " + message_, kMaxMessageLength);
   }
   // The same error under an outer field, e.g. "--params: alpha_t: ...".
   Status Within(const std::string& outer) const {
     if (ok_ || outer.empty()) return *this;
-    return Error(outer, Line());
+    return Error(outer, field_.empty() ? message_ : field_ + ": " + message_);
   }
 
  private:

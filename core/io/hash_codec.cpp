@@ -4,7 +4,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
 #include <optional>
+
+#include "base/echo.h"
 
 namespace niwa {
 namespace {
@@ -35,19 +38,20 @@ std::string PercentDecode(std::string_view text) {
   return out;
 }
 
-std::string Printable(std::string_view text) {
-  std::string out;
-  for (char c : text.substr(0, 40)) {
-    bool markup = c == '<' || c == '>' || c == '&' || c == '"' || c == '\'';
-    out += (c >= 32 && c < 127 && !markup) ? c : '?';
-  }
-  return out;
-}
+std::string Printable(std::string_view text) { return EchoNoMarkup(text); }
 
-HashPairs SplitHash(std::string_view hash) {
-  std::string_view text = hash.substr(0, kMaxHashLength);
-  if (!text.empty() && text[0] == '#') text.remove_prefix(1);
+HashPairs SplitHash(std::string_view hash, std::vector<std::string>* notices,
+                    const std::vector<std::string_view>& repeatable) {
   HashPairs pairs;
+  if (hash.size() > kMaxHashLength) {
+    if (notices != nullptr) {
+      notices->push_back("hash: " + std::to_string(hash.size()) + " characters; the limit is " +
+                         std::to_string(kMaxHashLength) + ", nothing was read");
+    }
+    return pairs;
+  }
+  std::string_view text = hash;
+  if (!text.empty() && text[0] == '#') text.remove_prefix(1);
   std::size_t start = 0;
   while (start <= text.size()) {
     std::size_t end = text.find('&', start);
@@ -61,7 +65,38 @@ HashPairs SplitHash(std::string_view hash) {
     }
     start = end + 1;
   }
+  if (notices != nullptr) {  // repeated keys, each named once, in order of first appearance
+    std::map<std::string, std::size_t> counts;
+    for (const auto& pair : pairs) ++counts[pair.first];
+    for (const auto& pair : pairs) {
+      auto it = counts.find(pair.first);
+      if (it->second <= 1) continue;
+      if (std::find(repeatable.begin(), repeatable.end(), pair.first) == repeatable.end()) {
+        notices->push_back(Printable(pair.first) + ": given " + std::to_string(it->second) +
+                           " times; the last value is used");
+      }
+      it->second = 0;  // named once
+    }
+  }
   return pairs;
+}
+
+std::string PercentEncode(std::string_view text) {
+  static const char kHex[] = "0123456789ABCDEF";
+  std::string out;
+  for (char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    const bool plain = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+                       c == '.' || c == '_' || c == '~' || c == ':' || c == ',' || c == '-';
+    if (plain) {
+      out += c;
+    } else {
+      out += '%';
+      out += kHex[byte >> 4];
+      out += kHex[byte & 15];
+    }
+  }
+  return out;
 }
 
 bool ApplyHashParam(std::string_view key, std::string_view value, std::string_view prefix,

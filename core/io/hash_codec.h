@@ -15,15 +15,22 @@ namespace niwa {
 
 using HashPairs = std::vector<std::pair<std::string, std::string>>;
 
-// Longest hash read; the rest is ignored.
+// Longest hash read, in characters (the '#' included). A longer hash is refused whole, never cut.
 constexpr std::size_t kMaxHashLength = 16384;
 
 // Splits "#k=v&k2=v2" (the '#' optional) into decoded (key, value) pairs in order; empty items are
-// skipped, a missing '=' gives an empty value. '+' is a space and %XX a byte.
-HashPairs SplitHash(std::string_view hash);
+// skipped, a missing '=' gives an empty value. '+' is a space and %XX a byte. A hash longer than
+// kMaxHashLength gives no pairs and the notice "hash: N characters; the limit is 16384, nothing
+// was read"; a key given more than once (other than those in `repeatable`) gives the notice
+// "KEY: given N times; the last value is used".
+HashPairs SplitHash(std::string_view hash, std::vector<std::string>* notices = nullptr,
+                    const std::vector<std::string_view>& repeatable = {});
+// Percent-encodes a value or key for a hash: every byte outside [A-Za-z0-9._~:,-] as %XX, so a
+// decoded value written back cannot add keys ('&', '=', '#', '%' are encoded).
+std::string PercentEncode(std::string_view text);
 std::string PercentDecode(std::string_view text);
-// Text safe to show in a notice: at most 40 characters, without control or markup characters
-// (each becomes '?'); the page shows notices as text, the CLI as one line.
+// Text safe to show in a notice: base/echo.h's EchoNoMarkup (control, non-ASCII and markup bytes as
+// "\xNN", cut at 60 characters + "..."); the page shows notices as text, the CLI as one line.
 std::string Printable(std::string_view text);
 
 // If key is prefix + a row key of params' table, sets that row from the text, clamped into its

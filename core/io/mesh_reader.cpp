@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <fstream>
+#include <system_error>
 
+#include "base/echo.h"
 #include "io/gltf_reader.h"
 #include "io/obj_reader.h"
 
@@ -18,6 +21,12 @@ std::string BaseName(const std::string& path) {
 
 Result<std::string> ReadFileCapped(const std::string& path, std::size_t max_bytes) {
   const std::string field = BaseName(path);
+  // Only a regular file is opened: a FIFO would block the open, a device never ends.
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(path, error);
+  if (!error && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    return Status::Error(field, "cannot read '" + Echo(path) + "': not a regular file");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) return Status::Error(field, "cannot open '" + path + "' (missing or unreadable)");
   in.seekg(0, std::ios::end);

@@ -108,6 +108,7 @@ Result<double> Number(const nlohmann::json& v, const std::string& field) {
 }  // namespace
 
 Status ApplyIvyStateJson(const std::string& text, IvyState* state) {
+  NIWA_RETURN_IF_ERROR(CheckJsonKeys(text, "params"));
   nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
   if (j.is_discarded() || !j.is_object()) {
     return Status::Error("params", "not a JSON object; must be {preset, seed, steps, params}");
@@ -146,7 +147,7 @@ Status ApplyIvyStateJson(const std::string& text, IvyState* state) {
 void ApplyIvyHash(std::string_view hash, std::string_view prefix, IvyState* state,
                   std::vector<std::string>* notices) {
   const std::string pre(prefix);
-  HashPairs pairs = SplitHash(hash);
+  HashPairs pairs = SplitHash(hash, notices);
   // The preset first, so the other keys go on top of it whatever their order.
   for (const auto& [key, value] : pairs) {
     if (key != pre + "preset") continue;

@@ -3,14 +3,54 @@
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
+#include <set>
+
+#include "base/echo.h"
+#include "params/param_text.h"
 
 namespace niwa {
 
 using nlohmann::json;
 using nlohmann::ordered_json;
 
+Status CheckJsonKeys(const std::string& text, std::string_view field) {
+  std::vector<std::set<std::string>> keys;  // one set per open object (arrays hold an empty one)
+  Status status;
+  auto check = [&](int depth, json::parse_event_t event, json& parsed) {
+    if (!status.ok()) return false;
+    switch (event) {
+      case json::parse_event_t::object_start:
+      case json::parse_event_t::array_start:
+        if (depth >= kMaxJsonDepth) {
+          status = Status::Error(std::string(field),
+                                 "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+          return false;
+        }
+        keys.emplace_back();
+        break;
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        if (!keys.empty()) keys.pop_back();
+        break;
+      case json::parse_event_t::key:
+        if (!keys.empty() && !keys.back().insert(parsed.get<std::string>()).second) {
+          status = Status::Error(Echo(parsed.get<std::string>()), "given twice in one object");
+          return false;
+        }
+        break;
+      default:
+        break;
+    }
+    return false;  // nothing is kept: this pass only checks
+  };
+  const json discarded = json::parse(text, check, /*allow_exceptions=*/false);
+  (void)discarded;
+  return status;
+}
+
 Status ApplyParamsJson(const std::string& text, ParamSet* params,
                        const std::vector<std::string_view>& ignored) {
+  NIWA_RETURN_IF_ERROR(CheckJsonKeys(text, "params"));
   json document = json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (document.is_discarded()) return Status::Error("params", "malformed JSON");
   if (!document.is_object()) {
@@ -20,6 +60,14 @@ Status ApplyParamsJson(const std::string& text, ParamSet* params,
   if (!values.is_object()) {
     return Status::Error("params", "'params' must be an object of key: number");
   }
+  if (&values != &document) {  // beside "params", only the ignored fields may stand
+    for (auto it = document.begin(); it != document.end(); ++it) {
+      if (it.key() == "params") continue;
+      if (std::find(ignored.begin(), ignored.end(), it.key()) != ignored.end()) continue;
+      return Status::Error(Echo(it.key()),
+                           "beside a \"params\" object; put every parameter inside \"params\"");
+    }
+  }
   ParamSet result = *params;
   for (auto it = values.begin(); it != values.end(); ++it) {
     std::optional<std::size_t> row = params->table().Find(it.key());
@@ -28,7 +76,7 @@ Status ApplyParamsJson(const std::string& text, ParamSet* params,
           std::find(ignored.begin(), ignored.end(), it.key()) != ignored.end()) {
         continue;
       }
-      return Status::Error("", "unknown parameter '" + it.key().substr(0, 64) + "'");
+      return Status::Error("", "unknown parameter '" + Echo(it.key()) + "'");
     }
     if (!it.value().is_number()) {
       return Status::Error(it.key(), "must be " + RangeText(params->table().row(*row)));

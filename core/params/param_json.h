@@ -11,9 +11,19 @@
 
 namespace niwa {
 
+// Deepest nesting of arrays and objects in a JSON input file.
+constexpr int kMaxJsonDepth = 32;
+
+// Ok when text is JSON whose objects each name a key once and whose nesting is at most
+// kMaxJsonDepth; else {"KEY", "given twice in one object"} or {field, "nested deeper than 32"}.
+// Malformed JSON is left to the caller's parse (ok here). Used by every JSON input reader.
+Status CheckJsonKeys(const std::string& text, std::string_view field);
+
 // Applies {"key": number, ...} (or {"params": {...}}) onto params. `ignored` lists top-level
-// keys that may sit beside the values (a preset's "name", "years", ...). The error names the field
-// and its allowed range; params is unchanged on error.
+// keys that may sit beside the values (a preset's "name", "years", ...); with a "params" object,
+// any other top-level key that is not ignored is refused (not silently dropped), and so is a key
+// given twice. Numeric strings go through the one strict parser. The error names the field and its
+// allowed range; params is unchanged on error.
 Status ApplyParamsJson(const std::string& text, ParamSet* params,
                        const std::vector<std::string_view>& ignored = {});
 // {"key": value, ...} for every row, in table order (indent as nlohmann's dump: -1 one line).

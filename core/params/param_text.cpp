@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "params/strict_number.h"
+
 namespace niwa {
 
 std::string FormatNumber(double value) {
@@ -36,17 +38,6 @@ Status CheckValue(std::string_view field, double value, double min_value, double
                            " is out of range; must be " + RangeText(min_value, max_value, integer));
 }
 
-std::optional<double> ParseNumber(std::string_view text) {
-  if (text.empty() || text.size() > 64) return std::nullopt;
-  for (char c : text) {
-    bool ok = (c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+' || c == 'e' || c == 'E';
-    if (!ok) return std::nullopt;
-  }
-  std::string copy(text);
-  char* end = nullptr;
-  double value = std::strtod(copy.c_str(), &end);
-  if (end != copy.c_str() + copy.size() || !std::isfinite(value)) return std::nullopt;
-  return value;
-}
+std::optional<double> ParseNumber(std::string_view text) { return ParseDecimal(text); }
 
 }  // namespace niwa

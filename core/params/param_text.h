@@ -19,7 +19,8 @@ Status CheckValue(std::string_view field, double value, double min_value, double
                   bool integer);
 // Shortest text that parses back to exactly the same double.
 std::string FormatNumber(double value);
-// Strict number parser: the whole text must be a finite decimal number.
+// Strict number parser: the whole text must be a finite decimal number (params/strict_number.h
+// ParseDecimal, the one grammar).
 std::optional<double> ParseNumber(std::string_view text);
 
 }  // namespace niwa

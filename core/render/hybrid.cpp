@@ -13,6 +13,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "base/echo.h"
 #include "math/det_math.h"
 #include "math/rotation.h"
 #include "params/param_text.h"
@@ -325,8 +326,8 @@ bool ParseOrbitView(const std::string& text, OrbitView* view, std::string* error
   std::string item;
   while (std::getline(stream, item, ',')) {
     std::optional<double> number = ParseNumber(item);
-    if (!number || !std::isfinite(*number)) {
-      *error = "cam: '" + item + "' is not a number; must be yaw,pitch,distance,tx,ty,tz";
+    if (!number || !(std::fabs(*number) <= 1e30)) {  // in float range before the cast
+      *error = "cam: '" + Echo(item) + "' is not a number; must be yaw,pitch,distance,tx,ty,tz";
       return false;
     }
     values.push_back(static_cast<float>(*number));
@@ -342,6 +343,16 @@ bool ParseOrbitView(const std::string& text, OrbitView* view, std::string* error
   if (values[2] < kMinDistance || values[2] > kMaxDistance) {
     *error = "cam: distance must be in [0.2, 400] (metres)";
     return false;
+  }
+  if (!(std::fabs(values[0]) <= kMaxYaw)) {
+    *error = "cam: yaw must be in [-1000, 1000] (radians)";
+    return false;
+  }
+  for (int i = 3; i < 6; ++i) {
+    if (!(std::fabs(values[static_cast<std::size_t>(i)]) <= kMaxTarget)) {
+      *error = "cam: target tx,ty,tz must each be in [-10000, 10000] (metres)";
+      return false;
+    }
   }
   view->yaw = values[0];
   view->pitch = values[1];

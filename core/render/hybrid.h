@@ -39,8 +39,6 @@ struct OrbitView {
   float distance = 10.0f;
   glm::vec3 target{0.0f, 2.0f, 0.0f};
 };
-constexpr float kMinPitch = -0.1f, kMaxPitch = 1.5f;         // camera.js clamps
-constexpr float kMinDistance = 0.2f, kMaxDistance = 400.0f;  // camera.js clamps
 
 // camera.js frame(bounds, margin): target = box centre, distance = r / sin(fov/2) * margin with
 // r = max(0.25, half the box diagonal); yaw and pitch are the defaults.

@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "params/param_json.h"
 #include "terrain/generate.h"
 
 namespace niwa::terrain {
@@ -36,6 +37,7 @@ Result<Ring> ReadPoints(const nlohmann::json& pts) {
 }  // namespace
 
 Result<SeedFile> ParseContourJson(const std::string& text) {
+  if (Status keys = CheckJsonKeys(text, "contour"); !keys.ok()) return keys;
   nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
   if (j.is_discarded() || !j.is_object()) return Bad("not a JSON object");
   SeedFile out;

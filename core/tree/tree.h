@@ -61,6 +61,13 @@ struct Branch {
 // Most years a tree grows (the state, prunes and the CLI check against it).
 constexpr int kMaxYears = 100;
 
+// The page camera's ranges (cam=yaw,pitch,distance,tx,ty,tz): the state's camera check, the CLI's
+// --cam and render/hybrid's orbit view all use these; camera.js clamps pitch and distance alike.
+constexpr float kMinPitch = -0.1f, kMaxPitch = 1.5f;         // radians
+constexpr float kMinDistance = 0.2f, kMaxDistance = 400.0f;  // metres
+constexpr float kMaxYaw = 1000.0f;                           // |yaw| in radians: finite, never inf
+constexpr float kMaxTarget = 10000.0f;  // |tx|, |ty|, |tz| of the camera target, metres
+
 // A whole grown tree plus the settings that produced it.
 struct Tree {
   std::string preset;

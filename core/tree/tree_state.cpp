@@ -31,12 +31,30 @@ void ResetTo(const Preset& preset, TreeState* state) {
   state->years = preset.years;
 }
 
+// "" or "yaw,pitch,distance,tx,ty,tz": six decimal numbers within the page camera's ranges
+// (tree.h).
 bool CameraText(std::string_view text) {
-  return text.size() < 128 && std::all_of(text.begin(), text.end(), [](char c) {
-           return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == ',' || c == '-' ||
-                  c == 'e';
-         });
+  if (text.empty()) return true;  // no camera: the page frames the tree
+  if (text.size() >= 128) return false;
+  double v[6];
+  std::size_t start = 0;
+  for (int i = 0; i < 6; ++i) {
+    std::size_t comma = text.find(',', start);
+    if ((i < 5) != (comma != std::string_view::npos)) return false;
+    std::optional<double> x = ParseNumber(text.substr(start, comma - start));
+    if (!x) return false;
+    v[i] = *x;
+    start = comma + 1;
+  }
+  auto within = [](double x, double lo, double hi) { return x >= lo && x <= hi; };
+  return within(v[0], -kMaxYaw, kMaxYaw) && within(v[1], kMinPitch, kMaxPitch) &&
+         within(v[2], kMinDistance, kMaxDistance) && within(v[3], -kMaxTarget, kMaxTarget) &&
+         within(v[4], -kMaxTarget, kMaxTarget) && within(v[5], -kMaxTarget, kMaxTarget);
 }
+
+const char* const kCameraRule =
+    "must be yaw,pitch,distance,tx,ty,tz: yaw in [-1000, 1000], pitch in [-0.1, 1.5], distance in "
+    "[0.2, 400], each target coordinate in [-10000, 10000]";
 
 // A number from a JSON number or a numeric string; nullopt otherwise.
 std::optional<double> JsonNumber(const json& value) {
@@ -125,12 +143,21 @@ Status AddStatePrune(std::string_view text, TreeState* state) {
 }
 
 Status SetStateCamera(std::string_view text, TreeState* state) {
-  if (!CameraText(text)) return Status::Error("camera", "must be numbers separated by commas");
+  if (!CameraText(text)) return Status::Error("camera", kCameraRule);
   state->camera = std::string(text);
   return Status::Ok();
 }
 
+Status CheckGustOrder(const ParamSet& params) {
+  const double on = params.Get(static_cast<std::size_t>(ParamId::kGustOn));
+  const double off = params.Get(static_cast<std::size_t>(ParamId::kGustOff));
+  if (off > on) return Status::Ok();
+  return Status::Error(
+      "gust_off", FormatNumber(off) + " must be greater than gust_on (" + FormatNumber(on) + ")");
+}
+
 Status ApplyStateJson(const std::string& text, TreeState* state) {
+  NIWA_RETURN_IF_ERROR(CheckJsonKeys(text, "state"));
   json document = json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (document.is_discarded()) return Status::Error("state", "malformed JSON");
   if (!document.is_object()) return Status::Error("state", "must be a JSON object");
@@ -189,7 +216,8 @@ TreeState DecodeTreeHash(std::string_view hash, std::vector<std::string>* notice
                          std::string_view prefix) {
   TreeState state;
   HashPairs pairs;
-  for (auto& [key, value] : SplitHash(hash)) {
+  const std::string prune_key = std::string(prefix) + "prune";
+  for (auto& [key, value] : SplitHash(hash, notices, {prune_key})) {
     if (key.compare(0, prefix.size(), prefix) != 0) continue;  // another study's key
     pairs.emplace_back(key.substr(prefix.size()), std::move(value));
   }
@@ -221,12 +249,20 @@ TreeState DecodeTreeHash(std::string_view hash, std::vector<std::string>* notice
       }
     } else if (key == "cam") {
       if (!SetStateCamera(value, &state).ok()) {
-        notices->push_back(p + "cam: '" + Printable(value) +
-                           "' dropped, must be numbers separated by commas");
+        notices->push_back(p + "cam: '" + Printable(value) + "' dropped, " + kCameraRule);
       }
     } else if (!ApplyHashParam(p + key, value, p, &state.params, notices)) {
       notices->push_back("unknown key '" + Printable(p + key) + "' dropped");
     }
+  }
+  if (Status gust = CheckGustOrder(state.params); !gust.ok()) {
+    const Preset* preset = FindPreset(state.preset);
+    const TreeParams base = preset ? preset->params : TreeParams();
+    (void)state.params.Set(ParamId::kGustOn, base.Get(ParamId::kGustOn));
+    (void)state.params.Set(ParamId::kGustOff, base.Get(ParamId::kGustOff));
+    notices->push_back(p + gust.field() + ": " + gust.message() + "; both put back to " +
+                       FormatNumber(base.Get(ParamId::kGustOn)) + " and " +
+                       FormatNumber(base.Get(ParamId::kGustOff)));
   }
   return state;
 }

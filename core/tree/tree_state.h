@@ -33,6 +33,10 @@ Status SetStateSeed(double seed, TreeState* state);              // whole number
 Status AddStatePrune(std::string_view text, TreeState* state);   // ParsePrune, at most 256
 Status SetStateCamera(std::string_view text, TreeState* state);  // numbers and commas only
 
+// The cross-row check of the tree table's wind rows, made wherever a state is loaded: ok when
+// gust_off > gust_on, else {"gust_off", "5 must be greater than gust_on (7)"}.
+Status CheckGustOrder(const ParamSet& params);
+
 // Applies {preset, seed, years, params: {key: value}, prunes: ["12:b42"], camera} onto state: a
 // "preset" resets the state to that preset first; the other fields go on top. Values may be
 // numbers or numeric strings (params also booleans). Strict: the first bad field is the error and
@@ -43,7 +47,9 @@ Status ApplyStateJson(const std::string& text, TreeState* state);
 std::string TreeStateJson(const TreeState& state);
 
 // Decodes a share-link hash (with or without '#'). Forgiving: unknown keys, bad or out-of-range
-// values are dropped or clamped with one notice line each; the result is always usable. Keys carry
+// values are dropped or clamped with one notice line each; the result is always usable. A hash
+// over kMaxHashLength is not read (one notice), a repeated key is named (prune may repeat), and a
+// gust_on not before gust_off puts both back to the preset's with a notice. Keys carry
 // `prefix` ("tree." on a composed page; keys without it belong to other studies and are skipped).
 TreeState DecodeTreeHash(std::string_view hash, std::vector<std::string>* notices,
                          std::string_view prefix = "");

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <string>
 
+#include "base/markup_escape.h"
+
 namespace niwa {
 
 std::string TreeToSvg(const Tree& tree, const SvgOptions& options) {
@@ -81,17 +83,7 @@ std::string TreeToSvg(const Tree& tree, const SvgOptions& options) {
     out += "</g>\n";
   }
   if (!options.caption.empty()) {
-    std::string safe;
-    for (char c : options.caption) {
-      if (c == '<')
-        safe += "&lt;";
-      else if (c == '>')
-        safe += "&gt;";
-      else if (c == '&')
-        safe += "&amp;";
-      else
-        safe += c;
-    }
+    const std::string safe = XmlEscape(options.caption);  // base/markup_escape.h
     std::snprintf(buf, sizeof buf,
                   "<text x=\"10\" y=\"%d\" font-family=\"sans-serif\" font-size=\"14\">",
                   options.height - 4);

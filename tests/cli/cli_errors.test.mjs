@@ -38,7 +38,7 @@ for (const bin of binaries) {
   }
   const help = exec(['tree', 'grow', '--help']);
   check(help.status === 0 && help.stdout.includes('--stats'), `${label} tree grow --help`);
-  const left = readdirSync(dir).filter((f) => f.includes('niwa-partial'));
+  const left = readdirSync(dir).filter((f) => f.includes('niwa-partial') || f.endsWith('.partial'));
   check(left.length === 0, `${label} left no partial files`);
   const glb = join(dir, `${label}.glb`);
   const ok = exec(['tree', 'grow', '--preset', 'binary', '--years', '4', '--out', glb]);

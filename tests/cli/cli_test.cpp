@@ -147,7 +147,7 @@ TEST(Cli, SvgOptionsChangeTheDrawing) {
                      "--svg-width: only applies with --out FILE.svg");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--caption", "x"}), "--caption: only applies");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--svg-width", "5", "--out", path}),
-                     "--svg-width: must be a whole number in [100, 10000]");
+                     "--svg-width: 5 is out of range; must be a whole number in [100, 10000]");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--svg-leaves", "maybe", "--out", path}),
                      "--svg-leaves");
 }
@@ -260,14 +260,16 @@ TEST(CliRenderStats, BadFlagsAreOneLineErrorsWithExitCode2) {
     args.insert(args.end(), extra.begin(), extra.end());
     return RunNiwa(args);
   };
-  ExpectOneLineError(run({"--width", "0"}), "--width: must be a whole number in [16, 16384]");
+  ExpectOneLineError(run({"--width", "0"}),
+                     "--width: 0 is out of range; must be a whole number in [16, 16384]");
   ExpectOneLineError(run({"--height", "99999"}), "--height");
   ExpectOneLineError(run({"--mode", "fast"}), "--mode");
   ExpectOneLineError(run({"--threshold", "-1"}),
                      "--threshold: -1 is out of range; must be a number in [0.1, 1000]");
   ExpectOneLineError(run({"--card-planes", "1"}), "--card-planes");
   ExpectOneLineError(run({"--cam", "1,2,3"}), "--cam");
-  ExpectOneLineError(run({"--pitch", "3"}), "--pitch: must be a number in [-0.1, 1.5]");
+  ExpectOneLineError(run({"--pitch", "3"}),
+                     "--pitch: 3 is out of range; must be a number in [-0.1, 1.5]");
   ExpectOneLineError(run({"--distance", "0"}), "--distance");
   ExpectOneLineError(run({"--target", "1,2"}), "--target");
   ExpectOneLineError(run({"--leaf-mode", "none"}), "--leaf-mode");
@@ -310,10 +312,10 @@ TEST(Cli, FlagHelpAndCheckShowTheSameRange) {
   std::string sway_help = RunNiwa({"tree", "sway", "--help"}).out;
   EXPECT_NE(sway_help.find("1..50 (default 4)"), std::string::npos);
   ExpectOneLineError(RunNiwa({"tree", "sway", "--tips", "51"}),
-                     "--tips: must be a whole number in [1, 50]");
+                     "--tips: 51 is out of range; must be a whole number in [1, 50]");
   EXPECT_NE(sway_help.find("m/s, 0..100 (default 5)"), std::string::npos);
   ExpectOneLineError(RunNiwa({"tree", "sway", "--wind", "101"}),
-                     "--wind: wind_speed: 101 is out of range; must be a number in [0, 100]");
+                     "--wind: 101 is out of range; must be a number in [0, 100]");
   std::string render_help = RunNiwa({"tree", "render-stats", "--help"}).out;
   EXPECT_NE(render_help.find("radians, -0.1..1.5"), std::string::npos);
   EXPECT_NE(render_help.find("metres, 0.2..400"), std::string::npos);

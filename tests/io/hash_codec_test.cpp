@@ -20,16 +20,49 @@ TEST(HashCodec, SplitsDecodesAndSkipsEmptyItems) {
   EXPECT_EQ(pairs[5].first, "");
   EXPECT_TRUE(SplitHash("").empty());
   EXPECT_TRUE(SplitHash("#").empty());
-  // Past kMaxHashLength the rest is ignored.
-  std::string long_hash = "a=" + std::string(kMaxHashLength, '1') + "&b=2";
-  ASSERT_EQ(SplitHash(long_hash).size(), 1u);
   EXPECT_EQ(PercentDecode("%41%62c%2"), "Abc%2");
 }
 
-TEST(HashCodec, PrintableDropsMarkupAndControlAndIsShort) {
+// Issue 16 item 4: a hash over the maximum is refused whole with one notice, never cut (cutting
+// could read "...&years=10" as years=1); at the maximum it is read.
+TEST(HashCodec, HashOverTheMaximumIsRefusedNotCut) {
+  std::vector<std::string> notices;
+  std::string at_limit = "a=" + std::string(kMaxHashLength - 6, '1') + "&b=2";
+  ASSERT_EQ(at_limit.size(), kMaxHashLength);
+  EXPECT_EQ(SplitHash(at_limit, &notices).size(), 2u);
+  EXPECT_TRUE(notices.empty());
+  std::string over = at_limit + "0";
+  EXPECT_TRUE(SplitHash(over, &notices).empty());
+  ASSERT_EQ(notices.size(), 1u);
+  EXPECT_EQ(notices[0], "hash: 16385 characters; the limit is 16384, nothing was read");
+}
+
+TEST(HashCodec, RepeatedKeysAreNamedOnceUnlessRepeatable) {
+  std::vector<std::string> notices;
+  HashPairs pairs =
+      SplitHash("seed=1&years=2&seed=3&prune=1:b2&prune=2:b3&seed=4", &notices, {"prune"});
+  EXPECT_EQ(pairs.size(), 6u);
+  ASSERT_EQ(notices.size(), 1u);
+  EXPECT_EQ(notices[0], "seed: given 3 times; the last value is used");
+}
+
+// Decoded values written back are encoded again: "5&mode=full" cannot become a key of its own.
+TEST(HashCodec, PercentEncodeRoundTripsAndCannotInjectKeys) {
+  const std::string hostile = "5&mode=full#x%20y+z\x1b<>";
+  std::string encoded = PercentEncode(hostile);
+  EXPECT_EQ(encoded.find_first_of("&=#+<> "), std::string::npos) << encoded;
+  EXPECT_EQ(PercentDecode(encoded), hostile);
+  HashPairs pairs = SplitHash("wind_speed=" + encoded);
+  ASSERT_EQ(pairs.size(), 1u);
+  EXPECT_EQ(pairs[0].second, hostile);
+  EXPECT_EQ(PercentEncode("a-b_c.d~1:2,3"), "a-b_c.d~1:2,3");
+}
+
+TEST(HashCodec, PrintableEscapesControlAndMarkupAndIsShort) {
   EXPECT_EQ(Printable("ok text"), "ok text");
-  EXPECT_EQ(Printable("<img src='x'>&\"\n\x01"), "?img src=?x??????");
-  EXPECT_EQ(Printable(std::string(100, 'a')).size(), 40u);
+  EXPECT_EQ(Printable("<img src='x'>&"), "\\x3cimg src=\\x27x\\x27\\x3e\\x26");
+  EXPECT_EQ(Printable("a\x1b[31mb\n"), "a\\x1b[31mb\\x0a");
+  EXPECT_EQ(Printable(std::string(100, 'a')), std::string(60, 'a') + "...");
 }
 
 TEST(HashCodec, RowsAreClampedRoundedOrDroppedWithOneNoticeEach) {
@@ -48,7 +81,7 @@ TEST(HashCodec, RowsAreClampedRoundedOrDroppedWithOneNoticeEach) {
   ASSERT_EQ(notices.size(), 3u);
   EXPECT_EQ(notices[0], "gamma: clamped to 1, must be a number in [0, 1]");
   EXPECT_EQ(notices[1], "N_high: clamped to 3, must be a whole number in [1, 100]");
-  EXPECT_EQ(notices[2], "alpha_t: '?b?' dropped, must be a number in [0, 1]");
+  EXPECT_EQ(notices[2], "alpha_t: '\\x3cb\\x3e' dropped, must be a number in [0, 1]");
   TreeParams base;
   EXPECT_EQ(EncodeChangedParams(params, base), "&gamma=1&N_high=3");
   EXPECT_EQ(EncodeChangedParams(params, base, "tree."), "&tree.gamma=1&tree.N_high=3");

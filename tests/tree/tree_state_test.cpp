@@ -188,7 +188,11 @@ TEST(TreeState, BadStateJsonIsOneLineNamingTheFieldAndChangesNothing) {
             "prunes: must be an array of \"YEAR:bID\" or \"YEAR:sinceY\"");
   EXPECT_EQ(error(R"({"prunes": ["6:x"]})"),
             "prune: '6:x' must be YEAR:bID or YEAR:sinceY with YEAR in [1, 100]");
-  EXPECT_EQ(error(R"({"camera": "<b>"})"), "camera: must be numbers separated by commas");
+  EXPECT_EQ(error(R"({"camera": "<b>"})").rfind("camera: must be yaw,pitch,distance,tx,ty,tz", 0),
+            0u);
+  // Issue 16 item 9: a far or infinite camera is refused, not drawn as a blank canvas.
+  EXPECT_NE(error(R"({"camera": "0,0.3,10,1e39,0,0"})"), "");
+  EXPECT_NE(error(R"({"camera": "0,0.3,10,20000,0,0"})"), "");
 }
 
 TEST(TreeState, SettersCheckTheirRangesAndKeepTheStateOnError) {

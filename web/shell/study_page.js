@@ -53,7 +53,27 @@ export async function mountStudyNav(nav, current) {
   draw(shown);
 }
 
-// Named sources of notice lines shown together in one element (textContent only).
+// Most notice lines shown at once; the rest are counted in one "... N more" line (a hostile hash
+// can carry thousands of bad keys).
+export const MAX_NOTICE_LINES = 5;
+// Longest notice line shown, in characters, before "..." (the core already cuts echoed values).
+export const MAX_NOTICE_CHARS = 300;
+
+// The lines shown for `lines`: control characters as \xNN, each cut at MAX_NOTICE_CHARS, at most
+// MAX_NOTICE_LINES and then "... N more".
+export function cappedNoticeLines(lines) {
+  const clean = lines.map((line) => {
+    // eslint-disable-next-line no-control-regex
+    const text = line.replace(/[\u0000-\u001f\u007f-\u009f]/g,
+      (c) => `\\x${c.charCodeAt(0).toString(16).padStart(2, '0')}`);
+    return text.length > MAX_NOTICE_CHARS ? `${text.slice(0, MAX_NOTICE_CHARS)}...` : text;
+  });
+  if (clean.length <= MAX_NOTICE_LINES) return clean;
+  return [...clean.slice(0, MAX_NOTICE_LINES), `... ${clean.length - MAX_NOTICE_LINES} more`];
+}
+
+// Named sources of notice lines shown together in one element (textContent only, capped by
+// cappedNoticeLines).
 export class Notices {
   constructor(element, order = []) {
     this.element = element;
@@ -67,7 +87,7 @@ export class Notices {
   }
 
   show() {
-    const lines = [...this.sources.values()].flat();
+    const lines = cappedNoticeLines([...this.sources.values()].flat());
     this.element.textContent = lines.join('\n');
     this.element.hidden = lines.length === 0;
   }

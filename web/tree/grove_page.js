@@ -8,7 +8,7 @@
 // Does not: grow or sway trees (the worker does) or draw directly (grove_renderer.js does).
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { FrameLoop, nextFrame } from '../gl/frame_loop.js';
-import { mountStudyNav } from '../shell/study_page.js';
+import { cappedNoticeLines, mountStudyNav } from '../shell/study_page.js';
 import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
 import { WorkerClient } from '../shell/worker_client.js';
 import { GroveRenderer } from './grove_renderer.js';
@@ -98,7 +98,9 @@ function readHash() {
 
 function writeHash() {
   const params = new URLSearchParams(location.hash.slice(1));
-  const extra = Object.keys(WIND).filter((k) => params.has(k)).map((k) => `&${k}=${params.get(k)}`).join('');
+  // Decoded values are encoded again when written back: "5&mode=full" stays one value.
+  const extra = Object.keys(WIND).filter((k) => params.has(k))
+    .map((k) => `&${k}=${encodeURIComponent(params.get(k))}`).join('');
   const hash = `#mode=${mode}&cam=${camera.toHash()}${windPlaying ? '&wind=1' : ''}${extra}`;
   if (location.hash !== hash) history.replaceState(null, '', hash);
 }
@@ -320,8 +322,31 @@ function poseBlockDifference(tree, a, b) {
   return most;
 }
 
+// The wind keys as a tree-state hash for the core's decoder: each WIND key with the page's value
+// or the hash's (re-encoded), so a bad value is named and dropped by the core (one notice each)
+// and the others still apply; the gust order is checked against the grove's own values.
+let windHash = '';
+function windStateHash(params) {
+  return Object.keys(WIND).map((k) => `${k}=${encodeURIComponent(params.has(k) ? params.get(k) : String(WIND[k]))}`).join('&');
+}
+
+// The decoded wind: a value the core dropped keeps the grove's default; clamped ones are used.
+function applyDecodedWind(decoded) {
+  const notices = decoded?.notices ?? [];
+  const hashParams = new URLSearchParams(location.hash.slice(1));
+  for (const key of Object.keys(WIND)) {
+    if (!hashParams.has(key)) continue;
+    const dropped = notices.some((line) => line.startsWith(`${key}:`) && line.includes('dropped'));
+    const value = decoded?.state?.params?.[key];
+    if (!dropped && Number.isFinite(value)) wind[key] = value;
+  }
+  if (notices.length) showMessage(cappedNoticeLines(notices).join('\n'));
+  setHooks({ notices: notices.length });
+}
+
 // The module is ready: every unique tree is grown once (each client's own request).
-groveClient.on('ready', () => {
+groveClient.on('ready', (msg) => {
+  applyDecodedWind(msg.decoded);
   UNIQUE.forEach((u, index) => treeClients[index].request('update', {
     state: { preset: u.preset, seed: u.seed, years: u.years, params: { render_mode: 1, ...wind } },
   }, { done: ['tree'] }));
@@ -395,7 +420,7 @@ async function start() {
   const { cam, wind: blowing } = readHash();
   // The wind settings are part of every unique tree's state: read once, before the trees are grown.
   const params = new URLSearchParams(location.hash.slice(1));
-  for (const key of Object.keys(WIND)) if (params.has(key)) wind[key] = Number(params.get(key));
+  windHash = windStateHash(params);
   resetCamera();
   if (cam) camera.fromHash(cam);
   try {
@@ -436,7 +461,7 @@ async function start() {
     requestFrame();
   });
   writeHash();
-  groveClient.request('init', { hash: '' }, { done: ['ready'] });
+  groveClient.request('init', { hash: windHash }, { done: ['ready'] });
   requestFrame();
 }
 

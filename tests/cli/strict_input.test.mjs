@@ -1,0 +1,80 @@
+// Issue 16 on the real binaries, native against WASM under node: the same one-line message and
+// exit 2 for the same bad input, input files capped before reading (quickly), planted links never
+// followed, several outputs all or none, and the --caption SVG accepted by an XML parser (Python's
+// xml.etree, an independent parser).
+import { spawnSync } from 'node:child_process';
+import { existsSync, lstatSync, mkdtempSync, readFileSync, readdirSync, symlinkSync, writeFileSync, openSync, ftruncateSync, closeSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { check, finish, native, requireWasm, spawn, wasm } from '../support/cli_pair.mjs';
+
+requireWasm();
+const dir = mkdtempSync(join(tmpdir(), 'niwa-strict-'));
+const big = join(dir, 'big.json');
+const fd = openSync(big, 'w');
+ftruncateSync(fd, 100 * 1024 * 1024);  // 100 MB, sparse
+closeSync(fd);
+writeFileSync(join(dir, 'dup.json'), '{"gamma": 0.1, "gamma": 0.2}');
+writeFileSync(join(dir, 'both.json'), '{"params": {"gamma": 0.1}, "alpha_t": 0.2}');
+writeFileSync(join(dir, 'gust.json'), '{"gust_on": 7, "gust_off": 6.5}');
+const grow = ['tree', 'grow', '--preset', 'binary', '--years', '2'];
+const cases = [
+  [[...grow.slice(0, 4), '--years', '0x10'], "--years: '0x10' is not a decimal number; must be a whole number in [0, 100]"],
+  [[...grow.slice(0, 4), '--years', ''], '--years: empty; must be a whole number in [0, 100]'],
+  [[...grow, '--seed', '-18446744073709551615'], '--seed: -1.8446744073709552e+19 is out of range; must be a whole number in [0, 4294967295]'],
+  [['tree', 'sway', '--preset', 'binary', '--wind', '0x1p3'], "--wind: '0x1p3' is not a decimal number; must be a number in [0, 100]"],
+  [[...grow, '--stats=yes'], '--stats: is a flag and takes no value; give --stats alone'],
+  [[...grow, '--svg-leaves', '2', '--out', join(dir, 'a.svg')], '--svg-leaves: 2 is out of range; must be a whole number in [0, 1]'],
+  [[...grow, '--out', ''], '--out: empty; give a value'],
+  [[...grow, '--params', ''], '--params: empty; give a value'],
+  [[...grow, '--params', '/dev/zero'], "--params: cannot read '/dev/zero': not a regular file"],
+  [[...grow, '--params', big], `--params: '${big}' has 104857600 bytes; the limit is 1 MiB`],
+  [['terrain', 'grow', '--contour', big], `--contour: '${big}' has 104857600 bytes; the limit is 16 MiB`],
+  [[...grow, '--params', join(dir, 'dup.json')], `--params ${join(dir, 'dup.json')}: gamma: given twice in one object`],
+  [[...grow, '--params', join(dir, 'both.json')], `--params ${join(dir, 'both.json')}: alpha_t: beside a "params" object; put every parameter inside "params"`],
+  [['tree', 'sway', '--preset', 'binary', '--params', join(dir, 'gust.json')], '--params: gust_off: 6.5 must be greater than gust_on (7)'],
+  [['tree', 'grow', '--url', `years=1${'0'.repeat(16400)}`], '--url: hash: 16407 characters; the limit is 16384, nothing was read'],
+  [['tree', 'grow', '--url', 'seed=1&seed=2'], '--url: seed: given 2 times; the last value is used'],
+  [['tree', 'render-stats', '--cam', '1e39,0.3,10,0,0,0'], "--cam: '1e39' is not a number; must be yaw,pitch,distance,tx,ty,tz"],
+  [['tree', 'render-stats', '--target', '1e39,0,0'], "--target: '1e39,0,0' must be three numbers x,y,z, each in [-10000, 10000] (metres)"],
+  [[...grow, '--out', 'a\x1b[31mb.zzz'], "--out: 'a\\x1b[31mb.zzz' must end in .glb, .json or .svg"],
+  [[...grow, '--caption', 'a\x07', '--out', join(dir, 'c.svg')], "--caption: 'a\\x07' holds a control character; must be printable text"],
+  [['ivy', 'grow', '--steps', '010x'], "--steps: '010x' is not a decimal number; must be a whole number in [0, 10000]"],
+];
+const byBuild = {};
+for (const bin of [native, wasm]) {
+  const label = bin.endsWith('.js') ? 'wasm' : 'native';
+  byBuild[label] = [];
+  for (const [args, expected] of cases) {
+    const started = Date.now();
+    const r = spawn(bin, args);
+    const ms = Date.now() - started;
+    const line = r.stderr.trimEnd();
+    byBuild[label].push(line);
+    check(r.status === 2 && line === `niwa: error: ${expected}` && ms < 5000,
+      `${label} ${JSON.stringify(args).slice(0, 90)} -> exit ${r.status}, ${JSON.stringify(line).slice(0, 160)} (${ms} ms)`);
+  }
+  // Safe writes: a link at the target is replaced, its target untouched; no temporary remains.
+  const victim = join(dir, `${label}-victim.txt`), link = join(dir, `${label}-link.json`);
+  writeFileSync(victim, 'keep');
+  symlinkSync(victim, link);
+  const ok = spawn(bin, [...grow, '--out', link]);
+  check(ok.status === 0 && readFileSync(victim, 'utf8') === 'keep' && lstatSync(link).isFile(),
+    `${label} --out over a planted link replaces the link, never writes through it`);
+  // Several outputs: all or none.
+  const glb = join(dir, `${label}-ok.glb`);
+  const partial = spawn(bin, ['tree', 'sway', '--preset', 'binary', '--years', '2', '--duration', '1', '--out', glb, '--csv', join(dir, 'no/such/t.csv')]);
+  check(partial.status === 2 && !existsSync(glb), `${label} sway --out ok.glb --csv /bad/t.csv leaves no ok.glb`);
+  const name = join(dir, `${'n'.repeat(250 - label.length)}${label}.json`);
+  const long = spawn(bin, [...grow, '--out', name]);
+  check(long.status === 0 && existsSync(name), `${label} a 255-character file name works`);
+  // The caption's SVG parses as XML.
+  const svg = join(dir, `${label}-caption.svg`);
+  const cap = spawn(bin, [...grow, '--out', svg, '--caption', `P<1 & "q" 'r' caf\u00e9 ]]> <!--`]);
+  const xml = spawnSync('python3', ['-c', 'import sys, xml.etree.ElementTree as E; t = E.parse(sys.argv[1]); print([e.text for e in t.iter() if e.tag.endswith("text")][-1])', svg], { encoding: 'utf8' });
+  check(cap.status === 0 && xml.status === 0 && xml.stdout.trim() === `P<1 & "q" 'r' caf\u00e9 ]]> <!--`,
+    `${label} --caption with markup makes SVG an XML parser reads back: ${JSON.stringify(xml.stdout.trim() || xml.stderr.slice(-120))}`);
+  check(readdirSync(dir).every((f) => !f.includes('.partial')), `${label} left no temporary file`);
+}
+check(JSON.stringify(byBuild.native) === JSON.stringify(byBuild.wasm), `native and WASM give the same ${cases.length} messages`);
+finish();

@@ -1,0 +1,264 @@
+// Issue 16 regression tests of the CLI's strict input and safe writes (docs/input-rules.md): one
+// decimal parser for every numeric flag, flags without values, empty values, hash maximum and
+// repeated keys, echoed values, size-capped input files, the caption in SVG, and all-or-none
+// writes through exclusive temporaries that never follow a link.
+#include <dirent.h>
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cli_common.h"
+#include "io/hash_codec.h"
+#include "support/cli_runner.h"
+#include "support/expect_error.h"
+
+namespace niwa {
+namespace {
+
+std::string Dir() {
+  static std::string dir = [] {
+    std::string d = ::testing::TempDir() + "niwa_strict_" + std::to_string(::getpid());
+    ::mkdir(d.c_str(), 0755);
+    return d;
+  }();
+  return dir;
+}
+std::string PathIn(const std::string& name) { return Dir() + "/" + name; }
+bool Exists(const std::string& path) {
+  struct stat info {};
+  return ::lstat(path.c_str(), &info) == 0;
+}
+std::string Slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+void Write(const std::string& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+// Names in Dir() that a failed or finished write left behind as temporaries.
+std::vector<std::string> Partials() {
+  std::vector<std::string> out;
+  DIR* d = ::opendir(Dir().c_str());
+  while (dirent* e = d ? ::readdir(d) : nullptr) {
+    std::string name = e->d_name;
+    if (name.find(".partial") != std::string::npos) out.push_back(name);
+  }
+  if (d) ::closedir(d);
+  return out;
+}
+int Seed(const CliResult& r) { return nlohmann::json::parse(r.out)["seed"].get<int>(); }
+int Years(const CliResult& r) { return nlohmann::json::parse(r.out)["years"].get<int>(); }
+
+std::vector<std::string> Grow(std::vector<std::string> extra) {
+  std::vector<std::string> args = {"tree", "grow", "--preset", "binary"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
+TEST(StrictInput, IntegersAreDecimalAndInRange) {
+  CliResult r = RunNiwa(Grow({"--years", "010", "--stats"}));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(Years(r), 10);  // not octal 8
+  CliResult flag = RunNiwa(Grow({"--years", "3", "--seed", "010", "--stats"}));
+  CliResult url = RunNiwa({"tree", "grow", "--url", "preset=binary&years=3&seed=010", "--stats"});
+  ASSERT_EQ(flag.code, 0);
+  ASSERT_EQ(url.code, 0);
+  EXPECT_EQ(Seed(flag), 10);
+  EXPECT_EQ(Seed(url), 10);  // --seed 010 is --url seed=010
+  ExpectOneLineError(RunNiwa(Grow({"--years", "0x10"})),
+                     "--years: '0x10' is not a decimal number; must be a whole number in [0, 100]");
+  ExpectOneLineError(RunNiwa(Grow({"--years", ""})),
+                     "--years: empty; must be a whole number in [0, 100]");
+  ExpectOneLineError(RunNiwa(Grow({"--seed", "-18446744073709551615"})),
+                     "--seed: -1.8446744073709552e+19 is out of range");
+  ExpectOneLineError(RunNiwa(Grow({"--seed", "4294967296"})), "--seed: 4294967296 is out of range");
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--preset", "binary", "--wind", "0x1p3"}),
+                     "--wind: '0x1p3' is not a decimal number; must be a number in [0, ");
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--preset", "binary", "--tips", "1e400"}),
+                     "--tips: '1e400' is not a decimal number");
+  ExpectOneLineError(RunNiwa({"tree", "render-stats", "--preset", "binary", "--width", "nan"}),
+                     "--width: 'nan' is not a decimal number");
+  ExpectOneLineError(RunNiwa({"ivy", "grow", "--steps", "0x10"}),
+                     "--steps: '0x10' is not a decimal number");
+  ExpectOneLineError(RunNiwa({"terrain", "grow", "--builtin", "disk", "--seed", "010x"}), "--seed");
+  ExpectOneLineError(RunNiwa({"mesh", "stats", "--scene", "box", "--subdivide", "0x1"}),
+                     "--subdivide");
+}
+
+TEST(StrictInput, BooleansAreFlagsAndValuesAreNeverEmpty) {
+  ExpectOneLineError(RunNiwa(Grow({"--stats=yes"})),
+                     "--stats: is a flag and takes no value; give --stats alone");
+  ExpectOneLineError(RunNiwa({"ivy", "grow", "--stats=0"}), "--stats: is a flag");
+  ExpectOneLineError(RunNiwa(Grow({"--svg-leaves", "2", "--out", PathIn("x.svg")})),
+                     "--svg-leaves: 2 is out of range; must be a whole number in [0, 1]");
+  ExpectOneLineError(RunNiwa(Grow({"--out", ""})), "--out: empty");
+  ExpectOneLineError(RunNiwa(Grow({"--params", ""})), "--params: empty");
+  ExpectOneLineError(RunNiwa({"ivy", "grow", "--out", ""}), "--out: empty");
+  ExpectOneLineError(RunNiwa({"terrain", "grow", "--contour", ""}), "--contour: empty");
+}
+
+TEST(StrictInput, VectorFlagsAreFiniteAndInRange) {
+  const std::vector<std::string> base = {"tree",   "render-stats", "--preset",
+                                         "binary", "--years",      "2"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = base;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return RunNiwa(args);
+  };
+  ExpectOneLineError(with({"--cam", "1e39,0.3,10,0,0,0"}), "--cam: '1e39' is not a number");
+  ExpectOneLineError(with({"--cam", "0,0.3,10,1e39,0,0"}), "--cam");
+  ExpectOneLineError(with({"--cam", "0,0.3,10,20000,0,0"}),
+                     "--cam: target tx,ty,tz must each be in [-10000, 10000] (metres)");
+  ExpectOneLineError(with({"--target", "1e39,0,0"}),
+                     "--target: '1e39,0,0' must be three numbers x,y,z, each in [-10000, 10000]");
+  ExpectOneLineError(with({"--yaw", "1e39"}), "--yaw: 1e+39 is out of range");
+  EXPECT_EQ(with({"--cam", "0.5,0.3,10,0,1,0"}).code, 0);
+  // A float flag's bounds are the floats it becomes: 0.2 and 0.1 are in range.
+  EXPECT_EQ(with({"--distance", "0.2"}).code, 0);
+  EXPECT_EQ(with({"--threshold", "0.1", "--pitch", "-0.1"}).code, 0);
+  ExpectOneLineError(RunNiwa({"ivy", "grow", "--seed-point", "1e39,0,0"}), "--seed-point");
+}
+
+TEST(StrictInput, HashesHaveAMaximumAndRepeatedKeysAreErrors) {
+  std::string long_hash = "preset=binary&years=1" + std::string(kMaxHashLength, '0');
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--url", long_hash}),
+                     "--url: hash: 16405 characters; the limit is 16384, nothing was read");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--url", "seed=1&years=2&seed=3"}),
+                     "--url: seed: given 2 times; the last value is used");
+  ExpectOneLineError(RunNiwa({"ivy", "grow", "--url", "steps=1&steps=2"}),
+                     "--url: steps: given 2 times");
+  EXPECT_EQ(RunNiwa({"tree", "grow", "--url", "preset=binary&years=3&prune=1:b1&prune=2:b1"}).code,
+            2);  // prunes may repeat; these cut nothing, which is its own error
+}
+
+TEST(StrictInput, EchoedValuesArePrintableAndShort) {
+  CliResult r = RunNiwa(Grow({"--out", "a\x1b[31m" + std::string(100000, 'x') + ".zzz"}));
+  ExpectOneLineError(r, "--out: 'a\\x1b[31mxxx");
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos);
+  EXPECT_LT(r.err.size(), 200u);
+  CliResult preset = RunNiwa({"tree", "grow", "--preset", "\x1b]0;owned\x07"});
+  ExpectOneLineError(preset, "--preset: unknown '\\x1b]0;owned\\x07'");
+  CliResult unknown = RunNiwa({"tree", "grow", "--set", std::string("k\x1b") + "=1"});
+  EXPECT_EQ(unknown.err.find('\x1b'), std::string::npos) << unknown.err;
+}
+
+TEST(StrictInput, InputFilesAreCappedBeforeReading) {
+  ExpectOneLineError(RunNiwa(Grow({"--params", "/dev/zero"})),
+                     "--params: cannot read '/dev/zero': not a regular file");
+  const std::string big = PathIn("big.json");
+  {
+    int fd = ::open(big.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ASSERT_GE(fd, 0);
+    ASSERT_EQ(::ftruncate(fd, 100 << 20), 0);  // 100 MB, sparse: nothing to read quickly
+    ::close(fd);
+  }
+  ExpectOneLineError(RunNiwa(Grow({"--params", big})), "has 104857600 bytes; the limit is 1 MiB");
+  ExpectOneLineError(RunNiwa({"terrain", "grow", "--contour", big}),
+                     "--contour: '" + big + "' has 104857600 bytes; the limit is 16 MiB");
+  ExpectOneLineError(RunNiwa({"ivy", "grow", "--params", "/dev/zero"}), "--params: cannot read");
+  ::unlink(big.c_str());
+  const std::string both = PathIn("both.json");
+  Write(both, R"({"params": {"gamma": 0.5}, "alpha_t": 0.2})");
+  ExpectOneLineError(RunNiwa(Grow({"--params", both})), "alpha_t: beside a \"params\" object");
+  Write(both, R"({"gamma": 0.5, "gamma": 0.2})");
+  ExpectOneLineError(RunNiwa(Grow({"--params", both})), "gamma: given twice in one object");
+}
+
+TEST(StrictInput, CaptionIsEscapedAndControlCharactersRefused) {
+  const std::string svg = PathIn("caption.svg");
+  CliResult r =
+      RunNiwa(Grow({"--years", "2", "--out", svg, "--caption", "P<1 & \"q\" 'r' caf\xc3\xa9"}));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(Slurp(svg).find(">P&lt;1 &amp; &quot;q&quot; &apos;r&apos; caf\xc3\xa9</text>"),
+            std::string::npos);
+  ExpectOneLineError(RunNiwa(Grow({"--out", svg, "--caption", "a\x1b[0mb"})),
+                     "--caption: 'a\\x1b[0mb' holds a control character");
+}
+
+TEST(SafeWrites, LinksAreReplacedNeverFollowedAndNoTempRemains) {
+  const std::string victim = PathIn("victim.txt"), link = PathIn("link.json");
+  Write(victim, "keep");
+  ::unlink(link.c_str());
+  ASSERT_EQ(::symlink(victim.c_str(), link.c_str()), 0);
+  CliResult r = RunNiwa(Grow({"--years", "2", "--out", link}));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(Slurp(victim), "keep");  // the link's target is untouched
+  struct stat info {};
+  ASSERT_EQ(::lstat(link.c_str(), &info), 0);
+  EXPECT_TRUE(S_ISREG(info.st_mode));  // the link itself was replaced by the output
+  EXPECT_EQ(
+      info.st_mode & 0777, 0644 & ~[] {
+        mode_t m = ::umask(0);
+        ::umask(m);
+        return m;
+      }());
+  EXPECT_TRUE(Partials().empty());
+}
+
+TEST(SafeWrites, TwoWritersOfOneTargetUseTwoTemporaries) {
+  const std::string out = PathIn("shared.txt");
+  cli::StagedOutputs a, b;
+  ASSERT_TRUE(a.Stage("--out", out, "first").ok());
+  ASSERT_TRUE(b.Stage("--out", out, "second").ok());
+  EXPECT_EQ(Partials().size(), 2u);
+  ASSERT_TRUE(a.Commit().ok());
+  ASSERT_TRUE(b.Commit().ok());
+  EXPECT_EQ(Slurp(out), "second");
+  EXPECT_TRUE(Partials().empty());
+  {  // staged but never committed: the temporary is removed, the target untouched
+    cli::StagedOutputs c;
+    ASSERT_TRUE(c.Stage("--out", out, "third").ok());
+  }
+  EXPECT_EQ(Slurp(out), "second");
+  EXPECT_TRUE(Partials().empty());
+}
+
+TEST(SafeWrites, SeveralOutputsAreAllOrNone) {
+  const std::string glb = PathIn("ok.glb");
+  ::unlink(glb.c_str());
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--preset", "binary", "--years", "3", "--duration",
+                              "1", "--out", glb, "--csv", PathIn("no/such/dir/t.csv")}),
+                     "--csv: cannot write");
+  EXPECT_FALSE(Exists(glb));  // the first output is not left behind
+  EXPECT_TRUE(Partials().empty());
+  const std::string csv = PathIn("ok.csv"), svg = PathIn("ok.svg");
+  CliResult r = RunNiwa({"tree", "sway", "--preset", "binary", "--years", "3", "--duration", "1",
+                         "--out", glb, "--csv", csv, "--svg", svg});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(Exists(glb) && Exists(csv) && Exists(svg));
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--preset", "binary", "--years", "3", "--duration",
+                              "1", "--out", csv, "--csv", csv}),
+                     "is also --out");
+}
+
+TEST(SafeWrites, A255CharacterNameWorks) {
+  const std::string name = std::string(250, 'n') + ".json";
+  ASSERT_EQ(name.size(), 255u);
+  CliResult r = RunNiwa(Grow({"--years", "2", "--out", PathIn(name)}));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(Exists(PathIn(name)));
+  ::unlink(PathIn(name).c_str());
+}
+
+TEST(StrictInput, GustOrderIsCheckedAtLoadAndLabelledBySource) {
+  const std::string file = PathIn("gust.json");
+  Write(file, R"({"gust_on": 7, "gust_off": 6.5})");
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--preset", "binary", "--params", file}),
+                     "--params: gust_off: 6.5 must be greater than gust_on (7)");
+  ExpectOneLineError(RunNiwa(Grow({"--set", "gust_on=7"})),
+                     "--set: gust_off: 6 must be greater than gust_on (7)");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--url", "gust_on=7"}), "--url: gust_off");
+  ExpectOneLineError(
+      RunNiwa({"tree", "mappings", "--preset", "binary", "--years", "3", "--prune", "2:b999"}),
+      "--prune");
+}
+
+}  // namespace
+}  // namespace niwa
