@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "base/budget.h"
 #include "base/status.h"
 #include "params/param_table.h"
 
@@ -67,5 +68,17 @@ Result<std::string> ReadFile(const std::string& path, const std::string& field);
 // Writes bytes to path through a temporary file and a rename, so no half-written file remains;
 // the error is {"", "cannot write 'path'"}.
 Status WriteFileAtomically(const std::string& path, const std::string& bytes);
+
+// The budget flags every command that does heavy work takes (issue 16, docs/budgets.md):
+// --max-memory (default 2G) and --max-seconds (default 60), the one definition of both.
+struct BudgetOptions {
+  std::string max_memory = "2G";
+  double max_seconds = 60;
+};
+void AddBudgetOptions(CLI::App* cmd, BudgetOptions* options);
+// The Budget the flags give; BadInput naming the flag and its range when out of range.
+Budget ResolveBudget(const BudgetOptions& options);
+// The line a command prints on stderr when a limit stopped its work early ("" prints nothing).
+void ReportTruncated(const std::string& line);
 
 }  // namespace niwa::cli

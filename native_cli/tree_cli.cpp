@@ -23,6 +23,7 @@ void AddStateOptions(CLI::App* cmd, const ParamTable& table, StateOptions* o) {
       "Prune after a year: YEAR:bID (branch id from the JSON) or YEAR:sinceY (repeatable)");
   cmd->add_option("--url", o->url,
                   "A share-link hash (preset=...&seed=...); other flags override it");
+  AddBudgetOptions(cmd, &o->budget);
 }
 
 TreeState ResolveTreeState(const StateOptions& o, const CLI::App& cmd) {
@@ -49,6 +50,7 @@ TreeState ResolveTreeState(const StateOptions& o, const CLI::App& cmd) {
   for (const std::string& item : o.sets)
     Check(state.params.SetFromAssignment(item).Within("--set"));
   for (const std::string& item : o.prunes) Check(AsFlag(AddStatePrune(item, &state), "--prune"));
+  state.limits = TreeGrowLimits(state.params, ResolveBudget(o.budget));
   return state;
 }
 

@@ -43,6 +43,7 @@ std::string TreeStatsJson(const Tree& tree, const GrowthTimings& t, const TreeSt
   j["flowers"] = s.flowers;
   j["height"] = s.height;
   j["truncated"] = tree.truncated;
+  if (!tree.truncated_by.empty()) j["truncated_by"] = tree.truncated_by;
   j["ms"] = t.ms_total;
   j["ms_light"] = t.ms_light;
   j["ms_hormone"] = t.ms_hormone;
