@@ -406,6 +406,13 @@ void Grower::BreakBuds() {
       return;
     }
     const GrowLimits& limits = request_.limits;
+    if (limits.max_internodes >= 0 && internodes_ + nodes > limits.max_internodes) {
+      stopped_ = true;
+      Truncate(limits.internode_limit,
+               "the tree reached " + std::to_string(limits.max_internodes) + " internodes",
+               "lower " + limits.years_name + ", N_high or B_l");
+      return;
+    }
     const double made = made_internodes_ + nodes, branches = made_branches_ + 1;
     if (limits.max_bytes >= 0 &&
         limits.base_bytes + limits.bytes_per_branch * branches + limits.bytes_per_internode * made >

@@ -24,6 +24,9 @@ struct GrowLimits {
   double seconds_per_internode_year = 0, seconds_per_branch = 0, seconds_per_internode = 0;
   std::string memory_limit = "--max-memory", seconds_limit = "--max-seconds";
   std::string years_name = "--years";  // what the lines tell the user to lower
+  // Most alive internodes (-1: none), e.g. what the page can mesh and draw; named internode_limit.
+  long max_internodes = -1;
+  std::string internode_limit;
 };
 
 // The limits of growing `params` within `budget` (the per-internode costs depend on N, B_l, B_tl).
