@@ -62,15 +62,19 @@ Status CheckEstimate(const Estimate& e, const Budget& budget, const std::string&
     return Status::Error(budget.memory_limit,
                          e.what + " needs about " + FormatBytes(e.memory_bytes) +
                              ", more than the " + FormatBytes(double(budget.memory_bytes)) +
-                             " allowed; " + change + " (or raise " + budget.memory_limit + ")");
+                             " allowed; " + change + RaiseHint(budget.memory_limit));
   }
   if (e.seconds > budget.seconds) {
-    return Status::Error(budget.seconds_limit,
-                         e.what + " takes about " + FormatSeconds(e.seconds) + ", more than the " +
-                             FormatSeconds(budget.seconds) + " allowed; " + change + " (or raise " +
-                             budget.seconds_limit + ")");
+    return Status::Error(budget.seconds_limit, e.what + " takes about " + FormatSeconds(e.seconds) +
+                                                   ", more than the " +
+                                                   FormatSeconds(budget.seconds) + " allowed; " +
+                                                   change + RaiseHint(budget.seconds_limit));
   }
   return Status::Ok();
+}
+
+std::string RaiseHint(const std::string& limit) {
+  return limit.rfind("--", 0) == 0 ? " (or raise " + limit + ")" : "";
 }
 
 std::string TruncatedLine(const std::string& limit, const std::string& where,

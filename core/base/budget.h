@@ -44,6 +44,9 @@ bool ParseBytes(const std::string& text, uint64_t* bytes);
 // `change` says what to lower ("lower --years or --duration"); the limit's own raise is added.
 Status CheckEstimate(const Estimate& estimate, const Budget& budget, const std::string& change);
 
+// " (or raise --max-memory)" when the limit is a flag the user can raise, else "" (the page's).
+std::string RaiseHint(const std::string& limit);
+
 // The line of a job stopped early at a limit: "<limit>: stopped <where>: <why>; <change>".
 std::string TruncatedLine(const std::string& limit, const std::string& where,
                           const std::string& why, const std::string& change);

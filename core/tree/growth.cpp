@@ -415,12 +415,13 @@ void Grower::BreakBuds() {
     }
     const double made = made_internodes_ + nodes, branches = made_branches_ + 1;
     if (limits.max_bytes >= 0 &&
-        limits.base_bytes + limits.bytes_per_branch * branches + limits.bytes_per_internode * made >
+        limits.base_bytes + limits.bytes_per_branch * branches + limits.bytes_per_internode * made +
+                limits.bytes_per_alive_internode * double(internodes_ + nodes) >
             limits.max_bytes) {
       stopped_ = true;  // no shoot fits any more: the years after would only add time
       Truncate(limits.memory_limit,
                "more internodes would need more than " + FormatBytes(limits.max_bytes),
-               "lower " + limits.years_name + ", N_high or B_l, or raise " + limits.memory_limit);
+               "lower " + limits.years_name + ", N_high or B_l" + RaiseHint(limits.memory_limit));
       return;
     }
     if (limits.max_seconds >= 0 &&
@@ -430,7 +431,7 @@ void Grower::BreakBuds() {
       stopped_ = true;
       Truncate(limits.seconds_limit,
                "more internodes would take more than " + FormatSeconds(limits.max_seconds),
-               "lower " + limits.years_name + " or raise " + limits.seconds_limit);
+               "lower " + limits.years_name + RaiseHint(limits.seconds_limit));
       return;
     }
     made_internodes_ = made;
@@ -855,7 +856,7 @@ void Grower::GrowYear() {
     ++tree_.years;  // the year that would not fit, for the line
     Truncate(limits.seconds_limit,
              "another year would take more than " + FormatSeconds(limits.max_seconds),
-             "lower " + limits.years_name + " or raise " + limits.seconds_limit);
+             "lower " + limits.years_name + RaiseHint(limits.seconds_limit));
     --tree_.years;
     return;
   }

@@ -79,6 +79,16 @@ GrowLimits TreeGrowLimits(const TreeParams& p, const Budget& budget,
   return limits;
 }
 
+double MeshBytesPerInternode(const TreeParams& p) {
+  // A typical tube of 6 sides (thin twigs have 3, the trunk 12: the exact check after the growth
+  // covers the rest) and every internode bearing this year's leaves; flowers are left to that
+  // check.
+  const double sides = 6;
+  const double leaves = std::max(1, p.GetInt(ParamId::kBL));
+  return kMesh.memory_per_byte * (kMesh.per_bark_vertex * (sides + 1) +
+                                  kMesh.per_bark_index * 6 * sides + kMesh.per_leaf * leaves);
+}
+
 TreeCounts CountTree(const Tree& tree) {
   TreeCounts c;
   const MeshOptions mesh;

@@ -21,6 +21,9 @@ namespace niwa {
 struct GrowLimits {
   double max_bytes = -1, max_seconds = -1;
   double base_bytes = 0, bytes_per_branch = 0, bytes_per_internode = 0;
+  // Memory an output held alongside takes per alive internode (the page's mesh: 0 on the CLI,
+  // whose exports are checked exactly once the tree has grown). Not part of Grower::estimate().
+  double bytes_per_alive_internode = 0;
   double seconds_per_internode_year = 0, seconds_per_branch = 0, seconds_per_internode = 0;
   std::string memory_limit = "--max-memory", seconds_limit = "--max-seconds";
   std::string years_name = "--years";  // what the lines tell the user to lower
@@ -32,6 +35,12 @@ struct GrowLimits {
 // The limits of growing `params` within `budget` (the per-internode costs depend on N, B_l, B_tl).
 GrowLimits TreeGrowLimits(const TreeParams& params, const Budget& budget,
                           const std::string& years_name = "--years");
+
+// Bytes the page's mesh (TreeExport::kMesh) takes per internode of `params`: a typical tube's
+// ring and every internode bearing this year's leaves. The page sets it as
+// GrowLimits::bytes_per_alive_internode, so the growth stops where the mesh most likely still fits
+// (the exact check of the grown tree's mesh still refuses the rest).
+double MeshBytesPerInternode(const TreeParams& params);
 
 enum class TreeExport {
   kJson,  // tree_json: TreeToJson

@@ -83,6 +83,7 @@ class TreeSession {
     if (!error_.empty()) return;
     // The page's budget (docs/budgets.md): what a laptop tab's WASM heap holds, by estimate.
     state_.limits = TreeGrowLimits(state_.params, PageBudget(), "years");
+    state_.limits.bytes_per_alive_internode = MeshBytesPerInternode(state_.params);
     state_.limits.max_internodes = kPageInternodes;
     state_.limits.internode_limit = "page internode budget";
     grower_ = std::make_unique<Grower>(state_);  // a TreeState is its GrowRequest
