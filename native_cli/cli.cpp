@@ -4,6 +4,7 @@
 #include "cli.h"
 
 #include <CLI/CLI.hpp>
+#include <new>
 
 #include "base/echo.h"
 #include "cli_common.h"
@@ -133,6 +134,12 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     return 2;
   } catch (const cli::BadInput& e) {
     err << "niwa: error: " << EscapeLine(e.message, kMaxMessageLength) << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    // The budgets (docs/budgets.md) are estimates meant to refuse first; should an allocation
+    // still fail (a machine with less memory than --max-memory), it is still the input's size.
+    err << "niwa: error: --max-memory: out of memory within the budget (this machine or build "
+           "has less free memory); lower --max-memory or the work asked for\n";
     return 2;
   } catch (const std::exception& e) {
     err << "niwa: internal error: " << EscapeLine(e.what(), kMaxMessageLength) << "\n";

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <iostream>
 #include <limits>
 #include <optional>
 
@@ -236,6 +237,38 @@ Status WriteFileAtomically(const std::string& path, const std::string& bytes) {
   StagedOutputs outputs;
   NIWA_RETURN_IF_ERROR(outputs.Stage("", path, bytes));
   return outputs.Commit();
+}
+
+namespace {
+const FlagRange kMaxSeconds = {1, 86400, false};
+constexpr uint64_t kMinMemory = uint64_t{128} << 20, kMaxMemory = uint64_t{1} << 40;
+}  // namespace
+
+void AddBudgetOptions(CLI::App* cmd, BudgetOptions* o) {
+  cmd->add_option("--max-memory", o->max_memory,
+                  "Memory budget: the work is estimated first and refused or stopped early "
+                  "(truncated) above it; bytes with K, M, G or T, 128M..1T (default 2G)");
+  AddNumberFlag(
+      cmd, "--max-seconds", &o->max_seconds, kMaxSeconds,
+      "Time budget in estimated seconds of work, " + RangeHelp(kMaxSeconds) + " (default 60)");
+}
+
+Budget ResolveBudget(const BudgetOptions& o) {
+  Budget budget;
+  uint64_t bytes = 0;
+  if (!ParseBytes(o.max_memory, &bytes) || bytes < kMinMemory || bytes > kMaxMemory) {
+    throw BadInput{
+        "--max-memory: must be a size from 128M to 1T (a whole number with K, M, G or "
+        "T, e.g. 4G)"};
+  }
+  budget.memory_bytes = bytes;
+  Check(CheckFlag("--max-seconds", o.max_seconds, kMaxSeconds));
+  budget.seconds = o.max_seconds;
+  return budget;
+}
+
+void ReportTruncated(const std::string& line) {
+  if (!line.empty()) std::cerr << "niwa: truncated: " << line << "\n";
 }
 
 }  // namespace niwa::cli

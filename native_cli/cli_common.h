@@ -12,6 +12,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "base/budget.h"
 #include "base/status.h"
 #include "params/param_table.h"
 
@@ -121,5 +122,17 @@ class StagedOutputs {
 
 // One output through StagedOutputs; the error is {"", "cannot write 'path'"}.
 Status WriteFileAtomically(const std::string& path, const std::string& bytes);
+
+// The budget flags every command that does heavy work takes (issue 16, docs/budgets.md):
+// --max-memory (default 2G) and --max-seconds (default 60), the one definition of both.
+struct BudgetOptions {
+  std::string max_memory = "2G";
+  double max_seconds = 60;
+};
+void AddBudgetOptions(CLI::App* cmd, BudgetOptions* options);
+// The Budget the flags give; BadInput naming the flag and its range when out of range.
+Budget ResolveBudget(const BudgetOptions& options);
+// The line a command prints on stderr when a limit stopped its work early ("" prints nothing).
+void ReportTruncated(const std::string& line);
 
 }  // namespace niwa::cli

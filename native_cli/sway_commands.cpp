@@ -9,6 +9,7 @@
 #include "base/echo.h"
 #include "cli_common.h"
 #include "sway/sway.h"
+#include "sway/sway_budget.h"
 #include "sway/sway_gltf.h"
 #include "tree/growth.h"
 #include "tree_cli.h"
@@ -123,8 +124,21 @@ int RunSwayCommand(const SwayOptions& o, const CLI::App& cmd, std::ostream& out)
   Check(CheckFlag("--fps", o.fps, kFps));
   TreeState state = ResolveTreeState(o.state, cmd);
   SwayParams params = ResolveSwayParams(o, cmd, &state.params);
-  Tree tree = GrowTree(state);
+  Grower grower(state);  // stops early (truncated) at the budget's growth limits
+  while (grower.year() < state.years && !grower.stopped()) grower.GrowYear();
+  const Estimate grown = grower.estimate();
+  Tree tree = grower.TakeTree();
+  ReportTruncated(tree.truncated_by);
   CheckPrunes(state, tree);
+  {
+    // Every output's estimate, refused before any work starts (so no output is left behind).
+    const SwayModel model = BuildSwayModel(tree, params);
+    Estimate total = grown + EstimateSwayRun(model, params, o.tips);
+    if (out_ext == ".glb") total = total + EstimateSwayGlb(model, CountTree(tree), params, o.fps);
+    Check(CheckEstimate(total, ResolveBudget(o.state.budget),
+                        "lower --duration or --years, or raise --dt" +
+                            std::string(out_ext == ".glb" ? " or lower --fps" : "")));
+  }
   // Every output is staged first and renamed only when all were written (all or none).
   StagedOutputs outputs;
   if (out_ext == ".glb") {  // core/sway/sway_gltf: exact two-joint skinning of eq. 3.15

@@ -24,6 +24,7 @@ void AddStateOptions(CLI::App* cmd, const ParamTable& table, StateOptions* o) {
       "Prune after a year: YEAR:bID (branch id from the JSON) or YEAR:sinceY (repeatable)");
   cmd->add_option("--url", o->url,
                   "A share-link hash (preset=...&seed=...); other flags override it");
+  AddBudgetOptions(cmd, &o->budget);
 }
 
 TreeState ResolveTreeState(const StateOptions& o, const CLI::App& cmd) {
@@ -59,6 +60,7 @@ TreeState ResolveTreeState(const StateOptions& o, const CLI::App& cmd) {
                                                   : "--preset";
     Fail(gust.Within(source));
   }
+  state.limits = TreeGrowLimits(state.params, ResolveBudget(o.budget));
   return state;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_common.h"
 #include "tree/tree.h"
 #include "tree/tree_state.h"
 
@@ -18,6 +19,7 @@ struct StateOptions {
   uint64_t seed = 0;
   std::vector<std::string> sets, prunes;
   std::string params_file, url;
+  BudgetOptions budget;  // --max-memory, --max-seconds: the growth's GrowLimits
 };
 
 // Adds the state flags of `table` (its --set keys; see 'niwa params') to cmd.

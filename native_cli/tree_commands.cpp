@@ -1,5 +1,7 @@
 // niwa CLI commands of the tree study: its table and presets, 'tree grow' and 'tree mappings'.
 // cli-order: 10
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 
 #include "base/echo.h"
@@ -7,6 +9,7 @@
 #include "tree/growth.h"
 #include "tree/mesh.h"
 #include "tree/presets.h"
+#include "tree/tree_budget.h"
 #include "tree/tree_gltf.h"
 #include "tree/tree_json.h"
 #include "tree/tree_report.h"
@@ -70,10 +73,26 @@ int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
   }
   CheckSvgOptions(o.svg, cmd, ext);
   TreeState state = ResolveTreeState(o.state, cmd);
-  GrowthTimings timings;
-  Tree tree = GrowTree(state, &timings);
+  Grower grower(state);  // stops early (truncated) at the budget's growth limits
+  while (grower.year() < state.years && !grower.stopped()) grower.GrowYear();
+  const GrowthTimings timings = grower.timings();
+  const Estimate grown = grower.estimate();
+  Tree tree = grower.TakeTree();
+  ReportTruncated(tree.truncated_by);
   CheckPrunes(state, tree);
   if (!o.out_path.empty()) {
+    // The export's estimate on top of the grown tree's, refused before it starts.
+    const TreeExport kind = ext == ".json"  ? TreeExport::kJson
+                            : ext == ".svg" ? TreeExport::kSvg
+                                            : TreeExport::kGlb;
+    if (std::getenv("NIWA_BUDGET_TRACE")) {  // calibration (docs/budgets.md)
+      const Estimate e = EstimateTreeExport(CountTree(tree), kind);
+      std::fprintf(stderr, "budget: grown %.0f MB %.2f s; export %.0f MB %.2f s\n",
+                   grown.memory_bytes / 1048576, grown.seconds, e.memory_bytes / 1048576,
+                   e.seconds);
+    }
+    Check(CheckEstimate(grown + EstimateTreeExport(CountTree(tree), kind),
+                        ResolveBudget(o.state.budget), "lower --years, N_high or B_l"));
     std::string bytes;
     if (ext == ".json") {
       bytes = TreeToJson(tree);

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "base/budget.h"
 #include "io/tinygltf.h"
 
 namespace niwa::gltf {
@@ -654,10 +655,20 @@ Result<std::string> Serialize(const Document& doc, bool binary) {
   NIWA_RETURN_IF_ERROR(CheckDocument(doc));
   tinygltf::Model model;
   NIWA_RETURN_IF_ERROR(ModelBuilder(doc).Build(&model));
+  // A .glb's lengths are 32-bit (glTF 2.0, 4.4.3): name the buffer, not just "failed".
+  double buffer_bytes = 0;
+  for (const tinygltf::Buffer& buffer : model.buffers) buffer_bytes += double(buffer.data.size());
+  if (binary && buffer_bytes > 4294967295.0 - 16.0 * 1024 * 1024) {
+    return Status::Error("glTF buffer", FormatBytes(buffer_bytes) +
+                                            " is more than the 4 GB a .glb can hold; export a "
+                                            "smaller tree or fewer frames");
+  }
   std::ostringstream stream;
   tinygltf::TinyGLTF writer;
   if (!writer.WriteGltfSceneToStream(&model, stream, false, binary) || !stream) {
-    return Status::Error("glTF", "serialization failed");
+    return Status::Error("glTF buffer", "writing " + FormatBytes(buffer_bytes) +
+                                            " of buffers failed (out of memory); export a "
+                                            "smaller tree or fewer frames");
   }
   return stream.str();
 }

@@ -13,6 +13,7 @@
 #endif
 
 #include "math/rotation.h"
+#include "params/param_text.h"
 #include "random/pcg32.h"
 #include "tree/light.h"
 
@@ -397,9 +398,44 @@ void Grower::BreakBuds() {
     if (shoot.dwarf) length *= static_cast<float>(p.Get(ParamId::kDwarfInternodeRatio));
     shoot.internode_length = length;
     if (internodes_ + nodes > p.GetInt(ParamId::kMaxInternodes)) {
-      tree_.truncated = true;
+      Truncate(
+          "max_internodes",
+          "the tree reached " + std::to_string(p.GetInt(ParamId::kMaxInternodes)) + " internodes",
+          "raise max_internodes (at most " + FormatNumber(Spec(ParamId::kMaxInternodes).max_value) +
+              ") or lower " + request_.limits.years_name);
       return;
     }
+    const GrowLimits& limits = request_.limits;
+    if (limits.max_internodes >= 0 && internodes_ + nodes > limits.max_internodes) {
+      stopped_ = true;
+      Truncate(limits.internode_limit,
+               "the tree reached " + std::to_string(limits.max_internodes) + " internodes",
+               "lower " + limits.years_name + ", N_high or B_l");
+      return;
+    }
+    const double made = made_internodes_ + nodes, branches = made_branches_ + 1;
+    if (limits.max_bytes >= 0 &&
+        limits.base_bytes + limits.bytes_per_branch * branches + limits.bytes_per_internode * made +
+                limits.bytes_per_alive_internode * double(internodes_ + nodes) >
+            limits.max_bytes) {
+      stopped_ = true;  // no shoot fits any more: the years after would only add time
+      Truncate(limits.memory_limit,
+               "more internodes would need more than " + FormatBytes(limits.max_bytes),
+               "lower " + limits.years_name + ", N_high or B_l" + RaiseHint(limits.memory_limit));
+      return;
+    }
+    if (limits.max_seconds >= 0 &&
+        limits.seconds_per_internode_year * (internode_years_ + double(internodes_ + nodes)) +
+                limits.seconds_per_branch * branches + limits.seconds_per_internode * made >
+            limits.max_seconds) {
+      stopped_ = true;
+      Truncate(limits.seconds_limit,
+               "more internodes would take more than " + FormatSeconds(limits.max_seconds),
+               "lower " + limits.years_name + RaiseHint(limits.seconds_limit));
+      return;
+    }
+    made_internodes_ = made;
+    made_branches_ = branches;
     internodes_ += nodes;
     glm::vec3 base = parent < 0 ? glm::vec3(0.0f)
                                 : tree_.branches[static_cast<std::size_t>(parent)]
@@ -813,7 +849,41 @@ void Grower::RaiseCrown() {
   }
 }
 
+void Grower::Truncate(const std::string& limit, const std::string& why, const std::string& change) {
+  tree_.truncated = true;
+  if (!tree_.truncated_by.empty()) return;
+  tree_.truncated_by = TruncatedLine(
+      limit, "in year " + std::to_string(tree_.years) + " of " + std::to_string(request_.years),
+      why, change);
+}
+
+Estimate Grower::estimate() const {
+  const GrowLimits& limits = request_.limits;
+  Estimate e;
+  e.memory_bytes = limits.base_bytes + limits.bytes_per_branch * made_branches_ +
+                   limits.bytes_per_internode * made_internodes_;
+  e.seconds = limits.seconds_per_internode_year * internode_years_ +
+              limits.seconds_per_branch * made_branches_ +
+              limits.seconds_per_internode * made_internodes_;
+  e.what = "growing the tree";
+  return e;
+}
+
 void Grower::GrowYear() {
+  if (stopped_) return;
+  const GrowLimits& limits = request_.limits;
+  // A year costs at least its alive internodes' light, hormone and thickening.
+  if (limits.max_seconds >= 0 &&
+      estimate().seconds + limits.seconds_per_internode_year * double(internodes_) >
+          limits.max_seconds) {
+    stopped_ = true;
+    ++tree_.years;  // the year that would not fit, for the line
+    Truncate(limits.seconds_limit,
+             "another year would take more than " + FormatSeconds(limits.max_seconds),
+             "lower " + limits.years_name + RaiseHint(limits.seconds_limit));
+    --tree_.years;
+    return;
+  }
   Clock::time_point start = Clock::now();
   ++tree_.years;
   BreakBuds();
@@ -834,13 +904,14 @@ void Grower::GrowYear() {
   ThickenBranches();
   ApplyPrunes();
   RaiseCrown();
+  internode_years_ += static_cast<double>(internodes_);
   timings_.ms_branching += branching + MsSince(shape_start);
   timings_.ms_total += MsSince(start);
 }
 
 Tree GrowTree(const GrowRequest& request, GrowthTimings* timings) {
   Grower grower(request);
-  while (grower.year() < request.years) grower.GrowYear();
+  while (grower.year() < request.years && !grower.stopped()) grower.GrowYear();
   if (timings) *timings = grower.timings();
   return grower.TakeTree();
 }

@@ -10,6 +10,7 @@
 #include "tree/light.h"
 #include "tree/prune.h"
 #include "tree/tree.h"
+#include "tree/tree_budget.h"
 #include "tree/tree_params.h"
 
 namespace niwa {
@@ -20,6 +21,7 @@ struct GrowRequest {
   uint64_t seed = 1;
   int years = 10;
   std::vector<Prune> prunes;
+  GrowLimits limits;  // unlimited unless set (the CLI and the page set a budget)
 };
 
 // Cosine and sine of a rotation angle.
@@ -45,6 +47,11 @@ class Grower {
   const Tree& tree() const { return tree_; }
   Tree TakeTree() { return std::move(tree_); }
   const GrowthTimings& timings() const { return timings_; }
+  // True once a limit of request.limits stopped the yearly loop (Tree::truncated_by says which);
+  // GrowYear then does nothing.
+  bool stopped() const { return stopped_; }
+  // Memory and time the growth so far is estimated to have used (request.limits' constants).
+  Estimate estimate() const;
 
  private:
   void BreakBuds();  // step 1
@@ -72,6 +79,12 @@ class Grower {
   CosSin cap_branch_, cap_node_, sympodial_turn_, psi_t_, psi_tl_, psi_l_;
   std::vector<CosSin> around_leaves_, around_tl_, around_laterals_;
   long internodes_ = 0;
+  double made_internodes_ = 0;  // every internode made, dead or alive (they stay in memory)
+  double made_branches_ = 0;
+  double internode_years_ = 0;  // Σ over the years grown of the alive internodes
+  bool stopped_ = false;
+  // Sets tree_.truncated and, the first time, the line naming `limit`.
+  void Truncate(const std::string& limit, const std::string& why, const std::string& change);
   std::vector<int> kill_stack_;  // Kill's work list
   LightGridBuffers light_buffers_;
   Pcg32 rng_;

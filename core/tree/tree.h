@@ -75,7 +75,8 @@ struct Tree {
   int years = 0;
   TreeParams params;
   std::vector<Branch> branches;  // index == id; dead branches stay with alive == false
-  bool truncated = false;        // max_internodes was reached
+  bool truncated = false;        // max_internodes or a budget (GrowLimits) was reached
+  std::string truncated_by;      // the line naming the limit that stopped it first ("" if none)
 };
 
 // Per-sub-model timings of one growth run (thesis table 2.3).

@@ -75,6 +75,7 @@ std::string TreeStatsJson(const Tree& tree, const GrowthTimings& t, const TreeSt
   j["flowers"] = s.flowers;
   j["height"] = s.height;
   j["truncated"] = tree.truncated;
+  if (!tree.truncated_by.empty()) j["truncated_by"] = tree.truncated_by;
   TreeForm form = ComputeTreeForm(tree);
   j["crown_width"] = form.crown_width;
   j["crown_base_height"] = form.crown_base_height;

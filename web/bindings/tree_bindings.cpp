@@ -46,7 +46,6 @@
 #include <vector>
 
 #include "buffers.h"
-#include "tree/tree_gltf.h"
 #include "params/param_json.h"
 #include "params/param_table.h"
 #include "render/atlas_mesh.h"
@@ -54,20 +53,21 @@
 #include "sway/skin.h"
 #include "sway/sway.h"
 #include "tree/growth.h"
+#include "tree/mesh.h"
+#include "tree/presets.h"
 #include "tree/prune.h"
+#include "tree/tree.h"
+#include "tree/tree_budget.h"
+#include "tree/tree_gltf.h"
 #include "tree/tree_params.h"
 #include "tree/tree_report.h"
 #include "tree/tree_state.h"
-#include "tree/mesh.h"
-#include "tree/presets.h"
-#include "tree/tree.h"
 
 namespace niwa {
 namespace {
 
 using nlohmann::json;
 using nlohmann::ordered_json;
-
 
 // The sway and wind parameters of a state (rows of the one parameter table, groups "sway", "wind").
 SwayParams SwayParamsOf(const ParamSet& params) { return SwayParams(params); }
@@ -81,13 +81,31 @@ class TreeSession {
   explicit TreeSession(const std::string& state_json) {
     error_ = ApplyStateJson(state_json, &state_).Line();  // core/tree/tree_state
     if (!error_.empty()) return;
+    // The page's budget (docs/budgets.md): what a laptop tab's WASM heap holds, by estimate.
+    state_.limits = TreeGrowLimits(state_.params, PageBudget(), "years");
+    state_.limits.bytes_per_alive_internode = MeshBytesPerInternode(state_.params);
+    state_.limits.max_internodes = kPageInternodes;
+    state_.limits.internode_limit = "page internode budget";
     grower_ = std::make_unique<Grower>(state_);  // a TreeState is its GrowRequest
+  }
+
+  // The most internodes the page grows and draws: their mesh (about 150 MB of buffers) is built,
+  // copied out of the heap and uploaded to the GPU without the page stalling for seconds.
+  static constexpr long kPageInternodes = 400000;
+  // 1 GB of heap and 60 estimated seconds for a grow and its mesh.
+  static Budget PageBudget() {
+    Budget budget;
+    budget.memory_bytes = uint64_t{1} << 30;
+    budget.seconds = 60;
+    budget.memory_limit = "page memory budget";
+    budget.seconds_limit = "page time budget";
+    return budget;
   }
 
   std::string error() const { return error_; }
   int years() const { return state_.years; }
   int year() const { return grower_ ? grower_->year() : 0; }
-  bool done() const { return !grower_ || grower_->year() >= state_.years; }
+  bool done() const { return !grower_ || grower_->stopped() || grower_->year() >= state_.years; }
   std::string hash() const { return error_.empty() ? EncodeTreeHash(state_) : ""; }
 
   // Swaps in `state_json` for the tree already grown (the page's sway and render edits): "" or one
@@ -179,9 +197,17 @@ class TreeSession {
     return true;
   }
 
-  // Builds the triangle meshes of the tree as grown so far; call before the buffer views.
-  void buildMesh() {
-    if (!grower_) return;
+  // Builds the triangle meshes of the tree as grown so far; call before the buffer views. "" or
+  // the line naming the page budget the mesh would cross (the mesh is then left empty).
+  std::string buildMesh() {
+    if (!grower_) return "";
+    const Status fits = CheckEstimate(
+        grower_->estimate() + EstimateTreeExport(CountTree(grower_->tree()), TreeExport::kMesh),
+        PageBudget(), "lower years, N_high or B_l");
+    if (!fits.ok()) {
+      mesh_ = TreeMesh{};
+      return fits.Line();
+    }
     mesh_ = BuildTreeMesh(grower_->tree());
     parents_.clear();
     for (const Branch& branch : grower_->tree().branches) parents_.push_back(branch.parent);
@@ -192,6 +218,7 @@ class TreeSession {
     skin_ = BuildTreeSkin(mesh_, sway_model_);
     poses_.assign(sway_model_.nodes.size() * kSwayPoseFloats, 0.0f);
     RestSwayPoses(sway_model_.nodes.size(), poses_.data());
+    return "";
   }
 
   // ---- Sway (thesis chapter 3) of the tree last meshed ----

@@ -6,6 +6,7 @@
 const WORKER_URL = new URL('../worker/worker.js', import.meta.url);
 
 let shared = null;  // {worker, clients: Map(name -> WorkerClient)}
+let shared0 = null;  // the clients kept across restartWorker until the next worker is made
 
 // The page's one worker (created on first use). From another origin (the embed on a foreign page)
 // a one-line module shim imports it, since a worker script must be same-origin.
@@ -15,7 +16,8 @@ function sharedWorker() {
   const worker = url.origin === location.origin
     ? new Worker(url, { type: 'module' })
     : new Worker(URL.createObjectURL(new Blob([`import ${JSON.stringify(url.href)};`], { type: 'text/javascript' })), { type: 'module' });
-  shared = { worker, clients: new Map() };
+  shared = { worker, clients: shared0?.clients || new Map() };
+  shared0 = null;
   worker.onmessage = (event) => {
     const msg = event.data || {};
     shared.clients.get(typeof msg.client === 'string' ? msg.client : 'app')?.deliver(msg);
@@ -28,14 +30,27 @@ function sharedWorker() {
   return shared;
 }
 
+// Cancel (issue 16): ends the page's worker at once, whatever it is computing, and starts a fresh
+// one. Every pending request of every client resolves to null and its late replies are dropped;
+// each client gets onRestart() and must send its init (and its last good state) again.
+export function restartWorker() {
+  if (!shared) return;
+  shared.worker.terminate();
+  shared0 = { clients: shared.clients };
+  shared = null;
+  sharedWorker();
+  for (const client of shared.clients.values()) client.restarted();
+}
+
 let nextId = 0;  // ids are unique across the page's clients
 
 export class WorkerClient {
   // name: the protocol's client string (unique on the page); study: the worker handler its
   // messages go to (omitted: the worker's default, 'tree'); onFailure(text): the worker failed.
-  constructor(name, { study, onFailure } = {}) {
+  constructor(name, { study, onFailure, onRestart } = {}) {
     this.name = name;
     this.study = study;
+    this.onRestart = onRestart || (() => {});
     this.handlers = new Map();  // type -> handler(msg)
     this.pending = new Map();   // id -> {group, done: Set of reply types, resolve}
     this.latest = new Map();    // group -> newest id
@@ -100,6 +115,13 @@ export class WorkerClient {
 
   failed(text) {
     this.onFailure(text);
+  }
+
+  // After restartWorker: every pending request resolves to null, then onRestart().
+  restarted() {
+    for (const id of [...this.pending.keys()]) this.#settle(id, null);
+    this.latest.clear();
+    this.onRestart();
   }
 
   // Ids come from this page's counter: any id at most nextId that is not pending was settled.

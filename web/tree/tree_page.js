@@ -12,7 +12,7 @@ import {
   Notices, copyLink, download, mountStudyNav, showEmbedDialog,
 } from '../shell/study_page.js';
 import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
-import { WorkerClient } from '../shell/worker_client.js';
+import { WorkerClient, restartWorker } from '../shell/worker_client.js';
 import { RenderTable } from './render_table.js';
 import { Renderer } from './tree_renderer.js';
 
@@ -25,7 +25,7 @@ const ui = {
   prunes: $('prunes'), copyLink: $('copy-link'), resetView: $('reset-view'), embed: $('embed'),
   downloadGlb: $('download-glb'), downloadJson: $('download-json'), downloadPng: $('download-png'),
   shareStatus: $('share-status'), wind: $('wind'), windInfo: $('wind-info'), renderMode: $('render-mode'),
-  renderTable: $('render-table'), renderCol: $('render-col'), timeFrames: $('time-frames'),
+  renderTable: $('render-table'), renderCol: $('render-col'), timeFrames: $('time-frames'), cancel: $('cancel'),
   embedUi: { dialog: $('embed-dialog'), element: $('embed-element'), iframe: $('embed-iframe') },
 };
 mountStudyNav($('studies'), 'tree');
@@ -38,6 +38,30 @@ const worker = new WorkerClient('app', {
     notices.set('error', text);
     setHooks({ status: 'error' });
   },
+  // Cancel restarted the worker: init it again and grow the last finished state (or the hash's
+  // preset defaults when nothing finished yet); the tree on screen stays until then.
+  onRestart: () => {
+    restarting = true;
+    worker.request('init', { hash: lastGood ? `#${lastGood.hash}` : '' }, { done: ['ready'] });
+  },
+});
+let restarting = false;  // the next 'ready' answers a restart (the panel exists already)
+let lastGood = null;     // {hash, state} of the last tree shown
+
+// Cancel: whatever the worker is doing (growing, meshing, exporting) ends now (issue 16).
+function showCancel(on) {
+  ui.cancel.hidden = !on;
+}
+ui.cancel.addEventListener('click', () => {
+  showCancel(false);
+  clearTimeout(debounceTimer);
+  editPending = false;
+  pendingStage = null;
+  if (windPlaying) setWind(false);
+  ui.progress.textContent = 'cancelled: back to the last finished tree';
+  ui.progressBar.hidden = true;
+  bumpHook('cancels');
+  restartWorker();
 });
 
 // ---------------------------------------------------------------- rendering
@@ -258,6 +282,12 @@ function select(id) {
 
 // ---------------------------------------------------------------- worker replies
 worker.on('ready', (msg) => {
+  if (restarting) {  // after Cancel: the panel and presets exist; restore the last good state
+    restarting = false;
+    applyState(lastGood ? lastGood.state : msg.decoded.state);
+    sendUpdate('restore');
+    return;
+  }
   presets = msg.presets;
   for (const p of presets) ui.preset.append(new Option(`${p.title} (${p.name})`, p.name));
   panel = new ParamPanel(ui.params, msg.paramTable, (spec, stage) => {
@@ -290,6 +320,7 @@ worker.on('hash', (msg) => {
 });
 
 worker.on('progress', (msg) => {
+  showCancel(true);
   ui.progressBar.hidden = false;
   ui.progressBar.max = Math.max(1, msg.years);
   ui.progressBar.value = msg.year;
@@ -298,11 +329,14 @@ worker.on('progress', (msg) => {
 
 worker.on('tree', (msg) => {
   if (msg.id !== latestRequest?.id) return;
+  showCancel(false);
+  if (history_.base) lastGood = { hash: history_.base, state: latestRequest.state };
   notices.set('error', '');
   notices.set('prunes', msg.stats.idle_prunes || []);
   panel.markError('');
   ui.stats.textContent = formatStats(msg.stats);
-  ui.progress.textContent = msg.stats.truncated ? 'stopped at max_internodes' : '';
+  // The limit that stopped the growth, named (max_internodes or the page's budget).
+  ui.progress.textContent = msg.stats.truncated ? msg.stats.truncated_by || 'stopped at max_internodes' : '';
   ui.progressBar.hidden = true;
   shownYear = msg.stats.years;
   if (renderer) {
@@ -358,6 +392,7 @@ worker.on('pose', (msg) => {
 const exportIds = new Set();
 worker.on('export', (msg) => {
   exportIds.delete(msg.id);
+  if (exportIds.size === 0 && ui.progressBar.hidden) showCancel(false);
   download(new Blob([msg.bytes], { type: msg.format === 'glb' ? 'model/gltf-binary' : 'application/json' }),
     `${fileStem()}${msg.format === 'json' ? '-params' : ''}.${msg.format}`, ui.shareStatus);
 });
@@ -368,6 +403,7 @@ worker.on('error', (msg) => {
     return;
   }
   if (msg.id !== undefined && msg.id !== latestRequest?.id) return;
+  showCancel(false);
   notices.set('error', msg.message);
   panel?.markError(msg.message);
   ui.progress.textContent = '';
@@ -522,6 +558,7 @@ function fileStem() {
 let exports = 0;
 function requestExport(format) {
   const { id } = worker.request('export', { format }, { group: `export-${++exports}`, done: ['export'] });
+  showCancel(true);
   exportIds.add(id);
 }
 ui.downloadGlb.addEventListener('click', () => requestExport('glb'));

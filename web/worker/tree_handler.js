@@ -83,7 +83,11 @@ export function createHandler(Module, ctx) {
       }
       await yieldToEvents();
       if (!isLatest(client, id)) return;
-      session.buildMesh();
+      const meshError = session.buildMesh();  // "" or the page budget it would cross
+      if (meshError) {
+        post({ type: 'error', id, client, message: meshError });
+        return;
+      }
       if (!sendTree(id, client, session, true)) return;
       stopWind(client);  // the client restarts the wind on the new tree if it is playing
       finished.get(client)?.session.delete();

@@ -1,0 +1,56 @@
+// Sway budgets (core/sway/sway_budget.h); constants calibrated in docs/budgets.md.
+#include "sway/sway_budget.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace niwa {
+namespace {
+
+constexpr double kNsPerInternodeStep = 90;  // measured 25-55 ns natively (sakura 15, 30 years)
+constexpr double kNodePointBytes = 600;     // SwayNode and the simulator's eight vectors
+constexpr double kInternodeBytes = 48;      // rest nodes, arc ratios, weights
+constexpr double kJointKeyBytes = 28;       // a translation and a rotation a joint and key
+constexpr double kGlbMemoryPerByte = 8;     // measured 7.5 (sakura 15, 60 s at 240 fps)
+constexpr double kGlbNsPerByte = 30;
+
+std::string Steps(double steps) {
+  char buffer[48];
+  std::snprintf(buffer, sizeof buffer, "%.0f", steps);
+  return buffer;
+}
+
+}  // namespace
+
+double SwaySteps(const SwayParams& params) {
+  return params.dt > 0 ? std::floor(params.duration / params.dt + 0.5) : 0;
+}
+
+Estimate EstimateSwayRun(const SwayModel& model, const SwayParams& params, int tips) {
+  const double steps = SwaySteps(params);
+  const double internodes = static_cast<double>(model.internodes);
+  Estimate e;
+  e.memory_bytes = kNodePointBytes * static_cast<double>(model.nodes.size()) +
+                   kInternodeBytes * internodes + (8.0 + 24.0 * tips) * (steps + 1);
+  e.seconds = kNsPerInternodeStep * 1e-9 * steps * internodes;
+  e.what = "swaying " + Steps(steps) + " steps over " + Steps(internodes) + " internodes";
+  return e;
+}
+
+Estimate EstimateSwayGlb(const SwayModel& model, const TreeCounts& counts, const SwayParams& params,
+                         double fps) {
+  const double keys_per_second = params.dt > 0 ? std::min(fps, 1.0 / params.dt) : fps;
+  const double keys = std::floor(params.duration * keys_per_second) + 1;
+  const double joints = 1.0 + 2.0 * model.moving + model.followers;
+  const double mesh_bytes = EstimateTreeExport(counts, TreeExport::kGlb).memory_bytes;
+  const double clip_bytes = keys * joints * kJointKeyBytes;
+  Estimate e;
+  e.memory_bytes = mesh_bytes + kGlbMemoryPerByte * clip_bytes;
+  e.seconds = EstimateSwayRun(model, params, 0).seconds + kGlbNsPerByte * 1e-9 * clip_bytes +
+              EstimateTreeExport(counts, TreeExport::kGlb).seconds;
+  e.what = "writing the .glb (" + Steps(keys) + " keys of " + Steps(joints) + " joints)";
+  return e;
+}
+
+}  // namespace niwa

@@ -1,0 +1,91 @@
+// Budgets (issue 16 items 1-3): the max-growth parameters, a long sway and a big .glb finish in
+// seconds under --max-memory / --max-seconds, refused up front (exit 2, one line naming the limit,
+// no file) or stopped early (truncated, truncated_by, one stderr line), with the same limits and
+// the same lines in the native and the WASM CLI.
+import { existsSync, mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { buildName, check, finish, native, requireWasm, root, spawn, wasm, withoutMs } from '../support/cli_pair.mjs';
+
+requireWasm();
+const dir = mkdtempSync(join(tmpdir(), 'niwa-budget-'));
+const maxgrow = join(root, 'tests/data/maxgrow.json');
+const lines = (text) => text.split('\n').filter((l) => l.length > 0);
+
+const timed = (cmd, args) => {
+  const start = Date.now();
+  const r = spawn(cmd, args);
+  return { ...r, seconds: (Date.now() - start) / 1000 };
+};
+
+// Refused up front: exit 2, one error line naming the limit, no output file, quickly.
+function refused(name, args, limit, out, pattern) {
+  const seen = [];
+  for (const cmd of [native, wasm]) {
+    const r = timed(cmd, out ? [...args, '--out', join(dir, `${buildName(cmd)}-${out}`)] : args);
+    const errors = lines(r.stderr).filter((l) => l.startsWith('niwa: error:'));
+    check(r.status === 2 && errors.length === 1 && errors[0].startsWith(`niwa: error: ${limit}: `) &&
+      (!pattern || pattern.test(errors[0])),
+      `${name} (${buildName(cmd)}): exit ${r.status}, ${errors[0]}`);
+    check(!out || !existsSync(join(dir, `${buildName(cmd)}-${out}`)), `${name} (${buildName(cmd)}): no file left`);
+    check(r.seconds < 30, `${name} (${buildName(cmd)}): answered in ${r.seconds.toFixed(1)} s`);
+    seen.push(r.stderr);
+  }
+  check(seen[0] === seen[1], `${name}: native and WASM print the same lines`);
+}
+
+// Found item 1: maxgrow.json for 100 years. Growth stops at the memory budget; the .json is refused.
+refused('maxgrow 100 years --out .json at 2 GB', ['tree', 'grow', '--years', '100', '--params', maxgrow],
+  '--max-memory', 't.json', /writing the \.json .* needs about .* more than the 2 GB allowed/);
+refused('maxgrow 100 years --out .glb at 256 MB',
+  ['tree', 'grow', '--years', '100', '--params', maxgrow, '--max-memory', '256M'], '--max-memory', 't.glb',
+  /writing the \.glb/);
+
+// Stopped early: exit 0, truncated with the line naming the limit, the same tree in both builds.
+function truncated(name, args, limit) {
+  const stats = [];
+  for (const cmd of [native, wasm]) {
+    const r = timed(cmd, [...args, '--stats']);
+    const s = r.status === 0 ? JSON.parse(r.stdout) : {};
+    const warn = lines(r.stderr);
+    check(r.status === 0 && s.truncated === true && typeof s.truncated_by === 'string' &&
+      s.truncated_by.startsWith(`${limit}: stopped in year `),
+      `${name} (${buildName(cmd)}): truncated_by "${s.truncated_by}" (${s.years} years, ${s.internodes} internodes)`);
+    check(warn.length === 1 && warn[0] === `niwa: truncated: ${s.truncated_by}`, `${name} (${buildName(cmd)}): one stderr line`);
+    check(r.seconds < 30, `${name} (${buildName(cmd)}): finished in ${r.seconds.toFixed(1)} s`);
+    stats.push(JSON.stringify(withoutMs(s)));
+  }
+  check(stats[0] === stats[1], `${name}: native == WASM --stats`);
+}
+truncated('maxgrow 100 years at 256 MB', ['tree', 'grow', '--years', '100', '--params', maxgrow, '--max-memory', '256M'], '--max-memory');
+truncated('sakura 100 years in 2 s', ['tree', 'grow', '--preset', 'sakura', '--years', '100', '--max-seconds', '2'], '--max-seconds');
+
+// Found item 2: a 600 s sway at dt 0.0001 (45 minutes before) and a 600 s clip at 240 fps (10 GB).
+refused('sway 600 s at dt 0.0001', ['tree', 'sway', '--preset', 'sakura', '--years', '15', '--duration', '600', '--dt', '0.0001'],
+  '--max-seconds', null, /swaying 6000000 steps over \d+ internodes takes about \d+ s, more than the 60 s allowed/);
+refused('sway 600 s at 240 fps to .glb', ['tree', 'sway', '--preset', 'sakura', '--years', '15', '--duration', '600', '--fps', '240'],
+  '--max-memory', 'x.glb', /writing the \.glb \(18001 keys/);
+
+// A budget that fits runs as before: the same --stats as without the flags.
+for (const cmd of [native, wasm]) {
+  const a = spawn(cmd, ['tree', 'grow', '--preset', 'maple', '--years', '12', '--stats']);
+  const b = spawn(cmd, ['tree', 'grow', '--preset', 'maple', '--years', '12', '--stats', '--max-memory', '4G', '--max-seconds', '600']);
+  const sa = JSON.parse(a.stdout), sb = JSON.parse(b.stdout);
+  check(a.status === 0 && b.status === 0 && sa.truncated === false && JSON.stringify(withoutMs(sa)) === JSON.stringify(withoutMs(sb)),
+    `maple 12 years (${buildName(cmd)}): within the budget, unchanged (${sa.internodes} internodes)`);
+}
+
+// The flags themselves: one line naming the flag and its range.
+for (const [value, flag, want] of [
+  ['abc', '--max-memory', 'must be a size from 128M to 1T'], ['1', '--max-memory', 'must be a size from 128M to 1T'],
+  ['2000T', '--max-memory', 'must be a size from 128M to 1T'], ['-4G', '--max-memory', 'must be a size from 128M to 1T'],
+  ['0', '--max-seconds', 'must be a number in [1, 86400]'], ['1e9', '--max-seconds', 'must be a number in [1, 86400]']]) {
+  for (const cmd of [native, wasm]) {
+    const r = spawn(cmd, ['tree', 'grow', '--preset', 'maple', '--years', '2', flag, value]);
+    const l = lines(r.stderr);
+    check(r.status === 2 && l.length === 1 && l[0].startsWith(`niwa: error: ${flag}: ${want}`),
+      `${flag} ${value} (${buildName(cmd)}): ${l[0]}`);
+  }
+}
+
+finish();
