@@ -130,6 +130,27 @@ await runBrowserTest(async (server, browser) => {
   data = await page.evaluate(() => ({ ...document.documentElement.dataset }));
   check('toggles do not regrow', Number(data.growRequests) === grows, `grow requests ${grows} -> ${data.growRequests}`);
 
+  // 2b. The level scrubber shows the mountain contour by contour without regrowing; Play runs it.
+  const fullLines = Number(data.drawnLines);
+  await page.evaluate(() => {
+    const r = document.getElementById('level');
+    r.value = '3';
+    r.dispatchEvent(new Event('input'));
+  });
+  await page.waitForFunction(() => document.documentElement.dataset.drawnLevel === '3', null, { timeout: TIMEOUT });
+  data = await page.evaluate(() => ({ ...document.documentElement.dataset }));
+  await snapshotCanvas(page, 'level3');
+  const levelChanged = await snapshotDifference(page, 'lines', 'level3', 30);
+  check('level 3 draws fewer contours and a cut surface', Number(data.drawnLines) > 0 && Number(data.drawnLines) < fullLines && levelChanged > 0.01,
+    `${data.drawnLines} of ${fullLines} line segments, ${(levelChanged * 100).toFixed(2)}% of pixels changed`);
+  await saveCanvasPng(page, 'terrain-lobes7-level3.png');
+  await saveCanvasPng(page, 'terrain-lobes7-level3-plan.png', '#plan');
+  await page.click('#play');
+  await page.waitForFunction(() => document.documentElement.dataset.drawnLevel === 'all' && document.getElementById('play').textContent === 'Play', null, { timeout: TIMEOUT });
+  data = await page.evaluate(() => ({ ...document.documentElement.dataset }));
+  check('Play runs to the top level and draws everything', Number(data.drawnLines) === fullLines && Number(data.growRequests) === grows,
+    `${data.drawnLines} line segments, grow requests ${data.growRequests}`);
+
   // 3. The real contour: jacksboro, picked from the seed picker.
   let serial = Number(data.terrainSerial);
   await page.selectOption('#builtin', 'jacksboro');

@@ -176,7 +176,8 @@ class TerrainLab {
   std::string hash() const { return grown_ ? terrain::EncodeTerrainHash(state_) : ""; }
   std::string stateJson() const { return grown_ ? Dump(StateObject(state_)) : "{}"; }
 
-  // {min: [x, y], max: [x, y], h_min, h_max} of the heightfield's box (plan metres).
+  // {min: [x, y], max: [x, y], h_min, h_max, h0, dh, level_min, level_max}: the heightfield's box
+  // (plan metres), its elevations, and the contour levels (negative below the seed: `down`).
   std::string boundsJson() const {
     if (!grown_) return "{}";
     ordered_json j;
@@ -185,7 +186,15 @@ class TerrainLab {
     const auto [lo, hi] = std::minmax_element(hf_.h.begin(), hf_.h.end());
     j["h_min"] = hf_.h.empty() ? 0.0 : *lo;
     j["h_max"] = hf_.h.empty() ? 0.0 : *hi;
+    j["h0"] = terrain_.h0;
     j["dh"] = terrain_.dh;
+    int level_min = 0, level_max = 0;
+    for (const terrain::ContourNode& node : terrain_.contours) {
+      level_min = std::min(level_min, node.level);
+      level_max = std::max(level_max, node.level);
+    }
+    j["level_min"] = level_min;
+    j["level_max"] = level_max;
     return Dump(j);
   }
 

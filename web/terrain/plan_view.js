@@ -11,7 +11,7 @@ export const MAX_DRAWN_POINTS = 600;
 
 // The hypsometric ramp of core/terrain/terrain_output.cpp HypsometricColour (its four stops:
 // green, ochre, brown, white), so the plan's colours are the 3-D view's and the .glb's.
-function ramp(t) {
+export function ramp(t) {
   const stops = [[0, [0.33, 0.52, 0.27]], [1 / 3, [0.72, 0.66, 0.38]], [2 / 3, [0.52, 0.38, 0.26]], [1, [0.96, 0.96, 0.96]]];
   for (let k = 1; k < stops.length; ++k) {
     if (t <= stops[k][0]) {
@@ -34,6 +34,7 @@ export class PlanView {
     this.box = { min: [-1, -1], max: [1, 1] };
     this.range = [0, 1];
     this.stroke = null;   // pixel points while drawing
+    this.level = Infinity;  // contours above it are not drawn (the level scrubber)
     canvas.addEventListener('pointerdown', (e) => this.#down(e));
     canvas.addEventListener('pointermove', (e) => this.#move(e));
     canvas.addEventListener('pointerup', (e) => this.#up(e));
@@ -43,10 +44,18 @@ export class PlanView {
 
   // The last mountain's contours and summits (the worker's buffers) and its box in metres.
   setTerrain(buffers, bounds) {
-    this.lines = { positions: new Float32Array(buffers.contours.positions), height: new Float32Array(buffers.contours.height) };
+    this.lines = {
+      positions: new Float32Array(buffers.contours.positions), height: new Float32Array(buffers.contours.height),
+      level: new Float32Array(buffers.contours.level),
+    };
     this.summits = new Float32Array(buffers.summits.positions);
     this.box = { min: bounds.min, max: bounds.max };
     this.range = [bounds.h_min, bounds.h_max];
+    this.draw();
+  }
+
+  setLevel(k) {
+    this.level = k;
     this.draw();
   }
 
@@ -142,6 +151,7 @@ export class PlanView {
       const span = this.range[1] - this.range[0] || 1;
       g.lineWidth = dpr;
       for (let v = 0; v + 1 < pos.length / 3; v += 2) {
+        if (this.lines.level[v] > this.level + 0.5) continue;
         const [r, gg, b] = ramp((hh[v] - this.range[0]) / span);
         g.strokeStyle = `rgb(${Math.round(r * 0.75)},${Math.round(gg * 0.75)},${Math.round(b * 0.75)})`;
         const a = this.toPixel(pos[3 * v], -pos[3 * v + 2]), bb = this.toPixel(pos[3 * v + 3], -pos[3 * v + 5]);
@@ -151,7 +161,7 @@ export class PlanView {
         g.stroke();
       }
     }
-    if (this.summits) {
+    if (this.summits && !Number.isFinite(this.level)) {
       g.fillStyle = '#c0392b';
       for (let s = 0; s < this.summits.length / 3; ++s) {
         const p = this.toPixel(this.summits[3 * s], -this.summits[3 * s + 2]);

@@ -11,6 +11,7 @@ import { OrbitCamera } from '../gl/orbit_camera.js';
 import { FrameLoop } from '../gl/frame_loop.js';
 import { HashHistory } from '../shell/hash_history.js';
 import { ParamPanel } from '../shell/param_panel.js';
+import { StepScrubber } from '../shell/step_scrubber.js';
 import { Notices, copyLink, download, mountStudyNav } from '../shell/study_page.js';
 import { bumpHook, setHooks } from '../shell/test_hooks.js';
 import { WorkerClient } from '../shell/worker_client.js';
@@ -22,7 +23,8 @@ const ui = {
   canvas: $('view'), plan: $('plan'), stats: $('stats'), progress: $('progress'), builtin: $('builtin'),
   builtinHelp: $('builtin-help'), preset: $('preset'), presetHelp: $('preset-help'), rngSeed: $('rng-seed'),
   reset: $('reset'), showContours: $('show-contours'), showTint: $('show-tint'), resetView: $('reset-view'),
-  copyLink: $('copy-link'), shareStatus: $('share-status'), params: $('params'),
+  copyLink: $('copy-link'), shareStatus: $('share-status'), params: $('params'), play: $('play'), level: $('level'),
+  levelText: $('level-text'),
 };
 mountStudyNav($('studies'), 'terrain');
 
@@ -46,9 +48,28 @@ let renderer = null;
 let terrainSerial = 0;
 const frames = new FrameLoop(() => {
   const drawn = renderer.render(camera);
-  setHooks({ drawnSerial: terrainSerial, drawnTriangles: drawn.triangles, drawnLines: drawn.lines, drawCalls: drawn.drawCalls });
+  setHooks({
+    drawnSerial: terrainSerial, drawnLevel: Number.isFinite(shownLevel) ? shownLevel : 'all', drawnTriangles: drawn.triangles, drawnLines: drawn.lines,
+    drawCalls: drawn.drawCalls,
+  });
 });
 const requestFrame = () => { if (renderer) frames.request(); };
+
+// The level scrubber and Play: the mountain contour by contour, from the seed (or the lowest
+// `down` contour) to the top; nothing regrows. Level k shows the contours up to k and the surface
+// cut flat at h0 + k·Δh; the top level shows everything (summits included).
+let levels = { min: 0, max: 0, h0: 0, dh: 1 };
+let shownLevel = Infinity;
+const scrubber = new StepScrubber({ range: ui.level, text: ui.levelText, play: ui.play }, (step) => {
+  const k = levels.min + step;
+  const all = k >= levels.max;
+  shownLevel = all ? Infinity : k;
+  ui.levelText.textContent = `level ${k} of ${levels.max}`;
+  renderer?.setLevel(shownLevel, all ? Infinity : levels.h0 + k * levels.dh);
+  plan.setLevel(shownLevel);
+  setHooks({ levelShown: k });
+  requestFrame();
+}, { interval: 250 });
 
 async function startRenderer() {
   try {
@@ -245,6 +266,7 @@ worker.on('terrain', (msg) => {
   applyState(msg.state);
   ui.stats.textContent = `${s.method} · ${s.levels} levels · ${s.contours} contours · ${s.peaks} peak${s.peaks === 1 ? '' : 's'} · relief ${s.relief.toFixed(1)} m · HI ${s.hypsometric_integral.toFixed(3)} · ${s.res} cells across · ${msg.wallMs.toFixed(0)} ms`;
   plan.setTerrain(msg.buffers, msg.bounds);
+  levels = { min: msg.bounds.level_min, max: msg.bounds.level_max, h0: msg.bounds.h0, dh: msg.bounds.dh };
   if (renderer) {
     renderer.setTerrain(msg.buffers, msg.bounds);
     if (frameNext && renderer.bounds()) {
@@ -258,6 +280,7 @@ worker.on('terrain', (msg) => {
     history_.replace(`#${msg.hash}`);
   }
   commitNext = false;
+  scrubber.reset(levels.max - levels.min);
   terrainSerial += 1;
   setHooks({
     status: 'ready', error: '', terrainSerial, levels: s.levels, contours: s.contours, peaks: s.peaks,

@@ -1,11 +1,14 @@
 // The terrain page's WebGL2 view (shaders/terrain/): the heightfield surface, hillshaded with the
 // hypsometric tint (or plain grey), and the contour lines at their heights over it. Positions stay
 // in metres as the worker sends them ((x, h, −y), y up); uModel centres the mountain and scales its
-// plan extent to about ten view units so one orbit camera fits every seed.
+// plan extent to about ten view units so one orbit camera fits every seed. The level scrubber
+// (setLevel) shows the mountain as it stands at level k: contours up to k, the surface cut at
+// h0 + k·Δh; nothing regrows.
 // Does not: talk to the worker, draw the 2-D plan (plan_view.js), or know the generation methods.
 import { beginFrame, createContext, sunDirection } from '../gl/context.js';
 import { floatAttribute, staticBuffer } from '../gl/buffers.js';
 import { loadPrograms } from '../gl/program.js';
+import { ramp } from './plan_view.js';
 
 const SHADERS = new URL('../../shaders/terrain/', import.meta.url);
 const VIEW_SIZE = 10;  // the mountain's plan extent in view units
@@ -20,6 +23,9 @@ export class TerrainRenderer {
     this.visible = { contours: true, tint: true };
     this.light = sunDirection(35, 225);  // from the north-west (−x, −z is north-west in view)
     this.boundsView = null;
+    this.level = Infinity;
+    this.top = Infinity;
+    this.lineLevels = new Float32Array(0);  // sorted level of every contour line segment
   }
 
   async init() {
@@ -66,13 +72,34 @@ export class TerrainRenderer {
       floatAttribute(gl, 1, list[1], 1);
       gl.bindVertexArray(null);
       this.contours = { vao, buffers: list, count: linePositions.length / 3 };
+      const levels = new Float32Array(c.level);
+      this.lineLevels = new Float32Array(levels.length / 2).map((_, i) => levels[2 * i]).sort();
+    } else {
+      this.lineLevels = new Float32Array(0);
     }
     const extent = Math.max(bounds.max[0] - bounds.min[0], bounds.max[1] - bounds.min[1], 1e-9);
     const scale = VIEW_SIZE / extent;
     const cx = (bounds.min[0] + bounds.max[0]) / 2, cy = (bounds.min[1] + bounds.max[1]) / 2;
     this.model = [cx, bounds.h_min, -cy, scale];
+    this.heights = [bounds.h_min, bounds.h_max];
     const half = [(bounds.max[0] - bounds.min[0]) / 2 * scale, (bounds.max[1] - bounds.min[1]) / 2 * scale];
     this.boundsView = { min: [-half[0], 0, -half[1]], max: [half[0], (bounds.h_max - bounds.h_min) * scale, half[1]] };
+  }
+
+  // Level k (Infinity: all) and the surface's cut h0 + k·Δh in metres.
+  setLevel(k, top) {
+    this.level = k;
+    this.top = top;
+  }
+
+  // Contour line segments at or below the current level.
+  linesShown() {
+    let lo = 0, hi = this.lineLevels.length;
+    while (lo < hi) {
+      const mid = (lo + hi) >> 1;
+      if (this.lineLevels[mid] <= this.level + 0.5) lo = mid + 1; else hi = mid;
+    }
+    return lo;
   }
 
   setVisible(flags) {
@@ -97,6 +124,10 @@ export class TerrainRenderer {
       gl.uniform1f(p.uniforms.uExaggerate, 1);
       gl.uniform3fv(p.uniforms.uLightDirection, this.light);
       gl.uniform1f(p.uniforms.uTint, this.visible.tint ? 1 : 0);
+      gl.uniform1f(p.uniforms.uTop, Number.isFinite(this.top) ? this.top : 3.0e38);
+      const [lo, hi] = this.heights || [0, 1];
+      const t = Number.isFinite(this.top) ? Math.min(1, Math.max(0, (this.top - lo) / (hi - lo || 1))) : 1;
+      gl.uniform3fv(p.uniforms.uCutColour, ramp(t).map((c) => c / 255));
       gl.disable(gl.CULL_FACE);
       gl.enable(gl.POLYGON_OFFSET_FILL);  // contour lines lying on the surface win the depth test
       gl.polygonOffset(1, 2);
@@ -113,9 +144,10 @@ export class TerrainRenderer {
       gl.uniform4fv(p.uniforms.uModel, this.model);
       gl.uniform1f(p.uniforms.uExaggerate, 1);
       gl.uniform1f(p.uniforms.uLift, 0.004);
+      gl.uniform1f(p.uniforms.uLevel, Number.isFinite(this.level) ? this.level : 1e9);
       gl.bindVertexArray(this.contours.vao);
       gl.drawArrays(gl.LINES, 0, this.contours.count);
-      lines = this.contours.count / 2;
+      lines = this.linesShown();
       ++drawCalls;
     }
     gl.bindVertexArray(null);
