@@ -14,6 +14,7 @@
 //               elevation), height (Float32 per vertex, m), level (Float32 per vertex)
 //   "summits"   positions (Float32 xyz), radius (Float32: inscribed-circle radius, m)
 //   "download"  bytes (Uint8, after build(format))
+// terrainRepairContour(pointsJson): a drawn contour that crosses itself made simple (below).
 // Calls: grow(stateJson) -> ""/error, then statsJson() (the CLI's --stats minus ms*), hash(),
 // stateJson(), buffers(..), build(format) with format glb | heightmap | sidecar | json | geojson |
 // svg -> ""/error.
@@ -34,6 +35,9 @@
 #include "terrain/contour_io.h"
 #include "terrain/generate.h"
 #include "terrain/heightfield.h"
+#include "terrain/loops.h"
+#include "terrain/offset.h"
+#include "terrain/polygon.h"
 #include "terrain/seeds.h"
 #include "terrain/terrain_output.h"
 #include "terrain/terrain_params.h"
@@ -99,6 +103,78 @@ std::string TerrainDecodeHash(const std::string& hash) {
   ordered_json out;
   out["state"] = StateObject(state);
   out["notices"] = notices;
+  return Dump(out);
+}
+
+// A drawn seed contour ([[x, y], ...] in metres) checked as Grow checks a seed (CheckSeed); one
+// that crosses itself is repaired by the paper's own loop removal (§4.4 method 2: cut from each
+// crossing to its twin, walking from the longest run, as the generator untwists a perturbed
+// contour), else by the positive-winding union's largest ring. Returns {points, repaired,
+// loops_removed, method: "loops" | "union"} (the points as given when nothing was wrong; the repaired ring snapped to the
+// 1/1024 m grid and counter-clockwise otherwise) or {error} (one line naming "contour").
+std::string TerrainRepairContour(const std::string& points_json) {
+  ordered_json out;
+  json j = json::parse(points_json, nullptr, false);
+  terrain::Ring ring;
+  bool shape_ok = j.is_array();
+  if (shape_ok) {
+    for (const json& p : j) {
+      if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number()) {
+        shape_ok = false;
+        break;
+      }
+      ring.push_back({p[0].get<double>(), p[1].get<double>()});
+    }
+  }
+  if (!shape_ok) {
+    out["error"] = Status::Error("contour", "must be [[x, y], ...] numbers in metres").Line();
+    return Dump(out);
+  }
+  terrain::TerrainState probe;
+  Status points_ok = terrain::SetTerrainPoints(ring, &probe);
+  if (!points_ok.ok()) {
+    out["error"] = points_ok.Line();
+    return Dump(out);
+  }
+  Result<terrain::Ring> checked = terrain::CheckSeed(ring);
+  if (checked.ok()) {
+    out["points"] = j;
+    out["repaired"] = false;
+    out["loops_removed"] = 0;
+    return Dump(out);
+  }
+  const auto as_json = [](const terrain::Ring& r) {
+    json pts = json::array();
+    for (const terrain::Vec2& v : r) pts.push_back({v.x, v.y});
+    return pts;
+  };
+  int removed = 0;
+  const terrain::Ring snapped = terrain::Snap(ring);
+  Result<terrain::Ring> untwisted =
+      terrain::CheckSeed(terrain::Normalise(terrain::UntwistRing(snapped, 2, 5, &removed)));
+  if (!untwisted.ok()) {
+    terrain::ShrinkCounts counts;
+    std::vector<terrain::Ring> pieces =
+        terrain::PositiveUnion({terrain::Normalise(snapped)}, &counts);
+    const terrain::Ring* best = nullptr;
+    for (const terrain::Ring& piece : pieces)
+      if (!best || std::fabs(terrain::Area(piece)) > std::fabs(terrain::Area(*best))) best = &piece;
+    if (best) untwisted = terrain::CheckSeed(*best);
+    out["method"] = "union";
+  } else {
+    out["method"] = "loops";
+  }
+  if (!untwisted.ok()) {
+    out["error"] = Status::Error("contour",
+                                 "crosses itself and could not be repaired; must be one simple "
+                                 "closed loop")
+                       .Line();
+    return Dump(out);
+  }
+  out["points"] = as_json(*untwisted);
+  out["repaired"] = true;
+  out["loops_removed"] = removed;
+  out["reason"] = checked.status().Line();
   return Dump(out);
 }
 
@@ -352,6 +428,7 @@ EMSCRIPTEN_BINDINGS(niwa_terrain) {
   function("terrainPresetsJson", &niwa::TerrainPresetsJson);
   function("terrainSeedsJson", &niwa::TerrainSeedsJson);
   function("terrainDecodeHash", &niwa::TerrainDecodeHash);
+  function("terrainRepairContour", &niwa::TerrainRepairContour);
   class_<niwa::TerrainLab>("TerrainLab")
       .constructor<>()
       .function("grow", &niwa::TerrainLab::grow)

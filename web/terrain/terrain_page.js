@@ -150,11 +150,12 @@ function showHelp() {
 }
 
 // Sends the state to grow; commit: a new history entry once it has grown.
-function sendUpdate(commit, reset = false) {
+// repair: the contour is a fresh drawing (the worker makes a self-crossing one simple first).
+function sendUpdate(commit, reset = false, repair = false) {
   clearTimeout(debounceTimer);
   commitNext = commitNext || commit;
   setHooks({ status: 'growing' });
-  const request = worker.request('update', { state: currentState(reset) }, { group: 'terrain', done: ['terrain'] });
+  const request = worker.request('update', { state: currentState(reset), repair }, { group: 'terrain', done: ['terrain'] });
   latestId = request.id;
   bumpHook('growRequests');
   return request;
@@ -214,12 +215,13 @@ const plan = new PlanView(ui.plan, (points, pixels) => {
     return;
   }
   setHooks({ contourNotice: '' });
+  $('contour-note').textContent = '';
   drawnContour = points;
   if (![...ui.builtin.options].some((o) => o.value === '')) ui.builtin.append(new Option(DRAWN, ''));
   ui.builtin.value = '';
   showHelp();
   frameNext = true;
-  sendUpdate(true);
+  sendUpdate(true, false, true);
 });
 
 // ---------------------------------------------------------------- worker replies
@@ -264,6 +266,11 @@ worker.on('terrain', (msg) => {
   showFieldError('');
   ui.progress.textContent = '';
   applyState(msg.state);
+  const r = msg.repaired;
+  $('contour-note').textContent = r
+    ? `The drawing crossed itself; repaired (${r.method === 'loops' ? `${r.loopsRemoved} loop${r.loopsRemoved === 1 ? '' : 's'} cut, §4.4 method 2` : 'its largest simple piece kept'}): ${r.points} points.`
+    : $('contour-note').textContent;
+  if (r) setHooks({ contourRepaired: `${r.method}:${r.loopsRemoved}` });
   ui.stats.textContent = `${s.method} · ${s.levels} levels · ${s.contours} contours · ${s.peaks} peak${s.peaks === 1 ? '' : 's'} · relief ${s.relief.toFixed(1)} m · HI ${s.hypsometric_integral.toFixed(3)} · ${s.res} cells across · ${msg.wallMs.toFixed(0)} ms`;
   plan.setTerrain(msg.buffers, msg.bounds);
   levels = { min: msg.bounds.level_min, max: msg.bounds.level_max, h0: msg.bounds.h0, dh: msg.bounds.dh };
@@ -316,6 +323,7 @@ worker.on('error', (msg) => {
 ui.builtin.addEventListener('change', () => {
   if (ui.builtin.value === '' && drawnContour) return;
   drawnContour = null;
+  $('contour-note').textContent = '';
   showHelp();
   frameNext = true;
   sendUpdate(true, true);  // the seed's own d, Δh, h0 under the chosen method

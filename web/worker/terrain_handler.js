@@ -31,7 +31,20 @@ export function createHandler(Module, ctx) {
     if (!isLatest(client, id)) return;
     post({ type: 'progress', id, client, stage: 'grow', text: 'growing the contours and the surface' });
     const t0 = performance.now();
-    const error = lab.grow(JSON.stringify(msg.state || {}));
+    const state = { ...(msg.state || {}) };
+    let repaired = null;
+    if (msg.repair && Array.isArray(state.contour)) {
+      const r = JSON.parse(Module.terrainRepairContour(JSON.stringify(state.contour)));
+      if (r.error) {
+        post({ type: 'error', id, client, message: r.error });
+        return;
+      }
+      if (r.repaired) {
+        state.contour = r.points;
+        repaired = { loopsRemoved: r.loops_removed, method: r.method, reason: r.reason, points: r.points.length };
+      }
+    }
+    const error = lab.grow(JSON.stringify(state));
     if (error) {
       post({ type: 'error', id, client, message: error });
       return;
@@ -43,7 +56,7 @@ export function createHandler(Module, ctx) {
     for (const group of ['surface', 'contours', 'summits']) buffers[group] = takeBuffers(lab.buffers(group), transfer);
     post({
       type: 'terrain', id, client, stats, timings, buffers, hash: lab.hash(), state: JSON.parse(lab.stateJson()),
-      bounds: JSON.parse(lab.boundsJson()), wallMs: performance.now() - t0,
+      bounds: JSON.parse(lab.boundsJson()), repaired, wallMs: performance.now() - t0,
     }, transfer);
   }
 
