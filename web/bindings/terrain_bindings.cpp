@@ -110,8 +110,9 @@ std::string TerrainDecodeHash(const std::string& hash) {
 // that crosses itself is repaired by the paper's own loop removal (§4.4 method 2: cut from each
 // crossing to its twin, walking from the longest run, as the generator untwists a perturbed
 // contour), else by the positive-winding union's largest ring. Returns {points, repaired,
-// loops_removed, method: "loops" | "union"} (the points as given when nothing was wrong; the repaired ring snapped to the
-// 1/1024 m grid and counter-clockwise otherwise) or {error} (one line naming "contour").
+// loops_removed, method: "loops" | "union"} (the points as given when nothing was wrong; the
+// repaired ring snapped to the 1/1024 m grid and counter-clockwise otherwise) or {error} (one line
+// naming "contour").
 std::string TerrainRepairContour(const std::string& points_json) {
   ordered_json out;
   json j = json::parse(points_json, nullptr, false);
