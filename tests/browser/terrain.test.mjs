@@ -271,5 +271,29 @@ await runBrowserTest(async (server, browser) => {
   check('the drawn contour\'s link regrows it', data2.status === 'ready' && `#${data2.hash}` === drawnHash, `${data2.status} ${data2.error || ''}`);
   await page2.close();
 
+  // 11. A hostile link: each bad field is a printable notice, and a mountain still grows.
+  {
+    const hostile = await context.newPage();
+    watchPage(hostile, problems);
+    await hostile.goto(`${server.url}terrain.html#builtin=nope%3Cb%3E&d=abc&zzz=1&preset=improved`, { waitUntil: 'load' });
+    const d = await waitTerrain(hostile, 0);
+    const text = await hostile.textContent('#notice');
+    check('a hostile link: notices for each bad field, and a mountain grows', d.status === 'ready' && text.includes('builtin') && text.includes('zzz') && /(^|\n)d[: ]/.test(text),
+      `${d.status}; notice '${text.replace(/\n/g, ' | ')}'`);
+    await hostile.close();
+  }
+
+  // 12. Measured (not a pass/fail: a shared, loaded machine): a drawn contour regrown with a 512²
+  // surface, as the worker times it (grow + heightfield + buffers, WASM).
+  serial = Number(data.terrainSerial);
+  await page.click('#params details:has(#param-res) > summary');
+  await page.fill('#param-res', '512');
+  data = await waitTerrain(page, serial);
+  serial = Number(data.terrainSerial);
+  await drawOnPlan(page, loop(120, (phi) => 0.32 * (1 + 0.2 * Math.cos(3 * phi) + 0.06 * Math.sin(11 * phi))));
+  data = await waitTerrain(page, serial);
+  console.log(`MEASURE drawn contour, res 512 (${JSON.parse(data.stats || '{}').cells} cells): worker ${data.wallMs} ms (grow ${data.msGrow}, heightfield ${data.msHeightfield}, buffers ${data.msBuffers}; the rest: stats and copies); issue asks <= 100 ms`);
+  if (data.status === 'ready') compareWithNative('drawn contour, res 512', data);
+
   check('no console errors, page errors or external requests', problems.length === 0, problems.join(' | '));
 });

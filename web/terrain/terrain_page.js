@@ -292,7 +292,7 @@ worker.on('terrain', (msg) => {
   setHooks({
     status: 'ready', error: '', terrainSerial, levels: s.levels, contours: s.contours, peaks: s.peaks,
     stats: JSON.stringify(s), hash: msg.hash, wallMs: msg.wallMs.toFixed(1), msGrow: msg.timings.ms_grow.toFixed(1),
-    msHeightfield: msg.timings.ms_heightfield.toFixed(1),
+    msHeightfield: msg.timings.ms_heightfield.toFixed(1), msBuffers: msg.timings.ms_buffers.toFixed(1),
   });
   requestFrame();
 });
