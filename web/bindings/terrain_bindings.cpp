@@ -1,0 +1,443 @@
+// The terrain study's bindings (paper 002, Misawa, Chiba, Saito): TerrainLab, the last mountain
+// grown from a state (a built-in seed or a drawn contour, through core/terrain/terrain_state), for
+// the worker (web/worker/terrain_handler.js); and the terrain table, presets, seeds and hash codec
+// as JSON.
+//
+// Design (as the tree's "JS BINDINGS DESIGN" note in tree_bindings.cpp): everything from
+// JavaScript arrives as text and is checked by the core (ApplyTerrainStateJson, CheckSeed, Grow);
+// nothing throws, errors come back as one line ("" = success). Buffers leave through
+// buffers(group) (buffers.h), copied once by the worker. Groups:
+//   "surface"   positions (Float32 xyz: glTF's y-up (x, h, −y), one vertex per heightfield cell
+//               centre), normals (Float32 xyz, central differences), colours (Float32 rgb: the
+//               hypsometric tint of terrain_output.h), indices (Uint32 triangles)
+//   "contours"  positions (Float32 xyz, LINES: two vertices per ring edge at the ring's
+//               elevation), height (Float32 per vertex, m), level (Float32 per vertex)
+//   "summits"   positions (Float32 xyz), radius (Float32: inscribed-circle radius, m)
+//   "download"  bytes (Uint8, after build(format))
+// terrainRepairContour(pointsJson): a drawn contour that crosses itself made simple (below).
+// Calls: grow(stateJson) -> ""/error, then statsJson() (the CLI's --stats minus ms*), hash(),
+// stateJson(), buffers(..), build(format) with format glb | heightmap | sidecar | json | geojson |
+// svg -> ""/error.
+// Does not: draw, keep more than one mountain, read files, or time anything the stats compare.
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "buffers.h"
+#include "io/gltf_writer.h"
+#include "params/param_json.h"
+#include "terrain/contour_io.h"
+#include "terrain/generate.h"
+#include "terrain/heightfield.h"
+#include "terrain/loops.h"
+#include "terrain/offset.h"
+#include "terrain/polygon.h"
+#include "terrain/seeds.h"
+#include "terrain/terrain_output.h"
+#include "terrain/terrain_params.h"
+#include "terrain/terrain_state.h"
+
+namespace niwa {
+namespace {
+
+using nlohmann::json;
+using nlohmann::ordered_json;
+using terrain::TerrainParam;
+using Clock = std::chrono::steady_clock;
+
+double Ms(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+template <typename J>
+std::string Dump(const J& j) {
+  // Errors and notices may echo hostile text: replace bytes that are not UTF-8.
+  return j.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+ordered_json StateObject(const terrain::TerrainState& state) {
+  return ordered_json::parse(terrain::TerrainStateJson(state));
+}
+
+}  // namespace
+
+std::string TerrainParamTableJson() { return ParamTableJson(terrain::TerrainTable()); }
+
+// [{name, caption}] of the methods and figure presets (what --method takes).
+std::string TerrainPresetsJson() {
+  ordered_json out = ordered_json::array();
+  for (int m = 0; m < 4; ++m)
+    out.push_back({{"name", terrain::MethodName(m)}, {"caption", "the method's preset"}});
+  for (const terrain::FigurePreset& p : terrain::FigurePresets())
+    out.push_back({{"name", p.name}, {"caption", p.caption}});
+  return out.dump();
+}
+
+// [{name, source, points, d, dh, h0}] of the built-in seeds (as `niwa terrain seeds`).
+std::string TerrainSeedsJson() {
+  ordered_json out = ordered_json::array();
+  for (const terrain::SeedInfo& s : terrain::BuiltinSeeds()) {
+    Result<terrain::Ring> r = terrain::BuiltinSeed(s.name);
+    out.push_back({{"name", s.name},
+                   {"source", s.source},
+                   {"points", r.ok() ? r->size() : 0},
+                   {"d", s.d},
+                   {"dh", s.dh},
+                   {"h0", s.h0}});
+  }
+  return out.dump();
+}
+
+// {state, notices}: the hash read as the CLI's --url reads it (bad values clamped or dropped, each
+// with a notice).
+std::string TerrainDecodeHash(const std::string& hash) {
+  terrain::TerrainState state;
+  std::vector<std::string> notices;
+  terrain::ApplyTerrainHash(hash, "", &state, &notices);
+  ordered_json out;
+  out["state"] = StateObject(state);
+  out["notices"] = notices;
+  return Dump(out);
+}
+
+// A drawn seed contour ([[x, y], ...] in metres) checked as Grow checks a seed (CheckSeed); one
+// that crosses itself is repaired by the paper's own loop removal (§4.4 method 2: cut from each
+// crossing to its twin, walking from the longest run, as the generator untwists a perturbed
+// contour), else by the positive-winding union's largest ring. Returns {points, repaired,
+// loops_removed, method: "loops" | "union"} (the points as given when nothing was wrong; the
+// repaired ring snapped to the 1/1024 m grid and counter-clockwise otherwise) or {error} (one line
+// naming "contour").
+std::string TerrainRepairContour(const std::string& points_json) {
+  ordered_json out;
+  json j = json::parse(points_json, nullptr, false);
+  terrain::Ring ring;
+  bool shape_ok = j.is_array();
+  if (shape_ok) {
+    for (const json& p : j) {
+      if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number()) {
+        shape_ok = false;
+        break;
+      }
+      ring.push_back({p[0].get<double>(), p[1].get<double>()});
+    }
+  }
+  if (!shape_ok) {
+    out["error"] = Status::Error("contour", "must be [[x, y], ...] numbers in metres").Line();
+    return Dump(out);
+  }
+  terrain::TerrainState probe;
+  Status points_ok = terrain::SetTerrainPoints(ring, &probe);
+  if (!points_ok.ok()) {
+    out["error"] = points_ok.Line();
+    return Dump(out);
+  }
+  Result<terrain::Ring> checked = terrain::CheckSeed(ring);
+  if (checked.ok()) {
+    out["points"] = j;
+    out["repaired"] = false;
+    out["loops_removed"] = 0;
+    return Dump(out);
+  }
+  const auto as_json = [](const terrain::Ring& r) {
+    json pts = json::array();
+    for (const terrain::Vec2& v : r) pts.push_back({v.x, v.y});
+    return pts;
+  };
+  int removed = 0;
+  const terrain::Ring snapped = terrain::Snap(ring);
+  Result<terrain::Ring> untwisted =
+      terrain::CheckSeed(terrain::Normalise(terrain::UntwistRing(snapped, 2, 5, &removed)));
+  if (!untwisted.ok()) {
+    terrain::ShrinkCounts counts;
+    std::vector<terrain::Ring> pieces =
+        terrain::PositiveUnion({terrain::Normalise(snapped)}, &counts);
+    const terrain::Ring* best = nullptr;
+    for (const terrain::Ring& piece : pieces)
+      if (!best || std::fabs(terrain::Area(piece)) > std::fabs(terrain::Area(*best))) best = &piece;
+    if (best) untwisted = terrain::CheckSeed(*best);
+    out["method"] = "union";
+  } else {
+    out["method"] = "loops";
+  }
+  if (!untwisted.ok()) {
+    out["error"] = Status::Error("contour",
+                                 "crosses itself and could not be repaired; must be one simple "
+                                 "closed loop")
+                       .Line();
+    return Dump(out);
+  }
+  out["points"] = as_json(*untwisted);
+  out["repaired"] = true;
+  out["loops_removed"] = removed;
+  out["reason"] = checked.status().Line();
+  return Dump(out);
+}
+
+class TerrainLab {
+ public:
+  // Grows the state (JSON, as ApplyTerrainStateJson reads it) and builds its heightfield: "" or
+  // one error line naming the field (the last mountain is kept on error).
+  std::string grow(const std::string& state_json) {
+    const auto t0 = Clock::now();
+    terrain::TerrainState state;
+    Status s = terrain::ApplyTerrainStateJson(state_json, &state);
+    if (s.ok()) s = terrain::CheckTerrainParams(state.params);
+    if (!s.ok()) return s.Line();
+    Result<terrain::Ring> seed = terrain::StateSeed(state);
+    if (!seed.ok()) return seed.status().Line();
+    Result<terrain::Terrain> t = terrain::Grow(*seed, state.params);
+    if (!t.ok()) return t.status().Line();
+    const auto t1 = Clock::now();
+    state_ = state;
+    terrain_ = std::move(t).value();
+    hf_ = terrain::BuildHeightfield(terrain_, state_.params.GetInt(TerrainParam::kRes));
+    const auto t2 = Clock::now();
+    ms_grow_ = Ms(t0, t1);
+    ms_heightfield_ = Ms(t1, t2);
+    Flatten();
+    ms_buffers_ = Ms(t2, Clock::now());
+    download_.clear();
+    grown_ = true;
+    return "";
+  }
+
+  // The --stats object of `niwa terrain grow --url HASH --stats` for the last grow, without its
+  // ms* fields (timings are in timingsJson), or "{}".
+  std::string statsJson() const {
+    if (!grown_) return "{}";
+    const terrain::TerrainParams& params = state_.params;
+    terrain::TerrainStats s = terrain::ComputeStats(terrain_, &hf_);
+    // The same type and keys as native_cli/terrain_commands.cpp RunGrow (json sorts its keys).
+    json j;
+    j["method"] = terrain::MethodName(params.GetInt(TerrainParam::kMethod));
+    j["seed"] = params.GetInt(TerrainParam::kSeed);
+    j["levels"] = s.levels;
+    j["contours"] = s.contours;
+    j["peaks"] = s.peaks;
+    j["splits"] = s.splits;
+    j["vertices"] = s.vertices;
+    j["self_intersections"] = s.self_intersections;
+    j["nesting_violations"] = s.nesting_violations;
+    j["relief"] = s.relief;
+    j["hypsometric_integral"] = s.hypsometric_integral;
+    j["mean_slope_deg"] = s.mean_slope_deg;
+    j["pits"] = s.pits;
+    j["loops_removed"] = terrain_.counts.loops_removed;
+    j["perturbations_reverted"] = terrain_.counts.perturbations_reverted;
+    j["truncated"] = terrain_.counts.truncated;
+    j["res"] = params.GetInt(TerrainParam::kRes);
+    j["cells"] = hf_.h.size();
+    j["url"] = terrain::EncodeTerrainHash(state_);
+    return Dump(j);
+  }
+
+  // {ms_grow, ms_heightfield, ms_buffers, ms_shrink, ms_mpd, ms_fd, ms_loops} of the last grow.
+  std::string timingsJson() const {
+    ordered_json j;
+    j["ms_grow"] = ms_grow_;
+    j["ms_heightfield"] = ms_heightfield_;
+    j["ms_buffers"] = ms_buffers_;
+    j["ms_shrink"] = terrain_.counts.ms_shrink;
+    j["ms_mpd"] = terrain_.counts.ms_mpd;
+    j["ms_fd"] = terrain_.counts.ms_fd;
+    j["ms_loops"] = terrain_.counts.ms_loops;
+    return Dump(j);
+  }
+
+  std::string hash() const { return grown_ ? terrain::EncodeTerrainHash(state_) : ""; }
+  std::string stateJson() const { return grown_ ? Dump(StateObject(state_)) : "{}"; }
+
+  // {min: [x, y], max: [x, y], h_min, h_max, h0, dh, level_min, level_max}: the heightfield's box
+  // (plan metres), its elevations, and the contour levels (negative below the seed: `down`).
+  std::string boundsJson() const {
+    if (!grown_) return "{}";
+    ordered_json j;
+    j["min"] = {hf_.x0, hf_.y1 - hf_.height * hf_.cell};
+    j["max"] = {hf_.x0 + hf_.width * hf_.cell, hf_.y1};
+    const auto [lo, hi] = std::minmax_element(hf_.h.begin(), hf_.h.end());
+    j["h_min"] = hf_.h.empty() ? 0.0 : *lo;
+    j["h_max"] = hf_.h.empty() ? 0.0 : *hi;
+    j["h0"] = terrain_.h0;
+    j["dh"] = terrain_.dh;
+    int level_min = 0, level_max = 0;
+    for (const terrain::ContourNode& node : terrain_.contours) {
+      level_min = std::min(level_min, node.level);
+      level_max = std::max(level_max, node.level);
+    }
+    j["level_min"] = level_min;
+    j["level_max"] = level_max;
+    return Dump(j);
+  }
+
+  // One download of the last grow into the "download" group: "" or one error line.
+  // glb: the bytes of `niwa terrain grow --url HASH --out F.glb` (the same asset extras);
+  // heightmap / sidecar: --heightmap's .png and its .json; json / geojson / svg: --contours.
+  std::string build(const std::string& format) {
+    if (!grown_) return "download: nothing grown yet";
+    std::string text;
+    if (format == "glb") {
+      json extras;  // as the CLI writes it, so the page's .glb equals the CLI's byte for byte
+      extras["generator"] = "niwa terrain grow";
+      extras["url"] = terrain::EncodeTerrainHash(state_);
+      Result<std::vector<unsigned char>> glb = gltf::WriteGlb(terrain::TerrainDocument(
+          terrain_, hf_, state_.params.GetBool(TerrainParam::kTint), extras.dump()));
+      if (!glb.ok()) return glb.status().Within("download").Line();
+      download_ = std::move(glb).value();
+      return "";
+    }
+    if (format == "heightmap" || format == "sidecar") {
+      Result<terrain::Heightmap> hm = terrain::EncodeHeightmap(hf_);
+      if (!hm.ok()) return hm.status().Line();
+      if (format == "heightmap") {
+        download_ = std::move(hm->png);
+        return "";
+      }
+      text = hm->sidecar_json;
+    } else if (format == "json") {
+      text = terrain::TerrainToJson(terrain_);
+    } else if (format == "geojson") {
+      text = terrain::TerrainToGeoJson(terrain_);
+    } else if (format == "svg") {
+      text = terrain::TerrainToSvg(terrain_);
+    } else {
+      return Status::Error("download",
+                           "unknown format; must be glb, heightmap, sidecar, json, geojson or svg")
+          .Line();
+    }
+    download_.assign(text.begin(), text.end());
+    return "";
+  }
+
+  emscripten::val buffers(const std::string& group) const {
+    NamedBuffers out;
+    if (group == "surface") {
+      out.Add("positions", surface_positions_)
+          .Add("normals", surface_normals_)
+          .Add("colours", surface_colours_)
+          .Add("indices", surface_indices_);
+    } else if (group == "contours") {
+      out.Add("positions", line_positions_).Add("height", line_height_).Add("level", line_level_);
+    } else if (group == "summits") {
+      out.Add("positions", summit_positions_).Add("radius", summit_radius_);
+    } else if (group == "download") {
+      out.Add("bytes", download_);
+    } else {
+      return emscripten::val::null();
+    }
+    return out.ToJs();
+  }
+
+ private:
+  // The flat buffers of the last mountain (y up: (x, h, −y), as terrain_output.h's glTF).
+  void Flatten() {
+    const int w = hf_.width, h = hf_.height;
+    const std::size_t cells = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+    surface_positions_.assign(cells * 3, 0.0f);
+    surface_normals_.assign(cells * 3, 0.0f);
+    surface_colours_.assign(cells * 3, 0.0f);
+    double lo = 0, hi = 0;
+    if (cells > 0) {
+      const auto [a, b] = std::minmax_element(hf_.h.begin(), hf_.h.end());
+      lo = *a;
+      hi = *b;
+    }
+    const double span = hi > lo ? hi - lo : 1.0;
+    for (int j = 0; j < h; ++j) {
+      for (int i = 0; i < w; ++i) {
+        const std::size_t k =
+            static_cast<std::size_t>(j) * static_cast<std::size_t>(w) + static_cast<std::size_t>(i);
+        const terrain::Vec2 c = hf_.Centre(i, j);
+        surface_positions_[3 * k] = static_cast<float>(c.x);
+        surface_positions_[3 * k + 1] = static_cast<float>(hf_.At(i, j));
+        surface_positions_[3 * k + 2] = static_cast<float>(-c.y);
+        // Central differences (one-sided at the border): dh/dx east, dh/dy north (row j−1).
+        const int il = std::max(i - 1, 0), ir = std::min(i + 1, w - 1);
+        const int jn = std::max(j - 1, 0), js = std::min(j + 1, h - 1);
+        const double gx = (hf_.At(ir, j) - hf_.At(il, j)) / ((ir - il) * hf_.cell);
+        const double gy = (hf_.At(i, jn) - hf_.At(i, js)) / ((js - jn) * hf_.cell);
+        // Surface (x, h(x, y), −y): normal ∝ (−∂h/∂x, 1, ∂h/∂y).
+        const double len = std::sqrt(gx * gx + 1.0 + gy * gy);
+        surface_normals_[3 * k] = static_cast<float>(-gx / len);
+        surface_normals_[3 * k + 1] = static_cast<float>(1.0 / len);
+        surface_normals_[3 * k + 2] = static_cast<float>(gy / len);
+        terrain::HypsometricColour((hf_.At(i, j) - lo) / span, &surface_colours_[3 * k]);
+      }
+    }
+    surface_indices_.clear();
+    if (w >= 2 && h >= 2) {
+      surface_indices_.reserve(static_cast<std::size_t>(w - 1) * static_cast<std::size_t>(h - 1) *
+                               6);
+      for (int j = 0; j + 1 < h; ++j) {
+        for (int i = 0; i + 1 < w; ++i) {
+          const auto a = static_cast<uint32_t>(j * w + i), b = a + 1,
+                     c = static_cast<uint32_t>((j + 1) * w + i), d = c + 1;
+          // Counter-clockwise seen from above (+y up, row j+1 is south = +z).
+          surface_indices_.insert(surface_indices_.end(), {a, c, b, b, c, d});
+        }
+      }
+    }
+    line_positions_.clear();
+    line_height_.clear();
+    line_level_.clear();
+    for (const terrain::ContourNode& node : terrain_.contours) {
+      const std::size_t n = node.ring.size();
+      const auto e = static_cast<float>(node.elevation);
+      for (std::size_t p = 0; p < n; ++p) {
+        const terrain::Vec2& u = node.ring[p];
+        const terrain::Vec2& v = node.ring[(p + 1) % n];
+        line_positions_.insert(line_positions_.end(),
+                               {static_cast<float>(u.x), e, static_cast<float>(-u.y),
+                                static_cast<float>(v.x), e, static_cast<float>(-v.y)});
+        line_height_.insert(line_height_.end(), {e, e});
+        line_level_.insert(line_level_.end(),
+                           {static_cast<float>(node.level), static_cast<float>(node.level)});
+      }
+    }
+    summit_positions_.clear();
+    summit_radius_.clear();
+    for (const terrain::Summit& s : terrain_.summits) {
+      summit_positions_.insert(summit_positions_.end(),
+                               {static_cast<float>(s.position.x), static_cast<float>(s.elevation),
+                                static_cast<float>(-s.position.y)});
+      summit_radius_.push_back(static_cast<float>(s.radius));
+    }
+  }
+
+  bool grown_ = false;
+  terrain::TerrainState state_;
+  terrain::Terrain terrain_;
+  terrain::Heightfield hf_;
+  double ms_grow_ = 0, ms_heightfield_ = 0, ms_buffers_ = 0;
+  std::vector<float> surface_positions_, surface_normals_, surface_colours_;
+  std::vector<uint32_t> surface_indices_;
+  std::vector<float> line_positions_, line_height_, line_level_;
+  std::vector<float> summit_positions_, summit_radius_;
+  std::vector<unsigned char> download_;
+};
+
+}  // namespace niwa
+
+EMSCRIPTEN_BINDINGS(niwa_terrain) {
+  using namespace emscripten;
+  function("terrainParamTableJson", &niwa::TerrainParamTableJson);
+  function("terrainPresetsJson", &niwa::TerrainPresetsJson);
+  function("terrainSeedsJson", &niwa::TerrainSeedsJson);
+  function("terrainDecodeHash", &niwa::TerrainDecodeHash);
+  function("terrainRepairContour", &niwa::TerrainRepairContour);
+  class_<niwa::TerrainLab>("TerrainLab")
+      .constructor<>()
+      .function("grow", &niwa::TerrainLab::grow)
+      .function("statsJson", &niwa::TerrainLab::statsJson)
+      .function("timingsJson", &niwa::TerrainLab::timingsJson)
+      .function("hash", &niwa::TerrainLab::hash)
+      .function("stateJson", &niwa::TerrainLab::stateJson)
+      .function("boundsJson", &niwa::TerrainLab::boundsJson)
+      .function("build", &niwa::TerrainLab::build)
+      .function("buffers", &niwa::TerrainLab::buffers);
+}

@@ -1,0 +1,369 @@
+// The terrain study's page (public/terrain.html, main thread; paper 002, Misawa, Chiba, Saito):
+// opens with a mountain grown from a built-in seed, builds the panel from the terrain table, keeps
+// the state in location.hash through the terrain hash codec (the same text `niwa terrain grow
+// --url` reads: preset, builtin or contour=x,y;..., changed parameters), picks a built-in seed, a
+// method or figure preset and the RNG seed, takes a seed contour drawn on the plan view
+// (plan_view.js), shows the mountain in 3-D (terrain_renderer.js) and downloads .glb, the 16-bit
+// heightmap with its sidecar, and the contours. Growth runs in the worker (terrain_handler.js).
+// Does not: parse or check states or contours (the core does; its one line is shown beside its
+// field), or draw directly.
+import { OrbitCamera } from '../gl/orbit_camera.js';
+import { FrameLoop } from '../gl/frame_loop.js';
+import { HashHistory } from '../shell/hash_history.js';
+import { ParamPanel } from '../shell/param_panel.js';
+import { StepScrubber } from '../shell/step_scrubber.js';
+import { Notices, copyLink, download, mountStudyNav } from '../shell/study_page.js';
+import { bumpHook, setHooks } from '../shell/test_hooks.js';
+import { WorkerClient } from '../shell/worker_client.js';
+import { PlanView } from './plan_view.js';
+import { TerrainRenderer } from './terrain_renderer.js';
+
+const $ = (id) => document.getElementById(id);
+const ui = {
+  canvas: $('view'), plan: $('plan'), stats: $('stats'), progress: $('progress'), builtin: $('builtin'),
+  builtinHelp: $('builtin-help'), preset: $('preset'), presetHelp: $('preset-help'), rngSeed: $('rng-seed'),
+  reset: $('reset'), showContours: $('show-contours'), showTint: $('show-tint'), resetView: $('reset-view'),
+  copyLink: $('copy-link'), shareStatus: $('share-status'), params: $('params'), play: $('play'), level: $('level'),
+  levelText: $('level-text'),
+};
+mountStudyNav($('studies'), 'terrain');
+
+// webgl: drawing problems; error: the core's line for the current state; hash: decoding notices.
+const notices = new Notices($('notice'), ['webgl', 'error', 'hash']);
+const worker = new WorkerClient('terrain', {
+  study: 'terrain',
+  onFailure: (text) => {
+    notices.set('error', text);
+    setHooks({ status: 'error' });
+  },
+});
+
+// The opening mountain when the link holds no seed: a result without input.
+const OPENING = { preset: 'improved', builtin: 'lobes7' };
+const DRAWN = '(drawn contour)';
+
+// ---------------------------------------------------------------- rendering
+const camera = new OrbitCamera();
+let renderer = null;
+let terrainSerial = 0;
+const frames = new FrameLoop(() => {
+  const drawn = renderer.render(camera);
+  setHooks({
+    drawnSerial: terrainSerial, drawnLevel: Number.isFinite(shownLevel) ? shownLevel : 'all', drawnTriangles: drawn.triangles, drawnLines: drawn.lines,
+    drawCalls: drawn.drawCalls,
+  });
+});
+const requestFrame = () => { if (renderer) frames.request(); };
+
+// The level scrubber and Play: the mountain contour by contour, from the seed (or the lowest
+// `down` contour) to the top; nothing regrows. Level k shows the contours up to k and the surface
+// cut flat at h0 + k·Δh; the top level shows everything (summits included).
+let levels = { min: 0, max: 0, h0: 0, dh: 1 };
+let shownLevel = Infinity;
+const scrubber = new StepScrubber({ range: ui.level, text: ui.levelText, play: ui.play }, (step) => {
+  const k = levels.min + step;
+  const all = k >= levels.max;
+  shownLevel = all ? Infinity : k;
+  ui.levelText.textContent = `level ${k} of ${levels.max}`;
+  renderer?.setLevel(shownLevel, all ? Infinity : levels.h0 + k * levels.dh);
+  plan.setLevel(shownLevel);
+  setHooks({ levelShown: k });
+  requestFrame();
+}, { interval: 250 });
+
+async function startRenderer() {
+  try {
+    renderer = new TerrainRenderer(ui.canvas);
+    await renderer.init();
+    camera.attach(ui.canvas, requestFrame);
+    new ResizeObserver(requestFrame).observe(ui.canvas);
+    ui.canvas.addEventListener('webglcontextlost', (e) => {
+      e.preventDefault();
+      notices.set('webgl', 'The WebGL2 context was lost; reload the page to draw again.');
+    });
+    requestFrame();
+  } catch (e) {
+    renderer = null;
+    setHooks({ drawing: 'off' });
+    notices.set('webgl', `Cannot draw: ${e.message}`);
+  }
+}
+
+// ---------------------------------------------------------------- state
+let panel = null;
+let presets = [];
+let seeds = [];
+let drawnContour = null;  // [[x, y], ...] in metres when the seed is a drawing, else null
+let latestId = 0;
+let commitNext = false;
+let frameNext = true;
+let debounceTimer = 0;
+
+const history_ = new HashHistory({
+  onRestore: () => worker.request('decode', { hash: location.hash }, { done: ['decoded'] }),
+});
+
+const numberOr = (input) => (input.value.trim() !== '' && Number.isFinite(Number(input.value)) ? Number(input.value) : input.value);
+
+// The 3-D view's framing of a mountain: from higher than the tree pages' default angle, so the
+// contours are seen from above, and closer (the box is flat: its bounding sphere overstates it).
+function frameTerrain() {
+  const b = renderer?.bounds();
+  if (!b) return;
+  camera.reset(b);
+  camera.pitch = 0.62;
+  camera.frame(b, 0.82);
+}
+
+// The state the worker grows: the seed (a built-in or the drawing), the preset, and (unless
+// `reset`, which takes the preset's and the seed's own values) every parameter of the panel.
+function currentState(reset) {
+  const state = { preset: ui.preset.value };
+  if (drawnContour) state.contour = drawnContour;
+  else state.builtin = ui.builtin.value;
+  const params = panel.values();
+  state.params = reset ? { seed: params.seed } : params;
+  return state;
+}
+
+// A state from the worker ({preset, builtin, contour?, params}) shown in the controls.
+function applyState(state) {
+  ui.preset.value = state.preset;
+  drawnContour = state.builtin ? null : state.contour;
+  if (drawnContour) {
+    if (![...ui.builtin.options].some((o) => o.value === '')) ui.builtin.append(new Option(DRAWN, ''));
+    ui.builtin.value = '';
+  } else {
+    ui.builtin.value = state.builtin;
+  }
+  panel.setValues(state.params);
+  ui.rngSeed.value = String(state.params.seed);
+  showHelp();
+}
+
+function showHelp() {
+  const seed = seeds.find((s) => s.name === ui.builtin.value);
+  ui.builtinHelp.textContent = drawnContour ? `A drawn contour of ${drawnContour.length} points.`
+    : seed ? `${seed.source} (${seed.points} points)` : '';
+  const preset = presets.find((p) => p.name === ui.preset.value);
+  ui.presetHelp.textContent = preset ? preset.caption : 'the table\'s defaults (the improved method)';
+}
+
+// Sends the state to grow; commit: a new history entry once it has grown.
+// repair: the contour is a fresh drawing (the worker makes a self-crossing one simple first).
+function sendUpdate(commit, reset = false, repair = false) {
+  clearTimeout(debounceTimer);
+  commitNext = commitNext || commit;
+  setHooks({ status: 'growing' });
+  const request = worker.request('update', { state: currentState(reset), repair }, { group: 'terrain', done: ['terrain'] });
+  latestId = request.id;
+  bumpHook('growRequests');
+  return request;
+}
+
+function scheduleUpdate() {
+  notices.set('hash', []);
+  clearTimeout(debounceTimer);
+  setHooks({ status: 'pending' });
+  debounceTimer = setTimeout(() => sendUpdate(true), 250);
+}
+
+// ---------------------------------------------------------------- errors beside their fields
+const BASIC_FIELDS = { builtin: 'builtin-error', preset: 'preset-error', seed: 'rng-seed-error', contour: 'contour-error' };
+
+function fieldErrorElement(key) {
+  if (BASIC_FIELDS[key]) return $(BASIC_FIELDS[key]);
+  const row = document.getElementById(`param-${key}`)?.closest('.field');
+  if (!row) return null;
+  let line = row.querySelector('.field-error');
+  if (!line) {
+    line = document.createElement('p');
+    line.className = 'field-error';
+    line.setAttribute('role', 'alert');
+    line.hidden = true;
+    row.append(line);
+  }
+  return line;
+}
+
+// Shows `message` (a core error line "key: ...") beside its field, clearing every other one.
+function showFieldError(message) {
+  for (const line of document.querySelectorAll('.field-error')) {
+    line.hidden = true;
+    line.textContent = '';
+  }
+  panel?.markError(message || '');
+  ui.rngSeed.setAttribute('aria-invalid', message?.startsWith('seed:') ? 'true' : 'false');
+  if (!message) return;
+  const key = /^([A-Za-z_][A-Za-z_0-9]*):/.exec(message)?.[1];
+  const line = key ? fieldErrorElement(key) : null;
+  if (!line) return;
+  line.textContent = message;
+  line.hidden = false;
+  setHooks({ fieldError: key });
+}
+
+// ---------------------------------------------------------------- the drawn seed contour
+// Twice the plan's shortest side over 20 device pixels at least, and 8 points at least: a click or
+// a scribble is not a contour. Crossings are the core's to find (CheckSeed names "contour").
+const MIN_DRAWN_PX = 20, MIN_DRAWN_POINTS = 8;
+const plan = new PlanView(ui.plan, (points, pixels) => {
+  bumpHook('contourDrawings');
+  if (pixels.points < MIN_DRAWN_POINTS || Math.min(pixels.width, pixels.height) < MIN_DRAWN_PX) {
+    showFieldError(`contour: the drawing is too small (${pixels.points} points, ${Math.round(pixels.width)} x ${Math.round(pixels.height)} px); must be a closed loop at least ${MIN_DRAWN_PX} px across with ${MIN_DRAWN_POINTS}+ points`);
+    setHooks({ contourNotice: 'small' });
+    return;
+  }
+  setHooks({ contourNotice: '' });
+  $('contour-note').textContent = '';
+  drawnContour = points;
+  if (![...ui.builtin.options].some((o) => o.value === '')) ui.builtin.append(new Option(DRAWN, ''));
+  ui.builtin.value = '';
+  showHelp();
+  frameNext = true;
+  sendUpdate(true, false, true);
+});
+
+// ---------------------------------------------------------------- worker replies
+worker.on('ready', (msg) => {
+  presets = msg.presets;
+  seeds = msg.seeds;
+  ui.preset.append(new Option('defaults (improved)', ''));
+  for (const p of presets) ui.preset.append(new Option(p.name, p.name));
+  for (const s of seeds) ui.builtin.append(new Option(s.name, s.name));
+  // The RNG seed box above and the panel's seed row are one value.
+  panel = new ParamPanel(ui.params, msg.paramTable, (spec) => {
+    if (spec.key === 'seed') ui.rngSeed.value = String(panel.values().seed);
+    scheduleUpdate();
+  });
+  const hash = location.hash.replace(/^#/, '');
+  applyState(msg.decoded.state);
+  notices.set('hash', msg.decoded.notices);
+  if (!/(^|&)(builtin|contour|preset)=/.test(hash)) {
+    ui.preset.value = OPENING.preset;
+    ui.builtin.value = OPENING.builtin;
+    sendUpdate(false, true);
+  } else {
+    sendUpdate(false);
+  }
+});
+
+worker.on('decoded', (msg) => {
+  applyState(msg.state);
+  notices.set('hash', msg.notices);
+  frameNext = true;
+  sendUpdate(false);
+});
+
+worker.on('progress', (msg) => {
+  ui.progress.textContent = msg.text;
+});
+
+worker.on('terrain', (msg) => {
+  if (msg.id !== latestId) return;
+  const s = msg.stats;
+  notices.set('error', '');
+  showFieldError('');
+  ui.progress.textContent = '';
+  applyState(msg.state);
+  const r = msg.repaired;
+  $('contour-note').textContent = r
+    ? `The drawing crossed itself; repaired (${r.method === 'loops' ? `${r.loopsRemoved} loop${r.loopsRemoved === 1 ? '' : 's'} cut, §4.4 method 2` : 'its largest simple piece kept'}): ${r.points} points.`
+    : $('contour-note').textContent;
+  if (r) setHooks({ contourRepaired: `${r.method}:${r.loopsRemoved}` });
+  ui.stats.textContent = `${s.method} · ${s.levels} levels · ${s.contours} contours · ${s.peaks} peak${s.peaks === 1 ? '' : 's'} · relief ${s.relief.toFixed(1)} m · HI ${s.hypsometric_integral.toFixed(3)} · ${s.res} cells across · ${msg.wallMs.toFixed(0)} ms`;
+  plan.setTerrain(msg.buffers, msg.bounds);
+  levels = { min: msg.bounds.level_min, max: msg.bounds.level_max, h0: msg.bounds.h0, dh: msg.bounds.dh };
+  if (renderer) {
+    renderer.setTerrain(msg.buffers, msg.bounds);
+    if (frameNext && renderer.bounds()) {
+      frameTerrain();
+      frameNext = false;
+    }
+  }
+  if (commitNext) history_.commit(msg.hash, `#${msg.hash}`);
+  else {
+    history_.base = msg.hash;
+    history_.replace(`#${msg.hash}`);
+  }
+  commitNext = false;
+  scrubber.reset(levels.max - levels.min);
+  terrainSerial += 1;
+  setHooks({
+    status: 'ready', error: '', terrainSerial, levels: s.levels, contours: s.contours, peaks: s.peaks,
+    stats: JSON.stringify(s), hash: msg.hash, wallMs: msg.wallMs.toFixed(1), msGrow: msg.timings.ms_grow.toFixed(1),
+    msHeightfield: msg.timings.ms_heightfield.toFixed(1), msBuffers: msg.timings.ms_buffers.toFixed(1),
+  });
+  requestFrame();
+});
+
+const exportIds = new Map();  // id -> file name
+const TYPES = { glb: 'model/gltf-binary', heightmap: 'image/png', sidecar: 'application/json', json: 'application/json', geojson: 'application/geo+json', svg: 'image/svg+xml' };
+worker.on('export', (msg) => {
+  const name = exportIds.get(msg.id);
+  if (!name) return;
+  exportIds.delete(msg.id);
+  download(new Blob([msg.bytes], { type: TYPES[msg.format] }), name, ui.shareStatus);
+  setHooks({ exported: `${msg.format}:${msg.bytes.byteLength}` });
+});
+
+worker.on('error', (msg) => {
+  if (exportIds.delete(msg.id)) {
+    ui.shareStatus.textContent = `Export failed: ${msg.message}`;
+    return;
+  }
+  if (msg.id !== undefined && msg.id !== latestId) return;
+  notices.set('error', msg.message);
+  showFieldError(msg.message);
+  ui.progress.textContent = '';
+  setHooks({ status: 'error', error: msg.message });
+});
+
+// ---------------------------------------------------------------- controls
+ui.builtin.addEventListener('change', () => {
+  if (ui.builtin.value === '' && drawnContour) return;
+  drawnContour = null;
+  $('contour-note').textContent = '';
+  showHelp();
+  frameNext = true;
+  sendUpdate(true, true);  // the seed's own d, Δh, h0 under the chosen method
+});
+ui.preset.addEventListener('change', () => {
+  showHelp();
+  sendUpdate(true, true);
+});
+ui.rngSeed.addEventListener('input', () => {
+  panel?.setValues({ seed: numberOr(ui.rngSeed) });
+  scheduleUpdate();
+});
+ui.reset.addEventListener('click', () => sendUpdate(true, true));
+ui.showContours.addEventListener('change', () => {
+  renderer?.setVisible({ contours: ui.showContours.checked });
+  requestFrame();
+});
+ui.showTint.addEventListener('change', () => {
+  renderer?.setVisible({ tint: ui.showTint.checked });
+  requestFrame();
+});
+ui.resetView.addEventListener('click', () => {
+  frameTerrain();
+  requestFrame();
+});
+ui.copyLink.addEventListener('click', () => copyLink(ui.shareStatus));
+const exportAs = (format, name) => {
+  const { id } = worker.request('export', { format }, { group: `export-${format}`, done: ['export'] });
+  exportIds.set(id, name);
+};
+$('download-glb').addEventListener('click', () => exportAs('glb', 'terrain.glb'));
+$('download-heightmap').addEventListener('click', () => {
+  exportAs('heightmap', 'terrain-heightmap.png');
+  exportAs('sidecar', 'terrain-heightmap.json');
+});
+$('download-geojson').addEventListener('click', () => exportAs('geojson', 'terrain-contours.geojson'));
+$('download-svg').addEventListener('click', () => exportAs('svg', 'terrain-contours.svg'));
+$('download-json').addEventListener('click', () => exportAs('json', 'terrain-contours.json'));
+
+// ---------------------------------------------------------------- start
+setHooks({ status: 'loading' });
+await startRenderer();
+worker.request('init', { hash: location.hash }, { done: ['ready'] });

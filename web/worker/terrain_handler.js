@@ -1,0 +1,82 @@
+// The terrain study's worker handler (paper 002, Misawa, Chiba, Saito): one TerrainLab
+// (web/bindings/terrain_bindings.cpp) per client holds the last mountain. An 'update' grows the
+// state (a built-in seed or a drawn contour, as JSON through core/terrain/terrain_state) and sends
+// the stats (the CLI's --stats minus its timings), the resolved state and hash, and the surface,
+// contour and summit buffers (copied once out of the WASM heap, then transferred); 'export'
+// builds one download (.glb, heightmap .png, its sidecar .json, contours .json/.geojson/.svg).
+// Messages: web/worker/protocol.js.
+// Does not: load the module, route messages or catch errors (web/worker/worker.js does).
+import { takeBuffers } from './transfer.js';
+
+const yieldToEvents = () => new Promise((resolve) => setTimeout(resolve, 0));
+const FORMATS = ['glb', 'heightmap', 'sidecar', 'json', 'geojson', 'svg'];
+
+// ctx: {post(msg, transfer), isLatest(client, id)} from the router.
+export function createHandler(Module, ctx) {
+  const { post, isLatest } = ctx;
+  const paramTable = JSON.parse(Module.terrainParamTableJson());
+  const presets = JSON.parse(Module.terrainPresetsJson());
+  const seeds = JSON.parse(Module.terrainSeedsJson());
+  const labs = new Map();  // client -> TerrainLab
+
+  function labOf(client) {
+    if (!labs.has(client)) labs.set(client, new Module.TerrainLab());
+    return labs.get(client);
+  }
+
+  async function update(msg, client) {
+    const { id } = msg;
+    const lab = labOf(client);
+    await yieldToEvents();  // a newer update that is already queued supersedes this one
+    if (!isLatest(client, id)) return;
+    post({ type: 'progress', id, client, stage: 'grow', text: 'growing the contours and the surface' });
+    const t0 = performance.now();
+    const state = { ...(msg.state || {}) };
+    let repaired = null;
+    if (msg.repair && Array.isArray(state.contour)) {
+      const r = JSON.parse(Module.terrainRepairContour(JSON.stringify(state.contour)));
+      if (r.error) {
+        post({ type: 'error', id, client, message: r.error });
+        return;
+      }
+      if (r.repaired) {
+        state.contour = r.points;
+        repaired = { loopsRemoved: r.loops_removed, method: r.method, reason: r.reason, points: r.points.length };
+      }
+    }
+    const error = lab.grow(JSON.stringify(state));
+    if (error) {
+      post({ type: 'error', id, client, message: error });
+      return;
+    }
+    const stats = JSON.parse(lab.statsJson());
+    const timings = JSON.parse(lab.timingsJson());
+    const transfer = [];
+    const buffers = {};
+    for (const group of ['surface', 'contours', 'summits']) buffers[group] = takeBuffers(lab.buffers(group), transfer);
+    post({
+      type: 'terrain', id, client, stats, timings, buffers, hash: lab.hash(), state: JSON.parse(lab.stateJson()),
+      bounds: JSON.parse(lab.boundsJson()), repaired, wallMs: performance.now() - t0,
+    }, transfer);
+  }
+
+  function exportTerrain(msg, client) {
+    const format = String(msg.format);
+    if (!FORMATS.includes(format)) throw new Error(`export: format '${format.slice(0, 20)}' is unknown; must be ${FORMATS.join(', ')}`);
+    const error = labOf(client).build(format);
+    if (error) throw new Error(error);
+    const transfer = [];
+    const { bytes } = takeBuffers(labOf(client).buffers('download'), transfer);
+    post({ type: 'export', id: msg.id, client, format, bytes }, transfer);
+  }
+
+  return {
+    superseding: ['update'],
+    ready: (msg) => ({ paramTable, presets, seeds, decoded: JSON.parse(Module.terrainDecodeHash(String(msg.hash || ''))) }),
+    messages: {
+      decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...JSON.parse(Module.terrainDecodeHash(String(msg.hash || ''))) }),
+      update,
+      export: exportTerrain,
+    },
+  };
+}
