@@ -58,7 +58,7 @@ TEST(SwayCli, WritesCsvAndSvg) {
 
 TEST(SwayCli, BadInputIsOneLine) {
   ExpectOneLineError(RunNiwa({"tree", "sway", "--wind", "200"}),
-                     "--wind: wind_speed: 200 is out of range; must be a number in [0, 100]");
+                     "--wind: 200 is out of range; must be a number in [0, 100]");
   ExpectOneLineError(RunNiwa({"tree", "sway", "--gust", "5:2"}), "--gust:");
   ExpectOneLineError(RunNiwa({"tree", "sway", "--gust", "soon"}), "must be ON_S:OFF_S");
   // Sway rows of the one parameter table, through --set and its old alias --set-sway.
@@ -71,7 +71,7 @@ TEST(SwayCli, BadInputIsOneLine) {
   ExpectOneLineError(RunNiwa({"tree", "sway", "--set", "nope=1"}), "unknown parameter 'nope'");
   ExpectOneLineError(RunNiwa({"tree", "sway", "--set", "gust_on=8"}),
                      "--set: gust_off: 6 must be greater than gust_on (8)");
-  ExpectOneLineError(RunNiwa({"tree", "sway", "--dt", "1"}), "--dt: dt: 1 is out of range");
+  ExpectOneLineError(RunNiwa({"tree", "sway", "--dt", "1"}), "--dt: 1 is out of range");
   ExpectOneLineError(RunNiwa({"tree", "sway", "--csv", "out.txt"}), "must end in .csv");
   ExpectOneLineError(RunNiwa({"tree", "sway", "--tips", "0"}), "--tips");
 }

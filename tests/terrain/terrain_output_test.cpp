@@ -151,7 +151,7 @@ TEST(TerrainOutput, SeveralOutputsAreAllOrNone) {
   CliResult r = RunNiwa({"terrain", "grow", "--builtin", "disk", "--res", "16", "--heightmap", png,
                          "--out", dir + "no/such/dir/x.glb"});
   EXPECT_EQ(r.code, 2);
-  EXPECT_EQ(r.err, "niwa: error: cannot write '" + dir + "no/such/dir/x.glb'\n");
+  EXPECT_EQ(r.err, "niwa: error: --out: cannot write '" + dir + "no/such/dir/x.glb'\n");
   EXPECT_FALSE(std::ifstream(png).good());
   EXPECT_FALSE(std::ifstream(side).good());
   EXPECT_FALSE(std::ifstream(png + ".niwa-stage").good());
@@ -196,7 +196,7 @@ TEST(TerrainOutput, HostileUrlsAndFlagsAreOneLineExitTwoNoFile) {
       {{"--url", "builtin=disk&d=abc"},
        "niwa: error: --url: d: 'abc' dropped, must be a number in [0.01, 100000]\n"},
       {{"--url", "builtin=disk&%3Cscript%3E=1"},
-       "niwa: error: --url: unknown key '?script?' dropped\n"},
+       "niwa: error: --url: unknown key '\\x3cscript\\x3e' dropped\n"},
       {{"--url", "contour=0,0;1e300,0;0,1"},
        "niwa: error: --url: contour: a point is not finite or beyond 1e6 m; must be numbers in "
        "[-1000000, 1000000]; dropped\n"},
