@@ -83,7 +83,7 @@ for (const [value, flag, want] of [
   for (const cmd of [native, wasm]) {
     const r = spawn(cmd, ['tree', 'grow', '--preset', 'maple', '--years', '2', flag, value]);
     const l = lines(r.stderr);
-    check(r.status === 2 && l.length === 1 && l[0].startsWith(`niwa: error: ${flag}: ${want}`),
+    check(r.status === 2 && l.length === 1 && l[0].startsWith(`niwa: error: ${flag}: `) && l[0].includes(want),
       `${flag} ${value} (${buildName(cmd)}): ${l[0]}`);
   }
 }

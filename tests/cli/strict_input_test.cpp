@@ -193,12 +193,18 @@ TEST(SafeWrites, LinksAreReplacedNeverFollowedAndNoTempRemains) {
   struct stat info {};
   ASSERT_EQ(::lstat(link.c_str(), &info), 0);
   EXPECT_TRUE(S_ISREG(info.st_mode));  // the link itself was replaced by the output
+#ifdef __EMSCRIPTEN__
+  // Under node (NODERAWFS) the file is created by node with the real process umask, which
+  // Emscripten's own umask() does not report: only check that no bit beyond 0644 is set.
+  EXPECT_EQ(info.st_mode & 0777 & ~0644u, 0u);
+#else
   EXPECT_EQ(
       info.st_mode & 0777, 0644 & ~[] {
         mode_t m = ::umask(0);
         ::umask(m);
         return m;
       }());
+#endif
   EXPECT_TRUE(Partials().empty());
 }
 
