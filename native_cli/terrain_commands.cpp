@@ -18,6 +18,7 @@
 #include "terrain/seeds.h"
 #include "terrain/terrain_output.h"
 #include "terrain/terrain_params.h"
+#include "terrain/terrain_report.h"
 #include "terrain/terrain_state.h"
 
 namespace niwa::cli {
@@ -152,26 +153,7 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   if (o.stats) {
     terrain::TerrainStats s = terrain::ComputeStats(*t, &hf);
     const auto t5 = std::chrono::steady_clock::now();
-    nlohmann::json j;
-    j["method"] = terrain::MethodName(params.GetInt(TerrainParam::kMethod));
-    j["seed"] = params.GetInt(TerrainParam::kSeed);
-    j["levels"] = s.levels;
-    j["contours"] = s.contours;
-    j["peaks"] = s.peaks;
-    j["splits"] = s.splits;
-    j["vertices"] = s.vertices;
-    j["self_intersections"] = s.self_intersections;
-    j["nesting_violations"] = s.nesting_violations;
-    j["relief"] = s.relief;
-    j["hypsometric_integral"] = s.hypsometric_integral;
-    j["mean_slope_deg"] = s.mean_slope_deg;
-    j["pits"] = s.pits;
-    j["loops_removed"] = t->counts.loops_removed;
-    j["perturbations_reverted"] = t->counts.perturbations_reverted;
-    j["truncated"] = t->counts.truncated;
-    j["res"] = params.GetInt(TerrainParam::kRes);
-    j["cells"] = hf.h.size();
-    j["url"] = terrain::EncodeTerrainHash(state);
+    nlohmann::json j = terrain::TerrainStatsJson(state, *t, hf, s);
     j["ms"] = std::chrono::duration<double, std::milli>(t5 - t0).count();  // the whole run
     j["ms_grow"] = std::chrono::duration<double, std::milli>(t1 - t0).count();
     j["ms_shrink"] = t->counts.ms_shrink;

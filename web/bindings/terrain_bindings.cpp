@@ -41,6 +41,7 @@
 #include "terrain/seeds.h"
 #include "terrain/terrain_output.h"
 #include "terrain/terrain_params.h"
+#include "terrain/terrain_report.h"
 #include "terrain/terrain_state.h"
 
 namespace niwa {
@@ -211,29 +212,9 @@ class TerrainLab {
   // ms* fields (timings are in timingsJson), or "{}".
   std::string statsJson() const {
     if (!grown_) return "{}";
-    const terrain::TerrainParams& params = state_.params;
     terrain::TerrainStats s = terrain::ComputeStats(terrain_, &hf_);
-    // The same type and keys as native_cli/terrain_commands.cpp RunGrow (json sorts its keys).
-    json j;
-    j["method"] = terrain::MethodName(params.GetInt(TerrainParam::kMethod));
-    j["seed"] = params.GetInt(TerrainParam::kSeed);
-    j["levels"] = s.levels;
-    j["contours"] = s.contours;
-    j["peaks"] = s.peaks;
-    j["splits"] = s.splits;
-    j["vertices"] = s.vertices;
-    j["self_intersections"] = s.self_intersections;
-    j["nesting_violations"] = s.nesting_violations;
-    j["relief"] = s.relief;
-    j["hypsometric_integral"] = s.hypsometric_integral;
-    j["mean_slope_deg"] = s.mean_slope_deg;
-    j["pits"] = s.pits;
-    j["loops_removed"] = terrain_.counts.loops_removed;
-    j["perturbations_reverted"] = terrain_.counts.perturbations_reverted;
-    j["truncated"] = terrain_.counts.truncated;
-    j["res"] = params.GetInt(TerrainParam::kRes);
-    j["cells"] = hf_.h.size();
-    j["url"] = terrain::EncodeTerrainHash(state_);
+    // The same object as native_cli/terrain_commands.cpp RunGrow (core/terrain/terrain_report).
+    json j = terrain::TerrainStatsJson(state_, terrain_, hf_, s);
     return Dump(j);
   }
 

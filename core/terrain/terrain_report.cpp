@@ -1,0 +1,34 @@
+// TerrainStatsJson: the one list of the terrain's stats keys.
+#include "terrain/terrain_report.h"
+
+#include "terrain/terrain_params.h"
+
+namespace niwa::terrain {
+
+nlohmann::json TerrainStatsJson(const TerrainState& state, const Terrain& terrain,
+                                const Heightfield& hf, const TerrainStats& s) {
+  const TerrainParams& params = state.params;
+  nlohmann::json j;
+  j["method"] = MethodName(params.GetInt(TerrainParam::kMethod));
+  j["seed"] = params.GetInt(TerrainParam::kSeed);
+  j["levels"] = s.levels;
+  j["contours"] = s.contours;
+  j["peaks"] = s.peaks;
+  j["splits"] = s.splits;
+  j["vertices"] = s.vertices;
+  j["self_intersections"] = s.self_intersections;
+  j["nesting_violations"] = s.nesting_violations;
+  j["relief"] = s.relief;
+  j["hypsometric_integral"] = s.hypsometric_integral;
+  j["mean_slope_deg"] = s.mean_slope_deg;
+  j["pits"] = s.pits;
+  j["loops_removed"] = terrain.counts.loops_removed;
+  j["perturbations_reverted"] = terrain.counts.perturbations_reverted;
+  j["truncated"] = terrain.counts.truncated;
+  j["res"] = params.GetInt(TerrainParam::kRes);
+  j["cells"] = hf.h.size();
+  j["url"] = EncodeTerrainHash(state);
+  return j;
+}
+
+}  // namespace niwa::terrain
