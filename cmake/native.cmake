@@ -11,6 +11,9 @@ endif()
 # Link a binary that runs natively (no-op here; the WASM build sets node-runner flags).
 function(niwa_node_program target)
 endfunction()
+# Link a unit-test binary (no-op here; the WASM build links tests at -O1, see cmake/emscripten.cmake).
+function(niwa_test_program target)
+endfunction()
 
 # Registers every <dir>/*.test.mjs as a ctest test run by node with the native CLI and the repo root.
 function(niwa_add_node_script_tests dir)
