@@ -451,6 +451,7 @@ void Grower::BreakBuds() {
   if (tree_.branches.empty()) {
     make_shoot(-1, 0, ShootKind::kSeedling, kUp, glm::vec3(1, 0, 0),
                static_cast<float>(p.Get(ParamId::kHInit)));
+    MakeBasalShoots(make_shoot);
     return;
   }
   // Only the branches with a breaking bud (listed by SetNextYearBuds, in id order) are visited.
@@ -485,12 +486,18 @@ void Grower::BreakBuds() {
                  inherited + bud.extra_hormone);
     }
   }
-  // Basal shoots (not in the thesis, docs/tree-species.md): in years 2..k_c, B_c shoots break
+  MakeBasalShoots(make_shoot);
+}
+
+template <typename MakeShoot>
+void Grower::MakeBasalShoots(MakeShoot& make_shoot) {
+  const ParamSet& p = tree_.params;
+  // Basal shoots (not in the thesis, docs/tree-species.md): in years 1..k_c, B_c shoots break
   // from the root collar (node 0 of the seedling) with the seedling's hormone H⁰ = H_init, leaning
   // ψ_tl from the vertical, each a golden angle (2π(1 − 1/ϕ_g) ≈ 137.5°) round from the one
   // before. No random draws, so a tree without them draws the same numbers as before.
   const int basal = p.GetInt(ParamId::kBasalShoots);
-  if (basal > 0 && tree_.years >= 2 && tree_.years <= p.GetInt(ParamId::kBasalYears) &&
+  if (basal > 0 && tree_.years <= p.GetInt(ParamId::kBasalYears) && !tree_.branches.empty() &&
       tree_.branches[0].alive) {
     const float golden_angle = 2.3999632f;
     for (int k = 0; k < basal && !stopped_; ++k) {

@@ -63,6 +63,9 @@ class Grower {
   void SetNextYearBuds();  // step 5, including dormancy break (2.4.6)
   void ApplyPrunes();
   void RaiseCrown();
+  // Basal shoots of this year (docs/tree-species.md), made by BreakBuds's make_shoot.
+  template <typename MakeShoot>
+  void MakeBasalShoots(MakeShoot& make_shoot);
   // True for the seedling and its chain of terminal shoots (the leader).
   bool OnLeader(const Branch& shoot) const;
   void Kill(int branch_id);

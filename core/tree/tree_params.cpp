@@ -100,8 +100,8 @@ const std::vector<ParamSpec>& Rows() {
        "off."},
       {Id(P::kBasalShoots), "basal_shoots", "B_c", "buds", 0, 0, 8, true, "branching", kGrow,
        "Basal shoots (not in the thesis): shoots that break from the root collar each year from "
-       "year 2 to basal_years, with the seedling's hormone H_init, leaning psi_tl; 0: off."},
-      {Id(P::kBasalYears), "basal_years", "k_c", "years", 4, 2, 100, true, "branching", kGrow,
+       "year 1 to basal_years, with the seedling's hormone H_init, leaning psi_tl; 0: off."},
+      {Id(P::kBasalYears), "basal_years", "k_c", "years", 1, 1, 100, true, "branching", kGrow,
        "Last year in which basal shoots break from the root collar (with basal_shoots > 0)."},
       {Id(P::kBH), "b_h", "b_h", "", 0, 0, 1, false, "branching", kGrow,
        "Plagiotropism rate (not in the thesis): every shoot but the leader also bends towards the "
