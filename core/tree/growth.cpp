@@ -451,6 +451,7 @@ void Grower::BreakBuds() {
   if (tree_.branches.empty()) {
     make_shoot(-1, 0, ShootKind::kSeedling, kUp, glm::vec3(1, 0, 0),
                static_cast<float>(p.Get(ParamId::kHInit)));
+    MakeBasalShoots(make_shoot);
     return;
   }
   // Only the branches with a breaking bud (listed by SetNextYearBuds, in id order) are visited.
@@ -485,6 +486,35 @@ void Grower::BreakBuds() {
                  inherited + bud.extra_hormone);
     }
   }
+  MakeBasalShoots(make_shoot);
+}
+
+template <typename MakeShoot>
+void Grower::MakeBasalShoots(MakeShoot& make_shoot) {
+  const ParamSet& p = tree_.params;
+  // Basal shoots (not in the thesis, docs/tree-species.md): in years 1..k_c, B_c shoots break
+  // from the root collar (node 0 of the seedling) with the seedling's hormone H⁰ = H_init, leaning
+  // ψ_tl from the vertical, each a golden angle (2π(1 − 1/ϕ_g) ≈ 137.5°) round from the one
+  // before. No random draws, so a tree without them draws the same numbers as before.
+  const int basal = p.GetInt(ParamId::kBasalShoots);
+  if (basal > 0 && tree_.years <= p.GetInt(ParamId::kBasalYears) && !tree_.branches.empty() &&
+      tree_.branches[0].alive) {
+    const float golden_angle = 2.3999632f;
+    for (int k = 0; k < basal && !stopped_; ++k) {
+      const float angle = golden_angle * static_cast<float>(basal_made_++);
+      const glm::vec3 side(det::Cosf(angle), 0.0f, det::Sinf(angle));
+      make_shoot(0, 0, ShootKind::kTerminallyLateral, RotateToward(kUp, side, psi_tl_), side,
+                 static_cast<float>(p.Get(ParamId::kHInit)));
+    }
+  }
+}
+
+bool Grower::OnLeader(const Branch& shoot) const {
+  const Branch* b = &shoot;
+  while (b->kind == ShootKind::kTerminal && b->parent >= 0) {
+    b = &tree_.branches[static_cast<std::size_t>(b->parent)];
+  }
+  return b->kind == ShootKind::kSeedling;
 }
 
 void Grower::LayOutShoots(bool bend) {
@@ -593,9 +623,19 @@ void Grower::LayOutShoots(bool bend) {
     longest = 0;
   };
 
+  const float standard_height = static_cast<float>(p.Get(ParamId::kStandardHeight));
+  const float b_h = static_cast<float>(p.Get(ParamId::kBH));
   for (int id : new_shoots_) {
     Branch& shoot = tree_.branches[static_cast<std::size_t>(id)];
     if (!shoot.alive) continue;
+    // Trained standard (not in the thesis, docs/tree-species.md): a leader shoot whose base is
+    // below H_std is tied to the stake: it grows straight up, node i at base + i·D·up.
+    if (standard_height > 0.0f && shoot.nodes.front().y < standard_height && OnLeader(shoot)) {
+      for (std::size_t i = 1; i < shoot.nodes.size(); ++i) {
+        shoot.nodes[i] = shoot.nodes[i - 1] + kUp * shoot.internode_length;
+      }
+      continue;
+    }
     // Steps 2-3 of 2.4.3: bending rates from the hormone, eqs. 2.4 and 2.5.
     float b = 0.0f;
     glm::vec3 target = kUp;
@@ -609,8 +649,15 @@ void Grower::LayOutShoots(bool bend) {
                           : HormoneRamp(p, shoot.hormone, ParamId::kBLLow, ParamId::kBLHigh);
       float b_gravity = HormoneRamp(p, shoot.hormone, ParamId::kBGLow, ParamId::kBGHigh);
       glm::vec3 pull = b_light * shoot.light_direction + b_gravity * kUp;  // b_L v_L - b_g v_g
-      b = glm::length(pull);                                               // eq. 2.4
-      if (b > 0.0f) target = pull / b;                                     // eq. 2.5
+      // Plagiotropism (not in the thesis, docs/tree-species.md): + b_h v_h, v_h the horizontal
+      // unit of the bud direction, for every shoot but the leader.
+      if (b_h > 0.0f && !OnLeader(shoot)) {
+        glm::vec3 flat(shoot.bud_direction.x, 0.0f, shoot.bud_direction.z);
+        float flat_length = glm::length(flat);
+        if (flat_length > 1e-6f) pull += (b_h / flat_length) * flat;
+      }
+      b = glm::length(pull);            // eq. 2.4
+      if (b > 0.0f) target = pull / b;  // eq. 2.5
     }
     if (b == 0.0f && !zigzag) {  // straight: no rotations needed
       const glm::vec3 direction = shoot.bud_direction;
@@ -688,7 +735,11 @@ void Grower::ThickenBranches() {
     if (!b.alive) continue;
     leaves_above[n] += static_cast<int>(b.leaves.size());
     b.cross_section += per_leaf * static_cast<float>(leaves_above[n]);
-    if (b.parent >= 0) leaves_above[static_cast<std::size_t>(b.parent)] += leaves_above[n];
+    // A shoot on node 0 of its parent (a basal shoot on the root collar) is a stem of its own
+    // beside it: its leaves do not thicken the parent. No thesis shoot starts at node 0.
+    if (b.parent >= 0 && b.parent_node > 0) {
+      leaves_above[static_cast<std::size_t>(b.parent)] += leaves_above[n];
+    }
   }
 }
 

@@ -63,6 +63,11 @@ class Grower {
   void SetNextYearBuds();  // step 5, including dormancy break (2.4.6)
   void ApplyPrunes();
   void RaiseCrown();
+  // Basal shoots of this year (docs/tree-species.md), made by BreakBuds's make_shoot.
+  template <typename MakeShoot>
+  void MakeBasalShoots(MakeShoot& make_shoot);
+  // True for the seedling and its chain of terminal shoots (the leader).
+  bool OnLeader(const Branch& shoot) const;
   void Kill(int branch_id);
 
   GrowRequest request_;
@@ -79,6 +84,7 @@ class Grower {
   CosSin cap_branch_, cap_node_, sympodial_turn_, psi_t_, psi_tl_, psi_l_;
   std::vector<CosSin> around_leaves_, around_tl_, around_laterals_;
   long internodes_ = 0;
+  int basal_made_ = 0;  // basal shoots made so far (each turns a golden angle from the last)
   double made_internodes_ = 0;  // every internode made, dead or alive (they stay in memory)
   double made_branches_ = 0;
   double internode_years_ = 0;  // Σ over the years grown of the alive internodes

@@ -93,6 +93,19 @@ const std::vector<ParamSpec>& Rows() {
       {Id(P::kTrimHeight), "trim_height", "", "cm", 0, 0, 500, false, "branching", kGrow,
        "Gardener's trim of hanging shoots (not in the thesis): each year, a shoot whose tip hangs "
        "below this height is cut; 0: off."},
+      {Id(P::kStandardHeight), "standard_height", "H_std", "cm", 0, 0, 1000, false, "branching",
+       kGrow,
+       "Trained standard (not in the thesis): the leader (the seedling and its chain of terminal "
+       "shoots) is tied to a stake and grows straight up until its base passes this height; 0: "
+       "off."},
+      {Id(P::kBasalShoots), "basal_shoots", "B_c", "buds", 0, 0, 8, true, "branching", kGrow,
+       "Basal shoots (not in the thesis): shoots that break from the root collar each year from "
+       "year 1 to basal_years, with the seedling's hormone H_init, leaning psi_tl; 0: off."},
+      {Id(P::kBasalYears), "basal_years", "k_c", "years", 1, 1, 100, true, "branching", kGrow,
+       "Last year in which basal shoots break from the root collar (with basal_shoots > 0)."},
+      {Id(P::kBH), "b_h", "b_h", "", 0, 0, 1, false, "branching", kGrow,
+       "Plagiotropism rate (not in the thesis): every shoot but the leader also bends towards the "
+       "horizontal of its bud direction, as a conifer's whorl branches do; 0: off."},
 
       {Id(P::kUseLight), "use_light", "", "", 1, 0, 1, true, "light", kGrow,
        "1: light model on (death and phototropism); 0: every shoot gets full light, straight up."},

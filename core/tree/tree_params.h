@@ -50,8 +50,12 @@ enum class TreeParam : int {
   kPLOld,
   kPLYears,
   kDwarfLateralFlowers,
-  kClearStem,   // not in the thesis: nursery crown raising (docs/tree-species.md)
-  kTrimHeight,  // not in the thesis: hanging shoots cut above the ground (docs/tree-species.md)
+  kClearStem,       // not in the thesis: nursery crown raising (docs/tree-species.md)
+  kTrimHeight,      // not in the thesis: hanging shoots cut above the ground (docs/tree-species.md)
+  kStandardHeight,  // not in the thesis: the leader trained up a stake (docs/tree-species.md)
+  kBasalShoots,     // not in the thesis: shoots from the root collar (docs/tree-species.md)
+  kBasalYears,      // the last year basal shoots break
+  kBH,              // not in the thesis: plagiotropism of side shoots (docs/tree-species.md)
   // light model (thesis 2.3.2, 2.4.1)
   kUseLight,
   kKDeath,

@@ -386,6 +386,125 @@ TEST(SpeciesForm, GinkgoIsUprightWhenYoung) {
   EXPECT_GT(f.height, f.width);
 }
 
+// The leader: the seedling and its chain of terminal shoots, from the ground up.
+std::vector<const Branch*> LeaderChain(const Tree& t) {
+  std::vector<const Branch*> chain = {&t.branches[0]};
+  for (;;) {
+    const Branch* next = nullptr;
+    for (int c : chain.back()->children) {
+      const Branch& child = t.branches[static_cast<std::size_t>(c)];
+      if (child.alive && child.kind == ShootKind::kTerminal) next = &child;
+    }
+    if (!next) break;
+    chain.push_back(next);
+  }
+  return chain;
+}
+
+// Weeping (shidare-zakura) at 20 years hangs from a trained standard: the leader is straight and
+// vertical up to standard_height (3 m), the tree is 3.5-6 m tall, and the crown is carried high
+// (no leaves below 40 cm, the trim; the widest tenth of the height in the upper half).
+TEST(SpeciesForm, WeepingCherryHangsFromAStandardTrunk) {
+  const Preset* weeping = FindPreset("weeping");
+  ASSERT_NE(weeping, nullptr);
+  const double standard = weeping->params.Get(ParamId::kStandardHeight);
+  ASSERT_GE(standard, 250.0);
+  Tree t;
+  MeshForm f = PresetForm("weeping", 20, &t);
+  EXPECT_GE(f.height, 3.5);
+  EXPECT_LE(f.height, 6.0);
+  int straight = 0;  // leader nodes up to the first above the stake (then it may arch over)
+  bool above = false;
+  for (const Branch* b : LeaderChain(t)) {
+    for (const glm::vec3& n : b->nodes) {
+      if (above || n.y > standard) {
+        above = true;
+        break;
+      }
+      EXPECT_LT(std::hypot(double(n.x), double(n.z)), 0.5) << "leader node at y " << n.y;
+      ++straight;
+    }
+  }
+  EXPECT_TRUE(above) << "the leader reaches the top of the stake";
+  EXPECT_GT(straight, 10);
+  EXPECT_GE(f.lowest_leaf - f.bottom, 0.35);
+  std::size_t widest = 0;
+  for (std::size_t b = 0; b < f.band_width.size(); ++b) {
+    if (f.band_width[b] > f.band_width[widest]) widest = b;
+  }
+  EXPECT_GE(widest, 5u) << "widest band " << widest << " of 10";
+}
+
+// Tsutsuji: the stems from the root collar (the seedling and the basal shoots on its node 0)
+// are several and none carries the plant: the thickest has at most 40 % of their summed
+// cross-section (the thesis's tsutsuji stands on one stem: 100 %).
+TEST(SpeciesForm, TsutsujiStandsOnSeveralStemsOfSimilarThickness) {
+  Tree t = GrowPreset("tsutsuji", 15);
+  std::vector<double> areas = {t.branches[0].cross_section};
+  for (int c : t.branches[0].children) {
+    const Branch& b = t.branches[static_cast<std::size_t>(c)];
+    if (b.alive && b.parent_node == 0) areas.push_back(b.cross_section);
+  }
+  EXPECT_GE(areas.size(), 5u);
+  double total = 0, thickest = 0;
+  for (double a : areas) {
+    total += a;
+    thickest = std::max(thickest, a);
+  }
+  EXPECT_LE(thickest, 0.4 * total) << areas.size() << " stems";
+  Tree thesis = GrowPreset("tsutsuji-thesis", 15);
+  for (int c : thesis.branches[0].children) {
+    EXPECT_NE(thesis.branches[static_cast<std::size_t>(c)].parent_node, 0);
+  }
+}
+
+// Pine: the whorl limbs (the terminally-lateral shoots of the leader, followed along their own
+// terminal chain) spread in tiers: their median chord from base to tip rises less than 45 degrees
+// (without plagiotropism, b_h 0, they rise at about 73 degrees into a column).
+double MedianWhorlLimbElevation(const Tree& t) {
+  std::vector<double> elevations;
+  for (const Branch* leader : LeaderChain(t)) {
+    for (int c : leader->children) {
+      const Branch* limb = &t.branches[static_cast<std::size_t>(c)];
+      if (!limb->alive || limb->kind != ShootKind::kTerminallyLateral) continue;
+      const glm::vec3 base = limb->nodes.front();
+      const Branch* end = limb;
+      for (bool more = true; more;) {
+        more = false;
+        for (int k : end->children) {
+          const Branch& next = t.branches[static_cast<std::size_t>(k)];
+          if (next.alive && next.kind == ShootKind::kTerminal) {
+            end = &next;
+            more = true;
+          }
+        }
+      }
+      const glm::vec3 tip = end->nodes.back();
+      elevations.push_back(std::atan2(double(tip.y - base.y),
+                                      std::hypot(double(tip.x - base.x), double(tip.z - base.z))) *
+                           180.0 / 3.14159265358979);
+    }
+  }
+  if (elevations.empty()) return 90.0;
+  std::sort(elevations.begin(), elevations.end());
+  return elevations[elevations.size() / 2];
+}
+
+TEST(SpeciesForm, PineWhorlLimbsSpreadInTiers) {
+  Tree t = GrowPreset("pine", 15);
+  EXPECT_GE(LeaderChain(t).size(), 12u) << "one whorl per year on the leader";
+  EXPECT_LT(MedianWhorlLimbElevation(t), 45.0);
+  const Preset* pine = FindPreset("pine");
+  ASSERT_NE(pine, nullptr);
+  GrowRequest r;
+  r.preset = "pine";
+  r.params = pine->params;
+  r.seed = pine->seed;
+  r.years = 15;
+  ASSERT_TRUE(r.params.Set(ParamId::kBH, 0.0).ok());
+  EXPECT_GT(MedianWhorlLimbElevation(GrowTree(r)), 55.0) << "b_h makes the tiers";
+}
+
 // Issue 17 item 7: every species at 15 years grows within 2x the time of sakura-thesis at 15.
 // The machine is shared, so each species is timed in turns with sakura-thesis (thesis, species,
 // thesis, ...) and the best of each is compared: a slow spell then slows both.
