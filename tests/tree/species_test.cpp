@@ -505,30 +505,8 @@ TEST(SpeciesForm, PineWhorlLimbsSpreadInTiers) {
   EXPECT_GT(MedianWhorlLimbElevation(GrowTree(r)), 55.0) << "b_h makes the tiers";
 }
 
-// Issue 17 item 7: every species at 15 years grows within 2x the time of sakura-thesis at 15.
-// The machine is shared, so each species is timed in turns with sakura-thesis (thesis, species,
-// thesis, ...) and the best of each is compared: a slow spell then slows both.
-TEST(SpeciesForm, EverySpeciesGrowsWithinTwiceSakuraThesisTime) {
-  auto grow_ms = [](const std::string& name) {
-    GrowthTimings timings;
-    const Preset* p = FindPreset(name);
-    GrowRequest r;
-    r.preset = name;
-    r.params = p->params;
-    r.seed = p->seed;
-    r.years = 15;
-    Tree t = GrowTree(r, &timings);
-    return timings.ms_total;
-  };
-  for (const char* name : {"sakura", "weeping", "pine", "tsutsuji", "keyaki", "maple", "ginkgo"}) {
-    double thesis = 1e30, species = 1e30;
-    for (int i = 0; i < 4; ++i) {
-      thesis = std::min(thesis, grow_ms("sakura-thesis"));
-      species = std::min(species, grow_ms(name));
-    }
-    EXPECT_LE(species, 2.0 * thesis) << name << ": " << species << " ms, sakura-thesis " << thesis;
-  }
-}
+// Issue 17 item 7's time goal (each species at 15 years within 2x sakura-thesis) is a speed goal:
+// scripts/bench reports it (bench/report.mjs), not a timed test here.
 
 }  // namespace
 }  // namespace niwa
