@@ -3,6 +3,7 @@
 // atlas plus lines. Shaders (GLSL ES 3.00) are shaders/tree/*, including shaders/common/*.
 // Does not: grow or mesh trees (the worker does), keep page state, or own the camera.
 import { beginFrame, createContext, finishGpu, resizeCanvas, sunDirection } from '../gl/context.js';
+import { BufferPool } from '../gl/buffer_pool.js';
 import { floatAttribute, staticBuffer, uintAttribute } from '../gl/buffers.js';
 import { Ground } from '../gl/ground.js';
 import { PickTarget } from '../gl/pick.js';
@@ -80,6 +81,7 @@ export class Renderer {
     this.extent = 20;
     this.setSun(60, 0);
     this.lastFrame = { triangles: 0, drawCalls: 0, cpuMs: 0 };
+    this.pool = new BufferPool(gl);  // the tree's mesh buffers, reused tree after tree
     this.poseTexture = gl.createTexture();
     this.poseNodes = 0;
     this.wind = 0;         // wind speed (m/s) at the tree now: leaf flutter
@@ -137,9 +139,11 @@ export class Renderer {
     const gl = this.gl;
     this.setRestPoses(swayNodes);
     this.setHybrid(hybrid);
+    // The buffers are the pool's (reused with bufferSubData when the new tree fits: a smaller tree
+    // allocates nothing); only the vertex arrays are new.
     for (const part of Object.values(this.parts)) {
       gl.deleteVertexArray(part.vao);
-      part.buffers.forEach((b) => gl.deleteBuffer(b));
+      part.buffers.forEach((b) => { if (!this.pool.owns(b)) gl.deleteBuffer(b); });
     }
     this.parts = {};
     this.highlight = null;
@@ -148,40 +152,39 @@ export class Renderer {
       if (!data || data.indices.byteLength === 0) continue;
       const vao = gl.createVertexArray();
       gl.bindVertexArray(vao);
-      const buffers = [staticBuffer(gl, data.positions), staticBuffer(gl, data.normals)];
+      const upload = (attr, bytes, target) => this.pool.upload(`${name}.${attr}`, bytes, target);
+      const buffers = [upload('positions', data.positions), upload('normals', data.normals)];
       floatAttribute(gl, 0, buffers[0], 3);
       floatAttribute(gl, 1, buffers[1], 3);
       // Sway skin: node point (uint) and eq. 3.15 weight per vertex; uv for the leaf flutter.
       const vertices = data.positions.byteLength / 12;
       if (data.joints && data.joints.byteLength === vertices * 4) {
-        const joints = staticBuffer(gl, data.joints), weights = staticBuffer(gl, data.weights);
+        const joints = upload('joints', data.joints), weights = upload('weights', data.weights);
         uintAttribute(gl, 4, joints, 1);
         floatAttribute(gl, 5, weights, 1);
         buffers.push(joints, weights);
       }
       if (data.uvs && data.uvs.byteLength === vertices * 8) {
-        const uvs = staticBuffer(gl, data.uvs);
+        const uvs = upload('uvs', data.uvs);
         floatAttribute(gl, 6, uvs, 2);
         buffers.push(uvs);
       }
       if (data.branchIds && data.branchIds.byteLength === data.positions.byteLength / 3) {
-        const buffer = staticBuffer(gl, data.branchIds);
+        const buffer = upload('branchIds', data.branchIds);
         uintAttribute(gl, 2, buffer, 1);
         buffers.push(buffer);
         // Selection highlight per vertex (select() fills it).
         this.branchIds = new Uint32Array(data.branchIds);
         this.branchParents = new Int32Array(data.branchParents || new ArrayBuffer(0));
         this.highlight = new Float32Array(this.branchIds.length);
-        this.highlightBuffer = gl.createBuffer();
-        gl.bindBuffer(gl.ARRAY_BUFFER, this.highlightBuffer);
-        gl.bufferData(gl.ARRAY_BUFFER, this.highlight, gl.DYNAMIC_DRAW);
+        this.highlightBuffer = upload('highlight', this.highlight);
         gl.enableVertexAttribArray(3);
         gl.vertexAttribPointer(3, 1, gl.FLOAT, false, 0, 0);
         buffers.push(this.highlightBuffer);
       } else {
         gl.disableVertexAttribArray(2);
       }
-      buffers.push(staticBuffer(gl, data.indices, gl.ELEMENT_ARRAY_BUFFER));
+      buffers.push(upload('indices', data.indices, gl.ELEMENT_ARRAY_BUFFER));
       gl.bindVertexArray(null);
       this.parts[name] = { vao, buffers, count: data.indices.byteLength / 4, picking: Boolean(data.branchIds) };
     }
