@@ -107,10 +107,6 @@ std::string ParamTableJson(const ParamTable& table) {
                    {"group_title", table.GroupTitle(s.group)},
                    {"stage", StageName(s.stage)},
                    {"help", s.help}});
-    if (s.simple != nullptr) {
-      out.back()["simple"] = s.simple;
-      out.back()["simple_help"] = s.simple_help != nullptr ? s.simple_help : "";
-    }
   }
   return out.dump();
 }

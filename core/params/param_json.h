@@ -29,8 +29,7 @@ Status ApplyParamsJson(const std::string& text, ParamSet* params,
 // {"key": value, ...} for every row, in table order (indent as nlohmann's dump: -1 one line).
 std::string ParamsToJson(const ParamSet& params, int indent = 2);
 // The table for the web panel: [{key, symbol, unit, default, min, max, integer, group,
-// group_title, stage, help}], in row order; a row of the "Getting started" group also has
-// simple and simple_help (ParamSpec::simple).
+// group_title, stage, help}], in row order.
 std::string ParamTableJson(const ParamTable& table);
 
 }  // namespace niwa

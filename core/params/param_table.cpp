@@ -41,10 +41,6 @@ ParamTable::ParamTable(std::string name, std::vector<ParamSpec> rows,
       BadTable(name_, s.key, "default out of range");
     }
     if (*GroupTitle(s.group) == '\0') BadTable(name_, s.key, "group not in the table's groups");
-    if ((s.simple == nullptr) != (s.simple_help == nullptr) ||
-        (s.simple != nullptr && (*s.simple == '\0' || *s.simple_help == '\0'))) {
-      BadTable(name_, s.key, "a simple name needs its simple help (both or neither)");
-    }
   }
 }
 

@@ -42,11 +42,6 @@ struct ParamSpec {
   const char* group;  // one of the table's group keys
   Stage stage;        // what an edit of this row invalidates
   const char* help;
-  // The row's place in a page's "Getting started" group of the few most effective controls: a
-  // plain-words name for what it does ("Branchiness") and one plain sentence; null for the others
-  // (most rows). The table's own key, symbol and help stay as they are for the full table.
-  const char* simple = nullptr;
-  const char* simple_help = nullptr;
 };
 
 // A panel section: the group key of the rows and its title.

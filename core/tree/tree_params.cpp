@@ -50,8 +50,7 @@ const std::vector<ParamSpec>& Rows() {
       {Id(P::kDLow), "D_low", "D", "cm", 0.2, 0.01, 100, false, "branching", kGrow,
        "Internode length at hormone 0 (first value of the range D)."},
       {Id(P::kDHigh), "D_high", "D", "cm", 3.0, 0.01, 100, false, "branching", kGrow,
-       "Internode length at hormone H_sat (second value of the range D).", "Shoot length",
-       "How far the strong shoots grow each year: longer shoots make a taller, wider tree."},
+       "Internode length at hormone H_sat (second value of the range D)."},
       {Id(P::kDwarfInternodeRatio), "D_s_ratio", "D_s/D_l", "", 1.0, 0.01, 4, false, "branching",
        kGrow, "Dwarf-shoot internode length as a fraction of the long-shoot length (fig. 2.13)."},
       {Id(P::kLengthStep), "length_step", "", "", 0, 0, 1, false, "branching", kGrow,
@@ -74,9 +73,7 @@ const std::vector<ParamSpec>& Rows() {
       {Id(P::kPsiTl), "psi_tl", "ψ_tl", "deg", 45, -90, 90, false, "branching", kGrow,
        "Branching angle of terminally-lateral shoots."},
       {Id(P::kPsiL), "psi_l", "ψ_l", "deg", 45, -90, 90, false, "branching", kGrow,
-       "Branching angle of lateral shoots.", "Branch angle",
-       "How far side shoots lean out from their parent: small is upright and narrow, large is "
-       "spreading."},
+       "Branching angle of lateral shoots."},
       {Id(P::kPTlS), "P_tl_s", "P_tl^s", "", 0, 0, 1, false, "branching", kGrow,
        "Largest break probability of a dwarf shoot's terminally-lateral buds (fig. 2.8)."},
       {Id(P::kPTlL), "P_tl_l", "P_tl^l", "", 0.9, 0, 1, false, "branching", kGrow,
@@ -85,8 +82,7 @@ const std::vector<ParamSpec>& Rows() {
        "Largest break probability of a long shoot's lateral buds in a young tree (fig. 2.9)."},
       {Id(P::kPLOld), "P_l_old", "P_l", "", 0.6, 0, 1, false, "branching", kGrow,
        "Largest break probability of a long shoot's lateral buds from age P_l_years on (fig. "
-       "2.9).",
-       "Branchiness", "How many side buds open into shoots each year: more makes a denser crown."},
+       "2.9)."},
       {Id(P::kPLYears), "P_l_years", "", "years", 10, 1, 100, false, "branching", kGrow,
        "Tree age at which the lateral break probability reaches P_l_old."},
       {Id(P::kDwarfLateralFlowers), "dwarf_flowers", "", "", 1, 0, 1, true, "branching", kGrow,
@@ -110,10 +106,7 @@ const std::vector<ParamSpec>& Rows() {
        "Azimuth of the sun, from +x towards +z."},
       {Id(P::kSunWeight), "sun_weight", "", "", 0, 0, 1, false, "light", kGrow,
        "Share of the light that comes from the sun; the rest is the overcast sky. Default 0: the "
-       "thesis's light is sky light only, and a sun makes every tree lean towards it.",
-       "Sun",
-       "How much light comes from the sun instead of an overcast sky: the tree leans and "
-       "grows towards it (the sun's place is in the Light section)."},
+       "thesis's light is sky light only, and a sun makes every tree lean towards it."},
       {Id(P::kSkyZenithRatio), "sky_zenith_ratio", "", "", 1, 1, 3, false, "light", kGrow,
        "Sky radiance at the zenith over that at the horizon: 1 uniform sky, 3 CIE overcast sky."},
       {Id(P::kLightScale), "light_scale", "", "", 1, 0.1, 1, false, "light", kGrow,
@@ -128,10 +121,7 @@ const std::vector<ParamSpec>& Rows() {
        "Negative geotropism rate at hormone 0 (fig. 2.6); below 0 shoots droop (weeping forms)."},
       {Id(P::kBGHigh), "b_g_high", "b_g", "", 0.02, -1, 1, false, "bending", kGrow,
        "Negative geotropism rate at hormone H_sat (fig. 2.6); below 0 shoots droop (weeping "
-       "forms).",
-       "Uprightness",
-       "How strongly the strong shoots turn upwards: below 0 they droop, as in a "
-       "weeping cherry."},
+       "forms)."},
       {Id(P::kThetaBmaxN), "theta_bmax_N", "θ_bmax^N", "deg", 15, 0, 180, false, "bending", kGrow,
        "Largest bend at one node (eq. 2.9)."},
       {Id(P::kThetaBmaxB), "theta_bmax_b", "θ_bmax^b", "deg", 20, 0, 180, false, "bending", kGrow,
@@ -161,8 +151,7 @@ const std::vector<ParamSpec>& Rows() {
       {Id(P::kPipeAreaPerLeaf), "pipe_area", "", "cm²/leaf", 0.02, 0, 10, false, "shape", kGrow,
        "Cross-section added to a branch each year per leaf above it (pipe model, 2.4.4)."},
       {Id(P::kLeafSize), "leaf_size", "", "cm", 6, 0.1, 50, false, "shape", kGrow,
-       "Leaf length, used for drawing and for the leaf-sphere radius.", "Leaf size",
-       "Length of each leaf; bigger leaves also shade each other more."},
+       "Leaf length, used for drawing and for the leaf-sphere radius."},
       {Id(P::kMaxInternodes), "max_internodes", "", "internodes", 2000000, 1000, 5000000, true,
        "shape", kGrow, "Safety limit: growth stops adding shoots past this many internodes."},
 
@@ -200,8 +189,7 @@ const std::vector<ParamSpec>& Rows() {
        "thin tips from jittering (docs/sway-model.md)."},
 
       {Id(P::kWindSpeed), "wind_speed", "v_wind", "m/s", 5, 0, 100, false, "wind", kSway,
-       "Wind speed while the gust blows (eq. 3.5; thesis examples: 5, 10, 20).", "Wind",
-       "How hard the wind blows when you press Blow (the tree is not grown again)."},
+       "Wind speed while the gust blows (eq. 3.5; thesis examples: 5, 10, 20)."},
       {Id(P::kWindDir), "wind_dir", "", "deg", 0, -360, 360, false, "wind", kSway,
        "Wind azimuth in the horizontal plane: 0 blows towards +x, 90 towards +z."},
       {Id(P::kGustOn), "gust_on", "", "s", 1, 0, 3600, false, "wind", kSway,

@@ -1,63 +1,62 @@
-// Tests of the tree table's "Getting started" group (ParamSpec::simple): a small group of rows,
-// each with a plain name and help, carried in the table JSON, and each one that regrows the tree
-// actually changes its form between the ends of its range (what makes it worth a newcomer's try).
+// Tests of the tree's "Getting started" group (core/tree/tree_simple.h): a small group of rows,
+// each with a plain name and help, carried in the page's table JSON, and each one that regrows the
+// tree actually changes its form across its range (what makes it worth a newcomer's try).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "params/param_json.h"
 #include "tree/growth.h"
 #include "tree/presets.h"
 #include "tree/tree_params.h"
 #include "tree/tree_report.h"
+#include "tree/tree_simple.h"
 
 namespace niwa {
 namespace {
 
-std::vector<const ParamSpec*> SimpleRows() {
-  std::vector<const ParamSpec*> rows;
-  for (const ParamSpec& spec : TreeParamTable()) {
-    if (spec.simple != nullptr) rows.push_back(&spec);
-  }
-  return rows;
-}
-
-TEST(SimpleControls, ASmallGroupWithPlainNamesAndHelp) {
-  const std::vector<const ParamSpec*> rows = SimpleRows();
-  ASSERT_GE(rows.size(), 4u);
-  ASSERT_LE(rows.size(), 8u);
+TEST(SimpleControls, ASmallGroupInTableOrderWithPlainNamesAndHelp) {
+  const std::vector<SimpleControl>& group = TreeSimpleControls();
+  ASSERT_GE(group.size(), 4u);
+  ASSERT_LE(group.size(), 8u);
   std::set<std::string> names;
-  for (const ParamSpec* spec : rows) {
-    ASSERT_NE(spec->simple_help, nullptr) << spec->key;
-    EXPECT_GT(std::string(spec->simple_help).size(), 20u) << spec->key;
-    EXPECT_TRUE(names.insert(spec->simple).second) << "repeated simple name " << spec->simple;
-    // A plain name, not the thesis's key.
-    EXPECT_NE(std::string(spec->simple), std::string(spec->key));
+  int last = -1;
+  for (const SimpleControl& control : group) {
+    const ParamSpec& spec = Spec(control.row);
+    EXPECT_GT(static_cast<int>(control.row), last) << spec.key << " out of table order";
+    last = static_cast<int>(control.row);
+    EXPECT_GT(std::string(control.help).size(), 20u) << spec.key;
+    EXPECT_TRUE(names.insert(control.name).second) << "repeated name " << control.name;
+    EXPECT_NE(std::string(control.name), std::string(spec.key));  // a plain name, not the key
   }
 }
 
 TEST(SimpleControls, TheTableJsonCarriesThemOnlyOnTheirRows) {
-  const nlohmann::json table = nlohmann::json::parse(ParamTableJson(TreeParamTable()));
+  const nlohmann::json table = nlohmann::json::parse(TreeParamTableJsonWithSimple());
+  const nlohmann::json plain = nlohmann::json::parse(ParamTableJson(TreeParamTable()));
+  ASSERT_EQ(table.size(), plain.size());
   std::size_t marked = 0;
-  for (const nlohmann::json& row : table) {
-    const std::size_t index = *TreeParamTable().Find(row["key"].get<std::string>());
-    const ParamSpec& spec = TreeParamTable()[index];
-    if (spec.simple == nullptr) {
-      EXPECT_FALSE(row.contains("simple")) << spec.key;
-      EXPECT_FALSE(row.contains("simple_help")) << spec.key;
-      continue;
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    nlohmann::json row = table[i];
+    const SimpleControl* control = nullptr;
+    for (const SimpleControl& c : TreeSimpleControls()) {
+      if (static_cast<std::size_t>(c.row) == i) control = &c;
     }
-    ++marked;
-    EXPECT_EQ(row["simple"], spec.simple);
-    EXPECT_EQ(row["simple_help"], spec.simple_help);
+    if (control != nullptr) {
+      ++marked;
+      EXPECT_EQ(row["simple"], control->name);
+      EXPECT_EQ(row["simple_help"], control->help);
+      row.erase("simple");
+      row.erase("simple_help");
+    }
+    EXPECT_EQ(row, plain[i]) << "row " << i << " differs beyond the simple fields";
   }
-  EXPECT_EQ(marked, SimpleRows().size());
+  EXPECT_EQ(marked, TreeSimpleControls().size());
 }
 
 struct Form {
@@ -83,7 +82,8 @@ double Change(double a, double b) {
 }
 
 TEST(SimpleControls, EachGrowthControlChangesTheTreeAcrossItsRange) {
-  for (const ParamSpec* spec : SimpleRows()) {
+  for (const SimpleControl& control : TreeSimpleControls()) {
+    const ParamSpec* spec = &Spec(control.row);
     if (spec->stage != Stage::kGrow) continue;  // wind: no regrowth (the page's sway test)
     // From a quarter to three quarters of the way between the row's default and its range ends,
     // so no end case (0 buds, a 90° angle) decides the test.
@@ -95,7 +95,7 @@ TEST(SimpleControls, EachGrowthControlChangesTheTreeAcrossItsRange) {
     const Form a = GrowWith(*spec, low), b = GrowWith(*spec, high_capped);
     const double change = std::max(
         {Change(a.internodes, b.internodes), Change(a.height, b.height), Change(a.width, b.width)});
-    EXPECT_GT(change, 0.15) << spec->key << " (" << spec->simple << ") " << low << " -> "
+    EXPECT_GT(change, 0.15) << spec->key << " (" << control.name << ") " << low << " -> "
                             << high_capped << ": internodes " << a.internodes << " -> "
                             << b.internodes << ", height " << a.height << " -> " << b.height
                             << " cm, width " << a.width << " -> " << b.width << " cm";

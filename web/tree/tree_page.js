@@ -91,16 +91,19 @@ let renderer = null;
 let poseDrawPending = false;
 const table = new RenderTable(ui.renderTable, ui.renderCol, ui.frameStats);
 const frames = new FrameLoop(() => {
+  // While a big tree goes up in parts the canvas keeps its last frame (no draw: a frame of the old
+  // big tree costs seconds on a CPU GL, and every part's upload would wait for it).
+  if (renderer.uploading) return;
   const drawn = renderer.render(camera);
   if (drawn) table.showFrame(drawn);
+  if (poseDrawPending) {  // the worker sends the next pose once this one is on screen
+    poseDrawPending = false;
+    worker.post('poseDone');
+  }
   setHooks({ drawnTreeSerial: treeSerial });  // tests wait for the new tree's frame
   if (freshOnDraw) {  // the tree that answers the latest edit is on screen now
     freshOnDraw = false;
     feedback.fresh();
-  }
-  if (poseDrawPending) {  // the worker sends the next pose once this one is on screen
-    poseDrawPending = false;
-    worker.post('poseDone');
   }
 });
 const requestFrame = () => { if (renderer) frames.request(); };
@@ -404,11 +407,6 @@ worker.on('tree', (msg) => {
   notices.set('error', '');
   feedback.showError('');
   exportGuard.update(msg.stats, msg.mesh);
-  // "stale" stays while a newer edit waits; else it goes with the first frame of this tree.
-  const resent = replyArrived();
-  if (!resent && !editPending) {
-    if (renderer) freshOnDraw = true; else feedback.fresh();
-  }
   notices.set('prunes', msg.stats.idle_prunes || []);
   panel.markError('');
   ui.stats.textContent = formatStats(msg.stats);
@@ -417,7 +415,7 @@ worker.on('tree', (msg) => {
   ui.progressBar.hidden = true;
   shownYear = msg.stats.years;
   if (renderer) {
-    renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid);
+    renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid).then(requestFrame);
     renderer.leafLength = Number(panel.values().leaf_size) / 100 || 0.05;
     lastBounds = msg.stats.bounds;
     if (frameNext) {
@@ -444,6 +442,12 @@ worker.on('tree', (msg) => {
   });
   if (windPlaying) worker.post('wind', { play: true });  // sway the new tree (or new wind) too
   else showWind(null);
+  // "stale" stays while a newer edit waits (sent now if it was queued behind this tree); else it
+  // goes with the first frame of this tree.
+  const resent = replyArrived();
+  if (!resent && !editPending) {
+    if (renderer) freshOnDraw = true; else feedback.fresh();
+  }
 });
 
 worker.on('drawList', (msg) => {
@@ -456,7 +460,7 @@ worker.on('drawList', (msg) => {
 });
 
 worker.on('pose', (msg) => {
-  if (!windPlaying || !renderer) {
+  if (!windPlaying || !renderer || renderer.uploading) {  // no poses for a tree not yet in place
     worker.post('poseDone');
     return;
   }
@@ -485,10 +489,10 @@ worker.on('error', (msg) => {
   panel?.markError(msg.message);
   feedback.showError(msg.message);
   if (treeSerial === 0) feedback.fresh();  // no tree on screen to call stale
-  replyArrived();
   ui.progress.textContent = '';
   ui.progressBar.hidden = true;
   setHooks({ status: 'error' });
+  replyArrived();  // a queued edit goes now (it may fix the error)
 });
 
 // ---------------------------------------------------------------- controls
