@@ -1,7 +1,7 @@
 // The tree page's "Getting started" panel (issue 17 item 8): what the tree is and what to try
 // first, in plain words, and a small group of the most effective controls named for what they do.
-// The group is generated FROM THE TABLE: the rows with a `simple` name (ParamSpec::simple in
-// core/params, set in core/tree/tree_params.cpp), plus Age, which is the state's Years field.
+// The group is generated FROM THE TABLE the worker sends: its rows with a `simple` name (the core
+// adds them from core/tree/tree_simple.cpp), plus Age, which is the state's Years field.
 // Each control writes its table row's field (or Years) and fires that field's own input event, so
 // an edit here is exactly an edit of the row; the full table below keeps the thesis's names.
 // Does not: hold a list of parameters, check values, or send anything itself.
