@@ -83,7 +83,7 @@ export class GettingStarted {
       link.addEventListener('click', openRow);
       text.append(' ', link);
     } else {
-      text.append(` (the ${row} field above)`);
+      text.append(` (the ${row} field below)`);
     }
     wrap.append(head, controls, text);
     this.controls.push({ key, target, range, number });
