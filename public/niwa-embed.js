@@ -211,7 +211,8 @@ class NiwaTree extends HTMLElement {
 
   showTree(msg) {
     this.pendingTree = null;
-    this.renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid);
+    // A big mesh goes up in parts (tree_renderer.js): draw again once it is in place.
+    this.renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid).then(() => this.requestFrame());
     this.hybridOn = Boolean(msg.hybrid);
     this.viewInFlight = false;
     if (this.sun) this.renderer.setSun(...this.sun);

@@ -11,6 +11,7 @@
 #include "params/param_json.h"
 #include "tree/presets.h"
 #include "tree/tree_params.h"
+#include "tree/tree_simple.h"
 #include "tree/tree_state.h"
 
 namespace niwa {
@@ -26,7 +27,8 @@ ordered_json ParamsObject(const ParamSet& params) {
 
 }  // namespace
 
-std::string ParamTableJsonForJs() { return ParamTableJson(TreeParamTable()); }
+// The tree's table with its Getting started group (core/tree/tree_simple.h) on its rows.
+std::string ParamTableJsonForJs() { return TreeParamTableJsonWithSimple(); }
 
 std::string PresetsJson() {
   ordered_json out = ordered_json::array();

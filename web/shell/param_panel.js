@@ -1,8 +1,9 @@
 // Parameter panel built FROM THE PARAMETER TABLE sent by the worker (no parameter list in JS):
 // one collapsible section per `group`, titled by the table's `group_title`, each field labelled
 // with key, symbol and unit, limited by the table's min/max, with the help text as title and
-// aria-describedby. Each edit reports the row's `stage` (grow | mesh | sway | view) so the page
-// reruns only what the edit invalidates.
+// aria-describedby, shown under the row while any of its controls has focus (keyboard or tap).
+// Each edit reports the row's `stage` (grow | mesh | sway | view) so the page reruns only what the
+// edit invalidates.
 // Does not: validate values (the core does and its error line is shown), or send anything.
 
 // A readable title when a table has no group_title (older WASM builds).
@@ -15,7 +16,7 @@ function groupTitle(spec) {
 export const stageOf = (spec) => (['grow', 'mesh', 'sway', 'view'].includes(spec?.stage) ? spec.stage : 'grow');
 
 // Slider step: 1 for whole numbers, else a power of ten about a thousandth of the range.
-function stepOf(spec) {
+export function stepOf(spec) {
   if (spec.integer) return 1;
   const range = spec.max - spec.min;
   return range > 0 ? 10 ** (Math.floor(Math.log10(range)) - 3) : 'any';

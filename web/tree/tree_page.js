@@ -13,6 +13,9 @@ import {
 } from '../shell/study_page.js';
 import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
 import { WorkerClient, restartWorker } from '../shell/worker_client.js';
+import { ExportGuard, cutRefusal } from './cut_rules.js';
+import { EditFeedback } from './edit_feedback.js';
+import { GettingStarted } from './getting_started.js';
 import { RenderTable } from './render_table.js';
 import { Renderer } from './tree_renderer.js';
 
@@ -29,12 +32,17 @@ const ui = {
   embedUi: { dialog: $('embed-dialog'), element: $('embed-element'), iframe: $('embed-iframe') },
 };
 mountStudyNav($('studies'), 'tree');
+// Errors beside their fields and the "stale" label over the view; the .glb button's guard.
+const feedback = new EditFeedback(ui.canvas.closest('.stage'), { seed: ui.seed, years: ui.years, preset: ui.preset });
+const exportGuard = new ExportGuard(ui.downloadGlb);
+let gettingStarted = null;  // the Getting started controls (built with the panel)
 
 // webgl: drawing problems; error: the core's line for the current state; hash: from decoding the
 // URL hash; prunes: prunes of the current state that cut nothing (from the grown tree).
 const notices = new Notices($('notice'), ['webgl', 'error', 'hash', 'prunes']);
 const worker = new WorkerClient('app', {
   onFailure: (text) => {
+    inFlight = false;
     notices.set('error', text);
     setHooks({ status: 'error' });
   },
@@ -46,6 +54,16 @@ const worker = new WorkerClient('app', {
   },
 });
 let restarting = false;  // the next 'ready' answers a restart (the panel exists already)
+let freshOnDraw = false; // the next frame drawn shows the tree of the latest edit (clears "stale")
+// Coalescing (issue 17: a one-second slider drag regrew 17 trees): while a tree request is in
+// flight, a new edit is only queued; when the reply comes, one request carries the latest values.
+// A request in flight for longer than COALESCE_MS (a big tree) is superseded instead, so a long
+// grow never holds the newest edit back.
+const COALESCE_MS = 400;
+let inFlight = false;
+let inFlightSince = 0;
+let editQueued = false;
+let queueTimer = 0;
 let lastGood = null;     // {hash, state} of the last tree shown
 
 // Cancel: whatever the worker is doing (growing, meshing, exporting) ends now (issue 16).
@@ -57,6 +75,9 @@ ui.cancel.addEventListener('click', () => {
   clearTimeout(debounceTimer);
   editPending = false;
   pendingStage = null;
+  inFlight = false;
+  editQueued = false;
+  clearTimeout(queueTimer);
   if (windPlaying) setWind(false);
   ui.progress.textContent = 'cancelled: back to the last finished tree';
   ui.progressBar.hidden = true;
@@ -70,12 +91,19 @@ let renderer = null;
 let poseDrawPending = false;
 const table = new RenderTable(ui.renderTable, ui.renderCol, ui.frameStats);
 const frames = new FrameLoop(() => {
+  // While a big tree goes up in parts the canvas keeps its last frame (no draw: a frame of the old
+  // big tree costs seconds on a CPU GL, and every part's upload would wait for it).
+  if (renderer.uploading) return;
   const drawn = renderer.render(camera);
   if (drawn) table.showFrame(drawn);
-  setHooks({ drawnTreeSerial: treeSerial });  // tests wait for the new tree's frame
   if (poseDrawPending) {  // the worker sends the next pose once this one is on screen
     poseDrawPending = false;
     worker.post('poseDone');
+  }
+  setHooks({ drawnTreeSerial: treeSerial });  // tests wait for the new tree's frame
+  if (freshOnDraw) {  // the tree that answers the latest edit is on screen now
+    freshOnDraw = false;
+    feedback.fresh();
   }
 });
 const requestFrame = () => { if (renderer) frames.request(); };
@@ -180,6 +208,7 @@ function applyState(state) {
   showPrunes();
   showSun();
   ui.renderMode.value = String(Number(state.params.render_mode) === 1 ? 1 : 0);
+  gettingStarted?.sync();
 }
 
 function showPresetSource() {
@@ -223,6 +252,11 @@ function sendUpdate(kind = 'edit') {
   const stage = kind === 'edit' && pendingStage ? pendingStage : 'grow';
   editPending = false;
   pendingStage = null;
+  inFlight = true;
+  inFlightSince = performance.now();
+  editQueued = false;
+  clearTimeout(queueTimer);
+  if (kind !== 'scrub' && treeSerial > 0) feedback.stale();
   if (kind === 'edit' && stage === 'grow') frameNext = true;
   setHooks({ status: 'growing' });
   const message = { state };
@@ -245,7 +279,33 @@ function scheduleUpdate(stage = 'grow') {
   notices.set('hash', []);
   clearTimeout(debounceTimer);
   setHooks({ status: 'pending' });
-  debounceTimer = setTimeout(() => sendUpdate('edit'), 250);
+  if (treeSerial > 0) feedback.stale();
+  debounceTimer = setTimeout(flushEdit, 250);
+}
+
+// Sends the pending edit, or queues it while a young tree request is in flight (the reply, or
+// the request's COALESCE_MS age, sends it).
+function flushEdit() {
+  if (!editPending) return;
+  const age = performance.now() - inFlightSince;
+  if (inFlight && age < COALESCE_MS) {
+    if (!editQueued) bumpHook('editsCoalesced');
+    editQueued = true;
+    clearTimeout(queueTimer);
+    queueTimer = setTimeout(flushEdit, COALESCE_MS - age);
+    return;
+  }
+  sendUpdate('edit');
+}
+
+// The latest request was answered (a tree or an error): send the queued edit, if any. True when
+// one was sent.
+function replyArrived() {
+  inFlight = false;
+  clearTimeout(queueTimer);
+  if (!editQueued || !editPending) return false;
+  sendUpdate('edit');
+  return true;
 }
 
 // The hash of the state `base` (the core's text) with the camera appended.
@@ -272,12 +332,23 @@ function formatStats(s) {
 function select(id) {
   selected = Number.isInteger(id) ? id : null;
   renderer?.select(selected);
-  ui.cut.disabled = selected === null || shownYear < 1;
+  const refusal = selected === null ? '' : cutRefusal(selected, shownYear);
+  ui.cut.disabled = selected === null || refusal !== '';
   ui.selection.textContent = selected === null
-    ? 'Click a branch in the view to select it.'
-    : `Branch ${selected} selected: Cut (or the Delete key) removes it and everything above it after year ${shownYear}.`;
+    ? 'Click or tap a branch in the view to select it.'
+    : refusal || `Branch ${selected} selected: Cut (or the Delete key) removes it and everything above it after year ${shownYear}.`;
   setHooks({ selected: selected === null ? '' : selected });
   requestFrame();
+}
+
+// Opens the full table's row `key` (its section) and focuses it, so its help line shows.
+function openTableRow(key) {
+  const input = document.getElementById(`param-${key}`);
+  if (!input) return;
+  const details = input.closest('details');
+  if (details) details.open = true;
+  input.focus();
+  input.scrollIntoView({ block: 'center' });
 }
 
 // ---------------------------------------------------------------- worker replies
@@ -293,8 +364,10 @@ worker.on('ready', (msg) => {
   panel = new ParamPanel(ui.params, msg.paramTable, (spec, stage) => {
     showSun();
     ui.renderMode.value = String(Number(panel.values().render_mode) === 1 ? 1 : 0);
+    gettingStarted?.sync();
     scheduleUpdate(stage);
   });
+  gettingStarted = new GettingStarted($('getting-started'), msg.paramTable, ui.years, openTableRow);
   applyState(msg.decoded.state);
   notices.set('hash', msg.decoded.notices);
   if (camera.fromHash(msg.decoded.state.camera)) frameNext = false;
@@ -332,6 +405,8 @@ worker.on('tree', (msg) => {
   showCancel(false);
   if (history_.base) lastGood = { hash: history_.base, state: latestRequest.state };
   notices.set('error', '');
+  feedback.showError('');
+  exportGuard.update(msg.stats, msg.mesh);
   notices.set('prunes', msg.stats.idle_prunes || []);
   panel.markError('');
   ui.stats.textContent = formatStats(msg.stats);
@@ -340,7 +415,7 @@ worker.on('tree', (msg) => {
   ui.progressBar.hidden = true;
   shownYear = msg.stats.years;
   if (renderer) {
-    renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid);
+    renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid).then(requestFrame);
     renderer.leafLength = Number(panel.values().leaf_size) / 100 || 0.05;
     lastBounds = msg.stats.bounds;
     if (frameNext) {
@@ -367,6 +442,12 @@ worker.on('tree', (msg) => {
   });
   if (windPlaying) worker.post('wind', { play: true });  // sway the new tree (or new wind) too
   else showWind(null);
+  // "stale" stays while a newer edit waits (sent now if it was queued behind this tree); else it
+  // goes with the first frame of this tree.
+  const resent = replyArrived();
+  if (!resent && !editPending) {
+    if (renderer) freshOnDraw = true; else feedback.fresh();
+  }
 });
 
 worker.on('drawList', (msg) => {
@@ -379,7 +460,7 @@ worker.on('drawList', (msg) => {
 });
 
 worker.on('pose', (msg) => {
-  if (!windPlaying || !renderer) {
+  if (!windPlaying || !renderer || renderer.uploading) {  // no poses for a tree not yet in place
     worker.post('poseDone');
     return;
   }
@@ -406,9 +487,12 @@ worker.on('error', (msg) => {
   showCancel(false);
   notices.set('error', msg.message);
   panel?.markError(msg.message);
+  feedback.showError(msg.message);
+  if (treeSerial === 0) feedback.fresh();  // no tree on screen to call stale
   ui.progress.textContent = '';
   ui.progressBar.hidden = true;
   setHooks({ status: 'error' });
+  replyArrived();  // a queued edit goes now (it may fix the error)
 });
 
 // ---------------------------------------------------------------- controls
@@ -475,7 +559,13 @@ ui.canvas.addEventListener('pointerup', (e) => {
 });
 
 function cutSelected() {
-  if (selected === null || shownYear < 1) return;
+  if (selected === null) return;
+  const refusal = cutRefusal(selected, shownYear);
+  if (refusal) {
+    ui.selection.textContent = refusal;
+    bumpHook('cutsRefused');
+    return;
+  }
   const prune = `${shownYear}:b${selected}`;
   if (!currentPrunes.includes(prune)) currentPrunes.push(prune);
   showPrunes();
@@ -513,7 +603,7 @@ function showWind(pose) {
   }
   const speed = pose.wind > 0 ? `${pose.wind.toFixed(1)} m/s` : 'calm';
   ui.windInfo.textContent = `t = ${pose.time.toFixed(1)} s · wind ${speed}`;
-  setHooks({ swayTime: pose.time.toFixed(3) });
+  setHooks({ swayTime: pose.time.toFixed(3), swayWind: pose.wind.toFixed(2) });
 }
 function setWind(play) {
   windPlaying = play;

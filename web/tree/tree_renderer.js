@@ -3,6 +3,7 @@
 // atlas plus lines. Shaders (GLSL ES 3.00) are shaders/tree/*, including shaders/common/*.
 // Does not: grow or mesh trees (the worker does), keep page state, or own the camera.
 import { beginFrame, createContext, finishGpu, resizeCanvas, sunDirection } from '../gl/context.js';
+import { BufferPool } from '../gl/buffer_pool.js';
 import { floatAttribute, staticBuffer, uintAttribute } from '../gl/buffers.js';
 import { Ground } from '../gl/ground.js';
 import { PickTarget } from '../gl/pick.js';
@@ -68,6 +69,34 @@ export function paintAtlas(gl, program, hybrid, fb, texture, light) {
   return triangles;
 }
 
+// Meshes above this many bytes are uploaded in parts of UPLOAD_PART_BYTES, one part per task.
+export const UPLOAD_PARTS_ABOVE = 4 * 1024 * 1024;
+export const UPLOAD_PART_BYTES = 1024 * 1024;
+
+// Creates one buffer per plan item ({key, bytes, target}) and fills it UPLOAD_PART_BYTES at a time,
+// yielding to the event loop between parts; resolves to Map(key -> buffer) (early, with what it
+// has, once cancelled() is true).
+async function uploadInParts(gl, plan, cancelled) {
+  const buffers = new Map();
+  const yieldTask = () => new Promise((resolve) => setTimeout(resolve, 0));
+  for (const { key, bytes, target } of plan) {
+    const u8 = ArrayBuffer.isView(bytes) ? new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength) : new Uint8Array(bytes);
+    const buffer = gl.createBuffer();
+    buffers.set(key, buffer);
+    gl.bindVertexArray(null);  // an element buffer bound with a vertex array bound would join it
+    gl.bindBuffer(target, buffer);
+    gl.bufferData(target, u8.byteLength, gl.STATIC_DRAW);
+    for (let offset = 0; offset < u8.byteLength; offset += UPLOAD_PART_BYTES) {
+      if (cancelled()) return buffers;
+      gl.bindVertexArray(null);
+      gl.bindBuffer(target, buffer);
+      gl.bufferSubData(target, offset, u8.subarray(offset, Math.min(u8.byteLength, offset + UPLOAD_PART_BYTES)));
+      await yieldTask();
+    }
+  }
+  return buffers;
+}
+
 export class Renderer {
   // Throws an Error with a readable message when WebGL2 is missing.
   constructor(canvas) {
@@ -80,6 +109,7 @@ export class Renderer {
     this.extent = 20;
     this.setSun(60, 0);
     this.lastFrame = { triangles: 0, drawCalls: 0, cpuMs: 0 };
+    this.pool = new BufferPool(gl);  // the tree's mesh buffers, reused tree after tree
     this.poseTexture = gl.createTexture();
     this.poseNodes = 0;
     this.wind = 0;         // wind speed (m/s) at the tree now: leaf flutter
@@ -133,13 +163,52 @@ export class Renderer {
   // (bark also has branchIds: Uint32 per vertex; leaves uvs); bounds in metres; swayNodes: node
   // points of the sway skin (poses start at rest); hybrid: the worker's card-atlas geometry when the
   // state's render_mode is 1 (then render() draws the draw list of setDrawList), else null.
+  // A big mesh (more than UPLOAD_PARTS_ABOVE bytes) is uploaded in parts of UPLOAD_PART_BYTES, one
+  // part per task, into new buffers while the old tree stays drawn (issue 17: one upload of a
+  // 15-year sakura blocked the main thread 3.7 s in Chromium on SwiftShader, with bufferData and
+  // with bufferSubData alike); `uploading` is true until the new tree is in place. Returns a
+  // promise that resolves then (at once for small meshes); a newer setTree drops an older upload.
   setTree(mesh, bounds, swayNodes = 0, hybrid = null) {
+    const serial = (this.treeUploads = (this.treeUploads || 0) + 1);
+    const plan = [];
+    for (const name of Object.keys(PARTS)) {
+      const data = mesh[name];
+      if (!data || data.indices.byteLength === 0) continue;
+      for (const [attr, bytes] of Object.entries(data)) {
+        if (attr === 'branchParents' || !bytes || bytes.byteLength === 0) continue;
+        plan.push({ key: `${name}.${attr}`, bytes, target: attr === 'indices' ? this.gl.ELEMENT_ARRAY_BUFFER : this.gl.ARRAY_BUFFER });
+      }
+      // The selection highlight starts at zero (one float per vertex).
+      if (data.branchIds) plan.push({ key: `${name}.highlight`, bytes: new Float32Array(data.branchIds.byteLength / 4), target: this.gl.ARRAY_BUFFER });
+    }
+    const total = plan.reduce((n, p) => n + p.bytes.byteLength, 0);
+    if (total <= UPLOAD_PARTS_ABOVE) {
+      this.uploading = false;
+      this.#installTree(mesh, bounds, swayNodes, hybrid, null);
+      return Promise.resolve(true);
+    }
+    this.uploading = true;
+    return uploadInParts(this.gl, plan, () => serial !== this.treeUploads).then((buffers) => {
+      if (serial !== this.treeUploads) {  // superseded: a newer tree is on its way
+        buffers.forEach((b) => this.gl.deleteBuffer(b));
+        return false;
+      }
+      this.#installTree(mesh, bounds, swayNodes, hybrid, buffers);
+      this.uploading = false;
+      return true;
+    });
+  }
+
+  #installTree(mesh, bounds, swayNodes, hybrid, uploaded) {
     const gl = this.gl;
+    const keepSelection = this.selected;
     this.setRestPoses(swayNodes);
     this.setHybrid(hybrid);
+    // The buffers are the pool's (reused with bufferSubData when the new tree fits: a smaller tree
+    // allocates nothing); only the vertex arrays are new.
     for (const part of Object.values(this.parts)) {
       gl.deleteVertexArray(part.vao);
-      part.buffers.forEach((b) => gl.deleteBuffer(b));
+      part.buffers.forEach((b) => { if (!this.pool.owns(b)) gl.deleteBuffer(b); });
     }
     this.parts = {};
     this.highlight = null;
@@ -148,40 +217,44 @@ export class Renderer {
       if (!data || data.indices.byteLength === 0) continue;
       const vao = gl.createVertexArray();
       gl.bindVertexArray(vao);
-      const buffers = [staticBuffer(gl, data.positions), staticBuffer(gl, data.normals)];
+      const upload = (attr, bytes, target = gl.ARRAY_BUFFER) => {
+        const ready = uploaded?.get(`${name}.${attr}`);  // uploaded in parts already
+        if (!ready) return this.pool.upload(`${name}.${attr}`, bytes, target);
+        gl.bindBuffer(target, ready);
+        return ready;
+      };
+      const buffers = [upload('positions', data.positions), upload('normals', data.normals)];
       floatAttribute(gl, 0, buffers[0], 3);
       floatAttribute(gl, 1, buffers[1], 3);
       // Sway skin: node point (uint) and eq. 3.15 weight per vertex; uv for the leaf flutter.
       const vertices = data.positions.byteLength / 12;
       if (data.joints && data.joints.byteLength === vertices * 4) {
-        const joints = staticBuffer(gl, data.joints), weights = staticBuffer(gl, data.weights);
+        const joints = upload('joints', data.joints), weights = upload('weights', data.weights);
         uintAttribute(gl, 4, joints, 1);
         floatAttribute(gl, 5, weights, 1);
         buffers.push(joints, weights);
       }
       if (data.uvs && data.uvs.byteLength === vertices * 8) {
-        const uvs = staticBuffer(gl, data.uvs);
+        const uvs = upload('uvs', data.uvs);
         floatAttribute(gl, 6, uvs, 2);
         buffers.push(uvs);
       }
       if (data.branchIds && data.branchIds.byteLength === data.positions.byteLength / 3) {
-        const buffer = staticBuffer(gl, data.branchIds);
+        const buffer = upload('branchIds', data.branchIds);
         uintAttribute(gl, 2, buffer, 1);
         buffers.push(buffer);
         // Selection highlight per vertex (select() fills it).
         this.branchIds = new Uint32Array(data.branchIds);
         this.branchParents = new Int32Array(data.branchParents || new ArrayBuffer(0));
         this.highlight = new Float32Array(this.branchIds.length);
-        this.highlightBuffer = gl.createBuffer();
-        gl.bindBuffer(gl.ARRAY_BUFFER, this.highlightBuffer);
-        gl.bufferData(gl.ARRAY_BUFFER, this.highlight, gl.DYNAMIC_DRAW);
+        this.highlightBuffer = upload('highlight', this.highlight);
         gl.enableVertexAttribArray(3);
         gl.vertexAttribPointer(3, 1, gl.FLOAT, false, 0, 0);
         buffers.push(this.highlightBuffer);
       } else {
         gl.disableVertexAttribArray(2);
       }
-      buffers.push(staticBuffer(gl, data.indices, gl.ELEMENT_ARRAY_BUFFER));
+      buffers.push(upload('indices', data.indices, gl.ELEMENT_ARRAY_BUFFER));
       gl.bindVertexArray(null);
       this.parts[name] = { vao, buffers, count: data.indices.byteLength / 4, picking: Boolean(data.branchIds) };
     }
@@ -190,6 +263,11 @@ export class Renderer {
     this.crownHeight = Math.max(0, 0.6 * max[1]);
     this.shadowRadius = Math.max(0.3, 0.5 * Math.max(max[0] - min[0], max[2] - min[2]));
     this.extent = Math.max(6, 4 * Math.max(max[1] - min[1], this.shadowRadius * 2));
+    // Uploaded buffers no part took (an attribute of the wrong length) are not kept.
+    const used = new Set(Object.values(this.parts).flatMap((part) => part.buffers));
+    for (const b of uploaded?.values() || []) if (!used.has(b)) gl.deleteBuffer(b);
+    this.highlightMarked = false;  // the new highlight buffer is all zero
+    if (keepSelection !== NONE && keepSelection !== undefined) this.select(keepSelection);
   }
 
   // Hybrid mode (thesis 4.2): paints the card atlas once per tree from the worker's clip-space
@@ -437,6 +515,9 @@ export class Renderer {
   select(id) {
     this.selected = Number.isInteger(id) && id >= 0 ? id : NONE;
     if (!this.highlight || !this.parts.bark) return;
+    // Nothing marked and nothing to mark: no upload (a big tree's highlight is megabytes).
+    if (this.selected === NONE && !this.highlightMarked) return;
+    this.highlightMarked = this.selected !== NONE;
     const parents = this.branchParents;
     const mark = new Float32Array(parents.length);  // per branch: 0, 0.5 above, 1 selected
     if (this.selected !== NONE && this.selected < parents.length) {

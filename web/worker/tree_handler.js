@@ -118,6 +118,23 @@ export function createHandler(Module, ctx) {
   const sways = new Map();   // client -> {session, origins, clock, clockName, base, steps, waiting, timer}
   const clocks = new Map();  // name -> {start}: wall-clock origin shared by the sways started with it
 
+  // The thesis's gust (3.5) starts suddenly from still air at gust_on (1 s by default), and the
+  // simulator starts at rest at t = 0: run live from t = 0, Blow showed nothing for that second.
+  // The still air is stepped through at once instead (the same simulation, the same bits as a run
+  // from 0), so the first pose on screen is the first step of the gust. Returns the steps skipped
+  // (at most MAX_STILL_AIR_STEPS; none in calm air). docs/sway-model.md, "In the page".
+  const MAX_STILL_AIR_STEPS = 600;
+  function skipStillAir(session, state) {
+    const speed = Number(state?.params?.wind_speed);
+    if (Number.isFinite(speed) && speed <= 0) return 0;  // calm: no gust to wait for
+    let skipped = 0;
+    while (skipped < MAX_STILL_AIR_STEPS && session.swayWindSpeed() === 0) {
+      session.swayStep(1);
+      skipped += 1;
+    }
+    return skipped;
+  }
+
   function stopWind(client) {
     const sway = sways.get(client);
     if (!sway) return;
@@ -133,7 +150,8 @@ export function createHandler(Module, ctx) {
   // clock (and its slips), so the unique trees of a grove stay at the same simulated time.
   function startWind(client, origins, clockName) {
     stopWind(client);
-    const session = finished.get(client)?.session;
+    const last = finished.get(client);
+    const session = last?.session;
     if (!session) return;
     const at = origins ? Array.from(origins, Number) : null;
     const error = at ? session.swayStartAt(at) : session.swayStart();
@@ -141,6 +159,7 @@ export function createHandler(Module, ctx) {
       post({ type: 'error', client, message: error });
       return;
     }
+    const skipped = skipStillAir(session, last.state);
     let clock = typeof clockName === 'string' ? clocks.get(clockName) : null;
     if (!clock) {
       clock = { start: performance.now() };
@@ -148,7 +167,7 @@ export function createHandler(Module, ctx) {
     }
     // Simulated time 0 is at the clock's start: a sway joining a running clock catches up, and when
     // it is more than 8 steps behind, the shared clock slips back to it (the others wait).
-    const sway = { session, origins: at, clock, clockName, base: 0, steps: 0, waiting: false, timer: 0 };
+    const sway = { session, state: last.state, origins: at, clock, clockName, base: 0, steps: 0, skipped, waiting: false, timer: 0 };
     sways.set(client, sway);
     windTick(client, sway);
   }
@@ -168,9 +187,10 @@ export function createHandler(Module, ctx) {
         if (due > 8) sway.clock.start += (due - 8) * 1000 * dt;  // too slow: let the clock slip, not pile up
         if (time >= session.swayDuration()) {  // the gust schedule is over: again from rest
           if (sway.origins) session.swayStartAt(sway.origins); else session.swayStart();
+          sway.skipped = skipStillAir(session, sway.state);
           sway.base += sway.steps;
           sway.steps = 0;
-          time = 0;
+          time = sway.skipped * dt;
         }
         const poses = copyView(session.buffers('sway').poses);
         sway.waiting = true;

@@ -1,0 +1,101 @@
+// The tree page's "Getting started" panel (issue 17 item 8): what the tree is and what to try
+// first, in plain words, and a small group of the most effective controls named for what they do.
+// The group is generated FROM THE TABLE the worker sends: its rows with a `simple` name (the core
+// adds them from core/tree/tree_simple.cpp), plus Age, which is the state's Years field.
+// Each control writes its table row's field (or Years) and fires that field's own input event, so
+// an edit here is exactly an edit of the row; the full table below keeps the thesis's names.
+// Does not: hold a list of parameters, check values, or send anything itself.
+import { stepOf } from '../shell/param_panel.js';
+
+function el(tag, attrs = {}, text) {
+  const node = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs)) node.setAttribute(k, v);
+  if (text !== undefined) node.textContent = text;
+  return node;
+}
+
+// The rows of `paramTable` in the group, in table order.
+export const simpleRows = (paramTable) => paramTable.filter((spec) => typeof spec.simple === 'string' && spec.simple);
+
+export class GettingStarted {
+  // container: an element to fill; paramTable: the worker's table; years: the Years input;
+  // openRow(key): shows a row of the full table (opens its section, focuses it).
+  constructor(container, paramTable, years, openRow) {
+    this.controls = [];
+    const box = el('details', { class: 'getting-started', open: '' });
+    box.append(el('summary', {}, 'Getting started'));
+    const intro = el('div', { class: 'intro' });
+    intro.append(
+      el('p', {}, 'This is a tree grown year by year from a seedling: each spring its buds open into '
+        + 'shoots, the shoots that get more light grow longer, and shaded ones die back, as in '
+        + 'Kanayama\'s growth model.'),
+      el('p', {}, 'Try first: pick a Preset, drag Age to watch it grow, press Blow for wind, and '
+        + 'click or tap a branch, then Cut, to prune it. Undo takes any step back.'));
+    box.append(intro);
+    const group = el('div', { class: 'simple-controls', role: 'group', 'aria-label': 'Main controls' });
+    group.append(this.#control({
+      key: 'years', label: 'Age', unit: 'years', min: Number(years.min), max: Number(years.max), step: 1,
+      help: 'How many years the tree has grown.', target: years, row: 'Years',
+    }));
+    for (const spec of simpleRows(paramTable)) {
+      const target = document.getElementById(`param-${spec.key}`);
+      if (!target) continue;
+      group.append(this.#control({
+        key: spec.key, label: spec.simple, unit: spec.unit, min: spec.min, max: spec.max, step: stepOf(spec),
+        help: spec.simple_help || spec.help, target,
+        row: [spec.key, spec.symbol].filter(Boolean).join(', '), openRow: () => openRow(spec.key),
+      }));
+    }
+    box.append(group);
+    box.append(el('p', { class: 'help-text' }, 'Every setting, under the names of the thesis, is in the '
+      + 'full table below.'));
+    container.append(box);
+    this.root = box;
+  }
+
+  #control({ key, label, unit, min, max, step, help, target, row, openRow }) {
+    const id = `simple-${key}`;
+    const wrap = el('div', { class: 'simple', 'data-for-key': key });
+    const head = el('label', { for: id });
+    head.append(el('span', { class: 'simple-name' }, label));
+    if (unit) head.append(el('span', { class: 'symbol' }, ` (${unit})`));
+    const helpId = `simple-help-${key}`;
+    const range = el('input', { type: 'range', min, max, step, tabindex: '-1', 'aria-hidden': 'true', class: 'slider' });
+    const number = el('input', { id, type: 'number', min, max, step: 'any', 'aria-describedby': helpId,
+      inputmode: step === 1 ? 'numeric' : 'decimal' });
+    const write = (value) => {
+      target.value = value;
+      target.dispatchEvent(new Event('input', { bubbles: true }));
+    };
+    range.addEventListener('input', () => {
+      number.value = range.value;
+      write(range.value);
+    });
+    number.addEventListener('input', () => {
+      if (number.value !== '' && Number.isFinite(Number(number.value))) range.value = number.value;
+      write(number.value);
+    });
+    const controls = el('div', { class: 'controls' });
+    controls.append(range, number);
+    const text = el('p', { id: helpId, class: 'simple-help' }, help);
+    if (openRow) {
+      const link = el('button', { type: 'button', class: 'row-link', title: `Show ${key} in the full table` }, `table: ${row}`);
+      link.addEventListener('click', openRow);
+      text.append(' ', link);
+    } else {
+      text.append(` (the ${row} field below)`);
+    }
+    wrap.append(head, controls, text);
+    this.controls.push({ key, target, range, number });
+    return wrap;
+  }
+
+  // Shows the values of the fields the controls are bound to (after a state is applied or any edit).
+  sync() {
+    for (const c of this.controls) {
+      if (document.activeElement === c.number) continue;  // the user is typing here
+      c.number.value = c.target.value;
+      if (c.target.value !== '' && Number.isFinite(Number(c.target.value))) c.range.value = c.target.value;
+    }
+  }
+}
