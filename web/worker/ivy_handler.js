@@ -43,11 +43,15 @@ export function createHandler(Module, ctx) {
   }
 
   // Sends the support's description and triangles (once per support change).
-  function sendSupport(id, client, entry) {
+  // id: the 'mesh' request it answers; an update's support goes without an id (request: its id), so
+  // it reaches the page even when a newer update supersedes that one (the lab keeps the support,
+  // and the newer update sends none).
+  function sendSupport(id, client, entry, { asReply = true } = {}) {
     const transfer = [];
     const support = JSON.parse(entry.lab.supportJson());
     const buffers = takeBuffers(entry.lab.buffers('support'), transfer);
-    post({ type: 'support', id, client, support, buffers, loadMs: entry.loadMs ?? null }, transfer);
+    const envelope = asReply ? { id } : { request: id };
+    post({ type: 'support', ...envelope, client, support, buffers, loadMs: entry.loadMs ?? null }, transfer);
   }
 
   async function update(msg, client) {
@@ -74,7 +78,7 @@ export function createHandler(Module, ctx) {
         return;
       }
       entry.support = supportKey;
-      sendSupport(id, client, entry);
+      sendSupport(id, client, entry, { asReply: false });
     }
     const grown = { ...state };
     if (wantMesh) delete grown.scene;  // the dropped mesh is not a built-in scene
