@@ -144,9 +144,18 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
     const std::string name = !o.scene.empty()      ? o.scene
                              : state.scene.empty() ? std::string("cubes4")
                                                    : state.scene;
-    Result<ivy::IvyScene> s = ivy::MakeIvyScene(name);
-    if (!s.ok()) Fail(s.status());
-    scene = std::move(s).value();
+    if (name == ivy::kTreeScene) {  // the page's tree scene: tree= and tree_years= of the state
+      Result<ivy::IvyScene> s = TreeSupportScene(state.tree, state.tree_years);
+      if (!s.ok()) {
+        const char* flag = !o.scene.empty() ? "--scene" : !o.url.empty() ? "--url" : "--params";
+        Fail(Status::Error(flag, s.status().message()));
+      }
+      scene = std::move(s).value();
+    } else {
+      Result<ivy::IvyScene> s = ivy::MakeIvyScene(name);
+      if (!s.ok()) Fail(s.status());
+      scene = std::move(s).value();
+    }
   }
   if (levels > 0 && !scene.free) {
     double after = static_cast<double>(scene.mesh.triangle_count()) * std::pow(4.0, levels);
@@ -255,7 +264,7 @@ void AddIvyCommands(CLI::App& app, CommandList& commands) {
       "grow", "Grow ivy on a built-in scene or a mesh; print --stats or write --out");
   grow->add_option("--scene", o->scene,
                    "Built-in support: cubes4 (default), wall, overhang, stairs, pillar, sphere, "
-                   "free (see 'niwa ivy scenes')");
+                   "free (see 'niwa ivy scenes'), or tree (the state's tree= and tree_years=)");
   grow->add_option("--mesh", o->mesh, "Support mesh file: .glb, .gltf or .obj");
   grow->add_option("--tree-preset", o->tree_preset,
                    "Climb a Niwa tree's bark ('niwa presets tree'; default ivy preset: metric)");

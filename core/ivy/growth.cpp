@@ -533,7 +533,8 @@ class Grower {
 }  // namespace
 
 Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& seeds,
-                      const IvyParams& params, int steps, uint64_t seed, GrowLog* log) {
+                      const IvyParams& params, int steps, uint64_t seed, GrowLog* log,
+                      const StepObserver& on_step) {
   GrowLog local;
   if (log == nullptr) log = &local;
   *log = GrowLog();
@@ -566,6 +567,7 @@ Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& see
   for (int s = 1; s <= steps; ++s) {
     g.Step(s);
     log->steps_run = s;
+    if (on_step) on_step(s, steps);
     if (!g.Alive()) {
       log->extinct_step = s;
       break;

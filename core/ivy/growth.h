@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <glm/vec3.hpp>
 #include <vector>
 
@@ -35,8 +36,12 @@ constexpr int kMaxSeedPoints = 64;
 // Grows one plant from every seed point for `steps` steps (stops early when no A or D is left).
 // Errors: steps outside [0, 10000], no seed point, a seed farther than d from every face ("seed
 // point 1: 35.2 px from the nearest face; must be within d = 20"), invalid parameters.
+// on_step (optional) is called after every step with (step, steps): progress for a page's worker;
+// it cannot change the growth.
+using StepObserver = std::function<void(int step, int steps)>;
 Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& seeds,
-                      const IvyParams& params, int steps, uint64_t seed, GrowLog* log);
+                      const IvyParams& params, int steps, uint64_t seed, GrowLog* log,
+                      const StepObserver& on_step = {});
 
 // The geometric normal of a triangle (unit, from its winding).
 glm::dvec3 TriangleNormal(const geom::TriMesh& mesh, uint32_t triangle);

@@ -35,17 +35,38 @@ Status SetIvySteps(double steps, IvyState* state) {
 Status SetIvyScene(std::string_view name, IvyState* state) {
   if (!name.empty()) {
     const std::vector<std::string>& names = IvySceneNames();
-    bool known = false;
+    bool known = name == kTreeScene;
     std::string list;
     for (const std::string& n : names) {
       known = known || n == name;
       list += (list.empty() ? "" : ", ") + n;
     }
+    list += std::string(", ") + kTreeScene;
     if (!known) {
       return Status::Error("scene", "'" + Printable(name) + "' is unknown; must be one of " + list);
     }
   }
   state->scene = std::string(name);
+  return Status::Ok();
+}
+
+Status SetIvyTree(std::string_view name, IvyState* state) {
+  bool spelled = !name.empty() && name.size() <= 40;
+  for (char c : name) {
+    spelled = spelled && ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '_');
+  }
+  if (!spelled) {
+    return Status::Error("tree", "'" + Printable(name) +
+                                     "' is not a tree preset name; must be 1..40 of a-z 0-9 - _ "
+                                     "('niwa presets tree')");
+  }
+  state->tree = std::string(name);
+  return Status::Ok();
+}
+
+Status SetIvyTreeYears(double years, IvyState* state) {
+  NIWA_RETURN_IF_ERROR(CheckValue("tree_years", years, 1, kMaxTreeYears, true));
+  state->tree_years = static_cast<int>(years);
   return Status::Ok();
 }
 
@@ -132,6 +153,15 @@ Status ApplyIvyStateJson(const std::string& text, IvyState* state) {
     if (!j["scene"].is_string()) return Status::Error("scene", "must be a scene name");
     NIWA_RETURN_IF_ERROR(SetIvyScene(j["scene"].get<std::string>(), &next));
   }
+  if (j.contains("tree")) {
+    if (!j["tree"].is_string()) return Status::Error("tree", "must be a tree preset name");
+    NIWA_RETURN_IF_ERROR(SetIvyTree(j["tree"].get<std::string>(), &next));
+  }
+  if (j.contains("tree_years")) {
+    Result<double> v = Number(j["tree_years"], "tree_years");
+    if (!v.ok()) return v.status();
+    NIWA_RETURN_IF_ERROR(SetIvyTreeYears(*v, &next));
+  }
   if (j.contains("seed_points")) {
     if (!j["seed_points"].is_string()) {
       return Status::Error("seed_points", "must be text X,Y,Z;X,Y,Z...");
@@ -139,7 +169,8 @@ Status ApplyIvyStateJson(const std::string& text, IvyState* state) {
     NIWA_RETURN_IF_ERROR(SetIvySeedPoints(j["seed_points"].get<std::string>(), &next));
   }
   NIWA_RETURN_IF_ERROR(ApplyParamsJson(
-      text, &next.params, {"preset", "seed", "steps", "name", "scene", "seed_points"}));
+      text, &next.params,
+      {"preset", "seed", "steps", "name", "scene", "seed_points", "tree", "tree_years"}));
   *state = next;
   return Status::Ok();
 }
@@ -159,16 +190,19 @@ void ApplyIvyHash(std::string_view hash, std::string_view prefix, IvyState* stat
   }
   for (const auto& [key, value] : pairs) {
     if (key == pre + "preset") continue;
-    if (key == pre + "seed" || key == pre + "steps") {
+    if (key == pre + "seed" || key == pre + "steps" || key == pre + "tree_years") {
       std::optional<double> x = ParseNumber(value);
       Status s = !x ? Status::Error(key, "'" + Printable(value) + "' is not a number")
-                 : key == pre + "seed" ? SetIvySeed(*x, state)
-                                       : SetIvySteps(*x, state);
+                 : key == pre + "seed"  ? SetIvySeed(*x, state)
+                 : key == pre + "steps" ? SetIvySteps(*x, state)
+                                        : SetIvyTreeYears(*x, state);
       if (!s.ok()) notices->push_back(Printable(key) + ": " + s.message() + "; dropped");
       continue;
     }
-    if (key == pre + "scene" || key == pre + "at") {
-      Status s = key == pre + "scene" ? SetIvyScene(value, state) : SetIvySeedPoints(value, state);
+    if (key == pre + "scene" || key == pre + "at" || key == pre + "tree") {
+      Status s = key == pre + "scene" ? SetIvyScene(value, state)
+                 : key == pre + "at"  ? SetIvySeedPoints(value, state)
+                                      : SetIvyTree(value, state);
       if (!s.ok()) notices->push_back(Printable(key) + ": " + s.message() + "; dropped");
       continue;
     }
@@ -185,6 +219,10 @@ std::string EncodeIvyHash(const IvyState& state, std::string_view prefix) {
                     "seed=" + std::to_string(state.seed) + "&" + pre +
                     "steps=" + std::to_string(state.steps);
   if (!state.scene.empty()) out += "&" + pre + "scene=" + state.scene;
+  if (state.scene == kTreeScene) {
+    out += "&" + pre + "tree=" + state.tree + "&" + pre +
+           "tree_years=" + std::to_string(state.tree_years);
+  }
   if (!state.seed_points.empty()) out += "&" + pre + "at=" + FormatSeedPoints(state.seed_points);
   Result<IvyParams> base = IvyPreset(state.preset);
   out += EncodeChangedParams(state.params, base.ok() ? *base : IvyParams(), prefix);

@@ -16,6 +16,10 @@
 namespace niwa::ivy {
 
 constexpr double kMaxIvySeed = 4294967295.0;
+// The scene name of "a Niwa tree": its bark is grown by the caller (the CLI, the page's bindings:
+// core/tree/bark_support) from tree and tree_years; core/ivy never includes core/tree.
+constexpr const char* kTreeScene = "tree";
+constexpr double kMaxTreeYears = 100;  // the tree study's kMaxYears (core/tree/tree.h)
 
 struct IvyState {
   std::string preset = "paper";
@@ -27,6 +31,10 @@ struct IvyState {
   // in scene units (empty = the scene's first named seed).
   std::string scene;
   std::vector<glm::dvec3> seed_points;
+  // With scene == kTreeScene: the tree preset ("niwa presets tree") and its age in years. Only the
+  // spelling is checked here; the caller that grows the tree names an unknown preset.
+  std::string tree = "sakura";
+  int tree_years = 10;
 };
 
 // Each setter checks its value and leaves the state unchanged on error (field: "preset", "seed",
@@ -34,15 +42,19 @@ struct IvyState {
 Status SetIvyPreset(std::string_view name, IvyState* state);  // resets params to the preset's
 Status SetIvySeed(double seed, IvyState* state);              // whole number in [0, 4294967295]
 Status SetIvySteps(double steps, IvyState* state);            // whole number in [0, 10000]
-Status SetIvyScene(std::string_view name, IvyState* state);   // a built-in scene name or ""
+Status SetIvyScene(std::string_view name, IvyState* state);   // a built-in scene, "tree" or ""
+// A tree preset's name: 1..40 of [a-z0-9_-] (the tree study checks that it exists).
+Status SetIvyTree(std::string_view name, IvyState* state);
+Status SetIvyTreeYears(double years, IvyState* state);  // whole number in [1, kMaxTreeYears]
 // "X,Y,Z;X,Y,Z" (at most kMaxSeedPoints points, each coordinate in [-1e30, 1e30]); "" = none.
 Status SetIvySeedPoints(std::string_view text, IvyState* state);
 // The seed points as SetIvySeedPoints reads them (shortest round-trip numbers).
 std::string FormatSeedPoints(const std::vector<glm::dvec3>& points);
 
-// Applies {preset, seed, steps, scene, seed_points: "X,Y,Z;..", params: {key: value}} (or the keys
-// at the top level) onto state; a "preset" resets the parameters first. Strict: the first bad field
-// is the error, state unchanged. The cross-row checks (t1 < t2, ...) are ValidateIvyParams's.
+// Applies {preset, seed, steps, scene, seed_points: "X,Y,Z;..", tree, tree_years, params: {key:
+// value}} (or the keys at the top level) onto state; a "preset" resets the parameters first.
+// Strict: the first bad field is the error, state unchanged. The cross-row checks (t1 < t2, ...)
+// are ValidateIvyParams's.
 Status ApplyIvyStateJson(const std::string& text, IvyState* state);
 
 // Applies "#preset=paper&seed=3&steps=50&scene=wall&at=0,10,10&t1=0.3" (keys prefixed with
@@ -51,8 +63,8 @@ Status ApplyIvyStateJson(const std::string& text, IvyState* state);
 // clamped or dropped with a notice (notices are printable one-liners).
 void ApplyIvyHash(std::string_view hash, std::string_view prefix, IvyState* state,
                   std::vector<std::string>* notices);
-// The hash of a state: preset, seed, steps, scene and at (when set), and every parameter that
-// differs from the preset.
+// The hash of a state: preset, seed, steps, scene and at (when set), tree and tree_years (on the
+// tree scene), and every parameter that differs from the preset.
 std::string EncodeIvyHash(const IvyState& state, std::string_view prefix = "");
 
 }  // namespace niwa::ivy

@@ -20,6 +20,13 @@ check(JSON.stringify(withoutMs(ta)) === JSON.stringify(withoutMs(tb)) && ta.inte
   `--tree-preset sakura --tree-years 6: --stats native == WASM (${ta.tri_count} bark triangles, ${ta.internodes} internodes, rise ${ta.rise.toFixed(3)} m)`);
 check(readFileSync(join(dir, 'tree-n.json'), 'utf8') === readFileSync(join(dir, 'tree-w.json'), 'utf8'), '--tree-preset .json identical');
 
+// The page's tree scene (--url scene=tree&tree=..&tree_years=..): native == WASM, and the same ivy
+// as --tree-preset (the page's link regrows it on either build).
+const byUrl = ['ivy', 'grow', '--url', 'preset=metric&seed=1&steps=50&scene=tree&tree=sakura&tree_years=6', '--stats'];
+const ua = JSON.parse(run(native, byUrl)), ub = JSON.parse(run(wasm, byUrl));
+check(JSON.stringify(withoutMs(ua)) === JSON.stringify(withoutMs(ub)) && JSON.stringify(withoutMs(ua)) === JSON.stringify(withoutMs(ta)),
+  `--url ..scene=tree&tree=sakura&tree_years=6: native == WASM == --tree-preset (${ua.internodes} internodes)`);
+
 // .svg byte for byte, for a small and a large (silhouette) support.
 for (const args of [['--scene', 'overhang', '--seed', '2'], ['--tree-preset', 'pine', '--tree-years', '5', '--svg-leaves', '0']]) {
   run(native, ['ivy', 'grow', ...args, '--out', join(dir, 'n.svg')]);

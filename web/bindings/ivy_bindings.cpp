@@ -12,11 +12,15 @@
 //   "buds"                       positions (Float32 xyz), kind (Float32: 0 A, 1 D, 2 Z, as at the
 //                                last step), birth (Float32: the step the bud was made)
 //   "glb"                        bytes (Uint8, after buildGlb)
-// Calls: loadScene(name) or loadMesh(bytes, name) -> ""/error, supportJson(); grow(stateJson) ->
+// Calls: loadScene(name), loadTree(preset, years) (a Niwa tree's bark, core/tree/bark_support, as
+// the CLI's --tree-preset) or loadMesh(bytes, name) -> ""/error, supportJson(); grow(stateJson) ->
 // ""/error, then statsJson(), buffers(..), modelJson(), lstring(), buildGlb(withSupport);
-// rayCast(ox, oy, oz, dx, dy, dz) -> {hit, point, normal, distance} on the support.
-// Does not: grow trees (the ivy page climbs built-in scenes and dropped meshes only), decode
-// Draco (web/mesh/mesh_import.js does before the bytes arrive), or keep more than one ivy.
+// rayCast(ox, oy, oz, dx, dy, dz) -> {hit, point, normal, distance} on the support;
+// setProgress(fn): fn(stage, done, total) is called during loadMesh ("read", then "bvh" with the
+// triangle count), loadTree ("tree", "bvh") and grow ("grow" after every step), so the worker can
+// post progress while the call runs (a big mesh); null stops it.
+// Does not: decode Draco (web/mesh/mesh_import.js does before the bytes arrive), or keep more than
+// one ivy.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
@@ -45,6 +49,7 @@
 #include "ivy/lstring.h"
 #include "ivy/scenes.h"
 #include "params/param_json.h"
+#include "tree/bark_support.h"
 
 namespace niwa {
 namespace {
@@ -141,7 +146,7 @@ std::string IvyScenesJson() {
   return out.dump();
 }
 
-// {preset, seed, steps, scene, seed_points, params} of a state.
+// {preset, seed, steps, scene, seed_points, tree, tree_years, params} of a state.
 ordered_json IvyStateObject(const ivy::IvyState& state) {
   ordered_json j;
   j["preset"] = state.preset;
@@ -149,6 +154,8 @@ ordered_json IvyStateObject(const ivy::IvyState& state) {
   j["steps"] = state.steps;
   j["scene"] = state.scene;
   j["seed_points"] = ivy::FormatSeedPoints(state.seed_points);
+  j["tree"] = state.tree;
+  j["tree_years"] = state.tree_years;
   j["params"] = ordered_json::parse(ParamsToJson(state.params, -1));
   return j;
 }
@@ -194,8 +201,32 @@ class IvyLab {
     return "";
   }
 
+  // The bark of tree preset `preset` grown `years` years (metres), seeded at the trunk foot as
+  // `niwa ivy grow --tree-preset` does: "" or one error line naming tree or tree_years.
+  std::string loadTree(const std::string& preset, double years) {
+    Progress("tree", 0, years);
+    Result<BarkSupport> bark = GrowBarkSupport(preset, years);
+    if (!bark.ok()) return bark.status().Line();
+    Progress("bvh", 0, static_cast<double>(bark->mesh.triangle_count()));
+    const auto t0 = Clock::now();  // ms_bvh: the support's BVH, not the tree's growth
+    scene_ = ivy::IvyScene{};
+    scene_.name = "tree:" + preset;
+    scene_.description = bark->description;
+    scene_.mesh = std::move(bark->mesh);
+    scene_.seeds.push_back({"trunk", bark->trunk_seed});
+    mesh_name_.clear();
+    attach_ = geom::TriMesh{};
+    obstacles_ = 0;
+    Prepare();
+    ms_bvh_ = Ms(t0, Clock::now());
+    return "";
+  }
+
+  void setProgress(emscripten::val fn) { progress_ = fn; }
+
   // A dropped .glb/.gltf/.obj (bytes; Draco already decoded): "" or one error line naming it.
   std::string loadMesh(const std::string& bytes, const std::string& name) {
+    Progress("read", 0, static_cast<double>(bytes.size()));
     io::MeshReadStats read;
     const bool obj = name.size() >= 4 && (name.compare(name.size() - 4, 4, ".obj") == 0 ||
                                           name.compare(name.size() - 4, 4, ".OBJ") == 0);
@@ -204,6 +235,7 @@ class IvyLab {
     if (!mesh.ok()) return mesh.status().Line();
     Status valid = geom::ValidateMesh(*mesh, name);
     if (!valid.ok()) return valid.Line();
+    Progress("bvh", 0, static_cast<double>(mesh->triangle_count()));
     const auto t0 = Clock::now();
     scene_ = ivy::IvyScene{};
     scene_.name = name;
@@ -275,8 +307,11 @@ class IvyLab {
       }
     }
     log_ = ivy::GrowLog{};
+    const ivy::StepObserver on_step = [this](int step, int steps) {
+      Progress("grow", step, steps);
+    };
     Result<ivy::IvyModel> model =
-        ivy::Grow(support, seeds, state.params, state.steps, state.seed, &log_);
+        ivy::Grow(support, seeds, state.params, state.steps, state.seed, &log_, on_step);
     if (!model.ok()) return model.status().Line();
     state_ = state;
     model_ = std::move(model).value();
@@ -379,6 +414,10 @@ class IvyLab {
   }
 
  private:
+  void Progress(const char* stage, double done, double total) const {
+    if (!progress_.isNull() && !progress_.isUndefined()) progress_(std::string(stage), done, total);
+  }
+
   // The BVHs and the flat support buffers of the scene just loaded; forgets the last ivy.
   void Prepare() {
     bvh_ = scene_.free ? geom::Bvh{} : geom::Bvh::Build(scene_.mesh);
@@ -408,6 +447,7 @@ class IvyLab {
   FlatMesh stems_, leaves_, suckers_;
   FlatMesh buds_;  // positions, kind (in normals), birth
   std::vector<unsigned char> glb_;
+  emscripten::val progress_ = emscripten::val::null();
 };
 
 }  // namespace niwa
@@ -422,6 +462,7 @@ EMSCRIPTEN_BINDINGS(niwa_ivy) {
   class_<niwa::IvyLab>("IvyLab")
       .constructor<>()
       .function("loadScene", &niwa::IvyLab::loadScene)
+      .function("loadTree", &niwa::IvyLab::loadTree)
       .function("loadMesh", &niwa::IvyLab::loadMesh)
       .function("supportJson", &niwa::IvyLab::supportJson)
       .function("grow", &niwa::IvyLab::grow)
@@ -432,5 +473,6 @@ EMSCRIPTEN_BINDINGS(niwa_ivy) {
       .function("lstring", &niwa::IvyLab::lstring)
       .function("buildGlb", &niwa::IvyLab::buildGlb)
       .function("rayCast", &niwa::IvyLab::rayCast)
+      .function("setProgress", &niwa::IvyLab::setProgress)
       .function("buffers", &niwa::IvyLab::buffers);
 }

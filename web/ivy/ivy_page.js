@@ -6,7 +6,8 @@
 // replays the growth with the step scrubber (the vertices' birth steps; nothing regrows), and
 // downloads .glb, .json and .lsys. Growth runs in the worker (web/worker/ivy_handler.js).
 // Does not: parse or check states (the core does; its one line is shown beside its field), draw
-// directly (ivy_renderer.js), or grow on trees (the CLI's --tree-preset does).
+// directly (ivy_renderer.js), or grow the tree it climbs (scene 'tree': the worker grows the
+// tree preset's bark, core/tree/bark_support, as the CLI's --tree-preset does).
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { FrameLoop } from '../gl/frame_loop.js';
 import { dracoPrimitiveCount, importMesh, isGlb, parseGlb } from '../mesh/mesh_import.js';
@@ -14,20 +15,21 @@ import { FileDrop, extensionOf } from '../shell/file_drop.js';
 import { HashHistory } from '../shell/hash_history.js';
 import { ParamPanel } from '../shell/param_panel.js';
 import { StepScrubber } from '../shell/step_scrubber.js';
-import { Notices, copyLink, download, mountStudyNav } from '../shell/study_page.js';
+import { Notices, copyLink, download, mountStudyNav, showEmbedDialog } from '../shell/study_page.js';
 import { bumpHook, setHooks } from '../shell/test_hooks.js';
-import { WorkerClient } from '../shell/worker_client.js';
+import { WorkerClient, restartWorker } from '../shell/worker_client.js';
 import { IvyRenderer } from './ivy_renderer.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
   stage: $('stage'), canvas: $('view'), stats: $('stats'), progress: $('progress'), scene: $('scene'),
-  sceneHelp: $('scene-help'), meshFile: $('mesh-file'), preset: $('preset'), seed: $('seed'), steps: $('steps'),
+  sceneHelp: $('scene-help'), tree: $('tree'), treeYears: $('tree-years'), meshFile: $('mesh-file'), preset: $('preset'), seed: $('seed'), steps: $('steps'),
   reset: $('reset'), seeds: $('seeds'), clickSeeds: $('click-seeds'), clearSeeds: $('clear-seeds'),
   showLeaves: $('show-leaves'), showSuckers: $('show-suckers'), showSupport: $('show-support'), showSeeds: $('show-seeds'), showBuds: $('show-buds'),
   resetView: $('reset-view'), copyLink: $('copy-link'), downloadGlb: $('download-glb'), glbSupport: $('glb-support'),
   downloadJson: $('download-json'), downloadLsys: $('download-lsys'), shareStatus: $('share-status'), params: $('params'),
-  play: $('play'), step: $('step'), stepText: $('step-text'),
+  embed: $('embed'), embedUi: { dialog: $('embed-dialog'), element: $('embed-element'), iframe: $('embed-iframe') },
+  play: $('play'), step: $('step'), stepText: $('step-text'), progressBar: $('ivy-progress'), cancel: $('cancel'),
 };
 mountStudyNav($('studies'), 'ivy');
 
@@ -40,6 +42,32 @@ const worker = new WorkerClient('ivy', {
     notices.set('error', text);
     setHooks({ status: 'error' });
   },
+  // Cancel restarted the worker: init it again from the last ivy shown (a dropped mesh is gone
+  // with the old worker; the last built-in scene or tree comes back). The ivy on screen stays.
+  onRestart: () => {
+    restarting = true;
+    worker.request('init', { hash: lastBuiltIn ? `#${lastBuiltIn}` : '' }, { done: ['ready'] });
+  },
+});
+let restarting = false;  // the next 'ready' answers a restart (the panel exists already)
+let lastBuiltIn = '';    // the hash of the last ivy grown on a built-in scene or tree
+
+// Progress of the work in the worker (a dropped mesh's read and BVH, the tree, every growth
+// step), with Cancel: the worker is ended at once (web/shell/worker_client.js restartWorker).
+const progressSeen = [];
+function showWork(on) {
+  ui.cancel.hidden = !on;
+  if (!on) ui.progressBar.hidden = true;
+}
+ui.cancel.addEventListener('click', () => {
+  showWork(false);
+  clearTimeout(debounceTimer);
+  ui.progress.textContent = useMesh ? 'cancelled: the dropped mesh is dropped; back to the last finished ivy' : 'cancelled: back to the last finished ivy';
+  useMesh = false;
+  meshRequest = 0;
+  bumpHook('cancels');
+  setHooks({ status: 'cancelled' });
+  restartWorker();
 });
 
 // ---------------------------------------------------------------- rendering
@@ -84,6 +112,7 @@ async function startRenderer() {
 let panel = null;
 let presets = [];
 let scenes = [];
+let trees = [];            // the tree presets ivy can climb (scene 'tree')
 let support = null;       // the worker's description of the current support
 let seedPoints = [];      // [[x, y, z], ...] in scene units; [] = the scene's first named seed
 let useMesh = false;      // grow on the dropped mesh, not a built-in scene
@@ -106,6 +135,10 @@ function currentState() {
     seed_points: seedPoints.map(formatPoint).join(';'), params: panel.values(),
   };
   if (!useMesh) state.scene = ui.scene.value;
+  if (state.scene === 'tree') {
+    state.tree = ui.tree.value;
+    state.tree_years = numberOr(ui.treeYears);
+  }
   return state;
 }
 
@@ -118,6 +151,8 @@ function applyState(state) {
     ui.scene.value = state.scene;
     useMesh = false;
   }
+  if (state.tree) ui.tree.value = state.tree;
+  if (state.tree_years !== undefined) ui.treeYears.value = String(state.tree_years);
   seedPoints = String(state.seed_points || '').split(';').filter(Boolean).map((p) => p.split(',').map(Number));
   showScene();
   showSeeds();
@@ -125,7 +160,11 @@ function applyState(state) {
 
 function showScene() {
   const scene = scenes.find((s) => s.name === ui.scene.value);
-  ui.sceneHelp.textContent = useMesh ? `Growing on the dropped mesh ${meshName}.` : scene ? scene.description : '';
+  const onTree = !useMesh && ui.scene.value === 'tree';
+  for (const el of document.querySelectorAll('.tree-field')) el.hidden = !onTree;
+  ui.sceneHelp.textContent = useMesh ? `Growing on the dropped mesh ${meshName}.`
+    : onTree ? `The bark of Niwa's ${ui.tree.value} tree at ${ui.treeYears.value} years (metres), seeded at the trunk foot.`
+      : scene ? scene.description : '';
 }
 
 function showSeeds() {
@@ -157,7 +196,9 @@ function scheduleUpdate() {
 }
 
 // ---------------------------------------------------------------- errors beside their fields
-const BASIC_FIELDS = { seed: 'seed-error', steps: 'steps-error', at: 'at-error', seed_points: 'at-error' };
+const BASIC_FIELDS = {
+  seed: 'seed-error', steps: 'steps-error', at: 'at-error', seed_points: 'at-error', tree: 'tree-error', tree_years: 'tree-error',
+};
 
 function fieldErrorElement(key) {
   if (BASIC_FIELDS[key]) return $(BASIC_FIELDS[key]);
@@ -193,10 +234,22 @@ function showFieldError(message) {
 
 // ---------------------------------------------------------------- worker replies
 worker.on('ready', (msg) => {
+  if (restarting) {  // after Cancel: the panel exists; regrow the last good state (or the hash's)
+    restarting = false;
+    support = null;
+    notices.set('mesh', '');
+    applyState(msg.decoded.state);
+    if (!msg.decoded.state.scene) ui.scene.value = 'cubes4';
+    sendUpdate(false);
+    return;
+  }
   presets = msg.presets;
   scenes = msg.scenes;
+  trees = msg.trees;
   for (const p of presets) ui.preset.append(new Option(p.name, p.name));
   for (const s of scenes) ui.scene.append(new Option(`${s.name} (${s.triangles} tris)`, s.name));
+  ui.scene.append(new Option('tree (a Niwa tree)', 'tree'));
+  for (const t of trees) ui.tree.append(new Option(t.title ? `${t.name} (${t.title})` : t.name, t.name));
   panel = new ParamPanel(ui.params, msg.paramTable, () => scheduleUpdate());
   applyState(msg.decoded.state);
   if (!msg.decoded.state.scene) ui.scene.value = 'cubes4';
@@ -212,6 +265,13 @@ worker.on('decoded', (msg) => {
 
 worker.on('progress', (msg) => {
   ui.progress.textContent = msg.text;
+  const fraction = msg.stage === 'grow' && msg.total > 0 ? msg.done / msg.total : null;
+  ui.progressBar.hidden = fraction === null;
+  if (fraction !== null) ui.progressBar.value = fraction;
+  showWork(true);
+  if (progressSeen.at(-1) !== msg.stage) progressSeen.push(msg.stage);
+  setHooks({ progressStages: progressSeen.slice(-12).join(','), progressText: msg.text });
+  bumpHook('progressMessages');
 });
 
 worker.on('support', (msg) => {
@@ -224,7 +284,8 @@ worker.on('support', (msg) => {
   notices.set('mesh', support.dropped
     ? `Growing on the dropped mesh ${support.name} (${support.triangles} triangles${support.obstacles ? `, ${support.obstacles} obstacle-only` : ''}); a dropped mesh is not part of the link.`
     : '');
-  setHooks({ supportName: support.name, supportTriangles: support.triangles, supportDropped: support.dropped });
+  setHooks({ supportName: support.name, supportTriangles: support.triangles, supportDropped: support.dropped,
+    supportLoadMs: msg.loadMs === null ? '' : Math.round(msg.loadMs) });
   showSeeds();
   if (msg.id === meshRequest) {  // a dropped mesh: grow on it once it is loaded
     ui.progress.textContent = '';
@@ -261,6 +322,7 @@ worker.on('ivy', (msg) => {
   notices.set('error', '');
   showFieldError('');
   ui.progress.textContent = '';
+  showWork(false);
   ui.stats.textContent = `internodes ${s.internodes} · leaves ${s.leaves} · laterals ${s.laterals} · buds A ${s.buds.A} D ${s.buds.D} Z ${s.buds.Z} · grown in ${s.ms.toFixed(1)} ms`;
   if (renderer) {
     renderer.setIvy(msg.mesh);
@@ -271,6 +333,7 @@ worker.on('ivy', (msg) => {
     }
   }
   scrubber.reset(msg.steps);
+  if (!support?.dropped) lastBuiltIn = msg.hash;
   if (commitNext) history_.commit(msg.hash, `#${msg.hash}`);
   else {
     history_.base = msg.hash;
@@ -316,6 +379,7 @@ worker.on('error', (msg) => {
   if (msg.id === meshRequest) {
     notices.set('mesh', msg.message);
     ui.progress.textContent = '';
+    showWork(false);
     setHooks({ status: 'error', meshError: msg.message });
     return;
   }
@@ -323,6 +387,7 @@ worker.on('error', (msg) => {
   notices.set('error', msg.message);
   showFieldError(msg.message);
   ui.progress.textContent = '';
+  showWork(false);
   setHooks({ status: 'error', error: msg.message });
 });
 
@@ -397,10 +462,24 @@ ui.canvas.addEventListener('pointerup', (e) => {
 ui.scene.addEventListener('change', () => {
   useMesh = false;
   seedPoints = [];
+  // A tree is in metres: its ivy preset is metric (the CLI's --tree-preset default).
+  if (ui.scene.value === 'tree' && ui.preset.value !== 'metric') {
+    ui.preset.value = 'metric';
+    const metric = presets.find((p) => p.name === 'metric');
+    if (metric) panel.setValues(metric.params);
+  }
   showScene();
   frameNext = true;
   scheduleUpdate();
 });
+for (const input of [ui.tree, ui.treeYears]) {
+  input.addEventListener(input === ui.tree ? 'change' : 'input', () => {
+    seedPoints = [];
+    showScene();
+    frameNext = true;
+    scheduleUpdate();
+  });
+}
 ui.preset.addEventListener('change', () => {
   const preset = presets.find((p) => p.name === ui.preset.value);
   if (preset) panel.setValues(preset.params);
@@ -425,6 +504,10 @@ ui.resetView.addEventListener('click', () => {
   requestFrame();
 });
 ui.copyLink.addEventListener('click', () => copyLink(ui.shareStatus));
+// The embed: <niwa-ivy> (public/niwa-ivy.js) or an iframe of public/ivy-frame.html, with this hash.
+ui.embed.addEventListener('click', () => {
+  showEmbedDialog(ui.embedUi, { tag: 'niwa-ivy', title: 'Niwa ivy', script: 'niwa-ivy.js', frame: 'ivy-frame.html' });
+});
 const exportAs = (format) => {
   const { id } = worker.request('export', { format, withSupport: ui.glbSupport.checked }, { group: `export-${format}`, done: ['export'] });
   exportIds.add(id);

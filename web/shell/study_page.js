@@ -118,13 +118,13 @@ export async function copyLink(status) {
 
 // Opens the embed dialog with the custom-element and iframe snippets for the current hash.
 // ui: {dialog, element, iframe} (the textareas); tag: the custom element (e.g. 'niwa-tree');
-// title: the iframe's title.
-export function showEmbedDialog(ui, { tag, title }) {
+// title: the iframe's title; script: the element's module; frame: the iframe's page (both in public/).
+export function showEmbedDialog(ui, { tag, title, script = 'niwa-embed.js', frame = 'embed.html' }) {
   const base = new URL('.', location.href).href;
   const state = location.hash.slice(1).replace(/&/g, '&amp;').replace(/"/g, '&quot;');
-  ui.element.value = `<script type="module" src="${base}niwa-embed.js"></script>\n`
+  ui.element.value = `<script type="module" src="${base}${script}"></script>\n`
     + `<${tag} state="${state}" style="width:480px;height:360px"></${tag}>`;
-  ui.iframe.value = `<iframe src="${base}embed.html#${state}" width="480" height="360" title="${title}" loading="lazy"></iframe>`;
+  ui.iframe.value = `<iframe src="${base}${frame}#${state}" width="480" height="360" title="${title}" loading="lazy"></iframe>`;
   ui.dialog.showModal();
   ui.element.select();
 }

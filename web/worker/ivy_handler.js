@@ -15,37 +15,70 @@ export function createHandler(Module, ctx) {
   const paramTable = JSON.parse(Module.ivyParamTableJson());
   const presets = JSON.parse(Module.ivyPresetsJson());
   const scenes = JSON.parse(Module.ivyScenesJson());
+  // The trees ivy can climb (scene 'tree'): the tree study's presets.
+  const trees = JSON.parse(Module.presetsJson()).map((p) => ({ name: p.name, title: p.title, years: p.years }));
   const labs = new Map();  // client -> {lab, support: 'scene:<name>' | 'mesh:<name>' | null}
 
+  // Progress from inside a long call (a big mesh's read and BVH, every growth step): at most one
+  // message per 100 ms, for the request the lab is working on (entry.working).
+  const STAGE_TEXT = {
+    read: (done, total) => `reading the mesh (${(total / 1048576).toFixed(1)} MB)`,
+    bvh: (done, total) => `building the BVH of ${total.toLocaleString('en-US')} triangles`,
+    tree: (done, total) => `growing the tree (${total} years)`,
+    grow: (done, total) => `growing: step ${done} of ${total}`,
+  };
   function labOf(client) {
-    if (!labs.has(client)) labs.set(client, { lab: new Module.IvyLab(), support: null });
+    if (!labs.has(client)) {
+      const entry = { lab: new Module.IvyLab(), support: null, working: 0, lastPost: 0 };
+      entry.lab.setProgress((stage, done, total) => {
+        const now = performance.now();
+        const edge = stage !== 'grow' || done === 1 || done === total;
+        if (!edge && now - entry.lastPost < 100) return;
+        entry.lastPost = now;
+        post({ type: 'progress', id: entry.working, client, stage, done, total, text: STAGE_TEXT[stage]?.(done, total) ?? stage });
+      });
+      labs.set(client, entry);
+    }
     return labs.get(client);
   }
 
   // Sends the support's description and triangles (once per support change).
-  function sendSupport(id, client, entry) {
+  // id: the 'mesh' request it answers; an update's support goes without an id (request: its id), so
+  // it reaches the page even when a newer update supersedes that one (the lab keeps the support,
+  // and the newer update sends none).
+  function sendSupport(id, client, entry, { asReply = true } = {}) {
     const transfer = [];
     const support = JSON.parse(entry.lab.supportJson());
     const buffers = takeBuffers(entry.lab.buffers('support'), transfer);
-    post({ type: 'support', id, client, support, buffers }, transfer);
+    const envelope = asReply ? { id } : { request: id };
+    post({ type: 'support', ...envelope, client, support, buffers, loadMs: entry.loadMs ?? null }, transfer);
   }
 
   async function update(msg, client) {
     const { id, state } = msg;
     const entry = labOf(client);
+    entry.working = id;
     const scene = typeof state?.scene === 'string' && state.scene ? state.scene : 'cubes4';
     // A dropped mesh stays the support until the page asks for a built-in scene (state.scene set
     // and msg.useMesh false).
     const wantMesh = msg.useMesh === true && entry.support?.startsWith('mesh:');
-    if (!wantMesh && entry.support !== `scene:${scene}`) {
-      post({ type: 'progress', id, client, stage: 'scene', text: `loading scene ${scene}` });
-      const error = entry.lab.loadScene(scene);
+    // scene 'tree': a Niwa tree's bark (tree preset and years of the state), as the CLI's
+    // --tree-preset; the same key regrows nothing.
+    const tree = scene === 'tree' ? { name: String(state.tree ?? ''), years: Number(state.tree_years) } : null;
+    const supportKey = tree ? `tree:${tree.name}:${tree.years}` : `scene:${scene}`;
+    if (!wantMesh && entry.support !== supportKey) {
+      post({ type: 'progress', id, client, stage: 'scene',
+        text: tree ? `growing the ${tree.name} tree (${tree.years} years) to climb` : `loading scene ${scene}` });
+      if (tree) await yieldToEvents();
+      const t0 = performance.now();
+      const error = tree ? entry.lab.loadTree(tree.name, tree.years) : entry.lab.loadScene(scene);
+      entry.loadMs = performance.now() - t0;
       if (error) {
         post({ type: 'error', id, client, message: error });
         return;
       }
-      entry.support = `scene:${scene}`;
-      sendSupport(id, client, entry);
+      entry.support = supportKey;
+      sendSupport(id, client, entry, { asReply: false });
     }
     const grown = { ...state };
     if (wantMesh) delete grown.scene;  // the dropped mesh is not a built-in scene
@@ -70,9 +103,12 @@ export function createHandler(Module, ctx) {
   async function mesh(msg, client) {
     const { id, name } = msg;
     const entry = labOf(client);
+    entry.working = id;
     post({ type: 'progress', id, client, stage: 'mesh', text: `reading ${name} and building its BVH` });
     await yieldToEvents();
+    const t0 = performance.now();
     const error = entry.lab.loadMesh(new Uint8Array(msg.bytes), String(name));
+    entry.loadMs = performance.now() - t0;
     if (error) {  // the lab keeps its old support when a read fails
       post({ type: 'error', id, client, message: error });
       return;
@@ -109,7 +145,7 @@ export function createHandler(Module, ctx) {
 
   return {
     superseding: ['update'],
-    ready: (msg) => ({ paramTable, presets, scenes, decoded: JSON.parse(Module.ivyDecodeHash(String(msg.hash || ''))) }),
+    ready: (msg) => ({ paramTable, presets, scenes, trees, decoded: JSON.parse(Module.ivyDecodeHash(String(msg.hash || ''))) }),
     messages: {
       decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...JSON.parse(Module.ivyDecodeHash(String(msg.hash || ''))) }),
       encode: (msg, client) => post({ type: 'encoded', id: msg.id, client, ...JSON.parse(Module.ivyEncodeHash(JSON.stringify(msg.state || {}))) }),

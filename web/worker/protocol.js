@@ -89,10 +89,12 @@
  */
 
 /**
- * The ivy page (study: 'ivy', web/worker/ivy_handler.js). State: {preset, seed, steps, scene,
- * seed_points: "X,Y,Z;..", params}; ready also carries `scenes` [{name, description, seeds}].
+ * The ivy page and <niwa-ivy> (study: 'ivy', web/worker/ivy_handler.js). State: {preset, seed,
+ * steps, scene ('tree': tree, tree_years), seed_points: "X,Y,Z;..", params}; ready also carries
+ * `scenes` [{name, description, seeds}] and `trees` [{name, title, years}].
  * @typedef {Envelope & {type: 'update', state: Object, useMesh?: boolean}} IvyUpdateMessage
- *   -> SupportMessage (when the scene changed), ProgressMessage {stage, text},
+ *   -> SupportMessage without an id ({request: id}; when the scene or tree changed),
+ *      ProgressMessage {stage: scene|tree|bvh|grow|read, done?, total?, text} (at most one per 100 ms),
  *      {type: 'ivy', stats, mesh: {stems, leaves, suckers: {positions, normals, indices, birth},
  *       buds: {positions, kind, birth}},
  *       steps, hash, wallMs}
