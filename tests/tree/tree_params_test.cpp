@@ -64,7 +64,7 @@ TEST(TreeParamStages, RowsAfterGrowLeaveTheTreeAndItsMeshUnchanged) {
     }
     ++checked;
   }
-  EXPECT_EQ(checked, 26);  // 13 sway, 9 wind and 4 render rows
+  EXPECT_EQ(checked, 29);  // 13 sway, 9 wind, 6 render rows and leaf_shape (mesh)
 }
 
 TEST(TreeParamStages, AGrowRowDoesChangeTheTree) {
