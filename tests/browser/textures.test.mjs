@@ -135,6 +135,7 @@ await runBrowserTest(async (server, browser) => {
     await saveCanvasPng(page, `tex-sakura-${name}.png`);
     console.log(`  sakura ${name}: ${fmt(seasons[name])}`);
     if (name === 'summer' || name === 'autumn') {
+      await page.waitForFunction(() => /cam=/.test(location.hash), null, { timeout: TIMEOUT });
       const hash = decodeURIComponent(await page.evaluate(() => location.hash.slice(1)));
       const cam = (hash.match(/cam=([^&]*)/) || [])[1].split(',').map(Number);
       threeSeasons[name] = await threeHistogram(context, server, cliGlb(hash), cam, `tex-three-sakura-${name}.png`);
