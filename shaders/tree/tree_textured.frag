@@ -45,6 +45,12 @@ vec3 perturbNormal(vec3 n, vec3 mapN) {
   return normalize(t * (mapN.x * scale) - b * (mapN.y * scale) + n * mapN.z);
 }
 
+// Mip level the sampler reads at vUv (from the texel footprint on screen).
+float mipLevel(vec2 size) {
+  vec2 dx = dFdx(vUv * size), dy = dFdy(vUv * size);
+  return max(0.0, 0.5 * log2(max(dot(dx, dx), dot(dy, dy))));
+}
+
 void main() {
   if (uXray > 0.5 && vSelected <= 0.0) discard;
   vec3 n = normalize(vNormal);
@@ -52,6 +58,9 @@ void main() {
   vec3 base;
   if (uUseTexture > 0.5) {
     vec4 texel = texture(uBaseMap, vUv);
+    // Averaged mip levels thin a cut-out (needles vanish at a distance): alpha is scaled up with
+    // the level so the coverage stays about that of the full-size texture.
+    if (uAlphaCutoff > 0.0) texel.a *= 1.0 + 0.4 * mipLevel(vec2(textureSize(uBaseMap, 0)));
     if (texel.a < uAlphaCutoff) discard;
     base = pow(texel.rgb, vec3(2.2));  // sRGB to linear
     if (uUseNormalMap > 0.5) n = perturbNormal(n, texture(uNormalMap, vUv).xyz * 2.0 - 1.0);

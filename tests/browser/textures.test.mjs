@@ -40,6 +40,7 @@ const fmt = (h) => Object.entries(h).map(([k, v]) => `${k} ${(100 * v).toFixed(2
 // Sets one panel field (restage for a view row) and waits for the new tree to be drawn.
 async function setField(page, key, value) {
   const before = Number((await root(page)).treeSerial || 0);
+  await page.evaluate((k) => { document.getElementById(`param-${k}`).closest('details').open = true; }, key);
   await page.fill(`#param-${key}`, String(value));
   await waitReady(page, before, 200);
 }
@@ -170,32 +171,45 @@ await runBrowserTest(async (server, browser) => {
     ['ginkgo-autumn', 'preset=ginkgo&seed=1&years=8&season=2', (h) => h.yellow > 0.01, 'autumn: yellow'],
     ['keyaki-autumn', 'preset=keyaki&seed=1&years=8&season=2', (h) => h.warm + h.yellow > 0.01, 'autumn: orange-brown'],
   ];
+  // A fresh page per tree: a hash link grows it from scratch.
+  const openTree = async (hash) => {
+    const p = await context.newPage();
+    watchPage(p, problems);
+    await p.goto(`${server.url}#${hash}`);
+    await waitReady(p, 0, 200);
+    return p;
+  };
+  await page.close();
   for (const [name, hash, ok, what] of species) {
-    const before = Number((await root(page)).treeSerial || 0);
-    await page.goto(`${server.url}#${hash}`);
-    await waitReady(page, before > 0 ? -1 : 0, 200);
-    const h = await histogram(page);
-    await saveCanvasPng(page, `tex-${name}.png`);
+    const p = await openTree(hash);
+    const h = await histogram(p);
+    await saveCanvasPng(p, `tex-${name}.png`);
     check(`${name} ${what}`, ok(h), fmt(h));
+    await p.close();
   }
-  // Close-ups of the four shapes on keyaki-thesis at 4 years (leaf_shape is a mesh row: restaged).
-  await page.goto(`${server.url}#preset=keyaki-thesis&seed=1&years=4`);
-  await waitReady(page, -1, 200);
-  const grows = (await root(page)).growRequests;
-  await page.evaluate(() => {
-    const v = document.getElementById('view');
-    const r = v.getBoundingClientRect();
-    v.dispatchEvent(new WheelEvent('wheel', { deltaY: -900, clientX: r.x + r.width / 2, clientY: r.y + r.height * 0.35, bubbles: true }));
-  });
-  await page.waitForTimeout(500);
+  // Close-ups of the four shapes on keyaki-thesis at 6 years (leaf_shape is a mesh row: restaged):
+  // the framed camera's distance cut to a third, aimed at the upper crown.
+  const framed = await openTree('preset=keyaki-thesis&seed=1&years=6');
+  await framed.waitForFunction(() => /cam=/.test(location.hash), null, { timeout: TIMEOUT });
+  const cam = decodeURIComponent(await framed.evaluate(() => location.hash)).match(/cam=([^&]*)/)[1].split(',').map(Number);
+  await framed.close();
+  const close = [cam[0], 0.35, cam[2] / 3, cam[3], cam[4] * 1.5, cam[5]].map((x) => Number(x.toFixed(3))).join(',');
+  const shapes = await openTree(`preset=keyaki-thesis&seed=1&years=6&cam=${close}`);
+  const grows = (await root(shapes)).growRequests;
+  const shapeShares = {};
   for (const [value, name] of [[0, 'broad'], [1, 'needle'], [2, 'palmate'], [3, 'fan']]) {
-    if (value !== 0) await setField(page, 'leaf_shape', value);
-    else await page.waitForTimeout(300);
-    const h = await histogram(page);
-    await saveCanvasPng(page, `tex-shape-${name}.png`);
-    check(`leaf_shape ${name}: green leaves drawn`, h.green > 0.005, fmt(h));
+    if (value !== 0) await setField(shapes, 'leaf_shape', value);
+    const h = await histogram(shapes);
+    shapeShares[name] = h.green;
+    await saveCanvasPng(shapes, `tex-shape-${name}.png`);
+    check(`leaf_shape ${name}: green leaves drawn`, h.green > 0.01, fmt(h));
   }
-  check('leaf_shape edits do not regrow', (await root(page)).growRequests === grows);
+  // The blades cover their quads differently (tree_textures_test: needle ≈ 0.16 of a narrower
+  // quad, broad ≈ 0.53): the needles show the least green.
+  check('needles show less green than broad leaves', shapeShares.needle < 0.8 * shapeShares.broad,
+    JSON.stringify(shapeShares));
+  check('leaf_shape edits do not regrow', (await root(shapes)).growRequests === grows);
+  await shapes.close();
 
   // The textures the page drew are the .glb's (same names from the CLI; same pixels by the
   // digests the gtest pins for both builds).
