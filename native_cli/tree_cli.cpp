@@ -5,6 +5,7 @@
 #include "cli_common.h"
 #include "params/param_json.h"
 #include "tree/presets.h"
+#include "tree/tree_look.h"
 
 namespace niwa::cli {
 
@@ -24,6 +25,13 @@ void AddStateOptions(CLI::App* cmd, const ParamTable& table, StateOptions* o) {
       "Prune after a year: YEAR:bID (branch id from the JSON) or YEAR:sinceY (repeatable)");
   cmd->add_option("--url", o->url,
                   "A share-link hash (preset=...&seed=...); other flags override it");
+  if (table.name() == "tree") {
+    cmd->add_option("--season", o->season,
+                    "Season of the view: spring, summer, autumn or winter (the season row; the "
+                    "tree is the same)");
+    cmd->add_option("--leaf-shape", o->leaf_shape,
+                    "Leaf shape: broad, needle, palmate or fan (the leaf_shape row)");
+  }
   AddBudgetOptions(cmd, &o->budget);
 }
 
@@ -50,6 +58,23 @@ TreeState ResolveTreeState(const StateOptions& o, const CLI::App& cmd) {
   }
   for (const std::string& item : o.sets)
     Check(state.params.SetFromAssignment(item).Within("--set"));
+  if (!o.season.empty()) {
+    std::optional<Season> season = ParseSeason(o.season);
+    if (!season) {
+      Fail(Status::Error("--season",
+                         "'" + Echo(o.season) + "' must be spring, summer, autumn or winter"));
+    }
+    Check(state.params.Set(TreeParam::kSeason, static_cast<double>(*season)).Within("--season"));
+  }
+  if (!o.leaf_shape.empty()) {
+    std::optional<LeafShape> shape = ParseLeafShape(o.leaf_shape);
+    if (!shape) {
+      Fail(Status::Error("--leaf-shape",
+                         "'" + Echo(o.leaf_shape) + "' must be broad, needle, palmate or fan"));
+    }
+    Check(state.params.Set(TreeParam::kLeafShape, static_cast<double>(*shape))
+              .Within("--leaf-shape"));
+  }
   for (const std::string& item : o.prunes) Check(AsFlag(AddStatePrune(item, &state), "--prune"));
   // Refused at load, labelled by the last source that set parameters (applied --url, --params,
   // --set in that order).

@@ -19,7 +19,8 @@ struct StateOptions {
   uint64_t seed = 0;
   std::vector<std::string> sets, prunes;
   std::string params_file, url;
-  BudgetOptions budget;  // --max-memory, --max-seconds: the growth's GrowLimits
+  std::string season, leaf_shape;  // --season, --leaf-shape by name (the tree's look rows)
+  BudgetOptions budget;            // --max-memory, --max-seconds: the growth's GrowLimits
 };
 
 // Adds the state flags of `table` (its --set keys; see 'niwa params') to cmd.

@@ -1,4 +1,4 @@
-// Triangle meshes of a grown tree: bark tubes, double-sided leaf quads and five-petal flowers.
+// Triangle meshes of a grown tree: bark tubes, double-sided leaf quads and blossom-cluster cards.
 #include "tree/mesh.h"
 
 #include <algorithm>
@@ -279,8 +279,8 @@ bool ValidNode(const Branch& branch, int node) {
   return node >= 0 && node < static_cast<int>(branch.nodes.size());
 }
 
-void AddLeaf(const Branch& branch, const Leaf& leaf, float leaf_size, const MeshOptions& options,
-             Writer* leaves) {
+void AddLeaf(const Branch& branch, const Leaf& leaf, float leaf_size, float aspect,
+             const MeshOptions& options, Writer* leaves) {
   const float scale = options.cm_to_units;
   glm::vec3 along = SafeNormalize(leaf.direction, kUp);
   // The blade's width runs horizontally when it can, so the leaf faces the sky.
@@ -288,7 +288,7 @@ void AddLeaf(const Branch& branch, const Leaf& leaf, float leaf_size, const Mesh
   glm::vec3 normal = SafeNormalize(glm::cross(across, along), kUp);
   glm::vec3 base = branch.nodes[static_cast<std::size_t>(leaf.node)] * scale;
   glm::vec3 tip = base + along * (leaf_size * scale);
-  glm::vec3 half = across * (0.25f * leaf_size * scale);
+  glm::vec3 half = across * (0.5f * aspect * leaf_size * scale);  // aspect: width / length
   const glm::vec3 corners[4] = {base - half, base + half, tip + half, tip - half};
   const glm::vec2 uv[4] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}};
   AddDoubleSidedQuad(leaves, corners, normal, uv, static_cast<uint32_t>(branch.id),
@@ -345,6 +345,8 @@ void AddFlower(const Branch& branch, int node, const MeshOptions& options,
 
 TreeMesh BuildTreeMesh(const Tree& tree, const MeshOptions& options) {
   TreeMesh mesh;
+  mesh.look = options.look ? *options.look : LookFromParams(tree.params);
+  const float leaf_aspect = LeafQuadAspect(mesh.look.leaf_shape);
   const float leaf_size = static_cast<float>(tree.params.Get(ParamId::kLeafSize));
   const int lo_sides = std::max(3, options.min_sides);
   const int hi_sides = std::max(lo_sides, options.max_sides);
@@ -374,6 +376,11 @@ TreeMesh BuildTreeMesh(const Tree& tree, const MeshOptions& options) {
     for (const Leaf& leaf : branch.leaves) leaf_count += ValidNode(branch, leaf.node) ? 1 : 0;
     for (int node : branch.flowers) flower_count += ValidNode(branch, node) ? 1 : 0;
   }
+  // The season: a tree's leaves and flowers may be left off (tree_look.h).
+  const bool with_leaves = ShowsLeaves(mesh.look, flower_count > 0);
+  const bool with_flowers = ShowsFlowers(mesh.look);
+  if (!with_leaves) leaf_count = 0;
+  if (!with_flowers) flower_count = 0;
   Writer bark = StartWriting(&mesh.bark, &mesh.bark_branch_id, &mesh.bark_node_index, bark_vertices,
                              bark_indices);
   Writer leaves = StartWriting(&mesh.leaves, &mesh.leaf_branch_id, &mesh.leaf_node_index,
@@ -401,10 +408,13 @@ TreeMesh BuildTreeMesh(const Tree& tree, const MeshOptions& options) {
     AddBranchTube(info, branch, info[n].radius, sides[n], v_start, options, ring, &scratch, &bark,
                   node_v.data() + node_offset[n]);
     for (const Leaf& leaf : branch.leaves) {
-      if (ValidNode(branch, leaf.node)) AddLeaf(branch, leaf, leaf_size, options, &leaves);
+      if (with_leaves && ValidNode(branch, leaf.node)) {
+        AddLeaf(branch, leaf, leaf_size, leaf_aspect, options, &leaves);
+      }
     }
     for (int node : branch.flowers) {
-      if (ValidNode(branch, node)) AddFlower(branch, node, options, outline, &flowers);
+      if (with_flowers && ValidNode(branch, node))
+        AddFlower(branch, node, options, outline, &flowers);
     }
   }
   return mesh;

@@ -1,6 +1,9 @@
 // The tree's glTF document (three textured parts, optional skin and sway clip) over io/gltf_writer.
 #include "tree/tree_gltf.h"
 
+#include <map>
+#include <mutex>
+#include <string>
 #include <utility>
 
 #include "image/png.h"
@@ -9,9 +12,10 @@
 namespace niwa {
 namespace {
 
-enum class TextureKind { kBark, kLeaf, kFlower };
+enum class TextureKind { kBark, kBarkNormal, kLeaf, kFlower };
 
-// The base colour comes from the texture (factor white); leaves and flowers are cut out by alpha.
+// The base colour comes from the texture (factor white); leaves and flowers are cut out by alpha;
+// bark also has its normal map.
 struct MaterialSpec {
   const char* name;
   TextureKind texture;
@@ -20,32 +24,74 @@ struct MaterialSpec {
   bool alpha_mask;
 };
 
-// Bark repeats around (u 0..1) and along the wood (one repeat per metre of v); leaf and flower
-// textures cover their quad or star once and are clamped.
-Result<gltf::Texture> MakeTexture(TextureKind kind) {
-  gltf::Texture texture;
+// The PNG of one texture, painted and encoded once per process (and per look for the leaf): 512 px
+// textures take a noticeable part of a second to paint and deflate, and every export of the same
+// look embeds the same bytes.
+Result<std::vector<unsigned char>> EncodedTexture(TextureKind kind, const TreeLook& look) {
+  static std::mutex mutex;
+  static std::map<int, std::vector<unsigned char>> cache;
+  const int key = kind == TextureKind::kLeaf
+                      ? 1000 + 100 * static_cast<int>(look.leaf_shape) +
+                            10 * static_cast<int>(look.season) + static_cast<int>(look.autumn)
+                      : static_cast<int>(kind);
+  std::lock_guard<std::mutex> lock(mutex);
+  auto found = cache.find(key);
+  if (found != cache.end()) return found->second;
   Rgba8Image pixels;
   switch (kind) {
     case TextureKind::kBark:
-      texture.name = "bark";
       pixels = MakeBarkTexture();
       break;
+    case TextureKind::kBarkNormal:
+      pixels = MakeBarkNormalMap();
+      break;
     case TextureKind::kLeaf:
-      texture.name = "leaf";
+      pixels = MakeLeafTexture(look);
+      break;
+    case TextureKind::kFlower:
+    default:
+      pixels = MakeBlossomClusterTexture();
+      break;
+  }
+  Result<std::vector<unsigned char>> png = image::EncodeRgba8Png(pixels);
+  if (png.ok()) cache.emplace(key, *png);
+  return png;
+}
+
+// Bark repeats around (u 0..1) and along the wood (one repeat per metre of v); leaf and flower
+// textures cover their quad or card once and are clamped. The leaf is painted for the mesh's look.
+Result<gltf::Texture> MakeTexture(TextureKind kind, const TreeLook& look) {
+  gltf::Texture texture;
+  switch (kind) {
+    case TextureKind::kBark:
+      texture.name = "bark";
+      break;
+    case TextureKind::kBarkNormal:
+      texture.name = "bark_normal";
+      break;
+    case TextureKind::kLeaf:
+      texture.name =
+          std::string("leaf_") + LeafShapeName(look.leaf_shape) + "_" + SeasonName(look.season);
       texture.wrap_s = texture.wrap_t = gltf::Wrap::kClampToEdge;
-      pixels = MakeLeafTexture();
       break;
     case TextureKind::kFlower:
     default:
       texture.name = "flower";
       texture.wrap_s = texture.wrap_t = gltf::Wrap::kClampToEdge;
-      pixels = MakeFlowerTexture();
       break;
   }
-  Result<std::vector<unsigned char>> png = image::EncodeRgba8Png(pixels);
+  Result<std::vector<unsigned char>> png = EncodedTexture(kind, look);
   if (!png.ok()) return png.status().Within(texture.name + " texture");
   texture.png = std::move(png).value();
   return texture;
+}
+
+// Adds a texture to the document; its index.
+Result<int> AddTexture(TextureKind kind, const TreeLook& look, gltf::Document* doc) {
+  Result<gltf::Texture> texture = MakeTexture(kind, look);
+  if (!texture.ok()) return texture.status();
+  doc->textures.push_back(std::move(texture).value());
+  return static_cast<int>(doc->textures.size()) - 1;
 }
 
 gltf::Material MakeMaterial(const MaterialSpec& spec, int texture) {
@@ -189,10 +235,20 @@ Result<gltf::Document> TreeGltfDocument(const TreeMesh& mesh, const GltfSkinning
   for (std::size_t k = 0; k < 3; ++k) {
     const Part& part = parts[k];
     if (part.buffers->indices.empty()) continue;  // no empty primitives, materials or textures
-    Result<gltf::Texture> texture = MakeTexture(part.material.texture);
+    Result<int> texture = AddTexture(part.material.texture, mesh.look, &doc);
     if (!texture.ok()) return texture.status();
-    doc.textures.push_back(std::move(texture).value());
-    doc.materials.push_back(MakeMaterial(part.material, static_cast<int>(doc.textures.size()) - 1));
+    gltf::Material material = MakeMaterial(part.material, *texture);
+    if (part.material.texture == TextureKind::kBark) {
+      Result<int> normal = AddTexture(TextureKind::kBarkNormal, mesh.look, &doc);
+      if (!normal.ok()) return normal.status();
+      material.normal_texture = *normal;
+      // The look the tree was dressed in (the season also decides which parts exist).
+      material.extras_json = std::string("{\"leaf_shape\":\"") +
+                             LeafShapeName(mesh.look.leaf_shape) + "\",\"season\":\"" +
+                             SeasonName(mesh.look.season) + "\",\"autumn_colour\":\"" +
+                             AutumnColourName(mesh.look.autumn) + "\"}";
+    }
+    doc.materials.push_back(std::move(material));
     gltf::Primitive primitive;
     primitive.mesh = ToTriMesh(*part.buffers);
     primitive.material = static_cast<int>(doc.materials.size()) - 1;

@@ -37,9 +37,11 @@ struct GltfSkinning {
 
 // The tree's glTF document: node "tree" with mesh "tree" of one primitive per non-empty part
 // (bark, leaves, flowers, in that order), each with its material ("bark", "leaves", "flowers")
-// and texture; with `skinning`, the skeleton nodes, skin "tree" and one clip (LINEAR translation
-// and rotation channels for every joint with keys). For callers that change a material (another
-// bark texture) before gltf::WriteGlb.
+// and 512 px texture (tree_textures.h: bark also has its normal map and, as extras, the mesh's look
+// {leaf_shape, season, autumn_colour}; the leaf texture is the mesh's leaf shape in its season);
+// with `skinning`, the skeleton nodes, skin "tree" and one clip (LINEAR translation and rotation
+// channels for every joint with keys). For callers that change a material (another bark texture)
+// before gltf::WriteGlb.
 Result<gltf::Document> TreeGltfDocument(const TreeMesh& mesh,
                                         const GltfSkinning* skinning = nullptr);
 

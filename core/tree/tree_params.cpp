@@ -8,12 +8,14 @@ namespace {
 using P = TreeParam;
 constexpr Stage kGrow = Stage::kGrow;
 constexpr Stage kSway = Stage::kSway;
+constexpr Stage kMesh = Stage::kMesh;
 constexpr Stage kView = Stage::kView;
 constexpr int Id(TreeParam p) { return static_cast<int>(p); }
 
 // Stages: every growth row regrows (leaf_size and pipe_area too: the leaf-sphere radius and the
 // pipe model are growth inputs); sway and wind rows only restart the sway; render rows only change
-// the hybrid view. No row is used by the mesh alone, so none is kMesh.
+// the hybrid view. leaf_shape is used by the mesh alone (kMesh); season and autumn_colour only
+// dress the tree already grown (kView): neither regrows.
 //
 // Defaults are the sakura column of thesis table 2.2. "a ~ b" ranges are split into *_low (value at
 // hormone 0, or for P_l at age 0) and *_high (value at hormone H_sat, or at age P_l_years).
@@ -237,6 +239,16 @@ const std::vector<ParamSpec>& Rows() {
       {Id(P::kLeafClusterCards), "leaf_cluster_cards", "", "", 1, 0, 1, true, "render", kView,
        "Hybrid mode: 1 merges the leaves of nearby branches into leaf-cluster cards (thesis 5.2); "
        "0 draws leaves on their branch's card (thesis 4.2.1)."},
+      {Id(P::kLeafShape), "leaf_shape", "", "", 0, 0, 3, true, "shape", kMesh,
+       "Leaf blade on every leaf quad: 0 broad (elliptic: sakura, keyaki), 1 needle (a cluster of "
+       "needles: pine), 2 palmate (seven lobes: maple), 3 fan (ginkgo)."},
+      {Id(P::kSeason), "season", "", "", 1, 0, 3, true, "render", kView,
+       "0 spring (fresh leaves; a flowering deciduous tree blossoms on bare wood, as cherries do), "
+       "1 summer (leaves and flowers as grown), 2 autumn (autumn colour, no flowers), 3 winter "
+       "(bare; evergreens keep their leaves)."},
+      {Id(P::kAutumnColour), "autumn_colour", "", "", 1, 0, 4, true, "render", kView,
+       "Colour the leaves turn in autumn: 0 evergreen (stay green, kept in winter), 1 red-orange "
+       "(sakura), 2 red (maple), 3 yellow (ginkgo), 4 orange-brown (keyaki)."},
   };
   return rows;
 }

@@ -116,6 +116,10 @@ enum class TreeParam : int {
   kLineThreshold,     // eq. 4.1 threshold on D_i, px
   kCardPlanes,        // card planes per branch
   kLeafClusterCards,  // 1: leaf-cluster cards (thesis 5.2), 0: leaves on branch cards (4.2.1)
+  // look (not in the thesis; core/tree/tree_look.h): leaf shape, season, autumn colour
+  kLeafShape,
+  kSeason,
+  kAutumnColour,
   kCount
 };
 

@@ -1,13 +1,19 @@
-// Procedural bark, leaf and flower textures of the tree (integer hashes + det:: math).
+// Procedural bark (colour + normal map), leaf blades per shape and season, and blossom textures of
+// the tree (integer hashes + det:: math, so both builds paint the same bytes).
 #include "tree/tree_textures.h"
 
 #include <algorithm>
+#include <cinttypes>
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 #include "math/det_math.h"
 
 namespace niwa {
 namespace {
+
+constexpr double kDegree = det::kPi / 180.0;
 
 // Integer hash (lowbias32 finaliser) of a lattice point and a seed, uniform in [0, 1).
 double Hash01(uint32_t x, uint32_t y, uint32_t seed) {
@@ -28,6 +34,15 @@ double SmoothStep(double lo, double hi, double x) {
 }
 
 double Mix(double a, double b, double t) { return a + (b - a) * t; }
+
+struct Rgb {
+  double r, g, b;
+};
+
+Rgb MixRgb(const Rgb& a, const Rgb& b, double t) {
+  return {Mix(a.r, b.r, t), Mix(a.g, b.g, t), Mix(a.b, b.b, t)};
+}
+Rgb Scale(const Rgb& c, double s) { return {c.r * s, c.g * s, c.b * s}; }
 
 // Value noise on a px × py lattice that wraps in both directions; (x, y) in lattice units.
 double PeriodicNoise(double x, double y, int px, int py, uint32_t seed) {
@@ -60,106 +75,358 @@ double PeriodicFbm(double u, double v, int px, int py, int octaves, uint32_t see
 
 unsigned char ToByte(double x) { return static_cast<unsigned char>(Clamp01(x) * 255.0 + 0.5); }
 
-void SetPixel(Rgba8Image* image, int x, int y, double r, double g, double b, double a) {
+void SetPixel(Rgba8Image* image, int x, int y, const Rgb& c, double a) {
   unsigned char* p = image->At(x, y);
-  p[0] = ToByte(r);
-  p[1] = ToByte(g);
-  p[2] = ToByte(b);
+  p[0] = ToByte(c.r);
+  p[1] = ToByte(c.g);
+  p[2] = ToByte(c.b);
   p[3] = ToByte(a);
 }
 
 Rgba8Image Allocate(int width, int height) { return image::MakeRgba8(width, height, 0, 0, 0, 0); }
 
+// ---- Bark ----
+
+// Relief of the bark at (u, v): 0 in a furrow or crack, about 1 on a plate; tileable.
+double BarkRelief(double u, double v) {
+  constexpr int kFurrows = 7;                           // ridges around the circumference
+  double warp = PeriodicFbm(u, v, 4, 6, 3, 11u) - 0.5;  // furrows wander along the wood
+  double phase = (u + 0.12 * warp) * kFurrows;
+  double f = phase - std::floor(phase);
+  double plate = SmoothStep(0.04, 0.32, std::min(f, 1.0 - f));
+  double detail = PeriodicFbm(u, v, 16, 8, 3, 23u);  // ridges broken into elongated plates
+  double crack = SmoothStep(0.30, 0.22, PeriodicFbm(u, v, 8, 12, 2, 37u));
+  return plate * (0.72 + 0.45 * detail) * (1.0 - 0.45 * crack);
+}
+
+// Relief of every pixel of a width × height bark image.
+std::vector<double> BarkReliefImage(int width, int height) {
+  std::vector<double> relief(static_cast<std::size_t>(std::max(0, width) * std::max(0, height)));
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      relief[static_cast<std::size_t>(y * width + x)] =
+          BarkRelief((x + 0.5) / width, (y + 0.5) / height);
+    }
+  }
+  return relief;
+}
+
+// ---- Leaves ----
+
+// One sample of a blade: inside the silhouette, and how much of a vein / midrib is there.
+struct BladeSample {
+  bool inside = false;
+  double vein = 0.0;  // 0..1, lighter
+  double edge = 0.0;  // 0 at the midrib or centre, 1 at the margin (darker)
+};
+
+// Elliptic blade (u-space as the quad is half as wide as long), midrib and pinnate veins.
+BladeSample BroadBlade(double u, double v) {
+  BladeSample s;
+  constexpr double kStem = 0.06;  // petiole, v < kStem
+  double half_width;              // of the silhouette, in u
+  if (v < kStem) {
+    half_width = 0.02;
+  } else {
+    double t = (v - kStem) / (1.0 - kStem);
+    half_width =
+        std::max(0.02 * (1.0 - t / 0.05), 0.0) + 0.5 * det::Sin(det::kPi * t) * (1.1 - 0.45 * t);
+    half_width = std::min(half_width, 0.47);
+  }
+  double d = std::fabs(u - 0.5);
+  s.inside = d < half_width;
+  double across = d * 0.5;  // physical: the quad is twice as long as it is wide
+  double vein_phase = (v - 1.2 * across) * 9.0;
+  double g = vein_phase - std::floor(vein_phase);
+  double vein = (1.0 - SmoothStep(0.0, 0.07, std::min(g, 1.0 - g))) * SmoothStep(0.0, 0.03, d) *
+                SmoothStep(0.1, 0.2, v);
+  double midrib = 1.0 - SmoothStep(0.008, 0.02, d);
+  s.vein = std::max(midrib, 0.35 * vein);
+  s.edge = half_width > 0.0 ? Clamp01(d / half_width) : 1.0;
+  return s;
+}
+
+// A pine fascicle: fourteen needles fanning ±22° from a short sheath at the base; x, y physical
+// (x across in [-0.4, 0.4], y along in [0, 1]).
+BladeSample NeedleCluster(double x, double y) {
+  BladeSample s;
+  constexpr int kNeedles = 14;
+  constexpr double kOriginY = 0.08;
+  if (std::fabs(x) < 0.014 && y > 0.02 && y < 0.10) {  // the sheath
+    s.inside = true;
+    s.edge = 1.0;
+    return s;
+  }
+  for (int k = 0; k < kNeedles; ++k) {
+    const uint32_t key = static_cast<uint32_t>(k);
+    double angle =
+        (-22.0 + 44.0 * k / (kNeedles - 1) + 3.0 * (Hash01(key, 1u, 71u) - 0.5)) * kDegree;
+    double length = 0.80 + 0.12 * Hash01(key, 2u, 71u);
+    double dx = det::Sin(angle), dy = det::Cos(angle);
+    double px = x, py = y - kOriginY;
+    double t = (px * dx + py * dy) / length;  // 0 at the sheath, 1 at the needle's tip
+    if (t < 0.0 || t > 1.0) continue;
+    double perp = std::fabs(px * dy - py * dx);
+    double half = 0.011 * (1.0 - 0.75 * t);
+    if (perp < half) {
+      s.inside = true;
+      s.vein = 0.45 * (1.0 - perp / half) * (1.0 - t);
+      s.edge = std::max(s.edge, perp / half);
+      return s;
+    }
+  }
+  return s;
+}
+
+// Acer palmatum: seven pointed lobes from the blade's centre (0, 0.40), deep sinuses, finely
+// toothed margin, a vein along every lobe, a petiole below; x in [-0.5, 0.5].
+BladeSample PalmateBlade(double x, double y) {
+  BladeSample s;
+  constexpr double kCentreY = 0.40;
+  if (std::fabs(x) < 0.012 && y >= 0.0 && y < kCentreY) {  // petiole
+    s.inside = true;
+    s.vein = 0.3;
+    return s;
+  }
+  static const double kLobeLength[4] = {0.57, 0.52, 0.40, 0.26};  // centre lobe, then outwards
+  constexpr double kLobeStep = 36.0 * kDegree, kLobeHalfWidth = 21.0 * kDegree;
+  double dx = x, dy = y - kCentreY;
+  double r = std::sqrt(dx * dx + dy * dy);
+  double theta = det::Atan2(dx, dy);  // 0 straight up, ± to the sides
+  double reach = 0.10;
+  double vein = 0.0;
+  for (int k = -3; k <= 3; ++k) {
+    double lobe = kLobeLength[std::abs(k)];
+    double off = std::fabs(theta - k * kLobeStep);
+    reach = std::max(reach, 0.10 + lobe * std::max(0.0, 1.0 - off / kLobeHalfWidth));
+    if (off < 0.5 * det::kPi && r < lobe) {
+      double perp = r * det::Sin(off);
+      vein = std::max(vein, 1.0 - SmoothStep(0.003, 0.009, perp));
+    }
+  }
+  reach *= 1.0 + 0.03 * det::Sin(theta * 80.0);  // teeth
+  s.inside = r < reach;
+  s.vein = 0.6 * vein;
+  s.edge = Clamp01(r / reach);
+  return s;
+}
+
+// Ginkgo: a fan spanning ±66° above the petiole's top (0, 0.30), notched in the middle, wavy at
+// the rim, with fine radial veins; x in [-0.6, 0.6].
+BladeSample FanBlade(double x, double y) {
+  BladeSample s;
+  constexpr double kCentreY = 0.30;
+  if (std::fabs(x) < 0.012 && y >= 0.0 && y < kCentreY + 0.02) {  // petiole
+    s.inside = true;
+    s.vein = 0.3;
+    return s;
+  }
+  double dx = x, dy = y - kCentreY;
+  double r = std::sqrt(dx * dx + dy * dy);
+  double theta = det::Atan2(dx, dy);
+  double off = std::fabs(theta);
+  if (off > 66.0 * kDegree) return s;
+  double reach = 0.64 * (1.0 - 0.22 * std::max(0.0, 1.0 - off / (7.0 * kDegree)));  // the notch
+  reach *= 1.0 + 0.025 * det::Sin(theta * 24.0);                                    // wavy rim
+  s.inside = r < reach;
+  double phase = theta / (3.0 * kDegree);
+  double g = phase - std::floor(phase);
+  s.vein = 0.25 * (1.0 - SmoothStep(0.0, 0.18, std::min(g, 1.0 - g))) * SmoothStep(0.05, 0.15, r);
+  s.edge = Clamp01(r / reach);
+  return s;
+}
+
+BladeSample SampleBlade(LeafShape shape, double u, double v) {
+  const double x = (u - 0.5) * LeafQuadAspect(shape);  // physical, in leaf lengths
+  switch (shape) {
+    case LeafShape::kNeedle:
+      return NeedleCluster(x, v);
+    case LeafShape::kPalmate:
+      return PalmateBlade(x, v);
+    case LeafShape::kFan:
+      return FanBlade(x, v);
+    case LeafShape::kBroad:
+    default:
+      return BroadBlade(u, v);
+  }
+}
+
+// The blade's colour in this look (tree_look.h).
+Rgb LeafColour(const TreeLook& look) {
+  const bool evergreen = look.autumn == AutumnColour::kEvergreen;
+  const bool needle = look.leaf_shape == LeafShape::kNeedle;
+  if (look.season == Season::kSpring) {
+    return needle ? Rgb{0.22, 0.46, 0.18} : Rgb{0.38, 0.66, 0.18};
+  }
+  if (look.season == Season::kSummer) return needle ? Rgb{0.15, 0.36, 0.16} : Rgb{0.22, 0.52, 0.15};
+  if (evergreen) return needle ? Rgb{0.13, 0.31, 0.15} : Rgb{0.15, 0.34, 0.12};
+  if (look.season == Season::kWinter) return {0.45, 0.32, 0.18};  // dead leaf (not drawn)
+  switch (look.autumn) {
+    case AutumnColour::kRed:
+      return {0.80, 0.09, 0.06};
+    case AutumnColour::kYellow:
+      return {0.95, 0.80, 0.12};
+    case AutumnColour::kOrangeBrown:
+      return {0.68, 0.36, 0.12};
+    case AutumnColour::kRedOrange:
+    default:
+      return {0.86, 0.34, 0.10};
+  }
+}
+
+// ---- Blossoms ----
+
+const Rgb kPetal{0.99, 0.83, 0.88}, kPetalCentre{0.90, 0.45, 0.60}, kStamen{0.95, 0.80, 0.35};
+
+// A five-petal blossom of radius 1 centred at the origin, one petal pointing along `rotation`:
+// coverage (0..1, antialiased over `pixel` units) and colour at (dx, dy).
+double Blossom(double dx, double dy, double rotation, double pixel, Rgb* colour) {
+  constexpr int kPetals = 5;
+  double r = std::sqrt(dx * dx + dy * dy);
+  if (r > 1.0 + pixel) return 0.0;
+  double angle = det::Atan2(dy, dx) - rotation;
+  double c = det::Cos(kPetals * angle);  // 1 at the petal tips
+  // Broad, rounded petals (a flattened cosine lobe) with the cherry blossom's notch at the tip.
+  double radius = 0.52 + 0.44 * std::sqrt(std::sqrt(0.5 + 0.5 * c));
+  radius -= 0.09 * SmoothStep(0.992, 1.0, c);
+  double coverage = Clamp01((radius - r) / pixel + 0.5);
+  if (coverage <= 0.0) return 0.0;
+  double centre = 0.6 * (1.0 - SmoothStep(0.06, 0.32, r));
+  double rim = SmoothStep(radius - 0.08, radius, r);  // a faint darker outline between blossoms
+  Rgb petal = Scale(MixRgb(kPetal, kPetalCentre, centre), 1.0 - 0.12 * rim);
+  double stamen = 1.0 - SmoothStep(0.06, 0.10, r);
+  *colour = MixRgb(petal, kStamen, stamen);
+  return coverage;
+}
+
 }  // namespace
 
 Rgba8Image MakeBarkTexture(int width, int height) {
   Rgba8Image image = Allocate(width, height);
-  constexpr int kFurrows = 7;  // ridges around the circumference
+  const std::vector<double> relief = BarkReliefImage(image.width, image.height);
   for (int y = 0; y < image.height; ++y) {
-    double v = (y + 0.5) / image.height;
     for (int x = 0; x < image.width; ++x) {
-      double u = (x + 0.5) / image.width;
-      // Furrows wander a little sideways along the wood.
-      double warp = PeriodicFbm(u, v, 4, 6, 3, 11u) - 0.5;
-      double phase = (u + 0.12 * warp) * kFurrows;
-      double f = phase - std::floor(phase);
-      double plate = SmoothStep(0.04, 0.32, std::min(f, 1.0 - f));  // 0 in a furrow, 1 on a ridge
-      // Ridges broken into elongated plates, with some grain.
-      double detail = PeriodicFbm(u, v, 16, 8, 3, 23u);
-      double crack = SmoothStep(0.30, 0.22, PeriodicFbm(u, v, 8, 12, 2, 37u));
       double grain = Hash01(static_cast<uint32_t>(x), static_cast<uint32_t>(y), 41u) - 0.5;
-      double shade = plate * (0.72 + 0.45 * detail) * (1.0 - 0.45 * crack) + 0.08 * grain;
-      shade = Clamp01(shade);
-      double r = Mix(0.16, 0.47, shade), g = Mix(0.11, 0.35, shade), b = Mix(0.08, 0.25, shade);
-      SetPixel(&image, x, y, r, g, b, 1.0);
+      double shade = Clamp01(relief[static_cast<std::size_t>(y * image.width + x)] + 0.08 * grain);
+      SetPixel(&image, x, y,
+               {Mix(0.16, 0.47, shade), Mix(0.11, 0.35, shade), Mix(0.08, 0.25, shade)}, 1.0);
     }
   }
   return image;
 }
 
-Rgba8Image MakeLeafTexture(int width, int height) {
+Rgba8Image MakeBarkNormalMap(int width, int height) {
   Rgba8Image image = Allocate(width, height);
-  constexpr double kStem = 0.06;  // petiole, v < kStem
+  if (image.empty()) return image;
+  const std::vector<double> relief = BarkReliefImage(image.width, image.height);
+  auto h = [&](int x, int y) {
+    x = (x + image.width) % image.width;
+    y = (y + image.height) % image.height;
+    return relief[static_cast<std::size_t>(y * image.width + x)];
+  };
+  // Slope per unit of relief change between neighbouring texels: a plate stands about 6 texels
+  // proud of its furrow at 512 px (deep-furrowed bark); scaled with the size so the look stays.
+  const double strength_x = 6.0 * image.width / 512.0, strength_y = 6.0 * image.height / 512.0;
   for (int y = 0; y < image.height; ++y) {
-    double v = (y + 0.5) / image.height;
-    double half_width;  // of the silhouette, in u
-    if (v < kStem) {
-      half_width = 0.02;
-    } else {
-      double t = (v - kStem) / (1.0 - kStem);
-      half_width =
-          std::max(0.02 * (1.0 - t / 0.05), 0.0) + 0.5 * det::Sin(det::kPi * t) * (1.1 - 0.45 * t);
-      half_width = std::min(half_width, 0.47);
-    }
     for (int x = 0; x < image.width; ++x) {
-      double u = (x + 0.5) / image.width;
-      double d = std::fabs(u - 0.5);
-      double alpha = Clamp01((half_width - d) * image.width + 0.5);
-      // Physical coordinates: the quad is twice as long as it is wide.
-      double across = d * 0.5;
-      double vein_phase = (v - 1.2 * across) * 9.0;
-      double g = vein_phase - std::floor(vein_phase);
-      double vein = 1.0 - SmoothStep(0.0, 0.07, std::min(g, 1.0 - g));
-      vein *= SmoothStep(0.0, 0.03, d) * SmoothStep(0.1, 0.2, v);
-      double midrib = 1.0 - SmoothStep(0.008, 0.02, d);
-      double edge = half_width > 0.0 ? Clamp01(d / half_width) : 1.0;
-      double mottle = PeriodicFbm(u, v, 6, 6, 2, 53u) - 0.5;
-      double shade = (0.88 + 0.12 * v) * (1.0 - 0.18 * edge * edge) + 0.12 * mottle;
-      double r = 0.22 * shade, gr = 0.52 * shade, b = 0.15 * shade;
-      double light = std::max(midrib, 0.35 * vein);
-      r = Mix(r, 0.55, light);
-      gr = Mix(gr, 0.72, light);
-      b = Mix(b, 0.30, light);
-      SetPixel(&image, x, y, r, gr, b, alpha);
+      double du = 0.5 * (h(x + 1, y) - h(x - 1, y)) * strength_x;
+      double drow = 0.5 * (h(x, y + 1) - h(x, y - 1)) * strength_y;
+      // +y of the map is up in the image (towards row 0): d/d(up) = -d/d(row).
+      double nx = -du, ny = drow, nz = 1.0;
+      double n = std::sqrt(nx * nx + ny * ny + nz * nz);
+      SetPixel(&image, x, y, {0.5 + 0.5 * nx / n, 0.5 + 0.5 * ny / n, 0.5 + 0.5 * nz / n}, 1.0);
     }
   }
   return image;
 }
 
-Rgba8Image MakeFlowerTexture(int size) {
+Rgba8Image MakeLeafTexture(const TreeLook& look, int size) {
   Rgba8Image image = Allocate(size, size);
-  constexpr int kPetals = 5;
+  const Rgb base = LeafColour(look);
+  const Rgb light = MixRgb(base, {1.0, 1.0, 0.85}, 0.42);
   for (int y = 0; y < image.height; ++y) {
-    double dy = (y + 0.5) / image.height - 0.5;
     for (int x = 0; x < image.width; ++x) {
-      double dx = (x + 0.5) / image.width - 0.5;
-      double r = std::sqrt(dx * dx + dy * dy);
-      double angle = det::Atan2(dy, dx);
-      double c = det::Cos(kPetals * angle);  // 1 at the petal tips
-      double radius = 0.5 * (0.5 + 0.44 * SmoothStep(-1.0, 1.0, c));
-      radius -= 0.07 * SmoothStep(0.985, 1.0, c);  // cherry-blossom notch at the tip
-      double alpha = Clamp01((radius - r) * image.width + 0.5);
-      double centre = 1.0 - SmoothStep(0.04, 0.2, r);
-      double red = Mix(0.99, 0.90, centre), green = Mix(0.80, 0.45, centre),
-             blue = Mix(0.86, 0.60, centre);
-      double stamen = 1.0 - SmoothStep(0.03, 0.05, r);
-      red = Mix(red, 0.95, stamen);
-      green = Mix(green, 0.80, stamen);
-      blue = Mix(blue, 0.35, stamen);
-      SetPixel(&image, x, y, red, green, blue, alpha);
+      // Coverage from 2 × 2 samples; the colour from the pixel's centre.
+      int covered = 0;
+      for (int k = 0; k < 4; ++k) {
+        double u = (x + 0.25 + 0.5 * (k & 1)) / image.width;
+        double v = (y + 0.25 + 0.5 * (k >> 1)) / image.height;
+        covered += SampleBlade(look.leaf_shape, u, v).inside ? 1 : 0;
+      }
+      double u = (x + 0.5) / image.width, v = (y + 0.5) / image.height;
+      BladeSample s = SampleBlade(look.leaf_shape, u, v);
+      double mottle = PeriodicFbm(u, v, 6, 6, 2, 53u) - 0.5;
+      double shade = (0.88 + 0.12 * v) * (1.0 - 0.18 * s.edge * s.edge) + 0.12 * mottle;
+      Rgb colour = MixRgb(Scale(base, shade), light, Clamp01(s.vein));
+      SetPixel(&image, x, y, colour, covered / 4.0);
     }
   }
   return image;
+}
+
+Rgba8Image MakeBlossomTexture(int size) {
+  Rgba8Image image = Allocate(size, size);
+  const double pixel = 2.0 / std::max(1, size);  // one texel in blossom radii
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      double dx = 2.0 * (x + 0.5) / image.width - 1.0, dy = 2.0 * (y + 0.5) / image.height - 1.0;
+      Rgb colour{0, 0, 0};
+      double a = Blossom(dx, dy, 0.5 * det::kPi, pixel, &colour);
+      SetPixel(&image, x, y, a > 0.0 ? colour : Rgb{kPetal}, a);
+    }
+  }
+  return image;
+}
+
+Rgba8Image MakeBlossomClusterTexture(int size) {
+  Rgba8Image image = Allocate(size, size);
+  struct Placed {
+    double x, y, radius, rotation, shade;
+  };
+  // Six blossoms around one, each turned and shaded a little differently (fixed hashes).
+  std::vector<Placed> blossoms;
+  for (int k = 0; k < 7; ++k) {
+    const uint32_t key = static_cast<uint32_t>(k);
+    double ring = k == 0 ? 0.0 : 0.29 + 0.03 * (Hash01(key, 3u, 97u) - 0.5);
+    double at = (60.0 * k + 14.0 * (Hash01(key, 4u, 97u) - 0.5)) * kDegree;
+    double radius = k == 0 ? 0.21 : 0.19 + 0.02 * Hash01(key, 5u, 97u);
+    blossoms.push_back({ring * det::Cos(at), ring * det::Sin(at), radius,
+                        2.0 * det::kPi * Hash01(key, 6u, 97u), 0.9 + 0.1 * Hash01(key, 7u, 97u)});
+  }
+  std::rotate(blossoms.begin(), blossoms.begin() + 1, blossoms.end());  // the centre one on top
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      double px = (x + 0.5) / image.width - 0.5, py = (y + 0.5) / image.height - 0.5;
+      Rgb out{kPetal};
+      double alpha = 0.0;
+      for (const Placed& b : blossoms) {
+        Rgb colour{0, 0, 0};
+        double a = Blossom((px - b.x) / b.radius, (py - b.y) / b.radius, b.rotation,
+                           1.0 / (b.radius * image.width), &colour);
+        if (a <= 0.0) continue;
+        out = MixRgb(alpha > 0.0 ? out : colour, Scale(colour, b.shade), a);  // "over"
+        alpha = a + alpha * (1.0 - a);
+      }
+      SetPixel(&image, x, y, out, alpha);
+    }
+  }
+  return image;
+}
+
+std::string ImageDigest(const Rgba8Image& image) {
+  uint64_t h = 0xcbf29ce484222325ull;
+  auto mix = [&h](unsigned char byte) {
+    h ^= byte;
+    h *= 0x100000001b3ull;
+  };
+  for (int shift = 0; shift < 32; shift += 8) {
+    mix(static_cast<unsigned char>(static_cast<uint32_t>(image.width) >> shift));
+    mix(static_cast<unsigned char>(static_cast<uint32_t>(image.height) >> shift));
+  }
+  for (unsigned char byte : image.pixels) mix(byte);
+  char text[17];
+  std::snprintf(text, sizeof text, "%016" PRIx64, h);
+  return text;
 }
 
 }  // namespace niwa

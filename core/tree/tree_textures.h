@@ -1,25 +1,46 @@
-// Procedural RGBA8 textures of the tree's exported materials (bark, leaf, flower), as
-// image::Rgba8Image (row 0 is texture coordinate v = 0, glTF's top-left origin; PNG encoding is
-// image/png.h). Deterministic: integer hashing and det:: math only, so the native and WASM builds
-// give the same pixels. Does not: encode files, or texture anything but the tree's glTF materials.
+// Procedural RGBA8 textures of the tree's exported and drawn materials (bark colour and normal
+// map, one leaf blade per leaf shape in its season's colour, blossoms), as image::Rgba8Image (row 0
+// is texture coordinate v = 0, glTF's top-left origin; PNG encoding is image/png.h). The .glb
+// (tree/tree_gltf) and the page (web/bindings/texture_bindings.cpp) use the same pixels.
+// Deterministic: integer hashing and det:: math only, so the native and WASM builds give the same
+// bytes. Why no library: none of the header-only image libraries here (stb) paints; this is a few
+// noise and distance functions. Does not: encode files, or texture anything but the tree.
 #pragma once
 
+#include <string>
+
 #include "image/image.h"
+#include "tree/tree_look.h"
 
 namespace niwa {
 
 using image::Rgba8Image;
 
+constexpr int kTreeTextureSize = 512;  // every default texture is 512 × 512
+
 // Bark: brown with vertical furrows, opaque, tileable in u (around the tube) and in v (along it).
 // One repeat spans u 0..1 (the whole circumference) and v 0..1 (one metre of wood).
-Rgba8Image MakeBarkTexture(int width = 128, int height = 256);
+Rgba8Image MakeBarkTexture(int width = kTreeTextureSize, int height = kTreeTextureSize);
 
-// Leaf blade in the leaf quad's UV space: u across (midrib at u = 0.5), v from the base (v = 0) to
-// the tip (v = 1); green with a lighter midrib and veins; alpha 0 outside the silhouette.
-Rgba8Image MakeLeafTexture(int width = 128, int height = 128);
+// The bark's tangent-space normal map (glTF normalTexture: RGB = (n + 1) / 2, +x along u, +y along
+// v, +z out of the wood) from the same furrow relief as MakeBarkTexture; tileable; alpha 255.
+Rgba8Image MakeBarkNormalMap(int width = kTreeTextureSize, int height = kTreeTextureSize);
 
-// Five pink petals around (0.5, 0.5) (petal tips at angles 0°, 72°, ... as in the flower mesh),
-// with a darker centre; alpha 0 between and outside the petals.
-Rgba8Image MakeFlowerTexture(int size = 64);
+// One leaf blade in the leaf quad's UV space: u across (midrib at u = 0.5), v from the base
+// (v = 0) to the tip (v = 1), for the quad's proportions (LeafQuadAspect). Alpha 0 outside the
+// silhouette. The colour is the look's: summer green, spring's fresh green, the autumn colour, or
+// an evergreen's darker green in autumn and winter.
+Rgba8Image MakeLeafTexture(const TreeLook& look, int size = kTreeTextureSize);
+
+// One five-petal cherry blossom around (0.5, 0.5) (notched petal tips at 90°, 162°, ...), with a
+// darker centre and stamens; alpha 0 between and outside the petals.
+Rgba8Image MakeBlossomTexture(int size = kTreeTextureSize);
+
+// The flower card's texture: seven five-petal blossoms packed in the unit disc (an umbel seen from
+// above), so that a flower node reads from a distance; alpha 0 outside the blossoms.
+Rgba8Image MakeBlossomClusterTexture(int size = kTreeTextureSize);
+
+// FNV-1a digest of an image's size and pixels ("%016llx"), for native == WASM checks.
+std::string ImageDigest(const Rgba8Image& image);
 
 }  // namespace niwa

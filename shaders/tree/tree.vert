@@ -8,7 +8,7 @@ layout(location = 1) in vec3 aNormal;
 layout(location = 3) in float aHighlight;
 layout(location = 4) in uint aJoint;   // node point of the vertex
 layout(location = 5) in float aWeight; // (l_jn / l_j)^alpha of its node (eq. 3.15)
-layout(location = 6) in vec2 aUv;      // leaves: v = 0 at the petiole, 1 at the tip
+layout(location = 6) in vec2 aUv;      // texture coordinates (leaves: v = 0 at the petiole, 1 at the tip)
 
 uniform mat4 uViewProjection;
 uniform float uTime;        // simulated time, s
@@ -18,6 +18,7 @@ uniform float uLeafLength;  // metres
 out vec3 vNormal;
 out vec3 vWorld;
 out float vSelected;
+out vec2 vUv;  // for tree_textured.frag (tree.frag ignores it)
 
 #include "../common/skin.glsl"
 
@@ -38,5 +39,6 @@ void main() {
   vNormal = rotation * aNormal;
   vWorld = world;
   vSelected = aHighlight;
+  vUv = aUv;
   gl_Position = uViewProjection * vec4(world, 1.0);
 }

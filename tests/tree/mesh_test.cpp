@@ -178,8 +178,8 @@ TEST(MeshTest, VertexNodeIdsNameTheNodeEachVertexHangsOn) {
   }
   for (std::size_t v = 0; v < mesh.flowers.vertex_count(); ++v) {
     glm::vec3 node = node_of(mesh.flower_branch_id[v], mesh.flower_node_index[v]);
-    // A petal tip is 1.6 cm out from the hub, which sits 0.3 cm off the node.
-    ASSERT_LE(glm::length(Vec(mesh.flowers.positions, v) - node), 1.63f * kScale) << v;
+    // The blossom card's rim is 4 cm out from the hub, which sits 0.3 cm off the node.
+    ASSERT_LE(glm::length(Vec(mesh.flowers.positions, v) - node), 4.02f * kScale) << v;
   }
 }
 
@@ -320,7 +320,7 @@ TEST(MeshTest, LeafQuadsLieAlongTheLeafDirection) {
   EXPECT_EQ(mesh.leaves.vertex_count(), 8 * quad);
 }
 
-TEST(MeshTest, FlowersAreThreePointTwoCentimetresAcrossAndFaceUp) {
+TEST(MeshTest, FlowerCardsAreEightCentimetresAcrossAndFaceUp) {
   Tree tree = Grow("sakura-thesis", 8);
   TreeMesh mesh = BuildTreeMesh(tree);
   ASSERT_GT(mesh.flowers.vertex_count(), 0u);
@@ -330,7 +330,7 @@ TEST(MeshTest, FlowersAreThreePointTwoCentimetresAcrossAndFaceUp) {
     for (std::size_t k = 1; k <= 10; ++k) {
       widest = std::max(widest, glm::length(Vec(mesh.flowers.positions, f + k) - hub));
     }
-    EXPECT_NEAR(2.0f * widest, 3.2f * kScale, 1e-5f);
+    EXPECT_NEAR(2.0f * widest, 8.0f * kScale, 1e-5f);  // a blossom cluster (mesh.h)
     EXPECT_GT(Vec(mesh.flowers.normals, f).y, 0.5f);
     EXPECT_EQ(Vec(mesh.flowers.normals, f + 11), -Vec(mesh.flowers.normals, f));
   }
@@ -351,6 +351,83 @@ TEST(MeshTest, UnitsScaleEveryPosition) {
     ASSERT_NEAR(in_cm.leaves.positions[i] * kScale, in_m.leaves.positions[i], 1e-5f);
   }
   EXPECT_EQ(in_cm.bark.normals, in_m.bark.normals);
+}
+
+}  // namespace
+}  // namespace niwa
+
+namespace niwa {
+namespace {
+
+TreeMesh MeshIn(const Tree& tree, LeafShape shape, Season season, AutumnColour autumn) {
+  MeshOptions options;
+  options.look = TreeLook{shape, season, autumn};
+  return BuildTreeMesh(tree, options);
+}
+
+TEST(MeshSeasons, WinterIsBareSpringCherriesBlossomOnBareWoodAutumnHasNoFlowers) {
+  Tree sakura = Grow("sakura-thesis", 8);
+  const TreeMesh summer = BuildTreeMesh(sakura);
+  ASSERT_GT(summer.leaves.vertex_count(), 0u);
+  ASSERT_GT(summer.flowers.vertex_count(), 0u);
+  EXPECT_EQ(summer.look.season, Season::kSummer);  // the table's default
+  const AutumnColour red_orange = AutumnColour::kRedOrange;
+  TreeMesh winter = MeshIn(sakura, LeafShape::kBroad, Season::kWinter, red_orange);
+  EXPECT_EQ(winter.leaves.vertex_count(), 0u);
+  EXPECT_EQ(winter.flowers.vertex_count(), 0u);
+  EXPECT_EQ(winter.bark.positions, summer.bark.positions);  // the same wood
+  TreeMesh spring = MeshIn(sakura, LeafShape::kBroad, Season::kSpring, red_orange);
+  EXPECT_EQ(spring.leaves.vertex_count(), 0u);
+  EXPECT_EQ(spring.flowers.positions, summer.flowers.positions);
+  TreeMesh autumn = MeshIn(sakura, LeafShape::kBroad, Season::kAutumn, red_orange);
+  EXPECT_EQ(autumn.leaves.positions, summer.leaves.positions);
+  EXPECT_EQ(autumn.flowers.vertex_count(), 0u);
+  // A tree without flowers keeps its leaves in spring; an evergreen keeps them in winter.
+  Tree keyaki = Grow("keyaki-thesis", 4);
+  ASSERT_EQ(BuildTreeMesh(keyaki).flowers.vertex_count(), 0u);
+  EXPECT_GT(MeshIn(keyaki, LeafShape::kBroad, Season::kSpring, AutumnColour::kOrangeBrown)
+                .leaves.vertex_count(),
+            0u);
+  TreeMesh evergreen =
+      MeshIn(keyaki, LeafShape::kNeedle, Season::kWinter, AutumnColour::kEvergreen);
+  EXPECT_EQ(evergreen.leaves.vertex_count(), BuildTreeMesh(keyaki).leaves.vertex_count());
+}
+
+TEST(MeshSeasons, TheSeasonRowOfTheTreeIsUsedWhenNoLookIsGiven) {
+  Tree sakura = Grow("sakura-thesis", 6);
+  ASSERT_TRUE(sakura.params.Set(TreeParam::kSeason, 3).ok());
+  TreeMesh mesh = BuildTreeMesh(sakura);
+  EXPECT_EQ(mesh.look.season, Season::kWinter);
+  EXPECT_EQ(mesh.leaves.vertex_count(), 0u);
+}
+
+TEST(MeshLeafShapes, QuadWidthFollowsTheShape) {
+  Tree tree = Grow("keyaki-thesis", 3);
+  const float size = static_cast<float>(tree.params.Get(ParamId::kLeafSize)) * kScale;
+  for (LeafShape shape :
+       {LeafShape::kBroad, LeafShape::kNeedle, LeafShape::kPalmate, LeafShape::kFan}) {
+    TreeMesh mesh = MeshIn(tree, shape, Season::kSummer, AutumnColour::kRedOrange);
+    ASSERT_GT(mesh.leaves.vertex_count(), 0u);
+    EXPECT_EQ(mesh.leaves.vertex_count(), BuildTreeMesh(tree).leaves.vertex_count());
+    float width = glm::length(Vec(mesh.leaves.positions, 1) - Vec(mesh.leaves.positions, 0));
+    EXPECT_NEAR(width, LeafQuadAspect(shape) * size, 1e-5f) << LeafShapeName(shape);
+  }
+  EXPECT_FLOAT_EQ(LeafQuadAspect(LeafShape::kBroad), 0.5f);
+  EXPECT_FLOAT_EQ(LeafQuadAspect(LeafShape::kFan), 1.2f);
+}
+
+TEST(MeshLeafShapes, SpeciesPresetsCarryTheirShapeAndAutumnColour) {
+  auto look = [](const char* preset) { return LookFromParams(FindPreset(preset)->params); };
+  EXPECT_EQ(look("pine").leaf_shape, LeafShape::kNeedle);
+  EXPECT_EQ(look("pine").autumn, AutumnColour::kEvergreen);
+  EXPECT_EQ(look("maple").leaf_shape, LeafShape::kPalmate);
+  EXPECT_EQ(look("maple").autumn, AutumnColour::kRed);
+  EXPECT_EQ(look("ginkgo").leaf_shape, LeafShape::kFan);
+  EXPECT_EQ(look("ginkgo").autumn, AutumnColour::kYellow);
+  EXPECT_EQ(look("keyaki").autumn, AutumnColour::kOrangeBrown);
+  EXPECT_EQ(look("sakura").leaf_shape, LeafShape::kBroad);
+  EXPECT_EQ(look("sakura").autumn, AutumnColour::kRedOrange);
+  EXPECT_EQ(look("tsutsuji").autumn, AutumnColour::kEvergreen);
 }
 
 }  // namespace

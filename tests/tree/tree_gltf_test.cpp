@@ -152,12 +152,13 @@ TEST(TreeGltf, WritesAGlbWithBarkLeavesAndFlowers) {
   ExpectPrimitiveMatches(glb, primitives[1], mesh.leaves, "leaves", true);
   ExpectPrimitiveMatches(glb, primitives[2], mesh.flowers, "flowers", true);
 
-  // One procedural texture per material, embedded byte for byte.
-  ASSERT_EQ(gltf["textures"].size(), 3u);
-  ASSERT_EQ(gltf["images"].size(), 3u);
-  const std::vector<unsigned char> expected[3] = {*image::EncodeRgba8Png(MakeBarkTexture()),
-                                                  *image::EncodeRgba8Png(MakeLeafTexture()),
-                                                  *image::EncodeRgba8Png(MakeFlowerTexture())};
+  // One procedural base-colour texture per material (and the bark's normal map), embedded byte
+  // for byte.
+  ASSERT_EQ(gltf["textures"].size(), 4u);
+  ASSERT_EQ(gltf["images"].size(), 4u);
+  const std::vector<unsigned char> expected[3] = {
+      *image::EncodeRgba8Png(MakeBarkTexture()), *image::EncodeRgba8Png(MakeLeafTexture({})),
+      *image::EncodeRgba8Png(MakeBlossomClusterTexture())};
   for (std::size_t i = 0; i < 3; ++i) {
     const json& mat = gltf["materials"][primitives[i]["material"].get<std::size_t>()];
     std::size_t texture = mat["pbrMetallicRoughness"]["baseColorTexture"]["index"];
@@ -216,8 +217,8 @@ TEST(TreeGltf, SkipsEmptyPrimitives) {
   ExpectPrimitiveMatches(glb, primitives[0], mesh.bark, "bark", false);
   ExpectPrimitiveMatches(glb, primitives[1], mesh.leaves, "leaves", true);
   EXPECT_EQ(glb.gltf["materials"].size(), 2u);
-  EXPECT_EQ(glb.gltf["textures"].size(), 2u);  // no flower texture without flowers
-  EXPECT_EQ(glb.gltf["images"].size(), 2u);
+  EXPECT_EQ(glb.gltf["textures"].size(), 3u);  // bark, its normal map, leaf: no flower texture
+  EXPECT_EQ(glb.gltf["images"].size(), 3u);
 }
 
 TEST(TreeGltf, EmptyMeshGivesAValidSceneWithoutMesh) {

@@ -1,13 +1,20 @@
-// Unit tests of the tree's procedural material textures: determinism, leaf/flower alpha, bark
-// tiling, PNG.
+// Unit tests of the tree's procedural material textures: sizes, alpha coverage and outline per leaf
+// shape, season colours, blossoms, bark colour and normal map tiling, digests (native == WASM),
+// PNG.
 #include "tree/tree_textures.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdlib>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "image/png.h"
+#include "math/det_math.h"
 
 namespace niwa {
 namespace {
@@ -31,83 +38,258 @@ double ColumnDifference(const Rgba8Image& image, int a, int b) {
   return sum / (3.0 * image.height);
 }
 
-TEST(TexturesTest, SizesAndPixelCounts) {
-  Rgba8Image bark = MakeBarkTexture();
-  EXPECT_EQ(bark.width, 128);
-  EXPECT_EQ(bark.height, 256);
-  EXPECT_EQ(bark.pixels.size(), 4u * 128u * 256u);
-  Rgba8Image leaf = MakeLeafTexture();
-  EXPECT_EQ(leaf.width, 128);
-  EXPECT_EQ(leaf.height, 128);
-  EXPECT_EQ(leaf.pixels.size(), 4u * 128u * 128u);
-  Rgba8Image flower = MakeFlowerTexture(32);
-  EXPECT_EQ(flower.pixels.size(), 4u * 32u * 32u);
+TreeLook Look(LeafShape shape, Season season = Season::kSummer,
+              AutumnColour autumn = AutumnColour::kRedOrange) {
+  TreeLook look;
+  look.leaf_shape = shape;
+  look.season = season;
+  look.autumn = autumn;
+  return look;
+}
+
+const LeafShape kShapes[] = {LeafShape::kBroad, LeafShape::kNeedle, LeafShape::kPalmate,
+                             LeafShape::kFan};
+
+// Share of the pixels with alpha >= 128.
+double Coverage(const Rgba8Image& image) {
+  int opaque = 0;
+  for (std::size_t i = 3; i < image.pixels.size(); i += 4) opaque += image.pixels[i] >= 128;
+  return static_cast<double>(opaque) / (image.width * image.height);
+}
+
+// Mean r, g, b (0..255) of the pixels with alpha >= 128.
+std::array<double, 3> MeanOpaqueColour(const Rgba8Image& image) {
+  std::array<double, 3> sum{0, 0, 0};
+  int n = 0;
+  for (std::size_t i = 0; i < image.pixels.size(); i += 4) {
+    if (image.pixels[i + 3] < 128) continue;
+    for (int c = 0; c < 3; ++c)
+      sum[static_cast<std::size_t>(c)] += image.pixels[i + static_cast<std::size_t>(c)];
+    ++n;
+  }
+  for (double& c : sum) c /= std::max(1, n);
+  return sum;
+}
+
+// Runs of opaque pixels (alpha >= 128) met along a path of texel coordinates.
+int OpaqueRuns(const Rgba8Image& image, const std::vector<std::pair<int, int>>& path) {
+  int runs = 0;
+  bool inside = false;
+  for (auto [x, y] : path) {
+    bool opaque = image.At(x, y)[3] >= 128;
+    if (opaque && !inside) ++runs;
+    inside = opaque;
+  }
+  return runs;
+}
+
+std::vector<std::pair<int, int>> Row(const Rgba8Image& image, double v) {
+  std::vector<std::pair<int, int>> path;
+  int y = static_cast<int>(v * image.height);
+  for (int x = 0; x < image.width; ++x) path.push_back({x, y});
+  return path;
+}
+
+TEST(TexturesTest, SizesAreAtLeast512AndPixelCountsMatch) {
+  EXPECT_EQ(kTreeTextureSize, 512);
+  for (const Rgba8Image& image : {MakeBarkTexture(), MakeBarkNormalMap(), MakeLeafTexture({}),
+                                  MakeBlossomTexture(), MakeBlossomClusterTexture()}) {
+    EXPECT_EQ(image.width, 512);
+    EXPECT_EQ(image.height, 512);
+    EXPECT_TRUE(image.consistent());
+    EXPECT_EQ(image.pixels.size(), 4u * 512u * 512u);
+  }
+  for (LeafShape shape : kShapes) {
+    Rgba8Image leaf = MakeLeafTexture(Look(shape), 64);
+    EXPECT_EQ(leaf.width, 64);
+    EXPECT_EQ(leaf.pixels.size(), 4u * 64u * 64u);
+  }
+  EXPECT_EQ(MakeBlossomTexture(32).pixels.size(), 4u * 32u * 32u);
   EXPECT_TRUE(MakeBarkTexture(0, 16).pixels.empty());
+  EXPECT_TRUE(MakeBarkNormalMap(16, 0).pixels.empty());
   EXPECT_FALSE(image::EncodeRgba8Png(Rgba8Image{}).ok());
 }
 
 TEST(TexturesTest, DeterministicPixelsAndPngBytes) {
   EXPECT_EQ(MakeBarkTexture().pixels, MakeBarkTexture().pixels);
-  EXPECT_EQ(MakeLeafTexture().pixels, MakeLeafTexture().pixels);
-  EXPECT_EQ(MakeFlowerTexture().pixels, MakeFlowerTexture().pixels);
+  EXPECT_EQ(MakeBarkNormalMap().pixels, MakeBarkNormalMap().pixels);
+  EXPECT_EQ(MakeBlossomClusterTexture().pixels, MakeBlossomClusterTexture().pixels);
+  for (LeafShape shape : kShapes) {
+    EXPECT_EQ(MakeLeafTexture(Look(shape)).pixels, MakeLeafTexture(Look(shape)).pixels);
+  }
   EXPECT_EQ(*image::EncodeRgba8Png(MakeBarkTexture()), *image::EncodeRgba8Png(MakeBarkTexture()));
-  EXPECT_EQ(*image::EncodeRgba8Png(MakeLeafTexture()), *image::EncodeRgba8Png(MakeLeafTexture()));
-  EXPECT_EQ(*image::EncodeRgba8Png(MakeFlowerTexture()),
-            *image::EncodeRgba8Png(MakeFlowerTexture()));
+  EXPECT_EQ(*image::EncodeRgba8Png(MakeLeafTexture({})),
+            *image::EncodeRgba8Png(MakeLeafTexture({})));
+}
+
+// The digests the native build gives (printed by this test when they differ). This binary also
+// runs under node on the WASM build (tests/CMakeLists.txt), where the same pixels must come out:
+// the native == WASM check of the texture generator. A change of a texture changes its digest
+// here on purpose.
+TEST(TexturesTest, DigestsAreTheSameInBothBuilds) {
+  EXPECT_EQ(ImageDigest(MakeBarkTexture()), "611837a32a63d9a6");
+  EXPECT_EQ(ImageDigest(MakeBarkNormalMap()), "b45e564d5717ba10");
+  EXPECT_EQ(ImageDigest(MakeBlossomClusterTexture()), "48b8b94065b4126f");
+  EXPECT_EQ(ImageDigest(MakeLeafTexture(Look(LeafShape::kBroad))), "902164d1b8a9e981");
+  EXPECT_EQ(ImageDigest(MakeLeafTexture(Look(LeafShape::kNeedle))), "20d37772113f831f");
+  EXPECT_EQ(
+      ImageDigest(MakeLeafTexture(Look(LeafShape::kPalmate, Season::kAutumn, AutumnColour::kRed))),
+      "8c960e408a920d4f");
+  EXPECT_EQ(
+      ImageDigest(MakeLeafTexture(Look(LeafShape::kFan, Season::kAutumn, AutumnColour::kYellow))),
+      "7efb5f0052030506");
+  // The digest sees a one-byte change and the size.
+  Rgba8Image a = MakeBlossomTexture(16), b = a;
+  b.pixels[77] ^= 1;
+  EXPECT_NE(ImageDigest(a), ImageDigest(b));
+  EXPECT_NE(ImageDigest(image::MakeRgba8(4, 8)), ImageDigest(image::MakeRgba8(8, 4)));
 }
 
 TEST(TexturesTest, PngHeaderMatchesTheImage) {
-  Rgba8Image leaf = MakeLeafTexture();
-  std::vector<unsigned char> png = *image::EncodeRgba8Png(leaf);
+  std::vector<unsigned char> png = *image::EncodeRgba8Png(MakeLeafTexture({}));
   ASSERT_TRUE(HasPngMagic(png));
   ASSERT_GT(png.size(), 33u);
   EXPECT_EQ(std::string(png.begin() + 12, png.begin() + 16), "IHDR");
-  EXPECT_EQ(ReadBigEndian(png, 16), 128u);  // width
-  EXPECT_EQ(ReadBigEndian(png, 20), 128u);  // height
+  EXPECT_EQ(ReadBigEndian(png, 16), 512u);  // width
+  EXPECT_EQ(ReadBigEndian(png, 20), 512u);  // height
   EXPECT_EQ(png[24], 8);                    // bit depth
   EXPECT_EQ(png[25], 6);                    // colour type RGBA
   EXPECT_EQ(std::string(png.end() - 8, png.end() - 4), "IEND");
-  EXPECT_TRUE(HasPngMagic(*image::EncodeRgba8Png(MakeBarkTexture())));
-  EXPECT_TRUE(HasPngMagic(*image::EncodeRgba8Png(MakeFlowerTexture())));
 }
 
-TEST(TexturesTest, LeafIsOpaqueInsideAndTransparentOutside) {
-  Rgba8Image leaf = MakeLeafTexture();
-  const int w = leaf.width - 1, h = leaf.height - 1;
-  for (auto [x, y] : {std::pair{0, 0}, {w, 0}, {0, h}, {w, h}}) {
-    EXPECT_EQ(leaf.At(x, y)[3], 0) << x << "," << y;
+TEST(TexturesTest, EveryLeafShapeIsCutOutWithTransparentCorners) {
+  for (LeafShape shape : kShapes) {
+    Rgba8Image leaf = MakeLeafTexture(Look(shape));
+    const int w = leaf.width - 1, h = leaf.height - 1;
+    for (auto [x, y] : {std::pair{0, 0}, {w, 0}, {0, h}, {w, h}}) {
+      EXPECT_EQ(leaf.At(x, y)[3], 0) << LeafShapeName(shape) << " " << x << "," << y;
+    }
+    for (int y = 0; y <= h; ++y) {  // the quad's sides are outside every blade
+      EXPECT_EQ(leaf.At(0, y)[3], 0) << LeafShapeName(shape) << " " << y;
+      EXPECT_EQ(leaf.At(w, y)[3], 0) << LeafShapeName(shape) << " " << y;
+    }
+    // The base (petiole or sheath) is on the midline and opaque.
+    EXPECT_EQ(leaf.At(leaf.width / 2, leaf.height / 20)[3], 255) << LeafShapeName(shape);
   }
-  for (int y = 0; y <= h; ++y) {  // the quad's sides are outside the blade
-    EXPECT_EQ(leaf.At(0, y)[3], 0) << y;
-    EXPECT_EQ(leaf.At(w, y)[3], 0) << y;
-  }
-  const unsigned char* centre = leaf.At(leaf.width / 2, leaf.height / 2);
-  EXPECT_EQ(centre[3], 255);
-  const unsigned char* blade = leaf.At(leaf.width / 2 - 20, leaf.height / 2);
-  EXPECT_EQ(blade[3], 255);
-  EXPECT_GT(blade[1], blade[0]);  // green
-  EXPECT_GT(blade[1], blade[2]);
-  int opaque = 0;
-  for (std::size_t i = 3; i < leaf.pixels.size(); i += 4) opaque += leaf.pixels[i] >= 128;
-  double coverage = static_cast<double>(opaque) / (leaf.width * leaf.height);
-  EXPECT_GT(coverage, 0.35);
-  EXPECT_LT(coverage, 0.8);
 }
 
-TEST(TexturesTest, FlowerHasPetalsWithAlpha) {
-  Rgba8Image flower = MakeFlowerTexture();
+// Coverage of each blade against its area worked out from its outline (tree_textures.cpp):
+// broad ∫ 2·w(v) dv ≈ 0.55 of its quad; needles 14 × 0.86 long × 0.0138 mean width ≈ 0.17 of a
+// 0.8-wide quad plus the sheath; palmate, seven lobes out to 0.26-0.57 from a 0.1 core ≈ 0.3-0.5;
+// fan, a 132° sector of radius 0.64 = 0.47 in a 1.2 quad ≈ 0.39 minus the notch.
+TEST(TexturesTest, AlphaCoveragePerShape) {
+  const double broad = Coverage(MakeLeafTexture(Look(LeafShape::kBroad)));
+  const double needle = Coverage(MakeLeafTexture(Look(LeafShape::kNeedle)));
+  const double palmate = Coverage(MakeLeafTexture(Look(LeafShape::kPalmate)));
+  const double fan = Coverage(MakeLeafTexture(Look(LeafShape::kFan)));
+  EXPECT_GT(broad, 0.45);
+  EXPECT_LT(broad, 0.70);
+  EXPECT_GT(needle, 0.14);
+  EXPECT_LT(needle, 0.28);
+  EXPECT_GT(palmate, 0.28);
+  EXPECT_LT(palmate, 0.55);
+  EXPECT_GT(fan, 0.32);
+  EXPECT_LT(fan, 0.42);
+}
+
+TEST(TexturesTest, ShapesReadAsTheirShapes) {
+  // Broad: one blade across any row; needles: many across the upper half.
+  Rgba8Image broad = MakeLeafTexture(Look(LeafShape::kBroad));
+  EXPECT_EQ(OpaqueRuns(broad, Row(broad, 0.5)), 1);
+  Rgba8Image needle = MakeLeafTexture(Look(LeafShape::kNeedle));
+  EXPECT_GE(OpaqueRuns(needle, Row(needle, 0.7)), 10);
+  // Palmate: seven lobes met on a circle of radius 0.33 round the blade's centre (0.5, 0.40).
+  Rgba8Image palmate = MakeLeafTexture(Look(LeafShape::kPalmate));
+  std::vector<std::pair<int, int>> circle;
+  for (int k = 0; k <= 720; ++k) {
+    double angle = (-140.0 + 280.0 * k / 720.0) * det::kPi / 180.0;  // 0 up
+    double u = 0.5 + 0.33 * det::Sin(angle), v = 0.40 + 0.33 * det::Cos(angle);
+    circle.push_back({static_cast<int>(u * palmate.width), static_cast<int>(v * palmate.height)});
+  }
+  EXPECT_EQ(OpaqueRuns(palmate, circle), 7);
+  // Fan: the notch at the top middle is open while the rim beside it is blade.
+  Rgba8Image fan = MakeLeafTexture(Look(LeafShape::kFan));
+  auto alpha = [&fan](double u, double v) {
+    return fan.At(static_cast<int>(u * fan.width), static_cast<int>(v * fan.height))[3];
+  };
+  EXPECT_EQ(alpha(0.5, 0.85), 0);
+  EXPECT_EQ(alpha(0.58, 0.85), 255);
+  EXPECT_EQ(alpha(0.42, 0.85), 255);
+  EXPECT_EQ(OpaqueRuns(fan, Row(fan, 0.85)), 2);
+}
+
+TEST(TexturesTest, SeasonsColourTheLeaves) {
+  auto mean = [](LeafShape shape, Season season, AutumnColour autumn) {
+    return MeanOpaqueColour(MakeLeafTexture(Look(shape, season, autumn), 128));
+  };
+  auto summer = mean(LeafShape::kBroad, Season::kSummer, AutumnColour::kRedOrange);
+  EXPECT_GT(summer[1], summer[0]);  // green
+  EXPECT_GT(summer[1], summer[2]);
+  auto spring = mean(LeafShape::kBroad, Season::kSpring, AutumnColour::kRedOrange);
+  EXPECT_GT(spring[1], summer[1]);  // fresher, lighter green
+  auto maple = mean(LeafShape::kPalmate, Season::kAutumn, AutumnColour::kRed);
+  EXPECT_GT(maple[0], 2.5 * maple[1]);  // red
+  auto ginkgo = mean(LeafShape::kFan, Season::kAutumn, AutumnColour::kYellow);
+  EXPECT_GT(ginkgo[0], 150.0);  // yellow: red and green high, blue low
+  EXPECT_GT(ginkgo[1], 130.0);
+  EXPECT_LT(ginkgo[2], 0.4 * ginkgo[1]);
+  auto sakura = mean(LeafShape::kBroad, Season::kAutumn, AutumnColour::kRedOrange);
+  EXPECT_GT(sakura[0], 1.8 * sakura[1]);
+  EXPECT_GT(sakura[1], 1.5 * sakura[2]);
+  auto keyaki = mean(LeafShape::kBroad, Season::kAutumn, AutumnColour::kOrangeBrown);
+  EXPECT_LT(keyaki[0], sakura[0]);  // browner: darker than sakura's red-orange
+  auto pine = mean(LeafShape::kNeedle, Season::kWinter, AutumnColour::kEvergreen);
+  EXPECT_GT(pine[1], pine[0]);  // an evergreen stays green
+}
+
+TEST(TexturesTest, BlossomHasFivePetalsAndTheClusterSeveralBlossoms) {
+  Rgba8Image flower = MakeBlossomTexture();
   const int n = flower.width - 1;
   EXPECT_EQ(flower.At(0, 0)[3], 0);
   EXPECT_EQ(flower.At(n, n)[3], 0);
   EXPECT_EQ(flower.At(flower.width / 2, flower.height / 2)[3], 255);
-  // A petal tip direction (angle 0: +u) reaches further than the gap between petals (angle 36°).
-  const unsigned char* petal =
-      flower.At(flower.width / 2 + flower.width * 4 / 10, flower.height / 2);
-  EXPECT_GT(petal[3], 128);
-  EXPECT_GT(petal[0], petal[1]);  // pink
-  int transparent = 0;
-  for (std::size_t i = 3; i < flower.pixels.size(); i += 4) transparent += flower.pixels[i] < 128;
-  EXPECT_GT(transparent, flower.width * flower.height / 4);
+  // Five petals met on a circle of 0.8 radii round the centre.
+  std::vector<std::pair<int, int>> circle;
+  for (int k = 0; k < 720; ++k) {
+    // From a gap between petals (tips at 90° + k·72°, gaps 36° beyond), once round.
+    double angle = 2.0 * det::kPi * (k + 0.5) / 720.0 + 0.7 * det::kPi;
+    circle.push_back({static_cast<int>((0.5 + 0.4 * det::Cos(angle)) * flower.width),
+                      static_cast<int>((0.5 + 0.4 * det::Sin(angle)) * flower.height)});
+  }
+  EXPECT_EQ(OpaqueRuns(flower, circle), 5);
+  auto pink = MeanOpaqueColour(flower);
+  EXPECT_GT(pink[0], pink[1]);
+  EXPECT_GT(pink[2], pink[1]);
+
+  Rgba8Image cluster = MakeBlossomClusterTexture();
+  EXPECT_EQ(cluster.At(0, 0)[3], 0);
+  EXPECT_EQ(cluster.At(cluster.width - 1, cluster.height / 2)[3], 0);  // outside the disc
+  EXPECT_EQ(cluster.At(cluster.width / 2, cluster.height / 2)[3], 255);
+  const double coverage = Coverage(cluster);
+  EXPECT_GT(coverage, 0.35);  // most of the card's disc (π/4 = 0.785 of the square)
+  EXPECT_LT(coverage, 0.75);
+  // Across the middle row: the centre blossom and one on each side at least.
+  EXPECT_GE(OpaqueRuns(cluster, Row(cluster, 0.5)), 1);
+  auto cluster_pink = MeanOpaqueColour(cluster);
+  EXPECT_GT(cluster_pink[0], cluster_pink[1]);
+}
+
+TEST(TexturesTest, BarkNormalMapPointsOutAndTiles) {
+  Rgba8Image normal = MakeBarkNormalMap();
+  double z = 0.0, spread = 0.0;
+  for (std::size_t i = 0; i < normal.pixels.size(); i += 4) {
+    EXPECT_EQ(normal.pixels[i + 3], 255);
+    double nx = normal.pixels[i] / 127.5 - 1.0, ny = normal.pixels[i + 1] / 127.5 - 1.0,
+           nz = normal.pixels[i + 2] / 127.5 - 1.0;
+    EXPECT_NEAR(nx * nx + ny * ny + nz * nz, 1.0, 0.03);  // unit (8-bit rounding)
+    z += nz;
+    spread += std::fabs(nx);
+  }
+  const double pixels = normal.width * normal.height;
+  EXPECT_GT(z / pixels, 0.8);        // mostly out of the wood
+  EXPECT_GT(spread / pixels, 0.05);  // with relief: the furrows tilt it across (x)
+  EXPECT_LT(ColumnDifference(normal, normal.width - 1, 0),
+            3.0 * ColumnDifference(normal, 0, 1) + 3.0);  // wraps around the tube
 }
 
 TEST(TexturesTest, BarkIsOpaqueBrownAndTileable) {

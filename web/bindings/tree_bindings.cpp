@@ -15,7 +15,8 @@
 //     "bark" | "leaves" | "flowers"   positions, normals (Float32 xyz), indices (Uint32), joints
 //                                     (Uint32, node point per vertex) and weights (Float32,
 //                                     eq. 3.15) of the sway skin (core/sway/skin.h); leaves also
-//                                     uvs (v = 0 at the petiole); bark also branchIds (Uint32 per
+//                                     uvs (Float32 uv: the texture coordinates of the .glb; leaves
+//                                     v = 0 at the petiole); bark also branchIds (Uint32 per
 //                                     vertex) and branchParents (Int32 per branch, -1 at the root)
 //     "atlas.bark" | "atlas.leaves" | "atlas.flowers"   positions, normals, indices: clip-space
 //                                     triangles that paint the card atlas (after buildHybrid)
@@ -125,6 +126,8 @@ class TreeSession {
         a != b)
       return "restate: preset, seed, years and prunes must be those of the tree grown";
     state_ = std::move(next);
+    // The look rows (leaf_shape, season) dress the same tree anew: leaves and flowers per season.
+    mesh_ = BuildTreeMesh(grower_->tree(), LookOptions());
     sways_.clear();
     sway_model_ = BuildSwayModel(grower_->tree(), SwayParams(state_.params));
     skin_ = BuildTreeSkin(mesh_, sway_model_);
@@ -156,12 +159,15 @@ class TreeSession {
     };
     if (group == "bark") {
       part(mesh_.bark, skin_.bark);
-      out.Add("branchIds", mesh_.bark_branch_id).Add("branchParents", parents_);
+      out.Add("uvs", mesh_.bark.uvs)
+          .Add("branchIds", mesh_.bark_branch_id)
+          .Add("branchParents", parents_);
     } else if (group == "leaves") {
       part(mesh_.leaves, skin_.leaves);
       out.Add("uvs", mesh_.leaves.uvs);
     } else if (group == "flowers") {
       part(mesh_.flowers, skin_.flowers);
+      out.Add("uvs", mesh_.flowers.uvs);
     } else if (group == "atlas.bark") {
       atlas(atlas_.bark);
     } else if (group == "atlas.leaves") {
@@ -208,7 +214,7 @@ class TreeSession {
       mesh_ = TreeMesh{};
       return fits.Line();
     }
-    mesh_ = BuildTreeMesh(grower_->tree());
+    mesh_ = BuildTreeMesh(grower_->tree(), LookOptions());
     parents_.clear();
     for (const Branch& branch : grower_->tree().branches) parents_.push_back(branch.parent);
     // The node points of this tree and the skin that ties every vertex to one of them (thesis
@@ -279,6 +285,16 @@ class TreeSession {
     extras.idle_prunes = done() ? &state_.prunes : &kNone;
     extras.mesh = &mesh_;
     return TreeStatsJson(grower_->tree(), grower_->timings(), extras);
+  }
+
+  // The look of the mesh last built, for the textures (web/bindings/texture_bindings.cpp):
+  // {"leaf_shape": 0..3, "season": 0..3, "autumn_colour": 0..4} (core/tree/tree_look.h).
+  std::string lookJson() const {
+    ordered_json out;
+    out["leaf_shape"] = static_cast<int>(mesh_.look.leaf_shape);
+    out["season"] = static_cast<int>(mesh_.look.season);
+    out["autumn_colour"] = static_cast<int>(mesh_.look.autumn);
+    return out.dump();
   }
 
   // Binary glTF of the mesh last built (buildMesh); "" or one error line. Then glbBytes() views it.
@@ -366,6 +382,14 @@ class TreeSession {
   std::string paramsJson() const { return ParamsToJson(state_.params); }
 
  private:
+  // Mesh options with the look of the current state (the tree grown keeps its own params: a
+  // restate changes the look rows without regrowing).
+  MeshOptions LookOptions() const {
+    MeshOptions options;
+    options.look = LookFromParams(state_.params);
+    return options;
+  }
+
   static constexpr std::size_t kMaxSwayInstances = 4096;
 
   // One simulator per origin (cm), from rest at time 0; the poses at rest.
@@ -425,6 +449,7 @@ EMSCRIPTEN_BINDINGS(niwa_tree) {
       .function("buildMesh", &niwa::TreeSession::buildMesh)
       .function("statsJson", &niwa::TreeSession::statsJson)
       .function("buildGlb", &niwa::TreeSession::buildGlb)
+      .function("lookJson", &niwa::TreeSession::lookJson)
       .function("paramsJson", &niwa::TreeSession::paramsJson)
       .function("swayNodes", &niwa::TreeSession::swayNodes)
       .function("swayStart", &niwa::TreeSession::swayStart)

@@ -262,7 +262,7 @@ function sendUpdate(kind = 'edit') {
   const message = { state };
   if (showYear !== null) message.until = showYear;
   let request;
-  if (stage === 'grow' || stage === 'mesh') {
+  if (stage === 'grow') {  // mesh, sway and view rows restage the tree grown (no regrowth)
     request = worker.request('update', message, { group: 'tree', done: ['tree'] });
     bumpHook('growRequests');
   } else {

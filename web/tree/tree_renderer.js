@@ -1,5 +1,5 @@
 // The tree study's WebGL2 renderer: bark tubes, double-sided leaves and flowers on the shared
-// ground (full-polygon mode), or the hybrid mode of thesis chapter 4: texture cards from a card
+// ground (full-polygon mode, textured as the .glb: shaders/tree/tree_textured.frag), or the hybrid mode of thesis chapter 4: texture cards from a card
 // atlas plus lines. Shaders (GLSL ES 3.00) are shaders/tree/*, including shaders/common/*.
 // Does not: grow or mesh trees (the worker does), keep page state, or own the camera.
 import { beginFrame, createContext, finishGpu, resizeCanvas, sunDirection } from '../gl/context.js';
@@ -13,6 +13,14 @@ import { dataTexture, restPoses, uploadPoses } from '../gl/textures.js';
 export { BACKGROUND } from '../gl/context.js';
 export const SHADERS = new URL('../../shaders/tree/', import.meta.url).href;
 const NONE = 0xffffffff;  // "no branch" for the branch-id attribute and the selection
+
+// The worker's textures per part (mesh.textures, core/tree/tree_textures.h), as the .glb's
+// materials: wrap, alpha cutoff (glTF MASK 0.5) and the bark's normal map.
+const TEXTURED = {
+  bark: { map: 'bark', normalMap: 'barkNormal', repeat: true, alphaCutoff: 0 },
+  leaves: { map: 'leaf', normalMap: null, repeat: false, alphaCutoff: 0.5 },
+  flowers: { map: 'flower', normalMap: null, repeat: false, alphaCutoff: 0.5 },
+};
 
 export const PARTS = {
   bark: { color: [0.36, 0.25, 0.18], variation: [0.04, 0.03, 0.02], doubleSided: 0, specular: 0.03 },
@@ -116,7 +124,55 @@ export class Renderer {
     this.swayTime = 0;     // simulated time (s) of the pose shown
     this.swaying = false;  // poses differ from rest
     this.leafLength = 0.05;  // metres (the tree's leaf_size)
+    this.textures = {};      // kind -> {texture, digest}: the worker's procedural textures
+    this.look = null;        // {leaf_shape, season, autumn_colour} of the mesh drawn
     this.setRestPoses(1);
+  }
+
+  // The worker's textures ({look, bark|barkNormal|leaf|flower: {width, height, digest, pixels}}):
+  // each is uploaded (mipmapped) only when its digest changes.
+  setTextures(textures) {
+    const gl = this.gl;
+    if (!textures) return;
+    this.look = textures.look || null;
+    for (const kind of ['bark', 'barkNormal', 'leaf', 'flower']) {
+      const t = textures[kind];
+      if (!t || !t.pixels) continue;
+      const have = this.textures[kind];
+      if (have && have.digest === t.digest) continue;
+      const texture = have ? have.texture : gl.createTexture();
+      const repeat = kind === 'bark' || kind === 'barkNormal';
+      gl.bindTexture(gl.TEXTURE_2D, texture);
+      gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, t.width, t.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(t.pixels));
+      gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
+      gl.generateMipmap(gl.TEXTURE_2D);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+      const wrap = repeat ? gl.REPEAT : gl.CLAMP_TO_EDGE;
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, wrap);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, wrap);
+      gl.bindTexture(gl.TEXTURE_2D, null);
+      this.textures[kind] = { texture, digest: t.digest };
+    }
+  }
+
+  // Binds the part's textures on units 1 and 2 (unit 0 holds the poses) and sets its uniforms.
+  #bindPartTextures(program, name) {
+    const gl = this.gl;
+    const spec = TEXTURED[name];
+    const map = spec && this.textures[spec.map];
+    const normal = spec && spec.normalMap && this.textures[spec.normalMap];
+    gl.uniform1f(program.uniforms.uUseTexture, map ? 1 : 0);
+    gl.uniform1f(program.uniforms.uUseNormalMap, normal ? 1 : 0);
+    gl.uniform1f(program.uniforms.uAlphaCutoff, spec ? spec.alphaCutoff : 0);
+    gl.activeTexture(gl.TEXTURE1);
+    gl.bindTexture(gl.TEXTURE_2D, map ? map.texture : null);
+    gl.uniform1i(program.uniforms.uBaseMap, 1);
+    gl.activeTexture(gl.TEXTURE2);
+    gl.bindTexture(gl.TEXTURE_2D, normal ? normal.texture : null);
+    gl.uniform1i(program.uniforms.uNormalMap, 2);
+    gl.activeTexture(gl.TEXTURE0);
   }
 
   // Identity poses for `nodes` node points (the grown shape).
@@ -146,7 +202,7 @@ export class Renderer {
   async init(shaderBase = SHADERS) {
     const gl = this.gl;
     const p = await loadPrograms(gl, shaderBase, {
-      tree: ['tree.vert', 'tree.frag'], pick: ['pick.vert', '../common/pick.frag'], atlas: ['atlas.vert', 'tree.frag'],
+      tree: ['tree.vert', 'tree_textured.frag'], pick: ['pick.vert', '../common/pick.frag'], atlas: ['atlas.vert', 'tree.frag'],
       card: ['card.vert', 'card.frag'], line: ['line.vert', 'line.frag'], ground: ['../common/ground.vert', '../common/ground.frag'],
     });
     this.treeProgram = p.tree;
@@ -203,6 +259,7 @@ export class Renderer {
     const gl = this.gl;
     const keepSelection = this.selected;
     this.setRestPoses(swayNodes);
+    this.setTextures(mesh.textures);
     this.setHybrid(hybrid);
     // The buffers are the pool's (reused with bufferSubData when the new tree fits: a smaller tree
     // allocates nothing); only the vertex arrays are new.
@@ -467,6 +524,7 @@ export class Renderer {
       gl.uniform1f(t.uniforms.uXray, 0);
       gl.uniform1f(t.uniforms.uFlutter, name === 'leaves' ? this.#flutter() : 0);
       gl.uniform1f(t.uniforms.uLeafLength, this.leafLength);
+      this.#bindPartTextures(t, name);
       gl.bindVertexArray(part.vao);
       gl.drawElements(gl.TRIANGLES, part.count, gl.UNSIGNED_INT, 0);
       triangles += part.count / 3;
@@ -475,6 +533,7 @@ export class Renderer {
     // The selection once more, faintly through everything, so a branch behind leaves shows.
     if (this.selected !== NONE && this.parts.bark) {
       gl.uniform1f(t.uniforms.uXray, 1);
+      gl.uniform1f(t.uniforms.uUseTexture, 0);
       gl.uniform3fv(t.uniforms.uColor, PARTS.bark.color);
       gl.uniform1f(t.uniforms.uDoubleSided, 0);
       gl.uniform1f(t.uniforms.uFlutter, 0);

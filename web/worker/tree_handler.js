@@ -11,8 +11,9 @@ const yieldToEvents = () => new Promise((resolve) => setTimeout(resolve, 0));
 export function createHandler(Module, ctx) {
   const { post, isLatest } = ctx;
   const paramTable = JSON.parse(Module.paramTableJson());
-  // Rows whose edits change the grown tree (stage grow or mesh; rows without a stage too).
-  const treeKeys = paramTable.filter((row) => !['sway', 'view'].includes(row.stage)).map((row) => row.key);
+  // Rows whose edits change the grown tree (stage grow; rows without a stage too). Mesh, sway and
+  // view rows restage the tree already grown (restate rebuilds its mesh, skin and hybrid scene).
+  const treeKeys = paramTable.filter((row) => !['mesh', 'sway', 'view'].includes(row.stage)).map((row) => row.key);
   const finished = new Map();  // client -> {session, state, until} of its last tree sent
 
   // True when states a and b (as the pages send them) grow the same tree.
@@ -25,9 +26,34 @@ export function createHandler(Module, ctx) {
     return treeKeys.every((key) => text(pa[key]) === text(pb[key]));
   }
 
+  // The procedural textures of a look (core/tree/tree_textures.h: the .glb's own pixels), painted
+  // once per look and kept: kind -> {width, height, pixels: Uint8Array, digest}.
+  const textureCache = new Map();  // "bark" | "barkNormal" | "leaf:shape,season,autumn" | "flower"
+  function texture(kind, look) {
+    const key = kind === 'leaf' ? `leaf:${look.leaf_shape},${look.season},${look.autumn_colour}` : kind;
+    if (!textureCache.has(key)) {
+      textureCache.set(key, Module.treeTexture(kind, look.leaf_shape, look.season, look.autumn_colour));
+    }
+    return textureCache.get(key);
+  }
+
+  // Copies of the textures of the session's mesh (transferred); the renderer uploads a texture only
+  // when its digest changes.
+  function takeTextures(session, transfer) {
+    const look = JSON.parse(session.lookJson());
+    const out = { look };
+    for (const kind of ['bark', 'barkNormal', 'leaf', 'flower']) {
+      const t = texture(kind, look);
+      const pixels = new Uint8Array(t.pixels);
+      transfer.push(pixels.buffer);
+      out[kind] = { width: t.width, height: t.height, digest: t.digest, pixels };
+    }
+    return out;
+  }
+
   function takeMesh(session, transfer) {
     return { bark: takeBuffers(session.buffers('bark'), transfer), leaves: takeBuffers(session.buffers('leaves'), transfer),
-      flowers: takeBuffers(session.buffers('flowers'), transfer) };
+      flowers: takeBuffers(session.buffers('flowers'), transfer), textures: takeTextures(session, transfer) };
   }
 
   // The card-atlas geometry of a hybrid-mode tree (copied once, transferred).

@@ -1,0 +1,68 @@
+// How a grown tree is dressed when it is meshed and textured: its leaf shape, the season and its
+// autumn colour (the tree table's leaf_shape, season and autumn_colour rows). Does not: grow
+// anything, build meshes (tree/mesh) or paint textures (tree/tree_textures).
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+#include "tree/tree_params.h"
+
+namespace niwa {
+
+// The leaf_shape row: the blade drawn on each leaf quad (and the quad's proportions).
+enum class LeafShape : int {
+  kBroad = 0,    // elliptic blade (sakura, keyaki, tsutsuji)
+  kNeedle = 1,   // a fascicle of needles fanning from the base (pine)
+  kPalmate = 2,  // seven-lobed palmate blade (Acer palmatum)
+  kFan = 3,      // bilobed fan with radial veins (Ginkgo biloba)
+};
+constexpr int kLeafShapeCount = 4;
+
+// The season row (a view setting: the tree is not regrown).
+enum class Season : int {
+  kSpring = 0,  // fresh green leaves; a deciduous tree that flowers blossoms on bare wood
+  kSummer = 1,  // leaves and flowers as grown (the default)
+  kAutumn = 2,  // leaves in the autumn colour, no flowers
+  kWinter = 3,  // bare wood (evergreens keep their leaves), no flowers
+};
+constexpr int kSeasonCount = 4;
+
+// The autumn_colour row: the colour a deciduous tree's leaves turn, or evergreen.
+enum class AutumnColour : int {
+  kEvergreen = 0,    // keeps green leaves through autumn and winter (pine, tsutsuji)
+  kRedOrange = 1,    // Somei-yoshino
+  kRed = 2,          // momiji (Acer palmatum)
+  kYellow = 3,       // ginkgo
+  kOrangeBrown = 4,  // keyaki
+};
+constexpr int kAutumnColourCount = 5;
+
+struct TreeLook {
+  LeafShape leaf_shape = LeafShape::kBroad;
+  Season season = Season::kSummer;
+  AutumnColour autumn = AutumnColour::kRedOrange;
+};
+
+// The look the rows of `params` ask for (values outside the rows' ranges are clamped).
+TreeLook LookFromParams(const TreeParams& params);
+
+// Whether leaves are drawn in this look; `has_flowers`: the tree bears flowers this year (a
+// flowering deciduous tree shows its blossom before its leaves in spring, as cherries do).
+bool ShowsLeaves(const TreeLook& look, bool has_flowers);
+// Whether flowers are drawn (spring and summer).
+bool ShowsFlowers(const TreeLook& look);
+
+// Width of a leaf quad over its length, per shape: broad 0.5, needle 0.8, palmate 1, fan 1.2.
+float LeafQuadAspect(LeafShape shape);
+
+// "broad", "spring", "red", ... (the names in the rows' help and the .glb's extras).
+const char* LeafShapeName(LeafShape shape);
+const char* SeasonName(Season season);
+const char* AutumnColourName(AutumnColour colour);
+
+// The value of a name above ("winter" -> kWinter); nullopt for another text.
+std::optional<Season> ParseSeason(std::string_view name);
+std::optional<LeafShape> ParseLeafShape(std::string_view name);
+
+}  // namespace niwa
