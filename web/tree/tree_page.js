@@ -14,6 +14,7 @@ import {
 import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
 import { WorkerClient, restartWorker } from '../shell/worker_client.js';
 import { RenderTable } from './render_table.js';
+import { mountStateFile } from './state_file.js';
 import { Renderer } from './tree_renderer.js';
 
 const $ = (id) => document.getElementById(id);
@@ -570,6 +571,24 @@ ui.downloadPng.addEventListener('click', () => {
     if (blob) download(blob, `${fileStem()}.png`, ui.shareStatus);
     else ui.shareStatus.textContent = 'The picture could not be saved.';
   }, 'image/png');
+});
+
+// Save / Open: the whole state as a file (the CLI's --state); an opened state is a new history
+// entry, drawn from its own camera when it has one.
+mountStateFile({ save: $('save-state'), open: $('open-state'), input: $('open-state-file'), status: ui.shareStatus }, {
+  worker,
+  state: () => ({ ...currentState(), camera: renderer ? camera.toHash() : '' }),
+  stem: fileStem,
+  onOpen: (state) => {
+    stopPlaying();
+    showYear = null;
+    applyState(state);
+    notices.set('hash', []);
+    notices.set('error', '');
+    sendUpdate('edit');
+    frameNext = !camera.fromHash(state.camera);
+  },
+  onError: (line) => notices.set('error', line),
 });
 
 ui.resetView.addEventListener('click', () => {
