@@ -11,6 +11,13 @@
 //   cold/start-only                      a fresh process that grows nothing ('niwa presets'): the
 //       fixed cost of starting (dynamic linking or node + compile + instantiate)
 // check: the tree's internode count (the same in both builds).
+// Why the WASM first grow is slow (measured on the loaded 2-core test machine, node 20 / V8 11.3):
+// V8 compiles each function lazily on its first call with Liftoff (baseline) and tiers hot ones up
+// to TurboFan on background threads (--wasm-dynamic-tiering, budget 1.8 MB "executed"), which
+// compete with the grow for the cores. The same first grow ran in 255-275 ms with
+// --liftoff-only and 232-388 ms with --no-liftoff against 475-925 ms by default (all inflated by
+// the load, same runs interleaved). Memory growth is not it: -sINITIAL_MEMORY=64MB (no growth)
+// gave the same main-thread CPU (157-186 ms against 161-184 ms with the default 16 MB).
 import { spawnSync } from 'node:child_process';
 import { performance } from 'node:perf_hooks';
 
