@@ -114,6 +114,17 @@ if (gm && peer.length) {
   goal(`sakura 15 years grown + meshed in WASM faster than ${peer[0].workload}`,
        `${fmt(gm)} ms vs ${fmt(peer[0].ms)} ms: ${(gm / peer[0].ms).toFixed(2)}× its time`, gm < peer[0].ms);
 }
+// Cold start (issue 17 item 7; bench/cold_start.mjs): a fresh native process, warm WASM, and the
+// first grow of a fresh WASM instance against the fresh native process.
+const coldNative = ms(native, 'cold/process-grow-sakura-thesis-15y');
+if (coldNative) goal('sakura-thesis 15 years in a fresh native process ≤ 20 ms', `${fmt(coldNative)} ms`, coldNative <= 20);
+const warmWasm = ms(wasm, 'grow/sakura-15y') ?? ms(wasm, 'grow/sakura-thesis-15y');
+if (warmWasm) goal('sakura-thesis 15 years warm in WASM ≤ 16 ms', `${fmt(warmWasm)} ms`, warmWasm <= 16);
+const firstWasm = ms(wasm, 'cold/first-grow-sakura-thesis-15y');
+if (firstWasm && coldNative) {
+  goal('first grow in a fresh WASM instance ≤ 2× the fresh native process', `${fmt(firstWasm)} ms vs ${fmt(coldNative)} ms: ` +
+       `${(firstWasm / coldNative).toFixed(2)}×`, firstWasm <= 2 * coldNative);
+}
 // Sway (thesis ch. 3, issue 6): one dynamics step plus the eq. 3.15 node positions per internode.
 const perUnit = (r) => (r ? r.ns_per_unit ?? (r.units ? (r.ms * 1e6) / r.units : undefined) : undefined);
 for (const name of names.filter((n) => n.startsWith('sway'))) {

@@ -8,8 +8,15 @@ if(NIWA_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
   add_link_options(-fsanitize=address,undefined)
 endif()
-# Link a binary that runs natively (no-op here; the WASM build sets node-runner flags).
+# Link a program that runs natively (the CLI, test and bench binaries): libstdc++ and libgcc
+# statically (and Draco's static library, below), so a fresh process does not spend its start
+# binding libstdc++'s and libdraco's symbols (issue 17 item 7: 4.8 M of a fresh
+# 'niwa tree grow --preset sakura-thesis --years 15's 154 M instructions were in ld.so). Not with
+# the sanitizers, whose runtimes want the shared libraries.
 function(niwa_node_program target)
+  if(NOT NIWA_SANITIZE)
+    target_link_options(${target} PRIVATE -static-libstdc++ -static-libgcc)
+  endif()
 endfunction()
 # Link a unit-test binary (no-op here; the WASM build links tests at -O1, see cmake/emscripten.cmake).
 function(niwa_test_program target)
@@ -37,6 +44,10 @@ add_compile_definitions(NIWA_BUILD_NAME="native")
 # page decodes Draco with npm draco3d before the WASM core sees the mesh).
 find_path(NIWA_DRACO_INCLUDE draco/compression/decode.h)
 find_library(NIWA_DRACO_LIBRARY draco)
+find_library(NIWA_DRACO_ARCHIVE libdraco.a)
+if(NIWA_DRACO_ARCHIVE AND NOT NIWA_SANITIZE)
+  set(NIWA_DRACO_LIBRARY ${NIWA_DRACO_ARCHIVE})  # static, as libstdc++: see niwa_node_program
+endif()
 if(NIWA_DRACO_INCLUDE AND NIWA_DRACO_LIBRARY)
   set(NIWA_DRACO_DEFINITIONS NIWA_HAVE_DRACO)
 else()

@@ -106,6 +106,10 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
                       }});
   cli::AddRegisteredCommands(app, commands);
 
+  if (args.empty()) {  // 'niwa' alone: the usage, and exit code 2 (no command given)
+    err << app.help() << "niwa: error: give a command, e.g. 'niwa tree grow'\n";
+    return 2;
+  }
   try {
     if (!args.empty()) CheckCommand(app, args[0]);
     for (const CLI::App* group : app.get_subcommands({})) {

@@ -24,7 +24,12 @@ void AddStateOptions(CLI::App* cmd, const ParamTable& table, StateOptions* o) {
       "--prune", o->prunes,
       "Prune after a year: YEAR:bID (branch id from the JSON) or YEAR:sinceY (repeatable)");
   cmd->add_option("--url", o->url,
-                  "A share-link hash (preset=...&seed=...); other flags override it");
+                  "A share link (http://host/#preset=...) or its hash (preset=...&seed=...); "
+                  "other flags override it");
+  cmd->add_option("--state", o->state_file,
+                  "A state file {preset, seed, years, params, prunes, camera} (the page's Save; "
+                  "missing keys take the preset's values); other flags override it")
+      ->excludes("--url");
   if (table.name() == "tree") {
     cmd->add_option("--season", o->season,
                     "Season of the view: spring, summer, autumn or winter (the season row; the "
@@ -38,12 +43,20 @@ void AddStateOptions(CLI::App* cmd, const ParamTable& table, StateOptions* o) {
 TreeState ResolveTreeState(const StateOptions& o, const CLI::App& cmd) {
   TreeState state;
   if (!o.url.empty()) {
+    Result<std::string> hash = TreeHashOfLink(o.url);
+    Check(AsFlag(hash.status(), "--url"));
     std::vector<std::string> notices;
-    state = DecodeTreeHash(o.url, &notices);
+    state = DecodeTreeHash(*hash, &notices);
     if (!notices.empty()) Fail(Status::Error("--url", notices.front()));
   }
-  // --preset replaces the url's preset (and its values) only when it names another one.
-  if ((cmd.count("--preset") || o.url.empty()) && (o.url.empty() || state.preset != o.preset)) {
+  if (!o.state_file.empty()) {
+    Result<std::string> text = ReadFile(o.state_file, "--state", kMaxParamsFileBytes);
+    Check(text.status());
+    Check(ApplyStateJson(*text, &state).Within("--state " + Echo(o.state_file)));
+  }
+  // --preset replaces the base state's preset (and its values) only when it names another one.
+  const bool based = !o.url.empty() || !o.state_file.empty();
+  if ((cmd.count("--preset") || !based) && (!based || state.preset != o.preset)) {
     Check(AsFlag(SetStatePreset(o.preset, &state), "--preset"));
   }
   if (cmd.count("--years")) Check(AsFlag(SetStateYears(o.years, &state), "--years"));
@@ -82,6 +95,7 @@ TreeState ResolveTreeState(const StateOptions& o, const CLI::App& cmd) {
     const char* source = !o.sets.empty()          ? "--set"
                          : !o.params_file.empty() ? "--params"
                          : !o.url.empty()         ? "--url"
+                         : !o.state_file.empty()  ? "--state"
                                                   : "--preset";
     Fail(gust.Within(source));
   }

@@ -40,6 +40,34 @@ std::string PercentDecode(std::string_view text) {
 
 std::string Printable(std::string_view text) { return EchoNoMarkup(text); }
 
+ShareLink SplitShareLink(std::string_view text) {
+  ShareLink link;
+  const std::size_t hash_at = text.find('#');
+  const std::string_view before_hash = text.substr(0, hash_at);
+  const std::size_t scheme_end = before_hash.find("://");
+  if (scheme_end == std::string_view::npos) {  // a bare hash ('/' and "://" never occur in one)
+    link.hash = std::string(text);
+    return link;
+  }
+  link.is_link = true;
+  std::string scheme(before_hash.substr(0, scheme_end));
+  std::transform(scheme.begin(), scheme.end(), scheme.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (scheme != "http" && scheme != "https") {
+    link.error = "'" + Printable(text) + "' must be an http(s):// link or a bare hash";
+    return link;
+  }
+  // The path: after the authority, up to a query; its last segment names the page.
+  std::string_view rest = before_hash.substr(scheme_end + 3);
+  rest = rest.substr(0, rest.find('?'));
+  const std::size_t path_at = rest.find('/');
+  const std::string_view path =
+      path_at == std::string_view::npos ? std::string_view() : rest.substr(path_at);
+  link.page = std::string(path.substr(path.empty() ? 0 : path.rfind('/') + 1));
+  if (hash_at != std::string_view::npos) link.hash = std::string(text.substr(hash_at + 1));
+  return link;
+}
+
 HashPairs SplitHash(std::string_view hash, std::vector<std::string>* notices,
                     const std::vector<std::string_view>& repeatable) {
   HashPairs pairs;

@@ -25,6 +25,18 @@ constexpr std::size_t kMaxHashLength = 16384;
 // "KEY: given N times; the last value is used".
 HashPairs SplitHash(std::string_view hash, std::vector<std::string>* notices = nullptr,
                     const std::vector<std::string_view>& repeatable = {});
+// A --url value split into the page it names and its hash. A whole link ("http://host/#k=v",
+// "https://host/dir/index.html?q#k=v": an http or https scheme) gives is_link, the last segment of
+// its path ("" for a folder, e.g. "index.html") and the text after its first '#' ("" when it has
+// none); any other text is a bare hash (is_link false, page "", hash the text). `error` is set for
+// a link of another scheme ("ftp://..."): "must be an http(s):// link or a bare hash".
+struct ShareLink {
+  bool is_link = false;
+  std::string page;
+  std::string hash;
+  std::string error;
+};
+ShareLink SplitShareLink(std::string_view text);
 // Percent-encodes a value or key for a hash: every byte outside [A-Za-z0-9._~:,-] as %XX, so a
 // decoded value written back cannot add keys ('&', '=', '#', '%' are encoded).
 std::string PercentEncode(std::string_view text);

@@ -161,6 +161,14 @@ Status ApplyStateJson(const std::string& text, TreeState* state) {
   json document = json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (document.is_discarded()) return Status::Error("state", "malformed JSON");
   if (!document.is_object()) return Status::Error("state", "must be a JSON object");
+  for (auto it = document.begin(); it != document.end(); ++it) {
+    static const char* const kKeys[] = {"preset", "seed", "years", "params", "prunes", "camera"};
+    if (std::find(std::begin(kKeys), std::end(kKeys), it.key()) == std::end(kKeys)) {
+      return Status::Error(Printable(it.key()),
+                           "unknown state key; the keys are preset, seed, years, params, prunes, "
+                           "camera");
+    }
+  }
   TreeState result = *state;
   if (document.contains("preset")) {
     const json& name = document["preset"];
@@ -210,6 +218,40 @@ std::string TreeStateJson(const TreeState& state) {
   out["prunes"] = std::move(prunes);
   out["camera"] = state.camera;
   return out.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+std::string TreeStateFileJson(const TreeState& state) {
+  const Preset* preset = FindPreset(state.preset);
+  const TreeParams base = preset ? preset->params : TreeParams();
+  ordered_json out;
+  out["preset"] = state.preset;
+  out["seed"] = state.seed;
+  out["years"] = state.years;
+  ordered_json params = ordered_json::object();
+  for (std::size_t row = 0; row < state.params.size(); ++row) {
+    if (state.params.Get(row) != base.Get(row)) {
+      params[state.params.table().row(row).key] = state.params.Get(row);
+    }
+  }
+  out["params"] = std::move(params);
+  ordered_json prunes = ordered_json::array();
+  for (const Prune& prune : state.prunes) prunes.push_back(FormatPrune(prune));
+  out["prunes"] = std::move(prunes);
+  out["camera"] = state.camera;
+  return out.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+}
+
+Result<std::string> TreeHashOfLink(std::string_view url) {
+  ShareLink link = SplitShareLink(url);
+  if (!link.error.empty()) return Status::Error("url", link.error);
+  if (link.is_link && !link.page.empty() && link.page != "index.html") {
+    const std::string page = Printable(link.page);
+    const std::string what =
+        link.page == "grove.html" ? "is the grove page, not a tree link" : "is not the tree page";
+    return Status::Error("url", "'" + page + "' " + what +
+                                    "; give a link to index.html (the tree page) or its hash");
+  }
+  return link.hash;
 }
 
 TreeState DecodeTreeHash(std::string_view hash, std::vector<std::string>* notices,

@@ -40,11 +40,25 @@ Status CheckGustOrder(const ParamSet& params);
 // Applies {preset, seed, years, params: {key: value}, prunes: ["12:b42"], camera} onto state: a
 // "preset" resets the state to that preset first; the other fields go on top. Values may be
 // numbers or numeric strings (params also booleans). Strict: the first bad field is the error and
-// the state is unchanged.
+// the state is unchanged; any other top-level key is refused by name ("colour: unknown state key;
+// the keys are preset, seed, years, params, prunes, camera").
 Status ApplyStateJson(const std::string& text, TreeState* state);
 // {preset, seed, years, params: {every key: value}, prunes: [...], camera}: what ApplyStateJson
 // reads back to the same state.
 std::string TreeStateJson(const TreeState& state);
+
+// The state file (the page's Save, 'niwa tree state', read by 'niwa tree grow --state'):
+// {preset, seed, years, params: {only the values that differ from the preset's}, prunes:
+// ["YEAR:bID" | "YEAR:sinceY"], camera}, two-space indented. ApplyStateJson onto a default
+// TreeState reads it back to the same state (and a file with only some keys takes the preset's
+// values, or the default preset's, for the rest).
+std::string TreeStateFileJson(const TreeState& state);
+
+// A --url value: a whole share link ("http://host/#preset=...", "https://host/dir/index.html#...")
+// or a bare hash (with or without '#'); returns the tree hash it holds. A link to another page
+// than the tree's ("" or index.html) is refused: {"url", "'grove.html' is the grove page, not a
+// tree link; ..."}.
+Result<std::string> TreeHashOfLink(std::string_view url);
 
 // Decodes a share-link hash (with or without '#'). Forgiving: unknown keys, bad or out-of-range
 // values are dropped or clamped with one notice line each; the result is always usable. A hash

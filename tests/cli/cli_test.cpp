@@ -298,11 +298,12 @@ TEST(Cli, ParamsListsAStudysTableWithStagesAndGroupTitlesInJson) {
 // Every command file's commands are registered (the list is generated from the glob), in the order
 // of their cli-order lines.
 TEST(Cli, CommandsOfEveryStudyFileAreRegistered) {
-  ExpectOneLineError(RunNiwa({"tree", "frob"}),
-                     "unknown command 'frob', must be one of grow, mappings, sway, render-stats");
+  ExpectOneLineError(
+      RunNiwa({"tree", "frob"}),
+      "unknown command 'frob', must be one of grow, state, mappings, sway, render-stats");
   Result help = RunNiwa({"tree", "--help"});
   ASSERT_EQ(help.code, 0);
-  for (const char* command : {"grow", "mappings", "sway", "render-stats"}) {
+  for (const char* command : {"grow", "state", "mappings", "sway", "render-stats"}) {
     EXPECT_NE(help.out.find(command), std::string::npos) << command;
   }
 }

@@ -67,6 +67,35 @@ std::string EncodeHashJson(const std::string& state_json) {
   return out.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
+// The page's Save: {json} the state file (TreeStateFileJson: changed parameters only) of a page
+// state {preset, seed, years, params, prunes, camera}, or {error}.
+std::string StateFileJson(const std::string& state_json) {
+  TreeState state;
+  ordered_json out;
+  std::string error = ApplyStateJson(state_json, &state).Line();
+  if (error.empty()) {
+    out["json"] = TreeStateFileJson(state);
+  } else {
+    out["error"] = error;
+  }
+  return out.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+// The page's Open: {state} (every value, as decodeHash gives it) of a state file read onto the
+// default state (missing keys take the preset's values), or {error} naming the bad field.
+std::string OpenStateFileJson(const std::string& text) {
+  TreeState state;
+  ordered_json out;
+  Status status = ApplyStateJson(text, &state);
+  if (status.ok()) status = CheckGustOrder(state.params);
+  if (status.ok()) {
+    out["state"] = ordered_json::parse(TreeStateJson(state));
+  } else {
+    out["error"] = status.Line();
+  }
+  return out.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
 }  // namespace niwa
 
 EMSCRIPTEN_BINDINGS(niwa_common) {
@@ -75,4 +104,6 @@ EMSCRIPTEN_BINDINGS(niwa_common) {
   function("presetsJson", &niwa::PresetsJson);
   function("decodeHash", &niwa::DecodeHashJson);
   function("encodeHash", &niwa::EncodeHashJson);
+  function("stateFile", &niwa::StateFileJson);
+  function("openStateFile", &niwa::OpenStateFileJson);
 }

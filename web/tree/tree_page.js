@@ -17,6 +17,7 @@ import { ExportGuard, cutRefusal } from './cut_rules.js';
 import { EditFeedback } from './edit_feedback.js';
 import { GettingStarted } from './getting_started.js';
 import { RenderTable } from './render_table.js';
+import { mountStateFile } from './state_file.js';
 import { Renderer } from './tree_renderer.js';
 
 const $ = (id) => document.getElementById(id);
@@ -660,6 +661,24 @@ ui.downloadPng.addEventListener('click', () => {
     if (blob) download(blob, `${fileStem()}.png`, ui.shareStatus);
     else ui.shareStatus.textContent = 'The picture could not be saved.';
   }, 'image/png');
+});
+
+// Save / Open: the whole state as a file (the CLI's --state); an opened state is a new history
+// entry, drawn from its own camera when it has one.
+mountStateFile({ save: $('save-state'), open: $('open-state'), input: $('open-state-file'), status: ui.shareStatus }, {
+  worker,
+  state: () => ({ ...currentState(), camera: renderer ? camera.toHash() : '' }),
+  stem: fileStem,
+  onOpen: (state) => {
+    stopPlaying();
+    showYear = null;
+    applyState(state);
+    notices.set('hash', []);
+    notices.set('error', '');
+    sendUpdate('edit');
+    frameNext = !camera.fromHash(state.camera);
+  },
+  onError: (line) => notices.set('error', line),
 });
 
 ui.resetView.addEventListener('click', () => {

@@ -43,6 +43,9 @@
  *   -> HashMessage, TreeMessage (grown: false)
  *
  * @typedef {Envelope & {type: 'hash', hash: string}} HashMessage
+ * @typedef {Envelope & {type: 'stateFile', save?: TreeStateJson, open?: string}} StateFileMessage
+ *   -> {type: 'stateFile', json: string} (save: the state file) | {type: 'stateFile', state:
+ *   TreeStateJson} (open: the file read) | an error naming the field (web/tree/state_file.js)
  * @typedef {Envelope & {type: 'progress', year: number, years: number}} ProgressMessage
  */
 
@@ -108,4 +111,4 @@
  */
 
 // The message types a page may send (the router answers any other with an error).
-export const REQUEST_TYPES = ['init', 'decode', 'update', 'restage', 'wind', 'poseDone', 'view', 'export', 'mesh', 'pick', 'encode'];
+export const REQUEST_TYPES = ['init', 'decode', 'update', 'restage', 'wind', 'poseDone', 'view', 'export', 'mesh', 'pick', 'encode', 'stateFile'];

@@ -284,6 +284,14 @@ export function createHandler(Module, ctx) {
       },
       view: hybridView,
       export: exportTree,
+      // Save / Open (web/tree/state_file.js): {save: page state} -> {json}; {open: file text} ->
+      // {state}; a bad state or file is an 'error' naming the field.
+      stateFile: (msg, client) => {
+        const answer = JSON.parse(msg.open !== undefined ? Module.openStateFile(String(msg.open))
+          : Module.stateFile(JSON.stringify(msg.save ?? {})));
+        if (answer.error) post({ type: 'error', id: msg.id, client, message: answer.error });
+        else post({ type: 'stateFile', id: msg.id, client, ...answer });
+      },
     },
   };
 }
