@@ -186,6 +186,36 @@ void Rasterize(const MeshBuffers& part, const Rgba8Image& texture, bool wrap, fl
   }
 }
 
+// Leaves a few texels across lose coverage when a card is minified (alpha-tested mipmaps average
+// them away): a transparent texel with at least `min_neighbours` opaque ones of its 8 becomes
+// opaque with their mean colour (one pass: leaves grow by about a texel at their outline).
+void GrowCoverage(Rgba8Image* image, int min_neighbours) {
+  Rgba8Image next = *image;
+  for (int y = 1; y + 1 < image->height; ++y) {
+    for (int x = 1; x + 1 < image->width; ++x) {
+      if (image->At(x, y)[3] != 0) continue;
+      int count = 0, r = 0, g = 0, b = 0;
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const unsigned char* q = image->At(x + dx, y + dy);
+          if (q[3] == 0) continue;
+          ++count;
+          r += q[0];
+          g += q[1];
+          b += q[2];
+        }
+      }
+      if (count < min_neighbours) continue;
+      unsigned char* o = next.At(x, y);
+      o[0] = static_cast<unsigned char>(r / count);
+      o[1] = static_cast<unsigned char>(g / count);
+      o[2] = static_cast<unsigned char>(b / count);
+      o[3] = 255;
+    }
+  }
+  *image = std::move(next);
+}
+
 // Transparent texels take the colour of an opaque neighbour (alpha stays 0), so that filtering
 // and mipmaps at the cut-out edges do not darken the cards.
 void BleedColour(Rgba8Image* image, int passes) {
@@ -223,6 +253,7 @@ Rgba8Image PaintAtlas(const TreeMesh& mesh, const HybridScene& scene) {
   Rasterize(projected.bark, MakeBarkTexture(), true, 0.0f, size, &depth, &atlas);
   Rasterize(projected.leaves, MakeLeafTexture(), false, 0.5f, size, &depth, &atlas);
   Rasterize(projected.flowers, MakeFlowerTexture(), false, 0.5f, size, &depth, &atlas);
+  GrowCoverage(&atlas, 2);
   BleedColour(&atlas, 2);
   return atlas;
 }
@@ -424,6 +455,7 @@ Result<gltf::Document> LodGltfDocument(const std::vector<LodMesh>& levels,
       gltf::Texture texture;
       texture.name = "cards_" + std::to_string(l);
       texture.wrap_s = texture.wrap_t = gltf::Wrap::kClampToEdge;
+      texture.min_filter = gltf::kFilterLinear;  // no mipmaps: they thin alpha-tested leaves out
       Result<std::vector<unsigned char>> png = image::EncodeRgba8Png(level.atlas);
       if (!png.ok()) return png.status().Within("card atlas");
       texture.png = std::move(png).value();
@@ -454,7 +486,9 @@ Result<gltf::Document> LodGltfDocument(const std::vector<LodMesh>& levels,
       if (twigs_material < 0) {
         gltf::Material twigs;
         twigs.name = "twigs";
-        twigs.base_color_factor = {0.36, 0.25, 0.17, 1.0};  // LineShading::branch_color
+        // LineShading::branch_color (0.36, 0.25, 0.17) as linear values (glTF factors are linear;
+        // lines are unlit in most viewers): about its sRGB^2.2.
+        twigs.base_color_factor = {0.106, 0.047, 0.020, 1.0};
         twigs.metallic_factor = 0.0;
         twigs.roughness_factor = 0.9;
         doc.materials.push_back(std::move(twigs));

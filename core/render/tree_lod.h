@@ -43,7 +43,7 @@ struct LodMesh {
 };
 
 struct LodOptions {
-  int atlas_size = 1024;    // texels of the card atlas side (a power of two, 256..4096)
+  int atlas_size = 2048;    // texels of the card atlas side (256..4096)
   float card_ratio = 4.0f;  // card radius = tube radius / card_ratio (one bisection variable)
 };
 
