@@ -397,7 +397,11 @@ void Grower::BreakBuds() {
     std::vector<std::pair<int, std::vector<Leaf>>>* leaves;
     std::vector<std::pair<int, std::vector<int>>>* flowers;
     ~KeepFoliage() {
-      if (grower->refused_shoots_ == refused_before) return;
+      // Kept when a limit refused a shoot this year, or when a tree a limit already cut makes no
+      // shoot at all (its refused buds left no buds to break: the foliage stays as it was).
+      const bool cut = grower->refused_shoots_ != refused_before ||
+                       (grower->tree_.truncated && grower->new_shoots_.empty());
+      if (!cut) return;
       for (auto& [id, held] : *leaves) {
         Branch& b = grower->tree_.branches[static_cast<std::size_t>(id)];
         if (!b.alive || !b.leaves.empty()) continue;
