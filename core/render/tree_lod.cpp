@@ -399,9 +399,13 @@ Result<std::vector<LodMesh>> BuildLodLevels(const Tree& tree, long max_triangles
   if (!lod0.ok()) return lod0.status();
   levels.push_back(std::move(lod0).value());
   const long base = levels[0].choice.triangles;
+  int level_index = 0;
   for (long share : {25L, 5L}) {  // percent of LOD0
     const long within = base * share / 100;
-    Result<LodMesh> level = BuildLodMesh(tree, within, options, "--lod");
+    // Seen from farther away: half the atlas side a level (at least 256 texels).
+    LodOptions level_options = options;
+    level_options.atlas_size = std::max(256, options.atlas_size >> ++level_index);
+    Result<LodMesh> level = BuildLodMesh(tree, within, level_options, "--lod");
     if (!level.ok()) {
       return Status::Error(
           "--lod", "LOD0 has " + std::to_string(base) + " triangles, so " + std::to_string(share) +

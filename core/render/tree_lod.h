@@ -66,7 +66,7 @@ Result<LodMesh> BuildLodMesh(const Tree& tree, long max_triangles, const LodOpti
 long FullTriangles(const TreeMesh& mesh);
 
 // LOD0 within max_triangles (or the full mesh when max_triangles < 0), LOD1 within 25 % and LOD2
-// within 5 % of LOD0's triangles.
+// within 5 % of LOD0's triangles; LOD1 and LOD2 use half and a quarter of the atlas side.
 Result<std::vector<LodMesh>> BuildLodLevels(const Tree& tree, long max_triangles,
                                             const LodOptions& options = {},
                                             const std::string& field = "--max-triangles");
