@@ -7,6 +7,7 @@
 
 #include "base/echo.h"
 #include "cli_common.h"
+#include "render/tree_lod.h"
 #include "tree/growth.h"
 #include "tree/mesh.h"
 #include "tree/presets.h"
@@ -23,6 +24,7 @@ namespace {
 
 const FlagRange kSvgSize = {100, 10000, true};
 const FlagRange kZeroOne = {0, 1, true};
+const FlagRange kMaxTriangles = {static_cast<double>(kMinLodTriangles), 100000000, true};
 constexpr std::size_t kMaxCaption = 200;  // bytes of --caption
 
 struct GrowOptions {
@@ -30,6 +32,8 @@ struct GrowOptions {
   std::string out_path;
   bool stats = false;
   SvgOptions svg;
+  long max_triangles = -1;  // --max-triangles (render/tree_lod); -1: the full mesh
+  bool lod = false;         // --lod: <name>_LOD0.._LOD2 sibling nodes
 };
 
 // SVG-only drawing options of 'tree grow' (used by scripts/figures).
@@ -74,6 +78,11 @@ int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
     throw BadInput{"--out: '" + Echo(o.out_path) + "' must end in .glb, .json or .svg"};
   }
   CheckSvgOptions(o.svg, cmd, ext);
+  for (const char* name : {"--max-triangles", "--lod"}) {
+    if (cmd.count(name) && ext != ".glb") {
+      throw BadInput{std::string(name) + ": only applies with --out FILE.glb"};
+    }
+  }
   TreeState state = ResolveTreeState(o.state, cmd);
   Grower grower(state);  // stops early (truncated) at the budget's growth limits
   while (grower.year() < state.years && !grower.stopped()) grower.GrowYear();
@@ -102,8 +111,23 @@ int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
       bytes = TreeToSvg(tree, o.svg);
     } else {
       std::vector<unsigned char> glb;
-      std::string error = WriteTreeGlb(BuildTreeMesh(tree), &glb).Line();
-      if (!error.empty()) throw BadInput{"--out: " + error};
+      if (o.lod || o.max_triangles >= 0) {
+        // Game-ready export (issue 17 item 4): the budgeted level, or three LOD levels.
+        std::vector<LodMesh> levels;
+        if (o.lod) {
+          Result<std::vector<LodMesh>> all = BuildLodLevels(tree, o.max_triangles);
+          if (!all.ok()) throw BadInput{all.status().Line()};
+          levels = std::move(all).value();
+        } else {
+          Result<LodMesh> level = BuildLodMesh(tree, o.max_triangles);
+          if (!level.ok()) throw BadInput{level.status().Line()};
+          levels.push_back(std::move(level).value());
+        }
+        Check(WriteLodGlb(levels, &glb));
+      } else {
+        std::string error = WriteTreeGlb(BuildTreeMesh(tree), &glb).Line();
+        if (!error.empty()) throw BadInput{"--out: " + error};
+      }
       bytes.assign(glb.begin(), glb.end());
     }
     StagedOutputs outputs;
@@ -162,6 +186,12 @@ void AddTreeCommands(CLI::App& app, CommandList& commands) {
                    "Write the tree: .glb (binary glTF), .json or .svg (side view)");
   grow->add_flag("--stats", grow_options->stats,
                  "Print one JSON object of statistics on stdout (also the output when no --out)");
+  AddNumberFlag(grow, "--max-triangles", &grow_options->max_triangles, kMaxTriangles,
+                ".glb within N triangles, " + RangeHelp(kMaxTriangles) +
+                    ": thin twigs become cards or lines, leaves leaf-cluster cards");
+  grow->add_flag("--lod", grow_options->lod,
+                 ".glb with nodes tree_LOD0, tree_LOD1 (<= 25 % of LOD0's triangles) and "
+                 "tree_LOD2 (<= 5 %)");
   commands.push_back({grow, [grow, grow_options](std::ostream& out) {
                         return RunGrow(*grow_options, *grow, out);
                       }});

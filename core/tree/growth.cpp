@@ -371,10 +371,51 @@ void Grower::BreakBuds() {
   const ParamSet& p = tree_.params;
   // Leaves fall, flowers fade (deciduous): leaves grow only on the last year's shoots, flowers on
   // the branches listed when they opened.
-  for (int id : new_shoots_) tree_.branches[static_cast<std::size_t>(id)].leaves.clear();
-  for (int id : flowering_) tree_.branches[static_cast<std::size_t>(id)].flowers.clear();
+  // A year a limit cuts short keeps them (issue 17 item 5: prune the growth, not the foliage), so
+  // they are held aside until the year's shoots are made.
+  std::vector<std::pair<int, std::vector<Leaf>>> held_leaves;
+  std::vector<std::pair<int, std::vector<int>>> held_flowers;
+  for (const std::vector<int>* ids : {&new_shoots_, &kept_foliage_}) {
+    for (int id : *ids) {
+      std::vector<Leaf>& leaves = tree_.branches[static_cast<std::size_t>(id)].leaves;
+      if (!leaves.empty()) held_leaves.emplace_back(id, std::move(leaves));
+      leaves.clear();
+    }
+  }
+  for (int id : flowering_) {
+    std::vector<int>& flowers = tree_.branches[static_cast<std::size_t>(id)].flowers;
+    if (!flowers.empty()) held_flowers.emplace_back(id, std::move(flowers));
+    flowers.clear();
+  }
   flowering_.clear();
   new_shoots_.clear();
+  kept_foliage_.clear();
+  const long refused_before = refused_shoots_;
+  struct KeepFoliage {  // runs when BreakBuds returns
+    Grower* grower;
+    long refused_before;
+    std::vector<std::pair<int, std::vector<Leaf>>>* leaves;
+    std::vector<std::pair<int, std::vector<int>>>* flowers;
+    ~KeepFoliage() {
+      // Kept when a limit refused a shoot this year, or when a tree a limit already cut makes no
+      // shoot at all (its refused buds left no buds to break: the foliage stays as it was).
+      const bool cut = grower->refused_shoots_ != refused_before ||
+                       (grower->tree_.truncated && grower->new_shoots_.empty());
+      if (!cut) return;
+      for (auto& [id, held] : *leaves) {
+        Branch& b = grower->tree_.branches[static_cast<std::size_t>(id)];
+        if (!b.alive || !b.leaves.empty()) continue;
+        b.leaves = std::move(held);
+        grower->kept_foliage_.push_back(id);
+      }
+      for (auto& [id, held] : *flowers) {
+        Branch& b = grower->tree_.branches[static_cast<std::size_t>(id)];
+        if (!b.alive || !b.flowers.empty()) continue;
+        b.flowers = std::move(held);
+        grower->flowering_.push_back(id);
+      }
+    }
+  } keep_foliage{this, refused_before, &held_leaves, &held_flowers};
   auto make_shoot = [&](int parent, int parent_node, ShootKind kind, glm::vec3 direction,
                         glm::vec3 azimuth, float hormone_initial) {
     Branch shoot{};
@@ -901,6 +942,7 @@ void Grower::RaiseCrown() {
 }
 
 void Grower::Truncate(const std::string& limit, const std::string& why, const std::string& change) {
+  ++refused_shoots_;
   tree_.truncated = true;
   if (!tree_.truncated_by.empty()) return;
   tree_.truncated_by = TruncatedLine(

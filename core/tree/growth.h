@@ -75,6 +75,8 @@ class Grower {
   GrowthTimings timings_;
   std::vector<int> new_shoots_;    // ids of this year's shoots
   std::vector<int> flowering_;     // ids of the branches with flowers this year
+  std::vector<int> kept_foliage_;  // ids whose last year's leaves a budget-cut year kept
+  long refused_shoots_ = 0;        // shoots a limit refused (Truncate calls)
   std::vector<CosSin> bud_turns_;  // SetNextYearBuds: turn of each bud awaiting TurnBuds
   std::vector<int> breaking_;      // ids of the branches with a bud to break next year, ascending
   std::vector<float> turn_cos_, turn_sin_;  // phyllotaxis turn 2πϕ·i per node index i

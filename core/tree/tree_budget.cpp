@@ -81,10 +81,11 @@ GrowLimits TreeGrowLimits(const TreeParams& p, const Budget& budget,
 
 double MeshBytesPerInternode(const TreeParams& p) {
   // A typical tube of 6 sides (thin twigs have 3, the trunk 12: the exact check after the growth
-  // covers the rest) and every internode bearing this year's leaves; flowers are left to that
-  // check.
+  // covers the rest) and every internode bearing this year's leaves, twice: a growth the budget
+  // stops keeps last year's leaves beside this year's (issue 17 item 5, Grower::BreakBuds);
+  // flowers are left to that check.
   const double sides = 6;
-  const double leaves = std::max(1, p.GetInt(ParamId::kBL));
+  const double leaves = 2.0 * std::max(1, p.GetInt(ParamId::kBL));
   return kMesh.memory_per_byte * (kMesh.per_bark_vertex * (sides + 1) +
                                   kMesh.per_bark_index * 6 * sides + kMesh.per_leaf * leaves);
 }

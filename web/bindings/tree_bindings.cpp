@@ -49,10 +49,14 @@
 #include "buffers.h"
 #include "params/param_json.h"
 #include "params/param_table.h"
+#include "params/param_text.h"
 #include "render/atlas_mesh.h"
 #include "render/hybrid.h"
+#include "render/tree_lod.h"
 #include "sway/skin.h"
 #include "sway/sway.h"
+#include "sway/sway_budget.h"
+#include "sway/sway_gltf.h"
 #include "tree/growth.h"
 #include "tree/mesh.h"
 #include "tree/presets.h"
@@ -304,6 +308,49 @@ class TreeSession {
     return WriteTreeGlb(mesh_, &glb_).Line();
   }
 
+  // Game-ready .glb (issue 17 item 4, core/render/tree_lod): within max_triangles (< 0: the full
+  // mesh) and, with lod, the sibling nodes tree_LOD0..2. "" or one error line; then buffers("glb").
+  std::string buildLodGlb(double max_triangles, bool lod) {
+    glb_.clear();
+    if (!grower_) return error_.empty() ? "no tree" : error_;
+    if (max_triangles >= 0) {
+      const Status range = CheckValue("triangle budget", max_triangles,
+                                      static_cast<double>(kMinLodTriangles), 1e8, true);
+      if (!range.ok()) return range.Line();
+    }
+    const long budget = max_triangles < 0 ? -1 : static_cast<long>(max_triangles);
+    std::vector<LodMesh> levels;
+    if (lod) {
+      Result<std::vector<LodMesh>> all =
+          BuildLodLevels(grower_->tree(), budget, LodOptions{}, "triangle budget");
+      if (!all.ok()) return all.status().Line();
+      levels = std::move(all).value();
+    } else {
+      Result<LodMesh> level =
+          BuildLodMesh(grower_->tree(), budget < 0 ? FullTriangles(mesh_) : budget, LodOptions{},
+                       "triangle budget");
+      if (!level.ok()) return level.status().Line();
+      levels.push_back(std::move(level).value());
+    }
+    return WriteLodGlb(levels, &glb_).Line();
+  }
+
+  // The wind sway as a skinned, animated .glb (core/sway/sway_gltf, as `niwa tree sway --out
+  // x.glb`), its size estimated against the page budget first. "" or one error line.
+  std::string buildSwayGlb(double fps) {
+    glb_.clear();
+    if (!grower_) return error_.empty() ? "no tree" : error_;
+    const Status range = CheckValue("sway fps", fps, 1, 240, false);
+    if (!range.ok()) return range.Line();
+    const SwayParams params(state_.params);
+    const Estimate estimate = EstimateSwayGlb(sway_model_, CountTree(grower_->tree()), params, fps);
+    const Status fits = CheckEstimate(estimate, PageBudget(), "lower duration or years");
+    if (!fits.ok()) return fits.Line();
+    SwayGlbOptions options;
+    options.fps = fps;
+    return WriteSwayGlb(grower_->tree(), params, options, &glb_).Line();
+  }
+
   // ---- Hybrid rendering (thesis chapter 4) of the tree last meshed ----
   std::string buildHybrid() {
     if (!grower_) return error_.empty() ? "no tree" : error_;
@@ -450,6 +497,8 @@ EMSCRIPTEN_BINDINGS(niwa_tree) {
       .function("statsJson", &niwa::TreeSession::statsJson)
       .function("buildGlb", &niwa::TreeSession::buildGlb)
       .function("lookJson", &niwa::TreeSession::lookJson)
+      .function("buildLodGlb", &niwa::TreeSession::buildLodGlb)
+      .function("buildSwayGlb", &niwa::TreeSession::buildSwayGlb)
       .function("paramsJson", &niwa::TreeSession::paramsJson)
       .function("swayNodes", &niwa::TreeSession::swayNodes)
       .function("swayStart", &niwa::TreeSession::swayStart)

@@ -18,6 +18,7 @@ import { EditFeedback } from './edit_feedback.js';
 import { GettingStarted } from './getting_started.js';
 import { RenderTable } from './render_table.js';
 import { mountStateFile } from './state_file.js';
+import { mountExportPanel } from './export_panel.js';
 import { Renderer } from './tree_renderer.js';
 
 const $ = (id) => document.getElementById(id);
@@ -476,7 +477,8 @@ worker.on('export', (msg) => {
   exportIds.delete(msg.id);
   if (exportIds.size === 0 && ui.progressBar.hidden) showCancel(false);
   download(new Blob([msg.bytes], { type: msg.format === 'glb' ? 'model/gltf-binary' : 'application/json' }),
-    `${fileStem()}${msg.format === 'json' ? '-params' : ''}.${msg.format}`, ui.shareStatus);
+    `${fileStem()}${msg.format === 'json' ? '-params' : ''}${msg.variant ? `-${msg.variant}` : ''}.${msg.format}`,
+    ui.shareStatus);
 });
 
 worker.on('error', (msg) => {
@@ -647,12 +649,13 @@ function fileStem() {
 }
 
 let exports = 0;
-function requestExport(format) {
-  const { id } = worker.request('export', { format }, { group: `export-${++exports}`, done: ['export'] });
+function requestExport(format, fields = {}) {
+  const { id } = worker.request('export', { format, ...fields }, { group: `export-${++exports}`, done: ['export'] });
   showCancel(true);
   exportIds.add(id);
 }
 ui.downloadGlb.addEventListener('click', () => requestExport('glb'));
+mountExportPanel(ui.downloadGlb.parentElement, requestExport);
 ui.downloadJson.addEventListener('click', () => requestExport('json'));
 ui.downloadPng.addEventListener('click', () => {
   if (!renderer) return;

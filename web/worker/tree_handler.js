@@ -253,7 +253,12 @@ export function createHandler(Module, ctx) {
     if (!session) throw new Error('no tree has been grown yet');
     let bytes;
     if (msg.format === 'glb') {
-      const error = session.buildGlb();
+      // A triangle budget, LOD levels (core/render/tree_lod) or the sway clip (core/sway/sway_gltf):
+      // web/tree/export_panel.js; none of them: the full mesh as before.
+      const error = msg.variant === 'sway' ? session.buildSwayGlb(Number(msg.fps ?? 30))
+        : (msg.variant === 'lod' || msg.variant === 'budget')
+          ? session.buildLodGlb(Number(msg.maxTriangles ?? -1), msg.variant === 'lod')
+          : session.buildGlb();
       if (error) throw new Error(error);
       bytes = copyView(session.buffers('glb').bytes);
     } else if (msg.format === 'json') {
@@ -261,7 +266,7 @@ export function createHandler(Module, ctx) {
     } else {
       throw new Error(`unknown export format '${String(msg.format)}'`);
     }
-    post({ type: 'export', id: msg.id, client, format: msg.format, bytes }, [bytes]);
+    post({ type: 'export', id: msg.id, client, format: msg.format, variant: msg.variant, bytes }, [bytes]);
   }
 
   const decode = (hash) => JSON.parse(Module.decodeHash(String(hash ?? '')));

@@ -1,0 +1,84 @@
+// Game-ready tree exports within a triangle budget (issue 17 item 4): thick wood stays bark tubes,
+// thinner branches become crossed branch cards (thesis 4.2.1) or lines, leaves and flowers become
+// leaf-cluster cards (thesis 5.2) textured from an atlas rasterized here, and LOD levels as
+// sibling nodes <name>_LOD0.._LOD2 in one .glb. Does not: choose by view (the export keeps every
+// card plane, crossed), simulate sway, write files, or touch the page's GPU atlas.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "base/status.h"
+#include "image/image.h"
+#include "io/gltf_writer.h"
+#include "tree/mesh.h"
+#include "tree/tree.h"
+
+namespace niwa {
+
+// ---- data ----
+
+// The deterministic choice made for one budget (see ChooseLod).
+struct LodChoice {
+  bool full = true;            // the whole BuildTreeMesh fits: nothing else is used
+  bool leaf_clusters = false;  // leaves and flowers drawn as leaf-cluster cards
+  int cluster_cells = 0;       // RenderOptions::cluster_cells of those clusters (0: full leaves)
+  float tube_radius_cm = 0;    // branches at least this thick stay tubes
+  float card_radius_cm = 0;    // branches at least this thick (and thinner than tubes) are cards;
+                               // thinner ones are lines (glTF LINES, no triangles)
+  long triangles = 0;          // triangles of the result (TRIANGLES primitives only)
+  int tubes = 0, cards = 0, lines = 0, clusters = 0;  // branches of each kind, leaf clusters
+};
+
+// One level of detail, ready for glTF: the parts of BuildTreeMesh it keeps (tube bark, and leaves
+// and flowers when not clustered), the cards (branch and leaf-cluster quads, uvs into `atlas`,
+// GL texture space = glTF uv since atlas row y is stored as image row y) and the line twigs.
+struct LodMesh {
+  LodChoice choice;
+  TreeMesh parts;            // bark of the tubes only; leaves/flowers full or empty
+  MeshBuffers cards;         // 2 triangles per card plane
+  std::vector<float> lines;  // 2 endpoints × xyz per segment, metres
+  image::Rgba8Image atlas;   // empty when there are no cards
+};
+
+struct LodOptions {
+  int atlas_size = 2048;    // texels of the card atlas side (256..4096)
+  float card_ratio = 4.0f;  // card radius = tube radius / card_ratio (one bisection variable)
+};
+
+// ---- functions ----
+
+// Fewest triangles any tree can be drawn with (one leaf-cluster grid cell of 3 planes: 6).
+constexpr long kMinLodTriangles = 6;
+
+// The level of `tree` within `max_triangles` (>= 1): the full mesh when it fits; else foliage as
+// leaf-cluster cards with the finest grid whose cards take at most half the budget (cells 32, 24,
+// 16, 12, 8, 6, 4, 3, 2, 1; the coarsest when none does), then the wood's tube radius r found by
+// bisection (40 halvings of [0, thickest radius]) as the smallest r whose triangles fit the rest:
+// radius >= r tubes, r / card_ratio <= radius < r crossed cards (4 triangles), thinner lines. A
+// branch's triangles never grow with r, so the count is monotone in r. Errors name
+// `field` ("--max-triangles") when even the coarsest level does not fit.
+Result<LodMesh> BuildLodMesh(const Tree& tree, long max_triangles, const LodOptions& options = {},
+                             const std::string& field = "--max-triangles");
+
+// Triangles of the full BuildTreeMesh of the tree (bark, leaves, flowers).
+long FullTriangles(const TreeMesh& mesh);
+
+// LOD0 within max_triangles (or the full mesh when max_triangles < 0), LOD1 within 25 % and LOD2
+// within 5 % of LOD0's triangles; LOD1 and LOD2 use half and a quarter of the atlas side.
+Result<std::vector<LodMesh>> BuildLodLevels(const Tree& tree, long max_triangles,
+                                            const LodOptions& options = {},
+                                            const std::string& field = "--max-triangles");
+
+// A .glb document: one top-level node per level, named `name` when there is one level, else
+// `name`_LOD0, `name`_LOD1, ... (the suffix Unity's and Godot's importers group as LODs). Parts:
+// bark, leaves, flowers (tree/tree_gltf materials), "cards" (atlas, alpha mask, double-sided),
+// "twigs" (LINES, bark colour).
+Result<gltf::Document> LodGltfDocument(const std::vector<LodMesh>& levels,
+                                       const std::string& name = "tree");
+
+Status WriteLodGlb(const std::vector<LodMesh>& levels, std::vector<unsigned char>* bytes,
+                   const std::string& name = "tree");
+
+}  // namespace niwa

@@ -1,0 +1,106 @@
+// Issue 17 item 4 on the CLI: `niwa tree grow --max-triangles N --out x.glb` stays within N
+// triangles (counted from the .glb's own accessors, parsed here), `--lod` writes sibling nodes
+// tree_LOD0..2 with LOD1 <= 25 % and LOD2 <= 5 % of LOD0, both validate with Khronos'
+// gltf-validator (0 errors), the WASM CLI (when built) writes the same bytes, and bad input is one
+// line naming the flag, exit 2, no file. Run: NIWA_NATIVE=... NIWA_ROOT=... node tests/cli/lod_export.test.mjs
+import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+
+import { check, finish, native, root, run, spawn, wasm } from '../support/cli_pair.mjs';
+
+if (!native || !root) {
+  console.log('FAIL set NIWA_NATIVE (native niwa binary) and NIWA_ROOT (repo root)');
+  process.exit(2);
+}
+const require = createRequire(join(root, 'package.json'));
+const validatorModule = await import(pathToFileURL(require.resolve('gltf-validator')).href);
+const validator = validatorModule.default ?? validatorModule;
+
+// The JSON chunk and per-mesh triangle counts of a .glb (TRIANGLES primitives: mode 4 or absent).
+function parseGlb(bytes) {
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  if (view.getUint32(0, true) !== 0x46546c67) throw new Error('not a .glb');
+  const length = view.getUint32(12, true);
+  const gltf = JSON.parse(new TextDecoder().decode(bytes.subarray(20, 20 + length)));
+  const triangles = (mesh) => mesh.primitives.reduce((sum, p) =>
+    sum + ((p.mode ?? 4) === 4 ? gltf.accessors[p.indices].count / 3 : 0), 0);
+  const lines = (mesh) => mesh.primitives.filter((p) => p.mode === 1).length;
+  return { gltf, triangles, lines };
+}
+
+const dir = mkdtempSync(join(tmpdir(), 'niwa-lod-'));
+const tree = ['tree', 'grow', '--preset', 'sakura', '--years', '15'];
+try {
+  // The full tree, for scale.
+  const full = join(dir, 'full.glb');
+  run(native, [...tree, '--out', full]);
+  const fullGlb = parseGlb(readFileSync(full));
+  const fullTriangles = fullGlb.triangles(fullGlb.gltf.meshes[0]);
+  check(fullTriangles > 100000, `full 15-year sakura has ${fullTriangles} triangles (> 100 k: the budget has work)`);
+
+  for (const budget of [20000, 5000, 500]) {
+    const out = join(dir, `budget-${budget}.glb`);
+    run(native, [...tree, '--max-triangles', String(budget), '--out', out]);
+    const bytes = readFileSync(out);
+    const { gltf, triangles, lines } = parseGlb(bytes);
+    const count = triangles(gltf.meshes[0]);
+    check(gltf.nodes.length === 1 && gltf.nodes[0].name === 'tree', `--max-triangles ${budget}: one node 'tree'`);
+    check(count <= budget && count >= budget / 2, `--max-triangles ${budget}: ${count} triangles (within, and at least half used)`);
+    check(lines(gltf.meshes[0]) === 1, `--max-triangles ${budget}: thin twigs as one LINES primitive`);
+    const cards = gltf.materials.filter((m) => m.name.startsWith('cards'));
+    check(cards.length === 1 && cards[0].alphaMode === 'MASK' && cards[0].doubleSided === true,
+      `--max-triangles ${budget}: card material with the atlas, alpha mask, double-sided`);
+    const report = await validator.validateBytes(new Uint8Array(bytes), { maxIssues: 50 });
+    check(report.issues.numErrors === 0, `--max-triangles ${budget}: validator 0 errors`,
+      report.issues.messages.filter((m) => m.severity === 0).map((m) => m.message).slice(0, 3).join('; '));
+  }
+
+  const lodOut = join(dir, 'lod.glb');
+  run(native, [...tree, '--max-triangles', '20000', '--lod', '--out', lodOut]);
+  const lodBytes = readFileSync(lodOut);
+  const lod = parseGlb(lodBytes);
+  const names = lod.gltf.scenes[0].nodes.map((n) => lod.gltf.nodes[n].name);
+  check(JSON.stringify(names) === JSON.stringify(['tree_LOD0', 'tree_LOD1', 'tree_LOD2']),
+    `--lod: scene nodes ${names.join(', ')}`);
+  const counts = lod.gltf.scenes[0].nodes.map((n) => lod.triangles(lod.gltf.meshes[lod.gltf.nodes[n].mesh]));
+  check(counts[0] <= 20000, `--lod LOD0 ${counts[0]} triangles <= 20000`);
+  check(counts[1] * 100 <= counts[0] * 25, `--lod LOD1 ${counts[1]} <= 25 % of ${counts[0]}`);
+  check(counts[2] * 100 <= counts[0] * 5 && counts[2] > 0, `--lod LOD2 ${counts[2]} <= 5 % of ${counts[0]}`);
+  const lodReport = await validator.validateBytes(new Uint8Array(lodBytes), { maxIssues: 50 });
+  check(lodReport.issues.numErrors === 0, '--lod: validator 0 errors',
+    lodReport.issues.messages.filter((m) => m.severity === 0).map((m) => m.message).slice(0, 3).join('; '));
+
+  const lodFull = join(dir, 'lod-full.glb');
+  run(native, [...tree, '--lod', '--out', lodFull]);
+  const lf = parseGlb(readFileSync(lodFull));
+  const lf0 = lf.triangles(lf.gltf.meshes[lf.gltf.nodes[lf.gltf.scenes[0].nodes[0]].mesh]);
+  check(lf0 === fullTriangles, `--lod alone: LOD0 is the full mesh (${lf0} triangles)`);
+
+  // Bad input: one line naming the flag, exit 2, nothing written.
+  const bad = [
+    [['--max-triangles', '3', '--out', join(dir, 'a.glb')], '--max-triangles: 3 is out of range'],
+    [['--max-triangles', '2x', '--out', join(dir, 'b.glb')], '--max-triangles'],
+    [['--max-triangles', '100', '--out', join(dir, 'c.json')], '--max-triangles: only applies with --out FILE.glb'],
+    [['--lod', '--out', join(dir, 'd.svg')], '--lod: only applies with --out FILE.glb'],
+  ];
+  for (const [args, wanted] of bad) {
+    const r = spawn(native, [...tree, ...args]);
+    const out = args[args.indexOf('--out') + 1];
+    check(r.status === 2 && r.stderr.trim().split('\n').length === 1 && r.stderr.includes(wanted) && !existsSync(out),
+      `${args.slice(0, 2).join(' ')}: exit ${r.status}, '${r.stderr.trim()}'`);
+  }
+
+  if (existsSync(wasm)) {
+    const wasmOut = join(dir, 'wasm-lod.glb');
+    run(wasm, [...tree, '--max-triangles', '20000', '--lod', '--out', wasmOut]);
+    check(Buffer.compare(readFileSync(wasmOut), lodBytes) === 0, 'WASM CLI: --lod .glb byte-identical to native');
+  } else {
+    console.log(`SKIP WASM CLI not built at ${wasm}`);
+  }
+} finally {
+  rmSync(dir, { recursive: true, force: true });
+}
+finish();

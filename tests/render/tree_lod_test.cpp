@@ -1,0 +1,169 @@
+// core/render/tree_lod: a budgeted .glb stays within its triangles, keeps the thickest wood as
+// tubes, turns foliage into textured leaf-cluster cards, and LOD levels keep their ratios.
+#include "render/tree_lod.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "support/glb_parse.h"
+#include "support/grow.h"
+#include "tree/mesh.h"
+
+namespace niwa {
+namespace {
+
+const Tree& Sakura15() {
+  static const Tree tree = testing::GrowPreset("sakura", 15);
+  return tree;
+}
+
+// Triangles of the TRIANGLES primitives (mode 4 or absent) of one mesh of a parsed .glb.
+long GlbTriangles(const testing::Glb& glb, std::size_t mesh) {
+  long sum = 0;
+  for (const auto& p : glb.gltf["meshes"][mesh]["primitives"]) {
+    if (p.value("mode", 4) != 4) continue;
+    sum += glb.gltf["accessors"][p["indices"].get<std::size_t>()]["count"].get<long>() / 3;
+  }
+  return sum;
+}
+
+TEST(TreeLod, FullMeshWhenItFits) {
+  const long full = FullTriangles(BuildTreeMesh(Sakura15()));
+  Result<LodMesh> lod = BuildLodMesh(Sakura15(), full);
+  ASSERT_TRUE(lod.ok()) << lod.status().Line();
+  EXPECT_TRUE(lod->choice.full);
+  EXPECT_EQ(lod->choice.triangles, full);
+  EXPECT_TRUE(lod->cards.indices.empty());
+  EXPECT_TRUE(lod->lines.empty());
+}
+
+TEST(TreeLod, TwentyThousandTrianglesAndTheGlbAgrees) {
+  const long full = FullTriangles(BuildTreeMesh(Sakura15()));
+  ASSERT_GT(full, 100000);  // the 489 k tree: the budget has work to do
+  Result<LodMesh> lod = BuildLodMesh(Sakura15(), 20000);
+  ASSERT_TRUE(lod.ok()) << lod.status().Line();
+  const LodChoice& c = lod->choice;
+  EXPECT_FALSE(c.full);
+  EXPECT_TRUE(c.leaf_clusters);
+  EXPECT_LE(c.triangles, 20000);
+  EXPECT_GE(c.triangles, 10000);  // the wood takes what the foliage leaves (at most half)
+  EXPECT_GT(c.tubes, 0);
+  EXPECT_GT(c.clusters, 0);
+  EXPECT_GT(c.lines, 0);
+  EXPECT_TRUE(lod->parts.leaves.indices.empty());
+  std::vector<unsigned char> bytes;
+  ASSERT_TRUE(WriteLodGlb({*lod}, &bytes).ok());
+  testing::Glb glb = testing::ParseGlb(bytes);
+  ASSERT_EQ(glb.gltf["nodes"].size(), 1u);
+  EXPECT_EQ(glb.gltf["nodes"][0]["name"], "tree");
+  EXPECT_EQ(GlbTriangles(glb, 0), c.triangles);
+  bool lines = false;
+  for (const auto& p : glb.gltf["meshes"][0]["primitives"]) lines |= p.value("mode", 4) == 1;
+  EXPECT_TRUE(lines);
+}
+
+TEST(TreeLod, SmallerBudgetsNeverAddTrianglesOrTubes) {
+  long last_triangles = 1L << 40;
+  int last_tubes = 1 << 30;
+  for (long budget : {60000L, 20000L, 8000L, 2000L, 400L}) {
+    Result<LodMesh> lod = BuildLodMesh(Sakura15(), budget);
+    ASSERT_TRUE(lod.ok()) << budget << ": " << lod.status().Line();
+    EXPECT_LE(lod->choice.triangles, budget);
+    EXPECT_LE(lod->choice.triangles, last_triangles);
+    EXPECT_LE(lod->choice.tubes, last_tubes) << budget;
+    last_triangles = lod->choice.triangles;
+    last_tubes = lod->choice.tubes;
+  }
+}
+
+// The thickest branches stay tubes: every tube is at least as thick as every card and line.
+TEST(TreeLod, TubesAreTheThickestBranches) {
+  Result<LodMesh> lod = BuildLodMesh(Sakura15(), 20000);
+  ASSERT_TRUE(lod.ok());
+  std::vector<bool> tube(Sakura15().branches.size(), false);
+  for (uint32_t b : lod->parts.bark_branch_id) tube[b] = true;
+  float thinnest_tube = 1e30f, thickest_other = 0;
+  for (std::size_t i = 0; i < tube.size(); ++i) {
+    const Branch& b = Sakura15().branches[i];
+    if (!b.alive || b.nodes.size() < 2) continue;
+    if (tube[i]) {
+      thinnest_tube = std::min(thinnest_tube, BranchRadius(b));
+    } else {
+      thickest_other = std::max(thickest_other, BranchRadius(b));
+    }
+  }
+  EXPECT_GE(thinnest_tube, lod->choice.tube_radius_cm);
+  EXPECT_LT(thickest_other, lod->choice.tube_radius_cm);
+}
+
+// Every card's uv rectangle holds painted texels (leaves, flowers or bark), and the atlas is
+// otherwise transparent.
+TEST(TreeLod, CardsAreTexturedFromTheAtlas) {
+  Result<LodMesh> lod = BuildLodMesh(Sakura15(), 20000);
+  ASSERT_TRUE(lod.ok());
+  const image::Rgba8Image& atlas = lod->atlas;
+  ASSERT_FALSE(atlas.empty());
+  long opaque = 0;
+  for (std::size_t k = 3; k < atlas.pixels.size(); k += 4) opaque += atlas.pixels[k] > 0;
+  EXPECT_GT(opaque, 1000);
+  EXPECT_LT(opaque, static_cast<long>(atlas.pixels.size() / 4));
+  const MeshBuffers& cards = lod->cards;
+  int painted_cards = 0, total = 0;
+  for (std::size_t v = 0; v + 3 < cards.vertex_count(); v += 4) {
+    ++total;
+    auto texel = [&](float t, int size) { return static_cast<int>(t * static_cast<float>(size)); };
+    const int x0 = texel(cards.uvs[2 * v], atlas.width);
+    const int y0 = texel(cards.uvs[2 * v + 1], atlas.height);
+    const int x1 = texel(cards.uvs[2 * (v + 2)], atlas.width);
+    const int y1 = texel(cards.uvs[2 * (v + 2) + 1], atlas.height);
+    bool any = false;
+    for (int y = y0; y < y1 && !any; ++y) {
+      for (int x = x0; x < x1 && !any; ++x) any = atlas.At(x, y)[3] > 0;
+    }
+    painted_cards += any ? 1 : 0;
+  }
+  EXPECT_GT(total, 0);
+  EXPECT_GE(painted_cards, total * 9 / 10);
+}
+
+TEST(TreeLod, TooFewTrianglesIsOneLineNamingTheFlag) {
+  Result<LodMesh> lod = BuildLodMesh(Sakura15(), 3);
+  ASSERT_FALSE(lod.ok());
+  EXPECT_EQ(lod.status().Line(), "--max-triangles: 3 is too few; must be at least 6");
+}
+
+TEST(TreeLod, LevelsAreSiblingNodesWithinTheirShares) {
+  Result<std::vector<LodMesh>> levels = BuildLodLevels(Sakura15(), 20000);
+  ASSERT_TRUE(levels.ok()) << levels.status().Line();
+  ASSERT_EQ(levels->size(), 3u);
+  const long lod0 = (*levels)[0].choice.triangles;
+  EXPECT_LE(lod0, 20000);
+  EXPECT_LE((*levels)[1].choice.triangles * 100, lod0 * 25);
+  EXPECT_LE((*levels)[2].choice.triangles * 100, lod0 * 5);
+  EXPECT_GT((*levels)[2].choice.triangles, 0);
+  std::vector<unsigned char> bytes;
+  ASSERT_TRUE(WriteLodGlb(*levels, &bytes).ok());
+  testing::Glb glb = testing::ParseGlb(bytes);
+  const auto& scene = glb.gltf["scenes"][0]["nodes"];
+  ASSERT_EQ(scene.size(), 3u);
+  for (std::size_t l = 0; l < 3; ++l) {
+    const auto& node = glb.gltf["nodes"][scene[l].get<std::size_t>()];
+    EXPECT_EQ(node["name"], "tree_LOD" + std::to_string(l));
+    EXPECT_EQ(GlbTriangles(glb, node["mesh"].get<std::size_t>()), (*levels)[l].choice.triangles);
+  }
+}
+
+TEST(TreeLod, SameTreeSameBytes) {
+  std::vector<unsigned char> a, b;
+  Result<LodMesh> one = BuildLodMesh(Sakura15(), 5000);
+  Result<LodMesh> two = BuildLodMesh(Sakura15(), 5000);
+  ASSERT_TRUE(one.ok() && two.ok());
+  ASSERT_TRUE(WriteLodGlb({*one}, &a).ok());
+  ASSERT_TRUE(WriteLodGlb({*two}, &b).ok());
+  EXPECT_EQ(a, b);
+}
+
+}  // namespace
+}  // namespace niwa
