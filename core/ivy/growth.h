@@ -32,11 +32,15 @@ struct Support {
 constexpr int kMaxSteps = 10000;
 constexpr int kMaxSeedPoints = 64;
 
-// Grows one plant from every seed point for `steps` steps (stops early when no A or D is left).
+struct IvyGrowLimits;  // ivy_budget.h
+
+// Grows one plant from every seed point for `steps` steps (stops early when no A or D is left, or
+// before a step whose worst case would cross `limits`: log->truncated_by then holds the line).
 // Errors: steps outside [0, 10000], no seed point, a seed farther than d from every face ("seed
 // point 1: 35.2 px from the nearest face; must be within d = 20"), invalid parameters.
 Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& seeds,
-                      const IvyParams& params, int steps, uint64_t seed, GrowLog* log);
+                      const IvyParams& params, int steps, uint64_t seed, GrowLog* log,
+                      const IvyGrowLimits* limits = nullptr);
 
 // The geometric normal of a triangle (unit, from its winding).
 glm::dvec3 TriangleNormal(const geom::TriMesh& mesh, uint32_t triangle);

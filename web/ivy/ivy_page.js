@@ -16,7 +16,7 @@ import { ParamPanel } from '../shell/param_panel.js';
 import { StepScrubber } from '../shell/step_scrubber.js';
 import { Notices, copyLink, download, mountStudyNav } from '../shell/study_page.js';
 import { bumpHook, setHooks } from '../shell/test_hooks.js';
-import { WorkerClient } from '../shell/worker_client.js';
+import { WorkerClient, restartWorker } from '../shell/worker_client.js';
 import { IvyRenderer } from './ivy_renderer.js';
 
 const $ = (id) => document.getElementById(id);
@@ -32,14 +32,34 @@ const ui = {
 mountStudyNav($('studies'), 'ivy');
 
 // webgl: drawing problems; error: the core's line for the current state; hash: decoding notices;
-// mesh: the dropped mesh (not part of the link); drop: refused files.
-const notices = new Notices($('notice'), ['webgl', 'error', 'hash', 'mesh', 'drop']);
+// mesh: the dropped mesh (not part of the link); drop: refused files; budget: the page budget's
+// line when it stopped the growth early (docs/budgets.md).
+const notices = new Notices($('notice'), ['webgl', 'error', 'hash', 'mesh', 'drop', 'budget']);
 const worker = new WorkerClient('ivy', {
   study: 'ivy',
   onFailure: (text) => {
     notices.set('error', text);
     setHooks({ status: 'error' });
   },
+  // Cancel restarted the worker: init it again, then grow the last finished state (or the
+  // defaults when none finished yet); the ivy on screen stays until then.
+  onRestart: () => {
+    restarting = true;
+    worker.request('init', { hash: '' }, { done: ['ready'] });
+  },
+});
+let restarting = false;  // the next 'ready' answers a restart (the panel exists already)
+let lastGoodHash = null; // the hash of the last ivy shown
+
+// Cancel (issue 16): whatever the worker is doing (a grow, a mesh, an export) ends now.
+const cancelButton = $('cancel');
+const showCancel = (on) => { cancelButton.hidden = !on; };
+cancelButton.addEventListener('click', () => {
+  showCancel(false);
+  clearTimeout(debounceTimer);
+  ui.progress.textContent = 'cancelled: back to the last finished ivy';
+  bumpHook('cancels');
+  restartWorker();
 });
 
 // ---------------------------------------------------------------- rendering
@@ -145,6 +165,7 @@ function sendUpdate(commit) {
   setHooks({ status: 'growing' });
   const request = worker.request('update', { state: currentState(), useMesh }, { group: 'ivy', done: ['ivy'] });
   latestId = request.id;
+  showCancel(true);
   bumpHook('growRequests');
   return request;
 }
@@ -193,6 +214,13 @@ function showFieldError(message) {
 
 // ---------------------------------------------------------------- worker replies
 worker.on('ready', (msg) => {
+  if (restarting) {  // after Cancel: the last finished state again (a dropped mesh must be dropped again)
+    restarting = false;
+    if (useMesh) notices.set('mesh', 'Cancelled: drop the mesh again to grow on it.');
+    useMesh = false;
+    worker.request('decode', { hash: lastGoodHash ? `#${lastGoodHash}` : '' }, { done: ['decoded'] });
+    return;
+  }
   presets = msg.presets;
   scenes = msg.scenes;
   for (const p of presets) ui.preset.append(new Option(p.name, p.name));
@@ -259,7 +287,10 @@ worker.on('ivy', (msg) => {
   if (msg.id !== latestId) return;
   const s = msg.stats;
   notices.set('error', '');
+  notices.set('budget', s.truncated_by || '');
   showFieldError('');
+  showCancel(false);
+  lastGoodHash = msg.hash;
   ui.progress.textContent = '';
   ui.stats.textContent = `internodes ${s.internodes} · leaves ${s.leaves} · laterals ${s.laterals} · buds A ${s.buds.A} D ${s.buds.D} Z ${s.buds.Z} · grown in ${s.ms.toFixed(1)} ms`;
   if (renderer) {
@@ -280,7 +311,7 @@ worker.on('ivy', (msg) => {
   ivySerial += 1;
   setHooks({
     status: 'ready', error: '', meshError: '', ivySerial, internodes: s.internodes, leaves: s.leaves, laterals: s.laterals,
-    steps: msg.steps, stats: JSON.stringify(s), hash: msg.hash,
+    steps: msg.steps, stats: JSON.stringify(s), hash: msg.hash, truncatedBy: s.truncated_by || '',
   });
   requestFrame();
 });
@@ -320,6 +351,7 @@ worker.on('error', (msg) => {
     return;
   }
   if (msg.id !== undefined && msg.id !== latestId) return;
+  showCancel(false);
   notices.set('error', msg.message);
   showFieldError(msg.message);
   ui.progress.textContent = '';
