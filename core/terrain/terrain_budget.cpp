@@ -15,14 +15,15 @@ namespace {
 // (16 bytes) in its ring, with the ring's spare room; a contour in the making holds its parent's
 // copy, the shrink's rings, the perturbed ones and their 1/1024 m grid copies (IRing) at once.
 constexpr double kBaseBytes = 64.0 * 1024 * 1024;  // the process, tables, code
-constexpr double kBytesPerVertex = 32, kTransientBytesPerVertex = 160;
+constexpr double kBytesPerVertex = 32, kTransientBytesPerVertex = 200;
 // Native release, the slowest of several runs with a margin: shrink (offset, union, loops) and
 // perturbation per vertex worked.
 constexpr double kNsPerVertex = 10000;
-// The heightfield: h (8 bytes), band (4), the stamped a and b (8 + 8) a cell; a segment grid's
+// The heightfield: h (8 bytes), band (4), the stamped a and b (8 + 8) and the painting rows (36
+// measured) a cell; a segment grid's
 // entry and cell list (about 48 bytes) a contour vertex. Time a cell (painting, stamping about
 // three contours' windows, the band height) and a vertex (its segment grid).
-constexpr double kBytesPerCell = 28, kBytesPerGridVertex = 48;
+constexpr double kBytesPerCell = 36, kBytesPerGridVertex = 48;
 constexpr double kNsPerCell = 600, kNsPerGridVertex = 400;
 
 std::string Count(double n) {
@@ -51,10 +52,10 @@ struct OutputCost {
 // .glb: a vertex a cell (position, normal, colour: 36 bytes) and two triangles (24 bytes of
 // indices), the contour lines' 12-byte vertices and 8 bytes of indices; the heightmap: 2 bytes a
 // cell (deflated, with the image and its rows held); the contour files a vertex as text.
-constexpr OutputCost kGlb = {60, 20, 65536, 3, 20, "writing the .glb"};
+constexpr OutputCost kGlb = {60, 20, 65536, 5, 20, "writing the .glb"};
 constexpr OutputCost kHeightmap = {2, 0, 8192, 8, 60, "writing the heightmap"};
-constexpr OutputCost kJson = {0, 40, 8192, 5, 60, "writing the contours' .json"};
-constexpr OutputCost kGeoJson = {0, 40, 8192, 5, 60, "writing the contours' .geojson"};
+constexpr OutputCost kJson = {0, 40, 8192, 7, 60, "writing the contours' .json"};
+constexpr OutputCost kGeoJson = {0, 40, 8192, 7, 60, "writing the contours' .geojson"};
 constexpr OutputCost kSvg = {0, 24, 8192, 3, 60, "writing the contours' .svg"};
 
 }  // namespace

@@ -128,11 +128,12 @@ TEST(IvyBudget, SubdivisionBeyondTheBudgetIsRefusedWithTheLine) {
   IvySupportSize size;
   size.triangles = 60000;
   size.levels = 3;  // 3.84 M triangles: within the 4 M cap, not within 256 MB
+  // 3.84 M × (84 + 64) + 60,000 × 84 bytes + the 64 MB process = 610.8 MB.
   Budget budget;
   budget.memory_bytes = uint64_t{256} << 20;
   const Status s = CheckEstimate(EstimateIvySupport(size), budget, kIvyChange);
   EXPECT_EQ(s.Line(),
-            "--max-memory: subdividing the support to 3,840,000 triangles needs about 550.8 MB, "
+            "--max-memory: subdividing the support to 3,840,000 triangles needs about 611 MB, "
             "more than the 256 MB allowed; lower --steps or --subdivide, or raise t1 and t2 (or "
             "raise --max-memory)");
 }
