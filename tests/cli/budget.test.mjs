@@ -78,7 +78,7 @@ for (const cmd of [native, wasm]) {
 // Ivy (issue 16, docs/budgets.md "Ivy"): a --subdivide beyond the memory budget is refused before
 // subdividing; growth stops at a step (memory or work-unit time) with truncated_by; the export is
 // refused before it starts. Same lines natively and in WASM.
-refused('ivy --subdivide 4 at 128 MB', ['ivy', 'grow', '--scene', 'stairs', '--subdivide', '4', '--steps', '5', '--max-memory', '128M'],
+refused('ivy --subdivide 5 at 128 MB', ['ivy', 'grow', '--scene', 'sphere', '--subdivide', '5', '--steps', '5', '--max-memory', '128M'],
   '--max-memory', null, /^niwa: error: --max-memory: subdividing the support to [\d,]+ triangles needs about .* more than the 128 MB allowed; lower --steps or --subdivide, or raise t1 and t2 \(or raise --max-memory\)$/);
 function ivyTruncated(name, args, limit) {
   const stats = [];
