@@ -181,7 +181,7 @@ std::string IvyEncodeHash(const std::string& state_json) {
 }
 
 // The page's budget (docs/budgets.md): what a laptop tab's WASM heap holds, by estimate.
-Budget PageBudget() {
+static Budget PageBudget() {  // internal: each study binding has its own
   Budget budget;
   budget.memory_bytes = uint64_t{1} << 30;
   budget.seconds = 60;
