@@ -4,6 +4,8 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <optional>
 #include <string>
@@ -16,6 +18,7 @@
 #include "geom/primitives.h"
 #include "io/mesh_reader.h"
 #include "ivy/growth.h"
+#include "ivy/ivy_budget.h"
 #include "ivy/ivy_mesh.h"
 #include "ivy/ivy_params.h"
 #include "ivy/ivy_report.h"
@@ -39,6 +42,7 @@ struct IvyOptions {
   std::string out_path;
   std::vector<std::string> seed_points, sets;
   bool stats = false, with_support = false;
+  BudgetOptions budget;
 };
 
 double Ms(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
@@ -122,6 +126,7 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   const int levels =
       static_cast<int>(ParseFlagNumber("--subdivide", o.subdivide, {0, kMaxSubdivide, true}));
   ivy::IvyState state = ResolveState(o);
+  const Budget budget = ResolveBudget(o.budget);
   if (!o.mesh.empty() + !o.scene.empty() + !o.tree_preset.empty() > 1) {
     Fail(Status::Error(o.mesh.empty() ? "--scene" : "--mesh",
                        "give one of --mesh FILE, --scene NAME or --tree-preset NAME"));
@@ -164,8 +169,16 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
                                             FormatNumber(after) +
                                             " triangles; the limit is 4000000 (4 M)"));
     }
-    scene.mesh = geom::Subdivide(scene.mesh, levels);
   }
+  // The support's memory and time (the subdivision, its BVH), refused before subdividing.
+  ivy::IvySupportSize support_size;
+  support_size.triangles = scene.free ? 0 : static_cast<double>(scene.mesh.triangle_count());
+  support_size.levels = scene.free ? 0 : levels;
+  support_size.bvh = o.accel == "bvh";
+  support_size.obstacles = !o.mesh.empty();  // a mesh's noivy triangles: a second mesh and BVH
+  const Estimate support_estimate = ivy::EstimateIvySupport(support_size);
+  Check(CheckEstimate(support_estimate, budget, ivy::kIvyChange));
+  if (levels > 0 && !scene.free) scene.mesh = geom::Subdivide(scene.mesh, levels);
   std::vector<glm::dvec3> seeds;
   for (const std::string& s : o.seed_points)
     seeds.push_back(ParseSeedPoint(s, o.mesh.empty() ? &scene : nullptr));  // scene or tree seeds
@@ -193,14 +206,32 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
     }
   }
   ivy::GrowLog log;
+  const ivy::IvyGrowLimits limits =
+      ivy::IvyLimits(state.params, budget, support_estimate, !scene.free);
   Result<ivy::IvyModel> model =
-      ivy::Grow(support, seeds, state.params, state.steps, state.seed, &log);
+      ivy::Grow(support, seeds, state.params, state.steps, state.seed, &log, &limits);
   if (!model.ok()) Fail(model.status());
+  ReportTruncated(log.truncated_by);
   ivy::IvyTimings t;
   t.ms_bvh = Ms(t_bvh0, t_bvh1);
   t.ms_rules = log.ms_rules;
   t.ms_search = log.ms_search;
   if (!o.out_path.empty()) {
+    // The export's estimate on top of the grown ivy's, refused before it starts.
+    const ivy::IvyExport kind = ext == ".json"   ? ivy::IvyExport::kJson
+                                : ext == ".lsys" ? ivy::IvyExport::kLsys
+                                : ext == ".svg"  ? ivy::IvyExport::kSvg
+                                                 : ivy::IvyExport::kGlb;
+    const bool support_out = !scene.free && (ext == ".svg" || o.with_support);
+    const Estimate grown = ivy::EstimateIvyGrown(*model, log, limits);
+    const Estimate export_estimate = ivy::EstimateIvyExport(
+        *model, kind, support_out ? static_cast<double>(scene.mesh.triangle_count()) : 0);
+    if (std::getenv("NIWA_BUDGET_TRACE")) {  // calibration (docs/budgets.md)
+      std::fprintf(stderr, "budget: grown %.0f MB %.2f s; export %.0f MB %.2f s\n",
+                   grown.memory_bytes / 1048576, grown.seconds,
+                   export_estimate.memory_bytes / 1048576, export_estimate.seconds);
+    }
+    Check(CheckEstimate(grown + export_estimate, budget, ivy::kIvyChange));
     std::string bytes;
     if (ext == ".json") {
       bytes = ivy::IvyModelJson(*model, state.params, state.seed, state.steps) + "\n";
@@ -223,6 +254,11 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
     StagedOutputs outputs;
     Check(outputs.Stage("--out", o.out_path, bytes));
     Check(outputs.Commit());
+  }
+  if (std::getenv("NIWA_BUDGET_TRACE") && o.out_path.empty()) {
+    const Estimate grown = ivy::EstimateIvyGrown(*model, log, limits);
+    std::fprintf(stderr, "budget: grown %.0f MB %.2f s\n", grown.memory_bytes / 1048576,
+                 grown.seconds);
   }
   if (o.stats) {
     ivy::IvyStats stats = ivy::MeasureIvy(*model, log, scene.free ? nullptr : &scene.mesh,
@@ -286,6 +322,7 @@ void AddIvyCommands(CLI::App& app, CommandList& commands) {
   grow->add_flag("--with-support", o->with_support, "The .glb also holds the support mesh");
   grow->add_option("--svg-leaves", o->svg_leaves, ".svg: draw the leaves, 0 or 1 (default 1)");
   grow->add_option("--caption", o->caption, ".svg: a line of text under the views");
+  AddBudgetOptions(grow, &o->budget);
   commands.push_back({grow, [o](std::ostream& out) { return RunGrow(*o, out); }});
   CLI::App* scenes = ivy_app->add_subcommand("scenes", "List the built-in scenes and seeds");
   commands.push_back({scenes, [](std::ostream& out) { return RunScenes(out); }});

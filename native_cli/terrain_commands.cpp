@@ -3,6 +3,7 @@
 // cli-order: 40
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -16,6 +17,7 @@
 #include "terrain/generate.h"
 #include "terrain/heightfield.h"
 #include "terrain/seeds.h"
+#include "terrain/terrain_budget.h"
 #include "terrain/terrain_output.h"
 #include "terrain/terrain_params.h"
 #include "terrain/terrain_report.h"
@@ -31,6 +33,7 @@ struct GrowOptions {
   std::vector<std::string> sets;
   int res = 0;
   bool stats = false;
+  BudgetOptions budget;
 };
 
 // Several outputs of one run are all written or none (cli::StagedOutputs: each staged to a
@@ -116,10 +119,40 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   }
   terrain::TerrainState state = ResolveTerrainState(o);
   const terrain::TerrainParams& params = state.params;
+  const Budget budget = ResolveBudget(o.budget);
   Result<terrain::Ring> seed = terrain::StateSeed(state);
   if (!seed.ok()) Fail(seed.status());
-  Result<terrain::Terrain> t = terrain::Grow(*seed, params);
+  {
+    // The heightfield alone ((res + 2)² cells at most) must fit before anything grows.
+    const double side = params.GetInt(TerrainParam::kRes) + 2.0;
+    Check(CheckEstimate(terrain::EstimateHeightfield(terrain::Terrain{}, {side, side}), budget,
+                        terrain::kTerrainSurfaceChange));
+  }
+  const terrain::TerrainGrowLimits limits = terrain::TerrainLimits(params, budget);
+  Result<terrain::Terrain> t = terrain::Grow(*seed, params, &limits);
   if (!t.ok()) Fail(t.status());
+  ReportTruncated(t->counts.truncated_by);
+  {
+    // The heightfield and every output on top of the grown contours, refused before they start.
+    const terrain::GridSize grid = terrain::TerrainGridSize(*t, params.GetInt(TerrainParam::kRes));
+    Estimate e = terrain::EstimateTerrainGrown(*t, limits) + terrain::EstimateHeightfield(*t, grid);
+    if (!o.out.empty())
+      e = e + terrain::EstimateTerrainOutput(*t, grid, terrain::TerrainOutput::kGlb);
+    if (!o.heightmap.empty())
+      e = e + terrain::EstimateTerrainOutput(*t, grid, terrain::TerrainOutput::kHeightmap);
+    if (!o.contours_out.empty()) {
+      const std::string ext = Extension(o.contours_out);
+      e = e + terrain::EstimateTerrainOutput(*t, grid,
+                                             ext == ".json" ? terrain::TerrainOutput::kContoursJson
+                                             : ext == ".geojson" ? terrain::TerrainOutput::kGeoJson
+                                                                 : terrain::TerrainOutput::kSvg);
+    }
+    if (std::getenv("NIWA_BUDGET_TRACE")) {  // calibration (docs/budgets.md)
+      std::fprintf(stderr, "budget: %.0f MB %.2f s (%s)\n", e.memory_bytes / 1048576, e.seconds,
+                   e.what.c_str());
+    }
+    Check(CheckEstimate(e, budget, terrain::kTerrainSurfaceChange));
+  }
   const auto t1 = std::chrono::steady_clock::now();
   terrain::Heightfield hf = terrain::BuildHeightfield(*t, params.GetInt(TerrainParam::kRes));
   const auto t2 = std::chrono::steady_clock::now();
@@ -190,10 +223,21 @@ int RunCompare(const GrowOptions& o, const std::string& dem_path, std::ostream& 
       terrain::ReadHeightmap(std::vector<unsigned char>(png->begin(), png->end()), *side, "--dem");
   if (!dem.ok()) Fail(dem.status());
   terrain::TerrainState state = ResolveTerrainState(o);
+  const Budget budget = ResolveBudget(o.budget);
   Result<terrain::Ring> seed = terrain::StateSeed(state);
   if (!seed.ok()) Fail(seed.status());
-  Result<terrain::Terrain> t = terrain::Grow(*seed, state.params);
+  const terrain::TerrainGrowLimits limits = terrain::TerrainLimits(state.params, budget);
+  Result<terrain::Terrain> t = terrain::Grow(*seed, state.params, &limits);
   if (!t.ok()) Fail(t.status());
+  ReportTruncated(t->counts.truncated_by);
+  {
+    // The heightfield on the DEM's grid, refused before it is built.
+    const terrain::GridSize grid = {static_cast<double>(dem->width),
+                                    static_cast<double>(dem->height)};
+    Check(CheckEstimate(
+        terrain::EstimateTerrainGrown(*t, limits) + terrain::EstimateHeightfield(*t, grid), budget,
+        "use a smaller DEM"));
+  }
   const terrain::Comparison c = terrain::CompareTerrain(*dem, *t);
   if (c.real.cells == 0) {
     Fail(Status::Error("--dem", "no DEM cell lies inside the seed contour; must cover it"));
@@ -251,6 +295,7 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
   grow->add_option("--heightmap", o->heightmap,
                    "Write a 16-bit greyscale .png and its sidecar FILE.json (min, max, cell, "
                    "origin)");
+  AddBudgetOptions(grow, &o->budget);
   commands.push_back({grow, [o](std::ostream& out) { return RunGrow(*o, out); }});
 
   CLI::App* compare = terrain_cmd->add_subcommand(
@@ -268,6 +313,7 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
   compare->add_option("--set", co->sets, "KEY=VALUE of the terrain table");
   compare->add_option("--params", co->params_file, "State JSON, as for grow");
   compare->add_option("--url", co->url, "A share-link hash, as for grow");
+  AddBudgetOptions(compare, &co->budget);
   commands.push_back(
       {compare, [co, dem](std::ostream& out) { return RunCompare(*co, *dem, out); }});
 

@@ -11,6 +11,7 @@
 #include "geom/closest_point.h"
 #include "geom/linear_queries.h"
 #include "geom/ray_cast.h"
+#include "ivy/ivy_budget.h"
 #include "ivy/segment_grid.h"
 #include "math/det_math.h"
 #include "params/param_text.h"
@@ -534,7 +535,7 @@ class Grower {
 
 Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& seeds,
                       const IvyParams& params, int steps, uint64_t seed, GrowLog* log,
-                      const StepObserver& on_step) {
+                      const IvyGrowLimits* limits, const StepObserver& on_step) {
   GrowLog local;
   if (log == nullptr) log = &local;
   *log = GrowLog();
@@ -565,6 +566,11 @@ Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& see
   log->nutrient_start = g.NutrientTotal();
   auto t0 = std::chrono::steady_clock::now();
   for (int s = 1; s <= steps; ++s) {
+    if (limits != nullptr) {
+      log->truncated_by = CheckIvyStep(g.model(), *log, *limits, s, steps);
+      if (!log->truncated_by.empty()) break;
+    }
+    log->bud_steps += static_cast<double>(g.model().buds.size());
     g.Step(s);
     log->steps_run = s;
     if (on_step) on_step(s, steps);

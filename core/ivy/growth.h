@@ -33,7 +33,10 @@ struct Support {
 constexpr int kMaxSteps = 10000;
 constexpr int kMaxSeedPoints = 64;
 
-// Grows one plant from every seed point for `steps` steps (stops early when no A or D is left).
+struct IvyGrowLimits;  // ivy_budget.h
+
+// Grows one plant from every seed point for `steps` steps (stops early when no A or D is left, or
+// before a step whose worst case would cross `limits`: log->truncated_by then holds the line).
 // Errors: steps outside [0, 10000], no seed point, a seed farther than d from every face ("seed
 // point 1: 35.2 px from the nearest face; must be within d = 20"), invalid parameters.
 // on_step (optional) is called after every step with (step, steps): progress for a page's worker;
@@ -41,6 +44,7 @@ constexpr int kMaxSeedPoints = 64;
 using StepObserver = std::function<void(int step, int steps)>;
 Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& seeds,
                       const IvyParams& params, int steps, uint64_t seed, GrowLog* log,
+                      const IvyGrowLimits* limits = nullptr,
                       const StepObserver& on_step = {});
 
 // The geometric normal of a triangle (unit, from its winding).

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <string>
 #include <vector>
 
 #include "geom/query_stats.h"
@@ -86,6 +87,10 @@ struct GrowLog {
   std::array<int64_t, kRejectCount> rejected{};
   geom::QueryStats closest, segment;
   double ms_rules = 0, ms_search = 0;
+  // Budgets (ivy_budget.h): Σ over the steps run of the buds each walked (work units), and the
+  // line of the limit that stopped the growth early ("" when none did).
+  double bud_steps = 0;
+  std::string truncated_by;
 };
 
 }  // namespace niwa::ivy

@@ -198,6 +198,8 @@ std::string IvyStatsJson(const IvyStats& s, const GrowLog& log, const IvyModel& 
   nlohmann::json j;
   j["steps_run"] = s.steps_run;
   j["extinct_step"] = s.extinct_step;
+  j["truncated"] = !log.truncated_by.empty();  // stopped at a budget (ivy_budget.h)
+  if (!log.truncated_by.empty()) j["truncated_by"] = log.truncated_by;
   j["tri_count"] = s.tri_count;
   j["internodes"] = s.internodes;
   j["buds"] = {{"A", s.buds_A}, {"D", s.buds_D}, {"Z", s.buds_Z}};

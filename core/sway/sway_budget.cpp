@@ -53,4 +53,15 @@ Estimate EstimateSwayGlb(const SwayModel& model, const TreeCounts& counts, const
   return e;
 }
 
+Estimate EstimatePageSway(const SwayModel& model, int instances) {
+  const double nodes = static_cast<double>(model.nodes.size());
+  const double internodes = static_cast<double>(model.internodes);
+  Estimate e;
+  e.memory_bytes =
+      instances * (kNodePointBytes * nodes + kInternodeBytes * internodes + 16.0 * 4.0 * nodes);
+  e.what = "swaying " + Steps(instances) + " tree" + (instances == 1 ? "" : "s") + " of " +
+           Steps(internodes) + " internodes";
+  return e;
+}
+
 }  // namespace niwa

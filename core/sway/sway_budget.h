@@ -22,4 +22,8 @@ Estimate EstimateSwayRun(const SwayModel& model, const SwayParams& params, int t
 Estimate EstimateSwayGlb(const SwayModel& model, const TreeCounts& counts, const SwayParams& params,
                          double fps);
 
+// The page's sway (web/bindings/tree_bindings.cpp): `instances` simulators of `model` stepped by
+// the wall clock and their pose arrays (16 floats a node point and instance); no trajectories.
+Estimate EstimatePageSway(const SwayModel& model, int instances);
+
 }  // namespace niwa

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace niwa::terrain {
@@ -48,7 +49,9 @@ struct GrowCounts {
   int cleaned_points = 0;          // Fig 8 pre-clean: points dropped (short edges, acute angles)
   int holes_filled = 0;            // clockwise rings dropped by the union (holes)
   int dropped_rings = 0;           // rings the union could not make simple (never emitted)
-  bool truncated = false;          // stopped at the level or vertex cap
+  bool truncated = false;          // stopped at the level or vertex cap, or a budget
+  double vertices_worked = 0;  // Σ vertices of shrunk contours and their children (budget work)
+  std::string truncated_by;    // the budget's line when one stopped the growth (terrain_budget)
   double ms_shrink = 0, ms_mpd = 0, ms_fd = 0, ms_loops = 0;
 };
 

@@ -14,6 +14,7 @@
 #include "terrain/offset.h"
 #include "terrain/polygon.h"
 #include "terrain/segment_grid.h"
+#include "terrain/terrain_budget.h"
 
 namespace niwa::terrain {
 namespace {
@@ -273,7 +274,7 @@ Result<Ring> CheckSeed(const Ring& seed) {
   return r;
 }
 
-Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p) {
+Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, const TerrainGrowLimits* limits) {
   NIWA_RETURN_IF_ERROR(CheckTerrainParams(p));
   Result<Ring> seed = CheckSeed(seed_in);
   if (!seed.ok()) return seed.status();
@@ -292,6 +293,8 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p) {
   const uint64_t rng_seed = static_cast<uint64_t>(p.Get(P::kSeed));
   const int max_levels = p.GetInt(P::kMaxLevels);
 
+  TerrainWork work;  // counted for the budget's checks (terrain_budget.h)
+  work.vertices_held = static_cast<double>(seed->size());
   // Growth below the seed (§2 enlarging): a chain of enlarged contours, the lowest the root.
   std::vector<Ring> below;
   {
@@ -299,8 +302,14 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p) {
     out.outward = true;
     Ring cur = *seed;
     for (int k = 0; k < p.GetInt(P::kDown); ++k) {
+      if (limits != nullptr) {
+        t.counts.truncated_by = CheckTerrainContour(cur, 0, p, work, *limits, -k - 1);
+        if (!t.counts.truncated_by.empty()) break;
+      }
       ShrinkCounts sc;
       std::vector<Ring> rs = Shrink(cur, out, &sc);
+      work.vertices_worked += static_cast<double>(cur.size());
+      for (const Ring& r : rs) work.vertices_worked += static_cast<double>(r.size());
       t.counts.holes_filled += sc.holes_filled;
       if (rs.empty()) break;
       std::size_t big = 0;
@@ -308,6 +317,7 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p) {
         if (Area(rs[i]) > Area(rs[big])) big = i;
       cur = rs[big];
       below.push_back(cur);
+      work.vertices_held += static_cast<double>(cur.size());
     }
   }
   const int down = static_cast<int>(below.size());
@@ -335,7 +345,7 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p) {
   }
 
   std::deque<int> queue{static_cast<int>(t.contours.size()) - 1};
-  while (!queue.empty()) {
+  while (!queue.empty() && t.counts.truncated_by.empty()) {
     const int at = queue.front();
     queue.pop_front();
     if (t.contours[static_cast<std::size_t>(at)].level >= max_levels ||
@@ -345,6 +355,10 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p) {
     }
     const Ring parent = t.contours[static_cast<std::size_t>(at)].ring;
     const int level = t.contours[static_cast<std::size_t>(at)].level + 1;
+    if (limits != nullptr) {
+      t.counts.truncated_by = CheckTerrainContour(parent, d0, p, work, *limits, level);
+      if (!t.counts.truncated_by.empty()) break;
+    }
     const auto t0 = std::chrono::steady_clock::now();
     ShrinkCounts sc;
     std::vector<Ring> shrunk = Shrink(parent, so, &sc);
@@ -352,6 +366,8 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p) {
     t.counts.holes_filled += sc.holes_filled;
     t.counts.dropped_rings += sc.dropped_rings;
     t.counts.ms_shrink += Ms(t0);
+    work.vertices_worked += static_cast<double>(parent.size());
+    for (const Ring& r : shrunk) work.vertices_worked += static_cast<double>(r.size());
     if (shrunk.empty()) continue;
     // One RNG stream per contour, from the seed and the parent's index (order-independent).
     Pcg32 rng(rng_seed, static_cast<uint64_t>(at) * 2654435761ULL + 1);
@@ -395,6 +411,8 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p) {
         node.level = level;
         node.elevation = t.h0 + level * t.dh;
         node.parent = at;
+        work.vertices_held += static_cast<double>(r.size());
+        work.vertices_worked += static_cast<double>(r.size());
         const int id = static_cast<int>(t.contours.size());
         t.contours[static_cast<std::size_t>(at)].children.push_back(id);
         t.contours.push_back(std::move(node));
@@ -402,6 +420,8 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p) {
       }
     }
   }
+  if (!t.counts.truncated_by.empty()) t.counts.truncated = true;
+  t.counts.vertices_worked = work.vertices_worked;
   // A summit on every top contour: h_T + Δh·min(1, r/d) at the pole of inaccessibility.
   for (std::size_t i = 0; i < t.contours.size(); ++i) {
     if (!t.contours[i].children.empty()) continue;

@@ -37,7 +37,11 @@ Ring RemoveCollinearToShare(const Ring& ring, double d0, double long_frac, doubl
 // search refined 12 times) and that circle's radius.
 Vec2 PoleOfInaccessibility(const Ring& ring, double* radius);
 
-// Grows the whole mountain from the seed with the table's method and constants.
-Result<Terrain> Grow(const Ring& seed, const TerrainParams& params);
+struct TerrainGrowLimits;  // terrain_budget.h
+
+// Grows the whole mountain from the seed with the table's method and constants; with `limits`,
+// stops before a contour whose worst case would cross them (counts.truncated_by holds the line).
+Result<Terrain> Grow(const Ring& seed, const TerrainParams& params,
+                     const TerrainGrowLimits* limits = nullptr);
 
 }  // namespace niwa::terrain

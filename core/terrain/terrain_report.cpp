@@ -25,6 +25,7 @@ nlohmann::json TerrainStatsJson(const TerrainState& state, const Terrain& terrai
   j["loops_removed"] = terrain.counts.loops_removed;
   j["perturbations_reverted"] = terrain.counts.perturbations_reverted;
   j["truncated"] = terrain.counts.truncated;
+  if (!terrain.counts.truncated_by.empty()) j["truncated_by"] = terrain.counts.truncated_by;
   j["res"] = params.GetInt(TerrainParam::kRes);
   j["cells"] = hf.h.size();
   j["url"] = EncodeTerrainHash(state);

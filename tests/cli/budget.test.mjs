@@ -75,16 +75,81 @@ for (const cmd of [native, wasm]) {
     `maple 12 years (${buildName(cmd)}): within the budget, unchanged (${sa.internodes} internodes)`);
 }
 
+// Ivy (issue 16, docs/budgets.md "Ivy"): a --subdivide beyond the memory budget is refused before
+// subdividing; growth stops at a step (memory or work-unit time) with truncated_by; the export is
+// refused before it starts. Same lines natively and in WASM.
+refused('ivy --subdivide 5 at 128 MB', ['ivy', 'grow', '--scene', 'sphere', '--subdivide', '5', '--steps', '5', '--max-memory', '128M'],
+  '--max-memory', null, /^niwa: error: --max-memory: subdividing the support to [\d,]+ triangles needs about .* more than the 128 MB allowed; lower --steps or --subdivide, or raise t1 and t2 \(or raise --max-memory\)$/);
+function ivyTruncated(name, args, limit) {
+  const stats = [];
+  for (const cmd of [native, wasm]) {
+    const r = timed(cmd, [...args, '--stats']);
+    const s = r.status === 0 ? JSON.parse(r.stdout) : {};
+    const warn = lines(r.stderr);
+    check(r.status === 0 && s.truncated === true && typeof s.truncated_by === 'string' &&
+      s.truncated_by.startsWith(`${limit}: stopped at step `) && s.truncated_by.includes('lower --steps'),
+      `${name} (${buildName(cmd)}): truncated_by "${s.truncated_by}" (${s.steps_run} steps, ${s.internodes} internodes)`);
+    check(warn.length === 1 && warn[0] === `niwa: truncated: ${s.truncated_by}`, `${name} (${buildName(cmd)}): one stderr line`);
+    check(r.seconds < 60, `${name} (${buildName(cmd)}): finished in ${r.seconds.toFixed(1)} s`);
+    stats.push(JSON.stringify(withoutMs(s)));
+  }
+  check(stats[0] === stats[1], `${name}: native == WASM --stats`);
+}
+ivyTruncated('ivy free literal 10000 steps at 128 MB', ['ivy', 'grow', '--scene', 'free', '--preset', 'literal', '--steps', '10000', '--max-memory', '128M'], '--max-memory');
+ivyTruncated('ivy wall literal 10000 steps in 1 s', ['ivy', 'grow', '--scene', 'wall', '--preset', 'literal', '--steps', '10000', '--max-seconds', '1'], '--max-seconds');
+refused('ivy .glb beyond 128 MB', ['ivy', 'grow', '--scene', 'free', '--preset', 'literal', '--steps', '10000', '--max-memory', '128M'],
+  '--max-memory', 'ivy.glb', /writing the \.glb \([\d,]+ buds\) needs about/);
+for (const cmd of [native, wasm]) {
+  const a = spawn(cmd, ['ivy', 'grow', '--steps', '50', '--stats']);
+  const b = spawn(cmd, ['ivy', 'grow', '--steps', '50', '--stats', '--max-memory', '4G', '--max-seconds', '600']);
+  const sa = JSON.parse(a.stdout), sb = JSON.parse(b.stdout);
+  check(a.status === 0 && b.status === 0 && sa.truncated === false && JSON.stringify(withoutMs(sa)) === JSON.stringify(withoutMs(sb)),
+    `ivy cubes4 50 steps (${buildName(cmd)}): within the budget, unchanged (${sa.internodes} internodes)`);
+}
+
+// Terrain: growth stops at a contour with truncated_by; a --res whose heightfield or .glb would
+// cross the budget is refused before it is built.
+function terrainTruncated(name, args, limit) {
+  const stats = [];
+  for (const cmd of [native, wasm]) {
+    const r = timed(cmd, [...args, '--stats']);
+    const s = r.status === 0 ? JSON.parse(r.stdout) : {};
+    const warn = lines(r.stderr);
+    check(r.status === 0 && s.truncated === true && typeof s.truncated_by === 'string' &&
+      s.truncated_by.startsWith(`${limit}: stopped at level `) && s.truncated_by.includes('raise d'),
+      `${name} (${buildName(cmd)}): truncated_by "${s.truncated_by}" (${s.contours} contours)`);
+    check(warn.length === 1 && warn[0] === `niwa: truncated: ${s.truncated_by}`, `${name} (${buildName(cmd)}): one stderr line`);
+    check(r.seconds < 60, `${name} (${buildName(cmd)}): finished in ${r.seconds.toFixed(1)} s`);
+    stats.push(JSON.stringify(withoutMs(s)));
+  }
+  check(stats[0] === stats[1], `${name}: native == WASM --stats`);
+}
+terrainTruncated('terrain jacksboro d=0.5 in 2 s', ['terrain', 'grow', '--builtin', 'jacksboro', '--set', 'd=0.5', '--max-seconds', '2'], '--max-seconds');
+refused('terrain --res 4096 .glb at 2 GB', ['terrain', 'grow', '--builtin', 'disk', '--res', '4096'], '--max-memory', 't.glb',
+  /^niwa: error: --max-memory: growing [\d,]+ contours .* and the heightfield \(4,098 × 4,098 cells\) and writing the \.glb needs about .* more than the 2 GB allowed; lower --res \(or raise --max-memory\)$/);
+refused('terrain --res 4096 at 256 MB', ['terrain', 'grow', '--builtin', 'disk', '--res', '4096', '--stats', '--max-memory', '256M'], '--max-memory', null,
+  /the heightfield \(4,098 × 4,098 cells\) needs about/);
+for (const cmd of [native, wasm]) {
+  const a = spawn(cmd, ['terrain', 'grow', '--builtin', 'lobes7', '--stats']);
+  const b = spawn(cmd, ['terrain', 'grow', '--builtin', 'lobes7', '--stats', '--max-memory', '4G', '--max-seconds', '600']);
+  const sa = JSON.parse(a.stdout), sb = JSON.parse(b.stdout);
+  check(a.status === 0 && b.status === 0 && sa.truncated === false && JSON.stringify(withoutMs(sa)) === JSON.stringify(withoutMs(sb)),
+    `terrain lobes7 (${buildName(cmd)}): within the budget, unchanged (${sa.contours} contours)`);
+}
+
 // The flags themselves: one line naming the flag and its range.
 for (const [value, flag, want] of [
   ['abc', '--max-memory', 'must be a size from 128M to 1T'], ['1', '--max-memory', 'must be a size from 128M to 1T'],
   ['2000T', '--max-memory', 'must be a size from 128M to 1T'], ['-4G', '--max-memory', 'must be a size from 128M to 1T'],
   ['0', '--max-seconds', 'must be a number in [1, 86400]'], ['1e9', '--max-seconds', 'must be a number in [1, 86400]']]) {
   for (const cmd of [native, wasm]) {
-    const r = spawn(cmd, ['tree', 'grow', '--preset', 'maple', '--years', '2', flag, value]);
-    const l = lines(r.stderr);
-    check(r.status === 2 && l.length === 1 && l[0].startsWith(`niwa: error: ${flag}: `) && l[0].includes(want),
-      `${flag} ${value} (${buildName(cmd)}): ${l[0]}`);
+    for (const study of [['tree', 'grow', '--preset', 'maple', '--years', '2'], ['ivy', 'grow', '--steps', '2'],
+      ['terrain', 'grow', '--builtin', 'disk']]) {
+      const r = spawn(cmd, [...study, flag, value]);
+      const l = lines(r.stderr);
+      check(r.status === 2 && l.length === 1 && l[0].startsWith(`niwa: error: ${flag}: `) && l[0].includes(want),
+        `${study[0]} ${flag} ${value} (${buildName(cmd)}): ${l[0]}`);
+    }
   }
 }
 

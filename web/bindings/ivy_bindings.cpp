@@ -14,7 +14,8 @@
 //   "glb"                        bytes (Uint8, after buildGlb)
 // Calls: loadScene(name), loadTree(preset, years) (a Niwa tree's bark, core/tree/bark_support, as
 // the CLI's --tree-preset) or loadMesh(bytes, name) -> ""/error, supportJson(); grow(stateJson) ->
-// ""/error, then statsJson(), buffers(..), modelJson(), lstring(), buildGlb(withSupport);
+// ""/error, then statsJson(), buffers(..), modelJson(), lstring(), buildGlb(withSupport),
+// exportCheck(format, withSupport) -> "" or the page budget's line (docs/budgets.md);
 // rayCast(ox, oy, oz, dx, dy, dz) -> {hit, point, normal, distance} on the support;
 // setProgress(fn): fn(stage, done, total) is called during loadMesh ("read", then "bvh" with the
 // triangle count), loadTree ("tree", "bvh") and grow ("grow" after every step), so the worker can
@@ -42,6 +43,7 @@
 #include "io/mesh_reader.h"
 #include "io/obj_reader.h"
 #include "ivy/growth.h"
+#include "ivy/ivy_budget.h"
 #include "ivy/ivy_mesh.h"
 #include "ivy/ivy_params.h"
 #include "ivy/ivy_report.h"
@@ -185,6 +187,16 @@ std::string IvyEncodeHash(const std::string& state_json) {
   return Dump(out);
 }
 
+// The page's budget (docs/budgets.md): what a laptop tab's WASM heap holds, by estimate.
+static Budget PageBudget() {  // internal: each study binding has its own
+  Budget budget;
+  budget.memory_bytes = uint64_t{1} << 30;
+  budget.seconds = 60;
+  budget.memory_limit = "page memory budget";
+  budget.seconds_limit = "page time budget";
+  return budget;
+}
+
 class IvyLab {
  public:
   // A built-in scene: "" or one error line ("scene: 'x' is unknown; must be one of ...").
@@ -307,11 +319,19 @@ class IvyLab {
       }
     }
     log_ = ivy::GrowLog{};
+    // The page's budget (docs/budgets.md): the support, the model and its meshes within what a
+    // tab's WASM heap holds; a bigger ivy stops at a step with the line in its stats.
+    ivy::IvySupportSize size;
+    size.triangles = scene_.free ? 0 : static_cast<double>(scene_.mesh.triangle_count());
+    size.obstacles = obstacles_ > 0;
+    limits_ =
+        ivy::IvyLimits(state.params, PageBudget(), ivy::EstimateIvySupport(size), !scene_.free);
+    limits_.bytes_per_bud += ivy::IvyPageMeshBytesPerBud();
     const ivy::StepObserver on_step = [this](int step, int steps) {
       Progress("grow", step, steps);
     };
-    Result<ivy::IvyModel> model =
-        ivy::Grow(support, seeds, state.params, state.steps, state.seed, &log_, on_step);
+    Result<ivy::IvyModel> model = ivy::Grow(support, seeds, state.params, state.steps, state.seed,
+                                            &log_, &limits_, on_step);
     if (!model.ok()) return model.status().Line();
     state_ = state;
     model_ = std::move(model).value();
@@ -354,9 +374,26 @@ class IvyLab {
   }
   std::string lstring() const { return grown_ ? ivy::PrintLString(model_) : ""; }
 
+  // Whether a download (glb, json, lsys) of the last grow fits the page's budget: "" or the line
+  // naming it ("page memory budget: writing the .glb (...) needs about ...").
+  std::string exportCheck(const std::string& format, bool with_support) const {
+    if (!grown_) return "";
+    const ivy::IvyExport kind = format == "json"   ? ivy::IvyExport::kJson
+                                : format == "lsys" ? ivy::IvyExport::kLsys
+                                                   : ivy::IvyExport::kGlb;
+    const double tris = with_support && kind == ivy::IvyExport::kGlb
+                            ? static_cast<double>(scene_.mesh.triangle_count())
+                            : 0;
+    return CheckEstimate(ivy::EstimateIvyGrown(model_, log_, limits_) +
+                             ivy::EstimateIvyExport(model_, kind, tris),
+                         PageBudget(), "grow fewer steps")
+        .Line();
+  }
+
   // The .glb of the last grow (with the support when asked): "" or one error line.
   std::string buildGlb(bool with_support) {
     if (!grown_) return "glb: nothing grown yet";
+    if (std::string line = exportCheck("glb", with_support); !line.empty()) return line;
     Result<std::vector<unsigned char>> glb =
         ivy::WriteIvyGlb(model_, state_.params, state_.seed, state_.steps,
                          with_support && !scene_.free ? &scene_.mesh : nullptr);
@@ -442,6 +479,7 @@ class IvyLab {
   ivy::IvyState state_;
   ivy::IvyModel model_;
   ivy::GrowLog log_;
+  ivy::IvyGrowLimits limits_;
   ivy::IvyTimings timings_;
   ivy::IvyMeshes meshes_;
   FlatMesh stems_, leaves_, suckers_;
@@ -472,6 +510,7 @@ EMSCRIPTEN_BINDINGS(niwa_ivy) {
       .function("modelJson", &niwa::IvyLab::modelJson)
       .function("lstring", &niwa::IvyLab::lstring)
       .function("buildGlb", &niwa::IvyLab::buildGlb)
+      .function("exportCheck", &niwa::IvyLab::exportCheck)
       .function("rayCast", &niwa::IvyLab::rayCast)
       .function("setProgress", &niwa::IvyLab::setProgress)
       .function("buffers", &niwa::IvyLab::buffers);

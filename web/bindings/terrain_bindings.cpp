@@ -39,6 +39,7 @@
 #include "terrain/offset.h"
 #include "terrain/polygon.h"
 #include "terrain/seeds.h"
+#include "terrain/terrain_budget.h"
 #include "terrain/terrain_output.h"
 #include "terrain/terrain_params.h"
 #include "terrain/terrain_report.h"
@@ -180,6 +181,16 @@ std::string TerrainRepairContour(const std::string& points_json) {
   return Dump(out);
 }
 
+// The page's budget (docs/budgets.md): what a laptop tab's WASM heap holds, by estimate.
+static Budget PageBudget() {  // internal: each study binding has its own
+  Budget budget;
+  budget.memory_bytes = uint64_t{1} << 30;
+  budget.seconds = 60;
+  budget.memory_limit = "page memory budget";
+  budget.seconds_limit = "page time budget";
+  return budget;
+}
+
 class TerrainLab {
  public:
   // Grows the state (JSON, as ApplyTerrainStateJson reads it) and builds its heightfield: "" or
@@ -192,8 +203,28 @@ class TerrainLab {
     if (!s.ok()) return s.Line();
     Result<terrain::Ring> seed = terrain::StateSeed(state);
     if (!seed.ok()) return seed.status().Line();
-    Result<terrain::Terrain> t = terrain::Grow(*seed, state.params);
+    // The page's budget (docs/budgets.md): the contours stop at a level with the line in the
+    // stats; a heightfield and surface buffers beyond it are refused before they are built.
+    const Budget budget = PageBudget();
+    {
+      const double side = state.params.GetInt(TerrainParam::kRes) + 2.0;
+      const Status fits = CheckEstimate(
+          terrain::EstimateHeightfield(terrain::Terrain{}, {side, side}), budget, "lower res");
+      if (!fits.ok()) return fits.Line();
+    }
+    const terrain::TerrainGrowLimits limits = terrain::TerrainLimits(state.params, budget);
+    Result<terrain::Terrain> t = terrain::Grow(*seed, state.params, &limits);
     if (!t.ok()) return t.status().Line();
+    {
+      const terrain::GridSize grid =
+          terrain::TerrainGridSize(*t, state.params.GetInt(TerrainParam::kRes));
+      // The surface buffers the worker copies out are about the .glb's mesh.
+      const Status fits = CheckEstimate(
+          terrain::EstimateTerrainGrown(*t, limits) + terrain::EstimateHeightfield(*t, grid) +
+              terrain::EstimateTerrainOutput(*t, grid, terrain::TerrainOutput::kGlb),
+          budget, "lower res");
+      if (!fits.ok()) return fits.Line();
+    }
     const auto t1 = Clock::now();
     state_ = state;
     terrain_ = std::move(t).value();
@@ -261,6 +292,22 @@ class TerrainLab {
   // heightmap / sidecar: --heightmap's .png and its .json; json / geojson / svg: --contours.
   std::string build(const std::string& format) {
     if (!grown_) return "download: nothing grown yet";
+    {
+      const terrain::TerrainOutput kind = format == "glb" ? terrain::TerrainOutput::kGlb
+                                          : format == "heightmap" || format == "sidecar"
+                                              ? terrain::TerrainOutput::kHeightmap
+                                          : format == "geojson" ? terrain::TerrainOutput::kGeoJson
+                                          : format == "svg"     ? terrain::TerrainOutput::kSvg
+                                                            : terrain::TerrainOutput::kContoursJson;
+      const terrain::GridSize grid = {static_cast<double>(hf_.width),
+                                      static_cast<double>(hf_.height)};
+      const Status fits = CheckEstimate(
+          terrain::EstimateTerrainOutput(terrain_, grid, terrain::TerrainOutput::kGlb) +
+              terrain::EstimateHeightfield(terrain_, grid) +
+              terrain::EstimateTerrainOutput(terrain_, grid, kind),
+          PageBudget(), "lower res");
+      if (!fits.ok()) return fits.Line();
+    }
     std::string text;
     if (format == "glb") {
       json extras;  // as the CLI writes it, so the page's .glb equals the CLI's byte for byte

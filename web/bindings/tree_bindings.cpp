@@ -305,6 +305,13 @@ class TreeSession {
   std::string buildGlb() {
     glb_.clear();
     if (!grower_) return error_.empty() ? "no tree" : error_;
+    // The page's budget: the grown tree, its mesh and the .glb's buffers, refused before writing.
+    const TreeCounts counts = CountTree(grower_->tree());
+    const Status fits =
+        CheckEstimate(grower_->estimate() + EstimateTreeExport(counts, TreeExport::kMesh) +
+                          EstimateTreeExport(counts, TreeExport::kGlb),
+                      PageBudget(), "lower years, N_high or B_l");
+    if (!fits.ok()) return fits.Line();
     return WriteTreeGlb(mesh_, &glb_).Line();
   }
 
@@ -445,6 +452,12 @@ class TreeSession {
     SwayParams params = SwayParamsOf(state_.params);
     std::string error = CheckSwayParams(state_.params);
     if (!error.empty()) return error;
+    // The page's budget: the simulators and poses next to the tree and its mesh (docs/budgets.md).
+    const Status fits = CheckEstimate(
+        grower_->estimate() + EstimateTreeExport(CountTree(grower_->tree()), TreeExport::kMesh) +
+            EstimatePageSway(sway_model_, static_cast<int>(origins.size())),
+        PageBudget(), "lower years or the number of trees");
+    if (!fits.ok()) return fits.Line();
     sways_.clear();
     for (const glm::dvec3& origin : origins)
       sways_.push_back(std::make_unique<SwaySimulator>(grower_->tree(), params, origin));

@@ -34,8 +34,9 @@ const ui = {
 mountStudyNav($('studies'), 'ivy');
 
 // webgl: drawing problems; error: the core's line for the current state; hash: decoding notices;
-// mesh: the dropped mesh (not part of the link); drop: refused files.
-const notices = new Notices($('notice'), ['webgl', 'error', 'hash', 'mesh', 'drop']);
+// mesh: the dropped mesh (not part of the link); drop: refused files; budget: the page budget's
+// line when it stopped the growth early (docs/budgets.md).
+const notices = new Notices($('notice'), ['webgl', 'error', 'hash', 'mesh', 'drop', 'budget']);
 const worker = new WorkerClient('ivy', {
   study: 'ivy',
   onFailure: (text) => {
@@ -184,6 +185,7 @@ function sendUpdate(commit) {
   setHooks({ status: 'growing' });
   const request = worker.request('update', { state: currentState(), useMesh }, { group: 'ivy', done: ['ivy'] });
   latestId = request.id;
+  showWork(true);
   bumpHook('growRequests');
   return request;
 }
@@ -320,7 +322,9 @@ worker.on('ivy', (msg) => {
   if (msg.id !== latestId) return;
   const s = msg.stats;
   notices.set('error', '');
+  notices.set('budget', s.truncated_by || '');
   showFieldError('');
+  showWork(false);
   ui.progress.textContent = '';
   showWork(false);
   ui.stats.textContent = `internodes ${s.internodes} · leaves ${s.leaves} · laterals ${s.laterals} · buds A ${s.buds.A} D ${s.buds.D} Z ${s.buds.Z} · grown in ${s.ms.toFixed(1)} ms`;
@@ -343,7 +347,7 @@ worker.on('ivy', (msg) => {
   ivySerial += 1;
   setHooks({
     status: 'ready', error: '', meshError: '', ivySerial, internodes: s.internodes, leaves: s.leaves, laterals: s.laterals,
-    steps: msg.steps, stats: JSON.stringify(s), hash: msg.hash,
+    steps: msg.steps, stats: JSON.stringify(s), hash: msg.hash, truncatedBy: s.truncated_by || '',
   });
   requestFrame();
 });
@@ -384,6 +388,7 @@ worker.on('error', (msg) => {
     return;
   }
   if (msg.id !== undefined && msg.id !== latestId) return;
+  showWork(false);
   notices.set('error', msg.message);
   showFieldError(msg.message);
   ui.progress.textContent = '';

@@ -14,7 +14,7 @@ import { ParamPanel } from '../shell/param_panel.js';
 import { StepScrubber } from '../shell/step_scrubber.js';
 import { Notices, copyLink, download, mountStudyNav } from '../shell/study_page.js';
 import { bumpHook, setHooks } from '../shell/test_hooks.js';
-import { WorkerClient } from '../shell/worker_client.js';
+import { WorkerClient, restartWorker } from '../shell/worker_client.js';
 import { PlanView } from './plan_view.js';
 import { TerrainRenderer } from './terrain_renderer.js';
 
@@ -28,14 +28,34 @@ const ui = {
 };
 mountStudyNav($('studies'), 'terrain');
 
-// webgl: drawing problems; error: the core's line for the current state; hash: decoding notices.
-const notices = new Notices($('notice'), ['webgl', 'error', 'hash']);
+// webgl: drawing problems; error: the core's line for the current state; hash: decoding notices;
+// budget: the page budget's line when it stopped the growth early (docs/budgets.md).
+const notices = new Notices($('notice'), ['webgl', 'error', 'hash', 'budget']);
 const worker = new WorkerClient('terrain', {
   study: 'terrain',
   onFailure: (text) => {
     notices.set('error', text);
     setHooks({ status: 'error' });
   },
+  // Cancel restarted the worker: init it again, then grow the last finished state (or the
+  // opening mountain when none finished yet); the mountain on screen stays until then.
+  onRestart: () => {
+    restarting = true;
+    worker.request('init', { hash: '' }, { done: ['ready'] });
+  },
+});
+let restarting = false;  // the next 'ready' answers a restart (the panel exists already)
+let lastGoodHash = null; // the hash of the last mountain shown
+
+// Cancel (issue 16): whatever the worker is doing (a grow, an export) ends now.
+const cancelButton = $('cancel');
+const showCancel = (on) => { cancelButton.hidden = !on; };
+cancelButton.addEventListener('click', () => {
+  showCancel(false);
+  clearTimeout(debounceTimer);
+  ui.progress.textContent = 'cancelled: back to the last finished mountain';
+  bumpHook('cancels');
+  restartWorker();
 });
 
 // The opening mountain when the link holds no seed: a result without input.
@@ -157,6 +177,7 @@ function sendUpdate(commit, reset = false, repair = false) {
   setHooks({ status: 'growing' });
   const request = worker.request('update', { state: currentState(reset), repair }, { group: 'terrain', done: ['terrain'] });
   latestId = request.id;
+  showCancel(true);
   bumpHook('growRequests');
   return request;
 }
@@ -226,6 +247,12 @@ const plan = new PlanView(ui.plan, (points, pixels) => {
 
 // ---------------------------------------------------------------- worker replies
 worker.on('ready', (msg) => {
+  if (restarting) {  // after Cancel: the last finished state again
+    restarting = false;
+    const hash = lastGoodHash ? `#${lastGoodHash}` : `#preset=${OPENING.preset}&builtin=${OPENING.builtin}`;
+    worker.request('decode', { hash }, { done: ['decoded'] });
+    return;
+  }
   presets = msg.presets;
   seeds = msg.seeds;
   ui.preset.append(new Option('defaults (improved)', ''));
@@ -263,7 +290,10 @@ worker.on('terrain', (msg) => {
   if (msg.id !== latestId) return;
   const s = msg.stats;
   notices.set('error', '');
+  notices.set('budget', s.truncated_by || '');
   showFieldError('');
+  showCancel(false);
+  lastGoodHash = msg.hash;
   ui.progress.textContent = '';
   applyState(msg.state);
   const r = msg.repaired;
@@ -291,7 +321,7 @@ worker.on('terrain', (msg) => {
   terrainSerial += 1;
   setHooks({
     status: 'ready', error: '', terrainSerial, levels: s.levels, contours: s.contours, peaks: s.peaks,
-    stats: JSON.stringify(s), hash: msg.hash, wallMs: msg.wallMs.toFixed(1), msGrow: msg.timings.ms_grow.toFixed(1),
+    stats: JSON.stringify(s), hash: msg.hash, truncatedBy: s.truncated_by || '', wallMs: msg.wallMs.toFixed(1), msGrow: msg.timings.ms_grow.toFixed(1),
     msHeightfield: msg.timings.ms_heightfield.toFixed(1), msBuffers: msg.timings.ms_buffers.toFixed(1),
   });
   requestFrame();
@@ -313,6 +343,7 @@ worker.on('error', (msg) => {
     return;
   }
   if (msg.id !== undefined && msg.id !== latestId) return;
+  showCancel(false);
   notices.set('error', msg.message);
   showFieldError(msg.message);
   ui.progress.textContent = '';

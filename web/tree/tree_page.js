@@ -486,6 +486,12 @@ worker.on('error', (msg) => {
     ui.shareStatus.textContent = `Export failed: ${msg.message}`;
     return;
   }
+  if (msg.control === 'wind') {  // the sway was refused (docs/budgets.md): the line beside Blow
+    if (windPlaying) setWind(false);
+    ui.windInfo.textContent = msg.message;
+    setHooks({ windError: msg.message });
+    return;
+  }
   if (msg.id !== undefined && msg.id !== latestRequest?.id) return;
   showCancel(false);
   notices.set('error', msg.message);

@@ -125,6 +125,8 @@ export function createHandler(Module, ctx) {
 
   function exportIvy(msg, client) {
     const { lab } = labOf(client);
+    const refused = lab.exportCheck(String(msg.format), Boolean(msg.withSupport));  // the page budget
+    if (refused) throw new Error(refused);
     const text = (s) => new TextEncoder().encode(s).buffer;
     let bytes;
     if (msg.format === 'glb') {

@@ -181,8 +181,8 @@ export function createHandler(Module, ctx) {
     if (!session) return;
     const at = origins ? Array.from(origins, Number) : null;
     const error = at ? session.swayStartAt(at) : session.swayStart();
-    if (error) {
-      post({ type: 'error', client, message: error });
+    if (error) {  // control: the page shows it beside Blow (e.g. the page memory budget's line)
+      post({ type: 'error', client, message: error, control: 'wind' });
       return;
     }
     const skipped = skipStillAir(session, last.state);

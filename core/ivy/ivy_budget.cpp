@@ -1,0 +1,145 @@
+// The ivy study's budgets: the support's estimate, Grow's per-step check and the export estimates
+// (constants measured in docs/budgets.md, "Ivy").
+#include "ivy/ivy_budget.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace niwa::ivy {
+namespace {
+
+// Fixed sizes, not sizeof (the WASM build's pointers are half as wide and both builds must stop
+// at the same step). A Bud is 200 bytes natively (positions, directions, anchor in double), an
+// Internode 16, the crowding grid's entry and its cell share 64 (measured on the wall); the
+// PreOrder and rule lists of a step 8 a bud; the vectors double, so up to twice each while growing.
+constexpr double kBaseBytes = 64.0 * 1024 * 1024;  // the process, tables, code
+constexpr double kBytesPerBud = 2.0 * (200 + 16 + 64) + 8;
+// Support: a TriMesh triangle (3 positions and normals once shared, 3 indices) about 40 bytes
+// after Subdivide (which makes new vertices per triangle: 3 × (12 + 12) + 12 = 84) and the BVH's
+// node and reference per triangle (64, measured); the subdivision holds the source and the result.
+constexpr double kBytesPerSubdividedTriangle = 84, kBytesPerBvhTriangle = 64;
+// Times (ns), native release (the slowest of several runs, times a margin).
+constexpr double kNsPerTriangleBuild = 3000;  // subdividing and the BVH, per final triangle
+constexpr double kNsPerBudStep = 600;         // PreOrder, rule choice, ΣN and Alive per bud a step
+constexpr double kNsPerCandidate = 1500;  // closest point, segment hit and crowding per candidate
+
+std::string Count(double n) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.0f", n);
+  std::string digits = buffer, out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+
+double AliveBuds(const IvyModel& model) {
+  double alive = 0;
+  for (const Bud& b : model.buds)
+    if (b.kind != BudKind::kEnding) ++alive;
+  return alive;
+}
+
+// Export sizes: output bytes per bud and per internode, the peak memory per output byte and the
+// time per output byte.
+struct ExportCost {
+  double per_bud, per_internode, per_support_triangle, fixed, memory_per_byte, ns_per_byte;
+  const char* what;
+};
+// .json: each bud's fields (about 520 bytes) and internode (80); .lsys: a module a bud; .svg: two
+// views of every internode, leaf and support edge; .glb: 56 vertices of 28 bytes and 54 triangles
+// of 12 bytes a bud (stem, sucker and leaf tubes and fans), the support's 3 vertices and 12 bytes
+// of indices a triangle.
+constexpr ExportCost kJson = {520, 80, 0, 8192, 11, 90, "writing the .json"};
+constexpr ExportCost kLsys = {70, 0, 0, 1024, 5, 60, "writing the .lsys"};
+constexpr ExportCost kSvg = {260, 0, 160, 8192, 3, 60, "writing the .svg"};
+constexpr ExportCost kGlb = {56 * 28 + 54 * 12, 0, 84, 65536, 7, 40, "writing the .glb"};
+
+}  // namespace
+
+double IvyPageMeshBytesPerBud() { return 2 * kGlb.per_bud + 20; }
+
+Estimate EstimateIvySupport(const IvySupportSize& s) {
+  const double after = s.triangles * std::pow(4.0, s.levels);
+  Estimate e;
+  const double copies = s.obstacles ? 2 : 1;
+  e.memory_bytes =
+      copies * (after * kBytesPerSubdividedTriangle + (s.bvh ? after * kBytesPerBvhTriangle : 0)) +
+      (s.levels > 0 ? s.triangles * kBytesPerSubdividedTriangle : 0);
+  e.memory_bytes += kBaseBytes;
+  e.seconds = copies * after * kNsPerTriangleBuild * 1e-9;
+  e.what = s.levels > 0 ? "subdividing the support to " + Count(after) + " triangles"
+                        : "holding the support (" + Count(after) + " triangles)";
+  return e;
+}
+
+IvyGrowLimits IvyLimits(const IvyParams& params, const Budget& budget, const Estimate& support,
+                        bool has_support) {
+  IvyGrowLimits l;
+  l.max_bytes = static_cast<double>(budget.memory_bytes);
+  l.max_seconds = budget.seconds;
+  l.base_bytes = support.memory_bytes;  // the process and the support
+  l.bytes_per_bud = kBytesPerBud;
+  l.seconds_before = support.seconds;
+  l.seconds_per_bud_step = kNsPerBudStep * 1e-9;
+  l.seconds_per_candidate = kNsPerCandidate * 1e-9;
+  l.candidates_per_search =
+      has_support ? params.GetInt(IvyParam::kCandidates) * (params.GetInt(IvyParam::kRetries) + 1)
+                  : 0;
+  l.memory_limit = budget.memory_limit;
+  l.seconds_limit = budget.seconds_limit;
+  return l;
+}
+
+std::string CheckIvyStep(const IvyModel& model, const GrowLog& log, const IvyGrowLimits& l,
+                         int step, int steps) {
+  const double buds = static_cast<double>(model.buds.size());
+  const double alive = AliveBuds(model);
+  const std::string where = "at step " + std::to_string(step) + " of " + std::to_string(steps);
+  const double bytes = l.base_bytes + l.bytes_per_bud * (buds + alive);
+  if (l.max_bytes >= 0 && bytes > l.max_bytes) {
+    return TruncatedLine(l.memory_limit, where,
+                         Count(buds) + " buds and " + Count(alive) +
+                             " growing would need more than " + FormatBytes(l.max_bytes),
+                         kIvyChange + RaiseHint(l.memory_limit));
+  }
+  const double seconds = l.seconds_before + l.seconds_per_bud_step * (log.bud_steps + buds) +
+                         l.seconds_per_candidate * (static_cast<double>(log.candidates) +
+                                                    alive * l.candidates_per_search);
+  if (l.max_seconds >= 0 && seconds > l.max_seconds) {
+    return TruncatedLine(l.seconds_limit, where,
+                         "the next step over " + Count(buds) + " buds would take more than " +
+                             FormatSeconds(l.max_seconds),
+                         kIvyChange + RaiseHint(l.seconds_limit));
+  }
+  return "";
+}
+
+Estimate EstimateIvyGrown(const IvyModel& model, const GrowLog& log, const IvyGrowLimits& l) {
+  const double buds = static_cast<double>(model.buds.size());
+  Estimate e;
+  e.memory_bytes = l.base_bytes + l.bytes_per_bud * buds;
+  e.seconds = l.seconds_before + l.seconds_per_bud_step * log.bud_steps +
+              l.seconds_per_candidate * static_cast<double>(log.candidates);
+  e.what = "growing the ivy (" + Count(buds) + " buds)";
+  return e;
+}
+
+Estimate EstimateIvyExport(const IvyModel& model, IvyExport kind, double support_triangles) {
+  const ExportCost& c = kind == IvyExport::kJson   ? kJson
+                        : kind == IvyExport::kLsys ? kLsys
+                        : kind == IvyExport::kSvg  ? kSvg
+                                                   : kGlb;
+  const double buds = static_cast<double>(model.buds.size());
+  const double bytes = c.fixed + c.per_bud * buds +
+                       c.per_internode * static_cast<double>(model.internodes.size()) +
+                       c.per_support_triangle * support_triangles;
+  Estimate e;
+  e.memory_bytes = c.memory_per_byte * bytes;
+  e.seconds = c.ns_per_byte * 1e-9 * bytes;
+  e.what = std::string(c.what) + " (" + Count(buds) + " buds)";
+  return e;
+}
+
+}  // namespace niwa::ivy

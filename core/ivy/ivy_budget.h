@@ -1,0 +1,69 @@
+// Memory and time budgets of the ivy study (issue 16, docs/budgets.md): the support's estimate (a
+// --subdivide refused before it runs), the limits Grow checks before every step (stopping with
+// GrowLog::truncated_by and a line naming the limit), and the estimates of the exports (.json,
+// .lsys, .svg, .glb) from the grown model's counts. Does not: measure memory or wall-clock time
+// (every figure is a count times a constant calibrated in docs/budgets.md; time is a work-unit
+// count, so the native and WASM builds stop at the same step), grow or mesh ivy.
+#pragma once
+
+#include <string>
+
+#include "base/budget.h"
+#include "ivy/ivy.h"
+#include "ivy/ivy_params.h"
+
+namespace niwa::ivy {
+
+// What Grow may use (no limit when max_bytes and max_seconds are negative). Before step s it
+// checks that the worst case after the step stays within both: every alive bud (A or D) makes at
+// most one new bud and internode, and every search evaluates at most n_c · (R_max + 1) candidates.
+//   memory  = base_bytes + bytes_per_bud · (buds + alive)
+//   seconds = seconds_before + seconds_per_bud_step · Σ_steps buds + seconds_per_candidate ·
+//             (candidates so far + alive · n_c · (R_max + 1))
+struct IvyGrowLimits {
+  double max_bytes = -1, max_seconds = -1;
+  double base_bytes = 0, bytes_per_bud = 0;
+  double seconds_before = 0;  // the support's (subdivision, BVH) estimate
+  double seconds_per_bud_step = 0, seconds_per_candidate = 0;
+  double candidates_per_search = 0;  // n_c · (R_max + 1); 0 without a support
+  std::string memory_limit = "--max-memory", seconds_limit = "--max-seconds";
+};
+
+// The support the ivy climbs: `triangles` after subdividing `levels` times (4^K each), its BVH.
+struct IvySupportSize {
+  double triangles = 0;    // before subdividing
+  int levels = 0;          // --subdivide K
+  bool bvh = true;         // --accel bvh (the linear twin builds none)
+  bool obstacles = false;  // a second (attach) mesh and BVH
+};
+// Memory and time of the process with its support (the mesh, its subdivision and BVH, held while
+// the ivy grows); `what` names it ("subdividing the support to 4,194,304 triangles").
+Estimate EstimateIvySupport(const IvySupportSize& support);
+
+// The limits of growing `params` within `budget` on top of `support` (already held);
+// `has_support` false: the free replay, whose searches evaluate no candidates.
+IvyGrowLimits IvyLimits(const IvyParams& params, const Budget& budget, const Estimate& support,
+                        bool has_support);
+
+// Grow's check before step `step` of `steps`: "" when the worst case after the step fits, else the
+// truncation line ("--max-memory: stopped at step 37 of 10000: more buds would need more than 2 GB;
+// lower --steps ... (or raise --max-memory)").
+std::string CheckIvyStep(const IvyModel& model, const GrowLog& log, const IvyGrowLimits& limits,
+                         int step, int steps);
+
+// The grown model's estimate (what Grow's check used for the buds it made, without the next step).
+Estimate EstimateIvyGrown(const IvyModel& model, const GrowLog& log, const IvyGrowLimits& limits);
+
+enum class IvyExport { kJson, kLsys, kSvg, kGlb };
+// Memory and time of one export of a grown model (upper bounds); `support_triangles` is the
+// support written into the .glb (--with-support) or drawn in the .svg, else 0.
+Estimate EstimateIvyExport(const IvyModel& model, IvyExport kind, double support_triangles);
+
+// The page's meshes per bud (BuildIvyMeshes, their flat copies and the buds' buffer, held with the
+// model): the page adds it to IvyGrowLimits::bytes_per_bud, so the growth stops where they fit.
+double IvyPageMeshBytesPerBud();
+
+// What the refusal and truncation lines tell the user to change.
+inline constexpr char kIvyChange[] = "lower --steps or --subdivide, or raise t1 and t2";
+
+}  // namespace niwa::ivy

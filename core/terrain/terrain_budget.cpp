@@ -1,0 +1,164 @@
+// The terrain study's budgets: Grow's per-contour check, the heightfield's and the outputs'
+// estimates (constants measured in docs/budgets.md, "Terrain").
+#include "terrain/terrain_budget.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "terrain/polygon.h"
+
+namespace niwa::terrain {
+namespace {
+
+// Fixed sizes (not sizeof: both builds must stop at the same contour). A kept vertex is a Vec2
+// (16 bytes) in its ring, with the ring's spare room; a contour in the making holds its parent's
+// copy, the shrink's rings, the perturbed ones and their 1/1024 m grid copies (IRing) at once.
+constexpr double kBaseBytes = 64.0 * 1024 * 1024;  // the process, tables, code
+constexpr double kBytesPerVertex = 32, kTransientBytesPerVertex = 200;
+// Native release, the slowest of several runs with a margin: shrink (offset, union, loops) and
+// perturbation per vertex worked.
+constexpr double kNsPerVertex = 10000;
+// The heightfield: h (8 bytes), band (4), the stamped a and b (8 + 8) and the painting rows (36
+// measured) a cell; a segment grid's
+// entry and cell list (about 48 bytes) a contour vertex. Time a cell (painting, stamping about
+// three contours' windows, the band height) and a vertex (its segment grid).
+constexpr double kBytesPerCell = 36, kBytesPerGridVertex = 48;
+constexpr double kNsPerCell = 600, kNsPerGridVertex = 400;
+
+std::string Count(double n) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.0f", n);
+  std::string digits = buffer, out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+
+double Vertices(const Terrain& t) {
+  double n = 0;
+  for (const ContourNode& c : t.contours) n += static_cast<double>(c.ring.size());
+  return n;
+}
+
+// Output sizes: bytes a cell and a contour vertex, fixed, the peak memory per output byte (the
+// mesh or document, the buffers and the file's bytes at once) and the time per output byte.
+struct OutputCost {
+  double per_cell, per_vertex, fixed, memory_per_byte, ns_per_byte;
+  const char* what;
+};
+// .glb: a vertex a cell (position, normal, colour: 36 bytes) and two triangles (24 bytes of
+// indices), the contour lines' 12-byte vertices and 8 bytes of indices; the heightmap: 2 bytes a
+// cell (deflated, with the image and its rows held); the contour files a vertex as text.
+constexpr OutputCost kGlb = {60, 20, 65536, 5, 20, "writing the .glb"};
+constexpr OutputCost kHeightmap = {2, 0, 8192, 8, 60, "writing the heightmap"};
+constexpr OutputCost kJson = {0, 40, 8192, 7, 60, "writing the contours' .json"};
+constexpr OutputCost kGeoJson = {0, 40, 8192, 7, 60, "writing the contours' .geojson"};
+constexpr OutputCost kSvg = {0, 24, 8192, 3, 60, "writing the contours' .svg"};
+
+}  // namespace
+
+TerrainGrowLimits TerrainLimits(const TerrainParams& params, const Budget& budget) {
+  TerrainGrowLimits l;
+  // The heightfield of res cells a side (at most (res + 2)² cells) is held back, so a growth
+  // stopped early still gets its surface.
+  const double side = params.GetInt(TerrainParam::kRes) + 2.0;
+  l.max_bytes =
+      std::max(0.0, static_cast<double>(budget.memory_bytes) - kBytesPerCell * side * side);
+  l.max_seconds = std::max(0.0, budget.seconds - kNsPerCell * 1e-9 * side * side);
+  l.base_bytes = kBaseBytes;
+  l.bytes_per_vertex = kBytesPerVertex;
+  l.transient_bytes_per_vertex = kTransientBytesPerVertex;
+  l.seconds_per_vertex = kNsPerVertex * 1e-9;
+  l.memory_limit = budget.memory_limit;
+  l.seconds_limit = budget.seconds_limit;
+  return l;
+}
+
+std::string CheckTerrainContour(const Ring& parent, double d0, const TerrainParams& params,
+                                const TerrainWork& work, const TerrainGrowLimits& l, int level) {
+  const double n = static_cast<double>(parent.size());
+  double m = n;
+  const int method = params.GetInt(TerrainParam::kMethod);
+  if (method != 0) {  // §4.1-§4.3 perturb: midpoint splits, the Fourier resampling
+    if (d0 > 0) m = std::max(m, Perimeter(parent) / d0);
+    m = std::max(m, static_cast<double>(params.GetInt(TerrainParam::kNfft)));
+  }
+  m *= l.growth;
+  const std::string where = "at level " + std::to_string(level) + " of " +
+                            std::to_string(params.GetInt(TerrainParam::kMaxLevels));
+  const double bytes =
+      l.base_bytes + l.bytes_per_vertex * work.vertices_held + l.transient_bytes_per_vertex * m;
+  if (l.max_bytes >= 0 && bytes > l.max_bytes) {
+    return TruncatedLine(l.memory_limit, where,
+                         Count(work.vertices_held + m) + " contour vertices would need more than " +
+                             FormatBytes(l.max_bytes),
+                         kTerrainGrowChange + RaiseHint(l.memory_limit));
+  }
+  const double seconds = l.seconds_per_vertex * (work.vertices_worked + n + m);
+  if (l.max_seconds >= 0 && seconds > l.max_seconds) {
+    return TruncatedLine(l.seconds_limit, where,
+                         "shrinking " + Count(work.vertices_worked + n + m) +
+                             " contour vertices would take more than " +
+                             FormatSeconds(l.max_seconds),
+                         kTerrainGrowChange + RaiseHint(l.seconds_limit));
+  }
+  return "";
+}
+
+Estimate EstimateTerrainGrown(const Terrain& t, const TerrainGrowLimits& l) {
+  Estimate e;
+  const double vertices = Vertices(t);
+  double largest = 0;  // the largest contour in the making held its copies at once
+  for (const ContourNode& c : t.contours) largest = std::max(largest, double(c.ring.size()));
+  e.memory_bytes = l.base_bytes + l.bytes_per_vertex * vertices +
+                   l.transient_bytes_per_vertex * l.growth * largest;
+  e.seconds = l.seconds_per_vertex * t.counts.vertices_worked;
+  e.what = "growing " + Count(static_cast<double>(t.contours.size())) + " contours (" +
+           Count(vertices) + " vertices)";
+  return e;
+}
+
+GridSize TerrainGridSize(const Terrain& t, int res) {
+  if (t.contours.empty() || t.contours[0].ring.empty() || res <= 0) return {};
+  // As heightfield.cpp's GridFor: res cells along the root's longer side, one of margin a side.
+  const Ring& root = t.contours[0].ring;
+  double x0 = root[0].x, x1 = x0, y0 = root[0].y, y1 = y0;
+  for (const Vec2& v : root) {
+    x0 = std::min(x0, v.x);
+    x1 = std::max(x1, v.x);
+    y0 = std::min(y0, v.y);
+    y1 = std::max(y1, v.y);
+  }
+  const double span = std::max(x1 - x0, y1 - y0);
+  const double cell = span / res;
+  if (!(cell > 0)) return {};
+  return {std::ceil((x1 - x0) / cell) + 2, std::ceil((y1 - y0) / cell) + 2};
+}
+
+Estimate EstimateHeightfield(const Terrain& t, const GridSize& g) {
+  const double vertices = Vertices(t);
+  Estimate e;
+  e.memory_bytes = kBytesPerCell * g.cells() + kBytesPerGridVertex * vertices;
+  e.seconds = (kNsPerCell * g.cells() + kNsPerGridVertex * vertices) * 1e-9;
+  e.what = "the heightfield (" + Count(g.width) + " × " + Count(g.height) + " cells)";
+  return e;
+}
+
+Estimate EstimateTerrainOutput(const Terrain& t, const GridSize& g, TerrainOutput kind) {
+  const OutputCost& c = kind == TerrainOutput::kGlb         ? kGlb
+                        : kind == TerrainOutput::kHeightmap ? kHeightmap
+                        : kind == TerrainOutput::kGeoJson   ? kGeoJson
+                        : kind == TerrainOutput::kSvg       ? kSvg
+                                                            : kJson;
+  const double bytes = c.fixed + c.per_cell * g.cells() + c.per_vertex * Vertices(t);
+  Estimate e;
+  e.memory_bytes = c.memory_per_byte * bytes;
+  e.seconds = c.ns_per_byte * 1e-9 * bytes;
+  e.what = c.what;
+  return e;
+}
+
+}  // namespace niwa::terrain

@@ -1,0 +1,68 @@
+// Memory and time budgets of the terrain study (issue 16, docs/budgets.md): the limits Grow
+// checks before shrinking each contour (stopping with GrowCounts::truncated_by and a line naming
+// the limit), and the estimates of the heightfield (res² cells) and of each output, made before
+// that work starts. Does not: measure memory or wall-clock time (counts times constants
+// calibrated in docs/budgets.md; time is a count of vertices worked, so the native and WASM
+// builds stop at the same contour), grow contours or build surfaces.
+#pragma once
+
+#include <string>
+
+#include "base/budget.h"
+#include "terrain/contour.h"
+#include "terrain/terrain_params.h"
+
+namespace niwa::terrain {
+
+// What Grow may use (no limit when max_bytes and max_seconds are negative). Before shrinking a
+// contour of n vertices it checks the worst case after it: its children hold at most
+// m = growth · max(n, nfft (§4.2), perimeter / d0 (§4.1 splits every edge ≥ 2·d0)) vertices.
+//   memory  = base_bytes + bytes_per_vertex · vertices held + transient_bytes_per_vertex · m
+//   seconds = seconds_per_vertex · (vertices worked + n + m)
+struct TerrainGrowLimits {
+  double max_bytes = -1, max_seconds = -1;
+  double base_bytes = 0, bytes_per_vertex = 0, transient_bytes_per_vertex = 0;
+  double seconds_per_vertex = 0;
+  double growth = 2;  // children's vertices per parent vertex, at most (a margin)
+  std::string memory_limit = "--max-memory", seconds_limit = "--max-seconds";
+};
+
+// The work Grow has done so far (counted as it goes; GrowCounts holds the final figures).
+struct TerrainWork {
+  double vertices_held = 0;    // Σ vertices of every contour kept
+  double vertices_worked = 0;  // Σ over shrunk contours of parent and children vertices
+};
+
+// The limits of growing `params` within `budget`, less the heightfield's room for params' res.
+TerrainGrowLimits TerrainLimits(const TerrainParams& params, const Budget& budget);
+
+// Grow's check before shrinking `parent` (level `level` of at most max_levels): "" when it fits,
+// else the truncation line ("--max-memory: stopped at level 120 of 1000: 3,400,000 contour
+// vertices would need more than 2 GB; raise d or lower max_levels ... (or raise --max-memory)").
+std::string CheckTerrainContour(const Ring& parent, double d0, const TerrainParams& params,
+                                const TerrainWork& work, const TerrainGrowLimits& limits,
+                                int level);
+
+// The grown contours' estimate (what Grow's checks counted).
+Estimate EstimateTerrainGrown(const Terrain& terrain, const TerrainGrowLimits& limits);
+
+// The heightfield's grid for `res` (heightfield.h's BuildHeightfield): width × height cells.
+struct GridSize {
+  double width = 0, height = 0;
+  double cells() const { return width * height; }
+};
+GridSize TerrainGridSize(const Terrain& terrain, int res);
+
+// BuildHeightfield over `grid`: heights, bands, the two stamped distances a cell, the fallback
+// segment grids over every contour vertex; time per cell and per contour vertex.
+Estimate EstimateHeightfield(const Terrain& terrain, const GridSize& grid);
+
+enum class TerrainOutput { kGlb, kHeightmap, kContoursJson, kGeoJson, kSvg };
+// One output of the grown terrain on `grid` (the .glb's surface has a vertex a cell).
+Estimate EstimateTerrainOutput(const Terrain& terrain, const GridSize& grid, TerrainOutput kind);
+
+// What the refusal and truncation lines tell the user to change.
+inline constexpr char kTerrainGrowChange[] = "raise d, or lower max_levels or the seed's points";
+inline constexpr char kTerrainSurfaceChange[] = "lower --res";
+
+}  // namespace niwa::terrain

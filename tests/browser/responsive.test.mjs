@@ -1,0 +1,205 @@
+// Browser test of the pages' responsiveness during their long jobs (issue 16): node tests/browser/responsive.test.mjs.
+// During a grow, a sway and a .glb export on the tree page, and a grow on the ivy and terrain pages,
+// a click on another control (a parameter group's <details>) answers within 1 s: the time is taken
+// from node, from the click until the second animation frame after its handler ran (the frame that
+// shows the group opened or closed). Long tasks of the main thread are read through
+// PerformanceObserver('longtask'). Also: the ivy and terrain pages' Cancel (back to the last
+// finished result) and their page budgets (a truncated ivy, a refused terrain res, named).
+// The numbers are printed and copied into docs/budgets.md ("Responsiveness").
+import path from 'node:path';
+import { ARTIFACTS, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, waitReady, watchPage } from './harness.mjs';
+
+const problems = [];
+const hooks = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
+
+// Long tasks from the page's start (the observer is installed before any script runs).
+const LONGTASK_INIT = `
+  window.__longtasks = [];
+  try {
+    new PerformanceObserver((list) => {
+      for (const e of list.getEntries()) window.__longtasks.push({ start: e.startTime, ms: e.duration });
+    }).observe({ type: 'longtask', buffered: true });
+  } catch (e) { window.__longtasks = null; }
+`;
+const longTasksSince = (page, since) => page.evaluate((t) => (window.__longtasks || []).filter((e) => e.start >= t).map((e) => e.ms), since);
+const now = (page) => page.evaluate(() => performance.now());
+
+// One click on the first closed-or-open parameter group, timed from node to the second frame after
+// its handler (the toggled group painted); returns ms. The group ends as it was (two clicks).
+async function clickToFrame(page) {
+  const start = Date.now();
+  const toggled = await page.evaluate(() => new Promise((resolve) => {
+    const summary = document.querySelector('#params details.group:not([open]) > summary') ||
+      document.querySelector('#params details.group > summary');
+    const details = summary.parentElement;
+    const before = details.open;
+    summary.addEventListener('click', () => requestAnimationFrame(() => requestAnimationFrame(() => resolve(details.open !== before))), { once: true });
+    summary.click();
+  }));
+  const ms = Date.now() - start;
+  await page.evaluate(() => {  // close it again (not timed)
+    const open = [...document.querySelectorAll('#params details.group[open] > summary')];
+    if (open.length > 1) open[open.length - 1].click();
+  });
+  return toggled ? ms : Infinity;
+}
+
+// Clicks every 200 ms while `busy()` holds (at least `min` clicks, at most `max`): the slowest click.
+async function clicksDuring(page, busy, { min = 1, max = 300 } = {}) {
+  const times = [];
+  while (times.length < max && (times.length < min || await busy())) {
+    times.push(await clickToFrame(page));
+    await page.waitForTimeout(200);
+  }
+  return times;
+}
+
+const summary = (times, tasks) =>
+  `${times.length} clicks, slowest ${Math.max(...times)} ms, median ${times.slice().sort((a, b) => a - b)[Math.floor(times.length / 2)]} ms; ` +
+  `${tasks.length} long tasks, longest ${tasks.length ? Math.max(...tasks).toFixed(0) : 0} ms`;
+
+async function shoot(page, file) {
+  try {
+    await page.screenshot({ path: path.join(ARTIFACTS, file), timeout: 10_000 });
+  } catch {
+    await saveCanvasPng(page, file);
+  }
+}
+
+await runBrowserTest(async (server, browser) => {
+  const context = await newContext(browser, { viewport: { width: 1100, height: 760 } });
+  await context.addInitScript(LONGTASK_INIT);
+
+  // ---- The tree page: a grow, a sway, an export.
+  {
+    const page = watchPage(await context.newPage(), problems);
+    await page.goto(`${server.url}#preset=sakura&years=40`);
+    await page.waitForFunction(() => document.documentElement.dataset.status === 'growing' && document.querySelector('#params details.group'),
+      null, { timeout: TIMEOUT, polling: 50 });
+    let t0 = await now(page);
+    let times = await clicksDuring(page, async () => (await hooks(page)).status !== 'ready', { min: 3 });
+    await waitReady(page, 0, 100);
+    let tasks = await longTasksSince(page, t0);
+    check('tree grow (sakura 40 years): every click answered within 1 s', Math.max(...times) < 1000, summary(times, tasks));
+    const grown = await hooks(page);
+
+    // Sway: Blow, then clicks while it sways (5 s of poses).
+    t0 = await now(page);
+    await page.click('#wind');
+    await page.waitForFunction(() => document.documentElement.dataset.swayTime && Number(document.documentElement.dataset.swayTime) > 0,
+      null, { timeout: TIMEOUT, polling: 100 });
+    const swayEnd = Date.now() + 5000;
+    times = await clicksDuring(page, async () => Date.now() < swayEnd, { min: 5 });
+    tasks = await longTasksSince(page, t0);
+    const swayed = Number((await hooks(page)).swayTime);
+    check('tree sway: every click answered within 1 s', Math.max(...times) < 1000 && swayed > 0, `${summary(times, tasks)}; sway at t = ${swayed} s`);
+    await page.click('#wind');  // Still
+
+    // Export: the .glb of the tree, clicks until it has been downloaded.
+    t0 = await now(page);
+    const before = (await hooks(page)).exported || '';
+    const download = page.waitForEvent('download', { timeout: TIMEOUT });
+    await page.click('#download-glb');
+    times = await clicksDuring(page, async () => ((await hooks(page)).exported || '') === before, { min: 2 });
+    await download;
+    tasks = await longTasksSince(page, t0);
+    const exported = (await hooks(page)).exported || '';
+    check('tree .glb export: every click answered within 1 s', Math.max(...times) < 1000 && exported.startsWith('glb:'),
+      `${summary(times, tasks)}; ${exported} (tree of ${grown.internodes} internodes)`);
+    await page.close();
+  }
+
+  // ---- The ivy page: a long grow, the page budget, Cancel.
+  {
+    const page = watchPage(await context.newPage(), problems);
+    await page.goto(`${server.url}ivy.html`);
+    await page.waitForFunction(() => document.documentElement.dataset.status === 'ready' && Number(document.documentElement.dataset.ivySerial) > 0,
+      null, { timeout: TIMEOUT, polling: 100 });
+    const first = await hooks(page);
+    // The literal preset on the wall for 400 steps: several seconds of growth in WASM.
+    await page.goto(`${server.url}ivy.html#preset=literal&scene=wall&steps=400`);
+    await page.reload();
+    await page.waitForFunction(() => document.documentElement.dataset.status === 'growing' && document.querySelector('#params details.group'),
+      null, { timeout: TIMEOUT, polling: 50 });
+    const t0 = await now(page);
+    const times = await clicksDuring(page, async () => !['ready', 'error'].includes((await hooks(page)).status), { min: 3 });
+    await page.waitForFunction(() => ['ready', 'error'].includes(document.documentElement.dataset.status), null, { timeout: TIMEOUT });
+    const tasks = await longTasksSince(page, t0);
+    const d = await hooks(page);
+    check('ivy grow (literal, wall, 400 steps): every click answered within 1 s', Math.max(...times) < 1000,
+      `${summary(times, tasks)}; ${d.internodes} internodes`);
+    // The page budget: the free replay of the literal preset for 10000 steps stops at a step, named.
+    await page.goto(`${server.url}ivy.html#preset=literal&scene=free&steps=10000`);
+    await page.reload();
+    await page.waitForFunction(() => ['ready', 'error'].includes(document.documentElement.dataset.status) &&
+      Number(document.documentElement.dataset.ivySerial) > 0, null, { timeout: TIMEOUT, polling: 200 });
+    const big = await hooks(page);
+    const notice = (await page.textContent('#notice')).trim();
+    check('ivy page budget: the growth stops at a step and the notice names the limit',
+      /^page (memory|time) budget: stopped at step \d+ of 10000: /.test(big.truncatedBy || '') && notice.includes(big.truncatedBy),
+      `"${big.truncatedBy}" (${big.internodes} internodes); notice "${notice.slice(0, 160)}"`);
+    await shoot(page, 'responsive-ivy-budget.png');
+    // Cancel: the last finished ivy again.
+    const good = await hooks(page);
+    await page.goto(`${server.url}ivy.html#preset=literal&scene=wall&steps=600`);
+    await page.waitForFunction(() => !document.getElementById('cancel').hidden && document.documentElement.dataset.status === 'growing',
+      null, { timeout: TIMEOUT, polling: 50 });
+    await page.waitForTimeout(300);
+    const start = Date.now();
+    await page.click('#cancel');
+    const cancelMs = Date.now() - start;
+    await page.waitForFunction((n) => document.documentElement.dataset.status === 'ready' && Number(document.documentElement.dataset.ivySerial) > n,
+      Number(good.ivySerial), { timeout: TIMEOUT, polling: 100 });
+    const after = await hooks(page);
+    check('ivy Cancel answers within 1 s and grows the last finished state again',
+      cancelMs < 1000 && after.cancels === '1' && after.hash === good.hash && after.internodes === good.internodes,
+      `${cancelMs} ms; ${good.internodes} -> ${after.internodes} internodes, hash ${after.hash === good.hash ? 'same' : 'changed'}`);
+    void first;
+    await page.close();
+  }
+
+  // ---- The terrain page: a long grow, the page budget, Cancel.
+  {
+    const page = watchPage(await context.newPage(), problems);
+    await page.goto(`${server.url}terrain.html#preset=improved&builtin=jacksboro&res=1024`);
+    await page.waitForFunction(() => document.documentElement.dataset.status === 'growing' && document.querySelector('#params details.group'),
+      null, { timeout: TIMEOUT, polling: 50 });
+    const t0 = await now(page);
+    const times = await clicksDuring(page, async () => !['ready', 'error'].includes((await hooks(page)).status), { min: 3 });
+    await page.waitForFunction(() => document.documentElement.dataset.status === 'ready', null, { timeout: TIMEOUT });
+    const tasks = await longTasksSince(page, t0);
+    const good = await hooks(page);
+    check('terrain grow (jacksboro, res 1024): every click answered within 1 s', Math.max(...times) < 1000,
+      `${summary(times, tasks)}; ${good.contours} contours, grown in ${good.wallMs} ms`);
+    // The page budget: res 4096 is refused before the heightfield is built, named beside the field.
+    await page.goto(`${server.url}terrain.html#preset=improved&builtin=jacksboro&res=4096`);
+    await page.reload();
+    await page.waitForFunction(() => ['ready', 'error'].includes(document.documentElement.dataset.status), null, { timeout: TIMEOUT, polling: 200 });
+    const refused = await hooks(page);
+    const notice = (await page.textContent('#notice')).trim();
+    check('terrain page budget: res 4096 is refused with the line naming it',
+      refused.status === 'error' && /^page memory budget: .*the heightfield \(\d+ × \d+ cells\).* needs about .* more than the 1 GB allowed; lower res$/.test(refused.error || ''),
+      `${refused.status}: "${refused.error}"; notice "${notice.slice(0, 200)}"`);
+    // Cancel: back to the last finished mountain.
+    await page.goto(`${server.url}terrain.html#preset=improved&builtin=jacksboro&res=256`);
+    await page.reload();
+    await page.waitForFunction(() => document.documentElement.dataset.status === 'ready', null, { timeout: TIMEOUT, polling: 100 });
+    const small = await hooks(page);
+    await page.goto(`${server.url}terrain.html#preset=improved&builtin=jacksboro&res=2048&d=5`);
+    await page.waitForFunction(() => !document.getElementById('cancel').hidden && document.documentElement.dataset.status === 'growing',
+      null, { timeout: TIMEOUT, polling: 50 });
+    await page.waitForTimeout(300);
+    const start = Date.now();
+    await page.click('#cancel');
+    const cancelMs = Date.now() - start;
+    await page.waitForFunction((n) => document.documentElement.dataset.status === 'ready' && Number(document.documentElement.dataset.terrainSerial) > n,
+      Number(small.terrainSerial), { timeout: TIMEOUT, polling: 100 });
+    const after = await hooks(page);
+    check('terrain Cancel answers within 1 s and grows the last finished state again',
+      cancelMs < 1000 && after.cancels === '1' && after.hash === small.hash,
+      `${cancelMs} ms; hash ${after.hash === small.hash ? 'same' : `${small.hash} -> ${after.hash}`}`);
+    await shoot(page, 'responsive-terrain.png');
+    await page.close();
+  }
+  check('no console errors', problems.length === 0, problems.slice(0, 5).join(' | '));
+});

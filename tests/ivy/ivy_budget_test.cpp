@@ -1,0 +1,176 @@
+// The ivy budgets (core/ivy/ivy_budget): each estimate against the heap this binary's metered
+// operator new actually saw (within the stated factor), the support refused before subdividing,
+// and a budget that stops the growth at a step with the line, the same buds as an unlimited run.
+#define NIWA_ALLOC_METER_DEFINE
+#include "ivy/ivy_budget.h"
+
+#include <gtest/gtest.h>
+
+#include "geom/bvh.h"
+#include "geom/primitives.h"
+#include "ivy/growth.h"
+#include "ivy/ivy_mesh.h"
+#include "ivy/ivy_report.h"
+#include "ivy/ivy_svg.h"
+#include "ivy/lstring.h"
+#include "ivy/scenes.h"
+#include "support/alloc_meter.h"
+
+namespace niwa::ivy {
+namespace {
+
+using test::AllocMeter;
+
+// Every estimate must hold what was measured (never under) and stay within this factor of it.
+constexpr double kFactor = 6;
+
+void ExpectBounds(double estimate, long long measured, const char* what) {
+  ASSERT_GT(measured, 0) << what;
+  EXPECT_GE(estimate, static_cast<double>(measured)) << what << ": the estimate is below the peak";
+  EXPECT_LE(estimate, kFactor * static_cast<double>(measured))
+      << what << ": the estimate is more than " << kFactor << " x the peak";
+}
+
+struct IvyRun {
+  IvyScene scene;
+  geom::Bvh bvh;
+  IvyModel model;
+  GrowLog log;
+};
+
+// The literal preset on the wall (a support, real searches) or the free replay.
+void GrowOn(const std::string& scene, int steps, const IvyGrowLimits* limits, IvyRun* r) {
+  r->scene = *MakeIvyScene(scene);
+  Support support;
+  if (!r->scene.free) {
+    r->bvh = geom::Bvh::Build(r->scene.mesh);
+    support = {&r->scene.mesh, &r->bvh, Accel::kBvh};
+  }
+  Result<IvyModel> m =
+      Grow(support, {r->scene.seeds[0].pos}, *IvyPreset("literal"), steps, 1, &r->log, limits);
+  ASSERT_TRUE(m.ok()) << m.status().Line();
+  r->model = std::move(m).value();
+}
+
+IvyGrowLimits Unlimited(bool has_support) {
+  Budget roomy;
+  roomy.memory_bytes = uint64_t{1} << 40;
+  roomy.seconds = 1e9;
+  return IvyLimits(*IvyPreset("literal"), roomy, EstimateIvySupport({}), has_support);
+}
+
+TEST(IvyBudget, GrowEstimateHoldsTheMeasuredPeak) {
+  for (const char* scene : {"free", "wall"}) {
+    const IvyGrowLimits limits = Unlimited(std::string(scene) != "free");
+    IvyRun r;
+    r.scene = *MakeIvyScene(scene);  // the support is outside the growth's figure
+    Support support;
+    if (!r.scene.free) {
+      r.bvh = geom::Bvh::Build(r.scene.mesh);
+      support = {&r.scene.mesh, &r.bvh, Accel::kBvh};
+    }
+    const long long base = AllocMeter::Reset();
+    Result<IvyModel> m =
+        Grow(support, {r.scene.seeds[0].pos}, *IvyPreset("literal"), 120, 1, &r.log, &limits);
+    const long long peak = AllocMeter::PeakAbove(base);
+    ASSERT_TRUE(m.ok());
+    ASSERT_GT(m->buds.size(), 2000u) << scene << ": too small to measure";
+    const Estimate e = EstimateIvyGrown(*m, r.log, limits);
+    ExpectBounds(e.memory_bytes - limits.base_bytes, peak, scene);
+    EXPECT_TRUE(r.log.truncated_by.empty()) << r.log.truncated_by;
+  }
+}
+
+TEST(IvyBudget, ExportEstimatesHoldTheMeasuredPeaks) {
+  IvyRun r;
+  GrowOn("wall", 120, nullptr, &r);
+  const IvyParams p = *IvyPreset("literal");
+  struct Case {
+    IvyExport kind;
+    const char* what;
+  };
+  for (const Case& c : {Case{IvyExport::kJson, ".json"}, Case{IvyExport::kLsys, ".lsys"},
+                        Case{IvyExport::kSvg, ".svg"}, Case{IvyExport::kGlb, ".glb"}}) {
+    const long long base = AllocMeter::Reset();
+    std::size_t size = 0;
+    {
+      if (c.kind == IvyExport::kJson) size = IvyModelJson(r.model, p, 1, 120).size();
+      if (c.kind == IvyExport::kLsys) size = PrintLString(r.model).size();
+      if (c.kind == IvyExport::kSvg) size = IvySvg(r.model, p, &r.scene.mesh, {}).size();
+      if (c.kind == IvyExport::kGlb) size = WriteIvyGlb(r.model, p, 1, 120, nullptr)->size();
+    }
+    const long long peak = AllocMeter::PeakAbove(base);
+    ASSERT_GT(size, 0u) << c.what;
+    const double tris = c.kind == IvyExport::kSvg ? double(r.scene.mesh.triangle_count()) : 0;
+    ExpectBounds(EstimateIvyExport(r.model, c.kind, tris).memory_bytes, peak, c.what);
+  }
+}
+
+TEST(IvyBudget, SupportEstimateHoldsTheMeasuredPeak) {
+  const IvyScene scene = *MakeIvyScene("cubes4");
+  for (int levels : {3, 5}) {
+    const long long base = AllocMeter::Reset();
+    {
+      geom::TriMesh fine = geom::Subdivide(scene.mesh, levels);
+      geom::Bvh bvh = geom::Bvh::Build(fine);
+      ASSERT_GT(fine.triangle_count(), 0u);
+    }
+    const long long peak = AllocMeter::PeakAbove(base);
+    IvySupportSize size;
+    size.triangles = static_cast<double>(scene.mesh.triangle_count());
+    size.levels = levels;
+    const Estimate e = EstimateIvySupport(size);
+    ExpectBounds(e.memory_bytes - EstimateIvySupport({}).memory_bytes, peak, "support");
+  }
+}
+
+TEST(IvyBudget, SubdivisionBeyondTheBudgetIsRefusedWithTheLine) {
+  IvySupportSize size;
+  size.triangles = 60000;
+  size.levels = 3;  // 3.84 M triangles: within the 4 M cap, not within 256 MB
+  // 3.84 M × (84 + 64) + 60,000 × 84 bytes + the 64 MB process = 610.8 MB.
+  Budget budget;
+  budget.memory_bytes = uint64_t{256} << 20;
+  const Status s = CheckEstimate(EstimateIvySupport(size), budget, kIvyChange);
+  EXPECT_EQ(s.Line(),
+            "--max-memory: subdividing the support to 3,840,000 triangles needs about 611 MB, "
+            "more than the 256 MB allowed; lower --steps or --subdivide, or raise t1 and t2 (or "
+            "raise --max-memory)");
+}
+
+TEST(IvyBudget, MemoryBudgetStopsAtAStepWithTheLineAndTheSameBuds) {
+  IvyRun full;
+  GrowOn("free", 150, nullptr, &full);
+  IvyGrowLimits limits = Unlimited(false);
+  limits.max_bytes = limits.base_bytes + limits.bytes_per_bud * 3000;
+  IvyRun cut;
+  GrowOn("free", 150, &limits, &cut);
+  ASSERT_GT(full.model.buds.size(), 3000u);
+  EXPECT_EQ(cut.log.truncated_by.rfind("--max-memory: stopped at step ", 0), 0u)
+      << cut.log.truncated_by;
+  EXPECT_NE(cut.log.truncated_by.find(" of 150: "), std::string::npos);
+  EXPECT_LT(cut.log.steps_run, full.log.steps_run);
+  EXPECT_LE(EstimateIvyGrown(cut.model, cut.log, limits).memory_bytes, limits.max_bytes);
+  ASSERT_LT(cut.model.buds.size(), full.model.buds.size());
+  for (std::size_t i = 0; i < cut.model.buds.size(); ++i) {
+    ASSERT_EQ(cut.model.buds[i].pos, full.model.buds[i].pos) << "bud " << i;
+    ASSERT_EQ(cut.model.buds[i].born_step, full.model.buds[i].born_step) << "bud " << i;
+  }
+}
+
+TEST(IvyBudget, TimeBudgetStopsAtAStepWithTheLine) {
+  IvyGrowLimits limits = Unlimited(true);
+  limits.max_seconds = 0.05;  // work units: the same step in both builds
+  IvyRun cut;
+  GrowOn("wall", 120, &limits, &cut);
+  EXPECT_EQ(cut.log.truncated_by.rfind("--max-seconds: stopped at step ", 0), 0u)
+      << cut.log.truncated_by;
+  EXPECT_LE(EstimateIvyGrown(cut.model, cut.log, limits).seconds, limits.max_seconds);
+  IvyRun again;
+  GrowOn("wall", 120, &limits, &again);
+  EXPECT_EQ(again.log.steps_run, cut.log.steps_run);
+  EXPECT_EQ(again.model.buds.size(), cut.model.buds.size());
+}
+
+}  // namespace
+}  // namespace niwa::ivy

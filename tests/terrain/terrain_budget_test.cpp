@@ -1,0 +1,146 @@
+// The terrain budgets (core/terrain/terrain_budget): each estimate against the heap this binary's
+// metered operator new actually saw (within the stated factor), the grid size against the
+// heightfield BuildHeightfield makes, and a budget that stops the growth at a contour with the
+// line, the same contours as an unlimited run.
+#define NIWA_ALLOC_METER_DEFINE
+#include "terrain/terrain_budget.h"
+
+#include <gtest/gtest.h>
+
+#include "io/gltf_writer.h"
+#include "terrain/contour_io.h"
+#include "support/alloc_meter.h"
+#include "terrain/generate.h"
+#include "terrain/heightfield.h"
+#include "terrain/seeds.h"
+#include "terrain/terrain_output.h"
+
+namespace niwa::terrain {
+namespace {
+
+using test::AllocMeter;
+
+// Every estimate must hold what was measured (never under) and stay within this factor of it.
+constexpr double kFactor = 6;
+
+void ExpectBounds(double estimate, long long measured, const std::string& what) {
+  ASSERT_GT(measured, 0) << what;
+  EXPECT_GE(estimate, static_cast<double>(measured)) << what << ": the estimate is below the peak";
+  EXPECT_LE(estimate, kFactor * static_cast<double>(measured))
+      << what << ": the estimate is more than " << kFactor << " x the peak";
+}
+
+TerrainParams For(const std::string& method, double d) {
+  TerrainParams p;
+  EXPECT_TRUE(ApplyPreset(method, &p).ok());
+  EXPECT_TRUE(p.Set(TerrainParam::kD, d).ok());
+  return p;
+}
+
+TerrainGrowLimits Unlimited(const TerrainParams& p) {
+  Budget roomy;
+  roomy.memory_bytes = uint64_t{1} << 40;
+  roomy.seconds = 1e9;
+  return TerrainLimits(p, roomy);
+}
+
+TEST(TerrainBudget, GrowEstimateHoldsTheMeasuredPeak) {
+  for (const char* method : {"simple", "midpoint", "fourier", "improved"}) {
+    const TerrainParams p = For(method, 5);
+    const TerrainGrowLimits limits = Unlimited(p);
+    const Ring seed = *BuiltinSeed("lobes7");
+    const long long base = AllocMeter::Reset();
+    Result<Terrain> t = Grow(seed, p, &limits);
+    const long long peak = AllocMeter::PeakAbove(base);
+    ASSERT_TRUE(t.ok()) << t.status().Line();
+    EXPECT_TRUE(t->counts.truncated_by.empty()) << t->counts.truncated_by;
+    // The held contours, and the largest contour in the making (the check's worst case).
+    const Estimate e = EstimateTerrainGrown(*t, limits);
+    ExpectBounds(e.memory_bytes - limits.base_bytes, peak, method);
+  }
+}
+
+TEST(TerrainBudget, GridSizeIsTheHeightfieldsOwn) {
+  const TerrainParams p = For("improved", 20);
+  Result<Terrain> t = Grow(*BuiltinSeed("dumbbell"), p);
+  ASSERT_TRUE(t.ok());
+  for (int res : {8, 100, 257, 512}) {
+    const Heightfield hf = BuildHeightfield(*t, res);
+    const GridSize g = TerrainGridSize(*t, res);
+    EXPECT_EQ(g.width, hf.width) << res;
+    EXPECT_EQ(g.height, hf.height) << res;
+  }
+}
+
+TEST(TerrainBudget, HeightfieldAndOutputEstimatesHoldTheMeasuredPeaks) {
+  const TerrainParams p = For("improved", 20);
+  Result<Terrain> t = Grow(*BuiltinSeed("jacksboro"), p);
+  ASSERT_TRUE(t.ok());
+  for (int res : {256, 1024}) {
+    const GridSize g = TerrainGridSize(*t, res);
+    long long base = AllocMeter::Reset();
+    Heightfield hf = BuildHeightfield(*t, res);
+    ExpectBounds(EstimateHeightfield(*t, g).memory_bytes, AllocMeter::PeakAbove(base),
+                 "heightfield " + std::to_string(res));
+    base = AllocMeter::Reset();
+    {
+      Result<std::vector<unsigned char>> glb = gltf::WriteGlb(TerrainDocument(*t, hf, true, "{}"));
+      ASSERT_TRUE(glb.ok());
+    }
+    ExpectBounds(EstimateTerrainOutput(*t, g, TerrainOutput::kGlb).memory_bytes,
+                 AllocMeter::PeakAbove(base), ".glb " + std::to_string(res));
+    base = AllocMeter::Reset();
+    {
+      Result<Heightmap> hm = EncodeHeightmap(hf);
+      ASSERT_TRUE(hm.ok());
+    }
+    ExpectBounds(EstimateTerrainOutput(*t, g, TerrainOutput::kHeightmap).memory_bytes,
+                 AllocMeter::PeakAbove(base), "heightmap " + std::to_string(res));
+  }
+  struct Case {
+    TerrainOutput kind;
+    std::string (*write)(const Terrain&);
+    const char* what;
+  };
+  for (const Case& c : {Case{TerrainOutput::kContoursJson, TerrainToJson, ".json"},
+                        Case{TerrainOutput::kGeoJson, TerrainToGeoJson, ".geojson"},
+                        Case{TerrainOutput::kSvg, TerrainToSvg, ".svg"}}) {
+    const long long base = AllocMeter::Reset();
+    { ASSERT_FALSE(c.write(*t).empty()); }
+    ExpectBounds(EstimateTerrainOutput(*t, {}, c.kind).memory_bytes, AllocMeter::PeakAbove(base),
+                 c.what);
+  }
+}
+
+TEST(TerrainBudget, MemoryBudgetStopsAtAContourWithTheLineAndTheSameContours) {
+  const TerrainParams p = For("improved", 2);
+  Result<Terrain> full = Grow(*BuiltinSeed("lobes7"), p);
+  ASSERT_TRUE(full.ok());
+  TerrainGrowLimits limits = Unlimited(p);
+  double vertices = 0;
+  for (const ContourNode& c : full->contours) vertices += static_cast<double>(c.ring.size());
+  limits.max_bytes = limits.base_bytes + limits.bytes_per_vertex * vertices / 3;
+  Result<Terrain> cut = Grow(*BuiltinSeed("lobes7"), p, &limits);
+  ASSERT_TRUE(cut.ok());
+  EXPECT_TRUE(cut->counts.truncated);
+  EXPECT_EQ(cut->counts.truncated_by.rfind("--max-memory: stopped at level ", 0), 0u)
+      << cut->counts.truncated_by;
+  EXPECT_LE(EstimateTerrainGrown(*cut, limits).memory_bytes, limits.max_bytes);
+  ASSERT_LT(cut->contours.size(), full->contours.size());
+  for (std::size_t i = 0; i < cut->contours.size(); ++i)
+    ASSERT_EQ(cut->contours[i].ring, full->contours[i].ring) << "contour " << i;
+}
+
+TEST(TerrainBudget, TimeBudgetStopsAtAContourWithTheLine) {
+  const TerrainParams p = For("improved", 2);
+  TerrainGrowLimits limits = Unlimited(p);
+  limits.max_seconds = 0.2;  // a count of vertices worked: the same contour in both builds
+  Result<Terrain> cut = Grow(*BuiltinSeed("lobes7"), p, &limits);
+  ASSERT_TRUE(cut.ok());
+  EXPECT_EQ(cut->counts.truncated_by.rfind("--max-seconds: stopped at level ", 0), 0u)
+      << cut->counts.truncated_by;
+  EXPECT_LE(EstimateTerrainGrown(*cut, limits).seconds, limits.max_seconds);
+}
+
+}  // namespace
+}  // namespace niwa::terrain
