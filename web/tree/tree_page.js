@@ -417,7 +417,15 @@ worker.on('tree', (msg) => {
   ui.progressBar.hidden = true;
   shownYear = msg.stats.years;
   if (renderer) {
-    renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid).then(requestFrame);
+    const installed = renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid);
+    // A big mesh is installed a few tasks later (uploaded in parts): a draw list that arrives
+    // before then finds no hybrid tree and is dropped, so the view is asked for again once the
+    // tree is in place.
+    const later = renderer.uploading;
+    installed.then((done) => {
+      if (done && later) requestView();
+      requestFrame();
+    });
     renderer.leafLength = Number(panel.values().leaf_size) / 100 || 0.05;
     lastBounds = msg.stats.bounds;
     if (frameNext) {
