@@ -487,6 +487,8 @@ worker.on('export', (msg) => {
   download(new Blob([msg.bytes], { type: msg.format === 'glb' ? 'model/gltf-binary' : 'application/json' }),
     `${fileStem()}${msg.format === 'json' ? '-params' : ''}${msg.variant ? `-${msg.variant}` : ''}.${msg.format}`,
     ui.shareStatus);
+  // For the tests: the last finished export, "format:bytes" (responsive.test.mjs waits for it).
+  setHooks({ exported: `${msg.format}:${msg.bytes.byteLength}` });
 });
 
 worker.on('error', (msg) => {
