@@ -6,6 +6,17 @@
 
 namespace niwa {
 
+std::string FormatCount(double n) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.0f", n);
+  std::string digits = buffer, out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+
 std::string FormatBytes(double bytes) {
   const char* units[] = {"B", "kB", "MB", "GB", "TB"};
   int unit = 0;

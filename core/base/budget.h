@@ -35,6 +35,8 @@ inline Estimate operator+(const Estimate& a, const Estimate& b) {
 std::string FormatBytes(double bytes);
 // "60 s", "1.5 s".
 std::string FormatSeconds(double seconds);
+// "194,948": a count rounded to a whole number, with thousands separators (the budget lines).
+std::string FormatCount(double n);
 // "4G", "4GB", "512M", "64k", "1000000": bytes (K, M, G, T are powers of 1024); false for anything
 // else (signs, decimals, spaces, more than 15 digits) or above 2^62 bytes.
 bool ParseBytes(const std::string& text, uint64_t* bytes);

@@ -23,17 +23,6 @@ constexpr double kNsPerTriangleBuild = 3000;  // subdividing and the BVH, per fi
 constexpr double kNsPerBudStep = 600;         // PreOrder, rule choice, ΣN and Alive per bud a step
 constexpr double kNsPerCandidate = 1500;  // closest point, segment hit and crowding per candidate
 
-std::string Count(double n) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.0f", n);
-  std::string digits = buffer, out;
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
-    out += digits[i];
-  }
-  return out;
-}
-
 double AliveBuds(const IvyModel& model) {
   double alive = 0;
   for (const Bud& b : model.buds)
@@ -69,8 +58,8 @@ Estimate EstimateIvySupport(const IvySupportSize& s) {
       (s.levels > 0 ? s.triangles * kBytesPerSubdividedTriangle : 0);
   e.memory_bytes += kBaseBytes;
   e.seconds = copies * after * kNsPerTriangleBuild * 1e-9;
-  e.what = s.levels > 0 ? "subdividing the support to " + Count(after) + " triangles"
-                        : "holding the support (" + Count(after) + " triangles)";
+  e.what = s.levels > 0 ? "subdividing the support to " + FormatCount(after) + " triangles"
+                        : "holding the support (" + FormatCount(after) + " triangles)";
   return e;
 }
 
@@ -100,7 +89,7 @@ std::string CheckIvyStep(const IvyModel& model, const GrowLog& log, const IvyGro
   const double bytes = l.base_bytes + l.bytes_per_bud * (buds + alive);
   if (l.max_bytes >= 0 && bytes > l.max_bytes) {
     return TruncatedLine(l.memory_limit, where,
-                         Count(buds) + " buds and " + Count(alive) +
+                         FormatCount(buds) + " buds and " + FormatCount(alive) +
                              " growing would need more than " + FormatBytes(l.max_bytes),
                          kIvyChange + RaiseHint(l.memory_limit));
   }
@@ -109,7 +98,7 @@ std::string CheckIvyStep(const IvyModel& model, const GrowLog& log, const IvyGro
                                                     alive * l.candidates_per_search);
   if (l.max_seconds >= 0 && seconds > l.max_seconds) {
     return TruncatedLine(l.seconds_limit, where,
-                         "the next step over " + Count(buds) + " buds would take more than " +
+                         "the next step over " + FormatCount(buds) + " buds would take more than " +
                              FormatSeconds(l.max_seconds),
                          kIvyChange + RaiseHint(l.seconds_limit));
   }
@@ -122,7 +111,7 @@ Estimate EstimateIvyGrown(const IvyModel& model, const GrowLog& log, const IvyGr
   e.memory_bytes = l.base_bytes + l.bytes_per_bud * buds;
   e.seconds = l.seconds_before + l.seconds_per_bud_step * log.bud_steps +
               l.seconds_per_candidate * static_cast<double>(log.candidates);
-  e.what = "growing the ivy (" + Count(buds) + " buds)";
+  e.what = "growing the ivy (" + FormatCount(buds) + " buds)";
   return e;
 }
 
@@ -138,7 +127,7 @@ Estimate EstimateIvyExport(const IvyModel& model, IvyExport kind, double support
   Estimate e;
   e.memory_bytes = c.memory_per_byte * bytes;
   e.seconds = c.ns_per_byte * 1e-9 * bytes;
-  e.what = std::string(c.what) + " (" + Count(buds) + " buds)";
+  e.what = std::string(c.what) + " (" + FormatCount(buds) + " buds)";
   return e;
 }
 

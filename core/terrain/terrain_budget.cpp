@@ -26,17 +26,6 @@ constexpr double kNsPerVertex = 10000;
 constexpr double kBytesPerCell = 36, kBytesPerGridVertex = 48;
 constexpr double kNsPerCell = 600, kNsPerGridVertex = 400;
 
-std::string Count(double n) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.0f", n);
-  std::string digits = buffer, out;
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
-    out += digits[i];
-  }
-  return out;
-}
-
 double Vertices(const Terrain& t) {
   double n = 0;
   for (const ContourNode& c : t.contours) n += static_cast<double>(c.ring.size());
@@ -93,14 +82,14 @@ std::string CheckTerrainContour(const Ring& parent, double d0, const TerrainPara
       l.base_bytes + l.bytes_per_vertex * work.vertices_held + l.transient_bytes_per_vertex * m;
   if (l.max_bytes >= 0 && bytes > l.max_bytes) {
     return TruncatedLine(l.memory_limit, where,
-                         Count(work.vertices_held + m) + " contour vertices would need more than " +
-                             FormatBytes(l.max_bytes),
+                         FormatCount(work.vertices_held + m) +
+                             " contour vertices would need more than " + FormatBytes(l.max_bytes),
                          kTerrainGrowChange + RaiseHint(l.memory_limit));
   }
   const double seconds = l.seconds_per_vertex * (work.vertices_worked + n + m);
   if (l.max_seconds >= 0 && seconds > l.max_seconds) {
     return TruncatedLine(l.seconds_limit, where,
-                         "shrinking " + Count(work.vertices_worked + n + m) +
+                         "shrinking " + FormatCount(work.vertices_worked + n + m) +
                              " contour vertices would take more than " +
                              FormatSeconds(l.max_seconds),
                          kTerrainGrowChange + RaiseHint(l.seconds_limit));
@@ -116,8 +105,8 @@ Estimate EstimateTerrainGrown(const Terrain& t, const TerrainGrowLimits& l) {
   e.memory_bytes = l.base_bytes + l.bytes_per_vertex * vertices +
                    l.transient_bytes_per_vertex * l.growth * largest;
   e.seconds = l.seconds_per_vertex * t.counts.vertices_worked;
-  e.what = "growing " + Count(static_cast<double>(t.contours.size())) + " contours (" +
-           Count(vertices) + " vertices)";
+  e.what = "growing " + FormatCount(static_cast<double>(t.contours.size())) + " contours (" +
+           FormatCount(vertices) + " vertices)";
   return e;
 }
 
@@ -143,7 +132,7 @@ Estimate EstimateHeightfield(const Terrain& t, const GridSize& g) {
   Estimate e;
   e.memory_bytes = kBytesPerCell * g.cells() + kBytesPerGridVertex * vertices;
   e.seconds = (kNsPerCell * g.cells() + kNsPerGridVertex * vertices) * 1e-9;
-  e.what = "the heightfield (" + Count(g.width) + " × " + Count(g.height) + " cells)";
+  e.what = "the heightfield (" + FormatCount(g.width) + " × " + FormatCount(g.height) + " cells)";
   return e;
 }
 

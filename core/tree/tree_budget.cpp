@@ -41,17 +41,6 @@ constexpr ExportCost kSvg = {120, 40, 0, 60, 60, 8192, 0, 0, 3, 70, "writing the
 // worker copies them out.
 constexpr ExportCost kMesh = {0, 0, 0, 400, 1200, 0, 48, 4, 3, 30, "building the mesh"};
 
-std::string Count(double n) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.0f", n);
-  std::string digits = buffer, out;
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
-    out += digits[i];
-  }
-  return out;
-}
-
 }  // namespace
 
 GrowLimits TreeGrowLimits(const TreeParams& p, const Budget& budget,
@@ -125,8 +114,8 @@ Estimate EstimateTreeExport(const TreeCounts& c, TreeExport kind) {
   Estimate e;
   e.memory_bytes = bytes * k.memory_per_byte;
   e.seconds = bytes * k.ns_per_byte * 1e-9;
-  e.what = std::string(k.what) + " (" + Count(c.internodes) + " internodes, " + Count(c.leaves) +
-           " leaves, " + Count(c.flowers) + " flowers)";
+  e.what = std::string(k.what) + " (" + FormatCount(c.internodes) + " internodes, " +
+           FormatCount(c.leaves) + " leaves, " + FormatCount(c.flowers) + " flowers)";
   return e;
 }
 
