@@ -10,101 +10,40 @@
 // chapter 3, the gust schedule repeating). Drag, wheel, pinch or the arrow and +/- keys
 // orbit and zoom. Every <niwa-tree> on a page shares ONE Web Worker and so one WASM instance (the
 // worker keeps their requests apart by a client id). Messages are shown as text, never as markup.
-import { OrbitCamera } from './web/gl/orbit_camera.js';
-import { FrameLoop } from './web/gl/frame_loop.js';
+// The shadow root, camera, frame loop and the shared worker are web/shell/embed_element.js's.
+import { EmbedElement, attributeValue } from './web/shell/embed_element.js';
 import { setHooks } from './web/shell/test_hooks.js';
-import { WorkerClient } from './web/shell/worker_client.js';
 import { Renderer } from './web/tree/tree_renderer.js';
 
-let nextClient = 0;
-let ready = null;  // the shared worker's module, loaded once for every element (its 'ready')
-
-const STYLE = `
-:host { display: inline-block; position: relative; width: 320px; height: 320px; contain: content; }
-:host([hidden]) { display: none; }
-canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: grab; border-radius: inherit; }
-canvas:focus-visible { outline: 3px solid #2f6b3a; outline-offset: -3px; }
-p { position: absolute; left: 0.4rem; bottom: 0.4rem; margin: 0; padding: 0.15rem 0.4rem; border-radius: 4px;
-    background: rgba(255, 255, 255, 0.82); font: 12px system-ui, sans-serif; color: #1d2a1f; max-width: calc(100% - 0.8rem); }
-p:empty { display: none; }
-`;
-
-class NiwaTree extends HTMLElement {
+class NiwaTree extends EmbedElement {
   static get observedAttributes() { return ['preset', 'seed', 'years', 'state', 'wind']; }
 
   constructor() {
-    super();
-    this.client = `tree-${++nextClient}`;
-    const shadow = this.attachShadow({ mode: 'open' });
-    const style = document.createElement('style');
-    style.textContent = STYLE;
-    this.canvas = document.createElement('canvas');
-    this.canvas.tabIndex = 0;
-    this.canvas.setAttribute('role', 'img');
-    this.canvas.setAttribute('aria-label', 'Niwa tree. Drag or use the arrow keys to orbit, wheel or plus and minus to zoom.');
-    this.line = document.createElement('p');
-    this.line.setAttribute('aria-live', 'polite');
-    shadow.append(style, this.canvas, this.line);
-    this.camera = new OrbitCamera();
-    this.renderer = null;
-    this.rendererReady = null;
+    super({ kind: 'tree', label: 'Niwa tree', messages: ['decoded', 'tree', 'drawList', 'pose', 'error'] });
     this.framed = false;
-    this.frames = new FrameLoop(() => this.drawFrame());
-    this.worker = null;
     this.state = null;
     this.years = 0;
     this.animating = false;
     this.pendingTree = null;
   }
 
-  // This element's client of the page's one worker (attributes may arrive before connectedCallback).
-  ensureWorker() {
-    if (this.worker) return;
-    this.worker = new WorkerClient(this.client, { onFailure: (text) => this.showMessage(text) });
-    for (const type of ['decoded', 'tree', 'drawList', 'pose', 'error']) this.worker.on(type, (msg) => this.onWorkerMessage(msg));
-    // One init for the page's worker (its module and tables), from the first element.
-    if (!ready) ready = this.worker.request('init', { hash: '' }, { done: ['ready'] }).reply;
+  createRenderer(canvas) {
+    return new Renderer(canvas);
   }
 
-  connectedCallback() {
-    this.ensureWorker();
-    if (!this.rendererReady) this.rendererReady = this.startRenderer();
-    this.load();
+  onRendererReady() {
+    if (this.pendingTree) this.showTree(this.pendingTree);
+  }
+
+  onCameraMove() {
+    this.requestFrame();
+    this.requestView();
   }
 
   disconnectedCallback() {
     this.animating = false;
     this.worker?.post('wind', { play: false });
     this.worker?.cancel('tree');
-  }
-
-  attributeChangedCallback() {
-    if (this.isConnected) this.load();
-  }
-
-  async startRenderer() {
-    try {
-      const renderer = new Renderer(this.canvas);
-      await renderer.init();
-      this.renderer = renderer;
-      this.camera.attach(this.canvas, () => {
-        this.requestFrame();
-        this.requestView();
-      });
-      new ResizeObserver(() => this.requestFrame()).observe(this.canvas);
-      if (this.pendingTree) this.showTree(this.pendingTree);
-    } catch (e) {
-      this.showMessage(`Cannot draw: ${e.message}`);
-    }
-  }
-
-  showMessage(text) {
-    this.line.textContent = text;
-    setHooks({ status: 'error' }, this);
-  }
-
-  requestFrame() {
-    if (this.renderer) this.frames.request();
   }
 
   drawFrame() {
@@ -141,7 +80,7 @@ class NiwaTree extends HTMLElement {
     const state = {};
     for (const key of ['preset', 'seed', 'years']) {
       const value = this.getAttribute(key);
-      if (value !== null) state[key] = value.trim() !== '' && Number.isFinite(Number(value)) ? Number(value) : value;
+      if (value !== null) state[key] = attributeValue(value, true);
     }
     this.start(state, []);
   }

@@ -13,100 +13,39 @@
 // (and <niwa-tree>) on a page shares ONE Web Worker and one WASM instance, kept apart by a client
 // id; the core checks every value and its one-line message is shown as text, never as markup.
 // Does not: take dropped meshes or clicks for seed points (the ivy page, public/ivy.html, does).
-import { OrbitCamera } from './web/gl/orbit_camera.js';
-import { FrameLoop } from './web/gl/frame_loop.js';
+// The shadow root, camera, frame loop and the shared worker are web/shell/embed_element.js's.
+import { EmbedElement, attributeValue } from './web/shell/embed_element.js';
 import { IvyRenderer } from './web/ivy/ivy_renderer.js';
 import { setHooks } from './web/shell/test_hooks.js';
-import { WorkerClient } from './web/shell/worker_client.js';
-
-let nextClient = 0;
-let ready = null;  // the ivy handler's tables, loaded once for every element (its 'ready')
-
-const STYLE = `
-:host { display: inline-block; position: relative; width: 320px; height: 320px; contain: content; }
-:host([hidden]) { display: none; }
-canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: grab; border-radius: inherit; }
-canvas:focus-visible { outline: 3px solid #2f6b3a; outline-offset: -3px; }
-p { position: absolute; left: 0.4rem; bottom: 0.4rem; margin: 0; padding: 0.15rem 0.4rem; border-radius: 4px;
-    background: rgba(255, 255, 255, 0.82); font: 12px system-ui, sans-serif; color: #1d2a1f; max-width: calc(100% - 0.8rem); }
-p:empty { display: none; }
-`;
 
 // Attribute -> state key (the ivy state JSON of core/ivy/ivy_state.h).
 const KEYS = { scene: 'scene', seed: 'seed', steps: 'steps', preset: 'preset', tree: 'tree', 'tree-years': 'tree_years' };
 const NUMERIC = new Set(['seed', 'steps', 'tree_years']);
 
-class NiwaIvy extends HTMLElement {
+class NiwaIvy extends EmbedElement {
   static get observedAttributes() { return [...Object.keys(KEYS), 'state']; }
 
   constructor() {
-    super();
-    this.client = `ivy-${++nextClient}`;
-    const shadow = this.attachShadow({ mode: 'open' });
-    const style = document.createElement('style');
-    style.textContent = STYLE;
-    this.canvas = document.createElement('canvas');
-    this.canvas.tabIndex = 0;
-    this.canvas.setAttribute('role', 'img');
-    this.canvas.setAttribute('aria-label', 'Niwa ivy. Drag or use the arrow keys to orbit, wheel or plus and minus to zoom.');
-    this.line = document.createElement('p');
-    this.line.setAttribute('aria-live', 'polite');
-    shadow.append(style, this.canvas, this.line);
-    this.camera = new OrbitCamera();
-    this.renderer = null;
-    this.rendererReady = null;
-    this.frames = new FrameLoop(() => this.renderer.render(this.camera));
-    this.worker = null;
+    super({ kind: 'ivy', label: 'Niwa ivy', study: 'ivy', messages: ['decoded', 'support', 'ivy', 'error'] });
     this.pending = { support: null, ivy: null };  // replies that came before the renderer
     this.framed = false;
     this.steps = 0;
     this.animation = null;
   }
 
-  ensureWorker() {
-    if (this.worker) return;
-    this.worker = new WorkerClient(this.client, { study: 'ivy', onFailure: (text) => this.showMessage(text) });
-    for (const type of ['decoded', 'support', 'ivy', 'error']) this.worker.on(type, (msg) => this.onWorkerMessage(msg));
-    if (!ready) ready = this.worker.request('init', { hash: '' }, { done: ['ready'] }).reply;
+  createRenderer(canvas) {
+    return new IvyRenderer(canvas);
   }
 
-  connectedCallback() {
-    this.ensureWorker();
-    if (!this.rendererReady) this.rendererReady = this.startRenderer();
-    this.load();
+  onRendererReady() {
+    this.renderer.setVisible({ seeds: false });
+    if (this.pending.support) this.showSupport(this.pending.support);
+    if (this.pending.ivy) this.showIvy(this.pending.ivy);
   }
 
   disconnectedCallback() {
     this.animation = null;
     this.worker?.cancel('ivy');
-  }
-
-  attributeChangedCallback() {
-    if (this.isConnected) this.load();
-  }
-
-  async startRenderer() {
-    try {
-      const renderer = new IvyRenderer(this.canvas);
-      await renderer.init();
-      renderer.setVisible({ seeds: false });
-      this.renderer = renderer;
-      this.camera.attach(this.canvas, () => this.requestFrame());
-      new ResizeObserver(() => this.requestFrame()).observe(this.canvas);
-      if (this.pending.support) this.showSupport(this.pending.support);
-      if (this.pending.ivy) this.showIvy(this.pending.ivy);
-    } catch (e) {
-      this.showMessage(`Cannot draw: ${e.message}`);
-    }
-  }
-
-  showMessage(text) {
-    this.line.textContent = text;
-    setHooks({ status: 'error', error: text }, this);
-  }
-
-  requestFrame() {
-    if (this.renderer) this.frames.request();
   }
 
   // state= goes through the core's hash decoder; the other attributes are checked by the core when
@@ -115,7 +54,7 @@ class NiwaIvy extends HTMLElement {
     this.ensureWorker();
     this.animation = null;
     setHooks({ status: 'growing' }, this);
-    await ready;
+    await this.ready;
     const hash = this.getAttribute('state');
     if (hash !== null) {
       this.worker.request('decode', { hash }, { group: 'decode', done: ['decoded'] });
@@ -125,7 +64,7 @@ class NiwaIvy extends HTMLElement {
     for (const [attribute, key] of Object.entries(KEYS)) {
       const value = this.getAttribute(attribute);
       if (value === null) continue;
-      state[key] = NUMERIC.has(key) && value.trim() !== '' && Number.isFinite(Number(value)) ? Number(value) : value;
+      state[key] = attributeValue(value, NUMERIC.has(key));
     }
     // A tree is in metres: its ivy preset is metric unless one is given (as the CLI's --tree-preset).
     if (state.scene === 'tree' && state.preset === undefined) state.preset = 'metric';

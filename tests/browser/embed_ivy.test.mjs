@@ -1,5 +1,5 @@
 // Browser test of <niwa-ivy> (public/niwa-ivy.js) on public/embed-ivy.html and the iframe form
-// public/ivy-frame.html: node tests/browser/embed_ivy.test.mjs (exit 0 = pass). Three elements
+// public/embed.html?study=ivy: node tests/browser/embed_ivy.test.mjs (exit 0 = pass). Three elements
 // (cubes4 by attributes, a Niwa tree with animate, a wall by state=) share one worker and each
 // grows what `niwa ivy grow` grows for the same input (--stats equal but the timings); animate
 // replays the steps without regrowing; a bad attribute is one line in the element and a good one
@@ -85,9 +85,9 @@ await runBrowserTest(async (server, browser) => {
   const frame = await context.newPage();
   watchPage(frame, problems);
   const hash = 'preset=metric&seed=4&steps=40&scene=tree&tree=maple&tree_years=6';
-  await frame.goto(`${server.url}ivy-frame.html#${hash}`, { waitUntil: 'load' });
+  await frame.goto(`${server.url}embed.html?study=ivy#${hash}`, { waitUntil: 'load' });
   const framed = await waitElement(frame, 'niwa-ivy');
-  check('ivy-frame.html grows its hash', framed.status === 'ready' && framed.supportName === 'tree:maple', `${framed.status} ${framed.supportName} ${framed.error || ''}`);
+  check('embed.html?study=ivy grows its hash', framed.status === 'ready' && framed.supportName === 'tree:maple', `${framed.status} ${framed.supportName} ${framed.error || ''}`);
   same('iframe == niwa ivy grow --url', framed, ['--url', hash]);
   await frame.screenshot({ path: path.join(ARTIFACTS, 'embed-ivy-frame.png') });
 

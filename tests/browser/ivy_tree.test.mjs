@@ -146,7 +146,7 @@ await runBrowserTest(async (server, browser) => {
   const snippet = await page.evaluate(() => ({ element: document.getElementById('embed-element').value, iframe: document.getElementById('embed-iframe').value }));
   const escaped = treeHash.replace(/&/g, '&amp;');
   check('Embed gives <niwa-ivy state=HASH>', snippet.element.includes('niwa-ivy.js') && snippet.element.includes(`<niwa-ivy state="${escaped}"`), snippet.element);
-  check('Embed gives the iframe form', snippet.iframe.includes(`ivy-frame.html#${escaped}`), snippet.iframe);
+  check('Embed gives the iframe form', snippet.iframe.includes(`embed.html?study=ivy#${escaped}`), snippet.iframe);
   await page.keyboard.press('Escape');
 
   check('no console errors or page errors', problems.length === 0, problems.join(' | '));

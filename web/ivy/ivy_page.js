@@ -509,9 +509,9 @@ ui.resetView.addEventListener('click', () => {
   requestFrame();
 });
 ui.copyLink.addEventListener('click', () => copyLink(ui.shareStatus));
-// The embed: <niwa-ivy> (public/niwa-ivy.js) or an iframe of public/ivy-frame.html, with this hash.
+// The embed: <niwa-ivy> (public/niwa-ivy.js) or an iframe of public/embed.html?study=ivy, with this hash.
 ui.embed.addEventListener('click', () => {
-  showEmbedDialog(ui.embedUi, { tag: 'niwa-ivy', title: 'Niwa ivy', script: 'niwa-ivy.js', frame: 'ivy-frame.html' });
+  showEmbedDialog(ui.embedUi, { tag: 'niwa-ivy', title: 'Niwa ivy', script: 'niwa-ivy.js', frame: 'embed.html?study=ivy' });
 });
 const exportAs = (format) => {
   const { id } = worker.request('export', { format, withSupport: ui.glbSupport.checked }, { group: `export-${format}`, done: ['export'] });

@@ -1,0 +1,124 @@
+// EmbedElement: the shared start-up of Niwa's custom elements (<niwa-tree>, <niwa-ivy>, ...).
+//
+// It owns what every embed has: the shadow root (style, canvas, one message line), the orbit
+// camera, the frame loop, this element's client of the page's ONE Web Worker (so one WASM
+// instance for every embed on a page; the worker keeps the clients apart by id), one `init` per
+// study for the whole page, and the renderer's start. A subclass says which renderer to make and
+// which worker messages it wants, and grows its own study:
+//
+//   class NiwaIvy extends EmbedElement {
+//     constructor() { super({ kind: 'ivy', label: 'Niwa ivy', study: 'ivy', messages: ['ivy', 'error'] }); }
+//     createRenderer(canvas) { return new IvyRenderer(canvas); }   // has async init()
+//     load() { ... }                  // read the attributes, ask the worker
+//     onWorkerMessage(msg) { ... }    // the messages named above
+//   }
+//
+// Does not: know any study's attributes, state or messages, or draw anything itself; messages are
+// shown as text, never as markup.
+import { FrameLoop } from '../gl/frame_loop.js';
+import { OrbitCamera } from '../gl/orbit_camera.js';
+import { setHooks } from './test_hooks.js';
+import { WorkerClient } from './worker_client.js';
+
+const STYLE = `
+:host { display: inline-block; position: relative; width: 320px; height: 320px; contain: content; }
+:host([hidden]) { display: none; }
+canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: grab; border-radius: inherit; }
+canvas:focus-visible { outline: 3px solid #2f6b3a; outline-offset: -3px; }
+p { position: absolute; left: 0.4rem; bottom: 0.4rem; margin: 0; padding: 0.15rem 0.4rem; border-radius: 4px;
+    background: rgba(255, 255, 255, 0.82); font: 12px system-ui, sans-serif; color: #1d2a1f; max-width: calc(100% - 0.8rem); }
+p:empty { display: none; }
+`;
+
+const clientCount = new Map();  // kind -> elements made so far (client ids 'tree-1', 'ivy-2', ...)
+const studyReady = new Map();   // study ('' for the tree) -> its init's reply, requested once a page
+
+export class EmbedElement extends HTMLElement {
+  // kind: the client id prefix; label: what the canvas is called for screen readers; study: the
+  // worker's study handler ('' for the tree, the worker's default); messages: the reply types this
+  // element handles in onWorkerMessage.
+  constructor({ kind, label, study = '', messages }) {
+    super();
+    const count = (clientCount.get(kind) || 0) + 1;
+    clientCount.set(kind, count);
+    this.client = `${kind}-${count}`;
+    this.study = study;
+    this.messages = messages;
+    const shadow = this.attachShadow({ mode: 'open' });
+    const style = document.createElement('style');
+    style.textContent = STYLE;
+    this.canvas = document.createElement('canvas');
+    this.canvas.tabIndex = 0;
+    this.canvas.setAttribute('role', 'img');
+    this.canvas.setAttribute('aria-label', `${label}. Drag or use the arrow keys to orbit, wheel or plus and minus to zoom.`);
+    this.line = document.createElement('p');
+    this.line.setAttribute('aria-live', 'polite');
+    shadow.append(style, this.canvas, this.line);
+    this.camera = new OrbitCamera();
+    this.renderer = null;
+    this.rendererReady = null;
+    this.frames = new FrameLoop(() => this.drawFrame());
+    this.worker = null;
+    this.ready = null;  // this study's init reply (shared by every element of the study)
+  }
+
+  // This element's client of the page's one worker (attributes may arrive before connectedCallback).
+  ensureWorker() {
+    if (this.worker) return;
+    const options = { onFailure: (text) => this.showMessage(text) };
+    if (this.study) options.study = this.study;
+    this.worker = new WorkerClient(this.client, options);
+    for (const type of this.messages) this.worker.on(type, (msg) => this.onWorkerMessage(msg));
+    if (!studyReady.has(this.study)) studyReady.set(this.study, this.worker.request('init', { hash: '' }, { done: ['ready'] }).reply);
+    this.ready = studyReady.get(this.study);
+  }
+
+  connectedCallback() {
+    this.ensureWorker();
+    if (!this.rendererReady) this.rendererReady = this.startRenderer();
+    this.load();
+  }
+
+  attributeChangedCallback() {
+    if (this.isConnected) this.load();
+  }
+
+  async startRenderer() {
+    try {
+      const renderer = this.createRenderer(this.canvas);
+      await renderer.init();
+      this.renderer = renderer;
+      this.camera.attach(this.canvas, () => this.onCameraMove());
+      new ResizeObserver(() => this.requestFrame()).observe(this.canvas);
+      this.onRendererReady();
+    } catch (e) {
+      this.showMessage(`Cannot draw: ${e.message}`);
+    }
+  }
+
+  showMessage(text) {
+    this.line.textContent = text;
+    setHooks({ status: 'error', error: text }, this);
+  }
+
+  requestFrame() {
+    if (this.renderer) this.frames.request();
+  }
+
+  // Overridable: what a frame draws, what a camera move does, what waits for the renderer.
+  drawFrame() {
+    this.renderer.render(this.camera);
+  }
+
+  onCameraMove() {
+    this.requestFrame();
+  }
+
+  onRendererReady() {}
+}
+
+// Reads numeric attributes as numbers (the core checks every value; a non-number stays text so its
+// message names it).
+export function attributeValue(value, numeric) {
+  return numeric && value.trim() !== '' && Number.isFinite(Number(value)) ? Number(value) : value;
+}
