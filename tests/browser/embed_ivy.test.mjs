@@ -91,5 +91,17 @@ await runBrowserTest(async (server, browser) => {
   same('iframe == niwa ivy grow --url', framed, ['--url', hash]);
   await frame.screenshot({ path: path.join(ARTIFACTS, 'embed-ivy-frame.png') });
 
+  // The same page without ?study is the tree's iframe form (README's snippet); an unknown study
+  // is one line on the page.
+  await frame.goto(`${server.url}embed.html#preset=maple&seed=2&years=5`, { waitUntil: 'load' });
+  const treeFrame = await frame.waitForFunction(() => {
+    const d = document.querySelector('niwa-tree')?.dataset;
+    return d && (d.status === 'ready' || d.status === 'error') && { ...d };
+  }, null, { timeout: TIMEOUT, polling: 200 }).then((h) => h.jsonValue());
+  check('embed.html#HASH is a <niwa-tree>', treeFrame.status === 'ready' && Number(treeFrame.year) === 5, `${treeFrame.status} year ${treeFrame.year}`);
+  await frame.goto(`${server.url}embed.html?study=moss#x=1`, { waitUntil: 'load' });
+  const unknown = await frame.evaluate(() => document.body.textContent);
+  check('embed.html?study=moss says which studies there are', unknown.includes('Unknown study "moss"') && unknown.includes('tree, ivy'), unknown);
+
   check('no console errors or page errors', problems.length === 0, problems.join(' | '));
 });
