@@ -28,7 +28,7 @@ const ui = {
   showLeaves: $('show-leaves'), showSuckers: $('show-suckers'), showSupport: $('show-support'), showSeeds: $('show-seeds'), showBuds: $('show-buds'),
   resetView: $('reset-view'), copyLink: $('copy-link'), downloadGlb: $('download-glb'), glbSupport: $('glb-support'),
   downloadJson: $('download-json'), downloadLsys: $('download-lsys'), shareStatus: $('share-status'), params: $('params'),
-  embed: $('embed'), embedUi: { dialog: $('embed-dialog'), element: $('embed-element'), iframe: $('embed-iframe') },
+  embed: $('embed'),
   play: $('play'), step: $('step'), stepText: $('step-text'), progressBar: $('ivy-progress'), cancel: $('cancel'),
 };
 mountStudyNav($('studies'), 'ivy');
@@ -511,7 +511,7 @@ ui.resetView.addEventListener('click', () => {
 ui.copyLink.addEventListener('click', () => copyLink(ui.shareStatus));
 // The embed: <niwa-ivy> (public/niwa-ivy.js) or an iframe of public/embed.html?study=ivy, with this hash.
 ui.embed.addEventListener('click', () => {
-  showEmbedDialog(ui.embedUi, { tag: 'niwa-ivy', title: 'Niwa ivy', script: 'niwa-ivy.js', frame: 'embed.html?study=ivy' });
+  showEmbedDialog({ tag: 'niwa-ivy', title: 'Niwa ivy', heading: 'Embed this ivy', script: 'niwa-ivy.js', frame: 'embed.html?study=ivy' });
 });
 const exportAs = (format) => {
   const { id } = worker.request('export', { format, withSupport: ui.glbSupport.checked }, { group: `export-${format}`, done: ['export'] });

@@ -116,10 +116,30 @@ export async function copyLink(status) {
   }
 }
 
+// The embed dialog (one per page, made on first use; ids embed-dialog, embed-element, embed-iframe).
+function embedDialog(heading) {
+  let dialog = document.getElementById('embed-dialog');
+  if (!dialog) {
+    dialog = document.createElement('dialog');
+    dialog.id = 'embed-dialog';
+    dialog.setAttribute('aria-labelledby', 'embed-title');
+    dialog.innerHTML = `<h2 id="embed-title"></h2>
+      <label for="embed-element">Custom element (load the script once per page)</label>
+      <textarea id="embed-element" readonly rows="5"></textarea>
+      <label for="embed-iframe">Or an iframe</label>
+      <textarea id="embed-iframe" readonly rows="3"></textarea>
+      <form method="dialog"><button type="submit">Close</button></form>`;
+    document.body.append(dialog);
+  }
+  dialog.querySelector('#embed-title').textContent = heading;
+  return { dialog, element: dialog.querySelector('#embed-element'), iframe: dialog.querySelector('#embed-iframe') };
+}
+
 // Opens the embed dialog with the custom-element and iframe snippets for the current hash.
-// ui: {dialog, element, iframe} (the textareas); tag: the custom element (e.g. 'niwa-tree');
-// title: the iframe's title; script: the element's module; frame: the iframe's page (both in public/).
-export function showEmbedDialog(ui, { tag, title, script = 'niwa-embed.js', frame = 'embed.html' }) {
+// tag: the custom element (e.g. 'niwa-tree'); title: the iframe's title; heading: the dialog's;
+// script: the element's module; frame: the iframe's page (both in public/).
+export function showEmbedDialog({ tag, title, heading = 'Embed this view', script = 'niwa-embed.js', frame = 'embed.html' }) {
+  const ui = embedDialog(heading);
   const base = new URL('.', location.href).href;
   const state = location.hash.slice(1).replace(/&/g, '&amp;').replace(/"/g, '&quot;');
   ui.element.value = `<script type="module" src="${base}${script}"></script>\n`

@@ -31,7 +31,6 @@ const ui = {
   downloadGlb: $('download-glb'), downloadJson: $('download-json'), downloadPng: $('download-png'),
   shareStatus: $('share-status'), wind: $('wind'), windInfo: $('wind-info'), renderMode: $('render-mode'),
   renderTable: $('render-table'), renderCol: $('render-col'), timeFrames: $('time-frames'), cancel: $('cancel'),
-  embedUi: { dialog: $('embed-dialog'), element: $('embed-element'), iframe: $('embed-iframe') },
 };
 mountStudyNav($('studies'), 'tree');
 // Errors beside their fields and the "stale" label over the view; the .glb button's guard.
@@ -712,7 +711,7 @@ ui.copyLink.addEventListener('click', () => {
 
 ui.embed.addEventListener('click', () => {
   writeHash();
-  showEmbedDialog(ui.embedUi, { tag: 'niwa-tree', title: 'Niwa tree' });
+  showEmbedDialog({ tag: 'niwa-tree', title: 'Niwa tree', heading: 'Embed this tree' });
 });
 
 setHooks({ status: 'loading' });
