@@ -3,6 +3,7 @@
 // measured.
 #include <gtest/gtest.h>
 
+#include "support/grow.h"
 #include "tree/growth.h"
 #include "tree/presets.h"
 #include "tree/tree_budget.h"
@@ -11,12 +12,7 @@
 namespace niwa {
 namespace {
 
-TreeState Sakura(int years) {
-  TreeState state;
-  EXPECT_TRUE(SetStatePreset("sakura", &state).ok());
-  EXPECT_TRUE(SetStateYears(years, &state).ok());
-  return state;
-}
+TreeState Sakura(int years) { return testing::PresetState("sakura", years); }
 
 TEST(TreeBudget, UnlimitedAndRoomyBudgetsGrowTheSameTree) {
   TreeState state = Sakura(20);

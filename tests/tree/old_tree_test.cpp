@@ -3,6 +3,7 @@
 // budget that stops the growth (the page's internode budget).
 #include <gtest/gtest.h>
 
+#include "support/grow.h"
 #include "tree/growth.h"
 #include "tree/tree_budget.h"
 #include "tree/tree_state.h"
@@ -10,12 +11,7 @@
 namespace niwa {
 namespace {
 
-TreeState Sakura(int years) {
-  TreeState state;
-  EXPECT_TRUE(SetStatePreset("sakura", &state).ok());
-  EXPECT_TRUE(SetStateYears(years, &state).ok());
-  return state;
-}
+TreeState Sakura(int years) { return testing::PresetState("sakura", years); }
 
 TEST(OldTree, HundredYearsAtTheInternodeCapKeepsLeavesAndFlowers) {
   TreeState state = Sakura(100);
