@@ -8,27 +8,15 @@
 // e.g. `scripts/figures ivy claims` to redo only the numbers.
 'use strict';
 const fs = require('fs');
-const os = require('os');
 const path = require('path');
-const { execFileSync } = require('child_process');
+const { root, start, run, esc } = require('./figures_common');
 
-const root = path.resolve(__dirname, '..', '..');
-const niwa = process.env.NIWA ? path.resolve(process.env.NIWA) : path.join(root, 'build/native/bin/niwa');
 const outDir = path.join(root, 'docs/figures/ivy');
-const tmpDir = fs.mkdtempSync(path.join(os.tmpdir(), 'niwa-ivy-figures-'));
+const tmpDir = start('ivy-figures');
 
-if (!fs.existsSync(niwa)) {
-  console.error(`figures: ${path.relative(root, niwa)} is missing; run scripts/build native first`);
-  process.exit(1);
-}
 fs.mkdirSync(outDir, { recursive: true });
 
 const PANEL = 480;  // the CLI's .svg: two square views of 480 px (front x-y, side z-y)
-const esc = (s) => s.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
-
-function run(args) {
-  return execFileSync(niwa, args, { encoding: 'utf8', maxBuffer: 1 << 28 });
-}
 
 function growArgs(p) {
   const args = ['ivy', 'grow'];

@@ -8,22 +8,13 @@
 // (tests/terrain/shrink_test.cpp, grow_test.cpp), not drawn here. Usage: scripts/figures terrain [N...]
 'use strict';
 const fs = require('fs');
-const os = require('os');
 const path = require('path');
-const { execFileSync } = require('child_process');
+const { root, start, run } = require('./figures_common');
 
-const root = path.resolve(__dirname, '..', '..');
-const niwa = process.env.NIWA ? path.resolve(process.env.NIWA) : path.join(root, 'build/native/bin/niwa');
 const outDir = path.join(root, 'docs/figures');
-const tmpDir = fs.mkdtempSync(path.join(os.tmpdir(), 'niwa-terrain-figures-'));
+const tmpDir = start('terrain-figures');
 const dem = path.join(root, 'tests/data/terrain/jacksboro_dem.png');
 
-if (!fs.existsSync(niwa)) {
-  console.error(`figures: ${path.relative(root, niwa)} is missing; run scripts/build native first`);
-  process.exit(1);
-}
-
-const run = (args) => execFileSync(niwa, args, { encoding: 'utf8', maxBuffer: 1 << 28 });
 
 // One panel: `grow` with the preset (and --set), its contour JSON, plan SVG and stats.
 function grow(p) {

@@ -6,19 +6,12 @@
 // e.g. `scripts/figures 2.16 2.17` to redo only those.
 'use strict';
 const fs = require('fs');
-const os = require('os');
 const path = require('path');
-const { execFileSync } = require('child_process');
+const { root, start, run, esc } = require('./figures_common');
 
-const root = path.resolve(__dirname, '..', '..');
-const niwa = process.env.NIWA ? path.resolve(process.env.NIWA) : path.join(root, 'build/native/bin/niwa');
 const outDir = path.join(root, 'docs/figures');
-const tmpDir = fs.mkdtempSync(path.join(os.tmpdir(), 'niwa-figures-'));
+const tmpDir = start('figures');
 
-if (!fs.existsSync(niwa)) {
-  console.error(`figures: ${path.relative(root, niwa)} is missing; run scripts/build native first`);
-  process.exit(1);
-}
 
 // ---------------------------------------------------------------------------------------------
 // Running the CLI
@@ -31,10 +24,6 @@ function niwaArgs(p) {
   if (sets.length) args.push('--set', ...sets);
   if (p.prune && p.prune.length) args.push('--prune', ...p.prune);
   return args;
-}
-
-function run(args) {
-  return execFileSync(niwa, args, { encoding: 'utf8', maxBuffer: 1 << 28 });
 }
 
 function stats(p) {
@@ -52,7 +41,6 @@ function treeJson(p) {
 
 const W = 420, H = 460, GROUND = H - 20;  // panel size; the CLI draws the ground at H - 20
 
-const esc = (s) => s.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
 const r1 = (v) => String(Math.round(v * 10) / 10);
 
 // Keeps the points of a polyline that are at least 2 px from the last kept one (and the last).
