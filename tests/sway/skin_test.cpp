@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <glm/geometric.hpp>
 
+#include "support/hand_tree.h"
 #include "tree/growth.h"
 #include "tree/presets.h"
 
@@ -16,29 +17,10 @@ namespace {
 
 constexpr float kScale = 0.01f;  // default cm_to_units
 
-// Straight branch from the parent's node `parent_node` (or `base`) to `tip`.
+// Branches of the hand-made trees carry a flower at their tip when they have leaves.
 int AddBranch(Tree* tree, int parent, int parent_node, glm::vec3 base, glm::vec3 tip, int segments,
               float radius, int leaves = 0) {
-  Branch b{};
-  b.id = static_cast<int>(tree->branches.size());
-  b.parent = parent;
-  b.parent_node = parent_node;
-  b.alive = true;
-  b.bud_direction = glm::vec3(0, 1, 0);
-  b.azimuth = glm::vec3(1, 0, 0);
-  if (parent >= 0)
-    base = tree->branches[static_cast<std::size_t>(parent)]
-               .nodes[static_cast<std::size_t>(parent_node)];
-  for (int k = 0; k <= segments; ++k) {
-    float f = static_cast<float>(k) / static_cast<float>(segments);
-    b.nodes.push_back(base + (tip - base) * f);
-  }
-  b.cross_section = 3.14159265f * radius * radius;
-  for (int k = 0; k < leaves; ++k) b.leaves.push_back(Leaf{1 + k % segments, glm::vec3(1, 0, 0)});
-  if (leaves > 0) b.flowers.push_back(segments);
-  if (parent >= 0) tree->branches[static_cast<std::size_t>(parent)].children.push_back(b.id);
-  tree->branches.push_back(b);
-  return b.id;
+  return testing::AddBranch(tree, parent, parent_node, base, tip, segments, radius, leaves, true);
 }
 
 // Moving arms, a follower twig, a fixed stub, a branch starting at its parent's node 0 and a dead

@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "math/det_math.h"
+#include "support/hand_tree.h"
 #include "tree/growth.h"
 #include "tree/presets.h"
 
@@ -17,28 +18,7 @@ namespace {
 
 using glm::dvec3;
 
-// Adds a straight branch from the parent's node `parent_node` (or from `base` for the seedling)
-// to `tip` with `segments` internodes, radius (cm) and leaves.
-int AddBranch(Tree* tree, int parent, int parent_node, glm::vec3 base, glm::vec3 tip, int segments,
-              float radius, int leaves = 0) {
-  Branch b{};
-  b.id = static_cast<int>(tree->branches.size());
-  b.parent = parent;
-  b.parent_node = parent_node;
-  b.alive = true;
-  if (parent >= 0)
-    base = tree->branches[static_cast<std::size_t>(parent)]
-               .nodes[static_cast<std::size_t>(parent_node)];
-  for (int k = 0; k <= segments; ++k) {
-    float f = static_cast<float>(k) / static_cast<float>(segments);
-    b.nodes.push_back(base + (tip - base) * f);
-  }
-  b.cross_section = 3.14159265f * radius * radius;
-  for (int k = 0; k < leaves; ++k) b.leaves.push_back(Leaf{1 + k % segments, glm::vec3(1, 0, 0)});
-  if (parent >= 0) tree->branches[static_cast<std::size_t>(parent)].children.push_back(b.id);
-  tree->branches.push_back(b);
-  return b.id;
-}
+using testing::AddBranch;
 
 // Mirror-symmetric (x -> -x) tree: trunk, two arms, each with a twig.
 Tree SymmetricTree() {
