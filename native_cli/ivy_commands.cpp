@@ -133,9 +133,12 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   }
   ivy::IvyScene scene;
   io::MeshReadStats read;
+  Estimate tree_estimate;  // a tree support: growing it and its bark (time shared with the ivy)
+  std::string tree_truncated_by;
   if (!o.tree_preset.empty()) {
     const double years = ParseFlagNumber("--tree-years", o.tree_years, {1, kMaxYears, true});
-    Result<ivy::IvyScene> s = TreeSupportScene(o.tree_preset, years);
+    Result<ivy::IvyScene> s =
+        TreeSupportScene(o.tree_preset, years, budget, &tree_estimate, &tree_truncated_by);
     if (!s.ok()) Fail(s.status());
     scene = std::move(s).value();
   } else if (!o.mesh.empty()) {
@@ -150,8 +153,11 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
                              : state.scene.empty() ? std::string("cubes4")
                                                    : state.scene;
     if (name == ivy::kTreeScene) {  // the page's tree scene: tree= and tree_years= of the state
-      Result<ivy::IvyScene> s = TreeSupportScene(state.tree, state.tree_years);
+      Result<ivy::IvyScene> s = TreeSupportScene(state.tree, state.tree_years, budget,
+                                                 &tree_estimate, &tree_truncated_by);
       if (!s.ok()) {
+        const std::string& field = s.status().field();
+        if (field == budget.memory_limit || field == budget.seconds_limit) Fail(s.status());
         const char* flag = !o.scene.empty() ? "--scene" : !o.url.empty() ? "--url" : "--params";
         Fail(Status::Error(flag, s.status().message()));
       }
@@ -176,8 +182,12 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   support_size.levels = scene.free ? 0 : levels;
   support_size.bvh = o.accel == "bvh";
   support_size.obstacles = !o.mesh.empty();  // a mesh's noivy triangles: a second mesh and BVH
-  const Estimate support_estimate = ivy::EstimateIvySupport(support_size);
-  Check(CheckEstimate(support_estimate, budget, ivy::kIvyChange));
+  ReportTruncated(tree_truncated_by);
+  Estimate support_estimate = ivy::EstimateIvySupport(support_size);
+  // A tree's growth and bark took their time before the ivy's (its memory is freed but the bark).
+  support_estimate.seconds += tree_estimate.seconds;
+  Check(CheckEstimate(support_estimate, budget,
+                      tree_estimate.what.empty() ? ivy::kIvyChange : "lower --tree-years"));
   if (levels > 0 && !scene.free) scene.mesh = geom::Subdivide(scene.mesh, levels);
   std::vector<glm::dvec3> seeds;
   for (const std::string& s : o.seed_points)
@@ -208,10 +218,22 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   ivy::GrowLog log;
   const ivy::IvyGrowLimits limits =
       ivy::IvyLimits(state.params, budget, support_estimate, !scene.free);
+  // With --stats the growth keeps room for the measurement's part that grows with every bud.
+  ivy::IvyGrowLimits grow_limits = limits;
+  const double support_triangles =
+      scene.free ? 0 : static_cast<double>(scene.mesh.triangle_count());
+  if (o.stats) ivy::ReserveIvyStats(support_triangles, &grow_limits);
   Result<ivy::IvyModel> model =
-      ivy::Grow(support, seeds, state.params, state.steps, state.seed, &log, &limits);
+      ivy::Grow(support, seeds, state.params, state.steps, state.seed, &log, &grow_limits);
   if (!model.ok()) Fail(model.status());
   ReportTruncated(log.truncated_by);
+  // The measurement's exact count (the overlap sweep's pairs are known only now), checked with
+  // the growth and the export before either is done.
+  Estimate stats_estimate;
+  if (o.stats) {
+    stats_estimate =
+        ivy::EstimateIvyStats(ivy::CountIvyStatsWork(*model, state.params, support_triangles));
+  }
   ivy::IvyTimings t;
   t.ms_bvh = Ms(t_bvh0, t_bvh1);
   t.ms_rules = log.ms_rules;
@@ -231,7 +253,8 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
                    grown.memory_bytes / 1048576, grown.seconds,
                    export_estimate.memory_bytes / 1048576, export_estimate.seconds);
     }
-    Check(CheckEstimate(grown + export_estimate, budget, ivy::kIvyChange));
+    Check(CheckEstimate(grown + export_estimate + stats_estimate, budget,
+                        o.stats ? ivy::kIvyStatsChange : ivy::kIvyChange));
     std::string bytes;
     if (ext == ".json") {
       bytes = ivy::IvyModelJson(*model, state.params, state.seed, state.steps) + "\n";
@@ -257,12 +280,18 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   }
   if (std::getenv("NIWA_BUDGET_TRACE") && o.out_path.empty()) {
     const Estimate grown = ivy::EstimateIvyGrown(*model, log, limits);
-    std::fprintf(stderr, "budget: grown %.0f MB %.2f s\n", grown.memory_bytes / 1048576,
-                 grown.seconds);
+    std::fprintf(stderr, "budget: grown %.0f MB %.2f s; stats %.0f MB %.2f s\n",
+                 grown.memory_bytes / 1048576, grown.seconds, stats_estimate.memory_bytes / 1048576,
+                 stats_estimate.seconds);
+  }
+  if (o.stats && o.out_path.empty()) {
+    Check(CheckEstimate(ivy::EstimateIvyGrown(*model, log, limits) + stats_estimate, budget,
+                        ivy::kIvyStatsChange));
   }
   if (o.stats) {
     ivy::IvyStats stats = ivy::MeasureIvy(*model, log, scene.free ? nullptr : &scene.mesh,
                                           state.params, obstacles > 0 ? &attach : nullptr);
+    stats.tree_truncated_by = tree_truncated_by;
     t.ms = Ms(t_start, std::chrono::steady_clock::now());
     out << ivy::IvyStatsJson(stats, log, *model, t) << "\n";
   }

@@ -13,14 +13,24 @@
 
 namespace niwa::cli {
 
-// Grows tree preset `name` for `years` years (the errors name --tree-preset and --tree-years) and
-// returns it as a scene whose one named seed, "trunk", is the +z side of the trunk foot.
-inline Result<ivy::IvyScene> TreeSupportScene(const std::string& name, double years) {
-  Result<BarkSupport> bark = GrowBarkSupport(name, years);
+// Grows tree preset `name` for `years` years within `budget` (the limits of `niwa tree grow`,
+// shared with the ivy's own; the errors name --tree-preset, --tree-years or the limit) and
+// returns it as a scene whose one named seed, "trunk", is the +z side of the trunk foot;
+// *estimate gets the tree's and its bark's, *truncated_by the tree's stop line ("" if none).
+inline Result<ivy::IvyScene> TreeSupportScene(const std::string& name, double years,
+                                              const Budget& budget, Estimate* estimate,
+                                              std::string* truncated_by) {
+  BarkBudget bark_budget;
+  bark_budget.budget = budget;
+  Result<BarkSupport> bark = GrowBarkSupport(name, years, &bark_budget);
   if (!bark.ok()) {
-    return Status::Error(bark.status().field() == "tree" ? "--tree-preset" : "--tree-years",
+    const std::string& field = bark.status().field();
+    if (field == budget.memory_limit || field == budget.seconds_limit) return bark.status();
+    return Status::Error(field == "tree" ? "--tree-preset" : "--tree-years",
                          bark.status().message());
   }
+  *estimate = bark->estimate;
+  *truncated_by = bark->truncated_by;
   ivy::IvyScene scene;
   scene.name = "tree:" + name;
   scene.description = bark->description;

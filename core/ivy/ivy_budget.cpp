@@ -2,8 +2,11 @@
 // (constants measured in docs/budgets.md, "Ivy").
 #include "ivy/ivy_budget.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
+#include <vector>
 
 namespace niwa::ivy {
 namespace {
@@ -22,6 +25,16 @@ constexpr double kBytesPerSubdividedTriangle = 84, kBytesPerBvhTriangle = 64;
 constexpr double kNsPerTriangleBuild = 3000;  // subdividing and the BVH, per final triangle
 constexpr double kNsPerBudStep = 600;         // PreOrder, rule choice, ΣN and Alive per bud a step
 constexpr double kNsPerCandidate = 1500;  // closest point, segment hit and crowding per candidate
+
+// --stats (MeasureIvy): a brute-force triangle test (closest point or segment crossing), a pair
+// of the overlap sweep tested by distance, and per bud the L-string (about 100 bytes printed, 5 ×
+// while re-read: its pairs and both sorted key lists) and the sweep's span (24 bytes, twice).
+// Measured natively (docs/budgets.md): 11 ns a triangle test (749 buds on 16,384 triangles), 65
+// ns a pair (671,765,349 pairs of the free literal replay at 120 steps: cache misses dominate).
+constexpr double kNsPerTriangleTest = 40;
+constexpr double kNsPerOverlapPair = 100;
+constexpr double kNsPerStatsBud = 3000;  // printing, re-reading, sorting the L-string
+constexpr double kStatsBytesPerBud = 5 * 100 + 2 * 24;
 
 double AliveBuds(const IvyModel& model) {
   double alive = 0;
@@ -95,7 +108,8 @@ std::string CheckIvyStep(const IvyModel& model, const GrowLog& log, const IvyGro
   }
   const double seconds = l.seconds_before + l.seconds_per_bud_step * (log.bud_steps + buds) +
                          l.seconds_per_candidate * (static_cast<double>(log.candidates) +
-                                                    alive * l.candidates_per_search);
+                                                    alive * l.candidates_per_search) +
+                         l.seconds_per_bud * (buds + alive);
   if (l.max_seconds >= 0 && seconds > l.max_seconds) {
     return TruncatedLine(l.seconds_limit, where,
                          "the next step over " + FormatCount(buds) + " buds would take more than " +
@@ -110,9 +124,63 @@ Estimate EstimateIvyGrown(const IvyModel& model, const GrowLog& log, const IvyGr
   Estimate e;
   e.memory_bytes = l.base_bytes + l.bytes_per_bud * buds;
   e.seconds = l.seconds_before + l.seconds_per_bud_step * log.bud_steps +
-              l.seconds_per_candidate * static_cast<double>(log.candidates);
+              l.seconds_per_candidate * static_cast<double>(log.candidates) +
+              l.seconds_per_bud * buds;
   e.what = "growing the ivy (" + FormatCount(buds) + " buds)";
   return e;
+}
+
+IvyStatsWork CountIvyStatsWork(const IvyModel& model, const IvyParams& params,
+                               double support_triangles) {
+  IvyStatsWork w;
+  w.buds = static_cast<double>(model.buds.size());
+  w.internodes = static_cast<double>(model.internodes.size());
+  w.triangle_tests = (w.buds + w.internodes) * support_triangles;
+  // The sweep of ivy_report (spans sorted by their low x; span i tests every later span whose low
+  // x is within hi_i + 2 r_tip): the same count by binary search, without a distance.
+  const double reach = 2 * params.Get(IvyParam::kRTip);
+  std::vector<double> lo;
+  std::vector<double> hi;
+  lo.reserve(model.internodes.size());
+  hi.reserve(model.internodes.size());
+  for (const Internode& in : model.internodes) {
+    const double x0 = model.buds[static_cast<std::size_t>(in.from_bud)].pos.x;
+    const double x1 = model.buds[static_cast<std::size_t>(in.to_bud)].pos.x;
+    lo.push_back(std::min(x0, x1));
+    hi.push_back(std::max(x0, x1));
+  }
+  std::vector<std::size_t> order(lo.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return lo[a] < lo[b] || (lo[a] == lo[b] && a < b);
+  });
+  std::vector<double> sorted_lo(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) sorted_lo[i] = lo[order[i]];
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const double limit = hi[order[i]] + reach;
+    const auto end = std::upper_bound(sorted_lo.begin() + static_cast<std::ptrdiff_t>(i) + 1,
+                                      sorted_lo.end(), limit);
+    w.overlap_pairs_examined +=
+        static_cast<double>(end - (sorted_lo.begin() + static_cast<std::ptrdiff_t>(i) + 1));
+  }
+  return w;
+}
+
+Estimate EstimateIvyStats(const IvyStatsWork& w) {
+  Estimate e;
+  e.memory_bytes = kStatsBytesPerBud * w.buds + 8192;
+  e.seconds = 1e-9 * (kNsPerTriangleTest * w.triangle_tests +
+                      kNsPerOverlapPair * w.overlap_pairs_examined + kNsPerStatsBud * w.buds);
+  e.what = "measuring --stats (" + FormatCount(w.buds) + " buds re-checked against " +
+           FormatCount(w.buds > 0 ? w.triangle_tests / (w.buds + w.internodes) : 0) +
+           " triangles, " + FormatCount(w.overlap_pairs_examined) + " internode pairs)";
+  return e;
+}
+
+void ReserveIvyStats(double support_triangles, IvyGrowLimits* limits) {
+  // Each bud adds itself and (but a seed) its internode to the brute-force re-checks.
+  limits->seconds_per_bud += 1e-9 * (kNsPerTriangleTest * 2 * support_triangles + kNsPerStatsBud);
+  limits->bytes_per_bud += kStatsBytesPerBud;
 }
 
 Estimate EstimateIvyExport(const IvyModel& model, IvyExport kind, double support_triangles) {

@@ -1,8 +1,9 @@
 // Memory and time budgets of the ivy study (issue 16, docs/budgets.md): the support's estimate (a
 // --subdivide refused before it runs), the limits Grow checks before every step (stopping with
 // GrowLog::truncated_by and a line naming the limit), and the estimates of the exports (.json,
-// .lsys, .svg, .glb) from the grown model's counts. Does not: measure memory or wall-clock time
-// (every figure is a count times a constant calibrated in docs/budgets.md; time is a work-unit
+// .lsys, .svg, .glb) and of the --stats measurement (ivy_report's brute-force re-checks, overlap
+// sweep and L-string re-read) from the grown model's counts. Does not: measure memory or wall-clock
+// time (every figure is a count times a constant calibrated in docs/budgets.md; time is a work-unit
 // count, so the native and WASM builds stop at the same step), grow or mesh ivy.
 #pragma once
 
@@ -19,12 +20,14 @@ namespace niwa::ivy {
 // most one new bud and internode, and every search evaluates at most n_c · (R_max + 1) candidates.
 //   memory  = base_bytes + bytes_per_bud · (buds + alive)
 //   seconds = seconds_before + seconds_per_bud_step · Σ_steps buds + seconds_per_candidate ·
-//             (candidates so far + alive · n_c · (R_max + 1))
+//             (candidates so far + alive · n_c · (R_max + 1)) + seconds_per_bud · (buds + alive)
 struct IvyGrowLimits {
   double max_bytes = -1, max_seconds = -1;
   double base_bytes = 0, bytes_per_bud = 0;
   double seconds_before = 0;  // the support's (subdivision, BVH) estimate
   double seconds_per_bud_step = 0, seconds_per_candidate = 0;
+  // Work done once per bud after the growth (the --stats measurement: ReserveIvyStats), 0 without.
+  double seconds_per_bud = 0;
   double candidates_per_search = 0;  // n_c · (R_max + 1); 0 without a support
   std::string memory_limit = "--max-memory", seconds_limit = "--max-seconds";
 };
@@ -54,6 +57,24 @@ std::string CheckIvyStep(const IvyModel& model, const GrowLog& log, const IvyGro
 // The grown model's estimate (what Grow's check used for the buds it made, without the next step).
 Estimate EstimateIvyGrown(const IvyModel& model, const GrowLog& log, const IvyGrowLimits& limits);
 
+// The --stats measurement (MeasureIvy) of a grown model on a support of `support_triangles`
+// (0: the free replay): every bud's clearance and every internode's crossing re-tested by brute
+// force against every triangle, the x-sweep for overlapping internode pairs, the L-string printed
+// and re-read. Counted exactly from the model before any of it runs.
+struct IvyStatsWork {
+  double buds = 0, internodes = 0;
+  double triangle_tests = 0;          // (buds + internodes) · triangles: an upper bound
+  double overlap_pairs_examined = 0;  // pairs the x-sweep tests by distance (exact)
+};
+IvyStatsWork CountIvyStatsWork(const IvyModel& model, const IvyParams& params,
+                               double support_triangles);
+// Its memory (the sweep's spans, the L-string and its re-read) and time (work-unit constants).
+Estimate EstimateIvyStats(const IvyStatsWork& work);
+// Keeps room for the measurement in Grow's per-step check: the part that grows with every bud
+// (its triangle tests, L-string and spans), so a growth with --stats stops where they still fit;
+// the sweep's pairs, which are not linear in the buds, are checked once grown (EstimateIvyStats).
+void ReserveIvyStats(double support_triangles, IvyGrowLimits* limits);
+
 enum class IvyExport { kJson, kLsys, kSvg, kGlb };
 // Memory and time of one export of a grown model (upper bounds); `support_triangles` is the
 // support written into the .glb (--with-support) or drawn in the .svg, else 0.
@@ -65,5 +86,7 @@ double IvyPageMeshBytesPerBud();
 
 // What the refusal and truncation lines tell the user to change.
 inline constexpr char kIvyChange[] = "lower --steps or --subdivide, or raise t1 and t2";
+inline constexpr char kIvyStatsChange[] =
+    "lower --steps or --subdivide, or raise t1 and t2, or leave out --stats";
 
 }  // namespace niwa::ivy

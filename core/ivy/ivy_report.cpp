@@ -70,7 +70,13 @@ IvyStats MeasureIvy(const IvyModel& m, const GrowLog& log, const geom::TriMesh* 
     s.p3_A += st.p3_a;
     s.p3_D += st.p3_d;
   }
-  // C4: rho over the windows [lateral born, parent apex death or S].
+  // C4 (§4 "分岐枝の伸び率は親枝より小さい": the laterals' elongation rate is below the parent's):
+  // for each lateral, the internodes its apex made by p0 and those its parent axis's apex made in
+  // the steps both apices were alive, (born, min(parent death, lateral death, S)]; the internode
+  // p1 made at the break (step born) is the break itself, not elongation. Pooled over the
+  // laterals: rho = Σ lateral / Σ parent. Laterals born after their parent apex died (the
+  // obstacle's dormancy break) are reiterations, not compared; no window with parent growth:
+  // rho undefined (rho_laterals 0). docs/ivy-model.md argues the choice.
   const int S = log.steps_run;
   std::vector<std::vector<int>> steps_of_axis(m.axes.size());
   for (const Internode& in : m.internodes)
@@ -79,21 +85,24 @@ IvyStats MeasureIvy(const IvyModel& m, const GrowLog& log, const geom::TriMesh* 
   for (const Axis& a : m.axes) {
     if (a.order == 0) continue;
     const Axis& parent = m.axes[static_cast<std::size_t>(a.parent_axis)];
-    const int end = parent.death_step >= 0 ? parent.death_step : S;
     if (parent.death_step >= 0 && a.born_step > parent.death_step) {
       ++s.reiterations;
       continue;
     }
+    int end = parent.death_step >= 0 ? parent.death_step : S;
+    if (a.death_step >= 0) end = std::min(end, a.death_step);
     int lat = 0, par = 0;
     for (int st : steps_of_axis[static_cast<std::size_t>(a.id)])
-      lat += st >= a.born_step && st <= end;
+      lat += st > a.born_step && st <= end;
     for (int st : steps_of_axis[static_cast<std::size_t>(parent.id)])
-      par += st >= a.born_step && st <= end;
+      par += st > a.born_step && st <= end;
     lateral_sum += lat;
     parent_sum += par;
-    if (parent.death_step < 0 && lat > par) ++s.lateral_longer_than_parent;
+    s.rho_laterals += par > 0;
+    if (lat > par) ++s.lateral_longer_than_parent;
   }
-  s.rho = parent_sum > 0 ? static_cast<double>(lateral_sum) / static_cast<double>(parent_sum) : 0;
+  s.rho = parent_sum > 0 ? static_cast<double>(lateral_sum) / static_cast<double>(parent_sum)
+                         : std::numeric_limits<double>::quiet_NaN();
   // C1, re-measured with the brute-force twins.
   s.tri_count = mesh ? mesh->triangle_count() : 0;
   int within = 0;
@@ -168,6 +177,7 @@ IvyStats MeasureIvy(const IvyModel& m, const GrowLog& log, const geom::TriMesh* 
     for (std::size_t i = 0; i < spans.size(); ++i) {
       const Internode& a = m.internodes[spans[i].index];
       for (std::size_t j = i + 1; j < spans.size() && spans[j].lo <= spans[i].hi + reach; ++j) {
+        ++s.overlap_pairs_examined;
         const Internode& b = m.internodes[spans[j].index];
         if (a.from_bud == b.from_bud || a.from_bud == b.to_bud || a.to_bud == b.from_bud ||
             a.to_bud == b.to_bud)
@@ -200,6 +210,7 @@ std::string IvyStatsJson(const IvyStats& s, const GrowLog& log, const IvyModel& 
   j["extinct_step"] = s.extinct_step;
   j["truncated"] = !log.truncated_by.empty();  // stopped at a budget (ivy_budget.h)
   if (!log.truncated_by.empty()) j["truncated_by"] = log.truncated_by;
+  if (!s.tree_truncated_by.empty()) j["tree_truncated_by"] = s.tree_truncated_by;
   j["tri_count"] = s.tri_count;
   j["internodes"] = s.internodes;
   j["buds"] = {{"A", s.buds_A}, {"D", s.buds_D}, {"Z", s.buds_Z}};
@@ -214,7 +225,8 @@ std::string IvyStatsJson(const IvyStats& s, const GrowLog& log, const IvyModel& 
   j["released_breaks"] = s.released_breaks;
   j["reiterations"] = s.reiterations;
   j["p3"] = {{"A", s.p3_A}, {"D", s.p3_D}};
-  j["rho"] = s.rho;
+  j["rho"] = std::isnan(s.rho) ? nlohmann::json(nullptr) : nlohmann::json(s.rho);
+  j["rho_laterals"] = s.rho_laterals;
   j["lateral_longer_than_parent"] = s.lateral_longer_than_parent;
   j["frac_nodes_within_d"] = s.frac_nodes_within_d;
   j["clearance"] = {{"min", s.clearance_min}, {"max", s.clearance_max}};

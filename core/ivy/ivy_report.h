@@ -19,9 +19,12 @@ struct IvyStats {
   int internodes = 0, buds_A = 0, buds_D = 0, buds_Z = 0;
   int axes = 0, laterals = 0, max_order = 0, main_axis_internodes = 0;
   int first_break_step = -1, released_breaks = 0, reiterations = 0, p3_A = 0, p3_D = 0;
-  double rho = 0;  // Σ lateral internodes / Σ parent internodes in the same windows (C4)
-  int lateral_longer_than_parent = 0;
-  double frac_nodes_within_d = 0;  // ε <= clearance <= d, re-measured by brute force (C1)
+  // C4: Σ lateral / Σ parent internodes made by p0 in the steps both apices were alive (after the
+  // lateral's break); NaN (JSON null) when no lateral had such a window with parent growth.
+  double rho = 0;
+  int rho_laterals = 0;  // laterals whose window held parent growth (the comparisons pooled)
+  int lateral_longer_than_parent = 0;  // laterals that made more than their parent in the window
+  double frac_nodes_within_d = 0;      // ε <= clearance <= d, re-measured by brute force (C1)
   double clearance_min = 0, clearance_max = 0;
   int internode_hits = 0;  // internodes crossing a face, re-tested by brute force (C1)
   // Internodes whose end normals differ by > 60°: convex iff (anchor_to - anchor_from)·n_from < 0.
@@ -30,10 +33,14 @@ struct IvyStats {
   double up_min = 0, up_mean = 0, rise = 0;  // C2
   double bend_max = 0;                       // degrees (P1)
   int overlap_pairs = 0;                     // non-adjacent internodes closer than 2 r_tip (P2)
+  double overlap_pairs_examined = 0;  // pairs the sweep tested (ivy_budget's CountIvyStatsWork)
   int leaves = 0, suckers = 0;
   double nutrient_total = 0, ledger_err = 0;
   bool lstring_ok = false;
   std::size_t tri_count = 0;
+  // Set by the caller: the support's own stop line (a Niwa tree grown within the budget that
+  // stopped early), printed as tree_truncated_by when not empty.
+  std::string tree_truncated_by;
 };
 
 // Measures a model grown on `mesh` (nullptr for the free scene); distances are re-measured to

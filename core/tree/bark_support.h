@@ -1,13 +1,15 @@
 // A grown tree's bark as a plain geom::TriMesh (metres, y up) with a seed point at the trunk foot:
 // what a climbing-plant study (ivy, paper 004) climbs when it grows on a Niwa tree. The CLI
 // (`niwa ivy grow --tree-preset`) and the ivy page's bindings both call this, so the two grow the
-// same support. Does not: know any climbing plant (core/tree includes no other study), add leaves
-// or flowers to the support (ivy climbs bark only), or build a BVH.
+// same support, within the same budget as `niwa tree grow` (issue 16). Does not: know any climbing
+// plant (core/tree includes no other study), add leaves or flowers to the support (ivy climbs bark
+// only), or build a BVH.
 #pragma once
 
 #include <glm/vec3.hpp>
 #include <string>
 
+#include "base/budget.h"
 #include "base/status.h"
 #include "geom/tri_mesh.h"
 #include "tree/mesh.h"
@@ -18,6 +20,19 @@ struct BarkSupport {
   geom::TriMesh mesh;     // the bark tubes (positions and normals in metres)
   glm::dvec3 trunk_seed;  // the bark point nearest to (0, 0.05, 0.001): the +z side of the foot
   std::string description;
+  // The tree's growth stopped early at a limit of the budget: its line ("--max-memory: stopped in
+  // year 31 of 100: ..."), else "".
+  std::string truncated_by;
+  // Growing the tree and building its bark (the tree, its mesh, the TriMesh and the seed's BVH at
+  // once; what stays held afterwards is `mesh` alone).
+  Estimate estimate;
+};
+
+// What the tree may use: the budget (its --max-memory / --max-seconds, shared with the climber)
+// and what its lines tell the user to lower.
+struct BarkBudget {
+  Budget budget;
+  std::string years_name = "--tree-years";
 };
 
 // The bark buffers of BuildTreeMesh as one TriMesh.
@@ -25,7 +40,12 @@ geom::TriMesh BarkTriMesh(const MeshBuffers& bark);
 
 // Grows tree preset `preset` (seed and parameters of the preset) for `years` years and returns its
 // bark. Errors name "tree" (an unknown preset, with the list) or "tree_years" (not a whole number
-// in [1, kMaxYears], or a tree with no bark); callers rename them to their flags.
-Result<BarkSupport> GrowBarkSupport(const std::string& preset, double years);
+// in [1, kMaxYears], or a tree with no bark); callers rename them to their flags. With a budget,
+// the tree grows under `niwa tree grow`'s limits (TreeGrowLimits) with its bark mesh held per
+// alive internode, so it stops (truncated_by) where the bark still fits; the grown bark's estimate
+// is then checked, and a bark beyond the budget is refused with the line naming the limit
+// (field budget.memory_limit or budget.seconds_limit) before the mesh is built.
+Result<BarkSupport> GrowBarkSupport(const std::string& preset, double years,
+                                    const BarkBudget* budget = nullptr);
 
 }  // namespace niwa

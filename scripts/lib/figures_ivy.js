@@ -71,6 +71,8 @@ function figure(name, title, cells, cols = cells.length) {
 }
 
 const fmt = (x, d = 2) => (Number.isFinite(x) ? String(Number(x.toFixed(d))) : String(x));
+// rho is null when no lateral had a window with parent growth (the main apex died first).
+const rhoText = (s) => (s.rho === null ? '—' : `${fmt(s.rho, 2)} (${s.rho_laterals})`);
 
 const FIGURES = {
   // Fig. 3: steps 10, 20, 30, 40, 50 (front views, no leaves), as the paper's "step ごとの推移".
@@ -130,10 +132,23 @@ const FIGURES = {
         rows.push({ preset, seed, s });
       }
     }
-    let md = '| preset | seed | within d | hits | convex / concave | up_min | first break | laterals at 20 → 30 | rho | bend_max | overlap pairs |\n';
+    let md = '| preset | seed | within d | hits | convex / concave | up_min | first break | laterals at 20 → 30 | rho (laterals compared) | bend_max | overlap pairs |\n';
     md += '|---|---|---|---|---|---|---|---|---|---|---|\n';
     for (const { preset, seed, s } of rows) {
-      md += `| ${preset} | ${seed} | ${fmt(s.frac_nodes_within_d, 3)} | ${s.internode_hits} | ${s.convex_crossings} / ${s.concave_crossings} | ${fmt(s.up_min, 3)} | ${s.first_break_step} | ${s.laterals_at['20']} → ${s.laterals_at['30']} | ${fmt(s.rho, 2)} | ${fmt(s.bend_max, 1)}° | ${s.overlap_pairs} |\n`;
+      md += `| ${preset} | ${seed} | ${fmt(s.frac_nodes_within_d, 3)} | ${s.internode_hits} | ${s.convex_crossings} / ${s.concave_crossings} | ${fmt(s.up_min, 3)} | ${s.first_break_step} | ${s.laterals_at['20']} → ${s.laterals_at['30']} | ${rhoText(s)} | ${fmt(s.bend_max, 1)}° | ${s.overlap_pairs} |\n`;
+    }
+    // C4 over more seeds (cheap: 50 steps each): rho for both seed points of cubes4, per preset.
+    md += '\nC4 over seeds 1-20 (`rho`: the laterals\' p0 internodes over their parent\'s in the steps both apices were alive; — when the main apex died before any lateral had such a window):\n\n';
+    md += '| preset | seed point | rho defined | rho < 1 | rho min / median / max | laterals compared | reiterations |\n|---|---|---|---|---|---|---|\n';
+    for (const preset of ['paper', 'literal', 'improved']) {
+      for (const where of ['side', 'column']) {
+        const all = [];
+        for (let seed = 1; seed <= 20; ++seed) all.push(stats({ preset, seed, seedPoints: [where] }));
+        const rhos = all.filter((s) => s.rho !== null).map((s) => s.rho).sort((a, b) => a - b);
+        const sum = (k) => all.reduce((t, s) => t + s[k], 0);
+        const mid = rhos.length ? rhos[Math.floor((rhos.length - 1) / 2)] : null;
+        md += `| ${preset} | ${where} | ${rhos.length} / 20 | ${rhos.filter((r) => r < 1).length} / ${rhos.length} | ${rhos.length ? `${fmt(rhos[0], 2)} / ${fmt(mid, 2)} / ${fmt(rhos[rhos.length - 1], 2)}` : '—'} | ${sum('rho_laterals')} | ${sum('reiterations')} |\n`;
+      }
     }
     const file = path.join(outDir, 'claims.md');
     fs.writeFileSync(file, md);

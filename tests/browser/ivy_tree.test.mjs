@@ -4,7 +4,8 @@
 // `--tree-preset NAME --tree-years N`; picking another tree regrows and its link regrows the same
 // ivy in a fresh page; a bad tree age is one line beside its field and the page recovers; a
 // 1 M-triangle glTF dropped on the page shows its read, BVH and step progress and Cancel ends it
-// at once, back to the tree; Embed gives the <niwa-ivy> and iframe snippets of the hash.
+// at once, back to the tree; Embed gives the <niwa-ivy> and iframe snippets of the hash; a 100-year
+// tree stops at the page budget with the tree's line as a notice (issue 16).
 // Screenshots: build/artifacts/ivy-tree-*.png.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -148,6 +149,21 @@ await runBrowserTest(async (server, browser) => {
   check('Embed gives <niwa-ivy state=HASH>', snippet.element.includes('niwa-ivy.js') && snippet.element.includes(`<niwa-ivy state="${escaped}"`), snippet.element);
   check('Embed gives the iframe form', snippet.iframe.includes(`embed.html?study=ivy#${escaped}`), snippet.iframe);
   await page.keyboard.press('Escape');
+
+  // 6. Issue 16: a 100-year tree grows within the page budget (the tree page's limits): it stops in
+  // a year with the tree's line as a notice, and the ivy grows on the bark that fits.
+  const century = await context.newPage();
+  watchPage(century, problems);
+  const t100 = Date.now();
+  await century.goto(`${server.url}ivy.html#preset=metric&seed=1&steps=5&scene=tree&tree=sakura&tree_years=100`, { waitUntil: 'load' });
+  data = await waitIvy(century, 0);
+  const bigStats = data.stats ? JSON.parse(data.stats) : {};
+  const bigNotice = await century.textContent('#notice');
+  check('a 100-year tree stops at the page budget with the line', data.status === 'ready' &&
+    /^page memory budget: stopped in year \d+ of 100: .*lower tree_years/.test(bigStats.tree_truncated_by || '') &&
+    bigNotice.includes(bigStats.tree_truncated_by),
+    `${data.status} in ${((Date.now() - t100) / 1000).toFixed(1)} s: ${bigStats.tree_truncated_by} (${bigStats.tri_count} bark triangles); notice '${bigNotice.slice(0, 200)}'`);
+  await century.close();
 
   check('no console errors or page errors', problems.length === 0, problems.join(' | '));
 });

@@ -107,6 +107,62 @@ for (const cmd of [native, wasm]) {
     `ivy cubes4 50 steps (${buildName(cmd)}): within the budget, unchanged (${sa.internodes} internodes)`);
 }
 
+// Ivy on a Niwa tree (issue 16): the tree grows within the tree's budget (the limits and lines of
+// `niwa tree grow`, --max-memory / --max-seconds shared with the ivy's own), so 100 years stops
+// in a year with the line (stderr and --stats tree_truncated_by) instead of growing unbounded.
+function ivyTreeTruncated(name, args, limit) {
+  const stats = [];
+  for (const cmd of [native, wasm]) {
+    const r = timed(cmd, [...args, '--stats']);
+    const s = r.status === 0 ? JSON.parse(r.stdout) : {};
+    const warn = lines(r.stderr);
+    check(r.status === 0 && typeof s.tree_truncated_by === 'string' &&
+      s.tree_truncated_by.startsWith(`${limit}: stopped in year `) && s.tree_truncated_by.includes('lower --tree-years'),
+      `${name} (${buildName(cmd)}): exit ${r.status}, tree_truncated_by "${s.tree_truncated_by}" (${s.tri_count} bark triangles, ${s.internodes} ivy internodes)`);
+    check(warn.length >= 1 && warn[0] === `niwa: truncated: ${s.tree_truncated_by}`, `${name} (${buildName(cmd)}): the tree's line on stderr`);
+    check(r.seconds < 60, `${name} (${buildName(cmd)}): finished in ${r.seconds.toFixed(1)} s`);
+    stats.push(JSON.stringify(withoutMs(s)));
+  }
+  check(stats[0] === stats[1], `${name}: native == WASM --stats`);
+}
+ivyTreeTruncated('ivy on sakura 100 years', ['ivy', 'grow', '--tree-preset', 'sakura', '--tree-years', '100', '--steps', '5'], '--max-memory');
+// Under a time budget the tree stops within its own check and its bark (3 µs a triangle) is then
+// refused before it is built, with the line naming both.
+refused('ivy on sakura 100 years in 5 s', ['ivy', 'grow', '--tree-preset', 'sakura', '--tree-years', '100', '--steps', '5', '--max-seconds', '5'],
+  '--max-seconds', 'tree.glb', /^niwa: error: --max-seconds: growing the sakura tree \(\d+ of 100 years\) and building its bark \([\d,]+ internodes, [\d,]+ triangles\) takes about [\d.]+ s, more than the 5 s allowed; lower --tree-years \(or raise --max-seconds\)$/);
+ivyTreeTruncated('ivy on the page\'s tree scene, 100 years', ['ivy', 'grow', '--url', 'preset=metric&scene=tree&tree=sakura&tree_years=100&steps=5'], '--max-memory');
+// A small tree fits: the same ivy with and without roomy flags.
+for (const cmd of [native, wasm]) {
+  const args = ['ivy', 'grow', '--tree-preset', 'sakura', '--tree-years', '8', '--steps', '20', '--stats'];
+  const a = spawn(cmd, args);
+  const b = spawn(cmd, [...args, '--max-memory', '4G', '--max-seconds', '600']);
+  const sa = JSON.parse(a.stdout), sb = JSON.parse(b.stdout);
+  check(a.status === 0 && b.status === 0 && sa.tree_truncated_by === undefined && sa.truncated === false &&
+    JSON.stringify(withoutMs(sa)) === JSON.stringify(withoutMs(sb)),
+    `ivy on sakura 8 years (${buildName(cmd)}): within the budget, unchanged (${sa.internodes} internodes)`);
+}
+
+// Ivy --stats (issue 16): its brute-force re-checks against every support triangle are in the
+// budget, so a big support with --stats stops the growth where the measurement still fits.
+// (262,144 triangles: 81,841 buds by step 114 without --stats, whose brute-force re-checks would
+// take minutes; with --stats the growth stops at the step where they still fit.)
+{
+  const seen = [];
+  for (const cmd of [native, wasm]) {
+    const args = ['ivy', 'grow', '--scene', 'wall', '--subdivide', '8', '--preset', 'literal', '--steps', '200', '--max-seconds', '10'];
+    const r = timed(cmd, [...args, '--stats']);
+    const s = r.status === 0 ? JSON.parse(r.stdout) : {};
+    const plain = timed(cmd, args);
+    const plainStep = Number((/stopped at step (\d+) of 200/.exec(plain.stderr) || [])[1]);
+    check(r.status === 0 && s.truncated === true && s.truncated_by.startsWith('--max-seconds: stopped at step ') &&
+      plain.status === 0 && s.steps_run < plainStep && s.internode_hits === 0,
+      `ivy wall --subdivide 8 --stats at 10 s (${buildName(cmd)}): stopped at step ${s.steps_run} (${s.internodes} internodes), without --stats at step ${plainStep}`);
+    check(r.seconds < 40, `ivy wall --subdivide 8 --stats at 10 s (${buildName(cmd)}): finished in ${r.seconds.toFixed(1)} s (without --stats ${plain.seconds.toFixed(1)} s)`);
+    seen.push(JSON.stringify(withoutMs(s)));
+  }
+  check(seen[0] === seen[1], 'ivy wall --subdivide 8 --stats at 10 s: native == WASM --stats');
+}
+
 // Terrain: growth stops at a contour with truncated_by; a --res whose heightfield or .glb would
 // cross the budget is refused before it is built.
 function terrainTruncated(name, args, limit) {

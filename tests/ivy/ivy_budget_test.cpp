@@ -1,10 +1,14 @@
 // The ivy budgets (core/ivy/ivy_budget): each estimate against the heap this binary's metered
 // operator new actually saw (within the stated factor), the support refused before subdividing,
-// and a budget that stops the growth at a step with the line, the same buds as an unlimited run.
+// a budget that stops the growth at a step with the line, the same buds as an unlimited run, and
+// the --stats measurement's estimate against its heap peak, its CPU time and its own work counts.
 #define NIWA_ALLOC_METER_DEFINE
 #include "ivy/ivy_budget.h"
 
 #include <gtest/gtest.h>
+
+#include <cstdio>
+#include <ctime>
 
 #include "geom/bvh.h"
 #include "geom/primitives.h"
@@ -170,6 +174,87 @@ TEST(IvyBudget, TimeBudgetStopsAtAStepWithTheLine) {
   GrowOn("wall", 120, &limits, &again);
   EXPECT_EQ(again.log.steps_run, cut.log.steps_run);
   EXPECT_EQ(again.model.buds.size(), cut.model.buds.size());
+}
+
+// The --stats measurement (MeasureIvy): its estimate holds the heap it used and the CPU time it
+// took, and the sweep's pair count is exactly the one the measurement worked through.
+TEST(IvyBudget, StatsEstimateHoldsTheMeasuredPeakAndTime) {
+  struct Case {
+    const char* scene;
+    int levels, steps;
+  };
+  // The free replay (the sweep's pairs dominate) and a subdivided wall (16,384 triangles: the
+  // brute-force re-checks dominate).
+  for (const Case& c : {Case{"free", 0, 90}, Case{"wall", 6, 60}}) {
+    IvyRun r;
+    GrowOn(c.scene, c.steps, nullptr, &r);
+    if (c.levels > 0) {
+      r.scene.mesh = geom::Subdivide(r.scene.mesh, c.levels);
+      r.bvh = geom::Bvh::Build(r.scene.mesh);
+      Support support{&r.scene.mesh, &r.bvh, Accel::kBvh};
+      Result<IvyModel> m =
+          Grow(support, {r.scene.seeds[0].pos}, *IvyPreset("literal"), c.steps, 1, &r.log, nullptr);
+      ASSERT_TRUE(m.ok());
+      r.model = std::move(m).value();
+    }
+    const IvyParams p = *IvyPreset("literal");
+    const double tris = r.scene.free ? 0 : static_cast<double>(r.scene.mesh.triangle_count());
+    const IvyStatsWork work = CountIvyStatsWork(r.model, p, tris);
+    const long long base = AllocMeter::Reset();
+    const std::clock_t t0 = std::clock();
+    const IvyStats stats =
+        MeasureIvy(r.model, r.log, r.scene.free ? nullptr : &r.scene.mesh, p, nullptr);
+    const double cpu = static_cast<double>(std::clock() - t0) / CLOCKS_PER_SEC;
+    const long long peak = AllocMeter::PeakAbove(base);
+    ASSERT_GT(r.model.buds.size(), 500u) << c.scene << ": too small to measure";
+    EXPECT_EQ(work.overlap_pairs_examined, stats.overlap_pairs_examined) << c.scene;
+    EXPECT_EQ(work.buds, static_cast<double>(r.model.buds.size()));
+    EXPECT_EQ(work.triangle_tests,
+              (work.buds + static_cast<double>(r.model.internodes.size())) * tris);
+    const Estimate e = EstimateIvyStats(work);
+    ExpectBounds(e.memory_bytes, peak, c.scene);
+    // Time: the estimate must cover the CPU time the native build took (the work-unit constants
+    // are calibrated natively, as every budget's; docs/budgets.md). Under node the clock is the
+    // wall clock of a slower build: printed, not checked.
+#ifndef __EMSCRIPTEN__
+    EXPECT_GE(e.seconds, cpu) << c.scene << ": " << work.buds << " buds, "
+                              << work.overlap_pairs_examined << " pairs";
+#endif
+    std::printf(
+        "[ stats    ] %s: %.0f buds, %.0f pairs, %.0f triangle tests: %.3f s CPU, "
+        "estimate %.3f s; heap %lld, estimate %.0f bytes\n",
+        c.scene, work.buds, work.overlap_pairs_examined, work.triangle_tests, cpu, e.seconds, peak,
+        e.memory_bytes);
+  }
+}
+
+// With the room for --stats kept (ReserveIvyStats), a time budget stops the growth where the
+// growth and its measurement fit together; without it the growth goes further.
+TEST(IvyBudget, ReservedStatsStopTheGrowthWhereTheMeasurementFits) {
+  IvyScene scene = *MakeIvyScene("wall");
+  scene.mesh = geom::Subdivide(scene.mesh, 6);
+  const geom::Bvh bvh = geom::Bvh::Build(scene.mesh);
+  const Support support{&scene.mesh, &bvh, Accel::kBvh};
+  const double tris = static_cast<double>(scene.mesh.triangle_count());
+  const IvyParams p = *IvyPreset("literal");
+  IvyGrowLimits plain = Unlimited(true);
+  plain.max_seconds = 0.3;
+  IvyGrowLimits reserved = plain;
+  ReserveIvyStats(tris, &reserved);
+  GrowLog plain_log, reserved_log;
+  Result<IvyModel> a = Grow(support, {scene.seeds[0].pos}, p, 200, 1, &plain_log, &plain);
+  Result<IvyModel> b = Grow(support, {scene.seeds[0].pos}, p, 200, 1, &reserved_log, &reserved);
+  ASSERT_TRUE(a.ok() && b.ok());
+  EXPECT_EQ(reserved_log.truncated_by.rfind("--max-seconds: stopped at step ", 0), 0u)
+      << reserved_log.truncated_by;
+  EXPECT_LT(reserved_log.steps_run, plain_log.steps_run);
+  const Estimate total =
+      EstimateIvyGrown(*b, reserved_log, plain) + EstimateIvyStats(CountIvyStatsWork(*b, p, tris));
+  EXPECT_LE(total.seconds, plain.max_seconds);
+  // The plain growth's measurement would not have fitted.
+  const Estimate over =
+      EstimateIvyGrown(*a, plain_log, plain) + EstimateIvyStats(CountIvyStatsWork(*a, p, tris));
+  EXPECT_GT(over.seconds, plain.max_seconds);
 }
 
 }  // namespace

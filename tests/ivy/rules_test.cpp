@@ -41,7 +41,11 @@ TEST(IvyRules, FreeReplayMatchesTheSpecTable) {
   for (std::size_t s = 0; s < r.log.steps.size(); ++s)
     for (int k = 0; k < r.log.steps[s].p1; ++k) p1_steps.push_back(static_cast<int>(s) + 1);
   EXPECT_EQ(p1_steps, (std::vector<int>{25, 28, 31, 34, 37, 39, 42, 45, 48}));
-  EXPECT_NEAR(r.stats.rho, 0.711, 0.0005);
+  // C4: the nine laterals' p0 internodes against the main axis's in the same steps after each
+  // break (5/9, 4/8, 4/7, 3/6, 3/5, 2/4, 1/3, 1/2, 0/1 = 23/45).
+  EXPECT_NEAR(r.stats.rho, 23.0 / 45.0, 1e-12);
+  EXPECT_EQ(r.stats.rho_laterals, 9);
+  EXPECT_EQ(r.stats.lateral_longer_than_parent, 0);
   EXPECT_LT(r.stats.ledger_err, 1e-12);
 }
 
@@ -50,8 +54,10 @@ TEST(IvyRules, LiteralPresetLateralsOutgrowTheirParents) {
   EXPECT_EQ(r.stats.internodes, 279);
   EXPECT_EQ(r.stats.laterals, 30);
   EXPECT_EQ(r.stats.first_break_step, 24);
-  EXPECT_NEAR(r.stats.rho, 1.212, 0.0005);
+  // Without the cost and the per-order damping the laterals outgrow their parents (216 / 175).
+  EXPECT_NEAR(r.stats.rho, 216.0 / 175.0, 1e-12);
   EXPECT_GT(r.stats.rho, 1.0);
+  EXPECT_GT(r.stats.lateral_longer_than_parent, 0);
 }
 
 TEST(IvyRules, P0AndP1ArithmeticByHand) {

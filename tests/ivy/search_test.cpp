@@ -42,7 +42,7 @@ SceneRun GrowScene(const std::string& name, const std::string& seed_name, const 
 }
 
 TEST(IvyCubes4, PaperClaimsHoldForSeeds1To5) {
-  int lateral_window_ok = 0, runs = 0;
+  int lateral_window_ok = 0, runs = 0, compared = 0;
   for (const char* where : {"side", "column"}) {
     for (uint64_t seed = 1; seed <= 5; ++seed) {
       SceneRun r = GrowScene("cubes4", where, IvyParams(), 50, seed);
@@ -72,13 +72,16 @@ TEST(IvyCubes4, PaperClaimsHoldForSeeds1To5) {
             ok = ok && r.model.axes[static_cast<std::size_t>(a.parent_axis)].born_step <= 20;
       }
       lateral_window_ok += ok;
-      // C4: the laterals elongate less than the parent.
-      if (std::string(where) == "column") {
-        EXPECT_LT(s.rho, 1.0) << seed;
+      // C4: the laterals elongate less than the parent while both apices grow (rho is NaN when
+      // the main apex died before any lateral's window held its growth: nothing to compare).
+      if (s.rho_laterals > 0) {
+        EXPECT_LT(s.rho, 1.0) << where << " " << seed;
+        ++compared;
       }
     }
   }
   EXPECT_GE(lateral_window_ok, runs * 9 / 10);
+  EXPECT_GE(compared, runs * 3 / 4);  // most runs have laterals to compare
 }
 
 TEST(IvyCubes4, ConvexAndConcaveEdgesAreCrossedNearTheObject) {

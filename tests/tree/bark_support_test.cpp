@@ -1,5 +1,7 @@
-// core/tree/bark_support: a grown tree's bark as one TriMesh with the trunk-foot seed on it, and
-// its errors naming tree or tree_years.
+// core/tree/bark_support: a grown tree's bark as one TriMesh with the trunk-foot seed on it, its
+// errors naming tree or tree_years, and its budget (the tree's limits, the bark's estimate
+// against the heap this binary's metered operator new saw).
+#define NIWA_ALLOC_METER_DEFINE
 #include "tree/bark_support.h"
 
 #include <gtest/gtest.h>
@@ -7,6 +9,7 @@
 #include <cmath>
 
 #include "geom/mesh_metrics.h"
+#include "support/alloc_meter.h"
 
 namespace niwa {
 namespace {
@@ -38,6 +41,57 @@ TEST(BarkSupport, BadInputNamesTreeOrTreeYears) {
     ASSERT_FALSE(r.ok()) << years;
     EXPECT_EQ(r.status().field(), "tree_years") << r.status().Line();
   }
+}
+
+// A budget that holds the tree grows the same bark as none; the estimate holds the heap the
+// growth and the bark took (at most 6 × it).
+TEST(BarkSupport, ARoomyBudgetGrowsTheSameBarkAndItsEstimateHoldsThePeak) {
+  BarkBudget roomy;
+  const long long base = test::AllocMeter::Reset();
+  Result<BarkSupport> bark = GrowBarkSupport("sakura", 12, &roomy);
+  const long long peak = test::AllocMeter::PeakAbove(base);
+  ASSERT_TRUE(bark.ok()) << bark.status().Line();
+  EXPECT_EQ(bark->truncated_by, "");
+  Result<BarkSupport> unbudgeted = GrowBarkSupport("sakura", 12);
+  ASSERT_TRUE(unbudgeted.ok());
+  EXPECT_EQ(bark->mesh.positions, unbudgeted->mesh.positions);
+  const double above_process = bark->estimate.memory_bytes - 64.0 * 1024 * 1024;
+  EXPECT_GE(above_process, static_cast<double>(peak));
+  EXPECT_LE(above_process, 6.0 * static_cast<double>(peak));
+  EXPECT_NE(bark->estimate.what.find("growing the sakura tree (12 of 12 years) and building its "
+                                     "bark ("),
+            std::string::npos)
+      << bark->estimate.what;
+}
+
+// Beyond the budget: the tree stops in a year with the tree's own line naming --tree-years, and
+// what it grew fits; at the same budget the bark is the smaller tree's.
+TEST(BarkSupport, ATightBudgetStopsTheTreeWithTheLine) {
+  BarkBudget tight;
+  tight.budget.memory_bytes = uint64_t{128} << 20;
+  Result<BarkSupport> bark = GrowBarkSupport("sakura", 40, &tight);
+  ASSERT_TRUE(bark.ok()) << bark.status().Line();
+  EXPECT_EQ(bark->truncated_by.rfind("--max-memory: stopped in year ", 0), 0u)
+      << bark->truncated_by;
+  EXPECT_NE(bark->truncated_by.find(" of 40: "), std::string::npos) << bark->truncated_by;
+  EXPECT_NE(bark->truncated_by.find("lower --tree-years"), std::string::npos) << bark->truncated_by;
+  EXPECT_LE(bark->estimate.memory_bytes, static_cast<double>(tight.budget.memory_bytes));
+  EXPECT_GT(bark->mesh.triangle_count(), 0u);
+  // A time budget names its own limit and what to lower (the page's names too).
+  BarkBudget quick;
+  quick.budget.seconds = 1;
+  quick.budget.seconds_limit = "page time budget";
+  quick.years_name = "tree_years";
+  // The tree stops within its own time check; its bark (3 µs a triangle) then crosses the second,
+  // and is refused before it is built.
+  Result<BarkSupport> timed = GrowBarkSupport("sakura", 100, &quick);
+  ASSERT_FALSE(timed.ok());
+  EXPECT_EQ(timed.status().field(), "page time budget") << timed.status().Line();
+  EXPECT_NE(timed.status().Line().find(" of 100 years) and building its bark ("), std::string::npos)
+      << timed.status().Line();
+  EXPECT_NE(timed.status().Line().find("more than the 1 s allowed; lower tree_years"),
+            std::string::npos)
+      << timed.status().Line();
 }
 
 }  // namespace

@@ -205,6 +205,8 @@ class IvyLab {
     if (!s.ok()) return Status::Error("scene", s.status().message()).Line();
     const auto t0 = Clock::now();
     scene_ = std::move(s).value();
+    tree_seconds_ = 0;
+    tree_truncated_by_.clear();
     mesh_name_.clear();
     attach_ = geom::TriMesh{};
     obstacles_ = 0;
@@ -217,8 +219,13 @@ class IvyLab {
   // `niwa ivy grow --tree-preset` does: "" or one error line naming tree or tree_years.
   std::string loadTree(const std::string& preset, double years) {
     Progress("tree", 0, years);
-    Result<BarkSupport> bark = GrowBarkSupport(preset, years);
+    BarkBudget budget;  // the tree page's limits: the tree stops where its bark fits, or is refused
+    budget.budget = PageBudget();
+    budget.years_name = "tree_years";
+    Result<BarkSupport> bark = GrowBarkSupport(preset, years, &budget);
     if (!bark.ok()) return bark.status().Line();
+    tree_seconds_ = bark->estimate.seconds;
+    tree_truncated_by_ = bark->truncated_by;
     Progress("bvh", 0, static_cast<double>(bark->mesh.triangle_count()));
     const auto t0 = Clock::now();  // ms_bvh: the support's BVH, not the tree's growth
     scene_ = ivy::IvyScene{};
@@ -250,6 +257,8 @@ class IvyLab {
     Progress("bvh", 0, static_cast<double>(mesh->triangle_count()));
     const auto t0 = Clock::now();
     scene_ = ivy::IvyScene{};
+    tree_seconds_ = 0;
+    tree_truncated_by_.clear();
     scene_.name = name;
     scene_.mesh = std::move(mesh).value();
     mesh_name_ = name;
@@ -324,14 +333,17 @@ class IvyLab {
     ivy::IvySupportSize size;
     size.triangles = scene_.free ? 0 : static_cast<double>(scene_.mesh.triangle_count());
     size.obstacles = obstacles_ > 0;
-    limits_ =
-        ivy::IvyLimits(state.params, PageBudget(), ivy::EstimateIvySupport(size), !scene_.free);
+    Estimate support_estimate = ivy::EstimateIvySupport(size);
+    support_estimate.seconds += tree_seconds_;  // a tree support's growth and bark
+    limits_ = ivy::IvyLimits(state.params, PageBudget(), support_estimate, !scene_.free);
     limits_.bytes_per_bud += ivy::IvyPageMeshBytesPerBud();
+    // The page measures every grow (statsJson): keep room for its brute-force re-checks.
+    ivy::ReserveIvyStats(size.triangles, &limits_);
     const ivy::StepObserver on_step = [this](int step, int steps) {
       Progress("grow", step, steps);
     };
-    Result<ivy::IvyModel> model = ivy::Grow(support, seeds, state.params, state.steps, state.seed,
-                                            &log_, &limits_, on_step);
+    Result<ivy::IvyModel> model =
+        ivy::Grow(support, seeds, state.params, state.steps, state.seed, &log_, &limits_, on_step);
     if (!model.ok()) return model.status().Line();
     state_ = state;
     model_ = std::move(model).value();
@@ -364,6 +376,7 @@ class IvyLab {
     if (!grown_) return "{}";
     ivy::IvyStats stats = ivy::MeasureIvy(model_, log_, scene_.free ? nullptr : &scene_.mesh,
                                           state_.params, obstacles_ > 0 ? &attach_ : nullptr);
+    stats.tree_truncated_by = tree_truncated_by_;
     return ivy::IvyStatsJson(stats, log_, model_, timings_);
   }
 
@@ -480,6 +493,8 @@ class IvyLab {
   ivy::IvyModel model_;
   ivy::GrowLog log_;
   ivy::IvyGrowLimits limits_;
+  double tree_seconds_ = 0;        // a tree support: its growth and bark's estimated seconds
+  std::string tree_truncated_by_;  // a tree support that stopped at the page budget: its line
   ivy::IvyTimings timings_;
   ivy::IvyMeshes meshes_;
   FlatMesh stems_, leaves_, suckers_;

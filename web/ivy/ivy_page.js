@@ -322,7 +322,8 @@ worker.on('ivy', (msg) => {
   if (msg.id !== latestId) return;
   const s = msg.stats;
   notices.set('error', '');
-  notices.set('budget', s.truncated_by || '');
+  // The tree support's own stop (scene=tree grown within the page budget), then the ivy's.
+  notices.set('budget', [s.tree_truncated_by, s.truncated_by].filter(Boolean).join(' '));
   showFieldError('');
   showWork(false);
   ui.progress.textContent = '';
