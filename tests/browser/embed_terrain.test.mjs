@@ -45,8 +45,8 @@ await runBrowserTest(async (server, browser) => {
   await page.goto(`${server.url}embed-terrain.html`, { waitUntil: 'load' });
 
   const valleys = await waitElement(page, '#valleys');
-  check('<niwa-terrain builtin="valleys" method="improved" seed="3"> grows', valleys.status === 'ready' && Number(valleys.levels) > 5, `${valleys.status} ${valleys.levels} levels ${valleys.error || ''}`);
-  same('valleys element == niwa terrain grow --builtin valleys --method improved --seed 3', valleys, ['--builtin', 'valleys', '--method', 'improved', '--seed', '3']);
+  check('<niwa-terrain builtin="valleys" method="improved" seed="4"> grows', valleys.status === 'ready' && Number(valleys.levels) > 5, `${valleys.status} ${valleys.levels} levels ${valleys.error || ''}`);
+  same('valleys element == niwa terrain grow --builtin valleys --method improved --seed 4', valleys, ['--builtin', 'valleys', '--method', 'improved', '--seed', '4']);
   const drawn = await waitElement(page, '#drawn');
   check('<niwa-terrain state="..contour=.."> grows the drawn contour', drawn.status === 'ready' && drawn.hash.includes('contour=0,0;400,0;'), `${drawn.status} ${drawn.hash} ${drawn.error || ''}`);
   same('drawn element == niwa terrain grow --url', drawn, ['--url', 'preset=simple&contour=0,0;400,0;400,150;250,150;250,300;0,300']);
@@ -72,7 +72,7 @@ await runBrowserTest(async (server, browser) => {
   await page.evaluate(() => document.querySelector('#valleys').setAttribute('builtin', 'dumbbell'));
   const good = await waitElement(page, '#valleys', bad.stats);
   check('builtin="dumbbell" recovers', good.status === 'ready' && Number(good.peaks) >= 2, `${good.status} ${good.peaks} peaks`);
-  same('dumbbell element == CLI', good, ['--builtin', 'dumbbell', '--method', 'improved', '--seed', '3']);
+  same('dumbbell element == CLI', good, ['--builtin', 'dumbbell', '--method', 'improved', '--seed', '4']);
 
   // The page's Embed dialog: both snippets carry the page's hash.
   const studio = await context.newPage();
