@@ -1,10 +1,13 @@
 // Formats scripts/bench results: the native/WASM markdown table on stdout, and docs/BENCHMARKS.md.
 //
 // node bench/report.mjs --native N1.jsonl[,N2.jsonl...] --wasm W1.jsonl[,...] [--peer P1.jsonl[,...]]
-//                       [--gbench G.txt] [--grove GR.jsonl] [--meta META.json] [--record docs/BENCHMARKS.md]
-// N/W/P hold one JSON object per line as printed by niwa_bench_runner / ez_tree_peer.mjs, one file per
-// run (process): each workload keeps its fastest run, and the table lists every run's time. GR the lines
-// of bench/grove.mjs (one per mode); META holds {date, machine, cpu, cores, tools, load, command, seconds}.
+//                       [--gbench G.txt] [--grove GR.jsonl] [--terrain-page T1.jsonl[,...]]
+//                       [--meta META.json] [--record docs/BENCHMARKS.md]
+// N/W/P hold one JSON object per line as printed by niwa_bench_runner / ez_tree_peer.mjs /
+// fastnoise_peer.mjs, one file per run (process): each workload keeps its fastest run, and the table
+// lists every run's time. GR the lines of bench/grove.mjs (one per mode); T the lines of
+// bench/terrain_page.mjs (the page's 512² regrow); META holds {date, machine, cpu, cores, tools, load,
+// command, seconds}.
 import {readFileSync, writeFileSync, existsSync} from 'node:fs';
 
 const args = {};
@@ -28,7 +31,12 @@ const fastestRuns = (files) => {
 };
 const native = fastestRuns(args.native);
 const wasm = fastestRuns(args.wasm);
-const peer = [...fastestRuns(args.peer).values()];
+const allPeers = [...fastestRuns(args.peer).values()];
+// Terrain peers (fastnoise-lite heightfields) go beside Niwa's heightfield rows; the rest (ez-tree)
+// in the peer table.
+const terrainPeer = allPeers.filter((p) => p.workload.startsWith('fastnoise-lite'));
+const peer = allPeers.filter((p) => !p.workload.startsWith('fastnoise-lite'));
+const terrainPage = [...fastestRuns(args['terrain-page']).values()];
 const gbench = args.gbench && existsSync(args.gbench) ? readFileSync(args.gbench, 'utf8').trim() : '';
 const meta = args.meta ? JSON.parse(readFileSync(args.meta, 'utf8')) : {};
 
@@ -110,9 +118,10 @@ else goal('100,000-internode tree < 1 s native', 'no grow workload reaches 100,0
 const g20 = ms(native, 'light/grid-20000'), r20 = ms(native, 'light/reference-20000');
 if (g20 && r20) goal('light at 20,000 spheres: grid ≥ 50× faster than the reference (native)', `${(r20 / g20).toFixed(0)}×`, r20 / g20 >= 50);
 const gm = ms(wasm, 'grow+mesh/sakura-thesis-15y');
-if (gm && peer.length) {
-  goal(`sakura 15 years grown + meshed in WASM faster than ${peer[0].workload}`,
-       `${fmt(gm)} ms vs ${fmt(peer[0].ms)} ms: ${(gm / peer[0].ms).toFixed(2)}× its time`, gm < peer[0].ms);
+const ezTree = peer.find((p) => p.workload.startsWith('ez-tree'));
+if (gm && ezTree) {
+  goal(`sakura 15 years grown + meshed in WASM faster than ${ezTree.workload}`,
+       `${fmt(gm)} ms vs ${fmt(ezTree.ms)} ms: ${(gm / ezTree.ms).toFixed(2)}× its time`, gm < ezTree.ms);
 }
 // Cold start (issue 17 item 7; bench/cold_start.mjs): a fresh native process, warm WASM, and the
 // first grow of a fresh WASM instance against the fresh native process.
@@ -145,6 +154,31 @@ for (const kind of ['closest', 'segment']) {
   if (bvh !== undefined && linear !== undefined)
     goal(`geom/${kind}: BVH ≥ 100× brute force at 262 k triangles (native)`, `${(linear / bvh).toFixed(0)}×`, linear >= 100 * bvh);
 }
+// Terrain (paper 002, issue 19 item 7): the 500-point seed grows in ≤ 30 ms natively, ≤ 2.3× per
+// doubling of seed points, the heightfield ≤ 60 ns per cell (1024² in ≤ 65 ms), WASM ≤ 2× native,
+// and the page's regrow of a drawn seed with a 512² surface ≤ 100 ms (bench/terrain_page.mjs).
+{
+  const g500 = ms(native, 'terrain/grow-improved/seed-500');
+  if (g500 !== undefined) goal('terrain/grow-improved/seed-500: ≤ 30 ms (native)', `${fmt(g500)} ms`, g500 <= 30);
+  const seedRows = [125, 250, 500, 1000].map((n) => [n, ms(native, `terrain/grow-improved/seed-${n}`)]).filter(([, t]) => t !== undefined);
+  for (let i = 1; i < seedRows.length; ++i) {
+    const [n0, t0] = seedRows[i - 1], [n1, t1] = seedRows[i];
+    const perDoubling = Math.pow(t1 / t0, 1 / Math.log2(n1 / n0));
+    goal(`terrain/grow-improved seed ${n0} → ${n1} points: ≤ 2.3× per doubling (native)`, `${perDoubling.toFixed(2)}×`, perDoubling <= 2.3);
+  }
+  const hf = native.get('terrain/heightfield/lobes7-1024');
+  if (hf) {
+    goal('terrain/heightfield/lobes7-1024: ≤ 60 ns per cell (native)', `${perUnit(hf).toFixed(1)} ns`, perUnit(hf) <= 60);
+    goal('terrain/heightfield/lobes7-1024: 1024² in ≤ 65 ms (native)', `${fmt(hf.ms)} ms`, hf.ms <= 65);
+  }
+  for (const name of names.filter((n) => n.startsWith('terrain/') && !n.includes('-brute') && !n.includes('-cold'))) {
+    const n = ms(native, name), w = ms(wasm, name);
+    if (n !== undefined && w !== undefined) goal(`${name}: WASM ≤ 2× native`, `${(w / n).toFixed(2)}×`, w <= 2 * n);
+  }
+  for (const row of terrainPage) {
+    goal(`${row.workload}: the worker's regrow ≤ 100 ms (page, WASM)`, `${fmt(row.ms)} ms (${row.runs.map(fmt).join(' / ')})`, row.ms <= 100);
+  }
+}
 const goalsTable = goals.length ? `| goal | measured | |\n|---|---|---|\n${goals.join('\n')}\n` : '';
 
 // Per-sub-model split like thesis table 2.3, from the CLI's --stats (native).
@@ -160,6 +194,32 @@ if (args.split) {
 
 const splitNote = 'Each row is one cold run in a fresh CLI process (about 2,600 first-touch page faults for ' +
   'sakura, cold caches), so the totals are well above the warm repetitions of the table above; compare the shares.';
+
+// Terrain heightfield beside the fastnoise-lite peer (the same number of cells), ns per cell.
+let terrainSection = '';
+if (terrainPeer.length || terrainPage.length) {
+  const rows = [];
+  for (const res of [512, 1024]) {
+    const name = `terrain/heightfield/lobes7-${res}`;
+    const n = native.get(name), w = wasm.get(name);
+    const cells = n?.units ?? w?.units;
+    if (n || w) {
+      rows.push(`| Niwa ${name} (contour bands; ${cells ?? '?'} cells) | ${fmt(n?.ms)} / ${fmt(w?.ms)} | ` +
+                `${perUnit(n)?.toFixed(1) ?? '—'} / ${perUnit(w)?.toFixed(1) ?? '—'} |`);
+    }
+    const p = terrainPeer.find((r) => r.units === res * res);
+    if (p) rows.push(`| ${p.workload} (node; ${p.units} cells) | ${fmt(p.ms)} (${runList(p)}) | ${perUnit(p).toFixed(1)} |`);
+  }
+  for (const row of terrainPage) {
+    const screen = row.screen_ms ? `; to the frame on screen ${fmt(row.screen_ms)} ms` : '';
+    const split = row.parts ? `; ${Object.entries(row.parts).map(([k, v]) => `${k} ${fmt(v)}`).join(', ')}` : '';
+    rows.push(`| ${row.workload} (${row.note ?? 'page worker'}${split}${screen}) | ${fmt(row.ms)} (${runList(row)}) | ${row.units ? ((row.ms * 1e6) / row.units).toFixed(1) : '—'} |`);
+  }
+  terrainSection = '| heightfield | ms (native / WASM, or node) | ns per cell |\n|---|--:|--:|\n' + rows.join('\n') + '\n';
+  terrainSection += '\n- fastnoise-lite (npm) fills a square of OpenSimplex2 fBm noise (bench/fastnoise_peer.mjs): what a user ' +
+    'picks instead when any bumpy surface will do; Niwa\'s heightfield interpolates between grown contours (every level ' +
+    'set on its contour), so the rows compare the cost per cell of a same-size surface, not the shapes.\n';
+}
 
 // Grove (thesis ch. 4): 100 instanced trees in the browser, full vs hybrid mode, from bench/grove.mjs.
 const grove = new Map(readLines(args.grove).map((r) => [r.mode, r]));
@@ -187,6 +247,7 @@ if (grove.size) {
 
 const out = `${table}\n${peerTable ? peerTable + '\n' : ''}${notes.map((n) => `- ${n}`).join('\n')}\n` +
   (goalsTable ? `\n### Speed goals\n\n${goalsTable}` : '') +
+  (terrainSection ? `\n### Terrain heightfield and its peer\n\n${terrainSection}` : '') +
   (splitTable ? `\n### Time per sub-model (like thesis table 2.3; native CLI --stats, one run)\n\n${splitNote}\n\n${splitTable}` : '');
 process.stdout.write(out + (groveSection ? `\n### Grove (100 trees, headless chromium, SwiftShader)\n\n${groveSection}` : ''));
 
@@ -232,6 +293,14 @@ Workloads:
   otherwise glibc maps every large block afresh and returns it on free, and page faults dominate the
   jobs that grow and free big vectors (on 2026-11-29, one run each: \`glb/sakura-thesis-15y\` 347 ms against
   28 ms, \`grow/maple-40y\` about 400 ms against 265 ms).
+- \`terrain/grow-improved/seed-N\`: \`terrain::Grow\` (improved method, Fig 16's constants, d = 20 m) from an
+  N-point lobes7-shaped seed; \`-cold\` is the first grow, timed once. \`terrain/heightfield/lobes7-R\`:
+  \`BuildHeightfield\` at R cells a side of the lobes7 improved mountain (\`-brute\`: its brute-force twin).
+  Beside them, \`bench/fastnoise_peer.mjs\`: npm fastnoise-lite's OpenSimplex2 fBm (6 octaves) filling a
+  square of 512² and 1024² cells in node, the peer a user would pick instead; and
+  \`bench/terrain_page.mjs\`: public/terrain.html in headless chromium with res 512, a seed drawn with
+  the mouse again and again, the worker's wall time from the update to the posted mountain (the issue's
+  ≤ 100 ms) and the time to the frame that shows it (SwiftShader).
 - \`light/grid-2000\`, \`light/reference-2000\`: \`ComputeLightGrid\` and \`ComputeLightReference\` on
   2,000 leaf spheres drawn from \`Pcg32\` (seed 12345) in a 300 × 300 × 300 cm crown box, sky \`MakeSky(60°, 0°, sun weight 0.3)\`, opacity 0.5.
 

@@ -1,6 +1,8 @@
 // Terrain workloads (core/terrain, paper 002): growing a whole mountain from a seed of 125 .. 1000
 // points with the improved method (warm, and the 500-point seed cold: timed once), and the
-// heightfield per cell at 256² .. 1024² through segment grids, beside its brute-force twin.
+// heightfield per cell at 256² .. 1024² through segment grids, beside its brute-force twin; and the
+// page's regrow path (grow, 512² heightfield, stats, flat buffers) in both builds.
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -8,7 +10,9 @@
 #include "math/det_math.h"
 #include "terrain/generate.h"
 #include "terrain/heightfield.h"
+#include "terrain/terrain_report.h"
 #include "terrain/terrain_state.h"
+#include "terrain/terrain_surface.h"
 #include "workloads.h"
 
 namespace niwa {
@@ -85,6 +89,53 @@ Workload HeightfieldWorkload(int res, bool brute) {
   return wl;
 }
 
+// The page's regrow of a drawn seed (web/bindings/terrain_bindings.cpp TerrainLab::grow and
+// statsJson, without JavaScript): a 120-point seed like bench/terrain_page.mjs's drawing, r = 300
+// m· (1 + 0.2 cos 3φ + 0.06 sin 11φ), grown with the improved method from its state, the 512²
+// heightfield, the stats object (exact checks and the link included) and the flat buffers.
+Workload PageRegrowWorkload(int res) {
+  Workload wl;
+  wl.name = "terrain/page-regrow/drawn-" + std::to_string(res);
+  wl.note = "The page's regrow without JavaScript: a drawn 120-point seed (improved), the " +
+            std::to_string(res) + "² heightfield, the stats and the flat buffers";
+  wl.unit = "cell";
+  std::shared_ptr<double> units = wl.units;
+  wl.prepare = [res, units]() -> WorkloadBody {
+    auto state = std::make_shared<terrain::TerrainState>();
+    terrain::Ring drawn;
+    for (int i = 0; i < 120; ++i) {
+      double s, c, s3, c3, s11, c11;
+      det::SinCos(2 * kPi * i / 120, &s, &c);
+      det::SinCos(3 * 2 * kPi * i / 120, &s3, &c3);
+      det::SinCos(11 * 2 * kPi * i / 120, &s11, &c11);
+      const double r = 300 * (1 + 0.2 * c3 + 0.06 * s11);
+      // Rounded to 1 cm, as the page rounds a drawing.
+      drawn.push_back({std::round(r * c * 100) / 100, std::round(r * s * 100) / 100});
+    }
+    (void)terrain::SetTerrainBuiltin("lobes7", state.get());  // the page's d, Δh, h0 before
+    (void)terrain::SetTerrainPreset("improved", state.get());
+    (void)terrain::SetTerrainPoints(drawn, state.get());
+    (void)state->params.Set(terrain::TerrainParam::kRes, res);
+    auto flat = std::make_shared<terrain::SurfaceBuffers>();
+    {
+      Result<terrain::Terrain> t = terrain::Grow(*terrain::StateSeed(*state), state->params);
+      *units = t.ok() ? static_cast<double>(terrain::BuildHeightfield(*t, res).h.size()) : 0;
+    }
+    return [state, flat, res]() {
+      Result<terrain::Terrain> t = terrain::Grow(*terrain::StateSeed(*state), state->params);
+      if (!t.ok()) return -1.0;
+      const terrain::Heightfield hf = terrain::BuildHeightfield(*t, res);
+      const terrain::TerrainStats s = terrain::ComputeStats(*t, &hf);
+      const std::string stats = terrain::TerrainStatsJson(*state, *t, hf, s).dump();
+      terrain::BuildSurfaceBuffers(*t, hf, flat.get());
+      return static_cast<double>(stats.size()) + s.hypsometric_integral +
+             static_cast<double>(flat->indices.size()) +
+             flat->positions[flat->positions.size() / 2];
+    };
+  };
+  return wl;
+}
+
 }  // namespace
 
 std::vector<Workload> TerrainWorkloads() {
@@ -93,6 +144,7 @@ std::vector<Workload> TerrainWorkloads() {
   for (int points : {125, 250, 500, 1000}) all.push_back(GrowWorkload(points, false));
   for (int res : {256, 512, 1024}) all.push_back(HeightfieldWorkload(res, false));
   all.push_back(HeightfieldWorkload(256, /*brute=*/true));
+  all.push_back(PageRegrowWorkload(512));
   return all;
 }
 

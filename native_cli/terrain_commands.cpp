@@ -77,7 +77,7 @@ terrain::TerrainState ResolveTerrainState(const GrowOptions& o) {
   } else if (o.url.empty() && o.params_file.empty()) {
     Fail(Status::Error("--contour",
                        "give one of --contour FILE, --builtin NAME (disk, dumbbell, lobes7, "
-                       "jacksboro), --url HASH or --params FILE"));
+                       "jacksboro, valleys), --url HASH or --params FILE"));
   }
   // Without --url the preset is always applied (the built-in's d, Δh, h0, then the method's rows).
   if (!o.method.empty() || o.url.empty())
@@ -274,7 +274,8 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
   auto o = std::make_shared<GrowOptions>();
   grow->add_option("--contour", o->contour,
                    "Seed contour: {\"points\": [[x, y], ...]} in metres, or GeoJSON");
-  grow->add_option("--builtin", o->builtin, "Built-in seed: disk, dumbbell, lobes7, jacksboro");
+  grow->add_option("--builtin", o->builtin,
+                   "Built-in seed: disk, dumbbell, lobes7, jacksboro, valleys");
   grow->add_option("--method", o->method,
                    "simple (Fig 9c), midpoint (Fig 13b), fourier (Fig 15), improved (Fig 16) or a "
                    "figure preset fig9a..fig16");

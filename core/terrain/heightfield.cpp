@@ -227,24 +227,27 @@ TerrainStats ComputeStats(const Terrain& t, const Heightfield* hf) {
   s.contours = static_cast<int>(t.contours.size());
   std::set<int> levels;
   double hmax = t.contours.empty() ? 0 : t.contours[0].elevation;
-  for (const ContourNode& c : t.contours) {
+  // Every ring on the grid once (a parent and its children are each tested several times).
+  std::vector<IRing> grid(t.contours.size());
+  for (std::size_t c = 0; c < t.contours.size(); ++c) grid[c] = ToGrid(t.contours[c].ring);
+  for (std::size_t ci = 0; ci < t.contours.size(); ++ci) {
+    const ContourNode& c = t.contours[ci];
     levels.insert(c.level);
     s.vertices += c.ring.size();
     if (c.children.empty()) ++s.peaks;
     if (c.children.size() >= 2) ++s.splits;
-    const IRing g = ToGrid(c.ring);
+    const IRing& g = grid[ci];
     if (!IsSimple(g) || TwiceArea(g) <= 0) ++s.self_intersections;
     if (c.parent >= 0) {
-      const ContourNode& par = t.contours[static_cast<std::size_t>(c.parent)];
-      const IRing gp = ToGrid(par.ring);
+      const IRing& gp = grid[static_cast<std::size_t>(c.parent)];
       if (RingsIntersect(g, gp) || !Inside(gp, g[0])) ++s.nesting_violations;
     }
     // Siblings: disjoint and not nested in each other.
     for (int sib : c.children) {
       for (int other : c.children) {
         if (other <= sib) continue;
-        const IRing a = ToGrid(t.contours[static_cast<std::size_t>(sib)].ring);
-        const IRing b = ToGrid(t.contours[static_cast<std::size_t>(other)].ring);
+        const IRing& a = grid[static_cast<std::size_t>(sib)];
+        const IRing& b = grid[static_cast<std::size_t>(other)];
         if (RingsIntersect(a, b) || Inside(a, b[0]) || Inside(b, a[0])) ++s.nesting_violations;
       }
     }

@@ -1,6 +1,7 @@
 // Built-in seed contours, each with where it comes from: disk (the cone oracle), dumbbell (splits
 // into two peaks), lobes7 (seven valleys), jacksboro (a real contour: the 800 m contour of a USGS
-// DEM, compiled in from core/terrain/seed_jacksboro.inc). Does not: read files at run time.
+// DEM, compiled in from core/terrain/seed_jacksboro.inc), valleys (18 valleys of different depths).
+// Does not: read files at run time.
 #pragma once
 
 #include <string>

@@ -85,6 +85,22 @@ const loop = (n, radius) => Array.from({ length: n + 1 }, (_, k) => {
   return [0.5 + r * Math.cos(phi), 0.5 - r * Math.sin(phi)];
 });
 
+// The indices of the .glb's "terrain" mesh (its first primitive), as numbers.
+function glbSurfaceIndices(bytes) {
+  const jsonLength = bytes.readUInt32LE(12);
+  const gltf = JSON.parse(bytes.subarray(20, 20 + jsonLength).toString('utf8'));
+  const binStart = 20 + jsonLength + 8;
+  const mesh = gltf.meshes.find((m) => m.name === 'terrain');
+  const accessor = gltf.accessors[mesh.primitives[0].indices];
+  const view = gltf.bufferViews[accessor.bufferView];
+  const offset = binStart + (view.byteOffset || 0) + (accessor.byteOffset || 0);
+  const out = [];
+  for (let k = 0; k < accessor.count; ++k) {
+    out.push(accessor.componentType === 5125 ? bytes.readUInt32LE(offset + 4 * k) : bytes.readUInt16LE(offset + 2 * k));
+  }
+  return out;
+}
+
 const problems = [];
 await runBrowserTest(async (server, browser) => {
   const context = await newContext(browser, { viewport: { width: 1200, height: 800 }, acceptDownloads: true });
@@ -172,6 +188,74 @@ await runBrowserTest(async (server, browser) => {
   await saveCanvasPng(page, 'terrain-drawn.png');
   await saveCanvasPng(page, 'terrain-drawn-plan.png', '#plan');
 
+  // 4b. A pen and a finger draw as the mouse does (pointer events of pointerType 'pen' and 'touch',
+  // sent through the DevTools protocol as real input, not synthetic DOM events).
+  {
+    await page.evaluate(() => {
+      window.__pointerTypes = [];
+      document.getElementById('plan').addEventListener('pointerdown', (e) => window.__pointerTypes.push(e.pointerType), true);
+    });
+    const cdp = await context.newCDPSession(page);
+    await page.locator('#plan').scrollIntoViewIfNeeded();
+    const box = await page.locator('#plan').boundingBox();
+    const at = ([u, v]) => ({ x: box.x + u * box.width, y: box.y + v * box.height });
+    // Pen: mouse events with pointerType 'pen'.
+    serial = Number((await page.evaluate(() => ({ ...document.documentElement.dataset }))).terrainSerial);
+    const penStroke = loop(70, (phi) => 0.28 * (1 + 0.18 * Math.cos(4 * phi)));
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', ...at(penStroke[0]), button: 'left', buttons: 1, clickCount: 1, pointerType: 'pen' });
+    for (const f of penStroke.slice(1)) await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', ...at(f), button: 'left', buttons: 1, pointerType: 'pen' });
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', ...at(penStroke[penStroke.length - 1]), button: 'left', buttons: 0, clickCount: 1, pointerType: 'pen' });
+    data = await waitTerrain(page, serial);
+    const penHash = await page.evaluate(() => location.hash);
+    check('a pen drawing regrows the mountain', data.status === 'ready' && /contour=/.test(penHash) && penHash !== drawnHash,
+      `${data.status} ${data.error || ''}; pointer types ${(await page.evaluate(() => window.__pointerTypes)).join(',')}`);
+    // Finger: touch events (touch emulation on, as on a phone).
+    await cdp.send('Emulation.setTouchEmulationEnabled', { enabled: true, maxTouchPoints: 1 });
+    serial = Number(data.terrainSerial);
+    const fingerStroke = loop(60, (phi) => 0.3 * (1 + 0.15 * Math.cos(6 * phi)));
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [at(fingerStroke[0])] });
+    for (const f of fingerStroke.slice(1)) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [at(f)] });
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+    data = await waitTerrain(page, serial);
+    const fingerHash = await page.evaluate(() => location.hash);
+    const types = await page.evaluate(() => window.__pointerTypes);
+    check('a finger drawing regrows the mountain', data.status === 'ready' && /contour=/.test(fingerHash) && fingerHash !== penHash,
+      `${data.status} ${data.error || ''}`);
+    check('those strokes arrived as pen and touch pointers', types.includes('pen') && types.includes('touch'), types.join(','));
+    if (data.status === 'ready') compareWithNative('finger drawing', data);
+    await saveCanvasPng(page, 'terrain-finger-plan.png', '#plan');
+    await cdp.send('Emulation.setTouchEmulationEnabled', { enabled: false });
+    await cdp.detach();
+  }
+
+  // 4c. An imported contour file ({"points", "elevation"}, as `niwa terrain grow --contour` reads
+  // it): the seed and h0 come from the file, the link carries it, the CLI regrows it; a broken
+  // file and a file of another kind are lines beside the plan and grow nothing.
+  {
+    serial = Number(data.terrainSerial);
+    const ring = Array.from({ length: 160 }, (_, k) => {
+      const phi = (2 * Math.PI * k) / 160, r = 260 * (1 + 0.2 * Math.cos(9 * phi));
+      return [Number((1000 + r * Math.cos(phi)).toFixed(3)), Number((-500 + r * Math.sin(phi)).toFixed(3))];
+    });
+    await page.setInputFiles('#contour-file', { name: 'seed.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify({ points: ring, elevation: 300 })) });
+    data = await waitTerrain(page, serial);
+    const importedHash = await page.evaluate(() => location.hash);
+    check('an imported contour file regrows the mountain from its points and elevation',
+      data.status === 'ready' && importedHash.includes(`contour=${ring[0][0]},${ring[0][1]};`) && /(^|&|#)h0=300(&|$)/.test(importedHash) && Number(data.levels) >= 2,
+      `${data.status} ${data.error || ''}; ${data.levels} levels; ${importedHash.replace(/contour=[^&]*/, 'contour=…')}`);
+    if (data.status === 'ready') compareWithNative('imported contour file', data);
+    await saveCanvasPng(page, 'terrain-imported-plan.png', '#plan');
+    const before = Number(await page.evaluate(() => document.documentElement.dataset.growRequests));
+    await page.setInputFiles('#contour-file', { name: 'broken.json', mimeType: 'application/json', buffer: Buffer.from('{"points": [[0, 0], [1, 0], "x"]}') });
+    await page.waitForFunction(() => !document.getElementById('contour-error').hidden, null, { timeout: TIMEOUT });
+    const broken = await page.textContent('#contour-error');
+    await page.setInputFiles('#contour-file', { name: 'notes.txt', mimeType: 'text/plain', buffer: Buffer.from('hello') });
+    const other = await page.textContent('#contour-error');
+    const after = Number(await page.evaluate(() => document.documentElement.dataset.growRequests));
+    check('a broken contour file: the core\'s line beside the plan, nothing grows', /^contour: /.test(broken) && after === before, `'${broken}', grow requests ${before} -> ${after}`);
+    check('a file of another kind is refused by name', /^contour: notes\.txt: not a contour file; must end in \.json, \.geojson/.test(other), `'${other}'`);
+  }
+
   // 5. Downloads equal the CLI's bytes for the same hash.
   const cliGlb = path.join(ARTIFACTS, 'terrain-cli.glb');
   const cliPng = path.join(ARTIFACTS, 'terrain-cli-heightmap.png');
@@ -181,6 +265,15 @@ await runBrowserTest(async (server, browser) => {
   await glbDownload.saveAs(pageGlb);
   const a = fs.readFileSync(pageGlb), b = fs.readFileSync(cliGlb);
   check('the page .glb equals the CLI --out bytes', a.equals(b), `${glbDownload.suggestedFilename()} ${a.length} bytes, CLI ${b.length} bytes`);
+  {
+    // The page draws triangles it builds itself (web/terrain/grid_indices.js): the .glb's.
+    const { gridIndices } = await import('../../web/terrain/grid_indices.js');
+    const bounds = await page.evaluate(() => JSON.parse(document.documentElement.dataset.gridSize || '{}'));
+    const glb = glbSurfaceIndices(b);
+    const mine = new Uint32Array(gridIndices(bounds.width, bounds.height));
+    check('the page\'s grid triangles are the .glb surface\'s', glb.length > 0 && glb.length === mine.length && glb.every((v, i) => v === mine[i]),
+      `${bounds.width} x ${bounds.height} grid, ${mine.length} indices, .glb ${glb.length}`);
+  }
   const downloads = [];
   page.on('download', (d) => downloads.push(d));
   await page.click('#download-heightmap');

@@ -37,7 +37,8 @@ TEST(TerrainCli, ContoursFileAndSeedsList) {
   EXPECT_EQ(j["summits"].size(), 2u);
   CliResult seeds = RunNiwa({"terrain", "seeds"});
   ASSERT_EQ(seeds.code, 0);
-  EXPECT_EQ(nlohmann::json::parse(seeds.out).size(), 4u);  // disk, dumbbell, lobes7, jacksboro
+  EXPECT_EQ(nlohmann::json::parse(seeds.out).size(),
+            5u);  // disk, dumbbell, lobes7, jacksboro, valleys
   CliResult params = RunNiwa({"params", "terrain"});
   ASSERT_EQ(params.code, 0);
   EXPECT_NE(params.out.find("f0"), std::string::npos);
@@ -66,7 +67,8 @@ TEST(TerrainCli, BadInputIsOneLineExitTwoAndNoFile) {
       {{"--builtin", "disk", "--set", "f0=600"},
        "niwa: error: f0: 600 is out of range; must be a whole number in [1, nfft/2 = 512]\n"},
       {{"--builtin", "nope"},
-       "niwa: error: --builtin: 'nope' is unknown; must be disk, dumbbell, lobes7 or jacksboro\n"},
+       "niwa: error: --builtin: 'nope' is unknown; must be disk, dumbbell, lobes7, jacksboro or "
+       "valleys\n"},
   };
   for (const Case& c : cases) {
     std::vector<std::string> args{"terrain", "grow"};

@@ -139,8 +139,8 @@ TEST(TerrainOutput, UrlFromStatsRegrowsTheSameBytes) {
   CliResult bad = RunNiwa({"terrain", "grow", "--url", "builtin=nope", "--out", b + ".glb"});
   EXPECT_EQ(bad.code, 2);
   EXPECT_EQ(bad.err,
-            "niwa: error: --url: builtin: 'nope' is unknown; must be disk, dumbbell, lobes7 or "
-            "jacksboro; dropped\n");
+            "niwa: error: --url: builtin: 'nope' is unknown; must be disk, dumbbell, lobes7, "
+            "jacksboro or valleys; dropped\n");
 }
 
 TEST(TerrainOutput, SeveralOutputsAreAllOrNone) {

@@ -9,12 +9,16 @@
 // buffers(group) (buffers.h), copied once by the worker. Groups:
 //   "surface"   positions (Float32 xyz: glTF's y-up (x, h, −y), one vertex per heightfield cell
 //               centre), normals (Float32 xyz, central differences), colours (Float32 rgb: the
-//               hypsometric tint of terrain_output.h), indices (Uint32 triangles)
+//               hypsometric tint of terrain_output.h)
+//   "surfaceIndices"  indices (Uint32 triangles; the page builds the same list itself from
+//               boundsJson's width and height, web/terrain/grid_indices.js, so a regrow copies
+//               6 MB less at 512²)
 //   "contours"  positions (Float32 xyz, LINES: two vertices per ring edge at the ring's
 //               elevation), height (Float32 per vertex, m), level (Float32 per vertex)
 //   "summits"   positions (Float32 xyz), radius (Float32: inscribed-circle radius, m)
 //   "download"  bytes (Uint8, after build(format))
-// terrainRepairContour(pointsJson): a drawn contour that crosses itself made simple (below).
+// terrainRepairContour(pointsJson): a drawn contour that crosses itself made simple (below);
+// terrainParseContour(text): an imported contour file's points (below).
 // Calls: grow(stateJson) -> ""/error, then statsJson() (the CLI's --stats minus ms*), hash(),
 // stateJson(), buffers(..), build(format) with format glb | heightmap | sidecar | json | geojson |
 // svg -> ""/error.
@@ -44,6 +48,7 @@
 #include "terrain/terrain_params.h"
 #include "terrain/terrain_report.h"
 #include "terrain/terrain_state.h"
+#include "terrain/terrain_surface.h"
 
 namespace niwa {
 namespace {
@@ -181,6 +186,31 @@ std::string TerrainRepairContour(const std::string& points_json) {
   return Dump(out);
 }
 
+// A contour file's text (what `niwa terrain grow --contour FILE` reads: {"points": [[x, y], ...]}
+// in metres with an optional "elevation", or a GeoJSON Polygon or LineString), for the page's
+// import: {points, elevation?} or {error} (one line naming "contour"). The points go into the
+// page's state (the link), so a file of more than kMaxStatePoints points is refused here with the
+// limit; its geometry is checked (and a crossing repaired) as a drawing's is.
+std::string TerrainParseContour(const std::string& text) {
+  ordered_json out;
+  Result<terrain::SeedFile> file = terrain::ParseContourJson(text);
+  if (!file.ok()) {
+    out["error"] = file.status().Line();
+    return Dump(out);
+  }
+  terrain::TerrainState probe;
+  const Status fits = terrain::SetTerrainPoints(file->ring, &probe);
+  if (!fits.ok()) {
+    out["error"] = fits.Line();
+    return Dump(out);
+  }
+  json pts = json::array();
+  for (const terrain::Vec2& v : file->ring) pts.push_back({v.x, v.y});
+  out["points"] = pts;
+  if (file->has_elevation) out["elevation"] = file->elevation;
+  return Dump(out);
+}
+
 // The page's budget (docs/budgets.md): what a laptop tab's WASM heap holds, by estimate.
 static Budget PageBudget() {  // internal: each study binding has its own
   Budget budget;
@@ -232,7 +262,7 @@ class TerrainLab {
     const auto t2 = Clock::now();
     ms_grow_ = Ms(t0, t1);
     ms_heightfield_ = Ms(t1, t2);
-    Flatten();
+    terrain::BuildSurfaceBuffers(terrain_, hf_, &flat_);
     ms_buffers_ = Ms(t2, Clock::now());
     download_.clear();
     grown_ = true;
@@ -265,8 +295,9 @@ class TerrainLab {
   std::string hash() const { return grown_ ? terrain::EncodeTerrainHash(state_) : ""; }
   std::string stateJson() const { return grown_ ? Dump(StateObject(state_)) : "{}"; }
 
-  // {min: [x, y], max: [x, y], h_min, h_max, h0, dh, level_min, level_max}: the heightfield's box
-  // (plan metres), its elevations, and the contour levels (negative below the seed: `down`).
+  // {min: [x, y], max: [x, y], h_min, h_max, h0, dh, level_min, level_max, width, height}: the
+  // heightfield's box (plan metres), its elevations, the contour levels (negative below the seed:
+  // `down`) and its grid.
   std::string boundsJson() const {
     if (!grown_) return "{}";
     ordered_json j;
@@ -284,6 +315,8 @@ class TerrainLab {
     }
     j["level_min"] = level_min;
     j["level_max"] = level_max;
+    j["width"] = hf_.width;  // the surface grid's vertices per row and rows
+    j["height"] = hf_.height;
     return Dump(j);
   }
 
@@ -345,14 +378,17 @@ class TerrainLab {
   emscripten::val buffers(const std::string& group) const {
     NamedBuffers out;
     if (group == "surface") {
-      out.Add("positions", surface_positions_)
-          .Add("normals", surface_normals_)
-          .Add("colours", surface_colours_)
-          .Add("indices", surface_indices_);
+      out.Add("positions", flat_.positions)
+          .Add("normals", flat_.normals)
+          .Add("colours", flat_.colours);
+    } else if (group == "surfaceIndices") {
+      out.Add("indices", flat_.indices);
     } else if (group == "contours") {
-      out.Add("positions", line_positions_).Add("height", line_height_).Add("level", line_level_);
+      out.Add("positions", flat_.line_positions)
+          .Add("height", flat_.line_height)
+          .Add("level", flat_.line_level);
     } else if (group == "summits") {
-      out.Add("positions", summit_positions_).Add("radius", summit_radius_);
+      out.Add("positions", flat_.summit_positions).Add("radius", flat_.summit_radius);
     } else if (group == "download") {
       out.Add("bytes", download_);
     } else {
@@ -362,90 +398,12 @@ class TerrainLab {
   }
 
  private:
-  // The flat buffers of the last mountain (y up: (x, h, −y), as terrain_output.h's glTF).
-  void Flatten() {
-    const int w = hf_.width, h = hf_.height;
-    const std::size_t cells = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
-    surface_positions_.assign(cells * 3, 0.0f);
-    surface_normals_.assign(cells * 3, 0.0f);
-    surface_colours_.assign(cells * 3, 0.0f);
-    double lo = 0, hi = 0;
-    if (cells > 0) {
-      const auto [a, b] = std::minmax_element(hf_.h.begin(), hf_.h.end());
-      lo = *a;
-      hi = *b;
-    }
-    const double span = hi > lo ? hi - lo : 1.0;
-    for (int j = 0; j < h; ++j) {
-      for (int i = 0; i < w; ++i) {
-        const std::size_t k =
-            static_cast<std::size_t>(j) * static_cast<std::size_t>(w) + static_cast<std::size_t>(i);
-        const terrain::Vec2 c = hf_.Centre(i, j);
-        surface_positions_[3 * k] = static_cast<float>(c.x);
-        surface_positions_[3 * k + 1] = static_cast<float>(hf_.At(i, j));
-        surface_positions_[3 * k + 2] = static_cast<float>(-c.y);
-        // Central differences (one-sided at the border): dh/dx east, dh/dy north (row j−1).
-        const int il = std::max(i - 1, 0), ir = std::min(i + 1, w - 1);
-        const int jn = std::max(j - 1, 0), js = std::min(j + 1, h - 1);
-        const double gx = (hf_.At(ir, j) - hf_.At(il, j)) / ((ir - il) * hf_.cell);
-        const double gy = (hf_.At(i, jn) - hf_.At(i, js)) / ((js - jn) * hf_.cell);
-        // Surface (x, h(x, y), −y): normal ∝ (−∂h/∂x, 1, ∂h/∂y).
-        const double len = std::sqrt(gx * gx + 1.0 + gy * gy);
-        surface_normals_[3 * k] = static_cast<float>(-gx / len);
-        surface_normals_[3 * k + 1] = static_cast<float>(1.0 / len);
-        surface_normals_[3 * k + 2] = static_cast<float>(gy / len);
-        terrain::HypsometricColour((hf_.At(i, j) - lo) / span, &surface_colours_[3 * k]);
-      }
-    }
-    surface_indices_.clear();
-    if (w >= 2 && h >= 2) {
-      surface_indices_.reserve(static_cast<std::size_t>(w - 1) * static_cast<std::size_t>(h - 1) *
-                               6);
-      for (int j = 0; j + 1 < h; ++j) {
-        for (int i = 0; i + 1 < w; ++i) {
-          const auto a = static_cast<uint32_t>(j * w + i), b = a + 1,
-                     c = static_cast<uint32_t>((j + 1) * w + i), d = c + 1;
-          // Counter-clockwise seen from above (+y up, row j+1 is south = +z).
-          surface_indices_.insert(surface_indices_.end(), {a, c, b, b, c, d});
-        }
-      }
-    }
-    line_positions_.clear();
-    line_height_.clear();
-    line_level_.clear();
-    for (const terrain::ContourNode& node : terrain_.contours) {
-      const std::size_t n = node.ring.size();
-      const auto e = static_cast<float>(node.elevation);
-      for (std::size_t p = 0; p < n; ++p) {
-        const terrain::Vec2& u = node.ring[p];
-        const terrain::Vec2& v = node.ring[(p + 1) % n];
-        line_positions_.insert(line_positions_.end(),
-                               {static_cast<float>(u.x), e, static_cast<float>(-u.y),
-                                static_cast<float>(v.x), e, static_cast<float>(-v.y)});
-        line_height_.insert(line_height_.end(), {e, e});
-        line_level_.insert(line_level_.end(),
-                           {static_cast<float>(node.level), static_cast<float>(node.level)});
-      }
-    }
-    summit_positions_.clear();
-    summit_radius_.clear();
-    for (const terrain::Summit& s : terrain_.summits) {
-      summit_positions_.insert(summit_positions_.end(),
-                               {static_cast<float>(s.position.x), static_cast<float>(s.elevation),
-                                static_cast<float>(-s.position.y)});
-      summit_radius_.push_back(static_cast<float>(s.radius));
-    }
-  }
-
   bool grown_ = false;
   terrain::TerrainState state_;
   terrain::Terrain terrain_;
   terrain::Heightfield hf_;
   double ms_grow_ = 0, ms_heightfield_ = 0, ms_buffers_ = 0;
-  std::vector<float> surface_positions_, surface_normals_, surface_colours_;
-  std::vector<uint32_t> surface_indices_;
-  std::vector<float> line_positions_, line_height_, line_level_;
-  std::vector<float> summit_positions_, summit_radius_;
+  terrain::SurfaceBuffers flat_;  // core/terrain/terrain_surface.h: reused from grow to grow
   std::vector<unsigned char> download_;
 };
 
@@ -458,6 +416,7 @@ EMSCRIPTEN_BINDINGS(niwa_terrain) {
   function("terrainSeedsJson", &niwa::TerrainSeedsJson);
   function("terrainDecodeHash", &niwa::TerrainDecodeHash);
   function("terrainRepairContour", &niwa::TerrainRepairContour);
+  function("terrainParseContour", &niwa::TerrainParseContour);
   class_<niwa::TerrainLab>("TerrainLab")
       .constructor<>()
       .function("grow", &niwa::TerrainLab::grow)

@@ -11,14 +11,15 @@ export function extensionOf(name) {
 
 export class FileDrop {
   // target: element to drop on; input: an <input type="file"> (optional); accept: ['.glb', ...];
-  // onFiles(files: File[]); onRefuse(line): a dropped name that is not accepted.
-  constructor({ target, input, accept, onFiles, onRefuse = () => {} }) {
+  // onFiles(files: File[]); onRefuse(line): a dropped name that is not accepted; what: the kind
+  // of file named in that line.
+  constructor({ target, input, accept, onFiles, onRefuse = () => {}, what = 'mesh file' }) {
     this.accept = accept.map((a) => a.toLowerCase());
     const take = (list) => {
       const files = [...list];
       const good = files.filter((f) => this.accept.includes(extensionOf(f.name)));
       for (const f of files) {
-        if (!good.includes(f)) onRefuse(`${String(f.name).slice(0, 60)}: not a mesh file; must end in ${this.accept.join(', ')}`);
+        if (!good.includes(f)) onRefuse(`${String(f.name).slice(0, 60)}: not a ${what}; must end in ${this.accept.join(', ')}`);
       }
       if (good.length) onFiles(good);
     };

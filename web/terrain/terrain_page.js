@@ -4,17 +4,20 @@
 // --url` reads: preset, builtin or contour=x,y;..., changed parameters), picks a built-in seed, a
 // method or figure preset and the RNG seed, takes a seed contour drawn on the plan view
 // (plan_view.js), shows the mountain in 3-D (terrain_renderer.js) and downloads .glb, the 16-bit
-// heightmap with its sidecar, and the contours. Growth runs in the worker (terrain_handler.js).
+// heightmap with its sidecar, and the contours; imports a contour file; offers an embed
+// (<niwa-terrain>). Growth runs in the worker (terrain_handler.js).
 // Does not: parse or check states or contours (the core does; its one line is shown beside its
 // field), or draw directly.
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { FrameLoop } from '../gl/frame_loop.js';
+import { FileDrop } from '../shell/file_drop.js';
 import { HashHistory } from '../shell/hash_history.js';
 import { ParamPanel } from '../shell/param_panel.js';
 import { StepScrubber } from '../shell/step_scrubber.js';
-import { Notices, copyLink, download, mountStudyNav } from '../shell/study_page.js';
+import { Notices, copyLink, download, mountStudyNav, showEmbedDialog } from '../shell/study_page.js';
 import { bumpHook, setHooks } from '../shell/test_hooks.js';
 import { WorkerClient, restartWorker } from '../shell/worker_client.js';
+import { gridIndices } from './grid_indices.js';
 import { PlanView } from './plan_view.js';
 import { TerrainRenderer } from './terrain_renderer.js';
 
@@ -235,6 +238,15 @@ const plan = new PlanView(ui.plan, (points, pixels) => {
     setHooks({ contourNotice: 'small' });
     return;
   }
+  takeSeed(points);
+});
+
+// ---------------------------------------------------------------- an imported contour file
+// The file's text goes to the worker (the core's ParseContourJson, as `niwa terrain grow
+// --contour` reads it); its points become the seed as a drawing's do (a crossing one repaired,
+// the link carrying it), and its "elevation", when given, becomes h0.
+const MAX_CONTOUR_FILE_BYTES = 4 << 20;
+const takeSeed = (points) => {
   setHooks({ contourNotice: '' });
   $('contour-note').textContent = '';
   drawnContour = points;
@@ -243,6 +255,33 @@ const plan = new PlanView(ui.plan, (points, pixels) => {
   showHelp();
   frameNext = true;
   sendUpdate(true, false, true);
+};
+async function importContourFile(file) {
+  bumpHook('contourImports');
+  if (file.size > MAX_CONTOUR_FILE_BYTES) {
+    showFieldError(`contour: ${String(file.name).slice(0, 60)} is ${file.size} bytes; must be at most ${MAX_CONTOUR_FILE_BYTES} bytes`);
+    setHooks({ contourNotice: 'file' });
+    return;
+  }
+  const text = await file.text();
+  const { reply } = worker.request('parseContour', { name: String(file.name).slice(0, 200), text }, { done: ['contourFile', 'error'] });
+  const msg = await reply;
+  if (!msg) return;  // superseded, or the worker restarted
+  if (msg.error || msg.type === 'error') {
+    showFieldError(msg.error || msg.message);
+    setHooks({ contourNotice: 'file' });
+    return;
+  }
+  if (msg.elevation !== undefined) panel?.setValues({ h0: msg.elevation });
+  takeSeed(msg.points);
+}
+new FileDrop({
+  target: ui.plan, input: $('contour-file'), accept: ['.json', '.geojson'], what: 'contour file',
+  onFiles: (files) => importContourFile(files[0]),
+  onRefuse: (line) => {
+    showFieldError(`contour: ${line}`);
+    setHooks({ contourNotice: 'file' });
+  },
 });
 
 // ---------------------------------------------------------------- worker replies
@@ -302,6 +341,8 @@ worker.on('terrain', (msg) => {
     : $('contour-note').textContent;
   if (r) setHooks({ contourRepaired: `${r.method}:${r.loopsRemoved}` });
   ui.stats.textContent = `${s.method} · ${s.levels} levels · ${s.contours} contours · ${s.peaks} peak${s.peaks === 1 ? '' : 's'} · relief ${s.relief.toFixed(1)} m · HI ${s.hypsometric_integral.toFixed(3)} · ${s.res} cells across · ${msg.wallMs.toFixed(0)} ms`;
+  // The worker sends no triangles: the grid's are the same for every regrow on it.
+  msg.buffers.surface.indices = gridIndices(msg.bounds.width, msg.bounds.height);
   plan.setTerrain(msg.buffers, msg.bounds);
   levels = { min: msg.bounds.level_min, max: msg.bounds.level_max, h0: msg.bounds.h0, dh: msg.bounds.dh };
   if (renderer) {
@@ -323,6 +364,7 @@ worker.on('terrain', (msg) => {
     status: 'ready', error: '', terrainSerial, levels: s.levels, contours: s.contours, peaks: s.peaks,
     stats: JSON.stringify(s), hash: msg.hash, truncatedBy: s.truncated_by || '', wallMs: msg.wallMs.toFixed(1), msGrow: msg.timings.ms_grow.toFixed(1),
     msHeightfield: msg.timings.ms_heightfield.toFixed(1), msBuffers: msg.timings.ms_buffers.toFixed(1),
+    regrowParts: JSON.stringify(msg.parts || {}), gridSize: JSON.stringify({ width: msg.bounds.width, height: msg.bounds.height }),
   });
   requestFrame();
 });
@@ -381,6 +423,12 @@ ui.resetView.addEventListener('click', () => {
   requestFrame();
 });
 ui.copyLink.addEventListener('click', () => copyLink(ui.shareStatus));
+// The embed: <niwa-terrain> (public/niwa-terrain.js) or an iframe of public/terrain-frame.html,
+// with this hash (a drawn contour included).
+$('embed').addEventListener('click', () => {
+  showEmbedDialog({ dialog: $('embed-dialog'), element: $('embed-element'), iframe: $('embed-iframe') },
+    { tag: 'niwa-terrain', title: 'Niwa terrain', script: 'niwa-terrain.js', frame: 'terrain-frame.html' });
+});
 const exportAs = (format, name) => {
   const { id } = worker.request('export', { format }, { group: `export-${format}`, done: ['export'] });
   exportIds.set(id, name);

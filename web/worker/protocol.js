@@ -110,5 +110,18 @@
  * export: format 'glb' (withSupport?) | 'json' | 'lsys'.
  */
 
+/**
+ * The terrain page (study: 'terrain', web/worker/terrain_handler.js). State: {preset, builtin |
+ * contour: [[x, y], ...], params}; ready carries `paramTable`, `presets`, `seeds`, `decoded`.
+ * @typedef {Envelope & {type: 'update', state: Object, repair?: boolean}} TerrainUpdateMessage
+ *   -> ProgressMessage, {type: 'terrain', stats, timings, buffers: {surface (no indices: the
+ *       page builds them, web/terrain/grid_indices.js, from bounds.width × height), contours,
+ *       summits}, hash, state, bounds, repaired, parts: {repair, grow, stats, copy, state} (ms),
+ *       wallMs}
+ * @typedef {Envelope & {type: 'parseContour', name: string, text: string}} TerrainParseContourMessage
+ *   -> {type: 'contourFile', name, points?, elevation?, error?}
+ * export: format 'glb' | 'heightmap' | 'sidecar' | 'json' | 'geojson' | 'svg'.
+ */
+
 // The message types a page may send (the router answers any other with an error).
-export const REQUEST_TYPES = ['init', 'decode', 'update', 'restage', 'wind', 'poseDone', 'view', 'export', 'mesh', 'pick', 'encode', 'stateFile'];
+export const REQUEST_TYPES = ['init', 'decode', 'update', 'restage', 'wind', 'poseDone', 'view', 'export', 'mesh', 'pick', 'encode', 'stateFile', 'parseContour'];

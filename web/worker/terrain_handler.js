@@ -1,9 +1,12 @@
 // The terrain study's worker handler (paper 002, Misawa, Chiba, Saito): one TerrainLab
 // (web/bindings/terrain_bindings.cpp) per client holds the last mountain. An 'update' grows the
 // state (a built-in seed or a drawn contour, as JSON through core/terrain/terrain_state) and sends
-// the stats (the CLI's --stats minus its timings), the resolved state and hash, and the surface,
-// contour and summit buffers (copied once out of the WASM heap, then transferred); 'export'
-// builds one download (.glb, heightmap .png, its sidecar .json, contours .json/.geojson/.svg).
+// the stats (the CLI's --stats minus its timings), the resolved state and hash, and the surface
+// (without its triangles: the page builds the grid's, web/terrain/grid_indices.js), contour and
+// summit buffers (copied once out of the WASM heap, then transferred), with the worker's time per
+// step (parts); 'export'
+// builds one download (.glb, heightmap .png, its sidecar .json, contours .json/.geojson/.svg);
+// 'parseContour' reads an imported contour file's text into points.
 // Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does).
 import { takeBuffers } from './transfer.js';
@@ -31,6 +34,7 @@ export function createHandler(Module, ctx) {
     if (!isLatest(client, id)) return;
     post({ type: 'progress', id, client, stage: 'grow', text: 'growing the contours and the surface' });
     const t0 = performance.now();
+    const parts = {};  // the worker's wall time per step (ms): what the page's regrow costs
     const state = { ...(msg.state || {}) };
     let repaired = null;
     if (msg.repair && Array.isArray(state.contour)) {
@@ -44,20 +48,34 @@ export function createHandler(Module, ctx) {
         repaired = { loopsRemoved: r.loops_removed, method: r.method, reason: r.reason, points: r.points.length };
       }
     }
+    let t = performance.now();
+    const lap = (name) => {
+      const now = performance.now();
+      parts[name] = now - t;
+      t = now;
+    };
+    lap('repair');
     const error = lab.grow(JSON.stringify(state));
     if (error) {
       post({ type: 'error', id, client, message: error });
       return;
     }
+    lap('grow');
     const stats = JSON.parse(lab.statsJson());
     const timings = JSON.parse(lab.timingsJson());
+    lap('stats');
     const transfer = [];
     const buffers = {};
     for (const group of ['surface', 'contours', 'summits']) buffers[group] = takeBuffers(lab.buffers(group), transfer);
-    post({
+    lap('copy');
+    const reply = {
       type: 'terrain', id, client, stats, timings, buffers, hash: lab.hash(), state: JSON.parse(lab.stateJson()),
-      bounds: JSON.parse(lab.boundsJson()), repaired, wallMs: performance.now() - t0,
-    }, transfer);
+      bounds: JSON.parse(lab.boundsJson()), repaired,
+    };
+    lap('state');
+    reply.parts = parts;
+    reply.wallMs = performance.now() - t0;
+    post(reply, transfer);
   }
 
   function exportTerrain(msg, client) {
@@ -75,6 +93,8 @@ export function createHandler(Module, ctx) {
     ready: (msg) => ({ paramTable, presets, seeds, decoded: JSON.parse(Module.terrainDecodeHash(String(msg.hash || ''))) }),
     messages: {
       decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...JSON.parse(Module.terrainDecodeHash(String(msg.hash || ''))) }),
+      // An imported contour file's text -> {points, elevation?} or {error} (the core's line).
+      parseContour: (msg, client) => post({ type: 'contourFile', id: msg.id, client, name: String(msg.name || ''), ...JSON.parse(Module.terrainParseContour(String(msg.text || ''))) }),
       update,
       export: exportTerrain,
     },
