@@ -71,9 +71,10 @@ const cli::Study& FindStudy(const cli::CommandList& commands, const std::string&
   throw cli::BadInput{"study: unknown '" + Echo(name) + "', must be one of " + names};
 }
 
-void PrintTable(const ParamTable& table, bool json, std::ostream& out) {
+void PrintTable(const cli::Study& study, bool json, std::ostream& out) {
+  const ParamTable& table = *study.table;
   if (json) {
-    out << ParamTableJson(table) << "\n";
+    out << (study.table_json ? study.table_json() : ParamTableJson(table)) << "\n";
     return;
   }
   for (const ParamSpec& s : table) {
@@ -101,7 +102,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
                         return 0;
                       }});
   commands.push_back({params, [&](std::ostream& o) {
-                        PrintTable(*FindStudy(commands, study).table, params_json, o);
+                        PrintTable(FindStudy(commands, study), params_json, o);
                         return 0;
                       }});
   cli::AddRegisteredCommands(app, commands);

@@ -43,6 +43,9 @@ struct Study {
   std::string name;  // "tree"
   const ParamTable* table;
   std::function<void(std::ostream& out)> print_presets;
+  // The table as JSON for 'niwa params STUDY --json' when it carries more than ParamTableJson
+  // (the tree's Getting started group); empty: ParamTableJson(*table).
+  std::function<std::string()> table_json = {};
 };
 struct CommandList : std::vector<Command> {
   std::vector<Study> studies;  // the first registered is the default of 'params' and 'presets'

@@ -15,6 +15,7 @@
 #include "tree/tree_gltf.h"
 #include "tree/tree_json.h"
 #include "tree/tree_report.h"
+#include "tree/tree_simple.h"
 #include "tree/tree_state.h"
 #include "tree/tree_svg.h"
 #include "tree_cli.h"
@@ -171,12 +172,15 @@ int RunState(const StateCommandOptions& o, const CLI::App& cmd, std::ostream& ou
 }  // namespace
 
 void AddTreeCommands(CLI::App& app, CommandList& commands) {
-  commands.studies.push_back({"tree", &TreeParamTable(), [](std::ostream& out) {
+  commands.studies.push_back({"tree", &TreeParamTable(),
+                              [](std::ostream& out) {
                                 for (const Preset& p : Presets()) {
                                   out << p.name << "\t" << p.title << "\t" << p.years << " years\t"
                                       << p.source << "\n";
                                 }
-                              }});
+                              },
+                              // with the Getting started group (tree/tree_simple.h), as the page
+                              &TreeParamTableJsonWithSimple});
   CLI::App* tree = Subcommand(app, "tree", "Grow and export trees");
 
   CLI::App* grow = tree->add_subcommand("grow", "Grow a tree and write it or its statistics");

@@ -252,7 +252,7 @@ Rgba8Image PaintAtlas(const TreeMesh& mesh, const HybridScene& scene) {
   const AtlasMesh projected = BuildAtlasMesh(mesh, scene);
   Rasterize(projected.bark, MakeBarkTexture(), true, 0.0f, size, &depth, &atlas);
   Rasterize(projected.leaves, MakeLeafTexture(mesh.look), false, 0.5f, size, &depth, &atlas);
-  Rasterize(projected.flowers, MakeBlossomClusterTexture(), false, 0.5f, size, &depth, &atlas);
+  Rasterize(projected.flowers, MakeFlowerTexture(mesh.look), false, 0.5f, size, &depth, &atlas);
   GrowCoverage(&atlas, 2);
   BleedColour(&atlas, 2);
   return atlas;

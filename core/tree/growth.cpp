@@ -388,6 +388,10 @@ void Grower::BreakBuds() {
     flowers.clear();
   }
   flowering_.clear();
+  // Terminal flower buds (terminal_flowers, Rhododendron): last year's shoots open a truss at
+  // their tips this spring. No random draw, so trees without the row grow the same.
+  std::vector<int> tip_flowering;
+  if (p.GetBool(ParamId::kTerminalFlowers)) tip_flowering = new_shoots_;
   new_shoots_.clear();
   kept_foliage_.clear();
   const long refused_before = refused_shoots_;
@@ -526,6 +530,12 @@ void Grower::BreakBuds() {
       make_shoot(static_cast<int>(id), bud.node, bud.kind, bud.direction, bud.azimuth,
                  inherited + bud.extra_hormone);
     }
+  }
+  for (int id : tip_flowering) {
+    Branch& b = tree_.branches[static_cast<std::size_t>(id)];
+    if (!b.alive || b.nodes.size() < 2) continue;
+    if (b.flowers.empty()) flowering_.push_back(id);
+    b.flowers.push_back(static_cast<int>(b.nodes.size()) - 1);
   }
   MakeBasalShoots(make_shoot);
 }

@@ -30,10 +30,13 @@ struct MaterialSpec {
 Result<std::vector<unsigned char>> EncodedTexture(TextureKind kind, const TreeLook& look) {
   static std::mutex mutex;
   static std::map<int, std::vector<unsigned char>> cache;
-  const int key = kind == TextureKind::kLeaf
-                      ? 1000 + 100 * static_cast<int>(look.leaf_shape) +
-                            10 * static_cast<int>(look.season) + static_cast<int>(look.autumn)
-                      : static_cast<int>(kind);
+  const int key =
+      kind == TextureKind::kLeaf
+          ? 1000 + 100 * static_cast<int>(look.leaf_shape) + 10 * static_cast<int>(look.season) +
+                static_cast<int>(look.autumn)
+      : kind == TextureKind::kFlower
+          ? 2000 + 10 * static_cast<int>(look.flower_colour) + static_cast<int>(look.flower_form)
+          : static_cast<int>(kind);
   std::lock_guard<std::mutex> lock(mutex);
   auto found = cache.find(key);
   if (found != cache.end()) return found->second;
@@ -50,7 +53,7 @@ Result<std::vector<unsigned char>> EncodedTexture(TextureKind kind, const TreeLo
       break;
     case TextureKind::kFlower:
     default:
-      pixels = MakeBlossomClusterTexture();
+      pixels = MakeFlowerTexture(look);
       break;
   }
   Result<std::vector<unsigned char>> png = image::EncodeRgba8Png(pixels);
@@ -247,6 +250,10 @@ Result<gltf::Document> TreeGltfDocument(const TreeMesh& mesh, const GltfSkinning
                              LeafShapeName(mesh.look.leaf_shape) + "\",\"season\":\"" +
                              SeasonName(mesh.look.season) + "\",\"autumn_colour\":\"" +
                              AutumnColourName(mesh.look.autumn) + "\"}";
+    } else if (part.material.texture == TextureKind::kFlower) {
+      material.extras_json = std::string("{\"flower_colour\":\"") +
+                             FlowerColourName(mesh.look.flower_colour) + "\",\"flower_form\":\"" +
+                             FlowerFormName(mesh.look.flower_form) + "\"}";
     }
     doc.materials.push_back(std::move(material));
     gltf::Primitive primitive;

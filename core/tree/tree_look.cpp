@@ -1,5 +1,5 @@
-// The tree's look (leaf shape, season, autumn colour) from its table rows, and what each season
-// shows.
+// The tree's look (leaf shape, season, autumn colour, flower colour and form) from its table rows,
+// and what each season shows.
 #include "tree/tree_look.h"
 
 #include <algorithm>
@@ -19,6 +19,10 @@ TreeLook LookFromParams(const TreeParams& params) {
   look.season = static_cast<Season>(Clamped(params, TreeParam::kSeason, kSeasonCount));
   look.autumn =
       static_cast<AutumnColour>(Clamped(params, TreeParam::kAutumnColour, kAutumnColourCount));
+  look.flower_colour =
+      static_cast<FlowerColour>(Clamped(params, TreeParam::kFlowerColour, kFlowerColourCount));
+  look.flower_form =
+      static_cast<FlowerForm>(Clamped(params, TreeParam::kFlowerForm, kFlowerFormCount));
   return look;
 }
 
@@ -67,6 +71,16 @@ const char* SeasonName(Season season) {
 const char* AutumnColourName(AutumnColour colour) {
   static const char* const kNames[] = {"evergreen", "red-orange", "red", "yellow", "orange-brown"};
   return kNames[static_cast<int>(colour)];
+}
+
+const char* FlowerColourName(FlowerColour colour) {
+  static const char* const kNames[] = {"pale-pink", "deep-pink", "magenta", "red", "white"};
+  return kNames[static_cast<int>(colour)];
+}
+
+const char* FlowerFormName(FlowerForm form) {
+  static const char* const kNames[] = {"cherry", "azalea"};
+  return kNames[static_cast<int>(form)];
 }
 
 std::optional<Season> ParseSeason(std::string_view name) {

@@ -1,6 +1,7 @@
-// How a grown tree is dressed when it is meshed and textured: its leaf shape, the season and its
-// autumn colour (the tree table's leaf_shape, season and autumn_colour rows). Does not: grow
-// anything, build meshes (tree/mesh) or paint textures (tree/tree_textures).
+// How a grown tree is dressed when it is meshed and textured: its leaf shape, the season, its
+// autumn colour and its flowers' colour and form (the tree table's leaf_shape, season,
+// autumn_colour, flower_colour and flower_form rows). Does not: grow anything, build meshes
+// (tree/mesh) or paint textures (tree/tree_textures).
 #pragma once
 
 #include <optional>
@@ -38,10 +39,29 @@ enum class AutumnColour : int {
 };
 constexpr int kAutumnColourCount = 5;
 
+// The flower_colour row: the petals' colour (sources in the presets that use them).
+enum class FlowerColour : int {
+  kPalePink = 0,  // Somei-yoshino: pale pink, fading to white
+  kDeepPink = 1,  // beni-shidare (a deep pink shidare-zakura)
+  kMagenta = 2,   // Hirado 'Omurasaki', many Kurume azaleas
+  kRed = 3,       // Kurume azalea 'Hinode-giri' (crimson)
+  kWhite = 4,
+};
+constexpr int kFlowerColourCount = 5;
+
+// The flower_form row: what the flower card's texture shows.
+enum class FlowerForm : int {
+  kCherry = 0,  // an umbel of seven flat five-petal blossoms with notched petal tips
+  kAzalea = 1,  // a truss of three funnel flowers: five round lobes, spotted upper lobe, stamens
+};
+constexpr int kFlowerFormCount = 2;
+
 struct TreeLook {
   LeafShape leaf_shape = LeafShape::kBroad;
   Season season = Season::kSummer;
   AutumnColour autumn = AutumnColour::kRedOrange;
+  FlowerColour flower_colour = FlowerColour::kPalePink;
+  FlowerForm flower_form = FlowerForm::kCherry;
 };
 
 // The look the rows of `params` ask for (values outside the rows' ranges are clamped).
@@ -60,6 +80,8 @@ float LeafQuadAspect(LeafShape shape);
 const char* LeafShapeName(LeafShape shape);
 const char* SeasonName(Season season);
 const char* AutumnColourName(AutumnColour colour);
+const char* FlowerColourName(FlowerColour colour);  // "pale-pink", "deep-pink", "magenta", ...
+const char* FlowerFormName(FlowerForm form);        // "cherry", "azalea"
 
 // The value of a name above ("winter" -> kWinter); nullopt for another text.
 std::optional<Season> ParseSeason(std::string_view name);

@@ -14,8 +14,10 @@ constexpr int Id(TreeParam p) { return static_cast<int>(p); }
 
 // Stages: every growth row regrows (leaf_size and pipe_area too: the leaf-sphere radius and the
 // pipe model are growth inputs); sway and wind rows only restart the sway; render rows only change
-// the hybrid view. leaf_shape is used by the mesh alone (kMesh); season and autumn_colour only
-// dress the tree already grown (kView): neither regrows.
+// the hybrid view. leaf_shape is used by the mesh alone (kMesh); season, autumn_colour,
+// flower_colour and flower_form only dress the tree already grown (kView): none regrows.
+// terminal_flowers places flowers while growing (kGrow) but draws no random number, so trees
+// without it grow the same.
 //
 // Defaults are the sakura column of thesis table 2.2. "a ~ b" ranges are split into *_low (value at
 // hormone 0, or for P_l at age 0) and *_high (value at hormone H_sat, or at age P_l_years).
@@ -249,6 +251,15 @@ const std::vector<ParamSpec>& Rows() {
       {Id(P::kAutumnColour), "autumn_colour", "", "", 1, 0, 4, true, "render", kView,
        "Colour the leaves turn in autumn: 0 evergreen (stay green, kept in winter), 1 red-orange "
        "(sakura), 2 red (maple), 3 yellow (ginkgo), 4 orange-brown (keyaki)."},
+      {Id(P::kFlowerColour), "flower_colour", "", "", 0, 0, 4, true, "render", kView,
+       "Colour of the flowers: 0 pale pink (Somei-yoshino), 1 deep pink (beni-shidare), 2 "
+       "magenta (Hirado and Kurume azaleas), 3 red (azalea 'Hinode-giri'), 4 white."},
+      {Id(P::kFlowerForm), "flower_form", "", "", 0, 0, 1, true, "render", kView,
+       "Form of the flowers: 0 cherry (umbels of five notched petals, flat), 1 azalea (trusses "
+       "of funnel flowers with five round lobes, a spotted upper lobe and long stamens)."},
+      {Id(P::kTerminalFlowers), "terminal_flowers", "", "", 0, 0, 1, true, "branching", kGrow,
+       "Terminal flower buds (not in the thesis; Rhododendron): 1: every shoot of last year opens "
+       "a flower truss at its tip this spring (the new shoots break beside it); 0: off."},
   };
   return rows;
 }

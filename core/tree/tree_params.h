@@ -120,6 +120,11 @@ enum class TreeParam : int {
   kLeafShape,
   kSeason,
   kAutumnColour,
+  // flowers (not in the thesis; core/tree/tree_look.h, growth.cpp): colour and form of the flower
+  // cards, and terminal flower buds (Rhododendron)
+  kFlowerColour,
+  kFlowerForm,
+  kTerminalFlowers,
   kCount
 };
 

@@ -276,11 +276,34 @@ Rgb LeafColour(const TreeLook& look) {
 
 // ---- Blossoms ----
 
-const Rgb kPetal{0.99, 0.83, 0.88}, kPetalCentre{0.90, 0.45, 0.60}, kStamen{0.95, 0.80, 0.35};
+// The petals' colours of a flower_colour (tree_look.h): petal, the centre or throat (and an
+// azalea's blotch), the stamens' filaments, the anthers.
+struct Palette {
+  Rgb petal, centre, stamen, anther;
+};
+
+Palette FlowerPalette(FlowerColour colour) {
+  switch (colour) {
+    case FlowerColour::kDeepPink:
+      return {{0.97, 0.60, 0.74}, {0.82, 0.28, 0.47}, {0.95, 0.80, 0.40}, {0.85, 0.62, 0.25}};
+    case FlowerColour::kMagenta:
+      return {{0.86, 0.20, 0.58}, {0.58, 0.05, 0.34}, {0.93, 0.52, 0.76}, {0.36, 0.14, 0.22}};
+    case FlowerColour::kRed:
+      return {{0.88, 0.12, 0.16}, {0.56, 0.03, 0.07}, {0.95, 0.42, 0.42}, {0.35, 0.12, 0.10}};
+    case FlowerColour::kWhite:
+      return {{0.97, 0.96, 0.94}, {0.78, 0.85, 0.60}, {0.95, 0.86, 0.42}, {0.80, 0.62, 0.22}};
+    case FlowerColour::kPalePink:
+    default:
+      return {{0.99, 0.83, 0.88}, {0.90, 0.45, 0.60}, {0.95, 0.80, 0.35}, {0.95, 0.80, 0.35}};
+  }
+}
+
+const Palette kCherryPalette = FlowerPalette(FlowerColour::kPalePink);
 
 // A five-petal blossom of radius 1 centred at the origin, one petal pointing along `rotation`:
 // coverage (0..1, antialiased over `pixel` units) and colour at (dx, dy).
-double Blossom(double dx, double dy, double rotation, double pixel, Rgb* colour) {
+double Blossom(double dx, double dy, double rotation, double pixel, const Palette& palette,
+               Rgb* colour) {
   constexpr int kPetals = 5;
   double r = std::sqrt(dx * dx + dy * dy);
   if (r > 1.0 + pixel) return 0.0;
@@ -293,10 +316,94 @@ double Blossom(double dx, double dy, double rotation, double pixel, Rgb* colour)
   if (coverage <= 0.0) return 0.0;
   double centre = 0.6 * (1.0 - SmoothStep(0.06, 0.32, r));
   double rim = SmoothStep(radius - 0.08, radius, r);  // a faint darker outline between blossoms
-  Rgb petal = Scale(MixRgb(kPetal, kPetalCentre, centre), 1.0 - 0.12 * rim);
+  Rgb petal = Scale(MixRgb(palette.petal, palette.centre, centre), 1.0 - 0.12 * rim);
   double stamen = 1.0 - SmoothStep(0.06, 0.10, r);
-  *colour = MixRgb(petal, kStamen, stamen);
+  *colour = MixRgb(petal, palette.stamen, stamen);
   return coverage;
+}
+
+// Coverage of a segment from the origin along the unit direction (ux, uy), `length` long and
+// `half` wide, at (dx, dy), antialiased over `pixel`.
+double Stroke(double dx, double dy, double ux, double uy, double length, double half,
+              double pixel) {
+  double t = dx * ux + dy * uy;
+  if (t < 0.0 || t > length) return 0.0;
+  double perp = std::fabs(dx * uy - dy * ux);
+  return Clamp01((half - perp) / pixel + 0.5);
+}
+
+// A Rhododendron (azalea) flower seen face-on, radius 1 at the lobe tips, its upper lobe along
+// `rotation`: a funnel-shaped corolla of five fused, rounded lobes (shallow sinuses, no notch),
+// shaded darker into the throat, a blotch of darker spots on the upper lobe, and five long
+// stamens with the style curving out of the throat on the lower side (declinate), each ending in
+// a dark anther. Coverage and colour at (dx, dy), as Blossom.
+double AzaleaFlower(double dx, double dy, double rotation, double pixel, const Palette& palette,
+                    Rgb* colour) {
+  constexpr int kLobes = 5;
+  const double r = std::sqrt(dx * dx + dy * dy);
+  const double angle = det::Atan2(dy, dx) - rotation;  // 0 at the upper lobe's midline
+  const double c = det::Cos(kLobes * angle);
+  // Stamens and style: six strokes from the throat towards the lower side, fanned ±20°.
+  double filament = 0.0, anther = 0.0;
+  for (int k = 0; k < 6; ++k) {
+    const double a = rotation + det::kPi + (-20.0 + 8.0 * k) * kDegree;
+    const double ux = det::Cos(a), uy = det::Sin(a);
+    const double length = (k == 3 ? 1.02 : 0.86 + 0.03 * (k % 3));  // the style the longest
+    filament = std::max(filament, Stroke(dx, dy, ux, uy, length, 0.013, pixel));
+    const double ex = dx - ux * length, ey = dy - uy * length;
+    anther = std::max(anther, Clamp01((0.045 - std::sqrt(ex * ex + ey * ey)) / pixel + 0.5));
+  }
+  double radius = 0.70 + 0.28 * std::sqrt(0.5 + 0.5 * c);  // fused lobes: shallow sinuses
+  double corolla = r > 1.0 + pixel ? 0.0 : Clamp01((radius - r) / pixel + 0.5);
+  double coverage = std::max(corolla, std::max(filament, anther));
+  if (coverage <= 0.0) return 0.0;
+  // The funnel: darker and more saturated towards the throat; a faint rim between lobes.
+  double throat = 0.75 * (1.0 - SmoothStep(0.05, 0.45, r));
+  double rim = SmoothStep(radius - 0.06, radius, r);
+  double vein = 0.06 * (0.5 + 0.5 * det::Cos(2.0 * kLobes * angle));  // a crease along each lobe
+  Rgb petal = Scale(MixRgb(palette.petal, palette.centre, throat), 1.0 - 0.10 * rim - vein);
+  // The blotch: darker spots on the upper lobe, between r 0.18 and 0.62, within ±24°.
+  double wrapped = angle - 2.0 * det::kPi * std::floor((angle + det::kPi) / (2.0 * det::kPi));
+  if (std::fabs(wrapped) < 24.0 * kDegree && r > 0.18 && r < 0.62) {
+    double sx = r * 11.0, sy = wrapped / kDegree / 7.0;  // a lattice of spots
+    double fx = sx - std::floor(sx) - 0.5, fy = sy - std::floor(sy) - 0.5;
+    double spot = 1.0 - SmoothStep(0.16, 0.30, std::sqrt(fx * fx + fy * fy));
+    petal = MixRgb(petal, Scale(palette.centre, 0.7), 0.85 * spot);
+  }
+  Rgb out = corolla > 0.0 ? petal : palette.stamen;
+  out = MixRgb(out, palette.stamen, filament * (corolla > 0.0 ? 0.9 : 1.0));
+  out = MixRgb(out, palette.anther, anther);
+  *colour = out;
+  return coverage;
+}
+
+// One flower placed on a flower card: centre, radius, rotation (uv units) and a shade factor.
+struct Placed {
+  double x, y, radius, rotation, shade;
+};
+
+// Paints placed flowers back to front ("over"), each with `flower`, into a size × size image.
+template <typename Flower>
+Rgba8Image PaintFlowers(int size, const std::vector<Placed>& placed, const Palette& palette,
+                        Flower flower) {
+  Rgba8Image image = Allocate(size, size);
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      double px = (x + 0.5) / image.width - 0.5, py = (y + 0.5) / image.height - 0.5;
+      Rgb out{palette.petal};
+      double alpha = 0.0;
+      for (const Placed& b : placed) {
+        Rgb colour{0, 0, 0};
+        double a = flower((px - b.x) / b.radius, (py - b.y) / b.radius, b.rotation,
+                          1.0 / (b.radius * image.width), palette, &colour);
+        if (a <= 0.0) continue;
+        out = MixRgb(alpha > 0.0 ? out : colour, Scale(colour, b.shade), a);  // "over"
+        alpha = a + alpha * (1.0 - a);
+      }
+      SetPixel(&image, x, y, out, alpha);
+    }
+  }
+  return image;
 }
 
 }  // namespace
@@ -371,46 +478,43 @@ Rgba8Image MakeBlossomTexture(int size) {
     for (int x = 0; x < image.width; ++x) {
       double dx = 2.0 * (x + 0.5) / image.width - 1.0, dy = 2.0 * (y + 0.5) / image.height - 1.0;
       Rgb colour{0, 0, 0};
-      double a = Blossom(dx, dy, 0.5 * det::kPi, pixel, &colour);
-      SetPixel(&image, x, y, a > 0.0 ? colour : Rgb{kPetal}, a);
+      double a = Blossom(dx, dy, 0.5 * det::kPi, pixel, kCherryPalette, &colour);
+      SetPixel(&image, x, y, a > 0.0 ? colour : kCherryPalette.petal, a);
     }
   }
   return image;
 }
 
-Rgba8Image MakeBlossomClusterTexture(int size) {
-  Rgba8Image image = Allocate(size, size);
-  struct Placed {
-    double x, y, radius, rotation, shade;
-  };
+Rgba8Image MakeBlossomClusterTexture(int size) { return MakeFlowerTexture(TreeLook{}, size); }
+
+Rgba8Image MakeFlowerTexture(const TreeLook& look, int size) {
+  const Palette palette = FlowerPalette(look.flower_colour);
+  std::vector<Placed> placed;
+  if (look.flower_form == FlowerForm::kAzalea) {
+    // A truss of three funnel flowers (Kurume azaleas: 2-4 a truss, 2.5-4 cm across), each
+    // facing outwards: its spotted upper lobe towards the truss's centre, its stamens out.
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t key = static_cast<uint32_t>(k);
+      double at = (90.0 + 120.0 * k + 16.0 * (Hash01(key, 4u, 83u) - 0.5)) * kDegree;
+      double ring = 0.205 + 0.02 * (Hash01(key, 3u, 83u) - 0.5);
+      placed.push_back({ring * det::Cos(at), ring * det::Sin(at),
+                        0.28 + 0.015 * Hash01(key, 5u, 83u),
+                        at + det::kPi + 12.0 * (Hash01(key, 6u, 83u) - 0.5) * kDegree,
+                        0.9 + 0.1 * Hash01(key, 7u, 83u)});
+    }
+    return PaintFlowers(size, placed, palette, AzaleaFlower);
+  }
   // Six blossoms around one, each turned and shaded a little differently (fixed hashes).
-  std::vector<Placed> blossoms;
   for (int k = 0; k < 7; ++k) {
     const uint32_t key = static_cast<uint32_t>(k);
     double ring = k == 0 ? 0.0 : 0.29 + 0.03 * (Hash01(key, 3u, 97u) - 0.5);
     double at = (60.0 * k + 14.0 * (Hash01(key, 4u, 97u) - 0.5)) * kDegree;
     double radius = k == 0 ? 0.21 : 0.19 + 0.02 * Hash01(key, 5u, 97u);
-    blossoms.push_back({ring * det::Cos(at), ring * det::Sin(at), radius,
-                        2.0 * det::kPi * Hash01(key, 6u, 97u), 0.9 + 0.1 * Hash01(key, 7u, 97u)});
+    placed.push_back({ring * det::Cos(at), ring * det::Sin(at), radius,
+                      2.0 * det::kPi * Hash01(key, 6u, 97u), 0.9 + 0.1 * Hash01(key, 7u, 97u)});
   }
-  std::rotate(blossoms.begin(), blossoms.begin() + 1, blossoms.end());  // the centre one on top
-  for (int y = 0; y < image.height; ++y) {
-    for (int x = 0; x < image.width; ++x) {
-      double px = (x + 0.5) / image.width - 0.5, py = (y + 0.5) / image.height - 0.5;
-      Rgb out{kPetal};
-      double alpha = 0.0;
-      for (const Placed& b : blossoms) {
-        Rgb colour{0, 0, 0};
-        double a = Blossom((px - b.x) / b.radius, (py - b.y) / b.radius, b.rotation,
-                           1.0 / (b.radius * image.width), &colour);
-        if (a <= 0.0) continue;
-        out = MixRgb(alpha > 0.0 ? out : colour, Scale(colour, b.shade), a);  // "over"
-        alpha = a + alpha * (1.0 - a);
-      }
-      SetPixel(&image, x, y, out, alpha);
-    }
-  }
-  return image;
+  std::rotate(placed.begin(), placed.begin() + 1, placed.end());  // the centre one on top
+  return PaintFlowers(size, placed, palette, Blossom);
 }
 
 std::string ImageDigest(const Rgba8Image& image) {

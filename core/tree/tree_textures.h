@@ -1,10 +1,11 @@
 // Procedural RGBA8 textures of the tree's exported and drawn materials (bark colour and normal
-// map, one leaf blade per leaf shape in its season's colour, blossoms), as image::Rgba8Image (row 0
-// is texture coordinate v = 0, glTF's top-left origin; PNG encoding is image/png.h). The .glb
-// (tree/tree_gltf) and the page (web/bindings/texture_bindings.cpp) use the same pixels.
-// Deterministic: integer hashing and det:: math only, so the native and WASM builds give the same
-// bytes. Why no library: none of the header-only image libraries here (stb) paints; this is a few
-// noise and distance functions. Does not: encode files, or texture anything but the tree.
+// map, one leaf blade per leaf shape in its season's colour, flowers per colour and form), as
+// image::Rgba8Image (row 0 is texture coordinate v = 0, glTF's top-left origin; PNG encoding is
+// image/png.h). The .glb (tree/tree_gltf) and the page (web/bindings/texture_bindings.cpp) use the
+// same pixels. Deterministic: integer hashing and det:: math only, so the native and WASM builds
+// give the same bytes. Why no library: none of the header-only image libraries here (stb) paints;
+// this is a few noise and distance functions. Does not: encode files, or texture anything but the
+// tree.
 #pragma once
 
 #include <string>
@@ -37,8 +38,14 @@ Rgba8Image MakeLeafTexture(const TreeLook& look, int size = kTreeTextureSize);
 Rgba8Image MakeBlossomTexture(int size = kTreeTextureSize);
 
 // The flower card's texture: seven five-petal blossoms packed in the unit disc (an umbel seen from
-// above), so that a flower node reads from a distance; alpha 0 outside the blossoms.
+// above), so that a flower node reads from a distance; alpha 0 outside the blossoms. The default
+// look's flowers (pale pink cherry): MakeFlowerTexture(TreeLook{}, size).
 Rgba8Image MakeBlossomClusterTexture(int size = kTreeTextureSize);
+
+// The flower card's texture of a look's flower_colour and flower_form: the cherry umbel above in
+// that colour, or (azalea) a truss of three funnel flowers with round lobes, a spotted upper lobe
+// and long stamens; alpha 0 outside the flowers.
+Rgba8Image MakeFlowerTexture(const TreeLook& look, int size = kTreeTextureSize);
 
 // FNV-1a digest of an image's size and pixels ("%016llx"), for native == WASM checks.
 std::string ImageDigest(const Rgba8Image& image);

@@ -4,7 +4,8 @@
 // restages the tree (no regrowth) and the picture follows it, judged by colour histograms of the
 // canvas: spring sakura pink without green leaves, summer green with pink, autumn red-orange without
 // pink, winter neither; pine keeps green needles in winter, maple turns red and ginkgo yellow in
-// autumn. The page's textures are the native CLI's .glb textures (digests). Screenshots to LOOK
+// autumn, tsutsuji flowers magenta in spring. The page's textures are the native CLI's .glb
+// textures (digests). Screenshots to LOOK
 // at: build/artifacts/tex-*.png.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -21,13 +22,14 @@ async function histogram(page) {
   return page.evaluate(() => {
     const { data: d } = window.__niwaCanvasImage('#view');
     const n = d.length / 4;
-    const c = { pink: 0, green: 0, warm: 0, yellow: 0, dark: 0 };
+    const c = { pink: 0, green: 0, warm: 0, yellow: 0, magenta: 0, dark: 0 };
     for (let i = 0; i < d.length; i += 4) {
       const r = d[i], g = d[i + 1], b = d[i + 2];
       if (r > 170 && r - g > 20 && b > g && r - b < 60) c.pink++;
       else if (g > r + 12 && g > b + 12) c.green++;
       else if (r > 110 && r - g > 45 && r - b > 70 && b < g + 20) c.warm++;
       else if (r > 140 && g > 110 && b < 0.55 * g && Math.abs(r - g) < 70) c.yellow++;
+      else if (r > 120 && r - g > 70 && b - g > 40) c.magenta++;
       if (0.299 * r + 0.587 * g + 0.114 * b < 70) c.dark++;
     }
     for (const k of Object.keys(c)) c[k] /= n;
@@ -170,6 +172,9 @@ await runBrowserTest(async (server, browser) => {
     ['maple-autumn', 'preset=maple&seed=1&years=8&season=2', (h) => h.warm > 0.01 && h.green < 0.3 * h.warm, 'autumn: red'],
     ['ginkgo-autumn', 'preset=ginkgo&seed=1&years=8&season=2', (h) => h.yellow > 0.01, 'autumn: yellow'],
     ['keyaki-autumn', 'preset=keyaki&seed=1&years=8&season=2', (h) => h.warm + h.yellow > 0.01, 'autumn: orange-brown'],
+    // Each flowering species' own flowers (flower_colour, flower_form, terminal_flowers rows).
+    ['tsutsuji-spring', 'preset=tsutsuji&seed=1&years=15&season=0', (h) => h.magenta > 0.01 && h.green > 0.005, 'spring: magenta azalea trusses over green leaves'],
+    ['weeping-spring', 'preset=weeping&seed=1&years=12&season=0', (h) => h.pink > 0.002 && h.green < 0.002, 'spring: pink blossom on bare wood'],
   ];
   // A fresh page per tree: a hash link grows it from scratch.
   const openTree = async (hash) => {

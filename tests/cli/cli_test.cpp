@@ -5,9 +5,12 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "support/cli_runner.h"
 #include "support/expect_error.h"
+#include "tree/tree_simple.h"
 
 namespace niwa {
 namespace {
@@ -293,6 +296,36 @@ TEST(Cli, ParamsListsAStudysTableWithStagesAndGroupTitlesInJson) {
   EXPECT_EQ(RunNiwa({"presets", "tree"}).out, RunNiwa({"presets"}).out);
   ExpectOneLineError(RunNiwa({"params", "bark-beetle"}),
                      "study: unknown 'bark-beetle', must be one of tree");
+}
+
+// 'niwa params tree --json' carries the Getting started group the page's panel shows (issue 17
+// item 8): the same JSON the page's worker gets (TreeParamTableJsonWithSimple), with the plain
+// name and help on exactly the group's rows; other studies' tables have no such group.
+TEST(Cli, ParamsJsonCarriesTheGettingStartedGroup) {
+  Result json = RunNiwa({"params", "tree", "--json"});
+  ASSERT_EQ(json.code, 0) << json.err;
+  EXPECT_EQ(json.out, TreeParamTableJsonWithSimple() + "\n");
+  nlohmann::json rows = nlohmann::json::parse(json.out);
+  std::vector<std::string> simple;
+  for (const auto& row : rows) {
+    if (!row.contains("simple")) {
+      EXPECT_FALSE(row.contains("simple_help")) << row["key"];
+      continue;
+    }
+    simple.push_back(row["key"].get<std::string>());
+    EXPECT_FALSE(row["simple"].get<std::string>().empty()) << row["key"];
+    EXPECT_GT(row["simple_help"].get<std::string>().size(), 20u) << row["key"];
+  }
+  std::vector<std::string> expected;
+  for (const SimpleControl& c : TreeSimpleControls()) {
+    expected.push_back(Spec(c.row).key);
+    EXPECT_EQ(rows[static_cast<std::size_t>(c.row)]["simple"], c.name);
+  }
+  EXPECT_EQ(simple, expected);
+  EXPECT_GE(simple.size(), 5u);
+  Result ivy = RunNiwa({"params", "ivy", "--json"});
+  ASSERT_EQ(ivy.code, 0) << ivy.err;
+  EXPECT_EQ(ivy.out.find("\"simple\""), std::string::npos);
 }
 
 // Every command file's commands are registered (the list is generated from the glob), in the order

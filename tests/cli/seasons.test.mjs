@@ -101,6 +101,29 @@ try {
     check(a.equals(b), `${c.name}: native and WASM .glb identical (${a.length} bytes)`);
   }
 
+  // Each flowering species' own flowers (flower_colour, flower_form, terminal_flowers rows):
+  // `--season spring` shows the azalea's magenta funnel trusses over its leaves, the weeping
+  // cherry's deep pink and Somei-yoshino's pale pink umbels on bare wood.
+  for (const [preset, years, colour, form, parts] of [
+    ['tsutsuji', 15, 'magenta', 'azalea', ['bark', 'leaves', 'flowers']],
+    ['weeping', 10, 'deep-pink', 'cherry', ['bark', 'flowers']],
+    ['sakura', 10, 'pale-pink', 'cherry', ['bark', 'flowers']]]) {
+    const out = join(dir, `${preset}-spring.glb`);
+    run(native, ['tree', 'grow', '--preset', preset, '--years', String(years), '--season', 'spring', '--out', out]);
+    const bytes = readFileSync(out);
+    const gltf = gltfJson(bytes);
+    const names = gltf.materials.map((m) => m.name);
+    check(JSON.stringify(names) === JSON.stringify(parts), `${preset} --season spring: materials ${names.join(', ')}`);
+    const flowers = gltf.materials.find((m) => m.name === 'flowers');
+    check(flowers?.extras?.flower_colour === colour && flowers?.extras?.flower_form === form,
+      `${preset} --season spring: flowers ${flowers?.extras?.flower_colour} ${flowers?.extras?.flower_form}`);
+    const primitive = gltf.meshes[0].primitives[names.indexOf('flowers')];
+    const cards = primitive ? gltf.accessors[primitive.indices].count / 60 : 0;  // 20 triangles a card
+    check(cards >= (preset === 'tsutsuji' ? 300 : 100), `${preset} --season spring: ${cards} flower cards`);
+    const report = await validator.validateBytes(new Uint8Array(bytes), { maxIssues: 20 });
+    check(report.issues.numErrors === 0, `${preset} --season spring: gltf-validator ${report.issues.numErrors} errors`);
+  }
+
   // The season is part of the share link: --url with season=3 gives the bare winter tree.
   {
     const out = join(dir, 'url.glb');

@@ -361,7 +361,11 @@ namespace {
 
 TreeMesh MeshIn(const Tree& tree, LeafShape shape, Season season, AutumnColour autumn) {
   MeshOptions options;
-  options.look = TreeLook{shape, season, autumn};
+  TreeLook look;
+  look.leaf_shape = shape;
+  look.season = season;
+  look.autumn = autumn;
+  options.look = look;
   return BuildTreeMesh(tree, options);
 }
 

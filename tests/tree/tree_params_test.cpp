@@ -66,7 +66,7 @@ TEST(TreeParamStages, RowsAfterGrowLeaveTheTreeAndItsMeshUnchanged) {
     }
     ++checked;
   }
-  EXPECT_EQ(checked, 29);  // 13 sway, 9 wind, 6 render rows and leaf_shape (mesh)
+  EXPECT_EQ(checked, 31);  // 13 sway, 9 wind, 8 render rows and leaf_shape (mesh)
 }
 
 TEST(TreeParamStages, AGrowRowDoesChangeTheTree) {

@@ -18,8 +18,9 @@
 //                                     uvs (Float32 uv: the texture coordinates of the .glb; leaves
 //                                     v = 0 at the petiole); bark also branchIds (Uint32 per
 //                                     vertex) and branchParents (Int32 per branch, -1 at the root)
-//     "atlas.bark" | "atlas.leaves" | "atlas.flowers"   positions, normals, indices: clip-space
-//                                     triangles that paint the card atlas (after buildHybrid)
+//     "atlas.bark" | "atlas.leaves" | "atlas.flowers"   positions, normals, uvs, indices:
+//                                     clip-space triangles that paint the card atlas (after
+//                                     buildHybrid), uvs into the part's texture
 //     "cards"                         positions, uvs, indices, joints, weights (after hybridView)
 //     "lines"                         positions, colors, widths, joints, weights (after hybridView)
 //     "sway"                          poses (16 floats per node point and instance, WriteSwayPoses)
@@ -159,6 +160,7 @@ class TreeSession {
     const auto atlas = [&out](const MeshBuffers& mesh) {
       out.Add("positions", mesh.positions)
           .Add("normals", mesh.normals)
+          .Add("uvs", mesh.uvs)
           .Add("indices", mesh.indices);
     };
     if (group == "bark") {
@@ -292,12 +294,15 @@ class TreeSession {
   }
 
   // The look of the mesh last built, for the textures (web/bindings/texture_bindings.cpp):
-  // {"leaf_shape": 0..3, "season": 0..3, "autumn_colour": 0..4} (core/tree/tree_look.h).
+  // {"leaf_shape": 0..3, "season": 0..3, "autumn_colour": 0..4, "flower_colour": 0..4,
+  // "flower_form": 0..1} (core/tree/tree_look.h).
   std::string lookJson() const {
     ordered_json out;
     out["leaf_shape"] = static_cast<int>(mesh_.look.leaf_shape);
     out["season"] = static_cast<int>(mesh_.look.season);
     out["autumn_colour"] = static_cast<int>(mesh_.look.autumn);
+    out["flower_colour"] = static_cast<int>(mesh_.look.flower_colour);
+    out["flower_form"] = static_cast<int>(mesh_.look.flower_form);
     return out.dump();
   }
 

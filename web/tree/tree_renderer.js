@@ -32,7 +32,11 @@ export const PARTS = {
 // `texture`, with a depth buffer) from the worker's clip-space triangles of the group
 // representatives and leaf clusters, lit by `light` like the full view and transparent elsewhere,
 // then mipmaps `texture` for distant cards. Returns the triangles drawn. Used by the page and the grove.
-export function paintAtlas(gl, program, hybrid, fb, texture, light) {
+// With `textures` (kind -> {texture}: the worker's bark, leaf and flower textures, as the full
+// view) and a program over tree_textured.frag, each part is painted from its own texture through
+// the atlas triangles' uvs (leaf blades and blossoms cut out by alpha, as the full view and the
+// .glb's cards_* atlas); without, in the parts' plain colours (PARTS).
+export function paintAtlas(gl, program, hybrid, fb, texture, light, textures = null) {
   const size = hybrid.atlasSize;
   gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
   gl.viewport(0, 0, size, size);
@@ -55,11 +59,30 @@ export function paintAtlas(gl, program, hybrid, fb, texture, light) {
     const buffers = [staticBuffer(gl, part.positions), staticBuffer(gl, part.normals)];
     floatAttribute(gl, 0, buffers[0], 3);
     floatAttribute(gl, 1, buffers[1], 3);
+    const spec = TEXTURED[name];
+    const map = textures && part.uvs && textures[spec.map];
+    if (map) {
+      buffers.push(staticBuffer(gl, part.uvs));
+      floatAttribute(gl, 2, buffers[buffers.length - 1], 2);
+    }
     buffers.push(staticBuffer(gl, part.indices, gl.ELEMENT_ARRAY_BUFFER));
     const look = PARTS[name];
     gl.uniform3fv(program.uniforms.uColor, look.color);
     gl.uniform3fv(program.uniforms.uColorVariation, look.variation);
     gl.uniform1f(program.uniforms.uDoubleSided, look.doubleSided);
+    if (textures) {
+      // The bark's normal map is left out: the atlas has no world positions for its tangent frame.
+      gl.uniform1f(program.uniforms.uUseTexture, map ? 1 : 0);
+      gl.uniform1f(program.uniforms.uUseNormalMap, 0);
+      gl.uniform1f(program.uniforms.uAlphaCutoff, spec.alphaCutoff);
+      gl.activeTexture(gl.TEXTURE1);
+      gl.bindTexture(gl.TEXTURE_2D, map ? map.texture : null);
+      gl.uniform1i(program.uniforms.uBaseMap, 1);
+      gl.activeTexture(gl.TEXTURE2);
+      gl.bindTexture(gl.TEXTURE_2D, null);
+      gl.uniform1i(program.uniforms.uNormalMap, 2);
+      gl.activeTexture(gl.TEXTURE0);
+    }
     gl.drawElements(gl.TRIANGLES, count, gl.UNSIGNED_INT, 0);
     triangles += count / 3;
     gl.bindVertexArray(null);
@@ -202,7 +225,7 @@ export class Renderer {
   async init(shaderBase = SHADERS) {
     const gl = this.gl;
     const p = await loadPrograms(gl, shaderBase, {
-      tree: ['tree.vert', 'tree_textured.frag'], pick: ['pick.vert', '../common/pick.frag'], atlas: ['atlas.vert', 'tree.frag'],
+      tree: ['tree.vert', 'tree_textured.frag'], pick: ['pick.vert', '../common/pick.frag'], atlas: ['atlas.vert', 'tree_textured.frag'],
       card: ['card.vert', 'card.frag'], line: ['line.vert', 'line.frag'], ground: ['../common/ground.vert', '../common/ground.frag'],
     });
     this.treeProgram = p.tree;
@@ -328,8 +351,8 @@ export class Renderer {
   }
 
   // Hybrid mode (thesis 4.2): paints the card atlas once per tree from the worker's clip-space
-  // triangles (group representatives and leaf clusters, each projected onto its tile), lit by the
-  // sun like the full view, transparent elsewhere; mipmapped for distant cards.
+  // triangles (group representatives and leaf clusters, each projected onto its tile), textured
+  // and lit by the sun like the full view, transparent elsewhere; mipmapped for distant cards.
   setHybrid(hybrid) {
     const gl = this.gl;
     this.hybrid = null;
@@ -354,7 +377,7 @@ export class Renderer {
       gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depth);
       this.atlas = { texture, depth, fb, size };
     }
-    const triangles = paintAtlas(gl, this.atlasProgram, hybrid, this.atlas.fb, this.atlas.texture, this.light);
+    const triangles = paintAtlas(gl, this.atlasProgram, hybrid, this.atlas.fb, this.atlas.texture, this.light, this.textures);
     this.hybrid = { atlasSize: size, atlasTriangles: triangles };
   }
 

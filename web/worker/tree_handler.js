@@ -28,11 +28,13 @@ export function createHandler(Module, ctx) {
 
   // The procedural textures of a look (core/tree/tree_textures.h: the .glb's own pixels), painted
   // once per look and kept: kind -> {width, height, pixels: Uint8Array, digest}.
-  const textureCache = new Map();  // "bark" | "barkNormal" | "leaf:shape,season,autumn" | "flower"
+  const textureCache = new Map();  // "bark" | "barkNormal" | "leaf:shape,season,autumn" | "flower:colour,form"
   function texture(kind, look) {
-    const key = kind === 'leaf' ? `leaf:${look.leaf_shape},${look.season},${look.autumn_colour}` : kind;
+    const flowerColour = look.flower_colour ?? 0, flowerForm = look.flower_form ?? 0;
+    const key = kind === 'leaf' ? `leaf:${look.leaf_shape},${look.season},${look.autumn_colour}`
+      : kind === 'flower' ? `flower:${flowerColour},${flowerForm}` : kind;
     if (!textureCache.has(key)) {
-      textureCache.set(key, Module.treeTexture(kind, look.leaf_shape, look.season, look.autumn_colour));
+      textureCache.set(key, Module.treeTexture(kind, look.leaf_shape, look.season, look.autumn_colour, flowerColour, flowerForm));
     }
     return textureCache.get(key);
   }
