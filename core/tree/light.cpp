@@ -222,6 +222,8 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
   // Rasterize, conserving each sphere's extinction mass σ·V: spread over the voxels whose centres
   // lie inside it, or put in the voxel of its centre when it is smaller than a cell and hits none.
   std::vector<float>& dx2 = buffers.dx2;
+  std::vector<float>& dy2 = buffers.dy2;
+  std::vector<int>& spans = buffers.spans;
   const float cell_volume = cell * cell * cell;
   const float diameter_depth = DiameterDepth(opacity);
   for (const LeafSphere& s : spheres) {
@@ -241,16 +243,34 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     };
     dx2.clear();
     for (int x = x0; x <= x1; ++x) dx2.push_back(offset2(x, 0));
+    dy2.clear();
+    for (int y = y0; y <= y1; ++y) dy2.push_back(offset2(y, 1));
     const float* row_dx2 = dx2.data();
     const int width = x1 - x0 + 1;
-    // Two passes over the box, both without branches: count the covered voxels, then add each
-    // one's share (adding 0 to the others leaves them unchanged).
+    // Count the covered voxels, then add each one's share. The voxels of one row that a sphere
+    // covers are one run [first, last] around the row's nearest voxel: along a row the computed
+    // offset d rises with x (every rounding is monotonic), so d² falls then rises, and
+    // (d² + dy²) + dz² <= r² holds on one interval holding the smallest d² if on any. Each run is
+    // found outwards from that voxel and only the run gets the share: the same voxels and sums as
+    // testing every voxel of the box (adding 0 elsewhere changed nothing).
+    int nearest = 0;
+    for (int i = 1; i < width; ++i) nearest = row_dx2[i] < row_dx2[nearest] ? i : nearest;
+    spans.clear();
     int count = 0;
     for (int z = z0; z <= z1; ++z) {
-      float dz2 = offset2(z, 2);
+      const float dz2 = offset2(z, 2);
       for (int y = y0; y <= y1; ++y) {
-        float dy2 = offset2(y, 1);
-        for (int i = 0; i < width; ++i) count += row_dx2[i] + dy2 + dz2 <= r2 ? 1 : 0;
+        const float row_dy2 = dy2[static_cast<std::size_t>(y - y0)];
+        auto covered = [&](int i) { return row_dx2[i] + row_dy2 + dz2 <= r2; };
+        int first = nearest, last = nearest - 1;  // empty unless the nearest voxel is covered
+        if (width > 0 && covered(nearest)) {
+          last = nearest;
+          while (first > 0 && covered(first - 1)) --first;
+          while (last + 1 < width && covered(last + 1)) ++last;
+          count += last - first + 1;
+        }
+        spans.push_back(first);
+        spans.push_back(last);
       }
     }
     if (count == 0) {
@@ -262,12 +282,11 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
       continue;
     }
     const float each = mass / (static_cast<float>(count) * cell_volume);
+    const int* span = spans.data();
     for (int z = z0; z <= z1; ++z) {
-      float dz2 = offset2(z, 2);
-      for (int y = y0; y <= y1; ++y) {
-        float dy2 = offset2(y, 1);
+      for (int y = y0; y <= y1; ++y, span += 2) {
         float* row = density.data() + index(x0, y, z);
-        for (int i = 0; i < width; ++i) row[i] += row_dx2[i] + dy2 + dz2 <= r2 ? each : 0.0f;
+        for (int i = span[0]; i <= span[1]; ++i) row[i] += each;
       }
     }
   }
@@ -294,34 +313,32 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
       {static_cast<std::ptrdiff_t>(n[1] + 2) * (n[2] + 2), 1, n[1] + 2},  // x sweeps: y, z, x
       {1, static_cast<std::ptrdiff_t>(n[0] + 2) * (n[2] + 2), n[0] + 2},  // y sweeps: x, z, y
       {stride[0], stride[1], stride[2]}};                                 // z sweeps: x, y, z
-  std::vector<float>* density_copy[2] = {&buffers.density_x_major, &buffers.density_y_major};
+  ScratchArray<float>* density_copy[2] = {&buffers.density_x_major, &buffers.density_y_major};
+  const float* layout_density[3] = {nullptr, nullptr, density.data()};
   for (int axis = 0; axis < 2; ++axis) {
     if (!axis_used[axis]) continue;
-    std::vector<float>& copy = *density_copy[axis];
-    copy.resize(volume);  // every cell is written below
+    float* copy = density_copy[axis]->Resize(volume);  // every cell is written below
+    layout_density[axis] = copy;
     const std::ptrdiff_t* to = layout_stride[axis];
     for (int z = 0; z < n[2] + 2; ++z) {
       if (to[0] == 1) {  // y-slowest: the x rows stay whole
         for (int y = 0; y < n[1] + 2; ++y) {
           const float* from = density.data() + y * stride[1] + z * stride[2];
-          std::copy(from, from + n[0] + 2, copy.data() + y * to[1] + z * to[2]);
+          std::copy(from, from + n[0] + 2, copy + y * to[1] + z * to[2]);
         }
       } else {  // x-slowest, y fastest: written in order, read down the columns of this z plane
         for (int x = 0; x < n[0] + 2; ++x) {
           const float* from = density.data() + x + z * stride[2];
-          float* row = copy.data() + x * to[0] + z * to[2];
+          float* row = copy + x * to[0] + z * to[2];
           for (int y = 0; y < n[1] + 2; ++y) row[y] = from[y * stride[1]];
         }
       }
     }
   }
-  const float* layout_density[3] = {buffers.density_x_major.data(), buffers.density_y_major.data(),
-                                    density.data()};
 
   // Each sphere's trilinear lookup cell and weights do not depend on the direction: computed once.
   using Lookup = LightGridBuffers::Lookup;
-  std::vector<Lookup>& lookups = buffers.lookups;
-  lookups.resize(spheres.size());
+  Lookup* lookups = buffers.lookups.Resize(spheres.size());  // every sphere's is written below
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     const LeafSphere& own = spheres[i];
     Lookup& at = lookups[i];
@@ -352,20 +369,19 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
   // Shadow propagation, one direction at a time: depth(v) = σ(v)·s + depth(v + d·s), swept along
   // the dominant axis of d so that v + d·s lies on the slice swept just before (bilinear there).
   // One depth buffer per sweep axis, in that axis's layout.
-  std::vector<float>& transmittance = buffers.transmittance;
-  transmittance.resize(spheres.size() * directions);  // one row of all spheres per direction
+  // One row of all spheres per direction, every cell written below.
+  float* transmittance = buffers.transmittance.Resize(spheres.size() * directions);
   for (std::size_t k = 0; k < directions; ++k) {
     if (sky.weights[k] == 0.0f) {  // a sun of weight 0: its light adds nothing, skip the sweep
-      std::fill_n(transmittance.begin() + static_cast<std::ptrdiff_t>(k * spheres.size()),
-                  spheres.size(), 0.0f);
+      std::fill_n(transmittance + k * spheres.size(), spheres.size(), 0.0f);
       continue;
     }
     const glm::vec3& d = sky.directions[k];
     const float comp[3] = {d.x, d.y, d.z};
     const int axis = sweep_axis[k];
     const std::ptrdiff_t* st = layout_stride[axis];
-    std::vector<float>& depth = buffers.depth[axis];
-    depth.resize(volume);  // SweepSlices writes or zeroes every cell it reads
+    float* depth =
+        buffers.depth[axis].Resize(volume);  // SweepSlices writes or zeroes every cell it reads
     const int u = (axis + 1) % 3, v = (axis + 2) % 3;
     const float along = std::fabs(comp[axis]);
     const float step = cell / along;  // path length between two slices
@@ -378,7 +394,7 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     const int sign = comp[axis] > 0 ? 1 : -1;
     const std::ptrdiff_t up = sign * st[axis] + iu * st[u] + iv * st[v];
     const std::ptrdiff_t su = st[u], sv = st[v];
-    float* out = depth.data();
+    float* out = depth;
     const float* sigma = layout_density[axis];
     const int first = sign > 0 ? n[axis] : 1;  // padded slice coordinates 1..n
     // In this layout the rows of a slice run along whichever of u, v has stride 1.
@@ -408,8 +424,8 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
   // Rows of weight-0 directions (a sun left out; it is last) are not needed by Resolve.
   std::size_t rows = directions;
   while (rows > 0 && sky.weights[rows - 1] == 0.0f) --rows;
-  det::ExpfInPlace(transmittance.data(), rows * spheres.size());
-  ResolveRows(sky, transmittance.data(), spheres.size(), buffers, result.data());
+  det::ExpfInPlace(transmittance, rows * spheres.size());
+  ResolveRows(sky, transmittance, spheres.size(), buffers, result.data());
   return result;
 }
 
