@@ -64,10 +64,10 @@ class ScratchArray {
 // loop, once a year) so that the grids are not given back and touched afresh on every call.
 struct LightGridBuffers {
   struct Lookup {
-    int cell[3];          // lower corner of a sphere centre's trilinear cell, interior coordinates
-    float weight[8];      // corner c = (c & 1: +x, c & 2: +y, c & 4: +z)
-    float half_sigma[8];  // half of each corner cell's extinction (the same in every layout)
-    float own_depth;      // optical depth of the shoot's own sphere from its centre (one radius)
+    std::ptrdiff_t base[3];  // lower corner of the centre's trilinear cell, in each axis's layout
+    float weight[8];         // corner c = (c & 1: +x, c & 2: +y, c & 4: +z)
+    float half_sigma[8];     // half of each corner cell's extinction (the same in every layout)
+    float own_depth;         // optical depth of the shoot's own sphere from its centre (one radius)
   };
   std::vector<float> density, dx2, dy2;
   ScratchArray<float> density_x_major, density_y_major, depth[3], transmittance;
