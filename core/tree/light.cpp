@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "math/rotation.h"
 
@@ -222,6 +223,8 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
   // Rasterize, conserving each sphere's extinction mass σ·V: spread over the voxels whose centres
   // lie inside it, or put in the voxel of its centre when it is smaller than a cell and hits none.
   std::vector<float>& dx2 = buffers.dx2;
+  std::vector<float>& dy2 = buffers.dy2;
+  std::vector<int>& spans = buffers.spans;
   const float cell_volume = cell * cell * cell;
   const float diameter_depth = DiameterDepth(opacity);
   for (const LeafSphere& s : spheres) {
@@ -241,16 +244,34 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     };
     dx2.clear();
     for (int x = x0; x <= x1; ++x) dx2.push_back(offset2(x, 0));
+    dy2.clear();
+    for (int y = y0; y <= y1; ++y) dy2.push_back(offset2(y, 1));
     const float* row_dx2 = dx2.data();
     const int width = x1 - x0 + 1;
-    // Two passes over the box, both without branches: count the covered voxels, then add each
-    // one's share (adding 0 to the others leaves them unchanged).
+    // Count the covered voxels, then add each one's share. The voxels of one row that a sphere
+    // covers are one run [first, last] around the row's nearest voxel: along a row the computed
+    // offset d rises with x (every rounding is monotonic), so d² falls then rises, and
+    // (d² + dy²) + dz² <= r² holds on one interval holding the smallest d² if on any. Each run is
+    // found outwards from that voxel and only the run gets the share: the same voxels and sums as
+    // testing every voxel of the box (adding 0 elsewhere changed nothing).
+    int nearest = 0;
+    for (int i = 1; i < width; ++i) nearest = row_dx2[i] < row_dx2[nearest] ? i : nearest;
+    spans.clear();
     int count = 0;
     for (int z = z0; z <= z1; ++z) {
-      float dz2 = offset2(z, 2);
+      const float dz2 = offset2(z, 2);
       for (int y = y0; y <= y1; ++y) {
-        float dy2 = offset2(y, 1);
-        for (int i = 0; i < width; ++i) count += row_dx2[i] + dy2 + dz2 <= r2 ? 1 : 0;
+        const float row_dy2 = dy2[static_cast<std::size_t>(y - y0)];
+        auto covered = [&](int i) { return row_dx2[i] + row_dy2 + dz2 <= r2; };
+        int first = nearest, last = nearest - 1;  // empty unless the nearest voxel is covered
+        if (width > 0 && covered(nearest)) {
+          last = nearest;
+          while (first > 0 && covered(first - 1)) --first;
+          while (last + 1 < width && covered(last + 1)) ++last;
+          count += last - first + 1;
+        }
+        spans.push_back(first);
+        spans.push_back(last);
       }
     }
     if (count == 0) {
@@ -262,12 +283,11 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
       continue;
     }
     const float each = mass / (static_cast<float>(count) * cell_volume);
+    const int* span = spans.data();
     for (int z = z0; z <= z1; ++z) {
-      float dz2 = offset2(z, 2);
-      for (int y = y0; y <= y1; ++y) {
-        float dy2 = offset2(y, 1);
+      for (int y = y0; y <= y1; ++y, span += 2) {
         float* row = density.data() + index(x0, y, z);
-        for (int i = 0; i < width; ++i) row[i] += row_dx2[i] + dy2 + dz2 <= r2 ? each : 0.0f;
+        for (int i = span[0]; i <= span[1]; ++i) row[i] += each;
       }
     }
   }
@@ -294,34 +314,32 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
       {static_cast<std::ptrdiff_t>(n[1] + 2) * (n[2] + 2), 1, n[1] + 2},  // x sweeps: y, z, x
       {1, static_cast<std::ptrdiff_t>(n[0] + 2) * (n[2] + 2), n[0] + 2},  // y sweeps: x, z, y
       {stride[0], stride[1], stride[2]}};                                 // z sweeps: x, y, z
-  std::vector<float>* density_copy[2] = {&buffers.density_x_major, &buffers.density_y_major};
+  ScratchArray<float>* density_copy[2] = {&buffers.density_x_major, &buffers.density_y_major};
+  const float* layout_density[3] = {nullptr, nullptr, density.data()};
   for (int axis = 0; axis < 2; ++axis) {
     if (!axis_used[axis]) continue;
-    std::vector<float>& copy = *density_copy[axis];
-    copy.resize(volume);  // every cell is written below
+    float* copy = density_copy[axis]->Resize(volume);  // every cell is written below
+    layout_density[axis] = copy;
     const std::ptrdiff_t* to = layout_stride[axis];
     for (int z = 0; z < n[2] + 2; ++z) {
       if (to[0] == 1) {  // y-slowest: the x rows stay whole
         for (int y = 0; y < n[1] + 2; ++y) {
           const float* from = density.data() + y * stride[1] + z * stride[2];
-          std::copy(from, from + n[0] + 2, copy.data() + y * to[1] + z * to[2]);
+          std::copy(from, from + n[0] + 2, copy + y * to[1] + z * to[2]);
         }
       } else {  // x-slowest, y fastest: written in order, read down the columns of this z plane
         for (int x = 0; x < n[0] + 2; ++x) {
           const float* from = density.data() + x + z * stride[2];
-          float* row = copy.data() + x * to[0] + z * to[2];
+          float* row = copy + x * to[0] + z * to[2];
           for (int y = 0; y < n[1] + 2; ++y) row[y] = from[y * stride[1]];
         }
       }
     }
   }
-  const float* layout_density[3] = {buffers.density_x_major.data(), buffers.density_y_major.data(),
-                                    density.data()};
 
   // Each sphere's trilinear lookup cell and weights do not depend on the direction: computed once.
   using Lookup = LightGridBuffers::Lookup;
-  std::vector<Lookup>& lookups = buffers.lookups;
-  lookups.resize(spheres.size());
+  Lookup* lookups = buffers.lookups.Resize(spheres.size());  // every sphere's is written below
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     const LeafSphere& own = spheres[i];
     Lookup& at = lookups[i];
@@ -335,9 +353,10 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     float tx = std::min(1.0f, std::max(0.0f, g.x - static_cast<float>(x)));
     float ty = std::min(1.0f, std::max(0.0f, g.y - static_cast<float>(y)));
     float tz = std::min(1.0f, std::max(0.0f, g.z - static_cast<float>(z)));
-    at.cell[0] = x;
-    at.cell[1] = y;
-    at.cell[2] = z;
+    for (int axis = 0; axis < 3; ++axis) {
+      const std::ptrdiff_t* ls = layout_stride[axis];
+      at.base[axis] = (x + 1) * ls[0] + (y + 1) * ls[1] + (z + 1) * ls[2];
+    }
     for (int corner = 0; corner < 8; ++corner) {
       at.weight[corner] = ((corner & 1) ? tx : 1 - tx) * (((corner >> 1) & 1) ? ty : 1 - ty) *
                           (((corner >> 2) & 1) ? tz : 1 - tz);
@@ -352,20 +371,19 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
   // Shadow propagation, one direction at a time: depth(v) = σ(v)·s + depth(v + d·s), swept along
   // the dominant axis of d so that v + d·s lies on the slice swept just before (bilinear there).
   // One depth buffer per sweep axis, in that axis's layout.
-  std::vector<float>& transmittance = buffers.transmittance;
-  transmittance.resize(spheres.size() * directions);  // one row of all spheres per direction
+  // One row of all spheres per direction, every cell written below.
+  float* transmittance = buffers.transmittance.Resize(spheres.size() * directions);
   for (std::size_t k = 0; k < directions; ++k) {
     if (sky.weights[k] == 0.0f) {  // a sun of weight 0: its light adds nothing, skip the sweep
-      std::fill_n(transmittance.begin() + static_cast<std::ptrdiff_t>(k * spheres.size()),
-                  spheres.size(), 0.0f);
+      std::fill_n(transmittance + k * spheres.size(), spheres.size(), 0.0f);
       continue;
     }
     const glm::vec3& d = sky.directions[k];
     const float comp[3] = {d.x, d.y, d.z};
     const int axis = sweep_axis[k];
     const std::ptrdiff_t* st = layout_stride[axis];
-    std::vector<float>& depth = buffers.depth[axis];
-    depth.resize(volume);  // SweepSlices writes or zeroes every cell it reads
+    float* depth =
+        buffers.depth[axis].Resize(volume);  // SweepSlices writes or zeroes every cell it reads
     const int u = (axis + 1) % 3, v = (axis + 2) % 3;
     const float along = std::fabs(comp[axis]);
     const float step = cell / along;  // path length between two slices
@@ -378,7 +396,7 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     const int sign = comp[axis] > 0 ? 1 : -1;
     const std::ptrdiff_t up = sign * st[axis] + iu * st[u] + iv * st[v];
     const std::ptrdiff_t su = st[u], sv = st[v];
-    float* out = depth.data();
+    float* out = depth;
     const float* sigma = layout_density[axis];
     const int first = sign > 0 ? n[axis] : 1;  // padded slice coordinates 1..n
     // In this layout the rows of a slice run along whichever of u, v has stride 1.
@@ -392,15 +410,26 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
       corner_offset[corner] =
           (corner & 1) * st[0] + ((corner >> 1) & 1) * st[1] + ((corner >> 2) & 1) * st[2];
     }
+    // The eight corner terms of a sphere in two 4-lane vectors (each lane the scalar's IEEE
+    // operations: no FMA, -ffp-contract=off), then added one by one in corner order as before.
+    typedef float Float4 __attribute__((vector_size(16)));
     for (std::size_t i = 0; i < spheres.size(); ++i) {
       const Lookup& at = lookups[i];
-      std::ptrdiff_t base =
-          (at.cell[0] + 1) * st[0] + (at.cell[1] + 1) * st[1] + (at.cell[2] + 1) * st[2];
+      const float* cell_out = out + at.base[axis];
+      Float4 w_low, w_high, h_low, h_high;
+      std::memcpy(&w_low, at.weight, sizeof w_low);
+      std::memcpy(&w_high, at.weight + 4, sizeof w_high);
+      std::memcpy(&h_low, at.half_sigma, sizeof h_low);
+      std::memcpy(&h_high, at.half_sigma + 4, sizeof h_high);
+      const Float4 o_low = {cell_out[corner_offset[0]], cell_out[corner_offset[1]],
+                            cell_out[corner_offset[2]], cell_out[corner_offset[3]]};
+      const Float4 o_high = {cell_out[corner_offset[4]], cell_out[corner_offset[5]],
+                             cell_out[corner_offset[6]], cell_out[corner_offset[7]]};
+      const Float4 t_low = w_low * (o_low - h_low * step);
+      const Float4 t_high = w_high * (o_high - h_high * step);
       float sum = 0.0f;
-      for (int corner = 0; corner < 8; ++corner) {
-        std::ptrdiff_t c = base + corner_offset[corner];
-        sum += at.weight[corner] * (out[c] - at.half_sigma[corner] * step);
-      }
+      for (int corner = 0; corner < 4; ++corner) sum += t_low[corner];
+      for (int corner = 0; corner < 4; ++corner) sum += t_high[corner];
       // The exponent for now; transmittance = e^exponent for all of them at once below.
       transmittance[k * spheres.size() + i] = -std::max(0.0f, sum - at.own_depth);
     }
@@ -408,8 +437,8 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
   // Rows of weight-0 directions (a sun left out; it is last) are not needed by Resolve.
   std::size_t rows = directions;
   while (rows > 0 && sky.weights[rows - 1] == 0.0f) --rows;
-  det::ExpfInPlace(transmittance.data(), rows * spheres.size());
-  ResolveRows(sky, transmittance.data(), spheres.size(), buffers, result.data());
+  det::ExpfInPlace(transmittance, rows * spheres.size());
+  ResolveRows(sky, transmittance, spheres.size(), buffers, result.data());
   return result;
 }
 

@@ -1,7 +1,9 @@
 // Light model (thesis 2.3.2): leaves as shading spheres; light L and its direction v_L per shoot.
 #pragma once
 
+#include <cstddef>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <vector>
 
 namespace niwa {
@@ -37,17 +39,40 @@ std::vector<LightSample> ComputeLightReference(const std::vector<LeafSphere>& sp
 std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres, const Sky& sky,
                                           float opacity);
 
+// A working array whose every cell is written before it is read: growing it neither keeps nor
+// zeroes the old cells (std::vector::resize zero-filled each new cell, 4 % of the instructions of a
+// sakura-thesis 15-year grow; issue 17 item 7).
+template <typename T>
+class ScratchArray {
+ public:
+  // Room for n cells (contents unspecified until written); the pointer stays valid until a larger
+  // n.
+  T* Resize(std::size_t n) {
+    if (n > capacity_) {
+      capacity_ = n + n / 4;
+      cells_.reset(new T[capacity_]);
+    }
+    return cells_.get();
+  }
+
+ private:
+  std::unique_ptr<T[]> cells_;
+  std::size_t capacity_ = 0;
+};
+
 // Working memory of ComputeLightGrid, kept by a caller that calls it again and again (the growth
 // loop, once a year) so that the grids are not given back and touched afresh on every call.
 struct LightGridBuffers {
   struct Lookup {
-    int cell[3];      // lower corner of a sphere centre's trilinear cell, interior coordinates
-    float weight[8];  // corner c = (c & 1: +x, c & 2: +y, c & 4: +z)
-    float half_sigma[8];  // half of each corner cell's extinction (the same in every layout)
-    float own_depth;  // optical depth of the shoot's own sphere from its centre (one radius)
+    std::ptrdiff_t base[3];  // lower corner of the centre's trilinear cell, in each axis's layout
+    float weight[8];         // corner c = (c & 1: +x, c & 2: +y, c & 4: +z)
+    float half_sigma[8];     // half of each corner cell's extinction (the same in every layout)
+    float own_depth;         // optical depth of the shoot's own sphere from its centre (one radius)
   };
-  std::vector<float> density, density_x_major, density_y_major, depth[3], transmittance, dx2;
-  std::vector<Lookup> lookups;
+  std::vector<float> density, dx2, dy2;
+  ScratchArray<float> density_x_major, density_y_major, depth[3], transmittance;
+  ScratchArray<Lookup> lookups;
+  std::vector<int> spans;  // rasterization: first and last covered x of each row of a sphere's box
   std::vector<float> received, strongest;  // per sphere, while resolving L and v_L
   std::vector<int> strongest_direction;
 };
