@@ -14,97 +14,39 @@
 // Worker and one WASM instance, kept apart by a client id; the core checks every value and its
 // one-line message is shown as text, never as markup.
 // Does not: draw seeds, import files or download (the terrain page, public/terrain.html, does).
-import { OrbitCamera } from './web/gl/orbit_camera.js';
-import { FrameLoop } from './web/gl/frame_loop.js';
+// The shadow root, camera, frame loop and the shared worker are web/shell/embed_element.js's.
+import { EmbedElement } from './web/shell/embed_element.js';
 import { setHooks } from './web/shell/test_hooks.js';
-import { WorkerClient } from './web/shell/worker_client.js';
 import { gridIndices } from './web/terrain/grid_indices.js';
 import { TerrainRenderer } from './web/terrain/terrain_renderer.js';
 
-let nextClient = 0;
-let ready = null;  // the terrain handler's tables, loaded once for every element (its 'ready')
-
-const STYLE = `
-:host { display: inline-block; position: relative; width: 320px; height: 320px; contain: content; }
-:host([hidden]) { display: none; }
-canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: grab; border-radius: inherit; }
-canvas:focus-visible { outline: 3px solid #2f6b3a; outline-offset: -3px; }
-p { position: absolute; left: 0.4rem; bottom: 0.4rem; margin: 0; padding: 0.15rem 0.4rem; border-radius: 4px;
-    background: rgba(255, 255, 255, 0.82); font: 12px system-ui, sans-serif; color: #1d2a1f; max-width: calc(100% - 0.8rem); }
-p:empty { display: none; }
-`;
-
-class NiwaTerrain extends HTMLElement {
+class NiwaTerrain extends EmbedElement {
   static get observedAttributes() { return ['builtin', 'method', 'seed', 'state']; }
 
   constructor() {
-    super();
-    this.client = `terrain-${++nextClient}`;
-    const shadow = this.attachShadow({ mode: 'open' });
-    const style = document.createElement('style');
-    style.textContent = STYLE;
-    this.canvas = document.createElement('canvas');
-    this.canvas.tabIndex = 0;
-    this.canvas.setAttribute('role', 'img');
-    this.canvas.setAttribute('aria-label', 'Niwa terrain: a mountain grown from one contour. Drag or use the arrow keys to orbit, wheel or plus and minus to zoom.');
-    this.line = document.createElement('p');
-    this.line.setAttribute('aria-live', 'polite');
-    shadow.append(style, this.canvas, this.line);
-    this.camera = new OrbitCamera();
-    this.renderer = null;
-    this.rendererReady = null;
-    this.frames = new FrameLoop(() => {
-      const drawn = this.renderer.render(this.camera);
-      setHooks({ drawnLines: drawn.lines, drawnTriangles: drawn.triangles }, this);
-    });
-    this.worker = null;
+    super({ kind: 'terrain', label: 'Niwa terrain: a mountain grown from one contour', study: 'terrain',
+      messages: ['decoded', 'terrain', 'error'] });
     this.pendingTerrain = null;  // a mountain that came before the renderer
     this.levels = null;
     this.animation = null;
   }
 
-  ensureWorker() {
-    if (this.worker) return;
-    this.worker = new WorkerClient(this.client, { study: 'terrain', onFailure: (text) => this.showMessage(text) });
-    for (const type of ['decoded', 'terrain', 'error']) this.worker.on(type, (msg) => this.onWorkerMessage(msg));
-    if (!ready) ready = this.worker.request('init', { hash: '' }, { done: ['ready'] }).reply;
+  createRenderer(canvas) {
+    return new TerrainRenderer(canvas);
   }
 
-  connectedCallback() {
-    this.ensureWorker();
-    if (!this.rendererReady) this.rendererReady = this.startRenderer();
-    this.load();
+  onRendererReady() {
+    if (this.pendingTerrain) this.showTerrain(this.pendingTerrain);
+  }
+
+  drawFrame() {
+    const drawn = this.renderer.render(this.camera);
+    setHooks({ drawnLines: drawn.lines, drawnTriangles: drawn.triangles }, this);
   }
 
   disconnectedCallback() {
     this.animation = null;
     this.worker?.cancel('terrain');
-  }
-
-  attributeChangedCallback() {
-    if (this.isConnected) this.load();
-  }
-
-  async startRenderer() {
-    try {
-      const renderer = new TerrainRenderer(this.canvas);
-      await renderer.init();
-      this.renderer = renderer;
-      this.camera.attach(this.canvas, () => this.requestFrame());
-      new ResizeObserver(() => this.requestFrame()).observe(this.canvas);
-      if (this.pendingTerrain) this.showTerrain(this.pendingTerrain);
-    } catch (e) {
-      this.showMessage(`Cannot draw: ${e.message}`);
-    }
-  }
-
-  showMessage(text) {
-    this.line.textContent = text;
-    setHooks({ status: 'error', error: text }, this);
-  }
-
-  requestFrame() {
-    if (this.renderer) this.frames.request();
   }
 
   // The attributes as a share-link hash (builtin, preset, seed), so state= and the attributes go
@@ -125,7 +67,7 @@ class NiwaTerrain extends HTMLElement {
     this.ensureWorker();
     this.animation = null;
     setHooks({ status: 'growing' }, this);
-    await ready;
+    await this.ready;
     this.worker.request('decode', { hash: this.stateHash() }, { group: 'decode', done: ['decoded'] });
   }
 

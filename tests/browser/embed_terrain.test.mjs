@@ -1,5 +1,5 @@
 // Browser test of <niwa-terrain> (public/niwa-terrain.js) on public/embed-terrain.html, the iframe
-// form public/terrain-frame.html and the terrain page's Embed dialog: node
+// form public/embed.html?study=terrain and the terrain page's Embed dialog: node
 // tests/browser/embed_terrain.test.mjs (exit 0 = pass). Three elements (valleys by attributes, a
 // drawn contour by state= with animate, jacksboro under a figure preset) share one worker and each
 // grows what `niwa terrain grow` grows for the same input (--stats equal but the timings); animate
@@ -82,7 +82,7 @@ await runBrowserTest(async (server, browser) => {
   await studio.click('#embed');
   const snippets = await studio.evaluate(() => [document.getElementById('embed-element').value, document.getElementById('embed-iframe').value]);
   check('the Embed dialog offers <niwa-terrain> and the iframe with the hash',
-    snippets[0].includes('niwa-terrain.js') && snippets[0].includes('<niwa-terrain state="preset=improved&amp;builtin=valleys"') && snippets[1].includes('terrain-frame.html#preset=improved&amp;builtin=valleys'),
+    snippets[0].includes('niwa-terrain.js') && snippets[0].includes('<niwa-terrain state="preset=improved&amp;builtin=valleys"') && snippets[1].includes('embed.html?study=terrain#preset=improved&amp;builtin=valleys'),
     snippets.join(' | ').slice(0, 300));
   await studio.screenshot({ path: path.join(ARTIFACTS, 'embed-terrain-dialog.png') });
   await studio.close();
@@ -91,9 +91,9 @@ await runBrowserTest(async (server, browser) => {
   const frame = await context.newPage();
   watchPage(frame, problems);
   const hash = 'preset=fig13b&builtin=lobes7&seed=5';
-  await frame.goto(`${server.url}terrain-frame.html#${hash}`, { waitUntil: 'load' });
+  await frame.goto(`${server.url}embed.html?study=terrain#${hash}`, { waitUntil: 'load' });
   const framed = await waitElement(frame, 'niwa-terrain');
-  check('terrain-frame.html grows its hash', framed.status === 'ready', `${framed.status} ${framed.error || ''}`);
+  check('embed.html?study=terrain grows its hash', framed.status === 'ready', `${framed.status} ${framed.error || ''}`);
   same('iframe == niwa terrain grow --url', framed, ['--url', hash]);
   await frame.screenshot({ path: path.join(ARTIFACTS, 'embed-terrain-frame.png') });
 

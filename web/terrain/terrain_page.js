@@ -423,11 +423,11 @@ ui.resetView.addEventListener('click', () => {
   requestFrame();
 });
 ui.copyLink.addEventListener('click', () => copyLink(ui.shareStatus));
-// The embed: <niwa-terrain> (public/niwa-terrain.js) or an iframe of public/terrain-frame.html,
+// The embed: <niwa-terrain> (public/niwa-terrain.js) or an iframe of public/embed.html?study=terrain,
 // with this hash (a drawn contour included).
 $('embed').addEventListener('click', () => {
-  showEmbedDialog({ dialog: $('embed-dialog'), element: $('embed-element'), iframe: $('embed-iframe') },
-    { tag: 'niwa-terrain', title: 'Niwa terrain', script: 'niwa-terrain.js', frame: 'terrain-frame.html' });
+  showEmbedDialog({ tag: 'niwa-terrain', title: 'Niwa terrain', heading: 'Embed this mountain', script: 'niwa-terrain.js',
+    frame: 'embed.html?study=terrain' });
 });
 const exportAs = (format, name) => {
   const { id } = worker.request('export', { format }, { group: `export-${format}`, done: ['export'] });
