@@ -106,7 +106,7 @@ try {
   // cherry's deep pink and Somei-yoshino's pale pink umbels on bare wood.
   for (const [preset, years, colour, form, parts] of [
     ['tsutsuji', 15, 'magenta', 'azalea', ['bark', 'leaves', 'flowers']],
-    ['weeping', 10, 'deep-pink', 'cherry', ['bark', 'flowers']],
+    ['weeping', 20, 'deep-pink', 'cherry', ['bark', 'flowers']],
     ['sakura', 10, 'pale-pink', 'cherry', ['bark', 'flowers']]]) {
     const out = join(dir, `${preset}-spring.glb`);
     run(native, ['tree', 'grow', '--preset', preset, '--years', String(years), '--season', 'spring', '--out', out]);
