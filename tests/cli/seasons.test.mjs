@@ -60,6 +60,7 @@ try {
     { name: 'maple-autumn', preset: 'maple', years: 6, sets: ['season=2'], parts: ['bark', 'leaves'], leaf: 'leaf_palmate_autumn' },
     { name: 'ginkgo-autumn', preset: 'ginkgo', years: 6, sets: ['season=2'], parts: ['bark', 'leaves'], leaf: 'leaf_fan_autumn' },
     { name: 'keyaki-fan', preset: 'keyaki-thesis', years: 4, sets: ['leaf_shape=3'], parts: ['bark', 'leaves'], leaf: 'leaf_fan_summer' },
+    { name: 'tsutsuji-spring', preset: 'tsutsuji', years: 8, sets: ['season=0'], parts: ['bark', 'leaves', 'flowers'], leaf: 'leaf_broad_spring' },
   ];
   const seasonOf = (sets) => ['spring', 'summer', 'autumn', 'winter'][Number((sets.find((s) => s.startsWith('season=')) ?? 'season=1').split('=')[1])];
   for (const c of cases) {
@@ -95,7 +96,7 @@ try {
   }
 
   // The same bytes from the WASM CLI (textures painted in WASM).
-  for (const c of [cases[0], cases[4], cases[5]]) {
+  for (const c of [cases[0], cases[4], cases[5], cases[8]]) {  // cases[8]: the azalea's flower texture
     const a = grow(native, c.preset, c.years, c.sets, c.name);
     const b = grow(wasm, c.preset, c.years, c.sets, `${c.name}-w`);
     check(a.equals(b), `${c.name}: native and WASM .glb identical (${a.length} bytes)`);
