@@ -60,6 +60,7 @@ try {
     { name: 'maple-autumn', preset: 'maple', years: 6, sets: ['season=2'], parts: ['bark', 'leaves'], leaf: 'leaf_palmate_autumn' },
     { name: 'ginkgo-autumn', preset: 'ginkgo', years: 6, sets: ['season=2'], parts: ['bark', 'leaves'], leaf: 'leaf_fan_autumn' },
     { name: 'keyaki-fan', preset: 'keyaki-thesis', years: 4, sets: ['leaf_shape=3'], parts: ['bark', 'leaves'], leaf: 'leaf_fan_summer' },
+    { name: 'tsutsuji-spring', preset: 'tsutsuji', years: 8, sets: ['season=0'], parts: ['bark', 'leaves', 'flowers'], leaf: 'leaf_broad_spring' },
   ];
   const seasonOf = (sets) => ['spring', 'summer', 'autumn', 'winter'][Number((sets.find((s) => s.startsWith('season=')) ?? 'season=1').split('=')[1])];
   for (const c of cases) {
@@ -95,7 +96,7 @@ try {
   }
 
   // The same bytes from the WASM CLI (textures painted in WASM).
-  for (const c of [cases[0], cases[4], cases[5]]) {
+  for (const c of [cases[0], cases[4], cases[5], cases[8]]) {  // cases[8]: the azalea's flower texture
     const a = grow(native, c.preset, c.years, c.sets, c.name);
     const b = grow(wasm, c.preset, c.years, c.sets, `${c.name}-w`);
     check(a.equals(b), `${c.name}: native and WASM .glb identical (${a.length} bytes)`);
@@ -106,7 +107,7 @@ try {
   // cherry's deep pink and Somei-yoshino's pale pink umbels on bare wood.
   for (const [preset, years, colour, form, parts] of [
     ['tsutsuji', 15, 'magenta', 'azalea', ['bark', 'leaves', 'flowers']],
-    ['weeping', 10, 'deep-pink', 'cherry', ['bark', 'flowers']],
+    ['weeping', 20, 'deep-pink', 'cherry', ['bark', 'flowers']],
     ['sakura', 10, 'pale-pink', 'cherry', ['bark', 'flowers']]]) {
     const out = join(dir, `${preset}-spring.glb`);
     run(native, ['tree', 'grow', '--preset', preset, '--years', String(years), '--season', 'spring', '--out', out]);
