@@ -3,13 +3,16 @@
 // runs the wind, the hybrid views and the exports. One TreeSession (web/bindings/tree_bindings.cpp)
 // per client keeps the client's last finished tree. Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does).
+import { nextTask as yieldToEvents } from './next_task.js';
 import { copyView, takeBuffers } from './transfer.js';
 
-const yieldToEvents = () => new Promise((resolve) => setTimeout(resolve, 0));
+// The warm-up grow's years (sakura-thesis; ?warmup=N on the worker's URL sets N, 0 turns it off).
+const WARM_UP_YEARS = 8;
 
-// ctx: {post(msg, transfer), isLatest(client, id)} from the router.
+// ctx: {post(msg, transfer), isLatest(client, id), options} from the router.
 export function createHandler(Module, ctx) {
   const { post, isLatest } = ctx;
+  scheduleWarmUp(Module, ctx.options || {});
   const paramTable = JSON.parse(Module.paramTableJson());
   // Rows whose edits change the grown tree (stage grow; rows without a stage too). Mesh, sway and
   // view rows restage the tree already grown (restate rebuilds its mesh, skin and hybrid scene).
@@ -301,4 +304,24 @@ export function createHandler(Module, ctx) {
       },
     },
   };
+}
+
+// Warm-up (issue 17 item 7): V8 compiles each WASM function on its first call with its baseline
+// compiler (Liftoff) and recompiles it with TurboFan in the background only once it has run a
+// while; a call already running keeps its Liftoff code (no on-stack replacement for WASM), so the
+// page's first 15-year grow ran mostly in baseline code while TurboFan competed for the cores. A
+// small grow and mesh in the task after the worker's 'ready' (while the page builds its panel)
+// makes the hot growth and mesh functions tier up before the first tree is asked for.
+function scheduleWarmUp(Module, options) {
+  const years = options.warmup === undefined ? WARM_UP_YEARS : Number(options.warmup);
+  if (!Number.isInteger(years) || years <= 0) return;
+  setTimeout(() => {
+    const session = new Module.TreeSession(JSON.stringify({ preset: 'sakura-thesis', seed: 1, years }));
+    try {
+      while (session.year() < years && !session.done()) session.growYear();
+      session.buildMesh();
+    } finally {
+      session.delete();
+    }
+  }, 0);
 }

@@ -29,9 +29,19 @@ function loadModule() {
   return modulePromise;
 }
 
+// The module is fetched and compiled as soon as the worker starts (streaming, while the page still
+// loads its own modules and sends init), not on the first message (issue 17 item 7). A failure is
+// answered to the first message that needs the module.
+loadModule().catch(() => {});
+
+// Options from the worker's URL: ?warmup=0 turns the tree handler's warm-up grow off, ?warmup=N
+// grows N years (bench/worker_first_grow.mjs compares them).
+const options = Object.fromEntries(new URL(self.location.href).searchParams);
+
 const ctx = {
   post: (msg, transfer = []) => postMessage(msg, transfer),
   isLatest: (client, id) => latest.get(client) === id,
+  options,
 };
 
 async function handlerFor(study) {
