@@ -87,6 +87,7 @@ class NiwaTree extends HTMLElement {
       const renderer = new Renderer(this.canvas);
       await renderer.init();
       this.renderer = renderer;
+      this.frames.attach(renderer.gl, this.canvas);  // one frame in flight (web/gl/frame_loop.js)
       this.camera.attach(this.canvas, () => {
         this.requestFrame();
         this.requestView();

@@ -91,6 +91,7 @@ class NiwaIvy extends HTMLElement {
       await renderer.init();
       renderer.setVisible({ seeds: false });
       this.renderer = renderer;
+      this.frames.attach(renderer.gl, this.canvas);  // one frame in flight (web/gl/frame_loop.js)
       this.camera.attach(this.canvas, () => this.requestFrame());
       new ResizeObserver(() => this.requestFrame()).observe(this.canvas);
       if (this.pending.support) this.showSupport(this.pending.support);
@@ -161,11 +162,14 @@ class NiwaIvy extends HTMLElement {
 
   showIvy(msg) {
     this.pending.ivy = null;
-    this.renderer.setIvy(msg.mesh);
-    if (!this.framed && this.renderer.bounds()) {
-      this.camera.reset(this.renderer.bounds());
-      this.framed = true;
-    }
+    this.renderer.setIvy(msg.mesh).then((installed) => {  // a big ivy goes up in parts
+      if (!installed) return;
+      if (!this.framed && this.renderer.bounds()) {
+        this.camera.reset(this.renderer.bounds());
+        this.framed = true;
+      }
+      this.requestFrame();
+    });
     this.steps = msg.steps;
     this.line.textContent = '';
     const s = msg.stats;

@@ -8,6 +8,7 @@
 // Does not: parse or check states or contours (the core does; its one line is shown beside its
 // field), or draw directly.
 import { OrbitCamera } from '../gl/orbit_camera.js';
+import { FrameGovernor } from '../gl/frame_governor.js';
 import { FrameLoop } from '../gl/frame_loop.js';
 import { HashHistory } from '../shell/hash_history.js';
 import { ParamPanel } from '../shell/param_panel.js';
@@ -66,14 +67,37 @@ const DRAWN = '(drawn contour)';
 const camera = new OrbitCamera();
 let renderer = null;
 let terrainSerial = 0;
+let installedSerial = 0;  // the mountain whose buffers are in place (a big one goes up in parts)
+// One frame in flight on the GPU (web/gl/frame_loop.js); none while a mountain goes up in parts.
+// A frame bigger than the governor's budget is drawn over several animation frames
+// (web/gl/progressive_frame.js); a moving camera gets a smaller drawing buffer when frames lag.
+const governor = new FrameGovernor({ onStill: () => requestFrame() });
+let frameDirty = true;
 const frames = new FrameLoop(() => {
-  const drawn = renderer.render(camera);
+  if (renderer.uploading) return false;
+  const moving = governor.moving();
+  const resume = !frameDirty && !moving && renderer.progress.pending();
+  frameDirty = false;
+  const drawn = renderer.render(camera, resume ? null : governor.quality(0), { budget: governor.budget(), resume });
+  governor.drew(drawn.drawnPrimitives, !drawn.partial, drawn.primitives);
+  if (drawn.partial) {
+    frames.request();
+    return;
+  }
   setHooks({
-    drawnSerial: terrainSerial, drawnLevel: Number.isFinite(shownLevel) ? shownLevel : 'all', drawnTriangles: drawn.triangles, drawnLines: drawn.lines,
+    drawnSerial: installedSerial, drawnLevel: Number.isFinite(shownLevel) ? shownLevel : 'all', drawnTriangles: drawn.triangles, drawnLines: drawn.lines,
     drawCalls: drawn.drawCalls,
   });
-});
-const requestFrame = () => { if (renderer) frames.request(); };
+}, { governor });
+const requestFrame = () => {
+  if (!renderer) return;
+  frameDirty = true;
+  frames.request();
+};
+const cameraMoved = () => {
+  governor.motion();
+  requestFrame();
+};
 
 // The level scrubber and Play: the mountain contour by contour, from the seed (or the lowest
 // `down` contour) to the top; nothing regrows. Level k shows the contours up to k and the surface
@@ -95,7 +119,8 @@ async function startRenderer() {
   try {
     renderer = new TerrainRenderer(ui.canvas);
     await renderer.init();
-    camera.attach(ui.canvas, requestFrame);
+    frames.attach(renderer.gl, ui.canvas);
+    camera.attach(ui.canvas, cameraMoved);
     new ResizeObserver(requestFrame).observe(ui.canvas);
     ui.canvas.addEventListener('webglcontextlost', (e) => {
       e.preventDefault();
@@ -304,12 +329,17 @@ worker.on('terrain', (msg) => {
   ui.stats.textContent = `${s.method} · ${s.levels} levels · ${s.contours} contours · ${s.peaks} peak${s.peaks === 1 ? '' : 's'} · relief ${s.relief.toFixed(1)} m · HI ${s.hypsometric_integral.toFixed(3)} · ${s.res} cells across · ${msg.wallMs.toFixed(0)} ms`;
   plan.setTerrain(msg.buffers, msg.bounds);
   levels = { min: msg.bounds.level_min, max: msg.bounds.level_max, h0: msg.bounds.h0, dh: msg.bounds.dh };
+  const serial = terrainSerial + 1;
   if (renderer) {
-    renderer.setTerrain(msg.buffers, msg.bounds);
-    if (frameNext && renderer.bounds()) {
-      frameTerrain();
-      frameNext = false;
-    }
+    renderer.setTerrain(msg.buffers, msg.bounds).then((installed) => {
+      if (!installed) return;
+      installedSerial = serial;
+      if (frameNext && renderer.bounds()) {
+        frameTerrain();
+        frameNext = false;
+      }
+      requestFrame();
+    });
   }
   if (commitNext) history_.commit(msg.hash, `#${msg.hash}`);
   else {

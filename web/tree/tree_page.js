@@ -5,6 +5,7 @@
 // with WebGL2. Growth runs in the worker (web/worker/tree_handler.js).
 // Does not: parse or check states (the core does), or draw directly (tree_renderer.js does).
 import { OrbitCamera } from '../gl/orbit_camera.js';
+import { FrameGovernor } from '../gl/frame_governor.js';
 import { FrameLoop } from '../gl/frame_loop.js';
 import { HashHistory } from '../shell/hash_history.js';
 import { ParamPanel } from '../shell/param_panel.js';
@@ -92,23 +93,49 @@ const camera = new OrbitCamera();
 let renderer = null;
 let poseDrawPending = false;
 const table = new RenderTable(ui.renderTable, ui.renderCol, ui.frameStats);
+// One frame in flight on the GPU (web/gl/frame_loop.js); while the tree sways or the camera
+// moves, the governor draws cheaper frames when they lag, and the full one once all is still.
+const governor = new FrameGovernor({ onStill: () => requestFrame() });
+// A frame bigger than the governor's budget is drawn in parts over several animation frames
+// (web/gl/progressive_frame.js): a still view goes on with the same frame unless something asked
+// for a new one (frameDirty); a moving view starts a new, cheaper frame each time.
+let frameDirty = true;
 const frames = new FrameLoop(() => {
   // While a big tree goes up in parts the canvas keeps its last frame (no draw: a frame of the old
   // big tree costs seconds on a CPU GL, and every part's upload would wait for it).
-  if (renderer.uploading) return;
-  const drawn = renderer.render(camera);
-  if (drawn) table.showFrame(drawn);
-  if (poseDrawPending) {  // the worker sends the next pose once this one is on screen
+  if (renderer.uploading) return false;
+  const moving = governor.moving();
+  const resume = !frameDirty && !moving && renderer.progress.pending();
+  frameDirty = false;
+  let quality = null;
+  if (!resume) {
+    // Cheap levels draw the tree's hybrid scene once the worker has sent it (asked for here).
+    quality = governor.quality(renderer.motionReady() ? Infinity : 0);
+    if (quality.wantCheap > 0 && !renderer.motionReady()) requestMotionView();
+  }
+  const drawn = renderer.render(camera, quality, { budget: governor.budget(), resume });
+  if (!drawn) return false;
+  governor.drew(drawn.drawnPrimitives, !drawn.partial, drawn.primitives);
+  setHooks({ frameScale: renderer.scale, frameMode: drawn.mode, framesDrawn: frames.stats.drawn,
+    framesSkipped: frames.stats.skippedBusy, frameGpuMs: Math.round(frames.stats.gpuMs), framePartial: drawn.partial ? 1 : 0 });
+  if (drawn.partial) frames.request();  // the rest of this frame (or, moving, the next frame)
+  if (poseDrawPending && (!drawn.partial || moving)) {  // the worker sends the next pose now
     poseDrawPending = false;
     worker.post('poseDone');
   }
+  if (drawn.partial) return;
+  if (drawn.mode !== 'motion') table.showFrame(drawn);
   setHooks({ drawnTreeSerial: treeSerial });  // tests wait for the new tree's frame
   if (freshOnDraw) {  // the tree that answers the latest edit is on screen now
     freshOnDraw = false;
     feedback.fresh();
   }
-});
-const requestFrame = () => { if (renderer) frames.request(); };
+}, { governor });
+const requestFrame = () => {
+  if (!renderer) return;
+  frameDirty = true;
+  frames.request();
+};
 
 // Hybrid mode: the worker chooses card or line per branch for each view (eq. 4.1 with hysteresis);
 // one request at a time, the newest camera wins.
@@ -126,6 +153,23 @@ function requestView() {
   worker.post('view', { camera: renderer.viewFor(camera) });
 }
 
+// A full-mode tree's cheaper representation while it moves (the governor's cheap levels): its
+// hybrid scene from the worker ('view' with motion: true; the atlas once per tree), one request at
+// a time, the newest camera wins; none when the worker cannot build it for this tree.
+let motionInFlight = false;
+let motionDirty = false;
+let motionOff = false;
+function requestMotionView() {
+  if (hybridOn || !renderer || motionOff) return;
+  if (motionInFlight) {
+    motionDirty = true;
+    return;
+  }
+  motionInFlight = true;
+  motionDirty = false;
+  worker.post('view', { camera: renderer.viewFor(camera), motion: true, atlas: !renderer.hasMotionAtlas() });
+}
+
 // The renderer's light is the light model's sun (parameters sun_elevation and sun_azimuth).
 function showSun() {
   if (!panel) return;
@@ -141,8 +185,10 @@ function showSun() {
 // Camera moves rewrite the cam= field of the current history entry (no new entry), a moment later.
 let cameraTimer = 0;
 function cameraMoved() {
+  governor.motion();
   requestFrame();
   requestView();
+  if (renderer?.motionReady()) requestMotionView();  // its draw list is for the last camera
   clearTimeout(cameraTimer);
   cameraTimer = setTimeout(writeHash, 400);
 }
@@ -151,6 +197,7 @@ async function startRenderer() {
   try {
     renderer = new Renderer(ui.canvas);
     await renderer.init();
+    frames.attach(renderer.gl, ui.canvas);
     camera.attach(ui.canvas, cameraMoved);
     new ResizeObserver(() => {
       requestFrame();
@@ -423,6 +470,7 @@ worker.on('tree', (msg) => {
     // tree is in place.
     const later = renderer.uploading;
     installed.then((done) => {
+      if (done) governor.reset();  // another tree: its frames cost what they cost
       if (done && later) requestView();
       requestFrame();
     });
@@ -438,6 +486,8 @@ worker.on('tree', (msg) => {
   table.showFullCounts(msg.mesh);
   hybridOn = Boolean(msg.hybrid);
   viewInFlight = false;
+  motionInFlight = false;
+  motionOff = false;
   table.showHybridCounts(null);
   setHooks({ renderMode: hybridOn ? 'hybrid' : 'full' });
   requestView();
@@ -460,7 +510,18 @@ worker.on('tree', (msg) => {
   }
 });
 
+worker.on('motionAtlas', (msg) => {
+  renderer?.setMotionHybrid(msg.hybrid);
+});
+
 worker.on('drawList', (msg) => {
+  if (msg.motion) {
+    motionInFlight = false;
+    renderer?.setMotionDrawList(msg);
+    if (governor.moving()) requestFrame();
+    if (motionDirty) requestMotionView();
+    return;
+  }
   viewInFlight = false;
   if (!hybridOn || !renderer) return;
   renderer.setDrawList(msg);
@@ -475,6 +536,7 @@ worker.on('pose', (msg) => {
     return;
   }
   renderer.setPoses(new Float32Array(msg.poses), msg.wind, msg.time);
+  governor.motion();
   poseDrawPending = true;
   showWind(msg);
   requestFrame();
@@ -494,6 +556,11 @@ worker.on('export', (msg) => {
 worker.on('error', (msg) => {
   if (exportIds.delete(msg.id)) {
     ui.shareStatus.textContent = `Export failed: ${msg.message}`;
+    return;
+  }
+  if (msg.control === 'motion') {  // no cheaper representation for this tree: full frames only
+    motionOff = true;
+    motionInFlight = false;
     return;
   }
   if (msg.control === 'wind') {  // the sway was refused (docs/budgets.md): the line beside Blow
@@ -628,8 +695,11 @@ function setWind(play) {
   windPlaying = play;
   ui.wind.textContent = play ? 'Still' : 'Blow';
   ui.wind.setAttribute('aria-pressed', String(play));
+  // The still frames were slow: the sway will want the cheaper representation, asked for first.
+  if (play && governor.motionCheap() > 0 && !renderer?.motionReady()) requestMotionView();
   worker.post('wind', { play });
   if (!play) {
+    governor.stop();  // the rest shape at full quality
     renderer?.setRestPoses(renderer.poseNodes);
     requestFrame();
   }
