@@ -27,7 +27,7 @@ export class FrameGovernor {
   // better again); stillMs: how long without motion() before the full-quality frame; onStill():
   // called then, when the last frame drawn was reduced (the page requests a frame).
   // firstBudget: primitives per animation frame before a rate is measured (ProgressiveFrame).
-  constructor({ levels = LEVELS, targetMs = 150, stillMs = 500, onStill = () => {}, firstBudget = 300_000 } = {}) {
+  constructor({ levels = LEVELS, targetMs = 150, stillMs = 500, onStill = () => {}, firstBudget = 50_000 } = {}) {
     this.levels = levels;
     this.targetMs = targetMs;
     this.firstBudget = firstBudget;
@@ -91,14 +91,21 @@ export class FrameGovernor {
   // more is drawn as the last level without it, and its latency does not move the level:
   // wantCheap tells the page what to prepare).
   quality(cheapAvailable = Infinity) {
+    const q = this.peek(cheapAvailable);
+    this.drawn = { level: q.level, moving: q.moving, capped: q.capped };
+    this.frameStart = performance.now();
+    this.lastDrawnLevel = q.level;
+    return q;
+  }
+
+  // What quality() would answer now, without starting a frame (a page keeps drawing a frame in
+  // parts while this stays its level).
+  peek(cheapAvailable = Infinity) {
     const moving = this.moving();
     const wanted = moving ? this.motionLevel : 0;
     let level = wanted;
     while (level > 0 && this.levels[level].cheap > cheapAvailable) --level;
-    this.drawn = { level, moving, capped: level !== wanted };
-    this.frameStart = performance.now();
-    this.lastDrawnLevel = level;
-    return { level, ...this.levels[level], wantCheap: this.levels[wanted].cheap };
+    return { level, ...this.levels[level], wantCheap: this.levels[wanted].cheap, capped: level !== wanted, moving };
   }
 
   // The latency (ms) of the draw last made, from its fence (FrameLoop). It updates the rate; the

@@ -81,18 +81,26 @@ let installedSerial = 0;  // the ivy whose buffers are in place (a big one goes 
 // A frame bigger than the governor's budget is drawn over several animation frames
 // (web/gl/progressive_frame.js); a moving camera gets a smaller drawing buffer when frames lag.
 const governor = new FrameGovernor({ onStill: () => requestFrame() });
+// A frame in parts goes on until it is finished unless the governor wants another level; what
+// changed meanwhile (frameDirty) is drawn by the next frame.
 let frameDirty = true;
+let frameLevel = -1;  // the governor's level of the frame in parts
 const frames = new FrameLoop(() => {
   if (renderer.uploading) return false;
-  const moving = governor.moving();
-  const resume = !frameDirty && !moving && renderer.progress.pending();
-  frameDirty = false;
-  const drawn = renderer.render(camera, resume ? null : governor.quality(0), { budget: governor.budget(), resume });
+  const resume = renderer.progress.pending() && governor.peek(0).level === frameLevel;
+  let quality = null;
+  if (!resume) {
+    quality = governor.quality(0);
+    frameLevel = quality.level;
+    frameDirty = false;
+  }
+  const drawn = renderer.render(camera, quality, { budget: governor.budget(), resume });
   governor.drew(drawn.drawnPrimitives, !drawn.partial, drawn.primitives);
   if (drawn.partial) {
     frames.request();
-    return;
+    return true;
   }
+  if (frameDirty) frames.request();  // what changed while the frame was drawn in parts
   const counts = renderer.drawnCounts();
   setHooks({
     drawnSerial: installedSerial, drawnStep: scrubber.value, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls,

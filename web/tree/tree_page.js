@@ -97,39 +97,57 @@ const table = new RenderTable(ui.renderTable, ui.renderCol, ui.frameStats);
 // moves, the governor draws cheaper frames when they lag, and the full one once all is still.
 const governor = new FrameGovernor({ onStill: () => requestFrame() });
 // A frame bigger than the governor's budget is drawn in parts over several animation frames
-// (web/gl/progressive_frame.js): a still view goes on with the same frame unless something asked
-// for a new one (frameDirty); a moving view starts a new, cheaper frame each time.
+// (web/gl/progressive_frame.js) and goes on until it is finished, unless the governor now wants
+// another level (the view started or stopped moving, the cheap representation arrived); what
+// changed meanwhile (frameDirty) is drawn by the next frame.
 let frameDirty = true;
+let frameLevel = -1;  // the governor's level of the frame in parts
 const frames = new FrameLoop(() => {
   // While a big tree goes up in parts the canvas keeps its last frame (no draw: a frame of the old
   // big tree costs seconds on a CPU GL, and every part's upload would wait for it).
   if (renderer.uploading) return false;
-  const moving = governor.moving();
-  const resume = !frameDirty && !moving && renderer.progress.pending();
-  frameDirty = false;
+  if (poseDrawPending) governor.motion();  // a new pose to draw: moving, however long the last frame took
+  const cheapAvailable = renderer.motionReady() ? Infinity : 0;
+  const next = governor.peek(cheapAvailable);
+  if (next.wantCheap > 0 && !renderer.motionReady()) requestMotionView();
+  // Moving, and the cheaper representation is on its way: no full frame meanwhile (the canvas keeps
+  // the last one; the GPU paints the atlas), the sway goes on.
+  if (next.moving && next.capped && !motionOff) {
+    renderer.progress.abort();  // a full frame in parts would only hold the atlas back
+    if (poseDrawPending) {
+      poseDrawPending = false;
+      worker.post('poseDone');
+    }
+    return false;
+  }
+  const resume = renderer.progress.pending() && next.level === frameLevel;
   let quality = null;
   if (!resume) {
-    // Cheap levels draw the tree's hybrid scene once the worker has sent it (asked for here).
-    quality = governor.quality(renderer.motionReady() ? Infinity : 0);
-    if (quality.wantCheap > 0 && !renderer.motionReady()) requestMotionView();
+    quality = governor.quality(cheapAvailable);
+    frameLevel = quality.level;
+    frameDirty = false;
   }
   const drawn = renderer.render(camera, quality, { budget: governor.budget(), resume });
   if (!drawn) return false;
   governor.drew(drawn.drawnPrimitives, !drawn.partial, drawn.primitives);
   setHooks({ frameScale: renderer.scale, frameMode: drawn.mode, framesDrawn: frames.stats.drawn,
     framesSkipped: frames.stats.skippedBusy, frameGpuMs: Math.round(frames.stats.gpuMs), framePartial: drawn.partial ? 1 : 0 });
-  if (drawn.partial) frames.request();  // the rest of this frame (or, moving, the next frame)
-  if (poseDrawPending && (!drawn.partial || moving)) {  // the worker sends the next pose now
+  if (drawn.partial) {
+    frames.request();  // the rest of this frame
+    return true;
+  }
+  if (frameDirty) frames.request();  // what changed while the frame was drawn in parts
+  if (poseDrawPending) {  // the worker sends the next pose once this one is on screen
     poseDrawPending = false;
     worker.post('poseDone');
   }
-  if (drawn.partial) return;
   if (drawn.mode !== 'motion') table.showFrame(drawn);
   setHooks({ drawnTreeSerial: treeSerial });  // tests wait for the new tree's frame
   if (freshOnDraw) {  // the tree that answers the latest edit is on screen now
     freshOnDraw = false;
     feedback.fresh();
   }
+  return true;
 }, { governor });
 const requestFrame = () => {
   if (!renderer) return;
@@ -511,7 +529,7 @@ worker.on('tree', (msg) => {
 });
 
 worker.on('motionAtlas', (msg) => {
-  renderer?.setMotionHybrid(msg.hybrid);
+  renderer?.setMotionHybrid(msg.hybrid, governor.budget()).then(() => { if (governor.moving()) requestFrame(); });
 });
 
 worker.on('drawList', (msg) => {

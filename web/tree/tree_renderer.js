@@ -4,7 +4,7 @@
 // Does not: grow or mesh trees (the worker does), keep page state, or own the camera.
 import { createContext, drawingBufferSize, finishGpu, resizeCanvas, sunDirection } from '../gl/context.js';
 import { BufferPool } from '../gl/buffer_pool.js';
-import { UPLOAD_PARTS_ABOVE, planBytes, uploadInParts } from '../gl/chunked_upload.js';
+import { UPLOAD_PARTS_ABOVE, gpuDone, planBytes, uploadInParts } from '../gl/chunked_upload.js';
 import { floatAttribute, staticBuffer, uintAttribute } from '../gl/buffers.js';
 import { Ground } from '../gl/ground.js';
 import { PickTarget } from '../gl/pick.js';
@@ -34,7 +34,8 @@ export const PARTS = {
 // `texture`, with a depth buffer) from the worker's clip-space triangles of the group
 // representatives and leaf clusters, lit by `light` like the full view and transparent elsewhere,
 // then mipmaps `texture` for distant cards. Returns the triangles drawn. Used by the page and the grove.
-export function paintAtlas(gl, program, hybrid, fb, texture, light) {
+// uploaded: Map('part.attr' -> buffer) of geometry already uploaded (in parts), deleted here.
+export function paintAtlas(gl, program, hybrid, fb, texture, light, uploaded = null) {
   const size = hybrid.atlasSize;
   gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
   gl.viewport(0, 0, size, size);
@@ -54,10 +55,13 @@ export function paintAtlas(gl, program, hybrid, fb, texture, light) {
     if (count === 0) continue;
     const vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
-    const buffers = [staticBuffer(gl, part.positions), staticBuffer(gl, part.normals)];
+    const ready = (attr) => uploaded?.get(`${name}.${attr}`);
+    const buffers = [ready('positions') || staticBuffer(gl, part.positions), ready('normals') || staticBuffer(gl, part.normals)];
     floatAttribute(gl, 0, buffers[0], 3);
     floatAttribute(gl, 1, buffers[1], 3);
-    buffers.push(staticBuffer(gl, part.indices, gl.ELEMENT_ARRAY_BUFFER));
+    const indices = ready('indices');
+    if (indices) gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, indices);
+    buffers.push(indices || staticBuffer(gl, part.indices, gl.ELEMENT_ARRAY_BUFFER));
     const look = PARTS[name];
     gl.uniform3fv(program.uniforms.uColor, look.color);
     gl.uniform3fv(program.uniforms.uColorVariation, look.variation);
@@ -69,6 +73,82 @@ export function paintAtlas(gl, program, hybrid, fb, texture, light) {
     gl.deleteVertexArray(vao);
   }
   gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+  gl.bindTexture(gl.TEXTURE_2D, texture);
+  gl.generateMipmap(gl.TEXTURE_2D);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+  gl.bindTexture(gl.TEXTURE_2D, null);
+  return triangles;
+}
+
+// paintAtlas over several tasks (the cheap representation of a moving full-mode tree, issue 16):
+// the atlas geometry of a 141 k-internode sakura is 66 MB and about 1.6 M triangles, seconds of
+// SwiftShader time at once, so it is drawn `budget` triangles at a time, each part once the GPU
+// has finished the last (gpuDone), then mipmapped. uploaded: its buffers (chunked_upload.js),
+// deleted here. Resolves to the triangles drawn, or -1 when cancelled() turned true.
+export async function paintAtlasInParts(gl, program, hybrid, fb, texture, light, uploaded, budget, cancelled) {
+  const size = hybrid.atlasSize;
+  gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+  gl.viewport(0, 0, size, size);
+  gl.clearColor(0, 0, 0, 0);
+  gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+  gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+  const owned = [];
+  const steps = [];
+  for (const name of ['bark', 'leaves', 'flowers']) {
+    const part = hybrid[name];
+    const count = part.indices.byteLength / 4;
+    if (count === 0) continue;
+    const vao = gl.createVertexArray();
+    gl.bindVertexArray(vao);
+    const ready = (attr) => uploaded?.get(`${name}.${attr}`);
+    const buffers = [ready('positions') || staticBuffer(gl, part.positions), ready('normals') || staticBuffer(gl, part.normals)];
+    floatAttribute(gl, 0, buffers[0], 3);
+    floatAttribute(gl, 1, buffers[1], 3);
+    const indices = ready('indices') || staticBuffer(gl, part.indices, gl.ELEMENT_ARRAY_BUFFER);
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, indices);
+    buffers.push(indices);
+    gl.bindVertexArray(null);
+    owned.push({ vao, buffers });
+    const look = PARTS[name];
+    steps.push({
+      primitives: count / 3,
+      setup: () => {
+        gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+        gl.viewport(0, 0, size, size);
+        gl.enable(gl.DEPTH_TEST);
+        gl.disable(gl.BLEND);
+        gl.useProgram(program.program);
+        gl.uniform3fv(program.uniforms.uLightDirection, light);
+        gl.uniform3fv(program.uniforms.uCameraPosition, [0, 0, 10]);
+        gl.uniform1f(program.uniforms.uXray, 0);
+        gl.uniform1f(program.uniforms.uSpecular, 0);
+        gl.uniform3fv(program.uniforms.uColor, look.color);
+        gl.uniform3fv(program.uniforms.uColorVariation, look.variation);
+        gl.uniform1f(program.uniforms.uDoubleSided, look.doubleSided);
+        gl.bindVertexArray(vao);
+      },
+      draw: (first, n) => gl.drawElements(gl.TRIANGLES, 3 * n, gl.UNSIGNED_INT, 12 * first),
+      teardown: () => {
+        gl.bindVertexArray(null);
+        gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+      },
+    });
+  }
+  const frame = new ProgressiveFrame();  // steps only: the target is bound by each step
+  frame.start(steps);
+  let triangles = 0;
+  while (frame.pending() && !cancelled()) {
+    triangles += frame.run(budget).primitives;
+    await gpuDone(gl);
+  }
+  for (const { vao, buffers } of owned) {
+    gl.deleteVertexArray(vao);
+    buffers.forEach((b) => gl.deleteBuffer(b));
+  }
+  if (frame.pending()) return -1;
   gl.bindTexture(gl.TEXTURE_2D, texture);
   gl.generateMipmap(gl.TEXTURE_2D);
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
@@ -318,9 +398,14 @@ export class Renderer {
   }
 
   // Paints the card atlas of `hybrid` into this.atlas (reallocated when its size changes).
-  #paintHybridAtlas(hybrid) {
+  #paintHybridAtlas(hybrid, uploaded = null) {
+    this.#allocateAtlas(hybrid.atlasSize);
+    const triangles = paintAtlas(this.gl, this.atlasProgram, hybrid, this.atlas.fb, this.atlas.texture, this.light, uploaded);
+    return { atlasSize: hybrid.atlasSize, atlasTriangles: triangles };
+  }
+
+  #allocateAtlas(size) {
     const gl = this.gl;
-    const size = hybrid.atlasSize;
     if (!this.atlas || this.atlas.size !== size) {
       if (this.atlas) {
         gl.deleteTexture(this.atlas.texture);
@@ -339,29 +424,59 @@ export class Renderer {
       gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depth);
       this.atlas = { texture, depth, fb, size };
     }
-    const triangles = paintAtlas(gl, this.atlasProgram, hybrid, this.atlas.fb, this.atlas.texture, this.light);
-    return { atlasSize: size, atlasTriangles: triangles };
   }
 
   // The cheaper representation of a full-mode tree while it moves (issue 16: a FrameGovernor's
   // cheap levels): the hybrid scene of the same tree (thesis ch. 4: cards and lines, skinned by the
   // same poses), its atlas from the worker's 'view' {motion: true}. Full-mode trees only.
-  setMotionHybrid(hybrid) {
+  // Its geometry goes up in parts first (web/gl/chunked_upload.js: the atlas of a 141 k-internode
+  // sakura held the main thread 0.5-3.4 s at once) and is painted `budget` triangles at a time
+  // (paintAtlasInParts); resolves to true once the atlas is painted.
+  setMotionHybrid(hybrid, budget = Infinity) {
     this.clearMotion();
-    if (this.hybrid || !hybrid) return;
-    this.motion = { hybrid: this.#paintHybridAtlas(hybrid), drawList: null };
+    if (this.hybrid || !hybrid) return Promise.resolve(false);
+    const gl = this.gl;
+    const serial = (this.motionUploads = (this.motionUploads || 0) + 1);
+    const plan = [];
+    for (const name of ['bark', 'leaves', 'flowers']) {
+      const part = hybrid[name];
+      if (!part || part.indices.byteLength === 0) continue;
+      plan.push({ key: `${name}.positions`, bytes: part.positions, target: gl.ARRAY_BUFFER },
+        { key: `${name}.normals`, bytes: part.normals, target: gl.ARRAY_BUFFER },
+        { key: `${name}.indices`, bytes: part.indices, target: gl.ELEMENT_ARRAY_BUFFER });
+    }
+    this.motionPending = true;
+    const current = () => serial === this.motionUploads && !this.hybrid;
+    return uploadInParts(gl, plan, () => !current()).then(async (uploaded) => {
+      if (!current()) {
+        uploaded.forEach((b) => gl.deleteBuffer(b));
+        return false;
+      }
+      this.#allocateAtlas(hybrid.atlasSize);
+      const triangles = await paintAtlasInParts(gl, this.atlasProgram, hybrid, this.atlas.fb, this.atlas.texture, this.light,
+        uploaded, budget, () => !current());
+      if (!current() || triangles < 0) return false;
+      this.motionPending = false;
+      this.motion = { hybrid: { atlasSize: hybrid.atlasSize, atlasTriangles: triangles }, drawList: null };
+      if (this.pendingMotionList) this.setMotionDrawList(this.pendingMotionList);  // came meanwhile
+      this.pendingMotionList = null;
+      return true;
+    });
   }
 
   // The draw list of the motion representation for the current camera.
   setMotionDrawList(msg) {
-    if (!this.motion) return;
+    if (!this.motion) {
+      if (this.motionPending) this.pendingMotionList = msg;  // the atlas is still going up
+      return;
+    }
     if (this.motion.drawList) this.#deleteList(this.motion.drawList);
     this.motion.drawList = this.#buildDrawList(msg);
   }
 
   // True when the motion representation can be drawn (its atlas and a draw list are in place).
   hasMotionAtlas() {
-    return Boolean(this.motion);
+    return Boolean(this.motion || this.motionPending);
   }
 
   motionReady() {
@@ -371,6 +486,9 @@ export class Renderer {
   clearMotion() {
     if (this.motion?.drawList) this.#deleteList(this.motion.drawList);
     this.motion = null;
+    this.motionPending = false;
+    this.pendingMotionList = null;
+    this.motionUploads = (this.motionUploads || 0) + 1;  // an atlas on its way is dropped
   }
 
   #deleteDrawList() {
