@@ -1,6 +1,6 @@
 // Node test (no Chromium) of the pages' frame pacing (issue 16): web/gl/frame_loop.js keeps one
-// frame in flight (a fence per frame; no draw until it signals) and yields two frames after input
-// outside the canvas; web/gl/frame_governor.js lowers and restores the quality from frame
+// frame in flight (a fence per frame; no draw until it signals, unless the request is urgent);
+// web/gl/frame_governor.js lowers and restores the quality from frame
 // latencies and measures the budget of web/gl/progressive_frame.js (a frame drawn in parts);
 // web/ivy/ivy_renderer.js's birthCounter against its brute-force twin (a sort).
 // node tests/browser/frame_pacing.test.mjs
@@ -10,9 +10,6 @@ import { check, finish } from './harness.mjs';
 const frameQueue = [];
 globalThis.requestAnimationFrame = (f) => frameQueue.push(f);
 const tick = () => frameQueue.splice(0).forEach((f) => f(performance.now()));
-const listeners = new Map();
-globalThis.Node = class {};
-globalThis.document = { addEventListener: (type, f) => listeners.set(type, f) };
 const fences = [];
 const gl = {
   SYNC_GPU_COMMANDS_COMPLETE: 1, SYNC_STATUS: 2, SIGNALED: 3, UNSIGNALED: 4,
@@ -21,7 +18,7 @@ const gl = {
   deleteSync() {}, flush() {}, isContextLost: () => false,
 };
 
-const { FrameLoop, INPUT_YIELD_FRAMES } = await import('../../web/gl/frame_loop.js');
+const { FrameLoop } = await import('../../web/gl/frame_loop.js');
 const { FrameGovernor, LEVELS } = await import('../../web/gl/frame_governor.js');
 const { ProgressiveFrame } = await import('../../web/gl/progressive_frame.js');
 const { birthCounter } = await import('../../web/ivy/ivy_renderer.js');
@@ -47,23 +44,15 @@ const { birthCounter } = await import('../../web/ivy/ivy_renderer.js');
   tick();
   check('an unrequested frame is not drawn (frames on demand)', draws === 2 && !loop.busy() && frameQueue.length === 0, `${draws} draws`);
 
-  // Input outside the canvas: the next INPUT_YIELD_FRAMES frames leave the canvas alone.
-  const canvas = { contains: () => false };
-  loop.attach(gl, canvas);
+  // An urgent request (Still) is drawn at the next animation frame, the last fence or not.
   loop.request();
-  listeners.get('click')({ target: new Node() });
-  for (let i = 0; i < INPUT_YIELD_FRAMES; ++i) tick();
-  const yielded = draws;
   tick();
-  check(`input outside the canvas defers the canvas by ${INPUT_YIELD_FRAMES} frames`, yielded === 2 && draws === 3,
-    `${yielded} draws during the yield, ${draws} after`);
+  check('(a frame in flight)', draws === 3 && loop.busy());
+  loop.request(true);
+  tick();
+  check('an urgent request does not wait for the frame in flight', draws === 4, `${draws} draws`);
   fences.at(-1).signaled = true;
   tick();
-  canvas.contains = () => true;  // input on the canvas (orbit): no yield
-  loop.request();
-  listeners.get('pointerdown')({ target: new Node() });
-  tick();
-  check('input on the canvas is not deferred', draws === 4, `${draws} draws`);
 }
 
 // ---- The governor: slow moving frames get cheaper, fast ones better, still ones full.

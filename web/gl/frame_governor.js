@@ -21,13 +21,15 @@ export const LEVELS = Object.freeze([
 
 // The smallest ProgressiveFrame budget (primitives per animation frame).
 export const MIN_BUDGET = 20_000;
+// Frames of fewer primitives keep full quality however long they take.
+export const MIN_GOVERNED = 100_000;
 
 export class FrameGovernor {
   // targetMs: the latency above which a moving frame gets cheaper (below targetMs / 3 it gets
-  // better again); stillMs: how long without motion() before the full-quality frame; onStill():
+  // better again; 300 ms: on SwiftShader the fence of even a tiny frame signals 100-150 ms later); stillMs: how long without motion() before the full-quality frame; onStill():
   // called then, when the last frame drawn was reduced (the page requests a frame).
   // firstBudget: primitives per animation frame before a rate is measured (ProgressiveFrame).
-  constructor({ levels = LEVELS, targetMs = 150, stillMs = 500, onStill = () => {}, firstBudget = 50_000 } = {}) {
+  constructor({ levels = LEVELS, targetMs = 300, stillMs = 500, onStill = () => {}, firstBudget = 50_000 } = {}) {
     this.levels = levels;
     this.targetMs = targetMs;
     this.firstBudget = firstBudget;
@@ -126,13 +128,16 @@ export class FrameGovernor {
     if (part && !part.complete) {
       // A frame too big for one animation frame is too slow by its size over the budget: judged
       // at its first part (a moving frame is not finished: the next one starts cheaper).
-      if (!drawn.judged && part.framePrimitives > budget) {
+      if (!drawn.judged && part.framePrimitives > budget && part.framePrimitives >= MIN_GOVERNED) {
         drawn.judged = true;
         this.#judge(drawn, this.targetMs * (part.framePrimitives / budget));
       }
       return;
     }
     this.drawn = null;
+    // A frame of few primitives is never made cheaper: its latency is the page's and the
+    // compositor's, not its own (SwiftShader: 100-300 ms for any frame on a loaded machine).
+    if (part && part.framePrimitives < MIN_GOVERNED) return;
     if (!drawn.judged) this.#judge(drawn, part ? performance.now() - this.frameStart : drawMs);
   }
 

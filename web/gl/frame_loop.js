@@ -8,52 +8,35 @@
 // click's effect waits for at most the frame being drawn. The time from a frame's fence to its
 // signal is its latency (`gpuMs`, measured at animation-frame granularity), which a
 // FrameGovernor (frame_governor.js) turns into a cheaper frame while things move.
-// After an input outside the canvas (a press, a click, a key, a changed field) the next INPUT_YIELD_FRAMES
-// animation frames draw nothing on the canvas, so the page shows the control's answer first
-// (the canvas keeps its last frame: preserveDrawingBuffer); input on the canvas itself (orbit,
-// pick) is not delayed.
+// A request marked urgent (a discrete action such as Still: its frame must show now) is drawn at
+// the next animation frame even while the last frame is still on the GPU.
 // Does not: run a steady loop, know what is drawn, or choose the frame's quality (the governor
 // and the renderer do).
 
-export const INPUT_YIELD_FRAMES = 2;
-const INPUT_EVENTS = ['pointerdown', 'click', 'keydown', 'change'];  // not 'input': a slider drag
-
 export class FrameLoop {
   // draw(): called once per requested animation frame (returns false when it drew nothing: no
-  // fence). Options: gl (a WebGL2 context: one frame
-  // in flight, latency measured), governor (told each frame's latency: frameDone(ms)), canvas
-  // (input on it is not delayed), inputYield (false: no yield after input).
-  constructor(draw, { gl = null, governor = null, canvas = null, inputYield = true } = {}) {
+  // fence). Options: gl (a WebGL2 context: one frame in flight, latency measured), governor (told
+  // each frame's latency: frameDone(ms)).
+  constructor(draw, { gl = null, governor = null } = {}) {
     this.draw = draw;
     this.gl = gl;
     this.governor = governor;
-    this.canvas = canvas;
     this.requested = false;  // a frame is wanted
+    this.urgent = false;     // ... at the next animation frame, whatever the GPU is doing
     this.ticking = false;    // an animation frame callback is pending
     this.fence = null;       // the last frame's fence, until it signals
     this.fenceAt = 0;
-    this.yieldFrames = 0;    // animation frames left without a draw after input
-    this.inputYield = inputYield;
-    this.stats = { drawn: 0, skippedBusy: 0, skippedInput: 0, gpuMs: 0 };
-    if (gl) this.attach(gl, canvas);
+    this.stats = { drawn: 0, skippedBusy: 0, gpuMs: 0 };
   }
 
-  // The context (and its canvas) once the renderer exists: from now on one frame in flight.
-  attach(gl, canvas = null) {
+  // The context once the renderer exists: from now on one frame in flight.
+  attach(gl) {
     this.gl = gl;
-    this.canvas = canvas;
-    if (!this.inputYield || this.listening || typeof document === 'undefined') return;
-    this.listening = true;
-    const onInput = (e) => {
-      if (this.canvas && e.target instanceof Node && this.canvas.contains(e.target)) return;
-      this.yieldFrames = INPUT_YIELD_FRAMES;
-      this.#tick();  // count the yield frames down even when no frame is wanted yet
-    };
-    for (const type of INPUT_EVENTS) document.addEventListener(type, onInput, { capture: true, passive: true });
   }
 
-  request() {
+  request(urgent = false) {
     this.requested = true;
+    this.urgent ||= urgent;
     this.#tick();
   }
 
@@ -79,20 +62,18 @@ export class FrameLoop {
         if (!gl.isContextLost()) gl.deleteSync(this.fence);
         this.fence = null;
         this.governor?.frameDone(this.stats.gpuMs);
+      } else if (this.requested && this.urgent) {
+        gl.deleteSync(this.fence);  // not measured: the urgent frame goes in after it
+        this.fence = null;
       } else {
         if (this.requested) this.stats.skippedBusy += 1;
         this.#tick();  // poll again next frame (the last frame still being drawn)
         return;
       }
     }
-    if (this.yieldFrames > 0 && gl) {
-      this.yieldFrames -= 1;
-      if (this.requested) this.stats.skippedInput += 1;
-      if (this.requested || this.yieldFrames > 0) this.#tick();
-      return;
-    }
     if (!this.requested) return;
     this.requested = false;
+    this.urgent = false;
     if (this.draw() === false) return;  // nothing drawn (e.g. a mesh still going up in parts)
     this.stats.drawn += 1;
     if (gl && !gl.isContextLost()) {

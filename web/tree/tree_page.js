@@ -107,12 +107,13 @@ const frames = new FrameLoop(() => {
   // big tree costs seconds on a CPU GL, and every part's upload would wait for it).
   if (renderer.uploading) return false;
   if (poseDrawPending) governor.motion();  // a new pose to draw: moving, however long the last frame took
-  const cheapAvailable = renderer.motionReady() ? Infinity : 0;
+  // (a hybrid-mode tree is cheap already: its levels only shrink the drawing buffer)
+  const cheapAvailable = hybridOn || renderer.motionReady() ? Infinity : 0;
   const next = governor.peek(cheapAvailable);
   if (next.wantCheap > 0 && !renderer.motionReady()) requestMotionView();
-  // Moving, and the cheaper representation is on its way: no full frame meanwhile (the canvas keeps
-  // the last one; the GPU paints the atlas), the sway goes on.
-  if (next.moving && next.capped && !motionOff) {
+  // Moving, the cheaper representation on its way and a full frame too big for one animation frame:
+  // no full frame meanwhile (the canvas keeps the last one; the GPU paints the atlas), the sway goes on.
+  if (next.moving && next.capped && !motionOff && renderer.fullPrimitives() > governor.budget()) {
     renderer.progress.abort();  // a full frame in parts would only hold the atlas back
     if (poseDrawPending) {
       poseDrawPending = false;
@@ -149,10 +150,10 @@ const frames = new FrameLoop(() => {
   }
   return true;
 }, { governor });
-const requestFrame = () => {
+const requestFrame = (urgent = false) => {
   if (!renderer) return;
   frameDirty = true;
-  frames.request();
+  frames.request(urgent);
 };
 
 // Hybrid mode: the worker chooses card or line per branch for each view (eq. 4.1 with hysteresis);
@@ -544,7 +545,7 @@ worker.on('drawList', (msg) => {
   if (!hybridOn || !renderer) return;
   renderer.setDrawList(msg);
   table.showHybridCounts(msg.stats);
-  requestFrame();
+  requestFrame(true);  // a hybrid frame is cheap: the new list at once, not after the frame in flight
   if (viewDirty) requestView();
 });
 
@@ -717,9 +718,9 @@ function setWind(play) {
   if (play && governor.motionCheap() > 0 && !renderer?.motionReady()) requestMotionView();
   worker.post('wind', { play });
   if (!play) {
-    governor.stop();  // the rest shape at full quality
+    governor.stop();  // the rest shape at full quality, at once
     renderer?.setRestPoses(renderer.poseNodes);
-    requestFrame();
+    requestFrame(true);
   }
   showWind(null);
 }

@@ -474,6 +474,11 @@ export class Renderer {
     this.motion.drawList = this.#buildDrawList(msg);
   }
 
+  // Triangles of a full-mode frame of the tree (its parts).
+  fullPrimitives() {
+    return Object.values(this.parts).reduce((n, part) => n + part.count / 3, 0);
+  }
+
   // True when the motion representation can be drawn (its atlas and a draw list are in place).
   hasMotionAtlas() {
     return Boolean(this.motion || this.motionPending);
