@@ -100,7 +100,10 @@ const frames = new FrameLoop(() => {
     frames.request();
     return true;
   }
-  if (frameDirty) frames.request();  // what changed while the frame was drawn in parts
+  if (frameDirty) {  // what changed while the frame was drawn in parts: the next frame shows it
+    frames.request();
+    return true;  // (and the hooks wait for that frame)
+  }
   const counts = renderer.drawnCounts();
   setHooks({
     drawnSerial: installedSerial, drawnStep: scrubber.value, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls,

@@ -91,7 +91,10 @@ const frames = new FrameLoop(() => {
     frames.request();
     return true;
   }
-  if (frameDirty) frames.request();  // what changed while the frame was drawn in parts
+  if (frameDirty) {  // what changed while the frame was drawn in parts: the next frame shows it
+    frames.request();
+    return true;  // (and the hooks wait for that frame)
+  }
   setHooks({
     drawnSerial: installedSerial, drawnLevel: Number.isFinite(shownLevel) ? shownLevel : 'all', drawnTriangles: drawn.triangles, drawnLines: drawn.lines,
     drawCalls: drawn.drawCalls,

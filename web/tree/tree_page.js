@@ -198,7 +198,7 @@ function showSun() {
   const growth = weight > 0 ? `and the growth model, weight ${weight}` : 'only; the growth model has sky light (sun_weight 0)';
   ui.sunInfo.textContent = `sun: az ${az}°, el ${el}° (lights the view ${growth})`;
   renderer?.setSun(el, az);
-  requestFrame();
+  requestFrame(true);  // the new light at once, before the regrown tree
 }
 
 // Camera moves rewrite the cam= field of the current history entry (no new entry), a moment later.
