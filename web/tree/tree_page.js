@@ -101,6 +101,7 @@ const governor = new FrameGovernor({ onStill: () => requestFrame() });
 // another level (the view started or stopped moving, the cheap representation arrived); what
 // changed meanwhile (frameDirty) is drawn by the next frame.
 let frameDirty = true;
+let wholeNext = false;  // the next frame is drawn whole, not in parts (requestFrame(true, true))
 let frameLevel = -1;  // the governor's level of the frame in parts
 const frames = new FrameLoop(() => {
   // While a big tree goes up in parts the canvas keeps its last frame (no draw: a frame of the old
@@ -111,9 +112,10 @@ const frames = new FrameLoop(() => {
   const cheapAvailable = hybridOn || renderer.motionReady() ? Infinity : 0;
   const next = governor.peek(cheapAvailable);
   if (next.wantCheap > 0 && !renderer.motionReady()) requestMotionView();
-  // Moving, the cheaper representation on its way and a full frame too big for one animation frame:
-  // no full frame meanwhile (the canvas keeps the last one; the GPU paints the atlas), the sway goes on.
-  if (next.moving && next.capped && !motionOff && renderer.fullPrimitives() > governor.budget()) {
+  // Swaying, the cheaper representation on its way and a full frame too big for one animation
+  // frame: no full frame meanwhile (the canvas keeps the last one; the GPU paints the atlas), the
+  // sway goes on.
+  if (windPlaying && next.moving && next.capped && !motionOff && renderer.fullPrimitives() > governor.budget()) {
     renderer.progress.abort();  // a full frame in parts would only hold the atlas back
     if (poseDrawPending) {
       poseDrawPending = false;
@@ -121,14 +123,20 @@ const frames = new FrameLoop(() => {
     }
     return false;
   }
-  const resume = renderer.progress.pending() && next.level === frameLevel;
+  const resume = renderer.progress.pending() && next.level === frameLevel && !wholeNext;
   let quality = null;
+  let whole = false;
   if (!resume) {
     quality = governor.quality(cheapAvailable);
     frameLevel = quality.level;
     frameDirty = false;
+    whole = wholeNext;
+    wholeNext = false;
   }
-  const drawn = renderer.render(camera, quality, { budget: governor.budget(), resume });
+  // A camera drag without the cheaper representation: each frame at once (smaller), as it moves;
+  // an edit that must show at once (the sun): one whole frame, however long it takes.
+  const dragging = next.moving && next.capped && !windPlaying;
+  const drawn = renderer.render(camera, quality, { budget: dragging || whole ? Infinity : governor.budget(), resume });
   if (!drawn) return false;
   governor.drew(drawn.drawnPrimitives, !drawn.partial, drawn.primitives);
   setHooks({ frameScale: renderer.scale, frameMode: drawn.mode, framesDrawn: frames.stats.drawn,
@@ -150,9 +158,10 @@ const frames = new FrameLoop(() => {
   }
   return true;
 }, { governor });
-const requestFrame = (urgent = false) => {
+const requestFrame = (urgent = false, whole = false) => {
   if (!renderer) return;
   frameDirty = true;
+  wholeNext ||= whole;
   frames.request(urgent);
 };
 
@@ -198,7 +207,7 @@ function showSun() {
   const growth = weight > 0 ? `and the growth model, weight ${weight}` : 'only; the growth model has sky light (sun_weight 0)';
   ui.sunInfo.textContent = `sun: az ${az}°, el ${el}° (lights the view ${growth})`;
   renderer?.setSun(el, az);
-  requestFrame(true);  // the new light at once, before the regrown tree
+  requestFrame(true, true);  // the new light at once, before the regrown tree
 }
 
 // Camera moves rewrite the cam= field of the current history entry (no new entry), a moment later.
