@@ -100,11 +100,14 @@ class NiwaIvy extends EmbedElement {
 
   showIvy(msg) {
     this.pending.ivy = null;
-    this.renderer.setIvy(msg.mesh);
-    if (!this.framed && this.renderer.bounds()) {
-      this.camera.reset(this.renderer.bounds());
-      this.framed = true;
-    }
+    this.renderer.setIvy(msg.mesh).then((installed) => {  // a big ivy goes up in parts
+      if (!installed) return;
+      if (!this.framed && this.renderer.bounds()) {
+        this.camera.reset(this.renderer.bounds());
+        this.framed = true;
+      }
+      this.requestFrame();
+    });
     this.steps = msg.steps;
     this.line.textContent = '';
     const s = msg.stats;

@@ -55,12 +55,13 @@ async function clicksDuring(page, busy, { min = 1, max = 300 } = {}) {
 }
 
 const summary = (times, tasks) =>
-  `${times.length} clicks, slowest ${Math.max(...times)} ms, median ${times.slice().sort((a, b) => a - b)[Math.floor(times.length / 2)]} ms; ` +
+  `${times.length} clicks (${times.join(', ')} ms), slowest ${Math.max(...times)} ms, median ${times.slice().sort((a, b) => a - b)[Math.floor(times.length / 2)]} ms; ` +
   `${tasks.length} long tasks, longest ${tasks.length ? Math.max(...tasks).toFixed(0) : 0} ms`;
 
-// Issue 16's 1 s goal is not met yet for a sway, an export and the ivy and terrain grows on
-// SwiftShader (docs/budgets.md, "Responsiveness"): those lines are printed as KNOWN (an expected
-// failure, listed at the end) instead of failing the run; each becomes a PASS once it is met.
+// Issue 16's 1 s goal is not always met for the ivy grow on SwiftShader (its first click, during
+// the page's start-up, took 907-1196 ms; docs/budgets.md, "Responsiveness"): that line is printed
+// as KNOWN (an expected failure, listed at the end) when it is missed, and counted as a PASS when
+// it is met.
 const known = [];
 function expectedToFail(name, ok, detail) {
   if (ok) check(name, true, detail);
@@ -75,12 +76,15 @@ async function shoot(page, file) {
   }
 }
 
+// NIWA_RESPONSIVE=tree,ivy,terrain (any of them) runs only those pages' parts; all by default.
+const PARTS = (process.env.NIWA_RESPONSIVE || 'tree,ivy,terrain').split(',');
+
 await runBrowserTest(async (server, browser) => {
   const context = await newContext(browser, { viewport: { width: 1100, height: 760 } });
   await context.addInitScript(LONGTASK_INIT);
 
   // ---- The tree page: a grow, a sway, an export.
-  {
+  if (PARTS.includes('tree')) {
     const page = watchPage(await context.newPage(), problems);
     await page.goto(`${server.url}#preset=sakura&years=25`);
     await page.waitForFunction(() => document.documentElement.dataset.status === 'growing' && document.querySelector('#params details.group'),
@@ -100,15 +104,29 @@ await runBrowserTest(async (server, browser) => {
     const swayEnd = Date.now() + 5000;
     times = await clicksDuring(page, async () => Date.now() < swayEnd, { min: 5 });
     tasks = await longTasksSince(page, t0);
-    const swayed = Number((await hooks(page)).swayTime);
-    // Known, not met (issue 16): on SwiftShader a swaying tree of this size takes seconds a frame in
-    // the GPU process (no long task on the main thread), and a click's effect shows with the next
-    // frame. Measured and printed, not counted, until the page draws less while the GPU lags
-    // (docs/budgets.md, "Responsiveness").
-    const swayLine = `${summary(times, tasks)}; sway at t = ${swayed} s`;
+    const during = await hooks(page);  // the governor's frame while it sways (web/gl/frame_governor.js)
+    await shoot(page, 'responsive-sway-moving.png');
+    const swayed = Number(during.swayTime);
+    // Met since issue 16's frame pacing (docs/budgets.md, "Responsiveness"): one frame in flight,
+    // the moving tree drawn as its hybrid scene at a smaller drawing buffer while frames lag.
+    const swayLine = `${summary(times, tasks)}; sway at t = ${swayed} s; frames ${during.frameMode} at scale ${during.frameScale}, ` +
+      `latency ${during.frameGpuMs} ms, ${during.framesDrawn} frames drawn, ${during.framesSkipped} skipped (GPU busy)`;
     check('tree sway: the tree sways and the clicks are handled', swayed > 0 && times.every(Number.isFinite), swayLine);
-    expectedToFail('tree sway: every click answered within 1 s', Math.max(...times) < 1000, swayLine);
+    check('tree sway: every click answered within 1 s', Math.max(...times) < 1000, swayLine);
     await page.click('#wind');  // Still
+    // Still: the rest shape at full quality again, finished (a frame of this size is drawn in parts
+    // over several animation frames on SwiftShader), at the canvas's full size.
+    const stillStart = Date.now();
+    const fullAgain = await page.waitForFunction(() => {
+      const d = document.documentElement.dataset, c = document.getElementById('view');
+      return d.swayTime === '' && d.frameScale === '1' && d.frameMode === 'full' && d.framePartial === '0' &&
+        c.width === Math.round(c.clientWidth * Math.min(devicePixelRatio, 2));
+    }, null, { timeout: TIMEOUT, polling: 100 }).then(() => true, () => false);
+    const stillAgain = await hooks(page);
+    await shoot(page, 'responsive-sway-still.png');
+    check('tree sway: Still draws the full-quality frame again', fullAgain,
+      `while swaying: ${during.frameMode} at scale ${during.frameScale}; still: ${stillAgain.frameMode} at scale ${stillAgain.frameScale}, ` +
+      `finished ${Date.now() - stillStart} ms after Still`);
 
     // Export: the .glb of the tree, clicks until it has been downloaded.
     t0 = await now(page);
@@ -124,13 +142,13 @@ await runBrowserTest(async (server, browser) => {
     if (!(await refused())) await download;
     tasks = await longTasksSince(page, t0);
     const exported = (await hooks(page)).exported || '';
-    expectedToFail('tree .glb export: every click answered within 1 s', Math.max(...times) < 1000 && exported.startsWith('glb:'),
+    check('tree .glb export: every click answered within 1 s', Math.max(...times) < 1000 && exported.startsWith('glb:'),
       `${summary(times, tasks)}; ${exported} (tree of ${grown.internodes} internodes)`);
     await page.close();
   }
 
   // ---- The ivy page: a long grow, the page budget, Cancel.
-  {
+  if (PARTS.includes('ivy')) {
     const page = watchPage(await context.newPage(), problems);
     await page.goto(`${server.url}ivy.html`);
     await page.waitForFunction(() => document.documentElement.dataset.status === 'ready' && Number(document.documentElement.dataset.ivySerial) > 0,
@@ -179,7 +197,7 @@ await runBrowserTest(async (server, browser) => {
   }
 
   // ---- The terrain page: a long grow, the page budget, Cancel.
-  {
+  if (PARTS.includes('terrain')) {
     const page = watchPage(await context.newPage(), problems);
     await page.goto(`${server.url}terrain.html#preset=improved&builtin=jacksboro&res=1024`);
     await page.waitForFunction(() => document.documentElement.dataset.status === 'growing' && document.querySelector('#params details.group'),
@@ -189,7 +207,7 @@ await runBrowserTest(async (server, browser) => {
     await page.waitForFunction(() => document.documentElement.dataset.status === 'ready', null, { timeout: TIMEOUT });
     const tasks = await longTasksSince(page, t0);
     const good = await hooks(page);
-    expectedToFail('terrain grow (jacksboro, res 1024): every click answered within 1 s', Math.max(...times) < 1000,
+    check('terrain grow (jacksboro, res 1024): every click answered within 1 s', Math.max(...times) < 1000,
       `${summary(times, tasks)}; ${good.contours} contours, grown in ${good.wallMs} ms`);
     // The page budget: res 4096 is refused before the heightfield is built, named beside the field.
     await page.goto(`${server.url}terrain.html#preset=improved&builtin=jacksboro&res=4096`);

@@ -11,20 +11,26 @@ export function createContext(canvas, what = 'the scene') {
   return gl;
 }
 
-// Matches the drawing buffer to the canvas's CSS size (device pixel ratio at most 2).
-export function resizeCanvas(canvas) {
-  const dpr = Math.min(window.devicePixelRatio || 1, 2);
-  const w = Math.max(1, Math.round(canvas.clientWidth * dpr));
-  const h = Math.max(1, Math.round(canvas.clientHeight * dpr));
+// Matches the drawing buffer to the canvas's CSS size (device pixel ratio at most 2) times `scale`
+// (below 1 while a FrameGovernor lowers the cost of moving frames; the browser stretches it).
+export function resizeCanvas(canvas, scale = 1) {
+  const [w, h] = drawingBufferSize(canvas, scale);
   if (canvas.width !== w || canvas.height !== h) {
     canvas.width = w;
     canvas.height = h;
   }
 }
 
-// Clears the default framebuffer to the background with depth testing on.
-export function beginFrame(gl, canvas) {
-  resizeCanvas(canvas);
+// The drawing buffer size resizeCanvas(canvas, scale) gives, [width, height] in pixels.
+export function drawingBufferSize(canvas, scale = 1) {
+  const dpr = Math.min(window.devicePixelRatio || 1, 2) * scale;
+  return [Math.max(1, Math.round(canvas.clientWidth * dpr)), Math.max(1, Math.round(canvas.clientHeight * dpr))];
+}
+
+// Clears the default framebuffer to the background with depth testing on (drawing buffer at
+// `scale` of the canvas's size, see resizeCanvas).
+export function beginFrame(gl, canvas, scale = 1) {
+  resizeCanvas(canvas, scale);
   gl.viewport(0, 0, canvas.width, canvas.height);
   gl.clearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
   gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);

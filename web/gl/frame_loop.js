@@ -1,21 +1,87 @@
-// Frames on demand: request() asks for one animation frame (several requests before it runs make
-// one frame), and the draw callback runs in it. The pages draw only when something changed.
-// Does not: run a steady loop, measure frame rates, or know what is drawn.
+// Frames on demand, at most one in flight on the GPU: request() asks for one animation frame
+// (several requests before it runs make one frame), and the draw callback runs in it. The pages
+// draw only when something changed.
+// With a WebGL2 context (issue 16, "the page stays responsive"), every frame ends with a fence
+// (gl.fenceSync + flush) and the next frame is drawn only once that fence has signalled: while the
+// GPU (SwiftShader on a CPU: seconds per frame of a big tree) is still busy, the frame is skipped
+// and polled again at the next animation frame, so frames never queue up behind each other and a
+// click's effect waits for at most the frame being drawn. The time from a frame's fence to its
+// signal is its latency (`gpuMs`, measured at animation-frame granularity), which a
+// FrameGovernor (frame_governor.js) turns into a cheaper frame while things move.
+// A request marked urgent (a discrete action such as Still: its frame must show now) is drawn at
+// the next animation frame even while the last frame is still on the GPU.
+// Does not: run a steady loop, know what is drawn, or choose the frame's quality (the governor
+// and the renderer do).
 
 export class FrameLoop {
-  // draw(): called once per requested animation frame.
-  constructor(draw) {
+  // draw(): called once per requested animation frame (returns false when it drew nothing: no
+  // fence). Options: gl (a WebGL2 context: one frame in flight, latency measured), governor (told
+  // each frame's latency: frameDone(ms)).
+  constructor(draw, { gl = null, governor = null } = {}) {
     this.draw = draw;
-    this.requested = false;
+    this.gl = gl;
+    this.governor = governor;
+    this.requested = false;  // a frame is wanted
+    this.urgent = false;     // ... at the next animation frame, whatever the GPU is doing
+    this.ticking = false;    // an animation frame callback is pending
+    this.fence = null;       // the last frame's fence, until it signals
+    this.fenceAt = 0;
+    this.stats = { drawn: 0, skippedBusy: 0, gpuMs: 0 };
   }
 
-  request() {
-    if (this.requested) return;
+  // The context once the renderer exists: from now on one frame in flight.
+  attach(gl) {
+    this.gl = gl;
+  }
+
+  request(urgent = false) {
     this.requested = true;
+    this.urgent ||= urgent;
+    this.#tick();
+  }
+
+  // True while the last frame drawn has not finished on the GPU.
+  busy() {
+    return this.fence !== null;
+  }
+
+  #tick() {
+    if (this.ticking) return;
+    this.ticking = true;
     requestAnimationFrame(() => {
-      this.requested = false;
-      this.draw();
+      this.ticking = false;
+      this.#frame();
     });
+  }
+
+  #frame() {
+    const gl = this.gl;
+    if (this.fence) {
+      if (gl.isContextLost() || gl.getSyncParameter(this.fence, gl.SYNC_STATUS) === gl.SIGNALED) {
+        this.stats.gpuMs = performance.now() - this.fenceAt;
+        if (!gl.isContextLost()) gl.deleteSync(this.fence);
+        this.fence = null;
+        this.governor?.frameDone(this.stats.gpuMs);
+      } else if (this.requested && this.urgent) {
+        gl.deleteSync(this.fence);  // not measured: the urgent frame goes in after it
+        this.fence = null;
+      } else {
+        if (this.requested) this.stats.skippedBusy += 1;
+        this.#tick();  // poll again next frame (the last frame still being drawn)
+        return;
+      }
+    }
+    if (!this.requested) return;
+    this.requested = false;
+    this.urgent = false;
+    if (this.draw() === false) return;  // nothing drawn (e.g. a mesh still going up in parts)
+    this.stats.drawn += 1;
+    if (gl && !gl.isContextLost()) {
+      this.fence = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+      gl.flush();
+      this.fenceAt = performance.now();
+      if (this.fence) this.#tick();  // watch it signal (the governor learns the latency)
+    }
   }
 }
 

@@ -5,8 +5,10 @@
 // step k in the vertex shader (aBirth), so replaying the growth needs no regrow.
 // Does not: talk to the worker, pick by id (a click is a ray in scene units; the worker's BVH
 // answers it), or know the growth model.
-import { beginFrame, createContext, sunDirection } from '../gl/context.js';
+import { createContext, resizeCanvas, sunDirection } from '../gl/context.js';
 import { floatAttribute, staticBuffer } from '../gl/buffers.js';
+import { uploadInParts } from '../gl/chunked_upload.js';
+import { ProgressiveFrame } from '../gl/progressive_frame.js';
 import { loadPrograms } from '../gl/program.js';
 
 const SHADERS = new URL('../../shaders/ivy/', import.meta.url);
@@ -19,21 +21,39 @@ const COLORS = {
   suckers: { color: [0.55, 0.35, 0.2], variation: [0, 0, 0] },
 };
 
-// Sorted birth step of every triangle of a part (its first vertex's), for the drawn counts.
-function triangleBirths(indices, birth) {
-  const out = new Float32Array(indices.length / 3);
-  for (let t = 0; t < out.length; ++t) out[t] = birth[indices[3 * t]];
-  return out.sort();
-}
-
-// Number of entries of a sorted array that are <= k.
-function countAtMost(sorted, k) {
-  let lo = 0, hi = sorted.length;
-  while (lo < hi) {
-    const mid = (lo + hi) >> 1;
-    if (sorted[mid] <= k + 0.5) lo = mid + 1; else hi = mid;
+// The drawn-triangle counter of a part: how many triangles (by their first vertex's birth step)
+// were born at or before step k. Birth steps are whole numbers (core/ivy/ivy_mesh.h), so one pass
+// makes cumulative counts per step (O(n); sorting 2 M triangle births was part of a long task);
+// other values fall back to a sorted array and a binary search.
+export function birthCounter(indices, birth) {
+  const triangles = Math.floor(indices.length / 3);
+  let maxStep = 0, whole = true;
+  for (let t = 0; t < triangles && whole; ++t) {
+    const b = birth[indices[3 * t]];
+    if (!(b >= 0 && b <= 1e7 && Number.isInteger(b))) whole = false;
+    else if (b > maxStep) maxStep = b;
   }
-  return lo;
+  if (whole) {
+    const atMost = new Uint32Array(maxStep + 1);  // atMost[s]: triangles born at step <= s
+    for (let t = 0; t < triangles; ++t) atMost[birth[indices[3 * t]]] += 1;
+    for (let s = 1; s <= maxStep; ++s) atMost[s] += atMost[s - 1];
+    return (k) => {
+      if (!(k >= -0.5)) return 0;
+      const s = Math.floor(k + 0.5);  // as the sorted search's b <= k + 0.5
+      return s >= maxStep ? triangles : atMost[s];
+    };
+  }
+  const sorted = new Float32Array(triangles);
+  for (let t = 0; t < triangles; ++t) sorted[t] = birth[indices[3 * t]];
+  sorted.sort();
+  return (k) => {
+    let lo = 0, hi = sorted.length;
+    while (lo < hi) {
+      const mid = (lo + hi) >> 1;
+      if (sorted[mid] <= k + 0.5) lo = mid + 1; else hi = mid;
+    }
+    return lo;
+  };
 }
 
 export class IvyRenderer {
@@ -48,6 +68,11 @@ export class IvyRenderer {
     this.seeds = { vao: null, buffer: null, count: 0 };
     this.light = sunDirection(50, 30);
     this.boundsView = null;
+    this.ivyUploads = 0;     // setIvy calls so far (a newer one drops an older upload)
+    this.progress = new ProgressiveFrame(this.gl);  // the frame being drawn in parts
+    this.frameTotals = { triangles: 0, drawCalls: 0, primitives: 0 };
+    this.scale = 1;
+    this.uploading = false;  // an ivy is going up in parts
   }
 
   async init() {
@@ -57,30 +82,23 @@ export class IvyRenderer {
     });
   }
 
-  #upload(name, b, withBirth) {
+  // The support (no birth steps: always drawn), uploaded at once.
+  #uploadSupport(b) {
     const gl = this.gl;
-    this.#drop(name);
-    const positions = new Float32Array(b.positions);
+    this.progress.abort();
+    this.#drop('support');
     const indices = new Uint32Array(b.indices);
     if (indices.length === 0) return;
     const vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
-    const buffers = [staticBuffer(gl, positions), staticBuffer(gl, new Float32Array(b.normals))];
+    const buffers = [staticBuffer(gl, new Float32Array(b.positions)), staticBuffer(gl, new Float32Array(b.normals))];
     floatAttribute(gl, 0, buffers[0], 3);
     floatAttribute(gl, 1, buffers[1], 3);
-    let births = null;
-    if (withBirth) {
-      const birth = new Float32Array(b.birth);
-      buffers.push(staticBuffer(gl, birth));
-      floatAttribute(gl, 2, buffers[2], 1);
-      births = triangleBirths(indices, birth);
-    } else {
-      gl.disableVertexAttribArray(2);
-      gl.vertexAttrib1f(2, 0);
-    }
+    gl.disableVertexAttribArray(2);
+    gl.vertexAttrib1f(2, 0);
     buffers.push(staticBuffer(gl, indices, gl.ELEMENT_ARRAY_BUFFER));
     gl.bindVertexArray(null);
-    this.parts[name] = { vao, buffers, count: indices.length, births };
+    this.parts.support = { vao, buffers, count: indices.length, births: null };
   }
 
   #drop(name) {
@@ -94,7 +112,7 @@ export class IvyRenderer {
   // The support's triangles and bounds ({min, max} in scene units, or null for the free scene):
   // sets the scale that fits it in the view.
   setSupport(buffers, bounds) {
-    this.#upload('support', buffers, false);
+    this.#uploadSupport(buffers);
     this.#fit(bounds);
   }
 
@@ -113,23 +131,60 @@ export class IvyRenderer {
   }
 
   // The ivy's parts ({stems, leaves, suckers}: {positions, normals, indices, birth}); a scene
-  // without a support is fitted to the ivy's own bounds.
+  // without a support is fitted to the ivy's own bounds. The buffers go up in parts
+  // (web/gl/chunked_upload.js: a 125 k-internode ivy was a 1.7 s long task at once) while the old
+  // ivy stays; `uploading` is true until the new one is in place. Resolves to true then, or to
+  // false when a newer setIvy or clearIvy dropped this one.
   setIvy(mesh) {
-    for (const name of ['stems', 'leaves', 'suckers']) this.#upload(name, mesh[name], true);
-    if (!this.parts.support) {
-      const p = new Float32Array(mesh.stems.positions);
-      if (p.length) {
-        const min = [Infinity, Infinity, Infinity], max = [-Infinity, -Infinity, -Infinity];
-        for (let i = 0; i < p.length; ++i) {
-          min[i % 3] = Math.min(min[i % 3], p[i]);
-          max[i % 3] = Math.max(max[i % 3], p[i]);
-        }
-        this.#fit({ min, max });
+    const gl = this.gl;
+    const serial = ++this.ivyUploads;
+    const names = ['stems', 'leaves', 'suckers'].filter((name) => mesh[name].indices.byteLength > 0);
+    const plan = names.flatMap((name) => [
+      { key: `${name}.positions`, bytes: mesh[name].positions, target: gl.ARRAY_BUFFER },
+      { key: `${name}.normals`, bytes: mesh[name].normals, target: gl.ARRAY_BUFFER },
+      { key: `${name}.birth`, bytes: mesh[name].birth, target: gl.ARRAY_BUFFER },
+      { key: `${name}.indices`, bytes: mesh[name].indices, target: gl.ELEMENT_ARRAY_BUFFER },
+    ]);
+    this.uploading = true;
+    return uploadInParts(gl, plan, () => serial !== this.ivyUploads).then((uploaded) => {
+      if (serial !== this.ivyUploads) {
+        uploaded.forEach((b) => gl.deleteBuffer(b));
+        return false;
       }
-    }
+      this.progress.abort();  // a frame in parts of the old buffers ends here
+      for (const name of ['stems', 'leaves', 'suckers']) this.#drop(name);
+      for (const name of names) {
+        const buffers = ['positions', 'normals', 'birth', 'indices'].map((attr) => uploaded.get(`${name}.${attr}`));
+        const vao = gl.createVertexArray();
+        gl.bindVertexArray(vao);
+        floatAttribute(gl, 0, buffers[0], 3);
+        floatAttribute(gl, 1, buffers[1], 3);
+        floatAttribute(gl, 2, buffers[2], 1);
+        gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, buffers[3]);
+        gl.bindVertexArray(null);
+        const indices = new Uint32Array(mesh[name].indices);
+        this.parts[name] = { vao, buffers, count: indices.length, births: birthCounter(indices, new Float32Array(mesh[name].birth)) };
+      }
+      if (!this.parts.support) {
+        const p = new Float32Array(mesh.stems.positions);
+        if (p.length) {
+          const min = [Infinity, Infinity, Infinity], max = [-Infinity, -Infinity, -Infinity];
+          for (let i = 0; i < p.length; ++i) {
+            min[i % 3] = Math.min(min[i % 3], p[i]);
+            max[i % 3] = Math.max(max[i % 3], p[i]);
+          }
+          this.#fit({ min, max });
+        }
+      }
+      this.uploading = false;
+      return true;
+    });
   }
 
   clearIvy() {
+    this.progress.abort();
+    ++this.ivyUploads;  // an upload on its way is dropped
+    this.uploading = false;
     for (const name of ['stems', 'leaves', 'suckers']) this.#drop(name);
     this.#dropBuds();
   }
@@ -137,6 +192,7 @@ export class IvyRenderer {
   // The buds as markers ({positions, kind, birth}).
   setBuds(b) {
     const gl = this.gl;
+    this.progress.abort();
     this.#dropBuds();
     const vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
@@ -158,6 +214,7 @@ export class IvyRenderer {
   // Seed points in scene units ([[x, y, z], ...]).
   setSeeds(points) {
     const gl = this.gl;
+    this.progress.abort();
     if (!this.seeds.vao) {
       this.seeds.vao = gl.createVertexArray();
       this.seeds.buffer = gl.createBuffer();
@@ -193,7 +250,7 @@ export class IvyRenderer {
     const out = {};
     for (const name of ['stems', 'leaves', 'suckers']) {
       const part = this.parts[name];
-      out[name] = part ? countAtMost(part.births, this.step) : 0;
+      out[name] = part ? part.births(this.step) : 0;
     }
     return out;
   }
@@ -212,54 +269,82 @@ export class IvyRenderer {
     return { origin: eye.map((e, i) => e / s + this.model[i]), direction: normalize(dir) };
   }
 
-  render(camera) {
+  // quality: {scale} from a FrameGovernor (omitted: full size). budget: primitives this call may
+  // draw; a bigger frame is drawn over several calls (web/gl/progressive_frame.js) and returns
+  // partial: true until the call that finishes it (call again with resume: true). Returns what
+  // the whole frame draws.
+  render(camera, quality = null, { budget = Infinity, resume = false } = {}) {
     const gl = this.gl;
-    beginFrame(gl, this.canvas);
+    if (!resume || !this.progress.pending()) this.#startFrame(camera, quality, budget);
+    const { primitives, done } = this.progress.run(budget);
+    gl.bindVertexArray(null);
+    return { ...this.frameTotals, partial: !done, drawnPrimitives: primitives };
+  }
+
+  #startFrame(camera, quality, budget) {
+    const gl = this.gl;
+    this.scale = quality?.scale || 1;
+    resizeCanvas(this.canvas, this.scale);  // cleared by progress.begin (canvas or offscreen)
     const vp = camera.viewProjection(this.canvas.width / this.canvas.height);
+    const eye = camera.position();
+    const step = Number.isFinite(this.step) ? this.step : 1e9;
     const p = this.programs.ivy;
-    gl.useProgram(p.program);
-    gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, vp);
-    gl.uniform4fv(p.uniforms.uModel, this.model);
-    gl.uniform1f(p.uniforms.uStep, Number.isFinite(this.step) ? this.step : 1e9);
-    gl.uniform3fv(p.uniforms.uLightDirection, this.light);
-    gl.uniform3fv(p.uniforms.uCameraPosition, camera.position());
-    gl.disable(gl.CULL_FACE);
-    let triangles = 0, drawCalls = 0;
+    const totals = { triangles: 0, drawCalls: 0, primitives: 0 };
+    const steps = [];
     for (const name of ['support', 'stems', 'suckers', 'leaves']) {
       const part = this.parts[name];
       if (!part || !this.visible[name]) continue;
-      gl.uniform3fv(p.uniforms.uColor, COLORS[name].color);
-      gl.uniform3fv(p.uniforms.uVariation, COLORS[name].variation);
-      if (name === 'support') {
-        gl.enable(gl.POLYGON_OFFSET_FILL);  // ivy lying on a face wins the depth test
-        gl.polygonOffset(1, 1);
-      }
-      gl.bindVertexArray(part.vao);
-      gl.drawElements(gl.TRIANGLES, part.count, gl.UNSIGNED_INT, 0);
-      gl.disable(gl.POLYGON_OFFSET_FILL);
-      triangles += part.count / 3;
-      ++drawCalls;
+      steps.push({
+        primitives: part.count / 3,
+        setup: () => {
+          gl.useProgram(p.program);
+          gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, vp);
+          gl.uniform4fv(p.uniforms.uModel, this.model);
+          gl.uniform1f(p.uniforms.uStep, step);
+          gl.uniform3fv(p.uniforms.uLightDirection, this.light);
+          gl.uniform3fv(p.uniforms.uCameraPosition, eye);
+          gl.disable(gl.CULL_FACE);
+          gl.uniform3fv(p.uniforms.uColor, COLORS[name].color);
+          gl.uniform3fv(p.uniforms.uVariation, COLORS[name].variation);
+          if (name === 'support') {
+            gl.enable(gl.POLYGON_OFFSET_FILL);  // ivy lying on a face wins the depth test
+            gl.polygonOffset(1, 1);
+          }
+          gl.bindVertexArray(part.vao);
+        },
+        draw: (first, n) => gl.drawElements(gl.TRIANGLES, 3 * n, gl.UNSIGNED_INT, 12 * first),
+        teardown: () => gl.disable(gl.POLYGON_OFFSET_FILL),
+      });
+      totals.triangles += part.count / 3;
+      totals.primitives += part.count / 3;
+      ++totals.drawCalls;
     }
     const markers = [];
     if (this.buds.count && this.visible.buds) markers.push(this.buds);
     if (this.seeds.count && this.visible.seeds) markers.push(this.seeds);
     if (markers.length) {
       const m = this.programs.marker;
-      gl.useProgram(m.program);
-      gl.uniformMatrix4fv(m.uniforms.uViewProjection, false, vp);
-      gl.uniform4fv(m.uniforms.uModel, this.model);
-      gl.uniform1f(m.uniforms.uPointSize, 12 * Math.min(window.devicePixelRatio || 1, 2));
-      gl.uniform1f(m.uniforms.uStep, Number.isFinite(this.step) ? this.step : 1e9);
-      gl.disable(gl.DEPTH_TEST);
-      for (const marker of markers) {
-        gl.bindVertexArray(marker.vao);
-        gl.drawArrays(gl.POINTS, 0, marker.count);
-        ++drawCalls;
-      }
-      gl.enable(gl.DEPTH_TEST);
+      steps.push({
+        primitives: 0,  // a few points: drawn whole
+        setup: () => {},
+        draw: () => {
+          gl.useProgram(m.program);
+          gl.uniformMatrix4fv(m.uniforms.uViewProjection, false, vp);
+          gl.uniform4fv(m.uniforms.uModel, this.model);
+          gl.uniform1f(m.uniforms.uPointSize, 12 * Math.min(window.devicePixelRatio || 1, 2) * this.scale);
+          gl.uniform1f(m.uniforms.uStep, step);
+          gl.disable(gl.DEPTH_TEST);
+          for (const marker of markers) {
+            gl.bindVertexArray(marker.vao);
+            gl.drawArrays(gl.POINTS, 0, marker.count);
+          }
+          gl.enable(gl.DEPTH_TEST);
+        },
+      });
+      totals.drawCalls += markers.length;
     }
-    gl.bindVertexArray(null);
-    return { triangles, drawCalls };
+    this.frameTotals = totals;
+    this.progress.begin(this.canvas, steps, budget);
   }
 }
 

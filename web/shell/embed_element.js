@@ -88,6 +88,7 @@ export class EmbedElement extends HTMLElement {
       const renderer = this.createRenderer(this.canvas);
       await renderer.init();
       this.renderer = renderer;
+      this.frames.attach(renderer.gl, this.canvas);  // one frame in flight (web/gl/frame_loop.js)
       this.camera.attach(this.canvas, () => this.onCameraMove());
       new ResizeObserver(() => this.requestFrame()).observe(this.canvas);
       this.onRendererReady();

@@ -5,8 +5,10 @@
 // (setLevel) shows the mountain as it stands at level k: contours up to k, the surface cut at
 // h0 + k·Δh; nothing regrows.
 // Does not: talk to the worker, draw the 2-D plan (plan_view.js), or know the generation methods.
-import { beginFrame, createContext, sunDirection } from '../gl/context.js';
-import { floatAttribute, staticBuffer } from '../gl/buffers.js';
+import { createContext, resizeCanvas, sunDirection } from '../gl/context.js';
+import { floatAttribute } from '../gl/buffers.js';
+import { uploadInParts } from '../gl/chunked_upload.js';
+import { ProgressiveFrame } from '../gl/progressive_frame.js';
 import { loadPrograms } from '../gl/program.js';
 import { ramp } from './plan_view.js';
 
@@ -26,6 +28,11 @@ export class TerrainRenderer {
     this.level = Infinity;
     this.top = Infinity;
     this.lineLevels = new Float32Array(0);  // sorted level of every contour line segment
+    this.terrainUploads = 0;  // setTerrain calls so far (a newer one drops an older upload)
+    this.progress = new ProgressiveFrame(this.gl);  // the frame being drawn in parts
+    this.frameTotals = { triangles: 0, lines: 0, drawCalls: 0, primitives: 0 };
+    this.scale = 1;
+    this.uploading = false;   // a mountain is going up in parts
   }
 
   async init() {
@@ -43,36 +50,59 @@ export class TerrainRenderer {
 
   // buffers: {surface: {positions, normals, colours, indices}, contours: {positions, level}}
   // (ArrayBuffers from the worker); bounds: {min: [x, y], max: [x, y], h_min, h_max} in metres.
+  // The buffers go up in parts (web/gl/chunked_upload.js: a res-1024 surface is 60 MB) while the
+  // old mountain stays; `uploading` is true until the new one is in place. Resolves to true then,
+  // or to false when a newer setTerrain dropped this one.
   setTerrain(buffers, bounds) {
     const gl = this.gl;
+    const serial = ++this.terrainUploads;
+    const s = buffers.surface, c = buffers.contours;
+    const plan = [];
+    if (s.indices.byteLength > 0) {
+      plan.push({ key: 'positions', bytes: s.positions, target: gl.ARRAY_BUFFER }, { key: 'normals', bytes: s.normals, target: gl.ARRAY_BUFFER },
+        { key: 'colours', bytes: s.colours, target: gl.ARRAY_BUFFER }, { key: 'indices', bytes: s.indices, target: gl.ELEMENT_ARRAY_BUFFER });
+    }
+    if (c.positions.byteLength > 0) {
+      plan.push({ key: 'linePositions', bytes: c.positions, target: gl.ARRAY_BUFFER }, { key: 'lineLevels', bytes: c.level, target: gl.ARRAY_BUFFER });
+    }
+    this.uploading = true;
+    return uploadInParts(gl, plan, () => serial !== this.terrainUploads).then((uploaded) => {
+      if (serial !== this.terrainUploads) {
+        uploaded.forEach((b) => gl.deleteBuffer(b));
+        return false;
+      }
+      this.#install(buffers, bounds, uploaded);
+      this.uploading = false;
+      return true;
+    });
+  }
+
+  #install(buffers, bounds, uploaded) {
+    const gl = this.gl;
+    this.progress.abort();  // a frame in parts of the old buffers ends here
     this.#drop(this.surface);
     this.#drop(this.contours);
     this.surface = this.contours = null;
-    const s = buffers.surface;
-    const indices = new Uint32Array(s.indices);
-    if (indices.length) {
+    if (uploaded.has('indices')) {
       const vao = gl.createVertexArray();
       gl.bindVertexArray(vao);
-      const list = [staticBuffer(gl, new Float32Array(s.positions)), staticBuffer(gl, new Float32Array(s.normals)),
-        staticBuffer(gl, new Float32Array(s.colours))];
+      const list = ['positions', 'normals', 'colours', 'indices'].map((key) => uploaded.get(key));
       floatAttribute(gl, 0, list[0], 3);
       floatAttribute(gl, 1, list[1], 3);
       floatAttribute(gl, 2, list[2], 3);
-      list.push(staticBuffer(gl, indices, gl.ELEMENT_ARRAY_BUFFER));
+      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, list[3]);
       gl.bindVertexArray(null);
-      this.surface = { vao, buffers: list, count: indices.length };
+      this.surface = { vao, buffers: list, count: buffers.surface.indices.byteLength / 4 };
     }
-    const c = buffers.contours;
-    const linePositions = new Float32Array(c.positions);
-    if (linePositions.length) {
+    if (uploaded.has('linePositions')) {
       const vao = gl.createVertexArray();
       gl.bindVertexArray(vao);
-      const list = [staticBuffer(gl, linePositions), staticBuffer(gl, new Float32Array(c.level))];
+      const list = [uploaded.get('linePositions'), uploaded.get('lineLevels')];
       floatAttribute(gl, 0, list[0], 3);
       floatAttribute(gl, 1, list[1], 1);
       gl.bindVertexArray(null);
-      this.contours = { vao, buffers: list, count: linePositions.length / 3 };
-      const levels = new Float32Array(c.level);
+      this.contours = { vao, buffers: list, count: buffers.contours.positions.byteLength / 12 };
+      const levels = new Float32Array(buffers.contours.level);
       this.lineLevels = new Float32Array(levels.length / 2).map((_, i) => levels[2 * i]).sort();
     } else {
       this.lineLevels = new Float32Array(0);
@@ -111,46 +141,78 @@ export class TerrainRenderer {
     return this.boundsView;
   }
 
-  render(camera) {
+  // quality: {scale} from a FrameGovernor (omitted: full size). budget: primitives this call may
+  // draw; a bigger frame is drawn over several calls (web/gl/progressive_frame.js: a res-1024
+  // surface is 2 M triangles) and returns partial: true until the call that finishes it (call
+  // again with resume: true). Returns what the whole frame draws.
+  render(camera, quality = null, { budget = Infinity, resume = false } = {}) {
     const gl = this.gl;
-    beginFrame(gl, this.canvas);
+    if (!resume || !this.progress.pending()) this.#startFrame(camera, quality, budget);
+    const { primitives, done } = this.progress.run(budget);
+    gl.bindVertexArray(null);
+    return { ...this.frameTotals, partial: !done, drawnPrimitives: primitives };
+  }
+
+  #startFrame(camera, quality, budget) {
+    const gl = this.gl;
+    this.scale = quality?.scale || 1;
+    resizeCanvas(this.canvas, this.scale);  // cleared by progress.begin (canvas or offscreen)
     const vp = camera.viewProjection(this.canvas.width / this.canvas.height);
-    let triangles = 0, lines = 0, drawCalls = 0;
-    if (this.surface) {
+    const totals = { triangles: 0, lines: 0, drawCalls: 0, primitives: 0 };
+    const steps = [];
+    const surface = this.surface;
+    if (surface) {
       const p = this.programs.surface;
-      gl.useProgram(p.program);
-      gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, vp);
-      gl.uniform4fv(p.uniforms.uModel, this.model);
-      gl.uniform1f(p.uniforms.uExaggerate, 1);
-      gl.uniform3fv(p.uniforms.uLightDirection, this.light);
-      gl.uniform1f(p.uniforms.uTint, this.visible.tint ? 1 : 0);
-      gl.uniform1f(p.uniforms.uTop, Number.isFinite(this.top) ? this.top : 3.0e38);
       const [lo, hi] = this.heights || [0, 1];
       const t = Number.isFinite(this.top) ? Math.min(1, Math.max(0, (this.top - lo) / (hi - lo || 1))) : 1;
-      gl.uniform3fv(p.uniforms.uCutColour, ramp(t).map((c) => c / 255));
-      gl.disable(gl.CULL_FACE);
-      gl.enable(gl.POLYGON_OFFSET_FILL);  // contour lines lying on the surface win the depth test
-      gl.polygonOffset(1, 2);
-      gl.bindVertexArray(this.surface.vao);
-      gl.drawElements(gl.TRIANGLES, this.surface.count, gl.UNSIGNED_INT, 0);
-      gl.disable(gl.POLYGON_OFFSET_FILL);
-      triangles = this.surface.count / 3;
-      ++drawCalls;
+      const cut = ramp(t).map((c) => c / 255);
+      const tint = this.visible.tint ? 1 : 0;
+      const top = Number.isFinite(this.top) ? this.top : 3.0e38;
+      steps.push({
+        primitives: surface.count / 3,
+        setup: () => {
+          gl.useProgram(p.program);
+          gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, vp);
+          gl.uniform4fv(p.uniforms.uModel, this.model);
+          gl.uniform1f(p.uniforms.uExaggerate, 1);
+          gl.uniform3fv(p.uniforms.uLightDirection, this.light);
+          gl.uniform1f(p.uniforms.uTint, tint);
+          gl.uniform1f(p.uniforms.uTop, top);
+          gl.uniform3fv(p.uniforms.uCutColour, cut);
+          gl.disable(gl.CULL_FACE);
+          gl.enable(gl.POLYGON_OFFSET_FILL);  // contour lines lying on the surface win the depth test
+          gl.polygonOffset(1, 2);
+          gl.bindVertexArray(surface.vao);
+        },
+        draw: (first, n) => gl.drawElements(gl.TRIANGLES, 3 * n, gl.UNSIGNED_INT, 12 * first),
+        teardown: () => gl.disable(gl.POLYGON_OFFSET_FILL),
+      });
+      totals.triangles = surface.count / 3;
+      totals.primitives += surface.count / 3;
+      ++totals.drawCalls;
     }
-    if (this.contours && this.visible.contours) {
+    const contours = this.contours;
+    if (contours && this.visible.contours) {
       const p = this.programs.contour;
-      gl.useProgram(p.program);
-      gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, vp);
-      gl.uniform4fv(p.uniforms.uModel, this.model);
-      gl.uniform1f(p.uniforms.uExaggerate, 1);
-      gl.uniform1f(p.uniforms.uLift, 0.004);
-      gl.uniform1f(p.uniforms.uLevel, Number.isFinite(this.level) ? this.level : 1e9);
-      gl.bindVertexArray(this.contours.vao);
-      gl.drawArrays(gl.LINES, 0, this.contours.count);
-      lines = this.linesShown();
-      ++drawCalls;
+      const level = Number.isFinite(this.level) ? this.level : 1e9;
+      steps.push({
+        primitives: contours.count / 2,
+        setup: () => {
+          gl.useProgram(p.program);
+          gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, vp);
+          gl.uniform4fv(p.uniforms.uModel, this.model);
+          gl.uniform1f(p.uniforms.uExaggerate, 1);
+          gl.uniform1f(p.uniforms.uLift, 0.004);
+          gl.uniform1f(p.uniforms.uLevel, level);
+          gl.bindVertexArray(contours.vao);
+        },
+        draw: (first, n) => gl.drawArrays(gl.LINES, 2 * first, 2 * n),
+      });
+      totals.lines = this.linesShown();
+      totals.primitives += contours.count / 2;
+      ++totals.drawCalls;
     }
-    gl.bindVertexArray(null);
-    return { triangles, lines, drawCalls };
+    this.frameTotals = totals;
+    this.progress.begin(this.canvas, steps, budget);
   }
 }

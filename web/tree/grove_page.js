@@ -426,6 +426,7 @@ async function start() {
   try {
     renderer = new GroveRenderer(ui.canvas);
     await renderer.init();
+    frameLoop.attach(renderer.gl, ui.canvas);  // one frame in flight (web/gl/frame_loop.js)
   } catch (e) {
     fail(`Cannot draw: ${e.message}`);
     return;

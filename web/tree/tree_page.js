@@ -5,6 +5,7 @@
 // with WebGL2. Growth runs in the worker (web/worker/tree_handler.js).
 // Does not: parse or check states (the core does), or draw directly (tree_renderer.js does).
 import { OrbitCamera } from '../gl/orbit_camera.js';
+import { FrameGovernor } from '../gl/frame_governor.js';
 import { FrameLoop } from '../gl/frame_loop.js';
 import { HashHistory } from '../shell/hash_history.js';
 import { ParamPanel } from '../shell/param_panel.js';
@@ -91,23 +92,77 @@ const camera = new OrbitCamera();
 let renderer = null;
 let poseDrawPending = false;
 const table = new RenderTable(ui.renderTable, ui.renderCol, ui.frameStats);
+// One frame in flight on the GPU (web/gl/frame_loop.js); while the tree sways or the camera
+// moves, the governor draws cheaper frames when they lag, and the full one once all is still.
+const governor = new FrameGovernor({ onStill: () => requestFrame() });
+// A frame bigger than the governor's budget is drawn in parts over several animation frames
+// (web/gl/progressive_frame.js) and goes on until it is finished, unless the governor now wants
+// another level (the view started or stopped moving, the cheap representation arrived); what
+// changed meanwhile (frameDirty) is drawn by the next frame.
+let frameDirty = true;
+let wholeNext = false;  // the next frame is drawn whole, not in parts (requestFrame(true, true))
+let frameLevel = -1;  // the governor's level of the frame in parts
 const frames = new FrameLoop(() => {
   // While a big tree goes up in parts the canvas keeps its last frame (no draw: a frame of the old
   // big tree costs seconds on a CPU GL, and every part's upload would wait for it).
-  if (renderer.uploading) return;
-  const drawn = renderer.render(camera);
-  if (drawn) table.showFrame(drawn);
+  if (renderer.uploading) return false;
+  if (poseDrawPending) governor.motion();  // a new pose to draw: moving, however long the last frame took
+  // (a hybrid-mode tree is cheap already: its levels only shrink the drawing buffer)
+  const cheapAvailable = hybridOn || renderer.motionReady() ? Infinity : 0;
+  const next = governor.peek(cheapAvailable);
+  if (next.wantCheap > 0 && !renderer.motionReady()) requestMotionView();
+  // Swaying, the cheaper representation on its way and a full frame too big for one animation
+  // frame: no full frame meanwhile (the canvas keeps the last one; the GPU paints the atlas), the
+  // sway goes on.
+  if (windPlaying && next.moving && next.capped && !motionOff && renderer.fullPrimitives() > governor.budget()) {
+    renderer.progress.abort();  // a full frame in parts would only hold the atlas back
+    if (poseDrawPending) {
+      poseDrawPending = false;
+      worker.post('poseDone');
+    }
+    return false;
+  }
+  const resume = renderer.progress.pending() && next.level === frameLevel && !wholeNext;
+  let quality = null;
+  let whole = false;
+  if (!resume) {
+    quality = governor.quality(cheapAvailable);
+    frameLevel = quality.level;
+    frameDirty = false;
+    whole = wholeNext;
+    wholeNext = false;
+  }
+  // A camera drag without the cheaper representation: each frame at once (smaller), as it moves;
+  // an edit that must show at once (the sun): one whole frame, however long it takes.
+  const dragging = next.moving && next.capped && !windPlaying;
+  const drawn = renderer.render(camera, quality, { budget: dragging || whole ? Infinity : governor.budget(), resume });
+  if (!drawn) return false;
+  governor.drew(drawn.drawnPrimitives, !drawn.partial, drawn.primitives);
+  setHooks({ frameScale: renderer.scale, frameMode: drawn.mode, framesDrawn: frames.stats.drawn,
+    framesSkipped: frames.stats.skippedBusy, frameGpuMs: Math.round(frames.stats.gpuMs), framePartial: drawn.partial ? 1 : 0 });
+  if (drawn.partial) {
+    frames.request();  // the rest of this frame
+    return true;
+  }
+  if (frameDirty) frames.request();  // what changed while the frame was drawn in parts
   if (poseDrawPending) {  // the worker sends the next pose once this one is on screen
     poseDrawPending = false;
     worker.post('poseDone');
   }
+  if (drawn.mode !== 'motion') table.showFrame(drawn);
   setHooks({ drawnTreeSerial: treeSerial });  // tests wait for the new tree's frame
   if (freshOnDraw) {  // the tree that answers the latest edit is on screen now
     freshOnDraw = false;
     feedback.fresh();
   }
-});
-const requestFrame = () => { if (renderer) frames.request(); };
+  return true;
+}, { governor });
+const requestFrame = (urgent = false, whole = false) => {
+  if (!renderer) return;
+  frameDirty = true;
+  wholeNext ||= whole;
+  frames.request(urgent);
+};
 
 // Hybrid mode: the worker chooses card or line per branch for each view (eq. 4.1 with hysteresis);
 // one request at a time, the newest camera wins.
@@ -125,6 +180,23 @@ function requestView() {
   worker.post('view', { camera: renderer.viewFor(camera) });
 }
 
+// A full-mode tree's cheaper representation while it moves (the governor's cheap levels): its
+// hybrid scene from the worker ('view' with motion: true; the atlas once per tree), one request at
+// a time, the newest camera wins; none when the worker cannot build it for this tree.
+let motionInFlight = false;
+let motionDirty = false;
+let motionOff = false;
+function requestMotionView() {
+  if (hybridOn || !renderer || motionOff) return;
+  if (motionInFlight) {
+    motionDirty = true;
+    return;
+  }
+  motionInFlight = true;
+  motionDirty = false;
+  worker.post('view', { camera: renderer.viewFor(camera), motion: true, atlas: !renderer.hasMotionAtlas() });
+}
+
 // The renderer's light is the light model's sun (parameters sun_elevation and sun_azimuth).
 function showSun() {
   if (!panel) return;
@@ -134,14 +206,16 @@ function showSun() {
   const growth = weight > 0 ? `and the growth model, weight ${weight}` : 'only; the growth model has sky light (sun_weight 0)';
   ui.sunInfo.textContent = `sun: az ${az}°, el ${el}° (lights the view ${growth})`;
   renderer?.setSun(el, az);
-  requestFrame();
+  requestFrame(true, true);  // the new light at once, before the regrown tree
 }
 
 // Camera moves rewrite the cam= field of the current history entry (no new entry), a moment later.
 let cameraTimer = 0;
 function cameraMoved() {
+  governor.motion();
   requestFrame();
   requestView();
+  if (renderer?.motionReady()) requestMotionView();  // its draw list is for the last camera
   clearTimeout(cameraTimer);
   cameraTimer = setTimeout(writeHash, 400);
 }
@@ -150,6 +224,7 @@ async function startRenderer() {
   try {
     renderer = new Renderer(ui.canvas);
     await renderer.init();
+    frames.attach(renderer.gl, ui.canvas);
     camera.attach(ui.canvas, cameraMoved);
     new ResizeObserver(() => {
       requestFrame();
@@ -422,6 +497,7 @@ worker.on('tree', (msg) => {
     // tree is in place.
     const later = renderer.uploading;
     installed.then((done) => {
+      if (done) governor.reset();  // another tree: its frames cost what they cost
       if (done && later) requestView();
       requestFrame();
     });
@@ -437,6 +513,8 @@ worker.on('tree', (msg) => {
   table.showFullCounts(msg.mesh);
   hybridOn = Boolean(msg.hybrid);
   viewInFlight = false;
+  motionInFlight = false;
+  motionOff = false;
   table.showHybridCounts(null);
   setHooks({ renderMode: hybridOn ? 'hybrid' : 'full' });
   requestView();
@@ -459,12 +537,23 @@ worker.on('tree', (msg) => {
   }
 });
 
+worker.on('motionAtlas', (msg) => {
+  renderer?.setMotionHybrid(msg.hybrid, governor.budget()).then(() => { if (governor.moving()) requestFrame(); });
+});
+
 worker.on('drawList', (msg) => {
+  if (msg.motion) {
+    motionInFlight = false;
+    renderer?.setMotionDrawList(msg);
+    if (governor.moving()) requestFrame();
+    if (motionDirty) requestMotionView();
+    return;
+  }
   viewInFlight = false;
   if (!hybridOn || !renderer) return;
   renderer.setDrawList(msg);
   table.showHybridCounts(msg.stats);
-  requestFrame();
+  requestFrame(true);  // a hybrid frame is cheap: the new list at once, not after the frame in flight
   if (viewDirty) requestView();
 });
 
@@ -474,6 +563,7 @@ worker.on('pose', (msg) => {
     return;
   }
   renderer.setPoses(new Float32Array(msg.poses), msg.wind, msg.time);
+  governor.motion();
   poseDrawPending = true;
   showWind(msg);
   requestFrame();
@@ -493,6 +583,11 @@ worker.on('export', (msg) => {
 worker.on('error', (msg) => {
   if (exportIds.delete(msg.id)) {
     ui.shareStatus.textContent = `Export failed: ${msg.message}`;
+    return;
+  }
+  if (msg.control === 'motion') {  // no cheaper representation for this tree: full frames only
+    motionOff = true;
+    motionInFlight = false;
     return;
   }
   if (msg.control === 'wind') {  // the sway was refused (docs/budgets.md): the line beside Blow
@@ -627,10 +722,13 @@ function setWind(play) {
   windPlaying = play;
   ui.wind.textContent = play ? 'Still' : 'Blow';
   ui.wind.setAttribute('aria-pressed', String(play));
+  // The still frames were slow: the sway will want the cheaper representation, asked for first.
+  if (play && governor.motionCheap() > 0 && !renderer?.motionReady()) requestMotionView();
   worker.post('wind', { play });
   if (!play) {
+    governor.stop();  // the rest shape at full quality, at once
     renderer?.setRestPoses(renderer.poseNodes);
-    requestFrame();
+    requestFrame(true);
   }
   showWind(null);
 }

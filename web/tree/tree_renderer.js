@@ -2,11 +2,13 @@
 // ground (full-polygon mode, textured as the .glb: shaders/tree/tree_textured.frag), or the hybrid mode of thesis chapter 4: texture cards from a card
 // atlas plus lines. Shaders (GLSL ES 3.00) are shaders/tree/*, including shaders/common/*.
 // Does not: grow or mesh trees (the worker does), keep page state, or own the camera.
-import { beginFrame, createContext, finishGpu, resizeCanvas, sunDirection } from '../gl/context.js';
+import { createContext, drawingBufferSize, finishGpu, resizeCanvas, sunDirection } from '../gl/context.js';
 import { BufferPool } from '../gl/buffer_pool.js';
+import { UPLOAD_PARTS_ABOVE, gpuDone, planBytes, uploadInParts } from '../gl/chunked_upload.js';
 import { floatAttribute, staticBuffer, uintAttribute } from '../gl/buffers.js';
 import { Ground } from '../gl/ground.js';
 import { PickTarget } from '../gl/pick.js';
+import { ProgressiveFrame } from '../gl/progressive_frame.js';
 import { loadPrograms } from '../gl/program.js';
 import { dataTexture, restPoses, uploadPoses } from '../gl/textures.js';
 
@@ -36,7 +38,8 @@ export const PARTS = {
 // view) and a program over tree_textured.frag, each part is painted from its own texture through
 // the atlas triangles' uvs (leaf blades and blossoms cut out by alpha, as the full view and the
 // .glb's cards_* atlas); without, in the parts' plain colours (PARTS).
-export function paintAtlas(gl, program, hybrid, fb, texture, light, textures = null) {
+// uploaded: Map('part.attr' -> buffer) of geometry already uploaded (in parts), deleted here.
+export function paintAtlas(gl, program, hybrid, fb, texture, light, textures = null, uploaded = null) {
   const size = hybrid.atlasSize;
   gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
   gl.viewport(0, 0, size, size);
@@ -56,7 +59,8 @@ export function paintAtlas(gl, program, hybrid, fb, texture, light, textures = n
     if (count === 0) continue;
     const vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
-    const buffers = [staticBuffer(gl, part.positions), staticBuffer(gl, part.normals)];
+    const ready = (attr) => uploaded?.get(`${name}.${attr}`);
+    const buffers = [ready('positions') || staticBuffer(gl, part.positions), ready('normals') || staticBuffer(gl, part.normals)];
     floatAttribute(gl, 0, buffers[0], 3);
     floatAttribute(gl, 1, buffers[1], 3);
     const spec = TEXTURED[name];
@@ -65,7 +69,9 @@ export function paintAtlas(gl, program, hybrid, fb, texture, light, textures = n
       buffers.push(staticBuffer(gl, part.uvs));
       floatAttribute(gl, 2, buffers[buffers.length - 1], 2);
     }
-    buffers.push(staticBuffer(gl, part.indices, gl.ELEMENT_ARRAY_BUFFER));
+    const indices = ready('indices');
+    if (indices) gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, indices);
+    buffers.push(indices || staticBuffer(gl, part.indices, gl.ELEMENT_ARRAY_BUFFER));
     const look = PARTS[name];
     gl.uniform3fv(program.uniforms.uColor, look.color);
     gl.uniform3fv(program.uniforms.uColorVariation, look.variation);
@@ -100,32 +106,84 @@ export function paintAtlas(gl, program, hybrid, fb, texture, light, textures = n
   return triangles;
 }
 
-// Meshes above this many bytes are uploaded in parts of UPLOAD_PART_BYTES, one part per task.
-export const UPLOAD_PARTS_ABOVE = 4 * 1024 * 1024;
-export const UPLOAD_PART_BYTES = 1024 * 1024;
-
-// Creates one buffer per plan item ({key, bytes, target}) and fills it UPLOAD_PART_BYTES at a time,
-// yielding to the event loop between parts; resolves to Map(key -> buffer) (early, with what it
-// has, once cancelled() is true).
-async function uploadInParts(gl, plan, cancelled) {
-  const buffers = new Map();
-  const yieldTask = () => new Promise((resolve) => setTimeout(resolve, 0));
-  for (const { key, bytes, target } of plan) {
-    const u8 = ArrayBuffer.isView(bytes) ? new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength) : new Uint8Array(bytes);
-    const buffer = gl.createBuffer();
-    buffers.set(key, buffer);
-    gl.bindVertexArray(null);  // an element buffer bound with a vertex array bound would join it
-    gl.bindBuffer(target, buffer);
-    gl.bufferData(target, u8.byteLength, gl.STATIC_DRAW);
-    for (let offset = 0; offset < u8.byteLength; offset += UPLOAD_PART_BYTES) {
-      if (cancelled()) return buffers;
-      gl.bindVertexArray(null);
-      gl.bindBuffer(target, buffer);
-      gl.bufferSubData(target, offset, u8.subarray(offset, Math.min(u8.byteLength, offset + UPLOAD_PART_BYTES)));
-      await yieldTask();
-    }
+// paintAtlas over several tasks (the cheap representation of a moving full-mode tree, issue 16):
+// the atlas geometry of a 141 k-internode sakura is 66 MB and about 1.6 M triangles, seconds of
+// SwiftShader time at once, so it is drawn `budget` triangles at a time, each part once the GPU
+// has finished the last (gpuDone), then mipmapped. uploaded: its buffers (chunked_upload.js),
+// deleted here. Resolves to the triangles drawn, or -1 when cancelled() turned true.
+export async function paintAtlasInParts(gl, program, hybrid, fb, texture, light, uploaded, budget, cancelled) {
+  const size = hybrid.atlasSize;
+  gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+  gl.viewport(0, 0, size, size);
+  gl.clearColor(0, 0, 0, 0);
+  gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+  gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+  const owned = [];
+  const steps = [];
+  for (const name of ['bark', 'leaves', 'flowers']) {
+    const part = hybrid[name];
+    const count = part.indices.byteLength / 4;
+    if (count === 0) continue;
+    const vao = gl.createVertexArray();
+    gl.bindVertexArray(vao);
+    const ready = (attr) => uploaded?.get(`${name}.${attr}`);
+    const buffers = [ready('positions') || staticBuffer(gl, part.positions), ready('normals') || staticBuffer(gl, part.normals)];
+    floatAttribute(gl, 0, buffers[0], 3);
+    floatAttribute(gl, 1, buffers[1], 3);
+    const indices = ready('indices') || staticBuffer(gl, part.indices, gl.ELEMENT_ARRAY_BUFFER);
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, indices);
+    buffers.push(indices);
+    gl.bindVertexArray(null);
+    owned.push({ vao, buffers });
+    const look = PARTS[name];
+    steps.push({
+      primitives: count / 3,
+      setup: () => {
+        gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+        gl.viewport(0, 0, size, size);
+        gl.enable(gl.DEPTH_TEST);
+        gl.disable(gl.BLEND);
+        gl.useProgram(program.program);
+        gl.uniform3fv(program.uniforms.uLightDirection, light);
+        gl.uniform3fv(program.uniforms.uCameraPosition, [0, 0, 10]);
+        gl.uniform1f(program.uniforms.uXray, 0);
+        gl.uniform1f(program.uniforms.uSpecular, 0);
+        gl.uniform3fv(program.uniforms.uColor, look.color);
+        gl.uniform3fv(program.uniforms.uColorVariation, look.variation);
+        gl.uniform1f(program.uniforms.uDoubleSided, look.doubleSided);
+        // Plain colours (the motion atlas has no uvs): clear what a textured paintAtlas left set.
+        gl.uniform1f(program.uniforms.uUseTexture, 0);
+        gl.uniform1f(program.uniforms.uUseNormalMap, 0);
+        gl.uniform1f(program.uniforms.uAlphaCutoff, 0);
+        gl.bindVertexArray(vao);
+      },
+      draw: (first, n) => gl.drawElements(gl.TRIANGLES, 3 * n, gl.UNSIGNED_INT, 12 * first),
+      teardown: () => {
+        gl.bindVertexArray(null);
+        gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+      },
+    });
   }
-  return buffers;
+  const frame = new ProgressiveFrame();  // steps only: the target is bound by each step
+  frame.start(steps);
+  let triangles = 0;
+  while (frame.pending() && !cancelled()) {
+    triangles += frame.run(budget).primitives;
+    await gpuDone(gl);
+  }
+  for (const { vao, buffers } of owned) {
+    gl.deleteVertexArray(vao);
+    buffers.forEach((b) => gl.deleteBuffer(b));
+  }
+  if (frame.pending()) return -1;
+  gl.bindTexture(gl.TEXTURE_2D, texture);
+  gl.generateMipmap(gl.TEXTURE_2D);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+  gl.bindTexture(gl.TEXTURE_2D, null);
+  return triangles;
 }
 
 export class Renderer {
@@ -140,6 +198,11 @@ export class Renderer {
     this.extent = 20;
     this.setSun(60, 0);
     this.lastFrame = { triangles: 0, drawCalls: 0, cpuMs: 0 };
+    this.scale = 1;  // the drawing buffer's scale of the last frame (FrameGovernor)
+    this.motion = null;  // {hybrid, drawList}: the cheaper representation while moving
+    this.progress = new ProgressiveFrame(this.gl);  // the frame being drawn in parts
+    this.frameTotals = { triangles: 0, lines: 0, drawCalls: 0, mode: 'full', cheap: 0 };
+    this.frameCpuMs = 0;
     this.pool = new BufferPool(gl);  // the tree's mesh buffers, reused tree after tree
     this.poseTexture = gl.createTexture();
     this.poseNodes = 0;
@@ -242,8 +305,8 @@ export class Renderer {
   // (bark also has branchIds: Uint32 per vertex; leaves uvs); bounds in metres; swayNodes: node
   // points of the sway skin (poses start at rest); hybrid: the worker's card-atlas geometry when the
   // state's render_mode is 1 (then render() draws the draw list of setDrawList), else null.
-  // A big mesh (more than UPLOAD_PARTS_ABOVE bytes) is uploaded in parts of UPLOAD_PART_BYTES, one
-  // part per task, into new buffers while the old tree stays drawn (issue 17: one upload of a
+  // A big mesh (more than UPLOAD_PARTS_ABOVE bytes) is uploaded in parts (web/gl/chunked_upload.js),
+  // one part per task, into new buffers while the old tree stays drawn (issue 17: one upload of a
   // 15-year sakura blocked the main thread 3.7 s in Chromium on SwiftShader, with bufferData and
   // with bufferSubData alike); `uploading` is true until the new tree is in place. Returns a
   // promise that resolves then (at once for small meshes); a newer setTree drops an older upload.
@@ -260,8 +323,7 @@ export class Renderer {
       // The selection highlight starts at zero (one float per vertex).
       if (data.branchIds) plan.push({ key: `${name}.highlight`, bytes: new Float32Array(data.branchIds.byteLength / 4), target: this.gl.ARRAY_BUFFER });
     }
-    const total = plan.reduce((n, p) => n + p.bytes.byteLength, 0);
-    if (total <= UPLOAD_PARTS_ABOVE) {
+    if (planBytes(plan) <= UPLOAD_PARTS_ABOVE) {
       this.uploading = false;
       this.#installTree(mesh, bounds, swayNodes, hybrid, null);
       return Promise.resolve(true);
@@ -280,6 +342,7 @@ export class Renderer {
 
   #installTree(mesh, bounds, swayNodes, hybrid, uploaded) {
     const gl = this.gl;
+    this.progress.abort();  // a frame in parts of the old tree's buffers ends here
     const keepSelection = this.selected;
     this.setRestPoses(swayNodes);
     this.setTextures(mesh.textures);
@@ -354,11 +417,22 @@ export class Renderer {
   // triangles (group representatives and leaf clusters, each projected onto its tile), textured
   // and lit by the sun like the full view, transparent elsewhere; mipmapped for distant cards.
   setHybrid(hybrid) {
-    const gl = this.gl;
     this.hybrid = null;
     this.#deleteDrawList();
+    this.clearMotion();  // the atlas is repainted for this hybrid tree
     if (!hybrid) return;
-    const size = hybrid.atlasSize;
+    this.hybrid = this.#paintHybridAtlas(hybrid);
+  }
+
+  // Paints the card atlas of `hybrid` into this.atlas (reallocated when its size changes).
+  #paintHybridAtlas(hybrid, uploaded = null) {
+    this.#allocateAtlas(hybrid.atlasSize);
+    const triangles = paintAtlas(this.gl, this.atlasProgram, hybrid, this.atlas.fb, this.atlas.texture, this.light, this.textures, uploaded);
+    return { atlasSize: hybrid.atlasSize, atlasTriangles: triangles };
+  }
+
+  #allocateAtlas(size) {
+    const gl = this.gl;
     if (!this.atlas || this.atlas.size !== size) {
       if (this.atlas) {
         gl.deleteTexture(this.atlas.texture);
@@ -377,27 +451,103 @@ export class Renderer {
       gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depth);
       this.atlas = { texture, depth, fb, size };
     }
-    const triangles = paintAtlas(gl, this.atlasProgram, hybrid, this.atlas.fb, this.atlas.texture, this.light, this.textures);
-    this.hybrid = { atlasSize: size, atlasTriangles: triangles };
+  }
+
+  // The cheaper representation of a full-mode tree while it moves (issue 16: a FrameGovernor's
+  // cheap levels): the hybrid scene of the same tree (thesis ch. 4: cards and lines, skinned by the
+  // same poses), its atlas from the worker's 'view' {motion: true}. Full-mode trees only.
+  // Its geometry goes up in parts first (web/gl/chunked_upload.js: the atlas of a 141 k-internode
+  // sakura held the main thread 0.5-3.4 s at once) and is painted `budget` triangles at a time
+  // (paintAtlasInParts); resolves to true once the atlas is painted.
+  setMotionHybrid(hybrid, budget = Infinity) {
+    this.clearMotion();
+    if (this.hybrid || !hybrid) return Promise.resolve(false);
+    const gl = this.gl;
+    const serial = (this.motionUploads = (this.motionUploads || 0) + 1);
+    const plan = [];
+    for (const name of ['bark', 'leaves', 'flowers']) {
+      const part = hybrid[name];
+      if (!part || part.indices.byteLength === 0) continue;
+      plan.push({ key: `${name}.positions`, bytes: part.positions, target: gl.ARRAY_BUFFER },
+        { key: `${name}.normals`, bytes: part.normals, target: gl.ARRAY_BUFFER },
+        { key: `${name}.indices`, bytes: part.indices, target: gl.ELEMENT_ARRAY_BUFFER });
+    }
+    this.motionPending = true;
+    const current = () => serial === this.motionUploads && !this.hybrid;
+    return uploadInParts(gl, plan, () => !current()).then(async (uploaded) => {
+      if (!current()) {
+        uploaded.forEach((b) => gl.deleteBuffer(b));
+        return false;
+      }
+      this.#allocateAtlas(hybrid.atlasSize);
+      const triangles = await paintAtlasInParts(gl, this.atlasProgram, hybrid, this.atlas.fb, this.atlas.texture, this.light,
+        uploaded, budget, () => !current());
+      if (!current() || triangles < 0) return false;
+      this.motionPending = false;
+      this.motion = { hybrid: { atlasSize: hybrid.atlasSize, atlasTriangles: triangles }, drawList: null };
+      if (this.pendingMotionList) this.setMotionDrawList(this.pendingMotionList);  // came meanwhile
+      this.pendingMotionList = null;
+      return true;
+    });
+  }
+
+  // The draw list of the motion representation for the current camera.
+  setMotionDrawList(msg) {
+    if (!this.motion) {
+      if (this.motionPending) this.pendingMotionList = msg;  // the atlas is still going up
+      return;
+    }
+    if (this.motion.drawList) this.#deleteList(this.motion.drawList);
+    this.motion.drawList = this.#buildDrawList(msg);
+  }
+
+  // Triangles of a full-mode frame of the tree (its parts).
+  fullPrimitives() {
+    return Object.values(this.parts).reduce((n, part) => n + part.count / 3, 0);
+  }
+
+  // True when the motion representation can be drawn (its atlas and a draw list are in place).
+  hasMotionAtlas() {
+    return Boolean(this.motion || this.motionPending);
+  }
+
+  motionReady() {
+    return Boolean(this.motion?.drawList);
+  }
+
+  clearMotion() {
+    if (this.motion?.drawList) this.#deleteList(this.motion.drawList);
+    this.motion = null;
+    this.motionPending = false;
+    this.pendingMotionList = null;
+    this.motionUploads = (this.motionUploads || 0) + 1;  // an atlas on its way is dropped
   }
 
   #deleteDrawList() {
-    const gl = this.gl;
     if (!this.drawList) return;
-    for (const part of [this.drawList.cards, this.drawList.lines]) {
+    this.#deleteList(this.drawList);
+    this.drawList = null;
+  }
+
+  #deleteList(list) {
+    const gl = this.gl;
+    for (const part of [list.cards, list.lines]) {
       if (!part) continue;
       gl.deleteVertexArray(part.vao);
       part.buffers.forEach((b) => gl.deleteBuffer(b));
       part.textures?.forEach((t) => gl.deleteTexture(t));
     }
-    this.drawList = null;
   }
 
   // The worker's 'drawList' for the current view (hybrid mode): cards and line segments.
   setDrawList(msg) {
-    const gl = this.gl;
     this.#deleteDrawList();
     if (!this.hybrid) return;
+    this.drawList = this.#buildDrawList(msg);
+  }
+
+  #buildDrawList(msg) {
+    const gl = this.gl;
     const list = { stats: msg.stats, cards: null, lines: null };
     const c = msg.cards;
     if (c.indices.byteLength > 0) {
@@ -427,15 +577,15 @@ export class Renderer {
       ];
       list.lines = { vao: gl.createVertexArray(), buffers: [], textures, count: segments };
     }
-    this.drawList = list;
+    return list;
   }
 
   // Cards and lines of the current draw list; returns [triangles, lines, draw calls].
-  #renderHybrid(viewProjection) {
+  #renderHybrid(viewProjection, drawList) {
     const gl = this.gl;
     let triangles = 0, lines = 0, drawCalls = 0;
-    if (!this.drawList) return [0, 0, 0];
-    const { cards, lines: segs } = this.drawList;
+    if (!drawList) return [0, 0, 0];
+    const { cards, lines: segs } = drawList;
     if (cards) {
       const p = this.cardProgram;
       gl.useProgram(p.program);
@@ -498,83 +648,135 @@ export class Renderer {
   }
 
   // The camera the worker needs for the hybrid selection (eq. 4.1) at the canvas's pixel size.
+  // Always at the full drawing buffer size (a governed frame's smaller buffer would pick lines
+  // for what is a card at full size).
   viewFor(camera) {
-    this.resize();
-    return { eye: camera.position(), target: [...camera.target], fovY: camera.fov, width: this.canvas.width, height: this.canvas.height };
+    const [width, height] = drawingBufferSize(this.canvas);
+    return { eye: camera.position(), target: [...camera.target], fovY: camera.fov, width, height };
   }
 
   resize() {
-    resizeCanvas(this.canvas);
+    resizeCanvas(this.canvas, this.scale);
   }
 
-  render(camera) {
-    const gl = this.gl;
+  // quality: {scale, cheap} from a FrameGovernor (web/gl/frame_governor.js), or omitted for full
+  // quality; scale < 1 draws into a smaller drawing buffer (the browser stretches it), cheap > 0
+  // draws a moving full-mode tree as its hybrid scene (setMotionHybrid) when it is there and
+  // leaves out the x-ray selection pass. budget: primitives this call may draw; a bigger frame is
+  // drawn over several calls (web/gl/progressive_frame.js) and returns partial: true until the call
+  // that finishes it: call again with resume: true (the same frame goes on; anything else starts a
+  // new frame). Returns what the whole frame draws ({triangles, lines, drawCalls, mode, ...}).
+  render(camera, quality = null, { budget = Infinity, resume = false } = {}) {
     if (!this.treeProgram) return;
     const start = performance.now();
-    let triangles = 0, drawCalls = 0;
-    beginFrame(gl, this.canvas);
-    const viewProjection = camera.viewProjection(this.canvas.width / this.canvas.height);
+    if (!resume || !this.progress.pending()) this.#startFrame(camera, quality, budget);
+    const { primitives, done } = this.progress.run(budget);
+    this.frameCpuMs += performance.now() - start;
+    this.lastFrame = { ...this.frameTotals, cpuMs: this.frameCpuMs, scale: this.scale, partial: !done, drawnPrimitives: primitives };
+    this.gl.bindVertexArray(null);
+    return this.lastFrame;
+  }
 
+  // Clears the canvas and lists the frame's steps (the ground, then the hybrid draw list or the
+  // parts and the selection's x-ray pass) with its totals (what the frame draws, counted from the
+  // index counts; GPU time is not measured here: no timer queries on SwiftShader).
+  #startFrame(camera, quality, budget) {
+    const gl = this.gl;
+    this.scale = quality?.scale || 1;
+    const cheap = quality?.cheap || 0;
+    resizeCanvas(this.canvas, this.scale);  // cleared by progress.begin (canvas or offscreen)
+    this.frameCpuMs = 0;
+    const viewProjection = camera.viewProjection(this.canvas.width / this.canvas.height);
+    const eye = camera.position();
+    const totals = { triangles: 0, lines: 0, drawCalls: 0, mode: 'full', cheap };
+    const steps = [];
     // The crown's shadow falls away from the sun (crown centre projected along the light).
     const reach = (this.crownHeight || 0) / Math.max(this.light[1], 0.25);
-    const ground = this.ground.draw(viewProjection, {
-      center: this.center, extent: this.extent, shadowRadius: this.shadowRadius,
-      shadowOffset: [-this.light[0] * reach, -this.light[2] * reach],
-    });
-    triangles += ground.triangles;
-    drawCalls += ground.drawCalls;
+    const ground = { center: this.center, extent: this.extent, shadowRadius: this.shadowRadius,
+      shadowOffset: [-this.light[0] * reach, -this.light[2] * reach] };
+    steps.push({ primitives: 0, setup: () => {}, draw: () => this.ground.draw(viewProjection, ground) });
+    totals.triangles += 2;
+    totals.drawCalls += 1;
 
-    let lines = 0;
-    if (this.hybrid) {
-      const [tris, segs, calls] = this.#renderHybrid(viewProjection);
-      this.lastFrame = { triangles: triangles + tris, lines: segs, drawCalls: drawCalls + calls, cpuMs: performance.now() - start, mode: 'hybrid' };
-      return this.lastFrame;
+    // A moving full-mode tree at a cheap level: its hybrid scene while it is there.
+    const motion = !this.hybrid && cheap > 0 && this.motionReady();
+    if (this.hybrid || motion) {
+      const list = motion ? this.motion.drawList : this.drawList;
+      steps.push({ primitives: 0, setup: () => {}, draw: () => this.#renderHybrid(viewProjection, list) });
+      const [tris, segs, calls] = this.#hybridCounts(list);
+      totals.triangles += tris;
+      totals.lines += segs;
+      totals.drawCalls += calls;
+      totals.mode = motion ? 'motion' : 'hybrid';
+    } else {
+      const t = this.treeProgram;
+      const common = () => {
+        gl.useProgram(t.program);
+        gl.uniformMatrix4fv(t.uniforms.uViewProjection, false, viewProjection);
+        gl.uniform3fv(t.uniforms.uLightDirection, this.light);
+        gl.uniform3fv(t.uniforms.uCameraPosition, eye);
+        this.#bindPoses(t);
+        gl.vertexAttrib1f(3, 0);  // no highlight on parts without branch ids
+        gl.vertexAttrib2f(6, 0, 0);  // no flutter on parts without uvs
+        gl.uniform1f(t.uniforms.uLeafLength, this.leafLength);
+      };
+      const flutter = this.#flutter();
+      for (const [name, part] of Object.entries(this.parts)) {
+        const look = PARTS[name];
+        steps.push({
+          primitives: part.count / 3,
+          setup: () => {
+            common();
+            gl.uniform3fv(t.uniforms.uColor, look.color);
+            gl.uniform3fv(t.uniforms.uColorVariation, look.variation);
+            gl.uniform1f(t.uniforms.uDoubleSided, look.doubleSided);
+            gl.uniform1f(t.uniforms.uSpecular, look.specular);
+            gl.uniform1f(t.uniforms.uXray, 0);
+            gl.uniform1f(t.uniforms.uFlutter, name === 'leaves' ? flutter : 0);
+            this.#bindPartTextures(t, name);
+            gl.bindVertexArray(part.vao);
+          },
+          draw: (first, n) => gl.drawElements(gl.TRIANGLES, 3 * n, gl.UNSIGNED_INT, 12 * first),
+        });
+        totals.triangles += part.count / 3;
+        totals.drawCalls += 1;
+      }
+      // The selection once more, faintly through everything, so a branch behind leaves shows.
+      const bark = this.parts.bark;
+      if (this.selected !== NONE && bark && cheap === 0) {
+        steps.push({
+          primitives: bark.count / 3,
+          setup: () => {
+            common();
+            gl.uniform1f(t.uniforms.uXray, 1);
+            gl.uniform1f(t.uniforms.uUseTexture, 0);
+            gl.uniform3fv(t.uniforms.uColor, PARTS.bark.color);
+            gl.uniform1f(t.uniforms.uDoubleSided, 0);
+            gl.uniform1f(t.uniforms.uFlutter, 0);
+            gl.disable(gl.DEPTH_TEST);
+            gl.enable(gl.BLEND);
+            gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
+            gl.bindVertexArray(bark.vao);
+          },
+          draw: (first, n) => gl.drawElements(gl.TRIANGLES, 3 * n, gl.UNSIGNED_INT, 12 * first),
+          teardown: () => {
+            gl.disable(gl.BLEND);
+            gl.enable(gl.DEPTH_TEST);
+          },
+        });
+        totals.triangles += bark.count / 3;
+        totals.drawCalls += 1;
+      }
     }
-    const t = this.treeProgram;
-    gl.useProgram(t.program);
-    gl.uniformMatrix4fv(t.uniforms.uViewProjection, false, viewProjection);
-    gl.uniform3fv(t.uniforms.uLightDirection, this.light);
-    gl.uniform3fv(t.uniforms.uCameraPosition, camera.position());
-    this.#bindPoses(t);
-    gl.vertexAttrib1f(3, 0);  // no highlight on parts without branch ids
-    gl.vertexAttrib2f(6, 0, 0);  // no flutter on parts without uvs
-    for (const [name, part] of Object.entries(this.parts)) {
-      const look = PARTS[name];
-      gl.uniform3fv(t.uniforms.uColor, look.color);
-      gl.uniform3fv(t.uniforms.uColorVariation, look.variation);
-      gl.uniform1f(t.uniforms.uDoubleSided, look.doubleSided);
-      gl.uniform1f(t.uniforms.uSpecular, look.specular);
-      gl.uniform1f(t.uniforms.uXray, 0);
-      gl.uniform1f(t.uniforms.uFlutter, name === 'leaves' ? this.#flutter() : 0);
-      gl.uniform1f(t.uniforms.uLeafLength, this.leafLength);
-      this.#bindPartTextures(t, name);
-      gl.bindVertexArray(part.vao);
-      gl.drawElements(gl.TRIANGLES, part.count, gl.UNSIGNED_INT, 0);
-      triangles += part.count / 3;
-      drawCalls += 1;
-    }
-    // The selection once more, faintly through everything, so a branch behind leaves shows.
-    if (this.selected !== NONE && this.parts.bark) {
-      gl.uniform1f(t.uniforms.uXray, 1);
-      gl.uniform1f(t.uniforms.uUseTexture, 0);
-      gl.uniform3fv(t.uniforms.uColor, PARTS.bark.color);
-      gl.uniform1f(t.uniforms.uDoubleSided, 0);
-      gl.uniform1f(t.uniforms.uFlutter, 0);
-      gl.disable(gl.DEPTH_TEST);
-      gl.enable(gl.BLEND);
-      gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
-      gl.bindVertexArray(this.parts.bark.vao);
-      gl.drawElements(gl.TRIANGLES, this.parts.bark.count, gl.UNSIGNED_INT, 0);
-      triangles += this.parts.bark.count / 3;
-      drawCalls += 1;
-      gl.disable(gl.BLEND);
-      gl.enable(gl.DEPTH_TEST);
-    }
-    gl.bindVertexArray(null);
-    // What this frame drew (from the index counts drawn) and the CPU time of this call; GPU time is
-    // not measured (no timer queries on SwiftShader).
-    this.lastFrame = { triangles, lines, drawCalls, cpuMs: performance.now() - start, mode: 'full' };
-    return this.lastFrame;
+    totals.primitives = steps.reduce((n, step) => n + step.primitives, 0);  // what the budget counts
+    this.frameTotals = totals;
+    this.progress.begin(this.canvas, steps, budget);
+  }
+
+  // [triangles, lines, draw calls] of a hybrid draw list.
+  #hybridCounts(list) {
+    if (!list) return [0, 0, 0];
+    return [list.cards ? list.cards.count / 3 : 0, list.lines ? list.lines.count : 0, (list.cards ? 1 : 0) + (list.lines ? 1 : 0)];
   }
 
   // The pose texture on unit 0 for a program with uPoses (and uTime for the flutter).

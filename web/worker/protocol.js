@@ -82,6 +82,10 @@
  *   width: number, height: number}, slot?: number, tag?: any}} ViewMessage
  *   -> {type: 'drawList', client, stats, cards: {positions, uvs, indices, joints, weights},
  *       lines: {positions, colors, widths, joints, weights}, slot?, tag?} (transferred)
+ * With motion: true (and atlas: true for the atlas), the same for a full-mode tree: its cheaper
+ * representation while it moves (issue 16), -> {type: 'motionAtlas', client, hybrid} (as the
+ * tree message's hybrid) when asked, then {type: 'drawList', motion: true, ...}; a scene that cannot
+ * be built -> {type: 'error', client, control: 'motion', message}.
  */
 
 /**

@@ -142,6 +142,7 @@ export function createHandler(Module, ctx) {
     post({ type: 'hash', id: msg.id, client, hash: last.session.hash() });
     stopWind(client);  // the sway restarts in the new wind (the client asks when it is playing)
     last.state = msg.state;
+    last.motionHybrid = false;  // restate cleared the hybrid scene
     sendTree(msg.id, client, last.session, false);
   }
 
@@ -232,10 +233,27 @@ export function createHandler(Module, ctx) {
     sway.timer = setTimeout(() => windTick(client, sway), 8);
   }
 
-  // One view of a hybrid-mode tree: selection, draw list and its sway skin.
+  // One view of a hybrid-mode tree: selection, draw list and its sway skin. With motion: true, the
+  // same for a full-mode tree, its cheaper representation while it moves (issue 16; the page's
+  // FrameGovernor): the hybrid scene is built once per tree, its atlas sent ('motionAtlas') when
+  // the page asks for it (atlas: true), and the draw list comes back with motion: true.
   function hybridView(msg, client) {
-    const session = finished.get(client)?.session;
-    if (!session || session.renderMode() !== 1) return;
+    const last = finished.get(client);
+    const session = last?.session;
+    const motion = msg.motion === true;
+    if (!session || (session.renderMode() === 1) === motion) return;
+    if (motion && (!last.motionHybrid || msg.atlas === true)) {
+      if (!last.motionHybrid) {
+        const error = session.buildHybrid();
+        if (error) {  // no cheaper representation: the page keeps drawing the full one
+          post({ type: 'error', client, message: error, control: 'motion' });
+          return;
+        }
+        last.motionHybrid = true;
+      }
+      const transfer = [];
+      post({ type: 'motionAtlas', client, hybrid: takeAtlas(session, transfer) }, transfer);
+    }
     const { camera, slot, tag } = msg;
     const n = (x, d) => (Number.isFinite(Number(x)) ? Number(x) : d);
     const eye = camera?.eye || [0, 0, 10], target = camera?.target || [0, 0, 0];
@@ -249,7 +267,7 @@ export function createHandler(Module, ctx) {
     const transfer = [];
     const cards = takeBuffers(session.buffers('cards'), transfer);
     const lines = takeBuffers(session.buffers('lines'), transfer);
-    const extra = slotted ? { slot, tag } : {};
+    const extra = slotted ? { slot, tag } : motion ? { motion: true } : {};
     post({ type: 'drawList', client, stats, cards, lines, ...extra }, transfer);
   }
 

@@ -1,0 +1,106 @@
+// One frame drawn over several animation frames (issue 16): a frame is a list of steps (a program,
+// its uniforms and vertex array, then one draw of N primitives), and each animation frame draws at
+// most `budget` primitives of it, resuming inside a step with a sub-range of its draw (the same
+// triangles in the same order as one draw). A frame within the budget is drawn on the canvas at
+// once, as before; a bigger one goes into an OffscreenTarget (offscreen_target.js) and is shown
+// when it is finished, so the canvas keeps its last finished frame meanwhile. A 2.5 M-triangle tree
+// on SwiftShader (seconds of GPU time) then costs about the budget's time per animation frame, and
+// input gets its frames in between.
+// Does not: choose the budget (a FrameGovernor measures it) or know what the steps draw.
+import { BACKGROUND } from './context.js';
+import { OffscreenTarget } from './offscreen_target.js';
+
+// A step: {primitives, setup(), draw(first, count), teardown()?}. primitives 0: an atomic step
+// (cheap: the ground, markers), run whole and not counted against the budget; else draw(first,
+// count) draws primitives [first, first + count) of it, after setup() (called again on every
+// resume: other code may have changed the GL state in between), then teardown().
+export class ProgressiveFrame {
+  // gl: the context whose canvas frames are drawn on (omitted: start/run only, no target).
+  constructor(gl = null) {
+    this.gl = gl;
+    this.steps = null;
+    this.step = 0;
+    this.offset = 0;  // primitives of the current step drawn
+    this.offscreen = null;  // the OffscreenTarget of the frame in progress, or null: the canvas
+    this.target = null;
+  }
+
+  // A new frame of `steps` on `canvas` (its drawing buffer already sized by the renderer): cleared
+  // to the background on the canvas, or, when the steps have more primitives than `budget`, in the
+  // offscreen target.
+  begin(canvas, steps, budget = Infinity) {
+    const gl = this.gl;
+    const total = steps.reduce((n, s) => n + Math.max(0, s.primitives), 0);
+    this.offscreen = total > budget ? (this.target ||= new OffscreenTarget(gl)) : null;
+    this.canvasSize = [canvas.width, canvas.height];
+    this.#bind();
+    gl.clearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    this.start(steps);
+  }
+
+  // True when the frame in progress is drawn offscreen (shown when finished).
+  drawingOffscreen() {
+    return this.offscreen !== null && this.pending();
+  }
+
+  #bind() {
+    const gl = this.gl;
+    const [w, h] = this.canvasSize;
+    if (this.offscreen) this.offscreen.bind(w, h);
+    else {
+      gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+      gl.viewport(0, 0, w, h);
+    }
+    gl.enable(gl.DEPTH_TEST);
+  }
+
+  start(steps) {
+    this.steps = steps;
+    this.step = 0;
+    this.offset = 0;
+  }
+
+  // Drops a frame in progress (its buffers are gone, or the canvas was resized).
+  abort() {
+    this.steps = null;
+  }
+
+  pending() {
+    return this.steps !== null;
+  }
+
+  // Draws up to `budget` primitives (at least one draw, so every frame advances) from where the
+  // last call stopped; returns {primitives, done}.
+  run(budget = Infinity) {
+    let drawn = 0;
+    const steps = this.steps;
+    if (this.gl && steps) this.#bind();  // picking or an atlas may have bound another target
+    while (steps && this.step < steps.length) {
+      const s = steps[this.step];
+      if (s.primitives <= 0) {
+        s.setup();
+        s.draw(0, 0);
+        s.teardown?.();
+        this.step += 1;
+        continue;
+      }
+      const room = budget - drawn;
+      if (room <= 0 && drawn > 0) break;
+      const n = Math.min(s.primitives - this.offset, Math.max(1, Math.floor(room)));
+      s.setup();
+      s.draw(this.offset, n);
+      s.teardown?.();
+      drawn += n;
+      this.offset += n;
+      if (this.offset >= s.primitives) {
+        this.step += 1;
+        this.offset = 0;
+      }
+    }
+    const done = !steps || this.step >= steps.length;
+    if (done && steps && this.offscreen) this.offscreen.present();
+    if (done) this.steps = null;
+    return { primitives: drawn, done };
+  }
+}
