@@ -86,18 +86,21 @@ class NiwaTerrain extends EmbedElement {
   showTerrain(msg) {
     this.pendingTerrain = null;
     msg.buffers.surface.indices = gridIndices(msg.bounds.width, msg.bounds.height);
-    this.renderer.setTerrain(msg.buffers, msg.bounds);
-    const b = this.renderer.bounds();
-    if (b) {
-      this.camera.reset(b);
-      this.camera.pitch = 0.62;
-      this.camera.frame(b, 0.82);
-    }
     this.levels = { min: msg.bounds.level_min, max: msg.bounds.level_max, h0: msg.bounds.h0, dh: msg.bounds.dh };
-    const s = msg.stats;
-    setHooks({ status: 'ready', error: '', levels: s.levels, peaks: s.peaks, hash: msg.hash, stats: JSON.stringify(s) }, this);
-    if (this.hasAttribute('animate')) this.animate();
-    else this.showLevel(Infinity);
+    // A big surface goes up in parts (web/gl/chunked_upload.js): framed and shown once in place.
+    this.renderer.setTerrain(msg.buffers, msg.bounds).then((installed) => {
+      if (!installed) return;  // a newer mountain came meanwhile
+      const b = this.renderer.bounds();
+      if (b) {
+        this.camera.reset(b);
+        this.camera.pitch = 0.62;
+        this.camera.frame(b, 0.82);
+      }
+      const s = msg.stats;
+      setHooks({ status: 'ready', error: '', levels: s.levels, peaks: s.peaks, hash: msg.hash, stats: JSON.stringify(s) }, this);
+      if (this.hasAttribute('animate')) this.animate();
+      else this.showLevel(Infinity);
+    });
   }
 
   showLevel(k) {
