@@ -30,6 +30,18 @@ export const PARTS = {
   flowers: { color: [0.98, 0.74, 0.84], variation: [0.02, 0.08, 0.06], doubleSided: 1, specular: 0.08 },
 };
 
+// Unbinds units 0-2, which the atlas program's samplers read (uBaseMap 1, uNormalMap 2, and any
+// sampler left at unit 0): the cards leave the atlas itself bound on unit 1 and #allocateAtlas on
+// unit 0, and drawing into the atlas while it is bound to a sampled unit is a feedback loop
+// (GL_INVALID_OPERATION), even where the shader does not read that sampler.
+function clearAtlasSamplers(gl) {
+  for (const unit of [gl.TEXTURE0, gl.TEXTURE1, gl.TEXTURE2]) {
+    gl.activeTexture(unit);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+  }
+  gl.activeTexture(gl.TEXTURE0);
+}
+
 // Paints a card atlas (thesis 4.2.1) into the framebuffer `fb` (hybrid.atlasSize square, colour =
 // `texture`, with a depth buffer) from the worker's clip-space triangles of the group
 // representatives and leaf clusters, lit by `light` like the full view and transparent elsewhere,
@@ -52,6 +64,7 @@ export function paintAtlas(gl, program, hybrid, fb, texture, light, textures = n
   gl.uniform3fv(program.uniforms.uCameraPosition, [0, 0, 10]);
   gl.uniform1f(program.uniforms.uXray, 0);
   gl.uniform1f(program.uniforms.uSpecular, 0);
+  clearAtlasSamplers(gl);
   let triangles = 0;
   for (const name of ['bark', 'leaves', 'flowers']) {
     const part = hybrid[name];
@@ -152,6 +165,7 @@ export async function paintAtlasInParts(gl, program, hybrid, fb, texture, light,
         gl.uniform3fv(program.uniforms.uColorVariation, look.variation);
         gl.uniform1f(program.uniforms.uDoubleSided, look.doubleSided);
         // Plain colours (the motion atlas has no uvs): clear what a textured paintAtlas left set.
+        clearAtlasSamplers(gl);
         gl.uniform1f(program.uniforms.uUseTexture, 0);
         gl.uniform1f(program.uniforms.uUseNormalMap, 0);
         gl.uniform1f(program.uniforms.uAlphaCutoff, 0);
