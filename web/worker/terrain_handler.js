@@ -10,8 +10,10 @@
 // Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does).
 import { takeBuffers } from './transfer.js';
+import { nextTask } from './next_task.js';
 
-const yieldToEvents = () => new Promise((resolve) => setTimeout(resolve, 0));
+// A new task of the worker's loop (not setTimeout(0), which is clamped to 4 ms when nested).
+const yieldToEvents = nextTask;
 const FORMATS = ['glb', 'heightmap', 'sidecar', 'json', 'geojson', 'svg'];
 
 // ctx: {post(msg, transfer), isLatest(client, id)} from the router.
