@@ -218,8 +218,14 @@ await runBrowserTest(async (server, browser) => {
   let side = null, sideAt = null;
   for (let dy = 60; dy < 400 && side === null; dy += 12) {
     for (const dx of [0, -20, 20, -40, 40]) {
+      // Each click's frame, finished (drawn in parts: the faint highlight through the leaves is the
+      // last part), before its pixels count: a read 60 ms after the click saw the frame before it.
+      const drawn = Number((await dataset(page)).framesDrawn || 0);
       await page.mouse.click(box.x + trunk.x + dx, box.y + trunk.y - dy);
-      await page.waitForTimeout(60);
+      await page.waitForFunction((n) => {
+        const d = document.documentElement.dataset;
+        return Number(d.framesDrawn) > n && d.framePartial === '0';
+      }, drawn, { timeout: TIMEOUT, polling: 20 });
       const id = Number((await dataset(page)).selected || 0);
       // A branch big enough to see (tiny twigs are a pixel or two wide).
       if (id > 10 && (await canvasPixels(page)).orange > 0.00003) {

@@ -1,9 +1,9 @@
 // Issue 16 fuzz test: random flags, values, JSON files and hashes from a fixed seed, a bounded count
-// (NIWA_FUZZ_COUNT, default 600), against the CLI in NIWA_NATIVE (the release build under ctest, the
-// ASan + UBSan build under scripts/test). Every run must exit 0 or 2 (never 1, 134 or a signal),
+// (NIWA_FUZZ_COUNT, default 600; NIWA_FUZZ_JOBS at a time, default 2), against the CLI in NIWA_NATIVE
+// (the release build under ctest, the ASan + UBSan build under scripts/test). Every run must exit 0 or 2 (never 1, 134 or a signal),
 // within 30 s, with exactly one stderr line when it fails, and leave no file behind on failure
 // (no temporary ever). A failing case is printed with its arguments so it can be replayed.
-import { spawnSync } from 'node:child_process';
+import { spawn } from 'node:child_process';
 import { mkdtempSync, readdirSync, rmSync, writeFileSync, mkdirSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -21,9 +21,12 @@ const random = () => {
 const pick = (list) => list[Math.floor(random() * list.length)];
 
 const work = mkdtempSync(join(tmpdir(), 'niwa-fuzz-'));
-const inputs = join(work, 'in'), outs = join(work, 'out');
+const inputs = join(work, 'in');
 mkdirSync(inputs);
-mkdirSync(outs);
+// Two runs at a time (NIWA_FUZZ_JOBS), each with its own output folder; the cases are drawn first, in
+// order, so the seed gives the same cases whatever the number of jobs.
+const JOBS = Math.max(1, Number(process.env.NIWA_FUZZ_JOBS || 2));
+const OUT = '\u0000OUT\u0000';  // stands for the running job's output folder in a case's arguments
 
 // Hostile and valid values. Valid numbers stay small so that every run is quick.
 const NUMBERS = ['', '0', '1', '2', '3', '010', '0x10', '0x1p3', '1e39', '-1', 'nan', 'inf', '1e400',
@@ -58,7 +61,7 @@ function jsonFile() {
   writeFileSync(path, pick(JSON_FILES));
   return path;
 }
-const outPath = () => join(outs, pick(['o.glb', 'o.json', 'o.svg', 'o.csv', 'o.lsys', 'o.zzz', 'no/such/o.glb', 'x'.repeat(255) + '.json']));
+const outPath = () => OUT + '/' + (pick(['o.glb', 'o.json', 'o.svg', 'o.csv', 'o.lsys', 'o.zzz', 'no/such/o.glb', 'x'.repeat(255) + '.json']));
 
 // Each command's base arguments (quick ones) and the flags the fuzzer may add.
 const COMMANDS = [
@@ -106,31 +109,51 @@ function caseArgs() {
 }
 
 const show = (args) => JSON.stringify(args.map((a) => (a.length > 80 ? `${a.slice(0, 40)}...(${a.length})` : a)));
+// One run of the CLI: exit status, signal, stderr, and an error when it did not finish within 30 s.
+function run(args) {
+  return new Promise((resolve) => {
+    const child = spawn(native, args, { timeout: 30000, stdio: ['ignore', 'ignore', 'pipe'] });
+    let stderr = '';
+    child.stderr.setEncoding('utf8');
+    child.stderr.on('data', (chunk) => { if (stderr.length < (64 << 20)) stderr += chunk; });
+    let error = null;
+    child.on('error', (e) => { error = e; });
+    child.on('close', (status, signal) => {
+      if (signal === 'SIGTERM' && !error) error = { code: 'ETIMEDOUT' };
+      resolve({ status, signal, stderr, error });
+    });
+  });
+}
+const cases = Array.from({ length: COUNT }, caseArgs);
 const started = Date.now();
 let bad = 0;
 const exits = { 0: 0, 2: 0 };
-for (let n = 0; n < COUNT; ++n) {
-  const args = caseArgs();
-  rmSync(outs, { recursive: true, force: true });
-  mkdirSync(outs);
-  const r = spawnSync(native, args, { encoding: 'utf8', timeout: 30000, maxBuffer: 64 << 20 });
-  const lines = r.stderr ? r.stderr.trimEnd().split('\n') : [];
-  const left = readdirSync(outs);
-  if (r.status === 0 || r.status === 2) ++exits[r.status];
-  const problems = [];
-  if (r.error) problems.push(`did not finish: ${r.error.code}`);
-  if (r.status !== 0 && r.status !== 2) problems.push(`exit ${r.status} signal ${r.signal}`);
-  if (r.status === 2 && (lines.length !== 1 || !lines[0].startsWith('niwa: error: '))) problems.push(`${lines.length} stderr lines`);
-  if (r.status === 0 && lines.length > 0) problems.push('stderr on success');
-  if (/[\x00-\x08\x0b-\x1f\x7f]/.test(r.stderr || '')) problems.push('raw control characters on stderr');
-  if (r.status !== 0 && left.length > 0) problems.push(`left ${left.join(', ')} on failure`);
-  if (left.some((f) => f.includes('.partial'))) problems.push('left a temporary');
-  if (problems.length) {
-    ++bad;
-    check(false, `case ${n} ${show(args)}: ${problems.join('; ')} :: ${(r.stderr || '').slice(0, 300)}`);
+async function worker(job) {
+  const outs = join(work, `out${job}`);
+  for (let n = job; n < COUNT; n += JOBS) {
+    const args = cases[n].map((a) => a.split(OUT).join(outs));
+    rmSync(outs, { recursive: true, force: true });
+    mkdirSync(outs);
+    const r = await run(args);
+    const lines = r.stderr ? r.stderr.trimEnd().split('\n') : [];
+    const left = readdirSync(outs);
+    if (r.status === 0 || r.status === 2) ++exits[r.status];
+    const problems = [];
+    if (r.error) problems.push(`did not finish: ${r.error.code}`);
+    if (r.status !== 0 && r.status !== 2) problems.push(`exit ${r.status} signal ${r.signal}`);
+    if (r.status === 2 && (lines.length !== 1 || !lines[0].startsWith('niwa: error: '))) problems.push(`${lines.length} stderr lines`);
+    if (r.status === 0 && lines.length > 0) problems.push('stderr on success');
+    if (/[\x00-\x08\x0b-\x1f\x7f]/.test(r.stderr || '')) problems.push('raw control characters on stderr');
+    if (r.status !== 0 && left.length > 0) problems.push(`left ${left.join(', ')} on failure`);
+    if (left.some((f) => f.includes('.partial'))) problems.push('left a temporary');
+    if (problems.length) {
+      ++bad;
+      check(false, `case ${n} ${show(args)}: ${problems.join('; ')} :: ${(r.stderr || '').slice(0, 300)}`);
+    }
   }
 }
-check(bad === 0, `${COUNT} fuzz cases (seed ${SEED}) in ${((Date.now() - started) / 1000).toFixed(1)} s (${exits[0]} exit 0, ${exits[2]} exit 2): exit 0 or 2, one stderr line, nothing left on failure`);
+await Promise.all(Array.from({ length: JOBS }, (_, job) => worker(job)));
+check(bad === 0, `${COUNT} fuzz cases (seed ${SEED}, ${JOBS} at a time) in ${((Date.now() - started) / 1000).toFixed(1)} s (${exits[0]} exit 0, ${exits[2]} exit 2): exit 0 or 2, one stderr line, nothing left on failure`);
 // The sample must reach both sides: runs that succeed (and write) and runs that are refused.
 check(exits[0] >= COUNT / 10 && exits[2] >= COUNT / 10, `both outcomes reached: ${exits[0]} succeeded, ${exits[2]} refused`);
 rmSync(work, { recursive: true, force: true });
