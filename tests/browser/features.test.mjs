@@ -222,13 +222,14 @@ await runBrowserTest(async (server, browser) => {
       // last part), before its pixels count: a read 60 ms after the click saw the frame before it.
       const drawn = Number((await dataset(page)).framesDrawn || 0);
       await page.mouse.click(box.x + trunk.x + dx, box.y + trunk.y - dy);
+      const id = Number((await dataset(page)).selected || 0);  // set by the click's handler
+      if (id <= 10) continue;
       await page.waitForFunction((n) => {
         const d = document.documentElement.dataset;
         return Number(d.framesDrawn) > n && d.framePartial === '0';
       }, drawn, { timeout: TIMEOUT, polling: 20 });
-      const id = Number((await dataset(page)).selected || 0);
-      // A branch big enough to see (tiny twigs are a pixel or two wide).
-      if (id > 10 && (await canvasPixels(page)).orange > 0.00003) {
+      // A branch big enough to see (tiny twigs are a pixel or two wide), and still the selection.
+      if (Number((await dataset(page)).selected || 0) === id && (await canvasPixels(page)).orange > 0.00003) {
         side = id;
         sideAt = { x: box.x + trunk.x + dx, y: box.y + trunk.y - dy };
         break;
