@@ -1,5 +1,6 @@
 // niwa CLI commands of the terrain study: 'terrain grow' (a whole mountain from one seed contour,
-// Misawa, Chiba, Saito 1987; core/terrain, docs/terrain-model.md) and 'terrain seeds'.
+// Misawa, Chiba, Saito 1987; core/terrain, docs/terrain-model.md), 'terrain compare', 'terrain
+// shrink' (the shrinking algorithm traced for Figs 2-8 and 12) and 'terrain seeds'.
 // cli-order: 40
 #include <chrono>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include "terrain/generate.h"
 #include "terrain/heightfield.h"
 #include "terrain/seeds.h"
+#include "terrain/shrink_trace.h"
 #include "terrain/terrain_budget.h"
 #include "terrain/terrain_output.h"
 #include "terrain/terrain_params.h"
@@ -265,6 +267,119 @@ int RunCompare(const GrowOptions& o, const std::string& dem_path, std::ostream& 
   return 0;
 }
 
+struct ShrinkCommandOptions {
+  std::string contour, builtin, join = "capped", displace, svg;
+  double d = 0, c = 1.4, clean_len = 0, clean_angle = 0;
+  int steps = 1;
+  uint64_t seed = 1;
+  bool outward = false;
+};
+constexpr FlagRange kShrinkD{0, 1e6, false, " (m; 0 = the built-in's d)"};
+constexpr FlagRange kShrinkC{1, 100};
+constexpr FlagRange kShrinkSteps{0, terrain::kMaxTraceSteps, true};
+constexpr FlagRange kCleanLen{0, 1e6, false, " (m)"};
+constexpr FlagRange kCleanAngle{0, 180, false, " (degrees)"};
+constexpr FlagRange kSeed32{0, 4294967295.0, true};
+
+nlohmann::json RingJson(const terrain::Ring& r) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const terrain::Vec2& p : r) a.push_back({p.x, p.y});
+  return a;
+}
+
+// terrain shrink: one JSON object of the measures per step on stdout, the figure as --svg.
+int RunShrink(const ShrinkCommandOptions& o, std::ostream& out) {
+  CheckOutPath(o.svg, "--svg", {".svg"});
+  if (o.contour.empty() == o.builtin.empty())
+    Fail(Status::Error("--contour",
+                       "give one of --contour FILE or --builtin NAME (disk, "
+                       "dumbbell, lobes7, jacksboro, valleys)"));
+  terrain::Ring seed;
+  double d = o.d;
+  if (!o.builtin.empty()) {
+    Result<terrain::Ring> r = terrain::BuiltinSeed(o.builtin);
+    if (!r.ok()) Fail(r.status().Within("--builtin"));
+    seed = *r;
+    for (const terrain::SeedInfo& info : terrain::BuiltinSeeds())
+      if (info.name == o.builtin && d == 0) d = info.d;
+  } else {
+    Result<std::string> text = ReadFile(o.contour, "--contour", kMaxContourFileBytes);
+    if (!text.ok()) Fail(text.status());
+    Result<terrain::SeedFile> file = terrain::ParseContourJson(*text);
+    if (!file.ok()) Fail(file.status().Within("--contour"));
+    seed = file->ring;
+    if (d == 0) Fail(Status::Error("--d", "give the offset distance d in (0, 1e6] m"));
+  }
+  terrain::ShrinkTraceOptions t;
+  t.shrink.d = d;
+  t.shrink.c = o.c;
+  const int join = terrain::JoinFromName(o.join);
+  if (join < 0)
+    Fail(Status::Error("--join", "'" + o.join + "' must be miter, bevel, round or capped"));
+  t.shrink.join = static_cast<terrain::Join>(join);
+  t.shrink.clean_len = o.clean_len;
+  t.shrink.clean_angle_deg = o.clean_angle;
+  t.shrink.outward = o.outward;
+  t.steps = o.steps;
+  t.rng_seed = o.seed;
+  if (!o.displace.empty()) {  // D0,D2,THETA_MIN,THETA_MAX
+    std::vector<std::string> parts;
+    std::size_t at = 0;
+    for (std::size_t k; (k = o.displace.find(',', at)) != std::string::npos; at = k + 1)
+      parts.push_back(o.displace.substr(at, k - at));
+    parts.push_back(o.displace.substr(at));
+    if (parts.size() != 4)
+      Fail(Status::Error("--displace", "'" + o.displace + "' must be D0,D2,THETA_MIN,THETA_MAX"));
+    t.displace = true;
+    t.d0 = FlagNumber("--displace", parts[0], {0, 1e6, false, " (d0, m)"});
+    t.d2 = FlagNumber("--displace", parts[1], {0, 1e6, false, " (d'', m)"});
+    t.theta_min_deg = FlagNumber("--displace", parts[2], {0, 89, false, " (theta min, degrees)"});
+    t.theta_max_deg = FlagNumber("--displace", parts[3], {0, 89, false, " (theta max, degrees)"});
+  }
+  Result<terrain::ShrinkTrace> trace = terrain::TraceShrink(seed, t);
+  if (!trace.ok()) {
+    const Status& s = trace.status();
+    const std::string field = s.field() == "contour" ? "--contour" : "--" + s.field();
+    Fail(Status::Error(field, s.message()));
+  }
+  nlohmann::json j;
+  j["d"] = d;
+  j["join"] = terrain::JoinName(join);
+  j["c"] = o.c;
+  j["seed_points"] = trace->seed.size();
+  j["seed_min_angle_deg"] = terrain::MinInteriorAngleDeg(trace->seed);
+  if (t.displace) {
+    j["displaced_points"] = trace->displaced.size();
+    j["max_displacement"] = trace->max_displacement;
+  }
+  nlohmann::json steps = nlohmann::json::array();
+  for (const terrain::ShrinkTraceStep& s : trace->steps) {
+    nlohmann::json rings = nlohmann::json::array();
+    for (const terrain::Ring& r : s.rings) rings.push_back(RingJson(r));
+    steps.push_back({{"convex", s.convex},
+                     {"reflex", s.reflex},
+                     {"gaps", s.gaps},
+                     {"crossings", s.crossings},
+                     {"raw_points",
+                      [&] {
+                        std::size_t n = 0;
+                        for (const terrain::Ring& r : s.raw) n += r.size();
+                        return n;
+                      }()},
+                     {"raw_self_intersections", s.raw_self_intersections},
+                     {"rings", s.rings.size()},
+                     {"points", s.points},
+                     {"min_angle_deg", s.min_angle_deg},
+                     {"cleaned_points", s.counts.cleaned_points},
+                     {"holes_filled", s.counts.holes_filled},
+                     {"dropped_rings", s.counts.dropped_rings},
+                     {"contours", rings}});
+  }
+  j["steps"] = steps;
+  if (!o.svg.empty()) WriteAllOrNone({{"--svg", o.svg, terrain::ShrinkTraceToSvg(*trace)}});
+  out << j.dump() << "\n";
+  return 0;
+}
 }  // namespace
 
 void AddTerrainCommands(CLI::App& app, CommandList& commands) {
@@ -317,6 +432,35 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
   AddBudgetOptions(compare, &co->budget);
   commands.push_back(
       {compare, [co, dem](std::ostream& out) { return RunCompare(*co, *dem, out); }});
+
+  CLI::App* shrink = terrain_cmd->add_subcommand(
+      "shrink",
+      "Trace the polygon shrinking algorithm on a contour (Figs 2-8, 12): naive offsets, the raw "
+      "path with its joins, the rings kept, repeated steps; one JSON object of measures per step");
+  auto so = std::make_shared<ShrinkCommandOptions>();
+  shrink->add_option("--contour", so->contour,
+                     "The contour: {\"points\": [[x, y], ...]} or GeoJSON");
+  shrink->add_option("--builtin", so->builtin, "Or a built-in seed (terrain seeds)");
+  AddNumberFlag(shrink, "--d", &so->d, kShrinkD,
+                "Offset distance d (m), " + RangeHelp(kShrinkD) + "; default the built-in's d");
+  shrink->add_option("--join", so->join,
+                     "Valley join: miter (Fig 5a), bevel (5b), round (5c), capped (Fig 7)");
+  AddNumberFlag(shrink, "--c", &so->c, kShrinkC, "Fig 7 cap c, " + RangeHelp(kShrinkC));
+  AddNumberFlag(
+      shrink, "--clean-len", &so->clean_len, kCleanLen,
+      "Fig 8 pre-clean: drop a point of an edge shorter than this (m), " + RangeHelp(kCleanLen));
+  AddNumberFlag(shrink, "--clean-angle", &so->clean_angle, kCleanAngle,
+                "Fig 8 pre-clean: drop a vertex with an angle below this (degrees), " +
+                    RangeHelp(kCleanAngle));
+  shrink->add_flag("--outward", so->outward, "Offset outward (downhill) instead of shrinking");
+  AddNumberFlag(shrink, "--steps", &so->steps, kShrinkSteps,
+                "Successive shrinks, " + RangeHelp(kShrinkSteps));
+  shrink->add_option("--displace", so->displace,
+                     "D0,D2,THETA_MIN,THETA_MAX: midpoint-displace the contour first (Fig 12)");
+  AddNumberFlag(shrink, "--seed", &so->seed, kSeed32,
+                "RNG seed of --displace, " + RangeHelp(kSeed32));
+  shrink->add_option("--svg", so->svg, "Write the figure as .svg");
+  commands.push_back({shrink, [so](std::ostream& out) { return RunShrink(*so, out); }});
 
   CLI::App* seeds = terrain_cmd->add_subcommand("seeds", "List the built-in seed contours");
   commands.push_back({seeds, [](std::ostream& out) {

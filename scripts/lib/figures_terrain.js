@@ -1,15 +1,16 @@
 #!/usr/bin/env node
-// Regenerates the terrain paper's figures (Misawa, Chiba, Saito; paper 002: Figs. 9, 10, 13-18)
-// through the CLI (build/native/bin/niwa, or $NIWA) into docs/figures/terrain_figN.svg (contour
-// plans side by side, `niwa terrain grow --contours x.svg`) and docs/figures/terrain_measures.json
-// (the numbers docs/FIGURES.md quotes), and prints them. Every run is deterministic (fixed seeds).
-// The seed is the real one (`--builtin jacksboro`, the 800 m contour of a USGS DEM) as the paper's is
-// a real map's contour (Mt. Nakitsura). Figs. 2-8 and 12 are geometric cases checked by unit tests
-// (tests/terrain/shrink_test.cpp, grow_test.cpp), not drawn here. Usage: scripts/figures terrain [N...]
+// Regenerates the terrain paper's figures (Misawa, Chiba, Saito; paper 002: Figs. 2-10, 12-18)
+// through the CLI (build/native/bin/niwa, or $NIWA) into docs/figures/terrain_figN.svg (panels side
+// by side) and docs/figures/terrain_measures.json (the numbers docs/FIGURES.md quotes), and prints
+// them. Every run is deterministic (fixed seeds). Figs. 2-8 and 12 (the shrinking algorithm and the
+// midpoint displacement on small contours) come from `niwa terrain shrink --svg`; Figs. 9-18 (whole
+// mountains) from `niwa terrain grow --contours x.svg` on the real seed (`--builtin jacksboro`, the
+// 800 m contour of a USGS DEM) as the paper's is a real map's contour (Mt. Nakitsura).
+// Usage: scripts/figures terrain [N...]
 'use strict';
 const fs = require('fs');
 const path = require('path');
-const { root, start, run } = require('./figures_common');
+const { root, start, run, esc } = require('./figures_common');
 
 const outDir = path.join(root, 'docs/figures');
 const tmpDir = start('terrain-figures');
@@ -78,12 +79,36 @@ function figure(name, title, panels) {
     const inner = p.g.svg.replace(/^<svg[^>]*>/, '').replace(/<\/svg>\s*$/, '');
     const vb = p.g.svg.match(/viewBox="([^"]+)"/)[1];
     body += `<svg x="${i * W}" y="30" width="${W}" height="${W}" viewBox="${vb}">${inner}</svg>\n`;
-    body += `<text x="${i * W + W / 2}" y="${H + 10}" text-anchor="middle" font-size="13">${p.label}</text>\n`;
+    body += `<text x="${i * W + W / 2}" y="${H + 10}" text-anchor="middle" font-size="13">${esc(p.label)}</text>\n`;
   });
-  const svg = `<svg xmlns="http://www.w3.org/2000/svg" width="${W * panels.length}" height="${H + 24}">\n` +
-    `<rect width="100%" height="100%" fill="#fff"/>\n<text x="8" y="20" font-size="15">${title}</text>\n${body}</svg>\n`;
+  const width = Math.max(W * panels.length, Math.ceil(7.5 * title.length) + 16);  // the title fits
+  const svg = `<svg xmlns="http://www.w3.org/2000/svg" width="${width}" height="${H + 24}">\n` +
+    `<rect width="100%" height="100%" fill="#fff"/>\n<text x="8" y="20" font-size="15">${esc(title)}</text>\n${body}</svg>\n`;
   fs.writeFileSync(path.join(outDir, `terrain_${name}.svg`), svg);
 }
+
+// One `terrain shrink` panel: p.points (written as a contour file) or p.builtin, with p.args; the
+// CLI's figure SVG and its JSON measures.
+function shrink(p) {
+  const svg = path.join(tmpDir, 's.svg');
+  const args = ['terrain', 'shrink'];
+  if (p.points) {
+    const file = path.join(tmpDir, 's.json');
+    fs.writeFileSync(file, JSON.stringify({ points: p.points }));
+    args.push('--contour', file);
+  } else {
+    args.push('--builtin', p.builtin);
+  }
+  const j = JSON.parse(run([...args, ...p.args, '--svg', svg]));
+  return { j, svg: fs.readFileSync(svg, 'utf8') };
+}
+// Step measures without the rings' coordinates.
+const stepMeasures = (j) => j.steps.map(({ contours, ...m }) => ({ ...m, min_angle_deg: r2(m.min_angle_deg) }));
+const lShape = [[0, 0], [100, 0], [100, 40], [40, 40], [40, 100], [0, 100]];
+const ellipse = (a, b, n) => Array.from({ length: n }, (_, k) => {
+  const t = 2 * Math.PI * k / n;
+  return [Math.round(a * Math.cos(t) * 1024) / 1024, Math.round(b * Math.sin(t) * 1024) / 1024];
+});
 
 function compare(preset, rng, demFile = dem, seed = 'jacksboro') {
   return JSON.parse(run(['terrain', 'compare', '--dem', demFile, '--builtin', seed, '--method', preset,
@@ -91,6 +116,82 @@ function compare(preset, rng, demFile = dem, seed = 'jacksboro') {
 }
 
 const figures = {
+  fig2() {
+    // Every edge moved by d with no join: a gap at each valley (folded concave part), a crossing at a
+    // ridge whose edges are long enough: the spike's 7 m edges cross at d = 2 m, not at d = 12 m.
+    const points = [[0, 0], [120, 0], [120, 80], [80, 50], [64, 110], [60, 116], [56, 110], [40, 50], [0, 80]];
+    const ps = [2, 12].map((d) => ({ label: `d = ${d} m: edges moved, no join`, g: shrink({ points, args: ['--d', String(d)] }) }));
+    figure('fig2', 'Fig. 2: discontinuity (valleys) and crossing (ridges) of naively moved edges', ps);
+    return Object.fromEntries(ps.map((p, i) => [`d${[2, 12][i]}`, stepMeasures(p.g.j)[0]]));
+  },
+  fig3() {
+    // A smooth convex end shrunk past its curvature radius (b²/a = 20.8 m) becomes a corner.
+    const g = shrink({ points: ellipse(120, 50, 96), args: ['--d', '10', '--steps', '4'] });
+    figure('fig3', 'Fig. 3: the "corner" problem: a smooth ellipse shrunk 4 × 10 m', [{ label: 'ellipse 120 × 50 m, d = 10 m', g }]);
+    return { seed_min_angle_deg: r2(g.j.seed_min_angle_deg), min_angle_deg_by_step: g.j.steps.map((s) => r2(s.min_angle_deg)) };
+  },
+  fig4() {
+    // A narrow neck: the shrunk contour splits into islands (peaks).
+    const g = shrink({ builtin: 'dumbbell', args: ['--d', '5', '--steps', '24'] });
+    figure('fig4', 'Fig. 4: the "island" problem: a narrow neck splits (dumbbell, d = 5 m)', [{ label: '24 steps', g }]);
+    return { rings_by_step: g.j.steps.map((s) => s.rings) };
+  },
+  fig5() {
+    // The three ways to close a valley's gap: (a) extension lines, (b) a straight chord, (c) an arc.
+    const joins = [['miter', '(a) extension (miter)'], ['bevel', '(b) straight (bevel)'], ['round', '(c) arc of radius d']];
+    const ps = joins.map(([join, label]) => ({ label, g: shrink({ points: lShape, args: ['--d', '10', '--join', join] }) }));
+    figure('fig5', 'Fig. 5: closing the gap at a valley (L, d = 10 m)', ps);
+    return Object.fromEntries(ps.map((p, i) => [joins[i][0], { points: p.g.j.steps[0].points }]));
+  },
+  fig6() {
+    // The algorithm: (a) the contour, (b) the raw offset path with its joins (dashed, crossing
+    // itself), (d) the simple rings the union keeps (blue).
+    const g = shrink({ builtin: 'lobes7', args: ['--d', '40'] });
+    figure('fig6', 'Fig. 6: polygon shrinking: raw path (dashed) and the rings kept (lobes7, d = 40 m)', [{ label: 'one step', g }]);
+    const s = g.j.steps[0];
+    return { raw_points: s.raw_points, raw_self_intersections: s.raw_self_intersections, rings: s.rings, points: s.points };
+  },
+  fig7() {
+    // The capped join: the join point P on the valley's bisector at min(c·d, d / cos(ψ/2)).
+    const points = [[0, 0], [100, 0], [100, 100], [56, 100], [50, 30], [44, 100], [0, 100]];
+    const valley = [50, 30];
+    const out = {};
+    const ps = [1, 1.4, 2].map((c) => {
+      const g = shrink({ points, args: ['--d', '10', '--join', 'capped', '--c', String(c)] });
+      // The kept vertex nearest the bisector (straight down from the valley, into the land) within 4d: P.
+      let best = null;
+      for (const ring of g.j.steps[0].contours) {
+        for (const [x, y] of ring) {
+          const dx = x - valley[0], dy = y - valley[1];
+          if (Math.hypot(dx, dy) > 40 || dy >= 0) continue;
+          const off = Math.abs(dx);
+          if (!best || off < best.off) best = { off, dist: Math.hypot(dx, dy) };
+        }
+      }
+      out[`c${c}`] = { p_over_d: best ? r3(best.dist / 10) : null, points: g.j.steps[0].points };
+      return { label: `c = ${c}`, g };
+    });
+    figure('fig7', 'Fig. 7: the arc approximated by a capped join, P at c·d on the bisector (d = 10 m)', ps);
+    return out;
+  },
+  fig8() {
+    // A valley made of short edges, bevel join: without the pre-clean the raw path folds back on
+    // itself around it; with it (drop points of edges shorter than d) the valley is one corner.
+    const points = [[0, 0], [100, 0], [100, 100], [54, 100], [52, 70], [50, 67], [48, 70], [46, 100], [0, 100]];
+    const runs = [['0', 'no pre-clean'], ['10', 'pre-clean: edges < d dropped']];
+    const ps = runs.map(([len, label]) => ({ label, g: shrink({ points, args: ['--d', '10', '--join', 'bevel', '--clean-len', len] }) }));
+    figure('fig8', 'Fig. 8: short edges at a valley (bevel, d = 10 m)', ps);
+    return Object.fromEntries(ps.map((p, i) => [`clean_len_${runs[i][0]}`, stepMeasures(p.g.j)[0]]));
+  },
+  fig12() {
+    // Midpoint displacement of each edge by min(d'', |l·tan θ|), recursively until edges < 2·d0.
+    const ps = [[10, '0,10'], [10, '0,30']].map(([d2, th]) => ({
+      label: `d'' = ${d2} m, θ in (${th.replace(',', '°, ')}°)`,
+      g: shrink({ points: [[0, 0], [200, 0], [200, 200], [0, 200]], args: ['--d', '10', '--steps', '0', '--displace', `10,${d2},${th}`, '--seed', '1'] }),
+    }));
+    figure('fig12', "Fig. 12: midpoint displacement of a 200 m square (d0 = 10 m)", ps);
+    return Object.fromEntries(ps.map((p, i) => [`theta_${['10', '30'][i]}`, { points: p.g.j.displaced_points, max_displacement: r2(p.g.j.max_displacement) }]));
+  },
   fig9() {
     const ps = [['fig9a', '(a) miter'], ['fig9b', '(b) bevel'], ['fig9c', '(c) Fig 7 join, c = 1.4']];
     const panels = ps.map(([preset, label]) => ({ label, g: grow({ preset }) }));

@@ -1,6 +1,7 @@
 // Terrain CLI: native == WASM `niwa terrain grow --stats` (minus the ms fields) and the contour-tree
-// .json, byte for byte, for every built-in seed × method and two RNG seeds; hostile input is one line
-// naming the field, exit 2, no file left behind.
+// .json, byte for byte, for every built-in seed × method and two RNG seeds, and `terrain shrink`'s
+// JSON and figure SVG for every seed × join; hostile input is one line naming the field, exit 2, no
+// file left behind.
 import { existsSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -23,6 +24,20 @@ for (const seedName of seeds) {
       const ja = readFileSync(na, 'utf8'), jb = readFileSync(wa, 'utf8');
       check(ja.length > 100 && ja === jb, `${seedName} ${method} seed ${rng}: contours .json identical (${ja.length} bytes)`);
     }
+  }
+}
+
+// The traced shrinking algorithm (Figs 2-8, 12): the JSON (with every ring) and the SVG, byte for byte.
+for (const seedName of seeds) {
+  for (const joinName of ['miter', 'bevel', 'round', 'capped']) {
+    const args = ['terrain', 'shrink', '--builtin', seedName, '--join', joinName, '--steps', '3',
+      '--displace', '20,8,0,30', '--seed', '2', '--clean-len', '1'];
+    const na = join(dir, `${seedName}-${joinName}-n.svg`), wa = join(dir, `${seedName}-${joinName}-w.svg`);
+    const a = run(native, [...args, '--svg', na]);
+    const b = run(wasm, [...args, '--svg', wa]);
+    const sa = readFileSync(na, 'utf8'), sb = readFileSync(wa, 'utf8');
+    check(a.length > 100 && a === b && sa === sb,
+      `${seedName} shrink ${joinName}: JSON (${a.length} bytes) and SVG (${sa.length} bytes) native == WASM`);
   }
 }
 

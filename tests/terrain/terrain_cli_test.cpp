@@ -1,9 +1,11 @@
-// 'niwa terrain grow|seeds' and 'niwa params terrain' in-process: stats of every method, bad input
-// as one line with exit code 2 and no file left.
+// 'niwa terrain grow|shrink|seeds' and 'niwa params terrain' in-process: stats of every method, bad
+// input as one line with exit code 2 and no file left.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "support/cli_runner.h"
@@ -42,6 +44,37 @@ TEST(TerrainCli, ContoursFileAndSeedsList) {
   CliResult params = RunNiwa({"params", "terrain"});
   ASSERT_EQ(params.code, 0);
   EXPECT_NE(params.out.find("f0"), std::string::npos);
+}
+
+TEST(TerrainCli, ShrinkTracesTheFigureAndRefusesBadSteps) {
+  const std::string svg = ::testing::TempDir() + "terrain_shrink.svg";
+  std::remove(svg.c_str());
+  CliResult r = RunNiwa({"terrain", "shrink", "--builtin", "dumbbell", "--steps", "4", "--join",
+                         "round", "--svg", svg});
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["join"], "round");
+  EXPECT_EQ(j["d"], 20);  // the built-in's d
+  ASSERT_EQ(j["steps"].size(), 4u);
+  EXPECT_EQ(j["steps"][0]["rings"], 2);  // the neck is narrower than 2d: two islands at once
+  EXPECT_GT(j["steps"][0]["raw_self_intersections"].get<int>(), 0);
+  std::ifstream in(svg);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("class=\"ring\""), std::string::npos);
+  const std::string never = ::testing::TempDir() + "terrain_shrink_never.svg";
+  std::remove(never.c_str());
+  for (const std::vector<std::string>& bad : {std::vector<std::string>{"--steps", "65"},
+                                              {"--d", "-1"},
+                                              {"--join", "sharp"},
+                                              {"--displace", "1,2,3"}}) {
+    std::vector<std::string> args = {"terrain", "shrink", "--builtin", "disk", "--svg", never};
+    args.insert(args.end(), bad.begin(), bad.end());
+    CliResult b = RunNiwa(args);
+    EXPECT_EQ(b.code, 2) << bad[0];
+    EXPECT_NE(b.err.find("niwa: error: " + bad[0] + ": "), std::string::npos) << b.err;
+    EXPECT_EQ(std::count(b.err.begin(), b.err.end(), '\n'), 1) << b.err;
+    EXPECT_FALSE(std::ifstream(never).good()) << bad[0];
+  }
 }
 
 TEST(TerrainCli, BadInputIsOneLineExitTwoAndNoFile) {
