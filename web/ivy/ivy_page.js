@@ -9,8 +9,7 @@
 // directly (ivy_renderer.js), or grow the tree it climbs (scene 'tree': the worker grows the
 // tree preset's bark, core/tree/bark_support, as the CLI's --tree-preset does).
 import { OrbitCamera } from '../gl/orbit_camera.js';
-import { FrameGovernor } from '../gl/frame_governor.js';
-import { FrameLoop } from '../gl/frame_loop.js';
+import { ProgressiveLoop } from '../gl/progressive_loop.js';
 import { dracoPrimitiveCount, importMesh, isGlb, parseGlb } from '../mesh/mesh_import.js';
 import { FileDrop, extensionOf } from '../shell/file_drop.js';
 import { HashHistory } from '../shell/hash_history.js';
@@ -77,48 +76,21 @@ const camera = new OrbitCamera();
 let renderer = null;
 let ivySerial = 0;
 let installedSerial = 0;  // the ivy whose buffers are in place (a big one goes up in parts)
-// One frame in flight on the GPU (web/gl/frame_loop.js); none while an ivy goes up in parts.
-// A frame bigger than the governor's budget is drawn over several animation frames
-// (web/gl/progressive_frame.js); a moving camera gets a smaller drawing buffer when frames lag.
-const governor = new FrameGovernor({ onStill: () => requestFrame() });
-// A frame in parts goes on until it is finished unless the governor wants another level; what
-// changed meanwhile (frameDirty) is drawn by the next frame.
-let frameDirty = true;
-let frameLevel = -1;  // the governor's level of the frame in parts
-const frames = new FrameLoop(() => {
-  if (renderer.uploading) return false;
-  const resume = renderer.progress.pending() && governor.peek(0).level === frameLevel;
-  let quality = null;
-  if (!resume) {
-    quality = governor.quality(0);
-    frameLevel = quality.level;
-    frameDirty = false;
-  }
-  const drawn = renderer.render(camera, quality, { budget: governor.budget(), resume });
-  governor.drew(drawn.drawnPrimitives, !drawn.partial, drawn.primitives);
-  if (drawn.partial) {
-    frames.request();
-    return true;
-  }
-  if (frameDirty) {  // what changed while the frame was drawn in parts: the next frame shows it
-    frames.request();
-    return true;  // (and the hooks wait for that frame)
-  }
-  const counts = renderer.drawnCounts();
-  setHooks({
-    drawnSerial: installedSerial, drawnStep: scrubber.value, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls,
-    drawnStems: counts.stems, drawnLeaves: counts.leaves, drawnSuckers: counts.suckers,
-  });
-}, { governor });
-const requestFrame = () => {
-  if (!renderer) return;
-  frameDirty = true;
-  frames.request();
-};
-const cameraMoved = () => {
-  governor.motion();
-  requestFrame();
-};
+// Frames on demand over the renderer's progressive parts (web/gl/progressive_loop.js); the hooks
+// describe a finished frame.
+const loop = new ProgressiveLoop({
+  renderer: () => renderer,
+  camera,
+  onDrawn: (drawn) => {
+    const counts = renderer.drawnCounts();
+    setHooks({
+      drawnSerial: installedSerial, drawnStep: scrubber.value, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls,
+      drawnStems: counts.stems, drawnLeaves: counts.leaves, drawnSuckers: counts.suckers,
+    });
+  },
+});
+const requestFrame = () => loop.request();
+const cameraMoved = () => loop.moved();
 
 const scrubber = new StepScrubber({ range: ui.step, text: ui.stepText, play: ui.play }, (k) => {
   renderer?.setStep(k);
@@ -130,7 +102,7 @@ async function startRenderer() {
   try {
     renderer = new IvyRenderer(ui.canvas);
     await renderer.init();
-    frames.attach(renderer.gl, ui.canvas);
+    loop.attach(renderer.gl);
     camera.attach(ui.canvas, cameraMoved);
     new ResizeObserver(requestFrame).observe(ui.canvas);
     ui.canvas.addEventListener('webglcontextlost', (e) => {

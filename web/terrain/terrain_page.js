@@ -9,8 +9,7 @@
 // Does not: parse or check states or contours (the core does; its one line is shown beside its
 // field), or draw directly.
 import { OrbitCamera } from '../gl/orbit_camera.js';
-import { FrameGovernor } from '../gl/frame_governor.js';
-import { FrameLoop } from '../gl/frame_loop.js';
+import { ProgressiveLoop } from '../gl/progressive_loop.js';
 import { FileDrop } from '../shell/file_drop.js';
 import { HashHistory } from '../shell/hash_history.js';
 import { ParamPanel } from '../shell/param_panel.js';
@@ -71,47 +70,20 @@ const camera = new OrbitCamera();
 let renderer = null;
 let terrainSerial = 0;
 let installedSerial = 0;  // the mountain whose buffers are in place (a big one goes up in parts)
-// One frame in flight on the GPU (web/gl/frame_loop.js); none while a mountain goes up in parts.
-// A frame bigger than the governor's budget is drawn over several animation frames
-// (web/gl/progressive_frame.js); a moving camera gets a smaller drawing buffer when frames lag.
-const governor = new FrameGovernor({ onStill: () => requestFrame() });
-// A frame in parts goes on until it is finished unless the governor wants another level; what
-// changed meanwhile (frameDirty) is drawn by the next frame.
-let frameDirty = true;
-let frameLevel = -1;  // the governor's level of the frame in parts
-const frames = new FrameLoop(() => {
-  if (renderer.uploading) return false;
-  const resume = renderer.progress.pending() && governor.peek(0).level === frameLevel;
-  let quality = null;
-  if (!resume) {
-    quality = governor.quality(0);
-    frameLevel = quality.level;
-    frameDirty = false;
-  }
-  const drawn = renderer.render(camera, quality, { budget: governor.budget(), resume });
-  governor.drew(drawn.drawnPrimitives, !drawn.partial, drawn.primitives);
-  if (drawn.partial) {
-    frames.request();
-    return true;
-  }
-  if (frameDirty) {  // what changed while the frame was drawn in parts: the next frame shows it
-    frames.request();
-    return true;  // (and the hooks wait for that frame)
-  }
-  setHooks({
-    drawnSerial: installedSerial, drawnLevel: Number.isFinite(shownLevel) ? shownLevel : 'all', drawnTriangles: drawn.triangles, drawnLines: drawn.lines,
-    drawCalls: drawn.drawCalls,
-  });
-}, { governor });
-const requestFrame = () => {
-  if (!renderer) return;
-  frameDirty = true;
-  frames.request();
-};
-const cameraMoved = () => {
-  governor.motion();
-  requestFrame();
-};
+// Frames on demand over the renderer's progressive parts (web/gl/progressive_loop.js); the hooks
+// describe a finished frame.
+const loop = new ProgressiveLoop({
+  renderer: () => renderer,
+  camera,
+  onDrawn: (drawn) => {
+    setHooks({
+      drawnSerial: installedSerial, drawnLevel: Number.isFinite(shownLevel) ? shownLevel : 'all', drawnTriangles: drawn.triangles, drawnLines: drawn.lines,
+      drawCalls: drawn.drawCalls,
+    });
+  },
+});
+const requestFrame = () => loop.request();
+const cameraMoved = () => loop.moved();
 
 // The level scrubber and Play: the mountain contour by contour, from the seed (or the lowest
 // `down` contour) to the top; nothing regrows. Level k shows the contours up to k and the surface
@@ -133,7 +105,7 @@ async function startRenderer() {
   try {
     renderer = new TerrainRenderer(ui.canvas);
     await renderer.init();
-    frames.attach(renderer.gl, ui.canvas);
+    loop.attach(renderer.gl);
     camera.attach(ui.canvas, cameraMoved);
     new ResizeObserver(requestFrame).observe(ui.canvas);
     ui.canvas.addEventListener('webglcontextlost', (e) => {

@@ -1,0 +1,60 @@
+// A study page's frames over a progressive renderer (the ivy and terrain pages): one frame in
+// flight (frame_loop.js), a frame bigger than the governor's budget drawn over several animation
+// frames (progressive_frame.js), a smaller drawing buffer while the camera moves and frames lag
+// (frame_governor.js). A frame in parts goes on until it is finished unless the governor wants
+// another level; what changed meanwhile is drawn by the next frame, and only a finished frame with
+// nothing pending is reported (onDrawn), so a test's hooks describe what is on screen.
+// Does not: know what is drawn (the renderer does), or start frames by itself (request, moved).
+import { FrameGovernor } from './frame_governor.js';
+import { FrameLoop } from './frame_loop.js';
+
+export class ProgressiveLoop {
+  // renderer(): the page's renderer or null (render(camera, quality, {budget, resume}), progress,
+  // uploading); onDrawn(drawn): called after each finished frame.
+  constructor({ renderer, camera, onDrawn }) {
+    this.renderer = renderer;
+    this.camera = camera;
+    this.onDrawn = onDrawn;
+    this.governor = new FrameGovernor({ onStill: () => this.request() });
+    this.dirty = true;  // something changed since the frame in parts began
+    this.level = -1;    // the governor's level of the frame in parts
+    this.frames = new FrameLoop(() => this.#frame(), { governor: this.governor });
+  }
+
+  #frame() {
+    const r = this.renderer();
+    if (r.uploading) return false;
+    const resume = r.progress.pending() && this.governor.peek(0).level === this.level;
+    let quality = null;
+    if (!resume) {
+      quality = this.governor.quality(0);
+      this.level = quality.level;
+      this.dirty = false;
+    }
+    const drawn = r.render(this.camera, quality, { budget: this.governor.budget(), resume });
+    this.governor.drew(drawn.drawnPrimitives, !drawn.partial, drawn.primitives);
+    if (drawn.partial || this.dirty) {  // the rest of the frame, or what changed while it was drawn
+      this.frames.request();
+      return true;  // (and the hooks wait for that frame)
+    }
+    this.onDrawn(drawn);
+    return true;
+  }
+
+  // Something on screen changed: draw it (when there is a renderer).
+  request() {
+    if (!this.renderer()) return;
+    this.dirty = true;
+    this.frames.request();
+  }
+
+  // The camera moved: the governor may lower the quality while it moves.
+  moved() {
+    this.governor.motion();
+    this.request();
+  }
+
+  attach(gl) {
+    this.frames.attach(gl);
+  }
+}
