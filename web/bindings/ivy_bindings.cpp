@@ -50,6 +50,7 @@
 #include "ivy/ivy_state.h"
 #include "ivy/lstring.h"
 #include "ivy/scenes.h"
+#include "page_budget.h"
 #include "params/param_json.h"
 #include "tree/bark_support.h"
 
@@ -185,16 +186,6 @@ std::string IvyEncodeHash(const std::string& state_json) {
     out["error"] = error;
   }
   return Dump(out);
-}
-
-// The page's budget (docs/budgets.md): what a laptop tab's WASM heap holds, by estimate.
-static Budget PageBudget() {  // internal: each study binding has its own
-  Budget budget;
-  budget.memory_bytes = uint64_t{1} << 30;
-  budget.seconds = 60;
-  budget.memory_limit = "page memory budget";
-  budget.seconds_limit = "page time budget";
-  return budget;
 }
 
 class IvyLab {

@@ -35,6 +35,7 @@
 
 #include "buffers.h"
 #include "io/gltf_writer.h"
+#include "page_budget.h"
 #include "params/param_json.h"
 #include "terrain/contour_io.h"
 #include "terrain/generate.h"
@@ -209,16 +210,6 @@ std::string TerrainParseContour(const std::string& text) {
   out["points"] = pts;
   if (file->has_elevation) out["elevation"] = file->elevation;
   return Dump(out);
-}
-
-// The page's budget (docs/budgets.md): what a laptop tab's WASM heap holds, by estimate.
-static Budget PageBudget() {  // internal: each study binding has its own
-  Budget budget;
-  budget.memory_bytes = uint64_t{1} << 30;
-  budget.seconds = 60;
-  budget.memory_limit = "page memory budget";
-  budget.seconds_limit = "page time budget";
-  return budget;
 }
 
 class TerrainLab {

@@ -48,6 +48,7 @@
 #include <vector>
 
 #include "buffers.h"
+#include "page_budget.h"
 #include "params/param_json.h"
 #include "params/param_table.h"
 #include "params/param_text.h"
@@ -98,16 +99,6 @@ class TreeSession {
   // The most internodes the page grows and draws: their mesh (about 150 MB of buffers) is built,
   // copied out of the heap and uploaded to the GPU without the page stalling for seconds.
   static constexpr long kPageInternodes = 400000;
-  // 1 GB of heap and 60 estimated seconds for a grow and its mesh.
-  static Budget PageBudget() {
-    Budget budget;
-    budget.memory_bytes = uint64_t{1} << 30;
-    budget.seconds = 60;
-    budget.memory_limit = "page memory budget";
-    budget.seconds_limit = "page time budget";
-    return budget;
-  }
-
   std::string error() const { return error_; }
   int years() const { return state_.years; }
   int year() const { return grower_ ? grower_->year() : 0; }
