@@ -57,4 +57,20 @@ export class ProgressiveLoop {
   attach(gl) {
     this.frames.attach(gl);
   }
+
+  // Makes the page's renderer (create() also stores it where renderer() finds it), initialises
+  // it, joins it to this loop, the orbit camera and the canvas (a resize draws again; a lost
+  // context calls onLost), and draws the first frame. Throws what create or init throw.
+  async start(create, { canvas, camera, onLost }) {
+    const r = create();
+    await r.init();
+    this.attach(r.gl);
+    camera.attach(canvas, () => this.moved());
+    new ResizeObserver(() => this.request()).observe(canvas);
+    canvas.addEventListener('webglcontextlost', (e) => {
+      e.preventDefault();
+      onLost();
+    });
+    this.request();
+  }
 }

@@ -90,7 +90,6 @@ const loop = new ProgressiveLoop({
   },
 });
 const requestFrame = () => loop.request();
-const cameraMoved = () => loop.moved();
 
 const scrubber = new StepScrubber({ range: ui.step, text: ui.stepText, play: ui.play }, (k) => {
   renderer?.setStep(k);
@@ -100,16 +99,10 @@ const scrubber = new StepScrubber({ range: ui.step, text: ui.stepText, play: ui.
 
 async function startRenderer() {
   try {
-    renderer = new IvyRenderer(ui.canvas);
-    await renderer.init();
-    loop.attach(renderer.gl);
-    camera.attach(ui.canvas, cameraMoved);
-    new ResizeObserver(requestFrame).observe(ui.canvas);
-    ui.canvas.addEventListener('webglcontextlost', (e) => {
-      e.preventDefault();
-      notices.set('webgl', 'The WebGL2 context was lost; reload the page to draw again.');
+    await loop.start(() => (renderer = new IvyRenderer(ui.canvas)), {
+      canvas: ui.canvas, camera,
+      onLost: () => notices.set('webgl', 'The WebGL2 context was lost; reload the page to draw again.'),
     });
-    requestFrame();
   } catch (e) {
     renderer = null;
     setHooks({ drawing: 'off' });

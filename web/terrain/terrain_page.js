@@ -83,7 +83,6 @@ const loop = new ProgressiveLoop({
   },
 });
 const requestFrame = () => loop.request();
-const cameraMoved = () => loop.moved();
 
 // The level scrubber and Play: the mountain contour by contour, from the seed (or the lowest
 // `down` contour) to the top; nothing regrows. Level k shows the contours up to k and the surface
@@ -103,16 +102,10 @@ const scrubber = new StepScrubber({ range: ui.level, text: ui.levelText, play: u
 
 async function startRenderer() {
   try {
-    renderer = new TerrainRenderer(ui.canvas);
-    await renderer.init();
-    loop.attach(renderer.gl);
-    camera.attach(ui.canvas, cameraMoved);
-    new ResizeObserver(requestFrame).observe(ui.canvas);
-    ui.canvas.addEventListener('webglcontextlost', (e) => {
-      e.preventDefault();
-      notices.set('webgl', 'The WebGL2 context was lost; reload the page to draw again.');
+    await loop.start(() => (renderer = new TerrainRenderer(ui.canvas)), {
+      canvas: ui.canvas, camera,
+      onLost: () => notices.set('webgl', 'The WebGL2 context was lost; reload the page to draw again.'),
     });
-    requestFrame();
   } catch (e) {
     renderer = null;
     setHooks({ drawing: 'off' });
