@@ -12,6 +12,7 @@ import { OrbitCamera } from '../gl/orbit_camera.js';
 import { ProgressiveLoop } from '../gl/progressive_loop.js';
 import { dracoPrimitiveCount, importMesh, isGlb, parseGlb } from '../mesh/mesh_import.js';
 import { FileDrop, extensionOf } from '../shell/file_drop.js';
+import { FieldErrors } from '../shell/field_errors.js';
 import { HashHistory } from '../shell/hash_history.js';
 import { ParamPanel } from '../shell/param_panel.js';
 import { StepScrubber } from '../shell/step_scrubber.js';
@@ -203,36 +204,10 @@ const BASIC_FIELDS = {
   seed: 'seed-error', steps: 'steps-error', at: 'at-error', seed_points: 'at-error', tree: 'tree-error', tree_years: 'tree-error',
 };
 
-function fieldErrorElement(key) {
-  if (BASIC_FIELDS[key]) return $(BASIC_FIELDS[key]);
-  const input = document.getElementById(`param-${key}`);
-  const row = input?.closest('.field');
-  if (!row) return null;
-  let line = row.querySelector('.field-error');
-  if (!line) {
-    line = document.createElement('p');
-    line.className = 'field-error';
-    line.setAttribute('role', 'alert');
-    line.hidden = true;
-    row.append(line);
-  }
-  return line;
-}
-
+const fieldErrors = new FieldErrors(BASIC_FIELDS, () => panel);
 // Shows `message` (a core error line "key: ...") beside its field, clearing every other one.
 function showFieldError(message) {
-  for (const line of document.querySelectorAll('.field-error')) {
-    line.hidden = true;
-    line.textContent = '';
-  }
-  panel?.markError(message || '');
-  if (!message) return;
-  const key = /^([A-Za-z_][A-Za-z_0-9]*):/.exec(message)?.[1];
-  const line = key ? fieldErrorElement(key) : null;
-  if (!line) return;
-  line.textContent = message;
-  line.hidden = false;
-  setHooks({ fieldError: key });
+  fieldErrors.show(message);
 }
 
 // ---------------------------------------------------------------- worker replies
