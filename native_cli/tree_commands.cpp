@@ -35,6 +35,7 @@ struct GrowOptions {
   SvgOptions svg;
   long max_triangles = -1;  // --max-triangles (render/tree_lod); -1: the full mesh
   bool lod = false;         // --lod: <name>_LOD0.._LOD2 sibling nodes
+  std::string lod_layout;   // --lod-layout siblings|msft (with --lod)
 };
 
 // SVG-only drawing options of 'tree grow' (used by scripts/figures).
@@ -79,9 +80,18 @@ int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
     throw BadInput{"--out: '" + Echo(o.out_path) + "' must end in .glb, .json or .svg"};
   }
   CheckSvgOptions(o.svg, cmd, ext);
-  for (const char* name : {"--max-triangles", "--lod"}) {
+  for (const char* name : {"--max-triangles", "--lod", "--lod-layout"}) {
     if (cmd.count(name) && ext != ".glb") {
       throw BadInput{std::string(name) + ": only applies with --out FILE.glb"};
+    }
+  }
+  LodLayout layout = LodLayout::kSiblings;
+  if (cmd.count("--lod-layout")) {
+    if (!o.lod) throw BadInput{"--lod-layout: only applies with --lod"};
+    if (o.lod_layout == "msft") {
+      layout = LodLayout::kMsftLod;
+    } else if (o.lod_layout != "siblings") {
+      throw BadInput{"--lod-layout: '" + Echo(o.lod_layout) + "' must be siblings or msft"};
     }
   }
   TreeState state = ResolveTreeState(o.state, cmd);
@@ -124,7 +134,7 @@ int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
           if (!level.ok()) throw BadInput{level.status().Line()};
           levels.push_back(std::move(level).value());
         }
-        Check(WriteLodGlb(levels, &glb));
+        Check(WriteLodGlb(levels, &glb, "tree", layout));
       } else {
         std::string error = WriteTreeGlb(BuildTreeMesh(tree), &glb).Line();
         if (!error.empty()) throw BadInput{"--out: " + error};
@@ -196,6 +206,10 @@ void AddTreeCommands(CLI::App& app, CommandList& commands) {
   grow->add_flag("--lod", grow_options->lod,
                  ".glb with nodes tree_LOD0, tree_LOD1 (<= 25 % of LOD0's triangles) and "
                  "tree_LOD2 (<= 5 %)");
+  grow->add_option(
+      "--lod-layout", grow_options->lod_layout,
+      "With --lod: siblings (three scene nodes, the default) or msft (LOD0 in the "
+      "scene with the MSFT_lod extension naming LOD1 and LOD2: Babylon.js, UnityGLTF)");
   commands.push_back({grow, [grow, grow_options](std::ostream& out) {
                         return RunGrow(*grow_options, *grow, out);
                       }});

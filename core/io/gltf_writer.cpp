@@ -254,6 +254,10 @@ Status CheckDocument(const Document& doc) {
       }
       parent[static_cast<std::size_t>(c)] = static_cast<int>(i);
     }
+    for (int l : node.lod_ids) {
+      NIWA_RETURN_IF_ERROR(CheckNodeIndex(l, doc, field + " lod_ids"));
+      if (l == static_cast<int>(i)) return Status::Error(field, "lists itself as a lower LOD");
+    }
     const std::size_t instances = node.instance_count();
     if (!node.instance_translations.empty() || !node.instance_rotations.empty() ||
         !node.instance_scales.empty()) {
@@ -579,6 +583,7 @@ class ModelBuilder {
       out.extras = tinygltf::Value(tinygltf::Value::Object());
     }
     if (node.instance_count() > 0) AddInstances(node, &out);
+    if (!node.lod_ids.empty()) AddLod(node, &out);
     model_->nodes.push_back(std::move(out));
     return Status::Ok();
   }
@@ -597,6 +602,20 @@ class ModelBuilder {
     add("SCALE", node.instance_scales, TINYGLTF_TYPE_VEC3);
     tinygltf::Value::Object extension;
     extension["attributes"] = tinygltf::Value(std::move(attributes));
+    out->extensions[kExtension] = tinygltf::Value(std::move(extension));
+    if (std::find(model_->extensionsUsed.begin(), model_->extensionsUsed.end(), kExtension) ==
+        model_->extensionsUsed.end()) {
+      model_->extensionsUsed.push_back(kExtension);
+    }
+  }
+
+  // MSFT_lod on a node: {"ids": [lower levels' nodes, highest first]}.
+  void AddLod(const Node& node, tinygltf::Node* out) {
+    const char* kExtension = "MSFT_lod";
+    tinygltf::Value::Array ids;
+    for (int l : node.lod_ids) ids.push_back(tinygltf::Value(l));
+    tinygltf::Value::Object extension;
+    extension["ids"] = tinygltf::Value(std::move(ids));
     out->extensions[kExtension] = tinygltf::Value(std::move(extension));
     if (std::find(model_->extensionsUsed.begin(), model_->extensionsUsed.end(), kExtension) ==
         model_->extensionsUsed.end()) {

@@ -114,6 +114,10 @@ struct Node {
   std::vector<float> instance_translations;
   std::vector<float> instance_rotations;
   std::vector<float> instance_scales;
+  // MSFT_lod (a vendor extension read by Babylon.js and UnityGLTF): the nodes of this node's lower
+  // levels of detail, highest first; they stay out of the scene, so a client without the
+  // extension shows this node alone. Adds the extension to extensionsUsed (never Required).
+  std::vector<int> lod_ids;
   std::size_t instance_count() const {
     return !instance_translations.empty() ? instance_translations.size() / 3
            : !instance_rotations.empty()  ? instance_rotations.size() / 4

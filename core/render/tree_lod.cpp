@@ -417,8 +417,8 @@ Result<std::vector<LodMesh>> BuildLodLevels(const Tree& tree, long max_triangles
   return levels;
 }
 
-Result<gltf::Document> LodGltfDocument(const std::vector<LodMesh>& levels,
-                                       const std::string& name) {
+Result<gltf::Document> LodGltfDocument(const std::vector<LodMesh>& levels, const std::string& name,
+                                       LodLayout layout) {
   if (levels.empty()) return Status::Error("lod", "no levels");
   gltf::Document doc;
   doc.scene_name = name;
@@ -516,16 +516,30 @@ Result<gltf::Document> LodGltfDocument(const std::vector<LodMesh>& levels,
       node.mesh = static_cast<int>(doc.meshes.size()) - 1;
     }
     doc.nodes.push_back(std::move(node));
-    doc.scene_nodes.push_back(static_cast<int>(doc.nodes.size()) - 1);
+    if (layout == LodLayout::kSiblings || l == 0)
+      doc.scene_nodes.push_back(static_cast<int>(doc.nodes.size()) - 1);
+  }
+  if (layout == LodLayout::kMsftLod && levels.size() > 1) {
+    // Level k (k >= 1) from the screen coverage equal to its share of LOD0's triangles.
+    const double base = static_cast<double>(std::max(1L, levels[0].choice.triangles));
+    std::string coverage;
+    double last = 1;
+    for (std::size_t l = 1; l < levels.size(); ++l) {
+      doc.nodes[0].lod_ids.push_back(static_cast<int>(l));
+      last = static_cast<double>(levels[l].choice.triangles) / base;
+      coverage += FormatNumber(std::round(last * 1e4) / 1e4) + ", ";
+    }
+    coverage += FormatNumber(std::round(last * 1e3) / 1e4);  // nothing drawn below
+    doc.nodes[0].extras_json = "{\"MSFT_screencoverage\": [" + coverage + "]}";
   }
   return doc;
 }
 
 Status WriteLodGlb(const std::vector<LodMesh>& levels, std::vector<unsigned char>* bytes,
-                   const std::string& name) {
+                   const std::string& name, LodLayout layout) {
   if (bytes == nullptr) return Status::Error("glb", "no output buffer");
   bytes->clear();
-  Result<gltf::Document> doc = LodGltfDocument(levels, name);
+  Result<gltf::Document> doc = LodGltfDocument(levels, name, layout);
   if (!doc.ok()) return doc.status();
   Result<std::vector<unsigned char>> glb = gltf::WriteGlb(*doc);
   if (!glb.ok()) return glb.status();

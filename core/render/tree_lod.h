@@ -71,14 +71,22 @@ Result<std::vector<LodMesh>> BuildLodLevels(const Tree& tree, long max_triangles
                                             const LodOptions& options = {},
                                             const std::string& field = "--max-triangles");
 
-// A .glb document: one top-level node per level, named `name` when there is one level, else
-// `name`_LOD0, `name`_LOD1, ... (the suffix Unity's and Godot's importers group as LODs). Parts:
-// bark, leaves, flowers (tree/tree_gltf materials), "cards" (atlas, alpha mask, double-sided),
-// "twigs" (LINES, bark colour).
+// How the levels sit in the .glb: kSiblings, every level a top-level node of the scene (the
+// names importers group); kMsftLod, only LOD0 in the scene with the MSFT_lod extension listing
+// the others (docs/lod-export.md), and extras.MSFT_screencoverage: level k from the coverage
+// equal to its triangle share of LOD0 (25 %, 5 %: the same triangles per covered pixel), nothing
+// below a tenth of the last.
+enum class LodLayout : int { kSiblings = 0, kMsftLod = 1 };
+
+// A .glb document: one node per level, named `name` when there is one level, else `name`_LOD0,
+// `name`_LOD1, ... (the suffix Unity's and Godot's importers group as LODs). Parts: bark, leaves,
+// flowers (tree/tree_gltf materials), "cards" (atlas, alpha mask, double-sided), "twigs" (LINES,
+// bark colour).
 Result<gltf::Document> LodGltfDocument(const std::vector<LodMesh>& levels,
-                                       const std::string& name = "tree");
+                                       const std::string& name = "tree",
+                                       LodLayout layout = LodLayout::kSiblings);
 
 Status WriteLodGlb(const std::vector<LodMesh>& levels, std::vector<unsigned char>* bytes,
-                   const std::string& name = "tree");
+                   const std::string& name = "tree", LodLayout layout = LodLayout::kSiblings);
 
 }  // namespace niwa

@@ -1,6 +1,7 @@
 // Issue 17 item 4 on the CLI: `niwa tree grow --max-triangles N --out x.glb` stays within N
 // triangles (counted from the .glb's own accessors, parsed here), `--lod` writes sibling nodes
-// tree_LOD0..2 with LOD1 <= 25 % and LOD2 <= 5 % of LOD0, both validate with Khronos'
+// tree_LOD0..2 with LOD1 <= 25 % and LOD2 <= 5 % of LOD0 (or, with --lod-layout msft, LOD0 naming
+// the others through MSFT_lod), all validate with Khronos'
 // gltf-validator (0 errors), the WASM CLI (when built) writes the same bytes, and bad input is one
 // line naming the flag, exit 2, no file. Run: NIWA_NATIVE=... NIWA_ROOT=... node tests/cli/lod_export.test.mjs
 import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
@@ -73,6 +74,31 @@ try {
   check(lodReport.issues.numErrors === 0, '--lod: validator 0 errors',
     lodReport.issues.messages.filter((m) => m.severity === 0).map((m) => m.message).slice(0, 3).join('; '));
 
+  // --lod-layout msft: LOD0 alone in the scene, MSFT_lod naming the other two (the same meshes).
+  const msftOut = join(dir, 'lod-msft.glb');
+  run(native, [...tree, '--max-triangles', '20000', '--lod', '--lod-layout', 'msft', '--out', msftOut]);
+  const msftBytes = readFileSync(msftOut);
+  const msft = parseGlb(msftBytes);
+  const root0 = msft.gltf.nodes[msft.gltf.scenes[0].nodes[0]];
+  const ids = root0.extensions?.MSFT_lod?.ids ?? [];
+  const msftCounts = [root0, ...ids.map((i) => msft.gltf.nodes[i])].map((n) => msft.triangles(msft.gltf.meshes[n.mesh]));
+  check(msft.gltf.scenes[0].nodes.length === 1 && root0.name === 'tree_LOD0' && JSON.stringify(ids) === '[1,2]' &&
+    msft.gltf.extensionsUsed?.includes('MSFT_lod') && !msft.gltf.extensionsRequired,
+    `--lod-layout msft: scene holds tree_LOD0 only, MSFT_lod ids ${JSON.stringify(ids)}, used not required`);
+  check(JSON.stringify(msftCounts) === JSON.stringify(counts),
+    `--lod-layout msft: the same levels as the siblings layout (${msftCounts.join(', ')} triangles)`);
+  const cover = root0.extras?.MSFT_screencoverage ?? [];
+  check(cover.length === 3 && cover[0] > cover[1] && cover[1] > cover[2] && cover[2] > 0 &&
+    Math.abs(cover[0] - counts[1] / counts[0]) < 1e-4,
+    `--lod-layout msft: MSFT_screencoverage ${JSON.stringify(cover)} (level n from its triangle share)`);
+  const msftReport = await validator.validateBytes(new Uint8Array(msftBytes), { maxIssues: 50 });
+  // Beyond the siblings layout's warnings: only infos that the validator does not know MSFT_lod
+  // and that the lower levels are not in the scene (which is MSFT_lod's point).
+  const infos = msftReport.issues.messages.filter((m) => m.severity === 2).map((m) => `${m.code} ${m.pointer}`).sort();
+  check(msftReport.issues.numErrors === 0 && msftReport.issues.numWarnings === lodReport.issues.numWarnings &&
+    JSON.stringify(infos) === JSON.stringify(['UNSUPPORTED_EXTENSION /extensionsUsed/0', 'UNUSED_OBJECT /nodes/1', 'UNUSED_OBJECT /nodes/2']),
+    `--lod-layout msft: validator 0 errors, ${msftReport.issues.numWarnings} warnings as the siblings layout, infos ${infos.join(', ')}`);
+
   const lodFull = join(dir, 'lod-full.glb');
   run(native, [...tree, '--lod', '--out', lodFull]);
   const lf = parseGlb(readFileSync(lodFull));
@@ -85,6 +111,8 @@ try {
     [['--max-triangles', '2x', '--out', join(dir, 'b.glb')], '--max-triangles'],
     [['--max-triangles', '100', '--out', join(dir, 'c.json')], '--max-triangles: only applies with --out FILE.glb'],
     [['--lod', '--out', join(dir, 'd.svg')], '--lod: only applies with --out FILE.glb'],
+    [['--lod-layout', 'msft', '--out', join(dir, 'e.glb')], '--lod-layout: only applies with --lod'],
+    [['--lod', '--lod-layout', 'unity', '--out', join(dir, 'f.glb')], "--lod-layout: 'unity' must be siblings or msft"],
   ];
   for (const [args, wanted] of bad) {
     const r = spawn(native, [...tree, ...args]);
@@ -97,6 +125,9 @@ try {
     const wasmOut = join(dir, 'wasm-lod.glb');
     run(wasm, [...tree, '--max-triangles', '20000', '--lod', '--out', wasmOut]);
     check(Buffer.compare(readFileSync(wasmOut), lodBytes) === 0, 'WASM CLI: --lod .glb byte-identical to native');
+    const wasmMsft = join(dir, 'wasm-lod-msft.glb');
+    run(wasm, [...tree, '--max-triangles', '20000', '--lod', '--lod-layout', 'msft', '--out', wasmMsft]);
+    check(Buffer.compare(readFileSync(wasmMsft), msftBytes) === 0, 'WASM CLI: --lod-layout msft .glb byte-identical to native');
   } else {
     console.log(`SKIP WASM CLI not built at ${wasm}`);
   }

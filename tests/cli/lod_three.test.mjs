@@ -107,6 +107,17 @@ try {
     check(JSON.stringify(shown) === JSON.stringify(expected),
       `${preset}: near, middle, far camera show LOD0, LOD1, LOD2 only (${JSON.stringify(shown)})`);
   }
+  // --lod-layout msft, read by a client without MSFT_lod (three.js' own GLTFLoader): LOD0 alone.
+  const siblings = join(dir, 'siblings.glb'), msft = join(dir, 'msft.glb');
+  const base = ['tree', 'grow', '--preset', 'sakura', '--years', '15', '--max-triangles', '20000', '--lod'];
+  run(native, [...base, '--out', siblings]);
+  run(native, [...base, '--lod-layout', 'msft', '--out', msft]);
+  const all = await load(readFileSync(siblings));
+  const lod0 = all.scene.children.find((c) => c.name === 'tree_LOD0');
+  const only = await load(readFileSync(msft));
+  const names = only.scene.children.map((c) => c.name);
+  check(JSON.stringify(names) === '["tree_LOD0"]' && triangles(only.scene) === triangles(lod0),
+    `msft layout in three.js (no MSFT_lod plugin): the scene shows LOD0 only (${names.join(', ')}; ${triangles(only.scene)} triangles)`);
 } finally {
   rmSync(dir, { recursive: true, force: true });
 }

@@ -468,6 +468,12 @@ TEST(GltfWriter, BadDocumentsAreOneLineErrors) {
   bad.scene_nodes = {5};
   ExpectError(bad, "scene nodes: node 5 out of range");
   bad = doc;
+  bad.nodes[0].lod_ids = {3};
+  ExpectError(bad, "lod_ids: node 3 out of range");
+  bad = doc;
+  bad.nodes[0].lod_ids = {0};
+  ExpectError(bad, "lists itself as a lower LOD");
+  bad = doc;
   bad.nodes[0].matrix = {1, 0, 0};
   ExpectError(bad, "matrix must have 16 values");
   bad = doc;

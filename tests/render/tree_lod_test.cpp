@@ -3,8 +3,8 @@
 #include "render/tree_lod.h"
 
 #include <gtest/gtest.h>
-#include <limits>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -154,6 +154,34 @@ TEST(TreeLod, LevelsAreSiblingNodesWithinTheirShares) {
     EXPECT_EQ(node["name"], "tree_LOD" + std::to_string(l));
     EXPECT_EQ(GlbTriangles(glb, node["mesh"].get<std::size_t>()), (*levels)[l].choice.triangles);
   }
+}
+
+TEST(TreeLod, MsftLodLayoutPutsLod0InTheSceneAndNamesTheOthers) {
+  Result<std::vector<LodMesh>> levels = BuildLodLevels(Sakura15(), 20000);
+  ASSERT_TRUE(levels.ok()) << levels.status().Line();
+  std::vector<unsigned char> bytes;
+  ASSERT_TRUE(WriteLodGlb(*levels, &bytes, "tree", LodLayout::kMsftLod).ok());
+  testing::Glb glb = testing::ParseGlb(bytes);
+  ASSERT_EQ(glb.gltf["scenes"][0]["nodes"], nlohmann::json::array({0}));
+  const auto& lod0 = glb.gltf["nodes"][0];
+  EXPECT_EQ(lod0["extensions"]["MSFT_lod"]["ids"], nlohmann::json::array({1, 2}));
+  EXPECT_EQ(glb.gltf["extensionsUsed"], nlohmann::json::array({"MSFT_lod"}));
+  EXPECT_FALSE(glb.gltf.contains("extensionsRequired"));  // a client without it shows LOD0
+  const auto& coverage = lod0["extras"]["MSFT_screencoverage"];
+  ASSERT_EQ(coverage.size(), 3u);
+  const double lod0_triangles = static_cast<double>((*levels)[0].choice.triangles);
+  for (std::size_t l = 0; l < 3; ++l) {
+    const auto& node = glb.gltf["nodes"][l];
+    EXPECT_EQ(node["name"], "tree_LOD" + std::to_string(l));
+    EXPECT_EQ(GlbTriangles(glb, node["mesh"].get<std::size_t>()), (*levels)[l].choice.triangles);
+    if (l > 0) {  // level l starts at the coverage of its triangle share
+      EXPECT_NEAR(coverage[l - 1].get<double>(),
+                  static_cast<double>((*levels)[l].choice.triangles) / lod0_triangles, 1e-4);
+    }
+  }
+  EXPECT_LT(coverage[2].get<double>(), coverage[1].get<double>());
+  EXPECT_LT(coverage[1].get<double>(), coverage[0].get<double>());
+  EXPECT_LE(coverage[0].get<double>(), 0.25);
 }
 
 TEST(TreeLod, SameTreeSameBytes) {
