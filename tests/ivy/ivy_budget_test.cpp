@@ -167,6 +167,36 @@ TEST(IvyBudget, MemoryBudgetStopsAtAStepWithTheLineAndTheSameBuds) {
   }
 }
 
+// The tangent fan's candidates are in the worst case of a search and in the count the time
+// estimate uses: every attempt evaluates n_c candidates, every fan all of its directions.
+TEST(IvyBudget, TheTangentFanIsInTheSearchWorstCaseAndTheCount) {
+  const Budget budget;
+  IvyParams p = *IvyPreset("paper");
+  const double walk = p.GetInt(IvyParam::kCandidates) * (p.GetInt(IvyParam::kRetries) + 1);
+  EXPECT_EQ(IvyLimits(p, budget, EstimateIvySupport({}), true).candidates_per_search,
+            walk + kTangentFanCandidates);
+  EXPECT_EQ(IvyLimits(p, budget, EstimateIvySupport({}), false).candidates_per_search, 0);
+  IvyParams off = p;
+  ASSERT_TRUE(off.Set(IvyParam::kTangentRetry, 0).ok());
+  EXPECT_EQ(IvyLimits(off, budget, EstimateIvySupport({}), true).candidates_per_search, walk);
+
+  // cubes4, side, seed 5: the main apex reaches the fan (it died at step 27 without it).
+  const IvyScene scene = *MakeIvyScene("cubes4");
+  const geom::Bvh bvh = geom::Bvh::Build(scene.mesh);
+  for (const IvyParams* params : {&p, &off}) {
+    GrowLog log;
+    ASSERT_TRUE(
+        Grow({&scene.mesh, &bvh, Accel::kBvh}, {scene.seeds[0].pos}, *params, 50, 5, &log).ok());
+    EXPECT_EQ(log.candidates, log.attempts * p.GetInt(IvyParam::kCandidates) +
+                                  log.tangent_retries * kTangentFanCandidates);
+    if (params == &p) {
+      EXPECT_GT(log.tangent_retries, 0);
+    } else {
+      EXPECT_EQ(log.tangent_retries, 0);
+    }
+  }
+}
+
 TEST(IvyBudget, TimeBudgetStopsAtAStepWithTheLine) {
   IvyGrowLimits limits = Unlimited(true);
   limits.max_seconds = 0.05;  // work units: the same step in both builds
