@@ -236,7 +236,54 @@ class Grower {
     });
   }
 
-  // E6-E10: a new node for bud `from` with preferred direction v0; false when every attempt failed.
+  // The search's parameters, read once per search.
+  struct SearchParams {
+    double g_min, max_bend, r_avoid, wd, wa, wg;
+  };
+  SearchParams ReadSearchParams() const {
+    return {p_.Get(IvyParam::kGMin),  p_.Get(IvyParam::kMaxBend) * kDeg, p_.Get(IvyParam::kAvoid),
+            p_.Get(IvyParam::kWDist), p_.Get(IvyParam::kWAngle),         p_.Get(IvyParam::kWGrav)};
+  }
+
+  // E8-E9 on the candidate q = p + L·u of bud `from`: the rejection reason (counted in the log),
+  // or -1 with the candidate's closest hit and its score (E9: near the face, small angle to the
+  // preferred direction v0, following gravitropism; lower is better).
+  int Evaluate(int from, const glm::dvec3& p, const glm::dvec3& u, const glm::dvec3& v0,
+               const SearchParams& sp, std::array<int, kRejectCount>* rejects, Placement* place,
+               double* score) {
+    ++log_->candidates;
+    const glm::dvec3 q = p + L_ * u;
+    int reason = -1;
+    geom::ClosestHit hit;
+    if (glm::dot(u, up_) < sp.g_min) {
+      reason = kGravitropism;
+    } else if (sp.max_bend < det::kPi - 1e-12 && AngleBetween(u, v0) > sp.max_bend) {
+      reason = kBend;
+    } else {
+      hit = Closest(q, d_);
+      if (!hit.found) {
+        reason = kFar;
+      } else if (static_cast<double>(hit.distance) < eps_) {
+        reason = kNear;
+      } else if (SegmentHits(p, q)) {
+        reason = kCollision;
+      } else if (sp.r_avoid > 0 && Crowded(from, p, q, sp.r_avoid)) {
+        reason = kCrowding;
+      }
+    }
+    if (reason >= 0) {
+      ++(*rejects)[static_cast<std::size_t>(reason)];
+      ++log_->rejected[static_cast<std::size_t>(reason)];
+      return reason;
+    }
+    *score = sp.wd * static_cast<double>(hit.distance) / d_ +
+             sp.wa * AngleBetween(u, v0) / det::kPi + sp.wg * (1.0 - glm::dot(u, up_)) / 2.0;
+    *place = {q, u, hit};
+    return -1;
+  }
+
+  // E6-E10: a new node for bud `from` with preferred direction v0; false when every attempt failed
+  // (and, with tangent_retry, the tangent fan too).
   bool Search(int from, const glm::dvec3& v0, int step, Placement* out) {
     const glm::dvec3 p = m_.buds[static_cast<std::size_t>(from)].pos;
     if (free()) {
@@ -247,11 +294,7 @@ class Grower {
     const int n_c = p_.GetInt(IvyParam::kCandidates);
     const int r_max = p_.GetInt(IvyParam::kRetries);
     const double phi = p_.Get(IvyParam::kPhi), dphi = p_.Get(IvyParam::kPhiStep);
-    const double g_min = p_.Get(IvyParam::kGMin);
-    const double max_bend = p_.Get(IvyParam::kMaxBend) * kDeg;
-    const double r_avoid = p_.Get(IvyParam::kAvoid);
-    const double wd = p_.Get(IvyParam::kWDist), wa = p_.Get(IvyParam::kWAngle),
-                 wg = p_.Get(IvyParam::kWGrav);
+    const SearchParams sp = ReadSearchParams();
     glm::dvec3 v = v0;
     for (int r = 0; r <= r_max; ++r) {
       ++log_->attempts;
@@ -267,45 +310,19 @@ class Grower {
       double best = 0;
       Placement best_place;
       for (int k = 0; k < n_c; ++k) {
-        ++log_->candidates;
         const double xi1 = rng.Uniform(), xi2 = rng.Uniform();
         const double cos_t = 1.0 - xi1 * (1.0 - cos_phi);
         const double sin_t = std::sqrt(std::max(0.0, 1.0 - cos_t * cos_t));
         double s_psi, c_psi;
         det::SinCos(2.0 * det::kPi * xi2, &s_psi, &c_psi);
         const glm::dvec3 u = Unit(cos_t * v + sin_t * (c_psi * e1 + s_psi * e2));
-        const glm::dvec3 q = p + L_ * u;
-        int reason = -1;
-        geom::ClosestHit hit;
-        if (glm::dot(u, up_) < g_min) {
-          reason = kGravitropism;
-        } else if (max_bend < det::kPi - 1e-12 && AngleBetween(u, v0) > max_bend) {
-          reason = kBend;
-        } else {
-          hit = Closest(q, d_);
-          if (!hit.found) {
-            reason = kFar;
-          } else if (static_cast<double>(hit.distance) < eps_) {
-            reason = kNear;
-          } else if (SegmentHits(p, q)) {
-            reason = kCollision;
-          } else if (r_avoid > 0 && Crowded(from, p, q, r_avoid)) {
-            reason = kCrowding;
-          }
-        }
-        if (reason >= 0) {
-          ++rejects[static_cast<std::size_t>(reason)];
-          ++log_->rejected[static_cast<std::size_t>(reason)];
-          continue;
-        }
-        // E9: near the face, small angle to the preferred direction, following gravitropism.
-        const double score = wd * static_cast<double>(hit.distance) / d_ +
-                             wa * AngleBetween(u, v0) / det::kPi +
-                             wg * (1.0 - glm::dot(u, up_)) / 2.0;
+        Placement place;
+        double score = 0;
+        if (Evaluate(from, p, u, v0, sp, &rejects, &place, &score) >= 0) continue;
         if (!found || score < best) {
           found = true;
           best = score;
-          best_place = {q, u, hit};
+          best_place = place;
         }
       }
       if (found) {
@@ -343,8 +360,68 @@ class Grower {
       }
       v = nv;
     }
+    if (p_.GetBool(IvyParam::kTangentRetry) && TangentRetry(from, p, v0, sp, out)) return true;
     ++log_->failures;
     return false;
+  }
+
+  // The tangent fan (docs/ivy-model.md "Convex edges"): after E10's last retry, fixed directions
+  // (no random draw, so a search that never gets here is unchanged) around p's closest face: in
+  // its tangent plane every 22.5° from ĝ's projection (v0's on a face normal to ĝ), so that ±90°
+  // runs along a horizontal edge, each at the tilts 0°, 10°, 20° toward the face; then the
+  // projection of ĝ turned about the in-plane horizontal, an edge's line, toward the face by 30° to
+  // 90° (at a convex edge: over it, onto the next face). Each is tested and scored as a walk's
+  // candidate (E8-E9); the best valid one is taken (ties: the first in this order).
+  static constexpr int kFanPsi = 16;
+  static constexpr std::array<double, 3> kFanTilt = {0, 10, 20};  // degrees toward the face
+  static constexpr std::array<double, 5> kEdgeTilt = {30, 45, 60, 75, 90};
+  static_assert(kFanPsi * kFanTilt.size() + kEdgeTilt.size() == kTangentFanCandidates);
+  bool TangentRetry(int from, const glm::dvec3& p, const glm::dvec3& v0, const SearchParams& sp,
+                    Placement* out) {
+    ++log_->tangent_retries;
+    const geom::ClosestHit c = Closest(p, std::numeric_limits<double>::infinity());
+    if (!c.found) return false;
+    glm::dvec3 n = TriangleNormal(s_.attach_mesh ? *s_.attach_mesh : *s_.mesh, c.triangle);
+    if (glm::dot(p - glm::dvec3(c.point), n) < 0) n = -n;  // the face's side p is on
+    glm::dvec3 t1 = up_ - glm::dot(up_, n) * n;
+    if (Length(t1) < 1e-6) t1 = v0 - glm::dot(v0, n) * n;
+    if (Length(t1) < 1e-6) {
+      const glm::dvec3 x = std::fabs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+      t1 = x - glm::dot(x, n) * n;
+    }
+    t1 = Unit(t1);
+    const glm::dvec3 t2 = glm::cross(n, t1);
+    std::array<int, kRejectCount> rejects{};
+    bool found = false;
+    double best = 0;
+    Placement best_place;
+    auto consider = [&](const glm::dvec3& w, double tilt_deg) {
+      double s_tilt, c_tilt;
+      det::SinCos(tilt_deg * kDeg, &s_tilt, &c_tilt);
+      const glm::dvec3 u = Unit(c_tilt * w - s_tilt * n);
+      Placement place;
+      double score = 0;
+      if (Evaluate(from, p, u, v0, sp, &rejects, &place, &score) >= 0) return;
+      if (!found || score < best) {
+        found = true;
+        best = score;
+        best_place = place;
+      }
+    };
+    for (double tilt_deg : kFanTilt) {
+      for (int k = 0; k < kFanPsi; ++k) {
+        // ψ = 0, +22.5°, -22.5°, +45°, ..., 180°
+        const int j = (k + 1) / 2 * (k % 2 == 1 ? 1 : -1);
+        double s_psi, c_psi;
+        det::SinCos(j * (2.0 * det::kPi / kFanPsi), &s_psi, &c_psi);
+        consider(c_psi * t1 + s_psi * t2, tilt_deg);
+      }
+    }
+    for (double tilt_deg : kEdgeTilt) consider(t1, tilt_deg);
+    if (!found) return false;
+    ++log_->tangent_saves;
+    *out = best_place;
+    return true;
   }
 
   int AddBud(const Bud& from, const Placement& pl, int step, BudKind kind, double N, int axis,

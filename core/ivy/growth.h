@@ -1,6 +1,7 @@
 // Ivy growth (§3): the support (a TriMesh with its BVH, or none: the RNG-free "free" replay), the
 // seed placement, and Grow: S steps of rules p0-p3 with the nutrient bookkeeping (E1-E5) and the
-// directed random walk (E6-E10) that places every new internode. Does not: mesh, print or report.
+// directed random walk (E6-E10, then the tangent fan when tangent_retry is on) that places every
+// new internode. Does not: mesh, print or report.
 #pragma once
 
 #include <cstdint>

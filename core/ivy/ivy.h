@@ -70,6 +70,11 @@ struct IvyModel {
 enum Reject : int { kGravitropism, kBend, kFar, kNear, kCollision, kCrowding, kRejectCount };
 const char* RejectName(int reason);
 
+// The candidates of the tangent fan (growth.cpp's TangentRetry, parameter tangent_retry): 16
+// directions around the tangent plane times 3 tilts toward the face, and 5 turns over an edge;
+// ivy_budget counts them.
+constexpr int kTangentFanCandidates = 53;
+
 // What one step did (the nutrient ledger E5 and the rule counts).
 struct StepLog {
   int p0 = 0, p1 = 0, p2 = 0, p3_a = 0, p3_d = 0, released_breaks = 0;
@@ -84,6 +89,9 @@ struct GrowLog {
   int extinct_step = -1;      // first step after which no A and no D is left
   int first_break_step = -1;  // first p1
   int64_t attempts = 0, candidates = 0, retries = 0, failures = 0;
+  // The tangent fan (tangent_retry): searches that reached it after every E10 retry failed, and
+  // those it saved (found a valid position); its candidates are in `candidates` and `rejected`.
+  int64_t tangent_retries = 0, tangent_saves = 0;
   std::array<int64_t, kRejectCount> rejected{};
   geom::QueryStats closest, segment;
   double ms_rules = 0, ms_search = 0;

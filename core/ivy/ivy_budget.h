@@ -17,7 +17,8 @@ namespace niwa::ivy {
 
 // What Grow may use (no limit when max_bytes and max_seconds are negative). Before step s it
 // checks that the worst case after the step stays within both: every alive bud (A or D) makes at
-// most one new bud and internode, and every search evaluates at most n_c · (R_max + 1) candidates.
+// most one new bud and internode, and every search evaluates at most n_c · (R_max + 1) candidates
+// (+ kTangentFanCandidates with tangent_retry).
 //   memory  = base_bytes + bytes_per_bud · (buds + alive)
 //   seconds = seconds_before + seconds_per_bud_step · Σ_steps buds + seconds_per_candidate ·
 //             (candidates so far + alive · n_c · (R_max + 1)) + seconds_per_bud · (buds + alive)
@@ -28,7 +29,7 @@ struct IvyGrowLimits {
   double seconds_per_bud_step = 0, seconds_per_candidate = 0;
   // Work done once per bud after the growth (the --stats measurement: ReserveIvyStats), 0 without.
   double seconds_per_bud = 0;
-  double candidates_per_search = 0;  // n_c · (R_max + 1); 0 without a support
+  double candidates_per_search = 0;  // n_c · (R_max + 1) (+ the fan's); 0 without a support
   std::string memory_limit = "--max-memory", seconds_limit = "--max-seconds";
 };
 

@@ -71,6 +71,10 @@ std::vector<ParamSpec> Rows() {
        "Steps until a leaf reaches full size."},
       {34, "leaf_tilt", "", "deg", 30, -90, 90, false, "look", m,
        "Petiole tilt from the surface normal toward up."},
+      // Appended last (the keys of rows 0-34 keep their ids); docs/ivy-model.md "Convex edges".
+      {35, "tangent_retry", "", "", 1, 0, 1, true, "search", g,
+       "When every retry failed, try a fixed fan of directions in the face's tangent plane and "
+       "tilted over its edge (0: off, the plain E10)."},
   };
 }
 

@@ -55,6 +55,8 @@ enum class IvyParam : int {
   kPetiole,
   kLeafAge,
   kLeafTilt,
+  // appended after the look rows (row ids are URL/JSON-stable): the position search's last resort
+  kTangentRetry,
   kCount
 };
 

@@ -251,6 +251,8 @@ std::string IvyStatsJson(const IvyStats& s, const GrowLog& log, const IvyModel& 
                  {"candidates", log.candidates},
                  {"retries", log.retries},
                  {"failures", log.failures},
+                 {"tangent_retries", log.tangent_retries},
+                 {"tangent_saves", log.tangent_saves},
                  {"rejected", rejected}};
   j["queries"] = {{"closest", log.closest.queries}, {"segment", log.segment.queries}};
   const uint64_t q = log.closest.queries + log.segment.queries;

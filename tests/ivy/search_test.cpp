@@ -162,13 +162,35 @@ TEST(IvyScenes, EveryBuiltInSceneGrowsNearItsSupport) {
   }
 }
 
+// Without the tangent fan (tangent_retry = 0, the plain E10) the apex stops at the wall's free top
+// edge (p3) and releases a dormant bud (E4). With the fan (the default) it runs along the edge
+// instead (a horizontal internode stays within d of the edge; docs/ivy-model.md "Convex edges"),
+// still never above it by more than d; E4 then happens where gravitropism blocks every direction,
+// under the sphere.
 TEST(IvyWall, TheApexStopsAtTheFreeTopEdgeAndReleasesADormantBud) {
-  SceneRun r = GrowScene("wall", "base", IvyParams(), 120, 2);
+  IvyParams plain;
+  ASSERT_TRUE(plain.Set(IvyParam::kTangentRetry, 0).ok());
+  SceneRun r = GrowScene("wall", "base", plain, 120, 2);
   double top = 0;
   for (const Bud& b : r.model.buds) top = std::max(top, b.pos.y);
   EXPECT_LE(top, 1200.0 + 20.0);
   EXPECT_GE(r.stats.p3_A, 1);
   EXPECT_GE(r.stats.released_breaks, 1);
+  EXPECT_EQ(r.log.tangent_retries, 0);
+
+  SceneRun fan = GrowScene("wall", "base", IvyParams(), 120, 2);
+  double fan_top = 0;
+  for (const Bud& b : fan.model.buds) fan_top = std::max(fan_top, b.pos.y);
+  EXPECT_GT(fan_top, 1200.0 - 20.0) << "reached the top edge";
+  EXPECT_LE(fan_top, 1200.0 + 20.0);
+  EXPECT_GT(fan.log.tangent_saves, 0);
+  EXPECT_EQ(fan.stats.frac_nodes_within_d, 1.0);
+  EXPECT_EQ(fan.stats.internode_hits, 0);
+  EXPECT_GE(fan.stats.up_min, 0.0);
+
+  SceneRun sphere = GrowScene("sphere", "", IvyParams(), 120, 1);
+  EXPECT_GE(sphere.stats.p3_A, 1);
+  EXPECT_GE(sphere.stats.released_breaks, 1);
 }
 
 }  // namespace
