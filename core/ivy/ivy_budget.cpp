@@ -51,12 +51,13 @@ struct ExportCost {
 };
 // .json: each bud's fields (about 520 bytes) and internode (80); .lsys: a module a bud; .svg: two
 // views of every internode, leaf and support edge; .glb: 56 vertices of 28 bytes and 54 triangles
-// of 12 bytes a bud (stem, sucker and leaf tubes and fans), the support's 3 vertices and 12 bytes
-// of indices a triangle.
+// of 12 bytes a bud (stem, sucker and leaf tubes and fans), 8 bytes of texture coordinates on each
+// of its 23 leaf vertices, the support's 3 vertices and 12 bytes of indices a triangle, and the
+// leaf texture (a 256² image painted once, its PNG about 30 kB, copied into the document).
 constexpr ExportCost kJson = {520, 80, 0, 8192, 11, 90, "writing the .json"};
 constexpr ExportCost kLsys = {70, 0, 0, 1024, 5, 60, "writing the .lsys"};
 constexpr ExportCost kSvg = {260, 0, 160, 8192, 3, 60, "writing the .svg"};
-constexpr ExportCost kGlb = {56 * 28 + 54 * 12, 0, 84, 65536, 7, 40, "writing the .glb"};
+constexpr ExportCost kGlb = {56 * 28 + 23 * 8 + 54 * 12, 0, 84, 131072, 7, 40, "writing the .glb"};
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/gltf_writer.h"
+#include "ivy/ivy_leaf_texture.h"
 #include "math/det_math.h"
 #include "params/param_json.h"
 
@@ -29,9 +30,12 @@ glm::dvec3 Perpendicular(const glm::dvec3& v) {
 struct Builder {
   geom::TriMesh mesh;
   std::vector<float> birth;
+  bool textured = false;  // every vertex gets the texture coordinate `uv` (leaves)
+  glm::vec2 uv{0, 0};
   uint32_t Vertex(const glm::dvec3& p, const glm::dvec3& n, double step) {
     mesh.positions.push_back(glm::vec3(p));
     mesh.normals.push_back(glm::vec3(n));
+    if (textured) mesh.uvs.push_back(uv);
     birth.push_back(static_cast<float>(step));
     return static_cast<uint32_t>(mesh.positions.size() - 1);
   }
@@ -56,13 +60,19 @@ struct Builder {
       Tri(a0, b1, b0);
     }
   }
-  // A flat polygon fan around `centre` in the plane (u, v), outline radii per angle.
+  // A flat polygon fan around `centre` in the plane (u, v), outline radii per angle; with
+  // `uvs` (one per outline point, textured builders) the centre takes `centre_uv`.
   void Fan(const glm::dvec3& centre, const glm::dvec3& u, const glm::dvec3& v,
-           const std::vector<glm::dvec2>& outline, double step) {
+           const std::vector<glm::dvec2>& outline, double step,
+           const std::vector<glm::vec2>* uvs = nullptr, glm::vec2 centre_uv = {0, 0}) {
     const glm::dvec3 n = Unit(glm::cross(u, v));
+    if (uvs) uv = centre_uv;
     uint32_t c = Vertex(centre, n, step);
     uint32_t first = static_cast<uint32_t>(mesh.positions.size());
-    for (const glm::dvec2& o : outline) Vertex(centre + o.x * u + o.y * v, n, step);
+    for (std::size_t k = 0; k < outline.size(); ++k) {
+      if (uvs) uv = (*uvs)[k];
+      Vertex(centre + outline[k].x * u + outline[k].y * v, n, step);
+    }
     const uint32_t count = static_cast<uint32_t>(outline.size());
     for (uint32_t k = 0; k < count; ++k) Tri(c, first + k, first + (k + 1) % count);
   }
@@ -72,14 +82,15 @@ struct Builder {
   }
 };
 
-// A 3-lobed Parthenocissus-like outline of width 1 (x across, y along the blade), from the petiole
-// end at (0, 0): 10 points, counter-clockwise.
-std::vector<glm::dvec2> LeafOutline(double width) {
-  static const double pts[10][2] = {{0.0, 0.0},   {0.35, 0.15}, {0.5, 0.45},  {0.3, 0.5},
-                                    {0.2, 0.85},  {0.0, 1.0},   {-0.2, 0.85}, {-0.3, 0.5},
-                                    {-0.5, 0.45}, {-0.35, 0.15}};
+// The leaf outline (ivy_leaf_texture.h) at `width`, with its texture coordinates.
+std::vector<glm::dvec2> LeafOutline(double width, std::vector<glm::vec2>* uvs) {
   std::vector<glm::dvec2> out;
-  for (const auto& p : pts) out.push_back({p[0] * width, p[1] * width});
+  for (const auto& [x, y] : LeafOutlineUnit()) {
+    out.push_back({x * width, y * width});
+    glm::vec2 uv;
+    LeafUv(x, y, &uv.x, &uv.y);
+    uvs->push_back(uv);
+  }
   return out;
 }
 
@@ -109,6 +120,12 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p) {
   int last_step = 0;
   for (const Bud& b : m.buds) last_step = std::max(last_step, b.born_step);
   Builder stems, leaves, suckers;
+  leaves.textured = true;
+  // The petiole on the midrib's texels; the fan's centre (the blade's base) at the petiole end.
+  glm::vec2 petiole_uv, base_uv;
+  LeafUv(0.0, 0.1, &petiole_uv.x, &petiole_uv.y);
+  LeafUv(0.0, 0.0, &base_uv.x, &base_uv.y);
+  std::vector<glm::vec2> outline_uvs;
   for (const Internode& in : m.internodes) {
     const Bud& a = m.buds[static_cast<std::size_t>(in.from_bud)];
     const Bud& b = m.buds[static_cast<std::size_t>(in.to_bud)];
@@ -137,8 +154,11 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p) {
     const double age = static_cast<double>(last_step - b.born_step);
     const double width = leaf * std::min(1.0, (age + 1.0) / tau);
     const glm::dvec3 across = Unit(glm::cross(up_t, n));
+    leaves.uv = petiole_uv;
     leaves.Tube(b.pos, base, 0.3 * r_tip, 0.3 * r_tip, b.born_step);
-    leaves.Fan(base, across, up_t, LeafOutline(width), b.born_step);
+    outline_uvs.clear();
+    const std::vector<glm::dvec2> outline = LeafOutline(width, &outline_uvs);
+    leaves.Fan(base, across, up_t, outline, b.born_step, &outline_uvs, base_uv);
   }
   return {stems.Done(), leaves.Done(), suckers.Done()};
 }
@@ -178,7 +198,18 @@ Result<std::vector<unsigned char>> WriteIvyGlb(const IvyModel& model, const IvyP
     doc.scene_nodes.push_back(static_cast<int>(doc.nodes.size() - 1));
   };
   add("ivy_stems", std::move(meshes.stems), material("stem", {0.35, 0.22, 0.12, 1}));
-  add("ivy_leaves", std::move(meshes.leaves), material("leaf", {0.16, 0.45, 0.12, 1}));
+  // The leaf's texture (ivy_leaf_texture.h); its factor white so the texels give the colour.
+  Result<std::vector<unsigned char>> leaf_png = LeafTexturePng();
+  if (!leaf_png.ok()) return leaf_png.status().Within("leaf texture");
+  gltf::Texture leaf_texture;
+  leaf_texture.name = "ivy_leaf";
+  leaf_texture.png = *leaf_png;
+  leaf_texture.wrap_s = leaf_texture.wrap_t = gltf::Wrap::kClampToEdge;
+  doc.textures.push_back(std::move(leaf_texture));
+  const int leaf_material = material("leaf", {1, 1, 1, 1});
+  doc.materials[static_cast<std::size_t>(leaf_material)].base_color_texture =
+      static_cast<int>(doc.textures.size()) - 1;
+  add("ivy_leaves", std::move(meshes.leaves), leaf_material);
   add("ivy_suckers", std::move(meshes.suckers), material("sucker", {0.55, 0.4, 0.25, 1}));
   if (support != nullptr) {
     geom::TriMesh s;
