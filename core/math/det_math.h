@@ -153,6 +153,31 @@ inline double Atan2(double y, double x) {
   return y < 0.0 ? -angle : angle;
 }
 
+// Atan2(y[i], 1.0) in place for finite y[i] >= 0 (a slope angle from a gradient length), two
+// lanes at a time where SIMD is there; every lane gives Atan2's bits (the same operations in the
+// same order: y <= 1 -> AtanUnit(y), else pi/2 - AtanUnit(1 / y)).
+inline void AtanOfNonNegativeInPlace(double* y, std::size_t n) {
+  std::size_t i = 0;
+#if defined(__SSE2__) || defined(__wasm_simd128__)
+  typedef double Double2 __attribute__((vector_size(16)));
+  typedef int64_t Int2 __attribute__((vector_size(16)));
+  const auto sqrt2 = [](Double2 v) { return Double2{std::sqrt(v[0]), std::sqrt(v[1])}; };
+  for (; i + 2 <= n; i += 2) {
+    const Double2 v = {y[i], y[i + 1]};
+    const Int2 big = (Int2)(v > 1.0);
+    const Double2 one = {1.0, 1.0};
+    const Double2 inv = one / v;
+    const Double2 x = (Double2)(((Int2)inv & big) | ((Int2)v & ~big));
+    const Double2 a = AtanUnitOf(x, sqrt2);
+    const Double2 half_pi = {kPi / 2.0, kPi / 2.0};
+    const Double2 r = (Double2)(((Int2)(half_pi - a) & big) | ((Int2)a & ~big));
+    y[i] = r[0];
+    y[i + 1] = r[1];
+  }
+#endif
+  for (; i < n; ++i) y[i] = Atan2(y[i], 1.0);
+}
+
 inline double Acos(double x) {
   if (x >= 1.0) return 0.0;
   if (x <= -1.0) return kPi;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <vector>
 
 #include "math/det_math.h"
 #include "terrain/polygon.h"
@@ -259,6 +260,10 @@ TerrainStats ComputeStats(const Terrain& t, const Heightfield* hf) {
   if (hf && !hf->h.empty()) {
     double sum = 0, slope_sum = 0;
     std::size_t count = 0, slope_count = 0;
+    // Gradient lengths of the interior cells in order; their angles are taken two at a time
+    // (det::AtanOfNonNegativeInPlace: Atan2(g, 1)'s bits) and summed in the same order.
+    std::vector<double> gradient;
+    gradient.reserve(hf->h.size());
     for (int j = 0; j < hf->height; ++j) {
       for (int i = 0; i < hf->width; ++i) {
         const std::size_t k = static_cast<std::size_t>(j) * hf->width + i;
@@ -278,10 +283,12 @@ TerrainStats ComputeStats(const Terrain& t, const Heightfield* hf) {
         if (pit) ++s.pits;
         const double gx = (hf->At(i + 1, j) - hf->At(i - 1, j)) / (2 * hf->cell);
         const double gy = (hf->At(i, j - 1) - hf->At(i, j + 1)) / (2 * hf->cell);
-        slope_sum += det::Atan2(std::sqrt(gx * gx + gy * gy), 1.0) * 180.0 / 3.14159265358979323846;
+        gradient.push_back(std::sqrt(gx * gx + gy * gy));
         ++slope_count;
       }
     }
+    det::AtanOfNonNegativeInPlace(gradient.data(), gradient.size());
+    for (const double a : gradient) slope_sum += a * 180.0 / 3.14159265358979323846;
     if (count > 0 && hmax > hmin)
       s.hypsometric_integral = (sum / static_cast<double>(count) - hmin) / (hmax - hmin);
     if (slope_count > 0) s.mean_slope_deg = slope_sum / static_cast<double>(slope_count);

@@ -100,5 +100,31 @@ TEST(DetMath, ExpfInPlaceMatchesExpf) {
   }
 }
 
+// The batched slope angle (SIMD where available) gives Atan2(y, 1)'s bits, on both sides of 1.
+TEST(DetMath, AtanOfNonNegativeInPlaceMatchesAtan2) {
+  std::vector<double> inputs = {0.0,          1e-300,
+                                1e-12,        0.25,
+                                0.5,          std::nextafter(1.0, 0.0),
+                                1.0,          std::nextafter(1.0, 2.0),
+                                1.5,          4.0,
+                                1e6,          1e300,
+                                0.41421356237};
+  uint64_t state = 987;
+  for (int i = 0; i < 200000; ++i) {  // gradients of real terrain (0..3) and far beyond
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    const double u = static_cast<double>(state >> 11) / 9007199254740992.0;
+    inputs.push_back(i % 4 == 0 ? u * 1e4 : 3.0 * u);
+  }
+  std::vector<double> batch = inputs;
+  det::AtanOfNonNegativeInPlace(batch.data(), batch.size());
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const double expected = det::Atan2(inputs[i], 1.0);
+    uint64_t a, b;
+    std::memcpy(&a, &batch[i], sizeof a);
+    std::memcpy(&b, &expected, sizeof b);
+    ASSERT_EQ(a, b) << "y = " << inputs[i];
+  }
+}
+
 }  // namespace
 }  // namespace niwa
