@@ -1,0 +1,134 @@
+// Band-capped depression filling: priority-flood and its Planchon-Darboux twin (see band_fill.h).
+#include "terrain/band_fill.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
+
+#include "terrain/heightfield.h"
+
+namespace niwa::terrain {
+namespace {
+
+constexpr int kDi[8] = {-1, 0, 1, -1, 1, -1, 0, 1};
+constexpr int kDj[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
+
+bool IsOutlet(int width, int height, const std::vector<int>& band, int i, int j) {
+  return band[static_cast<std::size_t>(j) * width + i] < 0 || i == 0 || j == 0 || i + 1 == width ||
+         j + 1 == height;
+}
+
+// What a neighbour at W offers cell k: max(h, min(top, W)) (band_fill.h).
+double Offer(const std::vector<double>& h, const std::vector<int>& band,
+             const std::vector<double>& top, std::size_t k, double w) {
+  return std::max(h[k], std::min(top[static_cast<std::size_t>(band[k])], w));
+}
+
+}  // namespace
+
+std::size_t FillWithinBands(int width, int height, const std::vector<int>& band,
+                            const std::vector<double>& top, std::vector<double>* h) {
+  const std::size_t cells = static_cast<std::size_t>(width) * height;
+  if (cells == 0) return 0;
+  const std::vector<double>& h0 = *h;
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> w(cells, inf);
+  using Entry = std::pair<double, std::uint32_t>;  // (W, cell index): the heap's total order
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  // Seeds: the outlets (W = h) that touch a cell to fill; the others cannot lower anything.
+  for (int j = 0; j < height; ++j) {
+    for (int i = 0; i < width; ++i) {
+      if (!IsOutlet(width, height, band, i, j)) continue;
+      const std::size_t k = static_cast<std::size_t>(j) * width + i;
+      w[k] = h0[k];
+      for (int q = 0; q < 8; ++q) {
+        const int ni = i + kDi[q], nj = j + kDj[q];
+        if (ni < 0 || nj < 0 || ni >= width || nj >= height) continue;
+        if (!IsOutlet(width, height, band, ni, nj)) {
+          open.push({w[k], static_cast<std::uint32_t>(k)});
+          break;
+        }
+      }
+    }
+  }
+  while (!open.empty()) {
+    const Entry e = open.top();
+    open.pop();
+    const std::size_t k = e.second;
+    if (e.first != w[k]) continue;  // superseded by a lower W
+    const int i = static_cast<int>(k % static_cast<std::size_t>(width));
+    const int j = static_cast<int>(k / static_cast<std::size_t>(width));
+    for (int q = 0; q < 8; ++q) {
+      const int ni = i + kDi[q], nj = j + kDj[q];
+      if (ni < 0 || nj < 0 || ni >= width || nj >= height) continue;
+      if (IsOutlet(width, height, band, ni, nj)) continue;
+      const std::size_t n = static_cast<std::size_t>(nj) * width + ni;
+      const double offer = Offer(h0, band, top, n, e.first);
+      if (offer < w[n]) {
+        w[n] = offer;
+        open.push({offer, static_cast<std::uint32_t>(n)});
+      }
+    }
+  }
+  std::size_t raised = 0;
+  for (std::size_t k = 0; k < cells; ++k) {
+    // Every cell is 8-connected to the grid's edge, so none is left at ∞.
+    if (w[k] > h0[k]) ++raised;
+  }
+  *h = std::move(w);
+  return raised;
+}
+
+std::size_t FillWithinBandsPlanchonDarboux(int width, int height, const std::vector<int>& band,
+                                           const std::vector<double>& top, std::vector<double>* h) {
+  const std::size_t cells = static_cast<std::size_t>(width) * height;
+  const std::vector<double>& h0 = *h;
+  std::vector<double> w(h0);
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * width + i;
+      if (!IsOutlet(width, height, band, i, j))
+        w[k] = std::max(h0[k], top[static_cast<std::size_t>(band[k])]);
+    }
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (int j = 0; j < height; ++j) {
+      for (int i = 0; i < width; ++i) {
+        if (IsOutlet(width, height, band, i, j)) continue;
+        const std::size_t k = static_cast<std::size_t>(j) * width + i;
+        for (int q = 0; q < 8; ++q) {
+          const std::size_t n = static_cast<std::size_t>(j + kDj[q]) * width + (i + kDi[q]);
+          const double offer = Offer(h0, band, top, k, w[n]);
+          if (offer < w[k]) {
+            w[k] = offer;
+            changed = true;
+          }
+        }
+      }
+    }
+  }
+  std::size_t raised = 0;
+  for (std::size_t k = 0; k < cells; ++k)
+    if (w[k] > h0[k]) ++raised;
+  *h = std::move(w);
+  return raised;
+}
+
+std::vector<double> BandTops(const Terrain& t) {
+  std::vector<double> top(t.contours.size());
+  for (std::size_t c = 0; c < t.contours.size(); ++c) top[c] = t.contours[c].elevation + t.dh;
+  for (const Summit& s : t.summits) {
+    const ContourNode& node = t.contours[static_cast<std::size_t>(s.contour)];
+    top[static_cast<std::size_t>(s.contour)] = node.elevation + (s.elevation - node.elevation);
+  }
+  return top;
+}
+
+void FillHeightfieldWithinBands(const Terrain& t, Heightfield* hf) {
+  hf->cells_filled = FillWithinBands(hf->width, hf->height, hf->band, BandTops(t), &hf->h);
+}
+
+}  // namespace niwa::terrain
