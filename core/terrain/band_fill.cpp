@@ -34,20 +34,52 @@ std::size_t FillWithinBands(int width, int height, const std::vector<int>& band,
   const std::size_t cells = static_cast<std::size_t>(width) * height;
   if (cells == 0) return 0;
   const std::vector<double>& h0 = *h;
+  // 1. The cells with a strictly descending 8-path to an outlet keep W = h (the path's maximum is
+  // their own height): a breadth-first search up from the outlets, no heap. On a surface without
+  // depressions that is every cell, and the fill ends here.
+  std::vector<char> drains(cells, 0);
+  std::vector<std::uint32_t> fifo;
+  fifo.reserve(cells);
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i)
+      if (IsOutlet(width, height, band, i, j)) {
+        const std::size_t k = static_cast<std::size_t>(j) * width + i;
+        drains[k] = 1;
+        fifo.push_back(static_cast<std::uint32_t>(k));
+      }
+  for (std::size_t r = 0; r < fifo.size(); ++r) {
+    const std::size_t k = fifo[r];
+    const int i = static_cast<int>(k % static_cast<std::size_t>(width));
+    const int j = static_cast<int>(k / static_cast<std::size_t>(width));
+    for (int q = 0; q < 8; ++q) {
+      const int ni = i + kDi[q], nj = j + kDj[q];
+      if (ni < 0 || nj < 0 || ni >= width || nj >= height) continue;
+      const std::size_t n = static_cast<std::size_t>(nj) * width + ni;
+      if (!drains[n] && h0[n] > h0[k]) {
+        drains[n] = 1;
+        fifo.push_back(static_cast<std::uint32_t>(n));
+      }
+    }
+  }
+  if (fifo.size() == cells) return 0;
+  fifo = std::vector<std::uint32_t>();
+  // 2. The rest (in or above a depression): the flood, seeded by the draining cells next to them.
+  // Every walk from an outlet into the rest enters it through such a cell, whose W = h is final,
+  // so the result is the whole grid's flood (the Planchon-Darboux twin checks it).
   const double inf = std::numeric_limits<double>::infinity();
-  std::vector<double> w(cells, inf);
+  std::vector<double> w(h0);
   using Entry = std::pair<double, std::uint32_t>;  // (W, cell index): the heap's total order
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-  // Seeds: the outlets (W = h) that touch a cell to fill; the others cannot lower anything.
+  for (std::size_t k = 0; k < cells; ++k)
+    if (!drains[k]) w[k] = inf;
   for (int j = 0; j < height; ++j) {
     for (int i = 0; i < width; ++i) {
-      if (!IsOutlet(width, height, band, i, j)) continue;
       const std::size_t k = static_cast<std::size_t>(j) * width + i;
-      w[k] = h0[k];
+      if (!drains[k]) continue;
       for (int q = 0; q < 8; ++q) {
         const int ni = i + kDi[q], nj = j + kDj[q];
         if (ni < 0 || nj < 0 || ni >= width || nj >= height) continue;
-        if (!IsOutlet(width, height, band, ni, nj)) {
+        if (!drains[static_cast<std::size_t>(nj) * width + ni]) {
           open.push({w[k], static_cast<std::uint32_t>(k)});
           break;
         }
@@ -64,8 +96,8 @@ std::size_t FillWithinBands(int width, int height, const std::vector<int>& band,
     for (int q = 0; q < 8; ++q) {
       const int ni = i + kDi[q], nj = j + kDj[q];
       if (ni < 0 || nj < 0 || ni >= width || nj >= height) continue;
-      if (IsOutlet(width, height, band, ni, nj)) continue;
       const std::size_t n = static_cast<std::size_t>(nj) * width + ni;
+      if (drains[n]) continue;  // outlets and draining cells keep W = h
       const double offer = Offer(h0, band, top, n, e.first);
       if (offer < w[n]) {
         w[n] = offer;
