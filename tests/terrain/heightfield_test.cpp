@@ -1,6 +1,8 @@
 // The heightfield through segment grids equals its brute-force twin bit for bit (every built-in
 // seed and method), SegmentGrid equals RingDistance on scattered points, and the surface is what
-// heightfield.h promises: continuous across contours, each contour's level set on it, no pits.
+// heightfield.h promises: continuous across contours, each contour's level set on it, no pits (on
+// valleys with the improved method, after the band fill, only the sub-cell slots band_fill.h
+// describes).
 #include "terrain/heightfield.h"
 
 #include <gtest/gtest.h>
