@@ -34,6 +34,24 @@ std::size_t FillWithinBands(int width, int height, const std::vector<int>& band,
   const std::size_t cells = static_cast<std::size_t>(width) * height;
   if (cells == 0) return 0;
   const std::vector<double>& h0 = *h;
+  // 0. If every cell off the outlets has a strictly lower neighbour, every one has a strictly
+  // descending path to an outlet and nothing is raised: one raster scan (off the outlets all
+  // cells are inside the grid's edge, so the neighbours are fixed offsets).
+  bool any_minimum = false;
+  for (int j = 1; j + 1 < height && !any_minimum; ++j) {
+    for (int i = 1; i + 1 < width; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * width + i;
+      if (band[k] < 0) continue;
+      bool lower = false;
+      for (int q = 0; q < 8 && !lower; ++q)
+        lower = h0[k + static_cast<std::ptrdiff_t>(kDj[q]) * width + kDi[q]] < h0[k];
+      if (!lower) {
+        any_minimum = true;
+        break;
+      }
+    }
+  }
+  if (!any_minimum) return 0;
   // 1. The cells with a strictly descending 8-path to an outlet keep W = h (the path's maximum is
   // their own height): a breadth-first search up from the outlets, no heap. On a surface without
   // depressions that is every cell, and the fill ends here.

@@ -29,13 +29,15 @@ struct Heightfield;
 // band). A cell already above its top (never one of ours; see BandTops) keeps its h. Returns the
 // number of cells raised (W > h).
 //
-// First a breadth-first search up from the outlets marks the cells with a strictly descending path
-// to one (they keep W = h; on a surface without depressions that is all of them, O(cells), and
-// nothing else runs). Then a priority-flood over the rest with a binary heap over (W, cell index),
-// seeded by the marked cells next to them: a popped cell offers W' = max(h[n], min(top, W)) to each
-// unmarked neighbour, which is pushed again whenever its W drops (the cap makes W' < W possible,
-// so this is the label-correcting form of the flood; every pushed (W, index) pair is distinct, so
-// the pops are one total order, the same on every platform).
+// First a raster scan: if every cell off the outlets has a strictly lower neighbour, nothing is
+// raised and the fill ends (the usual case, O(cells)). Else a breadth-first search up from the
+// outlets marks the cells with a strictly descending path to one (they keep W = h; when that is
+// every cell, e.g. minima on flats that drain, nothing else runs). Then a priority-flood
+// over the rest with a binary heap over (W, cell index), seeded by the marked cells next to them: a
+// popped cell offers W' = max(h[n], min(top, W)) to each unmarked neighbour, which is pushed again
+// whenever its W drops (the cap makes W' < W possible, so this is the label-correcting form of the
+// flood; every pushed (W, index) pair is distinct, so the pops are one total order, the same on
+// every platform).
 std::size_t FillWithinBands(int width, int height, const std::vector<int>& band,
                             const std::vector<double>& top, std::vector<double>* h);
 // The same by Planchon & Darboux's iteration (W = max(h, top) off the outlets, then raster sweeps
