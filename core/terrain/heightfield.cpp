@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "math/det_math.h"
+#include "terrain/band_fill.h"
 #include "terrain/polygon.h"
 #include "terrain/segment_grid.h"
 
@@ -91,15 +92,8 @@ double BandHeight(const ContourNode& node, double a, double up, double dh) {
   return a + up > 0 ? node.elevation + dh * a / (a + up) : node.elevation;
 }
 
-}  // namespace
-
-Heightfield BuildHeightfield(const Terrain& t, int res) {
-  if (t.contours.empty()) return Heightfield();
-  return BuildHeightfieldOn(t, GridFor(t, res));
-}
-
-Heightfield BuildHeightfieldOn(const Terrain& t, const Heightfield& grid) {
-  if (t.contours.empty()) return Heightfield();
+// The band heights on `grid` (heightfield.h), before any fill.
+Heightfield BandSurfaceOn(const Terrain& t, const Heightfield& grid) {
   Heightfield hf = PaintedGrid(t, grid);
   const std::size_t nc = t.contours.size();
   const std::size_t cells = hf.h.size();
@@ -192,7 +186,21 @@ Heightfield BuildHeightfieldOn(const Terrain& t, const Heightfield& grid) {
   return hf;
 }
 
-Heightfield BuildHeightfieldBruteForce(const Terrain& t, int res) {
+}  // namespace
+
+Heightfield BuildHeightfield(const Terrain& t, int res, bool fill_depressions) {
+  if (t.contours.empty()) return Heightfield();
+  return BuildHeightfieldOn(t, GridFor(t, res), fill_depressions);
+}
+
+Heightfield BuildHeightfieldOn(const Terrain& t, const Heightfield& grid, bool fill_depressions) {
+  if (t.contours.empty()) return Heightfield();
+  Heightfield hf = BandSurfaceOn(t, grid);  // its stamped distances freed before the fill
+  if (fill_depressions) FillHeightfieldWithinBands(t, &hf);
+  return hf;
+}
+
+Heightfield BuildHeightfieldBruteForce(const Terrain& t, int res, bool fill_depressions) {
   if (t.contours.empty()) return Heightfield();
   Heightfield hf = PaintedGrid(t, GridFor(t, res));
   std::vector<int> summit_of(t.contours.size(), -1);
@@ -220,6 +228,7 @@ Heightfield BuildHeightfieldBruteForce(const Terrain& t, int res) {
       hf.h[k] = BandHeight(node, a, up, dh);
     }
   }
+  if (fill_depressions) FillHeightfieldWithinBands(t, &hf);
   return hf;
 }
 

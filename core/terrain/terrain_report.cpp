@@ -22,6 +22,7 @@ nlohmann::json TerrainStatsJson(const TerrainState& state, const Terrain& terrai
   j["hypsometric_integral"] = s.hypsometric_integral;
   j["mean_slope_deg"] = s.mean_slope_deg;
   j["pits"] = s.pits;
+  j["cells_filled"] = hf.cells_filled;
   j["loops_removed"] = terrain.counts.loops_removed;
   j["perturbations_reverted"] = terrain.counts.perturbations_reverted;
   j["truncated"] = terrain.counts.truncated;
