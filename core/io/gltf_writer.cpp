@@ -588,6 +588,15 @@ class ModelBuilder {
     return Status::Ok();
   }
 
+  // Puts `extension` on the node under `name` and lists it in extensionsUsed once.
+  void SetExtension(const char* name, tinygltf::Value::Object extension, tinygltf::Node* out) {
+    out->extensions[name] = tinygltf::Value(std::move(extension));
+    if (std::find(model_->extensionsUsed.begin(), model_->extensionsUsed.end(), name) ==
+        model_->extensionsUsed.end()) {
+      model_->extensionsUsed.push_back(name);
+    }
+  }
+
   // EXT_mesh_gpu_instancing: TRANSLATION, ROTATION, SCALE accessors of the node's instances.
   void AddInstances(const Node& node, tinygltf::Node* out) {
     const char* kExtension = "EXT_mesh_gpu_instancing";
@@ -602,11 +611,7 @@ class ModelBuilder {
     add("SCALE", node.instance_scales, TINYGLTF_TYPE_VEC3);
     tinygltf::Value::Object extension;
     extension["attributes"] = tinygltf::Value(std::move(attributes));
-    out->extensions[kExtension] = tinygltf::Value(std::move(extension));
-    if (std::find(model_->extensionsUsed.begin(), model_->extensionsUsed.end(), kExtension) ==
-        model_->extensionsUsed.end()) {
-      model_->extensionsUsed.push_back(kExtension);
-    }
+    SetExtension(kExtension, std::move(extension), out);
   }
 
   // MSFT_lod on a node: {"ids": [lower levels' nodes, highest first]}.
@@ -616,11 +621,7 @@ class ModelBuilder {
     for (int l : node.lod_ids) ids.push_back(tinygltf::Value(l));
     tinygltf::Value::Object extension;
     extension["ids"] = tinygltf::Value(std::move(ids));
-    out->extensions[kExtension] = tinygltf::Value(std::move(extension));
-    if (std::find(model_->extensionsUsed.begin(), model_->extensionsUsed.end(), kExtension) ==
-        model_->extensionsUsed.end()) {
-      model_->extensionsUsed.push_back(kExtension);
-    }
+    SetExtension(kExtension, std::move(extension), out);
   }
 
   void AddSkin(const Skin& skin) {

@@ -16,6 +16,22 @@ namespace {
 constexpr int kDi[8] = {-1, 0, 1, -1, 1, -1, 0, 1};
 constexpr int kDj[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
 
+// Neighbour q (0..7) of cell k at (i, j) in *n, false when it lies off the grid.
+bool Neighbour(int width, int height, int i, int j, int q, std::size_t* n) {
+  const int ni = i + kDi[q], nj = j + kDj[q];
+  if (ni < 0 || nj < 0 || ni >= width || nj >= height) return false;
+  *n = static_cast<std::size_t>(nj) * width + ni;
+  return true;
+}
+
+// Cells whose filled height w is above their own h.
+std::size_t CountRaised(const std::vector<double>& h, const std::vector<double>& w) {
+  std::size_t raised = 0;
+  for (std::size_t k = 0; k < h.size(); ++k)
+    if (w[k] > h[k]) ++raised;
+  return raised;
+}
+
 bool IsOutlet(int width, int height, const std::vector<int>& band, int i, int j) {
   return band[static_cast<std::size_t>(j) * width + i] < 0 || i == 0 || j == 0 || i + 1 == width ||
          j + 1 == height;
@@ -70,9 +86,8 @@ std::size_t FillWithinBands(int width, int height, const std::vector<int>& band,
     const int i = static_cast<int>(k % static_cast<std::size_t>(width));
     const int j = static_cast<int>(k / static_cast<std::size_t>(width));
     for (int q = 0; q < 8; ++q) {
-      const int ni = i + kDi[q], nj = j + kDj[q];
-      if (ni < 0 || nj < 0 || ni >= width || nj >= height) continue;
-      const std::size_t n = static_cast<std::size_t>(nj) * width + ni;
+      std::size_t n;
+      if (!Neighbour(width, height, i, j, q, &n)) continue;
       if (!drains[n] && h0[n] > h0[k]) {
         drains[n] = 1;
         fifo.push_back(static_cast<std::uint32_t>(n));
@@ -95,9 +110,9 @@ std::size_t FillWithinBands(int width, int height, const std::vector<int>& band,
       const std::size_t k = static_cast<std::size_t>(j) * width + i;
       if (!drains[k]) continue;
       for (int q = 0; q < 8; ++q) {
-        const int ni = i + kDi[q], nj = j + kDj[q];
-        if (ni < 0 || nj < 0 || ni >= width || nj >= height) continue;
-        if (!drains[static_cast<std::size_t>(nj) * width + ni]) {
+        std::size_t n;
+        if (!Neighbour(width, height, i, j, q, &n)) continue;
+        if (!drains[n]) {
           open.push({w[k], static_cast<std::uint32_t>(k)});
           break;
         }
@@ -112,9 +127,8 @@ std::size_t FillWithinBands(int width, int height, const std::vector<int>& band,
     const int i = static_cast<int>(k % static_cast<std::size_t>(width));
     const int j = static_cast<int>(k / static_cast<std::size_t>(width));
     for (int q = 0; q < 8; ++q) {
-      const int ni = i + kDi[q], nj = j + kDj[q];
-      if (ni < 0 || nj < 0 || ni >= width || nj >= height) continue;
-      const std::size_t n = static_cast<std::size_t>(nj) * width + ni;
+      std::size_t n;
+      if (!Neighbour(width, height, i, j, q, &n)) continue;
       if (drains[n]) continue;  // outlets and draining cells keep W = h
       const double offer = Offer(h0, band, top, n, e.first);
       if (offer < w[n]) {
@@ -123,18 +137,14 @@ std::size_t FillWithinBands(int width, int height, const std::vector<int>& band,
       }
     }
   }
-  std::size_t raised = 0;
-  for (std::size_t k = 0; k < cells; ++k) {
-    // Every cell is 8-connected to the grid's edge, so none is left at ∞.
-    if (w[k] > h0[k]) ++raised;
-  }
+  // Every cell is 8-connected to the grid's edge, so none is left at ∞.
+  const std::size_t raised = CountRaised(h0, w);
   *h = std::move(w);
   return raised;
 }
 
 std::size_t FillWithinBandsPlanchonDarboux(int width, int height, const std::vector<int>& band,
                                            const std::vector<double>& top, std::vector<double>* h) {
-  const std::size_t cells = static_cast<std::size_t>(width) * height;
   const std::vector<double>& h0 = *h;
   std::vector<double> w(h0);
   for (int j = 0; j < height; ++j)
@@ -160,9 +170,7 @@ std::size_t FillWithinBandsPlanchonDarboux(int width, int height, const std::vec
       }
     }
   }
-  std::size_t raised = 0;
-  for (std::size_t k = 0; k < cells; ++k)
-    if (w[k] > h0[k]) ++raised;
+  const std::size_t raised = CountRaised(h0, w);
   *h = std::move(w);
   return raised;
 }
