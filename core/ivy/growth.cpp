@@ -103,6 +103,21 @@ struct Placement {
   geom::ClosestHit anchor;
 };
 
+// The lowest-scoring valid candidate so far (on equal scores the first stays): the random walk's
+// and the tangent fan's choice.
+struct BestPlacement {
+  bool found = false;
+  double score = 0;
+  Placement place;
+  void Offer(const Placement& candidate, double candidate_score) {
+    if (!found || candidate_score < score) {
+      found = true;
+      score = candidate_score;
+      place = candidate;
+    }
+  }
+};
+
 class Grower {
  public:
   Grower(const Support& support, const IvyParams& p, uint64_t seed, GrowLog* log)
@@ -306,9 +321,7 @@ class Grower {
       const glm::dvec3 e2 = glm::cross(v, e1);
       Pcg32 rng(Key(seed_, from, step, r));
       std::array<int, kRejectCount> rejects{};
-      bool found = false;
-      double best = 0;
-      Placement best_place;
+      BestPlacement best;
       for (int k = 0; k < n_c; ++k) {
         const double xi1 = rng.Uniform(), xi2 = rng.Uniform();
         const double cos_t = 1.0 - xi1 * (1.0 - cos_phi);
@@ -319,14 +332,10 @@ class Grower {
         Placement place;
         double score = 0;
         if (Evaluate(from, p, u, v0, sp, &rejects, &place, &score) >= 0) continue;
-        if (!found || score < best) {
-          found = true;
-          best = score;
-          best_place = place;
-        }
+        best.Offer(place, score);
       }
-      if (found) {
-        *out = best_place;
+      if (best.found) {
+        *out = best.place;
         return true;
       }
       // E10: correct the direction by the dominant reason (ties: collision > far > near >
@@ -392,9 +401,7 @@ class Grower {
     t1 = Unit(t1);
     const glm::dvec3 t2 = glm::cross(n, t1);
     std::array<int, kRejectCount> rejects{};
-    bool found = false;
-    double best = 0;
-    Placement best_place;
+    BestPlacement best;
     auto consider = [&](const glm::dvec3& w, double tilt_deg) {
       double s_tilt, c_tilt;
       det::SinCos(tilt_deg * kDeg, &s_tilt, &c_tilt);
@@ -402,11 +409,7 @@ class Grower {
       Placement place;
       double score = 0;
       if (Evaluate(from, p, u, v0, sp, &rejects, &place, &score) >= 0) return;
-      if (!found || score < best) {
-        found = true;
-        best = score;
-        best_place = place;
-      }
+      best.Offer(place, score);
     };
     for (double tilt_deg : kFanTilt) {
       for (int k = 0; k < kFanPsi; ++k) {
@@ -418,9 +421,9 @@ class Grower {
       }
     }
     for (double tilt_deg : kEdgeTilt) consider(t1, tilt_deg);
-    if (!found) return false;
+    if (!best.found) return false;
     ++log_->tangent_saves;
-    *out = best_place;
+    *out = best.place;
     return true;
   }
 

@@ -45,8 +45,7 @@ struct IvyGrowLimits;  // ivy_budget.h
 using StepObserver = std::function<void(int step, int steps)>;
 Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& seeds,
                       const IvyParams& params, int steps, uint64_t seed, GrowLog* log,
-                      const IvyGrowLimits* limits = nullptr,
-                      const StepObserver& on_step = {});
+                      const IvyGrowLimits* limits = nullptr, const StepObserver& on_step = {});
 
 // The geometric normal of a triangle (unit, from its winding).
 glm::dvec3 TriangleNormal(const geom::TriMesh& mesh, uint32_t triangle);

@@ -86,7 +86,7 @@ image::Rgba8Image PaintLeafTexture(int size) {
   return img;
 }
 
-Result<std::vector<unsigned char>> LeafTexturePng() {
+const Result<std::vector<unsigned char>>& LeafTexturePng() {
   static const Result<std::vector<unsigned char>> png =
       image::EncodeRgba8Png(PaintLeafTexture(256));
   return png;

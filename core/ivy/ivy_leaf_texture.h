@@ -26,6 +26,6 @@ inline void LeafUv(double x, double y, float* u, float* v) {
 image::Rgba8Image PaintLeafTexture(int size);
 
 // Its PNG bytes at 256 px, encoded once per process.
-Result<std::vector<unsigned char>> LeafTexturePng();
+const Result<std::vector<unsigned char>>& LeafTexturePng();
 
 }  // namespace niwa::ivy

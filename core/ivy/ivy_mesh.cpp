@@ -82,16 +82,22 @@ struct Builder {
   }
 };
 
-// The leaf outline (ivy_leaf_texture.h) at `width`, with its texture coordinates.
-std::vector<glm::dvec2> LeafOutline(double width, std::vector<glm::vec2>* uvs) {
+// The leaf outline (ivy_leaf_texture.h) at `width`.
+std::vector<glm::dvec2> LeafOutline(double width) {
   std::vector<glm::dvec2> out;
+  for (const auto& [x, y] : LeafOutlineUnit()) out.push_back({x * width, y * width});
+  return out;
+}
+
+// The outline's texture coordinates (the same for every leaf).
+std::vector<glm::vec2> LeafOutlineUvs() {
+  std::vector<glm::vec2> uvs;
   for (const auto& [x, y] : LeafOutlineUnit()) {
-    out.push_back({x * width, y * width});
     glm::vec2 uv;
     LeafUv(x, y, &uv.x, &uv.y);
-    uvs->push_back(uv);
+    uvs.push_back(uv);
   }
-  return out;
+  return uvs;
 }
 
 }  // namespace
@@ -125,7 +131,7 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p) {
   glm::vec2 petiole_uv, base_uv;
   LeafUv(0.0, 0.1, &petiole_uv.x, &petiole_uv.y);
   LeafUv(0.0, 0.0, &base_uv.x, &base_uv.y);
-  std::vector<glm::vec2> outline_uvs;
+  const std::vector<glm::vec2> outline_uvs = LeafOutlineUvs();
   for (const Internode& in : m.internodes) {
     const Bud& a = m.buds[static_cast<std::size_t>(in.from_bud)];
     const Bud& b = m.buds[static_cast<std::size_t>(in.to_bud)];
@@ -156,9 +162,7 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p) {
     const glm::dvec3 across = Unit(glm::cross(up_t, n));
     leaves.uv = petiole_uv;
     leaves.Tube(b.pos, base, 0.3 * r_tip, 0.3 * r_tip, b.born_step);
-    outline_uvs.clear();
-    const std::vector<glm::dvec2> outline = LeafOutline(width, &outline_uvs);
-    leaves.Fan(base, across, up_t, outline, b.born_step, &outline_uvs, base_uv);
+    leaves.Fan(base, across, up_t, LeafOutline(width), b.born_step, &outline_uvs, base_uv);
   }
   return {stems.Done(), leaves.Done(), suckers.Done()};
 }
@@ -199,7 +203,7 @@ Result<std::vector<unsigned char>> WriteIvyGlb(const IvyModel& model, const IvyP
   };
   add("ivy_stems", std::move(meshes.stems), material("stem", {0.35, 0.22, 0.12, 1}));
   // The leaf's texture (ivy_leaf_texture.h); its factor white so the texels give the colour.
-  Result<std::vector<unsigned char>> leaf_png = LeafTexturePng();
+  const Result<std::vector<unsigned char>>& leaf_png = LeafTexturePng();
   if (!leaf_png.ok()) return leaf_png.status().Within("leaf texture");
   gltf::Texture leaf_texture;
   leaf_texture.name = "ivy_leaf";
