@@ -1,8 +1,28 @@
 // A study page's core error lines ("key: ...") shown beside the field they name: a basic field's
 // own error element (by id), or a line added to the parameter panel's row of input `param-KEY`;
-// showing one clears every other, and the panel marks the row. Used by the ivy and terrain pages.
+// showing one clears every other, and the panel marks the row. Used by the ivy and terrain pages;
+// the tree page's edit feedback shares its error lines.
 // Does not: check values (the core does), or decide which message is current.
 import { setHooks } from './test_hooks.js';
+
+// A new, hidden error line (<p class="field-error" role="alert">).
+export function newErrorLine() {
+  const line = document.createElement('p');
+  line.className = 'field-error';
+  line.setAttribute('role', 'alert');
+  line.hidden = true;
+  return line;
+}
+
+// The error line among host's children, added at its end the first time.
+export function errorLineIn(host) {
+  let line = [...host.children].find((c) => c.classList.contains('field-error'));
+  if (!line) {
+    line = newErrorLine();
+    host.append(line);
+  }
+  return line;
+}
 
 export class FieldErrors {
   // basics: {key: id of its error element}; panel(): the page's ParamPanel or null.
@@ -14,16 +34,7 @@ export class FieldErrors {
   #line(key) {
     if (this.basics[key]) return document.getElementById(this.basics[key]);
     const row = document.getElementById(`param-${key}`)?.closest('.field');
-    if (!row) return null;
-    let line = row.querySelector('.field-error');
-    if (!line) {
-      line = document.createElement('p');
-      line.className = 'field-error';
-      line.setAttribute('role', 'alert');
-      line.hidden = true;
-      row.append(line);
-    }
-    return line;
+    return row ? errorLineIn(row) : null;
   }
 
   // Shows `message` beside its field ("" clears them all); the test hooks learn the key.

@@ -3,22 +3,11 @@
 // scrolled into view, and a "stale" label over the view from the first edit until the tree that
 // answers it is drawn (or, after an error, until a good value is drawn).
 // Does not: check values (the core does), send requests, or decide which tree is current.
+import { errorLineIn, newErrorLine } from '../shell/field_errors.js';
 
 // The key a core error line names: "years: 130 is out of range; ..." -> "years".
 export function errorKey(message) {
   return typeof message === 'string' ? /^([A-Za-z_][A-Za-z_0-9]*)[: ]/.exec(message)?.[1] || null : null;
-}
-
-function errorLine(host) {
-  let line = [...host.children].find((c) => c.classList.contains('field-error'));
-  if (!line) {
-    line = document.createElement('p');
-    line.className = 'field-error';
-    line.setAttribute('role', 'alert');
-    line.hidden = true;
-    host.append(line);
-  }
-  return line;
 }
 
 export class EditFeedback {
@@ -79,7 +68,7 @@ export class EditFeedback {
     let first = null;
     for (const { host, input } of hosts) {
       // A basic field's line goes after the field (its parent is the grid of the basics).
-      const line = this.basics[key] && input ? this.#lineAfter(input) : errorLine(host);
+      const line = this.basics[key] && input ? this.#lineAfter(input) : errorLineIn(host);
       line.textContent = message;
       line.hidden = false;
       this.shown.push(line);
@@ -97,10 +86,7 @@ export class EditFeedback {
   #lineAfter(input) {
     const next = input.nextElementSibling;
     if (next?.classList.contains('field-error')) return next;
-    const line = document.createElement('p');
-    line.className = 'field-error';
-    line.setAttribute('role', 'alert');
-    line.hidden = true;
+    const line = newErrorLine();
     input.after(line);
     return line;
   }
