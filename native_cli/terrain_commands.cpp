@@ -338,9 +338,14 @@ int RunShrink(const ShrinkCommandOptions& o, std::ostream& out) {
   }
   Result<terrain::ShrinkTrace> trace = terrain::TraceShrink(seed, t);
   if (!trace.ok()) {
+    // The core names its option; the flag that set it: d0, d2 and theta come from --displace.
     const Status& s = trace.status();
-    const std::string field = s.field() == "contour" ? "--contour" : "--" + s.field();
-    Fail(Status::Error(field, s.message()));
+    const std::string& f = s.field();
+    const std::string flag = f == "d0" || f == "d2" || f == "theta" ? "--displace"
+                             : f == "clean_len"                     ? "--clean-len"
+                             : f == "clean_angle"                   ? "--clean-angle"
+                                                                    : "--" + f;
+    Fail(Status::Error(flag, s.message()));
   }
   nlohmann::json j;
   j["d"] = d;

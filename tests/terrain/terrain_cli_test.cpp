@@ -63,10 +63,12 @@ TEST(TerrainCli, ShrinkTracesTheFigureAndRefusesBadSteps) {
   EXPECT_NE(text.find("class=\"ring\""), std::string::npos);
   const std::string never = ::testing::TempDir() + "terrain_shrink_never.svg";
   std::remove(never.c_str());
-  for (const std::vector<std::string>& bad : {std::vector<std::string>{"--steps", "65"},
-                                              {"--d", "-1"},
-                                              {"--join", "sharp"},
-                                              {"--displace", "1,2,3"}}) {
+  for (const std::vector<std::string>& bad :
+       {std::vector<std::string>{"--steps", "65"},
+        {"--d", "-1"},
+        {"--join", "sharp"},
+        {"--displace", "1,2,3"},
+        {"--displace", "10,5,30,10"}}) {  // θ min > max: the core's check
     std::vector<std::string> args = {"terrain", "shrink", "--builtin", "disk", "--svg", never};
     args.insert(args.end(), bad.begin(), bad.end());
     CliResult b = RunNiwa(args);
