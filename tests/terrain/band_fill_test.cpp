@@ -127,37 +127,27 @@ TEST(BandFill, HandCases) {
   EXPECT_EQ(FillWithinBands(5, 5, band, {4}, &w), 1u);
   EXPECT_EQ(w[12], 4);  // capped at the band's top
   // A basin of two cells (2 and 3) in a rim of 9 around an outlet ring of 1: both rise to 9.
-  std::vector<double> basin = {
+  // A 2-cell basin (floor 2 and 3) inside a rim of 9 on a 6 x 5 grid.
+  const std::vector<double> kBasin = {
       1, 1, 1, 1, 1, 1,  //
       1, 9, 9, 9, 9, 1,  //
       1, 9, 2, 3, 9, 1,  //
       1, 9, 9, 9, 9, 1,  //
       1, 1, 1, 1, 1, 1,  //
   };
+  std::vector<double> basin = kBasin;
   const std::vector<int> band30(30, 0);
   EXPECT_EQ(FillWithinBands(6, 5, band30, {10}, &basin), 2u);
   EXPECT_EQ(basin[14], 9);
   EXPECT_EQ(basin[15], 9);
   // The same basin's floor in band 1 of top 4 (the rim in band 0 of top 10): the basin stops at 4.
-  std::vector<double> capped = {
-      1, 1, 1, 1, 1, 1,  //
-      1, 9, 9, 9, 9, 1,  //
-      1, 9, 2, 3, 9, 1,  //
-      1, 9, 9, 9, 9, 1,  //
-      1, 1, 1, 1, 1, 1,  //
-  };
+  std::vector<double> capped = kBasin;
   std::vector<int> two_bands(30, 0);
   two_bands[14] = two_bands[15] = 1;
   EXPECT_EQ(FillWithinBands(6, 5, two_bands, {10, 4}, &capped), 2u);
   EXPECT_EQ(capped[14], 4);
   EXPECT_EQ(capped[15], 4);
-  std::vector<double> pd = {
-      1, 1, 1, 1, 1, 1,  //
-      1, 9, 9, 9, 9, 1,  //
-      1, 9, 2, 3, 9, 1,  //
-      1, 9, 9, 9, 9, 1,  //
-      1, 1, 1, 1, 1, 1,  //
-  };
+  std::vector<double> pd = kBasin;
   EXPECT_EQ(FillWithinBandsPlanchonDarboux(6, 5, two_bands, {10, 4}, &pd), 2u);
   EXPECT_EQ(pd, capped);
 }
