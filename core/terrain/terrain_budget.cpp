@@ -22,7 +22,8 @@ constexpr double kNsPerVertex = 10000;
 // The heightfield: h (8 bytes), band (4), the stamped a and b (8 + 8) and the painting rows (36
 // measured) a cell; a segment grid's
 // entry and cell list (about 48 bytes) a contour vertex. Time a cell (painting, stamping about
-// three contours' windows, the band height) and a vertex (its segment grid).
+// three contours' windows, the band height) and a vertex (its segment grid). The band fill's W,
+// marks and heap, where it raises cells, stay under the same figure (terrain_budget_test on valleys).
 constexpr double kBytesPerCell = 36, kBytesPerGridVertex = 48;
 constexpr double kNsPerCell = 600, kNsPerGridVertex = 400;
 

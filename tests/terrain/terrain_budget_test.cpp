@@ -72,6 +72,24 @@ TEST(TerrainBudget, GridSizeIsTheHeightfieldsOwn) {
   }
 }
 
+// The band fill's priority-flood (its heap, the marks, W) runs only where pits are left after
+// painting: on jacksboro it ends at its first raster scan, on valleys/improved it raises cells.
+TEST(TerrainBudget, HeightfieldEstimateHoldsThePeakWhenTheBandFillRaisesCells) {
+  for (double d : {20.0, 40.0}) {
+    const TerrainParams p = For("improved", d);
+    Result<Terrain> t = Grow(*BuiltinSeed("valleys"), p);
+    ASSERT_TRUE(t.ok());
+    for (int res : {256, 1024}) {
+      const GridSize g = TerrainGridSize(*t, res);
+      const long long base = AllocMeter::Reset();
+      Heightfield hf = BuildHeightfield(*t, res);
+      const std::string what = "valleys d " + std::to_string(d) + " res " + std::to_string(res);
+      ASSERT_GT(hf.cells_filled, 0u) << what << ": the fill raised nothing (not the case under test)";
+      ExpectBounds(EstimateHeightfield(*t, g).memory_bytes, AllocMeter::PeakAbove(base), what);
+    }
+  }
+}
+
 TEST(TerrainBudget, HeightfieldAndOutputEstimatesHoldTheMeasuredPeaks) {
   const TerrainParams p = For("improved", 20);
   Result<Terrain> t = Grow(*BuiltinSeed("jacksboro"), p);
