@@ -23,7 +23,7 @@ constexpr double kNsPerVertex = 10000;
 // measured) a cell; a segment grid's
 // entry and cell list (about 48 bytes) a contour vertex. Time a cell (painting, stamping about
 // three contours' windows, the band height) and a vertex (its segment grid). The band fill's W,
-// marks and heap, where it raises cells, stay under the same figure (terrain_budget_test on valleys).
+// marks and heap, where it raises cells, stay under the same figure (tested on valleys).
 constexpr double kBytesPerCell = 36, kBytesPerGridVertex = 48;
 constexpr double kNsPerCell = 600, kNsPerGridVertex = 400;
 

@@ -1,1 +1,1 @@
-// The one source of niwa_test_pch, the object library that owns the test binaries' precompiled header.
+// The one source of niwa_test_pch, the object library that owns the tests' precompiled header.

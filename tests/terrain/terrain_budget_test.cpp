@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "io/gltf_writer.h"
-#include "terrain/contour_io.h"
 #include "support/alloc_meter.h"
+#include "terrain/contour_io.h"
 #include "terrain/generate.h"
 #include "terrain/heightfield.h"
 #include "terrain/seeds.h"
@@ -84,7 +84,8 @@ TEST(TerrainBudget, HeightfieldEstimateHoldsThePeakWhenTheBandFillRaisesCells) {
       const long long base = AllocMeter::Reset();
       Heightfield hf = BuildHeightfield(*t, res);
       const std::string what = "valleys d " + std::to_string(d) + " res " + std::to_string(res);
-      ASSERT_GT(hf.cells_filled, 0u) << what << ": the fill raised nothing (not the case under test)";
+      ASSERT_GT(hf.cells_filled, 0u)
+          << what << ": the fill raised nothing (not the case under test)";
       ExpectBounds(EstimateHeightfield(*t, g).memory_bytes, AllocMeter::PeakAbove(base), what);
     }
   }
