@@ -141,6 +141,8 @@ await runBrowserTest(async (server, browser) => {
       /^page time budget: .*writing the \.glb \(301 keys of \d+ joints\) takes about \d+ s, more than the 60 s allowed; lower duration or years$/.test(slow.error) &&
       slow.beside === 'download-sway-glb' && slow.line === slow.error && slow.visible && slow.downloads === 0,
       `${slow.error} (beside #${slow.beside}, shown ${slow.visible}, ${slow.downloads} downloads)`);
+    await page.locator('#export-refused').scrollIntoViewIfNeeded();
+    await shoot(page, 'budget-sway-glb-refused.png');
     await page.goto(`${server.url}#preset=sakura&years=15`);
     await page.reload();
     await waitReady(page, 0, 100);
