@@ -8,6 +8,13 @@
 // 3. The max-growth parameters (maxgrow.json) for 100 years: a truncated tree (or a notice) naming
 //    the page's budget, no dead worker ("worker: [object WebAssembly.Exception]"), and the page
 //    still grows a tree after.
+// 4. The exports and the sway are estimated before they start (core/tree/tree_budget,
+//    core/sway/sway_budget through web/bindings/tree_bindings.cpp): on the 100-year sakura (at the
+//    page budget) Download .glb is refused with the page memory budget's line beside its button and
+//    nothing downloads, while Blow (within the budget) sways; on a 15-year sakura a sway .glb of
+//    50,000 steps is refused by the page time budget beside its own button, and the default 12 s
+//    clip downloads.
+// NIWA_BUDGET_PARTS=1,2,3,4 (any of them) runs only those parts; all by default.
 import fs from 'node:fs';
 import path from 'node:path';
 import { ARTIFACTS, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, waitReady, watchPage } from './harness.mjs';
@@ -51,11 +58,32 @@ async function timedClick(page, selector) {
   return Date.now() - start;
 }
 
+// An export asked for by `button`: resolves to {error, beside, exported, line} once it downloaded or
+// was refused (the hooks exportError / exportErrorButton / exported of web/tree/tree_page.js).
+async function exportBy(page, button) {
+  const before = (await hooks(page)).exported || '';
+  let downloads = 0;
+  const count = () => { downloads += 1; };
+  page.on('download', count);
+  await page.click(button);
+  await page.waitForFunction((b) => document.documentElement.dataset.exportError ||
+    (document.documentElement.dataset.exported || '') !== b, before, { timeout: TIMEOUT, polling: 100 });
+  const d = await hooks(page);
+  await page.waitForTimeout(300);  // a download event would follow the hook at once
+  page.off('download', count);
+  const lineId = d.exportErrorButton === 'download-glb' ? '#glb-refused' : '#export-refused';
+  const visible = d.exportError ? await page.isVisible(lineId) : false;
+  return { error: d.exportError || '', beside: d.exportErrorButton || '', exported: d.exported || '',
+    line: d.exportError ? (await page.textContent(lineId)).trim() : '', visible, downloads };
+}
+
+const PARTS = (process.env.NIWA_BUDGET_PARTS || '1,2,3,4').split(',');
+
 await runBrowserTest(async (server, browser) => {
   const context = await newContext(browser, { viewport: { width: 1100, height: 760 } });
 
   // 1. The 100-year sakura: responsive while growing and when the tree arrives.
-  {
+  if (PARTS.includes('1') || PARTS.includes('4')) {
     const page = watchPage(await context.newPage(), problems);
     await page.goto(`${server.url}#preset=sakura&years=100`);
     await page.waitForFunction(() => document.documentElement.dataset.status === 'growing', null, { timeout: TIMEOUT });
@@ -83,11 +111,50 @@ await runBrowserTest(async (server, browser) => {
       /^page (internode|memory) budget: stopped in year \d+ of 100: (the tree reached 400000 internodes|more internodes would need more than 1 GB); lower years/.test(progress),
       `${d.internodes} internodes, year ${d.year}: "${progress}"`);
     await shoot(page, 'budget-sakura-100.png');
+    if (PARTS.includes('4')) {
+      // 4a. The tree is at the page budget: its .glb (with the tree and mesh held) is not.
+      const glb = await exportBy(page, '#download-glb');
+      check('4: Download .glb is refused before it starts, the line beside its button',
+        /^page memory budget: growing the tree and building the mesh .* and writing the \.glb .*needs about [\d.]+ GB, more than the 1 GB allowed; lower years/.test(glb.error) &&
+        glb.beside === 'download-glb' && glb.line === glb.error && glb.visible && glb.downloads === 0,
+        `${glb.error} (beside #${glb.beside}, shown ${glb.visible}, ${glb.downloads} downloads)`);
+      // 4b. Blow: the sway's estimate (its simulator and poses beside the tree and mesh) fits.
+      await page.click('#wind');
+      await page.waitForFunction(() => document.documentElement.dataset.windError ||
+        Number(document.documentElement.dataset.swayTime) > 0, null, { timeout: TIMEOUT, polling: 100 });
+      const sway = await hooks(page);
+      check('4: Blow on the tree at the page budget sways (its estimate fits)', !sway.windError && Number(sway.swayTime) > 0,
+        sway.windError || `t = ${sway.swayTime} s`);
+      await page.click('#wind');  // Still
+    }
+    await page.close();
+  }
+
+  // 4c. A sway .glb whose run would take too long: refused by its estimate beside its button;
+  // the default clip of the same tree downloads.
+  if (PARTS.includes('4')) {
+    const page = watchPage(await context.newPage(), problems);
+    await page.goto(`${server.url}#preset=sakura&years=15&duration=10&dt=0.0002`);
+    await waitReady(page, 0, 100);
+    const slow = await exportBy(page, '#download-sway-glb');
+    check('4: a sway .glb of 50,000 steps is refused before it starts, the line beside its button',
+      /^page time budget: .*writing the \.glb \(301 keys of \d+ joints\) takes about \d+ s, more than the 60 s allowed; lower duration or years$/.test(slow.error) &&
+      slow.beside === 'download-sway-glb' && slow.line === slow.error && slow.visible && slow.downloads === 0,
+      `${slow.error} (beside #${slow.beside}, shown ${slow.visible}, ${slow.downloads} downloads)`);
+    await page.locator('#export-refused').scrollIntoViewIfNeeded();
+    await shoot(page, 'budget-sway-glb-refused.png');
+    await page.goto(`${server.url}#preset=sakura&years=15`);
+    await page.reload();
+    await waitReady(page, 0, 100);
+    const clip = await exportBy(page, '#download-sway-glb');
+    check('4: the default sway .glb (12 s at 30 fps) downloads, no line', !clip.error && clip.exported.startsWith('glb:') &&
+      clip.downloads === 1 && !(await page.isVisible('#export-refused')),
+      `${clip.exported}, ${clip.downloads} downloads${clip.error ? `, refused: ${clip.error}` : ''}`);
     await page.close();
   }
 
   // 2. Cancel: a small tree first (the last good one), then a long grow cancelled.
-  {
+  if (PARTS.includes('2')) {
     const page = watchPage(await context.newPage(), problems);
     await page.goto(`${server.url}#preset=sakura&years=8`);
     await waitReady(page, 0, 100);
@@ -115,7 +182,7 @@ await runBrowserTest(async (server, browser) => {
   }
 
   // 3. The max-growth hash: a notice naming the limit, a live worker.
-  {
+  if (PARTS.includes('3')) {
     const params = JSON.parse(fs.readFileSync(path.join(ROOT, 'tests/data/maxgrow.json'), 'utf8'));
     const hash = `#preset=sakura&years=100&${Object.entries(params).map(([k, v]) => `${k}=${v}`).join('&')}`;
     const page = watchPage(await context.newPage(), problems);

@@ -58,6 +58,13 @@ function compareWithNative(name, data, args) {
   check(`${name}: page --stats == native CLI (${args.join(' ')})`, same,
     same ? `${web.internodes} internodes, ${web.leaves} leaves, ${web.laterals} laterals`
       : `web ${JSON.stringify(web).slice(0, 300)} native ${JSON.stringify(withoutMs(native)).slice(0, 300)}`);
+  // The measurement's own re-checks by name (issue 16): the overlapping internode pairs of the
+  // x-sweep and the brute-force hit counts are in both and equal (a field missing from both would
+  // leave the equality above true).
+  const exact = ['overlap_pairs', 'internode_hits'].filter((k) => k in native);
+  check(`${name}: page overlap_pairs and internode re-checks == native CLI`,
+    exact.includes('overlap_pairs') && exact.every((k) => Number.isInteger(web[k]) && web[k] === native[k]),
+    exact.map((k) => `${k} ${web[k]} (native ${native[k]})`).join(', '));
 }
 
 const problems = [];

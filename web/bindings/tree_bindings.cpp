@@ -346,7 +346,10 @@ class TreeSession {
     const Status range = CheckValue("sway fps", fps, 1, 240, false);
     if (!range.ok()) return range.Line();
     const SwayParams params(state_.params);
-    const Estimate estimate = EstimateSwayGlb(sway_model_, CountTree(grower_->tree()), params, fps);
+    // The page's budget: the grown tree and its mesh (held meanwhile), the sway run and the clip.
+    const TreeCounts counts = CountTree(grower_->tree());
+    const Estimate estimate = grower_->estimate() + EstimateTreeExport(counts, TreeExport::kMesh) +
+                              EstimateSwayGlb(sway_model_, counts, params, fps);
     const Status fits = CheckEstimate(estimate, PageBudget(), "lower duration or years");
     if (!fits.ok()) return fits.Line();
     SwayGlbOptions options;

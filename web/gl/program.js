@@ -1,5 +1,9 @@
 // GLSL programs: fetches shader files and resolves `#include "file"` lines (relative to the file
 // that includes them, each file inserted once per shader, cycles refused), then compiles and links.
+// loadPrograms compiles and links every program of a renderer at once and, with
+// KHR_parallel_shader_compile, waits for them without blocking (issue 16: on SwiftShader a status
+// query right after compiling held the main thread 100-350 ms a shader, and the compile held the
+// GPU process, so the page's first clicks waited up to 1.8 s for a frame).
 // Does not: know any study's shaders, cache programs across contexts, or preprocess anything but
 // `#include` (no #define injection; GLSL ES keeps its own preprocessor).
 
@@ -52,29 +56,39 @@ export function cachedReader(read = fetchText) {
   };
 }
 
-function compile(gl, type, source, name) {
+function compile(gl, type, source) {
   const shader = gl.createShader(type);
   gl.shaderSource(shader, source);
   gl.compileShader(shader);
-  if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) {
-    const log = gl.getShaderInfoLog(shader);
-    gl.deleteShader(shader);
-    throw new Error(`shader ${name}: ${log}`);
-  }
   return shader;
 }
 
-// Compiles and links two sources; returns {program, uniforms: {name: location}}.
-export function link(gl, vertexSource, fragmentSource, name) {
+// Starts compiling and linking two sources (no status is read: that would wait for the compile).
+function startLink(gl, vertexSource, fragmentSource, name) {
   const program = gl.createProgram();
-  const vs = compile(gl, gl.VERTEX_SHADER, vertexSource, `${name}.vert`);
-  const fs = compile(gl, gl.FRAGMENT_SHADER, fragmentSource, `${name}.frag`);
+  const vs = compile(gl, gl.VERTEX_SHADER, vertexSource);
+  const fs = compile(gl, gl.FRAGMENT_SHADER, fragmentSource);
   gl.attachShader(program, vs);
   gl.attachShader(program, fs);
   gl.linkProgram(program);
+  return { program, vs, fs, name };
+}
+
+// The linked program's {program, uniforms}, or the compile or link log as an error.
+function finishLink(gl, { program, vs, fs, name }) {
+  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
+    for (const [shader, suffix] of [[vs, 'vert'], [fs, 'frag']]) {
+      if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) {
+        const log = gl.getShaderInfoLog(shader);
+        throw new Error(`shader ${name}.${suffix}: ${log}`);
+      }
+    }
+    throw new Error(`program ${name}: ${gl.getProgramInfoLog(program)}`);
+  }
+  gl.detachShader(program, vs);
+  gl.detachShader(program, fs);
   gl.deleteShader(vs);
   gl.deleteShader(fs);
-  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) throw new Error(`program ${name}: ${gl.getProgramInfoLog(program)}`);
   const uniforms = {};
   const count = gl.getProgramParameter(program, gl.ACTIVE_UNIFORMS);
   for (let i = 0; i < count; ++i) {
@@ -84,12 +98,36 @@ export function link(gl, vertexSource, fragmentSource, name) {
   return { program, uniforms };
 }
 
+// Compiles and links two sources; returns {program, uniforms: {name: location}} (blocking).
+export function link(gl, vertexSource, fragmentSource, name) {
+  return finishLink(gl, startLink(gl, vertexSource, fragmentSource, name));
+}
+
+// Resolves once every program of `started` has finished linking: polled every `ms` through
+// KHR_parallel_shader_compile's COMPLETION_STATUS_KHR (which never blocks); at once without the
+// extension (the status queries then wait, as before).
+export function whenLinked(gl, started, ms = 16) {
+  const ext = gl.getExtension('KHR_parallel_shader_compile');
+  if (!ext) return Promise.resolve();
+  return new Promise((resolve) => {
+    const poll = () => {
+      if (gl.isContextLost() || started.every((s) => gl.getProgramParameter(s.program, ext.COMPLETION_STATUS_KHR))) resolve();
+      else setTimeout(poll, ms);
+    };
+    poll();
+  });
+}
+
 // Loads several programs at once. specs: {name: [vertexPath, fragmentPath]}, paths relative to
-// `base` (a URL ending in '/'); returns {name: {program, uniforms}}.
+// `base` (a URL ending in '/'); returns {name: {program, uniforms}}. Every program is compiled and
+// linked before any status is read, and (with KHR_parallel_shader_compile) the renderer's first
+// frame waits until they are all done without blocking the page.
 export async function loadPrograms(gl, base, specs) {
   const read = cachedReader();
   const entries = Object.entries(specs);
   const sources = await Promise.all(entries.map(([, [vert, frag]]) => Promise.all([
     resolveIncludes(new URL(vert, base).href, read), resolveIncludes(new URL(frag, base).href, read)])));
-  return Object.fromEntries(entries.map(([name], i) => [name, link(gl, sources[i][0], sources[i][1], name)]));
+  const started = entries.map(([name], i) => startLink(gl, sources[i][0], sources[i][1], name));
+  await whenLinked(gl, started);
+  return Object.fromEntries(entries.map(([name], i) => [name, finishLink(gl, started[i])]));
 }

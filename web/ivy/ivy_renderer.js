@@ -80,6 +80,49 @@ export class IvyRenderer {
       ivy: ['ivy.vert', 'ivy.frag'],
       marker: ['marker.vert', 'marker.frag'],
     });
+    await this.#warmUp();
+  }
+
+  // Draws one frame of a one-triangle support, stem and seed (every program with the vertex
+  // layouts and state render() uses) and waits for the GPU to finish it, before the page asks for
+  // its first grow. On SwiftShader the first draw of each program and state compiles its routines
+  // in the GPU process: 0.6-1.4 s (docs/budgets.md, "Responsiveness") that held the compositor, so
+  // a click during the first grow waited for it. Nothing of it stays (the next frame clears).
+  async #warmUp() {
+    const gl = this.gl;
+    const triangle = {
+      positions: new Float32Array([0, 0, 0, 1e-3, 0, 0, 0, 1e-3, 0]).buffer,
+      normals: new Float32Array([0, 0, 1, 0, 0, 1, 0, 0, 1]).buffer,
+      indices: new Uint32Array([0, 1, 2]).buffer,
+    };
+    this.#uploadSupport(triangle);
+    const vao = gl.createVertexArray();
+    gl.bindVertexArray(vao);
+    const buffers = [staticBuffer(gl, new Float32Array(triangle.positions)), staticBuffer(gl, new Float32Array(triangle.normals)),
+      staticBuffer(gl, new Float32Array([0, 0, 0]))];
+    floatAttribute(gl, 0, buffers[0], 3);
+    floatAttribute(gl, 1, buffers[1], 3);
+    floatAttribute(gl, 2, buffers[2], 1);
+    buffers.push(staticBuffer(gl, new Uint32Array(triangle.indices), gl.ELEMENT_ARRAY_BUFFER));
+    gl.bindVertexArray(null);
+    this.parts.stems = { vao, buffers, count: 3, births: () => 1 };
+    this.setSeeds([[0, 0, 0]]);
+    const camera = { viewProjection: () => [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], position: () => [0, 0, 1] };
+    this.render(camera);
+    this.#drop('support');
+    this.#drop('stems');
+    this.seeds.count = 0;
+    const fence = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+    gl.flush();
+    if (!fence) return;
+    await new Promise((resolve) => {
+      const poll = () => {
+        if (gl.isContextLost() || gl.getSyncParameter(fence, gl.SYNC_STATUS) === gl.SIGNALED) resolve();
+        else setTimeout(poll, 16);
+      };
+      poll();
+    });
+    if (!gl.isContextLost()) gl.deleteSync(fence);
   }
 
   // The support (no birth steps: always drawn), uploaded at once.

@@ -1,7 +1,8 @@
 // Game-ready downloads of the tree page (issue 17 item 4): a triangle budget field, a budgeted
 // .glb, an LOD .glb (tree_LOD0..2) and the wind sway as an animated .glb, all made by the worker
-// (core/render/tree_lod, core/sway/sway_gltf through TreeSession). Does not: grow, draw, or know
-// the state; the page hands it requestExport(format, fields).
+// (core/render/tree_lod, core/sway/sway_gltf through TreeSession), and the line of an export the
+// worker refused (the page budget's estimate, issue 16) beside the button that asked for it.
+// Does not: grow, draw, estimate, or know the state; the page hands it requestExport(format, fields).
 
 const MIN_TRIANGLES = 6; // core/render/tree_lod.h kMinLodTriangles
 const MAX_TRIANGLES = 100000000;
@@ -33,7 +34,8 @@ export function mountExportPanel(anchor, requestExport) {
       <button id="download-budget-glb" type="button">Download budget .glb</button>
       <button id="download-lod-glb" type="button">Download LOD .glb</button>
       <button id="download-sway-glb" type="button">Download sway .glb</button>
-    </div>`;
+    </div>
+    <p id="export-refused" class="field-error" role="alert" hidden></p>`;
   anchor.after(box);
   const field = box.querySelector('#export-max-triangles');
   const error = box.querySelector('#export-budget-error');
@@ -56,4 +58,39 @@ export function mountExportPanel(anchor, requestExport) {
     requestExport('glb', { variant: 'sway', fps: 30 });
   });
   return box;
+}
+
+// The buttons of each export variant (undefined: the page's own Download .glb).
+const VARIANT_BUTTONS = { budget: 'download-budget-glb', lod: 'download-lod-glb', sway: 'download-sway-glb' };
+
+// Where a refused export's line goes: under the export panel's buttons for its variants, else in a
+// line made once right after the row holding #download-glb (`plainButton`). Returns
+// {show(variant, line), clear()}; show() returns the id of the button the line is beside.
+export function exportRefusals(panel, plainButton) {
+  const panelLine = panel.querySelector('#export-refused');
+  const plainLine = document.createElement('p');
+  plainLine.id = 'glb-refused';
+  plainLine.className = 'field-error';
+  plainLine.setAttribute('role', 'alert');
+  plainLine.hidden = true;
+  (plainButton.closest('.buttons') || plainButton).after(plainLine);
+  const lines = [panelLine, plainLine];
+  const clear = () => {
+    for (const line of lines) {
+      line.textContent = '';
+      line.hidden = true;
+    }
+  };
+  return {
+    clear,
+    show(variant, text) {
+      clear();
+      const button = VARIANT_BUTTONS[variant] || plainButton.id;
+      const line = VARIANT_BUTTONS[variant] ? panelLine : plainLine;
+      line.textContent = text;
+      line.hidden = false;
+      document.getElementById(button)?.setAttribute('aria-describedby', line.id);
+      return button;
+    },
+  };
 }

@@ -19,7 +19,7 @@ import { EditFeedback } from './edit_feedback.js';
 import { GettingStarted } from './getting_started.js';
 import { RenderTable } from './render_table.js';
 import { mountStateFile } from './state_file.js';
-import { mountExportPanel } from './export_panel.js';
+import { exportRefusals, mountExportPanel } from './export_panel.js';
 import { Renderer } from './tree_renderer.js';
 
 const $ = (id) => document.getElementById(id);
@@ -569,7 +569,7 @@ worker.on('pose', (msg) => {
   requestFrame();
 });
 
-const exportIds = new Set();
+const exportIds = new Map();  // export request id -> its variant (undefined: the plain .glb / .json)
 worker.on('export', (msg) => {
   exportIds.delete(msg.id);
   if (exportIds.size === 0 && ui.progressBar.hidden) showCancel(false);
@@ -581,8 +581,14 @@ worker.on('export', (msg) => {
 });
 
 worker.on('error', (msg) => {
+  const variant = exportIds.get(msg.id);
   if (exportIds.delete(msg.id)) {
-    ui.shareStatus.textContent = `Export failed: ${msg.message}`;
+    // Refused before it started (the page budget's estimate, docs/budgets.md): the line beside the
+    // button that asked for it.
+    if (exportIds.size === 0 && ui.progressBar.hidden) showCancel(false);
+    ui.shareStatus.textContent = 'Export failed (the reason is beside its button).';
+    const button = refusals.show(variant, msg.message);
+    setHooks({ exportError: msg.message, exportErrorButton: button });
     return;
   }
   if (msg.control === 'motion') {  // no cheaper representation for this tree: full frames only
@@ -765,10 +771,12 @@ let exports = 0;
 function requestExport(format, fields = {}) {
   const { id } = worker.request('export', { format, ...fields }, { group: `export-${++exports}`, done: ['export'] });
   showCancel(true);
-  exportIds.add(id);
+  exportIds.set(id, fields.variant);
+  refusals.clear();
+  setHooks({ exportError: '', exportErrorButton: '' });
 }
 ui.downloadGlb.addEventListener('click', () => requestExport('glb'));
-mountExportPanel(ui.downloadGlb.parentElement, requestExport);
+const refusals = exportRefusals(mountExportPanel(ui.downloadGlb.parentElement, requestExport), ui.downloadGlb);
 ui.downloadJson.addEventListener('click', () => requestExport('json'));
 ui.downloadPng.addEventListener('click', () => {
   if (!renderer) return;

@@ -282,7 +282,10 @@ export function createHandler(Module, ctx) {
         : (msg.variant === 'lod' || msg.variant === 'budget')
           ? session.buildLodGlb(Number(msg.maxTriangles ?? -1), msg.variant === 'lod')
           : session.buildGlb();
-      if (error) throw new Error(error);
+      if (error) {  // refused by the page budget's estimate before it started (or a bad value): the line itself
+        post({ type: 'error', id: msg.id, client, message: error, control: 'export' });
+        return;
+      }
       bytes = copyView(session.buffers('glb').bytes);
     } else if (msg.format === 'json') {
       bytes = new TextEncoder().encode(session.paramsJson()).buffer;
