@@ -121,10 +121,9 @@ double BruteBandHeight(const Terrain& t, const std::vector<int>& summit_of, int 
 }
 
 // The sub-cell slots of the painted map given to their children (band_fill.h) and the moved cells'
-// heights taken in their new band. Gated by the fill's first scan: with no cell lacking a lower
-// neighbour there is no island (band_fill.h), and the map is left as painted.
+// heights taken in their new band. Called only when the fill's first scan finds a cell without a
+// lower neighbour (else there is no island: band_fill.h, and the map is left as painted).
 void AssignSlotsOnSurface(const Terrain& t, Heightfield* hf) {
-  if (!AnyCellWithoutLowerNeighbour(hf->width, hf->height, hf->band, hf->h)) return;
   const std::vector<int> painted = hf->band;
   hf->slot_cells = AssignSubCellSlots(hf->width, hf->height, t, &hf->band);
   if (hf->slot_cells == 0) return;
@@ -167,9 +166,40 @@ Heightfield BandSurfaceOn(const Terrain& t, const Heightfield& grid) {
       const int j1 = std::min(
           hf.height - 1,
           static_cast<int>(std::floor((hf.y1 - std::min(a.y, e.y) + rho) / hf.cell - 0.5)));
+      // Per row, only the cells whose centres can lie within ρ of the segment: if a point (x, y)
+      // is within ρ of the segment point s, then |y − s.y| ≤ ρ and |x − s.x| ≤ √(ρ² − dy²), dy
+      // the least |y − s.y| over the segment. So x lies within w = √(ρ² − dy²) of the x-range
+      // of the part of the segment with |y − s.y| ≤ ρ. A cell this skips is more than ρ from
+      // the segment (up to rounding, far inside the margin ρ − ρ_in), so its least stamped value
+      // is over the limit either way and the result is unchanged (the twin test checks it).
+      const double ylo = std::min(a.y, e.y), yhi = std::max(a.y, e.y);
+      const double dy_seg = e.y - a.y, dx_seg = e.x - a.x;
       for (int j = j0; j <= j1; ++j) {
         const std::size_t row = static_cast<std::size_t>(j) * hf.width;
-        for (int i = i0; i <= i1; ++i) {
+        const double y = hf.y1 - (j + 0.5) * hf.cell;
+        const double dy = y < ylo ? ylo - y : y > yhi ? y - yhi : 0.0;
+        if (dy > rho) continue;
+        const double w = std::sqrt(rho * rho - dy * dy);
+        // The x-range of the segment's part within [y − ρ, y + ρ] (the whole segment when
+        // it is nearly horizontal).
+        double xs0 = std::min(a.x, e.x), xs1 = std::max(a.x, e.x);
+        if (std::fabs(dy_seg) > 1e-9 * (std::fabs(dx_seg) + 1)) {
+          double t0 = (y - rho - a.y) / dy_seg, t1 = (y + rho - a.y) / dy_seg;
+          if (t0 > t1) std::swap(t0, t1);
+          t0 = std::max(0.0, t0);
+          t1 = std::min(1.0, t1);
+          if (t0 <= t1) {
+            const double xa = a.x + t0 * dx_seg, xb = a.x + t1 * dx_seg;
+            xs0 = std::max(xs0, std::min(xa, xb));
+            xs1 = std::min(xs1, std::max(xa, xb));
+          }
+        }
+        const double pad = 1e-9 * (rho + std::fabs(xs0) + std::fabs(xs1)) + 1e-9;
+        const int ri0 =
+            std::max(i0, static_cast<int>(std::ceil((xs0 - w - pad - hf.x0) / hf.cell - 0.5)));
+        const int ri1 =
+            std::min(i1, static_cast<int>(std::floor((xs1 + w + pad - hf.x0) / hf.cell - 0.5)));
+        for (int i = ri0; i <= ri1; ++i) {
           const std::size_t k = row + static_cast<std::size_t>(i);
           const int b = hf.band[k];
           if (b != id && (b != parent || parent < 0)) continue;
@@ -241,7 +271,9 @@ Heightfield BuildHeightfield(const Terrain& t, int res, bool fill_depressions) {
 Heightfield BuildHeightfieldOn(const Terrain& t, const Heightfield& grid, bool fill_depressions) {
   if (t.contours.empty()) return Heightfield();
   Heightfield hf = BandSurfaceOn(t, grid);  // its stamped distances freed before the fill
-  if (fill_depressions) {
+  // The fill's first scan decides both steps: with every cell draining there is no slot island
+  // and nothing to raise (band_fill.h), and the scan is not repeated.
+  if (fill_depressions && AnyCellWithoutLowerNeighbour(hf.width, hf.height, hf.band, hf.h)) {
     AssignSlotsOnSurface(t, &hf);
     FillHeightfieldWithinBands(t, &hf);
   }
