@@ -7,7 +7,8 @@
 //  "min_ms", "reps", "units" (cells), "screen_ms": median from the pointer's release to the frame
 //  that shows the new mountain (the page's upload and draw on SwiftShader included), "parts": the
 //  worker's median split (repair, grow, stats, copy, state; core_grow, core_heightfield and
-//  core_buffers inside grow)}.
+//  core_buffers inside grow; stats_after: the stats the worker computes and posts right after the
+//  mountain, outside "ms", web/worker/terrain_handler.js)}.
 //
 // node bench/terrain_page.mjs [--reps 7] [--res 512]
 // Needs build/wasm/web/niwa_web.js (cmake --build build/wasm --target niwa_web) and playwright-core.
@@ -82,7 +83,7 @@ try {
     if (rep > 0) {
       worker.push(Number(d.wallMs));
       // The worker's steps, and inside its grow step the core's (TerrainLab's timings).
-      parts.push({ ...JSON.parse(d.regrowParts || '{}'), core_grow: Number(d.msGrow), core_heightfield: Number(d.msHeightfield), core_buffers: Number(d.msBuffers) });
+      parts.push({ ...JSON.parse(d.regrowParts || '{}'), core_grow: Number(d.msGrow), core_heightfield: Number(d.msHeightfield), core_buffers: Number(d.msBuffers), stats_after: Number(d.msStatsAfter) });
     }
   }
   const shown = (await page.evaluate(() => window.__regrow.shown)).slice(1);

@@ -92,7 +92,10 @@ Workload HeightfieldWorkload(int res, bool brute) {
 // The page's regrow of a drawn seed (web/bindings/terrain_bindings.cpp TerrainLab::grow and
 // statsJson, without JavaScript): a 120-point seed like bench/terrain_page.mjs's drawing, r = 300
 // m· (1 + 0.2 cos 3φ + 0.06 sin 11φ), grown with the improved method from its state, the 512²
-// heightfield, the stats object (exact checks and the link included) and the flat buffers.
+// heightfield, the stats object (exact checks and the link included) and the flat buffers. All the
+// core work of one regrow: the page now gets the mountain before the stats (which the worker
+// computes right after posting it, web/worker/terrain_handler.js), so its posted time is this
+// less the stats, and it copies into recycled buffers, which this does not time.
 Workload PageRegrowWorkload(int res) {
   Workload wl;
   wl.name = "terrain/page-regrow/drawn-" + std::to_string(res);

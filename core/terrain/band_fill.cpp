@@ -2,6 +2,7 @@
 #include "terrain/band_fill.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -43,7 +44,228 @@ double Offer(const std::vector<double>& h, const std::vector<int>& band,
   return std::max(h[k], std::min(top[static_cast<std::size_t>(band[k])], w));
 }
 
+// The contour tree as pre-order intervals: d is a strict descendant of c iff
+// pre[c] < pre[d] < end[c].
+struct TreeOrder {
+  std::vector<int> pre, end;
+  explicit TreeOrder(const Terrain& t) : pre(t.contours.size()), end(t.contours.size()) {
+    int next = 0;
+    std::vector<std::pair<int, std::size_t>> stack;  // (contour, next child to visit)
+    for (std::size_t r = 0; r < t.contours.size(); ++r) {
+      if (t.contours[r].parent >= 0) continue;
+      stack.push_back({static_cast<int>(r), 0});
+      pre[r] = next++;
+      while (!stack.empty()) {
+        auto& [c, child] = stack.back();
+        const std::vector<int>& kids = t.contours[static_cast<std::size_t>(c)].children;
+        if (child < kids.size()) {
+          const int k = kids[child++];
+          pre[static_cast<std::size_t>(k)] = next++;
+          stack.push_back({k, 0});
+        } else {
+          end[static_cast<std::size_t>(c)] = next;
+          stack.pop_back();
+        }
+      }
+    }
+  }
+  bool StrictlyInside(int d, int c) const {
+    if (d < 0) return false;
+    const int p = pre[static_cast<std::size_t>(d)];
+    return pre[static_cast<std::size_t>(c)] < p && p < end[static_cast<std::size_t>(c)];
+  }
+};
+
+// Whether band-b cell (i, j) touches the rest of the world: it lies on the grid's edge or one of
+// its 8 neighbours is neither in band b nor in a strict descendant of b.
+bool Anchored(int width, int height, const std::vector<int>& band, const TreeOrder& tree, int i,
+              int j) {
+  if (i == 0 || j == 0 || i + 1 == width || j + 1 == height) return true;
+  const std::size_t k = static_cast<std::size_t>(j) * width + i;
+  const int b = band[k];
+  for (int q = 0; q < 8; ++q) {
+    const int bn = band[k + static_cast<std::ptrdiff_t>(kDj[q]) * width + kDi[q]];
+    if (bn != b && !tree.StrictlyInside(bn, b)) return true;
+  }
+  return false;
+}
+
+// The child of b whose subtree holds d (a strict descendant of b).
+int ChildOnPath(const Terrain& t, int b, int d) {
+  while (t.contours[static_cast<std::size_t>(d)].parent != b)
+    d = t.contours[static_cast<std::size_t>(d)].parent;
+  return d;
+}
+
+// The child an island of band b goes to: the one holding most (cell, outer neighbour) pairs, ties
+// to the lower index (band_fill.h). `cells` are the island's cells.
+int IslandChild(int width, const Terrain& t, const std::vector<int>& band, int b,
+                const std::vector<std::uint32_t>& cells) {
+  std::vector<std::pair<int, int>> votes;  // (child, count)
+  for (const std::uint32_t k : cells)
+    for (int q = 0; q < 8; ++q) {
+      const int bn = band[k + static_cast<std::ptrdiff_t>(kDj[q]) * width + kDi[q]];
+      if (bn == b) continue;
+      const int child = ChildOnPath(t, b, bn);
+      auto it = std::find_if(votes.begin(), votes.end(),
+                             [child](const std::pair<int, int>& v) { return v.first == child; });
+      if (it == votes.end())
+        votes.push_back({child, 1});
+      else
+        ++it->second;
+    }
+  int best = -1, best_count = 0;
+  for (const auto& [child, count] : votes)
+    if (count > best_count || (count == best_count && child < best)) {
+      best = child;
+      best_count = count;
+    }
+  return best;
+}
+
 }  // namespace
+
+std::size_t AssignSubCellSlots(int width, int height, const Terrain& t, std::vector<int>* band_io) {
+  std::vector<int>& band = *band_io;
+  const std::size_t cells = static_cast<std::size_t>(width) * height;
+  if (cells == 0 || t.contours.empty()) return 0;
+  const TreeOrder tree(t);
+  std::size_t relabelled = 0;
+  std::vector<char> anchored(cells);
+  std::vector<std::uint32_t> fifo, island;
+  fifo.reserve(cells);
+  for (;;) {
+    // Anchored cells, then everything 8-connected to them within their band.
+    std::fill(anchored.begin(), anchored.end(), 0);
+    fifo.clear();
+    for (int j = 0; j < height; ++j)
+      for (int i = 0; i < width; ++i) {
+        const std::size_t k = static_cast<std::size_t>(j) * width + i;
+        if (band[k] < 0 || !Anchored(width, height, band, tree, i, j)) continue;
+        anchored[k] = 1;
+        fifo.push_back(static_cast<std::uint32_t>(k));
+      }
+    for (std::size_t r = 0; r < fifo.size(); ++r) {
+      const std::size_t k = fifo[r];
+      const int i = static_cast<int>(k % static_cast<std::size_t>(width));
+      const int j = static_cast<int>(k / static_cast<std::size_t>(width));
+      for (int q = 0; q < 8; ++q) {
+        std::size_t n;
+        if (!Neighbour(width, height, i, j, q, &n)) continue;
+        if (!anchored[n] && band[n] == band[k]) {
+          anchored[n] = 1;
+          fifo.push_back(static_cast<std::uint32_t>(n));
+        }
+      }
+    }
+    // Each island (a component of unanchored band cells; never on the grid's edge) to its child.
+    bool any = false;
+    for (std::size_t s = 0; s < cells; ++s) {
+      if (band[s] < 0 || anchored[s]) continue;
+      any = true;
+      const int b = band[s];
+      island.assign(1, static_cast<std::uint32_t>(s));
+      anchored[s] = 1;  // reused as "visited"
+      for (std::size_t r = 0; r < island.size(); ++r) {
+        const std::size_t k = island[r];
+        for (int q = 0; q < 8; ++q) {
+          const std::size_t n = k + static_cast<std::ptrdiff_t>(kDj[q]) * width + kDi[q];
+          if (!anchored[n] && band[n] == b) {
+            anchored[n] = 1;
+            island.push_back(static_cast<std::uint32_t>(n));
+          }
+        }
+      }
+      const int child = IslandChild(width, t, band, b, island);
+      for (const std::uint32_t k : island) band[k] = child;
+      relabelled += island.size();
+    }
+    if (!any) return relabelled;
+  }
+}
+
+std::size_t AssignSubCellSlotsBySweeps(int width, int height, const Terrain& t,
+                                       std::vector<int>* band_io) {
+  std::vector<int>& band = *band_io;
+  const std::size_t cells = static_cast<std::size_t>(width) * height;
+  if (cells == 0 || t.contours.empty()) return 0;
+  const TreeOrder tree(t);
+  std::size_t relabelled = 0;
+  for (;;) {
+    // Anchoring spreads one neighbour per sweep until nothing changes.
+    std::vector<char> anchored(cells, 0);
+    for (int j = 0; j < height; ++j)
+      for (int i = 0; i < width; ++i) {
+        const std::size_t k = static_cast<std::size_t>(j) * width + i;
+        anchored[k] = band[k] >= 0 && Anchored(width, height, band, tree, i, j);
+      }
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (int j = 1; j + 1 < height; ++j)
+        for (int i = 1; i + 1 < width; ++i) {
+          const std::size_t k = static_cast<std::size_t>(j) * width + i;
+          if (band[k] < 0 || anchored[k]) continue;
+          for (int q = 0; q < 8; ++q) {
+            const std::size_t n = k + static_cast<std::ptrdiff_t>(kDj[q]) * width + kDi[q];
+            if (anchored[n] && band[n] == band[k]) {
+              anchored[k] = 1;
+              changed = true;
+              break;
+            }
+          }
+        }
+    }
+    // Components of the unanchored cells: every cell takes the least index in its component.
+    std::vector<std::uint32_t> label(cells);
+    bool any = false;
+    for (std::size_t k = 0; k < cells; ++k) {
+      label[k] = static_cast<std::uint32_t>(k);
+      if (band[k] >= 0 && !anchored[k]) any = true;
+    }
+    if (!any) return relabelled;
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (std::size_t k = 0; k < cells; ++k) {
+        if (band[k] < 0 || anchored[k]) continue;
+        for (int q = 0; q < 8; ++q) {
+          const std::size_t n = k + static_cast<std::ptrdiff_t>(kDj[q]) * width + kDi[q];
+          if (!anchored[n] && band[n] == band[k] && label[n] < label[k]) {
+            label[k] = label[n];
+            changed = true;
+          }
+        }
+      }
+    }
+    // Each component's child from the map as it was at the start of the pass.
+    const std::vector<int> before = band;
+    for (std::size_t root = 0; root < cells; ++root) {
+      if (before[root] < 0 || anchored[root] || label[root] != root) continue;
+      std::vector<std::uint32_t> island;
+      for (std::size_t k = root; k < cells; ++k)
+        if (before[k] >= 0 && !anchored[k] && label[k] == root)
+          island.push_back(static_cast<std::uint32_t>(k));
+      const int child = IslandChild(width, t, before, before[root], island);
+      for (const std::uint32_t k : island) band[k] = child;
+      relabelled += island.size();
+    }
+  }
+}
+
+bool AnyCellWithoutLowerNeighbour(int width, int height, const std::vector<int>& band,
+                                  const std::vector<double>& h) {
+  // Off the outlets all cells are inside the grid's edge, so the neighbours are fixed offsets.
+  for (int j = 1; j + 1 < height; ++j) {
+    for (int i = 1; i + 1 < width; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * width + i;
+      if (band[k] < 0) continue;
+      bool lower = false;
+      for (int q = 0; q < 8 && !lower; ++q)
+        lower = h[k + static_cast<std::ptrdiff_t>(kDj[q]) * width + kDi[q]] < h[k];
+      if (!lower) return true;
+    }
+  }
+  return false;
+}
 
 std::size_t FillWithinBands(int width, int height, const std::vector<int>& band,
                             const std::vector<double>& top, std::vector<double>* h) {
@@ -51,22 +273,8 @@ std::size_t FillWithinBands(int width, int height, const std::vector<int>& band,
   if (cells == 0) return 0;
   const std::vector<double>& h0 = *h;
   // 0. If every cell off the outlets has a strictly lower neighbour, every one has a strictly
-  // descending path to an outlet and nothing is raised: one raster scan (off the outlets all
-  // cells are inside the grid's edge, so the neighbours are fixed offsets).
-  bool any_minimum = false;
-  for (int j = 1; j + 1 < height && !any_minimum; ++j) {
-    for (int i = 1; i + 1 < width; ++i) {
-      const std::size_t k = static_cast<std::size_t>(j) * width + i;
-      if (band[k] < 0) continue;
-      bool lower = false;
-      for (int q = 0; q < 8 && !lower; ++q)
-        lower = h0[k + static_cast<std::ptrdiff_t>(kDj[q]) * width + kDi[q]] < h0[k];
-      if (!lower) {
-        any_minimum = true;
-        break;
-      }
-    }
-  }
+  // descending path to an outlet and nothing is raised: one raster scan.
+  const bool any_minimum = AnyCellWithoutLowerNeighbour(width, height, band, h0);
   if (!any_minimum) return 0;
   // 1. The cells with a strictly descending 8-path to an outlet keep W = h (the path's maximum is
   // their own height): a breadth-first search up from the outlets, no heap. On a surface without

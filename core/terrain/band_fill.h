@@ -1,7 +1,7 @@
-// Depression filling that keeps every contour's level set: a priority-flood (Barnes, Lehman & Mulla
-// 2014, Alg. 2) whose raise of a cell is capped at the top of the cell's band, and its brute-force
-// Planchon-Darboux (2001) twin for the tests. Does not: build the surface (heightfield.h) or lower
-// any cell.
+// Depression filling that keeps every contour's level set: sub-cell slots of a band given to the
+// child around them, then a priority-flood (Barnes, Lehman & Mulla 2014, Alg. 2) whose raise of a
+// cell is capped at the top of the cell's band; each with a brute-force twin for the tests. Does
+// not: build the surface (heightfield.h) or lower any cell.
 //
 // Hand-written: no library for this builds for both targets in our toolchain (/work/shared/
 // TOOLCHAIN.md lists none; RichDEM, the authors' own code, is not a Debian package, only Python
@@ -17,6 +17,33 @@ namespace niwa::terrain {
 
 struct Heightfield;
 
+// Sub-cell slots (docs/terrain-model.md, "Sub-cell slots"). The painted band map samples each
+// band at the cell centres; where a band C is narrower than a cell (a slot of C's band cutting
+// into a child of C, or a gap between two children), the grid can see cells of C's band that are
+// cut off from the rest of it: an 8-connected component of band-C cells none of whose 8
+// neighbours lies outside C's strict descendants (no neighbour in C's parent's band, outside
+// the lowest contour, in a sibling's subtree or off the grid). Such an island cannot drain within
+// its band, and a fill capped at C's top leaves it below its neighbours (a pit). The grid cannot
+// represent the slot, so the island is given to the child of C that holds most of its outer
+// neighbours (counted per cell and neighbour; ties to the lower contour index): band[k] = that
+// child. Repeated until no island is left (a slot through two levels moves down twice). Returns
+// the number of relabelled cells (a cell moved twice counts twice). O(cells) per pass; a map
+// without islands takes one pass.
+std::size_t AssignSubCellSlots(int width, int height, const Terrain& terrain,
+                               std::vector<int>* band);
+// The same by fixpoint raster sweeps (anchoring spread one neighbour per sweep, components by
+// least-index propagation): the test's twin, O(cells²) at worst. Equal to AssignSubCellSlots.
+std::size_t AssignSubCellSlotsBySweeps(int width, int height, const Terrain& terrain,
+                                       std::vector<int>* band);
+
+// Whether some cell off the outlets (band ≥ 0, not on the grid's edge) has no strictly lower
+// neighbour: the fill's first scan. False means nothing can be raised, and also that the band
+// map has no sub-cell slot island (an island's lowest cell has no lower neighbour: its band's
+// heights are at most its top, which is the child's elevation, the least height inside the
+// child), so AssignSubCellSlots would change nothing: heightfield.cpp skips it then.
+bool AnyCellWithoutLowerNeighbour(int width, int height, const std::vector<int>& band,
+                                  const std::vector<double>& h);
+
 // The filled surface W on a width × height grid (row-major, 8-neighbour) is the smallest one with
 // W ≥ h and, for every cell c that is not an outlet,
 //   W[c] = max(h[c], min(top[band[c]], min over the 8 neighbours n of W[n])),
@@ -26,8 +53,9 @@ struct Heightfield;
 // band, so each contour stays the level set between its band and its parent's
 // (docs/terrain-model.md). After the fill a cell below all 8 neighbours is one already at its
 // band's top whose 8 neighbours are all above it (raising it further would take it out of its
-// band). A cell already above its top (never one of ours; see BandTops) keeps its h. Returns the
-// number of cells raised (W > h).
+// band): on the heightfield's band map, after AssignSubCellSlots, none is left on any built-in
+// (tests/terrain/heightfield_test.cpp). A cell already above its top (never one of ours; see
+// BandTops) keeps its h. Returns the number of cells raised (W > h).
 //
 // First a raster scan: if every cell off the outlets has a strictly lower neighbour, nothing is
 // raised and the fill ends (the usual case, O(cells)). Else a breadth-first search up from the

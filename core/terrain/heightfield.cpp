@@ -70,8 +70,9 @@ Heightfield GridFor(const Terrain& t, int res) {
   return hf;
 }
 
-// The grid's bands painted and every cell at the lowest elevation.
-Heightfield PaintedGrid(const Terrain& t, const Heightfield& grid) {
+// The grid's bands painted (with the sub-cell slots given to their children when the surface will
+// be filled: band_fill.h) and every cell at the lowest elevation.
+Heightfield PaintedGrid(const Terrain& t, const Heightfield& grid, bool assign_slots) {
   Heightfield hf;
   hf.width = grid.width;
   hf.height = grid.height;
@@ -84,6 +85,7 @@ Heightfield PaintedGrid(const Terrain& t, const Heightfield& grid) {
   std::vector<std::vector<double>> rows;
   for (std::size_t c = 0; c < t.contours.size(); ++c)
     Paint(t.contours[c].ring, static_cast<int>(c), &hf, &rows);
+  if (assign_slots) hf.slot_cells = AssignSubCellSlots(hf.width, hf.height, t, &hf.band);
   return hf;
 }
 
@@ -92,9 +94,51 @@ double BandHeight(const ContourNode& node, double a, double up, double dh) {
   return a + up > 0 ? node.elevation + dh * a / (a + up) : node.elevation;
 }
 
+// summit_of[c]: the index of the summit on top contour c, −1 for the others.
+std::vector<int> SummitOf(const Terrain& t) {
+  std::vector<int> summit_of(t.contours.size(), -1);
+  for (std::size_t s = 0; s < t.summits.size(); ++s)
+    summit_of[static_cast<std::size_t>(t.summits[s].contour)] = static_cast<int>(s);
+  return summit_of;
+}
+
+// The height of the point p in band b by brute force over the band's rings (the same values as
+// the stamps and the segment grids: heightfield.h).
+double BruteBandHeight(const Terrain& t, const std::vector<int>& summit_of, int b, Vec2 p) {
+  const ContourNode& node = t.contours[static_cast<std::size_t>(b)];
+  const double a = RingDistance(node.ring, p);
+  double up = 1e300, dh = t.dh;
+  if (node.children.empty()) {
+    const Summit& s = t.summits[static_cast<std::size_t>(summit_of[static_cast<std::size_t>(b)])];
+    up = std::sqrt((p.x - s.position.x) * (p.x - s.position.x) +
+                   (p.y - s.position.y) * (p.y - s.position.y));
+    dh = s.elevation - node.elevation;
+  } else {
+    for (int c : node.children)
+      up = std::min(up, RingDistance(t.contours[static_cast<std::size_t>(c)].ring, p));
+  }
+  return BandHeight(node, a, up, dh);
+}
+
+// The sub-cell slots of the painted map given to their children (band_fill.h) and the moved cells'
+// heights taken in their new band. Called only when the fill's first scan finds a cell without a
+// lower neighbour (else there is no island: band_fill.h, and the map is left as painted).
+void AssignSlotsOnSurface(const Terrain& t, Heightfield* hf) {
+  const std::vector<int> painted = hf->band;
+  hf->slot_cells = AssignSubCellSlots(hf->width, hf->height, t, &hf->band);
+  if (hf->slot_cells == 0) return;
+  const std::vector<int> summit_of = SummitOf(t);
+  for (int j = 0; j < hf->height; ++j)
+    for (int i = 0; i < hf->width; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * hf->width + i;
+      if (hf->band[k] != painted[k])
+        hf->h[k] = BruteBandHeight(t, summit_of, hf->band[k], hf->Centre(i, j));
+    }
+}
+
 // The band heights on `grid` (heightfield.h), before any fill.
 Heightfield BandSurfaceOn(const Terrain& t, const Heightfield& grid) {
-  Heightfield hf = PaintedGrid(t, grid);
+  Heightfield hf = PaintedGrid(t, grid, false);
   const std::size_t nc = t.contours.size();
   const std::size_t cells = hf.h.size();
   // Stamping: every segment of contour C writes its squared distance into the cells within ρ of
@@ -122,9 +166,40 @@ Heightfield BandSurfaceOn(const Terrain& t, const Heightfield& grid) {
       const int j1 = std::min(
           hf.height - 1,
           static_cast<int>(std::floor((hf.y1 - std::min(a.y, e.y) + rho) / hf.cell - 0.5)));
+      // Per row, only the cells whose centres can lie within ρ of the segment: if a point (x, y)
+      // is within ρ of the segment point s, then |y − s.y| ≤ ρ and |x − s.x| ≤ √(ρ² − dy²), dy
+      // the least |y − s.y| over the segment. So x lies within w = √(ρ² − dy²) of the x-range
+      // of the part of the segment with |y − s.y| ≤ ρ. A cell this skips is more than ρ from
+      // the segment (up to rounding, far inside the margin ρ − ρ_in), so its least stamped value
+      // is over the limit either way and the result is unchanged (the twin test checks it).
+      const double ylo = std::min(a.y, e.y), yhi = std::max(a.y, e.y);
+      const double dy_seg = e.y - a.y, dx_seg = e.x - a.x;
       for (int j = j0; j <= j1; ++j) {
         const std::size_t row = static_cast<std::size_t>(j) * hf.width;
-        for (int i = i0; i <= i1; ++i) {
+        const double y = hf.y1 - (j + 0.5) * hf.cell;
+        const double dy = y < ylo ? ylo - y : y > yhi ? y - yhi : 0.0;
+        if (dy > rho) continue;
+        const double w = std::sqrt(rho * rho - dy * dy);
+        // The x-range of the segment's part within [y − ρ, y + ρ] (the whole segment when
+        // it is nearly horizontal).
+        double xs0 = std::min(a.x, e.x), xs1 = std::max(a.x, e.x);
+        if (std::fabs(dy_seg) > 1e-9 * (std::fabs(dx_seg) + 1)) {
+          double t0 = (y - rho - a.y) / dy_seg, t1 = (y + rho - a.y) / dy_seg;
+          if (t0 > t1) std::swap(t0, t1);
+          t0 = std::max(0.0, t0);
+          t1 = std::min(1.0, t1);
+          if (t0 <= t1) {
+            const double xa = a.x + t0 * dx_seg, xb = a.x + t1 * dx_seg;
+            xs0 = std::max(xs0, std::min(xa, xb));
+            xs1 = std::min(xs1, std::max(xa, xb));
+          }
+        }
+        const double pad = 1e-9 * (rho + std::fabs(xs0) + std::fabs(xs1)) + 1e-9;
+        const int ri0 =
+            std::max(i0, static_cast<int>(std::ceil((xs0 - w - pad - hf.x0) / hf.cell - 0.5)));
+        const int ri1 =
+            std::min(i1, static_cast<int>(std::floor((xs1 + w + pad - hf.x0) / hf.cell - 0.5)));
+        for (int i = ri0; i <= ri1; ++i) {
           const std::size_t k = row + static_cast<std::size_t>(i);
           const int b = hf.band[k];
           if (b != id && (b != parent || parent < 0)) continue;
@@ -196,36 +271,24 @@ Heightfield BuildHeightfield(const Terrain& t, int res, bool fill_depressions) {
 Heightfield BuildHeightfieldOn(const Terrain& t, const Heightfield& grid, bool fill_depressions) {
   if (t.contours.empty()) return Heightfield();
   Heightfield hf = BandSurfaceOn(t, grid);  // its stamped distances freed before the fill
-  if (fill_depressions) FillHeightfieldWithinBands(t, &hf);
+  // The fill's first scan decides both steps: with every cell draining there is no slot island
+  // and nothing to raise (band_fill.h), and the scan is not repeated.
+  if (fill_depressions && AnyCellWithoutLowerNeighbour(hf.width, hf.height, hf.band, hf.h)) {
+    AssignSlotsOnSurface(t, &hf);
+    FillHeightfieldWithinBands(t, &hf);
+  }
   return hf;
 }
 
 Heightfield BuildHeightfieldBruteForce(const Terrain& t, int res, bool fill_depressions) {
   if (t.contours.empty()) return Heightfield();
-  Heightfield hf = PaintedGrid(t, GridFor(t, res));
-  std::vector<int> summit_of(t.contours.size(), -1);
-  for (std::size_t s = 0; s < t.summits.size(); ++s)
-    summit_of[static_cast<std::size_t>(t.summits[s].contour)] = static_cast<int>(s);
+  // The slots always assigned here (no gate): the twin of BuildHeightfieldOn's gated step.
+  Heightfield hf = PaintedGrid(t, GridFor(t, res), fill_depressions);
+  const std::vector<int> summit_of = SummitOf(t);
   for (int j = 0; j < hf.height; ++j) {
     for (int i = 0; i < hf.width; ++i) {
       const std::size_t k = static_cast<std::size_t>(j) * hf.width + i;
-      const int b = hf.band[k];
-      if (b < 0) continue;
-      const ContourNode& node = t.contours[static_cast<std::size_t>(b)];
-      const Vec2 p = hf.Centre(i, j);
-      const double a = RingDistance(node.ring, p);
-      double up = 1e300, dh = t.dh;
-      if (node.children.empty()) {
-        const Summit& s =
-            t.summits[static_cast<std::size_t>(summit_of[static_cast<std::size_t>(b)])];
-        up = std::sqrt((p.x - s.position.x) * (p.x - s.position.x) +
-                       (p.y - s.position.y) * (p.y - s.position.y));
-        dh = s.elevation - node.elevation;
-      } else {
-        for (int c : node.children)
-          up = std::min(up, RingDistance(t.contours[static_cast<std::size_t>(c)].ring, p));
-      }
-      hf.h[k] = BandHeight(node, a, up, dh);
+      if (hf.band[k] >= 0) hf.h[k] = BruteBandHeight(t, summit_of, hf.band[k], hf.Centre(i, j));
     }
   }
   if (fill_depressions) FillHeightfieldWithinBands(t, &hf);

@@ -1,8 +1,9 @@
 // The surface from the contour tree (our choice, docs/terrain-model.md): each cell lies in one band
 // (inside contour C, outside C's children) and gets h = h_C + Δh·a/(a + b), a = distance to C,
 // b = distance to C's children (in a top band: to the summit, Δh -> h_s − h_C), then its
-// depressions filled within each band (band_fill.h). Continuous, every level set on its contour,
-// no interior pits but the ones band_fill.h describes (docs/terrain-model.md). Also the terrain's
+// depressions filled within each band (band_fill.h; sub-cell slots of a band first given to the
+// child around them). Continuous, every level set on its contour as far as the grid resolves it,
+// no interior pits (docs/terrain-model.md). Also the terrain's
 // statistics. Does not: write files (terrain_output.h).
 #pragma once
 
@@ -22,6 +23,7 @@ struct Heightfield {
   std::vector<double> h;  // width·height elevations (m)
   std::vector<int> band;  // contour whose band holds the cell; −1 outside the lowest contour
   std::size_t cells_filled = 0;  // cells the band fill raised (0 without the fill)
+  std::size_t slot_cells = 0;    // cells of sub-cell slots given to a child's band (band_fill.h)
   double At(int i, int j) const { return h[static_cast<std::size_t>(j) * width + i]; }
   Vec2 Centre(int i, int j) const { return {x0 + (i + 0.5) * cell, y1 - (j + 0.5) * cell}; }
 };
@@ -29,8 +31,9 @@ struct Heightfield {
 // The heightfield with `res` cells along the longer side of the lowest contour's box (plus one
 // cell of margin each side); cells outside it get the lowest elevation.
 // Distances through a SegmentGrid per contour (segment_grid.h): O(cells), not O(cells·vertices).
-// fill_depressions: FillHeightfieldWithinBands (band_fill.h) on the band heights; false gives the
-// band distance-ratio surface alone.
+// fill_depressions: AssignSubCellSlots on the painted band map, then FillHeightfieldWithinBands
+// (band_fill.h) on the band heights; false gives the band distance-ratio surface alone on the
+// painted map.
 Heightfield BuildHeightfield(const Terrain& terrain, int res, bool fill_depressions = true);
 // The same on another grid's cells (its width, height, x0, y1, cell; e.g. a real DEM's).
 Heightfield BuildHeightfieldOn(const Terrain& terrain, const Heightfield& grid,

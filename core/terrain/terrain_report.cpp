@@ -23,6 +23,7 @@ nlohmann::json TerrainStatsJson(const TerrainState& state, const Terrain& terrai
   j["mean_slope_deg"] = s.mean_slope_deg;
   j["pits"] = s.pits;
   j["cells_filled"] = hf.cells_filled;
+  j["slot_cells"] = hf.slot_cells;
   j["loops_removed"] = terrain.counts.loops_removed;
   j["perturbations_reverted"] = terrain.counts.perturbations_reverted;
   j["truncated"] = terrain.counts.truncated;

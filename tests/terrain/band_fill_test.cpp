@@ -1,14 +1,19 @@
 // The band-capped priority-flood (band_fill.h) equals its Planchon-Darboux twin bit for bit on
 // random small grids with random bands, keeps every cell in its band, is idempotent, and leaves
-// only the pits band_fill.h says it must (a cell at its band's top below all 8 neighbours).
+// only the pits band_fill.h says it must (a cell at its band's top below all 8 neighbours). The
+// sub-cell slot rule (AssignSubCellSlots) equals its sweep twin on random contour trees and band
+// maps, moves cells only into their band's subtree, and leaves no enclosed island.
 #include "terrain/band_fill.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "random/pcg32.h"
+#include "terrain/contour.h"
 
 namespace niwa::terrain {
 namespace {
@@ -150,6 +155,153 @@ TEST(BandFill, HandCases) {
   std::vector<double> pd = kBasin;
   EXPECT_EQ(FillWithinBandsPlanchonDarboux(6, 5, two_bands, {10, 4}, &pd), 2u);
   EXPECT_EQ(pd, capped);
+}
+
+// A random contour tree of 1-9 contours (each one's parent an earlier one; rings are not used).
+Terrain RandomTree(Pcg32* rng) {
+  Terrain t;
+  const int n = 1 + static_cast<int>(rng->Uniform(0, 9));
+  t.contours.resize(static_cast<std::size_t>(n));
+  for (int c = 1; c < n; ++c) {
+    const int p = static_cast<int>(rng->Uniform(0, c));
+    t.contours[static_cast<std::size_t>(c)].parent = p;
+    t.contours[static_cast<std::size_t>(c)].level =
+        t.contours[static_cast<std::size_t>(p)].level + 1;
+    t.contours[static_cast<std::size_t>(p)].children.push_back(c);
+  }
+  return t;
+}
+
+bool StrictDescendant(const Terrain& t, int d, int c) {
+  while (d >= 0 && (d = t.contours[static_cast<std::size_t>(d)].parent) >= 0)
+    if (d == c) return true;
+  return false;
+}
+
+// Whether the band-b cell k reaches, through band-b cells, one that lies on the grid's edge or
+// has a neighbour neither in band b nor inside b (a plain depth-first search from k).
+bool ReachesTheWorld(const Terrain& t, int width, int height, const std::vector<int>& band,
+                     std::size_t start) {
+  const int b = band[start];
+  std::vector<char> seen(band.size(), 0);
+  std::vector<std::size_t> stack = {start};
+  seen[start] = 1;
+  while (!stack.empty()) {
+    const std::size_t k = stack.back();
+    stack.pop_back();
+    const int i = static_cast<int>(k) % width, j = static_cast<int>(k) / width;
+    if (i == 0 || j == 0 || i + 1 == width || j + 1 == height) return true;
+    for (int dj = -1; dj <= 1; ++dj)
+      for (int di = -1; di <= 1; ++di) {
+        const std::size_t n = static_cast<std::size_t>(j + dj) * width + (i + di);
+        if (band[n] != b && !StrictDescendant(t, band[n], b)) return true;
+        if (band[n] == b && !seen[n]) {
+          seen[n] = 1;
+          stack.push_back(n);
+        }
+      }
+  }
+  return false;
+}
+
+TEST(SubCellSlots, EqualsSweepTwinAndLeavesNoEnclosedIsland) {
+  Pcg32 rng(1987);
+  std::size_t relabelled_total = 0, trials_with_islands = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const Terrain t = RandomTree(&rng);
+    const int n = static_cast<int>(t.contours.size());
+    const int width = 3 + static_cast<int>(rng.Uniform(0, 14));
+    const int height = 3 + static_cast<int>(rng.Uniform(0, 14));
+    // Blocks of random size so that bands form regions, with single cells sprinkled in.
+    std::vector<int> band(static_cast<std::size_t>(width) * height);
+    for (std::size_t k = 0; k < band.size(); ++k)
+      band[k] = rng.Uniform(0, 1) < 0.1 ? -1 : static_cast<int>(rng.Uniform(0, n));
+    const int blocks = static_cast<int>(rng.Uniform(0, 6));
+    for (int q = 0; q < blocks; ++q) {
+      const int i0 = static_cast<int>(rng.Uniform(0, width)),
+                j0 = static_cast<int>(rng.Uniform(0, height));
+      const int w = 1 + static_cast<int>(rng.Uniform(0, 6)),
+                h = 1 + static_cast<int>(rng.Uniform(0, 6));
+      const int b = static_cast<int>(rng.Uniform(0, n));
+      for (int j = j0; j < std::min(height, j0 + h); ++j)
+        for (int i = i0; i < std::min(width, i0 + w); ++i)
+          band[static_cast<std::size_t>(j) * width + i] = b;
+    }
+    std::vector<int> fast = band, sweeps = band;
+    const std::size_t n_fast = AssignSubCellSlots(width, height, t, &fast);
+    const std::size_t n_sweeps = AssignSubCellSlotsBySweeps(width, height, t, &sweeps);
+    ASSERT_EQ(n_fast, n_sweeps) << "trial " << trial;
+    ASSERT_EQ(fast, sweeps) << "trial " << trial;
+    std::size_t changed = 0;
+    for (std::size_t k = 0; k < band.size(); ++k) {
+      if (fast[k] == band[k]) continue;
+      ++changed;
+      EXPECT_TRUE(band[k] >= 0 && StrictDescendant(t, fast[k], band[k])) << "trial " << trial;
+    }
+    EXPECT_GE(n_fast, changed);
+    EXPECT_EQ(n_fast == 0, changed == 0);
+    if (n_fast > 0) ++trials_with_islands;
+    relabelled_total += n_fast;
+    for (std::size_t k = 0; k < fast.size(); ++k) {
+      if (fast[k] < 0) continue;
+      ASSERT_TRUE(ReachesTheWorld(t, width, height, fast, k)) << trial << " " << k;
+    }
+    // Idempotent.
+    std::vector<int> again = fast;
+    EXPECT_EQ(AssignSubCellSlots(width, height, t, &again), 0u);
+    EXPECT_EQ(again, fast);
+  }
+  EXPECT_GT(trials_with_islands, 40u);
+  std::printf("sub-cell slots: %zu cells relabelled in %zu of 400 grids\n", relabelled_total,
+              trials_with_islands);
+}
+
+// A one-cell slot of band 0 inside its child 1 (whose child 2 holds the slot's south side): the
+// slot goes to 1; a two-cell slot cut off between children 1 and 3 goes to the child with more
+// neighbours; a slot of band 1 touching band 0 stays.
+TEST(SubCellSlots, HandCases) {
+  Terrain t;
+  t.contours.resize(4);
+  t.contours[1].parent = t.contours[3].parent = 0;
+  t.contours[0].children = {1, 3};
+  t.contours[2].parent = 1;
+  t.contours[1].children = {2};
+  std::vector<int> band = {
+      -1, -1, -1, -1, -1, -1, -1,  //
+      -1, 0,  0,  0,  0,  0,  -1,  //
+      -1, 0,  1,  1,  1,  0,  -1,  //
+      -1, 0,  1,  0,  1,  0,  -1,  //
+      -1, 0,  2,  2,  2,  0,  -1,  //
+      -1, 0,  0,  0,  0,  0,  -1,  //
+      -1, -1, -1, -1, -1, -1, -1,  //
+  };
+  std::vector<int> expected = band;
+  expected[3 * 7 + 3] = 1;  // 5 neighbours in 1, 3 in its child 2
+  EXPECT_EQ(AssignSubCellSlots(7, 7, t, &band), 1u);
+  EXPECT_EQ(band, expected);
+  std::vector<int> split = {
+      -1, -1, -1, -1, -1, -1, -1,  //
+      -1, 0,  0,  0,  0,  0,  -1,  //
+      -1, 0,  1,  1,  3,  0,  -1,  //
+      -1, 0,  1,  0,  3,  0,  -1,  //
+      -1, 0,  1,  0,  3,  0,  -1,  //
+      -1, 0,  1,  1,  1,  0,  -1,  //
+      -1, -1, -1, -1, -1, -1, -1,  //
+  };
+  expected = split;
+  expected[3 * 7 + 3] = expected[4 * 7 + 3] = 1;  // 1 borders them 9 times, 3 five times
+  EXPECT_EQ(AssignSubCellSlots(7, 7, t, &split), 2u);
+  EXPECT_EQ(split, expected);
+  std::vector<int> open = {
+      -1, -1, -1, -1, -1,  //
+      -1, 0,  0,  0,  -1,  //
+      -1, 1,  2,  1,  -1,  //
+      -1, 0,  2,  2,  -1,  //
+      -1, -1, -1, -1, -1,  //
+  };
+  const std::vector<int> kept = open;
+  EXPECT_EQ(AssignSubCellSlots(5, 5, t, &open), 0u);
+  EXPECT_EQ(open, kept);
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 // The heightfield through segment grids equals its brute-force twin bit for bit (every built-in
 // seed and method), SegmentGrid equals RingDistance on scattered points, and the surface is what
-// heightfield.h promises: continuous across contours, each contour's level set on it, no pits (on
-// valleys with the improved method, after the band fill, only the sub-cell slots band_fill.h
-// describes).
+// heightfield.h promises: continuous across contours, each contour's level set on it, no pits on
+// any built-in, method, RNG seed 1-5 and resolution 256-1024 (sub-cell slots given to the child
+// first: band_fill.h).
 #include "terrain/heightfield.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "random/pcg32.h"
+#include "terrain/band_fill.h"
 #include "terrain/generate.h"
 #include "terrain/polygon.h"
 #include "terrain/seeds.h"
@@ -103,54 +104,74 @@ TEST(Heightfield, ContinuousLevelSetsOnContoursNoPits) {
   }
 }
 
-// valleys with the improved method had 11-18 pits before the band fill (RNG seeds 1-5). What is
-// left: single cells of a band C whose 8 neighbours all lie in one child of C (a slot of C's band
-// narrower than a cell cutting into the child), raised to C's top h_C + Δh = the child's elevation,
-// below neighbours that are inside the child contour. Raising them further would leave the band
-// (docs/terrain-model.md, "Pits").
-TEST(Heightfield, BandFillLeavesOnlySubCellSlotsOnValleys) {
-  const int expected[5] = {1, 3, 1, 1, 1};
+// valleys with the improved method had 11-18 pits before the band fill (RNG seeds 1-5) and 1-3
+// after it: single cells of a band C whose 8 neighbours all lie inside a child of C (a slot of C's
+// band narrower than a cell). AssignSubCellSlots gives such islands to the child first; what it
+// changes is exactly what its sweep twin changes on the painted map, only moves cells into their
+// band's subtree, and no pit is left; the fill still raises and never lowers.
+TEST(Heightfield, SubCellSlotsGoToTheChildAndLeaveNoPitOnValleys) {
+  std::size_t slots_total = 0;
   for (int rng = 1; rng <= 5; ++rng) {
     const Terrain t = GrowBuiltin("valleys", "improved", rng);
     const Heightfield raw = BuildHeightfield(t, 256, false);
     const Heightfield hf = BuildHeightfield(t, 256);
     EXPECT_EQ(raw.cells_filled, 0u);
+    EXPECT_EQ(raw.slot_cells, 0u);
     const TerrainStats before = ComputeStats(t, &raw), after = ComputeStats(t, &hf);
     EXPECT_GE(before.pits, 11) << rng;
-    EXPECT_EQ(after.pits, expected[rng - 1]) << rng;
-    std::size_t raised = 0;
+    EXPECT_EQ(after.pits, 0) << rng;
+    std::vector<int> twin = raw.band;
+    EXPECT_EQ(AssignSubCellSlotsBySweeps(raw.width, raw.height, t, &twin), hf.slot_cells) << rng;
+    EXPECT_EQ(twin, hf.band) << rng;
+    EXPECT_GT(hf.slot_cells, 0u) << rng;
+    slots_total += hf.slot_cells;
+    std::size_t raised = 0, moved = 0;
     for (std::size_t k = 0; k < hf.h.size(); ++k) {
       ASSERT_GE(hf.h[k], raw.h[k]);
+      if (hf.band[k] != raw.band[k]) {
+        ++moved;
+        // Into a child of the painted band (or deeper): at or above the child's elevation.
+        int up = hf.band[k];
+        while (up >= 0 && up != raw.band[k]) up = t.contours[static_cast<std::size_t>(up)].parent;
+        EXPECT_EQ(up, raw.band[k]) << rng;
+        EXPECT_GE(hf.h[k], t.contours[static_cast<std::size_t>(hf.band[k])].elevation);
+        continue;
+      }
       if (hf.h[k] > raw.h[k]) ++raised;
     }
-    EXPECT_EQ(raised, hf.cells_filled) << rng;
+    EXPECT_EQ(moved, hf.slot_cells) << rng;  // no cell moved twice here
     EXPECT_GT(hf.cells_filled, 0u) << rng;
-    int slots = 0;
-    for (int j = 1; j + 1 < hf.height; ++j) {
-      for (int i = 1; i + 1 < hf.width; ++i) {
-        const std::size_t k = static_cast<std::size_t>(j) * hf.width + i;
-        const int b = hf.band[k];
-        if (b < 0) continue;
-        bool pit = true, in_one_child = true;
-        int child = -2;
-        for (int dj = -1; dj <= 1; ++dj)
-          for (int di = -1; di <= 1; ++di) {
-            if (!di && !dj) continue;
-            const std::size_t q = static_cast<std::size_t>(j + dj) * hf.width + (i + di);
-            if (hf.h[q] <= hf.h[k]) pit = false;
-            if (child == -2) child = hf.band[q];
-            if (hf.band[q] != child) in_one_child = false;
-          }
-        if (!pit) continue;
-        ++slots;
-        ASSERT_GE(child, 0);
-        EXPECT_TRUE(in_one_child) << rng << " (" << i << ", " << j << ")";
-        EXPECT_EQ(t.contours[static_cast<std::size_t>(child)].parent, b);
-        EXPECT_EQ(hf.h[k], t.contours[static_cast<std::size_t>(b)].elevation + t.dh);
+    EXPECT_GE(hf.cells_filled, raised) << rng;
+  }
+  std::printf("valleys/improved res 256, RNG 1-5: %zu sub-cell slot cells\n", slots_total);
+}
+
+// No interior cell below all 8 neighbours on any built-in seed with any method (RNG seeds 1-5) at
+// the page's and the CLI's usual resolutions 256 and 512, and 1024 on a subset (issue 19: "no
+// pits").
+TEST(Heightfield, NoPitsOnEveryBuiltinMethodAndResolution) {
+  std::size_t grids = 0, with_slots = 0;
+  for (const SeedInfo& info : BuiltinSeeds()) {
+    for (const char* method : {"simple", "midpoint", "fourier", "improved"}) {
+      for (int rng = 1; rng <= 5; ++rng) {
+        const Terrain t = GrowBuiltin(info.name, method, rng);
+        for (const int res : {256, 512, 1024}) {
+          // 1024 (the slow one) on valleys, the seed with sub-cell slots, and on every other
+          // seed with the improved method and RNG 1; `niwa terrain grow --stats` ran the rest
+          // (docs/terrain-model.md).
+          if (res == 1024 && info.name != std::string("valleys") &&
+              (rng > 1 || method != std::string("improved")))
+            continue;
+          const Heightfield hf = BuildHeightfield(t, res);
+          EXPECT_EQ(ComputeStats(t, &hf).pits, 0)
+              << info.name << " " << method << " RNG " << rng << " res " << res;
+          ++grids;
+          if (hf.slot_cells > 0) ++with_slots;
+        }
       }
     }
-    EXPECT_EQ(slots, after.pits) << rng;
   }
+  std::printf("no pits on %zu heightfields (%zu with sub-cell slots)\n", grids, with_slots);
 }
 
 }  // namespace

@@ -180,7 +180,8 @@ function sendUpdate(commit, reset = false, repair = false) {
   clearTimeout(debounceTimer);
   commitNext = commitNext || commit;
   setHooks({ status: 'growing' });
-  const request = worker.request('update', { state: currentState(reset), repair }, { group: 'terrain', done: ['terrain'] });
+  // statsAfter: the mountain comes first and its stats at once after it ('terrainStats').
+  const request = worker.request('update', { state: currentState(reset), repair, statsAfter: true }, { group: 'terrain', done: ['terrainStats'] });
   latestId = request.id;
   showCancel(true);
   bumpHook('growRequests');
@@ -302,29 +303,33 @@ worker.on('progress', (msg) => {
   ui.progress.textContent = msg.text;
 });
 
+// The mountain (its stats null: they follow in 'terrainStats', web/worker/terrain_handler.js).
+let shownMountain = null;  // {id, msg} of the mountain on screen until its stats arrive
 worker.on('terrain', (msg) => {
   if (msg.id !== latestId) return;
-  const s = msg.stats;
   notices.set('error', '');
-  notices.set('budget', s.truncated_by || '');
   showFieldError('');
-  showCancel(false);
   lastGoodHash = msg.hash;
-  ui.progress.textContent = '';
   applyState(msg.state);
   const r = msg.repaired;
   $('contour-note').textContent = r
     ? `The drawing crossed itself; repaired (${r.method === 'loops' ? `${r.loopsRemoved} loop${r.loopsRemoved === 1 ? '' : 's'} cut, §4.4 method 2` : 'its largest simple piece kept'}): ${r.points} points.`
     : $('contour-note').textContent;
   if (r) setHooks({ contourRepaired: `${r.method}:${r.loopsRemoved}` });
-  ui.stats.textContent = `${s.method} · ${s.levels} levels · ${s.contours} contours · ${s.peaks} peak${s.peaks === 1 ? '' : 's'} · relief ${s.relief.toFixed(1)} m · HI ${s.hypsometric_integral.toFixed(3)} · ${s.res} cells across · ${msg.wallMs.toFixed(0)} ms`;
   // The worker sends no triangles: the grid's are the same for every regrow on it.
-  msg.buffers.surface.indices = gridIndices(msg.bounds.width, msg.bounds.height);
+  const surface = msg.buffers.surface;
+  surface.indices = gridIndices(msg.bounds.width, msg.bounds.height);
   plan.setTerrain(msg.buffers, msg.bounds);
   levels = { min: msg.bounds.level_min, max: msg.bounds.level_max, h0: msg.bounds.h0, dh: msg.bounds.dh };
   const serial = terrainSerial + 1;
+  // Once on the GPU, the surface's buffers go back to the worker for the next grow to fill.
+  // (ArrayBuffers, or views of recycled ones: web/worker/terrain_handler.js).
+  const own = (b) => (ArrayBuffer.isView(b) ? b.buffer : b);
+  const recycle = () => worker.post('recycle', { buffers: { positions: own(surface.positions), normals: own(surface.normals), colours: own(surface.colours) } },
+    [own(surface.positions), own(surface.normals), own(surface.colours)]);
   if (renderer) {
     renderer.setTerrain(msg.buffers, msg.bounds).then((installed) => {
+      recycle();
       if (!installed) return;
       installedSerial = serial;
       if (frameNext && renderer.bounds()) {
@@ -342,13 +347,25 @@ worker.on('terrain', (msg) => {
   commitNext = false;
   scrubber.reset(levels.max - levels.min);
   terrainSerial += 1;
+  shownMountain = { id: msg.id, msg };
+  requestFrame();
+});
+
+// The stats of the mountain just shown: the line under the view and the page's hooks.
+worker.on('terrainStats', (reply) => {
+  if (reply.id !== latestId || !shownMountain || shownMountain.id !== reply.id) return;
+  const { msg } = shownMountain;
+  const s = reply.stats;
+  notices.set('budget', s.truncated_by || '');
+  showCancel(false);
+  ui.progress.textContent = '';
+  ui.stats.textContent = `${s.method} · ${s.levels} levels · ${s.contours} contours · ${s.peaks} peak${s.peaks === 1 ? '' : 's'} · relief ${s.relief.toFixed(1)} m · HI ${s.hypsometric_integral.toFixed(3)} · ${s.res} cells across · ${msg.wallMs.toFixed(0)} ms`;
   setHooks({
     status: 'ready', error: '', terrainSerial, levels: s.levels, contours: s.contours, peaks: s.peaks,
     stats: JSON.stringify(s), hash: msg.hash, truncatedBy: s.truncated_by || '', wallMs: msg.wallMs.toFixed(1), msGrow: msg.timings.ms_grow.toFixed(1),
-    msHeightfield: msg.timings.ms_heightfield.toFixed(1), msBuffers: msg.timings.ms_buffers.toFixed(1),
+    msHeightfield: msg.timings.ms_heightfield.toFixed(1), msBuffers: msg.timings.ms_buffers.toFixed(1), msStatsAfter: reply.statsMs.toFixed(1),
     regrowParts: JSON.stringify(msg.parts || {}), gridSize: JSON.stringify({ width: msg.bounds.width, height: msg.bounds.height }),
   });
-  requestFrame();
 });
 
 const exportIds = new Map();  // id -> file name

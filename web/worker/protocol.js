@@ -117,15 +117,19 @@
 /**
  * The terrain page (study: 'terrain', web/worker/terrain_handler.js). State: {preset, builtin |
  * contour: [[x, y], ...], params}; ready carries `paramTable`, `presets`, `seeds`, `decoded`.
- * @typedef {Envelope & {type: 'update', state: Object, repair?: boolean}} TerrainUpdateMessage
+ * @typedef {Envelope & {type: 'update', state: Object, repair?: boolean, statsAfter?: boolean}} TerrainUpdateMessage
  *   -> ProgressMessage, {type: 'terrain', stats, timings, buffers: {surface (no indices: the
  *       page builds them, web/terrain/grid_indices.js, from bounds.width × height), contours,
  *       summits}, hash, state, bounds, repaired, parts: {repair, grow, stats, copy, state} (ms),
- *       wallMs}
+ *       wallMs}; with statsAfter: true its stats are null and {type: 'terrainStats', stats,
+ *       statsMs} follows at once (the page: the surface is not kept waiting for the stats)
+ * @typedef {Envelope & {type: 'recycle', buffers: {positions?, normals?, colours?}}} TerrainRecycleMessage
+ *   (no reply) the page's surface ArrayBuffers, transferred back once uploaded; the next update
+ *   copies the surface into them
  * @typedef {Envelope & {type: 'parseContour', name: string, text: string}} TerrainParseContourMessage
  *   -> {type: 'contourFile', name, points?, elevation?, error?}
  * export: format 'glb' | 'heightmap' | 'sidecar' | 'json' | 'geojson' | 'svg'.
  */
 
 // The message types a page may send (the router answers any other with an error).
-export const REQUEST_TYPES = ['init', 'decode', 'update', 'restage', 'wind', 'poseDone', 'view', 'export', 'mesh', 'pick', 'encode', 'stateFile', 'parseContour'];
+export const REQUEST_TYPES = ['init', 'decode', 'update', 'restage', 'wind', 'poseDone', 'view', 'export', 'mesh', 'pick', 'encode', 'stateFile', 'parseContour', 'recycle'];

@@ -4,7 +4,11 @@
 // the stats (the CLI's --stats minus its timings), the resolved state and hash, and the surface
 // (without its triangles: the page builds the grid's, web/terrain/grid_indices.js), contour and
 // summit buffers (copied once out of the WASM heap, then transferred), with the worker's time per
-// step (parts); 'export'
+// step (parts). With `statsAfter` (the page) the mountain goes first, stats null, and the stats
+// follow at once in a 'terrainStats' message (computed from the same grow before anything else
+// runs), so the surface is not kept waiting for them. 'recycle' hands the page's surface buffers
+// back once they are on the GPU: the next grow copies into them (pages already touched) instead of
+// fresh ones; the surface arrives as views of the exact length. 'export'
 // builds one download (.glb, heightmap .png, its sidecar .json, contours .json/.geojson/.svg);
 // 'parseContour' reads an imported contour file's text into points.
 // Messages: web/worker/protocol.js.
@@ -23,10 +27,45 @@ export function createHandler(Module, ctx) {
   const presets = JSON.parse(Module.terrainPresetsJson());
   const seeds = JSON.parse(Module.terrainSeedsJson());
   const labs = new Map();  // client -> TerrainLab
+  const recycled = new Map();  // client -> {name: ArrayBuffer}: surface buffers the page returned
 
   function labOf(client) {
     if (!labs.has(client)) labs.set(client, new Module.TerrainLab());
     return labs.get(client);
+  }
+
+  // The surface group's views copied out of the WASM heap, each into a returned buffer at least
+  // its size when there is one, else into a fresh buffer sized for the square grid of the longer
+  // side (each drawing has its own grid, so sizes differ: any later grid at this res fits); sent as
+  // views of the exact length, every buffer onto `transfer`.
+  function takeSurface(views, bounds, client, transfer) {
+    const pool = recycled.get(client) || {};
+    const cells = bounds.width * bounds.height, square = Math.max(bounds.width, bounds.height) ** 2;
+    const out = {};
+    for (const [name, view] of Object.entries(views)) {
+      let buffer = pool[name];
+      delete pool[name];
+      if (!buffer || buffer.byteLength < view.byteLength) {
+        const perCell = cells > 0 ? view.byteLength / cells : 0;
+        buffer = new ArrayBuffer(Math.max(view.byteLength, perCell * square));
+      }
+      const into = new view.constructor(buffer, 0, view.length);
+      into.set(view);
+      out[name] = into;
+      transfer.push(buffer);
+    }
+    return out;
+  }
+
+  // The page's surface buffers back (ArrayBuffers or views; the newest one per name is kept).
+  function recycle(msg, client) {
+    const pool = recycled.get(client) || {};
+    for (const [name, value] of Object.entries(msg.buffers || {})) {
+      const buffer = ArrayBuffer.isView(value) ? value.buffer : value;
+      if (!(buffer instanceof ArrayBuffer) || !['positions', 'normals', 'colours'].includes(name)) continue;
+      pool[name] = buffer;
+    }
+    recycled.set(client, pool);
   }
 
   async function update(msg, client) {
@@ -63,21 +102,28 @@ export function createHandler(Module, ctx) {
       return;
     }
     lap('grow');
-    const stats = JSON.parse(lab.statsJson());
+    const statsAfter = Boolean(msg.statsAfter);
+    const stats = statsAfter ? null : JSON.parse(lab.statsJson());
     const timings = JSON.parse(lab.timingsJson());
     lap('stats');
     const transfer = [];
-    const buffers = {};
-    for (const group of ['surface', 'contours', 'summits']) buffers[group] = takeBuffers(lab.buffers(group), transfer);
+    const bounds = JSON.parse(lab.boundsJson());
+    const buffers = { surface: takeSurface(lab.buffers('surface'), bounds, client, transfer) };
+    for (const group of ['contours', 'summits']) buffers[group] = takeBuffers(lab.buffers(group), transfer);
     lap('copy');
     const reply = {
       type: 'terrain', id, client, stats, timings, buffers, hash: lab.hash(), state: JSON.parse(lab.stateJson()),
-      bounds: JSON.parse(lab.boundsJson()), repaired,
+      bounds, repaired,
     };
     lap('state');
     reply.parts = parts;
     reply.wallMs = performance.now() - t0;
     post(reply, transfer);
+    if (!statsAfter) return;
+    // The same grow's stats, before this task ends (no other message can regrow the lab).
+    const s0 = performance.now();
+    const followed = JSON.parse(lab.statsJson());
+    post({ type: 'terrainStats', id, client, stats: followed, statsMs: performance.now() - s0 });
   }
 
   function exportTerrain(msg, client) {
@@ -98,6 +144,7 @@ export function createHandler(Module, ctx) {
       // An imported contour file's text -> {points, elevation?} or {error} (the core's line).
       parseContour: (msg, client) => post({ type: 'contourFile', id: msg.id, client, name: String(msg.name || ''), ...JSON.parse(Module.terrainParseContour(String(msg.text || ''))) }),
       update,
+      recycle,
       export: exportTerrain,
     },
   };
