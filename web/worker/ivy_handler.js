@@ -2,7 +2,8 @@
 // client holds its support (a built-in scene, or a dropped mesh sent once with 'mesh') and the last
 // ivy grown on it. An 'update' loads the state's scene when it changed, grows, and sends the stats
 // and the stems, leaves and suckers (with their birth steps, so the page replays the growth
-// without regrowing); 'pick' casts a ray on the support (a click places a seed point); 'export'
+// without regrowing; the leaves with their uvs, and the client's first 'ivy' message with the
+// leaf texture's pixels, so the page draws the leaves as the .glb holds them); 'pick' casts a ray on the support (a click places a seed point); 'export'
 // builds .glb, .json or .lsys. Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does).
 import { takeBuffers } from './transfer.js';
@@ -31,7 +32,7 @@ export function createHandler(Module, ctx) {
   };
   function labOf(client) {
     if (!labs.has(client)) {
-      const entry = { lab: new Module.IvyLab(), support: null, working: 0, lastPost: 0 };
+      const entry = { lab: new Module.IvyLab(), support: null, working: 0, lastPost: 0, leafTextureSent: false };
       entry.lab.setProgress((stage, done, total) => {
         const now = performance.now();
         const edge = stage !== 'grow' || done === 1 || done === total;
@@ -97,7 +98,16 @@ export function createHandler(Module, ctx) {
     const transfer = [];
     const mesh = {};
     for (const part of ['stems', 'leaves', 'suckers', 'buds']) mesh[part] = takeBuffers(entry.lab.buffers(part), transfer);
-    post({ type: 'ivy', id, client, stats, mesh, steps: entry.lab.steps(), hash: entry.lab.hash(),
+    // The leaf texture (the .glb's pixels), once per client: copied out of the heap by the
+    // binding, then transferred; the page keeps it for every later ivy.
+    let leafTexture;
+    if (!entry.leafTextureSent) {
+      const t = Module.ivyLeafTexture();
+      leafTexture = { width: t.width, height: t.height, pixels: t.pixels.buffer };
+      transfer.push(t.pixels.buffer);
+      entry.leafTextureSent = true;
+    }
+    post({ type: 'ivy', id, client, stats, mesh, leafTexture, steps: entry.lab.steps(), hash: entry.lab.hash(),
       wallMs: performance.now() - t0 }, transfer);
   }
 
