@@ -21,6 +21,7 @@ export function createHandler(Module, ctx) {
   // The trees ivy can climb (scene 'tree'): the tree study's presets.
   const trees = JSON.parse(Module.presetsJson()).map((p) => ({ name: p.name, title: p.title, years: p.years }));
   const labs = new Map();  // client -> {lab, support: 'scene:<name>' | 'mesh:<name>' | null}
+  let leafTextureOnce = null;  // {width, height, pixels}: the .glb's leaf texture, kept
 
   // Progress from inside a long call (a big mesh's read and BVH, every growth step): at most one
   // message per 100 ms, for the request the lab is working on (entry.working).
@@ -99,12 +100,14 @@ export function createHandler(Module, ctx) {
     const mesh = {};
     for (const part of ['stems', 'leaves', 'suckers', 'buds']) mesh[part] = takeBuffers(entry.lab.buffers(part), transfer);
     // The leaf texture (the .glb's pixels), once per client: copied out of the heap by the
-    // binding, then transferred; the page keeps it for every later ivy.
+    // binding once per worker, copied for each client and transferred; the page keeps it for
+    // every later ivy.
     let leafTexture;
     if (!entry.leafTextureSent) {
-      const t = Module.ivyLeafTexture();
-      leafTexture = { width: t.width, height: t.height, pixels: t.pixels.buffer };
-      transfer.push(t.pixels.buffer);
+      leafTextureOnce ??= Module.ivyLeafTexture();  // painted once per worker (about 30-50 ms)
+      const pixels = new Uint8Array(leafTextureOnce.pixels);  // this client's copy, transferred
+      leafTexture = { width: leafTextureOnce.width, height: leafTextureOnce.height, pixels: pixels.buffer };
+      transfer.push(pixels.buffer);
       entry.leafTextureSent = true;
     }
     post({ type: 'ivy', id, client, stats, mesh, leafTexture, steps: entry.lab.steps(), hash: entry.lab.hash(),
