@@ -27,7 +27,7 @@ class NiwaIvy extends EmbedElement {
 
   constructor() {
     super({ kind: 'ivy', label: 'Niwa ivy', study: 'ivy', messages: ['decoded', 'support', 'ivy', 'error'] });
-    this.pending = { support: null, ivy: null };  // replies that came before the renderer
+    this.pending = { support: null, ivy: null, leafTexture: null };  // replies that came before the renderer
     this.framed = false;
     this.steps = 0;
     this.animation = null;
@@ -39,6 +39,8 @@ class NiwaIvy extends EmbedElement {
 
   onRendererReady() {
     this.renderer.setVisible({ seeds: false });
+    if (this.pending.leafTexture) this.renderer.setLeafTexture(this.pending.leafTexture);
+    this.pending.leafTexture = null;
     if (this.pending.support) this.showSupport(this.pending.support);
     if (this.pending.ivy) this.showIvy(this.pending.ivy);
   }
@@ -83,6 +85,11 @@ class NiwaIvy extends EmbedElement {
       if (this.renderer) this.showSupport(msg);
       else this.pending.support = msg;
     } else if (msg.type === 'ivy') {
+      // The leaf texture (the .glb's pixels) comes with the client's first ivy only: keep it.
+      if (msg.leafTexture) {
+        if (this.renderer) this.renderer.setLeafTexture(msg.leafTexture);
+        else this.pending.leafTexture = msg.leafTexture;
+      }
       if (this.renderer) this.showIvy(msg);
       else this.pending.ivy = msg;
     } else if (msg.type === 'error' && (msg.id === undefined || msg.id === this.worker.latestId('ivy') || msg.id === this.worker.latestId('decode'))) {

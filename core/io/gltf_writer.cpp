@@ -372,6 +372,7 @@ class ModelBuilder {
     model->asset.generator = doc_.generator;
     NIWA_RETURN_IF_ERROR(ParseExtras(doc_.asset_extras_json, "asset", &model->asset.extras));
     model->buffers.emplace_back();
+    Reserve();
     for (std::size_t i = 0; i < doc_.meshes.size(); ++i) {
       const Mesh& mesh = doc_.meshes[i];
       tinygltf::Mesh out;
@@ -402,6 +403,48 @@ class ModelBuilder {
   }
 
  private:
+  // Room for every buffer byte and glTF object up front: no reallocation moves the buffer or
+  // tinygltf's heavy structs while they are appended (these copies cost 3x more in WASM).
+  void Reserve() {
+    std::size_t bytes = 0, views = 0;
+    const auto add = [&](std::size_t size) {
+      bytes += (size + 3) / 4 * 4;
+      ++views;
+    };
+    for (const Mesh& mesh : doc_.meshes) {
+      for (const Primitive& p : mesh.primitives) {
+        const geom::TriMesh& m = p.mesh;
+        add(m.positions.size() * sizeof(glm::vec3));
+        add(m.normals.size() * sizeof(glm::vec3));
+        add(m.uvs.size() * sizeof(glm::vec2));
+        for (const geom::VertexAttribute& a : m.attributes) add(a.values.size() * sizeof(float));
+        add(m.indices.size() * sizeof(uint32_t));
+        add(p.joints.size() * sizeof(uint16_t));
+        add(p.weights.size() * sizeof(float));
+      }
+    }
+    for (const Texture& t : doc_.textures) add(t.png.size());
+    for (const Node& node : doc_.nodes) {
+      add(node.instance_translations.size() * sizeof(float));
+      add(node.instance_rotations.size() * sizeof(float));
+      add(node.instance_scales.size() * sizeof(float));
+    }
+    for (const Skin& skin : doc_.skins) add(skin.inverse_bind_matrices.size() * sizeof(float));
+    for (const Animation& a : doc_.animations) {
+      for (const std::vector<float>& t : a.inputs) add(t.size() * sizeof(float));
+      for (const Channel& c : a.channels) add(c.values.size() * sizeof(float));
+    }
+    model_->buffers[0].data.reserve(bytes);
+    model_->bufferViews.reserve(views);
+    model_->accessors.reserve(views);
+    model_->meshes.reserve(doc_.meshes.size());
+    model_->materials.reserve(doc_.materials.size());
+    model_->textures.reserve(doc_.textures.size());
+    model_->images.reserve(doc_.textures.size());
+    model_->samplers.reserve(doc_.textures.size());
+    model_->nodes.reserve(doc_.nodes.size());
+  }
+
   // Appends raw bytes at a 4-byte aligned offset; returns the new bufferView's index.
   int AddBufferView(const void* data, std::size_t size, int target) {
     std::vector<unsigned char>& buffer = model_->buffers[0].data;
@@ -671,7 +714,36 @@ class ModelBuilder {
   std::vector<int> material_map_, texture_map_;
 };
 
-Result<std::string> Serialize(const Document& doc, bool binary) {
+// An output stream buffer appending to a byte vector (memcpy per write), so a .glb is written
+// straight into the vector it is returned in: no std::ostringstream growth, no str() copy and no
+// copy from a string into the vector (libc++'s char-by-char copies were most of the .glb's time
+// in WASM).
+class ByteSink : public std::streambuf {
+ public:
+  explicit ByteSink(std::vector<unsigned char>* out) : out_(out) {}
+
+ protected:
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    if (n <= 0) return 0;
+    const std::size_t at = out_->size();
+    out_->resize(at + static_cast<std::size_t>(n));
+    std::memcpy(out_->data() + at, s, static_cast<std::size_t>(n));
+    return n;
+  }
+  int_type overflow(int_type c) override {
+    if (traits_type::eq_int_type(c, traits_type::eof())) return traits_type::not_eof(c);
+    out_->push_back(static_cast<unsigned char>(traits_type::to_char_type(c)));
+    return c;
+  }
+
+ private:
+  std::vector<unsigned char>* out_;
+};
+
+// Writes the document to `stream`; `out` (may be null: the vector `stream` writes to) gets room
+// for the buffer and the JSON before the writing starts.
+Status SerializeTo(const Document& doc, bool binary, std::ostream& stream,
+                   std::vector<unsigned char>* out) {
   NIWA_RETURN_IF_ERROR(CheckDocument(doc));
   tinygltf::Model model;
   NIWA_RETURN_IF_ERROR(ModelBuilder(doc).Build(&model));
@@ -683,13 +755,21 @@ Result<std::string> Serialize(const Document& doc, bool binary) {
                                             " is more than the 4 GB a .glb can hold; export a "
                                             "smaller tree or fewer frames");
   }
-  std::ostringstream stream;
+  if (out != nullptr && buffer_bytes < 4294967295.0) {
+    out->reserve(static_cast<std::size_t>(buffer_bytes) + 65536);
+  }
   tinygltf::TinyGLTF writer;
   if (!writer.WriteGltfSceneToStream(&model, stream, false, binary) || !stream) {
     return Status::Error("glTF buffer", "writing " + FormatBytes(buffer_bytes) +
                                             " of buffers failed (out of memory); export a "
                                             "smaller tree or fewer frames");
   }
+  return Status::Ok();
+}
+
+Result<std::string> Serialize(const Document& doc, bool binary) {
+  std::ostringstream stream;
+  NIWA_RETURN_IF_ERROR(SerializeTo(doc, binary, stream, nullptr));
   return stream.str();
 }
 
@@ -713,9 +793,11 @@ std::string AttributeSemantic(const std::string& name) {
 }
 
 Result<std::vector<unsigned char>> WriteGlb(const Document& document) {
-  Result<std::string> glb = Serialize(document, true);
-  if (!glb.ok()) return glb.status();
-  return std::vector<unsigned char>(glb->begin(), glb->end());
+  std::vector<unsigned char> glb;
+  ByteSink sink(&glb);
+  std::ostream stream(&sink);
+  NIWA_RETURN_IF_ERROR(SerializeTo(document, true, stream, &glb));
+  return glb;
 }
 
 Result<std::string> WriteGltfJson(const Document& document) { return Serialize(document, false); }

@@ -88,7 +88,7 @@ image::Rgba8Image PaintLeafTexture(int size) {
 
 const Result<std::vector<unsigned char>>& LeafTexturePng() {
   static const Result<std::vector<unsigned char>> png =
-      image::EncodeRgba8Png(PaintLeafTexture(256));
+      image::EncodeRgba8Png(PaintLeafTexture(kLeafTextureSize));
   return png;
 }
 

@@ -22,6 +22,9 @@ inline void LeafUv(double x, double y, float* u, float* v) {
   *v = static_cast<float>(1.0 - y);
 }
 
+// The size of the .glb's leaf texture (and the page's): 256 × 256 pixels.
+constexpr int kLeafTextureSize = 256;
+
 // The leaf texture, size × size pixels (size in 16..2048).
 image::Rgba8Image PaintLeafTexture(int size);
 

@@ -9,7 +9,6 @@
 #include "io/gltf_writer.h"
 #include "ivy/ivy_leaf_texture.h"
 #include "math/det_math.h"
-#include "params/param_json.h"
 
 namespace niwa::ivy {
 namespace {
@@ -32,6 +31,13 @@ struct Builder {
   std::vector<float> birth;
   bool textured = false;  // every vertex gets the texture coordinate `uv` (leaves)
   glm::vec2 uv{0, 0};
+  void Reserve(std::size_t parts, std::size_t vertices, std::size_t indices) {
+    mesh.positions.reserve(parts * vertices);
+    mesh.normals.reserve(parts * vertices);
+    if (textured) mesh.uvs.reserve(parts * vertices);
+    birth.reserve(parts * vertices);
+    mesh.indices.reserve(parts * indices);
+  }
   uint32_t Vertex(const glm::dvec3& p, const glm::dvec3& n, double step) {
     mesh.positions.push_back(glm::vec3(p));
     mesh.normals.push_back(glm::vec3(n));
@@ -127,6 +133,12 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p) {
   for (const Bud& b : m.buds) last_step = std::max(last_step, b.born_step);
   Builder stems, leaves, suckers;
   leaves.textured = true;
+  // Room for every vertex and index (a tube: 12 vertices, 36 indices; a leaf: its petiole tube
+  // and an 11-vertex fan; a sucker: its tube and a 9-vertex disc).
+  const std::size_t outline = LeafOutlineUnit().size();
+  stems.Reserve(m.internodes.size(), 2 * kSides, 6 * kSides);
+  leaves.Reserve(m.buds.size(), 2 * kSides + 1 + outline, 6 * kSides + 3 * outline);
+  suckers.Reserve(m.buds.size(), 2 * kSides + 9, 6 * kSides + 3 * 8);
   // The petiole on the midrib's texels; the fan's centre (the blade's base) at the petiole end.
   glm::vec2 petiole_uv, base_uv;
   LeafUv(0.0, 0.1, &petiole_uv.x, &petiole_uv.y);
@@ -174,7 +186,10 @@ Result<std::vector<unsigned char>> WriteIvyGlb(const IvyModel& model, const IvyP
   gltf::Document doc;
   doc.scene_name = "ivy";
   nlohmann::json extras;
-  extras["params"] = nlohmann::json::parse(ParamsToJson(params, -1));
+  // The parameters by key (sorted, as nlohmann::json keeps objects), each value a double: the
+  // same text ParamsToJson's round trip through parse gave, without the parse.
+  nlohmann::json& by_key = extras["params"] = nlohmann::json::object();
+  for (std::size_t i = 0; i < params.size(); ++i) by_key[params.table().row(i).key] = params.Get(i);
   extras["seed"] = seed;
   extras["steps"] = steps;
   doc.asset_extras_json = extras.dump();
@@ -194,7 +209,10 @@ Result<std::vector<unsigned char>> WriteIvyGlb(const IvyModel& model, const IvyP
     prim.mesh = std::move(mesh);
     prim.material = mat;
     prim.index_type = gltf::IndexType::kUint32;
-    doc.meshes.push_back({name, {prim}});
+    gltf::Mesh out;  // moved in: a braced {prim} would copy every vertex
+    out.name = name;
+    out.primitives.push_back(std::move(prim));
+    doc.meshes.push_back(std::move(out));
     gltf::Node node;
     node.name = name;
     node.mesh = static_cast<int>(doc.meshes.size() - 1);

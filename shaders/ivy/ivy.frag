@@ -1,16 +1,21 @@
 #version 300 es
 // Lit ivy parts and support: half-Lambert sun plus a sky/ground hemisphere ambient, both faces lit
 // (leaves are thin and a dropped mesh may be wound either way); uVariation adds a per-position
-// hash so leaves differ from one another.
+// hash so flat parts differ from one another. uUseTexture = 1 (the leaves, once the worker sent
+// the texture): the base colour is the .glb's leaf texture (core/ivy/ivy_leaf_texture.h, the same
+// pixels), cut where its alpha is under 0.5 (the blade's outline), and lit as a flat colour is.
 precision highp float;
 
 in vec3 vNormal;
 in vec3 vWorld;
+in vec2 vUv;
 
 uniform vec3 uColor;
 uniform vec3 uVariation;
 uniform vec3 uLightDirection;  // unit, towards the sun
 uniform vec3 uCameraPosition;
+uniform sampler2D uLeafMap;  // RGBA8, row 0 = v 0 (glTF's origin)
+uniform float uUseTexture;
 
 out vec4 outColor;
 
@@ -24,7 +29,14 @@ void main() {
   vec3 n = normalize(vNormal);
   vec3 view = normalize(uCameraPosition - vWorld);
   if (dot(n, view) < 0.0) n = -n;
-  vec3 base = uColor + uVariation * (hash(floor(vWorld * 6.0)) - 0.5);
+  vec3 base;
+  if (uUseTexture > 0.5) {
+    vec4 texel = texture(uLeafMap, vUv);
+    if (texel.a < 0.5) discard;
+    base = texel.rgb;  // the flat colours are given in the same (display) values
+  } else {
+    base = uColor + uVariation * (hash(floor(vWorld * 6.0)) - 0.5);
+  }
   float diffuse = 0.2 + 0.8 * max(dot(n, uLightDirection), 0.0);
   vec3 sky = vec3(0.62, 0.72, 0.85);
   vec3 ground = vec3(0.32, 0.30, 0.24);

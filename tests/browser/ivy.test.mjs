@@ -3,7 +3,8 @@
 // (`niwa ivy grow --url HASH --stats`, every field but the timings); the step scrubber changes
 // what is drawn without regrowing; a click on the support adds a seed point (the hash gains at=,
 // and the CLI agrees again); a bad value is one line beside its field and the page recovers; a
-// real Draco asset dropped on the view grows ivy (the CLI agrees with --mesh); screenshots go to
+// real Draco asset dropped on the view grows ivy (the CLI agrees with --mesh); the leaves are
+// drawn with the .glb's texture (against "Leaf texture" off); screenshots go to
 // build/artifacts/ivy-*.png.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -89,6 +90,76 @@ await runBrowserTest(async (server, browser) => {
   check('leaves and stems are drawn', full.green > 0.01 && full.brown > 0.0005, `green ${(full.green * 100).toFixed(2)}%, brown ${(full.brown * 100).toFixed(3)}%`);
   await saveCanvasPng(page, 'ivy-cubes4.png');
   await snapshotCanvas(page, 'full');
+
+  // 1b. The leaves are drawn with the .glb's leaf texture (core/ivy/ivy_leaf_texture.h): zoomed in
+  // on the side cube, the leaf pixels show the blade's gradient, rim and veins, so neighbouring leaf
+  // pixels differ far more often than with "Leaf texture" off (one flat green per leaf), and
+  // thin light lines (the veins) appear. Screenshots: build/artifacts/ivy-leaves-textured.png and
+  // ivy-leaves-flat.png.
+  // Pan (right-drag: no click, no seed) the leaves' centre to the view's centre, then zoom in.
+  const viewBox = await page.locator('#view').boundingBox();
+  const leafCentre = await page.evaluate(() => {
+    const image = window.__niwaCanvasImage('#view');
+    const d = image.data;
+    let sx = 0, sy = 0, n = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      if (!(d[i + 1] > d[i] + 20 && d[i + 1] > d[i + 2] + 20)) continue;
+      sx += (i / 4) % image.width;
+      sy += Math.floor(i / 4 / image.width);
+      ++n;
+    }
+    const css = image.width / document.getElementById('view').clientWidth;
+    return n ? { x: sx / n / css, y: sy / n / css } : null;
+  });
+  if (leafCentre) {
+    await page.mouse.move(viewBox.x + leafCentre.x, viewBox.y + leafCentre.y);
+    await page.mouse.down({ button: 'right' });
+    await page.mouse.move(viewBox.x + viewBox.width / 2, viewBox.y + viewBox.height / 2, { steps: 8 });
+    await page.mouse.up({ button: 'right' });
+  }
+  await page.mouse.move(viewBox.x + viewBox.width / 2, viewBox.y + viewBox.height / 2);
+  for (let i = 0; i < 5; ++i) await page.mouse.wheel(0, -240);
+  const zoomed = await page.waitForFunction(() => document.documentElement.dataset.leafTexture === 'on', null, { timeout: TIMEOUT })
+    .then(() => true, () => false);
+  check('the leaves are drawn textured (hook leafTexture on)', zoomed, `leafTexture ${await page.evaluate(() => document.documentElement.dataset.leafTexture)}`);
+  await page.waitForTimeout(500);
+  // Leaf pixels (green pairs side by side), the share whose right neighbour differs, and the
+  // share on a thin light line (a vein): lighter by 10 than the leaf pixels 3 px to both sides,
+  // across or down; a flat leaf's shade steps (lit faces, hash cells) are never lighter on both.
+  const leafLook = () => page.evaluate(() => {
+    const image = window.__niwaCanvasImage('#view');
+    const d = image.data, w = image.width, h = image.height;
+    const green = (i) => d[i + 1] > d[i] + 20 && d[i + 1] > d[i + 2] + 20;
+    const luma = (i) => 0.299 * d[i] + 0.587 * d[i + 1] + 0.114 * d[i + 2];
+    const line = (i, step) => green(i - step) && green(i + step) && luma(i) > luma(i - step) + 10 && luma(i) > luma(i + step) + 10;
+    let leaves = 0, differ = 0, veins = 0;
+    for (let y = 3; y + 3 < h; ++y) {
+      for (let x = 3; x + 3 < w; ++x) {
+        const i = 4 * (y * w + x);
+        if (!green(i) || !green(i + 4)) continue;
+        ++leaves;
+        if (Math.abs(d[i] - d[i + 4]) + Math.abs(d[i + 1] - d[i + 5]) + Math.abs(d[i + 2] - d[i + 6]) > 9) ++differ;
+        if (line(i, 12) || line(i, 12 * w)) ++veins;
+      }
+    }
+    return { leaves, differ: differ / Math.max(1, leaves), veins: veins / Math.max(1, leaves) };
+  });
+  const textured = await leafLook();
+  await saveCanvasPng(page, 'ivy-leaves-textured.png');
+  await page.click('#show-leaf-texture');
+  await page.waitForFunction(() => document.documentElement.dataset.leafTexture === 'off', null, { timeout: TIMEOUT });
+  await page.waitForTimeout(300);
+  const flat = await leafLook();
+  await saveCanvasPng(page, 'ivy-leaves-flat.png');
+  await page.click('#show-leaf-texture');
+  await page.waitForFunction(() => document.documentElement.dataset.leafTexture === 'on', null, { timeout: TIMEOUT });
+  check('zoomed in, the leaves cover the view', textured.leaves > 20000 && flat.leaves > 20000, `${textured.leaves} textured, ${flat.leaves} flat leaf pixel pairs`);
+  check('textured leaves vary pixel to pixel (veins, rim, gradient), flat ones do not',
+    textured.differ > 3 * flat.differ && textured.differ > 0.08,
+    `neighbours differ in ${(textured.differ * 100).toFixed(1)}% of leaf pixels textured, ${(flat.differ * 100).toFixed(1)}% flat`);
+  check('textured leaves show veins (thin light lines), flat ones none', textured.veins > 0.01 && textured.veins > 10 * flat.veins,
+    `${(textured.veins * 100).toFixed(2)}% of leaf pixels on a vein textured, ${(flat.veins * 100).toFixed(2)}% flat`);
+  await page.click('#reset-view');
 
   // 2. The step scrubber replays the growth from the birth steps: less is drawn, nothing regrows.
   const grows = Number(data.growRequests);

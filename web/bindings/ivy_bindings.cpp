@@ -8,10 +8,13 @@
 // Buffers leave through buffers(group) (buffers.h), copied once by the worker. Groups:
 //   "support"                    positions, normals (Float32 xyz), indices (Uint32)
 //   "stems" | "leaves" | "suckers"  positions, normals, indices, birth (Float32 per vertex: the
-//                                birth_step of core/ivy/ivy_mesh.h, the .glb's _BIRTH_STEP)
+//                                birth_step of core/ivy/ivy_mesh.h, the .glb's _BIRTH_STEP);
+//                                "leaves" also uvs (Float32 uv per vertex: the .glb's TEXCOORD_0)
 //   "buds"                       positions (Float32 xyz), kind (Float32: 0 A, 1 D, 2 Z, as at the
 //                                last step), birth (Float32: the step the bud was made)
 //   "glb"                        bytes (Uint8, after buildGlb)
+// ivyLeafTexture() -> {width, height, pixels: Uint8Array RGBA (row 0 = v 0)}: the leaf
+// texture's pixels, the ones the .glb's PNG holds (core/ivy/ivy_leaf_texture.h).
 // Calls: loadScene(name), loadTree(preset, years) (a Niwa tree's bark, core/tree/bark_support, as
 // the CLI's --tree-preset) or loadMesh(bytes, name) -> ""/error, supportJson(); grow(stateJson) ->
 // ""/error, then statsJson(), buffers(..), modelJson(), lstring(), buildGlb(withSupport),
@@ -44,6 +47,7 @@
 #include "io/obj_reader.h"
 #include "ivy/growth.h"
 #include "ivy/ivy_budget.h"
+#include "ivy/ivy_leaf_texture.h"
 #include "ivy/ivy_mesh.h"
 #include "ivy/ivy_params.h"
 #include "ivy/ivy_report.h"
@@ -74,7 +78,7 @@ std::string Dump(const ordered_json& j) {
 
 // Flat float views of a TriMesh's vectors (glm::vec3 is three packed floats).
 struct FlatMesh {
-  std::vector<float> positions, normals, birth;
+  std::vector<float> positions, normals, birth, uvs;
   std::vector<uint32_t> indices;
 };
 
@@ -85,6 +89,8 @@ FlatMesh Flatten(const geom::TriMesh& mesh) {
     out.positions.insert(out.positions.end(), {p.x, p.y, p.z});
   out.normals.reserve(mesh.normals.size() * 3);
   for (const glm::vec3& n : mesh.normals) out.normals.insert(out.normals.end(), {n.x, n.y, n.z});
+  out.uvs.reserve(mesh.uvs.size() * 2);
+  for (const glm::vec2& t : mesh.uvs) out.uvs.insert(out.uvs.end(), {t.x, t.y});
   out.indices = mesh.indices;
   if (const geom::VertexAttribute* birth = mesh.FindAttribute("birth_step"))
     out.birth = birth->values;
@@ -117,6 +123,17 @@ std::vector<float> FaceNormals(const geom::TriMesh& mesh) {
 }  // namespace
 
 std::string IvyParamTableJson() { return ParamTableJson(IvyTable()); }
+
+// The leaf texture (ivy_leaf_texture.h), the pixels the .glb's PNG encodes, copied out of the heap.
+emscripten::val IvyLeafTexture() {
+  const image::Rgba8Image image = ivy::PaintLeafTexture(ivy::kLeafTextureSize);
+  emscripten::val view(emscripten::typed_memory_view(image.pixels.size(), image.pixels.data()));
+  emscripten::val out = emscripten::val::object();
+  out.set("width", image.width);
+  out.set("height", image.height);
+  out.set("pixels", emscripten::val::global("Uint8Array").new_(view));  // a copy
+  return out;
+}
 
 std::string IvyPresetsJson() {
   ordered_json out = ordered_json::array();
@@ -433,6 +450,7 @@ class IvyLab {
           .Add("normals", m.normals)
           .Add("indices", m.indices)
           .Add("birth", m.birth);
+      if (!m.uvs.empty()) out.Add("uvs", m.uvs);
     };
     if (group == "support") {
       out.Add("positions", support_.positions)
@@ -501,6 +519,7 @@ EMSCRIPTEN_BINDINGS(niwa_ivy) {
   function("ivyParamTableJson", &niwa::IvyParamTableJson);
   function("ivyPresetsJson", &niwa::IvyPresetsJson);
   function("ivyScenesJson", &niwa::IvyScenesJson);
+  function("ivyLeafTexture", &niwa::IvyLeafTexture);
   function("ivyDecodeHash", &niwa::IvyDecodeHash);
   function("ivyEncodeHash", &niwa::IvyEncodeHash);
   class_<niwa::IvyLab>("IvyLab")

@@ -26,7 +26,7 @@ const ui = {
   stage: $('stage'), canvas: $('view'), stats: $('stats'), progress: $('progress'), scene: $('scene'),
   sceneHelp: $('scene-help'), tree: $('tree'), treeYears: $('tree-years'), meshFile: $('mesh-file'), preset: $('preset'), seed: $('seed'), steps: $('steps'),
   reset: $('reset'), seeds: $('seeds'), clickSeeds: $('click-seeds'), clearSeeds: $('clear-seeds'),
-  showLeaves: $('show-leaves'), showSuckers: $('show-suckers'), showSupport: $('show-support'), showSeeds: $('show-seeds'), showBuds: $('show-buds'),
+  showLeaves: $('show-leaves'), showLeafTexture: $('show-leaf-texture'), showSuckers: $('show-suckers'), showSupport: $('show-support'), showSeeds: $('show-seeds'), showBuds: $('show-buds'),
   resetView: $('reset-view'), copyLink: $('copy-link'), downloadGlb: $('download-glb'), glbSupport: $('glb-support'),
   downloadJson: $('download-json'), downloadLsys: $('download-lsys'), shareStatus: $('share-status'), params: $('params'),
   embed: $('embed'),
@@ -75,6 +75,7 @@ ui.cancel.addEventListener('click', () => {
 // ---------------------------------------------------------------- rendering
 const camera = new OrbitCamera();
 let renderer = null;
+let leafTexture = null;  // the worker's leaf texture ({width, height, pixels}), for a new renderer
 let ivySerial = 0;
 let installedSerial = 0;  // the ivy whose buffers are in place (a big one goes up in parts)
 // Frames on demand over the renderer's progressive parts (web/gl/progressive_loop.js); the hooks
@@ -87,6 +88,7 @@ const loop = new ProgressiveLoop({
     setHooks({
       drawnSerial: installedSerial, drawnStep: scrubber.value, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls,
       drawnStems: counts.stems, drawnLeaves: counts.leaves, drawnSuckers: counts.suckers,
+      leafTexture: drawn.leavesTextured ? 'on' : 'off',
     });
   },
 });
@@ -100,7 +102,11 @@ const scrubber = new StepScrubber({ range: ui.step, text: ui.stepText, play: ui.
 
 async function startRenderer() {
   try {
-    await loop.start(() => (renderer = new IvyRenderer(ui.canvas)), {
+    await loop.start(() => {
+      renderer = new IvyRenderer(ui.canvas);
+      if (leafTexture) renderer.setLeafTexture(leafTexture);
+      return renderer;
+    }, {
       canvas: ui.canvas, camera,
       onLost: () => notices.set('webgl', 'The WebGL2 context was lost; reload the page to draw again.'),
     });
@@ -295,6 +301,11 @@ function fitPresetToMesh() {
 }
 
 worker.on('ivy', (msg) => {
+  // The leaf texture comes once per worker, with its first ivy: kept even from a superseded one.
+  if (msg.leafTexture) {
+    leafTexture = msg.leafTexture;
+    renderer?.setLeafTexture(leafTexture);
+  }
   if (msg.id !== latestId) return;
   const s = msg.stats;
   notices.set('error', '');
@@ -480,7 +491,7 @@ ui.clearSeeds.addEventListener('click', () => {
   showSeeds();
   scheduleUpdate();
 });
-for (const [input, part] of [[ui.showLeaves, 'leaves'], [ui.showSuckers, 'suckers'], [ui.showSupport, 'support'], [ui.showSeeds, 'seeds'], [ui.showBuds, 'buds']]) {
+for (const [input, part] of [[ui.showLeaves, 'leaves'], [ui.showLeafTexture, 'leafTexture'], [ui.showSuckers, 'suckers'], [ui.showSupport, 'support'], [ui.showSeeds, 'seeds'], [ui.showBuds, 'buds']]) {
   input.addEventListener('change', () => {
     renderer?.setVisible({ [part]: input.checked });
     requestFrame();

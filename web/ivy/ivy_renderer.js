@@ -1,5 +1,6 @@
 // The ivy page's WebGL2 view (shaders/ivy/): the support mesh in stone grey, the ivy's stems,
-// leaves and suckers over it, and the seed points and (optionally) the buds A/D/Z as dots. Positions stay in the scene's units
+// leaves and suckers over it (the leaves textured with the .glb's own leaf texture, alpha-cut to
+// its outline, when the worker has sent it; one flat green otherwise), and the seed points and (optionally) the buds A/D/Z as dots. Positions stay in the scene's units
 // (px for the built-in scenes, metres for most assets); uModel scales the support into a view of
 // about ten units so one orbit camera fits every scene. The step scrubber hides what was born after
 // step k in the vertex shader (aBirth), so replaying the growth needs no regrow.
@@ -63,14 +64,15 @@ export class IvyRenderer {
     this.parts = {};  // name -> {vao, buffers, count, births}
     this.model = [0, 0, 0, 1];
     this.step = Infinity;
-    this.visible = { support: true, stems: true, leaves: true, suckers: true, seeds: true, buds: false };
+    this.visible = { support: true, stems: true, leaves: true, suckers: true, seeds: true, buds: false, leafTexture: true };
+    this.leafTexture = null;  // the worker's leaf texture (core/ivy/ivy_leaf_texture.h), uploaded
     this.buds = { vao: null, buffers: [], count: 0 };
     this.seeds = { vao: null, buffer: null, count: 0 };
     this.light = sunDirection(50, 30);
     this.boundsView = null;
     this.ivyUploads = 0;     // setIvy calls so far (a newer one drops an older upload)
     this.progress = new ProgressiveFrame(this.gl);  // the frame being drawn in parts
-    this.frameTotals = { triangles: 0, drawCalls: 0, primitives: 0 };
+    this.frameTotals = { triangles: 0, drawCalls: 0, primitives: 0, leavesTextured: false };
     this.scale = 1;
     this.uploading = false;  // an ivy is going up in parts
   }
@@ -139,6 +141,7 @@ export class IvyRenderer {
     floatAttribute(gl, 1, buffers[1], 3);
     gl.disableVertexAttribArray(2);
     gl.vertexAttrib1f(2, 0);
+    gl.disableVertexAttribArray(3);
     buffers.push(staticBuffer(gl, indices, gl.ELEMENT_ARRAY_BUFFER));
     gl.bindVertexArray(null);
     this.parts.support = { vao, buffers, count: indices.length, births: null };
@@ -173,7 +176,28 @@ export class IvyRenderer {
     this.boundsView = { min: view(min), max: view(max) };
   }
 
-  // The ivy's parts ({stems, leaves, suckers}: {positions, normals, indices, birth}); a scene
+  // The leaf texture ({width, height, pixels: RGBA bytes, row 0 = v 0}: the pixels of the .glb's
+  // PNG, web/bindings/ivy_bindings.cpp ivyLeafTexture), uploaded once with mipmaps; the leaves'
+  // uvs are the .glb's TEXCOORD_0.
+  setLeafTexture(t) {
+    const gl = this.gl;
+    if (!t || !t.pixels || !(t.width > 0) || !(t.height > 0)) return;
+    const texture = this.leafTexture || gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, texture);
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, t.width, t.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(t.pixels));
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
+    gl.generateMipmap(gl.TEXTURE_2D);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);  // as the .glb's sampler
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    this.leafTexture = texture;
+  }
+
+  // The ivy's parts ({stems, leaves, suckers}: {positions, normals, indices, birth}, leaves also
+  // uvs); a scene
   // without a support is fitted to the ivy's own bounds. The buffers go up in parts
   // (web/gl/chunked_upload.js: a 125 k-internode ivy was a 1.7 s long task at once) while the old
   // ivy stays; `uploading` is true until the new one is in place. Resolves to true then, or to
@@ -182,11 +206,13 @@ export class IvyRenderer {
     const gl = this.gl;
     const serial = ++this.ivyUploads;
     const names = ['stems', 'leaves', 'suckers'].filter((name) => mesh[name].indices.byteLength > 0);
+    const hasUvs = (name) => Boolean(mesh[name].uvs && mesh[name].uvs.byteLength > 0);
     const plan = names.flatMap((name) => [
       { key: `${name}.positions`, bytes: mesh[name].positions, target: gl.ARRAY_BUFFER },
       { key: `${name}.normals`, bytes: mesh[name].normals, target: gl.ARRAY_BUFFER },
       { key: `${name}.birth`, bytes: mesh[name].birth, target: gl.ARRAY_BUFFER },
       { key: `${name}.indices`, bytes: mesh[name].indices, target: gl.ELEMENT_ARRAY_BUFFER },
+      ...(hasUvs(name) ? [{ key: `${name}.uvs`, bytes: mesh[name].uvs, target: gl.ARRAY_BUFFER }] : []),
     ]);
     this.uploading = true;
     return uploadInParts(gl, plan, () => serial !== this.ivyUploads).then((uploaded) => {
@@ -197,16 +223,19 @@ export class IvyRenderer {
       this.progress.abort();  // a frame in parts of the old buffers ends here
       for (const name of ['stems', 'leaves', 'suckers']) this.#drop(name);
       for (const name of names) {
-        const buffers = ['positions', 'normals', 'birth', 'indices'].map((attr) => uploaded.get(`${name}.${attr}`));
+        const uvs = hasUvs(name);
+        const buffers = ['positions', 'normals', 'birth', 'indices', ...(uvs ? ['uvs'] : [])].map((attr) => uploaded.get(`${name}.${attr}`));
         const vao = gl.createVertexArray();
         gl.bindVertexArray(vao);
         floatAttribute(gl, 0, buffers[0], 3);
         floatAttribute(gl, 1, buffers[1], 3);
         floatAttribute(gl, 2, buffers[2], 1);
+        if (uvs) floatAttribute(gl, 3, buffers[4], 2);
+        else gl.disableVertexAttribArray(3);
         gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, buffers[3]);
         gl.bindVertexArray(null);
         const indices = new Uint32Array(mesh[name].indices);
-        this.parts[name] = { vao, buffers, count: indices.length, births: birthCounter(indices, new Float32Array(mesh[name].birth)) };
+        this.parts[name] = { vao, buffers, count: indices.length, uvs, births: birthCounter(indices, new Float32Array(mesh[name].birth)) };
       }
       if (!this.parts.support) {
         const p = new Float32Array(mesh.stems.positions);
@@ -315,7 +344,7 @@ export class IvyRenderer {
   // quality: {scale} from a FrameGovernor (omitted: full size). budget: primitives this call may
   // draw; a bigger frame is drawn over several calls (web/gl/progressive_frame.js) and returns
   // partial: true until the call that finishes it (call again with resume: true). Returns what
-  // the whole frame draws.
+  // the whole frame draws (leavesTextured: the leaves drawn with the leaf texture).
   render(camera, quality = null, { budget = Infinity, resume = false } = {}) {
     const gl = this.gl;
     if (!resume || !this.progress.pending()) this.#startFrame(camera, quality, budget);
@@ -332,11 +361,14 @@ export class IvyRenderer {
     const eye = camera.position();
     const step = Number.isFinite(this.step) ? this.step : 1e9;
     const p = this.programs.ivy;
-    const totals = { triangles: 0, drawCalls: 0, primitives: 0 };
+    const totals = { triangles: 0, drawCalls: 0, primitives: 0, leavesTextured: false };
     const steps = [];
     for (const name of ['support', 'stems', 'suckers', 'leaves']) {
       const part = this.parts[name];
       if (!part || !this.visible[name]) continue;
+      // Leaves with uvs and the worker's texture: the .glb's texels, cut at its outline.
+      const textured = Boolean(name === 'leaves' && part.uvs && this.leafTexture && this.visible.leafTexture);
+      if (textured) totals.leavesTextured = true;
       steps.push({
         primitives: part.count / 3,
         setup: () => {
@@ -349,6 +381,10 @@ export class IvyRenderer {
           gl.disable(gl.CULL_FACE);
           gl.uniform3fv(p.uniforms.uColor, COLORS[name].color);
           gl.uniform3fv(p.uniforms.uVariation, COLORS[name].variation);
+          gl.uniform1f(p.uniforms.uUseTexture, textured ? 1 : 0);
+          gl.activeTexture(gl.TEXTURE0);
+          gl.bindTexture(gl.TEXTURE_2D, textured ? this.leafTexture : null);
+          gl.uniform1i(p.uniforms.uLeafMap, 0);
           if (name === 'support') {
             gl.enable(gl.POLYGON_OFFSET_FILL);  // ivy lying on a face wins the depth test
             gl.polygonOffset(1, 1);
@@ -356,7 +392,10 @@ export class IvyRenderer {
           gl.bindVertexArray(part.vao);
         },
         draw: (first, n) => gl.drawElements(gl.TRIANGLES, 3 * n, gl.UNSIGNED_INT, 12 * first),
-        teardown: () => gl.disable(gl.POLYGON_OFFSET_FILL),
+        teardown: () => {
+          gl.disable(gl.POLYGON_OFFSET_FILL);
+          gl.bindTexture(gl.TEXTURE_2D, null);
+        },
       });
       totals.triangles += part.count / 3;
       totals.primitives += part.count / 3;

@@ -2,7 +2,8 @@
 // client holds its support (a built-in scene, or a dropped mesh sent once with 'mesh') and the last
 // ivy grown on it. An 'update' loads the state's scene when it changed, grows, and sends the stats
 // and the stems, leaves and suckers (with their birth steps, so the page replays the growth
-// without regrowing); 'pick' casts a ray on the support (a click places a seed point); 'export'
+// without regrowing; the leaves with their uvs, and the client's first 'ivy' message with the
+// leaf texture's pixels, so the page draws the leaves as the .glb holds them); 'pick' casts a ray on the support (a click places a seed point); 'export'
 // builds .glb, .json or .lsys. Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does).
 import { takeBuffers } from './transfer.js';
@@ -20,6 +21,7 @@ export function createHandler(Module, ctx) {
   // The trees ivy can climb (scene 'tree'): the tree study's presets.
   const trees = JSON.parse(Module.presetsJson()).map((p) => ({ name: p.name, title: p.title, years: p.years }));
   const labs = new Map();  // client -> {lab, support: 'scene:<name>' | 'mesh:<name>' | null}
+  let leafTextureOnce = null;  // {width, height, pixels}: the .glb's leaf texture, kept
 
   // Progress from inside a long call (a big mesh's read and BVH, every growth step): at most one
   // message per 100 ms, for the request the lab is working on (entry.working).
@@ -31,7 +33,7 @@ export function createHandler(Module, ctx) {
   };
   function labOf(client) {
     if (!labs.has(client)) {
-      const entry = { lab: new Module.IvyLab(), support: null, working: 0, lastPost: 0 };
+      const entry = { lab: new Module.IvyLab(), support: null, working: 0, lastPost: 0, leafTextureSent: false };
       entry.lab.setProgress((stage, done, total) => {
         const now = performance.now();
         const edge = stage !== 'grow' || done === 1 || done === total;
@@ -97,7 +99,18 @@ export function createHandler(Module, ctx) {
     const transfer = [];
     const mesh = {};
     for (const part of ['stems', 'leaves', 'suckers', 'buds']) mesh[part] = takeBuffers(entry.lab.buffers(part), transfer);
-    post({ type: 'ivy', id, client, stats, mesh, steps: entry.lab.steps(), hash: entry.lab.hash(),
+    // The leaf texture (the .glb's pixels), once per client: copied out of the heap by the
+    // binding once per worker, copied for each client and transferred; the page keeps it for
+    // every later ivy.
+    let leafTexture;
+    if (!entry.leafTextureSent) {
+      leafTextureOnce ??= Module.ivyLeafTexture();  // painted once per worker (about 30-50 ms)
+      const pixels = new Uint8Array(leafTextureOnce.pixels);  // this client's copy, transferred
+      leafTexture = { width: leafTextureOnce.width, height: leafTextureOnce.height, pixels: pixels.buffer };
+      transfer.push(pixels.buffer);
+      entry.leafTextureSent = true;
+    }
+    post({ type: 'ivy', id, client, stats, mesh, leafTexture, steps: entry.lab.steps(), hash: entry.lab.hash(),
       wallMs: performance.now() - t0 }, transfer);
   }
 

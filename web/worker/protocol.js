@@ -103,8 +103,9 @@
  *   -> SupportMessage without an id ({request: id}; when the scene or tree changed),
  *      ProgressMessage {stage: scene|tree|bvh|grow|read, done?, total?, text} (at most one per 100 ms),
  *      {type: 'ivy', stats, mesh: {stems, leaves, suckers: {positions, normals, indices, birth},
- *       buds: {positions, kind, birth}},
- *       steps, hash, wallMs}
+ *       buds: {positions, kind, birth}} (leaves also uvs: the .glb's TEXCOORD_0),
+ *       leafTexture?: {width, height, pixels: ArrayBuffer RGBA} (the .glb's leaf texture, in the
+ *       client's first 'ivy' only), steps, hash, wallMs}
  * @typedef {Envelope & {type: 'mesh', name: string, bytes: ArrayBuffer}} IvyMeshMessage
  *   -> {type: 'support', support: {name, dropped, free, triangles, bounds, seeds}, buffers:
  *       {positions, normals, indices}}
