@@ -41,6 +41,7 @@
 #include <cstring>
 #include <vector>
 
+#include "geom/big_array.h"
 #include "geom/bounds.h"
 #include "geom/tri_mesh.h"
 
@@ -70,14 +71,19 @@ struct BvhNode {
 // q * 2^exponent per axis), rounded outward and checked in the build with the very float
 // expression ChildBounds() uses, so a decoded box always contains the binary child's box: the
 // queries prune a little less, never wrongly, and their answers stay those of the linear twins.
+#ifndef NIWA_BVH_WIDTH
+#define NIWA_BVH_WIDTH 4
+#endif
 struct alignas(64) BvhWideNode {
-  static constexpr uint8_t kEmpty = 0xff;  // count of an unused slot (slots fill from 0)
-  float origin[3];     // the grid's origin: the min corner of the union of the child boxes
-  int8_t exponent[3];  // grid step 2^exponent per axis, in [-126, 127]
-  uint8_t count[4];    // 0: inner child; 1..16: a leaf of that many triangles; kEmpty: unused
-  uint8_t lo[3][4];    // child k's box on axis a: origin[a] + lo[a][k] * step[a] ..
-  uint8_t hi[3][4];    //                          origin[a] + hi[a][k] * step[a]
-  uint32_t child[4];   // inner child: its wide node index; leaf child: its first slot in order()
+  static constexpr int kWidth = NIWA_BVH_WIDTH;  // children per node
+  static constexpr uint8_t kEmpty = 0xff;        // count of an unused slot (slots fill from 0)
+  float origin[3];        // the grid's origin: the min corner of the union of the child boxes
+  int8_t exponent[3];     // grid step 2^exponent per axis, in [-126, 127]
+  uint8_t count[kWidth];  // 0: inner child; 1..16: a leaf of that many triangles; kEmpty: unused
+  uint8_t lo[3][kWidth];  // child k's box on axis a: origin[a] + lo[a][k] * step[a] ..
+  uint8_t hi[3][kWidth];  //                          origin[a] + hi[a][k] * step[a]
+  uint32_t
+      child[kWidth];  // inner child: its wide node index; leaf child: its first slot in order()
   static float Step(int8_t e) {  // 2^e for e in [-126, 127], from its bits (no libm)
     uint32_t bits = static_cast<uint32_t>(e + 127) << 23;
     float f;
@@ -97,7 +103,19 @@ struct alignas(64) BvhWideNode {
     return Bounds3{lo_c, hi_c};
   }
 };
-static_assert(sizeof(BvhWideNode) == 64, "one cache line");
+static_assert(sizeof(BvhWideNode) == 16 * BvhWideNode::kWidth, "one cache line per 4 children");
+
+// One triangle of a leaf as the queries read it: its corners (the mesh's positions, copied) and its
+// mesh index (order()[slot]), side by side so a leaf costs one run of memory and no second array.
+struct BvhLeafTriangle {
+  glm::vec3 corner[3];
+  uint32_t triangle;
+};
+static_assert(sizeof(BvhLeafTriangle) == 40, "nine floats and an index");
+
+// The queries' arrays, on 2 MB pages where the system gives them (big_array.h).
+using BvhWideNodes = std::vector<BvhWideNode, BigArrayAllocator<BvhWideNode>>;
+using BvhLeafTriangles = std::vector<BvhLeafTriangle, BigArrayAllocator<BvhLeafTriangle>>;
 
 class Bvh {
  public:
@@ -117,22 +135,22 @@ class Bvh {
   const std::vector<BvhNode>& nodes() const { return nodes_; }
   // The 4-wide tree the queries traverse (root is node 0; empty when nodes() is), and its depth
   // in wide levels.
-  const std::vector<BvhWideNode>& wide_nodes() const { return wide_; }
+  const BvhWideNodes& wide_nodes() const { return wide_; }
   int wide_depth() const { return wide_depth_; }
   // Triangle indices in leaf order.
   const std::vector<uint32_t>& order() const { return order_; }
-  // The corners of order()[i] at 3i, 3i+1, 3i+2: a copy of the mesh's positions in leaf order, so a
-  // leaf's triangles are read from one run of memory (36 bytes per triangle).
-  const std::vector<glm::vec3>& corners() const { return corners_; }
+  // Triangle order()[i] with its corners at slot i: a copy of the mesh's positions in leaf order,
+  // so a leaf's triangles, and their indices, are read from one run of memory (40 bytes each).
+  const BvhLeafTriangles& leaf_triangles() const { return leaf_; }
 
  private:
   friend struct BvhTestAccess;  // tests break a node on purpose to see the oracle tests fail
   void BuildWide();             // wide_ from nodes_ (deterministic: depth first, left to right)
   std::vector<BvhNode> nodes_;
-  std::vector<BvhWideNode> wide_;
+  BvhWideNodes wide_;
   int wide_depth_ = 0;
   std::vector<uint32_t> order_;
-  std::vector<glm::vec3> corners_;
+  BvhLeafTriangles leaf_;
   int depth_ = 0;
 };
 
