@@ -29,33 +29,37 @@
 // adds ~1/6 of their count at 64 bytes each): the build, the structure tests and the determinism
 // digest read them.
 //
-// Memory at 4 M triangles (2026-12-03). Quiet records gave closest 571 -> 1834 ns (3.2x) with
-// callgrind at 2.15x the instructions (21.9 -> 46.2 box tests, wide depth 5 -> 10): the rest is
-// the bottom three node levels (21 MB) and the leaves (160 MB) missing cache and TLB one after
-// another, down one path. So the changes cut the chain, not instructions (fewer instructions per
-// box would speed 4 k as much and raise the ratio): (1) the nearest inner child, popped next, has
-// its kSuccessors = 4 depth-first successors prefetched with it (query_detail.h): two levels above
-// the leaves they are exactly its children, so the last two node fetches overlap (only in trees of
-// >= 16 k wide nodes, 1 MB, which cache does not hold); (2) wide nodes and leaf records on 2 MB
-// pages where Linux gives them (big_array.h; 186 MB of AnonHugePages at 4 M); (3) each leaf
-// triangle's index beside its corners (BvhLeafTriangle, 40 bytes), so a leaf is one run of memory
-// and order() is no longer read by the queries (on its own within the noise). Measured with a probe
-// (build/exp, not kept: same walls and queries as bench/geom_workloads.cpp; thread CPU time, so
-// the other processes' time slices are not counted; 10 batches of 2,000 queries, each timed 9
-// times and its fastest kept; old and new alternated 3 times; load average 12-15 on 2 cores), ns
-// per query, old -> new (range over the 3 runs):
-//   closest  4k 487-522 -> 489-532, 65k 758-911 -> 840-900, 1M 1504-1791 -> 1250-1328,
-//            4M 2209-2466 -> 1716-1837 (4M/4k 4.53-4.75x -> 3.40-3.67x);
-//   segment  4k 148-162 -> 155-167, 4M 549-602 -> 419-451 (3.51-3.71x -> 2.59-2.94x).
+// Memory at 4 M triangles (2026-12-03; the 3x growth goal of closest-point queries is NOT shown
+// met). Quiet records gave closest 571 -> 1834 ns (3.2x) with callgrind at 2.15x the instructions
+// (21.9 -> 46.2 box tests, wide depth 5 -> 10): the rest is the bottom node levels (21 MB) and the
+// leaves missing cache and TLB one after another down one path, so fewer instructions per box
+// would speed 4 k as much as 4 M and raise the ratio. What is kept: (1) the nearest inner child,
+// popped next, has its kSuccessors = 4 depth-first successors prefetched with it (query_detail.h;
+// two levels above the leaves they are exactly its children; only in trees of >= 16 k wide nodes);
+// (2) each leaf triangle's index beside its corners (BvhLeafTriangle, 40 bytes), so the queries no
+// longer read order(). Measured with a probe (same walls and queries as bench/geom_workloads.cpp;
+// thread CPU time, so other processes' time slices are not counted; 10 batches of 2,000 queries,
+// each timed 9 times, fastest kept; old and new alternated 3 times in separate processes; load
+// average 9-10 on 2 cores), ns per query, old -> new (the 3 runs):
+//   closest  4k 460/491/501 -> 490/488/478, 65k 748/826/796 -> 866/831/805,
+//            1M 1403/1750/1576 -> 1462/1451/1458, 4M 1837/2232/1974 -> 2078/2051/1936;
+//            4M/4k 4.00/4.55/3.94x -> 4.24/4.21/4.05x: within the noise;
+//   segment  4k 139/150/159 -> 149/154/145, 4M 443/549/489 -> 499/489/463.
 // On this loaded machine the 4 M cost is inflated by the other processes' use of the shared L3
-// (the old ratio is 4.5-4.8x here against 3.2x quiet), so the quiet ratio after the change is not
-// measured here; -20 to -27 % at 4 M would bring 3.2x to about 2.4-2.6x. Tried and dropped
-// (same probe, same load): 8-wide nodes (128 bytes, wide depth 10 -> 7 at 4 M): slower at both
-// ends (4 k 538-607 against 482-487 ns, 4 M 2685-3106 against 2337-2407 ns: 28 and 60 box tests
-// instead of 22 and 46, and two lines a node); a float pre-reject of the child boxes before the
+// (the old ratio is 3.9-4.8x here against 3.2x quiet). With (3) the two query arrays on 2 MB pages
+// (an allocator that madvise(MADV_HUGEPAGE)s arrays of >= 4 MB before first use; load 12-15), 4 M
+// fell to 1716/1837/1810 against 2209/2348/2466 ns (4M/4k 3.40-3.67x against 4.53-4.75x; segment
+// 4 M 419-451 against 549-602) and huge pages alone gave -4 to -12 % at 4 M; but the bench
+// runner's builds got slower (interleaved, load 7-9, ns per triangle: 262 k warm 313 -> 470, cold
+// 4 M 570 -> 684; the same runner without huge pages 305 and 578), fresh 2 MB pages being faulted
+// in and compacted on every build, so it was dropped: the build goal outranks a hint. Tried and
+// dropped too (same probe, load 13-18): 8-wide nodes (128 bytes, wide depth 10 -> 7 at 4 M): slower
+// at both ends (4 k 538-607 against 482-487 ns, 4 M 2685-3106 against 2337-2407 ns: 28 and 60 box
+// tests instead of 22 and 46, two lines a node); a float pre-reject of the child boxes before the
 // double test (scalar: g++ -O3 did not vectorise it; 4 k +8-13 %, 4 M +12-21 %); prefetching every
 // line of a leaf rather than its first (4 M +11-30 %). BvhWideNode::kWidth keeps the width one
-// constant.
+// constant. Next candidates, not tried: a layout whose nodes hold their children's child-block
+// addresses (two-level lookahead), huge pages on the big arrays kept across builds.
 //
 // Determinism: the build runs in a fixed order (recursive, left child first), with float bounds
 // and double SAH costs; ties between split candidates go to the lowest axis and bin. Natively
@@ -69,7 +73,6 @@
 #include <cstring>
 #include <vector>
 
-#include "geom/big_array.h"
 #include "geom/bounds.h"
 #include "geom/tri_mesh.h"
 
@@ -141,9 +144,8 @@ struct BvhLeafTriangle {
 };
 static_assert(sizeof(BvhLeafTriangle) == 40, "nine floats and an index");
 
-// The queries' arrays, on 2 MB pages where the system gives them (big_array.h).
-using BvhWideNodes = std::vector<BvhWideNode, BigArrayAllocator<BvhWideNode>>;
-using BvhLeafTriangles = std::vector<BvhLeafTriangle, BigArrayAllocator<BvhLeafTriangle>>;
+using BvhWideNodes = std::vector<BvhWideNode>;
+using BvhLeafTriangles = std::vector<BvhLeafTriangle>;
 
 class Bvh {
  public:
