@@ -273,7 +273,7 @@ struct Builder {
 // in memory), children kept in their left-to-right binary order.
 struct Widener {
   const std::vector<BvhNode>& nodes;
-  BvhWideNodes& wide;
+  std::vector<BvhWideNode>& wide;
   int max_depth = 0;
 
   // Fills node n's slots with the binary nodes kids[0..k): counts, children, and the child boxes
@@ -297,7 +297,7 @@ struct Widener {
       n.origin[a] = origin;
       n.exponent[a] = static_cast<int8_t>(e);
       const float step = BvhWideNode::Step(n.exponent[a]);
-      for (int i = 0; i < BvhWideNode::kWidth; ++i) {
+      for (int i = 0; i < 4; ++i) {
         if (i >= k) {
           n.lo[a][i] = n.hi[a][i] = 0;
           continue;
@@ -315,7 +315,7 @@ struct Widener {
         n.hi[a][i] = static_cast<uint8_t>(hi);
       }
     }
-    for (int i = 0; i < BvhWideNode::kWidth; ++i) {
+    for (int i = 0; i < 4; ++i) {
       if (i >= k) {
         n.count[i] = BvhWideNode::kEmpty;
         n.child[i] = 0;
@@ -333,7 +333,7 @@ struct Widener {
     max_depth = std::max(max_depth, depth);
     const uint32_t w = static_cast<uint32_t>(wide.size());
     wide.emplace_back();
-    uint32_t kids[BvhWideNode::kWidth];
+    uint32_t kids[4];
     int k = 0;
     if (nodes[b].is_leaf()) {
       kids[k++] = b;
@@ -341,9 +341,7 @@ struct Widener {
       kids[k++] = nodes[b].first;
       kids[k++] = nodes[b].first + 1;
     }
-    while (
-        k <
-        BvhWideNode::kWidth) {  // open the inner child of largest surface area (ties: the leftmost)
+    while (k < 4) {  // open the inner child of largest surface area (ties: the leftmost)
       int pick = -1;
       float best = 0.0f;
       for (int i = 0; i < k; ++i) {
@@ -409,13 +407,12 @@ Bvh Bvh::Build(const TriMesh& mesh, const BvhOptions& options_in) {
   bvh.nodes_.emplace_back();
   b.Build(0, 0, tris, 1, bounds, cbounds);
   bvh.order_.resize(tris);
-  bvh.leaf_.resize(tris);
+  bvh.corners_.resize(3 * tris);
   for (std::size_t i = 0; i < tris; ++i) {
     uint32_t t = b.prims[i].tri;
     bvh.order_[i] = t;
     for (std::size_t k = 0; k < 3; ++k)
-      bvh.leaf_[i].corner[k] = mesh.positions[mesh.indices[3 * static_cast<std::size_t>(t) + k]];
-    bvh.leaf_[i].triangle = t;
+      bvh.corners_[3 * i + k] = mesh.positions[mesh.indices[3 * static_cast<std::size_t>(t) + k]];
   }
   bvh.depth_ = b.max_depth;
   bvh.BuildWide();

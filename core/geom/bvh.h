@@ -29,37 +29,33 @@
 // adds ~1/6 of their count at 64 bytes each): the build, the structure tests and the determinism
 // digest read them.
 //
-// Memory at 4 M triangles (2026-12-03; the 3x growth goal of closest-point queries is NOT shown
-// met). Quiet records gave closest 571 -> 1834 ns (3.2x) with callgrind at 2.15x the instructions
-// (21.9 -> 46.2 box tests, wide depth 5 -> 10): the rest is the bottom node levels (21 MB) and the
-// leaves missing cache and TLB one after another down one path, so fewer instructions per box
-// would speed 4 k as much as 4 M and raise the ratio. What is kept: (1) the nearest inner child,
-// popped next, has its kSuccessors = 4 depth-first successors prefetched with it (query_detail.h;
-// two levels above the leaves they are exactly its children; only in trees of >= 16 k wide nodes);
-// (2) each leaf triangle's index beside its corners (BvhLeafTriangle, 40 bytes), so the queries no
-// longer read order(). Measured with a probe (same walls and queries as bench/geom_workloads.cpp;
-// thread CPU time, so other processes' time slices are not counted; 10 batches of 2,000 queries,
-// each timed 9 times, fastest kept; old and new alternated 3 times in separate processes; load
-// average 9-10 on 2 cores), ns per query, old -> new (the 3 runs):
-//   closest  4k 460/491/501 -> 490/488/478, 65k 748/826/796 -> 866/831/805,
-//            1M 1403/1750/1576 -> 1462/1451/1458, 4M 1837/2232/1974 -> 2078/2051/1936;
-//            4M/4k 4.00/4.55/3.94x -> 4.24/4.21/4.05x: within the noise;
-//   segment  4k 139/150/159 -> 149/154/145, 4M 443/549/489 -> 499/489/463.
-// On this loaded machine the 4 M cost is inflated by the other processes' use of the shared L3
-// (the old ratio is 3.9-4.8x here against 3.2x quiet). With (3) the two query arrays on 2 MB pages
-// (an allocator that madvise(MADV_HUGEPAGE)s arrays of >= 4 MB before first use; load 12-15), 4 M
-// fell to 1716/1837/1810 against 2209/2348/2466 ns (4M/4k 3.40-3.67x against 4.53-4.75x; segment
-// 4 M 419-451 against 549-602) and huge pages alone gave -4 to -12 % at 4 M; but the bench
-// runner's builds got slower (interleaved, load 7-9, ns per triangle: 262 k warm 313 -> 470, cold
-// 4 M 570 -> 684; the same runner without huge pages 305 and 578), fresh 2 MB pages being faulted
-// in and compacted on every build, so it was dropped: the build goal outranks a hint. Tried and
-// dropped too (same probe, load 13-18): 8-wide nodes (128 bytes, wide depth 10 -> 7 at 4 M): slower
-// at both ends (4 k 538-607 against 482-487 ns, 4 M 2685-3106 against 2337-2407 ns: 28 and 60 box
-// tests instead of 22 and 46, two lines a node); a float pre-reject of the child boxes before the
-// double test (scalar: g++ -O3 did not vectorise it; 4 k +8-13 %, 4 M +12-21 %); prefetching every
-// line of a leaf rather than its first (4 M +11-30 %). BvhWideNode::kWidth keeps the width one
-// constant. Next candidates, not tried: a layout whose nodes hold their children's child-block
-// addresses (two-level lookahead), huge pages on the big arrays kept across builds.
+// Closest-point growth 4 k -> 4 M (issue 15's 3x goal; NOT shown met; 2026-12-03). Quiet records
+// gave 571 -> 1834 ns (3.2x) at 2.15x the instructions (callgrind; 21.9 -> 46.2 box tests, wide
+// depth 5 -> 10): the rest is the bottom node levels (~21 MB) and the leaves missing cache and TLB
+// one after another down one path. Cutting instructions per box cannot close it (4 k speeds up as
+// much and the ratio rises), so these cut the memory chain; each was measured with a probe (the
+// walls and queries of bench/geom_workloads.cpp; thread CPU time, so other processes' time slices
+// are not counted; 10 batches of 2,000 queries, each timed 9 times, fastest kept; old and new in
+// alternate processes, 3 times each; 2 cores at load average 9-18, which inflates the old ratio
+// to 3.9-4.8x), ns per closest query, old -> new:
+// - prefetching the nearest inner child's 4 depth-first successors with it (two levels above the
+//   leaves they are exactly its children) in trees of >= 16 k wide nodes, plus each leaf
+//   triangle's index stored beside its corners (40-byte records, order() not read): 4 k
+//   460/491/501 -> 490/488/478, 65 k 748/826/796 -> 866/831/805, 1 M 1403/1750/1576 ->
+//   1462/1451/1458, 4 M 1837/2232/1974 -> 2078/2051/1936 (4M/4k 4.00/4.55/3.94x ->
+//   4.24/4.21/4.05x; segment 4 M 443/549/489 -> 499/489/463): within the noise, not kept.
+// - the same plus the two query arrays on 2 MB pages (an allocator that madvise(MADV_HUGEPAGE)s
+//   arrays of >= 4 MB before first use; 186 MB of AnonHugePages at 4 M): 4 M 2209/2348/2466 ->
+//   1716/1837/1810 (4M/4k 4.53-4.75x -> 3.40-3.67x; segment 4 M 549-602 -> 419-451); huge pages
+//   alone -4 to -12 % at 4 M. Not kept: the bench runner's builds got slower (interleaved, load
+//   7-9, ns per triangle: 262 k warm 313 -> 470, cold 4 M 570 -> 684; without huge pages 305 and
+//   578), fresh 2 MB pages being faulted in on every build. It is the one lever seen to move 4 M
+//   by a fifth; it needs the big arrays kept across builds, or a quiet machine to show its worth.
+// - 8-wide nodes (128 bytes, wide depth 10 -> 7 at 4 M): slower at both ends (4 k 538-607 against
+//   482-487, 4 M 2685-3106 against 2337-2407: 28 and 60 box tests instead of 22 and 46, two lines
+//   a node); a float pre-reject of the child boxes before the double test (scalar: g++ -O3 did not
+//   vectorise it): 4 k +8-13 %, 4 M +12-21 %; prefetching every line of a leaf, not its first:
+//   4 M +11-30 %.
 //
 // Determinism: the build runs in a fixed order (recursive, left child first), with float bounds
 // and double SAH costs; ties between split candidates go to the lowest axis and bin. Natively
@@ -102,19 +98,14 @@ struct BvhNode {
 // q * 2^exponent per axis), rounded outward and checked in the build with the very float
 // expression ChildBounds() uses, so a decoded box always contains the binary child's box: the
 // queries prune a little less, never wrongly, and their answers stay those of the linear twins.
-#ifndef NIWA_BVH_WIDTH
-#define NIWA_BVH_WIDTH 4
-#endif
 struct alignas(64) BvhWideNode {
-  static constexpr int kWidth = NIWA_BVH_WIDTH;  // children per node
-  static constexpr uint8_t kEmpty = 0xff;        // count of an unused slot (slots fill from 0)
-  float origin[3];        // the grid's origin: the min corner of the union of the child boxes
-  int8_t exponent[3];     // grid step 2^exponent per axis, in [-126, 127]
-  uint8_t count[kWidth];  // 0: inner child; 1..16: a leaf of that many triangles; kEmpty: unused
-  uint8_t lo[3][kWidth];  // child k's box on axis a: origin[a] + lo[a][k] * step[a] ..
-  uint8_t hi[3][kWidth];  //                          origin[a] + hi[a][k] * step[a]
-  uint32_t
-      child[kWidth];  // inner child: its wide node index; leaf child: its first slot in order()
+  static constexpr uint8_t kEmpty = 0xff;  // count of an unused slot (slots fill from 0)
+  float origin[3];     // the grid's origin: the min corner of the union of the child boxes
+  int8_t exponent[3];  // grid step 2^exponent per axis, in [-126, 127]
+  uint8_t count[4];    // 0: inner child; 1..16: a leaf of that many triangles; kEmpty: unused
+  uint8_t lo[3][4];    // child k's box on axis a: origin[a] + lo[a][k] * step[a] ..
+  uint8_t hi[3][4];    //                          origin[a] + hi[a][k] * step[a]
+  uint32_t child[4];   // inner child: its wide node index; leaf child: its first slot in order()
   static float Step(int8_t e) {  // 2^e for e in [-126, 127], from its bits (no libm)
     uint32_t bits = static_cast<uint32_t>(e + 127) << 23;
     float f;
@@ -134,18 +125,7 @@ struct alignas(64) BvhWideNode {
     return Bounds3{lo_c, hi_c};
   }
 };
-static_assert(sizeof(BvhWideNode) == 16 * BvhWideNode::kWidth, "one cache line per 4 children");
-
-// One triangle of a leaf as the queries read it: its corners (the mesh's positions, copied) and its
-// mesh index (order()[slot]), side by side so a leaf costs one run of memory and no second array.
-struct BvhLeafTriangle {
-  glm::vec3 corner[3];
-  uint32_t triangle;
-};
-static_assert(sizeof(BvhLeafTriangle) == 40, "nine floats and an index");
-
-using BvhWideNodes = std::vector<BvhWideNode>;
-using BvhLeafTriangles = std::vector<BvhLeafTriangle>;
+static_assert(sizeof(BvhWideNode) == 64, "one cache line");
 
 class Bvh {
  public:
@@ -165,22 +145,22 @@ class Bvh {
   const std::vector<BvhNode>& nodes() const { return nodes_; }
   // The 4-wide tree the queries traverse (root is node 0; empty when nodes() is), and its depth
   // in wide levels.
-  const BvhWideNodes& wide_nodes() const { return wide_; }
+  const std::vector<BvhWideNode>& wide_nodes() const { return wide_; }
   int wide_depth() const { return wide_depth_; }
   // Triangle indices in leaf order.
   const std::vector<uint32_t>& order() const { return order_; }
-  // Triangle order()[i] with its corners at slot i: a copy of the mesh's positions in leaf order,
-  // so a leaf's triangles, and their indices, are read from one run of memory (40 bytes each).
-  const BvhLeafTriangles& leaf_triangles() const { return leaf_; }
+  // The corners of order()[i] at 3i, 3i+1, 3i+2: a copy of the mesh's positions in leaf order, so a
+  // leaf's triangles are read from one run of memory (36 bytes per triangle).
+  const std::vector<glm::vec3>& corners() const { return corners_; }
 
  private:
   friend struct BvhTestAccess;  // tests break a node on purpose to see the oracle tests fail
   void BuildWide();             // wide_ from nodes_ (deterministic: depth first, left to right)
   std::vector<BvhNode> nodes_;
-  BvhWideNodes wide_;
+  std::vector<BvhWideNode> wide_;
   int wide_depth_ = 0;
   std::vector<uint32_t> order_;
-  BvhLeafTriangles leaf_;
+  std::vector<glm::vec3> corners_;
   int depth_ = 0;
 };
 

@@ -19,9 +19,9 @@
 
 namespace niwa::geom::detail {
 
-// The traversal stacks' size. A wide node pushes at most kWidth entries for the 1 it pops, and the
-// wide tree is no deeper than the binary one (bvh.cpp keeps that <= 132): <= 7 * 132 + 1 entries.
-constexpr int kMaxStack = (BvhWideNode::kWidth - 1) * 132 + 1;
+// The traversal stacks' size. A wide node pushes at most 4 entries for the 1 it pops, and the wide
+// tree is no deeper than the binary one (bvh.cpp keeps that <= 132): <= 3 * 132 + 1 entries.
+constexpr int kMaxStack = 512;
 
 // A stack entry of the wide traversals: a wide node (count == 0) or a leaf's triangles order()
 // [index, index + count); key: the box's squared distance or slab entry, for pruning on pop.
@@ -38,33 +38,16 @@ inline void SortDescending(WideEntry* kids, int k) {
     for (int j = i; j > 0 && kids[j - 1].key <= kids[j].key; --j) std::swap(kids[j - 1], kids[j]);
 }
 
-// Asks the cache for what popping e will read (a hint only: no effect on any result): a wide
-// node's cache lines, or every line of a leaf's triangle records.
-inline void Prefetch(const WideEntry& e, const BvhWideNode* wide, const BvhLeafTriangle* leaf) {
+// Asks the cache for what popping e will read (a hint only: no effect on any result).
+inline void Prefetch(const WideEntry& e, const BvhWideNode* wide, const glm::vec3* corners) {
 #if defined(__GNUC__) || defined(__clang__)
   if (e.count == 0) {
-    for (int line = 0; line < BvhWideNode::kWidth / 4; ++line)  // one cache line per 4 children
-      __builtin_prefetch(reinterpret_cast<const char*>(wide + e.index) + 64 * line);
+    __builtin_prefetch(wide + e.index);  // one cache line
   } else {
-    __builtin_prefetch(leaf + e.index);  // its first line (asking for all of them was slower)
+    __builtin_prefetch(corners + 3 * static_cast<std::size_t>(e.index));
   }
 #else
-  (void)e, (void)wide, (void)leaf;
-#endif
-}
-
-// Asks the cache for the kSuccessors wide nodes stored after node w (a hint only), in a tree of
-// at least kSuccessorsFrom nodes (1 MB: smaller ones stay in cache, and the hint costs ~4
-// instructions a node). Measured (bvh.h): pays at 1 M and 4 M triangles.
-constexpr uint32_t kSuccessors = 4;
-constexpr uint32_t kSuccessorsFrom = 1u << 14;
-inline void PrefetchSuccessors(uint32_t w, const BvhWideNode* wide, uint32_t node_count) {
-#if defined(__GNUC__) || defined(__clang__)
-  if (node_count < kSuccessorsFrom) return;
-  const uint32_t end = std::min(w + 1 + kSuccessors, node_count);
-  for (uint32_t j = w + 1; j < end; ++j) __builtin_prefetch(wide + j);
-#else
-  (void)w, (void)wide, (void)node_count;
+  (void)e, (void)wide, (void)corners;
 #endif
 }
 
@@ -75,8 +58,8 @@ inline void Corners(const TriMesh& mesh, uint32_t t, DVec3* a, DVec3* b, DVec3* 
   *c = ToD(mesh.positions[mesh.indices[i + 2]]);
 }
 
-// Triangle t's corners from the mesh, as three consecutive float triples (the layout of
-// BvhLeafTriangle::corner), so both paths feed the same floats to the same routine.
+// Triangle t's corners from the mesh, as three consecutive floats triples (the layout of
+// Bvh::corners()), so both paths feed the same floats to the same routine.
 struct MeshCorners {
   glm::vec3 v[3];
   MeshCorners(const TriMesh& mesh, uint32_t t) {
@@ -241,16 +224,16 @@ inline bool RayBox(const Bounds3& b, const PreparedRay& r, double t_max, double*
 // The nearest-first depth-first walk that ClosestPoint and FirstHit share. From the root (pushed
 // with root_key), it pops an entry, skips it when its key is beyond query.Bound() (the best got
 // closer since it was pushed; ties kept), tests a leaf's triangles with
-// query.Test(leaf_triangles()[i].corner, leaf_triangles()[i].triangle), and for a wide node keys
-// each child with query.Key(box, &key) (false: pruned), pushes the kept ones farthest first (so the
-// nearest, or the leftmost on equal keys, is searched first) and prefetches them. Counts into
-// *visited (boxes tested, the root's included) and *tested (triangles).
+// query.Test(corners of slot i, order()[i]), and for a wide node keys each child with
+// query.Key(box, &key) (false: pruned), pushes the kept ones farthest first (so the nearest, or
+// the leftmost on equal keys, is searched first) and prefetches them. Counts into *visited (boxes
+// tested, the root's included) and *tested (triangles).
 template <typename Query>
 void NearestFirstWalk(const Bvh& bvh, double root_key, Query& query, uint64_t* visited,
                       uint64_t* tested) {
   const BvhWideNode* wide = bvh.wide_nodes().data();
-  const BvhLeafTriangle* leaf = bvh.leaf_triangles().data();
-  const uint32_t node_count = static_cast<uint32_t>(bvh.wide_nodes().size());
+  const uint32_t* order = bvh.order().data();
+  const glm::vec3* corners = bvh.corners().data();
   WideEntry stack[kMaxStack];
   int top = 0;
   stack[top++] = {0, 0, root_key};
@@ -259,28 +242,23 @@ void NearestFirstWalk(const Bvh& bvh, double root_key, Query& query, uint64_t* v
     if (e.key > query.Bound()) continue;
     if (e.count > 0) {  // a leaf
       for (uint32_t i = e.index; i < e.index + e.count; ++i)
-        query.Test(leaf[i].corner, leaf[i].triangle);
+        query.Test(&corners[3 * static_cast<std::size_t>(i)], order[i]);
       *tested += e.count;
       continue;
     }
     const BvhWideNode& n = wide[e.index];
-    WideEntry kids[BvhWideNode::kWidth];
+    WideEntry kids[4];
     int k = 0;
-    for (int i = 0; i < BvhWideNode::kWidth && n.count[i] != BvhWideNode::kEmpty; ++i) {
+    for (int i = 0; i < 4 && n.count[i] != BvhWideNode::kEmpty; ++i) {
       ++*visited;
       double key;
       if (query.Key(n.ChildBounds(i), &key)) kids[k++] = {n.child[i], n.count[i], key};
     }
     SortDescending(kids, k);
     for (int i = 0; i < k; ++i) {
-      Prefetch(kids[i], wide, leaf);
+      Prefetch(kids[i], wide, corners);
       stack[top++] = kids[i];
     }
-    // The nearest inner child is popped next: also ask for the nodes stored after it. Depth first,
-    // those are its first child and that child's first children; two levels above the leaves they
-    // are exactly its children (each of them holds only leaves, so none is followed by nodes of
-    // its own), so the last two node fetches of a descent overlap instead of following each other.
-    if (k > 0 && kids[k - 1].count == 0) PrefetchSuccessors(kids[k - 1].index, wide, node_count);
   }
 }
 

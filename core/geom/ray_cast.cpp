@@ -47,8 +47,7 @@ bool SegmentHits(const TriMesh& mesh, const Bvh& bvh, glm::vec3 a, glm::vec3 b, 
   detail::PreparedRay seg = detail::PrepareRay(a, b - a, /*normalize=*/false);
   if (!seg.valid) return false;
   const BvhWideNode* wide = bvh.wide_nodes().data();
-  const BvhLeafTriangle* leaf = bvh.leaf_triangles().data();
-  const uint32_t node_count = static_cast<uint32_t>(bvh.wide_nodes().size());
+  const glm::vec3* corners = bvh.corners().data();
   uint64_t visited = 1, tested = 0;
   detail::WideEntry stack[detail::kMaxStack];
   int top = 0;
@@ -60,23 +59,20 @@ bool SegmentHits(const TriMesh& mesh, const Bvh& bvh, glm::vec3 a, glm::vec3 b, 
     if (e.count > 0) {  // a leaf
       for (uint32_t i = e.index; i < e.index + e.count && !hit; ++i) {
         ++tested;
-        hit = detail::SegmentTriangle(leaf[i].corner, seg);
+        hit = detail::SegmentTriangle(&corners[3 * static_cast<std::size_t>(i)], seg);
       }
       continue;
     }
     const BvhWideNode& n = wide[e.index];
-    const int top_before = top;
-    for (int i = BvhWideNode::kWidth - 1; i >= 0; --i) {  // left child on top
+    for (int i = 3; i >= 0; --i) {  // left child on top
       if (n.count[i] == BvhWideNode::kEmpty) continue;
       ++visited;
       if (detail::RayBox(n.ChildBounds(i), seg, 1.0, &t_near)) {
         const detail::WideEntry c{n.child[i], n.count[i], 0.0};
-        detail::Prefetch(c, wide, leaf);
+        detail::Prefetch(c, wide, corners);
         stack[top++] = c;
       }
     }
-    if (top > top_before && stack[top - 1].count == 0)  // popped next (query_detail.h)
-      detail::PrefetchSuccessors(stack[top - 1].index, wide, node_count);
   }
   if (stats) {
     stats->nodes_visited += visited;

@@ -59,7 +59,7 @@ int CheckWideSubtree(const TriMesh& mesh, const Bvh& bvh, uint32_t w, const Boun
   const BvhWideNode& n = bvh.wide_nodes()[w];
   int depth = 1, used = 0;
   bool ended = false;
-  for (int k = 0; k < BvhWideNode::kWidth; ++k) {
+  for (int k = 0; k < 4; ++k) {
     if (n.count[k] == BvhWideNode::kEmpty) {
       ended = true;
       continue;
