@@ -49,8 +49,13 @@
 //   1716/1837/1810 (4M/4k 4.53-4.75x -> 3.40-3.67x; segment 4 M 549-602 -> 419-451); huge pages
 //   alone -4 to -12 % at 4 M. Not kept: the bench runner's builds got slower (interleaved, load
 //   7-9, ns per triangle: 262 k warm 313 -> 470, cold 4 M 570 -> 684; without huge pages 305 and
-//   578), fresh 2 MB pages being faulted in on every build. It is the one lever seen to move 4 M
-//   by a fifth; it needs the big arrays kept across builds, or a quiet machine to show its worth.
+//   578), fresh 2 MB pages being faulted in on every build. Huge pages alone on today's code
+//   (probe, load 4, the arrays collapsed after the build with MADV_COLLAPSE): 4 M 2162/1739/1998
+//   -> 1522/1579/1606 ns with 4 k unchanged (461-482), 4M/4k 3.77-4.49x -> 3.30-3.45x; the wide
+//   nodes alone (20 MB) gave under half of that. But the collapse itself took 193-457 ms at 4 M
+//   (+0.05-0.11 s per million triangles on a ~0.35 s build) and 17-56 ms at 1 M. So this is the
+//   one lever seen to cut 4 M by a fifth or more, and every way of getting the pages found here
+//   costs the build 15-50 %; it needs arrays kept across builds (a pool) to be worth it.
 // - 8-wide nodes (128 bytes, wide depth 10 -> 7 at 4 M): slower at both ends (4 k 538-607 against
 //   482-487, 4 M 2685-3106 against 2337-2407: 28 and 60 box tests instead of 22 and 46, two lines
 //   a node); a float pre-reject of the child boxes before the double test (scalar: g++ -O3 did not
