@@ -56,15 +56,15 @@
 //   (+0.05-0.11 s per million triangles on a ~0.35 s build) and 17-56 ms at 1 M. So this is the
 //   one lever seen to cut 4 M by a fifth or more, and every way of getting the pages found here
 //   costs the build 15-50 %; it needs arrays kept across builds (a pool) to be worth it.
-// The ratio itself moves with the machine: the unchanged code gave 4.18x and 4.73x in the bench
-// runner (niwa_bench_runner --filter closest/wall-, fastest reps; 4 k 451/452, 4 M 1884/2139 ns)
-// at load average 2.7, against the records' 3.2x: the 4 M cost depends on cache and memory state
-// beyond this 2-core VM (its 32 MB L3 is shared), so a goal on it needs one fixed quiet machine.
 // - 8-wide nodes (128 bytes, wide depth 10 -> 7 at 4 M): slower at both ends (4 k 538-607 against
 //   482-487, 4 M 2685-3106 against 2337-2407: 28 and 60 box tests instead of 22 and 46, two lines
 //   a node); a float pre-reject of the child boxes before the double test (scalar: g++ -O3 did not
 //   vectorise it): 4 k +8-13 %, 4 M +12-21 %; prefetching every line of a leaf, not its first:
 //   4 M +11-30 %.
+// The ratio itself moves with the machine: the unchanged code gave 4.18x and 4.73x in the bench
+// runner (niwa_bench_runner --filter closest/wall-, fastest reps; 4 k 451/452, 4 M 1884/2139 ns)
+// at load average 2.7, against the records' 3.2x: the 4 M cost depends on cache and memory state
+// beyond this 2-core VM (its 32 MB L3 is shared), so a goal on it needs one fixed quiet machine.
 //
 // Determinism: the build runs in a fixed order (recursive, left child first), with float bounds
 // and double SAH costs; ties between split candidates go to the lowest axis and bin. Natively
