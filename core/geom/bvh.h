@@ -29,6 +29,43 @@
 // adds ~1/6 of their count at 64 bytes each): the build, the structure tests and the determinism
 // digest read them.
 //
+// Closest-point growth 4 k -> 4 M (issue 15's 3x goal; NOT shown met; 2026-12-03). Quiet records
+// gave 571 -> 1834 ns (3.2x) at 2.15x the instructions (callgrind; 21.9 -> 46.2 box tests, wide
+// depth 5 -> 10): the rest is the bottom node levels (~21 MB) and the leaves missing cache and TLB
+// one after another down one path. Cutting instructions per box cannot close it (4 k speeds up as
+// much and the ratio rises), so these cut the memory chain; each was measured with a probe (the
+// walls and queries of bench/geom_workloads.cpp; thread CPU time, so other processes' time slices
+// are not counted; 10 batches of 2,000 queries, each timed 9 times, fastest kept; old and new in
+// alternate processes, 3 times each; 2 cores at load average 9-18, which inflates the old ratio
+// to 3.9-4.8x), ns per closest query, old -> new:
+// - prefetching the nearest inner child's 4 depth-first successors with it (two levels above the
+//   leaves they are exactly its children) in trees of >= 16 k wide nodes, plus each leaf
+//   triangle's index stored beside its corners (40-byte records, order() not read): 4 k
+//   460/491/501 -> 490/488/478, 65 k 748/826/796 -> 866/831/805, 1 M 1403/1750/1576 ->
+//   1462/1451/1458, 4 M 1837/2232/1974 -> 2078/2051/1936 (4M/4k 4.00/4.55/3.94x ->
+//   4.24/4.21/4.05x; segment 4 M 443/549/489 -> 499/489/463): within the noise, not kept.
+// - the same plus the two query arrays on 2 MB pages (an allocator that madvise(MADV_HUGEPAGE)s
+//   arrays of >= 4 MB before first use; 186 MB of AnonHugePages at 4 M): 4 M 2209/2348/2466 ->
+//   1716/1837/1810 (4M/4k 4.53-4.75x -> 3.40-3.67x; segment 4 M 549-602 -> 419-451); huge pages
+//   alone -4 to -12 % at 4 M. Not kept: the bench runner's builds got slower (interleaved, load
+//   7-9, ns per triangle: 262 k warm 313 -> 470, cold 4 M 570 -> 684; without huge pages 305 and
+//   578), fresh 2 MB pages being faulted in on every build. Huge pages alone on today's code
+//   (probe, load 4, the arrays collapsed after the build with MADV_COLLAPSE): 4 M 2162/1739/1998
+//   -> 1522/1579/1606 ns with 4 k unchanged (461-482), 4M/4k 3.77-4.49x -> 3.30-3.45x; the wide
+//   nodes alone (20 MB) gave under half of that. But the collapse itself took 193-457 ms at 4 M
+//   (+0.05-0.11 s per million triangles on a ~0.35 s build) and 17-56 ms at 1 M. So this is the
+//   one lever seen to cut 4 M by a fifth or more, and every way of getting the pages found here
+//   costs the build 15-50 %; it needs arrays kept across builds (a pool) to be worth it.
+// - 8-wide nodes (128 bytes, wide depth 10 -> 7 at 4 M): slower at both ends (4 k 538-607 against
+//   482-487, 4 M 2685-3106 against 2337-2407: 28 and 60 box tests instead of 22 and 46, two lines
+//   a node); a float pre-reject of the child boxes before the double test (scalar: g++ -O3 did not
+//   vectorise it): 4 k +8-13 %, 4 M +12-21 %; prefetching every line of a leaf, not its first:
+//   4 M +11-30 %.
+// The ratio itself moves with the machine: the unchanged code gave 4.18x and 4.73x in the bench
+// runner (niwa_bench_runner --filter closest/wall-, fastest reps; 4 k 451/452, 4 M 1884/2139 ns)
+// at load average 2.7, against the records' 3.2x: the 4 M cost depends on cache and memory state
+// beyond this 2-core VM (its 32 MB L3 is shared), so a goal on it needs one fixed quiet machine.
+//
 // Determinism: the build runs in a fixed order (recursive, left child first), with float bounds
 // and double SAH costs; ties between split candidates go to the lowest axis and bin. Natively
 // (NIWA_HAVE_THREADS) the root's two halves of a mesh of 64 k triangles or more are built on two
