@@ -84,6 +84,44 @@ void ResolveRows(const Sky& sky, const float* transmittance, std::size_t count,
   }
 }
 
+// to[x * to_stride + y] = from[y * from_stride + x] for x < width, y < height: blocks of 4 × 4
+// moved through four 4-lane registers (loads, shuffles and stores only: the same values), the
+// edges one by one. Reading down the columns one value at a time was 3 % of a sakura-thesis grow.
+void TransposePlane(const float* from, std::ptrdiff_t from_stride, float* to,
+                    std::ptrdiff_t to_stride, int width, int height) {
+  typedef float Float4 __attribute__((vector_size(16)));
+  int y = 0;
+  for (; y + 4 <= height; y += 4) {
+    const float* in = from + y * from_stride;
+    int x = 0;
+    for (; x + 4 <= width; x += 4) {
+      Float4 r0, r1, r2, r3;  // rows y..y+3, columns x..x+3
+      std::memcpy(&r0, in + x, sizeof r0);
+      std::memcpy(&r1, in + from_stride + x, sizeof r1);
+      std::memcpy(&r2, in + 2 * from_stride + x, sizeof r2);
+      std::memcpy(&r3, in + 3 * from_stride + x, sizeof r3);
+      const Float4 t0 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);  // r0[0] r1[0] r0[1] r1[1]
+      const Float4 t1 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
+      const Float4 t2 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7);
+      const Float4 t3 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
+      const Float4 c0 = __builtin_shufflevector(t0, t1, 0, 1, 4, 5);  // column x
+      const Float4 c1 = __builtin_shufflevector(t0, t1, 2, 3, 6, 7);
+      const Float4 c2 = __builtin_shufflevector(t2, t3, 0, 1, 4, 5);
+      const Float4 c3 = __builtin_shufflevector(t2, t3, 2, 3, 6, 7);
+      std::memcpy(to + x * to_stride + y, &c0, sizeof c0);
+      std::memcpy(to + (x + 1) * to_stride + y, &c1, sizeof c1);
+      std::memcpy(to + (x + 2) * to_stride + y, &c2, sizeof c2);
+      std::memcpy(to + (x + 3) * to_stride + y, &c3, sizeof c3);
+    }
+    for (; x < width; ++x) {
+      for (int k = 0; k < 4; ++k) to[x * to_stride + y + k] = in[k * from_stride + x];
+    }
+  }
+  for (; y < height; ++y) {
+    for (int x = 0; x < width; ++x) to[x * to_stride + y] = from[y * from_stride + x];
+  }
+}
+
 // One direction's shadow propagation over the whole grid (see ComputeLightGrid), in a memory layout
 // where the swept axis is the slowest and the rows of a slice lie one after another.
 struct Sweep {
@@ -327,12 +365,9 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
           const float* from = density.data() + y * stride[1] + z * stride[2];
           std::copy(from, from + n[0] + 2, copy + y * to[1] + z * to[2]);
         }
-      } else {  // x-slowest, y fastest: written in order, read down the columns of this z plane
-        for (int x = 0; x < n[0] + 2; ++x) {
-          const float* from = density.data() + x + z * stride[2];
-          float* row = copy + x * to[0] + z * to[2];
-          for (int y = 0; y < n[1] + 2; ++y) row[y] = from[y * stride[1]];
-        }
+      } else {  // x-slowest, y fastest: the z plane transposed
+        TransposePlane(density.data() + z * stride[2], stride[1], copy + z * to[2], to[0], n[0] + 2,
+                       n[1] + 2);
       }
     }
   }
