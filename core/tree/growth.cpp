@@ -256,8 +256,12 @@ struct NodeFrames {
 void ComputeNodeFrames(const Branch& shoot, const std::vector<float>& turn_cos,
                        const std::vector<float>& turn_sin, NodeFrames& frames) {
   std::size_t n = shoot.nodes.size();
-  frames.direction.assign(n, kUp);
-  frames.azimuth.assign(n, glm::vec3(1, 0, 0));
+  // Entries 1..N are all written below, so the buffers are only resized (filling every entry of
+  // them was 2.7 % of a sakura-thesis 15-year grow); entry 0 (no internode) is never read.
+  frames.direction.resize(n);
+  frames.azimuth.resize(n);
+  frames.direction[0] = kUp;
+  frames.azimuth[0] = glm::vec3(1, 0, 0);
   glm::vec3 transported = shoot.azimuth;
   for (std::size_t i = 1; i < n; ++i) {
     glm::vec3 d = glm::normalize(shoot.nodes[i] - shoot.nodes[i - 1]);

@@ -65,13 +65,15 @@ class ScratchArray {
 struct LightGridBuffers {
   struct Lookup {
     std::ptrdiff_t base[3];  // lower corner of the centre's trilinear cell, in each axis's layout
-    float weight[8];         // corner c = (c & 1: +x, c & 2: +y, c & 4: +z)
-    float half_sigma[8];     // half of each corner cell's extinction (the same in every layout)
     float own_depth;         // optical depth of the shoot's own sphere from its centre (one radius)
   };
   std::vector<float> density, dx2, dy2;
   ScratchArray<float> density_x_major, density_y_major, depth[3], transmittance;
   ScratchArray<Lookup> lookups;
+  // Per corner c = (c & 1: +x, c & 2: +y, c & 4: +z), one row of all spheres (row c, sphere i at
+  // c · spheres + i): the trilinear weight, and half of the corner cell's extinction (the same in
+  // every layout).
+  ScratchArray<float> corner_weight, corner_half_sigma;
   std::vector<int> spans;  // rasterization: first and last covered x of each row of a sphere's box
   std::vector<float> received, strongest;  // per sphere, while resolving L and v_L
   std::vector<int> strongest_direction;
