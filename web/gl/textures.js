@@ -1,6 +1,7 @@
 // Data textures read with texelFetch: sway pose textures (shaders/common/skin.glsl's layout) and
-// generic rows-of-1024-texels data textures for per-segment arrays.
-// Does not: sample images, manage texture units, or know what the data mean beyond their layout.
+// generic rows-of-1024-texels data textures for per-segment arrays; and the one upload of an RGBA8
+// image (the core's procedural textures) with mipmaps.
+// Does not: manage texture units, or know what the data mean beyond their layout.
 
 // Sway poses (core/sway/skin.h): 16 floats = 4 RGBA32F texels per node point, rows of 1024 texels.
 export const POSE_TEXELS = 4;
@@ -51,6 +52,22 @@ export function dataTexture(gl, data, comps, internalFormat, format, type) {
   gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+  gl.bindTexture(gl.TEXTURE_2D, null);
+  return texture;
+}
+
+// An RGBA8 image `{width, height, pixels}` (tightly packed rows) into `texture` (a new one when
+// absent), with mipmaps, trilinear filtering and `wrap` on both axes; returns the texture.
+export function imageTexture(gl, image, wrap, texture = gl.createTexture()) {
+  gl.bindTexture(gl.TEXTURE_2D, texture);
+  gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+  gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, image.width, image.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(image.pixels));
+  gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
+  gl.generateMipmap(gl.TEXTURE_2D);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, wrap);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, wrap);
   gl.bindTexture(gl.TEXTURE_2D, null);
   return texture;
 }

@@ -11,6 +11,7 @@ import { floatAttribute, staticBuffer } from '../gl/buffers.js';
 import { uploadInParts } from '../gl/chunked_upload.js';
 import { ProgressiveFrame } from '../gl/progressive_frame.js';
 import { loadPrograms } from '../gl/program.js';
+import { imageTexture } from '../gl/textures.js';
 
 const SHADERS = new URL('../../shaders/ivy/', import.meta.url);
 const VIEW_SIZE = 10;  // the support's largest extent in view units
@@ -182,17 +183,8 @@ export class IvyRenderer {
   setLeafTexture(t) {
     const gl = this.gl;
     if (!t || !t.pixels || !(t.width > 0) || !(t.height > 0)) return;
-    const texture = this.leafTexture || gl.createTexture();
-    gl.bindTexture(gl.TEXTURE_2D, texture);
-    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
-    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, t.width, t.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(t.pixels));
-    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
-    gl.generateMipmap(gl.TEXTURE_2D);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);  // as the .glb's sampler
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
-    gl.bindTexture(gl.TEXTURE_2D, null);
+    // CLAMP_TO_EDGE as the .glb's sampler.
+    const texture = imageTexture(gl, t, gl.CLAMP_TO_EDGE, this.leafTexture || undefined);
     this.leafTexture = texture;
   }
 

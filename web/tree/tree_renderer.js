@@ -10,7 +10,7 @@ import { Ground } from '../gl/ground.js';
 import { PickTarget } from '../gl/pick.js';
 import { ProgressiveFrame } from '../gl/progressive_frame.js';
 import { loadPrograms } from '../gl/program.js';
-import { dataTexture, restPoses, uploadPoses } from '../gl/textures.js';
+import { dataTexture, imageTexture, restPoses, uploadPoses } from '../gl/textures.js';
 
 export { BACKGROUND } from '../gl/context.js';
 export const SHADERS = new URL('../../shaders/tree/', import.meta.url).href;
@@ -240,19 +240,8 @@ export class Renderer {
       if (!t || !t.pixels) continue;
       const have = this.textures[kind];
       if (have && have.digest === t.digest) continue;
-      const texture = have ? have.texture : gl.createTexture();
       const repeat = kind === 'bark' || kind === 'barkNormal';
-      gl.bindTexture(gl.TEXTURE_2D, texture);
-      gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
-      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, t.width, t.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(t.pixels));
-      gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
-      gl.generateMipmap(gl.TEXTURE_2D);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
-      const wrap = repeat ? gl.REPEAT : gl.CLAMP_TO_EDGE;
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, wrap);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, wrap);
-      gl.bindTexture(gl.TEXTURE_2D, null);
+      const texture = imageTexture(gl, t, repeat ? gl.REPEAT : gl.CLAMP_TO_EDGE, have ? have.texture : undefined);
       this.textures[kind] = { texture, digest: t.digest };
     }
   }
