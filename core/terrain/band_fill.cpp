@@ -26,6 +26,26 @@ bool Neighbour(int width, int height, int i, int j, int q, std::size_t* n) {
 }
 
 // Cells whose filled height w is above their own h.
+// Grows the breadth-first queue `fifo` (its seeds already marked) to every cell reachable by
+// 8-neighbour steps k -> n with n unmarked and accept(k, n), marking each as it is queued.
+template <typename Accept>
+void FloodFrom(int width, int height, std::vector<std::uint32_t>* fifo, std::vector<char>* mark,
+               Accept accept) {
+  for (std::size_t r = 0; r < fifo->size(); ++r) {
+    const std::size_t k = (*fifo)[r];
+    const int i = static_cast<int>(k % static_cast<std::size_t>(width));
+    const int j = static_cast<int>(k / static_cast<std::size_t>(width));
+    for (int q = 0; q < 8; ++q) {
+      std::size_t n;
+      if (!Neighbour(width, height, i, j, q, &n)) continue;
+      if (!(*mark)[n] && accept(k, n)) {
+        (*mark)[n] = 1;
+        fifo->push_back(static_cast<std::uint32_t>(n));
+      }
+    }
+  }
+}
+
 std::size_t CountRaised(const std::vector<double>& h, const std::vector<double>& w) {
   std::size_t raised = 0;
   for (std::size_t k = 0; k < h.size(); ++k)
@@ -145,19 +165,8 @@ std::size_t AssignSubCellSlots(int width, int height, const Terrain& t, std::vec
         anchored[k] = 1;
         fifo.push_back(static_cast<std::uint32_t>(k));
       }
-    for (std::size_t r = 0; r < fifo.size(); ++r) {
-      const std::size_t k = fifo[r];
-      const int i = static_cast<int>(k % static_cast<std::size_t>(width));
-      const int j = static_cast<int>(k / static_cast<std::size_t>(width));
-      for (int q = 0; q < 8; ++q) {
-        std::size_t n;
-        if (!Neighbour(width, height, i, j, q, &n)) continue;
-        if (!anchored[n] && band[n] == band[k]) {
-          anchored[n] = 1;
-          fifo.push_back(static_cast<std::uint32_t>(n));
-        }
-      }
-    }
+    FloodFrom(width, height, &fifo, &anchored,
+              [&](std::size_t k, std::size_t n) { return band[n] == band[k]; });
     // Each island (a component of unanchored band cells; never on the grid's edge) to its child.
     bool any = false;
     for (std::size_t s = 0; s < cells; ++s) {
@@ -289,19 +298,8 @@ std::size_t FillWithinBands(int width, int height, const std::vector<int>& band,
         drains[k] = 1;
         fifo.push_back(static_cast<std::uint32_t>(k));
       }
-  for (std::size_t r = 0; r < fifo.size(); ++r) {
-    const std::size_t k = fifo[r];
-    const int i = static_cast<int>(k % static_cast<std::size_t>(width));
-    const int j = static_cast<int>(k / static_cast<std::size_t>(width));
-    for (int q = 0; q < 8; ++q) {
-      std::size_t n;
-      if (!Neighbour(width, height, i, j, q, &n)) continue;
-      if (!drains[n] && h0[n] > h0[k]) {
-        drains[n] = 1;
-        fifo.push_back(static_cast<std::uint32_t>(n));
-      }
-    }
-  }
+  FloodFrom(width, height, &fifo, &drains,
+            [&](std::size_t k, std::size_t n) { return h0[n] > h0[k]; });
   if (fifo.size() == cells) return 0;
   fifo = std::vector<std::uint32_t>();
   // 2. The rest (in or above a depression): the flood, seeded by the draining cells next to them.
