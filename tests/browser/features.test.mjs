@@ -23,6 +23,13 @@ async function andWait(page, action) {
   await waitReady(page, serial, 100);
 }
 
+// Waits for the first finished frame that was started with branch `id` selected (page hook
+// drawnSelection; a frame drawn in parts that began before the click shows the last selection).
+async function selectionDrawn(page, id) {
+  await page.waitForFunction((want) => document.documentElement.dataset.drawnSelection === String(want),
+    id, { timeout: TIMEOUT, polling: 20 });
+}
+
 // Luma spread and bark/highlight pixel shares of a canvas (the page's, or one in a shadow root).
 async function canvasPixels(page, selector = '#view') {
   return page.evaluate((sel) => {
@@ -169,8 +176,8 @@ await runBrowserTest(async (server, browser) => {
   check('trunk found in the picture', trunk !== null, JSON.stringify(trunk));
   const box = await page.locator('#view').boundingBox();
   await page.mouse.click(box.x + trunk.x, box.y + trunk.y);
-  await page.waitForTimeout(400);
   let selected = (await dataset(page)).selected;
+  if (/^\d+$/.test(selected || '')) await selectionDrawn(page, selected);
   // Branch 0 (the first year's trunk) carries the whole tree: its cut is refused (ux.test.mjs
   // checks that); prune the trunk's next shoot up instead.
   // A click beside the trunk can also pick a twig hidden in the crown (the nearest hit within a few
@@ -178,8 +185,8 @@ await runBrowserTest(async (server, browser) => {
   let highlight = await canvasPixels(page);
   for (let dy = 8; (selected === '0' || highlight.orange <= 0.0005) && dy < 240; dy += 8) {
     await page.mouse.click(box.x + trunk.x, box.y + trunk.y - dy);
-    await page.waitForTimeout(200);
     selected = (await dataset(page)).selected;
+    if (/^\d+$/.test(selected || '')) await selectionDrawn(page, selected);
     highlight = await canvasPixels(page);
   }
   check('clicking the trunk selects a branch', /^\d+$/.test(selected || ''), `branch ${selected}; ${await page.textContent('#selection')}`);
@@ -218,16 +225,12 @@ await runBrowserTest(async (server, browser) => {
   let side = null, sideAt = null;
   for (let dy = 60; dy < 400 && side === null; dy += 12) {
     for (const dx of [0, -20, 20, -40, 40]) {
-      // Each click's frame, finished (drawn in parts: the faint highlight through the leaves is the
-      // last part), before its pixels count: a read 60 ms after the click saw the frame before it.
-      const drawn = Number((await dataset(page)).framesDrawn || 0);
       await page.mouse.click(box.x + trunk.x + dx, box.y + trunk.y - dy);
       const id = Number((await dataset(page)).selected || 0);  // set by the click's handler
       if (id <= 10) continue;
-      await page.waitForFunction((n) => {
-        const d = document.documentElement.dataset;
-        return Number(d.framesDrawn) > n && d.framePartial === '0';
-      }, drawn, { timeout: TIMEOUT, polling: 20 });
+      // The first finished frame that started with this selection (a frame drawn in parts that
+      // began before the click still shows the last selection's highlight).
+      await selectionDrawn(page, id);
       // A branch big enough to see (tiny twigs are a pixel or two wide), and still the selection.
       if (Number((await dataset(page)).selected || 0) === id && (await canvasPixels(page)).orange > 0.00003) {
         side = id;
@@ -239,7 +242,9 @@ await runBrowserTest(async (server, browser) => {
   check('clicking higher up selects a visible side branch', side !== null, `branch ${side}`);
   await page.waitForTimeout(300);
   const sideHighlight = await canvasPixels(page);
-  check('the side branch is highlighted (also behind leaves)', sideHighlight.orange > 0.00002, `orange ${(sideHighlight.orange * 100).toFixed(4)}%`);
+  const sideFrame = await dataset(page);
+  check('the side branch is highlighted (also behind leaves)', sideHighlight.orange > 0.00002 && sideFrame.drawnSelection === String(side),
+    `orange ${(sideHighlight.orange * 100).toFixed(4)}% in the frame of selection ${sideFrame.drawnSelection}`);
   await page.screenshot({ path: path.join(ARTIFACTS, 'features-side-selected.png') });
   if (sideAt) await page.screenshot({ path: path.join(ARTIFACTS, 'features-side-selected-zoom.png'), clip: { x: sideAt.x - 60, y: sideAt.y - 60, width: 120, height: 120 } });
   await andWait(page, () => page.click('#cut'));

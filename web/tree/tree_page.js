@@ -150,7 +150,8 @@ const frames = new FrameLoop(() => {
     worker.post('poseDone');
   }
   if (drawn.mode !== 'motion') table.showFrame(drawn);
-  setHooks({ drawnTreeSerial: treeSerial });  // tests wait for the new tree's frame
+  // tests wait for the new tree's frame, and for the frame that shows a new selection
+  setHooks({ drawnTreeSerial: treeSerial, drawnSelection: drawn.selected ?? -1 });
   if (freshOnDraw) {  // the tree that answers the latest edit is on screen now
     freshOnDraw = false;
     feedback.fresh();

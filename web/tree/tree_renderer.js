@@ -772,6 +772,7 @@ export class Renderer {
       }
     }
     totals.primitives = steps.reduce((n, step) => n + step.primitives, 0);  // what the budget counts
+    totals.selected = this.selected === NONE ? -1 : this.selected;  // the highlight this frame draws
     this.frameTotals = totals;
     this.progress.begin(this.canvas, steps, budget);
   }
