@@ -100,7 +100,8 @@ await runBrowserTest(async (server, browser) => {
     // Met since issue 16's frame pacing (docs/budgets.md, "Responsiveness"): one frame in flight,
     // the moving tree drawn as its hybrid scene at a smaller drawing buffer while frames lag.
     const swayLine = `${summary(times, tasks)}; sway at t = ${swayed} s; frames ${during.frameMode} at scale ${during.frameScale}, ` +
-      `latency ${during.frameGpuMs} ms, ${during.framesDrawn} frames drawn, ${during.framesSkipped} skipped (GPU busy)`;
+      `latency ${during.frameGpuMs} ms, ${during.framesDrawn} frames drawn, ${during.framesSkipped} skipped (GPU busy); ` +
+      `motion atlas textured: ${during.motionTextured || 'not painted'} (tests/browser/atlas_paint.test.mjs checks its texels)`;
     check('tree sway: the tree sways and the clicks are handled', swayed > 0 && times.every(Number.isFinite), swayLine);
     check('tree sway: every click answered within 1 s', Math.max(...times) < 1000, swayLine);
     await page.click('#wind');  // Still

@@ -539,7 +539,10 @@ worker.on('tree', (msg) => {
 });
 
 worker.on('motionAtlas', (msg) => {
-  renderer?.setMotionHybrid(msg.hybrid, governor.budget()).then(() => { if (governor.moving()) requestFrame(); });
+  renderer?.setMotionHybrid(msg.hybrid, governor.budget()).then((painted) => {
+    if (painted) setHooks({ motionTextured: renderer.motion.hybrid.textured.join(',') });  // tests
+    if (governor.moving()) requestFrame();
+  });
 });
 
 worker.on('drawList', (msg) => {

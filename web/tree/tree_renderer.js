@@ -42,6 +42,26 @@ function clearAtlasSamplers(gl) {
   gl.activeTexture(gl.TEXTURE0);
 }
 
+// The look of one atlas part (PARTS' colours; with `map`, the {texture} of its TEXTURED map: the
+// cut-out leaf or blossom, the bark colour). The bark's normal map is left out: the atlas has no
+// world positions for its tangent frame. Shared by paintAtlas and paintAtlasInParts.
+function atlasPartLook(gl, program, name, map) {
+  const look = PARTS[name];
+  gl.uniform3fv(program.uniforms.uColor, look.color);
+  gl.uniform3fv(program.uniforms.uColorVariation, look.variation);
+  gl.uniform1f(program.uniforms.uDoubleSided, look.doubleSided);
+  gl.uniform1f(program.uniforms.uUseTexture, map ? 1 : 0);
+  gl.uniform1f(program.uniforms.uUseNormalMap, 0);
+  gl.uniform1f(program.uniforms.uAlphaCutoff, map ? TEXTURED[name].alphaCutoff : 0);
+  gl.activeTexture(gl.TEXTURE1);
+  gl.bindTexture(gl.TEXTURE_2D, map ? map.texture : null);
+  gl.uniform1i(program.uniforms.uBaseMap, 1);
+  gl.activeTexture(gl.TEXTURE2);
+  gl.bindTexture(gl.TEXTURE_2D, null);
+  gl.uniform1i(program.uniforms.uNormalMap, 2);
+  gl.activeTexture(gl.TEXTURE0);
+}
+
 // Paints a card atlas (thesis 4.2.1) into the framebuffer `fb` (hybrid.atlasSize square, colour =
 // `texture`, with a depth buffer) from the worker's clip-space triangles of the group
 // representatives and leaf clusters, lit by `light` like the full view and transparent elsewhere,
@@ -85,23 +105,7 @@ export function paintAtlas(gl, program, hybrid, fb, texture, light, textures = n
     const indices = ready('indices');
     if (indices) gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, indices);
     buffers.push(indices || staticBuffer(gl, part.indices, gl.ELEMENT_ARRAY_BUFFER));
-    const look = PARTS[name];
-    gl.uniform3fv(program.uniforms.uColor, look.color);
-    gl.uniform3fv(program.uniforms.uColorVariation, look.variation);
-    gl.uniform1f(program.uniforms.uDoubleSided, look.doubleSided);
-    if (textures) {
-      // The bark's normal map is left out: the atlas has no world positions for its tangent frame.
-      gl.uniform1f(program.uniforms.uUseTexture, map ? 1 : 0);
-      gl.uniform1f(program.uniforms.uUseNormalMap, 0);
-      gl.uniform1f(program.uniforms.uAlphaCutoff, spec.alphaCutoff);
-      gl.activeTexture(gl.TEXTURE1);
-      gl.bindTexture(gl.TEXTURE_2D, map ? map.texture : null);
-      gl.uniform1i(program.uniforms.uBaseMap, 1);
-      gl.activeTexture(gl.TEXTURE2);
-      gl.bindTexture(gl.TEXTURE_2D, null);
-      gl.uniform1i(program.uniforms.uNormalMap, 2);
-      gl.activeTexture(gl.TEXTURE0);
-    }
+    atlasPartLook(gl, program, name, map);
     gl.drawElements(gl.TRIANGLES, count, gl.UNSIGNED_INT, 0);
     triangles += count / 3;
     gl.bindVertexArray(null);
@@ -124,7 +128,7 @@ export function paintAtlas(gl, program, hybrid, fb, texture, light, textures = n
 // SwiftShader time at once, so it is drawn `budget` triangles at a time, each part once the GPU
 // has finished the last (gpuDone), then mipmapped. uploaded: its buffers (chunked_upload.js),
 // deleted here. Resolves to the triangles drawn, or -1 when cancelled() turned true.
-export async function paintAtlasInParts(gl, program, hybrid, fb, texture, light, uploaded, budget, cancelled) {
+export async function paintAtlasInParts(gl, program, hybrid, fb, texture, light, uploaded, budget, cancelled, textures = null) {
   const size = hybrid.atlasSize;
   gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
   gl.viewport(0, 0, size, size);
@@ -143,12 +147,16 @@ export async function paintAtlasInParts(gl, program, hybrid, fb, texture, light,
     const buffers = [ready('positions') || staticBuffer(gl, part.positions), ready('normals') || staticBuffer(gl, part.normals)];
     floatAttribute(gl, 0, buffers[0], 3);
     floatAttribute(gl, 1, buffers[1], 3);
+    const map = textures && part.uvs && textures[TEXTURED[name].map];
+    if (map) {
+      buffers.push(ready('uvs') || staticBuffer(gl, part.uvs));
+      floatAttribute(gl, 2, buffers[buffers.length - 1], 2);
+    }
     const indices = ready('indices') || staticBuffer(gl, part.indices, gl.ELEMENT_ARRAY_BUFFER);
     gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, indices);
     buffers.push(indices);
     gl.bindVertexArray(null);
     owned.push({ vao, buffers });
-    const look = PARTS[name];
     steps.push({
       primitives: count / 3,
       setup: () => {
@@ -161,14 +169,9 @@ export async function paintAtlasInParts(gl, program, hybrid, fb, texture, light,
         gl.uniform3fv(program.uniforms.uCameraPosition, [0, 0, 10]);
         gl.uniform1f(program.uniforms.uXray, 0);
         gl.uniform1f(program.uniforms.uSpecular, 0);
-        gl.uniform3fv(program.uniforms.uColor, look.color);
-        gl.uniform3fv(program.uniforms.uColorVariation, look.variation);
-        gl.uniform1f(program.uniforms.uDoubleSided, look.doubleSided);
-        // Plain colours (the motion atlas has no uvs): clear what a textured paintAtlas left set.
+        // The textures of the full view (as paintAtlas), or plain colours before they are there.
         clearAtlasSamplers(gl);
-        gl.uniform1f(program.uniforms.uUseTexture, 0);
-        gl.uniform1f(program.uniforms.uUseNormalMap, 0);
-        gl.uniform1f(program.uniforms.uAlphaCutoff, 0);
+        atlasPartLook(gl, program, name, map);
         gl.bindVertexArray(vao);
       },
       draw: (first, n) => gl.drawElements(gl.TRIANGLES, 3 * n, gl.UNSIGNED_INT, 12 * first),
@@ -474,6 +477,7 @@ export class Renderer {
       plan.push({ key: `${name}.positions`, bytes: part.positions, target: gl.ARRAY_BUFFER },
         { key: `${name}.normals`, bytes: part.normals, target: gl.ARRAY_BUFFER },
         { key: `${name}.indices`, bytes: part.indices, target: gl.ELEMENT_ARRAY_BUFFER });
+      if (part.uvs && this.textures[TEXTURED[name].map]) plan.push({ key: `${name}.uvs`, bytes: part.uvs, target: gl.ARRAY_BUFFER });
     }
     this.motionPending = true;
     const current = () => serial === this.motionUploads && !this.hybrid;
@@ -484,10 +488,12 @@ export class Renderer {
       }
       this.#allocateAtlas(hybrid.atlasSize);
       const triangles = await paintAtlasInParts(gl, this.atlasProgram, hybrid, this.atlas.fb, this.atlas.texture, this.light,
-        uploaded, budget, () => !current());
+        uploaded, budget, () => !current(), this.textures);
       if (!current() || triangles < 0) return false;
       this.motionPending = false;
-      this.motion = { hybrid: { atlasSize: hybrid.atlasSize, atlasTriangles: triangles }, drawList: null };
+      // The parts painted from the full view's textures (the others in plain colours).
+      const textured = ['bark', 'leaves', 'flowers'].filter((name) => hybrid[name]?.uvs && this.textures[TEXTURED[name].map]);
+      this.motion = { hybrid: { atlasSize: hybrid.atlasSize, atlasTriangles: triangles, textured }, drawList: null };
       if (this.pendingMotionList) this.setMotionDrawList(this.pendingMotionList);  // came meanwhile
       this.pendingMotionList = null;
       return true;
