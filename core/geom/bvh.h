@@ -56,6 +56,25 @@
 //   (+0.05-0.11 s per million triangles on a ~0.35 s build) and 17-56 ms at 1 M. So this is the
 //   one lever seen to cut 4 M by a fifth or more, and every way of getting the pages found here
 //   costs the build 15-50 %; it needs arrays kept across builds (a pool) to be worth it.
+// - that pool (page_pool.h on branch hugepool15, 2026-12-03; NOT merged, the branch keeps the code): 2 MB-aligned mmap regions
+//   advised MADV_HUGEPAGE, kept on a process-wide free list across builds, for every array of
+//   >= 4 MB (B: nodes, wide nodes, order, corners, the build's scratch) or the query arrays only
+//   (C). Bench runner, main (A) against B (and C), interleaved in fresh processes, 3 runs of 8, 6
+//   and 6 rounds at load average 1.3-5.8; ns per query, fastest rep (median of run medians):
+//   closest 4 M A 1765-1860 (2284-2427), B 1629-1716 (1980-2078), C 1655-1740 (1927-2212), 4 k
+//   451-474 in all; 4M/4k closest A 3.79-4.05x (3.61-4.77x), B 3.45-3.81x (3.71-3.79x), C
+//   3.65-3.83x (3.62-4.18x); segment (4 M A 447-463, B 390-395, C 403-411) A 3.51-3.64x, B
+//   2.92-3.02x, C 3.18-3.20x. Warm builds (regions reused) about even, ns per triangle fastest: 1 M
+//   A 160-163, B 145-199, C 148-173; 262 k A 139-148, B 143-150, C 170-178. But the first build in
+//   a process is slower: bvh-build-cold/wall-4m A 219-264, B 450-539, C 355-399 (medians A
+//   353-374, B 507-606, C 475-521; B breaks the 0.5 s per million goal), while cold 1 M was A
+//   214-244, B 177-198, C 217-269. Cause, on this VM: the virtio balloon has free page reporting,
+//   so free 2 MB blocks are handed back to the host and a fresh huge page faults there too (first
+//   touch of 450 MB after 10 s idle: 1.6-1.7 s in 2 MB pages against 0.21-0.27 s in 4 KiB pages,
+//   0.05-0.07 s in 2 MB pages right after another such touch; cold 4 M build, /usr/bin/time, sys
+//   0.57 s A, 0.79 s C, 0.96 s B). So the pool pays only in a process that builds more than once
+//   (the CLI builds once; WASM has no pool), its first build costs up to ~0.3 s per million more
+//   here, and closest stays above 3x: not kept.
 // - 8-wide nodes (128 bytes, wide depth 10 -> 7 at 4 M): slower at both ends (4 k 538-607 against
 //   482-487, 4 M 2685-3106 against 2337-2407: 28 and 60 box tests instead of 22 and 46, two lines
 //   a node); a float pre-reject of the child boxes before the double test (scalar: g++ -O3 did not
