@@ -382,8 +382,19 @@ class IvyLab {
   // The --stats object of the last grow (as `niwa ivy grow --stats`), or "{}".
   std::string statsJson() const {
     if (!grown_) return "{}";
-    ivy::IvyStats stats = ivy::MeasureIvy(model_, log_, scene_.free ? nullptr : &scene_.mesh,
-                                          state_.params, obstacles_ > 0 ? &attach_ : nullptr);
+    // As `niwa ivy grow --stats`: the measurement's exact estimate (the overlap sweep's pairs,
+    // counted before any is tested) with the grown ivy's, against the page's budget. The growth
+    // kept room for the rest (ReserveIvyStats); when the pairs do not fit, the sweep is left out
+    // and its line is a notice (overlap_skipped_by), the other statistics are still measured.
+    const double tris = scene_.free ? 0 : static_cast<double>(scene_.mesh.triangle_count());
+    const Status fits = CheckEstimate(
+        ivy::EstimateIvyGrown(model_, log_, limits_) +
+            ivy::EstimateIvyStats(ivy::CountIvyStatsWork(model_, state_.params, tris)),
+        PageBudget(), "grow fewer steps (the page leaves the overlap pairs out)");
+    ivy::IvyStats stats =
+        ivy::MeasureIvy(model_, log_, scene_.free ? nullptr : &scene_.mesh, state_.params,
+                        obstacles_ > 0 ? &attach_ : nullptr, fits.ok());
+    stats.overlap_skipped_by = fits.Line();
     stats.tree_truncated_by = tree_truncated_by_;
     return ivy::IvyStatsJson(stats, log_, model_, timings_);
   }

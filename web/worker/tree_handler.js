@@ -212,11 +212,14 @@ export function createHandler(Module, ctx) {
       const now = Math.floor((performance.now() - sway.clock.start) / (1000 * dt));
       const due = now - sway.base - sway.steps;
       if (due > 0) {
+        // At most the steps one tick may take (swayStepsPerTick: 8, fewer for a tree whose 8 steps
+        // would hold the worker over the page's tick estimate; core/sway/sway_budget).
+        const most = session.swayStepsPerTick();
         const started = performance.now();
-        let time = session.swayStep(Math.min(due, 8));
-        const stepMs = (performance.now() - started) / Math.min(due, 8);  // per step, all instances
-        sway.steps += Math.min(due, 8);
-        if (due > 8) sway.clock.start += (due - 8) * 1000 * dt;  // too slow: let the clock slip, not pile up
+        let time = session.swayStep(Math.min(due, most));
+        const stepMs = (performance.now() - started) / Math.min(due, most);  // per step, all instances
+        sway.steps += Math.min(due, most);
+        if (due > most) sway.clock.start += (due - most) * 1000 * dt;  // too slow: let the clock slip, not pile up
         if (time >= session.swayDuration()) {  // the gust schedule is over: again from rest
           if (sway.origins) session.swayStartAt(sway.origins); else session.swayStart();
           sway.skipped = skipStillAir(session, sway.state);
@@ -227,7 +230,7 @@ export function createHandler(Module, ctx) {
         const poses = copyView(session.buffers('sway').poses);
         sway.waiting = true;
         post({ type: 'pose', client, time, wind: session.swayWindSpeed(), instances: session.swayInstances(),
-          stepMs, poses }, [poses]);
+          stepMs, stepsPerTick: most, speed: session.swaySpeed(), poses }, [poses]);
       }
     }
     sway.timer = setTimeout(() => windTick(client, sway), 8);
