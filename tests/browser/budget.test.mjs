@@ -18,7 +18,8 @@
 //    beside its button; the 15-year sakura's downloads.
 // 5. The page sway's time (core/sway/sway_budget EstimatePageSwayTime): Blow on a 15-year sakura
 //    at dt 0.0005 s (1/7 of real time by estimate) is refused beside Blow (#wind-info) naming the
-//    page time budget and what to change; at the default dt it sways 8 steps a tick in real time.
+//    page time budget and what to change; at the default dt it sways 8 steps a tick in real time;
+//    at dt 0.002 s in slow motion (about 0.71 of real time), said beside Blow.
 // 6. The ivy page's statistics: a page-budget ivy (free literal, 400 steps, stopped at the page
 //    budget) has its overlap sweep checked against EstimateIvyStats as the CLI does; when it does
 //    not fit, the sweep is left out with the line as a notice (overlap_pairs null), else measured.
@@ -199,6 +200,20 @@ await runBrowserTest(async (server, browser) => {
     const ok = await hooks(page);
     check('5: at the default dt the same tree sways, 8 steps a tick, real time', !ok.windError && Number(ok.swayTime) > 0 &&
       ok.swayStepsPerTick === '8' && ok.swaySpeed === '1.000', ok.windError || `t = ${ok.swayTime}, ${ok.swayStepsPerTick} a tick, speed ${ok.swaySpeed}`);
+    await page.click('#wind');
+    // Between real time and a quarter of it: it sways in slow motion and the info line says so.
+    await page.goto(`${server.url}#preset=sakura&years=15&dt=0.002`);
+    await page.reload();
+    await waitReady(page, 0, 100);
+    await page.click('#wind');
+    await page.waitForFunction(() => document.documentElement.dataset.windError ||
+      Number(document.documentElement.dataset.swayTime) > 0, null, { timeout: TIMEOUT, polling: 100 });
+    const slow = await hooks(page);
+    const slowInfo = (await page.textContent('#wind-info')).trim();
+    check('5: at dt 0.002 s (2.8 ms a step by estimate) it sways in slow motion and says so', !slow.windError &&
+      slow.swaySpeed === Math.min(1, 0.002 / (Number(slow.internodes) * 90e-9)).toFixed(3) && Number(slow.swaySpeed) < 1 &&
+      slowInfo.endsWith(`slow motion (about ${Number(slow.swaySpeed).toFixed(2)}× real time; lower years or raise dt)`),
+      slow.windError || `speed ${slow.swaySpeed}: "${slowInfo}"`);
     await page.click('#wind');
     await page.close();
   }
