@@ -726,7 +726,7 @@ function showWind(pose) {
   const slow = pose.speed < 1 ? ` · slow motion (about ${pose.speed.toFixed(2)}× real time; lower years or raise dt)` : '';
   ui.windInfo.textContent = `t = ${pose.time.toFixed(1)} s · wind ${speed}${slow}`;
   setHooks({ swayTime: pose.time.toFixed(3), swayWind: pose.wind.toFixed(2), swayStepsPerTick: String(pose.stepsPerTick),
-    swaySpeed: pose.speed.toFixed(3) });
+    swaySpeed: pose.speed.toFixed(3), swayStepMs: Number(pose.stepMs).toFixed(2) });
 }
 function setWind(play) {
   windPlaying = play;
