@@ -7,6 +7,7 @@
 
 #include "base/echo.h"
 #include "cli_common.h"
+#include "render/lod_budget.h"
 #include "render/tree_lod.h"
 #include "tree/growth.h"
 #include "tree/mesh.h"
@@ -107,14 +108,19 @@ int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
     const TreeExport kind = ext == ".json"  ? TreeExport::kJson
                             : ext == ".svg" ? TreeExport::kSvg
                                             : TreeExport::kGlb;
+    // The game-ready .glb (--max-triangles, --lod) builds its levels from the full mesh: its own
+    // estimate (core/render/lod_budget), the page's buildLodGlb the same.
+    const bool game_ready = kind == TreeExport::kGlb && (o.lod || o.max_triangles >= 0);
+    const Estimate export_estimate =
+        game_ready ? EstimateLodExport(CountTree(tree), o.max_triangles, o.lod)
+                   : EstimateTreeExport(CountTree(tree), kind);
     if (std::getenv("NIWA_BUDGET_TRACE")) {  // calibration (docs/budgets.md)
-      const Estimate e = EstimateTreeExport(CountTree(tree), kind);
       std::fprintf(stderr, "budget: grown %.0f MB %.2f s; export %.0f MB %.2f s\n",
-                   grown.memory_bytes / 1048576, grown.seconds, e.memory_bytes / 1048576,
-                   e.seconds);
+                   grown.memory_bytes / 1048576, grown.seconds,
+                   export_estimate.memory_bytes / 1048576, export_estimate.seconds);
     }
-    Check(CheckEstimate(grown + EstimateTreeExport(CountTree(tree), kind),
-                        ResolveBudget(o.state.budget), "lower --years, N_high or B_l"));
+    Check(CheckEstimate(grown + export_estimate, ResolveBudget(o.state.budget),
+                        "lower --years, N_high or B_l"));
     std::string bytes;
     if (ext == ".json") {
       bytes = TreeToJson(tree);

@@ -40,7 +40,7 @@ int InternodesAt(const IvyModel& model, int step) {
 }
 
 IvyStats MeasureIvy(const IvyModel& m, const GrowLog& log, const geom::TriMesh* mesh,
-                    const IvyParams& params, const geom::TriMesh* attach_mesh) {
+                    const IvyParams& params, const geom::TriMesh* attach_mesh, bool overlap_sweep) {
   IvyStats s;
   const double d = params.Get(IvyParam::kD), eps = params.Get(IvyParam::kEps);
   const double L = params.Get(IvyParam::kL), r_tip = params.Get(IvyParam::kRTip);
@@ -159,7 +159,7 @@ IvyStats MeasureIvy(const IvyModel& m, const GrowLog& log, const geom::TriMesh* 
     s.bend_max = std::max(s.bend_max, angle);
   }
   // P2: non-adjacent internode pairs closer than two tip radii (sweep over x, so O(n log n + k)).
-  {
+  if (overlap_sweep) {
     const double reach = 2 * r_tip;
     struct Span {
       double lo, hi;
@@ -238,7 +238,9 @@ std::string IvyStatsJson(const IvyStats& s, const GrowLog& log, const IvyModel& 
   j["up_mean"] = s.up_mean;
   j["rise"] = s.rise;
   j["bend_max"] = s.bend_max;
-  j["overlap_pairs"] = s.overlap_pairs;
+  j["overlap_pairs"] =
+      s.overlap_skipped_by.empty() ? nlohmann::json(s.overlap_pairs) : nlohmann::json(nullptr);
+  if (!s.overlap_skipped_by.empty()) j["overlap_skipped_by"] = s.overlap_skipped_by;
   j["leaves"] = s.leaves;
   j["suckers"] = s.suckers;
   j["nutrient_total"] = s.nutrient_total;

@@ -41,12 +41,18 @@ struct IvyStats {
   // Set by the caller: the support's own stop line (a Niwa tree grown within the budget that
   // stopped early), printed as tree_truncated_by when not empty.
   std::string tree_truncated_by;
+  // Set by the caller (the page): the budget line of an overlap sweep left out (MeasureIvy with
+  // overlap_sweep false; overlap_pairs printed as null and this as overlap_skipped_by).
+  std::string overlap_skipped_by;
 };
 
 // Measures a model grown on `mesh` (nullptr for the free scene); distances are re-measured to
 // `attach_mesh` when given (the support without its obstacle-only triangles).
+// overlap_sweep false leaves out P2's sweep over internode pairs (the page, when its exact
+// estimate does not fit the page's budget: ivy_budget's EstimateIvyStats).
 IvyStats MeasureIvy(const IvyModel& model, const GrowLog& log, const geom::TriMesh* mesh,
-                    const IvyParams& params, const geom::TriMesh* attach_mesh = nullptr);
+                    const IvyParams& params, const geom::TriMesh* attach_mesh = nullptr,
+                    bool overlap_sweep = true);
 
 // Laterals (axes of order >= 1) alive at the end of step `step` (born at or before it).
 int LateralsAt(const IvyModel& model, int step);

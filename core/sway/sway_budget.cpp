@@ -64,4 +64,42 @@ Estimate EstimatePageSway(const SwayModel& model, int instances) {
   return e;
 }
 
+PageSwayTime EstimatePageSwayTime(const SwayModel& model, const SwayParams& params, int instances) {
+  PageSwayTime t;
+  t.step_seconds =
+      kNsPerInternodeStep * 1e-9 * static_cast<double>(model.internodes) * std::max(instances, 1);
+  const double fit = t.step_seconds > 0 ? std::floor(kPageSwayTickSeconds / t.step_seconds) : 8;
+  t.steps_per_tick = static_cast<int>(std::clamp(fit, 1.0, double{kPageSwayMaxStepsPerTick}));
+  t.speed = t.step_seconds > 0 ? std::min(1.0, params.dt / t.step_seconds) : 1.0;
+  return t;
+}
+
+Status CheckPageSwayTime(const PageSwayTime& time, const SwayModel& model, const SwayParams& params,
+                         int instances, const std::string& limit, const std::string& change) {
+  const std::string what = "swaying " + FormatCount(instances) + " tree" +
+                           (instances == 1 ? "" : "s") + " of " +
+                           FormatCount(static_cast<double>(model.internodes)) + " internodes";
+  if (time.step_seconds > kPageSwayTickSeconds) {
+    char step[32], tick[32];
+    std::snprintf(step, sizeof step, "%.2f s", time.step_seconds);
+    std::snprintf(tick, sizeof tick, "%.2f s", kPageSwayTickSeconds);
+    return Status::Error(limit, what + " takes about " + step + " a step, more than the " + tick +
+                                    " a worker tick may take (a click must answer within 1 s); " +
+                                    change);
+  }
+  if (time.speed < kPageSwaySlowest) {
+    char slow[32];
+    std::snprintf(slow, sizeof slow, "%.0f", 1.0 / time.speed);
+    char ms[32];
+    std::snprintf(ms, sizeof ms, "%.1f ms", time.step_seconds * 1e3);
+    char dt[32];
+    std::snprintf(dt, sizeof dt, "%g s", params.dt);
+    return Status::Error(limit, what + " takes about " + ms + " a step of dt " + dt + ": 1/" +
+                                    slow + " of real time, slower than the 1/" +
+                                    std::to_string(static_cast<int>(1 / kPageSwaySlowest)) +
+                                    " allowed; " + change);
+  }
+  return Status::Ok();
+}
+
 }  // namespace niwa

@@ -26,4 +26,27 @@ Estimate EstimateSwayGlb(const SwayModel& model, const TreeCounts& counts, const
 // the wall clock and their pose arrays (16 floats a node point and instance); no trajectories.
 Estimate EstimatePageSway(const SwayModel& model, int instances);
 
+// The page's sway in time: the worker steps every simulator by the wall clock, at most
+// kPageSwayMaxStepsPerTick steps a tick, and answers nothing else during a tick. A tick may take
+// kPageSwayTickSeconds by estimate (the page answers a click within 1 s: a click that needs the
+// worker waits for the tick in progress, then for its own work and a frame; docs/budgets.md), so
+// the steps of a tick are lowered to fit it; a sway slower than kPageSwaySlowest of real time is
+// refused (it would look frozen).
+inline constexpr double kPageSwayTickSeconds = 0.25;
+inline constexpr int kPageSwayMaxStepsPerTick = 8;
+inline constexpr double kPageSwaySlowest = 0.25;
+
+struct PageSwayTime {
+  double step_seconds = 0;  // one step of every instance (internodes × 90 ns, as EstimateSwayRun)
+  int steps_per_tick = 0;   // at most 8, at least 1, within kPageSwayTickSeconds when one fits
+  double speed = 0;         // simulated over wall time the worker can keep up (at most 1)
+};
+PageSwayTime EstimatePageSwayTime(const SwayModel& model, const SwayParams& params, int instances);
+
+// Ok when the sway fits the page's tick and plays at least kPageSwaySlowest of real time; else one
+// line naming `limit` (the page's "page time budget") and `change` ("raise dt or lower years,
+// ...").
+Status CheckPageSwayTime(const PageSwayTime& time, const SwayModel& model, const SwayParams& params,
+                         int instances, const std::string& limit, const std::string& change);
+
 }  // namespace niwa

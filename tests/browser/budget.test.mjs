@@ -14,7 +14,17 @@
 //    nothing downloads, while Blow (within the budget) sways; on a 15-year sakura a sway .glb of
 //    50,000 steps is refused by the page time budget beside its own button, and the default 12 s
 //    clip downloads.
-// NIWA_BUDGET_PARTS=1,2,3,4 (any of them) runs only those parts; all by default.
+//    The LOD .glb of the 100-year sakura is refused by its own estimate (core/render/lod_budget)
+//    beside its button; the 15-year sakura's downloads.
+// 5. The page sway's time (core/sway/sway_budget EstimatePageSwayTime): Blow on a 15-year sakura
+//    at dt 0.0005 s (1/7 of real time by estimate) is refused beside Blow (#wind-info) naming the
+//    page time budget and what to change; at the default dt it sways 8 steps a tick in real time;
+//    at dt 0.002 s in slow motion (about 0.71 of real time), said beside Blow.
+// 6. The ivy page's statistics: a page-budget ivy (free literal, 400 steps, stopped at the page
+//    budget) has its overlap sweep checked against EstimateIvyStats as the CLI does; when it does
+//    not fit, the sweep is left out with the line as a notice (overlap_pairs null), else measured.
+// NIWA_BUDGET_PARTS=1,2,3,4,5,6 (any of them) runs only those parts; all by default.
+import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import { ARTIFACTS, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, waitReady, watchPage } from './harness.mjs';
@@ -77,7 +87,7 @@ async function exportBy(page, button) {
     line: d.exportError ? (await page.textContent(lineId)).trim() : '', visible, downloads };
 }
 
-const PARTS = (process.env.NIWA_BUDGET_PARTS || '1,2,3,4').split(',');
+const PARTS = (process.env.NIWA_BUDGET_PARTS || '1,2,3,4,5,6').split(',');
 
 await runBrowserTest(async (server, browser) => {
   const context = await newContext(browser, { viewport: { width: 1100, height: 760 } });
@@ -125,7 +135,20 @@ await runBrowserTest(async (server, browser) => {
       const sway = await hooks(page);
       check('4: Blow on the tree at the page budget sways (its estimate fits)', !sway.windError && Number(sway.swayTime) > 0,
         sway.windError || `t = ${sway.swayTime} s`);
+      await page.waitForTimeout(3000);  // a few ticks: the measured step beside the estimate
+      const ticks = await hooks(page);
+      check('4: its worker ticks take 8 steps in real time by estimate (17.5 ms a step at dt 1/30 s)',
+        ticks.swayStepsPerTick === '8' && ticks.swaySpeed === '1.000',
+        `${ticks.swayStepsPerTick} steps a tick, speed ${ticks.swaySpeed}; measured ${ticks.swayStepMs} ms a step (the last tick)`);
       await page.click('#wind');  // Still
+      // 4d. The LOD .glb: its levels' own estimate from the full mesh's triangles.
+      const lod = await exportBy(page, '#download-lod-glb');
+      check('4: Download LOD .glb is refused by its own estimate, the line beside its button',
+        /^page memory budget: growing the tree and building the mesh .* and building the three LOD levels of the [\d,]+ triangles of the full mesh for the \.glb needs about [\d.]+ GB, more than the 1 GB allowed; lower years, N_high or B_l$/.test(lod.error) &&
+        lod.beside === 'download-lod-glb' && lod.line === lod.error && lod.visible && lod.downloads === 0,
+        `${lod.error} (beside #${lod.beside}, shown ${lod.visible}, ${lod.downloads} downloads)`);
+      await page.locator('#export-refused').scrollIntoViewIfNeeded();
+      await shoot(page, 'budget-lod-refused.png');
     }
     await page.close();
   }
@@ -150,6 +173,91 @@ await runBrowserTest(async (server, browser) => {
     check('4: the default sway .glb (12 s at 30 fps) downloads, no line', !clip.error && clip.exported.startsWith('glb:') &&
       clip.downloads === 1 && !(await page.isVisible('#export-refused')),
       `${clip.exported}, ${clip.downloads} downloads${clip.error ? `, refused: ${clip.error}` : ''}`);
+    const lod = await exportBy(page, '#download-lod-glb');
+    check('4: the 15-year sakura\'s LOD .glb fits its estimate and downloads', !lod.error && lod.exported.startsWith('glb:') &&
+      lod.downloads === 1, `${lod.exported}, ${lod.downloads} downloads${lod.error ? `, refused: ${lod.error}` : ''}`);
+    await page.close();
+  }
+
+  // 5. The sway's time: too slow for real time at a tiny dt is refused beside Blow.
+  if (PARTS.includes('5')) {
+    const page = watchPage(await context.newPage(), problems);
+    await page.goto(`${server.url}#preset=sakura&years=15&dt=0.0005`);
+    await waitReady(page, 0, 100);
+    await page.click('#wind');
+    await page.waitForFunction(() => document.documentElement.dataset.windError ||
+      Number(document.documentElement.dataset.swayTime) > 0, null, { timeout: TIMEOUT, polling: 100 });
+    const d = await hooks(page);
+    const info = (await page.textContent('#wind-info')).trim();
+    check('5: Blow at dt 0.0005 s is refused by the page time budget, the line beside Blow',
+      /^page time budget: swaying 1 tree of [\d,]+ internodes takes about [\d.]+ ms a step of dt 0\.0005 s: 1\/\d+ of real time, slower than the 1\/4 allowed; raise dt, or lower years, N_high or B_l$/.test(d.windError || '') &&
+      info === d.windError && (await page.getAttribute('#wind', 'aria-pressed')) === 'false',
+      `${d.windError} / #wind-info "${info}"`);
+    await shoot(page, 'budget-sway-refused.png');
+    await page.goto(`${server.url}#preset=sakura&years=15`);
+    await page.reload();
+    await waitReady(page, 0, 100);
+    await page.click('#wind');
+    await page.waitForFunction(() => document.documentElement.dataset.windError ||
+      Number(document.documentElement.dataset.swayTime) > 0, null, { timeout: TIMEOUT, polling: 100 });
+    const ok = await hooks(page);
+    check('5: at the default dt the same tree sways, 8 steps a tick, real time', !ok.windError && Number(ok.swayTime) > 0 &&
+      ok.swayStepsPerTick === '8' && ok.swaySpeed === '1.000', ok.windError || `t = ${ok.swayTime}, ${ok.swayStepsPerTick} a tick, speed ${ok.swaySpeed}`);
+    await page.click('#wind');
+    // Between real time and a quarter of it: it sways in slow motion and the info line says so.
+    await page.goto(`${server.url}#preset=sakura&years=15&dt=0.002`);
+    await page.reload();
+    await waitReady(page, 0, 100);
+    await page.click('#wind');
+    await page.waitForFunction(() => document.documentElement.dataset.windError ||
+      Number(document.documentElement.dataset.swayTime) > 0, null, { timeout: TIMEOUT, polling: 100 });
+    const slow = await hooks(page);
+    const slowInfo = (await page.textContent('#wind-info')).trim();
+    check('5: at dt 0.002 s (2.8 ms a step by estimate) it sways in slow motion and says so', !slow.windError &&
+      slow.swaySpeed === Math.min(1, 0.002 / (Number(slow.internodes) * 90e-9)).toFixed(3) && Number(slow.swaySpeed) < 1 &&
+      slowInfo.endsWith(`slow motion (about ${Number(slow.swaySpeed).toFixed(2)}× real time; lower years or raise dt)`),
+      slow.windError || `speed ${slow.swaySpeed}: "${slowInfo}"`);
+    await page.click('#wind');
+    await page.close();
+  }
+
+  // 6. The ivy page's statistics at the page budget: the overlap sweep checked as the CLI does.
+  if (PARTS.includes('6')) {
+    const page = watchPage(await context.newPage(), problems);
+    const started = Date.now();
+    await page.goto(`${server.url}ivy.html#preset=literal&seed=1&steps=400&scene=free`, { waitUntil: 'load' });
+    await page.waitForFunction(() => ['ready', 'error'].includes(document.documentElement.dataset.status) &&
+      Number(document.documentElement.dataset.ivySerial) > 0, null, { timeout: 10 * TIMEOUT, polling: 250 });
+    const d = await hooks(page);
+    const s = JSON.parse(d.stats || '{}');
+    const notice = (await page.textContent('#notice')).trim();
+    const skipped = d.overlapSkippedBy || '';
+    console.log(`6: ivy ${s.buds ? `A ${s.buds.A} D ${s.buds.D} Z ${s.buds.Z}` : ''}, ${s.internodes} internodes in ${((Date.now() - started) / 1000).toFixed(1)} s; truncated_by "${s.truncated_by}"; overlap_pairs ${s.overlap_pairs}; skipped "${skipped}"`);
+    check('6: the page-budget ivy stopped at the page budget', /^page (memory|time) budget: stopped at step \d+ of 400/.test(s.truncated_by || ''), s.truncated_by);
+    // Its sweep (about 4 M pairs) fits the exact estimate with the growth: measured, no line.
+    check('6: the page-budget ivy\'s overlap sweep fits its exact estimate and is measured',
+      !skipped && Number.isInteger(s.overlap_pairs) && !notice.includes('overlap pairs'),
+      `overlap_pairs ${s.overlap_pairs}${skipped ? `, skipped: ${skipped}` : ''}`);
+    // 6b. A tube radius spanning the whole ivy puts every internode pair in the sweep (1.2 G pairs,
+    // about 195 s by estimate): the CLI refuses --stats, the page leaves the sweep out with the
+    // same estimate's line (its own change) as a notice, and still shows the other statistics.
+    const hash = 'preset=literal&seed=1&steps=104&scene=free&r_tip=1000000';
+    const cli = spawnSync(process.env.NIWA_NATIVE, ['ivy', 'grow', '--url', `#${hash}`, '--stats'], { encoding: 'utf8' });
+    const cliLine = cli.stderr.trim().replace(/^niwa: error: --max-seconds: /, '').replace(/; lower --steps.*$/, '');
+    await page.goto(`${server.url}ivy.html#${hash}`, { waitUntil: 'load' });
+    await page.reload();
+    await page.waitForFunction(() => ['ready', 'error'].includes(document.documentElement.dataset.status) &&
+      Number(document.documentElement.dataset.ivySerial) > 0, null, { timeout: 10 * TIMEOUT, polling: 250 });
+    const wide = await hooks(page);
+    const w = JSON.parse(wide.stats || '{}');
+    const wideNotice = (await page.textContent('#notice')).trim();
+    check('6: the CLI refuses --stats for this ivy (exit 2)', cli.status === 2 && /measuring --stats/.test(cliLine), `${cli.status}: ${cli.stderr.trim()}`);
+    check('6: the page leaves the sweep out with the same estimate\'s line, beside the ivy as a notice',
+      wide.overlapSkippedBy === `page time budget: ${cliLine}; grow fewer steps (the page leaves the overlap pairs out)` &&
+      w.overlap_pairs === null && wideNotice.includes(wide.overlapSkippedBy) && w.internodes > 0 && w.buds.D > 0,
+      `page "${wide.overlapSkippedBy}" | CLI "${cliLine}" | overlap_pairs ${w.overlap_pairs}, internodes ${w.internodes}`);
+    await shoot(page, 'budget-ivy-overlap-skipped.png');
+    await shoot(page, 'budget-ivy-stats.png');
     await page.close();
   }
 

@@ -1,4 +1,5 @@
-// Budgets (issue 16 items 1-3): the max-growth parameters, a long sway and a big .glb finish in
+// Budgets (issue 16 items 1-3): the max-growth parameters, a long sway, a big .glb and a
+// game-ready (--lod / --max-triangles) .glb finish in
 // seconds under --max-memory / --max-seconds, refused up front (exit 2, one line naming the limit,
 // no file) or stopped early (truncated, truncated_by, one stderr line), with the same limits and
 // the same lines in the native and the WASM CLI.
@@ -65,6 +66,14 @@ refused('sway 600 s at dt 0.0001', ['tree', 'sway', '--preset', 'sakura', '--yea
   '--max-seconds', null, /swaying 6000000 steps over \d+ internodes takes about \d+ s, more than the 60 s allowed/);
 refused('sway 600 s at 240 fps to .glb', ['tree', 'sway', '--preset', 'sakura', '--years', '15', '--duration', '600', '--fps', '240'],
   '--max-memory', 'x.glb', /writing the \.glb \(18001 keys/);
+
+// The game-ready .glb (--lod, --max-triangles): its own estimate from the full mesh's triangles
+// (core/render/lod_budget), refused before the levels are built, the same line in both builds.
+refused('sakura 40 --lod .glb at 2 GB', ['tree', 'grow', '--preset', 'sakura', '--years', '40', '--lod'],
+  '--max-memory', 'lod.glb',
+  /^niwa: error: --max-memory: growing the tree and building the three LOD levels of the 6,434,333 triangles of the full mesh for the \.glb needs about [\d.]+ GB, more than the 2 GB allowed; lower --years, N_high or B_l \(or raise --max-memory\)$/);
+refused('sakura 15 --max-triangles 20000 .glb in 1 s', ['tree', 'grow', '--preset', 'sakura', '--years', '15', '--max-triangles', '20000', '--max-seconds', '1'],
+  '--max-seconds', 'budget.glb', /building the level of the 386,300 triangles of the full mesh for the \.glb takes about [\d.]+ s, more than the 1 s allowed/);
 
 // A budget that fits runs as before: the same --stats as without the flags.
 for (const cmd of [native, wasm]) {

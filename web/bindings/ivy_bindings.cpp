@@ -345,6 +345,7 @@ class IvyLab {
     support_estimate.seconds += tree_seconds_;  // a tree support's growth and bark
     limits_ = ivy::IvyLimits(state.params, PageBudget(), support_estimate, !scene_.free);
     limits_.bytes_per_bud += ivy::IvyPageMeshBytesPerBud();
+    stats_limits_ = limits_;  // the statistics' own check replaces the room kept for them
     // The page measures every grow (statsJson): keep room for its brute-force re-checks.
     ivy::ReserveIvyStats(size.triangles, &limits_);
     const ivy::StepObserver on_step = [this](int step, int steps) {
@@ -382,8 +383,19 @@ class IvyLab {
   // The --stats object of the last grow (as `niwa ivy grow --stats`), or "{}".
   std::string statsJson() const {
     if (!grown_) return "{}";
-    ivy::IvyStats stats = ivy::MeasureIvy(model_, log_, scene_.free ? nullptr : &scene_.mesh,
-                                          state_.params, obstacles_ > 0 ? &attach_ : nullptr);
+    // As `niwa ivy grow --stats`: the measurement's exact estimate (the overlap sweep's pairs,
+    // counted before any is tested) with the grown ivy's, against the page's budget. The growth
+    // kept room for the rest (ReserveIvyStats); when the pairs do not fit, the sweep is left out
+    // and its line is a notice (overlap_skipped_by), the other statistics are still measured.
+    const double tris = scene_.free ? 0 : static_cast<double>(scene_.mesh.triangle_count());
+    const Status fits = CheckEstimate(
+        ivy::EstimateIvyGrown(model_, log_, stats_limits_) +
+            ivy::EstimateIvyStats(ivy::CountIvyStatsWork(model_, state_.params, tris)),
+        PageBudget(), "grow fewer steps (the page leaves the overlap pairs out)");
+    ivy::IvyStats stats =
+        ivy::MeasureIvy(model_, log_, scene_.free ? nullptr : &scene_.mesh, state_.params,
+                        obstacles_ > 0 ? &attach_ : nullptr, fits.ok());
+    stats.overlap_skipped_by = fits.Line();
     stats.tree_truncated_by = tree_truncated_by_;
     return ivy::IvyStatsJson(stats, log_, model_, timings_);
   }
@@ -502,7 +514,9 @@ class IvyLab {
   ivy::IvyModel model_;
   ivy::GrowLog log_;
   ivy::IvyGrowLimits limits_;
-  double tree_seconds_ = 0;        // a tree support: its growth and bark's estimated seconds
+  double tree_seconds_ = 0;  // a tree support: its growth and bark's estimated seconds
+  ivy::IvyGrowLimits
+      stats_limits_;  // limits_ without ReserveIvyStats (as the CLI's EstimateIvyGrown)
   std::string tree_truncated_by_;  // a tree support that stopped at the page budget: its line
   ivy::IvyTimings timings_;
   ivy::IvyMeshes meshes_;

@@ -30,6 +30,7 @@
 //   buildMesh(); statsJson(); buffers(...). restate(stateJson) swaps in a state that grows the same
 //   tree (sway and render edits: re-skins, clears the hybrid scene). swayStart() /
 //   swayStartAt(origins in metres, 3 per instance) -> "" or error, swayStep(n) -> time, swayDt(),
+//   swayStepsPerTick() (the worker's steps a tick, sway_budget), swaySpeed() (share of real time),
 //   swayDuration(), swayWindSpeed(), swayInstances(). buildHybrid() -> "" or error, atlasSize(),
 //   renderMode(), hybridView(ex,ey,ez, tx,ty,tz, fovY, width, height) -> table 4.1 JSON,
 //   hybridViewSlot(slot, ...) with the hysteresis of that slot (0..255). buildGlb() -> "" or error;
@@ -54,6 +55,7 @@
 #include "params/param_text.h"
 #include "render/atlas_mesh.h"
 #include "render/hybrid.h"
+#include "render/lod_budget.h"
 #include "render/tree_lod.h"
 #include "sway/skin.h"
 #include "sway/sway.h"
@@ -262,6 +264,10 @@ class TreeSession {
     return sways_[0]->time();
   }
   double swayDt() const { return sway_params_.dt; }
+  // Steps the worker may take in one tick (core/sway/sway_budget: within the page's tick, <= 8)
+  // and the share of real time the sway is estimated to keep (1: real time; >= 1/4, else refused).
+  int swayStepsPerTick() const { return sway_time_.steps_per_tick; }
+  double swaySpeed() const { return sway_time_.speed; }
   double swayDuration() const { return sway_params_.duration; }
   // Wind speed (m/s) at the tree's root now: drives the leaf flutter in the shader.
   double swayWindSpeed() const {
@@ -322,6 +328,14 @@ class TreeSession {
       if (!range.ok()) return range.Line();
     }
     const long budget = max_triangles < 0 ? -1 : static_cast<long>(max_triangles);
+    // The page's budget: the grown tree and its mesh (held meanwhile) and the levels' own work
+    // from the full mesh's triangles (core/render/lod_budget, as `niwa tree grow --lod`).
+    const TreeCounts counts = CountTree(grower_->tree());
+    const Status fits =
+        CheckEstimate(grower_->estimate() + EstimateTreeExport(counts, TreeExport::kMesh) +
+                          EstimateLodExport(counts, budget, lod),
+                      PageBudget(), "lower years, N_high or B_l");
+    if (!fits.ok()) return fits.Line();
     std::vector<LodMesh> levels;
     if (lod) {
       Result<std::vector<LodMesh>> all =
@@ -457,6 +471,15 @@ class TreeSession {
             EstimatePageSway(sway_model_, static_cast<int>(origins.size())),
         PageBudget(), "lower years or the number of trees");
     if (!fits.ok()) return fits.Line();
+    // And its time: one worker tick of steps within the page's tick, at least 1/4 of real time.
+    const int instances = static_cast<int>(origins.size());
+    const PageSwayTime time = EstimatePageSwayTime(sway_model_, params, instances);
+    const Status in_time =
+        CheckPageSwayTime(time, sway_model_, params, instances, PageBudget().seconds_limit,
+                          instances == 1 ? "raise dt, or lower years, N_high or B_l"
+                                         : "raise dt, or lower years or the number of trees");
+    if (!in_time.ok()) return in_time.Line();
+    sway_time_ = time;
     sways_.clear();
     for (const glm::dvec3& origin : origins)
       sways_.push_back(std::make_unique<SwaySimulator>(grower_->tree(), params, origin));
@@ -477,6 +500,7 @@ class TreeSession {
   TreeSkin skin_;
   SwayParams sway_params_;
   std::vector<std::unique_ptr<SwaySimulator>> sways_;  // one per instance (swayStartAt)
+  PageSwayTime sway_time_;                             // of the sway started last
   std::vector<float> poses_;  // sways_.size() blocks of nodes x 16 floats (one at rest before)
   HybridScene hybrid_;
   AtlasMesh atlas_;
@@ -518,6 +542,8 @@ EMSCRIPTEN_BINDINGS(niwa_tree) {
       .function("swayInstances", &niwa::TreeSession::swayInstances)
       .function("swayStep", &niwa::TreeSession::swayStep)
       .function("swayDt", &niwa::TreeSession::swayDt)
+      .function("swayStepsPerTick", &niwa::TreeSession::swayStepsPerTick)
+      .function("swaySpeed", &niwa::TreeSession::swaySpeed)
       .function("swayDuration", &niwa::TreeSession::swayDuration)
       .function("swayWindSpeed", &niwa::TreeSession::swayWindSpeed)
       .function("buildHybrid", &niwa::TreeSession::buildHybrid)

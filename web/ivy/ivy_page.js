@@ -310,7 +310,8 @@ worker.on('ivy', (msg) => {
   const s = msg.stats;
   notices.set('error', '');
   // The tree support's own stop (scene=tree grown within the page budget), then the ivy's.
-  notices.set('budget', [s.tree_truncated_by, s.truncated_by].filter(Boolean).join(' '));
+  // And the statistics' overlap sweep left out when its exact estimate does not fit (ivy_bindings).
+  notices.set('budget', [s.tree_truncated_by, s.truncated_by, s.overlap_skipped_by].filter(Boolean).join(' '));
   showFieldError('');
   showWork(false);
   ui.progress.textContent = '';
@@ -341,6 +342,7 @@ worker.on('ivy', (msg) => {
   setHooks({
     status: 'ready', error: '', meshError: '', ivySerial, internodes: s.internodes, leaves: s.leaves, laterals: s.laterals,
     steps: msg.steps, stats: JSON.stringify(s), hash: msg.hash, truncatedBy: s.truncated_by || '',
+    overlapSkippedBy: s.overlap_skipped_by || '',
   });
   requestFrame();
 });

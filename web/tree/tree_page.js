@@ -725,8 +725,11 @@ function showWind(pose) {
     return;
   }
   const speed = pose.wind > 0 ? `${pose.wind.toFixed(1)} m/s` : 'calm';
-  ui.windInfo.textContent = `t = ${pose.time.toFixed(1)} s · wind ${speed}`;
-  setHooks({ swayTime: pose.time.toFixed(3), swayWind: pose.wind.toFixed(2) });
+  // A tree whose steps cost more than dt by estimate sways slower than real time (core/sway/sway_budget).
+  const slow = pose.speed < 1 ? ` · slow motion (about ${pose.speed.toFixed(2)}× real time; lower years or raise dt)` : '';
+  ui.windInfo.textContent = `t = ${pose.time.toFixed(1)} s · wind ${speed}${slow}`;
+  setHooks({ swayTime: pose.time.toFixed(3), swayWind: pose.wind.toFixed(2), swayStepsPerTick: String(pose.stepsPerTick),
+    swaySpeed: pose.speed.toFixed(3), swayStepMs: Number(pose.stepMs).toFixed(2) });
 }
 function setWind(play) {
   windPlaying = play;

@@ -152,19 +152,21 @@ export function createHandler(Module, ctx) {
 
   // The thesis's gust (3.5) starts suddenly from still air at gust_on (1 s by default), and the
   // simulator starts at rest at t = 0: run live from t = 0, Blow showed nothing for that second.
-  // The still air is stepped through at once instead (the same simulation, the same bits as a run
-  // from 0), so the first pose on screen is the first step of the gust. Returns the steps skipped
-  // (at most MAX_STILL_AIR_STEPS; none in calm air). docs/sway-model.md, "In the page".
+  // The still air is stepped through before the first pose instead (the same simulation, the same
+  // bits as a run from 0), so the first pose on screen is the first step of the gust: at most
+  // `most` steps a worker tick (swayStepsPerTick: within the page's tick estimate, so a slow tree
+  // does not hold the worker over it; core/sway/sway_budget), at most MAX_STILL_AIR_STEPS in all,
+  // none in calm air. Returns {steps, done}. docs/sway-model.md, "In the page".
   const MAX_STILL_AIR_STEPS = 600;
-  function skipStillAir(session, state) {
+  function skipStillAir(session, state, most) {
     const speed = Number(state?.params?.wind_speed);
-    if (Number.isFinite(speed) && speed <= 0) return 0;  // calm: no gust to wait for
-    let skipped = 0;
-    while (skipped < MAX_STILL_AIR_STEPS && session.swayWindSpeed() === 0) {
+    if (Number.isFinite(speed) && speed <= 0) return { steps: 0, done: true };  // calm: no gust to wait for
+    let steps = 0;
+    while (steps < most && session.swayWindSpeed() === 0) {
       session.swayStep(1);
-      skipped += 1;
+      steps += 1;
     }
-    return skipped;
+    return { steps, done: session.swayWindSpeed() !== 0 };
   }
 
   function stopWind(client) {
@@ -191,7 +193,6 @@ export function createHandler(Module, ctx) {
       post({ type: 'error', client, message: error, control: 'wind' });
       return;
     }
-    const skipped = skipStillAir(session, last.state);
     let clock = typeof clockName === 'string' ? clocks.get(clockName) : null;
     if (!clock) {
       clock = { start: performance.now() };
@@ -199,7 +200,7 @@ export function createHandler(Module, ctx) {
     }
     // Simulated time 0 is at the clock's start: a sway joining a running clock catches up, and when
     // it is more than 8 steps behind, the shared clock slips back to it (the others wait).
-    const sway = { session, state: last.state, origins: at, clock, clockName, base: 0, steps: 0, skipped, waiting: false, timer: 0 };
+    const sway = { session, state: last.state, origins: at, clock, clockName, base: 0, steps: 0, skipped: 0, stillAir: true, waiting: false, timer: 0 };
     sways.set(client, sway);
     windTick(client, sway);
   }
@@ -208,26 +209,42 @@ export function createHandler(Module, ctx) {
     if (sways.get(client) !== sway) return;
     const session = sway.session;
     const dt = session.swayDt();
+    if (sway.stillAir) {  // the still air before the gust, a tick's steps at a time, no pose
+      const part = skipStillAir(session, sway.state, Math.min(session.swayStepsPerTick(), MAX_STILL_AIR_STEPS - sway.skipped));
+      sway.skipped += part.steps;
+      if (part.done || sway.skipped >= MAX_STILL_AIR_STEPS) {
+        sway.stillAir = false;
+        // Its own clock starts now (the first pose is the gust's first step); a shared clock
+        // (the grove) is caught up as a sway joining it late.
+        if (typeof sway.clockName !== 'string') sway.clock.start = performance.now() - (sway.base + sway.steps) * 1000 * dt;
+      }
+      sway.timer = setTimeout(() => windTick(client, sway), part.done ? 8 : 0);
+      return;
+    }
     if (!sway.waiting) {
       const now = Math.floor((performance.now() - sway.clock.start) / (1000 * dt));
       const due = now - sway.base - sway.steps;
       if (due > 0) {
+        // At most the steps one tick may take (swayStepsPerTick: 8, fewer for a tree whose 8 steps
+        // would hold the worker over the page's tick estimate; core/sway/sway_budget).
+        const most = session.swayStepsPerTick();
         const started = performance.now();
-        let time = session.swayStep(Math.min(due, 8));
-        const stepMs = (performance.now() - started) / Math.min(due, 8);  // per step, all instances
-        sway.steps += Math.min(due, 8);
-        if (due > 8) sway.clock.start += (due - 8) * 1000 * dt;  // too slow: let the clock slip, not pile up
+        let time = session.swayStep(Math.min(due, most));
+        const stepMs = (performance.now() - started) / Math.min(due, most);  // per step, all instances
+        sway.steps += Math.min(due, most);
+        if (due > most) sway.clock.start += (due - most) * 1000 * dt;  // too slow: let the clock slip, not pile up
         if (time >= session.swayDuration()) {  // the gust schedule is over: again from rest
           if (sway.origins) session.swayStartAt(sway.origins); else session.swayStart();
-          sway.skipped = skipStillAir(session, sway.state);
+          sway.skipped = 0;
+          sway.stillAir = true;  // stepped through in the next ticks, as at Blow
           sway.base += sway.steps;
           sway.steps = 0;
-          time = sway.skipped * dt;
+          time = 0;
         }
         const poses = copyView(session.buffers('sway').poses);
         sway.waiting = true;
         post({ type: 'pose', client, time, wind: session.swayWindSpeed(), instances: session.swayInstances(),
-          stepMs, poses }, [poses]);
+          stepMs, stepsPerTick: most, speed: session.swaySpeed(), poses }, [poses]);
       }
     }
     sway.timer = setTimeout(() => windTick(client, sway), 8);
