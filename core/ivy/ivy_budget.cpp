@@ -110,7 +110,7 @@ std::string CheckIvyStep(const IvyModel& model, const GrowLog& log, const IvyGro
     return TruncatedLine(l.memory_limit, where,
                          FormatCount(buds) + " buds and " + FormatCount(alive) +
                              " growing would need more than " + FormatBytes(l.max_bytes),
-                         kIvyChange + RaiseHint(l.memory_limit));
+                         l.change + RaiseHint(l.memory_limit));
   }
   const double seconds = l.seconds_before + l.seconds_per_bud_step * (log.bud_steps + buds) +
                          l.seconds_per_candidate * (static_cast<double>(log.candidates) +
@@ -120,7 +120,7 @@ std::string CheckIvyStep(const IvyModel& model, const GrowLog& log, const IvyGro
     return TruncatedLine(l.seconds_limit, where,
                          "the next step over " + FormatCount(buds) + " buds would take more than " +
                              FormatSeconds(l.max_seconds),
-                         kIvyChange + RaiseHint(l.seconds_limit));
+                         l.change + RaiseHint(l.seconds_limit));
   }
   return "";
 }

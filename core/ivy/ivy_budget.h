@@ -22,6 +22,12 @@ namespace niwa::ivy {
 //   memory  = base_bytes + bytes_per_bud · (buds + alive)
 //   seconds = seconds_before + seconds_per_bud_step · Σ_steps buds + seconds_per_candidate ·
 //             (candidates so far + alive · n_c · (R_max + 1)) + seconds_per_bud · (buds + alive)
+// What the refusal and truncation lines tell the user to change (the CLI's flags; the page names
+// its own fields: IvyGrowLimits::change).
+inline constexpr char kIvyChange[] = "lower --steps or --subdivide, or raise t1 and t2";
+inline constexpr char kIvyStatsChange[] =
+    "lower --steps or --subdivide, or raise t1 and t2, or leave out --stats";
+
 struct IvyGrowLimits {
   double max_bytes = -1, max_seconds = -1;
   double base_bytes = 0, bytes_per_bud = 0;
@@ -31,6 +37,7 @@ struct IvyGrowLimits {
   double seconds_per_bud = 0;
   double candidates_per_search = 0;  // n_c · (R_max + 1) (+ the fan's); 0 without a support
   std::string memory_limit = "--max-memory", seconds_limit = "--max-seconds";
+  std::string change = kIvyChange;  // what a truncation line says to change
 };
 
 // The support the ivy climbs: `triangles` after subdividing `levels` times (4^K each), its BVH.
@@ -84,10 +91,5 @@ Estimate EstimateIvyExport(const IvyModel& model, IvyExport kind, double support
 // The page's meshes per bud (BuildIvyMeshes, their flat copies and the buds' buffer, held with the
 // model): the page adds it to IvyGrowLimits::bytes_per_bud, so the growth stops where they fit.
 double IvyPageMeshBytesPerBud();
-
-// What the refusal and truncation lines tell the user to change.
-inline constexpr char kIvyChange[] = "lower --steps or --subdivide, or raise t1 and t2";
-inline constexpr char kIvyStatsChange[] =
-    "lower --steps or --subdivide, or raise t1 and t2, or leave out --stats";
 
 }  // namespace niwa::ivy

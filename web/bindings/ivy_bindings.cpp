@@ -345,6 +345,7 @@ class IvyLab {
     support_estimate.seconds += tree_seconds_;  // a tree support's growth and bark
     limits_ = ivy::IvyLimits(state.params, PageBudget(), support_estimate, !scene_.free);
     limits_.bytes_per_bud += ivy::IvyPageMeshBytesPerBud();
+    limits_.change = "lower Steps, or raise t1 and t2";  // the page's fields, not the CLI's flags
     stats_limits_ = limits_;  // the statistics' own check replaces the room kept for them
     // The page measures every grow (statsJson): keep room for its brute-force re-checks.
     ivy::ReserveIvyStats(size.triangles, &limits_);
