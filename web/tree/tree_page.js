@@ -101,6 +101,7 @@ const governor = new FrameGovernor({ onStill: () => requestFrame() });
 // changed meanwhile (frameDirty) is drawn by the next frame.
 let frameDirty = true;
 let wholeNext = false;  // the next frame is drawn whole, not in parts (requestFrame(true, true))
+let freshNext = false;  // the next frame starts anew, not resuming one begun before (a new selection)
 let frameLevel = -1;  // the governor's level of the frame in parts
 const frames = new FrameLoop(() => {
   // While a big tree goes up in parts the canvas keeps its last frame (no draw: a frame of the old
@@ -122,10 +123,11 @@ const frames = new FrameLoop(() => {
     }
     return false;
   }
-  const resume = renderer.progress.pending() && next.level === frameLevel && !wholeNext;
+  const resume = renderer.progress.pending() && next.level === frameLevel && !wholeNext && !freshNext;
   let quality = null;
   let whole = false;
   if (!resume) {
+    freshNext = false;
     quality = governor.quality(cheapAvailable);
     frameLevel = quality.level;
     frameDirty = false;
@@ -415,6 +417,9 @@ function select(id) {
     ? 'Click or tap a branch in the view to select it.'
     : refusal || `Branch ${selected} selected: Cut (or the Delete key) removes it and everything above it after year ${shownYear}.`;
   setHooks({ selected: selected === null ? '' : selected });
+  // A frame in parts begun before the click has the old selection's steps (no x-ray pass for the
+  // new branch): drop it and start one with the new highlight, instead of finishing it first.
+  freshNext = true;
   requestFrame();
 }
 
