@@ -12,7 +12,7 @@ await runBrowserTest(async (server, browser) => {
   page.on('pageerror', (e) => errors.push(String(e)));
   await page.goto(`${server.url}embed.html`, { timeout: TIMEOUT });
   const result = await page.evaluate(async () => {
-    const { Renderer, paintAtlas, paintAtlasInParts } = await import('/web/tree/tree_renderer.js');
+    const { Renderer, createAtlasTarget, paintAtlas, paintAtlasInParts } = await import('/web/tree/tree_renderer.js');
     const { imageTexture } = await import('/web/gl/textures.js');
     const canvas = document.createElement('canvas');
     canvas.width = canvas.height = 8;
@@ -42,20 +42,6 @@ await runBrowserTest(async (server, browser) => {
       indices: new Uint32Array([0, 1, 2, 0, 2, 3]).buffer,
     });
     const hybrid = { atlasSize: size, bark: quad(-1, -1, 0, 0), leaves: quad(0, -1, 1, 0.5), flowers: quad(-0.9, 0.1, 0.6, 0.9) };
-    const target = () => {
-      const texture = gl.createTexture();
-      gl.bindTexture(gl.TEXTURE_2D, texture);
-      gl.texStorage2D(gl.TEXTURE_2D, Math.log2(size) + 1, gl.RGBA8, size, size);
-      const depth = gl.createRenderbuffer();
-      gl.bindRenderbuffer(gl.RENDERBUFFER, depth);
-      gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, size, size);
-      const fb = gl.createFramebuffer();
-      gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
-      gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
-      gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depth);
-      gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-      return { texture, fb };
-    };
     const read = ({ fb }) => {
       const out = new Uint8Array(size * size * 4);
       gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
@@ -64,7 +50,7 @@ await runBrowserTest(async (server, browser) => {
       return out;
     };
     const light = [0.3, 0.8, 0.5];
-    const whole = target(), parts = target(), plain = target();
+    const whole = createAtlasTarget(gl, size), parts = createAtlasTarget(gl, size), plain = createAtlasTarget(gl, size);
     paintAtlas(gl, renderer.atlasProgram, hybrid, whole.fb, whole.texture, light, textures);
     // A budget of one triangle: every part's draw is split, each resumed after the GPU finished.
     const painted = await paintAtlasInParts(gl, renderer.atlasProgram, hybrid, parts.fb, parts.texture, light, null, 1, () => false, textures);

@@ -68,6 +68,14 @@ async function timedClick(page, selector) {
   return Date.now() - start;
 }
 
+// Blow pressed: resolves to the page's hooks once it sways (swayTime > 0) or was refused (windError).
+async function blow(page) {
+  await page.click('#wind');
+  await page.waitForFunction(() => document.documentElement.dataset.windError ||
+    Number(document.documentElement.dataset.swayTime) > 0, null, { timeout: TIMEOUT, polling: 100 });
+  return hooks(page);
+}
+
 // An export asked for by `button`: resolves to {error, beside, exported, line} once it downloaded or
 // was refused (the hooks exportError / exportErrorButton / exported of web/tree/tree_page.js).
 async function exportBy(page, button) {
@@ -129,10 +137,7 @@ await runBrowserTest(async (server, browser) => {
         glb.beside === 'download-glb' && glb.line === glb.error && glb.visible && glb.downloads === 0,
         `${glb.error} (beside #${glb.beside}, shown ${glb.visible}, ${glb.downloads} downloads)`);
       // 4b. Blow: the sway's estimate (its simulator and poses beside the tree and mesh) fits.
-      await page.click('#wind');
-      await page.waitForFunction(() => document.documentElement.dataset.windError ||
-        Number(document.documentElement.dataset.swayTime) > 0, null, { timeout: TIMEOUT, polling: 100 });
-      const sway = await hooks(page);
+      const sway = await blow(page);
       check('4: Blow on the tree at the page budget sways (its estimate fits)', !sway.windError && Number(sway.swayTime) > 0,
         sway.windError || `t = ${sway.swayTime} s`);
       await page.waitForTimeout(3000);  // a few ticks: the measured step beside the estimate
@@ -184,10 +189,7 @@ await runBrowserTest(async (server, browser) => {
     const page = watchPage(await context.newPage(), problems);
     await page.goto(`${server.url}#preset=sakura&years=15&dt=0.0005`);
     await waitReady(page, 0, 100);
-    await page.click('#wind');
-    await page.waitForFunction(() => document.documentElement.dataset.windError ||
-      Number(document.documentElement.dataset.swayTime) > 0, null, { timeout: TIMEOUT, polling: 100 });
-    const d = await hooks(page);
+    const d = await blow(page);
     const info = (await page.textContent('#wind-info')).trim();
     check('5: Blow at dt 0.0005 s is refused by the page time budget, the line beside Blow',
       /^page time budget: swaying 1 tree of [\d,]+ internodes takes about [\d.]+ ms a step of dt 0\.0005 s: 1\/\d+ of real time, slower than the 1\/4 allowed; raise dt, or lower years, N_high or B_l$/.test(d.windError || '') &&
@@ -197,10 +199,7 @@ await runBrowserTest(async (server, browser) => {
     await page.goto(`${server.url}#preset=sakura&years=15`);
     await page.reload();
     await waitReady(page, 0, 100);
-    await page.click('#wind');
-    await page.waitForFunction(() => document.documentElement.dataset.windError ||
-      Number(document.documentElement.dataset.swayTime) > 0, null, { timeout: TIMEOUT, polling: 100 });
-    const ok = await hooks(page);
+    const ok = await blow(page);
     check('5: at the default dt the same tree sways, 8 steps a tick, real time', !ok.windError && Number(ok.swayTime) > 0 &&
       ok.swayStepsPerTick === '8' && ok.swaySpeed === '1.000', ok.windError || `t = ${ok.swayTime}, ${ok.swayStepsPerTick} a tick, speed ${ok.swaySpeed}`);
     await page.click('#wind');
@@ -208,10 +207,7 @@ await runBrowserTest(async (server, browser) => {
     await page.goto(`${server.url}#preset=sakura&years=15&dt=0.002`);
     await page.reload();
     await waitReady(page, 0, 100);
-    await page.click('#wind');
-    await page.waitForFunction(() => document.documentElement.dataset.windError ||
-      Number(document.documentElement.dataset.swayTime) > 0, null, { timeout: TIMEOUT, polling: 100 });
-    const slow = await hooks(page);
+    const slow = await blow(page);
     const slowInfo = (await page.textContent('#wind-info')).trim();
     check('5: at dt 0.002 s (2.8 ms a step by estimate) it sways in slow motion and says so', !slow.windError &&
       slow.swaySpeed === Math.min(1, 0.002 / (Number(slow.internodes) * 90e-9)).toFixed(3) && Number(slow.swaySpeed) < 1 &&

@@ -9,11 +9,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <ctime>
-
-#ifdef __EMSCRIPTEN__
-#include <emscripten.h>
-#endif
 
 #include "geom/bvh.h"
 #include "geom/primitives.h"
@@ -24,27 +19,16 @@
 #include "ivy/lstring.h"
 #include "ivy/scenes.h"
 #include "support/alloc_meter.h"
+#include "support/cpu_time.h"
 
 namespace niwa::ivy {
 namespace {
 
 using test::AllocMeter;
+using test::CpuSeconds;
 
 // Every estimate must hold what was measured (never under) and stay within this factor of it.
 constexpr double kFactor = 6;
-
-// CPU seconds used by this process so far: std::clock natively; under node (the WASM build) the
-// process's user + system time (Emscripten's clock() is the wall clock, which the other jobs on a
-// shared machine stretch), so both builds compare the work's CPU time with its estimate.
-double CpuSeconds() {
-#ifdef __EMSCRIPTEN__
-  // clang-format off
-  return EM_ASM_DOUBLE({ const u = process.cpuUsage(); return (u.user + u.system) / 1e6; });
-  // clang-format on
-#else
-  return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
-#endif
-}
 
 void ExpectBounds(double estimate, long long measured, const char* what) {
   ASSERT_GT(measured, 0) << what;

@@ -9,15 +9,11 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <ctime>
 #include <vector>
-
-#ifdef __EMSCRIPTEN__
-#include <emscripten.h>
-#endif
 
 #include "render/tree_lod.h"
 #include "support/alloc_meter.h"
+#include "support/cpu_time.h"
 #include "support/grow.h"
 #include "tree/mesh.h"
 
@@ -25,21 +21,10 @@ namespace niwa {
 namespace {
 
 using test::AllocMeter;
+using test::CpuSeconds;
 
 // The estimate must hold what was measured and stay within this factor of it (memory).
 constexpr double kFactor = 8;
-
-// CPU seconds of this process: std::clock natively; under node process.cpuUsage() (Emscripten's
-// clock() is the wall clock, which other jobs on a shared machine stretch).
-double CpuSeconds() {
-#ifdef __EMSCRIPTEN__
-  // clang-format off
-  return EM_ASM_DOUBLE({ const u = process.cpuUsage(); return (u.user + u.system) / 1e6; });
-  // clang-format on
-#else
-  return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
-#endif
-}
 
 // One export as the CLI and the page run it: the level(s), then the .glb.
 bool RunExport(const Tree& tree, long max_triangles, bool lod) {

@@ -123,6 +123,23 @@ export function paintAtlas(gl, program, hybrid, fb, texture, light, textures = n
   return triangles;
 }
 
+// A card atlas to paint into: a mipmapped RGBA8 texture `size` texels square (levels allocated, not
+// filled) with a depth buffer, and the framebuffer joining them (left bound, as is the texture).
+// {texture, depth, fb, size}; the caller deletes the three.
+export function createAtlasTarget(gl, size) {
+  const texture = gl.createTexture();
+  gl.bindTexture(gl.TEXTURE_2D, texture);
+  gl.texStorage2D(gl.TEXTURE_2D, Math.floor(Math.log2(size)) + 1, gl.RGBA8, size, size);
+  const depth = gl.createRenderbuffer();
+  gl.bindRenderbuffer(gl.RENDERBUFFER, depth);
+  gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, size, size);
+  const fb = gl.createFramebuffer();
+  gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+  gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
+  gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depth);
+  return { texture, depth, fb, size };
+}
+
 // paintAtlas over several tasks (the cheap representation of a moving full-mode tree, issue 16):
 // the atlas geometry of a 141 k-internode sakura is 66 MB and about 1.6 M triangles, seconds of
 // SwiftShader time at once, so it is drawn `budget` triangles at a time, each part once the GPU
@@ -445,17 +462,7 @@ export class Renderer {
         gl.deleteFramebuffer(this.atlas.fb);
         gl.deleteRenderbuffer(this.atlas.depth);
       }
-      const texture = gl.createTexture();
-      gl.bindTexture(gl.TEXTURE_2D, texture);
-      gl.texStorage2D(gl.TEXTURE_2D, Math.floor(Math.log2(size)) + 1, gl.RGBA8, size, size);
-      const depth = gl.createRenderbuffer();
-      gl.bindRenderbuffer(gl.RENDERBUFFER, depth);
-      gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, size, size);
-      const fb = gl.createFramebuffer();
-      gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
-      gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
-      gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depth);
-      this.atlas = { texture, depth, fb, size };
+      this.atlas = createAtlasTarget(gl, size);
     }
   }
 
