@@ -4,7 +4,7 @@
 // `--tree-preset NAME --tree-years N`; picking another tree regrows and its link regrows the same
 // ivy in a fresh page; a bad tree age is one line beside its field and the page recovers; a
 // 1 M-triangle glTF dropped on the page shows its read, BVH and step progress and Cancel ends it
-// at once, back to the tree; Embed gives the <niwa-ivy> and iframe snippets of the hash; a 100-year
+// at once, back to the tree (Cancel stays put while the progress text changes); Embed gives the <niwa-ivy> and iframe snippets of the hash; a 100-year
 // tree stops at the page budget with the tree's line as a notice (issue 16).
 // Screenshots: build/artifacts/ivy-tree-*.png.
 import { execFileSync } from 'node:child_process';
@@ -115,6 +115,18 @@ await runBrowserTest(async (server, browser) => {
     window.__texts = [];
     new MutationObserver(() => window.__texts.push(document.getElementById('progress').textContent))
       .observe(document.getElementById('progress'), { childList: true, characterData: true, subtree: true });
+    // Where Cancel is drawn, each frame it shows (it sat after the progress text and jumped with
+    // it, so a click could land where it had been: the CI failure of stop 26).
+    window.__cancelAt = [];
+    const look = () => {
+      const b = document.getElementById('cancel');
+      if (!b.hidden) {
+        const r = b.getBoundingClientRect(), at = `${Math.round(r.x)},${Math.round(r.y)}`;
+        if (!window.__cancelAt.includes(at)) window.__cancelAt.push(at);
+      }
+      requestAnimationFrame(look);
+    };
+    requestAnimationFrame(look);
   });
   let t0 = Date.now();
   await page.setInputFiles('#mesh-file', big);
@@ -126,6 +138,8 @@ await runBrowserTest(async (server, browser) => {
   check('progress names the read, the BVH and the growth steps', texts.some((t) => t.startsWith('reading the mesh')) &&
     texts.some((t) => t.startsWith('building the BVH of 1,002,528 triangles')) && texts.some((t) => /^growing: step \d+ of 50$/.test(t)),
   [...new Set(texts)].slice(0, 8).join(' | '));
+  const cancelAt = await page.evaluate(() => window.__cancelAt);
+  check('Cancel stays put while the progress line changes', cancelAt.length === 1, `at ${cancelAt.join(' ')} over ${new Set(texts).size} progress texts`);
   check('progress stages in order', /mesh,read,bvh.*grow/.test(data.progressStages), data.progressStages);
   await saveCanvasPng(page, 'ivy-tree-wall-1m.png');
 
