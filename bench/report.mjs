@@ -170,6 +170,26 @@ for (const kind of ['closest', 'segment']) {
   if (bvh !== undefined && linear !== undefined)
     goal(`geom/${kind}: BVH ≥ 100× brute force at 262 k triangles (native)`, `${(linear / bvh).toFixed(0)}×`, linear >= 100 * bvh);
 }
+// Ivy (paper 004, issue 18 item 6): cubes4's 50 steps ≤ 1 ms natively (≤ 10 ms with the .glb), WASM
+// ≤ 2× native, the per-step cost at 4 M triangles ≤ 3× that at 4 k, the BVH ≥ 100× brute force at
+// 262 k triangles. The cold row (scene, BVH and 50 steps timed once in a fresh process, under a
+// millisecond) is shown beside the warm ones, with its ratio, as a figure rather than a goal.
+{
+  const c = ms(native, 'ivy/cubes4-50'), cg = ms(native, 'ivy/cubes4-50-glb');
+  if (c !== undefined) goal('ivy/cubes4-50: 50 steps ≤ 1 ms (native)', `${fmt(c)} ms`, c <= 1);
+  if (cg !== undefined) goal('ivy/cubes4-50-glb: 50 steps and the .glb ≤ 10 ms (native)', `${fmt(cg)} ms`, cg <= 10);
+  for (const name of names.filter((n) => n.startsWith('ivy/') && !n.includes('-linear'))) {
+    const n = ms(native, name), w = ms(wasm, name), cold = name.endsWith('-cold');
+    if (n !== undefined && w !== undefined)
+      goal(`${name}: WASM ≤ 2× native${cold ? ' (cold: once in a fresh process; a figure, not a goal)' : ''}`, `${(w / n).toFixed(2)}×`, cold ? undefined : w <= 2 * n);
+  }
+  const small = perUnit(native.get('ivy/wall/4k')), large = perUnit(native.get('ivy/wall/4m'));
+  if (small !== undefined && large !== undefined)
+    goal('ivy/wall: per-step time grows ≤ 3× from 4 k to 4 M triangles (native)', `${(small / 1e3).toFixed(1)} → ${(large / 1e3).toFixed(1)} µs: ${(large / small).toFixed(2)}×`, large <= 3 * small);
+  const bvh = perUnit(native.get('ivy/wall/262k-10')), linear = perUnit(native.get('ivy/wall-linear/262k-10'));
+  if (bvh !== undefined && linear !== undefined)
+    goal('ivy/wall: BVH ≥ 100× --accel linear at 262 k triangles (native, per step)', `${(linear / bvh).toFixed(0)}×`, linear >= 100 * bvh);
+}
 // Terrain (paper 002, issue 19 item 7): the 500-point seed grows in ≤ 30 ms natively, ≤ 2.3× per
 // doubling of seed points, the heightfield ≤ 60 ns per cell (1024² in ≤ 65 ms), WASM ≤ 2× native,
 // and the page's regrow of a drawn seed with a 512² surface ≤ 100 ms (bench/terrain_page.mjs).
