@@ -8,16 +8,37 @@ export const BACKGROUND = [0.86, 0.90, 0.94];
 export function createContext(canvas, what = 'the scene') {
   const gl = canvas.getContext('webgl2', { antialias: true, preserveDrawingBuffer: true, alpha: false });
   if (!gl) throw new Error(`WebGL2 is not available in this browser, so ${what} cannot be drawn.`);
+  clearToBackground(gl);
   return gl;
 }
 
+// Clears the canvas's own drawing buffer to the background, leaving the bound framebuffer and the
+// clear colour as they were. A new or resized drawing buffer is black (alpha: false), and a big
+// frame drawn in parts goes offscreen, so without this the canvas shows black, not the background,
+// until that frame is finished (seconds for a big tree on a CPU GL).
+function clearToBackground(gl) {
+  const framebuffer = gl.getParameter(gl.FRAMEBUFFER_BINDING);
+  const clear = gl.getParameter(gl.COLOR_CLEAR_VALUE);
+  const scissor = gl.isEnabled(gl.SCISSOR_TEST);
+  gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+  gl.disable(gl.SCISSOR_TEST);
+  gl.clearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
+  gl.clear(gl.COLOR_BUFFER_BIT);
+  gl.clearColor(clear[0], clear[1], clear[2], clear[3]);
+  if (scissor) gl.enable(gl.SCISSOR_TEST);
+  gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
+}
+
 // Matches the drawing buffer to the canvas's CSS size (device pixel ratio at most 2) times `scale`
-// (below 1 while a FrameGovernor lowers the cost of moving frames; the browser stretches it).
+// (below 1 while a FrameGovernor lowers the cost of moving frames; the browser stretches it); a
+// resized buffer starts as the background.
 export function resizeCanvas(canvas, scale = 1) {
   const [w, h] = drawingBufferSize(canvas, scale);
   if (canvas.width !== w || canvas.height !== h) {
     canvas.width = w;
     canvas.height = h;
+    const gl = canvas.getContext('webgl2');  // the context the page made (same object)
+    if (gl) clearToBackground(gl);
   }
 }
 
