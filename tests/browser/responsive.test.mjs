@@ -79,9 +79,23 @@ await runBrowserTest(async (server, browser) => {
     await page.goto(`${server.url}#preset=sakura&years=25`);
     await page.waitForFunction(() => document.documentElement.dataset.status === 'growing' && document.querySelector('#params details.group'),
       null, { timeout: TIMEOUT, polling: 50 });
+    // The stats line while the big tree's first frame is drawn in parts (SwiftShader: seconds).
+    await page.evaluate(() => {
+      window.__partialLines = [];
+      new MutationObserver(() => {
+        if (document.documentElement.dataset.framePartial === '1') window.__partialLines.push(document.getElementById('frame-stats').textContent);
+      }).observe(document.documentElement, { attributes: true, attributeFilter: ['data-frame-partial', 'data-frames-drawn'] });
+    });
     let t0 = await now(page);
     let times = await clicksDuring(page, async () => (await hooks(page)).status !== 'ready', { min: 3 });
     await waitReady(page, 0, 100);
+    {
+      const lines = await page.evaluate(() => window.__partialLines);
+      const inParts = lines.filter((l) => / · drawing in parts…$/.test(l));
+      const tris = Math.max(0, ...inParts.map((l) => Number((l.match(/^tris ([\d,]+)/) || [, '0'])[1].replace(/,/g, ''))));
+      check('tree grow: while its first frame is drawn in parts, the stats line says so with the frame\'s triangles',
+        inParts.length > 0 && tris > 1e6, `${lines.length} lines while partial, e.g. '${lines.at(-1) || ''}'`);
+    }
     let tasks = await longTasksSince(page, t0);
     check('tree grow (sakura 25 years): every click answered within 1 s', Math.max(...times) < 1000, summary(times, tasks));
     const grown = await hooks(page);

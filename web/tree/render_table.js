@@ -33,6 +33,14 @@ export class RenderTable {
     if (drawn.mode !== 'hybrid') for (const key of ['draw_calls', 'frame_ms']) this.set('row', key, '');
   }
 
+  // A frame drawn in parts, not finished yet: its size and that it is on its way (the line would
+  // otherwise show the last finished frame's, e.g. the ground alone before a big tree's first frame).
+  showPartial(drawn) {
+    this.frameLine.textContent = `tris ${Math.round(drawn.triangles).toLocaleString('en-US')} · draw calls ${drawn.drawCalls}`
+      + ' · drawing in parts…';
+    this.frameLine.title = 'This frame is too big for one animation frame: it is drawn over several and shown when finished';
+  }
+
   // The full-polygon column from the worker's mesh (ArrayBuffers; 12 bytes per triangle).
   showFullCounts(mesh) {
     const tris = (part) => (part ? part.indices.byteLength / 12 : 0);

@@ -143,6 +143,7 @@ const frames = new FrameLoop(() => {
   setHooks({ frameScale: renderer.scale, frameMode: drawn.mode, framesDrawn: frames.stats.drawn,
     framesSkipped: frames.stats.skippedBusy, frameGpuMs: Math.round(frames.stats.gpuMs), framePartial: drawn.partial ? 1 : 0 });
   if (drawn.partial) {
+    if (drawn.mode !== 'motion') table.showPartial(drawn);
     frames.request();  // the rest of this frame
     return true;
   }
