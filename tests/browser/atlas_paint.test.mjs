@@ -3,14 +3,11 @@
 // out leaves and blossoms, bark colour from the worker's maps. A small synthetic atlas (three parts,
 // a quad each, uvs over a textured disc) in Chromium's WebGL2, painted three ways.
 // Run: node tests/browser/atlas_paint.test.mjs (no build needed: it loads web/ and shaders/ only).
-import { check, launchChromium, newContext, runBrowserTest, TIMEOUT } from './harness.mjs';
+import { check, modulePage, runBrowserTest } from './harness.mjs';
 
 await runBrowserTest(async (server, browser) => {
-  const context = await newContext(browser);
-  const page = await context.newPage();
-  const errors = [];
-  page.on('pageerror', (e) => errors.push(String(e)));
-  await page.goto(`${server.url}embed.html`, { timeout: TIMEOUT });
+  const problems = [];
+  const page = await modulePage(server, browser, problems);
   const result = await page.evaluate(async () => {
     const { Renderer, createAtlasTarget, paintAtlas, paintAtlasInParts } = await import('/web/tree/tree_renderer.js');
     const { imageTexture } = await import('/web/gl/textures.js');
@@ -70,6 +67,5 @@ await runBrowserTest(async (server, browser) => {
     `${result.differ} of ${result.texels} texels differ; ${result.painted} triangles painted in parts; ${result.covered} texels covered`);
   check('the textures show: cut-out corners and texture colours, unlike the plain-colour atlas',
     result.holes > 100 && result.plainDiffer > 1000, `${result.holes} texels cut out, ${result.plainDiffer} differ from the plain atlas`);
-  check('no GL error and no page error', result.error === 0 && errors.length === 0, `gl error ${result.error}; ${errors.join(' | ')}`);
-  await context.close();
+  check('no GL error and no page error', result.error === 0 && problems.length === 0, `gl error ${result.error}; ${problems.join(' | ')}`);
 });

@@ -3,14 +3,11 @@
 // WebGL drawing buffer is black (alpha: false), and a frame in parts is shown only when finished, so
 // a big tree's first frame used to leave the canvas black for seconds on a CPU GL.
 // Run: node tests/browser/canvas_background.test.mjs (no build needed: it loads web/ only).
-import { check, newContext, runBrowserTest, TIMEOUT } from './harness.mjs';
+import { check, modulePage, runBrowserTest } from './harness.mjs';
 
 await runBrowserTest(async (server, browser) => {
-  const context = await newContext(browser);
-  const page = await context.newPage();
-  const errors = [];
-  page.on('pageerror', (e) => errors.push(String(e)));
-  await page.goto(`${server.url}embed.html`, { timeout: TIMEOUT });
+  const problems = [];
+  const page = await modulePage(server, browser, problems);
   const r = await page.evaluate(async () => {
     const { BACKGROUND, createContext, resizeCanvas } = await import('/web/gl/context.js');
     const { ProgressiveFrame } = await import('/web/gl/progressive_frame.js');
@@ -52,5 +49,5 @@ await runBrowserTest(async (server, browser) => {
     `framebuffer kept ${r.keptFramebuffer}, clear ${r.keptClear}`);
   check('while a big frame is drawn in parts offscreen, the resized canvas shows the background', r.offscreen && same(r.inParts),
     `offscreen ${r.offscreen}, canvas ${r.inParts}`);
-  check('no page errors', errors.length === 0, errors.join(' | '));
+  check('no page errors', problems.length === 0, problems.join(' | '));
 });

@@ -51,6 +51,15 @@ export function watchPage(page, problems) {
   return page;
 }
 
+// A page of the app's origin (embed.html, nothing grown) on which a test imports web/ modules and
+// drives them itself, watched by watchPage into `problems`.
+export async function modulePage(server, browser, problems) {
+  const context = await newContext(browser);
+  const page = watchPage(await context.newPage(), problems);
+  await page.goto(`${server.url}embed.html`, { timeout: TIMEOUT });
+  return page;
+}
+
 // Grove page: waits until it has drawn `mode` with everything it needs (all trees; in hybrid mode a
 // frame drawn with the draw lists of a view newer than viewSerialAbove: the lists arrive before the
 // frame that draws them, and a snapshot in between shows the previous lists), or shows an error.
