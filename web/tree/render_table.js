@@ -5,6 +5,9 @@
 import { FrameTimes } from '../shell/study_page.js';
 import { bumpHook, setHooks } from '../shell/test_hooks.js';
 
+// What a frame draws, as the stats line says it: "tris N · draw calls M".
+const frameSize = (drawn) => `tris ${Math.round(drawn.triangles).toLocaleString('en-US')} · draw calls ${drawn.drawCalls}`;
+
 export class RenderTable {
   // table: the <table> with data-row / data-full cells; column: the header cell of the view
   // column; frameLine: the element of the frame-cost line.
@@ -24,8 +27,7 @@ export class RenderTable {
   // A frame drawn ({triangles, drawCalls, cpuMs, mode}, as Renderer.render returns it).
   showFrame(drawn) {
     const avg = this.times.push(drawn.cpuMs);
-    this.frameLine.textContent = `tris ${Math.round(drawn.triangles).toLocaleString('en-US')} · draw calls ${drawn.drawCalls}`
-      + ` · frame ${avg.toFixed(1)} ms CPU`;
+    this.frameLine.textContent = `${frameSize(drawn)} · frame ${avg.toFixed(1)} ms CPU`;
     this.frameLine.title = `CPU time of the render call, mean of the last ${this.times.count} frames drawn (GPU time is not measured)`;
     const column = drawn.mode === 'hybrid' ? 'row' : 'full';
     this.set(column, 'draw_calls', drawn.drawCalls);
@@ -36,8 +38,7 @@ export class RenderTable {
   // A frame drawn in parts, not finished yet: its size and that it is on its way (the line would
   // otherwise show the last finished frame's, e.g. the ground alone before a big tree's first frame).
   showPartial(drawn) {
-    this.frameLine.textContent = `tris ${Math.round(drawn.triangles).toLocaleString('en-US')} · draw calls ${drawn.drawCalls}`
-      + ' · drawing in parts…';
+    this.frameLine.textContent = `${frameSize(drawn)} · drawing in parts…`;
     this.frameLine.title = 'This frame is too big for one animation frame: it is drawn over several and shown when finished';
   }
 
