@@ -1,5 +1,7 @@
 // Enforces docs/ARCHITECTURE.md's include rules on the sources: studies never include each other,
-// shared parts include no study, and nothing in core/ includes Emscripten, GL or JS.
+// shared parts include no study, nothing in a study or a shared part includes the composition tier
+// (core/compose, which may include studies), nothing in core/ includes Emscripten, GL or JS, and the
+// two front ends (native_cli/, web/bindings/) never include each other.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -25,7 +27,11 @@ const std::map<std::string, std::set<std::string>> kSharedParts = {
     {"image", {"base", "math"}},
     {"io", {"base", "math", "params", "geom", "image"}},
     {"light", {"base", "math", "random", "geom"}},
+    {"run", {"base", "math", "params", "geom", "image", "io"}},
 };
+
+// The composition tier: may include every shared part and study; nothing in core/ includes it.
+const char* const kComposeTier = "compose";
 
 // The tree thesis is one study over three folders: chapter 3 (sway) and chapter 4 (render) stand on
 // chapter 2's tree; the tree knows neither.
@@ -99,7 +105,11 @@ TEST(IncludeRules, StudiesNeverIncludeEachOtherAndSharedPartsIncludeNoStudy) {
     ++project_includes;
     auto shared = kSharedParts.find(from);
     bool allowed;
-    if (shared != kSharedParts.end()) {
+    if (from == kComposeTier) {
+      allowed = true;
+    } else if (to == kComposeTier) {
+      allowed = false;  // no study or shared part includes the composition tier
+    } else if (shared != kSharedParts.end()) {
       allowed = shared->second.count(to) > 0;  // a shared part: only lower shared parts
     } else {
       auto family = kStudyFamilies.find(from);
@@ -117,9 +127,60 @@ TEST(IncludeRules, EveryCoreFolderIsASharedPartOrAStudy) {
   const std::set<std::string> studies = {"tree",    "sway", "render", "ivy",
                                          "terrain", "moss", "bark"};
   for (const std::string& f : CoreFolders(kCore)) {
-    EXPECT_TRUE(kSharedParts.count(f) || studies.count(f))
+    EXPECT_TRUE(kSharedParts.count(f) || studies.count(f) || f == kComposeTier)
         << "core/" << f << " is not in the rules";
   }
+}
+
+// The front ends are adapters over core runs: the CLI never includes the web bindings and the
+// bindings never include the CLI, and a study's front-end file (native_cli/<study>_*.{h,cpp},
+// web/bindings/<study>_*.cpp) reaches core/ through shared parts, its own study (family) and the
+// composition tier only, so a composition (ivy on a tree) is written once, in core/compose.
+TEST(IncludeRules, FrontEndsAreAdaptersOverTheCore) {
+  const fs::path root(NIWA_SOURCE_DIR);
+  const std::regex include_re(R"(^\s*#\s*include\s*[<"]([^>"]+)[>"])");
+  const std::map<std::string, std::set<std::string>> kFamily = {
+      {"tree", {"tree", "sway", "render"}}, {"sway", {"tree", "sway", "render"}},
+      {"render", {"tree", "sway", "render"}}, {"texture", {"tree"}},
+      {"ivy", {"ivy"}}, {"terrain", {"terrain"}}, {"moss", {"moss"}}, {"bark", {"bark"}},
+      {"mesh", {}}};
+  std::set<std::string> core_folders;
+  for (const std::string& f : CoreFolders(kCore)) core_folders.insert(f);
+  int checked = 0, study_checked = 0;
+  for (const std::string folder : {"native_cli", "web/bindings"}) {
+    const bool cli = folder == std::string("native_cli");
+    for (const auto& entry : fs::recursive_directory_iterator(root / folder)) {
+      const std::string ext = entry.path().extension().string();
+      if (!entry.is_regular_file() || (ext != ".h" && ext != ".cpp")) continue;
+      const std::string name = entry.path().filename().string();
+      const auto family = kFamily.find(name.substr(0, name.find('_')));
+      std::ifstream in(entry.path());
+      std::string text;
+      int line_number = 0;
+      while (std::getline(in, text)) {
+        ++line_number;
+        std::smatch m;
+        if (!std::regex_search(text, m, include_re)) continue;
+        ++checked;
+        const std::string target = m[1];
+        const std::string where = folder + "/" + name + ":" + std::to_string(line_number);
+        if (cli) {
+          EXPECT_EQ(target.find("bindings/"), std::string::npos) << where << " includes " << target;
+        } else {
+          EXPECT_EQ(target.find("native_cli/"), std::string::npos) << where << " includes " << target;
+          EXPECT_NE(target, "cli_common.h") << where;
+        }
+        const std::string to = FirstSegment(target);
+        if (family == kFamily.end() || !core_folders.count(to)) continue;
+        ++study_checked;
+        EXPECT_TRUE(kSharedParts.count(to) || family->second.count(to) || to == kComposeTier)
+            << where << " (a " << family->first << " front end) may not include \"" << target
+            << "\": a composition of studies belongs in core/compose";
+      }
+    }
+  }
+  EXPECT_GT(checked, 40);        // the scan saw both front ends' includes
+  EXPECT_GT(study_checked, 30);  // and the study files' core includes
 }
 
 }  // namespace
