@@ -6,7 +6,7 @@
 // recovers; the iframe form grows the ivy page's hash. Screenshots: build/artifacts/embed-ivy*.png.
 import { execFileSync } from 'node:child_process';
 import path from 'node:path';
-import { ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, watchPage } from './harness.mjs';
+import { ARTIFACTS, NATIVE, TIMEOUT, check, hookLog, isConsecutiveRun, newContext, runBrowserTest, watchPage } from './harness.mjs';
 
 const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => k !== 'ms' && !k.startsWith('ms_')));
 const nativeIvy = (args) => withoutMs(JSON.parse(execFileSync(NATIVE, ['ivy', 'grow', ...args, '--stats'], { encoding: 'utf8' }).trim()));
@@ -54,7 +54,12 @@ await runBrowserTest(async (server, browser) => {
 
   // animate: the tree element steps through its growth to the last step without regrowing.
   await page.waitForFunction(() => document.querySelector('#tree').dataset.stepShown === '150', null, { timeout: TIMEOUT });
-  check('animate replays the steps to the last', true, 'step 150 shown');
+  const shown = await hookLog(page, '#tree', 'data-step-shown');
+  const treeGrows = (await hookLog(page, '#tree', 'data-hash')).length;  // set once per grown ivy
+  check('animate replays the steps to the last', isConsecutiveRun(shown, 0, 150) && treeGrows === 1,
+    `${shown.length} steps shown (${shown.slice(0, 3).join(', ')} ... ${shown.slice(-2).join(', ')}), ${treeGrows} grow(s)`);
+  const cubesShown = await hookLog(page, '#cubes', 'data-step-shown');
+  check('without animate the last step is shown at once', cubesShown.length === 1 && cubesShown[0] === '50', cubesShown.join(', '));
   // The tree's ivy is small beside the whole tree (metres, framed on the tree): a lower share.
   for (const [id, least] of [['cubes', 0.005], ['tree', 0.001], ['wall', 0.004]]) {
     const g = await green(page, `#${id}`);

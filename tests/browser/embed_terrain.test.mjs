@@ -8,7 +8,7 @@
 // snippets. Screenshots: build/artifacts/embed-terrain*.png.
 import { execFileSync } from 'node:child_process';
 import path from 'node:path';
-import { ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, watchPage } from './harness.mjs';
+import { ARTIFACTS, NATIVE, TIMEOUT, check, hookLog, newContext, runBrowserTest, watchPage } from './harness.mjs';
 
 const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => k !== 'ms' && !k.startsWith('ms_')));
 const sorted = (o) => JSON.stringify(Object.fromEntries(Object.entries(o).sort(([a], [b]) => (a < b ? -1 : 1))));
@@ -57,7 +57,14 @@ await runBrowserTest(async (server, browser) => {
 
   // animate: the drawn element steps through its levels to the top without regrowing.
   await page.waitForFunction(() => document.querySelector('#drawn').dataset.levelShown === 'all', null, { timeout: TIMEOUT });
-  check('animate replays the levels to the top', true, 'all levels shown');
+  const levels = await hookLog(page, '#drawn', 'data-level-shown');
+  const numbered = levels.slice(0, -1).map(Number);
+  const rising = numbered.length >= 3 && numbered.every((k, i) => Number.isInteger(k) && (i === 0 || k === numbered[i - 1] + 1));
+  const drawnGrows = (await hookLog(page, '#drawn', 'data-hash')).length;  // set once per grown mountain
+  check('animate replays the levels to the top', rising && levels.at(-1) === 'all' && drawnGrows === 1,
+    `${levels.length} levels shown (${levels.slice(0, 3).join(', ')} ... ${levels.slice(-2).join(', ')}), ${drawnGrows} grow(s)`);
+  const valleysShown = await hookLog(page, '#valleys', 'data-level-shown');
+  check('without animate the top is shown at once', valleysShown.length === 1 && valleysShown[0] === 'all', valleysShown.join(', '));
   for (const id of ['valleys', 'drawn', 'jacksboro']) {
     const share = await drawnShare(page, `#${id}`);
     check(`#${id} draws its mountain`, share > 0.1, `${(share * 100).toFixed(1)}% of the canvas`);

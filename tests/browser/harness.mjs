@@ -117,8 +117,29 @@ export async function newContext(browser, options) {
       ctx.drawImage(src, 0, 0);
       return ctx.getImageData(0, 0, c.width, c.height);
     };
+    // Every value each element's data-* hooks took, in order, from the page's first script on:
+    // window.__niwaHookLog['#id data-step-shown'] = ['0', '1', ...] (see hookLog below).
+    window.__niwaHookLog = {};
+    new MutationObserver((records) => {
+      for (const r of records) {
+        const key = `${r.target.id ? `#${r.target.id}` : r.target.tagName.toLowerCase()} ${r.attributeName}`;
+        (window.__niwaHookLog[key] ||= []).push(r.target.getAttribute(r.attributeName));
+      }
+    }).observe(document, { subtree: true, attributes: true, attributeFilter: ['data-step-shown', 'data-level-shown', 'data-status', 'data-hash'] });
   });
   return context;
+}
+
+// The values data-<attribute> of `selector` ('#id', or 'html') took since the page loaded, in
+// order (data-step-shown, data-level-shown, data-status and data-hash are recorded).
+export async function hookLog(page, selector, attribute) {
+  return page.evaluate((key) => window.__niwaHookLog[key] || [], `${selector} ${attribute}`);
+}
+
+// Whether `values` (strings) are the whole numbers first, first + 1, ..., last in order.
+export function isConsecutiveRun(values, first, last) {
+  if (values.length !== last - first + 1) return false;
+  return values.every((v, i) => v === String(first + i));
 }
 
 // Keeps a copy of a canvas's pixels in the page under `name` (selector as in newContext) and

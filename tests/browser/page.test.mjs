@@ -50,7 +50,10 @@ await runBrowserTest(async (server, browser) => {
   await page.goto(server.url, { waitUntil: 'load' });
   check('page title is Niwa', (await page.title()) === 'Niwa');
   await waitReady(page, 0);
-  check('default tree grown', true, `${((Date.now() - t0) / 1000).toFixed(1)} s`);
+  const grown = await page.evaluate(() => ({ serial: Number(document.documentElement.dataset.treeSerial), drawn: document.documentElement.dataset.drawnTreeSerial, stats: document.querySelector('#stats')?.textContent || '' }));
+  const internodes = Number((grown.stats.match(/internodes (\d+)/) || [])[1]);
+  check('default tree grown and drawn', grown.serial > 0 && grown.drawn === String(grown.serial) && internodes > 100,
+    `${internodes} internodes, ${((Date.now() - t0) / 1000).toFixed(1)} s`);
   const preset = await page.inputValue('#preset');
   const years = Number(await page.inputValue('#years'));
   const seed = Number(await page.inputValue('#seed'));

@@ -8,17 +8,16 @@
 // Does not: parse or check states (the core does; its one line is shown beside its field), draw
 // directly (ivy_renderer.js), or grow the tree it climbs (scene 'tree': the worker grows the
 // tree preset's bark, core/tree/bark_support, as the CLI's --tree-preset does).
+import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { ProgressiveLoop } from '../gl/progressive_loop.js';
 import { dracoPrimitiveCount, importMesh, isGlb, parseGlb } from '../mesh/mesh_import.js';
 import { FileDrop, extensionOf } from '../shell/file_drop.js';
-import { FieldErrors } from '../shell/field_errors.js';
-import { HashHistory } from '../shell/hash_history.js';
 import { ParamPanel } from '../shell/param_panel.js';
 import { StepScrubber } from '../shell/step_scrubber.js';
-import { Notices, copyLink, download, mountStudyNav, showEmbedDialog } from '../shell/study_page.js';
+import { StudyController, numberOr } from '../shell/study_controller.js';
+import { Notices, copyLink, mountStudyNav, showEmbedDialog } from '../shell/study_page.js';
 import { bumpHook, setHooks } from '../shell/test_hooks.js';
-import { WorkerClient, restartWorker } from '../shell/worker_client.js';
 import { IvyRenderer } from './ivy_renderer.js';
 
 const $ = (id) => document.getElementById(id);
@@ -38,11 +37,20 @@ mountStudyNav($('studies'), 'ivy');
 // mesh: the dropped mesh (not part of the link); drop: refused files; budget: the page budget's
 // line when it stopped the growth early (docs/budgets.md).
 const notices = new Notices($('notice'), ['webgl', 'error', 'hash', 'mesh', 'drop', 'budget']);
-const worker = new WorkerClient('ivy', {
-  study: 'ivy',
-  onFailure: (text) => {
-    notices.set('error', text);
-    setHooks({ status: 'error' });
+// Errors beside the controls outside the panel (the panel's rows find their own).
+const BASIC_FIELDS = {
+  seed: 'seed-error', steps: 'steps-error', at: 'at-error', seed_points: 'at-error', tree: 'tree-error', tree_years: 'tree-error',
+};
+// The worker, Cancel, updates, history, exports and errors (web/shell/study_controller.js).
+// Progress of the work in the worker (a dropped mesh's read and BVH, the tree, every growth
+// step) shows beside Cancel: the worker is ended at once.
+const controller = new StudyController({
+  study: 'ivy', notices, ui, fields: BASIC_FIELDS, panel: () => panel, state: () => currentState(),
+  onCancel: () => {
+    const text = useMesh ? 'cancelled: the dropped mesh is dropped; back to the last finished ivy' : 'cancelled: back to the last finished ivy';
+    useMesh = false;
+    meshRequest = 0;
+    return text;
   },
   // Cancel restarted the worker: init it again from the last ivy shown (a dropped mesh is gone
   // with the old worker; the last built-in scene or tree comes back). The ivy on screen stays.
@@ -50,27 +58,22 @@ const worker = new WorkerClient('ivy', {
     restarting = true;
     worker.request('init', { hash: lastBuiltIn ? `#${lastBuiltIn}` : '' }, { done: ['ready'] });
   },
+  // A dropped mesh's error is the mesh's notice, not the state's.
+  onError: (msg, when) => {
+    if (when === 'before' && msg.id === meshRequest) {
+      notices.set('mesh', msg.message);
+      ui.progress.textContent = '';
+      controller.showWork(false);
+      setHooks({ status: 'error', meshError: msg.message });
+      return true;
+    }
+    return false;
+  },
 });
+const { worker } = controller;
 let restarting = false;  // the next 'ready' answers a restart (the panel exists already)
 let lastBuiltIn = '';    // the hash of the last ivy grown on a built-in scene or tree
-
-// Progress of the work in the worker (a dropped mesh's read and BVH, the tree, every growth
-// step), with Cancel: the worker is ended at once (web/shell/worker_client.js restartWorker).
 const progressSeen = [];
-function showWork(on) {
-  ui.cancel.hidden = !on;
-  if (!on) ui.progressBar.hidden = true;
-}
-ui.cancel.addEventListener('click', () => {
-  showWork(false);
-  clearTimeout(debounceTimer);
-  ui.progress.textContent = useMesh ? 'cancelled: the dropped mesh is dropped; back to the last finished ivy' : 'cancelled: back to the last finished ivy';
-  useMesh = false;
-  meshRequest = 0;
-  bumpHook('cancels');
-  setHooks({ status: 'cancelled' });
-  restartWorker();
-});
 
 // ---------------------------------------------------------------- rendering
 const camera = new OrbitCamera();
@@ -126,16 +129,8 @@ let support = null;       // the worker's description of the current support
 let seedPoints = [];      // [[x, y, z], ...] in scene units; [] = the scene's first named seed
 let useMesh = false;      // grow on the dropped mesh, not a built-in scene
 let meshName = '';
-let latestId = 0;
-let commitNext = false;   // the next grown state is a new history entry
 let frameNext = true;
-let debounceTimer = 0;
 
-const history_ = new HashHistory({
-  onRestore: () => worker.request('decode', { hash: location.hash }, { done: ['decoded'] }),
-});
-
-const numberOr = (input) => (input.value.trim() !== '' && Number.isFinite(Number(input.value)) ? Number(input.value) : input.value);
 const formatPoint = (p) => p.map((x) => String(Number(x.toPrecision(7)))).join(',');
 
 function currentState() {
@@ -187,34 +182,9 @@ function showSeeds() {
 }
 
 // Sends the state to grow; commit: a new history entry once it has grown.
-function sendUpdate(commit) {
-  clearTimeout(debounceTimer);
-  commitNext = commitNext || commit;
-  setHooks({ status: 'growing' });
-  const request = worker.request('update', { state: currentState(), useMesh }, { group: 'ivy', done: ['ivy'] });
-  latestId = request.id;
-  showWork(true);
-  bumpHook('growRequests');
-  return request;
-}
-
-function scheduleUpdate() {
-  notices.set('hash', []);
-  clearTimeout(debounceTimer);
-  setHooks({ status: 'pending' });
-  debounceTimer = setTimeout(() => sendUpdate(true), 250);
-}
-
-// ---------------------------------------------------------------- errors beside their fields
-const BASIC_FIELDS = {
-  seed: 'seed-error', steps: 'steps-error', at: 'at-error', seed_points: 'at-error', tree: 'tree-error', tree_years: 'tree-error',
-};
-
-const fieldErrors = new FieldErrors(BASIC_FIELDS, () => panel);
-// Shows `message` (a core error line "key: ...") beside its field, clearing every other one.
-function showFieldError(message) {
-  fieldErrors.show(message);
-}
+const sendUpdate = (commit) => controller.update(commit, { useMesh }, { done: ['ivy'] });
+// An edit of a control (stage 'grow') or a panel row (its stage): one update after a quiet moment.
+const scheduleUpdate = (stage = 'grow') => controller.schedule(() => sendUpdate(true), stage);
 
 // ---------------------------------------------------------------- worker replies
 worker.on('ready', (msg) => {
@@ -234,7 +204,7 @@ worker.on('ready', (msg) => {
   for (const s of scenes) ui.scene.append(new Option(`${s.name} (${s.triangles} tris)`, s.name));
   ui.scene.append(new Option('tree (a Niwa tree)', 'tree'));
   for (const t of trees) ui.tree.append(new Option(t.title ? `${t.name} (${t.title})` : t.name, t.name));
-  panel = new ParamPanel(ui.params, msg.paramTable, () => scheduleUpdate());
+  panel = new ParamPanel(ui.params, msg.paramTable, (spec, stage) => scheduleUpdate(stage));
   applyState(msg.decoded.state);
   if (!msg.decoded.state.scene) ui.scene.value = 'cubes4';
   notices.set('hash', msg.decoded.notices);
@@ -252,7 +222,7 @@ worker.on('progress', (msg) => {
   const fraction = msg.stage === 'grow' && msg.total > 0 ? msg.done / msg.total : null;
   ui.progressBar.hidden = fraction === null;
   if (fraction !== null) ui.progressBar.value = fraction;
-  showWork(true);
+  controller.showWork(true);
   if (progressSeen.at(-1) !== msg.stage) progressSeen.push(msg.stage);
   setHooks({ progressStages: progressSeen.slice(-12).join(','), progressText: msg.text });
   bumpHook('progressMessages');
@@ -306,16 +276,15 @@ worker.on('ivy', (msg) => {
     leafTexture = msg.leafTexture;
     renderer?.setLeafTexture(leafTexture);
   }
-  if (msg.id !== latestId) return;
+  if (!controller.isLatest(msg)) return;
   const s = msg.stats;
   notices.set('error', '');
   // The tree support's own stop (scene=tree grown within the page budget), then the ivy's.
   // And the statistics' overlap sweep left out when its exact estimate does not fit (ivy_bindings).
   notices.set('budget', [s.tree_truncated_by, s.truncated_by, s.overlap_skipped_by].filter(Boolean).join(' '));
-  showFieldError('');
-  showWork(false);
+  controller.showFieldError('');
+  controller.showWork(false);
   ui.progress.textContent = '';
-  showWork(false);
   ui.stats.textContent = `internodes ${s.internodes} · leaves ${s.leaves} · laterals ${s.laterals} · buds A ${s.buds.A} D ${s.buds.D} Z ${s.buds.Z} · grown in ${s.ms.toFixed(1)} ms`;
   const serial = ivySerial + 1;
   if (renderer) {
@@ -332,12 +301,7 @@ worker.on('ivy', (msg) => {
   }
   scrubber.reset(msg.steps);
   if (!support?.dropped) lastBuiltIn = msg.hash;
-  if (commitNext) history_.commit(msg.hash, `#${msg.hash}`);
-  else {
-    history_.base = msg.hash;
-    history_.replace(`#${msg.hash}`);
-  }
-  commitNext = false;
+  controller.grown(msg.hash);
   ivySerial += 1;
   setHooks({
     status: 'ready', error: '', meshError: '', ivySerial, internodes: s.internodes, leaves: s.leaves, laterals: s.laterals,
@@ -361,35 +325,7 @@ worker.on('picked', (msg) => {
   scheduleUpdate();
 });
 
-const exportIds = new Set();
-worker.on('export', (msg) => {
-  if (!exportIds.delete(msg.id)) return;
-  const type = { glb: 'model/gltf-binary', json: 'application/json', lsys: 'text/plain' }[msg.format];
-  download(new Blob([msg.bytes], { type }), `ivy.${msg.format}`, ui.shareStatus);
-  setHooks({ exported: `${msg.format}:${msg.bytes.byteLength}` });
-});
-
 let meshRequest = 0;
-worker.on('error', (msg) => {
-  if (exportIds.delete(msg.id)) {
-    ui.shareStatus.textContent = `Export failed: ${msg.message}`;
-    return;
-  }
-  if (msg.id === meshRequest) {
-    notices.set('mesh', msg.message);
-    ui.progress.textContent = '';
-    showWork(false);
-    setHooks({ status: 'error', meshError: msg.message });
-    return;
-  }
-  if (msg.id !== undefined && msg.id !== latestId) return;
-  showWork(false);
-  notices.set('error', msg.message);
-  showFieldError(msg.message);
-  ui.progress.textContent = '';
-  showWork(false);
-  setHooks({ status: 'error', error: msg.message });
-});
 
 // ---------------------------------------------------------------- dropped meshes
 let dracoModule = null;
@@ -508,10 +444,8 @@ ui.copyLink.addEventListener('click', () => copyLink(ui.shareStatus));
 ui.embed.addEventListener('click', () => {
   showEmbedDialog({ tag: 'niwa-ivy', title: 'Niwa ivy', heading: 'Embed this ivy', script: 'niwa-ivy.js', frame: 'embed.html?study=ivy' });
 });
-const exportAs = (format) => {
-  const { id } = worker.request('export', { format, withSupport: ui.glbSupport.checked }, { group: `export-${format}`, done: ['export'] });
-  exportIds.add(id);
-};
+const TYPES = { glb: 'model/gltf-binary', json: 'application/json', lsys: 'text/plain' };
+const exportAs = (format) => controller.exportAs(format, `ivy.${format}`, TYPES[format], { withSupport: ui.glbSupport.checked });
 ui.downloadGlb.addEventListener('click', () => exportAs('glb'));
 ui.downloadJson.addEventListener('click', () => exportAs('json'));
 ui.downloadLsys.addEventListener('click', () => exportAs('lsys'));

@@ -1,4 +1,4 @@
-// A study page's core error lines ("key: ...") shown beside the field they name: a basic field's
+// A study page's core errors ({field, message} records) shown beside the field they name: a basic field's
 // own error element (by id), or a line added to the parameter panel's row of input `param-KEY`;
 // showing one clears every other, and the panel marks the row. Used by the ivy and terrain pages;
 // the tree page's edit feedback shares its error lines.
@@ -37,16 +37,19 @@ export class FieldErrors {
     return row ? errorLineIn(row) : null;
   }
 
-  // Shows `message` beside its field ("" clears them all); the test hooks learn the key.
-  show(message) {
+  // Shows an error beside its field (a falsy one clears them all); the test hooks learn the key.
+  // `error`: the worker's error reply or an error record {field, message} (the core's Status at
+  // the boundary: field is a state key, maybe prefixed on a composed page; message its one line).
+  show(error) {
     for (const line of document.querySelectorAll('.field-error')) {
       line.hidden = true;
       line.textContent = '';
     }
-    this.panel()?.markError(message || '');
-    if (!message) return;
-    const key = /^([A-Za-z_][A-Za-z_0-9]*):/.exec(message)?.[1];
-    const line = key ? this.#line(key) : null;
+    const key = error && typeof error === 'object' ? error.field || '' : '';
+    const message = error && typeof error === 'object' ? String(error.message || '') : '';
+    this.panel()?.markError(key, message);
+    if (!key) return;
+    const line = this.#line(key);
     if (!line) return;
     line.textContent = message;
     line.hidden = false;

@@ -124,11 +124,8 @@ export class ParamPanel {
     return out;
   }
 
-  // Marks the field named at the start of a core error line ("alpha_t must be ...").
-  markError(message) {
-    for (const [key, field] of this.fields) {
-      const bad = typeof message === 'string' && (message.startsWith(`${key}:`) || message.startsWith(`${key} `));
-      field.setInvalid(bad);
-    }
+  // Marks the row of state field `field` (a core error's field; '' clears every mark).
+  markError(field) {
+    for (const [key, row] of this.fields) row.setInvalid(key === field);
   }
 }

@@ -8,16 +8,15 @@
 // (<niwa-terrain>). Growth runs in the worker (terrain_handler.js).
 // Does not: parse or check states or contours (the core does; its one line is shown beside its
 // field), or draw directly.
+import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { ProgressiveLoop } from '../gl/progressive_loop.js';
 import { FileDrop } from '../shell/file_drop.js';
-import { FieldErrors } from '../shell/field_errors.js';
-import { HashHistory } from '../shell/hash_history.js';
 import { ParamPanel } from '../shell/param_panel.js';
 import { StepScrubber } from '../shell/step_scrubber.js';
-import { Notices, copyLink, download, mountStudyNav, showEmbedDialog } from '../shell/study_page.js';
+import { StudyController, numberOr } from '../shell/study_controller.js';
+import { Notices, copyLink, mountStudyNav, showEmbedDialog } from '../shell/study_page.js';
 import { bumpHook, setHooks } from '../shell/test_hooks.js';
-import { WorkerClient, restartWorker } from '../shell/worker_client.js';
 import { gridIndices } from './grid_indices.js';
 import { PlanView } from './plan_view.js';
 import { TerrainRenderer } from './terrain_renderer.js';
@@ -28,39 +27,34 @@ const ui = {
   builtinHelp: $('builtin-help'), preset: $('preset'), presetHelp: $('preset-help'), rngSeed: $('rng-seed'),
   reset: $('reset'), showContours: $('show-contours'), showTint: $('show-tint'), resetView: $('reset-view'),
   copyLink: $('copy-link'), shareStatus: $('share-status'), params: $('params'), play: $('play'), level: $('level'),
-  levelText: $('level-text'),
+  levelText: $('level-text'), cancel: $('cancel'),
 };
 mountStudyNav($('studies'), 'terrain');
 
 // webgl: drawing problems; error: the core's line for the current state; hash: decoding notices;
 // budget: the page budget's line when it stopped the growth early (docs/budgets.md).
 const notices = new Notices($('notice'), ['webgl', 'error', 'hash', 'budget']);
-const worker = new WorkerClient('terrain', {
-  study: 'terrain',
-  onFailure: (text) => {
-    notices.set('error', text);
-    setHooks({ status: 'error' });
-  },
+// Errors beside the controls outside the panel (the panel's rows find their own).
+const BASIC_FIELDS = { builtin: 'builtin-error', preset: 'preset-error', seed: 'rng-seed-error', contour: 'contour-error' };
+// The worker, Cancel (issue 16: whatever the worker is doing, a grow or an export, ends now),
+// updates, history, exports and errors (web/shell/study_controller.js).
+const controller = new StudyController({
+  study: 'terrain', notices, ui, fields: BASIC_FIELDS, panel: () => panel, state: () => currentState(false),
+  onCancel: () => 'cancelled: back to the last finished mountain',
   // Cancel restarted the worker: init it again, then grow the last finished state (or the
   // opening mountain when none finished yet); the mountain on screen stays until then.
   onRestart: () => {
     restarting = true;
     worker.request('init', { hash: '' }, { done: ['ready'] });
   },
+  onError: (msg, when) => {
+    if (when === 'after') ui.rngSeed.setAttribute('aria-invalid', msg.field === 'seed' ? 'true' : 'false');
+    return false;
+  },
 });
+const { worker } = controller;
 let restarting = false;  // the next 'ready' answers a restart (the panel exists already)
 let lastGoodHash = null; // the hash of the last mountain shown
-
-// Cancel (issue 16): whatever the worker is doing (a grow, an export) ends now.
-const cancelButton = $('cancel');
-const showCancel = (on) => { cancelButton.hidden = !on; };
-cancelButton.addEventListener('click', () => {
-  showCancel(false);
-  clearTimeout(debounceTimer);
-  ui.progress.textContent = 'cancelled: back to the last finished mountain';
-  bumpHook('cancels');
-  restartWorker();
-});
 
 // The opening mountain when the link holds no seed: a result without input.
 const OPENING = { preset: 'improved', builtin: 'lobes7' };
@@ -119,16 +113,7 @@ let panel = null;
 let presets = [];
 let seeds = [];
 let drawnContour = null;  // [[x, y], ...] in metres when the seed is a drawing, else null
-let latestId = 0;
-let commitNext = false;
 let frameNext = true;
-let debounceTimer = 0;
-
-const history_ = new HashHistory({
-  onRestore: () => worker.request('decode', { hash: location.hash }, { done: ['decoded'] }),
-});
-
-const numberOr = (input) => (input.value.trim() !== '' && Number.isFinite(Number(input.value)) ? Number(input.value) : input.value);
 
 // The 3-D view's framing of a mountain: from higher than the tree pages' default angle, so the
 // contours are seen from above, and closer (the box is flat: its bounding sphere overstates it).
@@ -176,33 +161,16 @@ function showHelp() {
 
 // Sends the state to grow; commit: a new history entry once it has grown.
 // repair: the contour is a fresh drawing (the worker makes a self-crossing one simple first).
-function sendUpdate(commit, reset = false, repair = false) {
-  clearTimeout(debounceTimer);
-  commitNext = commitNext || commit;
-  setHooks({ status: 'growing' });
-  // statsAfter: the mountain comes first and its stats at once after it ('terrainStats').
-  const request = worker.request('update', { state: currentState(reset), repair, statsAfter: true }, { group: 'terrain', done: ['terrainStats'] });
-  latestId = request.id;
-  showCancel(true);
-  bumpHook('growRequests');
-  return request;
-}
+// statsAfter: the mountain comes first and its stats at once after it ('terrainStats').
+const sendUpdate = (commit, reset = false, repair = false) =>
+  controller.update(commit, { state: currentState(reset), repair, statsAfter: true }, { done: ['terrainStats'] });
+// An edit of a control (stage 'grow') or a panel row (its stage): one update after a quiet moment.
+const scheduleUpdate = (stage = 'grow') => controller.schedule(() => sendUpdate(true), stage);
 
-function scheduleUpdate() {
-  notices.set('hash', []);
-  clearTimeout(debounceTimer);
-  setHooks({ status: 'pending' });
-  debounceTimer = setTimeout(() => sendUpdate(true), 250);
-}
-
-// ---------------------------------------------------------------- errors beside their fields
-const BASIC_FIELDS = { builtin: 'builtin-error', preset: 'preset-error', seed: 'rng-seed-error', contour: 'contour-error' };
-
-const fieldErrors = new FieldErrors(BASIC_FIELDS, () => panel);
-// Shows `message` (a core error line "key: ...") beside its field, clearing every other one.
-function showFieldError(message) {
-  ui.rngSeed.setAttribute('aria-invalid', message?.startsWith('seed:') ? 'true' : 'false');
-  fieldErrors.show(message);
+// A core error record {field, message} beside its field ('' clears); the RNG seed box is marked too.
+function showFieldError(error) {
+  ui.rngSeed.setAttribute('aria-invalid', error?.field === 'seed' ? 'true' : 'false');
+  controller.showFieldError(error);
 }
 
 // ---------------------------------------------------------------- the drawn seed contour
@@ -212,7 +180,7 @@ const MIN_DRAWN_PX = 20, MIN_DRAWN_POINTS = 8;
 const plan = new PlanView(ui.plan, (points, pixels) => {
   bumpHook('contourDrawings');
   if (pixels.points < MIN_DRAWN_POINTS || Math.min(pixels.width, pixels.height) < MIN_DRAWN_PX) {
-    showFieldError(`contour: the drawing is too small (${pixels.points} points, ${Math.round(pixels.width)} x ${Math.round(pixels.height)} px); must be a closed loop at least ${MIN_DRAWN_PX} px across with ${MIN_DRAWN_POINTS}+ points`);
+    showFieldError({ field: 'contour', message: `contour: the drawing is too small (${pixels.points} points, ${Math.round(pixels.width)} x ${Math.round(pixels.height)} px); must be a closed loop at least ${MIN_DRAWN_PX} px across with ${MIN_DRAWN_POINTS}+ points` });
     setHooks({ contourNotice: 'small' });
     return;
   }
@@ -237,7 +205,7 @@ const takeSeed = (points) => {
 async function importContourFile(file) {
   bumpHook('contourImports');
   if (file.size > MAX_CONTOUR_FILE_BYTES) {
-    showFieldError(`contour: ${String(file.name).slice(0, 60)} is ${file.size} bytes; must be at most ${MAX_CONTOUR_FILE_BYTES} bytes`);
+    showFieldError({ field: 'contour', message: `contour: ${String(file.name).slice(0, 60)} is ${file.size} bytes; must be at most ${MAX_CONTOUR_FILE_BYTES} bytes` });
     setHooks({ contourNotice: 'file' });
     return;
   }
@@ -246,7 +214,7 @@ async function importContourFile(file) {
   const msg = await reply;
   if (!msg) return;  // superseded, or the worker restarted
   if (msg.error || msg.type === 'error') {
-    showFieldError(msg.error || msg.message);
+    showFieldError(msg.error || msg);
     setHooks({ contourNotice: 'file' });
     return;
   }
@@ -257,7 +225,7 @@ new FileDrop({
   target: ui.plan, input: $('contour-file'), accept: ['.json', '.geojson'], what: 'contour file',
   onFiles: (files) => importContourFile(files[0]),
   onRefuse: (line) => {
-    showFieldError(`contour: ${line}`);
+    showFieldError({ field: 'contour', message: `contour: ${line}` });
     setHooks({ contourNotice: 'file' });
   },
 });
@@ -276,9 +244,9 @@ worker.on('ready', (msg) => {
   for (const p of presets) ui.preset.append(new Option(p.name, p.name));
   for (const s of seeds) ui.builtin.append(new Option(s.name, s.name));
   // The RNG seed box above and the panel's seed row are one value.
-  panel = new ParamPanel(ui.params, msg.paramTable, (spec) => {
+  panel = new ParamPanel(ui.params, msg.paramTable, (spec, stage) => {
     if (spec.key === 'seed') ui.rngSeed.value = String(panel.values().seed);
-    scheduleUpdate();
+    scheduleUpdate(stage);
   });
   const hash = location.hash.replace(/^#/, '');
   applyState(msg.decoded.state);
@@ -306,7 +274,7 @@ worker.on('progress', (msg) => {
 // The mountain (its stats null: they follow in 'terrainStats', web/worker/terrain_handler.js).
 let shownMountain = null;  // {id, msg} of the mountain on screen until its stats arrive
 worker.on('terrain', (msg) => {
-  if (msg.id !== latestId) return;
+  if (!controller.isLatest(msg)) return;
   notices.set('error', '');
   showFieldError('');
   lastGoodHash = msg.hash;
@@ -339,12 +307,7 @@ worker.on('terrain', (msg) => {
       requestFrame();
     });
   }
-  if (commitNext) history_.commit(msg.hash, `#${msg.hash}`);
-  else {
-    history_.base = msg.hash;
-    history_.replace(`#${msg.hash}`);
-  }
-  commitNext = false;
+  controller.grown(msg.hash);
   scrubber.reset(levels.max - levels.min);
   terrainSerial += 1;
   shownMountain = { id: msg.id, msg };
@@ -353,11 +316,11 @@ worker.on('terrain', (msg) => {
 
 // The stats of the mountain just shown: the line under the view and the page's hooks.
 worker.on('terrainStats', (reply) => {
-  if (reply.id !== latestId || !shownMountain || shownMountain.id !== reply.id) return;
+  if (!controller.isLatest(reply) || !shownMountain || shownMountain.id !== reply.id) return;
   const { msg } = shownMountain;
   const s = reply.stats;
   notices.set('budget', s.truncated_by || '');
-  showCancel(false);
+  controller.showWork(false);
   ui.progress.textContent = '';
   ui.stats.textContent = `${s.method} · ${s.levels} levels · ${s.contours} contours · ${s.peaks} peak${s.peaks === 1 ? '' : 's'} · relief ${s.relief.toFixed(1)} m · HI ${s.hypsometric_integral.toFixed(3)} · ${s.res} cells across · ${msg.wallMs.toFixed(0)} ms`;
   setHooks({
@@ -368,28 +331,7 @@ worker.on('terrainStats', (reply) => {
   });
 });
 
-const exportIds = new Map();  // id -> file name
 const TYPES = { glb: 'model/gltf-binary', heightmap: 'image/png', sidecar: 'application/json', json: 'application/json', geojson: 'application/geo+json', svg: 'image/svg+xml' };
-worker.on('export', (msg) => {
-  const name = exportIds.get(msg.id);
-  if (!name) return;
-  exportIds.delete(msg.id);
-  download(new Blob([msg.bytes], { type: TYPES[msg.format] }), name, ui.shareStatus);
-  setHooks({ exported: `${msg.format}:${msg.bytes.byteLength}` });
-});
-
-worker.on('error', (msg) => {
-  if (exportIds.delete(msg.id)) {
-    ui.shareStatus.textContent = `Export failed: ${msg.message}`;
-    return;
-  }
-  if (msg.id !== undefined && msg.id !== latestId) return;
-  showCancel(false);
-  notices.set('error', msg.message);
-  showFieldError(msg.message);
-  ui.progress.textContent = '';
-  setHooks({ status: 'error', error: msg.message });
-});
 
 // ---------------------------------------------------------------- controls
 ui.builtin.addEventListener('change', () => {
@@ -428,10 +370,7 @@ $('embed').addEventListener('click', () => {
   showEmbedDialog({ tag: 'niwa-terrain', title: 'Niwa terrain', heading: 'Embed this mountain', script: 'niwa-terrain.js',
     frame: 'embed.html?study=terrain' });
 });
-const exportAs = (format, name) => {
-  const { id } = worker.request('export', { format }, { group: `export-${format}`, done: ['export'] });
-  exportIds.set(id, name);
-};
+const exportAs = (format, name) => controller.exportAs(format, name, TYPES[format]);
 $('download-glb').addEventListener('click', () => exportAs('glb', 'terrain.glb'));
 $('download-heightmap').addEventListener('click', () => {
   exportAs('heightmap', 'terrain-heightmap.png');

@@ -4,6 +4,7 @@
 // sway; a render row rebuilds the hybrid view, all on the tree already grown) and draws each tree
 // with WebGL2. Growth runs in the worker (web/worker/tree_handler.js).
 // Does not: parse or check states (the core does), or draw directly (tree_renderer.js does).
+import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { FrameGovernor } from '../gl/frame_governor.js';
 import { FrameLoop } from '../gl/frame_loop.js';
@@ -615,7 +616,7 @@ worker.on('error', (msg) => {
   if (msg.id !== undefined && msg.id !== latestRequest?.id) return;
   showCancel(false);
   notices.set('error', msg.message);
-  panel?.markError(msg.message);
+  panel?.markError(msg.field || '');
   feedback.showError(msg.message);
   if (treeSerial === 0) feedback.fresh();  // no tree on screen to call stale
   ui.progress.textContent = '';

@@ -131,6 +131,5 @@
  *   -> {type: 'contourFile', name, points?, elevation?, error?}
  * export: format 'glb' | 'heightmap' | 'sidecar' | 'json' | 'geojson' | 'svg'.
  */
-
-// The message types a page may send (the router answers any other with an error).
-export const REQUEST_TYPES = ['init', 'decode', 'update', 'restage', 'wind', 'poseDone', 'view', 'export', 'mesh', 'pick', 'encode', 'stateFile', 'parseContour', 'recycle'];
+// (No list of message types here: each study's handler says which it answers, and the router
+// refuses any other per study; a new study adds messages without touching this file.)

@@ -4,8 +4,6 @@
 // failure with one error envelope. One worker and one WASM instance serve every client on a page.
 // Protocol (init, then update messages; buffers transferred, never copied twice): ./protocol.js.
 // Does not: know any study's messages (web/worker/<study>_handler.js do).
-import { REQUEST_TYPES } from './protocol.js';
-
 const MODULE_URL = new URL('../../wasm/niwa_web.js', import.meta.url).href;
 
 // A study's handler is the module ./<study>_handler.js, loaded on its first message: its
@@ -63,14 +61,14 @@ self.onmessage = async (event) => {
   const client = typeof msg.client === 'string' ? msg.client : 'app';
   const study = typeof msg.study === 'string' ? msg.study : 'tree';
   try {
-    if (!REQUEST_TYPES.includes(msg.type)) throw new Error(`unknown message type '${String(msg.type).slice(0, 40)}'`);
+    if (typeof msg.type !== 'string' || !msg.type) throw new Error(`unknown message type '${String(msg.type).slice(0, 40)}'`);
     const handler = await handlerFor(study);
     if (msg.type === 'init') {
       postMessage({ type: 'ready', id: msg.id, client, study, ...handler.ready(msg) });
       return;
     }
-    const run = handler.messages[msg.type];
-    if (!run) throw new Error(`study '${study}' has no message '${msg.type}'`);
+    const run = Object.hasOwn(handler.messages, msg.type) ? handler.messages[msg.type] : null;
+    if (!run) throw new Error(`study '${study}' has no message '${msg.type.slice(0, 40)}'`);
     if (handler.superseding.includes(msg.type)) latest.set(client, msg.id);
     await run(msg, client);
   } catch (e) {
