@@ -4,6 +4,10 @@
 
 #include <cmath>
 
+#include <cstdio>
+#include <cstdlib>
+
+#include "params/embedded_presets.h"
 #include "params/param_text.h"
 
 namespace niwa {
@@ -79,25 +83,12 @@ std::vector<ParamSpec> Rows() {
 }
 
 struct Preset {
-  const char* name;
+  std::string name;
   std::vector<std::pair<std::string, double>> overrides;
 };
 
-const std::vector<Preset>& Presets() {
-  static const std::vector<Preset> presets = {
-      {"paper", {}},
-      {"literal", {{"kappa", 0}, {"lambda", 1}}},
-      {"improved", {{"max_bend", 60}, {"avoid", 10}, {"candidates", 32}}},
-      {"metric",
-       {{"L", 0.05},
-        {"d", 0.02},
-        {"eps", 0.002},
-        {"r_tip", 0.0015},
-        {"leaf_size", 0.05},
-        {"petiole", 0.02}}},
-  };
-  return presets;
-}
+// core/ivy/presets/ivy_presets.json (embedded; docs/ivy-model.md, Presets), read once.
+const std::vector<Preset>& Presets();
 
 }  // namespace
 
@@ -112,6 +103,24 @@ const ParamTable& IvyTable() {
 }
 
 const ParamTable& TableOf(IvyParam) { return IvyTable(); }
+
+namespace {
+
+const std::vector<Preset>& Presets() {
+  static const std::vector<Preset> presets = [] {
+    Result<std::vector<ListedPreset>> listed = ReadPresetLists("ivy", IvyTable());
+    if (!listed.ok()) {
+      std::fprintf(stderr, "niwa: %s\n", listed.status().Line().c_str());
+      std::abort();  // a build-time data error, caught by the ivy tests
+    }
+    std::vector<Preset> out;
+    for (ListedPreset& p : *listed) out.push_back({std::move(p.name), std::move(p.values)});
+    return out;
+  }();
+  return presets;
+}
+
+}  // namespace
 
 Status ValidateIvyParams(const IvyParams& p) {
   const double t1 = p.Get(IvyParam::kT1), t2 = p.Get(IvyParam::kT2);

@@ -1,6 +1,10 @@
 // The terrain table and its figure presets (paper values in docs/terrain-model.md).
 #include "terrain/terrain_params.h"
 
+#include <cstdio>
+#include <cstdlib>
+
+#include "params/embedded_presets.h"
 #include "params/param_text.h"
 
 namespace niwa::terrain {
@@ -98,41 +102,23 @@ int JoinFromName(const std::string& name) {
   return -1;
 }
 
+// core/terrain/presets/figure_presets.json (embedded; docs/terrain-model.md), read once.
 const std::vector<FigurePreset>& FigurePresets() {
-  using V = std::vector<std::pair<TerrainParam, double>>;
-  auto simple = [](double join, double c) {
-    return V{{P::kMethod, 0}, {P::kJoin, join}, {P::kC, c}};
-  };
-  auto mpd = [](double tmax) {
-    return V{{P::kMethod, 1}, {P::kJoin, 3},     {P::kC, 1.4},
-             {P::kD2, 0.3},   {P::kThetaMin, 0}, {P::kThetaMax, tmax}};
-  };
-  auto fd = [](double f0) {
-    return V{{P::kMethod, 2}, {P::kJoin, 3}, {P::kC, 1.4}, {P::kF0, f0}, {P::kNfft, 1024}};
-  };
-  static const std::vector<FigurePreset> presets = {
-      {"fig9a", "simple method, miter join (Fig 5a)", simple(0, 1.4)},
-      {"fig9b", "simple method, bevel join (Fig 5b)", simple(1, 1.4)},
-      {"fig9c", "simple method, Fig 7 join, d' = 1.4d", simple(3, 1.4)},
-      {"fig10a", "simple method, Fig 7 join, d' = 1.4d", simple(3, 1.4)},
-      {"fig10b", "simple method, Fig 7 join, d' = 1.6d", simple(3, 1.6)},
-      {"fig13a", "midpoint displacement, d' = 1.4d, d'' = 0.3d, θ in (0°, 10°)", mpd(10)},
-      {"fig13b", "midpoint displacement, d' = 1.4d, d'' = 0.3d, θ in (0°, 20°)", mpd(20)},
-      {"fig13c", "midpoint displacement, d' = 1.4d, d'' = 0.3d, θ in (0°, 30°)", mpd(30)},
-      {"fig14a", "phase randomisation, n = 1024, f0 = 64", fd(64)},
-      {"fig14b", "phase randomisation, n = 1024, f0 = 128", fd(128)},
-      {"fig14c", "phase randomisation, n = 1024, f0 = 256", fd(256)},
-      {"fig15", "Fourier-descriptor method, Fig 7 join, d' = 1.4d, f0 = 256", fd(256)},
-      {"fig16", "improved method: d' = 3d, d'' = 0.5d, θ in (20°, 40°), f0 = 256",
-       V{{P::kMethod, 3},
-         {P::kJoin, 3},
-         {P::kC, 3},
-         {P::kD2, 0.5},
-         {P::kThetaMin, 20},
-         {P::kThetaMax, 40},
-         {P::kF0, 256},
-         {P::kNfft, 1024}}},
-  };
+  static const std::vector<FigurePreset> presets = [] {
+    Result<std::vector<ListedPreset>> listed = ReadPresetLists("terrain", TerrainTable());
+    if (!listed.ok()) {
+      std::fprintf(stderr, "niwa: %s\n", listed.status().Line().c_str());
+      std::abort();  // a build-time data error, caught by the terrain tests
+    }
+    std::vector<FigurePreset> out;
+    for (const ListedPreset& p : *listed) {
+      FigurePreset preset{p.name, p.caption, {}};
+      for (const auto& [key, value] : p.values)
+        preset.values.emplace_back(static_cast<TerrainParam>(*TerrainTable().Find(key)), value);
+      out.push_back(std::move(preset));
+    }
+    return out;
+  }();
   return presets;
 }
 

@@ -50,8 +50,8 @@ int JoinFromName(const std::string& name);
 
 // A figure preset: its name ("fig16"), what it reproduces, and its row values.
 struct FigurePreset {
-  const char* name;
-  const char* caption;
+  std::string name;
+  std::string caption;
   std::vector<std::pair<TerrainParam, double>> values;
 };
 const std::vector<FigurePreset>& FigurePresets();

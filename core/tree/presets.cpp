@@ -9,11 +9,17 @@
 #include <nlohmann/json.hpp>
 
 #include "params/param_json.h"
-#include "tree/presets_embedded.h"
+#include "params/embedded_presets.h"
 
 namespace niwa {
 
 namespace {
+
+// core/tree/presets/*.json, in file-name order.
+const std::vector<EmbeddedPreset>& TreeFiles() {
+  static const std::vector<EmbeddedPreset> files = EmbeddedPresets("tree");
+  return files;
+}
 
 Preset ParsePreset(const EmbeddedPreset& file) {
   nlohmann::json j = nlohmann::json::parse(file.json, nullptr, false);
@@ -42,7 +48,7 @@ struct PresetSlots {
 
 PresetSlots& Slots() {
   static PresetSlots slots = [] {
-    const std::size_t n = EmbeddedPresets().size();
+    const std::size_t n = TreeFiles().size();
     return PresetSlots{std::vector<Preset>(n), std::make_unique<std::once_flag[]>(n)};
   }();
   return slots;
@@ -50,7 +56,7 @@ PresetSlots& Slots() {
 
 const Preset& PresetAt(std::size_t i) {
   PresetSlots& slots = Slots();
-  std::call_once(slots.parsed[i], [&] { slots.presets[i] = ParsePreset(EmbeddedPresets()[i]); });
+  std::call_once(slots.parsed[i], [&] { slots.presets[i] = ParsePreset(TreeFiles()[i]); });
   return slots.presets[i];
 }
 
@@ -58,7 +64,7 @@ const Preset& PresetAt(std::size_t i) {
 
 const std::vector<Preset>& Presets() {
   static const bool all = [] {
-    for (std::size_t i = 0; i < EmbeddedPresets().size(); ++i) (void)PresetAt(i);
+    for (std::size_t i = 0; i < TreeFiles().size(); ++i) (void)PresetAt(i);
     return true;
   }();
   (void)all;
@@ -72,7 +78,7 @@ const std::vector<std::string_view>& PresetFileFields() {
 
 const Preset* FindPreset(const std::string& name) {
   // The file named after the preset first (sakura-thesis.json holds "sakura-thesis").
-  const std::vector<EmbeddedPreset>& files = EmbeddedPresets();
+  const std::vector<EmbeddedPreset>& files = TreeFiles();
   for (std::size_t i = 0; i < files.size(); ++i) {
     if (std::string_view(files[i].file) == name + ".json" && PresetAt(i).name == name) {
       return &PresetAt(i);

@@ -1,0 +1,34 @@
+// The ivy presets, read from core/ivy/presets/ivy_presets.json through the one embed step, are the
+// values docs/ivy-model.md gives (and that ivy_params.cpp held in C++ before the move).
+#include <gtest/gtest.h>
+
+#include "ivy/ivy_params.h"
+#include "params/embedded_presets.h"
+
+namespace niwa {
+namespace {
+
+TEST(IvyPresets, ReadFromTheEmbeddedListInItsOrder) {
+  const std::vector<std::string> names = {"paper", "literal", "improved", "metric"};
+  EXPECT_EQ(IvyPresetNames(), names);
+  using V = std::vector<std::pair<std::string, double>>;
+  EXPECT_EQ(IvyPresetOverrides("paper"), V{});
+  EXPECT_EQ(IvyPresetOverrides("literal"), (V{{"kappa", 0}, {"lambda", 1}}));
+  EXPECT_EQ(IvyPresetOverrides("improved"), (V{{"max_bend", 60}, {"avoid", 10}, {"candidates", 32}}));
+  EXPECT_EQ(IvyPresetOverrides("metric"), (V{{"L", 0.05}, {"d", 0.02}, {"eps", 0.002},
+                                            {"r_tip", 0.0015}, {"leaf_size", 0.05}, {"petiole", 0.02}}));
+  Result<IvyParams> metric = IvyPreset("metric");
+  ASSERT_TRUE(metric.ok());
+  EXPECT_EQ(metric->Get(IvyParam::kL), 0.05);
+  EXPECT_FALSE(IvyPreset("nope").ok());
+}
+
+TEST(IvyPresets, EveryListedPresetHasItsSource) {
+  Result<std::vector<ListedPreset>> listed = ReadPresetLists("ivy", IvyTable());
+  ASSERT_TRUE(listed.ok()) << listed.status().Line();
+  ASSERT_EQ(listed->size(), 4u);
+  for (const ListedPreset& p : *listed) EXPECT_FALSE(p.source.empty()) << p.name;
+}
+
+}  // namespace
+}  // namespace niwa
