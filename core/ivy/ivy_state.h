@@ -57,6 +57,10 @@ std::string FormatSeedPoints(const std::vector<glm::dvec3>& points);
 // are ValidateIvyParams's.
 Status ApplyIvyStateJson(const std::string& text, IvyState* state);
 
+// {preset, seed, steps, scene, seed_points, tree, tree_years, params: {every key: value}} on one
+// line: what ApplyIvyStateJson reads back to the same state.
+std::string IvyStateJson(const IvyState& state);
+
 // Applies "#preset=paper&seed=3&steps=50&scene=wall&at=0,10,10&t1=0.3" (keys prefixed with
 // `prefix`, e.g. "ivy."); keys that are not the ivy's are skipped when `prefix` is non-empty (they
 // belong to another study on a composed page) and dropped with a notice otherwise; bad values are

@@ -1,109 +1,74 @@
-// Bindings shared by every study page: the parameter table, the presets and the share-link hash
-// codec, as JSON text for the worker (web/worker/worker.js). One EMSCRIPTEN_BINDINGS block
+// Bindings every study page shares, over the core's registry of studies (core/compose/studies.h):
+// the parameter table, the presets and the share-link codec of study `study`, with the key prefix
+// of a composed page, as JSON text for the worker's handlers. One EMSCRIPTEN_BINDINGS block
 // (niwa_common) in the one WASM module niwa_web; each study's session is in <study>_bindings.cpp.
 // Does not: check anything itself (the core does), or hold state between calls.
 #include <emscripten/bind.h>
 
 #include <nlohmann/json.hpp>
 #include <string>
-#include <vector>
 
-#include "params/param_json.h"
-#include "tree/presets.h"
-#include "tree/tree_params.h"
-#include "tree/tree_simple.h"
-#include "tree/tree_state.h"
+#include "compose/studies.h"
+#include "error_record.h"
 
 namespace niwa {
 namespace {
 
-using nlohmann::json;
 using nlohmann::ordered_json;
 
-// {"key": value} for every parameter (full values), as a JSON object.
-ordered_json ParamsObject(const ParamSet& params) {
-  return ordered_json::parse(ParamsToJson(params, -1));
+const compose::StudyInfo* Study(const std::string& name) { return compose::FindStudy(name); }
+
+Status UnknownStudy(const std::string& name) {
+  return Status::Error("study", "'" + Echo(name) + "' is unknown; must be " + compose::StudyNames());
 }
 
 }  // namespace
 
-// The tree's table with its Getting started group (core/tree/tree_simple.h) on its rows.
-std::string ParamTableJsonForJs() { return TreeParamTableJsonWithSimple(); }
-
-std::string PresetsJson() {
+// [{name, unit}] of every study, in the nav's order.
+std::string StudiesJson() {
   ordered_json out = ordered_json::array();
-  for (const Preset& p : Presets()) {
-    ordered_json j;
-    j["name"] = p.name;
-    j["title"] = p.title;
-    j["years"] = p.years;
-    j["seed"] = p.seed;
-    j["source"] = p.source;
-    j["params"] = ParamsObject(p.params);
-    out.push_back(std::move(j));
-  }
+  for (const compose::StudyInfo& s : compose::Studies()) out.push_back({{"name", s.name}, {"unit", s.unit}});
   return out.dump();
 }
 
-std::string DecodeHashJson(const std::string& hash) {
-  std::vector<std::string> notices;
-  TreeState state = DecodeTreeHash(hash, &notices);
-  ordered_json out;
-  out["state"] = ordered_json::parse(TreeStateJson(state));
-  out["notices"] = notices;
-  // Notices echo pieces of the (hostile) hash; replace bytes that are not valid UTF-8 for dump().
-  return out.dump(-1, ' ', false, json::error_handler_t::replace);
+// The study's table as the panel reads it, or an error record naming "study".
+std::string TableJson(const std::string& study) {
+  const compose::StudyInfo* s = Study(study);
+  return s ? s->table_json() : ErrorRecordJson(UnknownStudy(study));
 }
 
-std::string EncodeHashJson(const std::string& state_json) {
-  TreeState state;
-  ordered_json out;
-  std::string error = ApplyStateJson(state_json, &state).Line();
-  if (error.empty()) {
-    out["hash"] = EncodeTreeHash(state);
-  } else {
-    out["error"] = error;
-  }
-  return out.dump(-1, ' ', false, json::error_handler_t::replace);
+// The study's presets (a JSON array), or an error record naming "study".
+std::string PresetsJson(const std::string& study) {
+  const compose::StudyInfo* s = Study(study);
+  return s ? s->presets_json() : ErrorRecordJson(UnknownStudy(study));
 }
 
-// The page's Save: {json} the state file (TreeStateFileJson: changed parameters only) of a page
-// state {preset, seed, years, params, prunes, camera}, or {error}.
-std::string StateFileJson(const std::string& state_json) {
-  TreeState state;
-  ordered_json out;
-  std::string error = ApplyStateJson(state_json, &state).Line();
-  if (error.empty()) {
-    out["json"] = TreeStateFileJson(state);
-  } else {
-    out["error"] = error;
-  }
-  return out.dump(-1, ' ', false, json::error_handler_t::replace);
+// {state, notices} of a share-link hash (keys with `prefix`), or an error record naming "study".
+std::string DecodeHash(const std::string& study, const std::string& hash, const std::string& prefix) {
+  const compose::StudyInfo* s = Study(study);
+  return s ? s->decode_hash(hash, prefix) : ErrorRecordJson(UnknownStudy(study));
 }
 
-// The page's Open: {state} (every value, as decodeHash gives it) of a state file read onto the
-// default state (missing keys take the preset's values), or {error} naming the bad field.
-std::string OpenStateFileJson(const std::string& text) {
-  TreeState state;
+// {ok: true, hash} of a state JSON, or the error record naming its bad field.
+std::string EncodeHash(const std::string& study, const std::string& state_json,
+                       const std::string& prefix) {
+  const compose::StudyInfo* s = Study(study);
+  if (!s) return ErrorRecordJson(UnknownStudy(study));
+  Result<std::string> hash = s->encode_hash(state_json, prefix);
+  if (!hash.ok()) return ErrorRecordJson(hash.status());
   ordered_json out;
-  Status status = ApplyStateJson(text, &state);
-  if (status.ok()) status = CheckGustOrder(state.params);
-  if (status.ok()) {
-    out["state"] = ordered_json::parse(TreeStateJson(state));
-  } else {
-    out["error"] = status.Line();
-  }
-  return out.dump(-1, ' ', false, json::error_handler_t::replace);
+  out["ok"] = true;
+  out["hash"] = *hash;
+  return out.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 }  // namespace niwa
 
 EMSCRIPTEN_BINDINGS(niwa_common) {
   using namespace emscripten;
-  function("paramTableJson", &niwa::ParamTableJsonForJs);
+  function("studiesJson", &niwa::StudiesJson);
+  function("tableJson", &niwa::TableJson);
   function("presetsJson", &niwa::PresetsJson);
-  function("decodeHash", &niwa::DecodeHashJson);
-  function("encodeHash", &niwa::EncodeHashJson);
-  function("stateFile", &niwa::StateFileJson);
-  function("openStateFile", &niwa::OpenStateFileJson);
+  function("decodeHash", &niwa::DecodeHash);
+  function("encodeHash", &niwa::EncodeHash);
 }

@@ -15,11 +15,11 @@ const yieldToEvents = nextTask;
 // ctx: {post(msg, transfer), isLatest(client, id)} from the router.
 export function createHandler(Module, ctx) {
   const { post, isLatest } = ctx;
-  const paramTable = JSON.parse(Module.ivyParamTableJson());
-  const presets = JSON.parse(Module.ivyPresetsJson());
+  const paramTable = JSON.parse(Module.tableJson('ivy'));
+  const presets = JSON.parse(Module.presetsJson('ivy'));
   const scenes = JSON.parse(Module.ivyScenesJson());
   // The trees ivy can climb (scene 'tree'): the tree study's presets.
-  const trees = JSON.parse(Module.presetsJson()).map((p) => ({ name: p.name, title: p.title, years: p.years }));
+  const trees = JSON.parse(Module.presetsJson('tree')).map((p) => ({ name: p.name, title: p.title, years: p.years }));
   const labs = new Map();  // client -> {lab, support: 'scene:<name>' | 'mesh:<name>' | null}
   let leafTextureOnce = null;  // {width, height, pixels}: the .glb's leaf texture, kept
 
@@ -162,10 +162,10 @@ export function createHandler(Module, ctx) {
 
   return {
     superseding: ['update'],
-    ready: (msg) => ({ paramTable, presets, scenes, trees, decoded: JSON.parse(Module.ivyDecodeHash(String(msg.hash || ''))) }),
+    ready: (msg) => ({ paramTable, presets, scenes, trees, decoded: JSON.parse(Module.decodeHash('ivy', String(msg.hash || ''), '')) }),
     messages: {
-      decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...JSON.parse(Module.ivyDecodeHash(String(msg.hash || ''))) }),
-      encode: (msg, client) => post({ type: 'encoded', id: msg.id, client, ...JSON.parse(Module.ivyEncodeHash(JSON.stringify(msg.state || {}))) }),
+      decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...JSON.parse(Module.decodeHash('ivy', String(msg.hash || ''), '')) }),
+      encode: (msg, client) => post({ type: 'encoded', id: msg.id, client, ...JSON.parse(Module.encodeHash('ivy', JSON.stringify(msg.state || {}), '')) }),
       update,
       mesh,
       pick,

@@ -111,7 +111,7 @@
  *       {positions, normals, indices}}
  * @typedef {Envelope & {type: 'pick', origin: number[], direction: number[]}} IvyPickMessage
  *   -> {type: 'picked', hit: {hit, point?, normal?, distance?}}
- * @typedef {Envelope & {type: 'encode', state: Object}} IvyEncodeMessage -> {type: 'encoded', hash|error}
+ * @typedef {Envelope & {type: 'encode', state: Object}} IvyEncodeMessage -> {type: 'encoded', ok, hash} or {type: 'encoded', ok: false, field, message}
  * export: format 'glb' (withSupport?) | 'json' | 'lsys'.
  */
 

@@ -23,8 +23,8 @@ const FORMATS = ['glb', 'heightmap', 'sidecar', 'json', 'geojson', 'svg'];
 // ctx: {post(msg, transfer), isLatest(client, id)} from the router.
 export function createHandler(Module, ctx) {
   const { post, isLatest } = ctx;
-  const paramTable = JSON.parse(Module.terrainParamTableJson());
-  const presets = JSON.parse(Module.terrainPresetsJson());
+  const paramTable = JSON.parse(Module.tableJson('terrain'));
+  const presets = JSON.parse(Module.presetsJson('terrain'));
   const seeds = JSON.parse(Module.terrainSeedsJson());
   const labs = new Map();  // client -> TerrainLab
   const recycled = new Map();  // client -> {name: ArrayBuffer}: surface buffers the page returned
@@ -138,9 +138,9 @@ export function createHandler(Module, ctx) {
 
   return {
     superseding: ['update'],
-    ready: (msg) => ({ paramTable, presets, seeds, decoded: JSON.parse(Module.terrainDecodeHash(String(msg.hash || ''))) }),
+    ready: (msg) => ({ paramTable, presets, seeds, decoded: JSON.parse(Module.decodeHash('terrain', String(msg.hash || ''), '')) }),
     messages: {
-      decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...JSON.parse(Module.terrainDecodeHash(String(msg.hash || ''))) }),
+      decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...JSON.parse(Module.decodeHash('terrain', String(msg.hash || ''), '')) }),
       // An imported contour file's text -> {points, elevation?} or {error} (the core's line).
       parseContour: (msg, client) => post({ type: 'contourFile', id: msg.id, client, name: String(msg.name || ''), ...JSON.parse(Module.terrainParseContour(String(msg.text || ''))) }),
       update,

@@ -13,7 +13,7 @@ const WARM_UP_YEARS = 8;
 export function createHandler(Module, ctx) {
   const { post, isLatest } = ctx;
   scheduleWarmUp(Module, ctx.options || {});
-  const paramTable = JSON.parse(Module.paramTableJson());
+  const paramTable = JSON.parse(Module.tableJson('tree'));
   // Rows whose edits change the grown tree (stage grow; rows without a stage too). Mesh, sway and
   // view rows restage the tree already grown (restate rebuilds its mesh, skin and hybrid scene).
   const treeKeys = paramTable.filter((row) => !['mesh', 'sway', 'view'].includes(row.stage)).map((row) => row.key);
@@ -312,12 +312,12 @@ export function createHandler(Module, ctx) {
     post({ type: 'export', id: msg.id, client, format: msg.format, variant: msg.variant, bytes }, [bytes]);
   }
 
-  const decode = (hash) => JSON.parse(Module.decodeHash(String(hash ?? '')));
+  const decode = (hash) => JSON.parse(Module.decodeHash('tree', String(hash ?? ''), ''));
 
   return {
     // Requests of these types supersede the client's older ones.
     superseding: ['update', 'restage'],
-    ready: (msg) => ({ paramTable, presets: JSON.parse(Module.presetsJson()), decoded: decode(msg.hash) }),
+    ready: (msg) => ({ paramTable, presets: JSON.parse(Module.presetsJson('tree')), decoded: decode(msg.hash) }),
     messages: {
       decode: (msg, client) => {
         const { state, notices } = decode(msg.hash);
@@ -333,12 +333,12 @@ export function createHandler(Module, ctx) {
       view: hybridView,
       export: exportTree,
       // Save / Open (web/tree/state_file.js): {save: page state} -> {json}; {open: file text} ->
-      // {state}; a bad state or file is an 'error' naming the field.
+      // {state}; a bad state or file is an 'error' with its field.
       stateFile: (msg, client) => {
         const answer = JSON.parse(msg.open !== undefined ? Module.openStateFile(String(msg.open))
           : Module.stateFile(JSON.stringify(msg.save ?? {})));
-        if (answer.error) post({ type: 'error', id: msg.id, client, message: answer.error });
-        else post({ type: 'stateFile', id: msg.id, client, ...answer });
+        if (answer.ok === false) post({ type: 'error', id: msg.id, client, field: answer.field, message: answer.message });
+        else post({ type: 'stateFile', id: msg.id, client, json: answer.json, state: answer.state });
       },
     },
   };

@@ -1,0 +1,76 @@
+// The registry of studies: every study answers the same calls (table, presets, hash codec with a
+// key prefix), and a state round-trips through its hash under a foreign prefix.
+#include "compose/studies.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <nlohmann/json.hpp>
+
+namespace niwa::compose {
+namespace {
+
+using nlohmann::json;
+
+TEST(Studies, TheThreeStudiesInTheNavsOrder) {
+  ASSERT_EQ(Studies().size(), 3u);
+  EXPECT_EQ(Studies()[0].name, "tree");
+  EXPECT_EQ(Studies()[1].name, "ivy");
+  EXPECT_EQ(Studies()[2].name, "terrain");
+  EXPECT_EQ(FindStudy("ivy")->unit, "steps");
+  EXPECT_EQ(FindStudy("moss"), nullptr);
+  EXPECT_EQ(StudyNames(), "tree, ivy or terrain");
+}
+
+TEST(Studies, EachTableAndPresetListIsJsonOfItsTable) {
+  for (const StudyInfo& s : Studies()) {
+    const json table = json::parse(s.table_json());
+    ASSERT_TRUE(table.is_array()) << s.name;
+    EXPECT_EQ(table.size(), s.table().size()) << s.name;
+    EXPECT_EQ(table[0]["key"], s.table().row(0).key) << s.name;
+    const json presets = json::parse(s.presets_json());
+    ASSERT_TRUE(presets.is_array()) << s.name;
+    EXPECT_GE(presets.size(), 4u) << s.name;
+    for (const json& p : presets) EXPECT_TRUE(p.contains("name")) << s.name;
+  }
+}
+
+TEST(Studies, AStateRoundTripsThroughItsPrefixedHash) {
+  const std::map<std::string, std::string> edits = {
+      {"tree", "preset=maple&seed=4&years=7"},
+      {"ivy", "preset=improved&seed=3&steps=40&scene=wall"},
+      {"terrain", "preset=fig13b&builtin=dumbbell"},
+  };
+  for (const StudyInfo& s : Studies()) {
+    const std::string prefix = s.name + ".";
+    // The study's keys among another study's (a composed page's hash).
+    std::string hash = "other.x=1";
+    for (std::size_t at = 0; at < edits.at(s.name).size();) {
+      std::size_t amp = edits.at(s.name).find('&', at);
+      if (amp == std::string::npos) amp = edits.at(s.name).size();
+      hash += "&" + prefix + edits.at(s.name).substr(at, amp - at);
+      at = amp + 1;
+    }
+    const json decoded = json::parse(s.decode_hash(hash, prefix));
+    EXPECT_TRUE(decoded["notices"].empty()) << s.name << ": " << decoded["notices"].dump();
+    // The prefixed keys were read (not skipped as another study's).
+    const std::string preset = decoded["state"]["preset"];
+    EXPECT_EQ(preset, s.name == "tree" ? "maple" : s.name == "ivy" ? "improved" : "fig13b") << s.name;
+    Result<std::string> again = s.encode_hash(decoded["state"].dump(), prefix);
+    ASSERT_TRUE(again.ok()) << s.name << ": " << again.status().Line();
+    const json twice = json::parse(s.decode_hash(*again, prefix));
+    EXPECT_EQ(twice["state"], decoded["state"]) << s.name;
+    EXPECT_NE(again->find(prefix), std::string::npos) << s.name;
+  }
+}
+
+TEST(Studies, ABadStateNamesItsField) {
+  for (const StudyInfo& s : Studies()) {
+    Result<std::string> bad = s.encode_hash(R"({"seed": -5})", "");
+    ASSERT_FALSE(bad.ok()) << s.name;
+    EXPECT_NE(bad.status().field().find("seed"), std::string::npos) << s.name << ": " << bad.status().Line();
+  }
+}
+
+}  // namespace
+}  // namespace niwa::compose
