@@ -1,14 +1,9 @@
-// What the tree page shows while an edit is on its way (issue 17 item 6): the core's error line
+// What the tree page shows while an edit is on its way (issue 17 item 6): the core's error
 // beside the field it names (the panel row, a basic field or a Getting started control), opened and
 // scrolled into view, and a "stale" label over the view from the first edit until the tree that
 // answers it is drawn (or, after an error, until a good value is drawn).
 // Does not: check values (the core does), send requests, or decide which tree is current.
 import { errorLineIn, newErrorLine } from '../shell/field_errors.js';
-
-// The key a core error line names: "years: 130 is out of range; ..." -> "years".
-export function errorKey(message) {
-  return typeof message === 'string' ? /^([A-Za-z_][A-Za-z_0-9]*)[: ]/.exec(message)?.[1] || null : null;
-}
 
 export class EditFeedback {
   // stage: the element the label covers (the view's section); basics: {key: input} of the fields
@@ -50,16 +45,18 @@ export class EditFeedback {
     return hosts;
   }
 
-  // Shows `message` beside its field(s) and clears the others; '' clears all. Returns true when a
-  // field was found for it.
-  showError(message) {
+  // Shows an error (the worker's error reply or record {field, message}: field the state key,
+  // message its one line) beside its field(s) and clears the others; a falsy error clears all.
+  // Returns true when a field was found for it.
+  showError(error) {
+    const message = error ? String(error.message || '') : '';
+    const key = error ? error.field || null : null;
     for (const line of this.shown) {
       line.hidden = true;
       line.textContent = '';
     }
     this.shown = [];
     for (const input of Object.values(this.basics)) input.removeAttribute('aria-invalid');
-    const key = errorKey(message);
     if (!key) {
       if (message) this.stale('stale: this is the last good tree (see the notice in the panel)');
       return false;

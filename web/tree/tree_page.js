@@ -617,7 +617,7 @@ worker.on('error', (msg) => {
   showCancel(false);
   notices.set('error', msg.message);
   panel?.markError(msg.field || '');
-  feedback.showError(msg.message);
+  feedback.showError(msg);
   if (treeSerial === 0) feedback.fresh();  // no tree on screen to call stale
   ui.progress.textContent = '';
   ui.progressBar.hidden = true;
