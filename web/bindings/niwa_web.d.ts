@@ -1,0 +1,128 @@
+// The typed surface of the web module niwa_web (web/bindings/*.cpp), as the worker's handlers call
+// it: every function and every session class with its methods. tests/browser/bindings_decl.test.mjs
+// checks this file against the EMSCRIPTEN_BINDINGS blocks and against the built module, so a
+// binding is not added, renamed or dropped without its declaration (after Filament's
+// filament.d.ts, "must match the bindings").
+//
+// Conventions (web/bindings/error_record.h, buffers.h):
+// - A method that can fail returns "" when it worked, else an ErrorRecord as JSON text.
+// - *Json methods return JSON text; errors inside them are ErrorRecords.
+// - buffers(group) returns {name: typed view into the WASM heap} (valid until the next call that
+//   may allocate: copy at once), or null for an unknown group.
+
+/** A core Status at the boundary: field is the state key it names ("" when none), message its one line. */
+export interface ErrorRecord { ok: false; field: string; message: string; }
+/** "" or an ErrorRecord as JSON text. */
+export type ErrorText = string;
+export type BufferViews = { [name: string]: Float32Array | Uint32Array | Int32Array | Uint16Array | Uint8Array } | null;
+
+// ---- common_bindings.cpp: every study through core/compose/studies.h
+/** [{name, unit}] of the studies. */
+export function studiesJson(): string;
+/** The study's parameter table (rows with key, symbol, unit, default, min, max, stage, help). */
+export function tableJson(study: string): string;
+/** The study's presets: a JSON array of {name, ...}. */
+export function presetsJson(study: string): string;
+/** {state, notices} of a share-link hash whose keys carry `prefix` ("" on a study's own page). */
+export function decodeHash(study: string, hash: string, prefix: string): string;
+/** {ok: true, hash} or an ErrorRecord. */
+export function encodeHash(study: string, stateJson: string, prefix: string): string;
+
+// ---- tree_state_bindings.cpp: the tree page's Save / Open
+/** {ok: true, json} (the state file) or an ErrorRecord. */
+export function stateFile(stateJson: string): string;
+/** {ok: true, state} or an ErrorRecord. */
+export function openStateFile(text: string): string;
+
+// ---- texture_bindings.cpp
+/** {width, height, pixels: Uint8Array} (RGBA, row 0 = v 0) of a procedural texture ('bark', 'barkNormal', 'leaf', 'flower'), or null. */
+export function treeTexture(kind: string, leafShape: number, season: number, autumnColour: number, flowerColour: number, flowerForm: number): { width: number; height: number; pixels: Uint8Array } | null;
+
+// ---- light_bindings.cpp: core/light/sun.h
+/** The unit direction towards the sun, [x, y, z] (y up, azimuth from +x towards +z). */
+export function sunDirection(altitudeDeg: number, azimuthDeg: number): [number, number, number];
+/** The sun at a date, UTC time and place. */
+export function sunAt(year: number, month: number, day: number, hoursUtc: number, latitudeDeg: number, longitudeDeg: number): { altitude: number; azimuth: number; direction: [number, number, number] };
+
+// ---- tree_bindings.cpp: the tree thesis (ch. 2 growth, ch. 3 sway, ch. 4 hybrid rendering) over core/render/tree_run
+export class TreeSession {
+  constructor(stateJson: string);
+  error(): ErrorText;
+  years(): number;
+  year(): number;
+  done(): boolean;
+  hash(): string;
+  restate(stateJson: string): ErrorText;
+  buffers(group: string): BufferViews;
+  growYear(): boolean;
+  buildMesh(): ErrorText;
+  statsJson(): string;
+  buildGlb(): ErrorText;
+  lookJson(): string;
+  buildLodGlb(maxTriangles: number, lod: boolean): ErrorText;
+  buildSwayGlb(fps: number): ErrorText;
+  paramsJson(): string;
+  swayNodes(): number;
+  swayStart(): ErrorText;
+  swayStartAt(origins: number[]): ErrorText;
+  swayInstances(): number;
+  swayStep(steps: number): number;
+  swayDt(): number;
+  swayStepsPerTick(): number;
+  swaySpeed(): number;
+  swayDuration(): number;
+  swayWindSpeed(): number;
+  buildHybrid(): ErrorText;
+  atlasSize(): number;
+  renderMode(): number;
+  hybridView(ex: number, ey: number, ez: number, tx: number, ty: number, tz: number, fovY: number, width: number, height: number): string;
+  hybridViewSlot(slot: number, ex: number, ey: number, ez: number, tx: number, ty: number, tz: number, fovY: number, width: number, height: number): string;
+  delete(): void;
+}
+
+// ---- ivy_bindings.cpp: paper 004 over core/ivy/ivy_run
+/** The built-in scenes: [{name, description, free, triangles, seeds: [{name, pos}]}]. */
+export function ivyScenesJson(): string;
+/** {width, height, pixels: Uint8Array}: the leaf texture the .glb embeds. */
+export function ivyLeafTexture(): { width: number; height: number; pixels: Uint8Array };
+
+export class IvyLab {
+  constructor();
+  loadScene(name: string): ErrorText;
+  loadTree(preset: string, years: number): ErrorText;
+  loadMesh(bytes: string, name: string): ErrorText;
+  supportJson(): string;
+  grow(stateJson: string): ErrorText;
+  statsJson(): string;
+  hash(): string;
+  steps(): number;
+  modelJson(): string;
+  lstring(): string;
+  buildGlb(withSupport: boolean): ErrorText;
+  exportCheck(format: string, withSupport: boolean): ErrorText;
+  rayCast(ox: number, oy: number, oz: number, dx: number, dy: number, dz: number): string;
+  setProgress(fn: (stage: string, done: number, total: number) => void): void;
+  buffers(group: string): BufferViews;
+  delete(): void;
+}
+
+// ---- terrain_bindings.cpp: paper 002 over core/terrain/terrain_run
+/** [{name, source, points, d, dh, h0}] of the built-in seed contours. */
+export function terrainSeedsJson(): string;
+/** {points, repaired, loops_removed, method} of a drawn contour, or an ErrorRecord naming "contour". */
+export function terrainRepairContour(pointsJson: string): string;
+/** {points, elevation?} of a contour file's text, or an ErrorRecord naming "contour". */
+export function terrainParseContour(text: string): string;
+
+export class TerrainLab {
+  constructor();
+  grow(stateJson: string): ErrorText;
+  statsJson(): string;
+  timingsJson(): string;
+  hash(): string;
+  stateJson(): string;
+  boundsJson(): string;
+  build(format: string): ErrorText;
+  buffers(group: string): BufferViews;
+  delete(): void;
+}
