@@ -228,8 +228,9 @@ class TerrainLab {
   // ms* fields (timings are in timingsJson), or "{}".
   std::string statsJson() const { return grown_ ? run_->StatsJson() : "{}"; }
 
-  // {ms_grow, ms_heightfield, ms_buffers, ms_shrink, ms_mpd, ms_fd, ms_loops} of the last grow (the
-  // core's four of the grow its contours come from).
+  // {ms_grow, ms_heightfield, ms_buffers, ms_shrink, ms_mpd, ms_fd, ms_loops, grows,
+  // heightfields} of the last grow (the core's four of the grow its contours come from; grows and
+  // heightfields: how many the lab's run has done, so an edit that re-did less is seen).
   std::string timingsJson() const {
     const terrain::GrowCounts counts = grown_ ? run_->terrain().counts : terrain::GrowCounts{};
     ordered_json j;
@@ -240,6 +241,8 @@ class TerrainLab {
     j["ms_mpd"] = counts.ms_mpd;
     j["ms_fd"] = counts.ms_fd;
     j["ms_loops"] = counts.ms_loops;
+    j["grows"] = run_ ? run_->counts().grows : 0;
+    j["heightfields"] = run_ ? run_->counts().heightfields : 0;
     return Dump(j);
   }
 
