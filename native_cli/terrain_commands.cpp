@@ -66,16 +66,16 @@ void RepairSeed(const GrowOptions& o, terrain::TerrainState* state) {
   Result<terrain::ContourRepair> r = terrain::RepairContour(state->points);
   // A file's contour is the flag's; one from --url or --params keeps its field under that flag.
   if (!r.ok()) {
-    Fail(!o.contour.empty()           ? run::RenameField(r.status(), kFieldFlags)
-         : !o.params_file.empty()     ? r.status().Within("--params " + o.params_file)
-                                      : r.status().Within("--url"));
+    Fail(!o.contour.empty()       ? run::RenameField(r.status(), kFieldFlags)
+         : !o.params_file.empty() ? r.status().Within("--params " + o.params_file)
+                                  : r.status().Within("--url"));
   }
   if (!r->repaired) return;
   std::cerr << "niwa: repaired: the seed contour crossed itself ("
-            << (r->method == "loops" ? std::to_string(r->loops_removed) + " loop" +
-                                           (r->loops_removed == 1 ? "" : "s") +
-                                           " cut, §4.4 method 2"
-                                     : std::string("its largest simple piece kept"))
+            << (r->method == "loops"
+                    ? std::to_string(r->loops_removed) + " loop" +
+                          (r->loops_removed == 1 ? "" : "s") + " cut, §4.4 method 2"
+                    : std::string("its largest simple piece kept"))
             << "): " << r->ring.size() << " points\n";
   state->points = r->ring;
 }
@@ -208,7 +208,8 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
     const terrain::GrowCounts& counts = run->terrain().counts;
     j["ms"] = std::chrono::duration<double, std::milli>(t5 - t0).count();  // the whole run
     // Up to the heightfield: the flags, the state, the checks and the grow.
-    j["ms_grow"] = std::chrono::duration<double, std::milli>(t2 - t0).count() - run->ms_heightfield();
+    j["ms_grow"] =
+        std::chrono::duration<double, std::milli>(t2 - t0).count() - run->ms_heightfield();
     j["ms_shrink"] = counts.ms_shrink;
     j["ms_mpd"] = counts.ms_mpd;
     j["ms_fd"] = counts.ms_fd;

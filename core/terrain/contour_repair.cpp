@@ -39,8 +39,8 @@ Result<ContourRepair> RepairContour(const Ring& ring) {
     out.method = "loops";
   }
   if (!untwisted.ok()) {
-    return Status::Error("contour",
-                         "crosses itself and could not be repaired; must be one simple closed loop");
+    return Status::Error(
+        "contour", "crosses itself and could not be repaired; must be one simple closed loop");
   }
   out.ring = std::move(untwisted).value();
   out.repaired = true;

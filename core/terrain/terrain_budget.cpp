@@ -120,9 +120,8 @@ bool GrowFitsLimits(const Terrain& t, const TerrainParams& params, const Terrain
   const ContourNode* seed = &t.contours[0];
   for (const ContourNode& c : t.contours)
     if (c.level == 0) seed = &c;
-  const double d0 = seed->ring.empty()
-                        ? 0
-                        : Perimeter(seed->ring) / static_cast<double>(seed->ring.size());
+  const double d0 =
+      seed->ring.empty() ? 0 : Perimeter(seed->ring) / static_cast<double>(seed->ring.size());
   const double held = Vertices(t), worked = t.counts.vertices_worked;
   for (const ContourNode& c : t.contours) {
     const double m = WorstChildren(c.ring, d0, params, l);

@@ -120,9 +120,7 @@ Status TerrainRun::Update(const TerrainState& state) {
   return Status::Ok();
 }
 
-int TerrainRun::done() const {
-  return grown_ && redo_ == Redo::kNothing ? LevelsOf(terrain_) : 0;
-}
+int TerrainRun::done() const { return grown_ && redo_ == Redo::kNothing ? LevelsOf(terrain_) : 0; }
 
 int TerrainRun::target() const {
   if (grown_ && redo_ == Redo::kNothing) return done();
@@ -194,8 +192,7 @@ Result<gltf::Document> TerrainRun::Document() const {
   nlohmann::json extras;  // the page's .glb and the CLI's are the same bytes
   extras["generator"] = "niwa terrain grow";
   extras["url"] = EncodeTerrainHash(state_);
-  return TerrainDocument(terrain_, hf_, state_.params.GetBool(TerrainParam::kTint),
-                         extras.dump());
+  return TerrainDocument(terrain_, hf_, state_.params.GetBool(TerrainParam::kTint), extras.dump());
 }
 
 std::vector<run::Part> TerrainRun::Parts() const {

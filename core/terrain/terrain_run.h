@@ -117,7 +117,7 @@ class TerrainRun : public run::StudyRun {
   enum class Redo { kNothing, kHeightfield, kGrow };
   TerrainRun() = default;
   Result<Ring> Check(const TerrainState& state) const;  // Start's checks
-  std::string Change() const;                            // "lower res", in the plan's words
+  std::string Change() const;                           // "lower res", in the plan's words
 
   Budget budget_;
   TerrainRunPlan plan_;

@@ -2,6 +2,8 @@
 // small self-crossing loop is cut by §4.4 method 2 into a valid seed, a bow-tie is repaired to a
 // valid seed, bad points are CheckSeed's error; and `niwa terrain grow --repair` grows the repaired
 // seed (the one the page's drawing becomes).
+#include "terrain/contour_repair.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +12,6 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli_runner.h"
-#include "terrain/contour_repair.h"
 #include "terrain/generate.h"
 #include "terrain/polygon.h"
 #include "terrain/terrain_state.h"
@@ -20,8 +21,7 @@ namespace {
 
 // A square of 100 m whose bottom edge makes one small loop crossing itself near x = 46.7.
 Ring Kinked() {
-  return {{0, 0},  {52, 0},  {56, -6},  {50, -10}, {44, -6},
-          {48, 3}, {100, 3}, {100, 100}, {0, 100}};
+  return {{0, 0}, {52, 0}, {56, -6}, {50, -10}, {44, -6}, {48, 3}, {100, 3}, {100, 100}, {0, 100}};
 }
 
 TEST(ContourRepair, AValidSeedComesBackAsGiven) {
@@ -60,8 +60,8 @@ TEST(ContourRepair, ABowTieBecomesOneSimpleLoop) {
 }
 
 TEST(ContourRepair, BadPointsAreCheckSeedsError) {
-  for (const Ring& bad : {Ring{{0, 0}, {1, 1}}, Ring{{0, 0}, {NAN, 1}, {2, 0}},
-                          Ring{{0, 0}, {2e6, 1}, {2, 0}}}) {
+  for (const Ring& bad :
+       {Ring{{0, 0}, {1, 1}}, Ring{{0, 0}, {NAN, 1}, {2, 0}}, Ring{{0, 0}, {2e6, 1}, {2, 0}}}) {
     Result<ContourRepair> r = RepairContour(bad);
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.status().field(), "contour");

@@ -54,7 +54,8 @@ TEST(TerrainRun, GrowsABuiltinSeedLevelByLevel) {
   ASSERT_TRUE(run->Advance([&](const run::Progress& p) {
                    seen.push_back(p);
                    return true;
-                 }).ok());
+                 })
+                  .ok());
   const nlohmann::json stats = nlohmann::json::parse(run->StatsJson());
   EXPECT_GE(stats["levels"].get<int>(), 8);
   EXPECT_EQ(run->done(), stats["levels"].get<int>());
@@ -144,8 +145,8 @@ TEST(TerrainRun, EveryOutputIsTheBytesTheCliWrites) {
   const std::string glb = dir + "t.glb", png = dir + "t.png", side = dir + "t.json";
   const std::string geo = dir + "t.geojson", json = dir + "c.json", svg = dir + "c.svg";
   for (const std::string& p : {glb, png, side, geo, json, svg}) std::remove(p.c_str());
-  const std::vector<std::string> grow = {"terrain", "grow",  "--builtin", "dumbbell", "--method",
-                                         "improved", "--seed", "2", "--res", "40"};
+  const std::vector<std::string> grow = {"terrain",  "grow",   "--builtin", "dumbbell", "--method",
+                                         "improved", "--seed", "2",         "--res",    "40"};
   std::vector<std::string> a = grow, b = grow, c = grow;
   a.insert(a.end(), {"--stats", "--out", glb, "--heightmap", png, "--contours", geo});
   b.insert(b.end(), {"--contours", json});
@@ -159,9 +160,13 @@ TEST(TerrainRun, EveryOutputIsTheBytesTheCliWrites) {
   const nlohmann::json cli_stats = nlohmann::json::parse(r.out);
   EXPECT_EQ(WithoutMs(cli_stats).dump(), run.StatsJson());
   EXPECT_EQ(cli_stats["url"], run.Hash(""));
-  for (const auto& [format, path] : std::vector<std::pair<std::string, std::string>>{
-           {"glb", glb}, {"heightmap", png}, {"sidecar", side}, {"geojson", geo}, {"json", json},
-           {"svg", svg}}) {
+  for (const auto& [format, path] :
+       std::vector<std::pair<std::string, std::string>>{{"glb", glb},
+                                                        {"heightmap", png},
+                                                        {"sidecar", side},
+                                                        {"geojson", geo},
+                                                        {"json", json},
+                                                        {"svg", svg}}) {
     Result<std::string> bytes = run.Export(format);
     ASSERT_TRUE(bytes.ok()) << format << ": " << bytes.status().Line();
     EXPECT_GT(bytes->size(), 100u) << format;
