@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -13,8 +14,10 @@
 #include "base/echo.h"
 #include "cli_common.h"
 #include "io/gltf_writer.h"
+#include "run/field_names.h"
 #include "terrain/compare.h"
 #include "terrain/contour_io.h"
+#include "terrain/contour_repair.h"
 #include "terrain/generate.h"
 #include "terrain/heightfield.h"
 #include "terrain/seeds.h"
@@ -22,7 +25,7 @@
 #include "terrain/terrain_budget.h"
 #include "terrain/terrain_output.h"
 #include "terrain/terrain_params.h"
-#include "terrain/terrain_report.h"
+#include "terrain/terrain_run.h"
 #include "terrain/terrain_state.h"
 
 namespace niwa::cli {
@@ -30,11 +33,19 @@ namespace {
 
 using terrain::TerrainParam;
 
+// The one table of the terrain commands' names for state fields (run/field_names.h): a core error
+// naming the field reads with the flag that set it (errors of a --url, --params or --set value
+// keep the field, under that flag).
+const run::FieldNames kFieldFlags = {
+    {"builtin", "--builtin"}, {"contour", "--contour"}, {"preset", "--method"},
+    {"seed", "--seed"},       {"res", "--res"},         {"heightmap", "--heightmap"},
+};
+
 struct GrowOptions {
   std::string contour, builtin, method, seed, contours_out, params_file, url, out, heightmap;
   std::vector<std::string> sets;
   int res = 0;
-  bool stats = false;
+  bool stats = false, repair = false;
   BudgetOptions budget;
 };
 
@@ -47,6 +58,26 @@ void WriteAllOrNone(const std::vector<OutputFile>& files) {
   StagedOutputs outputs;
   for (const OutputFile& f : files) Check(outputs.Stage(f.field, f.path, f.bytes));
   Check(outputs.Commit());
+}
+
+// --repair: a seed contour that crosses itself (a drawing saved from the page, a traced file) made
+// simple as the page makes a fresh drawing (core/terrain/contour_repair.h), with a notice.
+void RepairSeed(const GrowOptions& o, terrain::TerrainState* state) {
+  Result<terrain::ContourRepair> r = terrain::RepairContour(state->points);
+  // A file's contour is the flag's; one from --url or --params keeps its field under that flag.
+  if (!r.ok()) {
+    Fail(!o.contour.empty()       ? run::RenameField(r.status(), kFieldFlags)
+         : !o.params_file.empty() ? r.status().Within("--params " + o.params_file)
+                                  : r.status().Within("--url"));
+  }
+  if (!r->repaired) return;
+  std::cerr << "niwa: repaired: the seed contour crossed itself ("
+            << (r->method == "loops"
+                    ? std::to_string(r->loops_removed) + " loop" +
+                          (r->loops_removed == 1 ? "" : "s") + " cut, §4.4 method 2"
+                    : std::string("its largest simple piece kept"))
+            << "): " << r->ring.size() << " points\n";
+  state->points = r->ring;
 }
 
 // The state from --url, then the seed flags, --method, --params, --seed, --set and --res.
@@ -63,15 +94,17 @@ terrain::TerrainState ResolveTerrainState(const GrowOptions& o) {
   bool file_elevation = false;
   double elevation = 0;
   if (!o.builtin.empty()) {
-    Check(AsFlag(terrain::SetTerrainBuiltin(o.builtin, &state), "--builtin"));
+    Check(run::RenameField(terrain::SetTerrainBuiltin(o.builtin, &state), kFieldFlags));
   } else if (!o.contour.empty()) {
     Result<std::string> text = ReadFile(o.contour, "--contour", kMaxContourFileBytes);
     if (!text.ok()) Fail(text.status());
     Result<terrain::SeedFile> file = terrain::ParseContourJson(*text);
     if (!file.ok()) Fail(file.status().Within("--contour"));
     // A contour that cannot seed a mountain is the file's fault: name the flag (Grow checks again).
-    Result<terrain::Ring> checked = terrain::CheckSeed(file->ring);
-    if (!checked.ok()) Fail(Status::Error("--contour", checked.status().message()));
+    if (!o.repair) {
+      Result<terrain::Ring> checked = terrain::CheckSeed(file->ring);
+      if (!checked.ok()) Fail(run::RenameField(checked.status(), kFieldFlags));
+    }
     state.builtin.clear();
     state.points = file->ring;
     file_elevation = file->has_elevation;
@@ -83,16 +116,18 @@ terrain::TerrainState ResolveTerrainState(const GrowOptions& o) {
   }
   // Without --url the preset is always applied (the built-in's d, Δh, h0, then the method's rows).
   if (!o.method.empty() || o.url.empty())
-    Check(AsFlag(terrain::SetTerrainPreset(o.method, &state), "--method"));
+    Check(run::RenameField(terrain::SetTerrainPreset(o.method, &state), kFieldFlags));
   if (file_elevation) Check(AsFlag(state.params.Set(TerrainParam::kH0, elevation), "elevation"));
   if (!o.params_file.empty()) {
     Result<std::string> text = ReadFile(o.params_file, "--params", kMaxParamsFileBytes);
     if (!text.ok()) Fail(text.status());
     Check(terrain::ApplyTerrainStateJson(*text, &state).Within("--params " + o.params_file));
   }
-  if (!o.seed.empty()) Check(AsFlag(state.params.SetFromText("seed", o.seed), "--seed"));
+  if (!o.seed.empty())
+    Check(run::RenameField(state.params.SetFromText("seed", o.seed), kFieldFlags));
   for (const std::string& s : o.sets) Check(state.params.SetFromAssignment(s).Within("--set"));
-  if (o.res != 0) Check(AsFlag(state.params.Set(TerrainParam::kRes, o.res), "--res"));
+  if (o.res != 0) Check(run::RenameField(state.params.Set(TerrainParam::kRes, o.res), kFieldFlags));
+  if (o.repair && state.builtin.empty()) RepairSeed(o, &state);
   return state;
 }
 
@@ -108,6 +143,14 @@ void CheckOutPath(const std::string& path, const std::string& flag,
   Fail(Status::Error(flag, "'" + path + "' must end in " + allowed));
 }
 
+// The format of TerrainRun::Export a --contours path asks for, by its extension.
+std::string ContoursFormat(const std::string& path) {
+  const std::string ext = Extension(path);
+  return ext == ".json" ? "json" : ext == ".geojson" ? "geojson" : "svg";
+}
+
+// terrain grow: an adapter over terrain::TerrainRun (core/terrain/terrain_run.h): flags into a
+// state, the run, its outputs written all or none, its stats with the CLI's timings.
 int RunGrow(const GrowOptions& o, std::ostream& out) {
   const auto t0 = std::chrono::steady_clock::now();
   CheckOutPath(o.contours_out, "--contours", {".json", ".geojson", ".svg"});
@@ -119,65 +162,39 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
                                          "' is the --heightmap sidecar; "
                                          "must be another file"));
   }
-  terrain::TerrainState state = ResolveTerrainState(o);
-  const terrain::TerrainParams& params = state.params;
+  const terrain::TerrainState state = ResolveTerrainState(o);
   const Budget budget = ResolveBudget(o.budget);
-  Result<terrain::Ring> seed = terrain::StateSeed(state);
-  if (!seed.ok()) Fail(seed.status());
-  {
-    // The heightfield alone ((res + 2)² cells at most) must fit before anything grows.
-    const double side = params.GetInt(TerrainParam::kRes) + 2.0;
-    Check(CheckEstimate(terrain::EstimateHeightfield(terrain::Terrain{}, {side, side}), budget,
-                        terrain::kTerrainSurfaceChange));
+  terrain::TerrainRunPlan plan;
+  plan.words = kFieldFlags;
+  if (!o.out.empty()) plan.outputs.push_back(terrain::TerrainOutput::kGlb);
+  if (!o.heightmap.empty()) plan.outputs.push_back(terrain::TerrainOutput::kHeightmap);
+  if (!o.contours_out.empty())
+    plan.outputs.push_back(*terrain::TerrainOutputOfFormat(ContoursFormat(o.contours_out)));
+  Result<terrain::TerrainRun> run = terrain::TerrainRun::Start(state, budget, std::move(plan));
+  if (!run.ok()) Fail(run.status());
+  const Status advanced = run->Advance({});
+  ReportTruncated(run->truncated_by());
+  if (std::getenv("NIWA_BUDGET_TRACE") && run->checked_estimate()) {  // docs/budgets.md
+    const Estimate& e = *run->checked_estimate();
+    std::fprintf(stderr, "budget: %.0f MB %.2f s (%s)\n", e.memory_bytes / 1048576, e.seconds,
+                 e.what.c_str());
   }
-  const terrain::TerrainGrowLimits limits = terrain::TerrainLimits(params, budget);
-  Result<terrain::Terrain> t = terrain::Grow(*seed, params, &limits);
-  if (!t.ok()) Fail(t.status());
-  ReportTruncated(t->counts.truncated_by);
-  {
-    // The heightfield and every output on top of the grown contours, refused before they start.
-    const terrain::GridSize grid = terrain::TerrainGridSize(*t, params.GetInt(TerrainParam::kRes));
-    Estimate e = terrain::EstimateTerrainGrown(*t, limits) + terrain::EstimateHeightfield(*t, grid);
-    if (!o.out.empty())
-      e = e + terrain::EstimateTerrainOutput(*t, grid, terrain::TerrainOutput::kGlb);
-    if (!o.heightmap.empty())
-      e = e + terrain::EstimateTerrainOutput(*t, grid, terrain::TerrainOutput::kHeightmap);
-    if (!o.contours_out.empty()) {
-      const std::string ext = Extension(o.contours_out);
-      e = e + terrain::EstimateTerrainOutput(*t, grid,
-                                             ext == ".json" ? terrain::TerrainOutput::kContoursJson
-                                             : ext == ".geojson" ? terrain::TerrainOutput::kGeoJson
-                                                                 : terrain::TerrainOutput::kSvg);
-    }
-    if (std::getenv("NIWA_BUDGET_TRACE")) {  // calibration (docs/budgets.md)
-      std::fprintf(stderr, "budget: %.0f MB %.2f s (%s)\n", e.memory_bytes / 1048576, e.seconds,
-                   e.what.c_str());
-    }
-    Check(CheckEstimate(e, budget, terrain::kTerrainSurfaceChange));
-  }
-  const auto t1 = std::chrono::steady_clock::now();
-  terrain::Heightfield hf = terrain::BuildHeightfield(*t, params.GetInt(TerrainParam::kRes));
+  Check(advanced);
   const auto t2 = std::chrono::steady_clock::now();
   std::vector<OutputFile> files;
   if (!o.contours_out.empty()) {
-    const std::string ext = Extension(o.contours_out);
-    files.push_back({"--contours", o.contours_out,
-                     ext == ".json"      ? terrain::TerrainToJson(*t)
-                     : ext == ".geojson" ? terrain::TerrainToGeoJson(*t)
-                                         : terrain::TerrainToSvg(*t)});
+    Result<std::string> text = run->Export(ContoursFormat(o.contours_out));
+    if (!text.ok()) Fail(text.status().Within("--contours"));
+    files.push_back({"--contours", o.contours_out, *text});
   }
   if (!o.out.empty()) {
-    nlohmann::json extras;
-    extras["generator"] = "niwa terrain grow";
-    extras["url"] = terrain::EncodeTerrainHash(state);
-    Result<std::vector<unsigned char>> glb = gltf::WriteGlb(
-        terrain::TerrainDocument(*t, hf, params.GetBool(TerrainParam::kTint), extras.dump()));
+    Result<std::string> glb = run->Export("glb");
     if (!glb.ok()) Fail(glb.status().Within("--out"));
-    files.push_back({"--out", o.out, std::string(glb->begin(), glb->end())});
+    files.push_back({"--out", o.out, *glb});
   }
   if (!o.heightmap.empty()) {
-    Result<terrain::Heightmap> hm = terrain::EncodeHeightmap(hf);
-    if (!hm.ok()) Fail(hm.status());
+    Result<terrain::Heightmap> hm = run->EncodeHeightmapFiles();
+    if (!hm.ok()) Fail(run::RenameField(hm.status(), kFieldFlags));
     files.push_back({"--heightmap", o.heightmap, std::string(hm->png.begin(), hm->png.end())});
     const std::string stem = o.heightmap.substr(0, o.heightmap.size() - 4);
     files.push_back({"--heightmap", stem + ".json", hm->sidecar_json});
@@ -186,16 +203,18 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   WriteAllOrNone(files);
   const auto t4 = std::chrono::steady_clock::now();
   if (o.stats) {
-    terrain::TerrainStats s = terrain::ComputeStats(*t, &hf);
+    nlohmann::json j = nlohmann::json::parse(run->StatsJson());
     const auto t5 = std::chrono::steady_clock::now();
-    nlohmann::json j = terrain::TerrainStatsJson(state, *t, hf, s);
+    const terrain::GrowCounts& counts = run->terrain().counts;
     j["ms"] = std::chrono::duration<double, std::milli>(t5 - t0).count();  // the whole run
-    j["ms_grow"] = std::chrono::duration<double, std::milli>(t1 - t0).count();
-    j["ms_shrink"] = t->counts.ms_shrink;
-    j["ms_mpd"] = t->counts.ms_mpd;
-    j["ms_fd"] = t->counts.ms_fd;
-    j["ms_loops"] = t->counts.ms_loops;
-    j["ms_heightfield"] = std::chrono::duration<double, std::milli>(t2 - t1).count();
+    // Up to the heightfield: the flags, the state, the checks and the grow.
+    j["ms_grow"] =
+        std::chrono::duration<double, std::milli>(t2 - t0).count() - run->ms_heightfield();
+    j["ms_shrink"] = counts.ms_shrink;
+    j["ms_mpd"] = counts.ms_mpd;
+    j["ms_fd"] = counts.ms_fd;
+    j["ms_loops"] = counts.ms_loops;
+    j["ms_heightfield"] = run->ms_heightfield();
     j["ms_encode"] = std::chrono::duration<double, std::milli>(t3 - t2).count();
     j["ms_write"] = std::chrono::duration<double, std::milli>(t4 - t3).count();
     j["ms_stats"] = std::chrono::duration<double, std::milli>(t5 - t4).count();
@@ -298,7 +317,7 @@ int RunShrink(const ShrinkCommandOptions& o, std::ostream& out) {
   double d = o.d;
   if (!o.builtin.empty()) {
     Result<terrain::Ring> r = terrain::BuiltinSeed(o.builtin);
-    if (!r.ok()) Fail(r.status().Within("--builtin"));
+    if (!r.ok()) Fail(run::RenameField(r.status(), kFieldFlags));
     seed = *r;
     for (const terrain::SeedInfo& info : terrain::BuiltinSeeds())
       if (info.name == o.builtin && d == 0) d = info.d;
@@ -408,6 +427,9 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
                    "override it");
   grow->add_option("--res", o->res, "Heightfield cells along the longer side (the res row)");
   grow->add_flag("--stats", o->stats, "Print the statistics as one JSON object");
+  grow->add_flag("--repair", o->repair,
+                 "Make a seed contour that crosses itself simple first, as the page does a drawing "
+                 "(§4.4 loop removal, else its largest simple piece), with a notice");
   grow->add_option("--contours", o->contours_out,
                    "Write the contour tree as .json, .geojson (Polygons, summits) or .svg (plan)");
   grow->add_option(

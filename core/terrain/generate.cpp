@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "math/det_math.h"
+#include "run/study_run.h"
 #include "terrain/fourier.h"
 #include "terrain/loops.h"
 #include "terrain/offset.h"
@@ -294,7 +295,8 @@ Result<Ring> CheckSeed(const Ring& seed) {
   return r;
 }
 
-Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, const TerrainGrowLimits* limits) {
+Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, const TerrainGrowLimits* limits,
+                     const GrowWatch& watch) {
   NIWA_RETURN_IF_ERROR(CheckTerrainParams(p));
   Result<Ring> seed = CheckSeed(seed_in);
   if (!seed.ok()) return seed.status();
@@ -322,6 +324,7 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, const TerrainG
     out.outward = true;
     Ring cur = *seed;
     for (int k = 0; k < p.GetInt(P::kDown); ++k) {
+      if (watch && !watch(-k - 1)) return run::CancelledStatus();
       if (limits != nullptr) {
         t.counts.truncated_by = CheckTerrainContour(cur, 0, p, work, *limits, -k - 1);
         if (!t.counts.truncated_by.empty()) break;
@@ -375,6 +378,7 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, const TerrainG
     }
     const Ring parent = t.contours[static_cast<std::size_t>(at)].ring;
     const int level = t.contours[static_cast<std::size_t>(at)].level + 1;
+    if (watch && !watch(level)) return run::CancelledStatus();
     if (limits != nullptr) {
       t.counts.truncated_by = CheckTerrainContour(parent, d0, p, work, *limits, level);
       if (!t.counts.truncated_by.empty()) break;

@@ -4,6 +4,8 @@
 // build surfaces (heightfield.h) or read files (contour_io.h).
 #pragma once
 
+#include <functional>
+
 #include "base/status.h"
 #include "random/pcg32.h"
 #include "terrain/contour.h"
@@ -39,9 +41,13 @@ Vec2 PoleOfInaccessibility(const Ring& ring, double* radius);
 
 struct TerrainGrowLimits;  // terrain_budget.h
 
+// Called before each contour is shrunk (or enlarged below the seed) with the level it grows (1, 2,
+// ...; −1, −2, ... below the seed); false cancels: Grow returns run::CancelledStatus().
+using GrowWatch = std::function<bool(int level)>;
+
 // Grows the whole mountain from the seed with the table's method and constants; with `limits`,
 // stops before a contour whose worst case would cross them (counts.truncated_by holds the line).
 Result<Terrain> Grow(const Ring& seed, const TerrainParams& params,
-                     const TerrainGrowLimits* limits = nullptr);
+                     const TerrainGrowLimits* limits = nullptr, const GrowWatch& watch = {});
 
 }  // namespace niwa::terrain

@@ -112,7 +112,7 @@ Result<Ring> BuiltinSeed(const std::string& name) {
                 {460, 200}, {260, 200}, {260, 115}, {200, 115}, {200, 200}, {0, 200}};
   }
   return Status::Error(
-      "--builtin",
+      "builtin",
       "'" + name + "' is unknown; must be disk, dumbbell, lobes7, jacksboro or valleys");
 }
 

@@ -67,27 +67,43 @@ TerrainGrowLimits TerrainLimits(const TerrainParams& params, const Budget& budge
   return l;
 }
 
-std::string CheckTerrainContour(const Ring& parent, double d0, const TerrainParams& params,
-                                const TerrainWork& work, const TerrainGrowLimits& l, int level) {
-  const double n = static_cast<double>(parent.size());
-  double m = n;
-  const int method = params.GetInt(TerrainParam::kMethod);
-  if (method != 0) {  // §4.1-§4.3 perturb: midpoint splits, the Fourier resampling
+namespace {
+
+// The worst case of a contour's children (terrain_budget.h TerrainGrowLimits): m vertices.
+double WorstChildren(const Ring& parent, double d0, const TerrainParams& params,
+                     const TerrainGrowLimits& l) {
+  double m = static_cast<double>(parent.size());
+  if (params.GetInt(TerrainParam::kMethod) != 0) {  // §4.1-§4.3 perturb: splits, resampling
     if (d0 > 0) m = std::max(m, Perimeter(parent) / d0);
     m = std::max(m, static_cast<double>(params.GetInt(TerrainParam::kNfft)));
   }
-  m *= l.growth;
+  return m * l.growth;
+}
+
+double CheckBytes(const TerrainGrowLimits& l, double held, double m) {
+  return l.base_bytes + l.bytes_per_vertex * held + l.transient_bytes_per_vertex * m;
+}
+
+double CheckSeconds(const TerrainGrowLimits& l, double worked, double n, double m) {
+  return l.seconds_per_vertex * (worked + n + m);
+}
+
+}  // namespace
+
+std::string CheckTerrainContour(const Ring& parent, double d0, const TerrainParams& params,
+                                const TerrainWork& work, const TerrainGrowLimits& l, int level) {
+  const double n = static_cast<double>(parent.size());
+  const double m = WorstChildren(parent, d0, params, l);
   const std::string where = "at level " + std::to_string(level) + " of " +
                             std::to_string(params.GetInt(TerrainParam::kMaxLevels));
-  const double bytes =
-      l.base_bytes + l.bytes_per_vertex * work.vertices_held + l.transient_bytes_per_vertex * m;
+  const double bytes = CheckBytes(l, work.vertices_held, m);
   if (l.max_bytes >= 0 && bytes > l.max_bytes) {
     return TruncatedLine(l.memory_limit, where,
                          FormatCount(work.vertices_held + m) +
                              " contour vertices would need more than " + FormatBytes(l.max_bytes),
                          kTerrainGrowChange + RaiseHint(l.memory_limit));
   }
-  const double seconds = l.seconds_per_vertex * (work.vertices_worked + n + m);
+  const double seconds = CheckSeconds(l, work.vertices_worked, n, m);
   if (l.max_seconds >= 0 && seconds > l.max_seconds) {
     return TruncatedLine(l.seconds_limit, where,
                          "shrinking " + FormatCount(work.vertices_worked + n + m) +
@@ -96,6 +112,25 @@ std::string CheckTerrainContour(const Ring& parent, double d0, const TerrainPara
                          kTerrainGrowChange + RaiseHint(l.seconds_limit));
   }
   return "";
+}
+
+bool GrowFitsLimits(const Terrain& t, const TerrainParams& params, const TerrainGrowLimits& l) {
+  if (t.contours.empty()) return true;
+  // Grow's d0: the seed's mean edge (the down chain's checks use 0, which asks less).
+  const ContourNode* seed = &t.contours[0];
+  for (const ContourNode& c : t.contours)
+    if (c.level == 0) seed = &c;
+  const double d0 =
+      seed->ring.empty() ? 0 : Perimeter(seed->ring) / static_cast<double>(seed->ring.size());
+  const double held = Vertices(t), worked = t.counts.vertices_worked;
+  for (const ContourNode& c : t.contours) {
+    const double m = WorstChildren(c.ring, d0, params, l);
+    if (l.max_bytes >= 0 && CheckBytes(l, held, m) > l.max_bytes) return false;
+    if (l.max_seconds >= 0 &&
+        CheckSeconds(l, worked, static_cast<double>(c.ring.size()), m) > l.max_seconds)
+      return false;
+  }
+  return true;
 }
 
 Estimate EstimateTerrainGrown(const Terrain& t, const TerrainGrowLimits& l) {

@@ -43,6 +43,12 @@ std::string CheckTerrainContour(const Ring& parent, double d0, const TerrainPara
                                 const TerrainWork& work, const TerrainGrowLimits& limits,
                                 int level);
 
+// True when every check Grow made for `terrain` passes under `limits` too, by an upper bound (the
+// final vertices held and worked with each contour's worst case): growing it again within them
+// gives the same contours (TerrainRun keeps them when only res, which shares the budget, changed).
+bool GrowFitsLimits(const Terrain& terrain, const TerrainParams& params,
+                    const TerrainGrowLimits& limits);
+
 // The grown contours' estimate (what Grow's checks counted).
 Estimate EstimateTerrainGrown(const Terrain& terrain, const TerrainGrowLimits& limits);
 
@@ -61,8 +67,8 @@ enum class TerrainOutput { kGlb, kHeightmap, kContoursJson, kGeoJson, kSvg };
 // One output of the grown terrain on `grid` (the .glb's surface has a vertex a cell).
 Estimate EstimateTerrainOutput(const Terrain& terrain, const GridSize& grid, TerrainOutput kind);
 
-// What the refusal and truncation lines tell the user to change.
+// What the truncation lines tell the user to change (the refusals before a heightfield say "lower
+// res" in the front end's words: terrain_run.h).
 inline constexpr char kTerrainGrowChange[] = "raise d, or lower max_levels or the seed's points";
-inline constexpr char kTerrainSurfaceChange[] = "lower --res";
 
 }  // namespace niwa::terrain

@@ -143,7 +143,7 @@ gltf::Document TerrainDocument(const Terrain& t, const Heightfield& hf, bool tin
 }
 
 Result<Heightmap> EncodeHeightmap(const Heightfield& hf) {
-  if (hf.width <= 0 || hf.height <= 0) return Status::Error("--heightmap", "empty heightfield");
+  if (hf.width <= 0 || hf.height <= 0) return Status::Error("heightmap", "empty heightfield");
   double hmin = hf.h[0], hmax = hmin;
   for (double h : hf.h) {
     hmin = std::min(hmin, h);
@@ -172,7 +172,7 @@ Result<Heightmap> EncodeHeightmap(const Heightfield& hf) {
   image::PngWriteOptions options;
   options.text.push_back({"niwa-heightmap", j.dump()});
   Result<std::vector<unsigned char>> png = image::EncodeGray16Png(img, options);
-  if (!png.ok()) return png.status().Within("--heightmap");
+  if (!png.ok()) return png.status().Within("heightmap");
   out.png = std::move(png).value();
   return out;
 }

@@ -1,7 +1,7 @@
 // Terrain CLI: native == WASM `niwa terrain grow --stats` (minus the ms fields) and the contour-tree
 // .json, byte for byte, for every built-in seed × method and two RNG seeds, and `terrain shrink`'s
 // JSON and figure SVG for every seed × join; hostile input is one line naming the field, exit 2, no
-// file left behind.
+// file left behind; --repair grows a crossing contour the same in both builds.
 import { existsSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -58,5 +58,19 @@ for (const [args, field] of hostile) {
     check(r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${field}`) && !existsSync(out),
       `${buildName(cmd)} ${args.join(' ')}: exit ${r.status}, "${lines[0]}"`);
   }
+}
+
+// --repair: the crossing contour made simple as the page makes a drawing (core/terrain/
+// contour_repair.h), with one notice line; the same mountain in both builds, and its link regrows it.
+const repaired = [native, wasm].map((cmd) => spawn(cmd, ['terrain', 'grow', '--contour', crossing, '--repair', '--stats']));
+for (const [k, r] of repaired.entries()) {
+  check(r.status === 0 && /^niwa: repaired: the seed contour crossed itself \((\d+ loops? cut, §4\.4 method 2|its largest simple piece kept)\): \d+ points\n$/.test(r.stderr),
+    `${buildName([native, wasm][k])} --contour crossing.json --repair: exit ${r.status}, "${r.stderr.trim()}"`);
+}
+if (repaired.every((r) => r.status === 0)) {
+  const [a, b] = repaired.map((r) => withoutMs(JSON.parse(r.stdout)));
+  check(JSON.stringify(a) === JSON.stringify(b), `--repair: --stats native == WASM (${a.levels} levels)`);
+  const again = withoutMs(JSON.parse(run(native, ['terrain', 'grow', '--url', a.url, '--stats'])));
+  check(JSON.stringify(again) === JSON.stringify(a), `--repair: --url of its stats regrows it (${a.url.slice(0, 60)})`);
 }
 finish();

@@ -30,24 +30,19 @@
 #include <chrono>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "buffers.h"
-#include "io/gltf_writer.h"
 #include "page_budget.h"
 #include "params/param_json.h"
+#include "run/field_names.h"
 #include "terrain/contour_io.h"
-#include "terrain/generate.h"
-#include "terrain/heightfield.h"
-#include "terrain/loops.h"
-#include "terrain/offset.h"
-#include "terrain/polygon.h"
+#include "terrain/contour_repair.h"
 #include "terrain/seeds.h"
-#include "terrain/terrain_budget.h"
-#include "terrain/terrain_output.h"
 #include "terrain/terrain_params.h"
-#include "terrain/terrain_report.h"
+#include "terrain/terrain_run.h"
 #include "terrain/terrain_state.h"
 #include "terrain/terrain_surface.h"
 
@@ -114,13 +109,12 @@ std::string TerrainDecodeHash(const std::string& hash) {
   return Dump(out);
 }
 
-// A drawn seed contour ([[x, y], ...] in metres) checked as Grow checks a seed (CheckSeed); one
-// that crosses itself is repaired by the paper's own loop removal (§4.4 method 2: cut from each
-// crossing to its twin, walking from the longest run, as the generator untwists a perturbed
-// contour), else by the positive-winding union's largest ring. Returns {points, repaired,
-// loops_removed, method: "loops" | "union"} (the points as given when nothing was wrong; the
-// repaired ring snapped to the 1/1024 m grid and counter-clockwise otherwise) or {error} (one line
-// naming "contour").
+// A drawn seed contour ([[x, y], ...] in metres, at most kMaxStatePoints: it goes into the link)
+// checked as Grow checks a seed and, when it crosses itself, repaired by core/terrain/
+// contour_repair.h (what `niwa terrain grow --repair` does). Returns {points, repaired,
+// loops_removed} when nothing was wrong (the points as given), {method: "loops" | "union", points,
+// repaired, loops_removed, reason} when repaired (snapped to the 1/1024 m grid, counter-
+// clockwise), or {error} (one line naming "contour").
 std::string TerrainRepairContour(const std::string& points_json) {
   ordered_json out;
   json j = json::parse(points_json, nullptr, false);
@@ -145,45 +139,24 @@ std::string TerrainRepairContour(const std::string& points_json) {
     out["error"] = points_ok.Line();
     return Dump(out);
   }
-  Result<terrain::Ring> checked = terrain::CheckSeed(ring);
-  if (checked.ok()) {
+  Result<terrain::ContourRepair> r = terrain::RepairContour(ring);
+  if (!r.ok()) {
+    out["error"] = r.status().Line();
+    return Dump(out);
+  }
+  if (!r->repaired) {
     out["points"] = j;
     out["repaired"] = false;
     out["loops_removed"] = 0;
     return Dump(out);
   }
-  const auto as_json = [](const terrain::Ring& r) {
-    json pts = json::array();
-    for (const terrain::Vec2& v : r) pts.push_back({v.x, v.y});
-    return pts;
-  };
-  int removed = 0;
-  const terrain::Ring snapped = terrain::Snap(ring);
-  Result<terrain::Ring> untwisted =
-      terrain::CheckSeed(terrain::Normalise(terrain::UntwistRing(snapped, 2, 5, &removed)));
-  if (!untwisted.ok()) {
-    terrain::ShrinkCounts counts;
-    std::vector<terrain::Ring> pieces =
-        terrain::PositiveUnion({terrain::Normalise(snapped)}, &counts);
-    const terrain::Ring* best = nullptr;
-    for (const terrain::Ring& piece : pieces)
-      if (!best || std::fabs(terrain::Area(piece)) > std::fabs(terrain::Area(*best))) best = &piece;
-    if (best) untwisted = terrain::CheckSeed(*best);
-    out["method"] = "union";
-  } else {
-    out["method"] = "loops";
-  }
-  if (!untwisted.ok()) {
-    out["error"] = Status::Error("contour",
-                                 "crosses itself and could not be repaired; must be one simple "
-                                 "closed loop")
-                       .Line();
-    return Dump(out);
-  }
-  out["points"] = as_json(*untwisted);
+  json pts = json::array();
+  for (const terrain::Vec2& v : r->ring) pts.push_back({v.x, v.y});
+  out["method"] = r->method;
+  out["points"] = pts;
   out["repaired"] = true;
-  out["loops_removed"] = removed;
-  out["reason"] = checked.status().Line();
+  out["loops_removed"] = r->loops_removed;
+  out["reason"] = r->reason;
   return Dump(out);
 }
 
@@ -212,6 +185,9 @@ std::string TerrainParseContour(const std::string& text) {
   return Dump(out);
 }
 
+// An adapter over core/terrain/terrain_run.h: one TerrainRun kept from grow to grow (an edit of
+// tint or res re-does only its stage, TerrainRun::Update), the page's surface buffers filled from
+// it.
 class TerrainLab {
  public:
   // Grows the state (JSON, as ApplyTerrainStateJson reads it) and builds its heightfield: "" or
@@ -222,38 +198,26 @@ class TerrainLab {
     Status s = terrain::ApplyTerrainStateJson(state_json, &state);
     if (s.ok()) s = terrain::CheckTerrainParams(state.params);
     if (!s.ok()) return s.Line();
-    Result<terrain::Ring> seed = terrain::StateSeed(state);
-    if (!seed.ok()) return seed.status().Line();
     // The page's budget (docs/budgets.md): the contours stop at a level with the line in the
-    // stats; a heightfield and surface buffers beyond it are refused before they are built.
-    const Budget budget = PageBudget();
-    {
-      const double side = state.params.GetInt(TerrainParam::kRes) + 2.0;
-      const Status fits = CheckEstimate(
-          terrain::EstimateHeightfield(terrain::Terrain{}, {side, side}), budget, "lower res");
-      if (!fits.ok()) return fits.Line();
+    // stats; a heightfield and surface buffers (about the .glb's mesh) beyond it are refused
+    // before they are built.
+    if (!run_) {
+      terrain::TerrainRunPlan plan;
+      plan.outputs = {terrain::TerrainOutput::kGlb};
+      Result<terrain::TerrainRun> run = terrain::TerrainRun::Start(state, PageBudget(), plan);
+      if (!run.ok()) return run.status().Line();
+      run_.emplace(std::move(run).value());
+    } else {
+      s = run_->Update(state);
+      if (!s.ok()) return s.Line();
     }
-    const terrain::TerrainGrowLimits limits = terrain::TerrainLimits(state.params, budget);
-    Result<terrain::Terrain> t = terrain::Grow(*seed, state.params, &limits);
-    if (!t.ok()) return t.status().Line();
-    {
-      const terrain::GridSize grid =
-          terrain::TerrainGridSize(*t, state.params.GetInt(TerrainParam::kRes));
-      // The surface buffers the worker copies out are about the .glb's mesh.
-      const Status fits = CheckEstimate(
-          terrain::EstimateTerrainGrown(*t, limits) + terrain::EstimateHeightfield(*t, grid) +
-              terrain::EstimateTerrainOutput(*t, grid, terrain::TerrainOutput::kGlb),
-          budget, "lower res");
-      if (!fits.ok()) return fits.Line();
-    }
-    const auto t1 = Clock::now();
-    state_ = state;
-    terrain_ = std::move(t).value();
-    hf_ = terrain::BuildHeightfield(terrain_, state_.params.GetInt(TerrainParam::kRes));
+    const int built = run_->counts().heightfields;
+    s = run_->Advance({});
+    if (!s.ok()) return s.Line();
+    ms_heightfield_ = run_->ms_heightfield();
+    ms_grow_ = Ms(t0, Clock::now()) - ms_heightfield_;
     const auto t2 = Clock::now();
-    ms_grow_ = Ms(t0, t1);
-    ms_heightfield_ = Ms(t1, t2);
-    terrain::BuildSurfaceBuffers(terrain_, hf_, &flat_);
+    if (run_->counts().heightfields != built || !grown_) run_->FillSurfaceBuffers(&flat_);
     ms_buffers_ = Ms(t2, Clock::now());
     download_.clear();
     grown_ = true;
@@ -262,107 +226,71 @@ class TerrainLab {
 
   // The --stats object of `niwa terrain grow --url HASH --stats` for the last grow, without its
   // ms* fields (timings are in timingsJson), or "{}".
-  std::string statsJson() const {
-    if (!grown_) return "{}";
-    terrain::TerrainStats s = terrain::ComputeStats(terrain_, &hf_);
-    // The same object as native_cli/terrain_commands.cpp RunGrow (core/terrain/terrain_report).
-    json j = terrain::TerrainStatsJson(state_, terrain_, hf_, s);
-    return Dump(j);
-  }
+  std::string statsJson() const { return grown_ ? run_->StatsJson() : "{}"; }
 
-  // {ms_grow, ms_heightfield, ms_buffers, ms_shrink, ms_mpd, ms_fd, ms_loops} of the last grow.
+  // {ms_grow, ms_heightfield, ms_buffers, ms_shrink, ms_mpd, ms_fd, ms_loops, grows,
+  // heightfields} of the last grow (the core's four of the grow its contours come from; grows and
+  // heightfields: how many the lab's run has done, so an edit that re-did less is seen).
   std::string timingsJson() const {
+    const terrain::GrowCounts counts = grown_ ? run_->terrain().counts : terrain::GrowCounts{};
     ordered_json j;
     j["ms_grow"] = ms_grow_;
     j["ms_heightfield"] = ms_heightfield_;
     j["ms_buffers"] = ms_buffers_;
-    j["ms_shrink"] = terrain_.counts.ms_shrink;
-    j["ms_mpd"] = terrain_.counts.ms_mpd;
-    j["ms_fd"] = terrain_.counts.ms_fd;
-    j["ms_loops"] = terrain_.counts.ms_loops;
+    j["ms_shrink"] = counts.ms_shrink;
+    j["ms_mpd"] = counts.ms_mpd;
+    j["ms_fd"] = counts.ms_fd;
+    j["ms_loops"] = counts.ms_loops;
+    j["grows"] = run_ ? run_->counts().grows : 0;
+    j["heightfields"] = run_ ? run_->counts().heightfields : 0;
     return Dump(j);
   }
 
-  std::string hash() const { return grown_ ? terrain::EncodeTerrainHash(state_) : ""; }
-  std::string stateJson() const { return grown_ ? Dump(StateObject(state_)) : "{}"; }
+  std::string hash() const { return grown_ ? run_->Hash("") : ""; }
+  std::string stateJson() const { return grown_ ? Dump(StateObject(run_->state())) : "{}"; }
 
   // {min: [x, y], max: [x, y], h_min, h_max, h0, dh, level_min, level_max, width, height}: the
   // heightfield's box (plan metres), its elevations, the contour levels (negative below the seed:
   // `down`) and its grid.
   std::string boundsJson() const {
     if (!grown_) return "{}";
+    const terrain::Heightfield& hf = run_->heightfield();
+    const terrain::Terrain& t = run_->terrain();
     ordered_json j;
-    j["min"] = {hf_.x0, hf_.y1 - hf_.height * hf_.cell};
-    j["max"] = {hf_.x0 + hf_.width * hf_.cell, hf_.y1};
-    const auto [lo, hi] = std::minmax_element(hf_.h.begin(), hf_.h.end());
-    j["h_min"] = hf_.h.empty() ? 0.0 : *lo;
-    j["h_max"] = hf_.h.empty() ? 0.0 : *hi;
-    j["h0"] = terrain_.h0;
-    j["dh"] = terrain_.dh;
+    j["min"] = {hf.x0, hf.y1 - hf.height * hf.cell};
+    j["max"] = {hf.x0 + hf.width * hf.cell, hf.y1};
+    const auto [lo, hi] = std::minmax_element(hf.h.begin(), hf.h.end());
+    j["h_min"] = hf.h.empty() ? 0.0 : *lo;
+    j["h_max"] = hf.h.empty() ? 0.0 : *hi;
+    j["h0"] = t.h0;
+    j["dh"] = t.dh;
     int level_min = 0, level_max = 0;
-    for (const terrain::ContourNode& node : terrain_.contours) {
+    for (const terrain::ContourNode& node : t.contours) {
       level_min = std::min(level_min, node.level);
       level_max = std::max(level_max, node.level);
     }
     j["level_min"] = level_min;
     j["level_max"] = level_max;
-    j["width"] = hf_.width;  // the surface grid's vertices per row and rows
-    j["height"] = hf_.height;
+    j["width"] = hf.width;  // the surface grid's vertices per row and rows
+    j["height"] = hf.height;
     return Dump(j);
   }
 
   // One download of the last grow into the "download" group: "" or one error line.
-  // glb: the bytes of `niwa terrain grow --url HASH --out F.glb` (the same asset extras);
+  // glb: the bytes of `niwa terrain grow --url HASH --out F.glb` (the run's one document);
   // heightmap / sidecar: --heightmap's .png and its .json; json / geojson / svg: --contours.
   std::string build(const std::string& format) {
     if (!grown_) return "download: nothing grown yet";
-    {
-      const terrain::TerrainOutput kind = format == "glb" ? terrain::TerrainOutput::kGlb
-                                          : format == "heightmap" || format == "sidecar"
-                                              ? terrain::TerrainOutput::kHeightmap
-                                          : format == "geojson" ? terrain::TerrainOutput::kGeoJson
-                                          : format == "svg"     ? terrain::TerrainOutput::kSvg
-                                                            : terrain::TerrainOutput::kContoursJson;
-      const terrain::GridSize grid = {static_cast<double>(hf_.width),
-                                      static_cast<double>(hf_.height)};
-      const Status fits = CheckEstimate(
-          terrain::EstimateTerrainOutput(terrain_, grid, terrain::TerrainOutput::kGlb) +
-              terrain::EstimateHeightfield(terrain_, grid) +
-              terrain::EstimateTerrainOutput(terrain_, grid, kind),
-          PageBudget(), "lower res");
-      if (!fits.ok()) return fits.Line();
-    }
-    std::string text;
-    if (format == "glb") {
-      json extras;  // as the CLI writes it, so the page's .glb equals the CLI's byte for byte
-      extras["generator"] = "niwa terrain grow";
-      extras["url"] = terrain::EncodeTerrainHash(state_);
-      Result<std::vector<unsigned char>> glb = gltf::WriteGlb(terrain::TerrainDocument(
-          terrain_, hf_, state_.params.GetBool(TerrainParam::kTint), extras.dump()));
-      if (!glb.ok()) return glb.status().Within("download").Line();
-      download_ = std::move(glb).value();
-      return "";
-    }
-    if (format == "heightmap" || format == "sidecar") {
-      Result<terrain::Heightmap> hm = terrain::EncodeHeightmap(hf_);
-      if (!hm.ok()) return hm.status().Line();
-      if (format == "heightmap") {
-        download_ = std::move(hm->png);
-        return "";
-      }
-      text = hm->sidecar_json;
-    } else if (format == "json") {
-      text = terrain::TerrainToJson(terrain_);
-    } else if (format == "geojson") {
-      text = terrain::TerrainToGeoJson(terrain_);
-    } else if (format == "svg") {
-      text = terrain::TerrainToSvg(terrain_);
-    } else {
-      return Status::Error("download",
-                           "unknown format; must be glb, heightmap, sidecar, json, geojson or svg")
+    const run::FieldNames names = {{"format", "download"}};
+    const Status fits = run_->CheckExport(format);
+    if (!fits.ok()) return run::RenameField(fits, names).Line();
+    Result<std::string> bytes = run_->Export(format);
+    if (!bytes.ok()) {
+      return (format == "glb" ? bytes.status().Within("download")
+                              : run::RenameField(bytes.status(), names))
           .Line();
     }
-    download_.assign(text.begin(), text.end());
+    download_.assign(bytes->begin(), bytes->end());
     return "";
   }
 
@@ -390,9 +318,7 @@ class TerrainLab {
 
  private:
   bool grown_ = false;
-  terrain::TerrainState state_;
-  terrain::Terrain terrain_;
-  terrain::Heightfield hf_;
+  std::optional<terrain::TerrainRun> run_;
   double ms_grow_ = 0, ms_heightfield_ = 0, ms_buffers_ = 0;
   terrain::SurfaceBuffers flat_;  // core/terrain/terrain_surface.h: reused from grow to grow
   std::vector<unsigned char> download_;

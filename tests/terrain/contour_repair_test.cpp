@@ -1,0 +1,96 @@
+// RepairContour (core/terrain/contour_repair.h): a valid seed comes back as given, a contour with a
+// small self-crossing loop is cut by §4.4 method 2 into a valid seed, a bow-tie is repaired to a
+// valid seed, bad points are CheckSeed's error; and `niwa terrain grow --repair` grows the repaired
+// seed (the one the page's drawing becomes).
+#include "terrain/contour_repair.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_runner.h"
+#include "terrain/generate.h"
+#include "terrain/polygon.h"
+#include "terrain/terrain_state.h"
+
+namespace niwa::terrain {
+namespace {
+
+// A square of 100 m whose bottom edge makes one small loop crossing itself near x = 46.7.
+Ring Kinked() {
+  return {{0, 0}, {52, 0}, {56, -6}, {50, -10}, {44, -6}, {48, 3}, {100, 3}, {100, 100}, {0, 100}};
+}
+
+TEST(ContourRepair, AValidSeedComesBackAsGiven) {
+  const Ring clockwise = {{0, 0}, {0, 50}, {80, 50}, {80, 0}};  // CheckSeed takes it (normalises)
+  Result<ContourRepair> r = RepairContour(clockwise);
+  ASSERT_TRUE(r.ok()) << r.status().Line();
+  EXPECT_FALSE(r->repaired);
+  EXPECT_EQ(r->ring, clockwise);
+  EXPECT_EQ(r->method, "");
+  EXPECT_EQ(r->loops_removed, 0);
+}
+
+TEST(ContourRepair, CutsASmallLoopByMethodTwo) {
+  ASSERT_FALSE(CheckSeed(Kinked()).ok());
+  Result<ContourRepair> r = RepairContour(Kinked());
+  ASSERT_TRUE(r.ok()) << r.status().Line();
+  EXPECT_TRUE(r->repaired);
+  EXPECT_EQ(r->method, "loops");
+  EXPECT_EQ(r->loops_removed, 1);
+  EXPECT_EQ(r->reason, CheckSeed(Kinked()).status().Line());
+  Result<Ring> checked = CheckSeed(r->ring);
+  ASSERT_TRUE(checked.ok()) << checked.status().Line();
+  EXPECT_GT(Area(r->ring), 0);  // counter-clockwise
+  // The big square is kept (the loop is ~60 m² of it), on the 1/1024 m grid.
+  EXPECT_GT(Area(r->ring), 9000);
+  for (const Vec2& v : r->ring) EXPECT_EQ(v.x * kGridPerMetre, std::round(v.x * kGridPerMetre));
+}
+
+TEST(ContourRepair, ABowTieBecomesOneSimpleLoop) {
+  const Ring bow = {{0, 0}, {100, 100}, {100, 0}, {0, 100}};
+  Result<ContourRepair> r = RepairContour(bow);
+  ASSERT_TRUE(r.ok()) << r.status().Line();
+  EXPECT_TRUE(r->repaired);
+  EXPECT_TRUE(r->method == "loops" || r->method == "union") << r->method;
+  EXPECT_TRUE(CheckSeed(r->ring).ok());
+}
+
+TEST(ContourRepair, BadPointsAreCheckSeedsError) {
+  for (const Ring& bad :
+       {Ring{{0, 0}, {1, 1}}, Ring{{0, 0}, {NAN, 1}, {2, 0}}, Ring{{0, 0}, {2e6, 1}, {2, 0}}}) {
+    Result<ContourRepair> r = RepairContour(bad);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.status().field(), "contour");
+    EXPECT_EQ(r.status().Line(), CheckSeed(bad).status().Line());
+  }
+}
+
+TEST(ContourRepair, TheCliGrowsTheRepairedSeedWithRepair) {
+  const std::string file = ::testing::TempDir() + "kinked_contour.json";
+  {
+    nlohmann::json pts = nlohmann::json::array();
+    for (const Vec2& v : Kinked()) pts.push_back({v.x, v.y});
+    std::ofstream(file) << nlohmann::json{{"points", pts}}.dump();
+  }
+  CliResult refused = RunNiwa({"terrain", "grow", "--contour", file, "--stats"});
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_EQ(refused.err,
+            "niwa: error: --contour: self-intersects or has no area; must be a simple closed "
+            "polygon\n");
+  CliResult r = RunNiwa({"terrain", "grow", "--contour", file, "--repair", "--stats"});
+  ASSERT_EQ(r.code, 0) << r.err;  // its notice goes to the process's stderr, as truncation's
+  // The state carries the repaired ring (what the page's link carries after its repair).
+  TerrainState state;
+  std::vector<std::string> notices;
+  ApplyTerrainHash(nlohmann::json::parse(r.out)["url"].get<std::string>(), "", &state, &notices);
+  EXPECT_TRUE(notices.empty());
+  EXPECT_EQ(state.points, RepairContour(Kinked())->ring);
+  std::remove(file.c_str());
+}
+
+}  // namespace
+}  // namespace niwa::terrain
