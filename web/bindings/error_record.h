@@ -26,4 +26,9 @@ inline std::string ErrorRecordJson(const Status& status) {
   return ErrorRecord(status).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
+// What a session method that can fail returns: "" when it worked, else the record as JSON text.
+inline std::string ErrorText(const Status& status) {
+  return status.ok() ? std::string() : ErrorRecordJson(status);
+}
+
 }  // namespace niwa

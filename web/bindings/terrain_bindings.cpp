@@ -19,9 +19,9 @@
 //   "download"  bytes (Uint8, after build(format))
 // terrainRepairContour(pointsJson): a drawn contour that crosses itself made simple (below);
 // terrainParseContour(text): an imported contour file's points (below).
-// Calls: grow(stateJson) -> ""/error, then statsJson() (the CLI's --stats minus ms*), hash(),
+// Calls: grow(stateJson) -> ""/error record, then statsJson() (the CLI's --stats minus ms*), hash(),
 // stateJson(), buffers(..), build(format) with format glb | heightmap | sidecar | json | geojson |
-// svg -> ""/error.
+// svg -> ""/error record.
 // Does not: draw, keep more than one mountain, read files, or time anything the stats compare.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
@@ -35,8 +35,8 @@
 #include <vector>
 
 #include "buffers.h"
+#include "error_record.h"
 #include "page_budget.h"
-#include "params/param_json.h"
 #include "run/field_names.h"
 #include "terrain/contour_io.h"
 #include "terrain/contour_repair.h"
@@ -70,18 +70,6 @@ ordered_json StateObject(const terrain::TerrainState& state) {
 
 }  // namespace
 
-std::string TerrainParamTableJson() { return ParamTableJson(terrain::TerrainTable()); }
-
-// [{name, caption}] of the methods and figure presets (what --method takes).
-std::string TerrainPresetsJson() {
-  ordered_json out = ordered_json::array();
-  for (int m = 0; m < 4; ++m)
-    out.push_back({{"name", terrain::MethodName(m)}, {"caption", "the method's preset"}});
-  for (const terrain::FigurePreset& p : terrain::FigurePresets())
-    out.push_back({{"name", p.name}, {"caption", p.caption}});
-  return out.dump();
-}
-
 // [{name, source, points, d, dh, h0}] of the built-in seeds (as `niwa terrain seeds`).
 std::string TerrainSeedsJson() {
   ordered_json out = ordered_json::array();
@@ -97,24 +85,12 @@ std::string TerrainSeedsJson() {
   return out.dump();
 }
 
-// {state, notices}: the hash read as the CLI's --url reads it (bad values clamped or dropped, each
-// with a notice).
-std::string TerrainDecodeHash(const std::string& hash) {
-  terrain::TerrainState state;
-  std::vector<std::string> notices;
-  terrain::ApplyTerrainHash(hash, "", &state, &notices);
-  ordered_json out;
-  out["state"] = StateObject(state);
-  out["notices"] = notices;
-  return Dump(out);
-}
-
 // A drawn seed contour ([[x, y], ...] in metres, at most kMaxStatePoints: it goes into the link)
 // checked as Grow checks a seed and, when it crosses itself, repaired by core/terrain/
 // contour_repair.h (what `niwa terrain grow --repair` does). Returns {points, repaired,
 // loops_removed} when nothing was wrong (the points as given), {method: "loops" | "union", points,
 // repaired, loops_removed, reason} when repaired (snapped to the 1/1024 m grid, counter-
-// clockwise), or {error} (one line naming "contour").
+// clockwise), or an error record naming "contour" (error_record.h).
 std::string TerrainRepairContour(const std::string& points_json) {
   ordered_json out;
   json j = json::parse(points_json, nullptr, false);
@@ -130,19 +106,16 @@ std::string TerrainRepairContour(const std::string& points_json) {
     }
   }
   if (!shape_ok) {
-    out["error"] = Status::Error("contour", "must be [[x, y], ...] numbers in metres").Line();
-    return Dump(out);
+    return ErrorRecordJson(Status::Error("contour", "must be [[x, y], ...] numbers in metres"));
   }
   terrain::TerrainState probe;
   Status points_ok = terrain::SetTerrainPoints(ring, &probe);
   if (!points_ok.ok()) {
-    out["error"] = points_ok.Line();
-    return Dump(out);
+    return ErrorRecordJson(points_ok);
   }
   Result<terrain::ContourRepair> r = terrain::RepairContour(ring);
   if (!r.ok()) {
-    out["error"] = r.status().Line();
-    return Dump(out);
+    return ErrorRecordJson(r.status());
   }
   if (!r->repaired) {
     out["points"] = j;
@@ -162,21 +135,19 @@ std::string TerrainRepairContour(const std::string& points_json) {
 
 // A contour file's text (what `niwa terrain grow --contour FILE` reads: {"points": [[x, y], ...]}
 // in metres with an optional "elevation", or a GeoJSON Polygon or LineString), for the page's
-// import: {points, elevation?} or {error} (one line naming "contour"). The points go into the
+// import: {points, elevation?} or an error record naming "contour" (error_record.h). The points go into the
 // page's state (the link), so a file of more than kMaxStatePoints points is refused here with the
 // limit; its geometry is checked (and a crossing repaired) as a drawing's is.
 std::string TerrainParseContour(const std::string& text) {
   ordered_json out;
   Result<terrain::SeedFile> file = terrain::ParseContourJson(text);
   if (!file.ok()) {
-    out["error"] = file.status().Line();
-    return Dump(out);
+    return ErrorRecordJson(file.status());
   }
   terrain::TerrainState probe;
   const Status fits = terrain::SetTerrainPoints(file->ring, &probe);
   if (!fits.ok()) {
-    out["error"] = fits.Line();
-    return Dump(out);
+    return ErrorRecordJson(fits);
   }
   json pts = json::array();
   for (const terrain::Vec2& v : file->ring) pts.push_back({v.x, v.y});
@@ -191,13 +162,13 @@ std::string TerrainParseContour(const std::string& text) {
 class TerrainLab {
  public:
   // Grows the state (JSON, as ApplyTerrainStateJson reads it) and builds its heightfield: "" or
-  // one error line naming the field (the last mountain is kept on error).
+  // the error record naming the field (the last mountain is kept on error).
   std::string grow(const std::string& state_json) {
     const auto t0 = Clock::now();
     terrain::TerrainState state;
     Status s = terrain::ApplyTerrainStateJson(state_json, &state);
     if (s.ok()) s = terrain::CheckTerrainParams(state.params);
-    if (!s.ok()) return s.Line();
+    if (!s.ok()) return ErrorText(s);
     // The page's budget (docs/budgets.md): the contours stop at a level with the line in the
     // stats; a heightfield and surface buffers (about the .glb's mesh) beyond it are refused
     // before they are built.
@@ -205,15 +176,15 @@ class TerrainLab {
       terrain::TerrainRunPlan plan;
       plan.outputs = {terrain::TerrainOutput::kGlb};
       Result<terrain::TerrainRun> run = terrain::TerrainRun::Start(state, PageBudget(), plan);
-      if (!run.ok()) return run.status().Line();
+      if (!run.ok()) return ErrorText(run.status());
       run_.emplace(std::move(run).value());
     } else {
       s = run_->Update(state);
-      if (!s.ok()) return s.Line();
+      if (!s.ok()) return ErrorText(s);
     }
     const int built = run_->counts().heightfields;
     s = run_->Advance({});
-    if (!s.ok()) return s.Line();
+    if (!s.ok()) return ErrorText(s);
     ms_heightfield_ = run_->ms_heightfield();
     ms_grow_ = Ms(t0, Clock::now()) - ms_heightfield_;
     const auto t2 = Clock::now();
@@ -276,19 +247,18 @@ class TerrainLab {
     return Dump(j);
   }
 
-  // One download of the last grow into the "download" group: "" or one error line.
+  // One download of the last grow into the "download" group: "" or an error record.
   // glb: the bytes of `niwa terrain grow --url HASH --out F.glb` (the run's one document);
   // heightmap / sidecar: --heightmap's .png and its .json; json / geojson / svg: --contours.
   std::string build(const std::string& format) {
-    if (!grown_) return "download: nothing grown yet";
+    if (!grown_) return ErrorText(Status::Error("download", "nothing grown yet"));
     const run::FieldNames names = {{"format", "download"}};
     const Status fits = run_->CheckExport(format);
-    if (!fits.ok()) return run::RenameField(fits, names).Line();
+    if (!fits.ok()) return ErrorText(run::RenameField(fits, names));
     Result<std::string> bytes = run_->Export(format);
     if (!bytes.ok()) {
-      return (format == "glb" ? bytes.status().Within("download")
-                              : run::RenameField(bytes.status(), names))
-          .Line();
+      return ErrorText(format == "glb" ? bytes.status().Within("download")
+                                       : run::RenameField(bytes.status(), names));
     }
     download_.assign(bytes->begin(), bytes->end());
     return "";
@@ -328,10 +298,7 @@ class TerrainLab {
 
 EMSCRIPTEN_BINDINGS(niwa_terrain) {
   using namespace emscripten;
-  function("terrainParamTableJson", &niwa::TerrainParamTableJson);
-  function("terrainPresetsJson", &niwa::TerrainPresetsJson);
   function("terrainSeedsJson", &niwa::TerrainSeedsJson);
-  function("terrainDecodeHash", &niwa::TerrainDecodeHash);
   function("terrainRepairContour", &niwa::TerrainRepairContour);
   function("terrainParseContour", &niwa::TerrainParseContour);
   class_<niwa::TerrainLab>("TerrainLab")

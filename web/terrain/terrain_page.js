@@ -213,8 +213,8 @@ async function importContourFile(file) {
   const { reply } = worker.request('parseContour', { name: String(file.name).slice(0, 200), text }, { done: ['contourFile', 'error'] });
   const msg = await reply;
   if (!msg) return;  // superseded, or the worker restarted
-  if (msg.error || msg.type === 'error') {
-    showFieldError(msg.error || msg);
+  if (msg.ok === false || msg.type === 'error') {
+    showFieldError(msg);
     setHooks({ contourNotice: 'file' });
     return;
   }

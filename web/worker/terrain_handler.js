@@ -15,6 +15,7 @@
 // 'parseContour' reads an imported contour file's text into points.
 // Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does).
+import { errorOf, errorReply } from './errors.js';
 import { takeBuffers } from './transfer.js';
 import { nextTask } from './next_task.js';
 
@@ -82,8 +83,8 @@ export function createHandler(Module, ctx) {
     let repaired = null;
     if (msg.repair && Array.isArray(state.contour)) {
       const r = JSON.parse(Module.terrainRepairContour(JSON.stringify(state.contour)));
-      if (r.error) {
-        post({ type: 'error', id, client, message: r.error });
+      if (r.ok === false) {
+        post(errorReply(r, id, client));
         return;
       }
       if (r.repaired) {
@@ -98,9 +99,9 @@ export function createHandler(Module, ctx) {
       t = now;
     };
     lap('repair');
-    const error = lab.grow(JSON.stringify(state));
+    const error = errorOf(lab.grow(JSON.stringify(state)));
     if (error) {
-      post({ type: 'error', id, client, message: error });
+      post(errorReply(error, id, client));
       return;
     }
     lap('grow');
@@ -131,8 +132,11 @@ export function createHandler(Module, ctx) {
   function exportTerrain(msg, client) {
     const format = String(msg.format);
     if (!FORMATS.includes(format)) throw new Error(`export: format '${format.slice(0, 20)}' is unknown; must be ${FORMATS.join(', ')}`);
-    const error = labOf(client).build(format);
-    if (error) throw new Error(error);
+    const error = errorOf(labOf(client).build(format));
+    if (error) {
+      post(errorReply(error, msg.id, client));
+      return;
+    }
     const transfer = [];
     const { bytes } = takeBuffers(labOf(client).buffers('download'), transfer);
     post({ type: 'export', id: msg.id, client, format, bytes }, transfer);
@@ -143,7 +147,7 @@ export function createHandler(Module, ctx) {
     ready: (msg) => ({ paramTable, presets, seeds, decoded: JSON.parse(Module.decodeHash('terrain', String(msg.hash || ''), '')) }),
     messages: {
       decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...JSON.parse(Module.decodeHash('terrain', String(msg.hash || ''), '')) }),
-      // An imported contour file's text -> {points, elevation?} or {error} (the core's line).
+      // An imported contour file's text -> {points, elevation?} or {ok: false, field, message}.
       parseContour: (msg, client) => post({ type: 'contourFile', id: msg.id, client, name: String(msg.name || ''), ...JSON.parse(Module.terrainParseContour(String(msg.text || ''))) }),
       update,
       recycle,
