@@ -5,7 +5,7 @@ set(ENV{NODE_PATH} "/usr/share/nodejs")  # acorn for emcc's JS optimizer (TOOLCH
 # Header-only libraries through a folder of symlinks: never -I/usr/include (gotcha 2).
 set(NIWA_SYSINC ${CMAKE_BINARY_DIR}/sysinc)
 file(MAKE_DIRECTORY ${NIWA_SYSINC})
-foreach(entry glm nlohmann CLI stb tiny_gltf.h stb_image.h tiny_obj_loader.h kissfft)
+foreach(entry glm nlohmann CLI stb tiny_gltf.h stb_image.h tiny_obj_loader.h kissfft nanoflann.hpp)
   if(NOT EXISTS ${NIWA_SYSINC}/${entry})
     file(CREATE_LINK /usr/include/${entry} ${NIWA_SYSINC}/${entry} SYMBOLIC)
   endif()

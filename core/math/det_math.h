@@ -2,7 +2,9 @@
 // the native and WASM builds give bit-identical results, unlike glibc's and musl's libm. The series
 // are evaluated by Estrin's scheme (pairs of terms combined with x², x⁴, x⁸: a short dependency
 // chain) with their coefficients written out as double literals (1/n! and 1/n rounded once, by the
-// compiler): multiplications and additions only, no division per term.
+// compiler): multiplications and additions only, no division per term. Each series is written once,
+// as a template over the scalar or lane type, so det_math_lanes.h's lanes use the same coefficients
+// and operations.
 #pragma once
 
 #include <cmath>
@@ -24,23 +26,30 @@ inline double Pow2(int k) {
   return out;
 }
 
-// e^x for |x| < ~700: x = k·ln2 + r, |r| <= ln2/2, Taylor series of e^r to r^14 (its next term
-// is below 4e-18 relative).
+// The series of e^r on |r| <= ln2/2: 1 + r + r²/2! + ... + r^14/14! (its next term is below 4e-18
+// relative). Written once for a scalar and for SIMD lanes (T = double or simd::Double2,
+// math/det_math_lanes.h): each lane does the scalar's IEEE operations in the same order.
+template <typename T>
+inline T ExpSeriesOf(T r) {
+  // p = Σ r^(n-2)/n! for n = 2..14, by Estrin's scheme.
+  T r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
+  T q0 = 0.5 + 0.16666666666666666 * r, q1 = 0.041666666666666664 + 0.008333333333333333 * r;
+  T q2 = 0.001388888888888889 + 0.0001984126984126984 * r;
+  T q3 = 2.48015873015873e-05 + 2.7557319223985893e-06 * r;
+  T q4 = 2.755731922398589e-07 + 2.505210838544172e-08 * r;
+  T q5 = 2.08767569878681e-09 + 1.6059043836821613e-10 * r;
+  const double q6 = 1.1470745597729725e-11;
+  T p = ((q0 + q1 * r2) + (q2 + q3 * r2) * r4) + ((q4 + q5 * r2) + q6 * r4) * r8;
+  return 1.0 + r * (1.0 + r * p);
+}
+
+// e^x for |x| < ~700: x = k·ln2 + r, |r| <= ln2/2, then ExpSeriesOf(r)·2^k.
 inline double Exp(double x) {
   if (x < -700.0) return 0.0;
   if (x > 700.0) x = 700.0;  // |k| <= 1010: Pow2 stays in range
   double k = std::floor(x / kLn2 + 0.5);
   double r = x - k * kLn2;
-  // p = Σ r^(n-2)/n! for n = 2..14, by Estrin's scheme.
-  double r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
-  double q0 = 0.5 + 0.16666666666666666 * r, q1 = 0.041666666666666664 + 0.008333333333333333 * r;
-  double q2 = 0.001388888888888889 + 0.0001984126984126984 * r;
-  double q3 = 2.48015873015873e-05 + 2.7557319223985893e-06 * r;
-  double q4 = 2.755731922398589e-07 + 2.505210838544172e-08 * r;
-  double q5 = 2.08767569878681e-09 + 1.6059043836821613e-10 * r;
-  double q6 = 1.1470745597729725e-11;
-  double p = ((q0 + q1 * r2) + (q2 + q3 * r2) * r4) + ((q4 + q5 * r2) + q6 * r4) * r8;
-  double sum = 1.0 + r * (1.0 + r * p);
+  double sum = ExpSeriesOf(r);
   return sum * Pow2(static_cast<int>(k));  // exact scaling by 2^k
 }
 
@@ -67,29 +76,37 @@ inline double Log(double x) {
   return 2.0 * sum + e * kLn2;
 }
 
-// sin and cos of x (radians) by reduction to [-π/4, π/4] and Taylor series to r^19 and r^20
-// (next terms below 1e-19).
+// sin r and cos r on |r| <= π/4 by their Taylor series to r^19 and r^20 (next terms below 1e-19).
+// Written once for a scalar and for SIMD lanes, as ExpSeriesOf.
+template <typename T>
+inline void SinCosSeriesOf(T r, T* sin_r, T* cos_r) {
+  T r2 = r * r;
+  // ps = Σ (-1)^n r2^(n-1)/(2n+1)! for n = 1..9, pc = Σ (-1)^n r2^(n-1)/(2n)! for n = 1..10, by
+  // Estrin's scheme.
+  T r4 = r2 * r2, r8 = r4 * r4;
+  T ps = ((-0.16666666666666666 + 0.008333333333333333 * r2) +
+          (-0.0001984126984126984 + 2.7557319223985893e-06 * r2) * r4) +
+         ((-2.505210838544172e-08 + 1.6059043836821613e-10 * r2) +
+          (-7.647163731819816e-13 + 2.8114572543455206e-15 * r2) * r4) *
+             r8 +
+         -8.22063524662433e-18 * (r8 * r8);
+  T pc = ((-0.5 + 0.041666666666666664 * r2) +
+          (-0.001388888888888889 + 2.48015873015873e-05 * r2) * r4) +
+         ((-2.755731922398589e-07 + 2.08767569878681e-09 * r2) +
+          (-1.1470745597729725e-11 + 4.779477332387385e-14 * r2) * r4) *
+             r8 +
+         (-1.5619206968586225e-16 + 4.110317623312165e-19 * r2) * (r8 * r8);
+  *sin_r = r + r * (r2 * ps);
+  *cos_r = 1.0 + r2 * pc;
+}
+
+// sin and cos of x (radians) by reduction to r in [-π/4, π/4] (x = q·π/2 + r), SinCosSeriesOf(r),
+// and the quadrant q mod 4.
 inline void SinCos(double x, double* s, double* c) {
   double q = std::floor(x / (kPi / 2.0) + 0.5);
   double r = x - q * (kPi / 2.0);
-  double r2 = r * r;
-  // ps = Σ (-1)^n r2^(n-1)/(2n+1)! for n = 1..9, pc = Σ (-1)^n r2^(n-1)/(2n)! for n = 1..10, by
-  // Estrin's scheme.
-  double r4 = r2 * r2, r8 = r4 * r4;
-  double ps = ((-0.16666666666666666 + 0.008333333333333333 * r2) +
-               (-0.0001984126984126984 + 2.7557319223985893e-06 * r2) * r4) +
-              ((-2.505210838544172e-08 + 1.6059043836821613e-10 * r2) +
-               (-7.647163731819816e-13 + 2.8114572543455206e-15 * r2) * r4) *
-                  r8 +
-              -8.22063524662433e-18 * (r8 * r8);
-  double pc = ((-0.5 + 0.041666666666666664 * r2) +
-               (-0.001388888888888889 + 2.48015873015873e-05 * r2) * r4) +
-              ((-2.755731922398589e-07 + 2.08767569878681e-09 * r2) +
-               (-1.1470745597729725e-11 + 4.779477332387385e-14 * r2) * r4) *
-                  r8 +
-              (-1.5619206968586225e-16 + 4.110317623312165e-19 * r2) * (r8 * r8);
-  double sin_r = r + r * (r2 * ps);
-  double cos_r = 1.0 + r2 * pc;
+  double sin_r, cos_r;
+  SinCosSeriesOf(r, &sin_r, &cos_r);
   int quadrant = static_cast<int>(static_cast<int64_t>(q) & 3);  // two's complement: also for q < 0
   switch (quadrant) {
     case 0:
@@ -123,8 +140,8 @@ inline double Cos(double x) {
 
 // atan of |x| <= 1 after two argument halvings, atan(x) = 2·atan(x / (1 + √(1 + x²))), then its
 // series x - x³/3 + ... + x²⁵/25 on |x| <= tan(π/16) (next term below 1e-18 relative).
-// Written once for a scalar and for SIMD lanes (T = double, or a vector of doubles with its own
-// lane-wise square root `sqrt`): each lane does the scalar's IEEE operations in the same order.
+// Written once for a scalar and for SIMD lanes (T = double, or simd::Double2 with its lane-wise
+// square root `sqrt`), as ExpSeriesOf.
 template <typename T, typename Sqrt>
 inline T AtanUnitOf(T x, Sqrt sqrt) {
   for (int i = 0; i < 2; ++i) x = x / (1.0 + sqrt(1.0 + x * x));
@@ -153,43 +170,11 @@ inline double Atan2(double y, double x) {
   return y < 0.0 ? -angle : angle;
 }
 
-// Atan2(y[i], 1.0) in place for finite y[i] >= 0 (a slope angle from a gradient length), two
-// lanes at a time where SIMD is there; every lane gives Atan2's bits (the same operations in the
-// same order: y <= 1 -> AtanUnit(y), else pi/2 - AtanUnit(1 / y)).
-inline void AtanOfNonNegativeInPlace(double* y, std::size_t n) {
-  std::size_t i = 0;
-#if defined(__SSE2__) || defined(__wasm_simd128__)
-  typedef double Double2 __attribute__((vector_size(16)));
-  typedef int64_t Int2 __attribute__((vector_size(16)));
-  const auto sqrt2 = [](Double2 v) { return Double2{std::sqrt(v[0]), std::sqrt(v[1])}; };
-  for (; i + 2 <= n; i += 2) {
-    const Double2 v = {y[i], y[i + 1]};
-    const Int2 big = (Int2)(v > 1.0);
-    const Double2 one = {1.0, 1.0};
-    const Double2 inv = one / v;
-    const Double2 x = (Double2)(((Int2)inv & big) | ((Int2)v & ~big));
-    const Double2 a = AtanUnitOf(x, sqrt2);
-    const Double2 half_pi = {kPi / 2.0, kPi / 2.0};
-    const Double2 r = (Double2)(((Int2)(half_pi - a) & big) | ((Int2)a & ~big));
-    y[i] = r[0];
-    y[i + 1] = r[1];
-  }
-#endif
-  for (; i < n; ++i) y[i] = Atan2(y[i], 1.0);
-}
-
 inline double Acos(double x) {
   if (x >= 1.0) return 0.0;
   if (x <= -1.0) return kPi;
   return Atan2(std::sqrt((1.0 - x) * (1.0 + x)), x);
 }
-
-// values[i] = Expf(values[i]) for i < n, bit for bit, two at a time with SIMD where there is SIMD
-// (SSE2 natively, simd128 in WASM). Same operations as Exp lane by lane: the floor becomes
-// rounding to an integer by adding and subtracting 1.5·2^52 (exact for |y| < 2^51) and stepping
-// down where that rounded up, Pow2 puts k + 1023 into the exponent field the same way, and the
-// branches become masks. For arguments of Exp's range (finite floats).
-inline void ExpfInPlace(float* values, std::size_t n);
 
 // Float conveniences for the geometry code.
 inline float Expf(float x) { return static_cast<float>(Exp(x)); }
@@ -199,42 +184,9 @@ inline float Cosf(float x) { return static_cast<float>(Cos(x)); }
 inline float Acosf(float x) { return static_cast<float>(Acos(x)); }
 inline float Atan2f(float y, float x) { return static_cast<float>(Atan2(y, x)); }
 
-inline void ExpfInPlace(float* values, std::size_t n) {
-  std::size_t i = 0;
-#if defined(__SSE2__) || defined(__wasm_simd128__)
-  typedef double Double2 __attribute__((vector_size(16)));
-  typedef int64_t Int2 __attribute__((vector_size(16)));
-  const Double2 kRound = {6755399441055744.0, 6755399441055744.0};  // 1.5·2^52
-  const Int2 kOneBits = {0x3FF0000000000000, 0x3FF0000000000000};   // 1.0
-  for (; i + 2 <= n; i += 2) {
-    Double2 x = {static_cast<double>(values[i]), static_cast<double>(values[i + 1])};
-    const Int2 tiny = (Int2)(x < -700.0);  // Exp: 0
-    const Int2 huge = (Int2)(x > 700.0);   // Exp: clamped to 700
-    const Double2 clamp = {700.0, 700.0};
-    x = (Double2)(((Int2)x & ~huge) | ((Int2)clamp & huge));
-    const Double2 y = x / kLn2 + 0.5;
-    const Double2 nearest = (y + kRound) - kRound;
-    const Double2 k = nearest - (Double2)((Int2)(nearest > y) & kOneBits);  // floor(y)
-    const Double2 r = x - k * kLn2;
-    const Double2 r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
-    const Double2 q0 = 0.5 + 0.16666666666666666 * r;
-    const Double2 q1 = 0.041666666666666664 + 0.008333333333333333 * r;
-    const Double2 q2 = 0.001388888888888889 + 0.0001984126984126984 * r;
-    const Double2 q3 = 2.48015873015873e-05 + 2.7557319223985893e-06 * r;
-    const Double2 q4 = 2.755731922398589e-07 + 2.505210838544172e-08 * r;
-    const Double2 q5 = 2.08767569878681e-09 + 1.6059043836821613e-10 * r;
-    const double q6 = 1.1470745597729725e-11;
-    const Double2 p = ((q0 + q1 * r2) + (q2 + q3 * r2) * r4) + ((q4 + q5 * r2) + q6 * r4) * r8;
-    const Double2 sum = 1.0 + r * (1.0 + r * p);
-    const Int2 biased = (Int2)(k + (1023.0 + 6755399441055744.0)) & 0x7FF;  // k + 1023
-    const Double2 scaled = sum * (Double2)(biased << 52);
-    const Double2 out = (Double2)((Int2)scaled & ~tiny);
-    values[i] = static_cast<float>(out[0]);
-    values[i + 1] = static_cast<float>(out[1]);
-  }
-#endif
-  for (; i < n; ++i) values[i] = Expf(values[i]);
-}
-
 }  // namespace det
 }  // namespace niwa
+
+// The same functions on SIMD lanes, and the in-place batches built on them (ExpfInPlace,
+// AtanOfNonNegativeInPlace), which callers of this header use.
+#include "math/det_math_lanes.h"  // IWYU pragma: export

@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 
 #include "math/det_math.h"
+#include "math/simd4.h"
 
 namespace niwa {
 
@@ -16,11 +17,9 @@ inline float Radians(float degrees) { return degrees * (kPi / 180.0f); }
 // lane is the same correctly rounded IEEE division as the scalar v.x / s, so results are identical;
 // it only saves the divider's time, which bounds much of the growth geometry.
 inline glm::vec3 Divide(const glm::vec3& v, float s) {
-#if defined(__SSE2__) || defined(__wasm_simd128__)
-  typedef float Float4 __attribute__((vector_size(16)));
-  Float4 a = {v.x, v.y, v.z, 1.0f};
-  Float4 b = {s, s, s, s};
-  Float4 q = a / b;
+#if NIWA_SIMD
+  simd::Float4 a = {v.x, v.y, v.z, 1.0f};
+  simd::Float4 q = a / simd::Splat4(s);
   return glm::vec3(q[0], q[1], q[2]);
 #else
   return v / s;
@@ -30,6 +29,16 @@ inline glm::vec3 Divide(const glm::vec3& v, float s) {
 // Rodrigues rotation of v about the unit axis by the angle whose cosine and sine are c and s.
 inline glm::vec3 RotateAbout(const glm::vec3& v, const glm::vec3& axis, float c, float s) {
   return v * c + glm::cross(axis, v) * s + axis * (glm::dot(axis, v) * (1.0f - c));
+}
+
+// The same on four lanes (one vec3 each), lane by lane the scalar's operations in its order.
+inline simd::Vec3x4 RotateAbout(const simd::Vec3x4& v, const simd::Vec3x4& axis, simd::Float4 c,
+                                simd::Float4 s) {
+  const simd::Vec3x4 turned = simd::Cross(axis, v);
+  const simd::Float4 along = simd::Dot(axis, v) * (1.0f - c);
+  return simd::Vec3x4{(v.x * c + turned.x * s) + axis.x * along,
+                      (v.y * c + turned.y * s) + axis.y * along,
+                      (v.z * c + turned.z * s) + axis.z * along};
 }
 
 // Rodrigues rotation of v about the unit axis by angle (radians).

@@ -6,13 +6,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#if defined(__wasm_simd128__)
-#include <wasm_simd128.h>
-#elif defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
+#include "math/det_math_lanes.h"
 #include "math/rotation.h"
+#include "math/simd4.h"
 #include "params/param_text.h"
 #include "random/pcg32.h"
 #include "tree/light.h"
@@ -39,111 +36,24 @@ glm::vec3 RotateToward(const glm::vec3& v, const glm::vec3& target, const CosSin
   return glm::normalize(RotateAbout(v, Divide(axis, length), turn.c, turn.s));
 }
 
-#if defined(__SSE2__) || defined(__wasm_simd128__)
-// Four vec3 at a time (one per lane) for the batched geometry below: each helper does, lane by
-// lane, exactly the IEEE operations of its glm counterpart in glm's order, so batched and scalar
-// results are the same bits.
-typedef float Float4 __attribute__((vector_size(16)));
-typedef int32_t Int4 __attribute__((vector_size(16)));
-struct Vec4 {
-  Float4 x, y, z;
-};
-Vec4 Cross(const Vec4& a, const Vec4& b) {  // glm::cross
-  return Vec4{a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y};
-}
-Float4 Dot(const Vec4& a, const Vec4& b) {  // glm::dot: (x + y) + z
-  Float4 tx = a.x * b.x, ty = a.y * b.y, tz = a.z * b.z;
-  return (tx + ty) + tz;
-}
-Float4 Sqrt(Float4 v) {
-#if defined(__wasm_simd128__)
-  return (Float4)wasm_f32x4_sqrt((v128_t)v);
-#else
-  return (Float4)_mm_sqrt_ps((__m128)v);
-#endif
-}
-Float4 Select(Int4 mask, Float4 yes, Float4 no) {
-  return (Float4)(((Int4)yes & mask) | ((Int4)no & ~mask));
-}
-// RotateAbout(v, axis, c, s) of math/rotation.h.
-Vec4 RotateAbout4(const Vec4& v, const Vec4& axis, Float4 c, Float4 s) {
-  Vec4 turned = Cross(axis, v);
-  Float4 along = Dot(axis, v) * (1.0f - c);
-  return Vec4{(v.x * c + turned.x * s) + axis.x * along, (v.y * c + turned.y * s) + axis.y * along,
-              (v.z * c + turned.z * s) + axis.z * along};
-}
-Vec4 Normalize4(const Vec4& v) {  // glm::normalize: v · (1 / sqrt(dot(v, v)))
-  Float4 inverse = 1.0f / Sqrt(Dot(v, v));
-  return Vec4{v.x * inverse, v.y * inverse, v.z * inverse};
-}
+#if NIWA_SIMD
+// Four vec3 at a time (one per lane) for the batched geometry below (math/simd4.h: each helper
+// does, lane by lane, exactly the IEEE operations of its glm counterpart in glm's order, so
+// batched and scalar results are the same bits).
+using simd::Float4;
+using simd::Int4;
+using Vec4 = simd::Vec3x4;
 #if defined(__SSE2__)
 // For the bending of four shoots at a time (native only: in WASM under V8 the scalar lanes were
 // faster).
 // RotateToward(v, target, turn) of this file: v unchanged where v and target are parallel.
 Vec4 RotateToward4(const Vec4& v, const Vec4& target, Float4 c, Float4 s) {
-  Vec4 axis = Cross(v, target);
-  Float4 length = Sqrt(Dot(axis, axis));
+  Vec4 axis = simd::Cross(v, target);
+  Float4 length = simd::Sqrt(simd::Dot(axis, axis));
   Int4 parallel = (Int4)(length < 1e-6f);
   Vec4 u{axis.x / length, axis.y / length, axis.z / length};
-  Vec4 r = Normalize4(RotateAbout4(v, u, c, s));
-  return Vec4{Select(parallel, v.x, r.x), Select(parallel, v.y, r.y), Select(parallel, v.z, r.z)};
-}
-
-// Two doubles at a time: det::Acos and det::SinCos lane by lane (same operations, same order;
-// branches as masks, floor by adding and subtracting 1.5·2^52, exact for |y| < 2^51).
-typedef double Double2 __attribute__((vector_size(16)));
-typedef int64_t Long2 __attribute__((vector_size(16)));
-constexpr double kRound = 6755399441055744.0;  // 1.5·2^52
-Double2 Sqrt(Double2 v) { return (Double2)_mm_sqrt_pd((__m128d)v); }
-Double2 Select(Long2 mask, Double2 yes, Double2 no) {
-  return (Double2)(((Long2)yes & mask) | ((Long2)no & ~mask));
-}
-Double2 Floor(Double2 y) {
-  const Double2 nearest = (y + kRound) - kRound;
-  const Long2 one = {0x3FF0000000000000, 0x3FF0000000000000};  // 1.0
-  return nearest - (Double2)((Long2)(nearest > y) & one);
-}
-Double2 AtanUnit(Double2 x) {  // det::AtanUnit, two lanes
-  return det::AtanUnitOf(x, [](Double2 v) { return Sqrt(v); });
-}
-// det::Acos for x in [-1, 1]: Atan2(sqrt((1 - x)(1 + x)), x), whose y is >= 0.
-Double2 Acos(Double2 x) {
-  const Double2 y = Sqrt((1.0 - x) * (1.0 + x));
-  const Long2 abs_mask = {0x7FFFFFFFFFFFFFFF, 0x7FFFFFFFFFFFFFFF};
-  const Double2 ax = (Double2)((Long2)x & abs_mask), ay = y;
-  const Long2 flat = (Long2)(ay <= ax);
-  const Double2 a = AtanUnit(Select(flat, ay, ax) / Select(flat, ax, ay));
-  Double2 angle = Select(flat, a, det::kPi / 2.0 - a);
-  angle = Select((Long2)(x < 0.0), det::kPi - angle, angle);
-  angle = Select((Long2)(x >= 1.0), Double2{0.0, 0.0}, angle);
-  return Select((Long2)(x <= -1.0), Double2{det::kPi, det::kPi}, angle);
-}
-void SinCos(Double2 x, Double2* s, Double2* c) {  // det::SinCos
-  const Double2 q = Floor(x / (det::kPi / 2.0) + 0.5);
-  const Double2 r = x - q * (det::kPi / 2.0);
-  const Double2 r2 = r * r;
-  const Double2 r4 = r2 * r2, r8 = r4 * r4;
-  const Double2 ps = ((-0.16666666666666666 + 0.008333333333333333 * r2) +
-                      (-0.0001984126984126984 + 2.7557319223985893e-06 * r2) * r4) +
-                     ((-2.505210838544172e-08 + 1.6059043836821613e-10 * r2) +
-                      (-7.647163731819816e-13 + 2.8114572543455206e-15 * r2) * r4) *
-                         r8 +
-                     -8.22063524662433e-18 * (r8 * r8);
-  const Double2 pc = ((-0.5 + 0.041666666666666664 * r2) +
-                      (-0.001388888888888889 + 2.48015873015873e-05 * r2) * r4) +
-                     ((-2.755731922398589e-07 + 2.08767569878681e-09 * r2) +
-                      (-1.1470745597729725e-11 + 4.779477332387385e-14 * r2) * r4) *
-                         r8 +
-                     (-1.5619206968586225e-16 + 4.110317623312165e-19 * r2) * (r8 * r8);
-  const Double2 sin_r = r + r * (r2 * ps);
-  const Double2 cos_r = 1.0 + r2 * pc;
-  // Quadrant q & 3 from the low bits of q + 1.5·2^52 (2^51 is a multiple of 4).
-  const Long2 quadrant = (Long2)(q + kRound) & 3;
-  const Long2 swap = -(quadrant & 1), sin_negative = -((quadrant >> 1) & 1);
-  const Long2 cos_negative = -((quadrant ^ (quadrant >> 1)) & 1);
-  const Double2 s0 = Select(swap, cos_r, sin_r), c0 = Select(swap, sin_r, cos_r);
-  *s = Select(sin_negative, -s0, s0);
-  *c = Select(cos_negative, -c0, c0);
+  Vec4 r = simd::Normalize(RotateAbout(v, u, c, s));
+  return simd::Select(parallel, v, r);
 }
 #endif  // __SSE2__
 #endif
@@ -157,36 +67,30 @@ void SinCos(Double2 x, Double2* s, Double2* c) {  // det::SinCos
 // instructions.
 void TurnBuds(Bud* buds, const CosSin* turns, std::size_t count) {
   std::size_t i = 0;
-#if defined(__SSE2__) || defined(__wasm_simd128__)
+#if NIWA_SIMD
   for (; i + 4 <= count; i += 4) {
     const Bud &b0 = buds[i], &b1 = buds[i + 1], &b2 = buds[i + 2], &b3 = buds[i + 3];
-    const Vec4 d{Float4{b0.direction.x, b1.direction.x, b2.direction.x, b3.direction.x},
-                 Float4{b0.direction.y, b1.direction.y, b2.direction.y, b3.direction.y},
-                 Float4{b0.direction.z, b1.direction.z, b2.direction.z, b3.direction.z}};
-    const Vec4 side{Float4{b0.azimuth.x, b1.azimuth.x, b2.azimuth.x, b3.azimuth.x},
-                    Float4{b0.azimuth.y, b1.azimuth.y, b2.azimuth.y, b3.azimuth.y},
-                    Float4{b0.azimuth.z, b1.azimuth.z, b2.azimuth.z, b3.azimuth.z}};
+    const Vec4 d = simd::Gather(b0.direction, b1.direction, b2.direction, b3.direction);
+    const Vec4 side = simd::Gather(b0.azimuth, b1.azimuth, b2.azimuth, b3.azimuth);
     const Float4 c{turns[i].c, turns[i + 1].c, turns[i + 2].c, turns[i + 3].c};
     const Float4 s{turns[i].s, turns[i + 1].s, turns[i + 2].s, turns[i + 3].s};
     // RotateToward(d, side, turn): Rodrigues about the unit axis d × side, then normalize.
-    Vec4 axis = Cross(d, side);
-    Float4 length = Sqrt(Dot(axis, axis));
+    Vec4 axis = simd::Cross(d, side);
+    Float4 length = simd::Sqrt(simd::Dot(axis, axis));
     Int4 parallel = (Int4)(length < 1e-6f);  // RotateToward returns d unchanged
     Vec4 u{axis.x / length, axis.y / length, axis.z / length};
-    Vec4 r = Normalize4(RotateAbout4(d, u, c, s));
-    Vec4 direction{Select(parallel, d.x, r.x), Select(parallel, d.y, r.y),
-                   Select(parallel, d.z, r.z)};
+    Vec4 r = simd::Normalize(RotateAbout(d, u, c, s));
+    Vec4 direction = simd::Select(parallel, d, r);
     // Orthonormalize(side, direction).
-    Float4 projection = Dot(side, direction);
+    Float4 projection = simd::Dot(side, direction);
     Vec4 q{side.x - direction.x * projection, side.y - direction.y * projection,
            side.z - direction.z * projection};
-    Float4 q_length = Sqrt(Dot(q, q));
+    Float4 q_length = simd::Sqrt(simd::Dot(q, q));
     Vec4 azimuth{q.x / q_length, q.y / q_length, q.z / q_length};
     for (int k = 0; k < 4; ++k) {
       Bud& b = buds[i + static_cast<std::size_t>(k)];
-      b.direction = glm::vec3(direction.x[k], direction.y[k], direction.z[k]);
-      b.azimuth = q_length[k] < 1e-6f ? AnyPerpendicular(b.direction)
-                                      : glm::vec3(azimuth.x[k], azimuth.y[k], azimuth.z[k]);
+      b.direction = simd::Lane(direction, k);
+      b.azimuth = q_length[k] < 1e-6f ? AnyPerpendicular(b.direction) : simd::Lane(azimuth, k);
     }
   }
 #endif
@@ -211,7 +115,7 @@ void LeafDirections(Leaf* leaves, std::size_t count, const glm::vec3* azimuth,
     leaves[j].direction = glm::normalize(side + direction[i] * lift);
   };
   std::size_t j = 0;
-#if defined(__SSE2__) || defined(__wasm_simd128__)
+#if NIWA_SIMD
   for (; j + 4 <= count; j += 4) {
     std::size_t node[4];
     float c[4], s[4];
@@ -224,12 +128,10 @@ void LeafDirections(Leaf* leaves, std::size_t count, const glm::vec3* azimuth,
                     &a3 = azimuth[node[3]];
     const glm::vec3 &d0 = direction[node[0]], &d1 = direction[node[1]], &d2 = direction[node[2]],
                     &d3 = direction[node[3]];
-    const Vec4 a{Float4{a0.x, a1.x, a2.x, a3.x}, Float4{a0.y, a1.y, a2.y, a3.y},
-                 Float4{a0.z, a1.z, a2.z, a3.z}};
-    const Vec4 d{Float4{d0.x, d1.x, d2.x, d3.x}, Float4{d0.y, d1.y, d2.y, d3.y},
-                 Float4{d0.z, d1.z, d2.z, d3.z}};
-    Vec4 side = RotateAbout4(a, d, Float4{c[0], c[1], c[2], c[3]}, Float4{s[0], s[1], s[2], s[3]});
-    Vec4 out = Normalize4(Vec4{side.x + d.x * lift, side.y + d.y * lift, side.z + d.z * lift});
+    const Vec4 a = simd::Gather(a0, a1, a2, a3);
+    const Vec4 d = simd::Gather(d0, d1, d2, d3);
+    Vec4 side = RotateAbout(a, d, Float4{c[0], c[1], c[2], c[3]}, Float4{s[0], s[1], s[2], s[3]});
+    Vec4 out = simd::Normalize(Vec4{side.x + d.x * lift, side.y + d.y * lift, side.z + d.z * lift});
     for (std::size_t k = 0; k < 4; ++k) {
       leaves[j + k].direction = glm::vec3(out.x[k], out.y[k], out.z[k]);
     }
@@ -632,29 +534,19 @@ void Grower::LayOutShoots(bool bend) {
           b[k] = l.b;
         }
         // AngleBetween (eqs. 2.6, 2.8): the dot product clamped to [-1, 1], then det::Acosf.
-        Float4 cosine = Dot(direction, target);
-        cosine = Select((Int4)(cosine > 1.0f), Float4{1, 1, 1, 1}, cosine);
-        cosine = Select((Int4)(cosine < -1.0f), Float4{-1, -1, -1, -1}, cosine);
-        Double2 low = Acos(Double2{cosine[0], cosine[1]});
-        Double2 high = Acos(Double2{cosine[2], cosine[3]});
-        difference_of_lane = Float4{static_cast<float>(low[0]), static_cast<float>(low[1]),
-                                    static_cast<float>(high[0]), static_cast<float>(high[1])};
+        Float4 cosine = simd::Dot(direction, target);
+        cosine = simd::Select((Int4)(cosine > 1.0f), simd::Splat4(1.0f), cosine);
+        cosine = simd::Select((Int4)(cosine < -1.0f), simd::Splat4(-1.0f), cosine);
+        difference_of_lane = det::Acosf(cosine);
         const Float4 angle = b * difference_of_lane;
-        Double2 s_low, c_low, s_high, c_high;
-        SinCos(Double2{angle[0], angle[1]}, &s_low, &c_low);
-        SinCos(Double2{angle[2], angle[3]}, &s_high, &c_high);
+        Float4 s_of_angle, c_of_angle;
+        det::SinCosf(angle, &s_of_angle, &c_of_angle);
         // Eqs. 2.7, 2.9: angles above the cap turn by the cap.
         const float cap = i == 1 ? cap_branch : cap_node;
         const CosSin& cap_turn = i == 1 ? cap_branch_ : cap_node_;
         const Int4 capped = (Int4)(cap < angle);
-        const Float4 c =
-            Select(capped, Float4{cap_turn.c, cap_turn.c, cap_turn.c, cap_turn.c},
-                   Float4{static_cast<float>(c_low[0]), static_cast<float>(c_low[1]),
-                          static_cast<float>(c_high[0]), static_cast<float>(c_high[1])});
-        const Float4 s =
-            Select(capped, Float4{cap_turn.s, cap_turn.s, cap_turn.s, cap_turn.s},
-                   Float4{static_cast<float>(s_low[0]), static_cast<float>(s_low[1]),
-                          static_cast<float>(s_high[0]), static_cast<float>(s_high[1])});
+        const Float4 c = simd::Select(capped, simd::Splat4(cap_turn.c), c_of_angle);
+        const Float4 s = simd::Select(capped, simd::Splat4(cap_turn.s), s_of_angle);
         const Vec4 turned = RotateToward4(direction, target, c, s);
         for (std::size_t k = 0; k < used; ++k) {
           ShootLayout& l = lanes[k];

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstring>
 
+#include "light/sun.h"
 #include "math/rotation.h"
+#include "math/simd4.h"
 
 namespace niwa {
 namespace {
@@ -89,7 +91,7 @@ void ResolveRows(const Sky& sky, const float* transmittance, std::size_t count,
 // edges one by one. Reading down the columns one value at a time was 3 % of a sakura-thesis grow.
 void TransposePlane(const float* from, std::ptrdiff_t from_stride, float* to,
                     std::ptrdiff_t to_stride, int width, int height) {
-  typedef float Float4 __attribute__((vector_size(16)));
+  using simd::Float4;
   int y = 0;
   for (; y + 4 <= height; y += 4) {
     const float* in = from + y * from_stride;
@@ -193,10 +195,7 @@ Sky MakeSky(float sun_elevation_deg, float sun_azimuth_deg, float sun_weight, fl
     total += weight;
   }
   for (float& w : sky.weights) w *= (1.0f - sun_weight) / total;
-  float elevation = Radians(sun_elevation_deg), azimuth = Radians(sun_azimuth_deg);
-  sky.directions.push_back(glm::vec3(det::Cosf(elevation) * det::Cosf(azimuth),
-                                     det::Sinf(elevation),
-                                     det::Cosf(elevation) * det::Sinf(azimuth)));
+  sky.directions.push_back(light::SunDirection(sun_elevation_deg, sun_azimuth_deg));
   sky.weights.push_back(sun_weight);
   return sky;
 }
@@ -452,7 +451,7 @@ std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres
     }
     // Four spheres at a time, one per lane: each lane forms the scalar's corner terms with the
     // same IEEE operations (no FMA, -ffp-contract=off) and adds them in corner order as before.
-    typedef float Float4 __attribute__((vector_size(16)));
+    using simd::Float4;
     float* exponent = transmittance + k * count;
     std::size_t i = 0;
     for (; i + 4 <= count; i += 4) {

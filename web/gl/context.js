@@ -65,12 +65,6 @@ export function finishGpu(gl) {
   return pixel;
 }
 
-// The light model's sun (the core's convention): elevation and azimuth in degrees, y up, azimuth
-// from +x towards +z; returns the unit direction towards the sun, or null for non-numbers.
-export function sunDirection(elevationDeg, azimuthDeg) {
-  const el = (Number(elevationDeg) * Math.PI) / 180, az = (Number(azimuthDeg) * Math.PI) / 180;
-  if (!Number.isFinite(el) || !Number.isFinite(az)) return null;
-  const v = [Math.cos(el) * Math.cos(az), Math.sin(el), Math.cos(el) * Math.sin(az)];
-  const l = Math.hypot(v[0], v[1], v[2]);
-  return v.map((x) => x / l);
-}
+// The sun's direction lives in sun.js (one place for every page); re-exported for the renderers
+// that import it from here.
+export { sunDirection } from './sun.js';

@@ -8,6 +8,7 @@
 // Does not: grow or sway trees (the worker does) or draw directly (grove_renderer.js does).
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { FrameLoop, nextFrame } from '../gl/frame_loop.js';
+import { DEFAULT_SUNS } from '../gl/sun.js';
 import { cappedNoticeLines, mountStudyNav } from '../shell/study_page.js';
 import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
 import { WorkerClient } from '../shell/worker_client.js';
@@ -433,7 +434,7 @@ async function start() {
     fail(`Cannot draw: ${e.message}`);
     return;
   }
-  renderer.setSun(60, 0);
+  renderer.setSun(DEFAULT_SUNS.tree.elevation, DEFAULT_SUNS.tree.azimuth);
   camera.attach(ui.canvas, () => {
     writeHash();
     requestViews();

@@ -2,7 +2,8 @@
 // ground (full-polygon mode, textured as the .glb: shaders/tree/tree_textured.frag), or the hybrid mode of thesis chapter 4: texture cards from a card
 // atlas plus lines. Shaders (GLSL ES 3.00) are shaders/tree/*, including shaders/common/*.
 // Does not: grow or mesh trees (the worker does), keep page state, or own the camera.
-import { createContext, drawingBufferSize, finishGpu, resizeCanvas, sunDirection } from '../gl/context.js';
+import { createContext, drawingBufferSize, finishGpu, resizeCanvas } from '../gl/context.js';
+import { DEFAULT_SUNS, sunDirection } from '../gl/sun.js';
 import { BufferPool } from '../gl/buffer_pool.js';
 import { UPLOAD_PARTS_ABOVE, gpuDone, planBytes, uploadInParts } from '../gl/chunked_upload.js';
 import { floatAttribute, staticBuffer, uintAttribute } from '../gl/buffers.js';
@@ -230,7 +231,7 @@ export class Renderer {
     this.center = [0, 0, 0];
     this.shadowRadius = 1;
     this.extent = 20;
-    this.setSun(60, 0);
+    this.setSun(DEFAULT_SUNS.tree.elevation, DEFAULT_SUNS.tree.azimuth);
     this.lastFrame = { triangles: 0, drawCalls: 0, cpuMs: 0 };
     this.scale = 1;  // the drawing buffer's scale of the last frame (FrameGovernor)
     this.motion = null;  // {hybrid, drawList}: the cheaper representation while moving

@@ -1,0 +1,91 @@
+// The one set of 128-bit lane types (four floats, two doubles) and their lane-wise helpers, for the
+// SIMD paths of every study: each helper does, lane by lane, exactly the IEEE operation of its
+// scalar counterpart, so a batched result is the scalar result's bits.
+//
+// GCC/Clang vector extensions: the arithmetic operators work lane by lane, a comparison gives a
+// lane mask (all ones or all zeros) of the same-sized integer type. The types compile on every
+// target (without SIMD the compiler splits them into scalars); NIWA_SIMD says whether the target
+// has the 128-bit registers (SSE2 natively, simd128 in WASM), which is where batching pays.
+// Not here: the det_math functions on lanes (math/det_math_lanes.h), any study's batching.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#if defined(__wasm_simd128__)
+#include <wasm_simd128.h>
+#elif defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#if defined(__SSE2__) || defined(__wasm_simd128__)
+#define NIWA_SIMD 1
+#else
+#define NIWA_SIMD 0
+#endif
+
+namespace niwa {
+namespace simd {
+
+typedef float Float4 __attribute__((vector_size(16)));
+typedef int32_t Int4 __attribute__((vector_size(16)));  // a Float4 comparison's mask
+typedef double Double2 __attribute__((vector_size(16)));
+typedef int64_t Long2 __attribute__((vector_size(16)));  // a Double2 comparison's mask
+
+// Correctly rounded square roots (IEEE 754), as std::sqrt in every lane.
+inline Float4 Sqrt(Float4 v) {
+#if defined(__wasm_simd128__)
+  return (Float4)wasm_f32x4_sqrt((v128_t)v);
+#elif defined(__SSE2__)
+  return (Float4)_mm_sqrt_ps((__m128)v);
+#else
+  return Float4{std::sqrt(v[0]), std::sqrt(v[1]), std::sqrt(v[2]), std::sqrt(v[3])};
+#endif
+}
+inline Double2 Sqrt(Double2 v) {
+#if defined(__wasm_simd128__)
+  return (Double2)wasm_f64x2_sqrt((v128_t)v);
+#elif defined(__SSE2__)
+  return (Double2)_mm_sqrt_pd((__m128d)v);
+#else
+  return Double2{std::sqrt(v[0]), std::sqrt(v[1])};
+#endif
+}
+
+// mask ? yes : no, lane by lane (mask lanes all ones or all zeros, as a comparison gives).
+inline Float4 Select(Int4 mask, Float4 yes, Float4 no) {
+  return (Float4)(((Int4)yes & mask) | ((Int4)no & ~mask));
+}
+inline Double2 Select(Long2 mask, Double2 yes, Double2 no) {
+  return (Double2)(((Long2)yes & mask) | ((Long2)no & ~mask));
+}
+
+inline Float4 Splat4(float v) { return Float4{v, v, v, v}; }
+inline Double2 Splat2(double v) { return Double2{v, v}; }
+
+// Four glm::vec3, one per lane, and glm's cross, dot and normalize in glm's order of operations.
+struct Vec3x4 {
+  Float4 x, y, z;
+};
+inline Vec3x4 Gather(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
+                     const glm::vec3& d) {
+  return Vec3x4{Float4{a.x, b.x, c.x, d.x}, Float4{a.y, b.y, c.y, d.y}, Float4{a.z, b.z, c.z, d.z}};
+}
+inline glm::vec3 Lane(const Vec3x4& v, int k) { return glm::vec3(v.x[k], v.y[k], v.z[k]); }
+inline Vec3x4 Cross(const Vec3x4& a, const Vec3x4& b) {  // glm::cross
+  return Vec3x4{a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y};
+}
+inline Float4 Dot(const Vec3x4& a, const Vec3x4& b) {  // glm::dot: (x + y) + z
+  Float4 tx = a.x * b.x, ty = a.y * b.y, tz = a.z * b.z;
+  return (tx + ty) + tz;
+}
+inline Vec3x4 Normalize(const Vec3x4& v) {  // glm::normalize: v · (1 / sqrt(dot(v, v)))
+  Float4 inverse = 1.0f / Sqrt(Dot(v, v));
+  return Vec3x4{v.x * inverse, v.y * inverse, v.z * inverse};
+}
+inline Vec3x4 Select(Int4 mask, const Vec3x4& yes, const Vec3x4& no) {
+  return Vec3x4{Select(mask, yes.x, no.x), Select(mask, yes.y, no.y), Select(mask, yes.z, no.z)};
+}
+
+}  // namespace simd
+}  // namespace niwa
