@@ -6,7 +6,8 @@
 // step k in the vertex shader (aBirth), so replaying the growth needs no regrow.
 // Does not: talk to the worker, pick by id (a click is a ray in scene units; the worker's BVH
 // answers it), or know the growth model.
-import { createContext, resizeCanvas, sunDirection } from '../gl/context.js';
+import { createContext, resizeCanvas } from '../gl/context.js';
+import { defaultSunDirection } from '../gl/sun.js';
 import { floatAttribute, staticBuffer } from '../gl/buffers.js';
 import { uploadInParts } from '../gl/chunked_upload.js';
 import { ProgressiveFrame } from '../gl/progressive_frame.js';
@@ -69,7 +70,7 @@ export class IvyRenderer {
     this.leafTexture = null;  // the worker's leaf texture (core/ivy/ivy_leaf_texture.h), uploaded
     this.buds = { vao: null, buffers: [], count: 0 };
     this.seeds = { vao: null, buffer: null, count: 0 };
-    this.light = sunDirection(50, 30);
+    this.light = defaultSunDirection('ivy');  // web/gl/sun.js: the one place of the pages' suns
     this.boundsView = null;
     this.ivyUploads = 0;     // setIvy calls so far (a newer one drops an older upload)
     this.progress = new ProgressiveFrame(this.gl);  // the frame being drawn in parts

@@ -5,7 +5,8 @@
 // (setLevel) shows the mountain as it stands at level k: contours up to k, the surface cut at
 // h0 + k·Δh; nothing regrows.
 // Does not: talk to the worker, draw the 2-D plan (plan_view.js), or know the generation methods.
-import { createContext, resizeCanvas, sunDirection } from '../gl/context.js';
+import { createContext, resizeCanvas } from '../gl/context.js';
+import { defaultSunDirection } from '../gl/sun.js';
 import { floatAttribute } from '../gl/buffers.js';
 import { uploadInParts } from '../gl/chunked_upload.js';
 import { ProgressiveFrame } from '../gl/progressive_frame.js';
@@ -23,7 +24,7 @@ export class TerrainRenderer {
     this.contours = null;  // {vao, buffers, count}
     this.model = [0, 0, 0, 1];
     this.visible = { contours: true, tint: true };
-    this.light = sunDirection(35, 225);  // from the north-west (−x, −z is north-west in view)
+    this.light = defaultSunDirection('terrain');  // web/gl/sun.js: a low sun from the north-west
     this.boundsView = null;
     this.level = Infinity;
     this.top = Infinity;
