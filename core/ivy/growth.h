@@ -41,8 +41,8 @@ struct IvyGrowLimits;  // ivy_budget.h
 // Errors: steps outside [0, 10000], no seed point, a seed farther than d from every face ("seed
 // point 1: 35.2 px from the nearest face; must be within d = 20"), invalid parameters.
 // on_step (optional) is called after every step with (step, steps): progress for a page's worker;
-// it cannot change the growth.
-using StepObserver = std::function<void(int step, int steps)>;
+// it cannot change the growth, only stop it: false cancels (Grow returns run::CancelledStatus()).
+using StepObserver = std::function<bool(int step, int steps)>;
 Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& seeds,
                       const IvyParams& params, int steps, uint64_t seed, GrowLog* log,
                       const IvyGrowLimits* limits = nullptr, const StepObserver& on_step = {});
