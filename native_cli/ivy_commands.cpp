@@ -108,11 +108,28 @@ ivy::IvyState ResolveState(const IvyOptions& o) {
 
 // The ivy run's state fields as this command's flags (core errors name the fields).
 const run::FieldNames& IvyFlagNames() {
-  static const run::FieldNames names = {
-      {"steps", "--steps"},         {"seed", "--seed"},           {"seed_points", "--seed-point"},
-      {"mesh", "--mesh"},           {"scene", "--scene"},         {"subdivide", "--subdivide"},
-      {"tree", "--tree-preset"},    {"tree_years", "--tree-years"}, {"preset", "--preset"}};
+  static const run::FieldNames names = {{"steps", "--steps"},
+                                        {"seed", "--seed"},
+                                        {"seed_points", "--seed-point"},
+                                        {"mesh", "--mesh"},
+                                        {"scene", "--scene"},
+                                        {"subdivide", "--subdivide"},
+                                        {"tree", "--tree-preset"},
+                                        {"tree_years", "--tree-years"},
+                                        {"preset", "--preset"}};
   return names;
+}
+
+// A core error under this command's flags: its field through IvyFlagNames, and a far seed point
+// ("seed_points: point 2: (...) is 50 from the nearest face; ...") as the CLI has always named it
+// ("--seed-point 2: (...) ...").
+Status AsIvyFlags(const Status& s) {
+  const std::string& m = s.message();
+  const std::size_t colon = m.find(": ");
+  if (s.field() == "seed_points" && m.rfind("point ", 0) == 0 && colon != std::string::npos) {
+    return Status::Error("--seed-point " + m.substr(6, colon - 6), m.substr(colon + 2));
+  }
+  return run::RenameField(s, IvyFlagNames());
 }
 
 // A tree support's error: the budget's own line, else the flag that named the tree.
@@ -145,7 +162,8 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   ivy::IvySupportInput input;
   bool tree = false;
   if (!o.tree_preset.empty()) {
-    const double years = ParseFlagNumber("--tree-years", o.tree_years, {1, ivy::kMaxTreeYears, true});
+    const double years =
+        ParseFlagNumber("--tree-years", o.tree_years, {1, ivy::kMaxTreeYears, true});
     Result<ivy::IvySupportInput> t =
         compose::IvyTreeSupport(o.tree_preset, years, budget, "--tree-years");
     if (!t.ok()) Fail(TreeSupportError(t.status(), budget, ""));
@@ -186,7 +204,7 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
     if (field != "subdivide" && field != "mesh" && field != "scene") {
       ReportTruncated(tree_truncated_by);
     }
-    Fail(run::RenameField(support.status(), IvyFlagNames()));
+    Fail(AsIvyFlags(support.status()));
   }
   ReportTruncated(tree_truncated_by);
   const ivy::IvyScene& scene = (*support)->scene();
@@ -199,14 +217,15 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   }
   ivy::IvyRunOptions options;
   // With --stats the growth keeps room for the measurement's part that grows with every bud, and
-  // an export's check counts the measurement's exact estimate (the overlap pairs, known once grown).
+  // an export's check counts the measurement's exact estimate (the overlap pairs, known once
+  // grown).
   options.reserve_stats = o.stats;
   options.stats = o.stats;
   options.export_change = o.stats ? ivy::kIvyStatsChange : ivy::kIvyChange;
   options.stats_change = ivy::kIvyStatsChange;
   Result<ivy::IvyRun> run = ivy::IvyRun::Start(state, *support, budget, options);
-  if (!run.ok()) Fail(run::RenameField(run.status(), IvyFlagNames()));
-  Check(run::RenameField(run->Advance({}), IvyFlagNames()));
+  if (!run.ok()) Fail(AsIvyFlags(run.status()));
+  Check(AsIvyFlags(run->Advance({})));
   ReportTruncated(run->log().truncated_by);
   const bool trace = std::getenv("NIWA_BUDGET_TRACE") != nullptr;  // calibration (docs/budgets.md)
   const Estimate grown = ivy::EstimateIvyGrown(run->model(), run->log(), run->limits());

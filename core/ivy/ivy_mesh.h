@@ -22,8 +22,9 @@ struct IvyMeshes {
 
 IvyMeshes BuildIvyMeshes(const IvyModel& model, const IvyParams& params);
 
-// The glTF document of the .glb, for a writer or a composer to merge: nodes ivy_stems, ivy_leaves, ivy_suckers (+ support when given), asset extras =
-// {params, seed, steps}. `_BIRTH_STEP` per vertex. Error: the leaf texture's PNG.
+// The glTF document of the .glb, for a writer or a composer to merge: nodes ivy_stems, ivy_leaves,
+// ivy_suckers (+ support when given), asset extras = {params, seed, steps}. `_BIRTH_STEP` per
+// vertex. Error: the leaf texture's PNG.
 Result<gltf::Document> BuildIvyDocument(const IvyModel& model, const IvyParams& params,
                                         uint64_t seed, int steps,
                                         const geom::TriMesh* support = nullptr);

@@ -100,11 +100,12 @@ Result<std::shared_ptr<const IvySupport>> IvySupport::Prepare(IvySupportInput in
   }
   const int levels = options.subdivide;
   if (levels < 0 || levels > kMaxIvySubdivide) {
-    return Status::Error("subdivide", std::to_string(levels) +
-                                          " is out of range; must be a whole number in [0, 8]");
+    return Status::Error(
+        "subdivide", std::to_string(levels) + " is out of range; must be a whole number in [0, 8]");
   }
   if (levels > 0 && !s.scene_.free) {
-    const double after = static_cast<double>(s.scene_.mesh.triangle_count()) * std::pow(4.0, levels);
+    const double after =
+        static_cast<double>(s.scene_.mesh.triangle_count()) * std::pow(4.0, levels);
     if (after > static_cast<double>(io::kMaxMeshTriangles)) {
       return Status::Error("subdivide", std::to_string(levels) + " would make " +
                                             FormatNumber(after) +
@@ -122,7 +123,8 @@ Result<std::shared_ptr<const IvySupport>> IvySupport::Prepare(IvySupportInput in
   s.estimate_ = EstimateIvySupport(size);
   // A prepared support's building (a tree's growth and bark) took its time before the ivy's.
   s.estimate_.seconds += prepared_seconds;
-  if (options.check_budget) NIWA_RETURN_IF_ERROR(CheckEstimate(s.estimate_, budget, options.change));
+  if (options.check_budget)
+    NIWA_RETURN_IF_ERROR(CheckEstimate(s.estimate_, budget, options.change));
   if (levels > 0 && !s.scene_.free) s.scene_.mesh = geom::Subdivide(s.scene_.mesh, levels);
   const auto t0 = Clock::now();
   s.accel_ = options.accel;
@@ -285,8 +287,8 @@ std::string IvyRun::StatsJson() const {
   // The measurement's exact estimate (the overlap sweep's pairs, counted before any is tested)
   // with the grown ivy's; when it does not fit, the sweep is left out and its line is a notice.
   const Status fits = CheckStats();
-  IvyStats stats = MeasureIvy(model_, log_, support_->mesh(), state_.params, support_->attach(),
-                              fits.ok());
+  IvyStats stats =
+      MeasureIvy(model_, log_, support_->mesh(), state_.params, support_->attach(), fits.ok());
   stats.overlap_skipped_by = fits.Line();
   stats.tree_truncated_by = support_->truncated_by();
   return IvyStatsJson(stats, log_, model_, timings_);
@@ -303,8 +305,9 @@ Result<Estimate> IvyRun::ExportEstimate(const std::string& format, bool with_sup
   if (!kind.ok()) return kind.status();
   const bool support_out =
       !support_->free() && (*kind == IvyExport::kSvg || (with_support && *kind == IvyExport::kGlb));
-  Estimate e = EstimateIvyGrown(model_, log_, options_.export_with_stats_room ? grow_limits_ : limits_) +
-               EstimateIvyExport(model_, *kind, support_out ? support_->triangles() : 0);
+  Estimate e =
+      EstimateIvyGrown(model_, log_, options_.export_with_stats_room ? grow_limits_ : limits_) +
+      EstimateIvyExport(model_, *kind, support_out ? support_->triangles() : 0);
   if (options_.stats) e = e + StatsEstimate();
   return e;
 }
@@ -325,7 +328,8 @@ Result<std::string> IvyRun::Export(const std::string& format,
 Result<std::string> IvyRun::ExportUnchecked(const std::string& format,
                                             const IvyExportOptions& options) const {
   if (!grown_) return Status::Error(format, "nothing grown yet");
-  if (format == "json") return IvyModelJson(model_, state_.params, state_.seed, state_.steps) + "\n";
+  if (format == "json")
+    return IvyModelJson(model_, state_.params, state_.seed, state_.steps) + "\n";
   if (format == "lsys") return PrintLString(model_);
   if (format == "svg") return IvySvg(model_, state_.params, support_->mesh(), options.svg);
   if (format == "glb") {

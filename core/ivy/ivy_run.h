@@ -39,13 +39,13 @@ constexpr int kMaxIvySubdivide = 8;  // the "subdivide" field's range: [0, 8]
 struct IvySupportInput {
   enum class Kind { kScene, kMesh, kPrepared };
   Kind kind = Kind::kScene;
-  std::string scene = "cubes4";              // kScene: MakeIvyScene's name
-  geom::TriMesh mesh;                        // kMesh: the mesh as read (io::ReadMeshBytes)
-  std::string name;                          // kMesh: its name (the scene's name)
-  std::vector<io::MeshMaterial> materials;   // kMesh: the reader's (noivy obstacles)
-  IvyScene prepared;                         // kPrepared: e.g. compose/ivy_on_tree's bark
-  Estimate prepared_estimate;                // kPrepared: building it (its seconds count)
-  std::string prepared_truncated_by;         // kPrepared: its stop line, "" if none
+  std::string scene = "cubes4";             // kScene: MakeIvyScene's name
+  geom::TriMesh mesh;                       // kMesh: the mesh as read (io::ReadMeshBytes)
+  std::string name;                         // kMesh: its name (the scene's name)
+  std::vector<io::MeshMaterial> materials;  // kMesh: the reader's (noivy obstacles)
+  IvyScene prepared;                        // kPrepared: e.g. compose/ivy_on_tree's bark
+  Estimate prepared_estimate;               // kPrepared: building it (its seconds count)
+  std::string prepared_truncated_by;        // kPrepared: its stop line, "" if none
 
   static IvySupportInput Scene(std::string name);
   static IvySupportInput Mesh(geom::TriMesh mesh, std::string name,
@@ -54,7 +54,7 @@ struct IvySupportInput {
 };
 
 struct IvySupportOptions {
-  int subdivide = 0;         // split every triangle into 4^K, K in [0, kMaxIvySubdivide]
+  int subdivide = 0;          // split every triangle into 4^K, K in [0, kMaxIvySubdivide]
   Accel accel = Accel::kBvh;  // kLinear builds no BVH
   // A mesh support: add the default seed "front" (the surface point nearest to a point in front
   // of the mesh (+z) at a tenth of its height), so a dropped mesh grows at once. Needs kBvh.
@@ -75,8 +75,8 @@ class IvySupport {
   // Errors: "scene" (unknown name), "mesh" (ValidateMesh), "subdivide" (over the triangle cap),
   // the budget's limit (the support's estimate, when options.check_budget).
   static Result<std::shared_ptr<const IvySupport>> Prepare(IvySupportInput input,
-                                                          const IvySupportOptions& options,
-                                                          const Budget& budget);
+                                                           const IvySupportOptions& options,
+                                                           const Budget& budget);
 
   const IvyScene& scene() const { return scene_; }
   bool free() const { return scene_.free; }
@@ -88,7 +88,7 @@ class IvySupport {
   const geom::Bvh& bvh() const { return bvh_; }
   const geom::TriMesh* mesh() const { return scene_.free ? nullptr : &scene_.mesh; }
   const geom::TriMesh* attach() const { return obstacles_ > 0 ? &attach_ : nullptr; }
-  Support ForGrow() const;              // what Grow climbs
+  Support ForGrow() const;                                // what Grow climbs
   const Estimate& estimate() const { return estimate_; }  // the support's, with a tree's seconds
   const std::string& truncated_by() const { return truncated_by_; }
   double ms_bvh() const { return ms_bvh_; }  // building the BVHs (timing, not compared)
@@ -128,8 +128,8 @@ struct IvyExportOptions {
 class IvyRun : public run::StudyRun {
  public:
   // Starts growing `state` on `support` within `budget`: seeds are the state's, else the scene's
-  // first named seed (error "seed_points" when there is none); the limits are set from the support's
-  // estimate. Nothing grows until Advance.
+  // first named seed (error "seed_points" when there is none); the limits are set from the
+  // support's estimate. Nothing grows until Advance.
   static Result<IvyRun> Start(const IvyState& state, std::shared_ptr<const IvySupport> support,
                               const Budget& budget, const IvyRunOptions& options = {});
 
@@ -162,7 +162,7 @@ class IvyRun : public run::StudyRun {
   const std::vector<glm::dvec3>& seeds() const { return seeds_; }
   IvyTimings& timings() { return timings_; }  // the front end sets ms (its own clock)
   const IvyTimings& timings() const { return timings_; }
-  int grows() const { return grows_; }       // Grow calls so far (the stage cache's test)
+  int grows() const { return grows_; }        // Grow calls so far (the stage cache's test)
   int remeshes() const { return remeshes_; }  // BuildIvyMeshes calls so far
 
   // The measurement's estimate (counted from the model) and its check with the grown ivy.

@@ -17,7 +17,8 @@
 // texture's pixels, the ones the .glb's PNG holds (core/ivy/ivy_leaf_texture.h).
 // Calls (each a thin adapter over core/ivy/ivy_run's IvySupport and IvyRun, which the CLI also
 // drives): loadScene(name), loadTree(preset, years) (a Niwa tree's bark, core/compose/ivy_on_tree,
-// as the CLI's --tree-preset) or loadMesh(bytes, name) -> ""/error, supportJson(); grow(stateJson) ->
+// as the CLI's --tree-preset) or loadMesh(bytes, name) -> ""/error, supportJson(); grow(stateJson)
+// ->
 // ""/error, then statsJson(), buffers(..), modelJson(), lstring(), buildGlb(withSupport),
 // exportCheck(format, withSupport) -> "" or the page budget's line (docs/budgets.md);
 // rayCast(ox, oy, oz, dx, dy, dz) -> {hit, point, normal, distance} on the support;
@@ -34,8 +35,8 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -300,7 +301,9 @@ class IvyLab {
       Progress(p.phase.c_str(), p.done, p.total);
       return true;
     });
-    if (!s.ok()) return s.Line();
+    // Core errors name state fields, the page's keys (seed_points and steps sit beside their
+    // fields); a dropped mesh's own error names the file, as its loadMesh errors do.
+    if (!s.ok()) return run::RenameField(s, {{"mesh", support_->scene().name}}).Line();
     const auto t1 = Clock::now();
     const ivy::IvyMeshes& meshes = run->meshes();
     stems_ = Flatten(meshes.stems);
@@ -357,9 +360,9 @@ class IvyLab {
     j["hit"] = false;
     if (support_ && !support_->free() && support_->scene().mesh.triangle_count() > 0 &&
         std::isfinite(ox + oy + oz + dx + dy + dz)) {
-      geom::RayHit h = geom::FirstHit(support_->scene().mesh, support_->bvh(),
-                                      glm::vec3(ox, oy, oz), glm::vec3(dx, dy, dz),
-                                      std::numeric_limits<float>::infinity());
+      geom::RayHit h =
+          geom::FirstHit(support_->scene().mesh, support_->bvh(), glm::vec3(ox, oy, oz),
+                         glm::vec3(dx, dy, dz), std::numeric_limits<float>::infinity());
       if (h.hit) {
         j["hit"] = true;
         j["point"] = {h.point.x, h.point.y, h.point.z};
