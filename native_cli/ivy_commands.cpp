@@ -79,33 +79,6 @@ glm::dvec3 ParseSeedPoint(const std::string& text, const ivy::IvyScene* scene) {
   return p;
 }
 
-ivy::IvyState ResolveState(const IvyOptions& o) {
-  ivy::IvyState state;
-  // A tree is in metres: its default preset is metric.
-  if (!o.tree_preset.empty()) Check(AsFlag(ivy::SetIvyPreset("metric", &state), "--preset"));
-  if (!o.preset.empty()) Check(AsFlag(ivy::SetIvyPreset(o.preset, &state), "--preset"));
-  if (!o.params_file.empty()) {
-    Result<std::string> text = ReadFile(o.params_file, "--params", kMaxParamsFileBytes);
-    if (!text.ok()) Fail(text.status());
-    Check(ivy::ApplyIvyStateJson(*text, &state).Within("--params"));
-  }
-  if (!o.url.empty()) {
-    std::vector<std::string> notices;
-    ivy::ApplyIvyHash(o.url, "", &state, &notices);
-    if (!notices.empty()) Fail(Status::Error("--url", notices[0]));
-  }
-  for (const std::string& set : o.sets) Check(state.params.SetFromAssignment(set).Within("--set"));
-  if (!o.steps.empty()) {
-    state.steps = static_cast<int>(ParseFlagNumber("--steps", o.steps, {0, 10000, true}));
-  }
-  if (!o.seed.empty()) {
-    state.seed =
-        static_cast<uint64_t>(ParseFlagNumber("--seed", o.seed, {0, ivy::kMaxIvySeed, true}));
-  }
-  Check(ValidateIvyParams(state.params));
-  return state;
-}
-
 // The ivy run's state fields as this command's flags (core errors name the fields).
 const run::FieldNames& IvyFlagNames() {
   static const run::FieldNames names = {{"steps", "--steps"},
@@ -130,6 +103,35 @@ Status AsIvyFlags(const Status& s) {
     return Status::Error("--seed-point " + m.substr(6, colon - 6), m.substr(colon + 2));
   }
   return run::RenameField(s, IvyFlagNames());
+}
+
+ivy::IvyState ResolveState(const IvyOptions& o) {
+  ivy::IvyState state;
+  // A tree is in metres: its default preset is metric.
+  if (!o.tree_preset.empty()) Check(AsFlag(ivy::SetIvyPreset("metric", &state), "--preset"));
+  if (!o.preset.empty()) Check(AsFlag(ivy::SetIvyPreset(o.preset, &state), "--preset"));
+  if (!o.params_file.empty()) {
+    Result<std::string> text = ReadFile(o.params_file, "--params", kMaxParamsFileBytes);
+    if (!text.ok()) Fail(text.status());
+    Check(ivy::ApplyIvyStateJson(*text, &state).Within("--params"));
+  }
+  if (!o.url.empty()) {
+    std::vector<std::string> notices;
+    ivy::ApplyIvyHash(o.url, "", &state, &notices);
+    if (!notices.empty()) Fail(Status::Error("--url", notices[0]));
+  }
+  for (const std::string& set : o.sets) Check(state.params.SetFromAssignment(set).Within("--set"));
+  // The flags' own strict parse (their lines), then the state's setters.
+  if (!o.steps.empty()) {
+    Check(AsIvyFlags(
+        ivy::SetIvySteps(ParseFlagNumber("--steps", o.steps, {0, 10000, true}), &state)));
+  }
+  if (!o.seed.empty()) {
+    Check(AsIvyFlags(
+        ivy::SetIvySeed(ParseFlagNumber("--seed", o.seed, {0, ivy::kMaxIvySeed, true}), &state)));
+  }
+  Check(ValidateIvyParams(state.params));
+  return state;
 }
 
 // A tree support's error: the budget's own line, else the flag that named the tree.

@@ -229,4 +229,17 @@ std::string EncodeIvyHash(const IvyState& state, std::string_view prefix) {
   return out;
 }
 
+std::string IvyStateJson(const IvyState& state) {
+  nlohmann::ordered_json j;
+  j["preset"] = state.preset;
+  j["seed"] = state.seed;
+  j["steps"] = state.steps;
+  j["scene"] = state.scene;
+  j["seed_points"] = FormatSeedPoints(state.seed_points);
+  j["tree"] = state.tree;
+  j["tree_years"] = state.tree_years;
+  j["params"] = nlohmann::ordered_json::parse(ParamsToJson(state.params, -1));
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 }  // namespace niwa::ivy

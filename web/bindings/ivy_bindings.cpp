@@ -140,20 +140,6 @@ std::string IvyScenesJson() {
   return out.dump();
 }
 
-// {preset, seed, steps, scene, seed_points, tree, tree_years, params} of a state.
-ordered_json IvyStateObject(const ivy::IvyState& state) {
-  ordered_json j;
-  j["preset"] = state.preset;
-  j["seed"] = state.seed;
-  j["steps"] = state.steps;
-  j["scene"] = state.scene;
-  j["seed_points"] = ivy::FormatSeedPoints(state.seed_points);
-  j["tree"] = state.tree;
-  j["tree_years"] = state.tree_years;
-  j["params"] = ordered_json::parse(ParamsToJson(state.params, -1));
-  return j;
-}
-
 // {state, notices}: the hash read as the CLI's --url reads it (bad values clamped or dropped, each
 // with a notice).
 std::string IvyDecodeHash(const std::string& hash) {
@@ -161,7 +147,7 @@ std::string IvyDecodeHash(const std::string& hash) {
   std::vector<std::string> notices;
   ivy::ApplyIvyHash(hash, "", &state, &notices);
   ordered_json out;
-  out["state"] = IvyStateObject(state);
+  out["state"] = ordered_json::parse(ivy::IvyStateJson(state));
   out["notices"] = notices;
   return Dump(out);
 }
@@ -284,6 +270,9 @@ class IvyLab {
   // named seed (a dropped mesh with no front seed needs one).
   std::string grow(const std::string& state_json) {
     const auto t0 = Clock::now();
+    // The last ivy on this support, kept for a state that changes only mesh-stage rows (the run
+    // re-meshes it, IvyRun::Update); any other change grows afresh.
+    std::optional<ivy::IvyRun> last = std::move(run_);
     run_.reset();
     ivy::IvyState state;
     Status s = ivy::ApplyIvyStateJson(state_json, &state);
@@ -295,8 +284,15 @@ class IvyLab {
                            "a dropped mesh needs a seed point; click its surface to place one")
           .Line();
     }
-    Result<ivy::IvyRun> run = ivy::IvyRun::Start(state, support_, PageBudget(), PageRunOptions());
-    if (!run.ok()) return run.status().Line();
+    std::optional<ivy::IvyRun> run;
+    if (last && last->Update(state).ok()) {
+      run = std::move(last);
+    } else {
+      Result<ivy::IvyRun> started =
+          ivy::IvyRun::Start(state, support_, PageBudget(), PageRunOptions());
+      if (!started.ok()) return started.status().Line();
+      run = std::move(started).value();
+    }
     s = run->Advance([this](const run::Progress& p) {
       Progress(p.phase.c_str(), p.done, p.total);
       return true;
@@ -304,7 +300,6 @@ class IvyLab {
     // Core errors name state fields, the page's keys (seed_points and steps sit beside their
     // fields); a dropped mesh's own error names the file, as its loadMesh errors do.
     if (!s.ok()) return run::RenameField(s, {{"mesh", support_->scene().name}}).Line();
-    const auto t1 = Clock::now();
     const ivy::IvyMeshes& meshes = run->meshes();
     stems_ = Flatten(meshes.stems);
     leaves_ = Flatten(meshes.leaves);
@@ -318,11 +313,10 @@ class IvyLab {
       buds_.birth.push_back(static_cast<float>(b.born_step));
     }
     ivy::IvyTimings& t = run->timings();
-    t.ms_mesh += Ms(t1, Clock::now());
     t.ms_bvh = ms_bvh_;
     t.ms = Ms(t0, Clock::now()) + ms_bvh_;
     glb_.clear();
-    run_ = std::move(run).value();
+    run_ = std::move(run);
     return "";
   }
 
