@@ -27,6 +27,12 @@ namespace niwa::cli {
 namespace {
 
 constexpr double kMaxCoordinate = 1e30;
+// The numeric flags' ranges, written once: parsed by FlagNumber, shown by RangeHelp.
+constexpr FlagRange kStepsRange = {0, ivy::kMaxSteps, true};
+constexpr FlagRange kSeedRange = {0, ivy::kMaxIvySeed, true};
+constexpr FlagRange kTreeYearsRange = {1, ivy::kMaxTreeYears, true};
+constexpr FlagRange kSubdivideRange = {0, ivy::kMaxIvySubdivide, true};
+constexpr FlagRange kSvgLeavesRange = {0, 1, true};
 
 struct IvyOptions {
   std::string scene, mesh, steps, seed, preset, params_file, url, accel = "bvh", subdivide = "0";
@@ -123,12 +129,10 @@ ivy::IvyState ResolveState(const IvyOptions& o) {
   for (const std::string& set : o.sets) Check(state.params.SetFromAssignment(set).Within("--set"));
   // The flags' own strict parse (their lines), then the state's setters.
   if (!o.steps.empty()) {
-    Check(AsIvyFlags(
-        ivy::SetIvySteps(ParseFlagNumber("--steps", o.steps, {0, 10000, true}), &state)));
+    Check(AsIvyFlags(ivy::SetIvySteps(ParseFlagNumber("--steps", o.steps, kStepsRange), &state)));
   }
   if (!o.seed.empty()) {
-    Check(AsIvyFlags(
-        ivy::SetIvySeed(ParseFlagNumber("--seed", o.seed, {0, ivy::kMaxIvySeed, true}), &state)));
+    Check(AsIvyFlags(ivy::SetIvySeed(ParseFlagNumber("--seed", o.seed, kSeedRange), &state)));
   }
   Check(ValidateIvyParams(state.params));
   return state;
@@ -152,8 +156,7 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   if (o.accel != "bvh" && o.accel != "linear") {
     Fail(Status::Error("--accel", "'" + Echo(o.accel) + "' is unknown; must be bvh or linear"));
   }
-  const int levels = static_cast<int>(
-      ParseFlagNumber("--subdivide", o.subdivide, {0, ivy::kMaxIvySubdivide, true}));
+  const int levels = static_cast<int>(ParseFlagNumber("--subdivide", o.subdivide, kSubdivideRange));
   ivy::IvyState state = ResolveState(o);
   const Budget budget = ResolveBudget(o.budget);
   if (!o.mesh.empty() + !o.scene.empty() + !o.tree_preset.empty() > 1) {
@@ -164,8 +167,7 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   ivy::IvySupportInput input;
   bool tree = false;
   if (!o.tree_preset.empty()) {
-    const double years =
-        ParseFlagNumber("--tree-years", o.tree_years, {1, ivy::kMaxTreeYears, true});
+    const double years = ParseFlagNumber("--tree-years", o.tree_years, kTreeYearsRange);
     Result<ivy::IvySupportInput> t =
         compose::IvyTreeSupport(o.tree_preset, years, budget, "--tree-years");
     if (!t.ok()) Fail(TreeSupportError(t.status(), budget, ""));
@@ -251,7 +253,8 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
     ivy::IvyExportOptions export_options;
     export_options.with_support = o.with_support;
     if (ext == ".svg") {
-      export_options.svg.leaves = ParseFlagNumber("--svg-leaves", o.svg_leaves, {0, 1, true}) != 0;
+      export_options.svg.leaves =
+          ParseFlagNumber("--svg-leaves", o.svg_leaves, kSvgLeavesRange) != 0;
       export_options.svg.caption = o.caption;
     }
     const auto t0 = std::chrono::steady_clock::now();
@@ -311,18 +314,22 @@ void AddIvyCommands(CLI::App& app, CommandList& commands) {
   grow->add_option("--mesh", o->mesh, "Support mesh file: .glb, .gltf or .obj");
   grow->add_option("--tree-preset", o->tree_preset,
                    "Climb a Niwa tree's bark ('niwa presets tree'; default ivy preset: metric)");
-  grow->add_option("--tree-years", o->tree_years, "Age of that tree, 1..100 (default 10)");
+  grow->add_option("--tree-years", o->tree_years,
+                   "Age of that tree, " + RangeHelp(kTreeYearsRange) + " (default 10)");
   grow->add_option("--seed-point", o->seed_points,
                    "Growth start X,Y,Z or a scene's named seed; repeat for several plants");
-  grow->add_option("--steps", o->steps, "Final step number, 0..10000 (default 50)");
-  grow->add_option("--seed", o->seed, "Random seed, 0..4294967295 (default 1)");
+  grow->add_option("--steps", o->steps,
+                   "Final step number, " + RangeHelp(kStepsRange) + " (default 50)");
+  grow->add_option("--seed", o->seed, "Random seed, " + RangeHelp(kSeedRange) + " (default 1)");
   grow->add_option("--preset", o->preset, "paper (default), literal, improved or metric");
   grow->add_option("--set", o->sets, "KEY=VALUE of the ivy table ('niwa params ivy')");
   grow->add_option("--params", o->params_file, "State JSON {preset, seed, steps, params}");
   grow->add_option("--url", o->url, "Share-link hash: preset=..&seed=..&steps=..&KEY=V");
   grow->add_option("--accel", o->accel, "Geometry queries: bvh (default) or linear (brute force)");
   grow->add_option("--subdivide", o->subdivide,
-                   "Split every support triangle into 4^K coplanar ones, K in [0, 8]");
+                   "Split every support triangle into 4^K coplanar ones, K in [" +
+                       FormatNumber(kSubdivideRange.min) + ", " +
+                       FormatNumber(kSubdivideRange.max) + "]");
   grow->add_flag("--stats", o->stats, "Print one JSON object of statistics on stdout");
   grow->add_option("--out", o->out_path,
                    "Write .json (buds, internodes), .lsys, .glb or .svg (front and side views)");
