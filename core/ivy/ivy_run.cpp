@@ -43,6 +43,19 @@ void AddFrontSeed(const geom::TriMesh& seedable, const geom::Bvh& bvh, IvyScene*
   if (hit.found) scene->seeds.push_back({"front", glm::dvec3(hit.point)});
 }
 
+// The seed points of a state on a support: the state's, else the scene's first named seed.
+Result<std::vector<glm::dvec3>> SeedsOn(const IvyState& state, const IvySupport& support) {
+  std::vector<glm::dvec3> seeds = state.seed_points;
+  if (seeds.empty() && !support.scene().seeds.empty())
+    seeds.push_back(support.scene().seeds[0].pos);
+  if (seeds.empty()) {
+    return Status::Error("seed_points",
+                         "required on a support with no named seed; must be X,Y,Z within d of a "
+                         "face");
+  }
+  return seeds;
+}
+
 }  // namespace
 
 IvySupportInput IvySupportInput::Scene(std::string name) {
@@ -157,14 +170,9 @@ Result<IvyRun> IvyRun::Start(const IvyState& state, std::shared_ptr<const IvySup
   run.support_ = std::move(support);
   run.budget_ = budget;
   run.options_ = options;
-  run.seeds_ = state.seed_points;
-  if (run.seeds_.empty() && !run.support_->scene().seeds.empty())
-    run.seeds_.push_back(run.support_->scene().seeds[0].pos);
-  if (run.seeds_.empty()) {
-    return Status::Error("seed_points",
-                         "required on a support with no named seed; must be X,Y,Z within d of a "
-                         "face");
-  }
+  Result<std::vector<glm::dvec3>> seeds = SeedsOn(state, *run.support_);
+  if (!seeds.ok()) return seeds.status();
+  run.seeds_ = std::move(seeds).value();
   run.SetLimits();
   run.timings_.ms_bvh = run.support_->ms_bvh();
   return run;
@@ -216,16 +224,10 @@ Status IvyRun::Update(const IvyState& state) {
     if (state.params.table().row(i).stage == Stage::kGrow) regrow = true;
     if (state.params.table().row(i).stage == Stage::kMesh) remesh = true;
   }
-  std::vector<glm::dvec3> seeds = state.seed_points;
-  if (seeds.empty() && !support_->scene().seeds.empty())
-    seeds.push_back(support_->scene().seeds[0].pos);
-  if (seeds.empty()) {
-    return Status::Error("seed_points",
-                         "required on a support with no named seed; must be X,Y,Z within d of a "
-                         "face");
-  }
+  Result<std::vector<glm::dvec3>> seeds = SeedsOn(state, *support_);
+  if (!seeds.ok()) return seeds.status();
   state_ = state;
-  seeds_ = std::move(seeds);
+  seeds_ = std::move(seeds).value();
   SetLimits();
   if (regrow) {
     grown_ = false;
