@@ -138,12 +138,12 @@ ivy::IvyState ResolveState(const IvyOptions& o) {
   return state;
 }
 
-// A tree support's error: the budget's own line, else the flag that named the tree.
-Status TreeSupportError(const Status& s, const Budget& budget, const std::string& flag) {
+// The state's tree scene's error (its tree or tree_years came from `flag`): the budget's own
+// line, else that flag.
+Status TreeSceneError(const Status& s, const Budget& budget, const std::string& flag) {
   const std::string& field = s.field();
   if (field == budget.memory_limit || field == budget.seconds_limit) return s;
-  return Status::Error(flag.empty() ? (field == "tree" ? "--tree-preset" : "--tree-years") : flag,
-                       s.message());
+  return Status::Error(flag, s.message());
 }
 
 int RunGrow(const IvyOptions& o, std::ostream& out) {
@@ -170,7 +170,7 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
     const double years = ParseFlagNumber("--tree-years", o.tree_years, kTreeYearsRange);
     Result<ivy::IvySupportInput> t =
         compose::IvyTreeSupport(o.tree_preset, years, budget, "--tree-years");
-    if (!t.ok()) Fail(TreeSupportError(t.status(), budget, ""));
+    if (!t.ok()) Fail(AsIvyFlags(t.status()));  // tree, tree_years or the budget's limit
     input = std::move(t).value();
     tree = true;
   } else if (!o.mesh.empty()) {
@@ -187,7 +187,7 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
       Result<ivy::IvySupportInput> t =
           compose::IvyTreeSupport(state.tree, state.tree_years, budget, "--tree-years");
       const char* flag = !o.scene.empty() ? "--scene" : !o.url.empty() ? "--url" : "--params";
-      if (!t.ok()) Fail(TreeSupportError(t.status(), budget, flag));
+      if (!t.ok()) Fail(TreeSceneError(t.status(), budget, flag));
       input = std::move(t).value();
       tree = true;
     } else {
