@@ -13,27 +13,26 @@
 
 #include "base/echo.h"
 #include "cli_common.h"
-#include "geom/bvh.h"
-#include "geom/mesh_metrics.h"
-#include "geom/primitives.h"
+#include "compose/ivy_on_tree.h"
 #include "io/mesh_reader.h"
-#include "ivy/growth.h"
 #include "ivy/ivy_budget.h"
-#include "ivy/ivy_mesh.h"
 #include "ivy/ivy_params.h"
-#include "ivy/ivy_report.h"
+#include "ivy/ivy_run.h"
 #include "ivy/ivy_state.h"
-#include "ivy/ivy_svg.h"
-#include "ivy/lstring.h"
 #include "ivy/scenes.h"
-#include "ivy_tree_support.h"
 #include "params/param_text.h"
+#include "run/field_names.h"
 
 namespace niwa::cli {
 namespace {
 
-constexpr int kMaxSubdivide = 8;
 constexpr double kMaxCoordinate = 1e30;
+// The numeric flags' ranges, written once: parsed by FlagNumber, shown by RangeHelp.
+constexpr FlagRange kStepsRange = {0, ivy::kMaxSteps, true};
+constexpr FlagRange kSeedRange = {0, ivy::kMaxIvySeed, true};
+constexpr FlagRange kTreeYearsRange = {1, ivy::kMaxTreeYears, true};
+constexpr FlagRange kSubdivideRange = {0, ivy::kMaxIvySubdivide, true};
+constexpr FlagRange kSvgLeavesRange = {0, 1, true};
 
 struct IvyOptions {
   std::string scene, mesh, steps, seed, preset, params_file, url, accel = "bvh", subdivide = "0";
@@ -86,6 +85,32 @@ glm::dvec3 ParseSeedPoint(const std::string& text, const ivy::IvyScene* scene) {
   return p;
 }
 
+// The ivy run's state fields as this command's flags (core errors name the fields).
+const run::FieldNames& IvyFlagNames() {
+  static const run::FieldNames names = {{"steps", "--steps"},
+                                        {"seed", "--seed"},
+                                        {"seed_points", "--seed-point"},
+                                        {"mesh", "--mesh"},
+                                        {"scene", "--scene"},
+                                        {"subdivide", "--subdivide"},
+                                        {"tree", "--tree-preset"},
+                                        {"tree_years", "--tree-years"},
+                                        {"preset", "--preset"}};
+  return names;
+}
+
+// A core error under this command's flags: its field through IvyFlagNames, and a far seed point
+// ("seed_points: point 2: (...) is 50 from the nearest face; ...") as the CLI has always named it
+// ("--seed-point 2: (...) ...").
+Status AsIvyFlags(const Status& s) {
+  const std::string& m = s.message();
+  const std::size_t colon = m.find(": ");
+  if (s.field() == "seed_points" && m.rfind("point ", 0) == 0 && colon != std::string::npos) {
+    return Status::Error("--seed-point " + m.substr(6, colon - 6), m.substr(colon + 2));
+  }
+  return run::RenameField(s, IvyFlagNames());
+}
+
 ivy::IvyState ResolveState(const IvyOptions& o) {
   ivy::IvyState state;
   // A tree is in metres: its default preset is metric.
@@ -102,15 +127,23 @@ ivy::IvyState ResolveState(const IvyOptions& o) {
     if (!notices.empty()) Fail(Status::Error("--url", notices[0]));
   }
   for (const std::string& set : o.sets) Check(state.params.SetFromAssignment(set).Within("--set"));
+  // The flags' own strict parse (their lines), then the state's setters.
   if (!o.steps.empty()) {
-    state.steps = static_cast<int>(ParseFlagNumber("--steps", o.steps, {0, 10000, true}));
+    Check(AsIvyFlags(ivy::SetIvySteps(ParseFlagNumber("--steps", o.steps, kStepsRange), &state)));
   }
   if (!o.seed.empty()) {
-    state.seed =
-        static_cast<uint64_t>(ParseFlagNumber("--seed", o.seed, {0, ivy::kMaxIvySeed, true}));
+    Check(AsIvyFlags(ivy::SetIvySeed(ParseFlagNumber("--seed", o.seed, kSeedRange), &state)));
   }
   Check(ValidateIvyParams(state.params));
   return state;
+}
+
+// The state's tree scene's error (its tree or tree_years came from `flag`): the budget's own
+// line, else that flag.
+Status TreeSceneError(const Status& s, const Budget& budget, const std::string& flag) {
+  const std::string& field = s.field();
+  if (field == budget.memory_limit || field == budget.seconds_limit) return s;
+  return Status::Error(flag, s.message());
 }
 
 int RunGrow(const IvyOptions& o, std::ostream& out) {
@@ -123,177 +156,125 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   if (o.accel != "bvh" && o.accel != "linear") {
     Fail(Status::Error("--accel", "'" + Echo(o.accel) + "' is unknown; must be bvh or linear"));
   }
-  const int levels =
-      static_cast<int>(ParseFlagNumber("--subdivide", o.subdivide, {0, kMaxSubdivide, true}));
+  const int levels = static_cast<int>(ParseFlagNumber("--subdivide", o.subdivide, kSubdivideRange));
   ivy::IvyState state = ResolveState(o);
   const Budget budget = ResolveBudget(o.budget);
   if (!o.mesh.empty() + !o.scene.empty() + !o.tree_preset.empty() > 1) {
     Fail(Status::Error(o.mesh.empty() ? "--scene" : "--mesh",
                        "give one of --mesh FILE, --scene NAME or --tree-preset NAME"));
   }
-  ivy::IvyScene scene;
-  io::MeshReadStats read;
-  Estimate tree_estimate;  // a tree support: growing it and its bark (time shared with the ivy)
-  std::string tree_truncated_by;
+  // The support: a tree (core/compose), a mesh file, or a built-in scene.
+  ivy::IvySupportInput input;
+  bool tree = false;
   if (!o.tree_preset.empty()) {
-    const double years = ParseFlagNumber("--tree-years", o.tree_years, {1, kMaxYears, true});
-    Result<ivy::IvyScene> s =
-        TreeSupportScene(o.tree_preset, years, budget, &tree_estimate, &tree_truncated_by);
-    if (!s.ok()) Fail(s.status());
-    scene = std::move(s).value();
+    const double years = ParseFlagNumber("--tree-years", o.tree_years, kTreeYearsRange);
+    Result<ivy::IvySupportInput> t =
+        compose::IvyTreeSupport(o.tree_preset, years, budget, "--tree-years");
+    if (!t.ok()) Fail(AsIvyFlags(t.status()));  // tree, tree_years or the budget's limit
+    input = std::move(t).value();
+    tree = true;
   } else if (!o.mesh.empty()) {
+    io::MeshReadStats read;
     Result<geom::TriMesh> mesh = io::ReadMeshFile(o.mesh, &read);
     if (!mesh.ok()) Fail(mesh.status().Within("--mesh"));
-    scene.name = o.mesh;
-    scene.mesh = std::move(mesh).value();
-    Check(geom::ValidateMesh(scene.mesh, "--mesh"));
+    input = ivy::IvySupportInput::Mesh(std::move(mesh).value(), o.mesh, std::move(read.materials));
   } else {
     // --scene, else the state's (--url scene=, --params "scene"), else cubes4.
     const std::string name = !o.scene.empty()      ? o.scene
                              : state.scene.empty() ? std::string("cubes4")
                                                    : state.scene;
     if (name == ivy::kTreeScene) {  // the page's tree scene: tree= and tree_years= of the state
-      Result<ivy::IvyScene> s = TreeSupportScene(state.tree, state.tree_years, budget,
-                                                 &tree_estimate, &tree_truncated_by);
-      if (!s.ok()) {
-        const std::string& field = s.status().field();
-        if (field == budget.memory_limit || field == budget.seconds_limit) Fail(s.status());
-        const char* flag = !o.scene.empty() ? "--scene" : !o.url.empty() ? "--url" : "--params";
-        Fail(Status::Error(flag, s.status().message()));
-      }
-      scene = std::move(s).value();
+      Result<ivy::IvySupportInput> t =
+          compose::IvyTreeSupport(state.tree, state.tree_years, budget, "--tree-years");
+      const char* flag = !o.scene.empty() ? "--scene" : !o.url.empty() ? "--url" : "--params";
+      if (!t.ok()) Fail(TreeSceneError(t.status(), budget, flag));
+      input = std::move(t).value();
+      tree = true;
     } else {
-      Result<ivy::IvyScene> s = ivy::MakeIvyScene(name);
-      if (!s.ok()) Fail(s.status());
-      scene = std::move(s).value();
+      input = ivy::IvySupportInput::Scene(name);
     }
   }
-  if (levels > 0 && !scene.free) {
-    double after = static_cast<double>(scene.mesh.triangle_count()) * std::pow(4.0, levels);
-    if (after > static_cast<double>(io::kMaxMeshTriangles)) {
-      Fail(Status::Error("--subdivide", std::to_string(levels) + " would make " +
-                                            FormatNumber(after) +
-                                            " triangles; the limit is 4000000 (4 M)"));
-    }
-  }
-  // The support's memory and time (the subdivision, its BVH), refused before subdividing.
-  ivy::IvySupportSize support_size;
-  support_size.triangles = scene.free ? 0 : static_cast<double>(scene.mesh.triangle_count());
-  support_size.levels = scene.free ? 0 : levels;
-  support_size.bvh = o.accel == "bvh";
-  support_size.obstacles = !o.mesh.empty();  // a mesh's noivy triangles: a second mesh and BVH
-  ReportTruncated(tree_truncated_by);
-  Estimate support_estimate = ivy::EstimateIvySupport(support_size);
+  const std::string tree_truncated_by = input.prepared_truncated_by;
+  ivy::IvySupportOptions support_options;
+  support_options.subdivide = levels;
+  support_options.accel = o.accel == "bvh" ? ivy::Accel::kBvh : ivy::Accel::kLinear;
   // A tree's growth and bark took their time before the ivy's (its memory is freed but the bark).
-  support_estimate.seconds += tree_estimate.seconds;
-  Check(CheckEstimate(support_estimate, budget,
-                      tree_estimate.what.empty() ? ivy::kIvyChange : "lower --tree-years"));
-  if (levels > 0 && !scene.free) scene.mesh = geom::Subdivide(scene.mesh, levels);
+  support_options.change = tree ? "lower --tree-years" : ivy::kIvyChange;
+  Result<std::shared_ptr<const ivy::IvySupport>> support =
+      ivy::IvySupport::Prepare(std::move(input), support_options, budget);
+  if (!support.ok()) {
+    const std::string& field = support.status().field();
+    // A stopped tree's line comes before the support's budget refusal, after a bad input's.
+    if (field != "subdivide" && field != "mesh" && field != "scene") {
+      ReportTruncated(tree_truncated_by);
+    }
+    Fail(AsIvyFlags(support.status()));
+  }
+  ReportTruncated(tree_truncated_by);
+  const ivy::IvyScene& scene = (*support)->scene();
   std::vector<glm::dvec3> seeds;
   for (const std::string& s : o.seed_points)
     seeds.push_back(ParseSeedPoint(s, o.mesh.empty() ? &scene : nullptr));  // scene or tree seeds
-  if (seeds.empty()) seeds = state.seed_points;  // the state's at= (the page's clicks)
-  if (seeds.empty()) {
-    if (!o.mesh.empty()) {
-      Fail(Status::Error("--seed-point", "required with --mesh; must be X,Y,Z within d of a face"));
-    }
-    seeds.push_back(scene.seeds[0].pos);
+  if (!seeds.empty()) state.seed_points = seeds;  // else the state's at= (the page's clicks)
+  if (state.seed_points.empty() && !o.mesh.empty()) {
+    Fail(Status::Error("--seed-point", "required with --mesh; must be X,Y,Z within d of a face"));
   }
-  const auto t_bvh0 = std::chrono::steady_clock::now();
-  geom::Bvh bvh, attach_bvh;
-  std::size_t obstacles = 0;
-  geom::TriMesh attach;
-  if (!o.mesh.empty()) attach = ivy::IvyAttachTriangles(scene.mesh, read.materials, &obstacles);
-  if (!scene.free && o.accel == "bvh") bvh = geom::Bvh::Build(scene.mesh);
-  if (obstacles > 0 && o.accel == "bvh") attach_bvh = geom::Bvh::Build(attach);
-  const auto t_bvh1 = std::chrono::steady_clock::now();
-  ivy::Support support;
-  if (!scene.free) {
-    support = {&scene.mesh, &bvh, o.accel == "bvh" ? ivy::Accel::kBvh : ivy::Accel::kLinear};
-    if (obstacles > 0) {
-      support.attach_mesh = &attach;
-      support.attach_bvh = &attach_bvh;
-    }
-  }
-  ivy::GrowLog log;
-  const ivy::IvyGrowLimits limits =
-      ivy::IvyLimits(state.params, budget, support_estimate, !scene.free);
-  // With --stats the growth keeps room for the measurement's part that grows with every bud.
-  ivy::IvyGrowLimits grow_limits = limits;
-  const double support_triangles =
-      scene.free ? 0 : static_cast<double>(scene.mesh.triangle_count());
-  if (o.stats) ivy::ReserveIvyStats(support_triangles, &grow_limits);
-  Result<ivy::IvyModel> model =
-      ivy::Grow(support, seeds, state.params, state.steps, state.seed, &log, &grow_limits);
-  if (!model.ok()) Fail(model.status());
-  ReportTruncated(log.truncated_by);
-  // The measurement's exact count (the overlap sweep's pairs are known only now), checked with
-  // the growth and the export before either is done.
-  Estimate stats_estimate;
-  if (o.stats) {
-    stats_estimate =
-        ivy::EstimateIvyStats(ivy::CountIvyStatsWork(*model, state.params, support_triangles));
-  }
-  ivy::IvyTimings t;
-  t.ms_bvh = Ms(t_bvh0, t_bvh1);
-  t.ms_rules = log.ms_rules;
-  t.ms_search = log.ms_search;
+  ivy::IvyRunOptions options;
+  // With --stats the growth keeps room for the measurement's part that grows with every bud, and
+  // an export's check counts the measurement's exact estimate (the overlap pairs, known once
+  // grown).
+  options.reserve_stats = o.stats;
+  options.stats = o.stats;
+  options.export_change = o.stats ? ivy::kIvyStatsChange : ivy::kIvyChange;
+  options.stats_change = ivy::kIvyStatsChange;
+  Result<ivy::IvyRun> run = ivy::IvyRun::Start(state, *support, budget, options);
+  if (!run.ok()) Fail(AsIvyFlags(run.status()));
+  Check(AsIvyFlags(run->Advance({})));
+  ReportTruncated(run->log().truncated_by);
+  const bool trace = std::getenv("NIWA_BUDGET_TRACE") != nullptr;  // calibration (docs/budgets.md)
+  const Estimate grown = ivy::EstimateIvyGrown(run->model(), run->log(), run->limits());
   if (!o.out_path.empty()) {
     // The export's estimate on top of the grown ivy's, refused before it starts.
-    const ivy::IvyExport kind = ext == ".json"   ? ivy::IvyExport::kJson
-                                : ext == ".lsys" ? ivy::IvyExport::kLsys
-                                : ext == ".svg"  ? ivy::IvyExport::kSvg
-                                                 : ivy::IvyExport::kGlb;
-    const bool support_out = !scene.free && (ext == ".svg" || o.with_support);
-    const Estimate grown = ivy::EstimateIvyGrown(*model, log, limits);
-    const Estimate export_estimate = ivy::EstimateIvyExport(
-        *model, kind, support_out ? static_cast<double>(scene.mesh.triangle_count()) : 0);
-    if (std::getenv("NIWA_BUDGET_TRACE")) {  // calibration (docs/budgets.md)
+    const std::string format = ext.substr(1);
+    if (trace) {
+      const bool support_out = !scene.free && (ext == ".svg" || o.with_support);
+      const Estimate export_estimate = ivy::EstimateIvyExport(
+          run->model(),
+          ext == ".json"   ? ivy::IvyExport::kJson
+          : ext == ".lsys" ? ivy::IvyExport::kLsys
+          : ext == ".svg"  ? ivy::IvyExport::kSvg
+                           : ivy::IvyExport::kGlb,
+          support_out ? static_cast<double>(scene.mesh.triangle_count()) : 0);
       std::fprintf(stderr, "budget: grown %.0f MB %.2f s; export %.0f MB %.2f s\n",
                    grown.memory_bytes / 1048576, grown.seconds,
                    export_estimate.memory_bytes / 1048576, export_estimate.seconds);
     }
-    Check(CheckEstimate(grown + export_estimate + stats_estimate, budget,
-                        o.stats ? ivy::kIvyStatsChange : ivy::kIvyChange));
-    std::string bytes;
-    if (ext == ".json") {
-      bytes = ivy::IvyModelJson(*model, state.params, state.seed, state.steps) + "\n";
-    } else if (ext == ".lsys") {
-      bytes = ivy::PrintLString(*model);
-    } else if (ext == ".svg") {
-      ivy::IvySvgOptions svg;
-      svg.leaves = ParseFlagNumber("--svg-leaves", o.svg_leaves, {0, 1, true}) != 0;
-      svg.caption = o.caption;
-      bytes = ivy::IvySvg(*model, state.params, scene.free ? nullptr : &scene.mesh, svg);
-    } else {
-      const auto t0 = std::chrono::steady_clock::now();
-      Result<std::vector<unsigned char>> glb =
-          ivy::WriteIvyGlb(*model, state.params, state.seed, state.steps,
-                           scene.free || !o.with_support ? nullptr : &scene.mesh);
-      t.ms_mesh = Ms(t0, std::chrono::steady_clock::now());
-      if (!glb.ok()) Fail(glb.status().Within("--out"));
-      bytes.assign(glb->begin(), glb->end());
+    Check(run->CheckExport(format, o.with_support));
+    ivy::IvyExportOptions export_options;
+    export_options.with_support = o.with_support;
+    if (ext == ".svg") {
+      export_options.svg.leaves =
+          ParseFlagNumber("--svg-leaves", o.svg_leaves, kSvgLeavesRange) != 0;
+      export_options.svg.caption = o.caption;
     }
+    const auto t0 = std::chrono::steady_clock::now();
+    Result<std::string> bytes = run->ExportUnchecked(format, export_options);
+    if (ext == ".glb") run->timings().ms_mesh = Ms(t0, std::chrono::steady_clock::now());
+    if (!bytes.ok()) Fail(bytes.status().Within("--out"));
     StagedOutputs outputs;
-    Check(outputs.Stage("--out", o.out_path, bytes));
+    Check(outputs.Stage("--out", o.out_path, *bytes));
     Check(outputs.Commit());
   }
-  if (std::getenv("NIWA_BUDGET_TRACE") && o.out_path.empty()) {
-    const Estimate grown = ivy::EstimateIvyGrown(*model, log, limits);
+  if (trace && o.out_path.empty()) {
+    const Estimate stats_estimate = o.stats ? run->StatsEstimate() : Estimate{};
     std::fprintf(stderr, "budget: grown %.0f MB %.2f s; stats %.0f MB %.2f s\n",
                  grown.memory_bytes / 1048576, grown.seconds, stats_estimate.memory_bytes / 1048576,
                  stats_estimate.seconds);
   }
-  if (o.stats && o.out_path.empty()) {
-    Check(CheckEstimate(ivy::EstimateIvyGrown(*model, log, limits) + stats_estimate, budget,
-                        ivy::kIvyStatsChange));
-  }
+  if (o.stats && o.out_path.empty()) Check(run->CheckStats());
   if (o.stats) {
-    ivy::IvyStats stats = ivy::MeasureIvy(*model, log, scene.free ? nullptr : &scene.mesh,
-                                          state.params, obstacles > 0 ? &attach : nullptr);
-    stats.tree_truncated_by = tree_truncated_by;
-    t.ms = Ms(t_start, std::chrono::steady_clock::now());
-    out << ivy::IvyStatsJson(stats, log, *model, t) << "\n";
+    run->timings().ms = Ms(t_start, std::chrono::steady_clock::now());
+    out << run->StatsJson() << "\n";
   }
   return 0;
 }
@@ -333,18 +314,22 @@ void AddIvyCommands(CLI::App& app, CommandList& commands) {
   grow->add_option("--mesh", o->mesh, "Support mesh file: .glb, .gltf or .obj");
   grow->add_option("--tree-preset", o->tree_preset,
                    "Climb a Niwa tree's bark ('niwa presets tree'; default ivy preset: metric)");
-  grow->add_option("--tree-years", o->tree_years, "Age of that tree, 1..100 (default 10)");
+  grow->add_option("--tree-years", o->tree_years,
+                   "Age of that tree, " + RangeHelp(kTreeYearsRange) + " (default 10)");
   grow->add_option("--seed-point", o->seed_points,
                    "Growth start X,Y,Z or a scene's named seed; repeat for several plants");
-  grow->add_option("--steps", o->steps, "Final step number, 0..10000 (default 50)");
-  grow->add_option("--seed", o->seed, "Random seed, 0..4294967295 (default 1)");
+  grow->add_option("--steps", o->steps,
+                   "Final step number, " + RangeHelp(kStepsRange) + " (default 50)");
+  grow->add_option("--seed", o->seed, "Random seed, " + RangeHelp(kSeedRange) + " (default 1)");
   grow->add_option("--preset", o->preset, "paper (default), literal, improved or metric");
   grow->add_option("--set", o->sets, "KEY=VALUE of the ivy table ('niwa params ivy')");
   grow->add_option("--params", o->params_file, "State JSON {preset, seed, steps, params}");
   grow->add_option("--url", o->url, "Share-link hash: preset=..&seed=..&steps=..&KEY=V");
   grow->add_option("--accel", o->accel, "Geometry queries: bvh (default) or linear (brute force)");
   grow->add_option("--subdivide", o->subdivide,
-                   "Split every support triangle into 4^K coplanar ones, K in [0, 8]");
+                   "Split every support triangle into 4^K coplanar ones, K in [" +
+                       FormatNumber(kSubdivideRange.min) + ", " +
+                       FormatNumber(kSubdivideRange.max) + "]");
   grow->add_flag("--stats", o->stats, "Print one JSON object of statistics on stdout");
   grow->add_option("--out", o->out_path,
                    "Write .json (buds, internodes), .lsys, .glb or .svg (front and side views)");

@@ -2,6 +2,7 @@
 #include "geom/mesh_metrics.h"
 
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <string>
 
 #include "geom/triangle_queries.h"
@@ -98,6 +99,26 @@ Status ValidateMesh(const TriMesh& mesh, const std::string& field) {
                                       " per vertex (components >= 1)");
   }
   return Status::Ok();
+}
+
+std::vector<glm::vec3> FaceNormals(const TriMesh& mesh) {
+  std::vector<glm::vec3> sum(mesh.positions.size(), glm::vec3(0.0f));
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    const uint32_t a = mesh.indices[3 * t], b = mesh.indices[3 * t + 1],
+                   c = mesh.indices[3 * t + 2];
+    const glm::vec3 n =
+        glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+    sum[a] += n;
+    sum[b] += n;
+    sum[c] += n;
+  }
+  std::vector<glm::vec3> out;
+  out.reserve(sum.size());
+  for (const glm::vec3& n : sum) {
+    const float l = std::sqrt(glm::dot(n, n));
+    out.push_back(l > 0 ? n / l : glm::vec3(0, 1, 0));
+  }
+  return out;
 }
 
 }  // namespace niwa::geom

@@ -1,11 +1,13 @@
 // Mesh metrics: surface area, bounds, degenerate triangles and the validity check every mesh from
 // outside passes before a BVH is built on it. Does not: repair meshes beyond dropping degenerate
-// triangles, weld vertices, or compute normals.
+// triangles, weld vertices, or smooth normals (FaceNormals gives faceted ones).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <string>
+#include <vector>
 
 #include "base/status.h"
 #include "geom/bounds.h"
@@ -26,6 +28,11 @@ std::size_t CountDegenerateTriangles(const TriMesh& mesh);
 // Drops degenerate triangles (keeping the order of the rest); returns how many were dropped.
 // Vertices are kept.
 std::size_t RemoveDegenerateTriangles(TriMesh* mesh);
+
+// Per-vertex normals of a mesh without them: each vertex gets its triangles' face normal (the
+// readers never share vertices across primitives; a shared vertex gets the area-weighted sum),
+// unit length, (0, 1, 0) where that sum is zero.
+std::vector<glm::vec3> FaceNormals(const TriMesh& mesh);
 
 // Ok, or the first problem, named under `field` (e.g. "mesh.glb"): an index count that is not a
 // multiple of 3, no triangles, a NaN/infinite position, an index out of range, or normals/uvs/

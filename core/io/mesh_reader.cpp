@@ -52,6 +52,13 @@ bool DegenerateTriangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3&
   return n.x == 0.0 && n.y == 0.0 && n.z == 0.0;
 }
 
+Result<geom::TriMesh> ReadMeshBytes(const std::string& bytes, const std::string& name,
+                                    MeshReadStats* stats) {
+  const bool obj = name.size() >= 4 && (name.compare(name.size() - 4, 4, ".obj") == 0 ||
+                                        name.compare(name.size() - 4, 4, ".OBJ") == 0);
+  return obj ? ReadObjMesh(bytes, name, stats) : ReadGltfMesh(bytes, name, "", stats);
+}
+
 Result<geom::TriMesh> ReadMeshFile(const std::string& path, MeshReadStats* stats) {
   std::string name = BaseName(path);
   std::size_t dot = name.find_last_of('.');

@@ -56,6 +56,11 @@ std::string BaseName(const std::string& path);
 // triangles are skipped and counted in MeshReadStats::degenerate.
 bool DegenerateTriangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
 
+// Reads a mesh's bytes (a dropped file: Draco already decoded, no external buffers) by its name:
+// OBJ text when the name ends in .obj or .OBJ, else glTF (.glb or .gltf); errors name `name`.
+Result<geom::TriMesh> ReadMeshBytes(const std::string& bytes, const std::string& name,
+                                    MeshReadStats* stats = nullptr);
+
 // Reads a .glb, .gltf or .obj file into one world-space TriMesh (metres, as stored).
 Result<geom::TriMesh> ReadMeshFile(const std::string& path, MeshReadStats* stats = nullptr);
 

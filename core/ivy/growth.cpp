@@ -16,6 +16,7 @@
 #include "math/det_math.h"
 #include "params/param_text.h"
 #include "random/pcg32.h"
+#include "run/study_run.h"
 
 namespace niwa::ivy {
 
@@ -175,10 +176,10 @@ class Grower {
         if (!hit.found || static_cast<double>(hit.distance) > d_) {
           std::string dist = hit.found ? FormatNumber(static_cast<double>(hit.distance)) : "inf";
           return Status::Error(
-              "--seed-point " + std::to_string(i + 1),
-              "(" + FormatNumber(seeds[i].x) + ", " + FormatNumber(seeds[i].y) + ", " +
-                  FormatNumber(seeds[i].z) + ") is " + dist +
-                  " from the nearest face; must be within d = " + FormatNumber(d_));
+              "seed_points", "point " + std::to_string(i + 1) + ": (" + FormatNumber(seeds[i].x) +
+                                 ", " + FormatNumber(seeds[i].y) + ", " + FormatNumber(seeds[i].z) +
+                                 ") is " + dist +
+                                 " from the nearest face; must be within d = " + FormatNumber(d_));
         }
         const glm::dvec3 cp(hit.point);
         glm::dvec3 n = seeds[i] - cp;
@@ -621,23 +622,23 @@ Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& see
   *log = GrowLog();
   NIWA_RETURN_IF_ERROR(ValidateIvyParams(params));
   if (steps < 0 || steps > kMaxSteps) {
-    return Status::Error("--steps", std::to_string(steps) +
-                                        " is out of range; must be a whole number in [0, 10000]");
+    return Status::Error(
+        "steps", std::to_string(steps) + " is out of range; must be a whole number in [0, 10000]");
   }
   if (seeds.empty() || seeds.size() > static_cast<std::size_t>(kMaxSeedPoints)) {
-    return Status::Error("--seed-point",
+    return Status::Error("seed_points",
                          std::to_string(seeds.size()) + " seed points; must be between 1 and 64");
   }
   for (const glm::dvec3& s : seeds) {
     if (!std::isfinite(s.x) || !std::isfinite(s.y) || !std::isfinite(s.z)) {
-      return Status::Error("--seed-point", "not finite; must be three finite numbers X,Y,Z");
+      return Status::Error("seed_points", "not finite; must be three finite numbers X,Y,Z");
     }
   }
   if (support.mesh != nullptr && support.mesh->triangle_count() == 0) {
-    return Status::Error("--mesh", "has no triangles; the support needs at least 1");
+    return Status::Error("mesh", "has no triangles; the support needs at least 1");
   }
   if (support.attach_mesh != nullptr && support.attach_mesh->triangle_count() == 0) {
-    return Status::Error("--mesh",
+    return Status::Error("mesh",
                          "has only obstacle triangles (noivy materials); ivy needs at "
                          "least 1 support triangle");
   }
@@ -653,7 +654,7 @@ Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& see
     log->bud_steps += static_cast<double>(g.model().buds.size());
     g.Step(s);
     log->steps_run = s;
-    if (on_step) on_step(s, steps);
+    if (on_step && !on_step(s, steps)) return run::CancelledStatus();
     if (!g.Alive()) {
       log->extinct_step = s;
       break;

@@ -38,11 +38,12 @@ struct IvyGrowLimits;  // ivy_budget.h
 
 // Grows one plant from every seed point for `steps` steps (stops early when no A or D is left, or
 // before a step whose worst case would cross `limits`: log->truncated_by then holds the line).
-// Errors: steps outside [0, 10000], no seed point, a seed farther than d from every face ("seed
-// point 1: 35.2 px from the nearest face; must be within d = 20"), invalid parameters.
+// Errors name state fields: "steps" (outside [0, 10000]), "seed_points" (none, more than 64, not
+// finite, or one farther than d from every face: "point 1: (600, 10, 450) is 50 from the nearest
+// face; must be within d = 20"), "mesh" (no support triangle), or a parameter.
 // on_step (optional) is called after every step with (step, steps): progress for a page's worker;
-// it cannot change the growth.
-using StepObserver = std::function<void(int step, int steps)>;
+// it cannot change the growth, only stop it: false cancels (Grow returns run::CancelledStatus()).
+using StepObserver = std::function<bool(int step, int steps)>;
 Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& seeds,
                       const IvyParams& params, int steps, uint64_t seed, GrowLog* log,
                       const IvyGrowLimits* limits = nullptr, const StepObserver& on_step = {});

@@ -179,9 +179,8 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p) {
   return {stems.Done(), leaves.Done(), suckers.Done()};
 }
 
-Result<std::vector<unsigned char>> WriteIvyGlb(const IvyModel& model, const IvyParams& params,
-                                               uint64_t seed, int steps,
-                                               const geom::TriMesh* support) {
+Result<gltf::Document> BuildIvyDocument(const IvyModel& model, const IvyParams& params,
+                                        uint64_t seed, int steps, const geom::TriMesh* support) {
   IvyMeshes meshes = BuildIvyMeshes(model, params);
   gltf::Document doc;
   doc.scene_name = "ivy";
@@ -240,7 +239,15 @@ Result<std::vector<unsigned char>> WriteIvyGlb(const IvyModel& model, const IvyP
     if (support->normals.size() == support->positions.size()) s.normals = support->normals;
     add("support", std::move(s), material("support", {0.7, 0.7, 0.7, 1}));
   }
-  return gltf::WriteGlb(doc);
+  return doc;
+}
+
+Result<std::vector<unsigned char>> WriteIvyGlb(const IvyModel& model, const IvyParams& params,
+                                               uint64_t seed, int steps,
+                                               const geom::TriMesh* support) {
+  Result<gltf::Document> doc = BuildIvyDocument(model, params, seed, steps, support);
+  if (!doc.ok()) return doc.status();
+  return gltf::WriteGlb(*doc);
 }
 
 }  // namespace niwa::ivy

@@ -10,6 +10,7 @@
 
 #include "base/status.h"
 #include "geom/tri_mesh.h"
+#include "io/gltf_writer.h"
 #include "ivy/ivy.h"
 #include "ivy/ivy_params.h"
 
@@ -21,8 +22,14 @@ struct IvyMeshes {
 
 IvyMeshes BuildIvyMeshes(const IvyModel& model, const IvyParams& params);
 
-// The .glb: nodes ivy_stems, ivy_leaves, ivy_suckers (+ support when given), asset extras =
-// {params, seed, steps}. `_BIRTH_STEP` per vertex.
+// The glTF document of the .glb, for a writer or a composer to merge: nodes ivy_stems, ivy_leaves,
+// ivy_suckers (+ support when given), asset extras = {params, seed, steps}. `_BIRTH_STEP` per
+// vertex. Error: the leaf texture's PNG.
+Result<gltf::Document> BuildIvyDocument(const IvyModel& model, const IvyParams& params,
+                                        uint64_t seed, int steps,
+                                        const geom::TriMesh* support = nullptr);
+
+// The .glb: gltf::WriteGlb of BuildIvyDocument.
 Result<std::vector<unsigned char>> WriteIvyGlb(const IvyModel& model, const IvyParams& params,
                                                uint64_t seed, int steps,
                                                const geom::TriMesh* support = nullptr);

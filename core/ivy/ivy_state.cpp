@@ -242,4 +242,5 @@ std::string EncodeIvyHash(const IvyState& state, std::string_view prefix) {
   return out;
 }
 
+
 }  // namespace niwa::ivy

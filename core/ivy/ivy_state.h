@@ -17,7 +17,7 @@ namespace niwa::ivy {
 
 constexpr double kMaxIvySeed = 4294967295.0;
 // The scene name of "a Niwa tree": its bark is grown by the caller (the CLI, the page's bindings:
-// core/tree/bark_support) from tree and tree_years; core/ivy never includes core/tree.
+// core/compose/ivy_on_tree) from tree and tree_years; core/ivy never includes core/tree.
 constexpr const char* kTreeScene = "tree";
 constexpr double kMaxTreeYears = 100;  // the tree study's kMaxYears (core/tree/tree.h)
 
@@ -57,8 +57,8 @@ std::string FormatSeedPoints(const std::vector<glm::dvec3>& points);
 // are ValidateIvyParams's.
 Status ApplyIvyStateJson(const std::string& text, IvyState* state);
 
-// {preset, seed, steps, scene, seed_points, tree, tree_years, params: {every key: value}} on one
-// line: what ApplyIvyStateJson reads back to the same state.
+// The state as JSON: {preset, seed, steps, scene, seed_points: "X,Y,Z;..", tree, tree_years,
+// params: {key: value}}, which ApplyIvyStateJson reads back (one line).
 std::string IvyStateJson(const IvyState& state);
 
 // Applies "#preset=paper&seed=3&steps=50&scene=wall&at=0,10,10&t1=0.3" (keys prefixed with

@@ -182,7 +182,7 @@ Result<IvyScene> MakeIvyScene(std::string_view name) {
   if (name == "pillar") return Pillar();
   if (name == "sphere") return Sphere();
   if (name == "free") return Free();
-  return Status::Error("--scene", "'" + std::string(name) +
+  return Status::Error("scene", "'" + std::string(name) +
                                       "' is unknown; must be one of cubes4, wall, overhang, "
                                       "stairs, pillar, sphere, free");
 }

@@ -36,7 +36,7 @@ const std::vector<std::string>& IvySceneNames();
 geom::TriMesh IvyAttachTriangles(const geom::TriMesh& mesh,
                                  const std::vector<io::MeshMaterial>& materials,
                                  std::size_t* obstacles);
-// Error: {"--scene", "'x' is unknown; must be one of cubes4, ..."}.
+// Error: {"scene", "'x' is unknown; must be one of cubes4, ..."}.
 Result<IvyScene> MakeIvyScene(std::string_view name);
 
 }  // namespace niwa::ivy

@@ -103,5 +103,24 @@ TEST(MeshMetrics, ValidateMeshNamesTheProblem) {
     EXPECT_EQ(e.Line().find('\n'), std::string::npos);
 }
 
+// FaceNormals (a support without normals, as the ivy page draws it): each vertex its triangles'
+// unit face normal from the winding; a shared vertex the area-weighted sum; an unused one +y.
+TEST(MeshMetrics, FaceNormalsFollowTheWinding) {
+  TriMesh mesh;
+  mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {5, 5, 5}};
+  mesh.indices = {0, 1, 2, 0, 3, 1};  // +z face (area 1/2), then +y face (z × x, area 1/2)
+  const std::vector<glm::vec3> n = FaceNormals(mesh);
+  ASSERT_EQ(n.size(), 5u);
+  EXPECT_EQ(n[2], glm::vec3(0, 0, 1));
+  EXPECT_EQ(n[3], glm::vec3(0, 1, 0));
+  const float h = 1.0f / std::sqrt(2.0f);
+  for (int v : {0, 1}) {  // shared by both faces
+    EXPECT_NEAR(n[static_cast<std::size_t>(v)].x, 0.0f, 1e-6f);
+    EXPECT_NEAR(n[static_cast<std::size_t>(v)].y, h, 1e-6f);
+    EXPECT_NEAR(n[static_cast<std::size_t>(v)].z, h, 1e-6f);
+  }
+  EXPECT_EQ(n[4], glm::vec3(0, 1, 0));  // in no triangle
+}
+
 }  // namespace
 }  // namespace niwa::geom

@@ -256,5 +256,30 @@ TEST(GltfReader, MeshFileDispatchesByExtension) {
             "README.md: unknown mesh file extension '.md'; must be .glb, .gltf or .obj");
 }
 
+// A dropped file's bytes by its name (the page's loadMesh): .obj/.OBJ is OBJ text, else glTF; the
+// same mesh as the file read from disk.
+TEST(GltfReader, MeshBytesDispatchByName) {
+  const auto slurp = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  for (const char* name : {"hierarchy.glb", "embedded.gltf", "shapes.obj"}) {
+    Result<geom::TriMesh> file = ReadMeshFile(MeshPath(name));
+    ASSERT_TRUE(file.ok()) << file.status().Line();
+    Result<geom::TriMesh> bytes = ReadMeshBytes(slurp(MeshPath(name)), name);
+    ASSERT_TRUE(bytes.ok()) << bytes.status().Line();
+    EXPECT_EQ(bytes->positions, file->positions) << name;
+    EXPECT_EQ(bytes->indices, file->indices) << name;
+  }
+  Result<geom::TriMesh> upper = ReadMeshBytes(slurp(MeshPath("shapes.obj")), "SHAPES.OBJ");
+  EXPECT_TRUE(upper.ok()) << upper.status().Line();
+  // OBJ text under a glTF name is read as glTF and refused, naming the file.
+  Result<geom::TriMesh> wrong = ReadMeshBytes(slurp(MeshPath("shapes.obj")), "shapes.glb");
+  ASSERT_FALSE(wrong.ok());
+  EXPECT_EQ(wrong.status().field(), "shapes.glb");
+}
+
 }  // namespace
 }  // namespace niwa::io

@@ -132,7 +132,7 @@ TEST(IvyRules, HostileInputIsOneLineNamingTheField) {
   EXPECT_NE(m.status().Line().find("t2"), std::string::npos);
   m = Grow(Support{}, {glm::dvec3(0.0)}, IvyParams(), -1, 1, nullptr);
   ASSERT_FALSE(m.ok());
-  EXPECT_EQ(m.status().Line(), "--steps: -1 is out of range; must be a whole number in [0, 10000]");
+  EXPECT_EQ(m.status().Line(), "steps: -1 is out of range; must be a whole number in [0, 10000]");
   EXPECT_FALSE(IvyParams().Set(IvyParam::kL, std::nan("")).ok());
   EXPECT_EQ(IvyPreset("nope").status().field(), "preset");
 }

@@ -204,8 +204,9 @@ TEST(IvySeeds, AFarSeedIsRefusedWithItsDistance) {
   Result<IvyModel> m = Grow(Support{&scene.mesh, &bvh, Accel::kBvh}, {glm::dvec3(600, 10, 450)},
                             IvyParams(), 10, 1, nullptr);
   ASSERT_FALSE(m.ok());
-  EXPECT_EQ(m.status().Line(),
-            "--seed-point 1: (600, 10, 450) is 50 from the nearest face; must be within d = 20");
+  EXPECT_EQ(
+      m.status().Line(),
+      "seed_points: point 1: (600, 10, 450) is 50 from the nearest face; must be within d = 20");
 }
 
 TEST(IvyScenes, EveryBuiltInSceneGrowsNearItsSupport) {

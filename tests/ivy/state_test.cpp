@@ -105,5 +105,27 @@ TEST(IvyState, HostileHashValuesGiveNotices) {
   EXPECT_EQ(s.params.Get(IvyParam::kT1), 0.1);
 }
 
+// IvyStateJson (the page's decoded state) is what ApplyIvyStateJson reads back, field for field.
+TEST(IvyState, StateJsonRoundTrips) {
+  IvyState state;
+  ASSERT_TRUE(SetIvyPreset("metric", &state).ok());
+  ASSERT_TRUE(SetIvySeed(7, &state).ok());
+  ASSERT_TRUE(SetIvySteps(120, &state).ok());
+  ASSERT_TRUE(SetIvyScene("tree", &state).ok());
+  ASSERT_TRUE(SetIvyTree("maple", &state).ok());
+  ASSERT_TRUE(SetIvyTreeYears(9, &state).ok());
+  ASSERT_TRUE(SetIvySeedPoints("0.1,0.2,0.3;-1,2,3.5", &state).ok());
+  ASSERT_TRUE(state.params.SetFromAssignment("t1=0.15").ok());
+  const std::string json = IvyStateJson(state);
+  EXPECT_EQ(
+      json.rfind(R"({"preset":"metric","seed":7,"steps":120,"scene":"tree","seed_points":)", 0), 0u)
+      << json;
+  IvyState back;
+  ASSERT_TRUE(ApplyIvyStateJson(json, &back).ok()) << json;
+  EXPECT_EQ(EncodeIvyHash(back), EncodeIvyHash(state));
+  EXPECT_EQ(back.seed_points, state.seed_points);
+  EXPECT_EQ(IvyStateJson(back), json);
+}
+
 }  // namespace
 }  // namespace niwa::ivy

@@ -7,7 +7,7 @@
 // downloads .glb, .json and .lsys. Growth runs in the worker (web/worker/ivy_handler.js).
 // Does not: parse or check states (the core does; its one line is shown beside its field), draw
 // directly (ivy_renderer.js), or grow the tree it climbs (scene 'tree': the worker grows the
-// tree preset's bark, core/tree/bark_support, as the CLI's --tree-preset does).
+// tree preset's bark, core/compose/ivy_on_tree, as the CLI's --tree-preset does).
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { ProgressiveLoop } from '../gl/progressive_loop.js';

@@ -1,9 +1,9 @@
 // A grown tree's bark as a plain geom::TriMesh (metres, y up) with a seed point at the trunk foot:
-// what a climbing-plant study (ivy, paper 004) climbs when it grows on a Niwa tree. The CLI
-// (`niwa ivy grow --tree-preset`) and the ivy page's bindings both call this, so the two grow the
-// same support, within the same budget as `niwa tree grow` (issue 16). Does not: know any climbing
-// plant (core/tree includes no other study), add leaves or flowers to the support (ivy climbs bark
-// only), or build a BVH.
+// what a climbing-plant study (ivy, paper 004) climbs when it grows on a Niwa tree. Part of the
+// composition tier (core/compose may include studies; no study includes it): compose/ivy_on_tree
+// turns it into the ivy's support, for the CLI and the ivy page alike, within the same budget as
+// `niwa tree grow` (issue 16). Does not: know any climbing plant, add leaves or flowers to the
+// support (ivy climbs bark only), or build the climber's BVH.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -14,7 +14,7 @@
 #include "geom/tri_mesh.h"
 #include "tree/mesh.h"
 
-namespace niwa {
+namespace niwa::compose {
 
 struct BarkSupport {
   geom::TriMesh mesh;     // the bark tubes (positions and normals in metres)
@@ -48,4 +48,4 @@ geom::TriMesh BarkTriMesh(const MeshBuffers& bark);
 Result<BarkSupport> GrowBarkSupport(const std::string& preset, double years,
                                     const BarkBudget* budget = nullptr);
 
-}  // namespace niwa
+}  // namespace niwa::compose

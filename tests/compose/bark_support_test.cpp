@@ -1,8 +1,8 @@
-// core/tree/bark_support: a grown tree's bark as one TriMesh with the trunk-foot seed on it, its
+// core/compose/bark_support: a grown tree's bark as one TriMesh with the trunk-foot seed on it, its
 // errors naming tree or tree_years, and its budget (the tree's limits, the bark's estimate
 // against the heap this binary's metered operator new saw).
 #define NIWA_ALLOC_METER_DEFINE
-#include "tree/bark_support.h"
+#include "compose/bark_support.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include "geom/mesh_metrics.h"
 #include "support/alloc_meter.h"
 
-namespace niwa {
+namespace niwa::compose {
 namespace {
 
 TEST(BarkSupport, IsTheBarkWithASeedAtTheTrunkFoot) {
@@ -95,4 +95,4 @@ TEST(BarkSupport, ATightBudgetStopsTheTreeWithTheLine) {
 }
 
 }  // namespace
-}  // namespace niwa
+}  // namespace niwa::compose

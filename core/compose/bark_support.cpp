@@ -1,5 +1,5 @@
 // A grown tree's bark as a climbing support (see bark_support.h).
-#include "tree/bark_support.h"
+#include "compose/bark_support.h"
 
 #include <limits>
 
@@ -10,7 +10,7 @@
 #include "tree/tree_budget.h"
 #include "tree/tree_state.h"
 
-namespace niwa {
+namespace niwa::compose {
 namespace {
 
 // The bark as a TriMesh (a position and a normal, 24 bytes a vertex, 12 of indices a triangle)
@@ -94,4 +94,4 @@ Result<BarkSupport> GrowBarkSupport(const std::string& preset, double years,
   return out;
 }
 
-}  // namespace niwa
+}  // namespace niwa::compose

@@ -1,0 +1,347 @@
+// The ivy study's run: support, growth, statistics and exports once (see ivy_run.h).
+#include "ivy/ivy_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "geom/closest_point.h"
+#include "geom/mesh_metrics.h"
+#include "geom/primitives.h"
+#include "ivy/lstring.h"
+#include "params/param_text.h"
+
+namespace niwa::ivy {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double Ms(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+Result<IvyExport> ExportKind(const std::string& format) {
+  if (format == "json") return IvyExport::kJson;
+  if (format == "lsys") return IvyExport::kLsys;
+  if (format == "svg") return IvyExport::kSvg;
+  if (format == "glb") return IvyExport::kGlb;
+  return Status::Error("format", "'" + format + "' is unknown; must be json, lsys, svg or glb");
+}
+
+// The default seed of a dropped mesh: the surface point nearest to a point in front of the mesh
+// (+z) at a tenth of its height (Grow lifts it to d/2 off that face).
+void AddFrontSeed(const geom::TriMesh& seedable, const geom::Bvh& bvh, IvyScene* scene) {
+  if (seedable.triangle_count() == 0) return;
+  const geom::Bounds3 b = geom::MeshBounds(seedable);
+  const glm::vec3 size = b.max - b.min;
+  const glm::vec3 probe(0.5f * (b.min.x + b.max.x), b.min.y + 0.1f * size.y,
+                        b.max.z + std::max({size.x, size.y, size.z}));
+  geom::ClosestHit hit =
+      geom::ClosestPoint(seedable, bvh, probe, std::numeric_limits<float>::infinity());
+  if (hit.found) scene->seeds.push_back({"front", glm::dvec3(hit.point)});
+}
+
+// The seed points of a state on a support: the state's, else the scene's first named seed.
+Result<std::vector<glm::dvec3>> SeedsOn(const IvyState& state, const IvySupport& support) {
+  std::vector<glm::dvec3> seeds = state.seed_points;
+  if (seeds.empty() && !support.scene().seeds.empty())
+    seeds.push_back(support.scene().seeds[0].pos);
+  if (seeds.empty()) {
+    return Status::Error("seed_points",
+                         "required on a support with no named seed; must be X,Y,Z within d of a "
+                         "face");
+  }
+  return seeds;
+}
+
+}  // namespace
+
+IvySupportInput IvySupportInput::Scene(std::string name) {
+  IvySupportInput in;
+  in.kind = Kind::kScene;
+  in.scene = std::move(name);
+  return in;
+}
+
+IvySupportInput IvySupportInput::Mesh(geom::TriMesh mesh, std::string name,
+                                      std::vector<io::MeshMaterial> materials) {
+  IvySupportInput in;
+  in.kind = Kind::kMesh;
+  in.mesh = std::move(mesh);
+  in.name = std::move(name);
+  in.materials = std::move(materials);
+  return in;
+}
+
+IvySupportInput IvySupportInput::Prepared(IvyScene scene, Estimate estimate,
+                                          std::string truncated_by) {
+  IvySupportInput in;
+  in.kind = Kind::kPrepared;
+  in.prepared = std::move(scene);
+  in.prepared_estimate = std::move(estimate);
+  in.prepared_truncated_by = std::move(truncated_by);
+  return in;
+}
+
+Result<std::shared_ptr<const IvySupport>> IvySupport::Prepare(IvySupportInput input,
+                                                              const IvySupportOptions& options,
+                                                              const Budget& budget) {
+  auto out = std::make_shared<IvySupport>();
+  IvySupport& s = *out;
+  double prepared_seconds = 0;
+  switch (input.kind) {
+    case IvySupportInput::Kind::kScene: {
+      Result<IvyScene> scene = MakeIvyScene(input.scene);
+      if (!scene.ok()) return scene.status();
+      s.scene_ = std::move(scene).value();
+      break;
+    }
+    case IvySupportInput::Kind::kMesh: {
+      NIWA_RETURN_IF_ERROR(geom::ValidateMesh(input.mesh, "mesh"));
+      s.scene_.name = input.name;
+      s.scene_.mesh = std::move(input.mesh);
+      s.is_mesh_ = true;
+      break;
+    }
+    case IvySupportInput::Kind::kPrepared:
+      s.scene_ = std::move(input.prepared);
+      prepared_seconds = input.prepared_estimate.seconds;
+      s.truncated_by_ = std::move(input.prepared_truncated_by);
+      break;
+  }
+  const int levels = options.subdivide;
+  if (levels < 0 || levels > kMaxIvySubdivide) {
+    return Status::Error(
+        "subdivide", std::to_string(levels) + " is out of range; must be a whole number in [0, 8]");
+  }
+  if (levels > 0 && !s.scene_.free) {
+    const double after =
+        static_cast<double>(s.scene_.mesh.triangle_count()) * std::pow(4.0, levels);
+    if (after > static_cast<double>(io::kMaxMeshTriangles)) {
+      return Status::Error("subdivide", std::to_string(levels) + " would make " +
+                                            FormatNumber(after) +
+                                            " triangles; the limit is 4000000 (4 M)");
+    }
+  }
+  // The support's memory and time (the subdivision, its BVH), refused before subdividing.
+  std::vector<io::MeshMaterial> materials = std::move(input.materials);
+  if (s.is_mesh_) s.attach_ = IvyAttachTriangles(s.scene_.mesh, materials, &s.obstacles_);
+  IvySupportSize size;
+  size.triangles = s.triangles();
+  size.levels = s.scene_.free ? 0 : levels;
+  size.bvh = options.accel == Accel::kBvh;
+  size.obstacles = s.is_mesh_ && (options.mesh_attach_always_counted || s.obstacles_ > 0);
+  s.estimate_ = EstimateIvySupport(size);
+  // A prepared support's building (a tree's growth and bark) took its time before the ivy's.
+  s.estimate_.seconds += prepared_seconds;
+  if (options.check_budget)
+    NIWA_RETURN_IF_ERROR(CheckEstimate(s.estimate_, budget, options.change));
+  if (levels > 0 && !s.scene_.free) s.scene_.mesh = geom::Subdivide(s.scene_.mesh, levels);
+  const auto t0 = Clock::now();
+  s.accel_ = options.accel;
+  if (!s.scene_.free && s.accel_ == Accel::kBvh) s.bvh_ = geom::Bvh::Build(s.scene_.mesh);
+  if (s.obstacles_ > 0 && s.accel_ == Accel::kBvh) s.attach_bvh_ = geom::Bvh::Build(s.attach_);
+  if (s.is_mesh_ && options.front_seed && s.accel_ == Accel::kBvh) {
+    AddFrontSeed(s.obstacles_ > 0 ? s.attach_ : s.scene_.mesh,
+                 s.obstacles_ > 0 ? s.attach_bvh_ : s.bvh_, &s.scene_);
+  }
+  s.ms_bvh_ = Ms(t0, Clock::now());
+  return std::shared_ptr<const IvySupport>(std::move(out));
+}
+
+Support IvySupport::ForGrow() const {
+  Support support;
+  if (scene_.free) return support;
+  support = {&scene_.mesh, &bvh_, accel_};
+  if (obstacles_ > 0) {
+    support.attach_mesh = &attach_;
+    support.attach_bvh = &attach_bvh_;
+  }
+  return support;
+}
+
+Result<IvyRun> IvyRun::Start(const IvyState& state, std::shared_ptr<const IvySupport> support,
+                             const Budget& budget, const IvyRunOptions& options) {
+  NIWA_RETURN_IF_ERROR(ValidateIvyParams(state.params));
+  IvyRun run;
+  run.state_ = state;
+  run.support_ = std::move(support);
+  run.budget_ = budget;
+  run.options_ = options;
+  Result<std::vector<glm::dvec3>> seeds = SeedsOn(state, *run.support_);
+  if (!seeds.ok()) return seeds.status();
+  run.seeds_ = std::move(seeds).value();
+  run.SetLimits();
+  run.timings_.ms_bvh = run.support_->ms_bvh();
+  return run;
+}
+
+void IvyRun::SetLimits() {
+  limits_ = IvyLimits(state_.params, budget_, support_->estimate(), !support_->free());
+  limits_.bytes_per_bud += options_.extra_bytes_per_bud;
+  if (!options_.change.empty()) limits_.change = options_.change;
+  grow_limits_ = limits_;
+  if (options_.reserve_stats) ReserveIvyStats(support_->triangles(), &grow_limits_);
+}
+
+Status IvyRun::Advance(const run::Observer& observer) {
+  if (grown_) return Status::Ok();
+  GrowLog log;
+  const StepObserver on_step = [&observer](int step, int steps) {
+    return !observer || observer({"grow", static_cast<double>(step), static_cast<double>(steps)});
+  };
+  ++grows_;
+  Result<IvyModel> model = Grow(support_->ForGrow(), seeds_, state_.params, state_.steps,
+                                state_.seed, &log, &grow_limits_, on_step);
+  if (!model.ok()) return model.status();
+  model_ = std::move(model).value();
+  log_ = std::move(log);
+  timings_.ms_rules = log_.ms_rules;
+  timings_.ms_search = log_.ms_search;
+  timings_.ms_mesh = 0;
+  meshes_ = IvyMeshes{};
+  if (options_.build_meshes) {
+    const auto t0 = Clock::now();
+    meshes_ = BuildIvyMeshes(model_, state_.params);
+    ++remeshes_;
+    timings_.ms_mesh = Ms(t0, Clock::now());
+  }
+  grown_ = true;
+  return Status::Ok();
+}
+
+Status IvyRun::Update(const IvyState& state) {
+  NIWA_RETURN_IF_ERROR(ValidateIvyParams(state.params));
+  bool regrow = !grown_ || state.preset != state_.preset || state.seed != state_.seed ||
+                state.steps != state_.steps || state.scene != state_.scene ||
+                state.seed_points != state_.seed_points || state.tree != state_.tree ||
+                state.tree_years != state_.tree_years;
+  bool remesh = false;
+  for (std::size_t i = 0; !regrow && i < state.params.size(); ++i) {
+    if (state.params.Get(i) == state_.params.Get(i)) continue;
+    if (state.params.table().row(i).stage == Stage::kGrow) regrow = true;
+    if (state.params.table().row(i).stage == Stage::kMesh) remesh = true;
+  }
+  Result<std::vector<glm::dvec3>> seeds = SeedsOn(state, *support_);
+  if (!seeds.ok()) return seeds.status();
+  state_ = state;
+  seeds_ = std::move(seeds).value();
+  SetLimits();
+  if (regrow) {
+    grown_ = false;
+    model_ = IvyModel{};
+    log_ = GrowLog{};
+    meshes_ = IvyMeshes{};
+    return Status::Ok();
+  }
+  if (remesh && options_.build_meshes) {
+    const auto t0 = Clock::now();
+    meshes_ = BuildIvyMeshes(model_, state_.params);
+    ++remeshes_;
+    timings_.ms_mesh = Ms(t0, Clock::now());
+  }
+  return Status::Ok();
+}
+
+std::vector<run::Part> IvyRun::Parts() const {
+  std::vector<run::Part> parts;
+  Result<gltf::Document> doc = Document();
+  if (!doc.ok()) return parts;
+  for (const gltf::Mesh& mesh : doc->meshes) {
+    for (const gltf::Primitive& prim : mesh.primitives) {
+      run::Part part;
+      part.name = mesh.name;
+      part.mode = prim.mode;
+      part.mesh = prim.mesh;
+      if (prim.material >= 0) {
+        part.material = doc->materials[static_cast<std::size_t>(prim.material)];
+        if (part.material.base_color_texture >= 0) {
+          part.textures.push_back(
+              doc->textures[static_cast<std::size_t>(part.material.base_color_texture)]);
+          part.material.base_color_texture = 0;
+        }
+      }
+      parts.push_back(std::move(part));
+    }
+  }
+  return parts;
+}
+
+Result<gltf::Document> IvyRun::Document() const {
+  if (!grown_) return Status::Error("ivy", "nothing grown yet");
+  return BuildIvyDocument(model_, state_.params, state_.seed, state_.steps, nullptr);
+}
+
+Estimate IvyRun::StatsEstimate() const {
+  return EstimateIvyStats(CountIvyStatsWork(model_, state_.params, support_->triangles()));
+}
+
+Status IvyRun::CheckStats() const {
+  if (!grown_) return Status::Ok();
+  return CheckEstimate(EstimateIvyGrown(model_, log_, limits_) + StatsEstimate(), budget_,
+                       options_.stats_change);
+}
+
+std::string IvyRun::StatsJson() const {
+  if (!grown_) return "{}";
+  // The measurement's exact estimate (the overlap sweep's pairs, counted before any is tested)
+  // with the grown ivy's; when it does not fit, the sweep is left out and its line is a notice.
+  const Status fits = CheckStats();
+  IvyStats stats =
+      MeasureIvy(model_, log_, support_->mesh(), state_.params, support_->attach(), fits.ok());
+  stats.overlap_skipped_by = fits.Line();
+  stats.tree_truncated_by = support_->truncated_by();
+  return IvyStatsJson(stats, log_, model_, timings_);
+}
+
+std::string IvyRun::Hash(const std::string& prefix) const { return EncodeIvyHash(state_, prefix); }
+
+Result<Estimate> IvyRun::ExportEstimate(const std::string& format) const {
+  return ExportEstimate(format, false);
+}
+
+Result<Estimate> IvyRun::ExportEstimate(const std::string& format, bool with_support) const {
+  Result<IvyExport> kind = ExportKind(format);
+  if (!kind.ok()) return kind.status();
+  const bool support_out =
+      !support_->free() && (*kind == IvyExport::kSvg || (with_support && *kind == IvyExport::kGlb));
+  Estimate e =
+      EstimateIvyGrown(model_, log_, options_.export_with_stats_room ? grow_limits_ : limits_) +
+      EstimateIvyExport(model_, *kind, support_out ? support_->triangles() : 0);
+  if (options_.stats) e = e + StatsEstimate();
+  return e;
+}
+
+Status IvyRun::CheckExport(const std::string& format, bool with_support) const {
+  if (!grown_) return Status::Ok();
+  Result<Estimate> e = ExportEstimate(format, with_support);
+  if (!e.ok()) return e.status();
+  return CheckEstimate(*e, budget_, options_.export_change);
+}
+
+Result<std::string> IvyRun::Export(const std::string& format,
+                                   const IvyExportOptions& options) const {
+  NIWA_RETURN_IF_ERROR(CheckExport(format, options.with_support));
+  return ExportUnchecked(format, options);
+}
+
+Result<std::string> IvyRun::ExportUnchecked(const std::string& format,
+                                            const IvyExportOptions& options) const {
+  if (!grown_) return Status::Error(format, "nothing grown yet");
+  if (format == "json")
+    return IvyModelJson(model_, state_.params, state_.seed, state_.steps) + "\n";
+  if (format == "lsys") return PrintLString(model_);
+  if (format == "svg") return IvySvg(model_, state_.params, support_->mesh(), options.svg);
+  if (format == "glb") {
+    Result<std::vector<unsigned char>> glb =
+        WriteIvyGlb(model_, state_.params, state_.seed, state_.steps,
+                    options.with_support ? support_->mesh() : nullptr);
+    if (!glb.ok()) return glb.status();
+    return std::string(glb->begin(), glb->end());
+  }
+  return ExportKind(format).status();
+}
+
+}  // namespace niwa::ivy

@@ -1,0 +1,293 @@
+// core/ivy/ivy_run: the ivy pipeline tested once through IvySupport and IvyRun (a scene, a mesh
+// with a seed, a tree through core/compose, cancel, a budget refusal before work, the exports
+// equal to `niwa ivy grow --out`, the share hash with a prefix, the mesh-stage cache). Natively and
+// under node on WASM.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "compose/ivy_on_tree.h"
+#include "io/mesh_reader.h"
+#include "ivy/ivy_run.h"
+#include "support/cli_runner.h"
+
+namespace niwa::ivy {
+namespace {
+
+std::string Slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+nlohmann::json WithoutMs(nlohmann::json j) {
+  for (const char* key : {"ms", "ms_bvh", "ms_rules", "ms_search", "ms_mesh"}) j.erase(key);
+  return j;
+}
+
+std::shared_ptr<const IvySupport> Prepared(IvySupportInput input,
+                                           const IvySupportOptions& options = {},
+                                           const Budget& budget = {}) {
+  Result<std::shared_ptr<const IvySupport>> s =
+      IvySupport::Prepare(std::move(input), options, budget);
+  EXPECT_TRUE(s.ok()) << s.status().Line();
+  return s.ok() ? *s : nullptr;
+}
+
+IvyRun Started(const IvyState& state, std::shared_ptr<const IvySupport> support,
+               const IvyRunOptions& options = {}) {
+  Result<IvyRun> run = IvyRun::Start(state, std::move(support), Budget{}, options);
+  EXPECT_TRUE(run.ok()) << run.status().Line();
+  return std::move(run).value();
+}
+
+IvyState Steps(int steps, const std::string& preset = "paper") {
+  IvyState state;
+  EXPECT_TRUE(SetIvyPreset(preset, &state).ok());
+  state.steps = steps;
+  return state;
+}
+
+TEST(IvyRun, GrowsASceneAsTheCliDoes) {
+  IvyRun run = Started(Steps(30), Prepared(IvySupportInput::Scene("wall")));
+  EXPECT_STREQ(run.study(), "ivy");
+  EXPECT_STREQ(run.unit(), "steps");
+  EXPECT_EQ(run.done(), 0);
+  EXPECT_EQ(run.StatsJson(), "{}");
+  std::vector<double> seen;
+  ASSERT_TRUE(run.Advance([&seen](const run::Progress& p) {
+                   EXPECT_EQ(p.phase, "grow");
+                   EXPECT_EQ(p.total, 30);
+                   seen.push_back(p.done);
+                   return true;
+                 })
+                  .ok());
+  EXPECT_TRUE(run.grown());
+  EXPECT_EQ(run.done(), 30);
+  EXPECT_EQ(run.target(), 30);
+  ASSERT_EQ(seen.size(), 30u);
+  EXPECT_EQ(seen.back(), 30);
+  CliResult cli = RunNiwa({"ivy", "grow", "--scene", "wall", "--steps", "30", "--stats"});
+  ASSERT_EQ(cli.code, 0) << cli.err;
+  EXPECT_EQ(WithoutMs(nlohmann::json::parse(run.StatsJson())),
+            WithoutMs(nlohmann::json::parse(cli.out)));
+  // Its parts: the ivy's meshes, each named, in metres of the scene; and its glTF document.
+  const std::vector<run::Part> parts = run.Parts();
+  ASSERT_GE(parts.size(), 2u);
+  EXPECT_EQ(parts[0].name, "ivy_stems");
+  EXPECT_GT(parts[0].mesh.triangle_count(), 0u);
+  Result<gltf::Document> doc = run.Document();
+  ASSERT_TRUE(doc.ok()) << doc.status().Line();
+  EXPECT_EQ(doc->meshes.size(), parts.size());
+}
+
+TEST(IvyRun, AMeshSupportGrowsFromItsSeedOrItsFrontSeed) {
+  const std::string path = std::string(NIWA_SOURCE_DIR) + "/tests/data/meshes/materials.glb";
+  io::MeshReadStats read;
+  Result<geom::TriMesh> mesh = io::ReadMeshFile(path, &read);
+  ASSERT_TRUE(mesh.ok()) << mesh.status().Line();
+  // The bytes read by name give the same mesh (the page's dropped file).
+  io::MeshReadStats read_bytes;
+  Result<geom::TriMesh> from_bytes = io::ReadMeshBytes(Slurp(path), "materials.glb", &read_bytes);
+  ASSERT_TRUE(from_bytes.ok()) << from_bytes.status().Line();
+  EXPECT_EQ(from_bytes->positions, mesh->positions);
+  EXPECT_EQ(read_bytes.materials.size(), read.materials.size());
+  auto support = Prepared(IvySupportInput::Mesh(*mesh, path, read.materials));
+  EXPECT_TRUE(support->is_mesh());
+  EXPECT_GT(support->obstacles(), 0u);  // the noivy glass
+  EXPECT_TRUE(support->scene().seeds.empty());
+  // No seed, no named seed: the run names the state's field.
+  Result<IvyRun> seedless = IvyRun::Start(Steps(20, "metric"), support, Budget{});
+  ASSERT_FALSE(seedless.ok());
+  EXPECT_EQ(seedless.status().field(), "seed_points");
+  IvyState state = Steps(20, "metric");
+  state.seed_points = {{0.2, 0.2, 1.01}};
+  IvyRun run = Started(state, support);
+  ASSERT_TRUE(run.Advance({}).ok());
+  CliResult cli = RunNiwa({"ivy", "grow", "--mesh", path, "--preset", "metric", "--seed-point",
+                           "0.2,0.2,1.01", "--steps", "20", "--stats"});
+  ASSERT_EQ(cli.code, 0) << cli.err;
+  EXPECT_EQ(WithoutMs(nlohmann::json::parse(run.StatsJson())),
+            WithoutMs(nlohmann::json::parse(cli.out)));
+  // The page's support: a "front" seed on the attachable triangles, so it grows at once.
+  IvySupportOptions page;
+  page.front_seed = true;
+  auto fronted = Prepared(IvySupportInput::Mesh(*mesh, "materials.glb", read.materials), page);
+  ASSERT_EQ(fronted->scene().seeds.size(), 1u);
+  EXPECT_EQ(fronted->scene().seeds[0].name, "front");
+  IvyRun front = Started(Steps(10, "metric"), fronted);
+  ASSERT_TRUE(front.Advance({}).ok());
+  EXPECT_GT(front.model().buds.size(), 1u);
+}
+
+TEST(IvyRun, ATreeSupportThroughComposeGrowsWhatTheCliGrows) {
+  Result<IvySupportInput> tree = compose::IvyTreeSupport("sakura", 6, Budget{});
+  ASSERT_TRUE(tree.ok()) << tree.status().Line();
+  EXPECT_EQ(tree->kind, IvySupportInput::Kind::kPrepared);
+  EXPECT_GT(tree->prepared_estimate.seconds, 0);
+  auto support = Prepared(std::move(tree).value());
+  EXPECT_EQ(support->scene().name, "tree:sakura");
+  ASSERT_EQ(support->scene().seeds.size(), 1u);
+  EXPECT_EQ(support->scene().seeds[0].name, "trunk");
+  IvyRun run = Started(Steps(50, "metric"), support);
+  ASSERT_TRUE(run.Advance({}).ok());
+  CliResult cli =
+      RunNiwa({"ivy", "grow", "--tree-preset", "sakura", "--tree-years", "6", "--stats"});
+  ASSERT_EQ(cli.code, 0) << cli.err;
+  EXPECT_EQ(WithoutMs(nlohmann::json::parse(run.StatsJson())),
+            WithoutMs(nlohmann::json::parse(cli.out)));
+  // An unknown tree names the state's field.
+  Result<IvySupportInput> oak = compose::IvyTreeSupport("oak", 6, Budget{});
+  ASSERT_FALSE(oak.ok());
+  EXPECT_EQ(oak.status().field(), "tree");
+}
+
+TEST(IvyRun, ACancelledGrowLeavesTheRunAsItWas) {
+  auto support = Prepared(IvySupportInput::Scene("cubes4"));
+  IvyRun run = Started(Steps(40), support);
+  int calls = 0;
+  Status s = run.Advance([&calls](const run::Progress& p) {
+    ++calls;
+    return p.done < 12;
+  });
+  EXPECT_TRUE(run::IsCancelled(s)) << s.Line();
+  EXPECT_EQ(calls, 12);
+  EXPECT_FALSE(run.grown());
+  EXPECT_EQ(run.done(), 0);
+  EXPECT_EQ(run.StatsJson(), "{}");
+  EXPECT_FALSE(run.Export("json", {}).ok());
+  // Then grown whole: the same ivy as a run never cancelled.
+  ASSERT_TRUE(run.Advance({}).ok());
+  IvyRun fresh = Started(Steps(40), support);
+  ASSERT_TRUE(fresh.Advance({}).ok());
+  EXPECT_EQ(*run.Export("json", {}), *fresh.Export("json", {}));
+  // A cancelled regrow after an Update leaves the new state ungrown, never half grown.
+  ASSERT_TRUE(run.Update(Steps(45)).ok());
+  EXPECT_FALSE(run.grown());
+  EXPECT_TRUE(run::IsCancelled(run.Advance([](const run::Progress&) { return false; })));
+  EXPECT_FALSE(run.grown());
+  EXPECT_EQ(run.done(), 0);
+}
+
+TEST(IvyRun, ABudgetRefusalComesBeforeWorkAndNamesItsField) {
+  Budget tight;
+  tight.seconds = 1;
+  IvySupportOptions options;
+  options.subdivide = 5;  // 1,310,720 triangles: about 4 s
+  Result<std::shared_ptr<const IvySupport>> s =
+      IvySupport::Prepare(IvySupportInput::Scene("sphere"), options, tight);
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.status().field(), "--max-seconds") << s.status().Line();  // the budget's limit
+  EXPECT_NE(s.status().message().find("subdividing the support to 1,310,720 triangles"),
+            std::string::npos)
+      << s.status().Line();
+  // Over the triangle cap: the state's field, before any estimate.
+  options.subdivide = 6;  // 5,242,880 triangles
+  s = IvySupport::Prepare(IvySupportInput::Scene("sphere"), options, Budget{});
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.status().field(), "subdivide") << s.status().Line();
+  EXPECT_NE(s.status().message().find("the limit is 4000000"), std::string::npos)
+      << s.status().Line();
+  // An unknown scene names its field too.
+  s = IvySupport::Prepare(IvySupportInput::Scene("moon"), {}, Budget{});
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.status().field(), "scene");
+  // Grow's errors name the state's fields; the CLI names its flags (one table).
+  IvyState far = Steps(10);
+  far.seed_points = {{600, 10, 450}};
+  Result<IvyRun> lost = IvyRun::Start(far, Prepared(IvySupportInput::Scene("cubes4")), Budget{});
+  ASSERT_TRUE(lost.ok());
+  Status grown = lost->Advance({});
+  EXPECT_EQ(grown.field(), "seed_points") << grown.Line();
+  EXPECT_FALSE(lost->grown());
+  CliResult cli = RunNiwa({"ivy", "grow", "--seed-point", "600,10,450", "--steps", "10"});
+  EXPECT_EQ(cli.err,
+            "niwa: error: --seed-point 1: (600, 10, 450) is 50 from the nearest face; must be "
+            "within d = 20\n");
+  IvyState many = Steps(-1);
+  Result<IvyRun> negative =
+      IvyRun::Start(many, Prepared(IvySupportInput::Scene("cubes4")), Budget{});
+  ASSERT_TRUE(negative.ok());
+  EXPECT_EQ(negative->Advance({}).field(), "steps");
+  // A budget that holds no step: the growth stops before step 1 with its line, and an export
+  // of what is there is refused (naming the limit) before its bytes are made.
+  Budget none;
+  none.memory_bytes = 1;
+  Result<IvyRun> run = IvyRun::Start(Steps(20), Prepared(IvySupportInput::Scene("cubes4")), none);
+  ASSERT_TRUE(run.ok()) << run.status().Line();
+  ASSERT_TRUE(run->Advance({}).ok());
+  EXPECT_EQ(run->log().truncated_by.rfind("--max-memory: stopped at step 1 of 20", 0), 0u)
+      << run->log().truncated_by;
+  Result<std::string> glb = run->Export("glb", {});
+  ASSERT_FALSE(glb.ok());
+  EXPECT_EQ(glb.status().field(), "--max-memory") << glb.status().Line();
+  EXPECT_NE(glb.status().message().find("writing the .glb"), std::string::npos)
+      << glb.status().Line();
+  EXPECT_TRUE(run->ExportUnchecked("glb", {}).ok());
+  EXPECT_FALSE(run->ExportEstimate("png").ok());
+}
+
+TEST(IvyRun, ExportsAreTheCliBytesAndTheHashTakesAPrefix) {
+  auto support = Prepared(IvySupportInput::Scene("stairs"));
+  IvyState state = Steps(25);
+  state.seed = 4;
+  IvyRun run = Started(state, support);
+  ASSERT_TRUE(run.Advance({}).ok());
+  for (const char* format : {"json", "lsys", "svg", "glb"}) {
+    const std::string path = std::string("ivy_run_test.") + format;
+    CliResult cli = RunNiwa({"ivy", "grow", "--scene", "stairs", "--steps", "25", "--seed", "4",
+                             "--out", path, "--with-support"});
+    ASSERT_EQ(cli.code, 0) << cli.err;
+    IvyExportOptions options;
+    options.with_support = true;
+    Result<std::string> bytes = run.Export(format, options);
+    ASSERT_TRUE(bytes.ok()) << bytes.status().Line();
+    EXPECT_EQ(*bytes, Slurp(path)) << format;
+    std::remove(path.c_str());
+  }
+  const std::string hash = run.Hash("ivy.");
+  EXPECT_EQ(hash.rfind("ivy.preset=paper&ivy.seed=4&ivy.steps=25", 0), 0u) << hash;
+  IvyState again;
+  std::vector<std::string> notices;
+  ApplyIvyHash(hash, "ivy.", &again, &notices);
+  EXPECT_TRUE(notices.empty());
+  EXPECT_EQ(EncodeIvyHash(again), run.Hash(""));
+}
+
+// An edit of a mesh-stage row (core/ivy/ivy_params.cpp's stage column) re-meshes the grown ivy;
+// an edit of a grow-stage row grows it again.
+TEST(IvyRun, UpdateRedoesOnlyTheStageThatChanged) {
+  IvyRunOptions options;
+  options.build_meshes = true;
+  IvyRun run = Started(Steps(30), Prepared(IvySupportInput::Scene("cubes4")), options);
+  ASSERT_TRUE(run.Advance({}).ok());
+  EXPECT_EQ(run.grows(), 1);
+  EXPECT_EQ(run.remeshes(), 1);
+  const std::size_t leaves = run.meshes().leaves.positions.size();
+  const std::string model = *run.Export("lsys", {});
+  IvyState look = run.state();
+  ASSERT_TRUE(look.params.SetFromAssignment("leaf_size=80").ok());
+  ASSERT_TRUE(run.Update(look).ok());
+  EXPECT_TRUE(run.grown());
+  EXPECT_EQ(run.grows(), 1);
+  EXPECT_EQ(run.remeshes(), 2);
+  EXPECT_EQ(run.meshes().leaves.positions.size(), leaves);
+  EXPECT_EQ(*run.Export("lsys", {}), model);
+  // The re-meshed ivy is the one a fresh run with that state builds.
+  IvyRun fresh = Started(look, Prepared(IvySupportInput::Scene("cubes4")), options);
+  ASSERT_TRUE(fresh.Advance({}).ok());
+  EXPECT_EQ(run.meshes().leaves.positions, fresh.meshes().leaves.positions);
+  IvyState grow = look;
+  ASSERT_TRUE(grow.params.SetFromAssignment("t1=0.3").ok());
+  ASSERT_TRUE(run.Update(grow).ok());
+  EXPECT_FALSE(run.grown());
+  ASSERT_TRUE(run.Advance({}).ok());
+  EXPECT_EQ(run.grows(), 2);
+  EXPECT_EQ(run.remeshes(), 3);
+}
+
+}  // namespace
+}  // namespace niwa::ivy
