@@ -41,6 +41,7 @@
 #include <vector>
 
 #include "buffers.h"
+#include "error_record.h"
 #include "compose/ivy_on_tree.h"
 #include "geom/mesh_metrics.h"
 #include "geom/ray_cast.h"
@@ -96,33 +97,6 @@ FlatMesh Flatten(const geom::TriMesh& mesh) {
 
 }  // namespace
 
-std::string IvyParamTableJson() { return ParamTableJson(IvyTable()); }
-
-// The leaf texture (ivy_leaf_texture.h), the pixels the .glb's PNG encodes, copied out of the heap.
-emscripten::val IvyLeafTexture() {
-  const image::Rgba8Image image = ivy::PaintLeafTexture(ivy::kLeafTextureSize);
-  emscripten::val view(emscripten::typed_memory_view(image.pixels.size(), image.pixels.data()));
-  emscripten::val out = emscripten::val::object();
-  out.set("width", image.width);
-  out.set("height", image.height);
-  out.set("pixels", emscripten::val::global("Uint8Array").new_(view));  // a copy
-  return out;
-}
-
-std::string IvyPresetsJson() {
-  ordered_json out = ordered_json::array();
-  for (const std::string& name : IvyPresetNames()) {
-    ordered_json j;
-    j["name"] = name;
-    ordered_json overrides = ordered_json::object();
-    for (const auto& [key, value] : IvyPresetOverrides(name)) overrides[key] = value;
-    j["overrides"] = overrides;
-    j["params"] = ordered_json::parse(ParamsToJson(*IvyPreset(name), -1));
-    out.push_back(std::move(j));
-  }
-  return out.dump();
-}
-
 std::string IvyScenesJson() {
   ordered_json out = ordered_json::array();
   for (const std::string& name : ivy::IvySceneNames()) {
@@ -138,31 +112,6 @@ std::string IvyScenesJson() {
                    {"seeds", seeds}});
   }
   return out.dump();
-}
-
-// {state, notices}: the hash read as the CLI's --url reads it (bad values clamped or dropped, each
-// with a notice).
-std::string IvyDecodeHash(const std::string& hash) {
-  ivy::IvyState state;
-  std::vector<std::string> notices;
-  ivy::ApplyIvyHash(hash, "", &state, &notices);
-  ordered_json out;
-  out["state"] = ordered_json::parse(ivy::IvyStateJson(state));
-  out["notices"] = notices;
-  return Dump(out);
-}
-
-// {hash} or {error} of a state JSON.
-std::string IvyEncodeHash(const std::string& state_json) {
-  ivy::IvyState state;
-  ordered_json out;
-  std::string error = ivy::ApplyIvyStateJson(state_json, &state).Line();
-  if (error.empty()) {
-    out["hash"] = ivy::EncodeIvyHash(state);
-  } else {
-    out["error"] = error;
-  }
-  return Dump(out);
 }
 
 // The page's support: no subdivision, BVH queries, a dropped mesh's default "front" seed, its
@@ -191,30 +140,30 @@ ivy::IvyRunOptions PageRunOptions() {
 
 class IvyLab {
  public:
-  // A built-in scene: "" or one error line ("scene: 'x' is unknown; must be one of ...").
+  // A built-in scene: "" or an error record ("scene: 'x' is unknown; must be one of ...").
   std::string loadScene(const std::string& name) {
     const auto t0 = Clock::now();
     Result<std::shared_ptr<const ivy::IvySupport>> s = ivy::IvySupport::Prepare(
         ivy::IvySupportInput::Scene(name), PageSupportOptions(), PageBudget());
-    if (!s.ok()) return Status::Error("scene", s.status().message()).Line();
+    if (!s.ok()) return ErrorText(Status::Error("scene", s.status().message()));
     SetSupport(std::move(s).value());
     ms_bvh_ = Ms(t0, Clock::now());
     return "";
   }
 
   // The bark of tree preset `preset` grown `years` years (metres), seeded at the trunk foot as
-  // `niwa ivy grow --tree-preset` does (core/compose/ivy_on_tree): "" or one error line naming
+  // `niwa ivy grow --tree-preset` does (core/compose/ivy_on_tree): "" or an error record naming
   // tree or tree_years. The tree stops where its bark fits the page's budget, or is refused.
   std::string loadTree(const std::string& preset, double years) {
     Progress("tree", 0, years);
     Result<ivy::IvySupportInput> tree =
         compose::IvyTreeSupport(preset, years, PageBudget(), "tree_years");
-    if (!tree.ok()) return tree.status().Line();
+    if (!tree.ok()) return ErrorText(tree.status());
     Progress("bvh", 0, static_cast<double>(tree->prepared.mesh.triangle_count()));
     const auto t0 = Clock::now();  // ms_bvh: the support's BVH, not the tree's growth
     Result<std::shared_ptr<const ivy::IvySupport>> s =
         ivy::IvySupport::Prepare(std::move(tree).value(), PageSupportOptions(), PageBudget());
-    if (!s.ok()) return s.status().Line();
+    if (!s.ok()) return ErrorText(s.status());
     SetSupport(std::move(s).value());
     ms_bvh_ = Ms(t0, Clock::now());
     return "";
@@ -222,20 +171,20 @@ class IvyLab {
 
   void setProgress(emscripten::val fn) { progress_ = fn; }
 
-  // A dropped .glb/.gltf/.obj (bytes; Draco already decoded): "" or one error line naming it.
+  // A dropped .glb/.gltf/.obj (bytes; Draco already decoded): "" or an error record naming it.
   std::string loadMesh(const std::string& bytes, const std::string& name) {
     Progress("read", 0, static_cast<double>(bytes.size()));
     io::MeshReadStats read;
     Result<geom::TriMesh> mesh = io::ReadMeshBytes(bytes, name, &read);
-    if (!mesh.ok()) return mesh.status().Line();
+    if (!mesh.ok()) return ErrorText(mesh.status());
     Status valid = geom::ValidateMesh(*mesh, name);
-    if (!valid.ok()) return valid.Line();
+    if (!valid.ok()) return ErrorText(valid);
     Progress("bvh", 0, static_cast<double>(mesh->triangle_count()));
     const auto t0 = Clock::now();
     Result<std::shared_ptr<const ivy::IvySupport>> s = ivy::IvySupport::Prepare(
         ivy::IvySupportInput::Mesh(std::move(mesh).value(), name, std::move(read.materials)),
         PageSupportOptions(), PageBudget());
-    if (!s.ok()) return run::RenameField(s.status(), {{"mesh", name}}).Line();
+    if (!s.ok()) return ErrorText(run::RenameField(s.status(), {{"mesh", name}}));
     SetSupport(std::move(s).value());
     ms_bvh_ = Ms(t0, Clock::now());
     return "";
@@ -266,7 +215,7 @@ class IvyLab {
   }
 
   // Grows the state (JSON, as ApplyIvyStateJson reads it) on the support loaded through the ivy
-  // run (core/ivy/ivy_run): "" or one error line. Seed points: the state's, else the scene's first
+  // run (core/ivy/ivy_run): "" or an error record. Seed points: the state's, else the scene's first
   // named seed (a dropped mesh with no front seed needs one).
   std::string grow(const std::string& state_json) {
     const auto t0 = Clock::now();
@@ -277,12 +226,11 @@ class IvyLab {
     ivy::IvyState state;
     Status s = ivy::ApplyIvyStateJson(state_json, &state);
     if (s.ok()) s = ValidateIvyParams(state.params);
-    if (!s.ok()) return s.Line();
-    if (!support_) return Status::Error("scene", "no support loaded").Line();
+    if (!s.ok()) return ErrorText(s);
+    if (!support_) return ErrorText(Status::Error("scene", "no support loaded"));
     if (state.seed_points.empty() && support_->scene().seeds.empty()) {
-      return Status::Error("at",
-                           "a dropped mesh needs a seed point; click its surface to place one")
-          .Line();
+      return ErrorText(Status::Error(
+          "at", "a dropped mesh needs a seed point; click its surface to place one"));
     }
     std::optional<ivy::IvyRun> run;
     if (last && last->Update(state).ok()) {
@@ -290,7 +238,7 @@ class IvyLab {
     } else {
       Result<ivy::IvyRun> started =
           ivy::IvyRun::Start(state, support_, PageBudget(), PageRunOptions());
-      if (!started.ok()) return started.status().Line();
+      if (!started.ok()) return ErrorText(started.status());
       run = std::move(started).value();
     }
     s = run->Advance([this](const run::Progress& p) {
@@ -299,7 +247,7 @@ class IvyLab {
     });
     // Core errors name state fields, the page's keys (seed_points and steps sit beside their
     // fields); a dropped mesh's own error names the file, as its loadMesh errors do.
-    if (!s.ok()) return run::RenameField(s, {{"mesh", support_->scene().name}}).Line();
+    if (!s.ok()) return ErrorText(run::RenameField(s, {{"mesh", support_->scene().name}}));
     const ivy::IvyMeshes& meshes = run->meshes();
     stems_ = Flatten(meshes.stems);
     leaves_ = Flatten(meshes.leaves);
@@ -334,16 +282,16 @@ class IvyLab {
   std::string exportCheck(const std::string& format, bool with_support) const {
     if (!run_) return "";
     const std::string kind = format == "json" || format == "lsys" ? format : "glb";
-    return run_->CheckExport(kind, with_support).Line();
+    return ErrorText(run_->CheckExport(kind, with_support));
   }
 
-  // The .glb of the last grow (with the support when asked): "" or one error line.
+  // The .glb of the last grow (with the support when asked): "" or an error record.
   std::string buildGlb(bool with_support) {
-    if (!run_) return "glb: nothing grown yet";
+    if (!run_) return ErrorText(Status::Error("glb", "nothing grown yet"));
     ivy::IvyExportOptions options;
     options.with_support = with_support;
     Result<std::string> glb = run_->Export("glb", options);
-    if (!glb.ok()) return glb.status().Line();
+    if (!glb.ok()) return ErrorText(glb.status());
     glb_.assign(glb->begin(), glb->end());
     return "";
   }
@@ -437,12 +385,8 @@ class IvyLab {
 
 EMSCRIPTEN_BINDINGS(niwa_ivy) {
   using namespace emscripten;
-  function("ivyParamTableJson", &niwa::IvyParamTableJson);
-  function("ivyPresetsJson", &niwa::IvyPresetsJson);
   function("ivyScenesJson", &niwa::IvyScenesJson);
   function("ivyLeafTexture", &niwa::IvyLeafTexture);
-  function("ivyDecodeHash", &niwa::IvyDecodeHash);
-  function("ivyEncodeHash", &niwa::IvyEncodeHash);
   class_<niwa::IvyLab>("IvyLab")
       .constructor<>()
       .function("loadScene", &niwa::IvyLab::loadScene)

@@ -6,6 +6,7 @@
 // leaf texture's pixels, so the page draws the leaves as the .glb holds them); 'pick' casts a ray on the support (a click places a seed point); 'export'
 // builds .glb, .json or .lsys. Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does).
+import { errorOf, errorReply } from './errors.js';
 import { takeBuffers } from './transfer.js';
 import { nextTask } from './next_task.js';
 
@@ -75,10 +76,10 @@ export function createHandler(Module, ctx) {
         text: tree ? `growing the ${tree.name} tree (${tree.years} years) to climb` : `loading scene ${scene}` });
       if (tree) await yieldToEvents();
       const t0 = performance.now();
-      const error = tree ? entry.lab.loadTree(tree.name, tree.years) : entry.lab.loadScene(scene);
+      const error = errorOf(tree ? entry.lab.loadTree(tree.name, tree.years) : entry.lab.loadScene(scene));
       entry.loadMs = performance.now() - t0;
       if (error) {
-        post({ type: 'error', id, client, message: error });
+        post(errorReply(error, id, client));
         return;
       }
       entry.support = supportKey;
@@ -90,9 +91,9 @@ export function createHandler(Module, ctx) {
     if (!isLatest(client, id)) return;
     post({ type: 'progress', id, client, stage: 'grow', text: 'growing' });
     const t0 = performance.now();
-    const error = entry.lab.grow(JSON.stringify(grown));
+    const error = errorOf(entry.lab.grow(JSON.stringify(grown)));
     if (error) {
-      post({ type: 'error', id, client, message: error });
+      post(errorReply(error, id, client));
       return;
     }
     const stats = JSON.parse(entry.lab.statsJson());
@@ -122,10 +123,10 @@ export function createHandler(Module, ctx) {
     post({ type: 'progress', id, client, stage: 'mesh', text: `reading ${name} and building its BVH` });
     await yieldToEvents();
     const t0 = performance.now();
-    const error = entry.lab.loadMesh(new Uint8Array(msg.bytes), String(name));
+    const error = errorOf(entry.lab.loadMesh(new Uint8Array(msg.bytes), String(name)));
     entry.loadMs = performance.now() - t0;
     if (error) {  // the lab keeps its old support when a read fails
-      post({ type: 'error', id, client, message: error });
+      post(errorReply(error, id, client));
       return;
     }
     entry.support = `mesh:${name}`;
@@ -140,13 +141,19 @@ export function createHandler(Module, ctx) {
 
   function exportIvy(msg, client) {
     const { lab } = labOf(client);
-    const refused = lab.exportCheck(String(msg.format), Boolean(msg.withSupport));  // the page budget
-    if (refused) throw new Error(refused);
+    const refused = errorOf(lab.exportCheck(String(msg.format), Boolean(msg.withSupport)));  // the page budget
+    if (refused) {
+      post(errorReply(refused, msg.id, client));
+      return;
+    }
     const text = (s) => new TextEncoder().encode(s).buffer;
     let bytes;
     if (msg.format === 'glb') {
-      const error = lab.buildGlb(Boolean(msg.withSupport));
-      if (error) throw new Error(error);
+      const error = errorOf(lab.buildGlb(Boolean(msg.withSupport)));
+      if (error) {
+        post(errorReply(error, msg.id, client));
+        return;
+      }
       const transfer = [];
       bytes = takeBuffers(lab.buffers('glb'), transfer).bytes;
     } else if (msg.format === 'json') {
