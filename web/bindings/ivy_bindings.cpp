@@ -97,6 +97,17 @@ FlatMesh Flatten(const geom::TriMesh& mesh) {
 
 }  // namespace
 
+// The leaf texture (ivy_leaf_texture.h), the pixels the .glb's PNG encodes, copied out of the heap.
+emscripten::val IvyLeafTexture() {
+  const image::Rgba8Image image = ivy::PaintLeafTexture(ivy::kLeafTextureSize);
+  emscripten::val view(emscripten::typed_memory_view(image.pixels.size(), image.pixels.data()));
+  emscripten::val out = emscripten::val::object();
+  out.set("width", image.width);
+  out.set("height", image.height);
+  out.set("pixels", emscripten::val::global("Uint8Array").new_(view));  // a copy
+  return out;
+}
+
 std::string IvyScenesJson() {
   ordered_json out = ordered_json::array();
   for (const std::string& name : ivy::IvySceneNames()) {
