@@ -2,9 +2,11 @@
 // the exports.
 #include "render/tree_run.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <utility>
 
+#include "params/param_table.h"
 #include "params/param_text.h"
 #include "render/lod_budget.h"
 #include "sway/sway_budget.h"
@@ -156,6 +158,52 @@ Status TreeRun::Restate(const TreeState& next) {
   BuildBareMesh();
   BuildSkin();
   return Status::Ok();
+}
+
+Result<run::StageMask> TreeRun::Update(const TreeState& next) {
+  NIWA_RETURN_IF_ERROR(CheckValue("years", next.years, 0, kMaxYears, true));
+  NIWA_RETURN_IF_ERROR(CheckGustOrder(next.params));
+  int earliest = static_cast<int>(Stage::kView) + 1;  // none
+  std::vector<std::string> a, b;
+  for (const Prune& prune : state_.prunes) a.push_back(FormatPrune(prune));
+  for (const Prune& prune : next.prunes) b.push_back(FormatPrune(prune));
+  if (next.preset != state_.preset || next.seed != state_.seed || next.years != state_.years ||
+      a != b) {
+    earliest = static_cast<int>(Stage::kGrow);
+  }
+  const ParamTable& table = state_.params.table();
+  for (std::size_t row = 0; row < table.size(); ++row) {
+    if (state_.params.Get(row) != next.params.Get(row)) {
+      earliest = std::min(earliest, static_cast<int>(table.row(row).stage));
+    }
+  }
+  // The look rows season, autumn_colour, flower_colour and flower_form are view rows of the table,
+  // yet the mesh carries the look (a season drops leaves and flowers; the .glb paints its
+  // textures): a changed look re-does the mesh.
+  const TreeLook was = LookFromParams(state_.params), look = LookFromParams(next.params);
+  if (was.leaf_shape != look.leaf_shape || was.season != look.season ||
+      was.autumn != look.autumn || was.flower_colour != look.flower_colour ||
+      was.flower_form != look.flower_form) {
+    earliest = std::min(earliest, static_cast<int>(Stage::kMesh));
+  }
+  run::StageMask mask = 0;
+  for (int stage = earliest; stage <= static_cast<int>(Stage::kView); ++stage) mask |= 1u << stage;
+  if (mask == 0) return mask;
+  if (earliest == static_cast<int>(Stage::kGrow)) {
+    state_ = next;
+    grower_ = std::make_unique<Grower>(state_);
+    has_mesh_ = false;
+    mesh_ = TreeMesh{};
+    sway_model_ = SwayModel{};
+    skin_ = TreeSkin{};
+    return mask;
+  }
+  const GrowLimits limits = state_.limits;  // the growth's, kept with the tree grown
+  state_ = next;
+  state_.limits = limits;
+  if (has_mesh_ && earliest == static_cast<int>(Stage::kMesh)) BuildBareMesh();
+  if (has_mesh_ && earliest <= static_cast<int>(Stage::kSway)) BuildSkin();
+  return mask;
 }
 
 const TreeMesh& TreeRun::MeshOrBuilt(TreeMesh* scratch) const {

@@ -118,6 +118,16 @@ class TreeRun : public run::StudyRun {
   // rebuilt. The run is unchanged on error.
   Status Restate(const TreeState& next);
 
+  // A new state: re-does only the earliest stage whose rows changed (the table's stage column:
+  // grow, mesh, sway, view) and the ones after it, and returns those stages as a mask (0: nothing
+  // changed). grow (a grow row, preset, seed, years or prunes): the tree is regrown from year 0
+  // with next.limits (Advance again), the mesh stage dropped. mesh (leaf_shape, and any row of the
+  // look: season, autumn_colour, flower_colour, flower_form are view rows of the table but the mesh
+  // carries the look): the mesh, when built, and its skin are rebuilt. sway: the skin (eq. 3.15 weights follow
+  // sway_alpha). view: only the state. The growth's limits stay unless it regrows. Refused as
+  // Start refuses, the run then unchanged.
+  Result<run::StageMask> Update(const TreeState& next);
+
   // ---- outputs ----
   // bark, leaves, flowers (the non-empty ones) with their materials and textures, as the .glb's
   // (the mesh stage's mesh, built when it has not been).

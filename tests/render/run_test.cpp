@@ -216,5 +216,59 @@ TEST(TreeRun, RestateKeepsTheTreeAndRedressesIt) {
   EXPECT_EQ(run.state().limits.years_name, "--years");  // the growth's limits stay
 }
 
+run::StageMask From(Stage stage) {  // that stage and the ones after it
+  run::StageMask mask = 0;
+  for (int s = static_cast<int>(stage); s <= static_cast<int>(Stage::kView); ++s) mask |= 1u << s;
+  return mask;
+}
+
+TEST(TreeRun, UpdateRedoesTheEarliestChangedStage) {
+  TreeRun run = StartSakura();
+  ASSERT_TRUE(run.Advance(nullptr).ok());
+  ASSERT_TRUE(run.BuildMesh().ok());
+  const std::string grown = TreeToJson(run.tree());
+  const std::size_t leaves = run.mesh().leaves.indices.size();
+  ASSERT_GT(leaves, 0u);
+
+  EXPECT_EQ(run.Update(run.state()).value(), 0u);  // nothing changed, nothing re-done
+
+  TreeState view = run.state();  // a view row (line_threshold): only the state
+  ASSERT_EQ(TreeParamTable()[static_cast<std::size_t>(ParamId::kLineThreshold)].stage, Stage::kView);
+  ASSERT_TRUE(view.params.Set(ParamId::kLineThreshold, 9).ok());
+  EXPECT_EQ(run.Update(view).value(), From(Stage::kView));
+  EXPECT_EQ(run.state().params.Get(ParamId::kLineThreshold), 9);
+  EXPECT_EQ(run.mesh().leaves.indices.size(), leaves);
+
+  TreeState sway = run.state();  // a sway row: the skin's weights follow sway_alpha
+  const std::vector<float> weights = run.skin().bark.weight;
+  ASSERT_TRUE(sway.params.Set(ParamId::kSwayAlpha, 3).ok());
+  EXPECT_EQ(run.Update(sway).value(), From(Stage::kSway));
+  EXPECT_NE(run.skin().bark.weight, weights);
+  EXPECT_EQ(run.mesh().leaves.indices.size(), leaves);  // the mesh is kept
+
+  TreeState mesh = run.state();  // a mesh row: winter drops the leaves, the tree is not regrown
+  ASSERT_TRUE(mesh.params.Set(TreeParam::kSeason, 3).ok());
+  EXPECT_EQ(run.Update(mesh).value(), From(Stage::kMesh));
+  EXPECT_TRUE(run.mesh().leaves.indices.empty());
+  EXPECT_EQ(run.skin().leaves.joint.size(), 0u);
+  EXPECT_EQ(TreeToJson(run.tree()), grown);
+  EXPECT_EQ(run.done(), kYears);
+
+  TreeState grow = run.state();  // another seed: regrown from year 0
+  grow.seed += 1;
+  EXPECT_EQ(run.Update(grow).value(), From(Stage::kGrow));
+  EXPECT_EQ(run.done(), 0);
+  EXPECT_FALSE(run.has_mesh());
+  ASSERT_TRUE(run.Advance(nullptr).ok());
+  EXPECT_NE(TreeToJson(run.tree()), grown);
+
+  TreeState bad = run.state();  // refused as Start refuses; the run unchanged
+  bad.years = kMaxYears + 1;
+  Result<run::StageMask> refused = run.Update(bad);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.status().field(), "years");
+  EXPECT_EQ(run.state().years, kYears);
+}
+
 }  // namespace
 }  // namespace niwa
