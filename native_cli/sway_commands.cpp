@@ -125,7 +125,7 @@ int RunSwayCommand(const SwayOptions& o, const CLI::App& cmd, std::ostream& out)
   SwayParams params = ResolveSwayParams(o, cmd, &state.params);
   Result<TreeRun> started = TreeRun::Start(state, ResolveBudget(o.state.budget));
   Check(run::RenameField(started.status(), TreeFlagNames()));
-  TreeRun& run = *started;  // core/render/tree_run
+  TreeRun& run = *started;      // core/render/tree_run
   Check(run.Advance(nullptr));  // stops early (truncated) at the budget's growth limits
   ReportTruncated(run.tree().truncated_by);
   CheckPrunes(state, run.tree());

@@ -11,14 +11,17 @@ namespace niwa::cli {
 
 const run::FieldNames& TreeFlagNames() {
   static const run::FieldNames names = {
-      {"preset", "--preset"},  {"years", "--years"},
-      {"seed", "--seed"},      {"prune", "--prune"},
-      {"url", "--url"},        {"max_triangles", "--max-triangles"},
-      {"lod", "--lod"},        {"cam", "--cam"},
-      {"yaw", "--yaw"},        {"pitch", "--pitch"},
-      {"distance", "--distance"}, {"target", "--target"},
-      {"threshold", "--threshold"}, {"card_planes", "--card-planes"},
-      {"line_segments", "--line-segments"}, {"leaf_mode", "--leaf-mode"},
+      {"preset", "--preset"},
+      {"years", "--years"},
+      {"seed", "--seed"},
+      {"prune", "--prune"},
+      {"url", "--url"},
+      {"max_triangles", "--max-triangles"},
+      {"lod", "--lod"},
+      {"cam", "--cam"},
+      {"threshold", "--threshold"},
+      {"card_planes", "--card-planes"},
+      {"line_segments", "--line-segments"},
   };
   return names;
 }

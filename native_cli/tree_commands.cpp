@@ -104,10 +104,10 @@ int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
     TreeExportRequest request;
     // The game-ready .glb (--max-triangles, --lod) builds its levels from the full mesh: its own
     // estimate (core/render/lod_budget), the page's buildLodGlb the same.
-    request.kind = ext == ".json"                            ? TreeExportRequest::Kind::kJson
-                   : ext == ".svg"                           ? TreeExportRequest::Kind::kSvg
-                   : (o.lod || o.max_triangles >= 0)         ? TreeExportRequest::Kind::kLodGlb
-                                                             : TreeExportRequest::Kind::kGlb;
+    request.kind = ext == ".json"                    ? TreeExportRequest::Kind::kJson
+                   : ext == ".svg"                   ? TreeExportRequest::Kind::kSvg
+                   : (o.lod || o.max_triangles >= 0) ? TreeExportRequest::Kind::kLodGlb
+                                                     : TreeExportRequest::Kind::kGlb;
     request.svg = o.svg;
     request.max_triangles = o.max_triangles;
     request.lod = o.lod;

@@ -327,8 +327,8 @@ Status ParseOrbitView(const std::string& text, OrbitView* view) {
   while (std::getline(stream, item, ',')) {
     std::optional<double> number = ParseNumber(item);
     if (!number || !(std::fabs(*number) <= 1e30)) {  // in float range before the cast
-      return Status::Error("cam",
-                           "'" + Echo(item) + "' is not a number; must be yaw,pitch,distance,tx,ty,tz");
+      return Status::Error(
+          "cam", "'" + Echo(item) + "' is not a number; must be yaw,pitch,distance,tx,ty,tz");
     }
     values.push_back(static_cast<float>(*number));
   }

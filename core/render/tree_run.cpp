@@ -25,8 +25,8 @@ Result<TreeExportRequest::Kind> TreeExportKind(const std::string& format) {
   if (format == "svg") return Kind::kSvg;
   if (format == "lod.glb") return Kind::kLodGlb;
   if (format == "sway.glb") return Kind::kSwayGlb;
-  return Status::Error("format", "'" + Echo(format) +
-                                     "' must be glb, json, svg, lod.glb or sway.glb");
+  return Status::Error("format",
+                       "'" + Echo(format) + "' must be glb, json, svg, lod.glb or sway.glb");
 }
 
 std::string ViewCountsJson(const TreeViewCounts& counts) {
@@ -181,9 +181,8 @@ Result<run::StageMask> TreeRun::Update(const TreeState& next) {
   // yet the mesh carries the look (a season drops leaves and flowers; the .glb paints its
   // textures): a changed look re-does the mesh.
   const TreeLook was = LookFromParams(state_.params), look = LookFromParams(next.params);
-  if (was.leaf_shape != look.leaf_shape || was.season != look.season ||
-      was.autumn != look.autumn || was.flower_colour != look.flower_colour ||
-      was.flower_form != look.flower_form) {
+  if (was.leaf_shape != look.leaf_shape || was.season != look.season || was.autumn != look.autumn ||
+      was.flower_colour != look.flower_colour || was.flower_form != look.flower_form) {
     earliest = std::min(earliest, static_cast<int>(Stage::kMesh));
   }
   run::StageMask mask = 0;
@@ -235,9 +234,9 @@ std::vector<run::Part> TreeRun::Parts() const {
       part.material = doc->materials[static_cast<std::size_t>(primitive.material)];
       part.name = part.material.name;  // "bark", "leaves", "flowers"
       // The part's own textures, its material's indices renumbered into them.
-      for (int* texture : {&part.material.base_color_texture,
-                           &part.material.metallic_roughness_texture,
-                           &part.material.normal_texture, &part.material.occlusion_texture}) {
+      for (int* texture :
+           {&part.material.base_color_texture, &part.material.metallic_roughness_texture,
+            &part.material.normal_texture, &part.material.occlusion_texture}) {
         if (*texture < 0) continue;
         part.textures.push_back(doc->textures[static_cast<std::size_t>(*texture)]);
         *texture = static_cast<int>(part.textures.size()) - 1;
@@ -258,7 +257,9 @@ std::string TreeRun::PageStatsJson() const {
   return TreeStatsJson(tree(), timings(), extras);
 }
 
-std::string TreeRun::Hash(const std::string& prefix) const { return EncodeTreeHash(state_, prefix); }
+std::string TreeRun::Hash(const std::string& prefix) const {
+  return EncodeTreeHash(state_, prefix);
+}
 
 Estimate TreeRun::Held() const {
   return has_mesh_ ? grown() + EstimateTreeExport(CountTree(tree()), TreeExport::kMesh) : grown();

@@ -30,12 +30,12 @@ namespace niwa {
 struct TreeExportRequest {
   enum class Kind { kGlb, kJson, kSvg, kLodGlb, kSwayGlb };
   Kind kind = Kind::kGlb;
-  SvgOptions svg;                            // kSvg
-  long max_triangles = -1;                   // kLodGlb: within N triangles; -1: the full mesh
-  bool lod = false;                          // kLodGlb: levels LOD0..LOD2
-  LodLayout layout = LodLayout::kSiblings;   // kLodGlb with lod
-  std::string lod_field = "max_triangles";   // the field a level that cannot fit names
-  double fps = 30;                           // kSwayGlb: keys per second
+  SvgOptions svg;                           // kSvg
+  long max_triangles = -1;                  // kLodGlb: within N triangles; -1: the full mesh
+  bool lod = false;                         // kLodGlb: levels LOD0..LOD2
+  LodLayout layout = LodLayout::kSiblings;  // kLodGlb with lod
+  std::string lod_field = "max_triangles";  // the field a level that cannot fit names
+  double fps = 30;                          // kSwayGlb: keys per second
 };
 
 // The run's export kinds by name: "glb", "json", "svg", "lod.glb", "sway.glb" (else an error
@@ -123,9 +123,9 @@ class TreeRun : public run::StudyRun {
   // changed). grow (a grow row, preset, seed, years or prunes): the tree is regrown from year 0
   // with next.limits (Advance again), the mesh stage dropped. mesh (leaf_shape, and any row of the
   // look: season, autumn_colour, flower_colour, flower_form are view rows of the table but the mesh
-  // carries the look): the mesh, when built, and its skin are rebuilt. sway: the skin (eq. 3.15 weights follow
-  // sway_alpha). view: only the state. The growth's limits stay unless it regrows. Refused as
-  // Start refuses, the run then unchanged.
+  // carries the look): the mesh, when built, and its skin are rebuilt. sway: the skin (eq. 3.15
+  // weights follow sway_alpha). view: only the state. The growth's limits stay unless it regrows.
+  // Refused as Start refuses, the run then unchanged.
   Result<run::StageMask> Update(const TreeState& next);
 
   // ---- outputs ----

@@ -75,8 +75,8 @@ SwayParams::SwayParams(const ParamSet& p)
 Status CheckSwayParams(const ParamSet& params) {
   double on = params.Get(ParamId::kGustOn), off = params.Get(ParamId::kGustOff);
   if (off <= on) {
-    return Status::Error("gust_off", FormatNumber(off) + " must be greater than gust_on (" +
-                                         FormatNumber(on) + ")");
+    return Status::Error(
+        "gust_off", FormatNumber(off) + " must be greater than gust_on (" + FormatNumber(on) + ")");
   }
   return Status::Ok();
 }

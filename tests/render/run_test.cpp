@@ -1,8 +1,6 @@
 // core/render/tree_run: the tree study's run once through its pipeline: grown year by year with
 // progress, cancelled at a whole year, refused by field, its .glb/.json/.svg the CLI's bytes, its
 // parts, hash, estimates, table 4.1 and restate.
-#include "render/tree_run.h"
-
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -12,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "render/tree_run.h"
 #include "support/cli_runner.h"
 #include "support/grow.h"
 #include "tree/tree_gltf.h"
@@ -108,8 +107,7 @@ TEST(TreeRun, ExportsAreTheCliBytes) {
   for (const char* ext : {"glb", "json", "svg"}) {
     const std::string path = ::testing::TempDir() + "tree_run_test." + ext;
     std::remove(path.c_str());
-    CliResult cli =
-        RunNiwa({"tree", "grow", "--preset", "sakura", "--years", "4", "--out", path});
+    CliResult cli = RunNiwa({"tree", "grow", "--preset", "sakura", "--years", "4", "--out", path});
     ASSERT_EQ(cli.code, 0) << cli.err;
     TreeExportRequest request;
     request.kind = TreeExportKind(ext).value();
@@ -121,8 +119,7 @@ TEST(TreeRun, ExportsAreTheCliBytes) {
   }
   // And the tree study's own pipeline without the run (grow, mesh, .glb).
   std::vector<unsigned char> direct;
-  ASSERT_TRUE(
-      WriteTreeGlb(BuildTreeMesh(testing::GrowPreset("sakura", 4)), &direct).ok());
+  ASSERT_TRUE(WriteTreeGlb(BuildTreeMesh(testing::GrowPreset("sakura", 4)), &direct).ok());
   TreeExportRequest glb;
   EXPECT_EQ(run.Export(glb).value(), std::string(direct.begin(), direct.end()));
   // The page's path (the mesh stage built first) writes the same bytes.
@@ -180,15 +177,17 @@ TEST(TreeRun, Table41IsRenderStatsCounts) {
   ASSERT_TRUE(run.Advance(nullptr).ok());
   run.BuildBareMesh();
   const RenderCamera camera = CameraFromOrbit(run.FrameView(kDefaultFovY), 512, 512);
-  const HybridScene scene = BuildHybridScene(run.tree(), RenderOptionsFromParams(run.state().params));
+  const HybridScene scene =
+      BuildHybridScene(run.tree(), RenderOptionsFromParams(run.state().params));
   const HybridSelection selection = SelectHybrid(run.tree(), scene, camera, nullptr);
-  const nlohmann::json view = nlohmann::json::parse(ViewCountsJson(run.CountView(scene, selection)));
+  const nlohmann::json view =
+      nlohmann::json::parse(ViewCountsJson(run.CountView(scene, selection)));
   CliResult cli = RunNiwa({"tree", "render-stats", "--preset", "sakura", "--years", "4"});
   ASSERT_EQ(cli.code, 0) << cli.err;
   const nlohmann::json stats = nlohmann::json::parse(cli.out);
-  for (const char* key : {"lines", "line_branches", "card_branches", "branch_polygons",
-                          "leaf_polygons", "total_polygons", "primitives", "textures",
-                          "leaf_clusters", "full_polygons"}) {
+  for (const char* key :
+       {"lines", "line_branches", "card_branches", "branch_polygons", "leaf_polygons",
+        "total_polygons", "primitives", "textures", "leaf_clusters", "full_polygons"}) {
     EXPECT_EQ(view[key], stats[key]) << key;
   }
   EXPECT_GT(view["full_polygons"].get<int>(), 0);
@@ -233,7 +232,8 @@ TEST(TreeRun, UpdateRedoesTheEarliestChangedStage) {
   EXPECT_EQ(run.Update(run.state()).value(), 0u);  // nothing changed, nothing re-done
 
   TreeState view = run.state();  // a view row (line_threshold): only the state
-  ASSERT_EQ(TreeParamTable()[static_cast<std::size_t>(ParamId::kLineThreshold)].stage, Stage::kView);
+  ASSERT_EQ(TreeParamTable()[static_cast<std::size_t>(ParamId::kLineThreshold)].stage,
+            Stage::kView);
   ASSERT_TRUE(view.params.Set(ParamId::kLineThreshold, 9).ok());
   EXPECT_EQ(run.Update(view).value(), From(Stage::kView));
   EXPECT_EQ(run.state().params.Get(ParamId::kLineThreshold), 9);

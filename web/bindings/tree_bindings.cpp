@@ -190,9 +190,7 @@ class TreeSession {
   }
 
   // Grows one more year; false when the tree already has all its years (or the state was bad).
-  bool growYear() {
-    return run_ && run_->GrowYear();
-  }
+  bool growYear() { return run_ && run_->GrowYear(); }
 
   // Builds the triangle meshes of the tree as grown so far; call before the buffer views. "" or
   // the line naming the page budget the mesh would cross (the mesh is then left empty).
