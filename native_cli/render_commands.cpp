@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 
@@ -12,8 +11,8 @@
 #include "cli_common.h"
 #include "math/rotation.h"
 #include "render/hybrid.h"
-#include "tree/growth.h"
-#include "tree/mesh.h"
+#include "render/tree_run.h"
+#include "run/field_names.h"
 #include "tree_cli.h"
 
 namespace niwa::cli {
@@ -87,16 +86,10 @@ int RunRenderStats(RenderStatsOptions o, const CLI::App& cmd, std::ostream& out)
   if (o.leaf_mode != "cluster" && o.leaf_mode != "branch") {
     throw BadInput{"--leaf-mode: '" + Echo(o.leaf_mode) + "' must be cluster or branch"};
   }
-  Status render_status = CheckRenderOptions(o.render);
-  if (!render_status
-           .ok()) {  // the options' fields are the flags' names: card_planes -> --card-planes
-    std::string flag = render_status.field();
-    for (char& c : flag) c = c == '_' ? '-' : c;
-    Fail(Status::Error("--" + flag, render_status.message()));
-  }
-  std::string error;
+  // The options' fields are the flags' names (card_planes -> --card-planes): TreeFlagNames.
+  Check(run::RenameField(CheckRenderOptions(o.render), TreeFlagNames()));
   OrbitView view;
-  if (!o.cam.empty() && !ParseOrbitView(o.cam, &view, &error)) throw BadInput{"--" + error};
+  if (!o.cam.empty()) Check(run::RenameField(ParseOrbitView(o.cam, &view), TreeFlagNames()));
   if (cmd.count("--yaw")) {
     if (!std::isfinite(o.yaw)) throw BadInput{"--yaw: must be a finite number (radians)"};
     view.yaw = o.yaw;
@@ -138,58 +131,40 @@ int RunRenderStats(RenderStatsOptions o, const CLI::App& cmd, std::ostream& out)
   o.render = render;
   o.leaf_mode = render.leaf_mode == LeafMode::kBranchCards ? "branch" : "cluster";
   auto start = std::chrono::steady_clock::now();
-  Tree tree = GrowTree(request);
-  CheckPrunes(request, tree);
-  TreeMesh mesh = BuildTreeMesh(tree);
+  Result<TreeRun> started = TreeRun::Start(request, ResolveBudget(o.state.budget));
+  Check(run::RenameField(started.status(), TreeFlagNames()));
+  TreeRun& run = *started;  // core/render/tree_run
+  Check(run.Advance(nullptr));
+  CheckPrunes(request, run.tree());
+  run.BuildBareMesh();
   const float fov = o.fov_deg * (kPi / 180.0f);
   bool explicit_camera = !o.cam.empty();
   for (const char* flag : {"--yaw", "--pitch", "--distance", "--target"}) {
     explicit_camera = explicit_camera || cmd.count(flag) > 0;
   }
-  if (!explicit_camera) view = FrameOrbitView(MeshBounds(mesh), fov);  // as the page frames it
+  if (!explicit_camera) view = run.FrameView(fov);  // as the page frames it
   RenderCamera camera = CameraFromOrbit(view, o.width, o.height, fov);
   auto select_start = std::chrono::steady_clock::now();
-  HybridScene scene = BuildHybridScene(tree, o.render);
+  HybridScene scene = BuildHybridScene(run.tree(), o.render);
   auto scene_end = std::chrono::steady_clock::now();
-  HybridSelection selection = SelectHybrid(tree, scene, camera, nullptr);
-  RenderStats stats = CountHybrid(scene, selection);
+  HybridSelection selection = SelectHybrid(run.tree(), scene, camera, nullptr);
+  const TreeViewCounts counts = run.CountView(scene, selection);
   auto select_end = std::chrono::steady_clock::now();
-  CountFull(mesh, &stats);
   auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
-  const bool full = o.mode == "full";
-  nlohmann::ordered_json j;
-  j["mode"] = o.mode;
-  j["preset"] = tree.preset;
-  j["seed"] = tree.seed;
-  j["years"] = tree.years;
-  j["width"] = o.width;
-  j["height"] = o.height;
-  j["cam"] = FormatOrbitView(view);
-  j["threshold"] = o.render.threshold_px;
-  j["leaf_mode"] = o.leaf_mode;
-  j["lines"] = full ? 0 : stats.lines;
-  j["line_branches"] = full ? 0 : stats.line_branches;
-  j["card_branches"] = full ? 0 : stats.card_branches;
-  j["branch_polygons"] = full ? stats.full_bark : stats.branch_polygons;
-  j["leaf_polygons"] = full ? stats.full_leaves + stats.full_flowers : stats.leaf_polygons;
-  j["total_polygons"] = full ? stats.full_polygons : stats.total_polygons;
-  j["primitives"] = full ? stats.full_polygons : stats.primitives;
-  j["textures"] = full ? 0 : stats.textures;
-  j["texture_groups"] = full ? 0 : stats.texture_groups;
-  j["atlas_tiles"] = full ? 0 : stats.atlas_tiles;
-  j["atlas_fits"] = scene.atlas_fits;
-  j["leaf_clusters"] = full ? 0 : stats.leaf_clusters;
-  j["leaf_branches"] = stats.leaf_branches;
-  j["full_polygons"] = stats.full_polygons;
-  j["full_bark"] = stats.full_bark;
-  j["full_leaves"] = stats.full_leaves;
-  j["full_flowers"] = stats.full_flowers;
-  j["primitive_ratio"] =  // primitives drawn / full_polygons
-      stats.full_polygons > 0 ? j["primitives"].get<double>() / stats.full_polygons : 0.0;
-  j["ms_grow_mesh"] = ms(start, select_start);
-  j["ms_scene"] = ms(select_start, scene_end);
-  j["ms_select"] = ms(scene_end, select_end);
-  out << j.dump() << "\n";
+  RenderStatsHeader header;
+  header.full = o.mode == "full";
+  header.preset = run.tree().preset;
+  header.seed = run.tree().seed;
+  header.years = run.tree().years;
+  header.width = o.width;
+  header.height = o.height;
+  header.cam = FormatOrbitView(view);
+  header.threshold = o.render.threshold_px;
+  header.leaf_mode = o.leaf_mode;
+  header.ms_grow_mesh = ms(start, select_start);
+  header.ms_scene = ms(select_start, scene_end);
+  header.ms_select = ms(scene_end, select_end);
+  out << RenderStatsJson(counts, header) << "\n";
   return 0;
 }
 

@@ -8,10 +8,9 @@
 
 #include "base/echo.h"
 #include "cli_common.h"
+#include "render/tree_run.h"
+#include "run/field_names.h"
 #include "sway/sway.h"
-#include "sway/sway_budget.h"
-#include "sway/sway_gltf.h"
-#include "tree/growth.h"
 #include "tree_cli.h"
 
 namespace niwa::cli {
@@ -101,8 +100,8 @@ SwayParams ResolveSwayParams(const SwayOptions& o, const CLI::App& cmd, TreePara
     set("--gust", ParamId::kGustOn, *on);
     set("--gust", ParamId::kGustOff, *off);
   }
-  std::string error = CheckSwayParams(*params);
-  if (!error.empty()) throw BadInput{SwayErrorSource(o, cmd) + ": " + error};
+  const Status sway = CheckSwayParams(*params);  // a row's field, under the flag that set it
+  if (!sway.ok()) throw BadInput{SwayErrorSource(o, cmd) + ": " + sway.Line()};
   Check(CheckFlag("--tips", o.tips, kTips));
   if (!o.csv_path.empty() && Extension(o.csv_path) != ".csv") {
     throw BadInput{"--csv: '" + Echo(o.csv_path) + "' must end in .csv"};
@@ -124,17 +123,19 @@ int RunSwayCommand(const SwayOptions& o, const CLI::App& cmd, std::ostream& out)
   Check(CheckFlag("--fps", o.fps, kFps));
   TreeState state = ResolveTreeState(o.state, cmd);
   SwayParams params = ResolveSwayParams(o, cmd, &state.params);
-  Grower grower(state);  // stops early (truncated) at the budget's growth limits
-  while (grower.year() < state.years && !grower.stopped()) grower.GrowYear();
-  const Estimate grown = grower.estimate();
-  Tree tree = grower.TakeTree();
-  ReportTruncated(tree.truncated_by);
-  CheckPrunes(state, tree);
+  Result<TreeRun> started = TreeRun::Start(state, ResolveBudget(o.state.budget));
+  Check(run::RenameField(started.status(), TreeFlagNames()));
+  TreeRun& run = *started;      // core/render/tree_run
+  Check(run.Advance(nullptr));  // stops early (truncated) at the budget's growth limits
+  ReportTruncated(run.tree().truncated_by);
+  CheckPrunes(state, run.tree());
+  TreeExportRequest glb_request;
+  glb_request.kind = TreeExportRequest::Kind::kSwayGlb;
+  glb_request.fps = o.fps;
   {
     // Every output's estimate, refused before any work starts (so no output is left behind).
-    const SwayModel model = BuildSwayModel(tree, params);
-    Estimate total = grown + EstimateSwayRun(model, params, o.tips);
-    if (out_ext == ".glb") total = total + EstimateSwayGlb(model, CountTree(tree), params, o.fps);
+    Estimate total = run.SwayEstimate(o.tips);
+    if (out_ext == ".glb") total = total + run.ExportWork(glb_request);
     Check(CheckEstimate(total, ResolveBudget(o.state.budget),
                         "lower --duration or --years, or raise --dt" +
                             std::string(out_ext == ".glb" ? " or lower --fps" : "")));
@@ -142,41 +143,38 @@ int RunSwayCommand(const SwayOptions& o, const CLI::App& cmd, std::ostream& out)
   // Every output is staged first and renamed only when all were written (all or none).
   StagedOutputs outputs;
   if (out_ext == ".glb") {  // core/sway/sway_gltf: exact two-joint skinning of eq. 3.15
-    std::vector<unsigned char> glb;
-    SwayGlbOptions glb_options;
-    glb_options.fps = o.fps;
-    std::string error = WriteSwayGlb(tree, params, glb_options, &glb).Line();
-    if (!error.empty()) throw BadInput{"--out: " + error};
-    Check(outputs.Stage("--out", o.out_path, std::string(glb.begin(), glb.end())));
+    Result<std::string> glb = run.Export(glb_request);
+    if (!glb.ok()) throw BadInput{"--out: " + glb.status().Line()};
+    Check(outputs.Stage("--out", o.out_path, *glb));
   }
-  SwayRun run = RunSway(tree, params, o.tips);
+  SwayRun sway = run.Sway(o.tips);
   if (out_ext == ".csv" || out_ext == ".svg") {
     Check(outputs.Stage("--out", o.out_path,
-                        out_ext == ".csv" ? SwayCsv(run) : SwayPlotSvg(run, params)));
+                        out_ext == ".csv" ? SwayCsv(sway) : SwayPlotSvg(sway, params)));
   }
-  if (!o.csv_path.empty()) Check(outputs.Stage("--csv", o.csv_path, SwayCsv(run)));
-  if (!o.svg_path.empty()) Check(outputs.Stage("--svg", o.svg_path, SwayPlotSvg(run, params)));
+  if (!o.csv_path.empty()) Check(outputs.Stage("--csv", o.csv_path, SwayCsv(sway)));
+  if (!o.svg_path.empty()) Check(outputs.Stage("--svg", o.svg_path, SwayPlotSvg(sway, params)));
   Check(outputs.Commit());
   if (o.stats) {
     nlohmann::ordered_json j;
-    j["preset"] = tree.preset;
-    j["seed"] = tree.seed;
-    j["years"] = tree.years;
-    j["node_points"] = run.node_points;
-    j["moving"] = run.moving;
-    j["followers"] = run.followers;
-    j["fixed"] = run.fixed;
-    j["internodes"] = run.internodes;
-    j["steps"] = run.steps;
+    j["preset"] = run.tree().preset;
+    j["seed"] = run.tree().seed;
+    j["years"] = run.tree().years;
+    j["node_points"] = sway.node_points;
+    j["moving"] = sway.moving;
+    j["followers"] = sway.followers;
+    j["fixed"] = sway.fixed;
+    j["internodes"] = sway.internodes;
+    j["steps"] = sway.steps;
     j["dt"] = params.dt;
     j["wind"] = params.wind_speed;
-    j["ms"] = run.ms;
-    j["ns_per_internode"] = run.ns_per_internode;
-    j["max_tip_displacement"] = run.max_tip_displacement;
-    j["finite"] = run.finite;
+    j["ms"] = sway.ms;
+    j["ns_per_internode"] = sway.ns_per_internode;
+    j["max_tip_displacement"] = sway.max_tip_displacement;
+    j["finite"] = sway.finite;
     // Over the last two seconds of the gust (or the part of it that was run).
     double to = std::min(params.gust_off, params.duration);
-    j["jittering_tips"] = CountJitteringTips(run, std::max(params.gust_on, to - 2.0), to);
+    j["jittering_tips"] = CountJitteringTips(sway, std::max(params.gust_on, to - 2.0), to);
     out << j.dump() << "\n";
   }
   return 0;

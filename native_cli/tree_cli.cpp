@@ -9,6 +9,23 @@
 
 namespace niwa::cli {
 
+const run::FieldNames& TreeFlagNames() {
+  static const run::FieldNames names = {
+      {"preset", "--preset"},
+      {"years", "--years"},
+      {"seed", "--seed"},
+      {"prune", "--prune"},
+      {"url", "--url"},
+      {"max_triangles", "--max-triangles"},
+      {"lod", "--lod"},
+      {"cam", "--cam"},
+      {"threshold", "--threshold"},
+      {"card_planes", "--card-planes"},
+      {"line_segments", "--line-segments"},
+  };
+  return names;
+}
+
 void AddStateOptions(CLI::App* cmd, const ParamTable& table, StateOptions* o) {
   const std::string params_command =
       table.name() == "tree" ? "'niwa params'" : "'niwa params " + table.name() + "'";

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli_common.h"
+#include "run/field_names.h"
 #include "tree/tree.h"
 #include "tree/tree_state.h"
 
@@ -22,6 +23,10 @@ struct StateOptions {
   std::string season, leaf_shape;  // --season, --leaf-shape by name (the tree's look rows)
   BudgetOptions budget;            // --max-memory, --max-seconds: the growth's GrowLimits
 };
+
+// The tree family's one field -> flag table: a core error's state field ("years", "max_triangles",
+// "cam") as the flag that sets it ("--years", "--max-triangles", "--cam").
+const run::FieldNames& TreeFlagNames();
 
 // Adds the state flags of `table` (its --set keys; see 'niwa params') to cmd.
 void AddStateOptions(CLI::App* cmd, const ParamTable& table, StateOptions* options);

@@ -7,14 +7,11 @@
 
 #include "base/echo.h"
 #include "cli_common.h"
-#include "render/lod_budget.h"
 #include "render/tree_lod.h"
+#include "render/tree_run.h"
+#include "run/field_names.h"
 #include "tree/growth.h"
-#include "tree/mesh.h"
 #include "tree/presets.h"
-#include "tree/tree_budget.h"
-#include "tree/tree_gltf.h"
-#include "tree/tree_json.h"
 #include "tree/tree_report.h"
 #include "tree/tree_simple.h"
 #include "tree/tree_state.h"
@@ -96,70 +93,53 @@ int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
     }
   }
   TreeState state = ResolveTreeState(o.state, cmd);
-  Grower grower(state);  // stops early (truncated) at the budget's growth limits
-  while (grower.year() < state.years && !grower.stopped()) grower.GrowYear();
-  const GrowthTimings timings = grower.timings();
-  const Estimate grown = grower.estimate();
-  Tree tree = grower.TakeTree();
-  ReportTruncated(tree.truncated_by);
-  CheckPrunes(state, tree);
+  const Budget budget = ResolveBudget(o.state.budget);
+  Result<TreeRun> started = TreeRun::Start(state, budget);  // core/render/tree_run
+  Check(run::RenameField(started.status(), TreeFlagNames()));
+  TreeRun& run = *started;
+  Check(run.Advance(nullptr));  // stops early (truncated) at the budget's growth limits
+  ReportTruncated(run.tree().truncated_by);
+  CheckPrunes(state, run.tree());
   if (!o.out_path.empty()) {
-    // The export's estimate on top of the grown tree's, refused before it starts.
-    const TreeExport kind = ext == ".json"  ? TreeExport::kJson
-                            : ext == ".svg" ? TreeExport::kSvg
-                                            : TreeExport::kGlb;
+    TreeExportRequest request;
     // The game-ready .glb (--max-triangles, --lod) builds its levels from the full mesh: its own
     // estimate (core/render/lod_budget), the page's buildLodGlb the same.
-    const bool game_ready = kind == TreeExport::kGlb && (o.lod || o.max_triangles >= 0);
-    const Estimate export_estimate =
-        game_ready ? EstimateLodExport(CountTree(tree), o.max_triangles, o.lod)
-                   : EstimateTreeExport(CountTree(tree), kind);
+    request.kind = ext == ".json"                    ? TreeExportRequest::Kind::kJson
+                   : ext == ".svg"                   ? TreeExportRequest::Kind::kSvg
+                   : (o.lod || o.max_triangles >= 0) ? TreeExportRequest::Kind::kLodGlb
+                                                     : TreeExportRequest::Kind::kGlb;
+    request.svg = o.svg;
+    request.max_triangles = o.max_triangles;
+    request.lod = o.lod;
+    request.layout = layout;
     if (std::getenv("NIWA_BUDGET_TRACE")) {  // calibration (docs/budgets.md)
+      const Estimate grown = run.grown(), export_estimate = run.ExportWork(request);
       std::fprintf(stderr, "budget: grown %.0f MB %.2f s; export %.0f MB %.2f s\n",
                    grown.memory_bytes / 1048576, grown.seconds,
                    export_estimate.memory_bytes / 1048576, export_estimate.seconds);
     }
-    Check(CheckEstimate(grown + export_estimate, ResolveBudget(o.state.budget),
-                        "lower --years, N_high or B_l"));
-    std::string bytes;
-    if (ext == ".json") {
-      bytes = TreeToJson(tree);
-    } else if (ext == ".svg") {
-      bytes = TreeToSvg(tree, o.svg);
-    } else {
-      std::vector<unsigned char> glb;
-      if (o.lod || o.max_triangles >= 0) {
-        // Game-ready export (issue 17 item 4): the budgeted level, or three LOD levels.
-        std::vector<LodMesh> levels;
-        if (o.lod) {
-          Result<std::vector<LodMesh>> all = BuildLodLevels(tree, o.max_triangles);
-          if (!all.ok()) throw BadInput{all.status().Line()};
-          levels = std::move(all).value();
-        } else {
-          Result<LodMesh> level = BuildLodMesh(tree, o.max_triangles);
-          if (!level.ok()) throw BadInput{level.status().Line()};
-          levels.push_back(std::move(level).value());
-        }
-        Check(WriteLodGlb(levels, &glb, "tree", layout));
-      } else {
-        std::string error = WriteTreeGlb(BuildTreeMesh(tree), &glb).Line();
-        if (!error.empty()) throw BadInput{"--out: " + error};
+    // The export's estimate on top of the grown tree's, refused before it starts.
+    Check(run.CheckExport(request));
+    Result<std::string> bytes = run.Export(request);
+    if (!bytes.ok()) {
+      if (request.kind == TreeExportRequest::Kind::kGlb) {
+        throw BadInput{"--out: " + bytes.status().Line()};
       }
-      bytes.assign(glb.begin(), glb.end());
+      Fail(run::RenameField(bytes.status(), TreeFlagNames()));
     }
     StagedOutputs outputs;
-    Check(outputs.Stage("--out", o.out_path, bytes));
+    Check(outputs.Stage("--out", o.out_path, *bytes));
     Check(outputs.Commit());
   }
   // Without an output file the statistics are the output (a bare 'niwa tree grow' prints them).
-  if (o.stats || o.out_path.empty()) out << TreeStatsJson(tree, timings) << "\n";
+  if (o.stats || o.out_path.empty()) out << run.StatsJson() << "\n";
   // The process ends soon and takes the tree's memory with it: freeing it one branch at a time
   // cost 4.3 M of a fresh sakura-thesis 15-year run's 149 M instructions (issue 17 item 7). The
-  // last tree is kept, still reachable (RunCli may run many commands in one process, as the unit
+  // last run is kept, still reachable (RunCli may run many commands in one process, as the unit
   // tests do; the one before is freed then).
-  static Tree* last_tree = nullptr;
-  delete last_tree;
-  last_tree = new Tree(std::move(tree));
+  static TreeRun* last_run = nullptr;
+  delete last_run;
+  last_run = new TreeRun(std::move(run));
   return 0;
 }
 

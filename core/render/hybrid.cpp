@@ -320,45 +320,40 @@ OrbitView FrameOrbitView(const Bounds3& bounds, float fov_y, float margin) {
   return view;
 }
 
-bool ParseOrbitView(const std::string& text, OrbitView* view, std::string* error) {
+Status ParseOrbitView(const std::string& text, OrbitView* view) {
   std::vector<float> values;
   std::stringstream stream(text);
   std::string item;
   while (std::getline(stream, item, ',')) {
     std::optional<double> number = ParseNumber(item);
     if (!number || !(std::fabs(*number) <= 1e30)) {  // in float range before the cast
-      *error = "cam: '" + Echo(item) + "' is not a number; must be yaw,pitch,distance,tx,ty,tz";
-      return false;
+      return Status::Error(
+          "cam", "'" + Echo(item) + "' is not a number; must be yaw,pitch,distance,tx,ty,tz");
     }
     values.push_back(static_cast<float>(*number));
   }
   if (values.size() != 6) {
-    *error = "cam: must be six numbers yaw,pitch,distance,tx,ty,tz";
-    return false;
+    return Status::Error("cam", "must be six numbers yaw,pitch,distance,tx,ty,tz");
   }
   if (values[1] < kMinPitch || values[1] > kMaxPitch) {
-    *error = "cam: pitch must be in [-0.1, 1.5] (radians)";
-    return false;
+    return Status::Error("cam", "pitch must be in [-0.1, 1.5] (radians)");
   }
   if (values[2] < kMinDistance || values[2] > kMaxDistance) {
-    *error = "cam: distance must be in [0.2, 400] (metres)";
-    return false;
+    return Status::Error("cam", "distance must be in [0.2, 400] (metres)");
   }
   if (!(std::fabs(values[0]) <= kMaxYaw)) {
-    *error = "cam: yaw must be in [-1000, 1000] (radians)";
-    return false;
+    return Status::Error("cam", "yaw must be in [-1000, 1000] (radians)");
   }
   for (int i = 3; i < 6; ++i) {
     if (!(std::fabs(values[static_cast<std::size_t>(i)]) <= kMaxTarget)) {
-      *error = "cam: target tx,ty,tz must each be in [-10000, 10000] (metres)";
-      return false;
+      return Status::Error("cam", "target tx,ty,tz must each be in [-10000, 10000] (metres)");
     }
   }
   view->yaw = values[0];
   view->pitch = values[1];
   view->distance = values[2];
   view->target = glm::vec3(values[3], values[4], values[5]);
-  return true;
+  return Status::Ok();
 }
 
 std::string FormatOrbitView(const OrbitView& v) {

@@ -45,9 +45,10 @@ struct OrbitView {
 OrbitView FrameOrbitView(const Bounds3& bounds, float fov_y = kDefaultFovY,
                          float margin = kPageFrameMargin);
 
-// Parses "yaw,pitch,distance,tx,ty,tz"; on failure returns false with a one-line error naming the
-// field and its range (pitch in [-0.1, 1.5], distance in [0.2, 400], all finite).
-bool ParseOrbitView(const std::string& text, OrbitView* view, std::string* error);
+// Parses "yaw,pitch,distance,tx,ty,tz"; on failure the error names the state field "cam" and says
+// which value is out of its range (pitch in [-0.1, 1.5], distance in [0.2, 400], all finite); the
+// view is then unchanged.
+Status ParseOrbitView(const std::string& text, OrbitView* view);
 std::string FormatOrbitView(const OrbitView& view);
 
 // A perspective camera and viewport (camera.js: lookAt(eye, target, up) and perspective(fov_y)).

@@ -405,12 +405,12 @@ Result<std::vector<LodMesh>> BuildLodLevels(const Tree& tree, long max_triangles
     // Seen from farther away: half the atlas side a level (at least 256 texels).
     LodOptions level_options = options;
     level_options.atlas_size = std::max(256, options.atlas_size >> ++level_index);
-    Result<LodMesh> level = BuildLodMesh(tree, within, level_options, "--lod");
+    Result<LodMesh> level = BuildLodMesh(tree, within, level_options, "lod");
     if (!level.ok()) {
       return Status::Error(
-          "--lod", "LOD0 has " + std::to_string(base) + " triangles, so " + std::to_string(share) +
-                       " % of it (" + std::to_string(within) +
-                       ") is too few for a level of this tree; " + level.status().Line());
+          "lod", "LOD0 has " + std::to_string(base) + " triangles, so " + std::to_string(share) +
+                     " % of it (" + std::to_string(within) +
+                     ") is too few for a level of this tree; " + level.status().message());
     }
     levels.push_back(std::move(level).value());
   }

@@ -58,18 +58,20 @@ constexpr long kMinLodTriangles = 6;
 // bisection (40 halvings of [0, thickest radius]) as the smallest r whose triangles fit the rest:
 // radius >= r tubes, r / card_ratio <= radius < r crossed cards (4 triangles), thinner lines. A
 // branch's triangles never grow with r, so the count is monotone in r. Errors name
-// `field` ("--max-triangles") when even the coarsest level does not fit.
+// `field` (the state field "max_triangles"; front ends rename it) when even the coarsest level
+// does not fit.
 Result<LodMesh> BuildLodMesh(const Tree& tree, long max_triangles, const LodOptions& options = {},
-                             const std::string& field = "--max-triangles");
+                             const std::string& field = "max_triangles");
 
 // Triangles of the full BuildTreeMesh of the tree (bark, leaves, flowers).
 long FullTriangles(const TreeMesh& mesh);
 
 // LOD0 within max_triangles (or the full mesh when max_triangles < 0), LOD1 within 25 % and LOD2
-// within 5 % of LOD0's triangles; LOD1 and LOD2 use half and a quarter of the atlas side.
+// within 5 % of LOD0's triangles; LOD1 and LOD2 use half and a quarter of the atlas side. LOD0's
+// error names `field`; a lower level that cannot fit names "lod".
 Result<std::vector<LodMesh>> BuildLodLevels(const Tree& tree, long max_triangles,
                                             const LodOptions& options = {},
-                                            const std::string& field = "--max-triangles");
+                                            const std::string& field = "max_triangles");
 
 // How the levels sit in the .glb: kSiblings, every level a top-level node of the scene (the
 // names importers group); kMsftLod, only LOD0 in the scene with the MSFT_lod extension listing

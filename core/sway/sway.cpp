@@ -72,13 +72,13 @@ SwayParams::SwayParams(const ParamSet& p)
       wind_period(p.Get(ParamId::kWindPeriod)),
       duration(p.Get(ParamId::kSwayDuration)) {}
 
-std::string CheckSwayParams(const ParamSet& params) {
+Status CheckSwayParams(const ParamSet& params) {
   double on = params.Get(ParamId::kGustOn), off = params.Get(ParamId::kGustOff);
   if (off <= on) {
-    return "gust_off: " + FormatNumber(off) + " must be greater than gust_on (" + FormatNumber(on) +
-           ")";
+    return Status::Error(
+        "gust_off", FormatNumber(off) + " must be greater than gust_on (" + FormatNumber(on) + ")");
   }
-  return "";
+  return Status::Ok();
 }
 
 // ---- model ----

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "base/status.h"
 #include "tree/tree.h"
 #include "tree/tree_params.h"
 
@@ -50,8 +51,9 @@ struct SwayParams {
   double duration;          // s
 };
 
-// Cross-parameter checks of a ParamSet's sway rows (gust_off > gust_on); "" or one line.
-std::string CheckSwayParams(const ParamSet& params);
+// Cross-parameter checks of a ParamSet's sway rows (gust_off > gust_on); errors name the row
+// ("gust_off").
+Status CheckSwayParams(const ParamSet& params);
 
 // ---- The node-point model ----
 

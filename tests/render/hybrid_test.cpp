@@ -344,15 +344,18 @@ TEST(Camera, OrbitViewMatchesThePage) {
   EXPECT_FLOAT_EQ(framed.yaw, 0.6f);
   EXPECT_FLOAT_EQ(framed.pitch, 0.25f);
   OrbitView parsed;
-  std::string error;
-  ASSERT_TRUE(ParseOrbitView("0.6,0.25,5.5,0.3,1.5,-0.01", &parsed, &error)) << error;
+  const Status ok = ParseOrbitView("0.6,0.25,5.5,0.3,1.5,-0.01", &parsed);
+  ASSERT_TRUE(ok.ok()) << ok.Line();
   EXPECT_FLOAT_EQ(parsed.distance, 5.5f);
   EXPECT_EQ(FormatOrbitView(parsed), "0.6,0.25,5.5,0.3,1.5,-0.01");
-  EXPECT_FALSE(ParseOrbitView("0.6,0.25,5.5", &parsed, &error));
-  EXPECT_FALSE(ParseOrbitView("0.6,2,5.5,0,0,0", &parsed, &error));
-  EXPECT_NE(error.find("pitch"), std::string::npos);
-  EXPECT_FALSE(ParseOrbitView("0.6,0.2,500,0,0,0", &parsed, &error));
-  EXPECT_NE(error.find("distance"), std::string::npos);
+  EXPECT_FALSE(ParseOrbitView("0.6,0.25,5.5", &parsed).ok());
+  const Status pitch = ParseOrbitView("0.6,2,5.5,0,0,0", &parsed);
+  EXPECT_EQ(pitch.field(), "cam");  // the state field, never a flag
+  EXPECT_NE(pitch.message().find("pitch"), std::string::npos);
+  const Status distance = ParseOrbitView("0.6,0.2,500,0,0,0", &parsed);
+  EXPECT_EQ(distance.field(), "cam");
+  EXPECT_NE(distance.message().find("distance"), std::string::npos);
+  EXPECT_FLOAT_EQ(parsed.distance, 5.5f);  // unchanged by the refused texts
 }
 
 TEST(Options, CheckNamesTheFieldAndRange) {

@@ -132,7 +132,7 @@ TEST(TreeLod, CardsAreTexturedFromTheAtlas) {
 TEST(TreeLod, TooFewTrianglesIsOneLineNamingTheFlag) {
   Result<LodMesh> lod = BuildLodMesh(Sakura15(), 3);
   ASSERT_FALSE(lod.ok());
-  EXPECT_EQ(lod.status().Line(), "--max-triangles: 3 is too few; must be at least 6");
+  EXPECT_EQ(lod.status().Line(), "max_triangles: 3 is too few; must be at least 6");
 }
 
 TEST(TreeLod, LevelsAreSiblingNodesWithinTheirShares) {

@@ -49,7 +49,7 @@ SwayParams Params(std::initializer_list<std::pair<ParamId, double>> values) {
     std::string error = p.Set(id, value).Line();
     EXPECT_EQ(error, "");
   }
-  EXPECT_EQ(CheckSwayParams(p), "");
+  EXPECT_TRUE(CheckSwayParams(p).ok());
   return SwayParams(p);
 }
 
@@ -133,9 +133,10 @@ TEST(SwayParams, RangeAndCrossChecksAreOneLine) {
             "wind_variation: 1.2 is out of range; must be a number in [0, 1]");
   EXPECT_EQ(p.SetFromText("wind_speed", "12.5").Line(), "");
   EXPECT_EQ(SwayParams(p).wind_speed, 12.5);
-  EXPECT_EQ(CheckSwayParams(p), "");
+  EXPECT_TRUE(CheckSwayParams(p).ok());
   EXPECT_EQ(p.Set(ParamId::kGustOff, 0.5).Line(), "");
-  EXPECT_EQ(CheckSwayParams(p), "gust_off: 0.5 must be greater than gust_on (1)");
+  EXPECT_EQ(CheckSwayParams(p).field(), "gust_off");  // the row, never a flag
+  EXPECT_EQ(CheckSwayParams(p).Line(), "gust_off: 0.5 must be greater than gust_on (1)");
 }
 
 TEST(SwayModel, MassAreaAndOmissionOnHandBuiltTree) {

@@ -1,5 +1,7 @@
-// The tree study's bindings: TreeSession, one tree grown year by year for the worker
-// (web/worker/tree_handler.js), with its mesh, sway, hybrid views and exports.
+// The tree study's bindings: TreeSession, an adapter over core/render/tree_run's TreeRun (one tree
+// grown year by year, its mesh, skin, exports and table 4.1 counts) for the worker
+// (web/worker/tree_handler.js), plus what only a page has: the running sway's simulators and
+// poses, the card atlas and the per-view draw lists.
 //
 // JS BINDINGS DESIGN
 // - One WASM module (niwa_web) holds every study: one EMSCRIPTEN_BINDINGS(niwa_<study>) block per
@@ -55,31 +57,25 @@
 #include "params/param_text.h"
 #include "render/atlas_mesh.h"
 #include "render/hybrid.h"
-#include "render/lod_budget.h"
 #include "render/tree_lod.h"
+#include "render/tree_run.h"
 #include "sway/skin.h"
 #include "sway/sway.h"
 #include "sway/sway_budget.h"
-#include "sway/sway_gltf.h"
-#include "tree/growth.h"
 #include "tree/mesh.h"
-#include "tree/presets.h"
-#include "tree/prune.h"
 #include "tree/tree.h"
 #include "tree/tree_budget.h"
-#include "tree/tree_gltf.h"
 #include "tree/tree_params.h"
-#include "tree/tree_report.h"
 #include "tree/tree_state.h"
 
 namespace niwa {
 namespace {
 
-using nlohmann::json;
 using nlohmann::ordered_json;
 
-// The sway and wind parameters of a state (rows of the one parameter table, groups "sway", "wind").
-SwayParams SwayParamsOf(const ParamSet& params) { return SwayParams(params); }
+const TreeMesh kNoMesh;
+const TreeSkin kNoSkin;
+const SwayModel kNoModel;
 
 }  // namespace
 
@@ -95,7 +91,12 @@ class TreeSession {
     state_.limits.bytes_per_alive_internode = MeshBytesPerInternode(state_.params);
     state_.limits.max_internodes = kPageInternodes;
     state_.limits.internode_limit = "page internode budget";
-    grower_ = std::make_unique<Grower>(state_);  // a TreeState is its GrowRequest
+    Result<TreeRun> run = TreeRun::Start(state_, PageBudget());  // core/render/tree_run
+    if (!run.ok()) {
+      error_ = run.status().Line();
+      return;
+    }
+    run_ = std::make_unique<TreeRun>(std::move(run).value());
   }
 
   // The most internodes the page grows and draws: their mesh (about 150 MB of buffers) is built,
@@ -103,9 +104,9 @@ class TreeSession {
   static constexpr long kPageInternodes = 400000;
   std::string error() const { return error_; }
   int years() const { return state_.years; }
-  int year() const { return grower_ ? grower_->year() : 0; }
-  bool done() const { return !grower_ || grower_->stopped() || grower_->year() >= state_.years; }
-  std::string hash() const { return error_.empty() ? EncodeTreeHash(state_) : ""; }
+  int year() const { return run_ ? run_->done() : 0; }
+  bool done() const { return !run_ || run_->finished(); }
+  std::string hash() const { return run_ ? run_->Hash("") : ""; }
 
   // Swaps in `state_json` for the tree already grown (the page's sway and render edits): "" or one
   // error line, and the session is unchanged on error. The state must grow the same tree (preset,
@@ -116,21 +117,12 @@ class TreeSession {
     TreeState next;
     std::string error = ApplyStateJson(state_json, &next).Line();
     if (!error.empty()) return error;
-    if (!grower_ || !error_.empty()) return "restate: no tree has been grown";
-    std::vector<std::string> a, b;
-    for (const Prune& prune : state_.prunes) a.push_back(FormatPrune(prune));
-    for (const Prune& prune : next.prunes) b.push_back(FormatPrune(prune));
-    if (next.preset != state_.preset || next.seed != state_.seed || next.years != state_.years ||
-        a != b)
-      return "restate: preset, seed, years and prunes must be those of the tree grown";
-    state_ = std::move(next);
-    // The look rows (leaf_shape, season) dress the same tree anew: leaves and flowers per season.
-    mesh_ = BuildTreeMesh(grower_->tree(), LookOptions());
+    if (!run_) return "restate: no tree has been grown";
+    // The run re-dresses the same tree in the new look rows and re-skins it to the new sway rows.
+    error = run_->Restate(next).Line();
+    if (!error.empty()) return error;
     sways_.clear();
-    sway_model_ = BuildSwayModel(grower_->tree(), SwayParams(state_.params));
-    skin_ = BuildTreeSkin(mesh_, sway_model_);
-    poses_.assign(sway_model_.nodes.size() * kSwayPoseFloats, 0.0f);
-    RestSwayPoses(sway_model_.nodes.size(), poses_.data());
+    RestPoses(model().nodes.size());
     hybrid_ = HybridScene{};
     atlas_ = AtlasMesh{};
     has_selection_ = false;
@@ -156,17 +148,19 @@ class TreeSession {
           .Add("uvs", mesh.uvs)
           .Add("indices", mesh.indices);
     };
+    const TreeMesh& mesh = run_ ? run_->mesh() : kNoMesh;
+    const TreeSkin& skin = run_ ? run_->skin() : kNoSkin;
     if (group == "bark") {
-      part(mesh_.bark, skin_.bark);
-      out.Add("uvs", mesh_.bark.uvs)
-          .Add("branchIds", mesh_.bark_branch_id)
+      part(mesh.bark, skin.bark);
+      out.Add("uvs", mesh.bark.uvs)
+          .Add("branchIds", mesh.bark_branch_id)
           .Add("branchParents", parents_);
     } else if (group == "leaves") {
-      part(mesh_.leaves, skin_.leaves);
-      out.Add("uvs", mesh_.leaves.uvs);
+      part(mesh.leaves, skin.leaves);
+      out.Add("uvs", mesh.leaves.uvs);
     } else if (group == "flowers") {
-      part(mesh_.flowers, skin_.flowers);
-      out.Add("uvs", mesh_.flowers.uvs);
+      part(mesh.flowers, skin.flowers);
+      out.Add("uvs", mesh.flowers.uvs);
     } else if (group == "atlas.bark") {
       atlas(atlas_.bark);
     } else if (group == "atlas.leaves") {
@@ -196,38 +190,24 @@ class TreeSession {
   }
 
   // Grows one more year; false when the tree already has all its years (or the state was bad).
-  bool growYear() {
-    if (done()) return false;
-    grower_->GrowYear();
-    return true;
-  }
+  bool growYear() { return run_ && run_->GrowYear(); }
 
   // Builds the triangle meshes of the tree as grown so far; call before the buffer views. "" or
   // the line naming the page budget the mesh would cross (the mesh is then left empty).
   std::string buildMesh() {
-    if (!grower_) return "";
-    const Status fits = CheckEstimate(
-        grower_->estimate() + EstimateTreeExport(CountTree(grower_->tree()), TreeExport::kMesh),
-        PageBudget(), "lower years, N_high or B_l");
-    if (!fits.ok()) {
-      mesh_ = TreeMesh{};
-      return fits.Line();
-    }
-    mesh_ = BuildTreeMesh(grower_->tree(), LookOptions());
+    if (!run_) return "";
+    // The mesh within the page's budget, its node points and skin (thesis 3.3.1, eq. 3.15).
+    const std::string error = run_->BuildMesh().Line();
+    if (!error.empty()) return error;
     parents_.clear();
-    for (const Branch& branch : grower_->tree().branches) parents_.push_back(branch.parent);
-    // The node points of this tree and the skin that ties every vertex to one of them (thesis
-    // 3.3.1, eq. 3.15); the pose texture starts at rest.
+    for (const Branch& branch : run_->tree().branches) parents_.push_back(branch.parent);
     sways_.clear();
-    sway_model_ = BuildSwayModel(grower_->tree(), SwayParams(state_.params));
-    skin_ = BuildTreeSkin(mesh_, sway_model_);
-    poses_.assign(sway_model_.nodes.size() * kSwayPoseFloats, 0.0f);
-    RestSwayPoses(sway_model_.nodes.size(), poses_.data());
+    RestPoses(model().nodes.size());  // the pose texture starts at rest
     return "";
   }
 
   // ---- Sway (thesis chapter 3) of the tree last meshed ----
-  int swayNodes() const { return static_cast<int>(sway_model_.nodes.size()); }
+  int swayNodes() const { return static_cast<int>(model().nodes.size()); }
 
   // (Re)starts the sway from rest at time 0 with the state's sway and wind parameters.
   std::string swayStart() { return StartSway({glm::dvec3(0.0)}); }
@@ -253,7 +233,7 @@ class TreeSession {
   // block per instance); returns the time (s).
   double swayStep(int steps) {
     if (sways_.empty()) return 0;
-    const std::size_t nodes = sway_model_.nodes.size();
+    const std::size_t nodes = model().nodes.size();
     const int n = std::min(std::max(steps, 0), 64);
     for (std::size_t k = 0; k < sways_.size(); ++k) {
       for (int i = 0; i < n; ++i) sways_[k]->Step();
@@ -278,124 +258,91 @@ class TreeSession {
   // The stats JSON of core/tree/tree_report (the CLI's --stats), plus idle_prunes (prunes that cut
   // nothing, once the tree has all its years) and bounds (of every mesh vertex, metres).
   std::string statsJson() const {
-    if (!grower_) {
+    if (!run_) {
       ordered_json j;
       j["error"] = error_;
       return j.dump();
     }
-    static const std::vector<Prune> kNone;
-    TreeStatsExtras extras;
-    extras.idle_prunes = done() ? &state_.prunes : &kNone;
-    extras.mesh = &mesh_;
-    return TreeStatsJson(grower_->tree(), grower_->timings(), extras);
+    return run_->PageStatsJson();
   }
 
   // The look of the mesh last built, for the textures (web/bindings/texture_bindings.cpp):
   // {"leaf_shape": 0..3, "season": 0..3, "autumn_colour": 0..4, "flower_colour": 0..4,
   // "flower_form": 0..1} (core/tree/tree_look.h).
   std::string lookJson() const {
+    const TreeLook& look = (run_ ? run_->mesh() : kNoMesh).look;
     ordered_json out;
-    out["leaf_shape"] = static_cast<int>(mesh_.look.leaf_shape);
-    out["season"] = static_cast<int>(mesh_.look.season);
-    out["autumn_colour"] = static_cast<int>(mesh_.look.autumn);
-    out["flower_colour"] = static_cast<int>(mesh_.look.flower_colour);
-    out["flower_form"] = static_cast<int>(mesh_.look.flower_form);
+    out["leaf_shape"] = static_cast<int>(look.leaf_shape);
+    out["season"] = static_cast<int>(look.season);
+    out["autumn_colour"] = static_cast<int>(look.autumn);
+    out["flower_colour"] = static_cast<int>(look.flower_colour);
+    out["flower_form"] = static_cast<int>(look.flower_form);
     return out.dump();
   }
 
   // Binary glTF of the mesh last built (buildMesh); "" or one error line. Then glbBytes() views it.
   std::string buildGlb() {
-    glb_.clear();
-    if (!grower_) return error_.empty() ? "no tree" : error_;
-    // The page's budget: the grown tree, its mesh and the .glb's buffers, refused before writing.
-    const TreeCounts counts = CountTree(grower_->tree());
-    const Status fits =
-        CheckEstimate(grower_->estimate() + EstimateTreeExport(counts, TreeExport::kMesh) +
-                          EstimateTreeExport(counts, TreeExport::kGlb),
-                      PageBudget(), "lower years, N_high or B_l");
-    if (!fits.ok()) return fits.Line();
-    return WriteTreeGlb(mesh_, &glb_).Line();
+    TreeExportRequest request;
+    request.kind = TreeExportRequest::Kind::kGlb;
+    return Export(request);
   }
 
   // Game-ready .glb (issue 17 item 4, core/render/tree_lod): within max_triangles (< 0: the full
   // mesh) and, with lod, the sibling nodes tree_LOD0..2. "" or one error line; then buffers("glb").
   std::string buildLodGlb(double max_triangles, bool lod) {
     glb_.clear();
-    if (!grower_) return error_.empty() ? "no tree" : error_;
+    if (!run_) return error_.empty() ? "no tree" : error_;
     if (max_triangles >= 0) {
       const Status range = CheckValue("triangle budget", max_triangles,
                                       static_cast<double>(kMinLodTriangles), 1e8, true);
       if (!range.ok()) return range.Line();
     }
-    const long budget = max_triangles < 0 ? -1 : static_cast<long>(max_triangles);
-    // The page's budget: the grown tree and its mesh (held meanwhile) and the levels' own work
-    // from the full mesh's triangles (core/render/lod_budget, as `niwa tree grow --lod`).
-    const TreeCounts counts = CountTree(grower_->tree());
-    const Status fits =
-        CheckEstimate(grower_->estimate() + EstimateTreeExport(counts, TreeExport::kMesh) +
-                          EstimateLodExport(counts, budget, lod),
-                      PageBudget(), "lower years, N_high or B_l");
-    if (!fits.ok()) return fits.Line();
-    std::vector<LodMesh> levels;
-    if (lod) {
-      Result<std::vector<LodMesh>> all =
-          BuildLodLevels(grower_->tree(), budget, LodOptions{}, "triangle budget");
-      if (!all.ok()) return all.status().Line();
-      levels = std::move(all).value();
-    } else {
-      Result<LodMesh> level =
-          BuildLodMesh(grower_->tree(), budget < 0 ? FullTriangles(mesh_) : budget, LodOptions{},
-                       "triangle budget");
-      if (!level.ok()) return level.status().Line();
-      levels.push_back(std::move(level).value());
-    }
-    return WriteLodGlb(levels, &glb_).Line();
+    TreeExportRequest request;
+    request.kind = TreeExportRequest::Kind::kLodGlb;
+    request.max_triangles = max_triangles < 0 ? -1 : static_cast<long>(max_triangles);
+    request.lod = lod;
+    request.lod_field = "triangle budget";  // the export panel's field
+    return Export(request);
   }
 
   // The wind sway as a skinned, animated .glb (core/sway/sway_gltf, as `niwa tree sway --out
   // x.glb`), its size estimated against the page budget first. "" or one error line.
   std::string buildSwayGlb(double fps) {
     glb_.clear();
-    if (!grower_) return error_.empty() ? "no tree" : error_;
+    if (!run_) return error_.empty() ? "no tree" : error_;
     const Status range = CheckValue("sway fps", fps, 1, 240, false);
     if (!range.ok()) return range.Line();
-    const SwayParams params(state_.params);
-    // The page's budget: the grown tree and its mesh (held meanwhile), the sway run and the clip.
-    const TreeCounts counts = CountTree(grower_->tree());
-    const Estimate estimate = grower_->estimate() + EstimateTreeExport(counts, TreeExport::kMesh) +
-                              EstimateSwayGlb(sway_model_, counts, params, fps);
-    const Status fits = CheckEstimate(estimate, PageBudget(), "lower duration or years");
-    if (!fits.ok()) return fits.Line();
-    SwayGlbOptions options;
-    options.fps = fps;
-    return WriteSwayGlb(grower_->tree(), params, options, &glb_).Line();
+    TreeExportRequest request;
+    request.kind = TreeExportRequest::Kind::kSwayGlb;
+    request.fps = fps;
+    return Export(request);
   }
 
   // ---- Hybrid rendering (thesis chapter 4) of the tree last meshed ----
   std::string buildHybrid() {
-    if (!grower_) return error_.empty() ? "no tree" : error_;
-    RenderOptions options = RenderOptionsFromParams(state_.params);
+    if (!run_) return error_.empty() ? "no tree" : error_;
+    RenderOptions options = RenderOptionsFromParams(state().params);
     std::string error = CheckRenderOptions(options).Line();
     if (!error.empty()) return error;
-    hybrid_ = BuildHybridScene(grower_->tree(), options);
-    atlas_ = BuildAtlasMesh(mesh_, hybrid_);
+    hybrid_ = BuildHybridScene(run_->tree(), options);
+    atlas_ = BuildAtlasMesh(run_->mesh(), hybrid_);
     has_selection_ = false;
     slots_.clear();
     return hybrid_.atlas_fits ? "" : "render: the card atlas does not fit; lower card_planes";
   }
   int atlasSize() const { return hybrid_.atlas_size; }
-  int renderMode() const { return static_cast<int>(state_.params.Get(ParamId::kRenderMode)); }
+  int renderMode() const { return static_cast<int>(state().params.Get(ParamId::kRenderMode)); }
 
   // Card-or-line per branch for this camera (metres, radians, pixels), the draw list and its skin;
   // returns the table 4.1 counts as JSON (CountHybrid + CountFull), or {"error": ...}.
   std::string hybridView(double ex, double ey, double ez, double tx, double ty, double tz,
                          double fov_y, int width, int height) {
     ordered_json j;
-    if (!grower_ || hybrid_.frames.empty()) {
+    if (!run_ || hybrid_.frames.empty()) {
       j["error"] = "no hybrid scene";
       return j.dump();
     }
-    const Tree& tree = grower_->tree();
+    const Tree& tree = run_->tree();
     RenderCamera camera;
     camera.eye = glm::vec3(static_cast<float>(ex), static_cast<float>(ey), static_cast<float>(ez));
     camera.target =
@@ -406,29 +353,14 @@ class TreeSession {
     selection_ = SelectHybrid(tree, hybrid_, camera, has_selection_ ? &selection_ : nullptr);
     has_selection_ = true;
     LineShading shading;  // eq. 4.2 lit by the light model's sun (renderer.js setSun)
-    const double el = state_.params.Get(ParamId::kSunElevation) * 3.14159265358979 / 180.0;
-    const double az = state_.params.Get(ParamId::kSunAzimuth) * 3.14159265358979 / 180.0;
+    const double el = state().params.Get(ParamId::kSunElevation) * 3.14159265358979 / 180.0;
+    const double az = state().params.Get(ParamId::kSunAzimuth) * 3.14159265358979 / 180.0;
     shading.light_dir =
         glm::vec3(static_cast<float>(std::cos(el) * std::cos(az)), static_cast<float>(std::sin(el)),
                   static_cast<float>(std::cos(el) * std::sin(az)));
     draw_ = BuildDrawList(tree, hybrid_, selection_, camera, shading);
-    draw_skin_ = BuildDrawListSkin(tree, hybrid_, draw_, sway_model_);
-    RenderStats stats = CountHybrid(hybrid_, selection_);
-    CountFull(mesh_, &stats);
-    j["lines"] = stats.lines;
-    j["line_branches"] = stats.line_branches;
-    j["card_branches"] = stats.card_branches;
-    j["branch_polygons"] = stats.branch_polygons;
-    j["leaf_polygons"] = stats.leaf_polygons;
-    j["total_polygons"] = stats.total_polygons;
-    j["primitives"] = stats.primitives;
-    j["textures"] = stats.textures;
-    j["leaf_clusters"] = stats.leaf_clusters;
-    j["full_polygons"] = stats.full_polygons;
-    int alive = 0;
-    for (const Branch& b : tree.branches) alive += b.alive ? 1 : 0;
-    j["alive_branches"] = alive;
-    return j.dump();
+    draw_skin_ = BuildDrawListSkin(tree, hybrid_, draw_, model());
+    return ViewCountsJson(run_->CountView(hybrid_, selection_));  // table 4.1, as render-stats
   }
   // hybridView with its own previous selection per slot (the default view keeps its own).
   std::string hybridViewSlot(int slot, double ex, double ey, double ez, double tx, double ty,
@@ -446,58 +378,68 @@ class TreeSession {
   }
 
   // The state's full parameter set as JSON (ParamsToJson), for the "Download .json" button.
-  std::string paramsJson() const { return ParamsToJson(state_.params); }
+  std::string paramsJson() const { return ParamsToJson(state().params); }
 
  private:
-  // Mesh options with the look of the current state (the tree grown keeps its own params: a
-  // restate changes the look rows without regrowing).
-  MeshOptions LookOptions() const {
-    MeshOptions options;
-    options.look = LookFromParams(state_.params);
-    return options;
+  // The state of the run (after restates), or the one given when it was refused.
+  const TreeState& state() const { return run_ ? run_->state() : state_; }
+  const SwayModel& model() const { return run_ ? run_->sway_model() : kNoModel; }
+
+  // One pose block at rest per node point of `points`.
+  void RestPoses(std::size_t points) {
+    poses_.assign(points * kSwayPoseFloats, 0.0f);
+    RestSwayPoses(points, poses_.data());
+  }
+
+  // An export of the run into glb_, checked against the page's budget first: "" or one line.
+  std::string Export(const TreeExportRequest& request) {
+    glb_.clear();
+    if (!run_) return error_.empty() ? "no tree" : error_;
+    const Status fits = run_->CheckExport(request);
+    if (!fits.ok()) return fits.Line();
+    Result<std::string> bytes = run_->Export(request);
+    if (!bytes.ok()) return bytes.status().Line();
+    glb_.assign(bytes->begin(), bytes->end());
+    return "";
   }
 
   static constexpr std::size_t kMaxSwayInstances = 4096;
 
   // One simulator per origin (cm), from rest at time 0; the poses at rest.
   std::string StartSway(const std::vector<glm::dvec3>& origins) {
-    if (!grower_) return error_.empty() ? "no tree" : error_;
-    SwayParams params = SwayParamsOf(state_.params);
-    std::string error = CheckSwayParams(state_.params);
+    if (!run_) return error_.empty() ? "no tree" : error_;
+    const SwayParams params = run_->sway_params();
+    std::string error = CheckSwayParams(state().params).Line();
     if (!error.empty()) return error;
     // The page's budget: the simulators and poses next to the tree and its mesh (docs/budgets.md).
+    const SwayModel& sway_model = model();
     const Status fits = CheckEstimate(
-        grower_->estimate() + EstimateTreeExport(CountTree(grower_->tree()), TreeExport::kMesh) +
-            EstimatePageSway(sway_model_, static_cast<int>(origins.size())),
+        run_->grown() + EstimateTreeExport(CountTree(run_->tree()), TreeExport::kMesh) +
+            EstimatePageSway(sway_model, static_cast<int>(origins.size())),
         PageBudget(), "lower years or the number of trees");
     if (!fits.ok()) return fits.Line();
     // And its time: one worker tick of steps within the page's tick, at least 1/4 of real time.
     const int instances = static_cast<int>(origins.size());
-    const PageSwayTime time = EstimatePageSwayTime(sway_model_, params, instances);
+    const PageSwayTime time = EstimatePageSwayTime(sway_model, params, instances);
     const Status in_time =
-        CheckPageSwayTime(time, sway_model_, params, instances, PageBudget().seconds_limit,
+        CheckPageSwayTime(time, sway_model, params, instances, PageBudget().seconds_limit,
                           instances == 1 ? "raise dt, or lower years, N_high or B_l"
                                          : "raise dt, or lower years or the number of trees");
     if (!in_time.ok()) return in_time.Line();
     sway_time_ = time;
     sways_.clear();
     for (const glm::dvec3& origin : origins)
-      sways_.push_back(std::make_unique<SwaySimulator>(grower_->tree(), params, origin));
+      sways_.push_back(std::make_unique<SwaySimulator>(run_->tree(), params, origin));
     sway_params_ = params;
-    const std::size_t points = origins.size() * sway_model_.nodes.size();
-    poses_.assign(points * kSwayPoseFloats, 0.0f);
-    RestSwayPoses(points, poses_.data());
+    RestPoses(origins.size() * sway_model.nodes.size());
     return "";
   }
 
-  TreeState state_;
+  TreeState state_;  // as given (the run holds its own copy)
   std::string error_;
-  std::unique_ptr<Grower> grower_;
-  TreeMesh mesh_;
+  std::unique_ptr<TreeRun> run_;  // core/render/tree_run: growth, mesh, skin, exports, counts
   std::vector<int32_t> parents_;
   std::vector<unsigned char> glb_;
-  SwayModel sway_model_;
-  TreeSkin skin_;
   SwayParams sway_params_;
   std::vector<std::unique_ptr<SwaySimulator>> sways_;  // one per instance (swayStartAt)
   PageSwayTime sway_time_;                             // of the sway started last
