@@ -8,8 +8,9 @@
 //   file (this one is niwa_tree; the table, presets and hash codec are common_bindings.cpp).
 // - Everything that crosses from JavaScript arrives as text (JSON or a URL hash) and is checked by
 //   the core itself (core/tree/tree_state: ApplyStateJson, DecodeTreeHash). Nothing here throws or
-//   aborts on bad input: errors come back as one line, either as the "error" field of a JSON
-//   answer or as a returned string ("" = success), or from TreeSession::error().
+//   aborts on bad input: errors come back as an error record {ok: false, field, message}
+//   (error_record.h): a returned string is "" or the record, a JSON answer is the record itself,
+//   and TreeSession::error() says why a session has no tree.
 // - Buffers leave through ONE generic accessor, buffers(group) -> {name: typed view} (buffers.h),
 //   not one getter per buffer. The views point into the WASM heap and stay valid only until the
 //   next call that may allocate: the worker copies each one ONCE right away and transfers that
@@ -51,6 +52,8 @@
 #include <vector>
 
 #include "buffers.h"
+#include "error_record.h"
+#include "light/sun.h"
 #include "page_budget.h"
 #include "params/param_json.h"
 #include "params/param_table.h"
@@ -84,8 +87,8 @@ const SwayModel kNoModel;
 class TreeSession {
  public:
   explicit TreeSession(const std::string& state_json) {
-    error_ = ApplyStateJson(state_json, &state_).Line();  // core/tree/tree_state
-    if (!error_.empty()) return;
+    error_ = ApplyStateJson(state_json, &state_);  // core/tree/tree_state
+    if (!error_.ok()) return;
     // The page's budget (docs/budgets.md): what a laptop tab's WASM heap holds, by estimate.
     state_.limits = TreeGrowLimits(state_.params, PageBudget(), "years");
     state_.limits.bytes_per_alive_internode = MeshBytesPerInternode(state_.params);
@@ -93,7 +96,7 @@ class TreeSession {
     state_.limits.internode_limit = "page internode budget";
     Result<TreeRun> run = TreeRun::Start(state_, PageBudget());  // core/render/tree_run
     if (!run.ok()) {
-      error_ = run.status().Line();
+      error_ = run.status();
       return;
     }
     run_ = std::make_unique<TreeRun>(std::move(run).value());
@@ -102,7 +105,7 @@ class TreeSession {
   // The most internodes the page grows and draws: their mesh (about 150 MB of buffers) is built,
   // copied out of the heap and uploaded to the GPU without the page stalling for seconds.
   static constexpr long kPageInternodes = 400000;
-  std::string error() const { return error_; }
+  std::string error() const { return ErrorText(error_); }
   int years() const { return state_.years; }
   int year() const { return run_ ? run_->done() : 0; }
   bool done() const { return !run_ || run_->finished(); }
@@ -115,12 +118,12 @@ class TreeSession {
   // hybrid scene is cleared (buildHybrid() rebuilds it with the new render rows).
   std::string restate(const std::string& state_json) {
     TreeState next;
-    std::string error = ApplyStateJson(state_json, &next).Line();
-    if (!error.empty()) return error;
-    if (!run_) return "restate: no tree has been grown";
+    Status error = ApplyStateJson(state_json, &next);
+    if (!error.ok()) return ErrorText(error);
+    if (!run_) return ErrorText(Status::Error("restate", "no tree has been grown"));
     // The run re-dresses the same tree in the new look rows and re-skins it to the new sway rows.
-    error = run_->Restate(next).Line();
-    if (!error.empty()) return error;
+    error = run_->Restate(next);
+    if (!error.ok()) return ErrorText(error);
     sways_.clear();
     RestPoses(model().nodes.size());
     hybrid_ = HybridScene{};
@@ -197,8 +200,8 @@ class TreeSession {
   std::string buildMesh() {
     if (!run_) return "";
     // The mesh within the page's budget, its node points and skin (thesis 3.3.1, eq. 3.15).
-    const std::string error = run_->BuildMesh().Line();
-    if (!error.empty()) return error;
+    const Status error = run_->BuildMesh();
+    if (!error.ok()) return ErrorText(error);
     parents_.clear();
     for (const Branch& branch : run_->tree().branches) parents_.push_back(branch.parent);
     sways_.clear();
@@ -214,15 +217,17 @@ class TreeSession {
 
   // The same with one simulator per instance; origins: 3 numbers per instance, metres.
   std::string swayStartAt(emscripten::val origins) {
-    if (!origins.isArray()) return "sway: origins must be an array of 3 numbers per instance";
+    if (!origins.isArray()) {
+      return ErrorText(Status::Error("sway", "origins must be an array of 3 numbers per instance"));
+    }
     const std::vector<double> o = emscripten::vecFromJSArray<double>(origins);
     if (o.empty() || o.size() % 3 != 0 || o.size() / 3 > kMaxSwayInstances)
-      return "sway: origins must hold 3 numbers per instance, 1 to " +
-             std::to_string(kMaxSwayInstances) + " instances";
+      return ErrorText(Status::Error("sway", "origins must hold 3 numbers per instance, 1 to " +
+                                                 std::to_string(kMaxSwayInstances) + " instances"));
     std::vector<glm::dvec3> at;
     for (std::size_t i = 0; i < o.size(); i += 3) {
       if (!std::isfinite(o[i]) || !std::isfinite(o[i + 1]) || !std::isfinite(o[i + 2]))
-        return "sway: origins must be finite numbers";
+        return ErrorText(Status::Error("sway", "origins must be finite numbers"));
       at.emplace_back(o[i] * 100.0, o[i + 1] * 100.0, o[i + 2] * 100.0);  // m -> cm
     }
     return StartSway(at);
@@ -258,11 +263,7 @@ class TreeSession {
   // The stats JSON of core/tree/tree_report (the CLI's --stats), plus idle_prunes (prunes that cut
   // nothing, once the tree has all its years) and bounds (of every mesh vertex, metres).
   std::string statsJson() const {
-    if (!run_) {
-      ordered_json j;
-      j["error"] = error_;
-      return j.dump();
-    }
+    if (!run_) return ErrorRecordJson(NoTree());
     return run_->PageStatsJson();
   }
 
@@ -291,11 +292,11 @@ class TreeSession {
   // mesh) and, with lod, the sibling nodes tree_LOD0..2. "" or one error line; then buffers("glb").
   std::string buildLodGlb(double max_triangles, bool lod) {
     glb_.clear();
-    if (!run_) return error_.empty() ? "no tree" : error_;
+    if (!run_) return ErrorText(NoTree());
     if (max_triangles >= 0) {
       const Status range = CheckValue("triangle budget", max_triangles,
                                       static_cast<double>(kMinLodTriangles), 1e8, true);
-      if (!range.ok()) return range.Line();
+      if (!range.ok()) return ErrorText(range);
     }
     TreeExportRequest request;
     request.kind = TreeExportRequest::Kind::kLodGlb;
@@ -309,9 +310,9 @@ class TreeSession {
   // x.glb`), its size estimated against the page budget first. "" or one error line.
   std::string buildSwayGlb(double fps) {
     glb_.clear();
-    if (!run_) return error_.empty() ? "no tree" : error_;
+    if (!run_) return ErrorText(NoTree());
     const Status range = CheckValue("sway fps", fps, 1, 240, false);
-    if (!range.ok()) return range.Line();
+    if (!range.ok()) return ErrorText(range);
     TreeExportRequest request;
     request.kind = TreeExportRequest::Kind::kSwayGlb;
     request.fps = fps;
@@ -320,27 +321,28 @@ class TreeSession {
 
   // ---- Hybrid rendering (thesis chapter 4) of the tree last meshed ----
   std::string buildHybrid() {
-    if (!run_) return error_.empty() ? "no tree" : error_;
+    if (!run_) return ErrorText(NoTree());
     RenderOptions options = RenderOptionsFromParams(state().params);
-    std::string error = CheckRenderOptions(options).Line();
-    if (!error.empty()) return error;
+    const Status error = CheckRenderOptions(options);
+    if (!error.ok()) return ErrorText(error);
     hybrid_ = BuildHybridScene(run_->tree(), options);
     atlas_ = BuildAtlasMesh(run_->mesh(), hybrid_);
     has_selection_ = false;
     slots_.clear();
-    return hybrid_.atlas_fits ? "" : "render: the card atlas does not fit; lower card_planes";
+    return hybrid_.atlas_fits
+               ? ""
+               : ErrorText(Status::Error("render", "the card atlas does not fit; lower card_planes"));
   }
   int atlasSize() const { return hybrid_.atlas_size; }
   int renderMode() const { return static_cast<int>(state().params.Get(ParamId::kRenderMode)); }
 
   // Card-or-line per branch for this camera (metres, radians, pixels), the draw list and its skin;
-  // returns the table 4.1 counts as JSON (CountHybrid + CountFull), or {"error": ...}.
+  // returns the table 4.1 counts as JSON (CountHybrid + CountFull), or an error record.
   std::string hybridView(double ex, double ey, double ez, double tx, double ty, double tz,
                          double fov_y, int width, int height) {
     ordered_json j;
     if (!run_ || hybrid_.frames.empty()) {
-      j["error"] = "no hybrid scene";
-      return j.dump();
+      return ErrorRecordJson(Status::Error("view", "no hybrid scene"));
     }
     const Tree& tree = run_->tree();
     RenderCamera camera;
@@ -353,11 +355,9 @@ class TreeSession {
     selection_ = SelectHybrid(tree, hybrid_, camera, has_selection_ ? &selection_ : nullptr);
     has_selection_ = true;
     LineShading shading;  // eq. 4.2 lit by the light model's sun (renderer.js setSun)
-    const double el = state().params.Get(ParamId::kSunElevation) * 3.14159265358979 / 180.0;
-    const double az = state().params.Get(ParamId::kSunAzimuth) * 3.14159265358979 / 180.0;
     shading.light_dir =
-        glm::vec3(static_cast<float>(std::cos(el) * std::cos(az)), static_cast<float>(std::sin(el)),
-                  static_cast<float>(std::cos(el) * std::sin(az)));
+        light::SunDirection(static_cast<float>(state().params.Get(ParamId::kSunElevation)),
+                            static_cast<float>(state().params.Get(ParamId::kSunAzimuth)));
     draw_ = BuildDrawList(tree, hybrid_, selection_, camera, shading);
     draw_skin_ = BuildDrawListSkin(tree, hybrid_, draw_, model());
     return ViewCountsJson(run_->CountView(hybrid_, selection_));  // table 4.1, as render-stats
@@ -366,7 +366,7 @@ class TreeSession {
   std::string hybridViewSlot(int slot, double ex, double ey, double ez, double tx, double ty,
                              double tz, double fov_y, int width, int height) {
     if (slot < 0 || slot > 255)
-      return R"({"error":"view: slot must be a whole number in [0, 255]"})";
+      return ErrorRecordJson(Status::Error("view", "slot must be a whole number in [0, 255]"));
     if (slots_.size() <= static_cast<size_t>(slot)) slots_.resize(slot + 1);
     Slot& s = slots_[slot];
     std::swap(selection_, s.selection);
@@ -381,6 +381,9 @@ class TreeSession {
   std::string paramsJson() const { return ParamsToJson(state().params); }
 
  private:
+  // Why there is no tree: the state's or the start's error, else "tree: no tree".
+  Status NoTree() const { return error_.ok() ? Status::Error("tree", "no tree") : error_; }
+
   // The state of the run (after restates), or the one given when it was refused.
   const TreeState& state() const { return run_ ? run_->state() : state_; }
   const SwayModel& model() const { return run_ ? run_->sway_model() : kNoModel; }
@@ -394,11 +397,11 @@ class TreeSession {
   // An export of the run into glb_, checked against the page's budget first: "" or one line.
   std::string Export(const TreeExportRequest& request) {
     glb_.clear();
-    if (!run_) return error_.empty() ? "no tree" : error_;
+    if (!run_) return ErrorText(NoTree());
     const Status fits = run_->CheckExport(request);
-    if (!fits.ok()) return fits.Line();
+    if (!fits.ok()) return ErrorText(fits);
     Result<std::string> bytes = run_->Export(request);
-    if (!bytes.ok()) return bytes.status().Line();
+    if (!bytes.ok()) return ErrorText(bytes.status());
     glb_.assign(bytes->begin(), bytes->end());
     return "";
   }
@@ -407,17 +410,17 @@ class TreeSession {
 
   // One simulator per origin (cm), from rest at time 0; the poses at rest.
   std::string StartSway(const std::vector<glm::dvec3>& origins) {
-    if (!run_) return error_.empty() ? "no tree" : error_;
+    if (!run_) return ErrorText(NoTree());
     const SwayParams params = run_->sway_params();
-    std::string error = CheckSwayParams(state().params).Line();
-    if (!error.empty()) return error;
+    const Status error = CheckSwayParams(state().params);
+    if (!error.ok()) return ErrorText(error);
     // The page's budget: the simulators and poses next to the tree and its mesh (docs/budgets.md).
     const SwayModel& sway_model = model();
     const Status fits = CheckEstimate(
         run_->grown() + EstimateTreeExport(CountTree(run_->tree()), TreeExport::kMesh) +
             EstimatePageSway(sway_model, static_cast<int>(origins.size())),
         PageBudget(), "lower years or the number of trees");
-    if (!fits.ok()) return fits.Line();
+    if (!fits.ok()) return ErrorText(fits);
     // And its time: one worker tick of steps within the page's tick, at least 1/4 of real time.
     const int instances = static_cast<int>(origins.size());
     const PageSwayTime time = EstimatePageSwayTime(sway_model, params, instances);
@@ -425,7 +428,7 @@ class TreeSession {
         CheckPageSwayTime(time, sway_model, params, instances, PageBudget().seconds_limit,
                           instances == 1 ? "raise dt, or lower years, N_high or B_l"
                                          : "raise dt, or lower years or the number of trees");
-    if (!in_time.ok()) return in_time.Line();
+    if (!in_time.ok()) return ErrorText(in_time);
     sway_time_ = time;
     sways_.clear();
     for (const glm::dvec3& origin : origins)
@@ -436,7 +439,7 @@ class TreeSession {
   }
 
   TreeState state_;  // as given (the run holds its own copy)
-  std::string error_;
+  Status error_;  // why the session has no run (a bad state or a refused start)
   std::unique_ptr<TreeRun> run_;  // core/render/tree_run: growth, mesh, skin, exports, counts
   std::vector<int32_t> parents_;
   std::vector<unsigned char> glb_;

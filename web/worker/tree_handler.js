@@ -3,6 +3,7 @@
 // runs the wind, the hybrid views and the exports. One TreeSession (web/bindings/tree_bindings.cpp)
 // per client keeps the client's last finished tree. Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does).
+import { errorOf, errorReply } from './errors.js';
 import { nextTask as yieldToEvents } from './next_task.js';
 import { copyView, takeBuffers } from './transfer.js';
 
@@ -75,9 +76,9 @@ export function createHandler(Module, ctx) {
     const mesh = takeMesh(session, transfer);
     let hybrid = null;
     if (session.renderMode() === 1) {
-      const error = session.buildHybrid();
+      const error = errorOf(session.buildHybrid());
       if (error) {
-        post({ type: 'error', id, client, message: error });
+        post(errorReply(error, id, client));
         return false;
       }
       hybrid = takeAtlas(session, transfer);
@@ -97,9 +98,9 @@ export function createHandler(Module, ctx) {
     }
     let keep = false;
     try {
-      const error = session.error();
+      const error = errorOf(session.error());
       if (error) {
-        post({ type: 'error', id, client, message: error });
+        post(errorReply(error, id, client));
         return;
       }
       post({ type: 'hash', id, client, hash: session.hash() });
@@ -114,9 +115,9 @@ export function createHandler(Module, ctx) {
       }
       await yieldToEvents();
       if (!isLatest(client, id)) return;
-      const meshError = session.buildMesh();  // "" or the page budget it would cross
+      const meshError = errorOf(session.buildMesh());  // null or the page budget it would cross
       if (meshError) {
-        post({ type: 'error', id, client, message: meshError });
+        post(errorReply(meshError, id, client));
         return;
       }
       if (!sendTree(id, client, session, true)) return;
@@ -134,9 +135,9 @@ export function createHandler(Module, ctx) {
   async function restage(msg, client) {
     const last = finished.get(client);
     if (!last || !sameTree(last, msg)) return grow(msg, client);
-    const error = last.session.restate(JSON.stringify(msg.state));
+    const error = errorOf(last.session.restate(JSON.stringify(msg.state)));
     if (error) {
-      post({ type: 'error', id: msg.id, client, message: error });
+      post(errorReply(error, msg.id, client));
       return;
     }
     post({ type: 'hash', id: msg.id, client, hash: last.session.hash() });
@@ -188,9 +189,9 @@ export function createHandler(Module, ctx) {
     const session = last?.session;
     if (!session) return;
     const at = origins ? Array.from(origins, Number) : null;
-    const error = at ? session.swayStartAt(at) : session.swayStart();
+    const error = errorOf(at ? session.swayStartAt(at) : session.swayStart());
     if (error) {  // control: the page shows it beside Blow (e.g. the page memory budget's line)
-      post({ type: 'error', client, message: error, control: 'wind' });
+      post(errorReply(error, undefined, client, { control: 'wind' }));
       return;
     }
     let clock = typeof clockName === 'string' ? clocks.get(clockName) : null;
@@ -261,9 +262,9 @@ export function createHandler(Module, ctx) {
     if (!session || (session.renderMode() === 1) === motion) return;
     if (motion && (!last.motionHybrid || msg.atlas === true)) {
       if (!last.motionHybrid) {
-        const error = session.buildHybrid();
+        const error = errorOf(session.buildHybrid());
         if (error) {  // no cheaper representation: the page keeps drawing the full one
-          post({ type: 'error', client, message: error, control: 'motion' });
+          post(errorReply(error, undefined, client, { control: 'motion' }));
           return;
         }
         last.motionHybrid = true;
@@ -280,7 +281,7 @@ export function createHandler(Module, ctx) {
     const slotted = slot !== undefined && slot !== null;
     const stats = JSON.parse(slotted ? session.hybridViewSlot(Number.isInteger(slot) ? slot : -1, ...view)
       : session.hybridView(...view));
-    if (stats.error) throw new Error(stats.error);
+    if (stats.ok === false) throw new Error(stats.message);
     const transfer = [];
     const cards = takeBuffers(session.buffers('cards'), transfer);
     const lines = takeBuffers(session.buffers('lines'), transfer);
@@ -295,12 +296,12 @@ export function createHandler(Module, ctx) {
     if (msg.format === 'glb') {
       // A triangle budget, LOD levels (core/render/tree_lod) or the sway clip (core/sway/sway_gltf):
       // web/tree/export_panel.js; none of them: the full mesh as before.
-      const error = msg.variant === 'sway' ? session.buildSwayGlb(Number(msg.fps ?? 30))
+      const error = errorOf(msg.variant === 'sway' ? session.buildSwayGlb(Number(msg.fps ?? 30))
         : (msg.variant === 'lod' || msg.variant === 'budget')
           ? session.buildLodGlb(Number(msg.maxTriangles ?? -1), msg.variant === 'lod')
-          : session.buildGlb();
+          : session.buildGlb());
       if (error) {  // refused by the page budget's estimate before it started (or a bad value): the line itself
-        post({ type: 'error', id: msg.id, client, message: error, control: 'export' });
+        post(errorReply(error, msg.id, client, { control: 'export' }));
         return;
       }
       bytes = copyView(session.buffers('glb').bytes);
