@@ -13,9 +13,13 @@ export const TIMEOUT = 180_000;  // SwiftShader and a first WASM compile are slo
 fs.mkdirSync(ARTIFACTS, { recursive: true });
 
 const counts = { passed: 0, failed: 0 };
+// check(name, ok, detail), the order of tests/support/cli_pair.mjs too. `ok` must not be a string
+// (the arguments swapped): that is a failure, not a pass.
 export function check(name, ok, detail = '') {
-  if (ok) ++counts.passed; else ++counts.failed;
-  console.log(`${ok ? 'PASS' : 'FAIL'} ${name}${detail ? ` — ${detail}` : ''}`);
+  const pass = typeof ok !== 'string' && Boolean(ok);
+  if (pass) ++counts.passed; else ++counts.failed;
+  const why = typeof ok === 'string' ? ' — check(name, ok): ok is a string (arguments swapped?)' : '';
+  console.log(`${pass ? 'PASS' : 'FAIL'} ${name}${detail ? ` — ${detail}` : ''}${why}`);
 }
 
 // Prints the closing "N passed, N failed" line and exits 0 only when nothing failed.

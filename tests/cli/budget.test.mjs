@@ -25,14 +25,14 @@ function refused(name, args, limit, out, pattern) {
   for (const cmd of [native, wasm]) {
     const r = timed(cmd, out ? [...args, '--out', join(dir, `${buildName(cmd)}-${out}`)] : args);
     const errors = lines(r.stderr).filter((l) => l.startsWith('niwa: error:'));
-    check(r.status === 2 && errors.length === 1 && errors[0].startsWith(`niwa: error: ${limit}: `) &&
-      (!pattern || pattern.test(errors[0])),
-      `${name} (${buildName(cmd)}): exit ${r.status}, ${errors[0]}`);
-    check(!out || !existsSync(join(dir, `${buildName(cmd)}-${out}`)), `${name} (${buildName(cmd)}): no file left`);
-    check(r.seconds < 30, `${name} (${buildName(cmd)}): answered in ${r.seconds.toFixed(1)} s`);
+    check(`${name} (${buildName(cmd)}): exit ${r.status}, ${errors[0]}`,
+      r.status === 2 && errors.length === 1 && errors[0].startsWith(`niwa: error: ${limit}: `) &&
+      (!pattern || pattern.test(errors[0])));
+    check(`${name} (${buildName(cmd)}): no file left`, !out || !existsSync(join(dir, `${buildName(cmd)}-${out}`)));
+    check(`${name} (${buildName(cmd)}): answered in ${r.seconds.toFixed(1)} s`, r.seconds < 30);
     seen.push(r.stderr);
   }
-  check(seen[0] === seen[1], `${name}: native and WASM print the same lines`);
+  check(`${name}: native and WASM print the same lines`, seen[0] === seen[1]);
 }
 
 // Found item 1: maxgrow.json for 100 years. Growth stops at the memory budget; the .json is refused.
@@ -49,14 +49,14 @@ function truncated(name, args, limit) {
     const r = timed(cmd, [...args, '--stats']);
     const s = r.status === 0 ? JSON.parse(r.stdout) : {};
     const warn = lines(r.stderr);
-    check(r.status === 0 && s.truncated === true && typeof s.truncated_by === 'string' &&
-      s.truncated_by.startsWith(`${limit}: stopped in year `),
-      `${name} (${buildName(cmd)}): truncated_by "${s.truncated_by}" (${s.years} years, ${s.internodes} internodes)`);
-    check(warn.length === 1 && warn[0] === `niwa: truncated: ${s.truncated_by}`, `${name} (${buildName(cmd)}): one stderr line`);
-    check(r.seconds < 30, `${name} (${buildName(cmd)}): finished in ${r.seconds.toFixed(1)} s`);
+    check(`${name} (${buildName(cmd)}): truncated_by "${s.truncated_by}" (${s.years} years, ${s.internodes} internodes)`,
+      r.status === 0 && s.truncated === true && typeof s.truncated_by === 'string' &&
+      s.truncated_by.startsWith(`${limit}: stopped in year `));
+    check(`${name} (${buildName(cmd)}): one stderr line`, warn.length === 1 && warn[0] === `niwa: truncated: ${s.truncated_by}`);
+    check(`${name} (${buildName(cmd)}): finished in ${r.seconds.toFixed(1)} s`, r.seconds < 30);
     stats.push(JSON.stringify(withoutMs(s)));
   }
-  check(stats[0] === stats[1], `${name}: native == WASM --stats`);
+  check(`${name}: native == WASM --stats`, stats[0] === stats[1]);
 }
 truncated('maxgrow 100 years at 256 MB', ['tree', 'grow', '--years', '100', '--params', maxgrow, '--max-memory', '256M'], '--max-memory');
 truncated('sakura 100 years in 2 s', ['tree', 'grow', '--preset', 'sakura', '--years', '100', '--max-seconds', '2'], '--max-seconds');
@@ -80,8 +80,8 @@ for (const cmd of [native, wasm]) {
   const a = spawn(cmd, ['tree', 'grow', '--preset', 'maple', '--years', '12', '--stats']);
   const b = spawn(cmd, ['tree', 'grow', '--preset', 'maple', '--years', '12', '--stats', '--max-memory', '4G', '--max-seconds', '600']);
   const sa = JSON.parse(a.stdout), sb = JSON.parse(b.stdout);
-  check(a.status === 0 && b.status === 0 && sa.truncated === false && JSON.stringify(withoutMs(sa)) === JSON.stringify(withoutMs(sb)),
-    `maple 12 years (${buildName(cmd)}): within the budget, unchanged (${sa.internodes} internodes)`);
+  check(`maple 12 years (${buildName(cmd)}): within the budget, unchanged (${sa.internodes} internodes)`,
+    a.status === 0 && b.status === 0 && sa.truncated === false && JSON.stringify(withoutMs(sa)) === JSON.stringify(withoutMs(sb)));
 }
 
 // Ivy (issue 16, docs/budgets.md "Ivy"): a --subdivide beyond the memory budget is refused before
@@ -95,14 +95,14 @@ function ivyTruncated(name, args, limit) {
     const r = timed(cmd, [...args, '--stats']);
     const s = r.status === 0 ? JSON.parse(r.stdout) : {};
     const warn = lines(r.stderr);
-    check(r.status === 0 && s.truncated === true && typeof s.truncated_by === 'string' &&
-      s.truncated_by.startsWith(`${limit}: stopped at step `) && s.truncated_by.includes('lower --steps'),
-      `${name} (${buildName(cmd)}): truncated_by "${s.truncated_by}" (${s.steps_run} steps, ${s.internodes} internodes)`);
-    check(warn.length === 1 && warn[0] === `niwa: truncated: ${s.truncated_by}`, `${name} (${buildName(cmd)}): one stderr line`);
-    check(r.seconds < 60, `${name} (${buildName(cmd)}): finished in ${r.seconds.toFixed(1)} s`);
+    check(`${name} (${buildName(cmd)}): truncated_by "${s.truncated_by}" (${s.steps_run} steps, ${s.internodes} internodes)`,
+      r.status === 0 && s.truncated === true && typeof s.truncated_by === 'string' &&
+      s.truncated_by.startsWith(`${limit}: stopped at step `) && s.truncated_by.includes('lower --steps'));
+    check(`${name} (${buildName(cmd)}): one stderr line`, warn.length === 1 && warn[0] === `niwa: truncated: ${s.truncated_by}`);
+    check(`${name} (${buildName(cmd)}): finished in ${r.seconds.toFixed(1)} s`, r.seconds < 60);
     stats.push(JSON.stringify(withoutMs(s)));
   }
-  check(stats[0] === stats[1], `${name}: native == WASM --stats`);
+  check(`${name}: native == WASM --stats`, stats[0] === stats[1]);
 }
 ivyTruncated('ivy free literal 10000 steps at 128 MB', ['ivy', 'grow', '--scene', 'free', '--preset', 'literal', '--steps', '10000', '--max-memory', '128M'], '--max-memory');
 ivyTruncated('ivy wall literal 10000 steps in 1 s', ['ivy', 'grow', '--scene', 'wall', '--preset', 'literal', '--steps', '10000', '--max-seconds', '1'], '--max-seconds');
@@ -112,8 +112,8 @@ for (const cmd of [native, wasm]) {
   const a = spawn(cmd, ['ivy', 'grow', '--steps', '50', '--stats']);
   const b = spawn(cmd, ['ivy', 'grow', '--steps', '50', '--stats', '--max-memory', '4G', '--max-seconds', '600']);
   const sa = JSON.parse(a.stdout), sb = JSON.parse(b.stdout);
-  check(a.status === 0 && b.status === 0 && sa.truncated === false && JSON.stringify(withoutMs(sa)) === JSON.stringify(withoutMs(sb)),
-    `ivy cubes4 50 steps (${buildName(cmd)}): within the budget, unchanged (${sa.internodes} internodes)`);
+  check(`ivy cubes4 50 steps (${buildName(cmd)}): within the budget, unchanged (${sa.internodes} internodes)`,
+    a.status === 0 && b.status === 0 && sa.truncated === false && JSON.stringify(withoutMs(sa)) === JSON.stringify(withoutMs(sb)));
 }
 
 // Ivy on a Niwa tree (issue 16): the tree grows within the tree's budget (the limits and lines of
@@ -125,14 +125,14 @@ function ivyTreeTruncated(name, args, limit) {
     const r = timed(cmd, [...args, '--stats']);
     const s = r.status === 0 ? JSON.parse(r.stdout) : {};
     const warn = lines(r.stderr);
-    check(r.status === 0 && typeof s.tree_truncated_by === 'string' &&
-      s.tree_truncated_by.startsWith(`${limit}: stopped in year `) && s.tree_truncated_by.includes('lower --tree-years'),
-      `${name} (${buildName(cmd)}): exit ${r.status}, tree_truncated_by "${s.tree_truncated_by}" (${s.tri_count} bark triangles, ${s.internodes} ivy internodes)`);
-    check(warn.length >= 1 && warn[0] === `niwa: truncated: ${s.tree_truncated_by}`, `${name} (${buildName(cmd)}): the tree's line on stderr`);
-    check(r.seconds < 60, `${name} (${buildName(cmd)}): finished in ${r.seconds.toFixed(1)} s`);
+    check(`${name} (${buildName(cmd)}): exit ${r.status}, tree_truncated_by "${s.tree_truncated_by}" (${s.tri_count} bark triangles, ${s.internodes} ivy internodes)`,
+      r.status === 0 && typeof s.tree_truncated_by === 'string' &&
+      s.tree_truncated_by.startsWith(`${limit}: stopped in year `) && s.tree_truncated_by.includes('lower --tree-years'));
+    check(`${name} (${buildName(cmd)}): the tree's line on stderr`, warn.length >= 1 && warn[0] === `niwa: truncated: ${s.tree_truncated_by}`);
+    check(`${name} (${buildName(cmd)}): finished in ${r.seconds.toFixed(1)} s`, r.seconds < 60);
     stats.push(JSON.stringify(withoutMs(s)));
   }
-  check(stats[0] === stats[1], `${name}: native == WASM --stats`);
+  check(`${name}: native == WASM --stats`, stats[0] === stats[1]);
 }
 // (at 512 MB, not the default 2 GB: the same stop in a year and the same lines, in a fifth of the time;
 // at 2 GB the WASM runs took 24-36 s each, the longest part of this test)
@@ -148,9 +148,9 @@ for (const cmd of [native, wasm]) {
   const a = spawn(cmd, args);
   const b = spawn(cmd, [...args, '--max-memory', '4G', '--max-seconds', '600']);
   const sa = JSON.parse(a.stdout), sb = JSON.parse(b.stdout);
-  check(a.status === 0 && b.status === 0 && sa.tree_truncated_by === undefined && sa.truncated === false &&
-    JSON.stringify(withoutMs(sa)) === JSON.stringify(withoutMs(sb)),
-    `ivy on sakura 8 years (${buildName(cmd)}): within the budget, unchanged (${sa.internodes} internodes)`);
+  check(`ivy on sakura 8 years (${buildName(cmd)}): within the budget, unchanged (${sa.internodes} internodes)`,
+    a.status === 0 && b.status === 0 && sa.tree_truncated_by === undefined && sa.truncated === false &&
+    JSON.stringify(withoutMs(sa)) === JSON.stringify(withoutMs(sb)));
 }
 
 // Ivy --stats (issue 16): its brute-force re-checks against every support triangle are in the
@@ -165,13 +165,13 @@ for (const cmd of [native, wasm]) {
     const s = r.status === 0 ? JSON.parse(r.stdout) : {};
     const plain = timed(cmd, args);
     const plainStep = Number((/stopped at step (\d+) of 200/.exec(plain.stderr) || [])[1]);
-    check(r.status === 0 && s.truncated === true && s.truncated_by.startsWith('--max-seconds: stopped at step ') &&
-      plain.status === 0 && s.steps_run < plainStep && s.internode_hits === 0,
-      `ivy wall --subdivide 8 --stats at 10 s (${buildName(cmd)}): stopped at step ${s.steps_run} (${s.internodes} internodes), without --stats at step ${plainStep}`);
-    check(r.seconds < 40, `ivy wall --subdivide 8 --stats at 10 s (${buildName(cmd)}): finished in ${r.seconds.toFixed(1)} s (without --stats ${plain.seconds.toFixed(1)} s)`);
+    check(`ivy wall --subdivide 8 --stats at 10 s (${buildName(cmd)}): stopped at step ${s.steps_run} (${s.internodes} internodes), without --stats at step ${plainStep}`,
+      r.status === 0 && s.truncated === true && s.truncated_by.startsWith('--max-seconds: stopped at step ') &&
+      plain.status === 0 && s.steps_run < plainStep && s.internode_hits === 0);
+    check(`ivy wall --subdivide 8 --stats at 10 s (${buildName(cmd)}): finished in ${r.seconds.toFixed(1)} s (without --stats ${plain.seconds.toFixed(1)} s)`, r.seconds < 40);
     seen.push(JSON.stringify(withoutMs(s)));
   }
-  check(seen[0] === seen[1], 'ivy wall --subdivide 8 --stats at 10 s: native == WASM --stats');
+  check('ivy wall --subdivide 8 --stats at 10 s: native == WASM --stats', seen[0] === seen[1]);
 }
 
 // Terrain: growth stops at a contour with truncated_by; a --res whose heightfield or .glb would
@@ -182,14 +182,14 @@ function terrainTruncated(name, args, limit) {
     const r = timed(cmd, [...args, '--stats']);
     const s = r.status === 0 ? JSON.parse(r.stdout) : {};
     const warn = lines(r.stderr);
-    check(r.status === 0 && s.truncated === true && typeof s.truncated_by === 'string' &&
-      s.truncated_by.startsWith(`${limit}: stopped at level `) && s.truncated_by.includes('raise d'),
-      `${name} (${buildName(cmd)}): truncated_by "${s.truncated_by}" (${s.contours} contours)`);
-    check(warn.length === 1 && warn[0] === `niwa: truncated: ${s.truncated_by}`, `${name} (${buildName(cmd)}): one stderr line`);
-    check(r.seconds < 60, `${name} (${buildName(cmd)}): finished in ${r.seconds.toFixed(1)} s`);
+    check(`${name} (${buildName(cmd)}): truncated_by "${s.truncated_by}" (${s.contours} contours)`,
+      r.status === 0 && s.truncated === true && typeof s.truncated_by === 'string' &&
+      s.truncated_by.startsWith(`${limit}: stopped at level `) && s.truncated_by.includes('raise d'));
+    check(`${name} (${buildName(cmd)}): one stderr line`, warn.length === 1 && warn[0] === `niwa: truncated: ${s.truncated_by}`);
+    check(`${name} (${buildName(cmd)}): finished in ${r.seconds.toFixed(1)} s`, r.seconds < 60);
     stats.push(JSON.stringify(withoutMs(s)));
   }
-  check(stats[0] === stats[1], `${name}: native == WASM --stats`);
+  check(`${name}: native == WASM --stats`, stats[0] === stats[1]);
 }
 terrainTruncated('terrain jacksboro d=0.5 in 2 s', ['terrain', 'grow', '--builtin', 'jacksboro', '--set', 'd=0.5', '--max-seconds', '2'], '--max-seconds');
 refused('terrain --res 4096 .glb at 2 GB', ['terrain', 'grow', '--builtin', 'disk', '--res', '4096'], '--max-memory', 't.glb',
@@ -200,8 +200,8 @@ for (const cmd of [native, wasm]) {
   const a = spawn(cmd, ['terrain', 'grow', '--builtin', 'lobes7', '--stats']);
   const b = spawn(cmd, ['terrain', 'grow', '--builtin', 'lobes7', '--stats', '--max-memory', '4G', '--max-seconds', '600']);
   const sa = JSON.parse(a.stdout), sb = JSON.parse(b.stdout);
-  check(a.status === 0 && b.status === 0 && sa.truncated === false && JSON.stringify(withoutMs(sa)) === JSON.stringify(withoutMs(sb)),
-    `terrain lobes7 (${buildName(cmd)}): within the budget, unchanged (${sa.contours} contours)`);
+  check(`terrain lobes7 (${buildName(cmd)}): within the budget, unchanged (${sa.contours} contours)`,
+    a.status === 0 && b.status === 0 && sa.truncated === false && JSON.stringify(withoutMs(sa)) === JSON.stringify(withoutMs(sb)));
 }
 
 // The flags themselves: one line naming the flag and its range.
@@ -214,8 +214,8 @@ for (const [value, flag, want] of [
       ['terrain', 'grow', '--builtin', 'disk']]) {
       const r = spawn(cmd, [...study, flag, value]);
       const l = lines(r.stderr);
-      check(r.status === 2 && l.length === 1 && l[0].startsWith(`niwa: error: ${flag}: `) && l[0].includes(want),
-        `${study[0]} ${flag} ${value} (${buildName(cmd)}): ${l[0]}`);
+      check(`${study[0]} ${flag} ${value} (${buildName(cmd)}): ${l[0]}`,
+        r.status === 2 && l.length === 1 && l[0].startsWith(`niwa: error: ${flag}: `) && l[0].includes(want));
     }
   }
 }

@@ -10,22 +10,22 @@ requireWasm();
 
 const dir = mkdtempSync(join(tmpdir(), 'niwa-det-'));
 const presets = run(native, ['presets']).trim().split('\n').map((l) => l.split('\t')[0]);
-check(presets.length >= 4, `presets listed: ${presets.join(', ')}`);
+check(`presets listed: ${presets.join(', ')}`, presets.length >= 4);
 for (const preset of presets) {
   for (const seed of [1, 7]) {
     const args = ['tree', 'grow', '--preset', preset, '--years', String(years), '--seed', String(seed)];
     const file = (build, ext) => join(dir, `${preset}-${seed}-${build}.${ext}`);
     const a = JSON.parse(run(native, [...args, '--stats', '--out', file('n', 'json')]));
     const b = JSON.parse(run(wasm, [...args, '--stats', '--out', file('w', 'json')]));
-    check(JSON.stringify(withoutMs(a)) === JSON.stringify(withoutMs(b)),
-      `${preset} seed ${seed}: --stats native == WASM (${a.internodes} internodes, ${a.leaves} leaves)`);
+    check(`${preset} seed ${seed}: --stats native == WASM (${a.internodes} internodes, ${a.leaves} leaves)`,
+      JSON.stringify(withoutMs(a)) === JSON.stringify(withoutMs(b)));
     for (const ext of ['glb', 'svg']) {
       run(native, [...args, '--out', file('n', ext)]);
       run(wasm, [...args, '--out', file('w', ext)]);
     }
     for (const ext of ['json', 'glb', 'svg']) {
       const x = readFileSync(file('n', ext)), y = readFileSync(file('w', ext));
-      check(x.length > 100 && x.equals(y), `${preset} seed ${seed}: .${ext} identical (${x.length} bytes native, ${y.length} WASM)`);
+      check(`${preset} seed ${seed}: .${ext} identical (${x.length} bytes native, ${y.length} WASM)`, x.length > 100 && x.equals(y));
     }
   }
 }
@@ -36,6 +36,6 @@ for (const preset of ['keyaki', 'tsutsuji']) {
   run(native, [...args, '--csv', join(dir, `${preset}-n.csv`)]);
   run(wasm, [...args, '--csv', join(dir, `${preset}-w.csv`)]);
   const a = readFileSync(join(dir, `${preset}-n.csv`), 'utf8'), b = readFileSync(join(dir, `${preset}-w.csv`), 'utf8');
-  check(a.length > 100 && a === b, `${preset} sway: native and WASM tip trajectories identical (${a.split('\n').length} lines)`);
+  check(`${preset} sway: native and WASM tip trajectories identical (${a.split('\n').length} lines)`, a.length > 100 && a === b);
 }
 finish();

@@ -151,13 +151,13 @@ async function worker(job) {
     if (left.some((f) => f.includes('.partial'))) problems.push('left a temporary');
     if (problems.length) {
       ++bad;
-      check(false, `case ${n} ${show(args)}: ${problems.join('; ')} :: ${(r.stderr || '').slice(0, 300)}`);
+      check(`case ${n} ${show(args)}: ${problems.join('; ')} :: ${(r.stderr || '').slice(0, 300)}`, false);
     }
   }
 }
 await Promise.all(Array.from({ length: JOBS }, (_, job) => worker(job)));
-check(bad === 0, `${COUNT} fuzz cases (seed ${SEED}, ${JOBS} at a time) in ${((Date.now() - started) / 1000).toFixed(1)} s (${exits[0]} exit 0, ${exits[2]} exit 2): exit 0 or 2, one stderr line, nothing left on failure`);
+check(`${COUNT} fuzz cases (seed ${SEED}, ${JOBS} at a time) in ${((Date.now() - started) / 1000).toFixed(1)} s (${exits[0]} exit 0, ${exits[2]} exit 2): exit 0 or 2, one stderr line, nothing left on failure`, bad === 0);
 // The sample must reach both sides: runs that succeed (and write) and runs that are refused.
-check(exits[0] >= COUNT / 10 && exits[2] >= COUNT / 10, `both outcomes reached: ${exits[0]} succeeded, ${exits[2]} refused`);
+check(`both outcomes reached: ${exits[0]} succeeded, ${exits[2]} refused`, exits[0] >= COUNT / 10 && exits[2] >= COUNT / 10);
 rmSync(work, { recursive: true, force: true });
 finish();

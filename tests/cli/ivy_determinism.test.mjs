@@ -12,24 +12,24 @@ requireWasm();
 
 const dir = mkdtempSync(join(tmpdir(), 'niwa-ivy-'));
 const scenes = run(native, ['ivy', 'scenes']).trim().split('\n').map((l) => l.split('\t')[0]);
-check(scenes.includes('cubes4') && scenes.length >= 7, `scenes listed: ${scenes.join(', ')}`);
+check(`scenes listed: ${scenes.join(', ')}`, scenes.includes('cubes4') && scenes.length >= 7);
 for (const scene of scenes) {
   for (let seed = 1; seed <= 5; seed++) {
     const args = ['ivy', 'grow', '--scene', scene, '--steps', '50', '--seed', String(seed), '--stats'];
     const a = JSON.parse(run(native, [...args, '--out', join(dir, `${scene}-${seed}-n.json`)]));
     const b = JSON.parse(run(wasm, [...args, '--out', join(dir, `${scene}-${seed}-w.json`)]));
     const same = JSON.stringify(withoutMs(a)) === JSON.stringify(withoutMs(b));
-    check(same, `${scene} seed ${seed}: --stats native == WASM (${a.internodes} internodes, ${a.laterals} laterals)`);
+    check(`${scene} seed ${seed}: --stats native == WASM (${a.internodes} internodes, ${a.laterals} laterals)`, same);
     const ja = readFileSync(join(dir, `${scene}-${seed}-n.json`), 'utf8');
     const jb = readFileSync(join(dir, `${scene}-${seed}-w.json`), 'utf8');
-    check(ja.length > 100 && ja === jb, `${scene} seed ${seed}: .json identical (${ja.length} bytes)`);
+    check(`${scene} seed ${seed}: .json identical (${ja.length} bytes)`, ja.length > 100 && ja === jb);
   }
 }
 // cubes4 side with two seed points, and the improved preset, also agree.
 for (const extra of [['--seed-point', 'side', '--seed-point', 'column'], ['--preset', 'improved']]) {
   const args = ['ivy', 'grow', '--scene', 'cubes4', ...extra, '--stats'];
   const a = JSON.parse(run(native, args)), b = JSON.parse(run(wasm, args));
-  check(JSON.stringify(withoutMs(a)) === JSON.stringify(withoutMs(b)), `cubes4 ${extra.join(' ')}: native == WASM`);
+  check(`cubes4 ${extra.join(' ')}: native == WASM`, JSON.stringify(withoutMs(a)) === JSON.stringify(withoutMs(b)));
 }
 
 // .glb: validator-clean, with _BIRTH_STEP.
@@ -40,13 +40,13 @@ const glbPath = join(dir, 'ivy.glb');
 run(native, ['ivy', 'grow', '--scene', 'cubes4', '--out', glbPath]);
 const glb = new Uint8Array(readFileSync(glbPath));
 const report = await validator.validateBytes(glb);
-check(report.issues.numErrors === 0, `ivy.glb: ${report.issues.numErrors} validator errors, ${report.issues.numWarnings} warnings`);
+check(`ivy.glb: ${report.issues.numErrors} validator errors, ${report.issues.numWarnings} warnings`, report.issues.numErrors === 0);
 const jsonLength = new DataView(glb.buffer, glb.byteOffset).getUint32(12, true);
 const gltf = JSON.parse(new TextDecoder().decode(glb.subarray(20, 20 + jsonLength)));
 const names = gltf.nodes.map((n) => n.name);
-check(['ivy_stems', 'ivy_leaves', 'ivy_suckers'].every((n) => names.includes(n)), `ivy.glb nodes: ${names.join(', ')}`);
+check(`ivy.glb nodes: ${names.join(', ')}`, ['ivy_stems', 'ivy_leaves', 'ivy_suckers'].every((n) => names.includes(n)));
 const ivyMeshes = gltf.meshes.filter((m) => m.name.startsWith('ivy_'));
-check(ivyMeshes.length === 3 && ivyMeshes.every((m) => '_BIRTH_STEP' in m.primitives[0].attributes), 'every ivy_* primitive of ivy.glb has _BIRTH_STEP');
+check('every ivy_* primitive of ivy.glb has _BIRTH_STEP', ivyMeshes.length === 3 && ivyMeshes.every((m) => '_BIRTH_STEP' in m.primitives[0].attributes));
 
 // Hostile input: one line, exit 2, no file.
 const hostile = [
@@ -60,8 +60,8 @@ for (const [args, field] of hostile) {
     const out = join(dir, 'bad.json');
     const r = spawn(cmd, ['ivy', 'grow', ...args, '--out', out]);
     const lines = r.stderr.trim().split('\n');
-    check(r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${field}`) && !existsSync(out),
-      `${buildName(cmd)} ${args.join(' ')}: exit ${r.status}, "${lines[0]}"`);
+    check(`${buildName(cmd)} ${args.join(' ')}: exit ${r.status}, "${lines[0]}"`,
+      r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${field}`) && !existsSync(out));
   }
 }
 finish();

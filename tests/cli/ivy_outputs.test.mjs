@@ -16,30 +16,30 @@ const dir = mkdtempSync(join(tmpdir(), 'niwa-ivy-out-'));
 const tree = ['ivy', 'grow', '--tree-preset', 'sakura', '--tree-years', '6', '--stats'];
 const ta = JSON.parse(run(native, [...tree, '--out', join(dir, 'tree-n.json')]));
 const tb = JSON.parse(run(wasm, [...tree, '--out', join(dir, 'tree-w.json')]));
-check(JSON.stringify(withoutMs(ta)) === JSON.stringify(withoutMs(tb)) && ta.internodes > 10,
-  `--tree-preset sakura --tree-years 6: --stats native == WASM (${ta.tri_count} bark triangles, ${ta.internodes} internodes, rise ${ta.rise.toFixed(3)} m)`);
-check(readFileSync(join(dir, 'tree-n.json'), 'utf8') === readFileSync(join(dir, 'tree-w.json'), 'utf8'), '--tree-preset .json identical');
+check(`--tree-preset sakura --tree-years 6: --stats native == WASM (${ta.tri_count} bark triangles, ${ta.internodes} internodes, rise ${ta.rise.toFixed(3)} m)`,
+  JSON.stringify(withoutMs(ta)) === JSON.stringify(withoutMs(tb)) && ta.internodes > 10);
+check('--tree-preset .json identical', readFileSync(join(dir, 'tree-n.json'), 'utf8') === readFileSync(join(dir, 'tree-w.json'), 'utf8'));
 
 // The page's tree scene (--url scene=tree&tree=..&tree_years=..): native == WASM, and the same ivy
 // as --tree-preset (the page's link regrows it on either build).
 const byUrl = ['ivy', 'grow', '--url', 'preset=metric&seed=1&steps=50&scene=tree&tree=sakura&tree_years=6', '--stats'];
 const ua = JSON.parse(run(native, byUrl)), ub = JSON.parse(run(wasm, byUrl));
-check(JSON.stringify(withoutMs(ua)) === JSON.stringify(withoutMs(ub)) && JSON.stringify(withoutMs(ua)) === JSON.stringify(withoutMs(ta)),
-  `--url ..scene=tree&tree=sakura&tree_years=6: native == WASM == --tree-preset (${ua.internodes} internodes)`);
+check(`--url ..scene=tree&tree=sakura&tree_years=6: native == WASM == --tree-preset (${ua.internodes} internodes)`,
+  JSON.stringify(withoutMs(ua)) === JSON.stringify(withoutMs(ub)) && JSON.stringify(withoutMs(ua)) === JSON.stringify(withoutMs(ta)));
 
 // .svg byte for byte, for a small and a large (silhouette) support.
 for (const args of [['--scene', 'overhang', '--seed', '2'], ['--tree-preset', 'pine', '--tree-years', '5', '--svg-leaves', '0']]) {
   run(native, ['ivy', 'grow', ...args, '--out', join(dir, 'n.svg')]);
   run(wasm, ['ivy', 'grow', ...args, '--out', join(dir, 'w.svg')]);
   const a = readFileSync(join(dir, 'n.svg'), 'utf8'), b = readFileSync(join(dir, 'w.svg'), 'utf8');
-  check(a.startsWith('<svg ') && a === b, `${args.join(' ')}: .svg native == WASM (${a.length} bytes, ${(a.match(/<line /g) || []).length} lines)`);
+  check(`${args.join(' ')}: .svg native == WASM (${a.length} bytes, ${(a.match(/<line /g) || []).length} lines)`, a.startsWith('<svg ') && a === b);
 }
 
 // The page's hash (scene=, at=) grows what the flags grow, in both builds.
 for (const cmd of [native, wasm]) {
   const flags = withoutMs(JSON.parse(run(cmd, ['ivy', 'grow', '--scene', 'pillar', '--seed-point', '0,10,210', '--seed-point', '150,10,150', '--steps', '40', '--stats'])));
   const url = withoutMs(JSON.parse(run(cmd, ['ivy', 'grow', '--url', 'steps=40&scene=pillar&at=0,10,210;150,10,150', '--stats'])));
-  check(JSON.stringify(flags) === JSON.stringify(url), `${buildName(cmd)}: --url scene=pillar&at=.. == --scene pillar --seed-point ..`);
+  check(`${buildName(cmd)}: --url scene=pillar&at=.. == --scene pillar --seed-point ..`, JSON.stringify(flags) === JSON.stringify(url));
 }
 
 // --with-support: validator-clean, with the support node; without it, no support node.
@@ -56,8 +56,8 @@ for (const withSupport of [true, false]) {
   const glb = new Uint8Array(readFileSync(file));
   const report = await validator.validateBytes(glb);
   const names = nodesOf(glb);
-  check(report.issues.numErrors === 0 && names.includes('support') === withSupport,
-    `stairs .glb ${withSupport ? 'with' : 'without'} --with-support: ${report.issues.numErrors} validator errors, nodes ${names.join(', ')}`);
+  check(`stairs .glb ${withSupport ? 'with' : 'without'} --with-support: ${report.issues.numErrors} validator errors, nodes ${names.join(', ')}`,
+    report.issues.numErrors === 0 && names.includes('support') === withSupport);
 }
 
 // Hostile values of the new flags and hash keys.
@@ -71,8 +71,8 @@ for (const [args, field] of hostile) {
     const out = join(dir, 'bad.svg');
     const r = spawn(cmd, ['ivy', 'grow', ...args, ...(args.includes('--out') ? [] : ['--out', out])]);
     const lines = r.stderr.trim().split('\n');
-    check(r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${field}`) && !existsSync(out) && !existsSync(join(dir, 'x.png')),
-      `${buildName(cmd)} ${args.join(' ')}: exit ${r.status}, "${lines[0]}"`);
+    check(`${buildName(cmd)} ${args.join(' ')}: exit ${r.status}, "${lines[0]}"`,
+      r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${field}`) && !existsSync(out) && !existsSync(join(dir, 'x.png')));
   }
 }
 finish();

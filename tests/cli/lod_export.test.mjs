@@ -40,7 +40,7 @@ try {
   run(native, [...tree, '--out', full]);
   const fullGlb = parseGlb(readFileSync(full));
   const fullTriangles = fullGlb.triangles(fullGlb.gltf.meshes[0]);
-  check(fullTriangles > 100000, `full 15-year sakura has ${fullTriangles} triangles (> 100 k: the budget has work)`);
+  check(`full 15-year sakura has ${fullTriangles} triangles (> 100 k: the budget has work)`, fullTriangles > 100000);
 
   for (const budget of [20000, 5000, 500]) {
     const out = join(dir, `budget-${budget}.glb`);
@@ -48,14 +48,14 @@ try {
     const bytes = readFileSync(out);
     const { gltf, triangles, lines } = parseGlb(bytes);
     const count = triangles(gltf.meshes[0]);
-    check(gltf.nodes.length === 1 && gltf.nodes[0].name === 'tree', `--max-triangles ${budget}: one node 'tree'`);
-    check(count <= budget && count >= budget / 2, `--max-triangles ${budget}: ${count} triangles (within, and at least half used)`);
-    check(lines(gltf.meshes[0]) === 1, `--max-triangles ${budget}: thin twigs as one LINES primitive`);
+    check(`--max-triangles ${budget}: one node 'tree'`, gltf.nodes.length === 1 && gltf.nodes[0].name === 'tree');
+    check(`--max-triangles ${budget}: ${count} triangles (within, and at least half used)`, count <= budget && count >= budget / 2);
+    check(`--max-triangles ${budget}: thin twigs as one LINES primitive`, lines(gltf.meshes[0]) === 1);
     const cards = gltf.materials.filter((m) => m.name.startsWith('cards'));
-    check(cards.length === 1 && cards[0].alphaMode === 'MASK' && cards[0].doubleSided === true,
-      `--max-triangles ${budget}: card material with the atlas, alpha mask, double-sided`);
+    check(`--max-triangles ${budget}: card material with the atlas, alpha mask, double-sided`,
+      cards.length === 1 && cards[0].alphaMode === 'MASK' && cards[0].doubleSided === true);
     const report = await validator.validateBytes(new Uint8Array(bytes), { maxIssues: 50 });
-    check(report.issues.numErrors === 0, `--max-triangles ${budget}: validator 0 errors`,
+    check(`--max-triangles ${budget}: validator 0 errors`, report.issues.numErrors === 0,
       report.issues.messages.filter((m) => m.severity === 0).map((m) => m.message).slice(0, 3).join('; '));
   }
 
@@ -64,14 +64,14 @@ try {
   const lodBytes = readFileSync(lodOut);
   const lod = parseGlb(lodBytes);
   const names = lod.gltf.scenes[0].nodes.map((n) => lod.gltf.nodes[n].name);
-  check(JSON.stringify(names) === JSON.stringify(['tree_LOD0', 'tree_LOD1', 'tree_LOD2']),
-    `--lod: scene nodes ${names.join(', ')}`);
+  check(`--lod: scene nodes ${names.join(', ')}`,
+    JSON.stringify(names) === JSON.stringify(['tree_LOD0', 'tree_LOD1', 'tree_LOD2']));
   const counts = lod.gltf.scenes[0].nodes.map((n) => lod.triangles(lod.gltf.meshes[lod.gltf.nodes[n].mesh]));
-  check(counts[0] <= 20000, `--lod LOD0 ${counts[0]} triangles <= 20000`);
-  check(counts[1] * 100 <= counts[0] * 25, `--lod LOD1 ${counts[1]} <= 25 % of ${counts[0]}`);
-  check(counts[2] * 100 <= counts[0] * 5 && counts[2] > 0, `--lod LOD2 ${counts[2]} <= 5 % of ${counts[0]}`);
+  check(`--lod LOD0 ${counts[0]} triangles <= 20000`, counts[0] <= 20000);
+  check(`--lod LOD1 ${counts[1]} <= 25 % of ${counts[0]}`, counts[1] * 100 <= counts[0] * 25);
+  check(`--lod LOD2 ${counts[2]} <= 5 % of ${counts[0]}`, counts[2] * 100 <= counts[0] * 5 && counts[2] > 0);
   const lodReport = await validator.validateBytes(new Uint8Array(lodBytes), { maxIssues: 50 });
-  check(lodReport.issues.numErrors === 0, '--lod: validator 0 errors',
+  check('--lod: validator 0 errors', lodReport.issues.numErrors === 0,
     lodReport.issues.messages.filter((m) => m.severity === 0).map((m) => m.message).slice(0, 3).join('; '));
 
   // --lod-layout msft: LOD0 alone in the scene, MSFT_lod naming the other two (the same meshes).
@@ -82,28 +82,28 @@ try {
   const root0 = msft.gltf.nodes[msft.gltf.scenes[0].nodes[0]];
   const ids = root0.extensions?.MSFT_lod?.ids ?? [];
   const msftCounts = [root0, ...ids.map((i) => msft.gltf.nodes[i])].map((n) => msft.triangles(msft.gltf.meshes[n.mesh]));
-  check(msft.gltf.scenes[0].nodes.length === 1 && root0.name === 'tree_LOD0' && JSON.stringify(ids) === '[1,2]' &&
-    msft.gltf.extensionsUsed?.includes('MSFT_lod') && !msft.gltf.extensionsRequired,
-    `--lod-layout msft: scene holds tree_LOD0 only, MSFT_lod ids ${JSON.stringify(ids)}, used not required`);
-  check(JSON.stringify(msftCounts) === JSON.stringify(counts),
-    `--lod-layout msft: the same levels as the siblings layout (${msftCounts.join(', ')} triangles)`);
+  check(`--lod-layout msft: scene holds tree_LOD0 only, MSFT_lod ids ${JSON.stringify(ids)}, used not required`,
+    msft.gltf.scenes[0].nodes.length === 1 && root0.name === 'tree_LOD0' && JSON.stringify(ids) === '[1,2]' &&
+    msft.gltf.extensionsUsed?.includes('MSFT_lod') && !msft.gltf.extensionsRequired);
+  check(`--lod-layout msft: the same levels as the siblings layout (${msftCounts.join(', ')} triangles)`,
+    JSON.stringify(msftCounts) === JSON.stringify(counts));
   const cover = root0.extras?.MSFT_screencoverage ?? [];
-  check(cover.length === 3 && cover[0] > cover[1] && cover[1] > cover[2] && cover[2] > 0 &&
-    Math.abs(cover[0] - counts[1] / counts[0]) < 1e-4,
-    `--lod-layout msft: MSFT_screencoverage ${JSON.stringify(cover)} (level n from its triangle share)`);
+  check(`--lod-layout msft: MSFT_screencoverage ${JSON.stringify(cover)} (level n from its triangle share)`,
+    cover.length === 3 && cover[0] > cover[1] && cover[1] > cover[2] && cover[2] > 0 &&
+    Math.abs(cover[0] - counts[1] / counts[0]) < 1e-4);
   const msftReport = await validator.validateBytes(new Uint8Array(msftBytes), { maxIssues: 50 });
   // Beyond the siblings layout's warnings: only infos that the validator does not know MSFT_lod
   // and that the lower levels are not in the scene (which is MSFT_lod's point).
   const infos = msftReport.issues.messages.filter((m) => m.severity === 2).map((m) => `${m.code} ${m.pointer}`).sort();
-  check(msftReport.issues.numErrors === 0 && msftReport.issues.numWarnings === lodReport.issues.numWarnings &&
-    JSON.stringify(infos) === JSON.stringify(['UNSUPPORTED_EXTENSION /extensionsUsed/0', 'UNUSED_OBJECT /nodes/1', 'UNUSED_OBJECT /nodes/2']),
-    `--lod-layout msft: validator 0 errors, ${msftReport.issues.numWarnings} warnings as the siblings layout, infos ${infos.join(', ')}`);
+  check(`--lod-layout msft: validator 0 errors, ${msftReport.issues.numWarnings} warnings as the siblings layout, infos ${infos.join(', ')}`,
+    msftReport.issues.numErrors === 0 && msftReport.issues.numWarnings === lodReport.issues.numWarnings &&
+    JSON.stringify(infos) === JSON.stringify(['UNSUPPORTED_EXTENSION /extensionsUsed/0', 'UNUSED_OBJECT /nodes/1', 'UNUSED_OBJECT /nodes/2']));
 
   const lodFull = join(dir, 'lod-full.glb');
   run(native, [...tree, '--lod', '--out', lodFull]);
   const lf = parseGlb(readFileSync(lodFull));
   const lf0 = lf.triangles(lf.gltf.meshes[lf.gltf.nodes[lf.gltf.scenes[0].nodes[0]].mesh]);
-  check(lf0 === fullTriangles, `--lod alone: LOD0 is the full mesh (${lf0} triangles)`);
+  check(`--lod alone: LOD0 is the full mesh (${lf0} triangles)`, lf0 === fullTriangles);
 
   // Bad input: one line naming the flag, exit 2, nothing written.
   const bad = [
@@ -117,17 +117,17 @@ try {
   for (const [args, wanted] of bad) {
     const r = spawn(native, [...tree, ...args]);
     const out = args[args.indexOf('--out') + 1];
-    check(r.status === 2 && r.stderr.trim().split('\n').length === 1 && r.stderr.includes(wanted) && !existsSync(out),
-      `${args.slice(0, 2).join(' ')}: exit ${r.status}, '${r.stderr.trim()}'`);
+    check(`${args.slice(0, 2).join(' ')}: exit ${r.status}, '${r.stderr.trim()}'`,
+      r.status === 2 && r.stderr.trim().split('\n').length === 1 && r.stderr.includes(wanted) && !existsSync(out));
   }
 
   if (existsSync(wasm)) {
     const wasmOut = join(dir, 'wasm-lod.glb');
     run(wasm, [...tree, '--max-triangles', '20000', '--lod', '--out', wasmOut]);
-    check(Buffer.compare(readFileSync(wasmOut), lodBytes) === 0, 'WASM CLI: --lod .glb byte-identical to native');
+    check('WASM CLI: --lod .glb byte-identical to native', Buffer.compare(readFileSync(wasmOut), lodBytes) === 0);
     const wasmMsft = join(dir, 'wasm-lod-msft.glb');
     run(wasm, [...tree, '--max-triangles', '20000', '--lod', '--lod-layout', 'msft', '--out', wasmMsft]);
-    check(Buffer.compare(readFileSync(wasmMsft), msftBytes) === 0, 'WASM CLI: --lod-layout msft .glb byte-identical to native');
+    check('WASM CLI: --lod-layout msft .glb byte-identical to native', Buffer.compare(readFileSync(wasmMsft), msftBytes) === 0);
   } else {
     console.log(`SKIP WASM CLI not built at ${wasm}`);
   }

@@ -73,19 +73,19 @@ try {
     run(native, ['tree', 'grow', '--preset', preset, '--years', '15', ...extra, '--lod', '--out', out]);
     const gltf = await load(readFileSync(out));
     const groups = groupByLodSuffix(gltf.scene);
-    check(groups.size === 1 && groups.has('tree'), `${preset}: one LOD group 'tree' from the names (${[...groups.keys()].join(', ')})`);
+    check(`${preset}: one LOD group 'tree' from the names (${[...groups.keys()].join(', ')})`, groups.size === 1 && groups.has('tree'));
     const levels = groups.get('tree') ?? [];
-    check(levels.length === 3 && levels.every(Boolean), `${preset}: levels tree_LOD0, tree_LOD1, tree_LOD2 found`);
+    check(`${preset}: levels tree_LOD0, tree_LOD1, tree_LOD2 found`, levels.length === 3 && levels.every(Boolean));
     if (levels.length !== 3 || !levels.every(Boolean)) continue;
 
     const counts = levels.map(triangles);
-    check(counts[0] > 0, `${preset}: LOD0 ${counts[0]} triangles`);
-    check(counts[1] * 100 <= counts[0] * 25, `${preset}: LOD1 ${counts[1]} <= 25 % of LOD0 (${(100 * counts[1] / counts[0]).toFixed(2)} %)`);
-    check(counts[2] > 0 && counts[2] * 100 <= counts[0] * 5, `${preset}: LOD2 ${counts[2]} <= 5 % of LOD0 (${(100 * counts[2] / counts[0]).toFixed(2)} %)`);
+    check(`${preset}: LOD0 ${counts[0]} triangles`, counts[0] > 0);
+    check(`${preset}: LOD1 ${counts[1]} <= 25 % of LOD0 (${(100 * counts[1] / counts[0]).toFixed(2)} %)`, counts[1] * 100 <= counts[0] * 25);
+    check(`${preset}: LOD2 ${counts[2]} <= 5 % of LOD0 (${(100 * counts[2] / counts[0]).toFixed(2)} %)`, counts[2] > 0 && counts[2] * 100 <= counts[0] * 5);
     for (let n = 1; n < 3; ++n) {
       const names = materialNames(levels[n]);
       // Its own card atlas (cards_<n>); bark tubes only where some wood is still thick enough.
-      check(names.includes(`cards_${n}`), `${preset}: LOD${n} has its card-atlas material cards_${n} (${names.join(', ')})`);
+      check(`${preset}: LOD${n} has its card-atlas material cards_${n} (${names.join(', ')})`, names.includes(`cards_${n}`));
     }
 
     // THREE.LOD from the group: the whole tree's size sets the switching distances.
@@ -93,7 +93,7 @@ try {
     const size = box.getSize(new THREE.Vector3()).length();
     const lod = new THREE.LOD();
     levels.forEach((object, n) => lod.addLevel(object, n === 0 ? 0 : size * 4 * n));
-    check(lod.levels.length === 3 && lod.levels.every((l, n) => l.object === levels[n]), `${preset}: THREE.LOD with 3 levels`);
+    check(`${preset}: THREE.LOD with 3 levels`, lod.levels.length === 3 && lod.levels.every((l, n) => l.object === levels[n]));
     const camera = new THREE.PerspectiveCamera(45, 1, 0.1, 10000);
     const shown = [];
     for (const distance of [size, size * 6, size * 12]) {
@@ -104,8 +104,8 @@ try {
       shown.push(levels.map((o) => o.visible));
     }
     const expected = [[true, false, false], [false, true, false], [false, false, true]];
-    check(JSON.stringify(shown) === JSON.stringify(expected),
-      `${preset}: near, middle, far camera show LOD0, LOD1, LOD2 only (${JSON.stringify(shown)})`);
+    check(`${preset}: near, middle, far camera show LOD0, LOD1, LOD2 only (${JSON.stringify(shown)})`,
+      JSON.stringify(shown) === JSON.stringify(expected));
   }
   // --lod-layout msft, read by a client without MSFT_lod (three.js' own GLTFLoader): LOD0 alone.
   const siblings = join(dir, 'siblings.glb'), msft = join(dir, 'msft.glb');
@@ -116,8 +116,8 @@ try {
   const lod0 = all.scene.children.find((c) => c.name === 'tree_LOD0');
   const only = await load(readFileSync(msft));
   const names = only.scene.children.map((c) => c.name);
-  check(JSON.stringify(names) === '["tree_LOD0"]' && triangles(only.scene) === triangles(lod0),
-    `msft layout in three.js (no MSFT_lod plugin): the scene shows LOD0 only (${names.join(', ')}; ${triangles(only.scene)} triangles)`);
+  check(`msft layout in three.js (no MSFT_lod plugin): the scene shows LOD0 only (${names.join(', ')}; ${triangles(only.scene)} triangles)`,
+    JSON.stringify(names) === '["tree_LOD0"]' && triangles(only.scene) === triangles(lod0));
 } finally {
   rmSync(dir, { recursive: true, force: true });
 }

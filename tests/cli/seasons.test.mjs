@@ -67,39 +67,39 @@ try {
     const bytes = grow(native, c.preset, c.years, c.sets, c.name);
     const gltf = gltfJson(bytes);
     const materials = (gltf.materials ?? []).map((m) => m.name);
-    check(JSON.stringify(materials) === JSON.stringify(c.parts), `${c.name}: materials ${materials.join(', ')} (want ${c.parts.join(', ')})`);
+    check(`${c.name}: materials ${materials.join(', ')} (want ${c.parts.join(', ')})`, JSON.stringify(materials) === JSON.stringify(c.parts));
     const primitives = gltf.meshes[0].primitives.length;
-    check(primitives === c.parts.length, `${c.name}: ${primitives} primitives`);
+    check(`${c.name}: ${primitives} primitives`, primitives === c.parts.length);
     // One base-colour texture per material, plus the bark's normal map.
-    check(gltf.textures.length === c.parts.length + 1 && gltf.images.length === c.parts.length + 1,
-      `${c.name}: ${gltf.textures.length} textures for ${c.parts.length} materials + the normal map`);
+    check(`${c.name}: ${gltf.textures.length} textures for ${c.parts.length} materials + the normal map`,
+      gltf.textures.length === c.parts.length + 1 && gltf.images.length === c.parts.length + 1);
     const bark = gltf.materials[0];
-    check(Number.isInteger(bark.normalTexture?.index) && gltf.textures[bark.normalTexture.index].name === 'bark_normal',
-      `${c.name}: bark has its normal map`);
-    check(bark.extras?.season === seasonOf(c.sets), `${c.name}: bark extras carry season ${bark.extras?.season}`);
+    check(`${c.name}: bark has its normal map`,
+      Number.isInteger(bark.normalTexture?.index) && gltf.textures[bark.normalTexture.index].name === 'bark_normal');
+    check(`${c.name}: bark extras carry season ${bark.extras?.season}`, bark.extras?.season === seasonOf(c.sets));
     if (c.leaf) {
       const leaves = gltf.materials.find((m) => m.name === 'leaves');
       const texture = gltf.textures[leaves.pbrMetallicRoughness.baseColorTexture.index];
-      check(texture.name === c.leaf, `${c.name}: leaf texture ${texture.name}`);
+      check(`${c.name}: leaf texture ${texture.name}`, texture.name === c.leaf);
     }
     const report = await validator.validateBytes(new Uint8Array(bytes), { maxIssues: 20 });
     const images = (report.info?.resources ?? []).filter((r) => r.pointer?.startsWith('/images/'));
-    check(report.issues.numErrors === 0, `${c.name}: gltf-validator ${report.issues.numErrors} errors, ${report.issues.numWarnings} warnings`);
-    check(images.length === gltf.images.length && images.every((r) => r.image?.width >= 512 && r.image?.height >= 512),
-      `${c.name}: every embedded texture is at least 512 px (${images.map((r) => `${r.image?.width}x${r.image?.height}`).join(', ')})`);
+    check(`${c.name}: gltf-validator ${report.issues.numErrors} errors, ${report.issues.numWarnings} warnings`, report.issues.numErrors === 0);
+    check(`${c.name}: every embedded texture is at least 512 px (${images.map((r) => `${r.image?.width}x${r.image?.height}`).join(', ')})`,
+      images.length === gltf.images.length && images.every((r) => r.image?.width >= 512 && r.image?.height >= 512));
     const scene = await load(bytes);
     const found = {};
     scene.scene.traverse((o) => { if (o.isMesh) found[o.material.name] = o.material; });
-    check(JSON.stringify(Object.keys(found).sort()) === JSON.stringify([...c.parts].sort()), `${c.name}: three.js meshes ${Object.keys(found).join(', ')}`);
-    check(Boolean(found.bark?.map && found.bark?.normalMap), `${c.name}: three.js bark has map and normalMap`);
-    if (found.leaves) check(found.leaves.alphaTest === 0.5 && Boolean(found.leaves.map), `${c.name}: three.js leaves alpha-tested with a map`);
+    check(`${c.name}: three.js meshes ${Object.keys(found).join(', ')}`, JSON.stringify(Object.keys(found).sort()) === JSON.stringify([...c.parts].sort()));
+    check(`${c.name}: three.js bark has map and normalMap`, Boolean(found.bark?.map && found.bark?.normalMap));
+    if (found.leaves) check(`${c.name}: three.js leaves alpha-tested with a map`, found.leaves.alphaTest === 0.5 && Boolean(found.leaves.map));
   }
 
   // The same bytes from the WASM CLI (textures painted in WASM).
   for (const c of [cases[0], cases[4], cases[5], cases[8]]) {  // cases[8]: the azalea's flower texture
     const a = grow(native, c.preset, c.years, c.sets, c.name);
     const b = grow(wasm, c.preset, c.years, c.sets, `${c.name}-w`);
-    check(a.equals(b), `${c.name}: native and WASM .glb identical (${a.length} bytes)`);
+    check(`${c.name}: native and WASM .glb identical (${a.length} bytes)`, a.equals(b));
   }
 
   // Each flowering species' own flowers (flower_colour, flower_form, terminal_flowers rows):
@@ -114,15 +114,15 @@ try {
     const bytes = readFileSync(out);
     const gltf = gltfJson(bytes);
     const names = gltf.materials.map((m) => m.name);
-    check(JSON.stringify(names) === JSON.stringify(parts), `${preset} --season spring: materials ${names.join(', ')}`);
+    check(`${preset} --season spring: materials ${names.join(', ')}`, JSON.stringify(names) === JSON.stringify(parts));
     const flowers = gltf.materials.find((m) => m.name === 'flowers');
-    check(flowers?.extras?.flower_colour === colour && flowers?.extras?.flower_form === form,
-      `${preset} --season spring: flowers ${flowers?.extras?.flower_colour} ${flowers?.extras?.flower_form}`);
+    check(`${preset} --season spring: flowers ${flowers?.extras?.flower_colour} ${flowers?.extras?.flower_form}`,
+      flowers?.extras?.flower_colour === colour && flowers?.extras?.flower_form === form);
     const primitive = gltf.meshes[0].primitives[names.indexOf('flowers')];
     const cards = primitive ? gltf.accessors[primitive.indices].count / 60 : 0;  // 20 triangles a card
-    check(cards >= (preset === 'tsutsuji' ? 300 : 100), `${preset} --season spring: ${cards} flower cards`);
+    check(`${preset} --season spring: ${cards} flower cards`, cards >= (preset === 'tsutsuji' ? 300 : 100));
     const report = await validator.validateBytes(new Uint8Array(bytes), { maxIssues: 20 });
-    check(report.issues.numErrors === 0, `${preset} --season spring: gltf-validator ${report.issues.numErrors} errors`);
+    check(`${preset} --season spring: gltf-validator ${report.issues.numErrors} errors`, report.issues.numErrors === 0);
   }
 
   // The season is part of the share link: --url with season=3 gives the bare winter tree.
@@ -130,8 +130,8 @@ try {
     const out = join(dir, 'url.glb');
     run(native, ['tree', 'grow', '--url', 'preset=sakura-thesis&seed=1&years=8&season=3', '--out', out]);
     const gltf = gltfJson(readFileSync(out));
-    check(gltf.materials.map((m) => m.name).join(',') === 'bark' && gltf.materials[0].extras?.season === 'winter',
-      `--url ...&season=3: a bare winter tree (${gltf.materials.map((m) => m.name).join(',')})`);
+    check(`--url ...&season=3: a bare winter tree (${gltf.materials.map((m) => m.name).join(',')})`,
+      gltf.materials.map((m) => m.name).join(',') === 'bark' && gltf.materials[0].extras?.season === 'winter');
   }
 
   // --season and --leaf-shape by name are the rows' values.
@@ -139,13 +139,13 @@ try {
     const a = join(dir, 'flag.glb'), b = join(dir, 'set.glb');
     run(native, ['tree', 'grow', '--preset', 'keyaki-thesis', '--years', '4', '--season', 'autumn', '--leaf-shape', 'palmate', '--out', a]);
     run(native, ['tree', 'grow', '--preset', 'keyaki-thesis', '--years', '4', '--set', 'season=2', '--set', 'leaf_shape=2', '--out', b]);
-    check(readFileSync(a).equals(readFileSync(b)), '--season autumn --leaf-shape palmate == --set season=2 --set leaf_shape=2');
+    check('--season autumn --leaf-shape palmate == --set season=2 --set leaf_shape=2', readFileSync(a).equals(readFileSync(b)));
     for (const [flag, value] of [['--season', 'monsoon'], ['--leaf-shape', 'round']]) {
       const out = join(dir, 'bad-flag.glb');
       const r = spawn(native, ['tree', 'grow', '--preset', 'keyaki-thesis', '--years', '2', flag, value, '--out', out]);
       const lines = r.stderr.trim().split('\n');
-      check(r.status === 2 && lines.length === 1 && lines[0].includes(flag) && lines[0].includes(value) && !existsSync(out),
-        `${flag} ${value}: exit ${r.status}, "${lines[0]}"`);
+      check(`${flag} ${value}: exit ${r.status}, "${lines[0]}"`,
+        r.status === 2 && lines.length === 1 && lines[0].includes(flag) && lines[0].includes(value) && !existsSync(out));
     }
   }
 
@@ -154,8 +154,8 @@ try {
     const out = join(dir, 'bad.glb');
     const r = spawn(native, ['tree', 'grow', '--preset', 'sakura-thesis', '--years', '2', '--set', set, '--out', out]);
     const lines = r.stderr.trim().split('\n');
-    check(r.status === 2 && lines.length === 1 && lines[0].includes(key) && /in \[0, \d\]/.test(lines[0]) && !existsSync(out),
-      `--set ${set}: exit ${r.status}, "${lines[0]}"`);
+    check(`--set ${set}: exit ${r.status}, "${lines[0]}"`,
+      r.status === 2 && lines.length === 1 && lines[0].includes(key) && /in \[0, \d\]/.test(lines[0]) && !existsSync(out));
   }
 } finally {
   rmSync(dir, { recursive: true, force: true });

@@ -51,30 +51,30 @@ for (const bin of [native, wasm]) {
     const ms = Date.now() - started;
     const line = r.stderr.trimEnd();
     byBuild[label].push(line);
-    check(r.status === 2 && line === `niwa: error: ${expected}` && ms < 5000,
-      `${label} ${JSON.stringify(args).slice(0, 90)} -> exit ${r.status}, ${JSON.stringify(line).slice(0, 160)} (${ms} ms)`);
+    check(`${label} ${JSON.stringify(args).slice(0, 90)} -> exit ${r.status}, ${JSON.stringify(line).slice(0, 160)} (${ms} ms)`,
+      r.status === 2 && line === `niwa: error: ${expected}` && ms < 5000);
   }
   // Safe writes: a link at the target is replaced, its target untouched; no temporary remains.
   const victim = join(dir, `${label}-victim.txt`), link = join(dir, `${label}-link.json`);
   writeFileSync(victim, 'keep');
   symlinkSync(victim, link);
   const ok = spawn(bin, [...grow, '--out', link]);
-  check(ok.status === 0 && readFileSync(victim, 'utf8') === 'keep' && lstatSync(link).isFile(),
-    `${label} --out over a planted link replaces the link, never writes through it`);
+  check(`${label} --out over a planted link replaces the link, never writes through it`,
+    ok.status === 0 && readFileSync(victim, 'utf8') === 'keep' && lstatSync(link).isFile());
   // Several outputs: all or none.
   const glb = join(dir, `${label}-ok.glb`);
   const partial = spawn(bin, ['tree', 'sway', '--preset', 'binary', '--years', '2', '--duration', '1', '--out', glb, '--csv', join(dir, 'no/such/t.csv')]);
-  check(partial.status === 2 && !existsSync(glb), `${label} sway --out ok.glb --csv /bad/t.csv leaves no ok.glb`);
+  check(`${label} sway --out ok.glb --csv /bad/t.csv leaves no ok.glb`, partial.status === 2 && !existsSync(glb));
   const name = join(dir, `${'n'.repeat(250 - label.length)}${label}.json`);
   const long = spawn(bin, [...grow, '--out', name]);
-  check(long.status === 0 && existsSync(name), `${label} a 255-character file name works`);
+  check(`${label} a 255-character file name works`, long.status === 0 && existsSync(name));
   // The caption's SVG parses as XML.
   const svg = join(dir, `${label}-caption.svg`);
   const cap = spawn(bin, [...grow, '--out', svg, '--caption', `P<1 & "q" 'r' caf\u00e9 ]]> <!--`]);
   const xml = spawnSync('python3', ['-c', 'import sys, xml.etree.ElementTree as E; t = E.parse(sys.argv[1]); print([e.text for e in t.iter() if e.tag.endswith("text")][-1])', svg], { encoding: 'utf8' });
-  check(cap.status === 0 && xml.status === 0 && xml.stdout.trim() === `P<1 & "q" 'r' caf\u00e9 ]]> <!--`,
-    `${label} --caption with markup makes SVG an XML parser reads back: ${JSON.stringify(xml.stdout.trim() || xml.stderr.slice(-120))}`);
-  check(readdirSync(dir).every((f) => !f.includes('.partial')), `${label} left no temporary file`);
+  check(`${label} --caption with markup makes SVG an XML parser reads back: ${JSON.stringify(xml.stdout.trim() || xml.stderr.slice(-120))}`,
+    cap.status === 0 && xml.status === 0 && xml.stdout.trim() === `P<1 & "q" 'r' caf\u00e9 ]]> <!--`);
+  check(`${label} left no temporary file`, readdirSync(dir).every((f) => !f.includes('.partial')));
 }
-check(JSON.stringify(byBuild.native) === JSON.stringify(byBuild.wasm), `native and WASM give the same ${cases.length} messages`);
+check(`native and WASM give the same ${cases.length} messages`, JSON.stringify(byBuild.native) === JSON.stringify(byBuild.wasm));
 finish();

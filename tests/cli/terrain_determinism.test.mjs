@@ -11,7 +11,7 @@ requireWasm();
 
 const dir = mkdtempSync(join(tmpdir(), 'niwa-terrain-'));
 const seeds = JSON.parse(run(native, ['terrain', 'seeds'])).map((s) => s.name);
-check(seeds.includes('disk') && seeds.length >= 3, `seeds listed: ${seeds.join(', ')}`);
+check(`seeds listed: ${seeds.join(', ')}`, seeds.includes('disk') && seeds.length >= 3);
 for (const seedName of seeds) {
   for (const method of ['simple', 'midpoint', 'fourier', 'improved']) {
     for (const rng of [1, 2]) {
@@ -19,10 +19,10 @@ for (const seedName of seeds) {
       const na = join(dir, `${seedName}-${method}-${rng}-n.json`), wa = join(dir, `${seedName}-${method}-${rng}-w.json`);
       const a = JSON.parse(run(native, [...args, '--contours', na]));
       const b = JSON.parse(run(wasm, [...args, '--contours', wa]));
-      check(JSON.stringify(withoutMs(a)) === JSON.stringify(withoutMs(b)),
-        `${seedName} ${method} seed ${rng}: --stats native == WASM (${a.levels} levels, ${a.peaks} peaks)`);
+      check(`${seedName} ${method} seed ${rng}: --stats native == WASM (${a.levels} levels, ${a.peaks} peaks)`,
+        JSON.stringify(withoutMs(a)) === JSON.stringify(withoutMs(b)));
       const ja = readFileSync(na, 'utf8'), jb = readFileSync(wa, 'utf8');
-      check(ja.length > 100 && ja === jb, `${seedName} ${method} seed ${rng}: contours .json identical (${ja.length} bytes)`);
+      check(`${seedName} ${method} seed ${rng}: contours .json identical (${ja.length} bytes)`, ja.length > 100 && ja === jb);
     }
   }
 }
@@ -36,8 +36,8 @@ for (const seedName of seeds) {
     const a = run(native, [...args, '--svg', na]);
     const b = run(wasm, [...args, '--svg', wa]);
     const sa = readFileSync(na, 'utf8'), sb = readFileSync(wa, 'utf8');
-    check(a.length > 100 && a === b && sa === sb,
-      `${seedName} shrink ${joinName}: JSON (${a.length} bytes) and SVG (${sa.length} bytes) native == WASM`);
+    check(`${seedName} shrink ${joinName}: JSON (${a.length} bytes) and SVG (${sa.length} bytes) native == WASM`,
+      a.length > 100 && a === b && sa === sb);
   }
 }
 
@@ -55,8 +55,8 @@ for (const [args, field] of hostile) {
     const full = ['terrain', 'grow', ...(args[0] === '--builtin' || args[0] === '--contour' ? [] : ['--builtin', 'disk']), ...args, '--contours', out];
     const r = spawn(cmd, full);
     const lines = r.stderr.trim().split('\n');
-    check(r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${field}`) && !existsSync(out),
-      `${buildName(cmd)} ${args.join(' ')}: exit ${r.status}, "${lines[0]}"`);
+    check(`${buildName(cmd)} ${args.join(' ')}: exit ${r.status}, "${lines[0]}"`,
+      r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${field}`) && !existsSync(out));
   }
 }
 
@@ -64,13 +64,13 @@ for (const [args, field] of hostile) {
 // contour_repair.h), with one notice line; the same mountain in both builds, and its link regrows it.
 const repaired = [native, wasm].map((cmd) => spawn(cmd, ['terrain', 'grow', '--contour', crossing, '--repair', '--stats']));
 for (const [k, r] of repaired.entries()) {
-  check(r.status === 0 && /^niwa: repaired: the seed contour crossed itself \((\d+ loops? cut, §4\.4 method 2|its largest simple piece kept)\): \d+ points\n$/.test(r.stderr),
-    `${buildName([native, wasm][k])} --contour crossing.json --repair: exit ${r.status}, "${r.stderr.trim()}"`);
+  check(`${buildName([native, wasm][k])} --contour crossing.json --repair: exit ${r.status}, "${r.stderr.trim()}"`,
+    r.status === 0 && /^niwa: repaired: the seed contour crossed itself \((\d+ loops? cut, §4\.4 method 2|its largest simple piece kept)\): \d+ points\n$/.test(r.stderr));
 }
 if (repaired.every((r) => r.status === 0)) {
   const [a, b] = repaired.map((r) => withoutMs(JSON.parse(r.stdout)));
-  check(JSON.stringify(a) === JSON.stringify(b), `--repair: --stats native == WASM (${a.levels} levels)`);
+  check(`--repair: --stats native == WASM (${a.levels} levels)`, JSON.stringify(a) === JSON.stringify(b));
   const again = withoutMs(JSON.parse(run(native, ['terrain', 'grow', '--url', a.url, '--stats'])));
-  check(JSON.stringify(again) === JSON.stringify(a), `--repair: --url of its stats regrows it (${a.url.slice(0, 60)})`);
+  check(`--repair: --url of its stats regrows it (${a.url.slice(0, 60)})`, JSON.stringify(again) === JSON.stringify(a));
 }
 finish();

@@ -27,22 +27,22 @@ for (const seed of seeds) {
   }
   for (const ext of ['glb', 'png', 'json', 'geojson', 'svg']) {
     const a = readFileSync(files.n.f(ext)), b = readFileSync(files.w.f(ext));
-    check(a.length > 100 && a.equals(b), `${seed}: .${ext} native == WASM (${a.length} bytes)`);
+    check(`${seed}: .${ext} native == WASM (${a.length} bytes)`, a.length > 100 && a.equals(b));
   }
   const report = await validator.validateBytes(new Uint8Array(readFileSync(files.n.f('glb'))), { maxIssues: 20 });
-  check(report.issues.numErrors === 0 && report.issues.numWarnings === 0,
-    `${seed}: .glb gltf-validator ${report.issues.numErrors} errors, ${report.issues.numWarnings} warnings`);
+  check(`${seed}: .glb gltf-validator ${report.issues.numErrors} errors, ${report.issues.numWarnings} warnings`,
+    report.issues.numErrors === 0 && report.issues.numWarnings === 0);
   const again = join(dir, `${seed}-url.glb`);
   run(wasm, ['terrain', 'grow', '--url', files.n.stats.url, '--out', again]);
-  check(readFileSync(again).equals(readFileSync(files.n.f('glb'))),
-    `${seed}: the WASM CLI's --url '${files.n.stats.url}' regrows the native .glb`);
+  check(`${seed}: the WASM CLI's --url '${files.n.stats.url}' regrows the native .glb`,
+    readFileSync(again).equals(readFileSync(files.n.f('glb'))));
 }
 
 const dem = join(root, 'tests/data/terrain/jacksboro_dem.png');
 for (const method of ['simple', 'improved']) {
   const args = ['terrain', 'compare', '--dem', dem, '--builtin', 'jacksboro', '--method', method, '--seed', '3'];
   const a = run(native, args), b = run(wasm, args);
-  check(a === b && JSON.parse(a).levels.length > 3,
-    `compare ${method}: native == WASM (mean IoU ${JSON.parse(a).mean_iou.toFixed(3)})`);
+  check(`compare ${method}: native == WASM (mean IoU ${JSON.parse(a).mean_iou.toFixed(3)})`,
+    a === b && JSON.parse(a).levels.length > 3);
 }
 finish();

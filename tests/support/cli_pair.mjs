@@ -9,7 +9,14 @@ export const native = process.env.NIWA_NATIVE;
 export const wasm = process.env.NIWA_WASM || join(root, 'build/wasm/bin/niwa.js');
 
 let passed = 0, failed = 0;
-export const check = (ok, what) => { ok ? passed++ : failed++; console.log(`${ok ? 'PASS' : 'FAIL'} ${what}`); };
+// check(name, ok, detail): the browser harness's order (tests/browser/harness.mjs). `ok` must be a
+// boolean: a string there (the arguments swapped) is a failure, not a pass.
+export function check(what, ok, detail = '') {
+  const pass = typeof ok === 'boolean' ? ok : (typeof ok !== 'string' && Boolean(ok));
+  if (pass) passed++; else failed++;
+  const why = typeof ok === 'string' ? ' — check(name, ok): ok is a string (arguments swapped?)' : '';
+  console.log(`${pass ? 'PASS' : 'FAIL'} ${what}${detail ? ` — ${detail}` : ''}${why}`);
+}
 
 // Stops the test when the WASM CLI has not been built.
 export function requireWasm() {
