@@ -113,18 +113,25 @@ Status AsIvyFlags(const Status& s) {
 
 ivy::IvyState ResolveState(const IvyOptions& o) {
   ivy::IvyState state;
-  // A tree is in metres: its default preset is metric.
-  if (!o.tree_preset.empty()) Check(AsFlag(ivy::SetIvyPreset("metric", &state), "--preset"));
-  if (!o.preset.empty()) Check(AsFlag(ivy::SetIvyPreset(o.preset, &state), "--preset"));
+  // The tree's precedence (native_cli/tree_cli.cpp): a share link or a state file is the base and
+  // every other flag overrides it.
+  if (!o.url.empty()) {
+    std::vector<std::string> notices;
+    ivy::ApplyIvyHash(o.url, "", &state, &notices);
+    if (!notices.empty()) Fail(Status::Error("--url", notices[0]));
+  }
   if (!o.params_file.empty()) {
     Result<std::string> text = ReadFile(o.params_file, "--params", kMaxParamsFileBytes);
     if (!text.ok()) Fail(text.status());
     Check(ivy::ApplyIvyStateJson(*text, &state).Within("--params"));
   }
-  if (!o.url.empty()) {
-    std::vector<std::string> notices;
-    ivy::ApplyIvyHash(o.url, "", &state, &notices);
-    if (!notices.empty()) Fail(Status::Error("--url", notices[0]));
+  const bool based = !o.url.empty() || !o.params_file.empty();
+  // --preset replaces the base's preset (and its values) only when it names another one; with no
+  // base, a tree (in metres) defaults to metric.
+  if (!o.preset.empty() && (!based || state.preset != o.preset)) {
+    Check(AsFlag(ivy::SetIvyPreset(o.preset, &state), "--preset"));
+  } else if (o.preset.empty() && !based && !o.tree_preset.empty()) {
+    Check(AsFlag(ivy::SetIvyPreset("metric", &state), "--preset"));
   }
   for (const std::string& set : o.sets) Check(state.params.SetFromAssignment(set).Within("--set"));
   // The flags' own strict parse (their lines), then the state's setters.
@@ -323,8 +330,10 @@ void AddIvyCommands(CLI::App& app, CommandList& commands) {
   grow->add_option("--seed", o->seed, "Random seed, " + RangeHelp(kSeedRange) + " (default 1)");
   grow->add_option("--preset", o->preset, "paper (default), literal, improved or metric");
   grow->add_option("--set", o->sets, "KEY=VALUE of the ivy table ('niwa params ivy')");
-  grow->add_option("--params", o->params_file, "State JSON {preset, seed, steps, params}");
-  grow->add_option("--url", o->url, "Share-link hash: preset=..&seed=..&steps=..&KEY=V");
+  grow->add_option("--params", o->params_file,
+                   "State JSON {preset, seed, steps, params}; other flags override it");
+  grow->add_option("--url", o->url,
+                   "Share-link hash: preset=..&seed=..&steps=..&KEY=V; other flags override it");
   grow->add_option("--accel", o->accel, "Geometry queries: bvh (default) or linear (brute force)");
   grow->add_option("--subdivide", o->subdivide,
                    "Split every support triangle into 4^K coplanar ones, K in [" +

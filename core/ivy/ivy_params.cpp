@@ -4,9 +4,6 @@
 
 #include <cmath>
 
-#include <cstdio>
-#include <cstdlib>
-
 #include "params/embedded_presets.h"
 #include "params/param_text.h"
 
@@ -108,13 +105,9 @@ namespace {
 
 const std::vector<Preset>& Presets() {
   static const std::vector<Preset> presets = [] {
-    Result<std::vector<ListedPreset>> listed = ReadPresetLists("ivy", IvyTable());
-    if (!listed.ok()) {
-      std::fprintf(stderr, "niwa: %s\n", listed.status().Line().c_str());
-      std::abort();  // a build-time data error, caught by the ivy tests
-    }
     std::vector<Preset> out;
-    for (ListedPreset& p : *listed) out.push_back({std::move(p.name), std::move(p.values)});
+    for (ListedPreset& p : StudyPresetLists("ivy", IvyTable()))
+      out.push_back({std::move(p.name), std::move(p.values)});
     return out;
   }();
   return presets;

@@ -1,6 +1,8 @@
 // One study's share of the embedded preset files (cmake/embed_presets.cmake), and its list files read.
 #include "params/embedded_presets.h"
 
+#include <cstdio>
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 
 #include "params/param_json.h"
@@ -46,6 +48,15 @@ Result<std::vector<ListedPreset>> ReadPresetLists(std::string_view study, const 
     }
   }
   return out;
+}
+
+std::vector<ListedPreset> StudyPresetLists(std::string_view study, const ParamTable& table) {
+  Result<std::vector<ListedPreset>> listed = ReadPresetLists(study, table);
+  if (!listed.ok()) {
+    std::fprintf(stderr, "niwa: %s\n", listed.status().Line().c_str());
+    std::abort();
+  }
+  return std::move(listed).value();
 }
 
 }  // namespace niwa

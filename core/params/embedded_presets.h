@@ -37,4 +37,8 @@ struct ListedPreset {
 // build-time data error: each study's tests read its presets).
 Result<std::vector<ListedPreset>> ReadPresetLists(std::string_view study, const ParamTable& table);
 
+// ReadPresetLists for a study's own presets: a bad embedded file is a build-time data error, so
+// it prints its line and aborts (each study's preset tests read every file, so it fails there).
+std::vector<ListedPreset> StudyPresetLists(std::string_view study, const ParamTable& table);
+
 }  // namespace niwa

@@ -1,9 +1,6 @@
 // The terrain table and its figure presets (paper values in docs/terrain-model.md).
 #include "terrain/terrain_params.h"
 
-#include <cstdio>
-#include <cstdlib>
-
 #include "params/embedded_presets.h"
 #include "params/param_text.h"
 
@@ -105,13 +102,8 @@ int JoinFromName(const std::string& name) {
 // core/terrain/presets/figure_presets.json (embedded; docs/terrain-model.md), read once.
 const std::vector<FigurePreset>& FigurePresets() {
   static const std::vector<FigurePreset> presets = [] {
-    Result<std::vector<ListedPreset>> listed = ReadPresetLists("terrain", TerrainTable());
-    if (!listed.ok()) {
-      std::fprintf(stderr, "niwa: %s\n", listed.status().Line().c_str());
-      std::abort();  // a build-time data error, caught by the terrain tests
-    }
     std::vector<FigurePreset> out;
-    for (const ListedPreset& p : *listed) {
+    for (const ListedPreset& p : StudyPresetLists("terrain", TerrainTable())) {
       FigurePreset preset{p.name, p.caption, {}};
       for (const auto& [key, value] : p.values)
         preset.values.emplace_back(static_cast<TerrainParam>(*TerrainTable().Find(key)), value);

@@ -46,10 +46,11 @@ struct Include {
   std::string target;
 };
 
-std::vector<Include> CoreIncludes(const fs::path& core) {
+// Every #include of the sources below `dir` (file relative to `dir`).
+std::vector<Include> IncludesUnder(const fs::path& dir) {
   std::vector<Include> out;
   const std::regex include_re(R"(^\s*#\s*include\s*[<"]([^>"]+)[>"])");
-  for (const auto& entry : fs::recursive_directory_iterator(core)) {
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
     if (!entry.is_regular_file()) continue;
     const std::string ext = entry.path().extension().string();
     if (ext != ".h" && ext != ".cpp" && ext != ".hpp" && ext != ".inc") continue;
@@ -60,12 +61,14 @@ std::vector<Include> CoreIncludes(const fs::path& core) {
       ++line_number;
       std::smatch m;
       if (std::regex_search(text, m, include_re)) {
-        out.push_back({fs::relative(entry.path(), core).generic_string(), line_number, m[1]});
+        out.push_back({fs::relative(entry.path(), dir).generic_string(), line_number, m[1]});
       }
     }
   }
   return out;
 }
+
+std::vector<Include> CoreIncludes(const fs::path& core) { return IncludesUnder(core); }
 
 std::string FirstSegment(const std::string& path) {
   std::size_t slash = path.find('/');
@@ -138,7 +141,6 @@ TEST(IncludeRules, EveryCoreFolderIsASharedPartOrAStudy) {
 // composition tier only, so a composition (ivy on a tree) is written once, in core/compose.
 TEST(IncludeRules, FrontEndsAreAdaptersOverTheCore) {
   const fs::path root(NIWA_SOURCE_DIR);
-  const std::regex include_re(R"(^\s*#\s*include\s*[<"]([^>"]+)[>"])");
   const std::map<std::string, std::set<std::string>> kFamily = {
       {"tree", {"tree", "sway", "render"}}, {"sway", {"tree", "sway", "render"}},
       {"render", {"tree", "sway", "render"}}, {"texture", {"tree"}},
@@ -149,34 +151,24 @@ TEST(IncludeRules, FrontEndsAreAdaptersOverTheCore) {
   int checked = 0, study_checked = 0;
   for (const std::string folder : {"native_cli", "web/bindings"}) {
     const bool cli = folder == std::string("native_cli");
-    for (const auto& entry : fs::recursive_directory_iterator(root / folder)) {
-      const std::string ext = entry.path().extension().string();
-      if (!entry.is_regular_file() || (ext != ".h" && ext != ".cpp")) continue;
-      const std::string name = entry.path().filename().string();
+    for (const Include& inc : IncludesUnder(root / folder)) {
+      const std::string name = fs::path(inc.file).filename().string();
       const auto family = kFamily.find(name.substr(0, name.find('_')));
-      std::ifstream in(entry.path());
-      std::string text;
-      int line_number = 0;
-      while (std::getline(in, text)) {
-        ++line_number;
-        std::smatch m;
-        if (!std::regex_search(text, m, include_re)) continue;
-        ++checked;
-        const std::string target = m[1];
-        const std::string where = folder + "/" + name + ":" + std::to_string(line_number);
-        if (cli) {
-          EXPECT_EQ(target.find("bindings/"), std::string::npos) << where << " includes " << target;
-        } else {
-          EXPECT_EQ(target.find("native_cli/"), std::string::npos) << where << " includes " << target;
-          EXPECT_NE(target, "cli_common.h") << where;
-        }
-        const std::string to = FirstSegment(target);
-        if (family == kFamily.end() || !core_folders.count(to)) continue;
-        ++study_checked;
-        EXPECT_TRUE(kSharedParts.count(to) || family->second.count(to) || to == kComposeTier)
-            << where << " (a " << family->first << " front end) may not include \"" << target
-            << "\": a composition of studies belongs in core/compose";
+      ++checked;
+      const std::string& target = inc.target;
+      const std::string where = folder + "/" + inc.file + ":" + std::to_string(inc.line);
+      if (cli) {
+        EXPECT_EQ(target.find("bindings/"), std::string::npos) << where << " includes " << target;
+      } else {
+        EXPECT_EQ(target.find("native_cli/"), std::string::npos) << where << " includes " << target;
+        EXPECT_NE(target, "cli_common.h") << where;
       }
+      const std::string to = FirstSegment(target);
+      if (family == kFamily.end() || !core_folders.count(to)) continue;
+      ++study_checked;
+      EXPECT_TRUE(kSharedParts.count(to) || family->second.count(to) || to == kComposeTier)
+          << where << " (a " << family->first << " front end) may not include \"" << target
+          << "\": a composition of studies belongs in core/compose";
     }
   }
   EXPECT_GT(checked, 40);        // the scan saw both front ends' includes

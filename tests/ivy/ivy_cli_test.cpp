@@ -3,6 +3,7 @@
 // bad input is one line with exit 2 and no file.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -119,6 +120,41 @@ TEST(IvyCli, BadInputIsOneLineExit2NoFile) {
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
     EXPECT_FALSE(std::ifstream(out).good()) << args[0];
   }
+}
+
+}  // namespace
+}  // namespace niwa
+
+namespace niwa {
+namespace {
+
+// The tree's --url precedence (tree_cli.cpp): the link is the base and every other flag overrides
+// it; --preset replaces the link's preset only when it names another one.
+TEST(IvyCli, OtherFlagsOverrideTheLink) {
+  const std::string path = ::testing::TempDir() + "ivy_url_precedence.json";
+  auto grown = [&](std::vector<std::string> args) {
+    std::remove(path.c_str());
+    args.insert(args.begin(), {"ivy", "grow"});
+    if (std::find(args.begin(), args.end(), "--steps") == args.end())
+      args.insert(args.end(), {"--steps", "3"});
+    args.insert(args.end(), {"--out", path});
+    CliResult r = RunNiwa(args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(std::ifstream(path));
+  };
+  const std::string link = "preset=improved&seed=3&steps=20&scene=wall&t1=0.3";
+  nlohmann::json base = grown({"--url", link});
+  EXPECT_EQ(base["seed"], 3);
+  nlohmann::json seed = grown({"--url", link, "--seed", "5"});
+  EXPECT_EQ(seed["seed"], 5);  // the flag, not the link
+  nlohmann::json same = grown({"--url", link, "--preset", "improved"});
+  EXPECT_EQ(same["params"]["t1"], 0.3);  // the link's own preset: its edits kept
+  nlohmann::json other = grown({"--url", link, "--preset", "paper"});
+  EXPECT_EQ(other["params"]["t1"], 0.2);  // another preset: its values
+  EXPECT_EQ(base["params"]["max_bend"], 60);  // improved's
+  EXPECT_NE(other["params"]["max_bend"], 60);  // paper's
+  EXPECT_EQ(grown({"--url", link, "--steps", "2"})["steps"], 2);
+  std::remove(path.c_str());
 }
 
 }  // namespace
