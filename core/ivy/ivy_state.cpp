@@ -242,5 +242,4 @@ std::string EncodeIvyHash(const IvyState& state, std::string_view prefix) {
   return out;
 }
 
-
 }  // namespace niwa::ivy

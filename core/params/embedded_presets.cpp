@@ -1,4 +1,5 @@
-// One study's share of the embedded preset files (cmake/embed_presets.cmake), and its list files read.
+// One study's share of the embedded preset files (cmake/embed_presets.cmake), and its list files
+// read.
 #include "params/embedded_presets.h"
 
 #include <cstdio>
@@ -26,8 +27,8 @@ Result<std::vector<ListedPreset>> ReadPresetLists(std::string_view study, const 
       return Status::Error(field, "must be {\"presets\": [...]}");
     }
     for (const nlohmann::ordered_json& p : j["presets"]) {
-      if (!p.is_object() || !p.contains("name") || !p["name"].is_string() || !p.contains("params") ||
-          !p["params"].is_object()) {
+      if (!p.is_object() || !p.contains("name") || !p["name"].is_string() ||
+          !p.contains("params") || !p["params"].is_object()) {
         return Status::Error(field, "each preset must have a \"name\" and a \"params\" object");
       }
       ListedPreset preset;
@@ -35,13 +36,16 @@ Result<std::vector<ListedPreset>> ReadPresetLists(std::string_view study, const 
       for (const auto& [key, value] : p.items()) {
         if (key == "name" || key == "params") continue;
         if (!value.is_string() || (key != "title" && key != "source" && key != "caption")) {
-          return Status::Error(field, preset.name + ": '" + key + "' is unknown; must be title, source or caption (text)");
+          return Status::Error(field, preset.name + ": '" + key +
+                                          "' is unknown; must be title, source or caption (text)");
         }
-        (key == "title" ? preset.title : key == "source" ? preset.source : preset.caption) =
-            value.get<std::string>();
+        (key == "title"    ? preset.title
+         : key == "source" ? preset.source
+                           : preset.caption) = value.get<std::string>();
       }
       ParamSet check(table);
-      NIWA_RETURN_IF_ERROR(ApplyParamsJson(p["params"].dump(), &check).Within(field + ": " + preset.name));
+      NIWA_RETURN_IF_ERROR(
+          ApplyParamsJson(p["params"].dump(), &check).Within(field + ": " + preset.name));
       for (const auto& [key, value] : p["params"].items())
         preset.values.emplace_back(key, value.get<double>());
       out.push_back(std::move(preset));

@@ -39,7 +39,9 @@ using Observer = std::function<bool(const Progress&)>;
 
 // The field of a cancelled run's Status ("run: cancelled").
 inline Status CancelledStatus() { return Status::Error("run", "cancelled"); }
-inline bool IsCancelled(const Status& s) { return !s.ok() && s.field() == "run" && s.message() == "cancelled"; }
+inline bool IsCancelled(const Status& s) {
+  return !s.ok() && s.field() == "run" && s.message() == "cancelled";
+}
 
 // One named part of a study's output, in the one world frame: metres, y up, the ground at y = 0
 // where the study has a ground. A composer places parts with a node transform; a study never does.

@@ -1,7 +1,7 @@
 // Enforces docs/ARCHITECTURE.md's include rules on the sources: studies never include each other,
 // shared parts include no study, nothing in a study or a shared part includes the composition tier
-// (core/compose, which may include studies), nothing in core/ includes Emscripten, GL or JS, and the
-// two front ends (native_cli/, web/bindings/) never include each other.
+// (core/compose, which may include studies), nothing in core/ includes Emscripten, GL or JS, and
+// the two front ends (native_cli/, web/bindings/) never include each other.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -142,10 +142,16 @@ TEST(IncludeRules, EveryCoreFolderIsASharedPartOrAStudy) {
 TEST(IncludeRules, FrontEndsAreAdaptersOverTheCore) {
   const fs::path root(NIWA_SOURCE_DIR);
   const std::map<std::string, std::set<std::string>> kFamily = {
-      {"tree", {"tree", "sway", "render"}}, {"sway", {"tree", "sway", "render"}},
-      {"render", {"tree", "sway", "render"}}, {"texture", {"tree"}},
-      {"ivy", {"ivy"}}, {"terrain", {"terrain"}}, {"moss", {"moss"}}, {"bark", {"bark"}},
-      {"mesh", {}}, {"light", {}}};
+      {"tree", {"tree", "sway", "render"}},
+      {"sway", {"tree", "sway", "render"}},
+      {"render", {"tree", "sway", "render"}},
+      {"texture", {"tree"}},
+      {"ivy", {"ivy"}},
+      {"terrain", {"terrain"}},
+      {"moss", {"moss"}},
+      {"bark", {"bark"}},
+      {"mesh", {}},
+      {"light", {}}};
   std::set<std::string> core_folders;
   for (const std::string& f : CoreFolders(kCore)) core_folders.insert(f);
   int checked = 0, study_checked = 0;

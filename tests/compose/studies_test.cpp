@@ -55,7 +55,10 @@ TEST(Studies, AStateRoundTripsThroughItsPrefixedHash) {
     EXPECT_TRUE(decoded["notices"].empty()) << s.name << ": " << decoded["notices"].dump();
     // The prefixed keys were read (not skipped as another study's).
     const std::string preset = decoded["state"]["preset"];
-    EXPECT_EQ(preset, s.name == "tree" ? "maple" : s.name == "ivy" ? "improved" : "fig13b") << s.name;
+    EXPECT_EQ(preset, s.name == "tree"  ? "maple"
+                      : s.name == "ivy" ? "improved"
+                                        : "fig13b")
+        << s.name;
     Result<std::string> again = s.encode_hash(decoded["state"].dump(), prefix);
     ASSERT_TRUE(again.ok()) << s.name << ": " << again.status().Line();
     const json twice = json::parse(s.decode_hash(*again, prefix));
@@ -68,7 +71,8 @@ TEST(Studies, ABadStateNamesItsField) {
   for (const StudyInfo& s : Studies()) {
     Result<std::string> bad = s.encode_hash(R"({"seed": -5})", "");
     ASSERT_FALSE(bad.ok()) << s.name;
-    EXPECT_NE(bad.status().field().find("seed"), std::string::npos) << s.name << ": " << bad.status().Line();
+    EXPECT_NE(bad.status().field().find("seed"), std::string::npos)
+        << s.name << ": " << bad.status().Line();
   }
 }
 

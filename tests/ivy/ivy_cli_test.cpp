@@ -150,8 +150,8 @@ TEST(IvyCli, OtherFlagsOverrideTheLink) {
   nlohmann::json same = grown({"--url", link, "--preset", "improved"});
   EXPECT_EQ(same["params"]["t1"], 0.3);  // the link's own preset: its edits kept
   nlohmann::json other = grown({"--url", link, "--preset", "paper"});
-  EXPECT_EQ(other["params"]["t1"], 0.2);  // another preset: its values
-  EXPECT_EQ(base["params"]["max_bend"], 60);  // improved's
+  EXPECT_EQ(other["params"]["t1"], 0.2);       // another preset: its values
+  EXPECT_EQ(base["params"]["max_bend"], 60);   // improved's
   EXPECT_NE(other["params"]["max_bend"], 60);  // paper's
   EXPECT_EQ(grown({"--url", link, "--steps", "2"})["steps"], 2);
   std::remove(path.c_str());

@@ -14,9 +14,14 @@ TEST(IvyPresets, ReadFromTheEmbeddedListInItsOrder) {
   using V = std::vector<std::pair<std::string, double>>;
   EXPECT_EQ(IvyPresetOverrides("paper"), V{});
   EXPECT_EQ(IvyPresetOverrides("literal"), (V{{"kappa", 0}, {"lambda", 1}}));
-  EXPECT_EQ(IvyPresetOverrides("improved"), (V{{"max_bend", 60}, {"avoid", 10}, {"candidates", 32}}));
-  EXPECT_EQ(IvyPresetOverrides("metric"), (V{{"L", 0.05}, {"d", 0.02}, {"eps", 0.002},
-                                            {"r_tip", 0.0015}, {"leaf_size", 0.05}, {"petiole", 0.02}}));
+  EXPECT_EQ(IvyPresetOverrides("improved"),
+            (V{{"max_bend", 60}, {"avoid", 10}, {"candidates", 32}}));
+  EXPECT_EQ(IvyPresetOverrides("metric"), (V{{"L", 0.05},
+                                             {"d", 0.02},
+                                             {"eps", 0.002},
+                                             {"r_tip", 0.0015},
+                                             {"leaf_size", 0.05},
+                                             {"petiole", 0.02}}));
   Result<IvyParams> metric = IvyPreset("metric");
   ASSERT_TRUE(metric.ok());
   EXPECT_EQ(metric->Get(IvyParam::kL), 0.05);

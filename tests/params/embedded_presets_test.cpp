@@ -22,7 +22,8 @@ TEST(EmbeddedPresets, EveryPresetFileOfEveryStudyIsEmbedded) {
       if (f.path().extension() == ".json")
         on_disk.insert(study.path().filename().string() + "/" + f.path().filename().string());
   }
-  for (const EmbeddedPreset& f : EmbeddedPresetFiles()) embedded.insert(std::string(f.study) + "/" + f.file);
+  for (const EmbeddedPreset& f : EmbeddedPresetFiles())
+    embedded.insert(std::string(f.study) + "/" + f.file);
   EXPECT_EQ(embedded, on_disk);
   // The three studies with presets today.
   EXPECT_GE(EmbeddedPresets("tree").size(), 8u);

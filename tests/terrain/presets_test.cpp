@@ -22,12 +22,21 @@ TEST(TerrainPresets, TheFiguresInThePapersOrderWithTheirValues) {
   }
   EXPECT_EQ(presets[1].values, (V{{P::kMethod, 0}, {P::kJoin, 1}, {P::kC, 1.4}}));
   EXPECT_EQ(presets[4].values, (V{{P::kMethod, 0}, {P::kJoin, 3}, {P::kC, 1.6}}));
-  EXPECT_EQ(presets[7].values, (V{{P::kMethod, 1}, {P::kJoin, 3}, {P::kC, 1.4}, {P::kD2, 0.3},
-                                  {P::kThetaMin, 0}, {P::kThetaMax, 30}}));
+  EXPECT_EQ(presets[7].values, (V{{P::kMethod, 1},
+                                  {P::kJoin, 3},
+                                  {P::kC, 1.4},
+                                  {P::kD2, 0.3},
+                                  {P::kThetaMin, 0},
+                                  {P::kThetaMax, 30}}));
   EXPECT_EQ(presets[8].values,
             (V{{P::kMethod, 2}, {P::kJoin, 3}, {P::kC, 1.4}, {P::kF0, 64}, {P::kNfft, 1024}}));
-  EXPECT_EQ(presets[12].values, (V{{P::kMethod, 3}, {P::kJoin, 3}, {P::kC, 3}, {P::kD2, 0.5},
-                                   {P::kThetaMin, 20}, {P::kThetaMax, 40}, {P::kF0, 256},
+  EXPECT_EQ(presets[12].values, (V{{P::kMethod, 3},
+                                   {P::kJoin, 3},
+                                   {P::kC, 3},
+                                   {P::kD2, 0.5},
+                                   {P::kThetaMin, 20},
+                                   {P::kThetaMax, 40},
+                                   {P::kF0, 256},
                                    {P::kNfft, 1024}}));
   EXPECT_EQ(presets[12].caption, "improved method: d' = 3d, d'' = 0.5d, θ in (20°, 40°), f0 = 256");
 }

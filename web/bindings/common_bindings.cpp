@@ -19,7 +19,8 @@ using nlohmann::ordered_json;
 const compose::StudyInfo* Study(const std::string& name) { return compose::FindStudy(name); }
 
 Status UnknownStudy(const std::string& name) {
-  return Status::Error("study", "'" + Echo(name) + "' is unknown; must be " + compose::StudyNames());
+  return Status::Error("study",
+                       "'" + Echo(name) + "' is unknown; must be " + compose::StudyNames());
 }
 
 }  // namespace
@@ -27,7 +28,8 @@ Status UnknownStudy(const std::string& name) {
 // [{name, unit}] of every study, in the nav's order.
 std::string StudiesJson() {
   ordered_json out = ordered_json::array();
-  for (const compose::StudyInfo& s : compose::Studies()) out.push_back({{"name", s.name}, {"unit", s.unit}});
+  for (const compose::StudyInfo& s : compose::Studies())
+    out.push_back({{"name", s.name}, {"unit", s.unit}});
   return out.dump();
 }
 
@@ -44,7 +46,8 @@ std::string PresetsJson(const std::string& study) {
 }
 
 // {state, notices} of a share-link hash (keys with `prefix`), or an error record naming "study".
-std::string DecodeHash(const std::string& study, const std::string& hash, const std::string& prefix) {
+std::string DecodeHash(const std::string& study, const std::string& hash,
+                       const std::string& prefix) {
   const compose::StudyInfo* s = Study(study);
   return s ? s->decode_hash(hash, prefix) : ErrorRecordJson(UnknownStudy(study));
 }

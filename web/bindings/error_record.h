@@ -1,7 +1,8 @@
 // The one shape an error crosses the JS boundary in: {ok: false, field, message} from a core
-// Status (field: the state key it names, "" when none; message: its one line, Status::Line()), after
-// Draco's web decoder Status (ok(), error_msg()). Pages show `message` and put it beside `field`;
-// no page parses error text. Does not: rename fields (a composed page prefixes them in JS).
+// Status (field: the state key it names, "" when none; message: its one line, Status::Line()),
+// after Draco's web decoder Status (ok(), error_msg()). Pages show `message` and put it beside
+// `field`; no page parses error text. Does not: rename fields (a composed page prefixes them in
+// JS).
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -41,8 +41,8 @@
 #include <vector>
 
 #include "buffers.h"
-#include "error_record.h"
 #include "compose/ivy_on_tree.h"
+#include "error_record.h"
 #include "geom/mesh_metrics.h"
 #include "geom/ray_cast.h"
 #include "io/mesh_reader.h"
@@ -240,8 +240,8 @@ class IvyLab {
     if (!s.ok()) return ErrorText(s);
     if (!support_) return ErrorText(Status::Error("scene", "no support loaded"));
     if (state.seed_points.empty() && support_->scene().seeds.empty()) {
-      return ErrorText(Status::Error(
-          "at", "a dropped mesh needs a seed point; click its surface to place one"));
+      return ErrorText(
+          Status::Error("at", "a dropped mesh needs a seed point; click its surface to place one"));
     }
     std::optional<ivy::IvyRun> run;
     if (last && last->Update(state).ok()) {

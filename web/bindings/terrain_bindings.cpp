@@ -19,10 +19,10 @@
 //   "download"  bytes (Uint8, after build(format))
 // terrainRepairContour(pointsJson): a drawn contour that crosses itself made simple (below);
 // terrainParseContour(text): an imported contour file's points (below).
-// Calls: grow(stateJson) -> ""/error record, then statsJson() (the CLI's --stats minus ms*), hash(),
-// stateJson(), buffers(..), build(format) with format glb | heightmap | sidecar | json | geojson |
-// svg -> ""/error record.
-// Does not: draw, keep more than one mountain, read files, or time anything the stats compare.
+// Calls: grow(stateJson) -> ""/error record, then statsJson() (the CLI's --stats minus ms*),
+// hash(), stateJson(), buffers(..), build(format) with format glb | heightmap | sidecar | json |
+// geojson | svg -> ""/error record. Does not: draw, keep more than one mountain, read files, or
+// time anything the stats compare.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
@@ -135,9 +135,9 @@ std::string TerrainRepairContour(const std::string& points_json) {
 
 // A contour file's text (what `niwa terrain grow --contour FILE` reads: {"points": [[x, y], ...]}
 // in metres with an optional "elevation", or a GeoJSON Polygon or LineString), for the page's
-// import: {points, elevation?} or an error record naming "contour" (error_record.h). The points go into the
-// page's state (the link), so a file of more than kMaxStatePoints points is refused here with the
-// limit; its geometry is checked (and a crossing repaired) as a drawing's is.
+// import: {points, elevation?} or an error record naming "contour" (error_record.h). The points go
+// into the page's state (the link), so a file of more than kMaxStatePoints points is refused here
+// with the limit; its geometry is checked (and a crossing repaired) as a drawing's is.
 std::string TerrainParseContour(const std::string& text) {
   ordered_json out;
   Result<terrain::SeedFile> file = terrain::ParseContourJson(text);

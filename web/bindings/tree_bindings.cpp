@@ -329,9 +329,9 @@ class TreeSession {
     atlas_ = BuildAtlasMesh(run_->mesh(), hybrid_);
     has_selection_ = false;
     slots_.clear();
-    return hybrid_.atlas_fits
-               ? ""
-               : ErrorText(Status::Error("render", "the card atlas does not fit; lower card_planes"));
+    return hybrid_.atlas_fits ? ""
+                              : ErrorText(Status::Error(
+                                    "render", "the card atlas does not fit; lower card_planes"));
   }
   int atlasSize() const { return hybrid_.atlas_size; }
   int renderMode() const { return static_cast<int>(state().params.Get(ParamId::kRenderMode)); }
@@ -438,8 +438,8 @@ class TreeSession {
     return "";
   }
 
-  TreeState state_;  // as given (the run holds its own copy)
-  Status error_;  // why the session has no run (a bad state or a refused start)
+  TreeState state_;               // as given (the run holds its own copy)
+  Status error_;                  // why the session has no run (a bad state or a refused start)
   std::unique_ptr<TreeRun> run_;  // core/render/tree_run: growth, mesh, skin, exports, counts
   std::vector<int32_t> parents_;
   std::vector<unsigned char> glb_;
