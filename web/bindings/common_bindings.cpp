@@ -62,7 +62,7 @@ std::string EncodeHash(const std::string& study, const std::string& state_json,
   ordered_json out;
   out["ok"] = true;
   out["hash"] = *hash;
-  return out.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  return JsonText(out);
 }
 
 }  // namespace niwa

@@ -69,11 +69,6 @@ double Ms(Clock::time_point a, Clock::time_point b) {
 
 json Vec(const glm::dvec3& v) { return json::array({v.x, v.y, v.z}); }
 
-std::string Dump(const ordered_json& j) {
-  // Errors and notices may echo hostile text: replace bytes that are not UTF-8.
-  return j.dump(-1, ' ', false, json::error_handler_t::replace);
-}
-
 // Flat float views of a TriMesh's vectors (glm::vec3 is three packed floats).
 struct FlatMesh {
   std::vector<float> positions, normals, birth, uvs;
@@ -204,7 +199,7 @@ class IvyLab {
   // {name, dropped, free, triangles, obstacles, bounds: {min, max}, seeds: [{name, pos}], ms_bvh}.
   std::string supportJson() const {
     ordered_json j;
-    if (!support_) return Dump(j);
+    if (!support_) return JsonText(j);
     const ivy::IvyScene& scene = support_->scene();
     j["name"] = scene.name;
     j["dropped"] = support_->is_mesh();
@@ -222,7 +217,7 @@ class IvyLab {
       seeds.push_back({{"name", seed.name}, {"pos", Vec(seed.pos)}});
     j["seeds"] = seeds;
     j["ms_bvh"] = ms_bvh_;
-    return Dump(j);
+    return JsonText(j);
   }
 
   // Grows the state (JSON, as ApplyIvyStateJson reads it) on the support loaded through the ivy
@@ -324,7 +319,7 @@ class IvyLab {
         j["triangle"] = h.triangle;
       }
     }
-    return Dump(j);
+    return JsonText(j);
   }
 
   emscripten::val buffers(const std::string& group) const {

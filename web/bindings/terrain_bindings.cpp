@@ -58,12 +58,6 @@ double Ms(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
-template <typename J>
-std::string Dump(const J& j) {
-  // Errors and notices may echo hostile text: replace bytes that are not UTF-8.
-  return j.dump(-1, ' ', false, json::error_handler_t::replace);
-}
-
 ordered_json StateObject(const terrain::TerrainState& state) {
   return ordered_json::parse(terrain::TerrainStateJson(state));
 }
@@ -121,7 +115,7 @@ std::string TerrainRepairContour(const std::string& points_json) {
     out["points"] = j;
     out["repaired"] = false;
     out["loops_removed"] = 0;
-    return Dump(out);
+    return JsonText(out);
   }
   json pts = json::array();
   for (const terrain::Vec2& v : r->ring) pts.push_back({v.x, v.y});
@@ -130,7 +124,7 @@ std::string TerrainRepairContour(const std::string& points_json) {
   out["repaired"] = true;
   out["loops_removed"] = r->loops_removed;
   out["reason"] = r->reason;
-  return Dump(out);
+  return JsonText(out);
 }
 
 // A contour file's text (what `niwa terrain grow --contour FILE` reads: {"points": [[x, y], ...]}
@@ -153,7 +147,7 @@ std::string TerrainParseContour(const std::string& text) {
   for (const terrain::Vec2& v : file->ring) pts.push_back({v.x, v.y});
   out["points"] = pts;
   if (file->has_elevation) out["elevation"] = file->elevation;
-  return Dump(out);
+  return JsonText(out);
 }
 
 // An adapter over core/terrain/terrain_run.h: one TerrainRun kept from grow to grow (an edit of
@@ -214,11 +208,11 @@ class TerrainLab {
     j["ms_loops"] = counts.ms_loops;
     j["grows"] = run_ ? run_->counts().grows : 0;
     j["heightfields"] = run_ ? run_->counts().heightfields : 0;
-    return Dump(j);
+    return JsonText(j);
   }
 
   std::string hash() const { return grown_ ? run_->Hash("") : ""; }
-  std::string stateJson() const { return grown_ ? Dump(StateObject(run_->state())) : "{}"; }
+  std::string stateJson() const { return grown_ ? JsonText(StateObject(run_->state())) : "{}"; }
 
   // {min: [x, y], max: [x, y], h_min, h_max, h0, dh, level_min, level_max, width, height}: the
   // heightfield's box (plan metres), its elevations, the contour levels (negative below the seed:
@@ -244,7 +238,7 @@ class TerrainLab {
     j["level_max"] = level_max;
     j["width"] = hf.width;  // the surface grid's vertices per row and rows
     j["height"] = hf.height;
-    return Dump(j);
+    return JsonText(j);
   }
 
   // One download of the last grow into the "download" group: "" or an error record.

@@ -21,7 +21,7 @@ std::string StateFileJson(const std::string& state_json) {
   nlohmann::ordered_json out;
   out["ok"] = true;
   out["json"] = TreeStateFileJson(state);
-  return out.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  return JsonText(out);
 }
 
 // The page's Open: {ok: true, state} (every value, as decodeHash gives it) of a state file read
@@ -35,7 +35,7 @@ std::string OpenStateFileJson(const std::string& text) {
   nlohmann::ordered_json out;
   out["ok"] = true;
   out["state"] = nlohmann::ordered_json::parse(TreeStateJson(state));
-  return out.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  return JsonText(out);
 }
 
 }  // namespace niwa

@@ -47,7 +47,7 @@ export class FieldErrors {
     }
     const key = error && typeof error === 'object' ? error.field || '' : '';
     const message = error && typeof error === 'object' ? String(error.message || '') : '';
-    this.panel()?.markError(key, message);
+    this.panel()?.markError(key);
     if (!key) return;
     const line = this.#line(key);
     if (!line) return;
