@@ -86,6 +86,7 @@ void PrintTable(const cli::Study& study, bool json, std::ostream& out) {
 }  // namespace
 
 int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  cli::ClearDeclarations();  // the flags' declarations belong to this call's app
   CLI::App app{"niwa: procedural nature lab (tree growth after Kanayama 1998)", "niwa"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Help for every command");
@@ -106,6 +107,14 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
                         return 0;
                       }});
   cli::AddRegisteredCommands(app, commands);
+  // 'niwa flags': every command's flags with their kinds, for tests/cli/hostile.test.mjs. Hidden
+  // from the help (an empty group).
+  CLI::App* flags = app.add_subcommand("flags", "Every command's flags as JSON (for tests)");
+  flags->group("");
+  commands.push_back({flags, [&](std::ostream& o) {
+                        o << cli::FlagsJson(commands) << "\n";
+                        return 0;
+                      }});
 
   if (args.empty()) {  // 'niwa' alone: the usage, and exit code 2 (no command given)
     err << app.help() << "niwa: error: give a command, e.g. 'niwa tree grow'\n";
@@ -122,7 +131,10 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     app.parse(reversed);
     CheckEmptyValues(app);
     for (const cli::Command& command : commands) {
-      if (*command.app) return command.run(out);
+      if (*command.app) {
+        cli::CheckApplicable(*command.app);  // flags that apply only to another output
+        return command.run(out);
+      }
     }
   } catch (const CLI::CallForHelp&) {
     out << app.help();  // CLI11 delegates to the innermost selected subcommand

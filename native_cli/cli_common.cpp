@@ -10,10 +10,14 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "base/echo.h"
@@ -91,6 +95,198 @@ double FlagNumber(const std::string& flag, const std::string& text, const FlagRa
   return checked;
 }
 
+namespace {
+
+std::map<const CLI::Option*, FlagInfo>& Declarations() {
+  static std::map<const CLI::Option*, FlagInfo> declarations;
+  return declarations;
+}
+
+// ".glb, .json or .svg"
+std::string Either(const std::vector<std::string>& words, const std::string& prefix = "") {
+  std::string text;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    text += (i == 0 ? "" : i + 1 == words.size() ? " or " : ", ") + prefix + words[i];
+  }
+  return text;
+}
+
+const char* KindName(FlagKind kind) {
+  switch (kind) {
+    case FlagKind::kSwitch:
+      return "switch";
+    case FlagKind::kNumber:
+      return "number";
+    case FlagKind::kText:
+      return "text";
+    case FlagKind::kInput:
+      return "input";
+    case FlagKind::kOutput:
+      return "output";
+  }
+  return "text";
+}
+
+}  // namespace
+
+CLI::Option* Declare(CLI::Option* option, FlagInfo info) {
+  Declarations()[option] = std::move(info);
+  return option;
+}
+
+const FlagInfo* Declared(const CLI::Option* option) {
+  auto it = Declarations().find(option);
+  return it == Declarations().end() ? nullptr : &it->second;
+}
+
+void ClearDeclarations() { Declarations().clear(); }
+
+namespace {
+// The declaration of option, made as a switch or free text when it had none.
+FlagInfo& DeclaredOrNew(CLI::Option* option) {
+  if (Declared(option) == nullptr) {
+    Declare(option,
+            FlagInfo(option->get_expected_max() == 0 ? FlagKind::kSwitch : FlagKind::kText));
+  }
+  return Declarations()[option];
+}
+}  // namespace
+
+CLI::Option* AddInputFlag(CLI::App* cmd, const std::string& flag, std::string* path,
+                          const std::string& help) {
+  return Declare(cmd->add_option(flag, *path, help), FlagInfo(FlagKind::kInput));
+}
+
+CLI::Option* AddOutputFlag(CLI::App* cmd, const std::string& flag, std::string* path,
+                           std::vector<std::string> extensions, const std::string& help) {
+  CLI::Option* option = cmd->add_option_function<std::string>(
+      flag,
+      [flag, path, extensions](const std::string& text) {
+        const std::string ext = Extension(text);
+        bool known = false;
+        for (const std::string& e : extensions) known = known || e == ext;
+        if (!known && !text.empty()) {
+          Fail(Status::Error(flag, "'" + Echo(text) + "' must end in " + Either(extensions)));
+        }
+        *path = text;
+      },
+      help);
+  FlagInfo info(FlagKind::kOutput);
+  info.extensions = std::move(extensions);
+  return Declare(option, std::move(info));
+}
+
+CLI::Option* OnlyWith(CLI::Option* option, const std::string& output_flag,
+                      std::vector<std::string> endings) {
+  FlagInfo& info = DeclaredOrNew(option);
+  info.only_with = output_flag;
+  info.only_endings = std::move(endings);
+  return option;
+}
+
+void Excludes(CLI::Option* a, CLI::Option* b) {
+  DeclaredOrNew(a).excludes.push_back(b);
+  DeclaredOrNew(b).excludes.push_back(a);
+}
+
+void CheckApplicable(const CLI::App& cmd) {
+  for (const CLI::Option* option : cmd.get_options()) {  // in the order they were added
+    const FlagInfo* info = Declared(option);
+    if (option->count() == 0 || info == nullptr) continue;
+    for (const CLI::Option* other : info->excludes) {
+      if (other->count() > 0) {
+        Fail(Status::Error(option->get_name(),
+                           "give only one of " + option->get_name() + " and " + other->get_name()));
+      }
+    }
+  }
+  for (const CLI::Option* option : cmd.get_options()) {
+    const FlagInfo* info = Declared(option);
+    if (option->count() == 0 || info == nullptr || info->only_with.empty()) continue;
+    const CLI::Option* output = cmd.get_option_no_throw(info->only_with);
+    bool applies = false;
+    if (output != nullptr && output->count() > 0 && !output->results().empty()) {
+      const std::string ext = Extension(output->results().back());
+      for (const std::string& e : info->only_endings) applies = applies || e == ext;
+    }
+    if (!applies) {
+      Fail(Status::Error(option->get_name(), "only applies with " + info->only_with + " " +
+                                                 Either(info->only_endings, "FILE")));
+    }
+  }
+}
+
+CLI::Option* AddCaptionFlag(CLI::App* cmd, const std::string& flag, std::string* caption,
+                            const std::string& help) {
+  return Declare(
+      cmd->add_option_function<std::string>(
+          flag,
+          [flag, caption](const std::string& text) {
+            for (char c : text) {
+              const auto byte = static_cast<unsigned char>(c);
+              if (byte < 0x20 || byte == 0x7f) {
+                Fail(Status::Error(flag, "'" + Echo(text) +
+                                             "' holds a control character; must be "
+                                             "printable text"));
+              }
+            }
+            if (text.size() > kMaxCaptionBytes) {
+              Fail(Status::Error(flag, std::to_string(text.size()) + " bytes; must be at most " +
+                                           std::to_string(kMaxCaptionBytes)));
+            }
+            *caption = text;
+          },
+          help),
+      FlagInfo(FlagKind::kText));
+}
+
+std::string FlagsJson(const CommandList& commands) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const Command& command : commands) {
+    std::vector<std::string> words;
+    for (const CLI::App* a = command.app; a != nullptr && a->get_parent() != nullptr;
+         a = a->get_parent()) {
+      words.insert(words.begin(), a->get_name());
+    }
+    nlohmann::json flags = nlohmann::json::array();
+    for (const CLI::Option* option : command.app->get_options()) {
+      if (option->get_lnames().empty()) continue;  // positional
+      const std::string name = "--" + option->get_lnames().front();
+      if (name == "--help" || name == "--help-all") continue;
+      const FlagInfo* info = Declared(option);
+      const FlagKind kind = info != nullptr                   ? info->kind
+                            : option->get_expected_max() == 0 ? FlagKind::kSwitch
+                                                              : FlagKind::kText;
+      nlohmann::json flag = {{"flag", name},
+                             {"kind", KindName(kind)},
+                             {"repeatable", option->get_items_expected_max() > 1}};
+      if (kind == FlagKind::kNumber) {
+        flag["min"] = info->range.min;
+        flag["max"] = info->range.max;
+        flag["integer"] = info->range.integer;
+      }
+      if (info != nullptr && !info->extensions.empty()) flag["extensions"] = info->extensions;
+      std::vector<std::string> excludes;
+      for (const CLI::Option* other :
+           info != nullptr ? info->excludes : std::vector<const CLI::Option*>{}) {
+        if (!other->get_lnames().empty()) excludes.push_back("--" + other->get_lnames().front());
+      }
+      if (!excludes.empty()) flag["excludes"] = excludes;
+      if (info != nullptr && !info->only_with.empty()) {
+        flag["only_with"] = info->only_with;
+        flag["only_endings"] = info->only_endings;
+      }
+      flags.push_back(std::move(flag));
+    }
+    list.push_back({{"command", words}, {"example", command.example}, {"flags", flags}});
+  }
+  nlohmann::json studies = nlohmann::json::array();
+  for (const Study& study : commands.studies) {
+    studies.push_back({{"name", study.name}, {"example", study.example}});
+  }
+  return nlohmann::json{{"commands", list}, {"studies", studies}}.dump(1);
+}
+
 std::string Extension(const std::string& path) {
   std::size_t dot = path.find_last_of('.');
   std::size_t slash = path.find_last_of('/');
@@ -141,6 +337,12 @@ Result<std::string> ReadFile(const std::string& path, const std::string& field,
                              std::size_t max_bytes) {
   const std::string name = "'" + Echo(path) + "'";
   if (path.empty()) return Status::Error(field, "empty; must be a file name");
+  // Checked before opening too: under node (the WASM build) opening a FIFO blocks whatever the
+  // flags, until a writer comes.
+  struct stat before {};
+  if (::stat(path.c_str(), &before) == 0 && !S_ISREG(before.st_mode)) {
+    return Status::Error(field, "cannot read " + name + ": not a regular file");
+  }
   int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) return Status::Error(field, "cannot read " + name);
   struct stat info {};
@@ -176,10 +378,81 @@ Result<std::string> ReadFile(const std::string& path, const std::string& field,
   return bytes;
 }
 
+namespace {
+
+// The temporaries of the running process, for the signal handler: fixed slots of fixed size, so
+// that SIGINT/SIGTERM/SIGHUP can unlink them with async-signal-safe calls only (no allocation).
+constexpr int kTempSlots = 64;
+constexpr std::size_t kTempPathBytes = 4096;
+char g_temp_paths[kTempSlots][kTempPathBytes];
+volatile std::sig_atomic_t g_temp_used[kTempSlots];
+
+extern "C" void RemoveTempsAndDie(int signal_number) {
+  for (int i = 0; i < kTempSlots; ++i) {
+    if (g_temp_used[i]) ::unlink(g_temp_paths[i]);
+  }
+  ::signal(signal_number, SIG_DFL);
+  ::raise(signal_number);
+}
+
+void InstallTempCleanup() {
+  static bool installed = false;
+  if (installed) return;
+  installed = true;
+  for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction action {};
+    action.sa_handler = RemoveTempsAndDie;
+    sigemptyset(&action.sa_mask);
+    ::sigaction(signal_number, &action, nullptr);
+  }
+}
+
+// A slot holding path until ReleaseTemp (-1 when every slot is taken: the file is then only
+// removed by the normal paths, not by a signal).
+int HoldTemp(const std::string& path) {
+  if (path.size() >= kTempPathBytes) return -1;
+  InstallTempCleanup();
+  for (int i = 0; i < kTempSlots; ++i) {
+    if (g_temp_used[i]) continue;
+    std::memcpy(g_temp_paths[i], path.c_str(), path.size() + 1);
+    g_temp_used[i] = 1;
+    return i;
+  }
+  return -1;
+}
+void ReleaseTemp(int slot) {
+  if (slot >= 0) g_temp_used[slot] = 0;
+}
+
+// Which file path names, whatever the spelling ("a.json", "./a.json", "dir/../a.json", a symlink
+// to it): the real path of its folder and its name, or "" when the folder does not resolve.
+std::string FileIdentity(const std::string& path) {
+  std::size_t slash = path.find_last_of('/');
+  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  char* real = ::realpath(Folder(path).c_str(), nullptr);
+  if (real == nullptr) return "";
+  std::string identity = std::string(real) + "/" + name;
+  std::free(real);
+  struct stat info {};
+  if (::stat(identity.c_str(), &info) == 0) {  // an existing file: its device and inode
+    return "inode:" + std::to_string(info.st_dev) + ":" + std::to_string(info.st_ino);
+  }
+  return identity;
+}
+
+}  // namespace
+
 StagedOutputs::~StagedOutputs() { RemoveTemps(); }
 
 void StagedOutputs::RemoveTemps() {
-  for (const Staged& s : staged_) ::unlink(s.temp.c_str());
+  for (const Staged& s : staged_) {
+    ::unlink(s.temp.c_str());
+    ReleaseTemp(s.slot);
+    if (!s.backup.empty()) {
+      ::unlink(s.backup.c_str());
+      ReleaseTemp(s.backup_slot);
+    }
+  }
   staged_.clear();
 }
 
@@ -189,8 +462,16 @@ Status StagedOutputs::Stage(const std::string& field, const std::string& path,
   if (path.empty()) return Status::Error(field, "empty; must be a file name");
   if (path.back() == '/') return cannot;
   const std::string folder = Folder(path);
+  const std::string identity = FileIdentity(path);
   for (const Staged& s : staged_) {
-    if (s.path == path) return Status::Error(field, "'" + Echo(path) + "' is also " + s.field);
+    if (s.path == path || (!identity.empty() && s.identity == identity)) {
+      return Status::Error(field, "'" + Echo(path) + "' is the same file as " + s.field + " '" +
+                                      Echo(s.path) + "'; give each output its own file");
+    }
+  }
+  struct stat target {};
+  if (::stat(path.c_str(), &target) == 0 && !S_ISREG(target.st_mode)) {
+    return Status::Error(field, "cannot write '" + Echo(path) + "': not a regular file");
   }
   std::string temp;
   int fd = -1;
@@ -200,29 +481,61 @@ Status StagedOutputs::Stage(const std::string& field, const std::string& path,
     if (fd < 0 && errno != EEXIST) return cannot;
   }
   if (fd < 0) return cannot;
+  const int slot = HoldTemp(temp);  // removed should a signal end the process while writing
   const bool written = WriteAll(fd, bytes) && ::fsync(fd) == 0;
   const bool closed = ::close(fd) == 0;
   if (!written || !closed) {
     ::unlink(temp.c_str());
+    ReleaseTemp(slot);
     return cannot;
   }
-  staged_.push_back({field, path, temp});
+  staged_.push_back({field, path, temp, identity, "", slot, -1});
   return Status::Ok();
 }
 
 Status StagedOutputs::Commit() {
+  // A file already at a target is kept as a hard link beside it until every rename has succeeded,
+  // so that a failed commit puts it back instead of losing it.
+  for (Staged& s : staged_) {
+    struct stat info {};
+    if (::lstat(s.path.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) continue;
+    for (unsigned attempt = 0; attempt < 100; ++attempt) {
+      const std::string backup = TempName(Folder(s.path), attempt);
+      if (::link(s.path.c_str(), backup.c_str()) == 0) {
+        s.backup = backup;
+        s.backup_slot = HoldTemp(backup);
+        break;
+      }
+      if (errno != EEXIST) break;  // no hard links here: the old file cannot be kept
+    }
+  }
   for (std::size_t i = 0; i < staged_.size(); ++i) {
     if (::rename(staged_[i].temp.c_str(), staged_[i].path.c_str()) != 0) {
       const Status cannot =
           Status::Error(staged_[i].field, "cannot write '" + Echo(staged_[i].path) + "'");
-      for (std::size_t k = 0; k < i; ++k) ::unlink(staged_[k].path.c_str());  // all or none
-      staged_.erase(staged_.begin(), staged_.begin() + static_cast<std::ptrdiff_t>(i));
+      for (std::size_t k = 0; k < i; ++k) {  // all or none: what was there before comes back
+        Staged& done = staged_[k];
+        if (!done.backup.empty() && ::rename(done.backup.c_str(), done.path.c_str()) == 0) {
+          ReleaseTemp(done.backup_slot);
+          done.backup.clear();
+        } else {
+          ::unlink(done.path.c_str());
+        }
+        done.temp.clear();  // renamed: no temporary of it left to remove
+      }
       RemoveTemps();
       return cannot;
     }
+    ReleaseTemp(staged_[i].slot);
+    staged_[i].slot = -1;
   }
   // Make the renames durable where the platform allows a folder fsync (best effort).
-  for (const Staged& s : staged_) {
+  for (Staged& s : staged_) {
+    if (!s.backup.empty()) {
+      ::unlink(s.backup.c_str());
+      ReleaseTemp(s.backup_slot);
+      s.backup.clear();
+    }
     int dir = ::open(Folder(s.path).c_str(), O_RDONLY | O_CLOEXEC);
     if (dir >= 0) {
       (void)::fsync(dir);

@@ -37,6 +37,10 @@ inline Status AsFlag(const Status& status, const std::string& flag) {
 struct Command {
   CLI::App* app;
   std::function<int(std::ostream& out)> run;
+  // A quick valid run's arguments after the command's words ("--steps", "3"), on which the shared
+  // hostile-input suite (tests/cli/hostile.test.mjs, through 'niwa flags') varies one flag at a
+  // time; empty: the suite gives the hostile flag alone.
+  std::vector<std::string> example = {};
 };
 // A study's parameter table and presets, for 'niwa params [STUDY]' and 'niwa presets [STUDY]'.
 struct Study {
@@ -46,6 +50,9 @@ struct Study {
   // The table as JSON for 'niwa params STUDY --json' when it carries more than ParamTableJson
   // (the tree's Getting started group); empty: ParamTableJson(*table).
   std::function<std::string()> table_json = {};
+  // A quick valid run of the command that takes this study's --set KEY=VALUE and --url (full
+  // words, "ivy", "grow", "--steps", "3"), on which the hostile-input suite varies every table row.
+  std::vector<std::string> example = {};
 };
 struct CommandList : std::vector<Command> {
   std::vector<Study> studies;  // the first registered is the default of 'params' and 'presets'
@@ -74,18 +81,67 @@ FlagRange RowFlagRange(const ParamSpec& spec);
 // decimal only, never empty, then CheckFlag. Throws BadInput naming the flag and its range.
 double FlagNumber(const std::string& flag, const std::string& text, const FlagRange& range);
 
+// What a flag takes, declared where the flag is added, for the checks every command shares
+// (RunCli's CheckApplicable) and for the hostile-input suite ('niwa flags' lists every command's
+// flags with their kinds, ranges and output extensions). A flag added without a declaration is a
+// switch (no value) or free text.
+enum class FlagKind { kSwitch, kNumber, kText, kInput, kOutput };
+struct FlagInfo {
+  explicit FlagInfo(FlagKind k = FlagKind::kText, FlagRange r = {0, 0}) : kind(k), range(r) {}
+  FlagKind kind;
+  FlagRange range;                           // kNumber
+  std::vector<std::string> extensions;       // kOutput: the endings it accepts (".glb")
+  std::string only_with;                     // applies only with this output flag ("--out") ...
+  std::vector<std::string> only_endings;     // ... ending in one of these (".svg")
+  std::vector<const CLI::Option*> excludes;  // flags it cannot be given with
+};
+// Declares what an added flag takes (the flags above call it; a command file calls it for a flag
+// that CLI11 adds directly).
+CLI::Option* Declare(CLI::Option* option, FlagInfo info);
+const FlagInfo* Declared(const CLI::Option* option);
+// Forgets every declaration (RunCli builds a new app for each call).
+void ClearDeclarations();
+// An input file flag (kInput): read later with ReadFile or a core reader.
+CLI::Option* AddInputFlag(CLI::App* cmd, const std::string& flag, std::string* path,
+                          const std::string& help);
+// An output file flag (kOutput) taking one of extensions; the ending is checked when the flag is
+// given ("--out: 'a.txt' must end in .glb, .json or .svg"), before any work.
+CLI::Option* AddOutputFlag(CLI::App* cmd, const std::string& flag, std::string* path,
+                           std::vector<std::string> extensions, const std::string& help);
+// The flag applies only when output_flag is given and ends in one of endings; given otherwise,
+// CheckApplicable refuses it ("--caption: only applies with --out FILE.svg").
+CLI::Option* OnlyWith(CLI::Option* option, const std::string& output_flag,
+                      std::vector<std::string> endings);
+// Flags that cannot be given together (--mesh FILE and --scene NAME): given both, CheckApplicable
+// refuses the one declared first ("--mesh: give only one of --mesh and --scene").
+void Excludes(CLI::Option* a, CLI::Option* b);
+// Refuses every given flag of the chosen command whose OnlyWith does not hold, and
+// flags given together that exclude each other.
+void CheckApplicable(const CLI::App& cmd);
+// A caption flag: printable text of at most kMaxCaptionBytes bytes (control characters refused,
+// not silently dropped), written into markup escaped (base/markup_escape.h) by the core.
+constexpr std::size_t kMaxCaptionBytes = 200;
+CLI::Option* AddCaptionFlag(CLI::App* cmd, const std::string& flag, std::string* caption,
+                            const std::string& help);
+// Every command's flags as JSON, for 'niwa flags' (the hostile-input suite's list):
+// [{"command": ["ivy","grow"], "example": [...], "flags": [{"flag", "kind", "repeatable",
+// "min", "max", "integer", "extensions", "only_with", "only_endings"}]}] and the studies
+// {"studies": [{"name", "example"}]}.
+std::string FlagsJson(const CommandList& commands);
+
 // Adds a numeric flag read as text and parsed by FlagNumber into *value when CLI11 stores it, so
 // CLI11's own conversions (hex, octal, wrapping) never see it. T: int, uint64_t, float or double.
 template <typename T>
 CLI::Option* AddNumberFlag(CLI::App* cmd, const std::string& flag, T* value, const FlagRange& range,
                            const std::string& help) {
   static_assert(std::is_arithmetic_v<T>);
-  return cmd->add_option_function<std::string>(
+  CLI::Option* option = cmd->add_option_function<std::string>(
       flag,
       [flag, value, range](const std::string& text) {
         *value = static_cast<T>(FlagNumber(flag, text, range));
       },
       help);
+  return Declare(option, FlagInfo(FlagKind::kNumber, range));
 }
 
 // Largest file read by --params (1 MiB) and --contour (16 MiB); --mesh uses io::kMaxMeshFileBytes.
@@ -104,7 +160,10 @@ Result<std::string> ReadFile(const std::string& path, const std::string& field,
 // The outputs of one run, written all or none: Stage writes each to a unique temporary file in its
 // target's folder (created with O_CREAT|O_EXCL|O_NOFOLLOW, mode 0644 under the umask, fsynced);
 // Commit renames them all into place. A failure (or destruction before Commit) removes every
-// temporary; a rename failing after others succeeded removes the outputs already renamed.
+// temporary; a rename failing after others succeeded puts back the files they replaced (kept as
+// hard links until the commit ends) and removes the outputs that were new. The same file named
+// twice ("a.json" and "./a.json") is refused at Stage; SIGINT, SIGTERM and SIGHUP remove the
+// temporaries before the process ends.
 class StagedOutputs {
  public:
   StagedOutputs() = default;
@@ -118,6 +177,9 @@ class StagedOutputs {
  private:
   struct Staged {
     std::string field, path, temp;
+    std::string identity;  // the file it names, however spelled (a second name is refused)
+    std::string backup;    // a hard link to the file it replaces, until Commit ends
+    int slot = -1, backup_slot = -1;  // the signal handler's slots (removed on SIGINT/SIGTERM)
   };
   void RemoveTemps();
   std::vector<Staged> staged_;

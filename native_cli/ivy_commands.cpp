@@ -35,21 +35,18 @@ constexpr FlagRange kSubdivideRange = {0, ivy::kMaxIvySubdivide, true};
 constexpr FlagRange kSvgLeavesRange = {0, 1, true};
 
 struct IvyOptions {
-  std::string scene, mesh, steps, seed, preset, params_file, url, accel = "bvh", subdivide = "0";
-  std::string tree_preset, tree_years = "10";
-  std::string svg_leaves = "1", caption;
+  std::string scene, mesh, preset, params_file, url, accel = "bvh";
+  double steps = 0, seed = 0, subdivide = 0, tree_years = 10, svg_leaves = 1;
+  std::string tree_preset, caption;
   std::string out_path;
   std::vector<std::string> seed_points, sets;
   bool stats = false, with_support = false;
   BudgetOptions budget;
+  CLI::App* cmd = nullptr;  // which flags were given
 };
 
 double Ms(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
-}
-
-double ParseFlagNumber(const std::string& flag, const std::string& text, const FlagRange& range) {
-  return FlagNumber(flag, text, range);  // the one strict parser (cli_common)
 }
 
 // "X,Y,Z" or a named seed of the scene.
@@ -135,12 +132,9 @@ ivy::IvyState ResolveState(const IvyOptions& o) {
   }
   for (const std::string& set : o.sets) Check(state.params.SetFromAssignment(set).Within("--set"));
   // The flags' own strict parse (their lines), then the state's setters.
-  if (!o.steps.empty()) {
-    Check(AsIvyFlags(ivy::SetIvySteps(ParseFlagNumber("--steps", o.steps, kStepsRange), &state)));
-  }
-  if (!o.seed.empty()) {
-    Check(AsIvyFlags(ivy::SetIvySeed(ParseFlagNumber("--seed", o.seed, kSeedRange), &state)));
-  }
+  // The flags were parsed strictly (AddNumberFlag); the state's setters check the rest.
+  if (o.cmd->count("--steps")) Check(AsIvyFlags(ivy::SetIvySteps(o.steps, &state)));
+  if (o.cmd->count("--seed")) Check(AsIvyFlags(ivy::SetIvySeed(o.seed, &state)));
   Check(ValidateIvyParams(state.params));
   return state;
 }
@@ -155,15 +149,11 @@ Status TreeSceneError(const Status& s, const Budget& budget, const std::string& 
 
 int RunGrow(const IvyOptions& o, std::ostream& out) {
   const auto t_start = std::chrono::steady_clock::now();
-  const std::string ext = o.out_path.empty() ? "" : Extension(o.out_path);
-  if (!o.out_path.empty() && ext != ".json" && ext != ".lsys" && ext != ".glb" && ext != ".svg") {
-    Fail(Status::Error("--out",
-                       "'" + Echo(o.out_path) + "' must end in .json, .lsys, .glb or .svg"));
-  }
+  const std::string ext = o.out_path.empty() ? "" : Extension(o.out_path);  // checked by --out
   if (o.accel != "bvh" && o.accel != "linear") {
     Fail(Status::Error("--accel", "'" + Echo(o.accel) + "' is unknown; must be bvh or linear"));
   }
-  const int levels = static_cast<int>(ParseFlagNumber("--subdivide", o.subdivide, kSubdivideRange));
+  const int levels = static_cast<int>(o.subdivide);
   ivy::IvyState state = ResolveState(o);
   const Budget budget = ResolveBudget(o.budget);
   if (!o.mesh.empty() + !o.scene.empty() + !o.tree_preset.empty() > 1) {
@@ -174,7 +164,7 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   ivy::IvySupportInput input;
   bool tree = false;
   if (!o.tree_preset.empty()) {
-    const double years = ParseFlagNumber("--tree-years", o.tree_years, kTreeYearsRange);
+    const double years = o.tree_years;
     Result<ivy::IvySupportInput> t =
         compose::IvyTreeSupport(o.tree_preset, years, budget, "--tree-years");
     if (!t.ok()) Fail(AsIvyFlags(t.status()));  // tree, tree_years or the budget's limit
@@ -260,8 +250,7 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
     ivy::IvyExportOptions export_options;
     export_options.with_support = o.with_support;
     if (ext == ".svg") {
-      export_options.svg.leaves =
-          ParseFlagNumber("--svg-leaves", o.svg_leaves, kSvgLeavesRange) != 0;
+      export_options.svg.leaves = o.svg_leaves != 0;
       export_options.svg.caption = o.caption;
     }
     const auto t0 = std::chrono::steady_clock::now();
@@ -302,53 +291,74 @@ int RunScenes(std::ostream& out) {
 }  // namespace
 
 void AddIvyCommands(CLI::App& app, CommandList& commands) {
-  commands.studies.push_back({"ivy", &IvyTable(), [](std::ostream& out) {
+  commands.studies.push_back({"ivy",
+                              &IvyTable(),
+                              [](std::ostream& out) {
                                 for (const std::string& name : IvyPresetNames()) {
                                   out << name;
                                   for (const auto& [key, value] : IvyPresetOverrides(name))
                                     out << "\t" << key << "=" << FormatNumber(value);
                                   out << "\n";
                                 }
-                              }});
+                              },
+                              {},
+                              {"ivy", "grow", "--steps", "3", "--stats"}});
   CLI::App* ivy_app = Subcommand(app, "ivy", "Grow climbing ivy over a mesh (Shindo & Sakamoto)");
   ivy_app->require_subcommand(1);
   auto o = std::make_shared<IvyOptions>();
   CLI::App* grow = ivy_app->add_subcommand(
       "grow", "Grow ivy on a built-in scene or a mesh; print --stats or write --out");
-  grow->add_option("--scene", o->scene,
-                   "Built-in support: cubes4 (default), wall, overhang, stairs, pillar, sphere, "
-                   "free (see 'niwa ivy scenes'), or tree (the state's tree= and tree_years=)");
-  grow->add_option("--mesh", o->mesh, "Support mesh file: .glb, .gltf or .obj");
-  grow->add_option("--tree-preset", o->tree_preset,
-                   "Climb a Niwa tree's bark ('niwa presets tree'; default ivy preset: metric)");
-  grow->add_option("--tree-years", o->tree_years,
-                   "Age of that tree, " + RangeHelp(kTreeYearsRange) + " (default 10)");
+  CLI::Option* scene = grow->add_option(
+      "--scene", o->scene,
+      "Built-in support: cubes4 (default), wall, overhang, stairs, pillar, sphere, "
+      "free (see 'niwa ivy scenes'), or tree (the state's tree= and tree_years=)");
+  CLI::Option* mesh =
+      AddInputFlag(grow, "--mesh", &o->mesh, "Support mesh file: .glb, .gltf or .obj");
+  CLI::Option* tree = grow->add_option(
+      "--tree-preset", o->tree_preset,
+      "Climb a Niwa tree's bark ('niwa presets tree'; default ivy preset: metric)");
+  // One support ("--scene: give only one of --scene and --mesh").
+  Excludes(mesh, scene);
+  Excludes(mesh, tree);
+  Excludes(scene, tree);
+  AddNumberFlag(grow, "--tree-years", &o->tree_years, kTreeYearsRange,
+                "Age of that tree, " + RangeHelp(kTreeYearsRange) + " (default 10)");
   grow->add_option("--seed-point", o->seed_points,
                    "Growth start X,Y,Z or a scene's named seed; repeat for several plants");
-  grow->add_option("--steps", o->steps,
-                   "Final step number, " + RangeHelp(kStepsRange) + " (default 50)");
-  grow->add_option("--seed", o->seed, "Random seed, " + RangeHelp(kSeedRange) + " (default 1)");
+  AddNumberFlag(grow, "--steps", &o->steps, kStepsRange,
+                "Final step number, " + RangeHelp(kStepsRange) + " (default 50)");
+  AddNumberFlag(grow, "--seed", &o->seed, kSeedRange,
+                "Random seed, " + RangeHelp(kSeedRange) + " (default 1)");
   grow->add_option("--preset", o->preset, "paper (default), literal, improved or metric");
   grow->add_option("--set", o->sets, "KEY=VALUE of the ivy table ('niwa params ivy')");
-  grow->add_option("--params", o->params_file,
-                   "State JSON {preset, seed, steps, params}; other flags override it");
+  AddInputFlag(grow, "--params", &o->params_file,
+               "State JSON {preset, seed, steps, params}; other flags override it");
   grow->add_option("--url", o->url,
                    "Share-link hash: preset=..&seed=..&steps=..&KEY=V; other flags override it");
   grow->add_option("--accel", o->accel, "Geometry queries: bvh (default) or linear (brute force)");
-  grow->add_option("--subdivide", o->subdivide,
-                   "Split every support triangle into 4^K coplanar ones, K in [" +
-                       FormatNumber(kSubdivideRange.min) + ", " +
-                       FormatNumber(kSubdivideRange.max) + "]");
+  AddNumberFlag(grow, "--subdivide", &o->subdivide, kSubdivideRange,
+                "Split every support triangle into 4^K coplanar ones, K in [" +
+                    FormatNumber(kSubdivideRange.min) + ", " + FormatNumber(kSubdivideRange.max) +
+                    "]");
   grow->add_flag("--stats", o->stats, "Print one JSON object of statistics on stdout");
-  grow->add_option("--out", o->out_path,
-                   "Write .json (buds, internodes), .lsys, .glb or .svg (front and side views)");
-  grow->add_flag("--with-support", o->with_support, "The .glb also holds the support mesh");
-  grow->add_option("--svg-leaves", o->svg_leaves, ".svg: draw the leaves, 0 or 1 (default 1)");
-  grow->add_option("--caption", o->caption, ".svg: a line of text under the views");
+  AddOutputFlag(grow, "--out", &o->out_path, {".json", ".lsys", ".glb", ".svg"},
+                "Write .json (buds, internodes), .lsys, .glb or .svg (front and side views)");
+  OnlyWith(
+      grow->add_flag("--with-support", o->with_support, "The .glb also holds the support mesh"),
+      "--out", {".glb"});
+  OnlyWith(AddNumberFlag(grow, "--svg-leaves", &o->svg_leaves, kSvgLeavesRange,
+                         ".svg: draw the leaves, 0 or 1 (default 1)"),
+           "--out", {".svg"});
+  OnlyWith(AddCaptionFlag(grow, "--caption", &o->caption,
+                          ".svg: a line of printable text under the views, at most " +
+                              std::to_string(kMaxCaptionBytes) + " bytes"),
+           "--out", {".svg"});
   AddBudgetOptions(grow, &o->budget);
-  commands.push_back({grow, [o](std::ostream& out) { return RunGrow(*o, out); }});
+  o->cmd = grow;
+  commands.push_back(
+      {grow, [o](std::ostream& out) { return RunGrow(*o, out); }, {"--steps", "3", "--stats"}});
   CLI::App* scenes = ivy_app->add_subcommand("scenes", "List the built-in scenes and seeds");
-  commands.push_back({scenes, [](std::ostream& out) { return RunScenes(out); }});
+  commands.push_back({scenes, [](std::ostream& out) { return RunScenes(out); }, {}});
 }
 
 }  // namespace niwa::cli

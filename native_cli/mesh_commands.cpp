@@ -28,26 +28,20 @@ constexpr double kMaxCoordinate = 1e30;
 
 // Flags every mesh command shares.
 struct MeshSource {
-  std::string mesh, scene, subdivide = "0";
+  std::string mesh, scene;
+  int subdivide = 0;
 };
 
 void AddMeshSource(CLI::App* cmd, MeshSource* s) {
-  cmd->add_option("--mesh", s->mesh, "Mesh file: .glb, .gltf (glTF 2.0, Draco natively) or .obj");
-  cmd->add_option("--scene", s->scene,
-                  "Built-in mesh instead of --mesh: box (1 m cube), plane (2 m, 4 x 4 quads), "
-                  "cylinder (r 0.5 m, h 1 m, 32 sides), icosphere (r 1 m, level 3)");
-  cmd->add_option("--subdivide", s->subdivide,
-                  "Split every triangle into 4^K coplanar ones, K in [0, 8] (default 0)");
-}
-
-int ParseSubdivide(const std::string& text) {
-  std::optional<double> k = ParseNumber(text);
-  if (!k || *k != std::floor(*k) || *k < 0 || *k > kMaxSubdivide) {
-    Fail(Status::Error("--subdivide", "'" + text +
-                                          "' is out of range; must be a whole number in [0, " +
-                                          std::to_string(kMaxSubdivide) + "]"));
-  }
-  return static_cast<int>(*k);
+  CLI::Option* mesh = AddInputFlag(cmd, "--mesh", &s->mesh,
+                                   "Mesh file: .glb, .gltf (glTF 2.0, Draco natively) or .obj");
+  CLI::Option* scene =
+      cmd->add_option("--scene", s->scene,
+                      "Built-in mesh instead of --mesh: box (1 m cube), plane (2 m, 4 x 4 quads), "
+                      "cylinder (r 0.5 m, h 1 m, 32 sides), icosphere (r 1 m, level 3)");
+  Excludes(mesh, scene);
+  AddNumberFlag(cmd, "--subdivide", &s->subdivide, {0, kMaxSubdivide, true},
+                "Split every triangle into 4^K coplanar ones, K in [0, 8] (default 0)");
 }
 
 glm::vec3 ParseVec3(const std::string& flag, const std::string& text) {
@@ -112,7 +106,7 @@ LoadedMesh Load(const MeshSource& s) {
                        "required: a .glb, .gltf or .obj file (or --scene "
                        "box|plane|cylinder|icosphere)"));
   }
-  const int levels = ParseSubdivide(s.subdivide);
+  const int levels = s.subdivide;  // parsed strictly by its flag
   LoadedMesh out;
   auto t0 = std::chrono::steady_clock::now();
   if (!s.mesh.empty()) {
@@ -224,7 +218,8 @@ void AddMeshCommands(CLI::App& app, CommandList& commands) {
   CLI::App* stats = mesh->add_subcommand(
       "stats", "Triangles, vertices, degenerate triangles, bounds, area and BVH size, as JSON");
   AddMeshSource(stats, &o->stats);
-  commands.push_back({stats, [o](std::ostream& out) { return RunStats(o->stats, out); }});
+  commands.push_back(
+      {stats, [o](std::ostream& out) { return RunStats(o->stats, out); }, {"--scene", "box"}});
 
   CLI::App* closest = mesh->add_subcommand(
       "closest", "Nearest surface point to --point (distance, point, triangle)");
@@ -232,9 +227,10 @@ void AddMeshCommands(CLI::App& app, CommandList& commands) {
   closest->add_option("--point", o->point, "Query point X,Y,Z in metres");
   closest->add_option("--max-distance", o->closest_max,
                       "Search radius in metres, in [0, 1e30] or inf (default inf)");
-  commands.push_back({closest, [o](std::ostream& out) {
-                        return RunClosest(o->closest, o->point, o->closest_max, out);
-                      }});
+  commands.push_back(
+      {closest,
+       [o](std::ostream& out) { return RunClosest(o->closest, o->point, o->closest_max, out); },
+       {"--scene", "box", "--point", "0,2,0"}});
 
   CLI::App* ray = mesh->add_subcommand("ray", "First hit of the ray --origin + t --dir, t >= 0");
   AddMeshSource(ray, &o->ray);
@@ -243,7 +239,9 @@ void AddMeshCommands(CLI::App& app, CommandList& commands) {
   ray->add_option("--max-distance", o->ray_max,
                   "Longest t in metres, in [0, 1e30] or inf (default inf)");
   commands.push_back(
-      {ray, [o](std::ostream& out) { return RunRay(o->ray, o->origin, o->dir, o->ray_max, out); }});
+      {ray,
+       [o](std::ostream& out) { return RunRay(o->ray, o->origin, o->dir, o->ray_max, out); },
+       {"--scene", "box", "--origin", "0,2,0", "--dir", "0,-1,0"}});
 }
 
 }  // namespace niwa::cli

@@ -178,9 +178,11 @@ void AddRenderCommands(CLI::App& app, CommandList& commands) {
   auto options = std::make_shared<RenderStatsOptions>();
   AddStateOptions(render_stats, TreeParamTable(), &options->state);
   AddRenderStatsOptions(render_stats, options.get());
-  commands.push_back({render_stats, [render_stats, options](std::ostream& out) {
+  commands.push_back({render_stats,
+                      [render_stats, options](std::ostream& out) {
                         return RunRenderStats(*options, *render_stats, out);
-                      }});
+                      },
+                      {"--preset", "binary", "--years", "2"}});
 }
 
 }  // namespace niwa::cli

@@ -52,15 +52,19 @@ void AddSwayOptions(CLI::App* cmd, SwayOptions* o) {
                   "the one table, see 'niwa params'");
   AddNumberFlag(cmd, "--tips", &o->tips, kTips,
                 "Tips traced in --csv and --svg, " + RangeHelp(kTips) + " (default 4)");
-  cmd->add_option("--csv", o->csv_path, "Write tip trajectories: time,node,x,y,z (s, cm)");
-  cmd->add_option("--svg", o->svg_path, "Write a plot of tip displacement against time");
+  AddOutputFlag(cmd, "--csv", &o->csv_path, {".csv"},
+                "Write tip trajectories: time,node,x,y,z (s, cm)");
+  AddOutputFlag(cmd, "--svg", &o->svg_path, {".svg"},
+                "Write a plot of tip displacement against time");
   cmd->add_flag("--stats", o->stats, "Print one JSON object of statistics on stdout");
-  cmd->add_option("--out", o->out_path,
-                  "Write the sway: .glb (tree mesh skinned to the node points, one animation clip "
-                  "of the run), .csv (as --csv) or .svg (as --svg)");
-  AddNumberFlag(cmd, "--fps", &o->fps, kFps,
-                "Animation keys per second of simulated time in --out .glb, " + RangeHelp(kFps) +
-                    " (default 30); each key is the state at the nearest time step");
+  AddOutputFlag(cmd, "--out", &o->out_path, {".glb", ".csv", ".svg"},
+                "Write the sway: .glb (tree mesh skinned to the node points, one animation clip "
+                "of the run), .csv (as --csv) or .svg (as --svg)");
+  OnlyWith(AddNumberFlag(cmd, "--fps", &o->fps, kFps,
+                         "Animation keys per second of simulated time in --out .glb, " +
+                             RangeHelp(kFps) +
+                             " (default 30); each key is the state at the nearest time step"),
+           "--out", {".glb"});
 }
 
 // The flag whose values made CheckSwayParams fail: the last given of --gust, --set-sway, --set,
@@ -103,23 +107,11 @@ SwayParams ResolveSwayParams(const SwayOptions& o, const CLI::App& cmd, TreePara
   const Status sway = CheckSwayParams(*params);  // a row's field, under the flag that set it
   if (!sway.ok()) throw BadInput{SwayErrorSource(o, cmd) + ": " + sway.Line()};
   Check(CheckFlag("--tips", o.tips, kTips));
-  if (!o.csv_path.empty() && Extension(o.csv_path) != ".csv") {
-    throw BadInput{"--csv: '" + Echo(o.csv_path) + "' must end in .csv"};
-  }
-  if (!o.svg_path.empty() && Extension(o.svg_path) != ".svg") {
-    throw BadInput{"--svg: '" + Echo(o.svg_path) + "' must end in .svg"};
-  }
   return SwayParams(*params);
 }
 
 int RunSwayCommand(const SwayOptions& o, const CLI::App& cmd, std::ostream& out) {
-  const std::string out_ext = Extension(o.out_path);
-  if (!o.out_path.empty() && out_ext != ".glb" && out_ext != ".csv" && out_ext != ".svg") {
-    throw BadInput{"--out: '" + Echo(o.out_path) + "' must end in .glb, .csv or .svg"};
-  }
-  if (cmd.count("--fps") && out_ext != ".glb") {
-    throw BadInput{"--fps: only applies with --out FILE.glb"};
-  }
+  const std::string out_ext = Extension(o.out_path);  // its ending and --fps: the shared flags
   Check(CheckFlag("--fps", o.fps, kFps));
   TreeState state = ResolveTreeState(o.state, cmd);
   SwayParams params = ResolveSwayParams(o, cmd, &state.params);
@@ -190,7 +182,9 @@ void AddSwayCommands(CLI::App& app, CommandList& commands) {
   AddStateOptions(sway, TreeParamTable(), &options->state);
   AddSwayOptions(sway, options.get());
   commands.push_back(
-      {sway, [sway, options](std::ostream& out) { return RunSwayCommand(*options, *sway, out); }});
+      {sway,
+       [sway, options](std::ostream& out) { return RunSwayCommand(*options, *sway, out); },
+       {"--preset", "binary", "--years", "2", "--duration", "1"}});
 }
 
 }  // namespace niwa::cli

@@ -36,16 +36,16 @@ void AddStateOptions(CLI::App* cmd, const ParamTable& table, StateOptions* o) {
                 "Random seed, decimal, " + RangeHelp(0, kMaxSeed) + " (default: the preset's)");
   cmd->add_option("--set", o->sets,
                   "Override a parameter: key=value (repeatable; see " + params_command + ")");
-  cmd->add_option("--params", o->params_file, "JSON file of parameters {\"key\": value, ...}");
+  AddInputFlag(cmd, "--params", &o->params_file, "JSON file of parameters {\"key\": value, ...}");
   cmd->add_option(
       "--prune", o->prunes,
       "Prune after a year: YEAR:bID (branch id from the JSON) or YEAR:sinceY (repeatable)");
   cmd->add_option("--url", o->url,
                   "A share link (http://host/#preset=...) or its hash (preset=...&seed=...); "
                   "other flags override it");
-  cmd->add_option("--state", o->state_file,
-                  "A state file {preset, seed, years, params, prunes, camera} (the page's Save; "
-                  "missing keys take the preset's values); other flags override it")
+  AddInputFlag(cmd, "--state", &o->state_file,
+               "A state file {preset, seed, years, params, prunes, camera} (the page's Save; "
+               "missing keys take the preset's values); other flags override it")
       ->excludes("--url");
   if (table.name() == "tree") {
     cmd->add_option("--season", o->season,

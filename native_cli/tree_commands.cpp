@@ -24,7 +24,6 @@ namespace {
 const FlagRange kSvgSize = {100, 10000, true};
 const FlagRange kZeroOne = {0, 1, true};
 const FlagRange kMaxTriangles = {static_cast<double>(kMinLodTriangles), 100000000, true};
-constexpr std::size_t kMaxCaption = 200;  // bytes of --caption
 
 struct GrowOptions {
   StateOptions state;
@@ -38,51 +37,26 @@ struct GrowOptions {
 
 // SVG-only drawing options of 'tree grow' (used by scripts/figures).
 void AddSvgOptions(CLI::App* cmd, SvgOptions* o) {
-  AddNumberFlag(cmd, "--svg-width", &o->width, kSvgSize,
-                "SVG width in pixels, " + RangeHelp(kSvgSize) + " (default 600)");
-  AddNumberFlag(cmd, "--svg-height", &o->height, kSvgSize,
-                "SVG height in pixels, " + RangeHelp(kSvgSize) + " (default 600)");
-  AddNumberFlag(cmd, "--svg-leaves", &o->leaves, kZeroOne, "SVG: draw leaves, 0 or 1 (default 1)");
-  AddNumberFlag(cmd, "--svg-flowers", &o->flowers, kZeroOne,
-                "SVG: draw flowers, 0 or 1 (default 1)");
-  cmd->add_option("--caption", o->caption, "SVG: text under the tree");
-}
-
-void CheckSvgOptions(const SvgOptions& o, const CLI::App& cmd, const std::string& ext) {
-  for (const char* name :
-       {"--svg-width", "--svg-height", "--svg-leaves", "--svg-flowers", "--caption"}) {
-    if (cmd.count(name) && ext != ".svg") {
-      throw BadInput{std::string(name) + ": only applies with --out FILE.svg"};
-    }
-  }
-  // The caption goes into the SVG escaped (base/markup_escape.h); control characters, which XML
-  // cannot carry, are refused here rather than silently removed.
-  for (char c : o.caption) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte < 0x20 || byte == 0x7f) {
-      throw BadInput{"--caption: '" + Echo(o.caption) +
-                     "' holds a control character; must be printable text"};
-    }
-  }
-  if (o.caption.size() > kMaxCaption) {
-    throw BadInput{"--caption: " + std::to_string(o.caption.size()) + " bytes; must be at most " +
-                   std::to_string(kMaxCaption)};
-  }
-  Check(CheckFlag("--svg-width", o.width, kSvgSize));
-  Check(CheckFlag("--svg-height", o.height, kSvgSize));
+  const std::vector<std::string> svg = {".svg"};
+  OnlyWith(AddNumberFlag(cmd, "--svg-width", &o->width, kSvgSize,
+                         "SVG width in pixels, " + RangeHelp(kSvgSize) + " (default 600)"),
+           "--out", svg);
+  OnlyWith(AddNumberFlag(cmd, "--svg-height", &o->height, kSvgSize,
+                         "SVG height in pixels, " + RangeHelp(kSvgSize) + " (default 600)"),
+           "--out", svg);
+  OnlyWith(AddNumberFlag(cmd, "--svg-leaves", &o->leaves, kZeroOne,
+                         "SVG: draw leaves, 0 or 1 (default 1)"),
+           "--out", svg);
+  OnlyWith(AddNumberFlag(cmd, "--svg-flowers", &o->flowers, kZeroOne,
+                         "SVG: draw flowers, 0 or 1 (default 1)"),
+           "--out", svg);
+  // Escaped into the SVG by the core (base/markup_escape.h); control characters refused.
+  OnlyWith(AddCaptionFlag(cmd, "--caption", &o->caption, "SVG: text under the tree"), "--out", svg);
 }
 
 int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
-  std::string ext = Extension(o.out_path);
-  if (!o.out_path.empty() && ext != ".glb" && ext != ".json" && ext != ".svg") {
-    throw BadInput{"--out: '" + Echo(o.out_path) + "' must end in .glb, .json or .svg"};
-  }
-  CheckSvgOptions(o.svg, cmd, ext);
-  for (const char* name : {"--max-triangles", "--lod", "--lod-layout"}) {
-    if (cmd.count(name) && ext != ".glb") {
-      throw BadInput{std::string(name) + ": only applies with --out FILE.glb"};
-    }
-  }
+  // --out's ending and the flags that apply only to one output were checked by the shared flags.
+  const std::string ext = Extension(o.out_path);
   LodLayout layout = LodLayout::kSiblings;
   if (cmd.count("--lod-layout")) {
     if (!o.lod) throw BadInput{"--lod-layout: only applies with --lod"};
@@ -151,9 +125,6 @@ struct StateCommandOptions {
 // 'niwa tree state': the state the flags give (e.g. a page's link) as a state file, for
 // 'tree grow --state' and the page's Open. Nothing is grown.
 int RunState(const StateCommandOptions& o, const CLI::App& cmd, std::ostream& out) {
-  if (!o.out_path.empty() && Extension(o.out_path) != ".json") {
-    throw BadInput{"--out: '" + Echo(o.out_path) + "' must end in .json"};
-  }
   const std::string text = TreeStateFileJson(ResolveTreeState(o.state, cmd));
   if (o.out_path.empty()) {
     out << text;
@@ -168,7 +139,8 @@ int RunState(const StateCommandOptions& o, const CLI::App& cmd, std::ostream& ou
 }  // namespace
 
 void AddTreeCommands(CLI::App& app, CommandList& commands) {
-  commands.studies.push_back({"tree", &TreeParamTable(),
+  commands.studies.push_back({"tree",
+                              &TreeParamTable(),
                               [](std::ostream& out) {
                                 for (const Preset& p : Presets()) {
                                   out << p.name << "\t" << p.title << "\t" << p.years << " years\t"
@@ -176,39 +148,46 @@ void AddTreeCommands(CLI::App& app, CommandList& commands) {
                                 }
                               },
                               // with the Getting started group (tree/tree_simple.h), as the page
-                              &TreeParamTableJsonWithSimple});
+                              &TreeParamTableJsonWithSimple,
+                              {"tree", "grow", "--preset", "binary", "--years", "2"}});
   CLI::App* tree = Subcommand(app, "tree", "Grow and export trees");
 
   CLI::App* grow = tree->add_subcommand("grow", "Grow a tree and write it or its statistics");
   auto grow_options = std::make_shared<GrowOptions>();
   AddStateOptions(grow, TreeParamTable(), &grow_options->state);
-  grow->add_option("--out", grow_options->out_path,
-                   "Write the tree: .glb (binary glTF), .json or .svg (side view)");
+  AddOutputFlag(grow, "--out", &grow_options->out_path, {".glb", ".json", ".svg"},
+                "Write the tree: .glb (binary glTF), .json or .svg (side view)");
   grow->add_flag("--stats", grow_options->stats,
                  "Print one JSON object of statistics on stdout (also the output when no --out)");
-  AddNumberFlag(grow, "--max-triangles", &grow_options->max_triangles, kMaxTriangles,
-                ".glb within N triangles, " + RangeHelp(kMaxTriangles) +
-                    ": thin twigs become cards or lines, leaves leaf-cluster cards");
-  grow->add_flag("--lod", grow_options->lod,
-                 ".glb with nodes tree_LOD0, tree_LOD1 (<= 25 % of LOD0's triangles) and "
-                 "tree_LOD2 (<= 5 %)");
-  grow->add_option(
-      "--lod-layout", grow_options->lod_layout,
-      "With --lod: siblings (three scene nodes, the default) or msft (LOD0 in the "
-      "scene with the MSFT_lod extension naming LOD1 and LOD2: Babylon.js, UnityGLTF)");
-  commands.push_back({grow, [grow, grow_options](std::ostream& out) {
-                        return RunGrow(*grow_options, *grow, out);
-                      }});
+  OnlyWith(AddNumberFlag(grow, "--max-triangles", &grow_options->max_triangles, kMaxTriangles,
+                         ".glb within N triangles, " + RangeHelp(kMaxTriangles) +
+                             ": thin twigs become cards or lines, leaves leaf-cluster cards"),
+           "--out", {".glb"});
+  OnlyWith(grow->add_flag("--lod", grow_options->lod,
+                          ".glb with nodes tree_LOD0, tree_LOD1 (<= 25 % of LOD0's triangles) and "
+                          "tree_LOD2 (<= 5 %)"),
+           "--out", {".glb"});
+  OnlyWith(grow->add_option(
+               "--lod-layout", grow_options->lod_layout,
+               "With --lod: siblings (three scene nodes, the default) or msft (LOD0 in the "
+               "scene with the MSFT_lod extension naming LOD1 and LOD2: Babylon.js, UnityGLTF)"),
+           "--out", {".glb"});
+  commands.push_back(
+      {grow,
+       [grow, grow_options](std::ostream& out) { return RunGrow(*grow_options, *grow, out); },
+       {"--preset", "binary", "--years", "2"}});
 
   CLI::App* state_cmd = tree->add_subcommand(
       "state", "Write the state the flags give (e.g. --url LINK) as a state file for --state");
   auto state_options = std::make_shared<StateCommandOptions>();
   AddStateOptions(state_cmd, TreeParamTable(), &state_options->state);
-  state_cmd->add_option("--out", state_options->out_path,
-                        "Write the state file here (.json); without it, print it on stdout");
-  commands.push_back({state_cmd, [state_cmd, state_options](std::ostream& out) {
+  AddOutputFlag(state_cmd, "--out", &state_options->out_path, {".json"},
+                "Write the state file here (.json); without it, print it on stdout");
+  commands.push_back({state_cmd,
+                      [state_cmd, state_options](std::ostream& out) {
                         return RunState(*state_options, *state_cmd, out);
-                      }});
+                      },
+                      {"--preset", "binary"}});
 
   CLI::App* mappings = tree->add_subcommand(
       "mappings",
@@ -217,13 +196,15 @@ void AddTreeCommands(CLI::App& app, CommandList& commands) {
   AddStateOptions(mappings, TreeParamTable(), mapping_options.get());
   // Added after 'mappings' so that 'tree grow --help' lists its options as before.
   AddSvgOptions(grow, &grow_options->svg);
-  commands.push_back({mappings, [mappings, mapping_options](std::ostream& out) {
+  commands.push_back({mappings,
+                      [mappings, mapping_options](std::ostream& out) {
                         // A prune is checked against the tree it cuts, as 'tree grow' does.
                         TreeState state = ResolveTreeState(*mapping_options, *mappings);
                         if (!state.prunes.empty()) CheckPrunes(state, GrowTree(state));
                         out << TreeMappingsCsv(state.params);
                         return 0;
-                      }});
+                      },
+                      {"--preset", "binary", "--years", "2"}});
 }
 
 }  // namespace niwa::cli

@@ -9,6 +9,8 @@
 #include <limits>
 #include <vector>
 
+#include "base/markup_escape.h"
+
 namespace niwa::ivy {
 namespace {
 
@@ -16,21 +18,6 @@ std::string Num(double v) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.2f", v);
   return buffer;
-}
-
-std::string Escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '&')
-      out += "&amp;";
-    else
-      out += c;
-  }
-  return out;
 }
 
 // A large support as its silhouette: the triangles rasterised (cell centres inside a projected
@@ -180,7 +167,7 @@ std::string IvySvg(const IvyModel& model, const IvyParams& params, const geom::T
   }
   if (!o.caption.empty()) {
     s += "<text x=\"8\" y=\"" + std::to_string(h - 8) +
-         "\" font-family=\"sans-serif\" font-size=\"13\" fill=\"#111\">" + Escape(o.caption) +
+         "\" font-family=\"sans-serif\" font-size=\"13\" fill=\"#111\">" + XmlEscape(o.caption) +
          "</text>\n";
   }
   s += "</svg>\n";

@@ -65,7 +65,7 @@ TEST(MeshCli, BadInputIsOneLineAndExitTwo) {
       {{"mesh", "stats", "--mesh", MeshPath("nan.glb")},
        "niwa: error: --mesh: nan.glb: mesh 0 'nan' primitive 0 POSITION 1 is NaN or infinite\n"},
       {{"mesh", "stats", "--mesh", MeshPath("shapes.obj"), "--subdivide", "1.5"},
-       "niwa: error: --subdivide: '1.5' is out of range; must be a whole number in [0, 8]\n"},
+       "niwa: error: --subdivide: 1.5 is out of range; must be a whole number in [0, 8]\n"},
       {{"mesh", "stats", "--mesh", MeshPath("too_many_triangles.glb")},
        "niwa: error: --mesh: too_many_triangles.glb: 4096000 triangles in the scene; the limit is "
        "4000000 (4 M)\n"},

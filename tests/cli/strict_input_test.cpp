@@ -6,8 +6,10 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -241,8 +243,73 @@ TEST(SafeWrites, SeveralOutputsAreAllOrNone) {
   EXPECT_TRUE(Exists(glb) && Exists(csv) && Exists(svg));
   ExpectOneLineError(RunNiwa({"tree", "sway", "--preset", "binary", "--years", "3", "--duration",
                               "1", "--out", csv, "--csv", csv}),
-                     "is also --out");
+                     "is the same file as --out");
 }
+
+// Issue 34: a commit failing at its last rename put back the files the earlier renames had
+// replaced (before, it deleted them: the user's file at that path was lost).
+TEST(SafeWrites, AFailedCommitPutsBackWhatItReplaced) {
+  const std::string first = PathIn("kept.json"), second = PathIn("late-folder.json");
+  Write(first, "the user's file");
+  ::rmdir(second.c_str());
+  ::unlink(second.c_str());
+  cli::StagedOutputs outputs;
+  ASSERT_TRUE(outputs.Stage("--out", first, "new bytes").ok());
+  ASSERT_TRUE(outputs.Stage("--sidecar", second, "sidecar").ok());
+  ASSERT_EQ(::mkdir(second.c_str(), 0755), 0);  // the second target became a folder meanwhile
+  const Status commit = outputs.Commit();
+  EXPECT_EQ(commit.field(), "--sidecar");
+  EXPECT_EQ(Slurp(first), "the user's file");
+  EXPECT_TRUE(Partials().empty());
+  ::rmdir(second.c_str());
+  // A new file (nothing to put back) is removed instead.
+  const std::string fresh = PathIn("fresh.json");
+  ::unlink(fresh.c_str());
+  cli::StagedOutputs again;
+  ASSERT_TRUE(again.Stage("--out", fresh, "x").ok());
+  ASSERT_TRUE(again.Stage("--sidecar", second, "y").ok());
+  ASSERT_EQ(::mkdir(second.c_str(), 0755), 0);
+  EXPECT_FALSE(again.Commit().ok());
+  EXPECT_FALSE(Exists(fresh));
+  EXPECT_TRUE(Partials().empty());
+  ::rmdir(second.c_str());
+}
+
+// Issue 34: "a.json" and "./a.json" (or a folder spelled two ways) are one output, refused.
+TEST(SafeWrites, OneFileNamedTwoWaysIsRefused) {
+  ::mkdir(PathIn("sub").c_str(), 0755);
+  cli::StagedOutputs outputs;
+  ASSERT_TRUE(outputs.Stage("--out", PathIn("sub/a.json"), "1").ok());
+  ExpectError(outputs.Stage("--csv", PathIn("sub/../sub/./a.json"), "2"), "--csv",
+              "is the same file as --out");
+  Write(PathIn("b.json"), "old");
+  ::unlink(PathIn("b-link.json").c_str());
+  ASSERT_EQ(::link(PathIn("b.json").c_str(), PathIn("b-link.json").c_str()), 0);
+  ASSERT_TRUE(outputs.Stage("--svg", PathIn("b.json"), "3").ok());
+  ExpectError(outputs.Stage("--x", PathIn("b-link.json"), "4"), "--x", "is the same file as --svg");
+}
+
+#ifndef __EMSCRIPTEN__
+// Issue 34: SIGTERM (or Ctrl-C) while outputs are staged removes their temporaries (before, a
+// large write left hidden partial files of up to 778 MB).
+TEST(SafeWrites, ASignalRemovesTheTemporaries) {
+  ASSERT_TRUE(Partials().empty());
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    cli::StagedOutputs outputs;
+    (void)outputs.Stage("--out", PathIn("big.glb"), std::string(std::size_t{8} << 20, 'x'));
+    (void)outputs.Stage("--csv", PathIn("big.csv"), "y");
+    ::raise(SIGTERM);
+    ::_exit(0);  // not reached: the handler re-raises with the default action
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+  EXPECT_TRUE(Partials().empty());
+  EXPECT_FALSE(Exists(PathIn("big.glb")));
+}
+#endif
 
 TEST(SafeWrites, A255CharacterNameWorks) {
   const std::string name = std::string(250, 'n') + ".json";
