@@ -224,6 +224,9 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   options.stats = o.stats;
   options.export_change = o.stats ? ivy::kIvyStatsChange : ivy::kIvyChange;
   options.stats_change = ivy::kIvyStatsChange;
+  // Refused while growing, as soon as the buds made prove the output cannot fit.
+  options.planned_export = ext.empty() ? "" : ext.substr(1);
+  options.planned_with_support = o.with_support;
   Result<ivy::IvyRun> run = ivy::IvyRun::Start(state, *support, budget, options);
   if (!run.ok()) Fail(AsIvyFlags(run.status()));
   Check(AsIvyFlags(run->Advance({})));

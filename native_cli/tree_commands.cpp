@@ -71,21 +71,36 @@ int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
   Result<TreeRun> started = TreeRun::Start(state, budget);  // core/render/tree_run
   Check(run::RenameField(started.status(), TreeFlagNames()));
   TreeRun& run = *started;
-  Check(run.Advance(nullptr));  // stops early (truncated) at the budget's growth limits
+  TreeExportRequest request;
+  // The game-ready .glb (--max-triangles, --lod) builds its levels from the full mesh: its own
+  // estimate (core/render/lod_budget), the page's buildLodGlb the same.
+  request.kind = ext == ".json"                    ? TreeExportRequest::Kind::kJson
+                 : ext == ".svg"                   ? TreeExportRequest::Kind::kSvg
+                 : (o.lod || o.max_triangles >= 0) ? TreeExportRequest::Kind::kLodGlb
+                                                   : TreeExportRequest::Kind::kGlb;
+  request.svg = o.svg;
+  request.max_triangles = o.max_triangles;
+  request.lod = o.lod;
+  request.layout = layout;
+  // The export is checked after every year of growth: without prunes the tree only grows, so an
+  // export that does not fit the tree of year k cannot fit the last year's either, and is refused
+  // then (issue 34: a 100-year tree's LOD export was refused only once grown, after 1.5 GB).
+  Status early;
+  const bool check_early = !o.out_path.empty() && state.prunes.empty();
+  Status advanced = run.Advance([&](const run::Progress& progress) {
+    if (!check_early || progress.done == 0 || progress.done >= progress.total) return true;
+    const Status fits = run.CheckExport(request);
+    if (fits.ok()) return true;
+    early = Status::Error(fits.field(), "in year " + FormatNumber(progress.done) + " of " +
+                                            FormatNumber(progress.total) +
+                                            " already: " + fits.message());
+    return false;
+  });
+  if (!early.ok()) Fail(run::RenameField(early, TreeFlagNames()));
+  Check(advanced);  // stops early (truncated) at the budget's growth limits
   ReportTruncated(run.tree().truncated_by);
   CheckPrunes(state, run.tree());
   if (!o.out_path.empty()) {
-    TreeExportRequest request;
-    // The game-ready .glb (--max-triangles, --lod) builds its levels from the full mesh: its own
-    // estimate (core/render/lod_budget), the page's buildLodGlb the same.
-    request.kind = ext == ".json"                    ? TreeExportRequest::Kind::kJson
-                   : ext == ".svg"                   ? TreeExportRequest::Kind::kSvg
-                   : (o.lod || o.max_triangles >= 0) ? TreeExportRequest::Kind::kLodGlb
-                                                     : TreeExportRequest::Kind::kGlb;
-    request.svg = o.svg;
-    request.max_triangles = o.max_triangles;
-    request.lod = o.lod;
-    request.layout = layout;
     if (std::getenv("NIWA_BUDGET_TRACE")) {  // calibration (docs/budgets.md)
       const Estimate grown = run.grown(), export_estimate = run.ExportWork(request);
       std::fprintf(stderr, "budget: grown %.0f MB %.2f s; export %.0f MB %.2f s\n",

@@ -654,7 +654,7 @@ Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& see
     log->bud_steps += static_cast<double>(g.model().buds.size());
     g.Step(s);
     log->steps_run = s;
-    if (on_step && !on_step(s, steps)) return run::CancelledStatus();
+    if (on_step && !on_step(s, steps, g.model(), *log)) return run::CancelledStatus();
     if (!g.Alive()) {
       log->extinct_step = s;
       break;

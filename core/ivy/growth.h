@@ -41,9 +41,12 @@ struct IvyGrowLimits;  // ivy_budget.h
 // Errors name state fields: "steps" (outside [0, 10000]), "seed_points" (none, more than 64, not
 // finite, or one farther than d from every face: "point 1: (600, 10, 450) is 50 from the nearest
 // face; must be within d = 20"), "mesh" (no support triangle), or a parameter.
-// on_step (optional) is called after every step with (step, steps): progress for a page's worker;
-// it cannot change the growth, only stop it: false cancels (Grow returns run::CancelledStatus()).
-using StepObserver = std::function<bool(int step, int steps)>;
+// on_step (optional) is called after every step with (step, steps) and the model and log so far:
+// progress for a page's worker, and the run's check that the outputs asked for still fit the
+// budget (IvyRunOptions::planned); it cannot change the growth, only stop it: false cancels (Grow
+// returns run::CancelledStatus()).
+using StepObserver =
+    std::function<bool(int step, int steps, const IvyModel& model, const GrowLog& log)>;
 Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& seeds,
                       const IvyParams& params, int steps, uint64_t seed, GrowLog* log,
                       const IvyGrowLimits* limits = nullptr, const StepObserver& on_step = {});

@@ -189,12 +189,41 @@ void IvyRun::SetLimits() {
 Status IvyRun::Advance(const run::Observer& observer) {
   if (grown_) return Status::Ok();
   GrowLog log;
-  const StepObserver on_step = [&observer](int step, int steps) {
+  // The planned outputs' check on the buds so far, each time they have grown by a quarter: the
+  // estimates only grow with the buds, so a refusal here is the refusal the grown ivy would get.
+  Status early;
+  double checked_buds = 0;
+  const bool check_early = !options_.planned_export.empty() || options_.stats;
+  const StepObserver on_step = [&](int step, int steps, const IvyModel& model,
+                                   const GrowLog& so_far) {
+    const double buds = static_cast<double>(model.buds.size());
+    if (check_early && buds >= 1.25 * checked_buds + 64) {
+      checked_buds = buds;
+      Estimate e;
+      if (!options_.planned_export.empty()) {
+        Result<Estimate> exported =
+            ExportEstimateOf(model, so_far, options_.planned_export, options_.planned_with_support);
+        if (exported.ok()) e = *exported;
+      } else {
+        e = EstimateIvyGrown(model, so_far, limits_) +
+            EstimateIvyStats(CountIvyStatsWork(model, state_.params, support_->triangles()));
+      }
+      const std::string change =
+          options_.planned_export.empty() ? options_.stats_change : options_.export_change;
+      const Status fits = CheckEstimate(e, budget_, change);
+      if (!fits.ok()) {
+        early =
+            Status::Error(fits.field(), "at step " + std::to_string(step) + " of " +
+                                            std::to_string(steps) + " already: " + fits.message());
+        return false;
+      }
+    }
     return !observer || observer({"grow", static_cast<double>(step), static_cast<double>(steps)});
   };
   ++grows_;
   Result<IvyModel> model = Grow(support_->ForGrow(), seeds_, state_.params, state_.steps,
                                 state_.seed, &log, &grow_limits_, on_step);
+  if (!early.ok()) return early;
   if (!model.ok()) return model.status();
   model_ = std::move(model).value();
   log_ = std::move(log);
@@ -303,14 +332,21 @@ Result<Estimate> IvyRun::ExportEstimate(const std::string& format) const {
 }
 
 Result<Estimate> IvyRun::ExportEstimate(const std::string& format, bool with_support) const {
+  return ExportEstimateOf(model_, log_, format, with_support);
+}
+
+Result<Estimate> IvyRun::ExportEstimateOf(const IvyModel& model, const GrowLog& log,
+                                          const std::string& format, bool with_support) const {
   Result<IvyExport> kind = ExportKind(format);
   if (!kind.ok()) return kind.status();
   const bool support_out =
       !support_->free() && (*kind == IvyExport::kSvg || (with_support && *kind == IvyExport::kGlb));
   Estimate e =
-      EstimateIvyGrown(model_, log_, options_.export_with_stats_room ? grow_limits_ : limits_) +
-      EstimateIvyExport(model_, *kind, support_out ? support_->triangles() : 0);
-  if (options_.stats) e = e + StatsEstimate();
+      EstimateIvyGrown(model, log, options_.export_with_stats_room ? grow_limits_ : limits_) +
+      EstimateIvyExport(model, *kind, support_out ? support_->triangles() : 0);
+  if (options_.stats) {
+    e = e + EstimateIvyStats(CountIvyStatsWork(model, state_.params, support_->triangles()));
+  }
   return e;
 }
 

@@ -118,6 +118,13 @@ struct IvyRunOptions {
   // else without it (the CLI, which adds the measurement's exact estimate when `stats`).
   bool export_with_stats_room = false;
   bool stats = false;  // the CLI's --stats: an export's check includes the measurement
+  // The export asked for before growing ("glb", "json", ...; "" none) and its support flag: while
+  // the ivy grows, the export's estimate (and the measurement's, with `stats`) for the buds made
+  // so far is checked whenever they have grown by a quarter, so a run whose output cannot fit is
+  // refused as soon as the buds made prove it (buds are never removed), not after growing all of
+  // them (issue 34: --steps 10000 on cubes4 was refused after 78 MB of growth).
+  std::string planned_export;
+  bool planned_with_support = false;
 };
 
 struct IvyExportOptions {
@@ -171,6 +178,9 @@ class IvyRun : public run::StudyRun {
   // Export of "json", "lsys", "svg" or "glb": its estimate, the check ("" = fits), the bytes
   // (checked first: an error names the budget's limit) or unchecked (the page's text downloads).
   Result<Estimate> ExportEstimate(const std::string& format, bool with_support) const;
+  // The same for a model and log (a growing one: Advance's early check).
+  Result<Estimate> ExportEstimateOf(const IvyModel& model, const GrowLog& log,
+                                    const std::string& format, bool with_support) const;
   Status CheckExport(const std::string& format, bool with_support) const;
   Result<std::string> Export(const std::string& format, const IvyExportOptions& options) const;
   Result<std::string> ExportUnchecked(const std::string& format,
