@@ -12,9 +12,11 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string_view>
 #include <utility>
 #include <vector>
 
+#include "io/gltf_preflight.h"
 #include "io/tinygltf.h"  // declarations only: the implementation is io/tinygltf_impl.cpp
 
 #ifdef NIWA_HAVE_DRACO
@@ -248,15 +250,21 @@ Status Reader::View(int accessor, const std::string& what, AccessorView* view) c
   if (components <= 0 || size <= 0 || size > 4) {
     return Error(what + " accessor " + std::to_string(accessor) + " has an unsupported type");
   }
-  std::size_t element = static_cast<std::size_t>(components) * static_cast<std::size_t>(size);
-  std::size_t stride = bv.byteStride > 0 ? bv.byteStride : element;
-  std::size_t start = bv.byteOffset + a.byteOffset;
-  std::size_t need = a.count == 0 ? 0 : start + stride * (a.count - 1) + element;
-  if (bv.byteOffset + bv.byteLength > buffer.size() || (a.count > 0 && need > buffer.size()) ||
-      (a.count > 0 && a.byteOffset + stride * (a.count - 1) + element > bv.byteLength)) {
+  const std::size_t element = static_cast<std::size_t>(components) * static_cast<std::size_t>(size);
+  const std::size_t stride = bv.byteStride > 0 ? bv.byteStride : element;
+  // The view inside its buffer and offset + stride * (count - 1) + element inside the view, each
+  // step checked so that nothing wraps (size_t is 32 bits in WASM).
+  const bool view_fits =
+      bv.byteOffset <= buffer.size() && bv.byteLength <= buffer.size() - bv.byteOffset;
+  const bool fits =
+      view_fits &&
+      (a.count == 0 || (a.byteOffset <= bv.byteLength && element <= bv.byteLength - a.byteOffset &&
+                        a.count - 1 <= (bv.byteLength - a.byteOffset - element) / stride));
+  if (!fits) {
     return Error(what + " accessor " + std::to_string(accessor) +
                  " reads past the end of its buffer (truncated file?)");
   }
+  const std::size_t start = bv.byteOffset + a.byteOffset;
   view->data = buffer.data() + start;
   view->stride = stride;
   view->count = a.count;
@@ -310,6 +318,27 @@ double Component(const AccessorView& v, std::size_t i, int c) {
   }
 }
 
+// Index i of an index accessor, read as the unsigned type of its component size (glTF 2.0 allows
+// only UNSIGNED_BYTE, UNSIGNED_SHORT and UNSIGNED_INT indices; a signed type's bits are read the
+// same way, so -1 becomes 65535 and is refused by the range check against the vertex count).
+uint32_t IndexAt(const AccessorView& v, std::size_t i) {
+  const unsigned char* p = v.data + i * v.stride;
+  switch (tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(v.component_type))) {
+    case 1:
+      return p[0];
+    case 2: {
+      uint16_t u;
+      std::memcpy(&u, p, 2);
+      return u;
+    }
+    default: {
+      uint32_t u;
+      std::memcpy(&u, p, 4);
+      return u;
+    }
+  }
+}
+
 Status Reader::ReadDraco(int mesh, int prim, const tinygltf::Value& ext, LocalPrimitive* local) {
   const std::string label = MeshLabel(mesh, prim);
 #ifndef NIWA_HAVE_DRACO
@@ -356,6 +385,11 @@ Status Reader::ReadDraco(int mesh, int prim, const tinygltf::Value& ext, LocalPr
   const draco::PointAttribute* uv = attribute("TEXCOORD_0");
   const draco::PointAttribute* color = attribute("COLOR_0");
   const std::size_t n = dm->num_points();
+  if (n > kMaxMeshVertices || dm->num_faces() > kMaxMeshTriangles) {
+    return Error(label + ": the Draco data decodes to " + std::to_string(n) + " vertices and " +
+                 std::to_string(dm->num_faces()) + " triangles; the limits are " +
+                 std::to_string(kMaxMeshVertices) + " and " + std::to_string(kMaxMeshTriangles));
+  }
   local->positions.resize(n);
   if (nrm != nullptr && nrm->num_components() >= 3) local->normals.resize(n);
   if (uv != nullptr && uv->num_components() >= 2) local->uvs.resize(n);
@@ -461,9 +495,7 @@ Status Reader::ReadPrimitive(int mesh, int prim, LocalPrimitive* local) {
       return Error(label + " indices must be unsigned integer scalars");
     }
     local->indices.resize(idx.count);
-    for (std::size_t i = 0; i < idx.count; ++i) {
-      local->indices[i] = static_cast<uint32_t>(Component(idx, i, 0));
-    }
+    for (std::size_t i = 0; i < idx.count; ++i) local->indices[i] = IndexAt(idx, i);
   } else {
     local->indices.resize(pos.count);
     for (std::size_t i = 0; i < pos.count; ++i) local->indices[i] = static_cast<uint32_t>(i);
@@ -532,6 +564,11 @@ Status Reader::AddMesh(int mesh_index, const glm::dmat4& world) {
       return Error("more than " + std::to_string(kMaxMeshTriangles) +
                    " triangles in the scene; the limit is " + std::to_string(kMaxMeshTriangles) +
                    " (4 M)");
+    }
+    if (n > kMaxMeshVertices - mesh_.positions.size()) {
+      return Error("more than " + std::to_string(kMaxMeshVertices) +
+                   " vertices in the scene; the limit is " + std::to_string(kMaxMeshVertices) +
+                   " (12 M)");
     }
     // Transform the vertices (positions by the world matrix, normals by its inverse transpose).
     const uint32_t base = static_cast<uint32_t>(mesh_.positions.size());
@@ -739,6 +776,16 @@ Result<geom::TriMesh> ReadGltfMesh(const std::string& bytes, const std::string& 
       return Status::Error(name, "not glTF: neither a binary .glb (magic 'glTF') nor glTF JSON");
     }
   }
+  // The JSON (a .glb's first chunk) is checked before tinygltf parses it: its extras are turned
+  // into tinygltf::Value recursively, and its counts are read into size_t.
+  std::string_view json_text(bytes);
+  if (binary) {
+    uint32_t json_length = 0;
+    std::memcpy(&json_length, bytes.data() + 12, 4);
+    json_text =
+        json_length <= bytes.size() - 20 ? json_text.substr(20, json_length) : std::string_view();
+  }
+  NIWA_RETURN_IF_ERROR(PreflightGltfJson(json_text, name));
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(SkipImage, nullptr);
   FsContext fs_context;

@@ -11,6 +11,7 @@
 
 #include "base/budget.h"
 #include "io/tinygltf.h"
+#include "params/json_guard.h"
 
 namespace niwa::gltf {
 namespace {
@@ -48,6 +49,7 @@ tinygltf::Value ToValue(const nlohmann::json& j) {
 
 Status ParseExtras(const std::string& text, const std::string& field, tinygltf::Value* out) {
   if (text.empty()) return Status::Ok();
+  NIWA_RETURN_IF_ERROR(CheckJsonKeys(text, field));  // ToValue recurses: depth is capped first
   nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
   if (j.is_discarded()) return Status::Error(field, "extras must be JSON text");
   *out = ToValue(j);

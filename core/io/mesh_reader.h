@@ -44,6 +44,11 @@ struct MeshReadStats {
 // Limits every reader enforces, each named in its error line.
 inline constexpr std::size_t kMaxMeshTriangles = 4'000'000;               // "4 M triangles"
 inline constexpr std::size_t kMaxMeshFileBytes = std::size_t{512} << 20;  // 512 MiB per file
+// Vertices in one scene: every triangle of the limit with its own three ("12 M vertices"), counted
+// over instances (a mesh used by two nodes counts twice) before any is read.
+inline constexpr std::size_t kMaxMeshVertices = 3 * kMaxMeshTriangles;
+// Node instances one glTF scene walk visits (a node reached by two paths counts twice): "1 M".
+inline constexpr std::size_t kMaxNodeInstances = 1'000'000;
 
 // Reads a whole file of at most max_bytes; errors name the path (missing, a folder, too large).
 Result<std::string> ReadFileCapped(const std::string& path,

@@ -48,12 +48,14 @@ bool ParseDouble(std::string_view token, double* out) {
   return end == s.c_str() + s.size() && !s.empty();
 }
 
-bool ParseLong(std::string_view token, long* out) {
+// 64 bits on every build (long is 32 bits in WASM): the same index gives the same line natively
+// and in WASM.
+bool ParseLong(std::string_view token, long long* out) {
   std::string s(token);
   if (s.empty()) return false;
   char* end = nullptr;
   errno = 0;
-  *out = std::strtol(s.c_str(), &end, 10);
+  *out = std::strtoll(s.c_str(), &end, 10);
   return end == s.c_str() + s.size() && errno == 0;
 }
 
@@ -79,7 +81,7 @@ class ObjParser {
 
 Status ObjParser::Index(std::size_t number, std::string_view token, const char* what,
                         std::size_t count, uint32_t* out) const {
-  long i = 0;
+  long long i = 0;
   const std::string range = count == 0 ? std::string("none are defined yet")
                                        : "must be in [1, " + std::to_string(count) + "] or [-" +
                                              std::to_string(count) + ", -1]";
@@ -87,7 +89,7 @@ Status ObjParser::Index(std::size_t number, std::string_view token, const char* 
     return Error(number, std::string(what) + " index '" + std::string(token) +
                              "' is not a whole number; " + range);
   }
-  long n = static_cast<long>(count);
+  const long long n = static_cast<long long>(count);
   if (i == 0 || i > n || i < -n) {
     return Error(number,
                  std::string(what) + " index " + std::to_string(i) + " is out of range; " + range);
@@ -116,6 +118,11 @@ Status ObjParser::Line(std::size_t number, std::string_view line, geom::TriMesh*
     glm::vec3 p(static_cast<float>(xyz[0]), static_cast<float>(xyz[1]), static_cast<float>(xyz[2]));
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
       return Error(number, "vertex position is too large for a float");
+    }
+    if (mesh->positions.size() >= kMaxMeshVertices) {
+      return Error(number, "more than " + std::to_string(kMaxMeshVertices) +
+                               " vertices; the limit is " + std::to_string(kMaxMeshVertices) +
+                               " (12 M)");
     }
     mesh->positions.push_back(p);
     return Status::Ok();

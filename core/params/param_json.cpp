@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
-#include <set>
 
 #include "base/echo.h"
 #include "params/param_text.h"
@@ -12,41 +11,6 @@ namespace niwa {
 
 using nlohmann::json;
 using nlohmann::ordered_json;
-
-Status CheckJsonKeys(const std::string& text, std::string_view field) {
-  std::vector<std::set<std::string>> keys;  // one set per open object (arrays hold an empty one)
-  Status status;
-  auto check = [&](int depth, json::parse_event_t event, json& parsed) {
-    if (!status.ok()) return false;
-    switch (event) {
-      case json::parse_event_t::object_start:
-      case json::parse_event_t::array_start:
-        if (depth >= kMaxJsonDepth) {
-          status = Status::Error(std::string(field),
-                                 "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
-          return false;
-        }
-        keys.emplace_back();
-        break;
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        if (!keys.empty()) keys.pop_back();
-        break;
-      case json::parse_event_t::key:
-        if (!keys.empty() && !keys.back().insert(parsed.get<std::string>()).second) {
-          status = Status::Error(Echo(parsed.get<std::string>()), "given twice in one object");
-          return false;
-        }
-        break;
-      default:
-        break;
-    }
-    return false;  // nothing is kept: this pass only checks
-  };
-  const json discarded = json::parse(text, check, /*allow_exceptions=*/false);
-  (void)discarded;
-  return status;
-}
 
 Status ApplyParamsJson(const std::string& text, ParamSet* params,
                        const std::vector<std::string_view>& ignored) {

@@ -7,17 +7,10 @@
 #include <vector>
 
 #include "base/status.h"
+#include "params/json_guard.h"  // CheckJsonKeys, which every reader here runs first
 #include "params/param_table.h"
 
 namespace niwa {
-
-// Deepest nesting of arrays and objects in a JSON input file.
-constexpr int kMaxJsonDepth = 32;
-
-// Ok when text is JSON whose objects each name a key once and whose nesting is at most
-// kMaxJsonDepth; else {"KEY", "given twice in one object"} or {field, "nested deeper than 32"}.
-// Malformed JSON is left to the caller's parse (ok here). Used by every JSON input reader.
-Status CheckJsonKeys(const std::string& text, std::string_view field);
 
 // Applies {"key": number, ...} (or {"params": {...}}) onto params. `ignored` lists top-level
 // keys that may sit beside the values (a preset's "name", "years", ...); with a "params" object,

@@ -7,6 +7,7 @@
 
 #include "image/png.h"
 #include "math/det_math.h"
+#include "params/json_guard.h"
 
 namespace niwa::terrain {
 
@@ -18,6 +19,7 @@ Result<Heightfield> ReadHeightmap(const std::vector<unsigned char>& png, const s
   if (info.bit_depth != 16)
     return Status::Error(
         field, "a " + std::to_string(info.bit_depth) + "-bit PNG; must be 16-bit greyscale");
+  NIWA_RETURN_IF_ERROR(CheckJsonKeys(sidecar, field));
   nlohmann::json j = nlohmann::json::parse(sidecar, nullptr, false);
   const auto num = [&j](const char* a, const char* b = nullptr) {
     const nlohmann::json* v = j.is_object() && j.contains(a) ? &j[a] : nullptr;

@@ -3,7 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "params/param_json.h"
+#include "params/json_guard.h"
 #include "terrain/generate.h"
 
 namespace niwa::terrain {
@@ -34,43 +34,63 @@ Result<Ring> ReadPoints(const nlohmann::json& pts) {
   return r;
 }
 
+// The member `key` of an object, or nullptr (never inserts, never reads past: the document is
+// const and every lookup goes through find()).
+const nlohmann::json* Member(const nlohmann::json& object, const char* key) {
+  if (!object.is_object()) return nullptr;
+  auto it = object.find(key);
+  return it == object.end() ? nullptr : &*it;
+}
+
+// The member "type" when it is a string, else "" (a number, null or missing type is no type).
+std::string TypeOf(const nlohmann::json& object) {
+  const nlohmann::json* t = Member(object, "type");
+  return t != nullptr && t->is_string() ? t->get<std::string>() : "";
+}
+
 }  // namespace
 
 Result<SeedFile> ParseContourJson(const std::string& text) {
   if (Status keys = CheckJsonKeys(text, "contour"); !keys.ok()) return keys;
-  nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
   if (j.is_discarded() || !j.is_object()) return Bad("not a JSON object");
   SeedFile out;
-  if (j.contains("elevation")) {
-    if (!j["elevation"].is_number()) return Bad("elevation is not a number");
+  if (const nlohmann::json* e = Member(j, "elevation")) {
+    if (!e->is_number()) return Bad("elevation is not a number");
     out.has_elevation = true;
-    out.elevation = j["elevation"].get<double>();
+    out.elevation = e->get<double>();
   }
-  if (j.contains("points")) {
-    Result<Ring> r = ReadPoints(j["points"]);
+  if (const nlohmann::json* pts = Member(j, "points")) {
+    Result<Ring> r = ReadPoints(*pts);
     if (!r.ok()) return r.status();
     out.ring = std::move(r).value();
     return out;
+  }
+  if (const nlohmann::json* t = Member(j, "type"); t != nullptr && !t->is_string()) {
+    return Bad("type is not a string");
   }
   const nlohmann::json* g = &j;
-  if (j.value("type", "") == "Feature") {
-    if (!j.contains("geometry")) return Bad("Feature without geometry");
-    g = &j["geometry"];
+  if (TypeOf(j) == "Feature") {
+    g = Member(j, "geometry");
+    if (g == nullptr) return Bad("Feature without geometry");
+    if (!g->is_object()) return Bad("Feature geometry is not an object");
+    if (const nlohmann::json* t = Member(*g, "type"); t != nullptr && !t->is_string()) {
+      return Bad("geometry type is not a string");
+    }
   }
-  const std::string type = g->is_object() ? g->value("type", "") : "";
-  if (type == "Polygon" && (*g)["coordinates"].is_array() && !(*g)["coordinates"].empty()) {
-    Result<Ring> r = ReadPoints((*g)["coordinates"][0]);
-    if (!r.ok()) return r.status();
-    out.ring = std::move(r).value();
-    return out;
+  const std::string type = TypeOf(*g);
+  if (type != "Polygon" && type != "LineString") return Bad("no points, Polygon or LineString");
+  const nlohmann::json* coordinates = Member(*g, "coordinates");
+  if (coordinates == nullptr) return Bad(type + " without coordinates");
+  if (!coordinates->is_array()) return Bad(type + " coordinates is not an array");
+  if (type == "Polygon") {
+    if (coordinates->empty()) return Bad("Polygon without a ring");
+    coordinates = &(*coordinates)[0];  // the outer ring (const: bounds checked just above)
   }
-  if (type == "LineString") {
-    Result<Ring> r = ReadPoints((*g)["coordinates"]);
-    if (!r.ok()) return r.status();
-    out.ring = std::move(r).value();
-    return out;
-  }
-  return Bad("no points, Polygon or LineString");
+  Result<Ring> r = ReadPoints(*coordinates);
+  if (!r.ok()) return r.status();
+  out.ring = std::move(r).value();
+  return out;
 }
 
 std::string TerrainToJson(const Terrain& t) {

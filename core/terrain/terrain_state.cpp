@@ -119,6 +119,7 @@ Result<Ring> StateSeed(const TerrainState& state) {
 }
 
 Status ApplyTerrainStateJson(const std::string& text, TerrainState* state) {
+  NIWA_RETURN_IF_ERROR(CheckJsonKeys(text, "params"));
   nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
   if (j.is_discarded() || !j.is_object()) {
     return Status::Error("params", "not a JSON object; must be {preset, builtin, contour, params}");

@@ -253,6 +253,57 @@ await runBrowserTest(async (server, browser) => {
   const refused = await page.textContent('#notice');
   check('a .txt is refused with one line', refused.includes('notes.txt: not a mesh file'), refused);
 
+  // 6b. Issue 34: hostile .glb files (30,000-deep extras, a count x stride that wraps 32 bits, a negative short
+  // index, 1,000,001 node instances) end in a notice naming the file and what is wrong (no WASM trap, no stack
+  // overflow, no stuck worker), and the page still grows ivy afterwards.
+  {
+    const glb = (json, bin) => {
+      let text = Buffer.from(json);
+      text = Buffer.concat([text, Buffer.alloc((4 - (text.length % 4)) % 4, 0x20)]);
+      const header = Buffer.alloc(20);
+      header.writeUInt32LE(0x46546c67, 0); header.writeUInt32LE(2, 4); header.writeUInt32LE(20 + text.length + 8 + bin.length, 8);
+      header.writeUInt32LE(text.length, 12); header.writeUInt32LE(0x4e4f534a, 16);
+      const binHeader = Buffer.alloc(8);
+      binHeader.writeUInt32LE(bin.length, 0); binHeader.writeUInt32LE(0x004e4942, 4);
+      return Buffer.concat([header, text, binHeader, bin]);
+    };
+    const triangleBin = (i2) => {
+      const b = Buffer.alloc(44);
+      [0, 0, 0, 1, 0, 0, 0, 1, 0].forEach((v, i) => b.writeFloatLE(v, 4 * i));
+      b.writeInt16LE(0, 36); b.writeInt16LE(1, 38); b.writeInt16LE(i2, 40);
+      return b;
+    };
+    const gltf = ({ asset = '{"version": "2.0"}', sceneNodes = '[0]', count = '3', indexType = 5123 } = {}) =>
+      `{"asset": ${asset}, "scene": 0, "scenes": [{"nodes": ${sceneNodes}}], "nodes": [{"mesh": 0}], ` +
+      '"meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}], ' +
+      `"accessors": [{"bufferView": 0, "componentType": 5126, "count": ${count}, "type": "VEC3"}, ` +
+      `{"bufferView": 1, "componentType": ${indexType}, "count": 3, "type": "SCALAR"}], ` +
+      '"bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}], "buffers": [{"byteLength": 44}]}';
+    const deep = '['.repeat(30000) + ']'.repeat(30000);
+    const hostile = [
+      ['deep.glb', glb(gltf({ asset: `{"version": "2.0", "extras": ${deep}}` }), triangleBin(2)), 'nested deeper than 32 levels'],
+      ['wrap32.glb', glb(gltf({ count: '357913943' }), triangleBin(2)), 'accessor 0 (357913943 elements) reads past the end of its buffer view'],
+      ['negative.glb', glb(gltf({ indexType: 5122 }), triangleBin(-1)), 'index 65535 is out of range; must be below its 3 vertices'],
+      ['instances.glb', glb(gltf({ sceneNodes: `[${Array(1000001).fill(0).join(',')}]` }), triangleBin(2)), 'the scene places 1000001 node instances; the limit is 1000000'],
+    ];
+    for (const [name, buffer, expected] of hostile) {
+      await page.setInputFiles('#mesh-file', { name, mimeType: 'model/gltf-binary', buffer });
+      let text = '';
+      try {
+        await page.waitForFunction((n) => document.getElementById('notice').textContent.includes(n), name, { timeout: TIMEOUT, polling: 200 });
+        text = await page.textContent('#notice');
+      } catch (e) {
+        text = `no notice: ${e.message.split('\n')[0]}`;
+      }
+      check(`dropped ${name} gives a one-line notice`, text.includes(name) && text.includes(expected) && !text.includes('\n'), text.slice(0, 200));
+    }
+    serial = Number((await page.evaluate(() => ({ ...document.documentElement.dataset }))).ivySerial);
+    await page.setInputFiles('#mesh-file', { name: 'rock1.glb', mimeType: 'model/gltf-binary', buffer: fs.readFileSync(file) });
+    data = await waitIvy(page, serial);
+    check('after the hostile files the page grows ivy on a dropped rock again', data.status === 'ready' && data.supportName === 'rock1.glb' && Number(data.internodes) > 10,
+      `${data.status} ${data.supportName} ${data.internodes} ${data.error || data.meshError || ''}`);
+  }
+
   // 7. A 1 M-triangle glTF (a wall of 708 x 708 quads, 10 m, made here) is read, gets its BVH and
   // grows within seconds, with its stages shown on the progress line.
   {

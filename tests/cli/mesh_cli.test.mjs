@@ -2,7 +2,7 @@
 // npm three-mesh-bvh (an independent oracle, meshes loaded by three's GLTFLoader) on real ez-tree assets and the
 // hand-made hierarchy; native and WASM print the same stats/closest/ray JSON (timings aside).
 import { spawnSync } from 'node:child_process';
-import { existsSync, mkdtempSync, readdirSync, readFileSync } from 'node:fs';
+import { existsSync, mkdtempSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import * as THREE from 'three';
@@ -59,6 +59,87 @@ for (const bin of binaries) {
       `${label} ${args.slice(0, 2).join(' ')} ${args.slice(2).map((a) => a.replace(data + '/', '')).join(' ')} -> exit ${r.status}, ${JSON.stringify(r.stderr.trim())}`);
   }
   check(readdirSync(cwd).length === 0, `${label}: bad input left no file in the working folder`);
+}
+
+// 1b. Hostile files built here (issue 34): deep JSON in extras (a stack overflow before), an accessor whose size
+// wraps 64 and 32 bits, a negative short index, a millionfold instancing node graph, a FIFO: exit 2, one line, the
+// same line natively and in WASM, quickly.
+function glb(json, bin) {
+  let text = Buffer.from(json);
+  text = Buffer.concat([text, Buffer.alloc((4 - (text.length % 4)) % 4, 0x20)]);
+  const body = Buffer.concat([bin, Buffer.alloc((4 - (bin.length % 4)) % 4, 0)]);
+  const header = Buffer.alloc(20);
+  header.writeUInt32LE(0x46546c67, 0); header.writeUInt32LE(2, 4);
+  header.writeUInt32LE(20 + text.length + 8 + body.length, 8);
+  header.writeUInt32LE(text.length, 12); header.writeUInt32LE(0x4e4f534a, 16);
+  const binHeader = Buffer.alloc(8);
+  binHeader.writeUInt32LE(body.length, 0); binHeader.writeUInt32LE(0x004e4942, 4);
+  return Buffer.concat([header, text, binHeader, body]);
+}
+const triangleBin = (i2 = 2) => {
+  const b = Buffer.alloc(44);
+  [0, 0, 0, 1, 0, 0, 0, 1, 0].forEach((v, i) => b.writeFloatLE(v, 4 * i));
+  b.writeInt16LE(0, 36); b.writeInt16LE(1, 38); b.writeInt16LE(i2, 40);
+  return b;
+};
+const gltfJson = ({ asset = '{"version": "2.0"}', sceneNodes = '[0]', nodes = '[{"mesh": 0}]', count = '3', indexType = 5123 } = {}) =>
+  `{"asset": ${asset}, "scene": 0, "scenes": [{"nodes": ${sceneNodes}}], "nodes": ${nodes}, ` +
+  '"meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}], ' +
+  `"accessors": [{"bufferView": 0, "componentType": 5126, "count": ${count}, "type": "VEC3"}, ` +
+  `{"bufferView": 1, "componentType": ${indexType}, "count": 3, "type": "SCALAR"}], ` +
+  '"bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}], ' +
+  '"buffers": [{"byteLength": 44}]}';
+const hostileDir = mkdtempSync(join(tmpdir(), 'niwa-hostile-mesh-'));
+const deep = '['.repeat(30000) + ']'.repeat(30000);
+let doubling = '[';
+for (let i = 0; i < 20; i++) doubling += `{"children": [${i + 1}, ${i + 1}]},`;
+doubling += '{"mesh": 0}]';
+const hostile = {
+  'deep_asset.glb': glb(gltfJson({ asset: `{"version": "2.0", "extras": ${deep}}` }), triangleBin()),
+  'deep_node.glb': glb(gltfJson({ nodes: `[{"mesh": 0, "extras": {"a": ${deep}}}]` }), triangleBin()),
+  'dup_key.glb': glb(gltfJson({ asset: '{"version": "2.0", "version": "2.0"}' }), triangleBin()),
+  'wrap64.glb': glb(gltfJson({ count: '1537228672809129303' }), triangleBin()),
+  'wrap32.glb': glb(gltfJson({ count: '357913943' }), triangleBin()),
+  'negative_index.glb': glb(gltfJson({ indexType: 5122 }), triangleBin(-1)),
+  'instances.glb': glb(gltfJson({ nodes: doubling }), triangleBin()),
+  'flat_instances.glb': glb(gltfJson({ sceneNodes: `[${Array(1000001).fill(0).join(',')}]` }), triangleBin()),
+};
+for (const [name, bytes] of Object.entries(hostile)) writeFileSync(join(hostileDir, name), bytes);
+const fifo = join(hostileDir, 'pipe.glb');
+const made = spawnSync('mkfifo', [fifo]);
+check(made.status === 0, 'mkfifo for the FIFO case');
+const hostileCases = [
+  ['deep_asset.glb', 'nested deeper than 32 levels'],
+  ['deep_node.glb', 'nested deeper than 32 levels'],
+  ['dup_key.glb', 'version: given twice in one object'],
+  ['wrap64.glb', 'accessor 0 (1537228672809129303 elements) reads past the end of its buffer view (truncated file?)'],
+  ['wrap32.glb', 'accessor 0 (357913943 elements) reads past the end of its buffer view (truncated file?)'],
+  ['negative_index.glb', 'mesh 0 primitive 0 index 65535 is out of range; must be below its 3 vertices'],
+  ['instances.glb', 'the scene places 2097151 node instances; the limit is 1000000 (1 M)'],
+  ['flat_instances.glb', 'the scene places 1000001 node instances; the limit is 1000000 (1 M)'],
+  ['pipe.glb', `cannot read '${fifo}': not a regular file`],
+];
+const hostileLines = {};
+for (const bin of binaries) {
+  const label = bin.endsWith('.js') ? 'wasm' : 'native';
+  hostileLines[label] = [];
+  for (const [name, message] of hostileCases) {
+    for (const args of [['mesh', 'stats', '--mesh', join(hostileDir, name)],
+      ['ivy', 'grow', '--mesh', join(hostileDir, name)]]) {
+      const started = Date.now();
+      const r = spawnSync(bin.endsWith('.js') ? 'node' : bin, bin.endsWith('.js') ? [bin, ...args] : args,
+        { encoding: 'utf8', cwd: hostileDir, timeout: 30000 });
+      const ms = Date.now() - started;
+      const line = r.stderr.trimEnd();
+      hostileLines[label].push(line);
+      check(r.status === 2 && line === `niwa: error: --mesh: ${name}: ${message}` && r.stdout === '' && ms < 10000,
+        `${label} ${args.slice(0, 2).join(' ')} hostile ${name} -> exit ${r.status}, ${JSON.stringify(line.slice(0, 200))} (${ms} ms)`);
+    }
+  }
+}
+if (haveWasm) {
+  check(JSON.stringify(hostileLines.native) === JSON.stringify(hostileLines.wasm),
+    `native and WASM give the same ${hostileLines.native.length} lines for the hostile files`);
 }
 
 // 2. The oracle: three's GLTFLoader (textures stripped: node has no image decoder) + three-mesh-bvh.

@@ -18,6 +18,20 @@ writeFileSync(join(dir, 'dup.json'), '{"gamma": 0.1, "gamma": 0.2}');
 writeFileSync(join(dir, 'both.json'), '{"params": {"gamma": 0.1}, "alpha_t": 0.2}');
 writeFileSync(join(dir, 'gust.json'), '{"gust_on": 7, "gust_off": 6.5}');
 const grow = ['tree', 'grow', '--preset', 'binary', '--years', '2'];
+// Issue 34: contour files without coordinates, with a type that is not a string, a repeated key or deep nesting; a
+// --params file whose key is repeated after a nested object.
+const contourRule = '; must be {"points": [[x, y], ...]} in metres or a GeoJSON Polygon or LineString';
+const contours = {
+  'no_coordinates.json': '{"type": "Polygon"}',
+  'feature_no_coordinates.json': '{"type": "Feature", "geometry": {"type": "LineString"}}',
+  'type_null.json': '{"type": null}',
+  'type_number.json': '{"type": 7}',
+  'dup_points.json': '{"points": [[0, 0], [100, 0], [0, 100]], "points": [[0, 0], [50, 0], [0, 50]]}',
+  'deep.json': `{"type": "Feature", "properties": ${'['.repeat(30000)}${']'.repeat(30000)}}`,
+};
+for (const [name, text] of Object.entries(contours)) writeFileSync(join(dir, name), text);
+writeFileSync(join(dir, 'dup_after_nested.json'), '{"params": {"gamma": 0.1}, "params": {"gamma": 0.2}}');
+writeFileSync(join(dir, 'ivy_dup.json'), '{"seed": 1, "params": {"rho_max": 2}, "seed": 2}');
 const cases = [
   [[...grow.slice(0, 4), '--years', '0x10'], "--years: '0x10' is not a decimal number; must be a whole number in [0, 100]"],
   [[...grow.slice(0, 4), '--years', ''], '--years: empty; must be a whole number in [0, 100]'],
@@ -39,6 +53,14 @@ const cases = [
   [['tree', 'render-stats', '--target', '1e39,0,0'], "--target: '1e39,0,0' must be three numbers x,y,z, each in [-10000, 10000] (metres)"],
   [[...grow, '--out', 'a\x1b[31mb.zzz'], "--out: 'a\\x1b[31mb.zzz' must end in .glb, .json or .svg"],
   [[...grow, '--caption', 'a\x07', '--out', join(dir, 'c.svg')], "--caption: 'a\\x07' holds a control character; must be printable text"],
+  [['terrain', 'grow', '--contour', join(dir, 'no_coordinates.json')], `--contour: contour: Polygon without coordinates${contourRule}`],
+  [['terrain', 'grow', '--contour', join(dir, 'feature_no_coordinates.json')], `--contour: contour: LineString without coordinates${contourRule}`],
+  [['terrain', 'grow', '--contour', join(dir, 'type_null.json')], `--contour: contour: type is not a string${contourRule}`],
+  [['terrain', 'grow', '--contour', join(dir, 'type_number.json')], `--contour: contour: type is not a string${contourRule}`],
+  [['terrain', 'grow', '--contour', join(dir, 'dup_points.json')], '--contour: points: given twice in one object'],
+  [['terrain', 'grow', '--contour', join(dir, 'deep.json')], '--contour: contour: nested deeper than 32 levels'],
+  [[...grow, '--params', join(dir, 'dup_after_nested.json')], `--params ${join(dir, 'dup_after_nested.json')}: params: given twice in one object`],
+  [['ivy', 'grow', '--params', join(dir, 'ivy_dup.json')], '--params: seed: given twice in one object'],
   [['ivy', 'grow', '--steps', '010x'], "--steps: '010x' is not a decimal number; must be a whole number in [0, 10000]"],
 ];
 const byBuild = {};

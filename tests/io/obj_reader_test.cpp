@@ -109,6 +109,12 @@ TEST(ObjReader, BadInputNamesTheLine) {
       {"v 0 0 0\nv 1 0 0\nl 1 2\np 1\n", "t.obj: only points or lines (2 statements), no faces"},
       {"v 0 0 0\n", "t.obj: no faces (f lines)"},
       {"v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n", "t.obj: every triangle is degenerate (zero area)"},
+      // Issue 34: indices past 32 bits give the same line natively and in WASM (long is 32 bits
+      // there: this index was "not a whole number" in WASM, "out of range" natively).
+      {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3000000000\n",
+       "t.obj: line 4: vertex index 3000000000 is out of range; must be in [1, 3] or [-3, -1]"},
+      {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4294967297\n",
+       "t.obj: line 4: vertex index -4294967297 is out of range; must be in [1, 3] or [-3, -1]"},
   };
   for (const auto& [text, line] : cases) {
     Result<geom::TriMesh> mesh = ReadObjMesh(text, "t.obj");

@@ -67,6 +67,9 @@ TEST(IvyState, JsonAppliesPresetThenValues) {
             "steps: -1 is out of range; must be a whole number in [0, 10000]");
   EXPECT_EQ(ApplyIvyStateJson(R"({"t1":"nan"})", &s).field(), "t1");
   EXPECT_EQ(ApplyIvyStateJson("[1]", &s).field(), "params");
+  // Issue 34: a key repeated after a nested object was accepted (the last value used).
+  EXPECT_EQ(ApplyIvyStateJson(R"({"seed":1,"params":{"t1":0.3},"seed":2})", &s).Line(),
+            "seed: given twice in one object");
   EXPECT_EQ(s.params, before.params);
   EXPECT_EQ(s.steps, 30);
 }

@@ -91,6 +91,17 @@ TEST(TerrainState, StateJsonIsStrictAndRoundTrips) {
   EXPECT_TRUE(back.params == before.params);  // unchanged on error
   EXPECT_EQ(ApplyTerrainStateJson(R"({"contour": [[0,0],[1,1]]})", &back).field(), "contour");
   EXPECT_EQ(ApplyTerrainStateJson(R"({"builtin": "x"})", &back).field(), "builtin");
+  // Issue 34: a key repeated after a nested value was accepted (the last one used).
+  EXPECT_EQ(
+      ApplyTerrainStateJson(
+          R"({"builtin": "disk", "contour": [[0,0],[10,0],[0,10]], "builtin": "lobes7"})", &back)
+          .Line(),
+      "builtin: given twice in one object");
+  EXPECT_EQ(ApplyTerrainStateJson("{\"preset\": \"fig16\", \"x\": " + std::string(30000, '[') +
+                                      std::string(30000, ']') + "}",
+                                  &back)
+                .Line(),
+            "params: nested deeper than 32 levels");
 }
 
 TEST(TerrainState, HashRegrowsTheSameMountain) {

@@ -37,6 +37,7 @@
 #include "buffers.h"
 #include "error_record.h"
 #include "page_budget.h"
+#include "params/json_guard.h"
 #include "run/field_names.h"
 #include "terrain/contour_io.h"
 #include "terrain/contour_repair.h"
@@ -87,6 +88,9 @@ std::string TerrainSeedsJson() {
 // clockwise), or an error record naming "contour" (error_record.h).
 std::string TerrainRepairContour(const std::string& points_json) {
   ordered_json out;
+  if (Status guard = CheckJsonKeys(points_json, "contour"); !guard.ok()) {
+    return ErrorRecordJson(guard);
+  }
   json j = json::parse(points_json, nullptr, false);
   terrain::Ring ring;
   bool shape_ok = j.is_array();
