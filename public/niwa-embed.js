@@ -151,7 +151,12 @@ class NiwaTree extends EmbedElement {
   showTree(msg) {
     this.pendingTree = null;
     // A big mesh goes up in parts (tree_renderer.js): draw again once it is in place.
-    this.renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid).then(() => this.requestFrame());
+    // Once in place, the mesh's buffers go back to the worker for the next tree to fill.
+    const { bark, leaves, flowers } = msg.mesh;
+    this.renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid).then(() => {
+      this.worker.recycle({ bark, leaves, flowers });
+      this.requestFrame();
+    });
     this.hybridOn = Boolean(msg.hybrid);
     this.viewInFlight = false;
     if (this.sun) this.renderer.setSun(...this.sun);

@@ -12,7 +12,8 @@ const problems = [];
 const hooks = (page) => page.evaluate(() => {
   const d = document.documentElement.dataset;
   return { grows: Number(d.growRequests), restages: Number(d.restageRequests), grown: Number(d.treesGrown),
-    serial: Number(d.treeSerial), internodes: d.internodes, renderMode: d.renderMode, views: Number(d.renderViews || 0) };
+    serial: Number(d.treeSerial), internodes: d.internodes, renderMode: d.renderMode, views: Number(d.renderViews || 0),
+    reused: Number(d.buffersReused), fresh: Number(d.buffersFresh) };
 });
 
 // Fills a panel field (opening its section first) and waits for the tree that answers it.
@@ -44,6 +45,12 @@ await runBrowserTest(async (server, browser) => {
   check('a wind edit is one restage', wind.after.restages === wind.before.restages + 1, `${wind.before.restages} -> ${wind.after.restages}`);
   check('a wind edit keeps the tree', wind.after.internodes === start.internodes, `${start.internodes} -> ${wind.after.internodes}`);
   check('a wind edit is in the URL', wind.hash.includes('wind_speed=9'), wind.hash);
+  // The first tree's buffers went into fresh ones; the page handed them back once on the GPU, and
+  // the restaged tree (the same mesh sizes) was copied into them: no fresh buffer
+  // (web/worker/transfer.js TransferPool).
+  check('the first tree comes in fresh buffers', start.fresh >= 10 && start.reused === 0, `fresh ${start.fresh}, reused ${start.reused}`);
+  check('the restaged tree reuses the returned buffers', wind.after.reused === start.fresh && wind.after.fresh === 0,
+    `fresh ${wind.after.fresh}, reused ${wind.after.reused} (first tree: ${start.fresh} fresh)`);
   await page.click('#wind');
   await page.waitForFunction(() => Number(document.documentElement.dataset.swayTime || 0) > 2, null, { timeout: TIMEOUT, polling: 100 });
   const info = await page.textContent('#wind-info');

@@ -8,7 +8,7 @@
 // answers it), or know the growth model.
 import { createContext, resizeCanvas } from '../gl/context.js';
 import { defaultSunDirection } from '../gl/sun.js';
-import { floatAttribute, staticBuffer } from '../gl/buffers.js';
+import { floatAttribute, staticBuffer, viewOf } from '../gl/buffers.js';
 import { uploadInParts } from '../gl/chunked_upload.js';
 import { ProgressiveFrame } from '../gl/progressive_frame.js';
 import { loadPrograms } from '../gl/program.js';
@@ -227,11 +227,11 @@ export class IvyRenderer {
         else gl.disableVertexAttribArray(3);
         gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, buffers[3]);
         gl.bindVertexArray(null);
-        const indices = new Uint32Array(mesh[name].indices);
-        this.parts[name] = { vao, buffers, count: indices.length, uvs, births: birthCounter(indices, new Float32Array(mesh[name].birth)) };
+        const indices = viewOf(Uint32Array, mesh[name].indices);
+        this.parts[name] = { vao, buffers, count: indices.length, uvs, births: birthCounter(indices, viewOf(Float32Array, mesh[name].birth)) };
       }
       if (!this.parts.support) {
-        const p = new Float32Array(mesh.stems.positions);
+        const p = viewOf(Float32Array, mesh.stems.positions);
         if (p.length) {
           const min = [Infinity, Infinity, Infinity], max = [-Infinity, -Infinity, -Infinity];
           for (let i = 0; i < p.length; ++i) {
@@ -261,12 +261,12 @@ export class IvyRenderer {
     this.#dropBuds();
     const vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
-    const buffers = [new Float32Array(b.positions), new Float32Array(b.kind), new Float32Array(b.birth)].map((a) => staticBuffer(gl, a));
+    const buffers = [b.positions, b.kind, b.birth].map((a) => staticBuffer(gl, viewOf(Float32Array, a)));
     floatAttribute(gl, 0, buffers[0], 3);
     floatAttribute(gl, 1, buffers[1], 1);
     floatAttribute(gl, 2, buffers[2], 1);
     gl.bindVertexArray(null);
-    this.buds = { vao, buffers, count: new Float32Array(b.kind).length };
+    this.buds = { vao, buffers, count: viewOf(Float32Array, b.kind).length };
   }
 
   #dropBuds() {

@@ -226,6 +226,9 @@ function onTree(msg) {
   const instances = new Float32Array(mine.length * 4);
   mine.forEach((i, k) => instances.set([...i.position, i.scale], k * 4));
   renderer.addTree(index, msg.mesh, instances, msg.hybrid, msg.swayNodes);
+  // Uploaded at once: the buffers go back for the worker's next tree of this client to fill.
+  const { bark, leaves, flowers } = msg.mesh;
+  treeClients[index].recycle({ bark, leaves, flowers });
   trees[index] = { bounds: msg.stats.bounds, stats: msg.stats, nodes: msg.swayNodes };
   if (trees.filter(Boolean).length === UNIQUE.length) {
     requestViews();

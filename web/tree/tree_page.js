@@ -498,6 +498,13 @@ worker.on('tree', (msg) => {
   ui.progress.textContent = msg.stats.truncated ? msg.stats.truncated_by || 'stopped at max_internodes' : '';
   ui.progressBar.hidden = true;
   shownYear = msg.stats.years;
+  table.showFullCounts(msg.mesh);
+  // The worker's buffers reused (web/worker/transfer.js): what this reply's copy went into.
+  setHooks({ buffersReused: msg.buffers?.reused ?? '', buffersFresh: msg.buffers?.fresh ?? '' });
+  // Once on the GPU (or dropped), the mesh's buffers go back for the worker's next tree to fill;
+  // nothing on the page reads them after (the renderer keeps copies of what it keeps).
+  const { bark, leaves, flowers } = msg.mesh;
+  const giveBack = () => worker.recycle({ bark, leaves, flowers });
   if (renderer) {
     const installed = renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid);
     // A big mesh is installed a few tasks later (uploaded in parts): a draw list that arrives
@@ -505,6 +512,7 @@ worker.on('tree', (msg) => {
     // tree is in place.
     const later = renderer.uploading;
     installed.then((done) => {
+      giveBack();
       if (done) governor.reset();  // another tree: its frames cost what they cost
       if (done && later) requestView();
       requestFrame();
@@ -517,8 +525,9 @@ worker.on('tree', (msg) => {
       writeHash();
     }
     requestFrame();
+  } else {
+    giveBack();
   }
-  table.showFullCounts(msg.mesh);
   hybridOn = Boolean(msg.hybrid);
   viewInFlight = false;
   motionInFlight = false;

@@ -6,7 +6,7 @@ import { createContext, drawingBufferSize, finishGpu, resizeCanvas } from '../gl
 import { DEFAULT_SUNS, sunDirection } from '../gl/sun.js';
 import { BufferPool } from '../gl/buffer_pool.js';
 import { UPLOAD_PARTS_ABOVE, gpuDone, planBytes, uploadInParts } from '../gl/chunked_upload.js';
-import { floatAttribute, staticBuffer, uintAttribute } from '../gl/buffers.js';
+import { copyOf, floatAttribute, staticBuffer, uintAttribute } from '../gl/buffers.js';
 import { Ground } from '../gl/ground.js';
 import { PickTarget } from '../gl/pick.js';
 import { ProgressiveFrame } from '../gl/progressive_frame.js';
@@ -325,8 +325,9 @@ export class Renderer {
     this.selected = NONE;
   }
 
-  // mesh: {bark|leaves|flowers: {positions, normals, indices, joints, weights}} as ArrayBuffers
-  // (bark also has branchIds: Uint32 per vertex; leaves uvs); bounds in metres; swayNodes: node
+  // mesh: {bark|leaves|flowers: {positions, normals, indices, joints, weights}} as ArrayBuffers or
+  // views (bark also has branchIds: Uint32 per vertex; leaves uvs), not read once the promise
+  // resolves (the page may hand them back to the worker then); bounds in metres; swayNodes: node
   // points of the sway skin (poses start at rest); hybrid: the worker's card-atlas geometry when the
   // state's render_mode is 1 (then render() draws the draw list of setDrawList), else null.
   // A big mesh (more than UPLOAD_PARTS_ABOVE bytes) is uploaded in parts (web/gl/chunked_upload.js),
@@ -411,8 +412,9 @@ export class Renderer {
         uintAttribute(gl, 2, buffer, 1);
         buffers.push(buffer);
         // Selection highlight per vertex (select() fills it).
-        this.branchIds = new Uint32Array(data.branchIds);
-        this.branchParents = new Int32Array(data.branchParents || new ArrayBuffer(0));
+        // Copies: the worker's buffers go back to it once the tree is in place (recycle).
+        this.branchIds = copyOf(Uint32Array, data.branchIds);
+        this.branchParents = copyOf(Int32Array, data.branchParents || new ArrayBuffer(0));
         this.highlight = new Float32Array(this.branchIds.length);
         this.highlightBuffer = upload('highlight', this.highlight);
         gl.enableVertexAttribArray(3);

@@ -50,7 +50,10 @@
  */
 
 /**
- * Mesh parts as ArrayBuffers (transferred). Every part has joints (Uint32) and weights (Float32)
+ * Mesh parts as typed views of the exact length (their buffers transferred, and maybe larger: a
+ * part's size is the view's byteLength). The buffers are the ones the client handed back with
+ * 'recycle' when they fit, else fresh (web/worker/transfer.js TransferPool); the reply's `buffers`
+ * counts them {reused, fresh}. Textures and the hybrid atlas are fresh copies. Every part has joints (Uint32) and weights (Float32)
  * per vertex: the sway skin of core/sway/skin.h; leaves have uvs; bark has branchIds per vertex and
  * branchParents per branch.
  * @typedef {{positions: ArrayBuffer, normals: ArrayBuffer, indices: ArrayBuffer, joints: ArrayBuffer,
@@ -58,8 +61,16 @@
  * With render_mode 1, hybrid holds the clip-space triangles that paint the card atlas (thesis 4.2.1).
  * @typedef {{atlasSize: number, bark: MeshPart, leaves: MeshPart, flowers: MeshPart}} HybridAtlas
  * @typedef {Envelope & {type: 'tree', stats: Object, mesh: {bark: MeshPart, leaves: MeshPart,
- *   flowers: MeshPart}, hybrid: HybridAtlas|null, swayNodes: number, grown: boolean}} TreeMessage
+ *   flowers: MeshPart}, hybrid: HybridAtlas|null, swayNodes: number, grown: boolean,
+ *   buffers: {reused: number, fresh: number}}} TreeMessage
  *   grown: false when the tree on screen was re-skinned or re-viewed (restage), not grown again.
+ */
+
+/**
+ * The client's buffers back once they are on its GPU (tree: the mesh parts; ivy: stems, leaves,
+ * suckers, buds), as {"<part>.<name>": ArrayBuffer} (web/shell/worker_client.js recycle), transferred;
+ * the next reply copies into them. No reply.
+ * @typedef {Envelope & {type: 'recycle', buffers: Object<string, ArrayBuffer>}} RecycleMessage
  */
 
 /**
@@ -103,9 +114,10 @@
  *   -> SupportMessage without an id ({request: id}; when the scene or tree changed),
  *      ProgressMessage {stage: scene|tree|bvh|grow|read, done?, total?, text} (at most one per 100 ms),
  *      {type: 'ivy', stats, mesh: {stems, leaves, suckers: {positions, normals, indices, birth},
- *       buds: {positions, kind, birth}} (leaves also uvs: the .glb's TEXCOORD_0),
+ *       buds: {positions, kind, birth}} (leaves also uvs: the .glb's TEXCOORD_0; typed views, as
+ *       the tree's MeshPart, into the buffers the client handed back with 'recycle' when they fit),
  *       leafTexture?: {width, height, pixels: ArrayBuffer RGBA} (the .glb's leaf texture, in the
- *       client's first 'ivy' only), steps, hash, wallMs}
+ *       client's first 'ivy' only), steps, hash, wallMs, buffers: {reused, fresh}}
  * @typedef {Envelope & {type: 'mesh', name: string, bytes: ArrayBuffer}} IvyMeshMessage
  *   -> {type: 'support', support: {name, dropped, free, triangles, bounds, seeds}, buffers:
  *       {positions, normals, indices}}

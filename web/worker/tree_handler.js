@@ -1,11 +1,13 @@
 // The tree study's worker handler: grows trees year by year (superseded between years), sends
 // their meshes, re-skins or re-views the tree already grown for sway and render edits (restage),
 // runs the wind, the hybrid views and the exports. One TreeSession (web/bindings/tree_bindings.cpp)
-// per client keeps the client's last finished tree. Messages: web/worker/protocol.js.
+// per client keeps the client's last finished tree. The mesh parts go as views into the buffers the
+// client handed back ('recycle', once they are on its GPU) when they fit, else into fresh ones
+// (web/worker/transfer.js TransferPool). Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does).
 import { errorOf, errorReply } from './errors.js';
 import { nextTask as yieldToEvents } from './next_task.js';
-import { copyView, takeBuffers } from './transfer.js';
+import { TransferPool, copyView, takeBuffers } from './transfer.js';
 
 // The warm-up grow's years (sakura-thesis; ?warmup=N on the worker's URL sets N, 0 turns it off).
 const WARM_UP_YEARS = 8;
@@ -19,6 +21,7 @@ export function createHandler(Module, ctx) {
   // view rows restage the tree already grown (restate rebuilds its mesh, skin and hybrid scene).
   const treeKeys = paramTable.filter((row) => !['mesh', 'sway', 'view'].includes(row.stage)).map((row) => row.key);
   const finished = new Map();  // client -> {session, state, until} of its last tree sent
+  const returned = new TransferPool();  // the mesh buffers each client handed back
 
   // True when states a and b (as the pages send them) grow the same tree.
   function sameTree(a, b) {
@@ -57,9 +60,11 @@ export function createHandler(Module, ctx) {
     return out;
   }
 
-  function takeMesh(session, transfer) {
-    return { bark: takeBuffers(session.buffers('bark'), transfer), leaves: takeBuffers(session.buffers('leaves'), transfer),
-      flowers: takeBuffers(session.buffers('flowers'), transfer), textures: takeTextures(session, transfer) };
+  // The mesh parts copied once out of the heap, into the client's returned buffers where they fit;
+  // counts: {reused, fresh} buffers.
+  function takeMesh(session, client, transfer, counts) {
+    const part = (name) => returned.take(client, name, session.buffers(name), transfer, counts);
+    return { bark: part('bark'), leaves: part('leaves'), flowers: part('flowers'), textures: takeTextures(session, transfer) };
   }
 
   // The card-atlas geometry of a hybrid-mode tree (copied once, transferred).
@@ -73,7 +78,8 @@ export function createHandler(Module, ctx) {
   function sendTree(id, client, session, grown) {
     const stats = JSON.parse(session.statsJson());
     const transfer = [];
-    const mesh = takeMesh(session, transfer);
+    const buffers = { reused: 0, fresh: 0 };
+    const mesh = takeMesh(session, client, transfer, buffers);
     let hybrid = null;
     if (session.renderMode() === 1) {
       const error = errorOf(session.buildHybrid());
@@ -83,7 +89,7 @@ export function createHandler(Module, ctx) {
       }
       hybrid = takeAtlas(session, transfer);
     }
-    post({ type: 'tree', id, client, stats, mesh, hybrid, swayNodes: session.swayNodes(), grown }, transfer);
+    post({ type: 'tree', id, client, stats, mesh, hybrid, swayNodes: session.swayNodes(), grown, buffers }, transfer);
     return true;
   }
 
@@ -333,6 +339,7 @@ export function createHandler(Module, ctx) {
       },
       view: hybridView,
       export: exportTree,
+      recycle: (msg, client) => returned.give(client, msg.buffers),
       // Save / Open (web/tree/state_file.js): {save: page state} -> {json}; {open: file text} ->
       // {state}; a bad state or file is an 'error' with its field.
       stateFile: (msg, client) => {
