@@ -13,7 +13,7 @@ const hooks = (page) => page.evaluate(() => {
   const d = document.documentElement.dataset;
   return { grows: Number(d.growRequests), restages: Number(d.restageRequests), grown: Number(d.treesGrown),
     serial: Number(d.treeSerial), internodes: d.internodes, renderMode: d.renderMode, views: Number(d.renderViews || 0),
-    reused: Number(d.buffersReused), fresh: Number(d.buffersFresh) };
+    reused: Number(d.buffersReused), fresh: Number(d.buffersFresh), stages: d.restagedStages };
 });
 
 // Fills a panel field (opening its section first) and waits for the tree that answers it.
@@ -43,6 +43,8 @@ await runBrowserTest(async (server, browser) => {
   check('a wind edit sends no grow', wind.after.grows === wind.before.grows && wind.after.grown === wind.before.grown,
     `grow requests ${wind.before.grows} -> ${wind.after.grows}, grown ${wind.before.grown} -> ${wind.after.grown}`);
   check('a wind edit is one restage', wind.after.restages === wind.before.restages + 1, `${wind.before.restages} -> ${wind.after.restages}`);
+  // The stages the run re-did (core TreeRun::Update through the session's update): sway and after.
+  check('a wind edit re-does the sway and view stages', wind.after.stages === 'sway,view', `stages '${wind.after.stages}'`);
   check('a wind edit keeps the tree', wind.after.internodes === start.internodes, `${start.internodes} -> ${wind.after.internodes}`);
   check('a wind edit is in the URL', wind.hash.includes('wind_speed=9'), wind.hash);
   // The first tree's buffers went into fresh ones; the page handed them back once on the GPU, and
@@ -86,6 +88,12 @@ await runBrowserTest(async (server, browser) => {
   const lines = await edit(page, 'line_threshold', '8');
   check('a render row edit sends no grow', lines.after.grows === lines.before.grows && lines.after.grown === lines.before.grown
     && lines.hash.includes('line_threshold=8'), `${lines.before.grows} -> ${lines.after.grows}; ${lines.hash}`);
+  check('a render row edit re-does the view stage only', lines.after.stages === 'view', `stages '${lines.after.stages}'`);
+  // A mesh row (leaf_shape): the mesh is rebuilt on the same tree, no grow.
+  const shape = await edit(page, 'leaf_shape', '2');
+  check('a mesh row edit re-does mesh, sway and view, not the growth', shape.after.stages === 'mesh,sway,view'
+    && shape.after.grows === shape.before.grows && shape.after.grown === shape.before.grown && shape.after.internodes === shape.before.internodes,
+    `stages '${shape.after.stages}', grow requests ${shape.before.grows} -> ${shape.after.grows}, internodes ${shape.before.internodes} -> ${shape.after.internodes}`);
 
   // A growth row: exactly one grow, and the tree equals the native CLI's.
   const growth = await edit(page, 'alpha_l', '0.6');

@@ -540,6 +540,8 @@ worker.on('tree', (msg) => {
   select(sameTree ? selected : null);
   treeSerial += 1;
   if (msg.grown) bumpHook('treesGrown');
+  // The stages a restage re-did (core TreeRun::Update: a view row re-does the view only).
+  else setHooks({ restagedStages: (msg.stages || []).join(',') });
   setHooks({
     status: 'ready', treeSerial, internodes: msg.stats.internodes, leaves: msg.stats.leaves,
     flowers: msg.stats.flowers, year: msg.stats.years,

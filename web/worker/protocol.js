@@ -35,11 +35,13 @@
  * @typedef {Envelope & {type: 'update', state: TreeStateJson, until?: number}} UpdateMessage
  *   -> HashMessage (state accepted), ProgressMessage (after each year), TreeMessage
  *
- * The page's sway and view edits: the same tree (the grow-stage fields equal the client's last tree)
- * with a new state; the worker re-skins it (sway rows), rebuilds the hybrid scene (render rows) and
- * answers like an update without growing. When the tree would differ (or none was grown) it grows.
+ * The page's mesh, sway and view edits: the same tree (the grow-stage fields equal the client's
+ * last tree) with a new state; the session's update (core TreeRun::Update) re-does the earliest
+ * stage whose rows changed and the ones after it (mesh: re-dressed; sway: re-skinned; view: the
+ * hybrid scene rebuilt) and the worker answers like an update without growing. When the tree would
+ * differ (or none was grown) it grows.
  * @typedef {Envelope & {type: 'restage', state: TreeStateJson, until?: number,
- *   stage: 'sway'|'view'}} RestageMessage
+ *   stage: 'mesh'|'sway'|'view'}} RestageMessage
  *   -> HashMessage, TreeMessage (grown: false)
  *
  * @typedef {Envelope & {type: 'hash', hash: string}} HashMessage
@@ -62,8 +64,9 @@
  * @typedef {{atlasSize: number, bark: MeshPart, leaves: MeshPart, flowers: MeshPart}} HybridAtlas
  * @typedef {Envelope & {type: 'tree', stats: Object, mesh: {bark: MeshPart, leaves: MeshPart,
  *   flowers: MeshPart}, hybrid: HybridAtlas|null, swayNodes: number, grown: boolean,
- *   buffers: {reused: number, fresh: number}}} TreeMessage
- *   grown: false when the tree on screen was re-skinned or re-viewed (restage), not grown again.
+ *   stages: string[]|null, buffers: {reused: number, fresh: number}}} TreeMessage
+ *   grown: false when the tree on screen was re-meshed, re-skinned or re-viewed (restage), not
+ *   grown again; stages: then the stages core TreeRun::Update re-did ('mesh', 'sway', 'view').
  */
 
 /**

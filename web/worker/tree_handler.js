@@ -18,7 +18,8 @@ export function createHandler(Module, ctx) {
   scheduleWarmUp(Module, ctx.options || {});
   const paramTable = JSON.parse(Module.tableJson('tree'));
   // Rows whose edits change the grown tree (stage grow; rows without a stage too). Mesh, sway and
-  // view rows restage the tree already grown (restate rebuilds its mesh, skin and hybrid scene).
+  // view rows restage the tree already grown (the session's update: core TreeRun::Update re-does
+  // only the earliest stage whose rows changed, and clears the hybrid scene).
   const treeKeys = paramTable.filter((row) => !['mesh', 'sway', 'view'].includes(row.stage)).map((row) => row.key);
   const finished = new Map();  // client -> {session, state, until} of its last tree sent
   const returned = new TransferPool();  // the mesh buffers each client handed back
@@ -75,7 +76,8 @@ export function createHandler(Module, ctx) {
 
   // The 'tree' message of a session whose mesh is built; false (after an error message) when the
   // hybrid scene cannot be built.
-  function sendTree(id, client, session, grown) {
+  // stages: the stages a restage re-did (a grow: null).
+  function sendTree(id, client, session, grown, stages = null) {
     const stats = JSON.parse(session.statsJson());
     const transfer = [];
     const buffers = { reused: 0, fresh: 0 };
@@ -89,7 +91,7 @@ export function createHandler(Module, ctx) {
       }
       hybrid = takeAtlas(session, transfer);
     }
-    post({ type: 'tree', id, client, stats, mesh, hybrid, swayNodes: session.swayNodes(), grown, buffers }, transfer);
+    post({ type: 'tree', id, client, stats, mesh, hybrid, swayNodes: session.swayNodes(), grown, stages, buffers }, transfer);
     return true;
   }
 
@@ -136,21 +138,27 @@ export function createHandler(Module, ctx) {
     }
   }
 
-  // A sway or view edit: the client's last tree with the new state, not grown again (or a grow
-  // when the state grows another tree).
+  // A mesh, sway or view edit: the client's last tree with the new state, not grown again (or a
+  // grow when the state grows another tree). The reply's `stages` are the ones the run re-did.
   async function restage(msg, client) {
     const last = finished.get(client);
     if (!last || !sameTree(last, msg)) return grow(msg, client);
-    const error = errorOf(last.session.restate(JSON.stringify(msg.state)));
-    if (error) {
-      post(errorReply(error, msg.id, client));
+    const answer = JSON.parse(last.session.update(JSON.stringify(msg.state)));
+    if (answer.ok === false) {
+      post(errorReply(answer, msg.id, client));
       return;
+    }
+    if (answer.stages.includes('grow')) {  // the run says another tree after all: grown anew
+      finished.delete(client);
+      stopWind(client);
+      last.session.delete();
+      return grow(msg, client);
     }
     post({ type: 'hash', id: msg.id, client, hash: last.session.hash() });
     stopWind(client);  // the sway restarts in the new wind (the client asks when it is playing)
     last.state = msg.state;
-    last.motionHybrid = false;  // restate cleared the hybrid scene
-    sendTree(msg.id, client, last.session, false);
+    if (answer.stages.length > 0) last.motionHybrid = false;  // the update cleared the hybrid scene
+    sendTree(msg.id, client, last.session, false, answer.stages);
   }
 
   // ---- Wind: one sway loop per client, following the wall clock ----
