@@ -8,6 +8,7 @@
 // Does not: grow or sway trees (the worker does) or draw directly (grove_renderer.js does).
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { FrameLoop, nextFrame } from '../gl/frame_loop.js';
+import { viewOf } from '../gl/buffers.js';
 import { DEFAULT_SUNS } from '../gl/sun.js';
 import { cappedNoticeLines, mountStudyNav } from '../shell/study_page.js';
 import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
@@ -272,7 +273,7 @@ function onPose(msg) {
     treeClients[index].post('poseDone');
     return;
   }
-  const poses = new Float32Array(msg.poses);
+  const poses = viewOf(Float32Array, msg.poses);  // kept: this page hands no pose buffer back
   renderer.setPoses(index, poses);
   sway[index] = { time: msg.time, wind: msg.wind, stepMs: msg.stepMs, poses };
   poseDone.add(msg.client);

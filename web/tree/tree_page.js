@@ -8,6 +8,7 @@ import '../shell/study_skeleton.js';  // first: the page's parts exist before th
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { FrameGovernor } from '../gl/frame_governor.js';
 import { FrameLoop } from '../gl/frame_loop.js';
+import { viewOf } from '../gl/buffers.js';
 import { HashHistory } from '../shell/hash_history.js';
 import { ParamPanel } from '../shell/param_panel.js';
 import {
@@ -574,17 +575,33 @@ worker.on('drawList', (msg) => {
   viewInFlight = false;
   if (!hybridOn || !renderer) return;
   renderer.setDrawList(msg);
+  // Uploaded: the list's buffers go back for the worker's next draw list to fill.
+  worker.recycle({ cards: msg.cards, lines: msg.lines });
+  countReuse('view', msg.buffers);
   table.showHybridCounts(msg.stats);
   requestFrame(true);  // a hybrid frame is cheap: the new list at once, not after the frame in flight
   if (viewDirty) requestView();
 });
+
+// The worker's buffers reused and fresh (web/worker/transfer.js), per kind of reply, for the hooks
+// data-<kind>-buffers-reused and -fresh.
+const reuse = {};
+function countReuse(kind, buffers) {
+  const r = (reuse[kind] ||= { reused: 0, fresh: 0 });
+  r.reused += buffers?.reused || 0;
+  r.fresh += buffers?.fresh || 0;
+  setHooks({ [`${kind}BuffersReused`]: r.reused, [`${kind}BuffersFresh`]: r.fresh });
+}
 
 worker.on('pose', (msg) => {
   if (!windPlaying || !renderer || renderer.uploading) {  // no poses for a tree not yet in place
     worker.post('poseDone');
     return;
   }
-  renderer.setPoses(new Float32Array(msg.poses), msg.wind, msg.time);
+  renderer.setPoses(viewOf(Float32Array, msg.poses), msg.wind, msg.time);
+  // Uploaded: the poses buffer goes back for the worker's next pose to fill.
+  worker.recycle({ sway: { poses: msg.poses } });
+  countReuse('pose', msg.buffers);
   governor.motion();
   poseDrawPending = true;
   showWind(msg);

@@ -8,7 +8,7 @@ import { createContext, drawingBufferSize, finishGpu, resizeCanvas } from '../gl
 import { DEFAULT_SUNS, sunDirection } from '../gl/sun.js';
 import { BufferPool } from '../gl/buffer_pool.js';
 import { UPLOAD_PARTS_ABOVE, gpuDone, planBytes, uploadInParts } from '../gl/chunked_upload.js';
-import { copyOf, floatAttribute, staticBuffer, uintAttribute } from '../gl/buffers.js';
+import { copyOf, floatAttribute, staticBuffer, uintAttribute, viewOf } from '../gl/buffers.js';
 import { Ground, groundUnder } from '../gl/ground.js';
 import { PickTarget } from '../gl/pick.js';
 import { ProgressiveFrame } from '../gl/progressive_frame.js';
@@ -593,11 +593,11 @@ export class Renderer {
     const segments = l.widths.byteLength / 4;
     if (segments > 0) {
       const textures = [
-        dataTexture(gl, new Float32Array(l.positions), 3, gl.RGB32F, gl.RGB, gl.FLOAT),  // p0, p1
-        dataTexture(gl, new Float32Array(l.colors), 3, gl.RGB32F, gl.RGB, gl.FLOAT),
-        dataTexture(gl, new Float32Array(l.widths), 1, gl.R32F, gl.RED, gl.FLOAT),
-        dataTexture(gl, new Uint32Array(l.joints), 2, gl.RG32UI, gl.RG_INTEGER, gl.UNSIGNED_INT),
-        dataTexture(gl, new Float32Array(l.weights), 2, gl.RG32F, gl.RG, gl.FLOAT),
+        dataTexture(gl, viewOf(Float32Array, l.positions), 3, gl.RGB32F, gl.RGB, gl.FLOAT),  // p0, p1
+        dataTexture(gl, viewOf(Float32Array, l.colors), 3, gl.RGB32F, gl.RGB, gl.FLOAT),
+        dataTexture(gl, viewOf(Float32Array, l.widths), 1, gl.R32F, gl.RED, gl.FLOAT),
+        dataTexture(gl, viewOf(Uint32Array, l.joints), 2, gl.RG32UI, gl.RG_INTEGER, gl.UNSIGNED_INT),
+        dataTexture(gl, viewOf(Float32Array, l.weights), 2, gl.RG32F, gl.RG, gl.FLOAT),
       ];
       list.lines = { vao: gl.createVertexArray(), buffers: [], textures, count: segments };
     }

@@ -70,8 +70,8 @@
  */
 
 /**
- * The client's buffers back once they are on its GPU (tree: the mesh parts; ivy: stems, leaves,
- * suckers, buds), as {"<part>.<name>": ArrayBuffer} (web/shell/worker_client.js recycle), transferred;
+ * The client's buffers back once they are on its GPU (tree: the mesh parts, 'sway.poses' of a pose,
+ * 'cards.*' and 'lines.*' of a draw list; ivy: stems, leaves, suckers, buds), as {"<part>.<name>": ArrayBuffer} (web/shell/worker_client.js recycle), transferred;
  * the next reply copies into them. No reply.
  * @typedef {Envelope & {type: 'recycle', buffers: Object<string, ArrayBuffer>}} RecycleMessage
  */
@@ -86,7 +86,8 @@
  *   -> PoseMessage, one at a time
  * @typedef {Envelope & {type: 'poseDone'}} PoseDoneMessage
  * @typedef {Envelope & {type: 'pose', time: number, wind: number, instances: number, stepMs: number,
- *   poses: ArrayBuffer}} PoseMessage
+ *   poses: Float32Array, buffers: {reused: number, fresh: number}}} PoseMessage
+ *   poses: a view of the exact length, into the buffer the client handed back when it fits
  */
 
 /**
@@ -95,7 +96,8 @@
  * @typedef {Envelope & {type: 'view', camera: {eye: number[], target: number[], fovY: number,
  *   width: number, height: number}, slot?: number, tag?: any}} ViewMessage
  *   -> {type: 'drawList', client, stats, cards: {positions, uvs, indices, joints, weights},
- *       lines: {positions, colors, widths, joints, weights}, slot?, tag?} (transferred)
+ *       lines: {positions, colors, widths, joints, weights}, buffers: {reused, fresh}, slot?, tag?}
+ *       (views of the exact length into the client's returned buffers when they fit; transferred)
  * With motion: true (and atlas: true for the atlas), the same for a full-mode tree: its cheaper
  * representation while it moves (issue 16), -> {type: 'motionAtlas', client, hybrid} (as the
  * tree message's hybrid) when asked, then {type: 'drawList', motion: true, ...}; a scene that cannot

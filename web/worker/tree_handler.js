@@ -1,9 +1,10 @@
 // The tree study's worker handler: grows trees year by year (superseded between years), sends
 // their meshes, re-skins or re-views the tree already grown for sway and render edits (restage),
 // runs the wind, the hybrid views and the exports. One TreeSession (web/bindings/tree_bindings.cpp)
-// per client keeps the client's last finished tree. The mesh parts go as views into the buffers the
-// client handed back ('recycle', once they are on its GPU) when they fit, else into fresh ones
-// (web/worker/transfer.js TransferPool). Messages: web/worker/protocol.js.
+// per client keeps the client's last finished tree. The mesh parts, the sway poses and the hybrid
+// draw lists go as views into the buffers the client handed back ('recycle', once they are on its
+// GPU) when they fit, else into fresh ones (web/worker/transfer.js TransferPool). Messages:
+// web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does).
 import { errorOf, errorReply } from './errors.js';
 import { nextTask as yieldToEvents } from './next_task.js';
@@ -22,7 +23,7 @@ export function createHandler(Module, ctx) {
   // only the earliest stage whose rows changed, and clears the hybrid scene).
   const treeKeys = paramTable.filter((row) => !['mesh', 'sway', 'view'].includes(row.stage)).map((row) => row.key);
   const finished = new Map();  // client -> {session, state, until} of its last tree sent
-  const returned = new TransferPool();  // the mesh buffers each client handed back
+  const returned = new TransferPool();  // the mesh, pose and draw-list buffers each client handed back
 
   // True when states a and b (as the pages send them) grow the same tree.
   function sameTree(a, b) {
@@ -256,10 +257,12 @@ export function createHandler(Module, ctx) {
           sway.steps = 0;
           time = 0;
         }
-        const poses = copyView(session.buffers('sway').poses);
+        // Into the poses buffer the client handed back with the last pose, when it did.
+        const transfer = [], buffers = { reused: 0, fresh: 0 };
+        const { poses } = returned.take(client, 'sway', session.buffers('sway'), transfer, buffers);
         sway.waiting = true;
         post({ type: 'pose', client, time, wind: session.swayWindSpeed(), instances: session.swayInstances(),
-          stepMs, stepsPerTick: most, speed: session.swaySpeed(), poses }, [poses]);
+          stepMs, stepsPerTick: most, speed: session.swaySpeed(), poses, buffers }, transfer);
       }
     }
     sway.timer = setTimeout(() => windTick(client, sway), 8);
@@ -296,11 +299,11 @@ export function createHandler(Module, ctx) {
     const stats = JSON.parse(slotted ? session.hybridViewSlot(Number.isInteger(slot) ? slot : -1, ...view)
       : session.hybridView(...view));
     if (stats.ok === false) throw new Error(stats.message);
-    const transfer = [];
-    const cards = takeBuffers(session.buffers('cards'), transfer);
-    const lines = takeBuffers(session.buffers('lines'), transfer);
+    const transfer = [], buffers = { reused: 0, fresh: 0 };
+    const cards = returned.take(client, 'cards', session.buffers('cards'), transfer, buffers);
+    const lines = returned.take(client, 'lines', session.buffers('lines'), transfer, buffers);
     const extra = slotted ? { slot, tag } : motion ? { motion: true } : {};
-    post({ type: 'drawList', client, stats, cards, lines, ...extra }, transfer);
+    post({ type: 'drawList', client, stats, cards, lines, buffers, ...extra }, transfer);
   }
 
   function exportTree(msg, client) {
