@@ -14,6 +14,7 @@
 import { EmbedElement, attributeValue } from './web/shell/embed_element.js';
 import { setHooks } from './web/shell/test_hooks.js';
 import { Renderer } from './web/tree/tree_renderer.js';
+import { viewOf } from './web/gl/buffers.js';
 
 class NiwaTree extends EmbedElement {
   static get observedAttributes() { return ['preset', 'seed', 'years', 'state', 'wind']; }
@@ -132,6 +133,7 @@ class NiwaTree extends EmbedElement {
       this.viewInFlight = false;
       if (!this.hybridOn || !this.renderer) return;
       this.renderer.setDrawList(msg);
+      this.worker.recycle({ cards: msg.cards, lines: msg.lines });  // uploaded: back to the worker
       this.requestFrame();
       if (this.viewDirty) this.requestView();
     } else if (msg.type === 'pose') {
@@ -139,7 +141,8 @@ class NiwaTree extends EmbedElement {
         this.worker.post('poseDone');
         return;
       }
-      this.renderer.setPoses(new Float32Array(msg.poses), msg.wind, msg.time);
+      this.renderer.setPoses(viewOf(Float32Array, msg.poses), msg.wind, msg.time);
+      this.worker.recycle({ sway: { poses: msg.poses } });  // uploaded: back to the worker
       this.poseDrawPending = true;
       setHooks({ swayTime: msg.time.toFixed(3) }, this);
       this.requestFrame();
@@ -151,7 +154,12 @@ class NiwaTree extends EmbedElement {
   showTree(msg) {
     this.pendingTree = null;
     // A big mesh goes up in parts (tree_renderer.js): draw again once it is in place.
-    this.renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid).then(() => this.requestFrame());
+    // Once in place, the mesh's buffers go back to the worker for the next tree to fill.
+    const { bark, leaves, flowers } = msg.mesh;
+    this.renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid).then(() => {
+      this.worker.recycle({ bark, leaves, flowers });
+      this.requestFrame();
+    });
     this.hybridOn = Boolean(msg.hybrid);
     this.viewInFlight = false;
     if (this.sun) this.renderer.setSun(...this.sun);

@@ -108,6 +108,7 @@ class NiwaIvy extends EmbedElement {
   showIvy(msg) {
     this.pending.ivy = null;
     this.renderer.setIvy(msg.mesh).then((installed) => {  // a big ivy goes up in parts
+      this.worker.recycle(msg.mesh);  // back to the worker for the next ivy to fill
       if (!installed) return;
       if (!this.framed && this.renderer.bounds()) {
         this.camera.reset(this.renderer.bounds());

@@ -81,6 +81,7 @@ await runBrowserTest(async (server, browser) => {
   await page.goto(`${server.url}ivy.html`, { waitUntil: 'load' });
   let data = await waitIvy(page, 0);
   check('opens with an ivy grown', data.status === 'ready' && Number(data.internodes) > 20, `status ${data.status}, ${data.internodes} internodes, ${data.error || ''}`);
+  const firstBuffers = { fresh: Number(data.buffersFresh), reused: Number(data.buffersReused) };
   check('the support is cubes4', data.supportName === 'cubes4' && data.supportTriangles === '20', `${data.supportName}, ${data.supportTriangles} tris`);
   check('the hash is the ivy state', /^#preset=paper&seed=1&steps=50&scene=cubes4/.test(await page.evaluate(() => location.hash)), await page.evaluate(() => location.hash));
   compareWithNative('cubes4', data, ['--url', data.hash]);
@@ -225,6 +226,17 @@ await runBrowserTest(async (server, browser) => {
   await page.fill('#param-t1', '0.2');
   data = await waitIvy(page, serial);
   check('the page recovers after the bad value', data.status === 'ready', `status ${data.status}`);
+
+  // 4b. The worker's buffers are reused (web/worker/transfer.js): the page hands each ivy's buffers
+  // back once they are on the GPU, and a leaf_size edit (a mesh row: the same vertex counts) is
+  // copied into them, with no fresh buffer.
+  check('the first ivy came in fresh buffers', firstBuffers.fresh >= 10 && firstBuffers.reused === 0, JSON.stringify(firstBuffers));
+  serial = Number(data.ivySerial);
+  await page.evaluate(() => { document.getElementById('param-leaf_size').closest('details').open = true; });
+  await page.fill('#param-leaf_size', '45');
+  data = await waitIvy(page, serial);
+  check('a leaf_size edit reuses the returned buffers', data.status === 'ready' && data.buffersFresh === '0' && Number(data.buffersReused) >= 10,
+    `fresh ${data.buffersFresh}, reused ${data.buffersReused} (first ivy: ${JSON.stringify(firstBuffers)})`);
 
   // 5. A real Draco asset dropped on the view grows ivy (and the CLI agrees, given the same file).
   serial = Number(data.ivySerial);

@@ -12,7 +12,10 @@ const problems = [];
 const hooks = (page) => page.evaluate(() => {
   const d = document.documentElement.dataset;
   return { grows: Number(d.growRequests), restages: Number(d.restageRequests), grown: Number(d.treesGrown),
-    serial: Number(d.treeSerial), internodes: d.internodes, renderMode: d.renderMode, views: Number(d.renderViews || 0) };
+    serial: Number(d.treeSerial), internodes: d.internodes, renderMode: d.renderMode, views: Number(d.renderViews || 0),
+    reused: Number(d.buffersReused), fresh: Number(d.buffersFresh), stages: d.restagedStages,
+    poseReused: Number(d.poseBuffersReused || 0), poseFresh: Number(d.poseBuffersFresh || 0),
+    viewReused: Number(d.viewBuffersReused || 0), viewFresh: Number(d.viewBuffersFresh || 0) };
 });
 
 // Fills a panel field (opening its section first) and waits for the tree that answers it.
@@ -42,12 +45,24 @@ await runBrowserTest(async (server, browser) => {
   check('a wind edit sends no grow', wind.after.grows === wind.before.grows && wind.after.grown === wind.before.grown,
     `grow requests ${wind.before.grows} -> ${wind.after.grows}, grown ${wind.before.grown} -> ${wind.after.grown}`);
   check('a wind edit is one restage', wind.after.restages === wind.before.restages + 1, `${wind.before.restages} -> ${wind.after.restages}`);
+  // The stages the run re-did (core TreeRun::Update through the session's update): sway and after.
+  check('a wind edit re-does the sway and view stages', wind.after.stages === 'sway,view', `stages '${wind.after.stages}'`);
   check('a wind edit keeps the tree', wind.after.internodes === start.internodes, `${start.internodes} -> ${wind.after.internodes}`);
   check('a wind edit is in the URL', wind.hash.includes('wind_speed=9'), wind.hash);
+  // The first tree's buffers went into fresh ones; the page handed them back once on the GPU, and
+  // the restaged tree (the same mesh sizes) was copied into them: no fresh buffer
+  // (web/worker/transfer.js TransferPool).
+  check('the first tree comes in fresh buffers', start.fresh >= 10 && start.reused === 0, `fresh ${start.fresh}, reused ${start.reused}`);
+  check('the restaged tree reuses the returned buffers', wind.after.reused === start.fresh && wind.after.fresh === 0,
+    `fresh ${wind.after.fresh}, reused ${wind.after.reused} (first tree: ${start.fresh} fresh)`);
   await page.click('#wind');
   await page.waitForFunction(() => Number(document.documentElement.dataset.swayTime || 0) > 2, null, { timeout: TIMEOUT, polling: 100 });
   const info = await page.textContent('#wind-info');
   check('the sway blows with the edited wind', /wind 9\.0 m\/s/.test(info), info);
+  // Each pose is copied into the poses buffer the page handed back after uploading the last one.
+  const blowing = await hooks(page);
+  check('the poses reuse the returned buffer', blowing.poseFresh <= 2 && blowing.poseReused >= 5,
+    `${blowing.poseFresh} fresh, ${blowing.poseReused} reused pose buffers`);
   // A sway row while it blows: re-skinned (eq. 3.15's exponent), still no grow, still blowing.
   const sway = await edit(page, 'sway_alpha', '3');
   await page.waitForFunction(() => Number(document.documentElement.dataset.swayTime || 0) > 1.5, null, { timeout: TIMEOUT, polling: 100 });
@@ -79,6 +94,16 @@ await runBrowserTest(async (server, browser) => {
   const lines = await edit(page, 'line_threshold', '8');
   check('a render row edit sends no grow', lines.after.grows === lines.before.grows && lines.after.grown === lines.before.grown
     && lines.hash.includes('line_threshold=8'), `${lines.before.grows} -> ${lines.after.grows}; ${lines.hash}`);
+  check('a render row edit re-does the view stage only', lines.after.stages === 'view', `stages '${lines.after.stages}'`);
+  // The draw lists (cards and lines) are copied into the buffers the page handed back after the last.
+  await page.waitForFunction((n) => Number(document.documentElement.dataset.renderViews || 0) > n, lines.before.views, { timeout: TIMEOUT, polling: 100 });
+  const views = await hooks(page);
+  check('the draw lists reuse the returned buffers', views.viewReused > 0, `${views.viewFresh} fresh, ${views.viewReused} reused draw-list buffers`);
+  // A mesh row (leaf_shape): the mesh is rebuilt on the same tree, no grow.
+  const shape = await edit(page, 'leaf_shape', '2');
+  check('a mesh row edit re-does mesh, sway and view, not the growth', shape.after.stages === 'mesh,sway,view'
+    && shape.after.grows === shape.before.grows && shape.after.grown === shape.before.grown && shape.after.internodes === shape.before.internodes,
+    `stages '${shape.after.stages}', grow requests ${shape.before.grows} -> ${shape.after.grows}, internodes ${shape.before.internodes} -> ${shape.after.internodes}`);
 
   // A growth row: exactly one grow, and the tree equals the native CLI's.
   const growth = await edit(page, 'alpha_l', '0.6');

@@ -52,7 +52,9 @@ export class TreeSession {
   year(): number;
   done(): boolean;
   hash(): string;
-  restate(stateJson: string): ErrorText;
+  /** TreeRun::Update, as JSON text: {ok: true, stages: ('grow'|'mesh'|'sway'|'view')[]} (the stages
+   * re-done; "grow": growYear() and buildMesh() again) or an ErrorRecord. */
+  update(stateJson: string): string;
   buffers(group: string): BufferViews;
   growYear(): boolean;
   buildMesh(): ErrorText;

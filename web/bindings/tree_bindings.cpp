@@ -30,8 +30,10 @@
 //     "glb"                           bytes (Uint8, after buildGlb)
 //   An unknown group gives null.
 // - Calls, in order: TreeSession(stateJson) -> error(), hash(), years(); growYear() until done();
-//   buildMesh(); statsJson(); buffers(...). restate(stateJson) swaps in a state that grows the same
-//   tree (sway and render edits: re-skins, clears the hybrid scene). swayStart() /
+//   buildMesh(); statsJson(); buffers(...). update(stateJson) -> {ok, stages} hands a new state to
+//   TreeRun::Update, which re-does only the earliest stage whose rows changed and the ones after
+//   (grow: the run is reset, growYear() and buildMesh() again; mesh, sway, view: the tree stays,
+//   the hybrid scene is cleared). swayStart() /
 //   swayStartAt(origins in metres, 3 per instance) -> "" or error, swayStep(n) -> time, swayDt(),
 //   swayStepsPerTick() (the worker's steps a tick, sway_budget), swaySpeed() (share of real time),
 //   swayDuration(), swayWindSpeed(), swayInstances(). buildHybrid() -> "" or error, atlasSize(),
@@ -89,11 +91,7 @@ class TreeSession {
   explicit TreeSession(const std::string& state_json) {
     error_ = ApplyStateJson(state_json, &state_);  // core/tree/tree_state
     if (!error_.ok()) return;
-    // The page's budget (docs/budgets.md): what a laptop tab's WASM heap holds, by estimate.
-    state_.limits = TreeGrowLimits(state_.params, PageBudget(), "years");
-    state_.limits.bytes_per_alive_internode = MeshBytesPerInternode(state_.params);
-    state_.limits.max_internodes = kPageInternodes;
-    state_.limits.internode_limit = "page internode budget";
+    SetPageLimits(&state_);
     Result<TreeRun> run = TreeRun::Start(state_, PageBudget());  // core/render/tree_run
     if (!run.ok()) {
       error_ = run.status();
@@ -111,28 +109,38 @@ class TreeSession {
   bool done() const { return !run_ || run_->finished(); }
   std::string hash() const { return run_ ? run_->Hash("") : ""; }
 
-  // Swaps in `state_json` for the tree already grown (the page's sway and render edits): "" or one
-  // error line, and the session is unchanged on error. The state must grow the same tree (preset,
-  // seed, years and prunes; the worker also compares the growth rows). The sway model and skin are
-  // rebuilt from the new sway rows (eq. 3.15 weights depend on sway_alpha), any sway stops, and the
-  // hybrid scene is cleared (buildHybrid() rebuilds it with the new render rows).
-  std::string restate(const std::string& state_json) {
+  // A new state for the session's run (the page's edits): core/render/tree_run's TreeRun::Update
+  // re-does only the earliest stage whose rows changed (the table's stage column) and the ones
+  // after it. Returns {"ok": true, "stages": ["mesh", "sway", "view"]} (the stages re-done; none
+  // when nothing changed) or the error record, the session unchanged on error. With "grow" the run
+  // starts again from year 0 (growYear() and buildMesh() as after the constructor); otherwise the
+  // tree stays, its mesh (stage mesh) and skin (mesh or sway) are rebuilt as the run says, and when
+  // anything changed any sway stops and the hybrid scene is cleared (buildHybrid() rebuilds it with
+  // the new render rows).
+  std::string update(const std::string& state_json) {
     TreeState next;
-    Status error = ApplyStateJson(state_json, &next);
-    if (!error.ok()) return ErrorText(error);
-    if (!run_) return ErrorText(Status::Error("restate", "no tree has been grown"));
-    // The run re-dresses the same tree in the new look rows and re-skins it to the new sway rows.
-    error = run_->Restate(next);
-    if (!error.ok()) return ErrorText(error);
-    sways_.clear();
-    RestPoses(model().nodes.size());
-    hybrid_ = HybridScene{};
-    atlas_ = AtlasMesh{};
-    has_selection_ = false;
-    slots_.clear();
-    draw_ = HybridDrawList{};
-    draw_skin_ = DrawListSkin{};
-    return "";
+    const Status error = ApplyStateJson(state_json, &next);
+    if (!error.ok()) return ErrorRecordJson(error);
+    if (!run_) return ErrorRecordJson(NoTree());
+    SetPageLimits(&next);  // the growth's limits when it regrows (a later stage keeps the run's)
+    const Result<run::StageMask> mask = run_->Update(next);
+    if (!mask.ok()) return ErrorRecordJson(mask.status());
+    ordered_json stages = ordered_json::array();
+    for (Stage stage : {Stage::kGrow, Stage::kMesh, Stage::kSway, Stage::kView}) {
+      if (*mask & (1u << static_cast<int>(stage))) stages.push_back(StageName(stage));
+    }
+    if (*mask != 0) {
+      state_ = run_->state();
+      sways_.clear();
+      RestPoses(model().nodes.size());
+      hybrid_ = HybridScene{};
+      atlas_ = AtlasMesh{};
+      has_selection_ = false;
+      slots_.clear();
+      draw_ = HybridDrawList{};
+      draw_skin_ = DrawListSkin{};
+    }
+    return JsonText(ordered_json{{"ok", true}, {"stages", stages}});
   }
 
   // The typed views of one buffer group (see JS BINDINGS DESIGN above), or null.
@@ -384,7 +392,16 @@ class TreeSession {
   // Why there is no tree: the state's or the start's error, else "tree: no tree".
   Status NoTree() const { return error_.ok() ? Status::Error("tree", "no tree") : error_; }
 
-  // The state of the run (after restates), or the one given when it was refused.
+  // The page's growth limits on `state` (docs/budgets.md): what a laptop tab's WASM heap holds,
+  // by estimate, and kPageInternodes.
+  static void SetPageLimits(TreeState* state) {
+    state->limits = TreeGrowLimits(state->params, PageBudget(), "years");
+    state->limits.bytes_per_alive_internode = MeshBytesPerInternode(state->params);
+    state->limits.max_internodes = kPageInternodes;
+    state->limits.internode_limit = "page internode budget";
+  }
+
+  // The state of the run (after updates), or the one given when it was refused.
   const TreeState& state() const { return run_ ? run_->state() : state_; }
   const SwayModel& model() const { return run_ ? run_->sway_model() : kNoModel; }
 
@@ -471,7 +488,7 @@ EMSCRIPTEN_BINDINGS(niwa_tree) {
       .function("year", &niwa::TreeSession::year)
       .function("done", &niwa::TreeSession::done)
       .function("hash", &niwa::TreeSession::hash)
-      .function("restate", &niwa::TreeSession::restate)
+      .function("update", &niwa::TreeSession::update)
       .function("buffers", &niwa::TreeSession::buffers)
       .function("growYear", &niwa::TreeSession::growYear)
       .function("buildMesh", &niwa::TreeSession::buildMesh)

@@ -3,6 +3,15 @@
 // Does not: cast real shadows or follow a terrain (the terrain study draws its own surface).
 import { BACKGROUND } from './context.js';
 
+// The ground's draw options under a footprint {center, extent, shadowRadius, crownHeight} (metres):
+// the crown's shadow falls away from the sun (its centre projected along `light`, the unit
+// direction towards the sun). One rule for a renderer alone and for a Frame of layers.
+export function groundUnder(footprint, light) {
+  const reach = (footprint.crownHeight || 0) / Math.max(light[1], 0.25);
+  return { center: footprint.center, extent: footprint.extent, shadowRadius: footprint.shadowRadius,
+    shadowOffset: [-light[0] * reach, -light[2] * reach] };
+}
+
 export class Ground {
   // program: the linked ground program ({program, uniforms}).
   constructor(gl, program) {
@@ -37,5 +46,10 @@ export class Ground {
     gl.bindVertexArray(null);
     gl.disable(gl.POLYGON_OFFSET_FILL);
     return { triangles: 2, drawCalls: 1 };
+  }
+
+  dispose() {
+    this.gl.deleteVertexArray(this.vao);
+    this.gl.deleteBuffer(this.corners);
   }
 }

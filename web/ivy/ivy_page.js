@@ -287,8 +287,12 @@ worker.on('ivy', (msg) => {
   ui.progress.textContent = '';
   ui.stats.textContent = `internodes ${s.internodes} · leaves ${s.leaves} · laterals ${s.laterals} · buds A ${s.buds.A} D ${s.buds.D} Z ${s.buds.Z} · grown in ${s.ms.toFixed(1)} ms`;
   const serial = ivySerial + 1;
+  // The worker's buffers reused (web/worker/transfer.js): what this reply's copy went into.
+  setHooks({ buffersReused: msg.buffers?.reused ?? '', buffersFresh: msg.buffers?.fresh ?? '' });
   if (renderer) {
     renderer.setIvy(msg.mesh).then((installed) => {
+      // On the GPU (or dropped): the buffers go back for the worker's next ivy to fill.
+      worker.recycle(msg.mesh);
       if (!installed) return;
       installedSerial = serial;
       if (frameNext && renderer.bounds()) {
@@ -297,7 +301,9 @@ worker.on('ivy', (msg) => {
       }
       requestFrame();
     });
-    renderer.setBuds(msg.mesh.buds);
+    renderer.setBuds(msg.mesh.buds);  // uploaded at once (the buffers go back after setIvy's)
+  } else {
+    worker.recycle(msg.mesh);
   }
   scrubber.reset(msg.steps);
   if (!support?.dropped) lastBuiltIn = msg.hash;

@@ -4,11 +4,14 @@
 // (px for the built-in scenes, metres for most assets); uModel scales the support into a view of
 // about ten units so one orbit camera fits every scene. The step scrubber hides what was born after
 // step k in the vertex shader (aBirth), so replaying the growth needs no regrow.
+// It draws alone on its canvas (render) or as a layer of a Frame (web/gl/frame.js: frameSteps,
+// under the frame's camera and sun, in the frame's world: the scene's units times `unitScale`,
+// not fitted to a view of ten units).
 // Does not: talk to the worker, pick by id (a click is a ray in scene units; the worker's BVH
 // answers it), or know the growth model.
 import { createContext, resizeCanvas } from '../gl/context.js';
 import { defaultSunDirection } from '../gl/sun.js';
-import { floatAttribute, staticBuffer } from '../gl/buffers.js';
+import { floatAttribute, staticBuffer, viewOf } from '../gl/buffers.js';
 import { uploadInParts } from '../gl/chunked_upload.js';
 import { ProgressiveFrame } from '../gl/progressive_frame.js';
 import { loadPrograms } from '../gl/program.js';
@@ -60,9 +63,14 @@ export function birthCounter(indices, birth) {
 }
 
 export class IvyRenderer {
-  constructor(canvas) {
-    this.canvas = canvas;
-    this.gl = createContext(canvas, 'the ivy');
+  // target: a canvas (the renderer makes its context) or a Frame ({canvas, gl}: a layer of it,
+  // drawn in metres: one scene unit is `unitScale` metres, 1 for a metric scene such as a tree's).
+  constructor(target, { unitScale = 1 } = {}) {
+    const frame = target && target.gl && target.canvas ? target : null;
+    this.canvas = frame ? frame.canvas : target;
+    this.gl = frame ? frame.gl : createContext(this.canvas, 'the ivy');
+    this.fitView = !frame;  // alone: the support fitted to a view of VIEW_SIZE units
+    this.unitScale = unitScale;
     this.parts = {};  // name -> {vao, buffers, count, births}
     this.model = [0, 0, 0, 1];
     this.step = Infinity;
@@ -165,6 +173,12 @@ export class IvyRenderer {
   }
 
   #fit(bounds) {
+    if (!this.fitView) {  // a Frame's layer: the frame's world, not a fitted view
+      const s = this.unitScale;
+      this.model = [0, 0, 0, s];
+      this.boundsView = bounds ? { min: bounds.min.map((x) => x * s), max: bounds.max.map((x) => x * s) } : null;
+      return;
+    }
     if (!bounds) {
       this.model = [0, 0, 0, 1];
       this.boundsView = null;
@@ -227,11 +241,11 @@ export class IvyRenderer {
         else gl.disableVertexAttribArray(3);
         gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, buffers[3]);
         gl.bindVertexArray(null);
-        const indices = new Uint32Array(mesh[name].indices);
-        this.parts[name] = { vao, buffers, count: indices.length, uvs, births: birthCounter(indices, new Float32Array(mesh[name].birth)) };
+        const indices = viewOf(Uint32Array, mesh[name].indices);
+        this.parts[name] = { vao, buffers, count: indices.length, uvs, births: birthCounter(indices, viewOf(Float32Array, mesh[name].birth)) };
       }
       if (!this.parts.support) {
-        const p = new Float32Array(mesh.stems.positions);
+        const p = viewOf(Float32Array, mesh.stems.positions);
         if (p.length) {
           const min = [Infinity, Infinity, Infinity], max = [-Infinity, -Infinity, -Infinity];
           for (let i = 0; i < p.length; ++i) {
@@ -261,12 +275,12 @@ export class IvyRenderer {
     this.#dropBuds();
     const vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
-    const buffers = [new Float32Array(b.positions), new Float32Array(b.kind), new Float32Array(b.birth)].map((a) => staticBuffer(gl, a));
+    const buffers = [b.positions, b.kind, b.birth].map((a) => staticBuffer(gl, viewOf(Float32Array, a)));
     floatAttribute(gl, 0, buffers[0], 3);
     floatAttribute(gl, 1, buffers[1], 1);
     floatAttribute(gl, 2, buffers[2], 1);
     gl.bindVertexArray(null);
-    this.buds = { vao, buffers, count: new Float32Array(b.kind).length };
+    this.buds = { vao, buffers, count: viewOf(Float32Array, b.kind).length };
   }
 
   #dropBuds() {
@@ -347,11 +361,21 @@ export class IvyRenderer {
   }
 
   #startFrame(camera, quality, budget) {
-    const gl = this.gl;
     this.scale = quality?.scale || 1;
     resizeCanvas(this.canvas, this.scale);  // cleared by progress.begin (canvas or offscreen)
-    const vp = camera.viewProjection(this.canvas.width / this.canvas.height);
-    const eye = camera.position();
+    const view = { viewProjection: camera.viewProjection(this.canvas.width / this.canvas.height), eye: camera.position(),
+      light: this.light, scale: this.scale };
+    const { steps, totals } = this.layerSteps(view);
+    this.frameTotals = totals;
+    this.progress.begin(this.canvas, steps, budget);
+  }
+
+  // The ivy's steps of a frame (web/gl/progressive_frame.js) under `view` ({viewProjection, eye,
+  // light: the unit direction towards the sun, scale: the drawing buffer's}): the support and the
+  // ivy's parts, then the markers. Returns {steps, totals}.
+  layerSteps(view) {
+    const gl = this.gl;
+    const { viewProjection: vp, eye, light } = view;
     const step = Number.isFinite(this.step) ? this.step : 1e9;
     const p = this.programs.ivy;
     const totals = { triangles: 0, drawCalls: 0, primitives: 0, leavesTextured: false };
@@ -369,7 +393,7 @@ export class IvyRenderer {
           gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, vp);
           gl.uniform4fv(p.uniforms.uModel, this.model);
           gl.uniform1f(p.uniforms.uStep, step);
-          gl.uniform3fv(p.uniforms.uLightDirection, this.light);
+          gl.uniform3fv(p.uniforms.uLightDirection, light);
           gl.uniform3fv(p.uniforms.uCameraPosition, eye);
           gl.disable(gl.CULL_FACE);
           gl.uniform3fv(p.uniforms.uColor, COLORS[name].color);
@@ -399,6 +423,7 @@ export class IvyRenderer {
     if (this.seeds.count && this.visible.seeds) markers.push(this.seeds);
     if (markers.length) {
       const m = this.programs.marker;
+      const pointSize = 12 * Math.min(window.devicePixelRatio || 1, 2) * (view.scale || 1);
       steps.push({
         primitives: 0,  // a few points: drawn whole
         setup: () => {},
@@ -406,7 +431,7 @@ export class IvyRenderer {
           gl.useProgram(m.program);
           gl.uniformMatrix4fv(m.uniforms.uViewProjection, false, vp);
           gl.uniform4fv(m.uniforms.uModel, this.model);
-          gl.uniform1f(m.uniforms.uPointSize, 12 * Math.min(window.devicePixelRatio || 1, 2) * this.scale);
+          gl.uniform1f(m.uniforms.uPointSize, pointSize);
           gl.uniform1f(m.uniforms.uStep, step);
           gl.disable(gl.DEPTH_TEST);
           for (const marker of markers) {
@@ -418,8 +443,36 @@ export class IvyRenderer {
       });
       totals.drawCalls += markers.length;
     }
-    this.frameTotals = totals;
-    this.progress.begin(this.canvas, steps, budget);
+    return { steps, totals };
+  }
+
+  // ---- As a layer of a Frame (web/gl/frame.js) ----
+  // The ivy's steps under the frame's view (its camera and sun).
+  frameSteps(view) {
+    return this.layerSteps(view).steps;
+  }
+
+  // The support's (or the ivy's) box in the frame's world (metres), or null.
+  worldBounds() {
+    return this.fitView ? null : this.boundsView;
+  }
+
+  // Frees the context's objects this renderer made.
+  dispose() {
+    const gl = this.gl;
+    this.progress.abort();
+    ++this.ivyUploads;  // an upload on its way is dropped
+    for (const name of Object.keys(this.parts)) this.#drop(name);
+    this.#dropBuds();
+    if (this.seeds.vao) {
+      gl.deleteVertexArray(this.seeds.vao);
+      gl.deleteBuffer(this.seeds.buffer);
+      this.seeds = { vao: null, buffer: null, count: 0 };
+    }
+    if (this.leafTexture) gl.deleteTexture(this.leafTexture);
+    this.leafTexture = null;
+    for (const p of Object.values(this.programs || {})) gl.deleteProgram(p.program);
+    this.programs = null;
   }
 }
 

@@ -72,6 +72,26 @@ export class WorkerClient {
     sharedWorker().worker.postMessage({ ...fields, ...envelope }, transfer);
   }
 
+  // Hands a reply's buffers back to the worker once they are on the GPU (the protocol's "buffers
+  // transferred and reused"): groups {group: {name: view or ArrayBuffer}} go as {"group.name":
+  // ArrayBuffer} in a message of `type` (default 'recycle'), transferred; the worker's next reply
+  // copies into them (web/worker/transfer.js TransferPool). The caller must not read them after.
+  // Returns the number of buffers sent.
+  recycle(groups, type = 'recycle') {
+    const buffers = {}, transfer = [];
+    for (const [group, parts] of Object.entries(groups || {})) {
+      for (const [name, value] of Object.entries(parts || {})) {
+        const buffer = ArrayBuffer.isView(value) ? value.buffer : value;
+        // Skips empty and detached buffers, and a buffer named twice (one transfer each).
+        if (!(buffer instanceof ArrayBuffer) || buffer.byteLength === 0 || transfer.includes(buffer)) continue;
+        buffers[`${group}.${name}`] = buffer;
+        transfer.push(buffer);
+      }
+    }
+    if (transfer.length > 0) this.post(type, { buffers }, transfer);
+    return transfer.length;
+  }
+
   // Sends a request with a fresh id; a newer request of the same `group` supersedes it (its later
   // replies are dropped and its promise resolves to null). Resolves to the first reply whose type
   // is in `done` (or an 'error' with this id). Returns {id, reply}.

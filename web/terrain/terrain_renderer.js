@@ -4,6 +4,9 @@
 // plan extent to about ten view units so one orbit camera fits every seed. The level scrubber
 // (setLevel) shows the mountain as it stands at level k: contours up to k, the surface cut at
 // h0 + k·Δh; nothing regrows.
+// It draws alone on its canvas (render) or as a layer of a Frame (web/gl/frame.js: frameSteps,
+// under the frame's camera and sun, in metres about the mountain's plan centre at its lowest height,
+// times `unitScale`, not fitted to a view of ten units).
 // Does not: talk to the worker, draw the 2-D plan (plan_view.js), or know the generation methods.
 import { createContext, resizeCanvas } from '../gl/context.js';
 import { defaultSunDirection } from '../gl/sun.js';
@@ -17,9 +20,13 @@ const SHADERS = new URL('../../shaders/terrain/', import.meta.url);
 const VIEW_SIZE = 10;  // the mountain's plan extent in view units
 
 export class TerrainRenderer {
-  constructor(canvas) {
-    this.canvas = canvas;
-    this.gl = createContext(canvas, 'the mountain');
+  // target: a canvas (the renderer makes its context) or a Frame ({canvas, gl}: a layer of it).
+  constructor(target, { unitScale = 1 } = {}) {
+    const frame = target && target.gl && target.canvas ? target : null;
+    this.canvas = frame ? frame.canvas : target;
+    this.gl = frame ? frame.gl : createContext(this.canvas, 'the mountain');
+    this.fitView = !frame;  // alone: the plan extent fitted to VIEW_SIZE view units
+    this.unitScale = unitScale;
     this.surface = null;   // {vao, buffers, count}
     this.contours = null;  // {vao, buffers, count}
     this.model = [0, 0, 0, 1];
@@ -109,7 +116,7 @@ export class TerrainRenderer {
       this.lineLevels = new Float32Array(0);
     }
     const extent = Math.max(bounds.max[0] - bounds.min[0], bounds.max[1] - bounds.min[1], 1e-9);
-    const scale = VIEW_SIZE / extent;
+    const scale = this.fitView ? VIEW_SIZE / extent : this.unitScale;
     const cx = (bounds.min[0] + bounds.max[0]) / 2, cy = (bounds.min[1] + bounds.max[1]) / 2;
     this.model = [cx, bounds.h_min, -cy, scale];
     this.heights = [bounds.h_min, bounds.h_max];
@@ -155,10 +162,21 @@ export class TerrainRenderer {
   }
 
   #startFrame(camera, quality, budget) {
-    const gl = this.gl;
     this.scale = quality?.scale || 1;
     resizeCanvas(this.canvas, this.scale);  // cleared by progress.begin (canvas or offscreen)
-    const vp = camera.viewProjection(this.canvas.width / this.canvas.height);
+    const view = { viewProjection: camera.viewProjection(this.canvas.width / this.canvas.height), eye: camera.position(),
+      light: this.light, scale: this.scale };
+    const { steps, totals } = this.layerSteps(view);
+    this.frameTotals = totals;
+    this.progress.begin(this.canvas, steps, budget);
+  }
+
+  // The mountain's steps of a frame (web/gl/progressive_frame.js) under `view` ({viewProjection,
+  // light: the unit direction towards the sun}): the surface, then the contour lines. Returns
+  // {steps, totals}.
+  layerSteps(view) {
+    const gl = this.gl;
+    const { viewProjection: vp, light } = view;
     const totals = { triangles: 0, lines: 0, drawCalls: 0, primitives: 0 };
     const steps = [];
     const surface = this.surface;
@@ -176,7 +194,7 @@ export class TerrainRenderer {
           gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, vp);
           gl.uniform4fv(p.uniforms.uModel, this.model);
           gl.uniform1f(p.uniforms.uExaggerate, 1);
-          gl.uniform3fv(p.uniforms.uLightDirection, this.light);
+          gl.uniform3fv(p.uniforms.uLightDirection, light);
           gl.uniform1f(p.uniforms.uTint, tint);
           gl.uniform1f(p.uniforms.uTop, top);
           gl.uniform3fv(p.uniforms.uCutColour, cut);
@@ -213,7 +231,28 @@ export class TerrainRenderer {
       totals.primitives += contours.count / 2;
       ++totals.drawCalls;
     }
-    this.frameTotals = totals;
-    this.progress.begin(this.canvas, steps, budget);
+    return { steps, totals };
+  }
+
+  // ---- As a layer of a Frame (web/gl/frame.js) ----
+  // The mountain's steps under the frame's view (its camera and sun).
+  frameSteps(view) {
+    return this.layerSteps(view).steps;
+  }
+
+  // The mountain's box in the frame's world (metres times unitScale), or null.
+  worldBounds() {
+    return this.fitView ? null : this.boundsView;
+  }
+
+  // Frees the context's objects this renderer made.
+  dispose() {
+    this.progress.abort();
+    ++this.terrainUploads;  // an upload on its way is dropped
+    this.#drop(this.surface);
+    this.#drop(this.contours);
+    this.surface = this.contours = null;
+    for (const p of Object.values(this.programs || {})) this.gl.deleteProgram(p.program);
+    this.programs = null;
   }
 }

@@ -8,6 +8,7 @@
 // Does not: grow or sway trees (the worker does) or draw directly (grove_renderer.js does).
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { FrameLoop, nextFrame } from '../gl/frame_loop.js';
+import { viewOf } from '../gl/buffers.js';
 import { DEFAULT_SUNS } from '../gl/sun.js';
 import { cappedNoticeLines, mountStudyNav } from '../shell/study_page.js';
 import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
@@ -226,6 +227,9 @@ function onTree(msg) {
   const instances = new Float32Array(mine.length * 4);
   mine.forEach((i, k) => instances.set([...i.position, i.scale], k * 4));
   renderer.addTree(index, msg.mesh, instances, msg.hybrid, msg.swayNodes);
+  // Uploaded at once: the buffers go back for the worker's next tree of this client to fill.
+  const { bark, leaves, flowers } = msg.mesh;
+  treeClients[index].recycle({ bark, leaves, flowers });
   trees[index] = { bounds: msg.stats.bounds, stats: msg.stats, nodes: msg.swayNodes };
   if (trees.filter(Boolean).length === UNIQUE.length) {
     requestViews();
@@ -269,7 +273,7 @@ function onPose(msg) {
     treeClients[index].post('poseDone');
     return;
   }
-  const poses = new Float32Array(msg.poses);
+  const poses = viewOf(Float32Array, msg.poses);  // kept: this page hands no pose buffer back
   renderer.setPoses(index, poses);
   sway[index] = { time: msg.time, wind: msg.wind, stepMs: msg.stepMs, poses };
   poseDone.add(msg.client);

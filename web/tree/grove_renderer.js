@@ -5,7 +5,7 @@
 // k's node point j at texel (k · nodes + j) · 4, as shaders/common/skin.glsl reads them).
 // Does not: grow trees, lay out the grove or choose draw lists (grove_page.js and the worker do).
 import { beginFrame, createContext, finishGpu, resizeCanvas, sunDirection } from '../gl/context.js';
-import { floatAttribute, staticBuffer, uintAttribute } from '../gl/buffers.js';
+import { floatAttribute, staticBuffer, uintAttribute, viewOf } from '../gl/buffers.js';
 import { Ground } from '../gl/ground.js';
 import { loadPrograms } from '../gl/program.js';
 import { restPoses, uploadPoses } from '../gl/textures.js';
@@ -182,8 +182,8 @@ export class GroveRenderer {
         // gl.LINES (2 vertices each), the others as quads (4 indexed vertices each).
         let widest = 0;
         for (let i = 4; i < list.members.length; i += MEMBER_FLOATS) widest = Math.max(widest, list.members[i]);
-        const p = new Float32Array(l.positions), col = new Float32Array(l.colors), w = new Float32Array(l.widths);
-        const joints = new Uint32Array(l.joints), weights = new Float32Array(l.weights);
+        const p = viewOf(Float32Array, l.positions), col = viewOf(Float32Array, l.colors), w = viewOf(Float32Array, l.widths);
+        const joints = viewOf(Uint32Array, l.joints), weights = viewOf(Float32Array, l.weights);
         const order = [];
         for (let s = 0; s < segments; ++s) if (w[s] * widest > 1) order.push(s);
         band.thick = order.length;

@@ -8,6 +8,7 @@ import '../shell/study_skeleton.js';  // first: the page's parts exist before th
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { FrameGovernor } from '../gl/frame_governor.js';
 import { FrameLoop } from '../gl/frame_loop.js';
+import { viewOf } from '../gl/buffers.js';
 import { HashHistory } from '../shell/hash_history.js';
 import { ParamPanel } from '../shell/param_panel.js';
 import {
@@ -498,6 +499,13 @@ worker.on('tree', (msg) => {
   ui.progress.textContent = msg.stats.truncated ? msg.stats.truncated_by || 'stopped at max_internodes' : '';
   ui.progressBar.hidden = true;
   shownYear = msg.stats.years;
+  table.showFullCounts(msg.mesh);
+  // The worker's buffers reused (web/worker/transfer.js): what this reply's copy went into.
+  setHooks({ buffersReused: msg.buffers?.reused ?? '', buffersFresh: msg.buffers?.fresh ?? '' });
+  // Once on the GPU (or dropped), the mesh's buffers go back for the worker's next tree to fill;
+  // nothing on the page reads them after (the renderer keeps copies of what it keeps).
+  const { bark, leaves, flowers } = msg.mesh;
+  const giveBack = () => worker.recycle({ bark, leaves, flowers });
   if (renderer) {
     const installed = renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid);
     // A big mesh is installed a few tasks later (uploaded in parts): a draw list that arrives
@@ -505,6 +513,7 @@ worker.on('tree', (msg) => {
     // tree is in place.
     const later = renderer.uploading;
     installed.then((done) => {
+      giveBack();
       if (done) governor.reset();  // another tree: its frames cost what they cost
       if (done && later) requestView();
       requestFrame();
@@ -517,8 +526,9 @@ worker.on('tree', (msg) => {
       writeHash();
     }
     requestFrame();
+  } else {
+    giveBack();
   }
-  table.showFullCounts(msg.mesh);
   hybridOn = Boolean(msg.hybrid);
   viewInFlight = false;
   motionInFlight = false;
@@ -531,6 +541,8 @@ worker.on('tree', (msg) => {
   select(sameTree ? selected : null);
   treeSerial += 1;
   if (msg.grown) bumpHook('treesGrown');
+  // The stages a restage re-did (core TreeRun::Update: a view row re-does the view only).
+  else setHooks({ restagedStages: (msg.stages || []).join(',') });
   setHooks({
     status: 'ready', treeSerial, internodes: msg.stats.internodes, leaves: msg.stats.leaves,
     flowers: msg.stats.flowers, year: msg.stats.years,
@@ -563,17 +575,33 @@ worker.on('drawList', (msg) => {
   viewInFlight = false;
   if (!hybridOn || !renderer) return;
   renderer.setDrawList(msg);
+  // Uploaded: the list's buffers go back for the worker's next draw list to fill.
+  worker.recycle({ cards: msg.cards, lines: msg.lines });
+  countReuse('view', msg.buffers);
   table.showHybridCounts(msg.stats);
   requestFrame(true);  // a hybrid frame is cheap: the new list at once, not after the frame in flight
   if (viewDirty) requestView();
 });
+
+// The worker's buffers reused and fresh (web/worker/transfer.js), per kind of reply, for the hooks
+// data-<kind>-buffers-reused and -fresh.
+const reuse = {};
+function countReuse(kind, buffers) {
+  const r = (reuse[kind] ||= { reused: 0, fresh: 0 });
+  r.reused += buffers?.reused || 0;
+  r.fresh += buffers?.fresh || 0;
+  setHooks({ [`${kind}BuffersReused`]: r.reused, [`${kind}BuffersFresh`]: r.fresh });
+}
 
 worker.on('pose', (msg) => {
   if (!windPlaying || !renderer || renderer.uploading) {  // no poses for a tree not yet in place
     worker.post('poseDone');
     return;
   }
-  renderer.setPoses(new Float32Array(msg.poses), msg.wind, msg.time);
+  renderer.setPoses(viewOf(Float32Array, msg.poses), msg.wind, msg.time);
+  // Uploaded: the poses buffer goes back for the worker's next pose to fill.
+  worker.recycle({ sway: { poses: msg.poses } });
+  countReuse('pose', msg.buffers);
   governor.motion();
   poseDrawPending = true;
   showWind(msg);

@@ -1,13 +1,15 @@
 // The tree study's WebGL2 renderer: bark tubes, double-sided leaves and flowers on the shared
 // ground (full-polygon mode, textured as the .glb: shaders/tree/tree_textured.frag), or the hybrid mode of thesis chapter 4: texture cards from a card
 // atlas plus lines. Shaders (GLSL ES 3.00) are shaders/tree/*, including shaders/common/*.
+// It draws alone on its canvas (render: the ground, then the tree) or as a layer of a Frame
+// (web/gl/frame.js: frameSteps, the tree alone, under the frame's camera, sun and ground).
 // Does not: grow or mesh trees (the worker does), keep page state, or own the camera.
 import { createContext, drawingBufferSize, finishGpu, resizeCanvas } from '../gl/context.js';
 import { DEFAULT_SUNS, sunDirection } from '../gl/sun.js';
 import { BufferPool } from '../gl/buffer_pool.js';
 import { UPLOAD_PARTS_ABOVE, gpuDone, planBytes, uploadInParts } from '../gl/chunked_upload.js';
-import { floatAttribute, staticBuffer, uintAttribute } from '../gl/buffers.js';
-import { Ground } from '../gl/ground.js';
+import { copyOf, floatAttribute, staticBuffer, uintAttribute, viewOf } from '../gl/buffers.js';
+import { Ground, groundUnder } from '../gl/ground.js';
 import { PickTarget } from '../gl/pick.js';
 import { ProgressiveFrame } from '../gl/progressive_frame.js';
 import { loadPrograms } from '../gl/program.js';
@@ -222,10 +224,12 @@ export async function paintAtlasInParts(gl, program, hybrid, fb, texture, light,
 }
 
 export class Renderer {
+  // target: a canvas (the renderer makes its context) or a Frame ({canvas, gl}: a layer of it).
   // Throws an Error with a readable message when WebGL2 is missing.
-  constructor(canvas) {
-    this.canvas = canvas;
-    const gl = createContext(canvas, 'the tree');
+  constructor(target) {
+    const frame = target && target.gl && target.canvas ? target : null;
+    this.canvas = frame ? frame.canvas : target;
+    const gl = frame ? frame.gl : createContext(this.canvas, 'the tree');
     this.gl = gl;
     this.parts = {};
     this.center = [0, 0, 0];
@@ -325,8 +329,9 @@ export class Renderer {
     this.selected = NONE;
   }
 
-  // mesh: {bark|leaves|flowers: {positions, normals, indices, joints, weights}} as ArrayBuffers
-  // (bark also has branchIds: Uint32 per vertex; leaves uvs); bounds in metres; swayNodes: node
+  // mesh: {bark|leaves|flowers: {positions, normals, indices, joints, weights}} as ArrayBuffers or
+  // views (bark also has branchIds: Uint32 per vertex; leaves uvs), not read once the promise
+  // resolves (the page may hand them back to the worker then); bounds in metres; swayNodes: node
   // points of the sway skin (poses start at rest); hybrid: the worker's card-atlas geometry when the
   // state's render_mode is 1 (then render() draws the draw list of setDrawList), else null.
   // A big mesh (more than UPLOAD_PARTS_ABOVE bytes) is uploaded in parts (web/gl/chunked_upload.js),
@@ -411,8 +416,9 @@ export class Renderer {
         uintAttribute(gl, 2, buffer, 1);
         buffers.push(buffer);
         // Selection highlight per vertex (select() fills it).
-        this.branchIds = new Uint32Array(data.branchIds);
-        this.branchParents = new Int32Array(data.branchParents || new ArrayBuffer(0));
+        // Copies: the worker's buffers go back to it once the tree is in place (recycle).
+        this.branchIds = copyOf(Uint32Array, data.branchIds);
+        this.branchParents = copyOf(Int32Array, data.branchParents || new ArrayBuffer(0));
         this.highlight = new Float32Array(this.branchIds.length);
         this.highlightBuffer = upload('highlight', this.highlight);
         gl.enableVertexAttribArray(3);
@@ -426,6 +432,7 @@ export class Renderer {
       this.parts[name] = { vao, buffers, count: data.indices.byteLength / 4, picking: Boolean(data.branchIds) };
     }
     const min = bounds.min, max = bounds.max;
+    this.treeBounds = { min: [...min], max: [...max] };
     this.center = [(min[0] + max[0]) / 2, 0, (min[2] + max[2]) / 2];
     this.crownHeight = Math.max(0, 0.6 * max[1]);
     this.shadowRadius = Math.max(0.3, 0.5 * Math.max(max[0] - min[0], max[2] - min[2]));
@@ -586,11 +593,11 @@ export class Renderer {
     const segments = l.widths.byteLength / 4;
     if (segments > 0) {
       const textures = [
-        dataTexture(gl, new Float32Array(l.positions), 3, gl.RGB32F, gl.RGB, gl.FLOAT),  // p0, p1
-        dataTexture(gl, new Float32Array(l.colors), 3, gl.RGB32F, gl.RGB, gl.FLOAT),
-        dataTexture(gl, new Float32Array(l.widths), 1, gl.R32F, gl.RED, gl.FLOAT),
-        dataTexture(gl, new Uint32Array(l.joints), 2, gl.RG32UI, gl.RG_INTEGER, gl.UNSIGNED_INT),
-        dataTexture(gl, new Float32Array(l.weights), 2, gl.RG32F, gl.RG, gl.FLOAT),
+        dataTexture(gl, viewOf(Float32Array, l.positions), 3, gl.RGB32F, gl.RGB, gl.FLOAT),  // p0, p1
+        dataTexture(gl, viewOf(Float32Array, l.colors), 3, gl.RGB32F, gl.RGB, gl.FLOAT),
+        dataTexture(gl, viewOf(Float32Array, l.widths), 1, gl.R32F, gl.RED, gl.FLOAT),
+        dataTexture(gl, viewOf(Uint32Array, l.joints), 2, gl.RG32UI, gl.RG_INTEGER, gl.UNSIGNED_INT),
+        dataTexture(gl, viewOf(Float32Array, l.weights), 2, gl.RG32F, gl.RG, gl.FLOAT),
       ];
       list.lines = { vao: gl.createVertexArray(), buffers: [], textures, count: segments };
     }
@@ -694,101 +701,151 @@ export class Renderer {
     return this.lastFrame;
   }
 
-  // Clears the canvas and lists the frame's steps (the ground, then the hybrid draw list or the
-  // parts and the selection's x-ray pass) with its totals (what the frame draws, counted from the
-  // index counts; GPU time is not measured here: no timer queries on SwiftShader).
+  // Clears the canvas and lists the frame's steps (the ground, then the tree's: layerSteps) with
+  // its totals (what the frame draws, counted from the index counts; GPU time is not measured
+  // here: no timer queries on SwiftShader).
   #startFrame(camera, quality, budget) {
-    const gl = this.gl;
     this.scale = quality?.scale || 1;
     const cheap = quality?.cheap || 0;
     resizeCanvas(this.canvas, this.scale);  // cleared by progress.begin (canvas or offscreen)
     this.frameCpuMs = 0;
-    const viewProjection = camera.viewProjection(this.canvas.width / this.canvas.height);
-    const eye = camera.position();
+    const view = { viewProjection: camera.viewProjection(this.canvas.width / this.canvas.height), eye: camera.position(),
+      light: this.light, scale: this.scale };
     const totals = { triangles: 0, lines: 0, drawCalls: 0, mode: 'full', cheap };
-    const steps = [];
-    // The crown's shadow falls away from the sun (crown centre projected along the light).
-    const reach = (this.crownHeight || 0) / Math.max(this.light[1], 0.25);
-    const ground = { center: this.center, extent: this.extent, shadowRadius: this.shadowRadius,
-      shadowOffset: [-this.light[0] * reach, -this.light[2] * reach] };
-    steps.push({ primitives: 0, setup: () => {}, draw: () => this.ground.draw(viewProjection, ground) });
+    const ground = groundUnder(this.footprint(), this.light);
+    const steps = [{ primitives: 0, setup: () => {}, draw: () => this.ground.draw(view.viewProjection, ground) }];
     totals.triangles += 2;
     totals.drawCalls += 1;
+    const tree = this.layerSteps(view, cheap);
+    steps.push(...tree.steps);
+    totals.triangles += tree.triangles;
+    totals.lines += tree.lines;
+    totals.drawCalls += tree.drawCalls;
+    totals.mode = tree.mode;
+    totals.primitives = steps.reduce((n, step) => n + step.primitives, 0);  // what the budget counts
+    totals.selected = this.selected === NONE ? -1 : this.selected;  // the highlight this frame draws
+    this.frameTotals = totals;
+    this.progress.begin(this.canvas, steps, budget);
+  }
 
+  // The ground under the tree (metres): {center, extent, shadowRadius, crownHeight}
+  // (web/gl/ground.js groundUnder).
+  footprint() {
+    return { center: this.center, extent: this.extent, shadowRadius: this.shadowRadius, crownHeight: this.crownHeight || 0 };
+  }
+
+  // The tree's steps of a frame (web/gl/progressive_frame.js) under `view` ({viewProjection, eye,
+  // light: the unit direction towards the sun}): the hybrid draw list, or the parts and the
+  // selection's x-ray pass; cheap > 0: a moving full-mode tree as its hybrid scene when it is
+  // there. Returns {steps, triangles, lines, drawCalls, mode}.
+  layerSteps(view, cheap = 0) {
+    const gl = this.gl;
+    const { viewProjection, eye, light } = view;
+    const out = { steps: [], triangles: 0, lines: 0, drawCalls: 0, mode: 'full' };
+    const steps = out.steps;
     // A moving full-mode tree at a cheap level: its hybrid scene while it is there.
     const motion = !this.hybrid && cheap > 0 && this.motionReady();
     if (this.hybrid || motion) {
       const list = motion ? this.motion.drawList : this.drawList;
       steps.push({ primitives: 0, setup: () => {}, draw: () => this.#renderHybrid(viewProjection, list) });
       const [tris, segs, calls] = this.#hybridCounts(list);
-      totals.triangles += tris;
-      totals.lines += segs;
-      totals.drawCalls += calls;
-      totals.mode = motion ? 'motion' : 'hybrid';
-    } else {
-      const t = this.treeProgram;
-      const common = () => {
-        gl.useProgram(t.program);
-        gl.uniformMatrix4fv(t.uniforms.uViewProjection, false, viewProjection);
-        gl.uniform3fv(t.uniforms.uLightDirection, this.light);
-        gl.uniform3fv(t.uniforms.uCameraPosition, eye);
-        this.#bindPoses(t);
-        gl.vertexAttrib1f(3, 0);  // no highlight on parts without branch ids
-        gl.vertexAttrib2f(6, 0, 0);  // no flutter on parts without uvs
-        gl.uniform1f(t.uniforms.uLeafLength, this.leafLength);
-      };
-      const flutter = this.#flutter();
-      for (const [name, part] of Object.entries(this.parts)) {
-        const look = PARTS[name];
-        steps.push({
-          primitives: part.count / 3,
-          setup: () => {
-            common();
-            gl.uniform3fv(t.uniforms.uColor, look.color);
-            gl.uniform3fv(t.uniforms.uColorVariation, look.variation);
-            gl.uniform1f(t.uniforms.uDoubleSided, look.doubleSided);
-            gl.uniform1f(t.uniforms.uSpecular, look.specular);
-            gl.uniform1f(t.uniforms.uXray, 0);
-            gl.uniform1f(t.uniforms.uFlutter, name === 'leaves' ? flutter : 0);
-            this.#bindPartTextures(t, name);
-            gl.bindVertexArray(part.vao);
-          },
-          draw: (first, n) => gl.drawElements(gl.TRIANGLES, 3 * n, gl.UNSIGNED_INT, 12 * first),
-        });
-        totals.triangles += part.count / 3;
-        totals.drawCalls += 1;
-      }
-      // The selection once more, faintly through everything, so a branch behind leaves shows.
-      const bark = this.parts.bark;
-      if (this.selected !== NONE && bark && cheap === 0) {
-        steps.push({
-          primitives: bark.count / 3,
-          setup: () => {
-            common();
-            gl.uniform1f(t.uniforms.uXray, 1);
-            gl.uniform1f(t.uniforms.uUseTexture, 0);
-            gl.uniform3fv(t.uniforms.uColor, PARTS.bark.color);
-            gl.uniform1f(t.uniforms.uDoubleSided, 0);
-            gl.uniform1f(t.uniforms.uFlutter, 0);
-            gl.disable(gl.DEPTH_TEST);
-            gl.enable(gl.BLEND);
-            gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
-            gl.bindVertexArray(bark.vao);
-          },
-          draw: (first, n) => gl.drawElements(gl.TRIANGLES, 3 * n, gl.UNSIGNED_INT, 12 * first),
-          teardown: () => {
-            gl.disable(gl.BLEND);
-            gl.enable(gl.DEPTH_TEST);
-          },
-        });
-        totals.triangles += bark.count / 3;
-        totals.drawCalls += 1;
-      }
+      out.triangles += tris;
+      out.lines += segs;
+      out.drawCalls += calls;
+      out.mode = motion ? 'motion' : 'hybrid';
+      return out;
     }
-    totals.primitives = steps.reduce((n, step) => n + step.primitives, 0);  // what the budget counts
-    totals.selected = this.selected === NONE ? -1 : this.selected;  // the highlight this frame draws
-    this.frameTotals = totals;
-    this.progress.begin(this.canvas, steps, budget);
+    const t = this.treeProgram;
+    const common = () => {
+      gl.useProgram(t.program);
+      gl.uniformMatrix4fv(t.uniforms.uViewProjection, false, viewProjection);
+      gl.uniform3fv(t.uniforms.uLightDirection, light);
+      gl.uniform3fv(t.uniforms.uCameraPosition, eye);
+      this.#bindPoses(t);
+      gl.vertexAttrib1f(3, 0);  // no highlight on parts without branch ids
+      gl.vertexAttrib2f(6, 0, 0);  // no flutter on parts without uvs
+      gl.uniform1f(t.uniforms.uLeafLength, this.leafLength);
+    };
+    const flutter = this.#flutter();
+    for (const [name, part] of Object.entries(this.parts)) {
+      const look = PARTS[name];
+      steps.push({
+        primitives: part.count / 3,
+        setup: () => {
+          common();
+          gl.uniform3fv(t.uniforms.uColor, look.color);
+          gl.uniform3fv(t.uniforms.uColorVariation, look.variation);
+          gl.uniform1f(t.uniforms.uDoubleSided, look.doubleSided);
+          gl.uniform1f(t.uniforms.uSpecular, look.specular);
+          gl.uniform1f(t.uniforms.uXray, 0);
+          gl.uniform1f(t.uniforms.uFlutter, name === 'leaves' ? flutter : 0);
+          this.#bindPartTextures(t, name);
+          gl.bindVertexArray(part.vao);
+        },
+        draw: (first, n) => gl.drawElements(gl.TRIANGLES, 3 * n, gl.UNSIGNED_INT, 12 * first),
+      });
+      out.triangles += part.count / 3;
+      out.drawCalls += 1;
+    }
+    // The selection once more, faintly through everything, so a branch behind leaves shows.
+    const bark = this.parts.bark;
+    if (this.selected !== NONE && bark && cheap === 0) {
+      steps.push({
+        primitives: bark.count / 3,
+        setup: () => {
+          common();
+          gl.uniform1f(t.uniforms.uXray, 1);
+          gl.uniform1f(t.uniforms.uUseTexture, 0);
+          gl.uniform3fv(t.uniforms.uColor, PARTS.bark.color);
+          gl.uniform1f(t.uniforms.uDoubleSided, 0);
+          gl.uniform1f(t.uniforms.uFlutter, 0);
+          gl.disable(gl.DEPTH_TEST);
+          gl.enable(gl.BLEND);
+          gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
+          gl.bindVertexArray(bark.vao);
+        },
+        draw: (first, n) => gl.drawElements(gl.TRIANGLES, 3 * n, gl.UNSIGNED_INT, 12 * first),
+        teardown: () => {
+          gl.disable(gl.BLEND);
+          gl.enable(gl.DEPTH_TEST);
+        },
+      });
+      out.triangles += bark.count / 3;
+      out.drawCalls += 1;
+    }
+    return out;
+  }
+
+  // ---- As a layer of a Frame (web/gl/frame.js) ----
+  // The tree's steps under the frame's view (its camera and sun; the frame draws the ground).
+  frameSteps(view) {
+    return this.layerSteps(view, 0).steps;
+  }
+
+  // The tree's box in metres (the last setTree's bounds), or null before a tree.
+  worldBounds() {
+    return this.treeBounds || null;
+  }
+
+  // Frees the context's objects this renderer made (a Frame's layer removed, or the page gone).
+  dispose() {
+    const gl = this.gl;
+    this.progress.abort();
+    ++this.treeUploads;  // an upload on its way is dropped
+    for (const part of Object.values(this.parts)) {
+      gl.deleteVertexArray(part.vao);
+      part.buffers.forEach((b) => { if (!this.pool.owns(b)) gl.deleteBuffer(b); });
+    }
+    this.parts = {};
+    this.pool.dispose();
+    for (const t of Object.values(this.textures)) gl.deleteTexture(t.texture);
+    this.textures = {};
+    gl.deleteTexture(this.poseTexture);
+    this.ground?.dispose();
+    for (const p of [this.treeProgram, this.pickProgram, this.atlasProgram, this.cardProgram, this.lineProgram]) {
+      if (p) gl.deleteProgram(p.program);
+    }
+    this.treeProgram = null;
   }
 
   // [triangles, lines, draw calls] of a hybrid draw list.

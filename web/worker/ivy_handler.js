@@ -3,11 +3,13 @@
 // ivy grown on it. An 'update' loads the state's scene when it changed, grows, and sends the stats
 // and the stems, leaves and suckers (with their birth steps, so the page replays the growth
 // without regrowing; the leaves with their uvs, and the client's first 'ivy' message with the
-// leaf texture's pixels, so the page draws the leaves as the .glb holds them); 'pick' casts a ray on the support (a click places a seed point); 'export'
-// builds .glb, .json or .lsys. Messages: web/worker/protocol.js.
+// leaf texture's pixels, so the page draws the leaves as the .glb holds them), as views into the
+// buffers the client handed back ('recycle', once they are on its GPU) when they fit, else into
+// fresh ones (web/worker/transfer.js TransferPool); 'pick' casts a ray on the support (a click
+// places a seed point); 'export' builds .glb, .json or .lsys. Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does).
 import { errorOf, errorReply } from './errors.js';
-import { takeBuffers } from './transfer.js';
+import { TransferPool, takeBuffers } from './transfer.js';
 import { nextTask } from './next_task.js';
 
 // A new task of the worker's loop (not setTimeout(0), which is clamped to 4 ms when nested).
@@ -22,6 +24,7 @@ export function createHandler(Module, ctx) {
   // The trees ivy can climb (scene 'tree'): the tree study's presets.
   const trees = JSON.parse(Module.presetsJson('tree')).map((p) => ({ name: p.name, title: p.title, years: p.years }));
   const labs = new Map();  // client -> {lab, support: 'scene:<name>' | 'mesh:<name>' | null}
+  const returned = new TransferPool();  // the ivy buffers each client handed back
   let leafTextureOnce = null;  // {width, height, pixels}: the .glb's leaf texture, kept
 
   // Progress from inside a long call (a big mesh's read and BVH, every growth step): at most one
@@ -99,7 +102,8 @@ export function createHandler(Module, ctx) {
     const stats = JSON.parse(entry.lab.statsJson());
     const transfer = [];
     const mesh = {};
-    for (const part of ['stems', 'leaves', 'suckers', 'buds']) mesh[part] = takeBuffers(entry.lab.buffers(part), transfer);
+    const buffers = { reused: 0, fresh: 0 };
+    for (const part of ['stems', 'leaves', 'suckers', 'buds']) mesh[part] = returned.take(client, part, entry.lab.buffers(part), transfer, buffers);
     // The leaf texture (the .glb's pixels), once per client: copied out of the heap by the
     // binding once per worker, copied for each client and transferred; the page keeps it for
     // every later ivy.
@@ -112,7 +116,7 @@ export function createHandler(Module, ctx) {
       entry.leafTextureSent = true;
     }
     post({ type: 'ivy', id, client, stats, mesh, leafTexture, steps: entry.lab.steps(), hash: entry.lab.hash(),
-      wallMs: performance.now() - t0 }, transfer);
+      wallMs: performance.now() - t0, buffers }, transfer);
   }
 
   // A dropped mesh (bytes, Draco already decoded by the page): becomes the client's support.
@@ -177,6 +181,7 @@ export function createHandler(Module, ctx) {
       mesh,
       pick,
       export: exportIvy,
+      recycle: (msg, client) => returned.give(client, msg.buffers),
     },
   };
 }

@@ -35,11 +35,13 @@
  * @typedef {Envelope & {type: 'update', state: TreeStateJson, until?: number}} UpdateMessage
  *   -> HashMessage (state accepted), ProgressMessage (after each year), TreeMessage
  *
- * The page's sway and view edits: the same tree (the grow-stage fields equal the client's last tree)
- * with a new state; the worker re-skins it (sway rows), rebuilds the hybrid scene (render rows) and
- * answers like an update without growing. When the tree would differ (or none was grown) it grows.
+ * The page's mesh, sway and view edits: the same tree (the grow-stage fields equal the client's
+ * last tree) with a new state; the session's update (core TreeRun::Update) re-does the earliest
+ * stage whose rows changed and the ones after it (mesh: re-dressed; sway: re-skinned; view: the
+ * hybrid scene rebuilt) and the worker answers like an update without growing. When the tree would
+ * differ (or none was grown) it grows.
  * @typedef {Envelope & {type: 'restage', state: TreeStateJson, until?: number,
- *   stage: 'sway'|'view'}} RestageMessage
+ *   stage: 'mesh'|'sway'|'view'}} RestageMessage
  *   -> HashMessage, TreeMessage (grown: false)
  *
  * @typedef {Envelope & {type: 'hash', hash: string}} HashMessage
@@ -50,7 +52,10 @@
  */
 
 /**
- * Mesh parts as ArrayBuffers (transferred). Every part has joints (Uint32) and weights (Float32)
+ * Mesh parts as typed views of the exact length (their buffers transferred, and maybe larger: a
+ * part's size is the view's byteLength). The buffers are the ones the client handed back with
+ * 'recycle' when they fit, else fresh (web/worker/transfer.js TransferPool); the reply's `buffers`
+ * counts them {reused, fresh}. Textures and the hybrid atlas are fresh copies. Every part has joints (Uint32) and weights (Float32)
  * per vertex: the sway skin of core/sway/skin.h; leaves have uvs; bark has branchIds per vertex and
  * branchParents per branch.
  * @typedef {{positions: ArrayBuffer, normals: ArrayBuffer, indices: ArrayBuffer, joints: ArrayBuffer,
@@ -58,8 +63,17 @@
  * With render_mode 1, hybrid holds the clip-space triangles that paint the card atlas (thesis 4.2.1).
  * @typedef {{atlasSize: number, bark: MeshPart, leaves: MeshPart, flowers: MeshPart}} HybridAtlas
  * @typedef {Envelope & {type: 'tree', stats: Object, mesh: {bark: MeshPart, leaves: MeshPart,
- *   flowers: MeshPart}, hybrid: HybridAtlas|null, swayNodes: number, grown: boolean}} TreeMessage
- *   grown: false when the tree on screen was re-skinned or re-viewed (restage), not grown again.
+ *   flowers: MeshPart}, hybrid: HybridAtlas|null, swayNodes: number, grown: boolean,
+ *   stages: string[]|null, buffers: {reused: number, fresh: number}}} TreeMessage
+ *   grown: false when the tree on screen was re-meshed, re-skinned or re-viewed (restage), not
+ *   grown again; stages: then the stages core TreeRun::Update re-did ('mesh', 'sway', 'view').
+ */
+
+/**
+ * The client's buffers back once they are on its GPU (tree: the mesh parts, 'sway.poses' of a pose,
+ * 'cards.*' and 'lines.*' of a draw list; ivy: stems, leaves, suckers, buds), as {"<part>.<name>": ArrayBuffer} (web/shell/worker_client.js recycle), transferred;
+ * the next reply copies into them. No reply.
+ * @typedef {Envelope & {type: 'recycle', buffers: Object<string, ArrayBuffer>}} RecycleMessage
  */
 
 /**
@@ -72,7 +86,8 @@
  *   -> PoseMessage, one at a time
  * @typedef {Envelope & {type: 'poseDone'}} PoseDoneMessage
  * @typedef {Envelope & {type: 'pose', time: number, wind: number, instances: number, stepMs: number,
- *   poses: ArrayBuffer}} PoseMessage
+ *   poses: Float32Array, buffers: {reused: number, fresh: number}}} PoseMessage
+ *   poses: a view of the exact length, into the buffer the client handed back when it fits
  */
 
 /**
@@ -81,7 +96,8 @@
  * @typedef {Envelope & {type: 'view', camera: {eye: number[], target: number[], fovY: number,
  *   width: number, height: number}, slot?: number, tag?: any}} ViewMessage
  *   -> {type: 'drawList', client, stats, cards: {positions, uvs, indices, joints, weights},
- *       lines: {positions, colors, widths, joints, weights}, slot?, tag?} (transferred)
+ *       lines: {positions, colors, widths, joints, weights}, buffers: {reused, fresh}, slot?, tag?}
+ *       (views of the exact length into the client's returned buffers when they fit; transferred)
  * With motion: true (and atlas: true for the atlas), the same for a full-mode tree: its cheaper
  * representation while it moves (issue 16), -> {type: 'motionAtlas', client, hybrid} (as the
  * tree message's hybrid) when asked, then {type: 'drawList', motion: true, ...}; a scene that cannot
@@ -103,9 +119,10 @@
  *   -> SupportMessage without an id ({request: id}; when the scene or tree changed),
  *      ProgressMessage {stage: scene|tree|bvh|grow|read, done?, total?, text} (at most one per 100 ms),
  *      {type: 'ivy', stats, mesh: {stems, leaves, suckers: {positions, normals, indices, birth},
- *       buds: {positions, kind, birth}} (leaves also uvs: the .glb's TEXCOORD_0),
+ *       buds: {positions, kind, birth}} (leaves also uvs: the .glb's TEXCOORD_0; typed views, as
+ *       the tree's MeshPart, into the buffers the client handed back with 'recycle' when they fit),
  *       leafTexture?: {width, height, pixels: ArrayBuffer RGBA} (the .glb's leaf texture, in the
- *       client's first 'ivy' only), steps, hash, wallMs}
+ *       client's first 'ivy' only), steps, hash, wallMs, buffers: {reused, fresh}}
  * @typedef {Envelope & {type: 'mesh', name: string, bytes: ArrayBuffer}} IvyMeshMessage
  *   -> {type: 'support', support: {name, dropped, free, triangles, bounds, seeds}, buffers:
  *       {positions, normals, indices}}

@@ -1,6 +1,9 @@
-// Moving WASM buffers to the main thread: each typed view into WASM memory is copied ONCE into a
-// fresh ArrayBuffer, which is then transferred (never copied a second time).
-// Does not: keep views (they are only valid until the next call into WASM that may allocate).
+// Moving WASM buffers to the main thread: each typed view into WASM memory is copied ONCE into an
+// ArrayBuffer, which is then transferred (never copied a second time). A TransferPool keeps the
+// buffers a page hands back once they are on the GPU ('recycle'), per client, and the next reply
+// copies into them instead of fresh ones (the protocol's "buffers transferred and reused").
+// Does not: keep views (they are only valid until the next call into WASM that may allocate), or
+// decide when a page is done with a buffer (the page returns it: web/shell/worker_client.js).
 
 // Copies one WASM-memory view into a fresh typed array of its own type; returns its buffer.
 export function copyView(view) {
@@ -19,4 +22,63 @@ export function takeBuffers(views, transfer) {
     transfer.push(out[name]);
   }
   return out;
+}
+
+// A fresh buffer is this much bigger than its first view, so a slightly bigger mesh next time (a
+// tree a year older, an ivy a few steps longer) still fits it.
+export const HEADROOM = 1.125;
+// A returned buffer more than SHRINK times (and 1 MB) bigger than what it would hold is dropped,
+// so one huge mesh does not stay in every later reply.
+export const SHRINK = 4;
+
+// Per client, the buffers its page returned, by key ("<group>.<name>", e.g. "bark.positions").
+export class TransferPool {
+  constructor() {
+    this.clients = new Map();  // client -> Map(key -> ArrayBuffer)
+  }
+
+  // The page's buffers back: {key: ArrayBuffer or view} (the newest one per key is kept).
+  give(client, buffers) {
+    if (!buffers || typeof buffers !== 'object') return;
+    let pool = this.clients.get(client);
+    if (!pool) this.clients.set(client, (pool = new Map()));
+    for (const [key, value] of Object.entries(buffers)) {
+      const buffer = ArrayBuffer.isView(value) ? value.buffer : value;
+      if (buffer instanceof ArrayBuffer && buffer.byteLength > 0) pool.set(String(key), buffer);
+    }
+  }
+
+  // Like takeBuffers, but each view is copied into the client's returned buffer of key
+  // "<group>.<name>" when it fits, else into a fresh one (HEADROOM bigger); the reply holds views of
+  // the exact length (byteLength, not their buffer's, is the data's size), every buffer is pushed
+  // onto `transfer`, and `counts` ({reused, fresh}) counts them.
+  take(client, group, views, transfer, counts = { reused: 0, fresh: 0 }) {
+    if (!views) throw new Error('no such buffer group');
+    const pool = this.clients.get(client);
+    const out = {};
+    for (const [name, view] of Object.entries(views)) {
+      const key = `${group}.${name}`;
+      let buffer = pool?.get(key);
+      pool?.delete(key);
+      const need = view.byteLength;
+      if (need === 0) {  // nothing to move (an empty part keeps its returned buffer)
+        if (buffer) pool.set(key, buffer);
+        out[name] = new view.constructor(0);
+        continue;
+      }
+      const fits = buffer && buffer.byteLength >= need && !(buffer.byteLength > SHRINK * need && buffer.byteLength > 1 << 20);
+      if (fits) {
+        counts.reused += 1;
+      } else {
+        const size = Math.ceil((need * HEADROOM) / 8) * 8;
+        buffer = new ArrayBuffer(size);
+        counts.fresh += 1;
+      }
+      const into = new view.constructor(buffer, 0, view.length);
+      into.set(view);
+      out[name] = into;
+      transfer.push(buffer);
+    }
+    return out;
+  }
 }

@@ -1,11 +1,14 @@
 // The tree study's worker handler: grows trees year by year (superseded between years), sends
 // their meshes, re-skins or re-views the tree already grown for sway and render edits (restage),
 // runs the wind, the hybrid views and the exports. One TreeSession (web/bindings/tree_bindings.cpp)
-// per client keeps the client's last finished tree. Messages: web/worker/protocol.js.
+// per client keeps the client's last finished tree. The mesh parts, the sway poses and the hybrid
+// draw lists go as views into the buffers the client handed back ('recycle', once they are on its
+// GPU) when they fit, else into fresh ones (web/worker/transfer.js TransferPool). Messages:
+// web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does).
 import { errorOf, errorReply } from './errors.js';
 import { nextTask as yieldToEvents } from './next_task.js';
-import { copyView, takeBuffers } from './transfer.js';
+import { TransferPool, copyView, takeBuffers } from './transfer.js';
 
 // The warm-up grow's years (sakura-thesis; ?warmup=N on the worker's URL sets N, 0 turns it off).
 const WARM_UP_YEARS = 8;
@@ -16,9 +19,11 @@ export function createHandler(Module, ctx) {
   scheduleWarmUp(Module, ctx.options || {});
   const paramTable = JSON.parse(Module.tableJson('tree'));
   // Rows whose edits change the grown tree (stage grow; rows without a stage too). Mesh, sway and
-  // view rows restage the tree already grown (restate rebuilds its mesh, skin and hybrid scene).
+  // view rows restage the tree already grown (the session's update: core TreeRun::Update re-does
+  // only the earliest stage whose rows changed, and clears the hybrid scene).
   const treeKeys = paramTable.filter((row) => !['mesh', 'sway', 'view'].includes(row.stage)).map((row) => row.key);
   const finished = new Map();  // client -> {session, state, until} of its last tree sent
+  const returned = new TransferPool();  // the mesh, pose and draw-list buffers each client handed back
 
   // True when states a and b (as the pages send them) grow the same tree.
   function sameTree(a, b) {
@@ -57,9 +62,11 @@ export function createHandler(Module, ctx) {
     return out;
   }
 
-  function takeMesh(session, transfer) {
-    return { bark: takeBuffers(session.buffers('bark'), transfer), leaves: takeBuffers(session.buffers('leaves'), transfer),
-      flowers: takeBuffers(session.buffers('flowers'), transfer), textures: takeTextures(session, transfer) };
+  // The mesh parts copied once out of the heap, into the client's returned buffers where they fit;
+  // counts: {reused, fresh} buffers.
+  function takeMesh(session, client, transfer, counts) {
+    const part = (name) => returned.take(client, name, session.buffers(name), transfer, counts);
+    return { bark: part('bark'), leaves: part('leaves'), flowers: part('flowers'), textures: takeTextures(session, transfer) };
   }
 
   // The card-atlas geometry of a hybrid-mode tree (copied once, transferred).
@@ -70,10 +77,12 @@ export function createHandler(Module, ctx) {
 
   // The 'tree' message of a session whose mesh is built; false (after an error message) when the
   // hybrid scene cannot be built.
-  function sendTree(id, client, session, grown) {
+  // stages: the stages a restage re-did (a grow: null).
+  function sendTree(id, client, session, grown, stages = null) {
     const stats = JSON.parse(session.statsJson());
     const transfer = [];
-    const mesh = takeMesh(session, transfer);
+    const buffers = { reused: 0, fresh: 0 };
+    const mesh = takeMesh(session, client, transfer, buffers);
     let hybrid = null;
     if (session.renderMode() === 1) {
       const error = errorOf(session.buildHybrid());
@@ -83,7 +92,7 @@ export function createHandler(Module, ctx) {
       }
       hybrid = takeAtlas(session, transfer);
     }
-    post({ type: 'tree', id, client, stats, mesh, hybrid, swayNodes: session.swayNodes(), grown }, transfer);
+    post({ type: 'tree', id, client, stats, mesh, hybrid, swayNodes: session.swayNodes(), grown, stages, buffers }, transfer);
     return true;
   }
 
@@ -130,21 +139,27 @@ export function createHandler(Module, ctx) {
     }
   }
 
-  // A sway or view edit: the client's last tree with the new state, not grown again (or a grow
-  // when the state grows another tree).
+  // A mesh, sway or view edit: the client's last tree with the new state, not grown again (or a
+  // grow when the state grows another tree). The reply's `stages` are the ones the run re-did.
   async function restage(msg, client) {
     const last = finished.get(client);
     if (!last || !sameTree(last, msg)) return grow(msg, client);
-    const error = errorOf(last.session.restate(JSON.stringify(msg.state)));
-    if (error) {
-      post(errorReply(error, msg.id, client));
+    const answer = JSON.parse(last.session.update(JSON.stringify(msg.state)));
+    if (answer.ok === false) {
+      post(errorReply(answer, msg.id, client));
       return;
+    }
+    if (answer.stages.includes('grow')) {  // the run says another tree after all: grown anew
+      finished.delete(client);
+      stopWind(client);
+      last.session.delete();
+      return grow(msg, client);
     }
     post({ type: 'hash', id: msg.id, client, hash: last.session.hash() });
     stopWind(client);  // the sway restarts in the new wind (the client asks when it is playing)
     last.state = msg.state;
-    last.motionHybrid = false;  // restate cleared the hybrid scene
-    sendTree(msg.id, client, last.session, false);
+    if (answer.stages.length > 0) last.motionHybrid = false;  // the update cleared the hybrid scene
+    sendTree(msg.id, client, last.session, false, answer.stages);
   }
 
   // ---- Wind: one sway loop per client, following the wall clock ----
@@ -242,10 +257,12 @@ export function createHandler(Module, ctx) {
           sway.steps = 0;
           time = 0;
         }
-        const poses = copyView(session.buffers('sway').poses);
+        // Into the poses buffer the client handed back with the last pose, when it did.
+        const transfer = [], buffers = { reused: 0, fresh: 0 };
+        const { poses } = returned.take(client, 'sway', session.buffers('sway'), transfer, buffers);
         sway.waiting = true;
         post({ type: 'pose', client, time, wind: session.swayWindSpeed(), instances: session.swayInstances(),
-          stepMs, stepsPerTick: most, speed: session.swaySpeed(), poses }, [poses]);
+          stepMs, stepsPerTick: most, speed: session.swaySpeed(), poses, buffers }, transfer);
       }
     }
     sway.timer = setTimeout(() => windTick(client, sway), 8);
@@ -282,11 +299,11 @@ export function createHandler(Module, ctx) {
     const stats = JSON.parse(slotted ? session.hybridViewSlot(Number.isInteger(slot) ? slot : -1, ...view)
       : session.hybridView(...view));
     if (stats.ok === false) throw new Error(stats.message);
-    const transfer = [];
-    const cards = takeBuffers(session.buffers('cards'), transfer);
-    const lines = takeBuffers(session.buffers('lines'), transfer);
+    const transfer = [], buffers = { reused: 0, fresh: 0 };
+    const cards = returned.take(client, 'cards', session.buffers('cards'), transfer, buffers);
+    const lines = returned.take(client, 'lines', session.buffers('lines'), transfer, buffers);
     const extra = slotted ? { slot, tag } : motion ? { motion: true } : {};
-    post({ type: 'drawList', client, stats, cards, lines, ...extra }, transfer);
+    post({ type: 'drawList', client, stats, cards, lines, buffers, ...extra }, transfer);
   }
 
   function exportTree(msg, client) {
@@ -333,6 +350,7 @@ export function createHandler(Module, ctx) {
       },
       view: hybridView,
       export: exportTree,
+      recycle: (msg, client) => returned.give(client, msg.buffers),
       // Save / Open (web/tree/state_file.js): {save: page state} -> {json}; {open: file text} ->
       // {state}; a bad state or file is an 'error' with its field.
       stateFile: (msg, client) => {

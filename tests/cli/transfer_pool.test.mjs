@@ -1,0 +1,62 @@
+// web/worker/transfer.js TransferPool under node (no module, no browser): a reply's views are
+// copied into the buffers the client handed back when they fit (the same ArrayBuffer object comes
+// back, views of the exact length), else into fresh ones with headroom; another client's buffers,
+// a too-small one and a far too big one are not used; empty views take nothing.
+// Run: node tests/cli/transfer_pool.test.mjs
+import { check, finish } from '../support/cli_pair.mjs';
+import { HEADROOM, SHRINK, TransferPool, takeBuffers } from '../../web/worker/transfer.js';
+
+const pool = new TransferPool();
+const views = (n) => ({ positions: Float32Array.from({ length: 3 * n }, (_, i) => i / 7), indices: Uint32Array.from({ length: n }, (_, i) => i) });
+
+// First reply: nothing returned yet, every buffer fresh, HEADROOM bigger, views of the exact length.
+let transfer = [], counts = { reused: 0, fresh: 0 };
+const first = pool.take('a', 'bark', views(100), transfer, counts);
+check('the first reply is fresh', counts.fresh === 2 && counts.reused === 0 && transfer.length === 2, JSON.stringify(counts));
+check('fresh views have the exact length over a buffer with headroom',
+  first.positions.length === 300 && first.positions.buffer.byteLength >= Math.floor(1200 * HEADROOM) && first.positions instanceof Float32Array,
+  `${first.positions.length} floats in ${first.positions.buffer.byteLength} bytes`);
+check('the values are copied', first.positions[7] === Float32Array.of(1)[0] && first.indices[99] === 99);
+
+// The page hands them back; a slightly bigger reply goes into the same buffers.
+const returned = { 'bark.positions': first.positions.buffer, 'bark.indices': first.indices };
+pool.give('a', returned);
+transfer = [];
+counts = { reused: 0, fresh: 0 };
+const second = pool.take('a', 'bark', views(105), transfer, counts);
+check('a reply that fits reuses the returned buffers', counts.reused === 2 && counts.fresh === 0
+  && second.positions.buffer === returned['bark.positions'] && second.indices.buffer === returned['bark.indices'].buffer,
+  JSON.stringify(counts));
+check('reused views have the new exact length', second.positions.length === 315 && second.indices[104] === 104);
+check('each buffer is taken once', transfer.length === 2 && new Set(transfer).size === 2);
+
+// Given back again, then asked by another client or another group: not used.
+pool.give('a', { 'bark.positions': second.positions.buffer });
+counts = { reused: 0, fresh: 0 };
+pool.take('b', 'bark', views(10), [], counts);
+pool.take('a', 'leaves', views(10), [], counts);
+check('another client or group does not take them', counts.reused === 0 && counts.fresh === 4, JSON.stringify(counts));
+
+// Too small: fresh; far too big (over SHRINK times and 1 MB): dropped, fresh.
+pool.give('a', { 'bark.positions': new ArrayBuffer(16) });
+counts = { reused: 0, fresh: 0 };
+pool.take('a', 'bark', { positions: new Float32Array(100) }, [], counts);
+pool.give('a', { 'bark.positions': new ArrayBuffer(SHRINK * 4 * (1 << 20)) });
+pool.take('a', 'bark', { positions: new Float32Array(1 << 18) }, [], counts);
+check('a too small or far too big buffer is not used', counts.reused === 0 && counts.fresh === 2, JSON.stringify(counts));
+
+// Empty views move nothing and keep a returned buffer for later.
+const kept = new ArrayBuffer(64);
+pool.give('a', { 'flowers.positions': kept });
+transfer = [];
+counts = { reused: 0, fresh: 0 };
+const empty = pool.take('a', 'flowers', { positions: new Float32Array(0) }, transfer, counts);
+const later = pool.take('a', 'flowers', { positions: new Float32Array(4) }, transfer, counts);
+check('an empty view takes nothing and the buffer waits', empty.positions.length === 0 && later.positions.buffer === kept
+  && counts.reused === 1 && counts.fresh === 0 && transfer.length === 1, JSON.stringify(counts));
+
+// takeBuffers (the replies that are not pooled): one fresh buffer each, exactly the view's bytes.
+transfer = [];
+const plain = takeBuffers({ bytes: Uint8Array.of(1, 2, 3) }, transfer);
+check('takeBuffers copies into a fresh buffer of the exact size', plain.bytes.byteLength === 3 && transfer[0] === plain.bytes);
+finish();
