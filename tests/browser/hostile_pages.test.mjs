@@ -1,0 +1,155 @@
+// The pages' half of the shared hostile-input suite (issue 34 item 5): node tests/browser/hostile_pages.test.mjs.
+// Every study page (the studies of 'niwa flags', the tree's page being index.html) is opened with a
+// hash that gives every row of its table ('niwa params STUDY --json') one hostile value (hex, nan,
+// 1e400, just past the row's maximum, the key repeated, a hash over 16,384 characters); the page
+// must show the notice (one line per refused row, capped at five and "... N more"), settle (ready,
+// or an error line beside a field), keep its worker (a valid hash then grows again) and log no
+// uncaught error. Hostile files are dropped on the pages that take files (#mesh-file, #contour-file):
+// each must end in a notice or a line beside the field, and a page that still works. Like tests/cli/hostile.test.mjs it lists no
+// row or value by hand: a new study page is covered by its table.
+import { execFileSync } from 'node:child_process';
+import { NATIVE, TIMEOUT, check, newContext, runBrowserTest, watchPage } from './harness.mjs';
+
+const declared = JSON.parse(execFileSync(NATIVE, ['flags'], { encoding: 'utf8' }));
+const pageOf = (study) => (study === 'tree' ? 'index.html' : `${study}.html`);
+
+// One value per row: the whole table refused at once.
+const VALUES = {
+  hex: () => '0x10',
+  nan: () => 'nan',
+  overflow: () => '1e400',
+  'past the maximum': (row) => String(row.max + Math.max(1, Math.abs(row.max) * 1e-6)),
+};
+
+// Waits until the page has settled: ready or a field error shown, nothing running.
+async function settled(page) {
+  await page.waitForFunction(() => {
+    const d = document.documentElement.dataset;
+    return d.status === 'ready' || d.status === 'error';
+  }, null, { timeout: TIMEOUT, polling: 250 });
+  return page.evaluate(() => ({
+    status: document.documentElement.dataset.status,
+    notice: document.getElementById('notice').hidden ? [] : document.getElementById('notice').textContent.split('\n'),
+  }));
+}
+
+// The notice names every refused row: min(rows, 5) lines and "... N more" for the rest.
+function namesRows(lines, keys) {
+  const more = lines.length ? /^\.\.\. (\d+) more$/.exec(lines[lines.length - 1]) : null;
+  const shown = more ? lines.slice(0, -1) : lines;
+  const total = shown.length + (more ? Number(more[1]) : 0);
+  return total >= keys.length && shown.every((line) => keys.some((k) => line.includes(k)));
+}
+
+// After a hostile hash, a valid one (the page's own default) must grow again in the same page.
+// (A serial of the page, treeSerial, ivySerial, ..., goes up and the page is ready.)
+async function stillWorks(page) {
+  const serials = () => Object.fromEntries(Object.entries(document.documentElement.dataset)
+    .filter(([k]) => /^[a-z]+Serial$/.test(k) && !k.startsWith('drawn')).map(([k, v]) => [k, Number(v)]));
+  const before = await page.evaluate(serials);
+  await page.evaluate(() => { location.hash = `#seed=${2 + Math.floor(Math.random() * 1000)}`; });
+  try {
+    await page.waitForFunction((old) => {
+      const d = document.documentElement.dataset;
+      return d.status === 'ready' && Object.entries(d).some(([k, v]) =>
+        /^[a-z]+Serial$/.test(k) && !k.startsWith('drawn') && Number(v) > (old[k] ?? -1));
+    }, before, { timeout: 60000, polling: 250 });
+    return true;
+  } catch {
+    return false;
+  }
+}
+
+function glb(json, binLength = 0) {
+  const text = Buffer.from(JSON.stringify(json));
+  const pad = (4 - (text.length % 4)) % 4;
+  const chunk = Buffer.concat([text, Buffer.alloc(pad, 0x20)]);
+  const header = Buffer.alloc(12);
+  header.write('glTF', 0); header.writeUInt32LE(2, 4);
+  header.writeUInt32LE(12 + 8 + chunk.length + (binLength ? 8 + binLength : 0), 8);
+  const jh = Buffer.alloc(8); jh.writeUInt32LE(chunk.length, 0); jh.write('JSON', 4);
+  const parts = [header, jh, chunk];
+  if (binLength) { const bh = Buffer.alloc(8); bh.writeUInt32LE(binLength, 0); bh.write('BIN\0', 4); parts.push(bh, Buffer.alloc(binLength)); }
+  return Buffer.concat(parts);
+}
+const deep = (n) => '['.repeat(n) + ']'.repeat(n);
+const FILES = {
+  '#mesh-file': {
+    'deep extras': { name: 'deep.gltf', buffer: Buffer.from(`{"asset":{"version":"2.0","extras":${deep(30000)}}}`) },
+    'a wrapping accessor': { name: 'wrap.glb', buffer: glb({
+      asset: { version: '2.0' }, buffers: [{ byteLength: 36 }], bufferViews: [{ buffer: 0, byteLength: 36 }],
+      accessors: [{ bufferView: 0, componentType: 5126, count: 0x15555556, type: 'VEC3' }],
+      meshes: [{ primitives: [{ attributes: { POSITION: 0 } }] }], nodes: [{ mesh: 0 }], scenes: [{ nodes: [0] }] }, 36) },
+    'a vertex bomb': { name: 'bomb.glb', buffer: glb({
+      asset: { version: '2.0' }, buffers: [{ byteLength: 36 }], bufferViews: [{ buffer: 0, byteLength: 36 }],
+      accessors: [{ bufferView: 0, componentType: 5126, count: 3, type: 'VEC3' }],
+      meshes: [{ primitives: [{ attributes: { POSITION: 0 } }] }],
+      nodes: [{ children: Array.from({ length: 1000 }, (_, i) => i + 1) }, ...Array.from({ length: 1000 }, () => ({ mesh: 0 }))],
+      scenes: [{ nodes: [0, 0, 0, 0, 0, 0, 0, 0, 0, 0] }] }, 36) },
+    garbage: { name: 'garbage.glb', buffer: Buffer.from([0, 1, 2, 255, 254, 10, 13]) },
+  },
+  '#contour-file': {
+    'a numeric type': { name: 'n.json', buffer: Buffer.from('{"type": 7, "coordinates": [[0,0],[1,0],[1,1]]}') },
+    'no coordinates': { name: 'p.json', buffer: Buffer.from('{"type": "Polygon"}') },
+    'a null type': { name: 't.json', buffer: Buffer.from('{"type": null}') },
+    'deep JSON': { name: 'd.json', buffer: Buffer.from(deep(30000)) },
+    'a repeated key': { name: 'r.json', buffer: Buffer.from('{"points": [[0,0],[100,0],[100,100]], "points": [[0,0],[1,0],[1,1]]}') },
+  },
+};
+
+await runBrowserTest(async (server, browser) => {
+  for (const study of declared.studies) {
+    const table = JSON.parse(execFileSync(NATIVE, ['params', study.name, '--json'], { encoding: 'utf8' }));
+    const keys = table.map((row) => row.key);
+    const problems = [];
+    const context = await newContext(browser, { viewport: { width: 900, height: 650 } });
+    const page = watchPage(await context.newPage(), problems);
+    const url = `${server.url}${pageOf(study.name)}`;
+    for (const [what, value] of Object.entries(VALUES)) {
+      const hash = table.map((row) => `${row.key}=${encodeURIComponent(value(row))}`).join('&');
+      await page.goto('about:blank');
+      await page.goto(`${url}#${hash}`);
+      const s = await settled(page);
+      check(`${study.name} page: every row ${what} is refused with a notice naming it`, namesRows(s.notice, keys),
+        `${keys.length} rows; ${JSON.stringify(s.notice).slice(0, 240)}`);
+      check(`${study.name} page: after every row ${what}, a valid hash grows again`, await stillWorks(page));
+    }
+    // Every row given twice.
+    await page.goto('about:blank');
+    await page.goto(`${url}#${table.map((row) => `${row.key}=${row.default}&${row.key}=${row.default}`).join('&')}`);
+    let s = await settled(page);
+    check(`${study.name} page: every row repeated is refused with a notice naming it`, namesRows(s.notice, keys),
+      JSON.stringify(s.notice).slice(0, 240));
+    check(`${study.name} page: after repeated keys, a valid hash grows again`, await stillWorks(page));
+    // Over the link's maximum: refused whole, with a notice; the page still grows.
+    await page.goto('about:blank');
+    await page.goto(`${url}#${keys[0]}=${table[0].default}&x=${'1'.repeat(17000)}`);
+    s = await settled(page);
+    check(`${study.name} page: a 17,000-character hash is refused with a notice`, s.notice.some((l) => /16384|16,384/.test(l)),
+      JSON.stringify(s.notice).slice(0, 200));
+    check(`${study.name} page: after a 17,000-character hash, a valid hash grows again`, await stillWorks(page));
+    // Hostile files on the page's file inputs.
+    for (const [input, files] of Object.entries(FILES)) {
+      if (!(await page.$(input))) continue;
+      for (const [what, file] of Object.entries(files)) {
+        await page.goto('about:blank');
+        await page.goto(url);
+        await settled(page);
+        await page.setInputFiles(input, { ...file, mimeType: 'application/octet-stream' });
+        // A notice, or a line beside the field (a visible .field-error).
+        const shown = await page.waitForFunction(() => {
+          const notice = document.getElementById('notice');
+          const lines = [...document.querySelectorAll('.field-error')].filter((e) => !e.hidden && e.textContent.trim());
+          if (!notice.hidden && notice.textContent.trim()) return notice.textContent;
+          return lines.length ? lines[0].textContent : false;
+        }, null, { timeout: 60000, polling: 250 }).then((h) => h.jsonValue()).catch(() => '');
+        s = await settled(page);
+        check(`${study.name} page: dropped ${what} (${file.name}) ends in a notice or a line beside the field`,
+          typeof shown === 'string' && shown.length > 0, `${JSON.stringify(shown).slice(0, 200)}; ${s.status}`);
+        check(`${study.name} page: after ${what}, a valid hash grows again`, await stillWorks(page));
+      }
+    }
+    check(`${study.name} page: no uncaught error or console error`, problems.length === 0, problems.slice(0, 3).join(' | ').slice(0, 400));
+    await context.close();
+  }
+});
