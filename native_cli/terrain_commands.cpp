@@ -161,10 +161,6 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   CheckOutPath(o.contours_out, "--contours", {".json", ".geojson", ".svg"});
   CheckOutPath(o.out, "--out", {".glb"});
   CheckOutPath(o.heightmap, "--heightmap", {".png"});
-  // The heightfield's cells are read only by the surface outputs and the stats.
-  if (o.res != 0 && o.out.empty() && o.heightmap.empty() && !o.stats) {
-    Fail(Status::Error("--res", "only applies with --out FILE.glb, --heightmap FILE.png or --stats"));
-  }
   if (!o.heightmap.empty() &&
       o.heightmap.substr(0, o.heightmap.size() - 4) + ".json" == o.contours_out) {
     Fail(Status::Error("--contours", "'" + o.contours_out +
@@ -438,8 +434,7 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
                    "override it");
   AddNumberFlag(grow, "--res", &o->res, TerrainRowRange(TerrainParam::kRes),
                 "Heightfield cells along the longer side (the res row), " +
-                    RangeHelp(TerrainRowRange(TerrainParam::kRes)) +
-                    "; only with --out, --heightmap or --stats");
+                    RangeHelp(TerrainRowRange(TerrainParam::kRes)));
   grow->add_flag("--stats", o->stats, "Print the statistics as one JSON object");
   grow->add_flag("--repair", o->repair,
                  "Make a seed contour that crosses itself simple first, as the page does a drawing "

@@ -161,5 +161,41 @@ TEST(TerrainBudget, TimeBudgetStopsAtAContourWithTheLine) {
   EXPECT_LE(EstimateTerrainGrown(*cut, limits).seconds, limits.max_seconds);
 }
 
+// Issue 34: at θ ≥ 60° with d'' ≥ √3·d0 a split edge is as long as its parent, so the midpoint
+// displacement doubled its points at each of 41 levels (the improved method on the disk filled
+// memory under --max-memory 128M, then threw std::bad_alloc). It now stops at the budget's room
+// with one line naming theta_max, having allocated within the budget.
+TEST(TerrainBudget, SteepMidpointDisplacementIsRefusedWithinTheBudget) {
+  {
+    const char* method = "improved";
+    TerrainParams p = For(method, 20);
+    ASSERT_TRUE(p.Set(TerrainParam::kThetaMin, 89).ok());
+    ASSERT_TRUE(p.Set(TerrainParam::kThetaMax, 89).ok());
+    ASSERT_TRUE(p.Set(TerrainParam::kD2, 0.5).ok());  // d'' = 10 m ≥ √3·d0 (d0 = 4.9 m)
+    Budget budget;
+    budget.memory_bytes = uint64_t{128} << 20;
+    budget.seconds = 60;
+    const TerrainGrowLimits limits = TerrainLimits(p, budget);
+    const long long base = AllocMeter::Reset();
+    Result<Terrain> t = Grow(*BuiltinSeed("disk"), p, &limits);
+    const long long peak = AllocMeter::PeakAbove(base);
+    ASSERT_FALSE(t.ok()) << method;
+    EXPECT_EQ(t.status().field(), "theta_max");
+    EXPECT_NE(t.status().message().find("(what --max-memory leaves)"), std::string::npos)
+        << t.status().Line();
+    EXPECT_LE(static_cast<double>(peak), limits.max_bytes - limits.base_bytes) << method;
+  }
+  // Without a budget the hard cap holds it (kMaxMidpointPoints).
+  // A 100 m square, d0 = 4.9 m, d'' = 10 m: the halves tend to 2·d''/√3 = 11.5 m ≥ 2·d0.
+  const Ring square = {{0, 0}, {100, 0}, {100, 100}, {0, 100}};
+  Pcg32 rng(1);
+  EXPECT_FALSE(MidpointDisplace(square, 4.9, 10, 89, 89, &rng, 100000).has_value());
+  // Within the paper's θ range the same splitting ends well under the cap.
+  Pcg32 rng2(1);
+  const std::optional<Ring> paper = MidpointDisplace(square, 4.9, 10, 20, 40, &rng2, 100000);
+  ASSERT_TRUE(paper.has_value());
+  EXPECT_LT(paper->size(), 1000u);
+}
+
 }  // namespace
 }  // namespace niwa::terrain

@@ -139,8 +139,6 @@ TEST(TerrainCli, NumericFlagsAreStrictAndApplyOnlyWhereRead) {
        "4294967295]\n"},
       {{"compare", "--dem", "none.png", "--builtin", "disk", "--seed", "1.5"},
        "niwa: error: --seed: 1.5 is out of range; must be a whole number in [0, 4294967295]\n"},
-      {{"grow", "--builtin", "disk", "--res", "64", "--contours", "x.json"},
-       "niwa: error: --res: only applies with --out FILE.glb, --heightmap FILE.png or --stats\n"},
       {{"shrink", "--builtin", "disk", "--seed", "3"},
        "niwa: error: --seed: only applies with --displace D0,D2,THETA_MIN,THETA_MAX\n"},
   };
