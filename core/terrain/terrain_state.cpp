@@ -165,7 +165,7 @@ std::string TerrainStateJson(const TerrainState& state) {
 void ApplyTerrainHash(std::string_view hash, std::string_view prefix, TerrainState* state,
                       std::vector<std::string>* notices) {
   const std::string pre(prefix);
-  HashPairs pairs = SplitHash(hash);
+  HashPairs pairs = SplitHash(hash, notices);  // too long or a repeated key: nothing, a notice
   // The seed and the preset first, so the parameters go on top of them whatever their order.
   for (const auto& [key, value] : pairs) {
     if (key == pre + "builtin") {

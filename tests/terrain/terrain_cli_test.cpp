@@ -151,6 +151,24 @@ TEST(TerrainCli, NumericFlagsAreStrictAndApplyOnlyWhereRead) {
   }
 }
 
+// Issue 34: a terrain link with a repeated key, or longer than 16,384 characters, is refused with
+// one line under --url (both were read before: the last value, or nothing, silently).
+TEST(TerrainCli, RepeatedOrOverlongLinksAreRefused) {
+  for (const std::string url : {"builtin=disk&builtin=lobes7", "builtin=disk&d=5&d=50",
+                                 "builtin=disk&res=64&res=128"}) {
+    CliResult r = RunNiwa({"terrain", "grow", "--url", url, "--stats"});
+    EXPECT_EQ(r.code, 2) << url;
+    const std::string key = url.substr(url.rfind('&') + 1, url.rfind('=') - url.rfind('&') - 1);
+    EXPECT_EQ(r.err, "niwa: error: --url: " + key +
+                         ": given 2 times; must be given once, nothing was read\n");
+  }
+  const std::string long_url = "builtin=disk&d=5" + std::string(16384, '0');
+  CliResult r = RunNiwa({"terrain", "grow", "--url", long_url, "--stats"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err,
+            "niwa: error: --url: hash: 16400 characters; the limit is 16384, nothing was read\n");
+}
+
 // The seed row's whole range is taken exactly: 2^32 − 1 is not converted to int (UBSan).
 TEST(TerrainCli, LargestSeedIsTakenExactly) {
   CliResult r = RunNiwa({"terrain", "grow", "--builtin", "dumbbell", "--method", "midpoint",
