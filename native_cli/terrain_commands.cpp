@@ -39,6 +39,7 @@ using terrain::TerrainParam;
 const run::FieldNames kFieldFlags = {
     {"builtin", "--builtin"}, {"contour", "--contour"}, {"preset", "--method"},
     {"seed", "--seed"},       {"res", "--res"},         {"heightmap", "--heightmap"},
+    {"dem", "--dem"},
 };
 
 // The flag ranges of table rows, written once in the terrain table (terrain_params.cpp).
@@ -176,15 +177,19 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   if (!o.contours_out.empty())
     plan.outputs.push_back(*terrain::TerrainOutputOfFormat(ContoursFormat(o.contours_out)));
   Result<terrain::TerrainRun> run = terrain::TerrainRun::Start(state, budget, std::move(plan));
-  if (!run.ok()) Fail(run.status());
+  if (!run.ok()) Fail(run::RenameField(run.status(), kFieldFlags));
   const Status advanced = run->Advance({});
   ReportTruncated(run->truncated_by());
   if (std::getenv("NIWA_BUDGET_TRACE") && run->checked_estimate()) {  // docs/budgets.md
     const Estimate& e = *run->checked_estimate();
     std::fprintf(stderr, "budget: %.0f MB %.2f s (%s)\n", e.memory_bytes / 1048576, e.seconds,
                  e.what.c_str());
+    Result<terrain::Ring> seed = terrain::StateSeed(state);
+    if (seed.ok())
+      std::fprintf(stderr, "budget: the seed's sweep: %.0f edge tests estimated, %.0f made\n",
+                   terrain::ShrinkSweepTests(*seed), run->terrain().counts.sweep_tests);
   }
-  Check(advanced);
+  Check(run::RenameField(advanced, kFieldFlags));
   const auto t2 = std::chrono::steady_clock::now();
   std::vector<OutputFile> files;
   if (!o.contours_out.empty()) {
@@ -250,6 +255,10 @@ int RunCompare(const GrowOptions& o, const std::string& dem_path, std::ostream& 
   if (!dem.ok()) Fail(dem.status());
   terrain::TerrainState state = ResolveTerrainState(o);
   const Budget budget = ResolveBudget(o.budget);
+  // The peak search over the DEM's cells, refused before anything grows (a small cell under a
+  // large d made it hang).
+  Check(run::RenameField(terrain::CheckCompareCost(*dem, state.params.Get(TerrainParam::kD), budget),
+                         kFieldFlags));
   Result<terrain::Ring> seed = terrain::StateSeed(state);
   if (!seed.ok()) Fail(seed.status());
   const terrain::TerrainGrowLimits limits = terrain::TerrainLimits(state.params, budget);

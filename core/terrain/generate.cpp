@@ -359,7 +359,14 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, const TerrainG
         if (!t.counts.truncated_by.empty()) break;
       }
       ShrinkCounts sc;
+      if (limits != nullptr) sc.max_sweep_tests = SweepTestsLeft(*limits, work, t.counts.sweep_tests);
       std::vector<Ring> rs = Shrink(cur, out, &sc);
+      t.counts.sweep_tests += sc.sweep_tests;
+      if (sc.stopped) {
+        t.counts.truncated_by =
+            SweepStoppedLine(cur, sc.max_sweep_tests, *limits, -k - 1, p.GetInt(P::kMaxLevels));
+        break;
+      }
       work.vertices_worked += static_cast<double>(cur.size());
       for (const Ring& r : rs) work.vertices_worked += static_cast<double>(r.size());
       t.counts.holes_filled += sc.holes_filled;
@@ -414,7 +421,21 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, const TerrainG
     }
     const auto t0 = std::chrono::steady_clock::now();
     ShrinkCounts sc;
+    if (limits != nullptr) sc.max_sweep_tests = SweepTestsLeft(*limits, work, t.counts.sweep_tests);
     std::vector<Ring> shrunk = Shrink(parent, so, &sc);
+    t.counts.sweep_tests += sc.sweep_tests;
+    if (sc.stopped) {
+      // The seed's own first shrink: nothing could grow, so the seed's shape is refused.
+      if (level == 1 && t.contours.size() == static_cast<std::size_t>(down) + 1) {
+        return Status::Error("contour", "the seed's first shrink stopped: " +
+                                            SweepStoppedWhy(parent, sc.max_sweep_tests, *limits) +
+                                            "; simplify the contour" +
+                                            RaiseHint(limits->seconds_limit));
+      }
+      t.counts.truncated_by =
+          SweepStoppedLine(parent, sc.max_sweep_tests, *limits, level, max_levels);
+      break;
+    }
     t.counts.cleaned_points += sc.cleaned_points;
     t.counts.holes_filled += sc.holes_filled;
     t.counts.dropped_rings += sc.dropped_rings;
