@@ -197,6 +197,15 @@ void ApplyTerrainHash(std::string_view hash, std::string_view prefix, TerrainSta
   }
 }
 
+std::string EncodeContourPoints(const Ring& points) {
+  std::string out;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i > 0) out += ';';
+    out += FormatNumber(points[i].x) + "," + FormatNumber(points[i].y);
+  }
+  return out;
+}
+
 std::string EncodeTerrainHash(const TerrainState& state, std::string_view prefix) {
   const std::string pre(prefix);
   std::string out;
@@ -204,11 +213,7 @@ std::string EncodeTerrainHash(const TerrainState& state, std::string_view prefix
   if (!state.builtin.empty()) {
     out += pre + "builtin=" + state.builtin;
   } else {
-    out += pre + "contour=";
-    for (std::size_t i = 0; i < state.points.size(); ++i) {
-      if (i > 0) out += ';';
-      out += FormatNumber(state.points[i].x) + "," + FormatNumber(state.points[i].y);
-    }
+    out += pre + "contour=" + EncodeContourPoints(state.points);
   }
   Result<TerrainParams> base = BaseParams(state.preset, state.builtin);
   out += EncodeChangedParams(state.params, base.ok() ? *base : TerrainParams(), prefix);

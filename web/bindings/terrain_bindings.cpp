@@ -84,7 +84,8 @@ std::string TerrainSeedsJson() {
 // contour_repair.h (what `niwa terrain grow --repair` does). Returns {points, repaired,
 // loops_removed} when nothing was wrong (the points as given), {method: "loops" | "union", points,
 // repaired, loops_removed, reason} when repaired (snapped to the 1/1024 m grid, counter-
-// clockwise), or an error record naming "contour" (error_record.h).
+// clockwise), with {simplified: {from, to, quantum}} when its link would have been too long
+// (FitContourToLink), or an error record naming "contour" (error_record.h).
 std::string TerrainRepairContour(const std::string& points_json) {
   ordered_json out;
   json j = json::parse(points_json, nullptr, false);
@@ -107,11 +108,25 @@ std::string TerrainRepairContour(const std::string& points_json) {
   if (!points_ok.ok()) {
     return ErrorRecordJson(points_ok);
   }
-  Result<terrain::ContourRepair> r = terrain::RepairContour(ring);
+  // Within what a link carries first (a drawn 2,000-point contour wrote a 32,618-character link
+  // the page could not read back), then repaired; a repair's new points are fitted once more.
+  const terrain::LinkFit fit = terrain::FitContourToLink(ring, terrain::kMaxLinkContourChars);
+  Result<terrain::ContourRepair> r = terrain::RepairContour(fit.ring);
   if (!r.ok()) {
     return ErrorRecordJson(r.status());
   }
-  if (!r->repaired) {
+  bool fitted = fit.changed;
+  if (r->repaired) {
+    const terrain::LinkFit again =
+        terrain::FitContourToLink(r->ring, terrain::kMaxLinkContourChars);
+    if (again.changed) {
+      Result<terrain::Ring> checked = terrain::CheckSeed(again.ring);
+      if (!checked.ok()) return ErrorRecordJson(checked.status());
+      r->ring = again.ring;
+      fitted = true;
+    }
+  }
+  if (!r->repaired && !fitted) {
     out["points"] = j;
     out["repaired"] = false;
     out["loops_removed"] = 0;
@@ -119,11 +134,14 @@ std::string TerrainRepairContour(const std::string& points_json) {
   }
   json pts = json::array();
   for (const terrain::Vec2& v : r->ring) pts.push_back({v.x, v.y});
-  out["method"] = r->method;
+  if (r->repaired) out["method"] = r->method;
   out["points"] = pts;
-  out["repaired"] = true;
+  out["repaired"] = r->repaired;
   out["loops_removed"] = r->loops_removed;
-  out["reason"] = r->reason;
+  if (r->repaired) out["reason"] = r->reason;
+  if (fitted) {
+    out["simplified"] = {{"from", ring.size()}, {"to", r->ring.size()}, {"quantum", fit.quantum}};
+  }
   return JsonText(out);
 }
 
@@ -134,7 +152,16 @@ std::string TerrainRepairContour(const std::string& points_json) {
 // with the limit; its geometry is checked (and a crossing repaired) as a drawing's is.
 std::string TerrainParseContour(const std::string& text) {
   ordered_json out;
-  Result<terrain::SeedFile> file = terrain::ParseContourJson(text);
+  // No C++ exception may reach the page (a GeoJSON "type": 7 threw a json type_error, and the
+  // worker's reply never came): one record naming the field instead.
+  Result<terrain::SeedFile> file = Status::Error("contour", "could not be read");
+  try {
+    file = terrain::ParseContourJson(text);
+  } catch (const std::exception&) {
+    return ErrorRecordJson(Status::Error(
+        "contour", "not a contour file; must be {\"points\": [[x, y], ...]} in metres or a "
+                   "GeoJSON Polygon or LineString"));
+  }
   if (!file.ok()) {
     return ErrorRecordJson(file.status());
   }
