@@ -34,12 +34,14 @@
 #include <string>
 #include <vector>
 
+#include "base/budget.h"
 #include "buffers.h"
 #include "error_record.h"
 #include "page_budget.h"
 #include "run/field_names.h"
 #include "terrain/contour_io.h"
 #include "terrain/contour_repair.h"
+#include "terrain/generate.h"
 #include "terrain/seeds.h"
 #include "terrain/terrain_params.h"
 #include "terrain/terrain_run.h"
@@ -53,6 +55,9 @@ using nlohmann::json;
 using nlohmann::ordered_json;
 using terrain::TerrainParam;
 using Clock = std::chrono::steady_clock;
+
+// The most contour vertices a grown mountain may bring to the page (every builtin grows < 2,000).
+constexpr double kPageMaxContourVertices = 500000;
 
 double Ms(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
@@ -206,6 +211,20 @@ class TerrainLab {
     const int built = run_->counts().heightfields;
     s = run_->Advance({});
     if (!s.ok()) return ErrorText(s);
+    // What the page draws (the plan view's paths on the main thread, the line buffers), refused
+    // beyond kPageMaxContourVertices: `down` at its largest (1,000 enlarged contours, 1.9 M
+    // vertices) stalled the main thread for 71 s.
+    double vertices = 0;
+    for (const terrain::ContourNode& c : run_->terrain().contours)
+      vertices += static_cast<double>(c.ring.size());
+    if (vertices > kPageMaxContourVertices) {
+      const bool down = state.params.GetInt(TerrainParam::kDown) > 0;
+      return ErrorText(Status::Error(
+          down ? "down" : "max_levels",
+          FormatCount(vertices) + " contour vertices are more than the page draws (" +
+              FormatCount(kPageMaxContourVertices) + "); lower " + (down ? "down" : "max_levels") +
+              " or raise d (the CLI takes any number)"));
+    }
     ms_heightfield_ = run_->ms_heightfield();
     ms_grow_ = Ms(t0, Clock::now()) - ms_heightfield_;
     const auto t2 = Clock::now();
