@@ -130,7 +130,8 @@ terrain::TerrainState ResolveTerrainState(const GrowOptions& o) {
     if (!text.ok()) Fail(text.status());
     Check(terrain::ApplyTerrainStateJson(*text, &state).Within("--params " + o.params_file));
   }
-  if (o.seed >= 0) Check(run::RenameField(state.params.Set(TerrainParam::kSeed, o.seed), kFieldFlags));
+  if (o.seed >= 0)
+    Check(run::RenameField(state.params.Set(TerrainParam::kSeed, o.seed), kFieldFlags));
   for (const std::string& s : o.sets) Check(state.params.SetFromAssignment(s).Within("--set"));
   if (o.res != 0) Check(run::RenameField(state.params.Set(TerrainParam::kRes, o.res), kFieldFlags));
   if (o.repair && state.builtin.empty()) RepairSeed(o, &state);
@@ -257,8 +258,8 @@ int RunCompare(const GrowOptions& o, const std::string& dem_path, std::ostream& 
   const Budget budget = ResolveBudget(o.budget);
   // The peak search over the DEM's cells, refused before anything grows (a small cell under a
   // large d made it hang).
-  Check(run::RenameField(terrain::CheckCompareCost(*dem, state.params.Get(TerrainParam::kD), budget),
-                         kFieldFlags));
+  Check(run::RenameField(
+      terrain::CheckCompareCost(*dem, state.params.Get(TerrainParam::kD), budget), kFieldFlags));
   Result<terrain::Ring> seed = terrain::StateSeed(state);
   if (!seed.ok()) Fail(seed.status());
   const terrain::TerrainGrowLimits limits = terrain::TerrainLimits(state.params, budget);

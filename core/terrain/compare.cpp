@@ -129,13 +129,13 @@ Status CheckCompareCost(const Heightfield& dem, double d, const Budget& budget) 
   const double seconds = kNsPerPeakTest * 1e-9 * tests;
   if (seconds <= budget.seconds) return Status::Ok();
   const double r = std::max(1.0, std::round(d / dem.cell));
-  return Status::Error("dem", "cells of " + FormatNumber(dem.cell) + " m under d = " +
-                                  FormatNumber(d) + " m make each peak test look " +
-                                  FormatCount(r) + " cells around (" + FormatCount(tests) +
-                                  " cell tests, about " + FormatSeconds(seconds) +
-                                  "); must take at most " + FormatSeconds(budget.seconds) + " (" +
-                                  budget.seconds_limit + "); use coarser cells or a smaller d" +
-                                  RaiseHint(budget.seconds_limit));
+  return Status::Error("dem",
+                       "cells of " + FormatNumber(dem.cell) + " m under d = " + FormatNumber(d) +
+                           " m make each peak test look " + FormatCount(r) + " cells around (" +
+                           FormatCount(tests) + " cell tests, about " + FormatSeconds(seconds) +
+                           "); must take at most " + FormatSeconds(budget.seconds) + " (" +
+                           budget.seconds_limit + "); use coarser cells or a smaller d" +
+                           RaiseHint(budget.seconds_limit));
 }
 
 Comparison CompareTerrain(const Heightfield& dem, const Terrain& grown) {

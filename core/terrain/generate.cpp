@@ -102,8 +102,8 @@ std::vector<Ring> MakeSimple(const Ring& ring, const TerrainParams& p, GrowCount
 
 // The method's perturbation of one freshly shrunk ring (§4.1-4.3 steps 1.2-1.3); the midpoint
 // displacement makes at most max_points points, else the error (MidpointOverflow).
-Result<std::vector<Ring>> Perturb(const Ring& shrunk, const TerrainParams& p, double d0,
-                                  Pcg32* rng, std::size_t max_points, const std::string& what,
+Result<std::vector<Ring>> Perturb(const Ring& shrunk, const TerrainParams& p, double d0, Pcg32* rng,
+                                  std::size_t max_points, const std::string& what,
                                   GrowCounts* counts) {
   const int method = p.GetInt(P::kMethod);
   if (method == static_cast<int>(Method::kSimple)) return std::vector<Ring>{shrunk};
@@ -164,14 +164,13 @@ Status MidpointOverflow(double d0, double d2, double theta_max_deg, double max_p
   // Halves as long as their edge: θ ≥ 60° (tan θ ≥ √3) with d'' ≥ √3·d0 (generate.h).
   const bool endless = theta_max_deg >= 60 && d2 >= std::sqrt(3.0) * d0;
   return Status::Error(
-      "theta_max",
-      FormatNumber(theta_max_deg) + ": midpoint displacement would make more than " +
-          FormatCount(max_points) + " points on one contour (" + what + ")" +
-          (endless ? "; at θ ≥ 60° with d'' = " + FormatNumber(d2) + " m ≥ √3·d0 = " +
-                         FormatNumber(std::round(std::sqrt(3.0) * d0 * 100) / 100) +
-                         " m a split edge is no shorter than its parent"
-                   : std::string()) +
-          "; must be below 60, or lower d2");
+      "theta_max", FormatNumber(theta_max_deg) + ": midpoint displacement would make more than " +
+                       FormatCount(max_points) + " points on one contour (" + what + ")" +
+                       (endless ? "; at θ ≥ 60° with d'' = " + FormatNumber(d2) + " m ≥ √3·d0 = " +
+                                      FormatNumber(std::round(std::sqrt(3.0) * d0 * 100) / 100) +
+                                      " m a split edge is no shorter than its parent"
+                                : std::string()) +
+                       "; must be below 60, or lower d2");
 }
 
 namespace {
@@ -359,7 +358,8 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, const TerrainG
         if (!t.counts.truncated_by.empty()) break;
       }
       ShrinkCounts sc;
-      if (limits != nullptr) sc.max_sweep_tests = SweepTestsLeft(*limits, work, t.counts.sweep_tests);
+      if (limits != nullptr)
+        sc.max_sweep_tests = SweepTestsLeft(*limits, work, t.counts.sweep_tests);
       std::vector<Ring> rs = Shrink(cur, out, &sc);
       t.counts.sweep_tests += sc.sweep_tests;
       if (sc.stopped) {

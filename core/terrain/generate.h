@@ -33,8 +33,8 @@ constexpr std::size_t kMaxMidpointPoints = std::size_t{8} << 20;
 // A split halves an edge only while θ < 60°: with θ ≥ 60° and d'' ≥ √3·d0 the halves of an edge
 // near 2·d''/√3 are as long as it, and the splitting doubles the points at each of its 41 levels.
 // So it stops once the ring would pass max_points: then nullopt (the caller refuses the run).
-std::optional<Ring> MidpointDisplace(const Ring& ring, double d0, double d2,
-                                     double theta_min_deg, double theta_max_deg, Pcg32* rng,
+std::optional<Ring> MidpointDisplace(const Ring& ring, double d0, double d2, double theta_min_deg,
+                                     double theta_max_deg, Pcg32* rng,
                                      std::size_t max_points = kMaxMidpointPoints);
 // The line of a midpoint displacement that passed `max_points` (`what`: the limit it came from,
 // e.g. "what --max-memory leaves"), under the field "theta_max".

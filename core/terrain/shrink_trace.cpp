@@ -103,8 +103,8 @@ Result<ShrinkTrace> TraceShrink(const Ring& seed, const ShrinkTraceOptions& o) {
     std::optional<Ring> displaced = MidpointDisplace(trace.seed, o.d0, o.d2, o.theta_min_deg,
                                                      o.theta_max_deg, &rng, kMaxTracePoints);
     if (!displaced) {
-      const Status s = MidpointOverflow(o.d0, o.d2, o.theta_max_deg,
-                                        static_cast<double>(kMaxTracePoints), "what a figure takes");
+      const Status s = MidpointOverflow(
+          o.d0, o.d2, o.theta_max_deg, static_cast<double>(kMaxTracePoints), "what a figure takes");
       return Status::Error("theta", s.message());
     }
     trace.displaced = Normalise(*displaced);

@@ -128,15 +128,16 @@ double SweepTestsLeft(const TerrainGrowLimits& l, const TerrainWork& work, doubl
 
 std::string SweepStoppedLine(const Ring& parent, double allowed, const TerrainGrowLimits& l,
                              int level, int max_levels) {
-  return TruncatedLine(l.seconds_limit,
-                       "at level " + std::to_string(level) + " of " + std::to_string(max_levels),
-                       SweepStoppedWhy(parent, allowed, l), kTerrainGrowChange + RaiseHint(l.seconds_limit));
+  return TruncatedLine(
+      l.seconds_limit, "at level " + std::to_string(level) + " of " + std::to_string(max_levels),
+      SweepStoppedWhy(parent, allowed, l), kTerrainGrowChange + RaiseHint(l.seconds_limit));
 }
 
 std::string SweepStoppedWhy(const Ring& parent, double allowed, const TerrainGrowLimits& l) {
   return "shrinking a contour of " + FormatCount(static_cast<double>(parent.size())) +
          " points needs more than the " + FormatCount(allowed) + " edge tests of its union sweep " +
-         "that " + l.seconds_limit + " leaves (edges side by side across its height, as a comb's teeth)";
+         "that " + l.seconds_limit +
+         " leaves (edges side by side across its height, as a comb's teeth)";
 }
 
 bool GrowFitsLimits(const Terrain& t, const TerrainParams& params, const TerrainGrowLimits& l) {

@@ -24,7 +24,7 @@ struct TerrainGrowLimits {
   double base_bytes = 0, bytes_per_vertex = 0, transient_bytes_per_vertex = 0;
   double seconds_per_vertex = 0;
   double seconds_per_sweep_test = 0;  // a shrink's union sweep (ShrinkSweepTests)
-  double growth = 2;  // children's vertices per parent vertex, at most (a margin)
+  double growth = 2;                  // children's vertices per parent vertex, at most (a margin)
   std::string memory_limit = "--max-memory", seconds_limit = "--max-seconds";
 };
 

@@ -154,8 +154,8 @@ TEST(TerrainCli, NumericFlagsAreStrictAndApplyOnlyWhereRead) {
 // Issue 34: a terrain link with a repeated key, or longer than 16,384 characters, is refused with
 // one line under --url (both were read before: the last value, or nothing, silently).
 TEST(TerrainCli, RepeatedOrOverlongLinksAreRefused) {
-  for (const std::string url : {"builtin=disk&builtin=lobes7", "builtin=disk&d=5&d=50",
-                                 "builtin=disk&res=64&res=128"}) {
+  for (const std::string url :
+       {"builtin=disk&builtin=lobes7", "builtin=disk&d=5&d=50", "builtin=disk&res=64&res=128"}) {
     CliResult r = RunNiwa({"terrain", "grow", "--url", url, "--stats"});
     EXPECT_EQ(r.code, 2) << url;
     const std::string key = url.substr(url.rfind('&') + 1, url.rfind('=') - url.rfind('&') - 1);

@@ -163,9 +163,10 @@ std::string TerrainParseContour(const std::string& text) {
   try {
     file = terrain::ParseContourJson(text);
   } catch (const std::exception&) {
-    return ErrorRecordJson(Status::Error(
-        "contour", "not a contour file; must be {\"points\": [[x, y], ...]} in metres or a "
-                   "GeoJSON Polygon or LineString"));
+    return ErrorRecordJson(
+        Status::Error("contour",
+                      "not a contour file; must be {\"points\": [[x, y], ...]} in metres or a "
+                      "GeoJSON Polygon or LineString"));
   }
   if (!file.ok()) {
     return ErrorRecordJson(file.status());
