@@ -39,12 +39,19 @@ using terrain::TerrainParam;
 const run::FieldNames kFieldFlags = {
     {"builtin", "--builtin"}, {"contour", "--contour"}, {"preset", "--method"},
     {"seed", "--seed"},       {"res", "--res"},         {"heightmap", "--heightmap"},
+    {"dem", "--dem"},
 };
 
+// The flag ranges of table rows, written once in the terrain table (terrain_params.cpp).
+FlagRange TerrainRowRange(TerrainParam row) {
+  return RowFlagRange(terrain::TerrainTable().row(static_cast<std::size_t>(row)));
+}
+
 struct GrowOptions {
-  std::string contour, builtin, method, seed, contours_out, params_file, url, out, heightmap;
+  std::string contour, builtin, method, contours_out, params_file, url, out, heightmap;
   std::vector<std::string> sets;
-  int res = 0;
+  double seed = -1;  // -1: not given (the row's range starts at 0)
+  int res = 0;       // 0: not given (the row's range starts at 8)
   bool stats = false, repair = false;
   BudgetOptions budget;
 };
@@ -123,8 +130,8 @@ terrain::TerrainState ResolveTerrainState(const GrowOptions& o) {
     if (!text.ok()) Fail(text.status());
     Check(terrain::ApplyTerrainStateJson(*text, &state).Within("--params " + o.params_file));
   }
-  if (!o.seed.empty())
-    Check(run::RenameField(state.params.SetFromText("seed", o.seed), kFieldFlags));
+  if (o.seed >= 0)
+    Check(run::RenameField(state.params.Set(TerrainParam::kSeed, o.seed), kFieldFlags));
   for (const std::string& s : o.sets) Check(state.params.SetFromAssignment(s).Within("--set"));
   if (o.res != 0) Check(run::RenameField(state.params.Set(TerrainParam::kRes, o.res), kFieldFlags));
   if (o.repair && state.builtin.empty()) RepairSeed(o, &state);
@@ -171,15 +178,19 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   if (!o.contours_out.empty())
     plan.outputs.push_back(*terrain::TerrainOutputOfFormat(ContoursFormat(o.contours_out)));
   Result<terrain::TerrainRun> run = terrain::TerrainRun::Start(state, budget, std::move(plan));
-  if (!run.ok()) Fail(run.status());
+  if (!run.ok()) Fail(run::RenameField(run.status(), kFieldFlags));
   const Status advanced = run->Advance({});
   ReportTruncated(run->truncated_by());
   if (std::getenv("NIWA_BUDGET_TRACE") && run->checked_estimate()) {  // docs/budgets.md
     const Estimate& e = *run->checked_estimate();
     std::fprintf(stderr, "budget: %.0f MB %.2f s (%s)\n", e.memory_bytes / 1048576, e.seconds,
                  e.what.c_str());
+    Result<terrain::Ring> seed = terrain::StateSeed(state);
+    if (seed.ok())
+      std::fprintf(stderr, "budget: the seed's sweep: %.0f edge tests estimated, %.0f made\n",
+                   terrain::ShrinkSweepTests(*seed), run->terrain().counts.sweep_tests);
   }
-  Check(advanced);
+  Check(run::RenameField(advanced, kFieldFlags));
   const auto t2 = std::chrono::steady_clock::now();
   std::vector<OutputFile> files;
   if (!o.contours_out.empty()) {
@@ -245,6 +256,10 @@ int RunCompare(const GrowOptions& o, const std::string& dem_path, std::ostream& 
   if (!dem.ok()) Fail(dem.status());
   terrain::TerrainState state = ResolveTerrainState(o);
   const Budget budget = ResolveBudget(o.budget);
+  // The peak search over the DEM's cells, refused before anything grows (a small cell under a
+  // large d made it hang).
+  Check(run::RenameField(
+      terrain::CheckCompareCost(*dem, state.params.Get(TerrainParam::kD), budget), kFieldFlags));
   Result<terrain::Ring> seed = terrain::StateSeed(state);
   if (!seed.ok()) Fail(seed.status());
   const terrain::TerrainGrowLimits limits = terrain::TerrainLimits(state.params, budget);
@@ -265,7 +280,7 @@ int RunCompare(const GrowOptions& o, const std::string& dem_path, std::ostream& 
   }
   nlohmann::json j;
   j["method"] = terrain::MethodName(state.params.GetInt(TerrainParam::kMethod));
-  j["seed"] = state.params.GetInt(TerrainParam::kSeed);
+  j["seed"] = static_cast<uint64_t>(state.params.Get(TerrainParam::kSeed));
   j["h0"] = t->h0;
   j["dh"] = t->dh;
   j["d"] = t->d;
@@ -298,7 +313,6 @@ constexpr FlagRange kShrinkC{1, 100};
 constexpr FlagRange kShrinkSteps{0, terrain::kMaxTraceSteps, true};
 constexpr FlagRange kCleanLen{0, 1e6, false, " (m)"};
 constexpr FlagRange kCleanAngle{0, 180, false, " (degrees)"};
-constexpr FlagRange kSeed32{0, 4294967295.0, true};
 
 nlohmann::json RingJson(const terrain::Ring& r) {
   nlohmann::json a = nlohmann::json::array();
@@ -307,8 +321,10 @@ nlohmann::json RingJson(const terrain::Ring& r) {
 }
 
 // terrain shrink: one JSON object of the measures per step on stdout, the figure as --svg.
-int RunShrink(const ShrinkCommandOptions& o, std::ostream& out) {
+int RunShrink(const ShrinkCommandOptions& o, bool seed_given, std::ostream& out) {
   CheckOutPath(o.svg, "--svg", {".svg"});
+  if (seed_given && o.displace.empty())
+    Fail(Status::Error("--seed", "only applies with --displace D0,D2,THETA_MIN,THETA_MAX"));
   if (o.contour.empty() == o.builtin.empty())
     Fail(Status::Error("--contour",
                        "give one of --contour FILE or --builtin NAME (disk, "
@@ -418,14 +434,17 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
   grow->add_option("--method", o->method,
                    "simple (Fig 9c), midpoint (Fig 13b), fourier (Fig 15), improved (Fig 16) or a "
                    "figure preset fig9a..fig16");
-  grow->add_option("--seed", o->seed, "RNG seed, a whole number in [0, 4294967295]");
+  AddNumberFlag(grow, "--seed", &o->seed, TerrainRowRange(TerrainParam::kSeed),
+                "RNG seed, " + RangeHelp(TerrainRowRange(TerrainParam::kSeed)));
   grow->add_option("--set", o->sets, "KEY=VALUE of the terrain table (niwa params terrain)");
   grow->add_option("--params", o->params_file,
                    "State JSON {preset, builtin, contour: [[x, y], ...], params: {key: value}}");
   grow->add_option("--url", o->url,
                    "A share-link hash (preset=...&builtin=... or contour=x,y;...); other flags "
                    "override it");
-  grow->add_option("--res", o->res, "Heightfield cells along the longer side (the res row)");
+  AddNumberFlag(grow, "--res", &o->res, TerrainRowRange(TerrainParam::kRes),
+                "Heightfield cells along the longer side (the res row), " +
+                    RangeHelp(TerrainRowRange(TerrainParam::kRes)));
   grow->add_flag("--stats", o->stats, "Print the statistics as one JSON object");
   grow->add_flag("--repair", o->repair,
                  "Make a seed contour that crosses itself simple first, as the page does a drawing "
@@ -452,7 +471,8 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
   compare->add_option("--contour", co->contour, "Its seed contour (a file, as for grow)");
   compare->add_option("--builtin", co->builtin, "Or a built-in seed (jacksboro)");
   compare->add_option("--method", co->method, "As for grow");
-  compare->add_option("--seed", co->seed, "RNG seed, a whole number in [0, 4294967295]");
+  AddNumberFlag(compare, "--seed", &co->seed, TerrainRowRange(TerrainParam::kSeed),
+                "RNG seed, " + RangeHelp(TerrainRowRange(TerrainParam::kSeed)));
   compare->add_option("--set", co->sets, "KEY=VALUE of the terrain table");
   compare->add_option("--params", co->params_file, "State JSON, as for grow");
   compare->add_option("--url", co->url, "A share-link hash, as for grow");
@@ -484,10 +504,12 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
                 "Successive shrinks, " + RangeHelp(kShrinkSteps));
   shrink->add_option("--displace", so->displace,
                      "D0,D2,THETA_MIN,THETA_MAX: midpoint-displace the contour first (Fig 12)");
-  AddNumberFlag(shrink, "--seed", &so->seed, kSeed32,
-                "RNG seed of --displace, " + RangeHelp(kSeed32));
+  AddNumberFlag(shrink, "--seed", &so->seed, TerrainRowRange(TerrainParam::kSeed),
+                "RNG seed of --displace, " + RangeHelp(TerrainRowRange(TerrainParam::kSeed)));
   shrink->add_option("--svg", so->svg, "Write the figure as .svg");
-  commands.push_back({shrink, [so](std::ostream& out) { return RunShrink(*so, out); }});
+  commands.push_back({shrink, [so, shrink](std::ostream& out) {
+                        return RunShrink(*so, shrink->count("--seed") > 0, out);
+                      }});
 
   CLI::App* seeds = terrain_cmd->add_subcommand("seeds", "List the built-in seed contours");
   commands.push_back({seeds, [](std::ostream& out) {

@@ -93,18 +93,23 @@ HashPairs SplitHash(std::string_view hash, std::vector<std::string>* notices,
     }
     start = end + 1;
   }
-  if (notices != nullptr) {  // repeated keys, each named once, in order of first appearance
-    std::map<std::string, std::size_t> counts;
-    for (const auto& pair : pairs) ++counts[pair.first];
-    for (const auto& pair : pairs) {
-      auto it = counts.find(pair.first);
-      if (it->second <= 1) continue;
-      if (std::find(repeatable.begin(), repeatable.end(), pair.first) == repeatable.end()) {
-        notices->push_back(Printable(pair.first) + ": given " + std::to_string(it->second) +
-                           " times; the last value is used");
-      }
-      it->second = 0;  // named once
+  // A key given twice (other than those in `repeatable`) makes the link ambiguous: refused whole,
+  // as the CLI refuses it, each such key named once, in order of first appearance.
+  std::map<std::string, std::size_t> counts;
+  for (const auto& pair : pairs) ++counts[pair.first];
+  std::vector<std::string> repeated;
+  for (const auto& pair : pairs) {
+    auto it = counts.find(pair.first);
+    if (it->second > 1 &&
+        std::find(repeatable.begin(), repeatable.end(), pair.first) == repeatable.end()) {
+      repeated.push_back(Printable(pair.first) + ": given " + std::to_string(it->second) +
+                         " times; must be given once, nothing was read");
     }
+    it->second = 0;  // named once
+  }
+  if (!repeated.empty()) {
+    if (notices != nullptr) notices->insert(notices->end(), repeated.begin(), repeated.end());
+    pairs.clear();
   }
   return pairs;
 }

@@ -21,8 +21,9 @@ constexpr std::size_t kMaxHashLength = 16384;
 // Splits "#k=v&k2=v2" (the '#' optional) into decoded (key, value) pairs in order; empty items are
 // skipped, a missing '=' gives an empty value. '+' is a space and %XX a byte. A hash longer than
 // kMaxHashLength gives no pairs and the notice "hash: N characters; the limit is 16384, nothing
-// was read"; a key given more than once (other than those in `repeatable`) gives the notice
-// "KEY: given N times; the last value is used".
+// was read"; a key given more than once (other than those in `repeatable`) gives no pairs either
+// and the notice "KEY: given N times; must be given once, nothing was read" (the link is refused
+// whole, by the CLI and every page alike).
 HashPairs SplitHash(std::string_view hash, std::vector<std::string>* notices = nullptr,
                     const std::vector<std::string_view>& repeatable = {});
 // A --url value split into the page it names and its hash. A whole link ("http://host/#k=v",

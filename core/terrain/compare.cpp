@@ -3,13 +3,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <nlohmann/json.hpp>
 
 #include "image/png.h"
 #include "math/det_math.h"
 #include "params/json_guard.h"
+#include "params/param_text.h"
 
 namespace niwa::terrain {
+namespace {
+
+// One cell test of the peak search, counted at its worst (every cell a candidate, the whole
+// disc tested): 0.45 ns measured against that count (docs/budgets.md), about twice taken.
+constexpr double kNsPerPeakTest = 1;
+
+}  // namespace
 
 Result<Heightfield> ReadHeightmap(const std::vector<unsigned char>& png, const std::string& sidecar,
                                   const std::string& field) {
@@ -84,15 +93,21 @@ SurfaceMeasures MeasureSurface(const Heightfield& s, const std::vector<char>& in
     m.slope_p90_deg =
         sorted[static_cast<std::size_t>(0.9 * static_cast<double>(sorted.size() - 1))];
   }
-  const int r = std::max(1, static_cast<int>(std::lround(d / s.cell)));
+  // 64-bit: a small cell under a large d gives r past 46,341, whose square overflows an int
+  // (CheckCompareCost refuses such a search before it starts; the width bounds it here).
+  const int64_t r = std::min<int64_t>(
+      std::max<int64_t>(1, static_cast<int64_t>(std::llround(d / s.cell))),
+      int64_t{1} + s.width + s.height);  // past w + h every cell is in the disc: the same result
   for (int j = 0; j < s.height; ++j) {
     for (int i = 0; i < s.width; ++i) {
       if (!in(i, j) || s.At(i, j) <= h0 + dh) continue;
       bool peak = true;
-      for (int dj = -r; dj <= r && peak; ++dj) {
-        for (int di = -r; di <= r && peak; ++di) {
-          if ((di == 0 && dj == 0) || di * di + dj * dj > r * r || !in(i + di, j + dj)) continue;
-          const double o = s.At(i + di, j + dj);
+      for (int64_t dj = -r; dj <= r && peak; ++dj) {
+        for (int64_t di = -r; di <= r && peak; ++di) {
+          if ((di == 0 && dj == 0) || di * di + dj * dj > r * r ||
+              !in(static_cast<int>(i + di), static_cast<int>(j + dj)))
+            continue;
+          const double o = s.At(static_cast<int>(i + di), static_cast<int>(j + dj));
           const bool earlier = dj < 0 || (dj == 0 && di < 0);
           if (o > s.At(i, j) || (o == s.At(i, j) && earlier)) peak = false;
         }
@@ -101,6 +116,28 @@ SurfaceMeasures MeasureSurface(const Heightfield& s, const std::vector<char>& in
     }
   }
   return m;
+}
+
+double ComparePeakTests(const Heightfield& dem, double d) {
+  const double side = 1.0 + dem.width + dem.height;
+  const double r = std::min(side, std::max(1.0, std::round(d / dem.cell)));
+  // Both surfaces (the DEM's and the grown one on its grid), every cell a candidate at worst.
+  return 2.0 * static_cast<double>(dem.width) * static_cast<double>(dem.height) * (2 * r + 1) *
+         (2 * r + 1);
+}
+
+Status CheckCompareCost(const Heightfield& dem, double d, const Budget& budget) {
+  const double tests = ComparePeakTests(dem, d);
+  const double seconds = kNsPerPeakTest * 1e-9 * tests;
+  if (seconds <= budget.seconds) return Status::Ok();
+  const double r = std::max(1.0, std::round(d / dem.cell));
+  return Status::Error("dem",
+                       "cells of " + FormatNumber(dem.cell) + " m under d = " + FormatNumber(d) +
+                           " m make each peak test look " + FormatCount(r) + " cells around (" +
+                           FormatCount(tests) + " cell tests, about " + FormatSeconds(seconds) +
+                           "); must take at most " + FormatSeconds(budget.seconds) + " (" +
+                           budget.seconds_limit + "); use coarser cells or a smaller d" +
+                           RaiseHint(budget.seconds_limit));
 }
 
 Comparison CompareTerrain(const Heightfield& dem, const Terrain& grown) {

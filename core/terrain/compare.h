@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "base/budget.h"
 #include "base/status.h"
 #include "terrain/contour.h"
 #include "terrain/heightfield.h"
@@ -52,5 +53,13 @@ SurfaceMeasures MeasureSurface(const Heightfield& surface, const std::vector<cha
 
 // The grown terrain sampled on the DEM's cells and both measured over the cells inside the seed.
 Comparison CompareTerrain(const Heightfield& dem, const Terrain& grown);
+
+// The peak search's cell tests at most (MeasureSurface: each cell against the disc of radius
+// r = round(d / cell) cells around it, twice): a DEM of small cells under a large d makes r huge.
+double ComparePeakTests(const Heightfield& dem, double d);
+// Those tests against the budget's seconds, before anything grows: ok, or {"dem", "cells of C m
+// under d = D m make each peak test look R cells around (T cell tests, about S s); must take at
+// most L s (limit); use coarser cells or a smaller d"}.
+Status CheckCompareCost(const Heightfield& dem, double d, const Budget& budget);
 
 }  // namespace niwa::terrain

@@ -51,6 +51,7 @@ struct GrowCounts {
   int dropped_rings = 0;           // rings the union could not make simple (never emitted)
   bool truncated = false;          // stopped at the level or vertex cap, or a budget
   double vertices_worked = 0;  // Σ vertices of shrunk contours and their children (budget work)
+  double sweep_tests = 0;      // Σ edge tests of the shrinks' union sweeps (terrain_budget.h)
   std::string truncated_by;    // the budget's line when one stopped the growth (terrain_budget)
   double ms_shrink = 0, ms_mpd = 0, ms_fd = 0, ms_loops = 0;
 };

@@ -1,12 +1,17 @@
-// RepairContour: §4.4 loop removal, else the union's largest ring (see contour_repair.h).
+// RepairContour: §4.4 loop removal, else the union's largest ring; FitContourToLink (see
+// contour_repair.h).
 #include "terrain/contour_repair.h"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "terrain/generate.h"
 #include "terrain/loops.h"
 #include "terrain/offset.h"
 #include "terrain/polygon.h"
+#include "terrain/terrain_state.h"
 
 namespace niwa::terrain {
 
@@ -47,6 +52,85 @@ Result<ContourRepair> RepairContour(const Ring& ring) {
   out.loops_removed = removed;
   out.reason = checked.status().Line();
   return out;
+}
+
+namespace {
+
+// Douglas-Peucker over the closed ring: kept[i] for the points whose chord error passes `tol`,
+// splitting at point 0 and the point farthest from it.
+Ring Simplify(const Ring& r, double tol) {
+  const std::size_t n = r.size();
+  if (n <= 4) return r;
+  std::size_t far = 1;
+  double best = -1;
+  for (std::size_t i = 1; i < n; ++i) {
+    const double dx = r[i].x - r[0].x, dy = r[i].y - r[0].y;
+    if (dx * dx + dy * dy > best) {
+      best = dx * dx + dy * dy;
+      far = i;
+    }
+  }
+  std::vector<char> keep(n, 0);
+  keep[0] = keep[far] = 1;
+  std::vector<std::pair<std::size_t, std::size_t>> spans = {{0, far}, {far, n}};
+  while (!spans.empty()) {
+    const auto [a, b] = spans.back();
+    spans.pop_back();
+    if (b <= a + 1) continue;
+    const Vec2& pa = r[a];
+    const Vec2& pb = r[b % n];
+    double worst = -1;
+    std::size_t at = a;
+    for (std::size_t i = a + 1; i < b; ++i) {
+      const double e = SegmentDistance(r[i], pa, pb);
+      if (e > worst) {
+        worst = e;
+        at = i;
+      }
+    }
+    if (worst > tol) {
+      keep[at] = 1;
+      spans.push_back({a, at});
+      spans.push_back({at, b});
+    }
+  }
+  Ring out;
+  for (std::size_t i = 0; i < n; ++i)
+    if (keep[i]) out.push_back(r[i]);
+  return out.size() >= 3 ? out : r;
+}
+
+}  // namespace
+
+LinkFit FitContourToLink(const Ring& ring, std::size_t max_chars) {
+  LinkFit fit;
+  fit.ring = ring;
+  if (ring.size() < 3 || EncodeContourPoints(ring).size() <= max_chars) return fit;
+  double x0 = ring[0].x, x1 = x0, y0 = ring[0].y, y1 = y0;
+  for (const Vec2& v : ring) {
+    x0 = std::min(x0, v.x);
+    x1 = std::max(x1, v.x);
+    y0 = std::min(y0, v.y);
+    y1 = std::max(y1, v.y);
+  }
+  const double span = std::max(x1 - x0, y1 - y0);
+  double q = 1.0 / 1024;
+  while (q * 2 <= span / 4096) q *= 2;
+  Ring snapped;
+  for (const Vec2& v : ring) {
+    const Vec2 s{std::round(v.x / q) * q, std::round(v.y / q) * q};
+    if (snapped.empty() || !(snapped.back() == s)) snapped.push_back(s);
+  }
+  while (snapped.size() > 3 && snapped.back() == snapped.front()) snapped.pop_back();
+  fit.changed = true;
+  fit.quantum = q;
+  fit.ring = snapped;
+  for (double tol = q; EncodeContourPoints(fit.ring).size() > max_chars && fit.ring.size() > 3;
+       tol *= 2) {
+    fit.ring = Simplify(snapped, tol);
+    fit.tolerance = tol;
+  }
+  return fit;
 }
 
 }  // namespace niwa::terrain

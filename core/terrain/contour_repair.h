@@ -3,8 +3,8 @@
 // longest run, as the generator untwists a perturbed contour), else the largest ring of the
 // positive-winding union. The page repairs a fresh drawing with it, `niwa terrain grow --repair`
 // the seed it is given, so a drawing grows the same mountain in both.
-// Does not: limit the points to what a link carries (terrain_state.h SetTerrainPoints), grow, or
-// change a contour that is already a valid seed.
+// Does not: grow, or change a contour that is already a valid seed (FitContourToLink, below,
+// shortens one that is too long for a link; SetTerrainPoints caps the points a link carries).
 #pragma once
 
 #include <string>
@@ -27,5 +27,19 @@ struct ContourRepair {
 // no area. Errors name "contour": CheckSeed's line when the points themselves are bad (fewer
 // than 3, too many, not finite), or "crosses itself and could not be repaired".
 Result<ContourRepair> RepairContour(const Ring& ring);
+
+// A contour made to fit a share link (issue 34: a drawn 2,000-point contour wrote a 32,618-
+// character link that no page could read back): when the text of its points (terrain_state.h
+// EncodeContourPoints) is longer than max_chars, its coordinates go onto a grid of `quantum`
+// metres (a power of two ≥ 1/1024 m near a 4096th of its span, so the repair's snapping keeps
+// them and their text is short), then points are dropped (Douglas-Peucker, its tolerance doubled
+// from the quantum) until the text fits. The result may cross itself (RepairContour after it).
+struct LinkFit {
+  Ring ring;
+  bool changed = false;  // false: the ring as given (it fitted)
+  double quantum = 0;    // the grid (m) when changed
+  double tolerance = 0;  // the Douglas-Peucker tolerance (m), 0 when no point was dropped
+};
+LinkFit FitContourToLink(const Ring& ring, std::size_t max_chars);
 
 }  // namespace niwa::terrain

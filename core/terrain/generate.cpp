@@ -8,7 +8,9 @@
 #include <string>
 #include <unordered_map>
 
+#include "base/budget.h"
 #include "math/det_math.h"
+#include "params/param_text.h"
 #include "run/study_run.h"
 #include "terrain/fourier.h"
 #include "terrain/loops.h"
@@ -33,12 +35,15 @@ double EdgeLen(const Vec2& a, const Vec2& b) {
   return std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
 }
 
-void SplitEdge(const Vec2& a, const Vec2& b, double d0, double d2, double tmin, double tmax,
-               Pcg32* rng, int depth, Ring* out) {
+// False once `out` holds max_points (the splitting stops there: midpoint displacement at θ ≥ 60°
+// doubles the points at every level, generate.h).
+bool SplitEdge(const Vec2& a, const Vec2& b, double d0, double d2, double tmin, double tmax,
+               Pcg32* rng, int depth, std::size_t max_points, Ring* out) {
   const double len = EdgeLen(a, b);
   if (len < 2.0 * d0 || depth > 40) {
+    if (out->size() >= max_points) return false;
     out->push_back(a);
-    return;
+    return true;
   }
   const double l = 0.5 * len;
   const double theta = rng->Uniform(tmin, tmax);
@@ -46,8 +51,8 @@ void SplitEdge(const Vec2& a, const Vec2& b, double d0, double d2, double tmin, 
   const double delta = MidpointDelta(l, theta, d2);
   const Vec2 n{-(b.y - a.y) / len, (b.x - a.x) / len};
   const Vec2 m{0.5 * (a.x + b.x) + side * delta * n.x, 0.5 * (a.y + b.y) + side * delta * n.y};
-  SplitEdge(a, m, d0, d2, tmin, tmax, rng, depth + 1, out);
-  SplitEdge(m, b, d0, d2, tmin, tmax, rng, depth + 1, out);
+  return SplitEdge(a, m, d0, d2, tmin, tmax, rng, depth + 1, max_points, out) &&
+         SplitEdge(m, b, d0, d2, tmin, tmax, rng, depth + 1, max_points, out);
 }
 
 // A perturbed ring made simple: as is, untwisted (§4.4), or by the positive-winding union.
@@ -95,18 +100,26 @@ std::vector<Ring> MakeSimple(const Ring& ring, const TerrainParams& p, GrowCount
   return out;
 }
 
-// The method's perturbation of one freshly shrunk ring (§4.1-4.3 steps 1.2-1.3).
-std::vector<Ring> Perturb(const Ring& shrunk, const TerrainParams& p, double d0, Pcg32* rng,
-                          GrowCounts* counts) {
+// The method's perturbation of one freshly shrunk ring (§4.1-4.3 steps 1.2-1.3); the midpoint
+// displacement makes at most max_points points, else the error (MidpointOverflow).
+Result<std::vector<Ring>> Perturb(const Ring& shrunk, const TerrainParams& p, double d0, Pcg32* rng,
+                                  std::size_t max_points, const std::string& what,
+                                  GrowCounts* counts) {
   const int method = p.GetInt(P::kMethod);
-  if (method == static_cast<int>(Method::kSimple)) return {shrunk};
+  if (method == static_cast<int>(Method::kSimple)) return std::vector<Ring>{shrunk};
   const double d = p.Get(P::kD);
   Ring r = shrunk;
   if (method == static_cast<int>(Method::kMidpoint) ||
       method == static_cast<int>(Method::kImproved)) {
     const auto t0 = std::chrono::steady_clock::now();
-    r = MidpointDisplace(r, d0, p.Get(P::kD2) * d, p.Get(P::kThetaMin), p.Get(P::kThetaMax), rng);
+    std::optional<Ring> displaced = MidpointDisplace(r, d0, p.Get(P::kD2) * d, p.Get(P::kThetaMin),
+                                                     p.Get(P::kThetaMax), rng, max_points);
     counts->ms_mpd += Ms(t0);
+    if (!displaced) {
+      return MidpointOverflow(d0, p.Get(P::kD2) * d, p.Get(P::kThetaMax),
+                              static_cast<double>(max_points), what);
+    }
+    r = std::move(*displaced);
   }
   if (method == static_cast<int>(Method::kFourier) ||
       method == static_cast<int>(Method::kImproved)) {
@@ -136,13 +149,28 @@ double MidpointDelta(double l, double theta_deg, double d2) {
   return std::min(d2, std::fabs(l * s / c));
 }
 
-Ring MidpointDisplace(const Ring& ring, double d0, double d2, double tmin, double tmax,
-                      Pcg32* rng) {
+std::optional<Ring> MidpointDisplace(const Ring& ring, double d0, double d2, double tmin,
+                                     double tmax, Pcg32* rng, std::size_t max_points) {
   Ring out;
   const std::size_t n = ring.size();
   for (std::size_t i = 0; i < n; ++i)
-    SplitEdge(ring[i], ring[(i + 1) % n], d0, d2, tmin, tmax, rng, 0, &out);
+    if (!SplitEdge(ring[i], ring[(i + 1) % n], d0, d2, tmin, tmax, rng, 0, max_points, &out))
+      return std::nullopt;
   return out;
+}
+
+Status MidpointOverflow(double d0, double d2, double theta_max_deg, double max_points,
+                        const std::string& what) {
+  // Halves as long as their edge: θ ≥ 60° (tan θ ≥ √3) with d'' ≥ √3·d0 (generate.h).
+  const bool endless = theta_max_deg >= 60 && d2 >= std::sqrt(3.0) * d0;
+  return Status::Error(
+      "theta_max", FormatNumber(theta_max_deg) + ": midpoint displacement would make more than " +
+                       FormatCount(max_points) + " points on one contour (" + what + ")" +
+                       (endless ? "; at θ ≥ 60° with d'' = " + FormatNumber(d2) + " m ≥ √3·d0 = " +
+                                      FormatNumber(std::round(std::sqrt(3.0) * d0 * 100) / 100) +
+                                      " m a split edge is no shorter than its parent"
+                                : std::string()) +
+                       "; must be below 60, or lower d2");
 }
 
 namespace {
@@ -330,7 +358,15 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, const TerrainG
         if (!t.counts.truncated_by.empty()) break;
       }
       ShrinkCounts sc;
+      if (limits != nullptr)
+        sc.max_sweep_tests = SweepTestsLeft(*limits, work, t.counts.sweep_tests);
       std::vector<Ring> rs = Shrink(cur, out, &sc);
+      t.counts.sweep_tests += sc.sweep_tests;
+      if (sc.stopped) {
+        t.counts.truncated_by =
+            SweepStoppedLine(cur, sc.max_sweep_tests, *limits, -k - 1, p.GetInt(P::kMaxLevels));
+        break;
+      }
       work.vertices_worked += static_cast<double>(cur.size());
       for (const Ring& r : rs) work.vertices_worked += static_cast<double>(r.size());
       t.counts.holes_filled += sc.holes_filled;
@@ -385,7 +421,21 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, const TerrainG
     }
     const auto t0 = std::chrono::steady_clock::now();
     ShrinkCounts sc;
+    if (limits != nullptr) sc.max_sweep_tests = SweepTestsLeft(*limits, work, t.counts.sweep_tests);
     std::vector<Ring> shrunk = Shrink(parent, so, &sc);
+    t.counts.sweep_tests += sc.sweep_tests;
+    if (sc.stopped) {
+      // The seed's own first shrink: nothing could grow, so the seed's shape is refused.
+      if (level == 1 && t.contours.size() == static_cast<std::size_t>(down) + 1) {
+        return Status::Error("contour", "the seed's first shrink stopped: " +
+                                            SweepStoppedWhy(parent, sc.max_sweep_tests, *limits) +
+                                            "; simplify the contour" +
+                                            RaiseHint(limits->seconds_limit));
+      }
+      t.counts.truncated_by =
+          SweepStoppedLine(parent, sc.max_sweep_tests, *limits, level, max_levels);
+      break;
+    }
     t.counts.cleaned_points += sc.cleaned_points;
     t.counts.holes_filled += sc.holes_filled;
     t.counts.dropped_rings += sc.dropped_rings;
@@ -395,8 +445,33 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, const TerrainG
     if (shrunk.empty()) continue;
     // One RNG stream per contour, from the seed and the parent's index (order-independent).
     Pcg32 rng(rng_seed, static_cast<uint64_t>(at) * 2654435761ULL + 1);
+    // The midpoint displacement's room: what the budget leaves after the contours kept and the
+    // vertices worked (the children's transient copies and their shrink), or the hard cap.
+    std::size_t max_points = kMaxMidpointPoints;
+    std::string what = "the most one contour may have";
+    if (limits != nullptr) {
+      double room = static_cast<double>(kMaxMidpointPoints);
+      if (limits->max_bytes >= 0 && limits->transient_bytes_per_vertex > 0) {
+        const double bytes = (limits->max_bytes - limits->base_bytes -
+                              limits->bytes_per_vertex * work.vertices_held) /
+                             limits->transient_bytes_per_vertex;
+        if (bytes < room) what = "what " + limits->memory_limit + " leaves";
+        room = std::min(room, bytes);
+      }
+      if (limits->max_seconds >= 0 && limits->seconds_per_vertex > 0) {
+        const double worked =
+            limits->max_seconds / limits->seconds_per_vertex - work.vertices_worked;
+        if (worked < room) what = "what " + limits->seconds_limit + " leaves";
+        room = std::min(room, worked);
+      }
+      max_points = static_cast<std::size_t>(std::max(0.0, std::floor(room)));
+    }
     std::vector<std::vector<Ring>> groups;
-    for (const Ring& r : shrunk) groups.push_back(Perturb(r, p, d0, &rng, &t.counts));
+    for (const Ring& r : shrunk) {
+      Result<std::vector<Ring>> g = Perturb(r, p, d0, &rng, max_points, what, &t.counts);
+      if (!g.ok()) return g.status();
+      groups.push_back(std::move(g).value());
+    }
     // Perturbed rings must lie inside the parent and apart from their siblings; offenders go back
     // to the unperturbed shrink (which is both), until none is left.
     const IRing gp = ToGrid(parent);

@@ -4,7 +4,10 @@
 // build surfaces (heightfield.h) or read files (contour_io.h).
 #pragma once
 
+#include <cstddef>
 #include <functional>
+#include <optional>
+#include <string>
 
 #include "base/status.h"
 #include "random/pcg32.h"
@@ -23,10 +26,20 @@ constexpr std::size_t kMaxContours = 100000;
 // the error names "contour" and what is allowed.
 Result<Ring> CheckSeed(const Ring& seed);
 
+// Points one midpoint displacement makes at most when no budget gives fewer (128 MB of points).
+constexpr std::size_t kMaxMidpointPoints = std::size_t{8} << 20;
 // §4.1 (Fig 12): every edge ≥ 2·d0 is split at its midpoint displaced by s·min(d'', |l·tan θ|)
 // along its normal (s = ±1, θ ~ U(θmin, θmax) degrees), recursively, until all edges are < 2·d0.
-Ring MidpointDisplace(const Ring& ring, double d0, double d2, double theta_min_deg,
-                      double theta_max_deg, Pcg32* rng);
+// A split halves an edge only while θ < 60°: with θ ≥ 60° and d'' ≥ √3·d0 the halves of an edge
+// near 2·d''/√3 are as long as it, and the splitting doubles the points at each of its 41 levels.
+// So it stops once the ring would pass max_points: then nullopt (the caller refuses the run).
+std::optional<Ring> MidpointDisplace(const Ring& ring, double d0, double d2, double theta_min_deg,
+                                     double theta_max_deg, Pcg32* rng,
+                                     std::size_t max_points = kMaxMidpointPoints);
+// The line of a midpoint displacement that passed `max_points` (`what`: the limit it came from,
+// e.g. "what --max-memory leaves"), under the field "theta_max".
+Status MidpointOverflow(double d0, double d2, double theta_max_deg, double max_points,
+                        const std::string& what);
 // δ of Fig 12 for an edge of length 2l: min(d'', |l·tan θ|).
 double MidpointDelta(double l, double theta_deg, double d2);
 

@@ -169,6 +169,15 @@ IRing CleanRing(IRing r) {
 
 std::vector<Ring> UnionOnce(const std::vector<IRing>& paths, ShrinkCounts* counts, int depth);
 
+// Counts `tests` edge tests of the sweep; true (and counts->stopped) once past the limit.
+bool OverSweepBudget(std::size_t tests, ShrinkCounts* counts) {
+  if (counts == nullptr) return false;
+  counts->sweep_tests += static_cast<double>(tests);
+  if (counts->max_sweep_tests < 0 || counts->sweep_tests <= counts->max_sweep_tests) return false;
+  counts->stopped = true;
+  return true;
+}
+
 std::vector<Ring> UnionOnce(const std::vector<IRing>& paths, ShrinkCounts* counts, int depth) {
   std::vector<Seg> segs;
   for (const IRing& p : paths)
@@ -221,6 +230,7 @@ std::vector<Ring> UnionOnce(const std::vector<IRing>& paths, ShrinkCounts* count
       const int64_t my2 = e.a.y + e.b.y;
       const int64_t my = my2 >= 0 ? my2 / 2 : -((-my2 + 1) / 2);  // floor
       const std::size_t s = strip_of(my);
+      if (OverSweepBudget(bucket[s].size(), counts)) return {};
       const int w = WindingBeside(edges, bucket[s], i, false);
       if (dy > 0) {
         right = w;
@@ -230,6 +240,7 @@ std::vector<Ring> UnionOnce(const std::vector<IRing>& paths, ShrinkCounts* count
         right = w - e.weight;
       }
     } else {
+      if (OverSweepBudget(all.size(), counts)) return {};
       const int w = WindingBeside(edges, all, i, true);
       if (dx > 0) {
         left = w;
@@ -293,6 +304,7 @@ std::vector<Ring> UnionOnce(const std::vector<IRing>& paths, ShrinkCounts* count
     if (!IsSimple(ring)) {
       if (depth < 2) {
         std::vector<Ring> again = UnionOnce({ring}, counts, depth + 1);
+        if (counts != nullptr && counts->stopped) return {};
         result.insert(result.end(), again.begin(), again.end());
       } else if (counts) {
         ++counts->dropped_rings;
@@ -513,6 +525,7 @@ std::vector<Ring> Shrink(const Ring& ring, const ShrinkOptions& o, ShrinkCounts*
     paths.push_back(RawOffsetPath(r, o));
   }
   std::vector<Ring> rings = PositiveUnion(paths, counts);
+  if (counts != nullptr && counts->stopped) return {};
   // Slivers the rounding onto the grid can leave (area below 1e-4·d²) are dropped and counted.
   const IRing g = ToGrid(r);
   std::vector<Ring> out;

@@ -32,6 +32,12 @@ struct ShrinkCounts {
   int cleaned_points = 0;
   int holes_filled = 0;
   int dropped_rings = 0;
+  // The union sweep's edge tests (each sloped edge against its strip, each horizontal edge
+  // against all: quadratic for a comb), and the most allowed (< 0: no limit). Past it the union
+  // stops at once with `stopped` and no rings: a budget counted, so both builds stop alike.
+  double sweep_tests = 0;
+  double max_sweep_tests = -1;
+  bool stopped = false;
 };
 
 // The join point P of Fig 7 for a reflex vertex V with left unit normals n1, n2 of its edges.

@@ -99,8 +99,15 @@ Result<ShrinkTrace> TraceShrink(const Ring& seed, const ShrinkTraceOptions& o) {
   std::vector<Ring> input{trace.seed};
   if (o.displace) {  // paper §4.1, Fig 12
     Pcg32 rng(o.rng_seed);
-    trace.displaced =
-        Normalise(MidpointDisplace(trace.seed, o.d0, o.d2, o.theta_min_deg, o.theta_max_deg, &rng));
+    // A figure's displaced seed holds at most what a figure takes (kMaxTracePoints).
+    std::optional<Ring> displaced = MidpointDisplace(trace.seed, o.d0, o.d2, o.theta_min_deg,
+                                                     o.theta_max_deg, &rng, kMaxTracePoints);
+    if (!displaced) {
+      const Status s = MidpointOverflow(
+          o.d0, o.d2, o.theta_max_deg, static_cast<double>(kMaxTracePoints), "what a figure takes");
+      return Status::Error("theta", s.message());
+    }
+    trace.displaced = Normalise(*displaced);
     for (const Vec2& p : trace.displaced)
       trace.max_displacement = std::max(trace.max_displacement, RingDistance(trace.seed, p));
     if (!IsSimple(ToGrid(trace.displaced)))

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "terrain/polygon.h"
 
@@ -26,6 +27,10 @@ constexpr double kNsPerVertex = 10000;
 // marks and heap, where it raises cells, stay under the same figure (tested on valleys).
 constexpr double kBytesPerCell = 36, kBytesPerGridVertex = 48;
 constexpr double kNsPerCell = 600, kNsPerGridVertex = 400;
+// One edge test of the union sweep (WindingBeside), with the sweep's other per-test work: 7 to 15
+// ns on the combs of docs/budgets.md (native release, a loaded 2-core host), twice the slowest
+// (26 ns was seen under four parallel builds).
+constexpr double kNsPerSweepTest = 30;
 
 double Vertices(const Terrain& t) {
   double n = 0;
@@ -62,6 +67,7 @@ TerrainGrowLimits TerrainLimits(const TerrainParams& params, const Budget& budge
   l.bytes_per_vertex = kBytesPerVertex;
   l.transient_bytes_per_vertex = kTransientBytesPerVertex;
   l.seconds_per_vertex = kNsPerVertex * 1e-9;
+  l.seconds_per_sweep_test = kNsPerSweepTest * 1e-9;
   l.memory_limit = budget.memory_limit;
   l.seconds_limit = budget.seconds_limit;
   return l;
@@ -114,6 +120,26 @@ std::string CheckTerrainContour(const Ring& parent, double d0, const TerrainPara
   return "";
 }
 
+double SweepTestsLeft(const TerrainGrowLimits& l, const TerrainWork& work, double so_far) {
+  if (l.max_seconds < 0 || !(l.seconds_per_sweep_test > 0)) return -1;
+  const double seconds = l.max_seconds - l.seconds_per_vertex * work.vertices_worked;
+  return std::max(0.0, seconds / l.seconds_per_sweep_test - so_far);
+}
+
+std::string SweepStoppedLine(const Ring& parent, double allowed, const TerrainGrowLimits& l,
+                             int level, int max_levels) {
+  return TruncatedLine(
+      l.seconds_limit, "at level " + std::to_string(level) + " of " + std::to_string(max_levels),
+      SweepStoppedWhy(parent, allowed, l), kTerrainGrowChange + RaiseHint(l.seconds_limit));
+}
+
+std::string SweepStoppedWhy(const Ring& parent, double allowed, const TerrainGrowLimits& l) {
+  return "shrinking a contour of " + FormatCount(static_cast<double>(parent.size())) +
+         " points needs more than the " + FormatCount(allowed) + " edge tests of its union sweep " +
+         "that " + l.seconds_limit +
+         " leaves (edges side by side across its height, as a comb's teeth)";
+}
+
 bool GrowFitsLimits(const Terrain& t, const TerrainParams& params, const TerrainGrowLimits& l) {
   if (t.contours.empty()) return true;
   // Grow's d0: the seed's mean edge (the down chain's checks use 0, which asks less).
@@ -131,6 +157,58 @@ bool GrowFitsLimits(const Terrain& t, const TerrainParams& params, const Terrain
       return false;
   }
   return true;
+}
+
+double ShrinkSweepTests(const Ring& ring) {
+  const std::size_t n = ring.size();
+  if (n < 2) return 0;
+  double y0 = ring[0].y, y1 = y0;
+  for (const Vec2& v : ring) {
+    y0 = std::min(y0, v.y);
+    y1 = std::max(y1, v.y);
+  }
+  // As UnionOnce: √E strips over [y0, y1]; an edge is in every strip its y range touches.
+  const std::size_t strips =
+      std::max<std::size_t>(1, static_cast<std::size_t>(std::sqrt(static_cast<double>(n))));
+  const double span = y1 - y0;
+  auto strip_of = [&](double y) -> std::size_t {
+    if (!(span > 0)) return 0;
+    const double f = (y - y0) / span * static_cast<double>(strips);
+    return std::min(strips - 1, static_cast<std::size_t>(std::max(0.0, f)));
+  };
+  std::vector<double> starts(strips + 1, 0);  // a difference array of the strips' edge counts
+  double horizontal = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& a = ring[i];
+    const Vec2& b = ring[(i + 1) % n];
+    if (a.y == b.y) ++horizontal;
+    starts[strip_of(std::min(a.y, b.y))] += 1;
+    starts[strip_of(std::max(a.y, b.y)) + 1] -= 1;
+  }
+  std::vector<double> count(strips, 0);
+  double running = 0;
+  for (std::size_t s = 0; s < strips; ++s) count[s] = running += starts[s];
+  double tests = horizontal * static_cast<double>(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& a = ring[i];
+    const Vec2& b = ring[(i + 1) % n];
+    if (a.y != b.y) tests += count[strip_of(0.5 * (a.y + b.y))];
+  }
+  return tests;
+}
+
+Status CheckSeedShape(const Ring& seed, const Budget& budget) {
+  const double tests = ShrinkSweepTests(seed);
+  const double seconds = kNsPerSweepTest * 1e-9 * tests;
+  if (seconds <= budget.seconds) return Status::Ok();
+  return Status::Error(
+      "contour", FormatCount(static_cast<double>(seed.size())) +
+                     " points whose shape needs about " + FormatSeconds(seconds) +
+                     " to shrink once (" + FormatCount(tests) +
+                     " edge tests: many edges side by side across its height, as a comb's teeth); "
+                     "must take at most " +
+                     FormatSeconds(budget.seconds) + " (" + budget.seconds_limit +
+                     "); simplify the contour" + RaiseHint(budget.seconds_limit));
 }
 
 Estimate EstimateTerrainGrown(const Terrain& t, const TerrainGrowLimits& l) {

@@ -23,7 +23,8 @@ struct TerrainGrowLimits {
   double max_bytes = -1, max_seconds = -1;
   double base_bytes = 0, bytes_per_vertex = 0, transient_bytes_per_vertex = 0;
   double seconds_per_vertex = 0;
-  double growth = 2;  // children's vertices per parent vertex, at most (a margin)
+  double seconds_per_sweep_test = 0;  // a shrink's union sweep (ShrinkSweepTests)
+  double growth = 2;                  // children's vertices per parent vertex, at most (a margin)
   std::string memory_limit = "--max-memory", seconds_limit = "--max-seconds";
 };
 
@@ -43,11 +44,31 @@ std::string CheckTerrainContour(const Ring& parent, double d0, const TerrainPara
                                 const TerrainWork& work, const TerrainGrowLimits& limits,
                                 int level);
 
+// The union sweep edge tests the next shrink may make (offset.h ShrinkCounts::max_sweep_tests),
+// what the seconds left after the vertices worked and the tests made so far allow; −1: no limit.
+double SweepTestsLeft(const TerrainGrowLimits& limits, const TerrainWork& work,
+                      double sweep_tests_so_far);
+// The line of a shrink whose sweep passed SweepTestsLeft (at level `level` of at most max_levels).
+std::string SweepStoppedLine(const Ring& parent, double allowed, const TerrainGrowLimits& limits,
+                             int level, int max_levels);
+// Its reason alone ("shrinking a contour of N points needs more than ..."), for the seed's refusal.
+std::string SweepStoppedWhy(const Ring& parent, double allowed, const TerrainGrowLimits& limits);
+
 // True when every check Grow made for `terrain` passes under `limits` too, by an upper bound (the
 // final vertices held and worked with each contour's worst case): growing it again within them
 // gives the same contours (TerrainRun keeps them when only res, which shares the budget, changed).
 bool GrowFitsLimits(const Terrain& terrain, const TerrainParams& params,
                     const TerrainGrowLimits& limits);
+
+// The work of one shrink's union sweep over `ring` (offset.cpp UnionOnce): each sloped edge tests
+// the edges of its horizontal strip (√E strips over the ring's height), each horizontal edge every
+// edge. Shape decides it: a round contour's strips hold about 2√E edges, a comb's hold every tooth
+// (E²/2). Counted from the ring alone, in O(E), before any shrink.
+double ShrinkSweepTests(const Ring& ring);
+// The seed's first shrink against the budget's seconds, before anything grows: ok, or
+// {"contour", "N edges whose shape needs about T s to shrink once (S edge tests); must take at most
+// L s (limit); ..."}.
+Status CheckSeedShape(const Ring& seed, const Budget& budget);
 
 // The grown contours' estimate (what Grow's checks counted).
 Estimate EstimateTerrainGrown(const Terrain& terrain, const TerrainGrowLimits& limits);

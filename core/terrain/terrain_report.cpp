@@ -1,6 +1,8 @@
 // TerrainStatsJson: the one list of the terrain's stats keys.
 #include "terrain/terrain_report.h"
 
+#include <cstdint>
+
 #include "terrain/terrain_params.h"
 
 namespace niwa::terrain {
@@ -10,7 +12,8 @@ nlohmann::json TerrainStatsJson(const TerrainState& state, const Terrain& terrai
   const TerrainParams& params = state.params;
   nlohmann::json j;
   j["method"] = MethodName(params.GetInt(TerrainParam::kMethod));
-  j["seed"] = params.GetInt(TerrainParam::kSeed);
+  // A whole number in [0, 2^32 − 1] (the row's range): int would not hold it.
+  j["seed"] = static_cast<uint64_t>(params.Get(TerrainParam::kSeed));
   j["levels"] = s.levels;
   j["contours"] = s.contours;
   j["peaks"] = s.peaks;

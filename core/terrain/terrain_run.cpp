@@ -69,6 +69,8 @@ Result<Ring> TerrainRun::Check(const TerrainState& state) const {
   NIWA_RETURN_IF_ERROR(
       CheckEstimate(EstimateHeightfield(Terrain{}, {side, side}), budget_, Change()));
   NIWA_RETURN_IF_ERROR(CheckTerrainParams(state.params));
+  // A seed whose shape makes even its first shrink too slow (a comb), refused before it starts.
+  NIWA_RETURN_IF_ERROR(CheckSeedShape(*seed, budget_));
   return seed;
 }
 

@@ -166,7 +166,7 @@ std::string TerrainStateJson(const TerrainState& state) {
 void ApplyTerrainHash(std::string_view hash, std::string_view prefix, TerrainState* state,
                       std::vector<std::string>* notices) {
   const std::string pre(prefix);
-  HashPairs pairs = SplitHash(hash);
+  HashPairs pairs = SplitHash(hash, notices);  // too long or a repeated key: nothing, a notice
   // The seed and the preset first, so the parameters go on top of them whatever their order.
   for (const auto& [key, value] : pairs) {
     if (key == pre + "builtin") {
@@ -198,6 +198,15 @@ void ApplyTerrainHash(std::string_view hash, std::string_view prefix, TerrainSta
   }
 }
 
+std::string EncodeContourPoints(const Ring& points) {
+  std::string out;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i > 0) out += ';';
+    out += FormatNumber(points[i].x) + "," + FormatNumber(points[i].y);
+  }
+  return out;
+}
+
 std::string EncodeTerrainHash(const TerrainState& state, std::string_view prefix) {
   const std::string pre(prefix);
   std::string out;
@@ -205,11 +214,7 @@ std::string EncodeTerrainHash(const TerrainState& state, std::string_view prefix
   if (!state.builtin.empty()) {
     out += pre + "builtin=" + state.builtin;
   } else {
-    out += pre + "contour=";
-    for (std::size_t i = 0; i < state.points.size(); ++i) {
-      if (i > 0) out += ';';
-      out += FormatNumber(state.points[i].x) + "," + FormatNumber(state.points[i].y);
-    }
+    out += pre + "contour=" + EncodeContourPoints(state.points);
   }
   Result<TerrainParams> base = BaseParams(state.preset, state.builtin);
   out += EncodeChangedParams(state.params, base.ok() ? *base : TerrainParams(), prefix);

@@ -16,6 +16,9 @@ namespace niwa::terrain {
 
 // Most seed points a hash or state JSON carries (a longer contour goes in a file: --contour).
 constexpr std::size_t kMaxStatePoints = 2000;
+// Longest text of a link's contour=... points: the link's limit (io/hash_codec.h kMaxHashLength,
+// 16,384) less room for the preset and every changed row (contour_repair.h FitContourToLink).
+constexpr std::size_t kMaxLinkContourChars = 15360;
 
 struct TerrainState {
   std::string preset;            // "" (the table's defaults), a method or a figure preset name
@@ -52,6 +55,9 @@ void ApplyTerrainHash(std::string_view hash, std::string_view prefix, TerrainSta
                       std::vector<std::string>* notices);
 // preset, builtin or contour (each coordinate as its shortest round-trip text), and the
 // parameters that differ from BaseParams: ApplyTerrainHash of it gives the same state, bit for bit.
+// "x,y;x,y;..." of a contour's points, each coordinate as its shortest round-trip text (the
+// contour= value EncodeTerrainHash writes).
+std::string EncodeContourPoints(const Ring& points);
 std::string EncodeTerrainHash(const TerrainState& state, std::string_view prefix = "");
 
 }  // namespace niwa::terrain

@@ -39,7 +39,7 @@ await runBrowserTest(async (server, browser) => {
   await page.goto(`${server.url}index.html#preset=binary&years=3&seed=1&seed=2`);
   await waitReady(page, 0);
   lines = await noticeLines(page);
-  check('a repeated hash key gives a notice naming it', lines.includes('seed: given 2 times; the last value is used'),
+  check('a repeated hash key refuses the link with a notice naming it', lines.includes('seed: given 2 times; must be given once, nothing was read'),
     JSON.stringify(lines));
 
   // The grove: one bad wind value, one injected value (hybrid mode: a full-mode frame of the grove takes

@@ -48,7 +48,7 @@ const cases = [
   [[...grow, '--params', join(dir, 'both.json')], `--params ${join(dir, 'both.json')}: alpha_t: beside a "params" object; put every parameter inside "params"`],
   [['tree', 'sway', '--preset', 'binary', '--params', join(dir, 'gust.json')], '--params: gust_off: 6.5 must be greater than gust_on (7)'],
   [['tree', 'grow', '--url', `years=1${'0'.repeat(16400)}`], '--url: hash: 16407 characters; the limit is 16384, nothing was read'],
-  [['tree', 'grow', '--url', 'seed=1&seed=2'], '--url: seed: given 2 times; the last value is used'],
+  [['tree', 'grow', '--url', 'seed=1&seed=2'], '--url: seed: given 2 times; must be given once, nothing was read'],
   [['tree', 'render-stats', '--cam', '1e39,0.3,10,0,0,0'], "--cam: '1e39' is not a number; must be yaw,pitch,distance,tx,ty,tz"],
   [['tree', 'render-stats', '--target', '1e39,0,0'], "--target: '1e39,0,0' must be three numbers x,y,z, each in [-10000, 10000] (metres)"],
   [[...grow, '--out', 'a\x1b[31mb.zzz'], "--out: 'a\\x1b[31mb.zzz' must end in .glb, .json or .svg"],

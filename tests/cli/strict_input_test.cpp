@@ -133,7 +133,7 @@ TEST(StrictInput, HashesHaveAMaximumAndRepeatedKeysAreErrors) {
   ExpectOneLineError(RunNiwa({"tree", "grow", "--url", long_hash}),
                      "--url: hash: 16405 characters; the limit is 16384, nothing was read");
   ExpectOneLineError(RunNiwa({"tree", "grow", "--url", "seed=1&years=2&seed=3"}),
-                     "--url: seed: given 2 times; the last value is used");
+                     "--url: seed: given 2 times; must be given once, nothing was read");
   ExpectOneLineError(RunNiwa({"ivy", "grow", "--url", "steps=1&steps=2"}),
                      "--url: steps: given 2 times");
   EXPECT_EQ(RunNiwa({"tree", "grow", "--url", "preset=binary&years=3&prune=1:b1&prune=2:b1"}).code,

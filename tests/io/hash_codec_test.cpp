@@ -37,13 +37,22 @@ TEST(HashCodec, HashOverTheMaximumIsRefusedNotCut) {
   EXPECT_EQ(notices[0], "hash: 16385 characters; the limit is 16384, nothing was read");
 }
 
-TEST(HashCodec, RepeatedKeysAreNamedOnceUnlessRepeatable) {
+// Issue 34: a repeated key refuses the whole link (it used to be read with "the last value is
+// used", so a page took what the CLI refused); repeatable keys (the tree's prunes) may repeat.
+TEST(HashCodec, RepeatedKeysRefuseTheLinkUnlessRepeatable) {
   std::vector<std::string> notices;
   HashPairs pairs =
       SplitHash("seed=1&years=2&seed=3&prune=1:b2&prune=2:b3&seed=4", &notices, {"prune"});
-  EXPECT_EQ(pairs.size(), 6u);
+  EXPECT_TRUE(pairs.empty());
   ASSERT_EQ(notices.size(), 1u);
-  EXPECT_EQ(notices[0], "seed: given 3 times; the last value is used");
+  EXPECT_EQ(notices[0], "seed: given 3 times; must be given once, nothing was read");
+  notices.clear();
+  EXPECT_TRUE(SplitHash("builtin=disk&builtin=lobes7&d=5&d=50", &notices).empty());
+  ASSERT_EQ(notices.size(), 2u);
+  EXPECT_EQ(notices[1], "d: given 2 times; must be given once, nothing was read");
+  notices.clear();
+  EXPECT_EQ(SplitHash("years=2&prune=1:b2&prune=2:b3", &notices, {"prune"}).size(), 3u);
+  EXPECT_TRUE(notices.empty());
 }
 
 // Decoded values written back are encoded again: "5&mode=full" cannot become a key of its own.

@@ -1,7 +1,7 @@
 // RepairContour (core/terrain/contour_repair.h): a valid seed comes back as given, a contour with a
 // small self-crossing loop is cut by §4.4 method 2 into a valid seed, a bow-tie is repaired to a
 // valid seed, bad points are CheckSeed's error; and `niwa terrain grow --repair` grows the repaired
-// seed (the one the page's drawing becomes).
+// seed (the one the page's drawing becomes); FitContourToLink makes a drawn contour fit its link.
 #include "terrain/contour_repair.h"
 
 #include <gtest/gtest.h>
@@ -11,9 +11,11 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "io/hash_codec.h"
 #include "support/cli_runner.h"
 #include "terrain/generate.h"
 #include "terrain/polygon.h"
+#include "terrain/seeds.h"
 #include "terrain/terrain_state.h"
 
 namespace niwa::terrain {
@@ -90,6 +92,37 @@ TEST(ContourRepair, TheCliGrowsTheRepairedSeedWithRepair) {
   EXPECT_TRUE(notices.empty());
   EXPECT_EQ(state.points, RepairContour(Kinked())->ring);
   std::remove(file.c_str());
+}
+
+// Issue 34: a drawn 2,000-point contour wrote a 32,618-character link, over the page's own 16,384
+// limit. Fitted, its link fits and reads back to the same points, and it is still a valid seed.
+TEST(FitContourToLink, ADrawnTwoThousandPointContourFitsItsLinkAndReadsBack) {
+  Ring drawn;
+  for (int i = 0; i < 2000; ++i) {
+    const double a = 2 * 3.14159265358979323846 * i / 2000;
+    const double r = 300 + 40 * std::sin(7 * a) + 3 * std::sin(53 * a);
+    drawn.push_back({r * std::cos(a) + 0.123456789, r * std::sin(a) - 0.987654321});
+  }
+  TerrainState state;
+  ASSERT_TRUE(SetTerrainPoints(drawn, &state).ok());
+  ASSERT_GT(EncodeTerrainHash(state).size(), kMaxHashLength);  // what the page wrote before
+  const LinkFit fit = FitContourToLink(drawn, kMaxLinkContourChars);
+  ASSERT_TRUE(fit.changed);
+  EXPECT_LE(EncodeContourPoints(fit.ring).size(), kMaxLinkContourChars);
+  EXPECT_GT(fit.ring.size(), 500u);  // thinned, not gutted
+  ASSERT_TRUE(CheckSeed(fit.ring).ok());
+  ASSERT_TRUE(SetTerrainPoints(fit.ring, &state).ok());
+  ASSERT_TRUE(state.params.Set(TerrainParam::kSeed, 4294967295.0).ok());
+  const std::string hash = EncodeTerrainHash(state);
+  EXPECT_LE(hash.size(), kMaxHashLength);
+  TerrainState back;
+  std::vector<std::string> notices;
+  ApplyTerrainHash(hash, "", &back, &notices);
+  EXPECT_TRUE(notices.empty()) << notices[0];
+  EXPECT_EQ(back.points, fit.ring);
+  EXPECT_EQ(EncodeTerrainHash(back), hash);
+  // A contour that fits is left as it is.
+  EXPECT_FALSE(FitContourToLink(*BuiltinSeed("lobes7"), kMaxLinkContourChars).changed);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "io/gltf_writer.h"
 #include "support/alloc_meter.h"
+#include "terrain/compare.h"
 #include "terrain/contour_io.h"
 #include "terrain/generate.h"
 #include "terrain/heightfield.h"
@@ -159,6 +160,103 @@ TEST(TerrainBudget, TimeBudgetStopsAtAContourWithTheLine) {
   EXPECT_EQ(cut->counts.truncated_by.rfind("--max-seconds: stopped at level ", 0), 0u)
       << cut->counts.truncated_by;
   EXPECT_LE(EstimateTerrainGrown(*cut, limits).seconds, limits.max_seconds);
+}
+
+// Issue 34: at θ ≥ 60° with d'' ≥ √3·d0 a split edge is as long as its parent, so the midpoint
+// displacement doubled its points at each of 41 levels (the improved method on the disk filled
+// memory under --max-memory 128M, then threw std::bad_alloc). It now stops at the budget's room
+// with one line naming theta_max, having allocated within the budget.
+TEST(TerrainBudget, SteepMidpointDisplacementIsRefusedWithinTheBudget) {
+  {
+    const char* method = "improved";
+    TerrainParams p = For(method, 20);
+    ASSERT_TRUE(p.Set(TerrainParam::kThetaMin, 89).ok());
+    ASSERT_TRUE(p.Set(TerrainParam::kThetaMax, 89).ok());
+    ASSERT_TRUE(p.Set(TerrainParam::kD2, 0.5).ok());  // d'' = 10 m ≥ √3·d0 (d0 = 4.9 m)
+    Budget budget;
+    budget.memory_bytes = uint64_t{128} << 20;
+    budget.seconds = 60;
+    const TerrainGrowLimits limits = TerrainLimits(p, budget);
+    const long long base = AllocMeter::Reset();
+    Result<Terrain> t = Grow(*BuiltinSeed("disk"), p, &limits);
+    const long long peak = AllocMeter::PeakAbove(base);
+    ASSERT_FALSE(t.ok()) << method;
+    EXPECT_EQ(t.status().field(), "theta_max");
+    EXPECT_NE(t.status().message().find("(what --max-memory leaves)"), std::string::npos)
+        << t.status().Line();
+    EXPECT_LE(static_cast<double>(peak), limits.max_bytes - limits.base_bytes) << method;
+  }
+  // Without a budget the hard cap holds it (kMaxMidpointPoints).
+  // A 100 m square, d0 = 4.9 m, d'' = 10 m: the halves tend to 2·d''/√3 = 11.5 m ≥ 2·d0.
+  const Ring square = {{0, 0}, {100, 0}, {100, 100}, {0, 100}};
+  Pcg32 rng(1);
+  EXPECT_FALSE(MidpointDisplace(square, 4.9, 10, 89, 89, &rng, 100000).has_value());
+  // Within the paper's θ range the same splitting ends well under the cap.
+  Pcg32 rng2(1);
+  const std::optional<Ring> paper = MidpointDisplace(square, 4.9, 10, 20, 40, &rng2, 100000);
+  ASSERT_TRUE(paper.has_value());
+  EXPECT_LT(paper->size(), 1000u);
+}
+
+// A comb of `teeth` teeth 2 m wide, 1 m apart and 50 m tall on a 10 m base: a valid simple polygon
+// whose union sweep is quadratic (every tooth edge lies in every strip).
+Ring Comb(int teeth) {
+  Ring r = {{0, 0}, {3.0 * teeth - 1, 0}};
+  for (int i = teeth - 1; i >= 0; --i) {
+    const double x0 = 3.0 * i, x1 = x0 + 2;
+    if (i < teeth - 1) r.push_back({x1, 10});
+    r.push_back({x1, 60});
+    r.push_back({x0, 60});
+    if (i > 0) r.push_back({x0, 10});
+  }
+  return r;
+}
+
+// Issue 34: a comb of 100 k teeth ran past 60 s. Its shape is refused before any shrink (the
+// sweep's count of the seed is a lower bound of the shrink's: docs/budgets.md), naming the
+// contour; a smaller comb whose shrink still passes the budget stops at the counted edge tests.
+TEST(TerrainBudget, CombsAreRefusedByTheirShapeOrStoppedByTheSweepCount) {
+  Budget budget;  // the CLI's defaults: 2 GB, 60 s
+  const Ring big = Comb(100000);
+  EXPECT_GT(ShrinkSweepTests(big), 1e10);
+  const Status refused = CheckSeedShape(big, budget);
+  EXPECT_EQ(refused.field(), "contour");
+  EXPECT_NE(refused.message().find("as a comb's teeth"), std::string::npos) << refused.Line();
+  // The builtins are far from it.
+  for (const SeedInfo& info : BuiltinSeeds()) {
+    EXPECT_LT(ShrinkSweepTests(*BuiltinSeed(info.name)), 1e5) << info.name;
+    EXPECT_TRUE(CheckSeedShape(*BuiltinSeed(info.name), budget).ok()) << info.name;
+  }
+  // 1,000 teeth pass the shape check; a tight time budget stops the seed's first shrink at its
+  // counted tests, and the seed is refused (nothing could grow).
+  const TerrainParams p = For("improved", 20);
+  EXPECT_TRUE(CheckSeedShape(Comb(1000), budget).ok());
+  TerrainGrowLimits limits = Unlimited(p);
+  limits.max_seconds = 1;
+  Result<Terrain> t = Grow(Comb(1000), p, &limits);
+  ASSERT_FALSE(t.ok());
+  EXPECT_EQ(t.status().field(), "contour");
+  EXPECT_NE(t.status().message().find("edge tests of its union sweep"), std::string::npos)
+      << t.status().Line();
+}
+
+// Issue 34: terrain compare on a DEM of 0.0007 m cells under d = 70 m made the peak search's
+// radius 100,000 cells (its square overflowed an int) and hung; it is refused before any growth,
+// naming the DEM, and the real DEM's comparison is unchanged.
+TEST(TerrainBudget, ComparePeakSearchIsEstimatedAndRefusedUpFront) {
+  Heightfield fine;
+  fine.width = 403;
+  fine.height = 426;
+  fine.cell = 0.0007;
+  fine.h.assign(static_cast<std::size_t>(fine.width * fine.height), 0.0);
+  Budget budget;
+  const Status s = CheckCompareCost(fine, 70, budget);
+  EXPECT_EQ(s.field(), "dem");
+  EXPECT_NE(s.message().find("100,000 cells around"), std::string::npos) << s.Line();
+  Heightfield real = fine;
+  real.cell = 74.573;  // tests/data/terrain/jacksboro_dem.json
+  EXPECT_TRUE(CheckCompareCost(real, 70, budget).ok());
+  EXPECT_LT(ComparePeakTests(real, 70), 1e7);
 }
 
 }  // namespace

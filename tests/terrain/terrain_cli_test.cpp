@@ -117,5 +117,67 @@ TEST(TerrainCli, BadInputIsOneLineExitTwoAndNoFile) {
   }
 }
 
+// Issue 34: every numeric flag through the one strict parser with the table row's range (decimal
+// only, never hex or empty, in range), and a flag refused where its output is not written.
+TEST(TerrainCli, NumericFlagsAreStrictAndApplyOnlyWhereRead) {
+  struct Case {
+    std::vector<std::string> args;
+    std::string line;
+  };
+  const std::vector<Case> cases = {
+      {{"grow", "--builtin", "disk", "--stats", "--res", "0x40"},
+       "niwa: error: --res: '0x40' is not a decimal number; must be a whole number in [8, 4096]\n"},
+      {{"grow", "--builtin", "disk", "--stats", "--res", "0"},
+       "niwa: error: --res: 0 is out of range; must be a whole number in [8, 4096]\n"},
+      {{"grow", "--builtin", "disk", "--stats", "--res", ""},
+       "niwa: error: --res: empty; must be a whole number in [8, 4096]\n"},
+      {{"grow", "--builtin", "disk", "--stats", "--seed", "0x10"},
+       "niwa: error: --seed: '0x10' is not a decimal number; must be a whole number in [0, "
+       "4294967295]\n"},
+      {{"grow", "--builtin", "disk", "--stats", "--seed", "4294967296"},
+       "niwa: error: --seed: 4294967296 is out of range; must be a whole number in [0, "
+       "4294967295]\n"},
+      {{"compare", "--dem", "none.png", "--builtin", "disk", "--seed", "1.5"},
+       "niwa: error: --seed: 1.5 is out of range; must be a whole number in [0, 4294967295]\n"},
+      {{"shrink", "--builtin", "disk", "--seed", "3"},
+       "niwa: error: --seed: only applies with --displace D0,D2,THETA_MIN,THETA_MAX\n"},
+  };
+  for (const Case& c : cases) {
+    std::vector<std::string> args{"terrain"};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    CliResult r = RunNiwa(args);
+    EXPECT_EQ(r.code, 2) << c.line;
+    EXPECT_EQ(r.err, c.line);
+  }
+}
+
+// Issue 34: a terrain link with a repeated key, or longer than 16,384 characters, is refused with
+// one line under --url (both were read before: the last value, or nothing, silently).
+TEST(TerrainCli, RepeatedOrOverlongLinksAreRefused) {
+  for (const std::string url :
+       {"builtin=disk&builtin=lobes7", "builtin=disk&d=5&d=50", "builtin=disk&res=64&res=128"}) {
+    CliResult r = RunNiwa({"terrain", "grow", "--url", url, "--stats"});
+    EXPECT_EQ(r.code, 2) << url;
+    const std::string key = url.substr(url.rfind('&') + 1, url.rfind('=') - url.rfind('&') - 1);
+    EXPECT_EQ(r.err, "niwa: error: --url: " + key +
+                         ": given 2 times; must be given once, nothing was read\n");
+  }
+  const std::string long_url = "builtin=disk&d=5" + std::string(16384, '0');
+  CliResult r = RunNiwa({"terrain", "grow", "--url", long_url, "--stats"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err,
+            "niwa: error: --url: hash: 16400 characters; the limit is 16384, nothing was read\n");
+}
+
+// The seed row's whole range is taken exactly: 2^32 − 1 is not converted to int (UBSan).
+TEST(TerrainCli, LargestSeedIsTakenExactly) {
+  CliResult r = RunNiwa({"terrain", "grow", "--builtin", "dumbbell", "--method", "midpoint",
+                         "--seed", "4294967295", "--stats", "--res", "32"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["seed"].get<uint64_t>(), 4294967295u);
+  EXPECT_NE(nlohmann::json::parse(r.out)["url"].get<std::string>().find("seed=4294967295"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace niwa

@@ -34,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "base/budget.h"
 #include "buffers.h"
 #include "error_record.h"
 #include "page_budget.h"
@@ -41,6 +42,7 @@
 #include "run/field_names.h"
 #include "terrain/contour_io.h"
 #include "terrain/contour_repair.h"
+#include "terrain/generate.h"
 #include "terrain/seeds.h"
 #include "terrain/terrain_params.h"
 #include "terrain/terrain_run.h"
@@ -54,6 +56,9 @@ using nlohmann::json;
 using nlohmann::ordered_json;
 using terrain::TerrainParam;
 using Clock = std::chrono::steady_clock;
+
+// The most contour vertices a grown mountain may bring to the page (every builtin grows < 2,000).
+constexpr double kPageMaxContourVertices = 500000;
 
 double Ms(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
@@ -85,7 +90,8 @@ std::string TerrainSeedsJson() {
 // contour_repair.h (what `niwa terrain grow --repair` does). Returns {points, repaired,
 // loops_removed} when nothing was wrong (the points as given), {method: "loops" | "union", points,
 // repaired, loops_removed, reason} when repaired (snapped to the 1/1024 m grid, counter-
-// clockwise), or an error record naming "contour" (error_record.h).
+// clockwise), with {simplified: {from, to, quantum}} when its link would have been too long
+// (FitContourToLink), or an error record naming "contour" (error_record.h).
 std::string TerrainRepairContour(const std::string& points_json) {
   ordered_json out;
   if (Status guard = CheckJsonKeys(points_json, "contour"); !guard.ok()) {
@@ -111,11 +117,25 @@ std::string TerrainRepairContour(const std::string& points_json) {
   if (!points_ok.ok()) {
     return ErrorRecordJson(points_ok);
   }
-  Result<terrain::ContourRepair> r = terrain::RepairContour(ring);
+  // Within what a link carries first (a drawn 2,000-point contour wrote a 32,618-character link
+  // the page could not read back), then repaired; a repair's new points are fitted once more.
+  const terrain::LinkFit fit = terrain::FitContourToLink(ring, terrain::kMaxLinkContourChars);
+  Result<terrain::ContourRepair> r = terrain::RepairContour(fit.ring);
   if (!r.ok()) {
     return ErrorRecordJson(r.status());
   }
-  if (!r->repaired) {
+  bool fitted = fit.changed;
+  if (r->repaired) {
+    const terrain::LinkFit again =
+        terrain::FitContourToLink(r->ring, terrain::kMaxLinkContourChars);
+    if (again.changed) {
+      Result<terrain::Ring> checked = terrain::CheckSeed(again.ring);
+      if (!checked.ok()) return ErrorRecordJson(checked.status());
+      r->ring = again.ring;
+      fitted = true;
+    }
+  }
+  if (!r->repaired && !fitted) {
     out["points"] = j;
     out["repaired"] = false;
     out["loops_removed"] = 0;
@@ -123,11 +143,14 @@ std::string TerrainRepairContour(const std::string& points_json) {
   }
   json pts = json::array();
   for (const terrain::Vec2& v : r->ring) pts.push_back({v.x, v.y});
-  out["method"] = r->method;
+  if (r->repaired) out["method"] = r->method;
   out["points"] = pts;
-  out["repaired"] = true;
+  out["repaired"] = r->repaired;
   out["loops_removed"] = r->loops_removed;
-  out["reason"] = r->reason;
+  if (r->repaired) out["reason"] = r->reason;
+  if (fitted) {
+    out["simplified"] = {{"from", ring.size()}, {"to", r->ring.size()}, {"quantum", fit.quantum}};
+  }
   return JsonText(out);
 }
 
@@ -138,7 +161,17 @@ std::string TerrainRepairContour(const std::string& points_json) {
 // with the limit; its geometry is checked (and a crossing repaired) as a drawing's is.
 std::string TerrainParseContour(const std::string& text) {
   ordered_json out;
-  Result<terrain::SeedFile> file = terrain::ParseContourJson(text);
+  // No C++ exception may reach the page (a GeoJSON "type": 7 threw a json type_error, and the
+  // worker's reply never came): one record naming the field instead.
+  Result<terrain::SeedFile> file = Status::Error("contour", "could not be read");
+  try {
+    file = terrain::ParseContourJson(text);
+  } catch (const std::exception&) {
+    return ErrorRecordJson(
+        Status::Error("contour",
+                      "not a contour file; must be {\"points\": [[x, y], ...]} in metres or a "
+                      "GeoJSON Polygon or LineString"));
+  }
   if (!file.ok()) {
     return ErrorRecordJson(file.status());
   }
@@ -183,6 +216,20 @@ class TerrainLab {
     const int built = run_->counts().heightfields;
     s = run_->Advance({});
     if (!s.ok()) return ErrorText(s);
+    // What the page draws (the plan view's paths on the main thread, the line buffers), refused
+    // beyond kPageMaxContourVertices: `down` at its largest (1,000 enlarged contours, 1.9 M
+    // vertices) stalled the main thread for 71 s.
+    double vertices = 0;
+    for (const terrain::ContourNode& c : run_->terrain().contours)
+      vertices += static_cast<double>(c.ring.size());
+    if (vertices > kPageMaxContourVertices) {
+      const bool down = state.params.GetInt(TerrainParam::kDown) > 0;
+      return ErrorText(Status::Error(
+          down ? "down" : "max_levels",
+          FormatCount(vertices) + " contour vertices are more than the page draws (" +
+              FormatCount(kPageMaxContourVertices) + "); lower " + (down ? "down" : "max_levels") +
+              " or raise d (the CLI takes any number)"));
+    }
     ms_heightfield_ = run_->ms_heightfield();
     ms_grow_ = Ms(t0, Clock::now()) - ms_heightfield_;
     const auto t2 = Clock::now();

@@ -279,11 +279,14 @@ worker.on('terrain', (msg) => {
   showFieldError('');
   lastGoodHash = msg.hash;
   applyState(msg.state);
-  const r = msg.repaired;
-  $('contour-note').textContent = r
-    ? `The drawing crossed itself; repaired (${r.method === 'loops' ? `${r.loopsRemoved} loop${r.loopsRemoved === 1 ? '' : 's'} cut, §4.4 method 2` : 'its largest simple piece kept'}): ${r.points} points.`
-    : $('contour-note').textContent;
+  const r = msg.repaired, f = msg.simplified;
+  const notes = [];
+  if (r) notes.push(`The drawing crossed itself; repaired (${r.method === 'loops' ? `${r.loopsRemoved} loop${r.loopsRemoved === 1 ? '' : 's'} cut, §4.4 method 2` : 'its largest simple piece kept'}): ${r.points} points.`);
+  // The link holds the contour: one too long for it is put on a grid and thinned first.
+  if (f) notes.push(`Simplified to fit a link: ${f.to} of ${f.from} points kept, on a ${f.quantum} m grid.`);
+  if (notes.length) $('contour-note').textContent = notes.join(' ');
   if (r) setHooks({ contourRepaired: `${r.method}:${r.loopsRemoved}` });
+  if (f) setHooks({ contourSimplified: `${f.from}:${f.to}` });
   // The worker sends no triangles: the grid's are the same for every regrow on it.
   const surface = msg.buffers.surface;
   surface.indices = gridIndices(msg.bounds.width, msg.bounds.height);

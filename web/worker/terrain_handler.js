@@ -81,16 +81,17 @@ export function createHandler(Module, ctx) {
     const parts = {};  // the worker's wall time per step (ms): what the page's regrow costs
     const state = { ...(msg.state || {}) };
     let repaired = null;
+    let simplified = null;
     if (msg.repair && Array.isArray(state.contour)) {
       const r = JSON.parse(Module.terrainRepairContour(JSON.stringify(state.contour)));
       if (r.ok === false) {
         post(errorReply(r, id, client));
         return;
       }
-      if (r.repaired) {
-        state.contour = r.points;
-        repaired = { loopsRemoved: r.loops_removed, method: r.method, reason: r.reason, points: r.points.length };
-      }
+      if (r.repaired || r.simplified) state.contour = r.points;
+      if (r.repaired) repaired = { loopsRemoved: r.loops_removed, method: r.method, reason: r.reason, points: r.points.length };
+      // Too long for a link: on a grid and with fewer points (the link must read back).
+      if (r.simplified) simplified = { from: r.simplified.from, to: r.simplified.to, quantum: r.simplified.quantum };
     }
     let t = performance.now();
     const lap = (name) => {
@@ -116,7 +117,7 @@ export function createHandler(Module, ctx) {
     lap('copy');
     const reply = {
       type: 'terrain', id, client, stats, timings, buffers, hash: lab.hash(), state: JSON.parse(lab.stateJson()),
-      bounds, repaired,
+      bounds, repaired, simplified,
     };
     lap('state');
     reply.parts = parts;
