@@ -575,6 +575,8 @@ Budget ResolveBudget(const BudgetOptions& o) {
         "T, e.g. 4G)"};
   }
   budget.memory_bytes = bytes;
+  budget.memory_limit = "--max-memory";  // the budget's fields under this front end's flags
+  budget.seconds_limit = "--max-seconds";
   Check(CheckFlag("--max-seconds", o.max_seconds, kMaxSeconds));
   budget.seconds = o.max_seconds;
   return budget;

@@ -27,6 +27,10 @@ namespace niwa::cli {
 namespace {
 
 constexpr double kMaxCoordinate = 1e30;
+// ivy::kIvyChange and kIvyStatsChange in this command's flags.
+constexpr char kIvyCliChange[] = "lower --steps or --subdivide, or raise t1 and t2";
+constexpr char kIvyCliStatsChange[] =
+    "lower --steps or --subdivide, or raise t1 and t2, or leave out --stats";
 // The numeric flags' ranges, written once: parsed by FlagNumber, shown by RangeHelp.
 constexpr FlagRange kStepsRange = {0, ivy::kMaxSteps, true};
 constexpr FlagRange kSeedRange = {0, ivy::kMaxIvySeed, true};
@@ -196,7 +200,7 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   support_options.subdivide = levels;
   support_options.accel = o.accel == "bvh" ? ivy::Accel::kBvh : ivy::Accel::kLinear;
   // A tree's growth and bark took their time before the ivy's (its memory is freed but the bark).
-  support_options.change = tree ? "lower --tree-years" : ivy::kIvyChange;
+  support_options.change = tree ? "lower --tree-years" : kIvyCliChange;
   Result<std::shared_ptr<const ivy::IvySupport>> support =
       ivy::IvySupport::Prepare(std::move(input), support_options, budget);
   if (!support.ok()) {
@@ -222,8 +226,9 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   // grown).
   options.reserve_stats = o.stats;
   options.stats = o.stats;
-  options.export_change = o.stats ? ivy::kIvyStatsChange : ivy::kIvyChange;
-  options.stats_change = ivy::kIvyStatsChange;
+  options.change = kIvyCliChange;
+  options.export_change = o.stats ? kIvyCliStatsChange : kIvyCliChange;
+  options.stats_change = kIvyCliStatsChange;
   // Refused while growing, as soon as the buds made prove the output cannot fit.
   options.planned_export = ext.empty() ? "" : ext.substr(1);
   options.planned_with_support = o.with_support;

@@ -160,9 +160,7 @@ std::string ContoursFormat(const std::string& path) {
 // state, the run, its outputs written all or none, its stats with the CLI's timings.
 int RunGrow(const GrowOptions& o, std::ostream& out) {
   const auto t0 = std::chrono::steady_clock::now();
-  CheckOutPath(o.contours_out, "--contours", {".json", ".geojson", ".svg"});
-  CheckOutPath(o.out, "--out", {".glb"});
-  CheckOutPath(o.heightmap, "--heightmap", {".png"});
+  // The outputs' endings were checked by their declared flags (AddOutputFlag).
   if (!o.heightmap.empty() &&
       o.heightmap.substr(0, o.heightmap.size() - 4) + ".json" == o.contours_out) {
     Fail(Status::Error("--contours", "'" + o.contours_out +
@@ -322,7 +320,6 @@ nlohmann::json RingJson(const terrain::Ring& r) {
 
 // terrain shrink: one JSON object of the measures per step on stdout, the figure as --svg.
 int RunShrink(const ShrinkCommandOptions& o, bool seed_given, std::ostream& out) {
-  CheckOutPath(o.svg, "--svg", {".svg"});
   if (seed_given && o.displace.empty())
     Fail(Status::Error("--seed", "only applies with --displace D0,D2,THETA_MIN,THETA_MAX"));
   if (o.contour.empty() == o.builtin.empty())
@@ -427,18 +424,20 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
   CLI::App* grow = terrain_cmd->add_subcommand(
       "grow", "Grow every contour above a seed contour (Misawa, Chiba, Saito 1987)");
   auto o = std::make_shared<GrowOptions>();
-  grow->add_option("--contour", o->contour,
+  CLI::Option* contour =
+      AddInputFlag(grow, "--contour", &o->contour,
                    "Seed contour: {\"points\": [[x, y], ...]} in metres, or GeoJSON");
-  grow->add_option("--builtin", o->builtin,
-                   "Built-in seed: disk, dumbbell, lobes7, jacksboro, valleys");
+  CLI::Option* builtin = grow->add_option(
+      "--builtin", o->builtin, "Built-in seed: disk, dumbbell, lobes7, jacksboro, valleys");
+  Excludes(contour, builtin);
   grow->add_option("--method", o->method,
                    "simple (Fig 9c), midpoint (Fig 13b), fourier (Fig 15), improved (Fig 16) or a "
                    "figure preset fig9a..fig16");
   AddNumberFlag(grow, "--seed", &o->seed, TerrainRowRange(TerrainParam::kSeed),
                 "RNG seed, " + RangeHelp(TerrainRowRange(TerrainParam::kSeed)));
   grow->add_option("--set", o->sets, "KEY=VALUE of the terrain table (niwa params terrain)");
-  grow->add_option("--params", o->params_file,
-                   "State JSON {preset, builtin, contour: [[x, y], ...], params: {key: value}}");
+  AddInputFlag(grow, "--params", &o->params_file,
+               "State JSON {preset, builtin, contour: [[x, y], ...], params: {key: value}}");
   grow->add_option("--url", o->url,
                    "A share-link hash (preset=...&builtin=... or contour=x,y;...); other flags "
                    "override it");
@@ -449,16 +448,17 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
   grow->add_flag("--repair", o->repair,
                  "Make a seed contour that crosses itself simple first, as the page does a drawing "
                  "(§4.4 loop removal, else its largest simple piece), with a notice");
-  grow->add_option("--contours", o->contours_out,
-                   "Write the contour tree as .json, .geojson (Polygons, summits) or .svg (plan)");
-  grow->add_option(
-      "--out", o->out,
-      "Write the surface as .glb (metres, y up, normals, tint row, contours as lines)");
-  grow->add_option("--heightmap", o->heightmap,
-                   "Write a 16-bit greyscale .png and its sidecar FILE.json (min, max, cell, "
-                   "origin)");
+  AddOutputFlag(grow, "--contours", &o->contours_out, {".json", ".geojson", ".svg"},
+                "Write the contour tree as .json, .geojson (Polygons, summits) or .svg (plan)");
+  AddOutputFlag(grow, "--out", &o->out, {".glb"},
+                "Write the surface as .glb (metres, y up, normals, tint row, contours as lines)");
+  AddOutputFlag(grow, "--heightmap", &o->heightmap, {".png"},
+                "Write a 16-bit greyscale .png and its sidecar FILE.json (min, max, cell, "
+                "origin)");
   AddBudgetOptions(grow, &o->budget);
-  commands.push_back({grow, [o](std::ostream& out) { return RunGrow(*o, out); }});
+  commands.push_back({grow,
+                      [o](std::ostream& out) { return RunGrow(*o, out); },
+                      {"--builtin", "disk", "--set", "res=32", "--stats"}});
 
   CLI::App* compare = terrain_cmd->add_subcommand(
       "compare",
@@ -466,28 +466,37 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
       "slopes, peaks, each level's IoU) as one JSON object");
   auto co = std::make_shared<GrowOptions>();
   auto dem = std::make_shared<std::string>();
-  compare->add_option("--dem", *dem, "The real DEM: a 16-bit .png with its sidecar FILE.json")
+  AddInputFlag(compare, "--dem", dem.get(),
+               "The real DEM: a 16-bit .png with its sidecar FILE.json")
       ->required();
-  compare->add_option("--contour", co->contour, "Its seed contour (a file, as for grow)");
-  compare->add_option("--builtin", co->builtin, "Or a built-in seed (jacksboro)");
+  CLI::Option* compare_contour =
+      AddInputFlag(compare, "--contour", &co->contour, "Its seed contour (a file, as for grow)");
+  CLI::Option* compare_builtin =
+      compare->add_option("--builtin", co->builtin, "Or a built-in seed (jacksboro)");
+  Excludes(compare_contour, compare_builtin);
   compare->add_option("--method", co->method, "As for grow");
   AddNumberFlag(compare, "--seed", &co->seed, TerrainRowRange(TerrainParam::kSeed),
                 "RNG seed, " + RangeHelp(TerrainRowRange(TerrainParam::kSeed)));
   compare->add_option("--set", co->sets, "KEY=VALUE of the terrain table");
-  compare->add_option("--params", co->params_file, "State JSON, as for grow");
+  AddInputFlag(compare, "--params", &co->params_file, "State JSON, as for grow");
   compare->add_option("--url", co->url, "A share-link hash, as for grow");
   AddBudgetOptions(compare, &co->budget);
   commands.push_back(
-      {compare, [co, dem](std::ostream& out) { return RunCompare(*co, *dem, out); }});
+      {compare,
+       [co, dem](std::ostream& out) { return RunCompare(*co, *dem, out); },
+       // (a path under tests/data/ is the source tree's: the hostile suite resolves it)
+       {"--dem", "tests/data/terrain/jacksboro_dem.png", "--builtin", "jacksboro"}});
 
   CLI::App* shrink = terrain_cmd->add_subcommand(
       "shrink",
       "Trace the polygon shrinking algorithm on a contour (Figs 2-8, 12): naive offsets, the raw "
       "path with its joins, the rings kept, repeated steps; one JSON object of measures per step");
   auto so = std::make_shared<ShrinkCommandOptions>();
-  shrink->add_option("--contour", so->contour,
-                     "The contour: {\"points\": [[x, y], ...]} or GeoJSON");
-  shrink->add_option("--builtin", so->builtin, "Or a built-in seed (terrain seeds)");
+  CLI::Option* shrink_contour = AddInputFlag(shrink, "--contour", &so->contour,
+                                             "The contour: {\"points\": [[x, y], ...]} or GeoJSON");
+  CLI::Option* shrink_builtin =
+      shrink->add_option("--builtin", so->builtin, "Or a built-in seed (terrain seeds)");
+  Excludes(shrink_contour, shrink_builtin);
   AddNumberFlag(shrink, "--d", &so->d, kShrinkD,
                 "Offset distance d (m), " + RangeHelp(kShrinkD) + "; default the built-in's d");
   shrink->add_option("--join", so->join,
@@ -506,10 +515,11 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
                      "D0,D2,THETA_MIN,THETA_MAX: midpoint-displace the contour first (Fig 12)");
   AddNumberFlag(shrink, "--seed", &so->seed, TerrainRowRange(TerrainParam::kSeed),
                 "RNG seed of --displace, " + RangeHelp(TerrainRowRange(TerrainParam::kSeed)));
-  shrink->add_option("--svg", so->svg, "Write the figure as .svg");
-  commands.push_back({shrink, [so, shrink](std::ostream& out) {
-                        return RunShrink(*so, shrink->count("--seed") > 0, out);
-                      }});
+  AddOutputFlag(shrink, "--svg", &so->svg, {".svg"}, "Write the figure as .svg");
+  commands.push_back(
+      {shrink,
+       [so, shrink](std::ostream& out) { return RunShrink(*so, shrink->count("--seed") > 0, out); },
+       {"--builtin", "disk"}});
 
   CLI::App* seeds = terrain_cmd->add_subcommand("seeds", "List the built-in seed contours");
   commands.push_back({seeds, [](std::ostream& out) {
@@ -526,11 +536,16 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
                         out << j.dump(2) << "\n";
                         return 0;
                       }});
-  commands.studies.push_back({"terrain", &terrain::TerrainTable(), [](std::ostream& out) {
-                                out << "terrain figure presets:\n";
-                                for (const terrain::FigurePreset& p : terrain::FigurePresets())
-                                  out << "  " << p.name << ": " << p.caption << "\n";
-                              }});
+  commands.studies.push_back(
+      {"terrain",
+       &terrain::TerrainTable(),
+       [](std::ostream& out) {
+         out << "terrain figure presets:\n";
+         for (const terrain::FigurePreset& p : terrain::FigurePresets())
+           out << "  " << p.name << ": " << p.caption << "\n";
+       },
+       {},
+       {"terrain", "grow", "--builtin", "disk", "--set", "res=32", "--stats"}});
 }
 
 }  // namespace niwa::cli

@@ -116,7 +116,7 @@ TreeState ResolveTreeState(const StateOptions& o, const CLI::App& cmd) {
                                                   : "--preset";
     Fail(gust.Within(source));
   }
-  state.limits = TreeGrowLimits(state.params, ResolveBudget(o.budget));
+  state.limits = TreeGrowLimits(state.params, ResolveBudget(o.budget), "--years");
   return state;
 }
 

@@ -11,12 +11,14 @@
 
 namespace niwa {
 
-// What a job may use, and the names of the settings that change it (in the error lines).
+// What a job may use, and the names of the settings that change it (in the error lines): the
+// state fields "max_memory" and "max_seconds" unless the front end names them in its own words
+// ("--max-memory" on the CLI: cli::ResolveBudget; "page memory budget" on the page).
 struct Budget {
   uint64_t memory_bytes = uint64_t{2} << 30;  // 2 GB: the CLI's default
   double seconds = 60;                        // estimated seconds of work (not wall clock)
-  std::string memory_limit = "--max-memory";  // "--max-memory" (CLI), "page memory budget"
-  std::string seconds_limit = "--max-seconds";
+  std::string memory_limit = "max_memory";
+  std::string seconds_limit = "max_seconds";
 };
 
 // What a piece of work is estimated to need (upper bounds, by calibrated constants).

@@ -32,7 +32,7 @@ struct BarkSupport {
 // and what its lines tell the user to lower.
 struct BarkBudget {
   Budget budget;
-  std::string years_name = "--tree-years";
+  std::string years_name = "tree_years";  // the CLI: "--tree-years"
 };
 
 // The bark buffers of BuildTreeMesh as one TriMesh.

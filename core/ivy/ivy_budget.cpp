@@ -177,7 +177,7 @@ Estimate EstimateIvyStats(const IvyStatsWork& w) {
   e.memory_bytes = kStatsBytesPerBud * w.buds + 8192;
   e.seconds = 1e-9 * (kNsPerTriangleTest * w.triangle_tests +
                       kNsPerOverlapPair * w.overlap_pairs_examined + kNsPerStatsBud * w.buds);
-  e.what = "measuring --stats (" + FormatCount(w.buds) + " buds re-checked against " +
+  e.what = "measuring the statistics (" + FormatCount(w.buds) + " buds re-checked against " +
            FormatCount(w.buds > 0 ? w.triangle_tests / (w.buds + w.internodes) : 0) +
            " triangles, " + FormatCount(w.overlap_pairs_examined) + " internode pairs)";
   return e;

@@ -24,9 +24,10 @@ namespace niwa::ivy {
 //             (candidates so far + alive · n_c · (R_max + 1)) + seconds_per_bud · (buds + alive)
 // What the refusal and truncation lines tell the user to change (the CLI's flags; the page names
 // its own fields: IvyGrowLimits::change).
-inline constexpr char kIvyChange[] = "lower --steps or --subdivide, or raise t1 and t2";
+// In state fields; the CLI says the same with its flags (native_cli/ivy_commands.cpp).
+inline constexpr char kIvyChange[] = "lower steps or subdivide, or raise t1 and t2";
 inline constexpr char kIvyStatsChange[] =
-    "lower --steps or --subdivide, or raise t1 and t2, or leave out --stats";
+    "lower steps or subdivide, or raise t1 and t2, or leave out the statistics";
 
 struct IvyGrowLimits {
   double max_bytes = -1, max_seconds = -1;
@@ -36,7 +37,7 @@ struct IvyGrowLimits {
   // Work done once per bud after the growth (the --stats measurement: ReserveIvyStats), 0 without.
   double seconds_per_bud = 0;
   double candidates_per_search = 0;  // n_c · (R_max + 1) (+ the fan's); 0 without a support
-  std::string memory_limit = "--max-memory", seconds_limit = "--max-seconds";
+  std::string memory_limit = "max_memory", seconds_limit = "max_seconds";
   std::string change = kIvyChange;  // what a truncation line says to change
 };
 

@@ -25,7 +25,7 @@ struct TerrainGrowLimits {
   double seconds_per_vertex = 0;
   double seconds_per_sweep_test = 0;  // a shrink's union sweep (ShrinkSweepTests)
   double growth = 2;                  // children's vertices per parent vertex, at most (a margin)
-  std::string memory_limit = "--max-memory", seconds_limit = "--max-seconds";
+  std::string memory_limit = "max_memory", seconds_limit = "max_seconds";
 };
 
 // The work Grow has done so far (counted as it goes; GrowCounts holds the final figures).

@@ -96,7 +96,7 @@ Status SetTerrainPoints(const Ring& points, TerrainState* state) {
   if (points.size() < 3 || points.size() > kMaxStatePoints) {
     return Status::Error("contour", std::to_string(points.size()) + " points; must be 3 to " +
                                         std::to_string(kMaxStatePoints) +
-                                        " (a longer one goes in a --contour file)");
+                                        " (a longer one goes in a contour file)");
   }
   for (const Vec2& v : points) {
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || std::fabs(v.x) > 1e6 ||

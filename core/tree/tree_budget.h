@@ -25,8 +25,8 @@ struct GrowLimits {
   // whose exports are checked exactly once the tree has grown). Not part of Grower::estimate().
   double bytes_per_alive_internode = 0;
   double seconds_per_internode_year = 0, seconds_per_branch = 0, seconds_per_internode = 0;
-  std::string memory_limit = "--max-memory", seconds_limit = "--max-seconds";
-  std::string years_name = "--years";  // what the lines tell the user to lower
+  std::string memory_limit = "max_memory", seconds_limit = "max_seconds";
+  std::string years_name = "years";  // what the lines tell the user to lower (the CLI: "--years")
   // Most alive internodes (-1: none), e.g. what the page can mesh and draw; named internode_limit.
   long max_internodes = -1;
   std::string internode_limit;
@@ -34,7 +34,7 @@ struct GrowLimits {
 
 // The limits of growing `params` within `budget` (the per-internode costs depend on N, B_l, B_tl).
 GrowLimits TreeGrowLimits(const TreeParams& params, const Budget& budget,
-                          const std::string& years_name = "--years");
+                          const std::string& years_name = "years");
 
 // Bytes the page's mesh (TreeExport::kMesh) takes per internode of `params`: a typical tube's
 // ring and every internode bearing this year's leaves. The page sets it as

@@ -182,3 +182,26 @@ TEST(IncludeRules, FrontEndsAreAdaptersOverTheCore) {
 }
 
 }  // namespace
+
+// Issue 28 item 1: core errors name state fields, never a front end's words; the command line's
+// flags ("--max-memory", "--years") are the CLI's (run::FieldNames, cli::ResolveBudget). A string
+// literal in core holding a flag ("--word") fails here (comments and tinygltf aside).
+TEST(FlagWords, CoreStringsNameNoCommandLineFlag) {
+  const std::regex flag_in_string(R"re("(?:[^"\n]*[^-\w"\n])?--[a-z][a-z-]*[^"\n]*")re");
+  int files = 0;
+  for (const fs::directory_entry& e : fs::recursive_directory_iterator(kCore)) {
+    const std::string name = e.path().filename().string();
+    if (!e.is_regular_file() || name.rfind("tinygltf", 0) == 0) continue;
+    if (e.path().extension() != ".h" && e.path().extension() != ".cpp") continue;
+    ++files;
+    std::ifstream in(e.path());
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+      const std::size_t comment = line.find("//");
+      const std::string code = comment == std::string::npos ? line : line.substr(0, comment);
+      EXPECT_FALSE(std::regex_search(code, flag_in_string))
+          << e.path().string() << ":" << n << ": " << line;
+    }
+  }
+  EXPECT_GT(files, 100);
+}

@@ -26,15 +26,21 @@ TEST(Budget, FormatsSizes) {
 }
 
 TEST(Budget, RefusesNamingTheLimit) {
-  Budget budget;  // 2 GB, 60 s
+  Budget budget;  // 2 GB, 60 s, its limits named by their state fields (no flag words in core)
   Estimate fits{1e9, 10, "work"};
   EXPECT_TRUE(CheckEstimate(fits, budget, "lower x").ok());
-  Status memory = CheckEstimate({3.0 * (1 << 30), 1, "writing the .json"}, budget, "lower --years");
+  Status memory = CheckEstimate({3.0 * (1 << 30), 1, "writing the .json"}, budget, "lower years");
   EXPECT_EQ(memory.Line(),
-            "--max-memory: writing the .json needs about 3 GB, more than the 2 GB allowed; lower "
-            "--years (or raise --max-memory)");
-  Status time = CheckEstimate({1, 61, "swaying"}, budget, "lower --duration");
-  EXPECT_EQ(time.field(), "--max-seconds");
+            "max_memory: writing the .json needs about 3 GB, more than the 2 GB allowed; lower "
+            "years");
+  Status time = CheckEstimate({1, 61, "swaying"}, budget, "lower duration");
+  EXPECT_EQ(time.field(), "max_seconds");
+  // A front end names the limits with its words, and a flag gets its raise hint (the CLI).
+  budget.memory_limit = "--max-memory";
+  EXPECT_EQ(
+      CheckEstimate({3.0 * (1 << 30), 1, "writing the .json"}, budget, "lower --years").Line(),
+      "--max-memory: writing the .json needs about 3 GB, more than the 2 GB allowed; lower "
+      "--years (or raise --max-memory)");
   EXPECT_EQ((fits + Estimate{1, 2, "more"}).what, "work and more");
 }
 

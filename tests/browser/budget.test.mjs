@@ -248,7 +248,7 @@ await runBrowserTest(async (server, browser) => {
     const wide = await hooks(page);
     const w = JSON.parse(wide.stats || '{}');
     const wideNotice = (await page.textContent('#notice')).trim();
-    check('6: the CLI refuses --stats for this ivy (exit 2)', cli.status === 2 && /measuring --stats/.test(cliLine), `${cli.status}: ${cli.stderr.trim()}`);
+    check('6: the CLI refuses --stats for this ivy (exit 2)', cli.status === 2 && /measuring the statistics/.test(cliLine), `${cli.status}: ${cli.stderr.trim()}`);
     check('6: the page leaves the sweep out with the same estimate\'s line, beside the ivy as a notice',
       wide.overlapSkippedBy === `page time budget: ${cliLine}; grow fewer steps (the page leaves the overlap pairs out)` &&
       w.overlap_pairs === null && wideNotice.includes(wide.overlapSkippedBy) && w.internodes > 0 && w.buds.D > 0,

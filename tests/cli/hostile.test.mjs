@@ -21,6 +21,10 @@ mkdirSync(files);
 const OUT = '\u0000OUT\u0000';  // stands for the running case's own output folder
 
 const declared = JSON.parse(spawnSync(native, ['flags'], { encoding: 'utf8' }).stdout);
+// An example's file under tests/data/ is the source tree's.
+for (const c of [...declared.commands, ...declared.studies]) {
+  c.example = c.example.map((w) => (w.startsWith('tests/data/') ? join(process.env.NIWA_ROOT, w) : w));
+}
 
 // Hostile numbers: none of them is a valid value of any numeric flag.
 function hostileNumbers(flag) {
@@ -112,6 +116,7 @@ const cases = [];  // {name, args, expect: 'refused' | 'any'}
 // A flag that several commands of one group share (the tree state flags of 'tree grow', 'tree
 // sway', ...: one AddStateOptions) is varied on the first command that has it.
 const seen = new Set();
+let turn = 0;
 for (const command of declared.commands) {
   if (command.command[0] === 'flags') continue;
   const base = [...command.command, ...command.example];
@@ -125,7 +130,13 @@ for (const command of declared.commands) {
     const given = flag.only_with ? ['--out'].includes(flag.only_with)
       ? [flag.only_with, `${OUT}/o${flag.only_endings[0]}`] : [] : [];
     if (flag.kind === 'number') {
-      for (const v of hostileNumbers(flag)) cases.push({ name: `${word} ${flag.flag} ${JSON.stringify(v)}`, args: [...base, ...given, flag.flag, v], expect: 'refused', names: flag.flag });
+      // The bounds, hex and nan for every numeric flag; two of the other spellings each, in turn
+      // (they all reach the one parser, FlagNumber: the unit tests try each against every rule).
+      const all = hostileNumbers(flag);
+      const others = all.slice(2, 16).filter((v) => v !== 'nan');
+      const picked = [...all.slice(0, 2), 'nan', ...all.slice(16), others[turn % others.length], others[(turn + 7) % others.length]];
+      ++turn;
+      for (const v of picked) cases.push({ name: `${word} ${flag.flag} ${JSON.stringify(v)}`, args: [...base, ...given, flag.flag, v], expect: 'refused', names: flag.flag });
     } else if (flag.kind === 'text') {
       for (const v of TEXT) cases.push({ name: `${word} ${flag.flag} ${JSON.stringify(v.length > 40 ? `${v.slice(0, 10)}...(${v.length})` : v)}`, args: [...base, ...given, flag.flag, v], expect: 'any' });
     } else if (flag.kind === 'input') {
@@ -156,6 +167,7 @@ for (const command of declared.commands) {
   }
 }
 // Every table row of every study, through its command's --set and --url.
+let rowTurn = 0;
 for (const study of declared.studies) {
   if (!study.example.length) continue;
   const table = JSON.parse(spawnSync(native, ['params', study.name, '--json'], { encoding: 'utf8' }).stdout);
@@ -163,7 +175,8 @@ for (const study of declared.studies) {
   check(`${study.name}: its table lists rows`, rows.length > 0, `${rows.length} rows`);
   for (const row of rows) {
     const spec = { min: row.min, max: row.max, integer: Boolean(row.integer) };
-    for (const v of ['0x10', 'nan', ...hostileNumbers(spec).slice(16)]) {
+    // Past each bound (and a fraction for a whole-number row), and one of hex, nan, inf in turn.
+    for (const v of [['0x10', 'nan', 'inf'][rowTurn++ % 3], ...hostileNumbers(spec).slice(16)]) {
       cases.push({ name: `${study.name} --set ${row.key}=${JSON.stringify(v)}`, args: [...study.example, '--set', `${row.key}=${v}`], expect: 'refused', names: row.key });
     }
     cases.push({ name: `${study.name} --url ${row.key} repeated`, args: [...study.example, '--url', `${row.key}=${row.min}&${row.key}=${row.min}`], expect: 'refused', names: row.key });
@@ -229,7 +242,7 @@ async function runAll(cli, list, label) {
 check('the CLI declares its commands (niwa flags)', declared.commands.length >= 10, `${declared.commands.length} commands`);
 const only = process.env.NIWA_HOSTILE_FILTER;
 const list = only ? cases.filter((c) => c.name.includes(only)) : cases;
-console.log(`${list.length} cases`);
+console.log(`${list.length} of ${cases.length} cases`);
 await runAll(native, list, "native");
 if (existsSync(wasm) && !process.env.NIWA_HOSTILE_NO_WASM && !process.env.NIWA_SANITIZED) {
   const every = Math.max(1, Number(process.env.NIWA_HOSTILE_WASM_EVERY || 5));

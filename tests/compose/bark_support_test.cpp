@@ -71,10 +71,9 @@ TEST(BarkSupport, ATightBudgetStopsTheTreeWithTheLine) {
   tight.budget.memory_bytes = uint64_t{128} << 20;
   Result<BarkSupport> bark = GrowBarkSupport("sakura", 40, &tight);
   ASSERT_TRUE(bark.ok()) << bark.status().Line();
-  EXPECT_EQ(bark->truncated_by.rfind("--max-memory: stopped in year ", 0), 0u)
-      << bark->truncated_by;
+  EXPECT_EQ(bark->truncated_by.rfind("max_memory: stopped in year ", 0), 0u) << bark->truncated_by;
   EXPECT_NE(bark->truncated_by.find(" of 40: "), std::string::npos) << bark->truncated_by;
-  EXPECT_NE(bark->truncated_by.find("lower --tree-years"), std::string::npos) << bark->truncated_by;
+  EXPECT_NE(bark->truncated_by.find("lower tree_years"), std::string::npos) << bark->truncated_by;
   EXPECT_LE(bark->estimate.memory_bytes, static_cast<double>(tight.budget.memory_bytes));
   EXPECT_GT(bark->mesh.triangle_count(), 0u);
   // A time budget names its own limit and what to lower (the page's names too).

@@ -144,9 +144,8 @@ TEST(IvyBudget, SubdivisionBeyondTheBudgetIsRefusedWithTheLine) {
   budget.memory_bytes = uint64_t{256} << 20;
   const Status s = CheckEstimate(EstimateIvySupport(size), budget, kIvyChange);
   EXPECT_EQ(s.Line(),
-            "--max-memory: subdividing the support to 3,840,000 triangles needs about 611 MB, "
-            "more than the 256 MB allowed; lower --steps or --subdivide, or raise t1 and t2 (or "
-            "raise --max-memory)");
+            "max_memory: subdividing the support to 3,840,000 triangles needs about 611 MB, "
+            "more than the 256 MB allowed; lower steps or subdivide, or raise t1 and t2");
 }
 
 TEST(IvyBudget, MemoryBudgetStopsAtAStepWithTheLineAndTheSameBuds) {
@@ -157,7 +156,7 @@ TEST(IvyBudget, MemoryBudgetStopsAtAStepWithTheLineAndTheSameBuds) {
   IvyRun cut;
   GrowOn("free", 150, &limits, &cut);
   ASSERT_GT(full.model.buds.size(), 3000u);
-  EXPECT_EQ(cut.log.truncated_by.rfind("--max-memory: stopped at step ", 0), 0u)
+  EXPECT_EQ(cut.log.truncated_by.rfind("max_memory: stopped at step ", 0), 0u)
       << cut.log.truncated_by;
   EXPECT_NE(cut.log.truncated_by.find(" of 150: "), std::string::npos);
   EXPECT_LT(cut.log.steps_run, full.log.steps_run);
@@ -204,7 +203,7 @@ TEST(IvyBudget, TimeBudgetStopsAtAStepWithTheLine) {
   limits.max_seconds = 0.05;  // work units: the same step in both builds
   IvyRun cut;
   GrowOn("wall", 120, &limits, &cut);
-  EXPECT_EQ(cut.log.truncated_by.rfind("--max-seconds: stopped at step ", 0), 0u)
+  EXPECT_EQ(cut.log.truncated_by.rfind("max_seconds: stopped at step ", 0), 0u)
       << cut.log.truncated_by;
   EXPECT_LE(EstimateIvyGrown(cut.model, cut.log, limits).seconds, limits.max_seconds);
   IvyRun again;
@@ -287,7 +286,7 @@ TEST(IvyBudget, ReservedStatsStopTheGrowthWhereTheMeasurementFits) {
   Result<IvyModel> a = Grow(support, {scene.seeds[0].pos}, p, 200, 1, &plain_log, &plain);
   Result<IvyModel> b = Grow(support, {scene.seeds[0].pos}, p, 200, 1, &reserved_log, &reserved);
   ASSERT_TRUE(a.ok() && b.ok());
-  EXPECT_EQ(reserved_log.truncated_by.rfind("--max-seconds: stopped at step ", 0), 0u)
+  EXPECT_EQ(reserved_log.truncated_by.rfind("max_seconds: stopped at step ", 0), 0u)
       << reserved_log.truncated_by;
   EXPECT_LT(reserved_log.steps_run, plain_log.steps_run);
   const Estimate total =

@@ -180,7 +180,7 @@ TEST(IvyRun, ABudgetRefusalComesBeforeWorkAndNamesItsField) {
   Result<std::shared_ptr<const IvySupport>> s =
       IvySupport::Prepare(IvySupportInput::Scene("sphere"), options, tight);
   ASSERT_FALSE(s.ok());
-  EXPECT_EQ(s.status().field(), "--max-seconds") << s.status().Line();  // the budget's limit
+  EXPECT_EQ(s.status().field(), "max_seconds") << s.status().Line();  // the budget's limit
   EXPECT_NE(s.status().message().find("subdividing the support to 1,310,720 triangles"),
             std::string::npos)
       << s.status().Line();
@@ -219,11 +219,11 @@ TEST(IvyRun, ABudgetRefusalComesBeforeWorkAndNamesItsField) {
   Result<IvyRun> run = IvyRun::Start(Steps(20), Prepared(IvySupportInput::Scene("cubes4")), none);
   ASSERT_TRUE(run.ok()) << run.status().Line();
   ASSERT_TRUE(run->Advance({}).ok());
-  EXPECT_EQ(run->log().truncated_by.rfind("--max-memory: stopped at step 1 of 20", 0), 0u)
+  EXPECT_EQ(run->log().truncated_by.rfind("max_memory: stopped at step 1 of 20", 0), 0u)
       << run->log().truncated_by;
   Result<std::string> glb = run->Export("glb", {});
   ASSERT_FALSE(glb.ok());
-  EXPECT_EQ(glb.status().field(), "--max-memory") << glb.status().Line();
+  EXPECT_EQ(glb.status().field(), "max_memory") << glb.status().Line();
   EXPECT_NE(glb.status().message().find("writing the .glb"), std::string::npos)
       << glb.status().Line();
   EXPECT_TRUE(run->ExportUnchecked("glb", {}).ok());

@@ -212,7 +212,7 @@ TEST(TreeRun, RestateKeepsTheTreeAndRedressesIt) {
   EXPECT_TRUE(run.mesh().leaves.indices.empty());
   EXPECT_EQ(TreeToJson(run.tree()), grown);  // not regrown
   EXPECT_EQ(run.skin().bark.joint.size(), run.mesh().bark.vertex_count());
-  EXPECT_EQ(run.state().limits.years_name, "--years");  // the growth's limits stay
+  EXPECT_EQ(run.state().limits.years_name, "years");  // the growth's limits stay
 }
 
 run::StageMask From(Stage stage) {  // that stage and the ones after it

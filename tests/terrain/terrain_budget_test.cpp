@@ -143,7 +143,7 @@ TEST(TerrainBudget, MemoryBudgetStopsAtAContourWithTheLineAndTheSameContours) {
   Result<Terrain> cut = Grow(*BuiltinSeed("lobes7"), p, &limits);
   ASSERT_TRUE(cut.ok());
   EXPECT_TRUE(cut->counts.truncated);
-  EXPECT_EQ(cut->counts.truncated_by.rfind("--max-memory: stopped at level ", 0), 0u)
+  EXPECT_EQ(cut->counts.truncated_by.rfind("max_memory: stopped at level ", 0), 0u)
       << cut->counts.truncated_by;
   EXPECT_LE(EstimateTerrainGrown(*cut, limits).memory_bytes, limits.max_bytes);
   ASSERT_LT(cut->contours.size(), full->contours.size());
@@ -157,7 +157,7 @@ TEST(TerrainBudget, TimeBudgetStopsAtAContourWithTheLine) {
   limits.max_seconds = 0.2;  // a count of vertices worked: the same contour in both builds
   Result<Terrain> cut = Grow(*BuiltinSeed("lobes7"), p, &limits);
   ASSERT_TRUE(cut.ok());
-  EXPECT_EQ(cut->counts.truncated_by.rfind("--max-seconds: stopped at level ", 0), 0u)
+  EXPECT_EQ(cut->counts.truncated_by.rfind("max_seconds: stopped at level ", 0), 0u)
       << cut->counts.truncated_by;
   EXPECT_LE(EstimateTerrainGrown(*cut, limits).seconds, limits.max_seconds);
 }
@@ -182,7 +182,7 @@ TEST(TerrainBudget, SteepMidpointDisplacementIsRefusedWithinTheBudget) {
     const long long peak = AllocMeter::PeakAbove(base);
     ASSERT_FALSE(t.ok()) << method;
     EXPECT_EQ(t.status().field(), "theta_max");
-    EXPECT_NE(t.status().message().find("(what --max-memory leaves)"), std::string::npos)
+    EXPECT_NE(t.status().message().find("(what max_memory leaves)"), std::string::npos)
         << t.status().Line();
     EXPECT_LE(static_cast<double>(peak), limits.max_bytes - limits.base_bytes) << method;
   }

@@ -40,8 +40,8 @@ TEST(TreeBudget, MemoryBudgetStopsTheGrowthWithALine) {
   EXPECT_LE(grower.estimate().memory_bytes, double(small.memory_bytes));
   const Tree& tree = grower.tree();
   EXPECT_TRUE(tree.truncated);
-  EXPECT_EQ(tree.truncated_by.rfind("--max-memory: stopped in year ", 0), 0u) << tree.truncated_by;
-  EXPECT_NE(tree.truncated_by.find("raise --max-memory"), std::string::npos);
+  EXPECT_EQ(tree.truncated_by.rfind("max_memory: stopped in year ", 0), 0u) << tree.truncated_by;
+  EXPECT_NE(tree.truncated_by.find("lower years, N_high or B_l"), std::string::npos);
 }
 
 TEST(TreeBudget, TimeBudgetStopsTheGrowth) {
@@ -51,7 +51,7 @@ TEST(TreeBudget, TimeBudgetStopsTheGrowth) {
   state.limits = TreeGrowLimits(state.params, quick, "years");
   Tree tree = GrowTree(state);
   EXPECT_TRUE(tree.truncated);
-  EXPECT_EQ(tree.truncated_by.rfind("--max-seconds: stopped in year ", 0), 0u) << tree.truncated_by;
+  EXPECT_EQ(tree.truncated_by.rfind("max_seconds: stopped in year ", 0), 0u) << tree.truncated_by;
   EXPECT_NE(tree.truncated_by.find("lower years"), std::string::npos);
 }
 
