@@ -249,6 +249,11 @@ TEST(SafeWrites, SeveralOutputsAreAllOrNone) {
 // Issue 34: a commit failing at its last rename put back the files the earlier renames had
 // replaced (before, it deleted them: the user's file at that path was lost).
 TEST(SafeWrites, AFailedCommitPutsBackWhatItReplaced) {
+#ifdef __EMSCRIPTEN__
+  // Under node (NODERAWFS) a rename onto an empty folder replaces it and link() is not there: the
+  // failing rename cannot be made, and the WASM CLI cannot keep the old file.
+  GTEST_SKIP() << "needs POSIX rename and link (native)";
+#endif
   const std::string first = PathIn("kept.json"), second = PathIn("late-folder.json");
   Write(first, "the user's file");
   ::rmdir(second.c_str());
@@ -282,11 +287,13 @@ TEST(SafeWrites, OneFileNamedTwoWaysIsRefused) {
   ASSERT_TRUE(outputs.Stage("--out", PathIn("sub/a.json"), "1").ok());
   ExpectError(outputs.Stage("--csv", PathIn("sub/../sub/./a.json"), "2"), "--csv",
               "is the same file as --out");
+#ifndef __EMSCRIPTEN__  // hard links (not under node's NODERAWFS)
   Write(PathIn("b.json"), "old");
   ::unlink(PathIn("b-link.json").c_str());
   ASSERT_EQ(::link(PathIn("b.json").c_str(), PathIn("b-link.json").c_str()), 0);
   ASSERT_TRUE(outputs.Stage("--svg", PathIn("b.json"), "3").ok());
   ExpectError(outputs.Stage("--x", PathIn("b-link.json"), "4"), "--x", "is the same file as --svg");
+#endif
 }
 
 #ifndef __EMSCRIPTEN__

@@ -192,7 +192,7 @@ TEST(TerrainOutput, HostileUrlsAndFlagsAreOneLineExitTwoNoFile) {
   const std::vector<Case> cases = {
       {{"--url", "contour=1,2;3,4"},
        "niwa: error: --url: contour: 2 points; must be 3 to 2000 (a longer one goes in a "
-       "--contour file); dropped\n"},
+       "contour file); dropped\n"},
       {{"--url", "builtin=disk&d=abc"},
        "niwa: error: --url: d: 'abc' dropped, must be a number in [0.01, 100000]\n"},
       {{"--url", "builtin=disk&%3Cscript%3E=1"},
