@@ -311,6 +311,11 @@ await runBrowserTest(async (server, browser) => {
     }
     serial = Number((await page.evaluate(() => ({ ...document.documentElement.dataset }))).ivySerial);
     await page.setInputFiles('#mesh-file', { name: 'rock1.glb', mimeType: 'model/gltf-binary', buffer: fs.readFileSync(file) });
+    // The last hostile file left status 'error', which waitIvy takes as settled: wait for the rock.
+    await page.waitForFunction((n) => {
+      const d = document.documentElement.dataset;
+      return d.supportName === 'rock1.glb' && Number(d.ivySerial) > n && d.status !== 'growing';
+    }, serial, { timeout: TIMEOUT, polling: 200 }).catch(() => {});
     data = await waitIvy(page, serial);
     check('after the hostile files the page grows ivy on a dropped rock again', data.status === 'ready' && data.supportName === 'rock1.glb' && Number(data.internodes) > 10,
       `${data.status} ${data.supportName} ${data.internodes} ${data.error || data.meshError || ''}`);

@@ -173,7 +173,10 @@ std::string TerrainParseContour(const std::string& text) {
                       "GeoJSON Polygon or LineString"));
   }
   if (!file.ok()) {
-    return ErrorRecordJson(file.status());
+    // The file's own error names "contour" (a key inside it, "points: given twice", is the
+    // message).
+    return ErrorRecordJson(file.status().field() == "contour" ? file.status()
+                                                              : file.status().Within("contour"));
   }
   terrain::TerrainState probe;
   const Status fits = terrain::SetTerrainPoints(file->ring, &probe);

@@ -25,10 +25,13 @@ export function errorLineIn(host) {
 }
 
 export class FieldErrors {
-  // basics: {key: id of its error element}; panel(): the page's ParamPanel or null.
-  constructor(basics, panel) {
+  // basics: {key: id of its error element}; panel(): the page's ParamPanel or null; orphan(message):
+  // shows an error whose field has no line on this page (e.g. a file's inner key), so that no
+  // error is ever dropped unseen (issue 34: a contour file's repeated key vanished).
+  constructor(basics, panel, orphan = () => {}) {
     this.basics = basics;
     this.panel = panel;
+    this.orphan = orphan;
   }
 
   #line(key) {
@@ -48,9 +51,13 @@ export class FieldErrors {
     const key = error && typeof error === 'object' ? error.field || '' : '';
     const message = error && typeof error === 'object' ? String(error.message || '') : '';
     this.panel()?.markError(key);
-    if (!key) return;
-    const line = this.#line(key);
-    if (!line) return;
+    this.orphan('');
+    if (!key && !message) return;
+    const line = key ? this.#line(key) : null;
+    if (!line) {
+      this.orphan(message);
+      return;
+    }
     line.textContent = message;
     line.hidden = false;
     setHooks({ fieldError: key });

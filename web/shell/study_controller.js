@@ -37,7 +37,7 @@ export class StudyController {
     this.pendingStage = null; // the earliest stage the edits since the last update touched
     this.debounceTimer = 0;
     this.exports = new Map(); // request id -> {name, type}
-    this.fieldErrors = new FieldErrors(fields, panel);
+    this.fieldErrors = new FieldErrors(fields, panel, (message) => notices.set('field', message));
     this.worker = new WorkerClient(study, {
       study,
       onFailure: (text) => {
