@@ -9,6 +9,7 @@
 // row or value by hand: a new study page is covered by its table.
 import { execFileSync } from 'node:child_process';
 import { NATIVE, TIMEOUT, check, newContext, runBrowserTest, watchPage } from './harness.mjs';
+import { glbBytes } from '../support/glb_bytes.mjs';
 
 const declared = JSON.parse(execFileSync(NATIVE, ['flags'], { encoding: 'utf8' }));
 const pageOf = (study) => (study === 'tree' ? 'index.html' : `${study}.html`);
@@ -60,18 +61,7 @@ async function stillWorks(page) {
   }
 }
 
-function glb(json, binLength = 0) {
-  const text = Buffer.from(JSON.stringify(json));
-  const pad = (4 - (text.length % 4)) % 4;
-  const chunk = Buffer.concat([text, Buffer.alloc(pad, 0x20)]);
-  const header = Buffer.alloc(12);
-  header.write('glTF', 0); header.writeUInt32LE(2, 4);
-  header.writeUInt32LE(12 + 8 + chunk.length + (binLength ? 8 + binLength : 0), 8);
-  const jh = Buffer.alloc(8); jh.writeUInt32LE(chunk.length, 0); jh.write('JSON', 4);
-  const parts = [header, jh, chunk];
-  if (binLength) { const bh = Buffer.alloc(8); bh.writeUInt32LE(binLength, 0); bh.write('BIN\0', 4); parts.push(bh, Buffer.alloc(binLength)); }
-  return Buffer.concat(parts);
-}
+const glb = (json, binLength = 0) => glbBytes(JSON.stringify(json), Buffer.alloc(binLength));
 const deep = (n) => '['.repeat(n) + ']'.repeat(n);
 const FILES = {
   '#mesh-file': {

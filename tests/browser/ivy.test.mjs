@@ -13,6 +13,7 @@ import {
   ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, snapshotCanvas,
   snapshotDifference, watchPage,
 } from './harness.mjs';
+import { glbBytes as glb, triangleBin } from '../support/glb_bytes.mjs';
 
 const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => k !== 'ms' && !k.startsWith('ms_')));
 
@@ -269,22 +270,6 @@ await runBrowserTest(async (server, browser) => {
   // index, 1,000,001 node instances) end in a notice naming the file and what is wrong (no WASM trap, no stack
   // overflow, no stuck worker), and the page still grows ivy afterwards.
   {
-    const glb = (json, bin) => {
-      let text = Buffer.from(json);
-      text = Buffer.concat([text, Buffer.alloc((4 - (text.length % 4)) % 4, 0x20)]);
-      const header = Buffer.alloc(20);
-      header.writeUInt32LE(0x46546c67, 0); header.writeUInt32LE(2, 4); header.writeUInt32LE(20 + text.length + 8 + bin.length, 8);
-      header.writeUInt32LE(text.length, 12); header.writeUInt32LE(0x4e4f534a, 16);
-      const binHeader = Buffer.alloc(8);
-      binHeader.writeUInt32LE(bin.length, 0); binHeader.writeUInt32LE(0x004e4942, 4);
-      return Buffer.concat([header, text, binHeader, bin]);
-    };
-    const triangleBin = (i2) => {
-      const b = Buffer.alloc(44);
-      [0, 0, 0, 1, 0, 0, 0, 1, 0].forEach((v, i) => b.writeFloatLE(v, 4 * i));
-      b.writeInt16LE(0, 36); b.writeInt16LE(1, 38); b.writeInt16LE(i2, 40);
-      return b;
-    };
     const gltf = ({ asset = '{"version": "2.0"}', sceneNodes = '[0]', count = '3', indexType = 5123 } = {}) =>
       `{"asset": ${asset}, "scene": 0, "scenes": [{"nodes": ${sceneNodes}}], "nodes": [{"mesh": 0}], ` +
       '"meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}], ' +

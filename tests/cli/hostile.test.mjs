@@ -15,6 +15,7 @@ import { existsSync, mkdirSync, mkdtempSync, readdirSync, rmSync, writeFileSync,
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { check, finish, native, wasm } from '../support/cli_pair.mjs';
+import { glbBytes } from '../support/glb_bytes.mjs';
 
 const work = mkdtempSync(join(tmpdir(), 'niwa-hostile-'));
 const files = join(work, 'in');
@@ -42,19 +43,8 @@ const TEXT = ['', '\x1b]0;x\x07', 'x'.repeat(100000), 'a\nb', '%00', '../..', '\
 // Hostile input files, made once.
 const file = (name, bytes) => { const path = join(files, name); writeFileSync(path, bytes); return path; };
 const deep = (n) => '['.repeat(n) + ']'.repeat(n);
-function glb(json, binLength = 0, declaredLength = null) {
-  const text = Buffer.from(JSON.stringify(json));
-  const pad = (4 - (text.length % 4)) % 4;
-  const jsonChunk = Buffer.concat([text, Buffer.alloc(pad, 0x20)]);
-  const bin = Buffer.alloc(binLength);
-  const header = Buffer.alloc(12);
-  const total = 12 + 8 + jsonChunk.length + (binLength ? 8 + binLength : 0);
-  header.write('glTF', 0); header.writeUInt32LE(2, 4); header.writeUInt32LE(declaredLength ?? total, 8);
-  const jh = Buffer.alloc(8); jh.writeUInt32LE(jsonChunk.length, 0); jh.write('JSON', 4);
-  const parts = [header, jh, jsonChunk];
-  if (binLength) { const bh = Buffer.alloc(8); bh.writeUInt32LE(binLength, 0); bh.write('BIN\0', 4); parts.push(bh, bin); }
-  return Buffer.concat(parts);
-}
+const glb = (json, binLength = 0, declaredLength = null) =>
+  glbBytes(JSON.stringify(json), Buffer.alloc(binLength), { declaredLength });
 const fifo = join(files, 'fifo.glb');
 const madeFifo = spawnSync('mkfifo', [fifo]).status === 0;
 const INPUTS = {

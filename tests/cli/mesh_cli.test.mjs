@@ -8,6 +8,7 @@ import { join } from 'node:path';
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 import { MeshBVH } from 'three-mesh-bvh';
+import { glbBytes as glb, triangleBin } from '../support/glb_bytes.mjs';
 
 const root = process.env.NIWA_ROOT;
 const native = process.env.NIWA_NATIVE;
@@ -64,24 +65,6 @@ for (const bin of binaries) {
 // 1b. Hostile files built here (issue 34): deep JSON in extras (a stack overflow before), an accessor whose size
 // wraps 64 and 32 bits, a negative short index, a millionfold instancing node graph, a FIFO: exit 2, one line, the
 // same line natively and in WASM, quickly.
-function glb(json, bin) {
-  let text = Buffer.from(json);
-  text = Buffer.concat([text, Buffer.alloc((4 - (text.length % 4)) % 4, 0x20)]);
-  const body = Buffer.concat([bin, Buffer.alloc((4 - (bin.length % 4)) % 4, 0)]);
-  const header = Buffer.alloc(20);
-  header.writeUInt32LE(0x46546c67, 0); header.writeUInt32LE(2, 4);
-  header.writeUInt32LE(20 + text.length + 8 + body.length, 8);
-  header.writeUInt32LE(text.length, 12); header.writeUInt32LE(0x4e4f534a, 16);
-  const binHeader = Buffer.alloc(8);
-  binHeader.writeUInt32LE(body.length, 0); binHeader.writeUInt32LE(0x004e4942, 4);
-  return Buffer.concat([header, text, binHeader, body]);
-}
-const triangleBin = (i2 = 2) => {
-  const b = Buffer.alloc(44);
-  [0, 0, 0, 1, 0, 0, 0, 1, 0].forEach((v, i) => b.writeFloatLE(v, 4 * i));
-  b.writeInt16LE(0, 36); b.writeInt16LE(1, 38); b.writeInt16LE(i2, 40);
-  return b;
-};
 const gltfJson = ({ asset = '{"version": "2.0"}', sceneNodes = '[0]', nodes = '[{"mesh": 0}]', count = '3', indexType = 5123 } = {}) =>
   `{"asset": ${asset}, "scene": 0, "scenes": [{"nodes": ${sceneNodes}}], "nodes": ${nodes}, ` +
   '"meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}], ' +
