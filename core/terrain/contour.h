@@ -3,6 +3,7 @@
 // interpolate anything (core/terrain/offset, generate, heightfield).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -19,6 +20,22 @@ struct Vec2 {
 // A closed simple polygon p_0..p_{n-1} (the closing edge p_{n-1} -> p_0 is implied), counter-
 // clockwise (interior on the left), every coordinate on the 1/kGridPerMetre m grid.
 using Ring = std::vector<Vec2>;
+
+// The axis-aligned box of a ring (not empty), in metres.
+struct RingBox {
+  double x0, y0, x1, y1;
+  double span() const { return std::max(x1 - x0, y1 - y0); }  // its longer side
+};
+inline RingBox BoundsOf(const Ring& ring) {
+  RingBox b{ring[0].x, ring[0].y, ring[0].x, ring[0].y};
+  for (const Vec2& v : ring) {
+    b.x0 = std::min(b.x0, v.x);
+    b.x1 = std::max(b.x1, v.x);
+    b.y0 = std::min(b.y0, v.y);
+    b.y1 = std::max(b.y1, v.y);
+  }
+  return b;
+}
 
 // Coordinates of every contour leaving the generator are multiples of 1/kGridPerMetre metres, so
 // orientation tests on them are exact integer arithmetic (int64 with __int128 products).

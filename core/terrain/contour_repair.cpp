@@ -106,14 +106,7 @@ LinkFit FitContourToLink(const Ring& ring, std::size_t max_chars) {
   LinkFit fit;
   fit.ring = ring;
   if (ring.size() < 3 || EncodeContourPoints(ring).size() <= max_chars) return fit;
-  double x0 = ring[0].x, x1 = x0, y0 = ring[0].y, y1 = y0;
-  for (const Vec2& v : ring) {
-    x0 = std::min(x0, v.x);
-    x1 = std::max(x1, v.x);
-    y0 = std::min(y0, v.y);
-    y1 = std::max(y1, v.y);
-  }
-  const double span = std::max(x1 - x0, y1 - y0);
+  const double span = BoundsOf(ring).span();
   double q = 1.0 / 1024;
   while (q * 2 <= span / 4096) q *= 2;
   Ring snapped;

@@ -259,13 +259,8 @@ Ring RemoveCollinearToShare(const Ring& ring, double d0, double long_frac, doubl
 }
 
 Vec2 PoleOfInaccessibility(const Ring& ring, double* radius) {
-  double x0 = ring[0].x, x1 = x0, y0 = ring[0].y, y1 = y0;
-  for (const Vec2& v : ring) {
-    x0 = std::min(x0, v.x);
-    x1 = std::max(x1, v.x);
-    y0 = std::min(y0, v.y);
-    y1 = std::max(y1, v.y);
-  }
+  const RingBox box = BoundsOf(ring);
+  const double x0 = box.x0, x1 = box.x1, y0 = box.y0, y1 = box.y1;
   Vec2 best{0.5 * (x0 + x1), 0.5 * (y0 + y1)};
   double best_r = InsideDouble(ring, best) ? RingDistance(ring, best) : -1;
   const int k = 16;

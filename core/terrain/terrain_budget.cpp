@@ -228,14 +228,9 @@ GridSize TerrainGridSize(const Terrain& t, int res) {
   if (t.contours.empty() || t.contours[0].ring.empty() || res <= 0) return {};
   // As heightfield.cpp's GridFor: res cells along the root's longer side, one of margin a side.
   const Ring& root = t.contours[0].ring;
-  double x0 = root[0].x, x1 = x0, y0 = root[0].y, y1 = y0;
-  for (const Vec2& v : root) {
-    x0 = std::min(x0, v.x);
-    x1 = std::max(x1, v.x);
-    y0 = std::min(y0, v.y);
-    y1 = std::max(y1, v.y);
-  }
-  const double span = std::max(x1 - x0, y1 - y0);
+  const RingBox box = BoundsOf(root);
+  const double x0 = box.x0, x1 = box.x1, y0 = box.y0, y1 = box.y1;
+  const double span = box.span();
   const double cell = span / res;
   if (!(cell > 0)) return {};
   return {std::ceil((x1 - x0) / cell) + 2, std::ceil((y1 - y0) / cell) + 2};
