@@ -24,6 +24,7 @@
 //    budget) has its overlap sweep checked against EstimateIvyStats as the CLI does; when it does
 //    not fit, the sweep is left out with the line as a notice (overlap_pairs null), else measured.
 // NIWA_BUDGET_PARTS=1,2,3,4,5,6 (any of them) runs only those parts; all by default.
+// scripts/test: solo (it times the page's answers, so it runs alone, not beside another browser test).
 import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';

@@ -3,6 +3,7 @@
 // on the GPU) in hybrid and full mode; two instances of one unique tree far apart along the wind are
 // at different phases with a travelling gust front and wave, and identical without them; Still
 // restores the rest image exactly. Screenshots: build/artifacts/grove-wind*.png.
+// scripts/test: solo (it times the page's answers, so it runs alone, not beside another browser test).
 import path from 'node:path';
 import { ARTIFACTS, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, snapshotCanvas, snapshotDifference, waitGroveDrawn, watchPage } from './harness.mjs';
 

@@ -6,6 +6,7 @@
 // PerformanceObserver('longtask'). Also: the ivy and terrain pages' Cancel (back to the last
 // finished result) and their page budgets (a truncated ivy, a refused terrain res, named).
 // The numbers are printed and copied into docs/budgets.md ("Responsiveness").
+// scripts/test: solo (it times the page's answers, so it runs alone, not beside another browser test).
 import path from 'node:path';
 import { ARTIFACTS, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, waitReady, watchPage } from './harness.mjs';
 

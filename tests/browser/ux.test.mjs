@@ -5,6 +5,7 @@
 // long tasks of a 30 -> 15 year change (numbers to build/artifacts/ux-longtasks.json); Blow moves
 // at once; touch targets >= 44 px and tap-to-cut at a phone viewport. Screenshots:
 // build/artifacts/ux-*.png.
+// scripts/test: solo (it times the page's answers, so it runs alone, not beside another browser test).
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';

@@ -3,6 +3,7 @@ import { spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, writeFileSync, readdirSync, chmodSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { cliArgv } from '../support/cli_pair.mjs';
 
 const root = process.env.NIWA_ROOT;
 const binaries = [process.env.NIWA_NATIVE, join(root, 'build/wasm/bin/niwa.js')];
@@ -27,9 +28,7 @@ const cases = [
 ];
 for (const bin of binaries) {
   const label = bin.endsWith('.js') ? 'wasm' : 'native';
-  const exec = (args) => bin.endsWith('.js')
-    ? spawnSync('node', [bin, ...args], { encoding: 'utf8' })
-    : spawnSync(bin, args, { encoding: 'utf8' });
+  const exec = (args) => spawnSync(...cliArgv(bin, args), { encoding: 'utf8' });
   for (const [args, pattern] of cases) {
     const r = exec(args);
     const lines = r.stderr.trimEnd().split('\n');

@@ -9,6 +9,7 @@ import { createRequire } from 'node:module';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
+import { cliArgv } from '../support/cli_pair.mjs';
 
 const native = process.env.NIWA_NATIVE;
 const root = process.env.NIWA_ROOT;
@@ -202,7 +203,7 @@ try {
   // ---- sway export: skinned mesh + one animation clip ----
   const wasm = process.env.NIWA_WASM ?? join(root, 'build/wasm/bin/niwa.js');
   const runners = [{ label: 'native', cmd: native, pre: [] }];
-  if (existsSync(wasm)) runners.push({ label: 'wasm', cmd: process.execPath, pre: [wasm] });
+  if (existsSync(wasm)) runners.push({ label: 'wasm', cmd: cliArgv(wasm, [])[0], pre: cliArgv(wasm, [])[1] });
   else console.log(`note: no WASM CLI at ${wasm}; sway .glb checked on the native CLI only`);
   const swayArgs = ['tree', 'sway', '--preset', 'sakura-thesis', '--years', '6', '--wind', '10', '--gust', '0:4',
                     '--duration', '6'];

@@ -14,7 +14,7 @@ import { spawn as spawnChild, spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, mkdtempSync, readdirSync, rmSync, writeFileSync, symlinkSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { check, finish, native, wasm } from '../support/cli_pair.mjs';
+import { check, cliArgv, finish, native, wasm } from '../support/cli_pair.mjs';
 import { glbBytes } from '../support/glb_bytes.mjs';
 
 const work = mkdtempSync(join(tmpdir(), 'niwa-hostile-'));
@@ -179,7 +179,7 @@ for (const study of declared.studies) {
 const show = (args) => JSON.stringify(args.map((a) => (a.length > 60 ? `${a.slice(0, 30)}...(${a.length})` : a)));
 function runOnce(cli, args) {
   return new Promise((resolve) => {
-    const [cmd, argv] = cli.endsWith('.js') ? ['node', [cli, ...args]] : [cli, args];
+    const [cmd, argv] = cliArgv(cli, args);
     const child = spawnChild(cmd, argv, { timeout: 30000, stdio: ['ignore', 'ignore', 'pipe'] });
     let stderr = '';
     child.stderr.setEncoding('utf8');

@@ -9,6 +9,7 @@ import * as THREE from 'three';
 import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 import { MeshBVH } from 'three-mesh-bvh';
 import { glbBytes as glb, triangleBin } from '../support/glb_bytes.mjs';
+import { cliArgv } from '../support/cli_pair.mjs';
 
 const root = process.env.NIWA_ROOT;
 const native = process.env.NIWA_NATIVE;
@@ -16,9 +17,7 @@ const wasm = join(root, 'build/wasm/bin/niwa.js');
 const data = join(root, 'tests/data/meshes');
 let passed = 0, failed = 0;
 const check = (ok, what) => { ok ? passed++ : failed++; console.log(`${ok ? 'PASS' : 'FAIL'} ${what}`); };
-const exec = (bin, args, cwd) => bin.endsWith('.js')
-  ? spawnSync('node', [bin, ...args], { encoding: 'utf8', cwd })
-  : spawnSync(bin, args, { encoding: 'utf8', cwd });
+const exec = (bin, args, cwd) => spawnSync(...cliArgv(bin, args), { encoding: 'utf8', cwd });
 const json = (bin, args) => {
   const r = exec(bin, args);
   if (r.status !== 0) throw new Error(`${bin} ${args.join(' ')}: exit ${r.status}: ${r.stderr}`);
@@ -110,7 +109,7 @@ for (const bin of binaries) {
     for (const args of [['mesh', 'stats', '--mesh', join(hostileDir, name)],
       ['ivy', 'grow', '--mesh', join(hostileDir, name)]]) {
       const started = Date.now();
-      const r = spawnSync(bin.endsWith('.js') ? 'node' : bin, bin.endsWith('.js') ? [bin, ...args] : args,
+      const r = spawnSync(...cliArgv(bin, args),
         { encoding: 'utf8', cwd: hostileDir, timeout: 30000 });
       const ms = Date.now() - started;
       const line = r.stderr.trimEnd();

@@ -8,6 +8,7 @@ import { createRequire } from 'node:module';
 import { pathToFileURL } from 'node:url';
 import draco3d from 'draco3d';
 import { importMesh, parseGlb, dracoPrimitiveCount } from '../../web/mesh/mesh_import.js';
+import { cliArgv } from '../support/cli_pair.mjs';
 
 const root = process.env.NIWA_ROOT;
 const native = process.env.NIWA_NATIVE;
@@ -16,7 +17,7 @@ const data = join(root, 'tests/data/meshes');
 let passed = 0, failed = 0;
 const check = (ok, what) => { ok ? passed++ : failed++; console.log(`${ok ? 'PASS' : 'FAIL'} ${what}`); };
 const run = (bin, args) => {
-  const r = bin.endsWith('.js') ? spawnSync('node', [bin, ...args], { encoding: 'utf8' }) : spawnSync(bin, args, { encoding: 'utf8' });
+  const r = spawnSync(...cliArgv(bin, args), { encoding: 'utf8' });
   if (r.status !== 0) return { error: r.stderr.trim() };
   const o = JSON.parse(r.stdout);
   for (const k of Object.keys(o)) if (k.startsWith('ms_') || k === 'draco_primitives') delete o[k];
