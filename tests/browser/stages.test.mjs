@@ -1,8 +1,9 @@
 // Browser test of stage-aware edits on the tree page: node tests/browser/stages.test.mjs.
 // An edit of a wind or sway row (stage "sway") or a render row (stage "view") must not regrow the
-// tree: the page sends 'restage' and the worker re-skins or re-views the tree it has. A growth row
-// regrows it once. Counts from the page's hooks: data-grow-requests ('update' messages sent),
-// data-restage-requests and data-trees-grown (trees the worker grew, from each tree's `grown`).
+// tree: the page's study controller sends 'update' with that stage and the worker re-skins or
+// re-views the tree it has. A growth row regrows it once. Counts from the page's hooks:
+// data-grow-requests (updates of stage 'grow'), data-restage-requests (of a later stage) and
+// data-trees-grown (trees the worker grew, from each tree's `grown`).
 import path from 'node:path';
 import {
   ARTIFACTS, TIMEOUT, check, nativeStats, newContext, runBrowserTest, waitReady, watchPage,

@@ -4,16 +4,14 @@
 // (px for the built-in scenes, metres for most assets); uModel scales the support into a view of
 // about ten units so one orbit camera fits every scene. The step scrubber hides what was born after
 // step k in the vertex shader (aBirth), so replaying the growth needs no regrow.
-// It draws alone on its canvas (render) or as a layer of a Frame (web/gl/frame.js: frameSteps,
-// under the frame's camera and sun, in the frame's world: the scene's units times `unitScale`,
-// not fitted to a view of ten units).
+// A StudyLayer (web/gl/frame.js): it draws alone on its canvas (render) or as a layer of a Frame
+// (frameSteps, under the frame's camera and sun, in the frame's world: the scene's units times
+// `unitScale`, not fitted to a view of ten units); both from the same layerSteps.
 // Does not: talk to the worker, pick by id (a click is a ray in scene units; the worker's BVH
 // answers it), or know the growth model.
-import { createContext, resizeCanvas } from '../gl/context.js';
-import { defaultSunDirection } from '../gl/sun.js';
 import { floatAttribute, staticBuffer, viewOf } from '../gl/buffers.js';
 import { uploadInParts } from '../gl/chunked_upload.js';
-import { ProgressiveFrame } from '../gl/progressive_frame.js';
+import { StudyLayer } from '../gl/frame.js';
 import { loadPrograms } from '../gl/program.js';
 import { imageTexture } from '../gl/textures.js';
 
@@ -62,14 +60,12 @@ export function birthCounter(indices, birth) {
   };
 }
 
-export class IvyRenderer {
+export class IvyRenderer extends StudyLayer {
   // target: a canvas (the renderer makes its context) or a Frame ({canvas, gl}: a layer of it,
   // drawn in metres: one scene unit is `unitScale` metres, 1 for a metric scene such as a tree's).
+  // Alone, the support is fitted to a view of VIEW_SIZE units.
   constructor(target, { unitScale = 1 } = {}) {
-    const frame = target && target.gl && target.canvas ? target : null;
-    this.canvas = frame ? frame.canvas : target;
-    this.gl = frame ? frame.gl : createContext(this.canvas, 'the ivy');
-    this.fitView = !frame;  // alone: the support fitted to a view of VIEW_SIZE units
+    super(target, { what: 'the ivy', study: 'ivy' });  // web/gl/sun.js: the one place of the pages' suns
     this.unitScale = unitScale;
     this.parts = {};  // name -> {vao, buffers, count, births}
     this.model = [0, 0, 0, 1];
@@ -78,12 +74,8 @@ export class IvyRenderer {
     this.leafTexture = null;  // the worker's leaf texture (core/ivy/ivy_leaf_texture.h), uploaded
     this.buds = { vao: null, buffers: [], count: 0 };
     this.seeds = { vao: null, buffer: null, count: 0 };
-    this.light = defaultSunDirection('ivy');  // web/gl/sun.js: the one place of the pages' suns
-    this.boundsView = null;
     this.ivyUploads = 0;     // setIvy calls so far (a newer one drops an older upload)
-    this.progress = new ProgressiveFrame(this.gl);  // the frame being drawn in parts
     this.frameTotals = { triangles: 0, drawCalls: 0, primitives: 0, leavesTextured: false };
-    this.scale = 1;
     this.uploading = false;  // an ivy is going up in parts
   }
 
@@ -348,31 +340,10 @@ export class IvyRenderer {
     return { origin: eye.map((e, i) => e / s + this.model[i]), direction: normalize(dir) };
   }
 
-  // quality: {scale} from a FrameGovernor (omitted: full size). budget: primitives this call may
-  // draw; a bigger frame is drawn over several calls (web/gl/progressive_frame.js) and returns
-  // partial: true until the call that finishes it (call again with resume: true). Returns what
-  // the whole frame draws (leavesTextured: the leaves drawn with the leaf texture).
-  render(camera, quality = null, { budget = Infinity, resume = false } = {}) {
-    const gl = this.gl;
-    if (!resume || !this.progress.pending()) this.#startFrame(camera, quality, budget);
-    const { primitives, done } = this.progress.run(budget);
-    gl.bindVertexArray(null);
-    return { ...this.frameTotals, partial: !done, drawnPrimitives: primitives };
-  }
-
-  #startFrame(camera, quality, budget) {
-    this.scale = quality?.scale || 1;
-    resizeCanvas(this.canvas, this.scale);  // cleared by progress.begin (canvas or offscreen)
-    const view = { viewProjection: camera.viewProjection(this.canvas.width / this.canvas.height), eye: camera.position(),
-      light: this.light, scale: this.scale };
-    const { steps, totals } = this.layerSteps(view);
-    this.frameTotals = totals;
-    this.progress.begin(this.canvas, steps, budget);
-  }
-
   // The ivy's steps of a frame (web/gl/progressive_frame.js) under `view` ({viewProjection, eye,
   // light: the unit direction towards the sun, scale: the drawing buffer's}): the support and the
-  // ivy's parts, then the markers. Returns {steps, totals}.
+  // ivy's parts, then the markers. Returns {steps, totals} (leavesTextured: the leaves drawn with
+  // the leaf texture). Alone (StudyLayer.render) or in a Frame (StudyLayer.frameSteps).
   layerSteps(view) {
     const gl = this.gl;
     const { viewProjection: vp, eye, light } = view;
@@ -446,21 +417,10 @@ export class IvyRenderer {
     return { steps, totals };
   }
 
-  // ---- As a layer of a Frame (web/gl/frame.js) ----
-  // The ivy's steps under the frame's view (its camera and sun).
-  frameSteps(view) {
-    return this.layerSteps(view).steps;
-  }
-
-  // The support's (or the ivy's) box in the frame's world (metres), or null.
-  worldBounds() {
-    return this.fitView ? null : this.boundsView;
-  }
-
   // Frees the context's objects this renderer made.
   dispose() {
     const gl = this.gl;
-    this.progress.abort();
+    super.dispose();
     ++this.ivyUploads;  // an upload on its way is dropped
     for (const name of Object.keys(this.parts)) this.#drop(name);
     this.#dropBuds();

@@ -4,42 +4,35 @@
 // plan extent to about ten view units so one orbit camera fits every seed. The level scrubber
 // (setLevel) shows the mountain as it stands at level k: contours up to k, the surface cut at
 // h0 + k·Δh; nothing regrows.
-// It draws alone on its canvas (render) or as a layer of a Frame (web/gl/frame.js: frameSteps,
-// under the frame's camera and sun, in metres about the mountain's plan centre at its lowest height,
-// times `unitScale`, not fitted to a view of ten units).
+// A StudyLayer (web/gl/frame.js): it draws alone on its canvas (render) or as a layer of a Frame
+// (frameSteps, under the frame's camera and sun, in metres about the mountain's plan centre at its
+// lowest height, times `unitScale`, not fitted to a view of ten units); both from the same
+// layerSteps.
 // Does not: talk to the worker, draw the 2-D plan (plan_view.js), or know the generation methods.
-import { createContext, resizeCanvas } from '../gl/context.js';
-import { defaultSunDirection } from '../gl/sun.js';
 import { floatAttribute } from '../gl/buffers.js';
 import { uploadInParts } from '../gl/chunked_upload.js';
-import { ProgressiveFrame } from '../gl/progressive_frame.js';
+import { StudyLayer } from '../gl/frame.js';
 import { loadPrograms } from '../gl/program.js';
 import { ramp } from './plan_view.js';
 
 const SHADERS = new URL('../../shaders/terrain/', import.meta.url);
 const VIEW_SIZE = 10;  // the mountain's plan extent in view units
 
-export class TerrainRenderer {
+export class TerrainRenderer extends StudyLayer {
   // target: a canvas (the renderer makes its context) or a Frame ({canvas, gl}: a layer of it).
+  // Alone, the plan extent is fitted to VIEW_SIZE view units.
   constructor(target, { unitScale = 1 } = {}) {
-    const frame = target && target.gl && target.canvas ? target : null;
-    this.canvas = frame ? frame.canvas : target;
-    this.gl = frame ? frame.gl : createContext(this.canvas, 'the mountain');
-    this.fitView = !frame;  // alone: the plan extent fitted to VIEW_SIZE view units
+    super(target, { what: 'the mountain', study: 'terrain' });  // web/gl/sun.js: a low sun from the north-west
     this.unitScale = unitScale;
     this.surface = null;   // {vao, buffers, count}
     this.contours = null;  // {vao, buffers, count}
     this.model = [0, 0, 0, 1];
     this.visible = { contours: true, tint: true };
-    this.light = defaultSunDirection('terrain');  // web/gl/sun.js: a low sun from the north-west
-    this.boundsView = null;
     this.level = Infinity;
     this.top = Infinity;
     this.lineLevels = new Float32Array(0);  // sorted level of every contour line segment
     this.terrainUploads = 0;  // setTerrain calls so far (a newer one drops an older upload)
-    this.progress = new ProgressiveFrame(this.gl);  // the frame being drawn in parts
     this.frameTotals = { triangles: 0, lines: 0, drawCalls: 0, primitives: 0 };
-    this.scale = 1;
     this.uploading = false;   // a mountain is going up in parts
   }
 
@@ -149,31 +142,10 @@ export class TerrainRenderer {
     return this.boundsView;
   }
 
-  // quality: {scale} from a FrameGovernor (omitted: full size). budget: primitives this call may
-  // draw; a bigger frame is drawn over several calls (web/gl/progressive_frame.js: a res-1024
-  // surface is 2 M triangles) and returns partial: true until the call that finishes it (call
-  // again with resume: true). Returns what the whole frame draws.
-  render(camera, quality = null, { budget = Infinity, resume = false } = {}) {
-    const gl = this.gl;
-    if (!resume || !this.progress.pending()) this.#startFrame(camera, quality, budget);
-    const { primitives, done } = this.progress.run(budget);
-    gl.bindVertexArray(null);
-    return { ...this.frameTotals, partial: !done, drawnPrimitives: primitives };
-  }
-
-  #startFrame(camera, quality, budget) {
-    this.scale = quality?.scale || 1;
-    resizeCanvas(this.canvas, this.scale);  // cleared by progress.begin (canvas or offscreen)
-    const view = { viewProjection: camera.viewProjection(this.canvas.width / this.canvas.height), eye: camera.position(),
-      light: this.light, scale: this.scale };
-    const { steps, totals } = this.layerSteps(view);
-    this.frameTotals = totals;
-    this.progress.begin(this.canvas, steps, budget);
-  }
-
   // The mountain's steps of a frame (web/gl/progressive_frame.js) under `view` ({viewProjection,
   // light: the unit direction towards the sun}): the surface, then the contour lines. Returns
-  // {steps, totals}.
+  // {steps, totals}. Alone (StudyLayer.render: a res-1024 surface is 2 M triangles, drawn in parts)
+  // or in a Frame (StudyLayer.frameSteps).
   layerSteps(view) {
     const gl = this.gl;
     const { viewProjection: vp, light } = view;
@@ -234,20 +206,9 @@ export class TerrainRenderer {
     return { steps, totals };
   }
 
-  // ---- As a layer of a Frame (web/gl/frame.js) ----
-  // The mountain's steps under the frame's view (its camera and sun).
-  frameSteps(view) {
-    return this.layerSteps(view).steps;
-  }
-
-  // The mountain's box in the frame's world (metres times unitScale), or null.
-  worldBounds() {
-    return this.fitView ? null : this.boundsView;
-  }
-
   // Frees the context's objects this renderer made.
   dispose() {
-    this.progress.abort();
+    super.dispose();
     ++this.terrainUploads;  // an upload on its way is dropped
     this.#drop(this.surface);
     this.#drop(this.contours);

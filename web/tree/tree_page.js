@@ -2,20 +2,21 @@
 // table, keeps the state in location.hash (one history entry per committed edit), reruns only the
 // stage an edit invalidates (a growth row regrows; a wind or sway row re-skins and restarts the
 // sway; a render row rebuilds the hybrid view, all on the tree already grown) and draws each tree
-// with WebGL2. Growth runs in the worker (web/worker/tree_handler.js).
+// with WebGL2. Growth runs in the worker (web/worker/tree_handler.js); the worker, Cancel,
+// debounced and merged edits with their stage, history (with the camera and the year shown),
+// exports and errors are the study controller's (web/shell/study_controller.js).
 // Does not: parse or check states (the core does), or draw directly (tree_renderer.js does).
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { FrameGovernor } from '../gl/frame_governor.js';
 import { FrameLoop } from '../gl/frame_loop.js';
 import { viewOf } from '../gl/buffers.js';
-import { HashHistory } from '../shell/hash_history.js';
 import { ParamPanel } from '../shell/param_panel.js';
 import {
   Notices, copyLink, download, mountStudyNav, showEmbedDialog,
 } from '../shell/study_page.js';
+import { StudyController, numberOr } from '../shell/study_controller.js';
 import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
-import { WorkerClient, restartWorker } from '../shell/worker_client.js';
 import { ExportGuard, cutRefusal } from './cut_rules.js';
 import { EditFeedback } from './edit_feedback.js';
 import { GettingStarted } from './getting_started.js';
@@ -44,11 +45,22 @@ let gettingStarted = null;  // the Getting started controls (built with the pane
 // webgl: drawing problems; error: the core's line for the current state; hash: from decoding the
 // URL hash; prunes: prunes of the current state that cut nothing (from the grown tree).
 const notices = new Notices($('notice'), ['webgl', 'error', 'hash', 'prunes']);
-const worker = new WorkerClient('app', {
-  onFailure: (text) => {
-    inFlight = false;
-    notices.set('error', text);
-    setHooks({ status: 'error' });
+// The worker, Cancel (issue 16: whatever the worker is doing, growing, meshing or exporting, ends
+// now), debounced edits merged while a tree is on its way, their stage (a mesh, sway or view row
+// restages the tree grown), history, exports and errors (web/shell/study_controller.js).
+const controller = new StudyController({
+  study: 'tree', notices, ui, state: () => currentState(),
+  // The core's error beside its field (panel row, basic field, Getting started control) and the
+  // "stale" label over the view (edit_feedback.js).
+  errors: {
+    show: (error) => {
+      panel?.markError(error?.field || '');
+      feedback.showError(error || '');
+    },
+  },
+  onCancel: () => {
+    if (windPlaying) setWind(false);
+    return 'cancelled: back to the last finished tree';
   },
   // Cancel restarted the worker: init it again and grow the last finished state (or the hash's
   // preset defaults when nothing finished yet); the tree on screen stays until then.
@@ -56,38 +68,39 @@ const worker = new WorkerClient('app', {
     restarting = true;
     worker.request('init', { hash: lastGood ? `#${lastGood.hash}` : '' }, { done: ['ready'] });
   },
+  onError: (msg, when) => {
+    if (when === 'after') {
+      if (treeSerial === 0) feedback.fresh();  // no tree on screen to call stale
+      return false;
+    }
+    if (msg.control === 'motion') {  // no cheaper representation for this tree: full frames only
+      motionOff = true;
+      motionInFlight = false;
+      return true;
+    }
+    if (msg.control === 'wind') {  // the sway was refused (docs/budgets.md): the line beside Blow
+      if (windPlaying) setWind(false);
+      ui.windInfo.textContent = msg.message;
+      setHooks({ windError: msg.message });
+      return true;
+    }
+    return false;
+  },
+  // The hash carries the camera after the state; each history entry keeps the year shown.
+  viewHash: () => (renderer ? `&cam=${camera.toHash()}` : ''),
+  historyExtra: () => showYear,
+  // Back/forward (and undo/redo, which use them) restore the entry's state; a hash typed by the
+  // user arrives here too and becomes a new entry.
+  onRestore: (extra) => {
+    stopPlaying();
+    showYear = Number.isInteger(extra) ? extra : null;
+  },
+  onHistoryChange: () => updateUndoButtons(),
 });
+const { worker, history: history_ } = controller;
 let restarting = false;  // the next 'ready' answers a restart (the panel exists already)
 let freshOnDraw = false; // the next frame drawn shows the tree of the latest edit (clears "stale")
-// Coalescing (issue 17: a one-second slider drag regrew 17 trees): while a tree request is in
-// flight, a new edit is only queued; when the reply comes, one request carries the latest values.
-// A request in flight for longer than COALESCE_MS (a big tree) is superseded instead, so a long
-// grow never holds the newest edit back.
-const COALESCE_MS = 400;
-let inFlight = false;
-let inFlightSince = 0;
-let editQueued = false;
-let queueTimer = 0;
 let lastGood = null;     // {hash, state} of the last tree shown
-
-// Cancel: whatever the worker is doing (growing, meshing, exporting) ends now (issue 16).
-function showCancel(on) {
-  ui.cancel.hidden = !on;
-}
-ui.cancel.addEventListener('click', () => {
-  showCancel(false);
-  clearTimeout(debounceTimer);
-  editPending = false;
-  pendingStage = null;
-  inFlight = false;
-  editQueued = false;
-  clearTimeout(queueTimer);
-  if (windPlaying) setWind(false);
-  ui.progress.textContent = 'cancelled: back to the last finished tree';
-  ui.progressBar.hidden = true;
-  bumpHook('cancels');
-  restartWorker();
-});
 
 // ---------------------------------------------------------------- rendering
 const camera = new OrbitCamera();
@@ -251,33 +264,18 @@ async function startRenderer() {
 // ---------------------------------------------------------------- state
 let panel = null;
 let presets = [];
-let latestRequest = null;  // {id, kind, stage, state, commit}
+let latestRequest = null;  // {id, kind, state}
 let treeSerial = 0;
-let debounceTimer = 0;
 let currentPrunes = [];
 let showYear = null;       // the scrubber's year, or null for the state's full age
 let shownYear = 0;         // the age of the tree on screen
 let frameNext = true;      // frame the camera on the next tree
 let lastBounds = null;     // bounds of the tree on screen (Reset view)
 let selected = null;       // selected branch id
-let editPending = false;   // an edit waits for its debounce
-let pendingStage = null;   // the earliest stage the pending edits invalidate
-
-const history_ = new HashHistory({
-  onChange: updateUndoButtons,
-  // Back/forward (and undo/redo, which use them) restore the entry's state; a hash typed by the
-  // user arrives here too and becomes a new entry.
-  onRestore: ({ extra }) => {
-    stopPlaying();
-    showYear = Number.isInteger(extra) ? extra : null;
-    worker.request('decode', { hash: location.hash }, { done: ['decoded'] });
-  },
-});
 
 function currentState() {
-  const text = (input) => (input.value.trim() !== '' && Number.isFinite(Number(input.value)) ? Number(input.value) : input.value);
-  // The camera is appended by the page (writeHash), so the core hashes the tree state only.
-  return { preset: ui.preset.value, seed: text(ui.seed), years: text(ui.years), params: panel.values(), prunes: [...currentPrunes] };
+  // The camera is appended by the controller (viewHash), so the core hashes the tree state only.
+  return { preset: ui.preset.value, seed: numberOr(ui.seed), years: numberOr(ui.years), params: panel.values(), prunes: [...currentPrunes] };
 }
 
 function applyState(state) {
@@ -317,89 +315,32 @@ function syncScrubber() {
   ui.yearText.textContent = `${showYear ?? n} of ${n}`;
 }
 
-// Which stage an edit invalidates: grow (regrow), mesh, sway (re-skin and restart the sway on the
-// tree grown) or view (rebuild the hybrid view). Pending edits add up to the earliest stage.
-const STAGE_ORDER = ['grow', 'mesh', 'sway', 'view'];
-const earlierStage = (a, b) => (a === null ? b : STAGE_ORDER[Math.min(STAGE_ORDER.indexOf(a), STAGE_ORDER.indexOf(b))]);
-
-// kind: 'edit' (a committed change: new history entry), 'prune' (committed, camera kept), 'scrub'
-// (another age of the same state), 'restore' (undo/redo/back/forward). A growth edit also frames
-// the camera on the new tree; edits of later stages keep the tree and the camera.
+// kind: 'edit' (a committed change: new history entry; its stage is the earliest the edits since
+// the last update touched: grow regrows, mesh, sway and view restage the tree grown), 'prune'
+// (committed, camera kept), 'scrub' (another age of the same state), 'restore' (undo/redo/back/
+// forward). A growth edit also frames the camera on the new tree; edits of later stages keep the
+// tree and the camera.
 function sendUpdate(kind = 'edit') {
-  clearTimeout(debounceTimer);
   syncScrubber();
   const state = currentState();
-  // An edit still waiting for its debounce is committed by whichever request carries it.
-  const commit = kind === 'edit' || kind === 'prune' || editPending;
-  const stage = kind === 'edit' && pendingStage ? pendingStage : 'grow';
-  editPending = false;
-  pendingStage = null;
-  inFlight = true;
-  inFlightSince = performance.now();
-  editQueued = false;
-  clearTimeout(queueTimer);
   if (kind !== 'scrub' && treeSerial > 0) feedback.stale();
-  if (kind === 'edit' && stage === 'grow') frameNext = true;
-  setHooks({ status: 'growing' });
-  const message = { state };
-  if (showYear !== null) message.until = showYear;
-  let request;
-  if (stage === 'grow') {  // mesh, sway and view rows restage the tree grown (no regrowth)
-    request = worker.request('update', message, { group: 'tree', done: ['tree'] });
-    bumpHook('growRequests');
-  } else {
-    request = worker.request('restage', { ...message, stage }, { group: 'tree', done: ['tree'] });
-    bumpHook('restageRequests');
-  }
-  latestRequest = { id: request.id, kind, stage, state, commit };
+  const fields = { state };
+  if (showYear !== null) fields.until = showYear;
+  const request = controller.update(kind === 'edit' || kind === 'prune', fields,
+    { done: ['tree'], stage: kind === 'edit' ? undefined : 'grow' });
+  if (kind === 'edit' && request.stage === 'grow') frameNext = true;
+  latestRequest = { id: request.id, kind, state };
   return request;
 }
 
+// An edit of a control ('grow') or a panel row (its stage): one update after a quiet moment.
 function scheduleUpdate(stage = 'grow') {
-  editPending = true;
-  pendingStage = earlierStage(pendingStage, stage);
-  notices.set('hash', []);
-  clearTimeout(debounceTimer);
-  setHooks({ status: 'pending' });
   if (treeSerial > 0) feedback.stale();
-  debounceTimer = setTimeout(flushEdit, 250);
-}
-
-// Sends the pending edit, or queues it while a young tree request is in flight (the reply, or
-// the request's COALESCE_MS age, sends it).
-function flushEdit() {
-  if (!editPending) return;
-  const age = performance.now() - inFlightSince;
-  if (inFlight && age < COALESCE_MS) {
-    if (!editQueued) bumpHook('editsCoalesced');
-    editQueued = true;
-    clearTimeout(queueTimer);
-    queueTimer = setTimeout(flushEdit, COALESCE_MS - age);
-    return;
-  }
-  sendUpdate('edit');
-}
-
-// The latest request was answered (a tree or an error): send the queued edit, if any. True when
-// one was sent.
-function replyArrived() {
-  inFlight = false;
-  clearTimeout(queueTimer);
-  if (!editQueued || !editPending) return false;
-  sendUpdate('edit');
-  return true;
-}
-
-// The hash of the state `base` (the core's text) with the camera appended.
-function fullHash(base = history_.base) {
-  return `#${base}${base && renderer ? `&cam=${camera.toHash()}` : ''}`;
+  controller.schedule(() => sendUpdate('edit'), stage);
 }
 
 // Rewrites the current history entry (camera moves, scrubbing: no new entry).
-function writeHash() {
-  if (!history_.base) return;
-  history_.replace(fullHash(), showYear);
-}
+const writeHash = () => controller.writeHash();
 
 function updateUndoButtons() {
   ui.undo.disabled = !history_.canUndo();
@@ -468,17 +409,11 @@ worker.on('decoded', (msg) => {
 });
 
 worker.on('hash', (msg) => {
-  if (msg.id !== latestRequest?.id) return;
-  if (latestRequest.commit) {
-    history_.commit(msg.hash, fullHash(msg.hash), showYear);
-  } else {
-    history_.base = msg.hash;
-    writeHash();
-  }
+  if (controller.isLatest(msg)) controller.grown(msg.hash);
 });
 
 worker.on('progress', (msg) => {
-  showCancel(true);
+  controller.showWork(true);
   ui.progressBar.hidden = false;
   ui.progressBar.max = Math.max(1, msg.years);
   ui.progressBar.value = msg.year;
@@ -486,18 +421,16 @@ worker.on('progress', (msg) => {
 });
 
 worker.on('tree', (msg) => {
-  if (msg.id !== latestRequest?.id) return;
-  showCancel(false);
+  if (!controller.isLatest(msg)) return;
+  controller.showWork(false);
   if (history_.base) lastGood = { hash: history_.base, state: latestRequest.state };
   notices.set('error', '');
-  feedback.showError('');
+  controller.showFieldError('');
   exportGuard.update(msg.stats, msg.mesh);
   notices.set('prunes', msg.stats.idle_prunes || []);
-  panel.markError('');
   ui.stats.textContent = formatStats(msg.stats);
   // The limit that stopped the growth, named (max_internodes or the page's budget).
   ui.progress.textContent = msg.stats.truncated ? msg.stats.truncated_by || 'stopped at max_internodes' : '';
-  ui.progressBar.hidden = true;
   shownYear = msg.stats.years;
   table.showFullCounts(msg.mesh);
   // The worker's buffers reused (web/worker/transfer.js): what this reply's copy went into.
@@ -540,19 +473,17 @@ worker.on('tree', (msg) => {
   const sameTree = latestRequest.kind === 'scrub' || !msg.grown;
   select(sameTree ? selected : null);
   treeSerial += 1;
+  // (the stages a restage re-did, core TreeRun::Update, go to the hooks from the controller)
   if (msg.grown) bumpHook('treesGrown');
-  // The stages a restage re-did (core TreeRun::Update: a view row re-does the view only).
-  else setHooks({ restagedStages: (msg.stages || []).join(',') });
   setHooks({
     status: 'ready', treeSerial, internodes: msg.stats.internodes, leaves: msg.stats.leaves,
     flowers: msg.stats.flowers, year: msg.stats.years,
   });
   if (windPlaying) worker.post('wind', { play: true });  // sway the new tree (or new wind) too
   else showWind(null);
-  // "stale" stays while a newer edit waits (sent now if it was queued behind this tree); else it
-  // goes with the first frame of this tree.
-  const resent = replyArrived();
-  if (!resent && !editPending) {
+  // "stale" stays while a newer edit waits (the controller sends it now if it was queued behind
+  // this tree); else it goes with the first frame of this tree.
+  if (!controller.editWaiting()) {
     if (renderer) freshOnDraw = true; else feedback.fresh();
   }
 });
@@ -606,51 +537,6 @@ worker.on('pose', (msg) => {
   poseDrawPending = true;
   showWind(msg);
   requestFrame();
-});
-
-const exportIds = new Map();  // export request id -> its variant (undefined: the plain .glb / .json)
-worker.on('export', (msg) => {
-  exportIds.delete(msg.id);
-  if (exportIds.size === 0 && ui.progressBar.hidden) showCancel(false);
-  download(new Blob([msg.bytes], { type: msg.format === 'glb' ? 'model/gltf-binary' : 'application/json' }),
-    `${fileStem()}${msg.format === 'json' ? '-params' : ''}${msg.variant ? `-${msg.variant}` : ''}.${msg.format}`,
-    ui.shareStatus);
-  // For the tests: the last finished export, "format:bytes" (responsive.test.mjs waits for it).
-  setHooks({ exported: `${msg.format}:${msg.bytes.byteLength}` });
-});
-
-worker.on('error', (msg) => {
-  const variant = exportIds.get(msg.id);
-  if (exportIds.delete(msg.id)) {
-    // Refused before it started (the page budget's estimate, docs/budgets.md): the line beside the
-    // button that asked for it.
-    if (exportIds.size === 0 && ui.progressBar.hidden) showCancel(false);
-    ui.shareStatus.textContent = 'Export failed (the reason is beside its button).';
-    const button = refusals.show(variant, msg.message);
-    setHooks({ exportError: msg.message, exportErrorButton: button });
-    return;
-  }
-  if (msg.control === 'motion') {  // no cheaper representation for this tree: full frames only
-    motionOff = true;
-    motionInFlight = false;
-    return;
-  }
-  if (msg.control === 'wind') {  // the sway was refused (docs/budgets.md): the line beside Blow
-    if (windPlaying) setWind(false);
-    ui.windInfo.textContent = msg.message;
-    setHooks({ windError: msg.message });
-    return;
-  }
-  if (msg.id !== undefined && msg.id !== latestRequest?.id) return;
-  showCancel(false);
-  notices.set('error', msg.message);
-  panel?.markError(msg.field || '');
-  feedback.showError(msg);
-  if (treeSerial === 0) feedback.fresh();  // no tree on screen to call stale
-  ui.progress.textContent = '';
-  ui.progressBar.hidden = true;
-  setHooks({ status: 'error' });
-  replyArrived();  // a queued edit goes now (it may fix the error)
 });
 
 // ---------------------------------------------------------------- controls
@@ -809,13 +695,19 @@ function fileStem() {
   return `niwa-${ui.preset.value}-seed${ui.seed.value}-year${shownYear}`;
 }
 
-let exports = 0;
+// An export of the tree on screen (the plain .glb and .json, or a .glb variant of the export
+// panel: budget, LOD, sway); the worker's refusal (the page budget's estimate, docs/budgets.md)
+// goes beside the button that asked for it.
 function requestExport(format, fields = {}) {
-  const { id } = worker.request('export', { format, ...fields }, { group: `export-${++exports}`, done: ['export'] });
-  showCancel(true);
-  exportIds.set(id, fields.variant);
   refusals.clear();
   setHooks({ exportError: '', exportErrorButton: '' });
+  const name = `${fileStem()}${format === 'json' ? '-params' : ''}${fields.variant ? `-${fields.variant}` : ''}.${format}`;
+  controller.exportAs(format, name, format === 'glb' ? 'model/gltf-binary' : 'application/json', fields, {
+    onRefused: (msg) => {
+      const button = refusals.show(fields.variant, msg.message);
+      setHooks({ exportError: msg.message, exportErrorButton: button });
+    },
+  });
 }
 ui.downloadGlb.addEventListener('click', () => requestExport('glb'));
 const refusals = exportRefusals(mountExportPanel(ui.downloadGlb.parentElement, requestExport), ui.downloadGlb);
@@ -863,6 +755,6 @@ ui.embed.addEventListener('click', () => {
 });
 
 setHooks({ status: 'loading' });
-if (hookValue('growRequests') === undefined) setHooks({ growRequests: 0, restageRequests: 0, treesGrown: 0 });
+if (hookValue('treesGrown') === undefined) setHooks({ treesGrown: 0 });
 startRenderer();
 worker.request('init', { hash: location.hash }, { done: ['ready'] });

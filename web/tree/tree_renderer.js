@@ -1,11 +1,12 @@
 // The tree study's WebGL2 renderer: bark tubes, double-sided leaves and flowers on the shared
 // ground (full-polygon mode, textured as the .glb: shaders/tree/tree_textured.frag), or the hybrid mode of thesis chapter 4: texture cards from a card
 // atlas plus lines. Shaders (GLSL ES 3.00) are shaders/tree/*, including shaders/common/*.
-// It draws alone on its canvas (render: the ground, then the tree) or as a layer of a Frame
-// (web/gl/frame.js: frameSteps, the tree alone, under the frame's camera, sun and ground).
+// A StudyLayer (web/gl/frame.js): it draws alone on its canvas (render: the ground, then the tree)
+// or as a layer of a Frame (frameSteps, the tree alone, under the frame's camera, sun and ground);
+// both from the same layerSteps.
 // Does not: grow or mesh trees (the worker does), keep page state, or own the camera.
-import { createContext, drawingBufferSize, finishGpu, resizeCanvas } from '../gl/context.js';
-import { DEFAULT_SUNS, sunDirection } from '../gl/sun.js';
+import { drawingBufferSize, finishGpu, resizeCanvas } from '../gl/context.js';
+import { StudyLayer } from '../gl/frame.js';
 import { BufferPool } from '../gl/buffer_pool.js';
 import { UPLOAD_PARTS_ABOVE, gpuDone, planBytes, uploadInParts } from '../gl/chunked_upload.js';
 import { copyOf, floatAttribute, staticBuffer, uintAttribute, viewOf } from '../gl/buffers.js';
@@ -223,25 +224,20 @@ export async function paintAtlasInParts(gl, program, hybrid, fb, texture, light,
   return triangles;
 }
 
-export class Renderer {
+export class Renderer extends StudyLayer {
   // target: a canvas (the renderer makes its context) or a Frame ({canvas, gl}: a layer of it).
-  // Throws an Error with a readable message when WebGL2 is missing.
+  // Throws an Error with a readable message when WebGL2 is missing. The sun: the tree's sun rows'
+  // defaults (setSun follows the page's rows).
   constructor(target) {
-    const frame = target && target.gl && target.canvas ? target : null;
-    this.canvas = frame ? frame.canvas : target;
-    const gl = frame ? frame.gl : createContext(this.canvas, 'the tree');
-    this.gl = gl;
+    super(target, { what: 'the tree', study: 'tree' });
+    const gl = this.gl;
     this.parts = {};
     this.center = [0, 0, 0];
     this.shadowRadius = 1;
     this.extent = 20;
-    this.setSun(DEFAULT_SUNS.tree.elevation, DEFAULT_SUNS.tree.azimuth);
     this.lastFrame = { triangles: 0, drawCalls: 0, cpuMs: 0 };
-    this.scale = 1;  // the drawing buffer's scale of the last frame (FrameGovernor)
     this.motion = null;  // {hybrid, drawList}: the cheaper representation while moving
-    this.progress = new ProgressiveFrame(this.gl);  // the frame being drawn in parts
     this.frameTotals = { triangles: 0, lines: 0, drawCalls: 0, mode: 'full', cheap: 0 };
-    this.frameCpuMs = 0;
     this.pool = new BufferPool(gl);  // the tree's mesh buffers, reused tree after tree
     this.poseTexture = gl.createTexture();
     this.poseNodes = 0;
@@ -304,13 +300,6 @@ export class Renderer {
     this.wind = Number(wind) || 0;
     this.swayTime = Number(time) || 0;
     this.swaying = true;
-  }
-
-  // The light model's sun (the core's convention): elevation and azimuth in degrees, y up, azimuth
-  // measured from +x towards +z; direction = (cos el cos az, sin el, cos el sin az), towards the sun.
-  setSun(elevationDeg, azimuthDeg) {
-    const light = sunDirection(elevationDeg, azimuthDeg);
-    if (light) this.light = light;
   }
 
   async init(shaderBase = SHADERS) {
@@ -683,34 +672,17 @@ export class Renderer {
     resizeCanvas(this.canvas, this.scale);
   }
 
-  // quality: {scale, cheap} from a FrameGovernor (web/gl/frame_governor.js), or omitted for full
-  // quality; scale < 1 draws into a smaller drawing buffer (the browser stretches it), cheap > 0
-  // draws a moving full-mode tree as its hybrid scene (setMotionHybrid) when it is there and
-  // leaves out the x-ray selection pass. budget: primitives this call may draw; a bigger frame is
-  // drawn over several calls (web/gl/progressive_frame.js) and returns partial: true until the call
-  // that finishes it: call again with resume: true (the same frame goes on; anything else starts a
-  // new frame). Returns what the whole frame draws ({triangles, lines, drawCalls, mode, ...}).
-  render(camera, quality = null, { budget = Infinity, resume = false } = {}) {
-    if (!this.treeProgram) return;
-    const start = performance.now();
-    if (!resume || !this.progress.pending()) this.#startFrame(camera, quality, budget);
-    const { primitives, done } = this.progress.run(budget);
-    this.frameCpuMs += performance.now() - start;
-    this.lastFrame = { ...this.frameTotals, cpuMs: this.frameCpuMs, scale: this.scale, partial: !done, drawnPrimitives: primitives };
-    this.gl.bindVertexArray(null);
-    return this.lastFrame;
+  // Alone (StudyLayer.render draws it: quality {scale, cheap} from a FrameGovernor, a budget, in
+  // parts): cheap > 0 draws a moving full-mode tree as its hybrid scene (setMotionHybrid) when it
+  // is there and leaves out the x-ray selection pass. Draws nothing before init().
+  ready() {
+    return Boolean(this.treeProgram);
   }
 
-  // Clears the canvas and lists the frame's steps (the ground, then the tree's: layerSteps) with
-  // its totals (what the frame draws, counted from the index counts; GPU time is not measured
-  // here: no timer queries on SwiftShader).
-  #startFrame(camera, quality, budget) {
-    this.scale = quality?.scale || 1;
+  // The steps of a frame alone (the ground, then the tree's: layerSteps) with its totals (what
+  // the frame draws, counted from the index counts: {triangles, lines, drawCalls, mode, ...}).
+  aloneSteps(view, quality) {
     const cheap = quality?.cheap || 0;
-    resizeCanvas(this.canvas, this.scale);  // cleared by progress.begin (canvas or offscreen)
-    this.frameCpuMs = 0;
-    const view = { viewProjection: camera.viewProjection(this.canvas.width / this.canvas.height), eye: camera.position(),
-      light: this.light, scale: this.scale };
     const totals = { triangles: 0, lines: 0, drawCalls: 0, mode: 'full', cheap };
     const ground = groundUnder(this.footprint(), this.light);
     const steps = [{ primitives: 0, setup: () => {}, draw: () => this.ground.draw(view.viewProjection, ground) }];
@@ -718,14 +690,13 @@ export class Renderer {
     totals.drawCalls += 1;
     const tree = this.layerSteps(view, cheap);
     steps.push(...tree.steps);
-    totals.triangles += tree.triangles;
-    totals.lines += tree.lines;
-    totals.drawCalls += tree.drawCalls;
-    totals.mode = tree.mode;
+    totals.triangles += tree.totals.triangles;
+    totals.lines += tree.totals.lines;
+    totals.drawCalls += tree.totals.drawCalls;
+    totals.mode = tree.totals.mode;
     totals.primitives = steps.reduce((n, step) => n + step.primitives, 0);  // what the budget counts
     totals.selected = this.selected === NONE ? -1 : this.selected;  // the highlight this frame draws
-    this.frameTotals = totals;
-    this.progress.begin(this.canvas, steps, budget);
+    return { steps, totals };
   }
 
   // The ground under the tree (metres): {center, extent, shadowRadius, crownHeight}
@@ -737,12 +708,12 @@ export class Renderer {
   // The tree's steps of a frame (web/gl/progressive_frame.js) under `view` ({viewProjection, eye,
   // light: the unit direction towards the sun}): the hybrid draw list, or the parts and the
   // selection's x-ray pass; cheap > 0: a moving full-mode tree as its hybrid scene when it is
-  // there. Returns {steps, triangles, lines, drawCalls, mode}.
+  // there. Returns {steps, totals: {triangles, lines, drawCalls, mode}}.
   layerSteps(view, cheap = 0) {
     const gl = this.gl;
     const { viewProjection, eye, light } = view;
-    const out = { steps: [], triangles: 0, lines: 0, drawCalls: 0, mode: 'full' };
-    const steps = out.steps;
+    const steps = [];
+    const out = { triangles: 0, lines: 0, drawCalls: 0, mode: 'full' };
     // A moving full-mode tree at a cheap level: its hybrid scene while it is there.
     const motion = !this.hybrid && cheap > 0 && this.motionReady();
     if (this.hybrid || motion) {
@@ -753,7 +724,7 @@ export class Renderer {
       out.lines += segs;
       out.drawCalls += calls;
       out.mode = motion ? 'motion' : 'hybrid';
-      return out;
+      return { steps, totals: out };
     }
     const t = this.treeProgram;
     const common = () => {
@@ -813,15 +784,11 @@ export class Renderer {
       out.triangles += bark.count / 3;
       out.drawCalls += 1;
     }
-    return out;
+    return { steps, totals: out };
   }
 
-  // ---- As a layer of a Frame (web/gl/frame.js) ----
-  // The tree's steps under the frame's view (its camera and sun; the frame draws the ground).
-  frameSteps(view) {
-    return this.layerSteps(view, 0).steps;
-  }
-
+  // ---- As a layer of a Frame (web/gl/frame.js: StudyLayer.frameSteps, the tree's steps under the
+  // frame's view; the frame draws the ground) ----
   // The tree's box in metres (the last setTree's bounds), or null before a tree.
   worldBounds() {
     return this.treeBounds || null;
@@ -830,7 +797,7 @@ export class Renderer {
   // Frees the context's objects this renderer made (a Frame's layer removed, or the page gone).
   dispose() {
     const gl = this.gl;
-    this.progress.abort();
+    super.dispose();
     ++this.treeUploads;  // an upload on its way is dropped
     for (const part of Object.values(this.parts)) {
       gl.deleteVertexArray(part.vao);

@@ -6,7 +6,7 @@
 
 /**
  * Fields of every message. `client` (any string, default 'app') keeps clients apart: a newer
- * superseding request (update, restage) of a client drops the older one of THE SAME client. `study`
+ * superseding request (update) of a client drops the older one of THE SAME client. `study`
  * picks the handler (default 'tree'). Replies echo `id` and `client`.
  * @typedef {{type: string, id?: number, client?: string, study?: string}} Envelope
  */
@@ -31,18 +31,16 @@
  */
 
 /**
- * Grows state.years years, or only `until` years when given (the year scrubber).
- * @typedef {Envelope & {type: 'update', state: TreeStateJson, until?: number}} UpdateMessage
+ * Grows state.years years, or only `until` years when given (the year scrubber). `stage` (sent by
+ * web/shell/study_controller.js: the earliest stage the page's edits touched; none: 'grow'):
+ * with 'mesh', 'sway' or 'view' it is a restage: the same tree (the grow-stage fields equal the
+ * client's last tree) with a new state; the session's update (core TreeRun::Update) re-does the
+ * earliest stage whose rows changed and the ones after it (mesh: re-dressed; sway: re-skinned;
+ * view: the hybrid scene rebuilt) and the worker answers without growing (TreeMessage grown:
+ * false, with the stages re-done). When the tree would differ (or none was grown) it grows.
+ * @typedef {Envelope & {type: 'update', state: TreeStateJson, until?: number,
+ *   stage?: 'grow'|'mesh'|'sway'|'view'}} UpdateMessage
  *   -> HashMessage (state accepted), ProgressMessage (after each year), TreeMessage
- *
- * The page's mesh, sway and view edits: the same tree (the grow-stage fields equal the client's
- * last tree) with a new state; the session's update (core TreeRun::Update) re-does the earliest
- * stage whose rows changed and the ones after it (mesh: re-dressed; sway: re-skinned; view: the
- * hybrid scene rebuilt) and the worker answers like an update without growing. When the tree would
- * differ (or none was grown) it grows.
- * @typedef {Envelope & {type: 'restage', state: TreeStateJson, until?: number,
- *   stage: 'mesh'|'sway'|'view'}} RestageMessage
- *   -> HashMessage, TreeMessage (grown: false)
  *
  * @typedef {Envelope & {type: 'hash', hash: string}} HashMessage
  * @typedef {Envelope & {type: 'stateFile', save?: TreeStateJson, open?: string}} StateFileMessage

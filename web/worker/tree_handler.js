@@ -1,5 +1,5 @@
 // The tree study's worker handler: grows trees year by year (superseded between years), sends
-// their meshes, re-skins or re-views the tree already grown for sway and render edits (restage),
+// their meshes, re-skins or re-views the tree already grown for updates of a later stage (restage),
 // runs the wind, the hybrid views and the exports. One TreeSession (web/bindings/tree_bindings.cpp)
 // per client keeps the client's last finished tree. The mesh parts, the sway poses and the hybrid
 // draw lists go as views into the buffers the client handed back ('recycle', once they are on its
@@ -139,8 +139,9 @@ export function createHandler(Module, ctx) {
     }
   }
 
-  // A mesh, sway or view edit: the client's last tree with the new state, not grown again (or a
-  // grow when the state grows another tree). The reply's `stages` are the ones the run re-did.
+  // An update of stage mesh, sway or view: the client's last tree with the new state, not grown
+  // again (or a grow when the state grows another tree). The reply's `stages` are the ones the run
+  // re-did.
   async function restage(msg, client) {
     const last = finished.get(client);
     if (!last || !sameTree(last, msg)) return grow(msg, client);
@@ -334,15 +335,16 @@ export function createHandler(Module, ctx) {
 
   return {
     // Requests of these types supersede the client's older ones.
-    superseding: ['update', 'restage'],
+    superseding: ['update'],
     ready: (msg) => ({ paramTable, presets: JSON.parse(Module.presetsJson('tree')), decoded: decode(msg.hash) }),
     messages: {
       decode: (msg, client) => {
         const { state, notices } = decode(msg.hash);
         post({ type: 'decoded', id: msg.id, client, state, notices });
       },
-      update: grow,
-      restage,
+      // An update of a later stage than 'grow' (the page's controller sends the earliest stage its
+      // edits touched) restages the tree grown; the others grow.
+      update: (msg, client) => (['mesh', 'sway', 'view'].includes(msg.stage) ? restage(msg, client) : grow(msg, client)),
       wind: (msg, client) => (msg.play ? startWind(client, msg.origins, msg.clock) : stopWind(client)),
       poseDone: (msg, client) => {
         const sway = sways.get(client);
