@@ -88,7 +88,15 @@ async function exportBy(page, button) {
   await page.waitForFunction((b) => document.documentElement.dataset.exportError ||
     (document.documentElement.dataset.exported || '') !== b, before, { timeout: TIMEOUT, polling: 100 });
   const d = await hooks(page);
-  await page.waitForTimeout(300);  // a download event would follow the hook at once
+  if (d.exportError) {
+    await page.waitForTimeout(300);  // a refused export must not download: give a stray one time to show
+  } else {
+    // Exported: the download event follows the hook once the browser has the bytes (a 65 MB sway
+    // .glb took over 300 ms on the loaded machine), so wait for it, not a fixed time.
+    const t0 = Date.now();
+    while (downloads === 0 && Date.now() - t0 < 60_000) await page.waitForTimeout(100);
+    await page.waitForTimeout(200);  // and a second one would come at once
+  }
   page.off('download', count);
   const lineId = d.exportErrorButton === 'download-glb' ? '#glb-refused' : '#export-refused';
   const visible = d.exportError ? await page.isVisible(lineId) : false;
