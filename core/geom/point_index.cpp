@@ -10,7 +10,7 @@
 
 namespace niwa {
 namespace geom {
-namespace {
+namespace point_index_detail {  // named, not anonymous: PointIndex::Impl holds these types
 
 // The one distance both the index and the twins report.
 double DistanceSquared(const glm::dvec3& a, const glm::dvec3& b) {
@@ -44,7 +44,8 @@ using Tree =
     nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud, double>, Cloud,
                                         3, uint32_t>;
 
-}  // namespace
+}  // namespace point_index_detail
+using namespace point_index_detail;  // NOLINT: this file's own helpers
 
 struct PointIndex::Impl {
   std::vector<glm::dvec3> points;

@@ -15,7 +15,7 @@ namespace {
 
 constexpr int kSides = 6;
 
-glm::dvec3 Unit(const glm::dvec3& v) {
+glm::dvec3 UnitOrUp(const glm::dvec3& v) {
   double l = std::sqrt(glm::dot(v, v));
   return l > 0 ? v / l : glm::dvec3(0, 1, 0);
 }
@@ -23,7 +23,7 @@ glm::dvec3 Unit(const glm::dvec3& v) {
 // Any unit vector perpendicular to v.
 glm::dvec3 Perpendicular(const glm::dvec3& v) {
   glm::dvec3 a = std::fabs(v.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
-  return Unit(glm::cross(v, a));
+  return UnitOrUp(glm::cross(v, a));
 }
 
 struct Builder {
@@ -50,7 +50,7 @@ struct Builder {
   }
   // An open tube from a (radius ra) to b (radius rb).
   void Tube(const glm::dvec3& a, const glm::dvec3& b, double ra, double rb, double step) {
-    const glm::dvec3 h = Unit(b - a), e1 = Perpendicular(h), e2 = glm::cross(h, e1);
+    const glm::dvec3 h = UnitOrUp(b - a), e1 = Perpendicular(h), e2 = glm::cross(h, e1);
     uint32_t first = static_cast<uint32_t>(mesh.positions.size());
     for (int k = 0; k < kSides; ++k) {
       double s, c;
@@ -71,7 +71,7 @@ struct Builder {
   void Fan(const glm::dvec3& centre, const glm::dvec3& u, const glm::dvec3& v,
            const std::vector<glm::dvec2>& outline, double step,
            const std::vector<glm::vec2>* uvs = nullptr, glm::vec2 centre_uv = {0, 0}) {
-    const glm::dvec3 n = Unit(glm::cross(u, v));
+    const glm::dvec3 n = UnitOrUp(glm::cross(u, v));
     if (uvs) uv = centre_uv;
     uint32_t c = Vertex(centre, n, step);
     uint32_t first = static_cast<uint32_t>(mesh.positions.size());
@@ -114,7 +114,7 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p) {
   const double tau = p.Get(IvyParam::kLeafAge), tilt = p.Get(IvyParam::kLeafTilt);
   const double L = p.Get(IvyParam::kL);
   const glm::dvec3 up =
-      Unit(glm::dvec3(p.Get(IvyParam::kUpX), p.Get(IvyParam::kUpY), p.Get(IvyParam::kUpZ)));
+      UnitOrUp(glm::dvec3(p.Get(IvyParam::kUpX), p.Get(IvyParam::kUpY), p.Get(IvyParam::kUpZ)));
   // Tips below each bud (pipe model r = r_tip · n_tips^(1/pipe_exp)), children before parents.
   std::vector<int> tips(m.buds.size(), 0);
   for (std::size_t i = m.buds.size(); i-- > 0;) {
@@ -166,12 +166,12 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p) {
     double st, ct;
     det::SinCos(tilt * det::kPi / 180.0, &st, &ct);
     glm::dvec3 up_t = up - glm::dot(up, n) * n;
-    up_t = glm::dot(up_t, up_t) > 1e-12 ? Unit(up_t) : t1;
-    const glm::dvec3 pet_dir = Unit(ct * n + st * up_t);
+    up_t = glm::dot(up_t, up_t) > 1e-12 ? UnitOrUp(up_t) : t1;
+    const glm::dvec3 pet_dir = UnitOrUp(ct * n + st * up_t);
     const glm::dvec3 base = b.pos + petiole * pet_dir;
     const double age = static_cast<double>(last_step - b.born_step);
     const double width = leaf * std::min(1.0, (age + 1.0) / tau);
-    const glm::dvec3 across = Unit(glm::cross(up_t, n));
+    const glm::dvec3 across = UnitOrUp(glm::cross(up_t, n));
     leaves.uv = petiole_uv;
     leaves.Tube(b.pos, base, 0.3 * r_tip, 0.3 * r_tip, b.born_step);
     leaves.Fan(base, across, up_t, LeafOutline(width), b.born_step, &outline_uvs, base_uv);

@@ -14,7 +14,7 @@
 namespace niwa::ivy {
 namespace {
 
-std::string Num(double v) {
+std::string Fixed2(double v) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.2f", v);
   return buffer;
@@ -125,7 +125,7 @@ std::string IvySvg(const IvyModel& model, const IvyParams& params, const geom::T
           for (int c = 0; c < 3; ++c) {
             const glm::dvec3 p(
                 support->positions[support->indices[3 * t + static_cast<std::size_t>(c)]]);
-            s += (c == 0 ? "M" : "L") + Num(X(view, p)) + " " + Num(Y(p));
+            s += (c == 0 ? "M" : "L") + Fixed2(X(view, p)) + " " + Fixed2(Y(p));
           }
           s += "Z\"/>\n";
         }
@@ -142,8 +142,8 @@ std::string IvySvg(const IvyModel& model, const IvyParams& params, const geom::T
       const Bud& a = model.buds[static_cast<std::size_t>(in.from_bud)];
       const Bud& b = model.buds[static_cast<std::size_t>(in.to_bud)];
       const double width = b.order == 0 ? 2.0 : b.order == 1 ? 1.4 : 1.0;
-      s += "<line x1=\"" + Num(X(view, a.pos)) + "\" y1=\"" + Num(Y(a.pos)) + "\" x2=\"" +
-           Num(X(view, b.pos)) + "\" y2=\"" + Num(Y(b.pos)) + "\" stroke-width=\"" + Num(width) +
+      s += "<line x1=\"" + Fixed2(X(view, a.pos)) + "\" y1=\"" + Fixed2(Y(a.pos)) + "\" x2=\"" +
+           Fixed2(X(view, b.pos)) + "\" y2=\"" + Fixed2(Y(b.pos)) + "\" stroke-width=\"" + Fixed2(width) +
            "\"/>\n";
     }
     s += "</g>\n";
@@ -155,7 +155,7 @@ std::string IvySvg(const IvyModel& model, const IvyParams& params, const geom::T
       for (const Bud& b : model.buds) {
         if (b.parent < 0 || !born(b.born_step)) continue;
         const glm::dvec3 p = b.pos + 0.5 * leaf * b.outward;
-        s += "<circle cx=\"" + Num(X(view, p)) + "\" cy=\"" + Num(Y(p)) + "\" r=\"" + Num(r) +
+        s += "<circle cx=\"" + Fixed2(X(view, p)) + "\" cy=\"" + Fixed2(Y(p)) + "\" r=\"" + Fixed2(r) +
              "\"/>\n";
       }
       s += "</g>\n";

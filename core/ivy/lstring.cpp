@@ -9,15 +9,15 @@
 namespace niwa::ivy {
 namespace {
 
-std::string Num(double v) {
+std::string Exact(double v) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", v);
   return buf;
 }
 
 std::string BudText(const Bud& b) {
-  return std::string(1, BudSymbol(b.kind)) + "(" + Num(b.pos.x) + "," + Num(b.pos.y) + "," +
-         Num(b.pos.z) + ";" + Num(b.N) + ")";
+  return std::string(1, BudSymbol(b.kind)) + "(" + Exact(b.pos.x) + "," + Exact(b.pos.y) + "," +
+         Exact(b.pos.z) + ";" + Exact(b.N) + ")";
 }
 
 }  // namespace
@@ -52,7 +52,7 @@ std::string PrintLString(const IvyModel& model) {
         stack.push_back(token("]"));
         stack.push_back(b.child[1]);
         stack.push_back(token("I"));
-        stack.push_back(token("R(" + Num(rot[0]) + "," + Num(rot[1]) + "," + Num(rot[2]) + ")"));
+        stack.push_back(token("R(" + Exact(rot[0]) + "," + Exact(rot[1]) + "," + Exact(rot[2]) + ")"));
         stack.push_back(token("["));
       }
     }

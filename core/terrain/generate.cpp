@@ -23,7 +23,6 @@ namespace niwa::terrain {
 namespace {
 
 using P = TerrainParam;
-constexpr double kPi = 3.14159265358979323846;
 
 double Ms(std::chrono::steady_clock::time_point a) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a).count();
@@ -145,7 +144,7 @@ bool Conflicts(const IRing& ring, const IRing& parent, const std::vector<IRing>&
 
 double MidpointDelta(double l, double theta_deg, double d2) {
   double s, c;
-  det::SinCos(theta_deg * kPi / 180.0, &s, &c);
+  det::SinCos(theta_deg * det::kPi / 180.0, &s, &c);
   return std::min(d2, std::fabs(l * s / c));
 }
 

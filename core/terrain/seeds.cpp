@@ -9,14 +9,13 @@
 namespace niwa::terrain {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 Ring Radial(int n, double radius, int lobes, double depth) {
   Ring r;
   for (int i = 0; i < n; ++i) {
     double s, c, s7, c7;
-    det::SinCos(2 * kPi * i / n, &s, &c);
-    det::SinCos(lobes * 2 * kPi * i / n, &s7, &c7);
+    det::SinCos(2 * det::kPi * i / n, &s, &c);
+    det::SinCos(lobes * 2 * det::kPi * i / n, &s7, &c7);
     const double rr = radius * (1 + depth * c7);
     r.push_back({rr * c, rr * s});
   }
@@ -52,15 +51,15 @@ Ring Valleys() {
   turns.erase(std::unique(turns.begin(), turns.end()), turns.end());
   Ring r;
   for (double turn : turns) {
-    const double phi = 2 * kPi * turn;
+    const double phi = 2 * det::kPi * turn;
     double s, c, s2, c2, s3, c3;
     det::SinCos(phi, &s, &c);
     det::SinCos(2 * phi + 0.5, &s2, &c2);
     det::SinCos(3 * phi + 1.3, &s3, &c3);
     double rr = kValleysRadius * (1 + 0.08 * c2 + 0.05 * c3);
     for (const Valley& v : kValleys) {
-      double off = std::fabs(phi - 2 * kPi * v.turn);
-      off = std::min(off, 2 * kPi - off);
+      double off = std::fabs(phi - 2 * det::kPi * v.turn);
+      off = std::min(off, 2 * det::kPi - off);
       if (off < v.half_width) rr -= v.depth * (1 - off / v.half_width);
     }
     r.push_back({rr * c, rr * s});

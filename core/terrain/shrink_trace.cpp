@@ -14,7 +14,6 @@
 namespace niwa::terrain {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr std::size_t kMaxStepPoints = 200000;
 
 Vec2 Sub(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
@@ -81,7 +80,7 @@ double MinInteriorAngleDeg(const Ring& r) {
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 e1 = Sub(r[i], r[(i + n - 1) % n]), e2 = Sub(r[(i + 1) % n], r[i]);
     const double turn = det::Atan2(Cross(e1, e2), e1.x * e2.x + e1.y * e2.y);  // left turn > 0
-    best = std::min(best, (kPi - turn) * 180 / kPi);
+    best = std::min(best, (det::kPi - turn) * 180 / det::kPi);
   }
   return best;
 }

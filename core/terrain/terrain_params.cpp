@@ -3,6 +3,7 @@
 
 #include "params/embedded_presets.h"
 #include "params/param_text.h"
+#include "math/det_math.h"
 
 namespace niwa::terrain {
 namespace {
@@ -12,7 +13,6 @@ constexpr int Id(P p) { return static_cast<int>(p); }
 constexpr Stage kGrow = Stage::kGrow;
 constexpr Stage kMesh = Stage::kMesh;
 constexpr Stage kView = Stage::kView;
-constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 
@@ -44,7 +44,7 @@ const ParamTable& TerrainTable() {
            "FFT samples (equal edges) per contour (§4.2: 1,024)."},
           {Id(P::kF0), "f0", "f_0", "", 256, 1, 8192, true, "fourier", kGrow,
            "Phases of every component with |k| ≥ f0 are randomised; at most nfft/2."},
-          {Id(P::kPhaseAmp), "phase_amp", "a", "rad", kPi, 0, kPi, false, "fourier", kGrow,
+          {Id(P::kPhaseAmp), "phase_amp", "a", "rad", det::kPi, 0, det::kPi, false, "fourier", kGrow,
            "Phase noise: arg c(k) + U(−a, a); π is a fully random phase."},
           {Id(P::kLongFrac), "long_frac", "", "", 0.2, 0.01, 1, false, "fourier", kGrow,
            "§4.3 step 1.3: collinear points are removed until this share of edges is ≥ 2·d0."},

@@ -12,7 +12,7 @@
 namespace niwa {
 namespace {
 
-const glm::vec3 kUp(0.0f, 1.0f, 0.0f);
+const glm::vec3 kWorldUp(0.0f, 1.0f, 0.0f);
 constexpr float kEpsilon = 1e-6f;
 
 // Radii (cm) at which tubes get min_sides and max_sides; sides grow with sqrt(radius) in between.
@@ -126,7 +126,7 @@ struct RingTable {
 void NodeTangents(const Branch& branch, std::vector<glm::vec3>* segment_buffer,
                   std::vector<glm::vec3>* tangent_buffer) {
   std::size_t n = branch.nodes.size();
-  glm::vec3 fallback = SafeNormalize(branch.bud_direction, kUp);
+  glm::vec3 fallback = SafeNormalize(branch.bud_direction, kWorldUp);
   std::vector<glm::vec3>& segment = *segment_buffer;
   segment.resize(n > 1 ? n - 1 : 0);
   for (std::size_t i = 0; i + 1 < n; ++i) {
@@ -282,10 +282,10 @@ bool ValidNode(const Branch& branch, int node) {
 void AddLeaf(const Branch& branch, const Leaf& leaf, float leaf_size, float aspect,
              const MeshOptions& options, Writer* leaves) {
   const float scale = options.cm_to_units;
-  glm::vec3 along = SafeNormalize(leaf.direction, kUp);
+  glm::vec3 along = SafeNormalize(leaf.direction, kWorldUp);
   // The blade's width runs horizontally when it can, so the leaf faces the sky.
-  glm::vec3 across = SafeNormalizeOrPerpendicular(glm::cross(along, kUp), along);
-  glm::vec3 normal = SafeNormalize(glm::cross(across, along), kUp);
+  glm::vec3 across = SafeNormalizeOrPerpendicular(glm::cross(along, kWorldUp), along);
+  glm::vec3 normal = SafeNormalize(glm::cross(across, along), kWorldUp);
   glm::vec3 base = branch.nodes[static_cast<std::size_t>(leaf.node)] * scale;
   glm::vec3 tip = base + along * (leaf_size * scale);
   glm::vec3 half = across * (0.5f * aspect * leaf_size * scale);  // aspect: width / length
@@ -315,7 +315,7 @@ void AddFlower(const Branch& branch, int node, const MeshOptions& options,
   glm::vec3 position = branch.nodes[static_cast<std::size_t>(node)];
   // Faces up and away from the trunk axis.
   glm::vec3 outward = SafeNormalize(glm::vec3(position.x, 0.0f, position.z), glm::vec3(0.0f));
-  glm::vec3 facing = SafeNormalize(kUp + 0.5f * outward, kUp);
+  glm::vec3 facing = SafeNormalize(kWorldUp + 0.5f * outward, kWorldUp);
   glm::vec3 a = AnyPerpendicular(facing);
   glm::vec3 b = SafeNormalizeOrPerpendicular(glm::cross(facing, a), a);
   glm::vec3 center = (position + facing * kFlowerLift_cm) * scale;

@@ -39,7 +39,7 @@ constexpr ExportCost kGlb = {0, 0, 0, 304, 944, 65536, 40, 4, 8, 30, "writing th
 constexpr ExportCost kSvg = {120, 40, 0, 60, 60, 8192, 0, 0, 3, 70, "writing the .svg"};
 // The page's mesh: the .glb's buffers plus the skin (8 bytes a vertex) held in the heap while the
 // worker copies them out.
-constexpr ExportCost kMesh = {0, 0, 0, 400, 1200, 0, 48, 4, 3, 30, "building the mesh"};
+constexpr ExportCost kMeshBuild = {0, 0, 0, 400, 1200, 0, 48, 4, 3, 30, "building the mesh"};
 
 }  // namespace
 
@@ -75,8 +75,8 @@ double MeshBytesPerInternode(const TreeParams& p) {
   // flowers are left to that check.
   const double sides = 6;
   const double leaves = 2.0 * std::max(1, p.GetInt(ParamId::kBL));
-  return kMesh.memory_per_byte * (kMesh.per_bark_vertex * (sides + 1) +
-                                  kMesh.per_bark_index * 6 * sides + kMesh.per_leaf * leaves);
+  return kMeshBuild.memory_per_byte * (kMeshBuild.per_bark_vertex * (sides + 1) +
+                                  kMeshBuild.per_bark_index * 6 * sides + kMeshBuild.per_leaf * leaves);
 }
 
 TreeCounts CountTree(const Tree& tree) {
@@ -107,7 +107,7 @@ Estimate EstimateTreeExport(const TreeCounts& c, TreeExport kind) {
   const ExportCost& k = kind == TreeExport::kJson  ? kJson
                         : kind == TreeExport::kGlb ? kGlb
                         : kind == TreeExport::kSvg ? kSvg
-                                                   : kMesh;
+                                                   : kMeshBuild;
   const double bytes = k.fixed + k.per_branch * c.branches + k.per_internode * c.internodes +
                        k.per_bud * c.buds + k.per_leaf * c.leaves + k.per_flower * c.flowers +
                        k.per_bark_vertex * c.bark_vertices + k.per_bark_index * c.bark_indices;
