@@ -125,18 +125,18 @@ function frameTerrain() {
   camera.frame(b, 0.82);
 }
 
-// The state the worker grows: the seed (a built-in or the drawing), the preset, and (unless
-// `reset`, which takes the preset's and the seed's own values) every parameter of the panel.
+// The state the worker grows: the seed contour (a built-in or the drawing), the preset, the RNG
+// seed (a state field, kept by `reset`), and (unless `reset`, which takes the preset's and the
+// seed contour's own values) every parameter of the panel.
 function currentState(reset) {
-  const state = { preset: ui.preset.value };
+  const state = { preset: ui.preset.value, seed: numberOr(ui.rngSeed) };
   if (drawnContour) state.contour = drawnContour;
   else state.builtin = ui.builtin.value;
-  const params = panel.values();
-  state.params = reset ? { seed: params.seed } : params;
+  state.params = reset ? {} : panel.values();
   return state;
 }
 
-// A state from the worker ({preset, builtin, contour?, params}) shown in the controls.
+// A state from the worker ({preset, builtin, contour?, seed, params}) shown in the controls.
 function applyState(state) {
   ui.preset.value = state.preset;
   drawnContour = state.builtin ? null : state.contour;
@@ -147,7 +147,7 @@ function applyState(state) {
     ui.builtin.value = state.builtin;
   }
   panel.setValues(state.params);
-  ui.rngSeed.value = String(state.params.seed);
+  ui.rngSeed.value = String(state.seed);
   showHelp();
 }
 
@@ -243,11 +243,7 @@ worker.on('ready', (msg) => {
   ui.preset.append(new Option('defaults (improved)', ''));
   for (const p of presets) ui.preset.append(new Option(p.name, p.name));
   for (const s of seeds) ui.builtin.append(new Option(s.name, s.name));
-  // The RNG seed box above and the panel's seed row are one value.
-  panel = new ParamPanel(ui.params, msg.paramTable, (spec, stage) => {
-    if (spec.key === 'seed') ui.rngSeed.value = String(panel.values().seed);
-    scheduleUpdate(stage);
-  });
+  panel = new ParamPanel(ui.params, msg.paramTable, (spec, stage) => scheduleUpdate(stage));
   const hash = location.hash.replace(/^#/, '');
   applyState(msg.decoded.state);
   notices.set('hash', msg.decoded.notices);
@@ -350,10 +346,7 @@ ui.preset.addEventListener('change', () => {
   showHelp();
   sendUpdate(true, true);
 });
-ui.rngSeed.addEventListener('input', () => {
-  panel?.setValues({ seed: numberOr(ui.rngSeed) });
-  scheduleUpdate();
-});
+ui.rngSeed.addEventListener('input', () => scheduleUpdate());
 ui.reset.addEventListener('click', () => sendUpdate(true, true));
 ui.showContours.addEventListener('change', () => {
   renderer?.setVisible({ contours: ui.showContours.checked });
