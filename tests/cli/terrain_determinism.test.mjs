@@ -71,7 +71,8 @@ writeFileSync(newState, JSON.stringify({ preset: 'fig16', builtin: 'disk', seed:
 const seedCases = [
   [['--url', 'builtin=disk&seed=5&res=32'], 5, 'builtin=disk&seed=5&res=32'],
   [['--url', 'builtin=disk&seed=5&res=32', '--seed', '9'], 9, 'builtin=disk&seed=9&res=32'],
-  [['--url', 'builtin=disk&seed=5&res=32', '--method', 'fig13b'], 5, 'preset=fig13b&builtin=disk&seed=5&res=32'],
+  // (--method resets the rows to the preset's, res too; the seed stays)
+  [['--url', 'builtin=disk&seed=5&res=32', '--method', 'fig13b'], 5, 'preset=fig13b&builtin=disk&seed=5'],
   [['--params', oldState], 6, 'preset=fig16&builtin=disk&seed=6&res=32'],
   [['--params', newState], 6, 'preset=fig16&builtin=disk&seed=6&res=32'],
   [['--params', newState, '--seed', '0'], 0, 'preset=fig16&builtin=disk&seed=0&res=32'],
