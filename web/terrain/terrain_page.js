@@ -269,6 +269,7 @@ worker.on('progress', (msg) => {
 
 // The mountain (its stats null: they follow in 'terrainStats', web/worker/terrain_handler.js).
 let shownMountain = null;  // {id, msg} of the mountain on screen until its stats arrive
+let planLines = null;  // {contours, summits, uploaded}: the worker's buffers the plan draws from
 worker.on('terrain', (msg) => {
   if (!controller.isLatest(msg)) return;
   notices.set('error', '');
@@ -289,23 +290,25 @@ worker.on('terrain', (msg) => {
   plan.setTerrain(msg.buffers, msg.bounds);
   levels = { min: msg.bounds.level_min, max: msg.bounds.level_max, h0: msg.bounds.h0, dh: msg.bounds.dh };
   const serial = terrainSerial + 1;
-  // Once on the GPU, the surface's buffers go back to the worker for the next grow to fill.
-  // (ArrayBuffers, or views of recycled ones: web/worker/terrain_handler.js).
-  const own = (b) => (ArrayBuffer.isView(b) ? b.buffer : b);
-  const recycle = () => worker.post('recycle', { buffers: { positions: own(surface.positions), normals: own(surface.normals), colours: own(surface.colours) } },
-    [own(surface.positions), own(surface.normals), own(surface.colours)]);
-  if (renderer) {
-    renderer.setTerrain(msg.buffers, msg.bounds).then((installed) => {
-      recycle();
-      if (!installed) return;
-      installedSerial = serial;
-      if (frameNext && renderer.bounds()) {
-        frameTerrain();
-        frameNext = false;
-      }
-      requestFrame();
-    });
-  }
+  // Once on the GPU, the surface's buffers go back to the worker for the next grow to fill; the
+  // contours and summits (views the plan draws from) once a newer mountain replaced them in the
+  // plan and their own upload ended (web/worker/transfer.js TransferPool).
+  setHooks({ buffersReused: msg.bufferCounts?.reused ?? '', buffersFresh: msg.bufferCounts?.fresh ?? '' });
+  const uploaded = renderer ? renderer.setTerrain(msg.buffers, msg.bounds) : Promise.resolve(false);
+  const previous = planLines;
+  planLines = { contours: msg.buffers.contours, summits: msg.buffers.summits, uploaded };
+  previous?.uploaded.then(() => worker.recycle({ contours: previous.contours, summits: previous.summits }));
+  uploaded.then((installed) => {
+    const { positions, normals, colours } = surface;
+    worker.recycle({ surface: { positions, normals, colours } });
+    if (!installed || !renderer) return;
+    installedSerial = serial;
+    if (frameNext && renderer.bounds()) {
+      frameTerrain();
+      frameNext = false;
+    }
+    requestFrame();
+  });
   controller.grown(msg.hash);
   scrubber.reset(levels.max - levels.min);
   terrainSerial += 1;
