@@ -37,7 +37,6 @@ terrain::TerrainParams Improved() {
   terrain::TerrainState s;
   (void)terrain::SetTerrainBuiltin("lobes7", &s);
   (void)terrain::SetTerrainPreset("improved", &s);
-  (void)s.params.Set(terrain::TerrainParam::kSeed, 1);
   return s.params;
 }
 
@@ -61,7 +60,7 @@ Workload GrowWorkload(int points, bool cold) {
     auto params = std::make_shared<terrain::TerrainParams>(Improved());
     *units = points;
     return [seed, params]() {
-      Result<terrain::Terrain> t = terrain::Grow(*seed, *params);
+      Result<terrain::Terrain> t = terrain::Grow(*seed, *params, terrain::kDefaultTerrainSeed);
       return t.ok() ? Checksum(*t) : -1.0;
     };
   };
@@ -77,7 +76,8 @@ Workload HeightfieldWorkload(int res, bool brute) {
   wl.unit = "cell";
   std::shared_ptr<double> units = wl.units;
   wl.prepare = [res, brute, units]() -> WorkloadBody {
-    Result<terrain::Terrain> grown = terrain::Grow(Lobes(350), Improved());
+    Result<terrain::Terrain> grown =
+        terrain::Grow(Lobes(350), Improved(), terrain::kDefaultTerrainSeed);
     auto t = std::make_shared<terrain::Terrain>(grown.ok() ? *grown : terrain::Terrain());
     *units = static_cast<double>(terrain::BuildHeightfield(*t, res).h.size());
     return [t, res, brute]() {
@@ -121,11 +121,13 @@ Workload PageRegrowWorkload(int res) {
     (void)state->params.Set(terrain::TerrainParam::kRes, res);
     auto flat = std::make_shared<terrain::SurfaceBuffers>();
     {
-      Result<terrain::Terrain> t = terrain::Grow(*terrain::StateSeed(*state), state->params);
+      Result<terrain::Terrain> t =
+          terrain::Grow(*terrain::StateSeed(*state), state->params, state->seed);
       *units = t.ok() ? static_cast<double>(terrain::BuildHeightfield(*t, res).h.size()) : 0;
     }
     return [state, flat, res]() {
-      Result<terrain::Terrain> t = terrain::Grow(*terrain::StateSeed(*state), state->params);
+      Result<terrain::Terrain> t =
+          terrain::Grow(*terrain::StateSeed(*state), state->params, state->seed);
       if (!t.ok()) return -1.0;
       const terrain::Heightfield hf = terrain::BuildHeightfield(*t, res);
       const terrain::TerrainStats s = terrain::ComputeStats(*t, &hf);

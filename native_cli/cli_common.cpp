@@ -157,17 +157,21 @@ CLI::Option* AddInputFlag(CLI::App* cmd, const std::string& flag, std::string* p
   return Declare(cmd->add_option(flag, *path, help), FlagInfo(FlagKind::kInput));
 }
 
+Status CheckEnding(const std::string& flag, const std::string& path,
+                   const std::vector<std::string>& endings) {
+  if (path.empty()) return Status::Ok();
+  const std::string ext = Extension(path);
+  for (const std::string& e : endings)
+    if (e == ext) return Status::Ok();
+  return Status::Error(flag, "'" + Echo(path) + "' must end in " + Either(endings));
+}
+
 CLI::Option* AddOutputFlag(CLI::App* cmd, const std::string& flag, std::string* path,
                            std::vector<std::string> extensions, const std::string& help) {
   CLI::Option* option = cmd->add_option_function<std::string>(
       flag,
       [flag, path, extensions](const std::string& text) {
-        const std::string ext = Extension(text);
-        bool known = false;
-        for (const std::string& e : extensions) known = known || e == ext;
-        if (!known && !text.empty()) {
-          Fail(Status::Error(flag, "'" + Echo(text) + "' must end in " + Either(extensions)));
-        }
+        Check(CheckEnding(flag, text, extensions));
         *path = text;
       },
       help);

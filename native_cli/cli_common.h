@@ -104,6 +104,10 @@ void ClearDeclarations();
 // An input file flag (kInput): read later with ReadFile or a core reader.
 CLI::Option* AddInputFlag(CLI::App* cmd, const std::string& flag, std::string* path,
                           const std::string& help);
+// Ok when path ("" too) ends in one of endings, else {flag, "'a.txt' must end in .glb, .json or
+// .svg"}: the one check of a file's ending (output flags, and an input read by its ending: --dem).
+Status CheckEnding(const std::string& flag, const std::string& path,
+                   const std::vector<std::string>& endings);
 // An output file flag (kOutput) taking one of extensions; the ending is checked when the flag is
 // given ("--out: 'a.txt' must end in .glb, .json or .svg"), before any work.
 CLI::Option* AddOutputFlag(CLI::App* cmd, const std::string& flag, std::string* path,

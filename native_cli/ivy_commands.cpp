@@ -3,15 +3,12 @@
 // cli-order: 40
 #include <CLI/CLI.hpp>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
-#include "base/echo.h"
 #include "cli_common.h"
 #include "compose/ivy_on_tree.h"
 #include "io/mesh_reader.h"
@@ -26,7 +23,6 @@
 namespace niwa::cli {
 namespace {
 
-constexpr double kMaxCoordinate = 1e30;
 // ivy::kIvyChange and kIvyStatsChange in this command's flags.
 constexpr char kIvyCliChange[] = "lower --steps or --subdivide, or raise t1 and t2";
 constexpr char kIvyCliStatsChange[] =
@@ -53,39 +49,6 @@ double Ms(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::ti
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
-// "X,Y,Z" or a named seed of the scene.
-glm::dvec3 ParseSeedPoint(const std::string& text, const ivy::IvyScene* scene) {
-  if (scene != nullptr) {
-    for (const ivy::NamedSeed& s : scene->seeds)
-      if (s.name == text) return s.pos;
-  }
-  std::string names;
-  if (scene != nullptr) {
-    for (const ivy::NamedSeed& s : scene->seeds) names += (names.empty() ? "" : ", ") + s.name;
-  }
-  const std::string range = "must be X,Y,Z (each in [-1e30, 1e30])" +
-                            (names.empty() ? std::string() : " or one of " + names);
-  std::vector<std::string> parts;
-  std::size_t start = 0;
-  while (true) {
-    std::size_t comma = text.find(',', start);
-    parts.push_back(text.substr(start, comma == std::string::npos ? comma : comma - start));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  if (parts.size() != 3)
-    Fail(Status::Error("--seed-point", "'" + Echo(text) + "' is unknown; " + range));
-  glm::dvec3 p;
-  for (int i = 0; i < 3; ++i) {
-    std::optional<double> x = ParseNumber(parts[static_cast<std::size_t>(i)]);
-    if (!x || std::fabs(*x) > kMaxCoordinate) {
-      Fail(Status::Error("--seed-point", "'" + Echo(text) + "' is out of range; " + range));
-    }
-    p[i] = *x;
-  }
-  return p;
-}
-
 // The ivy run's state fields as this command's flags (core errors name the fields).
 const run::FieldNames& IvyFlagNames() {
   static const run::FieldNames names = {{"steps", "--steps"},
@@ -96,7 +59,8 @@ const run::FieldNames& IvyFlagNames() {
                                         {"subdivide", "--subdivide"},
                                         {"tree", "--tree-preset"},
                                         {"tree_years", "--tree-years"},
-                                        {"preset", "--preset"}};
+                                        {"preset", "--preset"},
+                                        {"accel", "--accel"}};
   return names;
 }
 
@@ -139,6 +103,10 @@ ivy::IvyState ResolveState(const IvyOptions& o) {
   // The flags were parsed strictly (AddNumberFlag); the state's setters check the rest.
   if (o.cmd->count("--steps")) Check(AsIvyFlags(ivy::SetIvySteps(o.steps, &state)));
   if (o.cmd->count("--seed")) Check(AsIvyFlags(ivy::SetIvySeed(o.seed, &state)));
+  if (o.cmd->count("--accel")) Check(AsIvyFlags(ivy::SetIvyAccel(o.accel, &state)));
+  // Each "X,Y,Z" or a scene's named seed, resolved by the run against its support; they replace
+  // the state's at= (the page's clicks).
+  if (!o.seed_points.empty()) state.seed_point_items = o.seed_points;
   Check(ValidateIvyParams(state.params));
   return state;
 }
@@ -154,9 +122,6 @@ Status TreeSceneError(const Status& s, const Budget& budget, const std::string& 
 int RunGrow(const IvyOptions& o, std::ostream& out) {
   const auto t_start = std::chrono::steady_clock::now();
   const std::string ext = o.out_path.empty() ? "" : Extension(o.out_path);  // checked by --out
-  if (o.accel != "bvh" && o.accel != "linear") {
-    Fail(Status::Error("--accel", "'" + Echo(o.accel) + "' is unknown; must be bvh or linear"));
-  }
   const int levels = static_cast<int>(o.subdivide);
   ivy::IvyState state = ResolveState(o);
   const Budget budget = ResolveBudget(o.budget);
@@ -196,9 +161,8 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
     }
   }
   const std::string tree_truncated_by = input.prepared_truncated_by;
-  ivy::IvySupportOptions support_options;
+  ivy::IvySupportOptions support_options = ivy::IvySupportOptions::For(state);  // its accel
   support_options.subdivide = levels;
-  support_options.accel = o.accel == "bvh" ? ivy::Accel::kBvh : ivy::Accel::kLinear;
   // A tree's growth and bark took their time before the ivy's (its memory is freed but the bark).
   support_options.change = tree ? "lower --tree-years" : kIvyCliChange;
   Result<std::shared_ptr<const ivy::IvySupport>> support =
@@ -213,11 +177,7 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   }
   ReportTruncated(tree_truncated_by);
   const ivy::IvyScene& scene = (*support)->scene();
-  std::vector<glm::dvec3> seeds;
-  for (const std::string& s : o.seed_points)
-    seeds.push_back(ParseSeedPoint(s, o.mesh.empty() ? &scene : nullptr));  // scene or tree seeds
-  if (!seeds.empty()) state.seed_points = seeds;  // else the state's at= (the page's clicks)
-  if (state.seed_points.empty() && !o.mesh.empty()) {
+  if (state.seed_point_items.empty() && state.seed_points.empty() && !o.mesh.empty()) {
     Fail(Status::Error("--seed-point", "required with --mesh; must be X,Y,Z within d of a face"));
   }
   ivy::IvyRunOptions options;

@@ -1,7 +1,6 @@
 // niwa CLI command of the render study: 'tree render-stats', what hybrid rendering (thesis ch. 4:
 // cards and lines, core/render/hybrid) draws for a view, as JSON.
 // cli-order: 30
-#include <chrono>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -118,53 +117,30 @@ int RunRenderStats(RenderStatsOptions o, const CLI::App& cmd, std::ostream& out)
     view.target = glm::vec3(static_cast<float>(xyz[0]), static_cast<float>(xyz[1]),
                             static_cast<float>(xyz[2]));
   }
-  TreeState request = ResolveTreeState(o.state, cmd);
-  // The render rows of the parameter table (--set, --params, --url) give the options; the
-  // --threshold, --leaf-mode and --card-planes flags override them.
-  RenderOptions render = RenderOptionsFromParams(request.params);
-  render.line_segments = o.render.line_segments;
-  if (cmd.count("--threshold")) render.threshold_px = o.render.threshold_px;
-  if (cmd.count("--card-planes")) render.card_planes = o.render.card_planes;
-  if (cmd.count("--leaf-mode")) {
-    render.leaf_mode = o.leaf_mode == "branch" ? LeafMode::kBranchCards : LeafMode::kClusterCards;
-  }
-  o.render = render;
-  o.leaf_mode = render.leaf_mode == LeafMode::kBranchCards ? "branch" : "cluster";
-  auto start = std::chrono::steady_clock::now();
-  Result<TreeRun> started = TreeRun::Start(request, ResolveBudget(o.state.budget));
-  Check(run::RenameField(started.status(), TreeFlagNames()));
-  TreeRun& run = *started;  // core/render/tree_run
-  Check(run.Advance(nullptr));
-  CheckPrunes(request, run.tree());
-  run.BuildBareMesh();
-  const float fov = o.fov_deg * (kPi / 180.0f);
+  // The flags into the state: --threshold, --card-planes and --leaf-mode override the render
+  // rows of the table (--set, --params, --url); the run reads its options from the rows.
+  TreeState state = ResolveTreeState(o.state, cmd);
+  if (cmd.count("--threshold"))
+    Check(AsFlag(state.params.Set(ParamId::kLineThreshold, o.render.threshold_px), "--threshold"));
+  if (cmd.count("--card-planes"))
+    Check(AsFlag(state.params.Set(ParamId::kCardPlanes, o.render.card_planes), "--card-planes"));
+  if (cmd.count("--leaf-mode"))
+    Check(AsFlag(state.params.Set(ParamId::kLeafClusterCards, o.leaf_mode == "branch" ? 0 : 1),
+                 "--leaf-mode"));
+  RenderStatsRequest request;
+  request.full = o.mode == "full";
+  request.width = o.width;
+  request.height = o.height;
+  request.fov_deg = o.fov_deg;
+  request.line_segments = o.render.line_segments;
   bool explicit_camera = !o.cam.empty();
-  for (const char* flag : {"--yaw", "--pitch", "--distance", "--target"}) {
+  for (const char* flag : {"--yaw", "--pitch", "--distance", "--target"})
     explicit_camera = explicit_camera || cmd.count(flag) > 0;
-  }
-  if (!explicit_camera) view = run.FrameView(fov);  // as the page frames it
-  RenderCamera camera = CameraFromOrbit(view, o.width, o.height, fov);
-  auto select_start = std::chrono::steady_clock::now();
-  HybridScene scene = BuildHybridScene(run.tree(), o.render);
-  auto scene_end = std::chrono::steady_clock::now();
-  HybridSelection selection = SelectHybrid(run.tree(), scene, camera, nullptr);
-  const TreeViewCounts counts = run.CountView(scene, selection);
-  auto select_end = std::chrono::steady_clock::now();
-  auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
-  RenderStatsHeader header;
-  header.full = o.mode == "full";
-  header.preset = run.tree().preset;
-  header.seed = run.tree().seed;
-  header.years = run.tree().years;
-  header.width = o.width;
-  header.height = o.height;
-  header.cam = FormatOrbitView(view);
-  header.threshold = o.render.threshold_px;
-  header.leaf_mode = o.leaf_mode;
-  header.ms_grow_mesh = ms(start, select_start);
-  header.ms_scene = ms(select_start, scene_end);
-  header.ms_select = ms(scene_end, select_end);
-  out << RenderStatsJson(counts, header) << "\n";
+  if (explicit_camera) request.view = view;  // else the page's framing of the tree
+  // core/render/tree_run: grow, prunes, mesh, the view's table 4.1.
+  Result<std::string> stats = TreeRun::RenderStats(state, ResolveBudget(o.state.budget), request);
+  Check(run::RenameField(stats.status(), TreeFlagNames()));
+  out << *stats << "\n";
   return 0;
 }
 

@@ -120,7 +120,7 @@ int RunSwayCommand(const SwayOptions& o, const CLI::App& cmd, std::ostream& out)
   TreeRun& run = *started;      // core/render/tree_run
   Check(run.Advance(nullptr));  // stops early (truncated) at the budget's growth limits
   ReportTruncated(run.tree().truncated_by);
-  CheckPrunes(state, run.tree());
+  Check(run::RenameField(run.CheckPrunes(), TreeFlagNames()));
   TreeExportRequest glb_request;
   glb_request.kind = TreeExportRequest::Kind::kSwayGlb;
   glb_request.fps = o.fps;

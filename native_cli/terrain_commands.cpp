@@ -15,11 +15,9 @@
 #include "cli_common.h"
 #include "io/gltf_writer.h"
 #include "run/field_names.h"
-#include "terrain/compare.h"
 #include "terrain/contour_io.h"
 #include "terrain/contour_repair.h"
 #include "terrain/generate.h"
-#include "terrain/heightfield.h"
 #include "terrain/seeds.h"
 #include "terrain/shrink_trace.h"
 #include "terrain/terrain_budget.h"
@@ -46,11 +44,13 @@ const run::FieldNames kFieldFlags = {
 FlagRange TerrainRowRange(TerrainParam row) {
   return RowFlagRange(terrain::TerrainTable().row(static_cast<std::size_t>(row)));
 }
+// The RNG seed's range (a state field: terrain::SetTerrainSeed checks the same).
+constexpr FlagRange kSeedRange = {0, terrain::kMaxTerrainSeed, true};
 
 struct GrowOptions {
   std::string contour, builtin, method, contours_out, params_file, url, out, heightmap;
   std::vector<std::string> sets;
-  double seed = -1;  // -1: not given (the row's range starts at 0)
+  double seed = -1;  // -1: not given (the seed's range starts at 0)
   int res = 0;       // 0: not given (the row's range starts at 8)
   bool stats = false, repair = false;
   BudgetOptions budget;
@@ -130,24 +130,11 @@ terrain::TerrainState ResolveTerrainState(const GrowOptions& o) {
     if (!text.ok()) Fail(text.status());
     Check(terrain::ApplyTerrainStateJson(*text, &state).Within("--params " + o.params_file));
   }
-  if (o.seed >= 0)
-    Check(run::RenameField(state.params.Set(TerrainParam::kSeed, o.seed), kFieldFlags));
+  if (o.seed >= 0) Check(run::RenameField(terrain::SetTerrainSeed(o.seed, &state), kFieldFlags));
   for (const std::string& s : o.sets) Check(state.params.SetFromAssignment(s).Within("--set"));
   if (o.res != 0) Check(run::RenameField(state.params.Set(TerrainParam::kRes, o.res), kFieldFlags));
   if (o.repair && state.builtin.empty()) RepairSeed(o, &state);
   return state;
-}
-
-void CheckOutPath(const std::string& path, const std::string& flag,
-                  const std::vector<std::string>& extensions) {
-  if (path.empty()) return;
-  const std::string ext = Extension(path);
-  std::string allowed;
-  for (std::size_t k = 0; k < extensions.size(); ++k) {
-    if (ext == extensions[k]) return;
-    allowed += (k == 0 ? "" : k + 1 == extensions.size() ? " or " : ", ") + extensions[k];
-  }
-  Fail(Status::Error(flag, "'" + path + "' must end in " + allowed));
 }
 
 // The format of TerrainRun::Export a --contours path asks for, by its extension.
@@ -232,70 +219,21 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   return 0;
 }
 
-nlohmann::json MeasuresJson(const terrain::SurfaceMeasures& m) {
-  return {{"cells", m.cells},
-          {"relief", m.relief},
-          {"hypsometric_integral", m.hypsometric_integral},
-          {"mean_slope_deg", m.mean_slope_deg},
-          {"slope_p90_deg", m.slope_p90_deg},
-          {"slope_share", m.slope_share},
-          {"peaks", m.peaks}};
-}
-
+// terrain compare: an adapter over terrain::CompareWithDem (core/terrain/terrain_run.h): flags
+// into a state, the DEM's two files read, the comparison printed.
 int RunCompare(const GrowOptions& o, const std::string& dem_path, std::ostream& out) {
-  CheckOutPath(dem_path, "--dem", {".png"});
+  Check(CheckEnding("--dem", dem_path, {".png"}));
   Result<std::string> png = ReadFile(dem_path, "--dem", kMaxDemFileBytes);
   if (!png.ok()) Fail(png.status());
   const std::string side_path = dem_path.substr(0, dem_path.size() - 4) + ".json";
   Result<std::string> side = ReadFile(side_path, "--dem", kMaxParamsFileBytes);
   if (!side.ok()) Fail(side.status());
-  Result<terrain::Heightfield> dem =
-      terrain::ReadHeightmap(std::vector<unsigned char>(png->begin(), png->end()), *side, "--dem");
-  if (!dem.ok()) Fail(dem.status());
-  terrain::TerrainState state = ResolveTerrainState(o);
-  const Budget budget = ResolveBudget(o.budget);
-  // The peak search over the DEM's cells, refused before anything grows (a small cell under a
-  // large d made it hang).
-  Check(run::RenameField(
-      terrain::CheckCompareCost(*dem, state.params.Get(TerrainParam::kD), budget), kFieldFlags));
-  Result<terrain::Ring> seed = terrain::StateSeed(state);
-  if (!seed.ok()) Fail(seed.status());
-  const terrain::TerrainGrowLimits limits = terrain::TerrainLimits(state.params, budget);
-  Result<terrain::Terrain> t = terrain::Grow(*seed, state.params, &limits);
-  if (!t.ok()) Fail(t.status());
-  ReportTruncated(t->counts.truncated_by);
-  {
-    // The heightfield on the DEM's grid, refused before it is built.
-    const terrain::GridSize grid = {static_cast<double>(dem->width),
-                                    static_cast<double>(dem->height)};
-    Check(CheckEstimate(
-        terrain::EstimateTerrainGrown(*t, limits) + terrain::EstimateHeightfield(*t, grid), budget,
-        "use a smaller DEM"));
-  }
-  const terrain::Comparison c = terrain::CompareTerrain(*dem, *t);
-  if (c.real.cells == 0) {
-    Fail(Status::Error("--dem", "no DEM cell lies inside the seed contour; must cover it"));
-  }
-  nlohmann::json j;
-  j["method"] = terrain::MethodName(state.params.GetInt(TerrainParam::kMethod));
-  j["seed"] = static_cast<uint64_t>(state.params.Get(TerrainParam::kSeed));
-  j["h0"] = t->h0;
-  j["dh"] = t->dh;
-  j["d"] = t->d;
-  j["url"] = terrain::EncodeTerrainHash(state);
-  j["real"] = MeasuresJson(c.real);
-  j["grown"] = MeasuresJson(c.grown);
-  nlohmann::json levels = nlohmann::json::array();
-  for (const terrain::LevelOverlap& l : c.levels)
-    levels.push_back({{"level", l.level},
-                      {"elevation", l.elevation},
-                      {"real_cells", l.real_cells},
-                      {"grown_cells", l.grown_cells},
-                      {"iou", l.iou}});
-  j["levels"] = levels;
-  j["mean_iou"] = c.mean_iou;
-  j["slope_share_l1"] = c.slope_share_l1;
-  out << j.dump() << "\n";
+  const terrain::TerrainState state = ResolveTerrainState(o);
+  Result<terrain::DemComparison> c = terrain::CompareWithDem(
+      state, std::vector<unsigned char>(png->begin(), png->end()), *side, ResolveBudget(o.budget));
+  if (!c.ok()) Fail(run::RenameField(c.status(), kFieldFlags));
+  ReportTruncated(c->truncated_by);
+  out << c->json << "\n";
   return 0;
 }
 
@@ -433,11 +371,10 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
   grow->add_option("--method", o->method,
                    "simple (Fig 9c), midpoint (Fig 13b), fourier (Fig 15), improved (Fig 16) or a "
                    "figure preset fig9a..fig16");
-  AddNumberFlag(grow, "--seed", &o->seed, TerrainRowRange(TerrainParam::kSeed),
-                "RNG seed, " + RangeHelp(TerrainRowRange(TerrainParam::kSeed)));
+  AddNumberFlag(grow, "--seed", &o->seed, kSeedRange, "RNG seed, " + RangeHelp(kSeedRange));
   grow->add_option("--set", o->sets, "KEY=VALUE of the terrain table (niwa params terrain)");
   AddInputFlag(grow, "--params", &o->params_file,
-               "State JSON {preset, builtin, contour: [[x, y], ...], params: {key: value}}");
+               "State JSON {preset, builtin, contour: [[x, y], ...], seed, params: {key: value}}");
   grow->add_option("--url", o->url,
                    "A share-link hash (preset=...&builtin=... or contour=x,y;...); other flags "
                    "override it");
@@ -475,8 +412,7 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
       compare->add_option("--builtin", co->builtin, "Or a built-in seed (jacksboro)");
   Excludes(compare_contour, compare_builtin);
   compare->add_option("--method", co->method, "As for grow");
-  AddNumberFlag(compare, "--seed", &co->seed, TerrainRowRange(TerrainParam::kSeed),
-                "RNG seed, " + RangeHelp(TerrainRowRange(TerrainParam::kSeed)));
+  AddNumberFlag(compare, "--seed", &co->seed, kSeedRange, "RNG seed, " + RangeHelp(kSeedRange));
   compare->add_option("--set", co->sets, "KEY=VALUE of the terrain table");
   AddInputFlag(compare, "--params", &co->params_file, "State JSON, as for grow");
   compare->add_option("--url", co->url, "A share-link hash, as for grow");
@@ -513,8 +449,8 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
                 "Successive shrinks, " + RangeHelp(kShrinkSteps));
   shrink->add_option("--displace", so->displace,
                      "D0,D2,THETA_MIN,THETA_MAX: midpoint-displace the contour first (Fig 12)");
-  AddNumberFlag(shrink, "--seed", &so->seed, TerrainRowRange(TerrainParam::kSeed),
-                "RNG seed of --displace, " + RangeHelp(TerrainRowRange(TerrainParam::kSeed)));
+  AddNumberFlag(shrink, "--seed", &so->seed, kSeedRange,
+                "RNG seed of --displace, " + RangeHelp(kSeedRange));
   AddOutputFlag(shrink, "--svg", &so->svg, {".svg"}, "Write the figure as .svg");
   commands.push_back(
       {shrink,

@@ -120,8 +120,4 @@ TreeState ResolveTreeState(const StateOptions& o, const CLI::App& cmd) {
   return state;
 }
 
-void CheckPrunes(const GrowRequest& request, const Tree& tree) {
-  for (const Prune& prune : request.prunes) Check(IdlePruneReason(prune, tree).Within("--prune"));
-}
-
 }  // namespace niwa::cli

@@ -36,7 +36,4 @@ void AddStateOptions(CLI::App* cmd, const ParamTable& table, StateOptions* optio
 // --params, --set and --prune on top, each through the tree_state setters. Throws BadInput.
 TreeState ResolveTreeState(const StateOptions& options, const CLI::App& cmd);
 
-// A prune that cuts nothing is bad input (a mistyped id or year), found once the tree has grown.
-void CheckPrunes(const GrowRequest& request, const Tree& tree);
-
 }  // namespace niwa::cli

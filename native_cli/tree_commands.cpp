@@ -10,9 +10,7 @@
 #include "render/tree_lod.h"
 #include "render/tree_run.h"
 #include "run/field_names.h"
-#include "tree/growth.h"
 #include "tree/presets.h"
-#include "tree/tree_report.h"
 #include "tree/tree_simple.h"
 #include "tree/tree_state.h"
 #include "tree/tree_svg.h"
@@ -99,7 +97,7 @@ int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
   if (!early.ok()) Fail(run::RenameField(early, TreeFlagNames()));
   Check(advanced);  // stops early (truncated) at the budget's growth limits
   ReportTruncated(run.tree().truncated_by);
-  CheckPrunes(state, run.tree());
+  Check(run::RenameField(run.CheckPrunes(), TreeFlagNames()));
   if (!o.out_path.empty()) {
     if (std::getenv("NIWA_BUDGET_TRACE")) {  // calibration (docs/budgets.md)
       const Estimate grown = run.grown(), export_estimate = run.ExportWork(request);
@@ -213,10 +211,12 @@ void AddTreeCommands(CLI::App& app, CommandList& commands) {
   AddSvgOptions(grow, &grow_options->svg);
   commands.push_back({mappings,
                       [mappings, mapping_options](std::ostream& out) {
-                        // A prune is checked against the tree it cuts, as 'tree grow' does.
-                        TreeState state = ResolveTreeState(*mapping_options, *mappings);
-                        if (!state.prunes.empty()) CheckPrunes(state, GrowTree(state));
-                        out << TreeMappingsCsv(state.params);
+                        // core/render/tree_run: a prune checked against the tree it cuts.
+                        Result<std::string> csv =
+                            TreeRun::MappingsCsv(ResolveTreeState(*mapping_options, *mappings),
+                                                 ResolveBudget(mapping_options->budget));
+                        Check(run::RenameField(csv.status(), TreeFlagNames()));
+                        out << *csv;
                         return 0;
                       },
                       {"--preset", "binary", "--years", "2"}});

@@ -17,8 +17,6 @@
 
 namespace niwa::ivy {
 
-enum class Accel { kBvh, kLinear };
-
 // What the ivy climbs. mesh == nullptr: no support (every search accepts p + L·v0; the nutrient
 // replay of the spec). The mesh and BVH must outlive the grow.
 struct Support {

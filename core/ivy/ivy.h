@@ -14,6 +14,9 @@
 
 namespace niwa::ivy {
 
+// The support's geometry queries: a BVH, or brute force (the oracle; the state's "accel").
+enum class Accel { kBvh, kLinear };
+
 // Table 1: apical A (a branch tip), dormant D (mid-branch, may still branch), ending Z (never
 // branches again).
 enum class BudKind : uint8_t { kApical, kDormant, kEnding };

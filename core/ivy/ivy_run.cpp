@@ -5,8 +5,10 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
+#include "base/echo.h"
 #include "geom/closest_point.h"
 #include "geom/mesh_metrics.h"
 #include "geom/primitives.h"
@@ -43,6 +45,56 @@ void AddFrontSeed(const geom::TriMesh& seedable, const geom::Bvh& bvh, IvyScene*
   if (hit.found) scene->seeds.push_back({"front", glm::dvec3(hit.point)});
 }
 
+// One of the state's seed_point_items on a scene: "X,Y,Z" (each in [-1e30, 1e30]) or one of the
+// scene's named seeds; errors name "seed_points" and list the names.
+Result<glm::dvec3> SeedPointOf(const std::string& text, const IvyScene& scene) {
+  std::string names;
+  for (const NamedSeed& s : scene.seeds) {
+    if (s.name == text) return s.pos;
+    names += (names.empty() ? "" : ", ") + s.name;
+  }
+  const std::string range = "must be X,Y,Z (each in [-1e30, 1e30])" +
+                            (names.empty() ? std::string() : " or one of " + names);
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    parts.push_back(text.substr(start, comma == std::string::npos ? comma : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (parts.size() != 3)
+    return Status::Error("seed_points", "'" + Echo(text) + "' is unknown; " + range);
+  glm::dvec3 p;
+  for (int i = 0; i < 3; ++i) {
+    std::optional<double> x = ParseNumber(parts[static_cast<std::size_t>(i)]);
+    if (!x || std::fabs(*x) > 1e30)
+      return Status::Error("seed_points", "'" + Echo(text) + "' is out of range; " + range);
+    p[i] = *x;
+  }
+  return p;
+}
+
+// The state as the run holds it on a support: its seed_point_items resolved into seed_points
+// (in order), its accel the support's.
+Result<IvyState> ResolvedOn(const IvyState& state, const IvySupport& support) {
+  if (state.accel != support.accel()) {
+    return Status::Error("accel", std::string("the support was prepared for ") +
+                                      (support.accel() == Accel::kBvh ? "bvh" : "linear") +
+                                      " queries; must be prepared with the state's accel");
+  }
+  IvyState out = state;
+  if (state.seed_point_items.empty()) return out;
+  out.seed_points.clear();
+  for (const std::string& item : state.seed_point_items) {
+    Result<glm::dvec3> p = SeedPointOf(item, support.scene());
+    if (!p.ok()) return p.status();
+    out.seed_points.push_back(*p);
+  }
+  out.seed_point_items.clear();
+  return out;
+}
+
 // The seed points of a state on a support: the state's, else the scene's first named seed.
 Result<std::vector<glm::dvec3>> SeedsOn(const IvyState& state, const IvySupport& support) {
   std::vector<glm::dvec3> seeds = state.seed_points;
@@ -57,6 +109,12 @@ Result<std::vector<glm::dvec3>> SeedsOn(const IvyState& state, const IvySupport&
 }
 
 }  // namespace
+
+IvySupportOptions IvySupportOptions::For(const IvyState& state) {
+  IvySupportOptions options;
+  options.accel = state.accel;
+  return options;
+}
 
 IvySupportInput IvySupportInput::Scene(std::string name) {
   IvySupportInput in;
@@ -165,12 +223,14 @@ Support IvySupport::ForGrow() const {
 Result<IvyRun> IvyRun::Start(const IvyState& state, std::shared_ptr<const IvySupport> support,
                              const Budget& budget, const IvyRunOptions& options) {
   NIWA_RETURN_IF_ERROR(ValidateIvyParams(state.params));
+  Result<IvyState> resolved = ResolvedOn(state, *support);
+  if (!resolved.ok()) return resolved.status();
   IvyRun run;
-  run.state_ = state;
+  run.state_ = std::move(resolved).value();
   run.support_ = std::move(support);
   run.budget_ = budget;
   run.options_ = options;
-  Result<std::vector<glm::dvec3>> seeds = SeedsOn(state, *run.support_);
+  Result<std::vector<glm::dvec3>> seeds = SeedsOn(run.state_, *run.support_);
   if (!seeds.ok()) return seeds.status();
   run.seeds_ = std::move(seeds).value();
   run.SetLimits();
@@ -241,8 +301,11 @@ Status IvyRun::Advance(const run::Observer& observer) {
   return Status::Ok();
 }
 
-Status IvyRun::Update(const IvyState& state) {
-  NIWA_RETURN_IF_ERROR(ValidateIvyParams(state.params));
+Status IvyRun::Update(const IvyState& given) {
+  NIWA_RETURN_IF_ERROR(ValidateIvyParams(given.params));
+  Result<IvyState> resolved = ResolvedOn(given, *support_);
+  if (!resolved.ok()) return resolved.status();
+  const IvyState& state = *resolved;
   bool regrow = !grown_ || state.preset != state_.preset || state.seed != state_.seed ||
                 state.steps != state_.steps || state.scene != state_.scene ||
                 state.seed_points != state_.seed_points || state.tree != state_.tree ||

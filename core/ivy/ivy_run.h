@@ -66,6 +66,9 @@ struct IvySupportOptions {
   // A mesh support's estimate counts its attach mesh and BVH: always (the CLI), or only when it
   // has obstacles (the page). Kept apart so both keep their figures.
   bool mesh_attach_always_counted = true;
+
+  // The options a state asks for (its accel); the rest as above.
+  static IvySupportOptions For(const IvyState& state);
 };
 
 // A prepared support: the scene (subdivided), its BVHs, the attach mesh of a mesh support.
@@ -81,6 +84,7 @@ class IvySupport {
   const IvyScene& scene() const { return scene_; }
   bool free() const { return scene_.free; }
   bool is_mesh() const { return is_mesh_; }
+  Accel accel() const { return accel_; }
   std::size_t obstacles() const { return obstacles_; }
   double triangles() const {  // 0 on the free replay
     return scene_.free ? 0 : static_cast<double>(scene_.mesh.triangle_count());
@@ -134,9 +138,11 @@ struct IvyExportOptions {
 
 class IvyRun : public run::StudyRun {
  public:
-  // Starts growing `state` on `support` within `budget`: seeds are the state's, else the scene's
-  // first named seed (error "seed_points" when there is none); the limits are set from the
-  // support's estimate. Nothing grows until Advance.
+  // Starts growing `state` on `support` within `budget`: seeds are the state's seed_point_items
+  // resolved against the support's scene ("X,Y,Z" or a named seed; the run's state then holds the
+  // points), else its seed_points, else the scene's first named seed (error "seed_points" when
+  // there is none); error "accel" when the support was prepared with other queries than the
+  // state's. The limits are set from the support's estimate. Nothing grows until Advance.
   static Result<IvyRun> Start(const IvyState& state, std::shared_ptr<const IvySupport> support,
                               const Budget& budget, const IvyRunOptions& options = {});
 

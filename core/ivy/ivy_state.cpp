@@ -26,6 +26,14 @@ Status SetIvySeed(double seed, IvyState* state) {
   return Status::Ok();
 }
 
+Status SetIvyAccel(std::string_view name, IvyState* state) {
+  if (name == "bvh" || name == "linear") {
+    state->accel = name == "bvh" ? Accel::kBvh : Accel::kLinear;
+    return Status::Ok();
+  }
+  return Status::Error("accel", "'" + Printable(name) + "' is unknown; must be bvh or linear");
+}
+
 Status SetIvySteps(double steps, IvyState* state) {
   NIWA_RETURN_IF_ERROR(CheckValue("steps", steps, 0, 10000, true));
   state->steps = static_cast<int>(steps);
@@ -162,6 +170,10 @@ Status ApplyIvyStateJson(const std::string& text, IvyState* state) {
     if (!v.ok()) return v.status();
     NIWA_RETURN_IF_ERROR(SetIvyTreeYears(*v, &next));
   }
+  if (j.contains("accel")) {
+    if (!j["accel"].is_string()) return Status::Error("accel", "must be bvh or linear");
+    NIWA_RETURN_IF_ERROR(SetIvyAccel(j["accel"].get<std::string>(), &next));
+  }
   if (j.contains("seed_points")) {
     if (!j["seed_points"].is_string()) {
       return Status::Error("seed_points", "must be text X,Y,Z;X,Y,Z...");
@@ -170,7 +182,7 @@ Status ApplyIvyStateJson(const std::string& text, IvyState* state) {
   }
   NIWA_RETURN_IF_ERROR(ApplyParamsJson(
       text, &next.params,
-      {"preset", "seed", "steps", "name", "scene", "seed_points", "tree", "tree_years"}));
+      {"preset", "seed", "steps", "name", "scene", "seed_points", "tree", "tree_years", "accel"}));
   *state = next;
   return Status::Ok();
 }
@@ -222,6 +234,7 @@ std::string IvyStateJson(const IvyState& state) {
   j["seed_points"] = FormatSeedPoints(state.seed_points);
   j["tree"] = state.tree;
   j["tree_years"] = state.tree_years;
+  if (state.accel == Accel::kLinear) j["accel"] = "linear";  // bvh, the default, as before
   j["params"] = nlohmann::ordered_json::parse(ParamsToJson(state.params, -1));
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "base/status.h"
+#include "ivy/ivy.h"
 #include "ivy/ivy_params.h"
 
 namespace niwa::ivy {
@@ -31,6 +32,15 @@ struct IvyState {
   // in scene units (empty = the scene's first named seed).
   std::string scene;
   std::vector<glm::dvec3> seed_points;
+  // Seed points given one by one (the CLI's --seed-point), each "X,Y,Z" or a named seed of the
+  // support's scene ("base"): IvyRun resolves them in order against its support, in place of
+  // seed_points (errors name "seed_points" and list the scene's names). Not in links or JSON: the
+  // run's state holds the points they resolved to.
+  std::vector<std::string> seed_point_items;
+  // The support's geometry queries: "bvh" or "linear" (brute force); the support is prepared with
+  // it (IvySupportOptions::For) and the run refuses one prepared otherwise. In the state JSON
+  // only when linear; not in links.
+  Accel accel = Accel::kBvh;
   // With scene == kTreeScene: the tree preset ("niwa presets tree") and its age in years. Only the
   // spelling is checked here; the caller that grows the tree names an unknown preset.
   std::string tree = "sakura";
@@ -45,14 +55,15 @@ Status SetIvySteps(double steps, IvyState* state);            // whole number in
 Status SetIvyScene(std::string_view name, IvyState* state);   // a built-in scene, "tree" or ""
 // A tree preset's name: 1..40 of [a-z0-9_-] (the tree study checks that it exists).
 Status SetIvyTree(std::string_view name, IvyState* state);
-Status SetIvyTreeYears(double years, IvyState* state);  // whole number in [1, kMaxTreeYears]
+Status SetIvyTreeYears(double years, IvyState* state);       // whole number in [1, kMaxTreeYears]
+Status SetIvyAccel(std::string_view name, IvyState* state);  // "bvh" or "linear"
 // "X,Y,Z;X,Y,Z" (at most kMaxSeedPoints points, each coordinate in [-1e30, 1e30]); "" = none.
 Status SetIvySeedPoints(std::string_view text, IvyState* state);
 // The seed points as SetIvySeedPoints reads them (shortest round-trip numbers).
 std::string FormatSeedPoints(const std::vector<glm::dvec3>& points);
 
-// Applies {preset, seed, steps, scene, seed_points: "X,Y,Z;..", tree, tree_years, params: {key:
-// value}} (or the keys at the top level) onto state; a "preset" resets the parameters first.
+// Applies {preset, seed, steps, scene, seed_points: "X,Y,Z;..", tree, tree_years, accel, params:
+// {key: value}} (or the keys at the top level) onto state; a "preset" resets the parameters first.
 // Strict: the first bad field is the error, state unchanged. The cross-row checks (t1 < t2, ...)
 // are ValidateIvyParams's.
 Status ApplyIvyStateJson(const std::string& text, IvyState* state);
@@ -68,7 +79,8 @@ std::string IvyStateJson(const IvyState& state);
 void ApplyIvyHash(std::string_view hash, std::string_view prefix, IvyState* state,
                   std::vector<std::string>* notices);
 // The hash of a state: preset, seed, steps, scene and at (when set), tree and tree_years (on the
-// tree scene), and every parameter that differs from the preset.
+// tree scene), and every parameter that differs from the preset (not accel: a link grows the
+// same ivy either way, and the page prepares its supports with a BVH).
 std::string EncodeIvyHash(const IvyState& state, std::string_view prefix = "");
 
 }  // namespace niwa::ivy

@@ -3,14 +3,17 @@
 #include "render/tree_run.h"
 
 #include <algorithm>
+#include <chrono>
 #include <nlohmann/json.hpp>
 #include <utility>
 
+#include "math/rotation.h"
 #include "params/param_table.h"
 #include "params/param_text.h"
 #include "render/lod_budget.h"
 #include "sway/sway_budget.h"
 #include "sway/sway_gltf.h"
+#include "tree/prune.h"
 #include "tree/tree_gltf.h"
 #include "tree/tree_json.h"
 #include "tree/tree_look.h"
@@ -110,7 +113,7 @@ Status TreeRun::Advance(const run::Observer& observer) {
 }
 
 MeshOptions TreeRun::LookOptions() const {
-  // The look rows of the state (a Restate changes them without regrowing the tree).
+  // The look rows of the state (an Update of a mesh row changes them without regrowing the tree).
   MeshOptions options;
   options.look = LookFromParams(state_.params);
   return options;
@@ -140,24 +143,6 @@ void TreeRun::BuildSkin() {
   // 3.3.1, eq. 3.15).
   sway_model_ = BuildSwayModel(tree(), sway_params());
   skin_ = BuildTreeSkin(mesh_, sway_model_);
-}
-
-Status TreeRun::Restate(const TreeState& next) {
-  std::vector<std::string> a, b;
-  for (const Prune& prune : state_.prunes) a.push_back(FormatPrune(prune));
-  for (const Prune& prune : next.prunes) b.push_back(FormatPrune(prune));
-  if (next.preset != state_.preset || next.seed != state_.seed || next.years != state_.years ||
-      a != b) {
-    return Status::Error("restate",
-                         "preset, seed, years and prunes must be those of the tree grown");
-  }
-  const GrowLimits limits = state_.limits;  // the growth's, kept with the tree grown
-  state_ = next;
-  state_.limits = limits;
-  // The look rows (leaf_shape, season) dress the same tree anew: leaves and flowers per season.
-  BuildBareMesh();
-  BuildSkin();
-  return Status::Ok();
 }
 
 Result<run::StageMask> TreeRun::Update(const TreeState& next) {
@@ -357,6 +342,63 @@ Estimate TreeRun::SwayEstimate(int tips) const {
 OrbitView TreeRun::FrameView(float fov_y) const {
   TreeMesh scratch;
   return FrameOrbitView(MeshBounds(MeshOrBuilt(&scratch)), fov_y);
+}
+
+Status TreeRun::CheckPrunes() const {
+  for (const Prune& prune : state_.prunes)
+    NIWA_RETURN_IF_ERROR(IdlePruneReason(prune, tree()).Within("prune"));
+  return Status::Ok();
+}
+
+Result<std::string> TreeRun::MappingsCsv(const TreeState& state, const Budget& budget) {
+  if (!state.prunes.empty()) {  // a prune is checked against the tree it cuts
+    Result<TreeRun> run = Start(state, budget);
+    if (!run.ok()) return run.status();
+    NIWA_RETURN_IF_ERROR(run->Advance(nullptr));
+    NIWA_RETURN_IF_ERROR(run->CheckPrunes());
+  }
+  return TreeMappingsCsv(state.params);
+}
+
+Result<std::string> TreeRun::RenderStats(const TreeState& state, const Budget& budget,
+                                         const RenderStatsRequest& request) {
+  using Clock = std::chrono::steady_clock;
+  const auto ms = [](Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+  };
+  RenderOptions render = RenderOptionsFromParams(state.params);
+  render.line_segments = request.line_segments;
+  NIWA_RETURN_IF_ERROR(CheckRenderOptions(render));
+  const auto start = Clock::now();
+  Result<TreeRun> started = Start(state, budget);
+  if (!started.ok()) return started.status();
+  TreeRun& run = *started;
+  NIWA_RETURN_IF_ERROR(run.Advance(nullptr));
+  NIWA_RETURN_IF_ERROR(run.CheckPrunes());
+  run.BuildBareMesh();
+  const float fov = request.fov_deg * (kPi / 180.0f);
+  const OrbitView view = request.view ? *request.view : run.FrameView(fov);  // as the page frames
+  const RenderCamera camera = CameraFromOrbit(view, request.width, request.height, fov);
+  const auto select_start = Clock::now();
+  const HybridScene scene = BuildHybridScene(run.tree(), render);
+  const auto scene_end = Clock::now();
+  const HybridSelection selection = SelectHybrid(run.tree(), scene, camera, nullptr);
+  const TreeViewCounts counts = run.CountView(scene, selection);
+  const auto select_end = Clock::now();
+  RenderStatsHeader header;
+  header.full = request.full;
+  header.preset = run.tree().preset;
+  header.seed = run.tree().seed;
+  header.years = run.tree().years;
+  header.width = request.width;
+  header.height = request.height;
+  header.cam = FormatOrbitView(view);
+  header.threshold = render.threshold_px;
+  header.leaf_mode = render.leaf_mode == LeafMode::kBranchCards ? "branch" : "cluster";
+  header.ms_grow_mesh = ms(start, select_start);
+  header.ms_scene = ms(select_start, scene_end);
+  header.ms_select = ms(scene_end, select_end);
+  return RenderStatsJson(counts, header);
 }
 
 TreeViewCounts TreeRun::CountView(const HybridScene& scene,

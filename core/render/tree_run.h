@@ -8,6 +8,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,16 @@ struct RenderStatsHeader {
 std::string ViewCountsJson(const TreeViewCounts& counts);
 std::string RenderStatsJson(const TreeViewCounts& counts, const RenderStatsHeader& header);
 
+// One view for `niwa tree render-stats` (TreeRun::RenderStats). The hybrid options are the
+// state's render rows (line_threshold, card_planes, leaf_cluster_cards) and line_segments.
+struct RenderStatsRequest {
+  bool full = false;  // mode "full": every polygon
+  int width = 512, height = 512;
+  float fov_deg = 45;
+  std::optional<OrbitView> view;  // none: the page's framing of the tree (FrameView)
+  int line_segments = 1;          // most segments per line branch (not a row of the table)
+};
+
 class TreeRun : public run::StudyRun {
  public:
   // state.limits are the growth limits (tree_budget's TreeGrowLimits over the front end's budget,
@@ -109,14 +120,9 @@ class TreeRun : public run::StudyRun {
   bool has_mesh() const { return has_mesh_; }
   const TreeMesh& mesh() const { return mesh_; }
   // The node points of the tree in the state's sway rows and the skin of the mesh to them (eq.
-  // 3.15). Built by BuildMesh and by Restate.
+  // 3.15). Built by BuildMesh and by an Update that re-does the mesh or sway stage.
   const SwayModel& sway_model() const { return sway_model_; }
   const TreeSkin& skin() const { return skin_; }
-
-  // A state that grows the same tree (preset, seed, years and prunes; else an error naming
-  // "state"): the look, sway and render rows take effect; the mesh (when built) and the skin are
-  // rebuilt. The run is unchanged on error.
-  Status Restate(const TreeState& next);
 
   // A new state: re-does only the earliest stage whose rows changed (the table's stage column:
   // grow, mesh, sway, view) and the ones after it, and returns those stages as a mask (0: nothing
@@ -127,6 +133,21 @@ class TreeRun : public run::StudyRun {
   // weights follow sway_alpha). view: only the state. The growth's limits stay unless it regrows.
   // Refused as Start refuses, the run then unchanged.
   Result<run::StageMask> Update(const TreeState& next);
+
+  // A prune that cut nothing (a mistyped id or year), found once grown: the first such prune's
+  // IdlePruneReason under the field "prune" ("prune: 3:b99: ..."); ok when every prune cut.
+  Status CheckPrunes() const;
+
+  // `niwa tree mappings`: the hormone- and age-dependent ranges of the state's rows (N, D, b_L,
+  // b_g, break chances) as CSV (tree_report TreeMappingsCsv); with prunes, the tree is grown
+  // first and a prune that cuts nothing refused (CheckPrunes). Errors as Start's, "prune".
+  static Result<std::string> MappingsCsv(const TreeState& state, const Budget& budget);
+
+  // `niwa tree render-stats`: the state grown (the budget covers the growth), its prunes checked,
+  // its mesh built, and table 4.1 of the request's view (the page's framing when none) as
+  // RenderStatsJson, its times measured here. Errors as Start's, "prune", CheckRenderOptions's.
+  static Result<std::string> RenderStats(const TreeState& state, const Budget& budget,
+                                         const RenderStatsRequest& request);
 
   // ---- outputs ----
   // bark, leaves, flowers (the non-empty ones) with their materials and textures, as the .glb's

@@ -317,8 +317,8 @@ Result<Ring> CheckSeed(const Ring& seed) {
   return r;
 }
 
-Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, const TerrainGrowLimits* limits,
-                     const GrowWatch& watch) {
+Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_seed,
+                     const TerrainGrowLimits* limits, const GrowWatch& watch) {
   NIWA_RETURN_IF_ERROR(CheckTerrainParams(p));
   Result<Ring> seed = CheckSeed(seed_in);
   if (!seed.ok()) return seed.status();
@@ -334,7 +334,6 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, const TerrainG
   so.c = p.Get(P::kC);
   so.clean_len = p.Get(P::kCleanLen) * d;
   so.clean_angle_deg = p.Get(P::kCleanAngle);
-  const uint64_t rng_seed = static_cast<uint64_t>(p.Get(P::kSeed));
   const int max_levels = p.GetInt(P::kMaxLevels);
 
   TerrainWork work;  // counted for the budget's checks (terrain_budget.h)

@@ -58,9 +58,10 @@ struct TerrainGrowLimits;  // terrain_budget.h
 // ...; −1, −2, ... below the seed); false cancels: Grow returns run::CancelledStatus().
 using GrowWatch = std::function<bool(int level)>;
 
-// Grows the whole mountain from the seed with the table's method and constants; with `limits`,
-// stops before a contour whose worst case would cross them (counts.truncated_by holds the line).
-Result<Terrain> Grow(const Ring& seed, const TerrainParams& params,
+// Grows the whole mountain from the seed with the table's method and constants and the RNG seed
+// (TerrainState::seed; kDefaultTerrainSeed when none is given); with `limits`, stops before a
+// contour whose worst case would cross them (counts.truncated_by holds the line).
+Result<Terrain> Grow(const Ring& seed, const TerrainParams& params, uint64_t rng_seed,
                      const TerrainGrowLimits* limits = nullptr, const GrowWatch& watch = {});
 
 }  // namespace niwa::terrain

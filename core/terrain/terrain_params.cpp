@@ -58,8 +58,6 @@ const ParamTable& TerrainTable() {
            "Fig 8 pre-clean: a point of an edge shorter than this (× d) is dropped."},
           {Id(P::kCleanAngle), "clean_angle", "", "deg", 10, 0, 60, false, "shrink", kGrow,
            "Fig 8 pre-clean: a vertex whose angle is sharper than this is dropped."},
-          {Id(P::kSeed), "seed", "", "", 1, 0, 4294967295.0, true, "method", kGrow,
-           "RNG seed (one PCG32 stream per contour from the seed and the contour's path)."},
           {Id(P::kMaxLevels), "max_levels", "", "", 1000, 1, 10000, true, "method", kGrow,
            "Levels grown at most (the result says truncated when hit)."},
           {Id(P::kDown), "down", "", "", 0, 0, 1000, true, "method", kGrow,

@@ -1,8 +1,10 @@
 // The terrain study's parameter table (Misawa, Chiba, Saito 1987; docs/terrain-model.md): one row
-// per constant of the contour generation methods, the surface and the RNG, and the figure presets
-// (Figs 9, 10, 13, 14, 15, 16) as row values. Does not: grow anything (generate.h).
+// per constant of the contour generation methods and the surface, and the figure presets (Figs 9,
+// 10, 13, 14, 15, 16) as row values. Does not: grow anything (generate.h), or hold the RNG seed (a
+// state field, as the tree's and the ivy's: terrain_state.h).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -30,13 +32,17 @@ enum class TerrainParam : int {
   kLoopRun,     // method 2: the start run's length
   kCleanLen,    // Fig 8 pre-clean: short edge, as a multiple of d
   kCleanAngle,  // Fig 8 pre-clean: acute angle (deg)
-  kSeed,        // RNG seed
   kMaxLevels,   // level cap
   kDown,        // contours grown below the seed (enlarging, §2)
   kRes,         // heightfield cells along the longer side
   kTint,        // hypsometric vertex colours in the mesh (0/1)
   kCount
 };
+
+// The RNG seed's range (TerrainState::seed; one PCG32 stream per contour from it and the
+// contour's path) and its value when none is given.
+constexpr double kMaxTerrainSeed = 4294967295.0;
+constexpr uint64_t kDefaultTerrainSeed = 1;
 
 const niwa::ParamTable& TerrainTable();
 const niwa::ParamTable& TableOf(TerrainParam);

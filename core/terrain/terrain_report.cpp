@@ -12,8 +12,8 @@ nlohmann::json TerrainStatsJson(const TerrainState& state, const Terrain& terrai
   const TerrainParams& params = state.params;
   nlohmann::json j;
   j["method"] = MethodName(params.GetInt(TerrainParam::kMethod));
-  // A whole number in [0, 2^32 − 1] (the row's range): int would not hold it.
-  j["seed"] = static_cast<uint64_t>(params.Get(TerrainParam::kSeed));
+  // A whole number in [0, 2^32 − 1]: int would not hold it.
+  j["seed"] = state.seed;
   j["levels"] = s.levels;
   j["contours"] = s.contours;
   j["peaks"] = s.peaks;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "terrain/compare.h"
 #include "terrain/contour_io.h"
 #include "terrain/generate.h"
 #include "terrain/polygon.h"
@@ -91,7 +92,8 @@ Status TerrainRun::Update(const TerrainState& state) {
   Result<Ring> seed = Check(state);
   if (!seed.ok()) return seed.status();
   Stage stage = Stage::kView;
-  if (!grown_ || state.builtin != state_.builtin || state.points != state_.points) {
+  if (!grown_ || state.builtin != state_.builtin || state.points != state_.points ||
+      state.seed != state_.seed) {
     stage = Stage::kGrow;
   } else {
     const ParamTable& table = TerrainTable();
@@ -152,7 +154,7 @@ Status TerrainRun::Advance(const run::Observer& observer) {
         return observer(progress);
       };
     }
-    Result<Terrain> t = Grow(next_seed_, params, &limits, watch);
+    Result<Terrain> t = Grow(next_seed_, params, next_.seed, &limits, watch);
     truncated_by_.clear();
     checked_estimate_.reset();
     if (!t.ok()) return t.status();
@@ -267,6 +269,64 @@ Result<std::string> TerrainRun::Export(const std::string& format) const {
       return TerrainToSvg(terrain_);
   }
   return Status::Error("format", "unknown format");
+}
+
+namespace {
+nlohmann::json MeasuresJson(const SurfaceMeasures& m) {
+  return {{"cells", m.cells},
+          {"relief", m.relief},
+          {"hypsometric_integral", m.hypsometric_integral},
+          {"mean_slope_deg", m.mean_slope_deg},
+          {"slope_p90_deg", m.slope_p90_deg},
+          {"slope_share", m.slope_share},
+          {"peaks", m.peaks}};
+}
+}  // namespace
+
+Result<DemComparison> CompareWithDem(const TerrainState& state,
+                                     const std::vector<unsigned char>& dem_png,
+                                     const std::string& dem_sidecar, const Budget& budget) {
+  Result<Heightfield> dem = ReadHeightmap(dem_png, dem_sidecar, "dem");
+  if (!dem.ok()) return dem.status();
+  // The peak search over the DEM's cells, refused before anything grows (a small cell under a
+  // large d made it hang).
+  NIWA_RETURN_IF_ERROR(CheckCompareCost(*dem, state.params.Get(TerrainParam::kD), budget));
+  Result<Ring> seed = StateSeed(state);
+  if (!seed.ok()) return seed.status();
+  const TerrainGrowLimits limits = TerrainLimits(state.params, budget);
+  Result<Terrain> t = Grow(*seed, state.params, state.seed, &limits);
+  if (!t.ok()) return t.status();
+  DemComparison out;
+  out.truncated_by = t->counts.truncated_by;
+  // The heightfield on the DEM's grid, refused before it is built.
+  const GridSize grid = {static_cast<double>(dem->width), static_cast<double>(dem->height)};
+  NIWA_RETURN_IF_ERROR(
+      CheckEstimate(EstimateTerrainGrown(*t, limits) + EstimateHeightfield(*t, grid), budget,
+                    "use a smaller DEM"));
+  const Comparison c = CompareTerrain(*dem, *t);
+  if (c.real.cells == 0)
+    return Status::Error("dem", "no DEM cell lies inside the seed contour; must cover it");
+  nlohmann::json j;
+  j["method"] = MethodName(state.params.GetInt(TerrainParam::kMethod));
+  j["seed"] = state.seed;
+  j["h0"] = t->h0;
+  j["dh"] = t->dh;
+  j["d"] = t->d;
+  j["url"] = EncodeTerrainHash(state);
+  j["real"] = MeasuresJson(c.real);
+  j["grown"] = MeasuresJson(c.grown);
+  nlohmann::json levels = nlohmann::json::array();
+  for (const LevelOverlap& l : c.levels)
+    levels.push_back({{"level", l.level},
+                      {"elevation", l.elevation},
+                      {"real_cells", l.real_cells},
+                      {"grown_cells", l.grown_cells},
+                      {"iou", l.iou}});
+  j["levels"] = levels;
+  j["mean_iou"] = c.mean_iou;
+  j["slope_share_l1"] = c.slope_share_l1;
+  out.json = j.dump();
+  return out;
 }
 
 void TerrainRun::FillSurfaceBuffers(SurfaceBuffers* out) const {

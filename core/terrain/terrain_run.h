@@ -45,6 +45,20 @@ struct TerrainRunCounts {
   int heightfields = 0;  // heightfields built
 };
 
+// `terrain compare` (issue 19 item 4), once for every front end: the state grown from its seed and
+// measured against a real DEM (the bytes of a 16-bit heightmap PNG and its sidecar JSON, as
+// `terrain grow --heightmap` writes them), as one JSON object {method, seed, h0, dh, d, url, real,
+// grown, levels, mean_iou, slope_share_l1}. The peak search's cost is refused before anything
+// grows, the grown contours with the heightfield on the DEM's grid before that is built. Errors
+// name "dem" or a state field ("contour", "theta_max", ...) or the budget's limit.
+struct DemComparison {
+  std::string json;
+  std::string truncated_by;  // the line of the limit that stopped the grow, "" when none
+};
+Result<DemComparison> CompareWithDem(const TerrainState& state,
+                                     const std::vector<unsigned char>& dem_png,
+                                     const std::string& dem_sidecar, const Budget& budget);
+
 // "glb", "heightmap" (the .png), "sidecar" (its .json), "json", "geojson" or "svg" as the output
 // it is; error {"format", "unknown format; must be ..."}.
 Result<TerrainOutput> TerrainOutputOfFormat(const std::string& format);

@@ -92,6 +92,12 @@ Status SetTerrainBuiltin(std::string_view name, TerrainState* state) {
   return Status::Ok();
 }
 
+Status SetTerrainSeed(double seed, TerrainState* state) {
+  NIWA_RETURN_IF_ERROR(CheckValue("seed", seed, 0, kMaxTerrainSeed, true));
+  state->seed = static_cast<uint64_t>(seed);
+  return Status::Ok();
+}
+
 Status SetTerrainPoints(const Ring& points, TerrainState* state) {
   if (points.size() < 3 || points.size() > kMaxStatePoints) {
     return Status::Error("contour", std::to_string(points.size()) + " points; must be 3 to " +
@@ -125,6 +131,22 @@ Status ApplyTerrainStateJson(const std::string& text, TerrainState* state) {
     return Status::Error("params", "not a JSON object; must be {preset, builtin, contour, params}");
   }
   TerrainState next = *state;
+  // The seed: a state field, or (a file of before) a row of "params"; it leaves the text the
+  // parameters are read from.
+  const bool params_seed =
+      j.contains("params") && j["params"].is_object() && j["params"].contains("seed");
+  if (params_seed && j.contains("seed")) {
+    return Status::Error("seed", "given at the top and in params; must be given once");
+  }
+  if (j.contains("seed") || params_seed) {
+    const nlohmann::json& v = params_seed ? j["params"]["seed"] : j["seed"];
+    std::optional<double> x;
+    if (v.is_number()) x = v.get<double>();
+    if (v.is_string()) x = ParseNumber(v.get<std::string>());
+    if (!x) return Status::Error("seed", "must be a whole number in [0, 4294967295]");
+    NIWA_RETURN_IF_ERROR(SetTerrainSeed(*x, &next));
+    if (params_seed) j["params"].erase("seed");
+  }
   if (j.contains("builtin") && !j["builtin"].is_null()) {
     if (!j["builtin"].is_string()) return Status::Error("builtin", "must be a seed name");
     const std::string b = j["builtin"].get<std::string>();
@@ -145,7 +167,8 @@ Status ApplyTerrainStateJson(const std::string& text, TerrainState* state) {
     if (!j["preset"].is_string()) return Status::Error("preset", "must be a preset name");
     NIWA_RETURN_IF_ERROR(SetTerrainPreset(j["preset"].get<std::string>(), &next));
   }
-  NIWA_RETURN_IF_ERROR(ApplyParamsJson(text, &next.params, {"preset", "builtin", "contour"}));
+  NIWA_RETURN_IF_ERROR(ApplyParamsJson(params_seed ? j.dump() : text, &next.params,
+                                       {"preset", "builtin", "contour", "seed"}));
   *state = next;
   return Status::Ok();
 }
@@ -154,6 +177,7 @@ std::string TerrainStateJson(const TerrainState& state) {
   nlohmann::json j;
   j["preset"] = state.preset;
   j["builtin"] = state.builtin;
+  j["seed"] = state.seed;
   if (state.builtin.empty()) {
     nlohmann::json pts = nlohmann::json::array();
     for (const Vec2& v : state.points) pts.push_back({v.x, v.y});
@@ -177,6 +201,11 @@ void ApplyTerrainHash(std::string_view hash, std::string_view prefix, TerrainSta
       Status s = ring ? SetTerrainPoints(*ring, state)
                       : Status::Error("contour", "not x,y;x,y;... numbers");
       if (!s.ok()) notices->push_back(Printable(key) + ": " + s.message() + "; dropped");
+    } else if (key == pre + "seed") {
+      std::optional<double> x = ParseNumber(value);
+      Status s = x ? SetTerrainSeed(*x, state)
+                   : Status::Error("seed", "'" + Printable(value) + "' is not a number");
+      if (!s.ok()) notices->push_back(Printable(key) + ": " + s.message() + "; dropped");
     }
   }
   bool preset_given = false;
@@ -191,7 +220,9 @@ void ApplyTerrainHash(std::string_view hash, std::string_view prefix, TerrainSta
     if (base.ok()) state->params = *base;
   }
   for (const auto& [key, value] : pairs) {
-    if (key == pre + "preset" || key == pre + "builtin" || key == pre + "contour") continue;
+    if (key == pre + "preset" || key == pre + "builtin" || key == pre + "contour" ||
+        key == pre + "seed")
+      continue;
     if (ApplyHashParam(key, value, prefix, &state->params, notices)) continue;
     if (prefix.empty() || key.rfind(pre, 0) == 0)
       notices->push_back("unknown key '" + Printable(key) + "' dropped");
@@ -216,8 +247,19 @@ std::string EncodeTerrainHash(const TerrainState& state, std::string_view prefix
   } else {
     out += pre + "contour=" + EncodeContourPoints(state.points);
   }
-  Result<TerrainParams> base = BaseParams(state.preset, state.builtin);
-  out += EncodeChangedParams(state.params, base.ok() ? *base : TerrainParams(), prefix);
+  Result<TerrainParams> found = BaseParams(state.preset, state.builtin);
+  const TerrainParams base = found.ok() ? *found : TerrainParams();
+  // The rows before max_levels, the seed where its row stood, then the rest.
+  // (each base takes the state's values of the rows the other half writes).
+  TerrainParams before = base, after = base;
+  for (std::size_t row = 0; row < state.params.size(); ++row) {
+    TerrainParams& same = row < static_cast<std::size_t>(TerrainParam::kMaxLevels) ? after : before;
+    (void)same.Set(row, state.params.Get(row));
+  }
+  out += EncodeChangedParams(state.params, before, prefix);
+  if (state.seed != kDefaultTerrainSeed)
+    out += "&" + pre + "seed=" + FormatNumber(static_cast<double>(state.seed));
+  out += EncodeChangedParams(state.params, after, prefix);
   return out;
 }
 

@@ -48,6 +48,8 @@ const hostile = [
   [['--builtin', 'moon'], '--builtin'], [['--method', 'x'], '--method'], [['--seed', '-1'], '--seed'],
   [['--set', 'c=0.5'], '--set'], [['--set', 'd=0'], '--set'], [['--set', 'd=nan'], '--set'],
   [['--contour', join(dir, 'none.json')], '--contour'], [['--contour', crossing], '--contour'],
+  // The seed is a state field, not a table row (issue 28 item 6): --set does not take it.
+  [['--set', 'seed=3'], '--set'], [['--seed', '4294967296'], '--seed'],
 ];
 for (const [args, field] of hostile) {
   for (const cmd of [native, wasm]) {
@@ -58,6 +60,29 @@ for (const [args, field] of hostile) {
     check(`${buildName(cmd)} ${args.join(' ')}: exit ${r.status}, "${lines[0]}"`,
       r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${field}`) && !existsSync(out));
   }
+}
+
+// The seed as a state field (issue 28 item 6), in both builds: --seed over --url and --params, a
+// preset (--method) keeps the link's seed, a state file of when it was a row (params.seed) reads,
+// and the link carries it where its row stood.
+const oldState = join(dir, 'old_state.json'), newState = join(dir, 'new_state.json');
+writeFileSync(oldState, JSON.stringify({ preset: 'fig16', builtin: 'disk', params: { seed: 6, res: 32 } }));
+writeFileSync(newState, JSON.stringify({ preset: 'fig16', builtin: 'disk', seed: 6, params: { res: 32 } }));
+const seedCases = [
+  [['--url', 'builtin=disk&seed=5&res=32'], 5, 'builtin=disk&seed=5&res=32'],
+  [['--url', 'builtin=disk&seed=5&res=32', '--seed', '9'], 9, 'builtin=disk&seed=9&res=32'],
+  // (--method resets the rows to the preset's, res too; the seed stays)
+  [['--url', 'builtin=disk&seed=5&res=32', '--method', 'fig13b'], 5, 'preset=fig13b&builtin=disk&seed=5'],
+  [['--params', oldState], 6, 'preset=fig16&builtin=disk&seed=6&res=32'],
+  [['--params', newState], 6, 'preset=fig16&builtin=disk&seed=6&res=32'],
+  [['--params', newState, '--seed', '0'], 0, 'preset=fig16&builtin=disk&seed=0&res=32'],
+  [['--builtin', 'disk', '--set', 'clean_angle=12', '--set', 'max_levels=50', '--seed', '3', '--set', 'res=32'], 3,
+    'builtin=disk&clean_angle=12&seed=3&max_levels=50&res=32'],
+];
+for (const [args, seed, url] of seedCases) {
+  const [a, b] = [native, wasm].map((cmd) => withoutMs(JSON.parse(run(cmd, ['terrain', 'grow', ...args, '--stats']))));
+  check(`${args.join(' ')}: seed ${a.seed}, url ${a.url}, native == WASM`,
+    a.seed === seed && a.url === url && JSON.stringify(a) === JSON.stringify(b));
 }
 
 // --repair: the crossing contour made simple as the page makes a drawing (core/terrain/

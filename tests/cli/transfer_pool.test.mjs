@@ -1,10 +1,12 @@
 // web/worker/transfer.js TransferPool under node (no module, no browser): a reply's views are
 // copied into the buffers the client handed back when they fit (the same ArrayBuffer object comes
 // back, views of the exact length), else into fresh ones with headroom; another client's buffers,
-// a too-small one and a far too big one are not used; empty views take nothing.
+// a too-small one and a far too big one are not used (and dropped, counted); empty views take
+// nothing; a pooled buffer its group's replies have not reused for MAX_IDLE_REPLIES is dropped (the
+// pool does not only grow), and forget() drops a client's.
 // Run: node tests/cli/transfer_pool.test.mjs
 import { check, finish } from '../support/cli_pair.mjs';
-import { HEADROOM, SHRINK, TransferPool, takeBuffers } from '../../web/worker/transfer.js';
+import { HEADROOM, MAX_IDLE_REPLIES, SHRINK, TransferPool, takeBuffers } from '../../web/worker/transfer.js';
 
 const pool = new TransferPool();
 const views = (n) => ({ positions: Float32Array.from({ length: 3 * n }, (_, i) => i / 7), indices: Uint32Array.from({ length: n }, (_, i) => i) });
@@ -43,7 +45,7 @@ counts = { reused: 0, fresh: 0 };
 pool.take('a', 'bark', { positions: new Float32Array(100) }, [], counts);
 pool.give('a', { 'bark.positions': new ArrayBuffer(SHRINK * 4 * (1 << 20)) });
 pool.take('a', 'bark', { positions: new Float32Array(1 << 18) }, [], counts);
-check('a too small or far too big buffer is not used', counts.reused === 0 && counts.fresh === 2, JSON.stringify(counts));
+check('a too small or far too big buffer is not used, and dropped', counts.reused === 0 && counts.fresh === 2 && counts.dropped === 2, JSON.stringify(counts));
 
 // Empty views move nothing and keep a returned buffer for later.
 const kept = new ArrayBuffer(64);
@@ -54,6 +56,34 @@ const empty = pool.take('a', 'flowers', { positions: new Float32Array(0) }, tran
 const later = pool.take('a', 'flowers', { positions: new Float32Array(4) }, transfer, counts);
 check('an empty view takes nothing and the buffer waits', empty.positions.length === 0 && later.positions.buffer === kept
   && counts.reused === 1 && counts.fresh === 0 && transfer.length === 1, JSON.stringify(counts));
+
+// Aging: a part that stays empty leaves its returned buffer in the pool for MAX_IDLE_REPLIES replies
+// of its group, then it is dropped; another group's replies do not age it, and a buffer given back
+// again starts afresh.
+const aging = new TransferPool();
+const big = new ArrayBuffer(1 << 20);
+aging.give('c', { 'flowers.positions': big, 'bark.positions': new ArrayBuffer(4096) });
+check('the pool holds what was given', aging.held('c').buffers === 2 && aging.held('c').bytes === (1 << 20) + 4096, JSON.stringify(aging.held('c')));
+counts = { reused: 0, fresh: 0, dropped: 0 };
+for (let k = 0; k < 10; ++k) aging.take('c', 'leaves', { positions: new Float32Array(0) }, [], counts);
+check('replies of another group do not age a buffer', aging.held('c').buffers === 2 && counts.dropped === 0, JSON.stringify(aging.held('c')));
+for (let k = 1; k < MAX_IDLE_REPLIES; ++k) aging.take('c', 'flowers', { positions: new Float32Array(0) }, [], counts);
+check(`kept through ${MAX_IDLE_REPLIES - 1} replies that did not reuse it`, aging.held('c').buffers === 2 && counts.dropped === 0, JSON.stringify(counts));
+aging.take('c', 'flowers', { positions: new Float32Array(0) }, [], counts);
+check(`dropped at the ${MAX_IDLE_REPLIES}th`, aging.held('c').buffers === 1 && aging.held('c').bytes === 4096 && counts.dropped === 1, JSON.stringify(counts));
+// A name the reply no longer sends ages the same way; a buffer reused is taken out, so it never ages.
+aging.give('c', { 'bark.uvs': new ArrayBuffer(64) });
+for (let k = 0; k < MAX_IDLE_REPLIES; ++k) {
+  const t = aging.take('c', 'bark', { positions: new Float32Array(8) }, [], counts);
+  aging.give('c', { 'bark.positions': t.positions.buffer });
+}
+check('a name no longer sent is dropped; the reused one stays', aging.held('c').buffers === 1 && counts.dropped === 2 && counts.reused === MAX_IDLE_REPLIES,
+  JSON.stringify({ held: aging.held('c'), counts }));
+// Nested groups ("atlas.bark") are their own: "atlas" replies do not age them.
+aging.give('c', { 'atlas.bark.positions': new ArrayBuffer(64) });
+for (let k = 0; k < MAX_IDLE_REPLIES; ++k) aging.take('c', 'atlas', { x: new Float32Array(0) }, [], counts);
+check('a nested group is not aged by its parent\'s replies', aging.held('c').buffers === 2, JSON.stringify(aging.held('c')));
+check('forget drops a client\'s buffers', aging.forget('c') === 2 && aging.held('c').buffers === 0);
 
 // takeBuffers (the replies that are not pooled): one fresh buffer each, exactly the view's bytes.
 transfer = [];

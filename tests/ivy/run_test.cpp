@@ -1,7 +1,7 @@
 // core/ivy/ivy_run: the ivy pipeline tested once through IvySupport and IvyRun (a scene, a mesh
 // with a seed, a tree through core/compose, cancel, a budget refusal before work, the exports
-// equal to `niwa ivy grow --out`, the share hash with a prefix, the mesh-stage cache). Natively and
-// under node on WASM.
+// equal to `niwa ivy grow --out`, the share hash with a prefix, the mesh-stage cache, the seed
+// points and the queries as state fields the run reads). Natively and under node on WASM.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -291,6 +291,72 @@ TEST(IvyRun, UpdateRedoesOnlyTheStageThatChanged) {
   ASSERT_TRUE(run.Advance({}).ok());
   EXPECT_EQ(run.grows(), 2);
   EXPECT_EQ(run.remeshes(), 3);
+}
+
+// Issue 28 item 2: --seed-point and --accel are state fields the run reads. Seed points given one
+// by one ("X,Y,Z" or a named seed of the scene) are resolved in order against the support, and
+// the run's state (its hash) holds the points; errors name "seed_points" and "accel".
+TEST(IvyRun, SeedPointItemsAndAccelAreStateFields) {
+  std::shared_ptr<const IvySupport> cubes = Prepared(IvySupportInput::Scene("cubes4"));
+  ASSERT_FALSE(cubes->scene().seeds.empty());
+  const NamedSeed& named = cubes->scene().seeds.back();
+  IvyState state = Steps(5);
+  state.seed_point_items = {"600,10,410", named.name};
+  IvyRun run = Started(state, cubes);
+  ASSERT_EQ(run.seeds().size(), 2u);
+  EXPECT_EQ(run.seeds()[0], glm::dvec3(600, 10, 410));
+  EXPECT_EQ(run.seeds()[1], named.pos);
+  EXPECT_TRUE(run.state().seed_point_items.empty());
+  EXPECT_EQ(run.state().seed_points, run.seeds());
+  IvyState points = Steps(5);
+  points.seed_points = run.seeds();
+  EXPECT_EQ(run.Hash(""), EncodeIvyHash(points));  // the link carries the points
+  // The CLI's --seed-point gives the same ivy.
+  ASSERT_TRUE(run.Advance({}).ok());
+  CliResult cli = RunNiwa({"ivy", "grow", "--scene", "cubes4", "--steps", "5", "--seed-point",
+                           "600,10,410", "--seed-point", named.name, "--stats"});
+  ASSERT_EQ(cli.code, 0) << cli.err;
+  EXPECT_EQ(WithoutMs(nlohmann::json::parse(cli.out)),
+            WithoutMs(nlohmann::json::parse(run.StatsJson())));
+  // Errors name the field, the CLI its flag.
+  IvyState bad = Steps(5);
+  bad.seed_point_items = {"nowhere"};
+  Result<IvyRun> refused = IvyRun::Start(bad, cubes, Budget{});
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.status().field(), "seed_points");
+  EXPECT_NE(refused.status().message().find("or one of " + cubes->scene().seeds[0].name),
+            std::string::npos)
+      << refused.status().Line();
+  bad.seed_point_items = {"1,2,1e31"};
+  EXPECT_EQ(
+      IvyRun::Start(bad, cubes, Budget{}).status().message().rfind("'1,2,1e31' is out of range", 0),
+      0u);
+  bad.seed_point_items = {"nowhere"};
+  const std::string line = IvyRun::Start(bad, cubes, Budget{}).status().message();
+  CliResult flag = RunNiwa({"ivy", "grow", "--steps", "3", "--seed-point", "nowhere"});
+  EXPECT_EQ(flag.code, 2);
+  EXPECT_EQ(flag.err, "niwa: error: --seed-point: " + line + "\n");
+  // accel: prepared with the state's; a support prepared otherwise is refused.
+  IvyState linear = Steps(5);
+  ASSERT_TRUE(SetIvyAccel("linear", &linear).ok());
+  EXPECT_EQ(SetIvyAccel("kd", &linear).Line(), "accel: 'kd' is unknown; must be bvh or linear");
+  EXPECT_EQ(IvyRun::Start(linear, cubes, Budget{}).status().field(), "accel");
+  std::shared_ptr<const IvySupport> brute =
+      Prepared(IvySupportInput::Scene("cubes4"), IvySupportOptions::For(linear));
+  EXPECT_EQ(brute->accel(), Accel::kLinear);
+  IvyRun slow = Started(linear, brute);
+  ASSERT_TRUE(slow.Advance({}).ok());
+  IvyRun fast = Started(Steps(5), cubes);
+  ASSERT_TRUE(fast.Advance({}).ok());
+  EXPECT_EQ(slow.Export("json", {}).value(), fast.Export("json", {}).value());  // the same ivy
+  // In the state JSON (only when linear), not in links.
+  IvyState back;
+  ASSERT_TRUE(ApplyIvyStateJson(IvyStateJson(linear), &back).ok());
+  EXPECT_EQ(back.accel, Accel::kLinear);
+  EXPECT_EQ(IvyStateJson(Steps(5)).find("accel"), std::string::npos);
+  EXPECT_EQ(EncodeIvyHash(linear), EncodeIvyHash(Steps(5)));
+  CliResult cli_accel = RunNiwa({"ivy", "grow", "--steps", "3", "--accel", "kd"});
+  EXPECT_EQ(cli_accel.err, "niwa: error: --accel: 'kd' is unknown; must be bvh or linear\n");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // core/render/tree_run: the tree study's run once through its pipeline: grown year by year with
 // progress, cancelled at a whole year, refused by field, its .glb/.json/.svg the CLI's bytes, its
-// parts, hash, estimates, table 4.1 and restate.
+// parts, hash, estimates, table 4.1, update by stage, and the CLI's mappings and render-stats as
+// adapters over it (prunes checked by the run).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include "support/grow.h"
 #include "tree/tree_gltf.h"
 #include "tree/tree_json.h"
+#include "tree/tree_report.h"
 
 namespace niwa {
 namespace {
@@ -196,25 +198,6 @@ TEST(TreeRun, Table41IsRenderStatsCounts) {
             view["line_branches"].get<int>() + view["card_branches"].get<int>());
 }
 
-TEST(TreeRun, RestateKeepsTheTreeAndRedressesIt) {
-  TreeRun run = StartSakura();
-  ASSERT_TRUE(run.Advance(nullptr).ok());
-  ASSERT_TRUE(run.BuildMesh().ok());
-  ASSERT_FALSE(run.mesh().leaves.indices.empty());
-  const std::string grown = TreeToJson(run.tree());
-  TreeState other = run.state();
-  other.seed += 1;
-  const Status refused = run.Restate(other);
-  EXPECT_EQ(refused.field(), "restate");
-  TreeState winter = run.state();
-  ASSERT_TRUE(winter.params.Set(TreeParam::kSeason, 3).ok());  // winter drops the leaves
-  ASSERT_TRUE(run.Restate(winter).ok());
-  EXPECT_TRUE(run.mesh().leaves.indices.empty());
-  EXPECT_EQ(TreeToJson(run.tree()), grown);  // not regrown
-  EXPECT_EQ(run.skin().bark.joint.size(), run.mesh().bark.vertex_count());
-  EXPECT_EQ(run.state().limits.years_name, "years");  // the growth's limits stay
-}
-
 run::StageMask From(Stage stage) {  // that stage and the ones after it
   run::StageMask mask = 0;
   for (int s = static_cast<int>(stage); s <= static_cast<int>(Stage::kView); ++s) mask |= 1u << s;
@@ -251,8 +234,10 @@ TEST(TreeRun, UpdateRedoesTheEarliestChangedStage) {
   EXPECT_EQ(run.Update(mesh).value(), From(Stage::kMesh));
   EXPECT_TRUE(run.mesh().leaves.indices.empty());
   EXPECT_EQ(run.skin().leaves.joint.size(), 0u);
+  EXPECT_EQ(run.skin().bark.joint.size(), run.mesh().bark.vertex_count());
   EXPECT_EQ(TreeToJson(run.tree()), grown);
   EXPECT_EQ(run.done(), kYears);
+  EXPECT_EQ(run.state().limits.years_name, "years");  // the growth's limits stay
 
   TreeState grow = run.state();  // another seed: regrown from year 0
   grow.seed += 1;
@@ -268,6 +253,63 @@ TEST(TreeRun, UpdateRedoesTheEarliestChangedStage) {
   ASSERT_FALSE(refused.ok());
   EXPECT_EQ(refused.status().field(), "years");
   EXPECT_EQ(run.state().years, kYears);
+}
+
+// Issue 28 item 2: a prune that cuts nothing is the run's error ("prune"), named by the CLI's
+// flag; `tree mappings` and `tree render-stats` print what the run gives.
+TEST(TreeRun, CheckPrunesNamesTheIdlePrune) {
+  TreeState state = testing::PresetState("sakura", kYears);
+  ASSERT_TRUE(AddStatePrune("3:b99999", &state).ok());
+  Result<TreeRun> run = TreeRun::Start(state, Budget{});
+  ASSERT_TRUE(run.ok());
+  ASSERT_TRUE(run->Advance(nullptr).ok());
+  const Status idle = run->CheckPrunes();
+  EXPECT_EQ(idle.field(), "prune");
+  EXPECT_EQ(idle.message().rfind("3:b99999: ", 0), 0u) << idle.Line();
+  Result<std::string> csv = TreeRun::MappingsCsv(state, Budget{});
+  ASSERT_FALSE(csv.ok());
+  EXPECT_EQ(csv.status().Line(), idle.Line());
+  CliResult cli =
+      RunNiwa({"tree", "mappings", "--preset", "sakura", "--years", "5", "--prune", "3:b99999"});
+  EXPECT_EQ(cli.code, 2);
+  EXPECT_EQ(cli.err, "niwa: error: --" + idle.Line() + "\n");
+}
+
+TEST(TreeRun, MappingsAndRenderStatsAreTheCliOutputs) {
+  const TreeState state = testing::PresetState("sakura", kYears);
+  Result<std::string> csv = TreeRun::MappingsCsv(state, Budget{});
+  ASSERT_TRUE(csv.ok());
+  EXPECT_EQ(*csv, TreeMappingsCsv(state.params));
+  CliResult mappings = RunNiwa({"tree", "mappings", "--preset", "sakura", "--years", "5"});
+  ASSERT_EQ(mappings.code, 0) << mappings.err;
+  EXPECT_EQ(mappings.out, *csv);
+
+  const auto without_ms = [](const std::string& text) {
+    nlohmann::json j = nlohmann::json::parse(text);
+    for (const char* key : {"ms_grow_mesh", "ms_scene", "ms_select"}) j.erase(key);
+    return j;
+  };
+  RenderStatsRequest request;
+  request.width = 640;
+  request.height = 480;
+  TreeState edited = state;  // the flags --threshold 6 --leaf-mode branch, as rows
+  ASSERT_TRUE(edited.params.Set(ParamId::kLineThreshold, 6).ok());
+  ASSERT_TRUE(edited.params.Set(ParamId::kLeafClusterCards, 0).ok());
+  Result<std::string> stats = TreeRun::RenderStats(edited, Budget{}, request);
+  ASSERT_TRUE(stats.ok()) << stats.status().Line();
+  const nlohmann::json core = without_ms(*stats);
+  EXPECT_EQ(core["threshold"], 6);
+  EXPECT_EQ(core["leaf_mode"], "branch");
+  CliResult cli = RunNiwa({"tree", "render-stats", "--preset", "sakura", "--years", "5", "--width",
+                           "640", "--height", "480", "--threshold", "6", "--leaf-mode", "branch"});
+  ASSERT_EQ(cli.code, 0) << cli.err;
+  EXPECT_EQ(without_ms(cli.out), core);
+  // An explicit view is used as given.
+  request.view = OrbitView{};
+  request.view->distance = 20;
+  Result<std::string> near = TreeRun::RenderStats(state, Budget{}, request);
+  ASSERT_TRUE(near.ok());
+  EXPECT_EQ(nlohmann::json::parse(*near)["cam"], FormatOrbitView(*request.view));
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // 'niwa terrain compare': a DEM that is the grown mountain's own heightmap compares as (almost)
 // identical, the shipped real DEM and its contour give sane measures, the built-in jacksboro seed
-// is the checked-in contour file, bad DEMs are one line with exit code 2.
+// is the checked-in contour file, bad DEMs are one line with exit code 2; the command is an adapter
+// over the core's CompareWithDem (the same JSON from the run's own heightmap bytes).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include "support/cli_runner.h"
 #include "terrain/contour_io.h"
 #include "terrain/seeds.h"
+#include "terrain/terrain_run.h"
 
 namespace niwa {
 namespace {
@@ -40,6 +42,43 @@ TEST(TerrainCompare, OwnHeightmapComparesAsTheSameMountain) {
   ASSERT_EQ(other.code, 0);
   EXPECT_LT(nlohmann::json::parse(other.out)["mean_iou"].get<double>(),
             j["mean_iou"].get<double>());
+}
+
+// Issue 28 item 2: the whole comparison is the core's; the CLI prints its JSON as it is, and its
+// errors name state fields ("dem"), the CLI's the flags.
+TEST(TerrainCompare, TheCommandIsAnAdapterOverCompareWithDem) {
+  terrain::TerrainState state;
+  ASSERT_TRUE(terrain::SetTerrainBuiltin("lobes7", &state).ok());
+  ASSERT_TRUE(terrain::SetTerrainPreset("improved", &state).ok());
+  ASSERT_TRUE(terrain::SetTerrainSeed(6, &state).ok());
+  ASSERT_TRUE(state.params.Set(terrain::TerrainParam::kRes, 64).ok());
+  const Budget budget;
+  Result<terrain::TerrainRun> run = terrain::TerrainRun::Start(state, budget);
+  ASSERT_TRUE(run.ok());
+  ASSERT_TRUE(run->Advance({}).ok());
+  Result<terrain::Heightmap> hm = run->EncodeHeightmapFiles();
+  ASSERT_TRUE(hm.ok());
+  Result<terrain::DemComparison> c =
+      terrain::CompareWithDem(state, hm->png, hm->sidecar_json, budget);
+  ASSERT_TRUE(c.ok()) << c.status().Line();
+  EXPECT_TRUE(c->truncated_by.empty());
+  nlohmann::json j = nlohmann::json::parse(c->json);
+  EXPECT_EQ(j["seed"], 6);
+  EXPECT_EQ(j["url"], "preset=improved&builtin=lobes7&seed=6&res=64");
+  EXPECT_EQ(j["real"]["cells"], j["grown"]["cells"]);
+  // The CLI on the same files prints the same object.
+  const std::string png = ::testing::TempDir() + "t_cmp_core.png";
+  std::ofstream(png, std::ios::binary)
+      .write(reinterpret_cast<const char*>(hm->png.data()),
+             static_cast<std::streamsize>(hm->png.size()));
+  std::ofstream(::testing::TempDir() + "t_cmp_core.json") << hm->sidecar_json;
+  CliResult r = RunNiwa({"terrain", "compare", "--dem", png, "--url", j["url"].get<std::string>()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out, c->json + "\n");
+  Result<terrain::DemComparison> bad =
+      terrain::CompareWithDem(state, {'n', 'o'}, hm->sidecar_json, budget);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.status().field(), "dem");
 }
 
 TEST(TerrainCompare, RealDemAndItsContour) {

@@ -112,7 +112,7 @@ TEST(FitContourToLink, ADrawnTwoThousandPointContourFitsItsLinkAndReadsBack) {
   EXPECT_GT(fit.ring.size(), 500u);  // thinned, not gutted
   ASSERT_TRUE(CheckSeed(fit.ring).ok());
   ASSERT_TRUE(SetTerrainPoints(fit.ring, &state).ok());
-  ASSERT_TRUE(state.params.Set(TerrainParam::kSeed, 4294967295.0).ok());
+  ASSERT_TRUE(SetTerrainSeed(4294967295.0, &state).ok());
   const std::string hash = EncodeTerrainHash(state);
   EXPECT_LE(hash.size(), kMaxHashLength);
   TerrainState back;

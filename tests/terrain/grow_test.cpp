@@ -32,7 +32,7 @@ TEST(Grow, DiskSeedGivesAConeWithTheSimpleMethod) {
   Result<Ring> seed = BuiltinSeed("disk");
   ASSERT_TRUE(seed.ok());
   TerrainParams p = For("simple");
-  Result<Terrain> t = Grow(*seed, p);
+  Result<Terrain> t = Grow(*seed, p, kDefaultTerrainSeed);
   ASSERT_TRUE(t.ok()) << t.status().Line();
   EXPECT_EQ(t->summits.size(), 1u);
   // Summit = h0 + Δh·R/d = 10·200/20 = 100 m (the 256-gon's inscribed radius is 199.985 m).
@@ -50,7 +50,7 @@ TEST(Grow, DiskSeedGivesAConeWithTheSimpleMethod) {
 TEST(Grow, DumbbellSplitsIntoTwoPeaksEachGrownOn) {
   Result<Ring> seed = BuiltinSeed("dumbbell");
   ASSERT_TRUE(seed.ok());
-  Result<Terrain> t = Grow(*seed, For("simple"));
+  Result<Terrain> t = Grow(*seed, For("simple"), kDefaultTerrainSeed);
   ASSERT_TRUE(t.ok());
   ASSERT_EQ(t->contours[0].children.size(), 2u);
   TerrainStats s = ComputeStats(*t, nullptr);
@@ -123,8 +123,9 @@ TEST(Grow, ValleysSeedKeepsManyValleysUpTheMountain) {
   TerrainParams simple = For("simple"), improved = For("improved");
   ASSERT_TRUE(simple.Set(P::kD, d).ok());
   ASSERT_TRUE(improved.Set(P::kD, d).ok());
-  Result<Terrain> a = Grow(*seed, simple), b = Grow(*seed, improved);
-  Result<Terrain> lobes = Grow(*BuiltinSeed("lobes7"), simple);
+  Result<Terrain> a = Grow(*seed, simple, kDefaultTerrainSeed),
+                  b = Grow(*seed, improved, kDefaultTerrainSeed);
+  Result<Terrain> lobes = Grow(*BuiltinSeed("lobes7"), simple, kDefaultTerrainSeed);
   ASSERT_TRUE(a.ok() && b.ok() && lobes.ok());
   EXPECT_EQ(ValleysAtLevel(*a, 0, d), 18);
   EXPECT_EQ(ValleysAtLevel(*lobes, 0, d), 7);
@@ -147,9 +148,7 @@ TEST(Grow, ValleysSeedKeepsManyValleysUpTheMountain) {
   // delete the large side (improved, seed 3: level 1 kept 6 of the seed's 496 points, 2 levels in
   // all); the first level keeps most of the seed's area and the massif grows on, for every seed.
   for (int rng_seed = 1; rng_seed <= 5; ++rng_seed) {
-    TerrainParams p = improved;
-    ASSERT_TRUE(p.Set(P::kSeed, rng_seed).ok());
-    Result<Terrain> t = Grow(*seed, p);
+    Result<Terrain> t = Grow(*seed, improved, static_cast<uint64_t>(rng_seed));
     ASSERT_TRUE(t.ok());
     double level1 = 0;
     for (const ContourNode& c : t->contours)
@@ -164,11 +163,10 @@ TEST(Grow, NoSelfIntersectionOrNestingViolationForEverySeedAndMethod) {
     Result<Ring> seed = BuiltinSeed(info.name);
     ASSERT_TRUE(seed.ok());
     for (const char* method : {"simple", "midpoint", "fourier", "improved"}) {
-      for (double rng_seed : {1.0, 7.0}) {
+      for (uint64_t rng_seed : {1, 7}) {
         TerrainParams p = For(method);
         ASSERT_TRUE(p.Set(P::kD, info.d).ok());
-        ASSERT_TRUE(p.Set(P::kSeed, rng_seed).ok());
-        Result<Terrain> t = Grow(*seed, p);
+        Result<Terrain> t = Grow(*seed, p, rng_seed);
         ASSERT_TRUE(t.ok()) << info.name << " " << method << ": " << t.status().Line();
         TerrainStats s = ComputeStats(*t, nullptr);
         EXPECT_EQ(s.self_intersections, 0) << info.name << " " << method;
@@ -176,7 +174,7 @@ TEST(Grow, NoSelfIntersectionOrNestingViolationForEverySeedAndMethod) {
         EXPECT_GE(s.levels, 2) << info.name << " " << method;
         EXPECT_FALSE(t->counts.truncated);
         // Same input, same contours.
-        Result<Terrain> again = Grow(*seed, p);
+        Result<Terrain> again = Grow(*seed, p, rng_seed);
         ASSERT_TRUE(again.ok());
         ASSERT_EQ(again->contours.size(), t->contours.size());
         for (std::size_t i = 0; i < t->contours.size(); ++i)
@@ -189,7 +187,7 @@ TEST(Grow, NoSelfIntersectionOrNestingViolationForEverySeedAndMethod) {
 TEST(Grow, HeightfieldLevelSetsLieOnTheirContours) {
   Result<Ring> seed = BuiltinSeed("lobes7");
   ASSERT_TRUE(seed.ok());
-  Result<Terrain> t = Grow(*seed, For("improved"));
+  Result<Terrain> t = Grow(*seed, For("improved"), kDefaultTerrainSeed);
   ASSERT_TRUE(t.ok());
   Heightfield hf = BuildHeightfield(*t, 96);
   int checked = 0;
@@ -300,21 +298,21 @@ TEST(Midpoint, Fig12DeltaIsTheSmallerOfCapAndLTanTheta) {
 
 TEST(BadInput, SeedsAndParametersGiveOneLineNamingTheField) {
   TerrainParams p;
-  EXPECT_EQ(Grow({{0, 0}, {1, 1}}, p).status().Line(),
+  EXPECT_EQ(Grow({{0, 0}, {1, 1}}, p, kDefaultTerrainSeed).status().Line(),
             "contour: 2 points; must have 3 to 1000000 points");
-  EXPECT_EQ(Grow({{0, 0}, {10, 10}, {10, 0}, {0, 10}}, p).status().Line(),
+  EXPECT_EQ(Grow({{0, 0}, {10, 10}, {10, 0}, {0, 10}}, p, kDefaultTerrainSeed).status().Line(),
             "contour: self-intersects or has no area; must be a simple closed polygon");
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(Grow({{0, 0}, {nan, 0}, {0, 1}}, p).status().Line(),
+  EXPECT_EQ(Grow({{0, 0}, {nan, 0}, {0, 1}}, p, kDefaultTerrainSeed).status().Line(),
             "contour: point 1 is not a finite coordinate; each must be a number in [-1e6, 1e6] m");
   Ring huge(1000001, Vec2{0, 0});
-  EXPECT_EQ(Grow(huge, p).status().Line(),
+  EXPECT_EQ(Grow(huge, p, kDefaultTerrainSeed).status().Line(),
             "contour: 1000001 points; must have 3 to 1000000 points");
   EXPECT_EQ(p.Set(P::kC, 0.5).Line(), "c: 0.5 is out of range; must be a number in [1, 100]");
   EXPECT_EQ(p.Set(P::kD, 0).Line(), "d: 0 is out of range; must be a number in [0.01, 100000]");
   ASSERT_TRUE(p.Set(P::kNfft, 256).ok());
   ASSERT_TRUE(p.Set(P::kF0, 200).ok());
-  EXPECT_EQ(Grow(*BuiltinSeed("disk"), p).status().Line(),
+  EXPECT_EQ(Grow(*BuiltinSeed("disk"), p, kDefaultTerrainSeed).status().Line(),
             "f0: 200 is out of range; must be a whole number in [1, nfft/2 = 128]");
 }
 

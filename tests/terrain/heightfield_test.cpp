@@ -25,8 +25,8 @@ Terrain GrowBuiltin(const std::string& seed, const std::string& method, int rng)
   TerrainState s;
   EXPECT_TRUE(SetTerrainBuiltin(seed, &s).ok());
   EXPECT_TRUE(SetTerrainPreset(method, &s).ok());
-  EXPECT_TRUE(s.params.Set(TerrainParam::kSeed, rng).ok());
-  Result<Terrain> t = Grow(*StateSeed(s), s.params);
+  EXPECT_TRUE(SetTerrainSeed(rng, &s).ok());
+  Result<Terrain> t = Grow(*StateSeed(s), s.params, s.seed);
   EXPECT_TRUE(t.ok());
   return t.ok() ? *t : Terrain();
 }

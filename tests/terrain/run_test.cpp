@@ -26,7 +26,7 @@ TerrainState State(const char* builtin, const char* preset, int seed, int res) {
   TerrainState s;
   EXPECT_TRUE(SetTerrainBuiltin(builtin, &s).ok());
   EXPECT_TRUE(SetTerrainPreset(preset, &s).ok());
-  EXPECT_TRUE(s.params.Set(TerrainParam::kSeed, seed).ok());
+  EXPECT_TRUE(SetTerrainSeed(seed, &s).ok());
   EXPECT_TRUE(s.params.Set(TerrainParam::kRes, res).ok());
   return s;
 }
@@ -229,7 +229,7 @@ TEST(TerrainRun, UpdateRedoesOnlyTheChangedRowsStage) {
 
   // A grow row (seed): everything.
   TerrainState other = named;
-  ASSERT_TRUE(other.params.Set(TerrainParam::kSeed, 4).ok());
+  ASSERT_TRUE(SetTerrainSeed(4, &other).ok());
   ASSERT_TRUE(run.Update(other).ok());
   ASSERT_TRUE(run.Advance({}).ok());
   EXPECT_EQ(run.counts().grows, 2);

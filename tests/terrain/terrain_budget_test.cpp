@@ -51,7 +51,7 @@ TEST(TerrainBudget, GrowEstimateHoldsTheMeasuredPeak) {
     const TerrainGrowLimits limits = Unlimited(p);
     const Ring seed = *BuiltinSeed("lobes7");
     const long long base = AllocMeter::Reset();
-    Result<Terrain> t = Grow(seed, p, &limits);
+    Result<Terrain> t = Grow(seed, p, kDefaultTerrainSeed, &limits);
     const long long peak = AllocMeter::PeakAbove(base);
     ASSERT_TRUE(t.ok()) << t.status().Line();
     EXPECT_TRUE(t->counts.truncated_by.empty()) << t->counts.truncated_by;
@@ -63,7 +63,7 @@ TEST(TerrainBudget, GrowEstimateHoldsTheMeasuredPeak) {
 
 TEST(TerrainBudget, GridSizeIsTheHeightfieldsOwn) {
   const TerrainParams p = For("improved", 20);
-  Result<Terrain> t = Grow(*BuiltinSeed("dumbbell"), p);
+  Result<Terrain> t = Grow(*BuiltinSeed("dumbbell"), p, kDefaultTerrainSeed);
   ASSERT_TRUE(t.ok());
   for (int res : {8, 100, 257, 512}) {
     const Heightfield hf = BuildHeightfield(*t, res);
@@ -78,7 +78,7 @@ TEST(TerrainBudget, GridSizeIsTheHeightfieldsOwn) {
 TEST(TerrainBudget, HeightfieldEstimateHoldsThePeakWhenTheBandFillRaisesCells) {
   for (double d : {20.0, 40.0}) {
     const TerrainParams p = For("improved", d);
-    Result<Terrain> t = Grow(*BuiltinSeed("valleys"), p);
+    Result<Terrain> t = Grow(*BuiltinSeed("valleys"), p, kDefaultTerrainSeed);
     ASSERT_TRUE(t.ok());
     for (int res : {256, 1024}) {
       const GridSize g = TerrainGridSize(*t, res);
@@ -94,7 +94,7 @@ TEST(TerrainBudget, HeightfieldEstimateHoldsThePeakWhenTheBandFillRaisesCells) {
 
 TEST(TerrainBudget, HeightfieldAndOutputEstimatesHoldTheMeasuredPeaks) {
   const TerrainParams p = For("improved", 20);
-  Result<Terrain> t = Grow(*BuiltinSeed("jacksboro"), p);
+  Result<Terrain> t = Grow(*BuiltinSeed("jacksboro"), p, kDefaultTerrainSeed);
   ASSERT_TRUE(t.ok());
   for (int res : {256, 1024}) {
     const GridSize g = TerrainGridSize(*t, res);
@@ -134,13 +134,13 @@ TEST(TerrainBudget, HeightfieldAndOutputEstimatesHoldTheMeasuredPeaks) {
 
 TEST(TerrainBudget, MemoryBudgetStopsAtAContourWithTheLineAndTheSameContours) {
   const TerrainParams p = For("improved", 2);
-  Result<Terrain> full = Grow(*BuiltinSeed("lobes7"), p);
+  Result<Terrain> full = Grow(*BuiltinSeed("lobes7"), p, kDefaultTerrainSeed);
   ASSERT_TRUE(full.ok());
   TerrainGrowLimits limits = Unlimited(p);
   double vertices = 0;
   for (const ContourNode& c : full->contours) vertices += static_cast<double>(c.ring.size());
   limits.max_bytes = limits.base_bytes + limits.bytes_per_vertex * vertices / 3;
-  Result<Terrain> cut = Grow(*BuiltinSeed("lobes7"), p, &limits);
+  Result<Terrain> cut = Grow(*BuiltinSeed("lobes7"), p, kDefaultTerrainSeed, &limits);
   ASSERT_TRUE(cut.ok());
   EXPECT_TRUE(cut->counts.truncated);
   EXPECT_EQ(cut->counts.truncated_by.rfind("max_memory: stopped at level ", 0), 0u)
@@ -155,7 +155,7 @@ TEST(TerrainBudget, TimeBudgetStopsAtAContourWithTheLine) {
   const TerrainParams p = For("improved", 2);
   TerrainGrowLimits limits = Unlimited(p);
   limits.max_seconds = 0.2;  // a count of vertices worked: the same contour in both builds
-  Result<Terrain> cut = Grow(*BuiltinSeed("lobes7"), p, &limits);
+  Result<Terrain> cut = Grow(*BuiltinSeed("lobes7"), p, kDefaultTerrainSeed, &limits);
   ASSERT_TRUE(cut.ok());
   EXPECT_EQ(cut->counts.truncated_by.rfind("max_seconds: stopped at level ", 0), 0u)
       << cut->counts.truncated_by;
@@ -178,7 +178,7 @@ TEST(TerrainBudget, SteepMidpointDisplacementIsRefusedWithinTheBudget) {
     budget.seconds = 60;
     const TerrainGrowLimits limits = TerrainLimits(p, budget);
     const long long base = AllocMeter::Reset();
-    Result<Terrain> t = Grow(*BuiltinSeed("disk"), p, &limits);
+    Result<Terrain> t = Grow(*BuiltinSeed("disk"), p, kDefaultTerrainSeed, &limits);
     const long long peak = AllocMeter::PeakAbove(base);
     ASSERT_FALSE(t.ok()) << method;
     EXPECT_EQ(t.status().field(), "theta_max");
@@ -233,7 +233,7 @@ TEST(TerrainBudget, CombsAreRefusedByTheirShapeOrStoppedByTheSweepCount) {
   EXPECT_TRUE(CheckSeedShape(Comb(1000), budget).ok());
   TerrainGrowLimits limits = Unlimited(p);
   limits.max_seconds = 1;
-  Result<Terrain> t = Grow(Comb(1000), p, &limits);
+  Result<Terrain> t = Grow(Comb(1000), p, kDefaultTerrainSeed, &limits);
   ASSERT_FALSE(t.ok());
   EXPECT_EQ(t.status().field(), "contour");
   EXPECT_NE(t.status().message().find("edge tests of its union sweep"), std::string::npos)

@@ -31,8 +31,8 @@ terrain::Heightfield Reference(terrain::Terrain* t) {
   terrain::TerrainState s;
   EXPECT_TRUE(terrain::SetTerrainBuiltin("lobes7", &s).ok());
   EXPECT_TRUE(terrain::SetTerrainPreset("improved", &s).ok());
-  EXPECT_TRUE(s.params.Set(terrain::TerrainParam::kSeed, 3).ok());
-  Result<terrain::Terrain> grown = terrain::Grow(*terrain::StateSeed(s), s.params);
+  EXPECT_TRUE(terrain::SetTerrainSeed(3, &s).ok());
+  Result<terrain::Terrain> grown = terrain::Grow(*terrain::StateSeed(s), s.params, s.seed);
   EXPECT_TRUE(grown.ok());
   *t = *grown;
   return terrain::BuildHeightfield(*t, 48);

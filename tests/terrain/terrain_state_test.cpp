@@ -14,7 +14,7 @@ TEST(TerrainState, HashRoundTripsBuiltinPresetAndOverrides) {
   TerrainState s;
   ASSERT_TRUE(SetTerrainBuiltin("lobes7", &s).ok());
   ASSERT_TRUE(SetTerrainPreset("fig13c", &s).ok());
-  ASSERT_TRUE(s.params.Set(TerrainParam::kSeed, 7).ok());
+  ASSERT_TRUE(SetTerrainSeed(7, &s).ok());
   ASSERT_TRUE(s.params.Set(TerrainParam::kD, 17.5).ok());
   const std::string hash = EncodeTerrainHash(s);
   EXPECT_EQ(hash, "preset=fig13c&builtin=lobes7&d=17.5&seed=7");
@@ -24,7 +24,64 @@ TEST(TerrainState, HashRoundTripsBuiltinPresetAndOverrides) {
   EXPECT_TRUE(notices.empty());
   EXPECT_EQ(back.preset, "fig13c");
   EXPECT_EQ(back.builtin, "lobes7");
+  EXPECT_EQ(back.seed, 7u);
   EXPECT_TRUE(back.params == s.params);
+}
+
+// Issue 28 item 6: the seed is a state field, as the tree's and the ivy's; not a table row, so a
+// preset or a new seed contour keeps it, and the link, the .glb's url and a state file of before
+// read the same.
+TEST(TerrainState, SeedIsAStateFieldNotARow) {
+  EXPECT_FALSE(TerrainTable().Find("seed").has_value());
+  TerrainState s;
+  EXPECT_EQ(s.seed, kDefaultTerrainSeed);
+  ASSERT_TRUE(SetTerrainSeed(4294967295.0, &s).ok());
+  EXPECT_EQ(s.seed, 4294967295u);
+  EXPECT_EQ(SetTerrainSeed(4294967296.0, &s).Line(),
+            "seed: 4294967296 is out of range; must be a whole number in [0, 4294967295]");
+  EXPECT_EQ(SetTerrainSeed(1.5, &s).field(), "seed");
+  EXPECT_EQ(s.seed, 4294967295u);  // unchanged on error
+  ASSERT_TRUE(SetTerrainPreset("fig9a", &s).ok());
+  ASSERT_TRUE(SetTerrainBuiltin("lobes7", &s).ok());
+  EXPECT_EQ(s.seed, 4294967295u);  // a preset or a seed contour keeps it
+  // The default seed is not in the link; another is, where its row stood (after clean_angle,
+  // before max_levels), so links and the .glb's asset url are those of before.
+  TerrainState t;
+  ASSERT_TRUE(SetTerrainBuiltin("disk", &t).ok());
+  ASSERT_TRUE(t.params.Set(TerrainParam::kCleanAngle, 12).ok());
+  ASSERT_TRUE(t.params.Set(TerrainParam::kMaxLevels, 50).ok());
+  ASSERT_TRUE(t.params.Set(TerrainParam::kRes, 64).ok());
+  EXPECT_EQ(EncodeTerrainHash(t), "builtin=disk&clean_angle=12&max_levels=50&res=64");
+  ASSERT_TRUE(SetTerrainSeed(3, &t).ok());
+  EXPECT_EQ(EncodeTerrainHash(t, "terrain."),
+            "terrain.builtin=disk&terrain.clean_angle=12&terrain.seed=3&terrain.max_levels=50&"
+            "terrain.res=64");
+  TerrainState back;
+  std::vector<std::string> notices;
+  ApplyTerrainHash("terrain.seed=3&terrain.preset=improved&ivy.seed=9", "terrain.", &back,
+                   &notices);
+  EXPECT_TRUE(notices.empty());
+  EXPECT_EQ(back.seed, 3u);  // read before the preset, kept by it
+  ApplyTerrainHash("seed=x", "", &back, &notices);
+  ASSERT_EQ(notices.size(), 1u);
+  EXPECT_EQ(notices[0], "seed: 'x' is not a number; dropped");
+  EXPECT_EQ(back.seed, 3u);
+  // State JSON: the field at the top, or (a file of before) in params; not at both places.
+  TerrainState j;
+  ASSERT_TRUE(ApplyTerrainStateJson(R"({"builtin": "disk", "seed": 9})", &j).ok());
+  EXPECT_EQ(j.seed, 9u);
+  ASSERT_TRUE(ApplyTerrainStateJson(R"({"params": {"seed": "12", "d": 25}})", &j).ok());
+  EXPECT_EQ(j.seed, 12u);
+  EXPECT_EQ(j.params.Get(TerrainParam::kD), 25);
+  EXPECT_EQ(ApplyTerrainStateJson(R"({"seed": 1, "params": {"seed": 2}})", &j).Line(),
+            "seed: given at the top and in params; must be given once");
+  EXPECT_EQ(ApplyTerrainStateJson(R"({"seed": -1})", &j).field(), "seed");
+  EXPECT_EQ(ApplyTerrainStateJson(R"({"seed": [1]})", &j).field(), "seed");
+  EXPECT_EQ(j.seed, 12u);
+  TerrainState again;
+  ASSERT_TRUE(ApplyTerrainStateJson(TerrainStateJson(j), &again).ok());
+  EXPECT_EQ(again.seed, 12u);
+  EXPECT_TRUE(again.params == j.params);
 }
 
 TEST(TerrainState, DrawnContourRoundTripsBitForBit) {
@@ -78,7 +135,7 @@ TEST(TerrainState, StateJsonIsStrictAndRoundTrips) {
                       "params": {"seed": 5, "dh": 12}})",
                   &s)
                   .ok());
-  EXPECT_EQ(s.params.GetInt(TerrainParam::kSeed), 5);
+  EXPECT_EQ(s.seed, 5u);  // params.seed: a file of when the seed was a table row
   EXPECT_EQ(s.params.Get(TerrainParam::kDh), 12);
   EXPECT_EQ(s.points.size(), 4u);
   TerrainState back;
@@ -108,12 +165,12 @@ TEST(TerrainState, HashRegrowsTheSameMountain) {
   TerrainState s;
   ASSERT_TRUE(SetTerrainBuiltin("dumbbell", &s).ok());
   ASSERT_TRUE(SetTerrainPreset("improved", &s).ok());
-  ASSERT_TRUE(s.params.Set(TerrainParam::kSeed, 11).ok());
+  ASSERT_TRUE(SetTerrainSeed(11, &s).ok());
   TerrainState back;
   std::vector<std::string> notices;
   ApplyTerrainHash(EncodeTerrainHash(s), "", &back, &notices);
-  Result<Terrain> a = Grow(*StateSeed(s), s.params);
-  Result<Terrain> b = Grow(*StateSeed(back), back.params);
+  Result<Terrain> a = Grow(*StateSeed(s), s.params, s.seed);
+  Result<Terrain> b = Grow(*StateSeed(back), back.params, back.seed);
   ASSERT_TRUE(a.ok() && b.ok());
   ASSERT_EQ(a->contours.size(), b->contours.size());
   for (std::size_t c = 0; c < a->contours.size(); ++c)

@@ -18,8 +18,8 @@ Terrain GrowState(const char* builtin, const char* method, int seed) {
   TerrainState s;
   EXPECT_TRUE(SetTerrainBuiltin(builtin, &s).ok());
   EXPECT_TRUE(SetTerrainPreset(method, &s).ok());
-  EXPECT_TRUE(s.params.Set(TerrainParam::kSeed, seed).ok());
-  Result<Terrain> t = Grow(*StateSeed(s), s.params);
+  EXPECT_TRUE(SetTerrainSeed(seed, &s).ok());
+  Result<Terrain> t = Grow(*StateSeed(s), s.params, s.seed);
   EXPECT_TRUE(t.ok());
   return t.ok() ? *t : Terrain();
 }

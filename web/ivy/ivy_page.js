@@ -232,9 +232,10 @@ worker.on('support', (msg) => {
   support = msg.support;
   if (renderer) {
     renderer.clearIvy();
-    renderer.setSupport(msg.buffers, support.bounds);
+    renderer.setSupport(msg.buffers, support.bounds);  // uploaded at once
     frameNext = true;
   }
+  worker.recycle({ support: msg.buffers });  // for the worker's next support to fill
   notices.set('mesh', support.dropped
     ? `Growing on the dropped mesh ${support.name} (${support.triangles} triangles${support.obstacles ? `, ${support.obstacles} obstacle-only` : ''}); a dropped mesh is not part of the link.`
     : '');

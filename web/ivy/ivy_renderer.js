@@ -134,11 +134,12 @@ export class IvyRenderer extends StudyLayer {
     const gl = this.gl;
     this.progress.abort();
     this.#drop('support');
-    const indices = new Uint32Array(b.indices);
+    // The worker's buffers (ArrayBuffers or views) read in place: uploaded at once, then handed back.
+    const indices = viewOf(Uint32Array, b.indices);
     if (indices.length === 0) return;
     const vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
-    const buffers = [staticBuffer(gl, new Float32Array(b.positions)), staticBuffer(gl, new Float32Array(b.normals))];
+    const buffers = [staticBuffer(gl, viewOf(Float32Array, b.positions)), staticBuffer(gl, viewOf(Float32Array, b.normals))];
     floatAttribute(gl, 0, buffers[0], 3);
     floatAttribute(gl, 1, buffers[1], 3);
     gl.disableVertexAttribArray(2);

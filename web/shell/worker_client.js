@@ -156,3 +156,12 @@ export class WorkerClient {
     entry.resolve(value);
   }
 }
+
+// A tree reply's ('tree': web/worker/tree_handler.js) buffers beside its mesh parts, as recycle's
+// groups: the textures' pixels ("textures.bark", ...) and the hybrid atlas ("atlas.bark.*", ...).
+export function treeExtras(msg) {
+  const t = msg?.mesh?.textures || {};
+  const textures = Object.fromEntries(['bark', 'barkNormal', 'leaf', 'flower'].map((kind) => [kind, t[kind]?.pixels]));
+  const h = msg?.hybrid;
+  return h ? { textures, 'atlas.bark': h.bark, 'atlas.leaves': h.leaves, 'atlas.flowers': h.flowers } : { textures };
+}

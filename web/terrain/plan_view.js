@@ -4,6 +4,7 @@
 // is implied), handed over in metres (x east, y north) in the frame of the mountain shown.
 // Does not: check the drawing's geometry (the core's CheckSeed does; a crossing drawing comes back
 // as its one line), talk to the worker, or keep history.
+import { viewOf } from '../gl/buffers.js';
 
 const MARGIN = 0.08;      // of the shown box, around the mountain
 const MIN_STEP_PX = 3;    // a pointer move shorter than this adds no point
@@ -42,13 +43,15 @@ export class PlanView {
     new ResizeObserver(() => this.draw()).observe(canvas);
   }
 
-  // The last mountain's contours and summits (the worker's buffers) and its box in metres.
+  // The last mountain's contours and summits (the worker's buffers, ArrayBuffers or views: read
+  // in place, not copied; the page hands them back to the worker once a newer mountain is set)
+  // and its box in metres.
   setTerrain(buffers, bounds) {
     this.lines = {
-      positions: new Float32Array(buffers.contours.positions), height: new Float32Array(buffers.contours.height),
-      level: new Float32Array(buffers.contours.level),
+      positions: viewOf(Float32Array, buffers.contours.positions), height: viewOf(Float32Array, buffers.contours.height),
+      level: viewOf(Float32Array, buffers.contours.level),
     };
-    this.summits = new Float32Array(buffers.summits.positions);
+    this.summits = viewOf(Float32Array, buffers.summits.positions);
     this.box = { min: bounds.min, max: bounds.max };
     this.range = [bounds.h_min, bounds.h_max];
     this.draw();

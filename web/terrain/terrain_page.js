@@ -125,18 +125,18 @@ function frameTerrain() {
   camera.frame(b, 0.82);
 }
 
-// The state the worker grows: the seed (a built-in or the drawing), the preset, and (unless
-// `reset`, which takes the preset's and the seed's own values) every parameter of the panel.
+// The state the worker grows: the seed contour (a built-in or the drawing), the preset, the RNG
+// seed (a state field, kept by `reset`), and (unless `reset`, which takes the preset's and the
+// seed contour's own values) every parameter of the panel.
 function currentState(reset) {
-  const state = { preset: ui.preset.value };
+  const state = { preset: ui.preset.value, seed: numberOr(ui.rngSeed) };
   if (drawnContour) state.contour = drawnContour;
   else state.builtin = ui.builtin.value;
-  const params = panel.values();
-  state.params = reset ? { seed: params.seed } : params;
+  state.params = reset ? {} : panel.values();
   return state;
 }
 
-// A state from the worker ({preset, builtin, contour?, params}) shown in the controls.
+// A state from the worker ({preset, builtin, contour?, seed, params}) shown in the controls.
 function applyState(state) {
   ui.preset.value = state.preset;
   drawnContour = state.builtin ? null : state.contour;
@@ -147,7 +147,7 @@ function applyState(state) {
     ui.builtin.value = state.builtin;
   }
   panel.setValues(state.params);
-  ui.rngSeed.value = String(state.params.seed);
+  ui.rngSeed.value = String(state.seed);
   showHelp();
 }
 
@@ -243,11 +243,7 @@ worker.on('ready', (msg) => {
   ui.preset.append(new Option('defaults (improved)', ''));
   for (const p of presets) ui.preset.append(new Option(p.name, p.name));
   for (const s of seeds) ui.builtin.append(new Option(s.name, s.name));
-  // The RNG seed box above and the panel's seed row are one value.
-  panel = new ParamPanel(ui.params, msg.paramTable, (spec, stage) => {
-    if (spec.key === 'seed') ui.rngSeed.value = String(panel.values().seed);
-    scheduleUpdate(stage);
-  });
+  panel = new ParamPanel(ui.params, msg.paramTable, (spec, stage) => scheduleUpdate(stage));
   const hash = location.hash.replace(/^#/, '');
   applyState(msg.decoded.state);
   notices.set('hash', msg.decoded.notices);
@@ -273,6 +269,7 @@ worker.on('progress', (msg) => {
 
 // The mountain (its stats null: they follow in 'terrainStats', web/worker/terrain_handler.js).
 let shownMountain = null;  // {id, msg} of the mountain on screen until its stats arrive
+let planLines = null;  // {contours, summits, uploaded}: the worker's buffers the plan draws from
 worker.on('terrain', (msg) => {
   if (!controller.isLatest(msg)) return;
   notices.set('error', '');
@@ -293,23 +290,25 @@ worker.on('terrain', (msg) => {
   plan.setTerrain(msg.buffers, msg.bounds);
   levels = { min: msg.bounds.level_min, max: msg.bounds.level_max, h0: msg.bounds.h0, dh: msg.bounds.dh };
   const serial = terrainSerial + 1;
-  // Once on the GPU, the surface's buffers go back to the worker for the next grow to fill.
-  // (ArrayBuffers, or views of recycled ones: web/worker/terrain_handler.js).
-  const own = (b) => (ArrayBuffer.isView(b) ? b.buffer : b);
-  const recycle = () => worker.post('recycle', { buffers: { positions: own(surface.positions), normals: own(surface.normals), colours: own(surface.colours) } },
-    [own(surface.positions), own(surface.normals), own(surface.colours)]);
-  if (renderer) {
-    renderer.setTerrain(msg.buffers, msg.bounds).then((installed) => {
-      recycle();
-      if (!installed) return;
-      installedSerial = serial;
-      if (frameNext && renderer.bounds()) {
-        frameTerrain();
-        frameNext = false;
-      }
-      requestFrame();
-    });
-  }
+  // Once on the GPU, the surface's buffers go back to the worker for the next grow to fill; the
+  // contours and summits (views the plan draws from) once a newer mountain replaced them in the
+  // plan and their own upload ended (web/worker/transfer.js TransferPool).
+  setHooks({ buffersReused: msg.bufferCounts?.reused ?? '', buffersFresh: msg.bufferCounts?.fresh ?? '' });
+  const uploaded = renderer ? renderer.setTerrain(msg.buffers, msg.bounds) : Promise.resolve(false);
+  const previous = planLines;
+  planLines = { contours: msg.buffers.contours, summits: msg.buffers.summits, uploaded };
+  previous?.uploaded.then(() => worker.recycle({ contours: previous.contours, summits: previous.summits }));
+  uploaded.then((installed) => {
+    const { positions, normals, colours } = surface;
+    worker.recycle({ surface: { positions, normals, colours } });
+    if (!installed || !renderer) return;
+    installedSerial = serial;
+    if (frameNext && renderer.bounds()) {
+      frameTerrain();
+      frameNext = false;
+    }
+    requestFrame();
+  });
   controller.grown(msg.hash);
   scrubber.reset(levels.max - levels.min);
   terrainSerial += 1;
@@ -350,10 +349,7 @@ ui.preset.addEventListener('change', () => {
   showHelp();
   sendUpdate(true, true);
 });
-ui.rngSeed.addEventListener('input', () => {
-  panel?.setValues({ seed: numberOr(ui.rngSeed) });
-  scheduleUpdate();
-});
+ui.rngSeed.addEventListener('input', () => scheduleUpdate());
 ui.reset.addEventListener('click', () => sendUpdate(true, true));
 ui.showContours.addEventListener('change', () => {
   renderer?.setVisible({ contours: ui.showContours.checked });

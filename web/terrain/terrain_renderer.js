@@ -9,7 +9,7 @@
 // lowest height, times `unitScale`, not fitted to a view of ten units); both from the same
 // layerSteps.
 // Does not: talk to the worker, draw the 2-D plan (plan_view.js), or know the generation methods.
-import { floatAttribute } from '../gl/buffers.js';
+import { floatAttribute, viewOf } from '../gl/buffers.js';
 import { uploadInParts } from '../gl/chunked_upload.js';
 import { StudyLayer } from '../gl/frame.js';
 import { loadPrograms } from '../gl/program.js';
@@ -50,7 +50,7 @@ export class TerrainRenderer extends StudyLayer {
   }
 
   // buffers: {surface: {positions, normals, colours, indices}, contours: {positions, level}}
-  // (ArrayBuffers from the worker); bounds: {min: [x, y], max: [x, y], h_min, h_max} in metres.
+  // (ArrayBuffers or views from the worker); bounds: {min: [x, y], max: [x, y], h_min, h_max} in metres.
   // The buffers go up in parts (web/gl/chunked_upload.js: a res-1024 surface is 60 MB) while the
   // old mountain stays; `uploading` is true until the new one is in place. Resolves to true then,
   // or to false when a newer setTerrain dropped this one.
@@ -103,7 +103,7 @@ export class TerrainRenderer extends StudyLayer {
       floatAttribute(gl, 1, list[1], 1);
       gl.bindVertexArray(null);
       this.contours = { vao, buffers: list, count: buffers.contours.positions.byteLength / 12 };
-      const levels = new Float32Array(buffers.contours.level);
+      const levels = viewOf(Float32Array, buffers.contours.level);
       this.lineLevels = new Float32Array(levels.length / 2).map((_, i) => levels[2 * i]).sort();
     } else {
       this.lineLevels = new Float32Array(0);

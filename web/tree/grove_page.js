@@ -12,7 +12,7 @@ import { viewOf } from '../gl/buffers.js';
 import { DEFAULT_SUNS } from '../gl/sun.js';
 import { cappedNoticeLines, mountStudyNav } from '../shell/study_page.js';
 import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
-import { WorkerClient } from '../shell/worker_client.js';
+import { WorkerClient, treeExtras } from '../shell/worker_client.js';
 import { GroveRenderer } from './grove_renderer.js';
 
 // The unique trees: a few seconds of growing in total.
@@ -229,7 +229,7 @@ function onTree(msg) {
   renderer.addTree(index, msg.mesh, instances, msg.hybrid, msg.swayNodes);
   // Uploaded at once: the buffers go back for the worker's next tree of this client to fill.
   const { bark, leaves, flowers } = msg.mesh;
-  treeClients[index].recycle({ bark, leaves, flowers });
+  treeClients[index].recycle({ bark, leaves, flowers, ...treeExtras(msg) });
   trees[index] = { bounds: msg.stats.bounds, stats: msg.stats, nodes: msg.swayNodes };
   if (trees.filter(Boolean).length === UNIQUE.length) {
     requestViews();

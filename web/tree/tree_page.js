@@ -17,6 +17,7 @@ import {
 } from '../shell/study_page.js';
 import { StudyController, numberOr } from '../shell/study_controller.js';
 import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
+import { treeExtras } from '../shell/worker_client.js';
 import { ExportGuard, cutRefusal } from './cut_rules.js';
 import { EditFeedback } from './edit_feedback.js';
 import { GettingStarted } from './getting_started.js';
@@ -435,10 +436,11 @@ worker.on('tree', (msg) => {
   table.showFullCounts(msg.mesh);
   // The worker's buffers reused (web/worker/transfer.js): what this reply's copy went into.
   setHooks({ buffersReused: msg.buffers?.reused ?? '', buffersFresh: msg.buffers?.fresh ?? '' });
-  // Once on the GPU (or dropped), the mesh's buffers go back for the worker's next tree to fill;
-  // nothing on the page reads them after (the renderer keeps copies of what it keeps).
+  // Once on the GPU (or dropped), the mesh's buffers, its textures' pixels and the hybrid atlas
+  // (painted at install) go back for the worker's next tree to fill; nothing on the page reads
+  // them after (the renderer keeps copies of what it keeps).
   const { bark, leaves, flowers } = msg.mesh;
-  const giveBack = () => worker.recycle({ bark, leaves, flowers });
+  const giveBack = () => worker.recycle({ bark, leaves, flowers, ...treeExtras(msg) });
   if (renderer) {
     const installed = renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid);
     // A big mesh is installed a few tasks later (uploaded in parts): a draw list that arrives

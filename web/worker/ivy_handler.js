@@ -5,7 +5,7 @@
 // without regrowing; the leaves with their uvs, and the client's first 'ivy' message with the
 // leaf texture's pixels, so the page draws the leaves as the .glb holds them), as views into the
 // buffers the client handed back ('recycle', once they are on its GPU) when they fit, else into
-// fresh ones (web/worker/transfer.js TransferPool); 'pick' casts a ray on the support (a click
+// fresh ones (web/worker/transfer.js TransferPool; the support's triangles too); 'pick' casts a ray on the support (a click
 // places a seed point); 'export' builds .glb, .json or .lsys. Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does).
 import { errorOf, errorReply } from './errors.js';
@@ -57,9 +57,11 @@ export function createHandler(Module, ctx) {
   function sendSupport(id, client, entry, { asReply = true } = {}) {
     const transfer = [];
     const support = JSON.parse(entry.lab.supportJson());
-    const buffers = takeBuffers(entry.lab.buffers('support'), transfer);
+    const bufferCounts = { reused: 0, fresh: 0, dropped: 0 };
+    // Into the client's returned 'support.*' buffers where they fit (a scene change reuses them).
+    const buffers = returned.take(client, 'support', entry.lab.buffers('support'), transfer, bufferCounts);
     const envelope = asReply ? { id } : { request: id };
-    post({ type: 'support', ...envelope, client, support, buffers, loadMs: entry.loadMs ?? null }, transfer);
+    post({ type: 'support', ...envelope, client, support, buffers, bufferCounts, loadMs: entry.loadMs ?? null }, transfer);
   }
 
   async function update(msg, client) {

@@ -53,7 +53,8 @@
  * Mesh parts as typed views of the exact length (their buffers transferred, and maybe larger: a
  * part's size is the view's byteLength). The buffers are the ones the client handed back with
  * 'recycle' when they fit, else fresh (web/worker/transfer.js TransferPool); the reply's `buffers`
- * counts them {reused, fresh}. Textures and the hybrid atlas are fresh copies. Every part has joints (Uint32) and weights (Float32)
+ * counts them {reused, fresh, dropped}; the textures' pixels ('textures.<kind>') and the hybrid atlas
+ * ('atlas.<part>.*') go the same way (web/shell/worker_client.js treeExtras). Every part has joints (Uint32) and weights (Float32)
  * per vertex: the sway skin of core/sway/skin.h; leaves have uvs; bark has branchIds per vertex and
  * branchParents per branch.
  * @typedef {{positions: ArrayBuffer, normals: ArrayBuffer, indices: ArrayBuffer, joints: ArrayBuffer,
@@ -123,7 +124,8 @@
  *       client's first 'ivy' only), steps, hash, wallMs, buffers: {reused, fresh}}
  * @typedef {Envelope & {type: 'mesh', name: string, bytes: ArrayBuffer}} IvyMeshMessage
  *   -> {type: 'support', support: {name, dropped, free, triangles, bounds, seeds}, buffers:
- *       {positions, normals, indices}}
+ *       {positions, normals, indices} (views, into the 'support.*' buffers the client handed back
+ *       when they fit), bufferCounts: {reused, fresh, dropped}}
  * @typedef {Envelope & {type: 'pick', origin: number[], direction: number[]}} IvyPickMessage
  *   -> {type: 'picked', hit: {hit, point?, normal?, distance?}}
  * @typedef {Envelope & {type: 'encode', state: Object}} IvyEncodeMessage -> {type: 'encoded', ok, hash} or {type: 'encoded', ok: false, field, message}
@@ -132,16 +134,19 @@
 
 /**
  * The terrain page (study: 'terrain', web/worker/terrain_handler.js). State: {preset, builtin |
- * contour: [[x, y], ...], params}; ready carries `paramTable`, `presets`, `seeds`, `decoded`.
+ * contour: [[x, y], ...], seed, params}; ready carries `paramTable`, `presets`, `seeds`, `decoded`.
  * @typedef {Envelope & {type: 'update', state: Object, repair?: boolean, statsAfter?: boolean}} TerrainUpdateMessage
  *   -> ProgressMessage, {type: 'terrain', stats, timings, buffers: {surface (no indices: the
  *       page builds them, web/terrain/grid_indices.js, from bounds.width × height), contours,
- *       summits}, hash, state, bounds, repaired, parts: {repair, grow, stats, copy, state} (ms),
- *       wallMs}; with statsAfter: true its stats are null and {type: 'terrainStats', stats,
+ *       summits; each a group of views into the buffers the client handed back when they fit),
+ *       bufferCounts: {reused, fresh, dropped}, hash, state, bounds, repaired, parts: {repair,
+ *       grow, stats, copy, state} (ms), wallMs}; with statsAfter: true its stats are null and {type: 'terrainStats', stats,
  *       statsMs} follows at once (the page: the surface is not kept waiting for the stats)
- * @typedef {Envelope & {type: 'recycle', buffers: {positions?, normals?, colours?}}} TerrainRecycleMessage
- *   (no reply) the page's surface ArrayBuffers, transferred back once uploaded; the next update
- *   copies the surface into them
+ * @typedef {Envelope & {type: 'recycle', buffers: Object<string, ArrayBuffer>}} TerrainRecycleMessage
+ *   (no reply) the page's buffers as {"surface.positions", "contours.level", "summits.positions",
+ *   ...: ArrayBuffer} (web/shell/worker_client.js recycle), transferred back: the surface once
+ *   uploaded, the contours and summits once a newer mountain replaced them; the next update
+ *   copies into them
  * @typedef {Envelope & {type: 'parseContour', name: string, text: string}} TerrainParseContourMessage
  *   -> {type: 'contourFile', name, points?, elevation?, error?}
  * export: format 'glb' | 'heightmap' | 'sidecar' | 'json' | 'geojson' | 'svg'.

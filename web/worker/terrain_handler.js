@@ -8,15 +8,18 @@
 // summit buffers (copied once out of the WASM heap, then transferred), with the worker's time per
 // step (parts). With `statsAfter` (the page) the mountain goes first, stats null, and the stats
 // follow at once in a 'terrainStats' message (computed from the same grow before anything else
-// runs), so the surface is not kept waiting for them. 'recycle' hands the page's surface buffers
-// back once they are on the GPU: the next grow copies into them (pages already touched) instead of
-// fresh ones; the surface arrives as views of the exact length. 'export'
+// runs), so the surface is not kept waiting for them. 'recycle' hands the page's buffers back
+// (the surface once on the GPU, the contours and summits once a newer mountain replaced them):
+// the next grow copies into them (pages already touched) instead of fresh ones
+// (web/worker/transfer.js TransferPool: per client, dropped when their size class changes or they
+// go unused); every group arrives as views of the exact length, with the reply's bufferCounts
+// {reused, fresh, dropped}. 'export'
 // builds one download (.glb, heightmap .png, its sidecar .json, contours .json/.geojson/.svg);
 // 'parseContour' reads an imported contour file's text into points.
 // Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does).
 import { errorOf, errorReply } from './errors.js';
-import { takeBuffers } from './transfer.js';
+import { TransferPool, takeBuffers } from './transfer.js';
 import { nextTask } from './next_task.js';
 
 // A new task of the worker's loop (not setTimeout(0), which is clamped to 4 ms when nested).
@@ -30,45 +33,20 @@ export function createHandler(Module, ctx) {
   const presets = JSON.parse(Module.presetsJson('terrain'));
   const seeds = JSON.parse(Module.terrainSeedsJson());
   const labs = new Map();  // client -> TerrainLab
-  const recycled = new Map();  // client -> {name: ArrayBuffer}: surface buffers the page returned
+  const returned = new TransferPool();  // the surface, contour and summit buffers each client returned
 
   function labOf(client) {
     if (!labs.has(client)) labs.set(client, new Module.TerrainLab());
     return labs.get(client);
   }
 
-  // The surface group's views copied out of the WASM heap, each into a returned buffer at least
-  // its size when there is one, else into a fresh buffer sized for the square grid of the longer
-  // side (each drawing has its own grid, so sizes differ: any later grid at this res fits); sent as
-  // views of the exact length, every buffer onto `transfer`.
-  function takeSurface(views, bounds, client, transfer) {
-    const pool = recycled.get(client) || {};
+  // The surface group's views copied out of the WASM heap into the client's returned buffers where
+  // they fit, else into fresh ones sized for the square grid of the longer side (each drawing has
+  // its own grid, so sizes differ: any later grid at this res fits).
+  function takeSurface(views, bounds, client, transfer, counts) {
     const cells = bounds.width * bounds.height, square = Math.max(bounds.width, bounds.height) ** 2;
-    const out = {};
-    for (const [name, view] of Object.entries(views)) {
-      let buffer = pool[name];
-      delete pool[name];
-      if (!buffer || buffer.byteLength < view.byteLength) {
-        const perCell = cells > 0 ? view.byteLength / cells : 0;
-        buffer = new ArrayBuffer(Math.max(view.byteLength, perCell * square));
-      }
-      const into = new view.constructor(buffer, 0, view.length);
-      into.set(view);
-      out[name] = into;
-      transfer.push(buffer);
-    }
-    return out;
-  }
-
-  // The page's surface buffers back (ArrayBuffers or views; the newest one per name is kept).
-  function recycle(msg, client) {
-    const pool = recycled.get(client) || {};
-    for (const [name, value] of Object.entries(msg.buffers || {})) {
-      const buffer = ArrayBuffer.isView(value) ? value.buffer : value;
-      if (!(buffer instanceof ArrayBuffer) || !['positions', 'normals', 'colours'].includes(name)) continue;
-      pool[name] = buffer;
-    }
-    recycled.set(client, pool);
+    const room = (view) => (cells > 0 ? (view.byteLength / cells) * square : view.byteLength);
+    return returned.take(client, 'surface', views, transfer, counts, room);
   }
 
   async function update(msg, client) {
@@ -112,12 +90,13 @@ export function createHandler(Module, ctx) {
     lap('stats');
     const transfer = [];
     const bounds = JSON.parse(lab.boundsJson());
-    const buffers = { surface: takeSurface(lab.buffers('surface'), bounds, client, transfer) };
-    for (const group of ['contours', 'summits']) buffers[group] = takeBuffers(lab.buffers(group), transfer);
+    const counts = { reused: 0, fresh: 0, dropped: 0 };
+    const buffers = { surface: takeSurface(lab.buffers('surface'), bounds, client, transfer, counts) };
+    for (const group of ['contours', 'summits']) buffers[group] = returned.take(client, group, lab.buffers(group), transfer, counts);
     lap('copy');
     const reply = {
       type: 'terrain', id, client, stats, timings, buffers, hash: lab.hash(), state: JSON.parse(lab.stateJson()),
-      bounds, repaired, simplified,
+      bounds, repaired, simplified, bufferCounts: counts,
     };
     lap('state');
     reply.parts = parts;
@@ -151,7 +130,7 @@ export function createHandler(Module, ctx) {
       // An imported contour file's text -> {points, elevation?} or {ok: false, field, message}.
       parseContour: (msg, client) => post({ type: 'contourFile', id: msg.id, client, name: String(msg.name || ''), ...JSON.parse(Module.terrainParseContour(String(msg.text || ''))) }),
       update,
-      recycle,
+      recycle: (msg, client) => returned.give(client, msg.buffers),
       export: exportTerrain,
     },
   };

@@ -31,10 +31,16 @@ export const HEADROOM = 1.125;
 // so one huge mesh does not stay in every later reply.
 export const SHRINK = 4;
 
-// Per client, the buffers its page returned, by key ("<group>.<name>", e.g. "bark.positions").
+// A pooled buffer that the replies of its group have not reused this many times (a part that
+// stayed empty, a name no longer sent) is dropped, so the pool holds only what the next replies
+// may fill, never every buffer a client once had.
+export const MAX_IDLE_REPLIES = 4;
+
+// Per client, the buffers its page returned, by key ("<group>.<name>", e.g. "bark.positions"),
+// each with the number of its group's replies that have not reused it.
 export class TransferPool {
   constructor() {
-    this.clients = new Map();  // client -> Map(key -> ArrayBuffer)
+    this.clients = new Map();  // client -> Map(key -> {buffer: ArrayBuffer, idle})
   }
 
   // The page's buffers back: {key: ArrayBuffer or view} (the newest one per key is kept).
@@ -44,33 +50,38 @@ export class TransferPool {
     if (!pool) this.clients.set(client, (pool = new Map()));
     for (const [key, value] of Object.entries(buffers)) {
       const buffer = ArrayBuffer.isView(value) ? value.buffer : value;
-      if (buffer instanceof ArrayBuffer && buffer.byteLength > 0) pool.set(String(key), buffer);
+      if (buffer instanceof ArrayBuffer && buffer.byteLength > 0) pool.set(String(key), { buffer, idle: 0 });
     }
   }
 
   // Like takeBuffers, but each view is copied into the client's returned buffer of key
   // "<group>.<name>" when it fits, else into a fresh one (HEADROOM bigger); the reply holds views of
   // the exact length (byteLength, not their buffer's, is the data's size), every buffer is pushed
-  // onto `transfer`, and `counts` ({reused, fresh}) counts them.
-  take(client, group, views, transfer, counts = { reused: 0, fresh: 0 }) {
+  // onto `transfer`, and `counts` ({reused, fresh, dropped}) counts them. A returned buffer of the
+  // wrong size class (too small, or over SHRINK times and 1 MB too big) is dropped; one of the group
+  // that this reply did not reuse (its view empty, or its name not sent) ages by one reply and is
+  // dropped after MAX_IDLE_REPLIES. `room(view)`: the bytes of a fresh buffer for the view (at
+  // least its own; default HEADROOM more).
+  take(client, group, views, transfer, counts = { reused: 0, fresh: 0, dropped: 0 }, room = (view) => view.byteLength * HEADROOM) {
     if (!views) throw new Error('no such buffer group');
+    const drop = () => { counts.dropped = (counts.dropped ?? 0) + 1; };
     const pool = this.clients.get(client);
     const out = {};
     for (const [name, view] of Object.entries(views)) {
       const key = `${group}.${name}`;
-      let buffer = pool?.get(key);
-      pool?.delete(key);
       const need = view.byteLength;
-      if (need === 0) {  // nothing to move (an empty part keeps its returned buffer)
-        if (buffer) pool.set(key, buffer);
+      if (need === 0) {  // nothing to move (an empty part leaves its returned buffer to age)
         out[name] = new view.constructor(0);
         continue;
       }
+      let buffer = pool?.get(key)?.buffer;
+      pool?.delete(key);
       const fits = buffer && buffer.byteLength >= need && !(buffer.byteLength > SHRINK * need && buffer.byteLength > 1 << 20);
       if (fits) {
         counts.reused += 1;
       } else {
-        const size = Math.ceil((need * HEADROOM) / 8) * 8;
+        if (buffer) drop();  // its size class changed: left to the garbage collector
+        const size = Math.ceil(Math.max(need, room(view)) / 8) * 8;
         buffer = new ArrayBuffer(size);
         counts.fresh += 1;
       }
@@ -79,6 +90,33 @@ export class TransferPool {
       out[name] = into;
       transfer.push(buffer);
     }
+    // The group's buffers this reply did not reuse age.
+    const prefix = `${group}.`;
+    for (const [key, entry] of pool ?? []) {
+      if (!key.startsWith(prefix) || key.indexOf('.', prefix.length) >= 0) continue;  // another group
+      entry.idle += 1;
+      if (entry.idle >= MAX_IDLE_REPLIES) {
+        pool.delete(key);
+        drop();
+      }
+    }
     return out;
+  }
+
+  // Drops every buffer a client returned (it went away); returns how many.
+  forget(client) {
+    const n = this.clients.get(client)?.size ?? 0;
+    this.clients.delete(client);
+    return n;
+  }
+
+  // What the pool holds for a client: {buffers, bytes}.
+  held(client) {
+    let buffers = 0, bytes = 0;
+    for (const { buffer } of this.clients.get(client)?.values() ?? []) {
+      buffers += 1;
+      bytes += buffer.byteLength;
+    }
+    return { buffers, bytes };
   }
 }

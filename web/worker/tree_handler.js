@@ -1,14 +1,14 @@
 // The tree study's worker handler: grows trees year by year (superseded between years), sends
 // their meshes, re-skins or re-views the tree already grown for updates of a later stage (restage),
 // runs the wind, the hybrid views and the exports. One TreeSession (web/bindings/tree_bindings.cpp)
-// per client keeps the client's last finished tree. The mesh parts, the sway poses and the hybrid
-// draw lists go as views into the buffers the client handed back ('recycle', once they are on its
-// GPU) when they fit, else into fresh ones (web/worker/transfer.js TransferPool). Messages:
-// web/worker/protocol.js.
+// per client keeps the client's last finished tree. The mesh parts, their textures, the card
+// atlas, the sway poses and the hybrid draw lists go as views into the buffers the client handed
+// back ('recycle', once they are on its GPU) when they fit, else into fresh ones
+// (web/worker/transfer.js TransferPool). Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does).
 import { errorOf, errorReply } from './errors.js';
 import { nextTask as yieldToEvents } from './next_task.js';
-import { TransferPool, copyView, takeBuffers } from './transfer.js';
+import { TransferPool, copyView } from './transfer.js';
 
 // The warm-up grow's years (sakura-thesis; ?warmup=N on the worker's URL sets N, 0 turns it off).
 const WARM_UP_YEARS = 8;
@@ -48,16 +48,18 @@ export function createHandler(Module, ctx) {
     return textureCache.get(key);
   }
 
-  // Copies of the textures of the session's mesh (transferred); the renderer uploads a texture only
-  // when its digest changes.
-  function takeTextures(session, transfer) {
+  // The textures of the session's mesh, copied into the client's returned 'textures.<kind>'
+  // buffers where they fit (transferred); the renderer uploads a texture only when its digest
+  // changes.
+  function takeTextures(session, client, transfer, counts) {
     const look = JSON.parse(session.lookJson());
+    const kinds = ['bark', 'barkNormal', 'leaf', 'flower'];
+    const painted = Object.fromEntries(kinds.map((kind) => [kind, texture(kind, look)]));
+    const pixels = returned.take(client, 'textures', Object.fromEntries(kinds.map((kind) => [kind, painted[kind].pixels])), transfer, counts);
     const out = { look };
-    for (const kind of ['bark', 'barkNormal', 'leaf', 'flower']) {
-      const t = texture(kind, look);
-      const pixels = new Uint8Array(t.pixels);
-      transfer.push(pixels.buffer);
-      out[kind] = { width: t.width, height: t.height, digest: t.digest, pixels };
+    for (const kind of kinds) {
+      const t = painted[kind];
+      out[kind] = { width: t.width, height: t.height, digest: t.digest, pixels: pixels[kind] };
     }
     return out;
   }
@@ -66,12 +68,13 @@ export function createHandler(Module, ctx) {
   // counts: {reused, fresh} buffers.
   function takeMesh(session, client, transfer, counts) {
     const part = (name) => returned.take(client, name, session.buffers(name), transfer, counts);
-    return { bark: part('bark'), leaves: part('leaves'), flowers: part('flowers'), textures: takeTextures(session, transfer) };
+    return { bark: part('bark'), leaves: part('leaves'), flowers: part('flowers'), textures: takeTextures(session, client, transfer, counts) };
   }
 
-  // The card-atlas geometry of a hybrid-mode tree (copied once, transferred).
-  function takeAtlas(session, transfer) {
-    const part = (name) => takeBuffers(session.buffers(`atlas.${name}`), transfer);
+  // The card-atlas geometry of a hybrid-mode tree (copied once into the client's returned
+  // 'atlas.<part>.*' buffers where they fit, transferred).
+  function takeAtlas(session, client, transfer, counts = { reused: 0, fresh: 0, dropped: 0 }) {
+    const part = (name) => returned.take(client, `atlas.${name}`, session.buffers(`atlas.${name}`), transfer, counts);
     return { atlasSize: session.atlasSize(), bark: part('bark'), leaves: part('leaves'), flowers: part('flowers') };
   }
 
@@ -90,7 +93,7 @@ export function createHandler(Module, ctx) {
         post(errorReply(error, id, client));
         return false;
       }
-      hybrid = takeAtlas(session, transfer);
+      hybrid = takeAtlas(session, client, transfer, buffers);
     }
     post({ type: 'tree', id, client, stats, mesh, hybrid, swayNodes: session.swayNodes(), grown, stages, buffers }, transfer);
     return true;
@@ -288,7 +291,7 @@ export function createHandler(Module, ctx) {
         last.motionHybrid = true;
       }
       const transfer = [];
-      post({ type: 'motionAtlas', client, hybrid: takeAtlas(session, transfer) }, transfer);
+      post({ type: 'motionAtlas', client, hybrid: takeAtlas(session, client, transfer) }, transfer);
     }
     const { camera, slot, tag } = msg;
     const n = (x, d) => (Number.isFinite(Number(x)) ? Number(x) : d);
