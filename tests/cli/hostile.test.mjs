@@ -121,11 +121,11 @@ for (const command of declared.commands) {
     const given = flag.only_with ? ['--out'].includes(flag.only_with)
       ? [flag.only_with, `${OUT}/o${flag.only_endings[0]}`] : [] : [];
     if (flag.kind === 'number') {
-      // The bounds, hex and nan for every numeric flag; two of the other spellings each, in turn
+      // The bounds, hex, nan and octal-looking 010 for every numeric flag; two of the other spellings each, in turn
       // (they all reach the one parser, FlagNumber: the unit tests try each against every rule).
       const all = hostileNumbers(flag);
       const others = all.slice(2, 16).filter((v) => v !== 'nan');
-      const picked = [...all.slice(0, 2), 'nan', ...all.slice(16), others[turn % others.length], others[(turn + 7) % others.length]];
+      const picked = [...all.slice(0, 2), 'nan', '010', ...all.slice(16), others[turn % others.length], others[(turn + 7) % others.length]];
       ++turn;
       for (const v of picked) cases.push({ name: `${word} ${flag.flag} ${JSON.stringify(v)}`, args: [...base, ...given, flag.flag, v], expect: 'refused', names: flag.flag });
     } else if (flag.kind === 'text') {
@@ -166,8 +166,8 @@ for (const study of declared.studies) {
   check(`${study.name}: its table lists rows`, rows.length > 0, `${rows.length} rows`);
   for (const row of rows) {
     const spec = { min: row.min, max: row.max, integer: Boolean(row.integer) };
-    // Past each bound (and a fraction for a whole-number row), and one of hex, nan, inf in turn.
-    for (const v of [['0x10', 'nan', 'inf'][rowTurn++ % 3], ...hostileNumbers(spec).slice(16)]) {
+    // Past each bound (and a fraction for a whole-number row), and one of hex, nan, inf, 010 in turn.
+    for (const v of [['0x10', 'nan', 'inf', '010'][rowTurn++ % 4], ...hostileNumbers(spec).slice(16)]) {
       cases.push({ name: `${study.name} --set ${row.key}=${JSON.stringify(v)}`, args: [...study.example, '--set', `${row.key}=${v}`], expect: 'refused', names: row.key });
     }
     cases.push({ name: `${study.name} --url ${row.key} repeated`, args: [...study.example, '--url', `${row.key}=${row.min}&${row.key}=${row.min}`], expect: 'refused', names: row.key });
