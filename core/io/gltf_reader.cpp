@@ -600,9 +600,11 @@ Status Reader::AddMesh(int mesh_index, const glm::dmat4& world) {
         wn = normal_matrix * ln;
         double len = std::sqrt(wn.x * wn.x + wn.y * wn.y + wn.z * wn.z);
         if (len > 0.0 && std::isfinite(len)) wn /= len;
-        if (!std::isfinite(len)) wn = glm::dvec3(0.0);  // overflowed: no direction, as a zero normal
+        if (!std::isfinite(len))
+          wn = glm::dvec3(0.0);  // overflowed: no direction, as a zero normal
       }
-      if (!local.uvs.empty() && (!std::isfinite(local.uvs[i].x) || !std::isfinite(local.uvs[i].y))) {
+      if (!local.uvs.empty() &&
+          (!std::isfinite(local.uvs[i].x) || !std::isfinite(local.uvs[i].y))) {
         return Error(label + " TEXCOORD_0 " + std::to_string(i) + " is NaN or infinite");
       }
       if (!local.colors.empty()) {

@@ -224,9 +224,8 @@ std::string WithoutCounts(const std::string& what) {
 }  // namespace
 
 Status ProjectIvyBuds(BudProjection* p, double buds, double new_buds, double bud_steps,
-                      const Estimate& exported, double seconds_so_far,
-                      const IvyGrowLimits& limits, const Budget& budget, int step, int steps,
-                      const std::string& change) {
+                      const Estimate& exported, double seconds_so_far, const IvyGrowLimits& limits,
+                      const Budget& budget, int step, int steps, const std::string& change) {
   const BudProjection before = *p;
   *p = BudProjection{buds, new_buds, exported, buds, step};
   if (before.buds <= 0 || buds <= before.buds || new_buds <= 0 || new_buds < before.new_buds)
@@ -252,8 +251,9 @@ Status ProjectIvyBuds(BudProjection* p, double buds, double new_buds, double bud
   p->final_step = step + static_cast<int>(m);
   const double more = p->final_buds - buds, span = buds - before.buds;
   Estimate e;
-  e.memory_bytes = exported.memory_bytes +
-                   std::max(0.0, (exported.memory_bytes - before.exported.memory_bytes) / span) * more;
+  e.memory_bytes =
+      exported.memory_bytes +
+      std::max(0.0, (exported.memory_bytes - before.exported.memory_bytes) / span) * more;
   e.seconds =
       exported.seconds + std::max(0.0, (exported.seconds - before.exported.seconds) / span) * more;
   e.what = "growing on to about " + FormatCount(p->final_buds) + " buds by step " +
@@ -262,8 +262,8 @@ Status ProjectIvyBuds(BudProjection* p, double buds, double new_buds, double bud
            WithoutCounts(exported.what);
   const Status fits = CheckEstimate(e, budget, change);
   if (fits.ok()) return fits;
-  return Status::Error("steps", "at step " + std::to_string(step) + " of " +
-                                    std::to_string(steps) + ": " + fits.message());
+  return Status::Error("steps", "at step " + std::to_string(step) + " of " + std::to_string(steps) +
+                                    ": " + fits.message());
 }
 
 }  // namespace niwa::ivy

@@ -94,8 +94,9 @@ Estimate EstimateIvyExport(const IvyModel& model, IvyExport kind, double support
 // the new buds of the latest one (made only while those do not shrink between projections), cut
 // at the step where the growth's own limits would stop it (the memory of buds and their alive
 // copies, at most 2 · bytes_per_bud a bud; the time at the growth's estimated seconds a bud-step
-// so far, `bud_steps` being Σ buds over the steps made), and the export's estimate there (extended along its slope between the last two projections). Refused naming
-// `steps` when that does not fit `budget`. Measured against real runs in docs/budgets.md.
+// so far, `bud_steps` being Σ buds over the steps made), and the export's estimate there (extended
+// along its slope between the last two projections). Refused naming `steps` when that does not fit
+// `budget`. Measured against real runs in docs/budgets.md.
 struct BudProjection {
   double buds = 0, new_buds = 0;  // at the latest projection
   Estimate exported;              // the export's estimate then

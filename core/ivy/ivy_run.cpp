@@ -209,10 +209,10 @@ Status IvyRun::Advance(const run::Observer& observer) {
       Result<Estimate> exported =
           ExportEstimateOf(model, so_far, options_.planned_export, options_.planned_with_support);
       if (exported.ok()) {
-        const Status fits = ProjectIvyBuds(&projection, buds, new_buds, bud_steps, *exported,
-                                           EstimateIvyGrown(model, so_far, grow_limits_).seconds,
-                                           grow_limits_, budget_, step, steps,
-                                           options_.export_change);
+        const Status fits =
+            ProjectIvyBuds(&projection, buds, new_buds, bud_steps, *exported,
+                           EstimateIvyGrown(model, so_far, grow_limits_).seconds, grow_limits_,
+                           budget_, step, steps, options_.export_change);
         if (!fits.ok()) {
           early = fits;
           return false;

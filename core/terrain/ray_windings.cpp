@@ -75,7 +75,8 @@ void ForEachPiece(const Grid& g, const RayEdge& e, std::size_t index, F&& f) {
     const int64_t lo = std::max(ex0, static_cast<int64_t>(std::floor(std::min(xa, xb))) - 1);
     const int64_t hi = std::min(ex1, static_cast<int64_t>(std::ceil(std::max(xa, xb))) + 1);
     const int64_t c0 = g.Col(lo);
-    f(Piece{ya, yb, static_cast<uint32_t>(index), static_cast<int32_t>(c0)}, PieceCols{c0, g.Col(hi)}, r);
+    f(Piece{ya, yb, static_cast<uint32_t>(index), static_cast<int32_t>(c0)},
+      PieceCols{c0, g.Col(hi)}, r);
   }
 }
 
@@ -130,7 +131,8 @@ double RayWindings(const std::vector<RayEdge>& edges, const std::vector<IPoint>&
   std::vector<uint32_t> by_col(all.size());
   {
     std::vector<std::size_t> next(piece_at.begin(), piece_at.end() - 1);
-    for (std::size_t k = 0; k < all.size(); ++k) by_col[next[static_cast<std::size_t>(all[k].c0)]++] = static_cast<uint32_t>(k);
+    for (std::size_t k = 0; k < all.size(); ++k)
+      by_col[next[static_cast<std::size_t>(all[k].c0)]++] = static_cast<uint32_t>(k);
   }
   std::vector<std::size_t> point_at(static_cast<std::size_t>(g.cols) + 1, 0);
   for (const IPoint& p : points) ++point_at[static_cast<std::size_t>(g.Col(p.x)) + 1];
@@ -145,13 +147,14 @@ double RayWindings(const std::vector<RayEdge>& edges, const std::vector<IPoint>&
   // point's y is the weight of the pieces (inserted so far) whose [y0, y1) holds it.
   std::vector<int64_t> tree(keys.size() + 1, 0);
   auto add = [&](int64_t key, int64_t v) {
-    std::size_t k = static_cast<std::size_t>(std::lower_bound(keys.begin(), keys.end(), key) -
-                                              keys.begin()) + 1;
+    std::size_t k =
+        static_cast<std::size_t>(std::lower_bound(keys.begin(), keys.end(), key) - keys.begin()) +
+        1;
     for (; k < tree.size(); k += k & (~k + 1)) tree[k] += v;
   };
   auto prefix = [&](int64_t y) {
-    std::size_t k = static_cast<std::size_t>(std::upper_bound(keys.begin(), keys.end(), y) -
-                                             keys.begin());
+    std::size_t k =
+        static_cast<std::size_t>(std::upper_bound(keys.begin(), keys.end(), y) - keys.begin());
     int64_t s = 0;
     for (; k > 0; k -= k & (~k + 1)) s += tree[k];
     return s;

@@ -60,6 +60,22 @@ const INPUTS = {
     asset: { version: '2.0' }, buffers: [{ byteLength: 36 }], bufferViews: [{ buffer: 0, byteLength: 36 }],
     accessors: [{ bufferView: 0, componentType: 5126, count: 0x1555555555555556, type: 'VEC3' }],
     meshes: [{ primitives: [{ attributes: { POSITION: 0 } }] }], nodes: [{ mesh: 0 }], scenes: [{ nodes: [0] }] }, 36)),
+  // A Draco buffer (bitstream 2.2 edgebreaker) declaring 2^28 faces in 53 bytes, no plain fallback.
+  'a Draco header declaring 2^28 faces': file('draco.glb', glbBytes(JSON.stringify({
+    asset: { version: '2.0' }, buffers: [{ byteLength: 56 }], bufferViews: [{ buffer: 0, byteLength: 53 }],
+    accessors: [{ componentType: 5126, count: 3, type: 'VEC3' }], extensionsUsed: ['KHR_draco_mesh_compression'],
+    meshes: [{ primitives: [{ attributes: { POSITION: 0 },
+      extensions: { KHR_draco_mesh_compression: { bufferView: 0, attributes: { POSITION: 0 } } } }] }],
+    nodes: [{ mesh: 0 }], scenes: [{ nodes: [0] }] }),
+  Buffer.concat([Buffer.from('DRACO'), Buffer.from([2, 2, 1, 1, 0, 0, 0, 49, 0x80, 0x80, 0x80, 0x80, 0x01]), Buffer.alloc(35)]))),
+  // One triangle whose NORMAL has a NaN.
+  'a NaN normal': file('nan_normal.glb', glbBytes(JSON.stringify({
+    asset: { version: '2.0' }, buffers: [{ byteLength: 72 }],
+    bufferViews: [{ buffer: 0, byteLength: 36 }, { buffer: 0, byteOffset: 36, byteLength: 36 }],
+    accessors: [{ bufferView: 0, componentType: 5126, count: 3, type: 'VEC3' },
+      { bufferView: 1, componentType: 5126, count: 3, type: 'VEC3' }],
+    meshes: [{ primitives: [{ attributes: { POSITION: 0, NORMAL: 1 } }] }], nodes: [{ mesh: 0 }], scenes: [{ nodes: [0] }] }),
+  Buffer.from(new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, NaN, 0, 1, 0, 0, 1]).buffer))),
   'JSON of the wrong types': file('types.json', '{"type": null, "points": 7, "params": [1], "coordinates": "x", "asset": 3}'),
   'a repeated key': file('repeat.json', '{"steps": 3, "params": {"a": 1}, "steps": 4}'),
   '/dev/zero': '/dev/zero',

@@ -199,7 +199,6 @@ TEST(GltfHostile, VertexBombIsRefusedBeforeAllocating) {
             "hostile.glb: accessor 1 declares 17179869187 elements; the limit is 12000000");
 }
 
-
 // One triangle with NORMAL, TEXCOORD_0 and COLOR_0 (all float): `bad` names the attribute whose
 // vertex 1 gets `value` in its first component (nothing when empty).
 std::string AttributedTriangle(const std::string& bad, float value) {
@@ -243,9 +242,9 @@ TEST(GltfHostile, NonFiniteAttributesAreRefusedNamingTheAttribute) {
   const float inf = std::numeric_limits<float>::infinity();
   for (const char* attribute : {"POSITION", "NORMAL", "TEXCOORD_0", "COLOR_0"}) {
     for (const float value : {nan, inf, -inf}) {
-      EXPECT_EQ(LineOf(AttributedTriangle(attribute, value)),
-                std::string("hostile.glb: mesh 0 primitive 0 ") + attribute +
-                    " 1 is NaN or infinite")
+      EXPECT_EQ(
+          LineOf(AttributedTriangle(attribute, value)),
+          std::string("hostile.glb: mesh 0 primitive 0 ") + attribute + " 1 is NaN or infinite")
           << attribute << " " << value;
     }
   }
@@ -296,8 +295,8 @@ std::string DracoGlb(const std::string& draco) {
 TEST(GltfHostile, DracoCountsBeyondTheLimitsAreRefusedFromTheHeader) {
   for (const int method : {0, 1}) {
     EXPECT_TRUE(PreflightDracoHeader(DracoHeader(method, 3, 1), "m").ok());
-    EXPECT_TRUE(PreflightDracoHeader(DracoHeader(method, kMaxMeshVertices, kMaxMeshTriangles), "m")
-                    .ok());
+    EXPECT_TRUE(
+        PreflightDracoHeader(DracoHeader(method, kMaxMeshVertices, kMaxMeshTriangles), "m").ok());
     EXPECT_EQ(PreflightDracoHeader(DracoHeader(method, 49, uint64_t{1} << 28), "m").message(),
               "m: the Draco data declares 49 vertices and 268435456 triangles; the limits are "
               "12000000 and 4000000");

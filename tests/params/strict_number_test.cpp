@@ -26,10 +26,10 @@ TEST(StrictNumber, DecimalOnly) {
   EXPECT_EQ(ParseDecimal("1e3"), 1000.0);
   EXPECT_EQ(ParseDecimal("1E-3"), 0.001);
   for (const char* bad :
-       {"",         " ",  "0x10", "0X1p3", "0x1p3", "1p3",   "inf",    "-inf",  "nan", "NaN",
-        "infinity", "1e", "1e+",  "e5",    ".",     "+",     "-",      "--5",   "+-5", "1.2.3",
-        " 5",       "5 ", "5\n",  "5,0",   "1_000", "1e400", "-1e400", "0b101", "\x1b",
-        "010",      "-01", "+007", "00",    "00.5",  "-00.5", "0010e2"}) {
+       {"",      " ",        "0x10", "0X1p3", "0x1p3", "1p3", "inf",   "-inf",  "nan",
+        "NaN",   "infinity", "1e",   "1e+",   "e5",    ".",   "+",     "-",     "--5",
+        "+-5",   "1.2.3",    " 5",   "5 ",    "5\n",   "5,0", "1_000", "1e400", "-1e400",
+        "0b101", "\x1b",     "010",  "-01",   "+007",  "00",  "00.5",  "-00.5", "0010e2"}) {
     EXPECT_FALSE(ParseDecimal(bad).has_value()) << bad;
   }
   EXPECT_FALSE(ParseDecimal(std::string(kMaxNumberText + 1, '1')).has_value());  // refused, not cut

@@ -92,7 +92,8 @@ TEST(RayWindings, EqualsTheBruteForceOnACombAndASpiral) {
     EXPECT_TRUE(none.empty());
   }
   // The comb's work is linear in its teeth (the brute force's is quadratic).
-  EXPECT_LT(RayWindings(Edges(comb), Midpoints(comb), -1, nullptr), 40.0 * static_cast<double>(comb.size()));
+  EXPECT_LT(RayWindings(Edges(comb), Midpoints(comb), -1, nullptr),
+            40.0 * static_cast<double>(comb.size()));
 }
 
 }  // namespace

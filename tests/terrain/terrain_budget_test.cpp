@@ -233,11 +233,11 @@ Ring Spiral(int turns) {
   return r;
 }
 
-// Issue 34: a comb of 1,000 teeth made 816 M edge tests in its first shrink (5.7-11 s), 10,000 teeth
-// were refused after 25 s and 100,000 ran past 60 s. The union's windings now come from a grid
-// (ray_windings.h): the 1,000-tooth comb grows under a 5 s budget (before: stopped), the estimate
-// of a comb is linear in its teeth (was 120 G for 100,000), and a comb whose offset path crosses
-// itself millions of times is stopped by the counted split points, naming the contour.
+// Issue 34: a comb of 1,000 teeth made 816 M edge tests in its first shrink (5.7-11 s), 10,000
+// teeth were refused after 25 s and 100,000 ran past 60 s. The union's windings now come from a
+// grid (ray_windings.h): the 1,000-tooth comb grows under a 5 s budget (before: stopped), the
+// estimate of a comb is linear in its teeth (was 120 G for 100,000), and a comb whose offset path
+// crosses itself millions of times is stopped by the counted split points, naming the contour.
 TEST(TerrainBudget, CombsShrinkInLinearWorkOrStopAtTheirCountedSplits) {
   Budget budget;  // the CLI's defaults: 2 GB, 60 s
   EXPECT_LT(ShrinkSweepTests(Comb(100000)), 1e8);
