@@ -22,9 +22,10 @@ Status PreflightGltfJson(std::string_view json, const std::string& name);
 // writes): Ok unless it declares more than kMaxMeshTriangles faces or kMaxMeshVertices points
 // (vertices), refused naming `label` before the decoder sizes anything from them; also Ok for
 // what it cannot read (another version, metadata, a short buffer), which is left to the decoder.
-// Draco 1.5.5 itself refuses counts its bytes cannot hold cheaply (tests/io/gltf_hostile_test.cpp:
-// 2^28 faces in 642 bytes, 6 MB peak); this cap stops a file that really holds a mesh above the
-// reader's limits before it is decoded (natively and, with mesh_import.js, in the page).
+// Draco 1.5.5 itself refuses counts its bytes cannot hold cheaply (2^28 faces in a 642-byte buffer:
+// a 6 MB peak); this cap stops a file that really holds a mesh above the reader's limits before it
+// is decoded, natively. The page decodes Draco with draco3d (web/mesh/mesh_import.js) before the
+// core sees the file and does not call this yet.
 Status PreflightDracoHeader(std::string_view bytes, const std::string& label);
 
 }  // namespace niwa::io
