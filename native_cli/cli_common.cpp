@@ -82,7 +82,7 @@ double FlagNumber(const std::string& flag, const std::string& text, const FlagRa
   if (text.empty()) Fail(Status::Error(flag, "empty; must be " + allowed));
   std::optional<double> value = ParseDecimal(text);
   if (!value) {
-    Fail(Status::Error(flag, "'" + Echo(text) + "' is not a decimal number; must be " + allowed));
+    Fail(Status::Error(flag, NotDecimalWhy(text) + "; must be " + allowed));
   }
   // A float flag (range.single) is checked as the float it becomes: "--distance 0.2" is the
   // float 0.2f, the bound itself.

@@ -333,4 +333,48 @@ Status PreflightGltfJson(std::string_view json_text, const std::string& name) {
   return Preflight(doc, name).Run();
 }
 
+namespace {
+
+// Draco's varint (LEB128, at most 5 bytes for 32 bits); false past the end or when too long.
+bool DracoVarint(std::string_view b, std::size_t* at, uint64_t* out) {
+  *out = 0;
+  for (int shift = 0; shift < 35; shift += 7) {
+    if (*at >= b.size()) return false;
+    const uint8_t c = static_cast<uint8_t>(b[(*at)++]);
+    *out |= static_cast<uint64_t>(c & 0x7f) << shift;
+    if ((c & 0x80) == 0) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+Status PreflightDracoHeader(std::string_view b, const std::string& label) {
+  // "DRACO", major, minor, encoder type (1: triangular mesh), method (0 sequential, 1 edgebreaker),
+  // flags (uint16, 0x8000: metadata follows).
+  if (b.size() < 11 || b.substr(0, 5) != "DRACO") return Status::Ok();
+  const uint8_t major = static_cast<uint8_t>(b[5]), minor = static_cast<uint8_t>(b[6]);
+  const uint8_t type = static_cast<uint8_t>(b[7]), method = static_cast<uint8_t>(b[8]);
+  const uint16_t flags =
+      static_cast<uint16_t>(static_cast<uint8_t>(b[9]) | (static_cast<uint8_t>(b[10]) << 8));
+  if (major != 2 || minor != 2 || type != 1 || (flags & 0x8000) != 0) return Status::Ok();
+  std::size_t at = 11;
+  uint64_t points = 0, faces = 0;
+  if (method == 0) {  // sequential: faces, points
+    if (!DracoVarint(b, &at, &faces) || !DracoVarint(b, &at, &points)) return Status::Ok();
+  } else if (method == 1) {  // edgebreaker: traversal type, encoded vertices, faces
+    ++at;
+    if (!DracoVarint(b, &at, &points) || !DracoVarint(b, &at, &faces)) return Status::Ok();
+  } else {
+    return Status::Ok();
+  }
+  if (faces > kMaxMeshTriangles || points > kMaxMeshVertices) {
+    return Status::Error("", label + ": the Draco data declares " + std::to_string(points) +
+                                 " vertices and " + std::to_string(faces) +
+                                 " triangles; the limits are " + std::to_string(kMaxMeshVertices) +
+                                 " and " + std::to_string(kMaxMeshTriangles));
+  }
+  return Status::Ok();
+}
+
 }  // namespace niwa::io

@@ -363,6 +363,10 @@ Status Reader::ReadDraco(int mesh, int prim, const tinygltf::Value& ext, LocalPr
     return Error(label + ": the Draco buffer view reads past the end of its buffer (truncated?)");
   }
   const auto& buffer = model_.buffers[static_cast<std::size_t>(bv.buffer)].data;
+  const Status header = PreflightDracoHeader(
+      std::string_view(reinterpret_cast<const char*>(buffer.data() + bv.byteOffset), bv.byteLength),
+      label);
+  if (!header.ok()) return Error(header.message());
   draco::DecoderBuffer in;
   in.Init(reinterpret_cast<const char*>(buffer.data() + bv.byteOffset), bv.byteLength);
   draco::Decoder decoder;
@@ -584,11 +588,31 @@ Status Reader::AddMesh(int mesh_index, const glm::dmat4& world) {
                      " is infinite after its node transform");
       }
       mesh_.positions.push_back(fp);
+      // Normals, UVs and colours must be finite too (the glTF validator's ACCESSOR_INVALID_FLOAT):
+      // a NaN there is a corrupt file, refused naming the attribute rather than replaced, since a
+      // replaced value would hide the damage and change shading without a word.
       glm::dvec3 wn(0.0);
       if (!local.normals.empty()) {
-        wn = normal_matrix * local.normals[i];
+        const glm::dvec3& ln = local.normals[i];
+        if (!std::isfinite(ln.x) || !std::isfinite(ln.y) || !std::isfinite(ln.z)) {
+          return Error(label + " NORMAL " + std::to_string(i) + " is NaN or infinite");
+        }
+        wn = normal_matrix * ln;
         double len = std::sqrt(wn.x * wn.x + wn.y * wn.y + wn.z * wn.z);
         if (len > 0.0 && std::isfinite(len)) wn /= len;
+        if (!std::isfinite(len))
+          wn = glm::dvec3(0.0);  // overflowed: no direction, as a zero normal
+      }
+      if (!local.uvs.empty() &&
+          (!std::isfinite(local.uvs[i].x) || !std::isfinite(local.uvs[i].y))) {
+        return Error(label + " TEXCOORD_0 " + std::to_string(i) + " is NaN or infinite");
+      }
+      if (!local.colors.empty()) {
+        const glm::vec4& lc = local.colors[i];
+        if (!std::isfinite(lc.x) || !std::isfinite(lc.y) || !std::isfinite(lc.z) ||
+            !std::isfinite(lc.w)) {
+          return Error(label + " COLOR_0 " + std::to_string(i) + " is NaN or infinite");
+        }
       }
       mesh_.normals.push_back(glm::vec3(wn));
       mesh_.uvs.push_back(local.uvs.empty() ? glm::vec2(0.0f) : local.uvs[i]);

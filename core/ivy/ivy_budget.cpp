@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 namespace niwa::ivy {
@@ -203,6 +204,66 @@ Estimate EstimateIvyExport(const IvyModel& model, IvyExport kind, double support
   e.seconds = c.ns_per_byte * 1e-9 * bytes;
   e.what = std::string(c.what) + " (" + FormatCount(buds) + " buds)";
   return e;
+}
+
+namespace {
+
+// "growing the ivy (5,239 buds) and writing the .glb (5,239 buds)" without its " (...)" parts.
+std::string WithoutCounts(const std::string& what) {
+  std::string out;
+  int depth = 0;
+  for (std::size_t i = 0; i < what.size(); ++i) {
+    if (what[i] == ' ' && i + 1 < what.size() && what[i + 1] == '(' && depth == 0) continue;
+    if (what[i] == '(') ++depth;
+    if (depth == 0) out += what[i];
+    if (what[i] == ')' && depth > 0) --depth;
+  }
+  return out;
+}
+
+}  // namespace
+
+Status ProjectIvyBuds(BudProjection* p, double buds, double new_buds, double bud_steps,
+                      const Estimate& exported, double seconds_so_far, const IvyGrowLimits& limits,
+                      const Budget& budget, int step, int steps, const std::string& change) {
+  const BudProjection before = *p;
+  *p = BudProjection{buds, new_buds, exported, buds, step};
+  if (before.buds <= 0 || buds <= before.buds || new_buds <= 0 || new_buds < before.new_buds)
+    return Status::Ok();
+  double m = static_cast<double>(steps - step);  // further steps
+  if (limits.max_bytes >= 0 && limits.bytes_per_bud > 0) {
+    const double cap = (limits.max_bytes - limits.base_bytes) / (2 * limits.bytes_per_bud);
+    m = std::min(m, std::floor((cap - buds) / new_buds));
+  }
+  // The growth's estimated seconds a bud-step so far (its searches as counted), at least the
+  // bud-step constant, with the room kept per bud.
+  const double c = std::max(limits.seconds_per_bud_step,
+                            (seconds_so_far - limits.seconds_before) / std::max(1.0, bud_steps)) +
+                   limits.seconds_per_bud;
+  if (limits.max_seconds >= 0 && c > 0) {
+    // c · Σ_{i=1..m} (buds + i · new_buds) <= the time left.
+    const double left = std::max(0.0, limits.max_seconds - seconds_so_far) / c;
+    const double a = new_buds / 2, b = buds + new_buds / 2;
+    m = std::min(m, std::floor((-b + std::sqrt(b * b + 4 * a * left)) / (2 * a)));
+  }
+  if (!(m > 0)) return Status::Ok();
+  p->final_buds = buds + m * new_buds;
+  p->final_step = step + static_cast<int>(m);
+  const double more = p->final_buds - buds, span = buds - before.buds;
+  Estimate e;
+  e.memory_bytes =
+      exported.memory_bytes +
+      std::max(0.0, (exported.memory_bytes - before.exported.memory_bytes) / span) * more;
+  e.seconds =
+      exported.seconds + std::max(0.0, (exported.seconds - before.exported.seconds) / span) * more;
+  e.what = "growing on to about " + FormatCount(p->final_buds) + " buds by step " +
+           std::to_string(p->final_step) + " (at least the " + FormatCount(new_buds) +
+           " new buds of step " + std::to_string(step) + " each step) and " +
+           WithoutCounts(exported.what);
+  const Status fits = CheckEstimate(e, budget, change);
+  if (fits.ok()) return fits;
+  return Status::Error("steps", "at step " + std::to_string(step) + " of " + std::to_string(steps) +
+                                    ": " + fits.message());
 }
 
 }  // namespace niwa::ivy

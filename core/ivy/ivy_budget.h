@@ -89,6 +89,24 @@ enum class IvyExport { kJson, kLsys, kSvg, kGlb };
 // support written into the .glb (--with-support) or drawn in the .svg, else 0.
 Estimate EstimateIvyExport(const IvyModel& model, IvyExport kind, double support_triangles);
 
+// A planned export's projection to the last step (IvyRun::Advance, issue 34), made as the buds
+// grow by 5 %: the buds the growth will have by the last step if every further step adds at least
+// the new buds of the latest one (made only while those do not shrink between projections), cut
+// at the step where the growth's own limits would stop it (the memory of buds and their alive
+// copies, at most 2 · bytes_per_bud a bud; the time at the growth's estimated seconds a bud-step
+// so far, `bud_steps` being Σ buds over the steps made), and the export's estimate there (extended
+// along its slope between the last two projections). Refused naming `steps` when that does not fit
+// `budget`. Measured against real runs in docs/budgets.md.
+struct BudProjection {
+  double buds = 0, new_buds = 0;  // at the latest projection
+  Estimate exported;              // the export's estimate then
+  double final_buds = 0;          // the latest projection's buds at its last step
+  int final_step = 0;
+};
+Status ProjectIvyBuds(BudProjection* projection, double buds, double new_buds, double bud_steps,
+                      const Estimate& exported, double seconds_so_far, const IvyGrowLimits& limits,
+                      const Budget& budget, int step, int steps, const std::string& change);
+
 // The page's meshes per bud (BuildIvyMeshes, their flat copies and the buds' buffer, held with the
 // model): the page adds it to IvyGrowLimits::bytes_per_bud, so the growth stops where they fit.
 double IvyPageMeshBytesPerBud();

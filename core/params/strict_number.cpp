@@ -24,6 +24,7 @@ bool MatchesGrammar(std::string_view text) {
   std::size_t i = 0;
   if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
   const std::size_t whole = Digits(text, i);
+  if (whole > 1 && text[i] == '0') return false;  // "010", "-01", "00.5": octal-looking
   i += whole;
   std::size_t fraction = 0;
   if (i < text.size() && text[i] == '.') {
@@ -44,6 +45,18 @@ bool MatchesGrammar(std::string_view text) {
 
 }  // namespace
 
+bool HasLeadingZero(std::string_view text) {
+  std::size_t i = 0;
+  if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+  return Digits(text, i) > 1 && text[i] == '0';
+}
+
+std::string NotDecimalWhy(std::string_view text) {
+  return "'" + Echo(text) + "' " +
+         (HasLeadingZero(text) ? "has a leading zero (octal in some tools)"
+                               : "is not a decimal number");
+}
+
 std::optional<double> ParseDecimal(std::string_view text) {
   if (text.empty() || text.size() > kMaxNumberText || !MatchesGrammar(text)) return std::nullopt;
   const std::string copy(text);  // strtod needs a terminated string; the grammar left no junk
@@ -59,8 +72,7 @@ Result<double> ParseStrictNumber(std::string_view field, std::string_view text, 
   if (text.empty()) return Status::Error(std::string(field), "empty; must be " + range);
   std::optional<double> value = ParseDecimal(text);
   if (!value) {
-    return Status::Error(std::string(field),
-                         "'" + Echo(text) + "' is not a decimal number; must be " + range);
+    return Status::Error(std::string(field), NotDecimalWhy(text) + "; must be " + range);
   }
   NIWA_RETURN_IF_ERROR(CheckValue(field, *value, min, max, integer));
   return *value;

@@ -32,9 +32,10 @@ struct ShrinkCounts {
   int cleaned_points = 0;
   int holes_filled = 0;
   int dropped_rings = 0;
-  // The union sweep's edge tests (each sloped edge against its strip, each horizontal edge
-  // against all: quadratic for a comb), and the most allowed (< 0: no limit). Past it the union
-  // stops at once with `stopped` and no rings: a budget counted, so both builds stop alike.
+  // The union sweep's work (ray_windings.h: pieces, cell entries and exact edge tests; linear for
+  // a comb, n·√n at worst), and the most allowed (< 0: no limit). Past it the union stops at once
+  // with `stopped` and no rings (before the cells' lists are allocated): a budget counted, so
+  // both builds stop alike.
   double sweep_tests = 0;
   double max_sweep_tests = -1;
   bool stopped = false;
@@ -56,6 +57,9 @@ std::vector<Ring> SweptPieces(const Ring& ring, const ShrinkOptions& options);
 // Steps 3-4: the regions of winding number ≥ 1 of a set of closed paths, as simple
 // counter-clockwise rings on the grid (clockwise rings = holes are dropped and counted).
 std::vector<Ring> PositiveUnion(const std::vector<Ring>& paths, ShrinkCounts* counts);
+// The work (ShrinkCounts::sweep_tests) of the union sweep over the ring's own edges, counted
+// without the exact tests: terrain_budget's estimate of a shrink's sweep from its seed.
+double UnionSweepWork(const Ring& ring);
 
 // The whole Fig 6 algorithm: 0, 1 or several simple counter-clockwise rings at distance d inside
 // the ring (outside when options.outward).

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "terrain/offset.h"
 #include "terrain/polygon.h"
 
 namespace niwa::terrain {
@@ -159,43 +160,7 @@ bool GrowFitsLimits(const Terrain& t, const TerrainParams& params, const Terrain
   return true;
 }
 
-double ShrinkSweepTests(const Ring& ring) {
-  const std::size_t n = ring.size();
-  if (n < 2) return 0;
-  double y0 = ring[0].y, y1 = y0;
-  for (const Vec2& v : ring) {
-    y0 = std::min(y0, v.y);
-    y1 = std::max(y1, v.y);
-  }
-  // As UnionOnce: √E strips over [y0, y1]; an edge is in every strip its y range touches.
-  const std::size_t strips =
-      std::max<std::size_t>(1, static_cast<std::size_t>(std::sqrt(static_cast<double>(n))));
-  const double span = y1 - y0;
-  auto strip_of = [&](double y) -> std::size_t {
-    if (!(span > 0)) return 0;
-    const double f = (y - y0) / span * static_cast<double>(strips);
-    return std::min(strips - 1, static_cast<std::size_t>(std::max(0.0, f)));
-  };
-  std::vector<double> starts(strips + 1, 0);  // a difference array of the strips' edge counts
-  double horizontal = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2& a = ring[i];
-    const Vec2& b = ring[(i + 1) % n];
-    if (a.y == b.y) ++horizontal;
-    starts[strip_of(std::min(a.y, b.y))] += 1;
-    starts[strip_of(std::max(a.y, b.y)) + 1] -= 1;
-  }
-  std::vector<double> count(strips, 0);
-  double running = 0;
-  for (std::size_t s = 0; s < strips; ++s) count[s] = running += starts[s];
-  double tests = horizontal * static_cast<double>(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2& a = ring[i];
-    const Vec2& b = ring[(i + 1) % n];
-    if (a.y != b.y) tests += count[strip_of(0.5 * (a.y + b.y))];
-  }
-  return tests;
-}
+double ShrinkSweepTests(const Ring& ring) { return ring.size() < 2 ? 0 : UnionSweepWork(ring); }
 
 Status CheckSeedShape(const Ring& seed, const Budget& budget) {
   const double tests = ShrinkSweepTests(seed);

@@ -108,8 +108,13 @@ function ivyTruncated(name, args, limit) {
 }
 ivyTruncated('ivy free literal 10000 steps at 128 MB', ['ivy', 'grow', '--scene', 'free', '--preset', 'literal', '--steps', '10000', '--max-memory', '128M'], '--max-memory');
 ivyTruncated('ivy wall literal 10000 steps in 1 s', ['ivy', 'grow', '--scene', 'wall', '--preset', 'literal', '--steps', '10000', '--max-seconds', '1'], '--max-seconds');
+// Issue 34: the planned .glb is projected to the last step as the buds grow (ivy_budget.h
+// ProjectIvyBuds), so the refusal names --steps within the first steps (here step 42, where the
+// growth alone was stopped at step 110 and the .glb refused after it).
 refused('ivy .glb beyond 128 MB', ['ivy', 'grow', '--scene', 'free', '--preset', 'literal', '--steps', '10000', '--max-memory', '128M'],
-  '--max-memory', 'ivy.glb', /writing the \.glb \([\d,]+ buds\) needs about/);
+  '--steps', 'ivy.glb', /^niwa: error: --steps: at step \d\d? of 10000: growing on to about [\d,]+ buds by step \d+ \(at least the [\d,]+ new buds of step \d+ each step\) and growing the ivy and writing the \.glb needs about [\d.]+ MB, more than the 128 MB allowed; /);
+refused('ivy cubes4 10000 steps to .glb', ['ivy', 'grow', '--steps', '10000'], '--steps', 'cubes.glb',
+  /^niwa: error: --steps: at step (1\d\d|2\d\d) of 10000: growing on to about [\d,]+ buds by step \d+ .* writing the \.glb needs about [\d.]+ GB, more than the 2 GB allowed; /);
 for (const cmd of [native, wasm]) {
   const a = spawn(cmd, ['ivy', 'grow', '--steps', '50', '--stats']);
   const b = spawn(cmd, ['ivy', 'grow', '--steps', '50', '--stats', '--max-memory', '4G', '--max-seconds', '600']);

@@ -60,6 +60,22 @@ const INPUTS = {
     asset: { version: '2.0' }, buffers: [{ byteLength: 36 }], bufferViews: [{ buffer: 0, byteLength: 36 }],
     accessors: [{ bufferView: 0, componentType: 5126, count: 0x1555555555555556, type: 'VEC3' }],
     meshes: [{ primitives: [{ attributes: { POSITION: 0 } }] }], nodes: [{ mesh: 0 }], scenes: [{ nodes: [0] }] }, 36)),
+  // A Draco buffer (bitstream 2.2 edgebreaker) declaring 2^28 faces in 53 bytes, no plain fallback.
+  'a Draco header declaring 2^28 faces': file('draco.glb', glbBytes(JSON.stringify({
+    asset: { version: '2.0' }, buffers: [{ byteLength: 56 }], bufferViews: [{ buffer: 0, byteLength: 53 }],
+    accessors: [{ componentType: 5126, count: 3, type: 'VEC3' }], extensionsUsed: ['KHR_draco_mesh_compression'],
+    meshes: [{ primitives: [{ attributes: { POSITION: 0 },
+      extensions: { KHR_draco_mesh_compression: { bufferView: 0, attributes: { POSITION: 0 } } } }] }],
+    nodes: [{ mesh: 0 }], scenes: [{ nodes: [0] }] }),
+  Buffer.concat([Buffer.from('DRACO'), Buffer.from([2, 2, 1, 1, 0, 0, 0, 49, 0x80, 0x80, 0x80, 0x80, 0x01]), Buffer.alloc(35)]))),
+  // One triangle whose NORMAL has a NaN.
+  'a NaN normal': file('nan_normal.glb', glbBytes(JSON.stringify({
+    asset: { version: '2.0' }, buffers: [{ byteLength: 72 }],
+    bufferViews: [{ buffer: 0, byteLength: 36 }, { buffer: 0, byteOffset: 36, byteLength: 36 }],
+    accessors: [{ bufferView: 0, componentType: 5126, count: 3, type: 'VEC3' },
+      { bufferView: 1, componentType: 5126, count: 3, type: 'VEC3' }],
+    meshes: [{ primitives: [{ attributes: { POSITION: 0, NORMAL: 1 } }] }], nodes: [{ mesh: 0 }], scenes: [{ nodes: [0] }] }),
+  Buffer.from(new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, NaN, 0, 1, 0, 0, 1]).buffer))),
   'JSON of the wrong types': file('types.json', '{"type": null, "points": 7, "params": [1], "coordinates": "x", "asset": 3}'),
   'a repeated key': file('repeat.json', '{"steps": 3, "params": {"a": 1}, "steps": 4}'),
   '/dev/zero': '/dev/zero',
@@ -121,11 +137,11 @@ for (const command of declared.commands) {
     const given = flag.only_with ? ['--out'].includes(flag.only_with)
       ? [flag.only_with, `${OUT}/o${flag.only_endings[0]}`] : [] : [];
     if (flag.kind === 'number') {
-      // The bounds, hex and nan for every numeric flag; two of the other spellings each, in turn
+      // The bounds, hex, nan and octal-looking 010 for every numeric flag; two of the other spellings each, in turn
       // (they all reach the one parser, FlagNumber: the unit tests try each against every rule).
       const all = hostileNumbers(flag);
       const others = all.slice(2, 16).filter((v) => v !== 'nan');
-      const picked = [...all.slice(0, 2), 'nan', ...all.slice(16), others[turn % others.length], others[(turn + 7) % others.length]];
+      const picked = [...all.slice(0, 2), 'nan', '010', ...all.slice(16), others[turn % others.length], others[(turn + 7) % others.length]];
       ++turn;
       for (const v of picked) cases.push({ name: `${word} ${flag.flag} ${JSON.stringify(v)}`, args: [...base, ...given, flag.flag, v], expect: 'refused', names: flag.flag });
     } else if (flag.kind === 'text') {
@@ -166,8 +182,8 @@ for (const study of declared.studies) {
   check(`${study.name}: its table lists rows`, rows.length > 0, `${rows.length} rows`);
   for (const row of rows) {
     const spec = { min: row.min, max: row.max, integer: Boolean(row.integer) };
-    // Past each bound (and a fraction for a whole-number row), and one of hex, nan, inf in turn.
-    for (const v of [['0x10', 'nan', 'inf'][rowTurn++ % 3], ...hostileNumbers(spec).slice(16)]) {
+    // Past each bound (and a fraction for a whole-number row), and one of hex, nan, inf, 010 in turn.
+    for (const v of [['0x10', 'nan', 'inf', '010'][rowTurn++ % 4], ...hostileNumbers(spec).slice(16)]) {
       cases.push({ name: `${study.name} --set ${row.key}=${JSON.stringify(v)}`, args: [...study.example, '--set', `${row.key}=${v}`], expect: 'refused', names: row.key });
     }
     cases.push({ name: `${study.name} --url ${row.key} repeated`, args: [...study.example, '--url', `${row.key}=${row.min}&${row.key}=${row.min}`], expect: 'refused', names: row.key });

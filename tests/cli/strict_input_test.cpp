@@ -65,15 +65,27 @@ std::vector<std::string> Grow(std::vector<std::string> extra) {
 }
 
 TEST(StrictInput, IntegersAreDecimalAndInRange) {
-  CliResult r = RunNiwa(Grow({"--years", "010", "--stats"}));
+  CliResult r = RunNiwa(Grow({"--years", "10", "--stats"}));
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(Years(r), 10);  // not octal 8
-  CliResult flag = RunNiwa(Grow({"--years", "3", "--seed", "010", "--stats"}));
-  CliResult url = RunNiwa({"tree", "grow", "--url", "preset=binary&years=3&seed=010", "--stats"});
+  EXPECT_EQ(Years(r), 10);
+  CliResult flag = RunNiwa(Grow({"--years", "3", "--seed", "10", "--stats"}));
+  CliResult url = RunNiwa({"tree", "grow", "--url", "preset=binary&years=3&seed=10", "--stats"});
   ASSERT_EQ(flag.code, 0);
   ASSERT_EQ(url.code, 0);
   EXPECT_EQ(Seed(flag), 10);
-  EXPECT_EQ(Seed(url), 10);  // --seed 010 is --url seed=010
+  EXPECT_EQ(Seed(url), 10);  // --seed 10 is --url seed=10
+  // Issue 34: "010" (octal eight to other tools) was read as ten; it is refused in flags, links
+  // and state files alike, naming the field and its range.
+  ExpectOneLineError(RunNiwa(Grow({"--years", "010"})),
+                     "--years: '010' has a leading zero (octal in some tools); must be a whole "
+                     "number in [0, 100]");
+  ExpectOneLineError(RunNiwa({"tree", "grow", "--url", "preset=binary&years=3&seed=010"}),
+                     "--url: seed: '010' dropped, must be a whole number in [0, 4294967295]");
+  ExpectOneLineError(RunNiwa({"terrain", "grow", "--builtin", "disk", "--res", "010"}),
+                     "--res: '010' has a leading zero (octal in some tools); must be a whole "
+                     "number in [8, 4096]");
+  ExpectOneLineError(RunNiwa({"terrain", "grow", "--url", "builtin=disk&d=-01"}),
+                     "--url: d: '-01' dropped, must be a number in [0.01, 100000]");
   ExpectOneLineError(RunNiwa(Grow({"--years", "0x10"})),
                      "--years: '0x10' is not a decimal number; must be a whole number in [0, 100]");
   ExpectOneLineError(RunNiwa(Grow({"--years", ""})),

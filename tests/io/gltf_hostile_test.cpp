@@ -7,9 +7,11 @@
 
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
+#include "io/gltf_preflight.h"
 #include "io/gltf_reader.h"
 #include "io/mesh_reader.h"
 
@@ -195,6 +197,130 @@ TEST(GltfHostile, VertexBombIsRefusedBeforeAllocating) {
   json.replace(json.find(from), from.size(), R"({"componentType": 5123, "count": 17179869187,)");
   EXPECT_EQ(LineOf(Glb(json, TriangleBin())),
             "hostile.glb: accessor 1 declares 17179869187 elements; the limit is 12000000");
+}
+
+// One triangle with NORMAL, TEXCOORD_0 and COLOR_0 (all float): `bad` names the attribute whose
+// vertex 1 gets `value` in its first component (nothing when empty).
+std::string AttributedTriangle(const std::string& bad, float value) {
+  float pos[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  float nrm[9] = {0, 0, 1, 0, 0, 1, 0, 0, 1};
+  float uv[6] = {0, 0, 1, 0, 0, 1};
+  float col[12] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+  if (bad == "POSITION") pos[3] = value;
+  if (bad == "NORMAL") nrm[3] = value;
+  if (bad == "TEXCOORD_0") uv[2] = value;
+  if (bad == "COLOR_0") col[4] = value;
+  std::string bin(reinterpret_cast<const char*>(pos), sizeof pos);
+  bin.append(reinterpret_cast<const char*>(nrm), sizeof nrm);
+  bin.append(reinterpret_cast<const char*>(uv), sizeof uv);
+  bin.append(reinterpret_cast<const char*>(col), sizeof col);
+  const uint16_t idx[4] = {0, 1, 2, 0};
+  bin.append(reinterpret_cast<const char*>(idx), sizeof idx);
+  const std::string json = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+    "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0,
+    "NORMAL": 1, "TEXCOORD_0": 2, "COLOR_0": 3}, "indices": 4}]}],
+    "accessors": [
+      {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+      {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"},
+      {"bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC2"},
+      {"bufferView": 3, "componentType": 5126, "count": 3, "type": "VEC4"},
+      {"bufferView": 4, "componentType": 5123, "count": 3, "type": "SCALAR"}],
+    "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
+      {"buffer": 0, "byteOffset": 36, "byteLength": 36},
+      {"buffer": 0, "byteOffset": 72, "byteLength": 24},
+      {"buffer": 0, "byteOffset": 96, "byteLength": 48},
+      {"buffer": 0, "byteOffset": 144, "byteLength": 6}],
+    "buffers": [{"byteLength": 152}]})";
+  return Glb(json, bin);
+}
+
+// Issue 34: NaN and infinite normals, UVs and colours were read into the mesh (only positions
+// were checked); each is refused naming its primitive, attribute and vertex.
+TEST(GltfHostile, NonFiniteAttributesAreRefusedNamingTheAttribute) {
+  EXPECT_EQ(LineOf(AttributedTriangle("", 0)), "(read 1 triangles)");
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  for (const char* attribute : {"POSITION", "NORMAL", "TEXCOORD_0", "COLOR_0"}) {
+    for (const float value : {nan, inf, -inf}) {
+      EXPECT_EQ(
+          LineOf(AttributedTriangle(attribute, value)),
+          std::string("hostile.glb: mesh 0 primitive 0 ") + attribute + " 1 is NaN or infinite")
+          << attribute << " " << value;
+    }
+  }
+}
+
+// A Draco header (bitstream 2.2, triangular mesh) declaring `points` and `faces`, then zeros.
+std::string DracoHeader(int method, uint64_t points, uint64_t faces) {
+  std::string h = "DRACO";
+  h += std::string{'\x02', '\x02', '\x01', static_cast<char>(method), '\0', '\0'};
+  auto varint = [&](uint64_t v) {
+    do {
+      const uint8_t c = static_cast<uint8_t>(v & 0x7f);
+      v >>= 7;
+      h.push_back(static_cast<char>(v != 0 ? c | 0x80 : c));
+    } while (v != 0);
+  };
+  if (method == 1) {
+    h.push_back('\0');  // traversal decoder type
+    varint(points);
+    varint(faces);
+  } else {
+    varint(faces);
+    varint(points);
+  }
+  return h + std::string(32, '\0');
+}
+
+// The base triangle (its plain accessors as the fallback) with a Draco primitive in view 2.
+std::string DracoGlb(const std::string& draco) {
+  std::string bin = TriangleBin() + draco;
+  while (bin.size() % 4 != 0) bin.push_back('\0');
+  Parts p;
+  p.views = R"([{"buffer": 0, "byteOffset": 0, "byteLength": 36},
+                {"buffer": 0, "byteOffset": 36, "byteLength": 6},
+                {"buffer": 0, "byteOffset": 44, "byteLength": )" +
+            std::to_string(draco.size()) + "}]";
+  p.buffer_length = std::to_string(bin.size());
+  p.primitive_extra = R"(, "extensions": {"KHR_draco_mesh_compression": {"bufferView": 2,
+                         "attributes": {"POSITION": 0}}})";
+  p.extra_members = R"(, "extensionsUsed": ["KHR_draco_mesh_compression"])";
+  return Glb(Json(p), bin);
+}
+
+// Issue 34: a Draco buffer declaring far more points or faces than the reader's limits is refused
+// from its header before the decoder sizes anything (both encodings; the same on every build, as
+// the preflight is plain C++). Counts within the limits but beyond the bytes are Draco's own
+// refusal (1.5.5 checks them against the buffer: 2^28 faces in 45 bytes peak at 6 MB).
+TEST(GltfHostile, DracoCountsBeyondTheLimitsAreRefusedFromTheHeader) {
+  for (const int method : {0, 1}) {
+    EXPECT_TRUE(PreflightDracoHeader(DracoHeader(method, 3, 1), "m").ok());
+    EXPECT_TRUE(
+        PreflightDracoHeader(DracoHeader(method, kMaxMeshVertices, kMaxMeshTriangles), "m").ok());
+    EXPECT_EQ(PreflightDracoHeader(DracoHeader(method, 49, uint64_t{1} << 28), "m").message(),
+              "m: the Draco data declares 49 vertices and 268435456 triangles; the limits are "
+              "12000000 and 4000000");
+    EXPECT_EQ(PreflightDracoHeader(DracoHeader(method, 0xffffffffu, 1), "m").message(),
+              "m: the Draco data declares 4294967295 vertices and 1 triangles; the limits are "
+              "12000000 and 4000000");
+  }
+  // Not a 2.2 mesh header, or too short to say: left to the decoder.
+  EXPECT_TRUE(PreflightDracoHeader("DRACO", "m").ok());
+  EXPECT_TRUE(PreflightDracoHeader(DracoHeader(1, 1, 1).substr(0, 13) + "\xff\xff", "m").ok());
+  // Whole files: natively the header's line; a build without Draco reads the plain fallback.
+  const std::string huge = LineOf(DracoGlb(DracoHeader(1, 49, uint64_t{1} << 28)));
+  const std::string beyond = LineOf(DracoGlb(DracoHeader(0, 9000000, 3000000)));
+  if (GltfReaderDecodesDraco()) {
+    EXPECT_EQ(huge,
+              "hostile.glb: mesh 0 primitive 0: the Draco data declares 49 vertices and 268435456 "
+              "triangles; the limits are 12000000 and 4000000");
+    EXPECT_EQ(beyond,
+              "hostile.glb: mesh 0 primitive 0: Draco cannot decode it (Failed to decode geometry "
+              "data.)");
+  } else {
+    EXPECT_EQ(huge, "(read 1 triangles)");
+    EXPECT_EQ(beyond, "(read 1 triangles)");
+  }
 }
 
 }  // namespace

@@ -230,6 +230,37 @@ TEST(IvyRun, ABudgetRefusalComesBeforeWorkAndNamesItsField) {
   EXPECT_FALSE(run->ExportEstimate("png").ok());
 }
 
+// Issue 34: --steps 10000 on cubes4 with a .glb planned was refused only at step 389, after
+// 139,222 buds (11-14 s on a loaded host): the quarter-growth checks can only refuse once the buds
+// made prove it. The export is now projected to the last step as the buds grow by 5 %
+// (ProjectIvyBuds), a lower estimate (the ivy grows faster than linearly), and refused naming
+// `steps` within the first steps; a run whose planned export fits is not refused, and its bytes
+// are the unplanned run's.
+TEST(IvyRun, APlannedExportIsProjectedToTheLastStepAndRefusedEarlyNamingSteps) {
+  IvyRunOptions planned;
+  planned.planned_export = "glb";
+  Result<IvyRun> big =
+      IvyRun::Start(Steps(10000), Prepared(IvySupportInput::Scene("cubes4")), Budget{}, planned);
+  ASSERT_TRUE(big.ok()) << big.status().Line();
+  const Status refused = big->Advance({});
+  EXPECT_EQ(refused.field(), "steps") << refused.Line();
+  int at = 0;
+  ASSERT_EQ(std::sscanf(refused.message().c_str(), "at step %d of 10000: growing on to about", &at),
+            1)
+      << refused.Line();
+  EXPECT_LT(at, 300) << refused.Line();  // the buds' check alone refused at step 389
+  EXPECT_NE(refused.message().find("writing the .glb needs about"), std::string::npos)
+      << refused.Line();
+  // A run that fits: the same export bytes with and without the plan.
+  IvyRun fits = Started(Steps(200), Prepared(IvySupportInput::Scene("cubes4")), planned);
+  ASSERT_TRUE(fits.Advance({}).ok());
+  IvyRun plain = Started(Steps(200), Prepared(IvySupportInput::Scene("cubes4")));
+  ASSERT_TRUE(plain.Advance({}).ok());
+  Result<std::string> a = fits.Export("glb", {}), b = plain.Export("glb", {});
+  ASSERT_TRUE(a.ok() && b.ok());
+  EXPECT_EQ(*a, *b);
+}
+
 TEST(IvyRun, ExportsAreTheCliBytesAndTheHashTakesAPrefix) {
   auto support = Prepared(IvySupportInput::Scene("stairs"));
   IvyState state = Steps(25);

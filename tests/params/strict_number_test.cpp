@@ -14,7 +14,11 @@ namespace niwa {
 namespace {
 
 TEST(StrictNumber, DecimalOnly) {
-  EXPECT_EQ(ParseDecimal("010"), 10.0);  // leading zeros are decimal, never octal
+  EXPECT_EQ(ParseDecimal("0"), 0.0);
+  EXPECT_EQ(ParseDecimal("-0"), 0.0);
+  EXPECT_EQ(ParseDecimal("0.5"), 0.5);
+  EXPECT_EQ(ParseDecimal("10"), 10.0);
+  EXPECT_EQ(ParseDecimal("1e-05"), 1e-5);  // printf's exponent keeps its zero
   EXPECT_EQ(ParseDecimal("+5"), 5.0);
   EXPECT_EQ(ParseDecimal("-0.5"), -0.5);
   EXPECT_EQ(ParseDecimal(".5"), 0.5);
@@ -22,9 +26,10 @@ TEST(StrictNumber, DecimalOnly) {
   EXPECT_EQ(ParseDecimal("1e3"), 1000.0);
   EXPECT_EQ(ParseDecimal("1E-3"), 0.001);
   for (const char* bad :
-       {"",         " ",  "0x10", "0X1p3", "0x1p3", "1p3",   "inf",    "-inf",  "nan", "NaN",
-        "infinity", "1e", "1e+",  "e5",    ".",     "+",     "-",      "--5",   "+-5", "1.2.3",
-        " 5",       "5 ", "5\n",  "5,0",   "1_000", "1e400", "-1e400", "0b101", "\x1b"}) {
+       {"",      " ",        "0x10", "0X1p3", "0x1p3", "1p3", "inf",   "-inf",  "nan",
+        "NaN",   "infinity", "1e",   "1e+",   "e5",    ".",   "+",     "-",     "--5",
+        "+-5",   "1.2.3",    " 5",   "5 ",    "5\n",   "5,0", "1_000", "1e400", "-1e400",
+        "0b101", "\x1b",     "010",  "-01",   "+007",  "00",  "00.5",  "-00.5", "0010e2"}) {
     EXPECT_FALSE(ParseDecimal(bad).has_value()) << bad;
   }
   EXPECT_FALSE(ParseDecimal(std::string(kMaxNumberText + 1, '1')).has_value());  // refused, not cut
@@ -34,7 +39,7 @@ TEST(StrictNumber, DecimalOnly) {
 // The twin: the grammar written as a regex; random strings over the number alphabet (plus a few
 // hostile characters) must be accepted by both or by neither, and accepted ones must be finite.
 TEST(StrictNumber, MatchesItsRegexTwinOnRandomText) {
-  const std::regex grammar(R"([+-]?([0-9]+(\.[0-9]*)?|\.[0-9]+)([eE][+-]?[0-9]+)?)");
+  const std::regex grammar(R"([+-]?((0|[1-9][0-9]*)(\.[0-9]*)?|\.[0-9]+)([eE][+-]?[0-9]+)?)");
   const std::string alphabet = "0123456789+-.eE x";
   Pcg32 rng(16, 4);
   int accepted = 0;
@@ -65,6 +70,12 @@ TEST(StrictNumber, ErrorsNameTheFieldAndTheRange) {
             "--years: empty; must be a whole number in [0, 100]");
   EXPECT_EQ(ParseStrictNumber("--years", "0x10", 0, 100, true).status().Line(),
             "--years: '0x10' is not a decimal number; must be a whole number in [0, 100]");
+  // Issue 34: "010" was read as ten; it is refused as octal-looking, naming field and range.
+  EXPECT_EQ(ParseStrictNumber("res", "010", 8, 4096, true).status().Line(),
+            "res: '010' has a leading zero (octal in some tools); must be a whole number in [8, "
+            "4096]");
+  EXPECT_EQ(ParseStrictNumber("d", "-01", -5, 5, false).status().Line(),
+            "d: '-01' has a leading zero (octal in some tools); must be a number in [-5, 5]");
   EXPECT_EQ(ParseStrictNumber("--years", "101", 0, 100, true).status().Line(),
             "--years: 101 is out of range; must be a whole number in [0, 100]");
   EXPECT_EQ(

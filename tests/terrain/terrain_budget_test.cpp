@@ -212,32 +212,61 @@ Ring Comb(int teeth) {
   return r;
 }
 
-// Issue 34: a comb of 100 k teeth ran past 60 s. Its shape is refused before any shrink (the
-// sweep's count of the seed is a lower bound of the shrink's: docs/budgets.md), naming the
-// contour; a smaller comb whose shrink still passes the budget stops at the counted edge tests.
-TEST(TerrainBudget, CombsAreRefusedByTheirShapeOrStoppedByTheSweepCount) {
+// A square spiral of `turns` turns 1 m apart: long edges, each across many cells of the union's
+// grid (ray_windings.h's worst case, n·√n).
+Ring Spiral(int turns) {
+  Ring r;
+  for (int k = 0; k < turns; ++k) {
+    const double a = 2.0 * k, b = a + 1;
+    r.push_back({-b, -b});
+    r.push_back({b + 1, -b});
+    r.push_back({b + 1, b + 1});
+    r.push_back({-b - 1, b + 1});
+  }
+  // Back along the outside of the last turn to the start, one metre out.
+  const double z = 2.0 * turns + 2;
+  r.push_back({-z, -z + 1});
+  r.push_back({-z, z + 1});
+  r.push_back({z + 1, z + 1});
+  r.push_back({z + 1, -z});
+  r.push_back({-1, -z});
+  return r;
+}
+
+// Issue 34: a comb of 1,000 teeth made 816 M edge tests in its first shrink (5.7-11 s), 10,000
+// teeth were refused after 25 s and 100,000 ran past 60 s. The union's windings now come from a
+// grid (ray_windings.h): the 1,000-tooth comb grows under a 5 s budget (before: stopped), the
+// estimate of a comb is linear in its teeth (was 120 G for 100,000), and a comb whose offset path
+// crosses itself millions of times is stopped by the counted split points, naming the contour.
+TEST(TerrainBudget, CombsShrinkInLinearWorkOrStopAtTheirCountedSplits) {
   Budget budget;  // the CLI's defaults: 2 GB, 60 s
-  const Ring big = Comb(100000);
-  EXPECT_GT(ShrinkSweepTests(big), 1e10);
-  const Status refused = CheckSeedShape(big, budget);
-  EXPECT_EQ(refused.field(), "contour");
-  EXPECT_NE(refused.message().find("as a comb's teeth"), std::string::npos) << refused.Line();
-  // The builtins are far from it.
+  EXPECT_LT(ShrinkSweepTests(Comb(100000)), 1e8);
+  EXPECT_TRUE(CheckSeedShape(Comb(100000), budget).ok());
   for (const SeedInfo& info : BuiltinSeeds()) {
     EXPECT_LT(ShrinkSweepTests(*BuiltinSeed(info.name)), 1e5) << info.name;
     EXPECT_TRUE(CheckSeedShape(*BuiltinSeed(info.name), budget).ok()) << info.name;
   }
-  // 1,000 teeth pass the shape check; a tight time budget stops the seed's first shrink at its
-  // counted tests, and the seed is refused (nothing could grow).
   const TerrainParams p = For("improved", 20);
-  EXPECT_TRUE(CheckSeedShape(Comb(1000), budget).ok());
   TerrainGrowLimits limits = Unlimited(p);
-  limits.max_seconds = 1;
-  Result<Terrain> t = Grow(Comb(1000), p, kDefaultTerrainSeed, &limits);
-  ASSERT_FALSE(t.ok());
-  EXPECT_EQ(t.status().field(), "contour");
-  EXPECT_NE(t.status().message().find("edge tests of its union sweep"), std::string::npos)
-      << t.status().Line();
+  limits.max_seconds = 5;
+  Result<Terrain> comb = Grow(Comb(1000), p, kDefaultTerrainSeed, &limits);
+  ASSERT_TRUE(comb.ok()) << comb.status().Line();
+  EXPECT_LT(comb->counts.sweep_tests, 1e8);
+  Result<Terrain> big = Grow(Comb(30000), p, kDefaultTerrainSeed, &limits);
+  ASSERT_FALSE(big.ok());
+  EXPECT_EQ(big.status().field(), "contour");
+  EXPECT_NE(big.status().message().find("edge tests of its union sweep"), std::string::npos)
+      << big.status().Line();
+  // A spiral's long edges cross many cells: its estimate grows as n·√n and a tight budget
+  // refuses it up front.
+  const Ring spiral = Spiral(3000);
+  const double tests = ShrinkSweepTests(spiral);
+  EXPECT_GT(tests, 20.0 * static_cast<double>(spiral.size()));
+  Budget tight;
+  tight.seconds = 30e-9 * tests / 2;
+  const Status refused = CheckSeedShape(spiral, tight);
+  EXPECT_EQ(refused.field(), "contour");
+  EXPECT_NE(refused.message().find("as a comb's teeth"), std::string::npos) << refused.Line();
 }
 
 // Issue 34: terrain compare on a DEM of 0.0007 m cells under d = 70 m made the peak search's
