@@ -45,10 +45,18 @@ bool MatchesGrammar(std::string_view text) {
 
 }  // namespace
 
+// A number the grammar would take but for its leading zeros ("010", "-01", "00.5"); "010x" is not
+// a number at all and says so.
 bool HasLeadingZero(std::string_view text) {
   std::size_t i = 0;
   if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
-  return Digits(text, i) > 1 && text[i] == '0';
+  const std::size_t whole = Digits(text, i);
+  if (whole <= 1 || text[i] != '0') return false;
+  std::size_t first = i;  // the first digit kept: the leading zeros dropped, one digit left at least
+  while (first + 1 < i + whole && text[first] == '0') ++first;
+  std::string rest(text.substr(0, i));
+  rest += text.substr(first);
+  return MatchesGrammar(rest);
 }
 
 std::string NotDecimalWhy(std::string_view text) {

@@ -70,6 +70,9 @@ TEST(StrictNumber, ErrorsNameTheFieldAndTheRange) {
             "--years: empty; must be a whole number in [0, 100]");
   EXPECT_EQ(ParseStrictNumber("--years", "0x10", 0, 100, true).status().Line(),
             "--years: '0x10' is not a decimal number; must be a whole number in [0, 100]");
+  // Not a number with or without its zeros: said so, not "leading zero" (tests/cli/strict_input).
+  EXPECT_EQ(ParseStrictNumber("steps", "010x", 0, 10000, true).status().Line(),
+            "steps: '010x' is not a decimal number; must be a whole number in [0, 10000]");
   // Issue 34: "010" was read as ten; it is refused as octal-looking, naming field and range.
   EXPECT_EQ(ParseStrictNumber("res", "010", 8, 4096, true).status().Line(),
             "res: '010' has a leading zero (octal in some tools); must be a whole number in [8, "
