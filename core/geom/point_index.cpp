@@ -45,7 +45,7 @@ using Tree =
                                         3, uint32_t>;
 
 }  // namespace point_index_detail
-using namespace point_index_detail;  // NOLINT: this file's own helpers
+using namespace point_index_detail;  // this file's own helpers
 
 struct PointIndex::Impl {
   std::vector<glm::dvec3> points;

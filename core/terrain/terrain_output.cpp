@@ -12,22 +12,10 @@
 namespace niwa::terrain {
 namespace {
 
-struct Box {
-  double x0, y0, x1, y1;
-};
-
-Box RootBox(const Terrain& t) {
-  Box b{0, 0, 0, 0};
-  if (t.contours.empty() || t.contours[0].ring.empty()) return b;
-  const Ring& r = t.contours[0].ring;
-  b = {r[0].x, r[0].y, r[0].x, r[0].y};
-  for (const Vec2& v : r) {
-    b.x0 = std::min(b.x0, v.x);
-    b.y0 = std::min(b.y0, v.y);
-    b.x1 = std::max(b.x1, v.x);
-    b.y1 = std::max(b.y1, v.y);
-  }
-  return b;
+// The root contour's box (contour.h BoundsOf); all zeros for a terrain without contours.
+RingBox RootBox(const Terrain& t) {
+  if (t.contours.empty() || t.contours[0].ring.empty()) return {0, 0, 0, 0};
+  return BoundsOf(t.contours[0].ring);
 }
 
 double TopElevation(const Terrain& t) {
@@ -205,7 +193,7 @@ std::string TerrainToGeoJson(const Terrain& t) {
 }
 
 std::string TerrainToSvg(const Terrain& t) {
-  const Box b = RootBox(t);
+  const RingBox b = RootBox(t);
   const double span = std::max({b.x1 - b.x0, b.y1 - b.y0, 1e-9});
   const double margin = span * 0.02;
   const double size = 800;  // px along the longer side

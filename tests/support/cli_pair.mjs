@@ -35,11 +35,10 @@ export function requireWasm() {
 // long loops gain from it: ivy_tests 50 s against 62 s liftoff-only).
 const nodeFlags = (process.env.NIWA_WASM_NODE_FLAGS ?? '--liftoff-only').split(' ').filter(Boolean);
 export const cliArgv = (cmd, args) => (cmd.endsWith('.js') ? ['node', [...nodeFlags, cmd, ...args]] : [cmd, args]);
-const argv = cliArgv;
 // stdout of a successful run (throws on a non-zero exit).
-export const run = (cmd, args) => execFileSync(...argv(cmd, args), { encoding: 'utf8' });
+export const run = (cmd, args) => execFileSync(...cliArgv(cmd, args), { encoding: 'utf8' });
 // {status, stdout, stderr} of any run.
-export const spawn = (cmd, args) => spawnSync(...argv(cmd, args), { encoding: 'utf8' });
+export const spawn = (cmd, args) => spawnSync(...cliArgv(cmd, args), { encoding: 'utf8' });
 export const buildName = (cmd) => (cmd.endsWith('.js') ? 'wasm' : 'native');
 // A --stats object without its timing fields (ms, ms_*), which differ run to run.
 export const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => !k.startsWith('ms')));
