@@ -83,7 +83,7 @@ void ForEachPiece(const Grid& g, const RayEdge& e, std::size_t index, F&& f) {
 }  // namespace
 
 double RayWindings(const std::vector<RayEdge>& edges, const std::vector<IPoint>& points,
-                   double max_work, std::vector<int>* out) {
+                   double max_work, std::vector<int>* out, RayWindingsFill fill) {
   if (points.empty()) return 0;
   if (edges.empty()) {
     if (out != nullptr) out->assign(points.size(), 0);
@@ -93,11 +93,13 @@ double RayWindings(const std::vector<RayEdge>& edges, const std::vector<IPoint>&
   auto over = [&](double work) { return max_work >= 0 && work > max_work; };
   // Count pass: pieces and cell entries, then each point's exact tests (its cell's entries).
   std::vector<uint32_t> entries(static_cast<std::size_t>(g.rows * g.cols) + 1, 0);
+  std::vector<std::size_t> row_at(static_cast<std::size_t>(g.rows) + 1, 0);  // pieces a row
   double work = static_cast<double>(points.size());
   std::size_t pieces = 0;
   for (std::size_t i = 0; i < edges.size(); ++i) {
     ForEachPiece(g, edges[i], i, [&](const Piece&, const PieceCols& pc, int64_t row) {
       ++pieces;
+      ++row_at[static_cast<std::size_t>(row) + 1];
       work += 1 + static_cast<double>(pc.c1 - pc.c0 + 1);
       if (over(work)) return;
       for (int64_t c = pc.c0; c <= pc.c1; ++c) ++entries[g.Cell(row, c)];
@@ -106,6 +108,35 @@ double RayWindings(const std::vector<RayEdge>& edges, const std::vector<IPoint>&
   }
   for (const IPoint& p : points) work += entries[g.Cell(g.Row(p.y), g.Col(p.x))];
   if (out == nullptr || over(work)) return work;
+  // The row scan: each point tests the pieces of its row exactly (an edge crossing a point's ray
+  // has a piece in the point's row), chosen when that is at most kRowScanFactor times the work.
+  constexpr double kRowScanFactor = 4;
+  double row_tests = 0;
+  for (const IPoint& p : points)
+    row_tests += static_cast<double>(row_at[static_cast<std::size_t>(g.Row(p.y)) + 1]);
+  if (fill == RayWindingsFill::kRows ||
+      (fill == RayWindingsFill::kAuto && row_tests <= kRowScanFactor * work)) {
+    std::vector<uint32_t>().swap(entries);  // the cells are not needed by the row scan
+    for (std::size_t r = 0; r + 1 < row_at.size(); ++r) row_at[r + 1] += row_at[r];
+    std::vector<uint32_t> by_row(pieces);
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      ForEachPiece(g, edges[i], i, [&](const Piece&, const PieceCols&, int64_t row) {
+        by_row[row_at[static_cast<std::size_t>(row)]++] = static_cast<uint32_t>(i);
+      });  // row_at[r] is now row r's end, row_at[r - 1] its start
+    out->assign(points.size(), 0);
+    for (std::size_t q = 0; q < points.size(); ++q) {
+      const IPoint& p = points[q];
+      const std::size_t r = static_cast<std::size_t>(g.Row(p.y));
+      int64_t w = 0;
+      for (std::size_t m = r == 0 ? 0 : row_at[r - 1]; m < row_at[r]; ++m) {
+        const RayEdge& e = edges[by_row[m]];
+        if (Crosses(e, p)) w += e.weight;
+      }
+      (*out)[q] = static_cast<int>(w);
+    }
+    return work;
+  }
+  std::vector<std::size_t>().swap(row_at);
   // The cells' lists (compressed rows: `entries` becomes each cell's end, then, filled backwards,
   // its start) and the pieces by first column.
   for (std::size_t k = 1; k < entries.size(); ++k) entries[k] += entries[k - 1];

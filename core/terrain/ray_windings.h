@@ -31,11 +31,19 @@ struct RayEdge {
   int weight = 0;
 };
 
+// How the sums are filled once the work is counted: kAuto takes the row scan when its exact tests
+// (each point against the pieces of its row: the strips of the sweep before the grid) are at most
+// a few times the counted work, as for the seeds people draw, and the column sweep with the
+// Fenwick tree otherwise (combs: rows crowded with teeth). Both give the brute force's integers;
+// the returned work is the count pass's either way, so budgets do not depend on the choice.
+enum class RayWindingsFill { kAuto, kRows, kColumns };
+
 // Fills (*out)[k] with the winding sum at points[k] and returns the work done (see above). When
 // max_work >= 0 and the counted work passes it, returns that count at once (> max_work) with *out
 // unfilled. With out == nullptr only counts (the estimate of terrain_budget's ShrinkSweepTests).
 double RayWindings(const std::vector<RayEdge>& edges, const std::vector<IPoint>& points,
-                   double max_work, std::vector<int>* out);
+                   double max_work, std::vector<int>* out,
+                   RayWindingsFill fill = RayWindingsFill::kAuto);
 
 // The same sums by testing every edge against every point (the test twin).
 std::vector<int> RayWindingsBruteForce(const std::vector<RayEdge>& edges,

@@ -56,9 +56,13 @@ TEST(RayWindings, EqualsTheBruteForceOnRandomSoups) {
       points.push_back(e.lo);
       points.push_back({(e.lo.x + e.hi.x) / 2, (e.lo.y + e.hi.y) / 2});  // even: on the edge
     }
-    std::vector<int> got;
-    RayWindings(edges, points, -1, &got);
-    EXPECT_EQ(got, RayWindingsBruteForce(edges, points)) << "trial " << trial;
+    const std::vector<int> brute = RayWindingsBruteForce(edges, points);
+    for (RayWindingsFill fill :
+         {RayWindingsFill::kAuto, RayWindingsFill::kRows, RayWindingsFill::kColumns}) {
+      std::vector<int> got;
+      RayWindings(edges, points, -1, &got, fill);
+      EXPECT_EQ(got, brute) << "trial " << trial << " fill " << static_cast<int>(fill);
+    }
   }
 }
 
@@ -82,10 +86,15 @@ TEST(RayWindings, EqualsTheBruteForceOnACombAndASpiral) {
   for (const std::vector<IPoint>* ring : {&comb, &spiral}) {
     const std::vector<RayEdge> edges = Edges(*ring);
     const std::vector<IPoint> points = Midpoints(*ring);
-    std::vector<int> got;
-    const double work = RayWindings(edges, points, -1, &got);
-    EXPECT_EQ(got, RayWindingsBruteForce(edges, points));
-    EXPECT_EQ(work, RayWindings(edges, points, -1, nullptr));  // counting alone: the same work
+    const std::vector<int> brute = RayWindingsBruteForce(edges, points);
+    const double work = RayWindings(edges, points, -1, nullptr);
+    for (RayWindingsFill fill :
+         {RayWindingsFill::kAuto, RayWindingsFill::kRows, RayWindingsFill::kColumns}) {
+      std::vector<int> got;
+      // Either fill returns the count pass's work: budgets do not depend on the choice.
+      EXPECT_EQ(work, RayWindings(edges, points, -1, &got, fill));
+      EXPECT_EQ(got, brute) << "fill " << static_cast<int>(fill);
+    }
     // A limit below the work stops with the count, the sums unfilled.
     std::vector<int> none;
     EXPECT_GT(RayWindings(edges, points, work / 2, &none), work / 2);
