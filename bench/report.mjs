@@ -2,11 +2,13 @@
 //
 // node bench/report.mjs --native N1.jsonl[,N2.jsonl...] --wasm W1.jsonl[,...] [--peer P1.jsonl[,...]]
 //                       [--gbench G.txt] [--grove GR.jsonl] [--terrain-page T1.jsonl[,...]]
-//                       [--worker WK.jsonl] [--meta META.json] [--record docs/BENCHMARKS.md]
+//                       [--worker WK.jsonl] [--page-timings PT.jsonl] [--meta META.json]
+//                       [--record docs/BENCHMARKS.md]
 // N/W/P hold one JSON object per line as printed by niwa_bench_runner / ez_tree_peer.mjs /
 // fastnoise_peer.mjs, one file per run (process): each workload keeps its fastest run, and the table
 // lists every run's time. GR the lines of bench/grove.mjs (one per mode); T the lines of
-// bench/terrain_page.mjs (the page's 512² regrow); WK those of bench/worker_first_grow.mjs; META holds {date, machine, cpu, cores, tools, load,
+// bench/terrain_page.mjs (the page's 512² regrow); WK those of bench/worker_first_grow.mjs; PT the page's
+// answer times of the browser tests (harness.mjs timedCheck); META holds {date, machine, cpu, cores, tools, load,
 // command, seconds}.
 import {readFileSync, writeFileSync, existsSync} from 'node:fs';
 
@@ -155,6 +157,11 @@ if (worker.length) {
          `${fmt(page.first_grow_ms)} ms vs ${fmt(coldNative)} ms: ${(page.first_grow_ms / coldNative).toFixed(2)}×`,
          page.first_grow_ms <= 2 * coldNative);
   }
+}
+// The page's answer times (tests/browser/*.test.mjs through harness.mjs timedCheck with NIWA_TIMED=1):
+// each a goal row, the slowest of its runs.
+for (const r of readLines(args['page-timings'])) {
+  goal(`page (${r.test}): ${r.name} under ${r.target_ms} ms`, `${fmt(r.ms)} ms`, r.ms < r.target_ms);
 }
 // Sway (thesis ch. 3, issue 6): one dynamics step plus the eq. 3.15 node positions per internode.
 const perUnit = (r) => (r ? r.ns_per_unit ?? (r.units ? (r.ms * 1e6) / r.units : undefined) : undefined);

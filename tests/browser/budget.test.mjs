@@ -24,11 +24,12 @@
 //    budget) has its overlap sweep checked against EstimateIvyStats as the CLI does; when it does
 //    not fit, the sweep is left out with the line as a notice (overlap_pairs null), else measured.
 // NIWA_BUDGET_PARTS=1,2,3,4,5,6 (any of them) runs only those parts; all by default.
-// scripts/test: solo (it times the page's answers, so it runs alone, not beside another browser test).
+// Its answer times are speed goals (harness.mjs timedCheck): checked by scripts/bench with NIWA_TIMED=1,
+// guarded only against a hang here.
 import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
-import { ARTIFACTS, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, waitReady, watchPage } from './harness.mjs';
+import { ARTIFACTS, ROOT, TIMEOUT, check, newContext, runBrowserTest, timedCheck, saveCanvasPng, waitReady, watchPage } from './harness.mjs';
 
 const problems = [];
 const hooks = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
@@ -129,9 +130,9 @@ await runBrowserTest(async (server, browser) => {
     }
     const gap = await heartbeatGap(page);
     const worst = Math.max(...clicks);
-    check('100 years: every click answered within 1 s while growing and after', worst < 1000,
+    timedCheck('100 years: the slowest click while growing and after', worst, 1000,
       `${clicks.length} clicks, slowest ${worst} ms`);
-    check('100 years: the main thread never stalled 1 s', gap < 1000, `longest heartbeat gap ${gap.toFixed(0)} ms`);
+    timedCheck('100 years: the longest main-thread stall (heartbeat gap)', gap, 1000, `longest heartbeat gap ${gap.toFixed(0)} ms`);
     d = await hooks(page);
     const progress = await page.textContent('#progress');
     check('100 years: a tree, stopped at the page budget and named', d.status === 'ready' && Number(d.internodes) > 0 &&
@@ -286,14 +287,14 @@ await runBrowserTest(async (server, browser) => {
       Number(document.getElementById('grow-progress').value) >= 3, null, { timeout: TIMEOUT, polling: 50 });
     await startHeartbeat(page);
     const ms = await timedClick(page, '#cancel');
-    check('Cancel answers within 1 s', ms < 1000, `${ms} ms`);
+    timedCheck('Cancel: its click answered', ms, 1000, `${ms} ms`);
     await waitReady(page, Number(good.treeSerial), 100);
     const after = await hooks(page);
     check('Cancel brings back the last finished tree', after.internodes === good.internodes &&
       (await page.inputValue('#years')) === '8' && after.cancels === '1',
       `internodes ${good.internodes} -> ${after.internodes}, years ${await page.inputValue('#years')}, cancels ${after.cancels}`);
     check('Cancel: no error notice', !(await page.isVisible('#notice')), (await page.textContent('#notice')).trim());
-    check('Cancel: the page stayed responsive', (await heartbeatGap(page)) < 1000, `${(await heartbeatGap(page)).toFixed(0)} ms`);
+    timedCheck('Cancel: the longest main-thread stall (heartbeat gap)', await heartbeatGap(page), 1000);
     // The fresh worker works: another edit grows.
     await page.fill('#years', '6');
     await waitReady(page, Number(after.treeSerial), 100);

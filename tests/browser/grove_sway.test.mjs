@@ -3,9 +3,10 @@
 // on the GPU) in hybrid and full mode; two instances of one unique tree far apart along the wind are
 // at different phases with a travelling gust front and wave, and identical without them; Still
 // restores the rest image exactly. Screenshots: build/artifacts/grove-wind*.png.
-// scripts/test: solo (it times the page's answers, so it runs alone, not beside another browser test).
+// Its answer times are speed goals (harness.mjs timedCheck): checked by scripts/bench with NIWA_TIMED=1,
+// guarded only against a hang here.
 import path from 'node:path';
-import { ARTIFACTS, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, snapshotCanvas, snapshotDifference, waitGroveDrawn, watchPage } from './harness.mjs';
+import { ARTIFACTS, TIMEOUT, check, newContext, runBrowserTest, timedCheck, saveCanvasPng, snapshotCanvas, snapshotDifference, waitGroveDrawn, watchPage } from './harness.mjs';
 
 const problems = [];
 const data = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
@@ -89,7 +90,7 @@ await runBrowserTest(async (server, browser) => {
   await page.waitForFunction(() => document.getElementById('wind').getAttribute('aria-pressed') === 'false',
     null, { timeout: TIMEOUT, polling: 50 });
   const answerMs = Date.now() - clicked;
-  check('Still answers within 2 s of the click while full-mode frames are slow', answerMs < 2000, `${answerMs} ms`);
+  timedCheck('Still: its click answered while full-mode frames are slow', answerMs, 2000, `${answerMs} ms`);
   serial = Number((await data(page)).frameSerial);  // frames from here on are drawn at rest
   await page.evaluate(() => window.grove.requestFrame());
   await page.waitForFunction((n) => Number(document.documentElement.dataset.frameSerial) > n, serial, { timeout: TIMEOUT, polling: 100 });

@@ -22,6 +22,27 @@ export function check(name, ok, detail = '') {
   console.log(`${pass ? 'PASS' : 'FAIL'} ${name}${detail ? ` — ${detail}` : ''}${why}`);
 }
 
+// Page answer times (a click answered within 1 s, no main-thread task over 200 ms) are speed goals,
+// and speed goals are met in benchmarks, not in timed tests (the brief). Under scripts/test a timed
+// check guards only against a hang (HANG_MS) and prints the time; `scripts/bench` runs the tests that
+// use it one at a time with NIWA_TIMED=1, where the target itself is checked and each time is added
+// to build/artifacts/bench/page-timings.jsonl for docs/BENCHMARKS.md's speed goals.
+export const TIMED = process.env.NIWA_TIMED === '1';
+export const HANG_MS = 30_000;
+export function timedCheck(name, ms, targetMs, detail = '') {
+  if (TIMED) {
+    const dir = path.join(ARTIFACTS, 'bench');
+    fs.mkdirSync(dir, { recursive: true });
+    const test = path.basename(process.argv[1] || '', '.test.mjs');
+    fs.appendFileSync(path.join(dir, 'page-timings.jsonl'),
+      `${JSON.stringify({ test, name, ms: Number(ms), target_ms: targetMs, detail })}\n`);
+    check(`${name} (under ${targetMs} ms)`, ms < targetMs, detail);
+  } else {
+    check(`${name}: answered (hang guard ${HANG_MS / 1000} s; the ${targetMs} ms goal is scripts/bench's)`,
+      ms < HANG_MS, `${Number(ms).toFixed(0)} ms; ${detail}`);
+  }
+}
+
 // Prints the closing "N passed, N failed" line and exits 0 only when nothing failed.
 export function finish() {
   console.log(`${counts.passed} passed, ${counts.failed} failed`);

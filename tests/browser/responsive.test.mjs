@@ -6,9 +6,10 @@
 // PerformanceObserver('longtask'). Also: the ivy and terrain pages' Cancel (back to the last
 // finished result) and their page budgets (a truncated ivy, a refused terrain res, named).
 // The numbers are printed and copied into docs/budgets.md ("Responsiveness").
-// scripts/test: solo (it times the page's answers, so it runs alone, not beside another browser test).
+// Its answer times are speed goals (harness.mjs timedCheck): checked by scripts/bench with NIWA_TIMED=1,
+// guarded only against a hang here.
 import path from 'node:path';
-import { ARTIFACTS, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, waitReady, watchPage } from './harness.mjs';
+import { ARTIFACTS, TIMEOUT, check, newContext, runBrowserTest, timedCheck, saveCanvasPng, waitReady, watchPage } from './harness.mjs';
 
 const problems = [];
 const hooks = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
@@ -98,7 +99,7 @@ await runBrowserTest(async (server, browser) => {
         inParts.length > 0 && tris > 1e6, `${lines.length} lines while partial, e.g. '${lines.at(-1) || ''}'`);
     }
     let tasks = await longTasksSince(page, t0);
-    check('tree grow (sakura 25 years): every click answered within 1 s', Math.max(...times) < 1000, summary(times, tasks));
+    timedCheck('tree grow (sakura 25 years): the slowest click', Math.max(...times), 1000, summary(times, tasks));
     const grown = await hooks(page);
 
     // Sway: Blow, then clicks while it sways (5 s of poses).
@@ -118,7 +119,7 @@ await runBrowserTest(async (server, browser) => {
       `latency ${during.frameGpuMs} ms, ${during.framesDrawn} frames drawn, ${during.framesSkipped} skipped (GPU busy); ` +
       `motion atlas textured: ${during.motionTextured || 'not painted'} (tests/browser/atlas_paint.test.mjs checks its texels)`;
     check('tree sway: the tree sways and the clicks are handled', swayed > 0 && times.every(Number.isFinite), swayLine);
-    check('tree sway: every click answered within 1 s', Math.max(...times) < 1000, swayLine);
+    timedCheck('tree sway: the slowest click', Math.max(...times), 1000, swayLine);
     await page.click('#wind');  // Still
     // Still: the rest shape at full quality again, finished (a frame of this size is drawn in parts
     // over several animation frames on SwiftShader), at the canvas's full size.
@@ -147,7 +148,8 @@ await runBrowserTest(async (server, browser) => {
     if (!(await refused())) await download;
     tasks = await longTasksSince(page, t0);
     const exported = (await hooks(page)).exported || '';
-    check('tree .glb export: every click answered within 1 s', Math.max(...times) < 1000 && exported.startsWith('glb:'),
+    check('tree .glb export: exported', exported.startsWith('glb:'), exported);
+    timedCheck('tree .glb export: the slowest click', Math.max(...times), 1000,
       `${summary(times, tasks)}; ${exported} (tree of ${grown.internodes} internodes)`);
     await page.close();
   }
@@ -171,7 +173,7 @@ await runBrowserTest(async (server, browser) => {
     const d = await hooks(page);
     // The first click falls in the page's start-up: the renderer's warm-up frame (ivy_renderer.js)
     // has compiled SwiftShader's routines before the first grow is asked for (docs/budgets.md).
-    check('ivy grow (literal, wall, 400 steps): every click answered within 1 s', Math.max(...times) < 1000,
+    timedCheck('ivy grow (literal, wall, 400 steps): the slowest click', Math.max(...times), 1000,
       `${summary(times, tasks)}; ${d.internodes} internodes`);
     // The page budget: the free replay of the literal preset for 10000 steps stops at a step, named.
     await page.goto(`${server.url}ivy.html#preset=literal&scene=free&steps=10000`);
@@ -196,8 +198,9 @@ await runBrowserTest(async (server, browser) => {
     await page.waitForFunction((n) => document.documentElement.dataset.status === 'ready' && Number(document.documentElement.dataset.ivySerial) > n,
       Number(good.ivySerial), { timeout: TIMEOUT, polling: 100 });
     const after = await hooks(page);
-    check('ivy Cancel answers within 1 s and grows the last finished state again',
-      cancelMs < 1000 && after.cancels === '1' && after.hash === good.hash && after.internodes === good.internodes,
+    timedCheck('ivy Cancel: its click answered', cancelMs, 1000);
+    check('ivy Cancel grows the last finished state again',
+      after.cancels === '1' && after.hash === good.hash && after.internodes === good.internodes,
       `${cancelMs} ms; ${good.internodes} -> ${after.internodes} internodes, hash ${after.hash === good.hash ? 'same' : 'changed'}`);
     void first;
     await page.close();
@@ -214,7 +217,7 @@ await runBrowserTest(async (server, browser) => {
     await page.waitForFunction(() => document.documentElement.dataset.status === 'ready', null, { timeout: TIMEOUT });
     const tasks = await longTasksSince(page, t0);
     const good = await hooks(page);
-    check('terrain grow (jacksboro, res 1024): every click answered within 1 s', Math.max(...times) < 1000,
+    timedCheck('terrain grow (jacksboro, res 1024): the slowest click', Math.max(...times), 1000,
       `${summary(times, tasks)}; ${good.contours} contours, grown in ${good.wallMs} ms`);
     // The page budget: res 4096 is refused before the heightfield is built, named beside the field.
     await page.goto(`${server.url}terrain.html#preset=improved&builtin=jacksboro&res=4096`);
@@ -249,8 +252,9 @@ await runBrowserTest(async (server, browser) => {
     await page.waitForFunction((n) => document.documentElement.dataset.status === 'ready' && Number(document.documentElement.dataset.terrainSerial) > n,
       Number(small.terrainSerial), { timeout: TIMEOUT, polling: 100 });
     const after = await hooks(page);
-    check('terrain Cancel answers within 1 s and grows the last finished state again',
-      cancelMs < 1000 && after.cancels === '1' && after.hash === small.hash,
+    timedCheck('terrain Cancel: its click answered', cancelMs, 1000);
+    check('terrain Cancel grows the last finished state again',
+      after.cancels === '1' && after.hash === small.hash,
       `${cancelMs} ms; hash ${after.hash === small.hash ? 'same' : `${small.hash} -> ${after.hash}`}`);
     await shoot(page, 'responsive-terrain.png');
     await page.close();

@@ -5,12 +5,13 @@
 // long tasks of a 30 -> 15 year change (numbers to build/artifacts/ux-longtasks.json); Blow moves
 // at once; touch targets >= 44 px and tap-to-cut at a phone viewport. Screenshots:
 // build/artifacts/ux-*.png.
-// scripts/test: solo (it times the page's answers, so it runs alone, not beside another browser test).
+// Its answer times are speed goals (harness.mjs timedCheck): checked by scripts/bench with NIWA_TIMED=1,
+// guarded only against a hang here.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import {
-  ARTIFACTS, NATIVE, TIMEOUT, check, nativeStats, newContext, runBrowserTest, snapshotCanvas, snapshotDifference,
+  ARTIFACTS, NATIVE, TIMEOUT, check, nativeStats, newContext, runBrowserTest, snapshotCanvas, snapshotDifference, timedCheck,
   waitReady, watchPage,
 } from './harness.mjs';
 
@@ -82,7 +83,7 @@ async function longTasks(context, server) {
     windowMs: Math.round(t1 - t0), longTasks: tasks.length, longestMs: Math.round(longest), totalMs: Math.round(total), tasks };
   fs.writeFileSync(path.join(ARTIFACTS, process.env.UX_LONGTASKS_OUT || 'ux-longtasks.json'), `${JSON.stringify(result, null, 2)}\n`);
   check('long tasks are observed in this Chromium', supported);
-  check('30 -> 15 years: no main-thread task over 200 ms', longest < 200,
+  timedCheck('30 -> 15 years: the longest main-thread task', longest, 200,
     `${tasks.length} long tasks, longest ${longest.toFixed(0)} ms, total ${total.toFixed(0)} ms in ${(t1 - t0).toFixed(0)} ms (${bigStats.internodes} -> ${result.to.internodes} internodes)`);
   await big.close();
 
