@@ -15,7 +15,6 @@
 namespace niwa {
 namespace {
 
-using Result = CliResult;
 
 std::string TempPath(const std::string& name) {
   return ::testing::TempDir() + "niwa_cli_test_" + name;
@@ -24,7 +23,7 @@ std::string TempPath(const std::string& name) {
 bool Exists(const std::string& path) { return static_cast<bool>(std::ifstream(path)); }
 
 TEST(Cli, PresetsListsEveryPreset) {
-  Result r = RunNiwa({"presets"});
+  CliResult r = RunNiwa({"presets"});
   EXPECT_EQ(r.code, 0);
   for (const char* name : {"binary", "sakura-thesis", "keyaki-thesis", "tsutsuji-thesis", "sakura",
                            "keyaki", "tsutsuji", "weeping", "pine", "maple", "ginkgo"}) {
@@ -38,7 +37,7 @@ TEST(Cli, HelpOnEveryCommand) {
                                                          {"params", "--help"},
                                                          {"tree", "--help"},
                                                          {"tree", "grow", "--help"}}) {
-    Result r = RunNiwa(args);
+    CliResult r = RunNiwa(args);
     EXPECT_EQ(r.code, 0) << args.back();
     EXPECT_NE(r.out.find("Usage"), std::string::npos) << r.out;
   }
@@ -46,7 +45,7 @@ TEST(Cli, HelpOnEveryCommand) {
 }
 
 TEST(Cli, StatsPrintsOneJsonObjectWithTheRequiredFields) {
-  Result r = RunNiwa(
+  CliResult r = RunNiwa(
       {"tree", "grow", "--preset", "tsutsuji-thesis", "--years", "6", "--seed", "4", "--stats"});
   ASSERT_EQ(r.code, 0) << r.err;
   nlohmann::json j = nlohmann::json::parse(r.out);
@@ -62,12 +61,12 @@ TEST(Cli, StatsPrintsOneJsonObjectWithTheRequiredFields) {
 }
 
 TEST(Cli, SetAndParamsFileChangeTheTree) {
-  Result base = RunNiwa({"tree", "grow", "--preset", "sakura-thesis", "--years", "5", "--stats"});
-  Result set = RunNiwa({"tree", "grow", "--preset", "sakura-thesis", "--years", "5", "--set",
+  CliResult base = RunNiwa({"tree", "grow", "--preset", "sakura-thesis", "--years", "5", "--stats"});
+  CliResult set = RunNiwa({"tree", "grow", "--preset", "sakura-thesis", "--years", "5", "--set",
                         "N_high=10", "--stats"});
   std::string file = TempPath("params.json");
   std::ofstream(file) << R"({"N_high": 10})";
-  Result json = RunNiwa(
+  CliResult json = RunNiwa(
       {"tree", "grow", "--preset", "sakura-thesis", "--years", "5", "--params", file, "--stats"});
   ASSERT_EQ(set.code, 0);
   auto a = nlohmann::json::parse(base.out), b = nlohmann::json::parse(set.out),
@@ -119,7 +118,7 @@ TEST(Cli, WritesJsonAndSvg) {
   for (std::string ext : {".json", ".svg"}) {
     std::string path = TempPath("tree" + ext);
     std::remove(path.c_str());
-    Result r = RunNiwa({"tree", "grow", "--preset", "binary", "--years", "5", "--out", path});
+    CliResult r = RunNiwa({"tree", "grow", "--preset", "binary", "--years", "5", "--out", path});
     ASSERT_EQ(r.code, 0) << r.err;
     std::stringstream content;
     content << std::ifstream(path).rdbuf();
@@ -137,7 +136,7 @@ TEST(Cli, WritesJsonAndSvg) {
 
 TEST(Cli, SvgOptionsChangeTheDrawing) {
   std::string path = TempPath("options.svg");
-  Result r =
+  CliResult r =
       RunNiwa({"tree", "grow", "--preset", "binary", "--years", "4", "--out", path, "--svg-width",
                "300", "--svg-height", "200", "--svg-leaves", "0", "--caption", "(a) P<1"});
   ASSERT_EQ(r.code, 0) << r.err;
@@ -156,9 +155,9 @@ TEST(Cli, SvgOptionsChangeTheDrawing) {
 }
 
 TEST(Cli, UrlGrowsTheSameTreeAsTheFlags) {
-  Result flags = RunNiwa({"tree", "grow", "--preset", "keyaki-thesis", "--years", "7", "--seed",
+  CliResult flags = RunNiwa({"tree", "grow", "--preset", "keyaki-thesis", "--years", "7", "--seed",
                           "3", "--set", "gamma=0.3", "--prune", "6:b2", "--stats"});
-  Result url = RunNiwa({"tree", "grow", "--url",
+  CliResult url = RunNiwa({"tree", "grow", "--url",
                         "#preset=keyaki-thesis&seed=3&years=7&gamma=0.3&prune=6:b2", "--stats"});
   ASSERT_EQ(url.code, 0) << url.err;
   auto a = nlohmann::json::parse(flags.out), b = nlohmann::json::parse(url.out);
@@ -200,7 +199,7 @@ TEST(Cli, MappingsPrintTheHormoneAndAgeRangesAsCsv) {
 // ---- tree render-stats (thesis ch. 4 hybrid rendering counts) ----
 
 TEST(CliRenderStats, PrintsOneJsonObjectWithTheTable41Keys) {
-  Result r = RunNiwa({"tree", "render-stats", "--preset", "sakura-thesis", "--years", "6"});
+  CliResult r = RunNiwa({"tree", "render-stats", "--preset", "sakura-thesis", "--years", "6"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.out.find('\n'), r.out.size() - 1);
   nlohmann::json j = nlohmann::json::parse(r.out);
@@ -213,18 +212,18 @@ TEST(CliRenderStats, PrintsOneJsonObjectWithTheTable41Keys) {
             j["branch_polygons"].get<int>() + j["leaf_polygons"].get<int>());
   EXPECT_GT(j["full_polygons"].get<int>(), 20 * j["primitives"].get<int>());
   // Full mode reports the full mesh; a closer camera makes more cards.
-  Result full = RunNiwa(
+  CliResult full = RunNiwa(
       {"tree", "render-stats", "--preset", "sakura-thesis", "--years", "6", "--mode", "full"});
   ASSERT_EQ(full.code, 0) << full.err;
   nlohmann::json f = nlohmann::json::parse(full.out);
   EXPECT_EQ(f["lines"], 0);
   EXPECT_EQ(f["total_polygons"], j["full_polygons"]);
   std::string cam = j["cam"].get<std::string>();
-  Result same =
+  CliResult same =
       RunNiwa({"tree", "render-stats", "--preset", "sakura-thesis", "--years", "6", "--cam", cam});
   ASSERT_EQ(same.code, 0) << same.err;
   EXPECT_EQ(nlohmann::json::parse(same.out)["lines"], j["lines"]);
-  Result close = RunNiwa({"tree", "render-stats", "--preset", "sakura-thesis", "--years", "6",
+  CliResult close = RunNiwa({"tree", "render-stats", "--preset", "sakura-thesis", "--years", "6",
                           "--cam", cam, "--distance", "0.5"});
   ASSERT_EQ(close.code, 0) << close.err;
   EXPECT_GT(nlohmann::json::parse(close.out)["branch_polygons"].get<int>(),
@@ -236,7 +235,7 @@ TEST(CliRenderStats, RenderRowsOfTheParameterTableSetTheOptions) {
     std::vector<std::string> args = {"tree",          "render-stats", "--preset",
                                      "sakura-thesis", "--years",      "6"};
     args.insert(args.end(), extra.begin(), extra.end());
-    Result r = RunNiwa(args);
+    CliResult r = RunNiwa(args);
     EXPECT_EQ(r.code, 0) << r.err;
     return nlohmann::json::parse(r.out);
   };
@@ -280,11 +279,11 @@ TEST(CliRenderStats, BadFlagsAreOneLineErrorsWithExitCode2) {
 
 // 'niwa params' lists the tree table as before; a study name picks a study's table.
 TEST(Cli, ParamsListsAStudysTableWithStagesAndGroupTitlesInJson) {
-  Result plain = RunNiwa({"params"});
+  CliResult plain = RunNiwa({"params"});
   ASSERT_EQ(plain.code, 0) << plain.err;
   EXPECT_EQ(plain.out.rfind("alpha_t\tα_t\t-\tdefault 0.7\ta number in [0, 1]\t", 0), 0u);
   EXPECT_EQ(RunNiwa({"params", "tree"}).out, plain.out);
-  Result json = RunNiwa({"params", "--json"});
+  CliResult json = RunNiwa({"params", "--json"});
   ASSERT_EQ(json.code, 0) << json.err;
   nlohmann::json rows = nlohmann::json::parse(json.out);
   ASSERT_GT(rows.size(), 80u);
@@ -302,7 +301,7 @@ TEST(Cli, ParamsListsAStudysTableWithStagesAndGroupTitlesInJson) {
 // item 8): the same JSON the page's worker gets (TreeParamTableJsonWithSimple), with the plain
 // name and help on exactly the group's rows; other studies' tables have no such group.
 TEST(Cli, ParamsJsonCarriesTheGettingStartedGroup) {
-  Result json = RunNiwa({"params", "tree", "--json"});
+  CliResult json = RunNiwa({"params", "tree", "--json"});
   ASSERT_EQ(json.code, 0) << json.err;
   EXPECT_EQ(json.out, TreeParamTableJsonWithSimple() + "\n");
   nlohmann::json rows = nlohmann::json::parse(json.out);
@@ -323,7 +322,7 @@ TEST(Cli, ParamsJsonCarriesTheGettingStartedGroup) {
   }
   EXPECT_EQ(simple, expected);
   EXPECT_GE(simple.size(), 5u);
-  Result ivy = RunNiwa({"params", "ivy", "--json"});
+  CliResult ivy = RunNiwa({"params", "ivy", "--json"});
   ASSERT_EQ(ivy.code, 0) << ivy.err;
   EXPECT_EQ(ivy.out.find("\"simple\""), std::string::npos);
 }
@@ -334,7 +333,7 @@ TEST(Cli, CommandsOfEveryStudyFileAreRegistered) {
   ExpectOneLineError(
       RunNiwa({"tree", "frob"}),
       "unknown command 'frob', must be one of grow, state, mappings, sway, render-stats");
-  Result help = RunNiwa({"tree", "--help"});
+  CliResult help = RunNiwa({"tree", "--help"});
   ASSERT_EQ(help.code, 0);
   for (const char* command : {"grow", "state", "mappings", "sway", "render-stats"}) {
     EXPECT_NE(help.out.find(command), std::string::npos) << command;
@@ -365,9 +364,9 @@ TEST(Cli, FlagHelpAndCheckShowTheSameRange) {
 TEST(Cli, ParamsFileMayBeAPresetFile) {
   std::string file = TempPath("preset_like.json");
   std::ofstream(file) << R"({"name": "mine", "years": 3, "N_high": 10})";
-  Result r = RunNiwa({"tree", "grow", "--years", "3", "--params", file, "--stats"});
+  CliResult r = RunNiwa({"tree", "grow", "--years", "3", "--params", file, "--stats"});
   ASSERT_EQ(r.code, 0) << r.err;
-  Result set = RunNiwa({"tree", "grow", "--years", "3", "--set", "N_high=10", "--stats"});
+  CliResult set = RunNiwa({"tree", "grow", "--years", "3", "--set", "N_high=10", "--stats"});
   EXPECT_EQ(nlohmann::json::parse(r.out)["internodes"],
             nlohmann::json::parse(set.out)["internodes"]);
 }

@@ -20,6 +20,7 @@
 #include "io/hash_codec.h"
 #include "support/cli_runner.h"
 #include "support/expect_error.h"
+#include "support/files.h"
 
 namespace niwa {
 namespace {
@@ -33,14 +34,11 @@ std::string Dir() {
   return dir;
 }
 std::string PathIn(const std::string& name) { return Dir() + "/" + name; }
-bool Exists(const std::string& path) {
+bool LstatExists(const std::string& path) {
   struct stat info {};
   return ::lstat(path.c_str(), &info) == 0;
 }
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using testing::Slurp;
 void Write(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
 }
@@ -246,13 +244,13 @@ TEST(SafeWrites, SeveralOutputsAreAllOrNone) {
   ExpectOneLineError(RunNiwa({"tree", "sway", "--preset", "binary", "--years", "3", "--duration",
                               "1", "--out", glb, "--csv", PathIn("no/such/dir/t.csv")}),
                      "--csv: cannot write");
-  EXPECT_FALSE(Exists(glb));  // the first output is not left behind
+  EXPECT_FALSE(LstatExists(glb));  // the first output is not left behind
   EXPECT_TRUE(Partials().empty());
   const std::string csv = PathIn("ok.csv"), svg = PathIn("ok.svg");
   CliResult r = RunNiwa({"tree", "sway", "--preset", "binary", "--years", "3", "--duration", "1",
                          "--out", glb, "--csv", csv, "--svg", svg});
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_TRUE(Exists(glb) && Exists(csv) && Exists(svg));
+  EXPECT_TRUE(LstatExists(glb) && LstatExists(csv) && LstatExists(svg));
   ExpectOneLineError(RunNiwa({"tree", "sway", "--preset", "binary", "--years", "3", "--duration",
                               "1", "--out", csv, "--csv", csv}),
                      "is the same file as --out");
@@ -287,7 +285,7 @@ TEST(SafeWrites, AFailedCommitPutsBackWhatItReplaced) {
   ASSERT_TRUE(again.Stage("--sidecar", second, "y").ok());
   ASSERT_EQ(::mkdir(second.c_str(), 0755), 0);
   EXPECT_FALSE(again.Commit().ok());
-  EXPECT_FALSE(Exists(fresh));
+  EXPECT_FALSE(LstatExists(fresh));
   EXPECT_TRUE(Partials().empty());
   ::rmdir(second.c_str());
 }
@@ -326,7 +324,7 @@ TEST(SafeWrites, ASignalRemovesTheTemporaries) {
   ASSERT_EQ(::waitpid(child, &status, 0), child);
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
   EXPECT_TRUE(Partials().empty());
-  EXPECT_FALSE(Exists(PathIn("big.glb")));
+  EXPECT_FALSE(LstatExists(PathIn("big.glb")));
 }
 #endif
 
@@ -335,7 +333,7 @@ TEST(SafeWrites, A255CharacterNameWorks) {
   ASSERT_EQ(name.size(), 255u);
   CliResult r = RunNiwa(Grow({"--years", "2", "--out", PathIn(name)}));
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_TRUE(Exists(PathIn(name)));
+  EXPECT_TRUE(LstatExists(PathIn(name)));
   ::unlink(PathIn(name).c_str());
 }
 

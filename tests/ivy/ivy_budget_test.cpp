@@ -37,7 +37,7 @@ void ExpectBounds(double estimate, long long measured, const char* what) {
       << what << ": the estimate is more than " << kFactor << " x the peak";
 }
 
-struct IvyRun {
+struct BudgetRun {
   IvyScene scene;
   geom::Bvh bvh;
   IvyModel model;
@@ -45,7 +45,7 @@ struct IvyRun {
 };
 
 // The literal preset (or `params`) on the wall (a support, real searches) or the free replay.
-void GrowOn(const std::string& scene, int steps, const IvyGrowLimits* limits, IvyRun* r,
+void GrowOn(const std::string& scene, int steps, const IvyGrowLimits* limits, BudgetRun* r,
             const IvyParams& params = *IvyPreset("literal")) {
   r->scene = *MakeIvyScene(scene);
   Support support;
@@ -68,7 +68,7 @@ IvyGrowLimits Unlimited(bool has_support) {
 TEST(IvyBudget, GrowEstimateHoldsTheMeasuredPeak) {
   for (const char* scene : {"free", "wall"}) {
     const IvyGrowLimits limits = Unlimited(std::string(scene) != "free");
-    IvyRun r;
+    BudgetRun r;
     r.scene = *MakeIvyScene(scene);  // the support is outside the growth's figure
     Support support;
     if (!r.scene.free) {
@@ -94,7 +94,7 @@ TEST(IvyBudget, ExportEstimatesHoldTheMeasuredPeaks) {
   // smaller model tests them the same.
   IvyParams p = *IvyPreset("literal");
   ASSERT_TRUE(p.Set(IvyParam::kTangentRetry, 0).ok());
-  IvyRun r;
+  BudgetRun r;
   GrowOn("wall", 105, nullptr, &r, p);
   struct Case {
     IvyExport kind;
@@ -149,11 +149,11 @@ TEST(IvyBudget, SubdivisionBeyondTheBudgetIsRefusedWithTheLine) {
 }
 
 TEST(IvyBudget, MemoryBudgetStopsAtAStepWithTheLineAndTheSameBuds) {
-  IvyRun full;
+  BudgetRun full;
   GrowOn("free", 150, nullptr, &full);
   IvyGrowLimits limits = Unlimited(false);
   limits.max_bytes = limits.base_bytes + limits.bytes_per_bud * 3000;
-  IvyRun cut;
+  BudgetRun cut;
   GrowOn("free", 150, &limits, &cut);
   ASSERT_GT(full.model.buds.size(), 3000u);
   EXPECT_EQ(cut.log.truncated_by.rfind("max_memory: stopped at step ", 0), 0u)
@@ -201,12 +201,12 @@ TEST(IvyBudget, TheTangentFanIsInTheSearchWorstCaseAndTheCount) {
 TEST(IvyBudget, TimeBudgetStopsAtAStepWithTheLine) {
   IvyGrowLimits limits = Unlimited(true);
   limits.max_seconds = 0.05;  // work units: the same step in both builds
-  IvyRun cut;
+  BudgetRun cut;
   GrowOn("wall", 120, &limits, &cut);
   EXPECT_EQ(cut.log.truncated_by.rfind("max_seconds: stopped at step ", 0), 0u)
       << cut.log.truncated_by;
   EXPECT_LE(EstimateIvyGrown(cut.model, cut.log, limits).seconds, limits.max_seconds);
-  IvyRun again;
+  BudgetRun again;
   GrowOn("wall", 120, &limits, &again);
   EXPECT_EQ(again.log.steps_run, cut.log.steps_run);
   EXPECT_EQ(again.model.buds.size(), cut.model.buds.size());
@@ -222,7 +222,7 @@ TEST(IvyBudget, StatsEstimateHoldsTheMeasuredPeakAndTime) {
   // The free replay (the sweep's pairs dominate) and a subdivided wall (16,384 triangles: the
   // brute-force re-checks dominate).
   for (const Case& c : {Case{"free", 0, 90}, Case{"wall", 6, 60}}) {
-    IvyRun r;
+    BudgetRun r;
     GrowOn(c.scene, c.steps, nullptr, &r);
     if (c.levels > 0) {
       r.scene.mesh = geom::Subdivide(r.scene.mesh, c.levels);

@@ -11,16 +11,12 @@
 
 #include "ivy/lstring.h"
 #include "support/cli_runner.h"
+#include "support/files.h"
 
 namespace niwa {
 namespace {
 
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::Slurp;
 
 TEST(IvyCli, StatsHaveEveryNamedKey) {
   CliResult r = RunNiwa({"ivy", "grow", "--scene", "cubes4", "--seed-point", "column", "--stats"});

@@ -12,16 +12,12 @@
 
 #include "ivy/ivy_state.h"
 #include "support/cli_runner.h"
+#include "support/files.h"
 
 namespace niwa {
 namespace {
 
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::Slurp;
 
 std::size_t Count(const std::string& text, const std::string& what) {
   std::size_t n = 0;

@@ -9,14 +9,14 @@
 namespace niwa::ivy {
 namespace {
 
-struct IvyRun {
+struct RulesRun {
   IvyModel model;
   GrowLog log;
   IvyStats stats;
 };
 
-IvyRun GrowFree(const IvyParams& p, int steps) {
-  IvyRun r;
+RulesRun GrowFree(const IvyParams& p, int steps) {
+  RulesRun r;
   Result<IvyModel> m = Grow(Support{}, {glm::dvec3(0.0)}, p, steps, 1, &r.log);
   EXPECT_TRUE(m.ok()) << m.status().Line();
   r.model = *m;
@@ -25,7 +25,7 @@ IvyRun GrowFree(const IvyParams& p, int steps) {
 }
 
 TEST(IvyRules, FreeReplayMatchesTheSpecTable) {
-  IvyRun r = GrowFree(IvyParams(), 50);
+  RulesRun r = GrowFree(IvyParams(), 50);
   const int internodes[] = {4, 7, 14, 28, 50};
   const int laterals[] = {0, 0, 2, 6, 9};
   for (int i = 0; i < 5; ++i) {
@@ -50,7 +50,7 @@ TEST(IvyRules, FreeReplayMatchesTheSpecTable) {
 }
 
 TEST(IvyRules, LiteralPresetLateralsOutgrowTheirParents) {
-  IvyRun r = GrowFree(*IvyPreset("literal"), 50);
+  RulesRun r = GrowFree(*IvyPreset("literal"), 50);
   EXPECT_EQ(r.stats.internodes, 279);
   EXPECT_EQ(r.stats.laterals, 30);
   EXPECT_EQ(r.stats.first_break_step, 24);
@@ -63,7 +63,7 @@ TEST(IvyRules, LiteralPresetLateralsOutgrowTheirParents) {
 TEST(IvyRules, P0AndP1ArithmeticByHand) {
   // The seed starts at N0 = t1 = 0.2: p0 at step 1 leaves 0 for both. A then accumulates
   // 0.12 per step (steps 2, 3) to 0.24, and p0 at step 4 gives A 0.75 * 0.04, D 0.25 * 0.04.
-  IvyRun r = GrowFree(IvyParams(), 4);
+  RulesRun r = GrowFree(IvyParams(), 4);
   ASSERT_EQ(r.model.internodes.size(), 2u);
   const Bud& apex = r.model.buds[2];
   const Bud& dormant = r.model.buds[1];
@@ -74,7 +74,7 @@ TEST(IvyRules, P0AndP1ArithmeticByHand) {
   // The first D (bud 0) accumulated 0.035 in steps 2..4 from 0.
   EXPECT_NEAR(r.model.buds[0].N, 3 * 0.035, 1e-12);
   // At step 25 bud 0 holds 23 * 0.035 = 0.805 >= t2: p1 gives the lateral apex 0.005, Z gets 0.
-  IvyRun r25 = GrowFree(IvyParams(), 25);
+  RulesRun r25 = GrowFree(IvyParams(), 25);
   const Bud& z = r25.model.buds[0];
   ASSERT_EQ(z.kind, BudKind::kEnding);
   ASSERT_GE(z.child[1], 0);
@@ -84,7 +84,7 @@ TEST(IvyRules, P0AndP1ArithmeticByHand) {
 
 TEST(IvyRules, LedgerHoldsEveryStepAndIsNotVacuous) {
   for (const char* preset : {"paper", "literal"}) {
-    IvyRun r = GrowFree(*IvyPreset(preset), std::string(preset) == "paper" ? 100 : 60);
+    RulesRun r = GrowFree(*IvyPreset(preset), std::string(preset) == "paper" ? 100 : 60);
     double prev = r.log.nutrient_start, in = 0, out = 0;
     for (const StepLog& st : r.log.steps) {
       EXPECT_NEAR(st.nutrient_total, prev + st.accumulated - st.spent - st.lost, 1e-12);
@@ -100,7 +100,7 @@ TEST(IvyRules, LedgerHoldsEveryStepAndIsNotVacuous) {
 }
 
 TEST(IvyRules, BinaryTreeInvariantsHold) {
-  IvyRun r = GrowFree(IvyParams(), 80);
+  RulesRun r = GrowFree(IvyParams(), 80);
   const IvyModel& m = r.model;
   EXPECT_EQ(m.buds.size(), m.internodes.size() + 1);
   for (const Bud& b : m.buds) {
@@ -138,7 +138,7 @@ TEST(IvyRules, HostileInputIsOneLineNamingTheField) {
 }
 
 TEST(IvyLString, RoundTripGivesTheStoredInternodes) {
-  IvyRun r = GrowFree(IvyParams(), 50);
+  RulesRun r = GrowFree(IvyParams(), 50);
   const std::string text = PrintLString(r.model);
   LStringCounts c = CountSymbols(text);
   EXPECT_EQ(c.A, 10);

@@ -14,14 +14,12 @@
 #include "io/mesh_reader.h"
 #include "ivy/ivy_run.h"
 #include "support/cli_runner.h"
+#include "support/files.h"
 
 namespace niwa::ivy {
 namespace {
 
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using testing::Slurp;
 
 nlohmann::json WithoutMs(nlohmann::json j) {
   for (const char* key : {"ms", "ms_bvh", "ms_rules", "ms_search", "ms_mesh"}) j.erase(key);

@@ -13,7 +13,7 @@
 namespace niwa {
 namespace {
 
-Tree Grow(const std::string& preset, int years) { return testing::GrowPreset(preset, years); }
+Tree GrowForAtlas(const std::string& preset, int years) { return testing::GrowPreset(preset, years); }
 
 // True when clip point (x, y) lies in some tile (half a texel of slack).
 bool InSomeTile(const HybridScene& scene, float x, float y) {
@@ -44,7 +44,7 @@ void ExpectInTiles(const HybridScene& scene, const MeshBuffers& part, const char
 }
 
 TEST(AtlasMesh, EveryProjectedVertexLandsInATileInBothLeafModes) {
-  Tree tree = Grow("sakura-thesis", 6);
+  Tree tree = GrowForAtlas("sakura-thesis", 6);
   TreeMesh mesh = BuildTreeMesh(tree);
   for (LeafMode mode : {LeafMode::kBranchCards, LeafMode::kClusterCards}) {
     RenderOptions options;
@@ -63,7 +63,7 @@ TEST(AtlasMesh, EveryProjectedVertexLandsInATileInBothLeafModes) {
 
 // Bark triangles in the atlas = the representatives' triangles times the planes per card.
 TEST(AtlasMesh, BarkTrianglesAreTheRepresentativesOnEveryPlane) {
-  Tree tree = Grow("keyaki-thesis", 6);
+  Tree tree = GrowForAtlas("keyaki-thesis", 6);
   TreeMesh mesh = BuildTreeMesh(tree);
   RenderOptions options;
   options.card_planes = 3;
@@ -128,7 +128,7 @@ TEST(AtlasMesh, StraightBranchIsUprightInItsTile) {
 }
 
 TEST(DrawListSkin, CardCornersAndLineEndsFollowTheirNodes) {
-  Tree tree = Grow("sakura-thesis", 6);
+  Tree tree = GrowForAtlas("sakura-thesis", 6);
   HybridScene scene = BuildHybridScene(tree, RenderOptions{});
   OrbitView view = FrameOrbitView(MeshBounds(BuildTreeMesh(tree)));
   RenderCamera camera = CameraFromOrbit(view, 512, 512);

@@ -54,7 +54,7 @@ RenderCamera CameraAt(float distance_m, int width = 512, int height = 512) {
   return c;
 }
 
-Tree Grow(const std::string& preset, int years) { return testing::GrowPreset(preset, years); }
+Tree GrowForHybrid(const std::string& preset, int years) { return testing::GrowPreset(preset, years); }
 
 TEST(Eq41, ScreenWidthByHand) {
   // d = 0.02 m, R = 10 m, 512 × 512: D = 0.02 · 512 / 20 = 0.512 px.
@@ -185,7 +185,7 @@ TEST(Leaves, LeafBranchesAreAlwaysCardsInBranchMode) {
 }
 
 TEST(Leaves, ClusterModeCoversEveryLeafBranchWithACluster) {
-  Tree tree = Grow("sakura-thesis", 6);
+  Tree tree = GrowForHybrid("sakura-thesis", 6);
   RenderOptions options;  // kClusterCards
   HybridScene scene = BuildHybridScene(tree, options);
   int leaf_branches = 0;
@@ -374,7 +374,7 @@ TEST(Options, CheckNamesTheFieldAndRange) {
 
 // Counts agree with the draw list, and the sakura goal of the issue holds at the page's view.
 TEST(Counts, SakuraFifteenYearsDefaultViewMeetsOneTwentieth) {
-  Tree tree = Grow("sakura-thesis", 15);
+  Tree tree = GrowForHybrid("sakura-thesis", 15);
   TreeMesh mesh = BuildTreeMesh(tree);
   RenderCamera camera = CameraFromOrbit(FrameOrbitView(MeshBounds(mesh)), 512, 512);
   for (LeafMode mode : {LeafMode::kClusterCards, LeafMode::kBranchCards}) {
@@ -444,7 +444,7 @@ TEST(Counts, SakuraFifteenYearsDefaultViewMeetsOneTwentieth) {
 }
 
 TEST(Counts, ZoomingInTurnsLinesIntoCards) {
-  Tree tree = Grow("sakura-thesis", 8);
+  Tree tree = GrowForHybrid("sakura-thesis", 8);
   TreeMesh mesh = BuildTreeMesh(tree);
   OrbitView view = FrameOrbitView(MeshBounds(mesh));
   HybridScene scene = BuildHybridScene(tree, RenderOptions{});
@@ -463,7 +463,7 @@ TEST(Counts, ZoomingInTurnsLinesIntoCards) {
 // A zoom in and back out with hysteresis: no living branch is ever undrawn, each switches at most
 // twice (card → line → card or the reverse), and cards turn into lines and back.
 TEST(Counts, ZoomSequenceNeverDropsABranchAndDoesNotFlicker) {
-  Tree tree = Grow("sakura-thesis", 8);
+  Tree tree = GrowForHybrid("sakura-thesis", 8);
   TreeMesh mesh = BuildTreeMesh(tree);
   OrbitView view = FrameOrbitView(MeshBounds(mesh));
   HybridScene scene = BuildHybridScene(tree, RenderOptions{});

@@ -17,6 +17,7 @@
 #include "tree/tree_gltf.h"
 #include "tree/tree_json.h"
 #include "tree/tree_report.h"
+#include "support/files.h"
 
 namespace niwa {
 namespace {
@@ -29,10 +30,7 @@ TreeRun StartSakura(int years = kYears) {
   return std::move(run).value();
 }
 
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
+using testing::Slurp;
 
 TEST(TreeRun, GrowsYearByYearWithProgress) {
   TreeRun run = StartSakura();

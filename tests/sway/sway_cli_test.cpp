@@ -12,7 +12,6 @@
 namespace niwa {
 namespace {
 
-using Result = CliResult;
 
 std::string ReadAll(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -22,7 +21,7 @@ std::string ReadAll(const std::string& path) {
 }
 
 TEST(SwayCli, StatsHasTheCounts) {
-  Result r = RunNiwa({"tree", "sway", "--preset", "sakura-thesis", "--years", "5", "--wind", "10",
+  CliResult r = RunNiwa({"tree", "sway", "--preset", "sakura-thesis", "--years", "5", "--wind", "10",
                       "--gust", "0.2:1", "--duration", "2", "--stats"});
   ASSERT_EQ(r.code, 0) << r.err;
   nlohmann::json j = nlohmann::json::parse(r.out);
@@ -41,7 +40,7 @@ TEST(SwayCli, StatsHasTheCounts) {
 TEST(SwayCli, WritesCsvAndSvg) {
   std::string csv = ::testing::TempDir() + "niwa_sway_test.csv";
   std::string svg = ::testing::TempDir() + "niwa_sway_test.svg";
-  Result r = RunNiwa({"tree", "sway", "--preset", "binary", "--years", "6", "--duration", "1",
+  CliResult r = RunNiwa({"tree", "sway", "--preset", "binary", "--years", "6", "--duration", "1",
                       "--dt", "0.05", "--tips", "2", "--csv", csv, "--svg", svg});
   ASSERT_EQ(r.code, 0) << r.err;
   std::string text = ReadAll(csv);
@@ -81,7 +80,7 @@ TEST(SwayCli, SetReachesTheSwayAndWindRows) {
     std::vector<std::string> args = {"tree", "sway",       "--preset", "binary", "--years",
                                      "6",    "--duration", "2",        "--stats"};
     args.insert(args.end(), extra.begin(), extra.end());
-    Result r = RunNiwa(args);
+    CliResult r = RunNiwa(args);
     EXPECT_EQ(r.code, 0) << r.err;
     return nlohmann::json::parse(r.out.empty() ? "{}" : r.out);
   };
@@ -105,7 +104,7 @@ TEST(SwayCli, SetReachesTheSwayAndWindRows) {
 }
 
 TEST(SwayCli, ParamsListsTheSwayAndWindGroups) {
-  Result r = RunNiwa({"params", "--json"});
+  CliResult r = RunNiwa({"params", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   nlohmann::json table = nlohmann::json::parse(r.out);
   int sway = 0, wind = 0;
@@ -115,7 +114,7 @@ TEST(SwayCli, ParamsListsTheSwayAndWindGroups) {
   }
   EXPECT_EQ(sway, 13);
   EXPECT_EQ(wind, 9);
-  Result text = RunNiwa({"params"});
+  CliResult text = RunNiwa({"params"});
   for (const char* key : {"K_wind", "K_dir_trunk", "wood_density", "sway_alpha", "wind_speed",
                           "gust_front_speed", "wind_variation", "duration"}) {
     EXPECT_NE(text.out.find(std::string("\n") + key + "\t"), std::string::npos) << key;
@@ -123,7 +122,7 @@ TEST(SwayCli, ParamsListsTheSwayAndWindGroups) {
 }
 
 TEST(SwayCli, HelpListsTheOptions) {
-  Result r = RunNiwa({"tree", "sway", "--help"});
+  CliResult r = RunNiwa({"tree", "sway", "--help"});
   EXPECT_EQ(r.code, 0);
   for (const char* option : {"--wind", "--wind-dir", "--gust", "--dt", "--duration", "--set-sway",
                              "--csv", "--svg", "--stats", "--preset"}) {

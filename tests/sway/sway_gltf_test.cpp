@@ -28,7 +28,7 @@ using testing::Glb;
 using testing::ParseGlb;
 using testing::ReadAccessor;
 
-Tree Grow(const std::string& preset, int years) { return testing::GrowPreset(preset, years, 1); }
+Tree GrowForSway(const std::string& preset, int years) { return testing::GrowPreset(preset, years, 1); }
 
 SwayParams ShortGust() {
   TreeParams ps;
@@ -69,7 +69,7 @@ struct GlbSkinEval {
 };
 
 TEST(GltfSwayTest, SkinnedGlbHasJointsClipAndReproducesTheSkinnedPoses) {
-  const Tree tree = Grow("sakura-thesis", 5);
+  const Tree tree = GrowForSway("sakura-thesis", 5);
   const SwayParams params = ShortGust();
   std::vector<unsigned char> bytes;
   SwayGlbInfo info;

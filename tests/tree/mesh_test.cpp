@@ -19,7 +19,7 @@ namespace {
 
 constexpr float kScale = 0.01f;  // default cm_to_units
 
-Tree Grow(const std::string& preset, int years) { return testing::GrowPreset(preset, years, 1); }
+Tree GrowForMesh(const std::string& preset, int years) { return testing::GrowPreset(preset, years, 1); }
 
 glm::vec3 Vec(const std::vector<float>& data, std::size_t vertex) {
   return {data[3 * vertex], data[3 * vertex + 1], data[3 * vertex + 2]};
@@ -89,7 +89,7 @@ void ExpectWellFormed(const MeshBuffers& m, const char* what) {
 }
 
 TEST(MeshTest, EmptyTreeGivesEmptyBuffers) {
-  for (const Tree& tree : {Tree{}, Grow("sakura-thesis", 0)}) {
+  for (const Tree& tree : {Tree{}, GrowForMesh("sakura-thesis", 0)}) {
     TreeMesh mesh = BuildTreeMesh(tree);
     EXPECT_EQ(mesh.bark.vertex_count(), 0u);
     EXPECT_TRUE(mesh.bark.indices.empty());
@@ -102,7 +102,7 @@ TEST(MeshTest, EmptyTreeGivesEmptyBuffers) {
 }
 
 TEST(MeshTest, CountsMatchTheFormulaWithFixedSides) {
-  Tree tree = Grow("sakura-thesis", 8);
+  Tree tree = GrowForMesh("sakura-thesis", 8);
   MeshOptions options;
   options.min_sides = options.max_sides = 6;
   TreeMesh mesh = BuildTreeMesh(tree, options);
@@ -130,7 +130,7 @@ TEST(MeshTest, CountsMatchTheFormulaWithFixedSides) {
 TEST(MeshTest, BuffersAreWellFormedForEveryPreset) {
   for (const Preset& preset : Presets()) {
     SCOPED_TRACE(preset.name);
-    Tree tree = Grow(preset.name, 6);
+    Tree tree = GrowForMesh(preset.name, 6);
     TreeMesh mesh = BuildTreeMesh(tree);
     EXPECT_GT(mesh.bark.vertex_count(), 0u);
     EXPECT_GT(mesh.leaves.vertex_count(), 0u);
@@ -139,7 +139,7 @@ TEST(MeshTest, BuffersAreWellFormedForEveryPreset) {
     ExpectWellFormed(mesh.leaves, "leaves");
     ExpectWellFormed(mesh.flowers, "flowers");
   }
-  TreeMesh flowering = BuildTreeMesh(Grow("sakura-thesis", 8));
+  TreeMesh flowering = BuildTreeMesh(GrowForMesh("sakura-thesis", 8));
   ASSERT_GT(flowering.flowers.vertex_count(), 0u);
   ExpectWellFormed(flowering.flowers, "sakura flowers");
 }
@@ -147,7 +147,7 @@ TEST(MeshTest, BuffersAreWellFormedForEveryPreset) {
 // The per-vertex branch/node ids (used for sway skinning) name the node each vertex hangs on:
 // a ring vertex lies one radius from its node, a leaf's base corners and a flower's hub near it.
 TEST(MeshTest, VertexNodeIdsNameTheNodeEachVertexHangsOn) {
-  Tree tree = Grow("sakura-thesis", 8);
+  Tree tree = GrowForMesh("sakura-thesis", 8);
   TreeMesh mesh = BuildTreeMesh(tree);
   ASSERT_EQ(mesh.bark_node_index.size(), mesh.bark.vertex_count());
   ASSERT_EQ(mesh.leaf_branch_id.size(), mesh.leaves.vertex_count());
@@ -184,7 +184,7 @@ TEST(MeshTest, VertexNodeIdsNameTheNodeEachVertexHangsOn) {
 }
 
 TEST(MeshTest, SidesStayInRangeAndGrowWithRadius) {
-  Tree tree = Grow("sakura-thesis", 8);
+  Tree tree = GrowForMesh("sakura-thesis", 8);
   MeshOptions options;
   options.min_sides = 4;
   options.max_sides = 10;
@@ -215,7 +215,7 @@ TEST(MeshTest, SidesStayInRangeAndGrowWithRadius) {
 }
 
 TEST(MeshTest, FirstRingOfAChildSitsOnItsParentsNode) {
-  Tree tree = Grow("sakura-thesis", 6);
+  Tree tree = GrowForMesh("sakura-thesis", 6);
   TreeMesh mesh = BuildTreeMesh(tree);
   auto blocks = BarkBlocks(mesh);
   int checked = 0;
@@ -290,7 +290,7 @@ TEST(MeshTest, DegenerateBranchesGiveNoNaN) {
 }
 
 TEST(MeshTest, LeafQuadsLieAlongTheLeafDirection) {
-  Tree tree = Grow("keyaki-thesis", 5);
+  Tree tree = GrowForMesh("keyaki-thesis", 5);
   const float size = static_cast<float>(tree.params.Get(ParamId::kLeafSize));
   TreeMesh mesh = BuildTreeMesh(tree);
   std::size_t quad = 0;
@@ -321,7 +321,7 @@ TEST(MeshTest, LeafQuadsLieAlongTheLeafDirection) {
 }
 
 TEST(MeshTest, FlowerCardsAreEightCentimetresAcrossAndFaceUp) {
-  Tree tree = Grow("sakura-thesis", 8);
+  Tree tree = GrowForMesh("sakura-thesis", 8);
   TreeMesh mesh = BuildTreeMesh(tree);
   ASSERT_GT(mesh.flowers.vertex_count(), 0u);
   for (std::size_t f = 0; f < mesh.flowers.vertex_count(); f += 22) {
@@ -337,7 +337,7 @@ TEST(MeshTest, FlowerCardsAreEightCentimetresAcrossAndFaceUp) {
 }
 
 TEST(MeshTest, UnitsScaleEveryPosition) {
-  Tree tree = Grow("tsutsuji-thesis", 4);
+  Tree tree = GrowForMesh("tsutsuji-thesis", 4);
   MeshOptions cm;
   cm.cm_to_units = 1.0f;
   TreeMesh in_cm = BuildTreeMesh(tree, cm);
@@ -370,7 +370,7 @@ TreeMesh MeshIn(const Tree& tree, LeafShape shape, Season season, AutumnColour a
 }
 
 TEST(MeshSeasons, WinterIsBareSpringCherriesBlossomOnBareWoodAutumnHasNoFlowers) {
-  Tree sakura = Grow("sakura-thesis", 8);
+  Tree sakura = GrowForMesh("sakura-thesis", 8);
   const TreeMesh summer = BuildTreeMesh(sakura);
   ASSERT_GT(summer.leaves.vertex_count(), 0u);
   ASSERT_GT(summer.flowers.vertex_count(), 0u);
@@ -387,7 +387,7 @@ TEST(MeshSeasons, WinterIsBareSpringCherriesBlossomOnBareWoodAutumnHasNoFlowers)
   EXPECT_EQ(autumn.leaves.positions, summer.leaves.positions);
   EXPECT_EQ(autumn.flowers.vertex_count(), 0u);
   // A tree without flowers keeps its leaves in spring; an evergreen keeps them in winter.
-  Tree keyaki = Grow("keyaki-thesis", 4);
+  Tree keyaki = GrowForMesh("keyaki-thesis", 4);
   ASSERT_EQ(BuildTreeMesh(keyaki).flowers.vertex_count(), 0u);
   EXPECT_GT(MeshIn(keyaki, LeafShape::kBroad, Season::kSpring, AutumnColour::kOrangeBrown)
                 .leaves.vertex_count(),
@@ -398,7 +398,7 @@ TEST(MeshSeasons, WinterIsBareSpringCherriesBlossomOnBareWoodAutumnHasNoFlowers)
 }
 
 TEST(MeshSeasons, TheSeasonRowOfTheTreeIsUsedWhenNoLookIsGiven) {
-  Tree sakura = Grow("sakura-thesis", 6);
+  Tree sakura = GrowForMesh("sakura-thesis", 6);
   ASSERT_TRUE(sakura.params.Set(TreeParam::kSeason, 3).ok());
   TreeMesh mesh = BuildTreeMesh(sakura);
   EXPECT_EQ(mesh.look.season, Season::kWinter);
@@ -406,7 +406,7 @@ TEST(MeshSeasons, TheSeasonRowOfTheTreeIsUsedWhenNoLookIsGiven) {
 }
 
 TEST(MeshLeafShapes, QuadWidthFollowsTheShape) {
-  Tree tree = Grow("keyaki-thesis", 3);
+  Tree tree = GrowForMesh("keyaki-thesis", 3);
   const float size = static_cast<float>(tree.params.Get(ParamId::kLeafSize)) * kScale;
   for (LeafShape shape :
        {LeafShape::kBroad, LeafShape::kNeedle, LeafShape::kPalmate, LeafShape::kFan}) {

@@ -35,7 +35,7 @@ constexpr int kElementArrayBuffer = 34963;
 constexpr int kRepeat = 10497;
 constexpr int kClampToEdge = 33071;
 
-Tree Grow(const std::string& preset, int years) { return testing::GrowPreset(preset, years, 1); }
+Tree GrowForGltf(const std::string& preset, int years) { return testing::GrowPreset(preset, years, 1); }
 
 // The material's base colour comes from an embedded PNG (bufferView + mimeType) through a texture
 // and sampler; double-sided cut-outs (leaves, flowers) are alpha-masked and clamped, bark repeats.
@@ -134,7 +134,7 @@ void ExpectPrimitiveMatches(const Glb& glb, const json& primitive, const MeshBuf
 }
 
 TEST(TreeGltf, WritesAGlbWithBarkLeavesAndFlowers) {
-  TreeMesh mesh = BuildTreeMesh(Grow("sakura-thesis", 8));
+  TreeMesh mesh = BuildTreeMesh(GrowForGltf("sakura-thesis", 8));
   ASSERT_GT(mesh.flowers.vertex_count(), 0u);
   std::vector<unsigned char> bytes;
   ASSERT_EQ(WriteTreeGlb(mesh, &bytes).Line(), "");
@@ -207,7 +207,7 @@ TEST(TreeGltf, WritesAGlbWithBarkLeavesAndFlowers) {
 }
 
 TEST(TreeGltf, SkipsEmptyPrimitives) {
-  TreeMesh mesh = BuildTreeMesh(Grow("keyaki-thesis", 4));
+  TreeMesh mesh = BuildTreeMesh(GrowForGltf("keyaki-thesis", 4));
   ASSERT_EQ(mesh.flowers.vertex_count(), 0u);
   std::vector<unsigned char> bytes;
   ASSERT_EQ(WriteTreeGlb(mesh, &bytes).Line(), "");
@@ -223,7 +223,7 @@ TEST(TreeGltf, SkipsEmptyPrimitives) {
 
 TEST(TreeGltf, EmptyMeshGivesAValidSceneWithoutMesh) {
   std::vector<unsigned char> bytes{1, 2, 3};  // stale content is replaced
-  ASSERT_EQ(WriteTreeGlb(BuildTreeMesh(Grow("sakura-thesis", 0)), &bytes).Line(), "");
+  ASSERT_EQ(WriteTreeGlb(BuildTreeMesh(GrowForGltf("sakura-thesis", 0)), &bytes).Line(), "");
   Glb glb = ParseGlb(bytes);
   EXPECT_TRUE(glb.bin.empty());
   EXPECT_EQ(glb.gltf["asset"]["version"], "2.0");
@@ -238,7 +238,7 @@ TEST(TreeGltf, EmptyMeshGivesAValidSceneWithoutMesh) {
 }
 
 TEST(TreeGltf, RejectsInconsistentBuffers) {
-  TreeMesh good = BuildTreeMesh(Grow("tsutsuji-thesis", 3));
+  TreeMesh good = BuildTreeMesh(GrowForGltf("tsutsuji-thesis", 3));
   std::vector<unsigned char> bytes;
 
   TreeMesh out_of_range = good;
@@ -260,7 +260,7 @@ TEST(TreeGltf, RejectsInconsistentBuffers) {
 }
 
 TEST(TreeGltf, OutputIsDeterministic) {
-  TreeMesh mesh = BuildTreeMesh(Grow("sakura-thesis", 5));
+  TreeMesh mesh = BuildTreeMesh(GrowForGltf("sakura-thesis", 5));
   std::vector<unsigned char> a, b;
   ASSERT_EQ(WriteTreeGlb(mesh, &a).Line(), "");
   ASSERT_EQ(WriteTreeGlb(mesh, &b).Line(), "");
