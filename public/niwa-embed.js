@@ -45,6 +45,7 @@ class NiwaTree extends EmbedElement {
     this.animating = false;
     this.worker?.post('wind', { play: false });
     this.worker?.cancel('tree');
+    this.releaseWorker();
   }
 
   drawFrame() {

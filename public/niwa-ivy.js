@@ -39,7 +39,7 @@ class NiwaIvy extends EmbedElement {
 
   onRendererReady() {
     this.renderer.setVisible({ seeds: false });
-    if (this.pending.leafTexture) this.renderer.setLeafTexture(this.pending.leafTexture);
+    if (this.pending.leafTexture) this.showLeafTexture(this.pending.leafTexture);
     this.pending.leafTexture = null;
     if (this.pending.support) this.showSupport(this.pending.support);
     if (this.pending.ivy) this.showIvy(this.pending.ivy);
@@ -48,6 +48,7 @@ class NiwaIvy extends EmbedElement {
   disconnectedCallback() {
     this.animation = null;
     this.worker?.cancel('ivy');
+    this.releaseWorker();
   }
 
   // state= goes through the core's hash decoder; the other attributes are checked by the core when
@@ -87,7 +88,7 @@ class NiwaIvy extends EmbedElement {
     } else if (msg.type === 'ivy') {
       // The leaf texture (the .glb's pixels) comes with the client's first ivy only: keep it.
       if (msg.leafTexture) {
-        if (this.renderer) this.renderer.setLeafTexture(msg.leafTexture);
+        if (this.renderer) this.showLeafTexture(msg.leafTexture);
         else this.pending.leafTexture = msg.leafTexture;
       }
       if (this.renderer) this.showIvy(msg);
@@ -95,6 +96,12 @@ class NiwaIvy extends EmbedElement {
     } else if (msg.type === 'error' && (msg.id === undefined || msg.id === this.worker.latestId('ivy') || msg.id === this.worker.latestId('decode'))) {
       this.showMessage(msg.message);
     }
+  }
+
+  // Uploads the leaf texture and hands its pixels back (the next client's copy goes into them).
+  showLeafTexture(texture) {
+    this.renderer.setLeafTexture(texture);
+    this.worker.recycle({ leafTexture: { pixels: texture.pixels } });
   }
 
   showSupport(msg) {

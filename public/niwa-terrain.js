@@ -47,6 +47,7 @@ class NiwaTerrain extends EmbedElement {
   disconnectedCallback() {
     this.animation = null;
     this.worker?.cancel('terrain');
+    this.releaseWorker();
   }
 
   // The attributes as a share-link hash (builtin, preset, seed), so state= and the attributes go

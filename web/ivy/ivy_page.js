@@ -78,7 +78,15 @@ const progressSeen = [];
 // ---------------------------------------------------------------- rendering
 const camera = new OrbitCamera();
 let renderer = null;
-let leafTexture = null;  // the worker's leaf texture ({width, height, pixels}), for a new renderer
+let leafTexture = null;  // the worker's leaf texture ({width, height, pixels}) until a renderer has it
+// Uploads the leaf texture kept for the renderer, then hands its pixels back to the worker (the
+// next client's copy goes into them: web/worker/ivy_handler.js).
+function installLeafTexture() {
+  if (!renderer || !leafTexture) return;
+  renderer.setLeafTexture(leafTexture);
+  worker.recycle({ leafTexture: { pixels: leafTexture.pixels } });
+  leafTexture = null;
+}
 let ivySerial = 0;
 let installedSerial = 0;  // the ivy whose buffers are in place (a big one goes up in parts)
 // Frames on demand over the renderer's progressive parts (web/gl/progressive_loop.js); the hooks
@@ -107,7 +115,7 @@ async function startRenderer() {
   try {
     await loop.start(() => {
       renderer = new IvyRenderer(ui.canvas);
-      if (leafTexture) renderer.setLeafTexture(leafTexture);
+      installLeafTexture();
       return renderer;
     }, {
       canvas: ui.canvas, camera,
@@ -275,7 +283,7 @@ worker.on('ivy', (msg) => {
   // The leaf texture comes once per worker, with its first ivy: kept even from a superseded one.
   if (msg.leafTexture) {
     leafTexture = msg.leafTexture;
-    renderer?.setLeafTexture(leafTexture);
+    installLeafTexture();
   }
   if (!controller.isLatest(msg)) return;
   const s = msg.stats;

@@ -64,13 +64,23 @@ export class EmbedElement extends HTMLElement {
 
   // This element's client of the page's one worker (attributes may arrive before connectedCallback).
   ensureWorker() {
-    if (this.worker) return;
+    if (this.worker && !this.worker.isClosed) return;
     const options = { onFailure: (text) => this.showMessage(text) };
     if (this.study) options.study = this.study;
     this.worker = new WorkerClient(this.client, options);
     for (const type of this.messages) this.worker.on(type, (msg) => this.onWorkerMessage(msg));
     if (!studyReady.has(this.study)) studyReady.set(this.study, this.worker.request('init', { hash: '' }, { done: ['ready'] }).reply);
     this.ready = studyReady.get(this.study);
+  }
+
+  // Taken off the page (not moved: still out of it after this task's microtasks): the element's
+  // client ends, and the worker lets its sessions and returned buffers go (worker_client.js
+  // close; the closed client's late calls do nothing); put back, it gets a new client and grows
+  // again. Resolves to the worker's 'closed'
+  // reply (null when there was nothing to close), also kept as this.closed (tests).
+  releaseWorker() {
+    this.closed = Promise.resolve().then(() => (this.isConnected || !this.worker ? null : this.worker.close()));
+    return this.closed;
   }
 
   connectedCallback() {

@@ -17,7 +17,7 @@ import {
 } from '../shell/study_page.js';
 import { StudyController, numberOr } from '../shell/study_controller.js';
 import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
-import { treeExtras } from '../shell/worker_client.js';
+import { atlasGroups, treeExtras } from '../shell/worker_client.js';
 import { ExportGuard, cutRefusal } from './cut_rules.js';
 import { EditFeedback } from './edit_feedback.js';
 import { GettingStarted } from './getting_started.js';
@@ -491,7 +491,12 @@ worker.on('tree', (msg) => {
 });
 
 worker.on('motionAtlas', (msg) => {
-  renderer?.setMotionHybrid(msg.hybrid, governor.budget()).then((painted) => {
+  countReuse('motion', msg.buffers);
+  // Painted (or dropped): its buffers go back for the worker's next atlas to fill.
+  const giveBack = () => worker.recycle(atlasGroups(msg.hybrid));
+  if (!renderer) return giveBack();
+  renderer.setMotionHybrid(msg.hybrid, governor.budget()).then((painted) => {
+    giveBack();
     if (painted) setHooks({ motionTextured: renderer.motion.hybrid.textured.join(',') });  // tests
     if (governor.moving()) requestFrame();
   });
