@@ -16,6 +16,7 @@
 // The shadow root, camera, frame loop and the shared worker are web/shell/embed_element.js's.
 import { EmbedElement, attributeValue } from './web/shell/embed_element.js';
 import { IvyRenderer } from './web/ivy/ivy_renderer.js';
+import { DEFAULT_SUNS } from './web/gl/sun.js';
 import { setHooks } from './web/shell/test_hooks.js';
 
 // Attribute -> state key (the ivy state JSON of core/ivy/ivy_state.h).
@@ -33,8 +34,13 @@ class NiwaIvy extends EmbedElement {
     this.animation = null;
   }
 
-  createRenderer(canvas) {
-    return new IvyRenderer(canvas);
+  // The ivy as the layer of the element's Frame, fitted to the view, in the ivy's sun.
+  createRenderer(frame) {
+    return new IvyRenderer(frame);
+  }
+
+  frameOptions() {
+    return { sun: DEFAULT_SUNS.ivy, ground: false, fit: true, what: 'the ivy' };
   }
 
   onRendererReady() {

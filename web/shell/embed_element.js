@@ -3,18 +3,21 @@
 // It owns what every embed has: the shadow root (style, canvas, one message line), the orbit
 // camera, the frame loop, this element's client of the page's ONE Web Worker (so one WASM
 // instance for every embed on a page; the worker keeps the clients apart by id), one `init` per
-// study for the whole page, and the renderer's start. A subclass says which renderer to make and
-// which worker messages it wants, and grows its own study:
+// study for the whole page, and the view's one Frame (web/gl/frame.js: camera, sun, ground) with
+// the study's renderer as its layer. A subclass says which renderer to make, the frame's options
+// and which worker messages it wants, and grows its own study:
 //
 //   class NiwaIvy extends EmbedElement {
 //     constructor() { super({ kind: 'ivy', label: 'Niwa ivy', study: 'ivy', messages: ['ivy', 'error'] }); }
-//     createRenderer(canvas) { return new IvyRenderer(canvas); }   // has async init()
+//     createRenderer(frame) { return new IvyRenderer(frame); }     // a layer, with async init()
+//     frameOptions() { return { sun: DEFAULT_SUNS.ivy, ground: false, fit: true }; }
 //     load() { ... }                  // read the attributes, ask the worker
 //     onWorkerMessage(msg) { ... }    // the messages named above
 //   }
 //
 // Does not: know any study's attributes, state or messages, or draw anything itself; messages are
 // shown as text, never as markup.
+import { Frame } from '../gl/frame.js';
 import { FrameLoop } from '../gl/frame_loop.js';
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { setHooks } from './test_hooks.js';
@@ -55,7 +58,8 @@ export class EmbedElement extends HTMLElement {
     this.line.setAttribute('aria-live', 'polite');
     shadow.append(style, this.canvas, this.line);
     this.camera = new OrbitCamera();
-    this.renderer = null;
+    this.frame = null;     // the view's Frame, once its layer is in
+    this.renderer = null;  // the study's layer of it
     this.rendererReady = null;
     this.frames = new FrameLoop(() => this.drawFrame());
     this.worker = null;
@@ -95,10 +99,12 @@ export class EmbedElement extends HTMLElement {
 
   async startRenderer() {
     try {
-      const renderer = this.createRenderer(this.canvas);
-      await renderer.init();
+      const frame = new Frame(this.canvas, { camera: this.camera, request: () => this.requestFrame(), ...this.frameOptions() });
+      await frame.init();
+      const renderer = await frame.addLayer(this.createRenderer(frame));
+      this.frame = frame;
       this.renderer = renderer;
-      this.frames.attach(renderer.gl, this.canvas);  // one frame in flight (web/gl/frame_loop.js)
+      this.frames.attach(frame.gl, this.canvas);  // one frame in flight (web/gl/frame_loop.js)
       this.camera.attach(this.canvas, () => this.onCameraMove());
       new ResizeObserver(() => this.requestFrame()).observe(this.canvas);
       this.onRendererReady();
@@ -116,9 +122,15 @@ export class EmbedElement extends HTMLElement {
     if (this.renderer) this.frames.request();
   }
 
-  // Overridable: what a frame draws, what a camera move does, what waits for the renderer.
+  // Overridable: the Frame's options (web/gl/frame.js: sun, ground, fit, what; default: the
+  // tree's sun and a ground), what a frame draws, what a camera move does, what waits for the
+  // renderer.
+  frameOptions() {
+    return {};
+  }
+
   drawFrame() {
-    this.renderer.render(this.camera);
+    this.frame.render(this.camera);
   }
 
   onCameraMove() {
