@@ -70,7 +70,7 @@
 
 /**
  * The client's buffers back once they are on its GPU (tree: the mesh parts, 'sway.poses' of a pose,
- * 'cards.*' and 'lines.*' of a draw list; ivy: stems, leaves, suckers, buds), as {"<part>.<name>": ArrayBuffer} (web/shell/worker_client.js recycle), transferred;
+ * 'cards.*' and 'lines.*' of a draw list, 'atlas.*' of a hybrid or motion atlas; ivy: stems, leaves, suckers, buds, 'support.*', and 'leafTexture.pixels', which any client's next copy may fill), as {"<part>.<name>": ArrayBuffer} (web/shell/worker_client.js recycle), transferred;
  * the next reply copies into them. No reply.
  * @typedef {Envelope & {type: 'recycle', buffers: Object<string, ArrayBuffer>}} RecycleMessage
  */
