@@ -21,7 +21,7 @@ import { Frame } from '../gl/frame.js';
 import { FrameLoop } from '../gl/frame_loop.js';
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { setHooks } from './test_hooks.js';
-import { WorkerClient } from './worker_client.js';
+import { StudyController } from './study_controller.js';
 
 const STYLE = `
 :host { display: inline-block; position: relative; width: 320px; height: 320px; contain: content; }
@@ -66,12 +66,20 @@ export class EmbedElement extends HTMLElement {
     this.ready = null;  // this study's init reply (shared by every element of the study)
   }
 
-  // This element's client of the page's one worker (attributes may arrive before connectedCallback).
+  // This element's client of the page's one worker (attributes may arrive before connectedCallback):
+  // the client of a study controller of its own (web/shell/study_controller.js: no history, no
+  // Cancel, its hooks on this element, a worker failure on the element's line); the element's
+  // handlers of the messages it names (its own error replies included) are installed on it.
   ensureWorker() {
     if (this.worker && !this.worker.isClosed) return;
-    const options = { onFailure: (text) => this.showMessage(text) };
-    if (this.study) options.study = this.study;
-    this.worker = new WorkerClient(this.client, options);
+    this.controller = new StudyController({
+      study: this.study, name: this.client, history: false, ui: {}, hooks: this,
+      notices: { set: (source, lines) => {
+        const text = [lines].flat().filter(Boolean).join('\n');
+        if (text) this.showMessage(text);
+      } },
+    });
+    this.worker = this.controller.worker;
     for (const type of this.messages) this.worker.on(type, (msg) => this.onWorkerMessage(msg));
     if (!studyReady.has(this.study)) studyReady.set(this.study, this.worker.request('init', { hash: '' }, { done: ['ready'] }).reply);
     this.ready = studyReady.get(this.study);

@@ -38,13 +38,16 @@ export class StudyController {
   // at most for the update in flight to be answered (issue 17: a one-second slider drag regrew 17
   // trees) before it supersedes it (a long grow never holds the newest edit back). name: the
   // controller's client (default: the study's name); history: false for a page whose hash is its
-  // own view, not a state (the grove: no history entries, back/forward decode nothing); a page
-  // without Cancel omits ui.cancel (and ui.progress).
+  // own view, not a state (the grove, an embed: no history entries, back/forward decode nothing);
+  // a page without Cancel omits ui.cancel (and ui.progress); hooks: the element whose data-* the
+  // tests read (an embed's own; default the document's).
   constructor({
     study, name = study, notices, ui, fields = {}, panel, errors, state, onCancel, onRestart, onError,
     viewHash, historyExtra, onRestore, onHistoryChange, debounceMs = 250, coalesceMs = 400, history = true,
+    hooks = document.documentElement,
   }) {
     this.study = study;
+    this.hooks = hooks;
     this.notices = notices;
     this.ui = ui;
     this.state = state;
@@ -70,7 +73,7 @@ export class StudyController {
     this.onFailure = (text) => {
       this.inFlight = false;
       notices.set('error', text);
-      setHooks({ status: 'error' });
+      setHooks({ status: 'error' }, this.hooks);
     };
     this.worker = new WorkerClient(name, { study, onFailure: this.onFailure, onRestart: () => onRestart?.() });
     this.history = history ? new HashHistory({
@@ -83,7 +86,7 @@ export class StudyController {
     ui.cancel?.addEventListener('click', () => this.cancel(onCancel));
     this.worker.on('export', (msg) => this.#exported(msg));
     this.worker.on('error', (msg) => this.#failed(msg));
-    if (hookValue('growRequests') === undefined) setHooks({ growRequests: 0, restageRequests: 0 });
+    if (hookValue('growRequests', this.hooks) === undefined) setHooks({ growRequests: 0, restageRequests: 0 }, this.hooks);
   }
 
   // Another client of the page's worker for this study (the grove's one per unique tree): a worker
@@ -113,8 +116,8 @@ export class StudyController {
     this.exports.clear();
     this.showWork(false);
     if (this.ui.progress) this.ui.progress.textContent = onCancel ? onCancel() : 'cancelled';
-    bumpHook('cancels');
-    setHooks({ status: 'cancelled' });
+    bumpHook('cancels', this.hooks);
+    setHooks({ status: 'cancelled' }, this.hooks);
     restartWorker();
   }
 
@@ -132,13 +135,13 @@ export class StudyController {
     this.pendingStage = null;
     this.editPending = false;
     this.editQueued = false;
-    setHooks({ status: 'growing', updateStage: sent });
+    setHooks({ status: 'growing', updateStage: sent }, this.hooks);
     const request = this.worker.request('update', { state: this.state(), stage: sent, ...fields }, { group: this.study, done });
     this.latestId = request.id;
     this.inFlight = true;
     this.inFlightSince = performance.now();
     this.showWork(true);
-    bumpHook(sent === 'grow' ? 'growRequests' : 'restageRequests');
+    bumpHook(sent === 'grow' ? 'growRequests' : 'restageRequests', this.hooks);
     request.reply.then((reply) => this.#answered(request.id, reply));
     return { ...request, stage: sent };
   }
@@ -153,7 +156,7 @@ export class StudyController {
     this.pendingSend = send;
     this.pendingStage = this.pendingStage ? earlier(this.pendingStage, stage) : stage;
     clearTimeout(this.debounceTimer);
-    setHooks({ status: 'pending' });
+    setHooks({ status: 'pending' }, this.hooks);
     this.debounceTimer = setTimeout(() => this.#flush(), this.debounceMs);
   }
 
@@ -168,7 +171,7 @@ export class StudyController {
     if (!this.editPending) return;
     const age = performance.now() - this.inFlightSince;
     if (this.inFlight && age < this.coalesceMs) {
-      if (!this.editQueued) bumpHook('editsCoalesced');
+      if (!this.editQueued) bumpHook('editsCoalesced', this.hooks);
       this.editQueued = true;
       clearTimeout(this.queueTimer);
       this.queueTimer = setTimeout(() => this.#flush(), this.coalesceMs - age);
@@ -183,7 +186,7 @@ export class StudyController {
     if (id !== this.latestId) return;  // superseded: a newer update is in flight
     this.inFlight = false;
     clearTimeout(this.queueTimer);
-    if (reply && Array.isArray(reply.stages)) setHooks({ restagedStages: reply.stages.join(',') });
+    if (reply && Array.isArray(reply.stages)) setHooks({ restagedStages: reply.stages.join(',') }, this.hooks);
     if (this.editQueued && this.editPending) {
       this.editQueued = false;
       this.pendingSend();
@@ -239,7 +242,7 @@ export class StudyController {
     this.exports.delete(msg.id);
     this.showWork(this.working);
     download(new Blob([msg.bytes], { type: file.type }), file.name, this.ui.shareStatus);
-    setHooks({ exported: `${msg.format}:${msg.bytes.byteLength}` });
+    setHooks({ exported: `${msg.format}:${msg.bytes.byteLength}` }, this.hooks);
   }
 
   // An error reply: an export's goes to the share line (or beside its button); the latest
@@ -266,7 +269,7 @@ export class StudyController {
     this.notices.set('error', msg.message);
     this.showFieldError(msg);
     if (this.ui.progress) this.ui.progress.textContent = '';
-    setHooks({ status: 'error', error: msg.message });
+    setHooks({ status: 'error', error: msg.message }, this.hooks);
     this.onError(msg, 'after');
   }
 }
