@@ -28,8 +28,9 @@ class NiwaTree extends EmbedElement {
     this.pendingTree = null;
   }
 
-  createRenderer(canvas) {
-    return new Renderer(canvas);
+  // The tree as the layer of the element's Frame (the tree's sun, a ground).
+  createRenderer(frame) {
+    return new Renderer(frame);
   }
 
   onRendererReady() {
@@ -45,10 +46,11 @@ class NiwaTree extends EmbedElement {
     this.animating = false;
     this.worker?.post('wind', { play: false });
     this.worker?.cancel('tree');
+    this.releaseWorker();
   }
 
   drawFrame() {
-    this.renderer.render(this.camera);
+    this.frame.render(this.camera);
     if (this.poseDrawPending) {  // the worker sends the next pose once this one is on screen
       this.poseDrawPending = false;
       this.worker.post('poseDone');

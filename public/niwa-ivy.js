@@ -16,6 +16,7 @@
 // The shadow root, camera, frame loop and the shared worker are web/shell/embed_element.js's.
 import { EmbedElement, attributeValue } from './web/shell/embed_element.js';
 import { IvyRenderer } from './web/ivy/ivy_renderer.js';
+import { DEFAULT_SUNS } from './web/gl/sun.js';
 import { setHooks } from './web/shell/test_hooks.js';
 
 // Attribute -> state key (the ivy state JSON of core/ivy/ivy_state.h).
@@ -33,13 +34,18 @@ class NiwaIvy extends EmbedElement {
     this.animation = null;
   }
 
-  createRenderer(canvas) {
-    return new IvyRenderer(canvas);
+  // The ivy as the layer of the element's Frame, fitted to the view, in the ivy's sun.
+  createRenderer(frame) {
+    return new IvyRenderer(frame);
+  }
+
+  frameOptions() {
+    return { sun: DEFAULT_SUNS.ivy, ground: false, fit: true, what: 'the ivy' };
   }
 
   onRendererReady() {
     this.renderer.setVisible({ seeds: false });
-    if (this.pending.leafTexture) this.renderer.setLeafTexture(this.pending.leafTexture);
+    if (this.pending.leafTexture) this.showLeafTexture(this.pending.leafTexture);
     this.pending.leafTexture = null;
     if (this.pending.support) this.showSupport(this.pending.support);
     if (this.pending.ivy) this.showIvy(this.pending.ivy);
@@ -48,6 +54,7 @@ class NiwaIvy extends EmbedElement {
   disconnectedCallback() {
     this.animation = null;
     this.worker?.cancel('ivy');
+    this.releaseWorker();
   }
 
   // state= goes through the core's hash decoder; the other attributes are checked by the core when
@@ -87,7 +94,7 @@ class NiwaIvy extends EmbedElement {
     } else if (msg.type === 'ivy') {
       // The leaf texture (the .glb's pixels) comes with the client's first ivy only: keep it.
       if (msg.leafTexture) {
-        if (this.renderer) this.renderer.setLeafTexture(msg.leafTexture);
+        if (this.renderer) this.showLeafTexture(msg.leafTexture);
         else this.pending.leafTexture = msg.leafTexture;
       }
       if (this.renderer) this.showIvy(msg);
@@ -95,6 +102,12 @@ class NiwaIvy extends EmbedElement {
     } else if (msg.type === 'error' && (msg.id === undefined || msg.id === this.worker.latestId('ivy') || msg.id === this.worker.latestId('decode'))) {
       this.showMessage(msg.message);
     }
+  }
+
+  // Uploads the leaf texture and hands its pixels back (the next client's copy goes into them).
+  showLeafTexture(texture) {
+    this.renderer.setLeafTexture(texture);
+    this.worker.recycle({ leafTexture: { pixels: texture.pixels } });
   }
 
   showSupport(msg) {

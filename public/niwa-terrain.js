@@ -19,6 +19,7 @@ import { EmbedElement } from './web/shell/embed_element.js';
 import { setHooks } from './web/shell/test_hooks.js';
 import { gridIndices } from './web/terrain/grid_indices.js';
 import { TerrainRenderer } from './web/terrain/terrain_renderer.js';
+import { DEFAULT_SUNS } from './web/gl/sun.js';
 
 class NiwaTerrain extends EmbedElement {
   static get observedAttributes() { return ['builtin', 'method', 'seed', 'state']; }
@@ -31,8 +32,13 @@ class NiwaTerrain extends EmbedElement {
     this.animation = null;
   }
 
-  createRenderer(canvas) {
-    return new TerrainRenderer(canvas);
+  // The mountain as the layer of the element's Frame, fitted to the view, in the terrain's sun.
+  createRenderer(frame) {
+    return new TerrainRenderer(frame);
+  }
+
+  frameOptions() {
+    return { sun: DEFAULT_SUNS.terrain, ground: false, fit: true, what: 'the mountain' };
   }
 
   onRendererReady() {
@@ -40,13 +46,14 @@ class NiwaTerrain extends EmbedElement {
   }
 
   drawFrame() {
-    const drawn = this.renderer.render(this.camera);
+    const drawn = this.frame.render(this.camera);
     setHooks({ drawnLines: drawn.lines, drawnTriangles: drawn.triangles }, this);
   }
 
   disconnectedCallback() {
     this.animation = null;
     this.worker?.cancel('terrain');
+    this.releaseWorker();
   }
 
   // The attributes as a share-link hash (builtin, preset, seed), so state= and the attributes go

@@ -3,10 +3,11 @@
 // back, views of the exact length), else into fresh ones with headroom; another client's buffers,
 // a too-small one and a far too big one are not used (and dropped, counted); empty views take
 // nothing; a pooled buffer its group's replies have not reused for MAX_IDLE_REPLIES is dropped (the
-// pool does not only grow), and forget() drops a client's.
+// pool does not only grow), a buffer of a group never asked for again is dropped MAX_IDLE_MS after it
+// came back (whoever asks next), and forget() drops a client's.
 // Run: node tests/cli/transfer_pool.test.mjs
 import { check, finish } from '../support/cli_pair.mjs';
-import { HEADROOM, MAX_IDLE_REPLIES, SHRINK, TransferPool, takeBuffers } from '../../web/worker/transfer.js';
+import { HEADROOM, MAX_IDLE_MS, MAX_IDLE_REPLIES, SHRINK, TransferPool, takeBuffers } from '../../web/worker/transfer.js';
 
 const pool = new TransferPool();
 const views = (n) => ({ positions: Float32Array.from({ length: 3 * n }, (_, i) => i / 7), indices: Uint32Array.from({ length: n }, (_, i) => i) });
@@ -84,6 +85,27 @@ aging.give('c', { 'atlas.bark.positions': new ArrayBuffer(64) });
 for (let k = 0; k < MAX_IDLE_REPLIES; ++k) aging.take('c', 'atlas', { x: new Float32Array(0) }, [], counts);
 check('a nested group is not aged by its parent\'s replies', aging.held('c').buffers === 2, JSON.stringify(aging.held('c')));
 check('forget drops a client\'s buffers', aging.forget('c') === 2 && aging.held('c').buffers === 0);
+
+// Time: a group never asked for again (the atlas once the page left hybrid mode) ages out on the
+// clock, at the next give or take of any client or group; one given back since is kept.
+let clock = 0;
+const timed = new TransferPool({ now: () => clock });
+check('the pool\'s idle time is a minute by default', MAX_IDLE_MS === 60_000 && new TransferPool().maxIdleMs === MAX_IDLE_MS);
+timed.give('d', { 'atlas.bark.positions': new ArrayBuffer(256), 'atlas.leaves.positions': new ArrayBuffer(128) });
+timed.give('e', { 'support.positions': new ArrayBuffer(64) });
+clock = MAX_IDLE_MS / 2;
+timed.give('d', { 'atlas.leaves.positions': new ArrayBuffer(128) });  // given back again: its time starts afresh
+counts = { reused: 0, fresh: 0, dropped: 0 };
+clock = MAX_IDLE_MS;
+timed.take('d', 'bark', views(4), [], counts);
+check('kept up to MAX_IDLE_MS', timed.held('d').buffers === 2 && timed.held('e').buffers === 1 && counts.dropped === 0, JSON.stringify({ d: timed.held('d'), counts }));
+clock = MAX_IDLE_MS + 1;
+timed.take('d', 'bark', views(4), [], counts);
+check('a group never asked for again is dropped after MAX_IDLE_MS, any client\'s', timed.held('d').buffers === 1
+  && timed.held('d').bytes === 128 && timed.held('e').buffers === 0 && counts.dropped === 2, JSON.stringify({ d: timed.held('d'), e: timed.held('e'), counts }));
+clock = 2 * MAX_IDLE_MS;
+timed.give('f', {});
+check('a give ages them too (nothing left)', timed.held('d').buffers === 0 && !timed.clients.has('d'), JSON.stringify(timed.held('d')));
 
 // takeBuffers (the replies that are not pooled): one fresh buffer each, exactly the view's bytes.
 transfer = [];

@@ -1,23 +1,26 @@
 // One frame of several studies in one canvas: the WebGL2 context, one orbit camera, one sun
-// (web/gl/sun.js), one ground (web/gl/ground.js) and the loop that draws them, with layers added
-// to it (the tree, ivy and terrain renderers are layers; the garden, issue 33, draws its studies
-// this way). The world is the studies' one frame: metres, y up.
+// (web/gl/sun.js), one ground (web/gl/ground.js), with layers added to it (the tree, ivy and
+// terrain renderers are layers), drawn whole or in parts. Every study page and embed draws through
+// one Frame (the tree page, the ivy and terrain pages, <niwa-*>), so any of them can draw several
+// studies; the garden (issue 33) draws its studies this way. The world is the studies' one frame:
+// metres, y up.
 //
-//   const frame = new Frame(canvas);
+//   const frame = new Frame(canvas, { camera });
 //   await frame.init();
 //   const tree = await frame.addLayer(new Renderer(frame));      // web/tree/tree_renderer.js
 //   const ivy = await frame.addLayer(new IvyRenderer(frame));    // web/ivy/ivy_renderer.js
-//   tree.setTree(...); ivy.setIvy(...); frame.frameAll(); frame.request();
+//   tree.setTree(...); ivy.setIvy(...); frame.frameAll(); frame.render();
 //
-// A layer: init() (async: its programs in frame.gl), frameSteps(view) -> the steps of
-// web/gl/progressive_frame.js (or draw(gl, view) for a layer drawn whole), worldBounds() (its
-// box in metres, or null), footprint() (optional: the ground under it, {center, extent,
-// shadowRadius, crownHeight}), dispose(). view: {viewProjection, eye, light (unit, towards the
-// sun), scale (the drawing buffer's), width, height}. A study's renderer extends StudyLayer
-// (below): the one place of what every layer does, in a Frame or alone on a page's canvas.
-// Does not: talk to the worker, know any study's meshes, or draw in parts across animation frames
-// (a frame is drawn whole; a study page draws its one layer alone, in parts: StudyLayer.render).
-import { createContext, resizeCanvas } from './context.js';
+// A layer: init() (async: its programs in frame.gl), layerSteps(view, cheap) -> {steps, totals}
+// (the steps of web/gl/progressive_frame.js and what they draw: {triangles, lines, drawCalls, ...};
+// or draw(gl, view) for a layer drawn whole), worldBounds() (its box in metres, or null),
+// footprint() (optional: the ground under it, {center, extent, shadowRadius, crownHeight}),
+// ready() (optional: false until it can draw), uploading (optional: true while its new buffers go
+// up), dispose(). view: {viewProjection, eye, light (unit, towards the sun), scale (the drawing
+// buffer's), width, height}. A study's renderer extends StudyLayer (below).
+// Does not: talk to the worker, know any study's meshes, or pace its frames (the page's FrameLoop,
+// FrameGovernor or ProgressiveLoop call render; a frame alone asks its own FrameLoop).
+import { createContext, finishGpu, resizeCanvas } from './context.js';
 import { FrameLoop } from './frame_loop.js';
 import { Ground, groundUnder } from './ground.js';
 import { OrbitCamera } from './orbit_camera.js';
@@ -27,31 +30,48 @@ import { DEFAULT_SUNS, defaultSunDirection, sunDirection } from './sun.js';
 
 const COMMON_SHADERS = new URL('../../shaders/common/', import.meta.url).href;
 
+// Layers' totals that add up in a frame of several (the others: the first layer's that has one).
+const SUMMED = new Set(['triangles', 'lines', 'drawCalls']);
+
 export class Frame {
-  // canvas: the one canvas; sun: {elevation, azimuth} in degrees (default: the tree's);
-  // ground: false leaves the ground out (a terrain layer is its own ground).
-  constructor(canvas, { sun = DEFAULT_SUNS.tree, ground = true } = {}) {
+  // canvas: the one canvas; camera: the page's orbit camera (default: a new one); sun: {elevation,
+  // azimuth} in degrees (default: the tree's); ground: false leaves the ground out (a terrain
+  // layer is its own ground, the ivy's support is its); fit: a page of one study draws it fitted
+  // to its view (ten units, the ivy and terrain pages' look) instead of in metres (the layers
+  // added read frame.fit: StudyLayer.fitView); request: how the frame asks for a frame (the
+  // page's loop; default: its own FrameLoop drawing it whole); what: the view's name in the error
+  // when WebGL2 is missing.
+  constructor(canvas, { camera = new OrbitCamera(), sun = DEFAULT_SUNS.tree, ground = true, fit = false, request = null, what = 'the scene' } = {}) {
     this.canvas = canvas;
-    this.gl = createContext(canvas, 'the scene');
-    this.camera = new OrbitCamera();
+    this.gl = createContext(canvas, what);
+    this.camera = camera;
     this.layers = [];
+    this.withGround = ground;
     this.showGround = ground;
+    this.fit = fit;
     this.ground = null;
     this.light = sunDirection(sun.elevation, sun.azimuth);
-    this.progress = new ProgressiveFrame(this.gl);
-    this.loop = new FrameLoop(() => this.render(), { gl: this.gl });
+    this.progress = new ProgressiveFrame(this.gl);  // the frame being drawn (in parts when over budget)
+    this.requestFrame = request;
+    this.loop = null;
+    this.scale = 1;  // the drawing buffer's scale of the last frame (FrameGovernor)
+    this.frameTotals = {};
+    this.frameCpuMs = 0;
     this.lastFrame = { layers: 0, steps: 0 };
   }
 
-  // Compiles the ground's program; call once before the first frame.
+  // Compiles the ground's program (when the frame has a ground); call once before the first frame.
   async init() {
+    if (!this.withGround) return;
     const p = await loadPrograms(this.gl, COMMON_SHADERS, { ground: ['ground.vert', 'ground.frag'] });
     this.groundProgram = p.ground;
     this.ground = new Ground(this.gl, p.ground);
   }
 
-  // Adds a layer (its init() runs first); resolves to the layer, drawn from the next frame on.
+  // Adds a layer (its init() runs first); resolves to the layer, drawn from the next frame on. The
+  // layer takes the frame's sun.
   async addLayer(layer) {
+    layer.light = this.light;
     await layer.init?.();
     this.layers.push(layer);
     this.request();
@@ -70,7 +90,10 @@ export class Frame {
   // The one sun of every layer: elevation and azimuth in degrees (core/light's convention).
   setSun(elevationDeg, azimuthDeg) {
     const light = sunDirection(elevationDeg, azimuthDeg);
-    if (light) this.light = light;
+    if (light) {
+      this.light = light;
+      for (const layer of this.layers) layer.light = light;
+    }
     this.request();
   }
 
@@ -114,91 +137,26 @@ export class Frame {
     return groundUnder(footprint, this.light);
   }
 
-  // Draws one whole frame now: cleared to the background, the ground, then every layer in the
-  // order added. Returns {layers, steps}.
-  render() {
-    if (!this.ground) return false;
-    resizeCanvas(this.canvas);
-    const view = {
-      viewProjection: this.camera.viewProjection(this.canvas.width / this.canvas.height), eye: this.camera.position(),
-      light: this.light, scale: 1, width: this.canvas.width, height: this.canvas.height,
-    };
-    const gl = this.gl;
-    const steps = [];
-    if (this.showGround) {
-      const ground = this.#groundOptions();
-      steps.push({ primitives: 0, setup: () => {}, draw: () => this.ground.draw(view.viewProjection, ground) });
-    }
-    for (const layer of this.layers) {
-      if (layer.frameSteps) steps.push(...layer.frameSteps(view));
-      else if (layer.draw) steps.push({ primitives: 0, setup: () => {}, draw: () => layer.draw(gl, view) });
-    }
-    this.progress.begin(this.canvas, steps);
-    this.progress.run();
-    gl.bindVertexArray(null);
-    this.lastFrame = { layers: this.layers.length, steps: steps.length };
-    return this.lastFrame;
-  }
-
-  // Asks for a frame (several requests before it runs make one).
-  request() {
-    this.loop.request();
-  }
-
-  // Disposes of every layer and the frame's own objects.
-  dispose() {
-    for (const layer of this.layers.splice(0)) layer.dispose?.();
-    this.ground?.dispose();
-    if (this.groundProgram) this.gl.deleteProgram(this.groundProgram.program);
-    this.ground = null;
-  }
-}
-
-// What every study's renderer shares as a layer (the tree's, the ivy's and the terrain's extend
-// it; moss, bark and the garden's next): the target it draws in (a Frame: the frame's context,
-// camera, sun and ground; or a canvas of its own: its own context, fitted view and sun), its sun,
-// its box in the frame's world, and, alone on a page's canvas, the frame drawn in parts under
-// the page's camera (web/gl/progressive_frame.js; the page's FrameGovernor or ProgressiveLoop
-// paces it) from the same steps it gives a Frame.
-// A subclass gives layerSteps(view) -> {steps, totals} (the steps of its study under `view`, and
-// what they draw), and may give aloneSteps(view, quality) (alone: its own ground, a cheaper
-// representation), ready() (false until its programs exist), worldBounds() (when it is not
-// boundsView), dispose() (calling super.dispose()).
-export class StudyLayer {
-  // target: a canvas (the layer makes its context; `what` names it in the error when WebGL2 is
-  // missing) or a Frame ({canvas, gl}: a layer of it); study: its default sun (web/gl/sun.js).
-  constructor(target, { what, study }) {
-    const frame = target && target.gl && target.canvas ? target : null;
-    this.canvas = frame ? frame.canvas : target;
-    this.gl = frame ? frame.gl : createContext(this.canvas, what);
-    this.fitView = !frame;  // alone: the study fitted to the page's view; in a Frame: its world
-    this.light = defaultSunDirection(study);
-    this.boundsView = null;  // the study's box in view units (alone) or the frame's world (metres)
-    this.progress = new ProgressiveFrame(this.gl);  // the frame being drawn in parts (alone)
-    this.frameTotals = {};
-    this.frameCpuMs = 0;
-    this.scale = 1;  // the drawing buffer's scale of the last frame (FrameGovernor)
-  }
-
-  // The sun (core/light's convention): elevation and azimuth in degrees; in a Frame, the frame's.
-  setSun(elevationDeg, azimuthDeg) {
-    const light = sunDirection(elevationDeg, azimuthDeg);
-    if (light) this.light = light;
-  }
-
-  // False while the layer cannot draw (its programs not made yet): render() draws nothing.
+  // False while the frame cannot draw (its ground or a layer's programs not made yet).
   ready() {
-    return true;
+    return !(this.withGround && !this.ground) && this.layers.every((layer) => layer.ready?.() !== false);
   }
 
-  // Alone on its canvas under `camera`. quality: {scale, cheap} from a FrameGovernor
+  // True while a layer's new buffers go up in parts (the page keeps the last frame meanwhile).
+  get uploading() {
+    return this.layers.some((layer) => layer.uploading);
+  }
+
+  // Draws the frame under `camera` (default: the frame's): cleared to the background, the ground,
+  // then every layer in the order added. quality: {scale, cheap} from a FrameGovernor
   // (web/gl/frame_governor.js), or omitted for full quality; scale < 1 draws into a smaller
-  // drawing buffer (the browser stretches it). budget: primitives this call may draw; a bigger
-  // frame is drawn over several calls and returns partial: true until the call that finishes it:
-  // call again with resume: true (the same frame goes on; anything else starts a new frame).
-  // Returns what the whole frame draws (the layer's totals), with cpuMs (this frame's CPU time so
-  // far), scale, partial and drawnPrimitives (this call's).
-  render(camera, quality = null, { budget = Infinity, resume = false } = {}) {
+  // drawing buffer (the browser stretches it), cheap > 0 lets a layer draw its cheaper
+  // representation. budget: primitives this call may draw; a bigger frame is drawn over several
+  // calls and returns partial: true until the call that finishes it: call again with resume: true
+  // (the same frame goes on; anything else starts a new frame). Returns what the whole frame draws
+  // (the layers' totals, the ground's included), with cpuMs (this frame's CPU time so far),
+  // scale, partial, drawnPrimitives (this call's), layers and steps; undefined before it can draw.
+  render(camera = this.camera, quality = null, { budget = Infinity, resume = false } = {}) {
     if (!this.ready()) return undefined;
     const start = performance.now();
     if (!resume || !this.progress.pending()) this.#startFrame(camera, quality, budget);
@@ -215,24 +173,130 @@ export class StudyLayer {
     this.scale = quality?.scale || 1;
     resizeCanvas(this.canvas, this.scale);
     this.frameCpuMs = 0;
-    const view = { viewProjection: camera.viewProjection(this.canvas.width / this.canvas.height), eye: camera.position(),
-      light: this.light, scale: this.scale };
-    const { steps, totals } = this.aloneSteps(view, quality);
+    const view = {
+      viewProjection: camera.viewProjection(this.canvas.width / this.canvas.height), eye: camera.position(),
+      light: this.light, scale: this.scale, width: this.canvas.width, height: this.canvas.height,
+    };
+    const gl = this.gl;
+    const steps = [];
+    const totals = { triangles: 0, lines: 0, drawCalls: 0 };
+    if (this.showGround && this.ground) {
+      const ground = this.#groundOptions();
+      steps.push({ primitives: 0, setup: () => {}, draw: () => this.ground.draw(view.viewProjection, ground) });
+      totals.triangles += 2;
+      totals.drawCalls += 1;
+    }
+    for (const layer of this.layers) {
+      layer.scale = this.scale;
+      if (layer.layerSteps) {
+        const part = layer.layerSteps(view, quality?.cheap || 0);
+        steps.push(...part.steps);
+        for (const [key, value] of Object.entries(part.totals || {})) {
+          if (SUMMED.has(key)) totals[key] += value;
+          else if (!(key in totals)) totals[key] = value;
+        }
+      } else if (layer.draw) {
+        steps.push({ primitives: 0, setup: () => {}, draw: () => layer.draw(gl, view) });
+      }
+    }
+    totals.primitives = steps.reduce((n, step) => n + step.primitives, 0);  // what the budget counts
+    totals.layers = this.layers.length;
+    totals.steps = steps.length;
     this.frameTotals = totals;
     this.progress.begin(this.canvas, steps, budget);
   }
 
-  // The steps of a frame alone (default: the layer's own): {steps, totals}.
-  aloneSteps(view) {
-    return this.layerSteps(view);
+  // Frame time with the GPU's work included: draws `frames` whole frames, each followed by reading
+  // one pixel back (which returns only once the frame is finished), and resolves to the median and
+  // what a frame draws. One animation frame between draws keeps the page responsive.
+  async timeFrames(frames = 10) {
+    const times = [];
+    let drawn = null;
+    for (let i = 0; i <= frames; ++i) {
+      await new Promise((resolve) => requestAnimationFrame(resolve));
+      const start = performance.now();
+      drawn = this.render();
+      finishGpu(this.gl);
+      if (i > 0) times.push(performance.now() - start);  // the first is a warm-up
+    }
+    times.sort((a, b) => a - b);
+    return { ms: times[Math.floor(times.length / 2)], frames, ...drawn };
   }
 
-  // As a layer of a Frame: the study's steps under the frame's view (its camera and sun).
-  frameSteps(view) {
-    return this.layerSteps(view).steps;
+  // Asks for a frame (several requests before it runs make one): the page's loop, or the frame's own.
+  request() {
+    if (this.requestFrame) {
+      this.requestFrame();
+      return;
+    }
+    this.loop ||= new FrameLoop(() => this.render(), { gl: this.gl });
+    this.loop.request();
   }
 
-  // The study's box in the frame's world (metres), or null (alone, or before a result).
+  // Disposes of every layer and the frame's own objects.
+  dispose() {
+    for (const layer of this.layers.splice(0)) layer.dispose?.();
+    this.progress.abort();
+    this.ground?.dispose();
+    if (this.groundProgram) this.gl.deleteProgram(this.groundProgram.program);
+    this.ground = null;
+  }
+}
+
+// What every study's renderer shares as a layer of a Frame (the tree's, the ivy's and the
+// terrain's extend it; moss, bark and the garden's next): the frame's context and its frame in
+// parts (a layer aborts it when its buffers change), its sun (the frame's, given by addLayer and
+// setSun), its box in the frame's world, and whether it is fitted to a page's view (a Frame of
+// fit: true) or in metres. A renderer may also be made on a canvas of its own (its own context:
+// tests that use one program, web/tree/tree_renderer.js's atlas painting), drawn whole with
+// drawWhole.
+// A subclass gives layerSteps(view, cheap) -> {steps, totals} (the steps of its study under `view`,
+// and what they draw), and may give ready() (false until its programs exist), worldBounds() (when
+// it is not boundsView), footprint() (its ground), dispose() (calling super.dispose()).
+export class StudyLayer {
+  // target: a Frame ({canvas, gl}: a layer of it) or a canvas (the layer makes its context; `what`
+  // names it in the error when WebGL2 is missing); study: its default sun (web/gl/sun.js) until a
+  // frame gives it its own.
+  constructor(target, { what, study }) {
+    const frame = target && target.gl && target.canvas ? target : null;
+    this.frame = frame;
+    this.canvas = frame ? frame.canvas : target;
+    this.gl = frame ? frame.gl : createContext(this.canvas, what);
+    // Fitted to the page's view (a Frame of fit: true, or alone) or in the frame's world (metres).
+    this.fitView = frame ? Boolean(frame.fit) : true;
+    this.light = frame ? frame.light : defaultSunDirection(study);
+    this.boundsView = null;  // the study's box in view units (fitted) or the frame's world (metres)
+    this.progress = frame ? frame.progress : new ProgressiveFrame(this.gl);  // the frame in parts its buffers are in
+    this.scale = 1;  // the drawing buffer's scale of the last frame (the Frame sets it)
+  }
+
+  // The sun (core/light's convention): elevation and azimuth in degrees; in a Frame, the frame's
+  // (every layer's).
+  setSun(elevationDeg, azimuthDeg) {
+    if (this.frame) {
+      this.frame.setSun(elevationDeg, azimuthDeg);
+      return;
+    }
+    const light = sunDirection(elevationDeg, azimuthDeg);
+    if (light) this.light = light;
+  }
+
+  // False while the layer cannot draw (its programs not made yet): a frame draws nothing.
+  ready() {
+    return true;
+  }
+
+  // Draws the layer's steps whole now under `camera` at full scale, on its canvas (the warm-up
+  // draws of a renderer's init).
+  drawWhole(camera) {
+    resizeCanvas(this.canvas, 1);
+    const view = { viewProjection: camera.viewProjection(this.canvas.width / this.canvas.height), eye: camera.position(), light: this.light, scale: 1 };
+    this.progress.begin(this.canvas, this.layerSteps(view, 0).steps);
+    this.progress.run();
+    this.gl.bindVertexArray(null);
+  }
+
+  // The study's box in the frame's world (metres), or null (fitted, or before a result).
   worldBounds() {
     return this.fitView ? null : this.boundsView;
   }

@@ -1,16 +1,16 @@
-// A study page's frames over a progressive renderer (the ivy and terrain pages): one frame in
+// A study page's frames over its Frame (web/gl/frame.js; the ivy and terrain pages): one frame in
 // flight (frame_loop.js), a frame bigger than the governor's budget drawn over several animation
 // frames (progressive_frame.js), a smaller drawing buffer while the camera moves and frames lag
 // (frame_governor.js). A frame in parts goes on until it is finished unless the governor wants
 // another level; what changed meanwhile is drawn by the next frame, and only a finished frame with
 // nothing pending is reported (onDrawn), so a test's hooks describe what is on screen.
-// Does not: know what is drawn (the renderer does), or start frames by itself (request, moved).
+// Does not: know what is drawn (the frame's layers do), or start frames by itself (request, moved).
 import { FrameGovernor } from './frame_governor.js';
 import { FrameLoop } from './frame_loop.js';
 
 export class ProgressiveLoop {
-  // renderer(): the page's renderer or null (render(camera, quality, {budget, resume}), progress,
-  // uploading); onDrawn(drawn): called after each finished frame.
+  // renderer(): the page's Frame or null before it has its layers (render(camera, quality,
+  // {budget, resume}), progress, uploading); onDrawn(drawn): called after each finished frame.
   constructor({ renderer, camera, onDrawn }) {
     this.renderer = renderer;
     this.camera = camera;
@@ -58,12 +58,11 @@ export class ProgressiveLoop {
     this.frames.attach(gl);
   }
 
-  // Makes the page's renderer (create() also stores it where renderer() finds it), initialises
-  // it, joins it to this loop, the orbit camera and the canvas (a resize draws again; a lost
-  // context calls onLost), and draws the first frame. Throws what create or init throw.
+  // Makes the page's Frame with its layers (async create() also stores it where renderer() finds
+  // it), joins it to this loop, the orbit camera and the canvas (a resize draws again; a lost
+  // context calls onLost), and draws the first frame. Throws what create throws.
   async start(create, { canvas, camera, onLost }) {
-    const r = create();
-    await r.init();
+    const r = await create();
     this.attach(r.gl);
     camera.attach(canvas, () => this.moved());
     new ResizeObserver(() => this.request()).observe(canvas);

@@ -57,11 +57,14 @@ export function dataTexture(gl, data, comps, internalFormat, format, type) {
 }
 
 // An RGBA8 image `{width, height, pixels}` (tightly packed rows) into `texture` (a new one when
-// absent), with mipmaps, trilinear filtering and `wrap` on both axes; returns the texture.
+// absent), with mipmaps, trilinear filtering and `wrap` on both axes; returns the texture. pixels:
+// an ArrayBuffer or a view (read in place: a worker reply's view may sit in a bigger buffer).
 export function imageTexture(gl, image, wrap, texture = gl.createTexture()) {
+  const p = image.pixels;
+  const bytes = ArrayBuffer.isView(p) ? new Uint8Array(p.buffer, p.byteOffset, p.byteLength) : new Uint8Array(p);
   gl.bindTexture(gl.TEXTURE_2D, texture);
   gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
-  gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, image.width, image.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(image.pixels));
+  gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, image.width, image.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, bytes);
   gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
   gl.generateMipmap(gl.TEXTURE_2D);
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);

@@ -10,7 +10,9 @@
 // tree preset's bark, core/compose/ivy_on_tree, as the CLI's --tree-preset does).
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { OrbitCamera } from '../gl/orbit_camera.js';
+import { Frame } from '../gl/frame.js';
 import { ProgressiveLoop } from '../gl/progressive_loop.js';
+import { DEFAULT_SUNS } from '../gl/sun.js';
 import { dracoPrimitiveCount, importMesh, isGlb, parseGlb } from '../mesh/mesh_import.js';
 import { FileDrop, extensionOf } from '../shell/file_drop.js';
 import { ParamPanel } from '../shell/param_panel.js';
@@ -77,14 +79,23 @@ const progressSeen = [];
 
 // ---------------------------------------------------------------- rendering
 const camera = new OrbitCamera();
-let renderer = null;
-let leafTexture = null;  // the worker's leaf texture ({width, height, pixels}), for a new renderer
+let frame = null;     // the view's one Frame (web/gl/frame.js): its camera, sun and the layers
+let renderer = null;  // the ivy's layer of it
+let leafTexture = null;  // the worker's leaf texture ({width, height, pixels}) until a renderer has it
+// Uploads the leaf texture kept for the renderer, then hands its pixels back to the worker (the
+// next client's copy goes into them: web/worker/ivy_handler.js).
+function installLeafTexture() {
+  if (!renderer || !leafTexture) return;
+  renderer.setLeafTexture(leafTexture);
+  worker.recycle({ leafTexture: { pixels: leafTexture.pixels } });
+  leafTexture = null;
+}
 let ivySerial = 0;
 let installedSerial = 0;  // the ivy whose buffers are in place (a big one goes up in parts)
 // Frames on demand over the renderer's progressive parts (web/gl/progressive_loop.js); the hooks
 // describe a finished frame.
 const loop = new ProgressiveLoop({
-  renderer: () => renderer,
+  renderer: () => (renderer ? frame : null),
   camera,
   onDrawn: (drawn) => {
     const counts = renderer.drawnCounts();
@@ -105,10 +116,13 @@ const scrubber = new StepScrubber({ range: ui.step, text: ui.stepText, play: ui.
 
 async function startRenderer() {
   try {
-    await loop.start(() => {
-      renderer = new IvyRenderer(ui.canvas);
-      if (leafTexture) renderer.setLeafTexture(leafTexture);
-      return renderer;
+    await loop.start(async () => {
+      // One study fitted to the view (fit), the ivy's sun, no ground (the support is the ground).
+      frame = new Frame(ui.canvas, { camera, sun: DEFAULT_SUNS.ivy, ground: false, fit: true, request: () => loop.request(), what: 'the ivy' });
+      await frame.init();
+      renderer = await frame.addLayer(new IvyRenderer(frame));
+      installLeafTexture();
+      return frame;
     }, {
       canvas: ui.canvas, camera,
       onLost: () => notices.set('webgl', 'The WebGL2 context was lost; reload the page to draw again.'),
@@ -275,7 +289,7 @@ worker.on('ivy', (msg) => {
   // The leaf texture comes once per worker, with its first ivy: kept even from a superseded one.
   if (msg.leafTexture) {
     leafTexture = msg.leafTexture;
-    renderer?.setLeafTexture(leafTexture);
+    installLeafTexture();
   }
   if (!controller.isLatest(msg)) return;
   const s = msg.stats;

@@ -4,9 +4,9 @@
 // (px for the built-in scenes, metres for most assets); uModel scales the support into a view of
 // about ten units so one orbit camera fits every scene. The step scrubber hides what was born after
 // step k in the vertex shader (aBirth), so replaying the growth needs no regrow.
-// A StudyLayer (web/gl/frame.js): it draws alone on its canvas (render) or as a layer of a Frame
-// (frameSteps, under the frame's camera and sun, in the frame's world: the scene's units times
-// `unitScale`, not fitted to a view of ten units); both from the same layerSteps.
+// A StudyLayer (web/gl/frame.js), a layer of a Frame (layerSteps, under the frame's camera and
+// sun): fitted to a view of ten units in a Frame of fit: true (the ivy page, <niwa-ivy>), else in
+// the frame's world (the scene's units times `unitScale`: beside other studies).
 // Does not: talk to the worker, pick by id (a click is a ray in scene units; the worker's BVH
 // answers it), or know the growth model.
 import { floatAttribute, staticBuffer, viewOf } from '../gl/buffers.js';
@@ -75,7 +75,6 @@ export class IvyRenderer extends StudyLayer {
     this.buds = { vao: null, buffers: [], count: 0 };
     this.seeds = { vao: null, buffer: null, count: 0 };
     this.ivyUploads = 0;     // setIvy calls so far (a newer one drops an older upload)
-    this.frameTotals = { triangles: 0, drawCalls: 0, primitives: 0, leavesTextured: false };
     this.uploading = false;  // an ivy is going up in parts
   }
 
@@ -112,7 +111,7 @@ export class IvyRenderer extends StudyLayer {
     this.parts.stems = { vao, buffers, count: 3, births: () => 1 };
     this.setSeeds([[0, 0, 0]]);
     const camera = { viewProjection: () => [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], position: () => [0, 0, 1] };
-    this.render(camera);
+    this.drawWhole(camera);
     this.#drop('support');
     this.#drop('stems');
     this.seeds.count = 0;
@@ -344,7 +343,7 @@ export class IvyRenderer extends StudyLayer {
   // The ivy's steps of a frame (web/gl/progressive_frame.js) under `view` ({viewProjection, eye,
   // light: the unit direction towards the sun, scale: the drawing buffer's}): the support and the
   // ivy's parts, then the markers. Returns {steps, totals} (leavesTextured: the leaves drawn with
-  // the leaf texture). Alone (StudyLayer.render) or in a Frame (StudyLayer.frameSteps).
+  // the leaf texture). Drawn by its Frame (web/gl/frame.js).
   layerSteps(view) {
     const gl = this.gl;
     const { viewProjection: vp, eye, light } = view;

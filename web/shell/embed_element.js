@@ -3,22 +3,25 @@
 // It owns what every embed has: the shadow root (style, canvas, one message line), the orbit
 // camera, the frame loop, this element's client of the page's ONE Web Worker (so one WASM
 // instance for every embed on a page; the worker keeps the clients apart by id), one `init` per
-// study for the whole page, and the renderer's start. A subclass says which renderer to make and
-// which worker messages it wants, and grows its own study:
+// study for the whole page, and the view's one Frame (web/gl/frame.js: camera, sun, ground) with
+// the study's renderer as its layer. A subclass says which renderer to make, the frame's options
+// and which worker messages it wants, and grows its own study:
 //
 //   class NiwaIvy extends EmbedElement {
 //     constructor() { super({ kind: 'ivy', label: 'Niwa ivy', study: 'ivy', messages: ['ivy', 'error'] }); }
-//     createRenderer(canvas) { return new IvyRenderer(canvas); }   // has async init()
+//     createRenderer(frame) { return new IvyRenderer(frame); }     // a layer, with async init()
+//     frameOptions() { return { sun: DEFAULT_SUNS.ivy, ground: false, fit: true }; }
 //     load() { ... }                  // read the attributes, ask the worker
 //     onWorkerMessage(msg) { ... }    // the messages named above
 //   }
 //
 // Does not: know any study's attributes, state or messages, or draw anything itself; messages are
 // shown as text, never as markup.
+import { Frame } from '../gl/frame.js';
 import { FrameLoop } from '../gl/frame_loop.js';
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { setHooks } from './test_hooks.js';
-import { WorkerClient } from './worker_client.js';
+import { StudyController } from './study_controller.js';
 
 const STYLE = `
 :host { display: inline-block; position: relative; width: 320px; height: 320px; contain: content; }
@@ -55,22 +58,41 @@ export class EmbedElement extends HTMLElement {
     this.line.setAttribute('aria-live', 'polite');
     shadow.append(style, this.canvas, this.line);
     this.camera = new OrbitCamera();
-    this.renderer = null;
+    this.frame = null;     // the view's Frame, once its layer is in
+    this.renderer = null;  // the study's layer of it
     this.rendererReady = null;
     this.frames = new FrameLoop(() => this.drawFrame());
     this.worker = null;
     this.ready = null;  // this study's init reply (shared by every element of the study)
   }
 
-  // This element's client of the page's one worker (attributes may arrive before connectedCallback).
+  // This element's client of the page's one worker (attributes may arrive before connectedCallback):
+  // the client of a study controller of its own (web/shell/study_controller.js: no history, no
+  // Cancel, its hooks on this element, a worker failure on the element's line); the element's
+  // handlers of the messages it names (its own error replies included) are installed on it.
   ensureWorker() {
-    if (this.worker) return;
-    const options = { onFailure: (text) => this.showMessage(text) };
-    if (this.study) options.study = this.study;
-    this.worker = new WorkerClient(this.client, options);
+    if (this.worker && !this.worker.isClosed) return;
+    this.controller = new StudyController({
+      study: this.study, name: this.client, history: false, ui: {}, hooks: this,
+      notices: { set: (source, lines) => {
+        const text = [lines].flat().filter(Boolean).join('\n');
+        if (text) this.showMessage(text);
+      } },
+    });
+    this.worker = this.controller.worker;
     for (const type of this.messages) this.worker.on(type, (msg) => this.onWorkerMessage(msg));
     if (!studyReady.has(this.study)) studyReady.set(this.study, this.worker.request('init', { hash: '' }, { done: ['ready'] }).reply);
     this.ready = studyReady.get(this.study);
+  }
+
+  // Taken off the page (not moved: still out of it after this task's microtasks): the element's
+  // client ends, and the worker lets its sessions and returned buffers go (worker_client.js
+  // close; the closed client's late calls do nothing); put back, it gets a new client and grows
+  // again. Resolves to the worker's 'closed'
+  // reply (null when there was nothing to close), also kept as this.closed (tests).
+  releaseWorker() {
+    this.closed = Promise.resolve().then(() => (this.isConnected || !this.worker ? null : this.worker.close()));
+    return this.closed;
   }
 
   connectedCallback() {
@@ -85,10 +107,12 @@ export class EmbedElement extends HTMLElement {
 
   async startRenderer() {
     try {
-      const renderer = this.createRenderer(this.canvas);
-      await renderer.init();
+      const frame = new Frame(this.canvas, { camera: this.camera, request: () => this.requestFrame(), ...this.frameOptions() });
+      await frame.init();
+      const renderer = await frame.addLayer(this.createRenderer(frame));
+      this.frame = frame;
       this.renderer = renderer;
-      this.frames.attach(renderer.gl, this.canvas);  // one frame in flight (web/gl/frame_loop.js)
+      this.frames.attach(frame.gl, this.canvas);  // one frame in flight (web/gl/frame_loop.js)
       this.camera.attach(this.canvas, () => this.onCameraMove());
       new ResizeObserver(() => this.requestFrame()).observe(this.canvas);
       this.onRendererReady();
@@ -106,9 +130,15 @@ export class EmbedElement extends HTMLElement {
     if (this.renderer) this.frames.request();
   }
 
-  // Overridable: what a frame draws, what a camera move does, what waits for the renderer.
+  // Overridable: the Frame's options (web/gl/frame.js: sun, ground, fit, what; default: the
+  // tree's sun and a ground), what a frame draws, what a camera move does, what waits for the
+  // renderer.
+  frameOptions() {
+    return {};
+  }
+
   drawFrame() {
-    this.renderer.render(this.camera);
+    this.frame.render(this.camera);
   }
 
   onCameraMove() {

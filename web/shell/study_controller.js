@@ -1,5 +1,6 @@
-// The study pages' one controller (tree, ivy, terrain; moss, bark and the garden next): the
-// study's worker and its restart on Cancel, the progress line with Cancel (shown while an update
+// The study pages' one controller (tree, ivy, terrain and the grove; moss, bark and the garden
+// next): the study's worker (and a page's further clients of it: the grove's one per unique tree)
+// and its restart on Cancel, a worker failure in the notices, the progress line with Cancel (shown while an update
 // or an export runs), debounced updates that carry the earliest stage their edits touched, edits
 // that arrive while an update is in flight merged into one update sent when it is answered, the
 // restage counters and the stages a restage re-did, the grown state's history entry (a commit or
@@ -35,12 +36,18 @@ export class StudyController {
   // landed on an entry, before its state is decoded; onHistoryChange(): Undo/Redo availability
   // changed. debounceMs: the quiet moment before an edit goes; coalesceMs: an edit waits this long
   // at most for the update in flight to be answered (issue 17: a one-second slider drag regrew 17
-  // trees) before it supersedes it (a long grow never holds the newest edit back).
+  // trees) before it supersedes it (a long grow never holds the newest edit back). name: the
+  // controller's client (default: the study's name); history: false for a page whose hash is its
+  // own view, not a state (the grove, an embed: no history entries, back/forward decode nothing);
+  // a page without Cancel omits ui.cancel (and ui.progress); hooks: the element whose data-* the
+  // tests read (an embed's own; default the document's).
   constructor({
-    study, notices, ui, fields = {}, panel, errors, state, onCancel, onRestart, onError,
-    viewHash, historyExtra, onRestore, onHistoryChange, debounceMs = 250, coalesceMs = 400,
+    study, name = study, notices, ui, fields = {}, panel, errors, state, onCancel, onRestart, onError,
+    viewHash, historyExtra, onRestore, onHistoryChange, debounceMs = 250, coalesceMs = 400, history = true,
+    hooks = document.documentElement,
   }) {
     this.study = study;
+    this.hooks = hooks;
     this.notices = notices;
     this.ui = ui;
     this.state = state;
@@ -63,33 +70,37 @@ export class StudyController {
     this.exportCount = 0;
     this.exports = new Map(); // request id -> {name, type, onRefused}
     this.fieldErrors = errors || new FieldErrors(fields, panel, (message) => notices.set('field', message));
-    this.worker = new WorkerClient(study, {
-      study,
-      onFailure: (text) => {
-        this.inFlight = false;
-        notices.set('error', text);
-        setHooks({ status: 'error' });
-      },
-      onRestart: () => onRestart(),
-    });
-    this.history = new HashHistory({
+    this.onFailure = (text) => {
+      this.inFlight = false;
+      notices.set('error', text);
+      setHooks({ status: 'error' }, this.hooks);
+    };
+    this.worker = new WorkerClient(name, { study, onFailure: this.onFailure, onRestart: () => onRestart?.() });
+    this.history = history ? new HashHistory({
       onChange: onHistoryChange,
       onRestore: ({ extra }) => {
         onRestore?.(extra);
         this.worker.request('decode', { hash: location.hash }, { done: ['decoded'] });
       },
-    });
-    ui.cancel.addEventListener('click', () => this.cancel(onCancel));
+    }) : null;
+    ui.cancel?.addEventListener('click', () => this.cancel(onCancel));
     this.worker.on('export', (msg) => this.#exported(msg));
     this.worker.on('error', (msg) => this.#failed(msg));
-    if (hookValue('growRequests') === undefined) setHooks({ growRequests: 0, restageRequests: 0 });
+    if (hookValue('growRequests', this.hooks) === undefined) setHooks({ growRequests: 0, restageRequests: 0 }, this.hooks);
+  }
+
+  // Another client of the page's worker for this study (the grove's one per unique tree): a worker
+  // failure shows as the controller's own; onRestart: its part after Cancel restarted the worker.
+  // The page installs its handlers on it.
+  client(name, { onRestart } = {}) {
+    return new WorkerClient(name, { study: this.study, onFailure: this.onFailure, onRestart });
   }
 
   // Shows or hides the work of an update (Cancel and, with it off, the progress bar); Cancel stays
   // while an export runs.
   showWork(on) {
     this.working = on;
-    this.ui.cancel.hidden = !(on || this.exports.size > 0);
+    if (this.ui.cancel) this.ui.cancel.hidden = !(on || this.exports.size > 0);
     if (!on && this.ui.progressBar) this.ui.progressBar.hidden = true;
   }
 
@@ -104,9 +115,9 @@ export class StudyController {
     this.inFlight = false;
     this.exports.clear();
     this.showWork(false);
-    this.ui.progress.textContent = onCancel ? onCancel() : 'cancelled';
-    bumpHook('cancels');
-    setHooks({ status: 'cancelled' });
+    if (this.ui.progress) this.ui.progress.textContent = onCancel ? onCancel() : 'cancelled';
+    bumpHook('cancels', this.hooks);
+    setHooks({ status: 'cancelled' }, this.hooks);
     restartWorker();
   }
 
@@ -124,13 +135,13 @@ export class StudyController {
     this.pendingStage = null;
     this.editPending = false;
     this.editQueued = false;
-    setHooks({ status: 'growing', updateStage: sent });
+    setHooks({ status: 'growing', updateStage: sent }, this.hooks);
     const request = this.worker.request('update', { state: this.state(), stage: sent, ...fields }, { group: this.study, done });
     this.latestId = request.id;
     this.inFlight = true;
     this.inFlightSince = performance.now();
     this.showWork(true);
-    bumpHook(sent === 'grow' ? 'growRequests' : 'restageRequests');
+    bumpHook(sent === 'grow' ? 'growRequests' : 'restageRequests', this.hooks);
     request.reply.then((reply) => this.#answered(request.id, reply));
     return { ...request, stage: sent };
   }
@@ -145,7 +156,7 @@ export class StudyController {
     this.pendingSend = send;
     this.pendingStage = this.pendingStage ? earlier(this.pendingStage, stage) : stage;
     clearTimeout(this.debounceTimer);
-    setHooks({ status: 'pending' });
+    setHooks({ status: 'pending' }, this.hooks);
     this.debounceTimer = setTimeout(() => this.#flush(), this.debounceMs);
   }
 
@@ -160,7 +171,7 @@ export class StudyController {
     if (!this.editPending) return;
     const age = performance.now() - this.inFlightSince;
     if (this.inFlight && age < this.coalesceMs) {
-      if (!this.editQueued) bumpHook('editsCoalesced');
+      if (!this.editQueued) bumpHook('editsCoalesced', this.hooks);
       this.editQueued = true;
       clearTimeout(this.queueTimer);
       this.queueTimer = setTimeout(() => this.#flush(), this.coalesceMs - age);
@@ -175,7 +186,7 @@ export class StudyController {
     if (id !== this.latestId) return;  // superseded: a newer update is in flight
     this.inFlight = false;
     clearTimeout(this.queueTimer);
-    if (reply && Array.isArray(reply.stages)) setHooks({ restagedStages: reply.stages.join(',') });
+    if (reply && Array.isArray(reply.stages)) setHooks({ restagedStages: reply.stages.join(',') }, this.hooks);
     if (this.editQueued && this.editPending) {
       this.editQueued = false;
       this.pendingSend();
@@ -187,13 +198,14 @@ export class StudyController {
   }
 
   // The hash of the state `base` (the core's text) with the page's view fields appended.
-  fullHash(base = this.history.base) {
+  fullHash(base = this.history?.base ?? '') {
     return `#${base}${base ? this.viewHash() : ''}`;
   }
 
   // The grown state's link: a new history entry after an edit, else the current one replaced;
   // either keeps the page's extras.
   grown(hash) {
+    if (!this.history) return;
     if (this.commitNext) this.history.commit(hash, this.fullHash(hash), this.historyExtra());
     else {
       this.history.base = hash;
@@ -204,7 +216,7 @@ export class StudyController {
 
   // Rewrites the current history entry (a camera move, scrubbing: no new entry).
   writeHash() {
-    if (!this.history.base) return;
+    if (!this.history?.base) return;
     this.history.replace(this.fullHash(), this.historyExtra());
   }
 
@@ -230,7 +242,7 @@ export class StudyController {
     this.exports.delete(msg.id);
     this.showWork(this.working);
     download(new Blob([msg.bytes], { type: file.type }), file.name, this.ui.shareStatus);
-    setHooks({ exported: `${msg.format}:${msg.bytes.byteLength}` });
+    setHooks({ exported: `${msg.format}:${msg.bytes.byteLength}` }, this.hooks);
   }
 
   // An error reply: an export's goes to the share line (or beside its button); the latest
@@ -256,8 +268,8 @@ export class StudyController {
     this.showWork(false);
     this.notices.set('error', msg.message);
     this.showFieldError(msg);
-    this.ui.progress.textContent = '';
-    setHooks({ status: 'error', error: msg.message });
+    if (this.ui.progress) this.ui.progress.textContent = '';
+    setHooks({ status: 'error', error: msg.message }, this.hooks);
     this.onError(msg, 'after');
   }
 }

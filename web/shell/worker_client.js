@@ -6,6 +6,7 @@
 const WORKER_URL = new URL('../worker/worker.js', import.meta.url);
 
 let shared = null;  // {worker, clients: Map(name -> WorkerClient)}
+const closing = new Map();  // id of a 'close' -> its resolve (the client is gone from `clients`)
 let shared0 = null;  // the clients kept across restartWorker until the next worker is made
 
 // The page's one worker (created on first use). From another origin (the embed on a foreign page)
@@ -20,6 +21,11 @@ function sharedWorker() {
   shared0 = null;
   worker.onmessage = (event) => {
     const msg = event.data || {};
+    if (msg.type === 'closed' && closing.has(msg.id)) {
+      closing.get(msg.id)(msg);
+      closing.delete(msg.id);
+      return;
+    }
     shared.clients.get(typeof msg.client === 'string' ? msg.client : 'app')?.deliver(msg);
   };
   worker.onerror = (e) => {
@@ -36,6 +42,8 @@ function sharedWorker() {
 export function restartWorker() {
   if (!shared) return;
   shared.worker.terminate();
+  for (const resolve of closing.values()) resolve(null);  // the worker and all it kept are gone
+  closing.clear();
   shared0 = { clients: shared.clients };
   shared = null;
   sharedWorker();
@@ -55,6 +63,7 @@ export class WorkerClient {
     this.pending = new Map();   // id -> {group, done: Set of reply types, resolve}
     this.latest = new Map();    // group -> newest id
     this.onFailure = onFailure || (() => {});
+    this.isClosed = false;
     const { clients } = sharedWorker();
     if (clients.has(name)) throw new Error(`worker client '${name}' exists already`);
     clients.set(name, this);
@@ -68,6 +77,7 @@ export class WorkerClient {
 
   // Sends {type, client, ...fields} without expecting a reply (transfer: ArrayBuffers to move).
   post(type, fields = {}, transfer = []) {
+    if (this.isClosed) return;  // closed: the worker has let this client go
     const envelope = this.study ? { type, client: this.name, study: this.study } : { type, client: this.name };
     sharedWorker().worker.postMessage({ ...fields, ...envelope }, transfer);
   }
@@ -96,6 +106,7 @@ export class WorkerClient {
   // replies are dropped and its promise resolves to null). Resolves to the first reply whose type
   // is in `done` (or an 'error' with this id). Returns {id, reply}.
   request(type, fields = {}, { group = type, done = [] } = {}) {
+    if (this.isClosed) return { id: 0, reply: Promise.resolve(null) };
     const id = ++nextId;
     const superseded = this.latest.get(group);
     if (superseded !== undefined) this.#settle(superseded, null);
@@ -119,10 +130,20 @@ export class WorkerClient {
     this.latest.delete(group);
   }
 
-  // Unregisters the client (its replies are dropped).
+  // Unregisters the client (its replies are dropped; its name is free again at once; later posts
+  // and requests do nothing, a request resolving to null) and tells the worker, whose handlers let
+  // the client's sessions and returned buffers go. Resolves to the worker's {type: 'closed',
+  // released: {study: {sessions, buffers}}} (null if the worker restarted or it was closed already).
   close() {
+    if (this.isClosed) return Promise.resolve(null);
+    this.isClosed = true;
     for (const id of [...this.pending.keys()]) this.#settle(id, null);
-    sharedWorker().clients.delete(this.name);
+    const { worker, clients } = sharedWorker();
+    clients.delete(this.name);
+    const id = ++nextId;
+    const reply = new Promise((resolve) => closing.set(id, resolve));
+    worker.postMessage({ type: 'close', id, client: this.name });
+    return reply;
   }
 
   deliver(msg) {
@@ -162,6 +183,11 @@ export class WorkerClient {
 export function treeExtras(msg) {
   const t = msg?.mesh?.textures || {};
   const textures = Object.fromEntries(['bark', 'barkNormal', 'leaf', 'flower'].map((kind) => [kind, t[kind]?.pixels]));
-  const h = msg?.hybrid;
-  return h ? { textures, 'atlas.bark': h.bark, 'atlas.leaves': h.leaves, 'atlas.flowers': h.flowers } : { textures };
+  return { textures, ...atlasGroups(msg?.hybrid) };
+}
+
+// A hybrid card atlas's buffers (a tree reply's `hybrid`, or a 'motionAtlas' reply's) as recycle's
+// groups ("atlas.bark", ...), for the worker's next atlas to fill; {} for none.
+export function atlasGroups(hybrid) {
+  return hybrid ? { 'atlas.bark': hybrid.bark, 'atlas.leaves': hybrid.leaves, 'atlas.flowers': hybrid.flowers } : {};
 }

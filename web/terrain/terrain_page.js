@@ -10,7 +10,9 @@
 // field), or draw directly.
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { OrbitCamera } from '../gl/orbit_camera.js';
+import { Frame } from '../gl/frame.js';
 import { ProgressiveLoop } from '../gl/progressive_loop.js';
+import { DEFAULT_SUNS } from '../gl/sun.js';
 import { FileDrop } from '../shell/file_drop.js';
 import { ParamPanel } from '../shell/param_panel.js';
 import { StepScrubber } from '../shell/step_scrubber.js';
@@ -62,13 +64,14 @@ const DRAWN = '(drawn contour)';
 
 // ---------------------------------------------------------------- rendering
 const camera = new OrbitCamera();
-let renderer = null;
+let frame = null;     // the view's one Frame (web/gl/frame.js): its camera, sun and the layers
+let renderer = null;  // the mountain's layer of it
 let terrainSerial = 0;
 let installedSerial = 0;  // the mountain whose buffers are in place (a big one goes up in parts)
 // Frames on demand over the renderer's progressive parts (web/gl/progressive_loop.js); the hooks
 // describe a finished frame.
 const loop = new ProgressiveLoop({
-  renderer: () => renderer,
+  renderer: () => (renderer ? frame : null),
   camera,
   onDrawn: (drawn) => {
     setHooks({
@@ -97,7 +100,13 @@ const scrubber = new StepScrubber({ range: ui.level, text: ui.levelText, play: u
 
 async function startRenderer() {
   try {
-    await loop.start(() => (renderer = new TerrainRenderer(ui.canvas)), {
+    await loop.start(async () => {
+      // One study fitted to the view (fit), the terrain's low sun, no ground (the surface is it).
+      frame = new Frame(ui.canvas, { camera, sun: DEFAULT_SUNS.terrain, ground: false, fit: true, request: () => loop.request(), what: 'the mountain' });
+      await frame.init();
+      renderer = await frame.addLayer(new TerrainRenderer(frame));
+      return frame;
+    }, {
       canvas: ui.canvas, camera,
       onLost: () => notices.set('webgl', 'The WebGL2 context was lost; reload the page to draw again.'),
     });

@@ -4,10 +4,10 @@
 // plan extent to about ten view units so one orbit camera fits every seed. The level scrubber
 // (setLevel) shows the mountain as it stands at level k: contours up to k, the surface cut at
 // h0 + k·Δh; nothing regrows.
-// A StudyLayer (web/gl/frame.js): it draws alone on its canvas (render) or as a layer of a Frame
-// (frameSteps, under the frame's camera and sun, in metres about the mountain's plan centre at its
-// lowest height, times `unitScale`, not fitted to a view of ten units); both from the same
-// layerSteps.
+// A StudyLayer (web/gl/frame.js), a layer of a Frame (layerSteps, under the frame's camera and
+// sun): fitted to a view of ten units in a Frame of fit: true (the terrain page, <niwa-terrain>),
+// else in metres about the mountain's plan centre at its lowest height, times `unitScale` (beside
+// other studies).
 // Does not: talk to the worker, draw the 2-D plan (plan_view.js), or know the generation methods.
 import { floatAttribute, viewOf } from '../gl/buffers.js';
 import { uploadInParts } from '../gl/chunked_upload.js';
@@ -32,7 +32,6 @@ export class TerrainRenderer extends StudyLayer {
     this.top = Infinity;
     this.lineLevels = new Float32Array(0);  // sorted level of every contour line segment
     this.terrainUploads = 0;  // setTerrain calls so far (a newer one drops an older upload)
-    this.frameTotals = { triangles: 0, lines: 0, drawCalls: 0, primitives: 0 };
     this.uploading = false;   // a mountain is going up in parts
   }
 
@@ -144,8 +143,8 @@ export class TerrainRenderer extends StudyLayer {
 
   // The mountain's steps of a frame (web/gl/progressive_frame.js) under `view` ({viewProjection,
   // light: the unit direction towards the sun}): the surface, then the contour lines. Returns
-  // {steps, totals}. Alone (StudyLayer.render: a res-1024 surface is 2 M triangles, drawn in parts)
-  // or in a Frame (StudyLayer.frameSteps).
+  // {steps, totals}. Drawn by its Frame (web/gl/frame.js; a res-1024 surface is 2 M
+  // triangles, drawn in parts).
   layerSteps(view) {
     const gl = this.gl;
     const { viewProjection: vp, light } = view;

@@ -5,14 +5,18 @@
 // Wind (issue 6, beyond the thesis): Blow sways every instance with the wind at ITS position: the
 // worker runs one SwaySimulator per instance (origin = the instance's base) for each unique tree and
 // sends all instances' poses of that tree in one 'pose'; the shaders skin each instance with its block.
+// The worker's clients (one per unique tree, 'grove-0' ..., and 'grove' for the module's ready
+// message), a worker failure and the notices are the study controller's
+// (web/shell/study_controller.js, without history: the hash is the grove's view, not a state).
 // Does not: grow or sway trees (the worker does) or draw directly (grove_renderer.js does).
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { FrameLoop, nextFrame } from '../gl/frame_loop.js';
 import { viewOf } from '../gl/buffers.js';
 import { DEFAULT_SUNS } from '../gl/sun.js';
-import { cappedNoticeLines, mountStudyNav } from '../shell/study_page.js';
+import { StudyController } from '../shell/study_controller.js';
+import { Notices, mountStudyNav } from '../shell/study_page.js';
 import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
-import { WorkerClient, treeExtras } from '../shell/worker_client.js';
+import { treeExtras } from '../shell/worker_client.js';
 import { GroveRenderer } from './grove_renderer.js';
 
 // The unique trees: a few seconds of growing in total.
@@ -84,10 +88,19 @@ let wind = { ...WIND };   // the wind of every unique tree's state (WIND with th
 let windPlaying = false, windRound = 0;
 const sway = [];          // unique tree -> {time, wind, stepMs, poses} of the last pose drawn
 const poseDone = new Set();  // clients whose pose is waiting for the next frame
-// One worker client per unique tree ('grove-0' ...) plus 'grove' for the module's ready message.
-const onFailure = () => fail('The simulation worker failed to start.');
-const treeClients = UNIQUE.map((_, index) => new WorkerClient(`grove-${index}`, { onFailure }));
-const groveClient = new WorkerClient('grove', { onFailure });
+// The notices line: the wind keys of the hash the core dropped, then a failure.
+const notices = new Notices(ui.message, ['hash', 'error']);
+// The study controller's client 'grove' (the module's ready message; an error reply of its own is
+// a failure) plus one client per unique tree ('grove-0' ...), all of the tree study.
+const controller = new StudyController({
+  study: 'tree', name: 'grove', history: false, notices, ui: {},
+  onError: (msg, when) => {
+    if (when === 'before') fail(`${msg.client || 'worker'}: ${msg.message}`);
+    return true;
+  },
+});
+const groveClient = controller.worker;
+const treeClients = UNIQUE.map((_, index) => controller.client(`grove-${index}`));
 mountStudyNav(document.getElementById('studies'), 'grove');
 
 function readHash() {
@@ -115,14 +128,9 @@ function resetCamera() {
   camera.target[1] = 1;
 }
 
-function showMessage(text) {
-  ui.message.textContent = text;
-  ui.message.hidden = !text;
-}
-
 function fail(text) {
   setHooks({ status: 'error' });
-  showMessage(text);
+  notices.set('error', text);
 }
 
 const n = (x) => Math.round(x).toLocaleString('en-US');
@@ -337,16 +345,16 @@ function windStateHash(params) {
 
 // The decoded wind: a value the core dropped keeps the grove's default; clamped ones are used.
 function applyDecodedWind(decoded) {
-  const notices = decoded?.notices ?? [];
+  const lines = decoded?.notices ?? [];
   const hashParams = new URLSearchParams(location.hash.slice(1));
   for (const key of Object.keys(WIND)) {
     if (!hashParams.has(key)) continue;
-    const dropped = notices.some((line) => line.startsWith(`${key}:`) && line.includes('dropped'));
+    const dropped = lines.some((line) => line.startsWith(`${key}:`) && line.includes('dropped'));
     const value = decoded?.state?.params?.[key];
     if (!dropped && Number.isFinite(value)) wind[key] = value;
   }
-  if (notices.length) showMessage(cappedNoticeLines(notices).join('\n'));
-  setHooks({ notices: notices.length });
+  if (lines.length) notices.set('hash', lines);
+  setHooks({ notices: lines.length });
 }
 
 // The module is ready: every unique tree is grown once (each client's own request).
@@ -356,7 +364,6 @@ groveClient.on('ready', (msg) => {
     state: { preset: u.preset, seed: u.seed, years: u.years, params: { render_mode: 1, ...wind } },
   }, { done: ['tree'] }));
 });
-groveClient.on('error', (msg) => fail(`${msg.client || 'worker'}: ${msg.message}`));
 for (const client of treeClients) {
   client.on('tree', onTree).on('pose', onPose).on('drawList', onDrawList)
     .on('progress', () => requestFrame())

@@ -2,12 +2,13 @@
 // table, keeps the state in location.hash (one history entry per committed edit), reruns only the
 // stage an edit invalidates (a growth row regrows; a wind or sway row re-skins and restarts the
 // sway; a render row rebuilds the hybrid view, all on the tree already grown) and draws each tree
-// with WebGL2. Growth runs in the worker (web/worker/tree_handler.js); the worker, Cancel,
+// with WebGL2, as the layer of the view's one Frame (web/gl/frame.js: its camera, sun and ground). Growth runs in the worker (web/worker/tree_handler.js); the worker, Cancel,
 // debounced and merged edits with their stage, history (with the camera and the year shown),
 // exports and errors are the study controller's (web/shell/study_controller.js).
 // Does not: parse or check states (the core does), or draw directly (tree_renderer.js does).
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { OrbitCamera } from '../gl/orbit_camera.js';
+import { Frame } from '../gl/frame.js';
 import { FrameGovernor } from '../gl/frame_governor.js';
 import { FrameLoop } from '../gl/frame_loop.js';
 import { viewOf } from '../gl/buffers.js';
@@ -17,7 +18,7 @@ import {
 } from '../shell/study_page.js';
 import { StudyController, numberOr } from '../shell/study_controller.js';
 import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
-import { treeExtras } from '../shell/worker_client.js';
+import { atlasGroups, treeExtras } from '../shell/worker_client.js';
 import { ExportGuard, cutRefusal } from './cut_rules.js';
 import { EditFeedback } from './edit_feedback.js';
 import { GettingStarted } from './getting_started.js';
@@ -105,7 +106,8 @@ let lastGood = null;     // {hash, state} of the last tree shown
 
 // ---------------------------------------------------------------- rendering
 const camera = new OrbitCamera();
-let renderer = null;
+let frame = null;     // the view's one Frame (web/gl/frame.js): camera, sun, ground and the layers
+let renderer = null;  // the tree's layer of it (web/tree/tree_renderer.js)
 let poseDrawPending = false;
 const table = new RenderTable(ui.renderTable, ui.renderCol, ui.frameStats);
 // One frame in flight on the GPU (web/gl/frame_loop.js); while the tree sways or the camera
@@ -132,14 +134,14 @@ const frames = new FrameLoop(() => {
   // frame: no full frame meanwhile (the canvas keeps the last one; the GPU paints the atlas), the
   // sway goes on.
   if (windPlaying && next.moving && next.capped && !motionOff && renderer.fullPrimitives() > governor.budget()) {
-    renderer.progress.abort();  // a full frame in parts would only hold the atlas back
+    frame.progress.abort();  // a full frame in parts would only hold the atlas back
     if (poseDrawPending) {
       poseDrawPending = false;
       worker.post('poseDone');
     }
     return false;
   }
-  const resume = renderer.progress.pending() && next.level === frameLevel && !wholeNext && !freshNext;
+  const resume = frame.progress.pending() && next.level === frameLevel && !wholeNext && !freshNext;
   let quality = null;
   let whole = false;
   if (!resume) {
@@ -153,10 +155,10 @@ const frames = new FrameLoop(() => {
   // A camera drag without the cheaper representation: each frame at once (smaller), as it moves;
   // an edit that must show at once (the sun): one whole frame, however long it takes.
   const dragging = next.moving && next.capped && !windPlaying;
-  const drawn = renderer.render(camera, quality, { budget: dragging || whole ? Infinity : governor.budget(), resume });
+  const drawn = frame.render(camera, quality, { budget: dragging || whole ? Infinity : governor.budget(), resume });
   if (!drawn) return false;
   governor.drew(drawn.drawnPrimitives, !drawn.partial, drawn.primitives);
-  setHooks({ frameScale: renderer.scale, frameMode: drawn.mode, framesDrawn: frames.stats.drawn,
+  setHooks({ frameScale: frame.scale, frameMode: drawn.mode, framesDrawn: frames.stats.drawn,
     framesSkipped: frames.stats.skippedBusy, frameGpuMs: Math.round(frames.stats.gpuMs), framePartial: drawn.partial ? 1 : 0 });
   if (drawn.partial) {
     if (drawn.mode !== 'motion') table.showPartial(drawn);
@@ -242,9 +244,10 @@ function cameraMoved() {
 
 async function startRenderer() {
   try {
-    renderer = new Renderer(ui.canvas);
-    await renderer.init();
-    frames.attach(renderer.gl, ui.canvas);
+    frame = new Frame(ui.canvas, { camera, what: 'the tree', request: () => requestFrame() });
+    await frame.init();
+    renderer = await frame.addLayer(new Renderer(frame));
+    frames.attach(frame.gl, ui.canvas);
     camera.attach(ui.canvas, cameraMoved);
     new ResizeObserver(() => {
       requestFrame();
@@ -491,7 +494,12 @@ worker.on('tree', (msg) => {
 });
 
 worker.on('motionAtlas', (msg) => {
-  renderer?.setMotionHybrid(msg.hybrid, governor.budget()).then((painted) => {
+  countReuse('motion', msg.buffers);
+  // Painted (or dropped): its buffers go back for the worker's next atlas to fill.
+  const giveBack = () => worker.recycle(atlasGroups(msg.hybrid));
+  if (!renderer) return giveBack();
+  renderer.setMotionHybrid(msg.hybrid, governor.budget()).then((painted) => {
+    giveBack();
     if (painted) setHooks({ motionTextured: renderer.motion.hybrid.textured.join(',') });  // tests
     if (governor.moving()) requestFrame();
   });
@@ -676,7 +684,7 @@ ui.timeFrames.addEventListener('click', async () => {
   if (!renderer || ui.timeFrames.disabled) return;
   ui.timeFrames.disabled = true;
   try {
-    const timed = await renderer.timeFrames(camera, 10);
+    const timed = await frame.timeFrames(10);
     table.set(timed.mode === 'hybrid' ? 'row' : 'full', 'timed_ms', `${timed.ms.toFixed(1)} ms`);
     setHooks({ [timed.mode === 'hybrid' ? 'timedHybrid' : 'timedFull']:
       JSON.stringify({ ms: timed.ms, triangles: timed.triangles, lines: timed.lines, drawCalls: timed.drawCalls }) });
@@ -716,7 +724,7 @@ const refusals = exportRefusals(mountExportPanel(ui.downloadGlb.parentElement, r
 ui.downloadJson.addEventListener('click', () => requestExport('json'));
 ui.downloadPng.addEventListener('click', () => {
   if (!renderer) return;
-  renderer.render(camera);
+  frame.render(camera);
   ui.canvas.toBlob((blob) => {
     if (blob) download(blob, `${fileStem()}.png`, ui.shareStatus);
     else ui.shareStatus.textContent = 'The picture could not be saved.';

@@ -1,16 +1,15 @@
 // The tree study's WebGL2 renderer: bark tubes, double-sided leaves and flowers on the shared
 // ground (full-polygon mode, textured as the .glb: shaders/tree/tree_textured.frag), or the hybrid mode of thesis chapter 4: texture cards from a card
 // atlas plus lines. Shaders (GLSL ES 3.00) are shaders/tree/*, including shaders/common/*.
-// A StudyLayer (web/gl/frame.js): it draws alone on its canvas (render: the ground, then the tree)
-// or as a layer of a Frame (frameSteps, the tree alone, under the frame's camera, sun and ground);
-// both from the same layerSteps.
+// A StudyLayer (web/gl/frame.js): a layer of a Frame (layerSteps: the tree under the frame's
+// camera and sun; the frame draws the ground under its footprint), on the tree page, the grove's
+// neighbours to come, <niwa-tree> and beside other studies (tests/browser/frame_layers.test.mjs).
 // Does not: grow or mesh trees (the worker does), keep page state, or own the camera.
-import { drawingBufferSize, finishGpu, resizeCanvas } from '../gl/context.js';
+import { drawingBufferSize, resizeCanvas } from '../gl/context.js';
 import { StudyLayer } from '../gl/frame.js';
 import { BufferPool } from '../gl/buffer_pool.js';
 import { UPLOAD_PARTS_ABOVE, gpuDone, planBytes, uploadInParts } from '../gl/chunked_upload.js';
 import { copyOf, floatAttribute, staticBuffer, uintAttribute, viewOf } from '../gl/buffers.js';
-import { Ground, groundUnder } from '../gl/ground.js';
 import { PickTarget } from '../gl/pick.js';
 import { ProgressiveFrame } from '../gl/progressive_frame.js';
 import { loadPrograms } from '../gl/program.js';
@@ -235,9 +234,7 @@ export class Renderer extends StudyLayer {
     this.center = [0, 0, 0];
     this.shadowRadius = 1;
     this.extent = 20;
-    this.lastFrame = { triangles: 0, drawCalls: 0, cpuMs: 0 };
     this.motion = null;  // {hybrid, drawList}: the cheaper representation while moving
-    this.frameTotals = { triangles: 0, lines: 0, drawCalls: 0, mode: 'full', cheap: 0 };
     this.pool = new BufferPool(gl);  // the tree's mesh buffers, reused tree after tree
     this.poseTexture = gl.createTexture();
     this.poseNodes = 0;
@@ -306,14 +303,13 @@ export class Renderer extends StudyLayer {
     const gl = this.gl;
     const p = await loadPrograms(gl, shaderBase, {
       tree: ['tree.vert', 'tree_textured.frag'], pick: ['pick.vert', '../common/pick.frag'], atlas: ['atlas.vert', 'tree_textured.frag'],
-      card: ['card.vert', 'card.frag'], line: ['line.vert', 'line.frag'], ground: ['../common/ground.vert', '../common/ground.frag'],
+      card: ['card.vert', 'card.frag'], line: ['line.vert', 'line.frag'],
     });
     this.treeProgram = p.tree;
     this.pickProgram = p.pick;
     this.atlasProgram = p.atlas;
     this.cardProgram = p.card;
     this.lineProgram = p.line;
-    this.ground = new Ground(gl, p.ground);
     this.pickTarget = new PickTarget(gl);
     this.selected = NONE;
   }
@@ -642,24 +638,6 @@ export class Renderer extends StudyLayer {
     return [triangles, lines, drawCalls];
   }
 
-  // Frame time with the GPU's work included: draws `frames` frames, each followed by reading one
-  // pixel back (which returns only once the frame is finished), and resolves to the median and the
-  // primitives drawn. One animation frame between draws keeps the page responsive.
-  async timeFrames(camera, frames = 10) {
-    const gl = this.gl;
-    const times = [];
-    let drawn = null;
-    for (let i = 0; i <= frames; ++i) {
-      await new Promise((resolve) => requestAnimationFrame(resolve));
-      const start = performance.now();
-      drawn = this.render(camera);
-      finishGpu(gl);
-      if (i > 0) times.push(performance.now() - start);  // the first is a warm-up
-    }
-    times.sort((a, b) => a - b);
-    return { ms: times[Math.floor(times.length / 2)], frames, ...drawn };
-  }
-
   // The camera the worker needs for the hybrid selection (eq. 4.1) at the canvas's pixel size.
   // Always at the full drawing buffer size (a governed frame's smaller buffer would pick lines
   // for what is a card at full size).
@@ -672,31 +650,9 @@ export class Renderer extends StudyLayer {
     resizeCanvas(this.canvas, this.scale);
   }
 
-  // Alone (StudyLayer.render draws it: quality {scale, cheap} from a FrameGovernor, a budget, in
-  // parts): cheap > 0 draws a moving full-mode tree as its hybrid scene (setMotionHybrid) when it
-  // is there and leaves out the x-ray selection pass. Draws nothing before init().
+  // False before init() (the frame draws nothing of it then).
   ready() {
     return Boolean(this.treeProgram);
-  }
-
-  // The steps of a frame alone (the ground, then the tree's: layerSteps) with its totals (what
-  // the frame draws, counted from the index counts: {triangles, lines, drawCalls, mode, ...}).
-  aloneSteps(view, quality) {
-    const cheap = quality?.cheap || 0;
-    const totals = { triangles: 0, lines: 0, drawCalls: 0, mode: 'full', cheap };
-    const ground = groundUnder(this.footprint(), this.light);
-    const steps = [{ primitives: 0, setup: () => {}, draw: () => this.ground.draw(view.viewProjection, ground) }];
-    totals.triangles += 2;
-    totals.drawCalls += 1;
-    const tree = this.layerSteps(view, cheap);
-    steps.push(...tree.steps);
-    totals.triangles += tree.totals.triangles;
-    totals.lines += tree.totals.lines;
-    totals.drawCalls += tree.totals.drawCalls;
-    totals.mode = tree.totals.mode;
-    totals.primitives = steps.reduce((n, step) => n + step.primitives, 0);  // what the budget counts
-    totals.selected = this.selected === NONE ? -1 : this.selected;  // the highlight this frame draws
-    return { steps, totals };
   }
 
   // The ground under the tree (metres): {center, extent, shadowRadius, crownHeight}
@@ -707,13 +663,14 @@ export class Renderer extends StudyLayer {
 
   // The tree's steps of a frame (web/gl/progressive_frame.js) under `view` ({viewProjection, eye,
   // light: the unit direction towards the sun}): the hybrid draw list, or the parts and the
-  // selection's x-ray pass; cheap > 0: a moving full-mode tree as its hybrid scene when it is
-  // there. Returns {steps, totals: {triangles, lines, drawCalls, mode}}.
+  // selection's x-ray pass; cheap > 0 (a FrameGovernor's level while the view moves): a moving
+  // full-mode tree as its hybrid scene when it is there, without the x-ray pass. Returns {steps,
+  // totals: {triangles, lines, drawCalls, mode, cheap, selected (the highlight this frame draws)}}.
   layerSteps(view, cheap = 0) {
     const gl = this.gl;
     const { viewProjection, eye, light } = view;
     const steps = [];
-    const out = { triangles: 0, lines: 0, drawCalls: 0, mode: 'full' };
+    const out = { triangles: 0, lines: 0, drawCalls: 0, mode: 'full', cheap, selected: this.selected === NONE ? -1 : this.selected };
     // A moving full-mode tree at a cheap level: its hybrid scene while it is there.
     const motion = !this.hybrid && cheap > 0 && this.motionReady();
     if (this.hybrid || motion) {
@@ -787,8 +744,7 @@ export class Renderer extends StudyLayer {
     return { steps, totals: out };
   }
 
-  // ---- As a layer of a Frame (web/gl/frame.js: StudyLayer.frameSteps, the tree's steps under the
-  // frame's view; the frame draws the ground) ----
+  // ---- As a layer of a Frame (web/gl/frame.js) ----
   // The tree's box in metres (the last setTree's bounds), or null before a tree.
   worldBounds() {
     return this.treeBounds || null;
@@ -808,7 +764,6 @@ export class Renderer extends StudyLayer {
     for (const t of Object.values(this.textures)) gl.deleteTexture(t.texture);
     this.textures = {};
     gl.deleteTexture(this.poseTexture);
-    this.ground?.dispose();
     for (const p of [this.treeProgram, this.pickProgram, this.atlasProgram, this.cardProgram, this.lineProgram]) {
       if (p) gl.deleteProgram(p.program);
     }

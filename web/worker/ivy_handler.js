@@ -25,7 +25,11 @@ export function createHandler(Module, ctx) {
   const trees = JSON.parse(Module.presetsJson('tree')).map((p) => ({ name: p.name, title: p.title, years: p.years }));
   const labs = new Map();  // client -> {lab, support: 'scene:<name>' | 'mesh:<name>' | null}
   const returned = new TransferPool();  // the ivy buffers each client handed back
-  let leafTextureOnce = null;  // {width, height, pixels}: the .glb's leaf texture, kept
+  let leafTextureOnce = null;  // {width, height, pixels}: the .glb's leaf texture, painted once, kept
+  // The leaf texture's buffers handed back by any client ('leafTexture.pixels'): the pixels are the
+  // same for every client, so the next client's copy goes into one of them (TransferPool client
+  // SHARED) instead of a fresh one.
+  const SHARED = Symbol('every client');
 
   // Progress from inside a long call (a big mesh's read and BVH, every growth step): at most one
   // message per 100 ms, for the request the lab is working on (entry.working).
@@ -106,18 +110,20 @@ export function createHandler(Module, ctx) {
     const mesh = {};
     const buffers = { reused: 0, fresh: 0 };
     for (const part of ['stems', 'leaves', 'suckers', 'buds']) mesh[part] = returned.take(client, part, entry.lab.buffers(part), transfer, buffers);
-    // The leaf texture (the .glb's pixels), once per client: copied out of the heap by the
-    // binding once per worker, copied for each client and transferred; the page keeps it for
-    // every later ivy.
-    let leafTexture;
+    // The leaf texture (the .glb's pixels), once per client: painted and copied out of the heap
+    // by the binding once per worker, then copied into a buffer a client handed back once it
+    // uploaded its texture (any client's: the pixels are the same), else a fresh one, and
+    // transferred. leafTextureBuffers: {reused, fresh} of that copy.
+    let leafTexture, leafTextureBuffers;
     if (!entry.leafTextureSent) {
       leafTextureOnce ??= Module.ivyLeafTexture();  // painted once per worker (about 30-50 ms)
-      const pixels = new Uint8Array(leafTextureOnce.pixels);  // this client's copy, transferred
-      leafTexture = { width: leafTextureOnce.width, height: leafTextureOnce.height, pixels: pixels.buffer };
-      transfer.push(pixels.buffer);
+      leafTextureBuffers = { reused: 0, fresh: 0, dropped: 0 };
+      const { pixels } = returned.take(SHARED, 'leafTexture', { pixels: leafTextureOnce.pixels }, transfer, leafTextureBuffers,
+        (view) => view.byteLength);
+      leafTexture = { width: leafTextureOnce.width, height: leafTextureOnce.height, pixels };
       entry.leafTextureSent = true;
     }
-    post({ type: 'ivy', id, client, stats, mesh, leafTexture, steps: entry.lab.steps(), hash: entry.lab.hash(),
+    post({ type: 'ivy', id, client, stats, mesh, leafTexture, leafTextureBuffers, steps: entry.lab.steps(), hash: entry.lab.hash(),
       wallMs: performance.now() - t0, buffers }, transfer);
   }
 
@@ -173,8 +179,21 @@ export function createHandler(Module, ctx) {
     post({ type: 'export', id: msg.id, client, format: msg.format, bytes }, [bytes]);
   }
 
+  // The client went away (web/worker/worker.js 'close'): its lab is deleted and its returned
+  // buffers are dropped (not the shared leaf-texture buffer). Returns what was let go.
+  function close(client) {
+    const entry = labs.get(client);
+    if (entry) {
+      entry.lab.setProgress(null);
+      entry.lab.delete();
+    }
+    labs.delete(client);
+    return { sessions: entry ? 1 : 0, buffers: returned.forget(client) };
+  }
+
   return {
     superseding: ['update'],
+    close,
     ready: (msg) => ({ paramTable, presets, scenes, trees, decoded: JSON.parse(Module.decodeHash('ivy', String(msg.hash || ''), '')) }),
     messages: {
       decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...JSON.parse(Module.decodeHash('ivy', String(msg.hash || ''), '')) }),
@@ -183,7 +202,12 @@ export function createHandler(Module, ctx) {
       mesh,
       pick,
       export: exportIvy,
-      recycle: (msg, client) => returned.give(client, msg.buffers),
+      // The leaf texture's pixels go to the buffers every client shares; the rest are the client's.
+      recycle: (msg, client) => {
+        const { 'leafTexture.pixels': texture, ...own } = msg.buffers || {};
+        returned.give(client, own);
+        if (texture) returned.give(SHARED, { 'leafTexture.pixels': texture });
+      },
     },
   };
 }

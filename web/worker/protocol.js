@@ -70,7 +70,7 @@
 
 /**
  * The client's buffers back once they are on its GPU (tree: the mesh parts, 'sway.poses' of a pose,
- * 'cards.*' and 'lines.*' of a draw list; ivy: stems, leaves, suckers, buds), as {"<part>.<name>": ArrayBuffer} (web/shell/worker_client.js recycle), transferred;
+ * 'cards.*' and 'lines.*' of a draw list, 'atlas.*' of a hybrid or motion atlas; ivy: stems, leaves, suckers, buds, 'support.*', and 'leafTexture.pixels', which any client's next copy may fill), as {"<part>.<name>": ArrayBuffer} (web/shell/worker_client.js recycle), transferred;
  * the next reply copies into them. No reply.
  * @typedef {Envelope & {type: 'recycle', buffers: Object<string, ArrayBuffer>}} RecycleMessage
  */
@@ -98,12 +98,22 @@
  *       lines: {positions, colors, widths, joints, weights}, buffers: {reused, fresh}, slot?, tag?}
  *       (views of the exact length into the client's returned buffers when they fit; transferred)
  * With motion: true (and atlas: true for the atlas), the same for a full-mode tree: its cheaper
- * representation while it moves (issue 16), -> {type: 'motionAtlas', client, hybrid} (as the
- * tree message's hybrid) when asked, then {type: 'drawList', motion: true, ...}; a scene that cannot
+ * representation while it moves (issue 16), -> {type: 'motionAtlas', client, hybrid, buffers:
+ * {reused, fresh, dropped}} (as the tree message's hybrid, into the 'atlas.*' buffers the client
+ * handed back when they fit: the page recycles them once painted) when asked, then {type: 'drawList', motion: true, ...}; a scene that cannot
  * be built -> {type: 'error', client, control: 'motion', message}.
  */
 
 /**
+ * A client's end (web/shell/worker_client.js close()): every study's handler loaded so far lets
+ * the client's sessions and returned buffers go (its close(client)); the router answers.
+ * @typedef {Envelope & {type: 'close'}} CloseMessage
+ *   -> {type: 'closed', id, client, released: {<study>: {sessions: number, buffers: number}}}
+ */
+
+/**
+ * Exports are one-off copies: the bytes are copied once out of the heap into a fresh buffer and
+ * transferred; the page keeps them in its download's Blob (nothing is handed back).
  * @typedef {Envelope & {type: 'export', format: 'glb'|'json'}} ExportMessage
  *   -> {type: 'export', id, client, format, bytes: ArrayBuffer} (the client's last finished tree)
  * Any failure -> {type: 'error', id, client, message} (one line, naming the field and its range).
@@ -120,8 +130,10 @@
  *      {type: 'ivy', stats, mesh: {stems, leaves, suckers: {positions, normals, indices, birth},
  *       buds: {positions, kind, birth}} (leaves also uvs: the .glb's TEXCOORD_0; typed views, as
  *       the tree's MeshPart, into the buffers the client handed back with 'recycle' when they fit),
- *       leafTexture?: {width, height, pixels: ArrayBuffer RGBA} (the .glb's leaf texture, in the
- *       client's first 'ivy' only), steps, hash, wallMs, buffers: {reused, fresh}}
+ *       leafTexture?: {width, height, pixels: Uint8Array RGBA} (the .glb's leaf texture, in the
+ *       client's first 'ivy' only; the page hands it back as 'leafTexture.pixels' once uploaded,
+ *       and any client's returned one carries the next client's copy: leafTextureBuffers
+ *       {reused, fresh}), steps, hash, wallMs, buffers: {reused, fresh}}
  * @typedef {Envelope & {type: 'mesh', name: string, bytes: ArrayBuffer}} IvyMeshMessage
  *   -> {type: 'support', support: {name, dropped, free, triangles, bounds, seeds}, buffers:
  *       {positions, normals, indices} (views, into the 'support.*' buffers the client handed back

@@ -122,8 +122,18 @@ export function createHandler(Module, ctx) {
     post({ type: 'export', id: msg.id, client, format, bytes }, transfer);
   }
 
+  // The client went away (web/worker/worker.js 'close'): its lab is deleted and its returned
+  // buffers are dropped. Returns what was let go.
+  function close(client) {
+    const lab = labs.get(client);
+    lab?.delete();
+    labs.delete(client);
+    return { sessions: lab ? 1 : 0, buffers: returned.forget(client) };
+  }
+
   return {
     superseding: ['update'],
+    close,
     ready: (msg) => ({ paramTable, presets, seeds, decoded: JSON.parse(Module.decodeHash('terrain', String(msg.hash || ''), '')) }),
     messages: {
       decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...JSON.parse(Module.decodeHash('terrain', String(msg.hash || ''), '')) }),

@@ -35,23 +35,49 @@ export const SHRINK = 4;
 // stayed empty, a name no longer sent) is dropped, so the pool holds only what the next replies
 // may fill, never every buffer a client once had.
 export const MAX_IDLE_REPLIES = 4;
+// A pooled buffer of a group that is never asked for again (the hybrid atlas after the page went
+// back to full mode, the draw lists of a tree no longer in hybrid mode, a client that went silent
+// without closing) is dropped this long after it was given back, at the pool's next give or take
+// (of any client and group).
+export const MAX_IDLE_MS = 60_000;
 
 // Per client, the buffers its page returned, by key ("<group>.<name>", e.g. "bark.positions"),
-// each with the number of its group's replies that have not reused it.
+// each with the number of its group's replies that have not reused it and the time it came back.
+// A client may be any Map key (a handler's buffers shared by every client use a Symbol of its own).
 export class TransferPool {
-  constructor() {
-    this.clients = new Map();  // client -> Map(key -> {buffer: ArrayBuffer, idle})
+  // now(): the clock in ms (tests pass their own); maxIdleMs: see MAX_IDLE_MS.
+  constructor({ now = () => performance.now(), maxIdleMs = MAX_IDLE_MS } = {}) {
+    this.clients = new Map();  // client -> Map(key -> {buffer: ArrayBuffer, idle, at})
+    this.now = now;
+    this.maxIdleMs = maxIdleMs;
   }
 
   // The page's buffers back: {key: ArrayBuffer or view} (the newest one per key is kept).
   give(client, buffers) {
+    const at = this.now();
+    this.#expire(at);
     if (!buffers || typeof buffers !== 'object') return;
     let pool = this.clients.get(client);
     if (!pool) this.clients.set(client, (pool = new Map()));
     for (const [key, value] of Object.entries(buffers)) {
       const buffer = ArrayBuffer.isView(value) ? value.buffer : value;
-      if (buffer instanceof ArrayBuffer && buffer.byteLength > 0) pool.set(String(key), { buffer, idle: 0 });
+      if (buffer instanceof ArrayBuffer && buffer.byteLength > 0) pool.set(String(key), { buffer, idle: 0, at });
     }
+  }
+
+  // Drops every pooled buffer (of any client) given back more than maxIdleMs before `at`; returns
+  // how many.
+  #expire(at) {
+    let dropped = 0;
+    for (const [client, pool] of this.clients) {
+      for (const [key, entry] of pool) {
+        if (at - entry.at <= this.maxIdleMs) continue;
+        pool.delete(key);
+        dropped += 1;
+      }
+      if (pool.size === 0) this.clients.delete(client);
+    }
+    return dropped;
   }
 
   // Like takeBuffers, but each view is copied into the client's returned buffer of key
@@ -60,11 +86,13 @@ export class TransferPool {
   // onto `transfer`, and `counts` ({reused, fresh, dropped}) counts them. A returned buffer of the
   // wrong size class (too small, or over SHRINK times and 1 MB too big) is dropped; one of the group
   // that this reply did not reuse (its view empty, or its name not sent) ages by one reply and is
-  // dropped after MAX_IDLE_REPLIES. `room(view)`: the bytes of a fresh buffer for the view (at
-  // least its own; default HEADROOM more).
+  // dropped after MAX_IDLE_REPLIES; any buffer given back over maxIdleMs ago is dropped first
+  // (counted too). `room(view)`: the bytes of a fresh buffer for the view (at least its own;
+  // default HEADROOM more).
   take(client, group, views, transfer, counts = { reused: 0, fresh: 0, dropped: 0 }, room = (view) => view.byteLength * HEADROOM) {
     if (!views) throw new Error('no such buffer group');
     const drop = () => { counts.dropped = (counts.dropped ?? 0) + 1; };
+    for (let n = this.#expire(this.now()); n > 0; --n) drop();
     const pool = this.clients.get(client);
     const out = {};
     for (const [name, view] of Object.entries(views)) {

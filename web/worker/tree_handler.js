@@ -290,8 +290,9 @@ export function createHandler(Module, ctx) {
         }
         last.motionHybrid = true;
       }
-      const transfer = [];
-      post({ type: 'motionAtlas', client, hybrid: takeAtlas(session, client, transfer) }, transfer);
+      // Into the 'atlas.*' buffers the client handed back (the page recycles them once painted).
+      const transfer = [], buffers = { reused: 0, fresh: 0, dropped: 0 };
+      post({ type: 'motionAtlas', client, hybrid: takeAtlas(session, client, transfer, buffers), buffers }, transfer);
     }
     const { camera, slot, tag } = msg;
     const n = (x, d) => (Number.isFinite(Number(x)) ? Number(x) : d);
@@ -336,9 +337,20 @@ export function createHandler(Module, ctx) {
 
   const decode = (hash) => JSON.parse(Module.decodeHash('tree', String(hash ?? ''), ''));
 
+  // The client went away (web/worker/worker.js 'close'): its sway stops, its tree session is
+  // deleted and its returned buffers are dropped. Returns what was let go.
+  function close(client) {
+    stopWind(client);
+    const last = finished.get(client);
+    last?.session.delete();
+    finished.delete(client);
+    return { sessions: last ? 1 : 0, buffers: returned.forget(client) };
+  }
+
   return {
     // Requests of these types supersede the client's older ones.
     superseding: ['update'],
+    close,
     ready: (msg) => ({ paramTable, presets: JSON.parse(Module.presetsJson('tree')), decoded: decode(msg.hash) }),
     messages: {
       decode: (msg, client) => {

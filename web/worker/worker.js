@@ -7,8 +7,12 @@
 const MODULE_URL = new URL('../../wasm/niwa_web.js', import.meta.url).href;
 
 // A study's handler is the module ./<study>_handler.js, loaded on its first message: its
-// createHandler(Module, ctx) returns {superseding, ready(msg), messages: {type: fn(msg, client)}}.
-// Adding a study adds that file; nothing here changes.
+// createHandler(Module, ctx) returns {superseding, ready(msg), messages: {type: fn(msg, client)},
+// close(client)}. Adding a study adds that file; nothing here changes.
+// A client's end ('close', web/shell/worker_client.js close(): an embed taken off its page) goes to
+// every study's handler loaded so far: each lets the client's sessions and returned buffers go
+// (close(client) -> {sessions, buffers}), and the router answers {type: 'closed', released:
+// {study: what its handler let go}}.
 const STUDY_NAME = /^[a-z][a-z_]{0,31}$/;
 
 let modulePromise = null;
@@ -62,6 +66,16 @@ self.onmessage = async (event) => {
   const study = typeof msg.study === 'string' ? msg.study : 'tree';
   try {
     if (typeof msg.type !== 'string' || !msg.type) throw new Error(`unknown message type '${String(msg.type).slice(0, 40)}'`);
+    if (msg.type === 'close') {
+      const released = {};
+      for (const [name, loaded] of handlers) {
+        const handler = await loaded.catch(() => null);
+        if (handler?.close) released[name] = handler.close(client);
+      }
+      latest.delete(client);
+      postMessage({ type: 'closed', id: msg.id, client, released });
+      return;
+    }
     const handler = await handlerFor(study);
     if (msg.type === 'init') {
       postMessage({ type: 'ready', id: msg.id, client, study, ...handler.ready(msg) });
