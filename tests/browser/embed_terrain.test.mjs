@@ -85,7 +85,11 @@ await runBrowserTest(async (server, browser) => {
   const studio = await context.newPage();
   watchPage(studio, problems);
   await studio.goto(`${server.url}terrain.html#preset=improved&builtin=valleys`, { waitUntil: 'load' });
-  await studio.waitForFunction(() => document.documentElement.dataset.status === 'ready', null, { timeout: TIMEOUT });
+  // Ready and drawn (the dialog's screenshot showed a blank canvas when taken before the first frame).
+  await studio.waitForFunction(() => {
+    const d = document.documentElement.dataset;
+    return d.status === 'ready' && Number(d.terrainSerial) > 0 && (d.drawnSerial === d.terrainSerial || d.drawing === 'off');
+  }, null, { timeout: TIMEOUT });
   await studio.click('#embed');
   const snippets = await studio.evaluate(() => [document.getElementById('embed-element').value, document.getElementById('embed-iframe').value]);
   check('the Embed dialog offers <niwa-terrain> and the iframe with the hash',
