@@ -115,6 +115,10 @@ refused('ivy .glb beyond 128 MB', ['ivy', 'grow', '--scene', 'free', '--preset',
   '--steps', 'ivy.glb', /^niwa: error: --steps: at step \d\d? of 10000: growing on to about [\d,]+ buds by step \d+ \(at least the [\d,]+ new buds of step \d+ each step\) and growing the ivy and writing the \.glb needs about [\d.]+ MB, more than the 128 MB allowed; /);
 refused('ivy cubes4 10000 steps to .glb', ['ivy', 'grow', '--steps', '10000'], '--steps', 'cubes.glb',
   /^niwa: error: --steps: at step (1\d\d|2\d\d) of 10000: growing on to about [\d,]+ buds by step \d+ .* writing the \.glb needs about [\d.]+ GB, more than the 2 GB allowed; /);
+// With --stats alone (no export planned) the statistics are projected the same way (issue 34: it was
+// refused at step 357 naming --max-seconds).
+refused('ivy cubes4 10000 steps --stats', ['ivy', 'grow', '--steps', '10000', '--stats'], '--steps', null,
+  /^niwa: error: --steps: at step (1\d\d|2\d\d|3[0-3]\d) of 10000: growing on to about [\d,]+ buds by step \d+ .* and growing the ivy and measuring the statistics takes about [\d.]+ s, more than the 60 s allowed; .*or leave out --stats/);
 for (const cmd of [native, wasm]) {
   const a = spawn(cmd, ['ivy', 'grow', '--steps', '50', '--stats']);
   const b = spawn(cmd, ['ivy', 'grow', '--steps', '50', '--stats', '--max-memory', '4G', '--max-seconds', '600']);
