@@ -171,9 +171,14 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
     std::fprintf(stderr, "budget: %.0f MB %.2f s (%s)\n", e.memory_bytes / 1048576, e.seconds,
                  e.what.c_str());
     Result<terrain::Ring> seed = terrain::StateSeed(state);
-    if (seed.ok())
-      std::fprintf(stderr, "budget: the seed's sweep: %.0f edge tests estimated, %.0f made\n",
-                   terrain::ShrinkSweepTests(*seed), run->terrain().counts.sweep_tests);
+    if (seed.ok()) {
+      const terrain::SeedShrinkForecast f = terrain::ForecastSeedShrink(*seed, state.params);
+      std::fprintf(stderr,
+                   "budget: the seed's sweep: %.0f work estimated (%.0f windings, %.0f split "
+                   "points, %.0f pairs tried), %.0f made\n",
+                   f.work(), f.windings, f.split_points, f.tried_pairs,
+                   run->terrain().counts.sweep_tests);
+    }
   }
   Check(run::RenameField(advanced, kFieldFlags));
   const auto t2 = std::chrono::steady_clock::now();

@@ -25,7 +25,8 @@ Status PreflightGltfJson(std::string_view json, const std::string& name);
 // Draco 1.5.5 itself refuses counts its bytes cannot hold cheaply (2^28 faces in a 642-byte buffer:
 // a 6 MB peak); this cap stops a file that really holds a mesh above the reader's limits before it
 // is decoded, natively. The page decodes Draco with draco3d (web/mesh/mesh_import.js) before the
-// core sees the file and does not call this yet.
+// core sees the file; its dracoHeaderCounts reads the header the same way and refuses with the same
+// line (tests/cli/mesh_import.test.mjs checks its caps against mesh_reader.h's).
 Status PreflightDracoHeader(std::string_view bytes, const std::string& label);
 
 }  // namespace niwa::io

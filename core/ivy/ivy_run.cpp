@@ -254,25 +254,35 @@ Status IvyRun::Advance(const run::Observer& observer) {
   Status early;
   double checked_buds = 0;
   const bool check_early = !options_.planned_export.empty() || options_.stats;
-  // And, for a planned export, its projection to the last step (issue 34: --steps 10000 on cubes4
-  // was refused only at step 389 of 10000, with 139,222 buds): ProjectIvyBuds.
+  // And, for a planned export or the statistics, their projection to the last step (issue 34:
+  // --steps 10000 on cubes4 was refused only at step 389 of 10000, with 139,222 buds, and with
+  // --stats alone at step 357 with 87,705): ProjectIvyBuds.
   double step_buds = 0;  // the buds after the previous step
   double bud_steps = 0;  // Σ buds over the steps made
   BudProjection projection;
+  // The planned outputs' estimate on the buds so far: the export (with the statistics when asked
+  // for), else the grown ivy and its statistics.
+  const auto planned = [&](const IvyModel& model, const GrowLog& so_far) -> Result<Estimate> {
+    if (!options_.planned_export.empty())
+      return ExportEstimateOf(model, so_far, options_.planned_export,
+                              options_.planned_with_support);
+    return EstimateIvyGrown(model, so_far, limits_) +
+           EstimateIvyStats(CountIvyStatsWork(model, state_.params, support_->triangles()));
+  };
+  const std::string change =
+      options_.planned_export.empty() ? options_.stats_change : options_.export_change;
   const StepObserver on_step = [&](int step, int steps, const IvyModel& model,
                                    const GrowLog& so_far) {
     const double buds = static_cast<double>(model.buds.size());
     const double new_buds = buds - step_buds;
     step_buds = buds;
     bud_steps += buds;
-    if (!options_.planned_export.empty() && buds >= 1.05 * projection.buds + 64) {
-      Result<Estimate> exported =
-          ExportEstimateOf(model, so_far, options_.planned_export, options_.planned_with_support);
+    if (check_early && buds >= 1.05 * projection.buds + 64) {
+      Result<Estimate> exported = planned(model, so_far);
       if (exported.ok()) {
-        const Status fits =
-            ProjectIvyBuds(&projection, buds, new_buds, bud_steps, *exported,
-                           EstimateIvyGrown(model, so_far, grow_limits_).seconds, grow_limits_,
-                           budget_, step, steps, options_.export_change);
+        const Status fits = ProjectIvyBuds(&projection, buds, new_buds, bud_steps, *exported,
+                                           EstimateIvyGrown(model, so_far, grow_limits_).seconds,
+                                           grow_limits_, budget_, step, steps, change);
         if (!fits.ok()) {
           early = fits;
           return false;
@@ -281,17 +291,8 @@ Status IvyRun::Advance(const run::Observer& observer) {
     }
     if (check_early && buds >= 1.25 * checked_buds + 64) {
       checked_buds = buds;
-      Estimate e;
-      if (!options_.planned_export.empty()) {
-        Result<Estimate> exported =
-            ExportEstimateOf(model, so_far, options_.planned_export, options_.planned_with_support);
-        if (exported.ok()) e = *exported;
-      } else {
-        e = EstimateIvyGrown(model, so_far, limits_) +
-            EstimateIvyStats(CountIvyStatsWork(model, state_.params, support_->triangles()));
-      }
-      const std::string change =
-          options_.planned_export.empty() ? options_.stats_change : options_.export_change;
+      Result<Estimate> exported = planned(model, so_far);
+      const Estimate e = exported.ok() ? *exported : Estimate{};
       const Status fits = CheckEstimate(e, budget_, change);
       if (!fits.ok()) {
         early =

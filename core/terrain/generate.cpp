@@ -310,7 +310,7 @@ Result<Ring> CheckSeed(const Ring& seed) {
     }
   }
   Ring r = Normalise(seed);
-  if (r.size() < 3 || !IsSimple(ToGrid(r))) {
+  if (r.size() < 3 || !IsSimpleEitherAxis(ToGrid(r))) {
     return Status::Error("contour",
                          "self-intersects or has no area; must be a simple closed polygon");
   }

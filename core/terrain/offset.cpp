@@ -20,12 +20,7 @@ bool OnSeg(const IPoint& a, const IPoint& b, const IPoint& p) {
          std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
 }
 
-// The sweep work (ShrinkCounts::sweep_tests) a split point costs: its pieces, their merge into the
-// weighted edges (a map node) and their share of the windings and the chaining, about 6 µs and
-// 400 bytes a split point on a 10,000-tooth comb (native release, loaded host) against 30 ns a
-// counted test (terrain_budget.cpp). Counted as the points are found, so a shape whose offset
-// path crosses itself millions of times stops before their pieces are made.
-constexpr double kWorkPerSplit = 200;
+constexpr double kWorkPerSplit = kSweepWorkPerSplit;  // offset.h
 
 // Adds `work` to counts->sweep_tests; true (and counts->stopped) once past the most allowed.
 bool OverSweepBudget(double work, ShrinkCounts* counts) {
@@ -51,15 +46,21 @@ std::vector<Seg> SplitAtIntersections(std::vector<Seg> segs, ShrinkCounts* count
     });
     bool any = false;
     std::size_t found = 0;  // split points found by the segments before this one
+    std::size_t tried = 0;  // and the pairs they tried
     for (std::size_t s = 0; s < n; ++s) {
-      if (found > 0 && OverSweepBudget(kWorkPerSplit * static_cast<double>(found), counts))
+      if ((found > 0 || tried > 0) &&
+          OverSweepBudget(kWorkPerSplit * static_cast<double>(found) +
+                              kSweepWorkPerTry * static_cast<double>(tried),
+                          counts))
         return {};
       found = 0;
+      tried = 0;
       const std::size_t i = order[s];
       const Seg& si = segs[i];
       const int64_t end = std::max(si.a.x, si.b.x);
       const int64_t ylo = std::min(si.a.y, si.b.y), yhi = std::max(si.a.y, si.b.y);
       for (std::size_t t = s + 1; t < n && lo(order[t]) <= end; ++t) {
+        ++tried;
         const std::size_t j = order[t];
         const Seg& sj = segs[j];
         if (std::max(sj.a.y, sj.b.y) < ylo || std::min(sj.a.y, sj.b.y) > yhi) continue;
@@ -96,7 +97,11 @@ std::vector<Seg> SplitAtIntersections(std::vector<Seg> segs, ShrinkCounts* count
         }
       }
     }
-    if (found > 0 && OverSweepBudget(kWorkPerSplit * static_cast<double>(found), counts)) return {};
+    if ((found > 0 || tried > 0) &&
+        OverSweepBudget(kWorkPerSplit * static_cast<double>(found) +
+                            kSweepWorkPerTry * static_cast<double>(tried),
+                        counts))
+      return {};
     if (!any) break;
     std::vector<Seg> out;
     out.reserve(n * 2);
@@ -520,6 +525,113 @@ double UnionSweepWork(const Ring& ring) {
   ShrinkCounts counts;
   WindingsBeside(edges, nullptr, &counts);
   return counts.sweep_tests;
+}
+
+namespace {
+
+// Pairs of segments whose x ranges overlap (closed), as SplitAtIntersections tries them: in the
+// order of low x, each segment with the later ones whose low x is within its range, so
+// Σ_s #{t > s : lo(t) ≤ hi(s)} = Σ_i #{j : lo(j) ≤ hi(i)} − n(n + 1)/2 (ties among equal lows
+// give the same sum in any order).
+double TriedPairs(const std::vector<Seg>& segs) {
+  std::vector<int64_t> lo(segs.size());
+  for (std::size_t i = 0; i < segs.size(); ++i) lo[i] = std::min(segs[i].a.x, segs[i].b.x);
+  std::sort(lo.begin(), lo.end());
+  double pairs = 0;
+  for (const Seg& s : segs)
+    pairs += static_cast<double>(std::upper_bound(lo.begin(), lo.end(), std::max(s.a.x, s.b.x)) -
+                                 lo.begin());
+  const double n = static_cast<double>(segs.size());
+  return pairs - n * (n + 1) / 2;
+}
+
+// Pairs of segments whose closed bounding boxes overlap: a sweep over x (boxes opening before
+// those closing at the same x), each opening box counting the open ones whose y range meets its
+// own (all open, less those wholly below or wholly above it: two Fenwick trees over y).
+double BoxPairs(const std::vector<Seg>& segs) {
+  const std::size_t n = segs.size();
+  std::vector<int64_t> ys;
+  ys.reserve(2 * n);
+  for (const Seg& s : segs) {
+    ys.push_back(s.a.y);
+    ys.push_back(s.b.y);
+  }
+  std::sort(ys.begin(), ys.end());
+  ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
+  std::vector<std::pair<std::size_t, std::size_t>> ranks(n);  // of each box's y0 and y1
+  for (std::size_t i = 0; i < n; ++i) {
+    auto rank = [&](int64_t y) {
+      return static_cast<std::size_t>(std::lower_bound(ys.begin(), ys.end(), y) - ys.begin());
+    };
+    ranks[i] = {rank(std::min(segs[i].a.y, segs[i].b.y)), rank(std::max(segs[i].a.y, segs[i].b.y))};
+  }
+  std::vector<int64_t> top(ys.size() + 1, 0), bottom(ys.size() + 1, 0);  // by y1 and by y0
+  auto add = [](std::vector<int64_t>& f, std::size_t i, int64_t v) {
+    for (++i; i < f.size(); i += i & (~i + 1)) f[i] += v;
+  };
+  auto below = [](const std::vector<int64_t>& f, std::size_t i) {  // entries with rank < i
+    int64_t s = 0;
+    for (; i > 0; i -= i & (~i + 1)) s += f[i];
+    return s;
+  };
+  struct Event {
+    int64_t x;
+    int closing;  // 0 opens, 1 closes
+    std::size_t seg;
+  };
+  std::vector<Event> events;
+  events.reserve(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    events.push_back({std::min(segs[i].a.x, segs[i].b.x), 0, i});
+    events.push_back({std::max(segs[i].a.x, segs[i].b.x), 1, i});
+  }
+  std::sort(events.begin(), events.end(), [](const Event& p, const Event& q) {
+    return p.x < q.x ||
+           (p.x == q.x && (p.closing < q.closing || (p.closing == q.closing && p.seg < q.seg)));
+  });
+  double pairs = 0;
+  int64_t open = 0;
+  for (const Event& e : events) {
+    const auto [y0, y1] = ranks[e.seg];
+    if (e.closing == 0) {
+      // Open boxes wholly below (top < y0) or wholly above (bottom > y1) miss this one.
+      const int64_t miss = below(top, y0) + (open - below(bottom, y1 + 1));
+      pairs += static_cast<double>(open - miss);
+      add(top, y1, 1);
+      add(bottom, y0, 1);
+      ++open;
+    } else {
+      add(top, y1, -1);
+      add(bottom, y0, -1);
+      --open;
+    }
+  }
+  return pairs;
+}
+
+}  // namespace
+
+double TriedEdgePairs(const Ring& ring) {
+  const IRing g = ToGrid(ring);
+  return std::min(SweepPairs(g, false), SweepPairs(g, true));  // IsSimpleEitherAxis
+}
+
+SplitForecast ForecastSplits(const Ring& ring, const ShrinkOptions& o) {
+  // As Shrink: the pre-clean, the normalised ring, its raw offset path on the grid.
+  Ring r = PreClean(ring, o.clean_len, o.clean_angle_deg, nullptr);
+  r = Normalise(r);
+  SplitForecast f;
+  if (r.size() < 3) return f;
+  const IRing p = ToGrid(RawOffsetPath(r, o));
+  std::vector<Seg> segs;
+  segs.reserve(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p[i] != p[(i + 1) % p.size()]) segs.push_back({p[i], p[(i + 1) % p.size()]});
+  f.segments = static_cast<double>(segs.size());
+  f.tried_pairs = TriedPairs(segs);
+  // Each segment's box meets its two neighbours' at their shared vertex.
+  f.box_pairs = std::max(0.0, BoxPairs(segs) - f.segments);
+  return f;
 }
 
 std::vector<Ring> PositiveUnion(const std::vector<Ring>& paths, ShrinkCounts* counts) {

@@ -156,6 +156,29 @@ bool IsSimple(const IRing& ring) {
   return SelfIntersections(ring, 1).empty();
 }
 
+double SweepPairs(const IRing& ring, bool along_y) {
+  // In the order of the low end, each edge with the later ones whose low end is within its range:
+  // Σ_s #{t > s : lo(t) ≤ hi(s)} = Σ_i #{j : lo(j) ≤ hi(i)} − n(n + 1)/2 (any order of ties).
+  const std::size_t n = ring.size();
+  auto at = [&](std::size_t i) { return along_y ? ring[i].y : ring[i].x; };
+  std::vector<int64_t> lo(n);
+  for (std::size_t i = 0; i < n; ++i) lo[i] = std::min(at(i), at((i + 1) % n));
+  std::sort(lo.begin(), lo.end());
+  double pairs = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    pairs += static_cast<double>(
+        std::upper_bound(lo.begin(), lo.end(), std::max(at(i), at((i + 1) % n))) - lo.begin());
+  const double m = static_cast<double>(n);
+  return pairs - m * (m + 1) / 2;
+}
+
+bool IsSimpleEitherAxis(const IRing& ring) {
+  if (ring.size() < 3 || SweepPairs(ring, false) <= SweepPairs(ring, true)) return IsSimple(ring);
+  IRing turned(ring.size());  // x and y swapped: a mirror, which keeps every meeting of edges
+  for (std::size_t i = 0; i < ring.size(); ++i) turned[i] = {ring[i].y, ring[i].x};
+  return IsSimple(turned);
+}
+
 bool RingsIntersect(const IRing& a, const IRing& b) {
   // Concatenated edges, sorted on x, tested only across the two rings.
   struct Edge {

@@ -48,6 +48,13 @@ std::vector<std::pair<int, int>> SelfIntersectionsBruteForce(const IRing& ring);
 // At least 3 distinct points, no repeated vertex, no two edges meeting except neighbours at
 // their shared vertex, non-zero area.
 bool IsSimple(const IRing& ring);
+// The pairs of edges SelfIntersections' sweep tries (their x ranges overlap; with along_y, their
+// y ranges), counted by a sort in O(n log n) without trying them.
+double SweepPairs(const IRing& ring, bool along_y);
+// IsSimple with its sweep along x or y, whichever tries fewer pairs: the same answer (a crossing
+// pair overlaps on both axes), linear where a ring's edges stack across one x range (a comb
+// turned on its side: quadratic along x). For seeds (generate.h CheckSeed).
+bool IsSimpleEitherAxis(const IRing& ring);
 // Any edge of a meets any edge of b.
 bool RingsIntersect(const IRing& a, const IRing& b);
 // Point strictly inside (crossing rule; points on the boundary count as outside).

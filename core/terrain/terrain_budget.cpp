@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "terrain/generate.h"
 #include "terrain/offset.h"
 #include "terrain/polygon.h"
 
@@ -162,18 +163,57 @@ bool GrowFitsLimits(const Terrain& t, const TerrainParams& params, const Terrain
 
 double ShrinkSweepTests(const Ring& ring) { return ring.size() < 2 ? 0 : UnionSweepWork(ring); }
 
-Status CheckSeedShape(const Ring& seed, const Budget& budget) {
-  const double tests = ShrinkSweepTests(seed);
-  const double seconds = kNsPerSweepTest * 1e-9 * tests;
+double SeedShrinkForecast::work() const {
+  return windings + kSweepWorkPerSplit * split_points + kSweepWorkPerTry * tried_pairs;
+}
+
+SeedShrinkForecast ForecastSeedShrink(const Ring& seed, const TerrainParams& p) {
+  SeedShrinkForecast f;
+  if (seed.size() < 3) return f;
+  // As Grow: the seed normalised (CheckSeed), then shrunk with the table's options (enlarged
+  // first when down > 0).
+  const Ring ring = Normalise(seed);
+  if (ring.size() < 3) return f;
+  f.windings = ShrinkSweepTests(ring);
+  f.tried_pairs = TriedEdgePairs(ring);  // IsSimple
+  ShrinkOptions so;
+  so.d = p.Get(TerrainParam::kD);
+  so.join = static_cast<Join>(p.GetInt(TerrainParam::kJoin));
+  so.c = p.Get(TerrainParam::kC);
+  so.clean_len = p.Get(TerrainParam::kCleanLen) * so.d;
+  so.clean_angle_deg = p.Get(TerrainParam::kCleanAngle);
+  for (const bool outward : {false, true}) {
+    if (outward && p.GetInt(TerrainParam::kDown) == 0) break;
+    so.outward = outward;
+    const SplitForecast s = ForecastSplits(ring, so);
+    const double splits = 2 * s.box_pairs;
+    f.split_points += splits;
+    f.tried_pairs += s.tried_pairs;
+    if (splits > 0 && s.segments > 0)
+      f.tried_pairs += 2 * (1 + splits / s.segments) * s.tried_pairs;
+  }
+  return f;
+}
+
+Status CheckSeedShape(const Ring& seed, const TerrainParams& params, const Budget& budget) {
+  // CheckSeed's own refusals come first (in Grow), and the forecast needs finite grid points.
+  if (seed.size() < 3 || seed.size() > kMaxSeedPoints) return Status::Ok();
+  for (const Vec2& v : seed)
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || std::fabs(v.x) > kMaxCoordinate ||
+        std::fabs(v.y) > kMaxCoordinate)
+      return Status::Ok();
+  const SeedShrinkForecast f = ForecastSeedShrink(seed, params);
+  const double seconds = kNsPerSweepTest * 1e-9 * f.work();
   if (seconds <= budget.seconds) return Status::Ok();
-  return Status::Error(
-      "contour", FormatCount(static_cast<double>(seed.size())) +
-                     " points whose shape needs about " + FormatSeconds(seconds) +
-                     " to shrink once (" + FormatCount(tests) +
-                     " edge tests: many edges side by side across its height, as a comb's teeth); "
-                     "must take at most " +
-                     FormatSeconds(budget.seconds) + " (" + budget.seconds_limit +
-                     "); simplify the contour" + RaiseHint(budget.seconds_limit));
+  return Status::Error("contour",
+                       FormatCount(static_cast<double>(seed.size())) +
+                           " points whose shape needs about " + FormatSeconds(seconds) +
+                           " to shrink once (" + FormatCount(f.split_points) +
+                           " split points of its offset path, " + FormatCount(f.tried_pairs) +
+                           " edge pairs tried: many edges side by side within 2·d, as a comb's "
+                           "teeth); must take at most " +
+                           FormatSeconds(budget.seconds) + " (" + budget.seconds_limit +
+                           "); simplify the contour or lower d" + RaiseHint(budget.seconds_limit));
 }
 
 Estimate EstimateTerrainGrown(const Terrain& t, const TerrainGrowLimits& l) {

@@ -65,10 +65,25 @@ bool GrowFitsLimits(const Terrain& terrain, const TerrainParams& params,
 // edge. Shape decides it: a round contour's strips hold about 2√E edges, a comb's hold every tooth
 // (E²/2). Counted from the ring alone, in O(E), before any shrink.
 double ShrinkSweepTests(const Ring& ring);
-// The seed's first shrink against the budget's seconds, before anything grows: ok, or
-// {"contour", "N edges whose shape needs about T s to shrink once (S edge tests); must take at most
-// L s (limit); ..."}.
-Status CheckSeedShape(const Ring& seed, const Budget& budget);
+// The seed's first shrink (and its first enlargement when down > 0), forecast before any is made
+// from the seed and the shrink's rows (offset.h ForecastSplits), in ShrinkCounts::sweep_tests'
+// units: the windings over the seed's edges; the split points of its raw offset path (two a pair
+// of segments whose boxes overlap: every crossing is one); the pairs the split sweep tries, in
+// its first pass and, when it splits, in the second over the pieces (about 2·k̄ times the first,
+// k̄ the pieces a segment is cut into: two partitions of overlapping ranges overlap in at most
+// k_i + k_j pieces); and the pairs the seed's simplicity check tries (polygon.h IsSimple). It
+// sees shape: a comb's teeth within 2·d of each other cross in its offset path about
+// (2·d / pitch)² times a tooth. O(n log n), whatever the shape. Accuracy: docs/budgets.md.
+struct SeedShrinkForecast {
+  double windings = 0, split_points = 0, tried_pairs = 0;
+  double work() const;
+};
+SeedShrinkForecast ForecastSeedShrink(const Ring& seed, const TerrainParams& params);
+// The forecast against the budget's seconds, before anything grows (a seed that CheckSeed refuses,
+// too few or too many points or one not finite, passes here and is refused there): ok, or
+// {"contour", "N points whose shape needs about T s to shrink once (...); must take at most L s
+// (limit); simplify the contour (or raise ...)"}.
+Status CheckSeedShape(const Ring& seed, const TerrainParams& params, const Budget& budget);
 
 // The grown contours' estimate (what Grow's checks counted).
 Estimate EstimateTerrainGrown(const Terrain& terrain, const TerrainGrowLimits& limits);

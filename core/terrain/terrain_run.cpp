@@ -71,7 +71,7 @@ Result<Ring> TerrainRun::Check(const TerrainState& state) const {
       CheckEstimate(EstimateHeightfield(Terrain{}, {side, side}), budget_, Change()));
   NIWA_RETURN_IF_ERROR(CheckTerrainParams(state.params));
   // A seed whose shape makes even its first shrink too slow (a comb), refused before it starts.
-  NIWA_RETURN_IF_ERROR(CheckSeedShape(*seed, budget_));
+  NIWA_RETURN_IF_ERROR(CheckSeedShape(*seed, state.params, budget_));
   return seed;
 }
 

@@ -3,7 +3,7 @@
 // seconds under --max-memory / --max-seconds, refused up front (exit 2, one line naming the limit,
 // no file) or stopped early (truncated, truncated_by, one stderr line), with the same limits and
 // the same lines in the native and the WASM CLI.
-import { existsSync, mkdtempSync } from 'node:fs';
+import { existsSync, mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { buildName, check, finish, native, requireWasm, root, spawn, wasm, withoutMs } from '../support/cli_pair.mjs';
@@ -115,6 +115,10 @@ refused('ivy .glb beyond 128 MB', ['ivy', 'grow', '--scene', 'free', '--preset',
   '--steps', 'ivy.glb', /^niwa: error: --steps: at step \d\d? of 10000: growing on to about [\d,]+ buds by step \d+ \(at least the [\d,]+ new buds of step \d+ each step\) and growing the ivy and writing the \.glb needs about [\d.]+ MB, more than the 128 MB allowed; /);
 refused('ivy cubes4 10000 steps to .glb', ['ivy', 'grow', '--steps', '10000'], '--steps', 'cubes.glb',
   /^niwa: error: --steps: at step (1\d\d|2\d\d) of 10000: growing on to about [\d,]+ buds by step \d+ .* writing the \.glb needs about [\d.]+ GB, more than the 2 GB allowed; /);
+// With --stats alone (no export planned) the statistics are projected the same way (issue 34: it was
+// refused at step 357 naming --max-seconds).
+refused('ivy cubes4 10000 steps --stats', ['ivy', 'grow', '--steps', '10000', '--stats'], '--steps', null,
+  /^niwa: error: --steps: at step (1\d\d|2\d\d|3[0-3]\d) of 10000: growing on to about [\d,]+ buds by step \d+ .* and growing the ivy and measuring the statistics takes about [\d.]+ s, more than the 60 s allowed; .*or leave out --stats/);
 for (const cmd of [native, wasm]) {
   const a = spawn(cmd, ['ivy', 'grow', '--steps', '50', '--stats']);
   const b = spawn(cmd, ['ivy', 'grow', '--steps', '50', '--stats', '--max-memory', '4G', '--max-seconds', '600']);
@@ -203,6 +207,26 @@ refused('terrain --res 4096 .glb at 2 GB', ['terrain', 'grow', '--builtin', 'dis
   /^niwa: error: --max-memory: growing [\d,]+ contours .* and the heightfield \(4,098 × 4,098 cells\) and writing the \.glb needs about .* more than the 2 GB allowed; lower --res \(or raise --max-memory\)$/);
 refused('terrain --res 4096 at 256 MB', ['terrain', 'grow', '--builtin', 'disk', '--res', '4096', '--stats', '--max-memory', '256M'], '--max-memory', null,
   /the heightfield \(4,098 × 4,098 cells\) needs about/);
+// Issue 34: a comb's shape, forecast from the seed before anything grows (terrain_budget.h
+// ForecastSeedShrink): 100,000 teeth were refused by the counted work after 3.8 s and 348 MB, and
+// 10,000 teeth turned on their side (every edge pair overlapping in x) ran past 60 s.
+function combFile(teeth, turned) {
+  const r = [[0, 0], [3 * teeth - 1, 0]];
+  for (let i = teeth - 1; i >= 0; --i) {
+    const x0 = 3 * i, x1 = x0 + 2;
+    if (i < teeth - 1) r.push([x1, 10]);
+    r.push([x1, 60], [x0, 60]);
+    if (i > 0) r.push([x0, 10]);
+  }
+  const ring = turned ? r.map(([x, y]) => [-y, x]) : r;
+  const file = join(dir, `comb${teeth}${turned ? 'turned' : ''}.json`);
+  writeFileSync(file, JSON.stringify({ points: ring }));
+  return file;
+}
+for (const [teeth, turned] of [[100000, false], [10000, true]]) {
+  refused(`terrain comb of ${teeth} teeth${turned ? ' turned' : ''}`, ['terrain', 'grow', '--contour', combFile(teeth, turned)],
+    '--contour', 't.glb', /points whose shape needs about [\d,]+ s to shrink once \([\d,]+ split points of its offset path, [\d,]+ edge pairs tried: .*must take at most 60 s \(--max-seconds\)/);
+}
 for (const cmd of [native, wasm]) {
   const a = spawn(cmd, ['terrain', 'grow', '--builtin', 'lobes7', '--stats']);
   const b = spawn(cmd, ['terrain', 'grow', '--builtin', 'lobes7', '--stats', '--max-memory', '4G', '--max-seconds', '600']);

@@ -7,7 +7,8 @@ import { join } from 'node:path';
 import { createRequire } from 'node:module';
 import { pathToFileURL } from 'node:url';
 import draco3d from 'draco3d';
-import { importMesh, parseGlb, dracoPrimitiveCount } from '../../web/mesh/mesh_import.js';
+import { importMesh, parseGlb, dracoPrimitiveCount, dracoHeaderCounts, MAX_MESH_TRIANGLES, MAX_MESH_VERTICES } from '../../web/mesh/mesh_import.js';
+import { dracoGlb, encodeDracoMesh } from '../support/draco_encode.mjs';
 import { cliArgv } from '../support/cli_pair.mjs';
 
 const root = process.env.NIWA_ROOT;
@@ -64,5 +65,62 @@ for (const file of ['hierarchy.glb', 'draco.glb', 'draco_twin.glb', 'embedded.gl
 const grass = readFileSync(join(data, 'grass.glb'));
 const same = importMesh(grass, { draco });
 check(same.dracoPrimitives === 0 && Buffer.compare(Buffer.from(same.bytes), grass) === 0, 'grass.glb (no Draco) is returned unchanged');
+
+// Issue 34: the page's Draco path applies io::PreflightDracoHeader's caps before draco3d sizes anything. The caps are
+// the core's (core/io/mesh_reader.h).
+const header = readFileSync(join(root, 'core/io/mesh_reader.h'), 'utf8');
+const coreTriangles = Number((/kMaxMeshTriangles = ([\d']+);/.exec(header) || [])[1]?.replaceAll("'", ''));
+check(coreTriangles === MAX_MESH_TRIANGLES && /kMaxMeshVertices = 3 \* kMaxMeshTriangles;/.test(header) &&
+  MAX_MESH_VERTICES === 3 * MAX_MESH_TRIANGLES, `the page's Draco caps are the core's: ${MAX_MESH_TRIANGLES} triangles, ${MAX_MESH_VERTICES} vertices`);
+const firstLine = (bin, file) => {
+  const r = spawnSync(...cliArgv(bin, ['mesh', 'stats', '--mesh', file]), { encoding: 'utf8' });
+  const lines = r.stderr.split('\n').filter((l) => l);
+  return { status: r.status, lines };
+};
+// A header (bitstream 2.2, edgebreaker) declaring 2^28 faces in 53 bytes; with the metadata flag, or as version 2.1,
+// the header is not read (its layout differs) and Draco's own checks refuse it, natively and in the page alike.
+const hostileDraco = (major, minor, flags) => {
+  const draco = Buffer.concat([Buffer.from('DRACO'), Buffer.from([major, minor, 1, 1, flags & 0xff, flags >> 8, 0, 49, 0x80, 0x80, 0x80, 0x80, 0x01]), Buffer.alloc(35)]);
+  const file = join(dir, `draco_${major}${minor}_${flags}.glb`);
+  writeFileSync(file, dracoGlb(draco, 3));
+  return { file, draco };
+};
+const capped = hostileDraco(2, 2, 0).file;
+let pageError = '';
+try { importMesh(readFileSync(capped), { draco }); } catch (e) { pageError = e.message; }
+const cappedLine = 'mesh 0 primitive 0: the Draco data declares 49 vertices and 268435456 triangles; the limits are 12000000 and 4000000';
+check(pageError === cappedLine, `a Draco header over the cap is refused by the page's import before decoding: ${pageError}`);
+const nativeCapped = firstLine(native, capped);
+check(nativeCapped.status === 2 && nativeCapped.lines.length === 1 && nativeCapped.lines[0].endsWith(cappedLine),
+  `... with the native reader's line: ${nativeCapped.lines[0]}`);
+for (const [major, minor, flags, what] of [[2, 2, 0x8000, 'metadata'], [2, 1, 0, 'bitstream 2.1']]) {
+  const { file, draco: bytes } = hostileDraco(major, minor, flags);
+  check(dracoHeaderCounts(bytes) === null, `a Draco header with ${what}: not read (left to Draco)`);
+  let e = '';
+  try { importMesh(readFileSync(file), { draco }); } catch (x) { e = x.message; }
+  const n = firstLine(native, file);
+  check(/Draco cannot decode it/.test(e) && n.status === 2 && n.lines.length === 1 && !/the limits are/.test(n.lines[0]),
+    `a Draco header with ${what} declaring 2^28 faces: Draco's own refusal in the page (${e}) and natively (${n.lines[0]})`);
+}
+// Real Draco bitstreams (npm draco3d's encoder): the header's counts as encoded, both methods; a NaN position is
+// refused with one line naming the attribute natively (libdraco) and in WASM (draco3d in JS, then the core).
+for (const method of ['sequential', 'edgebreaker']) {
+  const positions = [0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0];
+  const encoded = await encodeDracoMesh(positions, [0, 1, 2, 2, 1, 3], method);
+  const counts = dracoHeaderCounts(encoded);
+  check(counts?.points === 4 && counts?.faces === 2, `${method} Draco header read: ${JSON.stringify(counts)} (4 points, 2 faces encoded)`);
+  const nan = join(dir, `nan_${method}.glb`);
+  writeFileSync(nan, dracoGlb(await encodeDracoMesh(positions.map((v, i) => (i === 7 ? NaN : v)), [0, 1, 2, 2, 1, 3], method), 4));
+  const n = firstLine(native, nan);
+  check(n.status === 2 && n.lines.length === 1 && /: mesh 0 primitive 0 POSITION \d is NaN or infinite$/.test(n.lines[0]),
+    `${method} Draco with a NaN position, native: ${n.lines[0]}`);
+  if (haveWasm) {
+    const plainNan = join(dir, `nan_${method}_plain.glb`);
+    writeFileSync(plainNan, importMesh(readFileSync(nan), { draco }).bytes);
+    const w = firstLine(wasm, plainNan);
+    check(w.status === 2 && w.lines.length === 1 && /: mesh 0 primitive 0 POSITION \d is NaN or infinite$/.test(w.lines[0]),
+      `${method} Draco with a NaN position, WASM (decoded by draco3d in JS): ${w.lines[0]}`);
+  }
+}
 console.log(`${passed} passed, ${failed} failed`);
 process.exit(failed ? 1 : 0);

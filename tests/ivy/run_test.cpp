@@ -259,6 +259,36 @@ TEST(IvyRun, APlannedExportIsProjectedToTheLastStepAndRefusedEarlyNamingSteps) {
   EXPECT_EQ(*a, *b);
 }
 
+// Issue 34: with the statistics alone (--stats, no export planned) the run still used the
+// quarter-growth checks: --steps 10000 on cubes4 was refused only at step 357, naming
+// max_seconds, after 87,705 buds. The statistics are projected as a planned export is and
+// refused naming `steps` earlier; a run whose statistics fit measures the same as before.
+TEST(IvyRun, StatsAloneAreProjectedToTheLastStepAndRefusedEarlyNamingSteps) {
+  IvyRunOptions stats;
+  stats.stats = true;
+  stats.reserve_stats = true;
+  Result<IvyRun> big =
+      IvyRun::Start(Steps(10000), Prepared(IvySupportInput::Scene("cubes4")), Budget{}, stats);
+  ASSERT_TRUE(big.ok()) << big.status().Line();
+  const Status refused = big->Advance({});
+  EXPECT_EQ(refused.field(), "steps") << refused.Line();
+  int at = 0;
+  ASSERT_EQ(std::sscanf(refused.message().c_str(), "at step %d of 10000: growing on to about", &at),
+            1)
+      << refused.Line();
+  EXPECT_LT(at, 340) << refused.Line();  // the quarter-growth check refused at step 357
+  EXPECT_NE(refused.message().find("measuring the statistics"), std::string::npos)
+      << refused.Line();
+  IvyRun fits = Started(Steps(200), Prepared(IvySupportInput::Scene("cubes4")), stats);
+  ASSERT_TRUE(fits.Advance({}).ok());
+  IvyRunOptions reserve;
+  reserve.reserve_stats = true;
+  IvyRun plain = Started(Steps(200), Prepared(IvySupportInput::Scene("cubes4")), reserve);
+  ASSERT_TRUE(plain.Advance({}).ok());
+  EXPECT_EQ(WithoutMs(nlohmann::json::parse(fits.StatsJson())),
+            WithoutMs(nlohmann::json::parse(plain.StatsJson())));
+}
+
 TEST(IvyRun, ExportsAreTheCliBytesAndTheHashTakesAPrefix) {
   auto support = Prepared(IvySupportInput::Scene("stairs"));
   IvyState state = Steps(25);

@@ -7,14 +7,19 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <ctime>
+
 #include "io/gltf_writer.h"
 #include "support/alloc_meter.h"
 #include "terrain/compare.h"
 #include "terrain/contour_io.h"
 #include "terrain/generate.h"
 #include "terrain/heightfield.h"
+#include "terrain/polygon.h"
 #include "terrain/seeds.h"
 #include "terrain/terrain_output.h"
+#include "terrain/terrain_state.h"
 
 namespace niwa::terrain {
 namespace {
@@ -240,13 +245,12 @@ Ring Spiral(int turns) {
 // crosses itself millions of times is stopped by the counted split points, naming the contour.
 TEST(TerrainBudget, CombsShrinkInLinearWorkOrStopAtTheirCountedSplits) {
   Budget budget;  // the CLI's defaults: 2 GB, 60 s
+  const TerrainParams p = For("improved", 20);
   EXPECT_LT(ShrinkSweepTests(Comb(100000)), 1e8);
-  EXPECT_TRUE(CheckSeedShape(Comb(100000), budget).ok());
   for (const SeedInfo& info : BuiltinSeeds()) {
     EXPECT_LT(ShrinkSweepTests(*BuiltinSeed(info.name)), 1e5) << info.name;
-    EXPECT_TRUE(CheckSeedShape(*BuiltinSeed(info.name), budget).ok()) << info.name;
+    EXPECT_TRUE(CheckSeedShape(*BuiltinSeed(info.name), p, budget).ok()) << info.name;
   }
-  const TerrainParams p = For("improved", 20);
   TerrainGrowLimits limits = Unlimited(p);
   limits.max_seconds = 5;
   Result<Terrain> comb = Grow(Comb(1000), p, kDefaultTerrainSeed, &limits);
@@ -264,9 +268,84 @@ TEST(TerrainBudget, CombsShrinkInLinearWorkOrStopAtTheirCountedSplits) {
   EXPECT_GT(tests, 20.0 * static_cast<double>(spiral.size()));
   Budget tight;
   tight.seconds = 30e-9 * tests / 2;
-  const Status refused = CheckSeedShape(spiral, tight);
+  const Status refused = CheckSeedShape(spiral, p, tight);
   EXPECT_EQ(refused.field(), "contour");
   EXPECT_NE(refused.message().find("as a comb's teeth"), std::string::npos) << refused.Line();
+}
+
+// A comb turned a quarter: its teeth lie along x, so every pair of its edges overlaps in x.
+Ring TurnedComb(int teeth) {
+  Ring r = Comb(teeth);
+  for (Vec2& v : r) v = {-v.y, v.x};
+  return r;
+}
+
+// Issue 34: the seed's estimate saw only the windings over its own edges, about 650 x under the
+// work a comb's first shrink counts (the split points of its offset path, where teeth within 2·d
+// cross), so a 100,000-tooth comb was refused only by the count, after 3.8 s and 348 MB; and a
+// comb turned on its side (teeth along x) was not bounded at all (the split sweep's and the
+// simplicity check's pairs, quadratic there, were not counted: 10,000 teeth ran past 60 s). The
+// forecast (ForecastSeedShrink) sees the shape: within 1-2 x of the counted work on the combs,
+// refusing both 100,000-tooth combs and the turned 10,000-tooth one before anything grows.
+TEST(TerrainBudget, SeedForecastSeesACombsShape) {
+  const TerrainParams p = For("improved", 20);
+  const TerrainGrowLimits limits = Unlimited(p);
+  for (const bool turned : {false, true}) {
+    const Ring comb = turned ? TurnedComb(1000) : Comb(1000);
+    const SeedShrinkForecast f = ForecastSeedShrink(comb, p);
+    Result<Terrain> grown = Grow(comb, p, kDefaultTerrainSeed, &limits);
+    ASSERT_TRUE(grown.ok()) << grown.status().Line();
+    const double counted = grown->counts.sweep_tests;
+    std::printf(
+        "comb 1000%s: forecast %.0f (split points %.0f, pairs %.0f), counted %.0f: %.2f x\n",
+        turned ? " turned" : "", f.work(), f.split_points, f.tried_pairs, counted,
+        f.work() / counted);
+    EXPECT_GE(f.work(), counted) << turned;
+    EXPECT_LE(f.work(), 2.5 * counted) << turned;
+  }
+  Budget budget;  // the CLI's defaults: 2 GB, 60 s
+  for (const Ring& comb : {Comb(100000), TurnedComb(100000), TurnedComb(10000)}) {
+    const std::clock_t c0 = std::clock();
+    const Status s = CheckSeedShape(comb, p, budget);
+    std::printf("%zu points refused in %.2f s of CPU: %s\n", comb.size(),
+                static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC, s.Line().c_str());
+    EXPECT_EQ(s.field(), "contour");
+    EXPECT_NE(s.message().find("split points of its offset path"), std::string::npos) << s.Line();
+  }
+  // A smaller d keeps the teeth apart in the offset path: the same comb is let through.
+  EXPECT_TRUE(CheckSeedShape(Comb(100000), For("improved", 0.4), budget).ok());
+  // Valid shapes pass with every built-in's own preset too.
+  for (const SeedInfo& info : BuiltinSeeds()) {
+    TerrainState state;
+    ASSERT_TRUE(SetTerrainBuiltin(info.name, &state).ok());
+    ASSERT_TRUE(SetTerrainPreset("", &state).ok());
+    EXPECT_TRUE(CheckSeedShape(*BuiltinSeed(info.name), state.params, budget).ok()) << info.name;
+  }
+}
+
+// The seed's simplicity check sweeps along the cheaper axis: the same answer as IsSimple.
+TEST(TerrainBudget, SimplicityAlongEitherAxisIsIsSimple) {
+  const Ring bowtie = {{0, 0}, {10, 10}, {10, 0}, {0, 10}};
+  Ring touching = Comb(50);
+  touching.push_back({1.0 * 3 * 50, 30});  // a spike back across the base's end
+  for (const Ring* r : std::vector<const Ring*>{&bowtie, &touching}) {
+    const Ring turned = [&] {
+      Ring t = *r;
+      for (Vec2& v : t) v = {-v.y, v.x};
+      return t;
+    }();
+    for (const Ring* q : std::vector<const Ring*>{r, &turned})
+      EXPECT_EQ(IsSimpleEitherAxis(ToGrid(*q)), IsSimple(ToGrid(*q)));
+  }
+  for (const Ring& comb : {Comb(2000), TurnedComb(2000)}) {
+    EXPECT_TRUE(IsSimpleEitherAxis(ToGrid(comb)));
+    EXPECT_TRUE(IsSimple(ToGrid(comb)));
+  }
+  const IRing turned = ToGrid(TurnedComb(2000));
+  EXPECT_GT(SweepPairs(turned, false), 1e7);  // every tooth edge against every other
+  EXPECT_LT(SweepPairs(turned, true), 1e5);
+  for (const SeedInfo& info : BuiltinSeeds())
+    EXPECT_TRUE(IsSimpleEitherAxis(ToGrid(*BuiltinSeed(info.name)))) << info.name;
 }
 
 // Issue 34: terrain compare on a DEM of 0.0007 m cells under d = 70 m made the peak search's

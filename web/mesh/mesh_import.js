@@ -77,8 +77,61 @@ function base64(bytes) {
   return btoa(s);
 }
 
+// The mesh readers' caps, as core/io/mesh_reader.h's kMaxMeshTriangles and kMaxMeshVertices (3 a triangle), which
+// io::PreflightDracoHeader applies natively; tests/cli/mesh_import.test.mjs checks these against that header.
+export const MAX_MESH_TRIANGLES = 4_000_000;
+export const MAX_MESH_VERTICES = 3 * MAX_MESH_TRIANGLES;
+
+// A Draco varint (7 bits a byte, low first, at most 5 bytes) at bytes[at.i]; null when cut short or longer.
+function dracoVarint(bytes, at) {
+  let out = 0;
+  for (let shift = 0; shift < 35; shift += 7) {
+    if (at.i >= bytes.length) return null;
+    const c = bytes[at.i++] & 0xff;
+    out += (c & 0x7f) * 2 ** shift;
+    if ((c & 0x80) === 0) return out;
+  }
+  return null;
+}
+
+/**
+ * The counts a Draco buffer's header declares, read as io::PreflightDracoHeader reads them: bitstream 2.2, a triangle
+ * mesh, sequential (faces, points) or edgebreaker (traversal byte, points, faces), no metadata flag. Anything else
+ * (another version, metadata, a point cloud, a cut header) gives null, and is left to Draco's own checks as natively.
+ * @returns {{points: number, faces: number}|null}
+ */
+export function dracoHeaderCounts(bytes) {
+  const b = bytes instanceof Uint8Array ? bytes : new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  if (b.length < 11 || String.fromCharCode(...b.subarray(0, 5)) !== 'DRACO') return null;
+  const [major, minor, type, method] = [b[5], b[6], b[7], b[8]];
+  const flags = b[9] | (b[10] << 8);
+  if (major !== 2 || minor !== 2 || type !== 1 || (flags & 0x8000) !== 0) return null;
+  const at = { i: 11 };
+  if (method === 0) {
+    const faces = dracoVarint(b, at), points = faces === null ? null : dracoVarint(b, at);
+    return points === null ? null : { points, faces };
+  }
+  if (method === 1) {
+    at.i += 1;
+    const points = dracoVarint(b, at), faces = points === null ? null : dracoVarint(b, at);
+    return faces === null ? null : { points, faces };
+  }
+  return null;
+}
+
+// Refuses a Draco buffer whose header declares more than the caps, before the decoder sizes anything (the native
+// line, with the page's label).
+function checkDracoHeader(bytes, label) {
+  const counts = dracoHeaderCounts(bytes);
+  if (counts && (counts.faces > MAX_MESH_TRIANGLES || counts.points > MAX_MESH_VERTICES)) {
+    throw new Error(`${label}: the Draco data declares ${counts.points} vertices and ${counts.faces} triangles; ` +
+      `the limits are ${MAX_MESH_VERTICES} and ${MAX_MESH_TRIANGLES}`);
+  }
+}
+
 // Decodes one Draco buffer: every attribute as float32, the faces as uint32 triangles.
 function decodeDraco(draco, bytes, attributeIds, label) {
+  checkDracoHeader(bytes, label);
   const decoder = new draco.Decoder();
   const mesh = new draco.Mesh();
   try {
