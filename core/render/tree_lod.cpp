@@ -31,7 +31,7 @@ constexpr int kBisections = 40;
 
 long Triangles(const MeshBuffers& b) { return static_cast<long>(b.indices.size() / 3); }
 
-bool Usable(const Branch& b) { return b.alive && b.nodes.size() >= 2; }
+bool LodUsable(const Branch& b) { return b.alive && b.nodes.size() >= 2; }
 
 RenderOptions SceneOptions(int cells, int atlas_size) {
   RenderOptions o;
@@ -283,7 +283,7 @@ Result<LodMesh> BuildLodMesh(const Tree& tree, long max_triangles, const LodOpti
   out.choice.triangles = FullTriangles(full);
   if (out.choice.triangles <= max_triangles) {
     out.parts = std::move(full);
-    for (const Branch& b : tree.branches) out.choice.tubes += Usable(b) ? 1 : 0;
+    for (const Branch& b : tree.branches) out.choice.tubes += LodUsable(b) ? 1 : 0;
     return out;
   }
   LodChoice& choice = out.choice;
@@ -318,7 +318,7 @@ Result<LodMesh> BuildLodMesh(const Tree& tree, long max_triangles, const LodOpti
   std::vector<float> radius(tree.branches.size(), -1.0f);
   float thickest = 0;
   for (std::size_t i = 0; i < tree.branches.size(); ++i) {
-    if (!Usable(tree.branches[i])) continue;
+    if (!LodUsable(tree.branches[i])) continue;
     radius[i] = BranchRadius(tree.branches[i]);
     thickest = std::max(thickest, radius[i]);
   }

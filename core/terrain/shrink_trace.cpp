@@ -16,12 +16,12 @@ namespace {
 
 constexpr std::size_t kMaxStepPoints = 200000;
 
-Vec2 Sub(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
+Vec2 TraceSub(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
 double Cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
 
 // The unit normal of edge a -> b on the offset side: left (inside a CCW ring) when shrinking.
 Vec2 OffsetNormal(const Vec2& a, const Vec2& b, bool outward) {
-  const Vec2 e = Sub(b, a);
+  const Vec2 e = TraceSub(b, a);
   const double l = std::sqrt(e.x * e.x + e.y * e.y);
   if (l == 0) return {0, 0};
   return outward ? Vec2{e.y / l, -e.x / l} : Vec2{-e.y / l, e.x / l};
@@ -40,7 +40,7 @@ void NaiveOffsets(const Ring& r, double d, bool outward, ShrinkTraceStep* step) 
   }
   for (std::size_t i = 0; i < n; ++i) {  // vertex i + 1 joins edge i and edge i + 1
     const std::size_t j = (i + 1) % n;
-    const Vec2 e1 = Sub(r[j], r[i]), e2 = Sub(r[(j + 1) % n], r[j]);
+    const Vec2 e1 = TraceSub(r[j], r[i]), e2 = TraceSub(r[(j + 1) % n], r[j]);
     const bool left_turn = Cross(e1, e2) > 0;
     const bool convex = left_turn != outward;  // toward the offset side's inside
     (convex ? step->convex : step->reflex) += 1;
@@ -78,7 +78,7 @@ double MinInteriorAngleDeg(const Ring& r) {
   double best = 360;
   const std::size_t n = r.size();
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 e1 = Sub(r[i], r[(i + n - 1) % n]), e2 = Sub(r[(i + 1) % n], r[i]);
+    const Vec2 e1 = TraceSub(r[i], r[(i + n - 1) % n]), e2 = TraceSub(r[(i + 1) % n], r[i]);
     const double turn = det::Atan2(Cross(e1, e2), e1.x * e2.x + e1.y * e2.y);  // left turn > 0
     best = std::min(best, (det::kPi - turn) * 180 / det::kPi);
   }
