@@ -75,10 +75,17 @@ struct SoilOptions {
 };
 
 // moss soil: one cell and day, every term of eqs 3.2-3.16 (core/moss/soil.h).
-int RunSoil(const SoilOptions& o, bool T_given, std::ostream& out) {
+int RunSoil(const SoilOptions& o, bool T_given, bool V_given, std::ostream& out) {
   moss::MossState state = ResolveState(o.state);
   if (T_given) Check(AsFlag(state.params.Set(MossParam::kT, o.T), "--T"));
   Check(moss::CheckMossParams(state.params));
+  // The sky view is read by the sky-view longwave only: given to the thesis's eq 3.3 it would be
+  // silently ignored, so it is refused.
+  if (V_given &&
+      state.params.GetInt(MossParam::kLongwave) != static_cast<int>(moss::Longwave::kSkyView))
+    Fail(Status::Error(
+        "--V",
+        "only applies with longwave=1 (sky-view: --preset nomura2010-sky or --set longwave=1)"));
   moss::Geology geology;
   if (!moss::GeologyFromName(o.geology.c_str(), &geology))
     Fail(Status::Error("--geology",
@@ -221,10 +228,11 @@ void AddMossCommands(CLI::App& app, CommandList& commands) {
   AddNumberFlag(soil, "--V", &so->V, kShareRange,
                 "Sky view V (read by longwave=1, sky-view), " + RangeHelp(kShareRange));
   AddStateOptions(soil, &so->state);
-  commands.push_back(
-      {soil,
-       [so, soil](std::ostream& out) { return RunSoil(*so, soil->count("--T") > 0, out); },
-       {"--geology", "humus", "--theta", "0.2", "--S", "25"}});
+  commands.push_back({soil,
+                      [so, soil](std::ostream& out) {
+                        return RunSoil(*so, soil->count("--T") > 0, soil->count("--V") > 0, out);
+                      },
+                      {"--geology", "humus", "--theta", "0.2", "--S", "25"}});
 
   CLI::App* fitness = moss_app->add_subcommand(
       "fitness",

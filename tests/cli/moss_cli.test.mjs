@@ -71,6 +71,8 @@ const hostile = [
   [['--geology', 'humus', '--theta', '0.2', '--S', '25', '--set', 'humus_theta_sat=2'], '--set'],
   [['--geology', 'humus', '--theta', '0.2', '--S', '25', '--url', 'T=290&T=291'], '--url'],
   [['--geology', 'humus', '--theta', '0.2', '--S', '25', '--set', 'N=9'], 'N'],
+  // The sky view applies only to the sky-view longwave (nomura2010-sky, longwave=1).
+  [['--geology', 'humus', '--theta', '0.2', '--S', '25', '--V', '0.5'], '--V'],
 ];
 for (const [args, field] of hostile) {
   for (const cmd of [native, wasm]) {
