@@ -8,12 +8,18 @@
 // each must end in a notice or a line beside the field, and a page that still works. Like tests/cli/hostile.test.mjs it lists no
 // row or value by hand: a new study page is covered by its table.
 import { execFileSync } from 'node:child_process';
-import { NATIVE, TIMEOUT, check, newContext, runBrowserTest, watchPage } from './harness.mjs';
+import { existsSync } from 'node:fs';
+import { join } from 'node:path';
+import { NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, watchPage } from './harness.mjs';
 import { glbBytes } from '../support/glb_bytes.mjs';
 import { dracoGlb } from '../support/draco_encode.mjs';
 
 const declared = JSON.parse(execFileSync(NATIVE, ['flags'], { encoding: 'utf8' }));
 const pageOf = (study) => (study === 'tree' ? 'index.html' : `${study}.html`);
+// A study's CLI can land before its page (moss: its table and soil commands first); a study without
+// public/<study>.html has no page to test yet, and is named so that it is not silently left out.
+const paged = declared.studies.filter((s) => existsSync(join(ROOT, 'public', pageOf(s.name))));
+for (const s of declared.studies.filter((x) => !paged.includes(x))) console.log(`(no page yet: ${s.name})`);
 
 // One value per row: the whole table refused at once.
 const VALUES = {
@@ -93,7 +99,7 @@ const FILES = {
 };
 
 await runBrowserTest(async (server, browser) => {
-  for (const study of declared.studies) {
+  for (const study of paged) {
     const table = JSON.parse(execFileSync(NATIVE, ['params', study.name, '--json'], { encoding: 'utf8' }));
     const keys = table.map((row) => row.key);
     const problems = [];
