@@ -2,7 +2,7 @@
 // 'moss soil' (one soil cell: every term of eqs 3.2-3.16 and the energy balance's residuals) and
 // 'moss fitness' (eqs 3.17-3.20 for one place), each one JSON object on stdout; the table and
 // presets for 'niwa params moss' and 'niwa presets moss'. Thin adapters: flags into a state and a
-// cell, the core's functions, JSON out.
+// cell, the core's reports (core/moss/moss_report.h) out.
 // cli-order: 50
 #include <CLI/CLI.hpp>
 #include <memory>
@@ -13,8 +13,8 @@
 
 #include "base/echo.h"
 #include "cli_common.h"
-#include "moss/fitness.h"
 #include "moss/moss_params.h"
+#include "moss/moss_report.h"
 #include "moss/moss_state.h"
 #include "moss/soil.h"
 #include "params/param_text.h"
@@ -97,43 +97,7 @@ int RunSoil(const SoilOptions& o, bool T_given, bool V_given, std::ostream& out)
   cell.m_over_M = o.m_over_M;
   cell.V_sky = o.V;
   Check(run::RenameField(moss::CheckSoilCell(cell), kFieldFlags));
-  const moss::SoilConstants k = moss::SoilConstantsOf(state.params);
-  const moss::Weather w = moss::ClimateOf(state.params);
-  const moss::SoilTerms t = moss::SoilEnergyBalance(k, w, cell);
-  nlohmann::ordered_json j;
-  j["preset"] = state.preset;
-  j["geology"] = moss::GeologyName(geology);
-  j["delta_form"] = k.delta_form == moss::DeltaForm::kLiteral ? "literal" : "corrected";
-  j["longwave"] = k.longwave == moss::Longwave::kSkyView ? "sky-view" : "thesis";
-  j["T"] = w.T;
-  j["rh"] = w.rh;
-  j["U"] = w.U;
-  j["S"] = cell.S;
-  j["m_over_M"] = cell.m_over_M;
-  j["V_sky"] = cell.V_sky;
-  j["theta_SAT"] = cell.law.theta_SAT;
-  j["A"] = t.A;                // N / N_0
-  j["C"] = t.C;                // eq 3.2
-  j["sigma_T4"] = t.sigma_T4;  // σT⁴
-  j["L"] = t.L;                // eq 3.3
-  j["R"] = t.R;                // eq 3.4
-  j["C_H"] = t.C_H;            // eq 3.5
-  j["theta"] = t.theta;        // eq 3.8
-  j["F"] = t.F;                // eq 3.9
-  j["beta"] = t.beta;          // eq 3.10
-  j["e_SAT"] = t.e_SAT;        // eq 3.12
-  j["q_SAT"] = t.q_SAT;        // eq 3.13
-  j["Delta"] = t.Delta;        // eq 3.15
-  j["dT"] = t.dT;              // eq 3.11
-  j["T_s"] = t.T_s;
-  j["H"] = t.H;
-  j["iota_E"] = t.iota_E;  // eq 3.14
-  j["E"] = t.E;
-  j["E_mm_day"] = t.E_mm_day;  // eq 3.6's loss
-  j["rh_s"] = t.rh_s;          // eq 3.16
-  j["latent_share"] = t.iota_E + t.H != 0 ? t.iota_E / (t.iota_E + t.H) : 0.0;
-  j["residual_linear"] = t.residual_linear;
-  j["residual_nonlinear"] = t.residual_nonlinear;
+  const nlohmann::ordered_json j = moss::SoilReport(state, geology, cell);
   out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
   return 0;
 }
@@ -158,32 +122,7 @@ int RunFitness(const FitnessOptions& o, std::ostream& out) {
                                           "' is unknown; must be gingoke, haigoke or sugigoke"));
     which = {s};
   }
-  const moss::GForm form = static_cast<moss::GForm>(state.params.GetInt(MossParam::kGForm));
-  nlohmann::ordered_json j;
-  j["preset"] = state.preset;
-  j["g_form"] = form == moss::GForm::kNormalized ? "normalized" : "clamped";
-  j["T_s"] = o.T_s;
-  j["rh_s"] = o.rh_s;
-  j["S"] = o.S;
-  nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (moss::Species s : which) {
-    const moss::SpeciesRanges r = moss::SpeciesOf(state.params, s);
-    const moss::Fitness f = moss::FitnessOf(r, o.T_s, o.rh_s, o.S, form);
-    const double D = moss::DailyGrowth(r, f.G);
-    nlohmann::ordered_json e;
-    e["species"] = moss::SpeciesName(s);
-    e["s_T"] = moss::RangeScore(o.T_s, r.T_0, r.T_1);  // eq 3.18
-    e["g_T"] = f.g_T;                                  // eq 3.19
-    e["s_rh"] = moss::RangeScore(o.rh_s, r.rh_0, r.rh_1);
-    e["g_rh"] = f.g_rh;
-    e["s_S"] = moss::RangeScore(o.S, r.S_0, r.S_1);
-    e["g_S"] = f.g_S;
-    e["G"] = f.G;  // eq 3.17
-    e["D"] = D;    // eq 3.20
-    e["growing"] = D > 0;
-    list.push_back(std::move(e));
-  }
-  j["species"] = std::move(list);
+  const nlohmann::ordered_json j = moss::FitnessReport(state, which, o.T_s, o.rh_s, o.S);
   out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
   return 0;
 }
