@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/budget.h"
 #include "terrain/generate.h"
 #include "terrain/loops.h"
 #include "terrain/offset.h"
@@ -28,12 +29,25 @@ Result<ContourRepair> RepairContour(const Ring& ring) {
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || std::fabs(v.x) > kMaxCoordinate ||
         std::fabs(v.y) > kMaxCoordinate)
       return checked.status();
-  int removed = 0;
   const Ring snapped = Snap(ring);
+  // A seed too tangled to check is not repaired either (CheckSeed's line); the loop removal's
+  // sweep runs along x (SelfIntersections), bounded as the check is.
+  if (SimplicityPairs(ToGrid(Normalise(ring))) > kMaxSimplicityPairs) return checked.status();
+  if (const double pairs = SweepPairs(ToGrid(snapped), false); pairs > kMaxSimplicityPairs) {
+    return Status::Error("contour", "is not a simple loop, and with " +
+                                        std::to_string(ring.size()) +
+                                        " points whose edges overlap along x repairing it "
+                                        "would test " + FormatCount(pairs) +
+                                        " pairs of edges, more than the " +
+                                        FormatCount(kMaxSimplicityPairs) +
+                                        " allowed; simplify the contour");
+  }
+  int removed = 0;
   // §4.4 method 2 with the table's default run (loop_run 5), whatever the state's rows.
   Result<Ring> untwisted = CheckSeed(Normalise(UntwistRing(snapped, 2, 5, &removed)));
   if (!untwisted.ok()) {
     ShrinkCounts counts;
+    counts.max_sweep_tests = kMaxSimplicityPairs;  // the union's own count (empty when passed)
     std::vector<Ring> pieces = PositiveUnion({Normalise(snapped)}, &counts);
     const Ring* best = nullptr;
     for (const Ring& piece : pieces)

@@ -310,7 +310,17 @@ Result<Ring> CheckSeed(const Ring& seed) {
     }
   }
   Ring r = Normalise(seed);
-  if (r.size() < 3 || !IsSimpleEitherAxis(ToGrid(r))) {
+  const IRing grid = ToGrid(r);
+  // Bounded before it is tried: the pairs of edges the check would test, counted in O(n log n).
+  if (const double pairs = r.size() < 3 ? 0 : SimplicityPairs(grid); pairs > kMaxSimplicityPairs) {
+    return Status::Error("contour", std::to_string(r.size()) +
+                                        " points whose edges overlap on both axes: checking that "
+                                        "it is simple would test " + FormatCount(pairs) +
+                                        " pairs of edges, more than the " +
+                                        FormatCount(kMaxSimplicityPairs) +
+                                        " allowed; simplify the contour");
+  }
+  if (r.size() < 3 || !IsSimpleEitherAxis(grid)) {
     return Status::Error("contour",
                          "self-intersects or has no area; must be a simple closed polygon");
   }

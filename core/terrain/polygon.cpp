@@ -172,6 +172,10 @@ double SweepPairs(const IRing& ring, bool along_y) {
   return pairs - m * (m + 1) / 2;
 }
 
+double SimplicityPairs(const IRing& ring) {
+  return std::min(SweepPairs(ring, false), SweepPairs(ring, true));
+}
+
 bool IsSimpleEitherAxis(const IRing& ring) {
   if (ring.size() < 3 || SweepPairs(ring, false) <= SweepPairs(ring, true)) return IsSimple(ring);
   IRing turned(ring.size());  // x and y swapped: a mirror, which keeps every meeting of edges

@@ -55,6 +55,12 @@ double SweepPairs(const IRing& ring, bool along_y);
 // pair overlaps on both axes), linear where a ring's edges stack across one x range (a comb
 // turned on its side: quadratic along x). For seeds (generate.h CheckSeed).
 bool IsSimpleEitherAxis(const IRing& ring);
+// The pairs IsSimpleEitherAxis would try (the fewer of SweepPairs along x and y), and the most a
+// seed's check or repair may try: about a second of exact tests. Only edges that overlap on both
+// axes in their thousands (long diagonal teeth) come near it; a drawn or surveyed contour of a
+// million points tries a few million.
+double SimplicityPairs(const IRing& ring);
+constexpr double kMaxSimplicityPairs = 2e8;
 // Any edge of a meets any edge of b.
 bool RingsIntersect(const IRing& a, const IRing& b);
 // Point strictly inside (crossing rule; points on the boundary count as outside).

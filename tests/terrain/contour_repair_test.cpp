@@ -8,12 +8,16 @@
 
 #include <cmath>
 #include <cstdio>
+#include <ctime>
+#include <utility>
+#include <vector>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "io/hash_codec.h"
 #include "support/cli_runner.h"
 #include "terrain/generate.h"
+#include "terrain/offset.h"
 #include "terrain/polygon.h"
 #include "terrain/seeds.h"
 #include "terrain/terrain_state.h"
@@ -123,6 +127,47 @@ TEST(FitContourToLink, ADrawnTwoThousandPointContourFitsItsLinkAndReadsBack) {
   EXPECT_EQ(EncodeTerrainHash(back), hash);
   // A contour that fits is left as it is.
   EXPECT_FALSE(FitContourToLink(*BuiltinSeed("lobes7"), kMaxLinkContourChars).changed);
+}
+
+// A comb whose teeth run along (1, 1) from a base along (1, -1): every tooth is long against the
+// base, so its edges overlap every other tooth's on both axes (a simple polygon, exact on the
+// 1/1024 m grid). Issue 34: such a seed made CheckSeed's simplicity sweep quadratic before any
+// budget (20,000 teeth: 3.2 G pairs).
+Ring DiagonalComb(int teeth, int64_t height) {
+  std::vector<std::pair<int64_t, int64_t>> th = {{0, 0}, {3 * int64_t{teeth} - 1, 0}};
+  for (int i = teeth - 1; i >= 0; --i) {
+    const int64_t t0 = 3 * int64_t{i}, t1 = t0 + 2;
+    if (i < teeth - 1) th.push_back({t1, 10});
+    th.push_back({t1, height});
+    th.push_back({t0, height});
+    if (i > 0) th.push_back({t0, 10});
+  }
+  Ring r;
+  for (const auto& [t, h] : th)
+    r.push_back({static_cast<double>(t + h) / 1024.0, static_cast<double>(h - t) / 1024.0});
+  return r;
+}
+
+TEST(ContourRepair, ASeedWhoseEdgesOverlapOnBothAxesIsRefusedBeforeItsCheck) {
+  // Small: the same shape is a valid seed (the cap is not in the way of an ordinary check).
+  const Ring small = DiagonalComb(200, 1000);
+  EXPECT_LT(SimplicityPairs(ToGrid(Normalise(small))), kMaxSimplicityPairs);
+  EXPECT_TRUE(CheckSeed(small).ok());
+  // 20,000 long teeth: refused by the count of pairs, in O(n log n), naming the contour.
+  const Ring big = DiagonalComb(20000, 100000);
+  const std::clock_t c0 = std::clock();
+  const Result<Ring> checked = CheckSeed(big);
+  const double cpu = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+  ASSERT_FALSE(checked.ok());
+  EXPECT_EQ(checked.status().field(), "contour");
+  EXPECT_NE(checked.status().message().find("overlap on both axes"), std::string::npos)
+      << checked.status().Line();
+  std::printf("diagonal comb of 20,000 teeth refused in %.2f s of CPU: %s\n", cpu,
+              checked.status().Line().c_str());
+  // The repair does not try it either: CheckSeed's line.
+  const Result<ContourRepair> repaired = RepairContour(big);
+  ASSERT_FALSE(repaired.ok());
+  EXPECT_EQ(repaired.status().Line(), checked.status().Line());
 }
 
 }  // namespace
