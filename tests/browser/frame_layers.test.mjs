@@ -7,7 +7,7 @@
 // under the one camera and sun (read back from both layers) on the one ground.
 // Run: node tests/browser/frame_layers.test.mjs (needs build/wasm's niwa_web). Screenshots:
 // build/artifacts/frame-tree.png, frame-tree-ivy.png, frame-tree-ivy-low-sun.png, frame-tree-ivy-close.png,
-// frame-grove-ivy.png and frame-bare-*.png (without the ground).
+// frame-grove-ivy.png, frame-grove-ivy-close.png and frame-bare-*.png (without the ground).
 import { check, modulePage, runBrowserTest, saveCanvasPng, snapshotCanvas, snapshotDifference } from './harness.mjs';
 
 const problems = [];
@@ -203,6 +203,13 @@ await runBrowserTest(async (server, browser) => {
     const withGround = (await drawn(page, 'grove-ivy')).share;
     check('grove + ivy: the frame draws one ground under both', withGround > groveShare.share + 0.2,
       `drawn ${(groveShare.share * 100).toFixed(1)}% without the ground, ${(withGround * 100).toFixed(1)}% with it`);
+    // Close up on the foot of the grove's tree at the origin, where the ivy climbs: for the eye.
+    await page.evaluate(() => {
+      const { frame } = window.__frame;
+      frame.camera.frame({ min: [-0.3, 0, -0.3], max: [0.3, 1.2, 0.3] }, 1);
+      frame.render();
+    });
+    await saveCanvasPng(page, 'frame-grove-ivy-close.png', '#frame-view');
     await page.evaluate(() => {
       const { frame, grove } = window.__frame;
       frame.layers = [grove];
