@@ -3,9 +3,11 @@
 // years (the tree handler) and ivy grown on that same tree's bark (the ivy handler's scene 'tree',
 // metres) are drawn together; each layer alone and both at once are compared, the ivy must lie
 // where the tree is (one world frame), and the frame's sun must light both.
+// The grove's renderer (the grove page's layer) joins the same frame beside the ivy: both drawn
+// under the one camera and sun (read back from both layers) on the one ground.
 // Run: node tests/browser/frame_layers.test.mjs (needs build/wasm's niwa_web). Screenshots:
-// build/artifacts/frame-tree.png, frame-tree-ivy.png, frame-tree-ivy-low-sun.png, frame-tree-ivy-close.png
-// and frame-bare-*.png (without the ground).
+// build/artifacts/frame-tree.png, frame-tree-ivy.png, frame-tree-ivy-low-sun.png, frame-tree-ivy-close.png,
+// frame-grove-ivy.png, frame-grove-ivy-close.png and frame-bare-*.png (without the ground).
 import { check, modulePage, runBrowserTest, saveCanvasPng, snapshotCanvas, snapshotDifference } from './harness.mjs';
 
 const problems = [];
@@ -126,6 +128,94 @@ await runBrowserTest(async (server, browser) => {
     frame.render();
   });
   await saveCanvasPng(page, 'frame-tree-ivy-close.png', '#frame-view');
+
+  // The grove's renderer (web/tree/grove_renderer.js, the grove page's layer) and the ivy's in one
+  // frame: one camera, one sun, one ground. The grove: a sakura of 6 years grown for it (its own
+  // client of the tree handler, as the grove page's) drawn instanced in full mode at three places,
+  // one of them the origin at scale 1, where the ivy climbs that same tree's bark.
+  const grove = await page.evaluate(async () => {
+    const { GroveRenderer } = await import('/web/tree/grove_renderer.js');
+    const { WorkerClient } = await import('/web/shell/worker_client.js');
+    const { frame } = window.__frame;
+    const client = new WorkerClient('frame-grove');
+    const reply = await client.request('update', { state: { preset: 'sakura', years: 6 } }, { done: ['tree'] }).reply;
+    if (reply?.type !== 'tree') return { error: `grove tree ${reply?.type} ${reply?.message || ''}` };
+    const layer = await frame.addLayer(new GroveRenderer(frame));
+    layer.mode = 'full';
+    const instances = new Float32Array([0, 0, 0, 1, -4.5, 0, 1.5, 0.8, 4, 0, -2, 1.2]);
+    layer.addTree(0, reply.mesh, instances, null, reply.swayNodes, reply.stats.bounds);
+    window.__frame.grove = layer;
+    return { layers: frame.layers.length, bounds: layer.worldBounds(), instances: instances.length / 4 };
+  });
+  check('a grove layer is added to the same frame', !grove.error && grove.bounds && grove.bounds.max[0] - grove.bounds.min[0] > 8,
+    grove.error || `${grove.layers} layers, grove box ${JSON.stringify(grove.bounds)}`);
+  if (!grove.error) {
+    // Draws the grove and/or the ivy under the one camera framed on them both, and reads back the
+    // sun each layer was given and the frame's totals.
+    const drawGroveIvy = async (name, layers, { ground = true, sun = [60, 0] } = {}) => {
+      const out = await page.evaluate(([names, g, s]) => {
+        const { frame, grove, ivy } = window.__frame;
+        frame.layers = [grove, ivy];
+        frame.frameAll();
+        frame.layers = names.map((n) => ({ grove, ivy })[n]);
+        frame.showGround = g;
+        frame.setSun(...s);
+        const drawn = frame.render();
+        return {
+          drawn: { triangles: drawn.triangles, drawCalls: drawn.drawCalls, instances: drawn.instances, layers: drawn.layers },
+          frameLight: [...frame.light], groveLight: [...grove.light], ivyLight: [...ivy.light],
+          sameCamera: grove.frame.camera === frame.camera && ivy.frame.camera === frame.camera,
+        };
+      }, [layers, ground, sun]);
+      await snapshotCanvas(page, name, '#frame-view');
+      await saveCanvasPng(page, `frame-${name}.png`, '#frame-view');
+      return out;
+    };
+    const g = await drawGroveIvy('bare-grove', ['grove'], { ground: false });
+    const i = await drawGroveIvy('bare-grove-ivy-only', ['ivy'], { ground: false });
+    const gi = await drawGroveIvy('bare-grove-ivy', ['grove', 'ivy'], { ground: false });
+    const groveShare = await drawn(page, 'bare-grove'), ivyShare = await drawn(page, 'bare-grove-ivy-only', 'bare-grove');
+    const ivyOverGrove = await snapshotDifference(page, 'bare-grove-ivy', 'bare-grove', 30);
+    check('grove + ivy: both layers draw in the one canvas', groveShare.share > 0.01 && ivyShare.share > 0.0002 && ivyOverGrove > 0.0001,
+      `grove ${(groveShare.share * 100).toFixed(2)}%, ivy ${(ivyShare.share * 100).toFixed(3)}% of the canvas; ${(ivyOverGrove * 100).toFixed(3)}% of pixels change when the ivy joins the grove`);
+    check('grove + ivy: the frame counts both layers (triangles and draw calls add up)',
+      gi.drawn.layers === 2 && g.drawn.instances === 3 && gi.drawn.triangles === g.drawn.triangles + i.drawn.triangles &&
+      gi.drawn.drawCalls === g.drawn.drawCalls + i.drawn.drawCalls,
+      `grove ${g.drawn.triangles} + ivy ${i.drawn.triangles} = ${gi.drawn.triangles} triangles, ${g.drawn.drawCalls} + ${i.drawn.drawCalls} = ${gi.drawn.drawCalls} draw calls, ${g.drawn.instances} grove instances`);
+    check('grove + ivy: one camera (the ivy climbs the grove\'s tree at the origin)',
+      gi.sameCamera && ivyShare.within > 0.4,
+      `${(ivyShare.within * 100).toFixed(1)}% of the ivy's pixels are grove pixels alone`);
+    // One sun: the frame's one direction, read back from both layers at two elevations; the low
+    // sun changes the frame's pixels.
+    const low = await drawGroveIvy('bare-grove-ivy-low-sun', ['grove', 'ivy'], { ground: false, sun: [10, 0] });
+    const same = (a, b) => a.length === 3 && a.every((x, k) => x === b[k]);
+    const lowLight = await page.evaluate(async () => {
+      const { sunDirection } = await import('/web/gl/sun.js');
+      return [...sunDirection(10, 0)];
+    });
+    const sunMoves = await snapshotDifference(page, 'bare-grove-ivy', 'bare-grove-ivy-low-sun', 30);
+    check('grove + ivy: one sun, read back from both layers, lights them both',
+      same(gi.groveLight, gi.frameLight) && same(gi.ivyLight, gi.frameLight) && same(low.groveLight, lowLight) && same(low.ivyLight, lowLight) &&
+      !same(gi.frameLight, lowLight) && sunMoves > 0.005,
+      `sun at 60°: grove ${gi.groveLight.map((x) => x.toFixed(3))}, ivy ${gi.ivyLight.map((x) => x.toFixed(3))}; at 10°: grove ${low.groveLight.map((x) => x.toFixed(3))}, ivy ${low.ivyLight.map((x) => x.toFixed(3))}; ${(sunMoves * 100).toFixed(2)}% of pixels change`);
+    // With the frame's one ground under both (the grove's footprint: its 60 m square).
+    await drawGroveIvy('grove-ivy', ['grove', 'ivy']);
+    const withGround = (await drawn(page, 'grove-ivy')).share;
+    check('grove + ivy: the frame draws one ground under both', withGround > groveShare.share + 0.2,
+      `drawn ${(groveShare.share * 100).toFixed(1)}% without the ground, ${(withGround * 100).toFixed(1)}% with it`);
+    // Close up on the foot of the grove's tree at the origin, where the ivy climbs: for the eye.
+    await page.evaluate(() => {
+      const { frame } = window.__frame;
+      frame.camera.frame({ min: [-0.3, 0, -0.3], max: [0.3, 1.2, 0.3] }, 1);
+      frame.render();
+    });
+    await saveCanvasPng(page, 'frame-grove-ivy-close.png', '#frame-view');
+    await page.evaluate(() => {
+      const { frame, grove } = window.__frame;
+      frame.layers = [grove];
+      frame.removeLayer(grove);  // disposed of: its programs and buffers freed
+    });
+  }
 
   // A layer removed is disposed of and no longer drawn: the tree alone again, pixel for pixel.
   const removed = await page.evaluate(() => {

@@ -1,9 +1,9 @@
 // One frame of several studies in one canvas: the WebGL2 context, one orbit camera, one sun
-// (web/gl/sun.js), one ground (web/gl/ground.js), with layers added to it (the tree, ivy and
-// terrain renderers are layers), drawn whole or in parts. Every study page and embed draws through
-// one Frame (the tree page, the ivy and terrain pages, <niwa-*>), so any of them can draw several
-// studies; the garden (issue 33) draws its studies this way. The world is the studies' one frame:
-// metres, y up.
+// (web/gl/sun.js), one ground (web/gl/ground.js), with layers added to it (the tree, grove, ivy
+// and terrain renderers are layers), drawn whole or in parts. Every study page and embed draws
+// through one Frame (the tree page, the grove, the ivy and terrain pages, <niwa-*>), so any of them
+// can draw several studies; the garden (issue 33) draws its studies this way. The world is the
+// studies' one frame: metres, y up.
 //
 //   const frame = new Frame(canvas, { camera });
 //   await frame.init();
@@ -14,10 +14,10 @@
 // A layer: init() (async: its programs in frame.gl), layerSteps(view, cheap) -> {steps, totals}
 // (the steps of web/gl/progressive_frame.js and what they draw: {triangles, lines, drawCalls, ...};
 // or draw(gl, view) for a layer drawn whole), worldBounds() (its box in metres, or null),
-// footprint() (optional: the ground under it, {center, extent, shadowRadius, crownHeight}),
-// ready() (optional: false until it can draw), uploading (optional: true while its new buffers go
-// up), dispose(). view: {viewProjection, eye, light (unit, towards the sun), scale (the drawing
-// buffer's), width, height}. A study's renderer extends StudyLayer (below).
+// footprint() (optional: the ground under it, {center, extent, shadowRadius, crownHeight,
+// shadowOffset?}), ready() (optional: false until it can draw), uploading (optional: true while its
+// new buffers go up), dispose(). view: {viewProjection, eye, light (unit, towards the sun), scale
+// (the drawing buffer's), width, height}. A study's renderer extends StudyLayer (below).
 // Does not: talk to the worker, know any study's meshes, or pace its frames (the page's FrameLoop,
 // FrameGovernor or ProgressiveLoop call render; a frame alone asks its own FrameLoop).
 import { createContext, finishGpu, resizeCanvas } from './context.js';
@@ -243,9 +243,9 @@ export class Frame {
   }
 }
 
-// What every study's renderer shares as a layer of a Frame (the tree's, the ivy's and the
-// terrain's extend it; moss, bark and the garden's next): the frame's context and its frame in
-// parts (a layer aborts it when its buffers change), its sun (the frame's, given by addLayer and
+// What every study's renderer shares as a layer of a Frame (the tree's, the grove's, the ivy's
+// and the terrain's extend it; moss, bark and the garden's next): the frame's context and its
+// frame in parts (a layer aborts it when its buffers change), its sun (the frame's, given by addLayer and
 // setSun), its box in the frame's world, and whether it is fitted to a page's view (a Frame of
 // fit: true) or in metres. A renderer may also be made on a canvas of its own (its own context:
 // tests that use one program, web/tree/tree_renderer.js's atlas painting), drawn whole with

@@ -3,13 +3,15 @@
 // Does not: cast real shadows or follow a terrain (the terrain study draws its own surface).
 import { BACKGROUND } from './context.js';
 
-// The ground's draw options under a footprint {center, extent, shadowRadius, crownHeight} (metres):
-// the crown's shadow falls away from the sun (its centre projected along `light`, the unit
-// direction towards the sun). One rule for a renderer alone and for a Frame of layers.
+// The ground's draw options under a footprint {center, extent, shadowRadius, crownHeight,
+// shadowOffset?} (metres): the crown's shadow falls away from the sun (its centre projected along
+// `light`, the unit direction towards the sun), or at the footprint's own shadowOffset ([x, z] from
+// the centre: the grove, which has no single crown, moves it far away). One rule for a renderer
+// alone and for a Frame of layers.
 export function groundUnder(footprint, light) {
   const reach = (footprint.crownHeight || 0) / Math.max(light[1], 0.25);
   return { center: footprint.center, extent: footprint.extent, shadowRadius: footprint.shadowRadius,
-    shadowOffset: [-light[0] * reach, -light[2] * reach] };
+    shadowOffset: footprint.shadowOffset || [-light[0] * reach, -light[2] * reach] };
 }
 
 export class Ground {

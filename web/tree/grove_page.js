@@ -8,8 +8,12 @@
 // The worker's clients (one per unique tree, 'grove-0' ..., and 'grove' for the module's ready
 // message), a worker failure and the notices are the study controller's
 // (web/shell/study_controller.js, without history: the hash is the grove's view, not a state).
+// The view is one Frame (web/gl/frame.js: the page's camera, the tree's sun, the ground) with the
+// grove's renderer as its layer, as the other study pages draw.
 // Does not: grow or sway trees (the worker does) or draw directly (grove_renderer.js does).
 import { OrbitCamera } from '../gl/orbit_camera.js';
+import { finishGpu } from '../gl/context.js';
+import { Frame } from '../gl/frame.js';
 import { FrameLoop, nextFrame } from '../gl/frame_loop.js';
 import { viewOf } from '../gl/buffers.js';
 import { DEFAULT_SUNS } from '../gl/sun.js';
@@ -78,7 +82,8 @@ function layout() {
 }
 const INSTANCES = layout();
 
-let renderer = null;
+let frame = null;     // the page's one Frame (camera, sun, ground)
+let renderer = null;  // the grove's layer of it (GroveRenderer)
 const camera = new OrbitCamera();
 const trees = [];  // unique tree index -> {bounds, stats} once grown
 let mode = 'hybrid';
@@ -134,10 +139,10 @@ function fail(text) {
 }
 
 const n = (x) => Math.round(x).toLocaleString('en-US');
-function updateStats(frame) {
+function updateStats(drawn) {
   const grown = trees.filter(Boolean).length;
-  const parts = [`${frame.instances} trees (${frame.uniqueDrawn} unique of ${UNIQUE.length})`, mode,
-    `${n(frame.triangles)} triangles`, `${n(frame.lines)} lines`, `${frame.drawCalls} draw calls`];
+  const parts = [`${drawn.instances} trees (${drawn.uniqueDrawn} unique of ${UNIQUE.length})`, mode,
+    `${n(drawn.triangles)} triangles`, `${n(drawn.lines)} lines`, `${drawn.drawCalls} draw calls`];
   if (mode === 'hybrid' && viewMs) parts.push(`draw lists ${viewMs.toFixed(0)} ms`);
   if (windPlaying && sway.length) {
     const cost = sway.reduce((sum, s) => sum + (s?.stepMs || 0), 0);
@@ -146,15 +151,15 @@ function updateStats(frame) {
   if (timing) parts.push(`${timing.median.toFixed(1)} ms/frame (${timing.mode}, median of ${timing.frames})`);
   ui.stats.textContent = grown < UNIQUE.length ? `growing ${grown}/${UNIQUE.length} unique trees…` : parts.join(' · ');
   setHooks({
-    instances: frame.instances, uniqueDrawn: frame.uniqueDrawn, unique: UNIQUE.length,
-    triangles: frame.triangles, lines: frame.lines, drawCalls: frame.drawCalls, drawnMode: frame.mode,
+    instances: drawn.instances, uniqueDrawn: drawn.uniqueDrawn, unique: UNIQUE.length,
+    triangles: drawn.triangles, lines: drawn.lines, drawCalls: drawn.drawCalls, drawnMode: drawn.mode,
   });
 }
 
 const frameLoop = new FrameLoop(() => {
   const pending = [...poseDone];
   poseDone.clear();
-  updateStats(renderer.render(camera, mode));
+  updateStats(drawGrove());
   bumpHook('frameSerial');
   // The round of draw lists this frame drew (hybrid): a test waits for it, not just for the lists.
   setHooks({ drawnViewSerial: mode === 'hybrid' ? hookValue('viewSerial') || '0' : '0' });
@@ -166,6 +171,14 @@ const frameLoop = new FrameLoop(() => {
 });
 function requestFrame() {
   if (renderer) frameLoop.request();
+}
+
+// Draws the frame with the grove in `mode`, every unique tree or `only`'s alone (-1: none, the
+// ground alone); returns what it drew (the ground's triangles and draw call included).
+function drawGrove(only = undefined) {
+  renderer.mode = mode;
+  renderer.only = only;
+  return frame.render();
 }
 
 // Hybrid mode: one 'view' per (unique tree, distance band) with that band's nearest instance's
@@ -234,7 +247,7 @@ function onTree(msg) {
   const mine = INSTANCES.filter((i) => i.tree === index);
   const instances = new Float32Array(mine.length * 4);
   mine.forEach((i, k) => instances.set([...i.position, i.scale], k * 4));
-  renderer.addTree(index, msg.mesh, instances, msg.hybrid, msg.swayNodes);
+  renderer.addTree(index, msg.mesh, instances, msg.hybrid, msg.swayNodes, msg.stats.bounds);
   // Uploaded at once: the buffers go back for the worker's next tree of this client to fill.
   const { bark, leaves, flowers } = msg.mesh;
   treeClients[index].recycle({ bark, leaves, flowers, ...treeExtras(msg) });
@@ -372,7 +385,7 @@ for (const client of treeClients) {
 
 // Times `frames` frames of the current view (after one untimed frame): each is drawn and then
 // waited for (gl.readPixels of one pixel blocks until the GPU is done); the median is shown.
-// only = -1 times the ground alone (the frame's fixed cost), as render().
+// only = -1 times the ground alone (the frame's fixed cost), as drawGrove().
 // warmUp: draw one untimed frame first (false when the mode has just been drawn: a full-mode frame of
 // the grove is about 12 s on SwiftShader, so the grove test times one, right after the full-mode draws).
 async function timeFrames(frames = 20, only = undefined, warmUp = true) {
@@ -380,23 +393,23 @@ async function timeFrames(frames = 20, only = undefined, warmUp = true) {
   setHooks({ timing: 'running' });
   ui.time.disabled = true;
   const times = [];
-  let frame = null;
+  let drawn = null;
   for (let i = warmUp ? -1 : 0; i < frames; ++i) {
     await nextFrame();
     const start = performance.now();
-    frame = renderer.render(camera, mode, only);
-    renderer.finish();
+    drawn = drawGrove(only);
+    finishGpu(renderer.gl);
     if (i >= 0) times.push(performance.now() - start);
   }
   times.sort((a, b) => a - b);
   const median = times.length % 2 ? times[(times.length - 1) / 2] : (times[times.length / 2 - 1] + times[times.length / 2]) / 2;
-  timing = { mode: only === undefined ? mode : 'ground only', frames, median, min: times[0], max: times[times.length - 1], ...frame };
+  timing = { mode: only === undefined ? mode : 'ground only', frames, median, min: times[0], max: times[times.length - 1], ...drawn };
   ui.timing.textContent = `${timing.mode}: ${median.toFixed(1)} ms per frame (median of ${frames}; ` +
     `${times[0].toFixed(1)}–${times[times.length - 1].toFixed(1)} ms), ${renderer.canvas.width}×${renderer.canvas.height} px`;
   setHooks({ timing: 'done', frameMs: median.toFixed(2), timedMode: timing.mode, timedFrames: frames });
   ui.time.disabled = false;
   if (only !== undefined) requestFrame();  // the whole grove back on screen
-  else updateStats(frame);
+  else updateStats(drawn);
   window.grove.lastTiming = { ...timing, width: renderer.canvas.width, height: renderer.canvas.height, viewMs };
   return window.grove.lastTiming;
 }
@@ -405,10 +418,10 @@ async function timeFrames(frames = 20, only = undefined, warmUp = true) {
 // the bare ground by more than a faint amount): every unique tree must show in both modes.
 function coverage() {
   if (!renderer) return [];
-  renderer.render(camera, mode, -1);
+  drawGrove(-1);
   const empty = renderer.readCanvas();
   const shares = UNIQUE.map((_, index) => {
-    renderer.render(camera, mode, index);
+    drawGrove(index);
     const pixels = renderer.readCanvas();
     let count = 0;
     for (let i = 0; i < pixels.length; i += 4) {
@@ -416,7 +429,7 @@ function coverage() {
     }
     return count / (pixels.length / 4);
   });
-  updateStats(renderer.render(camera, mode));
+  updateStats(drawGrove());
   return shares;
 }
 
@@ -438,14 +451,14 @@ async function start() {
   resetCamera();
   if (cam) camera.fromHash(cam);
   try {
-    renderer = new GroveRenderer(ui.canvas);
-    await renderer.init();
-    frameLoop.attach(renderer.gl, ui.canvas);  // one frame in flight (web/gl/frame_loop.js)
+    frame = new Frame(ui.canvas, { camera, sun: DEFAULT_SUNS.tree, what: 'the grove', request: () => requestFrame() });
+    await frame.init();
+    renderer = await frame.addLayer(new GroveRenderer(frame));
+    frameLoop.attach(frame.gl, ui.canvas);  // one frame in flight (web/gl/frame_loop.js)
   } catch (e) {
     fail(`Cannot draw: ${e.message}`);
     return;
   }
-  renderer.setSun(DEFAULT_SUNS.tree.elevation, DEFAULT_SUNS.tree.azimuth);
   camera.attach(ui.canvas, () => {
     writeHash();
     requestViews();
@@ -483,6 +496,8 @@ async function start() {
 // For tests and bench/grove.mjs; lastTiming is the last "Time N frames" result.
 window.grove = {
   timeFrames, coverage, swayProbe, poseBlockDifference, requestFrame, instances: INSTANCES.length, unique: UNIQUE.length,
+  get frame() { return frame; },  // the page's Frame and its grove layer (tests)
+  get renderer() { return renderer; },
   layout: INSTANCES, lastTiming: null,
 };
 start();

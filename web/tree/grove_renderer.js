@@ -3,10 +3,14 @@
 // shared by all its instances, and one draw list of cards + lines per (unique tree, distance band)).
 // Wind: every instance is skinned to its own sway poses (one pose texture per unique tree, instance
 // k's node point j at texel (k · nodes + j) · 4, as shaders/common/skin.glsl reads them).
-// Does not: grow trees, lay out the grove or choose draw lists (grove_page.js and the worker do).
-import { beginFrame, createContext, finishGpu, resizeCanvas, sunDirection } from '../gl/context.js';
+// A StudyLayer (web/gl/frame.js): a layer of the page's Frame (layerSteps: the grove under the
+// frame's camera and sun; the frame draws the ground under its footprint), so another study's layer
+// can be drawn beside it (tests/browser/frame_layers.test.mjs).
+// Does not: grow trees, lay out the grove, choose draw lists (grove_page.js and the worker do) or
+// pace its frames (the page's FrameLoop calls frame.render).
+import { finishGpu, resizeCanvas } from '../gl/context.js';
 import { floatAttribute, staticBuffer, uintAttribute, viewOf } from '../gl/buffers.js';
-import { Ground } from '../gl/ground.js';
+import { StudyLayer } from '../gl/frame.js';
 import { loadPrograms } from '../gl/program.js';
 import { restPoses, uploadPoses } from '../gl/textures.js';
 import { PARTS, SHADERS, paintAtlas } from './tree_renderer.js';
@@ -15,35 +19,39 @@ const SEGMENT_ROW = 1024;  // texels per row of a line-segment texture (grove_li
 const SEGMENT_TEXELS = 4;  // p0 + width, p1, colour, skin (joint0, joint1, weight0, weight1)
 const MEMBER_FLOATS = 6;   // per band member: x, y, z, scale, width scale, pose block
 
-export class GroveRenderer {
-  // Throws an Error with a readable message when WebGL2 is missing.
-  constructor(canvas) {
-    this.canvas = canvas;
-    const gl = createContext(canvas, 'the grove');
-    this.gl = gl;
+export class GroveRenderer extends StudyLayer {
+  // target: the page's Frame ({canvas, gl}: a layer of it, in metres) or a canvas (its own
+  // context, drawn whole with drawWhole). Throws an Error with a readable message when WebGL2 is
+  // missing. The sun: the frame's (StudyLayer.setSun sets every layer's).
+  constructor(target) {
+    super(target, { what: 'the grove', study: 'tree' });
     this.trees = [];      // per unique tree: {parts: {name: {vao, count}}, atlas, instances, ...}
     this.bands = new Map();  // `${tree}:${band}` -> {tree, vaoCards, cardCount, vaoLines, segments, texture, members}
-    this.light = [0.5, 0.866, 0];
-    this.extent = 60;
-    this.lastFrame = { triangles: 0, lines: 0, drawCalls: 0, instances: 0, uniqueDrawn: 0, cpuMs: 0 };
+    this.extent = 60;     // the ground's half-size (metres)
+    this.mode = 'hybrid';  // 'full' or 'hybrid': what layerSteps draws
+    this.only = undefined;  // a unique tree index drawn alone, -1 for none (the coverage check), undefined for all
   }
 
   async init(shaderBase = SHADERS) {
     const p = await loadPrograms(this.gl, shaderBase, {
       tree: ['grove_tree.vert', 'tree.frag'], card: ['grove_card.vert', 'card.frag'],
       line: ['grove_line.vert', 'grove_line.frag'], atlas: ['atlas.vert', 'tree.frag'],
-      ground: ['../common/ground.vert', '../common/ground.frag'],
     });
     this.treeProgram = p.tree;
     this.cardProgram = p.card;
     this.lineProgram = p.line;
     this.atlasProgram = p.atlas;
-    this.ground = new Ground(this.gl, p.ground);
   }
 
-  // Light direction (unit, towards the sun), as Renderer.setSun.
-  setSun(elevationDeg, azimuthDeg) {
-    this.light = sunDirection(elevationDeg, azimuthDeg) || this.light;
+  // False before init() (the frame draws nothing of it then).
+  ready() {
+    return Boolean(this.treeProgram);
+  }
+
+  // The ground under the grove (web/gl/ground.js groundUnder): a square of half-size `extent`
+  // around the origin, with no single contact shadow (its offset is moved far away).
+  footprint() {
+    return { center: [0, 0, 0], extent: this.extent, shadowRadius: 0.05, crownHeight: 0, shadowOffset: [1e4, 1e4] };
   }
 
   // Per-instance attributes on the bound VAO: `location` = vec4 (x, y, z, scale) from `b` (stride
@@ -67,8 +75,9 @@ export class GroveRenderer {
   // Unique tree `index`: the worker's mesh (bark/leaves/flowers ArrayBuffers with their sway skin)
   // drawn at every instance of `instances` (Float32Array, 4 per instance: x, y, z, scale; instance
   // k uses pose block k), `nodes` sway node points (the worker's swayNodes), poses at rest, and its
-  // card atlas painted once from the worker's hybrid geometry (null: no hybrid mode for this tree).
-  addTree(index, mesh, instances, hybrid, nodes = 1) {
+  // card atlas painted once from the worker's hybrid geometry (null: no hybrid mode for this tree);
+  // bounds: the tree's box in its own metres (stats.bounds), which grows the grove's worldBounds.
+  addTree(index, mesh, instances, hybrid, nodes = 1, bounds = null) {
     const gl = this.gl;
     const instanceBuffer = staticBuffer(gl, instances);
     const parts = {};
@@ -77,19 +86,36 @@ export class GroveRenderer {
       if (!data || data.indices.byteLength === 0) continue;
       const vao = gl.createVertexArray();
       gl.bindVertexArray(vao);
-      floatAttribute(gl, 0, staticBuffer(gl, data.positions), 3);
-      floatAttribute(gl, 1, staticBuffer(gl, data.normals), 3);
-      this.#skinAttributes(data.joints, data.weights);
+      const buffers = [staticBuffer(gl, data.positions), staticBuffer(gl, data.normals)];
+      floatAttribute(gl, 0, buffers[0], 3);
+      floatAttribute(gl, 1, buffers[1], 3);
+      buffers.push(...this.#skinAttributes(data.joints, data.weights));
       this.#instanceAttributes(instanceBuffer, 4);
-      staticBuffer(gl, data.indices, gl.ELEMENT_ARRAY_BUFFER);
+      buffers.push(staticBuffer(gl, data.indices, gl.ELEMENT_ARRAY_BUFFER));
       gl.bindVertexArray(null);
-      parts[name] = { vao, count: data.indices.byteLength / 4 };
+      parts[name] = { vao, count: data.indices.byteLength / 4, buffers };
     }
     this.trees[index] = {
-      parts, instances: instances.length / 4, atlas: hybrid ? this.#paintAtlas(hybrid) : null,
+      parts, instanceBuffer, instances: instances.length / 4, atlas: hybrid ? this.#paintAtlas(hybrid) : null,
       nodes: Math.max(1, nodes), poseTexture: gl.createTexture(), poseRows: 0,
     };
     this.setRestPoses(index);
+    if (bounds) this.#growBounds(instances, bounds);
+  }
+
+  // The grove's box (metres, worldBounds) grown by every instance (x, y, z, scale) of a tree of box
+  // `bounds` in its own frame.
+  #growBounds(instances, bounds) {
+    for (let i = 0; i < instances.length; i += 4) {
+      const s = instances[i + 3];
+      const min = [0, 1, 2].map((k) => instances[i + k] + s * bounds.min[k]);
+      const max = [0, 1, 2].map((k) => instances[i + k] + s * bounds.max[k]);
+      if (!this.boundsView) this.boundsView = { min, max };
+      else for (let k = 0; k < 3; ++k) {
+        this.boundsView.min[k] = Math.min(this.boundsView.min[k], min[k]);
+        this.boundsView.max[k] = Math.max(this.boundsView.max[k], max[k]);
+      }
+    }
   }
 
   // Sway poses of unique tree `index`: Float32Array (the worker's 'pose'), instances × nodes × 16
@@ -233,109 +259,149 @@ export class GroveRenderer {
   }
 
   resize() {
-    resizeCanvas(this.canvas);
+    resizeCanvas(this.canvas, this.scale);
   }
 
-  // Draws the ground and the grove in `mode` ('full' or 'hybrid'); only = a unique tree index to
-  // draw that tree's instances alone, -1 for none (the coverage check), undefined for all.
-  // Returns what was drawn: triangles, lines (segments), draw calls, tree instances, unique trees.
-  render(camera, mode, only) {
+  // The grove's steps of a frame (web/gl/progressive_frame.js) under `view` ({viewProjection, eye,
+  // light: the unit direction towards the sun, width, height}), in `this.mode` ('full' or
+  // 'hybrid'), every unique tree or `this.only`'s alone (-1: none, the coverage check). Each step
+  // is drawn whole (instanced draws: primitives 0). Returns {steps, totals: {triangles, lines
+  // (segments), drawCalls, instances (tree instances), uniqueDrawn (unique trees), mode}}.
+  layerSteps(view) {
     const gl = this.gl;
-    const start = performance.now();
-    beginFrame(gl, this.canvas);
-    gl.disable(gl.CULL_FACE);
-    gl.disable(gl.BLEND);
-    const viewProjection = camera.viewProjection(this.canvas.width / this.canvas.height);
-    let triangles = 0, lines = 0, drawCalls = 0, instances = 0;
+    const { viewProjection, eye, light } = view;
+    const mode = this.mode, only = this.only;
+    const totals = { triangles: 0, lines: 0, drawCalls: 0, instances: 0, uniqueDrawn: 0, mode };
     const drawn = new Set();
-    // No single contact shadow in a grove (the shadow is moved far away).
-    const ground = this.ground.draw(viewProjection, { center: [0, 0, 0], extent: this.extent, shadowRadius: 0.05, shadowOffset: [1e4, 1e4] });
-    triangles += ground.triangles;
-    drawCalls += ground.drawCalls;
     const wanted = (tree) => only === undefined || only === tree;
+    const steps = [];
+    const step = (draw) => steps.push({ primitives: 0, setup: () => {}, draw });
 
     if (mode === 'hybrid') {
-      const cp = this.cardProgram;
-      gl.useProgram(cp.program);
-      gl.uniformMatrix4fv(cp.uniforms.uViewProjection, false, viewProjection);
-      gl.uniform1i(cp.uniforms.uAtlas, 0);
-      gl.activeTexture(gl.TEXTURE0);
-      for (const band of this.bands.values()) {
-        const tree = this.trees[band.tree];
-        if (!band.cardCount || !wanted(band.tree) || !tree?.atlas) continue;
-        this.#bindPoses(cp, tree);
-        gl.bindTexture(gl.TEXTURE_2D, tree.atlas);
-        gl.bindVertexArray(band.vaoCards);
-        gl.drawElementsInstanced(gl.TRIANGLES, band.cardCount, gl.UNSIGNED_INT, 0, band.instances);
-        triangles += (band.cardCount / 3) * band.instances;
-        drawCalls += 1;
-      }
-      const lp = this.lineProgram;
-      gl.useProgram(lp.program);
-      gl.uniformMatrix4fv(lp.uniforms.uViewProjection, false, viewProjection);
-      gl.uniform2f(lp.uniforms.uViewport, this.canvas.width, this.canvas.height);
-      gl.uniform1i(lp.uniforms.uSegments, 0);
-      // Sub-pixel lines blend by their coverage; they leave the depth buffer to the cards.
-      gl.enable(gl.BLEND);
-      gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
-      gl.depthMask(false);
-      for (const band of this.bands.values()) {
-        if (!band.segments || !wanted(band.tree) || !this.trees[band.tree]) continue;
-        this.#bindPoses(lp, this.trees[band.tree]);
-        gl.bindTexture(gl.TEXTURE_2D, band.texture);
-        gl.bindVertexArray(band.vaoLines);
-        if (band.thick > 0) {
-          gl.uniform1i(lp.uniforms.uThin, 0);
-          gl.drawElementsInstanced(gl.TRIANGLES, band.thick * 6, gl.UNSIGNED_INT, 0, band.instances);
-          drawCalls += 1;
+      const cards = [...this.bands.values()].filter((band) => band.cardCount && wanted(band.tree) && this.trees[band.tree]?.atlas);
+      const lines = [...this.bands.values()].filter((band) => band.segments && wanted(band.tree) && this.trees[band.tree]);
+      step(() => {
+        gl.disable(gl.CULL_FACE);
+        gl.disable(gl.BLEND);
+        const cp = this.cardProgram;
+        gl.useProgram(cp.program);
+        gl.uniformMatrix4fv(cp.uniforms.uViewProjection, false, viewProjection);
+        gl.uniform1i(cp.uniforms.uAtlas, 0);
+        gl.activeTexture(gl.TEXTURE0);
+        for (const band of cards) {
+          const tree = this.trees[band.tree];
+          this.#bindPoses(cp, tree);
+          gl.bindTexture(gl.TEXTURE_2D, tree.atlas);
+          gl.bindVertexArray(band.vaoCards);
+          gl.drawElementsInstanced(gl.TRIANGLES, band.cardCount, gl.UNSIGNED_INT, 0, band.instances);
         }
-        if (band.segments > band.thick) {
-          gl.uniform1i(lp.uniforms.uThin, 1);
-          gl.uniform1i(lp.uniforms.uFirst, band.thick);
-          gl.drawArraysInstanced(gl.LINES, 0, (band.segments - band.thick) * 2, band.instances);
-          drawCalls += 1;
+        const lp = this.lineProgram;
+        gl.useProgram(lp.program);
+        gl.uniformMatrix4fv(lp.uniforms.uViewProjection, false, viewProjection);
+        gl.uniform2f(lp.uniforms.uViewport, this.canvas.width, this.canvas.height);
+        gl.uniform1i(lp.uniforms.uSegments, 0);
+        // Sub-pixel lines blend by their coverage; they leave the depth buffer to the cards.
+        gl.enable(gl.BLEND);
+        gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
+        gl.depthMask(false);
+        for (const band of lines) {
+          this.#bindPoses(lp, this.trees[band.tree]);
+          gl.bindTexture(gl.TEXTURE_2D, band.texture);
+          gl.bindVertexArray(band.vaoLines);
+          if (band.thick > 0) {
+            gl.uniform1i(lp.uniforms.uThin, 0);
+            gl.drawElementsInstanced(gl.TRIANGLES, band.thick * 6, gl.UNSIGNED_INT, 0, band.instances);
+          }
+          if (band.segments > band.thick) {
+            gl.uniform1i(lp.uniforms.uThin, 1);
+            gl.uniform1i(lp.uniforms.uFirst, band.thick);
+            gl.drawArraysInstanced(gl.LINES, 0, (band.segments - band.thick) * 2, band.instances);
+          }
         }
-        lines += band.segments * band.instances;
+        gl.depthMask(true);
+        gl.disable(gl.BLEND);
+        gl.bindTexture(gl.TEXTURE_2D, null);
+        gl.activeTexture(gl.TEXTURE1);
+        gl.bindTexture(gl.TEXTURE_2D, null);
+        gl.activeTexture(gl.TEXTURE0);
+      });
+      for (const band of cards) {
+        totals.triangles += (band.cardCount / 3) * band.instances;
+        totals.drawCalls += 1;
       }
-      gl.depthMask(true);
-      gl.disable(gl.BLEND);
+      for (const band of lines) {
+        totals.drawCalls += (band.thick > 0 ? 1 : 0) + (band.segments > band.thick ? 1 : 0);
+        totals.lines += band.segments * band.instances;
+      }
       for (const band of this.bands.values()) {
         if (!wanted(band.tree) || !(band.cardCount || band.segments)) continue;
-        instances += band.instances;
+        totals.instances += band.instances;
         drawn.add(band.tree);
       }
-      gl.bindTexture(gl.TEXTURE_2D, null);
-      gl.activeTexture(gl.TEXTURE1);
-      gl.bindTexture(gl.TEXTURE_2D, null);
-      gl.activeTexture(gl.TEXTURE0);
     } else {
       const t = this.treeProgram;
-      gl.useProgram(t.program);
-      gl.uniformMatrix4fv(t.uniforms.uViewProjection, false, viewProjection);
-      gl.uniform3fv(t.uniforms.uLightDirection, this.light);
-      gl.uniform3fv(t.uniforms.uCameraPosition, camera.position());
-      gl.uniform1f(t.uniforms.uXray, 0);
+      const trees = [];
       this.trees.forEach((tree, index) => {
         if (!tree || !wanted(index)) return;
-        this.#bindPoses(t, tree);
-        for (const [name, part] of Object.entries(tree.parts)) {
-          const look = PARTS[name];
-          gl.uniform3fv(t.uniforms.uColor, look.color);
-          gl.uniform3fv(t.uniforms.uColorVariation, look.variation);
-          gl.uniform1f(t.uniforms.uDoubleSided, look.doubleSided);
-          gl.uniform1f(t.uniforms.uSpecular, look.specular);
-          gl.bindVertexArray(part.vao);
-          gl.drawElementsInstanced(gl.TRIANGLES, part.count, gl.UNSIGNED_INT, 0, tree.instances);
-          triangles += (part.count / 3) * tree.instances;
-          drawCalls += 1;
+        trees.push(tree);
+        for (const part of Object.values(tree.parts)) {
+          totals.triangles += (part.count / 3) * tree.instances;
+          totals.drawCalls += 1;
         }
-        instances += tree.instances;
+        totals.instances += tree.instances;
         drawn.add(index);
       });
+      step(() => {
+        gl.disable(gl.CULL_FACE);
+        gl.disable(gl.BLEND);
+        gl.useProgram(t.program);
+        gl.uniformMatrix4fv(t.uniforms.uViewProjection, false, viewProjection);
+        gl.uniform3fv(t.uniforms.uLightDirection, light);
+        gl.uniform3fv(t.uniforms.uCameraPosition, eye);
+        gl.uniform1f(t.uniforms.uXray, 0);
+        for (const tree of trees) {
+          this.#bindPoses(t, tree);
+          for (const [name, part] of Object.entries(tree.parts)) {
+            const look = PARTS[name];
+            gl.uniform3fv(t.uniforms.uColor, look.color);
+            gl.uniform3fv(t.uniforms.uColorVariation, look.variation);
+            gl.uniform1f(t.uniforms.uDoubleSided, look.doubleSided);
+            gl.uniform1f(t.uniforms.uSpecular, look.specular);
+            gl.bindVertexArray(part.vao);
+            gl.drawElementsInstanced(gl.TRIANGLES, part.count, gl.UNSIGNED_INT, 0, tree.instances);
+          }
+        }
+      });
     }
-    gl.bindVertexArray(null);
-    this.lastFrame = { triangles, lines, drawCalls, instances, uniqueDrawn: drawn.size, cpuMs: performance.now() - start, mode };
-    return this.lastFrame;
+    totals.uniqueDrawn = drawn.size;
+    return { steps, totals };
+  }
+
+  // Frees the context's objects this renderer made (a Frame's layer removed, or the page gone).
+  dispose() {
+    const gl = this.gl;
+    super.dispose();
+    this.setBands([]);
+    for (const tree of this.trees) {
+      if (!tree) continue;
+      for (const part of Object.values(tree.parts)) {
+        gl.deleteVertexArray(part.vao);
+        part.buffers.forEach((b) => gl.deleteBuffer(b));
+      }
+      gl.deleteBuffer(tree.instanceBuffer);
+      if (tree.atlas) gl.deleteTexture(tree.atlas);
+      gl.deleteTexture(tree.poseTexture);
+    }
+    this.trees = [];
+    if (this.atlasDepth) gl.deleteRenderbuffer(this.atlasDepth.rb);
+    this.atlasDepth = null;
+    if (this.quads) gl.deleteBuffer(this.quads.buffer);
+    this.quads = null;
+    for (const p of [this.treeProgram, this.cardProgram, this.lineProgram, this.atlasProgram]) {
+      if (p) gl.deleteProgram(p.program);
+    }
+    this.treeProgram = null;
+    this.boundsView = null;
   }
 
   // Blocks until the GPU has finished everything drawn so far: reads one pixel back.
