@@ -358,39 +358,59 @@ Ring Normalise(const Ring& ring) {
 }
 
 Ring PreClean(const Ring& ring, double min_len, double min_angle_deg, int* dropped) {
-  Ring r = ring;
+  // The ring as a doubly linked list over its points (next/prev indices), so a drop is O(1): the
+  // vector's erase made a dense contour quadratic (a 200,000-point circle: 5.5 s of CPU before any
+  // budget). The walk is the vector's own, step for step: `cur` is the point at index `pos` of the
+  // remaining ring, `head` its index 0, and the same points are dropped in the same order.
+  const std::size_t total = ring.size();
   const double min_angle = min_angle_deg * 3.14159265358979323846 / 180.0;
-  for (std::size_t pass = 0; pass < ring.size() && r.size() > 3; ++pass) {
+  std::vector<std::size_t> next(total), prev(total);
+  for (std::size_t i = 0; i < total; ++i) {
+    next[i] = (i + 1) % total;
+    prev[i] = (i + total - 1) % total;
+  }
+  std::size_t head = 0, size = total;
+  for (std::size_t pass = 0; pass < total && size > 3; ++pass) {
     bool changed = false;
-    for (std::size_t i = 0; i < r.size() && r.size() > 3;) {
-      const std::size_t n = r.size();
-      const Vec2& prev = r[(i + n - 1) % n];
-      const Vec2& cur = r[i];
-      const Vec2& next = r[(i + 1) % n];
-      const Vec2 e1 = Sub(cur, prev), e2 = Sub(next, cur);
+    std::size_t cur = head;
+    for (std::size_t pos = 0; pos < size && size > 3;) {
+      const Vec2& before = ring[prev[cur]];
+      const Vec2& at = ring[cur];
+      const Vec2& after = ring[next[cur]];
+      const Vec2 e1 = Sub(at, before), e2 = Sub(after, at);
       const double l1 = Len(e1), l2 = Len(e2);
       bool drop = l2 < min_len && min_len > 0;  // drop the end point of a very short edge
-      std::size_t victim = (i + 1) % n;
+      bool drop_cur = false;
       if (!drop && min_angle > 0 && l1 > 0 && l2 > 0) {
         // Interior (or exterior) angle at cur below the limit: an acute spike or notch.
         const double cosang = -(e1.x * e2.x + e1.y * e2.y) / (l1 * l2);
         const double angle = det::Acos(std::clamp(cosang, -1.0, 1.0));  // in [0, π]
         if (angle < min_angle) {
           drop = true;
-          victim = i;
+          drop_cur = true;
         }
       }
-      if (drop) {
-        r.erase(r.begin() + static_cast<std::ptrdiff_t>(victim));
-        if (dropped) ++*dropped;
-        changed = true;
-        if (victim < i) --i;
-      } else {
-        ++i;
+      if (!drop) {
+        cur = next[cur];
+        ++pos;
+        continue;
       }
+      const std::size_t victim = drop_cur ? cur : next[cur];
+      const bool wrapped = !drop_cur && pos + 1 == size;  // the vector's victim index 0 < pos
+      next[prev[victim]] = next[victim];
+      prev[next[victim]] = prev[victim];
+      if (victim == head) head = next[victim];
+      --size;
+      if (dropped) ++*dropped;
+      changed = true;
+      if (drop_cur) cur = next[victim];  // the next point takes its index
+      if (wrapped) --pos;                // the same point, one index lower
     }
     if (!changed) break;
   }
+  Ring r;
+  r.reserve(size);
+  for (std::size_t k = 0, i = head; k < size; ++k, i = next[i]) r.push_back(ring[i]);
   return r;
 }
 
