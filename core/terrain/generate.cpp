@@ -54,8 +54,22 @@ bool SplitEdge(const Vec2& a, const Vec2& b, double d0, double d2, double tmin, 
          SplitEdge(m, b, d0, d2, tmin, tmax, rng, depth + 1, max_points, out);
 }
 
-// A perturbed ring made simple: as is, untwisted (§4.4), or by the positive-winding union.
-std::vector<Ring> MakeSimple(const Ring& ring, const TerrainParams& p, GrowCounts* counts) {
+// A union of the perturbation counted against the grow's sweep budget (`budget`: its work so far
+// and the most allowed); past it, `budget->stopped` and no rings.
+std::vector<Ring> CountedUnion(const Ring& ring, ShrinkCounts* budget, ShrinkCounts* sc) {
+  if (budget->max_sweep_tests >= 0)
+    sc->max_sweep_tests = std::max(0.0, budget->max_sweep_tests - budget->sweep_tests);
+  std::vector<Ring> out = PositiveUnion({Snap(ring)}, sc);
+  budget->sweep_tests += sc->sweep_tests;
+  if (sc->stopped) budget->stopped = true;
+  return out;
+}
+
+// A perturbed ring made simple: as is, untwisted (§4.4), or by the positive-winding union, whose
+// sweep counts against `budget` (issue 34: the perturbation's unions were not counted, so a spiral
+// strip at d = 0.5 counted 0.16 s of work and took 5.4 s). Empty with budget->stopped past it.
+std::vector<Ring> MakeSimple(const Ring& ring, const TerrainParams& p, GrowCounts* counts,
+                             ShrinkCounts* budget) {
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<Ring> out;
   Ring r = Normalise(ring);
@@ -74,7 +88,8 @@ std::vector<Ring> MakeSimple(const Ring& ring, const TerrainParams& p, GrowCount
     std::vector<Ring> pieces;
     ShrinkCounts union_counts;
     if (body_kept) {
-      pieces = PositiveUnion({Snap(ring)}, &union_counts);
+      pieces = CountedUnion(ring, budget, &union_counts);
+      if (budget->stopped) return {};
       double whole = 0;
       for (const Ring& piece : pieces) whole += std::fabs(Area(piece));
       body_kept = std::fabs(Area(u)) >= 0.5 * whole;
@@ -90,7 +105,8 @@ std::vector<Ring> MakeSimple(const Ring& ring, const TerrainParams& p, GrowCount
     } else {
       ++counts->union_fallbacks;
       ShrinkCounts sc;
-      out = PositiveUnion({Snap(ring)}, &sc);
+      out = CountedUnion(ring, budget, &sc);
+      if (budget->stopped) return {};
       counts->holes_filled += sc.holes_filled;
       counts->dropped_rings += sc.dropped_rings;
     }
@@ -103,7 +119,7 @@ std::vector<Ring> MakeSimple(const Ring& ring, const TerrainParams& p, GrowCount
 // displacement makes at most max_points points, else the error (MidpointOverflow).
 Result<std::vector<Ring>> Perturb(const Ring& shrunk, const TerrainParams& p, double d0, Pcg32* rng,
                                   std::size_t max_points, const std::string& what,
-                                  GrowCounts* counts) {
+                                  GrowCounts* counts, ShrinkCounts* budget) {
   const int method = p.GetInt(P::kMethod);
   if (method == static_cast<int>(Method::kSimple)) return std::vector<Ring>{shrunk};
   const double d = p.Get(P::kD);
@@ -129,7 +145,7 @@ Result<std::vector<Ring>> Perturb(const Ring& shrunk, const TerrainParams& p, do
     }
     counts->ms_fd += Ms(t0);
   }
-  return MakeSimple(r, p, counts);
+  return MakeSimple(r, p, counts, budget);
 }
 
 bool Conflicts(const IRing& ring, const IRing& parent, const std::vector<IRing>& others) {
@@ -470,10 +486,21 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_s
       max_points = static_cast<std::size_t>(std::max(0.0, std::floor(room)));
     }
     std::vector<std::vector<Ring>> groups;
+    ShrinkCounts perturbed;  // the perturbation's unions, counted as the shrink's are
+    if (limits != nullptr)
+      perturbed.max_sweep_tests = SweepTestsLeft(*limits, work, t.counts.sweep_tests);
     for (const Ring& r : shrunk) {
-      Result<std::vector<Ring>> g = Perturb(r, p, d0, &rng, max_points, what, &t.counts);
+      Result<std::vector<Ring>> g =
+          Perturb(r, p, d0, &rng, max_points, what, &t.counts, &perturbed);
       if (!g.ok()) return g.status();
+      if (perturbed.stopped) break;
       groups.push_back(std::move(g).value());
+    }
+    t.counts.sweep_tests += perturbed.sweep_tests;
+    if (perturbed.stopped) {
+      t.counts.truncated_by =
+          SweepStoppedLine(parent, perturbed.max_sweep_tests, *limits, level, max_levels);
+      break;
     }
     // Perturbed rings must lie inside the parent and apart from their siblings; offenders go back
     // to the unperturbed shrink (which is both), until none is left.

@@ -369,3 +369,59 @@ TEST(TerrainBudget, ComparePeakSearchIsEstimatedAndRefusedUpFront) {
 
 }  // namespace
 }  // namespace niwa::terrain
+
+namespace niwa::terrain {
+namespace {
+
+// A 2 m wide strip along a square spiral whose arms are 4 m apart, `turns` turns.
+Ring SpiralStrip(int turns) {
+  std::vector<Vec2> c = {{0, 0}};
+  double x = 0, y = 0, len = 4;
+  const Vec2 dirs[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+  for (int k = 0; k < 4 * turns; ++k) {
+    x += dirs[k % 4].x * len;
+    y += dirs[k % 4].y * len;
+    c.push_back({x, y});
+    if (k % 2 == 1) len += 4;
+  }
+  auto normal = [](const Vec2& a, const Vec2& b) {
+    const double dx = (b.x > a.x) - (b.x < a.x), dy = (b.y > a.y) - (b.y < a.y);
+    return Vec2{-dy, dx};
+  };
+  Ring left, right;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    Vec2 n;
+    if (i == 0) {
+      n = normal(c[0], c[1]);
+    } else if (i + 1 == c.size()) {
+      n = normal(c[i - 1], c[i]);
+    } else {
+      const Vec2 a = normal(c[i - 1], c[i]), b = normal(c[i], c[i + 1]);
+      n = {a.x + b.x, a.y + b.y};  // the miter of a right-angle turn
+    }
+    left.push_back({c[i].x + n.x, c[i].y + n.y});
+    right.push_back({c[i].x - n.x, c[i].y - n.y});
+  }
+  left.insert(left.end(), right.rbegin(), right.rend());
+  return left;
+}
+
+// Issue 34: the perturbation's own unions (making a perturbed ring simple) were not counted, so a
+// 300-turn spiral strip at d = 0.5 counted 0.16 s of work and took 5.2 s of CPU, past a 2 s budget
+// without a stop. They count now: the same grow under 2 s stops, named, at its first level.
+TEST(TerrainBudget, ThePerturbationsUnionsCountAgainstTheBudget) {
+  const TerrainParams p = For("improved", 0.5);
+  TerrainGrowLimits limits = Unlimited(p);
+  limits.max_seconds = 2;
+  Result<Terrain> t = Grow(SpiralStrip(300), p, kDefaultTerrainSeed, &limits);
+  ASSERT_TRUE(t.ok()) << t.status().Line();
+  EXPECT_NE(t->counts.truncated_by.find("edge tests of its union sweep"), std::string::npos)
+      << "truncated_by '" << t->counts.truncated_by << "'";
+  // A few turns fit: nothing stops them.
+  Result<Terrain> small = Grow(SpiralStrip(20), p, kDefaultTerrainSeed, &limits);
+  ASSERT_TRUE(small.ok());
+  EXPECT_TRUE(small->counts.truncated_by.empty()) << small->counts.truncated_by;
+}
+
+}  // namespace
+}  // namespace niwa::terrain
