@@ -93,13 +93,14 @@ double RayWindings(const std::vector<RayEdge>& edges, const std::vector<IPoint>&
   auto over = [&](double work) { return max_work >= 0 && work > max_work; };
   // Count pass: pieces and cell entries, then each point's exact tests (its cell's entries).
   std::vector<uint32_t> entries(static_cast<std::size_t>(g.rows * g.cols) + 1, 0);
-  std::vector<std::size_t> row_at(static_cast<std::size_t>(g.rows) + 1, 0);  // pieces a row
+  // Pieces a row, for the row scan below (not when only counting: the estimates' path).
+  std::vector<std::size_t> row_at(out != nullptr ? static_cast<std::size_t>(g.rows) + 1 : 0, 0);
   double work = static_cast<double>(points.size());
   std::size_t pieces = 0;
   for (std::size_t i = 0; i < edges.size(); ++i) {
     ForEachPiece(g, edges[i], i, [&](const Piece&, const PieceCols& pc, int64_t row) {
       ++pieces;
-      ++row_at[static_cast<std::size_t>(row) + 1];
+      if (out != nullptr) ++row_at[static_cast<std::size_t>(row) + 1];
       work += 1 + static_cast<double>(pc.c1 - pc.c0 + 1);
       if (over(work)) return;
       for (int64_t c = pc.c0; c <= pc.c1; ++c) ++entries[g.Cell(row, c)];

@@ -8,17 +8,12 @@
 
 #include "support/cli_runner.h"
 #include "support/expect_error.h"
+#include "support/files.h"
 
 namespace niwa {
 namespace {
 
 
-std::string ReadAll(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
 
 TEST(SwayCli, StatsHasTheCounts) {
   CliResult r = RunNiwa({"tree", "sway", "--preset", "sakura-thesis", "--years", "5", "--wind", "10",
@@ -43,12 +38,12 @@ TEST(SwayCli, WritesCsvAndSvg) {
   CliResult r = RunNiwa({"tree", "sway", "--preset", "binary", "--years", "6", "--duration", "1",
                       "--dt", "0.05", "--tips", "2", "--csv", csv, "--svg", svg});
   ASSERT_EQ(r.code, 0) << r.err;
-  std::string text = ReadAll(csv);
+  std::string text = testing::Slurp(csv);
   EXPECT_EQ(text.rfind("time,node,x,y,z\n", 0), 0u);
   std::size_t lines = 0;
   for (char c : text) lines += c == '\n';
   EXPECT_EQ(lines, 1u + 2u * 21u);  // header + 2 tips × (t = 0 and 20 steps)
-  std::string plot = ReadAll(svg);
+  std::string plot = testing::Slurp(svg);
   EXPECT_NE(plot.find("<svg"), std::string::npos);
   EXPECT_NE(plot.find("<polyline"), std::string::npos);
   std::remove(csv.c_str());

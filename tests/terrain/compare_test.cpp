@@ -12,6 +12,7 @@
 #include "terrain/contour_io.h"
 #include "terrain/seeds.h"
 #include "terrain/terrain_run.h"
+#include "support/files.h"
 
 namespace niwa {
 namespace {
@@ -101,8 +102,7 @@ TEST(TerrainCompare, RealDemAndItsContour) {
 }
 
 TEST(TerrainCompare, BuiltinJacksboroIsTheCheckedInContour) {
-  std::ifstream in(kData + "jacksboro_800.json");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = testing::Slurp(kData + "jacksboro_800.json");
   Result<terrain::SeedFile> file = terrain::ParseContourJson(text);
   ASSERT_TRUE(file.ok());
   Result<terrain::Ring> builtin = terrain::BuiltinSeed("jacksboro");

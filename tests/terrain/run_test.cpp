@@ -13,14 +13,12 @@
 #include "terrain/terrain_params.h"
 #include "terrain/terrain_run.h"
 #include "terrain/terrain_state.h"
+#include "support/files.h"
 
 namespace niwa::terrain {
 namespace {
 
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using testing::Slurp;
 
 TerrainState State(const char* builtin, const char* preset, int seed, int res) {
   TerrainState s;

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli_runner.h"
+#include "support/files.h"
 
 namespace niwa {
 namespace {
@@ -58,8 +59,7 @@ TEST(TerrainCli, ShrinkTracesTheFigureAndRefusesBadSteps) {
   ASSERT_EQ(j["steps"].size(), 4u);
   EXPECT_EQ(j["steps"][0]["rings"], 2);  // the neck is narrower than 2d: two islands at once
   EXPECT_GT(j["steps"][0]["raw_self_intersections"].get<int>(), 0);
-  std::ifstream in(svg);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = testing::Slurp(svg);
   EXPECT_NE(text.find("class=\"ring\""), std::string::npos);
   const std::string never = ::testing::TempDir() + "terrain_shrink_never.svg";
   std::remove(never.c_str());
