@@ -135,7 +135,8 @@ await runBrowserTest(async (server, browser) => {
   await waitReady(page, 0, 100);
   const reloaded = await page.textContent('#stats');
   check('reloading the URL gives the same stats', statsWithoutTime(reloaded) === statsWithoutTime(edited), reloaded);
-  check('reloading keeps the hash (camera included)', (await page.evaluate(() => location.hash)) === editedHash);
+  const reloadedHash = await page.evaluate(() => location.hash);
+  check('reloading keeps the hash (camera included)', reloadedHash === editedHash, `${reloadedHash} / before ${editedHash}`);
   await page.screenshot({ path: path.join(ARTIFACTS, 'features-edited.png') });
 
   // 3. Year scrubber: another age shows another tree (equal to the CLI at that age); the hash keeps

@@ -242,6 +242,9 @@ function cameraMoved() {
   cameraTimer = setTimeout(writeHash, 400);
 }
 
+let rendererStarting = true;  // until startRenderer has a renderer or has failed
+let pendingTree = null;        // the tree that came before the renderer (installed once it is up)
+
 async function startRenderer() {
   try {
     frame = new Frame(ui.canvas, { camera, what: 'the tree', request: () => requestFrame() });
@@ -263,6 +266,13 @@ async function startRenderer() {
     setHooks({ drawing: 'off' });  // no frames will come (tests stop waiting for them)
     notices.set('webgl', `Cannot draw: ${e.message}`);
   }
+  rendererStarting = false;
+  // A tree that came while WebGL started goes on now; the link gains the camera (cam=).
+  const waiting = pendingTree;
+  pendingTree = null;
+  if (waiting && renderer) installTree(waiting);
+  else if (waiting) giveBackTree(waiting);
+  writeHash();
 }
 
 // ---------------------------------------------------------------- state
@@ -424,6 +434,37 @@ worker.on('progress', (msg) => {
   ui.progress.textContent = msg.year < msg.years ? `growing: year ${msg.year} of ${msg.years}` : 'building mesh';
 });
 
+// Once on the GPU (or dropped), the mesh's buffers, its textures' pixels and the hybrid atlas
+// (painted at install) go back for the worker's next tree to fill; nothing on the page reads
+// them after (the renderer keeps copies of what it keeps).
+function giveBackTree(msg) {
+  const { bark, leaves, flowers } = msg.mesh;
+  worker.recycle({ bark, leaves, flowers, ...treeExtras(msg) });
+}
+
+// Puts a grown tree on the renderer (framing the camera on it when asked).
+function installTree(msg) {
+  const installed = renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid);
+  // A big mesh is installed a few tasks later (uploaded in parts): a draw list that arrives
+  // before then finds no hybrid tree and is dropped, so the view is asked for again once the
+  // tree is in place.
+  const later = renderer.uploading;
+  installed.then((done) => {
+    giveBackTree(msg);
+    if (done) governor.reset();  // another tree: its frames cost what they cost
+    if (done && later) requestView();
+    requestFrame();
+  });
+  renderer.leafLength = Number(panel.values().leaf_size) / 100 || 0.05;
+  lastBounds = msg.stats.bounds;
+  if (frameNext) {
+    camera.frame(msg.stats.bounds, 1.12);  // room for the year bar over the view
+    frameNext = false;
+    writeHash();
+  }
+  requestFrame();
+}
+
 worker.on('tree', (msg) => {
   if (!controller.isLatest(msg)) return;
   controller.showWork(false);
@@ -439,33 +480,13 @@ worker.on('tree', (msg) => {
   table.showFullCounts(msg.mesh);
   // The worker's buffers reused (web/worker/transfer.js): what this reply's copy went into.
   setHooks({ buffersReused: msg.buffers?.reused ?? '', buffersFresh: msg.buffers?.fresh ?? '' });
-  // Once on the GPU (or dropped), the mesh's buffers, its textures' pixels and the hybrid atlas
-  // (painted at install) go back for the worker's next tree to fill; nothing on the page reads
-  // them after (the renderer keeps copies of what it keeps).
-  const { bark, leaves, flowers } = msg.mesh;
-  const giveBack = () => worker.recycle({ bark, leaves, flowers, ...treeExtras(msg) });
-  if (renderer) {
-    const installed = renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid);
-    // A big mesh is installed a few tasks later (uploaded in parts): a draw list that arrives
-    // before then finds no hybrid tree and is dropped, so the view is asked for again once the
-    // tree is in place.
-    const later = renderer.uploading;
-    installed.then((done) => {
-      giveBack();
-      if (done) governor.reset();  // another tree: its frames cost what they cost
-      if (done && later) requestView();
-      requestFrame();
-    });
-    renderer.leafLength = Number(panel.values().leaf_size) / 100 || 0.05;
-    lastBounds = msg.stats.bounds;
-    if (frameNext) {
-      camera.frame(msg.stats.bounds, 1.12);  // room for the year bar over the view
-      frameNext = false;
-      writeHash();
-    }
-    requestFrame();
+  if (renderer) installTree(msg);
+  else if (rendererStarting) {
+    // WebGL still starting (a slow first shader compile): the tree waits for it, the last one only.
+    if (pendingTree) giveBackTree(pendingTree);
+    pendingTree = msg;
   } else {
-    giveBack();
+    giveBackTree(msg);
   }
   hybridOn = Boolean(msg.hybrid);
   viewInFlight = false;
