@@ -65,26 +65,52 @@ std::vector<Ring> CountedUnion(const Ring& ring, ShrinkCounts* budget, ShrinkCou
   return out;
 }
 
-// A perturbed ring made simple: as is, untwisted (§4.4), or by the positive-winding union, whose
-// sweep counts against `budget` (issue 34: the perturbation's unions were not counted, so a spiral
-// strip at d = 0.5 counted 0.16 s of work and took 5.4 s). Empty with budget->stopped past it.
+// A pair of rings' nesting check beyond its sweep: the edges' copy and sort and the point tests,
+// about 19 ns an edge of the two (a 3,000-tooth comb's 9 M pairs of 12-edge rings took 4.2 s,
+// native release): 0.6 of a counted test (30 ns) an edge.
+constexpr double kSweepWorkPerEdgePair = 0.6;
+
+// The sweep work `budget` leaves (polygon.h SweepWork), and that work charged back to it.
+SweepWork SweepWorkLeft(const ShrinkCounts& budget) {
+  SweepWork w;
+  if (budget.max_sweep_tests >= 0)
+    w.max_tests = std::max(0.0, budget.max_sweep_tests - budget.sweep_tests);
+  return w;
+}
+void ChargeSweepWork(const SweepWork& w, ShrinkCounts* budget) {
+  budget->sweep_tests += w.tests;
+  if (w.stopped) budget->stopped = true;
+}
+
+// A perturbed ring made simple: as is, untwisted (§4.4), or by the positive-winding union. Its
+// simplicity checks, untwisting and unions count against `budget` (issue 34: the perturbation's
+// unions were not counted, so a spiral strip at d = 0.5 counted 0.16 s of work and took 5.4 s;
+// the checks and the untwisting's crossings, quadratic for a ring folded on itself, neither).
+// Empty with budget->stopped past it.
 std::vector<Ring> MakeSimple(const Ring& ring, const TerrainParams& p, GrowCounts* counts,
                              ShrinkCounts* budget) {
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<Ring> out;
   Ring r = Normalise(ring);
-  if (r.size() >= 3 && IsSimple(ToGrid(r))) {
+  SweepWork check = SweepWorkLeft(*budget);
+  const bool simple = r.size() >= 3 && IsSimple(ToGrid(r), &check);
+  ChargeSweepWork(check, budget);
+  if (budget->stopped) return {};
+  if (simple) {
     out.push_back(r);
   } else {
     const int method = p.GetInt(P::kLoopMethod);
     const int threshold = method == 1 ? p.GetInt(P::kLoopFaces) : p.GetInt(P::kLoopRun);
     int removed = 0;
-    Ring u = Normalise(UntwistRing(Snap(ring), method, threshold, &removed));
+    SweepWork untwist = SweepWorkLeft(*budget);
+    Ring u = Normalise(UntwistRing(Snap(ring), method, threshold, &removed, &untwist));
     // The cut must keep the ring's body: loop removal deletes from a crossing to its twin in walk
     // order, and where the perturbation pinches a deep narrow valley shut that can be the large
     // side (the valleys seed lost 490 of 496 points so). An untwisted ring with less than half the
     // area of the positive-winding union of the same ring cut the wrong side; the union is kept.
-    bool body_kept = u.size() >= 3 && IsSimple(ToGrid(u));
+    bool body_kept = !untwist.stopped && u.size() >= 3 && IsSimple(ToGrid(u), &untwist);
+    ChargeSweepWork(untwist, budget);
+    if (budget->stopped) return {};
     std::vector<Ring> pieces;
     ShrinkCounts union_counts;
     if (body_kept) {
@@ -148,10 +174,83 @@ Result<std::vector<Ring>> Perturb(const Ring& shrunk, const TerrainParams& p, do
   return MakeSimple(r, p, counts, budget);
 }
 
-bool Conflicts(const IRing& ring, const IRing& parent, const std::vector<IRing>& others) {
-  if (RingsIntersect(ring, parent) || !Inside(parent, ring[0])) return true;
-  for (const IRing& o : others) {
-    if (RingsIntersect(ring, o) || Inside(o, ring[0]) || Inside(ring, o[0])) return true;
+// The perturbed rings of one level's groups (one group per shrunk ring) on the grid, with their
+// boxes, for the nesting checks: a group's reach is the box of its perturbed rings and of its
+// shrunk ring, so a group put back to its shrunk ring stays inside it, and the groups sorted on
+// their reach's x find a ring's neighbours by a binary search (every ring was checked against
+// every other: quadratic in the siblings, 4 s for a 3,000-tooth comb).
+struct SiblingRings {
+  std::vector<std::vector<IRing>> rings;
+  std::vector<std::vector<IBox>> boxes;
+  std::vector<IBox> reach;
+  std::vector<int> by_x;  // group indices in the order of reach.x0
+  int64_t widest = 0;     // the widest reach (the search's margin)
+
+  void Set(std::size_t g, const std::vector<Ring>& group) {
+    rings[g].clear();
+    boxes[g].clear();
+    for (const Ring& r : group) {
+      rings[g].push_back(ToGrid(r));
+      boxes[g].push_back(BoxOf(rings[g].back()));
+    }
+  }
+};
+
+SiblingRings MakeSiblingRings(const std::vector<std::vector<Ring>>& groups,
+                              const std::vector<Ring>& shrunk) {
+  SiblingRings s;
+  s.rings.resize(groups.size());
+  s.boxes.resize(groups.size());
+  s.reach.resize(groups.size());
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    s.Set(g, groups[g]);
+    IBox r = BoxOf(ToGrid(shrunk[g]));
+    for (const IBox& b : s.boxes[g]) {
+      r.x0 = std::min(r.x0, b.x0);
+      r.y0 = std::min(r.y0, b.y0);
+      r.x1 = std::max(r.x1, b.x1);
+      r.y1 = std::max(r.y1, b.y1);
+    }
+    s.reach[g] = r;
+    s.widest = std::max(s.widest, r.x1 - r.x0);
+    s.by_x.push_back(static_cast<int>(g));
+  }
+  std::sort(s.by_x.begin(), s.by_x.end(), [&](int a, int b) {
+    const int64_t xa = s.reach[static_cast<std::size_t>(a)].x0;
+    const int64_t xb = s.reach[static_cast<std::size_t>(b)].x0;
+    return xa < xb || (xa == xb && a < b);
+  });
+  return s;
+}
+
+// Ring k of group `self` leaves its parent or meets a ring of another group (only rings whose
+// boxes meet can). Its sweeps and searches count against `work`, a pair of rings also its sort
+// and point tests; once work->stopped, the answer means nothing.
+bool Conflicts(const SiblingRings& s, std::size_t self, std::size_t k, const IRing& parent,
+               const EdgeIndex& parent_edges, SweepWork* work) {
+  const IRing& ring = s.rings[self][k];
+  const IBox& box = s.boxes[self][k];
+  const auto pair_work = [&](const IRing& o) {
+    return SweepOver(work, kSweepWorkPerEdgePair * static_cast<double>(ring.size() + o.size()));
+  };
+  // The parent: its edges near the ring's, and a point test (a pass over the parent).
+  if (SweepOver(work, kSweepWorkPerTry * static_cast<double>(parent.size()))) return true;
+  if (parent_edges.Meets(ring, work) || work->stopped || !Inside(parent, ring[0])) return true;
+  auto it = std::lower_bound(
+      s.by_x.begin(), s.by_x.end(), box.x0 - s.widest,
+      [&](int g, int64_t x) { return s.reach[static_cast<std::size_t>(g)].x0 < x; });
+  for (; it != s.by_x.end() && s.reach[static_cast<std::size_t>(*it)].x0 <= box.x1; ++it) {
+    const std::size_t j = static_cast<std::size_t>(*it);
+    if (SweepOver(work, kSweepWorkPerTry)) return true;
+    if (j == self || !BoxesMeet(s.reach[j], box)) continue;
+    for (std::size_t m = 0; m < s.rings[j].size(); ++m) {
+      if (!BoxesMeet(s.boxes[j][m], box)) continue;
+      const IRing& o = s.rings[j][m];
+      if (pair_work(o)) return true;
+      if (RingsIntersect(ring, o, work) || work->stopped || Inside(o, ring[0]) ||
+          Inside(ring, o[0]))
+        return true;
+    }
   }
   return false;
 }
@@ -331,8 +430,8 @@ Result<Ring> CheckSeed(const Ring& seed) {
   if (const double pairs = r.size() < 3 ? 0 : SimplicityPairs(grid); pairs > kMaxSimplicityPairs) {
     return Status::Error("contour", std::to_string(r.size()) +
                                         " points whose edges overlap on both axes: checking that "
-                                        "it is simple would test " + FormatCount(pairs) +
-                                        " pairs of edges, more than the " +
+                                        "it is simple would test " +
+                                        FormatCount(pairs) + " pairs of edges, more than the " +
                                         FormatCount(kMaxSimplicityPairs) +
                                         " allowed; simplify the contour");
   }
@@ -462,6 +561,12 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_s
     work.vertices_worked += static_cast<double>(parent.size());
     for (const Ring& r : shrunk) work.vertices_worked += static_cast<double>(r.size());
     if (shrunk.empty()) continue;
+    if (limits != nullptr) {
+      t.counts.truncated_by =
+          CheckTerrainPerturbation(parent, shrunk.size(), p, work, *limits, level);
+      if (!t.counts.truncated_by.empty()) break;
+    }
+    work.vertices_worked += PerturbationWork(shrunk.size(), p);
     // One RNG stream per contour, from the seed and the parent's index (order-independent).
     Pcg32 rng(rng_seed, static_cast<uint64_t>(at) * 2654435761ULL + 1);
     // The midpoint displacement's room: what the budget leaves after the contours kept and the
@@ -511,23 +616,30 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_s
         groups[i] = {shrunk[i]};
         ++t.counts.perturbations_reverted;
       }
-    while (changed) {
+    SiblingRings siblings = MakeSiblingRings(groups, shrunk);
+    const EdgeIndex parent_edges(gp);
+    SweepWork nesting;  // the checks below, counted as the unions are
+    if (limits != nullptr) nesting.max_tests = SweepTestsLeft(*limits, work, t.counts.sweep_tests);
+    while (changed && !nesting.stopped) {
       changed = false;
-      for (std::size_t i = 0; i < groups.size(); ++i) {
+      for (std::size_t i = 0; i < groups.size() && !nesting.stopped; ++i) {
         if (groups[i].size() == 1 && groups[i][0] == shrunk[i]) continue;
-        std::vector<IRing> others;
-        for (std::size_t j = 0; j < groups.size(); ++j)
-          if (j != i)
-            for (const Ring& r : groups[j]) others.push_back(ToGrid(r));
         bool bad = false;
-        for (const Ring& r : groups[i])
-          if (Conflicts(ToGrid(r), gp, others)) bad = true;
-        if (bad) {
+        for (std::size_t k = 0; k < siblings.rings[i].size(); ++k)
+          if (Conflicts(siblings, i, k, gp, parent_edges, &nesting)) bad = true;
+        if (bad && !nesting.stopped) {
           groups[i] = {shrunk[i]};
+          siblings.Set(i, groups[i]);
           ++t.counts.perturbations_reverted;
           changed = true;
         }
       }
+    }
+    t.counts.sweep_tests += nesting.tests;
+    if (nesting.stopped) {
+      t.counts.truncated_by =
+          SweepStoppedLine(parent, nesting.max_tests, *limits, level, max_levels);
+      break;
     }
     for (const std::vector<Ring>& g : groups) {
       for (const Ring& r : g) {

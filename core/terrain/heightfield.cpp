@@ -306,18 +306,22 @@ TerrainStats ComputeStats(const Terrain& t, const Heightfield* hf) {
     if (c.children.size() >= 2) ++s.splits;
     const IRing& g = grid[ci];
     if (!IsSimple(g) || TwiceArea(g) <= 0) ++s.self_intersections;
-    if (c.parent >= 0) {
-      const IRing& gp = grid[static_cast<std::size_t>(c.parent)];
-      if (RingsIntersect(g, gp) || !Inside(gp, g[0])) ++s.nesting_violations;
-    }
-    // Siblings: disjoint and not nested in each other.
-    for (int sib : c.children) {
-      for (int other : c.children) {
-        if (other <= sib) continue;
-        const IRing& a = grid[static_cast<std::size_t>(sib)];
-        const IRing& b = grid[static_cast<std::size_t>(other)];
-        if (RingsIntersect(a, b) || Inside(a, b[0]) || Inside(b, a[0])) ++s.nesting_violations;
+    // Children: inside this contour, apart from it.
+    if (!c.children.empty()) {
+      const EdgeIndex edges(g);
+      for (int child : c.children) {
+        const IRing& gc = grid[static_cast<std::size_t>(child)];
+        if (edges.Meets(gc) || !Inside(g, gc[0])) ++s.nesting_violations;
       }
+    }
+    // Siblings: disjoint and not nested in each other (only those whose boxes meet can fail).
+    std::vector<IBox> boxes;
+    boxes.reserve(c.children.size());
+    for (int sib : c.children) boxes.push_back(BoxOf(grid[static_cast<std::size_t>(sib)]));
+    for (const auto& [i, j] : MeetingBoxPairs(boxes)) {
+      const IRing& a = grid[static_cast<std::size_t>(c.children[static_cast<std::size_t>(i)])];
+      const IRing& b = grid[static_cast<std::size_t>(c.children[static_cast<std::size_t>(j)])];
+      if (RingsIntersect(a, b) || Inside(a, b[0]) || Inside(b, a[0])) ++s.nesting_violations;
     }
   }
   for (const Summit& sm : t.summits) hmax = std::max(hmax, sm.elevation);

@@ -76,10 +76,11 @@ std::vector<SeqItem> RemoveLoopsMethod2(const std::vector<SeqItem>& seq, int min
 }
 
 std::vector<SeqItem> RemoveLoopsMethod1(const std::vector<SeqItem>& seq, int min_segments,
-                                        int* removed) {
+                                        int* removed, SweepWork* work) {
   if (seq.empty()) return {};
   std::vector<SeqItem> s = Rotate(seq, StartIndex(seq, min_segments));
   while (true) {
+    if (SweepOver(work, kSweepWorkPerTry * static_cast<double>(s.size()))) return s;
     // An innermost loop: two occurrences of X with no other live label between them.
     bool changed = false;
     std::map<int, std::size_t> last;
@@ -116,11 +117,11 @@ std::vector<SeqItem> RemoveLoopsMethod1(const std::vector<SeqItem>& seq, int min
   return s;
 }
 
-Ring UntwistRing(const Ring& ring, int method, int threshold, int* removed) {
+Ring UntwistRing(const Ring& ring, int method, int threshold, int* removed, SweepWork* work) {
   const IRing g = ToGrid(ring);
   const std::size_t n = g.size();
-  const std::vector<std::pair<int, int>> pairs = SelfIntersections(g);
-  if (pairs.empty()) return ring;
+  const std::vector<std::pair<int, int>> pairs = SelfIntersections(g, 1 << 30, work);
+  if (pairs.empty() || (work != nullptr && work->stopped)) return ring;
   // Crossing points per edge, ordered along the edge.
   struct Hit {
     double t;
@@ -157,7 +158,7 @@ Ring UntwistRing(const Ring& ring, int method, int threshold, int* removed) {
       where.push_back(h.p);
     }
   }
-  const std::vector<SeqItem> out = method == 1 ? RemoveLoopsMethod1(seq, threshold, removed)
+  const std::vector<SeqItem> out = method == 1 ? RemoveLoopsMethod1(seq, threshold, removed, work)
                                                : RemoveLoopsMethod2(seq, threshold, removed);
   Ring result;
   for (const SeqItem& it : out) result.push_back(where[static_cast<std::size_t>(it.id)]);

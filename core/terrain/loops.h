@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "terrain/contour.h"
+#include "terrain/polygon.h"
 
 namespace niwa::terrain {
 
@@ -24,11 +25,15 @@ std::vector<SeqItem> RemoveLoopsMethod2(const std::vector<SeqItem>& seq, int min
 // Method 1 on a closed sequence: repeatedly take an innermost loop X..X (no other intersection
 // inside); if its face has fewer than min_segments segments, collapse it to X. Same start as
 // method 2. Loops of larger faces are kept (their X stays an intersection).
+// Each pass is a walk of the sequence (one per loop found: n·k for k loops); with `work`, counted
+// (polygon.h SweepWork) and given up past its most.
 std::vector<SeqItem> RemoveLoopsMethod1(const std::vector<SeqItem>& seq, int min_segments,
-                                        int* removed);
+                                        int* removed, SweepWork* work = nullptr);
 
 // A ring with its self-intersections inserted and loops removed by the method (1 or 2); the
-// result may still be non-simple (the caller checks). *removed counts the loops cut.
-Ring UntwistRing(const Ring& ring, int method, int threshold, int* removed);
+// result may still be non-simple (the caller checks). *removed counts the loops cut. With `work`,
+// its sweep and walks are counted; past its most, work->stopped and the result means nothing.
+Ring UntwistRing(const Ring& ring, int method, int threshold, int* removed,
+                 SweepWork* work = nullptr);
 
 }  // namespace niwa::terrain

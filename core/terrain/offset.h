@@ -47,10 +47,9 @@ struct ShrinkCounts {
 // counted test (terrain_budget.cpp). Counted as the points are found, so a shape whose offset
 // path crosses itself millions of times stops before their pieces are made.
 inline constexpr double kSweepWorkPerSplit = 200;
-// And a pair of segments the split sweep tries (their x ranges overlap), most rejected on y: a few
-// ns. Counted too, so edges stacked across one x range (a comb turned on its side, whose pairs are
-// quadratic) stop at the budget.
-inline constexpr double kSweepWorkPerTry = 0.1;
+// And a pair of segments the split sweep tries (polygon.h kSweepWorkPerTry) is counted too, so
+// edges stacked across one x range (a comb turned on its side, whose pairs are quadratic) stop at
+// the budget.
 
 // The join point P of Fig 7 for a reflex vertex V with left unit normals n1, n2 of its edges.
 Vec2 CappedJoinPoint(const Vec2& v, const Vec2& n1, const Vec2& n2, double d, double c);

@@ -115,7 +115,8 @@ std::vector<std::pair<int, int>> SelfIntersectionsBruteForce(const IRing& ring) 
   return out;
 }
 
-std::vector<std::pair<int, int>> SelfIntersections(const IRing& ring, int max_pairs) {
+std::vector<std::pair<int, int>> SelfIntersections(const IRing& ring, int max_pairs,
+                                                   SweepWork* work) {
   std::vector<std::pair<int, int>> out;
   const std::size_t n = ring.size();
   std::vector<std::size_t> order(n);
@@ -132,9 +133,11 @@ std::vector<std::pair<int, int>> SelfIntersections(const IRing& ring, int max_pa
     const int64_t yhi = std::max(ring[i].y, ring[(i + 1) % n].y);
     for (std::size_t t = s + 1; t < n && lo(order[t]) <= end; ++t) {
       const std::size_t j = order[t];
+      if (SweepOver(work, kSweepWorkPerTry)) return out;
       if (std::max(ring[j].y, ring[(j + 1) % n].y) < ylo ||
           std::min(ring[j].y, ring[(j + 1) % n].y) > yhi)
         continue;
+      if (SweepOver(work, 1.0)) return out;
       if (EdgesConflict(ring, i, j)) {
         out.push_back({static_cast<int>(std::min(i, j)), static_cast<int>(std::max(i, j))});
         if (static_cast<int>(out.size()) >= max_pairs) return out;
@@ -145,7 +148,7 @@ std::vector<std::pair<int, int>> SelfIntersections(const IRing& ring, int max_pa
   return out;
 }
 
-bool IsSimple(const IRing& ring) {
+bool IsSimple(const IRing& ring, SweepWork* work) {
   if (ring.size() < 3) return false;
   for (std::size_t i = 0; i < ring.size(); ++i)
     if (ring[i] == ring[(i + 1) % ring.size()]) return false;
@@ -153,7 +156,7 @@ bool IsSimple(const IRing& ring) {
   IRing sorted = ring;
   std::sort(sorted.begin(), sorted.end());
   if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
-  return SelfIntersections(ring, 1).empty();
+  return SelfIntersections(ring, 1, work).empty() && !(work != nullptr && work->stopped);
 }
 
 double SweepPairs(const IRing& ring, bool along_y) {
@@ -183,7 +186,7 @@ bool IsSimpleEitherAxis(const IRing& ring) {
   return IsSimple(turned);
 }
 
-bool RingsIntersect(const IRing& a, const IRing& b) {
+bool RingsIntersect(const IRing& a, const IRing& b, SweepWork* work) {
   // Concatenated edges, sorted on x, tested only across the two rings.
   struct Edge {
     IPoint p, q;
@@ -201,11 +204,80 @@ bool RingsIntersect(const IRing& a, const IRing& b) {
   for (std::size_t s = 0; s < edges.size(); ++s) {
     const int64_t end = std::max(edges[s].p.x, edges[s].q.x);
     for (std::size_t t = s + 1; t < edges.size() && lo(edges[t]) <= end; ++t) {
+      if (SweepOver(work, kSweepWorkPerTry)) return false;
       if (edges[t].owner == edges[s].owner) continue;
+      if (SweepOver(work, 1.0)) return false;
       if (SegmentsIntersect(edges[s].p, edges[s].q, edges[t].p, edges[t].q)) return true;
     }
   }
   return false;
+}
+
+EdgeIndex::EdgeIndex(const IRing& ring) {
+  const std::size_t n = ring.size();
+  edges_.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const IPoint& p = ring[i];
+    const IPoint& q = ring[(i + 1) % n];
+    edges_.push_back({std::min(p.x, q.x), std::max(p.x, q.x), p, q});
+    widest_ = std::max(widest_, edges_.back().hi - edges_.back().lo);
+  }
+  std::sort(edges_.begin(), edges_.end(), [](const Edge& a, const Edge& b) {
+    return a.lo < b.lo || (a.lo == b.lo && (a.p < b.p || (a.p == b.p && a.q < b.q)));
+  });
+}
+
+bool EdgeIndex::Meets(const IRing& other, SweepWork* work) const {
+  const std::size_t n = other.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const IPoint& p = other[i];
+    const IPoint& q = other[(i + 1) % n];
+    const int64_t lo = std::min(p.x, q.x), hi = std::max(p.x, q.x);
+    if (SweepOver(work, kSweepWorkPerTry)) return false;  // the search
+    auto it = std::lower_bound(edges_.begin(), edges_.end(), lo - widest_,
+                               [](const Edge& e, int64_t x) { return e.lo < x; });
+    for (; it != edges_.end() && it->lo <= hi; ++it) {
+      if (SweepOver(work, kSweepWorkPerTry)) return false;
+      if (it->hi < lo) continue;
+      if (SweepOver(work, 1.0)) return false;
+      if (SegmentsIntersect(p, q, it->p, it->q)) return true;
+    }
+  }
+  return false;
+}
+
+IBox BoxOf(const IRing& ring) {
+  IBox b;
+  if (ring.empty()) return b;
+  b = {ring[0].x, ring[0].y, ring[0].x, ring[0].y};
+  for (const IPoint& q : ring) {
+    b.x0 = std::min(b.x0, q.x);
+    b.y0 = std::min(b.y0, q.y);
+    b.x1 = std::max(b.x1, q.x);
+    b.y1 = std::max(b.y1, q.y);
+  }
+  return b;
+}
+
+std::vector<std::pair<int, int>> MeetingBoxPairs(const std::vector<IBox>& boxes) {
+  std::vector<int> order(boxes.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    const int64_t xa = boxes[static_cast<std::size_t>(a)].x0;
+    const int64_t xb = boxes[static_cast<std::size_t>(b)].x0;
+    return xa < xb || (xa == xb && a < b);
+  });
+  std::vector<std::pair<int, int>> out;
+  for (std::size_t s = 0; s < order.size(); ++s) {
+    const IBox& a = boxes[static_cast<std::size_t>(order[s])];
+    for (std::size_t t = s + 1;
+         t < order.size() && boxes[static_cast<std::size_t>(order[t])].x0 <= a.x1; ++t) {
+      if (BoxesMeet(a, boxes[static_cast<std::size_t>(order[t])]))
+        out.push_back({std::min(order[s], order[t]), std::max(order[s], order[t])});
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 bool Inside(const IRing& ring, const IPoint& p) {

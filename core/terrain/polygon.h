@@ -41,13 +41,35 @@ double Perimeter(const Ring& ring);
 
 // Closed segments ab and cd share at least one point.
 bool SegmentsIntersect(const IPoint& a, const IPoint& b, const IPoint& c, const IPoint& d);
+// The work of the sweeps below counted against a budget, in offset.h ShrinkCounts::sweep_tests's
+// units (a pair tried kSweepWorkPerTry, an exact test 1): past max_tests (≥ 0) a sweep stops at
+// once with `stopped`, and its answer means nothing (the caller stops too). The grow counts the
+// perturbation's checks so (issue 34: they were the last uncounted sweeps of a grow).
+struct SweepWork {
+  double tests = 0;
+  double max_tests = -1;
+  bool stopped = false;
+};
+// A pair of segments a sweep tries (their x ranges overlap), most rejected on y: a few ns.
+inline constexpr double kSweepWorkPerTry = 0.1;
+// Adds `amount` to `work` (when counted); true once past its most (then work->stopped).
+inline bool SweepOver(SweepWork* work, double amount) {
+  if (work == nullptr) return false;
+  work->tests += amount;
+  if (work->max_tests < 0 || work->tests <= work->max_tests) return false;
+  work->stopped = true;
+  return true;
+}
+
 // Index pairs (i, j), i < j, of ring edges (edge i = p_i -> p_{i+1}) that meet other than at the
-// shared vertex of two neighbouring edges. A sort on x prunes the pairs.
-std::vector<std::pair<int, int>> SelfIntersections(const IRing& ring, int max_pairs = 1 << 30);
+// shared vertex of two neighbouring edges. A sort on x prunes the pairs. With `work`, counted
+// (and stopped past its most).
+std::vector<std::pair<int, int>> SelfIntersections(const IRing& ring, int max_pairs = 1 << 30,
+                                                   SweepWork* work = nullptr);
 std::vector<std::pair<int, int>> SelfIntersectionsBruteForce(const IRing& ring);
 // At least 3 distinct points, no repeated vertex, no two edges meeting except neighbours at
 // their shared vertex, non-zero area.
-bool IsSimple(const IRing& ring);
+bool IsSimple(const IRing& ring, SweepWork* work = nullptr);
 // The pairs of edges SelfIntersections' sweep tries (their x ranges overlap; with along_y, their
 // y ranges), counted by a sort in O(n log n) without trying them.
 double SweepPairs(const IRing& ring, bool along_y);
@@ -61,8 +83,41 @@ bool IsSimpleEitherAxis(const IRing& ring);
 // million points tries a few million.
 double SimplicityPairs(const IRing& ring);
 constexpr double kMaxSimplicityPairs = 2e8;
-// Any edge of a meets any edge of b.
-bool RingsIntersect(const IRing& a, const IRing& b);
+// Any edge of a meets any edge of b. With `work`, counted (and stopped past its most).
+bool RingsIntersect(const IRing& a, const IRing& b, SweepWork* work = nullptr);
+
+// A ring's edges sorted on x, to test many small rings against one large one (a parent and its
+// children): RingsIntersect's answer, trying only the edges whose x ranges overlap (RingsIntersect
+// sorts both rings' edges for every pair: children × parent). Tested against it
+// (polygon_test.cpp).
+class EdgeIndex {
+ public:
+  explicit EdgeIndex(const IRing& ring);
+  // RingsIntersect(ring, other). With `work`, counted (and stopped past its most).
+  bool Meets(const IRing& other, SweepWork* work = nullptr) const;
+
+ private:
+  struct Edge {
+    int64_t lo, hi;  // x range
+    IPoint p, q;
+  };
+  std::vector<Edge> edges_;  // in the order of lo
+  int64_t widest_ = 0;       // the widest x range (the search's margin)
+};
+
+// A grid ring's bounding box (closed). Two rings whose boxes do not meet neither intersect nor
+// hold a point of each other, so the nesting checks of many rings test only the pairs whose boxes
+// meet (siblings by the thousand were quadratic in their count).
+struct IBox {
+  int64_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+};
+IBox BoxOf(const IRing& ring);
+inline bool BoxesMeet(const IBox& a, const IBox& b) {
+  return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1;
+}
+// The pairs (i, j), i < j, of `boxes` that meet, sorted: a sweep on x (O(n log n + pairs tried)).
+// Why not a library: a sort and a scan; tested against the all-pairs twin (polygon_test.cpp).
+std::vector<std::pair<int, int>> MeetingBoxPairs(const std::vector<IBox>& boxes);
 // Point strictly inside (crossing rule; points on the boundary count as outside).
 bool Inside(const IRing& ring, const IPoint& p);
 bool InsideDouble(const Ring& ring, const Vec2& p);  // for cell centres (not on the grid)

@@ -33,6 +33,10 @@ constexpr double kNsPerCell = 600, kNsPerGridVertex = 400;
 // ns on the combs of docs/budgets.md (native release, a loaded 2-core host), twice the slowest
 // (26 ns was seen under four parallel builds).
 constexpr double kNsPerSweepTest = 30;
+// A sample of a contour's Fourier perturbation (resampling, the forward and inverse FFT, the
+// collinear pass): 1.2-1.4 µs at nfft 1,024 (a 3,000-tooth comb's 6,000 rings of 12 points took
+// 7.3-8.1 s in it, native release, a loaded 2-core host), with a margin: 0.2 of a vertex's 10 µs.
+constexpr double kVerticesPerFftSample = 0.2;
 
 double Vertices(const Terrain& t) {
   double n = 0;
@@ -120,6 +124,32 @@ std::string CheckTerrainContour(const Ring& parent, double d0, const TerrainPara
                          kTerrainGrowChange + RaiseHint(l.seconds_limit));
   }
   return "";
+}
+
+double PerturbationWork(std::size_t rings, const TerrainParams& params) {
+  const int method = params.GetInt(TerrainParam::kMethod);
+  if (method != static_cast<int>(Method::kFourier) && method != static_cast<int>(Method::kImproved))
+    return 0;
+  return kVerticesPerFftSample * static_cast<double>(params.GetInt(TerrainParam::kNfft)) *
+         static_cast<double>(rings);
+}
+
+std::string CheckTerrainPerturbation(const Ring& parent, std::size_t rings,
+                                     const TerrainParams& params, const TerrainWork& work,
+                                     const TerrainGrowLimits& l, int level) {
+  const double fft = PerturbationWork(rings, params);
+  if (l.max_seconds < 0 || fft <= 0 ||
+      l.seconds_per_vertex * (work.vertices_worked + fft) <= l.max_seconds)
+    return "";
+  return TruncatedLine(
+      l.seconds_limit,
+      "at level " + std::to_string(level) + " of " +
+          std::to_string(params.GetInt(TerrainParam::kMaxLevels)),
+      "perturbing the " + FormatCount(static_cast<double>(rings)) + " contours inside one of " +
+          FormatCount(static_cast<double>(parent.size())) + " points (each resampled to nfft = " +
+          std::to_string(params.GetInt(TerrainParam::kNfft)) + ") would take more than " +
+          FormatSeconds(l.max_seconds),
+      kTerrainGrowChange + RaiseHint(l.seconds_limit));
 }
 
 double SweepTestsLeft(const TerrainGrowLimits& l, const TerrainWork& work, double so_far) {

@@ -44,6 +44,18 @@ std::string CheckTerrainContour(const Ring& parent, double d0, const TerrainPara
                                 const TerrainWork& work, const TerrainGrowLimits& limits,
                                 int level);
 
+// The perturbation of `rings` freshly shrunk rings beyond their vertices, in vertices' worth of
+// time (TerrainWork::vertices_worked): each is resampled to nfft equal edges for its Fourier
+// descriptor (§4.2, the fourier and improved methods), whatever its size, so a level of thousands
+// of small rings costs thousands of FFTs (issue 34: a 3,000-tooth comb took 8 s in them,
+// uncounted).
+double PerturbationWork(std::size_t rings, const TerrainParams& params);
+// Grow's check before perturbing them (after the shrink of `parent`): "" when it fits, else the
+// truncation line.
+std::string CheckTerrainPerturbation(const Ring& parent, std::size_t rings,
+                                     const TerrainParams& params, const TerrainWork& work,
+                                     const TerrainGrowLimits& limits, int level);
+
 // The union sweep edge tests the next shrink may make (offset.h ShrinkCounts::max_sweep_tests),
 // what the seconds left after the vertices worked and the tests made so far allow; −1: no limit.
 double SweepTestsLeft(const TerrainGrowLimits& limits, const TerrainWork& work,

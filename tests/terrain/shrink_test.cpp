@@ -33,6 +33,87 @@ TEST(Polygon, SelfIntersectionsMatchBruteForceOnRandomRings) {
   EXPECT_GT(nonsimple, 100);  // the oracle saw many crossing cases
 }
 
+IRing RandomRing(Pcg32* rng, int64_t x0, int64_t span) {
+  const int n = 3 + static_cast<int>(rng->NextU32() % 20);
+  IRing r;
+  for (int i = 0; i < n; ++i)
+    r.push_back({x0 + static_cast<int64_t>(rng->NextU32() % static_cast<uint32_t>(span)),
+                 static_cast<int64_t>(rng->NextU32() % static_cast<uint32_t>(span))});
+  return r;
+}
+
+// The nesting checks' pruning (issue 34: children against a large parent, siblings by the
+// thousand) gives the answers of the unpruned tests.
+TEST(Polygon, EdgeIndexMeetsAsRingsIntersect) {
+  Pcg32 rng(11, 5);
+  int met = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const IRing big = RandomRing(&rng, 0, 60);
+    const EdgeIndex index(big);
+    for (int k = 0; k < 4; ++k) {
+      const IRing small = RandomRing(&rng, static_cast<int64_t>(rng.NextU32() % 60), 15);
+      const bool want = RingsIntersect(small, big);
+      EXPECT_EQ(index.Meets(small), want) << "trial " << trial;
+      met += want;
+    }
+  }
+  EXPECT_GT(met, 200);  // both answers seen many times
+  EXPECT_LT(met, 1100);
+}
+
+TEST(Polygon, MeetingBoxPairsAsAllPairs) {
+  Pcg32 rng(12, 5);
+  for (int trial = 0; trial < 50; ++trial) {
+    std::vector<IBox> boxes;
+    const int n = static_cast<int>(rng.NextU32() % 60);
+    for (int i = 0; i < n; ++i) boxes.push_back(BoxOf(RandomRing(&rng, rng.NextU32() % 200, 20)));
+    std::vector<std::pair<int, int>> all;
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j)
+        if (BoxesMeet(boxes[static_cast<std::size_t>(i)], boxes[static_cast<std::size_t>(j)]))
+          all.push_back({i, j});
+    EXPECT_EQ(MeetingBoxPairs(boxes), all) << "trial " << trial;
+  }
+}
+
+// A counted sweep stops past its most, with `stopped`; without a most it only counts.
+TEST(Polygon, CountedSweepsStopPastTheirMost) {
+  // A comb turned on its side (simple): 400 teeth 990 long in x, so every pair of its long edges
+  // overlaps in x and the sweep along x tries them all.
+  const int64_t n = 400;
+  IRing comb = {{0, 0}, {1000, 0}};
+  for (int64_t i = 0; i < n; ++i) {
+    comb.push_back({1000, 4 * i + 2});
+    if (i + 1 < n) {
+      comb.push_back({10, 4 * i + 2});
+      comb.push_back({10, 4 * i + 4});
+      comb.push_back({1000, 4 * i + 4});
+    }
+  }
+  comb.push_back({0, 4 * (n - 1) + 2});
+  ASSERT_TRUE(IsSimple(comb));
+  SweepWork counted;
+  EXPECT_TRUE(IsSimple(comb, &counted));
+  EXPECT_FALSE(counted.stopped);
+  EXPECT_GT(counted.tests, kSweepWorkPerTry * 0.4 * n * n);
+  SweepWork tight;
+  tight.max_tests = 100;
+  SelfIntersections(comb, 1 << 30, &tight);
+  EXPECT_TRUE(tight.stopped);
+  EXPECT_LE(tight.tests, 101.0);
+  SweepWork meets;
+  meets.max_tests = 10;
+  IRing far = comb;  // the same x ranges, 100 km away in y: every pair tried, none meets
+  for (IPoint& q : far) q.y += 100000;
+  EXPECT_FALSE(EdgeIndex(comb).Meets(far));
+  EdgeIndex(comb).Meets(far, &meets);
+  EXPECT_TRUE(meets.stopped);
+  SweepWork rings;
+  rings.max_tests = 10;
+  RingsIntersect(comb, far, &rings);
+  EXPECT_TRUE(rings.stopped);
+}
+
 TEST(Polygon, SimplicityAndInsideOnKnownShapes) {
   EXPECT_TRUE(IsSimple(ToGrid(Square(0, 0, 10))));
   const Ring bowtie{{0, 0}, {10, 10}, {10, 0}, {0, 10}};
