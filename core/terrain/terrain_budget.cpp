@@ -149,7 +149,7 @@ std::string CheckTerrainPerturbation(const Ring& parent, std::size_t rings,
           FormatCount(static_cast<double>(parent.size())) + " points (each resampled to nfft = " +
           std::to_string(params.GetInt(TerrainParam::kNfft)) + ") would take more than " +
           FormatSeconds(l.max_seconds),
-      kTerrainGrowChange + RaiseHint(l.seconds_limit));
+      "lower nfft, raise d, or lower max_levels or the seed's points" + RaiseHint(l.seconds_limit));
 }
 
 double SweepTestsLeft(const TerrainGrowLimits& l, const TerrainWork& work, double so_far) {
