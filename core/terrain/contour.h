@@ -66,6 +66,7 @@ struct GrowCounts {
   int cleaned_points = 0;          // Fig 8 pre-clean: points dropped (short edges, acute angles)
   int holes_filled = 0;            // clockwise rings dropped by the union (holes)
   int dropped_rings = 0;           // rings the union could not make simple (never emitted)
+  int slivers_dropped = 0;         // grown rings under the area floor (generate.h kSliverArea)
   bool truncated = false;          // stopped at the level or vertex cap, or a budget
   double vertices_worked = 0;  // Σ vertices of shrunk contours and their children (budget work)
   double sweep_tests = 0;      // Σ edge tests of the shrinks' union sweeps (terrain_budget.h)

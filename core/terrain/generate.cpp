@@ -396,7 +396,54 @@ Vec2 PoleOfInaccessibility(const Ring& ring, double* radius) {
     w *= 0.25;
     h *= 0.25;
   }
-  if (best_r < 0) {  // degenerate: the centroid of the vertices
+  if (best_r < 0) {
+    // A thin or concave ring the grid missed (issue 31: an L-shaped top contour got its summit
+    // at the vertex centroid, outside it, and a flat top): the middle of the widest inside span
+    // of the scanlines halfway between two heights of its vertices (such a line meets the inside
+    // of any simple ring with area), then refined around it.
+    std::vector<double> ys;
+    for (const Vec2& v : ring) ys.push_back(v.y);
+    std::sort(ys.begin(), ys.end());
+    ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
+    const std::size_t n = ring.size();
+    const std::size_t step = std::max<std::size_t>(1, ys.size() / 256);
+    std::vector<double> xs;
+    for (std::size_t g = 0; g + 1 < ys.size(); g += step) {
+      const double y = 0.5 * (ys[g] + ys[g + 1]);
+      xs.clear();
+      for (std::size_t i = 0; i < n; ++i) {
+        const Vec2& a = ring[i];
+        const Vec2& b = ring[(i + 1) % n];
+        if ((a.y > y) != (b.y > y)) xs.push_back(a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y));
+      }
+      std::sort(xs.begin(), xs.end());
+      for (std::size_t i = 0; i + 1 < xs.size(); i += 2) {
+        const Vec2 q{0.5 * (xs[i] + xs[i + 1]), y};
+        if (!InsideDouble(ring, q)) continue;
+        const double r = RingDistance(ring, q);
+        if (r > best_r) {
+          best_r = r;
+          best = q;
+        }
+      }
+    }
+    for (int round = 0; best_r > 0 && round < 8; ++round) {
+      const double span = 4 * best_r / (round + 1);
+      const Vec2 at = best;
+      for (int j = 0; j <= k; ++j) {
+        for (int i = 0; i <= k; ++i) {
+          const Vec2 q{at.x - 0.5 * span + span * i / k, at.y - 0.5 * span + span * j / k};
+          if (!InsideDouble(ring, q)) continue;
+          const double r = RingDistance(ring, q);
+          if (r > best_r) {
+            best_r = r;
+            best = q;
+          }
+        }
+      }
+    }
+  }
+  if (best_r < 0) {  // degenerate (no area): the centroid of the vertices
     best = {0, 0};
     for (const Vec2& v : ring) best = {best.x + v.x, best.y + v.y};
     best = {best.x / static_cast<double>(ring.size()), best.y / static_cast<double>(ring.size())};
@@ -645,6 +692,10 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_s
       for (const Ring& r : g) {
         if (r.size() > kMaxContourVertices) {
           t.counts.truncated = true;
+          continue;
+        }
+        if (std::fabs(Area(r)) < kSliverAreaShare * d * d) {
+          ++t.counts.slivers_dropped;  // a sliver, not a peak: its parent may take the summit
           continue;
         }
         ContourNode node;

@@ -52,6 +52,13 @@ Ring RemoveCollinearToShare(const Ring& ring, double d0, double long_frac, doubl
 // search refined 12 times) and that circle's radius.
 Vec2 PoleOfInaccessibility(const Ring& ring, double* radius);
 
+// Grown rings smaller than kSliverAreaShare·d² (a square a tenth of d across) are dropped as
+// slivers, not kept as peaks with summits (issue 31: rings of 1e-4 m² left by the perturbation's
+// unions counted as peaks on jacksboro and on hand-drawn seeds). Such a ring is far below the
+// shrink's own reach (it would vanish at the next shrink by d) and its summit would rise
+// Δh·r/d ≈ 0 above it.
+inline constexpr double kSliverAreaShare = 0.01;
+
 struct TerrainGrowLimits;  // terrain_budget.h
 
 // Called before each contour is shrunk (or enlarged below the seed) with the level it grows (1, 2,

@@ -29,6 +29,7 @@ nlohmann::json TerrainStatsJson(const TerrainState& state, const Terrain& terrai
   j["slot_cells"] = hf.slot_cells;
   j["loops_removed"] = terrain.counts.loops_removed;
   j["perturbations_reverted"] = terrain.counts.perturbations_reverted;
+  j["slivers_dropped"] = terrain.counts.slivers_dropped;
   j["truncated"] = terrain.counts.truncated;
   if (!terrain.counts.truncated_by.empty()) j["truncated_by"] = terrain.counts.truncated_by;
   j["res"] = params.GetInt(TerrainParam::kRes);

@@ -159,6 +159,7 @@ TEST(Grow, ValleysSeedKeepsManyValleysUpTheMountain) {
 }
 
 TEST(Grow, NoSelfIntersectionOrNestingViolationForEverySeedAndMethod) {
+  int sliver_seen = 0;
   for (const SeedInfo& info : BuiltinSeeds()) {
     Result<Ring> seed = BuiltinSeed(info.name);
     ASSERT_TRUE(seed.ok());
@@ -173,6 +174,16 @@ TEST(Grow, NoSelfIntersectionOrNestingViolationForEverySeedAndMethod) {
         EXPECT_EQ(s.nesting_violations, 0) << info.name << " " << method;
         EXPECT_GE(s.levels, 2) << info.name << " " << method;
         EXPECT_FALSE(t->counts.truncated);
+        // No sliver kept as a contour (issue 31: jacksboro's improved grow kept rings of
+        // 2.3e-5 and 0.06 m² at d = 70 as peaks); every summit inside its top contour.
+        for (std::size_t i = 1; i < t->contours.size(); ++i)
+          EXPECT_GE(std::fabs(Area(t->contours[i].ring)), kSliverAreaShare * info.d * info.d)
+              << info.name << " " << method << " contour " << i;
+        for (const Summit& sm : t->summits)
+          EXPECT_TRUE(
+              InsideDouble(t->contours[static_cast<std::size_t>(sm.contour)].ring, sm.position))
+              << info.name << " " << method << " summit of contour " << sm.contour;
+        sliver_seen += t->counts.slivers_dropped;
         // Same input, same contours.
         Result<Terrain> again = Grow(*seed, p, rng_seed);
         ASSERT_TRUE(again.ok());
@@ -182,6 +193,7 @@ TEST(Grow, NoSelfIntersectionOrNestingViolationForEverySeedAndMethod) {
       }
     }
   }
+  EXPECT_GT(sliver_seen, 0);  // the floor met slivers (it is not idle on these seeds)
 }
 
 TEST(Grow, HeightfieldLevelSetsLieOnTheirContours) {
@@ -233,6 +245,29 @@ std::vector<int> Ids(const std::vector<SeqItem>& s) {
   auto one = std::find(out.begin(), out.end(), 1);
   if (one != out.end()) std::rotate(out.begin(), one, out.end());
   return out;
+}
+
+// Issue 31: a summit inside its top contour however thin or concave (the grid of the pole search
+// can miss a thin L entirely; its vertex centroid, the old fallback, lies outside it).
+TEST(Grow, EverySummitLiesInsideItsTopContour) {
+  const Ring thin_l = {{0, 0}, {100, 0}, {100, 0.5}, {0.5, 0.5}, {0.5, 100}, {0, 100}};
+  double r = 0;
+  Vec2 pole = PoleOfInaccessibility(thin_l, &r);
+  EXPECT_TRUE(InsideDouble(thin_l, pole)) << pole.x << ", " << pole.y;
+  EXPECT_GT(r, 0.25);  // the L's corner: 0.5 / (1 + 1/√2) = 0.293
+  EXPECT_LT(r, 0.3);
+  // Thin rotated crosses, zigzags and Ls: the pole inside each, at least half the best radius a
+  // fine brute-force grid finds.
+  for (int t = 0; t < 40; ++t) {
+    const double a = 0.15 * t, c = std::cos(a), sn = std::sin(a), w = 0.05 + 0.02 * (t % 5);
+    const double h = 60.0 + t;
+    Ring ring;
+    const std::vector<Vec2> shape = {{0, 0}, {80, 0}, {80, w}, {w, w}, {w, h}, {0, h}};
+    for (const Vec2& v : shape) ring.push_back({c * v.x - sn * v.y + t, sn * v.x + c * v.y});
+    pole = PoleOfInaccessibility(ring, &r);
+    ASSERT_TRUE(InsideDouble(ring, pole)) << "shape " << t;
+    EXPECT_GT(r, 0.25 * w) << "shape " << t;
+  }
 }
 
 TEST(Loops, Fig18SequenceWithBothMethods) {

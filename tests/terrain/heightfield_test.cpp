@@ -104,8 +104,8 @@ TEST(Heightfield, ContinuousLevelSetsOnContoursNoPits) {
   }
 }
 
-// valleys with the improved method had 11-18 pits before the band fill (RNG seeds 1-5) and 1-3
-// after it: single cells of a band C whose 8 neighbours all lie inside a child of C (a slot of C's
+// valleys with the improved method had 11-18 pits before the band fill (RNG seeds 1-5; 10-18
+// since slivers are dropped, issue 31) and 1-3 after it: single cells of a band C whose 8 neighbours all lie inside a child of C (a slot of C's
 // band narrower than a cell). AssignSubCellSlots gives such islands to the child first; what it
 // changes is exactly what its sweep twin changes on the painted map, only moves cells into their
 // band's subtree, and no pit is left; the fill still raises and never lowers.
@@ -118,7 +118,7 @@ TEST(Heightfield, SubCellSlotsGoToTheChildAndLeaveNoPitOnValleys) {
     EXPECT_EQ(raw.cells_filled, 0u);
     EXPECT_EQ(raw.slot_cells, 0u);
     const TerrainStats before = ComputeStats(t, &raw), after = ComputeStats(t, &hf);
-    EXPECT_GE(before.pits, 11) << rng;
+    EXPECT_GE(before.pits, 10) << rng;
     EXPECT_EQ(after.pits, 0) << rng;
     std::vector<int> twin = raw.band;
     EXPECT_EQ(AssignSubCellSlotsBySweeps(raw.width, raw.height, t, &twin), hf.slot_cells) << rng;
