@@ -138,6 +138,10 @@ await runBrowserTest(async (server, browser) => {
     check('100 years: a tree, stopped at the page budget and named', d.status === 'ready' && Number(d.internodes) > 0 &&
       /^page (internode|memory) budget: stopped in year \d+ of 100: (the tree reached 400000 internodes|more internodes would need more than 1 GB); lower years/.test(progress),
       `${d.internodes} internodes, year ${d.year}: "${progress}"`);
+    const bar = await page.evaluate(() => ({ text: document.getElementById('year-text').textContent,
+      max: document.getElementById('year').max }));
+    check('100 years: the year bar ends at the year the tree reached', bar.text === `${d.year} of 100 (stopped)` &&
+      bar.max === d.year, `"${bar.text}", max ${bar.max}, year ${d.year}`);
     await shoot(page, 'budget-sakura-100.png');
     if (PARTS.includes('4')) {
       // 4a. The tree is at the page budget: its .glb (with the tree and mesh held) is not.

@@ -171,6 +171,18 @@ await runBrowserTest(async (server, browser) => {
   const staleText = await page.textContent('#stale');
   check('the old tree stays marked stale after the error', (await box(page, '#stale')).visible && /stale/.test(staleText), staleText);
   await page.locator('.layout').screenshot({ path: path.join(ARTIFACTS, 'ux-error-stale.png') });
+  // A valid Years typed while alpha_t is still bad is refused too: the year bar goes back to the
+  // tree on screen (it kept the refused age: "50 of 50" over a 15-year tree).
+  const barBefore = await page.textContent('#year-text');
+  const yearsBefore = await page.inputValue('#years');
+  const errorsBefore = await page.evaluate(() => document.documentElement.dataset.errors || '');
+  await page.fill('#years', String(Number(yearsBefore) + 3));
+  const barBack = await page.waitForFunction((before) => document.getElementById('year-text').textContent === before,
+    barBefore, { timeout: 15_000, polling: 50 }).then(() => true, () => false);
+  check('a refused edit leaves the year bar on the tree shown', barBack,
+    `"${await page.textContent('#year-text')}" (was "${barBefore}"; errors hook ${errorsBefore})`);
+  await page.fill('#years', yearsBefore);
+  await page.waitForFunction(() => document.documentElement.dataset.status === 'error', null, { timeout: TIMEOUT });
   let serial = await serialOf(page);
   await page.fill('#param-alpha_t', '0.7');
   await waitReady(page, serial, 100);

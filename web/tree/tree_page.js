@@ -73,6 +73,9 @@ const controller = new StudyController({
   onError: (msg, when) => {
     if (when === 'after') {
       if (treeSerial === 0) feedback.fresh();  // no tree on screen to call stale
+      // The year bar goes back to the tree on screen (it followed the refused Years: "50 of 50"
+      // over a 15-year tree); the field keeps what was typed, with its notice.
+      if (lastGood) showScrubber(Number(lastGood.state.years), shownYear);
       return false;
     }
     if (msg.control === 'motion') {  // no cheaper representation for this tree: full frames only
@@ -323,10 +326,15 @@ function fullYears() {
 function syncScrubber() {
   const n = fullYears();
   if (n === null) return;
-  ui.year.max = String(n);
   if (showYear !== null && showYear >= n) showYear = null;
-  ui.year.value = String(showYear ?? n);
-  ui.yearText.textContent = `${showYear ?? n} of ${n}`;
+  showScrubber(n, showYear ?? n);
+}
+
+// The year bar at `year` of a tree of `full` years.
+function showScrubber(full, year) {
+  ui.year.max = String(full);
+  ui.year.value = String(year);
+  ui.yearText.textContent = `${year} of ${full}`;
 }
 
 // kind: 'edit' (a committed change: new history entry; its stage is the earliest the edits since
@@ -477,6 +485,13 @@ worker.on('tree', (msg) => {
   // The limit that stopped the growth, named (max_internodes or the page's budget).
   ui.progress.textContent = msg.stats.truncated ? msg.stats.truncated_by || 'stopped at max_internodes' : '';
   shownYear = msg.stats.years;
+  // A tree stopped by a budget before its full age: the year bar ends at the year it reached
+  // (it read "50 of 50" over a tree stopped in year 28).
+  const full = fullYears();
+  if (showYear === null && full !== null && shownYear < full) {
+    showScrubber(shownYear, shownYear);
+    ui.yearText.textContent = `${shownYear} of ${full} (stopped)`;
+  }
   table.showFullCounts(msg.mesh);
   // The worker's buffers reused (web/worker/transfer.js): what this reply's copy went into.
   setHooks({ buffersReused: msg.buffers?.reused ?? '', buffersFresh: msg.buffers?.fresh ?? '' });
