@@ -81,6 +81,14 @@ await runBrowserTest(async (server, browser) => {
     check(`a bad file (${text}) is a notice naming the field, old tree kept`, d.stateFile === 'open-error' &&
       pattern.test(notice) && d.treeSerial === serial && (await page.evaluate(() => location.hash)) === hashBefore &&
       d.status === 'ready', `${d.stateFile}: ${JSON.stringify(notice)}`);
+    // ... and the line beside Open says so, in view (it said "Opened" of the file before).
+    const line = await page.evaluate(() => {
+      const el = document.getElementById('share-status');
+      const r = el.getBoundingClientRect();
+      return { text: el.textContent, inView: r.top >= 0 && r.bottom <= innerHeight };
+    });
+    check(`... and the line beside Open names the refusal, in view`, line.text.startsWith('Open state_file-bad.json refused: ') &&
+      pattern.test(line.text) && line.inView, JSON.stringify(line));
   }
   check('no console errors or page errors', problems.length === 0, problems.join(' | ').slice(0, 300));
 });

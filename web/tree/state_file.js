@@ -35,8 +35,13 @@ export function mountStateFile(ui, { worker, state, stem, onOpen, onError }) {
     const file = ui.input.files?.[0];
     ui.input.value = '';  // the same file can be opened again
     if (!file) return;
+    // The refusal is a notice and the line beside Open too (it went only to the panel's top,
+    // out of view, while this line still said "Opened" of an earlier file).
     const fail = (line) => {
       onError(`Open ${file.name}: ${line}`);
+      ui.status.textContent = `Open ${file.name} refused: ${line}`;
+      ui.status.classList.add('field-error');
+      ui.status.scrollIntoView?.({ block: 'nearest' });
       setHooks({ stateFile: 'open-error' });
     };
     if (file.size > MAX_STATE_BYTES) {
@@ -57,6 +62,7 @@ export function mountStateFile(ui, { worker, state, stem, onOpen, onError }) {
       return;
     }
     onOpen(reply.state);
+    ui.status.classList.remove('field-error');
     ui.status.textContent = `Opened ${file.name}`;
     setHooks({ stateFile: 'opened' });
   });
