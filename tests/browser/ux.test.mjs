@@ -251,7 +251,7 @@ await runBrowserTest(async (server, browser) => {
     let i = 0;
     const step = () => {
       i += 1;
-      range.value = String(3 + 0.05 * i);
+      range.value = String(600 + 5 * i);  // a log slider (0.01-100 cm): positions 605..750 of 1000
       range.dispatchEvent(new Event('input', { bubbles: true }));
       if (i < 30) setTimeout(step, 33); else resolve();
     };
@@ -265,6 +265,10 @@ await runBrowserTest(async (server, browser) => {
   await page.waitForTimeout(800);
   after = await dataset(page);
   const dragged = await page.inputValue('#param-D_high');
+  // Shoot length spans four decades: its slider is logarithmic (issue 32: a linear one put
+  // 0.01-1 cm in its first pixel). Position 750 of 1000 is 0.01·10^3 = 10 cm; the field's value
+  // puts the slider back where it belongs (1 cm: the middle).
+  check('a four-decade row has a log slider: position 750 is 10 cm', dragged === '10', `D_high ${dragged}`);
   const draggedNative = nativeStats([...BASE, '--set', `D_high=${dragged}`]);
   check('a slider drag sends at most 2 grows', Number(after.growRequests) - Number(before.growRequests) <= 2 && Number(after.growRequests) > Number(before.growRequests),
     `${Number(after.growRequests) - Number(before.growRequests)} grow requests for a ${dragMs} ms drag to D_high ${dragged} (${slider2.width.toFixed(0)} px slider); coalesced ${after.editsCoalesced || 0}`);
@@ -272,6 +276,9 @@ await runBrowserTest(async (server, browser) => {
     && after.internodes === String(draggedNative.internodes), `web ${after.internodes} native ${draggedNative.internodes} at D_high=${dragged}`);
 
   // ---- 6. Blow moves at once: the first pose is already in the gust (not in the still air before it).
+  await andWait(page, () => page.fill('#param-D_high', '1'));
+  const middle = await page.evaluate(() => document.getElementById('param-D_high').closest('.field').querySelector('.slider').value);
+  check('... and a typed 1 cm puts that slider in its middle', middle === '500', `position ${middle}`);
   await andWait(page, () => page.fill('#param-D_high', '3'));
   await snapshotCanvas(page, 'rest');
   await page.click('#wind');
