@@ -60,6 +60,20 @@ await runBrowserTest(async (server, browser) => {
   check('"Time 2 frames" shows the median ms per frame', /^hybrid: [\d.]+ ms per frame \(median of 2;/.test(text) && Number(d.frameMs) > 0, text);
   check('a hybrid frame takes less time than a full one', Number(d.frameMs) < fullTiming.median,
     `${Number(d.frameMs).toFixed(0)} ms vs ${fullTiming.median.toFixed(0)} ms (SwiftShader)`);
+  // While timing, the button is its Cancel: 200 frames asked, cancelled after the first few.
+  await page.fill('#frames', '200');
+  await page.click('#time');
+  await page.waitForFunction(() => document.documentElement.dataset.timing === 'running', null, { timeout: TIMEOUT, polling: 20 });
+  const cancelLabel = await page.textContent('#time');
+  await page.waitForTimeout(400);
+  await page.click('#time');
+  await page.waitForFunction(() => document.documentElement.dataset.timing === 'cancelled', null, { timeout: 60_000, polling: 50 });
+  d = await data(page);
+  const cancelledText = await page.textContent('#timing');
+  check('Time frames can be cancelled (the button is its Cancel while it runs)', cancelLabel === 'Cancel timing' &&
+    Number(d.timedFrames) < 200 && (await page.textContent('#time')) === 'Time 200 frames' &&
+    (Number(d.timedFrames) === 0 || /median of \d+, cancelled/.test(cancelledText)),
+    `label "${cancelLabel}", ${d.timedFrames} frames timed: ${cancelledText}`);
 
   // Orbiting asks the worker for the draw lists of the new view and keeps the camera in the hash.
   const serial = Number(d.viewSerial);

@@ -388,26 +388,40 @@ for (const client of treeClients) {
 // only = -1 times the ground alone (the frame's fixed cost), as drawGrove().
 // warmUp: draw one untimed frame first (false when the mode has just been drawn: a full-mode frame of
 // the grove is about 12 s on SwiftShader, so the grove test times one, right after the full-mode draws).
+// While it runs the button is its Cancel (a full-mode frame of the grove takes seconds on a CPU GL:
+// 20 of them ran 228 s with no way out, issue 32); a cancelled timing shows the frames it timed.
+let timingCancelled = false;
 async function timeFrames(frames = 20, only = undefined, warmUp = true) {
-  if (!renderer || hookValue('status') !== 'ready') return null;
+  if (!renderer || hookValue('status') !== 'ready' || hookValue('timing') === 'running') return null;
   setHooks({ timing: 'running' });
-  ui.time.disabled = true;
+  timingCancelled = false;
+  const label = ui.time.textContent;
+  ui.time.textContent = 'Cancel timing';
   const times = [];
   let drawn = null;
   for (let i = warmUp ? -1 : 0; i < frames; ++i) {
     await nextFrame();
+    if (timingCancelled) break;
     const start = performance.now();
     drawn = drawGrove(only);
     finishGpu(renderer.gl);
     if (i >= 0) times.push(performance.now() - start);
   }
+  ui.time.textContent = label;
+  if (timingCancelled && times.length === 0) {
+    ui.timing.textContent = 'timing cancelled before its first frame';
+    setHooks({ timing: 'cancelled', timedFrames: 0 });
+    requestFrame();
+    return null;
+  }
+  const cancelled = timingCancelled;
+  frames = times.length;
   times.sort((a, b) => a - b);
   const median = times.length % 2 ? times[(times.length - 1) / 2] : (times[times.length / 2 - 1] + times[times.length / 2]) / 2;
   timing = { mode: only === undefined ? mode : 'ground only', frames, median, min: times[0], max: times[times.length - 1], ...drawn };
-  ui.timing.textContent = `${timing.mode}: ${median.toFixed(1)} ms per frame (median of ${frames}; ` +
+  ui.timing.textContent = `${timing.mode}: ${median.toFixed(1)} ms per frame (median of ${frames}${cancelled ? ', cancelled' : ''}; ` +
     `${times[0].toFixed(1)}–${times[times.length - 1].toFixed(1)} ms), ${renderer.canvas.width}×${renderer.canvas.height} px`;
-  setHooks({ timing: 'done', frameMs: median.toFixed(2), timedMode: timing.mode, timedFrames: frames });
-  ui.time.disabled = false;
+  setHooks({ timing: cancelled ? 'cancelled' : 'done', frameMs: median.toFixed(2), timedMode: timing.mode, timedFrames: frames });
   if (only !== undefined) requestFrame();  // the whole grove back on screen
   else updateStats(drawn);
   window.grove.lastTiming = { ...timing, width: renderer.canvas.width, height: renderer.canvas.height, viewMs };
@@ -480,7 +494,14 @@ async function start() {
   ui.frames.addEventListener('input', () => {
     ui.time.textContent = `Time ${Math.max(1, Math.min(200, Number(ui.frames.value) || 20))} frames`;
   });
-  ui.time.addEventListener('click', () => timeFrames(Math.max(1, Math.min(200, Number(ui.frames.value) || 20))));
+  ui.time.addEventListener('click', () => {
+    if (hookValue('timing') === 'running') {
+      timingCancelled = true;
+      ui.time.textContent = 'Cancelling…';
+      return;
+    }
+    timeFrames(Math.max(1, Math.min(200, Number(ui.frames.value) || 20)));
+  });
   window.addEventListener('hashchange', () => {
     const { cam, wind: blowing } = readHash();
     if (cam) camera.fromHash(cam);
