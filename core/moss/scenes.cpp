@@ -171,7 +171,7 @@ MossScene WallsScene() {
   scene.name = "walls";
   scene.region_names = {"ground", "sunlit_face", "shaded_face", "other"};
   scene.description =
-      "figs 2.5/2.6: two facing walls 1 m apart on humus; with --set sun_altitude=45 one face is "
+      "figs 2.5/2.6: two facing walls 1 m apart on humus; with sun_altitude 45 one face is "
       "sunlit, the other lit only by bounces";
   AddSceneGrid(
       &scene, {-1, 0, -1}, {0, 0, 2}, {2, 0, 0},
