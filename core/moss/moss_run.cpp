@@ -223,6 +223,22 @@ bool MossRun::Land(const glm::dvec3& start, const std::vector<glm::dvec3>& centr
   return true;
 }
 
+bool MossRun::LandSeed(const glm::dvec3& start, MossSeed* seed, SeedLoss* loss) const {
+  const std::vector<glm::dvec3> centres = CentresOf(world_.mosses);
+  Result<geom::PointIndex> index = geom::PointIndex::Build(centres);
+  std::vector<glm::dvec3> dense;
+  std::vector<uint32_t> owner;
+  for (std::size_t j = 0; index.ok() && j < centres.size(); ++j)
+    if (static_cast<int>(
+            index->WithinRadius(centres[j], rules_.interior_radius * rules_.s).size()) -
+            1 >=
+        rules_.interior_count) {
+      dense.push_back(centres[j]);
+      owner.push_back(static_cast<uint32_t>(j));
+    }
+  return Land(start, dense, owner, seed, loss);
+}
+
 void MossRun::AddSeed(const glm::dvec3& start, Species species, SeedKind kind,
                       const std::vector<glm::dvec3>& centres, const std::vector<uint32_t>& owner) {
   MossWorld& w = world_;
@@ -385,7 +401,7 @@ void MossRun::Day() {
   if (!after.ok()) return;
   const std::size_t parents = w.mosses.size();
   // §3.8's mats: a moss with interior_count others within interior_radius·s. A seed rests only on
-  // the surface of such dense moss (§3.3, "密集したコケの表面"), so lone mosses never carry others
+  // the surface of such dense moss (§3.3, "密生したコケモデルの表面"), so lone mosses never carry others
   // and stacks stay cushions on mats, not columns on single mosses.
   std::vector<bool> dense(parents, false);
   std::vector<glm::dvec3> dense_centres;

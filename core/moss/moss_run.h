@@ -97,6 +97,9 @@ class MossRun : public run::StudyRun {
   // photons emitted, stored and by depth, power, and per region the stored photons (first hits,
   // bounced) and the cells' mean gathered S.
   std::string PhotonDayJson() const;
+  // Where a seed starting at `start` would land among today's mosses (spec §1.5.6 and the mat
+  // rule: it rests only on mosses inside a mat); false with the loss when it is dropped.
+  bool LandSeed(const glm::dvec3& start, MossSeed* seed, SeedLoss* loss) const;
   const MossWorld& world() const { return world_; }
   const SoilCells& cells() const { return cells_; }
   const PhotonMap& photon_map() const { return map_; }

@@ -125,6 +125,33 @@ TEST(MossRun, IndirectOffStoresFirstHitsOnly) {
   for (std::size_t d = 1; d < depth.size(); ++d) EXPECT_EQ(depth[d], 0);
 }
 
+// Spec §1.5.6 on the plane (a single upward face at y = 0, nothing below it): a seed within s/2
+// above snaps to it, one within s/2 below is behind the face, one farther below falls off, one
+// above falls onto the face; and a seed touching a lone moss does not rest on it (only mats carry
+// seeds), it falls past it to the face.
+TEST(MossRun, LandingOnThePlane) {
+  MossRun run = *MossRun::Start(SmallState("plane", 0, 64), Budget{});
+  MossSeed seed;
+  SeedLoss loss = SeedLoss::kCount;
+  ASSERT_TRUE(run.LandSeed({0.31, 0.004, 0.2}, &seed, &loss));
+  EXPECT_EQ(seed.pos, glm::dvec3(glm::vec3(0.31f, 0.0f, 0.2f)));
+  EXPECT_FALSE(seed.on_moss);
+  EXPECT_FALSE(run.LandSeed({0.31, -0.004, 0.2}, &seed, &loss));
+  EXPECT_EQ(loss, SeedLoss::kBackFace);
+  EXPECT_FALSE(run.LandSeed({0.31, -0.2, 0.2}, &seed, &loss));
+  EXPECT_EQ(loss, SeedLoss::kFellOff);
+  EXPECT_FALSE(run.LandSeed({3.0, 0.5, 0.0}, &seed, &loss));  // beside the plane
+  EXPECT_EQ(loss, SeedLoss::kFellOff);
+  ASSERT_TRUE(run.LandSeed({-0.4, 0.3, 0.1}, &seed, &loss));
+  EXPECT_NEAR(seed.pos.y, 0.0, 1e-7);
+  EXPECT_EQ(seed.normal, glm::dvec3(0, 1, 0));
+  // Straight above a day-0 moss (64 on 4 m²: none inside a mat), touching it.
+  const MossPlant& moss = run.world().mosses[0];
+  ASSERT_TRUE(run.LandSeed(moss.pos + glm::dvec3(0, 0.01, 0), &seed, &loss));
+  EXPECT_FALSE(seed.on_moss);
+  EXPECT_NEAR(seed.pos.y, 0.0, 1e-7);
+}
+
 TEST(MossRun, TheStateHashCarriesSceneDaysAndSeed) {
   MossState state = SmallState("walls", 12, 8192, 5);
   EXPECT_EQ(EncodeMossHash(state), "preset=nomura2010&scene=walls&days=12&seed=5");
