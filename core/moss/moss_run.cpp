@@ -2,6 +2,7 @@
 #include "moss/moss_run.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
@@ -29,6 +30,21 @@ constexpr double kSecondsPerMossDay = 4e-6;   // gather, growth and landing of a
 constexpr double kBytesPerCell = 400;         // mesh, BVH, values, bucket
 constexpr double kBytesPerPhoton = 3 * 64.0;  // stored photons (~2 a path) and the index
 constexpr double kBytesPerMoss = 200;         // moss or seed, indices
+
+using MossClock = std::chrono::steady_clock;
+double MossMs(MossClock::time_point a, MossClock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+// The irradiance bands of the stats (spec §3: the peak is expected in 10-60 W/m², none above 120).
+const char* IrradianceBand(double S) {
+  return S <= 0.0     ? "0"
+         : S <= 10.0  ? "0-10"
+         : S <= 30.0  ? "10-30"
+         : S <= 60.0  ? "30-60"
+         : S <= 120.0 ? "60-120"
+                      : ">120";
+}
 
 const char* SeedLossName(SeedLoss loss) {
   switch (loss) {
@@ -267,6 +283,7 @@ void MossRun::Day() {
   const GForm g_form = static_cast<GForm>(p.GetInt(MossParam::kGForm));
   const double s = rules_.s;
 
+  const MossClock::time_point t0 = MossClock::now();
   // 1. The photon map through the land and the mosses (1 cm spheres), and its gather.
   std::vector<glm::dvec3> centres = CentresOf(w.mosses);
   occluders_.Build(centres, 0.5 * s);
@@ -278,6 +295,7 @@ void MossRun::Day() {
     w.stored_by_depth_total.resize(map_.stored_by_depth.size(), 0);
   for (std::size_t d = 0; d < map_.stored_by_depth.size(); ++d)
     w.stored_by_depth_total[d] += map_.stored_by_depth[d];
+  const MossClock::time_point t1 = MossClock::now();
   Result<PhotonGather> gather = PhotonGather::Build(map_, light_.r_gather);
   Result<geom::PointIndex> index = geom::PointIndex::Build(centres);
   if (!gather.ok() || !index.ok()) return;  // finite positions only: cannot happen
@@ -298,6 +316,9 @@ void MossRun::Day() {
     w.S[i] = gather->Soil(cells_.centroid[i], cells_.normal[i]);
     w.m_over_M[i] = std::min(
         1.0, static_cast<double>(index->WithinRadius(cells_.centroid[i], r_CH).size()) / M);
+  }
+  const MossClock::time_point t2 = MossClock::now();
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
     const SoilDay soil = AdvanceSoilDay(constants_, weather, GeologyLawOf(p, cells_.geology[i]),
                                         w.S[i], w.m_over_M[i], cells_.V_sky[i], &w.buckets[i]);
     w.T_s[i] = soil.terms.T_s;
@@ -305,6 +326,7 @@ void MossRun::Day() {
     w.theta[i] = soil.terms.theta;
   }
 
+  const MossClock::time_point t3 = MossClock::now();
   // 3a. Germination (eq 3.24) of the seeds made before today, in pool order.
   const int max_mosses = p.GetInt(MossParam::kMaxMosses);
   const std::size_t old_count = w.mosses.size();
@@ -379,6 +401,7 @@ void MossRun::Day() {
     const double G = FitnessOf(species, w.T_s[m.cell], w.rh_s[m.cell], S_moss, g_form).G;
     const GrowthDay grown = AdvanceGrowth(species, G, &m.growth);
     m.growing = grown.growing;
+    m.S = S_moss;
     if (grown.dies) {
       alive[j] = false;
       ++w.deaths_declined;
@@ -401,8 +424,8 @@ void MossRun::Day() {
   if (!after.ok()) return;
   const std::size_t parents = w.mosses.size();
   // §3.8's mats: a moss with interior_count others within interior_radius·s. A seed rests only on
-  // the surface of such dense moss (§3.3, "密生したコケモデルの表面"), so lone mosses never carry others
-  // and stacks stay cushions on mats, not columns on single mosses.
+  // the surface of such dense moss (§3.3, "密生したコケモデルの表面"), so lone mosses never carry
+  // others and stacks stay cushions on mats, not columns on single mosses.
   std::vector<bool> dense(parents, false);
   std::vector<glm::dvec3> dense_centres;
   std::vector<uint32_t> dense_owner;
@@ -441,6 +464,11 @@ void MossRun::Day() {
   std::array<int, kSpeciesCount> pop{};
   for (const MossPlant& m : w.mosses) ++pop[static_cast<int>(m.species)];
   w.population.push_back(pop);
+  const MossClock::time_point t4 = MossClock::now();
+  ms_photons_ += MossMs(t0, t1);
+  ms_gather_ += MossMs(t1, t2);
+  ms_soil_ += MossMs(t2, t3);
+  ms_growth_ += MossMs(t3, t4);
 }
 
 Status MossRun::Advance(const run::Observer& observer) {
@@ -634,6 +662,11 @@ std::string MossRun::StatsJson() const {
     mosses["by_region"][cells_.region_names[r]] = moss_region[r];
   for (const char* o : {"up", "down", "vertical"}) mosses["by_orientation"][o] = by_orientation[o];
   mosses["on_mosses"] = on_moss;
+  // By their light on their last day of growth (the day's newborn: 0 until they grow).
+  std::map<std::string, int> bands;
+  for (const MossPlant& m : w.mosses) ++bands[IrradianceBand(m.S)];
+  for (const char* b : {"0", "0-10", "10-30", "30-60", "60-120", ">120"})
+    mosses["by_irradiance_band"][b] = bands[b];
   // Coverage (spec §3): each cell min(1, n·s²/A), area-weighted by face orientation.
   std::map<std::string, std::pair<double, double>> coverage;
   const double s2 = rules_.s * rules_.s;
@@ -682,6 +715,12 @@ std::string MossRun::StatsJson() const {
         {"S", S / area}, {"T_s", T_s / area}, {"rh_s", rh_s / area}, {"theta", theta / area}};
   }
   j["soil_last_day"] = soil.is_null() ? nlohmann::ordered_json::object() : soil;
+  // The stages' wall time (the only fields that differ between runs of one state).
+  j["ms"] = ms_photons_ + ms_gather_ + ms_soil_ + ms_growth_;
+  j["ms_photons"] = ms_photons_;
+  j["ms_gather"] = ms_gather_;
+  j["ms_soil"] = ms_soil_;
+  j["ms_growth"] = ms_growth_;
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
