@@ -1,8 +1,9 @@
 // niwa CLI commands of the moss study (Nomura 2010, paper 001; core/moss, docs/moss-model.md):
-// 'moss soil' (one soil cell: every term of eqs 3.2-3.16 and the energy balance's residuals) and
-// 'moss fitness' (eqs 3.17-3.20 for one place), each one JSON object on stdout; the table and
-// presets for 'niwa params moss' and 'niwa presets moss'. Thin adapters: flags into a state and a
-// cell, the core's reports (core/moss/moss_report.h) out.
+// 'moss grow' (the run over a built-in scene: --stats, --out moss.json), 'moss photons' (one day's
+// photon map), 'moss scenes', 'moss soil' (one soil cell: every term of eqs 3.2-3.16 and the energy
+// balance's residuals) and 'moss fitness' (eqs 3.17-3.20 for one place), each one JSON object on
+// stdout; the table and presets for 'niwa params moss' and 'niwa presets moss'. Thin adapters:
+// flags into a state and a cell, the core's run and reports (core/moss) out.
 // cli-order: 50
 #include <CLI/CLI.hpp>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "cli_common.h"
 #include "moss/moss_params.h"
 #include "moss/moss_report.h"
+#include "moss/moss_run.h"
 #include "moss/moss_state.h"
 #include "moss/soil.h"
 #include "params/param_text.h"
@@ -27,10 +29,16 @@ using moss::MossParam;
 
 // The one table of the moss commands' names for state and cell fields (run/field_names.h).
 const run::FieldNames kFieldFlags = {
-    {"preset", "--preset"}, {"geology", "--geology"}, {"theta", "--theta"},     {"S", "--S"},
-    {"m_over_M", "--mM"},   {"V_sky", "--V"},         {"species", "--species"}, {"T_s", "--Ts"},
-    {"rh_s", "--rhs"},
+    {"preset", "--preset"},   {"geology", "--geology"},
+    {"theta", "--theta"},     {"S", "--S"},
+    {"m_over_M", "--mM"},     {"V_sky", "--V"},
+    {"species", "--species"}, {"T_s", "--Ts"},
+    {"rh_s", "--rhs"},        {"days", "--days"},
+    {"seed", "--seed"},       {"scene", "--scene"},
+    {"photons", "--photons"}, {"indirect", "--indirect"},
 };
+constexpr FlagRange kDaysRange{0, moss::kMaxMossDays, true};
+constexpr FlagRange kSeedRange{0, static_cast<double>(moss::kMaxMossSeed), true};
 
 // Ranges of the flags that are not table rows (the soil cell's and the fitness place's inputs).
 constexpr FlagRange kThetaRange{0, 1, false, " (at most the geology's theta_SAT)"};
@@ -127,6 +135,95 @@ int RunFitness(const FitnessOptions& o, std::ostream& out) {
   return 0;
 }
 
+// The flags of a run (grow, photons): the scene, days, photons, seed and indirect light over the
+// state, then the budget.
+struct RunOptions {
+  StateOptions state;
+  std::string scene, indirect;
+  double days = 0, photons = 0, seed = 0;
+  bool stats = false;
+  std::string out_path;
+  BudgetOptions budget;
+  CLI::App* cmd = nullptr;
+};
+
+void AddRunOptions(CLI::App* cmd, RunOptions* o, bool with_days) {
+  o->cmd = cmd;
+  cmd->add_option("--scene", o->scene, "Built-in scene: plane, thesis (default), walls, rocks");
+  if (with_days)
+    AddNumberFlag(cmd, "--days", &o->days, kDaysRange,
+                  "Days to grow, " + RangeHelp(kDaysRange) + " (default 300)");
+  AddNumberFlag(cmd, "--photons", &o->photons, MossRowRange(MossParam::kPhotons),
+                "Photons a day (the photons row), " + RangeHelp(MossRowRange(MossParam::kPhotons)) +
+                    " (default 8192)");
+  AddNumberFlag(cmd, "--seed", &o->seed, kSeedRange,
+                "Random seed, " + RangeHelp(kSeedRange) + " (default 1)");
+  cmd->add_option("--indirect", o->indirect,
+                  "on (default): photons bounce (fig 4.1); off: first hits only (fig 4.2)");
+  AddStateOptions(cmd, &o->state);
+  AddBudgetOptions(cmd, &o->budget);
+}
+
+moss::MossState ResolveRunState(const RunOptions& o) {
+  moss::MossState state = ResolveState(o.state);
+  if (o.cmd->count("--scene"))
+    Check(run::RenameField(moss::SetMossScene(o.scene, &state), kFieldFlags));
+  if (o.cmd->get_option_no_throw("--days") != nullptr && o.cmd->count("--days"))
+    Check(run::RenameField(moss::SetMossDays(o.days, &state), kFieldFlags));
+  if (o.cmd->count("--seed"))
+    Check(run::RenameField(moss::SetMossSeed(o.seed, &state), kFieldFlags));
+  if (o.cmd->count("--photons"))
+    Check(AsFlag(state.params.Set(MossParam::kPhotons, o.photons), "--photons"));
+  if (o.cmd->count("--indirect")) {
+    if (o.indirect != "on" && o.indirect != "off")
+      Fail(Status::Error("--indirect", "'" + Echo(o.indirect) + "' is unknown; must be on or off"));
+    Check(AsFlag(state.params.Set(MossParam::kIndirect, o.indirect == "on" ? 1 : 0), "--indirect"));
+  }
+  return state;
+}
+
+moss::MossRun StartRun(const RunOptions& o) {
+  const moss::MossState state = ResolveRunState(o);
+  Result<moss::MossRun> run = moss::MossRun::Start(state, ResolveBudget(o.budget));
+  if (!run.ok()) Fail(run::RenameField(run.status(), kFieldFlags));
+  return std::move(*run);
+}
+
+// moss grow: the run to --days; --out moss.json lists every living moss, written all or none.
+int RunGrow(const RunOptions& o, std::ostream& out) {
+  moss::MossRun run = StartRun(o);
+  Check(run::RenameField(run.Advance(nullptr), kFieldFlags));
+  if (!o.out_path.empty()) {
+    Check(AsFlag(run.ExportEstimate("json").status(), "--out"));
+    StagedOutputs outputs;
+    Check(outputs.Stage("--out", o.out_path, run.MossesJson() + "\n"));
+    Check(outputs.Commit());
+  }
+  if (o.stats) {
+    out << run.StatsJson() << "\n";
+  } else {
+    const moss::MossWorld& w = run.world();
+    nlohmann::ordered_json j;
+    j["study"] = "moss";
+    j["url"] = run.Hash("");
+    j["days"] = w.day;
+    j["mosses"] = w.mosses.size();
+    j["seeds"] = w.seeds.size();
+    out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+  }
+  return 0;
+}
+
+// moss photons: the first day's photon map on the scene with its day-0 mosses.
+int RunPhotons(const RunOptions& o, std::ostream& out) {
+  moss::MossState state = ResolveRunState(o);
+  state.days = 1;
+  Result<moss::MossRun> run = moss::MossRun::Start(state, ResolveBudget(o.budget));
+  if (!run.ok()) Fail(run::RenameField(run.status(), kFieldFlags));
+  out << run->PhotonDayJson() << "\n";
+  return 0;
+}
+
 void PrintPresets(std::ostream& out) {
   for (const std::string& name : moss::MossPresetNames()) {
     out << name;
@@ -147,6 +244,35 @@ void AddMossCommands(CLI::App& app, CommandList& commands) {
        {"moss", "soil", "--geology", "humus", "--theta", "0.2", "--S", "25"}});
   CLI::App* moss_app = Subcommand(app, "moss", "Moss on soil under light (Nomura 2010)");
   moss_app->require_subcommand(1);
+
+  CLI::App* grow = moss_app->add_subcommand(
+      "grow",
+      "Grow moss on a built-in scene day by day (photons, soil, life cycle); one JSON object on "
+      "stdout (--stats: all the statistics), --out moss.json: every living moss");
+  auto go = std::make_shared<RunOptions>();
+  AddRunOptions(grow, go.get(), true);
+  grow->add_flag("--stats", go->stats, "Print every statistic as one JSON object");
+  AddOutputFlag(grow, "--out", &go->out_path, {".json"}, "Write every living moss as JSON");
+  commands.push_back({grow,
+                      [go](std::ostream& out) { return RunGrow(*go, out); },
+                      {"--scene", "plane", "--days", "2", "--photons", "256", "--stats"}});
+
+  CLI::App* photons = moss_app->add_subcommand(
+      "photons",
+      "One day's photon map (figs 4.1/4.2's right halves): photons emitted, stored by bounce "
+      "depth, and per region, as one JSON object");
+  auto po = std::make_shared<RunOptions>();
+  AddRunOptions(photons, po.get(), false);
+  commands.push_back({photons,
+                      [po](std::ostream& out) { return RunPhotons(*po, out); },
+                      {"--scene", "plane", "--photons", "256"}});
+
+  CLI::App* scenes = moss_app->add_subcommand(
+      "scenes", "The built-in scenes: triangles, soil cells by geology, regions (one JSON object)");
+  commands.push_back({scenes, [](std::ostream& out) {
+                        out << moss::MossScenesJson() << "\n";
+                        return 0;
+                      }});
 
   CLI::App* soil = moss_app->add_subcommand(
       "soil",

@@ -1,7 +1,11 @@
 // The moss state's preset and values, and its share-link hash.
 #include "moss/moss_state.h"
 
+#include <optional>
+
 #include "io/hash_codec.h"
+#include "moss/scenes.h"
+#include "params/param_text.h"
 
 namespace niwa::moss {
 
@@ -11,6 +15,28 @@ Status SetMossPreset(std::string_view name, MossState* state) {
   state->preset = std::string(name);
   state->params = *params;
   return Status::Ok();
+}
+
+Status SetMossDays(double days, MossState* state) {
+  NIWA_RETURN_IF_ERROR(CheckValue("days", days, 0, kMaxMossDays, true));
+  state->days = static_cast<int>(days);
+  return Status::Ok();
+}
+
+Status SetMossSeed(double seed, MossState* state) {
+  NIWA_RETURN_IF_ERROR(CheckValue("seed", seed, 0, static_cast<double>(kMaxMossSeed), true));
+  state->seed = static_cast<uint64_t>(seed);
+  return Status::Ok();
+}
+
+Status SetMossScene(std::string_view scene, MossState* state) {
+  for (const std::string& name : SceneNames()) {
+    if (name != scene) continue;
+    state->scene = name;
+    return Status::Ok();
+  }
+  return Status::Error(
+      "scene", "'" + Printable(scene) + "' is unknown; must be plane, thesis, walls or rocks");
 }
 
 void ApplyMossHash(std::string_view hash, std::string_view prefix, MossState* state,
@@ -29,6 +55,19 @@ void ApplyMossHash(std::string_view hash, std::string_view prefix, MossState* st
   }
   for (const auto& [key, value] : pairs) {
     if (key == pre + "preset") continue;
+    if (key == pre + "days" || key == pre + "seed") {
+      const std::optional<double> x = ParseNumber(value);
+      const Status s = !x ? Status::Error(key, "'" + Printable(value) + "' is not a number")
+                       : key == pre + "days" ? SetMossDays(*x, state)
+                                             : SetMossSeed(*x, state);
+      if (!s.ok()) notices->push_back(Printable(key) + ": " + s.message() + "; dropped");
+      continue;
+    }
+    if (key == pre + "scene") {
+      const Status s = SetMossScene(value, state);
+      if (!s.ok()) notices->push_back(Printable(key) + ": " + s.message() + "; dropped");
+      continue;
+    }
     if (ApplyHashParam(key, value, prefix, &state->params, notices)) continue;
     if (prefix.empty() || key.rfind(pre, 0) == 0)
       notices->push_back("unknown key '" + Printable(key) + "' dropped");
@@ -37,8 +76,12 @@ void ApplyMossHash(std::string_view hash, std::string_view prefix, MossState* st
 
 std::string EncodeMossHash(const MossState& state, std::string_view prefix) {
   Result<MossParams> base = MossPreset(state.preset);
-  return std::string(prefix) + "preset=" + PercentEncode(state.preset) +
-         EncodeChangedParams(state.params, base.ok() ? *base : MossParams(), prefix);
+  const std::string pre(prefix);
+  std::string out = pre + "preset=" + PercentEncode(state.preset);
+  if (state.scene != "thesis") out += "&" + pre + "scene=" + PercentEncode(state.scene);
+  if (state.days != 300) out += "&" + pre + "days=" + std::to_string(state.days);
+  if (state.seed != 1) out += "&" + pre + "seed=" + std::to_string(state.seed);
+  return out + EncodeChangedParams(state.params, base.ok() ? *base : MossParams(), prefix);
 }
 
 }  // namespace niwa::moss

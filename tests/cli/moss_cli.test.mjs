@@ -1,8 +1,13 @@
 // Moss CLI: native == WASM bytes of `niwa moss soil` (every term of eqs 3.2-3.16) over every
 // geology, both presets and both eq 3.15 forms, and of `niwa moss fitness` (eqs 3.17-3.20) for every
 // species and both g forms; the spec's §1.4 reference values and the balance's residual as printed;
-// `niwa params moss` / `niwa presets moss` in both builds; hostile values one line naming the flag.
-import { buildName, check, finish, native, requireWasm, run, spawn, wasm } from '../support/cli_pair.mjs';
+// `niwa params moss` / `niwa presets moss` in both builds; hostile values one line naming the flag;
+// `niwa moss grow` (--stats and --out moss.json) and `niwa moss photons` native == WASM byte for
+// byte on every built-in scene, both presets, seeds 1-2, at a few days and photons.
+import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { buildName, check, finish, native, requireWasm, run, spawn, wasm, withoutMs } from '../support/cli_pair.mjs';
 
 requireWasm();
 
@@ -59,6 +64,50 @@ for (const args of [['params', 'moss', '--json'], ['params', 'moss'], ['presets'
   check(`niwa ${args.join(' ')}: native == WASM (${a.length} bytes)`, a.length > 100 && a === b);
 }
 
+// The run: every scene, both presets, seeds 1-2; --stats (no timing fields) and moss.json.
+const dir = mkdtempSync(join(tmpdir(), 'niwa-moss-'));
+let growCases = 0, withMosses = 0;
+for (const scene of ['plane', 'thesis', 'walls', 'rocks']) {
+  for (const preset of ['nomura2010', 'nomura2010-sky']) {
+    for (const seed of ['1', '2']) {
+      const args = ['moss', 'grow', '--scene', scene, '--preset', preset, '--seed', seed, '--days', '12', '--photons', '1024', '--stats'];
+      const na = join(dir, `n-${scene}-${preset}-${seed}.json`), wa = join(dir, `w-${scene}-${preset}-${seed}.json`);
+      const a = JSON.stringify(withoutMs(JSON.parse(run(native, [...args, '--out', na]))));
+      const b = JSON.stringify(withoutMs(JSON.parse(run(wasm, [...args, '--out', wa]))));
+      const ja = readFileSync(na, 'utf8'), jb = readFileSync(wa, 'utf8');
+      ++growCases;
+      if (a !== b || ja !== jb) check(`grow ${args.join(' ')}: native == WASM`, false, `${a.slice(0, 300)}\n${b.slice(0, 300)}`);
+      const stats = JSON.parse(a), list = JSON.parse(ja);
+      if (list.mosses.length !== stats.mosses.total || stats.days !== 12)
+        check(`grow ${scene} ${preset} ${seed}: moss.json lists the ${stats.mosses.total} living mosses`, false, ja.slice(0, 200));
+      if (list.mosses.length > 0) ++withMosses;
+      for (const m of list.mosses)
+        if (!['gingoke', 'haigoke', 'sugigoke'].includes(m.species) || m.pos.length !== 3 || m.normal.length !== 3 ||
+            !(m.birth_day >= 0 && m.birth_day <= 12) || !Number.isFinite(m.G_moss)) {
+          check(`grow ${scene}: a moss's fields`, false, JSON.stringify(m));
+          break;
+        }
+    }
+  }
+}
+check(`moss grow: ${growCases} runs (4 scenes x 2 presets x seeds 1-2, 12 days, 1,024 photons): --stats and moss.json native == WASM byte for byte; ${withMosses} with living mosses`,
+  growCases === 16 && withMosses >= 8);
+rmSync(dir, { recursive: true, force: true });
+for (const scene of ['plane', 'thesis', 'walls', 'rocks']) {
+  for (const indirect of ['on', 'off']) {
+    const args = ['moss', 'photons', '--scene', scene, '--photons', '2048', '--indirect', indirect, '--preset', 'nomura2010-sky'];
+    const a = run(native, args), b = run(wasm, args);
+    const day = JSON.parse(a);
+    const bounced = day.stored_by_depth.slice(1).reduce((x, y) => x + y, 0);
+    check(`moss photons ${scene} indirect ${indirect}: native == WASM; ${day.stored_by_depth[0]} first hits, ${bounced} bounced, ${day.emitted_sky} sky`,
+      a === b && day.stored_by_depth[0] > 0 && (indirect === 'off' ? bounced === 0 && day.emitted_sky === 0 : day.emitted_sky > 0));
+  }
+}
+{
+  const a = run(native, ['moss', 'scenes']), b = run(wasm, ['moss', 'scenes']);
+  check(`moss scenes: native == WASM, ${JSON.parse(a).scenes.map((s) => `${s.name} ${s.cells} cells`).join(', ')}`, a === b);
+}
+
 // Hostile values: exit 2, one line naming the flag, in both builds.
 const hostile = [
   [['--geology', 'clay', '--theta', '0.2', '--S', '25'], '--geology'],
@@ -79,6 +128,18 @@ for (const [args, field] of hostile) {
     const r = spawn(cmd, ['moss', 'soil', ...args]);
     const lines = r.stderr.trim().split('\n');
     check(`${buildName(cmd)} moss soil ${args.slice(6).join(' ') || args.join(' ')}: exit ${r.status}, "${lines[0]}"`,
+      r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${field}`) && r.stdout === '');
+  }
+}
+for (const [args, field] of [
+  [['--scene', 'garden'], '--scene'], [['--days', '-1'], '--days'], [['--days', '2.5'], '--days'],
+  [['--indirect', 'maybe'], '--indirect'], [['--seed', '1e20'], '--seed'], [['--photons', 'nan'], '--photons'],
+  [['--max-seconds', '1'], '--max-seconds'], [['--set', 'light_smoothing_days=2', '--days', '1'], 'light_smoothing_days'],
+]) {
+  for (const cmd of [native, wasm]) {
+    const r = spawn(cmd, ['moss', 'grow', ...args]);
+    const lines = r.stderr.trim().split('\n');
+    check(`${buildName(cmd)} moss grow ${args.join(' ')}: exit ${r.status}, "${lines[0]}"`,
       r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${field}`) && r.stdout === '');
   }
 }

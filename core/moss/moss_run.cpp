@@ -1,0 +1,727 @@
+// The moss study's run: the daily loop of §3.7 over a built-in scene (moss_run.h).
+#include "moss/moss_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <utility>
+
+#include "geom/closest_point.h"
+#include "geom/point_index.h"
+#include "geom/ray_cast.h"
+
+namespace niwa::moss {
+namespace {
+
+// The run's RNG streams (spec §4.28: one per subsystem, so the photon count never reshuffles the
+// growth draws).
+constexpr uint64_t kPhotonStream = 1, kGrowthStream = 2, kRainStream = 3, kPlaceStream = 4;
+
+// Calibrated upper bounds of the work (seconds per unit; bytes per item).
+// Provisional (not yet measured at the caps): 30 days of `thesis` at 8,192 photons and ~100
+// mosses took 1.2 s natively, about 40 ms a day.
+constexpr double kSecondsPerPhoton = 2e-6;    // a path of ~2 hits with the gather's share
+constexpr double kSecondsPerCellDay = 2e-6;   // gather, m/M and the soil of one cell
+constexpr double kSecondsPerMossDay = 4e-6;   // gather, growth and landing of a moss or seed
+constexpr double kBytesPerCell = 400;         // mesh, BVH, values, bucket
+constexpr double kBytesPerPhoton = 3 * 64.0;  // stored photons (~2 a path) and the index
+constexpr double kBytesPerMoss = 200;         // moss or seed, indices
+
+using MossClock = std::chrono::steady_clock;
+double MossMs(MossClock::time_point a, MossClock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+// The irradiance bands of the stats (spec §3: the peak is expected in 10-60 W/m², none above 120).
+const char* IrradianceBand(double S) {
+  return S <= 0.0     ? "0"
+         : S <= 10.0  ? "0-10"
+         : S <= 30.0  ? "10-30"
+         : S <= 60.0  ? "30-60"
+         : S <= 120.0 ? "60-120"
+                      : ">120";
+}
+
+const char* SeedLossName(SeedLoss loss) {
+  switch (loss) {
+    case SeedLoss::kFellOff:
+      return "fell_off";
+    case SeedLoss::kBackFace:
+      return "back_face";
+    case SeedLoss::kLostContest:
+      return "lost_contest";
+    case SeedLoss::kExpired:
+      return "expired";
+    default:
+      return "cap";
+  }
+}
+
+const char* OrientationName(const glm::dvec3& n) {
+  return n.y > 0.5 ? "up" : (n.y < -0.5 ? "down" : "vertical");
+}
+
+std::vector<glm::dvec3> CentresOf(const std::vector<MossPlant>& mosses) {
+  std::vector<glm::dvec3> centres;
+  centres.reserve(mosses.size());
+  for (const MossPlant& m : mosses) centres.push_back(m.pos);
+  return centres;
+}
+
+}  // namespace
+
+Estimate MossRun::RunEstimate(const MossState& state, std::size_t cells) {
+  const double days = state.days;
+  const double photons = state.params.Get(MossParam::kPhotons);
+  const double mosses =
+      state.params.Get(MossParam::kMaxMosses) + state.params.Get(MossParam::kSeedCap);
+  const double n_cells = static_cast<double>(cells);
+  Estimate e;
+  e.seconds = days * (photons * kSecondsPerPhoton + n_cells * kSecondsPerCellDay +
+                      mosses * kSecondsPerMossDay);
+  e.memory_bytes = n_cells * kBytesPerCell + photons * kBytesPerPhoton + mosses * kBytesPerMoss;
+  e.what = "growing " + FormatCount(days) + " days of " + FormatCount(photons) + " photons on " +
+           FormatCount(n_cells) + " soil cells";
+  return e;
+}
+
+Result<MossRun> MossRun::Start(const MossState& state, const Budget& budget) {
+  NIWA_RETURN_IF_ERROR(CheckMossParams(state.params));
+  if (state.params.Get(MossParam::kLightSmoothingDays) > 0)
+    return Status::Error("light_smoothing_days", "above 0 is not built yet; must be 0");
+  Result<MossScene> scene = BuildScene(state.scene);
+  if (!scene.ok()) return scene.status();
+  MossRun run;
+  run.state_ = state;
+  run.budget_ = budget;
+  SoilCellOptions options;
+  options.soil_edge = state.params.Get(MossParam::kSoilEdge);
+  options.h_max = state.params.Get(MossParam::kHMax);
+  options.h_wall = state.params.Get(MossParam::kHWall);
+  options.sky_view =
+      state.params.GetInt(MossParam::kLongwave) == static_cast<int>(Longwave::kSkyView);
+  // The estimate before the cells are built: the scene's triangles are the fewest cells.
+  NIWA_RETURN_IF_ERROR(CheckEstimate(RunEstimate(state, scene->mesh.triangle_count()), budget,
+                                     "lower days, photons or max_mosses"));
+  Result<SoilCells> cells = MakeSoilCells(*scene, options);
+  if (!cells.ok()) return cells.status();
+  run.cells_ = std::move(*cells);
+  NIWA_RETURN_IF_ERROR(CheckEstimate(RunEstimate(state, run.cells_.size()), budget,
+                                     "lower days, photons or max_mosses"));
+  Result<PhotonLight> light = PhotonLightOf(state.params, run.cells_);
+  if (!light.ok()) return light.status();
+  run.light_ = *light;
+  run.constants_ = SoilConstantsOf(state.params);
+  run.rules_ = LifeRulesOf(state.params);
+
+  const std::size_t n = run.cells_.size();
+  double total = 0;
+  run.cumulative_area_.reserve(n);
+  for (double a : run.cells_.area) run.cumulative_area_.push_back(total += a);
+  MossWorld& w = run.world_;
+  w.photon_rng = Pcg32(state.seed, kPhotonStream);
+  w.growth_rng = Pcg32(state.seed, kGrowthStream);
+  w.rain_rng = Pcg32(state.seed, kRainStream);
+  w.place_rng = Pcg32(state.seed, kPlaceStream);
+  const double O_start = state.params.Get(MossParam::kOStart);
+  for (std::size_t i = 0; i < n; ++i)
+    w.buckets.push_back(
+        MakeBucket(run.cells_.h[i], GeologyLawOf(state.params, run.cells_.geology[i]), O_start));
+  w.S.assign(n, 0.0);
+  w.T_s.assign(n, 0.0);
+  w.rh_s.assign(n, 0.0);
+  w.theta.assign(n, 0.0);
+  w.m_over_M.assign(n, 0.0);
+  // Day 0: n_init mosses at random points, area-weighted, species uniform (spec §1.5.9).
+  const int n_init = state.params.GetInt(MossParam::kNInit);
+  const int max_mosses = state.params.GetInt(MossParam::kMaxMosses);
+  for (int i = 0; i < n_init && static_cast<int>(w.mosses.size()) < max_mosses; ++i) {
+    const Species species =
+        static_cast<Species>(std::min(2, static_cast<int>(w.place_rng.Uniform() * 3)));
+    run.PlaceAtRandom(species, false);
+  }
+  std::array<int, kSpeciesCount> pop{};
+  for (const MossPlant& m : w.mosses) ++pop[static_cast<int>(m.species)];
+  w.population.push_back(pop);
+  return run;
+}
+
+void MossRun::PlaceAtRandom(Species species, bool as_seed) {
+  MossWorld& w = world_;
+  const double u = w.place_rng.Uniform() * cumulative_area_.back();
+  const std::size_t cell =
+      std::min<std::size_t>(cumulative_area_.size() - 1,
+                            static_cast<std::size_t>(std::upper_bound(cumulative_area_.begin(),
+                                                                      cumulative_area_.end(), u) -
+                                                     cumulative_area_.begin()));
+  // Uniform in the triangle (u1, u2 -> √ warp).
+  const double r1 = std::sqrt(w.place_rng.Uniform()), r2 = w.place_rng.Uniform();
+  const glm::dvec3 a(cells_.mesh.positions[3 * cell]), b(cells_.mesh.positions[3 * cell + 1]),
+      c(cells_.mesh.positions[3 * cell + 2]);
+  const glm::dvec3 p = (1 - r1) * a + (r1 * (1 - r2)) * b + (r1 * r2) * c;
+  if (as_seed) {
+    MossSeed seed;
+    seed.pos = p;
+    seed.normal = cells_.normal[cell];
+    seed.cell = static_cast<uint32_t>(cell);
+    seed.species = species;
+    seed.kind = SeedKind::kSpore;
+    seed.birth_day = w.day;
+    if (static_cast<int>(w.seeds.size()) >= state_.params.GetInt(MossParam::kSeedCap)) {
+      ++w.seeds_lost[static_cast<int>(SeedLoss::kCap)];
+    } else {
+      w.seeds.push_back(seed);
+    }
+    return;
+  }
+  MossPlant moss;
+  moss.pos = p;
+  moss.normal = cells_.normal[cell];
+  moss.cell = static_cast<uint32_t>(cell);
+  moss.species = species;
+  moss.birth_day = w.day;
+  w.mosses.push_back(moss);
+}
+
+bool MossRun::Land(const glm::dvec3& start, const std::vector<glm::dvec3>& centres,
+                   const std::vector<uint32_t>& owner, MossSeed* seed, SeedLoss* loss) const {
+  const double s = rules_.s;
+  // On the front side of a face, or behind it (inside a solid)?
+  auto behind_a_face = [&](const glm::dvec3& p) {
+    const geom::ClosestHit near =
+        geom::ClosestPoint(cells_.mesh, cells_.bvh, glm::vec3(p), static_cast<float>(0.5 * s));
+    return near.found && glm::dot(p - glm::dvec3(near.point), cells_.normal[near.triangle]) < 0.0;
+  };
+  auto rest_on = [&](const glm::dvec3& at, uint32_t moss) {
+    if (behind_a_face(at)) return *loss = SeedLoss::kBackFace, false;
+    const glm::dvec3 d = at - centres[moss];
+    const double len = glm::length(d);
+    seed->pos = at;
+    seed->normal = len > 0 ? d / len : glm::dvec3(0, 1, 0);
+    seed->cell = world_.mosses[owner[moss]].cell;  // spec §4.25: the supporter's cell
+    seed->on_moss = true;
+    return true;
+  };
+  // 1. Adjacent to a face: within s/2, snapped to the closest point; behind it: dropped.
+  const geom::ClosestHit near =
+      geom::ClosestPoint(cells_.mesh, cells_.bvh, glm::vec3(start), static_cast<float>(0.5 * s));
+  if (near.found) {
+    const glm::dvec3 n = cells_.normal[near.triangle];
+    if (glm::dot(start - glm::dvec3(near.point), n) < 0.0)
+      return *loss = SeedLoss::kBackFace, false;
+    seed->pos = glm::dvec3(near.point);
+    seed->normal = n;
+    seed->cell = near.triangle;
+    seed->on_moss = false;
+    return true;
+  }
+  // 2. Touching a moss: rests on it.
+  const MossRest rest = RestOnMoss(start, centres, rules_);
+  if (rest.touches) return rest_on(rest.position, rest.moss);
+  // 3. Falling along −y onto the highest of a face and a moss below.
+  const geom::RayHit hit =
+      geom::FirstHit(cells_.mesh, cells_.bvh, glm::vec3(start), glm::vec3(0, -1, 0),
+                     std::numeric_limits<float>::infinity());
+  const MossRest fall = FallOntoMosses(start, centres, rules_);
+  if (fall.touches && (!hit.hit || fall.position.y >= static_cast<double>(hit.point.y)))
+    return rest_on(fall.position, fall.moss);
+  if (!hit.hit) return *loss = SeedLoss::kFellOff, false;
+  const glm::dvec3 n = cells_.normal[hit.triangle];
+  if (n.y <= 0.0) return *loss = SeedLoss::kBackFace, false;  // its back, or edge-on
+  seed->pos = glm::dvec3(hit.point);
+  seed->normal = n;
+  seed->cell = hit.triangle;
+  seed->on_moss = false;
+  return true;
+}
+
+bool MossRun::LandSeed(const glm::dvec3& start, MossSeed* seed, SeedLoss* loss) const {
+  const std::vector<glm::dvec3> centres = CentresOf(world_.mosses);
+  Result<geom::PointIndex> index = geom::PointIndex::Build(centres);
+  std::vector<glm::dvec3> dense;
+  std::vector<uint32_t> owner;
+  for (std::size_t j = 0; index.ok() && j < centres.size(); ++j)
+    if (static_cast<int>(
+            index->WithinRadius(centres[j], rules_.interior_radius * rules_.s).size()) -
+            1 >=
+        rules_.interior_count) {
+      dense.push_back(centres[j]);
+      owner.push_back(static_cast<uint32_t>(j));
+    }
+  return Land(start, dense, owner, seed, loss);
+}
+
+void MossRun::AddSeed(const glm::dvec3& start, Species species, SeedKind kind,
+                      const std::vector<glm::dvec3>& centres, const std::vector<uint32_t>& owner) {
+  MossWorld& w = world_;
+  ++w.seeds_made[static_cast<int>(kind)];
+  MossSeed seed;
+  SeedLoss loss = SeedLoss::kFellOff;
+  if (!Land(start, centres, owner, &seed, &loss)) {
+    ++w.seeds_lost[static_cast<int>(loss)];
+    return;
+  }
+  if (static_cast<int>(w.seeds.size()) >= state_.params.GetInt(MossParam::kSeedCap)) {
+    ++w.seeds_lost[static_cast<int>(SeedLoss::kCap)];
+    return;
+  }
+  seed.species = species;
+  seed.kind = kind;
+  seed.birth_day = w.day;
+  w.seeds.push_back(seed);
+}
+
+void MossRun::Day() {
+  MossWorld& w = world_;
+  const MossParams& p = state_.params;
+  ++w.day;
+  const int day = w.day;
+  const GForm g_form = static_cast<GForm>(p.GetInt(MossParam::kGForm));
+  const double s = rules_.s;
+
+  const MossClock::time_point t0 = MossClock::now();
+  // 1. The photon map through the land and the mosses (1 cm spheres), and its gather.
+  std::vector<glm::dvec3> centres = CentresOf(w.mosses);
+  occluders_.Build(centres, 0.5 * s);
+  TracePhotons(cells_, occluders_, light_, p.GetInt(MossParam::kPhotons), &w.photon_rng, &map_);
+  w.emitted_sun = map_.emitted_sun;
+  w.emitted_sky = map_.emitted_sky;
+  w.stored_by_depth = map_.stored_by_depth;
+  if (w.stored_by_depth_total.size() < map_.stored_by_depth.size())
+    w.stored_by_depth_total.resize(map_.stored_by_depth.size(), 0);
+  for (std::size_t d = 0; d < map_.stored_by_depth.size(); ++d)
+    w.stored_by_depth_total[d] += map_.stored_by_depth[d];
+  const MossClock::time_point t1 = MossClock::now();
+  Result<PhotonGather> gather = PhotonGather::Build(map_, light_.r_gather);
+  Result<geom::PointIndex> index = geom::PointIndex::Build(centres);
+  if (!gather.ok() || !index.ok()) return;  // finite positions only: cannot happen
+
+  // 2. The soil of every cell (spec §1.4 order), m/M from the mosses within r_CH (eq 3.5).
+  Weather weather = ClimateOf(p);
+  const double P_year = p.Get(MossParam::kPYear);
+  const int P_days = p.GetInt(MossParam::kPDays);
+  if (p.GetInt(MossParam::kRainRandom) != 0) {
+    weather.P = (P_days > 0 && w.rain_rng.Bernoulli(P_days / 365.0)) ? P_year / P_days : 0.0;
+  } else {
+    weather.P = EvenRainOfDay(day, P_year, P_days);
+  }
+  const bool rain_day = weather.P > 0.0;
+  const double r_CH = p.Get(MossParam::kRCH);
+  const double M = p.Get(MossParam::kMCH);
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    w.S[i] = gather->Soil(cells_.centroid[i], cells_.normal[i]);
+    w.m_over_M[i] = std::min(
+        1.0, static_cast<double>(index->WithinRadius(cells_.centroid[i], r_CH).size()) / M);
+  }
+  const MossClock::time_point t2 = MossClock::now();
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    const SoilDay soil = AdvanceSoilDay(constants_, weather, GeologyLawOf(p, cells_.geology[i]),
+                                        w.S[i], w.m_over_M[i], cells_.V_sky[i], &w.buckets[i]);
+    w.T_s[i] = soil.terms.T_s;
+    w.rh_s[i] = soil.terms.rh_s;
+    w.theta[i] = soil.terms.theta;
+  }
+
+  const MossClock::time_point t3 = MossClock::now();
+  // 3a. Germination (eq 3.24) of the seeds made before today, in pool order.
+  const int max_mosses = p.GetInt(MossParam::kMaxMosses);
+  const std::size_t old_count = w.mosses.size();
+  std::vector<bool> alive(old_count, true);
+  std::vector<MossSeed> waiting;
+  waiting.reserve(w.seeds.size());
+  int living = static_cast<int>(old_count);
+  for (const MossSeed& seed : w.seeds) {
+    if (seed.birth_day >= day) {
+      waiting.push_back(seed);
+      continue;
+    }
+    const SpeciesRanges species = SpeciesOf(p, seed.species);
+    const double S_seed = gather->Moss(seed.pos, seed.normal);
+    const double G = FitnessOf(species, w.T_s[seed.cell], w.rh_s[seed.cell], S_seed, g_form).G;
+    const SeedFate fate =
+        SeedDay(G, day - seed.birth_day, seed.kind, species.tau_b, living >= max_mosses, rules_);
+    if (fate == SeedFate::kWaits) {
+      waiting.push_back(seed);
+      continue;
+    }
+    if (fate == SeedFate::kExpires) {
+      ++w.seeds_lost[static_cast<int>(SeedLoss::kExpired)];
+      continue;
+    }
+    // The contest for an occupied place (spec §1.5.7): the day's first mosses and today's births.
+    const double limit2 = (rules_.overlap * s) * (rules_.overlap * s);
+    std::vector<std::size_t> occupants;
+    std::vector<double> priorities;
+    for (const geom::PointHit& h : index->WithinRadius(seed.pos, rules_.overlap * s))
+      if (h.distance_squared < limit2 && alive[h.index]) {
+        occupants.push_back(h.index);
+        priorities.push_back(PlacePriority(SpeciesOf(p, w.mosses[h.index].species),
+                                           w.mosses[h.index].growth.G_moss));
+      }
+    for (std::size_t j = old_count; j < w.mosses.size(); ++j) {
+      const glm::dvec3 d = w.mosses[j].pos - seed.pos;
+      if (alive[j] && glm::dot(d, d) < limit2) {
+        occupants.push_back(j);
+        priorities.push_back(PlacePriority(SpeciesOf(p, w.mosses[j].species), 0.0));
+      }
+    }
+    if (!WinsPlace(PlacePriority(species, 0.0), priorities)) {
+      ++w.seeds_lost[static_cast<int>(SeedLoss::kLostContest)];
+      continue;
+    }
+    for (std::size_t j : occupants) {
+      alive[j] = false;
+      ++w.deaths_contest;
+      --living;
+    }
+    MossPlant moss;
+    moss.pos = seed.pos;
+    moss.normal = seed.normal;
+    moss.cell = seed.cell;
+    moss.species = seed.species;
+    moss.birth_day = day;
+    moss.on_moss = seed.on_moss;
+    w.mosses.push_back(moss);
+    alive.push_back(true);
+    ++living;
+    ++w.births;
+  }
+  w.seeds.swap(waiting);
+
+  // 3b. Growth and death (eqs 3.17-3.21) of the mosses born before today.
+  for (std::size_t j = 0; j < old_count; ++j) {
+    if (!alive[j]) continue;
+    MossPlant& m = w.mosses[j];
+    const SpeciesRanges species = SpeciesOf(p, m.species);
+    const double S_moss = gather->Moss(m.pos, m.normal);
+    const double G = FitnessOf(species, w.T_s[m.cell], w.rh_s[m.cell], S_moss, g_form).G;
+    const GrowthDay grown = AdvanceGrowth(species, G, &m.growth);
+    m.growing = grown.growing;
+    m.S = S_moss;
+    if (grown.dies) {
+      alive[j] = false;
+      ++w.deaths_declined;
+    }
+  }
+  std::vector<MossPlant> next;
+  next.reserve(w.mosses.size());
+  std::vector<bool> was_old;
+  for (std::size_t j = 0; j < w.mosses.size(); ++j)
+    if (alive[j]) {
+      next.push_back(w.mosses[j]);
+      was_old.push_back(j < old_count);
+    }
+  w.mosses.swap(next);
+
+  // 3c-d. Gemmae (eq 3.22) and spores (eq 3.23) of the mosses that grew today; they land among
+  // the mosses as they are after growth and death.
+  centres = CentresOf(w.mosses);
+  Result<geom::PointIndex> after = geom::PointIndex::Build(centres);
+  if (!after.ok()) return;
+  const std::size_t parents = w.mosses.size();
+  // §3.8's mats: a moss with interior_count others within interior_radius·s. A seed rests only on
+  // the surface of such dense moss (§3.3, "密生したコケモデルの表面"), so lone mosses never carry
+  // others and stacks stay cushions on mats, not columns on single mosses.
+  std::vector<bool> dense(parents, false);
+  std::vector<glm::dvec3> dense_centres;
+  std::vector<uint32_t> dense_owner;
+  for (std::size_t j = 0; j < parents; ++j) {
+    dense[j] =
+        static_cast<int>(after->WithinRadius(centres[j], rules_.interior_radius * s).size()) - 1 >=
+        rules_.interior_count;
+    if (dense[j]) {
+      dense_centres.push_back(centres[j]);
+      dense_owner.push_back(static_cast<uint32_t>(j));
+    }
+  }
+  for (std::size_t j = 0; j < parents; ++j) {
+    if (!was_old[j]) continue;
+    const MossPlant parent = w.mosses[j];
+    const bool inside_mat = dense[j];
+    double G_max = parent.G_max;
+    const int gemmae = GemmaeDue(parent.growth.G_moss, rules_.gemma_step, inside_mat, &G_max);
+    w.mosses[j].G_max = G_max;
+    for (int g = 0; g < gemmae; ++g)
+      AddSeed(GemmaStart(parent.pos, rules_.k, &w.growth_rng), parent.species, SeedKind::kGemma,
+              dense_centres, dense_owner);
+    if (MakesSpore(parent.growth.G_moss, parent.growing, rain_day, rules_.spore_G))
+      AddSeed(SporeStart(parent.pos, parent.normal, rules_.l, &w.growth_rng), parent.species,
+              SeedKind::kSpore, dense_centres, dense_owner);
+  }
+
+  // 4. Immigration: one outside spore every immigration_days, at a random surface point.
+  const int every = p.GetInt(MossParam::kImmigrationDays);
+  if (every > 0 && day % every == 0) {
+    const Species species =
+        static_cast<Species>(std::min(2, static_cast<int>(w.place_rng.Uniform() * 3)));
+    ++w.immigrants;
+    PlaceAtRandom(species, true);
+  }
+  std::array<int, kSpeciesCount> pop{};
+  for (const MossPlant& m : w.mosses) ++pop[static_cast<int>(m.species)];
+  w.population.push_back(pop);
+  const MossClock::time_point t4 = MossClock::now();
+  ms_photons_ += MossMs(t0, t1);
+  ms_gather_ += MossMs(t1, t2);
+  ms_soil_ += MossMs(t2, t3);
+  ms_growth_ += MossMs(t3, t4);
+}
+
+Status MossRun::Advance(const run::Observer& observer) {
+  const MossWorld before = world_;
+  while (world_.day < state_.days) {
+    if (observer &&
+        !observer({"grow", static_cast<double>(world_.day), static_cast<double>(state_.days)})) {
+      world_ = before;
+      return run::CancelledStatus();
+    }
+    Day();
+  }
+  if (observer)
+    observer({"grow", static_cast<double>(world_.day), static_cast<double>(state_.days)});
+  return Status::Ok();
+}
+
+std::vector<run::Part> MossRun::Parts() const {
+  run::Part land;
+  land.name = "land";
+  land.mesh = cells_.mesh;
+  return {land};
+}
+
+Result<gltf::Document> MossRun::Document() const {
+  gltf::Document doc;
+  doc.generator = "niwa moss grow";
+  gltf::Mesh mesh;
+  mesh.name = "land";
+  gltf::Primitive primitive;
+  primitive.mesh = cells_.mesh;
+  mesh.primitives.push_back(std::move(primitive));
+  doc.meshes.push_back(std::move(mesh));
+  gltf::Node node;
+  node.name = "land";
+  node.mesh = 0;
+  doc.nodes.push_back(node);
+  doc.scene_nodes = {0};
+  return doc;
+}
+
+std::string MossRun::Hash(const std::string& prefix) const {
+  return EncodeMossHash(state_, prefix);
+}
+
+Result<Estimate> MossRun::ExportEstimate(const std::string& format) const {
+  if (format != "json")
+    return Status::Error("format", "'" + format + "' is not built yet; must be json");
+  Estimate e;
+  e.memory_bytes = 160.0 * static_cast<double>(world_.mosses.size());
+  e.seconds = 1e-6 * static_cast<double>(world_.mosses.size());
+  e.what = "writing " + FormatCount(static_cast<double>(world_.mosses.size())) + " mosses";
+  return e;
+}
+
+std::string MossRun::PhotonDayJson() const {
+  Pcg32 rng = world_.photon_rng;
+  PhotonMap map;
+  MossOccluders occluders;
+  occluders.Build(CentresOf(world_.mosses), 0.5 * rules_.s);
+  TracePhotons(cells_, occluders, light_, state_.params.GetInt(MossParam::kPhotons), &rng, &map);
+  nlohmann::ordered_json j;
+  j["study"] = "moss";
+  j["scene"] = state_.scene;
+  j["url"] = Hash("");
+  j["day"] = world_.day + 1;
+  j["mosses"] = world_.mosses.size();
+  j["emitted_sun"] = map.emitted_sun;
+  j["emitted_sky"] = map.emitted_sky;
+  j["dPhi_sun"] = map.dPhi_sun;
+  j["dPhi_sky"] = map.dPhi_sky;
+  j["power_emitted"] = map.power_emitted;
+  j["stored_by_depth"] = map.stored_by_depth;
+  j["power_by_depth"] = map.power_by_depth;
+  j["escaped"] = map.escaped;
+  j["absorbed"] = map.absorbed;
+  // Per region: stored photons first-hit and bounced, and the cells' mean gathered S.
+  Result<PhotonGather> gather = PhotonGather::Build(map, light_.r_gather);
+  const std::size_t regions = cells_.region_names.size();
+  std::vector<int64_t> direct(regions, 0), bounced(regions, 0), on_moss(1, 0);
+  for (const Photon& p : map.photons) {
+    if (p.on_moss) {
+      ++on_moss[0];
+      continue;
+    }
+    ++(p.depth == 0 ? direct : bounced)[cells_.region[p.target]];
+  }
+  std::vector<double> S(regions, 0.0), area(regions, 0.0);
+  for (std::size_t i = 0; gather.ok() && i < cells_.size(); ++i) {
+    S[cells_.region[i]] += cells_.area[i] * gather->Soil(cells_.centroid[i], cells_.normal[i]);
+    area[cells_.region[i]] += cells_.area[i];
+  }
+  for (std::size_t r = 0; r < regions; ++r)
+    j["regions"][cells_.region_names[r]] = {{"direct", direct[r]},
+                                            {"bounced", bounced[r]},
+                                            {"mean_S", area[r] > 0 ? S[r] / area[r] : 0.0}};
+  j["on_mosses"] = on_moss[0];
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+std::string MossScenesJson() {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const std::string& name : SceneNames()) {
+    Result<MossScene> scene = BuildScene(name);
+    if (!scene.ok()) continue;
+    Result<SoilCells> cells = MakeSoilCells(*scene, SoilCellOptions{});
+    nlohmann::ordered_json o;
+    o["name"] = name;
+    o["description"] = scene->description;
+    o["triangles"] = scene->mesh.triangle_count();
+    o["cells"] = cells.ok() ? cells->size() : 0;
+    std::array<int, kGeologyCount> by_geology{};
+    if (cells.ok())
+      for (Geology g : cells->geology) ++by_geology[static_cast<int>(g)];
+    for (int g = 0; g < kGeologyCount; ++g)
+      o["by_geology"][GeologyName(static_cast<Geology>(g))] = by_geology[g];
+    o["regions"] = scene->region_names;
+    list.push_back(o);
+  }
+  nlohmann::ordered_json j;
+  j["scenes"] = list;
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+std::string MossRun::MossesJson() const {
+  nlohmann::ordered_json j;
+  j["study"] = "moss";
+  j["url"] = Hash("");
+  j["day"] = world_.day;
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const MossPlant& m : world_.mosses) {
+    nlohmann::ordered_json o;
+    o["species"] = SpeciesName(m.species);
+    o["pos"] = {m.pos.x, m.pos.y, m.pos.z};
+    o["normal"] = {m.normal.x, m.normal.y, m.normal.z};
+    o["birth_day"] = m.birth_day;
+    o["G_moss"] = m.growth.G_moss;
+    o["on_moss"] = m.on_moss;
+    list.push_back(o);
+  }
+  j["mosses"] = list;
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+std::string MossRun::StatsJson() const {
+  const MossWorld& w = world_;
+  nlohmann::ordered_json j;
+  j["study"] = "moss";
+  j["scene"] = state_.scene;
+  j["preset"] = state_.preset;
+  j["url"] = Hash("");
+  j["days"] = w.day;
+  j["seed"] = state_.seed;
+  j["photons"] = state_.params.GetInt(MossParam::kPhotons);
+  j["indirect"] = state_.params.GetInt(MossParam::kIndirect);
+  // Soil cells by geology and region.
+  std::array<int, kGeologyCount> by_geology{};
+  std::vector<int> by_region(cells_.region_names.size(), 0);
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    ++by_geology[static_cast<int>(cells_.geology[i])];
+    ++by_region[cells_.region[i]];
+  }
+  nlohmann::ordered_json cells;
+  cells["total"] = cells_.size();
+  for (int g = 0; g < kGeologyCount; ++g)
+    cells["by_geology"][GeologyName(static_cast<Geology>(g))] = by_geology[g];
+  for (std::size_t r = 0; r < by_region.size(); ++r)
+    cells["by_region"][cells_.region_names[r]] = by_region[r];
+  j["cells"] = cells;
+  // Mosses by species, region, orientation; on mosses; coverage of the faces by orientation.
+  nlohmann::ordered_json mosses;
+  mosses["total"] = w.mosses.size();
+  std::array<int, kSpeciesCount> by_species{};
+  std::vector<int> moss_region(cells_.region_names.size(), 0);
+  std::map<std::string, int> by_orientation{{"up", 0}, {"down", 0}, {"vertical", 0}};
+  int on_moss = 0;
+  std::vector<int> on_cell(cells_.size(), 0);
+  for (const MossPlant& m : w.mosses) {
+    ++by_species[static_cast<int>(m.species)];
+    ++moss_region[cells_.region[m.cell]];
+    ++by_orientation[OrientationName(cells_.normal[m.cell])];
+    if (m.on_moss) {
+      ++on_moss;
+    } else {
+      ++on_cell[m.cell];
+    }
+  }
+  for (int s = 0; s < kSpeciesCount; ++s)
+    mosses["by_species"][SpeciesName(static_cast<Species>(s))] = by_species[s];
+  for (std::size_t r = 0; r < moss_region.size(); ++r)
+    mosses["by_region"][cells_.region_names[r]] = moss_region[r];
+  for (const char* o : {"up", "down", "vertical"}) mosses["by_orientation"][o] = by_orientation[o];
+  mosses["on_mosses"] = on_moss;
+  // By their light on their last day of growth (the day's newborn: 0 until they grow).
+  std::map<std::string, int> bands;
+  for (const MossPlant& m : w.mosses) ++bands[IrradianceBand(m.S)];
+  for (const char* b : {"0", "0-10", "10-30", "30-60", "60-120", ">120"})
+    mosses["by_irradiance_band"][b] = bands[b];
+  // Coverage (spec §3): each cell min(1, n·s²/A), area-weighted by face orientation.
+  std::map<std::string, std::pair<double, double>> coverage;
+  const double s2 = rules_.s * rules_.s;
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    auto& [covered, area] = coverage[OrientationName(cells_.normal[i])];
+    covered += std::min(cells_.area[i], on_cell[i] * s2);
+    area += cells_.area[i];
+  }
+  for (const char* o : {"up", "down", "vertical"})
+    mosses["coverage"][o] = coverage[o].second > 0 ? coverage[o].first / coverage[o].second : 0.0;
+  j["mosses"] = mosses;
+  nlohmann::ordered_json population = nlohmann::ordered_json::array();
+  for (const auto& pop : w.population) population.push_back({pop[0], pop[1], pop[2]});
+  j["population"] = {{"species", {"gingoke", "haigoke", "sugigoke"}}, {"by_day", population}};
+  // Seeds, births and deaths.
+  std::array<int, 2> waiting{};
+  for (const MossSeed& seed : w.seeds) ++waiting[static_cast<int>(seed.kind)];
+  nlohmann::ordered_json seeds;
+  seeds["waiting"] = {{"gemma", waiting[0]}, {"spore", waiting[1]}};
+  seeds["made"] = {
+      {"gemma", w.seeds_made[0]}, {"spore", w.seeds_made[1]}, {"immigrant", w.immigrants}};
+  for (int l = 0; l < static_cast<int>(SeedLoss::kCount); ++l)
+    seeds["lost"][SeedLossName(static_cast<SeedLoss>(l))] = w.seeds_lost[l];
+  j["seeds"] = seeds;
+  j["births"] = w.births;
+  j["deaths"] = {{"declined", w.deaths_declined}, {"lost_contest", w.deaths_contest}};
+  // The photons: the last day's and every day's, by bounce depth.
+  nlohmann::ordered_json photons;
+  photons["emitted_sun"] = w.emitted_sun;
+  photons["emitted_sky"] = w.emitted_sky;
+  photons["stored_by_depth"] = w.stored_by_depth;
+  photons["stored_by_depth_all_days"] = w.stored_by_depth_total;
+  j["photons_last_day"] = photons;
+  // The last day's soil per geology: mean S, T_s, rh_s, θ (area-weighted).
+  nlohmann::ordered_json soil;
+  for (int g = 0; g < kGeologyCount; ++g) {
+    double area = 0, S = 0, T_s = 0, rh_s = 0, theta = 0;
+    for (std::size_t i = 0; i < cells_.size(); ++i) {
+      if (static_cast<int>(cells_.geology[i]) != g) continue;
+      const double a = cells_.area[i];
+      area += a, S += a * w.S[i], T_s += a * w.T_s[i], rh_s += a * w.rh_s[i],
+          theta += a * w.theta[i];
+    }
+    if (area <= 0 || w.day == 0) continue;
+    soil[GeologyName(static_cast<Geology>(g))] = {
+        {"S", S / area}, {"T_s", T_s / area}, {"rh_s", rh_s / area}, {"theta", theta / area}};
+  }
+  j["soil_last_day"] = soil.is_null() ? nlohmann::ordered_json::object() : soil;
+  // The stages' wall time (the only fields that differ between runs of one state).
+  j["ms"] = ms_photons_ + ms_gather_ + ms_soil_ + ms_growth_;
+  j["ms_photons"] = ms_photons_;
+  j["ms_gather"] = ms_gather_;
+  j["ms_soil"] = ms_soil_;
+  j["ms_growth"] = ms_growth_;
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+}  // namespace niwa::moss

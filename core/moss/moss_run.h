@@ -1,0 +1,138 @@
+// The moss study's run (Nomura 2010 §3.3, §3.7; spec §1.1, §1.5): a run::StudyRun that advances
+// day by day on a built-in scene: the photon pass through the land and the mosses, the gather, the
+// soil of every cell from the day's weather (eqs 3.2-3.16, m/M from the mosses near it), then the
+// mosses in the thesis's order (germination, growth and death, gemmae, spores), the landing of new
+// seeds on faces and on mosses, the contest for occupied places, immigration and the caps; with
+// progress and cancel, and its estimate refused up front over the budget; the stats time the stages
+// (ms_* fields, the only bytes that differ between runs). Does not: load a mesh file, read a
+// weather file, smooth the light over days (light_smoothing_days is refused above 0), or write moss
+// tufts (Document() is the land alone).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+#include "base/budget.h"
+#include "base/status.h"
+#include "moss/fitness.h"
+#include "moss/life_cycle.h"
+#include "moss/moss_state.h"
+#include "moss/photons.h"
+#include "moss/soil.h"
+#include "moss/soil_cells.h"
+#include "random/pcg32.h"
+#include "run/study_run.h"
+
+namespace niwa::moss {
+
+// A living moss: its centre (on a face, or s from the moss it rests on), the normal of what it
+// grows on, its soil cell (a resting moss: its supporter's), species, birth day and growth.
+struct MossPlant {
+  glm::dvec3 pos{0}, normal{0, 1, 0};
+  uint32_t cell = 0;
+  Species species = Species::kGingoke;
+  int birth_day = 0;
+  MossGrowth growth;
+  double G_max = 0;  // the running maximum of G_moss (gemmae, spec §4.20)
+  bool on_moss = false;
+  bool growing = false;  // today's D > 0
+  double S = 0;          // its light on its last day of growth [W/m²]
+};
+
+// A waiting seed (a gemma or a spore) where it landed.
+struct MossSeed {
+  glm::dvec3 pos{0}, normal{0, 1, 0};
+  uint32_t cell = 0;
+  Species species = Species::kGingoke;
+  SeedKind kind = SeedKind::kGemma;
+  int birth_day = 0;
+  bool on_moss = false;
+};
+
+// Why a seed left the pool without a moss, or never entered it.
+enum class SeedLoss : int { kFellOff, kBackFace, kLostContest, kExpired, kCap, kCount };
+
+// Everything a day changes (copied at the start of an Advance, so a cancel restores it).
+struct MossWorld {
+  int day = 0;
+  std::vector<MossPlant> mosses;
+  std::vector<MossSeed> seeds;
+  std::vector<Bucket> buckets;                        // per cell
+  std::vector<double> S, T_s, rh_s, theta, m_over_M;  // per cell, the last day's
+  Pcg32 photon_rng, growth_rng, rain_rng, place_rng;
+  int64_t births = 0, deaths_declined = 0, deaths_contest = 0;
+  std::array<int64_t, 2> seeds_made{};  // by SeedKind
+  int64_t immigrants = 0;
+  std::array<int64_t, static_cast<int>(SeedLoss::kCount)> seeds_lost{};
+  std::vector<std::array<int, kSpeciesCount>> population;  // day 0 .. day
+  int emitted_sun = 0, emitted_sky = 0;                    // the last day's
+  std::vector<int64_t> stored_by_depth;                    // the last day's
+  std::vector<int64_t> stored_by_depth_total;              // over every day
+};
+
+class MossRun : public run::StudyRun {
+ public:
+  // Builds the scene and its soil cells, places n_init mosses (day 0) and checks the estimate of
+  // the whole run against the budget first. Errors name state fields ("scene", "days", a row
+  // such as "light_smoothing_days" or "sun_path") or the budget's limit.
+  static Result<MossRun> Start(const MossState& state, const Budget& budget);
+  // What the run of `state` on `cells` needs (calibrated upper bounds).
+  static Estimate RunEstimate(const MossState& state, std::size_t cells);
+
+  const char* study() const override { return "moss"; }
+  const char* unit() const override { return "days"; }
+  int done() const override { return world_.day; }
+  int target() const override { return state_.days; }
+  Status Advance(const run::Observer& observer) override;
+  std::vector<run::Part> Parts() const override;
+  Result<gltf::Document> Document() const override;
+  std::string StatsJson() const override;
+  std::string Hash(const std::string& prefix) const override;
+  Result<Estimate> ExportEstimate(const std::string& format) const override;
+
+  // Every living moss (species, pos, normal, birth_day, G_moss) as one JSON object.
+  std::string MossesJson() const;
+  // The next day's photon map (traced through the land and today's mosses, without advancing):
+  // photons emitted, stored and by depth, power, and per region the stored photons (first hits,
+  // bounced) and the cells' mean gathered S.
+  std::string PhotonDayJson() const;
+  // Where a seed starting at `start` would land among today's mosses (spec §1.5.6 and the mat
+  // rule: it rests only on mosses inside a mat); false with the loss when it is dropped.
+  bool LandSeed(const glm::dvec3& start, MossSeed* seed, SeedLoss* loss) const;
+  const MossWorld& world() const { return world_; }
+  const SoilCells& cells() const { return cells_; }
+  const PhotonMap& photon_map() const { return map_; }
+
+ private:
+  MossRun() = default;
+  void Day();  // one day, world_.day + 1
+  // Where a seed starting at `start` comes to rest (spec §1.5.6); false with the loss otherwise.
+  // `centres` are the mosses a seed may rest on (those inside a mat), owner[k] their index.
+  bool Land(const glm::dvec3& start, const std::vector<glm::dvec3>& centres,
+            const std::vector<uint32_t>& owner, MossSeed* seed, SeedLoss* loss) const;
+  void AddSeed(const glm::dvec3& start, Species species, SeedKind kind,
+               const std::vector<glm::dvec3>& centres, const std::vector<uint32_t>& owner);
+  void PlaceAtRandom(Species species, bool as_seed);
+
+  MossState state_;
+  Budget budget_;
+  SoilCells cells_;
+  std::vector<double> cumulative_area_;
+  PhotonLight light_;
+  SoilConstants constants_{};
+  LifeRules rules_{};
+  MossWorld world_;
+  PhotonMap map_;  // scratch: the last day's photons
+  // Milliseconds over every Advance (not restored by a cancel): tracing; the indexes and the
+  // cells' S and m/M; the soil; the life cycle (its own gathers included).
+  double ms_photons_ = 0, ms_gather_ = 0, ms_soil_ = 0, ms_growth_ = 0;
+  MossOccluders occluders_;  // scratch
+};
+
+// Every built-in scene: name, description, triangles, soil cells by geology, regions.
+std::string MossScenesJson();
+
+}  // namespace niwa::moss

@@ -1,0 +1,349 @@
+// The moss study's photon pass and gather (photons.h).
+#include "moss/photons.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <limits>
+
+#include "geom/ray_cast.h"
+#include "light/sun.h"
+#include "math/det_math.h"
+#include "moss/sampling.h"
+
+namespace niwa::moss {
+namespace {
+
+constexpr double kPhotonOffset = 1e-5;  // m: a bounce leaves this far off the face it hit
+
+// The first t > 0 at which origin + t·dir (unit) enters the sphere; false when it does not or the
+// origin is inside.
+bool EnterSphere(const glm::dvec3& origin, const glm::dvec3& dir, const glm::dvec3& c, double r,
+                 double* t) {
+  const glm::dvec3 m = origin - c;
+  const double b = glm::dot(m, dir);
+  const double cc = glm::dot(m, m) - r * r;
+  if (cc <= 0.0 || b > 0.0) return false;
+  const double disc = b * b - cc;
+  if (disc < 0.0) return false;
+  *t = -b - std::sqrt(disc);
+  return *t > 0.0;
+}
+
+// Does origin + t·dir, t > 0, pass within R of c?
+bool MeetsSphere(const glm::dvec3& origin, const glm::dvec3& dir, const glm::dvec3& c, double R) {
+  const glm::dvec3 m = c - origin;
+  const double t = glm::dot(m, dir);
+  if (t <= 0.0) return glm::dot(m, m) <= R * R;
+  return glm::dot(m, m) - t * t <= R * R;
+}
+
+glm::dvec3 SunSquarePoint(const PhotonLight& light, Pcg32* rng, glm::dvec3* normal) {
+  const glm::dvec3 n = -light.sun;
+  glm::dvec3 b1, b2;
+  BasisAbout(n, &b1, &b2);
+  const double side = light.sun_size * light.R;
+  const double u = rng->Uniform(), v = rng->Uniform();
+  *normal = n;
+  return light.centre + (light.sun_distance * light.R) * light.sun + ((u - 0.5) * side) * b1 +
+         ((v - 0.5) * side) * b2;
+}
+
+}  // namespace
+
+Result<PhotonLight> PhotonLightOf(const MossParams& params, const SoilCells& cells) {
+  if (params.GetInt(MossParam::kSunPath) != 0)
+    return Status::Error("sun_path", "1 (arc) is not built yet; must be 0 (fixed)");
+  const double altitude = params.Get(MossParam::kSunAltitude);
+  PhotonLight light;
+  light.sun = glm::dvec3(light::SunDirection(
+      static_cast<float>(altitude), static_cast<float>(params.Get(MossParam::kSunAzimuth))));
+  light.sun = glm::normalize(light.sun);
+  light.centre = cells.centre;
+  light.R = cells.radius;
+  light.sun_distance = params.Get(MossParam::kSunDistance);
+  light.sun_size = params.Get(MossParam::kSunSize);
+  light.S_sun = params.Get(MossParam::kIBeam) * params.Get(MossParam::kN) / 24.0;
+  light.S_sky = params.Get(MossParam::kSSky);
+  light.rho_mesh = params.Get(MossParam::kRhoMesh);
+  light.rho_moss = params.Get(MossParam::kRhoMoss);
+  light.max_bounces = params.GetInt(MossParam::kMaxBounces);
+  light.indirect = params.GetInt(MossParam::kIndirect) != 0;
+  light.r_gather = params.Get(MossParam::kRGather);
+  return light;
+}
+
+// ---- the mosses' grid
+
+void MossOccluders::Build(const std::vector<glm::dvec3>& centres, double radius) {
+  centres_ = centres;
+  radius_ = radius;
+  start_.clear();
+  items_.clear();
+  dims_[0] = dims_[1] = dims_[2] = 0;
+  if (centres_.empty()) return;
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+  for (const glm::dvec3& c : centres_) lo = glm::min(lo, c), hi = glm::max(hi, c);
+  lo -= glm::dvec3(radius);
+  hi += glm::dvec3(radius);
+  // Cells of two diameters, grown until the grid has at most 2^21 cells.
+  cell_ = 4.0 * radius;
+  const glm::dvec3 extent = hi - lo;
+  for (;;) {
+    for (int a = 0; a < 3; ++a)
+      dims_[a] = std::max(1, static_cast<int>(std::ceil(extent[a] / cell_)));
+    if (static_cast<double>(dims_[0]) * dims_[1] * dims_[2] <= (1 << 21)) break;
+    cell_ *= 2.0;
+  }
+  lo_ = lo;
+  const std::size_t n_cells = static_cast<std::size_t>(dims_[0]) * dims_[1] * dims_[2];
+  start_.assign(n_cells + 1, 0);
+  auto range = [&](const glm::dvec3& c, int a, int* i0, int* i1) {
+    *i0 = std::clamp(static_cast<int>(std::floor((c[a] - radius_ - lo_[a]) / cell_)), 0,
+                     dims_[a] - 1);
+    *i1 = std::clamp(static_cast<int>(std::floor((c[a] + radius_ - lo_[a]) / cell_)), 0,
+                     dims_[a] - 1);
+  };
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) {
+      for (std::size_t k = 0; k < n_cells; ++k) start_[k + 1] += start_[k];
+      items_.assign(start_[n_cells], 0);
+    }
+    std::vector<uint32_t> fill;
+    if (pass == 1) fill.assign(start_.begin(), start_.end() - 1);
+    for (uint32_t s = 0; s < centres_.size(); ++s) {
+      int x0, x1, y0, y1, z0, z1;
+      range(centres_[s], 0, &x0, &x1);
+      range(centres_[s], 1, &y0, &y1);
+      range(centres_[s], 2, &z0, &z1);
+      for (int z = z0; z <= z1; ++z)
+        for (int y = y0; y <= y1; ++y)
+          for (int x = x0; x <= x1; ++x) {
+            const std::size_t k = (static_cast<std::size_t>(z) * dims_[1] + y) * dims_[0] + x;
+            if (pass == 0)
+              ++start_[k + 1];
+            else
+              items_[fill[k]++] = s;
+          }
+    }
+  }
+}
+
+bool MossOccluders::FirstHitLinear(const glm::dvec3& origin, const glm::dvec3& dir, double max_t,
+                                   double* t, uint32_t* index) const {
+  bool found = false;
+  double best = max_t;
+  for (uint32_t s = 0; s < centres_.size(); ++s) {
+    double ts;
+    if (EnterSphere(origin, dir, centres_[s], radius_, &ts) && ts <= best &&
+        (!found || ts < best)) {
+      best = ts, *index = s, found = true;
+    }
+  }
+  if (found) *t = best;
+  return found;
+}
+
+bool MossOccluders::FirstHit(const glm::dvec3& origin, const glm::dvec3& dir, double max_t,
+                             double* t, uint32_t* index) const {
+  if (centres_.empty()) return false;
+  // Clip the ray to the grid's box (slabs).
+  double t0 = 0.0, t1 = max_t;
+  const glm::dvec3 hi = lo_ + cell_ * glm::dvec3(dims_[0], dims_[1], dims_[2]);
+  for (int a = 0; a < 3; ++a) {
+    if (dir[a] == 0.0) {
+      if (origin[a] < lo_[a] || origin[a] > hi[a]) return false;
+      continue;
+    }
+    double ta = (lo_[a] - origin[a]) / dir[a], tb = (hi[a] - origin[a]) / dir[a];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+    if (t0 > t1) return false;
+  }
+  // 3-D DDA (Amanatides and Woo 1987) from the entry point; in each cell the nearest sphere whose
+  // entry lies before the cell's exit is the answer (a later one may sit in a later cell).
+  const glm::dvec3 p = origin + t0 * dir;
+  int cell[3], step[3];
+  double next[3], delta[3];
+  for (int a = 0; a < 3; ++a) {
+    cell[a] = std::clamp(static_cast<int>(std::floor((p[a] - lo_[a]) / cell_)), 0, dims_[a] - 1);
+    if (dir[a] > 0.0) {
+      step[a] = 1;
+      next[a] = (lo_[a] + (cell[a] + 1) * cell_ - origin[a]) / dir[a];
+      delta[a] = cell_ / dir[a];
+    } else if (dir[a] < 0.0) {
+      step[a] = -1;
+      next[a] = (lo_[a] + cell[a] * cell_ - origin[a]) / dir[a];
+      delta[a] = -cell_ / dir[a];
+    } else {
+      step[a] = 0;
+      next[a] = std::numeric_limits<double>::infinity();
+      delta[a] = std::numeric_limits<double>::infinity();
+    }
+  }
+  for (;;) {
+    const double exit = std::min(std::min(next[0], next[1]), std::min(next[2], t1));
+    const std::size_t k =
+        (static_cast<std::size_t>(cell[2]) * dims_[1] + cell[1]) * dims_[0] + cell[0];
+    bool found = false;
+    double best = exit;
+    for (uint32_t j = start_[k]; j < start_[k + 1]; ++j) {
+      const uint32_t s = items_[j];
+      double ts;
+      if (EnterSphere(origin, dir, centres_[s], radius_, &ts) && ts <= best &&
+          (!found || ts < best || (ts == best && s < *index))) {
+        best = ts, *index = s, found = true;
+      }
+    }
+    if (found) {
+      *t = best;
+      return true;
+    }
+    if (exit >= t1) return false;
+    const int a = next[0] <= next[1] ? (next[0] <= next[2] ? 0 : 2) : (next[1] <= next[2] ? 1 : 2);
+    cell[a] += step[a];
+    if (cell[a] < 0 || cell[a] >= dims_[a]) return false;
+    next[a] += delta[a];
+  }
+}
+
+// ---- emission
+
+void EmitSunPhoton(const PhotonLight& light, Pcg32* rng, glm::dvec3* origin, glm::dvec3* dir) {
+  glm::dvec3 n;
+  *origin = SunSquarePoint(light, rng, &n);
+  const glm::dvec3 m = light.centre - *origin;
+  const double D = glm::length(m);
+  const glm::dvec3 axis = m / D;
+  const double sin_a = std::min(1.0, light.R / D);
+  const double cos_a = std::sqrt(std::max(0.0, 1.0 - sin_a * sin_a));
+  glm::dvec3 b1, b2;
+  BasisAbout(axis, &b1, &b2);
+  for (;;) {
+    // Uniform in the sphere's cone, kept with probability cos θ to the light's normal: together
+    // the cosine weight of eq 3.1 restricted to the directions that meet the sphere.
+    const double cos_g = 1.0 - rng->Uniform() * (1.0 - cos_a);
+    const double sin_g = std::sqrt(std::max(0.0, 1.0 - cos_g * cos_g));
+    double s = 0, c = 1;
+    det::SinCos(2.0 * det::kPi * rng->Uniform(), &s, &c);
+    const glm::dvec3 w = cos_g * axis + (sin_g * c) * b1 + (sin_g * s) * b2;
+    const double cos_theta = glm::dot(w, n);
+    if (rng->Uniform() < cos_theta) {
+      *dir = w;
+      return;
+    }
+  }
+}
+
+void EmitSunPhotonByRejection(const PhotonLight& light, Pcg32* rng, glm::dvec3* origin,
+                              glm::dvec3* dir) {
+  glm::dvec3 n;
+  *origin = SunSquarePoint(light, rng, &n);
+  do {
+    *dir = CosineDirection(n, rng);  // moss eq. 3.1
+  } while (!MeetsSphere(*origin, *dir, light.centre, light.R));
+}
+
+// ---- tracing
+
+void TracePhotons(const SoilCells& cells, const MossOccluders& mosses, const PhotonLight& light,
+                  int photons, Pcg32* rng, PhotonMap* map) {
+  map->photons.clear();
+  map->stored_by_depth.assign(static_cast<std::size_t>(light.max_bounces) + 1, 0);
+  map->power_by_depth.assign(static_cast<std::size_t>(light.max_bounces) + 1, 0.0);
+  map->escaped = map->absorbed = 0;
+  const double piR2 = det::kPi * light.R * light.R;
+  // The budget's sky share (spec §1.3); no sky photons without indirect light.
+  const bool sky = light.indirect && light.S_sky > 0.0;
+  const double f_sky = sky ? 2.0 * light.S_sky / (light.S_sun + 2.0 * light.S_sky) : 0.0;
+  map->emitted_sky = static_cast<int>(std::lround(photons * f_sky));
+  map->emitted_sun = photons - map->emitted_sky;
+  map->dPhi_sun = map->emitted_sun > 0 ? light.S_sun * piR2 / map->emitted_sun : 0.0;
+  map->dPhi_sky = map->emitted_sky > 0 ? 2.0 * piR2 * light.S_sky / map->emitted_sky : 0.0;
+  map->power_emitted = map->emitted_sun * map->dPhi_sun + map->emitted_sky * map->dPhi_sky;
+  for (int i = 0; i < photons; ++i) {
+    glm::dvec3 origin, dir;
+    double power;
+    if (i < map->emitted_sun) {
+      EmitSunPhoton(light, rng, &origin, &dir);
+      power = map->dPhi_sun;
+    } else {
+      // A sky photon: a direction uniform over the upper hemisphere, a parallel beam from a disc
+      // of radius R at 2R on the sky side.
+      const double y = rng->Uniform();
+      const double r_xz = std::sqrt(std::max(0.0, 1.0 - y * y));
+      double s = 0, c = 1;
+      det::SinCos(2.0 * det::kPi * rng->Uniform(), &s, &c);
+      const glm::dvec3 to_sky(r_xz * c, y, r_xz * s);
+      glm::dvec3 b1, b2;
+      BasisAbout(to_sky, &b1, &b2);
+      const double rr = light.R * std::sqrt(rng->Uniform());
+      det::SinCos(2.0 * det::kPi * rng->Uniform(), &s, &c);
+      origin = light.centre + (2.0 * light.R) * to_sky + (rr * c) * b1 + (rr * s) * b2;
+      dir = -to_sky;
+      power = map->dPhi_sky;
+    }
+    for (int depth = 0;; ++depth) {
+      const geom::RayHit hit =
+          geom::FirstHit(cells.mesh, cells.bvh, glm::vec3(origin), glm::vec3(dir),
+                         std::numeric_limits<float>::infinity());
+      double t_moss = 0;
+      uint32_t moss = 0;
+      const double t_mesh =
+          hit.hit ? static_cast<double>(hit.distance) : std::numeric_limits<double>::infinity();
+      const bool on_moss = mosses.FirstHit(origin, dir, t_mesh, &t_moss, &moss);
+      if (!hit.hit && !on_moss) {
+        ++map->escaped;
+        break;
+      }
+      Photon p;
+      p.depth = static_cast<uint8_t>(depth);
+      p.power = power;
+      p.on_moss = on_moss;
+      if (on_moss) {
+        p.position = origin + t_moss * dir;
+        p.normal = glm::normalize(p.position - mosses.centre(moss));
+        p.target = moss;
+      } else {
+        p.position = glm::dvec3(hit.point);
+        const glm::dvec3 n = cells.normal[hit.triangle];
+        p.normal = glm::dot(n, dir) < 0.0 ? n : -n;  // the side hit
+        p.target = hit.triangle;
+      }
+      map->photons.push_back(p);
+      ++map->stored_by_depth[depth];
+      map->power_by_depth[depth] += power;
+      // Russian roulette (§3.4): reflected with probability ρ, power kept; else absorbed.
+      if (!light.indirect || depth >= light.max_bounces ||
+          rng->Uniform() >= (on_moss ? light.rho_moss : light.rho_mesh)) {
+        ++map->absorbed;
+        break;
+      }
+      dir = CosineDirection(p.normal, rng);  // moss eq. 3.1 about the surface normal
+      origin = p.position + kPhotonOffset * p.normal;
+    }
+  }
+}
+
+// ---- the gather
+
+Result<PhotonGather> PhotonGather::Build(const PhotonMap& map, double r_gather) {
+  std::vector<glm::dvec3> points;
+  points.reserve(map.photons.size());
+  for (const Photon& p : map.photons) points.push_back(p.position);
+  Result<geom::PointIndex> index = geom::PointIndex::Build(std::move(points));
+  if (!index.ok()) return index.status();
+  return PhotonGather(std::move(*index), &map, r_gather);
+}
+
+double PhotonGather::Gather(const glm::dvec3& x, const glm::dvec3& n, bool all) const {
+  double sum = 0.0;
+  for (const geom::PointHit& h : index_.WithinRadius(x, r_)) {
+    const Photon& p = map_->photons[h.index];
+    if ((all || !p.on_moss) && glm::dot(p.normal, n) > 0.5) sum += p.power;
+  }
+  return sum / (det::kPi * r_ * r_);
+}
+
+}  // namespace niwa::moss

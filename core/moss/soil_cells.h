@@ -1,0 +1,72 @@
+// The moss study's soil cells on a land mesh (Nomura 2010 §3.2, §3.5.3; spec §1.2): every triangle
+// split by longest-edge bisection until no edge is longer than soil_edge, one soil cell per
+// resulting triangle with its centroid, unit normal, area, geology, region, soil depth h (the
+// thickness of the solid along y, by a ray through core/geom's BVH) and, when asked, its sky view
+// V_sky (64 cosine-weighted Hammersley rays); the geology of a loaded mesh from its colours.
+// Does not: sample textures (a loaded mesh's baseColorTexture is not read yet: COLOR_0 and the
+// material's colour only), keep a cell's water or light (the run does), or load files.
+#pragma once
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+#include "base/status.h"
+#include "geom/bvh.h"
+#include "geom/tri_mesh.h"
+#include "io/mesh_reader.h"
+#include "moss/moss.h"
+#include "moss/scenes.h"
+
+namespace niwa::moss {
+
+struct SoilCellOptions {
+  double soil_edge = 0.075;        // m (row soil_edge)
+  double h_max = 1000;             // mm: open ground and the cap (row h_max)
+  double h_wall = 1;               // mm: near-vertical faces (row h_wall)
+  std::size_t max_cells = 200000;  // above it soil_edge is doubled, with a notice (spec §1.2)
+  bool sky_view = false;           // compute V_sky (read by the sky-view longwave only)
+};
+
+// The land after splitting: triangle i of `mesh` is soil cell i.
+struct SoilCells {
+  geom::TriMesh mesh;                        // positions and indices only
+  geom::Bvh bvh;                             // over mesh
+  std::vector<glm::dvec3> centroid, normal;  // normal: unit, from the winding
+  std::vector<double> area;                  // m²
+  std::vector<Geology> geology;
+  std::vector<uint8_t> region;
+  std::vector<std::string> region_names;
+  std::vector<double> h;      // soil depth [mm], in [h_wall, h_max]
+  std::vector<double> V_sky;  // sky view in [0, 1]; all 1 unless options.sky_view
+  glm::dvec3 centre{0};       // the enclosing sphere: bounding-box centre
+  double radius = 0;          //   and half-diagonal R (spec §1.3)
+  double soil_edge = 0;       // the edge used (doubled from the option when over max_cells)
+  std::vector<std::string> notices;
+  std::size_t size() const { return area.size(); }
+};
+
+// Near-vertical faces (|n_y| ≤ 0.1, "壁の側面") get h_wall; others h along ∓y (spec §1.2).
+constexpr double kVerticalNy = 0.1;
+constexpr int kSkyViewRays = 64;
+
+// The soil cells of a scene (built-in, or from SceneFromMesh). Error "scene" for a mesh without
+// triangles, or when even soil_edge doubled 16 times leaves more than max_cells cells.
+Result<SoilCells> MakeSoilCells(const MossScene& scene, const SoilCellOptions& options);
+
+// The nearest of the three reference colours of fig 3.1 (spec §1.2: humus #4A3322, sandy
+// #C29A5B, asphalt #808080) to an sRGB colour (components in [0, 1]); ties go to the lower
+// geology.
+Geology GeologyOfColour(const glm::dvec3& srgb);
+// A material name containing "humus", "sand" or "asphalt" (any case) names the geology; false
+// otherwise.
+bool GeologyOfMaterialName(const std::string& name, Geology* geology);
+
+// A loaded mesh as a scene: each triangle's geology from its material's name, else the mean of its
+// corners' COLOR_0 (io/mesh_reader.h kColorAttribute, linear, times the material's base colour)
+// turned to sRGB, else the material's base colour, else humus; one region "all".
+MossScene SceneFromMesh(const geom::TriMesh& mesh, const std::vector<io::MeshMaterial>& materials,
+                        const std::string& name);
+
+}  // namespace niwa::moss

@@ -1,0 +1,241 @@
+// The photon pass and gather (core/moss/photons.h): eq 3.1's sampler, the emission against its
+// literal rejection form, the light's power, the open plane's direct irradiance, indirect off,
+// bounces on the thesis scene, and the mosses' grid as occluders.
+#include "moss/photons.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "moss/sampling.h"
+
+namespace niwa::moss {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Lit {
+  SoilCells cells;
+  PhotonLight light;
+};
+Lit LitScene(const std::string& scene, MossParams params) {
+  Lit lit{*MakeSoilCells(*BuildScene(scene), SoilCellOptions{}), {}};
+  lit.light = *PhotonLightOf(params, lit.cells);
+  return lit;
+}
+MossParams Params() { return *MossPreset("nomura2010"); }
+
+TEST(MossPhotons, Eq31MeanCosineIsTwoThirds) {
+  Pcg32 rng(11, 3);
+  const glm::dvec3 n = glm::normalize(glm::dvec3(0.3, 1.0, -0.2));
+  double sum = 0;
+  const int count = 200000;
+  for (int i = 0; i < count; ++i) {
+    const double c = glm::dot(CosineDirection(n, &rng), n);
+    ASSERT_GE(c, 0.0);
+    sum += c;
+  }
+  // E[cos θ] under p(θ) ∝ cos θ sin θ is 2/3; σ of the mean ≈ 0.24/√200000 = 5e-4.
+  EXPECT_NEAR(sum / count, 2.0 / 3.0, 0.01);
+}
+
+TEST(MossPhotons, ConeEmissionIsEq31ConditionedOnTheSphere) {
+  const Lit lit = LitScene("plane", Params());
+  const PhotonLight& L = lit.light;
+  // Where the rays cross the horizontal plane through C, in 4 bands of r²/R² (and the mean cosine
+  // to the light's normal), from both samplers.
+  auto histogram = [&](bool cone, double* mean_cos) {
+    Pcg32 rng(cone ? 5 : 6, 1);
+    std::vector<double> bins(4, 0.0);
+    const int count = 40000;
+    *mean_cos = 0;
+    for (int i = 0; i < count; ++i) {
+      glm::dvec3 o, d;
+      if (cone)
+        EmitSunPhoton(L, &rng, &o, &d);
+      else
+        EmitSunPhotonByRejection(L, &rng, &o, &d);
+      *mean_cos += glm::dot(d, -L.sun) / count;
+      // Every ray meets the sphere.
+      const glm::dvec3 m = L.centre - o;
+      const double t = glm::dot(m, d);
+      EXPECT_LE(glm::dot(m, m) - t * t, L.R * L.R * (1 + 1e-12));
+      const double s = (L.centre.y - o.y) / d.y;
+      const glm::dvec3 p = o + s * d - L.centre;
+      const double q = (p.x * p.x + p.z * p.z) / (L.R * L.R);
+      bins[std::min(3, static_cast<int>(q * 4 / 1.05))] += 1.0;
+    }
+    return bins;
+  };
+  double cos_cone, cos_reject;
+  const std::vector<double> cone = histogram(true, &cos_cone);
+  const std::vector<double> reject = histogram(false, &cos_reject);
+  for (int b = 0; b < 4; ++b) {
+    const double sigma = std::sqrt(cone[b] + reject[b]);
+    EXPECT_LT(std::abs(cone[b] - reject[b]), 5 * sigma) << b;
+  }
+  EXPECT_NEAR(cos_cone, cos_reject, 2e-4);
+}
+
+TEST(MossPhotons, EmittedPowerIsTheLightsPower) {
+  MossParams params = Params();
+  Lit lit = LitScene("plane", params);
+  MossOccluders none;
+  PhotonMap map;
+  Pcg32 rng(1, 1);
+  TracePhotons(lit.cells, none, lit.light, 8192, &rng, &map);
+  const double piR2 = kPi * lit.light.R * lit.light.R;
+  EXPECT_DOUBLE_EQ(lit.light.S_sun, 250.0);  // I_beam·N/24 = 1000·6/24
+  EXPECT_EQ(map.emitted_sun, 8192);
+  EXPECT_EQ(map.emitted_sky, 0);
+  EXPECT_NEAR(map.power_emitted, 250.0 * piR2, 1e-9 * 250.0 * piR2);
+  // With the sky: f_sky = 2·68/(250 + 2·68) of the budget, each photon the same power (±1/N).
+  ASSERT_TRUE(params.Set(MossParam::kSSky, 68).ok());
+  lit.light = *PhotonLightOf(params, lit.cells);
+  TracePhotons(lit.cells, none, lit.light, 8192, &rng, &map);
+  EXPECT_EQ(map.emitted_sky, std::lround(8192 * 136.0 / 386.0));
+  EXPECT_NEAR(map.dPhi_sky / map.dPhi_sun, 1.0, 1.0 / 1000);
+  EXPECT_NEAR(map.power_emitted, (250.0 + 2 * 68.0) * piR2, 1e-9 * 386.0 * piR2);
+}
+
+// Fig 3.3-3.5's energy check: on the open plane under a zenith sun, with first hits only, the
+// gathered irradiance of 50 central cells over 10 days is S_sun within 5 % (the light's cosine
+// falloff over the sphere, 10 R away, is about 2 % at its rim).
+TEST(MossPhotons, OpenPlaneGathersTheDirectIrradiance) {
+  MossParams params = Params();
+  ASSERT_TRUE(params.Set(MossParam::kIndirect, 0).ok());
+  const Lit lit = LitScene("plane", params);
+  std::vector<std::size_t> central;
+  for (std::size_t i = 0; i < lit.cells.size() && central.size() < 50; i += 23)
+    if (std::abs(lit.cells.centroid[i].x) < 0.6 && std::abs(lit.cells.centroid[i].z) < 0.6)
+      central.push_back(i);
+  ASSERT_EQ(central.size(), 50u);
+  MossOccluders none;
+  PhotonMap map;
+  Pcg32 rng(2, 7);
+  double sum = 0;
+  for (int day = 0; day < 10; ++day) {
+    TracePhotons(lit.cells, none, lit.light, 8192, &rng, &map);
+    for (const Photon& p : map.photons) ASSERT_EQ(p.depth, 0);
+    Result<PhotonGather> built = PhotonGather::Build(map, lit.light.r_gather);
+    const PhotonGather& gather = *built;
+    for (std::size_t i : central) sum += gather.Soil(lit.cells.centroid[i], lit.cells.normal[i]);
+  }
+  const double ratio = sum / (500 * lit.light.S_sun);
+  EXPECT_NEAR(ratio, 1.0, 0.05);
+}
+
+TEST(MossPhotons, OnThePlaneEveryBounceEscapes) {
+  const Lit lit = LitScene("plane", Params());
+  MossOccluders none;
+  PhotonMap map;
+  Pcg32 rng(3, 1);
+  TracePhotons(lit.cells, none, lit.light, 20000, &rng, &map);
+  EXPECT_GT(map.stored_by_depth[0], 10000);  // 4 m² of the 2π m² cross-section: about 64 %
+  for (std::size_t d = 1; d < map.stored_by_depth.size(); ++d) EXPECT_EQ(map.stored_by_depth[d], 0);
+  // Every path ends once: at a miss, or absorbed (roulette), or reflected and then missing.
+  EXPECT_EQ(map.escaped + map.absorbed, 20000);
+}
+
+TEST(MossPhotons, IndirectOffStoresOnlyFirstHitsAndNoSky) {
+  MossParams params = *MossPreset("nomura2010-sky");
+  ASSERT_TRUE(params.Set(MossParam::kIndirect, 0).ok());
+  const Lit off = LitScene("thesis", params);
+  ASSERT_TRUE(params.Set(MossParam::kIndirect, 1).ok());
+  const Lit on = LitScene("thesis", params);
+  MossOccluders none;
+  PhotonMap map_off, map_on;
+  Pcg32 rng_off(4, 1), rng_on(4, 1);
+  TracePhotons(off.cells, none, off.light, 8192, &rng_off, &map_off);
+  TracePhotons(on.cells, none, on.light, 8192, &rng_on, &map_on);
+  EXPECT_EQ(map_off.emitted_sky, 0);
+  EXPECT_GT(map_on.emitted_sky, 0);
+  for (const Photon& p : map_off.photons) ASSERT_EQ(p.depth, 0);
+  // A zenith sun reaches no downward face: the roof's underside gets only bounced photons.
+  const uint8_t roof_under = 2;
+  ASSERT_EQ(on.cells.region_names[roof_under], "roof_under");
+  int under_off = 0, under_on = 0;
+  for (const Photon& p : map_off.photons) under_off += on.cells.region[p.target] == roof_under;
+  for (const Photon& p : map_on.photons)
+    if (on.cells.region[p.target] == roof_under) {
+      ++under_on;
+      EXPECT_GE(p.depth, 1);
+    }
+  EXPECT_EQ(under_off, 0);
+  EXPECT_GT(under_on, 0);
+  // Each depth holds at most ρ_mesh of the power of the one before (some bounces escape).
+  for (std::size_t d = 1; d < 4; ++d)
+    EXPECT_LT(map_on.power_by_depth[d], 0.5 * map_on.power_by_depth[d - 1] * 1.1) << d;
+  EXPECT_GT(map_on.stored_by_depth[1], 0);
+}
+
+TEST(MossPhotons, TheMossGridFindsWhatEverySphereTestFinds) {
+  Pcg32 rng(9, 2);
+  std::vector<glm::dvec3> centres;
+  for (int i = 0; i < 600; ++i)
+    centres.push_back({rng.Uniform(-0.15, 0.15), rng.Uniform(0, 0.1), rng.Uniform(-0.15, 0.15)});
+  MossOccluders grid;
+  grid.Build(centres, 0.005);
+  int hits = 0;
+  for (int r = 0; r < 5000; ++r) {
+    const glm::dvec3 o(rng.Uniform(-0.3, 0.3), rng.Uniform(-0.1, 0.3), rng.Uniform(-0.3, 0.3));
+    glm::dvec3 d(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1));
+    if (r % 5 == 0) d = glm::dvec3(0, -1, 0);  // straight down, the axis-aligned case
+    d = glm::normalize(d);
+    const double max_t = r % 3 == 0 ? 0.2 : 10.0;
+    double t1 = -1, t2 = -1;
+    uint32_t i1 = 0, i2 = 0;
+    const bool a = grid.FirstHit(o, d, max_t, &t1, &i1);
+    const bool b = grid.FirstHitLinear(o, d, max_t, &t2, &i2);
+    ASSERT_EQ(a, b) << r;
+    if (a) {
+      ++hits;
+      ASSERT_EQ(i1, i2) << r;
+      ASSERT_EQ(t1, t2) << r;
+    }
+  }
+  EXPECT_GT(hits, 200);
+}
+
+// A 16 × 16 patch of 1 cm mosses touching the plane at 1 cm spacing covers π/4 of the patch seen
+// from above: under a zenith sun (first hits only) about 21 % of the patch's photons reach the
+// soil, the rest are stored on the mosses; the soil gather counts land hits only.
+TEST(MossPhotons, MossesShadeTheSoilBeneathThem) {
+  MossParams params = Params();
+  ASSERT_TRUE(params.Set(MossParam::kIndirect, 0).ok());
+  const Lit lit = LitScene("plane", params);
+  std::vector<glm::dvec3> centres;
+  for (int i = 0; i < 16; ++i)
+    for (int j = 0; j < 16; ++j) centres.push_back({-0.075 + 0.01 * i, 0.005, -0.075 + 0.01 * j});
+  MossOccluders mosses;
+  mosses.Build(centres, 0.005);
+  PhotonMap map;
+  Pcg32 rng(5, 5);
+  TracePhotons(lit.cells, mosses, lit.light, 400000, &rng, &map);
+  int soil = 0, moss = 0;
+  for (const Photon& p : map.photons) {
+    if (p.on_moss) {
+      ++moss;
+      EXPECT_NEAR(glm::length(p.position - centres[p.target]), 0.005, 1e-9);  // 14 m of travel
+    } else if (std::abs(p.position.x) < 0.08 && std::abs(p.position.z) < 0.08) {
+      ++soil;
+    }
+  }
+  ASSERT_GT(moss + soil, 1000);
+  EXPECT_NEAR(static_cast<double>(soil) / (soil + moss), 1.0 - kPi / 4, 0.03);
+  Result<PhotonGather> built = PhotonGather::Build(map, 0.05);
+  const PhotonGather& gather = *built;
+  const glm::dvec3 up(0, 1, 0);
+  EXPECT_LT(gather.Soil({0, 0, 0}, up), 0.5 * gather.Moss({0, 0.01, 0}, up));
+}
+
+TEST(MossPhotons, RefusedLights) {
+  MossParams params = Params();
+  const SoilCells cells = *MakeSoilCells(*BuildScene("plane"), SoilCellOptions{});
+  ASSERT_TRUE(params.Set(MossParam::kSunPath, 1).ok());
+  EXPECT_EQ(PhotonLightOf(params, cells).status().field(), "sun_path");
+}
+
+}  // namespace
+}  // namespace niwa::moss
