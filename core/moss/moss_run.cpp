@@ -13,6 +13,7 @@
 #include "geom/closest_point.h"
 #include "geom/point_index.h"
 #include "geom/ray_cast.h"
+#include "math/det_math.h"
 
 namespace niwa::moss {
 namespace {
@@ -115,6 +116,10 @@ Result<MossRun> MossRun::Start(const MossState& state, const Budget& budget) {
   Result<PhotonLight> light = PhotonLightOf(state.params, run.cells_);
   if (!light.ok()) return light.status();
   run.light_ = *light;
+  run.cells_by_gather_ =
+      std::make_shared<const geom::RadiusGrid>(run.cells_.centroid, run.light_.r_gather);
+  run.cells_by_ch_ = std::make_shared<const geom::RadiusGrid>(run.cells_.centroid,
+                                                              state.params.Get(MossParam::kRCH));
   run.constants_ = SoilConstantsOf(state.params);
   run.rules_ = LifeRulesOf(state.params);
 
@@ -310,12 +315,23 @@ void MossRun::Day() {
     weather.P = EvenRainOfDay(day, P_year, P_days);
   }
   const bool rain_day = weather.P > 0.0;
-  const double r_CH = p.Get(MossParam::kRCH);
   const double M = p.Get(MossParam::kMCH);
+  // S of each cell: the soil photons within r_gather on faces turned its way (PhotonGather::Soil's
+  // sum, spread from the photons, in photon order); m of eq 3.5: the mosses within r_CH.
+  std::fill(w.S.begin(), w.S.end(), 0.0);
+  for (const Photon& ph : map_.photons) {
+    if (ph.on_moss) continue;
+    cells_by_gather_->ForEachWithin(ph.position, [&](uint32_t c, double) {
+      if (glm::dot(ph.normal, cells_.normal[c]) > 0.5) w.S[c] += ph.power;
+    });
+  }
+  const double gather_area = det::kPi * light_.r_gather * light_.r_gather;
+  std::vector<int> m_near(cells_.size(), 0);
+  for (const glm::dvec3& c : centres)
+    cells_by_ch_->ForEachWithin(c, [&](uint32_t i, double) { ++m_near[i]; });
   for (std::size_t i = 0; i < cells_.size(); ++i) {
-    w.S[i] = gather->Soil(cells_.centroid[i], cells_.normal[i]);
-    w.m_over_M[i] = std::min(
-        1.0, static_cast<double>(index->WithinRadius(cells_.centroid[i], r_CH).size()) / M);
+    w.S[i] /= gather_area;
+    w.m_over_M[i] = std::min(1.0, static_cast<double>(m_near[i]) / M);
   }
   const MossClock::time_point t2 = MossClock::now();
   for (std::size_t i = 0; i < cells_.size(); ++i) {

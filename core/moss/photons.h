@@ -3,7 +3,7 @@
 // photons (the nomura2010-sky extension), diffuse bounces with Russian roulette on the land and on
 // the mosses (1 cm spheres, found through a uniform grid rebuilt every day), the "without indirect
 // light" mode (first hits only, no sky), and the gather: irradiance at a point from the stored
-// photons within r_gather whose normal faces it (geom::PointIndex). Deterministic: double math,
+// photons within r_gather whose normal faces it (geom::RadiusGrid). Deterministic: double math,
 // det_math's sin/cos, the caller's Pcg32. Does not: keep photons across days, smooth light over
 // days, place or move mosses (the run), or spread the sun over a day's arc (sun_path 1 is refused).
 #pragma once
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "base/status.h"
-#include "geom/point_index.h"
+#include "geom/radius_grid.h"
 #include "moss/moss_params.h"
 #include "moss/soil_cells.h"
 #include "random/pcg32.h"
@@ -109,10 +109,11 @@ class PhotonGather {
   double Moss(const glm::dvec3& x, const glm::dvec3& n) const { return Gather(x, n, true); }
 
  private:
-  PhotonGather(geom::PointIndex index, const PhotonMap* map, double r)
-      : index_(std::move(index)), map_(map), r_(r) {}
+  PhotonGather(geom::RadiusGrid grid, const PhotonMap* map, double r)
+      : grid_(std::move(grid)), map_(map), r_(r) {}
   double Gather(const glm::dvec3& x, const glm::dvec3& n, bool all) const;
-  geom::PointIndex index_;
+  geom::RadiusGrid
+      grid_;  // the photons in buckets of r_gather (radius_grid.h: no allocation a query)
   const PhotonMap* map_;
   double r_;
 };
