@@ -1,6 +1,7 @@
 // niwa CLI commands of the bark study (Hirota, Kato, Kaneko, paper 003; core/bark,
 // docs/bark-model.md): 'bark grow' (the 2-layer model grown on a torus patch of the trunk, its
-// maps as PNGs, its cycles as CSV, its statistics as one JSON object) and the table and presets
+// maps as PNGs, its cycles as CSV, its statistics as one JSON object), 'bark layers' (Fig. 7's
+// radial layout of the 4-layer model) and the table and presets
 // for 'niwa params bark' and 'niwa presets bark'. A thin adapter over bark::BarkRun: flags into a
 // state, the run, its outputs written all or none, the stats with the CLI's timings.
 // cli-order: 60
@@ -15,6 +16,7 @@
 #include "bark/bark_params.h"
 #include "bark/bark_run.h"
 #include "bark/bark_state.h"
+#include "bark/layers.h"
 #include "cli_common.h"
 #include "params/param_text.h"
 #include "run/field_names.h"
@@ -122,6 +124,38 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   return 0;
 }
 
+struct LayersOptions {
+  GrowOptions state;
+  std::string csv;
+};
+
+// bark layers: Fig. 7's radial layout of the 4-layer model over the state's cycles
+// (core/bark/layers.h), one JSON object; --csv writes the timeline.
+int RunLayers(const LayersOptions& o, std::ostream& out) {
+  const bark::BarkState state = ResolveBarkState(o.state);
+  const int cycles = state.params.GetInt(BarkParam::kCycles);
+  const std::vector<bark::LayerRadii> rows = bark::LayerTimeline(state.params, cycles, 10);
+  if (!o.csv.empty()) {
+    StagedOutputs staged;
+    Check(staged.Stage("--csv", o.csv, bark::LayerTimelineCsv(rows)));
+    Check(staged.Commit());
+  }
+  const bark::LayerRadii& first = rows.front();
+  const bark::LayerRadii& last = rows.back();
+  nlohmann::ordered_json j;
+  j["cycles"] = cycles;
+  j["rows"] = rows.size();
+  j["R_o"] = first.r_inner;
+  j["D"] = state.params.Get(BarkParam::kD);
+  j["T"] = state.params.Get(BarkParam::kT);
+  j["r_I_end"] = last.r_inner;
+  j["surface_start"] = first.s_out;
+  j["surface_end"] = last.s_out;
+  j["layers_shed"] = cycles;  // one surface layer a role exchange
+  out << j.dump() << "\n";
+  return 0;
+}
+
 void PrintPresets(std::ostream& out) {
   for (const std::string& name : bark::BarkPresetNames()) {
     out << name;
@@ -174,6 +208,22 @@ void AddBarkCommands(CLI::App& app, CommandList& commands) {
                 "Write broken springs and strains every tenth of a cycle as .csv");
   AddBudgetOptions(grow, &o->budget);
   commands.push_back({grow, [o](std::ostream& out) { return RunGrow(*o, out); }, example});
+
+  CLI::App* layers = bark_app->add_subcommand(
+      "layers",
+      "Fig. 7: the 4-layer model's radial layout (inner layer, M2, M1, surface) over the cycles, "
+      "roles moving outward at each cycle, as one JSON object");
+  auto lo = std::make_shared<LayersOptions>();
+  layers->add_option("--species", lo->state.species, "camphor (default), tallow or pine");
+  layers->add_option("--size", lo->state.size, "Lattice WxH (R_o = √3·L_o·N_R/4π)");
+  AddNumberFlag(layers, "--cycles", &lo->state.cycles, BarkRowRange(BarkParam::kCycles),
+                "Cycles, " + RangeHelp(BarkRowRange(BarkParam::kCycles)));
+  layers->add_option("--set", lo->state.sets, "KEY=VALUE of the bark table (niwa params bark)");
+  layers->add_option("--url", lo->state.url, "A share-link hash; other flags override it");
+  AddOutputFlag(layers, "--csv", &lo->csv, {".csv"},
+                "Write t, cycle, tau, r_I, the layers' outer radii and birth cycles as .csv");
+  commands.push_back(
+      {layers, [lo](std::ostream& out) { return RunLayers(*lo, out); }, {"--cycles", "3"}});
 }
 
 }  // namespace niwa::cli

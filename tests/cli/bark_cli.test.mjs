@@ -1,6 +1,6 @@
 // Bark CLI: native == WASM bytes of `niwa bark grow --stats` (without its timing fields) and of the
 // four maps and the cycles CSV, for the three species of Table 2 at a small size, seed 1; the maps'
-// PNG sizes; `niwa params bark` / `niwa presets bark` in both builds; bad input one line naming the
+// PNG sizes; `niwa bark layers` (Fig. 7) in both builds; `niwa params bark` / `niwa presets bark` in both builds; bad input one line naming the
 // flag, exit 2, nothing written.
 import { mkdtempSync, readFileSync, existsSync, readdirSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -37,6 +37,20 @@ for (const species of ['camphor', 'tallow', 'pine']) {
   }
   const [w, h, depth] = pngSize(readFileSync(join(a.dir, 'h.png')));
   check(`${species}: height map 256 wide, power-of-two tall, 16-bit`, w === 256 && (h & (h - 1)) === 0 && depth === 16, `${w}x${h} ${depth}-bit`);
+}
+
+// Fig. 7's layout (bark layers): native == WASM bytes of the JSON and the CSV; the surface moves out
+// by ΔR a cycle and r_I ends at R_o + 3·ΔR.
+{
+  const got = {};
+  for (const cmd of [native, wasm]) {
+    const csv = join(work, `fig7-${buildName(cmd)}.csv`);
+    got[buildName(cmd)] = { json: run(cmd, ['bark', 'layers', '--cycles', '3', '--csv', csv]), csv: readFileSync(csv) };
+  }
+  check('bark layers: native == WASM (JSON and CSV)', got.native.json === got.wasm.json && got.native.csv.equals(got.wasm.csv));
+  const j = JSON.parse(got.native.json);
+  check(`bark layers: r_I ${j.R_o} -> ${j.r_I_end} (3 cycles of 0.021·R_o), 34 rows`,
+    Math.abs(j.r_I_end - j.R_o * (1 + 3 * 0.021)) < 1e-9 && j.rows === 34 && Math.abs(j.surface_end - (j.r_I_end + 2)) < 1e-9);
 }
 
 // The table and presets in both builds.
