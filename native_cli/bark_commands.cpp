@@ -28,8 +28,8 @@ using bark::BarkParam;
 
 // The one table of the bark commands' names for state fields (run/field_names.h).
 const run::FieldNames kFieldFlags = {
-    {"species", "--species"}, {"model", "--model"},   {"seed", "--seed"},
-    {"N_R", "--size"},        {"N_H", "--size"},      {"cycles", "--cycles"},
+    {"species", "--species"}, {"model", "--model"}, {"seed", "--seed"},
+    {"N_R", "--size"},        {"N_H", "--size"},    {"cycles", "--cycles"},
 };
 
 constexpr FlagRange kSeedRange = {0, bark::kMaxBarkSeed, true};
@@ -188,9 +188,9 @@ void AddBarkCommands(CLI::App& app, CommandList& commands) {
                    "Lattice WxH: N_R columns around (even, 8..2048) by N_H nodes along (4..2048); "
                    "default 128x64");
   AddNumberFlag(grow, "--seed", &o->seed, kSeedRange, "RNG seed, " + RangeHelp(kSeedRange));
-  AddNumberFlag(grow, "--cycles", &o->cycles, BarkRowRange(BarkParam::kCycles),
-                "Growth periods T (the cycles row), " +
-                    RangeHelp(BarkRowRange(BarkParam::kCycles)));
+  AddNumberFlag(
+      grow, "--cycles", &o->cycles, BarkRowRange(BarkParam::kCycles),
+      "Growth periods T (the cycles row), " + RangeHelp(BarkRowRange(BarkParam::kCycles)));
   grow->add_option("--set", o->sets, "KEY=VALUE of the bark table (niwa params bark)");
   AddInputFlag(grow, "--params", &o->params_file,
                "State JSON {species, model, seed, params: {key: value}}");

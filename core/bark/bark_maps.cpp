@@ -31,7 +31,8 @@ float Hash01(uint32_t a, uint32_t b) {
 
 // Periodic value noise on a gx × gy cell grid over the image (bilinear, wraps both ways).
 float BarkGrain(int x, int y, int width, int height, int gx, int gy, uint32_t salt) {
-  const float fx = (static_cast<float>(x) + 0.5f) * static_cast<float>(gx) / static_cast<float>(width);
+  const float fx =
+      (static_cast<float>(x) + 0.5f) * static_cast<float>(gx) / static_cast<float>(width);
   const float fy =
       (static_cast<float>(y) + 0.5f) * static_cast<float>(gy) / static_cast<float>(height);
   const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
@@ -114,8 +115,9 @@ BarkMaps DrawBarkMaps(const Lattice& L, const Surface& s, const CrackMeasures& c
           const double e = ((X[k1] - X[k]) * (cy - Y[k]) - (Y[k1] - Y[k]) * (cx - X[k])) * sign;
           inside = e >= eps;
         }
-        if (inside) plate[static_cast<std::size_t>(WrapIndex(iy, height)) * width +
-                          WrapIndex(ix, width)] = id;
+        if (inside)
+          plate[static_cast<std::size_t>(WrapIndex(iy, height)) * width + WrapIndex(ix, width)] =
+              id;
       }
     }
   }

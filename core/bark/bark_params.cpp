@@ -47,7 +47,8 @@ std::vector<ParamSpec> BarkRows() {
       {Id(P::kE2), "E2", "E_2", "g/(s²·cm)", 117.3e7, 1e6, 1e11, false, "species", kGrow,
        "Young's modulus of the diagonal springs (family 2, ±30° from around the trunk; Table 2)."},
       {Id(P::kG), "G", "G", "g/(s²·cm)", 53.3e7, 1e6, 1e11, false, "species", kGrow,
-       "Shear modulus せん断弾性係数 of the springs tying the surface to the inner layer (Table 2)."},
+       "Shear modulus せん断弾性係数 of the springs tying the surface to the inner layer (Table "
+       "2)."},
       {Id(P::kKappa1), "kappa1", "κ̄_1", "", 1.033, 1.0001, 1.5, false, "species", kGrow,
        "Mean critical elongation ratio of the axial springs (Table 2); breaking them makes "
        "horizontal cracks (spec §1.3)."},
@@ -71,7 +72,8 @@ std::vector<ParamSpec> BarkRows() {
       {Id(P::kEta), "eta", "η", "cm", 0.5, 0, 10, false, "peeling", kGrow,
        "Drying range 乾燥範囲 (Table 4). Read by the 4-layer model, not built yet."},
       {Id(P::kGamma), "gamma", "γ", "", 1.0, 0, 100, false, "peeling", kGrow,
-       "Drying coefficient 乾燥係数 per cycle (Table 4). Read by the 4-layer model, not built yet."},
+       "Drying coefficient 乾燥係数 per cycle (Table 4). Read by the 4-layer model, not built "
+       "yet."},
       {Id(P::kA), "A", "A", "", 2.0, 1, 100, false, "peeling", kGrow,
        "Peeling-area ratio 剥離領域割合 (Table 4). Read by the 4-layer model, not built yet."},
       // ------------------------------------------------ maps (spec §1.9)
@@ -159,8 +161,8 @@ Result<BarkParams> BarkPreset(std::string_view name) {
       NIWA_RETURN_IF_ERROR(params.Set(*BarkTable().Find(key), value));
     return params;
   }
-  return Status::Error("species", "'" + std::string(name) + "' is unknown; must be " +
-                                      BarkPresetList());
+  return Status::Error("species",
+                       "'" + std::string(name) + "' is unknown; must be " + BarkPresetList());
 }
 
 }  // namespace niwa::bark

@@ -27,10 +27,10 @@ std::string BarkStatsJson(const BarkRun& run) {
   j["strain"] = {{"theta", static_cast<double>(g.s_theta) - 1.0},
                  {"z", static_cast<double>(g.s_z) - 1.0}};
   j["broken"] = {{"axial", c.broken[0]}, {"diagonal", c.broken[1]}};
-  j["broken_fraction"] = {{"axial", c.broken_fraction[0]},
-                          {"diagonal", c.broken_fraction[1]},
-                          {"all", static_cast<double>(c.broken[0] + c.broken[1]) /
-                                      (c.springs[0] + c.springs[1])}};
+  j["broken_fraction"] = {
+      {"axial", c.broken_fraction[0]},
+      {"diagonal", c.broken_fraction[1]},
+      {"all", static_cast<double>(c.broken[0] + c.broken[1]) / (c.springs[0] + c.springs[1])}};
   j["vertical_crack_share"] = c.vertical_crack_share;
   j["regions"] = {{"count", c.count},
                   {"strips", c.strips},

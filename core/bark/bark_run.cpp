@@ -67,8 +67,8 @@ Result<BarkRun> BarkRun::Start(const BarkState& state, const Budget& budget) {
 
 void BarkRun::Reset() {
   const BarkParams& p = state_.params;
-  lattice_ = BuildLattice(p.GetInt(BarkParam::kNR), p.GetInt(BarkParam::kNH),
-                          p.Get(BarkParam::kLo));
+  lattice_ =
+      BuildLattice(p.GetInt(BarkParam::kNR), p.GetInt(BarkParam::kNH), p.Get(BarkParam::kLo));
   mech_ = MechanicsOf(p);
   surface_ = InitialSurface(lattice_, mech_, state_.seed);
   step_ = 0;
@@ -84,8 +84,8 @@ Status BarkRun::Update(const BarkState& state) {
   NIWA_RETURN_IF_ERROR(CheckRunnable(state));
   NIWA_RETURN_IF_ERROR(CheckEstimate(EstimateBarkRun(state), budget_,
                                      "lower N_R, N_H, cycles, T, settle_steps or map_size"));
-  bool regrow = state.species != state_.species || state.model != state_.model ||
-                state.seed != state_.seed;
+  bool regrow =
+      state.species != state_.species || state.model != state_.model || state.seed != state_.seed;
   bool redraw = false;
   for (std::size_t row = 0; row < state.params.size(); ++row) {
     if (state.params.Get(row) == state_.params.Get(row)) continue;
@@ -191,16 +191,17 @@ const CrackMeasures& BarkRun::cracks() const {
 const BarkMaps& BarkRun::maps() const {
   if (!maps_) {
     const Growth g = growth();
-    maps_ = DrawBarkMaps(lattice_, surface_, cracks(), g.s_theta, g.s_z,
-                         state_.params.Get(BarkParam::kD),
-                         state_.params.GetInt(BarkParam::kMapSize));
+    maps_ =
+        DrawBarkMaps(lattice_, surface_, cracks(), g.s_theta, g.s_z,
+                     state_.params.Get(BarkParam::kD), state_.params.GetInt(BarkParam::kMapSize));
   }
   return *maps_;
 }
 
 Result<gltf::Document> BarkRun::Document() const {
-  return Status::Error("format", "a bark .glb (a trunk segment with the maps) is not built yet; "
-                                 "must be png or csv");
+  return Status::Error("format",
+                       "a bark .glb (a trunk segment with the maps) is not built yet; "
+                       "must be png or csv");
 }
 
 std::string BarkRun::StatsJson() const { return BarkStatsJson(*this); }
@@ -229,8 +230,9 @@ Result<std::string> BarkRun::MapPng(const std::string& map) const {
   if (map == "normal") return PngBytes(image::EncodeRgba8Png(m.normal, {text}));
   if (map == "orm") return PngBytes(image::EncodeRgba8Png(m.orm, {text}));
   if (map == "height") return PngBytes(image::EncodeGray16Png(m.height, {text}));
-  return Status::Error("format", "'" + map + "' is unknown; must be base_colour, normal, height "
-                                             "or orm");
+  return Status::Error("format", "'" + map +
+                                     "' is unknown; must be base_colour, normal, height "
+                                     "or orm");
 }
 
 std::string BarkRun::CyclesCsv() const {

@@ -45,8 +45,8 @@ Status SetBarkSize(std::string_view text, BarkState* state) {
     h = ParseNumber(text.substr(x + 1));
   }
   if (!w || !h) {
-    return Status::Error("N_R", "'" + Printable(text) +
-                                    "' is not WxH; must be two whole numbers, e.g. 128x64");
+    return Status::Error(
+        "N_R", "'" + Printable(text) + "' is not WxH; must be two whole numbers, e.g. 128x64");
   }
   BarkParams next = state->params;
   NIWA_RETURN_IF_ERROR(next.Set(BarkParam::kNR, *w));
@@ -127,16 +127,16 @@ void ApplyBarkHash(std::string_view hash, std::string_view prefix, BarkState* st
   const int n_r = state->params.GetInt(BarkParam::kNR);
   if (n_r % 2 != 0) {
     (void)state->params.Set(BarkParam::kNR, n_r - 1);
-    notices->push_back(pre + "N_R: " + std::to_string(n_r) + " is odd; " +
-                       std::to_string(n_r - 1) + " used");
+    notices->push_back(pre + "N_R: " + std::to_string(n_r) + " is odd; " + std::to_string(n_r - 1) +
+                       " used");
   }
   const int size = state->params.GetInt(BarkParam::kMapSize);
   if ((size & (size - 1)) != 0) {
     int p = 256;
     while (p * 2 <= size) p *= 2;
     (void)state->params.Set(BarkParam::kMapSize, p);
-    notices->push_back(pre + "map_size: " + std::to_string(size) +
-                       " is not a power of two; " + std::to_string(p) + " used");
+    notices->push_back(pre + "map_size: " + std::to_string(size) + " is not a power of two; " +
+                       std::to_string(p) + " used");
   }
   // A node count over the limit cannot be clamped row by row: N_H is lowered to fit.
   const int max_h = kMaxNodes / state->params.GetInt(BarkParam::kNR);

@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
-#include "base/status.h"
 #include "bark/bark_params.h"
+#include "base/status.h"
 
 namespace niwa::bark {
 

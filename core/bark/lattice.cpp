@@ -59,8 +59,8 @@ Lattice BuildLattice(int n_r, int n_h, double l_o) {
   }
   auto tri = [&](int n0, int n1, int n2, float x1, float z1, float x2, float z2) {
     L.tri_nodes.push_back({n0, n1, n2});
-    L.tri_springs.push_back({spring_of.at({n0, n1}), spring_of.at({n1, n2}),
-                             spring_of.at({n2, n0})});
+    L.tri_springs.push_back(
+        {spring_of.at({n0, n1}), spring_of.at({n1, n2}), spring_of.at({n2, n0})});
     L.tri_offsets.push_back({x1, z1, x2, z2});
   };
   for (int i = 0; i < n_r; ++i) {

@@ -1,8 +1,8 @@
 // The 2-layer model's lattice (paper 003 §3.1, Fig. 3; ../shared/specs/bark.md §1.2): a triangular
 // lattice of N_R columns around the trunk and N_H nodes along it, wrapped into a torus (around and
 // along), whose lattice lines run along the trunk axis. Column i sits at arc position
-// x_i = i·(√3/2)·L_o, node j of it at z_ij = j·L_o + (i mod 2)·L_o/2; node index i·N_H + j. Each node
-// owns three forward springs: one axial (family 1, to (i, j+1)) and two diagonals at ±30° from
+// x_i = i·(√3/2)·L_o, node j of it at z_ij = j·L_o + (i mod 2)·L_o/2; node index i·N_H + j. Each
+// node owns three forward springs: one axial (family 1, to (i, j+1)) and two diagonals at ±30° from
 // the circumferential direction (family 2: even i to (i+1, j) and (i+1, j−1), odd i to (i+1, j+1)
 // and (i+1, j)); all axial springs come first, then the diagonals, each in node order. Every
 // spring keeps its reference vector (a to b, unwrapped), so a seam spring is an interior one.

@@ -15,10 +15,10 @@
 namespace niwa::bark {
 
 struct LayerRadii {
-  double t = 0;      // s
-  int cycle = 0;     // k = ⌊t/T⌋
-  double tau = 0;    // (t mod T)/T
-  double r_inner = 0;                  // r_I: the inner layer's outer radius (cm)
+  double t = 0;                              // s
+  int cycle = 0;                             // k = ⌊t/T⌋
+  double tau = 0;                            // (t mod T)/T
+  double r_inner = 0;                        // r_I: the inner layer's outer radius (cm)
   double m2_out = 0, m1_out = 0, s_out = 0;  // outer radii of M2, M1, S (M2 starts at r_I)
   int born_m2 = 0, born_m1 = 0, born_s = 0;  // the cycle that bore the layer in each role
 };

@@ -61,8 +61,8 @@ CrackMeasures MeasureCracks(const Lattice& L, const Surface& s, double s_theta, 
       }
       for (int e = 0; e < 3; ++e) {
         const int spring = L.tri_springs[t][e];
-        const int other = L.spring_tris[spring][0] == t ? L.spring_tris[spring][1]
-                                                        : L.spring_tris[spring][0];
+        const int other =
+            L.spring_tris[spring][0] == t ? L.spring_tris[spring][1] : L.spring_tris[spring][0];
         if (!plate[other]) continue;
         // The shared node u (node e of t): where t puts it, less its step within the other.
         const int u = L.tri_nodes[t][e];

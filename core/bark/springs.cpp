@@ -101,8 +101,8 @@ int SpringPass(const Lattice& L, int begin, int end, float k, float c, float l0,
   int i = begin;
   const Float4 vst = simd::Splat4(st), vsz = simd::Splat4(sz), vrt = simd::Splat4(rt),
                vrz = simd::Splat4(rz), vk = simd::Splat4(k), vc = simd::Splat4(c),
-               vl0 = simd::Splat4(l0), tiny = simd::Splat4(kTinyLength2),
-               zero = simd::Splat4(0.0f), one = simd::Splat4(1.0f);
+               vl0 = simd::Splat4(l0), tiny = simd::Splat4(kTinyLength2), zero = simd::Splat4(0.0f),
+               one = simd::Splat4(1.0f);
   for (; i + 4 <= end; i += 4) {
     const int a0 = A[i], a1 = A[i + 1], a2 = A[i + 2], a3 = A[i + 3];
     const int b0 = B[i], b1 = B[i + 1], b2 = B[i + 2], b3 = B[i + 3];
@@ -111,10 +111,14 @@ int SpringPass(const Lattice& L, int begin, int end, float k, float c, float l0,
     std::memcpy(&oz, OZ + i, sizeof oz);
     std::memcpy(&lim, limit2 + i, sizeof lim);
     std::memcpy(&alive, on + i, sizeof alive);
-    const Float4 dux = Float4{ux[b0], ux[b1], ux[b2], ux[b3]} - Float4{ux[a0], ux[a1], ux[a2], ux[a3]};
-    const Float4 duz = Float4{uz[b0], uz[b1], uz[b2], uz[b3]} - Float4{uz[a0], uz[a1], uz[a2], uz[a3]};
-    const Float4 dwx = Float4{wx[b0], wx[b1], wx[b2], wx[b3]} - Float4{wx[a0], wx[a1], wx[a2], wx[a3]};
-    const Float4 dwz = Float4{wz[b0], wz[b1], wz[b2], wz[b3]} - Float4{wz[a0], wz[a1], wz[a2], wz[a3]};
+    const Float4 dux =
+        Float4{ux[b0], ux[b1], ux[b2], ux[b3]} - Float4{ux[a0], ux[a1], ux[a2], ux[a3]};
+    const Float4 duz =
+        Float4{uz[b0], uz[b1], uz[b2], uz[b3]} - Float4{uz[a0], uz[a1], uz[a2], uz[a3]};
+    const Float4 dwx =
+        Float4{wx[b0], wx[b1], wx[b2], wx[b3]} - Float4{wx[a0], wx[a1], wx[a2], wx[a3]};
+    const Float4 dwz =
+        Float4{wz[b0], wz[b1], wz[b2], wz[b3]} - Float4{wz[a0], wz[a1], wz[a2], wz[a3]};
     const Float4 dx = ox * vst + dux, dz = oz * vsz + duz;
     const Float4 l2 = dx * dx + dz * dz;
     const Int4 breaks = l2 > lim;

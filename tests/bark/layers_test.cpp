@@ -19,7 +19,7 @@ TEST(Layers, Fig7AsEquations) {
   EXPECT_NEAR(r_o, 5.822033, 1e-6);
   for (const LayerRadii& r : rows) {
     EXPECT_NEAR(r.r_inner, r_o + delta_r * r.t / T, 1e-9) << r.t;  // linear: constant ring width
-    EXPECT_NEAR(r.m2_out - r.r_inner, d * r.tau, 1e-12) << r.t;   // the saw-tooth
+    EXPECT_NEAR(r.m2_out - r.r_inner, d * r.tau, 1e-12) << r.t;    // the saw-tooth
     EXPECT_NEAR(r.m1_out - r.m2_out, d, 1e-12);
     EXPECT_NEAR(r.s_out, r.r_inner + d * r.tau + 2 * d, 1e-12);  // the outer surface
   }
@@ -34,7 +34,7 @@ TEST(Layers, Fig7AsEquations) {
     // The old M2 is the new M1, the old M1 the new S, with the same boundaries.
     EXPECT_EQ(after.born_m1, before.born_m2);
     EXPECT_EQ(after.born_s, before.born_m1);
-    EXPECT_NEAR(after.m1_out, before.m2_out, 1e-9);  // its outer boundary
+    EXPECT_NEAR(after.m1_out, before.m2_out, 1e-9);    // its outer boundary
     EXPECT_NEAR(after.r_inner, before.r_inner, 1e-9);  // its inner boundary: r_I either side
     EXPECT_NEAR(after.s_out, before.m1_out, 1e-9);
     EXPECT_EQ(after.born_m2, k);  // a new M2, born now, thickness 0

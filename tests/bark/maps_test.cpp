@@ -1,13 +1,12 @@
 // The bark maps: sizes, a flat intact layer, the bevel's normals in the OpenGL convention (+y up
 // the image), and tiling: a surface turned around the trunk draws the same map shifted (so the
 // seam is no place of its own), and the step across the top/bottom seam is one like those inside.
-#include "bark/bark_maps.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
 
+#include "bark/bark_maps.h"
 #include "bark/bark_run.h"
 #include "bark/bark_state.h"
 
@@ -115,8 +114,8 @@ TEST(BarkMaps, AGrownTileContinuesAcrossBothSeams) {
       turned.broken[L.axial_count + 2 * to + k] = s.broken[L.axial_count + 2 * n + k];
   }
   const Growth g = run->growth();
-  const BarkMaps t = DrawBarkMaps(L, turned, MeasureCracks(L, turned, g.s_theta, g.s_z),
-                                  g.s_theta, g.s_z, 1.0, 256);
+  const BarkMaps t = DrawBarkMaps(L, turned, MeasureCracks(L, turned, g.s_theta, g.s_z), g.s_theta,
+                                  g.s_z, 1.0, 256);
   const int shift = 2 * h.width / L.n_r;
   int differ = 0;
   for (int y = 0; y < h.height; ++y)

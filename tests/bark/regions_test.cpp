@@ -48,10 +48,10 @@ TEST(Regions, CutsAlongTheTrunkLeaveStrips) {
   EXPECT_EQ(m.count, 2);
   EXPECT_EQ(m.strips, 2);
   EXPECT_DOUBLE_EQ(m.closed_fraction, 0.0);
-  EXPECT_NEAR(m.max_height, L.height(), 1e-12);  // the paper's "(>20)": the whole patch
-  EXPECT_NEAR(m.max_width, 7 * L.pitch(), 1e-12);  // columns 8..11 and 0..3, across the seam
+  EXPECT_NEAR(m.max_height, L.height(), 1e-12);     // the paper's "(>20)": the whole patch
+  EXPECT_NEAR(m.max_width, 7 * L.pitch(), 1e-12);   // columns 8..11 and 0..3, across the seam
   EXPECT_NEAR(m.mean_width, 5 * L.pitch(), 1e-12);  // and 4..7
-  EXPECT_EQ(m.broken[0], 0);                       // no axial spring crosses a vertical cut
+  EXPECT_EQ(m.broken[0], 0);                        // no axial spring crosses a vertical cut
   EXPECT_DOUBLE_EQ(m.vertical_crack_share, 1.0);
   // Every row crosses 2 cracks: spacing C/2.
   EXPECT_NEAR(m.intercept_width, L.circumference() / 2, 1e-12);

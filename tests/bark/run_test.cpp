@@ -1,11 +1,11 @@
 // The bark run once: a refusal over budget or for a bad row names its field before any work, a
 // cancel leaves the run as it was, a finished run cracks and reports, two runs give the same
 // bytes, an Update of map_size only redraws.
-#include "bark/bark_run.h"
-
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+
+#include "bark/bark_run.h"
 
 namespace niwa::bark {
 namespace {

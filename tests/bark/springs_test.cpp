@@ -1,6 +1,6 @@
 // The 2-layer mechanics: a spring's force against the formula, no force at rest, pre-break strain
-// against §1.4's formula, a stretched lattice breaking at its threshold, energy that only falls once
-// growth stops, breaks that stay, and one seed one broken set.
+// against §1.4's formula, a stretched lattice breaking at its threshold, energy that only falls
+// once growth stops, breaks that stay, and one seed one broken set.
 #include "bark/springs.h"
 
 #include <gtest/gtest.h>
@@ -96,7 +96,7 @@ TEST(Springs, AStretchedLatticeBreaksAtItsThreshold) {
   }
   ASSERT_GT(first, 0);
   EXPECT_NEAR(first, eps_break, eps_break * 0.0015);  // within one growth increment (5e-4)
-  EXPECT_EQ(s.broken_count[0], 0);  // axial springs see no strain
+  EXPECT_EQ(s.broken_count[0], 0);                    // axial springs see no strain
 }
 
 TEST(Springs, EnergyFallsOnceGrowthStopsAndBreaksStay) {
