@@ -185,8 +185,9 @@ void AddBarkCommands(CLI::App& app, CommandList& commands) {
                    "camphor (default), tallow or pine: Table 2 (niwa presets bark)");
   grow->add_option("--model", o->model, "2layer (the 4-layer model is not built yet)");
   grow->add_option("--size", o->size,
-                   "Lattice WxH: N_R columns around (even, 8..2048) by N_H nodes along (4..2048); "
-                   "default 128x64");
+                   "Lattice WxH: N_R columns around (even, " +
+                       RangeHelp(BarkRowRange(BarkParam::kNR)) + ") by N_H nodes along (" +
+                       RangeHelp(BarkRowRange(BarkParam::kNH)) + "); default 128x64");
   AddNumberFlag(grow, "--seed", &o->seed, kSeedRange, "RNG seed, " + RangeHelp(kSeedRange));
   AddNumberFlag(
       grow, "--cycles", &o->cycles, BarkRowRange(BarkParam::kCycles),
@@ -215,7 +216,9 @@ void AddBarkCommands(CLI::App& app, CommandList& commands) {
       "roles moving outward at each cycle, as one JSON object");
   auto lo = std::make_shared<LayersOptions>();
   layers->add_option("--species", lo->state.species, "camphor (default), tallow or pine");
-  layers->add_option("--size", lo->state.size, "Lattice WxH (R_o = √3·L_o·N_R/4π)");
+  layers->add_option("--size", lo->state.size,
+                     "Lattice WxH (R_o = √3·L_o·N_R/4π; N_R even, " +
+                         RangeHelp(BarkRowRange(BarkParam::kNR)) + ")");
   AddNumberFlag(layers, "--cycles", &lo->state.cycles, BarkRowRange(BarkParam::kCycles),
                 "Cycles, " + RangeHelp(BarkRowRange(BarkParam::kCycles)));
   layers->add_option("--set", lo->state.sets, "KEY=VALUE of the bark table (niwa params bark)");
