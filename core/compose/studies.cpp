@@ -3,6 +3,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bark/bark_params.h"
+#include "bark/bark_state.h"
 #include "ivy/ivy_params.h"
 #include "ivy/ivy_state.h"
 #include "params/param_json.h"
@@ -110,6 +112,32 @@ Result<std::string> TerrainEncode(const std::string& state_json, std::string_vie
   return terrain::EncodeTerrainHash(state, prefix);
 }
 
+// ---------------------------------------------------------------- bark (paper 003)
+std::string BarkPresetsJson() {
+  ordered_json out = ordered_json::array();
+  for (const std::string& name : bark::BarkPresetNames()) {
+    ordered_json j;
+    j["name"] = name;
+    j["source"] = bark::BarkPresetSource(name);
+    j["params"] = ordered_json::parse(ParamsToJson(*bark::BarkPreset(name), -1));
+    out.push_back(std::move(j));
+  }
+  return out.dump();
+}
+
+std::string BarkDecode(std::string_view hash, std::string_view prefix) {
+  bark::BarkState state;
+  std::vector<std::string> notices;
+  bark::ApplyBarkHash(hash, prefix, &state, &notices);
+  return DecodedJson(bark::BarkStateJson(state), notices);
+}
+
+Result<std::string> BarkEncode(const std::string& state_json, std::string_view prefix) {
+  bark::BarkState state;
+  NIWA_RETURN_IF_ERROR(bark::ApplyBarkStateJson(state_json, &state));
+  return bark::EncodeBarkHash(state, prefix);
+}
+
 }  // namespace
 
 const std::vector<StudyInfo>& Studies() {
@@ -121,6 +149,8 @@ const std::vector<StudyInfo>& Studies() {
       {"terrain", "levels", &terrain::TerrainTable,
        [] { return ParamTableJson(terrain::TerrainTable()); }, &TerrainPresetsJson, &TerrainDecode,
        &TerrainEncode},
+      {"bark", "cycles", &bark::BarkTable, [] { return ParamTableJson(bark::BarkTable()); },
+       &BarkPresetsJson, &BarkDecode, &BarkEncode},
   };
   return studies;
 }

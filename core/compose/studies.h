@@ -1,4 +1,4 @@
-// The registry of studies (tree, ivy, terrain; moss, bark next): each study's name, time unit,
+// The registry of studies (tree, ivy, terrain, bark; moss next): each study's name, time unit,
 // parameter table, presets and share-link codec behind one shape, so the CLI (`niwa params
 // STUDY`), the web module's generic bindings (tableJson(study), decodeHash(study, hash, prefix))
 // and the garden reach every study the same way. Does not: grow anything (core/<study>/*_run),
@@ -16,7 +16,7 @@ namespace niwa::compose {
 
 struct StudyInfo {
   std::string name;  // "tree", "ivy", "terrain": the key prefix on a composed page is name + "."
-  std::string unit;  // what a run advances in: "years", "steps", "levels"
+  std::string unit;  // what a run advances in: "years", "steps", "levels", "cycles"
   const ParamTable& (*table)();
   // The table as the page's panel reads it (params/param_json ParamTableJson; the tree's with its
   // Getting started rows).
@@ -31,13 +31,13 @@ struct StudyInfo {
   Result<std::string> (*encode_hash)(const std::string& state_json, std::string_view prefix);
 };
 
-// Every study, in the order of the pages' nav (tree, ivy, terrain).
+// Every study, in the order of the pages' nav (tree, ivy, terrain, bark).
 const std::vector<StudyInfo>& Studies();
 
 // The study named `name`, or nullptr.
 const StudyInfo* FindStudy(std::string_view name);
 
-// "tree, ivy or terrain": the names for an error line.
+// "tree, ivy, terrain or bark": the names for an error line.
 std::string StudyNames();
 
 }  // namespace niwa::compose

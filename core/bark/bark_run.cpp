@@ -1,0 +1,250 @@
+// The bark study's run: the 2-layer model grown cycle by cycle, measured and drawn.
+#include "bark/bark_run.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+#include <utility>
+
+#include "bark/bark_report.h"
+#include "image/png.h"
+#include "params/param_text.h"
+
+namespace niwa::bark {
+namespace {
+
+// Calibrated upper bounds (docs/bark-model.md "Budgets"): bytes a node holds while a run lives
+// (its state, springs, triangles, the region measure and the lattice's build map), seconds of a
+// spring-step, bytes and seconds of a map pixel (the four maps and their PNGs).
+constexpr double kBytesPerNode = 800;
+constexpr double kSecondsPerSpringStep = 6e-9;
+constexpr double kBytesPerMapPixel = 48;
+constexpr double kSecondsPerMapPixel = 2e-7;
+constexpr int kProgressSteps = 256;
+
+int GrowthSteps(const BarkState& state, const Mechanics& m) {
+  return state.params.GetInt(BarkParam::kCycles) * m.steps_per_cycle;
+}
+
+Status CheckRunnable(const BarkState& state) {
+  BarkState copy = state;
+  NIWA_RETURN_IF_ERROR(SetBarkModel(state.model, &copy));
+  return CheckBarkState(state);
+}
+
+Result<std::string> PngBytes(const Result<std::vector<unsigned char>>& png) {
+  if (!png.ok()) return png.status();
+  return std::string(png->begin(), png->end());
+}
+
+}  // namespace
+
+Estimate EstimateBarkRun(const BarkState& state) {
+  const BarkParams& p = state.params;
+  const Mechanics m = MechanicsOf(p);
+  const double nodes = static_cast<double>(p.GetInt(BarkParam::kNR)) * p.GetInt(BarkParam::kNH);
+  const double steps =
+      static_cast<double>(GrowthSteps(state, m)) + p.GetInt(BarkParam::kSettleSteps);
+  const double width = p.GetInt(BarkParam::kMapSize);
+  const double pixels = width * 4096;  // the tallest a map can be
+  Estimate e;
+  e.memory_bytes = nodes * kBytesPerNode + pixels * kBytesPerMapPixel;
+  e.seconds = 4 * nodes * steps * kSecondsPerSpringStep + pixels * kSecondsPerMapPixel;
+  e.what = "the bark (" + FormatCount(nodes) + " nodes, " + FormatCount(steps) + " steps)";
+  return e;
+}
+
+Result<BarkRun> BarkRun::Start(const BarkState& state, const Budget& budget) {
+  NIWA_RETURN_IF_ERROR(CheckRunnable(state));
+  NIWA_RETURN_IF_ERROR(CheckEstimate(EstimateBarkRun(state), budget,
+                                     "lower N_R, N_H, cycles, T, settle_steps or map_size"));
+  BarkRun run;
+  run.state_ = state;
+  run.budget_ = budget;
+  run.Reset();
+  return run;
+}
+
+void BarkRun::Reset() {
+  const BarkParams& p = state_.params;
+  lattice_ =
+      BuildLattice(p.GetInt(BarkParam::kNR), p.GetInt(BarkParam::kNH), p.Get(BarkParam::kLo));
+  mech_ = MechanicsOf(p);
+  surface_ = InitialSurface(lattice_, mech_, state_.seed);
+  step_ = 0;
+  cycles_done_ = 0;
+  settled_ = false;
+  samples_.clear();
+  samples_.push_back({});
+  cracks_.reset();
+  maps_.reset();
+}
+
+Status BarkRun::Update(const BarkState& state) {
+  NIWA_RETURN_IF_ERROR(CheckRunnable(state));
+  NIWA_RETURN_IF_ERROR(CheckEstimate(EstimateBarkRun(state), budget_,
+                                     "lower N_R, N_H, cycles, T, settle_steps or map_size"));
+  bool regrow =
+      state.species != state_.species || state.model != state_.model || state.seed != state_.seed;
+  bool redraw = false;
+  for (std::size_t row = 0; row < state.params.size(); ++row) {
+    if (state.params.Get(row) == state_.params.Get(row)) continue;
+    if (BarkTable().row(row).stage == Stage::kGrow)
+      regrow = true;
+    else
+      redraw = true;
+  }
+  state_ = state;
+  if (regrow) {
+    Reset();
+  } else if (redraw) {
+    maps_.reset();
+  }
+  return Status::Ok();
+}
+
+int BarkRun::target() const { return state_.params.GetInt(BarkParam::kCycles); }
+
+Growth BarkRun::GrowthAt(int step) const {
+  const int growth_steps = GrowthSteps(state_, mech_);
+  const bool growing = step < growth_steps;
+  const double t = (growing ? step : growth_steps) * mech_.dt;
+  Growth g;
+  g.s_theta = static_cast<float>(1.0 + mech_.strain_rate_theta * t);
+  g.s_z = static_cast<float>(1.0 + mech_.strain_rate_z * t);
+  g.rate_theta = growing ? static_cast<float>(mech_.strain_rate_theta) : 0.0f;
+  g.rate_z = growing ? static_cast<float>(mech_.strain_rate_z) : 0.0f;
+  return g;
+}
+
+double BarkRun::spring_steps() const {
+  return static_cast<double>(lattice_.springs() + lattice_.nodes()) * step_;
+}
+
+Status BarkRun::Advance(const run::Observer& observer) {
+  if (settled_) return Status::Ok();
+  const int growth_steps = GrowthSteps(state_, mech_);
+  const int total = growth_steps + state_.params.GetInt(BarkParam::kSettleSteps);
+  // What a cancel puts back.
+  const Surface surface_before = surface_;
+  const int step_before = step_, cycles_before = cycles_done_;
+  const std::size_t samples_before = samples_.size();
+  const int sample_every = std::max(1, mech_.steps_per_cycle / 10);
+  while (step_ < total) {
+    if (observer && step_ % kProgressSteps == 0) {
+      const run::Progress progress{step_ < growth_steps ? "grow" : "settle",
+                                   static_cast<double>(step_), static_cast<double>(total)};
+      if (!observer(progress)) {
+        surface_ = surface_before;
+        step_ = step_before;
+        cycles_done_ = cycles_before;
+        samples_.resize(samples_before);
+        return run::CancelledStatus();
+      }
+    }
+    Step(lattice_, mech_, GrowthAt(step_), &surface_);
+    ++step_;
+    if (step_ <= growth_steps && step_ % mech_.steps_per_cycle == 0) ++cycles_done_;
+    if ((step_ <= growth_steps && step_ % sample_every == 0) || step_ == total) {
+      // The substrate's strains in double (the anchors' float factors, less their rounding).
+      const double t = std::min(step_, growth_steps) * mech_.dt;
+      BarkSample s;
+      s.cycle = static_cast<double>(std::min(step_, growth_steps)) / mech_.steps_per_cycle;
+      s.step = step_;
+      s.strain_theta = mech_.strain_rate_theta * t;
+      s.strain_z = mech_.strain_rate_z * t;
+      s.broken[0] = surface_.broken_count[0];
+      s.broken[1] = surface_.broken_count[1];
+      samples_.push_back(s);
+    }
+  }
+  // The last step's positions: springs past their limit now break too (no forces follow).
+  {
+    Surface& s = surface_;
+    const Growth g = GrowthAt(step_);
+    for (int i = 0; i < lattice_.springs(); ++i) {
+      if (s.broken[i]) continue;
+      const double e = SpringStrain(lattice_, s, g, i) + 1.0;
+      const double l = e * lattice_.l_o;
+      if (static_cast<float>(l * l) > s.limit2[i]) {
+        s.broken[i] = 1;
+        s.on[i] = 0.0f;
+        s.limit2[i] = std::numeric_limits<float>::infinity();
+        ++s.broken_count[static_cast<int>(lattice_.family(i))];
+      }
+    }
+  }
+  settled_ = true;
+  cracks_.reset();
+  maps_.reset();
+  return Status::Ok();
+}
+
+const CrackMeasures& BarkRun::cracks() const {
+  if (!cracks_) {
+    const Growth g = growth();
+    cracks_ = MeasureCracks(lattice_, surface_, g.s_theta, g.s_z);
+  }
+  return *cracks_;
+}
+
+const BarkMaps& BarkRun::maps() const {
+  if (!maps_) {
+    const Growth g = growth();
+    maps_ =
+        DrawBarkMaps(lattice_, surface_, cracks(), g.s_theta, g.s_z,
+                     state_.params.Get(BarkParam::kD), state_.params.GetInt(BarkParam::kMapSize));
+  }
+  return *maps_;
+}
+
+Result<gltf::Document> BarkRun::Document() const {
+  return Status::Error("format",
+                       "a bark .glb (a trunk segment with the maps) is not built yet; "
+                       "must be png or csv");
+}
+
+std::string BarkRun::StatsJson() const { return BarkStatsJson(*this); }
+
+std::string BarkRun::Hash(const std::string& prefix) const {
+  return EncodeBarkHash(state_, prefix);
+}
+
+Result<Estimate> BarkRun::ExportEstimate(const std::string& format) const {
+  const double width = state_.params.GetInt(BarkParam::kMapSize);
+  if (format == "png") {
+    const double pixels = width * 4096;
+    return Estimate{pixels * kBytesPerMapPixel, pixels * kSecondsPerMapPixel,
+                    "the maps (" + FormatCount(width) + " px wide)"};
+  }
+  if (format == "csv") {
+    return Estimate{static_cast<double>(samples_.size() + 16) * 96.0, 0, "the cycles .csv"};
+  }
+  return Status::Error("format", "'" + format + "' is unknown; must be png or csv");
+}
+
+Result<std::string> BarkRun::MapPng(const std::string& map) const {
+  const BarkMaps& m = maps();
+  const std::vector<image::PngText> text = {{"niwa", "bark " + Hash("")}};
+  if (map == "base_colour") return PngBytes(image::EncodeRgba8Png(m.base_colour, {text}));
+  if (map == "normal") return PngBytes(image::EncodeRgba8Png(m.normal, {text}));
+  if (map == "orm") return PngBytes(image::EncodeRgba8Png(m.orm, {text}));
+  if (map == "height") return PngBytes(image::EncodeGray16Png(m.height, {text}));
+  return Status::Error("format", "'" + map +
+                                     "' is unknown; must be base_colour, normal, height "
+                                     "or orm");
+}
+
+std::string BarkRun::CyclesCsv() const {
+  std::string out = "cycle,step,strain_theta,strain_z,broken_axial,broken_diagonal\n";
+  char line[160];
+  for (const BarkSample& s : samples_) {
+    std::snprintf(line, sizeof line, "%s,%d,%s,%s,%d,%d\n", FormatNumber(s.cycle).c_str(), s.step,
+                  FormatNumber(s.strain_theta).c_str(), FormatNumber(s.strain_z).c_str(),
+                  s.broken[0], s.broken[1]);
+    out += line;
+  }
+  return out;
+}
+
+}  // namespace niwa::bark

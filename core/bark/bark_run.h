@@ -1,0 +1,92 @@
+// The bark study's run (run::StudyRun, paper 003): the 2-layer model of a BarkState grown cycle by
+// cycle (one cycle = the growth period T; the last followed by the settling steps), with progress
+// in steps and cancel, the estimates checked before any work, the crack measures, the maps (PNG
+// bytes of base colour, normal, 16-bit height and ORM), the stats JSON, a per-tenth-cycle CSV and
+// the share hash. The one pipeline `niwa bark grow` (native_cli/bark_commands.cpp) adapts; the
+// page's session is a later slice. Does not: parse flags, read or write files, time itself (the
+// front end adds ms and ns_per_spring_step), build the 4-layer model, or make a .glb (Parts() is
+// empty and Document() refused: a trunk segment with the maps is a later slice).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bark/bark_maps.h"
+#include "bark/bark_state.h"
+#include "bark/lattice.h"
+#include "bark/regions.h"
+#include "bark/springs.h"
+#include "base/budget.h"
+#include "run/study_run.h"
+
+namespace niwa::bark {
+
+// One row of the cycles CSV (every tenth of a cycle, and the end of settling).
+struct BarkSample {
+  double cycle = 0;  // growth periods elapsed (fractional)
+  int step = 0;
+  double strain_theta = 0, strain_z = 0;
+  int broken[2] = {0, 0};
+};
+
+// What the state will cost: memory of the lattice, its state and the maps, and time by spring-steps
+// and map pixels (calibrated upper bounds; docs/bark-model.md).
+Estimate EstimateBarkRun(const BarkState& state);
+
+class BarkRun : public run::StudyRun {
+ public:
+  // Checks the state (CheckBarkState, the model) and the estimate against the budget (errors name
+  // the row or the budget's limit), then builds the lattice at rest. The growth waits for Advance.
+  static Result<BarkRun> Start(const BarkState& state, const Budget& budget);
+
+  // A new state: a changed grow row, species, model or seed regrows at the next Advance; only
+  // map_size changed: the maps are redrawn on demand from the kept surface.
+  Status Update(const BarkState& state);
+
+  const char* study() const override { return "bark"; }
+  const char* unit() const override { return "cycles"; }
+  int done() const override { return cycles_done_; }
+  int target() const override;
+  // To the state's cycles (and the settling after the last), progress every 256 steps; a cancel
+  // leaves the run as it was before this Advance.
+  Status Advance(const run::Observer& observer) override;
+  std::vector<run::Part> Parts() const override { return {}; }
+  Result<gltf::Document> Document() const override;
+  std::string StatsJson() const override;
+  std::string Hash(const std::string& prefix) const override;
+  // "png" (the four maps at the state's map_size) or "csv"; other formats are refused.
+  Result<Estimate> ExportEstimate(const std::string& format) const override;
+
+  // The maps' PNG bytes: "base_colour", "normal", "height" (16-bit), "orm"; error names "format".
+  Result<std::string> MapPng(const std::string& map) const;
+  std::string CyclesCsv() const;
+
+  const BarkState& state() const { return state_; }
+  const Lattice& lattice() const { return lattice_; }
+  const Mechanics& mechanics() const { return mech_; }
+  const Surface& surface() const { return surface_; }
+  Growth growth() const { return GrowthAt(step_); }
+  const CrackMeasures& cracks() const;
+  const BarkMaps& maps() const;
+  int steps() const { return step_; }
+  // Springs (intra-layer and shear) times steps integrated: the divisor of ns_per_spring_step.
+  double spring_steps() const;
+
+ private:
+  Growth GrowthAt(int step) const;
+  void Reset();
+
+  BarkState state_;
+  Budget budget_;
+  Lattice lattice_;
+  Mechanics mech_;
+  Surface surface_;
+  int step_ = 0, cycles_done_ = 0;
+  bool settled_ = false;
+  std::vector<BarkSample> samples_;
+  mutable std::optional<CrackMeasures> cracks_;
+  mutable std::optional<BarkMaps> maps_;
+};
+
+}  // namespace niwa::bark

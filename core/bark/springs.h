@@ -1,0 +1,76 @@
+// The 2-layer model's mechanics (paper 003 §3.1; ../shared/specs/bark.md §1.4-1.6): the surface
+// layer's nodes tied to a kinematic inner layer that grows (R and H linear in time), springs of
+// two families with stiffness from Table 2's moduli, shear springs to the inner layer, dashpots,
+// symplectic Euler steps, and breaking: a spring stretched past its own ratio κ_s breaks for good,
+// so cracks run by themselves (the load of a broken spring falls on its neighbours). State is the
+// displacement u = x − anchor and its rate w (float32, structure of arrays); one pass over the
+// springs per step (break checks, in ascending index, on the positions the step starts from;
+// then forces) and one over the nodes. Deterministic: the project's PCG32 for the thresholds,
+// det:: maths, no FMA contraction. The spring pass takes four springs a batch (math/simd4.h lanes:
+// indexed loads, IEEE arithmetic lane by lane, the same bits as the scalar tail), scattering the
+// forces in spring order. Does not: measure regions (regions.h), draw (bark_maps.h),
+// schedule cycles or check budgets (bark_run.h), or model radial motion, curl or peeling.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "bark/bark_params.h"
+#include "bark/lattice.h"
+
+namespace niwa::bark {
+
+// The constants of one run, from the table (spec §1.5).
+struct Mechanics {
+  double node_area = 0;  // A_n = (√3/2)·L_o²
+  double mass = 0;       // m = ρ·A_n·D
+  double k[2] = {0, 0};  // spring constants of the families: (√3/2)·E_t·D
+  double c[2] = {0, 0};  // their dashpots: ζ_t·2√(k_t·m/2)
+  double k_s = 0;        // shear spring: G·A_n/D
+  double c_s = 0;        // its dashpot: ζ_s·2√(k_s·m)
+  double dt = 0;         // T / steps_per_cycle
+  int steps_per_cycle = 0;
+  double kappa_mean[2] = {0, 0};  // κ̄_1, κ̄_2
+  double sigma = 0;
+  double strain_rate_theta = 0;  // d(ε_θ)/dt = δr/R_o
+  double strain_rate_z = 0;      // d(ε_z)/dt = δh/H_o
+};
+// dt = 0.3·√(m/(k_s + 2k_1 + 4k_2)), shrunk so that T/dt is whole.
+Mechanics MechanicsOf(const BarkParams& params);
+
+// The surface layer's state.
+struct Surface {
+  std::vector<float> ux, uz;  // displacement from the anchor (cm)
+  std::vector<float> wx, wz;  // its rate (cm/s)
+  std::vector<float> fx, fz;  // force accumulators (zero between steps)
+  std::vector<float> limit2;  // (κ_s·L_o)²: squared length that breaks the spring; +inf once broken
+  std::vector<float> on;      // 1 while intact, 0 once broken (multiplies the spring's force)
+  std::vector<uint8_t> broken;
+  int broken_count[2] = {0, 0};  // per family
+};
+
+// At rest on its anchors, every spring with its break ratio κ_s = 1 + (κ̄_t − 1)(1 + σξ_s), ξ_s
+// standard normal (Box-Muller on PCG32(seed)), redrawn while |ξ| > 3, κ_s − 1 floored at 1e−4;
+// drawn in spring order.
+Surface InitialSurface(const Lattice& lattice, const Mechanics& mech, uint64_t seed);
+
+// The growth factors of the anchors at a time: s_θ = 1 + ε_θ, s_z = 1 + ε_z, and their rates (0
+// while the inner layer is frozen).
+struct Growth {
+  float s_theta = 1, s_z = 1;
+  float rate_theta = 0, rate_z = 0;
+};
+
+// One step: break checks and forces over every spring, then v += dt·F/m, u += dt·v per node.
+// Returns the springs broken in this step.
+int Step(const Lattice& lattice, const Mechanics& mech, const Growth& growth, Surface* surface);
+
+// The strain l/L_o − 1 of spring s at the growth (a test's and a report's view).
+double SpringStrain(const Lattice& lattice, const Surface& surface, const Growth& growth, int s);
+
+// Elastic energy of the intact springs and shear springs plus the kinetic energy of the nodes'
+// motion relative to their anchors (erg).
+double Energy(const Lattice& lattice, const Mechanics& mech, const Growth& growth,
+              const Surface& surface);
+
+}  // namespace niwa::bark

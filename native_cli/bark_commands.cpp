@@ -1,0 +1,232 @@
+// niwa CLI commands of the bark study (Hirota, Kato, Kaneko, paper 003; core/bark,
+// docs/bark-model.md): 'bark grow' (the 2-layer model grown on a torus patch of the trunk, its
+// maps as PNGs, its cycles as CSV, its statistics as one JSON object), 'bark layers' (Fig. 7's
+// radial layout of the 4-layer model) and the table and presets
+// for 'niwa params bark' and 'niwa presets bark'. A thin adapter over bark::BarkRun: flags into a
+// state, the run, its outputs written all or none, the stats with the CLI's timings.
+// cli-order: 60
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "bark/bark_params.h"
+#include "bark/bark_run.h"
+#include "bark/bark_state.h"
+#include "bark/layers.h"
+#include "cli_common.h"
+#include "params/param_text.h"
+#include "run/field_names.h"
+
+namespace niwa::cli {
+namespace {
+
+using bark::BarkParam;
+
+// The one table of the bark commands' names for state fields (run/field_names.h).
+const run::FieldNames kFieldFlags = {
+    {"species", "--species"}, {"model", "--model"}, {"seed", "--seed"},
+    {"N_R", "--size"},        {"N_H", "--size"},    {"cycles", "--cycles"},
+};
+
+constexpr FlagRange kSeedRange = {0, bark::kMaxBarkSeed, true};
+
+FlagRange BarkRowRange(BarkParam row) {
+  return RowFlagRange(bark::BarkTable().row(static_cast<std::size_t>(row)));
+}
+
+struct GrowOptions {
+  std::string species, model, size, url, params_file;
+  std::string out, normal, height, orm, csv;
+  std::vector<std::string> sets;
+  double seed = -1;  // -1: not given
+  int cycles = 0;    // 0: not given (the row starts at 1)
+  bool stats = false;
+  BudgetOptions budget;
+};
+
+// The state from --url, then --species, --params, --model, --size, --seed, --cycles and --set.
+bark::BarkState ResolveBarkState(const GrowOptions& o) {
+  bark::BarkState state;
+  if (!o.url.empty()) {
+    std::vector<std::string> notices;
+    bark::ApplyBarkHash(o.url, "", &state, &notices);
+    if (!notices.empty()) throw BadInput{"--url: " + notices.front()};
+  }
+  if (!o.species.empty())
+    Check(run::RenameField(bark::SetBarkSpecies(o.species, &state), kFieldFlags));
+  if (!o.params_file.empty()) {
+    Result<std::string> text = ReadFile(o.params_file, "--params", kMaxParamsFileBytes);
+    if (!text.ok()) Fail(text.status());
+    Check(bark::ApplyBarkStateJson(*text, &state).Within("--params " + o.params_file));
+  }
+  if (!o.model.empty()) Check(run::RenameField(bark::SetBarkModel(o.model, &state), kFieldFlags));
+  if (!o.size.empty()) Check(run::RenameField(bark::SetBarkSize(o.size, &state), kFieldFlags));
+  if (o.seed >= 0) Check(run::RenameField(bark::SetBarkSeed(o.seed, &state), kFieldFlags));
+  if (o.cycles > 0)
+    Check(run::RenameField(state.params.Set(BarkParam::kCycles, o.cycles), kFieldFlags));
+  for (const std::string& s : o.sets) Check(state.params.SetFromAssignment(s).Within("--set"));
+  Check(run::RenameField(bark::CheckBarkState(state), kFieldFlags));
+  return state;
+}
+
+struct OutputFile {
+  std::string field, path, bytes;
+};
+
+// bark grow: an adapter over bark::BarkRun (core/bark/bark_run.h).
+int RunGrow(const GrowOptions& o, std::ostream& out) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const bark::BarkState state = ResolveBarkState(o);
+  const Budget budget = ResolveBudget(o.budget);
+  Result<bark::BarkRun> run = bark::BarkRun::Start(state, budget);
+  if (!run.ok()) Fail(run::RenameField(run.status(), kFieldFlags));
+  const auto t1 = std::chrono::steady_clock::now();
+  Check(run::RenameField(run->Advance({}), kFieldFlags));
+  const auto t2 = std::chrono::steady_clock::now();
+  std::vector<OutputFile> files;
+  const std::pair<const std::string*, const char*> maps[] = {
+      {&o.out, "base_colour"}, {&o.normal, "normal"}, {&o.height, "height"}, {&o.orm, "orm"}};
+  const char* flags[] = {"--out", "--normal", "--height", "--orm"};
+  for (int k = 0; k < 4; ++k) {
+    if (maps[k].first->empty()) continue;
+    Result<std::string> png = run->MapPng(maps[k].second);
+    if (!png.ok()) Fail(png.status().Within(flags[k]));
+    files.push_back({flags[k], *maps[k].first, *png});
+  }
+  if (!o.csv.empty()) files.push_back({"--csv", o.csv, run->CyclesCsv()});
+  const auto t3 = std::chrono::steady_clock::now();
+  StagedOutputs staged;
+  for (const OutputFile& f : files) Check(staged.Stage(f.field, f.path, f.bytes));
+  Check(staged.Commit());
+  nlohmann::ordered_json j;
+  if (o.stats) {
+    j = nlohmann::ordered_json::parse(run->StatsJson());
+    const auto t4 = std::chrono::steady_clock::now();
+    const double ms_grow = std::chrono::duration<double, std::milli>(t2 - t1).count();
+    j["ms"] = std::chrono::duration<double, std::milli>(t4 - t0).count();
+    j["ms_grow"] = ms_grow;
+    j["ms_maps"] = std::chrono::duration<double, std::milli>(t3 - t2).count();
+    j["ns_per_spring_step"] = run->spring_steps() > 0 ? ms_grow * 1e6 / run->spring_steps() : 0.0;
+  } else {
+    j["species"] = state.species;
+    j["model"] = state.model;
+    j["seed"] = state.seed;
+    j["hash"] = run->Hash("");
+    nlohmann::ordered_json written = nlohmann::ordered_json::array();
+    for (const OutputFile& f : files) written.push_back(f.path);
+    j["written"] = written;
+  }
+  out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+  return 0;
+}
+
+struct LayersOptions {
+  GrowOptions state;
+  std::string csv;
+};
+
+// bark layers: Fig. 7's radial layout of the 4-layer model over the state's cycles
+// (core/bark/layers.h), one JSON object; --csv writes the timeline.
+int RunLayers(const LayersOptions& o, std::ostream& out) {
+  const bark::BarkState state = ResolveBarkState(o.state);
+  const int cycles = state.params.GetInt(BarkParam::kCycles);
+  const std::vector<bark::LayerRadii> rows = bark::LayerTimeline(state.params, cycles, 10);
+  if (!o.csv.empty()) {
+    StagedOutputs staged;
+    Check(staged.Stage("--csv", o.csv, bark::LayerTimelineCsv(rows)));
+    Check(staged.Commit());
+  }
+  const bark::LayerRadii& first = rows.front();
+  const bark::LayerRadii& last = rows.back();
+  nlohmann::ordered_json j;
+  j["cycles"] = cycles;
+  j["rows"] = rows.size();
+  j["R_o"] = first.r_inner;
+  j["D"] = state.params.Get(BarkParam::kD);
+  j["T"] = state.params.Get(BarkParam::kT);
+  j["r_I_end"] = last.r_inner;
+  j["surface_start"] = first.s_out;
+  j["surface_end"] = last.s_out;
+  j["layers_shed"] = cycles;  // one surface layer a role exchange
+  out << j.dump() << "\n";
+  return 0;
+}
+
+void PrintPresets(std::ostream& out) {
+  for (const std::string& name : bark::BarkPresetNames()) {
+    out << name;
+    for (const auto& [key, value] : bark::BarkPresetValues(name))
+      out << "\t" << key << "=" << FormatNumber(value);
+    out << "\t" << bark::BarkPresetSource(name) << "\n";
+  }
+}
+
+}  // namespace
+
+void AddBarkCommands(CLI::App& app, CommandList& commands) {
+  const std::vector<std::string> example = {"--size", "16x8", "--set", "map_size=256", "--stats"};
+  std::vector<std::string> study_example = {"bark", "grow"};
+  study_example.insert(study_example.end(), example.begin(), example.end());
+  commands.studies.push_back({"bark", &bark::BarkTable(), &PrintPresets, {}, study_example});
+  CLI::App* bark_app =
+      Subcommand(app, "bark", "Bark that cracks as the trunk grows (Hirota, Kato, Kaneko)");
+  bark_app->require_subcommand(1);
+
+  CLI::App* grow = bark_app->add_subcommand(
+      "grow",
+      "Grow the 2-layer spring model (paper 003 §3) on a torus patch of the trunk: cracks, maps "
+      "(base colour, normal, 16-bit height, occlusion/roughness) and statistics");
+  auto o = std::make_shared<GrowOptions>();
+  grow->add_option("--species", o->species,
+                   "camphor (default), tallow or pine: Table 2 (niwa presets bark)");
+  grow->add_option("--model", o->model, "2layer (the 4-layer model is not built yet)");
+  grow->add_option("--size", o->size,
+                   "Lattice WxH: N_R columns around (even, " +
+                       RangeHelp(BarkRowRange(BarkParam::kNR)) + ") by N_H nodes along (" +
+                       RangeHelp(BarkRowRange(BarkParam::kNH)) + "); default 128x64");
+  AddNumberFlag(grow, "--seed", &o->seed, kSeedRange, "RNG seed, " + RangeHelp(kSeedRange));
+  AddNumberFlag(
+      grow, "--cycles", &o->cycles, BarkRowRange(BarkParam::kCycles),
+      "Growth periods T (the cycles row), " + RangeHelp(BarkRowRange(BarkParam::kCycles)));
+  grow->add_option("--set", o->sets, "KEY=VALUE of the bark table (niwa params bark)");
+  AddInputFlag(grow, "--params", &o->params_file,
+               "State JSON {species, model, seed, params: {key: value}}");
+  grow->add_option("--url", o->url,
+                   "A share-link hash (species=...&seed=...&N_R=...); other flags override it");
+  grow->add_flag("--stats", o->stats, "Print the statistics as one JSON object");
+  AddOutputFlag(grow, "--out", &o->out, {".png"}, "Write the base colour map as .png");
+  AddOutputFlag(grow, "--normal", &o->normal, {".png"},
+                "Write the normal map as .png (tangent space, OpenGL: +y up)");
+  AddOutputFlag(grow, "--height", &o->height, {".png"},
+                "Write the height map as a 16-bit greyscale .png (0: inner layer, 65535: surface)");
+  AddOutputFlag(grow, "--orm", &o->orm, {".png"},
+                "Write occlusion (R), roughness (G) and metallic (B) as .png");
+  AddOutputFlag(grow, "--csv", &o->csv, {".csv"},
+                "Write broken springs and strains every tenth of a cycle as .csv");
+  AddBudgetOptions(grow, &o->budget);
+  commands.push_back({grow, [o](std::ostream& out) { return RunGrow(*o, out); }, example});
+
+  CLI::App* layers = bark_app->add_subcommand(
+      "layers",
+      "Fig. 7: the 4-layer model's radial layout (inner layer, M2, M1, surface) over the cycles, "
+      "roles moving outward at each cycle, as one JSON object");
+  auto lo = std::make_shared<LayersOptions>();
+  layers->add_option("--species", lo->state.species, "camphor (default), tallow or pine");
+  layers->add_option("--size", lo->state.size,
+                     "Lattice WxH (R_o = √3·L_o·N_R/4π; N_R even, " +
+                         RangeHelp(BarkRowRange(BarkParam::kNR)) + ")");
+  AddNumberFlag(layers, "--cycles", &lo->state.cycles, BarkRowRange(BarkParam::kCycles),
+                "Cycles, " + RangeHelp(BarkRowRange(BarkParam::kCycles)));
+  layers->add_option("--set", lo->state.sets, "KEY=VALUE of the bark table (niwa params bark)");
+  layers->add_option("--url", lo->state.url, "A share-link hash; other flags override it");
+  AddOutputFlag(layers, "--csv", &lo->csv, {".csv"},
+                "Write t, cycle, tau, r_I, the layers' outer radii and birth cycles as .csv");
+  commands.push_back(
+      {layers, [lo](std::ostream& out) { return RunLayers(*lo, out); }, {"--cycles", "3"}});
+}
+
+}  // namespace niwa::cli

@@ -1,0 +1,74 @@
+// The crack measures on hand-built crack sets: blocks cut on every side are closed regions of the
+// expected extent, cuts around the trunk leave strips, and the intercepts count the crossings.
+#include "bark/regions.h"
+
+#include <gtest/gtest.h>
+
+#include "bark/bark_state.h"
+
+namespace niwa::bark {
+namespace {
+
+// Breaks every spring whose nodes have different labels (the triangles astride a cut drop out).
+Surface CutBy(const Lattice& L, const std::function<int(int i, int j)>& label) {
+  const BarkParams p = *BarkPreset("pine");
+  Surface s = InitialSurface(L, MechanicsOf(p), 1);
+  for (int k = 0; k < L.springs(); ++k) {
+    const int a = L.a[k], b = L.b[k];
+    if (label(a / L.n_h, a % L.n_h) != label(b / L.n_h, b % L.n_h)) {
+      s.broken[k] = 1;
+      ++s.broken_count[static_cast<int>(L.family(k))];
+    }
+  }
+  return s;
+}
+
+TEST(Regions, BlocksCutOnEverySideAreClosedRegions) {
+  const Lattice L = BuildLattice(12, 8, 0.33);
+  const Surface s = CutBy(L, [](int i, int j) { return (i / 4) * 10 + j / 4; });
+  const CrackMeasures m = MeasureCracks(L, s, 1.0, 1.0);
+  EXPECT_EQ(m.count, 6);
+  EXPECT_EQ(m.strips, 0);
+  EXPECT_DOUBLE_EQ(m.closed_fraction, 1.0);
+  // The plates are the triangles inside a block: columns 0-3 (3 pitches), rows 0-3 of even and
+  // odd columns (z from 0 to 3.5·L_o).
+  EXPECT_NEAR(m.mean_width, 3 * L.pitch(), 1e-12);
+  EXPECT_NEAR(m.max_width, 3 * L.pitch(), 1e-12);
+  EXPECT_NEAR(m.mean_height, 3.5 * 0.33, 1e-12);
+  EXPECT_NEAR(m.max_height, 3.5 * 0.33, 1e-12);
+  EXPECT_GT(m.broken[0], 0);
+  EXPECT_GT(m.broken[1], 0);
+}
+
+TEST(Regions, CutsAlongTheTrunkLeaveStrips) {
+  const Lattice L = BuildLattice(12, 8, 0.33);
+  // Two vertical cuts (between columns 3|4 and 7|8... and the seam 11|0 joins 8-11 to 0-3).
+  const Surface s = CutBy(L, [](int i, int) { return i >= 4 && i < 8 ? 1 : 0; });
+  const CrackMeasures m = MeasureCracks(L, s, 1.0, 1.0);
+  EXPECT_EQ(m.count, 2);
+  EXPECT_EQ(m.strips, 2);
+  EXPECT_DOUBLE_EQ(m.closed_fraction, 0.0);
+  EXPECT_NEAR(m.max_height, L.height(), 1e-12);     // the paper's "(>20)": the whole patch
+  EXPECT_NEAR(m.max_width, 7 * L.pitch(), 1e-12);   // columns 8..11 and 0..3, across the seam
+  EXPECT_NEAR(m.mean_width, 5 * L.pitch(), 1e-12);  // and 4..7
+  EXPECT_EQ(m.broken[0], 0);                        // no axial spring crosses a vertical cut
+  EXPECT_DOUBLE_EQ(m.vertical_crack_share, 1.0);
+  // Every row crosses 2 cracks: spacing C/2.
+  EXPECT_NEAR(m.intercept_width, L.circumference() / 2, 1e-12);
+  EXPECT_DOUBLE_EQ(m.intercept_height, 0.0);  // no horizontal crack: over the patch
+}
+
+TEST(Regions, AnIntactLayerIsOneRegionWrappingBothWays) {
+  const Lattice L = BuildLattice(8, 6, 0.33);
+  const Surface s = CutBy(L, [](int, int) { return 0; });
+  const CrackMeasures m = MeasureCracks(L, s, 1.02, 1.03);
+  ASSERT_EQ(m.regions.size(), 1u);
+  EXPECT_TRUE(m.regions[0].wraps_around);
+  EXPECT_TRUE(m.regions[0].wraps_along);
+  EXPECT_NEAR(m.regions[0].width, L.circumference() * 1.02, 1e-12);
+  EXPECT_NEAR(m.regions[0].height, L.height() * 1.03, 1e-12);
+  EXPECT_DOUBLE_EQ(m.vertical_crack_share, 0.0);
+}
+
+}  // namespace
+}  // namespace niwa::bark

@@ -1,0 +1,101 @@
+// The bark run once: a refusal over budget or for a bad row names its field before any work, a
+// cancel leaves the run as it was, a finished run cracks and reports, two runs give the same
+// bytes, an Update of map_size only redraws.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "bark/bark_run.h"
+
+namespace niwa::bark {
+namespace {
+
+BarkState Small(const char* species, const char* size = "32x16") {
+  BarkState s;
+  EXPECT_TRUE(SetBarkSpecies(species, &s).ok());
+  EXPECT_TRUE(SetBarkSize(size, &s).ok());
+  EXPECT_TRUE(s.params.Set(BarkParam::kMapSize, 256).ok());
+  return s;
+}
+
+TEST(BarkRun, RefusalsNameTheirFieldBeforeWork) {
+  BarkState s = Small("pine");
+  ASSERT_TRUE(s.params.Set(BarkParam::kNR, 33).ok());
+  EXPECT_EQ(BarkRun::Start(s, Budget{}).status().field(), "N_R");
+  s = Small("pine", "2048x512");
+  Budget tight;
+  tight.memory_bytes = 64 << 20;
+  Result<BarkRun> r = BarkRun::Start(s, tight);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status().field(), "max_memory");
+  EXPECT_NE(r.status().message().find("lower N_R, N_H"), std::string::npos);
+  Budget quick;
+  quick.seconds = 1;
+  r = BarkRun::Start(Small("pine", "512x512"), quick);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status().field(), "max_seconds");
+  s = Small("pine");
+  s.model = "4layer";
+  EXPECT_EQ(BarkRun::Start(s, Budget{}).status().field(), "model");
+}
+
+TEST(BarkRun, ACancelLeavesTheRunAsItWas) {
+  Result<BarkRun> run = BarkRun::Start(Small("tallow"), Budget{});
+  ASSERT_TRUE(run.ok());
+  int calls = 0;
+  const Status s = run->Advance([&](const run::Progress& p) {
+    EXPECT_EQ(p.phase, "grow");
+    return ++calls < 5;
+  });
+  EXPECT_TRUE(run::IsCancelled(s));
+  EXPECT_EQ(run->steps(), 0);
+  EXPECT_EQ(run->done(), 0);
+  EXPECT_EQ(run->surface().broken_count[0] + run->surface().broken_count[1], 0);
+  ASSERT_TRUE(run->Advance({}).ok());
+  EXPECT_EQ(run->done(), 1);
+  EXPECT_EQ(run->target(), 1);
+}
+
+TEST(BarkRun, AGrownRunCracksReportsAndRepeats) {
+  auto grow = [] {
+    Result<BarkRun> run = BarkRun::Start(Small("camphor"), Budget{});
+    EXPECT_TRUE(run.ok());
+    EXPECT_TRUE(run->Advance({}).ok());
+    return std::move(*run);
+  };
+  const BarkRun a = grow(), b = grow();
+  const nlohmann::json j = nlohmann::json::parse(a.StatsJson());
+  EXPECT_EQ(j["nodes"], 512);
+  EXPECT_EQ(j["springs"]["axial"], 512);
+  EXPECT_EQ(j["springs"]["diagonal"], 1024);
+  EXPECT_EQ(j["steps"].get<int>(), j["steps_per_cycle"].get<int>() + 2000);
+  EXPECT_GT(j["broken_fraction"]["diagonal"].get<double>(), 0.0);
+  EXPECT_GT(j["vertical_crack_share"].get<double>(), 0.5);  // camphor: vertical furrows
+  EXPECT_GT(j["regions"]["count"].get<int>(), 0);
+  EXPECT_EQ(j["hash"], "species=camphor&model=2layer&seed=1&N_R=32&N_H=16&map_size=256");
+  EXPECT_EQ(a.StatsJson(), b.StatsJson());
+  EXPECT_EQ(*a.MapPng("base_colour"), *b.MapPng("base_colour"));
+  EXPECT_EQ(*a.MapPng("height"), *b.MapPng("height"));
+  EXPECT_EQ(a.MapPng("albedo").status().field(), "format");
+  const std::string csv = a.CyclesCsv();
+  EXPECT_EQ(csv.rfind("cycle,step,strain_theta,strain_z,broken_axial,broken_diagonal\n", 0), 0u);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 1 + 10 + 1);  // 0, tenths, end
+}
+
+TEST(BarkRun, AMapSizeUpdateOnlyRedraws) {
+  Result<BarkRun> run = BarkRun::Start(Small("pine"), Budget{});
+  ASSERT_TRUE(run.ok());
+  ASSERT_TRUE(run->Advance({}).ok());
+  const int steps = run->steps();
+  BarkState s = run->state();
+  ASSERT_TRUE(s.params.Set(BarkParam::kMapSize, 512).ok());
+  ASSERT_TRUE(run->Update(s).ok());
+  EXPECT_EQ(run->steps(), steps);
+  EXPECT_EQ(run->maps().base_colour.width, 512);
+  ASSERT_TRUE(s.params.Set(BarkParam::kSigma, 0.2).ok());
+  ASSERT_TRUE(run->Update(s).ok());
+  EXPECT_EQ(run->steps(), 0);  // regrows at the next Advance
+}
+
+}  // namespace
+}  // namespace niwa::bark

@@ -1,0 +1,82 @@
+// Bark CLI: native == WASM bytes of `niwa bark grow --stats` (without its timing fields) and of the
+// four maps and the cycles CSV, for the three species of Table 2 at a small size, seed 1; the maps'
+// PNG sizes; `niwa bark layers` (Fig. 7) in both builds; `niwa params bark` / `niwa presets bark` in both builds; bad input one line naming the
+// flag, exit 2, nothing written.
+import { mkdtempSync, readFileSync, existsSync, readdirSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { buildName, check, finish, native, requireWasm, run, spawn, wasm } from '../support/cli_pair.mjs';
+
+requireWasm();
+
+const work = mkdtempSync(join(tmpdir(), 'niwa-bark-'));
+const timing = (k) => k.startsWith('ms') || k === 'ns_per_spring_step';
+const stats = (text) => Object.fromEntries(Object.entries(JSON.parse(text)).filter(([k]) => !timing(k)));
+const pngSize = (bytes) => [bytes.readUInt32BE(16), bytes.readUInt32BE(20), bytes[24]];
+
+for (const species of ['camphor', 'tallow', 'pine']) {
+  const outputs = {};
+  for (const cmd of [native, wasm]) {
+    const dir = join(work, `${species}-${buildName(cmd)}`);
+    const files = { out: 'c.png', normal: 'n.png', height: 'h.png', orm: 'o.png', csv: 'cycles.csv' };
+    const args = ['bark', 'grow', '--species', species, '--size', '32x16', '--seed', '1', '--set', 'map_size=256', '--stats'];
+    for (const [flag, name] of Object.entries(files)) args.push(`--${flag}`, join(dir, name));
+    spawn('mkdir', ['-p', dir]);
+    const r = spawn(cmd, args);
+    check(`${species} ${buildName(cmd)}: exit 0`, r.status === 0, r.stderr);
+    outputs[buildName(cmd)] = { stats: r.status === 0 ? stats(r.stdout) : {}, dir, files };
+  }
+  const a = outputs.native, b = outputs.wasm;
+  check(`${species}: --stats native == WASM (timings aside)`, JSON.stringify(a.stats) === JSON.stringify(b.stats),
+    `${JSON.stringify(a.stats)}\n${JSON.stringify(b.stats)}`);
+  check(`${species}: the stats have every field`, ['nodes', 'springs', 'steps', 'broken_fraction', 'vertical_crack_share', 'regions', 'intercept', 'hash']
+    .every((k) => k in a.stats) && a.stats.nodes === 512 && a.stats.broken.diagonal > 0);
+  for (const name of Object.values(a.files)) {
+    const x = readFileSync(join(a.dir, name)), y = readFileSync(join(b.dir, name));
+    check(`${species} ${name}: native == WASM bytes (${x.length})`, x.length > 0 && x.equals(y));
+  }
+  const [w, h, depth] = pngSize(readFileSync(join(a.dir, 'h.png')));
+  check(`${species}: height map 256 wide, power-of-two tall, 16-bit`, w === 256 && (h & (h - 1)) === 0 && depth === 16, `${w}x${h} ${depth}-bit`);
+}
+
+// Fig. 7's layout (bark layers): native == WASM bytes of the JSON and the CSV; the surface moves out
+// by ΔR a cycle and r_I ends at R_o + 3·ΔR.
+{
+  const got = {};
+  for (const cmd of [native, wasm]) {
+    const csv = join(work, `fig7-${buildName(cmd)}.csv`);
+    got[buildName(cmd)] = { json: run(cmd, ['bark', 'layers', '--cycles', '3', '--csv', csv]), csv: readFileSync(csv) };
+  }
+  check('bark layers: native == WASM (JSON and CSV)', got.native.json === got.wasm.json && got.native.csv.equals(got.wasm.csv));
+  const j = JSON.parse(got.native.json);
+  check(`bark layers: r_I ${j.R_o} -> ${j.r_I_end} (3 cycles of 0.021·R_o), 34 rows`,
+    Math.abs(j.r_I_end - j.R_o * (1 + 3 * 0.021)) < 1e-9 && j.rows === 34 && Math.abs(j.surface_end - (j.r_I_end + 2)) < 1e-9);
+}
+
+// The table and presets in both builds.
+for (const cmd of [native, wasm]) {
+  const table = JSON.parse(run(cmd, ['params', 'bark', '--json']));
+  check(`params bark ${buildName(cmd)}: Table 2 rows`, ['E1', 'E2', 'G', 'kappa1', 'kappa2', 'N_R', 'N_H', 'map_size'].every((k) => table.some((r) => r.key === k)));
+  const presets = run(cmd, ['presets', 'bark']);
+  check(`presets bark ${buildName(cmd)}: camphor, tallow, pine`, /^camphor\t/m.test(presets) && /^tallow\t/m.test(presets) && /^pine\t/m.test(presets));
+}
+
+// Bad input: one line naming the flag, exit 2, nothing written.
+for (const [args, flag] of [
+  [['--size', '33x16'], '--size'],
+  [['--size', '32by16'], '--size'],
+  [['--species', 'oak'], '--species'],
+  [['--model', '4layer'], '--model'],
+  [['--set', 'kappa1=2'], '--set'],
+  [['--size', '2048x512', '--max-memory', '128M'], '--max-memory'],
+  [['--url', 'species=pine&N_R=64&N_R=64'], '--url'],
+]) {
+  for (const cmd of [native, wasm]) {
+    const dir = mkdtempSync(join(work, 'bad-'));
+    const r = spawn(cmd, ['bark', 'grow', ...args, '--out', join(dir, 'c.png')]);
+    const lines = r.stderr.trim().split('\n');
+    check(`bark grow ${args.join(' ')} ${buildName(cmd)}: exit 2, one line naming ${flag}`,
+      r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${flag}`) && readdirSync(dir).length === 0, r.stderr.trim());
+  }
+}
+finish();
