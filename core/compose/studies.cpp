@@ -7,6 +7,8 @@
 #include "bark/bark_state.h"
 #include "ivy/ivy_params.h"
 #include "ivy/ivy_state.h"
+#include "moss/moss_params.h"
+#include "moss/moss_state.h"
 #include "params/param_json.h"
 #include "terrain/terrain_params.h"
 #include "terrain/terrain_state.h"
@@ -138,6 +140,32 @@ Result<std::string> BarkEncode(const std::string& state_json, std::string_view p
   return bark::EncodeBarkHash(state, prefix);
 }
 
+// ---------------------------------------------------------------- moss (paper 001)
+std::string MossPresetsJson() {
+  ordered_json out = ordered_json::array();
+  for (const std::string& name : moss::MossPresetNames()) {
+    ordered_json j;
+    j["name"] = name;
+    j["source"] = moss::MossPresetSource(name);
+    j["params"] = ordered_json::parse(ParamsToJson(*moss::MossPreset(name), -1));
+    out.push_back(std::move(j));
+  }
+  return out.dump();
+}
+
+std::string MossDecode(std::string_view hash, std::string_view prefix) {
+  moss::MossState state;
+  std::vector<std::string> notices;
+  moss::ApplyMossHash(hash, prefix, &state, &notices);
+  return DecodedJson(moss::MossStateJson(state), notices);
+}
+
+Result<std::string> MossEncode(const std::string& state_json, std::string_view prefix) {
+  moss::MossState state;
+  NIWA_RETURN_IF_ERROR(moss::ApplyMossStateJson(state_json, &state));
+  return moss::EncodeMossHash(state, prefix);
+}
+
 }  // namespace
 
 const std::vector<StudyInfo>& Studies() {
@@ -151,6 +179,8 @@ const std::vector<StudyInfo>& Studies() {
        &TerrainEncode},
       {"bark", "cycles", &bark::BarkTable, [] { return ParamTableJson(bark::BarkTable()); },
        &BarkPresetsJson, &BarkDecode, &BarkEncode},
+      {"moss", "days", &moss::MossTable, [] { return ParamTableJson(moss::MossTable()); },
+       &MossPresetsJson, &MossDecode, &MossEncode},
   };
   return studies;
 }

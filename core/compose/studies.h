@@ -37,7 +37,7 @@ const std::vector<StudyInfo>& Studies();
 // The study named `name`, or nullptr.
 const StudyInfo* FindStudy(std::string_view name);
 
-// "tree, ivy, terrain or bark": the names for an error line.
+// "tree, ivy, terrain, bark or moss": the names for an error line.
 std::string StudyNames();
 
 }  // namespace niwa::compose

@@ -1,10 +1,12 @@
 // The moss state's preset and values, and its share-link hash.
 #include "moss/moss_state.h"
 
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "io/hash_codec.h"
 #include "moss/scenes.h"
+#include "params/param_json.h"
 #include "params/param_text.h"
 
 namespace niwa::moss {
@@ -82,6 +84,46 @@ std::string EncodeMossHash(const MossState& state, std::string_view prefix) {
   if (state.days != 300) out += "&" + pre + "days=" + std::to_string(state.days);
   if (state.seed != 1) out += "&" + pre + "seed=" + std::to_string(state.seed);
   return out + EncodeChangedParams(state.params, base.ok() ? *base : MossParams(), prefix);
+}
+
+Status ApplyMossStateJson(const std::string& text, MossState* state) {
+  NIWA_RETURN_IF_ERROR(CheckJsonKeys(text, "params"));
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object()) {
+    return Status::Error("params",
+                         "not a JSON object; must be {preset, scene, days, seed, params}");
+  }
+  MossState next = *state;
+  if (j.contains("preset")) {
+    if (!j["preset"].is_string()) return Status::Error("preset", "must be a preset name");
+    NIWA_RETURN_IF_ERROR(SetMossPreset(j["preset"].get<std::string>(), &next));
+  }
+  if (j.contains("scene")) {
+    if (!j["scene"].is_string()) return Status::Error("scene", "must be a scene name");
+    NIWA_RETURN_IF_ERROR(SetMossScene(j["scene"].get<std::string>(), &next));
+  }
+  if (j.contains("days")) {
+    if (!j["days"].is_number()) return Status::Error("days", "must be a whole number in [0, 3650]");
+    NIWA_RETURN_IF_ERROR(SetMossDays(j["days"].get<double>(), &next));
+  }
+  if (j.contains("seed")) {
+    if (!j["seed"].is_number())
+      return Status::Error("seed", "must be a whole number in [0, 4294967295]");
+    NIWA_RETURN_IF_ERROR(SetMossSeed(j["seed"].get<double>(), &next));
+  }
+  NIWA_RETURN_IF_ERROR(ApplyParamsJson(text, &next.params, {"preset", "scene", "days", "seed"}));
+  *state = next;
+  return Status::Ok();
+}
+
+std::string MossStateJson(const MossState& state) {
+  nlohmann::json j;
+  j["preset"] = state.preset;
+  j["scene"] = state.scene;
+  j["days"] = state.days;
+  j["seed"] = state.seed;
+  j["params"] = nlohmann::json::parse(ParamsToJson(state.params, -1));
+  return j.dump();
 }
 
 }  // namespace niwa::moss

@@ -41,6 +41,12 @@ Status SetMossPreset(std::string_view name, MossState* state);
 void ApplyMossHash(std::string_view hash, std::string_view prefix, MossState* state,
                    std::vector<std::string>* notices);
 
+// A state file {preset, scene, days, seed, params: {key: value}} (any subset): the preset first,
+// then the others; a key outside these, a repeated key or a wrong type is an error naming it
+// (nothing applied). MossStateJson writes every field and every row, read back to the same state.
+Status ApplyMossStateJson(const std::string& text, MossState* state);
+std::string MossStateJson(const MossState& state);
+
 // "preset=NAME", then scene, days and seed where they differ from the defaults (thesis, 300, 1),
 // then every row that differs from the preset, keys prefixed.
 std::string EncodeMossHash(const MossState& state, std::string_view prefix = "");

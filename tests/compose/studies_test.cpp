@@ -12,16 +12,18 @@ namespace {
 
 using nlohmann::json;
 
-TEST(Studies, TheFourStudiesInTheNavsOrder) {
-  ASSERT_EQ(Studies().size(), 4u);
+TEST(Studies, TheFiveStudiesInTheNavsOrder) {
+  ASSERT_EQ(Studies().size(), 5u);
   EXPECT_EQ(Studies()[0].name, "tree");
   EXPECT_EQ(Studies()[1].name, "ivy");
   EXPECT_EQ(Studies()[2].name, "terrain");
   EXPECT_EQ(Studies()[3].name, "bark");
   EXPECT_EQ(FindStudy("ivy")->unit, "steps");
   EXPECT_EQ(FindStudy("bark")->unit, "cycles");
-  EXPECT_EQ(FindStudy("moss"), nullptr);
-  EXPECT_EQ(StudyNames(), "tree, ivy, terrain or bark");
+  EXPECT_EQ(Studies()[4].name, "moss");
+  EXPECT_EQ(FindStudy("moss")->unit, "days");
+  EXPECT_EQ(FindStudy("garden"), nullptr);
+  EXPECT_EQ(StudyNames(), "tree, ivy, terrain, bark or moss");
 }
 
 TEST(Studies, EachTableAndPresetListIsJsonOfItsTable) {
@@ -32,7 +34,8 @@ TEST(Studies, EachTableAndPresetListIsJsonOfItsTable) {
     EXPECT_EQ(table[0]["key"], s.table().row(0).key) << s.name;
     const json presets = json::parse(s.presets_json());
     ASSERT_TRUE(presets.is_array()) << s.name;
-    EXPECT_GE(presets.size(), s.name == "bark" ? 3u : 4u) << s.name;  // Table 2's three species
+    // Table 2's three species; moss's two physics presets (nomura2010, nomura2010-sky)
+    EXPECT_GE(presets.size(), s.name == "bark" ? 3u : s.name == "moss" ? 2u : 4u) << s.name;
     for (const json& p : presets) EXPECT_TRUE(p.contains("name")) << s.name;
   }
 }
@@ -43,6 +46,7 @@ TEST(Studies, AStateRoundTripsThroughItsPrefixedHash) {
       {"ivy", "preset=improved&seed=3&steps=40&scene=wall"},
       {"terrain", "preset=fig13b&builtin=dumbbell"},
       {"bark", "species=pine&seed=3&N_R=64&sigma=0.2"},
+      {"moss", "preset=nomura2010-sky&scene=walls&days=40&seed=2&photons=2048"},
   };
   for (const StudyInfo& s : Studies()) {
     const std::string prefix = s.name + ".";
@@ -61,6 +65,7 @@ TEST(Studies, AStateRoundTripsThroughItsPrefixedHash) {
     EXPECT_EQ(preset, s.name == "tree"      ? "maple"
                       : s.name == "ivy"     ? "improved"
                       : s.name == "terrain" ? "fig13b"
+                      : s.name == "moss"    ? "nomura2010-sky"
                                             : "pine")
         << s.name;
     Result<std::string> again = s.encode_hash(decoded["state"].dump(), prefix);
