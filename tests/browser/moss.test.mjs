@@ -135,6 +135,18 @@ await runBrowserTest(async (server, browser) => {
   check('the page recovers after the bad value', data.status === 'ready' && data.hash.includes('days=20'), `${data.status} ${data.hash} ${data.error || ''}`);
   compareWithNative('days 20', data);
 
+  // 4b. A long run shows its days as it grows; Cancel ends it and the last finished run grows again.
+  serial = Number(data.mossSerial);
+  const goodHash = data.hash;
+  await page.fill('#days', '300');
+  await page.waitForFunction(() => /growing: day [1-9]/.test(document.getElementById('progress').textContent), null, { timeout: TIMEOUT });
+  const progressText = await page.textContent('#progress');
+  await page.click('#cancel');
+  const cancelled = await page.evaluate(() => document.documentElement.dataset.status);
+  data = await waitMoss(page, serial);
+  check('progress by day, then Cancel goes back to the last finished run', /growing: day \d+ of 300/.test(progressText) && cancelled === 'cancelled' &&
+    data.status === 'ready' && data.hash === goodHash, `'${progressText}', status after Cancel ${cancelled}, then ${data.status} ${data.hash}`);
+
   // 5. A bad hash value: a notice, and a run still grows.
   serial = Number(data.mossSerial);
   await page.evaluate(() => { location.hash = '#preset=nomura2010&days=-1&photons=2048&scene=thesis'; });

@@ -110,7 +110,8 @@ Status ApplyMossStateJson(const std::string& text, moss::MossState* state) {
 }
 
 void PushVec(std::vector<float>* out, const glm::dvec3& v) {
-  out->insert(out->end(), {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)});
+  out->insert(out->end(),
+              {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)});
 }
 
 }  // namespace
