@@ -99,12 +99,14 @@ await runBrowserTest(async (server, browser) => {
     await page.waitForFunction((k) => document.documentElement.dataset.drawnDay === String(k), day, { timeout: TIMEOUT });
     const d = await page.evaluate(() => ({ ...document.documentElement.dataset }));
     const want = byDay[day] ? byDay[day].reduce((a, b) => a + b, 0) : NaN;
-    shown.push({ day, drawn: Number(d.drawnMosses), want });
+    shown.push({ day, drawn: Number(d.drawnMosses), want, coverage: Number(d.coverageShown) });
     if (day === 10) await saveCanvasPng(page, 'moss-day10.png');
   }
   check('the day scrubber draws each day\'s mosses (== stats population.by_day)', shown.every((s) => s.drawn === s.want),
     shown.map((s) => `day ${s.day}: ${s.drawn} (stats ${s.want})`).join(', '));
   check('the scrubber changes the number drawn', new Set(shown.map((s) => s.drawn)).size > 1, shown.map((s) => s.drawn).join(','));
+  check('the coverage overlay follows the day, and its replay of the last day is the run\'s', new Set(shown.map((s) => s.coverage)).size > 1 &&
+    Number(data.coverageReplayError) < 1e-4, `coverage ${shown.map((s) => s.coverage).join(', ')}; replay error ${data.coverageReplayError}`);
   data = await page.evaluate(() => ({ ...document.documentElement.dataset }));
   check('scrubbing does not grow again', Number(data.growRequests) === grows, `grow requests ${grows} -> ${data.growRequests}`);
   // Play runs the days from 0 to the end.

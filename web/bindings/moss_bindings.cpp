@@ -16,8 +16,10 @@
 //             day, W/m²), geology (Float32 per vertex: 0 humus, 1 sandy, 2 asphalt)
 //   "mosses"  positions, normals (Float32 xyz: a moss's centre and the normal of what it grows
 //             on), species (Float32: 0 gingoke, 1 haigoke, 2 sugigoke), birth (Float32: its birth
-//             day), death (Float32: the first day it was gone, -1 while alive); one entry per
-//             moss ever alive at the end of a day, in order of first appearance
+//             day), death (Float32: the first day it was gone, -1 while alive), cell (Uint32:
+//             its soil cell, the land's triangle), on_moss (Float32: 1 when it rests on other
+//             mosses); one entry per moss ever alive at the end of a day, in order of first
+//             appearance (the page replays any day's coverage from them)
 // Calls: setProgress(fn) (fn(stage, done, total) after every day), grow(stateJson) -> ""/error
 // record, then statsJson() (the CLI's `niwa moss grow --stats`, ms* timing fields included),
 // hash(), stateJson(), boundsJson(), buffers(group). The state JSON: {preset, scene, days, seed,
@@ -216,7 +218,9 @@ class MossLab {
           .Add("normals", moss_normals_)
           .Add("species", moss_species_)
           .Add("birth", moss_birth_)
-          .Add("death", moss_death_);
+          .Add("death", moss_death_)
+          .Add("cell", moss_cell_)
+          .Add("on_moss", moss_on_moss_);
     } else {
       return emscripten::val::null();
     }
@@ -288,12 +292,16 @@ class MossLab {
     moss_species_.clear();
     moss_birth_.clear();
     moss_death_.clear();
+    moss_cell_.clear();
+    moss_on_moss_.clear();
     for (const Life& life : lives.ever) {
       PushVec(&moss_positions_, life.plant.pos);
       PushVec(&moss_normals_, life.plant.normal);
       moss_species_.push_back(static_cast<float>(static_cast<int>(life.plant.species)));
       moss_birth_.push_back(static_cast<float>(life.plant.birth_day));
       moss_death_.push_back(static_cast<float>(life.death));
+      moss_cell_.push_back(life.plant.cell);
+      moss_on_moss_.push_back(life.plant.on_moss ? 1.f : 0.f);
     }
   }
 
@@ -301,7 +309,9 @@ class MossLab {
   moss::MossState state_;
   std::vector<float> land_positions_, land_normals_, land_coverage_, land_irradiance_,
       land_geology_;
-  std::vector<float> moss_positions_, moss_normals_, moss_species_, moss_birth_, moss_death_;
+  std::vector<float> moss_positions_, moss_normals_, moss_species_, moss_birth_, moss_death_,
+      moss_on_moss_;
+  std::vector<uint32_t> moss_cell_;
   emscripten::val progress_ = emscripten::val::null();
 };
 

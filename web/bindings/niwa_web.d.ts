@@ -147,7 +147,7 @@ export class MossLab {
   hash(): string;
   stateJson(): string;
   boundsJson(): string;
-  /** "land": positions, normals, coverage, irradiance, geology; "mosses": positions, normals, species, birth, death. */
+  /** "land": positions, normals, coverage, irradiance, geology; "mosses": positions, normals, species, birth, death, cell, on_moss. */
   buffers(group: string): BufferViews;
   delete(): void;
 }

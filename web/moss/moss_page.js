@@ -81,7 +81,7 @@ const scrubber = new StepScrubber({ range: ui.day, text: ui.dayText, play: ui.pl
   const alive = renderer ? renderer.aliveOn(k) : { total: 0, bySpecies: [0, 0, 0] };
   const [g, h, s] = alive.bySpecies;
   ui.dayText.textContent = `day ${k} of ${lastDay} · ${alive.total} mosses (${g} gingoke, ${h} haigoke, ${s} sugigoke)`;
-  setHooks({ dayShown: k, mossesShown: alive.total });
+  setHooks({ dayShown: k, mossesShown: alive.total, coverageShown: (renderer?.coverageShown ?? 0).toFixed(6) });
   requestFrame();
 }, { interval: 120 });
 
@@ -196,6 +196,7 @@ worker.on('moss', (msg) => {
   lastDay = msg.bounds.days;
   if (renderer) {
     renderer.setMoss(msg.buffers, msg.bounds, Number(msg.state.params.moss_size) || 0.01);
+    setHooks({ coverageReplayError: renderer.coverageReplayError });
     installedSerial = mossSerial + 1;
     if (frameNext) {
       frameLand();

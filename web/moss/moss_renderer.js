@@ -1,8 +1,8 @@
 // The moss page's WebGL2 view (shaders/moss/): the land (one flat triangle per soil cell in its
-// geology's colour) lit by the frame's sun and tinted by an overlay of the last day (coverage or
-// irradiance, or none), and every moss ever alive as an instanced tuft of six triangles coloured
-// by species, drawn only on
-// the days it was alive (birth ≤ day < death, in tuft.vert), so the day scrubber (setDay) replays
+// geology's colour) lit by the frame's sun and tinted by an overlay (the coverage of the day
+// shown, replayed from the mosses' lives; the irradiance of the last day; or none), and every
+// moss ever alive as an instanced tuft of six triangles coloured by species, drawn only on the
+// days it was alive (birth ≤ day < death, in tuft.vert), so the day scrubber (setDay) replays
 // the run without a new grow. Positions stay in metres as the worker sends them; uModel centres
 // the land and scales its extent to about ten view units (a Frame of fit: true), else metres.
 // A StudyLayer (web/gl/frame.js), a layer of a Frame (layerSteps, under its camera and sun).
@@ -79,6 +79,17 @@ export class MossRenderer extends StudyLayer {
     floatAttribute(gl, 4, land[4], 1);
     gl.bindVertexArray(null);
     this.land = { vao, buffers: land, count: l.positions.byteLength / 12 };
+    // Each cell's area (m²), for the coverage of any day (min(1, n·s²/A), as the run's stats).
+    const p = viewOf(Float32Array, l.positions);
+    const cells = this.land.count / 3;
+    this.area = new Float64Array(cells);
+    for (let c = 0; c < cells; ++c) {
+      const o = 9 * c;
+      const u = [p[o + 3] - p[o], p[o + 4] - p[o + 1], p[o + 5] - p[o + 2]];
+      const v = [p[o + 6] - p[o], p[o + 7] - p[o + 1], p[o + 8] - p[o + 2]];
+      this.area[c] = 0.5 * Math.hypot(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]);
+    }
+    this.coverage = new Float32Array(3 * cells);
 
     const m = buffers.mosses;
     const n = m.birth.byteLength / 4;
@@ -99,9 +110,18 @@ export class MossRenderer extends StudyLayer {
     floatAttribute(gl, 0, this.tuft, 3);
     const instances = staticBuffer(gl, data);
     gl.bindVertexArray(null);
-    this.mosses = { vao, buffers: [instances], count: n, life, species: new Float32Array(species) };
+    this.mosses = {
+      vao, buffers: [instances], count: n, life, species: new Float32Array(species),
+      cell: new Uint32Array(viewOf(Uint32Array, m.cell)), onMoss: new Float32Array(viewOf(Float32Array, m.on_moss)),
+    };
 
     this.size = size;
+    // The replay of the last day against the run's own coverage (what the worker sent).
+    const last = viewOf(Float32Array, l.coverage);
+    this.#fillCoverage(Infinity);
+    this.coverageReplayError = 0;
+    for (let i = 0; i < last.length; ++i) this.coverageReplayError = Math.max(this.coverageReplayError, Math.abs(last[i] - this.coverage[i]));
+    this.coverageDay = Infinity;
     this.irradianceMax = Math.max(bounds.irradiance_max || 0, 1e-6);
     const ext = [0, 1, 2].map((k) => bounds.max[k] - bounds.min[k]);
     const extent = Math.max(ext[0], ext[2], 1e-9);
@@ -125,9 +145,40 @@ export class MossRenderer extends StudyLayer {
     floatAttribute(gl, 4, b, 2, stride, o + 28, 1);
   }
 
-  // The day shown (Infinity: the last).
+  // The day shown (Infinity: the last); the coverage overlay follows it.
   setDay(day) {
     this.day = day;
+    if (!this.land || day === this.coverageDay) return;
+    this.#fillCoverage(day);
+    this.coverageDay = day;
+    const gl = this.gl;
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.land.buffers[2]);
+    gl.bufferSubData(gl.ARRAY_BUFFER, 0, this.coverage);
+  }
+
+  // this.coverage (per vertex) of the mosses on the land (not on mosses) alive on `day`; returns
+  // the land's area-weighted coverage.
+  #fillCoverage(day) {
+    const cells = this.area.length;
+    const count = new Float64Array(cells);
+    if (this.mosses) {
+      const { life, cell, onMoss } = this.mosses;
+      for (let i = 0; i < this.mosses.count; ++i) {
+        const b = life[2 * i], d = life[2 * i + 1];
+        if (onMoss[i] === 0 && b <= day && (d < 0 || day < d) && cell[i] < cells) ++count[cell[i]];
+      }
+    }
+    const s2 = this.size * this.size;
+    let covered = 0, total = 0;
+    for (let c = 0; c < cells; ++c) {
+      const a = this.area[c];
+      const f = a > 0 ? Math.min(1, (count[c] * s2) / a) : 0;
+      this.coverage[3 * c] = this.coverage[3 * c + 1] = this.coverage[3 * c + 2] = f;
+      covered += Math.min(a, count[c] * s2);
+      total += a;
+    }
+    this.coverageShown = total > 0 ? covered / total : 0;
+    return this.coverageShown;
   }
 
   // 0 none, 1 coverage, 2 irradiance.

@@ -170,7 +170,7 @@
  *   -> ProgressMessage (after every day: stage 'grow', done, total days), {type: 'moss', stats (the
  *       CLI's `niwa moss grow --stats`, ms* fields included), hash, state, bounds: {min, max, cells,
  *       days, mosses_ever, mosses_alive, irradiance_max}, buffers: {land: {positions, normals,
- *       coverage, irradiance, geology}, mosses: {positions, normals, species, birth, death}} (views into the
+ *       coverage, irradiance, geology}, mosses: {positions, normals, species, birth, death, cell, on_moss}} (views into the
  *       buffers the client handed back when they fit), bufferCounts, growMs, wallMs}
  * @typedef {Envelope & {type: 'recycle', buffers: Object<string, ArrayBuffer>}} MossRecycleMessage
  *   (no reply) the page's land and moss buffers back once on the GPU.
