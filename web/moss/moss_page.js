@@ -30,7 +30,7 @@ mountStudyNav($('studies'), 'moss');
 
 const notices = new Notices($('notice'), ['webgl', 'error', 'hash']);
 // Errors beside the controls outside the panel (the panel's rows find their own).
-const BASIC_FIELDS = { scene: 'scene-error', preset: 'preset-error', days: 'days-error', seed: 'rng-seed-error', state: 'days-error' };
+const BASIC_FIELDS = { scene: 'scene-error', preset: 'preset-error', days: 'days-error', seed: 'rng-seed-error' };
 const controller = new StudyController({
   study: 'moss', notices, ui, fields: BASIC_FIELDS, panel: () => panel, state: () => currentState(false),
   onCancel: () => 'cancelled: back to the last finished run',
