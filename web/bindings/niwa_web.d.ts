@@ -128,3 +128,26 @@ export class TerrainLab {
   buffers(group: string): BufferViews;
   delete(): void;
 }
+
+// ---- moss_bindings.cpp: Nomura 2010 over core/moss/moss_run
+/** The moss table for the panel (the compose registry has no moss row yet). */
+export function mossTableJson(): string;
+/** [{name, source, params}] of the moss presets. */
+export function mossPresetsJson(): string;
+/** The built-in scenes as `niwa moss scenes` lists them. */
+export function mossScenesJson(): string;
+/** {state: {preset, scene, days, seed, params}, notices} of a share-link hash. */
+export function mossDecodeHash(hash: string, prefix: string): string;
+
+export class MossLab {
+  constructor();
+  setProgress(fn: ((stage: string, done: number, total: number) => void) | null): void;
+  grow(stateJson: string): ErrorText;
+  statsJson(): string;
+  hash(): string;
+  stateJson(): string;
+  boundsJson(): string;
+  /** "land": positions, normals, coverage, irradiance, geology; "mosses": positions, normals, species, birth, death, cell, on_moss. */
+  buffers(group: string): BufferViews;
+  delete(): void;
+}

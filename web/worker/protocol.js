@@ -163,5 +163,17 @@
  *   -> {type: 'contourFile', name, points?, elevation?, error?}
  * export: format 'glb' | 'heightmap' | 'sidecar' | 'json' | 'geojson' | 'svg'.
  */
+/**
+ * The moss page (study: 'moss', web/worker/moss_handler.js). State: {preset, scene, days, seed,
+ * params}; ready carries `paramTable`, `presets`, `scenes`, `decoded`.
+ * @typedef {Envelope & {type: 'update', state: Object}} MossUpdateMessage
+ *   -> ProgressMessage (after every day: stage 'grow', done, total days), {type: 'moss', stats (the
+ *       CLI's `niwa moss grow --stats`, ms* fields included), hash, state, bounds: {min, max, cells,
+ *       days, mosses_ever, mosses_alive, irradiance_max}, buffers: {land: {positions, normals,
+ *       coverage, irradiance, geology}, mosses: {positions, normals, species, birth, death, cell, on_moss}} (views into the
+ *       buffers the client handed back when they fit), bufferCounts, growMs, wallMs}
+ * @typedef {Envelope & {type: 'recycle', buffers: Object<string, ArrayBuffer>}} MossRecycleMessage
+ *   (no reply) the page's land and moss buffers back once on the GPU.
+ */
 // (No list of message types here: each study's handler says which it answers, and the router
 // refuses any other per study; a new study adds messages without touching this file.)

@@ -1,0 +1,180 @@
+// Browser test of the moss page (public/moss.html): node tests/browser/moss.test.mjs (exit 0 =
+// pass). The page opens with no input and grows the opening run (thesis scene, 60 days, 4096
+// photons) with mosses drawn; its stats equal the native CLI's `niwa moss grow --url HASH --stats`
+// (every field but the ms* timings) for the page's own hash; the day scrubber changes the number
+// of mosses drawn, each day's count equal to the stats' population of that day, without a new
+// grow; a bad Days value (-1) and a bad hash value are a notice beside the field and the page
+// keeps working; Copy link gives a link that reopens the same run (same stats). Screenshots:
+// build/artifacts/moss-*.png.
+import { execFileSync } from 'node:child_process';
+import path from 'node:path';
+import {
+  ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, watchPage,
+} from './harness.mjs';
+
+const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => k !== 'ms' && !k.startsWith('ms_')));
+const canonical = (v) => (Array.isArray(v) ? v.map(canonical) : v && typeof v === 'object'
+  ? Object.fromEntries(Object.keys(v).sort().map((k) => [k, canonical(v[k])])) : v);
+const same = (a, b) => JSON.stringify(canonical(withoutMs(a))) === JSON.stringify(canonical(withoutMs(b)));
+
+// Waits for a run newer than serialAbove drawn on screen (or an error); returns the dataset.
+async function waitMoss(page, serialAbove) {
+  await page.waitForFunction((n) => {
+    const d = document.documentElement.dataset;
+    if (d.status === 'error') return true;
+    return d.status === 'ready' && Number(d.mossSerial) > n && (d.drawnSerial === d.mossSerial || d.drawing === 'off');
+  }, serialAbove, { timeout: TIMEOUT, polling: 200 });
+  return page.evaluate(() => ({ ...document.documentElement.dataset }));
+}
+
+function compareWithNative(name, data) {
+  let native = null;
+  try {
+    native = JSON.parse(execFileSync(NATIVE, ['moss', 'grow', '--url', data.hash, '--stats'], { encoding: 'utf8' }).trim().split('\n').pop());
+  } catch (e) {
+    check(`${name}: native CLI runs`, false, `${NATIVE} moss grow --url ${data.hash}: ${e.message.split('\n')[0]}`);
+    return null;
+  }
+  const web = JSON.parse(data.stats);
+  const ok = same(web, native);
+  check(`${name}: page stats == native \`niwa moss grow --url ${data.hash} --stats\` (ms* aside)`, ok,
+    ok ? `${web.mosses.total} mosses, ${web.population.by_day.length} days of population`
+      : `web ${JSON.stringify(withoutMs(web)).slice(0, 300)} native ${JSON.stringify(withoutMs(native)).slice(0, 300)}`);
+  return web;
+}
+
+// Shares of the canvas: background, moss-green pixels (the tufts' species colours), the rest.
+async function looks(page) {
+  return page.evaluate(() => {
+    const d = window.__niwaCanvasImage('#view').data;
+    let background = 0, green = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      const r = d[i], g = d[i + 1], b = d[i + 2];
+      if (Math.abs(r - 219) < 6 && Math.abs(g - 230) < 6 && Math.abs(b - 240) < 6) { ++background; continue; }
+      if (g > r + 25 && g > b + 25) ++green;
+    }
+    const n = d.length / 4;
+    return { background: background / n, green: green / n };
+  });
+}
+
+const problems = [];
+await runBrowserTest(async (server, browser) => {
+  const context = await newContext(browser, { viewport: { width: 1200, height: 800 }, permissions: ['clipboard-read', 'clipboard-write'] });
+  const page = await context.newPage();
+  watchPage(page, problems);
+  page.on('request', (r) => {
+    if (!r.url().startsWith(server.url) && !r.url().startsWith('data:') && !r.url().startsWith('blob:')) problems.push(`external request: ${r.url()}`);
+  });
+
+  // 1. Opens with no input and grows the opening run.
+  await page.goto(`${server.url}moss.html`, { waitUntil: 'load' });
+  let data = await waitMoss(page, 0);
+  check('opens with a run grown and mosses', data.status === 'ready' && Number(data.mosses) > 0 && Number(data.drawnMosses) === Number(data.mosses),
+    `status ${data.status}, ${data.mosses} mosses, ${data.drawnMosses} drawn, ${data.mossesEver} ever, grow ${data.growMs} ms ${data.error || ''}`);
+  check('the hash is the opening state', data.hash === 'preset=nomura2010&days=60&photons=4096', data.hash);
+  const stats = compareWithNative('opening run', data);
+  const nav = await page.locator('#studies a[aria-current="page"]').textContent().catch(() => '');
+  check('the studies nav lists and marks Moss', nav === 'Moss', nav);
+  const panelKeys = await page.evaluate(() => [...document.querySelectorAll('#params [data-key]')].map((e) => e.dataset.key));
+  check('the panel is the moss table', panelKeys.includes('photons') && panelKeys.includes('moss_size') && panelKeys.length >= 60, `${panelKeys.length} rows`);
+  const scenes = await page.evaluate(() => [...document.querySelectorAll('#scene option')].map((o) => o.value));
+  check('the scene select lists the built-ins', scenes.join(',') === 'plane,thesis,walls,rocks', scenes.join(','));
+  const look = await looks(page);
+  check('the land and green tufts are drawn', look.background < 0.9 && look.green > 0.0005,
+    `background ${(look.background * 100).toFixed(1)}%, green ${(look.green * 100).toFixed(2)}%`);
+  await saveCanvasPng(page, 'moss-opening.png');
+  await page.screenshot({ path: path.join(ARTIFACTS, 'moss-page.png') });
+
+  // 2. The day scrubber: the mosses alive on each day, as the stats' population, no new grow.
+  const grows = Number(data.growRequests);
+  const byDay = stats ? stats.population.by_day : [];
+  const shown = [];
+  for (const day of [0, 10, 30, 45, 60]) {
+    await page.evaluate((k) => {
+      const r = document.getElementById('day');
+      r.value = String(k);
+      r.dispatchEvent(new Event('input', { bubbles: true }));
+    }, day);
+    await page.waitForFunction((k) => document.documentElement.dataset.drawnDay === String(k), day, { timeout: TIMEOUT });
+    const d = await page.evaluate(() => ({ ...document.documentElement.dataset }));
+    const want = byDay[day] ? byDay[day].reduce((a, b) => a + b, 0) : NaN;
+    shown.push({ day, drawn: Number(d.drawnMosses), want, coverage: Number(d.coverageShown) });
+    if (day === 10) await saveCanvasPng(page, 'moss-day10.png');
+  }
+  check('the day scrubber draws each day\'s mosses (== stats population.by_day)', shown.every((s) => s.drawn === s.want),
+    shown.map((s) => `day ${s.day}: ${s.drawn} (stats ${s.want})`).join(', '));
+  check('the scrubber changes the number drawn', new Set(shown.map((s) => s.drawn)).size > 1, shown.map((s) => s.drawn).join(','));
+  check('the coverage overlay follows the day, and its replay of the last day is the run\'s', new Set(shown.map((s) => s.coverage)).size > 1 &&
+    Number(data.coverageReplayError) < 1e-4, `coverage ${shown.map((s) => s.coverage).join(', ')}; replay error ${data.coverageReplayError}`);
+  data = await page.evaluate(() => ({ ...document.documentElement.dataset }));
+  check('scrubbing does not grow again', Number(data.growRequests) === grows, `grow requests ${grows} -> ${data.growRequests}`);
+  // Play runs the days from 0 to the end.
+  await page.click('#play');
+  await page.waitForFunction(() => document.documentElement.dataset.dayShown === '60', null, { timeout: TIMEOUT });
+  const log = await page.evaluate(() => document.documentElement.dataset.dayShown);
+  check('Play runs to the last day', log === '60', log);
+
+  // 3. Overlay: irradiance tints the land differently.
+  await page.selectOption('#overlay', 'irradiance');
+  await page.waitForTimeout(500);
+  await saveCanvasPng(page, 'moss-irradiance.png');
+  await page.selectOption('#overlay', 'coverage');
+
+  // 4. A bad value: days -1 through the panel is a line beside Days, and the page keeps working.
+  let serial = Number(data.mossSerial);
+  await page.fill('#days', '-1');
+  await page.waitForFunction(() => document.documentElement.dataset.status === 'error', null, { timeout: TIMEOUT });
+  const beside = await page.evaluate(() => {
+    const line = document.getElementById('days-error');
+    return line && !line.hidden ? line.textContent : '';
+  });
+  const notice = await page.textContent('#notice');
+  check('days -1 is a line beside Days', /^days: /.test(beside) && /-1/.test(beside) && notice.includes('days'), `beside '${beside}', notice '${notice}'`);
+  await page.screenshot({ path: path.join(ARTIFACTS, 'moss-bad-days.png') });
+  await page.fill('#days', '20');
+  data = await waitMoss(page, serial);
+  check('the page recovers after the bad value', data.status === 'ready' && data.hash.includes('days=20'), `${data.status} ${data.hash} ${data.error || ''}`);
+  compareWithNative('days 20', data);
+
+  // 4b. A long run shows its days as it grows; Cancel ends it and the last finished run grows again.
+  serial = Number(data.mossSerial);
+  const goodHash = data.hash;
+  await page.fill('#days', '300');
+  await page.waitForFunction(() => /growing: day [1-9]/.test(document.getElementById('progress').textContent), null, { timeout: TIMEOUT });
+  const progressText = await page.textContent('#progress');
+  await page.click('#cancel');
+  const cancelled = await page.evaluate(() => document.documentElement.dataset.status);
+  data = await waitMoss(page, serial);
+  check('progress by day, then Cancel goes back to the last finished run', /growing: day \d+ of 300/.test(progressText) && cancelled === 'cancelled' &&
+    data.status === 'ready' && data.hash === goodHash, `'${progressText}', status after Cancel ${cancelled}, then ${data.status} ${data.hash}`);
+
+  // 5. A bad hash value: a notice, and a run still grows.
+  serial = Number(data.mossSerial);
+  await page.evaluate(() => { location.hash = '#preset=nomura2010&days=-1&photons=2048&scene=thesis'; });
+  data = await waitMoss(page, serial);
+  const hashNotice = await page.textContent('#notice');
+  check('a bad days in the hash is a notice, and a run grows', data.status === 'ready' && /days/.test(hashNotice),
+    `${data.status}, ${data.hash}, notice '${hashNotice.replace(/\n/g, ' | ')}'`);
+
+  // 6. Copy link: the link reopens the same run.
+  serial = Number(data.mossSerial);
+  await page.selectOption('#scene', 'plane');
+  data = await waitMoss(page, serial);
+  await page.click('#copy-link');
+  await page.waitForFunction(() => document.getElementById('share-status').textContent !== '', null, { timeout: TIMEOUT });
+  const status = await page.textContent('#share-status');
+  const link = status === 'Link copied.' ? await page.evaluate(() => navigator.clipboard.readText()) : status.replace(/^Copy this link: /, '');
+  check('Copy link gives the page\'s link', link.endsWith(`#${data.hash}`) && data.hash.includes('scene=plane'), `${status}: ${link}`);
+  const page2 = await context.newPage();
+  watchPage(page2, problems);
+  await page2.goto(link, { waitUntil: 'load' });
+  const data2 = await waitMoss(page2, 0);
+  check('the copied link reopens the same run (same stats)', data2.status === 'ready' && data2.hash === data.hash && same(JSON.parse(data2.stats), JSON.parse(data.stats)),
+    `${data2.status} ${data2.hash} ${data2.mosses} mosses vs ${data.mosses}`);
+  await saveCanvasPng(page2, 'moss-plane.png');
+  await page2.close();
+
+  check('no uncaught error or console error', problems.length === 0, problems.slice(0, 3).join(' | ').slice(0, 400));
+  await context.close();
+});

@@ -1,0 +1,335 @@
+// The moss study's bindings (Nomura 2010; spec §1): MossLab, one moss run (core/moss/moss_run.h)
+// grown to its days for the worker (web/worker/moss_handler.js), with every moss that was ever
+// alive kept with its birth and death day, so the page's day scrubber replays day 0..N without
+// growing again; and the moss table, presets, scenes and hash codec as JSON (the compose registry,
+// core/compose/studies.cpp, has no moss row yet, so the generic tableJson('moss') cannot answer).
+//
+// Design (as the tree's "JS BINDINGS DESIGN" note in tree_bindings.cpp): everything from
+// JavaScript arrives as text and is checked by the core (SetMossPreset, the table's ranges,
+// CheckMossParams, SetMossScene/Days/Seed, MossRun::Start's estimate against the page budget);
+// nothing throws, errors come back as the {ok, field, message} record (error_record.h) naming a
+// state field: preset, scene, days, seed, a row key, or the budget's line. Buffers leave through
+// buffers(group) (buffers.h), copied once by the worker. Groups:
+//   "land"    positions, normals (Float32 xyz: three vertices per soil cell, the cell's flat
+//             normal), coverage (Float32 per vertex: the cell's min(1, n·s²/A) of the last day,
+//             as the stats' coverage), irradiance (Float32 per vertex: the cell's S of the last
+//             day, W/m²), geology (Float32 per vertex: 0 humus, 1 sandy, 2 asphalt)
+//   "mosses"  positions, normals (Float32 xyz: a moss's centre and the normal of what it grows
+//             on), species (Float32: 0 gingoke, 1 haigoke, 2 sugigoke), birth (Float32: its birth
+//             day), death (Float32: the first day it was gone, -1 while alive), cell (Uint32:
+//             its soil cell, the land's triangle), on_moss (Float32: 1 when it rests on other
+//             mosses); one entry per moss ever alive at the end of a day, in order of first
+//             appearance (the page replays any day's coverage from them)
+// Calls: setProgress(fn) (fn(stage, done, total) after every day), grow(stateJson) -> ""/error
+// record, then statsJson() (the CLI's `niwa moss grow --stats`, ms* timing fields included),
+// hash(), stateJson(), boundsJson(), buffers(group). The state JSON: {preset, scene, days, seed,
+// params: {row: value}} (params over the preset's values).
+// Does not: export (.glb, moss.json), load a mesh, keep more than one run, or tell a moss that
+// died and one with the same place, species and birth day apart (the run never makes two).
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <glm/common.hpp>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "buffers.h"
+#include "error_record.h"
+#include "moss/moss_params.h"
+#include "moss/moss_run.h"
+#include "moss/moss_state.h"
+#include "page_budget.h"
+#include "params/json_guard.h"
+#include "params/param_json.h"
+
+namespace niwa {
+namespace {
+
+using moss::MossParam;
+using nlohmann::json;
+using nlohmann::ordered_json;
+
+ordered_json MossStateObject(const moss::MossState& state) {
+  ordered_json j;
+  j["preset"] = state.preset;
+  j["scene"] = state.scene;
+  j["days"] = state.days;
+  j["seed"] = state.seed;
+  j["params"] = ordered_json::parse(ParamsToJson(state.params, -1));
+  return j;
+}
+
+// A number, or a numeric text checked by the setter; anything else names the field.
+Status NumberOf(const json& j, const char* field, double* out) {
+  if (j.is_number()) {
+    *out = j.get<double>();
+    return Status::Ok();
+  }
+  return Status::Error(field, "must be a number");
+}
+
+// {preset, scene, days, seed, params} onto a fresh state: the preset first, then the rows over it,
+// the cross-row checks, then scene, days and seed. Errors name the state field or the row.
+Status ApplyMossStateJson(const std::string& text, moss::MossState* state) {
+  NIWA_RETURN_IF_ERROR(CheckJsonKeys(text, "state"));
+  const json j = json::parse(text, nullptr, false);
+  if (!j.is_object()) return Status::Error("state", "must be a JSON object");
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    const std::string& k = it.key();
+    if (k != "preset" && k != "scene" && k != "days" && k != "seed" && k != "params")
+      return Status::Error("state", "'" + k.substr(0, 40) + "' is unknown");
+  }
+  moss::MossState s;
+  if (j.contains("preset")) {
+    if (!j["preset"].is_string()) return Status::Error("preset", "must be a name");
+    NIWA_RETURN_IF_ERROR(moss::SetMossPreset(j["preset"].get<std::string>(), &s));
+  }
+  if (j.contains("params")) {
+    if (!j["params"].is_object()) return Status::Error("params", "must be an object");
+    NIWA_RETURN_IF_ERROR(ApplyParamsJson(JsonText(j["params"]), &s.params));
+  }
+  NIWA_RETURN_IF_ERROR(moss::CheckMossParams(s.params));
+  if (j.contains("scene")) {
+    if (!j["scene"].is_string()) return Status::Error("scene", "must be a name");
+    NIWA_RETURN_IF_ERROR(moss::SetMossScene(j["scene"].get<std::string>(), &s));
+  }
+  double v = 0;
+  if (j.contains("days")) {
+    NIWA_RETURN_IF_ERROR(NumberOf(j["days"], "days", &v));
+    NIWA_RETURN_IF_ERROR(moss::SetMossDays(v, &s));
+  }
+  if (j.contains("seed")) {
+    NIWA_RETURN_IF_ERROR(NumberOf(j["seed"], "seed", &v));
+    NIWA_RETURN_IF_ERROR(moss::SetMossSeed(v, &s));
+  }
+  *state = std::move(s);
+  return Status::Ok();
+}
+
+void PushVec(std::vector<float>* out, const glm::dvec3& v) {
+  out->insert(out->end(),
+              {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)});
+}
+
+}  // namespace
+
+// The moss table for the panel ([{key, symbol, unit, default, min, max, ...}], param_json.h).
+std::string MossTableJson() { return ParamTableJson(moss::MossTable()); }
+
+// [{name, source, params}] of the presets (`niwa presets moss`).
+std::string MossPresetsJson() {
+  ordered_json out = ordered_json::array();
+  for (const std::string& name : moss::MossPresetNames()) {
+    Result<moss::MossParams> p = moss::MossPreset(name);
+    ordered_json j;
+    j["name"] = name;
+    j["source"] = moss::MossPresetSource(name);
+    j["params"] = p.ok() ? ordered_json::parse(ParamsToJson(*p, -1)) : ordered_json::object();
+    out.push_back(std::move(j));
+  }
+  return JsonText(out);
+}
+
+// The built-in scenes as `niwa moss scenes` lists them.
+std::string MossScenes() { return moss::MossScenesJson(); }
+
+// {state, notices} of a share-link hash (io/hash_codec: bad values clamped or dropped with a
+// notice), as the generic decodeHash answers for the other studies.
+std::string MossDecodeHash(const std::string& hash, const std::string& prefix) {
+  moss::MossState state;
+  std::vector<std::string> notices;
+  moss::ApplyMossHash(hash, prefix, &state, &notices);
+  ordered_json out;
+  out["state"] = MossStateObject(state);
+  out["notices"] = notices;
+  return JsonText(out);
+}
+
+// An adapter over core/moss/moss_run.h: one run grown to its days, its land and its mosses'
+// lives flattened for the page.
+class MossLab {
+ public:
+  void setProgress(emscripten::val fn) { progress_ = fn; }
+
+  // Starts the run of the state (JSON, above) and grows it to its days, recording every moss's
+  // life: "" or the error record (the last run is kept on error).
+  std::string grow(const std::string& state_json) {
+    moss::MossState state;
+    Status s = ApplyMossStateJson(state_json, &state);
+    if (!s.ok()) return ErrorText(s);
+    Result<moss::MossRun> started = moss::MossRun::Start(state, PageBudget());
+    if (!started.ok()) return ErrorText(started.status());
+    moss::MossRun run = std::move(started).value();
+    Lives lives;
+    s = run.Advance([&](const run::Progress& p) {
+      lives.Observe(run.world());
+      if (!progress_.isNull() && !progress_.isUndefined())
+        progress_(std::string(p.phase), p.done, p.total);
+      return true;
+    });
+    if (!s.ok()) return ErrorText(s);
+    state_ = state;
+    run_.emplace(std::move(run));
+    FillLand();
+    FillMosses(lives);
+    return "";
+  }
+
+  std::string statsJson() const { return run_ ? run_->StatsJson() : "{}"; }
+  std::string hash() const { return run_ ? run_->Hash("") : ""; }
+  std::string stateJson() const { return run_ ? JsonText(MossStateObject(state_)) : "{}"; }
+
+  // {min, max (the land's box, m), cells, days, mosses_ever, mosses_alive, irradiance_max (W/m²)}.
+  std::string boundsJson() const {
+    if (!run_) return "{}";
+    glm::dvec3 lo(1e300), hi(-1e300);
+    for (const glm::vec3& p : run_->cells().mesh.positions) {
+      lo = glm::min(lo, glm::dvec3(p));
+      hi = glm::max(hi, glm::dvec3(p));
+    }
+    ordered_json j;
+    j["min"] = {lo.x, lo.y, lo.z};
+    j["max"] = {hi.x, hi.y, hi.z};
+    j["cells"] = run_->cells().size();
+    j["days"] = run_->done();
+    j["mosses_ever"] = moss_species_.size();
+    j["mosses_alive"] = run_->world().mosses.size();
+    double s_max = 0;
+    for (double S : run_->world().S) s_max = std::max(s_max, S);
+    j["irradiance_max"] = s_max;
+    return JsonText(j);
+  }
+
+  emscripten::val buffers(const std::string& group) const {
+    NamedBuffers out;
+    if (group == "land") {
+      out.Add("positions", land_positions_)
+          .Add("normals", land_normals_)
+          .Add("coverage", land_coverage_)
+          .Add("irradiance", land_irradiance_)
+          .Add("geology", land_geology_);
+    } else if (group == "mosses") {
+      out.Add("positions", moss_positions_)
+          .Add("normals", moss_normals_)
+          .Add("species", moss_species_)
+          .Add("birth", moss_birth_)
+          .Add("death", moss_death_)
+          .Add("cell", moss_cell_)
+          .Add("on_moss", moss_on_moss_);
+    } else {
+      return emscripten::val::null();
+    }
+    return out.ToJs();
+  }
+
+ private:
+  // Every moss seen at the end of a day, matched from day to day: the run keeps its living
+  // mosses in order, drops the dead and appends the newborn, and never moves one.
+  struct Life {
+    moss::MossPlant plant;
+    int death = -1;
+  };
+  struct Lives {
+    std::vector<Life> ever;
+    std::vector<uint32_t> alive;  // indexes into ever, in the run's order
+    void Observe(const moss::MossWorld& w) {
+      std::vector<uint32_t> next;
+      next.reserve(w.mosses.size());
+      std::size_t i = 0;
+      for (const moss::MossPlant& m : w.mosses) {
+        while (i < alive.size() && !Same(ever[alive[i]].plant, m)) ever[alive[i++]].death = w.day;
+        if (i < alive.size()) {
+          next.push_back(alive[i++]);
+        } else {
+          next.push_back(static_cast<uint32_t>(ever.size()));
+          ever.push_back({m, -1});
+        }
+      }
+      for (; i < alive.size(); ++i) ever[alive[i]].death = w.day;
+      alive.swap(next);
+    }
+    static bool Same(const moss::MossPlant& a, const moss::MossPlant& b) {
+      return a.pos == b.pos && a.birth_day == b.birth_day && a.species == b.species;
+    }
+  };
+
+  void FillLand() {
+    const moss::SoilCells& cells = run_->cells();
+    const moss::MossWorld& w = run_->world();
+    const double s = state_.params.Get(MossParam::kMossSize);
+    std::vector<int> on_cell(cells.size(), 0);
+    for (const moss::MossPlant& m : w.mosses)
+      if (!m.on_moss && m.cell < on_cell.size()) ++on_cell[m.cell];
+    land_positions_.clear();
+    land_normals_.clear();
+    land_coverage_.clear();
+    land_irradiance_.clear();
+    land_geology_.clear();
+    const geom::TriMesh& mesh = cells.mesh;
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      const float coverage =
+          cells.area[c] > 0 ? static_cast<float>(std::min(1.0, on_cell[c] * s * s / cells.area[c]))
+                            : 0.f;
+      const float S = c < w.S.size() ? static_cast<float>(w.S[c]) : 0.f;
+      for (int k = 0; k < 3; ++k) {
+        PushVec(&land_positions_, glm::dvec3(mesh.positions[mesh.indices[3 * c + k]]));
+        PushVec(&land_normals_, cells.normal[c]);
+        land_coverage_.push_back(coverage);
+        land_irradiance_.push_back(S);
+        land_geology_.push_back(static_cast<float>(static_cast<int>(cells.geology[c])));
+      }
+    }
+  }
+
+  void FillMosses(const Lives& lives) {
+    moss_positions_.clear();
+    moss_normals_.clear();
+    moss_species_.clear();
+    moss_birth_.clear();
+    moss_death_.clear();
+    moss_cell_.clear();
+    moss_on_moss_.clear();
+    for (const Life& life : lives.ever) {
+      PushVec(&moss_positions_, life.plant.pos);
+      PushVec(&moss_normals_, life.plant.normal);
+      moss_species_.push_back(static_cast<float>(static_cast<int>(life.plant.species)));
+      moss_birth_.push_back(static_cast<float>(life.plant.birth_day));
+      moss_death_.push_back(static_cast<float>(life.death));
+      moss_cell_.push_back(life.plant.cell);
+      moss_on_moss_.push_back(life.plant.on_moss ? 1.f : 0.f);
+    }
+  }
+
+  std::optional<moss::MossRun> run_;
+  moss::MossState state_;
+  std::vector<float> land_positions_, land_normals_, land_coverage_, land_irradiance_,
+      land_geology_;
+  std::vector<float> moss_positions_, moss_normals_, moss_species_, moss_birth_, moss_death_,
+      moss_on_moss_;
+  std::vector<uint32_t> moss_cell_;
+  emscripten::val progress_ = emscripten::val::null();
+};
+
+}  // namespace niwa
+
+EMSCRIPTEN_BINDINGS(niwa_moss) {
+  using namespace emscripten;
+  function("mossTableJson", &niwa::MossTableJson);
+  function("mossPresetsJson", &niwa::MossPresetsJson);
+  function("mossScenesJson", &niwa::MossScenes);
+  function("mossDecodeHash", &niwa::MossDecodeHash);
+  class_<niwa::MossLab>("MossLab")
+      .constructor<>()
+      .function("setProgress", &niwa::MossLab::setProgress)
+      .function("grow", &niwa::MossLab::grow)
+      .function("statsJson", &niwa::MossLab::statsJson)
+      .function("hash", &niwa::MossLab::hash)
+      .function("stateJson", &niwa::MossLab::stateJson)
+      .function("boundsJson", &niwa::MossLab::boundsJson)
+      .function("buffers", &niwa::MossLab::buffers);
+}

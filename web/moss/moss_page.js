@@ -1,0 +1,250 @@
+// The moss study's page (public/moss.html, main thread; Nomura 2010): opens with a small run
+// grown on the thesis scene (60 days, 4096 photons a day: a few seconds), builds the panel from
+// the moss table, keeps the state in location.hash through the moss hash codec (the text `niwa
+// moss grow --url` reads), picks a built-in scene, a preset, the days and the RNG seed, shows the
+// land tinted by an overlay and every moss as a tuft (moss_renderer.js), and replays the run day
+// by day with the day scrubber and Play (nothing regrows: every moss comes with its birth and
+// death day). Growth runs in the worker (web/worker/moss_handler.js).
+// Does not: parse or check states (the core does; its one line is shown beside its field),
+// export (.glb, moss.json), compare two runs, chart the population, or draw directly.
+import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
+import { Frame } from '../gl/frame.js';
+import { OrbitCamera } from '../gl/orbit_camera.js';
+import { ProgressiveLoop } from '../gl/progressive_loop.js';
+import { DEFAULT_SUNS } from '../gl/sun.js';
+import { ParamPanel } from '../shell/param_panel.js';
+import { StepScrubber } from '../shell/step_scrubber.js';
+import { StudyController, numberOr } from '../shell/study_controller.js';
+import { Notices, copyLink, mountStudyNav } from '../shell/study_page.js';
+import { setHooks } from '../shell/test_hooks.js';
+import { MossRenderer } from './moss_renderer.js';
+
+const $ = (id) => document.getElementById(id);
+const ui = {
+  canvas: $('view'), stats: $('stats'), progress: $('progress'), scene: $('scene'), sceneHelp: $('scene-help'),
+  preset: $('preset'), presetHelp: $('preset-help'), days: $('days'), rngSeed: $('rng-seed'), reset: $('reset'),
+  overlay: $('overlay'), resetView: $('reset-view'), copyLink: $('copy-link'), shareStatus: $('share-status'),
+  params: $('params'), play: $('play'), day: $('day'), dayText: $('day-text'), cancel: $('cancel'),
+};
+mountStudyNav($('studies'), 'moss');
+
+const notices = new Notices($('notice'), ['webgl', 'error', 'hash']);
+// Errors beside the controls outside the panel (the panel's rows find their own).
+const BASIC_FIELDS = { scene: 'scene-error', preset: 'preset-error', days: 'days-error', seed: 'rng-seed-error' };
+const controller = new StudyController({
+  study: 'moss', notices, ui, fields: BASIC_FIELDS, panel: () => panel, state: () => currentState(false),
+  onCancel: () => 'cancelled: back to the last finished run',
+  onRestart: () => {
+    restarting = true;
+    worker.request('init', { hash: '' }, { done: ['ready'] });
+  },
+  onError: (msg, when) => {
+    if (when === 'after') {
+      ui.days.setAttribute('aria-invalid', msg.field === 'days' ? 'true' : 'false');
+      ui.rngSeed.setAttribute('aria-invalid', msg.field === 'seed' ? 'true' : 'false');
+    }
+    return false;
+  },
+});
+const { worker } = controller;
+let restarting = false;
+let lastGoodHash = null;
+
+// The opening run when the link holds no state: a result without input, small enough to grow in
+// a few seconds in the page (the CLI's default is 300 days at 8192 photons: about 30 s).
+const OPENING = { preset: 'nomura2010', scene: 'thesis', days: 60, seed: 1, params: { photons: 4096 } };
+const OPENING_HASH = '#preset=nomura2010&days=60&photons=4096';
+const OVERLAYS = { none: 0, coverage: 1, irradiance: 2 };
+
+// ---------------------------------------------------------------- rendering
+const camera = new OrbitCamera();
+let frame = null;
+let renderer = null;
+let mossSerial = 0;
+let installedSerial = 0;
+let shownDay = Infinity;
+let lastDay = 0;
+const loop = new ProgressiveLoop({
+  renderer: () => (renderer ? frame : null),
+  camera,
+  onDrawn: (drawn) => {
+    const alive = renderer ? renderer.aliveOn(Number.isFinite(shownDay) ? shownDay : lastDay) : { total: 0 };
+    setHooks({ drawnSerial: installedSerial, drawnDay: Number.isFinite(shownDay) ? shownDay : lastDay, drawnMosses: alive.total, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls });
+  },
+});
+const requestFrame = () => loop.request();
+
+// The day scrubber and Play: the mosses alive on day k (born on or before it, not dead by it).
+const scrubber = new StepScrubber({ range: ui.day, text: ui.dayText, play: ui.play }, (k) => {
+  shownDay = k >= lastDay ? Infinity : k;
+  renderer?.setDay(k);
+  const alive = renderer ? renderer.aliveOn(k) : { total: 0, bySpecies: [0, 0, 0] };
+  const [g, h, s] = alive.bySpecies;
+  ui.dayText.textContent = `day ${k} of ${lastDay} · ${alive.total} mosses (${g} gingoke, ${h} haigoke, ${s} sugigoke)`;
+  setHooks({ dayShown: k, mossesShown: alive.total, coverageShown: (renderer?.coverageShown ?? 0).toFixed(6) });
+  requestFrame();
+}, { interval: 120 });
+
+async function startRenderer() {
+  try {
+    await loop.start(async () => {
+      frame = new Frame(ui.canvas, { camera, sun: DEFAULT_SUNS.ivy, ground: false, fit: true, request: () => loop.request(), what: 'the moss' });
+      await frame.init();
+      renderer = await frame.addLayer(new MossRenderer(frame));
+      renderer.setOverlay(OVERLAYS[ui.overlay.value] ?? 1);
+      return frame;
+    }, {
+      canvas: ui.canvas, camera,
+      onLost: () => notices.set('webgl', 'The WebGL2 context was lost; reload the page to draw again.'),
+    });
+  } catch (e) {
+    renderer = null;
+    setHooks({ drawing: 'off' });
+    notices.set('webgl', `Cannot draw: ${e.message}`);
+  }
+}
+
+function frameLand() {
+  const b = renderer?.bounds();
+  if (!b) return;
+  camera.reset(b);
+  camera.pitch = 0.55;
+  camera.frame(b, 0.9);
+}
+
+// ---------------------------------------------------------------- state
+let panel = null;
+let presets = [];
+let scenes = [];
+let frameNext = true;
+
+// The state the worker grows: scene, preset, days, RNG seed and (unless `reset`, which takes the
+// preset's values) every row of the panel.
+function currentState(reset) {
+  return {
+    preset: ui.preset.value, scene: ui.scene.value, days: numberOr(ui.days), seed: numberOr(ui.rngSeed),
+    params: reset ? {} : panel.values(),
+  };
+}
+
+function applyState(state) {
+  ui.preset.value = state.preset;
+  ui.scene.value = state.scene;
+  ui.days.value = String(state.days);
+  ui.rngSeed.value = String(state.seed);
+  panel.setValues(state.params);
+  showHelp();
+}
+
+function showHelp() {
+  const scene = scenes.find((s) => s.name === ui.scene.value);
+  ui.sceneHelp.textContent = scene ? `${scene.description} (${scene.cells} soil cells)` : '';
+  const preset = presets.find((p) => p.name === ui.preset.value);
+  ui.presetHelp.textContent = preset ? preset.source : '';
+}
+
+const sendUpdate = (commit, reset = false, state = null) =>
+  controller.update(commit, { state: state || currentState(reset) }, { done: ['moss'] });
+const scheduleUpdate = (stage = 'grow') => controller.schedule(() => sendUpdate(true), stage);
+
+// ---------------------------------------------------------------- worker replies
+worker.on('ready', (msg) => {
+  if (restarting) {
+    restarting = false;
+    worker.request('decode', { hash: lastGoodHash ? `#${lastGoodHash}` : OPENING_HASH }, { done: ['decoded'] });
+    return;
+  }
+  presets = msg.presets;
+  scenes = msg.scenes;
+  for (const p of presets) ui.preset.append(new Option(p.name, p.name));
+  for (const s of scenes) ui.scene.append(new Option(s.name, s.name));
+  panel = new ParamPanel(ui.params, msg.paramTable, (spec, stage) => scheduleUpdate(stage));
+  const hash = location.hash.replace(/^#/, '');
+  notices.set('hash', msg.decoded.notices);
+  if (!/(^|&)(preset|scene|days|seed)=/.test(hash)) {
+    // No state in the link: the opening run (its rows over the preset's, as a link would set).
+    applyState(msg.decoded.state);
+    ui.days.value = String(OPENING.days);
+    panel.setValues(OPENING.params);
+    sendUpdate(false);
+  } else {
+    applyState(msg.decoded.state);
+    sendUpdate(false);
+  }
+});
+
+worker.on('decoded', (msg) => {
+  applyState(msg.state);
+  notices.set('hash', msg.notices);
+  frameNext = true;
+  sendUpdate(false);
+});
+
+worker.on('progress', (msg) => {
+  ui.progress.textContent = msg.text;
+});
+
+worker.on('moss', (msg) => {
+  if (!controller.isLatest(msg)) return;
+  notices.set('error', '');
+  controller.showFieldError('');
+  ui.days.setAttribute('aria-invalid', 'false');
+  ui.rngSeed.setAttribute('aria-invalid', 'false');
+  lastGoodHash = msg.hash;
+  applyState(msg.state);
+  const s = msg.stats;
+  lastDay = msg.bounds.days;
+  if (renderer) {
+    renderer.setMoss(msg.buffers, msg.bounds, Number(msg.state.params.moss_size) || 0.01);
+    setHooks({ coverageReplayError: renderer.coverageReplayError });
+    installedSerial = mossSerial + 1;
+    if (frameNext) {
+      frameLand();
+      frameNext = false;
+    }
+  }
+  // The views were used at once (copied to the GPU): they go back for the next grow to fill.
+  worker.recycle(msg.buffers);
+  controller.grown(msg.hash);
+  mossSerial += 1;
+  scrubber.reset(lastDay);
+  controller.showWork(false);
+  ui.progress.textContent = '';
+  const m = s.mosses;
+  ui.stats.textContent = `${s.scene || ui.scene.value} · ${lastDay} days · ${m.total} mosses (${m.by_species.gingoke} gingoke, ${m.by_species.haigoke} haigoke, ${m.by_species.sugigoke} sugigoke) · ${m.on_mosses} on mosses · ${msg.bounds.mosses_ever} ever · ${(msg.growMs / 1000).toFixed(1)} s`;
+  setHooks({
+    status: 'ready', error: '', mossSerial, mosses: m.total, mossesEver: msg.bounds.mosses_ever, days: lastDay,
+    stats: JSON.stringify(s), hash: msg.hash, wallMs: msg.wallMs.toFixed(1), growMs: msg.growMs.toFixed(1),
+    buffersReused: msg.bufferCounts?.reused ?? '', buffersFresh: msg.bufferCounts?.fresh ?? '',
+  });
+  requestFrame();
+});
+
+// ---------------------------------------------------------------- controls
+ui.scene.addEventListener('change', () => {
+  showHelp();
+  frameNext = true;
+  sendUpdate(true);
+});
+ui.preset.addEventListener('change', () => {
+  showHelp();
+  sendUpdate(true, true);
+});
+ui.days.addEventListener('input', () => scheduleUpdate());
+ui.rngSeed.addEventListener('input', () => scheduleUpdate());
+ui.reset.addEventListener('click', () => sendUpdate(true, true));
+ui.overlay.addEventListener('change', () => {
+  renderer?.setOverlay(OVERLAYS[ui.overlay.value] ?? 1);
+  setHooks({ overlay: ui.overlay.value });
+  requestFrame();
+});
+ui.resetView.addEventListener('click', () => {
+  frameLand();
+  requestFrame();
+});
+ui.copyLink.addEventListener('click', () => copyLink(ui.shareStatus));
+
+// ---------------------------------------------------------------- start
+setHooks({ status: 'loading' });
+await startRenderer();
+worker.request('init', { hash: location.hash }, { done: ['ready'] });

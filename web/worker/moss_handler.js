@@ -1,0 +1,99 @@
+// The moss study's worker handler (Nomura 2010): one MossLab (web/bindings/moss_bindings.cpp) per
+// client holds the last run. An 'update' grows the state ({preset, scene, days, seed, params})
+// to its days, posting progress after every day (at most every 100 ms), then sends the stats (the
+// CLI's `niwa moss grow --stats`), the resolved state and hash, the bounds, and two buffer groups:
+// the land (three vertices per soil cell with its coverage, irradiance and geology) and every moss ever
+// alive with its birth and death day (the page's day scrubber replays them without a new grow);
+// copied once out of the WASM heap into buffers the page gave back ('recycle') where they fit
+// (web/worker/transfer.js TransferPool), then transferred, with the reply's bufferCounts.
+// Table, presets and hash: the moss bindings' own mossTableJson / mossPresetsJson /
+// mossDecodeHash while the compose registry (core/compose/studies.cpp) has no moss row; the
+// generic tableJson('moss') etc. once it has.
+// Messages: web/worker/protocol.js.
+// Does not: load the module, route messages or catch errors (web/worker/worker.js does), or export.
+import { errorOf, errorReply } from './errors.js';
+import { TransferPool } from './transfer.js';
+import { nextTask } from './next_task.js';
+
+// The generic registry's answer for moss when it has a row, else the moss bindings' own.
+function registryOr(generic, own) {
+  try {
+    const text = generic();
+    const parsed = JSON.parse(text);
+    if (!(parsed && parsed.ok === false)) return text;
+  } catch { /* no moss row: the bindings' own */ }
+  return own();
+}
+
+// ctx: {post(msg, transfer), isLatest(client, id)} from the router.
+export function createHandler(Module, ctx) {
+  const { post, isLatest } = ctx;
+  const paramTable = JSON.parse(registryOr(() => Module.tableJson('moss'), () => Module.mossTableJson()));
+  const presets = JSON.parse(registryOr(() => Module.presetsJson('moss'), () => Module.mossPresetsJson()));
+  const scenes = JSON.parse(Module.mossScenesJson()).scenes;
+  const decode = (hash) => JSON.parse(registryOr(() => Module.decodeHash('moss', hash, ''), () => Module.mossDecodeHash(hash, '')));
+  const labs = new Map();  // client -> {lab, working, lastPost}
+  const returned = new TransferPool();  // the land and moss buffers each client gave back
+
+  function labOf(client) {
+    if (!labs.has(client)) {
+      const entry = { lab: new Module.MossLab(), working: 0, lastPost: 0 };
+      entry.lab.setProgress((stage, done, total) => {
+        const now = performance.now();
+        if (done !== total && now - entry.lastPost < 100) return;
+        entry.lastPost = now;
+        post({ type: 'progress', id: entry.working, client, stage, done, total, text: `growing: day ${done} of ${total}` });
+      });
+      labs.set(client, entry);
+    }
+    return labs.get(client);
+  }
+
+  async function update(msg, client) {
+    const { id } = msg;
+    const entry = labOf(client);
+    await nextTask();  // a newer update that is already queued supersedes this one
+    if (!isLatest(client, id)) return;
+    entry.working = id;
+    post({ type: 'progress', id, client, stage: 'grow', done: 0, total: 0, text: 'starting the run' });
+    const t0 = performance.now();
+    const error = errorOf(entry.lab.grow(JSON.stringify(msg.state || {})));
+    if (error) {
+      post(errorReply(error, id, client));
+      return;
+    }
+    const growMs = performance.now() - t0;
+    const stats = JSON.parse(entry.lab.statsJson());
+    const transfer = [];
+    const counts = { reused: 0, fresh: 0, dropped: 0 };
+    const buffers = {};
+    for (const group of ['land', 'mosses']) buffers[group] = returned.take(client, group, entry.lab.buffers(group), transfer, counts);
+    post({
+      type: 'moss', id, client, stats, hash: entry.lab.hash(), state: JSON.parse(entry.lab.stateJson()),
+      bounds: JSON.parse(entry.lab.boundsJson()), buffers, bufferCounts: counts, growMs, wallMs: performance.now() - t0,
+    }, transfer);
+  }
+
+  // The client went away (web/worker/worker.js 'close'): its lab is deleted and its returned
+  // buffers are dropped. Returns what was let go.
+  function close(client) {
+    const entry = labs.get(client);
+    if (entry) {
+      entry.lab.setProgress(null);
+      entry.lab.delete();
+    }
+    labs.delete(client);
+    return { sessions: entry ? 1 : 0, buffers: returned.forget(client) };
+  }
+
+  return {
+    superseding: ['update'],
+    close,
+    ready: (msg) => ({ paramTable, presets, scenes, decoded: decode(String(msg.hash || '')) }),
+    messages: {
+      decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...decode(String(msg.hash || '')) }),
+      update,
+      recycle: (msg, client) => returned.give(client, msg.buffers),
+    },
+  };
+}
