@@ -112,6 +112,7 @@ Status ApplyMossStateJson(const std::string& text, MossState* state) {
     NIWA_RETURN_IF_ERROR(SetMossSeed(j["seed"].get<double>(), &next));
   }
   NIWA_RETURN_IF_ERROR(ApplyParamsJson(text, &next.params, {"preset", "scene", "days", "seed"}));
+  NIWA_RETURN_IF_ERROR(CheckMossParams(next.params));  // the cross-row checks at load
   *state = next;
   return Status::Ok();
 }

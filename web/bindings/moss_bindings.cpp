@@ -64,53 +64,6 @@ ordered_json MossStateObject(const moss::MossState& state) {
   return j;
 }
 
-// A number, or a numeric text checked by the setter; anything else names the field.
-Status NumberOf(const json& j, const char* field, double* out) {
-  if (j.is_number()) {
-    *out = j.get<double>();
-    return Status::Ok();
-  }
-  return Status::Error(field, "must be a number");
-}
-
-// {preset, scene, days, seed, params} onto a fresh state: the preset first, then the rows over it,
-// the cross-row checks, then scene, days and seed. Errors name the state field or the row.
-Status ApplyMossStateJson(const std::string& text, moss::MossState* state) {
-  NIWA_RETURN_IF_ERROR(CheckJsonKeys(text, "state"));
-  const json j = json::parse(text, nullptr, false);
-  if (!j.is_object()) return Status::Error("state", "must be a JSON object");
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    const std::string& k = it.key();
-    if (k != "preset" && k != "scene" && k != "days" && k != "seed" && k != "params")
-      return Status::Error("state", "'" + k.substr(0, 40) + "' is unknown");
-  }
-  moss::MossState s;
-  if (j.contains("preset")) {
-    if (!j["preset"].is_string()) return Status::Error("preset", "must be a name");
-    NIWA_RETURN_IF_ERROR(moss::SetMossPreset(j["preset"].get<std::string>(), &s));
-  }
-  if (j.contains("params")) {
-    if (!j["params"].is_object()) return Status::Error("params", "must be an object");
-    NIWA_RETURN_IF_ERROR(ApplyParamsJson(JsonText(j["params"]), &s.params));
-  }
-  NIWA_RETURN_IF_ERROR(moss::CheckMossParams(s.params));
-  if (j.contains("scene")) {
-    if (!j["scene"].is_string()) return Status::Error("scene", "must be a name");
-    NIWA_RETURN_IF_ERROR(moss::SetMossScene(j["scene"].get<std::string>(), &s));
-  }
-  double v = 0;
-  if (j.contains("days")) {
-    NIWA_RETURN_IF_ERROR(NumberOf(j["days"], "days", &v));
-    NIWA_RETURN_IF_ERROR(moss::SetMossDays(v, &s));
-  }
-  if (j.contains("seed")) {
-    NIWA_RETURN_IF_ERROR(NumberOf(j["seed"], "seed", &v));
-    NIWA_RETURN_IF_ERROR(moss::SetMossSeed(v, &s));
-  }
-  *state = std::move(s);
-  return Status::Ok();
-}
-
 void PushVec(std::vector<float>* out, const glm::dvec3& v) {
   out->insert(out->end(),
               {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)});
@@ -118,37 +71,8 @@ void PushVec(std::vector<float>* out, const glm::dvec3& v) {
 
 }  // namespace
 
-// The moss table for the panel ([{key, symbol, unit, default, min, max, ...}], param_json.h).
-std::string MossTableJson() { return ParamTableJson(moss::MossTable()); }
-
-// [{name, source, params}] of the presets (`niwa presets moss`).
-std::string MossPresetsJson() {
-  ordered_json out = ordered_json::array();
-  for (const std::string& name : moss::MossPresetNames()) {
-    Result<moss::MossParams> p = moss::MossPreset(name);
-    ordered_json j;
-    j["name"] = name;
-    j["source"] = moss::MossPresetSource(name);
-    j["params"] = p.ok() ? ordered_json::parse(ParamsToJson(*p, -1)) : ordered_json::object();
-    out.push_back(std::move(j));
-  }
-  return JsonText(out);
-}
-
 // The built-in scenes as `niwa moss scenes` lists them.
 std::string MossScenes() { return moss::MossScenesJson(); }
-
-// {state, notices} of a share-link hash (io/hash_codec: bad values clamped or dropped with a
-// notice), as the generic decodeHash answers for the other studies.
-std::string MossDecodeHash(const std::string& hash, const std::string& prefix) {
-  moss::MossState state;
-  std::vector<std::string> notices;
-  moss::ApplyMossHash(hash, prefix, &state, &notices);
-  ordered_json out;
-  out["state"] = MossStateObject(state);
-  out["notices"] = notices;
-  return JsonText(out);
-}
 
 // An adapter over core/moss/moss_run.h: one run grown to its days, its land and its mosses'
 // lives flattened for the page.
@@ -160,7 +84,7 @@ class MossLab {
   // life: "" or the error record (the last run is kept on error).
   std::string grow(const std::string& state_json) {
     moss::MossState state;
-    Status s = ApplyMossStateJson(state_json, &state);
+    Status s = moss::ApplyMossStateJson(state_json, &state);
     if (!s.ok()) return ErrorText(s);
     Result<moss::MossRun> started = moss::MossRun::Start(state, PageBudget());
     if (!started.ok()) return ErrorText(started.status());
@@ -319,10 +243,7 @@ class MossLab {
 
 EMSCRIPTEN_BINDINGS(niwa_moss) {
   using namespace emscripten;
-  function("mossTableJson", &niwa::MossTableJson);
-  function("mossPresetsJson", &niwa::MossPresetsJson);
   function("mossScenesJson", &niwa::MossScenes);
-  function("mossDecodeHash", &niwa::MossDecodeHash);
   class_<niwa::MossLab>("MossLab")
       .constructor<>()
       .function("setProgress", &niwa::MossLab::setProgress)

@@ -130,14 +130,8 @@ export class TerrainLab {
 }
 
 // ---- moss_bindings.cpp: Nomura 2010 over core/moss/moss_run
-/** The moss table for the panel (the compose registry has no moss row yet). */
-export function mossTableJson(): string;
-/** [{name, source, params}] of the moss presets. */
-export function mossPresetsJson(): string;
 /** The built-in scenes as `niwa moss scenes` lists them. */
 export function mossScenesJson(): string;
-/** {state: {preset, scene, days, seed, params}, notices} of a share-link hash. */
-export function mossDecodeHash(hash: string, prefix: string): string;
 
 export class MossLab {
   constructor();

@@ -6,32 +6,21 @@
 // alive with its birth and death day (the page's day scrubber replays them without a new grow);
 // copied once out of the WASM heap into buffers the page gave back ('recycle') where they fit
 // (web/worker/transfer.js TransferPool), then transferred, with the reply's bufferCounts.
-// Table, presets and hash: the moss bindings' own mossTableJson / mossPresetsJson /
-// mossDecodeHash while the compose registry (core/compose/studies.cpp) has no moss row; the
-// generic tableJson('moss') etc. once it has.
+// Table, presets and hash: the generic tableJson / presetsJson / decodeHash of the compose
+// registry (core/compose/studies.cpp, its moss row); the scenes: the moss bindings' mossScenesJson.
 // Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does), or export.
 import { errorOf, errorReply } from './errors.js';
 import { TransferPool } from './transfer.js';
 import { nextTask } from './next_task.js';
 
-// The generic registry's answer for moss when it has a row, else the moss bindings' own.
-function registryOr(generic, own) {
-  try {
-    const text = generic();
-    const parsed = JSON.parse(text);
-    if (!(parsed && parsed.ok === false)) return text;
-  } catch { /* no moss row: the bindings' own */ }
-  return own();
-}
-
 // ctx: {post(msg, transfer), isLatest(client, id)} from the router.
 export function createHandler(Module, ctx) {
   const { post, isLatest } = ctx;
-  const paramTable = JSON.parse(registryOr(() => Module.tableJson('moss'), () => Module.mossTableJson()));
-  const presets = JSON.parse(registryOr(() => Module.presetsJson('moss'), () => Module.mossPresetsJson()));
+  const paramTable = JSON.parse(Module.tableJson('moss'));
+  const presets = JSON.parse(Module.presetsJson('moss'));
   const scenes = JSON.parse(Module.mossScenesJson()).scenes;
-  const decode = (hash) => JSON.parse(registryOr(() => Module.decodeHash('moss', hash, ''), () => Module.mossDecodeHash(hash, '')));
+  const decode = (hash) => JSON.parse(Module.decodeHash('moss', hash, ''));
   const labs = new Map();  // client -> {lab, working, lastPost}
   const returned = new TransferPool();  // the land and moss buffers each client gave back
 
