@@ -14,11 +14,13 @@
 
 #include "base/echo.h"
 #include "cli_common.h"
+#include "io/mesh_reader.h"
 #include "moss/moss_params.h"
 #include "moss/moss_report.h"
 #include "moss/moss_run.h"
 #include "moss/moss_state.h"
 #include "moss/soil.h"
+#include "moss/soil_cells.h"
 #include "params/param_text.h"
 #include "run/field_names.h"
 
@@ -29,13 +31,14 @@ using moss::MossParam;
 
 // The one table of the moss commands' names for state and cell fields (run/field_names.h).
 const run::FieldNames kFieldFlags = {
-    {"preset", "--preset"},   {"geology", "--geology"},
-    {"theta", "--theta"},     {"S", "--S"},
-    {"m_over_M", "--mM"},     {"V_sky", "--V"},
-    {"species", "--species"}, {"T_s", "--Ts"},
-    {"rh_s", "--rhs"},        {"days", "--days"},
-    {"seed", "--seed"},       {"scene", "--scene"},
-    {"photons", "--photons"}, {"indirect", "--indirect"},
+    {"preset", "--preset"},     {"geology", "--geology"},
+    {"theta", "--theta"},       {"S", "--S"},
+    {"m_over_M", "--mM"},       {"V_sky", "--V"},
+    {"species", "--species"},   {"T_s", "--Ts"},
+    {"rh_s", "--rhs"},          {"days", "--days"},
+    {"seed", "--seed"},         {"scene", "--scene"},
+    {"mesh", "--mesh"},         {"photons", "--photons"},
+    {"indirect", "--indirect"},
 };
 constexpr FlagRange kDaysRange{0, moss::kMaxMossDays, true};
 constexpr FlagRange kSeedRange{0, static_cast<double>(moss::kMaxMossSeed), true};
@@ -139,7 +142,7 @@ int RunFitness(const FitnessOptions& o, std::ostream& out) {
 // state, then the budget.
 struct RunOptions {
   StateOptions state;
-  std::string scene, indirect;
+  std::string scene, indirect, mesh;
   double days = 0, photons = 0, seed = 0;
   bool stats = false;
   std::string out_path;
@@ -150,6 +153,9 @@ struct RunOptions {
 void AddRunOptions(CLI::App* cmd, RunOptions* o, bool with_days) {
   o->cmd = cmd;
   cmd->add_option("--scene", o->scene, "Built-in scene: plane, thesis (default), walls, rocks");
+  AddInputFlag(cmd, "--mesh", &o->mesh,
+               "Land mesh instead of a scene: .glb, .gltf or .obj (geology from material names "
+               "with humus, sand or asphalt, else COLOR_0, else the base colour; not in the link)");
   if (with_days)
     AddNumberFlag(cmd, "--days", &o->days, kDaysRange,
                   "Days to grow, " + RangeHelp(kDaysRange) + " (default 300)");
@@ -183,8 +189,20 @@ moss::MossState ResolveRunState(const RunOptions& o) {
 }
 
 moss::MossRun StartRun(const RunOptions& o) {
+  if (!o.mesh.empty() && o.cmd->count("--scene"))
+    Fail(Status::Error("--mesh", "given with --scene; must be one or the other"));
   const moss::MossState state = ResolveRunState(o);
-  Result<moss::MossRun> run = moss::MossRun::Start(state, ResolveBudget(o.budget));
+  Result<moss::MossRun> run = Status::Error("", "");
+  if (!o.mesh.empty()) {
+    io::MeshReadStats read;
+    Result<geom::TriMesh> mesh = io::ReadMeshFile(o.mesh, &read);
+    if (!mesh.ok()) Fail(mesh.status().Within("--mesh"));
+    const std::string name = o.mesh.substr(o.mesh.find_last_of('/') + 1);
+    run = moss::MossRun::StartOnScene(state, moss::SceneFromMesh(*mesh, read.materials, name),
+                                      ResolveBudget(o.budget), name);
+  } else {
+    run = moss::MossRun::Start(state, ResolveBudget(o.budget));
+  }
   if (!run.ok()) Fail(run::RenameField(run.status(), kFieldFlags));
   return std::move(*run);
 }

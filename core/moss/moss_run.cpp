@@ -91,13 +91,22 @@ Estimate MossRun::RunEstimate(const MossState& state, std::size_t cells) {
 }
 
 Result<MossRun> MossRun::Start(const MossState& state, const Budget& budget) {
+  Result<MossScene> scene = BuildScene(state.scene);
+  if (!scene.ok()) return scene.status();
+  return StartOnScene(state, std::move(*scene), budget, "");
+}
+
+Result<MossRun> MossRun::StartOnScene(const MossState& state, MossScene scene_value,
+                                      const Budget& budget, const std::string& mesh_name) {
   NIWA_RETURN_IF_ERROR(CheckMossParams(state.params));
   if (state.params.Get(MossParam::kLightSmoothingDays) > 0)
     return Status::Error("light_smoothing_days", "above 0 is not built yet; must be 0");
-  Result<MossScene> scene = BuildScene(state.scene);
-  if (!scene.ok()) return scene.status();
+  if (scene_value.mesh.triangle_count() == 0)
+    return Status::Error("mesh", "has no triangles; must have at least one");
+  const MossScene* scene = &scene_value;
   MossRun run;
   run.state_ = state;
+  run.mesh_name_ = mesh_name;
   run.budget_ = budget;
   SoilCellOptions options;
   options.soil_edge = state.params.Get(MossParam::kSoilEdge);
@@ -548,7 +557,8 @@ std::string MossRun::PhotonDayJson() const {
   TracePhotons(cells_, occluders, light_, state_.params.GetInt(MossParam::kPhotons), &rng, &map);
   nlohmann::ordered_json j;
   j["study"] = "moss";
-  j["scene"] = state_.scene;
+  j["scene"] = mesh_name_.empty() ? state_.scene : "mesh";
+  if (!mesh_name_.empty()) j["mesh"] = mesh_name_;
   j["url"] = Hash("");
   j["day"] = world_.day + 1;
   j["mosses"] = world_.mosses.size();
@@ -633,7 +643,8 @@ std::string MossRun::StatsJson() const {
   const MossWorld& w = world_;
   nlohmann::ordered_json j;
   j["study"] = "moss";
-  j["scene"] = state_.scene;
+  j["scene"] = mesh_name_.empty() ? state_.scene : "mesh";
+  if (!mesh_name_.empty()) j["mesh"] = mesh_name_;  // a loaded mesh: not in the link
   j["preset"] = state_.preset;
   j["url"] = Hash("");
   j["days"] = w.day;

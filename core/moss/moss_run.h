@@ -81,6 +81,12 @@ class MossRun : public run::StudyRun {
   // the whole run against the budget first. Errors name state fields ("scene", "days", a row
   // such as "light_smoothing_days" or "sun_path") or the budget's limit.
   static Result<MossRun> Start(const MossState& state, const Budget& budget);
+  // The same on a scene made by the caller (a loaded mesh through soil_cells.h SceneFromMesh):
+  // the state's scene is not read; `mesh_name` (the file's name) goes into the stats beside
+  // "scene": "mesh" (a mesh is not part of the link). Errors as Start's, and "mesh" for a scene
+  // without triangles.
+  static Result<MossRun> StartOnScene(const MossState& state, MossScene scene, const Budget& budget,
+                                      const std::string& mesh_name);
   // What the run of `state` on `cells` needs (calibrated upper bounds).
   static Estimate RunEstimate(const MossState& state, std::size_t cells);
 
@@ -120,6 +126,7 @@ class MossRun : public run::StudyRun {
   void PlaceAtRandom(Species species, bool as_seed);
 
   MossState state_;
+  std::string mesh_name_;  // the loaded mesh's file name; "" on a built-in scene
   Budget budget_;
   SoilCells cells_;
   std::vector<double> cumulative_area_;

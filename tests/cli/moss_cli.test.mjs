@@ -7,7 +7,7 @@
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { buildName, check, finish, native, requireWasm, run, spawn, wasm, withoutMs } from '../support/cli_pair.mjs';
+import { buildName, check, finish, native, requireWasm, root, run, spawn, wasm, withoutMs } from '../support/cli_pair.mjs';
 
 requireWasm();
 
@@ -131,7 +131,23 @@ for (const [args, field] of hostile) {
       r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${field}`) && r.stdout === '');
   }
 }
+// A land mesh of the user's (--mesh): a glTF whose three materials are named humus, sand and
+// asphalt; geology per triangle from them, the same bytes in both builds; the file is not in the link.
+{
+  const mesh = join(root, 'tests/data/meshes/materials.glb');
+  const args = ['moss', 'grow', '--mesh', mesh, '--days', '5', '--photons', '512', '--stats'];
+  const a = JSON.stringify(withoutMs(JSON.parse(run(native, args))));
+  const b = JSON.stringify(withoutMs(JSON.parse(run(wasm, args))));
+  const s = JSON.parse(a);
+  check(`moss grow --mesh materials.glb: native == WASM; ${s.cells.total} cells (${JSON.stringify(s.cells.by_geology)}), ${s.mosses.total} mosses`,
+    a === b && s.scene === 'mesh' && s.mesh === 'materials.glb' && s.cells.by_geology.humus > 0 &&
+    s.cells.by_geology.sandy > 0 && s.cells.by_geology.asphalt > 0 && s.mosses.total > 0 && !s.url.includes('materials'));
+}
+
 for (const [args, field] of [
+  [['--mesh', join(root, 'tests/data/meshes/truncated.glb')], '--mesh'],
+  [['--mesh', join(root, 'tests/data/meshes/empty.glb')], '--mesh'],
+  [['--mesh', join(root, 'tests/data/meshes/materials.glb'), '--scene', 'thesis'], '--mesh'],
   [['--scene', 'garden'], '--scene'], [['--days', '-1'], '--days'], [['--days', '2.5'], '--days'],
   [['--indirect', 'maybe'], '--indirect'], [['--seed', '1e20'], '--seed'], [['--photons', 'nan'], '--photons'],
   [['--max-seconds', '1'], '--max-seconds'], [['--set', 'light_smoothing_days=2', '--days', '1'], 'light_smoothing_days'],
