@@ -71,7 +71,13 @@ await runBrowserTest(async (server, browser) => {
   await page.selectOption('#render-mode', '1');
   await waitReady(page, serial, 200);
   await page.waitForFunction(() => Number(document.documentElement.dataset.renderViews || 0) >= 1, null, { timeout: TIMEOUT });
-  await page.waitForTimeout(500);
+  // A whole hybrid frame drawn with the latest draw list (a fixed 500 ms wait once caught an older
+  // frame under load: SSIM 0.828 against the usual 0.855).
+  await page.waitForFunction(() => {
+    const d = document.documentElement.dataset;
+    return d.drawnMode === 'hybrid' && Number(d.drawnViews) >= Math.max(1, Number(d.renderViews || 0));
+  }, null, { timeout: TIMEOUT, polling: 50 });
+  await page.waitForTimeout(300);
   const hash = await page.evaluate(() => location.hash);
   check('the mode is in the URL', hash.includes('render_mode=1'), hash);
   check('the camera is the same in both modes', camOf(hash) === cam, `${cam} / ${camOf(hash)}`);

@@ -148,6 +148,7 @@ const frames = new FrameLoop(() => {
   let quality = null;
   let whole = false;
   if (!resume) {
+    viewsAtFrameStart = viewsReceived;
     freshNext = false;
     quality = governor.quality(cheapAvailable);
     frameLevel = quality.level;
@@ -175,7 +176,8 @@ const frames = new FrameLoop(() => {
   }
   if (drawn.mode !== 'motion') table.showFrame(drawn);
   // tests wait for the new tree's frame, and for the frame that shows a new selection
-  setHooks({ drawnTreeSerial: treeSerial, drawnSelection: drawn.selected ?? -1 });
+  setHooks({ drawnTreeSerial: treeSerial, drawnSelection: drawn.selected ?? -1,
+    drawnMode: drawn.mode, drawnViews: viewsAtFrameStart });
   if (freshOnDraw) {  // the tree that answers the latest edit is on screen now
     freshOnDraw = false;
     feedback.fresh();
@@ -245,6 +247,10 @@ function cameraMoved() {
   cameraTimer = setTimeout(writeHash, 400);
 }
 
+// The hybrid draw lists installed, and how many a frame began with (tests wait for a whole frame
+// drawn with the latest list: hook drawnViews).
+let viewsReceived = 0;
+let viewsAtFrameStart = 0;
 let rendererStarting = true;  // until startRenderer has a renderer or has failed
 let pendingTree = null;        // the tree that came before the renderer (installed once it is up)
 
@@ -552,6 +558,7 @@ worker.on('drawList', (msg) => {
   viewInFlight = false;
   if (!hybridOn || !renderer) return;
   renderer.setDrawList(msg);
+  viewsReceived += 1;
   // Uploaded: the list's buffers go back for the worker's next draw list to fill.
   worker.recycle({ cards: msg.cards, lines: msg.lines });
   countReuse('view', msg.buffers);
