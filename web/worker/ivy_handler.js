@@ -9,7 +9,7 @@
 // places a seed point); 'export' builds .glb, .json or .lsys. Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does).
 import { errorOf, errorReply } from './errors.js';
-import { TransferPool, takeBuffers } from './transfer.js';
+import { TransferPool, takeBuffers, closeLabSession } from './transfer.js';
 import { nextTask } from './next_task.js';
 
 // A new task of the worker's loop (not setTimeout(0), which is clamped to 4 ms when nested).
@@ -181,15 +181,7 @@ export function createHandler(Module, ctx) {
 
   // The client went away (web/worker/worker.js 'close'): its lab is deleted and its returned
   // buffers are dropped (not the shared leaf-texture buffer). Returns what was let go.
-  function close(client) {
-    const entry = labs.get(client);
-    if (entry) {
-      entry.lab.setProgress(null);
-      entry.lab.delete();
-    }
-    labs.delete(client);
-    return { sessions: entry ? 1 : 0, buffers: returned.forget(client) };
-  }
+  const close = (client) => closeLabSession(labs, returned, client);
 
   return {
     superseding: ['update'],

@@ -11,7 +11,7 @@
 // Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does), or export.
 import { errorOf, errorReply } from './errors.js';
-import { TransferPool } from './transfer.js';
+import { TransferPool, closeLabSession } from './transfer.js';
 import { nextTask } from './next_task.js';
 
 // ctx: {post(msg, transfer), isLatest(client, id)} from the router.
@@ -65,15 +65,7 @@ export function createHandler(Module, ctx) {
 
   // The client went away (web/worker/worker.js 'close'): its lab is deleted and its returned
   // buffers are dropped. Returns what was let go.
-  function close(client) {
-    const entry = labs.get(client);
-    if (entry) {
-      entry.lab.setProgress(null);
-      entry.lab.delete();
-    }
-    labs.delete(client);
-    return { sessions: entry ? 1 : 0, buffers: returned.forget(client) };
-  }
+  const close = (client) => closeLabSession(labs, returned, client);
 
   return {
     superseding: ['update'],

@@ -148,3 +148,16 @@ export class TransferPool {
     return { buffers, bytes };
   }
 }
+
+// A handler's 'close' for one client whose session is {lab} in `labs` (a Map): the lab's progress
+// callback dropped and the lab deleted, its returned buffers in `pool` forgotten. Returns what was
+// let go ({sessions, buffers}) for web/worker/worker.js.
+export function closeLabSession(labs, pool, client) {
+  const entry = labs.get(client);
+  if (entry) {
+    entry.lab.setProgress(null);
+    entry.lab.delete();
+  }
+  labs.delete(client);
+  return { sessions: entry ? 1 : 0, buffers: pool.forget(client) };
+}
