@@ -377,6 +377,15 @@ Vec2 PoleOfInaccessibility(const Ring& ring, double* radius) {
   const double x0 = box.x0, x1 = box.x1, y0 = box.y0, y1 = box.y1;
   Vec2 best{0.5 * (x0 + x1), 0.5 * (y0 + y1)};
   double best_r = InsideDouble(ring, best) ? RingDistance(ring, best) : -1;
+  // A candidate inside the ring that lies farther from its boundary is the new best.
+  const auto consider = [&](const Vec2& q) {
+    if (!InsideDouble(ring, q)) return;
+    const double r = RingDistance(ring, q);
+    if (r > best_r) {
+      best_r = r;
+      best = q;
+    }
+  };
   const int k = 16;
   double w = x1 - x0, h = y1 - y0;
   Vec2 c = best;
@@ -384,12 +393,7 @@ Vec2 PoleOfInaccessibility(const Ring& ring, double* radius) {
     for (int j = 0; j <= k; ++j) {
       for (int i = 0; i <= k; ++i) {
         const Vec2 q{c.x - 0.5 * w + w * i / k, c.y - 0.5 * h + h * j / k};
-        if (!InsideDouble(ring, q)) continue;
-        const double r = RingDistance(ring, q);
-        if (r > best_r) {
-          best_r = r;
-          best = q;
-        }
+        consider(q);
       }
     }
     c = best;
@@ -419,12 +423,7 @@ Vec2 PoleOfInaccessibility(const Ring& ring, double* radius) {
       std::sort(xs.begin(), xs.end());
       for (std::size_t i = 0; i + 1 < xs.size(); i += 2) {
         const Vec2 q{0.5 * (xs[i] + xs[i + 1]), y};
-        if (!InsideDouble(ring, q)) continue;
-        const double r = RingDistance(ring, q);
-        if (r > best_r) {
-          best_r = r;
-          best = q;
-        }
+        consider(q);
       }
     }
     for (int round = 0; best_r > 0 && round < 8; ++round) {
@@ -433,12 +432,7 @@ Vec2 PoleOfInaccessibility(const Ring& ring, double* radius) {
       for (int j = 0; j <= k; ++j) {
         for (int i = 0; i <= k; ++i) {
           const Vec2 q{at.x - 0.5 * span + span * i / k, at.y - 0.5 * span + span * j / k};
-          if (!InsideDouble(ring, q)) continue;
-          const double r = RingDistance(ring, q);
-          if (r > best_r) {
-            best_r = r;
-            best = q;
-          }
+          consider(q);
         }
       }
     }
