@@ -1,0 +1,84 @@
+// Bark workloads (core/bark, paper 003; issue 30, spec bark.md §6's table): one E1 run of the
+// 2-layer model (128 x 64 lattice, camphor, the preset's cycles and settling) timed once cold with
+// ns per spring-step as its unit; a 64 x 32 run warm; and the four maps (base colour, normal,
+// 16-bit height, ORM) at 1024 px from a grown lattice, PNG encoding included.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bark/bark_run.h"
+#include "bark/bark_state.h"
+#include "workloads.h"
+
+namespace niwa {
+namespace {
+
+bark::BarkState StateOf(const std::string& species, int n_r, int n_h) {
+  bark::BarkState state;
+  (void)bark::SetBarkSpecies(species, &state);
+  (void)state.params.Set(bark::BarkParam::kNR, n_r);
+  (void)state.params.Set(bark::BarkParam::kNH, n_h);
+  return state;
+}
+
+double Checksum(const bark::BarkRun& run) {
+  return static_cast<double>(run.steps()) + 1e-3 * run.spring_steps() * 1e-6;
+}
+
+// Start and Advance of `species` on an n_r x n_h lattice; the unit is one spring-step.
+Workload Grow(const std::string& species, int n_r, int n_h, bool once) {
+  Workload wl;
+  const std::string size = std::to_string(n_r) + "x" + std::to_string(n_h);
+  wl.name = "bark/" + species + "-" + size;
+  wl.note = "BarkRun::Start and Advance: the 2-layer model, " + species + " preset on a " + size +
+            " lattice, seed 1" + (once ? ", timed once (cold)" : "");
+  wl.once = once;
+  wl.unit = "spring-step";
+  std::shared_ptr<double> units = wl.units;
+  wl.prepare = [species, n_r, n_h, units]() -> WorkloadBody {
+    const bark::BarkState state = StateOf(species, n_r, n_h);
+    return [state, units]() {
+      Result<bark::BarkRun> run = bark::BarkRun::Start(state, Budget{});
+      if (!run.ok() || !run->Advance({}).ok()) return -1.0;
+      *units = run->spring_steps();
+      return Checksum(*run);
+    };
+  };
+  return wl;
+}
+
+// The four maps at map_size px from a 128 x 64 camphor lattice grown beforehand.
+Workload Maps(int size) {
+  Workload wl;
+  wl.name = "bark/maps-" + std::to_string(size);
+  wl.note = "The four maps (base colour, normal, 16-bit height, ORM) at " + std::to_string(size) +
+            " px from a grown 128x64 camphor lattice, PNG bytes included";
+  wl.prepare = [size]() -> WorkloadBody {
+    bark::BarkState state = StateOf("camphor", 128, 64);
+    (void)state.params.Set(bark::BarkParam::kMapSize, size);
+    auto run = std::make_shared<Result<bark::BarkRun>>(bark::BarkRun::Start(state, Budget{}));
+    if (!run->ok() || !(*run)->Advance({}).ok()) return []() { return -1.0; };
+    return [run]() {
+      bark::BarkRun fresh = **run;  // a copy without maps (the grown one never drew them)
+      double sum = 0;
+      for (const char* map : {"base_colour", "normal", "height", "orm"}) {
+        Result<std::string> png = fresh.MapPng(map);
+        sum += png.ok() ? 1e-3 * static_cast<double>(png->size()) : -1;
+      }
+      return sum;
+    };
+  };
+  return wl;
+}
+
+}  // namespace
+
+std::vector<Workload> BarkWorkloads() {
+  std::vector<Workload> all;
+  all.push_back(Grow("camphor", 128, 64, true));
+  all.push_back(Grow("camphor", 64, 32, false));
+  all.push_back(Maps(1024));
+  return all;
+}
+
+}  // namespace niwa
