@@ -197,6 +197,26 @@ await runBrowserTest(async (server, browser) => {
   check('a Years error is shown beside Years (and beside Age)', /^years: 130 is out of range/.test(yearsError)
     && (await page.evaluate(() => !document.querySelector('[data-for-key="years"] .field-error')?.hidden)), yearsError);
   await andWait(page, () => page.fill('#years', '8'));
+  // A bad Shoot length typed in Getting started: its error shows beside that field and the panel
+  // stays on it (issue 32: it scrolled to the full table's copy of the row, away from the field).
+  await page.evaluate(() => document.querySelector('.panel').scrollTo(0, 0));
+  const shoot = page.locator('.getting-started [data-for-key="D_high"] input[type=number]');
+  await shoot.fill('500');
+  await page.waitForFunction(() => document.documentElement.dataset.status === 'error', null, { timeout: TIMEOUT });
+  await page.waitForTimeout(200);
+  const typed = await page.evaluate(() => {
+    const host = document.querySelector('.getting-started [data-for-key="D_high"]');
+    const input = host.querySelector('input[type=number]').getBoundingClientRect();
+    const line = host.querySelector('.field-error');
+    const panel = document.querySelector('.panel').getBoundingClientRect();
+    const lr = line?.getBoundingClientRect();
+    return { inputTop: input.top, inputBottom: input.bottom, lineText: line && !line.hidden ? line.textContent : '',
+      lineBottom: lr?.bottom, panelTop: panel.top, panelBottom: Math.min(panel.bottom, window.innerHeight) };
+  });
+  check('a bad Shoot length typed in Getting started: its error beside it, the field still in view',
+    /^D_high: 500 is out of range/.test(typed.lineText) && typed.inputTop >= typed.panelTop && typed.inputBottom <= typed.panelBottom
+    && typed.lineBottom <= typed.panelBottom, JSON.stringify(typed));
+  await andWait(page, () => shoot.fill('3'));
 
   // ---- 4. The trunk: selected, but Cut and Delete refuse, with the reason.
   const trunk = await findTrunk(page);

@@ -63,6 +63,7 @@ export class EditFeedback {
     }
     const hosts = this.#hosts(key);
     let first = null;
+    let firstTyped = false;
     for (const { host, input } of hosts) {
       // A basic field's line goes after the field (its parent is the grid of the basics).
       const line = this.basics[key] && input ? this.#lineAfter(input) : errorLineIn(host);
@@ -72,7 +73,11 @@ export class EditFeedback {
       if (input && this.basics[key]) input.setAttribute('aria-invalid', 'true');
       const details = host.closest('details');
       if (details && !details.open && !host.closest('.getting-started')) details.open = true;
-      if (!first && host.offsetParent !== null) first = line;
+      if (host.offsetParent === null) continue;
+      // The field being typed in keeps the view: its own line, not another copy of the row's.
+      const typedIn = host.contains(document.activeElement) || input === document.activeElement;
+      if (!first || (typedIn && !firstTyped)) first = line;
+      firstTyped ||= typedIn;
     }
     first?.scrollIntoView({ block: 'nearest' });
     this.stale(hosts.length > 0 ? 'stale: this is the last good tree; fix the field marked in red'
