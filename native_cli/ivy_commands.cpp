@@ -196,6 +196,12 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   if (!run.ok()) Fail(AsIvyFlags(run.status()));
   Check(AsIvyFlags(run->Advance({})));
   ReportTruncated(run->log().truncated_by);
+  // Nothing grown is an error, not an empty file (a row named by the core is a --set row).
+  if (Status grew = run->CheckGrewSomething(); grew.field() == "L") {
+    Fail(Status::Error("--set L", grew.message()));
+  } else {
+    Check(AsIvyFlags(grew));
+  }
   const bool trace = std::getenv("NIWA_BUDGET_TRACE") != nullptr;  // calibration (docs/budgets.md)
   const Estimate grown = ivy::EstimateIvyGrown(run->model(), run->log(), run->limits());
   if (!o.out_path.empty()) {

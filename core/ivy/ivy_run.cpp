@@ -393,6 +393,32 @@ Estimate IvyRun::StatsEstimate() const {
   return EstimateIvyStats(CountIvyStatsWork(model_, state_.params, support_->triangles()));
 }
 
+Status IvyRun::CheckGrewSomething() const {
+  if (state_.steps == 0 || !model_.internodes.empty() || !log_.truncated_by.empty())
+    return Status::Ok();
+  const double L = state_.params.Get(IvyParam::kL), d = state_.params.Get(IvyParam::kD);
+  double size = 0;
+  if (const geom::TriMesh* mesh = support_->mesh()) {
+    const geom::Bounds3 b = geom::MeshBounds(*mesh);
+    if (!b.empty()) size = std::max({b.max.x - b.min.x, b.max.y - b.min.y, b.max.z - b.min.z});
+  }
+  const std::string grew = "grew no internode in " + std::to_string(state_.steps) + " steps";
+  if (size > 0 && std::max(L, d) >= 0.5 * size) {
+    Result<IvyParams> preset = IvyPreset(state_.preset);
+    const bool presets_lengths =
+        preset.ok() && preset->Get(IvyParam::kL) == L && preset->Get(IvyParam::kD) == d;
+    return Status::Error(presets_lengths ? "preset" : "L",
+                         grew + ": its internode length L = " + FormatNumber(L) +
+                             " and distance d = " + FormatNumber(d) +
+                             " are in the support's units, and the support is " +
+                             FormatNumber(std::round(size * 1000) / 1000) + " across; " +
+                             (presets_lengths ? "pick a preset of its scale (metric for metres)"
+                                              : "set L and d below half its size"));
+  }
+  return Status::Error("seed_points", grew + ": no seed found a place to grow within d = " +
+                                          FormatNumber(d) + " of the support");
+}
+
 Status IvyRun::CheckStats() const {
   if (!grown_) return Status::Ok();
   return CheckEstimate(EstimateIvyGrown(model_, log_, limits_) + StatsEstimate(), budget_,

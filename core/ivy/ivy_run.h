@@ -178,6 +178,11 @@ class IvyRun : public run::StudyRun {
   int grows() const { return grows_; }        // Grow calls so far (the stage cache's test)
   int remeshes() const { return remeshes_; }  // BuildIvyMeshes calls so far
 
+  // After Advance: an error when steps > 0 grew no internode (a run that makes nothing is not a
+  // result; issue 31 item 4), naming why: "preset" (or "L" when L or d is not the preset's) when
+  // L or d is half the support's size or more (a pixel preset on a mesh in metres), else
+  // "seed_points" (every seed's first search found no place within d of the support).
+  Status CheckGrewSomething() const;
   // The measurement's estimate (counted from the model) and its check with the grown ivy.
   Estimate StatsEstimate() const;
   Status CheckStats() const;
