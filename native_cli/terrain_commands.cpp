@@ -395,8 +395,8 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
   AddOutputFlag(grow, "--out", &o->out, {".glb"},
                 "Write the surface as .glb (metres, y up, normals, tint row, contours as lines)");
   AddOutputFlag(grow, "--heightmap", &o->heightmap, {".png"},
-                "Write a 16-bit greyscale .png and its sidecar FILE.json (min, max, cell, "
-                "origin)");
+                "Write a square 16-bit greyscale .png of 2^k + 1 samples (res 256: 257, as "
+                "engines take them) and its sidecar FILE.json (min, max, cell, origin)");
   AddBudgetOptions(grow, &o->budget);
   commands.push_back({grow,
                       [o](std::ostream& out) { return RunGrow(*o, out); },

@@ -34,13 +34,12 @@ Result<ContourRepair> RepairContour(const Ring& ring) {
   // sweep runs along x (SelfIntersections), bounded as the check is.
   if (SimplicityPairs(ToGrid(Normalise(ring))) > kMaxSimplicityPairs) return checked.status();
   if (const double pairs = SweepPairs(ToGrid(snapped), false); pairs > kMaxSimplicityPairs) {
-    return Status::Error("contour", "is not a simple loop, and with " +
-                                        std::to_string(ring.size()) +
-                                        " points whose edges overlap along x repairing it "
-                                        "would test " + FormatCount(pairs) +
-                                        " pairs of edges, more than the " +
-                                        FormatCount(kMaxSimplicityPairs) +
-                                        " allowed; simplify the contour");
+    return Status::Error("contour",
+                         "is not a simple loop, and with " + std::to_string(ring.size()) +
+                             " points whose edges overlap along x repairing it "
+                             "would test " +
+                             FormatCount(pairs) + " pairs of edges, more than the " +
+                             FormatCount(kMaxSimplicityPairs) + " allowed; simplify the contour");
   }
   int removed = 0;
   // §4.4 method 2 with the table's default run (loop_run 5), whatever the state's rows.

@@ -9,7 +9,6 @@
 namespace niwa::terrain {
 namespace {
 
-
 Ring Radial(int n, double radius, int lobes, double depth) {
   Ring r;
   for (int i = 0; i < n; ++i) {
@@ -111,8 +110,7 @@ Result<Ring> BuiltinSeed(const std::string& name) {
                 {460, 200}, {260, 200}, {260, 115}, {200, 115}, {200, 200}, {0, 200}};
   }
   return Status::Error(
-      "builtin",
-      "'" + name + "' is unknown; must be disk, dumbbell, lobes7, jacksboro or valleys");
+      "builtin", "'" + name + "' is unknown; must be disk, dumbbell, lobes7, jacksboro or valleys");
 }
 
 }  // namespace niwa::terrain

@@ -58,6 +58,14 @@ gltf::Document TerrainDocument(const Terrain& t, const Heightfield& hf, bool tin
           {static_cast<float>(p.x), static_cast<float>(hf.At(i, j)), static_cast<float>(-p.y)});
     }
   }
+  // TEXCOORD_0 over the heightfield's extent (u east, v south: v = 0 on the north edge, as the
+  // heightmap's row 0), so a texture drawn on the heightmap's grid lies on the surface.
+  m.uvs.reserve(m.positions.size());
+  for (int j = 0; j < ht; ++j) {
+    for (int i = 0; i < w; ++i) {
+      m.uvs.push_back({static_cast<float>((i + 0.5) / w), static_cast<float>((j + 0.5) / ht)});
+    }
+  }
   // Normals from central differences (one-sided at the border): n ∝ (−∂h/∂x, 1, −∂h/∂z), z = −y.
   m.normals.reserve(m.positions.size());
   for (int j = 0; j < ht; ++j) {
@@ -130,6 +138,19 @@ gltf::Document TerrainDocument(const Terrain& t, const Heightfield& hf, bool tin
   return doc;
 }
 
+Heightfield HeightmapGrid(const Heightfield& hf, int res) {
+  int n = 1;
+  while (n < res) n *= 2;
+  Heightfield grid;
+  grid.width = grid.height = n + 1;
+  const double w = hf.width * hf.cell, h = hf.height * hf.cell;
+  grid.cell = std::max(w, h) / n;  // the longer side spans N - 1 cells: half a cell over each end
+  const double cx = hf.x0 + 0.5 * w, cy = hf.y1 - 0.5 * h;
+  grid.x0 = cx - 0.5 * grid.width * grid.cell;
+  grid.y1 = cy + 0.5 * grid.height * grid.cell;
+  return grid;
+}
+
 Result<Heightmap> EncodeHeightmap(const Heightfield& hf) {
   if (hf.width <= 0 || hf.height <= 0) return Status::Error("heightmap", "empty heightfield");
   double hmin = hf.h[0], hmax = hmin;
@@ -155,6 +176,10 @@ Result<Heightmap> EncodeHeightmap(const Heightfield& hf) {
   j["origin"] = {{"x", hf.x0}, {"y", hf.y1}};
   j["origin_is"] = "north-west corner of pixel (0, 0); x east, y north, metres; row 0 is north";
   j["elevation"] = "min_elevation + sample / 65535 * (max_elevation - min_elevation)";
+  if (hf.width == hf.height && hf.width > 2 && ((hf.width - 1) & (hf.width - 2)) == 0) {
+    j["engine"] = "square 2^k + 1 samples: an engine terrain of " + std::to_string(hf.width - 1) +
+                  " x " + std::to_string(hf.width - 1) + " quads of cell_size metres";
+  }
   Heightmap out;
   out.sidecar_json = j.dump(2) + "\n";
   image::PngWriteOptions options;

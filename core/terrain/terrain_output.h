@@ -15,12 +15,21 @@
 namespace niwa::terrain {
 
 // glTF is y-up: a point (x east, y north) at elevation h is the vertex (x, h, −y).
-// Nodes "terrain" (the surface: one vertex per cell centre, TRIANGLES, NORMAL, COLOR_0 when tint)
+// Nodes "terrain" (the surface: one vertex per cell centre, TRIANGLES, NORMAL, TEXCOORD_0 over its
+// extent, COLOR_0 when tint)
 // and "contours" (every contour ring as LINES at its elevation). asset extras: extras_json.
 gltf::Document TerrainDocument(const Terrain& terrain, const Heightfield& hf, bool tint,
                                const std::string& extras_json = "");
 // The hypsometric tint of a normalised height t in [0, 1] (green, ochre, brown, white), RGB 0..1.
 void HypsometricColour(double t, float rgb[3]);
+
+// The heightmap's grid (issue 31 item 7: engines take square 2^k + 1 heightmaps; the heightfield
+// is res cells along its longer side and as many as its box needs along the other): N x N cells
+// with N = 2^ceil(log2(res)) + 1 (res 256: 257; 512: 513; 1000: 1025), covering the heightfield's
+// extent, its longer side N - 1 cells and the shorter one centred, cell centres as the
+// heightfield's (pixel (i, j) samples the surface at its centre). Only the grid: BuildHeightfieldOn
+// fills it.
+Heightfield HeightmapGrid(const Heightfield& hf, int res);
 
 struct Heightmap {
   std::vector<unsigned char>

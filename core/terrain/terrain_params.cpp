@@ -1,9 +1,9 @@
 // The terrain table and its figure presets (paper values in docs/terrain-model.md).
 #include "terrain/terrain_params.h"
 
+#include "math/det_math.h"
 #include "params/embedded_presets.h"
 #include "params/param_text.h"
-#include "math/det_math.h"
 
 namespace niwa::terrain {
 namespace {
@@ -44,8 +44,8 @@ const ParamTable& TerrainTable() {
            "FFT samples (equal edges) per contour (§4.2: 1,024)."},
           {Id(P::kF0), "f0", "f_0", "", 256, 1, 8192, true, "fourier", kGrow,
            "Phases of every component with |k| ≥ f0 are randomised; at most nfft/2."},
-          {Id(P::kPhaseAmp), "phase_amp", "a", "rad", det::kPi, 0, det::kPi, false, "fourier", kGrow,
-           "Phase noise: arg c(k) + U(−a, a); π is a fully random phase."},
+          {Id(P::kPhaseAmp), "phase_amp", "a", "rad", det::kPi, 0, det::kPi, false, "fourier",
+           kGrow, "Phase noise: arg c(k) + U(−a, a); π is a fully random phase."},
           {Id(P::kLongFrac), "long_frac", "", "", 0.2, 0.01, 1, false, "fourier", kGrow,
            "§4.3 step 1.3: collinear points are removed until this share of edges is ≥ 2·d0."},
           {Id(P::kLoopMethod), "loop_method", "", "", 2, 1, 2, true, "loops", kGrow,

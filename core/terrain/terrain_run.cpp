@@ -183,6 +183,7 @@ Status TerrainRun::Advance(const run::Observer& observer) {
     limits_ = limits;
   }
   hf_ = std::move(hf);
+  heightmap_.reset();
   state_ = next_;
   grown_ = true;
   redo_ = Redo::kNothing;
@@ -230,9 +231,17 @@ Result<Estimate> TerrainRun::ExportEstimate(const std::string& format) const {
   Result<TerrainOutput> kind = TerrainOutputOfFormat(format);
   if (!kind.ok()) return kind.status();
   const GridSize grid = {static_cast<double>(hf_.width), static_cast<double>(hf_.height)};
+  // The heightmap is the surface rebuilt on its square grid: that build and its samples.
+  const Heightfield square = HeightmapGrid(hf_, state_.params.GetInt(TerrainParam::kRes));
+  const GridSize map = {static_cast<double>(square.width), static_cast<double>(square.height)};
+  const auto output = [&](TerrainOutput out) {
+    return out == TerrainOutput::kHeightmap
+               ? EstimateHeightfield(terrain_, map) + EstimateTerrainOutput(terrain_, map, out)
+               : EstimateTerrainOutput(terrain_, grid, out);
+  };
   Estimate e;
-  for (TerrainOutput held : plan_.outputs) e = e + EstimateTerrainOutput(terrain_, grid, held);
-  return e + EstimateHeightfield(terrain_, grid) + EstimateTerrainOutput(terrain_, grid, *kind);
+  for (TerrainOutput held : plan_.outputs) e = e + output(held);
+  return e + EstimateHeightfield(terrain_, grid) + output(*kind);
 }
 
 Status TerrainRun::CheckExport(const std::string& format) const {
@@ -241,7 +250,17 @@ Status TerrainRun::CheckExport(const std::string& format) const {
   return CheckEstimate(*e, budget_, Change());
 }
 
-Result<Heightmap> TerrainRun::EncodeHeightmapFiles() const { return EncodeHeightmap(hf_); }
+const Heightfield& TerrainRun::heightmap_field() const {
+  if (!heightmap_) {
+    heightmap_ =
+        BuildHeightfieldOn(terrain_, HeightmapGrid(hf_, state_.params.GetInt(TerrainParam::kRes)));
+  }
+  return *heightmap_;
+}
+
+Result<Heightmap> TerrainRun::EncodeHeightmapFiles() const {
+  return EncodeHeightmap(heightmap_field());
+}
 
 Result<std::string> TerrainRun::Export(const std::string& format) const {
   Result<TerrainOutput> kind = TerrainOutputOfFormat(format);
@@ -256,7 +275,7 @@ Result<std::string> TerrainRun::Export(const std::string& format) const {
       return std::string(glb->begin(), glb->end());
     }
     case TerrainOutput::kHeightmap: {
-      Result<Heightmap> hm = EncodeHeightmap(hf_);
+      Result<Heightmap> hm = EncodeHeightmapFiles();
       if (!hm.ok()) return hm.status();
       if (format == "sidecar") return hm->sidecar_json;
       return std::string(hm->png.begin(), hm->png.end());

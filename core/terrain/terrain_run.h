@@ -108,8 +108,11 @@ class TerrainRun : public run::StudyRun {
   // The bytes of one output (formats as TerrainOutputOfFormat); errors as the encoders' (the
   // heightmap's name "heightmap").
   Result<std::string> Export(const std::string& format) const;
-  // The heightmap .png and its sidecar at once (what Export("heightmap") and ("sidecar") give).
+  // The heightmap .png and its sidecar at once (what Export("heightmap") and ("sidecar") give):
+  // the surface rebuilt on HeightmapGrid (square, 2^k + 1), not the heightfield's own grid.
   Result<Heightmap> EncodeHeightmapFiles() const;
+  // That grid, filled (built on first use and kept until the next grow).
+  const Heightfield& heightmap_field() const;
   // The page's buffers of the results (terrain_surface.h), reusing `out`'s storage.
   void FillSurfaceBuffers(SurfaceBuffers* out) const;
 
@@ -142,7 +145,8 @@ class TerrainRun : public run::StudyRun {
   TerrainState state_;  // the state of terrain_ and hf_
   Terrain terrain_;
   Heightfield hf_;
-  TerrainGrowLimits limits_;  // the limits terrain_ was grown within
+  mutable std::optional<Heightfield> heightmap_;  // hf_'s surface on HeightmapGrid
+  TerrainGrowLimits limits_;                      // the limits terrain_ was grown within
   TerrainRunCounts counts_;
   std::string truncated_by_;
   std::optional<Estimate> checked_estimate_;

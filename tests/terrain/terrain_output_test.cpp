@@ -1,6 +1,8 @@
 // 'niwa terrain grow' outputs: the .glb surface (one vertex per cell at its height, unit normals
 // facing up, contour lines at their elevations), the 16-bit heightmap and its sidecar (samples give
 // the heights back), GeoJSON and SVG contours, --url regrowing the same bytes, all-or-none writes.
+#include "terrain/terrain_output.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -87,18 +89,28 @@ TEST(TerrainOutput, GlbHeightmapAndContoursMatchTheHeightfield) {
   Result<image::Gray16Image> img = image::DecodeGray16Png(bytes.data(), bytes.size(), &info);
   ASSERT_TRUE(img.ok());
   EXPECT_EQ(info.bit_depth, 16);
-  EXPECT_EQ(img->width, hf.width);
-  EXPECT_EQ(img->height, hf.height);
+  // The heightmap is the surface on a square 2^k + 1 grid (engines' size; res 48 -> 65) over the
+  // heightfield's extent (issue 31 item 7: it was the heightfield's own 49 x 50).
+  const terrain::Heightfield map = terrain::BuildHeightfieldOn(t, terrain::HeightmapGrid(hf, 48));
+  EXPECT_EQ(img->width, 65);
+  EXPECT_EQ(img->height, 65);
+  ASSERT_EQ(map.width, 65);
+  EXPECT_LE(map.x0, hf.x0);
+  EXPECT_GE(map.y1, hf.y1);
+  EXPECT_GE(map.x0 + map.width * map.cell, hf.x0 + hf.width * hf.cell - 1e-9);
+  EXPECT_LE(map.y1 - map.height * map.cell, hf.y1 - hf.height * hf.cell + 1e-9);
   std::ifstream sidecar(side);
   nlohmann::json meta = nlohmann::json::parse(sidecar);
   const double lo = meta["min_elevation"], hi = meta["max_elevation"];
-  EXPECT_EQ(meta["cell_size"].get<double>(), hf.cell);
-  EXPECT_EQ(meta["origin"]["x"].get<double>(), hf.x0);
-  EXPECT_EQ(meta["origin"]["y"].get<double>(), hf.y1);
+  EXPECT_EQ(meta["width"], 65);
+  EXPECT_EQ(meta["cell_size"].get<double>(), map.cell);
+  EXPECT_EQ(meta["origin"]["x"].get<double>(), map.x0);
+  EXPECT_EQ(meta["origin"]["y"].get<double>(), map.y1);
+  EXPECT_NE(meta["engine"].get<std::string>().find("64 x 64 quads"), std::string::npos);
   EXPECT_EQ(lo, 0.0);
   EXPECT_GT(hi, 50.0);
-  for (std::size_t q = 0; q < hf.h.size(); ++q)
-    EXPECT_NEAR(lo + img->pixels[q] / 65535.0 * (hi - lo), hf.h[q], (hi - lo) / 65535.0);
+  for (std::size_t q = 0; q < map.h.size(); ++q)
+    EXPECT_NEAR(lo + img->pixels[q] / 65535.0 * (hi - lo), map.h[q], (hi - lo) / 65535.0);
 
   std::ifstream gin(geo);
   nlohmann::json fc = nlohmann::json::parse(gin);
