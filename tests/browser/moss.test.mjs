@@ -4,9 +4,15 @@
 // (every field but the ms* timings) for the page's own hash; the day scrubber changes the number
 // of mosses drawn, each day's count equal to the stats' population of that day, without a new
 // grow; a bad Days value (-1) and a bad hash value are a notice beside the field and the page
-// keeps working; Copy link gives a link that reopens the same run (same stats). Screenshots:
-// build/artifacts/moss-*.png.
+// keeps working; Copy link gives a link that reopens the same run (same stats). The population
+// chart draws one line per species over the stats' days with its marker on the scrubber's day;
+// the stats .json and days .csv downloads hold the stats and their population by day. The land
+// overlays of the last day (T_s, rh_s, theta, best-species G) span ranges that hold the stats'
+// per-geology means and tint the land differently; the photon points are the last day's stored
+// photons (direct and bounced, as the stats count them by depth), drawn yellow and blue.
+// Screenshots: build/artifacts/moss-*.png.
 import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
 import path from 'node:path';
 import {
   ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, watchPage,
@@ -58,9 +64,32 @@ async function looks(page) {
   });
 }
 
+// Mean colour of the canvas and its yellow (direct photon) and blue (bounced photon) pixel shares.
+async function tint(page) {
+  return page.evaluate(() => {
+    const d = window.__niwaCanvasImage('#view').data;
+    let r = 0, g = 0, b = 0, yellow = 0, blue = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      r += d[i]; g += d[i + 1]; b += d[i + 2];
+      if (d[i] > 200 && d[i + 1] > 150 && d[i + 2] < 80) ++yellow;
+      if (d[i + 2] > 180 && d[i] < 90 && d[i + 2] > d[i + 1] + 40) ++blue;
+    }
+    const n = d.length / 4;
+    return { mean: [r / n, g / n, b / n], yellow: yellow / n, blue: blue / n };
+  });
+}
+
+// The text of a download started by clicking `button`.
+async function downloaded(page, button) {
+  const [d] = await Promise.all([page.waitForEvent('download', { timeout: TIMEOUT }), page.click(button)]);
+  const out = path.join(ARTIFACTS, d.suggestedFilename());
+  await d.saveAs(out);
+  return { name: d.suggestedFilename(), text: fs.readFileSync(out, 'utf8') };
+}
+
 const problems = [];
 await runBrowserTest(async (server, browser) => {
-  const context = await newContext(browser, { viewport: { width: 1200, height: 800 }, permissions: ['clipboard-read', 'clipboard-write'] });
+  const context = await newContext(browser, { viewport: { width: 1200, height: 800 }, acceptDownloads: true, permissions: ['clipboard-read', 'clipboard-write'] });
   const page = await context.newPage();
   watchPage(page, problems);
   page.on('request', (r) => {
@@ -89,7 +118,21 @@ await runBrowserTest(async (server, browser) => {
   // 2. The day scrubber: the mosses alive on each day, as the stats' population, no new grow.
   const grows = Number(data.growRequests);
   const byDay = stats ? stats.population.by_day : [];
+  const chart = await page.evaluate(() => [...document.querySelectorAll('#population-chart polyline')].map((l) => ({
+    species: l.dataset.species, points: l.getAttribute('points').trim().split(/\s+/).map((p) => p.split(',').map(Number)),
+  })));
+  const chartOk = stats && chart.length === 3 && chart.map((c) => c.species).join() === stats.population.species.join() &&
+    chart.every((c) => c.points.length === byDay.length);
+  // Each line's heights are its species' counts: the day of the largest count is the highest point (smallest y).
+  const peaksOk = chartOk && chart.every((c, s) => {
+    const counts = byDay.map((d) => d[s]);
+    const top = Math.min(...c.points.map((p) => p[1]));
+    return c.points.every((p, k) => (counts[k] === Math.max(...counts)) === (p[1] === top));
+  });
+  check('the population chart: a line per species over every day of the stats, highest where the count is', chartOk && peaksOk,
+    chart.map((c) => `${c.species} ${c.points.length} points`).join(', '));
   const shown = [];
+  const marks = [];
   for (const day of [0, 10, 30, 45, 60]) {
     await page.evaluate((k) => {
       const r = document.getElementById('day');
@@ -100,10 +143,16 @@ await runBrowserTest(async (server, browser) => {
     const d = await page.evaluate(() => ({ ...document.documentElement.dataset }));
     const want = byDay[day] ? byDay[day].reduce((a, b) => a + b, 0) : NaN;
     shown.push({ day, drawn: Number(d.drawnMosses), want, coverage: Number(d.coverageShown) });
+    marks.push(await page.evaluate(() => {
+      const m = document.querySelector('#population-chart .marker');
+      return { day: Number(m.dataset.day), x: Number(m.getAttribute('x1')) };
+    }));
     if (day === 10) await saveCanvasPng(page, 'moss-day10.png');
   }
   check('the day scrubber draws each day\'s mosses (== stats population.by_day)', shown.every((s) => s.drawn === s.want),
     shown.map((s) => `day ${s.day}: ${s.drawn} (stats ${s.want})`).join(', '));
+  check('the chart\'s marker follows the scrubber\'s day, left to right', marks.every((m, i) => m.day === shown[i].day && (i === 0 || m.x > marks[i - 1].x)),
+    marks.map((m) => `day ${m.day} x ${m.x}`).join(', '));
   check('the scrubber changes the number drawn', new Set(shown.map((s) => s.drawn)).size > 1, shown.map((s) => s.drawn).join(','));
   check('the coverage overlay follows the day, and its replay of the last day is the run\'s', new Set(shown.map((s) => s.coverage)).size > 1 &&
     Number(data.coverageReplayError) < 1e-4, `coverage ${shown.map((s) => s.coverage).join(', ')}; replay error ${data.coverageReplayError}`);
@@ -115,10 +164,71 @@ await runBrowserTest(async (server, browser) => {
   const log = await page.evaluate(() => document.documentElement.dataset.dayShown);
   check('Play runs to the last day', log === '60', log);
 
-  // 3. Overlay: irradiance tints the land differently.
-  await page.selectOption('#overlay', 'irradiance');
-  await page.waitForTimeout(500);
-  await saveCanvasPng(page, 'moss-irradiance.png');
+  await page.screenshot({ path: path.join(ARTIFACTS, 'moss-chart-page.png') });
+
+  // 2b. Downloads: the stats as JSON, the days as CSV (day, species..., total).
+  const statsFile = await downloaded(page, '#download-stats');
+  check('Stats .json downloads the run\'s stats', /\.json$/.test(statsFile.name) && same(JSON.parse(statsFile.text), JSON.parse(data.stats)), statsFile.name);
+  const csvFile = await downloaded(page, '#download-csv');
+  const rows = csvFile.text.trim().split('\n').map((l) => l.split(','));
+  const csvOk = stats && rows[0].join() === ['day', ...stats.population.species, 'total'].join() && rows.length === byDay.length + 1 &&
+    rows.slice(1).every((r, k) => Number(r[0]) === k && byDay[k].every((c, s) => Number(r[1 + s]) === c) &&
+      Number(r[4]) === byDay[k].reduce((a, b) => a + b, 0));
+  check('Days .csv: a row per day with each species\' count and the total, as population.by_day', csvOk,
+    `${csvFile.name}: ${rows.length} lines, ${rows[0].join()} / ${(rows[rows.length - 1] || []).join()}`);
+
+  // 3. Overlays of the last day: each field's range holds the stats' per-geology means; each tints
+  // the land its own way; the photon points are the stored photons, yellow and blue.
+  const overlayHooks = async (value) => {
+    await page.selectOption('#overlay', value);
+    await page.waitForFunction((v) => document.documentElement.dataset.overlay === v, value, { timeout: TIMEOUT });
+    await page.waitForTimeout(400);
+    return page.evaluate(() => ({ ...document.documentElement.dataset }));
+  };
+  const tints = {};
+  tints.coverage = await tint(page);
+  const fields = [];
+  for (const field of ['irradiance', 'T_s', 'rh_s', 'theta', 'fitness']) {
+    const h = await overlayHooks(field);
+    tints[field] = await tint(page);
+    await saveCanvasPng(page, `moss-${field}.png`);
+    const key = field === 'irradiance' ? 'S' : field;
+    const means = stats && key !== 'fitness' ? Object.values(stats.soil_last_day).map((g) => g[key]) : [];
+    const min = Number(h.overlayMin), max = Number(h.overlayMax);
+    const span = (max - min) || 1;
+    fields.push({ field, shown: h.overlayField, min, max, means, ok: h.overlayField === field && (field === 'rh_s' ? min <= max : min < max) &&
+      means.every((m) => m >= min - 1e-4 * span && m <= max + 1e-4 * span) && (field !== 'fitness' || (min >= 0 && max <= 1)),
+    help: await page.textContent('#overlay-help') });
+  }
+  check('T_s, rh_s, theta, S and G overlays: a range over the land that holds the stats\' per-geology means', fields.every((f) => f.ok),
+    fields.map((f) => `${f.field} ${f.min.toPrecision(4)}..${f.max.toPrecision(4)}${f.ok ? '' : ` BAD (${f.min}..${f.max}, means ${f.means.join(' ')})`}`).join(', '));
+  await overlayHooks('none');
+  tints.none = await tint(page);
+  // T_s is linear in S on this run (the soil is wet: the energy balance's other terms are the same
+  // on every cell), so the two ramps look alike, and 60 days' mosses cover so little (0.05 %) that
+  // coverage looks like none; every other pair differs. (rh_s may be 1 on every cell: one colour.)
+  const names = Object.keys(tints);
+  const apart = (a, b) => Math.max(...a.mean.map((x, i) => Math.abs(x - b.mean[i])));
+  let closest = { d: Infinity };
+  for (let i = 0; i < names.length; ++i) {
+    for (let j = i + 1; j < names.length; ++j) {
+      if (`${names[i]}/${names[j]}` === 'irradiance/T_s' || `${names[i]}/${names[j]}` === 'coverage/none') continue;
+      const d = apart(tints[names[i]], tints[names[j]]);
+      if (d < closest.d) closest = { d, pair: `${names[i]}/${names[j]}` };
+    }
+  }
+  check('each overlay tints the land its own way (mean colours apart; S/T_s and coverage/none aside)', closest.d > 0.5,
+    `closest pair ${closest.pair} ${closest.d.toFixed(2)}; ${names.map((n) => `${n} ${tints[n].mean.map((x) => x.toFixed(0)).join('/')}`).join(', ')}`);
+  const ph = await overlayHooks('photons');
+  const photonTint = await tint(page);
+  await saveCanvasPng(page, 'moss-photons.png');
+  const depths = stats ? stats.photons_last_day.stored_by_depth : [];
+  const direct = depths[0] ?? NaN, bounced = depths.slice(1).reduce((a, b) => a + b, 0);
+  check('photon points: the last day\'s stored photons, direct and bounced as the stats count them by depth',
+    Number(ph.photonsDirect) === direct && Number(ph.photonsBounced) === bounced && bounced > 0,
+    `page ${ph.photonsDirect} direct + ${ph.photonsBounced} bounced, stats ${direct} + ${bounced}`);
+  check('photon points drawn in two colours (yellow direct, blue bounced)', photonTint.yellow > 0.0005 && photonTint.blue > 0.00005 &&
+    tints.coverage.yellow < photonTint.yellow, `yellow ${(photonTint.yellow * 100).toFixed(3)}%, blue ${(photonTint.blue * 100).toFixed(3)}% (coverage view yellow ${(tints.coverage.yellow * 100).toFixed(3)}%)`);
   await page.selectOption('#overlay', 'coverage');
 
   // 4. A bad value: days -1 through the panel is a line beside Days, and the page keeps working.

@@ -141,7 +141,7 @@ export class MossLab {
   hash(): string;
   stateJson(): string;
   boundsJson(): string;
-  /** "land": positions, normals, coverage, irradiance, geology; "mosses": positions, normals, species, birth, death, cell, on_moss. */
+  /** "land": positions, normals, coverage, irradiance, geology, T_s, rh_s, theta, fitness; "mosses": positions, normals, species, birth, death, cell, on_moss; "photons": positions, depth (the last day's). */
   buffers(group: string): BufferViews;
   delete(): void;
 }

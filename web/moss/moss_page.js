@@ -5,8 +5,10 @@
 // land tinted by an overlay and every moss as a tuft (moss_renderer.js), and replays the run day
 // by day with the day scrubber and Play (nothing regrows: every moss comes with its birth and
 // death day). Growth runs in the worker (web/worker/moss_handler.js).
+// Charts the population per species by day with a marker on the day shown (moss_chart.js) and
+// downloads the stats (.json, as `niwa moss grow --stats`) and the days as CSV made from them.
 // Does not: parse or check states (the core does; its one line is shown beside its field),
-// export (.glb, moss.json), compare two runs, chart the population, or draw directly.
+// export (.glb, moss.json), compare two runs, or draw directly.
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { Frame } from '../gl/frame.js';
 import { OrbitCamera } from '../gl/orbit_camera.js';
@@ -15,17 +17,21 @@ import { DEFAULT_SUNS } from '../gl/sun.js';
 import { ParamPanel } from '../shell/param_panel.js';
 import { StepScrubber } from '../shell/step_scrubber.js';
 import { StudyController, numberOr } from '../shell/study_controller.js';
-import { Notices, copyLink, mountStudyNav } from '../shell/study_page.js';
+import { Notices, copyLink, download, mountStudyNav } from '../shell/study_page.js';
 import { setHooks } from '../shell/test_hooks.js';
+import { PopulationChart, populationCsv } from './moss_chart.js';
 import { MossRenderer } from './moss_renderer.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
   canvas: $('view'), stats: $('stats'), progress: $('progress'), scene: $('scene'), sceneHelp: $('scene-help'),
   preset: $('preset'), presetHelp: $('preset-help'), days: $('days'), rngSeed: $('rng-seed'), reset: $('reset'),
-  overlay: $('overlay'), resetView: $('reset-view'), copyLink: $('copy-link'), shareStatus: $('share-status'),
+  overlay: $('overlay'), overlayHelp: $('overlay-help'), resetView: $('reset-view'), copyLink: $('copy-link'), shareStatus: $('share-status'),
   params: $('params'), play: $('play'), day: $('day'), dayText: $('day-text'), cancel: $('cancel'),
+  downloadStats: $('download-stats'), downloadCsv: $('download-csv'),
 };
+const chart = new PopulationChart($('population-chart'), $('population-legend'));
+let lastStats = null;  // the stats of the run shown (the downloads' source)
 mountStudyNav($('studies'), 'moss');
 
 const notices = new Notices($('notice'), ['webgl', 'error', 'hash']);
@@ -54,7 +60,12 @@ let lastGoodHash = null;
 // a few seconds in the page (the CLI's default is 300 days at 8192 photons: about 30 s).
 const OPENING = { preset: 'nomura2010', scene: 'thesis', days: 60, seed: 1, params: { photons: 4096 } };
 const OPENING_HASH = '#preset=nomura2010&days=60&photons=4096';
-const OVERLAYS = { none: 0, coverage: 1, irradiance: 2 };
+// What an overlay's ramp shows: its field's name and unit (dark blue at the minimum, pale yellow
+// at the maximum over the land).
+const FIELD_TEXT = {
+  irradiance: ['irradiance S', ' W/m²'], T_s: ['T_s', ' K'], rh_s: ['rh_s', ''], theta: ['theta', ''], fitness: ['best-species G', ''],
+};
+const fmt = (x) => Number(Number(x).toPrecision(4));
 
 // ---------------------------------------------------------------- rendering
 const camera = new OrbitCamera();
@@ -81,7 +92,8 @@ const scrubber = new StepScrubber({ range: ui.day, text: ui.dayText, play: ui.pl
   const alive = renderer ? renderer.aliveOn(k) : { total: 0, bySpecies: [0, 0, 0] };
   const [g, h, s] = alive.bySpecies;
   ui.dayText.textContent = `day ${k} of ${lastDay} · ${alive.total} mosses (${g} gingoke, ${h} haigoke, ${s} sugigoke)`;
-  setHooks({ dayShown: k, mossesShown: alive.total, coverageShown: (renderer?.coverageShown ?? 0).toFixed(6) });
+  const marked = chart.mark(k);
+  setHooks({ dayShown: k, chartDay: marked, mossesShown: alive.total, coverageShown: (renderer?.coverageShown ?? 0).toFixed(6) });
   requestFrame();
 }, { interval: 120 });
 
@@ -91,7 +103,7 @@ async function startRenderer() {
       frame = new Frame(ui.canvas, { camera, sun: DEFAULT_SUNS.ivy, ground: false, fit: true, request: () => loop.request(), what: 'the moss' });
       await frame.init();
       renderer = await frame.addLayer(new MossRenderer(frame));
-      renderer.setOverlay(OVERLAYS[ui.overlay.value] ?? 1);
+      showOverlay();
       return frame;
     }, {
       canvas: ui.canvas, camera,
@@ -193,9 +205,12 @@ worker.on('moss', (msg) => {
   lastGoodHash = msg.hash;
   applyState(msg.state);
   const s = msg.stats;
+  lastStats = s;
   lastDay = msg.bounds.days;
+  chart.set(s);
   if (renderer) {
     renderer.setMoss(msg.buffers, msg.bounds, Number(msg.state.params.moss_size) || 0.01);
+    showOverlay();
     setHooks({ coverageReplayError: renderer.coverageReplayError });
     installedSerial = mossSerial + 1;
     if (frameNext) {
@@ -233,9 +248,25 @@ ui.preset.addEventListener('change', () => {
 ui.days.addEventListener('input', () => scheduleUpdate());
 ui.rngSeed.addEventListener('input', () => scheduleUpdate());
 ui.reset.addEventListener('click', () => sendUpdate(true, true));
+// The overlay chosen, on the land, with a line saying what its colours mean.
+function showOverlay() {
+  const shown = renderer ? renderer.setOverlay(ui.overlay.value) : { overlay: ui.overlay.value };
+  let text = '';
+  if (shown.field) {
+    const [name, unit] = FIELD_TEXT[shown.field];
+    text = shown.min === shown.max ? `${name} of the last day: ${fmt(shown.min)}${unit} on every cell`
+      : `${name} of the last day: dark blue ${fmt(shown.min)}${unit} to pale yellow ${fmt(shown.max)}${unit}`;
+  } else if (shown.overlay === 'photons') {
+    text = `The last day's stored photons: ${shown.direct} direct (yellow), ${shown.bounced} bounced (blue).`;
+  } else if (shown.overlay === 'coverage') {
+    text = 'Green where mosses cover the land on the day shown.';
+  }
+  ui.overlayHelp.textContent = text;
+  setHooks({ overlay: shown.overlay, overlayField: shown.field || '', overlayMin: shown.min ?? '', overlayMax: shown.max ?? '',
+    photonsDirect: shown.direct ?? '', photonsBounced: shown.bounced ?? '' });
+}
 ui.overlay.addEventListener('change', () => {
-  renderer?.setOverlay(OVERLAYS[ui.overlay.value] ?? 1);
-  setHooks({ overlay: ui.overlay.value });
+  showOverlay();
   requestFrame();
 });
 ui.resetView.addEventListener('click', () => {
@@ -243,6 +274,14 @@ ui.resetView.addEventListener('click', () => {
   requestFrame();
 });
 ui.copyLink.addEventListener('click', () => copyLink(ui.shareStatus));
+// Downloads of the run shown: its stats as the CLI's --stats writes them, and its days as CSV.
+const baseName = () => `moss-${lastStats?.scene || 'run'}-${lastDay}d`;
+ui.downloadStats.addEventListener('click', () => {
+  if (lastStats) download(new Blob([`${JSON.stringify(lastStats)}\n`], { type: 'application/json' }), `${baseName()}-stats.json`, ui.shareStatus);
+});
+ui.downloadCsv.addEventListener('click', () => {
+  if (lastStats) download(new Blob([populationCsv(lastStats)], { type: 'text/csv' }), `${baseName()}-days.csv`, ui.shareStatus);
+});
 
 // ---------------------------------------------------------------- start
 setHooks({ status: 'loading' });

@@ -2,8 +2,9 @@
 // client holds the last run. An 'update' grows the state ({preset, scene, days, seed, params})
 // to its days, posting progress after every day (at most every 100 ms), then sends the stats (the
 // CLI's `niwa moss grow --stats`), the resolved state and hash, the bounds, and two buffer groups:
-// the land (three vertices per soil cell with its coverage, irradiance and geology) and every moss ever
-// alive with its birth and death day (the page's day scrubber replays them without a new grow);
+// the land (three vertices per soil cell with its coverage, geology and last day's irradiance,
+// T_s, rh_s, theta and best-species fitness), every moss ever alive with its birth and death day
+// (the page's day scrubber replays them without a new grow) and the last day's photon points;
 // copied once out of the WASM heap into buffers the page gave back ('recycle') where they fit
 // (web/worker/transfer.js TransferPool), then transferred, with the reply's bufferCounts.
 // Table, presets and hash: the generic tableJson / presetsJson / decodeHash of the compose
@@ -56,7 +57,7 @@ export function createHandler(Module, ctx) {
     const transfer = [];
     const counts = { reused: 0, fresh: 0, dropped: 0 };
     const buffers = {};
-    for (const group of ['land', 'mosses']) buffers[group] = returned.take(client, group, entry.lab.buffers(group), transfer, counts);
+    for (const group of ['land', 'mosses', 'photons']) buffers[group] = returned.take(client, group, entry.lab.buffers(group), transfer, counts);
     post({
       type: 'moss', id, client, stats, hash: entry.lab.hash(), state: JSON.parse(entry.lab.stateJson()),
       bounds: JSON.parse(entry.lab.boundsJson()), buffers, bufferCounts: counts, growMs, wallMs: performance.now() - t0,
