@@ -9,13 +9,17 @@
 // the stats .json and days .csv downloads hold the stats and their population by day. The land
 // overlays of the last day (T_s, rh_s, theta, best-species G) span ranges that hold the stats'
 // per-geology means and tint the land differently; the photon points are the last day's stored
-// photons (direct and bounced, as the stats count them by depth), drawn yellow and blue.
+// photons (direct and bounced, as the stats count them by depth), drawn yellow and blue. A mesh
+// dropped on the view (materials.glb) or picked with the file input (rock1.glb, Draco) grows mosses
+// whose stats equal `niwa moss grow --mesh FILE --url HASH --stats`; bad files (not glTF, empty,
+// truncated, a .txt) are one line beside the drop control, the run shown stays, and a scene picked
+// after them grows.
 // Screenshots: build/artifacts/moss-*.png.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import {
-  ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, watchPage,
+  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, watchPage,
 } from './harness.mjs';
 
 const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => k !== 'ms' && !k.startsWith('ms_')));
@@ -33,17 +37,18 @@ async function waitMoss(page, serialAbove) {
   return page.evaluate(() => ({ ...document.documentElement.dataset }));
 }
 
-function compareWithNative(name, data) {
+function compareWithNative(name, data, extra = []) {
   let native = null;
+  const args = ['moss', 'grow', ...extra, '--url', data.hash, '--stats'];
   try {
-    native = JSON.parse(execFileSync(NATIVE, ['moss', 'grow', '--url', data.hash, '--stats'], { encoding: 'utf8' }).trim().split('\n').pop());
+    native = JSON.parse(execFileSync(NATIVE, args, { encoding: 'utf8' }).trim().split('\n').pop());
   } catch (e) {
-    check(`${name}: native CLI runs`, false, `${NATIVE} moss grow --url ${data.hash}: ${e.message.split('\n')[0]}`);
+    check(`${name}: native CLI runs`, false, `${NATIVE} ${args.join(' ')}: ${e.message.split('\n')[0]}`);
     return null;
   }
   const web = JSON.parse(data.stats);
   const ok = same(web, native);
-  check(`${name}: page stats == native \`niwa moss grow --url ${data.hash} --stats\` (ms* aside)`, ok,
+  check(`${name}: page stats == native \`niwa ${args.map((a) => a.replace(ROOT + '/', '')).join(' ')}\` (ms* aside)`, ok,
     ok ? `${web.mosses.total} mosses, ${web.population.by_day.length} days of population`
       : `web ${JSON.stringify(withoutMs(web)).slice(0, 300)} native ${JSON.stringify(withoutMs(native)).slice(0, 300)}`);
   return web;
@@ -271,6 +276,7 @@ await runBrowserTest(async (server, browser) => {
   serial = Number(data.mossSerial);
   await page.selectOption('#scene', 'plane');
   data = await waitMoss(page, serial);
+  await page.evaluate(() => { document.getElementById('share-status').textContent = ''; });  // the downloads' "Saved" line
   await page.click('#copy-link');
   await page.waitForFunction(() => document.getElementById('share-status').textContent !== '', null, { timeout: TIMEOUT });
   const status = await page.textContent('#share-status');
@@ -284,6 +290,64 @@ await runBrowserTest(async (server, browser) => {
     `${data2.status} ${data2.hash} ${data2.mosses} mosses vs ${data.mosses}`);
   await saveCanvasPng(page2, 'moss-plane.png');
   await page2.close();
+
+  // 7. A dropped mesh: the moss grows on it as `niwa moss grow --mesh FILE` does (the stats agree),
+  // by drop on the view (materials.glb: three geologies) and by the file input (rock1.glb: Draco).
+  serial = Number(data.mossSerial);
+  await page.fill('#days', '20');
+  data = await waitMoss(page, serial);
+  const dropFile = async (name, bytes) => page.evaluate(async ({ name: n, b64 }) => {
+    const raw = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
+    const transfer = new DataTransfer();
+    transfer.items.add(new File([raw], n));
+    const stage = document.getElementById('stage');
+    stage.dispatchEvent(new DragEvent('dragenter', { dataTransfer: transfer, bubbles: true }));
+    stage.dispatchEvent(new DragEvent('drop', { dataTransfer: transfer, bubbles: true }));
+  }, { name, b64: Buffer.from(bytes).toString('base64') });
+  const meshes = path.join(ROOT, 'tests/data/meshes');
+  serial = Number(data.mossSerial);
+  await dropFile('materials.glb', fs.readFileSync(path.join(meshes, 'materials.glb')));
+  data = await waitMoss(page, serial);
+  const meshStats = data.stats ? JSON.parse(data.stats) : {};
+  check('a dropped materials.glb grows mosses on it (three geologies from its materials)', data.status === 'ready' && data.sceneShown === 'mesh:materials.glb' &&
+    meshStats.cells && Object.values(meshStats.cells.by_geology).every((n) => n > 0) && Number(data.mosses) > 0,
+    `${data.status} ${data.sceneShown} cells ${JSON.stringify(meshStats.cells?.by_geology)} ${data.mosses} mosses ${data.error || data.meshError || ''}`);
+  compareWithNative('materials.glb', data, ['--mesh', path.join(meshes, 'materials.glb')]);
+  const meshNotice = await page.textContent('#notice');
+  check('the notice says a dropped mesh is not part of the link', meshNotice.includes('not part of the link'), meshNotice);
+  await saveCanvasPng(page, 'moss-materials-glb.png');
+  serial = Number(data.mossSerial);
+  await page.setInputFiles('#mesh-file', path.join(meshes, 'rock1.glb'));
+  data = await waitMoss(page, serial);
+  check('rock1.glb (Draco) picked with the file input grows mosses on it', data.status === 'ready' && data.sceneShown === 'mesh:rock1.glb' && Number(data.mosses) > 0,
+    `${data.status} ${data.sceneShown} ${data.mosses} mosses ${data.error || data.meshError || ''}`);
+  compareWithNative('rock1.glb', data, ['--mesh', path.join(meshes, 'rock1.glb')]);
+  await saveCanvasPng(page, 'moss-rock1-glb.png');
+
+  // 8. Bad files: one line beside the drop control, the run shown stays, and the page keeps working.
+  serial = Number(data.mossSerial);
+  const bad = [];
+  for (const [name, bytes] of [['not_gltf.glb', fs.readFileSync(path.join(meshes, 'not_gltf.glb'))], ['empty.glb', fs.readFileSync(path.join(meshes, 'empty.glb'))],
+    ['truncated.glb', fs.readFileSync(path.join(meshes, 'materials.glb')).subarray(0, 200)], ['notes.txt', Buffer.from('moss')]]) {
+    await page.evaluate(() => { delete document.documentElement.dataset.meshError; });
+    await dropFile(name, bytes);
+    await page.waitForFunction(() => (document.documentElement.dataset.meshError || '') !== '', null, { timeout: TIMEOUT });
+    const line = await page.evaluate(() => {
+      const e = document.getElementById('mesh-error');
+      return e.hidden ? '' : e.textContent;
+    });
+    bad.push({ name, line });
+  }
+  await page.locator('#mesh-error').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(ARTIFACTS, 'moss-bad-mesh.png') });
+  data = await page.evaluate(() => ({ ...document.documentElement.dataset }));
+  check('each bad file is one line beside the drop control naming the mesh and the file', bad.every((b) => /^mesh: /.test(b.line) && !b.line.includes('\n') && b.line.includes(b.name)),
+    bad.map((b) => `${b.name}: '${b.line}'`).join(' | ').slice(0, 600));
+  check('after the bad files the rock\'s run is still shown', Number(data.mossSerial) === serial && data.sceneShown === 'mesh:rock1.glb', `${data.mossSerial} ${data.sceneShown}`);
+  await page.selectOption('#scene', 'thesis');
+  data = await waitMoss(page, serial);
+  check('picking a scene after them grows again on the scene', data.status === 'ready' && data.sceneShown === 'thesis' && data.hash.includes('days=20'),
+    `${data.status} ${data.sceneShown} ${data.hash}`);
 
   check('no uncaught error or console error', problems.length === 0, problems.slice(0, 3).join(' | ').slice(0, 400));
   await context.close();

@@ -27,10 +27,15 @@
 //             after n bounces) of every photon the last day stored (MossRun::photon_map()), on
 //             the land and on mosses (figs 4.1/4.2's photon points)
 // Calls: setProgress(fn) (fn(stage, done, total) after every day), grow(stateJson) -> ""/error
-// record, then statsJson() (the CLI's `niwa moss grow --stats`, ms* timing fields included),
-// hash(), stateJson(), boundsJson(), buffers(group). The state JSON: {preset, scene, days, seed,
+// record (on the state's built-in scene), or loadMesh(bytes, name) -> ""/error record (a dropped
+// .glb/.gltf/.obj, Draco already decoded by the page, read as `niwa moss grow --mesh` reads a
+// file: soil_cells.h SceneFromMesh, geology from its materials and colours) then
+// growOnMesh(stateJson) (MossRun::StartOnScene: the stats say scene "mesh" and the file's name;
+// errors about the mesh name the field "mesh"), meshJson() ({name, triangles} or {}); then
+// statsJson() (the CLI's `niwa moss grow --stats`, ms* timing fields included), hash(),
+// stateJson(), boundsJson(), buffers(group). The state JSON: {preset, scene, days, seed,
 // params: {row: value}} (params over the preset's values).
-// Does not: export (.glb, moss.json), load a mesh, keep more than one run, or tell a moss that
+// Does not: export (.glb, moss.json), keep more than one run or mesh, or tell a moss that
 // died and one with the same place, species and birth day apart (the run never makes two).
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
@@ -46,6 +51,8 @@
 
 #include "buffers.h"
 #include "error_record.h"
+#include "geom/mesh_metrics.h"
+#include "io/mesh_reader.h"
 #include "moss/fitness.h"
 #include "moss/moss_params.h"
 #include "moss/moss_run.h"
@@ -89,11 +96,42 @@ class MossLab {
 
   // Starts the run of the state (JSON, above) and grows it to its days, recording every moss's
   // life: "" or the error record (the last run is kept on error).
-  std::string grow(const std::string& state_json) {
+  std::string grow(const std::string& state_json) { return Grow(state_json, false); }
+  // The same on the mesh loadMesh read (the state's scene is not read).
+  std::string growOnMesh(const std::string& state_json) { return Grow(state_json, true); }
+
+  // A dropped mesh file's bytes: "" with the mesh kept for growOnMesh, or the error record
+  // (field "mesh"; the mesh loaded before is kept).
+  std::string loadMesh(const std::string& bytes, const std::string& name) {
+    io::MeshReadStats read;
+    Result<geom::TriMesh> mesh = io::ReadMeshBytes(bytes, name, &read);
+    if (!mesh.ok()) return ErrorText(mesh.status().Within("mesh"));
+    Status valid = geom::ValidateMesh(*mesh, name);
+    if (!valid.ok()) return ErrorText(valid.Within("mesh"));
+    mesh_scene_.emplace(moss::SceneFromMesh(*mesh, read.materials, name));
+    mesh_name_ = name;
+    mesh_triangles_ = mesh->triangle_count();
+    return "";
+  }
+
+  std::string meshJson() const {
+    ordered_json j = ordered_json::object();
+    if (mesh_scene_) {
+      j["name"] = mesh_name_;
+      j["triangles"] = mesh_triangles_;
+    }
+    return JsonText(j);
+  }
+
+ private:
+  std::string Grow(const std::string& state_json, bool on_mesh) {
     moss::MossState state;
     Status s = moss::ApplyMossStateJson(state_json, &state);
     if (!s.ok()) return ErrorText(s);
-    Result<moss::MossRun> started = moss::MossRun::Start(state, PageBudget());
+    if (on_mesh && !mesh_scene_) return ErrorText(Status::Error("mesh", "no mesh is loaded"));
+    Result<moss::MossRun> started =
+        on_mesh ? moss::MossRun::StartOnScene(state, *mesh_scene_, PageBudget(), mesh_name_)
+                : moss::MossRun::Start(state, PageBudget());
     if (!started.ok()) return ErrorText(started.status());
     moss::MossRun run = std::move(started).value();
     Lives lives;
@@ -112,6 +150,8 @@ class MossLab {
     return "";
   }
 
+
+ public:
   std::string statsJson() const { return run_ ? run_->StatsJson() : "{}"; }
   std::string hash() const { return run_ ? run_->Hash("") : ""; }
   std::string stateJson() const { return run_ ? JsonText(MossStateObject(state_)) : "{}"; }
@@ -275,6 +315,9 @@ class MossLab {
 
   std::optional<moss::MossRun> run_;
   moss::MossState state_;
+  std::optional<moss::MossScene> mesh_scene_;
+  std::string mesh_name_;
+  std::size_t mesh_triangles_ = 0;
   std::vector<float> land_positions_, land_normals_, land_coverage_, land_irradiance_,
       land_geology_, land_T_s_, land_rh_s_, land_theta_, land_fitness_;
   std::vector<float> photon_positions_, photon_depth_;
@@ -293,6 +336,9 @@ EMSCRIPTEN_BINDINGS(niwa_moss) {
       .constructor<>()
       .function("setProgress", &niwa::MossLab::setProgress)
       .function("grow", &niwa::MossLab::grow)
+      .function("loadMesh", &niwa::MossLab::loadMesh)
+      .function("growOnMesh", &niwa::MossLab::growOnMesh)
+      .function("meshJson", &niwa::MossLab::meshJson)
       .function("statsJson", &niwa::MossLab::statsJson)
       .function("hash", &niwa::MossLab::hash)
       .function("stateJson", &niwa::MossLab::stateJson)

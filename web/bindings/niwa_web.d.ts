@@ -137,6 +137,12 @@ export class MossLab {
   constructor();
   setProgress(fn: ((stage: string, done: number, total: number) => void) | null): void;
   grow(stateJson: string): ErrorText;
+  /** A dropped .glb/.gltf/.obj (Draco decoded): kept for growOnMesh; errors name "mesh". */
+  loadMesh(bytes: string, name: string): ErrorText;
+  /** grow on the mesh loadMesh read (stats: scene "mesh" and its name). */
+  growOnMesh(stateJson: string): ErrorText;
+  /** {name, triangles} of the loaded mesh, or {}. */
+  meshJson(): string;
   statsJson(): string;
   hash(): string;
   stateJson(): string;

@@ -1,7 +1,9 @@
 // The moss study's page (public/moss.html, main thread; Nomura 2010): opens with a small run
 // grown on the thesis scene (60 days, 4096 photons a day: a few seconds), builds the panel from
 // the moss table, keeps the state in location.hash through the moss hash codec (the text `niwa
-// moss grow --url` reads), picks a built-in scene, a preset, the days and the RNG seed, shows the
+// moss grow --url` reads), picks a built-in scene or takes a dropped .glb/.gltf/.obj (read as
+// `niwa moss grow --mesh` reads it; Draco decoded here by web/mesh/mesh_file.js; not part of the
+// link; a bad file is one line beside the drop control), a preset, the days and the RNG seed, shows the
 // land tinted by an overlay and every moss as a tuft (moss_renderer.js), and replays the run day
 // by day with the day scrubber and Play (nothing regrows: every moss comes with its birth and
 // death day). Growth runs in the worker (web/worker/moss_handler.js).
@@ -18,6 +20,8 @@ import { ParamPanel } from '../shell/param_panel.js';
 import { StepScrubber } from '../shell/step_scrubber.js';
 import { StudyController, numberOr } from '../shell/study_controller.js';
 import { Notices, copyLink, download, mountStudyNav } from '../shell/study_page.js';
+import { FileDrop } from '../shell/file_drop.js';
+import { meshFileBytes } from '../mesh/mesh_file.js';
 import { setHooks } from '../shell/test_hooks.js';
 import { PopulationChart, populationCsv } from './moss_chart.js';
 import { MossRenderer } from './moss_renderer.js';
@@ -28,23 +32,35 @@ const ui = {
   preset: $('preset'), presetHelp: $('preset-help'), days: $('days'), rngSeed: $('rng-seed'), reset: $('reset'),
   overlay: $('overlay'), overlayHelp: $('overlay-help'), resetView: $('reset-view'), copyLink: $('copy-link'), shareStatus: $('share-status'),
   params: $('params'), play: $('play'), day: $('day'), dayText: $('day-text'), cancel: $('cancel'),
-  downloadStats: $('download-stats'), downloadCsv: $('download-csv'),
+  downloadStats: $('download-stats'), downloadCsv: $('download-csv'), meshFile: $('mesh-file'), meshError: $('mesh-error'),
 };
 const chart = new PopulationChart($('population-chart'), $('population-legend'));
 let lastStats = null;  // the stats of the run shown (the downloads' source)
 mountStudyNav($('studies'), 'moss');
 
-const notices = new Notices($('notice'), ['webgl', 'error', 'hash']);
+const notices = new Notices($('notice'), ['webgl', 'error', 'hash', 'mesh']);
 // Errors beside the controls outside the panel (the panel's rows find their own).
-const BASIC_FIELDS = { scene: 'scene-error', preset: 'preset-error', days: 'days-error', seed: 'rng-seed-error' };
+const BASIC_FIELDS = { scene: 'scene-error', mesh: 'mesh-error', preset: 'preset-error', days: 'days-error', seed: 'rng-seed-error' };
 const controller = new StudyController({
   study: 'moss', notices, ui, fields: BASIC_FIELDS, panel: () => panel, state: () => currentState(false),
-  onCancel: () => 'cancelled: back to the last finished run',
+  onCancel: () => {
+    if (!useMesh) return 'cancelled: back to the last finished run';
+    useMesh = false;  // the new worker has no mesh
+    showHelp();
+    return 'cancelled: the dropped mesh is dropped; back to the last finished run on a built-in scene';
+  },
   onRestart: () => {
     restarting = true;
     worker.request('init', { hash: '' }, { done: ['ready'] });
   },
   onError: (msg, when) => {
+    // A dropped file's read failed: its line beside the drop control; the run shown stays.
+    if (when === 'before' && meshRequest && msg.id === meshRequest) {
+      meshRequest = 0;
+      showMeshError(msg.message);
+      ui.progress.textContent = '';
+      return true;
+    }
     if (when === 'after') {
       ui.days.setAttribute('aria-invalid', msg.field === 'days' ? 'true' : 'false');
       ui.rngSeed.setAttribute('aria-invalid', msg.field === 'seed' ? 'true' : 'false');
@@ -55,6 +71,9 @@ const controller = new StudyController({
 const { worker } = controller;
 let restarting = false;
 let lastGoodHash = null;
+let useMesh = false;   // grow on the dropped mesh, not a built-in scene
+let meshInfo = null;   // {name, triangles} of the dropped mesh
+let meshRequest = 0;   // the id of the 'mesh' request in flight
 
 // The opening run when the link holds no state: a result without input, small enough to grow in
 // a few seconds in the page (the CLI's default is 300 days at 8192 photons: about 30 s).
@@ -121,7 +140,7 @@ function frameLand() {
   if (!b) return;
   camera.reset(b);
   camera.pitch = 0.55;
-  camera.frame(b, 0.9);
+  camera.frame(b, useMesh ? 1.1 : 0.9);  // a dropped mesh whole; a scene a little closer
 }
 
 // ---------------------------------------------------------------- state
@@ -150,13 +169,15 @@ function applyState(state) {
 
 function showHelp() {
   const scene = scenes.find((s) => s.name === ui.scene.value);
-  ui.sceneHelp.textContent = scene ? `${scene.description} (${scene.cells} soil cells)` : '';
+  ui.sceneHelp.textContent = useMesh && meshInfo ? `Growing on the dropped mesh ${meshInfo.name} (${meshInfo.triangles} triangles); pick a scene to go back.`
+    : scene ? `${scene.description} (${scene.cells} soil cells)` : '';
+  notices.set('mesh', useMesh && meshInfo ? `Growing on the dropped mesh ${meshInfo.name}; a dropped mesh is not part of the link.` : '');
   const preset = presets.find((p) => p.name === ui.preset.value);
   ui.presetHelp.textContent = preset ? preset.source : '';
 }
 
 const sendUpdate = (commit, reset = false, state = null) =>
-  controller.update(commit, { state: state || currentState(reset) }, { done: ['moss'] });
+  controller.update(commit, { state: state || currentState(reset), useMesh }, { done: ['moss'] });
 const scheduleUpdate = (stage = 'grow') => controller.schedule(() => sendUpdate(true), stage);
 
 // ---------------------------------------------------------------- worker replies
@@ -226,17 +247,59 @@ worker.on('moss', (msg) => {
   controller.showWork(false);
   ui.progress.textContent = '';
   const m = s.mosses;
-  ui.stats.textContent = `${s.scene || ui.scene.value} · ${lastDay} days · ${m.total} mosses (${m.by_species.gingoke} gingoke, ${m.by_species.haigoke} haigoke, ${m.by_species.sugigoke} sugigoke) · ${m.on_mosses} on mosses · ${msg.bounds.mosses_ever} ever · ${(msg.growMs / 1000).toFixed(1)} s`;
+  ui.stats.textContent = `${s.scene === 'mesh' ? s.mesh : s.scene || ui.scene.value} · ${lastDay} days · ${m.total} mosses (${m.by_species.gingoke} gingoke, ${m.by_species.haigoke} haigoke, ${m.by_species.sugigoke} sugigoke) · ${m.on_mosses} on mosses · ${msg.bounds.mosses_ever} ever · ${(msg.growMs / 1000).toFixed(1)} s`;
   setHooks({
     status: 'ready', error: '', mossSerial, mosses: m.total, mossesEver: msg.bounds.mosses_ever, days: lastDay,
-    stats: JSON.stringify(s), hash: msg.hash, wallMs: msg.wallMs.toFixed(1), growMs: msg.growMs.toFixed(1),
+    stats: JSON.stringify(s), hash: msg.hash, sceneShown: s.scene === 'mesh' ? `mesh:${s.mesh}` : s.scene, wallMs: msg.wallMs.toFixed(1), growMs: msg.growMs.toFixed(1),
     buffersReused: msg.bufferCounts?.reused ?? '', buffersFresh: msg.bufferCounts?.fresh ?? '',
   });
   requestFrame();
 });
 
+// ---------------------------------------------------------------- dropped meshes
+// One line beside the drop control (a refused name, a file the core cannot read, a run the mesh
+// cannot start); '' clears it.
+function showMeshError(line) {
+  ui.meshError.textContent = line;
+  ui.meshError.hidden = !line;
+  setHooks({ meshError: line });
+}
+
+async function loadMeshFile(file) {
+  showMeshError('');
+  ui.progress.textContent = `reading ${file.name}`;
+  let bytes;
+  try {
+    bytes = await meshFileBytes(file);
+  } catch (e) {
+    ui.progress.textContent = '';
+    showMeshError(`mesh: ${String(file.name).slice(0, 60)}: ${e.message}`);
+    return;
+  }
+  const request = worker.request('mesh', { name: file.name, bytes: bytes.buffer }, { group: 'mesh', done: ['meshLoaded'] });
+  meshRequest = request.id;
+}
+
+worker.on('meshLoaded', (msg) => {
+  if (!meshRequest || msg.id !== meshRequest) return;
+  meshRequest = 0;
+  meshInfo = msg.mesh;
+  useMesh = true;
+  showHelp();
+  frameNext = true;
+  setHooks({ meshName: meshInfo.name, meshTriangles: meshInfo.triangles });
+  sendUpdate(false);
+});
+
+new FileDrop({
+  target: $('stage'), input: ui.meshFile, accept: ['.glb', '.gltf', '.obj'],
+  onFiles: (files) => loadMeshFile(files[0]),
+  onRefuse: (line) => showMeshError(`mesh: ${line}`),
+});
+
 // ---------------------------------------------------------------- controls
 ui.scene.addEventListener('change', () => {
+  useMesh = false;
   showHelp();
   frameNext = true;
   sendUpdate(true);

@@ -160,7 +160,7 @@ export class MossRenderer extends StudyLayer {
     gl.bindVertexArray(null);
     this.photons = { vao, buffers: photonBuffers, count: depth.length, direct, bounced: depth.length - direct };
     const ext = [0, 1, 2].map((k) => bounds.max[k] - bounds.min[k]);
-    const extent = Math.max(ext[0], ext[2], 1e-9);
+    const extent = Math.max(ext[0], ext[1], ext[2], 1e-9);
     const scale = this.fitView ? VIEW_SIZE / extent : this.unitScale;
     const cx = (bounds.min[0] + bounds.max[0]) / 2, cz = (bounds.min[2] + bounds.max[2]) / 2;
     this.model = [cx, bounds.min[1], cz, scale];

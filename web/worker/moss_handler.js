@@ -9,6 +9,9 @@
 // (web/worker/transfer.js TransferPool), then transferred, with the reply's bufferCounts.
 // Table, presets and hash: the generic tableJson / presetsJson / decodeHash of the compose
 // registry (core/compose/studies.cpp, its moss row); the scenes: the moss bindings' mossScenesJson.
+// A dropped mesh ('mesh': bytes, Draco already decoded by the page) is read once into the lab and
+// answered with 'meshLoaded' ({name, triangles}) or an error naming "mesh"; an update with
+// useMesh: true grows on it (MossLab growOnMesh) instead of the state's scene.
 // Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does), or export.
 import { errorOf, errorReply } from './errors.js';
@@ -47,7 +50,8 @@ export function createHandler(Module, ctx) {
     entry.working = id;
     post({ type: 'progress', id, client, stage: 'grow', done: 0, total: 0, text: 'starting the run' });
     const t0 = performance.now();
-    const error = errorOf(entry.lab.grow(JSON.stringify(msg.state || {})));
+    const stateJson = JSON.stringify(msg.state || {});
+    const error = errorOf(msg.useMesh === true ? entry.lab.growOnMesh(stateJson) : entry.lab.grow(stateJson));
     if (error) {
       post(errorReply(error, id, client));
       return;
@@ -64,6 +68,21 @@ export function createHandler(Module, ctx) {
     }, transfer);
   }
 
+  // A dropped mesh: read into the client's lab (the lab keeps its old mesh when a read fails).
+  async function mesh(msg, client) {
+    const { id } = msg;
+    const name = String(msg.name || 'mesh');
+    const entry = labOf(client);
+    post({ type: 'progress', id, client, stage: 'mesh', done: 0, total: 0, text: `reading ${name}` });
+    await nextTask();
+    const error = errorOf(entry.lab.loadMesh(new Uint8Array(msg.bytes || new ArrayBuffer(0)), name));
+    if (error) {
+      post(errorReply(error, id, client));
+      return;
+    }
+    post({ type: 'meshLoaded', id, client, mesh: JSON.parse(entry.lab.meshJson()) });
+  }
+
   // The client went away (web/worker/worker.js 'close'): its lab is deleted and its returned
   // buffers are dropped. Returns what was let go.
   const close = (client) => closeLabSession(labs, returned, client);
@@ -75,6 +94,7 @@ export function createHandler(Module, ctx) {
     messages: {
       decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...decode(String(msg.hash || '')) }),
       update,
+      mesh,
       recycle: (msg, client) => returned.give(client, msg.buffers),
     },
   };
