@@ -8,7 +8,8 @@
 // by day with the day scrubber and Play (nothing regrows: every moss comes with its birth and
 // death day). Growth runs in the worker (web/worker/moss_handler.js).
 // Charts the population per species by day with a marker on the day shown (moss_chart.js) and
-// downloads the stats (.json, as `niwa moss grow --stats`) and the days as CSV made from them.
+// downloads the stats (.json, as `niwa moss grow --stats`) and the days as CSV made from them;
+// offers an embed (<niwa-moss>, public/niwa-moss.js, or the iframe) of the page's hash.
 // Does not: parse or check states (the core does; its one line is shown beside its field),
 // export (.glb, moss.json), compare two runs, or draw directly.
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
@@ -19,7 +20,7 @@ import { DEFAULT_SUNS } from '../gl/sun.js';
 import { ParamPanel } from '../shell/param_panel.js';
 import { StepScrubber } from '../shell/step_scrubber.js';
 import { StudyController, numberOr } from '../shell/study_controller.js';
-import { Notices, copyLink, download, mountStudyNav } from '../shell/study_page.js';
+import { Notices, copyLink, download, mountStudyNav, showEmbedDialog } from '../shell/study_page.js';
 import { FileDrop } from '../shell/file_drop.js';
 import { meshFileBytes } from '../mesh/mesh_file.js';
 import { setHooks } from '../shell/test_hooks.js';
@@ -337,6 +338,11 @@ ui.resetView.addEventListener('click', () => {
   requestFrame();
 });
 ui.copyLink.addEventListener('click', () => copyLink(ui.shareStatus));
+// The embed: <niwa-moss> (public/niwa-moss.js) or an iframe of public/embed.html?study=moss, both
+// with the page's hash (a dropped mesh is not in it).
+$('embed').addEventListener('click', () => {
+  showEmbedDialog({ tag: 'niwa-moss', title: 'Niwa moss', heading: 'Embed this moss', script: 'niwa-moss.js', frame: 'embed.html?study=moss' });
+});
 // Downloads of the run shown: its stats as the CLI's --stats writes them, and its days as CSV.
 const baseName = () => `moss-${lastStats?.scene || 'run'}-${lastDay}d`;
 ui.downloadStats.addEventListener('click', () => {
