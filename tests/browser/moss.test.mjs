@@ -186,8 +186,7 @@ await runBrowserTest(async (server, browser) => {
   // the land its own way; the photon points are the stored photons, yellow and blue.
   const overlayHooks = async (value) => {
     await page.selectOption('#overlay', value);
-    await page.waitForFunction((v) => document.documentElement.dataset.overlay === v, value, { timeout: TIMEOUT });
-    await page.waitForTimeout(400);
+    await page.waitForFunction((v) => document.documentElement.dataset.drawnOverlay === v, value, { timeout: TIMEOUT });
     return page.evaluate(() => ({ ...document.documentElement.dataset }));
   };
   const tints = {};

@@ -10,8 +10,11 @@
 // Charts the population per species by day with a marker on the day shown (moss_chart.js) and
 // downloads the stats (.json, as `niwa moss grow --stats`) and the days as CSV made from them;
 // offers an embed (<niwa-moss>, public/niwa-moss.js, or the iframe) of the page's hash.
+// The A/B view grows a second run beside the first (a second client of the worker, drawn to its
+// right with the same camera, day and overlay): the same state with indirect light switched, or at
+// the other of fig 4.3's temperatures (288.15 / 293.15 K).
 // Does not: parse or check states (the core does; its one line is shown beside its field),
-// export (.glb, moss.json), compare two runs, or draw directly.
+// export (.glb, moss.json), or draw directly.
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { Frame } from '../gl/frame.js';
 import { OrbitCamera } from '../gl/orbit_camera.js';
@@ -31,7 +34,7 @@ const $ = (id) => document.getElementById(id);
 const ui = {
   canvas: $('view'), stats: $('stats'), progress: $('progress'), scene: $('scene'), sceneHelp: $('scene-help'),
   preset: $('preset'), presetHelp: $('preset-help'), days: $('days'), rngSeed: $('rng-seed'), reset: $('reset'),
-  overlay: $('overlay'), overlayHelp: $('overlay-help'), resetView: $('reset-view'), copyLink: $('copy-link'), shareStatus: $('share-status'),
+  overlay: $('overlay'), overlayHelp: $('overlay-help'), compare: $('compare'), compareHelp: $('compare-help'), resetView: $('reset-view'), copyLink: $('copy-link'), shareStatus: $('share-status'),
   params: $('params'), play: $('play'), day: $('day'), dayText: $('day-text'), cancel: $('cancel'),
   downloadStats: $('download-stats'), downloadCsv: $('download-csv'), meshFile: $('mesh-file'), meshError: $('mesh-error'),
 };
@@ -91,6 +94,7 @@ const fmt = (x) => Number(Number(x).toPrecision(4));
 const camera = new OrbitCamera();
 let frame = null;
 let renderer = null;
+let rendererB = null;  // the A/B view's right-hand run
 let mossSerial = 0;
 let installedSerial = 0;
 let shownDay = Infinity;
@@ -100,6 +104,8 @@ const loop = new ProgressiveLoop({
   camera,
   onDrawn: (drawn) => {
     const alive = renderer ? renderer.aliveOn(Number.isFinite(shownDay) ? shownDay : lastDay) : { total: 0 };
+    const aliveB = rendererB?.mosses ? rendererB.aliveOn(Number.isFinite(shownDay) ? shownDay : lastDay).total : '';
+    setHooks({ drawnSerialB: bInstalled, drawnMossesB: aliveB, drawnOverlay: renderer?.overlay ?? '' });
     setHooks({ drawnSerial: installedSerial, drawnDay: Number.isFinite(shownDay) ? shownDay : lastDay, drawnMosses: alive.total, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls });
   },
 });
@@ -109,6 +115,7 @@ const requestFrame = () => loop.request();
 const scrubber = new StepScrubber({ range: ui.day, text: ui.dayText, play: ui.play }, (k) => {
   shownDay = k >= lastDay ? Infinity : k;
   renderer?.setDay(k);
+  rendererB?.setDay(k);
   const alive = renderer ? renderer.aliveOn(k) : { total: 0, bySpecies: [0, 0, 0] };
   const [g, h, s] = alive.bySpecies;
   ui.dayText.textContent = `day ${k} of ${lastDay} · ${alive.total} mosses (${g} gingoke, ${h} haigoke, ${s} sugigoke)`;
@@ -123,6 +130,7 @@ async function startRenderer() {
       frame = new Frame(ui.canvas, { camera, sun: DEFAULT_SUNS.ivy, ground: false, fit: true, request: () => loop.request(), what: 'the moss' });
       await frame.init();
       renderer = await frame.addLayer(new MossRenderer(frame));
+      rendererB = await frame.addLayer(new MossRenderer(frame, { beside: 1.15 }));
       showOverlay();
       return frame;
     }, {
@@ -137,11 +145,13 @@ async function startRenderer() {
 }
 
 function frameLand() {
-  const b = renderer?.bounds();
+  let b = renderer?.bounds();
   if (!b) return;
+  const bB = rendererB?.bounds();
+  if (bB) b = { min: b.min.map((x, i) => Math.min(x, bB.min[i])), max: b.max.map((x, i) => Math.max(x, bB.max[i])) };
   camera.reset(b);
   camera.pitch = 0.55;
-  camera.frame(b, useMesh ? 1.1 : 0.9);  // a dropped mesh whole; a scene a little closer
+  camera.frame(b, useMesh || bB ? 1.1 : 0.9);  // a dropped mesh or the A/B pair whole; a scene a little closer
 }
 
 // ---------------------------------------------------------------- state
@@ -242,6 +252,7 @@ worker.on('moss', (msg) => {
   }
   // The views were used at once (copied to the GPU): they go back for the next grow to fill.
   worker.recycle(msg.buffers);
+  stateA = msg.state;
   controller.grown(msg.hash);
   mossSerial += 1;
   scrubber.reset(lastDay);
@@ -255,6 +266,86 @@ worker.on('moss', (msg) => {
     buffersReused: msg.bufferCounts?.reused ?? '', buffersFresh: msg.bufferCounts?.fresh ?? '',
   });
   requestFrame();
+  growB();
+});
+
+// ---------------------------------------------------------------- the A/B view
+// Run B: run A's resolved state with one row switched (indirect 1 <-> 0; T 288.15 <-> 293.15, any
+// other T going to 293.15), grown by a second client after each run A, on A's scene or mesh.
+const clientB = controller.client('moss-b');
+let stateA = null;
+let bSerial = 0;
+let bInstalled = 0;
+let textB = '';
+let frameB = false;  // frame both runs when B comes (the view was just switched on)
+
+function stateB(a, mode) {
+  const params = { ...a.params };
+  if (mode === 'indirect') params.indirect = Number(params.indirect) === 1 ? 0 : 1;
+  else params.T = Number(params.T) === 293.15 ? 288.15 : 293.15;
+  return { ...a, params };
+}
+
+const sideText = (mode, state) => (mode === 'indirect' ? `indirect ${Number(state.params.indirect) === 1 ? 'on' : 'off'}` : `T ${state.params.T} K`);
+
+function growB() {
+  const mode = ui.compare.value;
+  if (mode === 'off' || !stateA) {
+    rendererB?.clear();
+    showOverlay();
+    textB = '';
+    ui.compareHelp.textContent = '';
+    setHooks({ compare: 'off', hashB: '', statsB: '' });
+    requestFrame();
+    return;
+  }
+  if (useMesh) {  // the second client has no copy of the dropped mesh
+    rendererB?.clear();
+    ui.compareHelp.textContent = 'The A/B view grows on the built-in scenes; pick a scene to compare.';
+    showOverlay();
+    setHooks({ compare: mode, statusB: 'off' });
+    requestFrame();
+    return;
+  }
+  const b = stateB(stateA, mode);
+  ui.compareHelp.textContent = `Left: ${sideText(mode, stateA)}; right: growing with ${sideText(mode, b)}…`;
+  setHooks({ compare: mode, statusB: 'growing' });
+  clientB.request('update', { state: b, useMesh }, { done: ['moss'] });
+}
+
+clientB.on('moss', (msg) => {
+  if (msg.id !== clientB.latestId('update')) return;
+  const mode = ui.compare.value;
+  if (mode === 'off') return;
+  const s = msg.stats;
+  if (rendererB) {
+    rendererB.setMoss(msg.buffers, msg.bounds, Number(msg.state.params.moss_size) || 0.01);
+    showOverlay();
+    rendererB.setDay(Number.isFinite(shownDay) ? shownDay : lastDay);
+    if (frameB) frameLand();
+    frameB = false;
+  }
+  clientB.recycle(msg.buffers);
+  bSerial += 1;
+  bInstalled = bSerial;
+  textB = `${sideText(mode, msg.state)}: ${s.mosses.total} mosses`;
+  ui.compareHelp.textContent = `Left: ${sideText(mode, stateA)}, ${lastStats?.mosses.total ?? 0} mosses; right: ${textB} (day ${lastDay}).`;
+  setHooks({ statusB: 'ready', serialB: bSerial, hashB: msg.hash, statsB: JSON.stringify(s), mossesB: s.mosses.total });
+  requestFrame();
+});
+clientB.on('error', (msg) => {
+  if (msg.id !== clientB.latestId('update')) return;
+  ui.compareHelp.textContent = `Right: ${msg.message}`;
+  setHooks({ statusB: 'error', errorB: msg.message });
+});
+
+ui.compare.addEventListener('change', () => {
+  frameB = true;
+  growB();
+  if (ui.compare.value === 'off') {
+    frameLand();
+    requestFrame();
+  }
 });
 
 // ---------------------------------------------------------------- dropped meshes
@@ -314,12 +405,21 @@ ui.rngSeed.addEventListener('input', () => scheduleUpdate());
 ui.reset.addEventListener('click', () => sendUpdate(true, true));
 // The overlay chosen, on the land, with a line saying what its colours mean.
 function showOverlay() {
-  const shown = renderer ? renderer.setOverlay(ui.overlay.value) : { overlay: ui.overlay.value };
+  rendererB?.setOverlay(ui.overlay.value);
+  renderer?.setOverlay(ui.overlay.value);
+  // With the A/B view both runs share the ramp's ends (the union of their ranges), so the same
+  // colour is the same value on both sides.
+  const ra = renderer?.fieldRange(), rb = rendererB?.fieldRange();
+  const shared = ra && rb ? { min: Math.min(ra.min, rb.min), max: Math.max(ra.max, rb.max) } : null;
+  if (renderer) renderer.sharedRange = shared;
+  if (rendererB) rendererB.sharedRange = shared;
+  const shown = renderer ? renderer.overlayShown() : { overlay: ui.overlay.value };
   let text = '';
   if (shown.field) {
     const [name, unit] = FIELD_TEXT[shown.field];
+    const both = rendererB?.fieldRange() ? ' (both runs)' : '';
     text = shown.min === shown.max ? `${name} of the last day: ${fmt(shown.min)}${unit} on every cell`
-      : `${name} of the last day: dark blue ${fmt(shown.min)}${unit} to pale yellow ${fmt(shown.max)}${unit}`;
+      : `${name} of the last day${both}: dark blue ${fmt(shown.min)}${unit} to pale yellow ${fmt(shown.max)}${unit}`;
   } else if (shown.overlay === 'photons') {
     text = `The last day's stored photons: ${shown.direct} direct (yellow), ${shown.bounced} bounced (blue).`;
   } else if (shown.overlay === 'coverage') {
@@ -330,6 +430,7 @@ function showOverlay() {
     photonsDirect: shown.direct ?? '', photonsBounced: shown.bounced ?? '' });
 }
 ui.overlay.addEventListener('change', () => {
+  setHooks({ drawnOverlay: '' });  // until a frame with it is drawn
   showOverlay();
   requestFrame();
 });

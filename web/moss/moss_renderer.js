@@ -40,10 +40,12 @@ function tuftCorners() {
 }
 
 export class MossRenderer extends StudyLayer {
-  // target: a canvas or a Frame (a layer of it).
-  constructor(target, { unitScale = 1 } = {}) {
+  // target: a canvas or a Frame (a layer of it); beside: draw the land that many widths of it to
+  // the right (+x) of where it stands (the A/B view's right-hand run: 1.15), 0 in place.
+  constructor(target, { unitScale = 1, beside = 0 } = {}) {
     super(target, { what: 'the moss', study: 'ivy' });
     this.unitScale = unitScale;
+    this.beside = beside;
     this.land = null;    // {vao, buffers, count}
     this.mosses = null;  // {vao, buffers, count, life: Float32Array (birth, death pairs)}
     this.model = [0, 0, 0, 1];
@@ -51,6 +53,7 @@ export class MossRenderer extends StudyLayer {
     this.day = Infinity;
     this.overlay = 'coverage';
     this.fields = {};    // name -> {values: Float32Array per vertex, min, max}
+    this.sharedRange = null;  // {min, max}: the ramp's ends shared with another run (the A/B view)
     this.photons = null; // {vao, buffers, count, direct, bounced}
   }
 
@@ -163,10 +166,11 @@ export class MossRenderer extends StudyLayer {
     const extent = Math.max(ext[0], ext[1], ext[2], 1e-9);
     const scale = this.fitView ? VIEW_SIZE / extent : this.unitScale;
     const cx = (bounds.min[0] + bounds.max[0]) / 2, cz = (bounds.min[2] + bounds.max[2]) / 2;
-    this.model = [cx, bounds.min[1], cz, scale];
+    const shift = this.beside * ext[0] * scale;  // view units to the right
+    this.model = [cx - shift / scale, bounds.min[1], cz, scale];
     this.boundsView = {
-      min: [-ext[0] / 2 * scale, 0, -ext[2] / 2 * scale],
-      max: [ext[0] / 2 * scale, ext[1] * scale, ext[2] / 2 * scale],
+      min: [-ext[0] / 2 * scale + shift, 0, -ext[2] / 2 * scale],
+      max: [ext[0] / 2 * scale + shift, ext[1] * scale, ext[2] / 2 * scale],
     };
   }
 
@@ -244,8 +248,19 @@ export class MossRenderer extends StudyLayer {
     const [mode] = OVERLAY_MODES[this.overlay];
     if (mode === 3) return { overlay: this.overlay, direct: this.photons?.direct ?? 0, bounced: this.photons?.bounced ?? 0 };
     if (mode !== 2) return { overlay: this.overlay };
-    const { min, max } = this.#fieldOf(this.overlay);
+    const { min, max } = this.#range();
     return { overlay: this.overlay, field: this.#fieldName(this.overlay), min, max };
+  }
+
+  // The field overlay's own range over this land ({min, max}), or null for other overlays or no land.
+  fieldRange() {
+    if (!this.land || OVERLAY_MODES[this.overlay][0] !== 2) return null;
+    const { min, max } = this.#fieldOf(this.overlay);
+    return { min, max };
+  }
+
+  #range() {
+    return this.sharedRange || this.#fieldOf(this.overlay);
   }
 
   // Mosses alive on the day shown, and by species [gingoke, haigoke, sugigoke].
@@ -268,6 +283,16 @@ export class MossRenderer extends StudyLayer {
     return this.boundsView;
   }
 
+  // Draws nothing until the next setMoss (the A/B view turned off).
+  clear() {
+    this.progress.abort();
+    this.#drop(this.land);
+    this.#drop(this.mosses);
+    this.#drop(this.photons);
+    this.land = this.mosses = this.photons = null;
+    this.boundsView = null;
+  }
+
   // The land, then the tufts, as steps of a frame (web/gl/progressive_frame.js) under `view`.
   layerSteps(view) {
     const gl = this.gl;
@@ -284,7 +309,7 @@ export class MossRenderer extends StudyLayer {
           gl.uniform4fv(p.uniforms.uModel, this.model);
           gl.uniform3fv(p.uniforms.uLightDirection, light);
           const [mode] = OVERLAY_MODES[this.overlay];
-          const { min, max } = this.#fieldOf(this.overlay);
+          const { min, max } = this.#range();
           gl.uniform1i(p.uniforms.uOverlay, mode);
           gl.uniform2f(p.uniforms.uRange, min, max);
           gl.disable(gl.CULL_FACE);
