@@ -250,6 +250,10 @@ await runBrowserTest(async (server, browser) => {
   data = await waitMoss(page, serial);
   check('the page recovers after the bad value', data.status === 'ready' && data.hash.includes('days=20'), `${data.status} ${data.hash} ${data.error || ''}`);
   compareWithNative('days 20', data);
+  // The worker copied the 20-day run into the buffers the page gave back (same scene, fewer mosses):
+  // the land's 9 and the mosses' 7 at least (the photons' 2 when their count fits).
+  check('the second run reuses the returned buffers (land, mosses; photons when they fit)', Number(data.buffersReused) >= 16,
+    `reused ${data.buffersReused}, fresh ${data.buffersFresh}`);
 
   // 4b. A long run shows its days as it grows; Cancel ends it and the last finished run grows again.
   serial = Number(data.mossSerial);
