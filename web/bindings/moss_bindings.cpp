@@ -150,7 +150,6 @@ class MossLab {
     return "";
   }
 
-
  public:
   std::string statsJson() const { return run_ ? run_->StatsJson() : "{}"; }
   std::string hash() const { return run_ ? run_->Hash("") : ""; }
