@@ -104,11 +104,11 @@ await runBrowserTest(async (server, browser) => {
     return d && (d.status === 'ready' || d.status === 'error') && { ...d };
   }, null, { timeout: TIMEOUT, polling: 200 }).then((h) => h.jsonValue());
   check('embed.html#HASH is a <niwa-tree>', treeFrame.status === 'ready' && Number(treeFrame.year) === 5, `${treeFrame.status} year ${treeFrame.year}`);
-  const other = await context.newPage();  // not watched: the missing niwa-moss.js is a 404 on its console
-  await other.goto(`${server.url}embed.html?study=moss#x=1`, { waitUntil: 'load' });
+  const other = await context.newPage();  // not watched: the missing niwa-fern.js is a 404 on its console
+  await other.goto(`${server.url}embed.html?study=fern#x=1`, { waitUntil: 'load' });
   const unknown = await other.waitForFunction(() => document.body.textContent.includes('Unknown'), null, { timeout: TIMEOUT })
     .then(() => other.evaluate(() => document.body.textContent));
-  check('embed.html?study=moss is one line naming it', unknown.includes('Unknown study "moss"'), unknown);
+  check('embed.html?study=fern (no such study) is one line naming it', unknown.includes('Unknown study "fern"'), unknown);
 
   check('no console errors or page errors', problems.length === 0, problems.join(' | '));
 });

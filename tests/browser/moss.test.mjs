@@ -4,12 +4,22 @@
 // (every field but the ms* timings) for the page's own hash; the day scrubber changes the number
 // of mosses drawn, each day's count equal to the stats' population of that day, without a new
 // grow; a bad Days value (-1) and a bad hash value are a notice beside the field and the page
-// keeps working; Copy link gives a link that reopens the same run (same stats). Screenshots:
-// build/artifacts/moss-*.png.
+// keeps working; Copy link gives a link that reopens the same run (same stats). The population
+// chart draws one line per species over the stats' days with its marker on the scrubber's day;
+// the stats .json and days .csv downloads hold the stats and their population by day. The land
+// overlays of the last day (T_s, rh_s, theta, best-species G) span ranges that hold the stats'
+// per-geology means and tint the land differently; the photon points are the last day's stored
+// photons (direct and bounced, as the stats count them by depth), drawn yellow and blue. A mesh
+// dropped on the view (materials.glb) or picked with the file input (rock1.glb, Draco) grows mosses
+// whose stats equal `niwa moss grow --mesh FILE --url HASH --stats`; bad files (not glTF, empty,
+// truncated, a .txt) are one line beside the drop control, the run shown stays, and a scene picked
+// after them grows.
+// Screenshots: build/artifacts/moss-*.png.
 import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
 import path from 'node:path';
 import {
-  ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, watchPage,
+  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, watchPage,
 } from './harness.mjs';
 
 const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => k !== 'ms' && !k.startsWith('ms_')));
@@ -27,17 +37,18 @@ async function waitMoss(page, serialAbove) {
   return page.evaluate(() => ({ ...document.documentElement.dataset }));
 }
 
-function compareWithNative(name, data) {
+function compareWithNative(name, data, extra = []) {
   let native = null;
+  const args = ['moss', 'grow', ...extra, '--url', data.hash, '--stats'];
   try {
-    native = JSON.parse(execFileSync(NATIVE, ['moss', 'grow', '--url', data.hash, '--stats'], { encoding: 'utf8' }).trim().split('\n').pop());
+    native = JSON.parse(execFileSync(NATIVE, args, { encoding: 'utf8' }).trim().split('\n').pop());
   } catch (e) {
-    check(`${name}: native CLI runs`, false, `${NATIVE} moss grow --url ${data.hash}: ${e.message.split('\n')[0]}`);
+    check(`${name}: native CLI runs`, false, `${NATIVE} ${args.join(' ')}: ${e.message.split('\n')[0]}`);
     return null;
   }
   const web = JSON.parse(data.stats);
   const ok = same(web, native);
-  check(`${name}: page stats == native \`niwa moss grow --url ${data.hash} --stats\` (ms* aside)`, ok,
+  check(`${name}: page stats == native \`niwa ${args.map((a) => a.replace(ROOT + '/', '')).join(' ')}\` (ms* aside)`, ok,
     ok ? `${web.mosses.total} mosses, ${web.population.by_day.length} days of population`
       : `web ${JSON.stringify(withoutMs(web)).slice(0, 300)} native ${JSON.stringify(withoutMs(native)).slice(0, 300)}`);
   return web;
@@ -58,9 +69,32 @@ async function looks(page) {
   });
 }
 
+// Mean colour of the canvas and its yellow (direct photon) and blue (bounced photon) pixel shares.
+async function tint(page) {
+  return page.evaluate(() => {
+    const d = window.__niwaCanvasImage('#view').data;
+    let r = 0, g = 0, b = 0, yellow = 0, blue = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      r += d[i]; g += d[i + 1]; b += d[i + 2];
+      if (d[i] > 200 && d[i + 1] > 150 && d[i + 2] < 80) ++yellow;
+      if (d[i + 2] > 180 && d[i] < 90 && d[i + 2] > d[i + 1] + 40) ++blue;
+    }
+    const n = d.length / 4;
+    return { mean: [r / n, g / n, b / n], yellow: yellow / n, blue: blue / n };
+  });
+}
+
+// The text of a download started by clicking `button`.
+async function downloaded(page, button) {
+  const [d] = await Promise.all([page.waitForEvent('download', { timeout: TIMEOUT }), page.click(button)]);
+  const out = path.join(ARTIFACTS, d.suggestedFilename());
+  await d.saveAs(out);
+  return { name: d.suggestedFilename(), text: fs.readFileSync(out, 'utf8') };
+}
+
 const problems = [];
 await runBrowserTest(async (server, browser) => {
-  const context = await newContext(browser, { viewport: { width: 1200, height: 800 }, permissions: ['clipboard-read', 'clipboard-write'] });
+  const context = await newContext(browser, { viewport: { width: 1200, height: 800 }, acceptDownloads: true, permissions: ['clipboard-read', 'clipboard-write'] });
   const page = await context.newPage();
   watchPage(page, problems);
   page.on('request', (r) => {
@@ -89,7 +123,21 @@ await runBrowserTest(async (server, browser) => {
   // 2. The day scrubber: the mosses alive on each day, as the stats' population, no new grow.
   const grows = Number(data.growRequests);
   const byDay = stats ? stats.population.by_day : [];
+  const chart = await page.evaluate(() => [...document.querySelectorAll('#population-chart polyline')].map((l) => ({
+    species: l.dataset.species, points: l.getAttribute('points').trim().split(/\s+/).map((p) => p.split(',').map(Number)),
+  })));
+  const chartOk = stats && chart.length === 3 && chart.map((c) => c.species).join() === stats.population.species.join() &&
+    chart.every((c) => c.points.length === byDay.length);
+  // Each line's heights are its species' counts: the day of the largest count is the highest point (smallest y).
+  const peaksOk = chartOk && chart.every((c, s) => {
+    const counts = byDay.map((d) => d[s]);
+    const top = Math.min(...c.points.map((p) => p[1]));
+    return c.points.every((p, k) => (counts[k] === Math.max(...counts)) === (p[1] === top));
+  });
+  check('the population chart: a line per species over every day of the stats, highest where the count is', chartOk && peaksOk,
+    chart.map((c) => `${c.species} ${c.points.length} points`).join(', '));
   const shown = [];
+  const marks = [];
   for (const day of [0, 10, 30, 45, 60]) {
     await page.evaluate((k) => {
       const r = document.getElementById('day');
@@ -100,10 +148,16 @@ await runBrowserTest(async (server, browser) => {
     const d = await page.evaluate(() => ({ ...document.documentElement.dataset }));
     const want = byDay[day] ? byDay[day].reduce((a, b) => a + b, 0) : NaN;
     shown.push({ day, drawn: Number(d.drawnMosses), want, coverage: Number(d.coverageShown) });
+    marks.push(await page.evaluate(() => {
+      const m = document.querySelector('#population-chart .marker');
+      return { day: Number(m.dataset.day), x: Number(m.getAttribute('x1')) };
+    }));
     if (day === 10) await saveCanvasPng(page, 'moss-day10.png');
   }
   check('the day scrubber draws each day\'s mosses (== stats population.by_day)', shown.every((s) => s.drawn === s.want),
     shown.map((s) => `day ${s.day}: ${s.drawn} (stats ${s.want})`).join(', '));
+  check('the chart\'s marker follows the scrubber\'s day, left to right', marks.every((m, i) => m.day === shown[i].day && (i === 0 || m.x > marks[i - 1].x)),
+    marks.map((m) => `day ${m.day} x ${m.x}`).join(', '));
   check('the scrubber changes the number drawn', new Set(shown.map((s) => s.drawn)).size > 1, shown.map((s) => s.drawn).join(','));
   check('the coverage overlay follows the day, and its replay of the last day is the run\'s', new Set(shown.map((s) => s.coverage)).size > 1 &&
     Number(data.coverageReplayError) < 1e-4, `coverage ${shown.map((s) => s.coverage).join(', ')}; replay error ${data.coverageReplayError}`);
@@ -115,10 +169,70 @@ await runBrowserTest(async (server, browser) => {
   const log = await page.evaluate(() => document.documentElement.dataset.dayShown);
   check('Play runs to the last day', log === '60', log);
 
-  // 3. Overlay: irradiance tints the land differently.
-  await page.selectOption('#overlay', 'irradiance');
-  await page.waitForTimeout(500);
-  await saveCanvasPng(page, 'moss-irradiance.png');
+  await page.screenshot({ path: path.join(ARTIFACTS, 'moss-chart-page.png') });
+
+  // 2b. Downloads: the stats as JSON, the days as CSV (day, species..., total).
+  const statsFile = await downloaded(page, '#download-stats');
+  check('Stats .json downloads the run\'s stats', /\.json$/.test(statsFile.name) && same(JSON.parse(statsFile.text), JSON.parse(data.stats)), statsFile.name);
+  const csvFile = await downloaded(page, '#download-csv');
+  const rows = csvFile.text.trim().split('\n').map((l) => l.split(','));
+  const csvOk = stats && rows[0].join() === ['day', ...stats.population.species, 'total'].join() && rows.length === byDay.length + 1 &&
+    rows.slice(1).every((r, k) => Number(r[0]) === k && byDay[k].every((c, s) => Number(r[1 + s]) === c) &&
+      Number(r[4]) === byDay[k].reduce((a, b) => a + b, 0));
+  check('Days .csv: a row per day with each species\' count and the total, as population.by_day', csvOk,
+    `${csvFile.name}: ${rows.length} lines, ${rows[0].join()} / ${(rows[rows.length - 1] || []).join()}`);
+
+  // 3. Overlays of the last day: each field's range holds the stats' per-geology means; each tints
+  // the land its own way; the photon points are the stored photons, yellow and blue.
+  const overlayHooks = async (value) => {
+    await page.selectOption('#overlay', value);
+    await page.waitForFunction((v) => document.documentElement.dataset.drawnOverlay === v, value, { timeout: TIMEOUT });
+    return page.evaluate(() => ({ ...document.documentElement.dataset }));
+  };
+  const tints = {};
+  tints.coverage = await tint(page);
+  const fields = [];
+  for (const field of ['irradiance', 'T_s', 'rh_s', 'theta', 'fitness']) {
+    const h = await overlayHooks(field);
+    tints[field] = await tint(page);
+    await saveCanvasPng(page, `moss-${field}.png`);
+    const key = field === 'irradiance' ? 'S' : field;
+    const means = stats && key !== 'fitness' ? Object.values(stats.soil_last_day).map((g) => g[key]) : [];
+    const min = Number(h.overlayMin), max = Number(h.overlayMax);
+    const span = (max - min) || 1;
+    fields.push({ field, shown: h.overlayField, min, max, means, ok: h.overlayField === field && (field === 'rh_s' ? min <= max : min < max) &&
+      means.every((m) => m >= min - 1e-4 * span && m <= max + 1e-4 * span) && (field !== 'fitness' || (min >= 0 && max <= 1)),
+    help: await page.textContent('#overlay-help') });
+  }
+  check('T_s, rh_s, theta, S and G overlays: a range over the land that holds the stats\' per-geology means', fields.every((f) => f.ok),
+    fields.map((f) => `${f.field} ${f.min.toPrecision(4)}..${f.max.toPrecision(4)}${f.ok ? '' : ` BAD (${f.min}..${f.max}, means ${f.means.join(' ')})`}`).join(', '));
+  await overlayHooks('none');
+  tints.none = await tint(page);
+  // T_s is linear in S on this run (the soil is wet: the energy balance's other terms are the same
+  // on every cell), so the two ramps look alike, and 60 days' mosses cover so little (0.05 %) that
+  // coverage looks like none; every other pair differs. (rh_s may be 1 on every cell: one colour.)
+  const names = Object.keys(tints);
+  const apart = (a, b) => Math.max(...a.mean.map((x, i) => Math.abs(x - b.mean[i])));
+  let closest = { d: Infinity };
+  for (let i = 0; i < names.length; ++i) {
+    for (let j = i + 1; j < names.length; ++j) {
+      if (`${names[i]}/${names[j]}` === 'irradiance/T_s' || `${names[i]}/${names[j]}` === 'coverage/none') continue;
+      const d = apart(tints[names[i]], tints[names[j]]);
+      if (d < closest.d) closest = { d, pair: `${names[i]}/${names[j]}` };
+    }
+  }
+  check('each overlay tints the land its own way (mean colours apart; S/T_s and coverage/none aside)', closest.d > 0.5,
+    `closest pair ${closest.pair} ${closest.d.toFixed(2)}; ${names.map((n) => `${n} ${tints[n].mean.map((x) => x.toFixed(0)).join('/')}`).join(', ')}`);
+  const ph = await overlayHooks('photons');
+  const photonTint = await tint(page);
+  await saveCanvasPng(page, 'moss-photons.png');
+  const depths = stats ? stats.photons_last_day.stored_by_depth : [];
+  const direct = depths[0] ?? NaN, bounced = depths.slice(1).reduce((a, b) => a + b, 0);
+  check('photon points: the last day\'s stored photons, direct and bounced as the stats count them by depth',
+    Number(ph.photonsDirect) === direct && Number(ph.photonsBounced) === bounced && bounced > 0,
+    `page ${ph.photonsDirect} direct + ${ph.photonsBounced} bounced, stats ${direct} + ${bounced}`);
+  check('photon points drawn in two colours (yellow direct, blue bounced)', photonTint.yellow > 0.0005 && photonTint.blue > 0.00005 &&
+    tints.coverage.yellow < photonTint.yellow, `yellow ${(photonTint.yellow * 100).toFixed(3)}%, blue ${(photonTint.blue * 100).toFixed(3)}% (coverage view yellow ${(tints.coverage.yellow * 100).toFixed(3)}%)`);
   await page.selectOption('#overlay', 'coverage');
 
   // 4. A bad value: days -1 through the panel is a line beside Days, and the page keeps working.
@@ -136,6 +250,10 @@ await runBrowserTest(async (server, browser) => {
   data = await waitMoss(page, serial);
   check('the page recovers after the bad value', data.status === 'ready' && data.hash.includes('days=20'), `${data.status} ${data.hash} ${data.error || ''}`);
   compareWithNative('days 20', data);
+  // The worker copied the 20-day run into the buffers the page gave back (same scene, fewer mosses):
+  // the land's 9 and the mosses' 7 at least (the photons' 2 when their count fits).
+  check('the second run reuses the returned buffers (land, mosses; photons when they fit)', Number(data.buffersReused) >= 16,
+    `reused ${data.buffersReused}, fresh ${data.buffersFresh}`);
 
   // 4b. A long run shows its days as it grows; Cancel ends it and the last finished run grows again.
   serial = Number(data.mossSerial);
@@ -161,6 +279,7 @@ await runBrowserTest(async (server, browser) => {
   serial = Number(data.mossSerial);
   await page.selectOption('#scene', 'plane');
   data = await waitMoss(page, serial);
+  await page.evaluate(() => { document.getElementById('share-status').textContent = ''; });  // the downloads' "Saved" line
   await page.click('#copy-link');
   await page.waitForFunction(() => document.getElementById('share-status').textContent !== '', null, { timeout: TIMEOUT });
   const status = await page.textContent('#share-status');
@@ -174,6 +293,64 @@ await runBrowserTest(async (server, browser) => {
     `${data2.status} ${data2.hash} ${data2.mosses} mosses vs ${data.mosses}`);
   await saveCanvasPng(page2, 'moss-plane.png');
   await page2.close();
+
+  // 7. A dropped mesh: the moss grows on it as `niwa moss grow --mesh FILE` does (the stats agree),
+  // by drop on the view (materials.glb: three geologies) and by the file input (rock1.glb: Draco).
+  serial = Number(data.mossSerial);
+  await page.fill('#days', '20');
+  data = await waitMoss(page, serial);
+  const dropFile = async (name, bytes) => page.evaluate(async ({ name: n, b64 }) => {
+    const raw = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
+    const transfer = new DataTransfer();
+    transfer.items.add(new File([raw], n));
+    const stage = document.getElementById('stage');
+    stage.dispatchEvent(new DragEvent('dragenter', { dataTransfer: transfer, bubbles: true }));
+    stage.dispatchEvent(new DragEvent('drop', { dataTransfer: transfer, bubbles: true }));
+  }, { name, b64: Buffer.from(bytes).toString('base64') });
+  const meshes = path.join(ROOT, 'tests/data/meshes');
+  serial = Number(data.mossSerial);
+  await dropFile('materials.glb', fs.readFileSync(path.join(meshes, 'materials.glb')));
+  data = await waitMoss(page, serial);
+  const meshStats = data.stats ? JSON.parse(data.stats) : {};
+  check('a dropped materials.glb grows mosses on it (three geologies from its materials)', data.status === 'ready' && data.sceneShown === 'mesh:materials.glb' &&
+    meshStats.cells && Object.values(meshStats.cells.by_geology).every((n) => n > 0) && Number(data.mosses) > 0,
+    `${data.status} ${data.sceneShown} cells ${JSON.stringify(meshStats.cells?.by_geology)} ${data.mosses} mosses ${data.error || data.meshError || ''}`);
+  compareWithNative('materials.glb', data, ['--mesh', path.join(meshes, 'materials.glb')]);
+  const meshNotice = await page.textContent('#notice');
+  check('the notice says a dropped mesh is not part of the link', meshNotice.includes('not part of the link'), meshNotice);
+  await saveCanvasPng(page, 'moss-materials-glb.png');
+  serial = Number(data.mossSerial);
+  await page.setInputFiles('#mesh-file', path.join(meshes, 'rock1.glb'));
+  data = await waitMoss(page, serial);
+  check('rock1.glb (Draco) picked with the file input grows mosses on it', data.status === 'ready' && data.sceneShown === 'mesh:rock1.glb' && Number(data.mosses) > 0,
+    `${data.status} ${data.sceneShown} ${data.mosses} mosses ${data.error || data.meshError || ''}`);
+  compareWithNative('rock1.glb', data, ['--mesh', path.join(meshes, 'rock1.glb')]);
+  await saveCanvasPng(page, 'moss-rock1-glb.png');
+
+  // 8. Bad files: one line beside the drop control, the run shown stays, and the page keeps working.
+  serial = Number(data.mossSerial);
+  const bad = [];
+  for (const [name, bytes] of [['not_gltf.glb', fs.readFileSync(path.join(meshes, 'not_gltf.glb'))], ['empty.glb', fs.readFileSync(path.join(meshes, 'empty.glb'))],
+    ['truncated.glb', fs.readFileSync(path.join(meshes, 'materials.glb')).subarray(0, 200)], ['notes.txt', Buffer.from('moss')]]) {
+    await page.evaluate(() => { delete document.documentElement.dataset.meshError; });
+    await dropFile(name, bytes);
+    await page.waitForFunction(() => (document.documentElement.dataset.meshError || '') !== '', null, { timeout: TIMEOUT });
+    const line = await page.evaluate(() => {
+      const e = document.getElementById('mesh-error');
+      return e.hidden ? '' : e.textContent;
+    });
+    bad.push({ name, line });
+  }
+  await page.locator('#mesh-error').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(ARTIFACTS, 'moss-bad-mesh.png') });
+  data = await page.evaluate(() => ({ ...document.documentElement.dataset }));
+  check('each bad file is one line beside the drop control naming the mesh and the file', bad.every((b) => /^mesh: /.test(b.line) && !b.line.includes('\n') && b.line.includes(b.name)),
+    bad.map((b) => `${b.name}: '${b.line}'`).join(' | ').slice(0, 600));
+  check('after the bad files the rock\'s run is still shown', Number(data.mossSerial) === serial && data.sceneShown === 'mesh:rock1.glb', `${data.mossSerial} ${data.sceneShown}`);
+  await page.selectOption('#scene', 'thesis');
+  data = await waitMoss(page, serial);
+  check('picking a scene after them grows again on the scene', data.status === 'ready' && data.sceneShown === 'thesis' && data.hash.includes('days=20'),
+    `${data.status} ${data.sceneShown} ${data.hash}`);
 
   check('no uncaught error or console error', problems.length === 0, problems.slice(0, 3).join(' | ').slice(0, 400));
   await context.close();

@@ -13,18 +13,29 @@
 //   "land"    positions, normals (Float32 xyz: three vertices per soil cell, the cell's flat
 //             normal), coverage (Float32 per vertex: the cell's min(1, n·s²/A) of the last day,
 //             as the stats' coverage), irradiance (Float32 per vertex: the cell's S of the last
-//             day, W/m²), geology (Float32 per vertex: 0 humus, 1 sandy, 2 asphalt)
+//             day, W/m²), geology (Float32 per vertex: 0 humus, 1 sandy, 2 asphalt), and the
+//             last day's soil state per vertex (Float32, the cell's; MossWorld): T_s (K), rh_s,
+//             theta (soil water), fitness (the best species' G of eq 3.17 from the cell's T_s,
+//             rh_s and the soil's S; a moss itself is scored with the S it gathers)
 //   "mosses"  positions, normals (Float32 xyz: a moss's centre and the normal of what it grows
 //             on), species (Float32: 0 gingoke, 1 haigoke, 2 sugigoke), birth (Float32: its birth
 //             day), death (Float32: the first day it was gone, -1 while alive), cell (Uint32:
 //             its soil cell, the land's triangle), on_moss (Float32: 1 when it rests on other
 //             mosses); one entry per moss ever alive at the end of a day, in order of first
 //             appearance (the page replays any day's coverage from them)
+//   "photons" positions (Float32 xyz) and depth (Float32: 0 straight from the sun or sky, n
+//             after n bounces) of every photon the last day stored (MossRun::photon_map()), on
+//             the land and on mosses (figs 4.1/4.2's photon points)
 // Calls: setProgress(fn) (fn(stage, done, total) after every day), grow(stateJson) -> ""/error
-// record, then statsJson() (the CLI's `niwa moss grow --stats`, ms* timing fields included),
-// hash(), stateJson(), boundsJson(), buffers(group). The state JSON: {preset, scene, days, seed,
+// record (on the state's built-in scene), or loadMesh(bytes, name) -> ""/error record (a dropped
+// .glb/.gltf/.obj, Draco already decoded by the page, read as `niwa moss grow --mesh` reads a
+// file: soil_cells.h SceneFromMesh, geology from its materials and colours) then
+// growOnMesh(stateJson) (MossRun::StartOnScene: the stats say scene "mesh" and the file's name;
+// errors about the mesh name the field "mesh"), meshJson() ({name, triangles} or {}); then
+// statsJson() (the CLI's `niwa moss grow --stats`, ms* timing fields included), hash(),
+// stateJson(), boundsJson(), buffers(group). The state JSON: {preset, scene, days, seed,
 // params: {row: value}} (params over the preset's values).
-// Does not: export (.glb, moss.json), load a mesh, keep more than one run, or tell a moss that
+// Does not: export (.glb, moss.json), keep more than one run or mesh, or tell a moss that
 // died and one with the same place, species and birth day apart (the run never makes two).
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
@@ -40,6 +51,9 @@
 
 #include "buffers.h"
 #include "error_record.h"
+#include "geom/mesh_metrics.h"
+#include "io/mesh_reader.h"
+#include "moss/fitness.h"
 #include "moss/moss_params.h"
 #include "moss/moss_run.h"
 #include "moss/moss_state.h"
@@ -82,11 +96,42 @@ class MossLab {
 
   // Starts the run of the state (JSON, above) and grows it to its days, recording every moss's
   // life: "" or the error record (the last run is kept on error).
-  std::string grow(const std::string& state_json) {
+  std::string grow(const std::string& state_json) { return Grow(state_json, false); }
+  // The same on the mesh loadMesh read (the state's scene is not read).
+  std::string growOnMesh(const std::string& state_json) { return Grow(state_json, true); }
+
+  // A dropped mesh file's bytes: "" with the mesh kept for growOnMesh, or the error record
+  // (field "mesh"; the mesh loaded before is kept).
+  std::string loadMesh(const std::string& bytes, const std::string& name) {
+    io::MeshReadStats read;
+    Result<geom::TriMesh> mesh = io::ReadMeshBytes(bytes, name, &read);
+    if (!mesh.ok()) return ErrorText(mesh.status().Within("mesh"));
+    Status valid = geom::ValidateMesh(*mesh, name);
+    if (!valid.ok()) return ErrorText(valid.Within("mesh"));
+    mesh_scene_.emplace(moss::SceneFromMesh(*mesh, read.materials, name));
+    mesh_name_ = name;
+    mesh_triangles_ = mesh->triangle_count();
+    return "";
+  }
+
+  std::string meshJson() const {
+    ordered_json j = ordered_json::object();
+    if (mesh_scene_) {
+      j["name"] = mesh_name_;
+      j["triangles"] = mesh_triangles_;
+    }
+    return JsonText(j);
+  }
+
+ private:
+  std::string Grow(const std::string& state_json, bool on_mesh) {
     moss::MossState state;
     Status s = moss::ApplyMossStateJson(state_json, &state);
     if (!s.ok()) return ErrorText(s);
-    Result<moss::MossRun> started = moss::MossRun::Start(state, PageBudget());
+    if (on_mesh && !mesh_scene_) return ErrorText(Status::Error("mesh", "no mesh is loaded"));
+    Result<moss::MossRun> started =
+        on_mesh ? moss::MossRun::StartOnScene(state, *mesh_scene_, PageBudget(), mesh_name_)
+                : moss::MossRun::Start(state, PageBudget());
     if (!started.ok()) return ErrorText(started.status());
     moss::MossRun run = std::move(started).value();
     Lives lives;
@@ -101,9 +146,11 @@ class MossLab {
     run_.emplace(std::move(run));
     FillLand();
     FillMosses(lives);
+    FillPhotons();
     return "";
   }
 
+ public:
   std::string statsJson() const { return run_ ? run_->StatsJson() : "{}"; }
   std::string hash() const { return run_ ? run_->Hash("") : ""; }
   std::string stateJson() const { return run_ ? JsonText(MossStateObject(state_)) : "{}"; }
@@ -136,7 +183,11 @@ class MossLab {
           .Add("normals", land_normals_)
           .Add("coverage", land_coverage_)
           .Add("irradiance", land_irradiance_)
-          .Add("geology", land_geology_);
+          .Add("geology", land_geology_)
+          .Add("T_s", land_T_s_)
+          .Add("rh_s", land_rh_s_)
+          .Add("theta", land_theta_)
+          .Add("fitness", land_fitness_);
     } else if (group == "mosses") {
       out.Add("positions", moss_positions_)
           .Add("normals", moss_normals_)
@@ -145,6 +196,8 @@ class MossLab {
           .Add("death", moss_death_)
           .Add("cell", moss_cell_)
           .Add("on_moss", moss_on_moss_);
+    } else if (group == "photons") {
+      out.Add("positions", photon_positions_).Add("depth", photon_depth_);
     } else {
       return emscripten::val::null();
     }
@@ -194,18 +247,39 @@ class MossLab {
     land_coverage_.clear();
     land_irradiance_.clear();
     land_geology_.clear();
+    land_T_s_.clear();
+    land_rh_s_.clear();
+    land_theta_.clear();
+    land_fitness_.clear();
+    const moss::MossParams& p = state_.params;
+    const auto g_form = static_cast<moss::GForm>(p.GetInt(MossParam::kGForm));
+    std::vector<moss::SpeciesRanges> species;
+    for (int k = 0; k < moss::kSpeciesCount; ++k)
+      species.push_back(moss::SpeciesOf(p, static_cast<moss::Species>(k)));
+    const auto at = [](const std::vector<double>& v, std::size_t c) {
+      return c < v.size() ? v[c] : 0.0;
+    };
     const geom::TriMesh& mesh = cells.mesh;
     for (std::size_t c = 0; c < cells.size(); ++c) {
       const float coverage =
           cells.area[c] > 0 ? static_cast<float>(std::min(1.0, on_cell[c] * s * s / cells.area[c]))
                             : 0.f;
       const float S = c < w.S.size() ? static_cast<float>(w.S[c]) : 0.f;
+      const double T_s = at(w.T_s, c), rh_s = at(w.rh_s, c);
+      double G_best = 0;
+      if (c < w.T_s.size() && c < w.rh_s.size() && c < w.S.size())
+        for (const moss::SpeciesRanges& r : species)
+          G_best = std::max(G_best, moss::FitnessOf(r, T_s, rh_s, w.S[c], g_form).G);
       for (int k = 0; k < 3; ++k) {
         PushVec(&land_positions_, glm::dvec3(mesh.positions[mesh.indices[3 * c + k]]));
         PushVec(&land_normals_, cells.normal[c]);
         land_coverage_.push_back(coverage);
         land_irradiance_.push_back(S);
         land_geology_.push_back(static_cast<float>(static_cast<int>(cells.geology[c])));
+        land_T_s_.push_back(static_cast<float>(T_s));
+        land_rh_s_.push_back(static_cast<float>(rh_s));
+        land_theta_.push_back(static_cast<float>(at(w.theta, c)));
+        land_fitness_.push_back(static_cast<float>(G_best));
       }
     }
   }
@@ -229,10 +303,23 @@ class MossLab {
     }
   }
 
+  void FillPhotons() {
+    photon_positions_.clear();
+    photon_depth_.clear();
+    for (const moss::Photon& ph : run_->photon_map().photons) {
+      PushVec(&photon_positions_, ph.position);
+      photon_depth_.push_back(static_cast<float>(ph.depth));
+    }
+  }
+
   std::optional<moss::MossRun> run_;
   moss::MossState state_;
+  std::optional<moss::MossScene> mesh_scene_;
+  std::string mesh_name_;
+  std::size_t mesh_triangles_ = 0;
   std::vector<float> land_positions_, land_normals_, land_coverage_, land_irradiance_,
-      land_geology_;
+      land_geology_, land_T_s_, land_rh_s_, land_theta_, land_fitness_;
+  std::vector<float> photon_positions_, photon_depth_;
   std::vector<float> moss_positions_, moss_normals_, moss_species_, moss_birth_, moss_death_,
       moss_on_moss_;
   std::vector<uint32_t> moss_cell_;
@@ -248,6 +335,9 @@ EMSCRIPTEN_BINDINGS(niwa_moss) {
       .constructor<>()
       .function("setProgress", &niwa::MossLab::setProgress)
       .function("grow", &niwa::MossLab::grow)
+      .function("loadMesh", &niwa::MossLab::loadMesh)
+      .function("growOnMesh", &niwa::MossLab::growOnMesh)
+      .function("meshJson", &niwa::MossLab::meshJson)
       .function("statsJson", &niwa::MossLab::statsJson)
       .function("hash", &niwa::MossLab::hash)
       .function("stateJson", &niwa::MossLab::stateJson)

@@ -137,11 +137,17 @@ export class MossLab {
   constructor();
   setProgress(fn: ((stage: string, done: number, total: number) => void) | null): void;
   grow(stateJson: string): ErrorText;
+  /** A dropped .glb/.gltf/.obj (Draco decoded): kept for growOnMesh; errors name "mesh". */
+  loadMesh(bytes: string, name: string): ErrorText;
+  /** grow on the mesh loadMesh read (stats: scene "mesh" and its name). */
+  growOnMesh(stateJson: string): ErrorText;
+  /** {name, triangles} of the loaded mesh, or {}. */
+  meshJson(): string;
   statsJson(): string;
   hash(): string;
   stateJson(): string;
   boundsJson(): string;
-  /** "land": positions, normals, coverage, irradiance, geology; "mosses": positions, normals, species, birth, death, cell, on_moss. */
+  /** "land": positions, normals, coverage, irradiance, geology, T_s, rh_s, theta, fitness; "mosses": positions, normals, species, birth, death, cell, on_moss; "photons": positions, depth (the last day's). */
   buffers(group: string): BufferViews;
   delete(): void;
 }

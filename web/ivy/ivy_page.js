@@ -2,7 +2,7 @@
 // cubes4 grown, builds the panel from the ivy table, keeps the state in location.hash through the
 // ivy hash codec (the same text `niwa ivy grow --url` reads: preset, seed, steps, scene, at=
 // seed points, changed parameters), picks a built-in scene or takes a dropped .glb/.gltf/.obj
-// (Draco decoded here by web/mesh/mesh_import.js), adds a seed point where the surface is clicked,
+// (Draco decoded here by web/mesh/mesh_file.js), adds a seed point where the surface is clicked,
 // replays the growth with the step scrubber (the vertices' birth steps; nothing regrows), and
 // downloads .glb, .json and .lsys. Growth runs in the worker (web/worker/ivy_handler.js).
 // Does not: parse or check states (the core does; its one line is shown beside its field), draw
@@ -13,8 +13,8 @@ import { OrbitCamera } from '../gl/orbit_camera.js';
 import { Frame } from '../gl/frame.js';
 import { ProgressiveLoop } from '../gl/progressive_loop.js';
 import { DEFAULT_SUNS } from '../gl/sun.js';
-import { dracoPrimitiveCount, importMesh, isGlb, parseGlb } from '../mesh/mesh_import.js';
-import { FileDrop, extensionOf } from '../shell/file_drop.js';
+import { meshFileBytes } from '../mesh/mesh_file.js';
+import { FileDrop } from '../shell/file_drop.js';
 import { ParamPanel } from '../shell/param_panel.js';
 import { StepScrubber } from '../shell/step_scrubber.js';
 import { StudyController, numberOr } from '../shell/study_controller.js';
@@ -349,38 +349,11 @@ worker.on('picked', (msg) => {
 let meshRequest = 0;
 
 // ---------------------------------------------------------------- dropped meshes
-let dracoModule = null;
-function dracoDecoder() {
-  if (!dracoModule) {
-    dracoModule = new Promise((resolve, reject) => {
-      const script = document.createElement('script');
-      script.src = '/vendor/draco3d/draco_decoder_nodejs.js';
-      script.onload = () => globalThis.DracoDecoderModule({
-        locateFile: (file) => `/vendor/draco3d/${file}`,
-      }).then(resolve, reject);
-      script.onerror = () => reject(new Error('the Draco decoder could not be loaded'));
-      document.head.append(script);
-    });
-  }
-  return dracoModule;
-}
-
 async function loadMeshFile(file) {
   notices.set('drop', '');
   ui.progress.textContent = `reading ${file.name}`;
   try {
-    let bytes = new Uint8Array(await file.arrayBuffer());
-    if (extensionOf(file.name) !== '.obj') {
-      // Draco primitives are decoded here (the WASM core cannot link Draco); a file that is not
-      // even glTF goes to the core as it is, which names what is wrong with it.
-      let json = null;
-      try {
-        json = isGlb(bytes) ? parseGlb(bytes).json : JSON.parse(new TextDecoder().decode(bytes));
-      } catch {
-        json = null;
-      }
-      if (json && dracoPrimitiveCount(json) > 0) bytes = importMesh(bytes, { draco: await dracoDecoder() }).bytes;
-    }
+    const bytes = await meshFileBytes(file);  // Draco decoded here (web/mesh/mesh_file.js)
     meshName = file.name;
     useMesh = true;
     seedPoints = [];

@@ -1,13 +1,15 @@
 // The moss page's WebGL2 view (shaders/moss/): the land (one flat triangle per soil cell in its
 // geology's colour) lit by the frame's sun and tinted by an overlay (the coverage of the day
-// shown, replayed from the mosses' lives; the irradiance of the last day; or none), and every
+// shown, replayed from the mosses' lives; a field of the last day: irradiance S, T_s, rh_s, theta
+// or best-species G on a colour ramp over its range; the last day's photon points, direct and
+// bounced in two colours as figs 4.1/4.2; or none), and every
 // moss ever alive as an instanced tuft of six triangles coloured by species, drawn only on the
 // days it was alive (birth ≤ day < death, in tuft.vert), so the day scrubber (setDay) replays
 // the run without a new grow. Positions stay in metres as the worker sends them; uModel centres
 // the land and scales its extent to about ten view units (a Frame of fit: true), else metres.
 // A StudyLayer (web/gl/frame.js), a layer of a Frame (layerSteps, under its camera and sun).
-// Does not: talk to the worker, know the moss model, or draw seeds, soil or photons.
-import { floatAttribute, staticBuffer, viewOf } from '../gl/buffers.js';
+// Does not: talk to the worker, know the moss model, or draw seeds.
+import { copyOf, floatAttribute, staticBuffer, viewOf } from '../gl/buffers.js';
 import { StudyLayer } from '../gl/frame.js';
 import { loadPrograms } from '../gl/program.js';
 
@@ -17,6 +19,13 @@ const INSTANCE_FLOATS = 9;   // position 3, normal 3, species 1, birth 1, death 
 // A tuft's radius in units of the moss size s (row moss_size): drawn three times the moss's own
 // size, so a 1 cm moss on a 2 m scene shows as more than a pixel or two in a fitted view.
 export const TUFT_SIZE = 3;
+// The land's fields of the last day an overlay can show on its ramp (the worker's land buffers).
+export const FIELDS = ['irradiance', 'T_s', 'rh_s', 'theta', 'fitness'];
+// Overlays: [shader mode (0 none, 1 coverage, 2 a field on the ramp, 3 photon points), field].
+const OVERLAY_MODES = {
+  none: [0], coverage: [1], photons: [3], ...Object.fromEntries(FIELDS.map((f) => [f, [2, f]])),
+};
+const PHOTON_POINT_PX = 3;
 
 // The tuft: three upright blades around the normal and a low cap (x, z across, y up; units of s).
 function tuftCorners() {
@@ -31,23 +40,28 @@ function tuftCorners() {
 }
 
 export class MossRenderer extends StudyLayer {
-  // target: a canvas or a Frame (a layer of it).
-  constructor(target, { unitScale = 1 } = {}) {
+  // target: a canvas or a Frame (a layer of it); beside: draw the land that many widths of it to
+  // the right (+x) of where it stands (the A/B view's right-hand run: 1.15), 0 in place.
+  constructor(target, { unitScale = 1, beside = 0 } = {}) {
     super(target, { what: 'the moss', study: 'ivy' });
     this.unitScale = unitScale;
+    this.beside = beside;
     this.land = null;    // {vao, buffers, count}
     this.mosses = null;  // {vao, buffers, count, life: Float32Array (birth, death pairs)}
     this.model = [0, 0, 0, 1];
     this.size = 0.01;
     this.day = Infinity;
-    this.overlay = 1;
-    this.irradianceMax = 1;
+    this.overlay = 'coverage';
+    this.fields = {};    // name -> {values: Float32Array per vertex, min, max}
+    this.sharedRange = null;  // {min, max}: the ramp's ends shared with another run (the A/B view)
+    this.photons = null; // {vao, buffers, count, direct, bounced}
   }
 
   async init() {
     this.programs = await loadPrograms(this.gl, SHADERS.href, {
       land: ['land.vert', 'land.frag'],
       tuft: ['tuft.vert', 'tuft.frag'],
+      photon: ['photon.vert', 'photon.frag'],
     });
     const gl = this.gl;
     this.tuft = staticBuffer(gl, tuftCorners());
@@ -60,25 +74,39 @@ export class MossRenderer extends StudyLayer {
     for (const b of part.buffers) this.gl.deleteBuffer(b);
   }
 
-  // buffers: {land: {positions, normals, coverage, irradiance, geology}, mosses: {positions, normals,
-  // species, birth, death}} (views from the worker, used at once: the page may recycle them after
-  // this returns); bounds: {min, max (m), irradiance_max}; size: the moss size s (m).
+  // buffers: {land: {positions, normals, coverage, geology, and the FIELDS}, mosses: {positions,
+  // normals, species, birth, death, cell, on_moss}, photons: {positions, depth}} (views from the
+  // worker, used at once: the page may recycle them after this returns); bounds: {min, max (m)};
+  // size: the moss size s (m).
   setMoss(buffers, bounds, size) {
     const gl = this.gl;
     this.progress.abort();
     this.#drop(this.land);
     this.#drop(this.mosses);
+    this.#drop(this.photons);
     const l = buffers.land;
+    // Each field kept (the buffers go back to the worker) with its range over the land.
+    this.fields = {};
+    for (const f of FIELDS) {
+      const values = l[f] ? copyOf(Float32Array, l[f]) : new Float32Array(l.positions.byteLength / 12);
+      let min = Infinity, max = -Infinity;
+      for (let i = 0; i < values.length; i += 3) {
+        min = Math.min(min, values[i]);
+        max = Math.max(max, values[i]);
+      }
+      if (!(min <= max)) min = max = 0;
+      this.fields[f] = { values, min, max };
+    }
     let vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
-    const land = [l.positions, l.normals, l.coverage, l.irradiance, l.geology].map((b) => staticBuffer(gl, b));
+    const land = [l.positions, l.normals, l.coverage, this.#fieldOf(this.overlay).values, l.geology].map((b) => staticBuffer(gl, b));
     floatAttribute(gl, 0, land[0], 3);
     floatAttribute(gl, 1, land[1], 3);
     floatAttribute(gl, 2, land[2], 1);
     floatAttribute(gl, 3, land[3], 1);
     floatAttribute(gl, 4, land[4], 1);
     gl.bindVertexArray(null);
-    this.land = { vao, buffers: land, count: l.positions.byteLength / 12 };
+    this.land = { vao, buffers: land, count: l.positions.byteLength / 12, field: this.#fieldName(this.overlay) };
     // Each cell's area (m²), for the coverage of any day (min(1, n·s²/A), as the run's stats).
     const p = viewOf(Float32Array, l.positions);
     const cells = this.land.count / 3;
@@ -122,15 +150,27 @@ export class MossRenderer extends StudyLayer {
     this.coverageReplayError = 0;
     for (let i = 0; i < last.length; ++i) this.coverageReplayError = Math.max(this.coverageReplayError, Math.abs(last[i] - this.coverage[i]));
     this.coverageDay = Infinity;
-    this.irradianceMax = Math.max(bounds.irradiance_max || 0, 1e-6);
+    // The last day's photon points and how many of each kind.
+    const ph = buffers.photons || { positions: new Float32Array(0), depth: new Float32Array(0) };
+    const depth = viewOf(Float32Array, ph.depth);
+    let direct = 0;
+    for (let i = 0; i < depth.length; ++i) if (depth[i] === 0) ++direct;
+    vao = gl.createVertexArray();
+    gl.bindVertexArray(vao);
+    const photonBuffers = [staticBuffer(gl, ph.positions), staticBuffer(gl, ph.depth)];
+    floatAttribute(gl, 0, photonBuffers[0], 3);
+    floatAttribute(gl, 1, photonBuffers[1], 1);
+    gl.bindVertexArray(null);
+    this.photons = { vao, buffers: photonBuffers, count: depth.length, direct, bounced: depth.length - direct };
     const ext = [0, 1, 2].map((k) => bounds.max[k] - bounds.min[k]);
-    const extent = Math.max(ext[0], ext[2], 1e-9);
+    const extent = Math.max(ext[0], ext[1], ext[2], 1e-9);
     const scale = this.fitView ? VIEW_SIZE / extent : this.unitScale;
     const cx = (bounds.min[0] + bounds.max[0]) / 2, cz = (bounds.min[2] + bounds.max[2]) / 2;
-    this.model = [cx, bounds.min[1], cz, scale];
+    const shift = this.beside * ext[0] * scale;  // view units to the right
+    this.model = [cx - shift / scale, bounds.min[1], cz, scale];
     this.boundsView = {
-      min: [-ext[0] / 2 * scale, 0, -ext[2] / 2 * scale],
-      max: [ext[0] / 2 * scale, ext[1] * scale, ext[2] / 2 * scale],
+      min: [-ext[0] / 2 * scale + shift, 0, -ext[2] / 2 * scale],
+      max: [ext[0] / 2 * scale + shift, ext[1] * scale, ext[2] / 2 * scale],
     };
   }
 
@@ -181,9 +221,46 @@ export class MossRenderer extends StudyLayer {
     return this.coverageShown;
   }
 
-  // 0 none, 1 coverage, 2 irradiance.
+  #fieldName(overlay) {
+    const [, field] = OVERLAY_MODES[overlay] || [];
+    return field || 'irradiance';
+  }
+
+  #fieldOf(overlay) {
+    return this.fields[this.#fieldName(overlay)] || { values: new Float32Array(0), min: 0, max: 0 };
+  }
+
+  // overlay: 'none', 'coverage', 'photons' or one of FIELDS. Returns what it shows: {overlay,
+  // field, min, max} (a field's range over the land) or {overlay, direct, bounced} (photon points).
   setOverlay(overlay) {
-    this.overlay = overlay;
+    this.overlay = OVERLAY_MODES[overlay] ? overlay : 'coverage';
+    const field = this.#fieldName(this.overlay);
+    if (this.land && this.land.field !== field) {
+      const gl = this.gl;
+      gl.bindBuffer(gl.ARRAY_BUFFER, this.land.buffers[3]);
+      gl.bufferSubData(gl.ARRAY_BUFFER, 0, this.#fieldOf(this.overlay).values);
+      this.land.field = field;
+    }
+    return this.overlayShown();
+  }
+
+  overlayShown() {
+    const [mode] = OVERLAY_MODES[this.overlay];
+    if (mode === 3) return { overlay: this.overlay, direct: this.photons?.direct ?? 0, bounced: this.photons?.bounced ?? 0 };
+    if (mode !== 2) return { overlay: this.overlay };
+    const { min, max } = this.#range();
+    return { overlay: this.overlay, field: this.#fieldName(this.overlay), min, max };
+  }
+
+  // The field overlay's own range over this land ({min, max}), or null for other overlays or no land.
+  fieldRange() {
+    if (!this.land || OVERLAY_MODES[this.overlay][0] !== 2) return null;
+    const { min, max } = this.#fieldOf(this.overlay);
+    return { min, max };
+  }
+
+  #range() {
+    return this.sharedRange || this.#fieldOf(this.overlay);
   }
 
   // Mosses alive on the day shown, and by species [gingoke, haigoke, sugigoke].
@@ -206,6 +283,16 @@ export class MossRenderer extends StudyLayer {
     return this.boundsView;
   }
 
+  // Draws nothing until the next setMoss (the A/B view turned off).
+  clear() {
+    this.progress.abort();
+    this.#drop(this.land);
+    this.#drop(this.mosses);
+    this.#drop(this.photons);
+    this.land = this.mosses = this.photons = null;
+    this.boundsView = null;
+  }
+
   // The land, then the tufts, as steps of a frame (web/gl/progressive_frame.js) under `view`.
   layerSteps(view) {
     const gl = this.gl;
@@ -221,8 +308,10 @@ export class MossRenderer extends StudyLayer {
           gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, vp);
           gl.uniform4fv(p.uniforms.uModel, this.model);
           gl.uniform3fv(p.uniforms.uLightDirection, light);
-          gl.uniform1i(p.uniforms.uOverlay, this.overlay);
-          gl.uniform1f(p.uniforms.uIrradianceMax, this.irradianceMax);
+          const [mode] = OVERLAY_MODES[this.overlay];
+          const { min, max } = this.#range();
+          gl.uniform1i(p.uniforms.uOverlay, mode);
+          gl.uniform2f(p.uniforms.uRange, min, max);
           gl.disable(gl.CULL_FACE);
           gl.bindVertexArray(land.vao);
         },
@@ -230,6 +319,22 @@ export class MossRenderer extends StudyLayer {
       });
       totals.triangles += land.count / 3;
       totals.primitives += land.count / 3;
+      ++totals.drawCalls;
+    }
+    if (this.photons && this.photons.count > 0 && OVERLAY_MODES[this.overlay][0] === 3) {
+      const p = this.programs.photon, photons = this.photons;
+      steps.push({
+        primitives: photons.count,
+        setup: () => {
+          gl.useProgram(p.program);
+          gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, vp);
+          gl.uniform4fv(p.uniforms.uModel, this.model);
+          gl.uniform1f(p.uniforms.uPointSize, PHOTON_POINT_PX * (window.devicePixelRatio || 1));
+          gl.bindVertexArray(photons.vao);
+        },
+        draw: (first, n) => gl.drawArrays(gl.POINTS, first, n),
+      });
+      totals.primitives += photons.count;
       ++totals.drawCalls;
     }
     if (this.mosses && this.mosses.count > 0) {
@@ -265,7 +370,8 @@ export class MossRenderer extends StudyLayer {
     super.dispose();
     this.#drop(this.land);
     this.#drop(this.mosses);
-    this.land = this.mosses = null;
+    this.#drop(this.photons);
+    this.land = this.mosses = this.photons = null;
     if (this.tuft) this.gl.deleteBuffer(this.tuft);
     for (const p of Object.values(this.programs || {})) this.gl.deleteProgram(p.program);
     this.programs = null;

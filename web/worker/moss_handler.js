@@ -2,12 +2,16 @@
 // client holds the last run. An 'update' grows the state ({preset, scene, days, seed, params})
 // to its days, posting progress after every day (at most every 100 ms), then sends the stats (the
 // CLI's `niwa moss grow --stats`), the resolved state and hash, the bounds, and two buffer groups:
-// the land (three vertices per soil cell with its coverage, irradiance and geology) and every moss ever
-// alive with its birth and death day (the page's day scrubber replays them without a new grow);
+// the land (three vertices per soil cell with its coverage, geology and last day's irradiance,
+// T_s, rh_s, theta and best-species fitness), every moss ever alive with its birth and death day
+// (the page's day scrubber replays them without a new grow) and the last day's photon points;
 // copied once out of the WASM heap into buffers the page gave back ('recycle') where they fit
 // (web/worker/transfer.js TransferPool), then transferred, with the reply's bufferCounts.
 // Table, presets and hash: the generic tableJson / presetsJson / decodeHash of the compose
 // registry (core/compose/studies.cpp, its moss row); the scenes: the moss bindings' mossScenesJson.
+// A dropped mesh ('mesh': bytes, Draco already decoded by the page) is read once into the lab and
+// answered with 'meshLoaded' ({name, triangles}) or an error naming "mesh"; an update with
+// useMesh: true grows on it (MossLab growOnMesh) instead of the state's scene.
 // Messages: web/worker/protocol.js.
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does), or export.
 import { errorOf, errorReply } from './errors.js';
@@ -46,7 +50,8 @@ export function createHandler(Module, ctx) {
     entry.working = id;
     post({ type: 'progress', id, client, stage: 'grow', done: 0, total: 0, text: 'starting the run' });
     const t0 = performance.now();
-    const error = errorOf(entry.lab.grow(JSON.stringify(msg.state || {})));
+    const stateJson = JSON.stringify(msg.state || {});
+    const error = errorOf(msg.useMesh === true ? entry.lab.growOnMesh(stateJson) : entry.lab.grow(stateJson));
     if (error) {
       post(errorReply(error, id, client));
       return;
@@ -56,11 +61,26 @@ export function createHandler(Module, ctx) {
     const transfer = [];
     const counts = { reused: 0, fresh: 0, dropped: 0 };
     const buffers = {};
-    for (const group of ['land', 'mosses']) buffers[group] = returned.take(client, group, entry.lab.buffers(group), transfer, counts);
+    for (const group of ['land', 'mosses', 'photons']) buffers[group] = returned.take(client, group, entry.lab.buffers(group), transfer, counts);
     post({
       type: 'moss', id, client, stats, hash: entry.lab.hash(), state: JSON.parse(entry.lab.stateJson()),
       bounds: JSON.parse(entry.lab.boundsJson()), buffers, bufferCounts: counts, growMs, wallMs: performance.now() - t0,
     }, transfer);
+  }
+
+  // A dropped mesh: read into the client's lab (the lab keeps its old mesh when a read fails).
+  async function mesh(msg, client) {
+    const { id } = msg;
+    const name = String(msg.name || 'mesh');
+    const entry = labOf(client);
+    post({ type: 'progress', id, client, stage: 'mesh', done: 0, total: 0, text: `reading ${name}` });
+    await nextTask();
+    const error = errorOf(entry.lab.loadMesh(new Uint8Array(msg.bytes || new ArrayBuffer(0)), name));
+    if (error) {
+      post(errorReply(error, id, client));
+      return;
+    }
+    post({ type: 'meshLoaded', id, client, mesh: JSON.parse(entry.lab.meshJson()) });
   }
 
   // The client went away (web/worker/worker.js 'close'): its lab is deleted and its returned
@@ -74,6 +94,7 @@ export function createHandler(Module, ctx) {
     messages: {
       decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...decode(String(msg.hash || '')) }),
       update,
+      mesh,
       recycle: (msg, client) => returned.give(client, msg.buffers),
     },
   };

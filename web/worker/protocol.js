@@ -166,12 +166,17 @@
 /**
  * The moss page (study: 'moss', web/worker/moss_handler.js). State: {preset, scene, days, seed,
  * params}; ready carries `paramTable`, `presets`, `scenes`, `decoded`.
- * @typedef {Envelope & {type: 'update', state: Object}} MossUpdateMessage
+ * @typedef {Envelope & {type: 'update', state: Object, useMesh?: boolean}} MossUpdateMessage
+ *   (useMesh: grow on the mesh the client dropped, not the state's scene)
  *   -> ProgressMessage (after every day: stage 'grow', done, total days), {type: 'moss', stats (the
  *       CLI's `niwa moss grow --stats`, ms* fields included), hash, state, bounds: {min, max, cells,
  *       days, mosses_ever, mosses_alive, irradiance_max}, buffers: {land: {positions, normals,
- *       coverage, irradiance, geology}, mosses: {positions, normals, species, birth, death, cell, on_moss}} (views into the
+ *       coverage, irradiance, geology, T_s, rh_s, theta, fitness}, mosses: {positions, normals, species, birth,
+ *       death, cell, on_moss}, photons: {positions, depth}} (views into the
  *       buffers the client handed back when they fit), bufferCounts, growMs, wallMs}
+ * @typedef {Envelope & {type: 'mesh', name: string, bytes: ArrayBuffer}} MossMeshMessage
+ *   -> {type: 'meshLoaded', mesh: {name, triangles}} or an error naming "mesh" (the lab keeps the
+ *       mesh for the updates with useMesh)
  * @typedef {Envelope & {type: 'recycle', buffers: Object<string, ArrayBuffer>}} MossRecycleMessage
  *   (no reply) the page's land and moss buffers back once on the GPU.
  */

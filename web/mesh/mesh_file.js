@@ -1,0 +1,40 @@
+// A dropped or picked mesh file's bytes as the core reads them, for any study page that takes a
+// mesh (ivy, moss): .obj as it is; .glb/.gltf with their Draco primitives decoded here (Google's
+// draco3d decoder, loaded once on first need from /vendor/draco3d/; mesh_import.js rewrites them),
+// since the WASM core cannot link Draco. A file that is not even glTF goes to the core as it is,
+// which names what is wrong with it.
+// Does not: parse meshes for the core, send them to a worker, or show notices (the page does).
+import { dracoPrimitiveCount, importMesh, isGlb, parseGlb } from './mesh_import.js';
+import { extensionOf } from '../shell/file_drop.js';
+
+let dracoModule = null;
+function dracoDecoder() {
+  if (!dracoModule) {
+    dracoModule = new Promise((resolve, reject) => {
+      const script = document.createElement('script');
+      script.src = '/vendor/draco3d/draco_decoder_nodejs.js';
+      script.onload = () => globalThis.DracoDecoderModule({
+        locateFile: (file) => `/vendor/draco3d/${file}`,
+      }).then(resolve, reject);
+      script.onerror = () => reject(new Error('the Draco decoder could not be loaded'));
+      document.head.append(script);
+    });
+  }
+  return dracoModule;
+}
+
+// The bytes (Uint8Array) of `file` (a File) for the core; throws with a one-line message when a
+// Draco primitive cannot be decoded.
+export async function meshFileBytes(file) {
+  let bytes = new Uint8Array(await file.arrayBuffer());
+  if (extensionOf(file.name) !== '.obj') {
+    let json = null;
+    try {
+      json = isGlb(bytes) ? parseGlb(bytes).json : JSON.parse(new TextDecoder().decode(bytes));
+    } catch {
+      json = null;
+    }
+    if (json && dracoPrimitiveCount(json) > 0) bytes = importMesh(bytes, { draco: await dracoDecoder() }).bytes;
+  }
+  return bytes;
+}
