@@ -1,0 +1,18 @@
+#version 300 es
+// The unrolled tile's rectangle (circumference × height, cm) in the plane z = uDepth of the page's
+// world: the base-colour map on it (image row 0 is the top of the patch), or the inner layer's
+// flat colour beneath the plates.
+layout(location = 0) in vec2 aCorner;  // 0..1
+
+uniform mat4 uViewProjection;
+uniform vec4 uModel;  // xyz: offset subtracted (cm), w: scale
+uniform vec2 uPatch;
+uniform float uDepth;  // cm
+
+out vec2 vUv;
+
+void main() {
+  vUv = vec2(aCorner.x, 1.0 - aCorner.y);
+  vec3 p = vec3(aCorner * uPatch, uDepth);
+  gl_Position = uViewProjection * vec4((p - uModel.xyz) * uModel.w, 1.0);
+}
