@@ -93,8 +93,12 @@ class NiwaBark extends EmbedElement {
     }
     if (!this.framed && r.bounds()) {
       this.camera.yaw = 0;
-      this.camera.pitch = 0.08;
-      this.camera.frame(r.bounds(), 1.0);
+      this.camera.pitch = 0.04;
+      const b = r.bounds();
+      this.camera.frame(b, 1.0);
+      const aspect = this.canvas.clientWidth / Math.max(1, this.canvas.clientHeight) || 1;
+      const t = Math.tan(this.camera.fov / 2);
+      this.camera.distance = 1.1 * Math.max(b.max[1] / t, b.max[0] / (t * aspect)) + b.max[2];
       this.framed = true;
     }
     if (msg.type === 'bark') {

@@ -1,7 +1,7 @@
 #version 300 es
 // The unrolled tile's rectangle (circumference × height, cm) in the plane z = uDepth of the page's
-// world: the base-colour map on it (image row 0 is the top of the patch), or the inner layer's
-// flat colour beneath the plates.
+// world: the maps on it (image row 0 is the top of the patch; the tangent frame is the world's x
+// around, y up, z out), or the inner layer's flat colour beneath the plates.
 layout(location = 0) in vec2 aCorner;  // 0..1
 
 uniform mat4 uViewProjection;
@@ -10,9 +10,11 @@ uniform vec2 uPatch;
 uniform float uDepth;  // cm
 
 out vec2 vUv;
+out vec3 vPosition;
 
 void main() {
   vUv = vec2(aCorner.x, 1.0 - aCorner.y);
   vec3 p = vec3(aCorner * uPatch, uDepth);
-  gl_Position = uViewProjection * vec4((p - uModel.xyz) * uModel.w, 1.0);
+  vPosition = (p - uModel.xyz) * uModel.w;
+  gl_Position = uViewProjection * vec4(vPosition, 1.0);
 }

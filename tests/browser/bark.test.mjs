@@ -5,7 +5,8 @@
 // aside) for the page's own hash; the cycle scrubber replays fewer broken springs at an earlier
 // cycle without a new grow; a species change regrows (tallow, == native too); a bad panel value
 // (kappa1 0.5) is a line beside its row and the page keeps working; Copy link gives a link that
-// reopens the same run (same stats); a map downloads as a PNG. Screenshots: build/artifacts/bark-*.png.
+// reopens the same run (same stats); a map downloads as a PNG; embed.html?study=bark (the iframe
+// form of <niwa-bark>) grows a linked state. Screenshots: build/artifacts/bark-*.png.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -72,7 +73,7 @@ await runBrowserTest(async (server, browser) => {
   // 1. Opens with no input: a preview, frames as it cracks, then the full run with its maps.
   await page.goto(`${server.url}bark.html`, { waitUntil: 'load' });
   let data = await waitBark(page, 0);
-  check('opens with a bark grown, its tile drawn', data.status === 'ready' && Number(data.drawnTriangles) > 0 && data.tileShows === 'maps',
+  check('opens with a bark grown, its tile drawn', data.status === 'ready' && Number(data.drawnTriangles) > 0 && data.tileShows === 'lit',
     `status ${data.status}, ${data.drawnTriangles} triangles drawn, tile shows ${data.tileShows}, grow ${data.growMs} ms ${data.error || ''}`);
   check('a 64 × 32 preview came first, and frames of the lattice as it grew', Number(data.previews) >= 1 && data.previewNodes === '2048' && Number(data.framesSeen) > 0,
     `${data.previews} previews (${data.previewNodes} nodes, ${data.previewMs} ms), ${data.framesSeen} frames`);
@@ -101,7 +102,7 @@ await runBrowserTest(async (server, browser) => {
     r.value = '5';
     r.dispatchEvent(new Event('input', { bubbles: true }));
   });
-  await page.waitForFunction(() => document.documentElement.dataset.cycleShown === '5' && document.documentElement.dataset.tileShows !== 'maps', null, { timeout: TIMEOUT });
+  await page.waitForFunction(() => document.documentElement.dataset.cycleShown === '5' && !['lit', 'maps'].includes(document.documentElement.dataset.tileShows), null, { timeout: TIMEOUT });
   data = await page.evaluate(() => ({ ...document.documentElement.dataset }));
   check('cycle 0.5 shows fewer broken springs (plates view), without a new grow', Number(data.brokenShown) < finalBroken && Number(data.growRequests) === grows && data.tileShows === 'plates',
     `${data.brokenShown} at cycle 0.5 vs ${finalBroken} at the end; grow requests ${grows} -> ${data.growRequests}; tile shows ${data.tileShows}`);
@@ -119,6 +120,9 @@ await runBrowserTest(async (server, browser) => {
   await page.waitForTimeout(400);
   await saveCanvasPng(page, 'bark-strain.png');
   await page.selectOption('#tile-view', 'maps');
+  await page.waitForTimeout(400);
+  await saveCanvasPng(page, 'bark-basecolour.png');
+  await page.selectOption('#tile-view', 'lit');
 
   // 3. A map downloads as a PNG.
   const [download] = await Promise.all([page.waitForEvent('download', { timeout: TIMEOUT }), page.click('#download-normal')]);
@@ -169,6 +173,23 @@ await runBrowserTest(async (server, browser) => {
   look = await looks(page2);
   check('the reopened page draws the bark', look.bark > 0.1, `bark ${(look.bark * 100).toFixed(1)}%`);
   await page2.close();
+
+  // 7. The iframe form of <niwa-bark> (embed.html?study=bark) grows the linked state.
+  const page3 = await context.newPage();
+  watchPage(page3, problems);
+  await page3.setViewportSize({ width: 640, height: 400 });
+  await page3.goto(`${server.url}embed.html?study=bark#species=pine&model=2layer&seed=2&N_R=64&N_H=32`, { waitUntil: 'load' });
+  await page3.waitForFunction(() => {
+    const d = document.querySelector('niwa-bark')?.dataset;
+    return d && (d.status === 'ready' || d.status === 'error');
+  }, null, { timeout: TIMEOUT, polling: 200 });
+  await page3.waitForTimeout(500);
+  const embed = await page3.evaluate(() => ({ ...document.querySelector('niwa-bark').dataset }));
+  check('<niwa-bark> in embed.html grows the linked state', embed.status === 'ready' && embed.species === 'pine' && embed.hash === 'species=pine&model=2layer&seed=2&N_R=64&N_H=32',
+    `${embed.status} ${embed.hash} ${embed.error || ''}`);
+  const embedPng = await page3.evaluate(() => document.querySelector('niwa-bark').shadowRoot.querySelector('canvas').toDataURL('image/png'));
+  fs.writeFileSync(path.join(ARTIFACTS, 'bark-embed.png'), Buffer.from(embedPng.split(',')[1], 'base64'));
+  await page3.close();
 
   check('no uncaught error or console error', problems.length === 0, problems.slice(0, 3).join(' | ').slice(0, 400));
   await context.close();

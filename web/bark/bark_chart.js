@@ -5,7 +5,7 @@
 // Does not: compute anything the run did not sample, or talk to the worker.
 
 const SVG = 'http://www.w3.org/2000/svg';
-const W = 280, H = 150, PAD = { l: 36, r: 8, t: 8, b: 26 };
+const W = 280, H = 150, PAD = { l: 36, r: 16, t: 8, b: 26 };
 
 // [{cycle, step, strain_theta, strain_z, broken_axial, broken_diagonal}] of the CSV text.
 export function parseCyclesCsv(text) {

@@ -122,14 +122,16 @@ async function startRenderer() {
   }
 }
 
-// Looks straight at the tile and the trunk.
+// Looks straight at the tile and the trunk, filling the view's width or height.
 function frameBark() {
   const b = renderer?.bounds();
   if (!b) return;
   camera.yaw = 0;
-  camera.pitch = 0.08;
-  camera.target = [0, 0, 0];
+  camera.pitch = 0.04;
   camera.frame(b, 1.0);
+  const aspect = ui.canvas.clientWidth / Math.max(1, ui.canvas.clientHeight) || 1;
+  const t = Math.tan(camera.fov / 2);
+  camera.distance = 1.1 * Math.max(b.max[1] / t, b.max[0] / (t * aspect)) + b.max[2];
 }
 
 // ---------------------------------------------------------------- state

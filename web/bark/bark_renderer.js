@@ -1,7 +1,9 @@
 // The bark page's WebGL2 view (shaders/bark/): the unrolled tile (circumference × height of the
 // patch, facing the camera) and, beside it, a trunk segment of the patch's radius and height
-// wearing the maps (base colour lit through the normal map). The tile shows either the
-// base-colour map itself ('maps'), or the lattice's triangles as the run has them ('plates':
+// wearing the maps (base colour lit through the normal map and the occlusion, shaders/bark/
+// bark_light.glsl, by a key light fixed in the world, up and to the front left, that grazes the
+// relief). The tile shows the maps lit the same way ('lit'), the base-colour map itself ('maps'),
+// or the lattice's triangles as the run has them ('plates':
 // the surface's plates with each triangle whose edge broke dropped, so the cracks show the inner
 // layer; 'strain': the plates as a heat map of their stretch over their break strain); with a
 // step set (setStep, the cycle scrubber) the triangles broken by then are dropped, so the cracks
@@ -19,6 +21,13 @@ const VIEW_SIZE = 10;    // the scene's width in view units
 const GAP = 4;           // cm between the tile and the trunk
 const AROUND = 96;       // the trunk's segments around
 const VIEW_MODES = { plates: 0, strain: 1 };
+const QUAD_MODES = { lit: 0, inner: 1, maps: 2 };
+// The key light (unit, towards it): up, to the left and in front of the tile.
+const KEY_LIGHT = (() => {
+  const v = [-0.55, 0.5, 0.67];
+  const n = Math.hypot(...v);
+  return new Float32Array(v.map((x) => x / n));
+})();
 
 // The cylinder's (angle, height share) vertices as triangles.
 function cylinder() {
@@ -35,11 +44,11 @@ export class BarkRenderer extends StudyLayer {
   constructor(target) {
     super(target, { what: 'the bark', study: 'ivy' });
     this.tile = null;     // {vao, buffers, count}: the lattice's triangles
-    this.maps = null;     // {base, normal: textures, width, height}
+    this.maps = null;     // {base, normal, orm: textures, width, height}
     this.patch = [1, 1];  // circumference, height (cm)
     this.radius = 1;
     this.model = [0, 0, 0, 1];
-    this.view = 'maps';
+    this.view = 'lit';
     this.step = Infinity;
     this.live = false;    // the tile is a run still growing (or a preview): no maps for it yet
   }
@@ -92,20 +101,37 @@ export class BarkRenderer extends StudyLayer {
     this.#setPatch(bounds);
   }
 
-  // The maps of the finished run (or the preview's): {base_colour, normal} RGBA pixels of
+  // The maps of the finished run (or the preview's): {base_colour, normal, orm} RGBA pixels of
   // width × height.
   setMaps(maps, width, height) {
     const gl = this.gl;
-    if (this.maps) {
-      gl.deleteTexture(this.maps.base);
-      gl.deleteTexture(this.maps.normal);
-    }
+    this.#dropMaps();
     this.maps = {
       base: imageTexture(gl, { pixels: maps.base_colour, width, height }, gl.REPEAT),
       normal: imageTexture(gl, { pixels: maps.normal, width, height }, gl.REPEAT),
+      orm: imageTexture(gl, { pixels: maps.orm, width, height }, gl.REPEAT),
       width, height,
     };
     this.live = false;
+  }
+
+  #dropMaps() {
+    if (!this.maps) return;
+    for (const t of [this.maps.base, this.maps.normal, this.maps.orm]) this.gl.deleteTexture(t);
+    this.maps = null;
+  }
+
+  // The three maps on texture units 0, 1, 2 of program p.
+  #bindMaps(p) {
+    const gl = this.gl;
+    [this.maps.base, this.maps.normal, this.maps.orm].forEach((texture, unit) => {
+      gl.activeTexture(gl.TEXTURE0 + unit);
+      gl.bindTexture(gl.TEXTURE_2D, texture);
+    });
+    gl.activeTexture(gl.TEXTURE0);
+    gl.uniform1i(p.uniforms.uBaseColour, 0);
+    gl.uniform1i(p.uniforms.uNormalMap, 1);
+    gl.uniform1i(p.uniforms.uOrm, 2);
   }
 
   #setPatch(bounds) {
@@ -118,7 +144,7 @@ export class BarkRenderer extends StudyLayer {
     this.boundsView = { min: [-w, -h, -r], max: [w, h, r] };
   }
 
-  // 'maps', 'plates' or 'strain'.
+  // 'lit', 'maps', 'plates' or 'strain'.
   setView(view) {
     this.view = view;
   }
@@ -132,15 +158,15 @@ export class BarkRenderer extends StudyLayer {
     return this.boundsView;
   }
 
-  // What the tile shows now: the map only at the end of a finished run in the 'maps' view.
+  // What the tile shows now: the maps only at the end of a finished run in the 'lit' or 'maps' view.
   get tileShows() {
-    if (this.view === 'maps' && this.maps && !this.live && !Number.isFinite(this.step)) return 'maps';
+    if ((this.view === 'lit' || this.view === 'maps') && this.maps && !this.live && !Number.isFinite(this.step)) return this.view;
     return this.view === 'strain' ? 'strain' : 'plates';
   }
 
   layerSteps(view) {
     const gl = this.gl;
-    const { viewProjection: vp, light, eye } = view;
+    const { viewProjection: vp, eye } = view;
     const totals = { triangles: 0, lines: 0, drawCalls: 0, primitives: 0 };
     const steps = [];
     if (!this.tile) return { steps, totals };
@@ -157,11 +183,9 @@ export class BarkRenderer extends StudyLayer {
           gl.uniform2f(p.uniforms.uPatch, C, H);
           gl.uniform1f(p.uniforms.uDepth, depth);
           gl.uniform1i(p.uniforms.uMode, mode);
-          if (mode === 0) {
-            gl.activeTexture(gl.TEXTURE0);
-            gl.bindTexture(gl.TEXTURE_2D, this.maps.base);
-            gl.uniform1i(p.uniforms.uBaseColour, 0);
-          }
+          gl.uniform3fv(p.uniforms.uKeyLight, KEY_LIGHT);
+          gl.uniform3fv(p.uniforms.uEye, eye);
+          if (mode !== QUAD_MODES.inner) this.#bindMaps(p);
           gl.disable(gl.CULL_FACE);
           gl.bindVertexArray(this.quad.vao);
         },
@@ -171,10 +195,10 @@ export class BarkRenderer extends StudyLayer {
       totals.primitives += 2;
       ++totals.drawCalls;
     };
-    if (shows === 'maps') {
-      quad(0, 0);
+    if (shows === 'lit' || shows === 'maps') {
+      quad(QUAD_MODES[shows], 0);
     } else {
-      quad(1, -0.05);
+      quad(QUAD_MODES.inner, -0.05);
       const p = this.programs.plates, tile = this.tile;
       const step = Number.isFinite(this.step) ? this.step : 1e12;
       // The patch and its copies shifted back over the seams (around, along, both): the torus.
@@ -209,15 +233,9 @@ export class BarkRenderer extends StudyLayer {
           gl.uniform4fv(p.uniforms.uModel, this.model);
           gl.uniform3f(p.uniforms.uCentre, C + GAP + this.radius, 0, 0);
           gl.uniform2f(p.uniforms.uSize, this.radius, H);
-          gl.uniform3fv(p.uniforms.uLightDirection, light);
+          gl.uniform3fv(p.uniforms.uKeyLight, KEY_LIGHT);
           gl.uniform3fv(p.uniforms.uEye, eye);
-          gl.activeTexture(gl.TEXTURE0);
-          gl.bindTexture(gl.TEXTURE_2D, this.maps.base);
-          gl.uniform1i(p.uniforms.uBaseColour, 0);
-          gl.activeTexture(gl.TEXTURE1);
-          gl.bindTexture(gl.TEXTURE_2D, this.maps.normal);
-          gl.uniform1i(p.uniforms.uNormalMap, 1);
-          gl.activeTexture(gl.TEXTURE0);
+          this.#bindMaps(p);
           gl.enable(gl.CULL_FACE);
           gl.cullFace(gl.BACK);
           gl.bindVertexArray(this.trunk.vao);
@@ -235,10 +253,7 @@ export class BarkRenderer extends StudyLayer {
     super.dispose();
     this.#dropTile();
     const gl = this.gl;
-    if (this.maps) {
-      gl.deleteTexture(this.maps.base);
-      gl.deleteTexture(this.maps.normal);
-    }
+    this.#dropMaps();
     for (const part of [this.quad, this.trunk]) {
       if (!part) continue;
       gl.deleteVertexArray(part.vao);

@@ -17,8 +17,8 @@
 //           over its own break strain, in [0, 1]), broken (Float32 per vertex: the step at which
 //           the triangle's first edge broke, -1 while intact); the run being grown while a
 //           progress callback runs, else the last finished run
-//   "maps"  base_colour, normal (Uint8 RGBA rows, the maps as drawn at the state's map_size; the
-//           size is in boundsJson)
+//   "maps"  base_colour, normal, orm (Uint8 RGBA rows, the maps as drawn at the state's map_size;
+//           the size is in boundsJson)
 // Calls: setProgress(fn) (fn(stage, done, total) every 256 steps; a false return cancels), grow
 // (stateJson) -> ""/error record, then statsJson() (the CLI's `niwa bark grow --stats` without
 // its timing fields), hash(), stateJson(), boundsJson(), cyclesCsv(), mapPng(map), buffers(group).
@@ -140,7 +140,7 @@ class BarkLab {
     } else if (group == "maps") {
       if (!run_) return emscripten::val::null();
       const bark::BarkMaps& m = run_->maps();
-      out.Add("base_colour", m.base_colour.pixels).Add("normal", m.normal.pixels);
+      out.Add("base_colour", m.base_colour.pixels).Add("normal", m.normal.pixels).Add("orm", m.orm.pixels);
     } else {
       return emscripten::val::null();
     }

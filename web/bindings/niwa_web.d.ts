@@ -161,7 +161,7 @@ export class BarkLab {
   /** A map's PNG bytes ("base_colour", "normal", "height", "orm"), or null with lastError(). */
   mapPng(map: string): Uint8Array | null;
   lastError(): ErrorText;
-  /** "tile": positions, stretch, broken; "maps": base_colour, normal. */
+  /** "tile": positions, stretch, broken; "maps": base_colour, normal, orm. */
   buffers(group: string): BufferViews;
   delete(): void;
 }
