@@ -3,9 +3,11 @@
 // cracks, then the camphor preset grown on its 128 × 64 lattice with its maps on the tile and the
 // trunk; its stats equal the native CLI's `niwa bark grow --url HASH --stats` (timing fields
 // aside) for the page's own hash; the cycle scrubber replays fewer broken springs at an earlier
-// cycle without a new grow; a species change regrows (tallow, == native too); a bad panel value
+// cycle without a new grow; a species change regrows (tallow, == native too); Cancel during a
+// grow goes back to the last finished bark; a bad panel value
 // (kappa1 0.5) is a line beside its row and the page keeps working; Copy link gives a link that
-// reopens the same run (same stats); a map downloads as a PNG; embed.html?study=bark (the iframe
+// reopens the same run (same stats); a map downloads as a PNG; Table 3 runs the three species
+// (its pine row == the native CLI's); embed.html?study=bark (the iframe
 // form of <niwa-bark>) grows a linked state. Screenshots: build/artifacts/bark-*.png.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -141,6 +143,18 @@ await runBrowserTest(async (server, browser) => {
   compareWithNative('tallow', data);
   await saveCanvasPng(page, 'bark-tallow.png');
 
+  // 4b. A grow shows its steps as it goes; Cancel ends it and the last finished bark grows again.
+  serial = Number(data.barkSerial);
+  const goodHash = data.hash;
+  await page.fill('#rng-seed', '7');
+  await page.waitForFunction(() => /(preview|growing): step [1-9]/.test(document.getElementById('progress').textContent), null, { timeout: TIMEOUT, polling: 50 });
+  const progressText = await page.textContent('#progress');
+  await page.click('#cancel');
+  const cancelled = await page.evaluate(() => document.documentElement.dataset.status);
+  data = await waitBark(page, serial);
+  check('progress by step, then Cancel goes back to the last finished bark', /(preview|growing): step \d+ of \d+/.test(progressText) && cancelled === 'cancelled'
+    && data.status === 'ready' && data.hash === goodHash, `'${progressText}', status after Cancel ${cancelled}, then ${data.status} ${data.hash}`);
+
   // 5. A bad value: kappa1 0.5 through the panel is a line beside its row, and the page keeps working.
   serial = Number(data.barkSerial);
   await page.evaluate(() => { document.getElementById('param-kappa1').closest('details').open = true; });
@@ -173,6 +187,26 @@ await runBrowserTest(async (server, browser) => {
   look = await looks(page2);
   check('the reopened page draws the bark', look.bark > 0.1, `bark ${(look.bark * 100).toFixed(1)}%`);
   await page2.close();
+
+  // 6b. Table 3: the three species' presets grown at this lattice and seed, beside the paper's.
+  await page.click('#table3-run');
+  await page.waitForFunction(() => document.documentElement.dataset.table3 !== undefined || !document.getElementById('table3-error').hidden, null, { timeout: TIMEOUT * 2, polling: 500 });
+  const table3 = JSON.parse(await page.evaluate(() => document.documentElement.dataset.table3 || '[]'));
+  const rows = await page.evaluate(() => [...document.querySelectorAll('#table3 tbody tr')].map((tr) => [...tr.children].map((td) => td.textContent)));
+  check('Table 3 lists the three species beside the paper\'s numbers', rows.length === 3 && rows.map((r) => r[0]).join(',') === 'camphor,tallow,pine' && rows[2][1] === '2.34 × 4.28',
+    JSON.stringify(rows));
+  let nativePine = null;
+  try {
+    nativePine = JSON.parse(execFileSync(NATIVE, ['bark', 'grow', '--url', 'species=pine&model=2layer&seed=1', '--stats'], { encoding: 'utf8' }).trim().split('\n').pop());
+  } catch (e) {
+    nativePine = null;
+  }
+  const pine = table3.find((r) => r.species === 'pine');
+  check('Table 3\'s pine row == native `niwa bark grow --url species=pine&model=2layer&seed=1 --stats` regions', Boolean(pine && nativePine
+    && pine.mean_w === nativePine.regions.mean_w && pine.mean_h === nativePine.regions.mean_h && pine.max_w === nativePine.regions.max_w && pine.max_h === nativePine.regions.max_h),
+    `page ${JSON.stringify(pine)}, native ${nativePine ? JSON.stringify(nativePine.regions) : 'failed'}`);
+  await page.locator('#table3').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(ARTIFACTS, 'bark-table3.png') });
 
   // 7. The iframe form of <niwa-bark> (embed.html?study=bark) grows the linked state.
   const page3 = await context.newPage();

@@ -51,7 +51,7 @@ export function drawBrokenChart(container, samples, springs, stepsPerCycle, step
   const svg = el('svg', { viewBox: `0 0 ${W} ${H}`, width: '100%', role: 'img', 'aria-label': 'Broken share of the axial and diagonal springs against growth cycles' });
   svg.append(el('rect', { x: PAD.l, y: PAD.t, width: W - PAD.l - PAD.r, height: H - PAD.t - PAD.b, fill: '#fbfaf7', stroke: '#c9c3b8' }));
   for (const v of [0, yMax / 2, yMax]) {
-    svg.append(el('text', { x: PAD.l - 4, y: y(v) + 3, 'text-anchor': 'end', 'font-size': 9, fill: '#555' }, `${Math.round(v * 100)}%`));
+    svg.append(el('text', { x: PAD.l - 4, y: y(v) + 3, 'text-anchor': 'end', 'font-size': 9, fill: '#555' }, `${Number((v * 100).toFixed(1))}%`));
   }
   for (const c of [0, xMax / 2, xMax]) {
     svg.append(el('text', { x: x(c), y: H - PAD.b + 12, 'text-anchor': 'middle', 'font-size': 9, fill: '#555' }, c.toFixed(2)));
