@@ -208,6 +208,18 @@ await runBrowserTest(async (server, browser) => {
   await page.locator('#table3').scrollIntoViewIfNeeded();
   await page.screenshot({ path: path.join(ARTIFACTS, 'bark-table3.png') });
 
+  // 6c. On a phone's width the page still grows and draws.
+  const phone = await context.newPage();
+  watchPage(phone, problems);
+  await phone.setViewportSize({ width: 390, height: 844 });
+  await phone.goto(`${server.url}bark.html#species=pine&seed=3&N_R=64&N_H=32`, { waitUntil: 'load' });
+  const dataPhone = await waitBark(phone, 0);
+  const lookPhone = await looks(phone);
+  check('on a 390 px wide screen the page grows and draws the bark', dataPhone.status === 'ready' && lookPhone.bark > 0.05,
+    `${dataPhone.status}, bark ${(lookPhone.bark * 100).toFixed(1)}%`);
+  await phone.screenshot({ path: path.join(ARTIFACTS, 'bark-phone.png') });
+  await phone.close();
+
   // 7. The iframe form of <niwa-bark> (embed.html?study=bark) grows the linked state.
   const page3 = await context.newPage();
   watchPage(page3, problems);

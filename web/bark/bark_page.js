@@ -39,7 +39,10 @@ const notices = new Notices($('notice'), ['webgl', 'error', 'hash']);
 const BASIC_FIELDS = { species: 'species-error', model: 'model-error', seed: 'rng-seed-error' };
 const controller = new StudyController({
   study: 'bark', notices, ui, fields: BASIC_FIELDS, panel: () => panel, state: () => currentState(false),
-  onCancel: () => 'cancelled: back to the last finished bark',
+  onCancel: () => {
+    ui.table3Run.disabled = false;
+    return 'cancelled: back to the last finished bark';
+  },
   onRestart: () => {
     restarting = true;
     worker.request('init', { hash: '' }, { done: ['ready'] });
@@ -49,6 +52,7 @@ const controller = new StudyController({
       ui.table3Error.textContent = msg.message;
       ui.table3Error.hidden = false;
       ui.table3Run.disabled = false;
+      controller.showWork(controller.inFlight);
       return true;
     }
     if (when === 'after') ui.rngSeed.setAttribute('aria-invalid', msg.field === 'seed' ? 'true' : 'false');
@@ -96,8 +100,9 @@ const scrubber = new StepScrubber({ range: ui.cycle, text: ui.cycleText, play: u
   const s = sampleAt(shown.samples, step);
   const all = shown.springs.axial + shown.springs.diagonal;
   const broken = s ? s.broken_axial + s.broken_diagonal : 0;
-  const when = Number.isFinite(step) ? `cycle ${(k / 10).toFixed(1)} of ${shown.cycles}` : `cycle ${shown.cycles} of ${shown.cycles}, settled`;
-  ui.cycleText.textContent = `${when} · ${broken} springs broken (${((100 * broken) / all).toFixed(1)} %)`;
+  const when = Number.isFinite(step) ? `${(k / 10).toFixed(1)} of ${shown.cycles}` : `${shown.cycles} of ${shown.cycles}, settled`;
+  ui.cycleText.textContent = `${when} · ${((100 * broken) / all).toFixed(1)} % broken`;
+  ui.cycleText.title = `${broken} of ${all} springs broken`;
   drawBrokenChart(ui.chart, shown.samples, shown.springs, shown.stepsPerCycle, step);
   setHooks({ cycleShown: k, stepShown: Number.isFinite(step) ? step : 'end', brokenShown: broken });
   requestFrame();
@@ -277,6 +282,7 @@ worker.on('bark', (msg) => {
 worker.on('table3', (msg) => {
   ui.table3Run.disabled = false;
   ui.progress.textContent = '';
+  controller.showWork(controller.inFlight);
   const body = ui.table3.querySelector('tbody');
   body.replaceChildren();
   const out = [];
@@ -332,6 +338,7 @@ $('download-csv').addEventListener('click', () => controller.exportAs('csv', `ba
 ui.table3Run.addEventListener('click', () => {
   ui.table3Run.disabled = true;
   ui.table3Error.hidden = true;
+  controller.showWork(true);  // Cancel ends the three runs too (the worker restarts)
   const p = panel.values();
   worker.request('table3', { seed: numberOr(ui.rngSeed), N_R: p.N_R, N_H: p.N_H }, { group: 'table3', done: ['table3'] });
 });
