@@ -124,6 +124,10 @@ await runBrowserTest(async (server, browser) => {
   await page.selectOption('#tile-view', 'maps');
   await page.waitForTimeout(400);
   await saveCanvasPng(page, 'bark-basecolour.png');
+  await page.selectOption('#tile-view', 'tiled');
+  await page.waitForFunction(() => document.documentElement.dataset.tileShows === 'tiled', null, { timeout: TIMEOUT });
+  await page.waitForTimeout(300);
+  await saveCanvasPng(page, 'bark-tiled.png');
   await page.selectOption('#tile-view', 'lit');
 
   // 3. A map downloads as a PNG.

@@ -2,12 +2,14 @@
 // patch, facing the camera) and, beside it, a trunk segment of the patch's radius and height
 // wearing the maps (base colour lit through the normal map and the occlusion, shaders/bark/
 // bark_light.glsl, by a key light fixed in the world, up and to the front left, that grazes the
-// relief). The tile shows the maps lit the same way ('lit'), the base-colour map itself ('maps'),
+// relief). The tile shows the maps lit the same way ('lit'; 'tiled': repeated 2 × 2 at half size,
+// so the seams around and along are in view), the base-colour map itself ('maps'),
 // or the lattice's triangles as the run has them ('plates':
 // the surface's plates with each triangle whose edge broke dropped, so the cracks show the inner
 // layer; 'strain': the plates as a heat map of their stretch over their break strain); with a
 // step set (setStep, the cycle scrubber) the triangles broken by then are dropped, so the cracks
-// replay without a new grow. Coordinates are the patch's centimetres (x around, y up the trunk);
+// replay without a new grow (the triangles stay at the run's final positions: the plates' recoil
+// is not replayed, only which springs had broken). Coordinates are the patch's centimetres (x around, y up the trunk);
 // uModel centres the scene and scales it to about ten view units (a Frame of fit: true).
 // A StudyLayer (web/gl/frame.js), a layer of a Frame (layerSteps, under its camera and sun).
 // Does not: talk to the worker, know the model, or draw the 4-layer model's layers.
@@ -21,7 +23,7 @@ const VIEW_SIZE = 10;    // the scene's width in view units
 const GAP = 4;           // cm between the tile and the trunk
 const AROUND = 96;       // the trunk's segments around
 const VIEW_MODES = { plates: 0, strain: 1 };
-const QUAD_MODES = { lit: 0, inner: 1, maps: 2 };
+const QUAD_MODES = { lit: 0, inner: 1, maps: 2, tiled: 0 };
 // The key light (unit, towards it): up, to the left and in front of the tile.
 const KEY_LIGHT = (() => {
   const v = [-0.55, 0.5, 0.67];
@@ -144,7 +146,7 @@ export class BarkRenderer extends StudyLayer {
     this.boundsView = { min: [-w, -h, -r], max: [w, h, r] };
   }
 
-  // 'lit', 'maps', 'plates' or 'strain'.
+  // 'lit', 'tiled', 'maps', 'plates' or 'strain'.
   setView(view) {
     this.view = view;
   }
@@ -158,9 +160,9 @@ export class BarkRenderer extends StudyLayer {
     return this.boundsView;
   }
 
-  // What the tile shows now: the maps only at the end of a finished run in the 'lit' or 'maps' view.
+  // What the tile shows now: the maps only at the end of a finished run in a maps view.
   get tileShows() {
-    if ((this.view === 'lit' || this.view === 'maps') && this.maps && !this.live && !Number.isFinite(this.step)) return this.view;
+    if (['lit', 'tiled', 'maps'].includes(this.view) && this.maps && !this.live && !Number.isFinite(this.step)) return this.view;
     return this.view === 'strain' ? 'strain' : 'plates';
   }
 
@@ -172,7 +174,7 @@ export class BarkRenderer extends StudyLayer {
     if (!this.tile) return { steps, totals };
     const [C, H] = this.patch;
     const shows = this.tileShows;
-    const quad = (mode, depth) => {
+    const quad = (mode, depth, repeat = 1) => {
       const p = this.programs.quad;
       steps.push({
         primitives: 2,
@@ -182,6 +184,7 @@ export class BarkRenderer extends StudyLayer {
           gl.uniform4fv(p.uniforms.uModel, this.model);
           gl.uniform2f(p.uniforms.uPatch, C, H);
           gl.uniform1f(p.uniforms.uDepth, depth);
+          gl.uniform1f(p.uniforms.uRepeat, repeat);
           gl.uniform1i(p.uniforms.uMode, mode);
           gl.uniform3fv(p.uniforms.uKeyLight, KEY_LIGHT);
           gl.uniform3fv(p.uniforms.uEye, eye);
@@ -195,8 +198,8 @@ export class BarkRenderer extends StudyLayer {
       totals.primitives += 2;
       ++totals.drawCalls;
     };
-    if (shows === 'lit' || shows === 'maps') {
-      quad(QUAD_MODES[shows], 0);
+    if (shows === 'lit' || shows === 'tiled' || shows === 'maps') {
+      quad(QUAD_MODES[shows], 0, shows === 'tiled' ? 2 : 1);
     } else {
       quad(QUAD_MODES.inner, -0.05);
       const p = this.programs.plates, tile = this.tile;
