@@ -78,11 +78,13 @@ let renderer = null;
 let barkSerial = 0;
 let installedSerial = 0;
 let framesSeen = 0;
+let framesInstalled = 0;  // the live frames put on the renderer (data-drawn-frame: the last one drawn)
+let livePhase = '';       // the phase of the last of them (preview or full)
 const loop = new ProgressiveLoop({
   renderer: () => (renderer ? frame : null),
   camera,
   onDrawn: (drawn) => {
-    setHooks({ drawnSerial: installedSerial, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls, tileShows: renderer?.tileShows ?? '' });
+    setHooks({ drawnSerial: installedSerial, drawnFrame: framesInstalled, drawnPhase: renderer?.live ? livePhase : '', drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls, tileShows: renderer?.tileShows ?? '' });
   },
 });
 const requestFrame = () => loop.request();
@@ -204,6 +206,8 @@ worker.on('frame', (msg) => {
   if (!controller.isLatest(msg) || !renderer) return;
   renderer.setStep(Infinity);
   renderer.setTile(msg.tile, msg.bounds, { live: true });
+  framesInstalled += 1;
+  livePhase = msg.phase;
   if (frameNext) {
     frameBark();
     frameNext = false;
