@@ -151,3 +151,23 @@ export class MossLab {
   buffers(group: string): BufferViews;
   delete(): void;
 }
+
+// ---- bark_bindings.cpp: paper 003 (Hirota, Kato, Kaneko) over core/bark/bark_run
+export class BarkLab {
+  constructor();
+  /** fn(stage, done, total) every 256 steps of a grow; a false return cancels it. */
+  setProgress(fn: ((stage: string, done: number, total: number) => boolean | void) | null): void;
+  grow(stateJson: string): ErrorText;
+  statsJson(): string;
+  hash(): string;
+  stateJson(): string;
+  cyclesCsv(): string;
+  /** {n_r, n_h, circumference, height, radius, steps, steps_per_cycle, cycles, springs, map?}. */
+  boundsJson(): string;
+  /** A map's PNG bytes ("base_colour", "normal", "height", "orm"), or null with lastError(). */
+  mapPng(map: string): Uint8Array | null;
+  lastError(): ErrorText;
+  /** "tile": positions, stretch, broken; "maps": base_colour, normal, orm. */
+  buffers(group: string): BufferViews;
+  delete(): void;
+}

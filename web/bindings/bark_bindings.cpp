@@ -1,0 +1,225 @@
+// The bark study's bindings (paper 003, Hirota, Kato, Kaneko; ../shared/specs/bark.md §6
+// "Browser"): BarkLab, one bark run (core/bark/bark_run.h) grown for the worker
+// (web/worker/bark_handler.js), with the lattice's triangles flattened for the page's tile view
+// (live while it grows, and with each spring's break step so the cycle scrubber replays the
+// cracks without growing again), the maps' pixels for the tile and the lit trunk, and the maps'
+// PNG bytes and the cycles CSV for downloads.
+//
+// Design (as the tree's "JS BINDINGS DESIGN" note in tree_bindings.cpp): everything from
+// JavaScript arrives as text and is checked by the core (ApplyBarkStateJson, the table's ranges,
+// CheckBarkState, BarkRun::Start's estimate against the page budget); nothing throws, errors come
+// back as the {ok, field, message} record (error_record.h) naming a state field: species, model,
+// seed, a row key (the panel's keys are the row keys), or the budget's line. Buffers leave
+// through buffers(group) (buffers.h), copied once by the worker. Groups:
+//   "tile"  positions (Float32 x, z per vertex, cm in the unrolled patch at its current growth,
+//           three vertices per lattice triangle, unwrapped: a triangle over the seam reaches past
+//           the patch), stretch (Float32 per vertex: the triangle's largest intact edge strain
+//           over its own break strain, in [0, 1]), broken (Float32 per vertex: the step at which
+//           the triangle's first edge broke, -1 while intact); the run being grown while a
+//           progress callback runs, else the last finished run
+//   "maps"  base_colour, normal, orm (Uint8 RGBA rows, the maps as drawn at the state's map_size;
+//           the size is in boundsJson)
+// Calls: setProgress(fn) (fn(stage, done, total) every 256 steps; a false return cancels), grow
+// (stateJson) -> ""/error record, then statsJson() (the CLI's `niwa bark grow --stats` without
+// its timing fields), hash(), stateJson(), boundsJson(), cyclesCsv(), mapPng(map), buffers(group).
+// Does not: simulate, measure or draw anything itself (BarkRun does), make a .glb, keep more than
+// one run, or time itself (the worker does).
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bark/bark_run.h"
+#include "bark/bark_state.h"
+#include "buffers.h"
+#include "error_record.h"
+#include "page_budget.h"
+
+namespace niwa {
+namespace {
+
+using nlohmann::ordered_json;
+
+}  // namespace
+
+// An adapter over core/bark/bark_run.h: one run grown to its cycles, its lattice and maps
+// flattened for the page.
+class BarkLab {
+ public:
+  void setProgress(emscripten::val fn) { progress_ = fn; }
+
+  // Starts the run of the state ({species, model, seed, params: {row: value}}) and grows it to its
+  // cycles and settling: "" or the error record (the last run is kept on error or cancel).
+  std::string grow(const std::string& state_json) {
+    bark::BarkState state;
+    Status s = bark::ApplyBarkStateJson(state_json, &state);
+    if (!s.ok()) return ErrorText(s);
+    Result<bark::BarkRun> started = bark::BarkRun::Start(state, PageBudget());
+    if (!started.ok()) return ErrorText(started.status());
+    bark::BarkRun run = std::move(started).value();
+    std::vector<int32_t> broke_at(run.lattice().springs(), -1);
+    growing_ = &run;
+    growing_broke_at_ = &broke_at;
+    s = run.Advance([&](const run::Progress& p) {
+      NoteBreaks(run, &broke_at);
+      if (progress_.isNull() || progress_.isUndefined()) return true;
+      const emscripten::val going = progress_(std::string(p.phase), p.done, p.total);
+      return !(going.isFalse());
+    });
+    growing_ = nullptr;
+    growing_broke_at_ = nullptr;
+    if (!s.ok()) return ErrorText(s);
+    NoteBreaks(run, &broke_at);
+    run_.emplace(std::move(run));
+    broke_at_ = std::move(broke_at);
+    return "";
+  }
+
+  std::string statsJson() const { return run_ ? run_->StatsJson() : "{}"; }
+  std::string hash() const { return run_ ? run_->Hash("") : ""; }
+  std::string stateJson() const { return run_ ? bark::BarkStateJson(run_->state()) : "{}"; }
+  std::string cyclesCsv() const { return run_ ? run_->CyclesCsv() : ""; }
+
+  // {n_r, n_h, circumference, height (cm, at the end of growth), radius (cm), steps,
+  // steps_per_cycle, cycles, springs {axial, diagonal}, map {width, height}} of the run the
+  // "tile" group shows (the one growing while a progress callback runs).
+  std::string boundsJson() const {
+    const bark::BarkRun* run = Shown();
+    if (!run) return "{}";
+    const bark::Lattice& L = run->lattice();
+    const bark::Growth g = run->growth();
+    ordered_json j;
+    j["n_r"] = L.n_r;
+    j["n_h"] = L.n_h;
+    j["circumference"] = L.circumference() * g.s_theta;
+    j["height"] = L.height() * g.s_z;
+    j["radius"] = L.radius() * g.s_theta;
+    j["steps"] = run->steps();
+    j["steps_per_cycle"] = run->mechanics().steps_per_cycle;
+    j["cycles"] = run->target();
+    j["springs"] = {{"axial", L.axial_count}, {"diagonal", L.springs() - L.axial_count}};
+    if (!growing_) {
+      const bark::BarkMaps& m = run->maps();
+      j["map"] = {{"width", m.base_colour.width}, {"height", m.base_colour.height}};
+    }
+    return JsonText(j);
+  }
+
+  // A map's PNG bytes ("base_colour", "normal", "height", "orm"), or "" with the error in
+  // lastError() (its field: "format").
+  emscripten::val mapPng(const std::string& map) {
+    error_.clear();
+    if (!run_) {
+      error_ = ErrorText(Status::Error("format", "no bark has grown yet"));
+      return emscripten::val::null();
+    }
+    Result<std::string> png = run_->MapPng(map);
+    if (!png.ok()) {
+      error_ = ErrorText(png.status());
+      return emscripten::val::null();
+    }
+    png_ = std::move(png).value();
+    return emscripten::val(emscripten::typed_memory_view(
+        png_.size(), reinterpret_cast<const unsigned char*>(png_.data())));
+  }
+  std::string lastError() const { return error_; }
+
+  emscripten::val buffers(const std::string& group) {
+    NamedBuffers out;
+    if (group == "tile") {
+      const bark::BarkRun* run = Shown();
+      if (!run) return emscripten::val::null();
+      FillTile(*run, growing_ ? *growing_broke_at_ : broke_at_);
+      out.Add("positions", tile_positions_).Add("stretch", tile_stretch_).Add("broken", tile_broken_);
+    } else if (group == "maps") {
+      if (!run_) return emscripten::val::null();
+      const bark::BarkMaps& m = run_->maps();
+      out.Add("base_colour", m.base_colour.pixels).Add("normal", m.normal.pixels).Add("orm", m.orm.pixels);
+    } else {
+      return emscripten::val::null();
+    }
+    return out.ToJs();
+  }
+
+ private:
+  const bark::BarkRun* Shown() const { return growing_ ? growing_ : (run_ ? &*run_ : nullptr); }
+
+  // Springs broken since the last look get the run's current step.
+  static void NoteBreaks(const bark::BarkRun& run, std::vector<int32_t>* broke_at) {
+    const std::vector<uint8_t>& broken = run.surface().broken;
+    for (std::size_t i = 0; i < broken.size(); ++i)
+      if (broken[i] && (*broke_at)[i] < 0) (*broke_at)[i] = run.steps();
+  }
+
+  void FillTile(const bark::BarkRun& run, const std::vector<int32_t>& broke_at) {
+    const bark::Lattice& L = run.lattice();
+    const bark::Surface& s = run.surface();
+    const bark::Growth g = run.growth();
+    const std::size_t tris = L.tri_nodes.size();
+    tile_positions_.resize(tris * 6);
+    tile_stretch_.resize(tris * 3);
+    tile_broken_.resize(tris * 3);
+    for (std::size_t t = 0; t < tris; ++t) {
+      const auto& n = L.tri_nodes[t];
+      const auto& o = L.tri_offsets[t];
+      const int i0 = n[0] / L.n_h, j0 = n[0] % L.n_h;
+      const double x0 = L.x_of(i0) * g.s_theta, z0 = L.z_of(i0, j0) * g.s_z;
+      const double ox[3] = {0, o[0], o[2]}, oz[3] = {0, o[1], o[3]};
+      for (int k = 0; k < 3; ++k) {
+        tile_positions_[6 * t + 2 * k] = static_cast<float>(x0 + ox[k] * g.s_theta + s.ux[n[k]]);
+        tile_positions_[6 * t + 2 * k + 1] =
+            static_cast<float>(z0 + oz[k] * g.s_z + s.uz[n[k]]);
+      }
+      float stretch = 0;
+      int32_t first = -1;
+      for (int e = 0; e < 3; ++e) {
+        const int spring = L.tri_springs[t][e];
+        if (s.broken[spring]) {
+          const int32_t at = broke_at[spring] >= 0 ? broke_at[spring] : run.steps();
+          first = first < 0 ? at : std::min(first, at);
+          continue;
+        }
+        const double limit = std::sqrt(static_cast<double>(s.limit2[spring])) / L.l_o - 1.0;
+        const double strain = bark::SpringStrain(L, s, g, spring);
+        if (limit > 0) stretch = std::max(stretch, static_cast<float>(strain / limit));
+      }
+      stretch = std::clamp(stretch, 0.0f, 1.0f);
+      for (int k = 0; k < 3; ++k) {
+        tile_stretch_[3 * t + k] = stretch;
+        tile_broken_[3 * t + k] = static_cast<float>(first);
+      }
+    }
+  }
+
+  std::optional<bark::BarkRun> run_;
+  std::vector<int32_t> broke_at_;
+  const bark::BarkRun* growing_ = nullptr;
+  std::vector<int32_t>* growing_broke_at_ = nullptr;
+  std::vector<float> tile_positions_, tile_stretch_, tile_broken_;
+  std::string png_, error_;
+  emscripten::val progress_ = emscripten::val::null();
+};
+
+}  // namespace niwa
+
+EMSCRIPTEN_BINDINGS(niwa_bark) {
+  using namespace emscripten;
+  class_<niwa::BarkLab>("BarkLab")
+      .constructor<>()
+      .function("setProgress", &niwa::BarkLab::setProgress)
+      .function("grow", &niwa::BarkLab::grow)
+      .function("statsJson", &niwa::BarkLab::statsJson)
+      .function("hash", &niwa::BarkLab::hash)
+      .function("stateJson", &niwa::BarkLab::stateJson)
+      .function("cyclesCsv", &niwa::BarkLab::cyclesCsv)
+      .function("boundsJson", &niwa::BarkLab::boundsJson)
+      .function("mapPng", &niwa::BarkLab::mapPng)
+      .function("lastError", &niwa::BarkLab::lastError)
+      .function("buffers", &niwa::BarkLab::buffers);
+}
