@@ -185,7 +185,10 @@ void RecordTrunkYear(const Tree& tree, TrunkHistory* history) {
 
 BarkHeightRange BarkHeights(const TrunkHistory& history) {
   BarkHeightRange range;
-  if (history.years.size() >= 2) range.max = history.years[history.years.size() - 2].top_m;
+  // Whole millimetres, so the range prints short and its bound is itself valid.
+  if (history.years.size() >= 2) {
+    range.max = std::floor(history.years[history.years.size() - 2].top_m * 1000) / 1000;
+  }
   return range;
 }
 
