@@ -62,6 +62,8 @@ Result<BarkFrame> Frame(const bark::BarkRun& run) {
   frame.tile_width_m = run.lattice().circumference() * g.s_theta / kCmPerMetre;
   frame.tile_height_m = run.lattice().height() * g.s_z / kCmPerMetre;
   frame.hash = run.Hash("");
+  frame.colour_pixels = run.maps().base_colour;
+  frame.normal_pixels = run.maps().normal;
   return frame;
 }
 
@@ -299,17 +301,16 @@ bool YoungShoot(int branch_year, int tree_year) {
   return tree_year - branch_year + 1 <= kYoungBarkYears;
 }
 
-BarkParts WrapBark(const Tree& tree, const TreeMesh& mesh, const BarkOnTree& bark) {
-  BarkParts parts;
-  const MeshBuffers& in = mesh.bark;
-  // Each vertex's place in its part, for the indices.
-  std::vector<uint32_t> moved(in.vertex_count(), 0);
-  std::vector<uint8_t> young_vertex(in.vertex_count(), 0);
+namespace {
+
+// Calls wrap(vertex, frame, young, ring) for every bark vertex of every tube, in order.
+template <typename Wrap>
+void ForEachBarkVertex(const Tree& tree, const TreeMesh& mesh, const BarkFrame& old_frame,
+                       const BarkFrame& young_frame, Wrap wrap) {
   for (const TubeRun& run : TubeRuns(mesh)) {
     const Branch& branch = tree.branches[run.branch];
     const bool young = YoungShoot(branch.year, tree.years);
-    const BarkFrame& frame = young ? bark.young_bark : bark.old_bark;
-    MeshBuffers& out = young ? parts.young_bark : parts.old_bark;
+    const BarkFrame& frame = young ? young_frame : old_frame;
     const int n_u = WrapsAround(BranchRadius(branch) / kCmPerMetre, frame.tile_width_m);
     // rings·(sides + 1) ring vertices, then the cap's 1 + sides: count = (rings + 1)(sides + 1).
     const std::size_t rings = branch.nodes.size();
@@ -317,21 +318,45 @@ BarkParts WrapBark(const Tree& tree, const TreeMesh& mesh, const BarkOnTree& bar
     const std::size_t ring_vertices = rings * stride;
     for (std::size_t k = 0; k < run.count; ++k) {
       const std::size_t i = run.first + k;
-      moved[i] = static_cast<uint32_t>(out.vertex_count());
-      young_vertex[i] = young ? 1 : 0;
-      for (int c = 0; c < 3; ++c) {
-        out.positions.push_back(in.positions[3 * i + c]);
-        out.normals.push_back(in.normals[3 * i + c]);
-      }
-      float u = in.uvs[2 * i], v = in.uvs[2 * i + 1];
+      float u = mesh.bark.uvs[2 * i], v = mesh.bark.uvs[2 * i + 1];
       if (k < ring_vertices) {
         u = static_cast<float>(static_cast<double>(u) * n_u);
         v = static_cast<float>(static_cast<double>(v) / frame.tile_height_m);
       }
-      out.uvs.push_back(u);
-      out.uvs.push_back(v);
+      wrap(i, young, u, v);
     }
   }
+}
+
+}  // namespace
+
+std::vector<float> WrapBarkUvs(const Tree& tree, const TreeMesh& mesh, const BarkFrame& frame) {
+  std::vector<float> uvs(mesh.bark.uvs.size(), 0.0f);
+  ForEachBarkVertex(tree, mesh, frame, frame, [&](std::size_t i, bool, float u, float v) {
+    uvs[2 * i] = u;
+    uvs[2 * i + 1] = v;
+  });
+  return uvs;
+}
+
+BarkParts WrapBark(const Tree& tree, const TreeMesh& mesh, const BarkOnTree& bark) {
+  BarkParts parts;
+  const MeshBuffers& in = mesh.bark;
+  // Each vertex's place in its part, for the indices.
+  std::vector<uint32_t> moved(in.vertex_count(), 0);
+  std::vector<uint8_t> young_vertex(in.vertex_count(), 0);
+  ForEachBarkVertex(tree, mesh, bark.old_bark, bark.young_bark,
+                    [&](std::size_t i, bool young, float u, float v) {
+                      MeshBuffers& out = young ? parts.young_bark : parts.old_bark;
+                      moved[i] = static_cast<uint32_t>(out.vertex_count());
+                      young_vertex[i] = young ? 1 : 0;
+                      for (int c = 0; c < 3; ++c) {
+                        out.positions.push_back(in.positions[3 * i + c]);
+                        out.normals.push_back(in.normals[3 * i + c]);
+                      }
+                      out.uvs.push_back(u);
+                      out.uvs.push_back(v);
+                    });
   for (std::size_t t = 0; t + 2 < in.indices.size(); t += 3) {
     MeshBuffers& out = young_vertex[in.indices[t]] ? parts.young_bark : parts.old_bark;
     for (int c = 0; c < 3; ++c) out.indices.push_back(moved[in.indices[t + c]]);

@@ -16,6 +16,7 @@
 #include "bark/bark_state.h"
 #include "base/budget.h"
 #include "base/status.h"
+#include "image/image.h"
 #include "io/gltf_writer.h"
 #include "run/study_run.h"
 #include "tree/mesh.h"
@@ -86,8 +87,9 @@ Result<BarkOnTreePlan> PlanBarkOnTree(const TrunkHistory& history,
 // One frame of bark maps (PNG bytes) and the tile they cover on the trunk.
 struct BarkFrame {
   std::string base_colour, normal, orm, height;
-  double tile_width_m = 0, tile_height_m = 0;  // circumference and height of the grown patch
-  std::string hash;                            // the bark run's share hash
+  double tile_width_m = 0, tile_height_m = 0;      // circumference and height of the grown patch
+  std::string hash;                                // the bark run's share hash
+  image::Rgba8Image colour_pixels, normal_pixels;  // the page's textures (row 0 = v 0)
 };
 struct BarkOnTree {
   BarkOnTreePlan plan;
@@ -113,6 +115,10 @@ struct BarkParts {
   MeshBuffers old_bark, young_bark;
 };
 BarkParts WrapBark(const Tree& tree, const TreeMesh& mesh, const BarkOnTree& bark);
+
+// The bark's ring UVs of one frame for every tube, in the mesh's vertex order (the page's one bark
+// part: its young shoots wear the old frame too); caps keep their disc UVs.
+std::vector<float> WrapBarkUvs(const Tree& tree, const TreeMesh& mesh, const BarkFrame& frame);
 
 // The tree's glTF document (TreeGltfDocument: bark, leaves, flowers) with the bark as the
 // simulated maps: material "bark" (the old frame) and, when any young shoot is drawn, material
