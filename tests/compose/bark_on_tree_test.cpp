@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "bark/bark_params.h"
@@ -173,6 +174,28 @@ TEST(BarkOnTree, EveryRingWrapsTheTileExactly) {
   }
   EXPECT_GT(rings_checked, 100u);
   EXPECT_GE(wraps_seen, 2);  // the trunk's foot is wider than the old tile
+}
+
+// The page's one bark part: WrapBarkUvs wears one frame on every tube, in the mesh's order, the
+// same UVs WrapBark gives when both frames are that one.
+TEST(BarkOnTree, ThePagesUvsWearOneFrameInTheMeshsOrder) {
+  Tree tree;
+  History("sakura", 8, 1.3, &tree);
+  const TreeMesh mesh = BuildTreeMesh(tree);
+  BarkOnTree bark;
+  bark.old_bark.tile_width_m = 0.2;
+  bark.old_bark.tile_height_m = 0.25;
+  bark.young_bark = bark.old_bark;
+  const std::vector<float> uvs = WrapBarkUvs(tree, mesh, bark.old_bark);
+  ASSERT_EQ(uvs.size(), mesh.bark.uvs.size());
+  const BarkParts parts = WrapBark(tree, mesh, bark);
+  std::vector<float> joined = parts.old_bark.uvs;
+  joined.insert(joined.end(), parts.young_bark.uvs.begin(), parts.young_bark.uvs.end());
+  std::vector<float> sorted_a = uvs, sorted_b = joined;
+  std::sort(sorted_a.begin(), sorted_a.end());
+  std::sort(sorted_b.begin(), sorted_b.end());
+  EXPECT_EQ(sorted_a, sorted_b);
+  EXPECT_NE(uvs, mesh.bark.uvs);
 }
 
 // A small tree's bark, run for real: both frames' maps on the .glb's two bark materials.
