@@ -7,6 +7,8 @@
 
 #include "base/echo.h"
 #include "cli_common.h"
+#include "compose/bark_on_tree.h"
+#include "io/gltf_writer.h"
 #include "render/tree_lod.h"
 #include "render/tree_run.h"
 #include "run/field_names.h"
@@ -22,16 +24,50 @@ namespace {
 const FlagRange kSvgSize = {100, 10000, true};
 const FlagRange kZeroOne = {0, 1, true};
 const FlagRange kMaxTriangles = {static_cast<double>(kMinLodTriangles), 100000000, true};
+const FlagRange kBarkHeight = {0, compose::kMaxBarkHeight, false, " (metres above the ground)"};
+const FlagRange kBarkMapSize = {256, 4096, true};
+
+// The bark-on-tree fields (core/compose/bark_on_tree) as the flags that set them.
+const run::FieldNames& BarkFlagNames() {
+  static const run::FieldNames names = {{"bark", "--bark"},
+                                        {"bark_height", "--bark-height"},
+                                        {"bark_species", "--bark-species"},
+                                        {"bark_map_size", "--bark-map-size"}};
+  return names;
+}
 
 struct GrowOptions {
   StateOptions state;
   std::string out_path;
   bool stats = false;
   SvgOptions svg;
-  long max_triangles = -1;  // --max-triangles (render/tree_lod); -1: the full mesh
-  bool lod = false;         // --lod: <name>_LOD0.._LOD2 sibling nodes
-  std::string lod_layout;   // --lod-layout siblings|msft (with --lod)
+  long max_triangles = -1;          // --max-triangles (render/tree_lod); -1: the full mesh
+  bool lod = false;                 // --lod: <name>_LOD0.._LOD2 sibling nodes
+  std::string lod_layout;           // --lod-layout siblings|msft (with --lod)
+  std::string bark = "procedural";  // --bark procedural|sim
+  double bark_height = compose::kDefaultBarkHeight;
+  compose::BarkOnTreeOptions bark_options;  // --bark-species, --bark-map-size (seed: the tree's)
 };
+
+// --bark and its flags, checked before any growth: the value, the flags that need --bark sim, and
+// what sim cannot be made with (a .glb only, the full mesh).
+bool CheckBarkFlags(const GrowOptions& o, const CLI::App& cmd, const std::string& ext) {
+  if (o.bark != "procedural" && o.bark != "sim") {
+    throw BadInput{"--bark: '" + Echo(o.bark) + "' must be procedural or sim"};
+  }
+  const bool sim = o.bark == "sim";
+  for (const char* flag : {"--bark-height", "--bark-species", "--bark-map-size"}) {
+    if (!sim && cmd.count(flag))
+      throw BadInput{std::string(flag) + ": only applies with --bark sim"};
+  }
+  if (!sim) return false;
+  if (ext != ".glb") throw BadInput{"--bark: sim only applies with --out FILE.glb"};
+  if (o.lod || o.max_triangles >= 0) {
+    throw BadInput{"--bark: sim dresses the full .glb; give it without --lod and --max-triangles"};
+  }
+  Check(run::RenameField(compose::CheckBarkOnTreeOptions(o.bark_options), BarkFlagNames()));
+  return true;
+}
 
 // SVG-only drawing options of 'tree grow' (used by scripts/figures).
 void AddSvgOptions(CLI::App* cmd, SvgOptions* o) {
@@ -52,6 +88,31 @@ void AddSvgOptions(CLI::App* cmd, SvgOptions* o) {
   OnlyWith(AddCaptionFlag(cmd, "--caption", &o->caption, "SVG: text under the tree"), "--out", svg);
 }
 
+// --bark sim: the bark study on the trunk's radius history (core/compose/bark_on_tree), its
+// estimate added to the tree's and its export's and refused up front naming --bark, then the
+// tree's .glb dressed in its maps. Errors are BadInput lines naming the --bark flags.
+Result<std::string> BarkGlb(const GrowOptions& o, const Budget& budget,
+                            const TreeExportRequest& request, compose::TrunkHistory* trunk,
+                            TreeRun* run, std::string* bark_json) {
+  compose::RecordTrunkYear(run->tree(), trunk);
+  compose::BarkOnTreeOptions options = o.bark_options;
+  options.seed = run->state().seed;
+  Result<compose::BarkOnTreePlan> plan = compose::PlanBarkOnTree(*trunk, options);
+  Check(run::RenameField(plan.status(), BarkFlagNames()));
+  const Estimate total = run->Held() + run->ExportWork(request) + plan->estimate;
+  const Status fits = CheckEstimate(total, budget, "lower --bark-map-size or --bark-height");
+  if (!fits.ok()) Fail(Status::Error("--bark", fits.message()));
+  Result<compose::BarkOnTree> bark = compose::GrowBarkOnTree(*plan, budget);
+  Check(run::RenameField(bark.status(), BarkFlagNames()));
+  run->BuildBareMesh();
+  Result<gltf::Document> doc = compose::BarkTreeDocument(run->tree(), run->mesh(), *bark);
+  if (!doc.ok()) return doc.status();
+  Result<std::vector<unsigned char>> glb = gltf::WriteGlb(*doc);
+  if (!glb.ok()) return glb.status();
+  *bark_json = compose::BarkOnTreeJson(*bark, trunk->height_m);
+  return std::string(glb->begin(), glb->end());
+}
+
 int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
   // --out's ending and the flags that apply only to one output were checked by the shared flags.
   const std::string ext = Extension(o.out_path);
@@ -64,8 +125,11 @@ int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
       throw BadInput{"--lod-layout: '" + Echo(o.lod_layout) + "' must be siblings or msft"};
     }
   }
+  const bool bark_sim = CheckBarkFlags(o, cmd, ext);
   TreeState state = ResolveTreeState(o.state, cmd);
   const Budget budget = ResolveBudget(o.state.budget);
+  compose::TrunkHistory trunk;  // --bark sim: the trunk's radius at --bark-height, year by year
+  trunk.height_m = o.bark_height;
   Result<TreeRun> started = TreeRun::Start(state, budget);  // core/render/tree_run
   Check(run::RenameField(started.status(), TreeFlagNames()));
   TreeRun& run = *started;
@@ -86,6 +150,7 @@ int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
   Status early;
   const bool check_early = !o.out_path.empty() && state.prunes.empty();
   Status advanced = run.Advance([&](const run::Progress& progress) {
+    if (bark_sim && progress.done >= 1) compose::RecordTrunkYear(run.tree(), &trunk);
     if (!check_early || progress.done == 0 || progress.done >= progress.total) return true;
     const Status fits = run.CheckExport(request);
     if (fits.ok()) return true;
@@ -95,7 +160,8 @@ int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
     return false;
   });
   if (!early.ok()) Fail(run::RenameField(early, TreeFlagNames()));
-  Check(advanced);  // stops early (truncated) at the budget's growth limits
+  std::string bark_json;  // --bark sim: the bark's part of --stats
+  Check(advanced);        // stops early (truncated) at the budget's growth limits
   ReportTruncated(run.tree().truncated_by);
   Check(run::RenameField(run.CheckPrunes(), TreeFlagNames()));
   if (!o.out_path.empty()) {
@@ -107,7 +173,8 @@ int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
     }
     // The export's estimate on top of the grown tree's, refused before it starts.
     Check(run.CheckExport(request));
-    Result<std::string> bytes = run.Export(request);
+    Result<std::string> bytes =
+        bark_sim ? BarkGlb(o, budget, request, &trunk, &run, &bark_json) : run.Export(request);
     if (!bytes.ok()) {
       if (request.kind == TreeExportRequest::Kind::kGlb) {
         throw BadInput{"--out: " + bytes.status().Line()};
@@ -119,7 +186,13 @@ int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
     Check(outputs.Commit());
   }
   // Without an output file the statistics are the output (a bare 'niwa tree grow' prints them).
-  if (o.stats || o.out_path.empty()) out << run.StatsJson() << "\n";
+  if (o.stats || o.out_path.empty()) {
+    std::string stats = run.StatsJson();
+    if (!bark_json.empty() && !stats.empty() && stats.back() == '}') {
+      stats.insert(stats.size() - 1, ",\"bark\":" + bark_json);
+    }
+    out << stats << "\n";
+  }
   // The process ends soon and takes the tree's memory with it: freeing it one branch at a time
   // cost 4.3 M of a fresh sakura-thesis 15-year run's 149 M instructions (issue 17 item 7). The
   // last run is kept, still reachable (RunCli may run many commands in one process, as the unit
@@ -185,6 +258,26 @@ void AddTreeCommands(CLI::App& app, CommandList& commands) {
                "With --lod: siblings (three scene nodes, the default) or msft (LOD0 in the "
                "scene with the MSFT_lod extension naming LOD1 and LOD2: Babylon.js, UnityGLTF)"),
            "--out", {".glb"});
+  OnlyWith(
+      grow->add_option("--bark", grow_options->bark,
+                       "Bark of the .glb: procedural (the default, today's textures) or sim "
+                       "(the bark study run on the trunk's radius history; docs/bark-model.md)"),
+      "--out", {".glb"});
+  OnlyWith(AddNumberFlag(grow, "--bark-height", &grow_options->bark_height, kBarkHeight,
+                         "With --bark sim: metres above the ground where the trunk's radius "
+                         "history is read, " +
+                             RangeHelp(kBarkHeight) +
+                             " and within the trunk's height a year before the last (default 1.3)"),
+           "--out", {".glb"});
+  OnlyWith(grow->add_option("--bark-species", grow_options->bark_options.species,
+                            "With --bark sim: the bark preset (camphor, tallow or pine; default "
+                            "camphor)"),
+           "--out", {".glb"});
+  OnlyWith(
+      AddNumberFlag(grow, "--bark-map-size", &grow_options->bark_options.map_size, kBarkMapSize,
+                    "With --bark sim: width of the bark maps, a power of two, " +
+                        RangeHelp(kBarkMapSize) + " (default 1024)"),
+      "--out", {".glb"});
   commands.push_back(
       {grow,
        [grow, grow_options](std::ostream& out) { return RunGrow(*grow_options, *grow, out); },

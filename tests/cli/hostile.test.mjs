@@ -173,6 +173,21 @@ for (const command of declared.commands) {
     }
   }
 }
+// Values no flag kind declares (a word from a list, a range only the grown tree decides): table rows
+// of a command, its hostile value and the flag its one-line refusal names.
+const CHOSEN = [
+  // tree grow --bark procedural|sim, --bark-height within the trunk's height a year before the last
+  [['tree', 'grow', '--preset', 'binary', '--years', '2', '--out', `${OUT}/o.glb`], '--bark', ['foo', 'SIM', 'sim ', '']],
+  [['tree', 'grow', '--preset', 'binary', '--years', '2', '--out', `${OUT}/o.glb`, '--bark', 'sim'], '--bark-height', ['1.3', '99', '1e-3x']],
+  [['tree', 'grow', '--preset', 'binary', '--years', '1', '--out', `${OUT}/o.glb`, '--bark', 'sim'], '--bark', []],
+  [['tree', 'grow', '--preset', 'binary', '--years', '2', '--out', `${OUT}/o.json`], '--bark', ['sim']],
+  [['tree', 'grow', '--preset', 'binary', '--years', '2', '--out', `${OUT}/o.glb`, '--bark', 'sim'], '--bark-species', ['oak', '']],
+  [['tree', 'grow', '--preset', 'binary', '--years', '2', '--out', `${OUT}/o.glb`, '--bark', 'sim'], '--bark-map-size', ['300', '1000']],
+];
+for (const [args, flag, values] of CHOSEN) {
+  if (!values.length) cases.push({ name: `${args.join(' ')} (refused naming ${flag})`, args, expect: 'refused', names: flag });
+  for (const v of values) cases.push({ name: `${args.slice(0, 2).join(' ')} ${flag} ${JSON.stringify(v)}`, args: [...args, flag, v], expect: 'refused', names: flag });
+}
 // Every table row of every study, through its command's --set and --url.
 let rowTurn = 0;
 for (const study of declared.studies) {

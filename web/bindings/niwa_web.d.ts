@@ -79,6 +79,13 @@ export class TreeSession {
   renderMode(): number;
   hybridView(ex: number, ey: number, ez: number, tx: number, ty: number, tz: number, fovY: number, width: number, height: number): string;
   hybridViewSlot(slot: number, ex: number, ey: number, ez: number, tx: number, ty: number, tz: number, fovY: number, width: number, height: number): string;
+  /** The bark study on the grown tree (core/compose/bark_on_tree): "" or an ErrorRecord as text. */
+  dressBark(): string;
+  undressBark(): void;
+  barkDressed(): boolean;
+  /** {width, height, pixels, digest} of the dressed bark's "bark" | "barkNormal" map, or null. */
+  barkTexture(kind: string): { width: number; height: number; pixels: Uint8Array; digest: string } | null;
+  barkJson(): string;
   delete(): void;
 }
 

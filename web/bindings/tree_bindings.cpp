@@ -39,7 +39,10 @@
 //   swayDuration(), swayWindSpeed(), swayInstances(). buildHybrid() -> "" or error, atlasSize(),
 //   renderMode(), hybridView(ex,ey,ez, tx,ty,tz, fovY, width, height) -> table 4.1 JSON,
 //   hybridViewSlot(slot, ...) with the hysteresis of that slot (0..255). buildGlb() -> "" or error;
-//   paramsJson().
+//   paramsJson(). dressBark() -> "" or the error record: the bark study on the tree as grown
+//   (core/compose/bark_on_tree, 512 px maps, within the page budget): buffers("bark").uvs then wrap
+//   its maps, barkTexture("bark" | "barkNormal") gives them ({width, height, pixels, digest}, null
+//   when not dressed), barkJson() its summary; undressBark() goes back to the procedural bark.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
@@ -54,6 +57,7 @@
 #include <vector>
 
 #include "buffers.h"
+#include "compose/bark_on_tree.h"
 #include "error_record.h"
 #include "light/sun.h"
 #include "page_budget.h"
@@ -72,6 +76,7 @@
 #include "tree/tree_budget.h"
 #include "tree/tree_params.h"
 #include "tree/tree_state.h"
+#include "tree/tree_textures.h"
 
 namespace niwa {
 namespace {
@@ -81,6 +86,10 @@ using nlohmann::ordered_json;
 const TreeMesh kNoMesh;
 const TreeSkin kNoSkin;
 const SwayModel kNoModel;
+// The heights (m) the page reads the trunk at, the first the tree allows: breast height, then
+// lower for a young or small tree (the page has no height control; the CLI's --bark-height).
+constexpr double kPageBarkHeights[] = {compose::kDefaultBarkHeight, 0.5, 0.1, 0.02};
+constexpr int kPageBarkMapSize = 512;
 
 }  // namespace
 
@@ -98,6 +107,7 @@ class TreeSession {
       return;
     }
     run_ = std::make_unique<TreeRun>(std::move(run).value());
+    ResetTrunks();
   }
 
   // The most internodes the page grows and draws: their mesh (about 150 MB of buffers) is built,
@@ -128,6 +138,10 @@ class TreeSession {
     ordered_json stages = ordered_json::array();
     for (Stage stage : {Stage::kGrow, Stage::kMesh, Stage::kSway, Stage::kView}) {
       if (*mask & (1u << static_cast<int>(stage))) stages.push_back(StageName(stage));
+    }
+    if (*mask & (1u << static_cast<int>(Stage::kGrow))) {
+      ResetTrunks();
+      bark_.reset();
     }
     if (*mask != 0) {
       state_ = run_->state();
@@ -163,7 +177,8 @@ class TreeSession {
     const TreeSkin& skin = run_ ? run_->skin() : kNoSkin;
     if (group == "bark") {
       part(mesh.bark, skin.bark);
-      out.Add("uvs", mesh.bark.uvs)
+      if (bark_ && run_) bark_uvs_ = compose::WrapBarkUvs(run_->tree(), mesh, bark_->old_bark);
+      out.Add("uvs", bark_ && run_ ? bark_uvs_ : mesh.bark.uvs)
           .Add("branchIds", mesh.bark_branch_id)
           .Add("branchParents", parents_);
     } else if (group == "leaves") {
@@ -201,7 +216,57 @@ class TreeSession {
   }
 
   // Grows one more year; false when the tree already has all its years (or the state was bad).
-  bool growYear() { return run_ && run_->GrowYear(); }
+  bool growYear() {
+    if (!run_ || !run_->GrowYear()) return false;
+    for (compose::TrunkHistory& trunk : trunks_) compose::RecordTrunkYear(run_->tree(), &trunk);
+    return true;
+  }
+
+  // The bark study on the tree as grown (see JS BINDINGS DESIGN): the first of kPageBarkHeights
+  // the trunk allows, the tree's seed, camphor, 512 px maps, refused over the page budget (field
+  // "bark"). "" or the error record; the session keeps its procedural bark on error.
+  std::string dressBark() {
+    if (!run_) return ErrorRecordJson(NoTree());
+    compose::BarkOnTreeOptions options;
+    options.map_size = kPageBarkMapSize;
+    options.seed = run_->state().seed;
+    Result<compose::BarkOnTreePlan> plan = Status::Error("bark", "no trunk recorded");
+    for (const compose::TrunkHistory& trunk : trunks_) {
+      plan = compose::PlanBarkOnTree(trunk, options);
+      if (plan.ok()) {
+        bark_height_ = trunk.height_m;
+        break;
+      }
+    }
+    if (!plan.ok()) return ErrorRecordJson(plan.status());
+    Result<compose::BarkOnTree> bark = compose::GrowBarkOnTree(*plan, PageBudget());
+    if (!bark.ok()) return ErrorRecordJson(bark.status());
+    bark_ = std::move(bark).value();
+    return "";
+  }
+  void undressBark() {
+    bark_.reset();
+    bark_uvs_.clear();
+  }
+  bool barkDressed() const { return bark_.has_value(); }
+  // {width, height, pixels: Uint8Array RGBA (a copy), digest} of the dressed bark's "bark" (base
+  // colour) or "barkNormal" map; null when not dressed or another kind.
+  emscripten::val barkTexture(const std::string& kind) const {
+    if (!bark_ || (kind != "bark" && kind != "barkNormal")) return emscripten::val::null();
+    const image::Rgba8Image& image =
+        kind == "bark" ? bark_->old_bark.colour_pixels : bark_->old_bark.normal_pixels;
+    emscripten::val view(emscripten::typed_memory_view(image.pixels.size(), image.pixels.data()));
+    emscripten::val out = emscripten::val::object();
+    out.set("width", image.width);
+    out.set("height", image.height);
+    out.set("pixels", emscripten::val::global("Uint8Array").new_(view));
+    out.set("digest", "bark-sim-" + kind + "-" + ImageDigest(image));
+    return out;
+  }
+  // compose::BarkOnTreeJson of the dressed bark, "" when not dressed.
+  std::string barkJson() const {
+    return bark_ ? compose::BarkOnTreeJson(*bark_, bark_height_) : "";
+  }
 
   // Builds the triangle meshes of the tree as grown so far; call before the buffer views. "" or
   // the line naming the page budget the mesh would cross (the mesh is then left empty).
@@ -455,7 +520,20 @@ class TreeSession {
     return "";
   }
 
-  TreeState state_;               // as given (the run holds its own copy)
+  void ResetTrunks() {
+    trunks_.clear();
+    for (double height : kPageBarkHeights) {
+      compose::TrunkHistory trunk;
+      trunk.height_m = height;
+      trunks_.push_back(std::move(trunk));
+    }
+  }
+
+  std::vector<compose::TrunkHistory> trunks_;  // the trunk at kPageBarkHeights, year by year
+  std::optional<compose::BarkOnTree> bark_;    // dressBark's bark
+  double bark_height_ = compose::kDefaultBarkHeight;
+  mutable std::vector<float> bark_uvs_;  // the mesh's bark UVs wrapping bark_'s tile
+  TreeState state_;                      // as given (the run holds its own copy)
   Status error_;                  // why the session has no run (a bad state or a refused start)
   std::unique_ptr<TreeRun> run_;  // core/render/tree_run: growth, mesh, skin, exports, counts
   std::vector<int32_t> parents_;
@@ -512,5 +590,10 @@ EMSCRIPTEN_BINDINGS(niwa_tree) {
       .function("atlasSize", &niwa::TreeSession::atlasSize)
       .function("renderMode", &niwa::TreeSession::renderMode)
       .function("hybridView", &niwa::TreeSession::hybridView)
-      .function("hybridViewSlot", &niwa::TreeSession::hybridViewSlot);
+      .function("hybridViewSlot", &niwa::TreeSession::hybridViewSlot)
+      .function("dressBark", &niwa::TreeSession::dressBark)
+      .function("undressBark", &niwa::TreeSession::undressBark)
+      .function("barkDressed", &niwa::TreeSession::barkDressed)
+      .function("barkTexture", &niwa::TreeSession::barkTexture)
+      .function("barkJson", &niwa::TreeSession::barkJson);
 }

@@ -36,6 +36,7 @@ const ui = {
   prunes: $('prunes'), copyLink: $('copy-link'), resetView: $('reset-view'), embed: $('embed'),
   downloadGlb: $('download-glb'), downloadJson: $('download-json'), downloadPng: $('download-png'),
   shareStatus: $('share-status'), wind: $('wind'), windInfo: $('wind-info'), renderMode: $('render-mode'),
+  bark: $('bark'), barkInfo: $('bark-info'),
   renderTable: $('render-table'), renderCol: $('render-col'), timeFrames: $('time-frames'), cancel: $('cancel'),
 };
 mountStudyNav($('studies'), 'tree');
@@ -83,6 +84,11 @@ const controller = new StudyController({
       motionInFlight = false;
       return true;
     }
+    if (msg.control === 'bark') {  // the simulated bark was refused: the line beside the choice
+      ui.barkInfo.textContent = msg.message;
+      setHooks({ barkError: msg.message });
+      return true;
+    }
     if (msg.control === 'wind') {  // the sway was refused (docs/budgets.md): the line beside Blow
       if (windPlaying) setWind(false);
       ui.windInfo.textContent = msg.message;
@@ -92,7 +98,8 @@ const controller = new StudyController({
     return false;
   },
   // The hash carries the camera after the state; each history entry keeps the year shown.
-  viewHash: () => (renderer ? `&cam=${camera.toHash()}` : ''),
+  // and the Bark choice when simulated (bark=sim: the worker takes it out before the core decodes).
+  viewHash: () => `${renderer ? `&cam=${camera.toHash()}` : ''}${ui.bark.value === 'sim' ? '&bark=sim' : ''}`,
   historyExtra: () => showYear,
   // Back/forward (and undo/redo, which use them) restore the entry's state; a hash typed by the
   // user arrives here too and becomes a new entry.
@@ -352,7 +359,7 @@ function sendUpdate(kind = 'edit') {
   syncScrubber();
   const state = currentState();
   if (kind !== 'scrub' && treeSerial > 0) feedback.stale();
-  const fields = { state };
+  const fields = { state, bark: ui.bark.value };
   if (showYear !== null) fields.until = showYear;
   const request = controller.update(kind === 'edit' || kind === 'prune', fields,
     { done: ['tree'], stage: kind === 'edit' ? undefined : 'grow' });
@@ -423,6 +430,7 @@ worker.on('ready', (msg) => {
   });
   gettingStarted = new GettingStarted($('getting-started'), msg.paramTable, ui.years, openTableRow);
   applyState(msg.decoded.state);
+  ui.bark.value = msg.decoded.bark === 'sim' ? 'sim' : 'procedural';
   notices.set('hash', msg.decoded.notices);
   if (camera.fromHash(msg.decoded.state.camera)) frameNext = false;
   updateUndoButtons();
@@ -431,6 +439,7 @@ worker.on('ready', (msg) => {
 
 worker.on('decoded', (msg) => {
   applyState(msg.state);
+  ui.bark.value = msg.bark === 'sim' ? 'sim' : 'procedural';
   notices.set('hash', msg.notices);
   if (camera.fromHash(msg.state.camera)) frameNext = false;
   sendUpdate('restore');
@@ -483,6 +492,8 @@ worker.on('tree', (msg) => {
   if (!controller.isLatest(msg)) return;
   controller.showWork(false);
   if (history_.base) lastGood = { hash: history_.base, state: latestRequest.state };
+  // The bark texture the tree wears (a simulated one's digest starts 'bark-sim-') and its summary.
+  setHooks({ barkDigest: msg.mesh.textures?.bark?.digest || '', barkStats: msg.stats.bark ? JSON.stringify(msg.stats.bark) : '' });
   notices.set('error', '');
   controller.showFieldError('');
   exportGuard.update(msg.stats, msg.mesh);
@@ -734,6 +745,15 @@ ui.timeFrames.addEventListener('click', async () => {
   } finally {
     ui.timeFrames.disabled = false;
   }
+});
+
+// The Bark choice re-textures the tree grown (a restage: the worker dresses or undresses the
+// session's bark, TreeSession.dressBark); the link carries bark=sim.
+ui.bark.addEventListener('change', () => {
+  if (!panel) return;
+  ui.barkInfo.textContent = '';
+  setHooks({ barkError: '' });
+  scheduleUpdate('view');
 });
 
 // The mode select mirrors the render_mode row (a view-stage edit: the tree is not regrown).

@@ -27,7 +27,8 @@
  *   help: string}} ParamRow
  *
  * @typedef {Envelope & {type: 'decode', hash: string}} DecodeMessage
- *   -> {type: 'decoded', id, client, state: TreeStateJson, notices: string[]}
+ *   -> {type: 'decoded', id, client, state: TreeStateJson, notices: string[], bark: 'procedural'|'sim'}
+ *   (the link's bark=sim is the page's field, taken out before the core decodes the hash)
  */
 
 /**
@@ -38,8 +39,11 @@
  * earliest stage whose rows changed and the ones after it (mesh: re-dressed; sway: re-skinned;
  * view: the hybrid scene rebuilt) and the worker answers without growing (TreeMessage grown:
  * false, with the stages re-done). When the tree would differ (or none was grown) it grows.
+ * `bark` 'sim' (the page's Bark choice): the tree's bark is the bark study's maps
+ * (TreeSession.dressBark; a refusal is an error with control 'bark', the tree sent procedural);
+ * a change of `bark` alone restages the tree grown (dressed or undressed, not regrown).
  * @typedef {Envelope & {type: 'update', state: TreeStateJson, until?: number,
- *   stage?: 'grow'|'mesh'|'sway'|'view'}} UpdateMessage
+ *   stage?: 'grow'|'mesh'|'sway'|'view', bark?: 'procedural'|'sim'}} UpdateMessage
  *   -> HashMessage (state accepted), ProgressMessage (after each year), TreeMessage
  *
  * @typedef {Envelope & {type: 'hash', hash: string}} HashMessage

@@ -54,7 +54,10 @@ export function createHandler(Module, ctx) {
   function takeTextures(session, client, transfer, counts) {
     const look = JSON.parse(session.lookJson());
     const kinds = ['bark', 'barkNormal', 'leaf', 'flower'];
-    const painted = Object.fromEntries(kinds.map((kind) => [kind, texture(kind, look)]));
+    // A dressed session's bark is the bark study's maps (TreeSession.dressBark), not the look's.
+    const dressed = session.barkDressed();
+    const painted = Object.fromEntries(kinds.map((kind) => [kind,
+      dressed && (kind === 'bark' || kind === 'barkNormal') ? session.barkTexture(kind) : texture(kind, look)]));
     const pixels = returned.take(client, 'textures', Object.fromEntries(kinds.map((kind) => [kind, painted[kind].pixels])), transfer, counts);
     const out = { look };
     for (const kind of kinds) {
@@ -83,6 +86,7 @@ export function createHandler(Module, ctx) {
   // stages: the stages a restage re-did (a grow: null).
   function sendTree(id, client, session, grown, stages = null) {
     const stats = JSON.parse(session.statsJson());
+    if (session.barkDressed()) stats.bark = JSON.parse(session.barkJson());
     const transfer = [];
     const buffers = { reused: 0, fresh: 0 };
     const mesh = takeMesh(session, client, transfer, buffers);
@@ -132,14 +136,24 @@ export function createHandler(Module, ctx) {
         post(errorReply(meshError, id, client));
         return;
       }
+      dressBark(session, msg.bark, client);
       if (!sendTree(id, client, session, true)) return;
       stopWind(client);  // the client restarts the wind on the new tree if it is playing
       finished.get(client)?.session.delete();
-      finished.set(client, { session, state, until });
+      finished.set(client, { session, state, until, bark: session.barkDressed() ? 'sim' : 'procedural' });
       keep = true;
     } finally {
       if (!keep) session.delete();
     }
+  }
+
+  // The Bark choice 'sim': the bark study on the session's tree (TreeSession.dressBark); a refusal
+  // (a tree of one year, the page budget) goes beside the choice (control 'bark') and the tree
+  // keeps its procedural bark.
+  function dressBark(session, bark, client) {
+    if (bark !== 'sim') return;
+    const error = errorOf(session.dressBark());
+    if (error) post(errorReply(error, undefined, client, { control: 'bark' }));
   }
 
   // An update of stage mesh, sway or view: the client's last tree with the new state, not grown
@@ -162,6 +176,11 @@ export function createHandler(Module, ctx) {
     post({ type: 'hash', id: msg.id, client, hash: last.session.hash() });
     stopWind(client);  // the sway restarts in the new wind (the client asks when it is playing)
     last.state = msg.state;
+    const bark = msg.bark === 'sim' ? 'sim' : 'procedural';
+    if (bark !== last.bark) {  // the Bark choice: re-texture the tree grown, not regrow it
+      if (bark === 'sim') dressBark(last.session, bark, client); else last.session.undressBark();
+      last.bark = last.session.barkDressed() ? 'sim' : 'procedural';
+    }
     if (answer.stages.length > 0) last.motionHybrid = false;  // the update cleared the hybrid scene
     sendTree(msg.id, client, last.session, false, answer.stages);
   }
@@ -335,7 +354,17 @@ export function createHandler(Module, ctx) {
     post({ type: 'export', id: msg.id, client, format: msg.format, variant: msg.variant, bytes }, [bytes]);
   }
 
-  const decode = (hash) => JSON.parse(Module.decodeHash('tree', String(hash ?? ''), ''));
+  // The link's page field bark=sim|procedural (the Bark choice) is the page's, not the core's: it
+  // is taken out before the core decodes the rest, and returned beside the state.
+  const decode = (hash) => {
+    let bark = 'procedural';
+    const rest = String(hash ?? '').replace(/^#/, '').split('&').filter((pair) => {
+      if (!pair.startsWith('bark=')) return true;
+      bark = pair.slice(5) === 'sim' ? 'sim' : 'procedural';
+      return false;
+    }).join('&');
+    return { ...JSON.parse(Module.decodeHash('tree', rest, '')), bark };
+  };
 
   // The client went away (web/worker/worker.js 'close'): its sway stops, its tree session is
   // deleted and its returned buffers are dropped. Returns what was let go.
@@ -354,8 +383,8 @@ export function createHandler(Module, ctx) {
     ready: (msg) => ({ paramTable, presets: JSON.parse(Module.presetsJson('tree')), decoded: decode(msg.hash) }),
     messages: {
       decode: (msg, client) => {
-        const { state, notices } = decode(msg.hash);
-        post({ type: 'decoded', id: msg.id, client, state, notices });
+        const { state, notices, bark } = decode(msg.hash);
+        post({ type: 'decoded', id: msg.id, client, state, notices, bark });
       },
       // An update of a later stage than 'grow' (the page's controller sends the earliest stage its
       // edits touched) restages the tree grown; the others grow.

@@ -1,0 +1,134 @@
+// The bark study on a grown Niwa tree (issue 30 item 3; ../shared/specs/bark.md §6): the trunk's
+// radius history at a height, the 2-layer bark model run on it (the real circumference, the
+// tree's own radial growth over the last W years), and the tree's .glb re-textured with the maps:
+// the tile wrapped a whole number of times around each branch, v in metres over the tile's height,
+// an earlier year's maps on the young shoots. Part of the composition tier (core/compose includes
+// the tree and bark studies; neither includes it), for `niwa tree grow --bark sim` and the page
+// alike. Does not: grow the tree (the caller's Grower or TreeRun does, calling RecordTrunkYear
+// after each year), change the procedural export (the default .glb keeps its bytes), run the
+// 4-layer model, or name a flag (errors name "bark", "bark_height", "bark_species",
+// "bark_map_size").
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "bark/bark_state.h"
+#include "base/budget.h"
+#include "base/status.h"
+#include "image/image.h"
+#include "io/gltf_writer.h"
+#include "run/study_run.h"
+#include "tree/mesh.h"
+#include "tree/tree.h"
+
+namespace niwa::compose {
+
+constexpr double kDefaultBarkHeight = 1.3;  // m above the ground (breast height)
+constexpr double kMaxBarkHeight = 100;      // m: the flag's static range; the tree's is tighter
+constexpr int kBarkWindow = 4;              // W: growth cycles (years) the bark runs over
+// Shoots of at most this age in years (grown this year: 1) get the young bark (the first cycle's
+// maps); older ones and the trunk the last year's.
+constexpr int kYoungBarkYears = 2;
+
+// The trunk at one height, year by year: the trunk is the seedling shoot and, from each shoot's
+// tip, its thickest living continuation (the tube the mesh tapers into).
+struct TrunkYear {
+  int year = 0;
+  double top_m = 0;      // height of the trunk's top node
+  double radius_cm = 0;  // the trunk's radius at the height (the mesh's linear taper); 0: below
+};
+struct TrunkHistory {
+  double height_m = kDefaultBarkHeight;
+  std::vector<TrunkYear> years;  // ascending, one per year grown (the last: the shown tree)
+};
+
+// The trunk's radius (cm) at height_m of the tree as grown now (0 when the trunk does not reach
+// it) and the top of the trunk (m).
+TrunkYear MeasureTrunk(const Tree& tree, double height_m);
+// Appends the tree's year (no-op when that year is already recorded).
+void RecordTrunkYear(const Tree& tree, TrunkHistory* history);
+
+// The heights the bark may be read at (m): [0, the trunk's top a year before the last], so that
+// at least one year of growth passes at the height. max < 0: the tree grew fewer than two years.
+struct BarkHeightRange {
+  double min = 0, max = -1;
+};
+BarkHeightRange BarkHeights(const TrunkHistory& history);
+
+// What the bark run on the tree will be: the state (species preset, N_R from the real
+// circumference at the window's first year, dR the tree's hoop strain per year over the window,
+// cycles = the window's years), the window's radii, and the two runs' estimate.
+struct BarkOnTreePlan {
+  bark::BarkState state;        // the old bark's run (cycles = window)
+  bark::BarkState young_state;  // the same lattice and seed, one cycle: the young shoots' bark
+  int first_year = 0, last_year = 0;  // r(first_year) .. r(last_year)
+  std::vector<double> radii_cm;       // r(first_year), ..., r(last_year)
+  double hoop_strain = 0;             // r(last)/r(first) − 1, the strain the runs reach
+  bool clamped = false;               // dR above the bark table's range: clamped to its max
+  Estimate estimate;                  // both runs, their maps and the .glb's re-texturing
+};
+
+struct BarkOnTreeOptions {
+  std::string species = "camphor";  // a bark preset (bark::BarkPresetNames)
+  int map_size = 1024;              // the maps' width, a power of two in [256, 4096]
+  uint64_t seed = 1;
+};
+
+// The options' own checks, before any growth: "bark_species" (a bark preset), "bark_map_size" (a
+// power of two in [256, 4096]).
+Status CheckBarkOnTreeOptions(const BarkOnTreeOptions& options);
+
+// The plan for the history's height. Errors: "bark_height" (outside BarkHeights, with the range
+// in metres), "bark" (a tree of fewer than two years), "bark_species", "bark_map_size".
+Result<BarkOnTreePlan> PlanBarkOnTree(const TrunkHistory& history,
+                                      const BarkOnTreeOptions& options);
+
+// One frame of bark maps (PNG bytes) and the tile they cover on the trunk.
+struct BarkFrame {
+  std::string base_colour, normal, orm, height;
+  double tile_width_m = 0, tile_height_m = 0;      // circumference and height of the grown patch
+  std::string hash;                                // the bark run's share hash
+  image::Rgba8Image colour_pixels, normal_pixels;  // the page's textures (row 0 = v 0)
+};
+struct BarkOnTree {
+  BarkOnTreePlan plan;
+  BarkFrame old_bark, young_bark;
+};
+
+// Runs both bark runs of the plan (checked against `budget`: a refusal names "bark"), with the
+// observer seeing the old run's progress then the young one's; a cancel is returned as is.
+Result<BarkOnTree> GrowBarkOnTree(const BarkOnTreePlan& plan, const Budget& budget,
+                                  const run::Observer& observer = nullptr);
+
+// Whole wraps of a tile `tile_width_m` around a branch of radius `radius_m`:
+// max(1, round(2π·r / C_tile)).
+int WrapsAround(double radius_m, double tile_width_m);
+
+// True when the branch (grown in `branch_year`) is young on a tree of `tree_year` years.
+bool YoungShoot(int branch_year, int tree_year);
+
+// The tree mesh's bark split by age (old: index 0, young: index 1), every tube's ring UVs
+// rewritten: u = ring_u · n_u(branch), v = metres along the wood / tile height (its frame's
+// tile); end caps keep their disc UVs.
+struct BarkParts {
+  MeshBuffers old_bark, young_bark;
+};
+BarkParts WrapBark(const Tree& tree, const TreeMesh& mesh, const BarkOnTree& bark);
+
+// The bark's ring UVs of one frame for every tube, in the mesh's vertex order (the page's one bark
+// part: its young shoots wear the old frame too); caps keep their disc UVs.
+std::vector<float> WrapBarkUvs(const Tree& tree, const TreeMesh& mesh, const BarkFrame& frame);
+
+// The tree's glTF document (TreeGltfDocument: bark, leaves, flowers) with the bark as the
+// simulated maps: material "bark" (the old frame) and, when any young shoot is drawn, material
+// "bark_young" as a fourth primitive; base colour, normal, occlusion and metallic-roughness
+// (the ORM map) textures, sampler REPEAT.
+Result<gltf::Document> BarkTreeDocument(const Tree& tree, const TreeMesh& mesh,
+                                        const BarkOnTree& bark);
+
+// {"species", "height_m", "years": [first, last], "radii_cm": [...], "hoop_strain", "N_R", "N_H",
+// "cycles", "dR", "clamped", "tile_cm": [w, h], "young_years", "hash"} for the CLI's stats.
+std::string BarkOnTreeJson(const BarkOnTree& bark, double height_m);
+
+}  // namespace niwa::compose

@@ -1,0 +1,109 @@
+// Bark on a grown tree (issue 30 item 3, core/compose/bark_on_tree): `niwa tree grow --bark sim`
+// gives the same .glb bytes and --stats natively and in WASM (a small tree, 256 px maps), the .glb
+// is validator-clean (Khronos gltf-validator, 0 errors) with materials bark and bark_young carrying
+// base colour, normal and occlusion textures (sampler REPEAT) that are not the procedural ones; the
+// default (no --bark, or --bark procedural) writes the procedural .glb byte for byte; bad values of
+// --bark and its flags are one line naming the flag, exit 2, nothing written.
+import { mkdtempSync, readFileSync, readdirSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { buildName, check, finish, native, requireWasm, root, spawn, wasm, withoutMs } from '../support/cli_pair.mjs';
+
+requireWasm();
+const require = createRequire(join(root, 'package.json'));
+const validatorModule = await import(pathToFileURL(require.resolve('gltf-validator')).href);
+const validator = validatorModule.default ?? validatorModule;
+
+const work = mkdtempSync(join(tmpdir(), 'niwa-tree-bark-'));
+const tree = ['tree', 'grow', '--preset', 'binary', '--years', '6'];
+const sim = ['--bark', 'sim', '--bark-height', '0.02', '--bark-map-size', '256'];
+
+// The JSON chunk and the images (PNG bytes by texture index) of a .glb.
+function parseGlb(bytes) {
+  const jsonLength = bytes.readUInt32LE(12);
+  const json = JSON.parse(bytes.subarray(20, 20 + jsonLength).toString('utf8'));
+  const bin = bytes.subarray(20 + jsonLength + 8);
+  const image = (texture) => {
+    const view = json.bufferViews[json.images[json.textures[texture].source].bufferView];
+    return bin.subarray(view.byteOffset || 0, (view.byteOffset || 0) + view.byteLength);
+  };
+  return { json, image };
+}
+
+// The sim .glb in both builds.
+const got = {};
+for (const cmd of [native, wasm]) {
+  const out = join(work, `sim-${buildName(cmd)}.glb`);
+  const r = spawn(cmd, [...tree, ...sim, '--out', out, '--stats']);
+  check(`--bark sim ${buildName(cmd)}: exit 0`, r.status === 0, r.stderr.trim());
+  got[buildName(cmd)] = { bytes: r.status === 0 ? readFileSync(out) : Buffer.alloc(0),
+    stats: r.status === 0 ? withoutMs(JSON.parse(r.stdout)) : {} };
+}
+check(`--bark sim: native == WASM .glb bytes (${got.native.bytes.length})`,
+  got.native.bytes.length > 0 && got.native.bytes.equals(got.wasm.bytes));
+check('--bark sim: native == WASM --stats (timings aside)', JSON.stringify(got.native.stats) === JSON.stringify(got.wasm.stats));
+const bark = got.native.stats.bark || {};
+check(`--stats bark: ${bark.cycles} cycles over years ${bark.years}, N_R ${bark.N_R} even, radii rising`,
+  bark.cycles === 4 && bark.years?.[1] === 6 && bark.N_R % 2 === 0 &&
+  bark.radii_cm.every((r, i) => i === 0 || r >= bark.radii_cm[i - 1]) && bark.tile_cm[0] > 0);
+
+// Validator-clean, the two bark materials dressed in the maps.
+const report = await validator.validateBytes(new Uint8Array(got.native.bytes), { maxIssues: 50 });
+check('--bark sim .glb: gltf-validator 0 errors', report.issues.numErrors === 0,
+  JSON.stringify(report.issues.messages.filter((m) => m.severity === 0).slice(0, 3)));
+const simGlb = parseGlb(got.native.bytes);
+const procedural = join(work, 'procedural.glb');
+const plain = spawn(native, [...tree, '--out', procedural]);
+check('procedural .glb: exit 0', plain.status === 0, plain.stderr.trim());
+const proceduralGlb = parseGlb(readFileSync(procedural));
+const proceduralBark = proceduralGlb.json.materials.find((m) => m.name === 'bark');
+for (const name of ['bark', 'bark_young']) {
+  const m = simGlb.json.materials.find((x) => x.name === name);
+  const ok = m && m.pbrMetallicRoughness?.baseColorTexture && m.normalTexture && m.occlusionTexture;
+  check(`material ${name}: baseColor, normal and occlusion textures`, Boolean(ok), JSON.stringify(m));
+  if (!ok) continue;
+  const textures = [m.pbrMetallicRoughness.baseColorTexture.index, m.normalTexture.index, m.occlusionTexture.index];
+  const repeat = textures.every((t) => {
+    const s = simGlb.json.samplers[simGlb.json.textures[t].sampler];
+    return s.wrapS === undefined || (s.wrapS === 10497 && (s.wrapT === undefined || s.wrapT === 10497));
+  });
+  check(`material ${name}: sampler REPEAT`, repeat);
+  const colour = simGlb.image(textures[0]);
+  const before = proceduralGlb.image(proceduralBark.pbrMetallicRoughness.baseColorTexture.index);
+  check(`material ${name}: its base colour is not the procedural bark (${colour.length} vs ${before.length} bytes)`, !colour.equals(before));
+  check(`material ${name}: 256 px wide maps`, colour.readUInt32BE(16) === 256);
+}
+check('the young bark is a primitive of its own', simGlb.json.meshes[0].primitives.some(
+  (p) => simGlb.json.materials[p.material].name === 'bark_young'));
+
+// The default keeps its bytes: no --bark and --bark procedural write the same file, in both builds.
+for (const cmd of [native, wasm]) {
+  const out = join(work, `procedural-${buildName(cmd)}.glb`);
+  const r = spawn(cmd, [...tree, '--bark', 'procedural', '--out', out]);
+  check(`--bark procedural ${buildName(cmd)}: the default's bytes`, r.status === 0 && readFileSync(out).equals(readFileSync(procedural)), r.stderr.trim());
+}
+
+// Bad input: one line naming the flag, exit 2, nothing written.
+for (const [args, flag, text] of [
+  [['--bark', 'foo'], '--bark', 'must be procedural or sim'],
+  [['--bark', 'sim', '--bark-height', '5', '--bark-map-size', '256'], '--bark-height', 'must be a number in [0, '],
+  [['--bark', 'sim', '--bark-height', 'nan'], '--bark-height', ''],
+  [['--bark', 'sim', '--bark-height', '-1'], '--bark-height', ''],
+  [['--bark-height', '0.02'], '--bark-height', 'only applies with --bark sim'],
+  [['--bark', 'sim', '--bark-species', 'oak'], '--bark-species', 'camphor, tallow or pine'],
+  [['--bark', 'sim', '--bark-map-size', '300'], '--bark-map-size', 'power of two'],
+  [['--bark', 'sim', '--lod'], '--bark', ''],
+  [['--bark', 'sim', '--bark-height', '0.02', '--bark-map-size', '4096', '--max-memory', '512M'], '--bark', 'the bark'],
+]) {
+  for (const cmd of [native, wasm]) {
+    const dir = mkdtempSync(join(work, 'bad-'));
+    const r = spawn(cmd, [...tree, ...args, '--out', join(dir, 't.glb')]);
+    const lines = r.stderr.trim().split('\n');
+    check(`${args.join(' ')} ${buildName(cmd)}: exit 2, one line naming ${flag}`,
+      r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${flag}:`) && lines[0].includes(text) &&
+      readdirSync(dir).length === 0, r.stderr.trim());
+  }
+}
+finish();

@@ -1,0 +1,237 @@
+// core/compose/bark_on_tree: the trunk's radius history at a height (monotone, from the year the
+// trunk reaches it), the bark plan (N_R from the real circumference, dR the tree's own hoop
+// strain over the window), whole wraps of the tile around every branch (the seam at an integer
+// u), v in tiles, the young shoots on their own material, and the dressed .glb's materials.
+#include "compose/bark_on_tree.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "bark/bark_params.h"
+#include "tree/growth.h"
+#include "tree/presets.h"
+
+namespace niwa::compose {
+namespace {
+
+using bark::BarkParam;
+
+// Grows `preset` year by year, recording the trunk at `height_m`.
+TrunkHistory History(const std::string& preset, int years, double height_m, Tree* tree = nullptr) {
+  GrowRequest r;
+  r.preset = preset;
+  r.params = FindPreset(preset)->params;
+  r.seed = FindPreset(preset)->seed;
+  r.years = years;
+  Grower grower(r);
+  TrunkHistory history;
+  history.height_m = height_m;
+  while (grower.year() < years) {
+    grower.GrowYear();
+    RecordTrunkYear(grower.tree(), &history);
+  }
+  if (tree != nullptr) *tree = grower.TakeTree();
+  return history;
+}
+
+TEST(BarkOnTree, TheTrunksRadiusAtAHeightOnlyGrows) {
+  const TrunkHistory h = History("sakura", 12, 1.3);
+  ASSERT_EQ(h.years.size(), 12u);
+  int reached = 0;
+  for (std::size_t i = 0; i < h.years.size(); ++i) {
+    EXPECT_EQ(h.years[i].year, static_cast<int>(i) + 1);
+    if (i > 0) {
+      // (The top may sink: a leader bends under its load.)
+      EXPECT_GE(h.years[i].radius_cm, h.years[i - 1].radius_cm) << "year " << i + 1;
+    }
+    // The radius is there exactly once the trunk is above the height.
+    EXPECT_EQ(h.years[i].radius_cm > 0, h.years[i].top_m >= 1.3) << "year " << i + 1;
+    if (h.years[i].radius_cm > 0 && reached == 0) reached = h.years[i].year;
+  }
+  ASSERT_GE(reached, 1);
+  EXPECT_GT(h.years.back().radius_cm, h.years[static_cast<std::size_t>(reached) - 1].radius_cm);
+  // Recording the same year twice keeps one entry.
+  TrunkHistory again = h;
+  Tree tree;
+  History("sakura", 12, 1.3, &tree);
+  RecordTrunkYear(tree, &again);
+  EXPECT_EQ(again.years.size(), 12u);
+  // At the ground the radius is the seedling shoot's own.
+  EXPECT_NEAR(MeasureTrunk(tree, 0).radius_cm, BranchRadius(tree.branches[0]), 1e-6);
+}
+
+TEST(BarkOnTree, ThePlanWrapsTheRealCircumferenceAndGrowsByTheTreesStrain) {
+  const TrunkHistory h = History("sakura", 12, 1.3);
+  Result<BarkOnTreePlan> plan = PlanBarkOnTree(h, {});
+  ASSERT_TRUE(plan.ok()) << plan.status().Line();
+  EXPECT_EQ(plan->last_year, 12);
+  EXPECT_EQ(plan->first_year, 12 - kBarkWindow);
+  ASSERT_EQ(plan->radii_cm.size(), static_cast<std::size_t>(kBarkWindow) + 1);
+  const auto& p = plan->state.params;
+  const int n_r = p.GetInt(BarkParam::kNR);
+  EXPECT_EQ(n_r % 2, 0);
+  // The even column count nearest 2π·r(first): within one column pair of the real circumference.
+  const double pitch = std::sqrt(3.0) / 2 * p.Get(BarkParam::kLo);
+  EXPECT_LE(std::fabs(n_r * pitch - 2 * M_PI * plan->radii_cm.front()), pitch + 1e-9);
+  EXPECT_EQ(p.GetInt(BarkParam::kCycles), kBarkWindow);
+  EXPECT_NEAR(p.Get(BarkParam::kDeltaR) * kBarkWindow,
+              plan->radii_cm.back() / plan->radii_cm.front() - 1, 1e-12);
+  EXPECT_FALSE(plan->clamped);
+  // The young run: the same lattice and seed, one cycle.
+  EXPECT_EQ(plan->young_state.params.GetInt(BarkParam::kCycles), 1);
+  EXPECT_EQ(plan->young_state.params.GetInt(BarkParam::kNR), n_r);
+  EXPECT_EQ(plan->young_state.seed, plan->state.seed);
+  EXPECT_GT(plan->estimate.seconds, 0);
+  EXPECT_GT(plan->estimate.memory_bytes, 0);
+}
+
+TEST(BarkOnTree, BadRequestsNameTheirField) {
+  const TrunkHistory h = History("sakura", 12, 1.3);
+  const double top = BarkHeights(h).max;
+  ASSERT_GT(top, 1.3);
+  for (double height : {top + 0.01, -0.5, std::nan("")}) {
+    TrunkHistory t = h;
+    t.height_m = height;
+    Result<BarkOnTreePlan> plan = PlanBarkOnTree(t, {});
+    ASSERT_FALSE(plan.ok()) << height;
+    EXPECT_EQ(plan.status().field(), "bark_height");
+    EXPECT_NE(plan.status().message().find("must be a number in [0, "), std::string::npos)
+        << plan.status().Line();
+  }
+  TrunkHistory one;
+  one.years.push_back({1, 0.5, 0.2});
+  EXPECT_EQ(PlanBarkOnTree(one, {}).status().field(), "bark");
+  BarkOnTreeOptions oak;
+  oak.species = "oak";
+  EXPECT_EQ(PlanBarkOnTree(h, oak).status().field(), "bark_species");
+  for (int size : {300, 128, 8192}) {
+    BarkOnTreeOptions o;
+    o.map_size = size;
+    EXPECT_EQ(CheckBarkOnTreeOptions(o).field(), "bark_map_size") << size;
+  }
+}
+
+TEST(BarkOnTree, TheTileWrapsAWholeNumberOfTimes) {
+  const double c = 0.3;  // m around
+  EXPECT_EQ(WrapsAround(c / (2 * M_PI), c), 1);
+  EXPECT_EQ(WrapsAround(0.001, c), 1);
+  EXPECT_EQ(WrapsAround(2.4 * c / (2 * M_PI), c), 2);
+  EXPECT_EQ(WrapsAround(2.6 * c / (2 * M_PI), c), 3);
+  EXPECT_EQ(WrapsAround(1, 0), 1);
+  EXPECT_TRUE(YoungShoot(12, 12));
+  EXPECT_TRUE(YoungShoot(11, 12));
+  EXPECT_FALSE(YoungShoot(10, 12));
+}
+
+// Every ring of every tube: u runs 0 .. n_u with the seam vertex at exactly n_u (so the tile
+// meets itself), v is the procedural mesh's metres over the frame's tile height, and each branch
+// sits in the part of its age.
+TEST(BarkOnTree, EveryRingWrapsTheTileExactly) {
+  Tree tree;
+  History("sakura", 8, 1.3, &tree);
+  const TreeMesh mesh = BuildTreeMesh(tree);
+  BarkOnTree bark;
+  bark.old_bark.tile_width_m = 0.2;
+  bark.old_bark.tile_height_m = 0.25;
+  bark.young_bark.tile_width_m = 0.15;
+  bark.young_bark.tile_height_m = 0.24;
+  const BarkParts parts = WrapBark(tree, mesh, bark);
+  EXPECT_EQ(parts.old_bark.vertex_count() + parts.young_bark.vertex_count(),
+            mesh.bark.vertex_count());
+  EXPECT_EQ(parts.old_bark.indices.size() + parts.young_bark.indices.size(),
+            mesh.bark.indices.size());
+  ASSERT_GT(parts.young_bark.vertex_count(), 0u);
+  ASSERT_GT(parts.old_bark.vertex_count(), 0u);
+  // Walk the input's tubes in order, as WrapBark places them.
+  std::size_t at[2] = {0, 0};
+  std::size_t i = 0, rings_checked = 0;
+  int wraps_seen = 0;
+  while (i < mesh.bark.vertex_count()) {
+    const uint32_t id = mesh.bark_branch_id[i];
+    std::size_t n = 0;
+    while (i + n < mesh.bark.vertex_count() && mesh.bark_branch_id[i + n] == id) ++n;
+    const Branch& branch = tree.branches[id];
+    const bool young = YoungShoot(branch.year, tree.years);
+    const BarkFrame& frame = young ? bark.young_bark : bark.old_bark;
+    const MeshBuffers& out = young ? parts.young_bark : parts.old_bark;
+    const int n_u = WrapsAround(BranchRadius(branch) / 100, frame.tile_width_m);
+    wraps_seen = std::max(wraps_seen, n_u);
+    const std::size_t rings = branch.nodes.size(), stride = n / (rings + 1);
+    ASSERT_EQ(n, (rings + 1) * stride);
+    for (std::size_t r = 0; r < rings; ++r) {
+      const std::size_t first = at[young] + r * stride, seam = first + stride - 1;
+      EXPECT_EQ(out.uvs[2 * first], 0.0f);
+      EXPECT_EQ(out.uvs[2 * seam], static_cast<float>(n_u)) << "branch " << id << " ring " << r;
+      EXPECT_EQ(std::floor(out.uvs[2 * seam]), out.uvs[2 * seam]);
+      const float v_metres = mesh.bark.uvs[2 * (i + r * stride) + 1];
+      EXPECT_FLOAT_EQ(out.uvs[2 * first + 1], static_cast<float>(v_metres / frame.tile_height_m));
+      ++rings_checked;
+    }
+    at[young] += n;
+    i += n;
+  }
+  EXPECT_GT(rings_checked, 100u);
+  EXPECT_GE(wraps_seen, 2);  // the trunk's foot is wider than the old tile
+}
+
+// The page's one bark part: WrapBarkUvs wears one frame on every tube, in the mesh's order, the
+// same UVs WrapBark gives when both frames are that one.
+TEST(BarkOnTree, ThePagesUvsWearOneFrameInTheMeshsOrder) {
+  Tree tree;
+  History("sakura", 8, 1.3, &tree);
+  const TreeMesh mesh = BuildTreeMesh(tree);
+  BarkOnTree bark;
+  bark.old_bark.tile_width_m = 0.2;
+  bark.old_bark.tile_height_m = 0.25;
+  bark.young_bark = bark.old_bark;
+  const std::vector<float> uvs = WrapBarkUvs(tree, mesh, bark.old_bark);
+  ASSERT_EQ(uvs.size(), mesh.bark.uvs.size());
+  const BarkParts parts = WrapBark(tree, mesh, bark);
+  std::vector<float> joined = parts.old_bark.uvs;
+  joined.insert(joined.end(), parts.young_bark.uvs.begin(), parts.young_bark.uvs.end());
+  std::vector<float> sorted_a = uvs, sorted_b = joined;
+  std::sort(sorted_a.begin(), sorted_a.end());
+  std::sort(sorted_b.begin(), sorted_b.end());
+  EXPECT_EQ(sorted_a, sorted_b);
+  EXPECT_NE(uvs, mesh.bark.uvs);
+}
+
+// A small tree's bark, run for real: both frames' maps on the .glb's two bark materials.
+TEST(BarkOnTree, TheDressedGlbCarriesBothFrames) {
+  Tree tree;
+  const TrunkHistory h = History("binary", 6, 0.02, &tree);
+  BarkOnTreeOptions options;
+  options.map_size = 256;
+  Result<BarkOnTreePlan> plan = PlanBarkOnTree(h, options);
+  ASSERT_TRUE(plan.ok()) << plan.status().Line();
+  Result<BarkOnTree> bark = GrowBarkOnTree(*plan, Budget{});
+  ASSERT_TRUE(bark.ok()) << bark.status().Line();
+  EXPECT_NE(bark->old_bark.base_colour, bark->young_bark.base_colour);
+  EXPECT_GT(bark->old_bark.tile_width_m, bark->young_bark.tile_width_m);  // grown around
+  Result<gltf::Document> doc = BarkTreeDocument(tree, BuildTreeMesh(tree), *bark);
+  ASSERT_TRUE(doc.ok()) << doc.status().Line();
+  int dressed = 0;
+  for (const gltf::Material& m : doc->materials) {
+    if (m.name != "bark" && m.name != "bark_young") continue;
+    ++dressed;
+    ASSERT_GE(m.base_color_texture, 0);
+    ASSERT_GE(m.normal_texture, 0);
+    ASSERT_GE(m.occlusion_texture, 0);
+    const BarkFrame& frame = m.name == "bark" ? bark->old_bark : bark->young_bark;
+    const gltf::Texture& colour = doc->textures[static_cast<std::size_t>(m.base_color_texture)];
+    EXPECT_EQ(std::string(colour.png.begin(), colour.png.end()), frame.base_colour);
+    EXPECT_EQ(colour.wrap_s, gltf::Wrap::kRepeat);
+    EXPECT_EQ(colour.wrap_t, gltf::Wrap::kRepeat);
+  }
+  EXPECT_EQ(dressed, 2);
+  EXPECT_TRUE(gltf::WriteGlb(*doc).ok());
+  // Too small a budget: refused naming "bark" before any step.
+  Budget tight;
+  tight.memory_bytes = 1 << 20;
+  EXPECT_EQ(GrowBarkOnTree(*plan, tight).status().field(), "bark");
+}
+
+}  // namespace
+}  // namespace niwa::compose
