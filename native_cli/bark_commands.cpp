@@ -19,6 +19,7 @@
 #include "bark/bark_run.h"
 #include "bark/bark_state.h"
 #include "bark/layers.h"
+#include "base/echo.h"
 #include "cli_common.h"
 #include "params/param_text.h"
 #include "run/field_names.h"
@@ -85,10 +86,15 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   const bark::BarkState state = ResolveBarkState(o);
   const Budget budget = ResolveBudget(o.budget);
   if (!o.frames.empty()) {
+    // An existing folder, named without climbing out of it (no ".." part: frames land where asked).
+    const std::string wrapped = "/" + o.frames + "/";
     struct stat info;
+    if (wrapped.find("/../") != std::string::npos)
+      Fail(Status::Error("--frames",
+                         "'" + Echo(o.frames) + "' climbs out with '..'; must name a folder"));
     if (stat(o.frames.c_str(), &info) != 0 || !S_ISDIR(info.st_mode))
       Fail(Status::Error("--frames",
-                         "'" + o.frames + "' is not a folder; must be an existing folder"));
+                         "'" + Echo(o.frames) + "' is not a folder; must be an existing folder"));
   }
   Result<bark::BarkRun> run = bark::BarkRun::Start(state, budget);
   if (!run.ok()) Fail(run::RenameField(run.status(), kFieldFlags));

@@ -39,6 +39,33 @@ for (const species of ['camphor', 'tallow', 'pine']) {
   check(`${species}: height map 256 wide, power-of-two tall, 16-bit`, w === 256 && (h & (h - 1)) === 0 && depth === 16, `${w}x${h} ${depth}-bit`);
 }
 
+// The 4-layer model (role exchange, peeling, shedding): native == WASM bytes of the stats (timings
+// aside), the maps, the cycles CSV and the frames, for two species; a frame a cycle.
+for (const species of ['pine', 'tallow']) {
+  const got = {};
+  for (const cmd of [native, wasm]) {
+    const dir = join(work, `four-${species}-${buildName(cmd)}`);
+    spawn('mkdir', ['-p', join(dir, 'frames')]);
+    const r = spawn(cmd, ['bark', 'grow', '--species', species, '--model', '4layer', '--size', '32x16', '--cycles', '3', '--seed', '2',
+      '--set', 'T=0.002', '--set', 'cork=0.1', '--set', 'map_size=256', '--stats', '--out', join(dir, 'c.png'), '--height', join(dir, 'h.png'),
+      '--csv', join(dir, 'cycles.csv'), '--frames', join(dir, 'frames')]);
+    check(`4layer ${species} ${buildName(cmd)}: exit 0`, r.status === 0, r.stderr);
+    got[buildName(cmd)] = { stats: r.status === 0 ? stats(r.stdout) : {}, dir };
+  }
+  const a = got.native, b = got.wasm;
+  check(`4layer ${species}: --stats native == WASM (timings aside)`, JSON.stringify(a.stats) === JSON.stringify(b.stats),
+    `${JSON.stringify(a.stats)}\n${JSON.stringify(b.stats)}`);
+  check(`4layer ${species}: model, 2 exchanges, exposed S+M1+M2+I = 1, something shed`, a.stats.model === '4layer' && a.stats.exchanges === 2 &&
+    Math.abs(a.stats.exposed.S + a.stats.exposed.M1 + a.stats.exposed.M2 + a.stats.exposed.I - 1) < 1e-12 && a.stats.shed.area > 0 &&
+    'peeled_fraction' in a.stats, JSON.stringify(a.stats));
+  const frames = readdirSync(join(a.dir, 'frames')).sort();
+  check(`4layer ${species}: a frame a cycle (${frames.join(' ')})`, frames.join(' ') === 'bark_cycle_001.png bark_cycle_002.png bark_cycle_003.png');
+  for (const name of ['c.png', 'h.png', 'cycles.csv', ...frames.map((f) => join('frames', f))]) {
+    const x = readFileSync(join(a.dir, name)), y = readFileSync(join(b.dir, name));
+    check(`4layer ${species} ${name}: native == WASM bytes (${x.length})`, x.length > 0 && x.equals(y));
+  }
+}
+
 // Fig. 7's layout (bark layers): native == WASM bytes of the JSON and the CSV; the surface moves out
 // by ΔR a cycle and r_I ends at R_o + 3·ΔR.
 {
