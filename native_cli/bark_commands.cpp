@@ -8,9 +8,11 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -177,6 +179,40 @@ int RunLayers(const LayersOptions& o, std::ostream& out) {
   return 0;
 }
 
+struct Table3Options {
+  GrowOptions state;
+  std::string seeds = "1-5";
+};
+
+// bark table3: Table 3 of the paper beside the 2-layer model's regions over seeds A..B
+// (bark::Table3Json), one JSON object.
+int RunTable3(const Table3Options& o, std::ostream& out) {
+  const std::size_t dash = o.seeds.find('-');
+  std::optional<double> first, last;
+  if (dash != std::string::npos) {
+    first = ParseNumber(o.seeds.substr(0, dash));
+    last = ParseNumber(o.seeds.substr(dash + 1));
+  }
+  if (!first || !last || *first != std::floor(*first) || *last != std::floor(*last) || *first < 0 ||
+      *last > bark::kMaxBarkSeed || *first > *last || *last - *first >= 20) {
+    Fail(Status::Error("--seeds", "'" + Echo(o.seeds) +
+                                      "' is not A-B; must be two whole seeds in [0, 4294967295], "
+                                      "A <= B, at most 20 of them (e.g. 1-5)"));
+  }
+  std::vector<bark::BarkState> states;
+  for (const char* species : {"camphor", "tallow", "pine"}) {
+    GrowOptions one = o.state;
+    one.species = species;
+    states.push_back(ResolveBarkState(one));
+  }
+  Result<std::string> table =
+      bark::Table3Json(states, static_cast<uint64_t>(*first), static_cast<uint64_t>(*last),
+                       ResolveBudget(o.state.budget));
+  if (!table.ok()) Fail(run::RenameField(table.status(), kFieldFlags));
+  out << *table << "\n";
+  return 0;
+}
+
 void PrintPresets(std::ostream& out) {
   for (const std::string& name : bark::BarkPresetNames()) {
     out << name;
@@ -254,6 +290,23 @@ void AddBarkCommands(CLI::App& app, CommandList& commands) {
                 "Write t, cycle, tau, r_I, the layers' outer radii and birth cycles as .csv");
   commands.push_back(
       {layers, [lo](std::ostream& out) { return RunLayers(*lo, out); }, {"--cycles", "3"}});
+
+  CLI::App* table3 = bark_app->add_subcommand(
+      "table3",
+      "Table 3 of the paper (crack-region sizes of camphor, tallow and pine) beside the 2-layer "
+      "model's, mean and sd over seeds, as one JSON object");
+  auto to = std::make_shared<Table3Options>();
+  table3->add_option("--seeds", to->seeds, "Seeds A-B (at most 20; default 1-5)");
+  table3->add_option(
+      "--size", to->state.size,
+      "Lattice WxH (N_R even, " + RangeHelp(BarkRowRange(BarkParam::kNR)) + "); default 128x64");
+  table3->add_option("--set", to->state.sets,
+                     "KEY=VALUE of the bark table over every species' preset (e.g. dH=0.03: "
+                     "level A)");
+  AddBudgetOptions(table3, &to->state.budget);
+  commands.push_back({table3,
+                      [to](std::ostream& out) { return RunTable3(*to, out); },
+                      {"--seeds", "1-1", "--size", "16x8"}});
 }
 
 }  // namespace niwa::cli

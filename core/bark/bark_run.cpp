@@ -2,8 +2,10 @@
 #include "bark/bark_run.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <utility>
 
 #include "bark/bark_report.h"
@@ -65,6 +67,88 @@ Estimate EstimateBarkRun(const BarkState& state) {
   e.what = "the bark (" + FormatCount(nodes) + " nodes" + (four ? " a layer, 3 layers, " : ", ") +
            FormatCount(steps) + " steps)";
   return e;
+}
+
+Result<std::string> Table3Json(const std::vector<BarkState>& states, uint64_t first_seed,
+                               uint64_t last_seed, const Budget& budget) {
+  struct Paper {
+    const char* species;
+    const char* observed;
+    double mean_w, mean_h, max_w, max_h;  // cm; max_h < 0: "(>20)"
+  };
+  static const Paper kPaper[] = {{"camphor", "1.5 x (>20)", 1.58, 11.6, 2.06, -1},
+                                 {"tallow", "1.5 x 3.0", 1.70, 3.02, 2.08, 3.96},
+                                 {"pine", "3.0 x 7.0", 2.34, 4.28, 3.24, 6.48}};
+  Estimate total;
+  const double seeds = static_cast<double>(last_seed - first_seed + 1);
+  for (const BarkState& s : states) {
+    BarkState two = s;
+    two.model = "2layer";
+    NIWA_RETURN_IF_ERROR(CheckRunnable(two));
+    const Estimate e = EstimateBarkRun(two);
+    total = total + Estimate{e.memory_bytes, e.seconds * seeds, ""};
+  }
+  total.what = "Table 3 (" + FormatCount(seeds * static_cast<double>(states.size())) + " runs)";
+  NIWA_RETURN_IF_ERROR(
+      CheckEstimate(total, budget, "lower the seeds, N_R, N_H, T or settle_steps"));
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (const BarkState& base : states) {
+    const Paper* paper = nullptr;
+    for (const Paper& p : kPaper)
+      if (base.species == p.species) paper = &p;
+    if (!paper)
+      return Status::Error("species", "'" + base.species +
+                                          "' is not in Table 3; must be camphor, "
+                                          "tallow or pine");
+    constexpr int kMeasures = 8;
+    static const char* kNames[kMeasures] = {"mean_w",
+                                            "mean_h",
+                                            "max_w",
+                                            "max_h",
+                                            "intercept_w",
+                                            "intercept_h",
+                                            "vertical_crack_share",
+                                            "closed_fraction"};
+    std::vector<double> values[kMeasures];
+    int strips = 0;
+    for (uint64_t seed = first_seed; seed <= last_seed; ++seed) {
+      BarkState s = base;
+      s.model = "2layer";
+      s.seed = seed;
+      Result<BarkRun> run = BarkRun::Start(s, budget);
+      if (!run.ok()) return run.status();
+      NIWA_RETURN_IF_ERROR(run->Advance({}));
+      const CrackMeasures& c = run->cracks();
+      const double v[kMeasures] = {c.mean_width,           c.mean_height,     c.max_width,
+                                   c.max_height,           c.intercept_width, c.intercept_height,
+                                   c.vertical_crack_share, c.closed_fraction};
+      for (int k = 0; k < kMeasures; ++k) values[k].push_back(v[k]);
+      strips += c.strips;
+    }
+    nlohmann::ordered_json ours;
+    for (int k = 0; k < kMeasures; ++k) {
+      double mean = 0, sd = 0;
+      for (double x : values[k]) mean += x;
+      mean /= static_cast<double>(values[k].size());
+      for (double x : values[k]) sd += (x - mean) * (x - mean);
+      sd = values[k].size() > 1 ? std::sqrt(sd / static_cast<double>(values[k].size() - 1)) : 0.0;
+      ours[kNames[k]] = {{"mean", mean}, {"sd", sd}};
+    }
+    ours["strips"] = strips;
+    nlohmann::ordered_json max_h =
+        paper->max_h < 0 ? nlohmann::ordered_json(">20") : nlohmann::ordered_json(paper->max_h);
+    rows.push_back({{"species", base.species},
+                    {"paper",
+                     {{"observed", paper->observed},
+                      {"mean", {paper->mean_w, paper->mean_h}},
+                      {"max", {paper->max_w, max_h}}}},
+                    {"ours", ours},
+                    {"hash", EncodeBarkHash(base)}});
+  }
+  nlohmann::ordered_json j;
+  j["seeds"] = {first_seed, last_seed};
+  j["rows"] = rows;
+  return j.dump();
 }
 
 Result<BarkRun> BarkRun::Start(const BarkState& state, const Budget& budget) {

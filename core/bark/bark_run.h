@@ -45,6 +45,15 @@ struct BarkSample {
 // and map pixels (calibrated upper bounds; docs/bark-model.md).
 Estimate EstimateBarkRun(const BarkState& state);
 
+// Table 3 of paper 003 measured (spec §4.1, E1): the 2-layer model of each state (one per species,
+// in the paper's order camphor, tallow, pine; their model is taken as 2layer) over seeds
+// first..last, the regions' mean and max width and height, intercepts, vertical-crack share and
+// closed fraction as mean and sample sd over the seeds, beside the paper's observed and experiment
+// numbers, as one JSON object. Every run's estimate is summed and checked before any work (errors
+// name the budget's limit); a species outside the paper's three is named "species".
+Result<std::string> Table3Json(const std::vector<BarkState>& states, uint64_t first_seed,
+                               uint64_t last_seed, const Budget& budget);
+
 class BarkRun : public run::StudyRun {
  public:
   // Checks the state (CheckBarkState, the model) and the estimate against the budget (errors name

@@ -80,6 +80,21 @@ for (const species of ['pine', 'tallow']) {
     Math.abs(j.r_I_end - j.R_o * (1 + 3 * 0.021)) < 1e-9 && j.rows === 34 && Math.abs(j.surface_end - (j.r_I_end + 2)) < 1e-9);
 }
 
+// Table 3 beside the paper's (bark table3): native == WASM bytes, the three species with the paper's numbers.
+{
+  const args = ['bark', 'table3', '--seeds', '1-2', '--size', '16x8'];
+  const a = run(native, args), b = run(wasm, args);
+  check('bark table3: native == WASM bytes', a === b && a.length > 0);
+  const j = JSON.parse(a);
+  check('bark table3: camphor, tallow, pine with the paper\'s means and our mean ± sd over 2 seeds',
+    j.rows.map((r) => r.species).join() === 'camphor,tallow,pine' && j.rows[1].paper.mean[1] === 3.02 && j.rows[0].paper.max[1] === '>20' &&
+    j.rows.every((r) => r.ours.mean_w.mean > 0 && r.ours.mean_w.sd >= 0) && j.seeds.join() === '1,2', a);
+  for (const [bad, flag] of [[['--seeds', '5-1'], '--seeds'], [['--seeds', '1-30'], '--seeds'], [['--set', 'kappa1=9'], '--set']]) {
+    const r = spawn(native, ['bark', 'table3', '--size', '16x8', ...bad]);
+    check(`bark table3 ${bad.join(' ')}: exit 2, one line naming ${flag}`, r.status === 2 && r.stderr.trim().split('\n').length === 1 && r.stderr.startsWith(`niwa: error: ${flag}`), r.stderr.trim());
+  }
+}
+
 // The table and presets in both builds.
 for (const cmd of [native, wasm]) {
   const table = JSON.parse(run(cmd, ['params', 'bark', '--json']));
