@@ -80,9 +80,9 @@ std::vector<ParamSpec> BarkRows() {
        "Peeling-area ratio 剥離領域割合 (Table 4): a closed surface region peels when its area "
        "over its bonded area exceeds A (4-layer model)."},
       {Id(P::kCork), "cork", "d_c/D", "", 1.0, 0.01, 1, false, "peeling", kGrow,
-       "Cork made per cycle as a share of D (spec §1.7, cork per cycle d_c): how far the layers move "
-       "out a cycle (Fig. 7); 1 = the paper's one D. M2's stiffness still follows D·τ (4-layer "
-       "model)."},
+       "Cork made per cycle as a share of D (spec §1.7, cork per cycle d_c): how far the layers "
+       "move out a cycle (Fig. 7); 1 = the paper's one D. M2's stiffness still follows D·τ "
+       "(4-layer model)."},
       // ------------------------------------------------ maps (spec §1.9)
       {Id(P::kMapSize), "map_size", "", "px", 1024, 256, 4096, true, "maps", kMesh,
        "Width of the maps around the trunk (a power of two); the height is the power of two "

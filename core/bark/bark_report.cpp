@@ -46,7 +46,7 @@ std::string BarkStatsJson(const BarkRun& run) {
     const FourLayer& f = run.layers();
     const double area = m.node_area;
     // The inner layer's strains (S's anchors also move out with the cork: its radius is printed).
-    const LayerGrowth lg = LayerGrowthAt(L, f);
+    const LayerGrowth lg = LayerGrowthAt(f);
     j["strain"] = {{"theta", (lg.r_inner - f.m.r_o) / f.m.r_o},
                    {"z", static_cast<double>(g.s_z) - 1.0},
                    {"r_I", lg.r_inner},

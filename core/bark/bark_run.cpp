@@ -213,7 +213,7 @@ Status BarkRun::Update(const BarkState& state) {
 int BarkRun::target() const { return state_.params.GetInt(BarkParam::kCycles); }
 
 Growth BarkRun::GrowthAt(int step) const {
-  if (four_) return LayerGrowthAt(lattice_, *four_).g[kS];  // S at the model's own step
+  if (four_) return LayerGrowthAt(*four_).g[kS];  // S at the model's own step
   const int growth_steps = GrowthSteps(state_, mech_);
   const bool growing = step < growth_steps;
   const double t = (growing ? step : growth_steps) * mech_.dt;
@@ -316,7 +316,7 @@ BarkMaps BarkRun::DrawMaps(int width) const {
   }
   // The visible layer (spec §1.9): S over M1 over M2 over the inner layer, each at its radius.
   const FourLayer& f = *four_;
-  const LayerGrowth lg = LayerGrowthAt(lattice_, f);
+  const LayerGrowth lg = LayerGrowthAt(f);
   const double dc = f.m.cork;
   const double tops[3] = {lg.thickness_m2 + 2 * dc, lg.thickness_m2 + dc, lg.thickness_m2};
   const double thick[3] = {dc, dc, lg.thickness_m2};

@@ -68,8 +68,7 @@ void FormBond(const FourLayerMechanics& m, uint64_t seed, int born, CorkLayer* u
 }
 
 // The layout of cycle k at phase τ ∈ [0, 1], growing or frozen.
-LayerGrowth LayoutAt(const FourLayerMechanics& m, const Lattice& L, int k, double tau,
-                     bool growing) {
+LayerGrowth LayoutAt(const FourLayerMechanics& m, int k, double tau, bool growing) {
   LayerGrowth lg;
   const double dc = m.cork;
   lg.r_inner = m.r_o + m.delta_r * (k + tau);
@@ -82,7 +81,6 @@ LayerGrowth LayoutAt(const FourLayerMechanics& m, const Lattice& L, int k, doubl
   const double rate_mid[3] = {rate_in + dc / m.period, rate_in + dc / m.period,
                               rate_in + dc / (2.0 * m.period)};
   const double ez = m.base.strain_rate_z * (k + tau) * m.period;
-  (void)L;
   for (int r = 0; r < 3; ++r) {
     lg.g[r].s_theta = static_cast<float>(lg.mid[r] / m.r_o);
     lg.g[r].s_z = static_cast<float>(1.0 + ez);
@@ -140,7 +138,7 @@ FourLayer StartFourLayer(const Lattice& L, const FourLayerMechanics& m, uint64_t
   FourLayer f;
   f.m = m;
   f.growth_steps = cycles * m.steps_per_cycle;
-  const LayerGrowth lg = LayoutAt(m, L, 0, 0.0, true);
+  const LayerGrowth lg = LayoutAt(m, 0, 0.0, true);
   // S was born at cycle −2, M1 at −1, M2 at 0 (Fig. 7's roles at t = 0).
   for (int r = 0; r < 3; ++r)
     f.layer[r] = BornLayer(L, m, seed, r - 2, lg.g[r].s_theta, lg.g[r].s_z);
@@ -163,17 +161,17 @@ FourLayer StartFourLayer(const Lattice& L, const FourLayerMechanics& m, uint64_t
   return f;
 }
 
-LayerGrowth LayerGrowthAt(const Lattice& L, const FourLayer& f) {
+LayerGrowth LayerGrowthAt(const FourLayer& f) {
   const bool growing = f.step < f.growth_steps;
   const int t = std::min(f.step, f.growth_steps);
   const double tau = static_cast<double>(t - f.cycle * f.m.steps_per_cycle) / f.m.steps_per_cycle;
-  return LayoutAt(f.m, L, f.cycle, tau, growing);
+  return LayoutAt(f.m, f.cycle, tau, growing);
 }
 
 bool StepFourLayer(const Lattice& L, FourLayer* f) {
   const FourLayerMechanics& m = f->m;
   const Mechanics& b = m.base;
-  const LayerGrowth lg = LayerGrowthAt(L, *f);
+  const LayerGrowth lg = LayerGrowthAt(*f);
   const double th = lg.stiffness_m2;
   // Springs of the three layers (M2's constants scaled by its thickness share).
   int cracked = 0;
@@ -262,7 +260,7 @@ void ExchangeRoles(const Lattice& L, uint64_t seed, FourLayer* f) {
     const double lim = static_cast<double>(s.kappa_h[i]) * f->m.d;
     s.shear_limit2[i] = static_cast<float>(lim * lim);
   }
-  const LayerGrowth lg = LayoutAt(f->m, L, f->cycle, 0.0, true);
+  const LayerGrowth lg = LayoutAt(f->m, f->cycle, 0.0, true);
   f->layer[kM2] = BornLayer(L, f->m, seed, f->cycle, lg.g[kM2].s_theta, lg.g[kM2].s_z);
   FormBond(f->m, seed, f->cycle, &f->layer[kM1]);
 }
@@ -280,7 +278,7 @@ void CheckPeeling(const Lattice& L, FourLayer* f) {
     source[L.b[s]] = 1;
   }
   // Node offsets within η at S's current scale, for even and odd columns.
-  const LayerGrowth lg = LayerGrowthAt(L, *f);
+  const LayerGrowth lg = LayerGrowthAt(*f);
   const double st = lg.g[kS].s_theta, sz = lg.g[kS].s_z;
   const double pitch = L.pitch() * st, lo = L.l_o * sz;
   const int reach_c = static_cast<int>(std::floor(m.eta / pitch)),

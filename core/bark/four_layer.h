@@ -89,7 +89,7 @@ FourLayer StartFourLayer(const Lattice& lattice, const FourLayerMechanics& m, ui
                          int cycles);
 
 // The layout at the model's current step (growth frozen after growth_steps).
-LayerGrowth LayerGrowthAt(const Lattice& lattice, const FourLayer& f);
+LayerGrowth LayerGrowthAt(const FourLayer& f);
 
 // One step of all three layers; every kPeelCheckSteps steps the drying and the area rule (after
 // the step). True when the step ended a growth cycle: the caller then exchanges the roles if

@@ -72,7 +72,7 @@ TEST(FourLayer, RoleExchangeKeepsNodeCountsAndMovesRolesOutward) {
   EXPECT_EQ(PresentNodes(m.f), n);
   EXPECT_EQ(m.f.shed_nodes, present);
   // The layout moved out: S's radius now is where M1's was (continuous through the exchange).
-  const LayerGrowth after = LayerGrowthAt(m.lattice, m.f);
+  const LayerGrowth after = LayerGrowthAt(m.f);
   EXPECT_NEAR(after.mid[kS], m.f.m.r_o + m.f.m.delta_r + 1.5 * m.f.m.cork, 1e-12);
   EXPECT_NEAR(after.mid[kM2], after.r_inner, 1e-12);
 }
@@ -89,7 +89,7 @@ TEST(FourLayer, ANewLayerIsBornStressFreeWithFreshThresholds) {
     EXPECT_EQ(born.s.wz[i], 0.0f);
   }
   // Its springs at their rest lengths: the spring pass gives (next to) no force.
-  const LayerGrowth lg = LayerGrowthAt(m.lattice, m.f);
+  const LayerGrowth lg = LayerGrowthAt(m.f);
   Surface copy = born.s;
   const float k[2] = {1e9f, 1e9f}, c[2] = {0, 0};
   const float rest[2] = {static_cast<float>(born.rest[0]), static_cast<float>(born.rest[1])};
