@@ -1,14 +1,18 @@
 // niwa CLI commands of the bark study (Hirota, Kato, Kaneko, paper 003; core/bark,
-// docs/bark-model.md): 'bark grow' (the 2-layer model grown on a torus patch of the trunk, its
-// maps as PNGs, its cycles as CSV, its statistics as one JSON object), 'bark layers' (Fig. 7's
-// radial layout of the 4-layer model) and the table and presets
-// for 'niwa params bark' and 'niwa presets bark'. A thin adapter over bark::BarkRun: flags into a
-// state, the run, its outputs written all or none, the stats with the CLI's timings.
-// cli-order: 60
+// docs/bark-model.md): 'bark grow' (the 2-layer or 4-layer model grown on a torus patch of the
+// trunk, its maps as PNGs, a frame a cycle, its cycles as CSV, its statistics as one JSON object),
+// 'bark layers' (Fig. 7's radial layout of the 4-layer model) and the table and presets for 'niwa
+// params bark' and 'niwa presets bark'. A thin adapter over bark::BarkRun: flags into a state, the
+// run, its outputs written all or none, the stats with the CLI's timings. cli-order: 60
+#include <sys/stat.h>
+
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -17,6 +21,7 @@
 #include "bark/bark_run.h"
 #include "bark/bark_state.h"
 #include "bark/layers.h"
+#include "base/echo.h"
 #include "cli_common.h"
 #include "params/param_text.h"
 #include "run/field_names.h"
@@ -40,7 +45,7 @@ FlagRange BarkRowRange(BarkParam row) {
 
 struct GrowOptions {
   std::string species, model, size, url, params_file;
-  std::string out, normal, height, orm, csv;
+  std::string out, normal, height, orm, csv, frames;
   std::vector<std::string> sets;
   double seed = -1;  // -1: not given
   int cycles = 0;    // 0: not given (the row starts at 1)
@@ -82,8 +87,20 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   const auto t0 = std::chrono::steady_clock::now();
   const bark::BarkState state = ResolveBarkState(o);
   const Budget budget = ResolveBudget(o.budget);
+  if (!o.frames.empty()) {
+    // An existing folder, named without climbing out of it (no ".." part: frames land where asked).
+    const std::string wrapped = "/" + o.frames + "/";
+    struct stat info;
+    if (wrapped.find("/../") != std::string::npos)
+      Fail(Status::Error("--frames",
+                         "'" + Echo(o.frames) + "' climbs out with '..'; must name a folder"));
+    if (stat(o.frames.c_str(), &info) != 0 || !S_ISDIR(info.st_mode))
+      Fail(Status::Error("--frames",
+                         "'" + Echo(o.frames) + "' is not a folder; must be an existing folder"));
+  }
   Result<bark::BarkRun> run = bark::BarkRun::Start(state, budget);
   if (!run.ok()) Fail(run::RenameField(run.status(), kFieldFlags));
+  run->RecordFrames(!o.frames.empty());
   const auto t1 = std::chrono::steady_clock::now();
   Check(run::RenameField(run->Advance({}), kFieldFlags));
   const auto t2 = std::chrono::steady_clock::now();
@@ -98,6 +115,12 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
     files.push_back({flags[k], *maps[k].first, *png});
   }
   if (!o.csv.empty()) files.push_back({"--csv", o.csv, run->CyclesCsv()});
+  // --frames DIR: bark_cycle_001.png ... one base-colour map a cycle.
+  for (std::size_t k = 0; k < run->FramePngs().size(); ++k) {
+    char name[48];
+    std::snprintf(name, sizeof name, "bark_cycle_%03zu.png", k + 1);
+    files.push_back({"--frames", o.frames + "/" + name, run->FramePngs()[k]});
+  }
   const auto t3 = std::chrono::steady_clock::now();
   StagedOutputs staged;
   for (const OutputFile& f : files) Check(staged.Stage(f.field, f.path, f.bytes));
@@ -156,6 +179,40 @@ int RunLayers(const LayersOptions& o, std::ostream& out) {
   return 0;
 }
 
+struct Table3Options {
+  GrowOptions state;
+  std::string seeds = "1-5";
+};
+
+// bark table3: Table 3 of the paper beside the 2-layer model's regions over seeds A..B
+// (bark::Table3Json), one JSON object.
+int RunTable3(const Table3Options& o, std::ostream& out) {
+  const std::size_t dash = o.seeds.find('-');
+  std::optional<double> first, last;
+  if (dash != std::string::npos) {
+    first = ParseNumber(o.seeds.substr(0, dash));
+    last = ParseNumber(o.seeds.substr(dash + 1));
+  }
+  if (!first || !last || *first != std::floor(*first) || *last != std::floor(*last) || *first < 0 ||
+      *last > bark::kMaxBarkSeed || *first > *last || *last - *first >= 20) {
+    Fail(Status::Error("--seeds", "'" + Echo(o.seeds) +
+                                      "' is not A-B; must be two whole seeds in [0, 4294967295], "
+                                      "A <= B, at most 20 of them (e.g. 1-5)"));
+  }
+  std::vector<bark::BarkState> states;
+  for (const char* species : {"camphor", "tallow", "pine"}) {
+    GrowOptions one = o.state;
+    one.species = species;
+    states.push_back(ResolveBarkState(one));
+  }
+  Result<std::string> table =
+      bark::Table3Json(states, static_cast<uint64_t>(*first), static_cast<uint64_t>(*last),
+                       ResolveBudget(o.state.budget));
+  if (!table.ok()) Fail(run::RenameField(table.status(), kFieldFlags));
+  out << *table << "\n";
+  return 0;
+}
+
 void PrintPresets(std::ostream& out) {
   for (const std::string& name : bark::BarkPresetNames()) {
     out << name;
@@ -178,12 +235,15 @@ void AddBarkCommands(CLI::App& app, CommandList& commands) {
 
   CLI::App* grow = bark_app->add_subcommand(
       "grow",
-      "Grow the 2-layer spring model (paper 003 §3) on a torus patch of the trunk: cracks, maps "
-      "(base colour, normal, 16-bit height, occlusion/roughness) and statistics");
+      "Grow the 2-layer spring model (paper 003 §3) or the 4-layer one (§4: peeling and shedding) "
+      "on a torus patch of the trunk: cracks, maps (base colour, normal, 16-bit height, "
+      "occlusion/roughness) and statistics");
   auto o = std::make_shared<GrowOptions>();
   grow->add_option("--species", o->species,
                    "camphor (default), tallow or pine: Table 2 (niwa presets bark)");
-  grow->add_option("--model", o->model, "2layer (the 4-layer model is not built yet)");
+  grow->add_option("--model", o->model,
+                   "2layer (default; paper §3) or 4layer (§4: S, M1, M2 over the inner layer, "
+                   "role exchange each cycle, peeling by Table 4, shedding)");
   grow->add_option("--size", o->size,
                    "Lattice WxH: N_R columns around (even, " +
                        RangeHelp(BarkRowRange(BarkParam::kNR)) + ") by N_H nodes along (" +
@@ -207,6 +267,9 @@ void AddBarkCommands(CLI::App& app, CommandList& commands) {
                 "Write occlusion (R), roughness (G) and metallic (B) as .png");
   AddOutputFlag(grow, "--csv", &o->csv, {".csv"},
                 "Write broken springs and strains every tenth of a cycle as .csv");
+  grow->add_option("--frames", o->frames,
+                   "Write a base-colour map of each cycle's end into this existing folder "
+                   "(bark_cycle_001.png, ...)");
   AddBudgetOptions(grow, &o->budget);
   commands.push_back({grow, [o](std::ostream& out) { return RunGrow(*o, out); }, example});
 
@@ -227,6 +290,23 @@ void AddBarkCommands(CLI::App& app, CommandList& commands) {
                 "Write t, cycle, tau, r_I, the layers' outer radii and birth cycles as .csv");
   commands.push_back(
       {layers, [lo](std::ostream& out) { return RunLayers(*lo, out); }, {"--cycles", "3"}});
+
+  CLI::App* table3 = bark_app->add_subcommand(
+      "table3",
+      "Table 3 of the paper (crack-region sizes of camphor, tallow and pine) beside the 2-layer "
+      "model's, mean and sd over seeds, as one JSON object");
+  auto to = std::make_shared<Table3Options>();
+  table3->add_option("--seeds", to->seeds, "Seeds A-B (at most 20; default 1-5)");
+  table3->add_option(
+      "--size", to->state.size,
+      "Lattice WxH (N_R even, " + RangeHelp(BarkRowRange(BarkParam::kNR)) + "); default 128x64");
+  table3->add_option("--set", to->state.sets,
+                     "KEY=VALUE of the bark table over every species' preset (e.g. dH=0.03: "
+                     "level A)");
+  AddBudgetOptions(table3, &to->state.budget);
+  commands.push_back({table3,
+                      [to](std::ostream& out) { return RunTable3(*to, out); },
+                      {"--seeds", "1-1", "--size", "16x8"}});
 }
 
 }  // namespace niwa::cli

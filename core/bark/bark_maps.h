@@ -4,8 +4,10 @@
 // space, OpenGL: +y is up the image), 16-bit height and occlusion/roughness/metallic (glTF's
 // ORM packing), exactly tileable around and along the trunk (the lattice is a torus; every pixel
 // and neighbour lookup wraps). Width a power of two in [256, 4096]; height the power of two
-// nearest width·H/C (so texels are near square). Does not: write files (image/png.h), know a
-// tree's UVs, or draw peeled layers (the 4-layer model).
+// nearest width·H/C (so texels are near square). The 4-layer model's maps (DrawLayeredMaps) show
+// the visible layer: S's plates, and where S is cracked or peeled M1's plates, then M2's, then the
+// inner layer, each in its palette (S grey-brown, M1 red-brown, M2 light tan). Does not: write
+// files (image/png.h) or know a tree's UVs.
 #pragma once
 
 #include "bark/lattice.h"
@@ -28,5 +30,22 @@ int MapHeightPx(int width, double circumference_cm, double height_cm);
 // Draws the maps of the surface at growth factors s_θ, s_z, for layer thickness D (cm).
 BarkMaps DrawBarkMaps(const Lattice& lattice, const Surface& surface, const CrackMeasures& cracks,
                       double s_theta, double s_z, double D, int width);
+
+// One layer of a layered drawing.
+struct MapLayer {
+  const Surface* surface = nullptr;
+  const std::vector<int>* tri_region = nullptr;  // plate id of each triangle (MeasureCracks)
+  double s_theta = 1;    // the layer's anchor scale around the trunk (its mid-radius / R_o)
+  double top = 0;        // its top above the inner layer (cm)
+  double thickness = 0;  // its radial thickness (cm): the bevel is 0.3 of it
+  double colour[3] = {0, 0, 0};
+};
+
+// The maps of layers (outermost first) over the inner layer, at the axial growth factor s_z.
+// The map spans the outermost layer's circumference (texel sizes from it); every layer is drawn
+// by angle, so its plates sit over the same (i, j) of the others. Height 65535 = the outermost
+// top; the bevel of each level is its distance to a pixel of a lower level.
+BarkMaps DrawLayeredMaps(const Lattice& lattice, const std::vector<MapLayer>& layers, double s_z,
+                         int width);
 
 }  // namespace niwa::bark

@@ -68,14 +68,21 @@ std::vector<ParamSpec> BarkRows() {
       // ------------------------------------------------ peeling (Table 4; 4-layer model)
       {Id(P::kKappaH), "kappa_h", "κ_h", "", 0.03, 0.001, 1, false, "peeling", kGrow,
        "Critical mean shear strain 限界平均せん断ひずみ between surface and intermediate layer "
-       "(Table 4, no value). Read by the 4-layer model, not built yet."},
+       "(Table 4, no value): an S→M1 shear spring breaks when |slip|/D passes κ_h(1 + σξ) "
+       "(4-layer model)."},
       {Id(P::kEta), "eta", "η", "cm", 0.5, 0, 10, false, "peeling", kGrow,
-       "Drying range 乾燥範囲 (Table 4). Read by the 4-layer model, not built yet."},
+       "Drying range 乾燥範囲 (Table 4): within η of a crack or a peeled part a node's critical "
+       "shear strain decays with time (4-layer model)."},
       {Id(P::kGamma), "gamma", "γ", "", 1.0, 0, 100, false, "peeling", kGrow,
-       "Drying coefficient 乾燥係数 per cycle (Table 4). Read by the 4-layer model, not built "
-       "yet."},
+       "Drying coefficient 乾燥係数 (Table 4): the decay exp(−γ·Δt/T), per cycle (4-layer "
+       "model)."},
       {Id(P::kA), "A", "A", "", 2.0, 1, 100, false, "peeling", kGrow,
-       "Peeling-area ratio 剥離領域割合 (Table 4). Read by the 4-layer model, not built yet."},
+       "Peeling-area ratio 剥離領域割合 (Table 4): a closed surface region peels when its area "
+       "over its bonded area exceeds A (4-layer model)."},
+      {Id(P::kCork), "cork", "d_c/D", "", 1.0, 0.01, 1, false, "peeling", kGrow,
+       "Cork made per cycle as a share of D (spec §1.7, cork per cycle d_c): how far the layers "
+       "move out a cycle (Fig. 7); 1 = the paper's one D. M2's stiffness still follows D·τ "
+       "(4-layer model)."},
       // ------------------------------------------------ maps (spec §1.9)
       {Id(P::kMapSize), "map_size", "", "px", 1024, 256, 4096, true, "maps", kMesh,
        "Width of the maps around the trunk (a power of two); the height is the power of two "

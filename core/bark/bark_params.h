@@ -1,11 +1,11 @@
 // The bark study's parameter table ("bark"; Hirota, Kato, Kaneko c. 1997, paper 003;
 // ../shared/specs/bark.md §2): Table 1's growth and material rows (ρ, σ, D, L_o, T, ΔR, ΔH), Table
 // 2's species constants (E_1, E_2, G, κ̄_1, κ̄_2), Table 4's peeling constants (κ_h, η, γ, A; read
-// by the 4-layer model, not built yet), the lattice (N_R × N_H), growth cycles, settling steps,
-// damping ratios and the maps' size, each with the paper's symbol, unit, range and stage; the
-// species presets camphor, tallow, pine (core/bark/presets/bark_presets.json); the cross-row
-// checks. Does not: simulate (lattice.h, springs.h), draw (bark_maps.h), hold a run's state (seed,
-// model: bark_state.h) or parse text (params/, io/hash_codec).
+// by the 4-layer model) and its cork made per cycle, the lattice (N_R × N_H), growth cycles,
+// settling steps, damping ratios and the maps' size, each with the paper's symbol, unit, range and
+// stage; the species presets camphor, tallow, pine (core/bark/presets/bark_presets.json); the
+// cross-row checks. Does not: simulate (lattice.h, springs.h), draw (bark_maps.h), hold a run's
+// state (seed, model: bark_state.h) or parse text (params/, io/hash_codec).
 #pragma once
 
 #include <string>
@@ -47,6 +47,7 @@ enum class BarkParam : int {
   kEta,
   kGamma,
   kA,
+  kCork,
   // maps (spec §1.9)
   kMapSize,
   kCount

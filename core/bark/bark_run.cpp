@@ -2,8 +2,10 @@
 #include "bark/bark_run.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <utility>
 
 #include "bark/bark_report.h"
@@ -41,17 +43,112 @@ Result<std::string> PngBytes(const Result<std::vector<unsigned char>>& png) {
 
 Estimate EstimateBarkRun(const BarkState& state) {
   const BarkParams& p = state.params;
-  const Mechanics m = MechanicsOf(p);
+  Mechanics m = MechanicsOf(p);
+  // The 4-layer model: three spring layers (each node's three springs and one shear spring), a
+  // shorter step (four_layer.h), the maps of three layers and a frame a cycle at most.
+  const bool four = state.model == "4layer";
+  if (four) {
+    Lattice geometry;
+    geometry.n_r = p.GetInt(BarkParam::kNR);
+    geometry.l_o = p.Get(BarkParam::kLo);
+    m.steps_per_cycle = FourLayerMechanicsOf(p, geometry).steps_per_cycle;
+  }
+  const double layers = four ? 3 : 1;
   const double nodes = static_cast<double>(p.GetInt(BarkParam::kNR)) * p.GetInt(BarkParam::kNH);
   const double steps =
       static_cast<double>(GrowthSteps(state, m)) + p.GetInt(BarkParam::kSettleSteps);
   const double width = p.GetInt(BarkParam::kMapSize);
-  const double pixels = width * 4096;  // the tallest a map can be
+  const double pixels = width * 4096;      // the tallest a map can be
+  const double map_passes = four ? 2 : 1;  // three chamfer passes instead of one, three rasters
   Estimate e;
-  e.memory_bytes = nodes * kBytesPerNode + pixels * kBytesPerMapPixel;
-  e.seconds = 4 * nodes * steps * kSecondsPerSpringStep + pixels * kSecondsPerMapPixel;
-  e.what = "the bark (" + FormatCount(nodes) + " nodes, " + FormatCount(steps) + " steps)";
+  e.memory_bytes = layers * nodes * kBytesPerNode + map_passes * pixels * kBytesPerMapPixel;
+  e.seconds = 4 * layers * nodes * steps * kSecondsPerSpringStep +
+              map_passes * pixels * kSecondsPerMapPixel;
+  e.what = "the bark (" + FormatCount(nodes) + " nodes" + (four ? " a layer, 3 layers, " : ", ") +
+           FormatCount(steps) + " steps)";
   return e;
+}
+
+Result<std::string> Table3Json(const std::vector<BarkState>& states, uint64_t first_seed,
+                               uint64_t last_seed, const Budget& budget) {
+  struct Paper {
+    const char* species;
+    const char* observed;
+    double mean_w, mean_h, max_w, max_h;  // cm; max_h < 0: "(>20)"
+  };
+  static const Paper kPaper[] = {{"camphor", "1.5 x (>20)", 1.58, 11.6, 2.06, -1},
+                                 {"tallow", "1.5 x 3.0", 1.70, 3.02, 2.08, 3.96},
+                                 {"pine", "3.0 x 7.0", 2.34, 4.28, 3.24, 6.48}};
+  Estimate total;
+  const double seeds = static_cast<double>(last_seed - first_seed + 1);
+  for (const BarkState& s : states) {
+    BarkState two = s;
+    two.model = "2layer";
+    NIWA_RETURN_IF_ERROR(CheckRunnable(two));
+    const Estimate e = EstimateBarkRun(two);
+    total = total + Estimate{e.memory_bytes, e.seconds * seeds, ""};
+  }
+  total.what = "Table 3 (" + FormatCount(seeds * static_cast<double>(states.size())) + " runs)";
+  NIWA_RETURN_IF_ERROR(
+      CheckEstimate(total, budget, "lower the seeds, N_R, N_H, T or settle_steps"));
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (const BarkState& base : states) {
+    const Paper* paper = nullptr;
+    for (const Paper& p : kPaper)
+      if (base.species == p.species) paper = &p;
+    if (!paper)
+      return Status::Error("species", "'" + base.species +
+                                          "' is not in Table 3; must be camphor, "
+                                          "tallow or pine");
+    constexpr int kMeasures = 8;
+    static const char* kNames[kMeasures] = {"mean_w",
+                                            "mean_h",
+                                            "max_w",
+                                            "max_h",
+                                            "intercept_w",
+                                            "intercept_h",
+                                            "vertical_crack_share",
+                                            "closed_fraction"};
+    std::vector<double> values[kMeasures];
+    int strips = 0;
+    for (uint64_t seed = first_seed; seed <= last_seed; ++seed) {
+      BarkState s = base;
+      s.model = "2layer";
+      s.seed = seed;
+      Result<BarkRun> run = BarkRun::Start(s, budget);
+      if (!run.ok()) return run.status();
+      NIWA_RETURN_IF_ERROR(run->Advance({}));
+      const CrackMeasures& c = run->cracks();
+      const double v[kMeasures] = {c.mean_width,           c.mean_height,     c.max_width,
+                                   c.max_height,           c.intercept_width, c.intercept_height,
+                                   c.vertical_crack_share, c.closed_fraction};
+      for (int k = 0; k < kMeasures; ++k) values[k].push_back(v[k]);
+      strips += c.strips;
+    }
+    nlohmann::ordered_json ours;
+    for (int k = 0; k < kMeasures; ++k) {
+      double mean = 0, sd = 0;
+      for (double x : values[k]) mean += x;
+      mean /= static_cast<double>(values[k].size());
+      for (double x : values[k]) sd += (x - mean) * (x - mean);
+      sd = values[k].size() > 1 ? std::sqrt(sd / static_cast<double>(values[k].size() - 1)) : 0.0;
+      ours[kNames[k]] = {{"mean", mean}, {"sd", sd}};
+    }
+    ours["strips"] = strips;
+    nlohmann::ordered_json max_h =
+        paper->max_h < 0 ? nlohmann::ordered_json(">20") : nlohmann::ordered_json(paper->max_h);
+    rows.push_back({{"species", base.species},
+                    {"paper",
+                     {{"observed", paper->observed},
+                      {"mean", {paper->mean_w, paper->mean_h}},
+                      {"max", {paper->max_w, max_h}}}},
+                    {"ours", ours},
+                    {"hash", EncodeBarkHash(base)}});
+  }
+  nlohmann::ordered_json j;
+  j["seeds"] = {first_seed, last_seed};
+  j["rows"] = rows;
+  return j.dump();
 }
 
 Result<BarkRun> BarkRun::Start(const BarkState& state, const Budget& budget) {
@@ -70,12 +167,22 @@ void BarkRun::Reset() {
   lattice_ =
       BuildLattice(p.GetInt(BarkParam::kNR), p.GetInt(BarkParam::kNH), p.Get(BarkParam::kLo));
   mech_ = MechanicsOf(p);
-  surface_ = InitialSurface(lattice_, mech_, state_.seed);
+  if (state_.model == "4layer") {
+    const FourLayerMechanics fm = FourLayerMechanicsOf(p, lattice_);
+    mech_.dt = fm.dt;
+    mech_.steps_per_cycle = fm.steps_per_cycle;
+    four_ = StartFourLayer(lattice_, fm, state_.seed, p.GetInt(BarkParam::kCycles));
+    surface_ = Surface();
+  } else {
+    four_.reset();
+    surface_ = InitialSurface(lattice_, mech_, state_.seed);
+  }
+  frames_.clear();
   step_ = 0;
   cycles_done_ = 0;
   settled_ = false;
   samples_.clear();
-  samples_.push_back({});
+  samples_.push_back(four_ ? FourLayerSample() : BarkSample{});
   cracks_.reset();
   maps_.reset();
 }
@@ -106,6 +213,7 @@ Status BarkRun::Update(const BarkState& state) {
 int BarkRun::target() const { return state_.params.GetInt(BarkParam::kCycles); }
 
 Growth BarkRun::GrowthAt(int step) const {
+  if (four_) return LayerGrowthAt(*four_).g[kS];  // S at the model's own step
   const int growth_steps = GrowthSteps(state_, mech_);
   const bool growing = step < growth_steps;
   const double t = (growing ? step : growth_steps) * mech_.dt;
@@ -118,17 +226,19 @@ Growth BarkRun::GrowthAt(int step) const {
 }
 
 double BarkRun::spring_steps() const {
-  return static_cast<double>(lattice_.springs() + lattice_.nodes()) * step_;
+  return (four_ ? 3.0 : 1.0) * static_cast<double>(lattice_.springs() + lattice_.nodes()) * step_;
 }
 
 Status BarkRun::Advance(const run::Observer& observer) {
   if (settled_) return Status::Ok();
+  if (four_) return AdvanceFourLayer(observer);
   const int growth_steps = GrowthSteps(state_, mech_);
   const int total = growth_steps + state_.params.GetInt(BarkParam::kSettleSteps);
   // What a cancel puts back.
   const Surface surface_before = surface_;
   const int step_before = step_, cycles_before = cycles_done_;
   const std::size_t samples_before = samples_.size();
+  const std::size_t frames_before = frames_.size();
   const int sample_every = std::max(1, mech_.steps_per_cycle / 10);
   while (step_ < total) {
     if (observer && step_ % kProgressSteps == 0) {
@@ -139,12 +249,16 @@ Status BarkRun::Advance(const run::Observer& observer) {
         step_ = step_before;
         cycles_done_ = cycles_before;
         samples_.resize(samples_before);
+        frames_.resize(frames_before);
         return run::CancelledStatus();
       }
     }
     Step(lattice_, mech_, GrowthAt(step_), &surface_);
     ++step_;
-    if (step_ <= growth_steps && step_ % mech_.steps_per_cycle == 0) ++cycles_done_;
+    if (step_ <= growth_steps && step_ % mech_.steps_per_cycle == 0) {
+      ++cycles_done_;
+      if (record_frames_) frames_.push_back(FramePng());
+    }
     if ((step_ <= growth_steps && step_ % sample_every == 0) || step_ == total) {
       // The substrate's strains in double (the anchors' float factors, less their rounding).
       const double t = std::min(step_, growth_steps) * mech_.dt;
@@ -183,19 +297,126 @@ Status BarkRun::Advance(const run::Observer& observer) {
 const CrackMeasures& BarkRun::cracks() const {
   if (!cracks_) {
     const Growth g = growth();
-    cracks_ = MeasureCracks(lattice_, surface_, g.s_theta, g.s_z);
+    cracks_ = MeasureCracks(lattice_, surface(), g.s_theta, g.s_z);
   }
   return *cracks_;
 }
 
 const BarkMaps& BarkRun::maps() const {
-  if (!maps_) {
-    const Growth g = growth();
-    maps_ =
-        DrawBarkMaps(lattice_, surface_, cracks(), g.s_theta, g.s_z,
-                     state_.params.Get(BarkParam::kD), state_.params.GetInt(BarkParam::kMapSize));
-  }
+  if (!maps_) maps_ = DrawMaps(state_.params.GetInt(BarkParam::kMapSize));
   return *maps_;
+}
+
+BarkMaps BarkRun::DrawMaps(int width) const {
+  if (!four_) {
+    const Growth g = growth();
+    // Measured afresh: a frame is drawn mid-run, while cracks() keeps the end's measures.
+    return DrawBarkMaps(lattice_, surface_, MeasureCracks(lattice_, surface_, g.s_theta, g.s_z),
+                        g.s_theta, g.s_z, state_.params.Get(BarkParam::kD), width);
+  }
+  // The visible layer (spec §1.9): S over M1 over M2 over the inner layer, each at its radius.
+  const FourLayer& f = *four_;
+  const LayerGrowth lg = LayerGrowthAt(f);
+  const double dc = f.m.cork;
+  const double tops[3] = {lg.thickness_m2 + 2 * dc, lg.thickness_m2 + dc, lg.thickness_m2};
+  const double thick[3] = {dc, dc, lg.thickness_m2};
+  static constexpr double kPalette[3][3] = {
+      {0.40, 0.34, 0.28},  // S: grey-brown (the 2-layer plates)
+      {0.55, 0.30, 0.18},  // M1: red-brown
+      {0.74, 0.60, 0.42},  // M2: light tan
+  };
+  CrackMeasures measures[3];
+  std::vector<MapLayer> layers(3);
+  for (int r = 0; r < 3; ++r) {
+    const Growth& g = lg.g[r];
+    measures[r] = MeasureCracks(lattice_, f.layer[r].s, g.s_theta, g.s_z);
+    MapLayer& m = layers[r];
+    m.surface = &f.layer[r].s;
+    m.tri_region = &measures[r].tri_region;
+    m.s_theta = g.s_theta;
+    m.top = tops[r];
+    m.thickness = thick[r];
+    for (int k = 0; k < 3; ++k) m.colour[k] = kPalette[r][k];
+  }
+  return DrawLayeredMaps(lattice_, layers, lg.g[kS].s_z, width);
+}
+
+std::string BarkRun::FramePng() const {
+  const BarkMaps m = DrawMaps(state_.params.GetInt(BarkParam::kMapSize));
+  const std::vector<image::PngText> text = {
+      {"niwa", "bark " + Hash("") + " cycle " + std::to_string(cycles_done_)}};
+  Result<std::string> png = PngBytes(image::EncodeRgba8Png(m.base_colour, {text}));
+  return png.ok() ? *png : std::string();
+}
+
+Status BarkRun::AdvanceFourLayer(const run::Observer& observer) {
+  FourLayer& f = *four_;
+  const int growth_steps = f.growth_steps;
+  const int total = growth_steps + state_.params.GetInt(BarkParam::kSettleSteps);
+  const FourLayer before = f;
+  const int cycles_before = cycles_done_;
+  const std::size_t samples_before = samples_.size(), frames_before = frames_.size();
+  const int sample_every = std::max(1, f.m.steps_per_cycle / 10);
+  while (f.step < total) {
+    if (observer && f.step % kProgressSteps == 0) {
+      const run::Progress progress{f.step < growth_steps ? "grow" : "settle",
+                                   static_cast<double>(f.step), static_cast<double>(total)};
+      if (!observer(progress)) {
+        f = before;
+        step_ = f.step;
+        cycles_done_ = cycles_before;
+        samples_.resize(samples_before);
+        frames_.resize(frames_before);
+        return run::CancelledStatus();
+      }
+    }
+    // A cycle's end: its sample and frame, then (when another cycle follows) the role exchange
+    // and the sample after it.
+    if (StepFourLayer(lattice_, &f)) {
+      step_ = f.step;
+      ++cycles_done_;
+      samples_.push_back(FourLayerSample());
+      if (record_frames_) frames_.push_back(FramePng());
+      if (f.step < growth_steps) {
+        ExchangeRoles(lattice_, state_.seed, &f);
+        samples_.push_back(FourLayerSample());
+      }
+      if (f.step == total) break;
+      continue;
+    }
+    step_ = f.step;
+    if ((f.step <= growth_steps && f.step % sample_every == 0) || f.step == total)
+      samples_.push_back(FourLayerSample());
+  }
+  settled_ = true;
+  cracks_.reset();
+  maps_.reset();
+  return Status::Ok();
+}
+
+BarkSample BarkRun::FourLayerSample() const {
+  const FourLayer& f = *four_;
+  BarkSample s;
+  const int t = std::min(f.step, f.growth_steps);
+  s.cycle = static_cast<double>(t) / f.m.steps_per_cycle;
+  s.step = f.step;
+  s.strain_theta = f.m.delta_r / f.m.r_o * s.cycle;
+  s.strain_z = f.m.base.strain_rate_z * t * f.m.dt;
+  const Surface& S = f.layer[kS].s;
+  s.broken[0] = S.broken_count[0];
+  s.broken[1] = S.broken_count[1];
+  for (int r = 0; r < 3; ++r)
+    s.broken_role[r] = f.layer[r].s.broken_count[0] + f.layer[r].s.broken_count[1];
+  s.bonds_broken = f.bonds_broken;
+  const int n = lattice_.nodes();
+  s.peeled = static_cast<double>(n - PresentNodes(f)) / n;
+  const std::vector<uint8_t> visible = VisibleLayer(lattice_, f);
+  for (uint8_t v : visible) s.exposed[v] += 1.0;
+  for (double& e : s.exposed) e /= static_cast<double>(visible.size());
+  s.shed_regions = f.shed_regions;
+  s.shed_nodes = f.shed_nodes;
+  s.exchanges = f.cycle;
+  return s;
 }
 
 Result<gltf::Document> BarkRun::Document() const {
@@ -236,6 +457,25 @@ Result<std::string> BarkRun::MapPng(const std::string& map) const {
 }
 
 std::string BarkRun::CyclesCsv() const {
+  if (four_) {
+    std::string out =
+        "cycle,step,exchanges,strain_theta,strain_z,broken_S_axial,broken_S_diagonal,broken_S,"
+        "broken_M1,broken_M2,bonds_broken,peeled_fraction,exposed_S,exposed_M1,exposed_M2,"
+        "exposed_I,shed_regions,shed_area\n";
+    const double area = std::sqrt(3.0) / 2.0 * lattice_.l_o * lattice_.l_o;
+    for (const BarkSample& s : samples_) {
+      out += FormatNumber(s.cycle) + "," + std::to_string(s.step) + "," +
+             std::to_string(s.exchanges) + "," + FormatNumber(s.strain_theta) + "," +
+             FormatNumber(s.strain_z) + "," + std::to_string(s.broken[0]) + "," +
+             std::to_string(s.broken[1]) + "," + std::to_string(s.broken_role[0]) + "," +
+             std::to_string(s.broken_role[1]) + "," + std::to_string(s.broken_role[2]) + "," +
+             std::to_string(s.bonds_broken) + "," + FormatNumber(s.peeled) + "," +
+             FormatNumber(s.exposed[0]) + "," + FormatNumber(s.exposed[1]) + "," +
+             FormatNumber(s.exposed[2]) + "," + FormatNumber(s.exposed[3]) + "," +
+             std::to_string(s.shed_regions) + "," + FormatNumber(s.shed_nodes * area) + "\n";
+    }
+    return out;
+  }
   std::string out = "cycle,step,strain_theta,strain_z,broken_axial,broken_diagonal\n";
   char line[160];
   for (const BarkSample& s : samples_) {

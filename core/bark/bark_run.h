@@ -1,11 +1,13 @@
-// The bark study's run (run::StudyRun, paper 003): the 2-layer model of a BarkState grown cycle by
-// cycle (one cycle = the growth period T; the last followed by the settling steps), with progress
-// in steps and cancel, the estimates checked before any work, the crack measures, the maps (PNG
-// bytes of base colour, normal, 16-bit height and ORM), the stats JSON, a per-tenth-cycle CSV and
-// the share hash. The one pipeline `niwa bark grow` (native_cli/bark_commands.cpp) adapts; the
-// page's session is a later slice. Does not: parse flags, read or write files, time itself (the
-// front end adds ms and ns_per_spring_step), build the 4-layer model, or make a .glb (Parts() is
-// empty and Document() refused: a trunk segment with the maps is a later slice).
+// The bark study's run (run::StudyRun, paper 003): the 2-layer model (springs.h) or the 4-layer
+// model (four_layer.h: role exchange, peeling, shedding) of a BarkState grown cycle by cycle (one
+// cycle = the growth period T; the last followed by the settling steps), with progress in steps
+// and cancel, the estimates checked before any work, the crack measures, the maps (PNG bytes of
+// base colour, normal, 16-bit height and ORM; the 4-layer maps show the visible layer), a base
+// colour frame per cycle on request, the stats JSON, a per-tenth-cycle CSV and the share hash.
+// The one pipeline `niwa bark grow` (native_cli/bark_commands.cpp) adapts; the page's session is
+// a later slice. Does not: parse flags, read or write files, time itself (the front end adds ms
+// and ns_per_spring_step), or make a .glb (Parts() is empty and Document() refused: a trunk
+// segment with the maps is a later slice).
 #pragma once
 
 #include <optional>
@@ -14,6 +16,7 @@
 
 #include "bark/bark_maps.h"
 #include "bark/bark_state.h"
+#include "bark/four_layer.h"
 #include "bark/lattice.h"
 #include "bark/regions.h"
 #include "bark/springs.h"
@@ -28,11 +31,28 @@ struct BarkSample {
   int step = 0;
   double strain_theta = 0, strain_z = 0;
   int broken[2] = {0, 0};
+  // The 4-layer model's columns: springs broken per role (S, M1, M2, both families), S→M1 bonds
+  // broken, peeled share of S, visible share per role (S, M1, M2, inner), shed plates and nodes,
+  // role exchanges done.
+  int broken_role[3] = {0, 0, 0};
+  int bonds_broken = 0;
+  double peeled = 0;
+  double exposed[4] = {0, 0, 0, 0};
+  int shed_regions = 0, shed_nodes = 0, exchanges = 0;
 };
 
 // What the state will cost: memory of the lattice, its state and the maps, and time by spring-steps
 // and map pixels (calibrated upper bounds; docs/bark-model.md).
 Estimate EstimateBarkRun(const BarkState& state);
+
+// Table 3 of paper 003 measured (spec §4.1, E1): the 2-layer model of each state (one per species,
+// in the paper's order camphor, tallow, pine; their model is taken as 2layer) over seeds
+// first..last, the regions' mean and max width and height, intercepts, vertical-crack share and
+// closed fraction as mean and sample sd over the seeds, beside the paper's observed and experiment
+// numbers, as one JSON object. Every run's estimate is summed and checked before any work (errors
+// name the budget's limit); a species outside the paper's three is named "species".
+Result<std::string> Table3Json(const std::vector<BarkState>& states, uint64_t first_seed,
+                               uint64_t last_seed, const Budget& budget);
 
 class BarkRun : public run::StudyRun {
  public:
@@ -62,10 +82,19 @@ class BarkRun : public run::StudyRun {
   Result<std::string> MapPng(const std::string& map) const;
   std::string CyclesCsv() const;
 
+  // Keep a base-colour PNG of each cycle's end (the 4-layer model: before its role exchange),
+  // drawn at map_size, from the next Advance; off by default.
+  void RecordFrames(bool on) { record_frames_ = on; }
+  const std::vector<std::string>& FramePngs() const { return frames_; }
+  bool four_layer() const { return four_.has_value(); }
+  // The 4-layer model's state (four_layer() only).
+  const FourLayer& layers() const { return *four_; }
+
   const BarkState& state() const { return state_; }
   const Lattice& lattice() const { return lattice_; }
   const Mechanics& mechanics() const { return mech_; }
-  const Surface& surface() const { return surface_; }
+  // The surface layer (the 4-layer model's S).
+  const Surface& surface() const { return four_ ? four_->layer[kS].s : surface_; }
   Growth growth() const { return GrowthAt(step_); }
   const CrackMeasures& cracks() const;
   const BarkMaps& maps() const;
@@ -76,6 +105,10 @@ class BarkRun : public run::StudyRun {
  private:
   Growth GrowthAt(int step) const;
   void Reset();
+  Status AdvanceFourLayer(const run::Observer& observer);
+  BarkSample FourLayerSample() const;
+  BarkMaps DrawMaps(int width) const;
+  std::string FramePng() const;
 
   BarkState state_;
   Budget budget_;
@@ -87,6 +120,9 @@ class BarkRun : public run::StudyRun {
   std::vector<BarkSample> samples_;
   mutable std::optional<CrackMeasures> cracks_;
   mutable std::optional<BarkMaps> maps_;
+  std::optional<FourLayer> four_;
+  bool record_frames_ = false;
+  std::vector<std::string> frames_;
 };
 
 }  // namespace niwa::bark

@@ -22,10 +22,8 @@ Status SetBarkSpecies(std::string_view name, BarkState* state) {
 }
 
 Status SetBarkModel(std::string_view name, BarkState* state) {
-  if (name != "2layer") {
-    return Status::Error("model", "'" + Printable(name) +
-                                      "' is not built; must be 2layer (the 4-layer model is the "
-                                      "next slice)");
+  if (name != "2layer" && name != "4layer") {
+    return Status::Error("model", "'" + Printable(name) + "' is unknown; must be 2layer or 4layer");
   }
   state->model = std::string(name);
   return Status::Ok();
@@ -69,7 +67,7 @@ Status ApplyBarkStateJson(const std::string& text, BarkState* state) {
     NIWA_RETURN_IF_ERROR(SetBarkSpecies(j["species"].get<std::string>(), &next));
   }
   if (j.contains("model")) {
-    if (!j["model"].is_string()) return Status::Error("model", "must be 2layer");
+    if (!j["model"].is_string()) return Status::Error("model", "must be 2layer or 4layer");
     NIWA_RETURN_IF_ERROR(SetBarkModel(j["model"].get<std::string>(), &next));
   }
   if (j.contains("seed")) {

@@ -19,14 +19,14 @@ constexpr double kMaxBarkSeed = 4294967295.0;
 
 struct BarkState {
   std::string species = "camphor";
-  std::string model = "2layer";  // "4layer" is the next slice
+  std::string model = "2layer";  // or "4layer"
   uint64_t seed = 1;
   BarkParams params = *BarkPreset("camphor");
 };
 
 // Resets the values to the preset's (BarkPreset); the error names "species".
 Status SetBarkSpecies(std::string_view name, BarkState* state);
-// "2layer" (the only model built); the error names "model".
+// "2layer" or "4layer"; the error names "model".
 Status SetBarkModel(std::string_view name, BarkState* state);
 // A whole number in [0, 4294967295]; the error names "seed".
 Status SetBarkSeed(double seed, BarkState* state);

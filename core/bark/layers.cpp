@@ -37,7 +37,8 @@ std::vector<LayerRadii> LayerTimeline(const BarkParams& p, int cycles, int per_c
   geometry.n_r = p.GetInt(BarkParam::kNR);
   geometry.l_o = p.Get(BarkParam::kLo);
   const double r_o = geometry.radius();
-  const double delta_r = p.Get(BarkParam::kDeltaR) * r_o, d = p.Get(BarkParam::kD);
+  const double delta_r = p.Get(BarkParam::kDeltaR) * r_o;
+  const double d = p.Get(BarkParam::kD) * p.Get(BarkParam::kCork);  // d_c
   const double period = p.Get(BarkParam::kT);
   std::vector<LayerRadii> rows;
   for (int k = 0; k < cycles; ++k) {

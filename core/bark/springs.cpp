@@ -38,35 +38,6 @@ Mechanics MechanicsOf(const BarkParams& p) {
 
 namespace {
 
-// Standard normal deviates by Box-Muller over PCG32, both of each pair used, |ξ| ≤ 3 (redrawn).
-class TruncatedNormal {
- public:
-  explicit TruncatedNormal(uint64_t seed) : rng_(seed, 0xba5eba11u) {}
-  double Next() {
-    for (;;) {
-      if (!has_spare_) {
-        const double u1 = (static_cast<double>(rng_.NextU32()) + 1.0) * (1.0 / 4294967296.0);
-        const double u2 = rng_.Uniform();
-        const double r = std::sqrt(-2.0 * det::Log(u1));
-        double s, c;
-        det::SinCos(2.0 * det::kPi * u2, &s, &c);
-        spare_ = r * s;
-        has_spare_ = true;
-        const double x = r * c;
-        if (std::fabs(x) <= 3.0) return x;
-      } else {
-        has_spare_ = false;
-        if (std::fabs(spare_) <= 3.0) return spare_;
-      }
-    }
-  }
-
- private:
-  Pcg32 rng_;
-  double spare_ = 0;
-  bool has_spare_ = false;
-};
-
 constexpr float kNever = std::numeric_limits<float>::infinity();
 
 constexpr float kTinyLength2 = 1e-12f;  // a floor under l² (two nodes on one point)
@@ -163,7 +134,34 @@ int SpringPass(const Lattice& L, int begin, int end, float k, float c, float l0,
 
 }  // namespace
 
+TruncatedNormal::TruncatedNormal(uint64_t seed, uint64_t stream) : rng_(seed, stream) {}
+
+double TruncatedNormal::Next() {
+  for (;;) {
+    if (!has_spare_) {
+      const double u1 = (static_cast<double>(rng_.NextU32()) + 1.0) * (1.0 / 4294967296.0);
+      const double u2 = rng_.Uniform();
+      const double r = std::sqrt(-2.0 * det::Log(u1));
+      double s, c;
+      det::SinCos(2.0 * det::kPi * u2, &s, &c);
+      spare_ = r * s;
+      has_spare_ = true;
+      const double x = r * c;
+      if (std::fabs(x) <= 3.0) return x;
+    } else {
+      has_spare_ = false;
+      if (std::fabs(spare_) <= 3.0) return spare_;
+    }
+  }
+}
+
 Surface InitialSurface(const Lattice& L, const Mechanics& mech, uint64_t seed) {
+  const double rest[2] = {L.l_o, L.l_o};
+  return BornSurface(L, mech, seed, 0xba5eba11u, rest);
+}
+
+Surface BornSurface(const Lattice& L, const Mechanics& mech, uint64_t seed, uint64_t stream,
+                    const double rest[2]) {
   Surface s;
   const std::size_t n = static_cast<std::size_t>(L.nodes());
   s.ux.assign(n, 0.0f);
@@ -176,12 +174,12 @@ Surface InitialSurface(const Lattice& L, const Mechanics& mech, uint64_t seed) {
   s.on.assign(L.a.size(), 1.0f);
   s.broken.assign(L.a.size(), 0);
 
-  TruncatedNormal normal(seed);
+  TruncatedNormal normal(seed, stream);
   for (int i = 0; i < L.springs(); ++i) {
     const int f = static_cast<int>(L.family(i));
     double excess = (mech.kappa_mean[f] - 1.0) * (1.0 + mech.sigma * normal.Next());
     if (excess < 1e-4) excess = 1e-4;
-    const double limit = (1.0 + excess) * L.l_o;
+    const double limit = (1.0 + excess) * rest[f];
     s.limit2[i] = static_cast<float>(limit * limit);
   }
   return s;
@@ -218,6 +216,15 @@ int Step(const Lattice& L, const Mechanics& mech, const Growth& g, Surface* s) {
     fz[i] = 0.0f;
   }
   return broke;
+}
+
+int SpringForces(const Lattice& L, const float k[2], const float c[2], const float rest[2],
+                 const Growth& g, Surface* s) {
+  const int axial = SpringPass(L, 0, L.axial_count, k[0], c[0], rest[0], g, s);
+  s->broken_count[0] += axial;
+  const int diag = SpringPass(L, L.axial_count, L.springs(), k[1], c[1], rest[1], g, s);
+  s->broken_count[1] += diag;
+  return axial + diag;
 }
 
 double SpringStrain(const Lattice& L, const Surface& s, const Growth& g, int i) {

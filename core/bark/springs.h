@@ -17,6 +17,7 @@
 
 #include "bark/bark_params.h"
 #include "bark/lattice.h"
+#include "random/pcg32.h"
 
 namespace niwa::bark {
 
@@ -54,6 +55,26 @@ struct Surface {
 // drawn in spring order.
 Surface InitialSurface(const Lattice& lattice, const Mechanics& mech, uint64_t seed);
 
+// A layer born at rest whose springs' rest lengths are rest[family] (cm; InitialSurface's are L_o):
+// the break ratios as InitialSurface draws them, from PCG32(seed, stream), each limit
+// (κ_s·rest[family])². The 4-layer model's layers (four_layer.h) are born this way, one stream a
+// birth.
+Surface BornSurface(const Lattice& lattice, const Mechanics& mech, uint64_t seed, uint64_t stream,
+                    const double rest[2]);
+
+// One standard normal deviate after another, |ξ| ≤ 3 (Box-Muller on PCG32(seed, stream), both of
+// each pair used, redrawn past 3): the thresholds' law, for other per-node draws too.
+class TruncatedNormal {
+ public:
+  TruncatedNormal(uint64_t seed, uint64_t stream);
+  double Next();
+
+ private:
+  Pcg32 rng_;
+  double spare_ = 0;
+  bool has_spare_ = false;
+};
+
 // The growth factors of the anchors at a time: s_θ = 1 + ε_θ, s_z = 1 + ε_z, and their rates (0
 // while the inner layer is frozen).
 struct Growth {
@@ -64,6 +85,12 @@ struct Growth {
 // One step: break checks and forces over every spring, then v += dt·F/m, u += dt·v per node.
 // Returns the springs broken in this step.
 int Step(const Lattice& lattice, const Mechanics& mech, const Growth& growth, Surface* surface);
+
+// The spring pass of one step alone (what Step does before its node pass): break checks and
+// forces of both families with constants k, c and rest lengths rest (family 1, 2), the anchors
+// scaled by growth; adds to the force accumulators and broken_count. Returns the springs broken.
+int SpringForces(const Lattice& lattice, const float k[2], const float c[2], const float rest[2],
+                 const Growth& growth, Surface* surface);
 
 // The strain l/L_o − 1 of spring s at the growth (a test's and a report's view).
 double SpringStrain(const Lattice& lattice, const Surface& surface, const Growth& growth, int s);

@@ -77,7 +77,7 @@ TEST(BarkState, JsonRoundTripsAndRefusesBadFields) {
 
   const BarkState before = back;
   EXPECT_EQ(ApplyBarkStateJson(R"({"seed": -5})", &back).field(), "seed");
-  EXPECT_EQ(ApplyBarkStateJson(R"({"model": "4layer"})", &back).field(), "model");
+  EXPECT_EQ(ApplyBarkStateJson(R"({"model": "3layer"})", &back).field(), "model");
   EXPECT_EQ(ApplyBarkStateJson(R"({"species": "oak"})", &back).field(), "species");
   EXPECT_EQ(ApplyBarkStateJson(R"({"params": {"N_R": 65}})", &back).field(), "N_R");
   EXPECT_EQ(ApplyBarkStateJson(R"({"params": {"kappa1": 3}})", &back).field(), "kappa1");

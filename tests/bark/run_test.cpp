@@ -35,7 +35,7 @@ TEST(BarkRun, RefusalsNameTheirFieldBeforeWork) {
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.status().field(), "max_seconds");
   s = Small("pine");
-  s.model = "4layer";
+  s.model = "5layer";
   EXPECT_EQ(BarkRun::Start(s, Budget{}).status().field(), "model");
 }
 

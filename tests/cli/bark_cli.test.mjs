@@ -39,6 +39,33 @@ for (const species of ['camphor', 'tallow', 'pine']) {
   check(`${species}: height map 256 wide, power-of-two tall, 16-bit`, w === 256 && (h & (h - 1)) === 0 && depth === 16, `${w}x${h} ${depth}-bit`);
 }
 
+// The 4-layer model (role exchange, peeling, shedding): native == WASM bytes of the stats (timings
+// aside), the maps, the cycles CSV and the frames, for two species; a frame a cycle.
+for (const species of ['pine', 'tallow']) {
+  const got = {};
+  for (const cmd of [native, wasm]) {
+    const dir = join(work, `four-${species}-${buildName(cmd)}`);
+    spawn('mkdir', ['-p', join(dir, 'frames')]);
+    const r = spawn(cmd, ['bark', 'grow', '--species', species, '--model', '4layer', '--size', '32x16', '--cycles', '3', '--seed', '2',
+      '--set', 'T=0.002', '--set', 'cork=0.1', '--set', 'map_size=256', '--stats', '--out', join(dir, 'c.png'), '--height', join(dir, 'h.png'),
+      '--csv', join(dir, 'cycles.csv'), '--frames', join(dir, 'frames')]);
+    check(`4layer ${species} ${buildName(cmd)}: exit 0`, r.status === 0, r.stderr);
+    got[buildName(cmd)] = { stats: r.status === 0 ? stats(r.stdout) : {}, dir };
+  }
+  const a = got.native, b = got.wasm;
+  check(`4layer ${species}: --stats native == WASM (timings aside)`, JSON.stringify(a.stats) === JSON.stringify(b.stats),
+    `${JSON.stringify(a.stats)}\n${JSON.stringify(b.stats)}`);
+  check(`4layer ${species}: model, 2 exchanges, exposed S+M1+M2+I = 1, something shed`, a.stats.model === '4layer' && a.stats.exchanges === 2 &&
+    Math.abs(a.stats.exposed.S + a.stats.exposed.M1 + a.stats.exposed.M2 + a.stats.exposed.I - 1) < 1e-12 && a.stats.shed.area > 0 &&
+    'peeled_fraction' in a.stats, JSON.stringify(a.stats));
+  const frames = readdirSync(join(a.dir, 'frames')).sort();
+  check(`4layer ${species}: a frame a cycle (${frames.join(' ')})`, frames.join(' ') === 'bark_cycle_001.png bark_cycle_002.png bark_cycle_003.png');
+  for (const name of ['c.png', 'h.png', 'cycles.csv', ...frames.map((f) => join('frames', f))]) {
+    const x = readFileSync(join(a.dir, name)), y = readFileSync(join(b.dir, name));
+    check(`4layer ${species} ${name}: native == WASM bytes (${x.length})`, x.length > 0 && x.equals(y));
+  }
+}
+
 // Fig. 7's layout (bark layers): native == WASM bytes of the JSON and the CSV; the surface moves out
 // by ΔR a cycle and r_I ends at R_o + 3·ΔR.
 {
@@ -51,6 +78,21 @@ for (const species of ['camphor', 'tallow', 'pine']) {
   const j = JSON.parse(got.native.json);
   check(`bark layers: r_I ${j.R_o} -> ${j.r_I_end} (3 cycles of 0.021·R_o), 34 rows`,
     Math.abs(j.r_I_end - j.R_o * (1 + 3 * 0.021)) < 1e-9 && j.rows === 34 && Math.abs(j.surface_end - (j.r_I_end + 2)) < 1e-9);
+}
+
+// Table 3 beside the paper's (bark table3): native == WASM bytes, the three species with the paper's numbers.
+{
+  const args = ['bark', 'table3', '--seeds', '1-2', '--size', '16x8'];
+  const a = run(native, args), b = run(wasm, args);
+  check('bark table3: native == WASM bytes', a === b && a.length > 0);
+  const j = JSON.parse(a);
+  check('bark table3: camphor, tallow, pine with the paper\'s means and our mean ± sd over 2 seeds',
+    j.rows.map((r) => r.species).join() === 'camphor,tallow,pine' && j.rows[1].paper.mean[1] === 3.02 && j.rows[0].paper.max[1] === '>20' &&
+    j.rows.every((r) => r.ours.mean_w.mean > 0 && r.ours.mean_w.sd >= 0) && j.seeds.join() === '1,2', a);
+  for (const [bad, flag] of [[['--seeds', '5-1'], '--seeds'], [['--seeds', '1-30'], '--seeds'], [['--set', 'kappa1=9'], '--set']]) {
+    const r = spawn(native, ['bark', 'table3', '--size', '16x8', ...bad]);
+    check(`bark table3 ${bad.join(' ')}: exit 2, one line naming ${flag}`, r.status === 2 && r.stderr.trim().split('\n').length === 1 && r.stderr.startsWith(`niwa: error: ${flag}`), r.stderr.trim());
+  }
 }
 
 // The table and presets in both builds.
@@ -66,7 +108,8 @@ for (const [args, flag] of [
   [['--size', '33x16'], '--size'],
   [['--size', '32by16'], '--size'],
   [['--species', 'oak'], '--species'],
-  [['--model', '4layer'], '--model'],
+  [['--model', '3layer'], '--model'],
+  [['--frames', '/nonexistent-niwa-folder'], '--frames'],
   [['--set', 'kappa1=2'], '--set'],
   [['--size', '2048x512', '--max-memory', '128M'], '--max-memory'],
   [['--url', 'species=pine&N_R=64&N_R=64'], '--url'],

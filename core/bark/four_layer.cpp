@@ -1,0 +1,377 @@
+// The 4-layer model: three spring layers with shear springs, role exchange, peeling, shedding.
+#include "bark/four_layer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "bark/regions.h"
+#include "math/det_math.h"
+
+namespace niwa::bark {
+namespace {
+
+constexpr float kNever = std::numeric_limits<float>::infinity();
+constexpr double kThinFloor = 0.05;  // M2's mechanical thickness floor, a share of D
+// PCG32 streams of a layer born at cycle k: its springs' thresholds and its upper bond's κ_h.
+constexpr uint64_t kLayerStream = 0x4c41594552000000ull;  // "LAYER"
+uint64_t SpringStream(int born) { return kLayerStream + 2u * static_cast<uint64_t>(born + 2); }
+uint64_t BondStream(int born) { return SpringStream(born) + 1u; }
+
+// Shear stiffness between a layer of thickness share a and one of b (of D):
+// G·A_n/D_s, D_s = max((a + b)/2, 0.1)·D.
+double ShearK(const Mechanics& base, double a, double b) {
+  return base.k_s / std::max((a + b) / 2.0, 0.1);
+}
+
+// Rest lengths of a layer born when its anchors are scaled by (s_θ, s_z).
+void RestAt(const Lattice& L, double s_theta, double s_z, double rest[2]) {
+  rest[0] = L.l_o * s_z;
+  const double x = L.pitch() * s_theta, z = L.l_o / 2.0 * s_z;
+  rest[1] = std::sqrt(x * x + z * z);
+}
+
+CorkLayer BornLayer(const Lattice& L, const FourLayerMechanics& m, uint64_t seed, int born,
+                    double s_theta, double s_z) {
+  CorkLayer c;
+  c.born = born;
+  RestAt(L, s_theta, s_z, c.rest);
+  c.s = BornSurface(L, m.base, seed, SpringStream(born), c.rest);
+  const std::size_t n = static_cast<std::size_t>(L.nodes());
+  c.present.assign(n, 1);
+  c.bonded.assign(n, 1);
+  c.bond_x.assign(n, 0.0f);
+  c.bond_z.assign(n, 0.0f);
+  c.kappa_h.assign(n, static_cast<float>(m.kappa_h));
+  c.dry_step.assign(n, -1);
+  c.shear_limit2.assign(n, kNever);
+  return c;
+}
+
+// A new bond of `upper` to a layer born at cycle `born` beneath it (whose u is 0): its slip now is
+// its rest, its critical strains κ_h(1 + σξ) from the newborn layer's bond stream.
+void FormBond(const FourLayerMechanics& m, uint64_t seed, int born, CorkLayer* upper) {
+  TruncatedNormal normal(seed, BondStream(born));
+  const std::size_t n = upper->present.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    upper->bonded[i] = 1;
+    upper->bond_x[i] = upper->s.ux[i];
+    upper->bond_z[i] = upper->s.uz[i];
+    double k = m.kappa_h * (1.0 + m.base.sigma * normal.Next());
+    if (k < 1e-6) k = 1e-6;
+    upper->kappa_h[i] = static_cast<float>(k);
+    upper->dry_step[i] = -1;
+    const double lim = k * m.d;
+    upper->shear_limit2[i] = static_cast<float>(lim * lim);
+  }
+}
+
+// The layout of cycle k at phase τ ∈ [0, 1], growing or frozen.
+LayerGrowth LayoutAt(const FourLayerMechanics& m, int k, double tau, bool growing) {
+  LayerGrowth lg;
+  const double dc = m.cork;
+  lg.r_inner = m.r_o + m.delta_r * (k + tau);
+  lg.thickness_m2 = dc * tau;
+  lg.stiffness_m2 = std::max(tau, kThinFloor);
+  lg.mid[kM2] = lg.r_inner + dc * tau / 2.0;
+  lg.mid[kM1] = lg.r_inner + dc * tau + dc / 2.0;
+  lg.mid[kS] = lg.r_inner + dc * tau + 1.5 * dc;
+  const double rate_in = m.delta_r / m.period;
+  const double rate_mid[3] = {rate_in + dc / m.period, rate_in + dc / m.period,
+                              rate_in + dc / (2.0 * m.period)};
+  const double ez = m.base.strain_rate_z * (k + tau) * m.period;
+  for (int r = 0; r < 3; ++r) {
+    lg.g[r].s_theta = static_cast<float>(lg.mid[r] / m.r_o);
+    lg.g[r].s_z = static_cast<float>(1.0 + ez);
+    lg.g[r].rate_theta = growing ? static_cast<float>(rate_mid[r] / m.r_o) : 0.0f;
+    lg.g[r].rate_z = growing ? static_cast<float>(m.base.strain_rate_z) : 0.0f;
+  }
+  return lg;
+}
+
+// Takes node i out of S: its springs off (marked broken without counting a crack), its bond cut.
+void PeelNode(const FourLayer& f, int i, CorkLayer* s) {
+  s->present[i] = 0;
+  s->bonded[i] = 0;
+  s->s.wx[i] = 0.0f;
+  s->s.wz[i] = 0.0f;
+  for (int q = f.node_spring_start[i]; q < f.node_spring_start[i + 1]; ++q) {
+    const int sp = f.node_springs[q];
+    s->s.broken[sp] = 1;
+    s->s.on[sp] = 0.0f;
+    s->s.limit2[sp] = kNever;
+  }
+}
+
+}  // namespace
+
+FourLayerMechanics FourLayerMechanicsOf(const BarkParams& p, const Lattice& L) {
+  FourLayerMechanics m;
+  m.base = MechanicsOf(p);
+  const Mechanics& b = m.base;
+  m.r_o = L.radius();
+  m.delta_r = p.Get(BarkParam::kDeltaR) * m.r_o;
+  m.d = p.Get(BarkParam::kD);
+  m.cork = m.d * p.Get(BarkParam::kCork);
+  m.period = p.Get(BarkParam::kT);
+  m.kappa_h = p.Get(BarkParam::kKappaH);
+  m.eta = p.Get(BarkParam::kEta);
+  m.gamma = p.Get(BarkParam::kGamma);
+  m.area_ratio = p.Get(BarkParam::kA);
+  // The stiffest layer per unit mass: M2 at its floor (mass and springs × 0.05, two shear springs
+  // to thick neighbours), or M1 (three shear springs' worth), or S.
+  const double intra = 2.0 * b.k[0] + 4.0 * b.k[1];
+  const double f = kThinFloor;
+  const double k_thin = ShearK(b, 1.0, f);
+  const double w_m2 = (2.0 * k_thin + f * intra) / (f * b.mass);
+  const double w_m1 = (b.k_s + k_thin + intra) / b.mass;
+  const double w_s = (b.k_s + intra) / b.mass;
+  const double w = std::max({w_m2, w_m1, w_s});
+  const double dt0 = 0.3 / std::sqrt(w);
+  m.steps_per_cycle = static_cast<int>(std::ceil(m.period / dt0));
+  m.dt = m.period / m.steps_per_cycle;
+  return m;
+}
+
+FourLayer StartFourLayer(const Lattice& L, const FourLayerMechanics& m, uint64_t seed, int cycles) {
+  FourLayer f;
+  f.m = m;
+  f.growth_steps = cycles * m.steps_per_cycle;
+  const LayerGrowth lg = LayoutAt(m, 0, 0.0, true);
+  // S was born at cycle −2, M1 at −1, M2 at 0 (Fig. 7's roles at t = 0).
+  for (int r = 0; r < 3; ++r)
+    f.layer[r] = BornLayer(L, m, seed, r - 2, lg.g[r].s_theta, lg.g[r].s_z);
+  FormBond(m, seed, f.layer[kM1].born, &f.layer[kS]);
+  FormBond(m, seed, f.layer[kM2].born, &f.layer[kM1]);
+  // The node -> springs index (each spring listed at both its ends).
+  const int n = L.nodes();
+  f.node_spring_start.assign(n + 1, 0);
+  for (int s = 0; s < L.springs(); ++s) {
+    ++f.node_spring_start[L.a[s] + 1];
+    ++f.node_spring_start[L.b[s] + 1];
+  }
+  for (int i = 0; i < n; ++i) f.node_spring_start[i + 1] += f.node_spring_start[i];
+  f.node_springs.resize(f.node_spring_start[n]);
+  std::vector<int32_t> fill(f.node_spring_start.begin(), f.node_spring_start.end() - 1);
+  for (int s = 0; s < L.springs(); ++s) {
+    f.node_springs[fill[L.a[s]]++] = s;
+    f.node_springs[fill[L.b[s]]++] = s;
+  }
+  return f;
+}
+
+LayerGrowth LayerGrowthAt(const FourLayer& f) {
+  const bool growing = f.step < f.growth_steps;
+  const int t = std::min(f.step, f.growth_steps);
+  const double tau = static_cast<double>(t - f.cycle * f.m.steps_per_cycle) / f.m.steps_per_cycle;
+  return LayoutAt(f.m, f.cycle, tau, growing);
+}
+
+bool StepFourLayer(const Lattice& L, FourLayer* f) {
+  const FourLayerMechanics& m = f->m;
+  const Mechanics& b = m.base;
+  const LayerGrowth lg = LayerGrowthAt(*f);
+  const double th = lg.stiffness_m2;
+  // Springs of the three layers (M2's constants scaled by its thickness share).
+  int cracked = 0;
+  for (int r = 0; r < 3; ++r) {
+    const double share = r == kM2 ? th : 1.0;
+    const float k[2] = {static_cast<float>(b.k[0] * share), static_cast<float>(b.k[1] * share)};
+    const float c[2] = {static_cast<float>(b.c[0] * share), static_cast<float>(b.c[1] * share)};
+    const float rest[2] = {static_cast<float>(f->layer[r].rest[0]),
+                           static_cast<float>(f->layer[r].rest[1])};
+    cracked += SpringForces(L, k, c, rest, lg.g[r], &f->layer[r].s);
+  }
+  if (cracked > 0 && f->first_crack_step < 0) f->first_crack_step = f->step;
+  // Nodes: the shear springs S→M1 (breakable), M1→M2, M2→I, then symplectic Euler per layer.
+  const double m2_mass = b.mass * th;
+  const double k_low = ShearK(b, 1.0, th);  // M1→M2 and M2→I (I counted thickness D)
+  const float ks0 = static_cast<float>(b.k_s), cs0 = static_cast<float>(b.c_s);
+  const float ks1 = static_cast<float>(k_low);
+  const float cs1 = static_cast<float>(2.0 * (b.c_s / (2.0 * std::sqrt(b.k_s * b.mass))) *
+                                       std::sqrt(k_low * m2_mass));
+  const float dt = static_cast<float>(m.dt);
+  const float inv_m = static_cast<float>(1.0 / b.mass);
+  const float inv_m2 = static_cast<float>(1.0 / m2_mass);
+  CorkLayer& S = f->layer[kS];
+  CorkLayer& M1 = f->layer[kM1];
+  CorkLayer& M2 = f->layer[kM2];
+  const int n = L.nodes();
+  for (int i = 0; i < n; ++i) {
+    // S → M1, breaking past the node's shear limit (checked on the positions the step starts
+    // from, as the springs are).
+    float sx = 0.0f, sz = 0.0f;
+    if (S.bonded[i]) {
+      const float slip_x = (S.s.ux[i] - M1.s.ux[i]) - S.bond_x[i];
+      const float slip_z = (S.s.uz[i] - M1.s.uz[i]) - S.bond_z[i];
+      if (slip_x * slip_x + slip_z * slip_z > S.shear_limit2[i]) {
+        S.bonded[i] = 0;
+        ++f->bonds_broken;
+      } else {
+        sx = ks0 * slip_x + cs0 * (S.s.wx[i] - M1.s.wx[i]);
+        sz = ks0 * slip_z + cs0 * (S.s.wz[i] - M1.s.wz[i]);
+      }
+    }
+    // M1 → M2 (never breaks).
+    const float px =
+        ks1 * ((M1.s.ux[i] - M2.s.ux[i]) - M1.bond_x[i]) + cs1 * (M1.s.wx[i] - M2.s.wx[i]);
+    const float pz =
+        ks1 * ((M1.s.uz[i] - M2.s.uz[i]) - M1.bond_z[i]) + cs1 * (M1.s.wz[i] - M2.s.wz[i]);
+    // M2 → I (the anchor; never breaks).
+    const float qx = ks1 * M2.s.ux[i] + cs1 * M2.s.wx[i];
+    const float qz = ks1 * M2.s.uz[i] + cs1 * M2.s.wz[i];
+    if (S.present[i]) {
+      S.s.wx[i] += dt * ((S.s.fx[i] - sx) * inv_m);
+      S.s.wz[i] += dt * ((S.s.fz[i] - sz) * inv_m);
+      S.s.ux[i] += dt * S.s.wx[i];
+      S.s.uz[i] += dt * S.s.wz[i];
+    }
+    M1.s.wx[i] += dt * ((M1.s.fx[i] + sx - px) * inv_m);
+    M1.s.wz[i] += dt * ((M1.s.fz[i] + sz - pz) * inv_m);
+    M1.s.ux[i] += dt * M1.s.wx[i];
+    M1.s.uz[i] += dt * M1.s.wz[i];
+    M2.s.wx[i] += dt * ((M2.s.fx[i] + px - qx) * inv_m2);
+    M2.s.wz[i] += dt * ((M2.s.fz[i] + pz - qz) * inv_m2);
+    M2.s.ux[i] += dt * M2.s.wx[i];
+    M2.s.uz[i] += dt * M2.s.wz[i];
+    for (int r = 0; r < 3; ++r) {
+      f->layer[r].s.fx[i] = 0.0f;
+      f->layer[r].s.fz[i] = 0.0f;
+    }
+  }
+  ++f->step;
+  if (f->step % kPeelCheckSteps == 0) CheckPeeling(L, f);
+  return f->step <= f->growth_steps && f->step % m.steps_per_cycle == 0;
+}
+
+void ExchangeRoles(const Lattice& L, uint64_t seed, FourLayer* f) {
+  // What is left of S is shed: its plates (of two triangles or more, as the region measure
+  // counts them) and its nodes.
+  f->shed_regions += MeasureCracks(L, f->layer[kS].s, 1.0, 1.0).count;
+  f->shed_nodes += PresentNodes(*f);
+  f->layer[kS] = std::move(f->layer[kM1]);
+  f->layer[kM1] = std::move(f->layer[kM2]);
+  ++f->cycle;
+  // The new S starts its drying clock afresh (its limits are its bond's κ_h until the next check).
+  CorkLayer& s = f->layer[kS];
+  for (std::size_t i = 0; i < s.dry_step.size(); ++i) {
+    s.dry_step[i] = -1;
+    const double lim = static_cast<double>(s.kappa_h[i]) * f->m.d;
+    s.shear_limit2[i] = static_cast<float>(lim * lim);
+  }
+  const LayerGrowth lg = LayoutAt(f->m, f->cycle, 0.0, true);
+  f->layer[kM2] = BornLayer(L, f->m, seed, f->cycle, lg.g[kM2].s_theta, lg.g[kM2].s_z);
+  FormBond(f->m, seed, f->cycle, &f->layer[kM1]);
+}
+
+void CheckPeeling(const Lattice& L, FourLayer* f) {
+  const FourLayerMechanics& m = f->m;
+  CorkLayer& S = f->layer[kS];
+  const int n = L.nodes();
+  // Drying sources: peeled nodes and the ends of broken S springs.
+  std::vector<uint8_t> source(n, 0);
+  for (int i = 0; i < n; ++i) source[i] = !S.present[i];
+  for (int s = 0; s < L.springs(); ++s) {
+    if (!S.s.broken[s]) continue;
+    source[L.a[s]] = 1;
+    source[L.b[s]] = 1;
+  }
+  // Node offsets within η at S's current scale, for even and odd columns.
+  const LayerGrowth lg = LayerGrowthAt(*f);
+  const double st = lg.g[kS].s_theta, sz = lg.g[kS].s_z;
+  const double pitch = L.pitch() * st, lo = L.l_o * sz;
+  const int reach_c = static_cast<int>(std::floor(m.eta / pitch)),
+            reach_z = static_cast<int>(std::floor(m.eta / lo)) + 1;
+  std::vector<std::pair<int, int>> offsets[2];
+  for (int parity = 0; parity < 2; ++parity) {
+    for (int dc = -std::min(reach_c, L.n_r / 2); dc <= std::min(reach_c, (L.n_r - 1) / 2); ++dc) {
+      const int other = ((parity + dc) % 2 + 2) % 2;
+      for (int dj = -std::min(reach_z, L.n_h / 2); dj <= std::min(reach_z, (L.n_h - 1) / 2); ++dj) {
+        const double dx = dc * pitch, dz = (dj + (other - parity) * 0.5) * lo;
+        if (dx * dx + dz * dz <= m.eta * m.eta) offsets[parity].push_back({dc, dj});
+      }
+    }
+  }
+  std::vector<uint8_t> near(n, 0);
+  for (int i = 0; i < n; ++i) {
+    if (!source[i]) continue;
+    const int c = i / L.n_h, j = i % L.n_h;
+    for (const auto& [dc, dj] : offsets[c % 2]) {
+      const int c2 = ((c + dc) % L.n_r + L.n_r) % L.n_r;
+      const int j2 = ((j + dj) % L.n_h + L.n_h) % L.n_h;
+      near[L.node(c2, j2)] = 1;
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    if (!S.present[i] || !S.bonded[i]) continue;
+    if (S.dry_step[i] < 0 && near[i]) S.dry_step[i] = f->step;
+    double lim = S.kappa_h[i];
+    if (S.dry_step[i] >= 0) lim *= det::Exp(-m.gamma * (f->step - S.dry_step[i]) * m.dt / m.period);
+    lim *= m.d;
+    S.shear_limit2[i] = static_cast<float>(lim * lim);
+  }
+  // The area rule: closed regions (plates: S's triangles with three intact springs joined
+  // across their edges, not wrapping the torus, as the maps draw them) with S_r/S_b > A, S_r and
+  // S_b counted in nodes (its nodes, and those still bonded), or with no bond at all, peel. A node
+  // in no plate (every triangle around it cracked) is a fragment of its own: it peels unbonded.
+  const CrackMeasures plates = MeasureCracks(L, S.s, 1.0, 1.0);
+  std::vector<std::vector<int>> members(plates.regions.size());
+  std::vector<int> stamp(n, -1);
+  std::vector<uint8_t> in_plate(n, 0);
+  for (std::size_t t = 0; t < plates.tri_region.size(); ++t) {
+    const int id = plates.tri_region[t];
+    if (id < 0) continue;
+    for (int v : L.tri_nodes[t]) {
+      in_plate[v] = 1;
+      if (stamp[v] == id) continue;
+      stamp[v] = id;
+      members[id].push_back(v);
+    }
+  }
+  std::vector<int> peel;
+  for (std::size_t id = 0; id < members.size(); ++id) {
+    if (!plates.regions[id].closed()) continue;
+    int bonded = 0;
+    for (int v : members[id]) bonded += S.bonded[v];
+    if (bonded == 0 || static_cast<double>(members[id].size()) > m.area_ratio * bonded) {
+      peel.insert(peel.end(), members[id].begin(), members[id].end());
+      ++f->peel_events;
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    if (S.present[i] && !in_plate[i] && !S.bonded[i]) {
+      peel.push_back(i);
+      ++f->peel_events;
+    }
+  }
+  // A node of two peeling plates is peeled once.
+  std::sort(peel.begin(), peel.end());
+  peel.erase(std::unique(peel.begin(), peel.end()), peel.end());
+  if (!peel.empty() && f->first_peel_step < 0) f->first_peel_step = f->step;
+  for (int v : peel) PeelNode(*f, v, &S);
+  f->peeled_nodes += static_cast<int>(peel.size());
+}
+
+int PresentNodes(const FourLayer& f) {
+  int n = 0;
+  for (uint8_t p : f.layer[kS].present) n += p;
+  return n;
+}
+
+std::vector<uint8_t> VisibleLayer(const Lattice& L, const FourLayer& f) {
+  std::vector<uint8_t> v(L.tri_nodes.size(), 3);
+  for (std::size_t t = 0; t < v.size(); ++t) {
+    const auto& sp = L.tri_springs[t];
+    for (int r = 0; r < 3; ++r) {
+      const std::vector<uint8_t>& br = f.layer[r].s.broken;
+      if (!(br[sp[0]] || br[sp[1]] || br[sp[2]])) {
+        v[t] = static_cast<uint8_t>(r);
+        break;
+      }
+    }
+  }
+  return v;
+}
+
+}  // namespace niwa::bark
