@@ -4,10 +4,11 @@
 // and cancel, the estimates checked before any work, the crack measures, the maps (PNG bytes of
 // base colour, normal, 16-bit height and ORM; the 4-layer maps show the visible layer), a base
 // colour frame per cycle on request, the stats JSON, a per-tenth-cycle CSV and the share hash.
-// The one pipeline `niwa bark grow` (native_cli/bark_commands.cpp) adapts; the page's session is
-// a later slice. Does not: parse flags, read or write files, time itself (the front end adds ms
-// and ns_per_spring_step), or make a .glb (Parts() is empty and Document() refused: a trunk
-// segment with the maps is a later slice).
+// The one pipeline `niwa bark grow` (native_cli/bark_commands.cpp), the page's BarkLab
+// (web/bindings/bark_bindings.cpp) and bark on a tree (core/compose/bark_on_tree) adapt.
+// Does not: parse flags, read or write files, time itself (the front end adds ms and
+// ns_per_spring_step), or make a .glb (Parts() is empty and Document() refused: a trunk segment
+// with the maps is a later slice).
 #pragma once
 
 #include <optional>
