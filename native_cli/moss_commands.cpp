@@ -337,7 +337,8 @@ void AddMossCommands(CLI::App& app, CommandList& commands) {
       "grow",
       "Grow moss on a built-in scene or a mesh day by day (photons, soil, life cycle); one JSON "
       "object on stdout (--stats: all the statistics); --out moss.json: every living moss and "
-      "soil cell; --out moss.glb: the land with a map and the moss tufts");
+      "soil cell; --out moss.glb: the land with a map and the moss tufts; --out photons.svg: the "
+      "last day's photons");
   auto go = std::make_shared<RunOptions>();
   AddRunOptions(grow, go.get(), true);
   grow->add_flag("--stats", go->stats, "Print every statistic as one JSON object");

@@ -11,8 +11,8 @@
 namespace niwa::moss {
 namespace {
 
-constexpr const char* kMapNames[kMossMapCount] = {"coverage", "S", "T_s", "rh_s", "theta",
-                                                  "fitness"};
+constexpr const char* kMapNames[kMossMapCount] = {"coverage", "S",     "T_s",
+                                                  "rh_s",     "theta", "fitness"};
 
 // Viridis at 0, 1/4, 1/2, 3/4, 1, sRGB turned linear (COLOR_0 is linear).
 constexpr float kViridis[5][3] = {{0.05795f, 0.00039f, 0.08843f},
@@ -28,7 +28,8 @@ struct TuftTurn {
 TuftTurn TurnProduct(const TuftTurn& a, const TuftTurn& b) {
   return {a.w * b.x + b.w * a.x + (a.y * b.z - a.z * b.y),
           a.w * b.y + b.w * a.y + (a.z * b.x - a.x * b.z),
-          a.w * b.z + b.w * a.z + (a.x * b.y - a.y * b.x), a.w * b.w - (a.x * b.x + a.y * b.y + a.z * b.z)};
+          a.w * b.z + b.w * a.z + (a.x * b.y - a.y * b.x),
+          a.w * b.w - (a.x * b.x + a.y * b.y + a.z * b.z)};
 }
 // +y turned onto the unit normal n, after a turn of `angle` about +y.
 TuftTurn TuftTurnOf(const glm::dvec3& n, double angle) {
@@ -43,9 +44,10 @@ TuftTurn TuftTurnOf(const glm::dvec3& n, double angle) {
 }
 glm::dvec3 Turned(const TuftTurn& q, const glm::dvec3& v) {
   const glm::dvec3 u(q.x, q.y, q.z);
-  const glm::dvec3 t = 2.0 * glm::dvec3(u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z,
-                                        u.x * v.y - u.y * v.x);
-  return v + q.w * t + glm::dvec3(u.y * t.z - u.z * t.y, u.z * t.x - u.x * t.z, u.x * t.y - u.y * t.x);
+  const glm::dvec3 t =
+      2.0 * glm::dvec3(u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x);
+  return v + q.w * t +
+         glm::dvec3(u.y * t.z - u.z * t.y, u.z * t.x - u.x * t.z, u.x * t.y - u.y * t.x);
 }
 
 glm::dvec3 TuftCross(const glm::dvec3& a, const glm::dvec3& b) {
@@ -272,7 +274,8 @@ gltf::Document MossDocument(geom::TriMesh land, MossMap map, int day,
       const TuftTurn q = TuftTurnOf(t.normal, t.angle);
       for (double v : {t.pos.x, t.pos.y, t.pos.z})
         node.instance_translations.push_back(static_cast<float>(v));
-      for (double v : {q.x, q.y, q.z, q.w}) node.instance_rotations.push_back(static_cast<float>(v));
+      for (double v : {q.x, q.y, q.z, q.w})
+        node.instance_rotations.push_back(static_cast<float>(v));
       for (int k = 0; k < 3; ++k) node.instance_scales.push_back(static_cast<float>(t.size));
       birth.push_back(t.birth_day);
     }
@@ -306,9 +309,9 @@ gltf::Document MossDocument(geom::TriMesh land, MossMap map, int day,
 Estimate MossGlbEstimate(std::size_t cells, std::size_t mosses) {
   // Land: 3 vertices a cell (position, normal, colour 12 bytes each, the raw value 4) and 12 bytes
   // of indices; a merged tuft: kTuftVertices vertices of 36 bytes and its indices, its extras.
-  const double bytes = 132.0 * static_cast<double>(cells) +
-                       (36.0 * kTuftVertices + 12.0 * kTuftTriangles + 24.0) *
-                           static_cast<double>(mosses);
+  const double bytes =
+      132.0 * static_cast<double>(cells) +
+      (36.0 * kTuftVertices + 12.0 * kTuftTriangles + 24.0) * static_cast<double>(mosses);
   Estimate e;
   e.memory_bytes = 3.0 * bytes;  // the document's meshes, the writer's buffer, the file's bytes
   e.seconds = 3e-8 * bytes;

@@ -535,8 +535,7 @@ Status MossRun::UseWeather(std::vector<WeatherDay> days, const std::string& name
   if (world_.day > 0) return Status::Error("weather", "given after day 0; must be given first");
   if (days.empty() || days.size() > static_cast<std::size_t>(kMaxWeatherDays))
     return Status::Error("weather", "has " + std::to_string(days.size()) +
-                                        " days; must have 1 to " +
-                                        std::to_string(kMaxWeatherDays));
+                                        " days; must have 1 to " + std::to_string(kMaxWeatherDays));
   weather_ = std::move(days);
   weather_name_ = name;
   return Status::Ok();
@@ -606,10 +605,10 @@ std::vector<double> MossRun::MapValues(MossMap map, std::vector<double>* ramp) c
       const GForm g_form = static_cast<GForm>(state_.params.GetInt(MossParam::kGForm));
       for (std::size_t i = 0; i < n && w.day > 0; ++i)
         for (int sp = 0; sp < kSpeciesCount; ++sp)
-          value[i] = std::max(
-              value[i], FitnessOf(SpeciesOf(state_.params, static_cast<Species>(sp)), w.T_s[i],
-                                  w.rh_s[i], w.S[i], g_form)
-                            .G);
+          value[i] =
+              std::max(value[i], FitnessOf(SpeciesOf(state_.params, static_cast<Species>(sp)),
+                                           w.T_s[i], w.rh_s[i], w.S[i], g_form)
+                                     .G);
       break;
     }
   }
@@ -843,7 +842,7 @@ std::string MossRun::StatsJson() const {
   j["study"] = "moss";
   j["scene"] = mesh_name_.empty() ? state_.scene : "mesh";
   if (!mesh_name_.empty()) j["mesh"] = mesh_name_;  // a loaded mesh: not in the link
-  if (!weather_.empty())  // a weather file: not in the link
+  if (!weather_.empty())                            // a weather file: not in the link
     j["weather"] = {{"file", weather_name_}, {"days", weather_.size()}};
   j["preset"] = state_.preset;
   j["url"] = Hash("");

@@ -4,9 +4,9 @@
 // mosses in the thesis's order (germination, growth and death, gemmae, spores), the landing of new
 // seeds on faces and on mosses, the contest for occupied places, immigration and the caps; with
 // progress and cancel, and its estimate refused up front over the budget; the stats time the stages
-// (ms_* fields, the only bytes that differ between runs); its outputs: the .glb of the land's map and
-// the tufts (moss_gltf.h), the mosses and cells as JSON. Does not: load a mesh file, read a weather
-// file, or smooth the light over days (light_smoothing_days is refused above 0).
+// (ms_* fields, the only bytes that differ between runs); its outputs: the .glb of the land's map
+// and the tufts (moss_gltf.h), the mosses and cells as JSON. Does not: load a mesh file, read a
+// weather file, or smooth the light over days (light_smoothing_days is refused above 0).
 #pragma once
 
 #include <array>
@@ -62,9 +62,9 @@ enum class SeedLoss : int { kFellOff, kBackFace, kLostContest, kExpired, kCap, k
 // One grown day's record (the --csv rows), taken at the day's end.
 struct MossDayRecord {
   int day = 0;
-  int seeds = 0;                   // waiting
-  int births = 0, deaths = 0;      // that day (deaths: declined and lost contests)
-  int64_t photons_stored = 0;      // that day's photon map, every depth
+  int seeds = 0;               // waiting
+  int births = 0, deaths = 0;  // that day (deaths: declined and lost contests)
+  int64_t photons_stored = 0;  // that day's photon map, every depth
   // Area-weighted mean S, T_s, rh_s, theta per geology; NaN for a geology without cells.
   std::array<std::array<double, 4>, kGeologyCount> soil{};
 };
@@ -117,7 +117,8 @@ class MossRun : public run::StudyRun {
   Result<gltf::Document> Document() const override;
   std::string StatsJson() const override;
   std::string Hash(const std::string& prefix) const override;
-  // format "glb", "json", "csv", "svg" (the photons): what writing it needs now, with what the run holds (cells, photons).
+  // format "glb", "json", "csv", "svg" (the photons): what writing it needs now, with what the run
+  // holds (cells, photons).
   Result<Estimate> ExportEstimate(const std::string& format) const override;
   // The same with the mosses at their cap (max_mosses), and the days' time added, for a refusal
   // before the days are grown.
@@ -167,7 +168,7 @@ class MossRun : public run::StudyRun {
   Result<Estimate> ExportEstimateAt(const std::string& format, double mosses) const;
 
   MossState state_;
-  std::string mesh_name_;  // the loaded mesh's file name; "" on a built-in scene
+  std::string mesh_name_;            // the loaded mesh's file name; "" on a built-in scene
   std::vector<WeatherDay> weather_;  // a weather file's days; empty: the table's climate
   std::string weather_name_;
   Budget budget_;

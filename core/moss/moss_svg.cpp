@@ -4,10 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <glm/geometric.hpp>
 #include <limits>
 #include <vector>
-
-#include <glm/geometric.hpp>
 
 #include "base/markup_escape.h"
 
@@ -80,8 +79,9 @@ std::string PhotonSvg(const SoilCells& cells, const PhotonMap& map, const std::s
     const std::size_t v = 3 * static_cast<std::size_t>(item.index);
     const glm::dvec3 a(cells.mesh.positions[v]), b(cells.mesh.positions[v + 1]),
         c(cells.mesh.positions[v + 2]);
-    const int grey = 120 + static_cast<int>(std::lround(
-                               100.0 * std::clamp(glm::dot(cells.normal[item.index], toward), 0.0, 1.0)));
+    const int grey =
+        120 + static_cast<int>(std::lround(
+                  100.0 * std::clamp(glm::dot(cells.normal[item.index], toward), 0.0, 1.0)));
     char fill[8];
     std::snprintf(fill, sizeof fill, "#%02x%02x%02x", grey, grey, grey);
     s += "<path d=\"M" + X(a) + " " + Y(a) + "L" + X(b) + " " + Y(b) + "L" + X(c) + " " + Y(c) +

@@ -75,7 +75,8 @@ Result<std::vector<WeatherDay>> ParseWeatherCsv(const std::string& text, const M
     std::size_t from = 0;
     for (;;) {
       const std::size_t comma = line.find(',', from);
-      out.push_back(line.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
+      out.push_back(
+          line.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
       if (comma == std::string::npos) return out;
       from = comma + 1;
     }
@@ -85,8 +86,7 @@ Result<std::vector<WeatherDay>> ParseWeatherCsv(const std::string& text, const M
   for (const std::string& name : header) {
     const int k = WeatherFieldIndex(name);
     if (k < 0)
-      return Status::Error("weather",
-                           "column '" + Echo(name) + "' is unknown; " + kWeatherAllowed);
+      return Status::Error("weather", "column '" + Echo(name) + "' is unknown; " + kWeatherAllowed);
     for (int seen : column)
       if (seen == k) return Status::Error("weather", "column '" + name + "' is given twice");
     column.push_back(k);
@@ -100,9 +100,9 @@ Result<std::vector<WeatherDay>> ParseWeatherCsv(const std::string& text, const M
   for (std::size_t i = 1; i < lines.size(); ++i) {
     const std::vector<std::string> cells = split(lines[i]);
     if (cells.size() != column.size())
-      return DayError(i, Status::Error("", "has " + std::to_string(cells.size()) +
-                                               " fields; must have " +
-                                               std::to_string(column.size()) + " (the header's)"));
+      return DayError(
+          i, Status::Error("", "has " + std::to_string(cells.size()) + " fields; must have " +
+                                   std::to_string(column.size()) + " (the header's)"));
     WeatherDay d = EmptyDay();
     for (std::size_t c = 0; c < column.size(); ++c) {
       double lo, hi;
@@ -131,8 +131,8 @@ Result<std::vector<WeatherDay>> ParseWeatherJson(const std::string& text,
     return Status::Error("weather", std::string("has no days array; ") + shape);
   const nlohmann::json& days = j["days"];
   if (days.empty() || days.size() > static_cast<std::size_t>(kMaxWeatherDays))
-    return Status::Error("weather", "has " + std::to_string(days.size()) + " days; must have 1 to " +
-                                        std::to_string(kMaxWeatherDays));
+    return Status::Error("weather", "has " + std::to_string(days.size()) +
+                                        " days; must have 1 to " + std::to_string(kMaxWeatherDays));
   std::vector<WeatherDay> out;
   out.reserve(days.size());
   for (std::size_t i = 0; i < days.size(); ++i) {
@@ -143,14 +143,14 @@ Result<std::vector<WeatherDay>> ParseWeatherJson(const std::string& text,
     for (auto it = day.begin(); it != day.end(); ++it) {
       const int k = WeatherFieldIndex(it.key());
       if (k < 0)
-        return DayError(i + 1, Status::Error("", "'" + Echo(it.key()) + "' is unknown; " +
-                                                     kWeatherAllowed));
+        return DayError(
+            i + 1, Status::Error("", "'" + Echo(it.key()) + "' is unknown; " + kWeatherAllowed));
       double lo, hi;
       WeatherRange(k, &lo, &hi);
       if (!it.value().is_number())
-        return DayError(i + 1, Status::Error(kWeatherNames[k], "must be a number in [" +
-                                                                   FormatNumber(lo) + ", " +
-                                                                   FormatNumber(hi) + "]"));
+        return DayError(i + 1,
+                        Status::Error(kWeatherNames[k], "must be a number in [" + FormatNumber(lo) +
+                                                            ", " + FormatNumber(hi) + "]"));
       const double v = it.value().get<double>();
       const Status in_range = CheckValue(kWeatherNames[k], v, lo, hi, false);
       if (!in_range.ok()) return DayError(i + 1, in_range);

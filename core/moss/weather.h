@@ -21,8 +21,8 @@ struct WeatherDay {
   double T, rh, U, N, N0, P;
 };
 constexpr int kWeatherFields = 6;
-constexpr int kMaxWeatherDays = 3650;    // a day a row, as days' range
-constexpr double kMaxDailyRain = 2000;   // mm in one day (the world's record is ~1,825)
+constexpr int kMaxWeatherDays = 3650;   // a day a row, as days' range
+constexpr double kMaxDailyRain = 2000;  // mm in one day (the world's record is ~1,825)
 
 // The days of a weather file (`csv`: CSV, else JSON), each checked against `params`' rows (a field
 // the file leaves out counts as the table's value in the N <= N0 check). Errors name "weather" and

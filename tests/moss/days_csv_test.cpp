@@ -62,10 +62,10 @@ TEST(MossDaysCsv, OneRowADayAgreeingWithTheStats) {
   const char* fields[4] = {"S", "T_s", "rh_s", "theta"};
   for (int g = 0; g < 3; ++g)
     for (int f = 0; f < 4; ++f)
-      EXPECT_NEAR(std::stod(last[8 + 4 * g + f]),
-                  stats["soil_last_day"][geologies[g]][fields[f]].get<double>(),
-                  1e-9 * std::abs(stats["soil_last_day"][geologies[g]][fields[f]].get<double>()) +
-                      1e-12);
+      EXPECT_NEAR(
+          std::stod(last[8 + 4 * g + f]),
+          stats["soil_last_day"][geologies[g]][fields[f]].get<double>(),
+          1e-9 * std::abs(stats["soil_last_day"][geologies[g]][fields[f]].get<double>()) + 1e-12);
 }
 
 // A geology without cells (the plane is humus alone) leaves its fields empty.

@@ -40,7 +40,8 @@ TEST(MossTuft, AtMost24TrianglesWithOutwardFaces) {
   EXPECT_EQ(lo, 0.0f);
   EXPECT_EQ(hi, 1.0f);
   for (std::size_t t = 0; t < tuft.triangle_count(); ++t) {
-    const glm::vec3 a = tuft.positions[tuft.indices[3 * t]], b = tuft.positions[tuft.indices[3 * t + 1]],
+    const glm::vec3 a = tuft.positions[tuft.indices[3 * t]],
+                    b = tuft.positions[tuft.indices[3 * t + 1]],
                     c = tuft.positions[tuft.indices[3 * t + 2]];
     const glm::vec3 n = glm::cross(b - a, c - a);
     const glm::vec3 mid = (a + b + c) / 3.0f;

@@ -2,13 +2,14 @@
 // table's ranges, a left-out field taken from the table, hostile rows refused naming the day and
 // field with its range; a run whose file repeats the table's climate grows the same bytes as
 // without it, a warmer file changes the soil, and the rows cycle past the file's last day.
+#include "moss/weather.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "moss/moss_run.h"
-#include "moss/weather.h"
 
 namespace niwa::moss {
 namespace {
@@ -33,8 +34,8 @@ TEST(MossWeather, CsvAndJsonGiveTheSameDays) {
   }
   // A left-out field keeps the climate's value; a given one replaces it.
   const Weather climate = ClimateOf(params);
-  const Weather day = WeatherOfDay({climate.T, climate.rh, climate.U, climate.N, climate.N_0, 7.0},
-                                   (*csv)[1]);
+  const Weather day =
+      WeatherOfDay({climate.T, climate.rh, climate.U, climate.N, climate.N_0, 7.0}, (*csv)[1]);
   EXPECT_EQ(day.T, 283.15);
   EXPECT_EQ(day.rh, 0.6);
   EXPECT_EQ(day.U, climate.U);
@@ -112,8 +113,8 @@ TEST(MossWeather, ATableClimateFileGrowsTheSameBytesAndAWarmOneDoesNot) {
   const MossParams params;
   std::string csv = "T,rh,U,N,N0,P\n";
   for (int d = 1; d <= 6; ++d)
-    csv += "288.15,0.73,0.2,6,8," +
-           std::string(EvenRainOfDay(d, 1861.2, 180) > 0 ? "10.34" : "0") + "\n";
+    csv += "288.15,0.73,0.2,6,8," + std::string(EvenRainOfDay(d, 1861.2, 180) > 0 ? "10.34" : "0") +
+           "\n";
   // 1861.2 / 180 is 10.34 exactly in decimal but not in binary: give the quotient's own text.
   const double P_i = 1861.2 / 180;
   char rain[64];
