@@ -14,6 +14,7 @@
 
 #include "base/echo.h"
 #include "cli_common.h"
+#include "io/gltf_writer.h"
 #include "io/mesh_reader.h"
 #include "moss/moss_params.h"
 #include "moss/moss_report.h"
@@ -21,6 +22,7 @@
 #include "moss/moss_state.h"
 #include "moss/soil.h"
 #include "moss/soil_cells.h"
+#include "moss/weather.h"
 #include "params/param_text.h"
 #include "run/field_names.h"
 
@@ -38,7 +40,8 @@ const run::FieldNames kFieldFlags = {
     {"rh_s", "--rhs"},          {"days", "--days"},
     {"seed", "--seed"},         {"scene", "--scene"},
     {"mesh", "--mesh"},         {"photons", "--photons"},
-    {"indirect", "--indirect"},
+    {"indirect", "--indirect"}, {"map", "--map"},
+    {"weather", "--weather"},
 };
 constexpr FlagRange kDaysRange{0, moss::kMaxMossDays, true};
 constexpr FlagRange kSeedRange{0, static_cast<double>(moss::kMaxMossSeed), true};
@@ -56,7 +59,7 @@ FlagRange MossRowRange(MossParam row) {
 
 // The flags every moss command shares: the state (--url, then --preset, then --set).
 struct StateOptions {
-  std::string url, preset;
+  std::string url, preset, params_file;
   std::vector<std::string> sets;
 };
 void AddStateOptions(CLI::App* cmd, StateOptions* o) {
@@ -64,6 +67,9 @@ void AddStateOptions(CLI::App* cmd, StateOptions* o) {
                   "nomura2010 (default) or nomura2010-sky (niwa presets moss)");
   cmd->add_option("--set", o->sets, "KEY=VALUE of the moss table (niwa params moss)");
   cmd->add_option("--url", o->url, "A share-link hash (preset=...&T=...); other flags override it");
+  AddInputFlag(cmd, "--params", &o->params_file,
+               "State JSON {preset, scene, days, seed, params: {key: value}} over --url; other "
+               "flags override it");
 }
 
 moss::MossState ResolveState(const StateOptions& o) {
@@ -73,7 +79,13 @@ moss::MossState ResolveState(const StateOptions& o) {
     moss::ApplyMossHash(o.url, "", &state, &notices);
     if (!notices.empty()) throw BadInput{"--url: " + notices.front()};
   }
-  if (!o.preset.empty())
+  if (!o.params_file.empty()) {
+    Result<std::string> text = ReadFile(o.params_file, "--params", kMaxParamsFileBytes);
+    if (!text.ok()) Fail(text.status());
+    Check(moss::ApplyMossStateJson(*text, &state).Within("--params"));
+  }
+  // --preset resets the values to its own only when it names another preset than the base's.
+  if (!o.preset.empty() && (o.params_file.empty() || o.preset != state.preset))
     Check(run::RenameField(moss::SetMossPreset(o.preset, &state), kFieldFlags));
   for (const std::string& s : o.sets) Check(state.params.SetFromAssignment(s).Within("--set"));
   return state;
@@ -142,10 +154,10 @@ int RunFitness(const FitnessOptions& o, std::ostream& out) {
 // state, then the budget.
 struct RunOptions {
   StateOptions state;
-  std::string scene, indirect, mesh;
+  std::string scene, indirect, mesh, weather;
   double days = 0, photons = 0, seed = 0;
-  bool stats = false;
-  std::string out_path;
+  bool stats = false, instancing = false;
+  std::string out_path, csv_path, map = "coverage";
   BudgetOptions budget;
   CLI::App* cmd = nullptr;
 };
@@ -188,10 +200,7 @@ moss::MossState ResolveRunState(const RunOptions& o) {
   return state;
 }
 
-moss::MossRun StartRun(const RunOptions& o) {
-  if (!o.mesh.empty() && o.cmd->count("--scene"))
-    Fail(Status::Error("--mesh", "given with --scene; must be one or the other"));
-  const moss::MossState state = ResolveRunState(o);
+moss::MossRun StartRun(const RunOptions& o, const moss::MossState& state) {
   Result<moss::MossRun> run = Status::Error("", "");
   if (!o.mesh.empty()) {
     io::MeshReadStats read;
@@ -207,16 +216,68 @@ moss::MossRun StartRun(const RunOptions& o) {
   return std::move(*run);
 }
 
-// moss grow: the run to --days; --out moss.json lists every living moss, written all or none.
-int RunGrow(const RunOptions& o, std::ostream& out) {
-  moss::MossRun run = StartRun(o);
-  Check(run::RenameField(run.Advance(nullptr), kFieldFlags));
-  if (!o.out_path.empty()) {
-    Check(AsFlag(run.ExportEstimate("json").status(), "--out"));
-    StagedOutputs outputs;
-    Check(outputs.Stage("--out", o.out_path, run.MossesJson() + "\n"));
-    Check(outputs.Commit());
+// The bytes of --out (by its ending) for the grown run.
+std::string GrowOutput(const moss::MossRun& run, const std::string& ext, moss::MossMap map,
+                       bool instancing) {
+  if (ext == ".glb") {
+    Result<gltf::Document> doc = run.MapDocument(map, instancing);
+    if (!doc.ok()) Fail(doc.status().Within("--out"));
+    Result<std::vector<unsigned char>> glb = gltf::WriteGlb(*doc);
+    if (!glb.ok()) Fail(glb.status().Within("--out"));
+    return std::string(glb->begin(), glb->end());
   }
+  if (ext == ".svg") return run.PhotonsSvg(false);
+  return run.MossesJson() + "\n";
+}
+
+// moss grow: the run to --days; --out writes every living moss and cell (.json) or the land's map
+// and the tufts (.glb), all or none, its estimate refused before the days are grown.
+int RunGrow(const RunOptions& o, std::ostream& out) {
+  moss::MossMap map = moss::MossMap::kCoverage;
+  Check(run::RenameField(moss::MossMapFromName(o.map, &map), kFieldFlags));
+  if (!o.mesh.empty() && o.cmd->count("--scene"))
+    Fail(Status::Error("--mesh", "given with --scene; must be one or the other"));
+  const moss::MossState state = ResolveRunState(o);
+  std::vector<moss::WeatherDay> weather;
+  if (!o.weather.empty()) {
+    Check(CheckEnding("--weather", o.weather, {".json", ".csv"}));
+    Result<std::string> text = ReadFile(o.weather, "--weather", kMaxParamsFileBytes);
+    if (!text.ok()) Fail(text.status());
+    Result<std::vector<moss::WeatherDay>> days =
+        moss::ParseWeather(*text, Extension(o.weather) == ".csv", state.params);
+    if (!days.ok()) Fail(run::RenameField(days.status(), kFieldFlags));
+    weather = std::move(*days);
+  }
+  moss::MossRun run = StartRun(o, state);
+  if (!weather.empty()) {
+    const std::string name = o.weather.substr(o.weather.find_last_of('/') + 1);
+    Check(run::RenameField(run.UseWeather(std::move(weather), name), kFieldFlags));
+  }
+  const Budget budget = ResolveBudget(o.budget);
+  const std::string ext = Extension(o.out_path);
+  const std::string format = ext.empty() ? "" : ext.substr(1);
+  const std::string change = "lower days, photons or max_mosses";
+  // Each output's format and flag; every estimate is checked before the days are grown (the
+  // mosses at their cap) and again on the grown run, then every file is written, all or none.
+  std::vector<std::pair<std::string, std::string>> outputs;  // {flag, format}
+  if (!o.out_path.empty()) outputs.push_back({"--out", format});
+  if (!o.csv_path.empty()) outputs.push_back({"--csv", "csv"});
+  for (const auto& [flag, kind] : outputs) {
+    Result<Estimate> planned = run.PlannedExportEstimate(kind);
+    Check(AsFlag(planned.status(), flag));
+    Check(CheckEstimate(*planned, budget, change));
+  }
+  Check(run::RenameField(run.Advance(nullptr), kFieldFlags));
+  for (const auto& [flag, kind] : outputs) {
+    Result<Estimate> now = run.ExportEstimate(kind);
+    Check(AsFlag(now.status(), flag));
+    Check(CheckEstimate(*now, budget, change));
+  }
+  StagedOutputs staged;
+  if (!o.out_path.empty())
+    Check(staged.Stage("--out", o.out_path, GrowOutput(run, ext, map, o.instancing)));
+  if (!o.csv_path.empty()) Check(staged.Stage("--csv", o.csv_path, run.DaysCsv()));
+  Check(staged.Commit());
   if (o.stats) {
     out << run.StatsJson() << "\n";
   } else {
@@ -234,11 +295,20 @@ int RunGrow(const RunOptions& o, std::ostream& out) {
 
 // moss photons: the first day's photon map on the scene with its day-0 mosses.
 int RunPhotons(const RunOptions& o, std::ostream& out) {
+  if (!o.mesh.empty() && o.cmd->count("--scene"))
+    Fail(Status::Error("--mesh", "given with --scene; must be one or the other"));
   moss::MossState state = ResolveRunState(o);
   state.days = 1;
-  Result<moss::MossRun> run = moss::MossRun::Start(state, ResolveBudget(o.budget));
-  if (!run.ok()) Fail(run::RenameField(run.status(), kFieldFlags));
-  out << run->PhotonDayJson() << "\n";
+  const moss::MossRun run = StartRun(o, state);
+  if (!o.out_path.empty()) {
+    Result<Estimate> e = run.ExportEstimate("svg");
+    Check(AsFlag(e.status(), "--out"));
+    Check(CheckEstimate(*e, ResolveBudget(o.budget), "lower photons"));
+    StagedOutputs staged;
+    Check(staged.Stage("--out", o.out_path, run.PhotonsSvg(true)));
+    Check(staged.Commit());
+  }
+  out << run.PhotonDayJson() << "\n";
   return 0;
 }
 
@@ -265,12 +335,31 @@ void AddMossCommands(CLI::App& app, CommandList& commands) {
 
   CLI::App* grow = moss_app->add_subcommand(
       "grow",
-      "Grow moss on a built-in scene day by day (photons, soil, life cycle); one JSON object on "
-      "stdout (--stats: all the statistics), --out moss.json: every living moss");
+      "Grow moss on a built-in scene or a mesh day by day (photons, soil, life cycle); one JSON "
+      "object on stdout (--stats: all the statistics); --out moss.json: every living moss and "
+      "soil cell; --out moss.glb: the land with a map and the moss tufts; --out photons.svg: the "
+      "last day's photons");
   auto go = std::make_shared<RunOptions>();
   AddRunOptions(grow, go.get(), true);
   grow->add_flag("--stats", go->stats, "Print every statistic as one JSON object");
-  AddOutputFlag(grow, "--out", &go->out_path, {".json"}, "Write every living moss as JSON");
+  AddOutputFlag(grow, "--out", &go->out_path, {".json", ".glb", ".svg"},
+                "Write .json (every living moss and soil cell), .glb (the land with a per-vertex "
+                "map and the moss tufts of fig 3.7, species and birth day as extras) or .svg (the "
+                "last day's stored photons, first hits and bounced, figs 4.1/4.2)");
+  AddInputFlag(grow, "--weather", &go->weather,
+               "Daily weather replacing the table's climate: .json {\"days\": [{T, rh, U, N, N0, "
+               "P}, ...]} or .csv with a header row (docs/moss-model.md); not in the link");
+  AddOutputFlag(grow, "--csv", &go->csv_path, {".csv"},
+                "Write one row a day: day, mosses per species, seeds, births, deaths, photons "
+                "stored, mean S, T_s, rh_s and theta per geology");
+  OnlyWith(grow->add_option("--map", go->map,
+                            "The .glb land's COLOR_0: coverage (default), S, T_s, rh_s, theta or "
+                            "fitness (the best species' G)"),
+           "--out", {".glb"});
+  OnlyWith(grow->add_flag("--instancing", go->instancing,
+                          "The .glb draws one tuft mesh per species with "
+                          "EXT_mesh_gpu_instancing instead of merging every tuft"),
+           "--out", {".glb"});
   commands.push_back({grow,
                       [go](std::ostream& out) { return RunGrow(*go, out); },
                       {"--scene", "plane", "--days", "2", "--photons", "256", "--stats"}});
@@ -278,9 +367,12 @@ void AddMossCommands(CLI::App& app, CommandList& commands) {
   CLI::App* photons = moss_app->add_subcommand(
       "photons",
       "One day's photon map (figs 4.1/4.2's right halves): photons emitted, stored by bounce "
-      "depth, and per region, as one JSON object");
+      "depth, and per region, as one JSON object; --out photons.svg: the picture");
   auto po = std::make_shared<RunOptions>();
   AddRunOptions(photons, po.get(), false);
+  AddOutputFlag(photons, "--out", &po->out_path, {".svg"},
+                "Write the stored photons seen from the front (figs 4.1/4.2's right halves): first "
+                "hits and bounced photons in two colours over the land");
   commands.push_back({photons,
                       [po](std::ostream& out) { return RunPhotons(*po, out); },
                       {"--scene", "plane", "--photons", "256"}});

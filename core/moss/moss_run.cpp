@@ -14,6 +14,8 @@
 #include "geom/point_index.h"
 #include "geom/ray_cast.h"
 #include "math/det_math.h"
+#include "moss/moss_svg.h"
+#include "params/param_text.h"
 
 namespace niwa::moss {
 namespace {
@@ -21,6 +23,8 @@ namespace {
 // The run's RNG streams (spec §4.28: one per subsystem, so the photon count never reshuffles the
 // growth draws).
 constexpr uint64_t kPhotonStream = 1, kGrowthStream = 2, kRainStream = 3, kPlaceStream = 4;
+// The tufts' turns about their normals (display only: never read by the simulation).
+constexpr uint64_t kDisplayStream = 5;
 
 // Calibrated upper bounds of the work (seconds per unit; bytes per item).
 // Provisional (not yet measured at the caps): 30 days of `thesis` at 8,192 photons and ~100
@@ -297,11 +301,26 @@ void MossRun::Day() {
   const GForm g_form = static_cast<GForm>(p.GetInt(MossParam::kGForm));
   const double s = rules_.s;
 
+  // The day's weather: the table's climate and rain, or a weather file's day over them.
+  Weather weather = ClimateOf(p);
+  const double P_year = p.Get(MossParam::kPYear);
+  const int P_days = p.GetInt(MossParam::kPDays);
+  if (p.GetInt(MossParam::kRainRandom) != 0) {
+    weather.P = (P_days > 0 && w.rain_rng.Bernoulli(P_days / 365.0)) ? P_year / P_days : 0.0;
+  } else {
+    weather.P = EvenRainOfDay(day, P_year, P_days);
+  }
+  PhotonLight light = light_;
+  if (!weather_.empty()) {
+    weather = WeatherOfDay(weather, weather_[static_cast<std::size_t>(day - 1) % weather_.size()]);
+    light.S_sun = p.Get(MossParam::kIBeam) * weather.N / 24.0;
+  }
+
   const MossClock::time_point t0 = MossClock::now();
   // 1. The photon map through the land and the mosses (1 cm spheres), and its gather.
   std::vector<glm::dvec3> centres = CentresOf(w.mosses);
   occluders_.Build(centres, 0.5 * s);
-  TracePhotons(cells_, occluders_, light_, p.GetInt(MossParam::kPhotons), &w.photon_rng, &map_);
+  TracePhotons(cells_, occluders_, light, p.GetInt(MossParam::kPhotons), &w.photon_rng, &map_);
   w.emitted_sun = map_.emitted_sun;
   w.emitted_sky = map_.emitted_sky;
   w.stored_by_depth = map_.stored_by_depth;
@@ -315,14 +334,6 @@ void MossRun::Day() {
   if (!gather.ok() || !index.ok()) return;  // finite positions only: cannot happen
 
   // 2. The soil of every cell (spec §1.4 order), m/M from the mosses within r_CH (eq 3.5).
-  Weather weather = ClimateOf(p);
-  const double P_year = p.Get(MossParam::kPYear);
-  const int P_days = p.GetInt(MossParam::kPDays);
-  if (p.GetInt(MossParam::kRainRandom) != 0) {
-    weather.P = (P_days > 0 && w.rain_rng.Bernoulli(P_days / 365.0)) ? P_year / P_days : 0.0;
-  } else {
-    weather.P = EvenRainOfDay(day, P_year, P_days);
-  }
   const bool rain_day = weather.P > 0.0;
   const double M = p.Get(MossParam::kMCH);
   // S of each cell: the soil photons within r_gather on faces turned its way (PhotonGather::Soil's
@@ -349,6 +360,26 @@ void MossRun::Day() {
     w.T_s[i] = soil.terms.T_s;
     w.rh_s[i] = soil.terms.rh_s;
     w.theta[i] = soil.terms.theta;
+  }
+
+  MossDayRecord record;
+  record.day = day;
+  const int64_t births_before = w.births, deaths_before = w.deaths_declined + w.deaths_contest;
+  for (int64_t n : map_.stored_by_depth) record.photons_stored += n;
+  {
+    std::array<double, kGeologyCount> area{};
+    for (std::size_t i = 0; i < cells_.size(); ++i) {
+      const int g = static_cast<int>(cells_.geology[i]);
+      const double a = cells_.area[i];
+      area[g] += a;
+      record.soil[g][0] += a * w.S[i];
+      record.soil[g][1] += a * w.T_s[i];
+      record.soil[g][2] += a * w.rh_s[i];
+      record.soil[g][3] += a * w.theta[i];
+    }
+    for (int g = 0; g < kGeologyCount; ++g)
+      for (double& v : record.soil[g])
+        v = area[g] > 0 ? v / area[g] : std::numeric_limits<double>::quiet_NaN();
   }
 
   const MossClock::time_point t3 = MossClock::now();
@@ -489,11 +520,25 @@ void MossRun::Day() {
   std::array<int, kSpeciesCount> pop{};
   for (const MossPlant& m : w.mosses) ++pop[static_cast<int>(m.species)];
   w.population.push_back(pop);
+  record.seeds = static_cast<int>(w.seeds.size());
+  record.births = static_cast<int>(w.births - births_before);
+  record.deaths = static_cast<int>(w.deaths_declined + w.deaths_contest - deaths_before);
+  w.days.push_back(record);
   const MossClock::time_point t4 = MossClock::now();
   ms_photons_ += MossMs(t0, t1);
   ms_gather_ += MossMs(t1, t2);
   ms_soil_ += MossMs(t2, t3);
   ms_growth_ += MossMs(t3, t4);
+}
+
+Status MossRun::UseWeather(std::vector<WeatherDay> days, const std::string& name) {
+  if (world_.day > 0) return Status::Error("weather", "given after day 0; must be given first");
+  if (days.empty() || days.size() > static_cast<std::size_t>(kMaxWeatherDays))
+    return Status::Error("weather", "has " + std::to_string(days.size()) +
+                                        " days; must have 1 to " + std::to_string(kMaxWeatherDays));
+  weather_ = std::move(days);
+  weather_name_ = name;
+  return Status::Ok();
 }
 
 Status MossRun::Advance(const run::Observer& observer) {
@@ -512,27 +557,93 @@ Status MossRun::Advance(const run::Observer& observer) {
 }
 
 std::vector<run::Part> MossRun::Parts() const {
+  std::vector<double> ramp;
+  const std::vector<double> value = MapValues(MossMap::kCoverage, &ramp);
   run::Part land;
   land.name = "land";
-  land.mesh = cells_.mesh;
-  return {land};
+  land.mesh = LandMapMesh(cells_, MossMap::kCoverage, value, ramp);
+  land.material.name = "land";
+  land.material.metallic_factor = 0;
+  run::Part tufts;
+  tufts.name = "tufts";
+  tufts.mesh = MergedTufts(Tufts());
+  tufts.material.name = "tufts";
+  tufts.material.metallic_factor = 0;
+  tufts.material.double_sided = true;
+  return {land, tufts};
 }
 
-Result<gltf::Document> MossRun::Document() const {
-  gltf::Document doc;
-  doc.generator = "niwa moss grow";
-  gltf::Mesh mesh;
-  mesh.name = "land";
-  gltf::Primitive primitive;
-  primitive.mesh = cells_.mesh;
-  mesh.primitives.push_back(std::move(primitive));
-  doc.meshes.push_back(std::move(mesh));
-  gltf::Node node;
-  node.name = "land";
-  node.mesh = 0;
-  doc.nodes.push_back(node);
-  doc.scene_nodes = {0};
-  return doc;
+std::vector<double> MossRun::MapValues(MossMap map, std::vector<double>* ramp) const {
+  const MossWorld& w = world_;
+  const std::size_t n = cells_.size();
+  std::vector<double> value(n, 0.0);
+  ramp->assign(n, 0.0);
+  const MapRamp range = MossMapRamp(map);
+  switch (map) {
+    case MossMap::kCoverage: {
+      std::vector<int> on_cell(n, 0);
+      for (const MossPlant& m : w.mosses)
+        if (!m.on_moss) ++on_cell[m.cell];
+      const double s2 = rules_.s * rules_.s;
+      for (std::size_t i = 0; i < n; ++i)
+        value[i] = cells_.area[i] > 0 ? std::min(1.0, on_cell[i] * s2 / cells_.area[i]) : 0.0;
+      break;
+    }
+    case MossMap::kS:
+      value = w.S;
+      break;
+    case MossMap::kT_s:
+      value = w.T_s;
+      break;
+    case MossMap::kRh_s:
+      value = w.rh_s;
+      break;
+    case MossMap::kTheta:
+      value = w.theta;
+      break;
+    case MossMap::kFitness: {
+      const GForm g_form = static_cast<GForm>(state_.params.GetInt(MossParam::kGForm));
+      for (std::size_t i = 0; i < n && w.day > 0; ++i)
+        for (int sp = 0; sp < kSpeciesCount; ++sp)
+          value[i] =
+              std::max(value[i], FitnessOf(SpeciesOf(state_.params, static_cast<Species>(sp)),
+                                           w.T_s[i], w.rh_s[i], w.S[i], g_form)
+                                     .G);
+      break;
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    double v = value[i];
+    if (map == MossMap::kTheta) v /= GeologyLawOf(state_.params, cells_.geology[i]).theta_SAT;
+    (*ramp)[i] = (v - range.lo) / (range.hi - range.lo);
+  }
+  return value;
+}
+
+std::vector<TuftPlace> MossRun::Tufts() const {
+  Pcg32 turns(state_.seed, kDisplayStream);
+  const double spore_G = std::max(rules_.spore_G, 1e-9);
+  std::vector<TuftPlace> tufts;
+  tufts.reserve(world_.mosses.size());
+  for (const MossPlant& m : world_.mosses) {
+    TuftPlace t;
+    t.pos = m.pos;
+    t.normal = m.normal;
+    t.size = rules_.s * (0.5 + 0.5 * std::clamp(m.growth.G_moss / spore_G, 0.0, 1.0));
+    t.angle = 2.0 * det::kPi * turns.Uniform();
+    t.species = m.species;
+    t.birth_day = m.birth_day;
+    tufts.push_back(t);
+  }
+  return tufts;
+}
+
+Result<gltf::Document> MossRun::Document() const { return MapDocument(MossMap::kCoverage, false); }
+
+Result<gltf::Document> MossRun::MapDocument(MossMap map, bool instancing) const {
+  std::vector<double> ramp;
+  const std::vector<double> value = MapValues(map, &ramp);
+  return MossDocument(LandMapMesh(cells_, map, value, ramp), map, world_.day, Tufts(), instancing);
 }
 
 std::string MossRun::Hash(const std::string& prefix) const {
@@ -540,21 +651,72 @@ std::string MossRun::Hash(const std::string& prefix) const {
 }
 
 Result<Estimate> MossRun::ExportEstimate(const std::string& format) const {
-  if (format != "json")
-    return Status::Error("format", "'" + format + "' is not built yet; must be json");
-  Estimate e;
-  e.memory_bytes = 160.0 * static_cast<double>(world_.mosses.size());
-  e.seconds = 1e-6 * static_cast<double>(world_.mosses.size());
-  e.what = "writing " + FormatCount(static_cast<double>(world_.mosses.size())) + " mosses";
-  return e;
+  return ExportEstimateAt(format, static_cast<double>(world_.mosses.size()));
 }
 
-std::string MossRun::PhotonDayJson() const {
+Result<Estimate> MossRun::PlannedExportEstimate(const std::string& format) const {
+  Result<Estimate> e = ExportEstimateAt(format, state_.params.Get(MossParam::kMaxMosses));
+  if (!e.ok()) return e;
+  Estimate days = RunEstimate(state_, cells_.size());
+  days.memory_bytes = 0;  // already held
+  return days + *e;
+}
+
+Result<Estimate> MossRun::ExportEstimateAt(const std::string& format, double mosses) const {
+  const double cells = static_cast<double>(cells_.size());
+  Estimate held;  // the run's cells, photons and mosses, kept while the file is made
+  held.memory_bytes = RunEstimate(state_, cells_.size()).memory_bytes;
+  if (format == "glb")
+    return held + MossGlbEstimate(cells_.size(), static_cast<std::size_t>(mosses));
+  if (format == "json") {
+    // A moss ~160 bytes of text and ~1 kB as JSON values; a cell ~330 and ~2 kB.
+    Estimate e;
+    e.memory_bytes = 1200.0 * mosses + 2400.0 * cells;
+    e.seconds = 1e-6 * mosses + 2e-6 * cells;
+    e.what = "writing " + FormatCount(mosses) + " mosses and " + FormatCount(cells) + " cells";
+    return held + e;
+  }
+  if (format == "csv") {
+    Estimate e;
+    e.memory_bytes = 2.0 * 400.0 * state_.days;  // a row of ~20 numbers, and the text's copy
+    e.seconds = 1e-6 * state_.days;
+    e.what = "writing " + FormatCount(state_.days) + " days as .csv";
+    return held + e;
+  }
+  if (format == "svg") {
+    // A cell's path ~110 bytes, a stored photon's circle ~70 (about 3 stored a path at most),
+    // the items sorted and the text's copy.
+    const double photons = 3.0 * state_.params.Get(MossParam::kPhotons);
+    const double bytes = 110.0 * cells + 70.0 * photons;
+    Estimate e;
+    e.memory_bytes = 2.0 * bytes + 16.0 * (cells + photons) + 64.0 * photons;
+    e.seconds = 2e-7 * (cells + photons) + 1e-8 * bytes;
+    e.what = "writing the photons' .svg (" + FormatCount(cells) + " cells, " +
+             FormatCount(photons) + " photons)";
+    return held + e;
+  }
+  return Status::Error("format", "'" + format + "' is unknown; must be glb, json, csv or svg");
+}
+
+PhotonMap MossRun::NextDayPhotons() const {
   Pcg32 rng = world_.photon_rng;
   PhotonMap map;
   MossOccluders occluders;
   occluders.Build(CentresOf(world_.mosses), 0.5 * rules_.s);
   TracePhotons(cells_, occluders, light_, state_.params.GetInt(MossParam::kPhotons), &rng, &map);
+  return map;
+}
+
+std::string MossRun::PhotonsSvg(bool next_day) const {
+  const int day = next_day ? world_.day + 1 : world_.day;
+  const std::string title = "moss photons day " + std::to_string(day) + ", " +
+                            (mesh_name_.empty() ? state_.scene : mesh_name_) + ", indirect " +
+                            (state_.params.GetInt(MossParam::kIndirect) != 0 ? "on" : "off");
+  return PhotonSvg(cells_, next_day ? NextDayPhotons() : map_, title);
+}
+
+std::string MossRun::PhotonDayJson() const {
+  const PhotonMap map = NextDayPhotons();
   nlohmann::ordered_json j;
   j["study"] = "moss";
   j["scene"] = mesh_name_.empty() ? state_.scene : "mesh";
@@ -619,6 +781,25 @@ std::string MossScenesJson() {
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
+std::string MossRun::DaysCsv() const {
+  std::string out = "day,gingoke,haigoke,sugigoke,seeds,births,deaths,photons_stored";
+  for (int g = 0; g < kGeologyCount; ++g)
+    for (const char* what : {"S", "T_s", "rh_s", "theta"})
+      out += std::string(",") + GeologyName(static_cast<Geology>(g)) + "_" + what;
+  out += "\n";
+  for (const MossDayRecord& r : world_.days) {
+    const std::array<int, kSpeciesCount>& pop = world_.population[r.day];
+    out += std::to_string(r.day);
+    for (int n : pop) out += "," + std::to_string(n);
+    out += "," + std::to_string(r.seeds) + "," + std::to_string(r.births) + "," +
+           std::to_string(r.deaths) + "," + std::to_string(r.photons_stored);
+    for (const auto& soil : r.soil)
+      for (double v : soil) out += "," + (v == v ? FormatNumber(v) : std::string());
+    out += "\n";
+  }
+  return out;
+}
+
 std::string MossRun::MossesJson() const {
   nlohmann::ordered_json j;
   j["study"] = "moss";
@@ -636,6 +817,22 @@ std::string MossRun::MossesJson() const {
     list.push_back(o);
   }
   j["mosses"] = list;
+  nlohmann::ordered_json cells = nlohmann::ordered_json::array();
+  const MossWorld& w = world_;
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    nlohmann::ordered_json o;
+    const glm::dvec3 &c = cells_.centroid[i], &n = cells_.normal[i];
+    o["geology"] = GeologyName(cells_.geology[i]);
+    o["centre"] = {c.x, c.y, c.z};
+    o["normal"] = {n.x, n.y, n.z};
+    o["S"] = w.S[i];
+    o["T_s"] = w.T_s[i];
+    o["rh_s"] = w.rh_s[i];
+    o["theta"] = w.theta[i];
+    o["m_over_M"] = w.m_over_M[i];
+    cells.push_back(o);
+  }
+  j["cells"] = cells;
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
@@ -645,6 +842,8 @@ std::string MossRun::StatsJson() const {
   j["study"] = "moss";
   j["scene"] = mesh_name_.empty() ? state_.scene : "mesh";
   if (!mesh_name_.empty()) j["mesh"] = mesh_name_;  // a loaded mesh: not in the link
+  if (!weather_.empty())                            // a weather file: not in the link
+    j["weather"] = {{"file", weather_name_}, {"days", weather_.size()}};
   j["preset"] = state_.preset;
   j["url"] = Hash("");
   j["days"] = w.day;

@@ -4,9 +4,9 @@
 // mosses in the thesis's order (germination, growth and death, gemmae, spores), the landing of new
 // seeds on faces and on mosses, the contest for occupied places, immigration and the caps; with
 // progress and cancel, and its estimate refused up front over the budget; the stats time the stages
-// (ms_* fields, the only bytes that differ between runs). Does not: load a mesh file, read a
-// weather file, smooth the light over days (light_smoothing_days is refused above 0), or write moss
-// tufts (Document() is the land alone).
+// (ms_* fields, the only bytes that differ between runs); its outputs: the .glb of the land's map
+// and the tufts (moss_gltf.h), the mosses and cells as JSON. Does not: load a mesh file, read a
+// weather file, or smooth the light over days (light_smoothing_days is refused above 0).
 #pragma once
 
 #include <array>
@@ -21,10 +21,12 @@
 #include "geom/radius_grid.h"
 #include "moss/fitness.h"
 #include "moss/life_cycle.h"
+#include "moss/moss_gltf.h"
 #include "moss/moss_state.h"
 #include "moss/photons.h"
 #include "moss/soil.h"
 #include "moss/soil_cells.h"
+#include "moss/weather.h"
 #include "random/pcg32.h"
 #include "run/study_run.h"
 
@@ -57,6 +59,16 @@ struct MossSeed {
 // Why a seed left the pool without a moss, or never entered it.
 enum class SeedLoss : int { kFellOff, kBackFace, kLostContest, kExpired, kCap, kCount };
 
+// One grown day's record (the --csv rows), taken at the day's end.
+struct MossDayRecord {
+  int day = 0;
+  int seeds = 0;               // waiting
+  int births = 0, deaths = 0;  // that day (deaths: declined and lost contests)
+  int64_t photons_stored = 0;  // that day's photon map, every depth
+  // Area-weighted mean S, T_s, rh_s, theta per geology; NaN for a geology without cells.
+  std::array<std::array<double, 4>, kGeologyCount> soil{};
+};
+
 // Everything a day changes (copied at the start of an Advance, so a cancel restores it).
 struct MossWorld {
   int day = 0;
@@ -73,6 +85,7 @@ struct MossWorld {
   int emitted_sun = 0, emitted_sky = 0;                    // the last day's
   std::vector<int64_t> stored_by_depth;                    // the last day's
   std::vector<int64_t> stored_by_depth_total;              // over every day
+  std::vector<MossDayRecord> days;                         // day 1 .. day
 };
 
 class MossRun : public run::StudyRun {
@@ -87,6 +100,11 @@ class MossRun : public run::StudyRun {
   // without triangles.
   static Result<MossRun> StartOnScene(const MossState& state, MossScene scene, const Budget& budget,
                                       const std::string& mesh_name);
+  // Daily weather replacing the table's climate from day 1 (before any day is grown): day d reads
+  // row (d − 1) mod rows; a row's N also sets the sun's beam S_sun = I_beam·N/24 of that day's
+  // photons. `name` (the file's name) goes into the stats as "weather" (not part of the link).
+  // Errors name "weather".
+  Status UseWeather(std::vector<WeatherDay> days, const std::string& name);
   // What the run of `state` on `cells` needs (calibrated upper bounds).
   static Estimate RunEstimate(const MossState& state, std::size_t cells);
 
@@ -99,14 +117,37 @@ class MossRun : public run::StudyRun {
   Result<gltf::Document> Document() const override;
   std::string StatsJson() const override;
   std::string Hash(const std::string& prefix) const override;
+  // format "glb", "json", "csv", "svg" (the photons): what writing it needs now, with what the run
+  // holds (cells, photons).
   Result<Estimate> ExportEstimate(const std::string& format) const override;
+  // The same with the mosses at their cap (max_mosses), and the days' time added, for a refusal
+  // before the days are grown.
+  Result<Estimate> PlannedExportEstimate(const std::string& format) const;
+  // The .glb's document: the land with `map` and the tufts, merged or instanced (moss_gltf.h).
+  // Document() is the coverage map with merged tufts.
+  Result<gltf::Document> MapDocument(MossMap map, bool instancing) const;
+  // Each cell's value of `map` (the last day's) and where it falls on the map's ramp (in [0, 1]).
+  std::vector<double> MapValues(MossMap map, std::vector<double>* ramp) const;
+  // A tuft for every living moss, in the mosses' order: s·(0.5 + 0.5·min(1, G_moss/spore_G)) tall
+  // (half size when new, full at spore-making growth), turned about its normal by a draw of its
+  // own display stream (never the simulation's).
+  std::vector<TuftPlace> Tufts() const;
 
-  // Every living moss (species, pos, normal, birth_day, G_moss) as one JSON object.
+  // One row a grown day: day, mosses per species, seeds waiting, births, deaths, photons stored,
+  // then mean S, T_s, rh_s, theta of each geology (empty for a geology without cells).
+  std::string DaysCsv() const;
+  // Every living moss (species, pos, normal, birth_day, G_moss, on_moss) and every soil cell (its
+  // geology, centre, normal and the last day's S, T_s, rh_s, theta, m_over_M) as one JSON object.
   std::string MossesJson() const;
   // The next day's photon map (traced through the land and today's mosses, without advancing):
   // photons emitted, stored and by depth, power, and per region the stored photons (first hits,
   // bounced) and the cells' mean gathered S.
   std::string PhotonDayJson() const;
+  // The next day's photon map (traced through the land and today's mosses, without advancing).
+  PhotonMap NextDayPhotons() const;
+  // The stored photons of the next day's map (`next_day`) or of the last grown day's, seen from
+  // the front as in figs 4.1/4.2 (moss_svg.h).
+  std::string PhotonsSvg(bool next_day) const;
   // Where a seed starting at `start` would land among today's mosses (spec §1.5.6 and the mat
   // rule: it rests only on mosses inside a mat); false with the loss when it is dropped.
   bool LandSeed(const glm::dvec3& start, MossSeed* seed, SeedLoss* loss) const;
@@ -124,9 +165,12 @@ class MossRun : public run::StudyRun {
   void AddSeed(const glm::dvec3& start, Species species, SeedKind kind,
                const std::vector<glm::dvec3>& centres, const std::vector<uint32_t>& owner);
   void PlaceAtRandom(Species species, bool as_seed);
+  Result<Estimate> ExportEstimateAt(const std::string& format, double mosses) const;
 
   MossState state_;
-  std::string mesh_name_;  // the loaded mesh's file name; "" on a built-in scene
+  std::string mesh_name_;            // the loaded mesh's file name; "" on a built-in scene
+  std::vector<WeatherDay> weather_;  // a weather file's days; empty: the table's climate
+  std::string weather_name_;
   Budget budget_;
   SoilCells cells_;
   std::vector<double> cumulative_area_;

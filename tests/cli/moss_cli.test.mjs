@@ -3,10 +3,15 @@
 // species and both g forms; the spec's §1.4 reference values and the balance's residual as printed;
 // `niwa params moss` / `niwa presets moss` in both builds; hostile values one line naming the flag;
 // `niwa moss grow` (--stats and --out moss.json) and `niwa moss photons` native == WASM byte for
-// byte on every built-in scene, both presets, seeds 1-2, at a few days and photons.
-import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+// byte on every built-in scene, both presets, seeds 1-2, at a few days and photons; moss.json's
+// cells; `--out moss.glb` (merged and --instancing, every --map) native == WASM and gltf-validator
+// clean, its estimate refused before the days are grown with no file left; --csv days; --weather
+// and --params files, hostile ones refused naming the day and field; photons.svg from both commands.
+import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
 import { buildName, check, finish, native, requireWasm, root, run, spawn, wasm, withoutMs } from '../support/cli_pair.mjs';
 
 requireWasm();
@@ -81,6 +86,9 @@ for (const scene of ['plane', 'thesis', 'walls', 'rocks']) {
       if (list.mosses.length !== stats.mosses.total || stats.days !== 12)
         check(`grow ${scene} ${preset} ${seed}: moss.json lists the ${stats.mosses.total} living mosses`, false, ja.slice(0, 200));
       if (list.mosses.length > 0) ++withMosses;
+      if (list.cells.length !== stats.cells.total || !list.cells.every((c) => ['humus', 'sandy', 'asphalt'].includes(c.geology) &&
+          c.centre.length === 3 && c.normal.length === 3 && ['S', 'T_s', 'rh_s', 'theta', 'm_over_M'].every((k) => Number.isFinite(c[k]))))
+        check(`grow ${scene} ${preset} ${seed}: moss.json lists the ${stats.cells.total} cells with their soil`, false, JSON.stringify(list.cells[0]));
       for (const m of list.mosses)
         if (!['gingoke', 'haigoke', 'sugigoke'].includes(m.species) || m.pos.length !== 3 || m.normal.length !== 3 ||
             !(m.birth_day >= 0 && m.birth_day <= 12) || !Number.isFinite(m.G_moss)) {
@@ -90,8 +98,130 @@ for (const scene of ['plane', 'thesis', 'walls', 'rocks']) {
     }
   }
 }
-check(`moss grow: ${growCases} runs (4 scenes x 2 presets x seeds 1-2, 12 days, 1,024 photons): --stats and moss.json native == WASM byte for byte; ${withMosses} with living mosses`,
+check(`moss grow: ${growCases} runs (4 scenes x 2 presets x seeds 1-2, 12 days, 1,024 photons): --stats and moss.json (mosses and cells) native == WASM byte for byte; ${withMosses} with living mosses`,
   growCases === 16 && withMosses >= 8);
+
+// --out moss.glb: the land's map and the tufts, merged or instanced, every map; both builds' bytes
+// equal and gltf-validator clean (0 errors, 0 warnings; the instancing extension is an info).
+{
+  const require = createRequire(join(root, 'package.json'));
+  const validatorModule = await import(pathToFileURL(require.resolve('gltf-validator')).href);
+  const validator = validatorModule.default ?? validatorModule;
+  let glbCases = 0;
+  const runs = [
+    ['thesis', []], ['thesis', ['--instancing']], ['walls', ['--map', 'S']], ['rocks', ['--map', 'T_s', '--instancing']],
+    ['thesis', ['--map', 'rh_s']], ['thesis', ['--map', 'theta']], ['thesis', ['--map', 'fitness']],
+  ];
+  for (const [scene, extra] of runs) {
+    const args = ['moss', 'grow', '--scene', scene, '--days', '15', '--photons', '1024', ...extra];
+    const na = join(dir, `n-${glbCases}.glb`), wa = join(dir, `w-${glbCases}.glb`);
+    run(native, [...args, '--out', na]);
+    run(wasm, [...args, '--out', wa]);
+    const a = readFileSync(na), b = readFileSync(wa);
+    const report = await validator.validateBytes(new Uint8Array(a), { maxIssues: 50 });
+    const length = a.readUInt32LE(12);
+    const gltf = JSON.parse(a.subarray(20, 20 + length).toString('utf8'));
+    const land = gltf.nodes.find((n) => n.name === 'land'), tufts = gltf.nodes.find((n) => n.name === 'tufts');
+    const instanced = extra.includes('--instancing');
+    const map = extra.includes('--map') ? extra[extra.indexOf('--map') + 1] : 'coverage';
+    const stats = JSON.parse(run(native, [...args.filter((w) => w !== '--instancing' && w !== '--map' && w !== map), '--stats']));
+    const count = instanced
+      ? tufts.children.reduce((n, c) => n + gltf.accessors[gltf.nodes[c].extensions.EXT_mesh_gpu_instancing.attributes.TRANSLATION].count, 0)
+      : tufts.extras.birth_day.length;
+    ++glbCases;
+    check(`moss grow ${scene} ${extra.join(' ')} --out moss.glb: native == WASM (${a.length} bytes), validator ${report.issues.numErrors} errors ${report.issues.numWarnings} warnings; map ${land.extras.map}, ${count} tufts of ${stats.mosses.total} mosses`,
+      a.equals(b) && report.issues.numErrors === 0 && report.issues.numWarnings === 0 && land.extras.map === map &&
+      count === stats.mosses.total && count > 0 && (instanced ? gltf.extensionsUsed.includes('EXT_mesh_gpu_instancing') : tufts.extras.species.length === count));
+  }
+  // --csv: one row a day, both builds' bytes equal, written with --out in one commit.
+  {
+    const args = ['moss', 'grow', '--scene', 'thesis', '--days', '20', '--photons', '1024', '--seed', '3'];
+    const nc = join(dir, 'n.csv'), wc = join(dir, 'w.csv');
+    const stats = JSON.parse(run(native, [...args, '--csv', nc, '--out', join(dir, 'n-days.glb'), '--stats']));
+    run(wasm, [...args, '--csv', wc, '--out', join(dir, 'w-days.glb')]);
+    const a = readFileSync(nc, 'utf8'), b = readFileSync(wc, 'utf8');
+    const rows = a.trim().split('\n');
+    const last = rows[rows.length - 1].split(',');
+    check(`moss grow --csv days.csv: native == WASM (${a.length} bytes), ${rows.length - 1} rows of ${rows[0].split(',').length} columns; day 20's population ${last.slice(1, 4).join('/')} as the stats'`,
+      a === b && rows.length === 21 && rows[0].startsWith('day,gingoke,haigoke,sugigoke,seeds,births,deaths,photons_stored,humus_S') &&
+      JSON.stringify(last.slice(1, 4).map(Number)) === JSON.stringify(stats.population.by_day[20]) &&
+      readFileSync(join(dir, 'n-days.glb')).equals(readFileSync(join(dir, 'w-days.glb'))));
+  }
+  // --weather FILE.json|.csv and --params FILE: both builds' bytes equal; the file is named in the
+  // stats, not in the link; a file repeating the table's rows grows the table's bytes.
+  {
+    const csv = join(dir, 'w.csv'), json = join(dir, 'w.json'), params = join(dir, 'p.json');
+    writeFileSync(csv, 'T,rh,U,N,N0,P\n293.15,0.8,0.5,7,9,12\n283.15,0.6,0.1,2,8,0\n');
+    writeFileSync(json, JSON.stringify({ days: [{ T: 293.15, rh: 0.8, U: 0.5, N: 7, N0: 9, P: 12 }, { T: 283.15, rh: 0.6, U: 0.1, N: 2, N0: 8, P: 0 }] }));
+    writeFileSync(params, JSON.stringify({ scene: 'walls', days: 6, params: { T: 290, photons: 512 } }));
+    const args = ['moss', 'grow', '--scene', 'thesis', '--days', '8', '--photons', '1024', '--stats'];
+    const bytes = (cmd, extra) => JSON.stringify(withoutMs(JSON.parse(run(cmd, [...args, ...extra]))));
+    const a = bytes(native, ['--weather', csv]), b = bytes(wasm, ['--weather', csv]);
+    const c = bytes(native, ['--weather', json]);
+    const plain = bytes(native, []);
+    const sa = JSON.parse(a), sc = JSON.parse(c);
+    delete sa.weather; delete sc.weather;
+    check(`moss grow --weather w.csv: native == WASM; the .json of the same rows grows the same; the file in the stats (${JSON.stringify(JSON.parse(a).weather)}), not the link; differs from the table's climate`,
+      a === b && JSON.stringify(sa) === JSON.stringify(sc) && JSON.parse(a).weather.file === 'w.csv' && !JSON.parse(a).url.includes('w.csv') && a !== plain);
+    const pa = run(native, ['moss', 'grow', '--params', params, '--stats']), pb = run(wasm, ['moss', 'grow', '--params', params, '--stats']);
+    const ps = JSON.parse(pa);
+    check(`moss grow --params {scene walls, days 6, T 290, photons 512}: native == WASM; url ${ps.url}`,
+      JSON.stringify(withoutMs(ps)) === JSON.stringify(withoutMs(JSON.parse(pb))) && ps.scene === 'walls' && ps.days === 6 && ps.photons === 512 && ps.url.includes('T=290'));
+    // Hostile weather and params files: one line naming the flag, the day and field with its range; exit 2; no file written.
+    const hostileFiles = [
+      ['bad1.csv', 'T,rh\n400,0.8\n', '--weather: day 1: T: 400 is out of range; must be a number in [233.15, 323.15]'],
+      ['bad2.csv', 'T,Tmax\n290,300\n', "--weather: column 'Tmax' is unknown"],
+      ['bad3.csv', 'N\nnan\n', "--weather: day 1: N: 'nan' is not a decimal number"],
+      ['bad4.json', '{"days": [{"T": 290}, {"rh": -0.1}]}', '--weather: day 2: rh: -0.1 is out of range; must be a number in [0, 1]'],
+      ['bad5.json', '{"days": [{"N": 10, "N0": 9}]}', '--weather: day 1: N: 10 is above N0 9'],
+      ['bad6.json', '{"days": []}', '--weather: has 0 days; must have 1 to 3650'],
+      ['bad7.txt', 'T\n290\n', '--weather: '],
+      ['badp1.json', '{"params": {"rh": 2}}', '--params: rh: 2 is out of range; must be a number in [0, 1]'],
+      ['badp2.json', '{"days": -1}', '--params: days'],
+      ['badp3.json', '{"params": {"T": 290, "T": 291}}', '--params'],
+    ];
+    for (const [name, text, want] of hostileFiles) {
+      const path = join(dir, name);
+      writeFileSync(path, text);
+      const flag = name.startsWith('badp') ? '--params' : '--weather';
+      const out = join(dir, `never-${name}.glb`);
+      for (const cmd of [native, wasm]) {
+        const r = spawn(cmd, ['moss', 'grow', '--scene', 'plane', '--days', '2', '--photons', '64', flag, path, '--out', out]);
+        const lines = r.stderr.trim().split('\n');
+        check(`${buildName(cmd)} moss grow ${flag} ${name}: exit ${r.status}, "${lines[0]}", no file`,
+          r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${want}`) && r.stdout === '' && !existsSync(out));
+      }
+    }
+  }
+  // photons.svg: `moss photons --out` (the next day's map) and `moss grow --out` (the last day's):
+  // both builds' bytes equal; first hits and bounced dots in their colours, none bounced with
+  // indirect off.
+  for (const indirect of ['on', 'off']) {
+    const args = ['moss', 'photons', '--scene', 'thesis', '--photons', '2048', '--indirect', indirect];
+    const na = join(dir, `n-${indirect}.svg`), wa = join(dir, `w-${indirect}.svg`);
+    const day = JSON.parse(run(native, [...args, '--out', na]));
+    run(wasm, [...args, '--out', wa]);
+    const a = readFileSync(na, 'utf8'), b = readFileSync(wa, 'utf8');
+    const direct = (a.match(/fill="#e8a317"\/>/g) || []).length, bounced = (a.match(/fill="#2a6fdb"\/>/g) || []).length;
+    check(`moss photons --indirect ${indirect} --out photons.svg: native == WASM (${a.length} bytes); ${direct} first-hit and ${bounced} bounced dots of ${day.stored_by_depth[0]} and ${day.stored_by_depth.slice(1).reduce((x, y) => x + y, 0)} stored`,
+      a === b && a.startsWith('<svg ') && direct > 0 && direct <= day.stored_by_depth[0] && (indirect === 'off' ? bounced === 0 : bounced > 0));
+  }
+  {
+    const args = ['moss', 'grow', '--scene', 'walls', '--days', '4', '--photons', '1024', '--set', 'sun_altitude=45'];
+    run(native, [...args, '--out', join(dir, 'n-grow.svg')]);
+    run(wasm, [...args, '--out', join(dir, 'w-grow.svg')]);
+    const a = readFileSync(join(dir, 'n-grow.svg'), 'utf8');
+    check(`moss grow --out photons.svg: the last day's photons (day 4), native == WASM (${a.length} bytes)`,
+      a === readFileSync(join(dir, 'w-grow.svg'), 'utf8') && a.includes('moss photons day 4, walls'));
+  }
+  // The .glb's estimate (the mosses at their cap) is refused before the days are grown, no file.
+  const out = join(dir, 'refused.glb');
+  for (const cmd of [native, wasm]) {
+    const r = spawn(cmd, ['moss', 'grow', '--scene', 'plane', '--days', '2', '--photons', '64', '--set', 'max_mosses=1048576', '--max-memory', '1G', '--out', out]);
+    check(`${buildName(cmd)} moss grow --out moss.glb at 1,048,576 max_mosses under --max-memory 1G: exit ${r.status}, "${r.stderr.trim()}", no file`,
+      r.status === 2 && r.stderr.startsWith('niwa: error: --max-memory') && r.stderr.includes('.glb') && !existsSync(out));
+  }
+}
 rmSync(dir, { recursive: true, force: true });
 for (const scene of ['plane', 'thesis', 'walls', 'rocks']) {
   for (const indirect of ['on', 'off']) {
@@ -149,7 +279,8 @@ for (const [args, field] of [
   [['--mesh', join(root, 'tests/data/meshes/empty.glb')], '--mesh'],
   [['--mesh', join(root, 'tests/data/meshes/materials.glb'), '--scene', 'thesis'], '--mesh'],
   [['--scene', 'garden'], '--scene'], [['--days', '-1'], '--days'], [['--days', '2.5'], '--days'],
-  [['--indirect', 'maybe'], '--indirect'], [['--seed', '1e20'], '--seed'], [['--photons', 'nan'], '--photons'],
+  [['--indirect', 'maybe'], '--indirect'], [['--out', 'x.glb', '--map', 'G'], '--map'], [['--map', 'S'], '--map'],
+  [['--instancing'], '--instancing'], [['--out', 'x.json', '--instancing'], '--instancing'], [['--seed', '1e20'], '--seed'], [['--photons', 'nan'], '--photons'],
   [['--max-seconds', '1'], '--max-seconds'], [['--set', 'light_smoothing_days=2', '--days', '1'], 'light_smoothing_days'],
 ]) {
   for (const cmd of [native, wasm]) {
