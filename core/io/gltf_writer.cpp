@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "base/budget.h"
+#include "geom/tangents.h"
 #include "io/tinygltf.h"
 #include "params/json_guard.h"
 
@@ -24,6 +25,21 @@ constexpr int kArrayBuffer = 34962;
 constexpr int kElementArrayBuffer = 34963;
 
 std::string Quoted(const std::string& name) { return name.empty() ? "" : " '" + name + "'"; }
+
+// Whether the writer computes the primitive's TANGENT (geom::ComputeTangentValues): triangles whose
+// material has a normal texture, with normals and uvs and no TANGENT of their own (glTF 3.9.3 reads
+// a normal texture in the tangent space these give; without them the validator warns).
+bool NeedsTangents(const Primitive& p, const Document& doc) {
+  if (p.mode != Mode::kTriangles || p.material < 0 ||
+      static_cast<std::size_t>(p.material) >= doc.materials.size() ||
+      doc.materials[static_cast<std::size_t>(p.material)].normal_texture < 0 ||
+      p.mesh.normals.empty() || p.mesh.uvs.empty()) {
+    return false;
+  }
+  return std::none_of(
+      p.mesh.attributes.begin(), p.mesh.attributes.end(),
+      [](const geom::VertexAttribute& a) { return a.name == geom::kTangentAttribute; });
+}
 
 // Converts parsed JSON to tinygltf's extras value.
 tinygltf::Value ToValue(const nlohmann::json& j) {
@@ -420,6 +436,7 @@ class ModelBuilder {
         add(m.normals.size() * sizeof(glm::vec3));
         add(m.uvs.size() * sizeof(glm::vec2));
         for (const geom::VertexAttribute& a : m.attributes) add(a.values.size() * sizeof(float));
+        if (NeedsTangents(p, doc_)) add(m.vertex_count() * 4 * sizeof(float));
         add(m.indices.size() * sizeof(uint32_t));
         add(p.joints.size() * sizeof(uint16_t));
         add(p.weights.size() * sizeof(float));
@@ -512,6 +529,11 @@ class ModelBuilder {
     for (const geom::VertexAttribute& a : m.attributes) {
       prim->attributes[AttributeSemantic(a.name)] = AddAccessor(
           AddView(a.values, kArrayBuffer), TINYGLTF_COMPONENT_TYPE_FLOAT, kTypes[a.components], n);
+    }
+    if (NeedsTangents(p, doc_)) {
+      prim->attributes["TANGENT"] =
+          AddAccessor(AddView(geom::ComputeTangentValues(m), kArrayBuffer),
+                      TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, n);
     }
     if (!m.indices.empty()) {
       const bool wide =

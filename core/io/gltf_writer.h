@@ -11,6 +11,9 @@
 //   TriMesh's named attributes (below), indices, JOINTS_0 (unsigned short) and WEIGHTS_0;
 // - named attributes: "COLOR_n" (3 or 4 floats), "TEXCOORD_n" (2) and "TANGENT" (4: xyz and the
 //   bitangent sign w, for normal textures) keep their glTF semantic;
+// - TANGENT computed (geom::ComputeTangentValues, after the named attributes) for a TRIANGLES
+//   primitive whose material has a normal texture, with normals and uvs and no "TANGENT" of its
+//   own: every normal-mapped primitive carries the tangent frame its normal map was made in;
 //   every other name is application-specific and written as "_" + its name in upper case
 //   ("birth_step" -> "_BIRTH_STEP", 3.7.2.1: "Application-specific attribute semantics MUST start
 //   with an underscore"), 1-4 floats as SCALAR/VEC2/VEC3/VEC4;

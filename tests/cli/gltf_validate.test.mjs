@@ -158,6 +158,9 @@ try {
     check(numErrors === 0, `${c.label}: gltf-validator`,
           `${numErrors} errors, ${numWarnings} warnings, ${report.issues.numInfos} infos` +
           (errors.length ? '; ' + errors.join('; ') : ''));
+    // Issue 32 item 2: the bark's normal map comes with TANGENT (io/gltf_writer).
+    check(!report.issues.messages.some((m) => m.code === 'MESH_PRIMITIVE_GENERATED_TANGENT_SPACE'),
+          `${c.label}: no missing-tangent warning`);
     if (!c.empty) {
       // The validator decodes every embedded image: RGBA PNGs in buffer views, one per material.
       const images = (report.info?.resources ?? []).filter((r) => r.pointer?.startsWith('/images/'));
@@ -223,6 +226,8 @@ try {
           `sway ${r.label}: gltf-validator, a skin and one animation`,
           `${report.issues.numErrors} errors, ${report.issues.numWarnings} warnings, ` +
           `${(bytes.length / 1e6).toFixed(2)} MB` + (errors.length ? '; ' + errors.join('; ') : ''));
+    check(!report.issues.messages.some((m) => m.code === 'MESH_PRIMITIVE_GENERATED_TANGENT_SPACE'),
+          `sway ${r.label}: no missing-tangent warning`);
     if (r.label !== 'native') continue;
 
     const joints = 1 + 2 * stats.moving + stats.followers;

@@ -3,7 +3,9 @@
 // is validator-clean (Khronos gltf-validator, 0 errors) with materials bark and bark_young carrying
 // base colour, normal and occlusion textures (sampler REPEAT) that are not the procedural ones; the
 // default (no --bark, or --bark procedural) writes the procedural .glb byte for byte; bad values of
-// --bark and its flags are one line naming the flag, exit 2, nothing written.
+// --bark and its flags are one line naming the flag, exit 2, nothing written. Issue 32 item 2: both
+// .glb carry TANGENT (VEC4 floats: unit xyz perpendicular to NORMAL, w = +-1) on exactly the
+// primitives whose material has a normal texture, and the validator has no missing-tangent warning.
 import { mkdtempSync, readFileSync, readdirSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { tmpdir } from 'node:os';
@@ -29,7 +31,53 @@ function parseGlb(bytes) {
     const view = json.bufferViews[json.images[json.textures[texture].source].bufferView];
     return bin.subarray(view.byteOffset || 0, (view.byteOffset || 0) + view.byteLength);
   };
-  return { json, image };
+  const floats = (accessor) => {
+    const a = json.accessors[accessor];
+    const view = json.bufferViews[a.bufferView];
+    const start = (view.byteOffset || 0) + (a.byteOffset || 0);
+    const size = { SCALAR: 1, VEC2: 2, VEC3: 3, VEC4: 4 }[a.type];
+    return new Float32Array(bin.buffer.slice(bin.byteOffset + start, bin.byteOffset + start + a.count * size * 4));
+  };
+  return { json, image, floats };
+}
+
+// TANGENT on every normal-mapped primitive (and on no other), well formed; no validator warning.
+async function checkTangents(label, bytes) {
+  const report = await validator.validateBytes(new Uint8Array(bytes), { maxIssues: 200 });
+  const missing = report.issues.messages.filter((m) => m.code === 'MESH_PRIMITIVE_GENERATED_TANGENT_SPACE');
+  check(`${label}: gltf-validator 0 errors, no missing-tangent warning (${report.issues.numWarnings} warnings)`,
+    report.issues.numErrors === 0 && missing.length === 0,
+    JSON.stringify(report.issues.messages.slice(0, 3)));
+  const glb = parseGlb(bytes);
+  let mapped = 0, vertices = 0;
+  const bad = [];
+  glb.json.meshes.forEach((mesh, i) => mesh.primitives.forEach((p, j) => {
+    const normalMapped = p.material !== undefined && glb.json.materials[p.material].normalTexture !== undefined;
+    const where = `meshes[${i}].primitives[${j}]`;
+    if (!normalMapped) {
+      if (p.attributes.TANGENT !== undefined) bad.push(`${where}: TANGENT without a normal map`);
+      return;
+    }
+    mapped += 1;
+    const a = glb.json.accessors[p.attributes.TANGENT];
+    if (!a || a.type !== 'VEC4' || a.componentType !== 5126) {
+      bad.push(`${where}: no float VEC4 TANGENT`);
+      return;
+    }
+    const t = glb.floats(p.attributes.TANGENT), n = glb.floats(p.attributes.NORMAL);
+    for (let v = 0; v < a.count; v += 1) {
+      const [x, y, z, w] = t.subarray(4 * v, 4 * v + 4);
+      const length = Math.hypot(x, y, z);
+      const dot = (x * n[3 * v] + y * n[3 * v + 1] + z * n[3 * v + 2]) / Math.max(Math.hypot(...n.subarray(3 * v, 3 * v + 3)), 1e-30);
+      if (!(Math.abs(length - 1) < 1e-4 && Math.abs(dot) < 1e-3 && (w === 1 || w === -1))) {
+        bad.push(`${where} vertex ${v}: (${x}, ${y}, ${z}, ${w}), normal dot ${dot}`);
+        break;
+      }
+    }
+    vertices += a.count;
+  }));
+  check(`${label}: TANGENT on the ${mapped} normal-mapped primitives (${vertices} vertices), unit, perpendicular to NORMAL, w = +-1`,
+    mapped > 0 && bad.length === 0, bad.slice(0, 3).join('; '));
 }
 
 // The sim .glb in both builds.
@@ -57,6 +105,8 @@ const simGlb = parseGlb(got.native.bytes);
 const procedural = join(work, 'procedural.glb');
 const plain = spawn(native, [...tree, '--out', procedural]);
 check('procedural .glb: exit 0', plain.status === 0, plain.stderr.trim());
+await checkTangents('--bark sim .glb', got.native.bytes);
+await checkTangents('procedural .glb', readFileSync(procedural));
 const proceduralGlb = parseGlb(readFileSync(procedural));
 const proceduralBark = proceduralGlb.json.materials.find((m) => m.name === 'bark');
 for (const name of ['bark', 'bark_young']) {

@@ -263,6 +263,63 @@ TEST(GltfWriter, EmbeddedTexturesAndMaterials) {
   EXPECT_EQ(model.images[2].image, normal_png);  // the unused texture comes last
 }
 
+// A normal texture brings TANGENT (geom::ComputeTangentValues) to the triangles using it, and to
+// nothing else: not to a material without one, not to lines, not over a TANGENT the caller gave,
+// not without uvs.
+TEST(GltfWriter, TangentsForNormalTextures) {
+  const std::vector<unsigned char> normal_png =
+      *image::EncodeRgba8Png(image::MakeRgba8(1, 1, 128, 128, 255));
+  Primitive mapped = Triangle();
+  mapped.material = 0;
+  mapped.mesh.uvs = {{1, 0}, {0, 0}, {1, 1}};  // u mirrored: along -x
+  Primitive plain = Triangle();
+  plain.material = 1;
+  Primitive given = Triangle();
+  given.material = 0;
+  given.mesh.AddAttribute("TANGENT", 4).values = {0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1};
+  Primitive no_uvs = Triangle();
+  no_uvs.material = 0;
+  no_uvs.mesh.uvs.clear();
+  Primitive lines = Triangle();
+  lines.material = 0;
+  lines.mode = Mode::kLines;
+  lines.mesh.indices = {0, 1, 1, 2};
+  Document doc = OneMesh({mapped, plain, given, no_uvs, lines});
+  doc.textures.push_back({"normal", normal_png});
+  Material bark;
+  bark.name = "bark";
+  bark.normal_texture = 0;
+  Material leaf;
+  leaf.name = "leaf";
+  doc.materials = {bark, leaf};
+  Result<std::vector<unsigned char>> glb = WriteGlb(doc);
+  ASSERT_TRUE(glb.ok()) << glb.status().Line();
+  const tinygltf::Model model = Parse(*glb);
+  const auto& prims = model.meshes.at(0).primitives;
+  ASSERT_EQ(prims.size(), 5u);
+  ASSERT_EQ(prims[0].attributes.count("TANGENT"), 1u);
+  const tinygltf::Accessor& accessor =
+      model.accessors.at(static_cast<std::size_t>(prims[0].attributes.at("TANGENT")));
+  EXPECT_EQ(accessor.type, TINYGLTF_TYPE_VEC4);
+  EXPECT_EQ(Read<float>(model, prims[0].attributes.at("TANGENT")),
+            (std::vector<float>{-1, 0, 0, -1, -1, 0, 0, -1, -1, 0, 0, -1}));
+  EXPECT_EQ(prims[1].attributes.count("TANGENT"), 0u);
+  EXPECT_EQ(Read<float>(model, prims[2].attributes.at("TANGENT")), given.mesh.attributes[0].values);
+  EXPECT_EQ(prims[3].attributes.count("TANGENT"), 0u);
+  EXPECT_EQ(prims[4].attributes.count("TANGENT"), 0u);
+  // Without the normal texture only the caller's own TANGENT is written.
+  doc.materials[0].normal_texture = -1;
+  doc.textures.clear();
+  Result<std::vector<unsigned char>> bare = WriteGlb(doc);
+  ASSERT_TRUE(bare.ok()) << bare.status().Line();
+  const tinygltf::Model bare_model = Parse(*bare);
+  const auto& bare_prims = bare_model.meshes.at(0).primitives;
+  ASSERT_EQ(bare_prims.size(), 5u);
+  for (std::size_t i = 0; i < bare_prims.size(); ++i) {
+    EXPECT_EQ(bare_prims[i].attributes.count("TANGENT"), i == 2 ? 1u : 0u) << "primitive " << i;
+  }
+}
+
 TEST(GltfWriter, SkinAndClip) {
   // A two-bone strip: vertices 0-1 on joint 0, 2-3 blended, 4-5 on joint 1.
   Primitive strip;
