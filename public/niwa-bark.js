@@ -55,7 +55,7 @@ class NiwaBark extends EmbedElement {
     await this.ready;
     const hash = this.getAttribute('state');
     if (hash !== null) {
-      this.worker.request('decode', { hash }, { group: 'decode', done: ['decoded'] });
+      this.decode(hash);
       return;
     }
     const state = {};
@@ -78,7 +78,7 @@ class NiwaBark extends EmbedElement {
       if (msg.id !== this.worker.latestId('bark')) return;
       if (this.renderer) this.show(msg);
       else if (msg.type !== 'frame') this.pending = msg;
-    } else if (msg.type === 'error' && (msg.id === undefined || msg.id === this.worker.latestId('bark') || msg.id === this.worker.latestId('decode'))) {
+    } else if (this.ownError(msg, 'bark')) {
       this.showMessage(msg.message);
     }
   }

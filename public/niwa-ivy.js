@@ -66,7 +66,7 @@ class NiwaIvy extends EmbedElement {
     await this.ready;
     const hash = this.getAttribute('state');
     if (hash !== null) {
-      this.worker.request('decode', { hash }, { group: 'decode', done: ['decoded'] });
+      this.decode(hash);
       return;
     }
     const state = {};
@@ -99,7 +99,7 @@ class NiwaIvy extends EmbedElement {
       }
       if (this.renderer) this.showIvy(msg);
       else this.pending.ivy = msg;
-    } else if (msg.type === 'error' && (msg.id === undefined || msg.id === this.worker.latestId('ivy') || msg.id === this.worker.latestId('decode'))) {
+    } else if (this.ownError(msg, 'ivy')) {
       this.showMessage(msg.message);
     }
   }

@@ -80,7 +80,7 @@ class NiwaMoss extends EmbedElement {
     this.animation = null;
     setHooks({ status: 'growing' }, this);
     await this.ready;
-    this.worker.request('decode', { hash: this.stateHash() }, { group: 'decode', done: ['decoded'] });
+    this.decode(this.stateHash());
   }
 
   onWorkerMessage(msg) {
@@ -90,7 +90,7 @@ class NiwaMoss extends EmbedElement {
     } else if (msg.type === 'moss') {
       if (this.renderer) this.showMoss(msg);
       else this.pendingMoss = msg;
-    } else if (msg.type === 'error' && (msg.id === undefined || msg.id === this.worker.latestId('moss') || msg.id === this.worker.latestId('decode'))) {
+    } else if (this.ownError(msg, 'moss')) {
       this.showMessage(msg.message);
     }
   }

@@ -75,7 +75,7 @@ class NiwaTerrain extends EmbedElement {
     this.animation = null;
     setHooks({ status: 'growing' }, this);
     await this.ready;
-    this.worker.request('decode', { hash: this.stateHash() }, { group: 'decode', done: ['decoded'] });
+    this.decode(this.stateHash());
   }
 
   onWorkerMessage(msg) {
@@ -85,7 +85,7 @@ class NiwaTerrain extends EmbedElement {
     } else if (msg.type === 'terrain') {
       if (this.renderer) this.showTerrain(msg);
       else this.pendingTerrain = msg;
-    } else if (msg.type === 'error' && (msg.id === undefined || msg.id === this.worker.latestId('terrain') || msg.id === this.worker.latestId('decode'))) {
+    } else if (this.ownError(msg, 'terrain')) {
       this.showMessage(msg.message);
     }
   }

@@ -121,6 +121,19 @@ export class EmbedElement extends HTMLElement {
     }
   }
 
+  // Asks the worker to decode a share-link hash (its 'decoded' reply holds the state and notices);
+  // the request's group is 'decode', which ownError below also answers for.
+  decode(hash) {
+    this.worker.request('decode', { hash }, { group: 'decode', done: ['decoded'] });
+  }
+
+  // True for an error reply to this element's latest request of `group` or its latest decode, or
+  // one with no request id (a worker failure): the ones the element shows.
+  ownError(msg, group) {
+    return msg.type === 'error' &&
+      (msg.id === undefined || msg.id === this.worker.latestId(group) || msg.id === this.worker.latestId('decode'));
+  }
+
   showMessage(text) {
     this.line.textContent = text;
     setHooks({ status: 'error', error: text }, this);
