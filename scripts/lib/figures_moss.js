@@ -27,7 +27,8 @@ const range = (xs) => `${r2(mean(xs))} (${r2(Math.min(...xs))}-${r2(Math.max(...
 const cache = new Map();
 function grow(preset, seed, extra = [], keepMosses = false) {
   const key = [preset, seed, ...extra].join(' ');
-  if (cache.has(key)) return cache.get(key);
+  // A run kept without its mosses is grown again when a picture needs them.
+  if (cache.has(key) && (!keepMosses || cache.get(key).mosses)) return cache.get(key);
   const args = ['moss', 'grow', '--preset', preset, '--seed', String(seed), '--days', '300',
     ...extra, '--stats'];
   const json = path.join(tmpDir, 'm.json');
