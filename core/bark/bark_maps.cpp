@@ -125,6 +125,66 @@ void WrappedChamfer(int width, int height, std::vector<int>* dist_) {
 }
 
 constexpr int kFar = 1 << 20;
+// The 2-layer model's plates: grey-brown.
+constexpr double kPlateRgb[3] = {0.40, 0.34, 0.28};
+
+// The four maps from a wrapped height field h (cm; `top` its highest level) and what covers each
+// texel: colour(p, &rgb, &jitter) is true on a plate (rgb its layer's colour, jitter its per-plate
+// factor) and false on the crack floor. The one texel loop of both models' maps.
+template <typename PlateColour>
+void FillMaps(int width, int height, const std::vector<double>& h, double top, PlateColour colour,
+              BarkMaps* maps) {
+  auto idx = [width, height](int x, int y) {
+    return static_cast<std::size_t>(WrapIndex(y, height)) * width + WrapIndex(x, width);
+  };
+  maps->height = image::MakeGray16(width, height);
+  maps->base_colour = image::MakeRgba8(width, height);
+  maps->normal = image::MakeRgba8(width, height);
+  maps->orm = image::MakeRgba8(width, height);
+  const int gx = std::max(1, width / 4), gy = std::max(1, height / 32);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t p = idx(x, y);
+      const double hn = top > 0 ? h[p] / top : 0.0;
+      maps->height.At(x, y) = static_cast<uint16_t>(std::lround(std::min(1.0, hn) * 65535.0));
+      // Normal from central differences (wrapped); image rows run down, +y of the normal is up.
+      const double dhdx = (h[idx(x + 1, y)] - h[idx(x - 1, y)]) / (2.0 * maps->texel_cm_x);
+      const double dhdrow = (h[idx(x, y + 1)] - h[idx(x, y - 1)]) / (2.0 * maps->texel_cm_y);
+      double nx = -dhdx, ny = dhdrow, nz = 1.0;
+      const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
+      unsigned char* n = maps->normal.At(x, y);
+      n[0] = Byte(0.5 + 0.5 * nx / len);
+      n[1] = Byte(0.5 + 0.5 * ny / len);
+      n[2] = Byte(0.5 + 0.5 * nz / len);
+      n[3] = 255;
+      // Colour: plates their layer's colour × a per-plate jitter × the grain; cracks the inner
+      // layer's red-brown.
+      const double grain = 0.8 + 0.25 * BarkGrain(x, y, width, height, gx, gy, 17u) +
+                           0.15 * BarkGrain(x, y, width, height, gx * 2, gy * 2, 91u);
+      unsigned char* c = maps->base_colour.At(x, y);
+      const double* rgb = nullptr;
+      double jitter = 1;
+      const bool on_plate = colour(p, &rgb, &jitter);
+      if (on_plate) {
+        const double f = jitter * grain * (0.75 + 0.25 * hn);
+        c[0] = Byte(rgb[0] * f);
+        c[1] = Byte(rgb[1] * f);
+        c[2] = Byte(rgb[2] * f);
+      } else {
+        const double f = 0.8 * grain;
+        c[0] = Byte(0.42 * f);
+        c[1] = Byte(0.20 * f);
+        c[2] = Byte(0.11 * f);
+      }
+      c[3] = 255;
+      unsigned char* o = maps->orm.At(x, y);
+      o[0] = Byte(0.35 + 0.65 * hn);       // occlusion: crack depth
+      o[1] = Byte(on_plate ? 0.8 : 0.95);  // roughness
+      o[2] = 0;                            // metallic
+      o[3] = 255;
+    }
+  }
+}
 
 }  // namespace
 
@@ -159,9 +219,6 @@ BarkMaps DrawBarkMaps(const Lattice& L, const Surface& s, const CrackMeasures& c
   std::vector<int> dist(npx);
   for (std::size_t p = 0; p < npx; ++p) dist[p] = plate[p] == 0 ? 0 : kFar;
   WrappedChamfer(width, height, &dist);
-  auto idx = [width, height](int x, int y) {
-    return static_cast<std::size_t>(WrapIndex(y, height)) * width + WrapIndex(x, width);
-  };
   // Height (cm): plate tops at D, bevelled by b = 0.3·D within w = 0.5·L_o of a crack; cracks at
   // the inner layer's top (0).
   const double texel = std::sqrt(maps.texel_cm_x * maps.texel_cm_y);
@@ -175,54 +232,15 @@ BarkMaps DrawBarkMaps(const Lattice& L, const Surface& s, const CrackMeasures& c
     const double delta = dist[p] / 3.0 * texel;
     h[p] = D - bevel * std::max(0.0, 1.0 - delta / reach);
   }
-  maps.height = image::MakeGray16(width, height);
-  maps.base_colour = image::MakeRgba8(width, height);
-  maps.normal = image::MakeRgba8(width, height);
-  maps.orm = image::MakeRgba8(width, height);
-  const int gx = std::max(1, width / 4), gy = std::max(1, height / 32);
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      const std::size_t p = idx(x, y);
-      const double hn = h[p] / D;
-      maps.height.At(x, y) = static_cast<uint16_t>(std::lround(std::min(1.0, hn) * 65535.0));
-      // Normal from central differences (wrapped); image rows run down, +y of the normal is up.
-      const double dhdx = (h[idx(x + 1, y)] - h[idx(x - 1, y)]) / (2.0 * maps.texel_cm_x);
-      const double dhdrow = (h[idx(x, y + 1)] - h[idx(x, y - 1)]) / (2.0 * maps.texel_cm_y);
-      double nx = -dhdx, ny = dhdrow, nz = 1.0;
-      const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
-      nx /= len;
-      ny /= len;
-      nz /= len;
-      unsigned char* n = maps.normal.At(x, y);
-      n[0] = Byte(0.5 + 0.5 * nx);
-      n[1] = Byte(0.5 + 0.5 * ny);
-      n[2] = Byte(0.5 + 0.5 * nz);
-      n[3] = 255;
-      // Colour: plates grey-brown × a per-plate jitter × the grain; cracks the inner layer's
-      // red-brown, darker with depth.
-      const double grain = 0.8 + 0.25 * BarkGrain(x, y, width, height, gx, gy, 17u) +
-                           0.15 * BarkGrain(x, y, width, height, gx * 2, gy * 2, 91u);
-      unsigned char* c = maps.base_colour.At(x, y);
-      if (plate[p] != 0) {
-        const double jitter = 0.85 + 0.3 * Hash01(static_cast<uint32_t>(plate[p]), 7u);
-        const double f = jitter * grain * (0.75 + 0.25 * hn);
-        c[0] = Byte(0.40 * f);
-        c[1] = Byte(0.34 * f);
-        c[2] = Byte(0.28 * f);
-      } else {
-        const double f = 0.8 * grain;
-        c[0] = Byte(0.42 * f);
-        c[1] = Byte(0.20 * f);
-        c[2] = Byte(0.11 * f);
-      }
-      c[3] = 255;
-      unsigned char* o = maps.orm.At(x, y);
-      o[0] = Byte(0.35 + 0.65 * hn);            // occlusion: crack depth
-      o[1] = Byte(plate[p] != 0 ? 0.8 : 0.95);  // roughness
-      o[2] = 0;                                 // metallic
-      o[3] = 255;
-    }
-  }
+  FillMaps(
+      width, height, h, D,
+      [&](std::size_t p, const double** rgb, double* jitter) {
+        if (plate[p] == 0) return false;
+        *rgb = kPlateRgb;
+        *jitter = 0.85 + 0.3 * Hash01(static_cast<uint32_t>(plate[p]), 7u);
+        return true;
+      },
+      &maps);
   return maps;
 }
 
@@ -256,9 +274,6 @@ BarkMaps DrawLayeredMaps(const Lattice& L, const std::vector<MapLayer>& layers, 
     for (std::size_t p = 0; p < npx; ++p) dist[lv][p] = level[p] < lv ? 0 : kFar;
     WrappedChamfer(width, height, &dist[lv]);
   }
-  auto idx = [width, height](int x, int y) {
-    return static_cast<std::size_t>(WrapIndex(y, height)) * width + WrapIndex(x, width);
-  };
   const double texel = std::sqrt(maps.texel_cm_x * maps.texel_cm_y);
   const double reach = 0.5 * L.l_o;
   const double top = layers.front().top;
@@ -272,50 +287,15 @@ BarkMaps DrawLayeredMaps(const Lattice& L, const std::vector<MapLayer>& layers, 
     const double delta = dist[level[p]][p] / 3.0 * texel;
     h[p] = m.top - 0.3 * m.thickness * std::max(0.0, 1.0 - delta / reach);
   }
-  maps.height = image::MakeGray16(width, height);
-  maps.base_colour = image::MakeRgba8(width, height);
-  maps.normal = image::MakeRgba8(width, height);
-  maps.orm = image::MakeRgba8(width, height);
-  const int gx = std::max(1, width / 4), gy = std::max(1, height / 32);
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      const std::size_t p = idx(x, y);
-      const double hn = top > 0 ? h[p] / top : 0.0;
-      maps.height.At(x, y) = static_cast<uint16_t>(std::lround(std::min(1.0, hn) * 65535.0));
-      const double dhdx = (h[idx(x + 1, y)] - h[idx(x - 1, y)]) / (2.0 * maps.texel_cm_x);
-      const double dhdrow = (h[idx(x, y + 1)] - h[idx(x, y - 1)]) / (2.0 * maps.texel_cm_y);
-      double nx = -dhdx, ny = dhdrow, nz = 1.0;
-      const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
-      unsigned char* n = maps.normal.At(x, y);
-      n[0] = Byte(0.5 + 0.5 * nx / len);
-      n[1] = Byte(0.5 + 0.5 * ny / len);
-      n[2] = Byte(0.5 + 0.5 * nz / len);
-      n[3] = 255;
-      const double grain = 0.8 + 0.25 * BarkGrain(x, y, width, height, gx, gy, 17u) +
-                           0.15 * BarkGrain(x, y, width, height, gx * 2, gy * 2, 91u);
-      unsigned char* c = maps.base_colour.At(x, y);
-      if (level[p] != 0) {
-        const MapLayer& m = layers[nl - level[p]];
-        const double jitter =
-            0.85 + 0.3 * Hash01(static_cast<uint32_t>(plate[p]), 7u + 131u * level[p]);
-        const double f = jitter * grain * (0.75 + 0.25 * hn);
-        c[0] = Byte(m.colour[0] * f);
-        c[1] = Byte(m.colour[1] * f);
-        c[2] = Byte(m.colour[2] * f);
-      } else {
-        const double f = 0.8 * grain;
-        c[0] = Byte(0.42 * f);
-        c[1] = Byte(0.20 * f);
-        c[2] = Byte(0.11 * f);
-      }
-      c[3] = 255;
-      unsigned char* o = maps.orm.At(x, y);
-      o[0] = Byte(0.35 + 0.65 * hn);
-      o[1] = Byte(level[p] != 0 ? 0.8 : 0.95);
-      o[2] = 0;
-      o[3] = 255;
-    }
-  }
+  FillMaps(
+      width, height, h, top,
+      [&](std::size_t p, const double** rgb, double* jitter) {
+        if (level[p] == 0) return false;
+        *rgb = layers[nl - level[p]].colour;
+        *jitter = 0.85 + 0.3 * Hash01(static_cast<uint32_t>(plate[p]), 7u + 131u * level[p]);
+        return true;
+      },
+      &maps);
   return maps;
 }
 
