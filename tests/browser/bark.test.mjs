@@ -142,18 +142,14 @@ await runBrowserTest(async (server, browser) => {
   let serial = Number(data.barkSerial);
   const framesBefore = Number(data.framesSeen);
   await page.selectOption('#species', 'tallow');
-  // While it grows: frames of the full lattice as it cracks (after the preview's); one past 60 %.
-  await page.waitForFunction(() => /growing: step \d+ of \d+ \(([6-9]\d)%\)/.test(document.getElementById('progress').textContent)
-    || document.documentElement.dataset.status === 'ready', null, { timeout: TIMEOUT, polling: 50 });
-  const lateFrame = Number(await page.evaluate(() => document.documentElement.dataset.framesSeen));
-  await page.waitForFunction((n) => {
-    const d = document.documentElement.dataset;
-    return (d.drawnPhase === 'full' && Number(d.drawnFrame) >= n) || d.status === 'ready';
-  }, Math.max(framesBefore + 3, lateFrame), { timeout: TIMEOUT, polling: 50 });
+  // While it grows: frames of the full lattice as it cracks (after the preview's). The page counts the
+  // distinct full-lattice frames it drew while the run was live, so a fast machine that finishes before
+  // the test looks cannot turn a drawn frame into a failure.
+  const fullBefore = Number(data.liveFullDrawn || 0);
+  await page.waitForFunction(() => document.documentElement.dataset.status === 'ready' && document.documentElement.dataset.species === 'tallow', null, { timeout: TIMEOUT, polling: 50 });
   const growing = await page.evaluate(() => ({ ...document.documentElement.dataset }));
-  await saveCanvasPng(page, 'bark-growing.png');
-  check('frames of the full lattice are drawn while it grows', growing.drawnPhase === 'full' && growing.status !== 'ready',
-    `drawn phase ${growing.drawnPhase}, frame ${growing.drawnFrame} of ${growing.framesSeen}, status ${growing.status}`);
+  check('frames of the full lattice are drawn while it grows', Number(growing.liveFullDrawn) - fullBefore >= 2 && Number(growing.framesSeen) > framesBefore + 2,
+    `${Number(growing.liveFullDrawn) - fullBefore} full-lattice frames drawn live, ${Number(growing.framesSeen) - framesBefore} frames received`);
   data = await waitBark(page, serial);
   check('a species change regrows (tallow)', data.status === 'ready' && data.species === 'tallow' && data.hash.includes('species=tallow') && Number(data.brokenAll) > 0,
     `${data.status} ${data.hash} broken ${data.brokenAll} ${data.error || ''}`);

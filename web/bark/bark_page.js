@@ -80,11 +80,17 @@ let installedSerial = 0;
 let framesSeen = 0;
 let framesInstalled = 0;  // the live frames put on the renderer (data-drawn-frame: the last one drawn)
 let livePhase = '';       // the phase of the last of them (preview or full)
+let liveFullDrawn = 0;    // distinct full-lattice frames drawn while a run grows (data-live-full-drawn)
+let lastFullDrawn = -1;
 const loop = new ProgressiveLoop({
   renderer: () => (renderer ? frame : null),
   camera,
   onDrawn: (drawn) => {
-    setHooks({ drawnSerial: installedSerial, drawnFrame: framesInstalled, drawnPhase: renderer?.live ? livePhase : '', drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls, tileShows: renderer?.tileShows ?? '' });
+    if (renderer?.live && livePhase === 'full' && framesInstalled !== lastFullDrawn) {
+      lastFullDrawn = framesInstalled;
+      liveFullDrawn += 1;
+    }
+    setHooks({ drawnSerial: installedSerial, drawnFrame: framesInstalled, drawnPhase: renderer?.live ? livePhase : '', liveFullDrawn, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls, tileShows: renderer?.tileShows ?? '' });
   },
 });
 const requestFrame = () => loop.request();
