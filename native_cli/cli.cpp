@@ -133,6 +133,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     for (const cli::Command& command : commands) {
       if (*command.app) {
         cli::CheckApplicable(*command.app);  // flags that apply only to another output
+        cli::PreflightOutputs(*command.app);  // outputs that could not be written, before the work
         return command.run(out);
       }
     }

@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <chrono>
@@ -445,6 +446,51 @@ std::string FileIdentity(const std::string& path) {
 }
 
 }  // namespace
+
+// A file name's longest length on the file systems Niwa writes to (Linux NAME_MAX; node's under the
+// WASM CLI).
+constexpr std::size_t kNameMaxBytes = 255;
+
+void PreflightOutputs(const CLI::App& cmd) {
+  struct Given {
+    std::string field, path, identity;
+  };
+  std::vector<Given> given;
+  // --out first, then the others in the order they were added: the order the commands stage them,
+  // so a clash names the same flag as Stage did.
+  std::vector<const CLI::Option*> options = cmd.get_options();
+  std::stable_partition(options.begin(), options.end(),
+                        [](const CLI::Option* o) { return o->get_name() == "--out"; });
+  for (const CLI::Option* option : options) {
+    const FlagInfo* info = Declared(option);
+    if (option->count() == 0 || info == nullptr || info->kind != FlagKind::kOutput) continue;
+    if (option->results().empty()) continue;
+    const std::string field = option->get_name();
+    const std::string& path = option->results().back();
+    const Status cannot = Status::Error(field, "cannot write '" + Echo(path) + "'");
+    if (path.empty() || path.back() == '/') Fail(cannot);
+    const std::size_t slash = path.find_last_of('/');
+    const std::size_t name_bytes = slash == std::string::npos ? path.size() : path.size() - slash - 1;
+    if (name_bytes > kNameMaxBytes) Fail(cannot);  // the rename at Commit would fail (ENAMETOOLONG)
+    struct stat folder {};
+    if (::stat(Folder(path).c_str(), &folder) != 0 || !S_ISDIR(folder.st_mode) ||
+        ::access(Folder(path).c_str(), W_OK) != 0) {
+      Fail(cannot);
+    }
+    struct stat target {};
+    if (::stat(path.c_str(), &target) == 0 && !S_ISREG(target.st_mode)) {
+      Fail(Status::Error(field, "cannot write '" + Echo(path) + "': not a regular file"));
+    }
+    const std::string identity = FileIdentity(path);
+    for (const Given& g : given) {
+      if (g.path == path || (!identity.empty() && g.identity == identity)) {
+        Fail(Status::Error(field, "'" + Echo(path) + "' is the same file as " + g.field + " '" +
+                                      Echo(g.path) + "'; give each output its own file"));
+      }
+    }
+    given.push_back({field, path, identity});
+  }
+}
 
 StagedOutputs::~StagedOutputs() { RemoveTemps(); }
 

@@ -122,6 +122,10 @@ void Excludes(CLI::Option* a, CLI::Option* b);
 // Refuses every given flag of the chosen command whose OnlyWith does not hold, and
 // flags given together that exclude each other.
 void CheckApplicable(const CLI::App& cmd);
+// Refuses, before any work, a given output flag (kOutput) that StagedOutputs would refuse after the
+// work: an empty name, one ending in '/' or one over 255 bytes, a folder that does not exist or cannot be written, an
+// existing target that is not a regular file, two outputs naming one file. Same lines as Stage's.
+void PreflightOutputs(const CLI::App& cmd);
 // A caption flag: printable text of at most kMaxCaptionBytes bytes (control characters refused,
 // not silently dropped), written into markup escaped (base/markup_escape.h) by the core.
 constexpr std::size_t kMaxCaptionBytes = 200;
