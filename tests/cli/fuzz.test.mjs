@@ -7,6 +7,7 @@ import { spawn } from 'node:child_process';
 import { mkdtempSync, readdirSync, rmSync, writeFileSync, mkdirSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { batchOf, runBatch } from '../support/cli_batch.mjs';
 import { check, finish, native } from '../support/cli_pair.mjs';
 
 const COUNT = Number(process.env.NIWA_FUZZ_COUNT || 600);
@@ -131,32 +132,56 @@ const cases = Array.from({ length: COUNT }, caseArgs);
 const started = Date.now();
 let bad = 0;
 const exits = { 0: 0, 2: 0 };
+const took = [];  // [ms, case, args]: the slowest are printed, to keep the suite's time in view
+// The problems of one case's result, its output folder checked after it ran.
+function problemsOf(r, outs) {
+  const lines = r.stderr ? r.stderr.trimEnd().split('\n') : [];
+  const left = readdirSync(outs);
+  if (r.status === 0 || r.status === 2) ++exits[r.status];
+  const problems = [];
+  if (r.error) problems.push(`did not finish: ${r.error.code}`);
+  if (r.status !== 0 && r.status !== 2) problems.push(`exit ${r.status} signal ${r.signal}`);
+  if (r.status === 2 && (lines.length !== 1 || !lines[0].startsWith('niwa: error: '))) problems.push(`${lines.length} stderr lines`);
+  if (r.status === 0 && lines.length > 0) problems.push('stderr on success');
+  if (/[\x00-\x08\x0b-\x1f\x7f]/.test(r.stderr || '')) problems.push('raw control characters on stderr');
+  if (r.status !== 0 && left.length > 0) problems.push(`left ${left.join(', ')} on failure`);
+  if (left.some((f) => f.includes('.partial'))) problems.push('left a temporary');
+  return problems;
+}
+const report = (n, args, r, outs) => {
+  took.push([r.ms ?? 0, n, args]);
+  const problems = problemsOf(r, outs);
+  if (problems.length) {
+    ++bad;
+    check(`case ${n} ${show(args)}: ${problems.join('; ')} :: ${(r.stderr || '').slice(0, 300)}`, false);
+  }
+};
 async function worker(job) {
   const outs = join(work, `out${job}`);
   for (let n = job; n < COUNT; n += JOBS) {
     const args = cases[n].map((a) => a.split(OUT).join(outs));
     rmSync(outs, { recursive: true, force: true });
     mkdirSync(outs);
+    const t0 = Date.now();
     const r = await run(args);
-    const lines = r.stderr ? r.stderr.trimEnd().split('\n') : [];
-    const left = readdirSync(outs);
-    if (r.status === 0 || r.status === 2) ++exits[r.status];
-    const problems = [];
-    if (r.error) problems.push(`did not finish: ${r.error.code}`);
-    if (r.status !== 0 && r.status !== 2) problems.push(`exit ${r.status} signal ${r.signal}`);
-    if (r.status === 2 && (lines.length !== 1 || !lines[0].startsWith('niwa: error: '))) problems.push(`${lines.length} stderr lines`);
-    if (r.status === 0 && lines.length > 0) problems.push('stderr on success');
-    if (/[\x00-\x08\x0b-\x1f\x7f]/.test(r.stderr || '')) problems.push('raw control characters on stderr');
-    if (r.status !== 0 && left.length > 0) problems.push(`left ${left.join(', ')} on failure`);
-    if (left.some((f) => f.includes('.partial'))) problems.push('left a temporary');
-    if (problems.length) {
-      ++bad;
-      check(`case ${n} ${show(args)}: ${problems.join('; ')} :: ${(r.stderr || '').slice(0, 300)}`, false);
-    }
+    report(n, args, { ...r, ms: Date.now() - t0 }, outs);
   }
 }
-await Promise.all(Array.from({ length: JOBS }, (_, job) => worker(job)));
-check(`${COUNT} fuzz cases (seed ${SEED}, ${JOBS} at a time) in ${((Date.now() - started) / 1000).toFixed(1)} s (${exits[0]} exit 0, ${exits[2]} exit 2): exit 0 or 2, one stderr line, nothing left on failure`, bad === 0);
+// The sanitized build runs the cases batched (tests/support/cli_batch.mjs: many cases per process,
+// each in its own output folder): a process start under ASan costs more than most cases.
+const program = process.env.NIWA_SANITIZED ? batchOf(native) : null;
+if (process.env.NIWA_SANITIZED && !program) check(`niwa_cli_batch beside ${native}: build it (tests/CMakeLists.txt)`, false);
+if (program) {
+  const dirs = cases.map((_, n) => join(work, `case${n}`));
+  const argsList = cases.map((c, n) => { mkdirSync(dirs[n]); return c.map((a) => a.split(OUT).join(dirs[n])); });
+  const results = await runBatch(program, argsList, { jobs: JOBS, work });
+  cases.forEach((_, n) => report(n, argsList[n], results[n], dirs[n]));
+} else {
+  await Promise.all(Array.from({ length: JOBS }, (_, job) => worker(job)));
+}
+took.sort((a, b) => b[0] - a[0]);
+for (const [ms, n, args] of took.slice(0, 8)) console.log(`slowest: case ${n} ${ms} ms ${show(args)}`);
+check(`${COUNT} fuzz cases (seed ${SEED}, ${JOBS} at a time${program ? ', batched' : ''}) in ${((Date.now() - started) / 1000).toFixed(1)} s (${exits[0]} exit 0, ${exits[2]} exit 2): exit 0 or 2, one stderr line, nothing left on failure`, bad === 0);
 // The sample must reach both sides: runs that succeed (and write) and runs that are refused.
 check(`both outcomes reached: ${exits[0]} succeeded, ${exits[2]} refused`, exits[0] >= COUNT / 10 && exits[2] >= COUNT / 10);
 rmSync(work, { recursive: true, force: true });

@@ -5,15 +5,23 @@
 //
 // Each run must exit 2 with one "niwa: error: ..." line (or 0, where the value may be valid), never
 // 1, a signal or a hang (30 s), print no raw control characters, and leave no file behind when it
-// fails (and never a temporary). Runs the CLI in NIWA_NATIVE (the release build under ctest, the
-// ASan + UBSan build under scripts/test: every file case and a third of the others) and, when
-// built, a sample of the cases (every
-// NIWA_HOSTILE_WASM_EVERY-th, default 5, and every file case) on the WASM CLI under node (not
-// under the sanitized build: NIWA_SANITIZED).
+// fails (and never a temporary). Runs every case on the CLI in NIWA_NATIVE (the release build under
+// ctest, one process per case; the ASan + UBSan build under scripts/test, batched) and, when built,
+// on the WASM CLI under node (batched; not under the sanitized build: NIWA_SANITIZED). Batched runs go
+// through niwa_cli_batch (tests/support/cli_batch.mjs): the same RunCli, many cases per process.
 import { spawn as spawnChild, spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, mkdtempSync, readdirSync, rmSync, writeFileSync, symlinkSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join } from 'node:path';
+import { basename, join } from 'node:path';
+import { batchOf, runBatch } from '../support/cli_batch.mjs';
+
+// A batched run needs the batch program beside the CLI: its absence is a failure, not a skip.
+function requireBatch(cli) {
+  if (!batchOf(cli)) {
+    check(`niwa_cli_batch beside ${cli}: build it (tests/CMakeLists.txt)`, false);
+    finish();
+  }
+}
 import { check, cliArgv, finish, native, wasm } from '../support/cli_pair.mjs';
 import { glbBytes } from '../support/glb_bytes.mjs';
 
@@ -224,58 +232,85 @@ function runOnce(cli, args) {
   });
 }
 
-async function runAll(cli, list, label) {
+// The problems of one case's result, its output folder `dir` checked after it ran.
+function problemsOf(c, r, dir) {
+  const lines = r.stderr ? r.stderr.trimEnd().split('\n').filter((l) => !l.startsWith('niwa: truncated: ')) : [];
+  const left = readdirSync(dir).filter((f) => !preset.has(f));
+  const problems = [];
+  if (r.error) problems.push(`did not finish: ${r.error.code}`);
+  else if (r.status !== 0 && r.status !== 2) problems.push(`exit ${r.status} signal ${r.signal}`);
+  if (c.expect === 'refused' && r.status === 0) problems.push('accepted');
+  // A refusal names what it refuses: another flag's error means the case never reached it.
+  if (c.names && r.status === 2 && lines.length === 1 && !lines[0].includes(c.names)) problems.push(`the error does not name ${c.names}`);
+  if (r.status === 2 && (lines.length !== 1 || !lines[0].startsWith('niwa: error: '))) problems.push(`${lines.length} stderr lines`);
+  if (/[\x00-\x08\x0b-\x1f\x7f]/.test(r.stderr || '')) problems.push('raw control characters on stderr');
+  if (r.status !== 0 && left.length > 0) problems.push(`left ${left.join(', ')}`);
+  if (readdirSync(dir).some((f) => f.includes('.partial')) || readdirSync(files).some((f) => f.includes('.partial'))) problems.push('left a temporary');
+  return problems;
+}
+
+// Runs every case of `list` on `cli`: one process per case (the release build, as a user runs it), or
+// through niwa_cli_batch (batched: many cases per process, each in its own output folder) where a
+// process start costs more than a case (the WASM and sanitized builds).
+async function runAll(cli, list, label, { batched = false } = {}) {
   const JOBS = Math.max(1, Number(process.env.NIWA_HOSTILE_JOBS || 2));
   let bad = 0;
   const started = Date.now();
   const exits = {};
-  async function worker(job) {
-    const dir = join(work, `${label}-out${job}`);
-    for (let n = job; n < list.length; n += JOBS) {
-      const c = list[n];
-      rmSync(dir, { recursive: true, force: true });
-      mkdirSync(dir);
-      prepareOut(dir);
-      const args = c.args.map((a) => a.split(OUT).join(dir));
-      const r = await runOnce(cli, args);
-      exits[r.status] = (exits[r.status] || 0) + 1;
-      const lines = r.stderr ? r.stderr.trimEnd().split('\n').filter((l) => !l.startsWith('niwa: truncated: ')) : [];
-      const left = readdirSync(dir).filter((f) => !preset.has(f));
-      const problems = [];
-      if (r.error) problems.push(`did not finish: ${r.error.code}`);
-      else if (r.status !== 0 && r.status !== 2) problems.push(`exit ${r.status} signal ${r.signal}`);
-      if (c.expect === 'refused' && r.status === 0) problems.push('accepted');
-      // A refusal names what it refuses: another flag's error means the case never reached it.
-      if (c.names && r.status === 2 && lines.length === 1 && !lines[0].includes(c.names)) problems.push(`the error does not name ${c.names}`);
-      if (r.status === 2 && (lines.length !== 1 || !lines[0].startsWith('niwa: error: '))) problems.push(`${lines.length} stderr lines`);
-      if (/[\x00-\x08\x0b-\x1f\x7f]/.test(r.stderr || '')) problems.push('raw control characters on stderr');
-      if (r.status !== 0 && left.length > 0) problems.push(`left ${left.join(', ')}`);
-      if (readdirSync(dir).some((f) => f.includes('.partial')) || readdirSync(files).some((f) => f.includes('.partial'))) problems.push('left a temporary');
-      if (problems.length) {
-        ++bad;
-        check(`${label}: ${c.name}: ${problems.join('; ')} :: ${show(args)} :: ${(r.stderr || '').slice(0, 240)}`, false);
+  const report = (c, r, dir, args) => {
+    exits[r.status] = (exits[r.status] || 0) + 1;
+    const problems = problemsOf(c, r, dir);
+    if (problems.length) {
+      ++bad;
+      check(`${label}: ${c.name}: ${problems.join('; ')} :: ${show(args)} :: ${(r.stderr || '').slice(0, 240)}`, false);
+    }
+  };
+  const program = batched ? batchOf(cli) : null;
+  if (program) {
+    const dirs = list.map((_, n) => join(work, `${label}-case${n}`));
+    const argsList = list.map((c, n) => {
+      mkdirSync(dirs[n]);
+      prepareOut(dirs[n]);
+      return c.args.map((a) => a.split(OUT).join(dirs[n]));
+    });
+    const results = await runBatch(program, argsList, { jobs: JOBS, work });
+    list.forEach((c, n) => report(c, results[n], dirs[n], argsList[n]));
+    const slow = list.map((c, n) => [results[n].ms || 0, c.name]).sort((a, b) => b[0] - a[0]).slice(0, 5);
+    console.log(`${label}: slowest cases: ${slow.map(([ms, name]) => `${ms} ms ${name.slice(0, 80)}`).join(' | ')}`);
+  } else {
+    async function worker(job) {
+      const dir = join(work, `${label}-out${job}`);
+      for (let n = job; n < list.length; n += JOBS) {
+        const c = list[n];
+        rmSync(dir, { recursive: true, force: true });
+        mkdirSync(dir);
+        prepareOut(dir);
+        const args = c.args.map((a) => a.split(OUT).join(dir));
+        report(c, await runOnce(cli, args), dir, args);
       }
     }
+    await Promise.all(Array.from({ length: JOBS }, (_, job) => worker(job)));
   }
-  await Promise.all(Array.from({ length: JOBS }, (_, job) => worker(job)));
-  check(`${label}: ${list.length} hostile cases in ${((Date.now() - started) / 1000).toFixed(1)} s (exits ${JSON.stringify(exits)}): exit 2 with one line (or 0 where valid), nothing left`, bad === 0);
+  const how = program ? `batched in ${basename(program)}` : 'one process each';
+  check(`${label}: ${list.length} hostile cases in ${((Date.now() - started) / 1000).toFixed(1)} s, ${how} (exits ${JSON.stringify(exits)}): exit 2 with one line (or 0 where valid), nothing left`, bad === 0);
 }
 
 check('the CLI declares its commands (niwa flags)', declared.commands.length >= 10, `${declared.commands.length} commands`);
 const only = process.env.NIWA_HOSTILE_FILTER;
-// Under the sanitizers (about 5x slower a run) every file case and a third of the rest: the release
-// run has tried them all, and the readers are where memory errors live.
-const sanitizedSample = (c, i) => !process.env.NIWA_SANITIZED || c.input || i % 3 === 0;
-const list = (only ? cases.filter((c) => c.name.includes(only)) : cases).filter(sanitizedSample);
+const list = only ? cases.filter((c) => c.name.includes(only)) : cases;
 console.log(`${list.length} of ${cases.length} cases`);
-await runAll(native, list, "native");
+// The sanitized build runs every case in niwa_cli_batch (a process start under ASan costs 0.12-0.18 s,
+// more than most cases); the release build one process per case, as a user runs it.
+if (process.env.NIWA_SANITIZED) requireBatch(native);
+await runAll(native, list, 'native', { batched: Boolean(process.env.NIWA_SANITIZED) });
 if (existsSync(wasm) && !process.env.NIWA_HOSTILE_NO_WASM && !process.env.NIWA_SANITIZED) {
-  // In WASM: every file case (the readers and the file system are where the builds differ), every
-  // fifth other case, and every fifteenth table-row case: a row's value goes through the same number
-  // parser and table in both builds (params_tests runs it in WASM too), and the rows grow with each
-  // study (moss added 104) while a WASM CLI run costs about 0.3 CPU s before its work.
-  const every = Math.max(1, Number(process.env.NIWA_HOSTILE_WASM_EVERY || 5));
-  await runAll(wasm, list.filter((c, i) => c.input || i % (c.row ? 3 * every : every) === 0), 'wasm');
+  // In WASM, every case too, batched: one niwa.js run costs about 0.3 CPU s to compile before its work,
+  // which made a sample of a fifth of the cases cost more than all of them batched. NIWA_HOSTILE_WASM_EVERY
+  // keeps every N-th case only (and every file case: the readers and the file system are where the
+  // builds differ).
+  const every = Math.max(1, Number(process.env.NIWA_HOSTILE_WASM_EVERY || 1));
+  requireBatch(wasm);
+  await runAll(wasm, list.filter((c, i) => c.input || i % every === 0), 'wasm', { batched: true });
 }
 rmSync(work, { recursive: true, force: true });
 finish();
