@@ -64,6 +64,8 @@ const controller = new StudyController({
   onError: (msg, when) => {
     if (when === 'before' && msg.id === meshRequest) {
       notices.set('mesh', msg.message);
+      if (meshBefore) ({ useMesh, meshName } = meshBefore);  // the next edit grows on what was there
+      showScene();
       ui.progress.textContent = '';
       controller.showWork(false);
       setHooks({ status: 'error', meshError: msg.message });
@@ -347,13 +349,19 @@ worker.on('picked', (msg) => {
 });
 
 let meshRequest = 0;
+let meshBefore = null;  // what the page grew on before the last drop: a refused file goes back to it
 
 // ---------------------------------------------------------------- dropped meshes
 async function loadMeshFile(file) {
+  // A new file's answer replaces the last one's: its error leaves the notice and the field now.
   notices.set('drop', '');
+  notices.set('error', '');
+  notices.set('mesh', '');
+  controller.showFieldError('');
   ui.progress.textContent = `reading ${file.name}`;
   try {
     const bytes = await meshFileBytes(file);  // Draco decoded here (web/mesh/mesh_file.js)
+    meshBefore = { useMesh, meshName };
     meshName = file.name;
     useMesh = true;
     seedPoints = [];
