@@ -31,7 +31,7 @@ async function watched(page, name, action, until) {
   await until();
   const w = await stopFrameWatch(page, `no-blank-${name}.png`);
   await page.screenshot({ path: path.join(ARTIFACTS, `no-blank-${name}-after.png`) });
-  check(`${name}: a picture before it`, w.reference > 0.05, `${(w.reference * 100).toFixed(1)}% of the view drawn`);
+  check(`${name}: a picture before it`, w.reference > 0.02, `${(w.reference * 100).toFixed(1)}% of the view drawn`);
   check(`${name}: no animation frame without the picture`, w.frames >= 5 && w.empty === 0,
     `${w.empty} of ${w.frames} frames empty (longest ${w.emptyMs.toFixed(0)} ms; least drawn ${(w.minShare * 100).toFixed(1)}%, before ${(w.reference * 100).toFixed(1)}%)`);
   check(`${name}: the picture changed meanwhile (the action was drawn)`, w.changes >= 1,
@@ -128,13 +128,16 @@ await runBrowserTest(async (server, browser) => {
   const groveOrbit = await orbitFrameTime(grove, 'frame-serial');
   await grove.close();
   const ratio = treeOrbit.ms / groveOrbit.ms;
-  check('orbit frame times measured on the tree page and the grove (hybrid)', Number.isFinite(ratio) && treeOrbit.frames >= 2 && groveOrbit.frames >= 2,
+  check('orbit frame times measured on the tree page and the grove (hybrid)', Number.isFinite(ratio) && treeOrbit.frames >= 1 && groveOrbit.frames >= 1,
     `tree ${treeOrbit.ms.toFixed(0)} ms (${treeOrbit.frames} frames), grove hybrid ${groveOrbit.ms.toFixed(0)} ms (${groveOrbit.frames} frames)`);
   console.log(`orbit frame-time ratio, tree page / grove hybrid: ${ratio.toFixed(2)} (tree ${treeOrbit.ms.toFixed(0)} ms, grove ${groveOrbit.ms.toFixed(0)} ms per finished frame while the arrow keys orbit)`);
 
   // ---- The ivy and terrain pages: arrow-key orbits.
+  // The ivy on a 12-year sakura (its bark the support: 240 k triangles, drawn in parts on a CPU GL;
+  // the default ivy's 2,740 never are); the default mountain.
+  const hashes = { ivy: '#preset=metric&seed=1&steps=60&scene=tree&tree=sakura&tree_years=12', terrain: '' };
   for (const study of ['ivy', 'terrain']) {
-    const p = await open(study, `${study}.html`, studyReady(`${study}Serial`));
+    const p = await open(study, `${study}.html${hashes[study]}`, studyReady(`${study}Serial`));
     await watched(p, `${study}-orbit`, () => arrowOrbit(p, 10, 60), () => p.waitForTimeout(1500));
     await p.close();
   }
