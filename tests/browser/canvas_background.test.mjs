@@ -1,7 +1,8 @@
 // A page's canvas shows the background, not black, before its first frame, after a resize and while
 // a big frame is drawn in parts offscreen (web/gl/context.js clearToBackground): a new or resized
 // WebGL drawing buffer is black (alpha: false), and a frame in parts is shown only when finished, so
-// a big tree's first frame used to leave the canvas black for seconds on a CPU GL.
+// a big tree's first frame used to leave the canvas black for seconds on a CPU GL. A frame in parts
+// at another size keeps the last finished frame on the canvas until it is presented (issue 32).
 // Run: node tests/browser/canvas_background.test.mjs (no build needed: it loads web/ only).
 import { check, modulePage, runBrowserTest } from './harness.mjs';
 
@@ -40,6 +41,17 @@ await runBrowserTest(async (server, browser) => {
     frame.run(10);
     out.offscreen = frame.drawingOffscreen();
     out.inParts = pixel();
+    // Issue 32 ("no blank frames"): a frame in parts at another drawing-buffer size (a governor's
+    // scale) leaves the last finished frame on the canvas, at its size, until it is presented.
+    const paint = (rgb) => ({ primitives: 500, setup() {}, draw() { gl.clearColor(...rgb, 1); gl.clear(gl.COLOR_BUFFER_BIT); } });
+    frame.begin(canvas, [paint([1, 0, 0])], Infinity, [64, 30]);  // drawn whole: red
+    frame.run();
+    out.whole = pixel();
+    frame.begin(canvas, [paint([0, 1, 0]), paint([0, 1, 0])], 600, [32, 15]);  // in parts, half size: green
+    frame.run(600);
+    out.halfway = { pixel: pixel(), size: [canvas.width, canvas.height], pending: frame.pending() };
+    frame.run(600);
+    out.presented = { pixel: pixel(), size: [canvas.width, canvas.height], pending: frame.pending() };
     return out;
   });
   const same = (p) => p.every((c, i) => Math.abs(c - r.background[i]) <= 1);
@@ -49,5 +61,11 @@ await runBrowserTest(async (server, browser) => {
     `framebuffer kept ${r.keptFramebuffer}, clear ${r.keptClear}`);
   check('while a big frame is drawn in parts offscreen, the resized canvas shows the background', r.offscreen && same(r.inParts),
     `offscreen ${r.offscreen}, canvas ${r.inParts}`);
+  check('a frame drawn whole at a size resizes the canvas in the same call', r.whole.join(',') === '255,0,0,255', `${r.whole}`);
+  check('a frame in parts at another size leaves the last frame, and its size, on the canvas until it is finished',
+    r.halfway.pending && r.halfway.pixel.join(',') === '255,0,0,255' && r.halfway.size.join('x') === '64x30',
+    `pending ${r.halfway.pending}, ${r.halfway.pixel} at ${r.halfway.size.join('x')}`);
+  check('finished, it is presented at its own size', !r.presented.pending && r.presented.pixel.join(',') === '0,255,0,255' && r.presented.size.join('x') === '32x15',
+    `pending ${r.presented.pending}, ${r.presented.pixel} at ${r.presented.size.join('x')}`);
   check('no page errors', problems.length === 0, problems.join(' | '));
 });

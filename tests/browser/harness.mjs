@@ -207,3 +207,79 @@ export async function snapshotDifference(page, a, b, tolerance = 0) {
     return n / (x.length / 4);
   }, [a, b, tolerance]);
 }
+
+// Frame watch (issue 32, "no blank frames"): from now on, at every animation frame, the canvas
+// `selector` ('#view') is drawn into a 64×48 2D canvas (its drawing buffer: preserved, so what is
+// on screen) and the share of its pixels that are not the background (web/gl/context.js
+// BACKGROUND) is recorded, with the share that changed since the last sample. The first sample,
+// taken now, is the reference: the finished picture before the action watched.
+export async function startFrameWatch(page, selector = '#view') {
+  await page.evaluate((sel) => {
+    const src = document.querySelector(sel);
+    const W = 64, H = 48, bg = [219, 230, 240];
+    const small = document.createElement('canvas');
+    small.width = W;
+    small.height = H;
+    const ctx = small.getContext('2d', { willReadFrequently: true });
+    const grab = () => {
+      ctx.drawImage(src, 0, 0, W, H);
+      const d = ctx.getImageData(0, 0, W, H).data;
+      let drawn = 0;
+      for (let i = 0; i < d.length; i += 4) {
+        if (Math.abs(d[i] - bg[0]) + Math.abs(d[i + 1] - bg[1]) + Math.abs(d[i + 2] - bg[2]) > 24) ++drawn;
+      }
+      return { d, share: drawn / (W * H) };
+    };
+    const first = grab();
+    const watch = { reference: first.share, samples: [], running: true, start: performance.now(), last: first.d, emptiest: null };
+    const tick = () => {
+      if (!watch.running) return;
+      const now = grab();
+      let changed = 0;
+      for (let i = 0; i < now.d.length; i += 4) {
+        const a = now.d, b = watch.last;
+        if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 24) ++changed;
+      }
+      watch.last = now.d;
+      watch.samples.push([performance.now() - watch.start, now.share, changed / (W * H)]);
+      if (!watch.emptiest || now.share < watch.emptiest.share) watch.emptiest = { share: now.share, url: small.toDataURL('image/png') };
+      requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+    window.__niwaFrameWatch = watch;
+  }, selector);
+}
+
+// Ends the frame watch and returns {frames (samples), reference (share of the picture before),
+// empty (samples drawn over less than a quarter of the reference's share: no tree, ivy or
+// mountain on screen), emptyMs (the longest run of empty samples, from its first to the sample
+// after it), minShare, changeMs (the median time between samples that changed: the frame time
+// the user sees), changes}. Saves the emptiest sample as build/artifacts/FILE (PNG, 64×48).
+export async function stopFrameWatch(page, file) {
+  const w = await page.evaluate(() => {
+    const watch = window.__niwaFrameWatch;
+    watch.running = false;
+    return { reference: watch.reference, samples: watch.samples, emptiest: watch.emptiest };
+  });
+  if (w.emptiest) fs.writeFileSync(path.join(ARTIFACTS, file), Buffer.from(w.emptiest.url.split(',')[1], 'base64'));
+  const limit = 0.25 * w.reference;
+  let empty = 0, emptyMs = 0, runStart = -1, lastChange = -1;
+  const gaps = [];
+  w.samples.forEach(([t, share, changed], i) => {
+    if (share < limit) {
+      ++empty;
+      if (runStart < 0) runStart = t;
+      const next = w.samples[i + 1];
+      emptyMs = Math.max(emptyMs, (next ? next[0] : t) - runStart);
+    } else runStart = -1;
+    if (changed > 0.002) {
+      if (lastChange >= 0) gaps.push(t - lastChange);
+      lastChange = t;
+    }
+  });
+  gaps.sort((a, b) => a - b);
+  return {
+    frames: w.samples.length, reference: w.reference, empty, emptyMs, changes: gaps.length + (lastChange >= 0 ? 1 : 0),
+    minShare: Math.min(...w.samples.map((s) => s[1])), changeMs: gaps.length ? gaps[Math.floor(gaps.length / 2)] : NaN,
+  };
+}

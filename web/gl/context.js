@@ -33,7 +33,13 @@ function clearToBackground(gl) {
 // (below 1 while a FrameGovernor lowers the cost of moving frames; the browser stretches it); a
 // resized buffer starts as the background.
 export function resizeCanvas(canvas, scale = 1) {
-  const [w, h] = drawingBufferSize(canvas, scale);
+  setDrawingBufferSize(canvas, drawingBufferSize(canvas, scale));
+}
+
+// Sets the drawing buffer to [width, height] pixels when it is another size; a resized buffer
+// starts as the background (the last frame on it is gone: call it only in the task that draws the
+// next one whole, or presents it, so no composited frame shows the bare background).
+export function setDrawingBufferSize(canvas, [w, h]) {
   if (canvas.width !== w || canvas.height !== h) {
     canvas.width = w;
     canvas.height = h;

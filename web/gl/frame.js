@@ -20,7 +20,7 @@
 // (the drawing buffer's), width, height}. A study's renderer extends StudyLayer (below).
 // Does not: talk to the worker, know any study's meshes, or pace its frames (the page's FrameLoop,
 // FrameGovernor or ProgressiveLoop call render; a frame alone asks its own FrameLoop).
-import { createContext, finishGpu, resizeCanvas } from './context.js';
+import { createContext, drawingBufferSize, finishGpu, resizeCanvas } from './context.js';
 import { FrameLoop } from './frame_loop.js';
 import { Ground, groundUnder } from './ground.js';
 import { OrbitCamera } from './orbit_camera.js';
@@ -168,14 +168,17 @@ export class Frame {
   }
 
   // Lists the frame's steps under the camera and starts it (cleared by progress.begin, on the
-  // canvas or an offscreen target). GPU time is not measured here (no timer queries on SwiftShader).
+  // canvas or an offscreen target). The canvas's drawing buffer takes the frame's size only when
+  // the frame is drawn (whole) or presented (in parts): resizing it blanks it, and a frame in parts
+  // must leave the last finished one on screen. Layers size what they draw by view.width and
+  // view.height, not the canvas's. GPU time is not measured here (no timer queries on SwiftShader).
   #startFrame(camera, quality, budget) {
     this.scale = quality?.scale || 1;
-    resizeCanvas(this.canvas, this.scale);
+    const [width, height] = drawingBufferSize(this.canvas, this.scale);
     this.frameCpuMs = 0;
     const view = {
-      viewProjection: camera.viewProjection(this.canvas.width / this.canvas.height), eye: camera.position(),
-      light: this.light, scale: this.scale, width: this.canvas.width, height: this.canvas.height,
+      viewProjection: camera.viewProjection(width / height), eye: camera.position(),
+      light: this.light, scale: this.scale, width, height,
     };
     const gl = this.gl;
     const steps = [];
@@ -203,7 +206,7 @@ export class Frame {
     totals.layers = this.layers.length;
     totals.steps = steps.length;
     this.frameTotals = totals;
-    this.progress.begin(this.canvas, steps, budget);
+    this.progress.begin(this.canvas, steps, budget, [width, height]);
   }
 
   // Frame time with the GPU's work included: draws `frames` whole frames, each followed by reading
@@ -290,7 +293,8 @@ export class StudyLayer {
   // draws of a renderer's init).
   drawWhole(camera) {
     resizeCanvas(this.canvas, 1);
-    const view = { viewProjection: camera.viewProjection(this.canvas.width / this.canvas.height), eye: camera.position(), light: this.light, scale: 1 };
+    const { width, height } = this.canvas;
+    const view = { viewProjection: camera.viewProjection(width / height), eye: camera.position(), light: this.light, scale: 1, width, height };
     this.progress.begin(this.canvas, this.layerSteps(view, 0).steps);
     this.progress.run();
     this.gl.bindVertexArray(null);

@@ -3,11 +3,13 @@
 // most `budget` primitives of it, resuming inside a step with a sub-range of its draw (the same
 // triangles in the same order as one draw). A frame within the budget is drawn on the canvas at
 // once, as before; a bigger one goes into an OffscreenTarget (offscreen_target.js) and is shown
-// when it is finished, so the canvas keeps its last finished frame meanwhile. A 2.5 M-triangle tree
+// when it is finished, so the canvas keeps its last finished frame meanwhile: its drawing buffer
+// takes the new frame's size (a FrameGovernor's scale) only in the task that draws the frame whole
+// or presents it, since a resized buffer is blank (issue 32: "no blank frames"). A 2.5 M-triangle tree
 // on SwiftShader (seconds of GPU time) then costs about the budget's time per animation frame, and
 // input gets its frames in between.
 // Does not: choose the budget (a FrameGovernor measures it) or know what the steps draw.
-import { BACKGROUND } from './context.js';
+import { BACKGROUND, setDrawingBufferSize } from './context.js';
 import { OffscreenTarget } from './offscreen_target.js';
 
 // A step: {primitives, setup(), draw(first, count), teardown()?}. primitives 0: an atomic step
@@ -23,16 +25,22 @@ export class ProgressiveFrame {
     this.offset = 0;  // primitives of the current step drawn
     this.offscreen = null;  // the OffscreenTarget of the frame in progress, or null: the canvas
     this.target = null;
+    this.canvas = null;
+    this.canvasSize = [0, 0];  // the frame's drawing-buffer size, [width, height] pixels
   }
 
-  // A new frame of `steps` on `canvas` (its drawing buffer already sized by the renderer): cleared
-  // to the background on the canvas, or, when the steps have more primitives than `budget`, in the
-  // offscreen target.
-  begin(canvas, steps, budget = Infinity) {
+  // A new frame of `steps` on `canvas`, `size` ([width, height]: the drawing buffer it is drawn
+  // at; default the canvas's now): cleared to the background on the canvas (resized to `size` now:
+  // the caller draws it whole in this task), or, when the steps have more primitives than
+  // `budget`, in the offscreen target (the canvas keeps its last frame, and its size, until this
+  // one is finished and presented).
+  begin(canvas, steps, budget = Infinity, size = [canvas.width, canvas.height]) {
     const gl = this.gl;
     const total = steps.reduce((n, s) => n + Math.max(0, s.primitives), 0);
     this.offscreen = total > budget ? (this.target ||= new OffscreenTarget(gl)) : null;
-    this.canvasSize = [canvas.width, canvas.height];
+    this.canvas = canvas;
+    this.canvasSize = [size[0], size[1]];
+    if (!this.offscreen) setDrawingBufferSize(canvas, this.canvasSize);
     this.#bind();
     gl.clearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
     gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
@@ -99,7 +107,10 @@ export class ProgressiveFrame {
       }
     }
     const done = !steps || this.step >= steps.length;
-    if (done && steps && this.offscreen) this.offscreen.present();
+    if (done && steps && this.offscreen) {  // resized and shown in one task: never a blank canvas
+      setDrawingBufferSize(this.canvas, this.canvasSize);
+      this.offscreen.present();
+    }
     if (done) this.steps = null;
     return { primitives: drawn, done };
   }

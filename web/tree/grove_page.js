@@ -12,7 +12,7 @@
 // grove's renderer as its layer, as the other study pages draw.
 // Does not: grow or sway trees (the worker does) or draw directly (grove_renderer.js does).
 import { OrbitCamera } from '../gl/orbit_camera.js';
-import { finishGpu } from '../gl/context.js';
+import { drawingBufferSize, finishGpu } from '../gl/context.js';
 import { Frame } from '../gl/frame.js';
 import { FrameLoop, nextFrame } from '../gl/frame_loop.js';
 import { viewOf } from '../gl/buffers.js';
@@ -191,7 +191,8 @@ function requestViews() {
     return;
   }
   viewDirty = false;
-  renderer.resize();
+  // The drawing buffer's size (the canvas is resized only by a frame drawn: resizing blanks it).
+  const [width, height] = drawingBufferSize(ui.canvas, renderer.scale);
   const eye = camera.position();
   const groups = new Map();
   for (const instance of INSTANCES) {
@@ -220,7 +221,7 @@ function requestViews() {
     viewPending.lists.push({ tree: group.tree, band: group.band, members });
     treeClients[group.tree].post('view', {
       slot: group.band, tag: round,
-      camera: { eye: local(eye), target: local(camera.target), fovY: camera.fov, width: renderer.canvas.width, height: renderer.canvas.height },
+      camera: { eye: local(eye), target: local(camera.target), fovY: camera.fov, width, height },
     });
   }
 }

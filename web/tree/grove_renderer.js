@@ -8,7 +8,7 @@
 // can be drawn beside it (tests/browser/frame_layers.test.mjs).
 // Does not: grow trees, lay out the grove, choose draw lists (grove_page.js and the worker do) or
 // pace its frames (the page's FrameLoop calls frame.render).
-import { finishGpu, resizeCanvas } from '../gl/context.js';
+import { finishGpu } from '../gl/context.js';
 import { floatAttribute, staticBuffer, uintAttribute, viewOf } from '../gl/buffers.js';
 import { StudyLayer } from '../gl/frame.js';
 import { loadPrograms } from '../gl/program.js';
@@ -258,10 +258,6 @@ export class GroveRenderer extends StudyLayer {
     return this.quads.buffer;
   }
 
-  resize() {
-    resizeCanvas(this.canvas, this.scale);
-  }
-
   // The grove's steps of a frame (web/gl/progressive_frame.js) under `view` ({viewProjection, eye,
   // light: the unit direction towards the sun, width, height}), in `this.mode` ('full' or
   // 'hybrid'), every unique tree or `this.only`'s alone (-1: none, the coverage check). Each step
@@ -298,7 +294,7 @@ export class GroveRenderer extends StudyLayer {
         const lp = this.lineProgram;
         gl.useProgram(lp.program);
         gl.uniformMatrix4fv(lp.uniforms.uViewProjection, false, viewProjection);
-        gl.uniform2f(lp.uniforms.uViewport, this.canvas.width, this.canvas.height);
+        gl.uniform2f(lp.uniforms.uViewport, view.width, view.height);  // the frame's drawing buffer
         gl.uniform1i(lp.uniforms.uSegments, 0);
         // Sub-pixel lines blend by their coverage; they leave the depth buffer to the cards.
         gl.enable(gl.BLEND);

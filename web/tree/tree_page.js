@@ -185,6 +185,7 @@ const frames = new FrameLoop(() => {
   // tests wait for the new tree's frame, and for the frame that shows a new selection
   setHooks({ drawnTreeSerial: treeSerial, drawnSelection: drawn.selected ?? -1,
     drawnMode: drawn.mode, drawnViews: viewsAtFrameStart });
+  bumpHook('framesShown');  // finished frames (the orbit frame time of tests/browser/no_blank_frames)
   if (freshOnDraw) {  // the tree that answers the latest edit is on screen now
     freshOnDraw = false;
     feedback.fresh();

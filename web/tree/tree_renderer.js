@@ -5,7 +5,7 @@
 // camera and sun; the frame draws the ground under its footprint), on the tree page, the grove's
 // neighbours to come, <niwa-tree> and beside other studies (tests/browser/frame_layers.test.mjs).
 // Does not: grow or mesh trees (the worker does), keep page state, or own the camera.
-import { drawingBufferSize, resizeCanvas } from '../gl/context.js';
+import { drawingBufferSize } from '../gl/context.js';
 import { StudyLayer } from '../gl/frame.js';
 import { BufferPool } from '../gl/buffer_pool.js';
 import { UPLOAD_PARTS_ABOVE, gpuDone, planBytes, uploadInParts } from '../gl/chunked_upload.js';
@@ -589,8 +589,10 @@ export class Renderer extends StudyLayer {
     return list;
   }
 
-  // Cards and lines of the current draw list; returns [triangles, lines, draw calls].
-  #renderHybrid(viewProjection, drawList) {
+  // Cards and lines of the current draw list under `view` (the frame's); returns [triangles,
+  // lines, draw calls].
+  #renderHybrid(view, drawList) {
+    const { viewProjection } = view;
     const gl = this.gl;
     let triangles = 0, lines = 0, drawCalls = 0;
     if (!drawList) return [0, 0, 0];
@@ -613,7 +615,7 @@ export class Renderer extends StudyLayer {
       const p = this.lineProgram;
       gl.useProgram(p.program);
       gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, viewProjection);
-      gl.uniform2f(p.uniforms.uViewport, this.canvas.width, this.canvas.height);
+      gl.uniform2f(p.uniforms.uViewport, view.width, view.height);  // the frame's drawing buffer
       this.#bindPoses(p);
       segs.textures.forEach((texture, i) => {
         gl.activeTexture(gl.TEXTURE2 + i);
@@ -646,10 +648,6 @@ export class Renderer extends StudyLayer {
     return { eye: camera.position(), target: [...camera.target], fovY: camera.fov, width, height };
   }
 
-  resize() {
-    resizeCanvas(this.canvas, this.scale);
-  }
-
   // False before init() (the frame draws nothing of it then).
   ready() {
     return Boolean(this.treeProgram);
@@ -675,7 +673,7 @@ export class Renderer extends StudyLayer {
     const motion = !this.hybrid && cheap > 0 && this.motionReady();
     if (this.hybrid || motion) {
       const list = motion ? this.motion.drawList : this.drawList;
-      steps.push({ primitives: 0, setup: () => {}, draw: () => this.#renderHybrid(viewProjection, list) });
+      steps.push({ primitives: 0, setup: () => {}, draw: () => this.#renderHybrid(view, list) });
       const [tris, segs, calls] = this.#hybridCounts(list);
       out.triangles += tris;
       out.lines += segs;
@@ -823,8 +821,8 @@ export class Renderer extends StudyLayer {
     const gl = this.gl;
     const bark = this.parts.bark;
     if (!this.pickProgram || !bark || !bark.picking) return null;
-    this.resize();
-    const w = this.canvas.width, h = this.canvas.height;
+    // The last frame's drawing-buffer size, the canvas left alone (resizing it blanks it).
+    const [w, h] = drawingBufferSize(this.canvas, this.scale);
     this.pickTarget.begin(w, h);
     const p = this.pickProgram;
     gl.useProgram(p.program);
