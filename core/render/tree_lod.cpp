@@ -81,8 +81,8 @@ void PushTwig(const glm::vec3& base, const glm::vec3& tip, float radius_m, MeshB
   const float length = glm::length(along);
   const glm::vec3 axis = length > 0 ? along / length : glm::vec3(0.0f, 1.0f, 0.0f);
   // A side vector: the axis crossed with the world axis it is least parallel to.
-  const glm::vec3 helper = std::fabs(axis.y) < 0.9f ? glm::vec3(0.0f, 1.0f, 0.0f)
-                                                     : glm::vec3(1.0f, 0.0f, 0.0f);
+  const glm::vec3 helper =
+      std::fabs(axis.y) < 0.9f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
   const glm::vec3 u = glm::normalize(glm::cross(helper, axis));
   const glm::vec3 w = glm::cross(axis, u);
   const uint32_t first = static_cast<uint32_t>(out->vertex_count());
@@ -437,8 +437,7 @@ Result<LodMesh> BuildLevel(const Tree& tree, long max_triangles, const LodOption
           glm::vec3 corners[4];
           CardCorners(scene, static_cast<int>(i), k, corners);
           PushQuad(corners, scene.frames[i].planes[static_cast<std::size_t>(k)].normal,
-                   scene.group_tiles[g][static_cast<std::size_t>(k)], scene.atlas_size,
-                   &out.cards);
+                   scene.group_tiles[g][static_cast<std::size_t>(k)], scene.atlas_size, &out.cards);
         }
         break;
       }

@@ -42,10 +42,10 @@ struct LodChoice {
 // from every side, so camera-independent, and lit like any mesh).
 struct LodMesh {
   LodChoice choice;
-  TreeMesh parts;           // bark of the tubes only; leaves/flowers full or empty
-  MeshBuffers cards;        // 2 triangles per card plane: branch cards first, then cluster cards
-  MeshBuffers twigs;        // 3 triangles per twig cone, metres (uvs empty)
-  image::Rgba8Image atlas;  // empty when there are no cards
+  TreeMesh parts;              // bark of the tubes only; leaves/flowers full or empty
+  MeshBuffers cards;           // 2 triangles per card plane: branch cards first, then cluster cards
+  MeshBuffers twigs;           // 3 triangles per twig cone, metres (uvs empty)
+  image::Rgba8Image atlas;     // empty when there are no cards
   long cluster_triangles = 0;  // the cards' triangles that are leaf-cluster cards
 };
 

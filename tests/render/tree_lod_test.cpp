@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
-
 #include <limits>
 #include <string>
 #include <vector>
