@@ -1,4 +1,4 @@
-// Triangle-budgeted tree meshes and LOD .glb documents: tubes, crossed branch cards, lines and
+// Triangle-budgeted tree meshes and LOD .glb documents: tubes, crossed branch cards, twig cones and
 // leaf-cluster cards chosen by a monotone bisection, with a CPU-rasterized card atlas.
 //
 // Why a rasterizer of our own: the atlas geometry (core/render/atlas_mesh) is already projected to
@@ -26,6 +26,7 @@ namespace {
 
 constexpr int kCardPlanes = 2;     // crossed branch cards (thesis: >= 2 planes)
 constexpr int kClusterPlanes = 3;  // leaf-cluster cards: normal z, x and y
+constexpr int kTwigSides = 3;      // twig cones: 3 sides, 3 triangles (fewer than a card's 4)
 constexpr int kClusterLadder[] = {32, 24, 16, 12, 8, 6, 4, 3, 2, 1};
 constexpr int kBisections = 40;
 
@@ -53,20 +54,72 @@ std::vector<long> TubeTriangles(const Tree& tree, const TreeMesh& mesh) {
   return out;
 }
 
-// Wood triangles at tube radius r: tubes at and above r, crossed cards down to r / ratio.
+// Wood triangles at tube radius r: tubes at and above r, crossed cards down to r / ratio, twig
+// cones down to r / ratio / twig_ratio.
 long WoodTriangles(const std::vector<float>& radius, const std::vector<long>& tubes, float r,
-                   float ratio) {
+                   float ratio, float twig_ratio) {
   long sum = 0;
   const float card = r / ratio;
+  const float twig = card / twig_ratio;
   for (std::size_t i = 0; i < radius.size(); ++i) {
     if (radius[i] < 0) continue;  // not drawn (dead or a single node)
     if (radius[i] >= r) {
       sum += tubes[i];
     } else if (radius[i] >= card) {
       sum += 2 * kCardPlanes;
+    } else if (radius[i] >= twig) {
+      sum += kTwigSides;
     }
   }
   return sum;
+}
+
+// One twig cone: a triangle of `radius_m` around `base` (normals radial) and the apex at `tip`
+// (normal along the axis); 3 outward-facing triangles.
+void PushTwig(const glm::vec3& base, const glm::vec3& tip, float radius_m, MeshBuffers* out) {
+  const glm::vec3 along = tip - base;
+  const float length = glm::length(along);
+  const glm::vec3 axis = length > 0 ? along / length : glm::vec3(0.0f, 1.0f, 0.0f);
+  // A side vector: the axis crossed with the world axis it is least parallel to.
+  const glm::vec3 helper =
+      std::fabs(axis.y) < 0.9f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+  const glm::vec3 u = glm::normalize(glm::cross(helper, axis));
+  const glm::vec3 w = glm::cross(axis, u);
+  const uint32_t first = static_cast<uint32_t>(out->vertex_count());
+  constexpr float kCos[kTwigSides] = {1.0f, -0.5f, -0.5f};
+  constexpr float kSin[kTwigSides] = {0.0f, 0.8660254f, -0.8660254f};
+  for (int k = 0; k < kTwigSides; ++k) {
+    const glm::vec3 radial = kCos[k] * u + kSin[k] * w;
+    const glm::vec3 p = base + radius_m * radial;
+    out->positions.insert(out->positions.end(), {p.x, p.y, p.z});
+    out->normals.insert(out->normals.end(), {radial.x, radial.y, radial.z});
+  }
+  out->positions.insert(out->positions.end(), {tip.x, tip.y, tip.z});
+  out->normals.insert(out->normals.end(), {axis.x, axis.y, axis.z});
+  const uint32_t apex = first + kTwigSides;
+  for (uint32_t k = 0; k < kTwigSides; ++k) {
+    out->indices.insert(out->indices.end(), {first + k, first + (k + 1) % kTwigSides, apex});
+  }
+}
+
+// Branch kinds of one level, thinnest last in the demotion order.
+enum class Kind : int { kNone = 0, kTwig = 1, kCard = 2, kTube = 3 };
+
+// Keeps at most `cap` branches of `kind` (cap < 0: no cap): the thinnest excess ones (by radius,
+// then id, so the order is fixed) become `to`.
+void CapKind(const std::vector<float>& radius, Kind kind, Kind to, long cap,
+             std::vector<Kind>* kinds) {
+  if (cap < 0) return;
+  std::vector<std::size_t> of_kind;
+  for (std::size_t i = 0; i < kinds->size(); ++i) {
+    if ((*kinds)[i] == kind) of_kind.push_back(i);
+  }
+  if (static_cast<long>(of_kind.size()) <= cap) return;
+  std::sort(of_kind.begin(), of_kind.end(), [&](std::size_t a, std::size_t b) {
+    return radius[a] != radius[b] ? radius[a] < radius[b] : a < b;
+  });
+  const std::size_t excess = of_kind.size() - static_cast<std::size_t>(cap);
+  for (std::size_t k = 0; k < excess; ++k) (*kinds)[of_kind[k]] = to;
 }
 
 // Copies the bark of the branches with keep[branch] into out (vertices remapped).
@@ -270,8 +323,12 @@ long FullTriangles(const TreeMesh& mesh) {
   return Triangles(mesh.bark) + Triangles(mesh.leaves) + Triangles(mesh.flowers);
 }
 
-Result<LodMesh> BuildLodMesh(const Tree& tree, long max_triangles, const LodOptions& options,
-                             const std::string& field) {
+namespace {
+
+// BuildLodMesh, and with `above` (the level above in BuildLodLevels) no kind of primitive grows
+// beyond it: tubes at least as thick, no more cluster triangles, branch cards and twigs.
+Result<LodMesh> BuildLevel(const Tree& tree, long max_triangles, const LodOptions& options,
+                           const std::string& field, const LodMesh* above) {
   if (max_triangles < kMinLodTriangles) {
     return Status::Error(field, FormatNumber(static_cast<double>(max_triangles)) +
                                     " is too few; must be at least " +
@@ -281,26 +338,28 @@ Result<LodMesh> BuildLodMesh(const Tree& tree, long max_triangles, const LodOpti
   TreeMesh full = BuildTreeMesh(tree);
   LodMesh out;
   out.choice.triangles = FullTriangles(full);
-  if (out.choice.triangles <= max_triangles) {
+  if (out.choice.triangles <= max_triangles && (above == nullptr || above->choice.full)) {
     out.parts = std::move(full);
     for (const Branch& b : tree.branches) out.choice.tubes += LodUsable(b) ? 1 : 0;
     return out;
   }
   LodChoice& choice = out.choice;
   choice.full = false;
+  const bool above_clusters = above != nullptr && above->choice.leaf_clusters;
 
-  // Foliage: full leaves when they take at most half the budget, else the finest cluster grid.
+  // Foliage: full leaves when they take at most half the budget, else the finest cluster grid
+  // (below a clustered level: also with no more cluster triangles than it has).
   const long leaf_triangles = Triangles(full.leaves) + Triangles(full.flowers);
   const long half = max_triangles / 2;
   HybridScene scene;
   long foliage = leaf_triangles;
-  if (leaf_triangles > half) {
+  if (leaf_triangles > half || above_clusters) {
     choice.leaf_clusters = true;
     for (int cells : kClusterLadder) {
       scene = BuildHybridScene(tree, SceneOptions(cells, options.atlas_size));
       choice.cluster_cells = cells;
       foliage = ClusterTriangles(scene);
-      if (foliage <= half) break;
+      if (foliage <= half && (!above_clusters || foliage <= above->cluster_triangles)) break;
     }
     if (foliage > max_triangles) {
       return Status::Error(field, std::to_string(max_triangles) +
@@ -312,7 +371,8 @@ Result<LodMesh> BuildLodMesh(const Tree& tree, long max_triangles, const LodOpti
     scene = BuildHybridScene(tree, SceneOptions(1, options.atlas_size));
   }
 
-  // Wood: the smallest tube radius whose triangles fit what the foliage leaves.
+  // Wood: the smallest tube radius whose triangles fit what the foliage leaves (below a level:
+  // at least its tube radius, so the tubes are a subset of its tubes).
   const long wood_budget = max_triangles - foliage;
   const std::vector<long> tubes = TubeTriangles(tree, full);
   std::vector<float> radius(tree.branches.size(), -1.0f);
@@ -323,13 +383,17 @@ Result<LodMesh> BuildLodMesh(const Tree& tree, long max_triangles, const LodOpti
     thickest = std::max(thickest, radius[i]);
   }
   const float ratio = std::max(1.0f, options.card_ratio);
-  float lo = 0.0f, hi = thickest * ratio * 1.01f + 1.0f;  // hi: every branch a line (0 triangles)
-  if (WoodTriangles(radius, tubes, lo, ratio) <= wood_budget) {
+  const float twig_ratio = std::max(1.0f, options.twig_ratio);
+  float lo = 0.0f;
+  if (above != nullptr && !above->choice.full) lo = above->choice.tube_radius_cm;
+  // hi: every branch thinner than a twig (0 triangles).
+  float hi = std::max(lo, thickest * ratio * twig_ratio * 1.01f + 1.0f);
+  if (WoodTriangles(radius, tubes, lo, ratio, twig_ratio) <= wood_budget) {
     hi = lo;
   } else {
     for (int k = 0; k < kBisections; ++k) {
       const float mid = 0.5f * (lo + hi);
-      if (WoodTriangles(radius, tubes, mid, ratio) <= wood_budget) {
+      if (WoodTriangles(radius, tubes, mid, ratio, twig_ratio) <= wood_budget) {
         hi = mid;
       } else {
         lo = mid;
@@ -338,34 +402,58 @@ Result<LodMesh> BuildLodMesh(const Tree& tree, long max_triangles, const LodOpti
   }
   choice.tube_radius_cm = hi;
   choice.card_radius_cm = hi / ratio;
+  choice.twig_radius_cm = choice.card_radius_cm / twig_ratio;
+
+  std::vector<Kind> kinds(tree.branches.size(), Kind::kNone);
+  for (std::size_t i = 0; i < tree.branches.size(); ++i) {
+    if (radius[i] < 0) continue;
+    if (radius[i] >= choice.tube_radius_cm) {
+      kinds[i] = Kind::kTube;
+    } else if (radius[i] >= choice.card_radius_cm && scene.group_of_branch[i] >= 0) {
+      kinds[i] = Kind::kCard;
+    } else if (radius[i] >= choice.twig_radius_cm) {
+      kinds[i] = Kind::kTwig;
+    }
+  }
+  if (above != nullptr && !above->choice.full) {
+    // Fewer triangles each: the budget still holds.
+    CapKind(radius, Kind::kCard, Kind::kTwig, above->choice.cards, &kinds);
+    CapKind(radius, Kind::kTwig, Kind::kNone, above->choice.twigs, &kinds);
+  }
 
   std::vector<bool> keep(tree.branches.size(), false);
   const float scale = scene.options.cm_to_units;
   for (std::size_t i = 0; i < tree.branches.size(); ++i) {
-    if (radius[i] < 0) continue;
     const Branch& branch = tree.branches[i];
-    if (radius[i] >= choice.tube_radius_cm) {
-      keep[i] = true;
-      ++choice.tubes;
-    } else if (radius[i] >= choice.card_radius_cm && scene.group_of_branch[i] >= 0) {
-      ++choice.cards;
-      const std::size_t g = static_cast<std::size_t>(scene.group_of_branch[i]);
-      for (int k = 0; k < kCardPlanes; ++k) {
-        glm::vec3 corners[4];
-        CardCorners(scene, static_cast<int>(i), k, corners);
-        PushQuad(corners, scene.frames[i].planes[static_cast<std::size_t>(k)].normal,
-                 scene.group_tiles[g][static_cast<std::size_t>(k)], scene.atlas_size, &out.cards);
+    switch (kinds[i]) {
+      case Kind::kTube:
+        keep[i] = true;
+        ++choice.tubes;
+        break;
+      case Kind::kCard: {
+        ++choice.cards;
+        const std::size_t g = static_cast<std::size_t>(scene.group_of_branch[i]);
+        for (int k = 0; k < kCardPlanes; ++k) {
+          glm::vec3 corners[4];
+          CardCorners(scene, static_cast<int>(i), k, corners);
+          PushQuad(corners, scene.frames[i].planes[static_cast<std::size_t>(k)].normal,
+                   scene.group_tiles[g][static_cast<std::size_t>(k)], scene.atlas_size, &out.cards);
+        }
+        break;
       }
-    } else {
-      ++choice.lines;
-      for (std::size_t k = 0; k + 1 < branch.nodes.size(); ++k) {
-        const glm::vec3 p = branch.nodes[k] * scale, q = branch.nodes[k + 1] * scale;
-        out.lines.insert(out.lines.end(), {p.x, p.y, p.z, q.x, q.y, q.z});
-      }
+      case Kind::kTwig:
+        ++choice.twigs;
+        PushTwig(branch.nodes.front() * scale, branch.nodes.back() * scale, radius[i] * scale,
+                 &out.twigs);
+        break;
+      case Kind::kNone:
+        if (radius[i] >= 0) ++choice.dropped;
+        break;
     }
   }
   CopyBark(full, keep, &out.parts);
   if (choice.leaf_clusters) {
+    const long branch_card_triangles = Triangles(out.cards);
     for (std::size_t c = 0; c < scene.clusters.size(); ++c) {
       const LeafCluster& cluster = scene.clusters[c];
       for (std::size_t k = 0; k < cluster.planes.size(); ++k) {
@@ -377,6 +465,7 @@ Result<LodMesh> BuildLodMesh(const Tree& tree, long max_triangles, const LodOpti
       }
     }
     choice.clusters = static_cast<int>(scene.clusters.size());
+    out.cluster_triangles = Triangles(out.cards) - branch_card_triangles;
   } else {
     out.parts.leaves = std::move(full.leaves);
     out.parts.leaf_branch_id = std::move(full.leaf_branch_id);
@@ -386,8 +475,15 @@ Result<LodMesh> BuildLodMesh(const Tree& tree, long max_triangles, const LodOpti
     out.parts.flower_node_index = std::move(full.flower_node_index);
   }
   if (!out.cards.indices.empty()) out.atlas = PaintAtlas(full, scene);
-  choice.triangles = FullTriangles(out.parts) + Triangles(out.cards);
+  choice.triangles = FullTriangles(out.parts) + Triangles(out.cards) + Triangles(out.twigs);
   return out;
+}
+
+}  // namespace
+
+Result<LodMesh> BuildLodMesh(const Tree& tree, long max_triangles, const LodOptions& options,
+                             const std::string& field) {
+  return BuildLevel(tree, max_triangles, options, field, nullptr);
 }
 
 Result<std::vector<LodMesh>> BuildLodLevels(const Tree& tree, long max_triangles,
@@ -405,7 +501,7 @@ Result<std::vector<LodMesh>> BuildLodLevels(const Tree& tree, long max_triangles
     // Seen from farther away: half the atlas side a level (at least 256 texels).
     LodOptions level_options = options;
     level_options.atlas_size = std::max(256, options.atlas_size >> ++level_index);
-    Result<LodMesh> level = BuildLodMesh(tree, within, level_options, "lod");
+    Result<LodMesh> level = BuildLevel(tree, within, level_options, "lod", &levels.back());
     if (!level.ok()) {
       return Status::Error(
           "lod", "LOD0 has " + std::to_string(base) + " triangles, so " + std::to_string(share) +
@@ -486,28 +582,30 @@ Result<gltf::Document> LodGltfDocument(const std::vector<LodMesh>& levels, const
       cards.material = static_cast<int>(doc.materials.size()) - 1;
       mesh.primitives.push_back(std::move(cards));
     }
-    if (!level.lines.empty()) {
+    if (!level.twigs.indices.empty()) {
       if (twigs_material < 0) {
         gltf::Material twigs;
         twigs.name = "twigs";
-        // LineShading::branch_color (0.36, 0.25, 0.17) as linear values (glTF factors are linear;
-        // lines are unlit in most viewers): about its sRGB^2.2.
+        // LineShading::branch_color (0.36, 0.25, 0.17) as linear values (glTF factors are
+        // linear): about its sRGB^2.2.
         twigs.base_color_factor = {0.106, 0.047, 0.020, 1.0};
         twigs.metallic_factor = 0.0;
         twigs.roughness_factor = 0.9;
         doc.materials.push_back(std::move(twigs));
         twigs_material = static_cast<int>(doc.materials.size()) - 1;
       }
-      gltf::Primitive lines;
-      lines.mode = gltf::Mode::kLines;
-      for (std::size_t k = 0; k + 2 < level.lines.size(); k += 3) {
-        lines.mesh.positions.push_back({level.lines[k], level.lines[k + 1], level.lines[k + 2]});
+      gltf::Primitive twigs;
+      const std::size_t n = level.twigs.vertex_count();
+      for (std::size_t v = 0; v < n; ++v) {
+        twigs.mesh.positions.push_back({level.twigs.positions[3 * v],
+                                        level.twigs.positions[3 * v + 1],
+                                        level.twigs.positions[3 * v + 2]});
+        twigs.mesh.normals.push_back({level.twigs.normals[3 * v], level.twigs.normals[3 * v + 1],
+                                      level.twigs.normals[3 * v + 2]});
       }
-      for (std::size_t v = 0; v < lines.mesh.positions.size(); ++v) {
-        lines.mesh.indices.push_back(static_cast<uint32_t>(v));
-      }
-      lines.material = twigs_material;
-      mesh.primitives.push_back(std::move(lines));
+      twigs.mesh.indices = level.twigs.indices;
+      twigs.material = twigs_material;
+      mesh.primitives.push_back(std::move(twigs));
     }
     gltf::Node node;
     node.name = node_name;

@@ -34,7 +34,10 @@ struct SwayGlbInfo {
 };
 
 // Key k is the state after step round(k / (fps dt)) (keys falling on the same step are merged),
-// for k / fps <= duration. Errors are one line (e.g. too many joints for JOINTS_0).
+// for k / fps <= duration. Every primitive also carries the wind attributes _WIND_LEVEL (branch
+// hierarchy level), _WIND_ALONG (node / last node of the branch, 0..1) and _WIND_PHASE (per branch,
+// [0, 1)) for an engine's own wind shader (docs/sway-model.md "Wind attributes"). Errors are one
+// line (e.g. too many joints for JOINTS_0).
 Status WriteSwayGlb(const Tree& tree, const SwayParams& params, const SwayGlbOptions& options,
                     std::vector<unsigned char>* bytes, SwayGlbInfo* info = nullptr);
 

@@ -146,6 +146,12 @@ Status CheckSkinning(const GltfSkinning& skin, const MeshBuffers* const (&parts)
     if (skin.joints0[k].size() != n || skin.weights0[k].size() != n) {
       return Status::Error("skin", "joints/weights disagree with the vertex count");
     }
+    for (const geom::VertexAttribute& a : skin.attributes[k]) {
+      if (a.components < 1 ||
+          a.values.size() != parts[k]->vertex_count() * static_cast<std::size_t>(a.components)) {
+        return Status::Error("skin", "attribute " + a.name + " disagrees with the vertex count");
+      }
+    }
   }
   for (const GltfJoint& joint : skin.joints) {
     if (joint.translation_keys.empty() && joint.rotation_keys.empty()) continue;
@@ -263,6 +269,7 @@ Result<gltf::Document> TreeGltfDocument(const TreeMesh& mesh, const GltfSkinning
     if (skinning != nullptr) {
       primitive.joints = skinning->joints0[k];
       primitive.weights = skinning->weights0[k];
+      primitive.mesh.attributes = skinning->attributes[k];
     }
     out_mesh.primitives.push_back(std::move(primitive));
   }

@@ -31,7 +31,10 @@ struct GltfSkinning {
   std::vector<GltfJoint> joints;                 // joints[0]: the skeleton root
   std::array<std::vector<uint16_t>, 3> joints0;  // bark, leaves, flowers: 4 per vertex
   std::array<std::vector<float>, 3> weights0;    // 4 per vertex, summing to 1
-  std::vector<float> times;                      // s, strictly increasing, one per key
+  // Extra per-vertex attributes of bark, leaves, flowers (empty, or the same names on every
+  // non-empty part), written as application-specific attributes "_NAME" (the sway's wind data).
+  std::array<std::vector<geom::VertexAttribute>, 3> attributes;
+  std::vector<float> times;  // s, strictly increasing, one per key
   std::string clip_name = "sway";
 };
 

@@ -2,7 +2,8 @@
 // embedded PNG textures decoded) and loads it with three.js (bark, leaf and flower materials with maps).
 // Sway export: `niwa tree sway --out x.glb` (native and, when built, the WASM CLI: NIWA_WASM or
 // build/wasm/bin/niwa.js) validates, is a three.js SkinnedMesh whose clip moves the bones, and the
-// sway command's --out errors are one line, exit 2, with no file left behind.
+// sway command's --out errors are one line, exit 2, with no file left behind; it carries the wind
+// attributes _WIND_LEVEL, _WIND_ALONG and _WIND_PHASE on every part (issue 32 item 2).
 import { execFileSync, spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
 import { createRequire } from 'node:module';
@@ -277,6 +278,25 @@ try {
     }
     check(vertexMoved > 0.01, 'sway: three.js skins bark vertices away from rest at 3 s (m)',
           vertexMoved.toFixed(4));
+    // Wind data (issue 32 item 2, docs/sway-model.md "Wind attributes"): _WIND_LEVEL (branch
+    // hierarchy level), _WIND_ALONG (0 at a branch's base, 1 at its tip) and _WIND_PHASE ([0, 1)
+    // per branch) on every part, read by GLTFLoader as the lower-case geometry attributes.
+    const wind = skinned.map((m) => {
+      const g = m.geometry, n = g.getAttribute('position').count;
+      const [level, along, phase] = ['_wind_level', '_wind_along', '_wind_phase'].map((a) => g.getAttribute(a));
+      if (!level || !along || !phase || level.count !== n || along.count !== n || phase.count !== n) {
+        return { ok: false, what: `${m.material?.name}: missing or short` };
+      }
+      const levels = Array.from(level.array), alongs = Array.from(along.array), phases = Array.from(phase.array);
+      const ok = levels.every((x) => Number.isInteger(x) && x >= 0) && alongs.every((x) => x >= 0 && x <= 1) &&
+        phases.every((x) => x >= 0 && x < 1);
+      return { ok, what: `${m.material?.name}: levels 0..${Math.max(...levels)}, along ${Math.min(...alongs)}..${Math.max(...alongs)}, ` +
+        `${new Set(phases).size} phases`, maxLevel: Math.max(...levels), maxAlong: Math.max(...alongs), phases: new Set(phases).size };
+    });
+    const barkWind = wind[skinned.indexOf(bark)] ?? {};
+    check(wind.every((w) => w.ok) && barkWind.maxLevel >= 2 && barkWind.maxAlong === 1 && barkWind.phases >= 10,
+          'sway: every part carries _WIND_LEVEL (whole, >= 0), _WIND_ALONG ([0, 1], the bark reaching 1) and _WIND_PHASE ([0, 1), many)',
+          wind.map((w) => w.what).join('; '));
   }
   if (swayBytes.native && swayBytes.wasm) {
     check(Buffer.compare(swayBytes.native, swayBytes.wasm) === 0, 'sway: native and WASM .glb identical',

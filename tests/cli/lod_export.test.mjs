@@ -1,7 +1,10 @@
 // Issue 17 item 4 on the CLI: `niwa tree grow --max-triangles N --out x.glb` stays within N
 // triangles (counted from the .glb's own accessors, parsed here), `--lod` writes sibling nodes
 // tree_LOD0..2 with LOD1 <= 25 % and LOD2 <= 5 % of LOD0 (or, with --lod-layout msft, LOD0 naming
-// the others through MSFT_lod), all validate with Khronos'
+// the others through MSFT_lod); issue 32 item 2: no primitive of any of them is LINES (mode 1:
+// engines draw those as one-pixel threads or not at all), the twigs are triangles the budget
+// counts, and every kind of primitive (bark, leaves, flowers, cards, twigs: vertices and
+// triangles) shrinks from LOD0 to LOD1 to LOD2; all validate with Khronos'
 // gltf-validator (0 errors), the WASM CLI (when built) writes the same bytes, and bad input is one
 // line naming the flag, exit 2, no file. Run: NIWA_NATIVE=... NIWA_ROOT=... node tests/cli/lod_export.test.mjs
 import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
@@ -29,7 +32,34 @@ function parseGlb(bytes) {
   const triangles = (mesh) => mesh.primitives.reduce((sum, p) =>
     sum + ((p.mode ?? 4) === 4 ? gltf.accessors[p.indices].count / 3 : 0), 0);
   const lines = (mesh) => mesh.primitives.filter((p) => p.mode === 1).length;
-  return { gltf, triangles, lines };
+  // Every primitive of the file that is not TRIANGLES (any mesh, in the scene or not).
+  const nonTriangles = gltf.meshes.flatMap((m) => m.primitives).filter((p) => (p.mode ?? 4) !== 4).length;
+  // {kind: {vertices, triangles}} of one mesh, the kind being the material's name without a
+  // level suffix (cards_0 -> cards).
+  const kinds = (mesh) => {
+    const out = {};
+    for (const p of mesh.primitives) {
+      const kind = gltf.materials[p.material].name.replace(/_\d+$/, '');
+      const k = (out[kind] ??= { vertices: 0, triangles: 0 });
+      k.vertices += gltf.accessors[p.attributes.POSITION].count;
+      k.triangles += gltf.accessors[p.indices].count / 3;
+    }
+    return out;
+  };
+  return { gltf, triangles, lines, nonTriangles, kinds };
+}
+
+// The kinds (and counts) of `lower` that exceed `upper`'s: '' when every kind shrinks or stays.
+function grown(upper, lower, except = []) {
+  const out = [];
+  for (const [kind, k] of Object.entries(lower)) {
+    if (except.includes(kind)) continue;
+    const u = upper[kind] ?? { vertices: 0, triangles: 0 };
+    if (k.vertices > u.vertices || k.triangles > u.triangles) {
+      out.push(`${kind} ${k.vertices} v/${k.triangles} t > ${u.vertices}/${u.triangles}`);
+    }
+  }
+  return out.join('; ');
 }
 
 const dir = mkdtempSync(join(tmpdir(), 'niwa-lod-'));
@@ -50,7 +80,9 @@ try {
     const count = triangles(gltf.meshes[0]);
     check(`--max-triangles ${budget}: one node 'tree'`, gltf.nodes.length === 1 && gltf.nodes[0].name === 'tree');
     check(`--max-triangles ${budget}: ${count} triangles (within, and at least half used)`, count <= budget && count >= budget / 2);
-    check(`--max-triangles ${budget}: thin twigs as one LINES primitive`, lines(gltf.meshes[0]) === 1);
+    const k = parseGlb(bytes).kinds(gltf.meshes[0]);
+    check(`--max-triangles ${budget}: no LINES primitive; twigs as ${k.twigs?.triangles} triangles (counted in the ${count})`,
+      lines(gltf.meshes[0]) === 0 && parseGlb(bytes).nonTriangles === 0 && k.twigs?.triangles > 0);
     const cards = gltf.materials.filter((m) => m.name.startsWith('cards'));
     check(`--max-triangles ${budget}: card material with the atlas, alpha mask, double-sided`,
       cards.length === 1 && cards[0].alphaMode === 'MASK' && cards[0].doubleSided === true);
@@ -70,6 +102,12 @@ try {
   check(`--lod LOD0 ${counts[0]} triangles <= 20000`, counts[0] <= 20000);
   check(`--lod LOD1 ${counts[1]} <= 25 % of ${counts[0]}`, counts[1] * 100 <= counts[0] * 25);
   check(`--lod LOD2 ${counts[2]} <= 5 % of ${counts[0]}`, counts[2] * 100 <= counts[0] * 5 && counts[2] > 0);
+  check('--lod: no primitive is LINES (or anything but TRIANGLES)', lod.nonTriangles === 0);
+  const lodKinds = lod.gltf.scenes[0].nodes.map((n) => lod.kinds(lod.gltf.meshes[lod.gltf.nodes[n].mesh]));
+  console.log(`  kinds: ${lodKinds.map((k, l) => `LOD${l} ${Object.entries(k).map(([n, c]) => `${n} ${c.vertices} v/${c.triangles} t`).join(', ')}`).join(' | ')}`);
+  check(`--lod: LOD1 holds no more of any kind than LOD0 ${grown(lodKinds[0], lodKinds[1])}`, grown(lodKinds[0], lodKinds[1]) === '');
+  check(`--lod: LOD2 holds no more of any kind than LOD1 ${grown(lodKinds[1], lodKinds[2])}`, grown(lodKinds[1], lodKinds[2]) === '');
+  check('--lod: every level has twigs as triangles (the thinnest wood stays drawn)', lodKinds.every((k) => k.twigs?.triangles > 0));
   const lodReport = await validator.validateBytes(new Uint8Array(lodBytes), { maxIssues: 50 });
   check('--lod: validator 0 errors', lodReport.issues.numErrors === 0,
     lodReport.issues.messages.filter((m) => m.severity === 0).map((m) => m.message).slice(0, 3).join('; '));
@@ -104,6 +142,11 @@ try {
   const lf = parseGlb(readFileSync(lodFull));
   const lf0 = lf.triangles(lf.gltf.meshes[lf.gltf.nodes[lf.gltf.scenes[0].nodes[0]].mesh]);
   check(`--lod alone: LOD0 is the full mesh (${lf0} triangles)`, lf0 === fullTriangles);
+  // Below the full mesh, cards (and twigs) replace the leaves and thin tubes: only they may appear
+  // at LOD1; from LOD1 to LOD2 nothing grows.
+  const lfKinds = lf.gltf.scenes[0].nodes.map((n) => lf.kinds(lf.gltf.meshes[lf.gltf.nodes[n].mesh]));
+  check(`--lod alone: no LINES; LOD1 grows only cards/twigs ${grown(lfKinds[0], lfKinds[1], ['cards', 'twigs'])}, LOD2 nothing ${grown(lfKinds[1], lfKinds[2])}`,
+    lf.nonTriangles === 0 && grown(lfKinds[0], lfKinds[1], ['cards', 'twigs']) === '' && grown(lfKinds[1], lfKinds[2]) === '');
 
   // Bad input: one line naming the flag, exit 2, nothing written.
   const bad = [

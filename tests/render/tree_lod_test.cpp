@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
 #include <limits>
 #include <string>
 #include <vector>
@@ -21,6 +22,8 @@ const Tree& Sakura15() {
 }
 
 // Triangles of the TRIANGLES primitives (mode 4 or absent) of one mesh of a parsed .glb.
+long Triangles(const MeshBuffers& b) { return static_cast<long>(b.indices.size() / 3); }
+
 long GlbTriangles(const testing::Glb& glb, std::size_t mesh) {
   long sum = 0;
   for (const auto& p : glb.gltf["meshes"][mesh]["primitives"]) {
@@ -37,7 +40,7 @@ TEST(TreeLod, FullMeshWhenItFits) {
   EXPECT_TRUE(lod->choice.full);
   EXPECT_EQ(lod->choice.triangles, full);
   EXPECT_TRUE(lod->cards.indices.empty());
-  EXPECT_TRUE(lod->lines.empty());
+  EXPECT_TRUE(lod->twigs.indices.empty());
 }
 
 TEST(TreeLod, TwentyThousandTrianglesAndTheGlbAgrees) {
@@ -52,7 +55,7 @@ TEST(TreeLod, TwentyThousandTrianglesAndTheGlbAgrees) {
   EXPECT_GE(c.triangles, 10000);  // the wood takes what the foliage leaves (at most half)
   EXPECT_GT(c.tubes, 0);
   EXPECT_GT(c.clusters, 0);
-  EXPECT_GT(c.lines, 0);
+  EXPECT_GT(c.twigs, 0);
   EXPECT_TRUE(lod->parts.leaves.indices.empty());
   std::vector<unsigned char> bytes;
   ASSERT_TRUE(WriteLodGlb({*lod}, &bytes).ok());
@@ -60,9 +63,51 @@ TEST(TreeLod, TwentyThousandTrianglesAndTheGlbAgrees) {
   ASSERT_EQ(glb.gltf["nodes"].size(), 1u);
   EXPECT_EQ(glb.gltf["nodes"][0]["name"], "tree");
   EXPECT_EQ(GlbTriangles(glb, 0), c.triangles);
-  bool lines = false;
-  for (const auto& p : glb.gltf["meshes"][0]["primitives"]) lines |= p.value("mode", 4) == 1;
-  EXPECT_TRUE(lines);
+  // Twigs are cones of 3 triangles (4 vertices) a branch, and nothing is drawn as lines.
+  EXPECT_EQ(Triangles(lod->twigs), 3L * c.twigs);
+  EXPECT_EQ(lod->twigs.vertex_count(), 4u * static_cast<std::size_t>(c.twigs));
+  for (const auto& p : glb.gltf["meshes"][0]["primitives"]) EXPECT_EQ(p.value("mode", 4), 4);
+}
+
+// Twig cones face outward: each triangle's normal points away from the twig's axis.
+TEST(TreeLod, TwigConesFaceOutward) {
+  Result<LodMesh> lod = BuildLodMesh(Sakura15(), 20000);
+  ASSERT_TRUE(lod.ok());
+  const MeshBuffers& t = lod->twigs;
+  ASSERT_GT(t.indices.size(), 0u);
+  auto at = [&](uint32_t v) {
+    return glm::vec3(t.positions[3 * v], t.positions[3 * v + 1], t.positions[3 * v + 2]);
+  };
+  int outward = 0, total = 0;
+  for (std::size_t k = 0; k + 2 < t.indices.size(); k += 3) {
+    const uint32_t first = t.indices[k] - t.indices[k] % 4;  // 4 vertices a cone: 3 base, apex
+    const glm::vec3 centre = (at(first) + at(first + 1) + at(first + 2)) / 3.0f;
+    const glm::vec3 a = at(t.indices[k]), b = at(t.indices[k + 1]), c = at(t.indices[k + 2]);
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    ++total;
+    outward += glm::dot(n, (a + b) * 0.5f - centre) > 0 ? 1 : 0;
+  }
+  EXPECT_EQ(outward, total);
+}
+
+// Below a budgeted LOD0 no kind of primitive grows: bark, cards and twigs (vertices and
+// triangles) shrink level by level, and each level's tubes are at least as thick as above.
+TEST(TreeLod, LevelsShrinkInEveryKind) {
+  Result<std::vector<LodMesh>> levels = BuildLodLevels(Sakura15(), 20000);
+  ASSERT_TRUE(levels.ok()) << levels.status().Line();
+  for (std::size_t l = 1; l < levels->size(); ++l) {
+    const LodMesh& a = (*levels)[l - 1];
+    const LodMesh& b = (*levels)[l];
+    EXPECT_LE(b.parts.bark.vertex_count(), a.parts.bark.vertex_count()) << l;
+    EXPECT_LE(Triangles(b.parts.bark), Triangles(a.parts.bark)) << l;
+    EXPECT_LE(b.cards.vertex_count(), a.cards.vertex_count()) << l;
+    EXPECT_LE(Triangles(b.cards), Triangles(a.cards)) << l;
+    EXPECT_LE(b.twigs.vertex_count(), a.twigs.vertex_count()) << l;
+    EXPECT_LE(Triangles(b.twigs), Triangles(a.twigs)) << l;
+    EXPECT_LE(b.cluster_triangles, a.cluster_triangles) << l;
+    EXPECT_GE(b.choice.tube_radius_cm, a.choice.tube_radius_cm) << l;
+  }
+  EXPECT_GT((*levels)[2].twigs.vertex_count(), 0u);  // the thinnest wood is still drawn at LOD2
 }
 
 TEST(TreeLod, SmallerBudgetsNeverAddTrianglesOrTubes) {

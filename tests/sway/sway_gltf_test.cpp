@@ -28,7 +28,9 @@ using testing::Glb;
 using testing::ParseGlb;
 using testing::ReadAccessor;
 
-Tree GrowForSway(const std::string& preset, int years) { return testing::GrowPreset(preset, years, 1); }
+Tree GrowForSway(const std::string& preset, int years) {
+  return testing::GrowPreset(preset, years, 1);
+}
 
 SwayParams ShortGust() {
   TreeParams ps;
@@ -180,6 +182,62 @@ TEST(GltfSwayTest, SkinnedGlbHasJointsClipAndReproducesTheSkinnedPoses) {
     }
   }
   EXPECT_GT(moved, 0.01);  // metres
+}
+
+// The wind attributes (docs/sway-model.md "Wind attributes"): on bark, leaves and flowers, one
+// value a vertex; a branch's vertices share its level and phase, a child is one level below its
+// parent, _WIND_ALONG is the vertex's node over the branch's last node.
+TEST(GltfSwayTest, WindAttributesFollowTheBranches) {
+  const Tree tree = GrowForSway("sakura-thesis", 5);
+  std::vector<unsigned char> bytes;
+  ASSERT_EQ(WriteSwayGlb(tree, ShortGust(), SwayGlbOptions{}, &bytes).Line(), "");
+  const Glb glb = ParseGlb(bytes);
+  MeshOptions mesh_options;
+  mesh_options.cm_to_units = SwayGlbOptions{}.cm_to_units;
+  const TreeMesh mesh = BuildTreeMesh(tree, mesh_options);
+  const std::vector<uint32_t>* ids[3] = {&mesh.bark_branch_id, &mesh.leaf_branch_id,
+                                         &mesh.flower_branch_id};
+  const std::vector<uint32_t>* nodes[3] = {&mesh.bark_node_index, &mesh.leaf_node_index,
+                                           &mesh.flower_node_index};
+  std::vector<float> level(tree.branches.size(), -1.0f), phase(tree.branches.size(), -1.0f);
+  std::size_t part = 0, checked = 0;
+  for (const json& p : glb.gltf["meshes"][0]["primitives"]) {
+    while (part < 3 && ids[part]->empty()) ++part;  // the writer skips empty parts
+    ASSERT_LT(part, 3u);
+    const std::size_t n = ids[part]->size();
+    ASSERT_EQ(glb.gltf["accessors"][p["attributes"]["POSITION"].get<std::size_t>()]["count"], n);
+    std::vector<float> values[3];
+    const char* names[3] = {"_WIND_LEVEL", "_WIND_ALONG", "_WIND_PHASE"};
+    for (int a = 0; a < 3; ++a) {
+      ASSERT_TRUE(p["attributes"].contains(names[a])) << names[a];
+      values[a] = ReadAccessor<float>(glb, p["attributes"][names[a]].get<int>());
+      ASSERT_GE(values[a].size(), n);
+    }
+    for (std::size_t v = 0; v < n; ++v) {
+      const uint32_t b = (*ids[part])[v];
+      ASSERT_LT(b, tree.branches.size());
+      if (level[b] < 0) level[b] = values[0][v], phase[b] = values[2][v];
+      EXPECT_EQ(values[0][v], level[b]);  // one level and phase a branch, across its parts
+      EXPECT_EQ(values[2][v], phase[b]);
+      EXPECT_GE(values[2][v], 0.0f);
+      EXPECT_LT(values[2][v], 1.0f);
+      const float last = static_cast<float>(tree.branches[b].nodes.size() - 1);
+      EXPECT_FLOAT_EQ(values[1][v], std::min(1.0f, static_cast<float>((*nodes[part])[v]) / last));
+      ++checked;
+    }
+    ++part;
+  }
+  EXPECT_GT(checked, 1000u);
+  int children = 0, phases_apart = 0;
+  for (const Branch& b : tree.branches) {
+    const std::size_t i = static_cast<std::size_t>(b.id);
+    if (b.parent < 0 || level[i] < 0 || level[static_cast<std::size_t>(b.parent)] < 0) continue;
+    EXPECT_EQ(level[i], level[static_cast<std::size_t>(b.parent)] + 1.0f) << b.id;
+    ++children;
+    phases_apart += phase[i] != phase[static_cast<std::size_t>(b.parent)] ? 1 : 0;
+  }
+  EXPECT_GT(children, 10);
+  EXPECT_EQ(phases_apart, children);  // a child never swings in step with its parent
 }
 
 TEST(GltfSwayTest, TooManyJointsIsAOneLineError) {

@@ -26,8 +26,8 @@ export function mountExportPanel(anchor, requestExport) {
     <label for="export-max-triangles">Triangle budget (game-ready .glb)</label>
     <input id="export-max-triangles" type="text" inputmode="numeric" value="20000"
       aria-describedby="export-budget-help export-budget-error">
-    <p id="export-budget-help" class="help-text">Thin twigs become cards or lines and leaves
-      leaf-cluster cards until the tree fits. LOD: levels tree_LOD0, _LOD1 (at most 25 %) and _LOD2 (5 %),
+    <p id="export-budget-help" class="help-text">Thin branches become cards or 3-sided twig cones
+      (the thinnest are left out) and leaves leaf-cluster cards until the tree fits. LOD: levels tree_LOD0, _LOD1 (at most 25 %) and _LOD2 (5 %),
       the names Unity's importer groups into an LOD Group.</p>
     <p id="export-budget-error" class="field-error" role="alert"></p>
     <div class="buttons">
