@@ -125,26 +125,36 @@ LayerField DrawLayer(const Lattice& L, const Surface& s, const std::vector<int>&
       const int other = side[0] == t ? side[1] : side[0];
       if (other >= 0 && drawn[other]) continue;
       const int k1 = (e + 1) % 3;
-      // In cm of the map (texel centres at (ix + 0.5)·tx).
-      const double ax = X[e] * tx, ay = Y[e] * ty;
-      const double dx = (X[k1] - X[e]) * tx, dy = (Y[k1] - Y[e]) * ty;
-      const double l2 = dx * dx + dy * dy;
-      const double inv = l2 > 0 ? 1.0 / l2 : 0.0;
+      // In cm of the map, from the segment's first corner (small numbers: a turned surface gives
+      // the same distances). Each row's run is split where it wraps, so the inner loop is
+      // contiguous (and vectorises; the same float operations in every lane).
+      const float dx = static_cast<float>((X[k1] - X[e]) * tx);
+      const float dy = static_cast<float>((Y[k1] - Y[e]) * ty);
+      const float l2 = dx * dx + dy * dy;
+      const float inv = l2 > 0 ? 1.0f / l2 : 0.0f;
+      const float ftx = static_cast<float>(tx);
       const int sxa = static_cast<int>(std::floor(std::min(X[e], X[k1]) - 0.5)) - bx;
-      const int sxb = static_cast<int>(std::ceil(std::max(X[e], X[k1]) - 0.5)) + bx;
+      int sxb = static_cast<int>(std::ceil(std::max(X[e], X[k1]) - 0.5)) + bx;
+      sxb = std::min(sxb, sxa + width - 1);
       const int sya = static_cast<int>(std::floor(std::min(Y[e], Y[k1]) - 0.5)) - by;
       const int syb = static_cast<int>(std::ceil(std::max(Y[e], Y[k1]) - 0.5)) + by;
+      const float px0 = static_cast<float>((sxa + 0.5 - X[e]) * tx);
+      const int wx0 = WrapIndex(sxa, width);
+      const int run1 = std::min(sxb - sxa + 1, width - wx0);
       for (int iy = sya; iy <= syb; ++iy) {
-        const double py = (iy + 0.5) * ty - ay;
+        const float py = static_cast<float>((iy + 0.5 - Y[e]) * ty);
         float* row = d2.data() + static_cast<std::size_t>(WrapIndex(iy, height)) * width;
-        int wx = WrapIndex(sxa, width);
-        for (int ix = sxa; ix <= sxb; ++ix) {
-          const double px = (ix + 0.5) * tx - ax;
-          const double u = std::min(1.0, std::max(0.0, (px * dx + py * dy) * inv));
-          const double qx = px - u * dx, qy = py - u * dy;
-          const float q2 = static_cast<float>(qx * qx + qy * qy);
-          if (q2 < row[wx]) row[wx] = q2;
-          if (++wx == width) wx = 0;
+        const float pyd = py * dy;
+        for (int part = 0; part < 2; ++part) {
+          const int from = part == 0 ? 0 : run1, to = part == 0 ? run1 : sxb - sxa + 1;
+          float* out = row + (part == 0 ? wx0 : 0) - from;
+          for (int i = from; i < to; ++i) {
+            const float px = px0 + static_cast<float>(i) * ftx;
+            const float u = std::min(1.0f, std::max(0.0f, (px * dx + pyd) * inv));
+            const float qx = px - u * dx, qy = py - u * dy;
+            const float q2 = qx * qx + qy * qy;
+            out[i] = std::min(out[i], q2);
+          }
         }
       }
     }
@@ -199,16 +209,20 @@ void BoxSumColumns(const std::vector<int32_t>& in, int width, int height, int r,
   }
 }
 
-// Blurs v (in place) by a box rx × ry applied twice (a tent), in integers: a value c everywhere
-// comes out c·(2rx+1)(2ry+1).
-void TentBlur(std::vector<int32_t>* v, int width, int height, int rx, int ry) {
+// Sums v (in place, |v| ≤ vmax) over a box rx × ry twice (a tent), in integers: a value c
+// everywhere comes out c·n²/k, n = (2rx+1)(2ry+1), k the returned divisor: 1, or n when n²·vmax
+// would overflow (then the first pass's sums are divided by n).
+int64_t TentSum(std::vector<int32_t>* v, int width, int height, int rx, int ry, int64_t vmax) {
+  const int64_t n = static_cast<int64_t>(2 * rx + 1) * (2 * ry + 1);
+  const bool divide = n * n * vmax >= (int64_t{1} << 31);
   std::vector<int32_t> tmp;
   BoxSumRows(*v, width, height, rx, &tmp);
   BoxSumColumns(tmp, width, height, ry, v);
-  const int64_t n = static_cast<int64_t>(2 * rx + 1) * (2 * ry + 1);
-  for (int32_t& x : *v) x = static_cast<int32_t>(x / n);
+  if (divide)
+    for (int32_t& x : *v) x = static_cast<int32_t>(x / n);
   BoxSumRows(*v, width, height, rx, &tmp);
   BoxSumColumns(tmp, width, height, ry, v);
+  return divide ? n : 1;
 }
 
 // Periodic value noise over the image (gx × gy cells, bilinear, wraps both ways), as a table.
@@ -249,7 +263,7 @@ std::vector<float> PeriodicNoise(int width, int height, int gx, int gy, uint32_t
 // its plates' jitter salt.
 struct DrawnLayer {
   LayerField field;
-  std::vector<int32_t> pillow;  // tent-blurred plate cover, 0..pillow_full
+  std::vector<int32_t> pillow;  // tent-summed plate cover, 0..pillow_full
   double top = 0;
   const double* colour = nullptr;
   uint32_t salt = 7u;
@@ -317,6 +331,18 @@ void FillMaps(int width, int height, const std::vector<DrawnLayer>& layers, cons
       PeriodicNoise(width, height, std::max(4, width / 3), std::max(2, height / 24), 17u);
   const std::vector<float> mottle =
       PeriodicNoise(width, height, std::max(2, width / 48), std::max(2, height / 64), 91u);
+  // Each plate's age and jitter, looked up by plate id.
+  std::vector<std::vector<float>> age(nl), jitter(nl);
+  for (int r = 0; r < nl; ++r) {
+    const DrawnLayer& d = layers[r];
+    const int32_t top_id = *std::max_element(d.field.plate.begin(), d.field.plate.end());
+    age[r].resize(static_cast<std::size_t>(top_id) + 1);
+    jitter[r].resize(age[r].size());
+    for (int32_t id = 0; id <= top_id; ++id) {
+      age[r][id] = Hash01(static_cast<uint32_t>(id), d.salt);
+      jitter[r][id] = 0.75f + 0.45f * Hash01(static_cast<uint32_t>(id), d.salt + 1u);
+    }
+  }
   maps->height = image::MakeGray16(width, height);
   maps->base_colour = image::MakeRgba8(width, height);
   maps->normal = image::MakeRgba8(width, height);
@@ -357,16 +383,17 @@ void FillMaps(int width, int height, const std::vector<DrawnLayer>& layers, cons
       float rgb[3];
       float rough;
       if (level[p]) {
-        const DrawnLayer& d = layers[level[p] - 1];
+        const int r = level[p] - 1;
+        const DrawnLayer& d = layers[r];
         const int32_t id = d.field.plate[p];
         // A plate's age: older plates (and a plate's high middle) weather to grey.
-        const float age = Hash01(static_cast<uint32_t>(id), d.salt);
-        const float jitter = 0.75f + 0.45f * Hash01(static_cast<uint32_t>(id), d.salt + 1u);
+        const float age_p = age[r][id];
+        const float jit = jitter[r][id];
         const float pil = static_cast<float>(d.pillow[p]) * inv_full;
-        const float weather = std::min(1.0f, (0.15f + 0.5f * age) * pil * (0.6f + 0.8f * m));
+        const float weather = std::min(1.0f, (0.15f + 0.5f * age_p) * pil * (0.6f + 0.8f * m));
         const float fc = face[p];
         for (int k = 0; k < 3; ++k) {
-          const float plate = static_cast<float>(d.colour[k]) * jitter;
+          const float plate = static_cast<float>(d.colour[k]) * jit;
           const float topc = plate + (kWeatheredRgb[k] - plate) * weather;
           rgb[k] = (kWallRgb[k] + (topc - kWallRgb[k]) * fc) * grain * (0.8f + 0.2f * pil);
         }
@@ -410,9 +437,8 @@ BarkMaps DrawLayers(const Lattice& L, const std::vector<MapLayer>& layers, doubl
   // The pillow: plate cover blurred over about one spring length.
   const int rx = std::max(1, static_cast<int>(std::lround(0.5 * L.l_o / maps.texel_cm_x)));
   const int ry = std::max(1, static_cast<int>(std::lround(0.5 * L.l_o / maps.texel_cm_y)));
-  const int32_t unit = 1024;
   const int64_t n = static_cast<int64_t>(2 * rx + 1) * (2 * ry + 1);
-  const int32_t full = static_cast<int32_t>(unit * n);  // a texel deep inside a plate
+  int64_t pillow_div = 1;
   const int sx = std::max(1, static_cast<int>(std::lround(0.4 * L.l_o / maps.texel_cm_x)));
   const int sy = std::max(1, static_cast<int>(std::lround(0.4 * L.l_o / maps.texel_cm_y)));
   const int64_t ns = static_cast<int64_t>(2 * sx + 1) * (2 * sy + 1);
@@ -424,21 +450,23 @@ BarkMaps DrawLayers(const Lattice& L, const std::vector<MapLayer>& layers, doubl
     d.field = DrawLayer(L, *m.surface, *m.tri_region, m.s_theta, s_z, px_x, px_y, hf, width, height,
                         band);
     // The outline's lattice zigzag rounded: the distance tent-blurred over about 0.4·L_o (in
-    // integers of 1/8192 cm, so the blur is exact and a turned surface gives the turned map).
+    // integers of 1/1024 cm, so the blur is exact and a turned surface gives the turned map).
     std::vector<int32_t> q(d.field.sd.size());
     for (std::size_t p = 0; p < q.size(); ++p)
-      q[p] = static_cast<int32_t>(std::lround(d.field.sd[p] * 8192.0));
-    TentBlur(&q, width, height, sx, sy);
-    const float per = static_cast<float>(1.0 / (8192.0 * static_cast<double>(ns)));
+      q[p] = static_cast<int32_t>(std::lround(d.field.sd[p] * 1024.0f));
+    const int64_t qmax = static_cast<int64_t>(std::ceil(band * 1024.0)) + 1;
+    const int64_t k = TentSum(&q, width, height, sx, sy, qmax);
+    const float per =
+        static_cast<float>(static_cast<double>(k) / (1024.0 * static_cast<double>(ns * ns)));
     for (std::size_t p = 0; p < q.size(); ++p) d.field.sd[p] = static_cast<float>(q[p]) * per;
     d.pillow.resize(d.field.plate.size());
-    for (std::size_t p = 0; p < d.pillow.size(); ++p) d.pillow[p] = d.field.plate[p] ? unit : 0;
-    TentBlur(&d.pillow, width, height, rx, ry);
+    for (std::size_t p = 0; p < d.pillow.size(); ++p) d.pillow[p] = d.field.plate[p] ? 1 : 0;
+    pillow_div = TentSum(&d.pillow, width, height, rx, ry, 1);
     d.top = m.top;
     d.colour = m.colour;
     d.salt = 7u + 131u * static_cast<uint32_t>(layers.size() - r);
   }
-  FillMaps(width, height, drawn, relief, full, &maps);
+  FillMaps(width, height, drawn, relief, static_cast<int32_t>(n * n / pillow_div), &maps);
   return maps;
 }
 
