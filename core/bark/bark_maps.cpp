@@ -459,6 +459,7 @@ BarkMaps DrawLayers(const Lattice& L, const std::vector<MapLayer>& layers, doubl
     const float per =
         static_cast<float>(static_cast<double>(k) / (1024.0 * static_cast<double>(ns * ns)));
     for (std::size_t p = 0; p < q.size(); ++p) d.field.sd[p] = static_cast<float>(q[p]) * per;
+    std::vector<int32_t>().swap(q);  // the peak stays under EstimateBarkRun's 48 B a texel
     d.pillow.resize(d.field.plate.size());
     for (std::size_t p = 0; p < d.pillow.size(); ++p) d.pillow[p] = d.field.plate[p] ? 1 : 0;
     pillow_div = TentSum(&d.pillow, width, height, rx, ry, 1);
