@@ -1,5 +1,6 @@
-// The bark maps: plates rasterised on the torus, a wrapped chamfer distance for the bevel, the
-// height, normal, colour and ORM images.
+// The bark maps: plates rasterised on the torus, a signed distance to their outlines (exact to the
+// outline's segments near them), a pillow and a crack-wall profile for the height, and the height,
+// normal, colour and ORM images.
 #include "bark/bark_maps.h"
 
 #include <algorithm>
@@ -29,62 +30,82 @@ float Hash01(uint32_t a, uint32_t b) {
          (1.0f / 16777216.0f);
 }
 
-// Periodic value noise on a gx × gy cell grid over the image (bilinear, wraps both ways).
-float BarkGrain(int x, int y, int width, int height, int gx, int gy, uint32_t salt) {
-  const float fx =
-      (static_cast<float>(x) + 0.5f) * static_cast<float>(gx) / static_cast<float>(width);
-  const float fy =
-      (static_cast<float>(y) + 0.5f) * static_cast<float>(gy) / static_cast<float>(height);
-  const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
-  const float tx = fx - static_cast<float>(x0), ty = fy - static_cast<float>(y0);
-  auto at = [&](int cx, int cy) {
-    return Hash01(static_cast<uint32_t>(WrapIndex(cx, gx)) + salt,
-                  static_cast<uint32_t>(WrapIndex(cy, gy)));
-  };
-  const float a = at(x0, y0) + (at(x0 + 1, y0) - at(x0, y0)) * tx;
-  const float b = at(x0, y0 + 1) + (at(x0 + 1, y0 + 1) - at(x0, y0 + 1)) * tx;
-  return a + (b - a) * ty;
+unsigned char Byte(float v) {
+  const float c = std::min(1.0f, std::max(0.0f, v));
+  return static_cast<unsigned char>(static_cast<int>(c * 255.0f + 0.5f));
 }
 
-unsigned char Byte(double v) {
-  const double c = std::min(1.0, std::max(0.0, v));
-  return static_cast<unsigned char>(std::lround(c * 255.0));
+float Smooth(float u) {
+  const float c = std::min(1.0f, std::max(0.0f, u));
+  return c * c * (3.0f - 2.0f * c);
 }
+
+// The deformed corners of triangle t of a surface, in pixels (x right, y down the image).
+void TrianglePx(const Lattice& L, const Surface& s, int t, double s_theta, double s_z, double px_x,
+                double px_y, double hf, double X[3], double Y[3]) {
+  const auto& nd = L.tri_nodes[t];
+  const auto& of = L.tri_offsets[t];
+  const int n0 = nd[0], i0 = n0 / L.n_h, j0 = n0 % L.n_h;
+  const double x0 = L.x_of(i0) * s_theta + s.ux[n0], z0 = L.z_of(i0, j0) * s_z + s.uz[n0];
+  X[0] = x0;
+  Y[0] = z0;
+  for (int k = 1; k < 3; ++k) {
+    const int nk = nd[k];
+    X[k] = x0 + of[2 * (k - 1)] * s_theta + (s.ux[nk] - s.ux[n0]);
+    Y[k] = z0 + of[2 * (k - 1) + 1] * s_z + (s.uz[nk] - s.uz[n0]);
+  }
+  for (int k = 0; k < 3; ++k) {
+    X[k] *= px_x;
+    Y[k] = (hf - Y[k]) * px_y;  // image rows run down the trunk
+  }
+}
+
+bool Drawn(const Lattice& L, const Surface& s, int t) {
+  const auto& sp = L.tri_springs[t];
+  return !(s.broken[sp[0]] || s.broken[sp[1]] || s.broken[sp[2]]);
+}
+
+// The drawing of one layer: which plate covers each texel (0: none) and the signed distance (cm,
+// + on a plate) to the plates' outline, exact within `band` of it and ±band beyond.
+struct LayerField {
+  std::vector<int32_t> plate;
+  std::vector<float> sd;
+};
 
 // Rasterises the plates of a surface (its triangles with three intact springs) at their deformed
-// positions: pixel centres inside a triangle (edges inclusive, so neighbouring plates leave no
-// hairline) get put(pixel index, triangle). px_x, px_y: pixels per cm; hf: the patch height (cm).
-template <typename Put>
-void RasterPlates(const Lattice& L, const Surface& s, double s_theta, double s_z, double px_x,
-                  double px_y, double hf, int width, int height, Put put) {
-  for (std::size_t t = 0; t < L.tri_nodes.size(); ++t) {
-    const auto& sp = L.tri_springs[t];
-    if (s.broken[sp[0]] || s.broken[sp[1]] || s.broken[sp[2]]) continue;
-    const auto& nd = L.tri_nodes[t];
-    const auto& of = L.tri_offsets[t];
-    const int n0 = nd[0], i0 = n0 / L.n_h, j0 = n0 % L.n_h;
-    const double x0 = L.x_of(i0) * s_theta + s.ux[n0], z0 = L.z_of(i0, j0) * s_z + s.uz[n0];
+// positions (pixel centres inside a triangle, edges inclusive, so neighbouring plates leave no
+// hairline), then measures each texel's distance to the outline: the edges of drawn triangles whose
+// neighbour across is not drawn, as segments (so a crack's edge is a line, not the pixels' stairs).
+LayerField DrawLayer(const Lattice& L, const Surface& s, const std::vector<int>& tri_region,
+                     double s_theta, double s_z, double px_x, double px_y, double hf, int width,
+                     int height, double band_cm) {
+  const std::size_t npx = static_cast<std::size_t>(width) * height;
+  LayerField f;
+  f.plate.assign(npx, 0);
+  const int ntri = static_cast<int>(L.tri_nodes.size());
+  std::vector<uint8_t> drawn(ntri);
+  for (int t = 0; t < ntri; ++t) drawn[t] = Drawn(L, s, t);
+  const double tx = 1.0 / px_x, ty = 1.0 / px_y;  // cm per texel
+  const double b2 = band_cm * band_cm;
+  std::vector<float> d2(npx, static_cast<float>(b2));
+  const int bx = static_cast<int>(std::ceil(band_cm * px_x)) + 1;
+  const int by = static_cast<int>(std::ceil(band_cm * px_y)) + 1;
+  for (int t = 0; t < ntri; ++t) {
+    if (!drawn[t]) continue;
     double X[3], Y[3];
-    X[0] = x0;
-    Y[0] = z0;
-    for (int k = 1; k < 3; ++k) {
-      const int nk = nd[k];
-      X[k] = x0 + of[2 * (k - 1)] * s_theta + (s.ux[nk] - s.ux[n0]);
-      Y[k] = z0 + of[2 * (k - 1) + 1] * s_z + (s.uz[nk] - s.uz[n0]);
-    }
-    for (int k = 0; k < 3; ++k) {
-      X[k] *= px_x;
-      Y[k] = (hf - Y[k]) * px_y;  // image rows run down the trunk
-    }
+    TrianglePx(L, s, t, s_theta, s_z, px_x, px_y, hf, X, Y);
     const double area = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
     if (area == 0) continue;
     const double sign = area > 0 ? 1.0 : -1.0, eps = -1e-9 * std::fabs(area);
+    const int32_t id = tri_region[t] + 1;
     const int xa = static_cast<int>(std::floor(std::min({X[0], X[1], X[2]}) - 0.5));
     const int xb = static_cast<int>(std::ceil(std::max({X[0], X[1], X[2]}) - 0.5));
     const int ya = static_cast<int>(std::floor(std::min({Y[0], Y[1], Y[2]}) - 0.5));
     const int yb = static_cast<int>(std::ceil(std::max({Y[0], Y[1], Y[2]}) - 0.5));
     for (int iy = ya; iy <= yb; ++iy) {
       const double cy = iy + 0.5;
+      int32_t* row = f.plate.data() + static_cast<std::size_t>(WrapIndex(iy, height)) * width;
+      int wx = WrapIndex(xa, width);
       for (int ix = xa; ix <= xb; ++ix) {
         const double cx = ix + 0.5;
         bool inside = true;
@@ -93,97 +114,361 @@ void RasterPlates(const Lattice& L, const Surface& s, double s_theta, double s_z
           const double e = ((X[k1] - X[k]) * (cy - Y[k]) - (Y[k1] - Y[k]) * (cx - X[k])) * sign;
           inside = e >= eps;
         }
-        if (inside)
-          put(static_cast<std::size_t>(WrapIndex(iy, height)) * width + WrapIndex(ix, width),
-              static_cast<int>(t));
+        if (inside) row[wx] = id;
+        if (++wx == width) wx = 0;
       }
+    }
+    // Outline edges: the neighbour across is not drawn.
+    const auto& sp = L.tri_springs[t];
+    for (int e = 0; e < 3; ++e) {
+      const auto& side = L.spring_tris[sp[e]];
+      const int other = side[0] == t ? side[1] : side[0];
+      if (other >= 0 && drawn[other]) continue;
+      const int k1 = (e + 1) % 3;
+      // In cm of the map, from the segment's first corner (small numbers: a turned surface gives
+      // the same distances). Each row's run is split where it wraps, so the inner loop is
+      // contiguous (and vectorises; the same float operations in every lane).
+      const float dx = static_cast<float>((X[k1] - X[e]) * tx);
+      const float dy = static_cast<float>((Y[k1] - Y[e]) * ty);
+      const float l2 = dx * dx + dy * dy;
+      const float inv = l2 > 0 ? 1.0f / l2 : 0.0f;
+      const float ftx = static_cast<float>(tx);
+      const int sxa = static_cast<int>(std::floor(std::min(X[e], X[k1]) - 0.5)) - bx;
+      int sxb = static_cast<int>(std::ceil(std::max(X[e], X[k1]) - 0.5)) + bx;
+      sxb = std::min(sxb, sxa + width - 1);
+      const int sya = static_cast<int>(std::floor(std::min(Y[e], Y[k1]) - 0.5)) - by;
+      const int syb = static_cast<int>(std::ceil(std::max(Y[e], Y[k1]) - 0.5)) + by;
+      const float px0 = static_cast<float>((sxa + 0.5 - X[e]) * tx);
+      const int wx0 = WrapIndex(sxa, width);
+      const int run1 = std::min(sxb - sxa + 1, width - wx0);
+      for (int iy = sya; iy <= syb; ++iy) {
+        const float py = static_cast<float>((iy + 0.5 - Y[e]) * ty);
+        float* row = d2.data() + static_cast<std::size_t>(WrapIndex(iy, height)) * width;
+        const float pyd = py * dy;
+        for (int part = 0; part < 2; ++part) {
+          const int from = part == 0 ? 0 : run1, to = part == 0 ? run1 : sxb - sxa + 1;
+          float* out = row + (part == 0 ? wx0 : 0) - from;
+          for (int i = from; i < to; ++i) {
+            const float px = px0 + static_cast<float>(i) * ftx;
+            const float u = std::min(1.0f, std::max(0.0f, (px * dx + pyd) * inv));
+            const float qx = px - u * dx, qy = py - u * dy;
+            const float q2 = qx * qx + qy * qy;
+            out[i] = std::min(out[i], q2);
+          }
+        }
+      }
+    }
+  }
+  f.sd.resize(npx);
+  for (std::size_t p = 0; p < npx; ++p) {
+    const float d = std::sqrt(d2[p]);
+    f.sd[p] = f.plate[p] != 0 ? d : -d;
+  }
+  return f;
+}
+
+// A wrapped box blur of integers over (2·rx + 1) × (2·ry + 1) texels, as sums (exact: the
+// result does not depend on where a row starts, so a turned surface blurs to the turned map).
+void BoxSumRows(const std::vector<int32_t>& in, int width, int height, int r,
+                std::vector<int32_t>* out) {
+  out->resize(in.size());
+  for (int y = 0; y < height; ++y) {
+    const int32_t* a = in.data() + static_cast<std::size_t>(y) * width;
+    int32_t* o = out->data() + static_cast<std::size_t>(y) * width;
+    int32_t sum = 0;
+    for (int k = -r; k <= r; ++k) sum += a[WrapIndex(k, width)];
+    int lo = WrapIndex(-r, width), hi = WrapIndex(r + 1, width);
+    for (int x = 0; x < width; ++x) {
+      o[x] = sum;
+      sum += a[hi] - a[lo];
+      if (++hi == width) hi = 0;
+      if (++lo == width) lo = 0;
     }
   }
 }
 
-// Chamfer (3-4, in thirds of a pixel) distances to the pixels holding 0, wrapped: two
-// forward-backward sweeps carry distances across the seams.
-void WrappedChamfer(int width, int height, std::vector<int>* dist_) {
-  std::vector<int>& dist = *dist_;
-  auto idx = [width, height](int x, int y) {
-    return static_cast<std::size_t>(WrapIndex(y, height)) * width + WrapIndex(x, width);
-  };
-  for (int sweep = 0; sweep < 2; ++sweep) {
-    for (int y = 0; y < height; ++y)
-      for (int x = 0; x < width; ++x) {
-        int& d = dist[idx(x, y)];
-        d = std::min({d, dist[idx(x - 1, y)] + 3, dist[idx(x, y - 1)] + 3,
-                      dist[idx(x - 1, y - 1)] + 4, dist[idx(x + 1, y - 1)] + 4});
-      }
-    for (int y = height - 1; y >= 0; --y)
-      for (int x = width - 1; x >= 0; --x) {
-        int& d = dist[idx(x, y)];
-        d = std::min({d, dist[idx(x + 1, y)] + 3, dist[idx(x, y + 1)] + 3,
-                      dist[idx(x + 1, y + 1)] + 4, dist[idx(x - 1, y + 1)] + 4});
-      }
+void BoxSumColumns(const std::vector<int32_t>& in, int width, int height, int r,
+                   std::vector<int32_t>* out) {
+  out->resize(in.size());
+  std::vector<int32_t> sum(width, 0);
+  for (int k = -r; k <= r; ++k) {
+    const int32_t* a = in.data() + static_cast<std::size_t>(WrapIndex(k, height)) * width;
+    for (int x = 0; x < width; ++x) sum[x] += a[x];
+  }
+  int lo = WrapIndex(-r, height), hi = WrapIndex(r + 1, height);
+  for (int y = 0; y < height; ++y) {
+    int32_t* o = out->data() + static_cast<std::size_t>(y) * width;
+    const int32_t* ah = in.data() + static_cast<std::size_t>(hi) * width;
+    const int32_t* al = in.data() + static_cast<std::size_t>(lo) * width;
+    for (int x = 0; x < width; ++x) {
+      o[x] = sum[x];
+      sum[x] += ah[x] - al[x];
+    }
+    if (++hi == height) hi = 0;
+    if (++lo == height) lo = 0;
   }
 }
 
-constexpr int kFar = 1 << 20;
-// The 2-layer model's plates: grey-brown.
-constexpr double kPlateRgb[3] = {0.40, 0.34, 0.28};
+// Sums v (in place, |v| ≤ vmax) over a box rx × ry twice (a tent), in integers: a value c
+// everywhere comes out c·n²/k, n = (2rx+1)(2ry+1), k the returned divisor: 1, or n when n²·vmax
+// would overflow (then the first pass's sums are divided by n).
+int64_t TentSum(std::vector<int32_t>* v, int width, int height, int rx, int ry, int64_t vmax) {
+  const int64_t n = static_cast<int64_t>(2 * rx + 1) * (2 * ry + 1);
+  const bool divide = n * n * vmax >= (int64_t{1} << 31);
+  std::vector<int32_t> tmp;
+  BoxSumRows(*v, width, height, rx, &tmp);
+  BoxSumColumns(tmp, width, height, ry, v);
+  if (divide)
+    for (int32_t& x : *v) x = static_cast<int32_t>(x / n);
+  BoxSumRows(*v, width, height, rx, &tmp);
+  BoxSumColumns(tmp, width, height, ry, v);
+  return divide ? n : 1;
+}
 
-// The four maps from a wrapped height field h (cm; `top` its highest level) and what covers each
-// texel: colour(p, &rgb, &jitter) is true on a plate (rgb its layer's colour, jitter its per-plate
-// factor) and false on the crack floor. The one texel loop of both models' maps.
-template <typename PlateColour>
-void FillMaps(int width, int height, const std::vector<double>& h, double top, PlateColour colour,
-              BarkMaps* maps) {
-  auto idx = [width, height](int x, int y) {
-    return static_cast<std::size_t>(WrapIndex(y, height)) * width + WrapIndex(x, width);
-  };
+// Periodic value noise over the image (gx × gy cells, bilinear, wraps both ways), as a table.
+std::vector<float> PeriodicNoise(int width, int height, int gx, int gy, uint32_t salt) {
+  std::vector<float> lattice(static_cast<std::size_t>(gx) * gy);
+  for (int j = 0; j < gy; ++j)
+    for (int i = 0; i < gx; ++i)
+      lattice[static_cast<std::size_t>(j) * gx + i] =
+          Hash01(static_cast<uint32_t>(i) + salt, static_cast<uint32_t>(j));
+  std::vector<int> cx(width);
+  std::vector<float> fx(width);
+  for (int x = 0; x < width; ++x) {
+    const float f =
+        (static_cast<float>(x) + 0.5f) * static_cast<float>(gx) / static_cast<float>(width);
+    cx[x] = static_cast<int>(f);
+    fx[x] = f - static_cast<float>(cx[x]);
+  }
+  std::vector<float> out(static_cast<std::size_t>(width) * height);
+  for (int y = 0; y < height; ++y) {
+    const float f =
+        (static_cast<float>(y) + 0.5f) * static_cast<float>(gy) / static_cast<float>(height);
+    const int cy = static_cast<int>(f);
+    const float ty = f - static_cast<float>(cy);
+    const float* r0 = lattice.data() + static_cast<std::size_t>(cy % gy) * gx;
+    const float* r1 = lattice.data() + static_cast<std::size_t>((cy + 1) % gy) * gx;
+    float* o = out.data() + static_cast<std::size_t>(y) * width;
+    for (int x = 0; x < width; ++x) {
+      const int c0 = cx[x] % gx, c1 = (cx[x] + 1) % gx;
+      const float a = r0[c0] + (r0[c1] - r0[c0]) * fx[x];
+      const float b = r1[c0] + (r1[c1] - r1[c0]) * fx[x];
+      o[x] = a + (b - a) * ty;
+    }
+  }
+  return out;
+}
+
+// One layer as the maps draw it: its field, its top above the inner layer (cm), its palette and
+// its plates' jitter salt.
+struct DrawnLayer {
+  LayerField field;
+  std::vector<int32_t> pillow;  // tent-summed plate cover, 0..pillow_full
+  double top = 0;
+  const double* colour = nullptr;
+  uint32_t salt = 7u;
+};
+
+// The shape of a plate's top (a fraction of its layer's top) from its signed distance to the
+// outline (cm) and its pillow (0..1): a crack wall over w_wall (the crack widens into the plate,
+// so its width and depth follow the broken springs), the plate's bulge (its middle stands highest)
+// and the curl of its edges (a lip just inside the wall).
+struct Relief {
+  float wall = 0;  // the wall's width (cm)
+  float lip = 0;   // the lip's half-width (cm)
+  float bulge = 0.45f, curl = 0.15f;
+  float Of(float sd, float pillow) const {
+    const float u = Smooth((sd + 0.1f * wall) / wall);
+    float h = u * (1.0f - bulge * (1.0f - pillow));
+    const float v = (sd - wall) / lip;
+    if (v > -1.0f && v < 1.0f) h += curl * u * (1.0f - v * v) * (1.0f - v * v);
+    return std::min(1.0f, h);
+  }
+};
+
+// Inner layer (crack floor), the plates' wall colour (fresh cork in a furrow) and the weathered
+// grey their old tops take.
+constexpr float kFloorRgb[3] = {0.30f, 0.16f, 0.09f};
+constexpr float kWallRgb[3] = {0.46f, 0.29f, 0.18f};
+constexpr float kWeatheredRgb[3] = {0.56f, 0.54f, 0.50f};
+
+// The four maps from the drawn layers (outermost first): height = the highest layer's relief
+// (each layer a solid from the inner layer up to its top, so a crack shows what lies beneath);
+// normal from the height plus a fibre grain along the trunk (the grain is in the normal and the
+// colour, not the height map); colour by layer, plate (age jitter), depth and weathering; ORM.
+void FillMaps(int width, int height, const std::vector<DrawnLayer>& layers, const Relief& relief,
+              int32_t pillow_full, BarkMaps* maps) {
+  const std::size_t npx = static_cast<std::size_t>(width) * height;
+  const double top = layers.front().top;
+  const float inv_top = top > 0 ? static_cast<float>(1.0 / top) : 0.0f;
+  const float inv_full = 1.0f / static_cast<float>(pillow_full);
+  std::vector<float> hn(npx);          // height / top
+  std::vector<uint8_t> level(npx);     // 0 the inner layer, else layer index + 1
+  std::vector<float> face(npx, 0.0f);  // 0 at a wall's foot .. 1 on the plate's top
+  const int nl = static_cast<int>(layers.size());
+  for (std::size_t p = 0; p < npx; ++p) {
+    float best = 0;
+    int lv = 0;
+    float fc = 0;
+    for (int r = 0; r < nl; ++r) {
+      const DrawnLayer& d = layers[r];
+      const float sd = d.field.sd[p];
+      if (sd <= -0.1f * relief.wall) continue;
+      const float rel = relief.Of(sd, static_cast<float>(d.pillow[p]) * inv_full);
+      const float h = rel * static_cast<float>(d.top) * inv_top;
+      if (h > best) {
+        best = h;
+        lv = r + 1;
+        fc = Smooth((sd + 0.1f * relief.wall) / relief.wall);
+      }
+    }
+    hn[p] = best;
+    level[p] = static_cast<uint8_t>(lv);
+    face[p] = fc;
+  }
+  // Fibres: fine cells across the trunk, long along it; a coarser mottling.
+  const std::vector<float> fibre =
+      PeriodicNoise(width, height, std::max(4, width / 3), std::max(2, height / 24), 17u);
+  const std::vector<float> mottle =
+      PeriodicNoise(width, height, std::max(2, width / 48), std::max(2, height / 64), 91u);
+  // Each plate's age and jitter, looked up by plate id.
+  std::vector<std::vector<float>> age(nl), jitter(nl);
+  for (int r = 0; r < nl; ++r) {
+    const DrawnLayer& d = layers[r];
+    const int32_t top_id = *std::max_element(d.field.plate.begin(), d.field.plate.end());
+    age[r].resize(static_cast<std::size_t>(top_id) + 1);
+    jitter[r].resize(age[r].size());
+    for (int32_t id = 0; id <= top_id; ++id) {
+      age[r][id] = Hash01(static_cast<uint32_t>(id), d.salt);
+      jitter[r][id] = 0.75f + 0.45f * Hash01(static_cast<uint32_t>(id), d.salt + 1u);
+    }
+  }
   maps->height = image::MakeGray16(width, height);
   maps->base_colour = image::MakeRgba8(width, height);
   maps->normal = image::MakeRgba8(width, height);
   maps->orm = image::MakeRgba8(width, height);
-  const int gx = std::max(1, width / 4), gy = std::max(1, height / 32);
+  // Slopes per unit of hn and of the grain, per texel across (x) and along (row).
+  const float sx = static_cast<float>(top / (2.0 * maps->texel_cm_x));
+  const float sy = static_cast<float>(top / (2.0 * maps->texel_cm_y));
+  const float grain_cm = 0.012f;  // the fibres' relief
+  const float gsx = static_cast<float>(grain_cm / (2.0 * maps->texel_cm_x));
+  const float gsy = static_cast<float>(grain_cm / (2.0 * maps->texel_cm_y));
   for (int y = 0; y < height; ++y) {
+    const std::size_t row = static_cast<std::size_t>(y) * width;
+    const std::size_t up = static_cast<std::size_t>(y == 0 ? height - 1 : y - 1) * width;
+    const std::size_t down = static_cast<std::size_t>(y == height - 1 ? 0 : y + 1) * width;
+    uint16_t* hrow = &maps->height.At(0, y);
     for (int x = 0; x < width; ++x) {
-      const std::size_t p = idx(x, y);
-      const double hn = top > 0 ? h[p] / top : 0.0;
-      maps->height.At(x, y) = static_cast<uint16_t>(std::lround(std::min(1.0, hn) * 65535.0));
-      // Normal from central differences (wrapped); image rows run down, +y of the normal is up.
-      const double dhdx = (h[idx(x + 1, y)] - h[idx(x - 1, y)]) / (2.0 * maps->texel_cm_x);
-      const double dhdrow = (h[idx(x, y + 1)] - h[idx(x, y - 1)]) / (2.0 * maps->texel_cm_y);
-      double nx = -dhdx, ny = dhdrow, nz = 1.0;
-      const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
+      const std::size_t p = row + x;
+      const int xl = x == 0 ? width - 1 : x - 1, xr = x == width - 1 ? 0 : x + 1;
+      const float h = hn[p];
+      hrow[x] = static_cast<uint16_t>(static_cast<int>(std::min(1.0f, h) * 65535.0f + 0.5f));
+      // The grain shows on plates' tops, fading down the walls.
+      const float on = level[p] ? face[p] : 0.4f;
+      const float g = fibre[p];
+      const float dgx = (fibre[row + xr] - fibre[row + xl]) * gsx * on;
+      const float dgy = (fibre[down + x] - fibre[up + x]) * gsy * on;
+      const float dhdx = (hn[row + xr] - hn[row + xl]) * sx + dgx;
+      const float dhdrow = (hn[down + x] - hn[up + x]) * sy + dgy;
+      // Image rows run down, +y of the normal is up.
+      const float nx = -dhdx, ny = dhdrow;
+      const float inv = 1.0f / std::sqrt(nx * nx + ny * ny + 1.0f);
       unsigned char* n = maps->normal.At(x, y);
-      n[0] = Byte(0.5 + 0.5 * nx / len);
-      n[1] = Byte(0.5 + 0.5 * ny / len);
-      n[2] = Byte(0.5 + 0.5 * nz / len);
+      n[0] = Byte(0.5f + 0.5f * nx * inv);
+      n[1] = Byte(0.5f + 0.5f * ny * inv);
+      n[2] = Byte(0.5f + 0.5f * inv);
       n[3] = 255;
-      // Colour: plates their layer's colour × a per-plate jitter × the grain; cracks the inner
-      // layer's red-brown.
-      const double grain = 0.8 + 0.25 * BarkGrain(x, y, width, height, gx, gy, 17u) +
-                           0.15 * BarkGrain(x, y, width, height, gx * 2, gy * 2, 91u);
-      unsigned char* c = maps->base_colour.At(x, y);
-      const double* rgb = nullptr;
-      double jitter = 1;
-      const bool on_plate = colour(p, &rgb, &jitter);
-      if (on_plate) {
-        const double f = jitter * grain * (0.75 + 0.25 * hn);
-        c[0] = Byte(rgb[0] * f);
-        c[1] = Byte(rgb[1] * f);
-        c[2] = Byte(rgb[2] * f);
+      const float m = mottle[p];
+      const float grain = 0.86f + 0.22f * g;
+      float rgb[3];
+      float rough;
+      if (level[p]) {
+        const int r = level[p] - 1;
+        const DrawnLayer& d = layers[r];
+        const int32_t id = d.field.plate[p];
+        // A plate's age: older plates (and a plate's high middle) weather to grey.
+        const float age_p = age[r][id];
+        const float jit = jitter[r][id];
+        const float pil = static_cast<float>(d.pillow[p]) * inv_full;
+        const float weather = std::min(1.0f, (0.15f + 0.5f * age_p) * pil * (0.6f + 0.8f * m));
+        const float fc = face[p];
+        for (int k = 0; k < 3; ++k) {
+          const float plate = static_cast<float>(d.colour[k]) * jit;
+          const float topc = plate + (kWeatheredRgb[k] - plate) * weather;
+          rgb[k] = (kWallRgb[k] + (topc - kWallRgb[k]) * fc) * grain * (0.8f + 0.2f * pil);
+        }
+        rough = 0.78f + 0.14f * (1.0f - fc) + 0.06f * g;
       } else {
-        const double f = 0.8 * grain;
-        c[0] = Byte(0.42 * f);
-        c[1] = Byte(0.20 * f);
-        c[2] = Byte(0.11 * f);
+        for (int k = 0; k < 3; ++k) rgb[k] = kFloorRgb[k] * (0.85f + 0.3f * m);
+        rough = 0.95f;
       }
+      // Cavity: deep texels darker.
+      const float cav = 0.68f + 0.32f * std::min(1.0f, h * 1.6f);
+      unsigned char* c = maps->base_colour.At(x, y);
+      c[0] = Byte(rgb[0] * cav);
+      c[1] = Byte(rgb[1] * cav);
+      c[2] = Byte(rgb[2] * cav);
       c[3] = 255;
       unsigned char* o = maps->orm.At(x, y);
-      o[0] = Byte(0.35 + 0.65 * hn);       // occlusion: crack depth
-      o[1] = Byte(on_plate ? 0.8 : 0.95);  // roughness
-      o[2] = 0;                            // metallic
+      o[0] = Byte(0.3f + 0.7f * std::min(1.0f, h * 1.25f));  // occlusion: crack depth
+      o[1] = Byte(rough);
+      o[2] = 0;  // metallic
       o[3] = 255;
     }
   }
+}
+
+// The 2-layer model's plates: grey-brown.
+constexpr double kPlateRgb[3] = {0.40, 0.34, 0.28};
+
+// Draws layers (outermost first; each its surface, regions, anchor scale, top, colour) at the
+// axial growth factor s_z into maps spanning the outermost layer's circumference.
+BarkMaps DrawLayers(const Lattice& L, const std::vector<MapLayer>& layers, double s_z, int width) {
+  const double cf = L.circumference() * layers.front().s_theta, hf = L.height() * s_z;
+  const int height = MapHeightPx(width, cf, hf);
+  BarkMaps maps;
+  maps.texel_cm_x = cf / width;
+  maps.texel_cm_y = hf / height;
+  const double px_y = height / hf;
+  Relief relief;
+  relief.wall = static_cast<float>(0.6 * L.l_o);
+  relief.lip = static_cast<float>(0.3 * L.l_o);
+  const double band = relief.wall + relief.lip + 0.45 * L.l_o;
+  // The pillow: plate cover blurred over about one spring length.
+  const int rx = std::max(1, static_cast<int>(std::lround(0.5 * L.l_o / maps.texel_cm_x)));
+  const int ry = std::max(1, static_cast<int>(std::lround(0.5 * L.l_o / maps.texel_cm_y)));
+  const int64_t n = static_cast<int64_t>(2 * rx + 1) * (2 * ry + 1);
+  int64_t pillow_div = 1;
+  const int sx = std::max(1, static_cast<int>(std::lround(0.4 * L.l_o / maps.texel_cm_x)));
+  const int sy = std::max(1, static_cast<int>(std::lround(0.4 * L.l_o / maps.texel_cm_y)));
+  const int64_t ns = static_cast<int64_t>(2 * sx + 1) * (2 * sy + 1);
+  std::vector<DrawnLayer> drawn(layers.size());
+  for (std::size_t r = 0; r < layers.size(); ++r) {
+    const MapLayer& m = layers[r];
+    const double px_x = width / (L.circumference() * m.s_theta);
+    DrawnLayer& d = drawn[r];
+    d.field = DrawLayer(L, *m.surface, *m.tri_region, m.s_theta, s_z, px_x, px_y, hf, width, height,
+                        band);
+    // The outline's lattice zigzag rounded: the distance tent-blurred over about 0.4·L_o (in
+    // integers of 1/1024 cm, so the blur is exact and a turned surface gives the turned map).
+    std::vector<int32_t> q(d.field.sd.size());
+    for (std::size_t p = 0; p < q.size(); ++p)
+      q[p] = static_cast<int32_t>(std::lround(d.field.sd[p] * 1024.0f));
+    const int64_t qmax = static_cast<int64_t>(std::ceil(band * 1024.0)) + 1;
+    const int64_t k = TentSum(&q, width, height, sx, sy, qmax);
+    const float per =
+        static_cast<float>(static_cast<double>(k) / (1024.0 * static_cast<double>(ns * ns)));
+    for (std::size_t p = 0; p < q.size(); ++p) d.field.sd[p] = static_cast<float>(q[p]) * per;
+    std::vector<int32_t>().swap(q);  // the peak stays under EstimateBarkRun's 48 B a texel
+    d.pillow.resize(d.field.plate.size());
+    for (std::size_t p = 0; p < d.pillow.size(); ++p) d.pillow[p] = d.field.plate[p] ? 1 : 0;
+    pillow_div = TentSum(&d.pillow, width, height, rx, ry, 1);
+    d.top = m.top;
+    d.colour = m.colour;
+    d.salt = 7u + 131u * static_cast<uint32_t>(layers.size() - r);
+  }
+  FillMaps(width, height, drawn, relief, static_cast<int32_t>(n * n / pillow_div), &maps);
+  return maps;
 }
 
 }  // namespace
@@ -204,99 +489,19 @@ int MapHeightPx(int width, double circumference_cm, double height_cm) {
 
 BarkMaps DrawBarkMaps(const Lattice& L, const Surface& s, const CrackMeasures& cracks,
                       double s_theta, double s_z, double D, int width) {
-  const double cf = L.circumference() * s_theta, hf = L.height() * s_z;
-  const int height = MapHeightPx(width, cf, hf);
-  BarkMaps maps;
-  maps.texel_cm_x = cf / width;
-  maps.texel_cm_y = hf / height;
-  const double px_x = width / cf, px_y = height / hf;
-  // Plates: each intact triangle's pixels take its region's id + 1; 0 is crack.
-  std::vector<int32_t> plate(static_cast<std::size_t>(width) * height, 0);
-  RasterPlates(L, s, s_theta, s_z, px_x, px_y, hf, width, height,
-               [&](std::size_t p, int t) { plate[p] = cracks.tri_region[t] + 1; });
-  // Distance to the nearest crack pixel.
-  const std::size_t npx = plate.size();
-  std::vector<int> dist(npx);
-  for (std::size_t p = 0; p < npx; ++p) dist[p] = plate[p] == 0 ? 0 : kFar;
-  WrappedChamfer(width, height, &dist);
-  // Height (cm): plate tops at D, bevelled by b = 0.3·D within w = 0.5·L_o of a crack; cracks at
-  // the inner layer's top (0).
-  const double texel = std::sqrt(maps.texel_cm_x * maps.texel_cm_y);
-  const double bevel = 0.3 * D, reach = 0.5 * L.l_o;
-  std::vector<double> h(npx);
-  for (std::size_t p = 0; p < npx; ++p) {
-    if (plate[p] == 0) {
-      h[p] = 0;
-      continue;
-    }
-    const double delta = dist[p] / 3.0 * texel;
-    h[p] = D - bevel * std::max(0.0, 1.0 - delta / reach);
-  }
-  FillMaps(
-      width, height, h, D,
-      [&](std::size_t p, const double** rgb, double* jitter) {
-        if (plate[p] == 0) return false;
-        *rgb = kPlateRgb;
-        *jitter = 0.85 + 0.3 * Hash01(static_cast<uint32_t>(plate[p]), 7u);
-        return true;
-      },
-      &maps);
-  return maps;
+  MapLayer m;
+  m.surface = &s;
+  m.tri_region = &cracks.tri_region;
+  m.s_theta = s_theta;
+  m.top = D;
+  m.thickness = D;
+  for (int k = 0; k < 3; ++k) m.colour[k] = kPlateRgb[k];
+  return DrawLayers(L, {m}, s_z, width);
 }
 
 BarkMaps DrawLayeredMaps(const Lattice& L, const std::vector<MapLayer>& layers, double s_z,
                          int width) {
-  const int nl = static_cast<int>(layers.size());
-  const double cf = L.circumference() * layers.front().s_theta, hf = L.height() * s_z;
-  const int height = MapHeightPx(width, cf, hf);
-  BarkMaps maps;
-  maps.texel_cm_x = cf / width;
-  maps.texel_cm_y = hf / height;
-  const double px_y = height / hf;
-  // Levels: 0 the inner layer, nl the outermost; drawn from the innermost layer outward.
-  const std::size_t npx = static_cast<std::size_t>(width) * height;
-  std::vector<uint8_t> level(npx, 0);
-  std::vector<int32_t> plate(npx, 0);
-  for (int r = nl - 1; r >= 0; --r) {
-    const MapLayer& m = layers[r];
-    const double px_x = width / (L.circumference() * m.s_theta);
-    const uint8_t lv = static_cast<uint8_t>(nl - r);
-    RasterPlates(L, *m.surface, m.s_theta, s_z, px_x, px_y, hf, width, height,
-                 [&](std::size_t p, int t) {
-                   level[p] = lv;
-                   plate[p] = (*m.tri_region)[t] + 1;
-                 });
-  }
-  // Per level, the distance to the nearest pixel of a lower level (the bevel of its edges).
-  std::vector<std::vector<int>> dist(nl + 1);
-  for (int lv = 1; lv <= nl; ++lv) {
-    dist[lv].resize(npx);
-    for (std::size_t p = 0; p < npx; ++p) dist[lv][p] = level[p] < lv ? 0 : kFar;
-    WrappedChamfer(width, height, &dist[lv]);
-  }
-  const double texel = std::sqrt(maps.texel_cm_x * maps.texel_cm_y);
-  const double reach = 0.5 * L.l_o;
-  const double top = layers.front().top;
-  std::vector<double> h(npx);
-  for (std::size_t p = 0; p < npx; ++p) {
-    if (level[p] == 0) {
-      h[p] = 0;
-      continue;
-    }
-    const MapLayer& m = layers[nl - level[p]];
-    const double delta = dist[level[p]][p] / 3.0 * texel;
-    h[p] = m.top - 0.3 * m.thickness * std::max(0.0, 1.0 - delta / reach);
-  }
-  FillMaps(
-      width, height, h, top,
-      [&](std::size_t p, const double** rgb, double* jitter) {
-        if (level[p] == 0) return false;
-        *rgb = layers[nl - level[p]].colour;
-        *jitter = 0.85 + 0.3 * Hash01(static_cast<uint32_t>(plate[p]), 7u + 131u * level[p]);
-        return true;
-      },
-      &maps);
-  return maps;
+  return DrawLayers(L, layers, s_z, width);
 }
 
 }  // namespace niwa::bark

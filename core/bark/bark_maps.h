@@ -1,13 +1,15 @@
-// The bark maps (../shared/specs/bark.md §1.9; Fig. 4 of paper 003 is not in our copy): the
-// surface layer's plates (its triangles with three intact springs, at their deformed positions)
-// drawn over the layer beneath (a crack shows the inner layer), as base colour, normal (tangent
-// space, OpenGL: +y is up the image), 16-bit height and occlusion/roughness/metallic (glTF's
-// ORM packing), exactly tileable around and along the trunk (the lattice is a torus; every pixel
-// and neighbour lookup wraps). Width a power of two in [256, 4096]; height the power of two
-// nearest width·H/C (so texels are near square). The 4-layer model's maps (DrawLayeredMaps) show
-// the visible layer: S's plates, and where S is cracked or peeled M1's plates, then M2's, then the
-// inner layer, each in its palette (S grey-brown, M1 red-brown, M2 light tan). Does not: write
-// files (image/png.h) or know a tree's UVs.
+// The bark maps (../shared/specs/bark.md §1.9, with the relief of docs/bark-model.md item 9; Fig.
+// 4 of paper 003 is not in our copy): the surface layer's plates (its triangles with three intact
+// springs, at their deformed positions) drawn over the layer beneath (a crack shows the inner
+// layer), with crack walls from the signed distance to the plates' outline, a bulge and curl per
+// plate, as base colour, normal (tangent space, OpenGL: +y is up the image; with a fibre grain
+// along the trunk), 16-bit height and occlusion/roughness/metallic (glTF's ORM packing), exactly
+// tileable around and along the trunk (the lattice is a torus; every pixel and neighbour lookup
+// wraps). Width a power of two in [256, 4096]; height the power of two nearest width·H/C (so texels
+// are near square). The 4-layer model's maps (DrawLayeredMaps) show the visible layer: S's plates,
+// and where S is cracked or peeled M1's plates, then M2's, then the inner layer, each in its
+// palette (S grey-brown, M1 red-brown, M2 light tan). Does not: write files (image/png.h) or know a
+// tree's UVs.
 #pragma once
 
 #include "bark/lattice.h"
@@ -37,14 +39,14 @@ struct MapLayer {
   const std::vector<int>* tri_region = nullptr;  // plate id of each triangle (MeasureCracks)
   double s_theta = 1;    // the layer's anchor scale around the trunk (its mid-radius / R_o)
   double top = 0;        // its top above the inner layer (cm)
-  double thickness = 0;  // its radial thickness (cm): the bevel is 0.3 of it
+  double thickness = 0;  // its radial thickness (cm)
   double colour[3] = {0, 0, 0};
 };
 
 // The maps of layers (outermost first) over the inner layer, at the axial growth factor s_z.
 // The map spans the outermost layer's circumference (texel sizes from it); every layer is drawn
 // by angle, so its plates sit over the same (i, j) of the others. Height 65535 = the outermost
-// top; the bevel of each level is its distance to a pixel of a lower level.
+// top; each layer is a solid from the inner layer up to its top, so the highest one shows.
 BarkMaps DrawLayeredMaps(const Lattice& lattice, const std::vector<MapLayer>& layers, double s_z,
                          int width);
 

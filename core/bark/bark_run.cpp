@@ -59,7 +59,7 @@ Estimate EstimateBarkRun(const BarkState& state) {
       static_cast<double>(GrowthSteps(state, m)) + p.GetInt(BarkParam::kSettleSteps);
   const double width = p.GetInt(BarkParam::kMapSize);
   const double pixels = width * 4096;      // the tallest a map can be
-  const double map_passes = four ? 2 : 1;  // three chamfer passes instead of one, three rasters
+  const double map_passes = four ? 2 : 1;  // three layers' rasters, distances and pillows
   Estimate e;
   e.memory_bytes = layers * nodes * kBytesPerNode + map_passes * pixels * kBytesPerMapPixel;
   e.seconds = 4 * layers * nodes * steps * kSecondsPerSpringStep +
