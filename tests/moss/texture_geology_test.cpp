@@ -6,6 +6,9 @@
 
 #include <array>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <utility>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -242,6 +245,54 @@ TEST(MossTextureGeology, HostileTexturesAreRefusedNamingTheFile) {
   EXPECT_NE(scene.status().message().find("material 0 'ground' baseColorTexture"),
             std::string::npos)
       << scene.status().Line();
+}
+
+// A .gltf's image as a file beside it: read from disk; a uri leaving the folder or naming a
+// missing file is refused naming the .gltf.
+TEST(MossTextureGeology, AGltfsImageFileBesideIt) {
+  const std::string dir = ::testing::TempDir() + "niwa_texture_gltf";
+  std::filesystem::create_directories(dir);
+  const std::string png = Png(2, 1, {0x4A, 0x33, 0x22, 255, 0xC2, 0x9A, 0x5B, 255});
+  std::ofstream(dir + "/tex.png", std::ios::binary) << png;
+  // The .glb's JSON with its binary chunk as a data: URI buffer and the image as a uri.
+  auto gltf_with = [&](const std::string& uri) {
+    const std::string glb = TexturedTriangleGlb("", {{"uri", uri}});
+    uint32_t json_length = 0;
+    std::memcpy(&json_length, glb.data() + 12, 4);
+    nlohmann::json j = nlohmann::json::parse(glb.substr(20, json_length));
+    const std::string bin = glb.substr(20 + json_length + 8);
+    static const char* kB64 = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string b64;
+    for (std::size_t i = 0; i < bin.size(); i += 3) {
+      uint32_t n = static_cast<unsigned char>(bin[i]) << 16;
+      if (i + 1 < bin.size()) n |= static_cast<unsigned char>(bin[i + 1]) << 8;
+      if (i + 2 < bin.size()) n |= static_cast<unsigned char>(bin[i + 2]);
+      b64 += kB64[(n >> 18) & 63];
+      b64 += kB64[(n >> 12) & 63];
+      b64 += i + 1 < bin.size() ? kB64[(n >> 6) & 63] : '=';
+      b64 += i + 2 < bin.size() ? kB64[n & 63] : '=';
+    }
+    j["buffers"][0]["uri"] = "data:application/octet-stream;base64," + b64;
+    std::ofstream(dir + "/t.gltf") << j.dump();
+    io::MeshReadStats read;
+    Result<geom::TriMesh> mesh = io::ReadMeshFile(dir + "/t.gltf", &read);
+    return std::make_pair(std::move(mesh), read);
+  };
+  auto [mesh, read] = gltf_with("tex.png");
+  ASSERT_TRUE(mesh.ok()) << mesh.status().Line();
+  EXPECT_EQ(read.materials[0].base_color_image, 0);
+  EXPECT_EQ(read.images[0].width, 2);
+  EXPECT_EQ(read.images[0].bytes, png);
+  auto [outside, r1] = gltf_with("../tex.png");
+  ASSERT_FALSE(outside.ok());
+  EXPECT_EQ(outside.status().field(), "t.gltf");
+  EXPECT_NE(outside.status().message().find("must be a file beside the .gltf"), std::string::npos)
+      << outside.status().Line();
+  auto [missing, r2] = gltf_with("gone.png");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_EQ(missing.status().field(), "t.gltf");
+  EXPECT_NE(missing.status().message().find("gone.png"), std::string::npos)
+      << missing.status().Line();
 }
 
 }  // namespace
