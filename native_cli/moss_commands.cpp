@@ -34,15 +34,24 @@ using moss::MossParam;
 
 // The one table of the moss commands' names for state and cell fields (run/field_names.h).
 const run::FieldNames kFieldFlags = {
-    {"preset", "--preset"},     {"geology", "--geology"},
-    {"theta", "--theta"},       {"S", "--S"},
-    {"m_over_M", "--mM"},       {"V_sky", "--V"},
-    {"species", "--species"},   {"T_s", "--Ts"},
-    {"rh_s", "--rhs"},          {"days", "--days"},
-    {"seed", "--seed"},         {"scene", "--scene"},
-    {"mesh", "--mesh"},         {"photons", "--photons"},
-    {"indirect", "--indirect"}, {"map", "--map"},
-    {"weather", "--weather"},   {"tree", "--tree-preset"},
+    {"preset", "--preset"},
+    {"geology", "--geology"},
+    {"theta", "--theta"},
+    {"S", "--S"},
+    {"m_over_M", "--mM"},
+    {"V_sky", "--V"},
+    {"species", "--species"},
+    {"T_s", "--Ts"},
+    {"rh_s", "--rhs"},
+    {"days", "--days"},
+    {"seed", "--seed"},
+    {"scene", "--scene"},
+    {"mesh", "--mesh"},
+    {"photons", "--photons"},
+    {"indirect", "--indirect"},
+    {"map", "--map"},
+    {"weather", "--weather"},
+    {"tree", "--tree-preset"},
     {"tree_years", "--tree-years"},
 };
 constexpr FlagRange kDaysRange{0, moss::kMaxMossDays, true};
@@ -174,10 +183,11 @@ void AddRunOptions(CLI::App* cmd, RunOptions* o, bool with_days) {
       "Land: a Niwa tree ('niwa presets tree') on a square of humus; moss on bark and ground");
   AddNumberFlag(cmd, "--tree-years", &o->tree_years, kTreeYearsRange,
                 "Age of that tree, " + RangeHelp(kTreeYearsRange) + " (default 10)");
-  CLI::Option* mesh = AddInputFlag(cmd, "--mesh", &o->mesh,
-               "Land mesh instead of a scene: .glb, .gltf or .obj (geology from material names "
-               "with humus, sand or asphalt, else the base colour texture at each cell's UV times "
-               "COLOR_0 times the base colour; not in the link)");
+  CLI::Option* mesh = AddInputFlag(
+      cmd, "--mesh", &o->mesh,
+      "Land mesh instead of a scene: .glb, .gltf or .obj (geology from material names "
+      "with humus, sand or asphalt, else the base colour texture at each cell's UV times "
+      "COLOR_0 times the base colour; not in the link)");
   Excludes(mesh, tree);  // --mesh with --scene: refused by the run, naming --mesh
   Excludes(scene, tree);
   if (with_days)
@@ -217,8 +227,8 @@ moss::MossRun StartRun(const RunOptions& o, const moss::MossState& state) {
   if (!o.tree_preset.empty()) {
     const Budget budget = ResolveBudget(o.budget);
     std::string truncated_by;
-    Result<moss::MossScene> land = compose::MossTreeLand(o.tree_preset, o.tree_years, budget,
-                                                         "--tree-years", &truncated_by);
+    Result<moss::MossScene> land =
+        compose::MossTreeLand(o.tree_preset, o.tree_years, budget, "--tree-years", &truncated_by);
     if (!land.ok()) Fail(run::RenameField(land.status(), kFieldFlags));
     ReportTruncated(truncated_by);
     const std::string name = land->name;

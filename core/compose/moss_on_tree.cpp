@@ -31,10 +31,9 @@ Result<moss::MossScene> MossTreeLand(const std::string& preset, double years, co
   scene.region.assign(bark_triangles, 0);
   const float half = static_cast<float>(std::max(kMossGroundMinHalf, reach + kMossGroundMargin));
   const uint32_t base = static_cast<uint32_t>(scene.mesh.positions.size());
-  scene.mesh.positions.insert(scene.mesh.positions.end(), {{-half, 0.0f, -half},
-                                                           {half, 0.0f, -half},
-                                                           {half, 0.0f, half},
-                                                           {-half, 0.0f, half}});
+  scene.mesh.positions.insert(
+      scene.mesh.positions.end(),
+      {{-half, 0.0f, -half}, {half, 0.0f, -half}, {half, 0.0f, half}, {-half, 0.0f, half}});
   // Counter-clockwise seen from above: normal +y.
   scene.mesh.indices.insert(scene.mesh.indices.end(),
                             {base, base + 3, base + 2, base, base + 2, base + 1});

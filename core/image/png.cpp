@@ -326,8 +326,8 @@ ImageFormat SniffImageFormat(const unsigned char* data, std::size_t size) {
   if (size >= 3 && data[0] == 0xFF && data[1] == 0xD8 && data[2] == 0xFF) return ImageFormat::kJpeg;
   if (size >= 12 && std::memcmp(data, "RIFF", 4) == 0 && std::memcmp(data + 8, "WEBP", 4) == 0)
     return ImageFormat::kWebp;
-  static const unsigned char kKtx2[12] = {0xAB, 'K', 'T', 'X', ' ', '2', '0', 0xBB, 0x0D, 0x0A,
-                                          0x1A, 0x0A};
+  static const unsigned char kKtx2[12] = {0xAB, 'K',  'T',  'X',  ' ',  '2',
+                                          '0',  0xBB, 0x0D, 0x0A, 0x1A, 0x0A};
   if (size >= 12 && std::memcmp(data, kKtx2, 12) == 0) return ImageFormat::kKtx2;
   return ImageFormat::kUnknown;
 }
@@ -367,9 +367,9 @@ Result<Rgba8Image> DecodeRgba8PngOrJpeg(const unsigned char* data, std::size_t s
   if (!declared.ok()) return declared.status();
   const bool sides = declared->width >= 1 && declared->height >= 1 &&
                      declared->width <= kMaxPngSide && declared->height <= kMaxPngSide;
-  if (!sides || static_cast<std::size_t>(declared->width) *
-                        static_cast<std::size_t>(declared->height) >
-                    max_pixels) {
+  if (!sides ||
+      static_cast<std::size_t>(declared->width) * static_cast<std::size_t>(declared->height) >
+          max_pixels) {
     return Status::Error("", std::to_string(declared->width) + " x " +
                                  std::to_string(declared->height) +
                                  " pixels; width and height must be in [1, 65535] with at most " +

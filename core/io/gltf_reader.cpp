@@ -46,13 +46,14 @@ std::string OneLine(std::string text) {
   return lead == std::string::npos ? "" : text.substr(lead);
 }
 
-// Images are not decoded here: a data: URI image's bytes are kept by index (tinygltf hands them over
-// only through this callback; a buffer view image is read later with its bounds checked).
+// Images are not decoded here: a data: URI image's bytes are kept by index (tinygltf hands them
+// over only through this callback; a buffer view image is read later with its bounds checked).
 bool KeepUriImage(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
                   const unsigned char* bytes, int size, void* user) {
   if (image->bufferView != -1 || index < 0 || size < 0) return true;
   auto* kept = static_cast<std::map<int, std::string>*>(user);
-  (*kept)[index] = std::string(reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(size));
+  (*kept)[index] =
+      std::string(reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(size));
   return true;
 }
 
@@ -735,8 +736,10 @@ Status Reader::VisitScene() {
 
 Status Reader::ReadImage(int index, MeshImage* out) const {
   const tinygltf::Image& im = model_.images[static_cast<std::size_t>(index)];
-  const std::string label = "image " + std::to_string(index) + (im.name.empty() ? "" : " '" + im.name + "'");
-  out->name = !im.name.empty() ? im.name : (!im.uri.empty() ? im.uri : "image " + std::to_string(index));
+  const std::string label =
+      "image " + std::to_string(index) + (im.name.empty() ? "" : " '" + im.name + "'");
+  out->name =
+      !im.name.empty() ? im.name : (!im.uri.empty() ? im.uri : "image " + std::to_string(index));
   std::string bytes;
   if (im.bufferView >= 0) {
     if (static_cast<std::size_t>(im.bufferView) >= model_.bufferViews.size()) {
@@ -841,8 +844,10 @@ Status Reader::ReadMaterials(std::vector<MeshMaterial>* materials,
       if (info.texCoord == 0 && !(*images)[static_cast<std::size_t>(source)].bytes.empty()) {
         material.base_color_image = source;
       }
-      if (texture.sampler >= 0 && static_cast<std::size_t>(texture.sampler) < model_.samplers.size()) {
-        const tinygltf::Sampler& sampler = model_.samplers[static_cast<std::size_t>(texture.sampler)];
+      if (texture.sampler >= 0 &&
+          static_cast<std::size_t>(texture.sampler) < model_.samplers.size()) {
+        const tinygltf::Sampler& sampler =
+            model_.samplers[static_cast<std::size_t>(texture.sampler)];
         auto wrap = [](int mode) {
           return mode == kWrapClampToEdge || mode == kWrapMirroredRepeat ? mode : kWrapRepeat;
         };

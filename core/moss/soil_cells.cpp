@@ -164,17 +164,18 @@ Result<MossScene> SceneFromMesh(const geom::TriMesh& mesh,
       continue;
     }
     const io::MeshImage& im = images[static_cast<std::size_t>(image_index)];
-    Result<image::Rgba8Image> decoded = image::DecodeRgba8PngOrJpeg(
-        reinterpret_cast<const unsigned char*>(im.bytes.data()), im.bytes.size(),
-        io::kMaxTexturePixels);
+    Result<image::Rgba8Image> decoded =
+        image::DecodeRgba8PngOrJpeg(reinterpret_cast<const unsigned char*>(im.bytes.data()),
+                                    im.bytes.size(), io::kMaxTexturePixels);
     if (!decoded.ok()) {
-      return Status::Error(name, "material " + std::to_string(mi) +
-                                     (materials[mi].name.empty() ? "" : " '" + materials[mi].name + "'") +
-                                     " baseColorTexture image '" + im.name +
-                                     "': " + decoded.status().message());
+      return Status::Error(
+          name, "material " + std::to_string(mi) +
+                    (materials[mi].name.empty() ? "" : " '" + materials[mi].name + "'") +
+                    " baseColorTexture image '" + im.name + "': " + decoded.status().message());
     }
     texture_of_material[mi] = static_cast<int32_t>(scene.textures.size());
-    scene.textures.push_back({std::move(decoded).value(), materials[mi].wrap_s, materials[mi].wrap_t});
+    scene.textures.push_back(
+        {std::move(decoded).value(), materials[mi].wrap_s, materials[mi].wrap_t});
   }
   const bool textured = !scene.textures.empty();
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
@@ -229,8 +230,7 @@ Result<SoilCells> MakeSoilCells(const MossScene& scene, const SoilCellOptions& o
   auto tri_of = [&](std::size_t t) {
     CellSplitTri tri{glm::dvec3(land.positions[land.indices[3 * t]]),
                      glm::dvec3(land.positions[land.indices[3 * t + 1]]),
-                     glm::dvec3(land.positions[land.indices[3 * t + 2]]),
-                     static_cast<uint32_t>(t)};
+                     glm::dvec3(land.positions[land.indices[3 * t + 2]]), static_cast<uint32_t>(t)};
     if (textured && scene.texture[t] >= 0) {
       tri.ua = glm::dvec2(scene.corner_uv[3 * t]);
       tri.ub = glm::dvec2(scene.corner_uv[3 * t + 1]);

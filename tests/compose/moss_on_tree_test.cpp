@@ -1,7 +1,7 @@
 // Moss on a grown tree (core/compose/moss_on_tree.h): the land is the tree's bark (sandy, region
 // bark) over a humus square (region ground) wide enough for the crown, its soil cells land in both
-// regions, moss grows on it through MossRun::StartOnScene, the same bytes twice, and a bad preset or
-// age is refused naming its field.
+// regions, moss grows on it through MossRun::StartOnScene, the same bytes twice, and a bad preset
+// or age is refused naming its field.
 #include "compose/moss_on_tree.h"
 
 #include <gtest/gtest.h>

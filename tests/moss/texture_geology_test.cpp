@@ -8,10 +8,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <utility>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "image/png.h"
@@ -58,8 +58,13 @@ std::string TexturedTriangleGlb(const std::string& image_bytes, const nlohmann::
         {{"bufferView", 3}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}}}},
       {"images", {image}},
       {"textures", {{{"source", source}}}},
-      {"materials", {{{"name", "ground"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}}},
-      {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 2}}}, {"indices", 1}, {"material", 0}}}}}}},
+      {"materials",
+       {{{"name", "ground"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}}},
+      {"meshes",
+       {{{"primitives",
+          {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 2}}},
+            {"indices", 1},
+            {"material", 0}}}}}}},
       {"nodes", {{{"mesh", 0}}}},
       {"scenes", {{{"nodes", {0}}}}}};
   std::string text = j.dump();
