@@ -14,6 +14,7 @@
 
 #include "base/echo.h"
 #include "cli_common.h"
+#include "compose/moss_on_tree.h"
 #include "io/gltf_writer.h"
 #include "io/mesh_reader.h"
 #include "moss/moss_params.h"
@@ -33,18 +34,29 @@ using moss::MossParam;
 
 // The one table of the moss commands' names for state and cell fields (run/field_names.h).
 const run::FieldNames kFieldFlags = {
-    {"preset", "--preset"},     {"geology", "--geology"},
-    {"theta", "--theta"},       {"S", "--S"},
-    {"m_over_M", "--mM"},       {"V_sky", "--V"},
-    {"species", "--species"},   {"T_s", "--Ts"},
-    {"rh_s", "--rhs"},          {"days", "--days"},
-    {"seed", "--seed"},         {"scene", "--scene"},
-    {"mesh", "--mesh"},         {"photons", "--photons"},
-    {"indirect", "--indirect"}, {"map", "--map"},
+    {"preset", "--preset"},
+    {"geology", "--geology"},
+    {"theta", "--theta"},
+    {"S", "--S"},
+    {"m_over_M", "--mM"},
+    {"V_sky", "--V"},
+    {"species", "--species"},
+    {"T_s", "--Ts"},
+    {"rh_s", "--rhs"},
+    {"days", "--days"},
+    {"seed", "--seed"},
+    {"scene", "--scene"},
+    {"mesh", "--mesh"},
+    {"photons", "--photons"},
+    {"indirect", "--indirect"},
+    {"map", "--map"},
     {"weather", "--weather"},
+    {"tree", "--tree-preset"},
+    {"tree_years", "--tree-years"},
 };
 constexpr FlagRange kDaysRange{0, moss::kMaxMossDays, true};
 constexpr FlagRange kSeedRange{0, static_cast<double>(moss::kMaxMossSeed), true};
+constexpr FlagRange kTreeYearsRange{1, 100, true};  // the tree study's kMaxYears
 
 // Ranges of the flags that are not table rows (the soil cell's and the fitness place's inputs).
 constexpr FlagRange kThetaRange{0, 1, false, " (at most the geology's theta_SAT)"};
@@ -154,8 +166,8 @@ int RunFitness(const FitnessOptions& o, std::ostream& out) {
 // state, then the budget.
 struct RunOptions {
   StateOptions state;
-  std::string scene, indirect, mesh, weather;
-  double days = 0, photons = 0, seed = 0;
+  std::string scene, indirect, mesh, weather, tree_preset;
+  double days = 0, photons = 0, seed = 0, tree_years = 10;
   bool stats = false, instancing = false;
   std::string out_path, csv_path, map = "coverage";
   BudgetOptions budget;
@@ -164,10 +176,20 @@ struct RunOptions {
 
 void AddRunOptions(CLI::App* cmd, RunOptions* o, bool with_days) {
   o->cmd = cmd;
-  cmd->add_option("--scene", o->scene, "Built-in scene: plane, thesis (default), walls, rocks");
-  AddInputFlag(cmd, "--mesh", &o->mesh,
-               "Land mesh instead of a scene: .glb, .gltf or .obj (geology from material names "
-               "with humus, sand or asphalt, else COLOR_0, else the base colour; not in the link)");
+  CLI::Option* scene =
+      cmd->add_option("--scene", o->scene, "Built-in scene: plane, thesis (default), walls, rocks");
+  CLI::Option* tree = cmd->add_option(
+      "--tree-preset", o->tree_preset,
+      "Land: a Niwa tree ('niwa presets tree') on a square of humus; moss on bark and ground");
+  AddNumberFlag(cmd, "--tree-years", &o->tree_years, kTreeYearsRange,
+                "Age of that tree, " + RangeHelp(kTreeYearsRange) + " (default 10)");
+  CLI::Option* mesh = AddInputFlag(
+      cmd, "--mesh", &o->mesh,
+      "Land mesh instead of a scene: .glb, .gltf or .obj (geology from material names "
+      "with humus, sand or asphalt, else the base colour texture at each cell's UV times "
+      "COLOR_0 times the base colour; not in the link)");
+  Excludes(mesh, tree);  // --mesh with --scene: refused by the run, naming --mesh
+  Excludes(scene, tree);
   if (with_days)
     AddNumberFlag(cmd, "--days", &o->days, kDaysRange,
                   "Days to grow, " + RangeHelp(kDaysRange) + " (default 300)");
@@ -202,13 +224,23 @@ moss::MossState ResolveRunState(const RunOptions& o) {
 
 moss::MossRun StartRun(const RunOptions& o, const moss::MossState& state) {
   Result<moss::MossRun> run = Status::Error("", "");
-  if (!o.mesh.empty()) {
+  if (!o.tree_preset.empty()) {
+    const Budget budget = ResolveBudget(o.budget);
+    std::string truncated_by;
+    Result<moss::MossScene> land =
+        compose::MossTreeLand(o.tree_preset, o.tree_years, budget, "--tree-years", &truncated_by);
+    if (!land.ok()) Fail(run::RenameField(land.status(), kFieldFlags));
+    ReportTruncated(truncated_by);
+    const std::string name = land->name;
+    run = moss::MossRun::StartOnScene(state, std::move(land).value(), budget, name);
+  } else if (!o.mesh.empty()) {
     io::MeshReadStats read;
     Result<geom::TriMesh> mesh = io::ReadMeshFile(o.mesh, &read);
     if (!mesh.ok()) Fail(mesh.status().Within("--mesh"));
     const std::string name = o.mesh.substr(o.mesh.find_last_of('/') + 1);
-    run = moss::MossRun::StartOnScene(state, moss::SceneFromMesh(*mesh, read.materials, name),
-                                      ResolveBudget(o.budget), name);
+    Result<moss::MossScene> scene = moss::SceneFromMesh(*mesh, read.materials, name, read.images);
+    if (!scene.ok()) Fail(scene.status().Within("--mesh"));
+    run = moss::MossRun::StartOnScene(state, *scene, ResolveBudget(o.budget), name);
   } else {
     run = moss::MossRun::Start(state, ResolveBudget(o.budget));
   }

@@ -1,5 +1,6 @@
 // PNG encoding (stb_image_write for 8-bit RGBA; a 16-bit greyscale writer over stbi_zlib_compress)
-// and decoding (stb_image, after a chunk and CRC walk of our own that also reads tEXt).
+// and decoding (stb_image, after a chunk and CRC walk of our own that also reads tEXt; JPEG through
+// stb_image alone).
 #include "image/png.h"
 
 #include <array>
@@ -15,6 +16,7 @@
 #define STB_IMAGE_STATIC
 #define STBI_NO_STDIO
 #define STBI_ONLY_PNG
+#define STBI_ONLY_JPEG
 #define STB_IMAGE_IMPLEMENTATION
 #include <stb/stb_image.h>
 
@@ -316,6 +318,75 @@ Result<Rgba8Image> DecodeRgba8Png(const unsigned char* data, std::size_t size, P
                       pixels + 4 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
   stbi_image_free(pixels);
   if (info != nullptr) *info = std::move(header).value();
+  return image;
+}
+
+ImageFormat SniffImageFormat(const unsigned char* data, std::size_t size) {
+  if (size >= 8 && std::memcmp(data, kSignature, 8) == 0) return ImageFormat::kPng;
+  if (size >= 3 && data[0] == 0xFF && data[1] == 0xD8 && data[2] == 0xFF) return ImageFormat::kJpeg;
+  if (size >= 12 && std::memcmp(data, "RIFF", 4) == 0 && std::memcmp(data + 8, "WEBP", 4) == 0)
+    return ImageFormat::kWebp;
+  static const unsigned char kKtx2[12] = {0xAB, 'K',  'T',  'X',  ' ',  '2',
+                                          '0',  0xBB, 0x0D, 0x0A, 0x1A, 0x0A};
+  if (size >= 12 && std::memcmp(data, kKtx2, 12) == 0) return ImageFormat::kKtx2;
+  return ImageFormat::kUnknown;
+}
+
+Result<ImageSize> ReadImageSize(const unsigned char* data, std::size_t size) {
+  const ImageFormat format = SniffImageFormat(data, size);
+  if (format != ImageFormat::kPng && format != ImageFormat::kJpeg) {
+    return Status::Error("", "not a PNG or JPEG image");
+  }
+  if (format == ImageFormat::kPng) {
+    // IHDR first (PNG spec 5.2, 11.2.2): its width and height as declared, read before stb_image,
+    // which refuses large sizes with "too large" and no numbers.
+    if (size < 8 + 8 + 13 || std::memcmp(data + 12, "IHDR", 4) != 0 || ReadBe32(data + 8) != 13) {
+      return Status::Error("", "corrupt PNG (no IHDR chunk first)");
+    }
+    const uint32_t w = ReadBe32(data + 16), h = ReadBe32(data + 20);
+    if (w > static_cast<uint32_t>(std::numeric_limits<int>::max()) ||
+        h > static_cast<uint32_t>(std::numeric_limits<int>::max())) {
+      return Status::Error("", "corrupt PNG (width or height over 2^31)");
+    }
+    return ImageSize{static_cast<int>(w), static_cast<int>(h)};
+  }
+  const char* kind = "JPEG";
+  if (size > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+    return Status::Error("", std::string("corrupt ") + kind + " (over 2 GiB)");
+  }
+  int w = 0, h = 0, channels = 0;
+  if (stbi_info_from_memory(data, static_cast<int>(size), &w, &h, &channels) == 0) {
+    return Status::Error("", std::string("corrupt ") + kind + " (" + stbi_failure_reason() + ")");
+  }
+  return ImageSize{w, h};
+}
+
+Result<Rgba8Image> DecodeRgba8PngOrJpeg(const unsigned char* data, std::size_t size,
+                                        std::size_t max_pixels) {
+  Result<ImageSize> declared = ReadImageSize(data, size);
+  if (!declared.ok()) return declared.status();
+  const bool sides = declared->width >= 1 && declared->height >= 1 &&
+                     declared->width <= kMaxPngSide && declared->height <= kMaxPngSide;
+  if (!sides ||
+      static_cast<std::size_t>(declared->width) * static_cast<std::size_t>(declared->height) >
+          max_pixels) {
+    return Status::Error("", std::to_string(declared->width) + " x " +
+                                 std::to_string(declared->height) +
+                                 " pixels; width and height must be in [1, 65535] with at most " +
+                                 std::to_string(max_pixels) + " pixels");
+  }
+  int w = 0, h = 0, channels = 0;
+  stbi_uc* pixels = stbi_load_from_memory(data, static_cast<int>(size), &w, &h, &channels, 4);
+  if (pixels == nullptr) {
+    const char* kind = SniffImageFormat(data, size) == ImageFormat::kPng ? "PNG" : "JPEG";
+    return Status::Error("", std::string("corrupt ") + kind + " (" + stbi_failure_reason() + ")");
+  }
+  Rgba8Image image;
+  image.width = w;
+  image.height = h;
+  image.pixels.assign(pixels,
+                      pixels + 4 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  stbi_image_free(pixels);
   return image;
 }
 

@@ -2,8 +2,10 @@
 // optional tEXt chunks (a heightmap's JSON sidecar), and decoding of 8- and 16-bit PNGs that says
 // what the file held. Bytes are deterministic: the same image gives the same PNG
 // bytes natively and in WASM (integer-only filtering and zlib).
+// Also decodes baseline and progressive JPEG to 8-bit RGBA (a glTF texture's other format).
 // Does not: read or write files (callers pass bytes; native_cli writes them atomically), write
-// 8-bit grey or palette PNGs, decode JPEG, keep colour profiles, gamma or any chunk but tEXt.
+// 8-bit grey or palette PNGs, write JPEG, decode WebP or KTX2, keep colour profiles, gamma or any
+// chunk but tEXt.
 //
 // Libraries (why these): stb (Debian libstb-dev, header-only, builds for both targets). stb_image
 // decodes (stbi_load_16_from_memory keeps 16 bits); stb_image_write encodes 8-bit RGBA (the tree
@@ -72,6 +74,25 @@ Result<Gray16Image> DecodeGray16Png(const unsigned char* data, std::size_t size,
 // high byte) as 8-bit RGBA. `info` as above.
 Result<Rgba8Image> DecodeRgba8Png(const unsigned char* data, std::size_t size,
                                   PngInfo* info = nullptr);
+
+// What an encoded image's first bytes say it is (PNG signature, JPEG SOI marker, RIFF....WEBP,
+// the KTX 2 identifier); kUnknown otherwise.
+enum class ImageFormat { kUnknown, kPng, kJpeg, kWebp, kKtx2 };
+ImageFormat SniffImageFormat(const unsigned char* data, std::size_t size);
+
+// The width and height a PNG or JPEG declares, read from its header without decoding (a PNG's
+// IHDR as stored, 0 included; a JPEG's frame header through stb_image's info): "not a PNG or JPEG
+// image", "corrupt PNG (...)", "corrupt JPEG (...)"; no field.
+struct ImageSize {
+  int width = 0;
+  int height = 0;
+};
+Result<ImageSize> ReadImageSize(const unsigned char* data, std::size_t size);
+
+// A PNG or JPEG as 8-bit RGBA: its declared size checked first (each side 1 .. kMaxPngSide, at
+// most max_pixels pixels: "W x H pixels; ..."), then decoded. Errors have no field.
+Result<Rgba8Image> DecodeRgba8PngOrJpeg(const unsigned char* data, std::size_t size,
+                                        std::size_t max_pixels);
 
 // CRC-32 of PNG chunks (ISO 3309, as PNG spec annex D); exposed for tests.
 uint32_t Crc32(const unsigned char* data, std::size_t size, uint32_t crc = 0);

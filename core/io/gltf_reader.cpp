@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "image/png.h"
 #include "io/gltf_preflight.h"
 #include "io/tinygltf.h"  // declarations only: the implementation is io/tinygltf_impl.cpp
 
@@ -45,9 +46,14 @@ std::string OneLine(std::string text) {
   return lead == std::string::npos ? "" : text.substr(lead);
 }
 
-// Images are not needed for geometry: accept them undecoded.
-bool SkipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-               const unsigned char*, int, void*) {
+// Images are not decoded here: a data: URI image's bytes are kept by index (tinygltf hands them
+// over only through this callback; a buffer view image is read later with its bounds checked).
+bool KeepUriImage(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
+                  const unsigned char* bytes, int size, void* user) {
+  if (image->bufferView != -1 || index < 0 || size < 0) return true;
+  auto* kept = static_cast<std::map<int, std::string>*>(user);
+  (*kept)[index] =
+      std::string(reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(size));
   return true;
 }
 
@@ -171,8 +177,13 @@ struct AccessorView {
 class Reader {
  public:
   Reader(const tinygltf::Model& model, std::string name, const DracoIndexCounts& draco_counts,
-         MeshReadStats* stats)
-      : model_(model), name_(std::move(name)), draco_counts_(draco_counts), stats_(stats) {}
+         const std::map<int, std::string>& uri_images, std::string base_dir, MeshReadStats* stats)
+      : model_(model),
+        name_(std::move(name)),
+        draco_counts_(draco_counts),
+        uri_images_(uri_images),
+        base_dir_(std::move(base_dir)),
+        stats_(stats) {}
 
   Status Run(geom::TriMesh* out);
 
@@ -191,10 +202,15 @@ class Reader {
   // Triangles a mesh will give, from accessor counts alone (the limit is checked before reading).
   std::size_t CountTriangles(int mesh) const;
   Status VisitScene();
+  // Every material with its baseColorTexture's image (bounds, format and declared size checked).
+  Status ReadMaterials(std::vector<MeshMaterial>* materials, std::vector<MeshImage>* images) const;
+  Status ReadImage(int index, MeshImage* out) const;
 
   const tinygltf::Model& model_;
   std::string name_;
   const DracoIndexCounts& draco_counts_;
+  const std::map<int, std::string>& uri_images_;
+  std::string base_dir_;
   MeshReadStats* stats_;
   geom::TriMesh mesh_;
   bool all_normals_ = true, all_uvs_ = true, any_color_ = false;
@@ -718,6 +734,132 @@ Status Reader::VisitScene() {
   return Status::Ok();
 }
 
+Status Reader::ReadImage(int index, MeshImage* out) const {
+  const tinygltf::Image& im = model_.images[static_cast<std::size_t>(index)];
+  const std::string label =
+      "image " + std::to_string(index) + (im.name.empty() ? "" : " '" + im.name + "'");
+  out->name =
+      !im.name.empty() ? im.name : (!im.uri.empty() ? im.uri : "image " + std::to_string(index));
+  std::string bytes;
+  if (im.bufferView >= 0) {
+    if (static_cast<std::size_t>(im.bufferView) >= model_.bufferViews.size()) {
+      return Error(label + " names buffer view " + std::to_string(im.bufferView) +
+                   ", which does not exist");
+    }
+    const tinygltf::BufferView& bv = model_.bufferViews[static_cast<std::size_t>(im.bufferView)];
+    if (bv.buffer < 0 || static_cast<std::size_t>(bv.buffer) >= model_.buffers.size()) {
+      return Error(label + " buffer view " + std::to_string(im.bufferView) + " has no buffer");
+    }
+    const std::vector<unsigned char>& buffer =
+        model_.buffers[static_cast<std::size_t>(bv.buffer)].data;
+    if (bv.byteOffset > buffer.size() || bv.byteLength > buffer.size() - bv.byteOffset) {
+      return Error(label + " reads past the end of its buffer (truncated file?)");
+    }
+    bytes.assign(reinterpret_cast<const char*>(buffer.data()) + bv.byteOffset, bv.byteLength);
+  } else if (auto kept = uri_images_.find(index); kept != uri_images_.end()) {
+    bytes = kept->second;
+  } else if (!im.uri.empty() && !base_dir_.empty()) {
+    const std::string uri = im.uri.rfind("./", 0) == 0 ? im.uri.substr(2) : im.uri;
+    if (uri.find("..") != std::string::npos || uri.find(':') != std::string::npos ||
+        uri.front() == '/') {
+      return Error(label + " uri '" + uri + "' must be a file beside the .gltf");
+    }
+    Result<std::string> file = ReadFileCapped(base_dir_ + "/" + uri);
+    if (!file.ok()) return Error(label + ": " + file.status().Line());
+    bytes = std::move(*file);
+  } else if (!im.uri.empty()) {
+    return Status::Ok();  // an external file of a .gltf given as bytes: not readable here
+  } else {
+    return Error(label + " has neither a buffer view nor a uri");
+  }
+  const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+  const image::ImageFormat format = image::SniffImageFormat(data, bytes.size());
+  if (format == image::ImageFormat::kWebp || format == image::ImageFormat::kKtx2 ||
+      (format == image::ImageFormat::kUnknown &&
+       (im.mimeType == "image/webp" || im.mimeType == "image/ktx2"))) {
+    return Status::Ok();  // a format this build does not decode: no bytes kept
+  }
+  if (bytes.empty()) return Error(label + " has no bytes");
+  Result<image::ImageSize> size = image::ReadImageSize(data, bytes.size());
+  if (!size.ok()) return Error(label + ": " + size.status().message());
+  if (size->width < 1 || size->height < 1 || size->width > kMaxTextureSide ||
+      size->height > kMaxTextureSide ||
+      static_cast<std::size_t>(size->width) * static_cast<std::size_t>(size->height) >
+          kMaxTexturePixels) {
+    return Error(label + " is " + std::to_string(size->width) + " x " +
+                 std::to_string(size->height) + " pixels; each side must be in [1, " +
+                 std::to_string(kMaxTextureSide) + "] with at most " +
+                 std::to_string(kMaxTexturePixels) + " pixels");
+  }
+  out->width = size->width;
+  out->height = size->height;
+  out->bytes = std::move(bytes);
+  return Status::Ok();
+}
+
+Status Reader::ReadMaterials(std::vector<MeshMaterial>* materials,
+                             std::vector<MeshImage>* images) const {
+  images->assign(model_.images.size(), MeshImage{});
+  for (std::size_t i = 0; i < images->size(); ++i) {
+    (*images)[i].name = "image " + std::to_string(i);
+  }
+  std::vector<bool> read(model_.images.size(), false);
+  for (std::size_t mi = 0; mi < model_.materials.size(); ++mi) {
+    const tinygltf::Material& m = model_.materials[mi];
+    MeshMaterial material;
+    material.name = m.name;
+    const std::vector<double>& f = m.pbrMetallicRoughness.baseColorFactor;
+    if (f.size() == 4) {
+      material.base_color = glm::vec4(static_cast<float>(f[0]), static_cast<float>(f[1]),
+                                      static_cast<float>(f[2]), static_cast<float>(f[3]));
+    }
+    if (m.extras.IsObject() && m.extras.Has("niwa_ivy") && m.extras.Get("niwa_ivy").IsBool()) {
+      material.ivy_support = m.extras.Get("niwa_ivy").Get<bool>();
+    }
+    const tinygltf::TextureInfo& info = m.pbrMetallicRoughness.baseColorTexture;
+    if (info.index >= 0) {
+      const std::string label = "material " + std::to_string(mi) +
+                                (m.name.empty() ? "" : " '" + m.name + "'") + " baseColorTexture";
+      if (static_cast<std::size_t>(info.index) >= model_.textures.size()) {
+        return Error(label + " names texture " + std::to_string(info.index) +
+                     ", which does not exist");
+      }
+      const tinygltf::Texture& texture = model_.textures[static_cast<std::size_t>(info.index)];
+      int source = texture.source;
+      for (const char* ext : {"EXT_texture_webp", "KHR_texture_basisu", "EXT_texture_avif"}) {
+        auto it = texture.extensions.find(ext);
+        if (source < 0 && it != texture.extensions.end() && it->second.IsObject() &&
+            it->second.Get("source").IsInt()) {
+          source = it->second.Get("source").GetNumberAsInt();
+        }
+      }
+      if (source < 0 || static_cast<std::size_t>(source) >= model_.images.size()) {
+        return Error(label + " texture " + std::to_string(info.index) + " names image " +
+                     std::to_string(source) + ", which does not exist");
+      }
+      if (!read[static_cast<std::size_t>(source)]) {
+        NIWA_RETURN_IF_ERROR(ReadImage(source, &(*images)[static_cast<std::size_t>(source)]));
+        read[static_cast<std::size_t>(source)] = true;
+      }
+      if (info.texCoord == 0 && !(*images)[static_cast<std::size_t>(source)].bytes.empty()) {
+        material.base_color_image = source;
+      }
+      if (texture.sampler >= 0 &&
+          static_cast<std::size_t>(texture.sampler) < model_.samplers.size()) {
+        const tinygltf::Sampler& sampler =
+            model_.samplers[static_cast<std::size_t>(texture.sampler)];
+        auto wrap = [](int mode) {
+          return mode == kWrapClampToEdge || mode == kWrapMirroredRepeat ? mode : kWrapRepeat;
+        };
+        material.wrap_s = wrap(sampler.wrapS);
+        material.wrap_t = wrap(sampler.wrapT);
+      }
+    }
+    materials->push_back(std::move(material));
+  }
+  return Status::Ok();
+}
+
 Status Reader::Run(geom::TriMesh* out) {
   for (const std::string& ext : model_.extensionsRequired) {
     if (ext == kDraco || ExtensionIsHarmless(ext)) continue;
@@ -745,20 +887,12 @@ Status Reader::Run(geom::TriMesh* out) {
     mesh_.attributes.push_back({kMaterialAttribute, 1, std::move(materials_)});
   }
   if (any_color_) mesh_.attributes.push_back({kColorAttribute, 4, std::move(colors_)});
+  std::vector<MeshMaterial> materials;
+  std::vector<MeshImage> images;
+  NIWA_RETURN_IF_ERROR(ReadMaterials(&materials, &images));
   if (stats_ != nullptr) {
-    for (const tinygltf::Material& m : model_.materials) {
-      MeshMaterial material;
-      material.name = m.name;
-      const std::vector<double>& f = m.pbrMetallicRoughness.baseColorFactor;
-      if (f.size() == 4) {
-        material.base_color = glm::vec4(static_cast<float>(f[0]), static_cast<float>(f[1]),
-                                        static_cast<float>(f[2]), static_cast<float>(f[3]));
-      }
-      if (m.extras.IsObject() && m.extras.Has("niwa_ivy") && m.extras.Get("niwa_ivy").IsBool()) {
-        material.ivy_support = m.extras.Get("niwa_ivy").Get<bool>();
-      }
-      stats_->materials.push_back(std::move(material));
-    }
+    stats_->materials = std::move(materials);
+    stats_->images = std::move(images);
   }
   *out = std::move(mesh_);
   return Status::Ok();
@@ -811,7 +945,8 @@ Result<geom::TriMesh> ReadGltfMesh(const std::string& bytes, const std::string& 
   }
   NIWA_RETURN_IF_ERROR(PreflightGltfJson(json_text, name));
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(SkipImage, nullptr);
+  std::map<int, std::string> uri_images;
+  loader.SetImageLoader(KeepUriImage, &uri_images);
   FsContext fs_context;
   fs_context.allow = !base_dir.empty();
   loader.SetFsCallbacks(tinygltf::FsCallbacks{&ExternalExists, &tinygltf::ExpandFilePath,
@@ -838,7 +973,7 @@ Result<geom::TriMesh> ReadGltfMesh(const std::string& bytes, const std::string& 
   }
   if (stats != nullptr) *stats = MeshReadStats{};
   geom::TriMesh mesh;
-  Reader reader(model, name, draco_counts, stats);
+  Reader reader(model, name, draco_counts, uri_images, base_dir, stats);
   NIWA_RETURN_IF_ERROR(reader.Run(&mesh));
   return mesh;
 }

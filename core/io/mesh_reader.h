@@ -1,6 +1,7 @@
 // Mesh input shared by the glTF and OBJ readers: read statistics, limits, and ReadMeshFile, which
 // picks the reader by extension (.glb, .gltf, .obj). Does not: build a BVH, weld vertices across
-// primitives, read materials or textures, or write meshes (io/gltf_writer does).
+// primitives, decode textures (a base colour texture's image is kept encoded, its header checked),
+// or write meshes (io/gltf_writer does).
 #pragma once
 
 #include <cstddef>
@@ -14,13 +15,33 @@
 
 namespace niwa::io {
 
+// A glTF image a material's baseColorTexture uses, kept encoded (the moss study decodes it for
+// its geology; io only reads its header). Only PNG and JPEG are kept: a WebP or KTX 2 image, or an
+// external file of a .gltf read from bytes (no folder), is listed with empty bytes.
+struct MeshImage {
+  std::string name;   // the image's name, else its uri, else "image N"
+  std::string bytes;  // the encoded PNG or JPEG; empty when this build cannot decode it
+  int width = 0;      // from the header, each side in [1, kMaxTextureSide]
+  int height = 0;
+};
+
+// glTF sampler wrap modes (glTF 2.0 §5.26).
+inline constexpr int kWrapRepeat = 10497;
+inline constexpr int kWrapClampToEdge = 33071;
+inline constexpr int kWrapMirroredRepeat = 33648;
+
 // A glTF material as the studies need it: its name (ivy: a name starting with "noivy" marks an
-// obstacle; moss: "humus"/"sand"/"asphalt" set the geology), baseColorFactor, and extras.niwa_ivy
-// (false: obstacle, not support). Textures are not read.
+// obstacle; moss: "humus"/"sand"/"asphalt" set the geology), baseColorFactor, its
+// baseColorTexture's image and sampler wrap modes, and extras.niwa_ivy (false: obstacle, not
+// support).
 struct MeshMaterial {
   std::string name;
   glm::vec4 base_color{1.0f};  // linear RGBA, glTF default (1, 1, 1, 1)
   bool ivy_support = true;     // extras.niwa_ivy, default true
+  // Index in MeshReadStats::images of the baseColorTexture's image read with TEXCOORD_0; -1 when
+  // the material has none or it uses another texCoord set.
+  int base_color_image = -1;
+  int wrap_s = kWrapRepeat, wrap_t = kWrapRepeat;
 };
 
 // Per-vertex attributes the glTF reader adds to the TriMesh (vertices are never shared across
@@ -39,6 +60,9 @@ struct MeshReadStats {
   std::size_t degenerate = 0;  // triangles skipped: a repeated vertex or zero area in world space
   // glTF materials in file order (kMaterialAttribute indexes them); empty for OBJ.
   std::vector<MeshMaterial> materials;
+  // glTF images in file order (MeshMaterial::base_color_image indexes them): only the base colour
+  // textures' images carry bytes.
+  std::vector<MeshImage> images;
 };
 
 // Limits every reader enforces, each named in its error line.
@@ -49,6 +73,11 @@ inline constexpr std::size_t kMaxMeshFileBytes = std::size_t{512} << 20;  // 512
 inline constexpr std::size_t kMaxMeshVertices = 3 * kMaxMeshTriangles;
 // Node instances one glTF scene walk visits (a node reached by two paths counts twice): "1 M".
 inline constexpr std::size_t kMaxNodeInstances = 1'000'000;
+
+// A base colour texture's image: each side at most 16,384 pixels, at most 2^24 pixels in all (a
+// 4,096 x 4,096 texture; 64 MiB decoded). Checked from the header when the file is read.
+inline constexpr int kMaxTextureSide = 16384;
+inline constexpr std::size_t kMaxTexturePixels = std::size_t{1} << 24;
 
 // Reads a whole file of at most max_bytes; errors name the path (missing, a folder, too large).
 Result<std::string> ReadFileCapped(const std::string& path,

@@ -8,21 +8,38 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "base/status.h"
 #include "geom/tri_mesh.h"
+#include "image/image.h"
 #include "moss/moss.h"
 
 namespace niwa::moss {
 
+// A loaded mesh's base colour texture as the soil cells sample it (nearest texel, glTF's wrap
+// modes; UV (0, 0) is the image's first pixel).
+struct SceneTexture {
+  image::Rgba8Image texels;            // sRGB
+  int wrap_s = 10497, wrap_t = 10497;  // glTF: 10497 repeat, 33071 clamp, 33648 mirrored repeat
+};
+
 struct MossScene {
   std::string name;
   geom::TriMesh mesh;            // metres, y up, counter-clockwise seen from outside
-  std::vector<Geology> geology;  // one per triangle
-  std::vector<uint8_t> region;   // one per triangle, an index into region_names
+  std::vector<Geology> geology;  // one per triangle (a textured triangle's: its cells sample)
+  // A loaded mesh's textures (empty for the built-in scenes): per triangle the texture its cells
+  // sample at their centroid's UV (-1: none), the three corners' UVs, and the linear colour the
+  // texel is multiplied by (the material's baseColorFactor times the corners' mean COLOR_0).
+  std::vector<SceneTexture> textures;
+  std::vector<int32_t> texture;      // one per triangle, or empty
+  std::vector<glm::vec2> corner_uv;  // three per triangle, or empty
+  std::vector<glm::dvec3> tint;      // one per triangle, or empty
+  std::vector<uint8_t> region;       // one per triangle, an index into region_names
   std::vector<std::string> region_names;
   std::string description;  // one line for `niwa moss scenes`
 };

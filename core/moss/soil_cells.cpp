@@ -9,15 +9,19 @@
 #include <utility>
 
 #include "geom/ray_cast.h"
+#include "image/png.h"
+#include "math/det_math.h"
 #include "moss/sampling.h"
 
 namespace niwa::moss {
 namespace {
 
-// One triangle being split: its corners (double) and its parent's face.
+// One triangle being split: its corners (double), its parent's face and, on a textured face, the
+// corners' UVs (split with the positions; zero otherwise).
 struct CellSplitTri {
   glm::dvec3 a, b, c;
   uint32_t face;
+  glm::dvec2 ua{0.0}, ub{0.0}, uc{0.0};
 };
 
 double LongestEdgeSquared(const CellSplitTri& t, int* which) {
@@ -48,12 +52,18 @@ std::size_t SplitCellTriangle(const CellSplitTri& t, double edge, std::vector<Ce
     if (which == 0) {
       const glm::dvec3 m = 0.5 * (cur.a + cur.b);
       first.b = m, second.a = m;
+      const glm::dvec2 mu = 0.5 * (cur.ua + cur.ub);
+      first.ub = mu, second.ua = mu;
     } else if (which == 1) {
       const glm::dvec3 m = 0.5 * (cur.b + cur.c);
       first.c = m, second.b = m;
+      const glm::dvec2 mu = 0.5 * (cur.ub + cur.uc);
+      first.uc = mu, second.ub = mu;
     } else {
       const glm::dvec3 m = 0.5 * (cur.c + cur.a);
       first.a = m, second.c = m;
+      const glm::dvec2 mu = 0.5 * (cur.uc + cur.ua);
+      first.ua = mu, second.uc = mu;
     }
     stack.push_back(second);
     stack.push_back(first);
@@ -64,6 +74,31 @@ std::size_t SplitCellTriangle(const CellSplitTri& t, double edge, std::vector<Ce
 double LinearToSrgb(double c) {
   c = std::clamp(c, 0.0, 1.0);
   return c <= 0.0031308 ? 12.92 * c : 1.055 * std::exp(std::log(c) / 2.4) - 0.055;
+}
+
+// The same curve through det_math (a texel's colour is the same bits in both builds).
+double DetLinearToSrgb(double c) {
+  c = std::clamp(c, 0.0, 1.0);
+  return c <= 0.0031308 ? 12.92 * c : 1.055 * det::Exp(det::Log(c) / 2.4) - 0.055;
+}
+double DetSrgbToLinear(double c) {
+  return c <= 0.04045 ? c / 12.92 : det::Exp(2.4 * det::Log((c + 0.055) / 1.055));
+}
+
+// A texel coordinate (u scaled by the side) under a glTF wrap mode, nearest texel.
+int WrapTexel(double u, int side, int mode) {
+  if (!std::isfinite(u)) u = 0.0;
+  double t = u;
+  if (mode == io::kWrapClampToEdge) {
+    t = std::clamp(u, 0.0, 1.0);
+  } else if (mode == io::kWrapMirroredRepeat) {
+    const double period = u - 2.0 * std::floor(u / 2.0);  // [0, 2)
+    t = period <= 1.0 ? period : 2.0 - period;
+  } else {
+    t = u - std::floor(u);  // [0, 1)
+  }
+  const int x = static_cast<int>(std::floor(t * side));
+  return std::clamp(x, 0, side - 1);
 }
 
 }  // namespace
@@ -91,8 +126,24 @@ bool GeologyOfMaterialName(const std::string& name, Geology* geology) {
   return false;
 }
 
-MossScene SceneFromMesh(const geom::TriMesh& mesh, const std::vector<io::MeshMaterial>& materials,
-                        const std::string& name) {
+Geology GeologyOfTexel(const unsigned char* rgb, const glm::dvec3& tint) {
+  if (tint == glm::dvec3(1.0)) return GeologyOfColour(glm::dvec3(rgb[0], rgb[1], rgb[2]) / 255.0);
+  const glm::dvec3 linear(DetSrgbToLinear(rgb[0] / 255.0) * tint.x,
+                          DetSrgbToLinear(rgb[1] / 255.0) * tint.y,
+                          DetSrgbToLinear(rgb[2] / 255.0) * tint.z);
+  return GeologyOfColour(
+      {DetLinearToSrgb(linear.x), DetLinearToSrgb(linear.y), DetLinearToSrgb(linear.z)});
+}
+
+const unsigned char* SampleTexture(const SceneTexture& texture, glm::dvec2 uv) {
+  const int x = WrapTexel(uv.x, texture.texels.width, texture.wrap_s);
+  const int y = WrapTexel(uv.y, texture.texels.height, texture.wrap_t);
+  return texture.texels.At(x, y);
+}
+
+Result<MossScene> SceneFromMesh(const geom::TriMesh& mesh,
+                                const std::vector<io::MeshMaterial>& materials,
+                                const std::string& name, const std::vector<io::MeshImage>& images) {
   MossScene scene;
   scene.name = name;
   scene.mesh.positions = mesh.positions;
@@ -101,18 +152,48 @@ MossScene SceneFromMesh(const geom::TriMesh& mesh, const std::vector<io::MeshMat
   scene.description = "a loaded mesh";
   const geom::VertexAttribute* colour = mesh.FindAttribute(io::kColorAttribute);
   const geom::VertexAttribute* material = mesh.FindAttribute(io::kMaterialAttribute);
+  // The base colour textures the faces use, decoded once each (image index -> scene texture).
+  const bool has_uvs = mesh.uvs.size() == mesh.positions.size();
+  std::vector<int32_t> texture_of_material(materials.size(), -1);
+  for (std::size_t mi = 0; mi < materials.size() && has_uvs; ++mi) {
+    const int image_index = materials[mi].base_color_image;
+    Geology named;
+    if (image_index < 0 || static_cast<std::size_t>(image_index) >= images.size() ||
+        images[static_cast<std::size_t>(image_index)].bytes.empty() ||
+        GeologyOfMaterialName(materials[mi].name, &named)) {
+      continue;
+    }
+    const io::MeshImage& im = images[static_cast<std::size_t>(image_index)];
+    Result<image::Rgba8Image> decoded =
+        image::DecodeRgba8PngOrJpeg(reinterpret_cast<const unsigned char*>(im.bytes.data()),
+                                    im.bytes.size(), io::kMaxTexturePixels);
+    if (!decoded.ok()) {
+      return Status::Error(
+          name, "material " + std::to_string(mi) +
+                    (materials[mi].name.empty() ? "" : " '" + materials[mi].name + "'") +
+                    " baseColorTexture image '" + im.name + "': " + decoded.status().message());
+    }
+    texture_of_material[mi] = static_cast<int32_t>(scene.textures.size());
+    scene.textures.push_back(
+        {std::move(decoded).value(), materials[mi].wrap_s, materials[mi].wrap_t});
+  }
+  const bool textured = !scene.textures.empty();
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     const uint32_t v0 = mesh.indices[3 * t];
     const io::MeshMaterial* m = nullptr;
+    int32_t texture = -1;
     if (material != nullptr) {
       const int index = static_cast<int>(material->values[v0]);
-      if (index >= 0 && static_cast<std::size_t>(index) < materials.size()) m = &materials[index];
+      if (index >= 0 && static_cast<std::size_t>(index) < materials.size()) {
+        m = &materials[index];
+        texture = texture_of_material[static_cast<std::size_t>(index)];
+      }
     }
     Geology geology = Geology::kHumus;
+    glm::dvec3 linear(1.0);
     if (m != nullptr && GeologyOfMaterialName(m->name, &geology)) {
       // the name overrides
     } else if (colour != nullptr || m != nullptr) {
-      glm::dvec3 linear(1.0);
       if (colour != nullptr) {
         glm::dvec3 sum(0.0);
         for (int k = 0; k < 3; ++k) {
@@ -128,6 +209,11 @@ MossScene SceneFromMesh(const geom::TriMesh& mesh, const std::vector<io::MeshMat
     }
     scene.geology.push_back(geology);
     scene.region.push_back(0);
+    if (textured) {
+      scene.texture.push_back(texture);
+      scene.tint.push_back(linear);
+      for (int k = 0; k < 3; ++k) scene.corner_uv.push_back(mesh.uvs[mesh.indices[3 * t + k]]);
+    }
   }
   return scene;
 }
@@ -137,11 +223,20 @@ Result<SoilCells> MakeSoilCells(const MossScene& scene, const SoilCellOptions& o
   if (land.triangle_count() == 0) return Status::Error("scene", "has no triangles");
   SoilCells cells;
   cells.region_names = scene.region_names;
+  // A loaded mesh's textured faces: each cell samples the texture at its centroid's UV.
+  const bool textured = !scene.textures.empty() && scene.texture.size() == land.triangle_count() &&
+                        scene.corner_uv.size() == 3 * land.triangle_count() &&
+                        scene.tint.size() == land.triangle_count();
   auto tri_of = [&](std::size_t t) {
-    return CellSplitTri{glm::dvec3(land.positions[land.indices[3 * t]]),
-                        glm::dvec3(land.positions[land.indices[3 * t + 1]]),
-                        glm::dvec3(land.positions[land.indices[3 * t + 2]]),
-                        static_cast<uint32_t>(t)};
+    CellSplitTri tri{glm::dvec3(land.positions[land.indices[3 * t]]),
+                     glm::dvec3(land.positions[land.indices[3 * t + 1]]),
+                     glm::dvec3(land.positions[land.indices[3 * t + 2]]), static_cast<uint32_t>(t)};
+    if (textured && scene.texture[t] >= 0) {
+      tri.ua = glm::dvec2(scene.corner_uv[3 * t]);
+      tri.ub = glm::dvec2(scene.corner_uv[3 * t + 1]);
+      tri.uc = glm::dvec2(scene.corner_uv[3 * t + 2]);
+    }
+    return tri;
   };
   // The edge: soil_edge, doubled while the cells would exceed the cap.
   double edge = options.soil_edge;
@@ -181,7 +276,13 @@ Result<SoilCells> MakeSoilCells(const MossScene& scene, const SoilCellOptions& o
     cells.centroid.push_back((s.a + s.b + s.c) / 3.0);
     cells.normal.push_back(len > 0 ? cr / len : glm::dvec3(0, 1, 0));
     cells.area.push_back(0.5 * len);
-    cells.geology.push_back(scene.geology[s.face]);
+    if (textured && scene.texture[s.face] >= 0) {
+      const SceneTexture& texture = scene.textures[static_cast<std::size_t>(scene.texture[s.face])];
+      cells.geology.push_back(
+          GeologyOfTexel(SampleTexture(texture, (s.ua + s.ub + s.uc) / 3.0), scene.tint[s.face]));
+    } else {
+      cells.geology.push_back(scene.geology[s.face]);
+    }
     cells.region.push_back(scene.region[s.face]);
   }
   cells.centre = 0.5 * (lo + hi);

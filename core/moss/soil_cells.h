@@ -2,12 +2,14 @@
 // split by longest-edge bisection until no edge is longer than soil_edge, one soil cell per
 // resulting triangle with its centroid, unit normal, area, geology, region, soil depth h (the
 // thickness of the solid along y, by a ray through core/geom's BVH) and, when asked, its sky view
-// V_sky (64 cosine-weighted Hammersley rays); the geology of a loaded mesh from its colours.
-// Does not: sample textures (a loaded mesh's baseColorTexture is not read yet: COLOR_0 and the
-// material's colour only), keep a cell's water or light (the run does), or load files.
+// V_sky (64 cosine-weighted Hammersley rays); the geology of a loaded mesh from its colours: its
+// base colour texture sampled at each cell's centroid UV, else COLOR_0, else the material's colour.
+// Does not: filter textures (nearest texel), read KHR_texture_transform or a texCoord set other
+// than 0, keep a cell's water or light (the run does), or load files.
 #pragma once
 
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <string>
 #include <vector>
@@ -63,10 +65,22 @@ Geology GeologyOfColour(const glm::dvec3& srgb);
 // otherwise.
 bool GeologyOfMaterialName(const std::string& name, Geology* geology);
 
-// A loaded mesh as a scene: each triangle's geology from its material's name, else the mean of its
-// corners' COLOR_0 (io/mesh_reader.h kColorAttribute, linear, times the material's base colour)
-// turned to sRGB, else the material's base colour, else humus; one region "all".
-MossScene SceneFromMesh(const geom::TriMesh& mesh, const std::vector<io::MeshMaterial>& materials,
-                        const std::string& name);
+// A loaded mesh as a scene: each triangle's geology from its material's name, else the glTF base
+// colour turned to sRGB: the material's baseColorFactor times the mean of its corners' COLOR_0
+// (io/mesh_reader.h kColorAttribute, linear) times, for a material with a base colour texture (a
+// PNG or JPEG of `images`, read with TEXCOORD_0), the texel at each soil cell's centroid UV
+// (MakeSoilCells samples it); no material and no colour: humus; one region "all". Errors name
+// `name`: a texture that does not decode (io read its header only). A textured material on a mesh
+// without TEXCOORD_0 on every primitive (io drops them all then) keeps the untextured colour.
+Result<MossScene> SceneFromMesh(const geom::TriMesh& mesh,
+                                const std::vector<io::MeshMaterial>& materials,
+                                const std::string& name,
+                                const std::vector<io::MeshImage>& images = {});
+
+// The geology of a texel (sRGB bytes) times a linear tint (1: the texel's own colour).
+Geology GeologyOfTexel(const unsigned char* rgb, const glm::dvec3& tint);
+
+// The texel of `texture` nearest to uv under its wrap modes.
+const unsigned char* SampleTexture(const SceneTexture& texture, glm::dvec2 uv);
 
 }  // namespace niwa::moss

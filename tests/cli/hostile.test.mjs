@@ -23,7 +23,8 @@ function requireBatch(cli) {
   }
 }
 import { check, cliArgv, finish, native, wasm } from '../support/cli_pair.mjs';
-import { glbBytes } from '../support/glb_bytes.mjs';
+import { glbBytes, triangleBin } from '../support/glb_bytes.mjs';
+import { pngBytes, texturedTriangleJson } from '../support/png_bytes.mjs';
 
 const work = mkdtempSync(join(tmpdir(), 'niwa-hostile-'));
 const files = join(work, 'in');
@@ -84,6 +85,14 @@ const INPUTS = {
       { bufferView: 1, componentType: 5126, count: 3, type: 'VEC3' }],
     meshes: [{ primitives: [{ attributes: { POSITION: 0, NORMAL: 1 } }] }], nodes: [{ mesh: 0 }], scenes: [{ nodes: [0] }] }),
   Buffer.from(new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, NaN, 0, 1, 0, 0, 1]).buffer))),
+  // One triangle whose material's base colour texture is hostile (the reader checks its header).
+  ...Object.fromEntries([
+    ['bad bytes', Buffer.from('\x89PNG\r\n\x1a\nnot a png at all', 'latin1'), {}],
+    ['a missing image', pngBytes(1, 1, new Uint8Array([1, 2, 3, 255])), { source: 4 }],
+    ['0 x 0 pixels', pngBytes(0, 0, null, { declared: { width: 0, height: 0 } }), {}],
+    ['100,000 x 100,000 pixels', pngBytes(0, 0, null, { declared: { width: 100000, height: 100000 } }), {}],
+  ].map(([what, image, options]) => [`a texture of ${what}`, file(`texture_${what.replace(/\W+/g, '_')}.glb`,
+    glbBytes(JSON.stringify(texturedTriangleJson(image.length, options)), Buffer.concat([triangleBin(), image])))])),
   'JSON of the wrong types': file('types.json', '{"type": null, "points": 7, "params": [1], "coordinates": "x", "asset": 3}'),
   'a repeated key': file('repeat.json', '{"steps": 3, "params": {"a": 1}, "steps": 4}'),
   '/dev/zero': '/dev/zero',

@@ -274,10 +274,43 @@ for (const [args, field] of hostile) {
     s.cells.by_geology.sandy > 0 && s.cells.by_geology.asphalt > 0 && s.mosses.total > 0 && !s.url.includes('materials'));
 }
 
+// Geology from a base colour texture: textured.glb's 2 x 1 texture is humus on its left half and
+// sandy on its right (its material has no geology in its name and a white factor, which alone gives
+// sandy everywhere), so --stats counts as many humus cells as sandy ones and no asphalt; ez-tree's
+// flower_blue.glb (three PNG textures, four plain colours) reads in both builds alike.
+{
+  const mesh = join(root, 'tests/data/meshes/textured.glb');
+  const args = ['moss', 'grow', '--mesh', mesh, '--days', '3', '--photons', '512', '--stats'];
+  const a = JSON.stringify(withoutMs(JSON.parse(run(native, args))));
+  const b = JSON.stringify(withoutMs(JSON.parse(run(wasm, args))));
+  const g = JSON.parse(a).cells.by_geology;
+  check(`moss grow --mesh textured.glb: native == WASM; cells by geology ${JSON.stringify(g)} follow the texture's halves`,
+    a === b && g.humus > 0 && g.humus === g.sandy && (g.asphalt ?? 0) === 0);
+  const flower = ['moss', 'grow', '--mesh', join(root, 'tests/data/meshes/flower_blue.glb'), '--days', '2', '--photons', '256', '--stats'];
+  const fa = JSON.stringify(withoutMs(JSON.parse(run(native, flower))));
+  const fb = JSON.stringify(withoutMs(JSON.parse(run(wasm, flower))));
+  check(`moss grow --mesh flower_blue.glb (textured): native == WASM; ${JSON.stringify(JSON.parse(fa).cells.by_geology)}`,
+    fa === fb && JSON.parse(fa).cells.total > 0);
+}
+
+// A Niwa tree as the land (core/compose/moss_on_tree): its bark (sandy) on a humus square; the
+// cells and mosses by region name both, the same bytes in both builds.
+{
+  const args = ['moss', 'grow', '--tree-preset', 'sakura', '--tree-years', '4', '--days', '3', '--photons', '512', '--stats'];
+  const a = JSON.stringify(withoutMs(JSON.parse(run(native, args))));
+  const b = JSON.stringify(withoutMs(JSON.parse(run(wasm, args))));
+  const s = JSON.parse(a);
+  check(`moss grow --tree-preset sakura --tree-years 4: native == WASM; cells ${JSON.stringify(s.cells.by_region)} ${JSON.stringify(s.cells.by_geology)}, ${s.mosses.total} mosses`,
+    a === b && s.mesh === 'tree:sakura' && s.cells.by_region.bark > 0 && s.cells.by_region.ground > 0 &&
+    s.cells.by_geology.sandy === s.cells.by_region.bark && s.cells.by_geology.humus === s.cells.by_region.ground);
+}
+
 for (const [args, field] of [
   [['--mesh', join(root, 'tests/data/meshes/truncated.glb')], '--mesh'],
   [['--mesh', join(root, 'tests/data/meshes/empty.glb')], '--mesh'],
   [['--mesh', join(root, 'tests/data/meshes/materials.glb'), '--scene', 'thesis'], '--mesh'],
+  [['--tree-preset', 'baobab'], '--tree-preset'], [['--tree-preset', 'sakura', '--tree-years', '0'], '--tree-years'],
+  [['--tree-preset', 'sakura', '--scene', 'thesis'], '--scene'],
   [['--scene', 'garden'], '--scene'], [['--days', '-1'], '--days'], [['--days', '2.5'], '--days'],
   [['--indirect', 'maybe'], '--indirect'], [['--out', 'x.glb', '--map', 'G'], '--map'], [['--map', 'S'], '--map'],
   [['--instancing'], '--instancing'], [['--out', 'x.json', '--instancing'], '--instancing'], [['--seed', '1e20'], '--seed'], [['--photons', 'nan'], '--photons'],

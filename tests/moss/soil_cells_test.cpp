@@ -137,10 +137,10 @@ TEST(MossSoilCells, GeologyFromColoursAndNames) {
   std::vector<io::MeshMaterial> materials(1);
   materials[0].name = "old humus";
   materials[0].base_color = glm::vec4(0.54f, 0.32f, 0.1f, 1.0f);
-  const MossScene scene = SceneFromMesh(mesh, materials, "two.glb");
+  const MossScene scene = SceneFromMesh(mesh, materials, "two.glb").value();
   EXPECT_EQ(scene.geology, (std::vector<Geology>{Geology::kAsphalt, Geology::kHumus}));
   materials[0].name = "plain";  // now the sandy colour (linear 0.54, 0.32, 0.1 ~ sRGB C29A5B) wins
-  EXPECT_EQ(SceneFromMesh(mesh, materials, "two.glb").geology[1], Geology::kSandy);
+  EXPECT_EQ(SceneFromMesh(mesh, materials, "two.glb")->geology[1], Geology::kSandy);
 }
 
 }  // namespace

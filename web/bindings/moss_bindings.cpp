@@ -29,7 +29,7 @@
 // Calls: setProgress(fn) (fn(stage, done, total) after every day), grow(stateJson) -> ""/error
 // record (on the state's built-in scene), or loadMesh(bytes, name) -> ""/error record (a dropped
 // .glb/.gltf/.obj, Draco already decoded by the page, read as `niwa moss grow --mesh` reads a
-// file: soil_cells.h SceneFromMesh, geology from its materials and colours) then
+// file: soil_cells.h SceneFromMesh, geology from its materials, textures and colours) then
 // growOnMesh(stateJson) (MossRun::StartOnScene: the stats say scene "mesh" and the file's name;
 // errors about the mesh name the field "mesh"), meshJson() ({name, triangles} or {}); then
 // statsJson() (the CLI's `niwa moss grow --stats`, ms* timing fields included), hash(),
@@ -108,7 +108,9 @@ class MossLab {
     if (!mesh.ok()) return ErrorText(mesh.status().Within("mesh"));
     Status valid = geom::ValidateMesh(*mesh, name);
     if (!valid.ok()) return ErrorText(valid.Within("mesh"));
-    mesh_scene_.emplace(moss::SceneFromMesh(*mesh, read.materials, name));
+    Result<moss::MossScene> scene = moss::SceneFromMesh(*mesh, read.materials, name, read.images);
+    if (!scene.ok()) return ErrorText(scene.status().Within("mesh"));
+    mesh_scene_.emplace(std::move(scene).value());
     mesh_name_ = name;
     mesh_triangles_ = mesh->triangle_count();
     return "";

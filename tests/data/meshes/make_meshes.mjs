@@ -4,6 +4,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import draco3d from 'draco3d';
+import { pngBytes } from '../../support/png_bytes.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const FLOAT = 5126, U16 = 5123, U32 = 5125;
@@ -251,6 +252,26 @@ write('not_gltf.glb', Buffer.from('This is a text file, not a mesh.\n'));
   g.node({ mesh: 2, translation: [0, 0, 2] });
   g.json.scenes = [{ nodes: [0, 1, 2] }];
   write('materials.glb', g.glb());
+}
+
+// textured.glb: a 2 m square at y = 0 facing up (two triangles), u = (x + 1) / 2 and v = (z + 1) / 2, whose
+// material 'ground' (no geology in its name, no factor) has a 2 x 1 PNG base colour texture: the left texel the
+// thesis's humus colour #4A3322, the right one its sandy #C29A5B (moss: soil cells at x < 0 are humus, x > 0 sandy),
+// clamped to the edge.
+{
+  const g = new Gltf();
+  const pos = g.positions([-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, 1]);
+  const nrm = g.normals([0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0]);
+  const uv = g.accessor(new Float32Array([0, 0, 1, 0, 1, 1, 0, 1]), FLOAT, 'VEC2');
+  const png = pngBytes(2, 1, new Uint8Array([0x4a, 0x33, 0x22, 255, 0xc2, 0x9a, 0x5b, 255]));
+  g.json.images = [{ name: 'humus_sand', bufferView: g.view(new Uint8Array(png)), mimeType: 'image/png' }];
+  g.json.samplers = [{ magFilter: 9728, minFilter: 9728, wrapS: 33071, wrapT: 33071 }];
+  g.json.textures = [{ source: 0, sampler: 0 }];
+  g.json.materials = [{ name: 'ground', pbrMetallicRoughness: { baseColorTexture: { index: 0 }, metallicFactor: 0 } }];
+  g.mesh('ground', [{ attributes: { POSITION: pos, NORMAL: nrm, TEXCOORD_0: uv }, indices: g.indices([0, 3, 2, 0, 2, 1]), material: 0 }]);
+  g.node({ mesh: 0 });
+  g.json.scenes = [{ nodes: [0] }];
+  write('textured.glb', g.glb());
 }
 
 // OBJ: a unit cube's top as a quad (fan-triangulated), a pentagon with negative indices, the v/vt/vn forms.
