@@ -15,6 +15,10 @@ import { tmpdir } from 'node:os';
 import { basename, join } from 'node:path';
 import { batchOf, runBatch } from '../support/cli_batch.mjs';
 
+import { check, cliArgv, finish, native, wasm } from '../support/cli_pair.mjs';
+import { glbBytes, triangleBin } from '../support/glb_bytes.mjs';
+import { pngBytes, texturedTriangleJson } from '../support/png_bytes.mjs';
+
 // A batched run needs the batch program beside the CLI: its absence is a failure, not a skip.
 function requireBatch(cli) {
   if (!batchOf(cli)) {
@@ -22,9 +26,6 @@ function requireBatch(cli) {
     finish();
   }
 }
-import { check, cliArgv, finish, native, wasm } from '../support/cli_pair.mjs';
-import { glbBytes, triangleBin } from '../support/glb_bytes.mjs';
-import { pngBytes, texturedTriangleJson } from '../support/png_bytes.mjs';
 
 const work = mkdtempSync(join(tmpdir(), 'niwa-hostile-'));
 const files = join(work, 'in');
