@@ -14,7 +14,6 @@ import { existsSync, mkdirSync, mkdtempSync, readdirSync, rmSync, writeFileSync,
 import { tmpdir } from 'node:os';
 import { basename, join } from 'node:path';
 import { batchOf, runBatch } from '../support/cli_batch.mjs';
-
 import { check, cliArgv, finish, native, wasm } from '../support/cli_pair.mjs';
 import { glbBytes, triangleBin } from '../support/glb_bytes.mjs';
 import { pngBytes, texturedTriangleJson } from '../support/png_bytes.mjs';
