@@ -182,6 +182,25 @@ await runBrowserTest(async (server, browser) => {
   check('Days .csv: a row per day with each species\' count and the total, as population.by_day', csvOk,
     `${csvFile.name}: ${rows.length} lines, ${rows[0].join()} / ${(rows[rows.length - 1] || []).join()}`);
 
+  // 2c. The run's .glb and .json: the bytes `niwa moss grow --url HASH --out` writes natively.
+  for (const [button, ext] of [['#download-glb', 'glb'], ['#download-json', 'json']]) {
+    const [d] = await Promise.all([page.waitForEvent('download', { timeout: TIMEOUT }), page.click(button)]);
+    const file = path.join(ARTIFACTS, d.suggestedFilename());
+    await d.saveAs(file);
+    const nativeFile = path.join(ARTIFACTS, `moss-native.${ext}`);
+    let nativeBytes = Buffer.alloc(0);
+    try {
+      execFileSync(NATIVE, ['moss', 'grow', '--url', data.hash, '--out', nativeFile]);
+      nativeBytes = fs.readFileSync(nativeFile);
+    } catch (e) {
+      check(`native moss grow --out .${ext} runs`, false, e.message.split('\n')[0]);
+    }
+    const pageBytes = fs.readFileSync(file);
+    check(`Moss .${ext} downloads the bytes of \`niwa moss grow --url HASH --out moss.${ext}\``,
+      d.suggestedFilename().endsWith(`.${ext}`) && pageBytes.length > 1000 && pageBytes.equals(nativeBytes),
+      `${d.suggestedFilename()}: ${pageBytes.length} bytes, native ${nativeBytes.length}`);
+  }
+
   // 3. Overlays of the last day: each field's range holds the stats' per-geology means; each tints
   // the land its own way; the photon points are the stored photons, yellow and blue.
   const overlayHooks = async (value) => {

@@ -33,9 +33,10 @@
 // growOnMesh(stateJson) (MossRun::StartOnScene: the stats say scene "mesh" and the file's name;
 // errors about the mesh name the field "mesh"), meshJson() ({name, triangles} or {}); then
 // statsJson() (the CLI's `niwa moss grow --stats`, ms* timing fields included), hash(),
-// stateJson(), boundsJson(), buffers(group). The state JSON: {preset, scene, days, seed,
+// stateJson(), boundsJson(), buffers(group); build("glb"|"json") then buffers("download"): the
+// bytes of `--out moss.glb` / `--out moss.json`. The state JSON: {preset, scene, days, seed,
 // params: {row: value}} (params over the preset's values).
-// Does not: export (.glb, moss.json), keep more than one run or mesh, or tell a moss that
+// Does not: keep more than one run or mesh, or tell a moss that
 // died and one with the same place, species and birth day apart (the run never makes two).
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
@@ -52,6 +53,7 @@
 #include "buffers.h"
 #include "error_record.h"
 #include "geom/mesh_metrics.h"
+#include "io/gltf_writer.h"
 #include "io/mesh_reader.h"
 #include "moss/fitness.h"
 #include "moss/moss_params.h"
@@ -157,6 +159,33 @@ class MossLab {
   std::string hash() const { return run_ ? run_->Hash("") : ""; }
   std::string stateJson() const { return run_ ? JsonText(MossStateObject(state_)) : "{}"; }
 
+  // One download of the last run into the "download" group: "" or an error record. glb: the bytes
+  // of `niwa moss grow ... --out moss.glb` (the coverage map, tufts merged: the run's Document());
+  // json: those of --out moss.json. Refused (field "download") over the page's memory budget.
+  std::string build(const std::string& format) {
+    download_.clear();
+    if (!run_) return ErrorText(Status::Error("download", "nothing grown yet"));
+    if (format != "glb" && format != "json") {
+      return ErrorText(Status::Error("download", "format '" + format.substr(0, 20) +
+                                                     "' is unknown; must be glb or json"));
+    }
+    Result<Estimate> needs = run_->ExportEstimate(format);
+    if (!needs.ok()) return ErrorText(needs.status().Within("download"));
+    const Status fits = CheckEstimate(*needs, PageBudget(), "lower days or max_mosses");
+    if (!fits.ok()) return ErrorText(fits);
+    if (format == "json") {
+      const std::string text = run_->MossesJson() + "\n";
+      download_.assign(text.begin(), text.end());
+      return "";
+    }
+    Result<gltf::Document> doc = run_->Document();
+    if (!doc.ok()) return ErrorText(doc.status().Within("download"));
+    Result<std::vector<unsigned char>> glb = gltf::WriteGlb(*doc);
+    if (!glb.ok()) return ErrorText(glb.status().Within("download"));
+    download_ = std::move(glb).value();
+    return "";
+  }
+
   // {min, max (the land's box, m), cells, days, mosses_ever, mosses_alive, irradiance_max (W/m²)}.
   std::string boundsJson() const {
     if (!run_) return "{}";
@@ -200,6 +229,8 @@ class MossLab {
           .Add("on_moss", moss_on_moss_);
     } else if (group == "photons") {
       out.Add("positions", photon_positions_).Add("depth", photon_depth_);
+    } else if (group == "download") {
+      out.Add("bytes", download_);
     } else {
       return emscripten::val::null();
     }
@@ -325,6 +356,7 @@ class MossLab {
   std::vector<float> moss_positions_, moss_normals_, moss_species_, moss_birth_, moss_death_,
       moss_on_moss_;
   std::vector<uint32_t> moss_cell_;
+  std::vector<unsigned char> download_;  // the last build's bytes (group "download")
   emscripten::val progress_ = emscripten::val::null();
 };
 
@@ -344,5 +376,6 @@ EMSCRIPTEN_BINDINGS(niwa_moss) {
       .function("hash", &niwa::MossLab::hash)
       .function("stateJson", &niwa::MossLab::stateJson)
       .function("boundsJson", &niwa::MossLab::boundsJson)
-      .function("buffers", &niwa::MossLab::buffers);
+      .function("buffers", &niwa::MossLab::buffers)
+      .function("build", &niwa::MossLab::build);
 }

@@ -452,6 +452,15 @@ ui.downloadStats.addEventListener('click', () => {
 ui.downloadCsv.addEventListener('click', () => {
   if (lastStats) download(new Blob([populationCsv(lastStats)], { type: 'text/csv' }), `${baseName()}-days.csv`, ui.shareStatus);
 });
+// The run's outputs from the worker's one run (the bytes `niwa moss grow --out` writes for the same
+// state: the last day, whatever day the scrubber shows).
+const runName = () => `moss-${lastStats?.scene || 'run'}-${lastStats?.days ?? 0}d`;
+$('download-glb').addEventListener('click', () => {
+  if (lastStats) controller.exportAs('glb', `${runName()}.glb`, 'model/gltf-binary');
+});
+$('download-json').addEventListener('click', () => {
+  if (lastStats) controller.exportAs('json', `${runName()}.json`, 'application/json');
+});
 
 // ---------------------------------------------------------------- start
 setHooks({ status: 'loading' });

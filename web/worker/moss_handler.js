@@ -13,9 +13,11 @@
 // answered with 'meshLoaded' ({name, triangles}) or an error naming "mesh"; an update with
 // useMesh: true grows on it (MossLab growOnMesh) instead of the state's scene.
 // Messages: web/worker/protocol.js.
-// Does not: load the module, route messages or catch errors (web/worker/worker.js does), or export.
+// An 'export' ({format: glb | json}) answers with the bytes of `niwa moss grow ... --out moss.glb`
+// or `--out moss.json` for the last run (MossLab build), transferred, or an error naming "download".
+// Does not: load the module, route messages or catch errors (web/worker/worker.js does).
 import { errorOf, errorReply } from './errors.js';
-import { TransferPool, closeLabSession } from './transfer.js';
+import { TransferPool, closeLabSession, takeBuffers } from './transfer.js';
 import { nextTask } from './next_task.js';
 
 // ctx: {post(msg, transfer), isLatest(client, id)} from the router.
@@ -83,6 +85,21 @@ export function createHandler(Module, ctx) {
     post({ type: 'meshLoaded', id, client, mesh: JSON.parse(entry.lab.meshJson()) });
   }
 
+  const FORMATS = ['glb', 'json'];
+  function exportMoss(msg, client) {
+    const format = String(msg.format);
+    if (!FORMATS.includes(format)) throw new Error(`export: format '${format.slice(0, 20)}' is unknown; must be ${FORMATS.join(', ')}`);
+    const entry = labOf(client);
+    const error = errorOf(entry.lab.build(format));
+    if (error) {
+      post(errorReply(error, msg.id, client));
+      return;
+    }
+    const transfer = [];
+    const { bytes } = takeBuffers(entry.lab.buffers('download'), transfer);
+    post({ type: 'export', id: msg.id, client, format, bytes }, transfer);
+  }
+
   // The client went away (web/worker/worker.js 'close'): its lab is deleted and its returned
   // buffers are dropped. Returns what was let go.
   const close = (client) => closeLabSession(labs, returned, client);
@@ -95,6 +112,7 @@ export function createHandler(Module, ctx) {
       decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...decode(String(msg.hash || '')) }),
       update,
       mesh,
+      export: exportMoss,
       recycle: (msg, client) => returned.give(client, msg.buffers),
     },
   };
