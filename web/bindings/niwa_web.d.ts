@@ -154,8 +154,10 @@ export class MossLab {
   hash(): string;
   stateJson(): string;
   boundsJson(): string;
-  /** "land": positions, normals, coverage, irradiance, geology, T_s, rh_s, theta, fitness; "mosses": positions, normals, species, birth, death, cell, on_moss; "photons": positions, depth (the last day's). */
+  /** "land": positions, normals, coverage, irradiance, geology, T_s, rh_s, theta, fitness; "mosses": positions, normals, species, birth, death, cell, on_moss; "photons": positions, depth (the last day's); "download": bytes (of the last build). */
   buffers(group: string): BufferViews;
+  /** "glb" | "json": the bytes `niwa moss grow --out moss.glb|moss.json` writes for the last run, into buffers("download"); errors name "download". */
+  build(format: string): ErrorText;
   delete(): void;
 }
 
