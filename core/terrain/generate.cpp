@@ -483,6 +483,44 @@ Result<Ring> CheckSeed(const Ring& seed) {
   return r;
 }
 
+Ring ResampleSeed(const Ring& seed, const Ring& checked, double d) {
+  const std::size_t n_in = seed.size();
+  if (n_in < 3 || !(d > 0)) return checked;
+  std::vector<double> at(n_in + 1, 0.0);  // arc length at each vertex (at[n_in]: the perimeter)
+  for (std::size_t i = 0; i < n_in; ++i) at[i + 1] = at[i] + EdgeLen(seed[i], seed[(i + 1) % n_in]);
+  const double perimeter = at[n_in];
+  if (!(perimeter > 0)) return checked;
+  double spacing = kSeedSpacingShare * d;
+  for (int attempt = 0; attempt < 5; ++attempt, spacing *= 0.5) {
+    const double want = std::round(perimeter / spacing);
+    if (attempt > 0 && want > static_cast<double>(kMaxSeedSamples)) break;
+    const std::size_t n = static_cast<std::size_t>(std::clamp(
+        want, static_cast<double>(kMinSeedSamples), static_cast<double>(kMaxSeedSamples)));
+    const double h = perimeter / static_cast<double>(n);
+    IRing grid;
+    grid.reserve(n);
+    std::size_t edge = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double s = h * static_cast<double>(k);
+      while (edge + 1 < n_in && at[edge + 1] <= s) ++edge;
+      const Vec2& a = seed[edge];
+      const Vec2& b = seed[(edge + 1) % n_in];
+      const double len = at[edge + 1] - at[edge];
+      const double t = len > 0 ? (s - at[edge]) / len : 0.0;
+      const IRing p = ToGrid(Ring{{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}});
+      if (grid.empty() || !(p[0] == grid.back())) grid.push_back(p[0]);
+    }
+    while (grid.size() > 1 && grid.back() == grid.front()) grid.pop_back();
+    if (grid.size() < 3) break;
+    // Counter-clockwise as CheckSeed makes it, with the points on straight runs kept (Normalise
+    // would drop them, and d0 with them: the straight-edged seeds).
+    if (TwiceArea(grid) < 0) std::reverse(grid.begin(), grid.end());
+    Ring out = FromGrid(grid);
+    if (CheckSeed(out).ok()) return out;
+  }
+  return checked;
+}
+
 Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_seed,
                      const TerrainGrowLimits* limits, const GrowWatch& watch) {
   NIWA_RETURN_IF_ERROR(CheckTerrainParams(p));

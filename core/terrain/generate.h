@@ -61,6 +61,21 @@ inline constexpr double kSliverAreaShare = 0.01;
 
 struct TerrainGrowLimits;  // terrain_budget.h
 
+// Issue 31: the seed at a uniform arc length, so that a mountain need not depend on how the user
+// happened to sample the line (a square given by its 4 corners has d0 = its side and gets no
+// midpoint displacement; the same square densified gets plenty). The spacing is
+// kSeedSpacingShare·d, with at least kMinSeedSamples and at most kMaxSeedSamples points; the walk
+// starts at vertex 0. NOT YET APPLIED by Grow (docs/terrain-model.md "Seed sampling": wired in, it
+// broke 7 budget and quality tests whose estimates assume today's vertex counts).
+inline constexpr double kSeedSpacingShare = 0.25;
+inline constexpr std::size_t kMinSeedSamples = 16;
+inline constexpr std::size_t kMaxSeedSamples = 50000;
+// `seed` as given (its doubles, so a densified copy walks the same line) resampled as above, on
+// the grid, counter-clockwise, points on straight runs kept; `checked` is CheckSeed(seed). Where
+// chords across a narrow neck or tip make it self-intersect, the spacing is halved (up to 4
+// times, within kMaxSeedSamples); if none is simple, `checked`.
+Ring ResampleSeed(const Ring& seed, const Ring& checked, double d);
+
 // Called before each contour is shrunk (or enlarged below the seed) with the level it grows (1, 2,
 // ...; −1, −2, ... below the seed); false cancels: Grow returns run::CancelledStatus().
 using GrowWatch = std::function<bool(int level)>;
