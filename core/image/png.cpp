@@ -132,6 +132,23 @@ void FilterRow(int filter, const unsigned char* row, const unsigned char* prior,
   }
 }
 
+// stb_image's RGBA8 decode of a PNG or JPEG whose header was checked; `kind` ("PNG", "JPEG")
+// names the format in the error.
+Result<Rgba8Image> StbDecodeRgba8(const unsigned char* data, std::size_t size, const char* kind) {
+  int w = 0, h = 0, channels = 0;
+  stbi_uc* pixels = stbi_load_from_memory(data, static_cast<int>(size), &w, &h, &channels, 4);
+  if (pixels == nullptr) {
+    return Status::Error("", std::string("corrupt ") + kind + " (" + stbi_failure_reason() + ")");
+  }
+  Rgba8Image image;
+  image.width = w;
+  image.height = h;
+  image.pixels.assign(pixels,
+                      pixels + 4 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  stbi_image_free(pixels);
+  return image;
+}
+
 }  // namespace
 
 uint32_t Crc32(const unsigned char* data, std::size_t size, uint32_t crc) {
@@ -306,18 +323,8 @@ Result<Gray16Image> DecodeGray16Png(const unsigned char* data, std::size_t size,
 Result<Rgba8Image> DecodeRgba8Png(const unsigned char* data, std::size_t size, PngInfo* info) {
   Result<PngInfo> header = ReadPngInfo(data, size);
   if (!header.ok()) return header.status();
-  int w = 0, h = 0, channels = 0;
-  stbi_uc* pixels = stbi_load_from_memory(data, static_cast<int>(size), &w, &h, &channels, 4);
-  if (pixels == nullptr) {
-    return Status::Error("", std::string("corrupt PNG (") + stbi_failure_reason() + ")");
-  }
-  Rgba8Image image;
-  image.width = w;
-  image.height = h;
-  image.pixels.assign(pixels,
-                      pixels + 4 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
-  stbi_image_free(pixels);
-  if (info != nullptr) *info = std::move(header).value();
+  Result<Rgba8Image> image = StbDecodeRgba8(data, size, "PNG");
+  if (image.ok() && info != nullptr) *info = std::move(header).value();
   return image;
 }
 
@@ -375,19 +382,8 @@ Result<Rgba8Image> DecodeRgba8PngOrJpeg(const unsigned char* data, std::size_t s
                                  " pixels; width and height must be in [1, 65535] with at most " +
                                  std::to_string(max_pixels) + " pixels");
   }
-  int w = 0, h = 0, channels = 0;
-  stbi_uc* pixels = stbi_load_from_memory(data, static_cast<int>(size), &w, &h, &channels, 4);
-  if (pixels == nullptr) {
-    const char* kind = SniffImageFormat(data, size) == ImageFormat::kPng ? "PNG" : "JPEG";
-    return Status::Error("", std::string("corrupt ") + kind + " (" + stbi_failure_reason() + ")");
-  }
-  Rgba8Image image;
-  image.width = w;
-  image.height = h;
-  image.pixels.assign(pixels,
-                      pixels + 4 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
-  stbi_image_free(pixels);
-  return image;
+  return StbDecodeRgba8(data, size,
+                        SniffImageFormat(data, size) == ImageFormat::kPng ? "PNG" : "JPEG");
 }
 
 }  // namespace niwa::image

@@ -479,6 +479,20 @@ Result<LodMesh> BuildLevel(const Tree& tree, long max_triangles, const LodOption
   return out;
 }
 
+// A level's cards or twigs (flat buffers) as a glTF primitive's mesh: positions, normals, the
+// uvs when asked (the cards'; the twigs have none) and the indices.
+void AppendPrimitiveMesh(const MeshBuffers& from, bool with_uvs, gltf::Primitive* to) {
+  const std::size_t n = from.vertex_count();
+  for (std::size_t v = 0; v < n; ++v) {
+    to->mesh.positions.push_back(
+        {from.positions[3 * v], from.positions[3 * v + 1], from.positions[3 * v + 2]});
+    to->mesh.normals.push_back(
+        {from.normals[3 * v], from.normals[3 * v + 1], from.normals[3 * v + 2]});
+    if (with_uvs) to->mesh.uvs.push_back({from.uvs[2 * v], from.uvs[2 * v + 1]});
+  }
+  to->mesh.indices = from.indices;
+}
+
 }  // namespace
 
 Result<LodMesh> BuildLodMesh(const Tree& tree, long max_triangles, const LodOptions& options,
@@ -569,16 +583,7 @@ Result<gltf::Document> LodGltfDocument(const std::vector<LodMesh>& levels, const
       material.roughness_factor = 0.8;
       doc.materials.push_back(std::move(material));
       gltf::Primitive cards;
-      const std::size_t n = level.cards.vertex_count();
-      for (std::size_t v = 0; v < n; ++v) {
-        cards.mesh.positions.push_back({level.cards.positions[3 * v],
-                                        level.cards.positions[3 * v + 1],
-                                        level.cards.positions[3 * v + 2]});
-        cards.mesh.normals.push_back({level.cards.normals[3 * v], level.cards.normals[3 * v + 1],
-                                      level.cards.normals[3 * v + 2]});
-        cards.mesh.uvs.push_back({level.cards.uvs[2 * v], level.cards.uvs[2 * v + 1]});
-      }
-      cards.mesh.indices = level.cards.indices;
+      AppendPrimitiveMesh(level.cards, /*with_uvs=*/true, &cards);
       cards.material = static_cast<int>(doc.materials.size()) - 1;
       mesh.primitives.push_back(std::move(cards));
     }
@@ -595,15 +600,7 @@ Result<gltf::Document> LodGltfDocument(const std::vector<LodMesh>& levels, const
         twigs_material = static_cast<int>(doc.materials.size()) - 1;
       }
       gltf::Primitive twigs;
-      const std::size_t n = level.twigs.vertex_count();
-      for (std::size_t v = 0; v < n; ++v) {
-        twigs.mesh.positions.push_back({level.twigs.positions[3 * v],
-                                        level.twigs.positions[3 * v + 1],
-                                        level.twigs.positions[3 * v + 2]});
-        twigs.mesh.normals.push_back({level.twigs.normals[3 * v], level.twigs.normals[3 * v + 1],
-                                      level.twigs.normals[3 * v + 2]});
-      }
-      twigs.mesh.indices = level.twigs.indices;
+      AppendPrimitiveMesh(level.twigs, /*with_uvs=*/false, &twigs);
       twigs.material = twigs_material;
       mesh.primitives.push_back(std::move(twigs));
     }
