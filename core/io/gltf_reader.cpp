@@ -18,6 +18,7 @@
 
 #include "image/png.h"
 #include "io/gltf_preflight.h"
+#include "math/det_math.h"
 #include "io/tinygltf.h"  // declarations only: the implementation is io/tinygltf_impl.cpp
 
 #ifdef NIWA_HAVE_DRACO
@@ -161,6 +162,7 @@ struct LocalPrimitive {
   std::vector<glm::dvec3> normals;  // empty or one per position
   std::vector<glm::vec2> uvs;       // empty or one per position
   std::vector<glm::vec4> colors;    // empty or one per position (COLOR_0)
+  std::vector<glm::vec2> base_uvs;  // TEXCOORD_<set> of the material's baseColorTexture, or empty
   std::vector<uint32_t> indices;    // the primitive's index list (or 0..n-1), before mode assembly
 };
 
@@ -172,6 +174,27 @@ struct AccessorView {
   int components = 0;
   int component_type = 0;
   bool normalized = false;
+};
+
+// Where a material's baseColorTexture is sampled: its UV set (-1: the material has no
+// baseColorTexture) and its KHR_texture_transform (glTF: uv' = T(offset) * R(rotation) * S(scale)
+// * uv; the extension's texCoord overrides textureInfo.texCoord).
+struct BaseColorUv {
+  int set = -1;
+  bool transform = false;
+  double offset[2] = {0.0, 0.0};
+  double rotation = 0.0;
+  double scale[2] = {1.0, 1.0};
+  double sin_r = 0.0, cos_r = 1.0;  // of rotation (det_math: the same bits in every build)
+  std::string label;                // "material 0 'ground' baseColorTexture"
+  // The transformed UV, in double then rounded to float as the attribute keeps it.
+  glm::vec2 Apply(const glm::vec2& uv) const {
+    if (!transform) return uv;
+    const double u = uv.x, v = uv.y;
+    const double su = scale[0] * u, sv = scale[1] * v;
+    return glm::vec2(static_cast<float>(cos_r * su + sin_r * sv + offset[0]),
+                     static_cast<float>(-sin_r * su + cos_r * sv + offset[1]));
+  }
 };
 
 class Reader {
@@ -205,6 +228,16 @@ class Reader {
   // Every material with its baseColorTexture's image (bounds, format and declared size checked).
   Status ReadMaterials(std::vector<MeshMaterial>* materials, std::vector<MeshImage>* images) const;
   Status ReadImage(int index, MeshImage* out) const;
+  // Every material's BaseColorUv (texCoord and KHR_texture_transform checked) into base_uv_.
+  Status ReadBaseColorUvs();
+  // The BaseColorUv of a primitive's material (nullptr: no material or no baseColorTexture).
+  const BaseColorUv* BaseColorUvOf(int material) const {
+    if (material < 0 || static_cast<std::size_t>(material) >= base_uv_.size()) return nullptr;
+    const BaseColorUv& b = base_uv_[static_cast<std::size_t>(material)];
+    return b.set >= 0 ? &b : nullptr;
+  }
+  // The attribute name of a UV set ("TEXCOORD_1").
+  static std::string TexCoordName(int set) { return "TEXCOORD_" + std::to_string(set); }
 
   const tinygltf::Model& model_;
   std::string name_;
@@ -215,6 +248,9 @@ class Reader {
   geom::TriMesh mesh_;
   bool all_normals_ = true, all_uvs_ = true, any_color_ = false;
   std::vector<float> colors_, materials_;  // per vertex: kColorAttribute, kMaterialAttribute
+  std::vector<float> base_uv_values_;      // per vertex: kBaseColorUvAttribute (2 floats)
+  bool any_base_uv_ = false;               // some primitive's material has a baseColorTexture
+  std::vector<BaseColorUv> base_uv_;       // per material
   std::size_t triangle_primitives_ = 0, line_point_primitives_ = 0;
   std::vector<bool> on_path_;  // nodes on the current root-to-node path (cycle check)
   bool counting_ = false;      // first pass: count triangles only
@@ -404,6 +440,15 @@ Status Reader::ReadDraco(int mesh, int prim, const tinygltf::Value& ext, LocalPr
   const draco::PointAttribute* nrm = attribute("NORMAL");
   const draco::PointAttribute* uv = attribute("TEXCOORD_0");
   const draco::PointAttribute* color = attribute("COLOR_0");
+  const int material_index =
+      model_.meshes[static_cast<std::size_t>(mesh)].primitives[static_cast<std::size_t>(prim)].material;
+  const BaseColorUv* base_uv = BaseColorUvOf(material_index);
+  const draco::PointAttribute* base =
+      base_uv != nullptr ? attribute(TexCoordName(base_uv->set).c_str()) : nullptr;
+  if (base_uv != nullptr && (base == nullptr || base->num_components() < 2)) {
+    return Error(label + ": " + base_uv->label + " reads " + TexCoordName(base_uv->set) +
+                 ", which the primitive does not have");
+  }
   const std::size_t n = dm->num_points();
   if (n > kMaxMeshVertices || dm->num_faces() > kMaxMeshTriangles) {
     return Error(label + ": the Draco data decodes to " + std::to_string(n) + " vertices and " +
@@ -414,6 +459,7 @@ Status Reader::ReadDraco(int mesh, int prim, const tinygltf::Value& ext, LocalPr
   if (nrm != nullptr && nrm->num_components() >= 3) local->normals.resize(n);
   if (uv != nullptr && uv->num_components() >= 2) local->uvs.resize(n);
   if (color != nullptr && color->num_components() >= 3) local->colors.resize(n);
+  if (base != nullptr) local->base_uvs.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     draco::PointIndex point(static_cast<uint32_t>(i));
     float v[3];
@@ -426,6 +472,10 @@ Status Reader::ReadDraco(int mesh, int prim, const tinygltf::Value& ext, LocalPr
     if (!local->uvs.empty()) {
       uv->ConvertValue<float>(uv->mapped_index(point), 2, v);
       local->uvs[i] = glm::vec2(v[0], v[1]);
+    }
+    if (!local->base_uvs.empty()) {
+      base->ConvertValue<float>(base->mapped_index(point), 2, v);
+      local->base_uvs[i] = glm::vec2(v[0], v[1]);
     }
     if (!local->colors.empty()) {
       float c[4] = {1.0f, 1.0f, 1.0f, 1.0f};
@@ -508,6 +558,25 @@ Status Reader::ReadPrimitive(int mesh, int prim, LocalPrimitive* local) {
       }
     }
   }
+  if (const BaseColorUv* base_uv = BaseColorUvOf(p.material); base_uv != nullptr) {
+    const std::string set = TexCoordName(base_uv->set);
+    auto base_it = p.attributes.find(set);
+    if (base_it == p.attributes.end()) {
+      return Error(label + ": " + base_uv->label + " reads " + set +
+                   ", which the primitive does not have");
+    }
+    AccessorView base;
+    NIWA_RETURN_IF_ERROR(View(base_it->second, label + " " + set, &base));
+    if (base.components != 2 || base.count != pos.count) {
+      return Error(label + " " + set + " (read by " + base_uv->label + ") must be VEC2 with " +
+                   std::to_string(pos.count) + " elements, one per POSITION");
+    }
+    local->base_uvs.resize(pos.count);
+    for (std::size_t i = 0; i < pos.count; ++i) {
+      local->base_uvs[i] = glm::vec2(static_cast<float>(Component(base, i, 0)),
+                                     static_cast<float>(Component(base, i, 1)));
+    }
+  }
   if (p.indices >= 0) {
     AccessorView idx;
     NIWA_RETURN_IF_ERROR(View(p.indices, label + " indices", &idx));
@@ -557,6 +626,8 @@ Status Reader::AddMesh(int mesh_index, const glm::dmat4& world) {
     if (stats_ != nullptr) ++stats_->primitives;
     const std::string label = MeshLabel(mesh_index, prim);
     const std::size_t n = local.positions.size();
+    const BaseColorUv* base_uv_of = BaseColorUvOf(material);
+    if (base_uv_of != nullptr) any_base_uv_ = true;
     for (std::size_t i = 0; i < local.indices.size(); ++i) {
       if (local.indices[i] >= n) {
         return Error(label + " index " + std::to_string(local.indices[i]) +
@@ -630,6 +701,20 @@ Status Reader::AddMesh(int mesh_index, const glm::dmat4& world) {
           return Error(label + " COLOR_0 " + std::to_string(i) + " is NaN or infinite");
         }
       }
+      glm::vec2 base_uv(0.0f);
+      if (base_uv_of != nullptr) {
+        const glm::vec2& lb = local.base_uvs[i];
+        base_uv = base_uv_of->Apply(lb);
+        if (!std::isfinite(lb.x) || !std::isfinite(lb.y)) {
+          return Error(label + " " + TexCoordName(base_uv_of->set) + " " + std::to_string(i) +
+                       " is NaN or infinite");
+        }
+        if (!std::isfinite(base_uv.x) || !std::isfinite(base_uv.y)) {
+          return Error(label + " " + TexCoordName(base_uv_of->set) + " " + std::to_string(i) +
+                       " is infinite after " + base_uv_of->label + "'s KHR_texture_transform");
+        }
+      }
+      base_uv_values_.insert(base_uv_values_.end(), {base_uv.x, base_uv.y});
       mesh_.normals.push_back(glm::vec3(wn));
       mesh_.uvs.push_back(local.uvs.empty() ? glm::vec2(0.0f) : local.uvs[i]);
       const glm::vec4 c = local.colors.empty() ? glm::vec4(1.0f) : local.colors[i];
@@ -797,6 +882,68 @@ Status Reader::ReadImage(int index, MeshImage* out) const {
   return Status::Ok();
 }
 
+Status Reader::ReadBaseColorUvs() {
+  base_uv_.assign(model_.materials.size(), BaseColorUv{});
+  for (std::size_t mi = 0; mi < model_.materials.size(); ++mi) {
+    const tinygltf::Material& m = model_.materials[mi];
+    const tinygltf::TextureInfo& info = m.pbrMetallicRoughness.baseColorTexture;
+    if (info.index < 0) continue;
+    BaseColorUv& b = base_uv_[mi];
+    b.label = "material " + std::to_string(mi) + (m.name.empty() ? "" : " '" + m.name + "'") +
+              " baseColorTexture";
+    // A set above 31 is refused with the rest: no primitive can have it under the preflight's
+    // attribute limits, and the number stays short in the error line.
+    auto check_set = [&](int set, const std::string& where) -> Status {
+      if (set < 0 || set > 31) {
+        return Error(b.label + (where.empty() ? "" : " " + where) + " texCoord " +
+                     std::to_string(set) +
+                     " is out of range; must be an integer in [0, 31]");
+      }
+      return Status::Ok();
+    };
+    NIWA_RETURN_IF_ERROR(check_set(info.texCoord, ""));
+    b.set = info.texCoord;
+    auto ext = info.extensions.find("KHR_texture_transform");
+    if (ext == info.extensions.end()) continue;
+    const tinygltf::Value& t = ext->second;
+    const std::string where = b.label + " KHR_texture_transform";
+    if (!t.IsObject()) return Error(where + " must be an object");
+    auto pair = [&](const char* key, double* out) -> Status {
+      if (!t.Has(key)) return Status::Ok();
+      const tinygltf::Value& v = t.Get(key);
+      if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber() ||
+          !std::isfinite(v.Get(0).GetNumberAsDouble()) ||
+          !std::isfinite(v.Get(1).GetNumberAsDouble())) {
+        return Error(where + " " + key + " must be two finite numbers");
+      }
+      out[0] = v.Get(0).GetNumberAsDouble();
+      out[1] = v.Get(1).GetNumberAsDouble();
+      return Status::Ok();
+    };
+    NIWA_RETURN_IF_ERROR(pair("offset", b.offset));
+    NIWA_RETURN_IF_ERROR(pair("scale", b.scale));
+    if (t.Has("rotation")) {
+      const tinygltf::Value& r = t.Get("rotation");
+      if (!r.IsNumber() || !std::isfinite(r.GetNumberAsDouble())) {
+        return Error(where + " rotation must be a finite number (radians)");
+      }
+      b.rotation = r.GetNumberAsDouble();
+    }
+    if (t.Has("texCoord")) {
+      const tinygltf::Value& c = t.Get("texCoord");
+      if (!c.IsInt()) {
+        return Error(where + " texCoord must be an integer in [0, 31]");
+      }
+      NIWA_RETURN_IF_ERROR(check_set(c.GetNumberAsInt(), "KHR_texture_transform"));
+      b.set = c.GetNumberAsInt();
+    }
+    det::SinCos(b.rotation, &b.sin_r, &b.cos_r);
+    b.transform = b.offset[0] != 0.0 || b.offset[1] != 0.0 || b.rotation != 0.0 ||
+                  b.scale[0] != 1.0 || b.scale[1] != 1.0;
+  }
+  return Status::Ok();
+}
+
 Status Reader::ReadMaterials(std::vector<MeshMaterial>* materials,
                              std::vector<MeshImage>* images) const {
   images->assign(model_.images.size(), MeshImage{});
@@ -841,8 +988,18 @@ Status Reader::ReadMaterials(std::vector<MeshMaterial>* materials,
         NIWA_RETURN_IF_ERROR(ReadImage(source, &(*images)[static_cast<std::size_t>(source)]));
         read[static_cast<std::size_t>(source)] = true;
       }
-      if (info.texCoord == 0 && !(*images)[static_cast<std::size_t>(source)].bytes.empty()) {
+      if (!(*images)[static_cast<std::size_t>(source)].bytes.empty()) {
         material.base_color_image = source;
+      }
+      if (mi < base_uv_.size() && base_uv_[mi].set >= 0) {
+        const BaseColorUv& b = base_uv_[mi];
+        material.base_color_tex_coord = b.set;
+        material.has_uv_transform = b.transform;
+        material.uv_offset[0] = b.offset[0];
+        material.uv_offset[1] = b.offset[1];
+        material.uv_rotation = b.rotation;
+        material.uv_scale[0] = b.scale[0];
+        material.uv_scale[1] = b.scale[1];
       }
       if (texture.sampler >= 0 &&
           static_cast<std::size_t>(texture.sampler) < model_.samplers.size()) {
@@ -865,6 +1022,7 @@ Status Reader::Run(geom::TriMesh* out) {
     if (ext == kDraco || ExtensionIsHarmless(ext)) continue;
     return Error("required extension " + ext + " is not supported");
   }
+  NIWA_RETURN_IF_ERROR(ReadBaseColorUvs());
   counting_ = true;
   NIWA_RETURN_IF_ERROR(VisitScene());
   if (counted_ > kMaxMeshTriangles) {
@@ -872,6 +1030,11 @@ Status Reader::Run(geom::TriMesh* out) {
                  std::to_string(kMaxMeshTriangles) + " (4 M)");
   }
   counting_ = false;
+  // The materials and their images before the triangles: a texture's own fault is named before a
+  // primitive's missing UV set for it.
+  std::vector<MeshMaterial> materials;
+  std::vector<MeshImage> images;
+  NIWA_RETURN_IF_ERROR(ReadMaterials(&materials, &images));
   NIWA_RETURN_IF_ERROR(VisitScene());
   if (triangle_primitives_ == 0) {
     if (line_point_primitives_ > 0) {
@@ -887,9 +1050,9 @@ Status Reader::Run(geom::TriMesh* out) {
     mesh_.attributes.push_back({kMaterialAttribute, 1, std::move(materials_)});
   }
   if (any_color_) mesh_.attributes.push_back({kColorAttribute, 4, std::move(colors_)});
-  std::vector<MeshMaterial> materials;
-  std::vector<MeshImage> images;
-  NIWA_RETURN_IF_ERROR(ReadMaterials(&materials, &images));
+  if (any_base_uv_) {
+    mesh_.attributes.push_back({kBaseColorUvAttribute, 2, std::move(base_uv_values_)});
+  }
   if (stats_ != nullptr) {
     stats_->materials = std::move(materials);
     stats_->images = std::move(images);

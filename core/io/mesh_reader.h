@@ -38,10 +38,19 @@ struct MeshMaterial {
   std::string name;
   glm::vec4 base_color{1.0f};  // linear RGBA, glTF default (1, 1, 1, 1)
   bool ivy_support = true;     // extras.niwa_ivy, default true
-  // Index in MeshReadStats::images of the baseColorTexture's image read with TEXCOORD_0; -1 when
-  // the material has none or it uses another texCoord set.
+  // Index in MeshReadStats::images of the baseColorTexture's image (any texCoord set); -1 when
+  // the material has none or its image has no bytes (a format this build does not decode).
   int base_color_image = -1;
   int wrap_s = kWrapRepeat, wrap_t = kWrapRepeat;
+  // The baseColorTexture's UV set (textureInfo.texCoord, or KHR_texture_transform's texCoord,
+  // which overrides it) and its KHR_texture_transform (glTF spec: uv' = T(offset) * R(rotation) *
+  // S(scale) * uv, rotation in radians counter-clockwise in UV space). The reader has already
+  // applied both to kBaseColorUvAttribute; they are kept for the record.
+  int base_color_tex_coord = 0;
+  bool has_uv_transform = false;
+  double uv_offset[2] = {0.0, 0.0};
+  double uv_rotation = 0.0;
+  double uv_scale[2] = {1.0, 1.0};
 };
 
 // Per-vertex attributes the glTF reader adds to the TriMesh (vertices are never shared across
@@ -50,6 +59,11 @@ inline constexpr const char* kMaterialAttribute =
     "material";  // 1 float: index in materials, -1 none
 inline constexpr const char* kColorAttribute =
     "color";  // 4 floats: COLOR_0 RGBA, (1,1,1,1) if absent
+// 2 floats: where the vertex's material's baseColorTexture is sampled, TEXCOORD_<texCoord> with
+// its KHR_texture_transform applied ((0, 0) on a vertex whose material has no baseColorTexture).
+// Present when some triangle primitive's material has a baseColorTexture; such a primitive without
+// that UV set is refused (the glTF validator's MESH_PRIMITIVE_TOO_FEW_TEXCOORDS).
+inline constexpr const char* kBaseColorUvAttribute = "base_color_uv";
 
 // What a reader saw beside the triangles it kept.
 struct MeshReadStats {

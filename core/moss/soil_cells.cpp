@@ -152,8 +152,12 @@ Result<MossScene> SceneFromMesh(const geom::TriMesh& mesh,
   scene.description = "a loaded mesh";
   const geom::VertexAttribute* colour = mesh.FindAttribute(io::kColorAttribute);
   const geom::VertexAttribute* material = mesh.FindAttribute(io::kMaterialAttribute);
-  // The base colour textures the faces use, decoded once each (image index -> scene texture).
-  const bool has_uvs = mesh.uvs.size() == mesh.positions.size();
+  // The base colour textures the faces use, decoded once each (image index -> scene texture),
+  // sampled where the reader put each vertex's baseColorTexture UV (its texCoord set with its
+  // KHR_texture_transform applied).
+  const geom::VertexAttribute* base_uv = mesh.FindAttribute(io::kBaseColorUvAttribute);
+  const bool has_uvs = base_uv != nullptr && base_uv->components == 2 &&
+                       base_uv->values.size() == 2 * mesh.positions.size();
   std::vector<int32_t> texture_of_material(materials.size(), -1);
   for (std::size_t mi = 0; mi < materials.size() && has_uvs; ++mi) {
     const int image_index = materials[mi].base_color_image;
@@ -212,7 +216,10 @@ Result<MossScene> SceneFromMesh(const geom::TriMesh& mesh,
     if (textured) {
       scene.texture.push_back(texture);
       scene.tint.push_back(linear);
-      for (int k = 0; k < 3; ++k) scene.corner_uv.push_back(mesh.uvs[mesh.indices[3 * t + k]]);
+      for (int k = 0; k < 3; ++k) {
+        const std::size_t v = mesh.indices[3 * t + k];
+        scene.corner_uv.emplace_back(base_uv->values[2 * v], base_uv->values[2 * v + 1]);
+      }
     }
   }
   return scene;

@@ -68,10 +68,11 @@ bool GeologyOfMaterialName(const std::string& name, Geology* geology);
 // A loaded mesh as a scene: each triangle's geology from its material's name, else the glTF base
 // colour turned to sRGB: the material's baseColorFactor times the mean of its corners' COLOR_0
 // (io/mesh_reader.h kColorAttribute, linear) times, for a material with a base colour texture (a
-// PNG or JPEG of `images`, read with TEXCOORD_0), the texel at each soil cell's centroid UV
-// (MakeSoilCells samples it); no material and no colour: humus; one region "all". Errors name
-// `name`: a texture that does not decode (io read its header only). A textured material on a mesh
-// without TEXCOORD_0 on every primitive (io drops them all then) keeps the untextured colour.
+// PNG or JPEG of `images`), the texel at each soil cell's centroid UV (MakeSoilCells samples it;
+// the UVs are io's kBaseColorUvAttribute: the texture's texCoord set with its
+// KHR_texture_transform applied); no material and no colour: humus; one region "all". Errors name
+// `name`: a texture that does not decode (io read its header only). A mesh without that attribute
+// (no textured material) keeps the untextured colour.
 Result<MossScene> SceneFromMesh(const geom::TriMesh& mesh,
                                 const std::vector<io::MeshMaterial>& materials,
                                 const std::string& name,

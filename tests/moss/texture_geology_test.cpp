@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -298,6 +300,105 @@ TEST(MossTextureGeology, AGltfsImageFileBesideIt) {
   EXPECT_EQ(missing.status().field(), "t.gltf");
   EXPECT_NE(missing.status().message().find("gone.png"), std::string::npos)
       << missing.status().Line();
+}
+
+// KHR_texture_transform and a texCoord other than 0 (glTF spec: uv' = T(offset) * R(rotation) *
+// S(scale) * uv on TEXCOORD_<texCoord>, the extension's texCoord overriding the textureInfo's):
+// tests/support/make_texture_transform_meshes.mjs's squares, each split by its own seam. Every cell
+// off the seam (1e-6 m) has the geology of its side; the counts are those of the sides (a cell on a
+// seam samples whatever texel its UV rounds to, so the counts allow for those only).
+TEST(MossTextureGeology, TextureTransformAndTexCoordMoveTheSeam) {
+  struct Case {
+    const char* file;
+    int tex_coord;
+    bool transform;
+    // true where the cell's centroid (x, z) is humus; `seam` true within 1e-6 of a seam
+    bool (*humus)(double x, double z);
+    bool (*seam)(double x, double z);
+  };
+  const Case cases[] = {
+      {"texture_offset.glb", 0, true, [](double x, double) { return x < -0.5; },
+       [](double x, double) { return std::abs(x + 0.5) < 1e-6; }},
+      {"texture_scale.glb", 0, true,
+       [](double x, double) { return x < -0.5 || (x >= 0 && x < 0.5); },
+       [](double x, double) {
+         return std::abs(x + 0.5) < 1e-6 || std::abs(x) < 1e-6 || std::abs(x - 0.5) < 1e-6;
+       }},
+      {"texture_rotation.glb", 0, true, [](double, double z) { return z < 0; },
+       [](double, double z) { return std::abs(z) < 1e-6; }},
+      {"texture_texcoord1.glb", 1, false, [](double, double z) { return z < 0; },
+       [](double, double z) { return std::abs(z) < 1e-6; }},
+      {"texture_transform_texcoord1.glb", 1, true, [](double, double z) { return z < -0.5; },
+       [](double, double z) { return std::abs(z + 0.5) < 1e-6; }},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.file);
+    io::MeshReadStats read;
+    Result<geom::TriMesh> mesh = io::ReadMeshFile(MeshPath(c.file), &read);
+    ASSERT_TRUE(mesh.ok()) << mesh.status().Line();
+    ASSERT_EQ(read.materials.size(), 1u);
+    EXPECT_EQ(read.materials[0].base_color_image, 0);
+    EXPECT_EQ(read.materials[0].base_color_tex_coord, c.tex_coord);
+    EXPECT_EQ(read.materials[0].has_uv_transform, c.transform);
+    ASSERT_NE(mesh->FindAttribute(io::kBaseColorUvAttribute), nullptr);
+    const MossScene scene = SceneFromMesh(*mesh, read.materials, c.file, read.images).value();
+    const SoilCells cells = MakeSoilCells(scene, SoilCellOptions{}).value();
+    std::size_t want_humus = 0, want_sandy = 0, on_seam = 0, wrong = 0;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      const double x = cells.centroid[i].x, z = cells.centroid[i].z;
+      if (c.seam(x, z)) {
+        ++on_seam;
+        continue;
+      }
+      const Geology want = c.humus(x, z) ? Geology::kHumus : Geology::kSandy;
+      (want == Geology::kHumus ? want_humus : want_sandy) += 1;
+      wrong += cells.geology[i] != want;
+    }
+    EXPECT_EQ(wrong, 0u);
+    std::map<Geology, std::size_t> count = CountGeology(cells);
+    EXPECT_EQ(count[Geology::kAsphalt], 0u);
+    EXPECT_GE(count[Geology::kHumus], want_humus);
+    EXPECT_LE(count[Geology::kHumus], want_humus + on_seam);
+    EXPECT_EQ(count[Geology::kHumus] + count[Geology::kSandy], cells.size());
+    EXPECT_GT(want_humus, 0u);
+    EXPECT_GT(want_sandy, 0u);
+    std::printf("%s: %zu cells, humus %zu, sandy %zu (%zu on a seam)\n", c.file, cells.size(),
+                count[Geology::kHumus], count[Geology::kSandy], on_seam);
+  }
+}
+
+// The transform applied by hand to textured.glb's TEXCOORD_0 (offset, rotation, scale in the
+// spec's order T * R * S), and a texCoord naming a UV set the primitive does not have refused in one
+// line naming the material and the set.
+TEST(MossTextureGeology, TheTransformIsTheSpecsAndAMissingSetIsRefused) {
+  io::MeshReadStats plain, shifted;
+  const geom::TriMesh a = io::ReadMeshFile(MeshPath("textured.glb"), &plain).value();
+  const geom::TriMesh b = io::ReadMeshFile(MeshPath("texture_rotation.glb"), &shifted).value();
+  const geom::VertexAttribute* ua = a.FindAttribute(io::kBaseColorUvAttribute);
+  const geom::VertexAttribute* ub = b.FindAttribute(io::kBaseColorUvAttribute);
+  ASSERT_NE(ua, nullptr);
+  ASSERT_NE(ub, nullptr);
+  ASSERT_EQ(ua->values.size(), ub->values.size());
+  // No transform: the attribute is TEXCOORD_0 itself, bit for bit.
+  for (std::size_t v = 0; v < a.vertex_count(); ++v) {
+    EXPECT_EQ(ua->values[2 * v], a.uvs[v].x);
+    EXPECT_EQ(ua->values[2 * v + 1], a.uvs[v].y);
+  }
+  // Rotation pi/2: u' = cos r u + sin r v = v, v' = -sin r u + cos r v = -u.
+  for (std::size_t v = 0; v < b.vertex_count(); ++v) {
+    EXPECT_NEAR(ub->values[2 * v], b.uvs[v].y, 1e-6);
+    EXPECT_NEAR(ub->values[2 * v + 1], -b.uvs[v].x, 1e-6);
+  }
+  EXPECT_NEAR(shifted.materials[0].uv_rotation, 1.5707963267948966, 1e-15);
+
+  io::MeshReadStats read;
+  Result<geom::TriMesh> missing = io::ReadMeshFile(MeshPath("texture_missing_texcoord.glb"), &read);
+  ASSERT_FALSE(missing.ok());
+  EXPECT_EQ(missing.status().field(), "texture_missing_texcoord.glb");
+  EXPECT_EQ(missing.status().message(),
+            "mesh 0 'ground' primitive 0: material 0 'ground' baseColorTexture reads TEXCOORD_1, "
+            "which the primitive does not have");
+  EXPECT_EQ(missing.status().Line().find('\n'), std::string::npos);
 }
 
 }  // namespace
