@@ -31,7 +31,8 @@
 // .glb/.gltf/.obj, Draco already decoded by the page, read as `niwa moss grow --mesh` reads a
 // file: soil_cells.h SceneFromMesh, geology from its materials, textures and colours) then
 // growOnMesh(stateJson) (MossRun::StartOnScene: the stats say scene "mesh" and the file's name;
-// errors about the mesh name the field "mesh"), meshJson() ({name, triangles} or {}); then
+// errors about the mesh name the field "mesh"), shareMesh(otherLab) (the other lab's mesh, shared:
+// the A/B view), meshJson() ({name, triangles} or {}); then
 // statsJson() (the CLI's `niwa moss grow --stats`, ms* timing fields included), hash(),
 // stateJson(), boundsJson(), buffers(group); build("glb"|"json") then buffers("download"): the
 // bytes of `--out moss.glb` / `--out moss.json`. The state JSON: {preset, scene, days, seed,
@@ -45,6 +46,7 @@
 #include <cmath>
 #include <cstdint>
 #include <glm/common.hpp>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -112,10 +114,18 @@ class MossLab {
     if (!valid.ok()) return ErrorText(valid.Within("mesh"));
     Result<moss::MossScene> scene = moss::SceneFromMesh(*mesh, read.materials, name, read.images);
     if (!scene.ok()) return ErrorText(scene.status().Within("mesh"));
-    mesh_scene_.emplace(std::move(scene).value());
+    mesh_scene_ = std::make_shared<const moss::MossScene>(std::move(scene).value());
     mesh_name_ = name;
     mesh_triangles_ = mesh->triangle_count();
     return "";
+  }
+
+  // Takes the mesh `other` read (the A/B view's second lab grows on run A's dropped mesh): the
+  // same scene, shared, not read or copied again; other without a mesh leaves this lab without one.
+  void shareMesh(const MossLab& other) {
+    mesh_scene_ = other.mesh_scene_;
+    mesh_name_ = other.mesh_name_;
+    mesh_triangles_ = other.mesh_triangles_;
   }
 
   std::string meshJson() const {
@@ -347,7 +357,7 @@ class MossLab {
 
   std::optional<moss::MossRun> run_;
   moss::MossState state_;
-  std::optional<moss::MossScene> mesh_scene_;
+  std::shared_ptr<const moss::MossScene> mesh_scene_;  // shared with another lab by shareMesh
   std::string mesh_name_;
   std::size_t mesh_triangles_ = 0;
   std::vector<float> land_positions_, land_normals_, land_coverage_, land_irradiance_,
@@ -372,6 +382,7 @@ EMSCRIPTEN_BINDINGS(niwa_moss) {
       .function("loadMesh", &niwa::MossLab::loadMesh)
       .function("growOnMesh", &niwa::MossLab::growOnMesh)
       .function("meshJson", &niwa::MossLab::meshJson)
+      .function("shareMesh", &niwa::MossLab::shareMesh)
       .function("statsJson", &niwa::MossLab::statsJson)
       .function("hash", &niwa::MossLab::hash)
       .function("stateJson", &niwa::MossLab::stateJson)

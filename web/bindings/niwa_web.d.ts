@@ -148,6 +148,8 @@ export class MossLab {
   loadMesh(bytes: string, name: string): ErrorText;
   /** grow on the mesh loadMesh read (stats: scene "mesh" and its name). */
   growOnMesh(stateJson: string): ErrorText;
+  /** Takes the mesh another lab read (shared, not read again): the A/B view's second run. */
+  shareMesh(other: MossLab): void;
   /** {name, triangles} of the loaded mesh, or {}. */
   meshJson(): string;
   statsJson(): string;

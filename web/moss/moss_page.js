@@ -12,7 +12,8 @@
 // offers an embed (<niwa-moss>, public/niwa-moss.js, or the iframe) of the page's hash.
 // The A/B view grows a second run beside the first (a second client of the worker, drawn to its
 // right with the same camera, day and overlay): the same state with indirect light switched, or at
-// the other of fig 4.3's temperatures (288.15 / 293.15 K).
+// the other of fig 4.3's temperatures (288.15 / 293.15 K), on the scene or the dropped mesh (the
+// file's bytes go to the worker once, transferred; run B's lab shares the mesh run A's lab read).
 // Does not: parse or check states (the core does; its one line is shown beside its field),
 // export (.glb, moss.json), or draw directly.
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
@@ -262,7 +263,7 @@ worker.on('moss', (msg) => {
   ui.stats.textContent = `${s.scene === 'mesh' ? s.mesh : s.scene || ui.scene.value} · ${lastDay} days · ${m.total} mosses (${m.by_species.gingoke} gingoke, ${m.by_species.haigoke} haigoke, ${m.by_species.sugigoke} sugigoke) · ${m.on_mosses} on mosses · ${msg.bounds.mosses_ever} ever · ${(msg.growMs / 1000).toFixed(1)} s`;
   setHooks({
     status: 'ready', error: '', mossSerial, mosses: m.total, mossesEver: msg.bounds.mosses_ever, days: lastDay,
-    stats: JSON.stringify(s), hash: msg.hash, sceneShown: s.scene === 'mesh' ? `mesh:${s.mesh}` : s.scene, wallMs: msg.wallMs.toFixed(1), growMs: msg.growMs.toFixed(1),
+    stats: JSON.stringify(s), statsText: msg.statsText, hash: msg.hash, sceneShown: s.scene === 'mesh' ? `mesh:${s.mesh}` : s.scene, wallMs: msg.wallMs.toFixed(1), growMs: msg.growMs.toFixed(1),
     buffersReused: msg.bufferCounts?.reused ?? '', buffersFresh: msg.bufferCounts?.fresh ?? '',
   });
   requestFrame();
@@ -299,18 +300,11 @@ function growB() {
     requestFrame();
     return;
   }
-  if (useMesh) {  // the second client has no copy of the dropped mesh
-    rendererB?.clear();
-    ui.compareHelp.textContent = 'The A/B view grows on the built-in scenes; pick a scene to compare.';
-    showOverlay();
-    setHooks({ compare: mode, statusB: 'off' });
-    requestFrame();
-    return;
-  }
   const b = stateB(stateA, mode);
   ui.compareHelp.textContent = `Left: ${sideText(mode, stateA)}; right: growing with ${sideText(mode, b)}…`;
   setHooks({ compare: mode, statusB: 'growing' });
-  clientB.request('update', { state: b, useMesh }, { done: ['moss'] });
+  // On a dropped mesh run B grows on the mesh run A's client read (meshOf: the worker shares it).
+  clientB.request('update', useMesh ? { state: b, useMesh, meshOf: worker.name } : { state: b, useMesh }, { done: ['moss'] });
 }
 
 clientB.on('moss', (msg) => {
@@ -330,7 +324,7 @@ clientB.on('moss', (msg) => {
   bInstalled = bSerial;
   textB = `${sideText(mode, msg.state)}: ${s.mosses.total} mosses`;
   ui.compareHelp.textContent = `Left: ${sideText(mode, stateA)}, ${lastStats?.mosses.total ?? 0} mosses; right: ${textB} (day ${lastDay}).`;
-  setHooks({ statusB: 'ready', serialB: bSerial, hashB: msg.hash, statsB: JSON.stringify(s), mossesB: s.mosses.total });
+  setHooks({ statusB: 'ready', serialB: bSerial, hashB: msg.hash, statsB: JSON.stringify(s), statsTextB: msg.statsText, mossesB: s.mosses.total });
   requestFrame();
 });
 clientB.on('error', (msg) => {
@@ -368,8 +362,11 @@ async function loadMeshFile(file) {
     showMeshError(`mesh: ${String(file.name).slice(0, 60)}: ${e.message}`);
     return;
   }
-  const request = worker.request('mesh', { name: file.name, bytes: bytes.buffer }, { group: 'mesh', done: ['meshLoaded'] });
+  // Moved to the worker, not copied (a view on part of a buffer is cut out first).
+  const buffer = bytes.byteOffset === 0 && bytes.byteLength === bytes.buffer.byteLength ? bytes.buffer : bytes.slice().buffer;
+  const request = worker.request('mesh', { name: file.name, bytes: buffer }, { group: 'mesh', done: ['meshLoaded'], transfer: [buffer] });
   meshRequest = request.id;
+  setHooks({ meshTransferred: buffer.byteLength === 0 ? 'yes' : 'no' });
 }
 
 worker.on('meshLoaded', (msg) => {

@@ -104,8 +104,9 @@ export class WorkerClient {
 
   // Sends a request with a fresh id; a newer request of the same `group` supersedes it (its later
   // replies are dropped and its promise resolves to null). Resolves to the first reply whose type
-  // is in `done` (or an 'error' with this id). Returns {id, reply}.
-  request(type, fields = {}, { group = type, done = [] } = {}) {
+  // is in `done` (or an 'error' with this id). transfer: ArrayBuffers of `fields` moved to the
+  // worker, not copied (the caller must not read them after). Returns {id, reply}.
+  request(type, fields = {}, { group = type, done = [], transfer = [] } = {}) {
     if (this.isClosed) return { id: 0, reply: Promise.resolve(null) };
     const id = ++nextId;
     const superseded = this.latest.get(group);
@@ -114,7 +115,7 @@ export class WorkerClient {
     let resolve;
     const reply = new Promise((r) => { resolve = r; });
     this.pending.set(id, { group, done: new Set([...done, 'error']), resolve });
-    this.post(type, { ...fields, id });
+    this.post(type, { ...fields, id }, transfer);
     return { id, reply };
   }
 

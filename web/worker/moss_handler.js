@@ -1,7 +1,8 @@
 // The moss study's worker handler (Nomura 2010): one MossLab (web/bindings/moss_bindings.cpp) per
 // client holds the last run. An 'update' grows the state ({preset, scene, days, seed, params})
 // to its days, posting progress after every day (at most every 100 ms), then sends the stats (the
-// CLI's `niwa moss grow --stats`), the resolved state and hash, the bounds, and two buffer groups:
+// CLI's `niwa moss grow --stats`, parsed, and its text as statsText), the resolved state and hash,
+// the bounds, and buffer groups:
 // the land (three vertices per soil cell with its coverage, geology and last day's irradiance,
 // T_s, rh_s, theta and best-species fitness), every moss ever alive with its birth and death day
 // (the page's day scrubber replays them without a new grow) and the last day's photon points;
@@ -11,7 +12,9 @@
 // registry (core/compose/studies.cpp, its moss row); the scenes: the moss bindings' mossScenesJson.
 // A dropped mesh ('mesh': bytes, Draco already decoded by the page) is read once into the lab and
 // answered with 'meshLoaded' ({name, triangles}) or an error naming "mesh"; an update with
-// useMesh: true grows on it (MossLab growOnMesh) instead of the state's scene.
+// useMesh: true grows on it (MossLab growOnMesh) instead of the state's scene; with meshOf (another
+// client's name: the page's A/B view) the client's lab first takes the mesh that client's lab
+// read (MossLab shareMesh: the same scene, neither read nor copied again).
 // Messages: web/worker/protocol.js.
 // An 'export' ({format: glb | json}) answers with the bytes of `niwa moss grow ... --out moss.glb`
 // or `--out moss.json` for the last run (MossLab build), transferred, or an error naming "download".
@@ -50,6 +53,14 @@ export function createHandler(Module, ctx) {
     await nextTask();  // a newer update that is already queued supersedes this one
     if (!isLatest(client, id)) return;
     entry.working = id;
+    if (msg.useMesh === true && typeof msg.meshOf === 'string' && msg.meshOf !== client) {
+      const owner = labs.get(msg.meshOf);
+      if (!owner) {
+        post(errorReply({ field: 'mesh', message: `mesh: no mesh is loaded for client '${msg.meshOf.slice(0, 40)}'` }, id, client));
+        return;
+      }
+      entry.lab.shareMesh(owner.lab);
+    }
     post({ type: 'progress', id, client, stage: 'grow', done: 0, total: 0, text: 'starting the run' });
     const t0 = performance.now();
     const stateJson = JSON.stringify(msg.state || {});
@@ -59,13 +70,14 @@ export function createHandler(Module, ctx) {
       return;
     }
     const growMs = performance.now() - t0;
-    const stats = JSON.parse(entry.lab.statsJson());
+    const statsText = entry.lab.statsJson();  // the CLI's bytes (the tests compare them as they are)
+    const stats = JSON.parse(statsText);
     const transfer = [];
     const counts = { reused: 0, fresh: 0, dropped: 0 };
     const buffers = {};
     for (const group of ['land', 'mosses', 'photons']) buffers[group] = returned.take(client, group, entry.lab.buffers(group), transfer, counts);
     post({
-      type: 'moss', id, client, stats, hash: entry.lab.hash(), state: JSON.parse(entry.lab.stateJson()),
+      type: 'moss', id, client, stats, statsText, hash: entry.lab.hash(), state: JSON.parse(entry.lab.stateJson()),
       bounds: JSON.parse(entry.lab.boundsJson()), buffers, bufferCounts: counts, growMs, wallMs: performance.now() - t0,
     }, transfer);
   }
