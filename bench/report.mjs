@@ -2,13 +2,15 @@
 //
 // node bench/report.mjs --native N1.jsonl[,N2.jsonl...] --wasm W1.jsonl[,...] [--peer P1.jsonl[,...]]
 //                       [--gbench G.txt] [--grove GR.jsonl] [--terrain-page T1.jsonl[,...]]
-//                       [--worker WK.jsonl] [--page-timings PT.jsonl] [--meta META.json]
+//                       [--worker WK.jsonl] [--page-timings PT.jsonl] [--moss-page M1.jsonl[,...]]
+//                       [--meta META.json]
 //                       [--record docs/BENCHMARKS.md]
 // N/W/P hold one JSON object per line as printed by niwa_bench_runner / ez_tree_peer.mjs /
 // fastnoise_peer.mjs, one file per run (process): each workload keeps its fastest run, and the table
 // lists every run's time. GR the lines of bench/grove.mjs (one per mode); T the lines of
 // bench/terrain_page.mjs (the page's 512² regrow); WK those of bench/worker_first_grow.mjs; PT the page's
-// answer times of the browser tests (harness.mjs timedCheck); META holds {date, machine, cpu, cores, tools, load,
+// answer times of the browser tests (harness.mjs timedCheck); M the lines of bench/moss_page.mjs (the
+// moss page's 300-day thesis run and its scrubber); META holds {date, machine, cpu, cores, tools, load,
 // command, seconds}.
 import {readFileSync, writeFileSync, existsSync} from 'node:fs';
 
@@ -39,6 +41,7 @@ const allPeers = [...fastestRuns(args.peer).values()];
 const terrainPeer = allPeers.filter((p) => p.workload.startsWith('fastnoise-lite'));
 const peer = allPeers.filter((p) => !p.workload.startsWith('fastnoise-lite'));
 const terrainPage = [...fastestRuns(args['terrain-page']).values()];
+const mossPage = fastestRuns(args['moss-page']);
 const gbench = args.gbench && existsSync(args.gbench) ? readFileSync(args.gbench, 'utf8').trim() : '';
 const meta = args.meta ? JSON.parse(readFileSync(args.meta, 'utf8')) : {};
 
@@ -222,6 +225,15 @@ for (const kind of ['closest', 'segment']) {
   for (const row of terrainPage) {
     goal(`${row.workload}: the worker's regrow ≤ 100 ms (page, WASM)`, `${fmt(row.ms)} ms (${row.runs.map(fmt).join(' / ')})`, row.ms <= 100);
   }
+}
+// The moss page (issue 29 item 6): day 300 of the thesis workload on screen ≤ 10 s, the scrubber ≤ 100 ms.
+{
+  const grow = mossPage.get('moss-page/grow-thesis-300'), scrub = mossPage.get('moss-page/scrub-thesis-300');
+  if (grow) {
+    goal('moss page: day 300 of the thesis workload on screen ≤ 10 s (link to frame, chromium, WASM)',
+      `${fmt(grow.ms)} ms (worker ${fmt(grow.worker_ms)} ms; ${grow.runs.map(fmt).join(' / ')})`, grow.ms <= 10_000);
+  }
+  if (scrub) goal('moss page: the day scrubber answers ≤ 100 ms (input to frame, day 300 run)', `${fmt(scrub.ms)} ms median, ${fmt(scrub.max_ms)} ms slowest`, scrub.ms <= 100);
 }
 const goalsTable = goals.length ? `| goal | measured | |\n|---|---|---|\n${goals.join('\n')}\n` : '';
 
