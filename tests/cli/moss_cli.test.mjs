@@ -293,6 +293,32 @@ for (const [args, field] of hostile) {
     fa === fb && JSON.parse(fa).cells.total > 0);
 }
 
+// KHR_texture_transform and texCoord 1 (tests/support/make_texture_transform_meshes.mjs): each square's
+// texture seam moved by its transform or UV set gives the same cells by geology in both builds, and
+// a texCoord naming a UV set the primitive lacks is one line naming it, exit 2, in both.
+{
+  const split = {
+    'texture_offset.glb': [1024, 3072], 'texture_scale.glb': [2048, 2048], 'texture_rotation.glb': [2048, 2048],
+    'texture_texcoord1.glb': [2048, 2048], 'texture_transform_texcoord1.glb': [1024, 3072],
+  };
+  for (const [file, [humus, sandy]] of Object.entries(split)) {
+    const args = ['moss', 'grow', '--mesh', join(root, 'tests/data/meshes', file), '--days', '2', '--photons', '256', '--stats'];
+    const a = JSON.stringify(withoutMs(JSON.parse(run(native, args))));
+    const b = JSON.stringify(withoutMs(JSON.parse(run(wasm, args))));
+    const g = JSON.parse(a).cells.by_geology;
+    check(`moss grow --mesh ${file}: native == WASM; cells by geology ${JSON.stringify(g)} (want humus ${humus}, sandy ${sandy})`,
+      a === b && g.humus === humus && g.sandy === sandy && (g.asphalt ?? 0) === 0);
+  }
+  const missing = join(root, 'tests/data/meshes/texture_missing_texcoord.glb');
+  const want = "niwa: error: --mesh: texture_missing_texcoord.glb: mesh 0 'ground' primitive 0: material 0 'ground' baseColorTexture reads TEXCOORD_1, which the primitive does not have";
+  for (const cmd of [native, wasm]) {
+    const r = spawn(cmd, ['moss', 'grow', '--mesh', missing, '--days', '1', '--stats']);
+    const lines = r.stderr.trim().split('\n');
+    check(`${buildName(cmd)} moss grow --mesh texture_missing_texcoord.glb: exit ${r.status}, "${lines[0]}"`,
+      r.status === 2 && lines.length === 1 && lines[0] === want && r.stdout === '');
+  }
+}
+
 // A Niwa tree as the land (core/compose/moss_on_tree): its bark (sandy) on a humus square; the
 // cells and mosses by region name both, the same bytes in both builds.
 {
