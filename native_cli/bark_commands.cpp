@@ -1,8 +1,9 @@
 // niwa CLI commands of the bark study (Hirota, Kato, Kaneko, paper 003; core/bark,
 // docs/bark-model.md): 'bark grow' (the 2-layer or 4-layer model grown on a torus patch of the
-// trunk, its maps as PNGs, a frame a cycle, its cycles as CSV, its statistics as one JSON object),
-// 'bark layers' (Fig. 7's radial layout of the 4-layer model) and the table and presets for 'niwa
-// params bark' and 'niwa presets bark'. A thin adapter over bark::BarkRun: flags into a state, the
+// trunk, its maps as PNGs (or with --out trunk.glb a trunk segment wearing them), a frame a
+// cycle, its cycles as CSV, its statistics as one JSON object), 'bark layers' (Fig. 7's radial
+// layout of the 4-layer model) and the table and presets for 'niwa params bark' and 'niwa presets
+// bark'. A thin adapter over bark::BarkRun: flags into a state, the
 // run, its outputs written all or none, the stats with the CLI's timings. cli-order: 60
 #include <sys/stat.h>
 
@@ -23,6 +24,7 @@
 #include "bark/layers.h"
 #include "base/echo.h"
 #include "cli_common.h"
+#include "io/gltf_writer.h"
 #include "params/param_text.h"
 #include "run/field_names.h"
 
@@ -100,6 +102,13 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   }
   Result<bark::BarkRun> run = bark::BarkRun::Start(state, budget);
   if (!run.ok()) Fail(run::RenameField(run.status(), kFieldFlags));
+  if (Extension(o.out) == ".glb") {
+    // The .glb's maps and mesh on top of the run's estimate, before any growth.
+    Result<Estimate> glb = run->ExportEstimate("glb");
+    if (!glb.ok()) Fail(glb.status().Within("--out"));
+    Check(CheckEstimate(bark::EstimateBarkRun(state) + *glb, budget,
+                        "lower N_R, N_H, cycles, T, settle_steps or map_size"));
+  }
   run->RecordFrames(!o.frames.empty());
   const auto t1 = std::chrono::steady_clock::now();
   Check(run::RenameField(run->Advance({}), kFieldFlags));
@@ -110,6 +119,15 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   const char* flags[] = {"--out", "--normal", "--height", "--orm"};
   for (int k = 0; k < 4; ++k) {
     if (maps[k].first->empty()) continue;
+    if (k == 0 && Extension(o.out) == ".glb") {
+      // The trunk segment wearing the maps (bark_gltf.h).
+      Result<gltf::Document> doc = run->Document();
+      if (!doc.ok()) Fail(doc.status().Within("--out"));
+      Result<std::vector<unsigned char>> glb = gltf::WriteGlb(*doc);
+      if (!glb.ok()) Fail(glb.status().Within("--out"));
+      files.push_back({"--out", o.out, std::string(glb->begin(), glb->end())});
+      continue;
+    }
     Result<std::string> png = run->MapPng(maps[k].second);
     if (!png.ok()) Fail(png.status().Within(flags[k]));
     files.push_back({flags[k], *maps[k].first, *png});
@@ -258,7 +276,10 @@ void AddBarkCommands(CLI::App& app, CommandList& commands) {
   grow->add_option("--url", o->url,
                    "A share-link hash (species=...&seed=...&N_R=...); other flags override it");
   grow->add_flag("--stats", o->stats, "Print the statistics as one JSON object");
-  AddOutputFlag(grow, "--out", &o->out, {".png"}, "Write the base colour map as .png");
+  AddOutputFlag(grow, "--out", &o->out, {".png", ".glb"},
+                "Write the base colour map as .png, or a trunk segment of the grown patch's radius "
+                "and height wearing the maps (base colour, normal, occlusion/roughness; metres, "
+                "y up) as .glb");
   AddOutputFlag(grow, "--normal", &o->normal, {".png"},
                 "Write the normal map as .png (tangent space, OpenGL: +y up)");
   AddOutputFlag(grow, "--height", &o->height, {".png"},

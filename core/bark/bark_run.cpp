@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <utility>
 
+#include "bark/bark_gltf.h"
 #include "bark/bark_report.h"
 #include "image/png.h"
 #include "params/param_text.h"
@@ -32,6 +33,15 @@ Status CheckRunnable(const BarkState& state) {
   BarkState copy = state;
   NIWA_RETURN_IF_ERROR(SetBarkModel(state.model, &copy));
   return CheckBarkState(state);
+}
+
+// The plate columns of a sample: the surface's regions at the growth.
+void MeasurePlates(const Lattice& lattice, const Surface& surface, const Growth& g,
+                   BarkSample* sample) {
+  const CrackMeasures c = MeasureCracks(lattice, surface, g.s_theta, g.s_z);
+  sample->plates = c.count;
+  sample->plate_w = c.mean_width;
+  sample->plate_h = c.mean_height;
 }
 
 Result<std::string> PngBytes(const Result<std::vector<unsigned char>>& png) {
@@ -182,7 +192,13 @@ void BarkRun::Reset() {
   cycles_done_ = 0;
   settled_ = false;
   samples_.clear();
-  samples_.push_back(four_ ? FourLayerSample() : BarkSample{});
+  if (four_) {
+    samples_.push_back(FourLayerSample());
+  } else {
+    BarkSample first;
+    MeasurePlates(lattice_, surface_, GrowthAt(0), &first);
+    samples_.push_back(first);
+  }
   cracks_.reset();
   maps_.reset();
 }
@@ -269,6 +285,7 @@ Status BarkRun::Advance(const run::Observer& observer) {
       s.strain_z = mech_.strain_rate_z * t;
       s.broken[0] = surface_.broken_count[0];
       s.broken[1] = surface_.broken_count[1];
+      MeasurePlates(lattice_, surface_, GrowthAt(step_), &s);
       samples_.push_back(s);
     }
   }
@@ -416,13 +433,48 @@ BarkSample BarkRun::FourLayerSample() const {
   s.shed_regions = f.shed_regions;
   s.shed_nodes = f.shed_nodes;
   s.exchanges = f.cycle;
+  MeasurePlates(lattice_, S, LayerGrowthAt(f).g[kS], &s);
   return s;
 }
 
 Result<gltf::Document> BarkRun::Document() const {
-  return Status::Error("format",
-                       "a bark .glb (a trunk segment with the maps) is not built yet; "
-                       "must be png or csv");
+  if (!settled_) return Status::Error("bark", "nothing grown yet");
+  TrunkMaps pngs;
+  for (auto [map, out] : {std::pair<const char*, std::string*>{"base_colour", &pngs.base_colour},
+                          {"normal", &pngs.normal},
+                          {"orm", &pngs.orm}}) {
+    Result<std::string> png = MapPng(map);
+    if (!png.ok()) return png.status();
+    *out = std::move(png).value();
+  }
+  constexpr double kMetresPerCm = 0.01;
+  const Growth g = growth();
+  const double radius = lattice_.radius() * g.s_theta * kMetresPerCm;
+  const double height = lattice_.height() * g.s_z * kMetresPerCm;
+  const double tile_width = lattice_.circumference() * g.s_theta * kMetresPerCm;
+  nlohmann::ordered_json extras;
+  extras["study"] = "bark";
+  extras["hash"] = Hash("");
+  extras["radius_m"] = radius;
+  extras["height_m"] = height;
+  extras["tile_m"] = {tile_width, height};
+  extras["wraps"] = TileWraps(radius, tile_width);
+  return TrunkDocument(TrunkSegmentMesh(radius, height, tile_width), pngs, extras.dump());
+}
+
+std::vector<run::Part> BarkRun::Parts() const {
+  std::vector<run::Part> parts;
+  Result<gltf::Document> doc = Document();
+  if (!doc.ok()) return parts;
+  const gltf::Primitive& prim = doc->meshes[0].primitives[0];
+  run::Part part;
+  part.name = "bark";
+  part.mode = prim.mode;
+  part.mesh = prim.mesh;
+  part.material = doc->materials[0];  // its textures are indices 0, 1, 2 of `textures`
+  part.textures = doc->textures;
+  parts.push_back(std::move(part));
+  return parts;
 }
 
 std::string BarkRun::StatsJson() const { return BarkStatsJson(*this); }
@@ -441,7 +493,14 @@ Result<Estimate> BarkRun::ExportEstimate(const std::string& format) const {
   if (format == "csv") {
     return Estimate{static_cast<double>(samples_.size() + 16) * 96.0, 0, "the cycles .csv"};
   }
-  return Status::Error("format", "'" + format + "' is unknown; must be png or csv");
+  if (format == "glb") {
+    // The three maps it embeds (as "png" counts the four) and the trunk's mesh.
+    const double pixels = width * 4096;
+    return Estimate{pixels * kBytesPerMapPixel, pixels * kSecondsPerMapPixel,
+                    "the maps (" + FormatCount(width) + " px wide)"} +
+           TrunkGlbEstimate();
+  }
+  return Status::Error("format", "'" + format + "' is unknown; must be png, csv or glb");
 }
 
 Result<std::string> BarkRun::MapPng(const std::string& map) const {
@@ -461,7 +520,7 @@ std::string BarkRun::CyclesCsv() const {
     std::string out =
         "cycle,step,exchanges,strain_theta,strain_z,broken_S_axial,broken_S_diagonal,broken_S,"
         "broken_M1,broken_M2,bonds_broken,peeled_fraction,exposed_S,exposed_M1,exposed_M2,"
-        "exposed_I,shed_regions,shed_area\n";
+        "exposed_I,shed_regions,shed_area,plates,plate_mean_w,plate_mean_h\n";
     const double area = std::sqrt(3.0) / 2.0 * lattice_.l_o * lattice_.l_o;
     for (const BarkSample& s : samples_) {
       out += FormatNumber(s.cycle) + "," + std::to_string(s.step) + "," +
@@ -472,16 +531,21 @@ std::string BarkRun::CyclesCsv() const {
              std::to_string(s.bonds_broken) + "," + FormatNumber(s.peeled) + "," +
              FormatNumber(s.exposed[0]) + "," + FormatNumber(s.exposed[1]) + "," +
              FormatNumber(s.exposed[2]) + "," + FormatNumber(s.exposed[3]) + "," +
-             std::to_string(s.shed_regions) + "," + FormatNumber(s.shed_nodes * area) + "\n";
+             std::to_string(s.shed_regions) + "," + FormatNumber(s.shed_nodes * area) + "," +
+             std::to_string(s.plates) + "," + FormatNumber(s.plate_w) + "," +
+             FormatNumber(s.plate_h) + "\n";
     }
     return out;
   }
-  std::string out = "cycle,step,strain_theta,strain_z,broken_axial,broken_diagonal\n";
-  char line[160];
+  std::string out =
+      "cycle,step,strain_theta,strain_z,broken_axial,broken_diagonal,plates,plate_mean_w,"
+      "plate_mean_h\n";
+  char line[224];
   for (const BarkSample& s : samples_) {
-    std::snprintf(line, sizeof line, "%s,%d,%s,%s,%d,%d\n", FormatNumber(s.cycle).c_str(), s.step,
-                  FormatNumber(s.strain_theta).c_str(), FormatNumber(s.strain_z).c_str(),
-                  s.broken[0], s.broken[1]);
+    std::snprintf(line, sizeof line, "%s,%d,%s,%s,%d,%d,%d,%s,%s\n", FormatNumber(s.cycle).c_str(),
+                  s.step, FormatNumber(s.strain_theta).c_str(), FormatNumber(s.strain_z).c_str(),
+                  s.broken[0], s.broken[1], s.plates, FormatNumber(s.plate_w).c_str(),
+                  FormatNumber(s.plate_h).c_str());
     out += line;
   }
   return out;

@@ -6,9 +6,9 @@
 // colour frame per cycle on request, the stats JSON, a per-tenth-cycle CSV and the share hash.
 // The one pipeline `niwa bark grow` (native_cli/bark_commands.cpp), the page's BarkLab
 // (web/bindings/bark_bindings.cpp) and bark on a tree (core/compose/bark_on_tree) adapt.
-// Does not: parse flags, read or write files, time itself (the front end adds ms and
-// ns_per_spring_step), or make a .glb (Parts() is empty and Document() refused: a trunk segment
-// with the maps is a later slice).
+// Its .glb (Document(), Parts()) is a trunk segment of the grown patch's radius and height wearing
+// the maps (bark_gltf.h). Does not: parse flags, read or write files, or time itself (the front
+// end adds ms and ns_per_spring_step).
 #pragma once
 
 #include <optional>
@@ -40,6 +40,10 @@ struct BarkSample {
   double peeled = 0;
   double exposed[4] = {0, 0, 0, 0};
   int shed_regions = 0, shed_nodes = 0, exchanges = 0;
+  // The plates of the surface layer (S) then (regions.h: count, mean width around and height
+  // along, cm; an uncracked surface is one strip, C × H).
+  int plates = 0;
+  double plate_w = 0, plate_h = 0;
 };
 
 // What the state will cost: memory of the lattice, its state and the maps, and time by spring-steps
@@ -72,11 +76,15 @@ class BarkRun : public run::StudyRun {
   // To the state's cycles (and the settling after the last), progress every 256 steps; a cancel
   // leaves the run as it was before this Advance.
   Status Advance(const run::Observer& observer) override;
-  std::vector<run::Part> Parts() const override { return {}; }
+  // The trunk segment (bark_gltf.h: TrunkSegmentMesh, TrunkDocument) of the grown run: radius
+  // R_o·s_θ and height H_o·s_z of its growth (the 4-layer model: S's), the maps' PNG bytes as
+  // MapPng gives them. Refused (naming "bark") before the run has grown; Parts() is then empty.
+  std::vector<run::Part> Parts() const override;
   Result<gltf::Document> Document() const override;
   std::string StatsJson() const override;
   std::string Hash(const std::string& prefix) const override;
-  // "png" (the four maps at the state's map_size) or "csv"; other formats are refused.
+  // "png" (the four maps at the state's map_size), "csv" or "glb" (the maps and the trunk
+  // segment); other formats are refused.
   Result<Estimate> ExportEstimate(const std::string& format) const override;
 
   // The maps' PNG bytes: "base_colour", "normal", "height" (16-bit), "orm"; error names "format".

@@ -78,8 +78,34 @@ TEST(BarkRun, AGrownRunCracksReportsAndRepeats) {
   EXPECT_EQ(*a.MapPng("height"), *b.MapPng("height"));
   EXPECT_EQ(a.MapPng("albedo").status().field(), "format");
   const std::string csv = a.CyclesCsv();
-  EXPECT_EQ(csv.rfind("cycle,step,strain_theta,strain_z,broken_axial,broken_diagonal\n", 0), 0u);
+  EXPECT_EQ(csv.rfind("cycle,step,strain_theta,strain_z,broken_axial,broken_diagonal,plates,"
+                      "plate_mean_w,plate_mean_h\n",
+                      0),
+            0u);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 1 + 10 + 1);  // 0, tenths, end
+  // The plate columns: the intact start is one strip of the whole patch; the last row is the
+  // stats' regions.
+  std::vector<std::string> rows;
+  for (std::size_t at = 0, next; at < csv.size(); at = next + 1) {
+    next = csv.find('\n', at);
+    rows.push_back(csv.substr(at, next - at));
+  }
+  auto fields = [](const std::string& row) {
+    std::vector<std::string> out;
+    for (std::size_t at = 0, next;; at = next + 1) {
+      next = row.find(',', at);
+      out.push_back(row.substr(at, next == std::string::npos ? next : next - at));
+      if (next == std::string::npos) return out;
+    }
+  };
+  const std::vector<std::string> first = fields(rows[1]), last = fields(rows[rows.size() - 1]);
+  ASSERT_EQ(first.size(), 9u);
+  EXPECT_EQ(first[6], "1");
+  EXPECT_NEAR(std::stod(first[7]), a.lattice().circumference(), 1e-6);
+  EXPECT_NEAR(std::stod(first[8]), a.lattice().height(), 1e-6);
+  EXPECT_EQ(std::stoi(last[6]), j["regions"]["count"].get<int>());
+  EXPECT_NEAR(std::stod(last[7]), j["regions"]["mean_w"].get<double>(), 1e-9);
+  EXPECT_NEAR(std::stod(last[8]), j["regions"]["mean_h"].get<double>(), 1e-9);
 }
 
 TEST(BarkRun, AMapSizeUpdateOnlyRedraws) {

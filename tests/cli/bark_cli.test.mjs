@@ -3,11 +3,16 @@
 // PNG sizes; `niwa bark layers` (Fig. 7) in both builds; `niwa params bark` / `niwa presets bark` in both builds; bad input one line naming the
 // flag, exit 2, nothing written.
 import { mkdtempSync, readFileSync, existsSync, readdirSync } from 'node:fs';
+import { createRequire } from 'node:module';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { buildName, check, finish, native, requireWasm, run, spawn, wasm } from '../support/cli_pair.mjs';
+import { pathToFileURL } from 'node:url';
+import { buildName, check, finish, native, requireWasm, root, run, spawn, wasm } from '../support/cli_pair.mjs';
 
 requireWasm();
+const require = createRequire(join(root, 'package.json'));
+const validatorModule = await import(pathToFileURL(require.resolve('gltf-validator')).href);
+const validator = validatorModule.default ?? validatorModule;
 
 const work = mkdtempSync(join(tmpdir(), 'niwa-bark-'));
 const timing = (k) => k.startsWith('ms') || k === 'ns_per_spring_step';
@@ -101,6 +106,60 @@ for (const cmd of [native, wasm]) {
   check(`params bark ${buildName(cmd)}: Table 2 rows`, ['E1', 'E2', 'G', 'kappa1', 'kappa2', 'N_R', 'N_H', 'map_size'].every((k) => table.some((r) => r.key === k)));
   const presets = run(cmd, ['presets', 'bark']);
   check(`presets bark ${buildName(cmd)}: camphor, tallow, pine`, /^camphor\t/m.test(presets) && /^tallow\t/m.test(presets) && /^pine\t/m.test(presets));
+}
+
+// The trunk segment (--out trunk.glb): native == WASM bytes for both models, gltf-validator clean
+// (no errors, no warnings), a cylinder of the grown radius (R_o·(1 + strain.theta)) and height
+// in metres, y up, the tile once around (u 0..1) and once along, its three textures the very PNG
+// bytes of --normal, --orm and a base-colour --out .png of the same state.
+for (const model of ['2layer', '4layer']) {
+  const state = ['bark', 'grow', '--species', 'pine', '--model', model, '--size', '32x16', '--seed', '3', '--set', 'map_size=256',
+    ...(model === '4layer' ? ['--cycles', '2', '--set', 'T=0.002', '--set', 'cork=0.1'] : [])];
+  const got = {};
+  for (const cmd of [native, wasm]) {
+    const dir = mkdtempSync(join(work, `glb-${model}-${buildName(cmd)}-`));
+    const r = spawn(cmd, [...state, '--stats', '--out', join(dir, 'trunk.glb'), '--normal', join(dir, 'n.png'), '--orm', join(dir, 'o.png')]);
+    check(`--out trunk.glb ${model} ${buildName(cmd)}: exit 0`, r.status === 0, r.stderr.trim());
+    got[buildName(cmd)] = { dir, stats: r.status === 0 ? stats(r.stdout) : {}, glb: r.status === 0 ? readFileSync(join(dir, 'trunk.glb')) : Buffer.alloc(0) };
+  }
+  const { dir, glb } = got.native;
+  check(`--out trunk.glb ${model}: native == WASM bytes (${glb.length})`, glb.length > 0 && glb.equals(got.wasm.glb));
+  const report = await validator.validateBytes(new Uint8Array(glb), { maxIssues: 50 });
+  check(`trunk.glb ${model}: gltf-validator 0 errors, 0 warnings`, report.issues.numErrors === 0 && report.issues.numWarnings === 0,
+    JSON.stringify(report.issues.messages.slice(0, 3)));
+  const jsonLength = glb.readUInt32LE(12);
+  const json = JSON.parse(glb.subarray(20, 20 + jsonLength).toString('utf8'));
+  const bin = glb.subarray(20 + jsonLength + 8);
+  const view = (i) => { const v = json.bufferViews[i]; return bin.subarray(v.byteOffset || 0, (v.byteOffset || 0) + v.byteLength); };
+  const prim = json.meshes[0].primitives[0];
+  const pos = json.accessors[prim.attributes.POSITION];
+  const uv = view(json.accessors[prim.attributes.TEXCOORD_0].bufferView);
+  const us = [];
+  for (let k = 0; k < uv.length; k += 8) us.push(uv.readFloatLE(k));
+  const s = got.native.stats;
+  const radius = (s.strain.r_S ?? s.R_o * (1 + s.strain.theta)) / 100;
+  check(`trunk.glb ${model}: radius ${radius.toFixed(5)} m (the grown patch's), height ${pos.max[1].toFixed(4)} m, y up, u 0..1 (once around)`,
+    Math.abs(pos.max[0] - radius) < 1e-5 && Math.abs(pos.max[2] - radius) < 1e-5 && pos.min[1] === 0 && Math.abs(pos.max[1] - s.H_o * (1 + s.strain.z) / 100) < 1e-5 &&
+    Math.min(...us) === 0 && Math.max(...us) === 1 && prim.attributes.TANGENT !== undefined,
+    `${JSON.stringify(pos.min)} ${JSON.stringify(pos.max)} u ${Math.min(...us)}..${Math.max(...us)}`);
+  const m = json.materials[prim.material];
+  const image = (t) => view(json.images[json.textures[t].source].bufferView);
+  const base = join(dir, 'c.png');
+  spawn(native, [...state, '--out', base]);
+  check(`trunk.glb ${model}: baseColor, normal, occlusion and metallicRoughness textures are the maps' PNG bytes, REPEAT`,
+    image(m.pbrMetallicRoughness.baseColorTexture.index).equals(readFileSync(base)) &&
+    image(m.normalTexture.index).equals(readFileSync(join(dir, 'n.png'))) &&
+    image(m.occlusionTexture.index).equals(readFileSync(join(dir, 'o.png'))) &&
+    m.pbrMetallicRoughness.metallicRoughnessTexture.index === m.occlusionTexture.index &&
+    json.samplers.every((x) => (x.wrapS ?? 10497) === 10497 && (x.wrapT ?? 10497) === 10497));
+}
+{
+  // All or none: a .glb beside an output that cannot be written leaves nothing.
+  const dir = mkdtempSync(join(work, 'glb-none-'));
+  const r = spawn(native, ['bark', 'grow', '--size', '16x8', '--set', 'map_size=256', '--out', join(dir, 't.glb'), '--csv', join(dir, 'no/such/c.csv')]);
+  check('--out t.glb with an unwritable --csv: exit 2, one line, nothing written', r.status === 2 && r.stderr.trim().split('\n').length === 1 && readdirSync(dir).length === 0, r.stderr.trim());
+  const bad = spawn(native, ['bark', 'grow', '--size', '16x8', '--out', join(dir, 't.obj')]);
+  check('--out t.obj: exit 2, one line naming --out and .png, .glb', bad.status === 2 && /^niwa: error: --out.*\.png.*\.glb/.test(bad.stderr.trim()), bad.stderr.trim());
 }
 
 // Bad input: one line naming the flag, exit 2, nothing written.

@@ -6,11 +6,14 @@
 // the lattice while the worker grows it), then the base-colour map on the tile and a trunk segment
 // wearing the maps (bark_renderer.js); replays the cracks tenth of a cycle by tenth with the cycle
 // scrubber and Play (nothing regrows: each triangle comes with the step it broke), charts the
-// broken fraction of each spring family against time (the run's per-tenth-cycle samples), runs the
-// three species for a Table 3 beside the paper's numbers, and downloads the maps and the CSV.
-// Growth runs in the worker (web/worker/bark_handler.js).
-// Does not: parse or check states (the core does; its one line is shown beside its field), make
-// a .glb, draw the 4-layer model's layers, or draw directly.
+// broken fraction of each spring family and the plates' mean width and height against time (the
+// run's per-tenth-cycle samples), colours the tile by layer (S, M1, M2, inner: the 4-layer model)
+// or by peel state and toggles the broken springs over it, runs the three species for a Table 3
+// beside the paper's numbers, and downloads the maps, the trunk segment's .glb (the bytes of
+// `niwa bark grow --url HASH --out trunk.glb`) and the CSV. Growth runs in the worker
+// (web/worker/bark_handler.js).
+// Does not: parse or check states (the core does; its one line is shown beside its field), or
+// draw directly.
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { Frame } from '../gl/frame.js';
 import { OrbitCamera } from '../gl/orbit_camera.js';
@@ -21,7 +24,7 @@ import { StepScrubber } from '../shell/step_scrubber.js';
 import { StudyController, numberOr } from '../shell/study_controller.js';
 import { Notices, copyLink, mountStudyNav, showEmbedDialog } from '../shell/study_page.js';
 import { bumpHook, setHooks } from '../shell/test_hooks.js';
-import { drawBrokenChart, parseCyclesCsv, sampleAt } from './bark_chart.js';
+import { drawBrokenChart, drawPlateChart, parseCyclesCsv, sampleAt } from './bark_chart.js';
 import { BarkRenderer } from './bark_renderer.js';
 
 const $ = (id) => document.getElementById(id);
@@ -31,6 +34,7 @@ const ui = {
   copyLink: $('copy-link'), shareStatus: $('share-status'), params: $('params'), play: $('play'), cycle: $('cycle'),
   cycleText: $('cycle-text'), cancel: $('cancel'), chart: $('chart'), chartCaption: $('chart-caption'),
   table3Run: $('table3-run'), table3: $('table3'), table3Error: $('table3-error'),
+  showBroken: $('show-broken'), tileLegend: $('tile-legend'), plateChart: $('plate-chart'), plateChartCaption: $('plate-chart-caption'),
 };
 mountStudyNav($('studies'), 'bark');
 
@@ -112,6 +116,8 @@ const scrubber = new StepScrubber({ range: ui.cycle, text: ui.cycleText, play: u
   ui.cycleText.textContent = `${when} · ${((100 * broken) / all).toFixed(1)} % broken`;
   ui.cycleText.title = `${broken} of ${all} springs broken`;
   drawBrokenChart(ui.chart, shown.samples, shown.springs, shown.stepsPerCycle, step);
+  drawPlateChart(ui.plateChart, shown.samples, shown.stepsPerCycle, step);
+  setHooks({ plateShown: s ? `${s.plates}:${s.plate_mean_w}:${s.plate_mean_h}` : '' });
   setHooks({ cycleShown: k, stepShown: Number.isFinite(step) ? step : 'end', brokenShown: broken });
   requestFrame();
 }, { interval: 150 });
@@ -123,6 +129,7 @@ async function startRenderer() {
       await frame.init();
       renderer = await frame.addLayer(new BarkRenderer(frame));
       renderer.setView(ui.tileView.value);
+      renderer.setShowBroken(ui.showBroken.checked);
       return frame;
     }, {
       canvas: ui.canvas, camera,
@@ -212,6 +219,7 @@ worker.on('frame', (msg) => {
   if (!controller.isLatest(msg) || !renderer) return;
   renderer.setStep(Infinity);
   renderer.setTile(msg.tile, msg.bounds, { live: true });
+  renderer.setSprings(null);  // the finished run's come with it
   framesInstalled += 1;
   livePhase = msg.phase;
   if (frameNext) {
@@ -228,6 +236,7 @@ worker.on('preview', (msg) => {
   if (renderer) {
     renderer.setStep(Infinity);
     renderer.setTile(msg.buffers.tile, msg.bounds);
+    renderer.setSprings(null);
     renderer.setMaps(msg.buffers.maps, msg.bounds.map.width, msg.bounds.map.height);
     if (frameNext) {
       frameBark();
@@ -256,11 +265,13 @@ worker.on('bark', (msg) => {
   lastGoodHash = msg.hash;
   applyState(msg.state);
   const s = msg.stats, b = msg.bounds;
+  const brokenSprings = (msg.buffers.springs?.broken.length ?? 0) / 2;  // before the buffers go back
   shown = {
     bounds: b, samples: parseCyclesCsv(msg.csv), springs: b.springs, cycles: b.cycles, stepsPerCycle: b.steps_per_cycle,
   };
   if (renderer) {
     renderer.setTile(msg.buffers.tile, b);
+    renderer.setSprings(msg.buffers.springs);
     renderer.setMaps(msg.buffers.maps, b.map.width, b.map.height);
     installedSerial = barkSerial + 1;
     if (frameNext) {
@@ -280,10 +291,14 @@ worker.on('bark', (msg) => {
     + `${(100 * s.broken_fraction.all).toFixed(1)} % broken, ${(100 * s.vertical_crack_share).toFixed(0)} % vertical · `
     + `plates ${fmt(r.mean_w)} × ${fmt(r.mean_h, s.H_o)} cm mean, ${fmt(r.max_w)} × ${fmt(r.max_h, s.H_o)} max · ${r.count} regions · ${(msg.growMs / 1000).toFixed(1)} s`;
   ui.chartCaption.textContent = 'Broken share of each spring family against growth cycles (axial: horizontal cracks; diagonal: vertical cracks).';
+  ui.plateChartCaption.textContent = `Plate size: the surface's plates' mean width around and height along (cm) against the same cycles${s.model === '4layer' ? ' (S: after each role exchange, the former M1)' : ''}.`;
+  const layerShares = s.exposed ? ` Showing at the end: S ${(100 * s.exposed.S).toFixed(0)} %, M1 ${(100 * s.exposed.M1).toFixed(0)} %, M2 ${(100 * s.exposed.M2).toFixed(0)} %, inner ${(100 * s.exposed.I).toFixed(0)} %; S ${(100 * s.peeled_fraction).toFixed(0)} % peeled.` : '';
+  ui.tileLegend.textContent = `Layers: S grey-brown, M1 red-brown, M2 tan, the inner layer dark. Peel: bonded brown, peeling orange, peeled pink.${layerShares}`;
   setHooks({
     status: 'ready', error: '', barkSerial, hash: msg.hash, stats: JSON.stringify(s), species: s.species,
     brokenAll: s.broken_fraction.all, growMs: msg.growMs.toFixed(1), wallMs: msg.wallMs.toFixed(1),
     mapWidth: b.map.width, mapHeight: b.map.height, samples: shown.samples.length,
+    brokenSprings, model: s.model,
     buffersReused: msg.bufferCounts?.reused ?? '', buffersFresh: msg.bufferCounts?.fresh ?? '',
   });
   requestFrame();
@@ -332,6 +347,11 @@ ui.tileView.addEventListener('change', () => {
   setHooks({ tileView: ui.tileView.value });
   requestFrame();
 });
+ui.showBroken.addEventListener('change', () => {
+  renderer?.setShowBroken(ui.showBroken.checked);
+  setHooks({ showBroken: String(ui.showBroken.checked) });
+  requestFrame();
+});
 ui.resetView.addEventListener('click', () => {
   frameBark();
   requestFrame();
@@ -344,6 +364,7 @@ const MAPS = { 'download-base': 'base_colour', 'download-normal': 'normal', 'dow
 for (const [id, map] of Object.entries(MAPS)) {
   $(id).addEventListener('click', () => controller.exportAs('png', `bark_${ui.species.value}_${map}.png`, 'image/png', { map }));
 }
+$('download-glb').addEventListener('click', () => controller.exportAs('glb', `bark_${ui.species.value}_trunk.glb`, 'model/gltf-binary'));
 $('download-csv').addEventListener('click', () => controller.exportAs('csv', `bark_${ui.species.value}_cycles.csv`, 'text/csv'));
 ui.table3Run.addEventListener('click', () => {
   ui.table3Run.disabled = true;

@@ -6,13 +6,18 @@
 // so the seams around and along are in view), the base-colour map itself ('maps'),
 // or the lattice's triangles as the run has them ('plates':
 // the surface's plates with each triangle whose edge broke dropped, so the cracks show the inner
-// layer; 'strain': the plates as a heat map of their stretch over their break strain); with a
+// layer; 'strain': the plates as a heat map of their stretch over their break strain; 'layers':
+// each triangle in the colour of the layer showing in it, S, M1, M2 or the inner layer, the
+// 4-layer model's layer colouring; 'peel': each triangle by its S nodes' peel state, bonded,
+// peeling or peeled off), and over any of them, toggled, the surface's broken springs as red
+// segments (setShowBroken); with a
 // step set (setStep, the cycle scrubber) the triangles broken by then are dropped, so the cracks
 // replay without a new grow (the triangles stay at the run's final positions: the plates' recoil
 // is not replayed, only which springs had broken). Coordinates are the patch's centimetres (x around, y up the trunk);
 // uModel centres the scene and scales it to about ten view units (a Frame of fit: true).
 // A StudyLayer (web/gl/frame.js), a layer of a Frame (layerSteps, under its camera and sun).
-// Does not: talk to the worker, know the model, or draw the 4-layer model's layers.
+// Does not: talk to the worker, know the model, or replay the 4-layer layers and peel states over
+// the cycles (they are the end's).
 import { floatAttribute, staticBuffer } from '../gl/buffers.js';
 import { StudyLayer } from '../gl/frame.js';
 import { loadPrograms } from '../gl/program.js';
@@ -22,7 +27,7 @@ const SHADERS = new URL('../../shaders/bark/', import.meta.url);
 const VIEW_SIZE = 10;    // the scene's width in view units
 const GAP = 4;           // cm between the tile and the trunk
 const AROUND = 96;       // the trunk's segments around
-const VIEW_MODES = { plates: 0, strain: 1 };
+const VIEW_MODES = { plates: 0, strain: 1, layers: 2, peel: 3 };
 const QUAD_MODES = { lit: 0, inner: 1, maps: 2, tiled: 0 };
 // The key light (unit, towards it): up, to the left and in front of the tile.
 const KEY_LIGHT = (() => {
@@ -53,6 +58,8 @@ export class BarkRenderer extends StudyLayer {
     this.view = 'lit';
     this.step = Infinity;
     this.live = false;    // the tile is a run still growing (or a preview): no maps for it yet
+    this.springs = null;  // {vao, buffers, count}: the broken springs' segments
+    this.showBroken = false;
   }
 
   async init() {
@@ -60,6 +67,7 @@ export class BarkRenderer extends StudyLayer {
       plates: ['plates.vert', 'plates.frag'],
       quad: ['quad.vert', 'quad.frag'],
       trunk: ['trunk.vert', 'trunk.frag'],
+      springs: ['springs.vert', 'springs.frag'],
     });
     const gl = this.gl;
     this.quad = { vao: gl.createVertexArray() };
@@ -93,14 +101,38 @@ export class BarkRenderer extends StudyLayer {
     this.#dropTile();
     const vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
-    const buffers = [tile.positions, tile.stretch, tile.broken].map((b) => staticBuffer(gl, b));
+    const n = tile.stretch.byteLength / 4;
+    const zeros = new Float32Array(n);
+    const buffers = [tile.positions, tile.stretch, tile.broken, tile.layer ?? zeros, tile.peel ?? zeros].map((b) => staticBuffer(gl, b));
     floatAttribute(gl, 0, buffers[0], 2);
-    floatAttribute(gl, 1, buffers[1], 1);
-    floatAttribute(gl, 2, buffers[2], 1);
+    for (let k = 1; k < 5; ++k) floatAttribute(gl, k, buffers[k], 1);
     gl.bindVertexArray(null);
-    this.tile = { vao, buffers, count: tile.stretch.byteLength / 4 };
+    this.tile = { vao, buffers, count: n };
     this.live = live;
     this.#setPatch(bounds);
+  }
+
+  // The surface's broken springs ({positions, broken} views, used at once), or null.
+  setSprings(springs) {
+    const gl = this.gl;
+    if (this.springs) {
+      gl.deleteVertexArray(this.springs.vao);
+      for (const b of this.springs.buffers) gl.deleteBuffer(b);
+      this.springs = null;
+    }
+    if (!springs || springs.broken.byteLength === 0) return;
+    const vao = gl.createVertexArray();
+    gl.bindVertexArray(vao);
+    const buffers = [springs.positions, springs.broken].map((b) => staticBuffer(gl, b));
+    floatAttribute(gl, 0, buffers[0], 2);
+    floatAttribute(gl, 1, buffers[1], 1);
+    gl.bindVertexArray(null);
+    this.springs = { vao, buffers, count: springs.broken.byteLength / 4 };
+  }
+
+  // Draw the broken springs over the tile.
+  setShowBroken(on) {
+    this.showBroken = Boolean(on);
   }
 
   // The maps of the finished run (or the preview's): {base_colour, normal, orm} RGBA pixels of
@@ -146,7 +178,7 @@ export class BarkRenderer extends StudyLayer {
     this.boundsView = { min: [-w, -h, -r], max: [w, h, r] };
   }
 
-  // 'lit', 'tiled', 'maps', 'plates' or 'strain'.
+  // 'lit', 'tiled', 'maps', 'plates', 'strain', 'layers' or 'peel'.
   setView(view) {
     this.view = view;
   }
@@ -163,7 +195,7 @@ export class BarkRenderer extends StudyLayer {
   // What the tile shows now: the maps only at the end of a finished run in a maps view.
   get tileShows() {
     if (['lit', 'tiled', 'maps'].includes(this.view) && this.maps && !this.live && !Number.isFinite(this.step)) return this.view;
-    return this.view === 'strain' ? 'strain' : 'plates';
+    return ['strain', 'layers', 'peel'].includes(this.view) ? this.view : 'plates';
   }
 
   layerSteps(view) {
@@ -173,6 +205,10 @@ export class BarkRenderer extends StudyLayer {
     const steps = [];
     if (!this.tile) return { steps, totals };
     const [C, H] = this.patch;
+    // The patch and its copies shifted back over the seams (around, along, both): the torus (the
+    // bindings put every triangle's and segment's lowest corner inside the patch, so they overhang
+    // only past the far edges).
+    const shifts = [[0, 0], [-C, 0], [0, -H], [-C, -H]];
     const shows = this.tileShows;
     const quad = (mode, depth, repeat = 1) => {
       const p = this.programs.quad;
@@ -204,8 +240,7 @@ export class BarkRenderer extends StudyLayer {
       quad(QUAD_MODES.inner, -0.05);
       const p = this.programs.plates, tile = this.tile;
       const step = Number.isFinite(this.step) ? this.step : 1e12;
-      // The patch and its copies shifted back over the seams (around, along, both): the torus.
-      for (const shift of [[0, 0], [-C, 0], [0, -H], [-C, -H]]) {
+      for (const shift of shifts) {
         steps.push({
           primitives: tile.count / 3,
           setup: () => {
@@ -223,6 +258,29 @@ export class BarkRenderer extends StudyLayer {
         });
         totals.triangles += tile.count / 3;
         totals.primitives += tile.count / 3;
+        ++totals.drawCalls;
+      }
+    }
+    if (this.showBroken && this.springs) {
+      const p = this.programs.springs, lines = this.springs;
+      const step = Number.isFinite(this.step) ? this.step : 1e12;
+      for (const shift of shifts) {
+        steps.push({
+          primitives: lines.count / 2,
+          setup: () => {
+            gl.useProgram(p.program);
+            gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, vp);
+            gl.uniform4fv(p.uniforms.uModel, this.model);
+            gl.uniform2f(p.uniforms.uShift, shift[0], shift[1]);
+            gl.uniform2f(p.uniforms.uPatch, C, H);
+            gl.uniform1f(p.uniforms.uStep, step);
+            gl.uniform1f(p.uniforms.uDepth, 0.05);
+            gl.bindVertexArray(lines.vao);
+          },
+          draw: (first, n) => gl.drawArrays(gl.LINES, 2 * first, 2 * n),
+        });
+        totals.lines += lines.count / 2;
+        totals.primitives += lines.count / 2;
         ++totals.drawCalls;
       }
     }
@@ -255,6 +313,7 @@ export class BarkRenderer extends StudyLayer {
   dispose() {
     super.dispose();
     this.#dropTile();
+    this.setSprings(null);
     const gl = this.gl;
     this.#dropMaps();
     for (const part of [this.quad, this.trunk]) {

@@ -177,8 +177,10 @@ export class BarkLab {
   boundsJson(): string;
   /** A map's PNG bytes ("base_colour", "normal", "height", "orm"), or null with lastError(). */
   mapPng(map: string): Uint8Array | null;
+  /** The trunk segment's .glb (`niwa bark grow --url HASH --out trunk.glb`), or null with lastError(). */
+  glb(): Uint8Array | null;
   lastError(): ErrorText;
-  /** "tile": positions, stretch, broken; "maps": base_colour, normal, orm. */
+  /** "tile": positions, stretch, broken, layer, peel; "springs": positions, broken; "maps": base_colour, normal, orm. */
   buffers(group: string): BufferViews;
   delete(): void;
 }

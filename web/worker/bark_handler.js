@@ -8,13 +8,14 @@
 // (per tenth of a cycle), the tile's triangles with each one's break step (the page's cycle
 // scrubber replays them) and the base-colour and normal maps' pixels, copied once out of the WASM
 // heap into buffers the page gave back ('recycle') where they fit (web/worker/transfer.js
-// TransferPool). 'export' gives a map's PNG bytes (format 'png', map base_colour | normal |
-// height | orm) or the cycles CSV (format 'csv'). 'table3' grows the three species of Table 2 (their
+// TransferPool), and the surface's broken springs as segments ('springs'). 'export' gives a map's
+// PNG bytes (format 'png', map base_colour | normal | height | orm), the trunk segment's .glb
+// (format 'glb': the bytes of `niwa bark grow --url HASH --out trunk.glb`) or the cycles CSV
+// (format 'csv'). 'table3' grows the three species of Table 2 (their
 // presets, at the lattice and seed asked) in a lab of its own and answers each one's stats.
 // Table, presets and hash: the generic tableJson / presetsJson / decodeHash of the compose
 // registry (core/compose/studies.cpp, its bark row). Messages: web/worker/protocol.js.
-// Does not: load the module, route messages or catch errors (web/worker/worker.js does), or make
-// a .glb.
+// Does not: load the module, route messages or catch errors (web/worker/worker.js does).
 import { errorOf, errorReply } from './errors.js';
 import { TransferPool, closeLabSession, takeBuffers } from './transfer.js';
 import { nextTask } from './next_task.js';
@@ -99,14 +100,14 @@ export function createHandler(Module, ctx) {
     const transfer = [];
     const counts = { reused: 0, fresh: 0, dropped: 0 };
     const buffers = {};
-    for (const group of ['tile', 'maps']) buffers[group] = returned.take(client, group, entry.lab.buffers(group), transfer, counts);
+    for (const group of ['tile', 'springs', 'maps']) buffers[group] = returned.take(client, group, entry.lab.buffers(group), transfer, counts);
     post({
       type: 'bark', id, client, stats, hash: entry.lab.hash(), state: JSON.parse(entry.lab.stateJson()), bounds,
       csv: entry.lab.cyclesCsv(), buffers, bufferCounts: counts, growMs, wallMs: performance.now() - t0,
     }, transfer);
   }
 
-  // A map's PNG or the cycles CSV of the client's last run.
+  // A map's PNG, the trunk's .glb or the cycles CSV of the client's last run.
   function exportBark(msg, client) {
     const { lab } = labOf(client);
     const format = String(msg.format);
@@ -119,10 +120,18 @@ export function createHandler(Module, ctx) {
         return;
       }
       bytes = new Uint8Array(view).buffer;
+    } else if (format === 'glb') {
+      const view = lab.glb();
+      const error = errorOf(lab.lastError());
+      if (error) {
+        post(errorReply(error, msg.id, client));
+        return;
+      }
+      bytes = new Uint8Array(view).buffer;
     } else if (format === 'csv') {
       bytes = new TextEncoder().encode(lab.cyclesCsv()).buffer;
     } else {
-      throw new Error(`export: format '${format.slice(0, 20)}' is unknown; must be png or csv`);
+      throw new Error(`export: format '${format.slice(0, 20)}' is unknown; must be png, glb or csv`);
     }
     if (bytes.byteLength === 0) throw new Error('export: nothing grown yet');
     post({ type: 'export', id: msg.id, client, format, map: msg.map, bytes }, [bytes]);
