@@ -18,6 +18,7 @@ namespace {
 
 const FlagRange kTips = {1, 50, true};
 const FlagRange kFps = {1, 240, false};
+const FlagRange kMaxJoints = {2, static_cast<double>(kMaxGltfJoints), true};
 
 struct SwayOptions {
   StateOptions state;
@@ -28,6 +29,7 @@ struct SwayOptions {
   int tips = 4;
   std::string out_path;  // .glb (skinned, animated), .csv or .svg
   double fps = 30;       // keys per second in the .glb
+  double max_joints = static_cast<double>(kDefaultSwayJoints);  // the .glb skin's joints
 };
 
 // "m/s, 0..100": a table row's unit and range for a flag's help.
@@ -65,6 +67,13 @@ void AddSwayOptions(CLI::App* cmd, SwayOptions* o) {
                              RangeHelp(kFps) +
                              " (default 30); each key is the state at the nearest time step"),
            "--out", {".glb"});
+  OnlyWith(
+      AddNumberFlag(cmd, "--max-joints", &o->max_joints, kMaxJoints,
+                    "Joints of the --out .glb skin, the root included, " + RangeHelp(kMaxJoints) +
+                        " (default " + std::to_string(kDefaultSwayJoints) +
+                        "); a tree that needs more for the exact skin gets node points "
+                        "grouped, each group turning with one rod"),
+      "--out", {".glb"});
 }
 
 // The flag whose values made CheckSwayParams fail: the last given of --gust, --set-sway, --set,
@@ -113,6 +122,7 @@ SwayParams ResolveSwayParams(const SwayOptions& o, const CLI::App& cmd, TreePara
 int RunSwayCommand(const SwayOptions& o, const CLI::App& cmd, std::ostream& out) {
   const std::string out_ext = Extension(o.out_path);  // its ending and --fps: the shared flags
   Check(CheckFlag("--fps", o.fps, kFps));
+  Check(CheckFlag("--max-joints", o.max_joints, kMaxJoints));
   TreeState state = ResolveTreeState(o.state, cmd);
   SwayParams params = ResolveSwayParams(o, cmd, &state.params);
   Result<TreeRun> started = TreeRun::Start(state, ResolveBudget(o.state.budget));
@@ -124,6 +134,7 @@ int RunSwayCommand(const SwayOptions& o, const CLI::App& cmd, std::ostream& out)
   TreeExportRequest glb_request;
   glb_request.kind = TreeExportRequest::Kind::kSwayGlb;
   glb_request.fps = o.fps;
+  glb_request.max_joints = static_cast<std::size_t>(o.max_joints);
   {
     // Every output's estimate, refused before any work starts (so no output is left behind).
     Estimate total = run.SwayEstimate(o.tips);
@@ -134,8 +145,9 @@ int RunSwayCommand(const SwayOptions& o, const CLI::App& cmd, std::ostream& out)
   }
   // Every output is staged first and renamed only when all were written (all or none).
   StagedOutputs outputs;
+  SwayGlbInfo glb_info;
   if (out_ext == ".glb") {  // core/sway/sway_gltf: exact two-joint skinning of eq. 3.15
-    Result<std::string> glb = run.Export(glb_request);
+    Result<std::string> glb = run.Export(glb_request, &glb_info);
     if (!glb.ok()) throw BadInput{"--out: " + glb.status().Line()};
     Check(outputs.Stage("--out", o.out_path, *glb));
   }
@@ -167,6 +179,17 @@ int RunSwayCommand(const SwayOptions& o, const CLI::App& cmd, std::ostream& out)
     // Over the last two seconds of the gust (or the part of it that was run).
     double to = std::min(params.gust_off, params.duration);
     j["jittering_tips"] = CountJitteringTips(sway, std::max(params.gust_on, to - 2.0), to);
+    if (out_ext == ".glb") {  // the skin (docs/sway-model.md "Joint budget")
+      nlohmann::ordered_json g;
+      g["joints"] = glb_info.joints;
+      g["exact_joints"] = glb_info.exact_joints;
+      g["clustered"] = glb_info.clustered;
+      g["keys"] = glb_info.keys;
+      g["max_error_m"] = glb_info.max_error;
+      g["mean_error_m"] = glb_info.mean_error;
+      g["max_motion_m"] = glb_info.max_motion;
+      j["glb"] = g;
+    }
     out << j.dump() << "\n";
   }
   return 0;

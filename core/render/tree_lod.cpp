@@ -18,6 +18,7 @@
 #include "params/param_text.h"
 #include "render/atlas_mesh.h"
 #include "render/hybrid.h"
+#include "sway/wind_attributes.h"
 #include "tree/tree_gltf.h"
 #include "tree/tree_textures.h"
 
@@ -327,6 +328,15 @@ namespace {
 
 // BuildLodMesh, and with `above` (the level above in BuildLodLevels) no kind of primitive grows
 // beyond it: tubes at least as thick, no more cluster triangles, branch cards and twigs.
+// The wind data of a level's parts (bark tubes, full leaves and flowers) from their branch and
+// node.
+void PartsWind(const Tree& tree, const std::vector<int>& levels, LodMesh* out) {
+  const TreeMesh& m = out->parts;
+  out->parts_wind[0] = WindAttributes(tree, levels, m.bark_branch_id, m.bark_node_index);
+  out->parts_wind[1] = WindAttributes(tree, levels, m.leaf_branch_id, m.leaf_node_index);
+  out->parts_wind[2] = WindAttributes(tree, levels, m.flower_branch_id, m.flower_node_index);
+}
+
 Result<LodMesh> BuildLevel(const Tree& tree, long max_triangles, const LodOptions& options,
                            const std::string& field, const LodMesh* above) {
   if (max_triangles < kMinLodTriangles) {
@@ -341,6 +351,7 @@ Result<LodMesh> BuildLevel(const Tree& tree, long max_triangles, const LodOption
   if (out.choice.triangles <= max_triangles && (above == nullptr || above->choice.full)) {
     out.parts = std::move(full);
     for (const Branch& b : tree.branches) out.choice.tubes += LodUsable(b) ? 1 : 0;
+    PartsWind(tree, BranchLevels(tree), &out);
     return out;
   }
   LodChoice& choice = out.choice;
@@ -423,6 +434,9 @@ Result<LodMesh> BuildLevel(const Tree& tree, long max_triangles, const LodOption
 
   std::vector<bool> keep(tree.branches.size(), false);
   const float scale = scene.options.cm_to_units;
+  const std::vector<int> levels = BranchLevels(tree);
+  out.card_wind = EmptyWind();
+  out.twig_wind = EmptyWind();
   for (std::size_t i = 0; i < tree.branches.size(); ++i) {
     const Branch& branch = tree.branches[i];
     switch (kinds[i]) {
@@ -433,19 +447,28 @@ Result<LodMesh> BuildLevel(const Tree& tree, long max_triangles, const LodOption
       case Kind::kCard: {
         ++choice.cards;
         const std::size_t g = static_cast<std::size_t>(scene.group_of_branch[i]);
+        const std::size_t first = out.cards.vertex_count();
         for (int k = 0; k < kCardPlanes; ++k) {
           glm::vec3 corners[4];
           CardCorners(scene, static_cast<int>(i), k, corners);
           PushQuad(corners, scene.frames[i].planes[static_cast<std::size_t>(k)].normal,
                    scene.group_tiles[g][static_cast<std::size_t>(k)], scene.atlas_size, &out.cards);
         }
+        AppendAxisWind(out.cards.positions, first, branch.nodes.front() * scale,
+                       branch.nodes.back() * scale, static_cast<float>(levels[i]),
+                       WindPhase(static_cast<uint32_t>(i)), &out.card_wind);
         break;
       }
-      case Kind::kTwig:
+      case Kind::kTwig: {
         ++choice.twigs;
+        const std::size_t first = out.twigs.vertex_count();
         PushTwig(branch.nodes.front() * scale, branch.nodes.back() * scale, radius[i] * scale,
                  &out.twigs);
+        AppendAxisWind(out.twigs.positions, first, branch.nodes.front() * scale,
+                       branch.nodes.back() * scale, static_cast<float>(levels[i]),
+                       WindPhase(static_cast<uint32_t>(i)), &out.twig_wind);
         break;
+      }
       case Kind::kNone:
         if (radius[i] >= 0) ++choice.dropped;
         break;
@@ -454,6 +477,8 @@ Result<LodMesh> BuildLevel(const Tree& tree, long max_triangles, const LodOption
   CopyBark(full, keep, &out.parts);
   if (choice.leaf_clusters) {
     const long branch_card_triangles = Triangles(out.cards);
+    int deepest = 0;
+    for (int l : levels) deepest = std::max(deepest, l);
     for (std::size_t c = 0; c < scene.clusters.size(); ++c) {
       const LeafCluster& cluster = scene.clusters[c];
       for (std::size_t k = 0; k < cluster.planes.size(); ++k) {
@@ -463,6 +488,13 @@ Result<LodMesh> BuildLevel(const Tree& tree, long max_triangles, const LodOption
                                       at(p.u0, p.v1)};
         PushQuad(corners, p.normal, scene.cluster_tiles[c][k], scene.atlas_size, &out.cards);
       }
+      // Foliage: the deepest level, free along its whole card, a phase past the branches' ids.
+      const std::size_t added = out.cards.vertex_count() - out.card_wind[0].values.size();
+      const float phase = WindPhase(static_cast<uint32_t>(tree.branches.size() + c));
+      out.card_wind[0].values.insert(out.card_wind[0].values.end(), added,
+                                     static_cast<float>(deepest));
+      out.card_wind[1].values.insert(out.card_wind[1].values.end(), added, 1.0f);
+      out.card_wind[2].values.insert(out.card_wind[2].values.end(), added, phase);
     }
     choice.clusters = static_cast<int>(scene.clusters.size());
     out.cluster_triangles = Triangles(out.cards) - branch_card_triangles;
@@ -475,6 +507,7 @@ Result<LodMesh> BuildLevel(const Tree& tree, long max_triangles, const LodOption
     out.parts.flower_node_index = std::move(full.flower_node_index);
   }
   if (!out.cards.indices.empty()) out.atlas = PaintAtlas(full, scene);
+  PartsWind(tree, levels, &out);
   choice.triangles = FullTriangles(out.parts) + Triangles(out.cards) + Triangles(out.twigs);
   return out;
 }
@@ -560,7 +593,13 @@ Result<gltf::Document> LodGltfDocument(const std::vector<LodMesh>& levels, const
     gltf::Mesh mesh;
     mesh.name = node_name;
     if (!parts->meshes.empty()) {
+      // TreeGltfDocument's primitives: the non-empty parts in order (bark, leaves, flowers).
+      const MeshBuffers* buffers[3] = {&level.parts.bark, &level.parts.leaves,
+                                       &level.parts.flowers};
+      std::size_t part = 0;
       for (gltf::Primitive& p : parts->meshes[0].primitives) {
+        while (part < 3 && buffers[part]->indices.empty()) ++part;
+        if (part < 3) p.mesh.attributes = level.parts_wind[part++];
         p.material = material_index(*parts, p.material);
         mesh.primitives.push_back(std::move(p));
       }
@@ -584,6 +623,7 @@ Result<gltf::Document> LodGltfDocument(const std::vector<LodMesh>& levels, const
       doc.materials.push_back(std::move(material));
       gltf::Primitive cards;
       AppendPrimitiveMesh(level.cards, /*with_uvs=*/true, &cards);
+      cards.mesh.attributes = level.card_wind;
       cards.material = static_cast<int>(doc.materials.size()) - 1;
       mesh.primitives.push_back(std::move(cards));
     }
@@ -601,6 +641,7 @@ Result<gltf::Document> LodGltfDocument(const std::vector<LodMesh>& levels, const
       }
       gltf::Primitive twigs;
       AppendPrimitiveMesh(level.twigs, /*with_uvs=*/false, &twigs);
+      twigs.mesh.attributes = level.twig_wind;
       twigs.material = twigs_material;
       mesh.primitives.push_back(std::move(twigs));
     }

@@ -6,6 +6,7 @@
 // card plane, crossed), simulate sway, write files, or touch the page's GPU atlas.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -47,6 +48,13 @@ struct LodMesh {
   MeshBuffers twigs;           // 3 triangles per twig cone, metres (uvs empty)
   image::Rgba8Image atlas;     // empty when there are no cards
   long cluster_triangles = 0;  // the cards' triangles that are leaf-cluster cards
+  // Wind data of every vertex for an engine's wind shader (sway/wind_attributes.h, written as
+  // _WIND_LEVEL, _WIND_ALONG, _WIND_PHASE): the parts' (bark, leaves, flowers) from their branch
+  // and node; a branch card's and a twig's from its branch, along its base -> tip axis; a
+  // leaf-cluster card's the tree's deepest level, along 1 (foliage moves freely) and a phase of its
+  // own.
+  std::array<std::vector<geom::VertexAttribute>, 3> parts_wind;
+  std::vector<geom::VertexAttribute> card_wind, twig_wind;
 };
 
 struct LodOptions {

@@ -263,7 +263,8 @@ Estimate TreeRun::ExportWork(const TreeExportRequest& request) const {
       return EstimateLodExport(counts, request.max_triangles, request.lod);
     case Kind::kSwayGlb: {
       SwayModel scratch;
-      return EstimateSwayGlb(ModelOrBuilt(&scratch), counts, sway_params(), request.fps);
+      return EstimateSwayGlb(ModelOrBuilt(&scratch), counts, sway_params(), request.fps,
+                             request.max_joints);
     }
     case Kind::kGlb:
       break;
@@ -287,7 +288,7 @@ Status TreeRun::CheckExport(const TreeExportRequest& request) const {
                            : "lower " + years + ", N_high or B_l");
 }
 
-Result<std::string> TreeRun::Export(const TreeExportRequest& request) const {
+Result<std::string> TreeRun::Export(const TreeExportRequest& request, SwayGlbInfo* sway) const {
   using Kind = TreeExportRequest::Kind;
   std::vector<unsigned char> glb;
   switch (request.kind) {
@@ -325,7 +326,8 @@ Result<std::string> TreeRun::Export(const TreeExportRequest& request) const {
       // core/sway/sway_gltf: exact two-joint skinning of eq. 3.15.
       SwayGlbOptions options;
       options.fps = request.fps;
-      NIWA_RETURN_IF_ERROR(WriteSwayGlb(tree(), sway_params(), options, &glb));
+      options.max_joints = request.max_joints;
+      NIWA_RETURN_IF_ERROR(WriteSwayGlb(tree(), sway_params(), options, &glb, sway));
       break;
     }
   }

@@ -19,6 +19,7 @@
 #include "run/study_run.h"
 #include "sway/skin.h"
 #include "sway/sway.h"
+#include "sway/sway_gltf.h"
 #include "tree/growth.h"
 #include "tree/mesh.h"
 #include "tree/tree_budget.h"
@@ -31,12 +32,13 @@ namespace niwa {
 struct TreeExportRequest {
   enum class Kind { kGlb, kJson, kSvg, kLodGlb, kSwayGlb };
   Kind kind = Kind::kGlb;
-  SvgOptions svg;                           // kSvg
-  long max_triangles = -1;                  // kLodGlb: within N triangles; -1: the full mesh
-  bool lod = false;                         // kLodGlb: levels LOD0..LOD2
-  LodLayout layout = LodLayout::kSiblings;  // kLodGlb with lod
-  std::string lod_field = "max_triangles";  // the field a level that cannot fit names
-  double fps = 30;                          // kSwayGlb: keys per second
+  SvgOptions svg;                               // kSvg
+  long max_triangles = -1;                      // kLodGlb: within N triangles; -1: the full mesh
+  bool lod = false;                             // kLodGlb: levels LOD0..LOD2
+  LodLayout layout = LodLayout::kSiblings;      // kLodGlb with lod
+  std::string lod_field = "max_triangles";      // the field a level that cannot fit names
+  double fps = 30;                              // kSwayGlb: keys per second
+  std::size_t max_joints = kDefaultSwayJoints;  // kSwayGlb: the skin's joints (sway_gltf.h)
 };
 
 // The run's export kinds by name: "glb", "json", "svg", "lod.glb", "sway.glb" (else an error
@@ -169,8 +171,9 @@ class TreeRun : public run::StudyRun {
   // tells to lower state.limits.years_name, N_high or B_l.
   Status CheckExport(const TreeExportRequest& request) const;
   // The export's bytes (not checked against the budget: call CheckExport first). .glb errors
-  // name "glb" (io/gltf_writer), LOD ones request.lod_field.
-  Result<std::string> Export(const TreeExportRequest& request) const;
+  // name "glb" (io/gltf_writer), LOD ones request.lod_field. `sway` (kSwayGlb): the skin's joints
+  // and, when clustered, its error against eq. 3.15.
+  Result<std::string> Export(const TreeExportRequest& request, SwayGlbInfo* sway = nullptr) const;
 
   // ---- sway (thesis ch. 3) ----
   SwayParams sway_params() const { return SwayParams(state_.params); }

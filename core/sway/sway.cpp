@@ -269,6 +269,18 @@ glm::dmat3 SwaySimulator::ParentRotation(int i) const {
                     ParentRotate(i, dvec3(0, 0, 1)));
 }
 
+dvec3 RotateMinimal(const dvec3& from, const dvec3& to, const dvec3& v) {
+  return RotateMin(from, to, v);
+}
+
+glm::dmat3 SwaySimulator::RodRotation(int i) const {
+  const std::size_t u = static_cast<std::size_t>(i);
+  const dvec3& from = model_.nodes[u].rest_dir;
+  return glm::dmat3(RotateMin(from, dir_[u], dvec3(1, 0, 0)),
+                    RotateMin(from, dir_[u], dvec3(0, 1, 0)),
+                    RotateMin(from, dir_[u], dvec3(0, 0, 1)));
+}
+
 dvec3 SwaySimulator::NodePosition(int i, int n) const {
   const SwayNode& s = model_.nodes[static_cast<std::size_t>(i)];
   const std::size_t k = static_cast<std::size_t>(n);

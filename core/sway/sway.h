@@ -94,6 +94,10 @@ struct SwayModel {
   long internodes = 0;  // alive internodes drawn
 };
 
+// The minimal rotation taking unit `from` onto unit `to`, applied to v (the turn of eq. 3.11:
+// Rodrigues about from × to, a half turn when they are opposite).
+glm::dvec3 RotateMinimal(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec3& v);
+
 // Builds the node points, masses, areas, stiffnesses and the omission classes of a grown tree.
 SwayModel BuildSwayModel(const Tree& tree, const SwayParams& params);
 
@@ -145,6 +149,10 @@ class SwaySimulator {
   // The rotation of node point i's parent rod (eq. 3.11) as a matrix: R v = ParentRotate(i, v);
   // identity for a node point on the root. Used by core/sway/skin.h.
   glm::dmat3 ParentRotation(int i) const;
+  // The rotation of node point i's own rod since rest: the minimal turn of its rest direction onto
+  // today's, i.e. ParentRotation of any child of i (eq. 3.11). Used by the clustered sway skin
+  // (core/sway/sway_gltf.h), where a node point's whole subtree turns with one rod.
+  glm::dmat3 RodRotation(int i) const;
   // The rest tree with every alive branch's nodes moved to the current interpolated pose (3.3.3).
   Tree DeformedTree(const Tree& rest) const;
 

@@ -39,15 +39,18 @@ Estimate EstimateSwayRun(const SwayModel& model, const SwayParams& params, int t
 }
 
 Estimate EstimateSwayGlb(const SwayModel& model, const TreeCounts& counts, const SwayParams& params,
-                         double fps) {
+                         double fps, std::size_t max_joints) {
   const double keys_per_second = params.dt > 0 ? std::min(fps, 1.0 / params.dt) : fps;
   const double keys = std::floor(params.duration * keys_per_second) + 1;
-  const double joints = 1.0 + 2.0 * model.moving + model.followers;
+  const double exact = 1.0 + 2.0 * model.moving + model.followers;
+  const bool clustered = exact > static_cast<double>(max_joints);
+  const double joints = clustered ? static_cast<double>(max_joints) : exact;
   const double mesh_bytes = EstimateTreeExport(counts, TreeExport::kGlb).memory_bytes;
   const double clip_bytes = keys * joints * kJointKeyBytes;
   Estimate e;
   e.memory_bytes = mesh_bytes + kGlbMemoryPerByte * clip_bytes;
-  e.seconds = EstimateSwayRun(model, params, 0).seconds + kGlbNsPerByte * 1e-9 * clip_bytes +
+  e.seconds = (clustered ? 2.0 : 1.0) * EstimateSwayRun(model, params, 0).seconds +
+              kGlbNsPerByte * 1e-9 * clip_bytes +
               EstimateTreeExport(counts, TreeExport::kGlb).seconds;
   e.what = "writing the .glb (" + Steps(keys) + " keys of " + Steps(joints) + " joints)";
   return e;

@@ -17,10 +17,11 @@ double SwaySteps(const SwayParams& params);
 // step) and the steps × internodes of work.
 Estimate EstimateSwayRun(const SwayModel& model, const SwayParams& params, int tips);
 
-// WriteSwayGlb at `fps`: the tree's mesh and skin, keys (at most one a step) × joints of 28 bytes
-// (translation and rotation), and the simulation that makes them.
+// WriteSwayGlb at `fps` with at most `max_joints` joints: the tree's mesh and skin, keys (at most
+// one a step) × joints of 28 bytes (translation and rotation), and the simulation that makes them
+// (twice when the skin is clustered: once to choose the groups).
 Estimate EstimateSwayGlb(const SwayModel& model, const TreeCounts& counts, const SwayParams& params,
-                         double fps);
+                         double fps, std::size_t max_joints);
 
 // The page's sway (web/bindings/tree_bindings.cpp): `instances` simulators of `model` stepped by
 // the wall clock and their pose arrays (16 floats a node point and instance); no trajectories.

@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/quaternion.hpp>
+#include <queue>
 
 #include "sway/skin.h"
+#include "sway/wind_attributes.h"
 #include "tree/mesh.h"
 
 namespace niwa {
@@ -37,61 +39,131 @@ void VertexJoints(const VertexSkin& skin, const SwayJoints& joints, std::vector<
   }
 }
 
-// Hierarchy level of every branch: 0 for a shoot without a parent, its parent's + 1 otherwise.
-std::vector<int> BranchLevels(const Tree& tree) {
-  std::vector<int> level(tree.branches.size(), -1);
-  for (std::size_t i = 0; i < tree.branches.size(); ++i) {
-    // Walk up to a branch whose level is known (or the root), then fill the path down.
-    std::vector<std::size_t> path;
-    std::size_t b = i;
-    while (level[b] < 0) {
-      path.push_back(b);
-      const int parent = tree.branches[b].parent;
-      if (parent < 0 || static_cast<std::size_t>(parent) >= tree.branches.size()) break;
-      b = static_cast<std::size_t>(parent);
-    }
-    int at = level[b] >= 0 ? level[b] + 1 : 0;
-    for (std::size_t k = path.size(); k-- > 0;) level[path[k]] = at++;
+// The steps of the clip's keys: key k at the step nearest k / fps, for k / fps <= duration (keys
+// falling on one step merged).
+std::vector<long> KeySteps(const SwayParams& params, double fps) {
+  const double dt = params.dt;
+  const long steps = static_cast<long>(std::floor(params.duration / dt + 0.5));
+  std::vector<long> key_steps;
+  for (long k = 0;; ++k) {
+    double t = static_cast<double>(k) / fps;
+    if (t > params.duration + 1e-9) break;
+    long step = std::min(steps, static_cast<long>(std::floor(t / dt + 0.5)));
+    if (key_steps.empty() || step > key_steps.back()) key_steps.push_back(step);
   }
-  return level;
+  return key_steps;
 }
 
-// A branch's wind phase in [0, 1): its id through a multiplicative hash (Knuth's 2654435761),
-// the top 24 bits, so neighbours sway out of step (same bits natively and in WASM).
-float WindPhase(uint32_t branch) {
-  const uint32_t h = branch * 2654435761u;
-  return static_cast<float>(h >> 8) / 16777216.0f;
+// Where a rest point of node point `r`'s group is drawn when the group turns rigidly with r's rod
+// (anchor, tip: r's now; the rod is rigid, so its direction is (tip - anchor) / l_r); the rest
+// point itself for the root's group (r < 0).
+glm::dvec3 GroupPlace(const SwayModel& model, int r, const glm::dvec3& anchor,
+                      const glm::dvec3& tip, const glm::dvec3& rest_point) {
+  if (r < 0) return rest_point;
+  const SwayNode& rod = model.nodes[static_cast<std::size_t>(r)];
+  const glm::dvec3 along = tip - anchor;
+  const double length = glm::length(along);
+  const glm::dvec3 dir = length > 1e-12 ? along / length : rod.rest_dir;
+  return anchor + RotateMinimal(rod.rest_dir, dir, rest_point - rod.rest_anchor);
 }
 
-// The wind data of one part's vertices (docs/sway-model.md "Wind attributes"): wind_level, the
-// branch's hierarchy level; wind_along, the vertex's node along its branch over the branch's
-// last node (0 at the base, 1 at the tip); wind_phase, the branch's phase.
-std::vector<geom::VertexAttribute> WindAttributes(const Tree& tree, const std::vector<int>& levels,
-                                                  const std::vector<uint32_t>& branch_id,
-                                                  const std::vector<uint32_t>& node_index) {
-  std::vector<geom::VertexAttribute> out(3);
-  out[0].name = "wind_level";
-  out[1].name = "wind_along";
-  out[2].name = "wind_phase";
-  for (std::size_t v = 0; v < branch_id.size(); ++v) {
-    const uint32_t b = branch_id[v];
-    float level = 0, along = 0;
-    if (b < tree.branches.size()) {
-      level = static_cast<float>(levels[b]);
-      const std::size_t nodes = tree.branches[b].nodes.size();
-      if (nodes >= 2) {
-        const std::size_t last = nodes - 1;
-        along = std::min(1.0f, static_cast<float>(node_index[v]) / static_cast<float>(last));
-      }
-    }
-    out[0].values.push_back(level);
-    out[1].values.push_back(along);
-    out[2].values.push_back(WindPhase(b));
+// A candidate of the greedy pick: larger gain first, then the lower node point.
+struct Pick {
+  double gain;
+  int node;
+  unsigned version;
+  bool operator<(const Pick& o) const {
+    return gain != o.gain ? gain < o.gain
+                          : node > o.node;  // std::priority_queue: the largest on top
   }
-  return out;
-}
+};
 
 }  // namespace
+
+SwayClusters ClusterSwayNodePoints(const Tree& tree, const SwayParams& params,
+                                   const std::vector<double>& vertices, std::size_t groups,
+                                   int samples) {
+  SwaySimulator sim(tree, params);
+  const SwayModel& model = sim.model();
+  const std::size_t n = model.nodes.size();
+  SwayClusters c;
+  c.rep.assign(n, -1);
+  if (n == 0 || groups == 0) return c;
+  // The run at evenly spaced steps (whole steps, the first and the last included).
+  const long steps = static_cast<long>(std::floor(params.duration / params.dt + 0.5));
+  const long count = std::max(1L, std::min(static_cast<long>(std::max(samples, 1)), steps + 1));
+  std::vector<std::vector<glm::dvec3>> anchor, tip;
+  for (long k = 0; k < count; ++k) {
+    const long step = count == 1 ? steps : k * steps / (count - 1);
+    if (k > 0 && step == static_cast<long>(sim.steps())) continue;
+    while (sim.steps() < step) sim.Step();
+    anchor.push_back(sim.anchors());
+    tip.push_back(sim.tips());
+  }
+  // A node point's distance from where its group puts its tip, the largest over the samples.
+  auto error = [&](std::size_t j) {
+    double worst = 0;
+    const int r = c.rep[j];
+    const glm::dvec3& rest_tip = model.nodes[j].rest_tip;
+    for (std::size_t k = 0; k < tip.size(); ++k) {
+      const std::size_t u = static_cast<std::size_t>(std::max(r, 0));
+      const glm::dvec3 place = GroupPlace(model, r, anchor[k][u], tip[k][u], rest_tip);
+      worst = std::max(worst, glm::length(tip[k][j] - place));
+    }
+    return worst;
+  };
+  std::vector<std::vector<int>> children(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int p = model.nodes[i].parent;
+    if (p >= 0) children[static_cast<std::size_t>(p)].push_back(static_cast<int>(i));
+  }
+  // share[j]: the vertices of j's subtree that follow j's group (they would follow j).
+  std::vector<double> err(n), share(n);
+  for (std::size_t i = n; i-- > 0;) {
+    err[i] = model.nodes[i].kind == SwayKind::kFixed ? 0.0 : error(i);
+    share[i] = i < vertices.size() ? vertices[i] : 0.0;
+    for (int ch : children[i]) share[i] += share[static_cast<std::size_t>(ch)];
+  }
+  std::vector<unsigned> version(n, 0);
+  std::priority_queue<Pick> picks;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (err[i] * share[i] > 0) picks.push({err[i] * share[i], static_cast<int>(i), 0});
+  }
+  std::vector<char> is_rep(n, 0);
+  while (c.reps.size() < groups && !picks.empty()) {
+    const Pick top = picks.top();
+    picks.pop();
+    const std::size_t j = static_cast<std::size_t>(top.node);
+    if (top.version != version[j] || is_rep[j]) continue;
+    const int old = c.rep[j];
+    const double moved = share[j];
+    is_rep[j] = 1;
+    c.reps.push_back(top.node);
+    // j's subtree down to the next representatives now follows j.
+    std::vector<int> stack = {top.node};
+    while (!stack.empty()) {
+      const std::size_t u = static_cast<std::size_t>(stack.back());
+      stack.pop_back();
+      c.rep[u] = top.node;
+      err[u] = u == j || model.nodes[u].kind == SwayKind::kFixed ? 0.0 : error(u);
+      ++version[u];
+      if (u != j && err[u] * share[u] > 0)
+        picks.push({err[u] * share[u], static_cast<int>(u), version[u]});
+      for (int ch : children[u]) {
+        if (!is_rep[static_cast<std::size_t>(ch)]) stack.push_back(ch);
+      }
+    }
+    // Its ancestors in the old group lose those vertices.
+    for (int a = model.nodes[j].parent; a >= 0 && c.rep[static_cast<std::size_t>(a)] == old;
+         a = model.nodes[static_cast<std::size_t>(a)].parent) {
+      const std::size_t u = static_cast<std::size_t>(a);
+      share[u] -= moved;
+      ++version[u];
+      if (!is_rep[u] && err[u] * share[u] > 0) picks.push({err[u] * share[u], a, version[u]});
+    }
+  }
+  return c;
+}
 
 SwayJoints MapSwayJoints(const SwayModel& model) {
   SwayJoints joints;
@@ -107,32 +179,13 @@ SwayJoints MapSwayJoints(const SwayModel& model) {
   return joints;
 }
 
-Status WriteSwayGlb(const Tree& tree, const SwayParams& params, const SwayGlbOptions& options,
-                    std::vector<unsigned char>* bytes, SwayGlbInfo* info) {
-  if (bytes == nullptr) return Status::Error("glb", "no output buffer");
-  bytes->clear();
-  if (!(options.fps > 0) || !std::isfinite(options.fps)) {
-    return Status::Error("fps", "must be a positive number");
-  }
-  SwaySimulator sim(tree, params);
-  const SwayModel& model = sim.model();
-  const SwayJoints joints = MapSwayJoints(model);
-  if (info != nullptr) {
-    info->joints = joints.count;
-    info->node_points = model.nodes.size();
-  }
-  if (joints.count > kMaxGltfJoints) {
-    return Status::Error("", "the sway needs " + std::to_string(joints.count) +
-                                 " joints (1 root + 2 per moving and 1 per follower node point) "
-                                 "but JOINTS_0 (unsigned short) indexes at most 65536; grow "
-                                 "fewer years");
-  }
-  MeshOptions mesh_options;
-  mesh_options.cm_to_units = options.cm_to_units;
-  const TreeMesh mesh = BuildTreeMesh(tree, mesh_options);
-  const TreeSkin skin = BuildTreeSkin(mesh, model);
+namespace {
 
-  GltfSkinning out;
+// The exact two-joint skin of eq. 3.15 (MapSwayJoints) and the clip's keys.
+void ExactSkin(SwaySimulator& sim, const SwayParams& params, const SwayGlbOptions& options,
+               const SwayJoints& joints, const TreeSkin& skin, GltfSkinning* out_skin) {
+  GltfSkinning& out = *out_skin;
+  const SwayModel& model = sim.model();
   out.joints.resize(joints.count);
   out.joints[0].name = "root";
   const double s = static_cast<double>(options.cm_to_units);
@@ -151,23 +204,8 @@ Status WriteSwayGlb(const Tree& tree, const SwayParams& params, const SwayGlbOpt
   for (std::size_t k = 0; k < 3; ++k) {
     VertexJoints(*parts[k], joints, &out.joints0[k], &out.weights0[k]);
   }
-  const std::vector<int> levels = BranchLevels(tree);
-  out.attributes[0] = WindAttributes(tree, levels, mesh.bark_branch_id, mesh.bark_node_index);
-  out.attributes[1] = WindAttributes(tree, levels, mesh.leaf_branch_id, mesh.leaf_node_index);
-  out.attributes[2] = WindAttributes(tree, levels, mesh.flower_branch_id, mesh.flower_node_index);
-
-  // Keys: k / fps <= duration, each at its nearest step (merged when two fall on one step).
-  const double dt = params.dt;
-  const long steps = static_cast<long>(std::floor(params.duration / dt + 0.5));
-  std::vector<long> key_steps;
-  for (long k = 0;; ++k) {
-    double t = static_cast<double>(k) / options.fps;
-    if (t > params.duration + 1e-9) break;
-    long step = std::min(steps, static_cast<long>(std::floor(t / dt + 0.5)));
-    if (key_steps.empty() || step > key_steps.back()) key_steps.push_back(step);
-  }
   std::vector<glm::dquat> last(model.nodes.size(), glm::dquat(1, 0, 0, 0));
-  for (long step : key_steps) {
+  for (long step : KeySteps(params, options.fps)) {
     while (sim.steps() < step) sim.Step();
     out.times.push_back(static_cast<float>(sim.time()));
     for (std::size_t i = 0; i < model.nodes.size(); ++i) {
@@ -192,10 +230,131 @@ Status WriteSwayGlb(const Tree& tree, const SwayParams& params, const SwayGlbOpt
       }
     }
   }
-  if (info != nullptr) {
-    info->keys = out.times.size();
-    info->seconds = out.times.empty() ? 0.0 : static_cast<double>(out.times.back());
+}
+
+}  // namespace
+
+namespace {
+
+// The clustered skin of WriteSwayGlb (SwayClusters): one joint a representative, every vertex on
+// its node point's group with weight 1, and the clip's keys; the errors against eq. 3.15 into info.
+void ClusteredSkin(const Tree& tree, const SwayParams& params, const SwayGlbOptions& options,
+                   const TreeSkin& skin, GltfSkinning* out, SwayGlbInfo* info) {
+  SwaySimulator sim(tree, params);
+  const SwayModel& model = sim.model();
+  const std::size_t n = model.nodes.size();
+  const VertexSkin* parts[3] = {&skin.bark, &skin.leaves, &skin.flowers};
+  std::vector<double> vertices(n, 0.0);
+  for (const VertexSkin* part : parts) {
+    for (uint32_t j : part->joint) vertices[j] += 1.0;
   }
+  const SwayClusters clusters =
+      ClusterSwayNodePoints(tree, params, vertices, options.max_joints - 1);
+  std::vector<int> joint_of(n, 0);
+  out->joints.resize(1 + clusters.reps.size());
+  out->joints[0].name = "root";
+  const double s = static_cast<double>(options.cm_to_units);
+  for (std::size_t k = 0; k < clusters.reps.size(); ++k) {
+    const SwayNode& node = model.nodes[static_cast<std::size_t>(clusters.reps[k])];
+    joint_of[static_cast<std::size_t>(clusters.reps[k])] = static_cast<int>(k + 1);
+    GltfJoint& joint = out->joints[k + 1];
+    joint.name = "b" + std::to_string(node.branch);
+    joint.translation = ToArray(s * node.rest_anchor);
+    joint.inverse_bind_offset = ToArray(-s * node.rest_anchor);
+  }
+  for (std::size_t k = 0; k < 3; ++k) {
+    const VertexSkin& part = *parts[k];
+    out->joints0[k].assign(4 * part.joint.size(), 0);
+    out->weights0[k].assign(4 * part.joint.size(), 0.0f);
+    for (std::size_t v = 0; v < part.joint.size(); ++v) {
+      const int r = clusters.rep[part.joint[v]];
+      out->joints0[k][4 * v] =
+          static_cast<uint16_t>(r < 0 ? 0 : joint_of[static_cast<std::size_t>(r)]);
+      out->weights0[k][4 * v] = 1.0f;
+    }
+  }
+  std::vector<glm::dquat> last(clusters.reps.size(), glm::dquat(1, 0, 0, 0));
+  std::vector<glm::dvec3> exact;
+  double error_sum = 0;
+  long error_count = 0;
+  for (long step : KeySteps(params, options.fps)) {
+    while (sim.steps() < step) sim.Step();
+    out->times.push_back(static_cast<float>(sim.time()));
+    for (std::size_t k = 0; k < clusters.reps.size(); ++k) {
+      const int r = clusters.reps[k];
+      glm::dquat q = glm::normalize(glm::quat_cast(sim.RodRotation(r)));
+      if (glm::dot(q, last[k]) < 0) q = -q;  // shortest path between keys
+      last[k] = q;
+      GltfJoint& joint = out->joints[k + 1];
+      const std::array<float, 3> t = ToArray(s * sim.anchors()[static_cast<std::size_t>(r)]);
+      joint.translation_keys.insert(joint.translation_keys.end(), t.begin(), t.end());
+      joint.rotation_keys.insert(joint.rotation_keys.end(),
+                                 {static_cast<float>(q.x), static_cast<float>(q.y),
+                                  static_cast<float>(q.z), static_cast<float>(q.w)});
+    }
+    // Every node of every node point: the skin's place against eq. 3.15's.
+    sim.NodePositions(&exact);
+    std::size_t at = 0;
+    for (std::size_t u = 0; u < n; ++u) {
+      const SwayNode& node = model.nodes[u];
+      const int r = clusters.rep[u];
+      const std::size_t g = static_cast<std::size_t>(std::max(r, 0));
+      for (const glm::dvec3& rest : node.rest_nodes) {
+        const glm::dvec3 place = GroupPlace(model, r, sim.anchors()[g], sim.tips()[g], rest);
+        const double e = s * glm::length(exact[at] - place);
+        info->max_error = std::max(info->max_error, e);
+        info->max_motion = std::max(info->max_motion, s * glm::length(exact[at] - rest));
+        error_sum += e;
+        ++error_count;
+        ++at;
+      }
+    }
+  }
+  info->mean_error = error_count > 0 ? error_sum / static_cast<double>(error_count) : 0.0;
+}
+
+}  // namespace
+
+Status WriteSwayGlb(const Tree& tree, const SwayParams& params, const SwayGlbOptions& options,
+                    std::vector<unsigned char>* bytes, SwayGlbInfo* info) {
+  if (bytes == nullptr) return Status::Error("glb", "no output buffer");
+  bytes->clear();
+  if (!(options.fps > 0) || !std::isfinite(options.fps)) {
+    return Status::Error("fps", "must be a positive number");
+  }
+  if (options.max_joints < 2 || options.max_joints > kMaxGltfJoints) {
+    return Status::Error("max_joints", std::to_string(options.max_joints) +
+                                           " is out of range; must be a whole number in [2, " +
+                                           std::to_string(kMaxGltfJoints) + "]");
+  }
+  SwayGlbInfo local;
+  if (info == nullptr) info = &local;
+  *info = SwayGlbInfo{};
+  SwaySimulator sim(tree, params);
+  const SwayModel& model = sim.model();
+  const SwayJoints joints = MapSwayJoints(model);
+  info->exact_joints = joints.count;
+  info->node_points = model.nodes.size();
+  MeshOptions mesh_options;
+  mesh_options.cm_to_units = options.cm_to_units;
+  const TreeMesh mesh = BuildTreeMesh(tree, mesh_options);
+  const TreeSkin skin = BuildTreeSkin(mesh, model);
+
+  GltfSkinning out;
+  const std::vector<int> levels = BranchLevels(tree);
+  out.attributes[0] = WindAttributes(tree, levels, mesh.bark_branch_id, mesh.bark_node_index);
+  out.attributes[1] = WindAttributes(tree, levels, mesh.leaf_branch_id, mesh.leaf_node_index);
+  out.attributes[2] = WindAttributes(tree, levels, mesh.flower_branch_id, mesh.flower_node_index);
+  if (joints.count > options.max_joints) {
+    info->clustered = true;
+    ClusteredSkin(tree, params, options, skin, &out, info);
+    info->joints = out.joints.size();
+  } else {
+    info->joints = joints.count;
+    ExactSkin(sim, params, options, joints, skin, &out);
+  }
+  info->keys = out.times.size();
+  info->seconds = out.times.empty() ? 0.0 : static_cast<double>(out.times.back());
   return WriteSkinnedTreeGlb(mesh, out, bytes);
 }
 

@@ -23,18 +23,49 @@ struct SwayJoints {
 };
 SwayJoints MapSwayJoints(const SwayModel& model);
 
+// Joints of the skin by default, the root included (issue 32: engines cap a skin's joints; Unity
+// and Godot draw 128-joint skins on every platform).
+inline constexpr std::size_t kDefaultSwayJoints = 128;
+
 struct SwayGlbOptions {
   double fps = 30;            // keys per second of simulated time (each at the nearest step)
   float cm_to_units = 0.01f;  // the mesh's units (metres)
+  // The most joints of the skin, the root included, in [2, kMaxGltfJoints]. The exact skin (1 + 2
+  // per moving node point + 1 per follower) is written when it fits; else the clustered one.
+  std::size_t max_joints = kDefaultSwayJoints;
 };
 
 struct SwayGlbInfo {
   std::size_t joints = 0, keys = 0, node_points = 0;
-  double seconds = 0;  // time of the last key
+  std::size_t exact_joints = 0;  // what the exact skin would need
+  double seconds = 0;            // time of the last key
+  bool clustered = false;
+  // Clustered skins only (0 for the exact one): how far the skinned nodes lie from the simulator's
+  // (eq. 3.15), metres, over every node of every node point at every key (the largest and the
+  // mean), and the largest distance a node moved from rest, for scale.
+  double max_error = 0, mean_error = 0, max_motion = 0;
 };
 
+// The clustered skin (docs/sway-model.md "Joint budget"): each representative node point's whole
+// group turns rigidly with its rod (one joint: translate(s anchor_r) R_r with inverse bind
+// translate(-s rest_anchor_r), R_r = SwaySimulator::RodRotation), and every node point follows its
+// nearest representative at or above it, or the static root when it has none.
+struct SwayClusters {
+  std::vector<int> rep;   // per node point: the representative it follows, -1: the root
+  std::vector<int> reps;  // the representatives in the order chosen: joint k + 1 is reps[k]
+};
+
+// Chooses at most `groups` representatives greedily: at each pick, the node point whose tip lies
+// farthest from where its group's rigid turn puts it (the largest over `samples` evenly spaced
+// steps of the run), times the vertices (`vertices`, one count a node point) that would follow it.
+// Deterministic (ties to the lower index).
+SwayClusters ClusterSwayNodePoints(const Tree& tree, const SwayParams& params,
+                                   const std::vector<double>& vertices, std::size_t groups,
+                                   int samples = 32);
+
 // Key k is the state after step round(k / (fps dt)) (keys falling on the same step are merged),
-// for k / fps <= duration. Every primitive also carries the wind attributes _WIND_LEVEL (branch
+// for k / fps <= duration. The skin is exact when it fits options.max_joints, else clustered
+// (SwayClusters). Every primitive also carries the wind attributes _WIND_LEVEL (branch
 // hierarchy level), _WIND_ALONG (node / last node of the branch, 0..1) and _WIND_PHASE (per branch,
 // [0, 1)) for an engine's own wind shader (docs/sway-model.md "Wind attributes"). Errors are one
 // line (e.g. too many joints for JOINTS_0).

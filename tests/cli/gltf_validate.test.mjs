@@ -231,7 +231,12 @@ try {
           `sway ${r.label}: no missing-tangent warning`);
     if (r.label !== 'native') continue;
 
-    const joints = 1 + 2 * stats.moving + stats.followers;
+    // The skin within the default joint budget (docs/sway-model.md "Joint budget"): the exact one
+    // (1 + 2 x moving + followers) when it fits 128, else the node points grouped.
+    const exact = 1 + 2 * stats.moving + stats.followers;
+    const joints = stats.glb?.joints;
+    check(stats.glb?.exact_joints === exact && joints === Math.min(exact, 128) && stats.glb.clustered === (exact > 128),
+          'sway: the skin within the 128-joint budget (--stats glb)', JSON.stringify(stats.glb));
     let gltf;
     try {
       gltf = await loadGltf(bytes);
@@ -245,7 +250,7 @@ try {
     check(skinned.length >= 2 && bones.length === joints,
           'sway: three.js finds SkinnedMeshes with one bone per joint',
           `${skinned.length} skinned meshes, ${bones.length} bones, expected ${joints} ` +
-          `(1 + 2 x ${stats.moving} moving + ${stats.followers} followers)`);
+          `(of ${exact} for the exact skin: 1 + 2 x ${stats.moving} moving + ${stats.followers} followers)`);
     const clip = gltf.animations[0];
     check(gltf.animations.length === 1 && clip.tracks.length === 2 * (joints - 1) &&
           Math.abs(clip.duration - 6) < 1e-3,

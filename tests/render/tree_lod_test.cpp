@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <string>
@@ -67,6 +69,64 @@ TEST(TreeLod, TwentyThousandTrianglesAndTheGlbAgrees) {
   EXPECT_EQ(Triangles(lod->twigs), 3L * c.twigs);
   EXPECT_EQ(lod->twigs.vertex_count(), 4u * static_cast<std::size_t>(c.twigs));
   for (const auto& p : glb.gltf["meshes"][0]["primitives"]) EXPECT_EQ(p.value("mode", 4), 4);
+}
+
+// Wind data on every primitive of the budget and LOD .glb (issue 32 item 2, as on the sway .glb):
+// _WIND_LEVEL, _WIND_ALONG and _WIND_PHASE one a vertex; a twig cone's base ring at 0 along its
+// branch and its apex at 1; leaf-cluster cards free (along 1) at the deepest level; whole levels,
+// phases in [0, 1), alongs in [0, 1]; the full-mesh level carries them too.
+TEST(TreeLod, EveryPrimitiveCarriesWindData) {
+  Result<LodMesh> lod = BuildLodMesh(Sakura15(), 20000);
+  ASSERT_TRUE(lod.ok()) << lod.status().Line();
+  ASSERT_EQ(lod->twig_wind.size(), 3u);
+  const std::vector<float>& twig_along = lod->twig_wind[1].values;
+  ASSERT_EQ(twig_along.size(), lod->twigs.vertex_count());
+  for (std::size_t v = 0; v < twig_along.size(); ++v) {
+    EXPECT_NEAR(twig_along[v], v % 4 == 3 ? 1.0 : 0.0, 1e-5) << v;
+  }
+  const std::size_t cards = lod->cards.vertex_count();
+  ASSERT_EQ(lod->card_wind[0].values.size(), cards);
+  float deepest = 0;
+  for (float l : lod->card_wind[0].values) deepest = std::max(deepest, l);
+  // The cluster cards come after the branch cards: free at the deepest level.
+  const std::size_t cluster_vertices = static_cast<std::size_t>(2 * lod->cluster_triangles);
+  ASSERT_GT(cluster_vertices, 0u);
+  for (std::size_t v = cards - cluster_vertices; v < cards; ++v) {
+    ASSERT_EQ(lod->card_wind[1].values[v], 1.0f) << v;
+    ASSERT_EQ(lod->card_wind[0].values[v], deepest) << v;
+  }
+  {
+    std::vector<unsigned char> bytes;
+    ASSERT_TRUE(WriteLodGlb({*lod}, &bytes).ok());
+    const testing::Glb glb = testing::ParseGlb(bytes);
+    int primitives = 0;
+    for (const auto& p : glb.gltf["meshes"][0]["primitives"]) {
+      const long n = glb.gltf["accessors"][p["attributes"]["POSITION"].get<std::size_t>()]["count"];
+      for (const char* name : {"_WIND_LEVEL", "_WIND_ALONG", "_WIND_PHASE"}) {
+        ASSERT_TRUE(p["attributes"].contains(name)) << name;
+        const std::vector<float> values =
+            testing::ReadAccessor<float>(glb, p["attributes"][name].get<int>());
+        ASSERT_EQ(static_cast<long>(values.size()), n) << name;
+        for (float x : values) {
+          if (name[6] == 'L') {
+            ASSERT_EQ(x, std::floor(x));
+          } else if (name[6] == 'A') {
+            ASSERT_TRUE(x >= 0.0f && x <= 1.0f) << x;
+          } else {
+            ASSERT_TRUE(x >= 0.0f && x < 1.0f) << x;
+          }
+        }
+      }
+      ++primitives;
+    }
+    EXPECT_EQ(primitives, 3);  // bark tubes, cards, twigs
+  }
+  const long full = FullTriangles(BuildTreeMesh(Sakura15()));
+  Result<LodMesh> whole = BuildLodMesh(Sakura15(), full);
+  ASSERT_TRUE(whole.ok());
+  ASSERT_TRUE(whole->choice.full);
+  EXPECT_EQ(whole->parts_wind[0][0].values.size(), whole->parts.bark.vertex_count());
+  EXPECT_EQ(whole->parts_wind[1][0].values.size(), whole->parts.leaves.vertex_count());
 }
 
 // Twig cones face outward: each triangle's normal points away from the twig's axis.

@@ -70,6 +70,46 @@ struct GlbSkinEval {
   }
 };
 
+// Every vertex of the .glb's first primitive (the bark) at key `key`, skinned from the .glb alone.
+std::vector<glm::dvec3> FirstPrimitiveAtKey(const std::vector<unsigned char>& bytes,
+                                            std::size_t key) {
+  const Glb glb = ParseGlb(bytes);
+  const json& gltf = glb.gltf;
+  const json& skin = gltf["skins"][0];
+  const std::size_t joints = skin["joints"].size();
+  GlbSkinEval eval{&glb, {}, {}, {}, {}};
+  eval.translation.resize(joints);
+  eval.rotation.resize(joints);
+  for (const json& channel : gltf["animations"][0]["channels"]) {
+    const int node = channel["target"]["node"].get<int>();
+    const std::size_t j = static_cast<std::size_t>(
+        std::find(skin["joints"].begin(), skin["joints"].end(), node) - skin["joints"].begin());
+    const json& sampler = gltf["animations"][0]["samplers"][channel["sampler"].get<std::size_t>()];
+    (channel["target"]["path"] == "translation" ? eval.translation : eval.rotation)[j] =
+        ReadAccessor<float>(glb, sampler["output"].get<int>());
+  }
+  const std::vector<float> ibm = ReadAccessor<float>(glb, skin["inverseBindMatrices"].get<int>());
+  for (std::size_t j = 0; j < joints; ++j) {
+    const json& node = gltf["nodes"][skin["joints"][j].get<std::size_t>()];
+    std::array<float, 3> t{0, 0, 0};
+    if (node.contains("translation")) {
+      for (int c = 0; c < 3; ++c)
+        t[static_cast<std::size_t>(c)] = node["translation"][c].get<float>();
+    }
+    eval.rest.push_back(t);
+    eval.inverse_offset.push_back({ibm[16 * j + 12], ibm[16 * j + 13], ibm[16 * j + 14]});
+  }
+  const json& attributes = gltf["meshes"][0]["primitives"][0]["attributes"];
+  const std::vector<uint16_t> j0 = ReadAccessor<uint16_t>(glb, attributes["JOINTS_0"].get<int>());
+  const std::vector<float> w0 = ReadAccessor<float>(glb, attributes["WEIGHTS_0"].get<int>());
+  const std::vector<float> p = ReadAccessor<float>(glb, attributes["POSITION"].get<int>());
+  std::vector<glm::dvec3> out;
+  for (std::size_t v = 0; 3 * v + 2 < p.size(); ++v) {
+    out.push_back(eval.At(key, j0, w0, v, glm::dvec3(p[3 * v], p[3 * v + 1], p[3 * v + 2])));
+  }
+  return out;
+}
+
 TEST(GltfSwayTest, SkinnedGlbHasJointsClipAndReproducesTheSkinnedPoses) {
   const Tree tree = GrowForSway("sakura-thesis", 5);
   const SwayParams params = ShortGust();
@@ -240,8 +280,11 @@ TEST(GltfSwayTest, WindAttributesFollowTheBranches) {
   EXPECT_EQ(phases_apart, children);  // a child never swings in step with its parent
 }
 
-TEST(GltfSwayTest, TooManyJointsIsAOneLineError) {
-  // 33,000 long thin twigs with leaves on one trunk: every twig moves, 2 joints each.
+// A tree whose exact skin passes the joint budget is written clustered within it (a tree past
+// JOINTS_0's 65,536 exact joints, once refused, takes the same path), and a budget outside
+// [2, 65536] is a one-line error.
+TEST(GltfSwayTest, AWideTreeIsClusteredAndABadBudgetIsAOneLineError) {
+  // 3,000 long thin twigs with leaves on one trunk: every twig moves, 2 joints each.
   Tree tree;
   auto add = [&](int parent, glm::vec3 a, glm::vec3 b, float radius, int leaves) {
     Branch br{};
@@ -256,20 +299,126 @@ TEST(GltfSwayTest, TooManyJointsIsAOneLineError) {
     tree.branches.push_back(br);
   };
   add(-1, {0, 0, 0}, {0, 100, 0}, 3.0f, 0);
-  for (int k = 0; k < 33000; ++k) {
-    float a = static_cast<float>(k) * 0.001f;
+  for (int k = 0; k < 3000; ++k) {
+    float a = static_cast<float>(k) * 0.01f;
     add(0, {0, 100, 0}, {60 * std::cos(a), 100, 60 * std::sin(a)}, 0.2f, 5);
   }
-  SwayParams params;
-  ASSERT_GT(MapSwayJoints(BuildSwayModel(tree, params)).count, kMaxGltfJoints);
+  const SwayParams params = ShortGust();
+  ASSERT_GT(MapSwayJoints(BuildSwayModel(tree, params)).count, 6000u);
   std::vector<unsigned char> bytes;
   SwayGlbInfo info;
-  std::string error = WriteSwayGlb(tree, params, SwayGlbOptions{}, &bytes, &info).Line();
-  EXPECT_NE(error.find("65536"), std::string::npos) << error;
-  EXPECT_NE(error.find("fewer years"), std::string::npos) << error;
-  EXPECT_EQ(error.find('\n'), std::string::npos);
-  EXPECT_GT(info.joints, kMaxGltfJoints);
-  EXPECT_TRUE(bytes.empty());
+  ASSERT_EQ(WriteSwayGlb(tree, params, SwayGlbOptions{}, &bytes, &info).Line(), "");
+  EXPECT_TRUE(info.clustered);
+  EXPECT_EQ(info.joints, kDefaultSwayJoints);
+  EXPECT_GT(info.exact_joints, 6000u);
+  const Glb glb = ParseGlb(bytes);
+  EXPECT_EQ(glb.gltf["skins"][0]["joints"].size(), kDefaultSwayJoints);
+
+  for (std::size_t bad : {std::size_t{0}, std::size_t{1}, kMaxGltfJoints + 1}) {
+    SwayGlbOptions options;
+    options.max_joints = bad;
+    const std::string error = WriteSwayGlb(tree, params, options, &bytes).Line();
+    EXPECT_NE(error.find("max_joints"), std::string::npos) << error;
+    EXPECT_NE(error.find("[2, 65536]"), std::string::npos) << error;
+    EXPECT_EQ(error.find('\n'), std::string::npos);
+    EXPECT_TRUE(bytes.empty());
+  }
+}
+
+// The groups (SwayClusters): at most the asked number, each representative once, and every node
+// point follows the nearest representative at or above it (or the root when none is).
+TEST(GltfSwayTest, ClustersFollowTheNearestRepresentativeAbove) {
+  const Tree tree = GrowForSway("sakura-thesis", 5);
+  const SwayParams params = ShortGust();
+  const SwayModel model = BuildSwayModel(tree, params);
+  const std::vector<double> vertices(model.nodes.size(), 10.0);
+  for (std::size_t groups : {std::size_t{1}, std::size_t{7}, std::size_t{30}}) {
+    const SwayClusters c = ClusterSwayNodePoints(tree, params, vertices, groups);
+    ASSERT_EQ(c.rep.size(), model.nodes.size());
+    EXPECT_EQ(c.reps.size(), groups);  // this tree has more moving node points than that
+    std::vector<char> is_rep(model.nodes.size(), 0);
+    for (int r : c.reps) {
+      EXPECT_FALSE(is_rep[static_cast<std::size_t>(r)]) << r;
+      is_rep[static_cast<std::size_t>(r)] = 1;
+    }
+    for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+      int expected = -1;
+      for (int a = static_cast<int>(i); a >= 0;
+           a = model.nodes[static_cast<std::size_t>(a)].parent) {
+        if (is_rep[static_cast<std::size_t>(a)]) {
+          expected = a;
+          break;
+        }
+      }
+      EXPECT_EQ(c.rep[i], expected) << i;
+    }
+    // Deterministic.
+    EXPECT_EQ(ClusterSwayNodePoints(tree, params, vertices, groups).reps, c.reps);
+  }
+}
+
+// The clustered skin, read back from the .glb alone: each vertex on one joint, the joints' keys
+// turning its group with one rod; more joints, closer to eq. 3.15; and the exact skin (today's
+// bytes) whenever it fits the budget.
+TEST(GltfSwayTest, ClusteredSkinApproachesTheSwayAsJointsGrow) {
+  const Tree tree = GrowForSway("sakura-thesis", 5);
+  const SwayParams params = ShortGust();
+  std::vector<unsigned char> exact, wide;
+  SwayGlbInfo exact_info;
+  SwayGlbOptions options;
+  options.max_joints = kMaxGltfJoints;
+  ASSERT_EQ(WriteSwayGlb(tree, params, options, &wide, &exact_info).Line(), "");
+  options.max_joints = exact_info.exact_joints;
+  ASSERT_EQ(WriteSwayGlb(tree, params, options, &exact).Line(), "");
+  EXPECT_EQ(exact, wide);  // the exact skin at its own count
+  EXPECT_FALSE(exact_info.clustered);
+  EXPECT_EQ(exact_info.joints, exact_info.exact_joints);
+
+  // Key 30 (t = 1 s, the gust blowing) of the exact skin, evaluated from its .glb.
+  const std::vector<glm::dvec3> exact_rest = FirstPrimitiveAtKey(exact, 0);
+  const std::vector<glm::dvec3> exact_moved = FirstPrimitiveAtKey(exact, 30);
+  double last_mean = 1e9, motion = 0, last_vertex_mean = 1e9;
+  for (std::size_t joints : {std::size_t{4}, std::size_t{16}, std::size_t{64}}) {
+    ASSERT_LT(joints, exact_info.exact_joints);
+    options.max_joints = joints;
+    std::vector<unsigned char> bytes;
+    SwayGlbInfo info;
+    ASSERT_EQ(WriteSwayGlb(tree, params, options, &bytes, &info).Line(), "");
+    EXPECT_TRUE(info.clustered);
+    EXPECT_EQ(info.joints, joints);
+    EXPECT_GT(info.max_motion, 0.05);  // metres: the gust moves the tree
+    EXPECT_LT(info.mean_error, last_mean) << joints;
+    last_mean = info.mean_error;
+    motion = info.max_motion;
+    const Glb glb = ParseGlb(bytes);
+    const json& skin = glb.gltf["skins"][0];
+    ASSERT_EQ(skin["joints"].size(), joints);
+    for (const json& p : glb.gltf["meshes"][0]["primitives"]) {
+      const std::vector<float> w =
+          ReadAccessor<float>(glb, p["attributes"]["WEIGHTS_0"].get<int>());
+      for (std::size_t v = 0; v + 3 < w.size(); v += 4) {
+        ASSERT_EQ(w[v], 1.0f);
+        ASSERT_EQ(w[v + 1] + w[v + 2] + w[v + 3], 0.0f);
+      }
+    }
+    EXPECT_EQ(glb.gltf["animations"][0]["channels"].size(), 2 * (joints - 1));
+    // The bark's vertices from this .glb against the exact .glb's: the rest pose is exact, the
+    // blowing one closer with more joints.
+    const std::vector<glm::dvec3> rest = FirstPrimitiveAtKey(bytes, 0);
+    const std::vector<glm::dvec3> moved = FirstPrimitiveAtKey(bytes, 30);
+    ASSERT_EQ(moved.size(), exact_moved.size());
+    double sum = 0;
+    for (std::size_t v = 0; v < moved.size(); ++v) {
+      ASSERT_LE(glm::length(rest[v] - exact_rest[v]), 1e-5) << v;
+      sum += glm::length(moved[v] - exact_moved[v]);
+    }
+    const double vertex_mean = sum / static_cast<double>(moved.size());
+    EXPECT_LT(vertex_mean, last_vertex_mean) << joints;
+    last_vertex_mean = vertex_mean;
+  }
+  EXPECT_LT(last_vertex_mean, 0.1 * motion);
+  // 64 of the tree's joints: on average within a tenth of the largest motion.
+  EXPECT_LT(last_mean, 0.1 * motion);
 }
 
 }  // namespace
