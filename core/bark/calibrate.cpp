@@ -140,8 +140,11 @@ Result<Scored> ScoreFourLayer(const BarkState& state, const CalibrateRequest& r,
 
 std::vector<double> CalibrateAxis::Values() const {
   std::vector<double> v;
-  for (int k = 0; k < points; ++k)
-    v.push_back(points == 1 ? lo : lo + (hi - lo) * k / (points - 1));
+  for (int k = 0; k < points; ++k) {
+    // Rounded to 1e-12 so 0.1 + 0.1·2 prints as 0.3 (the rows calibrated lie within [0, 100]).
+    const double x = points == 1 ? lo : lo + (hi - lo) * k / (points - 1);
+    v.push_back(std::round(x * 1e12) / 1e12);
+  }
   return v;
 }
 
@@ -201,11 +204,15 @@ namespace {
 BarkState GridPoint(const CalibrateRequest& r, int g, nlohmann::ordered_json* values) {
   BarkState s = r.base;
   (void)s.params.Set(BarkParam::kMapSize, 256);
+  std::vector<std::size_t> index(r.vary.size());
   for (std::size_t i = r.vary.size(); i-- > 0;) {  // the last axis fastest
     const int points = r.vary[i].points;
-    const double v = r.vary[i].Values()[static_cast<std::size_t>(g % points)];
+    index[i] = static_cast<std::size_t>(g % points);
     g /= points;
-    (void)s.params.Set(*BarkTable().Find(r.vary[i].key), v);  // in range: checked by the parse
+  }
+  for (std::size_t i = 0; i < r.vary.size(); ++i) {
+    const double v = r.vary[i].Values()[index[i]];
+    (void)s.params.Set(*BarkTable().Find(r.vary[i].key), v);  // in range: checked by the caller
     if (values) (*values)[r.vary[i].key] = v;
   }
   return s;

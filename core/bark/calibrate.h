@@ -22,7 +22,8 @@
 
 namespace niwa::bark {
 
-// One row searched: `points` values evenly from lo to hi (lo alone when points = 1).
+// One row searched: `points` values evenly from lo to hi (lo alone when points = 1), rounded to
+// 1e-12.
 struct CalibrateAxis {
   std::string key;
   double lo = 0, hi = 0;
