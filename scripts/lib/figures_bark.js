@@ -156,6 +156,16 @@ function fig8() {
     perCycle.map((p) => p.bonds_broken_in_cycle).join(', ') + ' bonds a cycle');
   const shedGrows = perCycle.slice(2).every((p, k) => p.shed_area_so_far > perCycle[k + 1].shed_area_so_far);
   check('Fig 8: every exchange from the 2nd on sheds bark', shedGrows, perCycle.map((p) => p.shed_area_so_far).join(', ') + ' cm²');
+  // Part of S peels each cycle, not almost all of it (the paper's photographs keep most of the
+  // surface; note *3 "part of the bark peeled"), and the cycles from the 3rd on repeat (spec §4.5:
+  // CV of the per-cycle peeled share ≤ 0.2).
+  const shares = perCycle.slice(1).map((p) => p.peeled_fraction);
+  check('Fig 8: part of S peels in every cycle >= 2 (not almost all: 0.02-0.9)', shares.every((x) => x >= 0.02 && x <= 0.9),
+    shares.map(r2).join(', '));
+  const rep = perCycle.slice(2).map((p) => p.peeled_fraction);
+  const mean = rep.reduce((a, b) => a + b, 0) / rep.length;
+  const cv = Math.sqrt(rep.reduce((a, b) => a + (b - mean) ** 2, 0) / (rep.length - 1)) / mean;
+  check('Fig 8: cycles 3-6 repeat (CV of the peeled share <= 0.2)', cv <= 0.2, `CV ${r2(cv)} over ${rep.map(r2).join(', ')}`);
   const m1Shows = perCycle.some((p) => p.exposed.M1 > 0);
   check('Fig 6/8: the intermediate layer shows where S peeled', m1Shows, perCycle.map((p) => p.exposed.M1).join(', '));
   measures.fig8 = { species: 'pine', size: '128x32', cycles, seed: 1, per_cycle: perCycle,
