@@ -7,7 +7,7 @@
 // note *3 (§4.3: bigger trees, bigger closed regions) are drawn as docs/figures/bark_sweep.svg.
 // Every run is deterministic. Does not: tune anything toward the paper's numbers (the presets'
 // values come from `niwa bark calibrate`, docs/bark-model.md).
-// Usage: scripts/figures bark [table3 fig5 fig7 fig8 sweep note3] (default all); BARK_SEEDS=1-2 for
+// Usage: scripts/figures bark [table3 fig5 fig7 fig8 sweep note3 draw] (default all but draw); BARK_SEEDS=1-2 for
 // fewer seeds; BARK_SWEEP_SIZE (default 64x64) the 2-layer sweep's lattice, BARK_SWEEP4_SIZE
 // (default 128x32) the 4-layer sweep's.
 'use strict';
@@ -296,7 +296,7 @@ function drawSweep() {
     for (const r of sw.two_layer.rows) panels.push({ title: `2-layer ${r.key}: ${r.measure}`, xs: r.values, ys: r.points.map((p) => p[r.measure]) });
     for (const r of sw.four_layer.rows) panels.push({ title: `4-layer ${r.key}: peeled share`, xs: r.values, ys: r.points.map((p) => p.peeled_share) });
   }
-  if (measures.note3) panels.push({ title: 'note *3: mean plate area (cm²) vs R_o', xs: measures.note3.rows.map((r) => r.R_o), ys: measures.note3.rows.map((r) => r.mean_area) });
+  if (measures.note3) panels.push({ title: 'note *3: plate area (cm²) vs R_o', xs: measures.note3.rows.map((r) => r.R_o), ys: measures.note3.rows.map((r) => r.mean_area) });
   const cols = 5, pw = 170, ph = 120, W = cols * pw + 20, H = Math.ceil(panels.length / cols) * (ph + 30) + 40;
   const parts = [`<svg xmlns="http://www.w3.org/2000/svg" width="${W}" height="${H}" font-family="sans-serif" font-size="10">`,
     `<rect width="${W}" height="${H}" fill="#fff"/>`,
@@ -305,7 +305,7 @@ function drawSweep() {
     const ox = 10 + (n % cols) * pw, oy = 30 + Math.floor(n / cols) * (ph + 30);
     const lo = Math.min(...p.ys), hi = Math.max(...p.ys), span = hi - lo || 1;
     const xl = Math.min(...p.xs), xh = Math.max(...p.xs), xs = xh - xl || 1;
-    const X = (x) => ox + 20 + (pw - 50) * (x - xl) / xs, Y = (y) => oy + 20 + (ph - 40) * (1 - (y - lo) / span);
+    const X = (x) => ox + 20 + (pw - 50) * (x - xl) / xs, Y = (y) => oy + 36 + (ph - 56) * (1 - (y - lo) / span);
     parts.push(`<rect x="${ox + 2}" y="${oy + 2}" width="${pw - 8}" height="${ph + 20}" fill="none" stroke="#ccc"/>`);
     parts.push(`<text x="${ox + 6}" y="${oy + 14}">${esc(p.title)}</text>`);
     parts.push(`<polyline fill="none" stroke="#7a3b1c" stroke-width="2" points="${p.xs.map((x, i) => `${X(x).toFixed(1)},${Y(p.ys[i]).toFixed(1)}`).join(' ')}"/>`);
@@ -325,6 +325,7 @@ if (want('fig7')) fig7();
 if (want('fig8')) fig8();
 if (want('sweep')) sweep();
 if (want('note3')) note3();
+if (wanted.includes('draw')) drawSweep();  // redraws bark_sweep.svg from bark_measures.json
 measures.verdicts = { ...(measures.verdicts || {}), ...Object.fromEntries(verdicts.map((v) => [v.what, { holds: v.ok, measured: v.detail }])) };
 fs.writeFileSync(measuresPath, JSON.stringify(measures, null, 1) + '\n');
 fs.rmSync(tmpDir, { recursive: true, force: true });
