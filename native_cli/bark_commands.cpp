@@ -21,6 +21,7 @@
 #include "bark/bark_params.h"
 #include "bark/bark_run.h"
 #include "bark/bark_state.h"
+#include "bark/calibrate.h"
 #include "bark/layers.h"
 #include "base/echo.h"
 #include "cli_common.h"
@@ -35,8 +36,8 @@ using bark::BarkParam;
 
 // The one table of the bark commands' names for state fields (run/field_names.h).
 const run::FieldNames kFieldFlags = {
-    {"species", "--species"}, {"model", "--model"}, {"seed", "--seed"},
-    {"N_R", "--size"},        {"N_H", "--size"},    {"cycles", "--cycles"},
+    {"species", "--species"}, {"model", "--model"},   {"seed", "--seed"}, {"N_R", "--size"},
+    {"N_H", "--size"},        {"cycles", "--cycles"}, {"vary", "--vary"}, {"seeds", "--seeds"},
 };
 
 constexpr FlagRange kSeedRange = {0, bark::kMaxBarkSeed, true};
@@ -204,30 +205,60 @@ struct Table3Options {
 
 // bark table3: Table 3 of the paper beside the 2-layer model's regions over seeds A..B
 // (bark::Table3Json), one JSON object.
-int RunTable3(const Table3Options& o, std::ostream& out) {
-  const std::size_t dash = o.seeds.find('-');
+// "A-B": two whole seeds, A <= B, at most 20 of them.
+std::pair<uint64_t, uint64_t> ParseSeeds(const std::string& seeds) {
+  const std::size_t dash = seeds.find('-');
   std::optional<double> first, last;
   if (dash != std::string::npos) {
-    first = ParseNumber(o.seeds.substr(0, dash));
-    last = ParseNumber(o.seeds.substr(dash + 1));
+    first = ParseNumber(seeds.substr(0, dash));
+    last = ParseNumber(seeds.substr(dash + 1));
   }
   if (!first || !last || *first != std::floor(*first) || *last != std::floor(*last) || *first < 0 ||
       *last > bark::kMaxBarkSeed || *first > *last || *last - *first >= 20) {
-    Fail(Status::Error("--seeds", "'" + Echo(o.seeds) +
+    Fail(Status::Error("--seeds", "'" + Echo(seeds) +
                                       "' is not A-B; must be two whole seeds in [0, 4294967295], "
                                       "A <= B, at most 20 of them (e.g. 1-5)"));
   }
+  return {static_cast<uint64_t>(*first), static_cast<uint64_t>(*last)};
+}
+
+int RunTable3(const Table3Options& o, std::ostream& out) {
+  const auto [first, last] = ParseSeeds(o.seeds);
   std::vector<bark::BarkState> states;
   for (const char* species : {"camphor", "tallow", "pine"}) {
     GrowOptions one = o.state;
     one.species = species;
     states.push_back(ResolveBarkState(one));
   }
-  Result<std::string> table =
-      bark::Table3Json(states, static_cast<uint64_t>(*first), static_cast<uint64_t>(*last),
-                       ResolveBudget(o.state.budget));
+  Result<std::string> table = bark::Table3Json(states, first, last, ResolveBudget(o.state.budget));
   if (!table.ok()) Fail(run::RenameField(table.status(), kFieldFlags));
   out << *table << "\n";
+  return 0;
+}
+
+struct CalibrateOptions {
+  GrowOptions state;
+  std::string seeds = "1-3";
+  std::vector<std::string> vary;
+};
+
+// bark calibrate: the grid search of bark::CalibrateJson over --vary rows (default: the model's
+// DefaultCalibrateAxes), one JSON object.
+int RunCalibrate(const CalibrateOptions& o, std::ostream& out) {
+  const auto [first, last] = ParseSeeds(o.seeds);
+  bark::CalibrateRequest request;
+  request.base = ResolveBarkState(o.state);
+  request.first_seed = first;
+  request.last_seed = last;
+  for (const std::string& v : o.vary) {
+    Result<bark::CalibrateAxis> axis = bark::ParseCalibrateAxis(v, request.base.model);
+    if (!axis.ok()) Fail(run::RenameField(axis.status(), kFieldFlags));
+    request.vary.push_back(*axis);
+  }
+  if (request.vary.empty()) request.vary = bark::DefaultCalibrateAxes(request.base.model);
+  Result<std::string> json = bark::CalibrateJson(request, ResolveBudget(o.state.budget));
+  if (!json.ok()) Fail(run::RenameField(json.status(), kFieldFlags));
+  out << *json << "\n";
   return 0;
 }
 
@@ -328,6 +359,32 @@ void AddBarkCommands(CLI::App& app, CommandList& commands) {
   commands.push_back({table3,
                       [to](std::ostream& out) { return RunTable3(*to, out); },
                       {"--seeds", "1-1", "--size", "16x8"}});
+
+  CLI::App* calibrate = bark_app->add_subcommand(
+      "calibrate",
+      "Search the rows the spec lets a species calibrate (2layer: dH, dR, D against Table 3's "
+      "means and maxima; 4layer: kappa_h, gamma, A, eta against a partly peeled surface) on a "
+      "grid over seeds, as one JSON object with every candidate, the best and whether it meets "
+      "the bars");
+  auto co = std::make_shared<CalibrateOptions>();
+  calibrate->add_option("--species", co->state.species, "camphor (default), tallow or pine");
+  calibrate->add_option("--model", co->state.model, "2layer (default) or 4layer");
+  calibrate->add_option("--vary", co->vary,
+                        "KEY=LO:HI:N (N evenly spaced values, 1-9) or KEY=V; repeat for a grid. "
+                        "Default 2layer dH=0.02:0.05:7; 4layer kappa_h=0.03:0.3:4 gamma=0.25:1:2 "
+                        "A=2:8:2");
+  calibrate->add_option("--seeds", co->seeds, "Seeds A-B (at most 20; default 1-3)");
+  calibrate->add_option(
+      "--size", co->state.size,
+      "Lattice WxH (N_R even, " + RangeHelp(BarkRowRange(BarkParam::kNR)) + "); default 128x64");
+  AddNumberFlag(calibrate, "--cycles", &co->state.cycles, BarkRowRange(BarkParam::kCycles),
+                "Cycles (4layer: at least 2), " + RangeHelp(BarkRowRange(BarkParam::kCycles)));
+  calibrate->add_option("--set", co->state.sets,
+                        "KEY=VALUE of the bark table over the species' preset");
+  AddBudgetOptions(calibrate, &co->state.budget);
+  commands.push_back({calibrate,
+                      [co](std::ostream& out) { return RunCalibrate(*co, out); },
+                      {"--seeds", "1-1", "--size", "16x8", "--vary", "dH=0.03"}});
 }
 
 }  // namespace niwa::cli

@@ -79,16 +79,17 @@ Estimate EstimateBarkRun(const BarkState& state) {
   return e;
 }
 
+const PaperTable3Row* PaperTable3(const std::string& species) {
+  static const PaperTable3Row kPaper[] = {{"camphor", "1.5 x (>20)", 1.58, 11.6, 2.06, -1},
+                                          {"tallow", "1.5 x 3.0", 1.70, 3.02, 2.08, 3.96},
+                                          {"pine", "3.0 x 7.0", 2.34, 4.28, 3.24, 6.48}};
+  for (const PaperTable3Row& p : kPaper)
+    if (species == p.species) return &p;
+  return nullptr;
+}
+
 Result<std::string> Table3Json(const std::vector<BarkState>& states, uint64_t first_seed,
                                uint64_t last_seed, const Budget& budget) {
-  struct Paper {
-    const char* species;
-    const char* observed;
-    double mean_w, mean_h, max_w, max_h;  // cm; max_h < 0: "(>20)"
-  };
-  static const Paper kPaper[] = {{"camphor", "1.5 x (>20)", 1.58, 11.6, 2.06, -1},
-                                 {"tallow", "1.5 x 3.0", 1.70, 3.02, 2.08, 3.96},
-                                 {"pine", "3.0 x 7.0", 2.34, 4.28, 3.24, 6.48}};
   Estimate total;
   const double seeds = static_cast<double>(last_seed - first_seed + 1);
   for (const BarkState& s : states) {
@@ -103,9 +104,7 @@ Result<std::string> Table3Json(const std::vector<BarkState>& states, uint64_t fi
       CheckEstimate(total, budget, "lower the seeds, N_R, N_H, T or settle_steps"));
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   for (const BarkState& base : states) {
-    const Paper* paper = nullptr;
-    for (const Paper& p : kPaper)
-      if (base.species == p.species) paper = &p;
+    const PaperTable3Row* paper = PaperTable3(base.species);
     if (!paper)
       return Status::Error("species", "'" + base.species +
                                           "' is not in Table 3; must be camphor, "

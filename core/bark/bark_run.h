@@ -46,6 +46,16 @@ struct BarkSample {
   double plate_w = 0, plate_h = 0;
 };
 
+// Table 3 of paper 003, the experiment column (cm, width around × height along the trunk); max_h
+// < 0 is the paper's "(>20)": a region longer than the patch.
+struct PaperTable3Row {
+  const char* species;
+  const char* observed;
+  double mean_w, mean_h, max_w, max_h;
+};
+// The paper's row of camphor, tallow or pine; nullptr for any other species.
+const PaperTable3Row* PaperTable3(const std::string& species);
+
 // What the state will cost: memory of the lattice, its state and the maps, and time by spring-steps
 // and map pixels (calibrated upper bounds; docs/bark-model.md).
 Estimate EstimateBarkRun(const BarkState& state);
@@ -90,6 +100,9 @@ class BarkRun : public run::StudyRun {
   // The maps' PNG bytes: "base_colour", "normal", "height" (16-bit), "orm"; error names "format".
   Result<std::string> MapPng(const std::string& map) const;
   std::string CyclesCsv() const;
+  // The rows the cycles CSV prints (every tenth of a cycle, each cycle's end before and after its
+  // exchange).
+  const std::vector<BarkSample>& samples() const { return samples_; }
 
   // Keep a base-colour PNG of each cycle's end (the 4-layer model: before its role exchange),
   // drawn at map_size, from the next Advance; off by default.

@@ -3,9 +3,13 @@
 // tiles, Figs 6-8 of the 4-layer model; spec ../shared/specs/bark.md §4.1-4.5) through the CLI
 // (build/native/bin/niwa, or $NIWA) into docs/figures/bark_* and docs/figures/bark_measures.json
 // (the numbers docs/FIGURES.md quotes), and prints each check with its bar and whether it holds.
-// Every run is deterministic. Does not: tune anything toward the paper's numbers, or run the
-// spec's sensitivity sweep (§4.6) or note *3 (§4.3).
-// Usage: scripts/figures bark [table3 fig5 fig7 fig8] (default all); BARK_SEEDS=1-2 for fewer.
+// The sensitivity sweep of Tables 1 and 4 (spec §4.6: each row moved down and up, measured) and
+// note *3 (§4.3: bigger trees, bigger closed regions) are drawn as docs/figures/bark_sweep.svg.
+// Every run is deterministic. Does not: tune anything toward the paper's numbers (the presets'
+// values come from `niwa bark calibrate`, docs/bark-model.md).
+// Usage: scripts/figures bark [table3 fig5 fig7 fig8 sweep note3 draw] (default all but draw); BARK_SEEDS=1-2 for
+// fewer seeds; BARK_SWEEP_SIZE (default 64x64) the 2-layer sweep's lattice, BARK_SWEEP4_SIZE
+// (default 128x32) the 4-layer sweep's.
 'use strict';
 const fs = require('fs');
 const path = require('path');
@@ -17,6 +21,7 @@ const seeds = process.env.BARK_SEEDS || '1-5';
 const wanted = process.argv.slice(2);
 const want = (k) => !wanted.length || wanted.includes(k);
 const r2 = (v) => Math.round(v * 100) / 100;
+const r4 = (v) => Math.round(v * 1e4) / 1e4;
 const pm = (s) => `${r2(s.mean)} ± ${r2(s.sd)}`;
 const measuresPath = path.join(outDir, 'bark_measures.json');
 const measures = fs.existsSync(measuresPath) ? JSON.parse(fs.readFileSync(measuresPath, 'utf8')) : {};
@@ -151,16 +156,176 @@ function fig8() {
     perCycle.map((p) => p.bonds_broken_in_cycle).join(', ') + ' bonds a cycle');
   const shedGrows = perCycle.slice(2).every((p, k) => p.shed_area_so_far > perCycle[k + 1].shed_area_so_far);
   check('Fig 8: every exchange from the 2nd on sheds bark', shedGrows, perCycle.map((p) => p.shed_area_so_far).join(', ') + ' cm²');
+  // Part of S peels each cycle, not almost all of it (the paper's photographs keep most of the
+  // surface; note *3 "part of the bark peeled"), and the cycles from the 3rd on repeat (spec §4.5:
+  // CV of the per-cycle peeled share ≤ 0.2).
+  const shares = perCycle.slice(1).map((p) => p.peeled_fraction);
+  check('Fig 8: part of S peels in every cycle >= 2 (not almost all: 0.02-0.9)', shares.every((x) => x >= 0.02 && x <= 0.9),
+    shares.map(r2).join(', '));
+  const rep = perCycle.slice(2).map((p) => p.peeled_fraction);
+  const mean = rep.reduce((a, b) => a + b, 0) / rep.length;
+  const cv = Math.sqrt(rep.reduce((a, b) => a + (b - mean) ** 2, 0) / (rep.length - 1)) / mean;
+  check('Fig 8: cycles 3-6 repeat (CV of the peeled share <= 0.2)', cv <= 0.2, `CV ${r2(cv)} over ${rep.map(r2).join(', ')}`);
   const m1Shows = perCycle.some((p) => p.exposed.M1 > 0);
   check('Fig 6/8: the intermediate layer shows where S peeled', m1Shows, perCycle.map((p) => p.exposed.M1).join(', '));
   measures.fig8 = { species: 'pine', size: '128x32', cycles, seed: 1, per_cycle: perCycle,
     peel, shed: s.shed, exchanges: s.exchanges };
 }
 
+
+// ------------------------------------------------------------------ §4.6 sensitivity (E6)
+// The 2-layer rows of Table 1 (κ̄ as both families' excess κ̄ − 1 scaled, σ, D, ΔR, ΔH) moved down
+// and up from the pine preset, seeds 1-3 (BARK_SWEEP_SIZE, default 64 x 64); the 4-layer rows of
+// Table 4 (κ_h, η, γ, A) down and up from the pine preset (128 x 32, 3 cycles, seed 1), measured
+// by `niwa bark calibrate` with one value (the peeled share of S at each cycle's end after the
+// first, the S→M1 bonds broken a cycle).
+const sweepSize = process.env.BARK_SWEEP_SIZE || '64x64';
+const sweep4Size = process.env.BARK_SWEEP4_SIZE || '128x32';
+const sweepSeeds = [1, 2, 3];
+function presetValue(species, key) {
+  const line = run(['presets', 'bark']).split('\n').find((l) => l.startsWith(species + '\t'));
+  const kv = line.split('\t').find((f) => f.startsWith(key + '='));
+  return kv ? Number(kv.split('=')[1]) : null;
+}
+function tableDefault(key) {
+  return JSON.parse(run(['params', 'bark', '--json'])).find((r) => r.key === key).default;
+}
+function grow2(sets) {
+  const acc = {};
+  for (const seed of sweepSeeds) {
+    const j = JSON.parse(run(['bark', 'grow', '--species', 'pine', '--size', sweepSize, '--seed', String(seed), '--stats',
+      '--max-seconds', '3600', ...sets.flatMap((kv) => ['--set', kv])]));
+    const C = 2 * Math.PI * j.R_o * (1 + j.strain.theta), H = j.H_o * (1 + j.strain.z);
+    const m = { vertical_crack_share: j.vertical_crack_share, mean_w: j.regions.mean_w, mean_h: j.regions.mean_h,
+      count: j.regions.count, closed_fraction: j.regions.closed_fraction,
+      broken_fraction: (j.broken.axial + j.broken.diagonal) / (j.springs.axial + j.springs.diagonal),
+      spread_w: j.regions.max_w / j.regions.mean_w, mean_area: j.regions.plate_fraction * C * H / Math.max(1, j.regions.count) };
+    for (const [k, v] of Object.entries(m)) acc[k] = (acc[k] || 0) + v / sweepSeeds.length;
+  }
+  for (const k of Object.keys(acc)) acc[k] = Math.round(acc[k] * 1e4) / 1e4;
+  return acc;
+}
+function peel4(sets, key, value) {
+  const j = JSON.parse(run(['bark', 'calibrate', '--model', '4layer', '--species', 'pine', '--size', sweep4Size, '--cycles', '3',
+    '--seeds', '1-1', '--max-seconds', '3600', ...sets.flatMap((kv) => ['--set', kv]), '--vary', `${key}=${value}`]));
+  const m = j.best.measures;
+  return { peeled_share: Math.round(m.peeled_share * 1e4) / 1e4, bonds_per_cycle: m.bonds_per_cycle,
+    exposed_S: Math.round(m.exposed_S * 1e4) / 1e4, shed_area: Math.round(m.shed_area * 100) / 100 };
+}
+const monotone = (xs, up) => xs.every((x, i) => i === 0 || (up ? x > xs[i - 1] : x < xs[i - 1]));
+function sweep() {
+  const k1 = presetValue('pine', 'kappa1'), k2 = presetValue('pine', 'kappa2');
+  const dR = presetValue('pine', 'dR') ?? tableDefault('dR'), dH = presetValue('pine', 'dH') ?? tableDefault('dH');
+  const sigma = tableDefault('sigma'), D = tableDefault('D');
+  const kappa = (f) => [`kappa1=${1 + (k1 - 1) * f}`, `kappa2=${1 + (k2 - 1) * f}`];
+  const rows2 = [
+    { row: 'κ̄ (both families, excess ×0.8, ×1, ×1.25)', key: 'kappa', values: [0.8, 1, 1.25], sets: kappa, measure: 'mean_w', up: true, expect: 'κ̄ up ⇒ wider plates' },
+    { row: 'σ', key: 'sigma', values: [sigma / 2, sigma, sigma * 2], sets: (v) => [`sigma=${v}`], measure: 'spread_w', up: true, expect: 'σ up ⇒ more spread plate sizes (max/mean width; the stats carry no CV)' },
+    { row: 'D (cm)', key: 'D', values: [D * 0.75, D, D * 1.5], sets: (v) => [`D=${v}`], measure: 'mean_w', up: true, expect: 'D up (λ up) ⇒ wider plates' },
+    { row: 'ΔR/R_o', key: 'dR', values: [dR * 0.7, dR, dR * 1.4], sets: (v) => [`dR=${r4(v)}`], measure: 'mean_w', up: false, expect: 'ΔR up ⇒ narrower plates' },
+    { row: 'ΔH/H_o', key: 'dH', values: [dH * 0.75, dH, dH * 1.33], sets: (v) => [`dH=${r4(v)}`], measure: 'mean_h', up: false, expect: 'ΔH up ⇒ shorter plates' },
+  ];
+  const base2 = grow2([]);
+  const out2 = [];
+  for (const r of rows2) {
+    const points = r.values.map((v, i) => (i === 1 ? base2 : grow2(r.sets(v))));
+    const ys = points.map((p) => p[r.measure]);
+    check(`sweep: ${r.expect}`, monotone(ys, r.up), `${r.key} ${r.values.map(r4).join(', ')}: ${r.measure} ${ys.map(r2).join(', ')}`);
+    out2.push({ row: r.row, key: r.key, values: r.values.map(r4), measure: r.measure, points });
+  }
+  // Table 4 around the pine preset's peeling values (or the table's defaults).
+  const t4 = Object.fromEntries(['kappa_h', 'eta', 'gamma', 'A'].map((k) => [k, presetValue('pine', k) ?? tableDefault(k)]));
+  const rows4 = [
+    { key: 'kappa_h', values: [t4.kappa_h * 0.5, t4.kappa_h, t4.kappa_h * 2], up: false, expect: 'κ_h down ⇒ more peeled' },
+    { key: 'eta', values: [t4.eta * 0.5, t4.eta, t4.eta * 2], up: true, expect: 'η up ⇒ more peeled' },
+    { key: 'gamma', values: [t4.gamma * 0.5, t4.gamma, t4.gamma * 2], up: true, expect: 'γ up ⇒ more peeled' },
+    { key: 'A', values: [Math.max(1, t4.A * 0.5), t4.A, t4.A * 2], up: false, expect: 'A down ⇒ more peeled' },
+  ];
+  const base4 = peel4([], rows4[0].key, t4.kappa_h);
+  const out4 = [];
+  for (const r of rows4) {
+    const points = r.values.map((v, i) => (i === 1 ? base4 : peel4([], r.key, r4(v))));
+    const ys = points.map((p) => p.peeled_share);
+    // "more peeled" as the value rises (up) or falls: ties (a saturated share) do not count.
+    check(`sweep: ${r.expect}`, monotone(ys, r.up), `${r.key} ${r.values.map(r4).join(', ')}: peeled share ${ys.map(r2).join(', ')}`);
+    out4.push({ key: r.key, values: r.values.map(r4), measure: 'peeled_share', points });
+  }
+  measures.sweep = { two_layer: { species: 'pine', size: sweepSize, seeds: sweepSeeds, rows: out2 },
+    four_layer: { species: 'pine', size: sweep4Size, cycles: 3, seed: 1, centre: t4, rows: out4 } };
+  drawSweep();
+}
+
+// ------------------------------------------------------------------ note *3 (E3)
+// Pine, the same absolute ΔR (0.021 × 5.822 = 0.122 cm) on trunks of R_o 5, 7.5 and 10 cm (N_R the
+// even integer nearest 4π·R_o/(√3·L_o), N_H 64), seeds 1-3: mean plate area and closed fraction.
+function note3() {
+  const Lo = tableDefault('L_o'), dRcm = 0.021 * Math.sqrt(3) * Lo * 128 / (4 * Math.PI);
+  const rows = [];
+  for (const R of [5, 7.5, 10]) {
+    const nr = 2 * Math.round(4 * Math.PI * R / (Math.sqrt(3) * Lo) / 2);
+    const Ro = Math.sqrt(3) * Lo * nr / (4 * Math.PI);
+    const acc = { R_o: r4(Ro), N_R: nr, dR: r4(dRcm / Ro) };
+    const m = (() => {
+      const res = {};
+      for (const seed of sweepSeeds) {
+        const j = JSON.parse(run(['bark', 'grow', '--species', 'pine', '--size', `${nr}x64`, '--seed', String(seed), '--stats',
+          '--max-seconds', '3600', '--set', `dR=${r4(dRcm / Ro)}`]));
+        const C = 2 * Math.PI * j.R_o * (1 + j.strain.theta), H = j.H_o * (1 + j.strain.z);
+        const v = { mean_area: j.regions.plate_fraction * C * H / Math.max(1, j.regions.count), mean_w: j.regions.mean_w,
+          mean_h: j.regions.mean_h, closed_fraction: j.regions.closed_fraction, count: j.regions.count };
+        for (const [k, x] of Object.entries(v)) res[k] = (res[k] || 0) + x / sweepSeeds.length;
+      }
+      return res;
+    })();
+    for (const [k, x] of Object.entries(m)) acc[k] = Math.round(x * 1e4) / 1e4;
+    rows.push(acc);
+  }
+  const areas = rows.map((r) => r.mean_area);
+  check('note *3: bigger trees, bigger plates (mean area rises with R_o)', monotone(areas, true),
+    rows.map((r) => `R_o ${r2(r.R_o)}: ${r2(r.mean_area)} cm²`).join(', '));
+  measures.note3 = { species: 'pine', dR_cm: r4(dRcm), seeds: sweepSeeds, rows };
+  drawSweep();
+}
+
+// One SVG: a panel per swept row (the measure at its three values, the middle the centre) and note
+// *3's panel, from whatever measures.sweep and measures.note3 hold.
+function drawSweep() {
+  const panels = [];
+  const sw = measures.sweep;
+  if (sw) {
+    for (const r of sw.two_layer.rows) panels.push({ title: `2-layer ${r.key}: ${r.measure}`, xs: r.values, ys: r.points.map((p) => p[r.measure]) });
+    for (const r of sw.four_layer.rows) panels.push({ title: `4-layer ${r.key}: peeled share`, xs: r.values, ys: r.points.map((p) => p.peeled_share) });
+  }
+  if (measures.note3) panels.push({ title: 'note *3: plate area (cm²) vs R_o', xs: measures.note3.rows.map((r) => r.R_o), ys: measures.note3.rows.map((r) => r.mean_area) });
+  const cols = 5, pw = 170, ph = 120, W = cols * pw + 20, H = Math.ceil(panels.length / cols) * (ph + 30) + 40;
+  const parts = [`<svg xmlns="http://www.w3.org/2000/svg" width="${W}" height="${H}" font-family="sans-serif" font-size="10">`,
+    `<rect width="${W}" height="${H}" fill="#fff"/>`,
+    `<text x="10" y="16" font-size="12">${esc('Bark sensitivity (spec §4.6) and note *3, measured by scripts/figures bark (pine)')}</text>`];
+  panels.forEach((p, n) => {
+    const ox = 10 + (n % cols) * pw, oy = 30 + Math.floor(n / cols) * (ph + 30);
+    const lo = Math.min(...p.ys), hi = Math.max(...p.ys), span = hi - lo || 1;
+    const xl = Math.min(...p.xs), xh = Math.max(...p.xs), xs = xh - xl || 1;
+    const X = (x) => ox + 20 + (pw - 50) * (x - xl) / xs, Y = (y) => oy + 36 + (ph - 56) * (1 - (y - lo) / span);
+    parts.push(`<rect x="${ox + 2}" y="${oy + 2}" width="${pw - 8}" height="${ph + 20}" fill="none" stroke="#ccc"/>`);
+    parts.push(`<text x="${ox + 6}" y="${oy + 14}">${esc(p.title)}</text>`);
+    parts.push(`<polyline fill="none" stroke="#7a3b1c" stroke-width="2" points="${p.xs.map((x, i) => `${X(x).toFixed(1)},${Y(p.ys[i]).toFixed(1)}`).join(' ')}"/>`);
+    p.xs.forEach((x, i) => {
+      parts.push(`<circle cx="${X(x).toFixed(1)}" cy="${Y(p.ys[i]).toFixed(1)}" r="3" fill="#7a3b1c"/>`);
+      parts.push(`<text x="${(X(x) - 10).toFixed(1)}" y="${(Y(p.ys[i]) - 6).toFixed(1)}">${r2(p.ys[i])}</text>`);
+      parts.push(`<text x="${(X(x) - 10).toFixed(1)}" y="${oy + ph + 16}">${r4(x)}</text>`);
+    });
+  });
+  parts.push('</svg>');
+  fs.writeFileSync(path.join(outDir, 'bark_sweep.svg'), parts.join('\n') + '\n');
+}
+
 if (want('table3')) { table3('B', []); table3('A', ['--set', 'dH=0.03']); }
 if (want('fig5')) fig5();
 if (want('fig7')) fig7();
 if (want('fig8')) fig8();
+if (want('sweep')) sweep();
+if (want('note3')) note3();
+if (wanted.includes('draw')) drawSweep();  // redraws bark_sweep.svg from bark_measures.json
 measures.verdicts = { ...(measures.verdicts || {}), ...Object.fromEntries(verdicts.map((v) => [v.what, { holds: v.ok, measured: v.detail }])) };
 fs.writeFileSync(measuresPath, JSON.stringify(measures, null, 1) + '\n');
 fs.rmSync(tmpDir, { recursive: true, force: true });

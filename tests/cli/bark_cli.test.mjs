@@ -1,6 +1,6 @@
 // Bark CLI: native == WASM bytes of `niwa bark grow --stats` (without its timing fields) and of the
 // four maps and the cycles CSV, for the three species of Table 2 at a small size, seed 1; the maps'
-// PNG sizes; `niwa bark layers` (Fig. 7) in both builds; `niwa params bark` / `niwa presets bark` in both builds; bad input one line naming the
+// PNG sizes; `niwa bark layers` (Fig. 7) and `niwa bark calibrate` in both builds; `niwa params bark` / `niwa presets bark` in both builds; bad input one line naming the
 // flag, exit 2, nothing written.
 import { mkdtempSync, readFileSync, existsSync, readdirSync } from 'node:fs';
 import { createRequire } from 'node:module';
@@ -97,6 +97,34 @@ for (const species of ['pine', 'tallow']) {
   for (const [bad, flag] of [[['--seeds', '5-1'], '--seeds'], [['--seeds', '1-30'], '--seeds'], [['--set', 'kappa1=9'], '--set']]) {
     const r = spawn(native, ['bark', 'table3', '--size', '16x8', ...bad]);
     check(`bark table3 ${bad.join(' ')}: exit 2, one line naming ${flag}`, r.status === 2 && r.stderr.trim().split('\n').length === 1 && r.stderr.startsWith(`niwa: error: ${flag}`), r.stderr.trim());
+  }
+}
+
+// The calibration (bark calibrate): native == WASM bytes of a small grid, every candidate scored
+// against Table 3, the best the lowest; the 4-layer search's peel share; bad input one line naming
+// the flag, exit 2.
+{
+  const args = ['bark', 'calibrate', '--species', 'tallow', '--seeds', '1-1', '--size', '16x16', '--vary', 'dH=0.02:0.05:3'];
+  const a = run(native, args), b = run(wasm, args);
+  check('bark calibrate: native == WASM bytes', a === b && a.length > 0);
+  const j = JSON.parse(a);
+  check('bark calibrate: 3 candidates, Table 3 target, the best the lowest score',
+    j.candidates.length === 3 && j.target.mean[0] === 1.7 && j.target.max[1] === 3.96 &&
+    j.best.score === Math.min(...j.candidates.map((c) => c.score)) && typeof j.meets.means === 'boolean', a);
+  const f = ['bark', 'calibrate', '--model', '4layer', '--species', 'pine', '--size', '32x16', '--cycles', '2', '--set', 'T=0.002',
+    '--set', 'cork=0.1', '--vary', 'kappa_h=0.03:0.6:2'];
+  const c = run(native, f), d = run(wasm, f);
+  check('bark calibrate 4layer: native == WASM bytes', c === d && c.length > 0);
+  const k = JSON.parse(c);
+  check('bark calibrate 4layer: less peeled at the larger kappa_h', k.candidates[0].measures.peeled_share > k.candidates[1].measures.peeled_share, c);
+  for (const [bad, flag] of [[['--vary', 'kappa1=1.02'], '--vary'], [['--vary', 'dH=0.02:0.01:3'], '--vary'], [['--vary', 'dH=0.02:0.05:12'], '--vary'],
+    [['--seeds', '5-1'], '--seeds'], [['--model', '4layer', '--vary', 'kappa_h=0.1'], '--cycles'], [['--species', 'oak'], '--species'],
+    [['--vary', 'dH=0.01:0.05:9', '--vary', 'dR=0.01:0.05:9', '--max-seconds', '1'], '--max-seconds']]) {
+    for (const cmd of [native, wasm]) {
+      const r = spawn(cmd, ['bark', 'calibrate', '--size', '16x16', '--seeds', '1-1', ...bad]);
+      check(`bark calibrate ${bad.join(' ')} ${buildName(cmd)}: exit 2, one line naming ${flag}`,
+        r.status === 2 && r.stderr.trim().split('\n').length === 1 && r.stderr.startsWith(`niwa: error: ${flag}`), r.stderr.trim());
+    }
   }
 }
 
