@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace niwa::bark {
@@ -363,18 +364,25 @@ struct Relief {
   }
 };
 
-// Inner layer (crack floor), the plates' wall colour (fresh cork in a furrow) and the weathered
-// grey their old tops take.
-constexpr float kFloorRgb[3] = {0.30f, 0.16f, 0.09f};
-constexpr float kWallRgb[3] = {0.46f, 0.29f, 0.18f};
-constexpr float kWeatheredRgb[3] = {0.56f, 0.54f, 0.50f};
+// The stylised palette: a dark red-brown crack floor, warm fresh cork in the walls, grey-brown
+// plates weathering to grey.
+constexpr BarkPalette kStylised = {{0.40, 0.34, 0.28},
+                                   {0.46, 0.29, 0.18},
+                                   {0.30, 0.16, 0.09},
+                                   {0.56, 0.54, 0.50}};
 
 // The four maps from the drawn layers (outermost first): height = the highest layer's relief
 // (each layer a solid from the inner layer up to its top, so a crack shows what lies beneath);
 // normal from the height plus a fibre grain along the trunk (the grain is in the normal and the
 // colour, not the height map); colour by layer, plate (age jitter), depth and weathering; ORM.
 void FillMaps(int width, int height, const std::vector<DrawnLayer>& layers, const Relief& relief,
-              int32_t pillow_full, BarkMaps* maps) {
+              int32_t pillow_full, const BarkPalette& palette, BarkMaps* maps) {
+  float floor_rgb[3], wall_rgb[3], weathered_rgb[3];
+  for (int k = 0; k < 3; ++k) {
+    floor_rgb[k] = static_cast<float>(palette.floor[k]);
+    wall_rgb[k] = static_cast<float>(palette.wall[k]);
+    weathered_rgb[k] = static_cast<float>(palette.weathered[k]);
+  }
   const std::size_t npx = static_cast<std::size_t>(width) * height;
   const double top = layers.front().top;
   const float inv_top = top > 0 ? static_cast<float>(1.0 / top) : 0.0f;
@@ -474,12 +482,12 @@ void FillMaps(int width, int height, const std::vector<DrawnLayer>& layers, cons
         const float fc = face[p];
         for (int k = 0; k < 3; ++k) {
           const float plate = static_cast<float>(d.colour[k]) * jit;
-          const float topc = plate + (kWeatheredRgb[k] - plate) * weather;
-          rgb[k] = (kWallRgb[k] + (topc - kWallRgb[k]) * fc) * grain * (0.8f + 0.2f * pil);
+          const float topc = plate + (weathered_rgb[k] - plate) * weather;
+          rgb[k] = (wall_rgb[k] + (topc - wall_rgb[k]) * fc) * grain * (0.8f + 0.2f * pil);
         }
         rough = 0.78f + 0.14f * (1.0f - fc) + 0.06f * g;
       } else {
-        for (int k = 0; k < 3; ++k) rgb[k] = kFloorRgb[k] * (0.85f + 0.3f * m);
+        for (int k = 0; k < 3; ++k) rgb[k] = floor_rgb[k] * (0.85f + 0.3f * m);
         rough = 0.95f;
       }
       // Cavity: deep texels darker.
@@ -498,12 +506,10 @@ void FillMaps(int width, int height, const std::vector<DrawnLayer>& layers, cons
   }
 }
 
-// The 2-layer model's plates: grey-brown.
-constexpr double kPlateRgb[3] = {0.40, 0.34, 0.28};
-
 // Draws layers (outermost first; each its surface, regions, anchor scale, top, colour) at the
 // axial growth factor s_z into maps spanning the outermost layer's circumference.
-BarkMaps DrawLayers(const Lattice& L, const std::vector<MapLayer>& layers, double s_z, int width) {
+BarkMaps DrawLayers(const Lattice& L, const std::vector<MapLayer>& layers, double s_z, int width,
+                    const BarkPalette& palette) {
   const double cf = L.circumference() * layers.front().s_theta, hf = L.height() * s_z;
   const int height = MapHeightPx(width, cf, hf);
   BarkMaps maps;
@@ -577,7 +583,8 @@ BarkMaps DrawLayers(const Lattice& L, const std::vector<MapLayer>& layers, doubl
     d.colour = m.colour;
     d.salt = 7u + 131u * static_cast<uint32_t>(layers.size() - r);
   }
-  FillMaps(width, height, drawn, relief, static_cast<int32_t>(n * n / pillow_div * up), &maps);
+  FillMaps(width, height, drawn, relief, static_cast<int32_t>(n * n / pillow_div * up), palette,
+           &maps);
   return maps;
 }
 
@@ -597,21 +604,41 @@ int MapHeightPx(int width, double circumference_cm, double height_cm) {
   return best;
 }
 
+BarkPalette SpeciesPalette(const std::string& species) {
+  if (species == "camphor")  // Cinnamomum camphora: grey-brown plates, dark brown furrows
+    return {{0.45, 0.39, 0.33}, {0.36, 0.26, 0.19}, {0.17, 0.12, 0.09}, {0.53, 0.50, 0.46}};
+  if (species == "tallow")  // Triadica sebifera: light grey plates, grey-brown fissures
+    return {{0.52, 0.49, 0.44}, {0.42, 0.34, 0.26}, {0.23, 0.18, 0.14}, {0.63, 0.61, 0.58}};
+  if (species == "pine")  // Pinus (red and black pine): red-brown plates, orange cork beneath
+    return {{0.47, 0.32, 0.24}, {0.64, 0.37, 0.22}, {0.21, 0.12, 0.08}, {0.49, 0.45, 0.42}};
+  return kStylised;
+}
+
 BarkMaps DrawBarkMaps(const Lattice& L, const Surface& s, const CrackMeasures& cracks,
                       double s_theta, double s_z, double D, int width) {
+  return DrawBarkMaps(L, s, cracks, s_theta, s_z, D, width, kStylised);
+}
+
+BarkMaps DrawBarkMaps(const Lattice& L, const Surface& s, const CrackMeasures& cracks,
+                      double s_theta, double s_z, double D, int width, const BarkPalette& palette) {
   MapLayer m;
   m.surface = &s;
   m.tri_region = &cracks.tri_region;
   m.s_theta = s_theta;
   m.top = D;
   m.thickness = D;
-  for (int k = 0; k < 3; ++k) m.colour[k] = kPlateRgb[k];
-  return DrawLayers(L, {m}, s_z, width);
+  for (int k = 0; k < 3; ++k) m.colour[k] = palette.plate[k];
+  return DrawLayers(L, {m}, s_z, width, palette);
 }
 
 BarkMaps DrawLayeredMaps(const Lattice& L, const std::vector<MapLayer>& layers, double s_z,
                          int width) {
-  return DrawLayers(L, layers, s_z, width);
+  return DrawLayers(L, layers, s_z, width, kStylised);
+}
+
+BarkMaps DrawLayeredMaps(const Lattice& L, const std::vector<MapLayer>& layers, double s_z,
+                         int width, const BarkPalette& palette) {
+  return DrawLayers(L, layers, s_z, width, palette);
 }
 
 }  // namespace niwa::bark

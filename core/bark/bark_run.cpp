@@ -315,16 +315,18 @@ BarkMaps BarkRun::DrawMaps(int width) const {
     const Growth g = growth();
     // Measured afresh: a frame is drawn mid-run, while cracks() keeps the end's measures.
     return DrawBarkMaps(lattice_, surface_, MeasureCracks(lattice_, surface_, g.s_theta, g.s_z),
-                        g.s_theta, g.s_z, state_.params.Get(BarkParam::kD), width);
+                        g.s_theta, g.s_z, state_.params.Get(BarkParam::kD), width,
+                        SpeciesPalette(state_.species));
   }
   // The visible layer (spec §1.9): S over M1 over M2 over the inner layer, each at its radius.
   const FourLayer& f = *four_;
   const LayerGrowth lg = LayerGrowthAt(f);
+  const BarkPalette palette = SpeciesPalette(state_.species);
   const double dc = f.m.cork;
   const double tops[3] = {lg.thickness_m2 + 2 * dc, lg.thickness_m2 + dc, lg.thickness_m2};
   const double thick[3] = {dc, dc, lg.thickness_m2};
   static constexpr double kPalette[3][3] = {
-      {0.40, 0.34, 0.28},  // S: grey-brown (the 2-layer plates)
+      {0.40, 0.34, 0.28},  // S: the species' plates (SpeciesPalette)
       {0.55, 0.30, 0.18},  // M1: red-brown
       {0.74, 0.60, 0.42},  // M2: light tan
   };
@@ -339,9 +341,9 @@ BarkMaps BarkRun::DrawMaps(int width) const {
     m.s_theta = g.s_theta;
     m.top = tops[r];
     m.thickness = thick[r];
-    for (int k = 0; k < 3; ++k) m.colour[k] = kPalette[r][k];
+    for (int k = 0; k < 3; ++k) m.colour[k] = r == kS ? palette.plate[k] : kPalette[r][k];
   }
-  return DrawLayeredMaps(lattice_, layers, lg.g[kS].s_z, width);
+  return DrawLayeredMaps(lattice_, layers, lg.g[kS].s_z, width, palette);
 }
 
 std::string BarkRun::FramePng() const {
