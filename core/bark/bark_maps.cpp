@@ -207,7 +207,8 @@ LayerField DrawLayer(const Lattice& L, const Surface& s, const std::vector<int>&
       const int32_t* r1 = r0 + width;
       uint8_t* c = f.cover.data() + static_cast<std::size_t>(y) * ws;
       for (int x = 0; x < ws; ++x)
-        c[x] = ((r0[2 * x] != 0) + (r0[2 * x + 1] != 0) + (r1[2 * x] != 0) + (r1[2 * x + 1] != 0)) >= 2;
+        c[x] = ((r0[2 * x] != 0) + (r0[2 * x + 1] != 0) + (r1[2 * x] != 0) +
+                (r1[2 * x + 1] != 0)) >= 2;
     }
   }
   f.sd.resize(ns);
@@ -366,10 +367,8 @@ struct Relief {
 
 // The stylised palette: a dark red-brown crack floor, warm fresh cork in the walls, grey-brown
 // plates weathering to grey.
-constexpr BarkPalette kStylised = {{0.40, 0.34, 0.28},
-                                   {0.46, 0.29, 0.18},
-                                   {0.30, 0.16, 0.09},
-                                   {0.56, 0.54, 0.50}};
+constexpr BarkPalette kStylised = {
+    {0.40, 0.34, 0.28}, {0.46, 0.29, 0.18}, {0.30, 0.16, 0.09}, {0.56, 0.54, 0.50}};
 
 // The four maps from the drawn layers (outermost first): height = the highest layer's relief
 // (each layer a solid from the inner layer up to its top, so a crack shows what lies beneath);
@@ -523,11 +522,10 @@ BarkMaps DrawLayers(const Lattice& L, const std::vector<MapLayer>& layers, doubl
   // The distance field and the pillow are smooth: when a texel is under 0.15·L_o, they are
   // measured on a grid twice as coarse and doubled bilinearly (a quarter of the texels; the plate
   // ids stay at the map's resolution).
-  const int scale =
-      2.0 * std::max(maps.texel_cm_x, maps.texel_cm_y) <= 0.3 * L.l_o && width % 2 == 0 &&
-              height % 2 == 0
-          ? 2
-          : 1;
+  const int scale = 2.0 * std::max(maps.texel_cm_x, maps.texel_cm_y) <= 0.3 * L.l_o &&
+                            width % 2 == 0 && height % 2 == 0
+                        ? 2
+                        : 1;
   const int ws = width / scale, hs = height / scale;
   const double tex_x = maps.texel_cm_x * scale, tex_y = maps.texel_cm_y * scale;
   // The pillow: plate cover blurred over about one spring length.
@@ -555,8 +553,8 @@ BarkMaps DrawLayers(const Lattice& L, const std::vector<MapLayer>& layers, doubl
     std::vector<float>().swap(field.sd);
     const int64_t qmax = static_cast<int64_t>(std::ceil(band * 1024.0)) + 1;
     const int64_t k = TentSum(&q, ws, hs, sx, sy, qmax);
-    const float per = static_cast<float>(static_cast<double>(k) /
-                                         (1024.0 * static_cast<double>(ns * ns * up)));
+    const float per =
+        static_cast<float>(static_cast<double>(k) / (1024.0 * static_cast<double>(ns * ns * up)));
     d.sd.resize(d.plate.size());
     // The pillow from the same grid's cover.
     std::vector<int32_t> cover(q.size());
@@ -566,15 +564,13 @@ BarkMaps DrawLayers(const Lattice& L, const std::vector<MapLayer>& layers, doubl
     pillow_div = TentSum(&cover, ws, hs, rx, ry, 1);
     if (scale == 2) {
       float* sd = d.sd.data();
-      Upsample2(q, ws, hs, [sd, per](std::size_t p, int64_t v) {
-        sd[p] = static_cast<float>(v) * per;
-      });
+      Upsample2(q, ws, hs,
+                [sd, per](std::size_t p, int64_t v) { sd[p] = static_cast<float>(v) * per; });
       std::vector<int32_t>().swap(q);
       d.pillow.resize(d.plate.size());
       int32_t* pillow = d.pillow.data();
-      Upsample2(cover, ws, hs, [pillow](std::size_t p, int64_t v) {
-        pillow[p] = static_cast<int32_t>(v);
-      });
+      Upsample2(cover, ws, hs,
+                [pillow](std::size_t p, int64_t v) { pillow[p] = static_cast<int32_t>(v); });
     } else {
       for (std::size_t p = 0; p < q.size(); ++p) d.sd[p] = static_cast<float>(q[p]) * per;
       d.pillow = std::move(cover);

@@ -226,8 +226,9 @@ Result<std::vector<unsigned char>> EncodeGray16Png(const Gray16Image& image,
     }
   }
   int zlib_size = 0;
-  unsigned char* zlib = stbi_zlib_compress(filtered.data(), static_cast<int>(filtered.size()),
-                                           &zlib_size, std::max(kMinPngLevel, std::min(8, options.level)));
+  unsigned char* zlib =
+      stbi_zlib_compress(filtered.data(), static_cast<int>(filtered.size()), &zlib_size,
+                         std::max(kMinPngLevel, std::min(8, options.level)));
   if (zlib == nullptr) return Status::Error("image", "zlib compression failed");
 
   std::vector<unsigned char> png(kSignature, kSignature + 8);
