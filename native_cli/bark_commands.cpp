@@ -114,6 +114,10 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   const auto t1 = std::chrono::steady_clock::now();
   Check(run::RenameField(run->Advance({}), kFieldFlags));
   const auto t2 = std::chrono::steady_clock::now();
+  // The maps' raster (drawn once, on first use) timed apart from their PNG encoding.
+  const bool any_map = !o.out.empty() || !o.normal.empty() || !o.height.empty() || !o.orm.empty();
+  if (any_map) (void)run->maps();
+  const auto t2r = std::chrono::steady_clock::now();
   std::vector<OutputFile> files;
   const std::pair<const std::string*, const char*> maps[] = {
       {&o.out, "base_colour"}, {&o.normal, "normal"}, {&o.height, "height"}, {&o.orm, "orm"}};
@@ -152,6 +156,10 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
     j["ms"] = std::chrono::duration<double, std::milli>(t4 - t0).count();
     j["ms_grow"] = ms_grow;
     j["ms_maps"] = std::chrono::duration<double, std::milli>(t3 - t2).count();
+    // ms_maps = the raster (the spec's "raster (4 maps)" goal) + the PNG encoding (and the CSV
+    // and frames when asked).
+    j["ms_maps_raster"] = std::chrono::duration<double, std::milli>(t2r - t2).count();
+    j["ms_maps_png"] = std::chrono::duration<double, std::milli>(t3 - t2r).count();
     j["ns_per_spring_step"] = run->spring_steps() > 0 ? ms_grow * 1e6 / run->spring_steps() : 0.0;
   } else {
     j["species"] = state.species;

@@ -12,6 +12,8 @@
 // tree's UVs.
 #pragma once
 
+#include <string>
+
 #include "bark/lattice.h"
 #include "bark/regions.h"
 #include "bark/springs.h"
@@ -29,9 +31,23 @@ struct BarkMaps {
 // within [256, 4096]).
 int MapHeightPx(int width, double circumference_cm, double height_cm);
 
-// Draws the maps of the surface at growth factors s_θ, s_z, for layer thickness D (cm).
+// A species' bark colours (sRGB fractions, before the grain, pillow and cavity shading): the
+// plates' tops, the fresh cork of a crack's walls, the crack floor (the inner layer) and the grey
+// old tops weather to.
+struct BarkPalette {
+  double plate[3], wall[3], floor[3], weathered[3];
+};
+// Read off photographs of each species' bark (docs/bark-model.md): camphor grey-brown plates in
+// dark brown furrows, tallow light grey plates in grey-brown fissures, pine red-brown plates with
+// orange cork in the walls; any other name gets the stylised palette every species had before.
+BarkPalette SpeciesPalette(const std::string& species);
+
+// Draws the maps of the surface at growth factors s_θ, s_z, for layer thickness D (cm), in a
+// palette (default: the stylised one).
 BarkMaps DrawBarkMaps(const Lattice& lattice, const Surface& surface, const CrackMeasures& cracks,
                       double s_theta, double s_z, double D, int width);
+BarkMaps DrawBarkMaps(const Lattice& lattice, const Surface& surface, const CrackMeasures& cracks,
+                      double s_theta, double s_z, double D, int width, const BarkPalette& palette);
 
 // One layer of a layered drawing.
 struct MapLayer {
@@ -49,5 +65,8 @@ struct MapLayer {
 // top; each layer is a solid from the inner layer up to its top, so the highest one shows.
 BarkMaps DrawLayeredMaps(const Lattice& lattice, const std::vector<MapLayer>& layers, double s_z,
                          int width);
+// The same with the walls, floor and weathering of a palette (the layers keep their colours).
+BarkMaps DrawLayeredMaps(const Lattice& lattice, const std::vector<MapLayer>& layers, double s_z,
+                         int width, const BarkPalette& palette);
 
 }  // namespace niwa::bark

@@ -3,6 +3,7 @@
 // stb_image alone).
 #include "image/png.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <cstring>
@@ -171,9 +172,14 @@ Result<std::vector<unsigned char>> EncodeRgba8Png(const Rgba8Image& image,
   NIWA_RETURN_IF_ERROR(CheckSize(image.width, image.height, image.pixels.size(), 4));
   NIWA_RETURN_IF_ERROR(CheckText(options.text));
   std::vector<unsigned char> png;
-  if (!stbi_write_png_to_func(AppendBytes, &png, image.width, image.height, 4, image.pixels.data(),
-                              4 * image.width) ||
-      png.size() < 33) {
+  // stb reads its effort from a global: set for this call, restored after (PNG encoding runs on
+  // one thread).
+  const int saved_level = stbi_write_png_compression_level;
+  stbi_write_png_compression_level = std::max(kMinPngLevel, std::min(8, options.level));
+  const int ok = stbi_write_png_to_func(AppendBytes, &png, image.width, image.height, 4,
+                                        image.pixels.data(), 4 * image.width);
+  stbi_write_png_compression_level = saved_level;
+  if (!ok || png.size() < 33) {
     return Status::Error("image", "PNG encoding failed");
   }
   if (options.text.empty()) return png;
@@ -220,8 +226,9 @@ Result<std::vector<unsigned char>> EncodeGray16Png(const Gray16Image& image,
     }
   }
   int zlib_size = 0;
-  unsigned char* zlib = stbi_zlib_compress(filtered.data(), static_cast<int>(filtered.size()),
-                                           &zlib_size, stbi_write_png_compression_level);
+  unsigned char* zlib =
+      stbi_zlib_compress(filtered.data(), static_cast<int>(filtered.size()), &zlib_size,
+                         std::max(kMinPngLevel, std::min(8, options.level)));
   if (zlib == nullptr) return Status::Error("image", "zlib compression failed");
 
   std::vector<unsigned char> png(kSignature, kSignature + 8);

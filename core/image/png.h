@@ -35,7 +35,12 @@ struct PngText {
 
 struct PngWriteOptions {
   std::vector<PngText> text;  // written after IHDR, in this order
+  // stb's zlib effort, kMinPngLevel..8 (stb keeps 2·level match candidates per hash; lower is
+  // faster, the file a little larger, the decoded pixels the same). 8 is stb's default, the
+  // bytes every texture had before the option.
+  int level = 8;
 };
+constexpr int kMinPngLevel = 5;  // stb raises anything lower to 5
 
 // What a PNG file holds, from its IHDR (PNG spec 11.2.2) and tEXt chunks.
 struct PngInfo {

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bark/bark_run.h"
+#include "image/png.h"
 
 namespace niwa::bark {
 namespace {
@@ -77,6 +78,12 @@ TEST(BarkRun, AGrownRunCracksReportsAndRepeats) {
   EXPECT_EQ(*a.MapPng("base_colour"), *b.MapPng("base_colour"));
   EXPECT_EQ(*a.MapPng("height"), *b.MapPng("height"));
   EXPECT_EQ(a.MapPng("albedo").status().field(), "format");
+  // The PNGs (stb's fastest zlib effort) hold the maps' pixels exactly.
+  const std::string colour = *a.MapPng("base_colour"), height = *a.MapPng("height");
+  const auto* cb = reinterpret_cast<const unsigned char*>(colour.data());
+  const auto* hb = reinterpret_cast<const unsigned char*>(height.data());
+  EXPECT_EQ(image::DecodeRgba8Png(cb, colour.size())->pixels, a.maps().base_colour.pixels);
+  EXPECT_EQ(image::DecodeGray16Png(hb, height.size())->pixels, a.maps().height.pixels);
   const std::string csv = a.CyclesCsv();
   EXPECT_EQ(csv.rfind("cycle,step,strain_theta,strain_z,broken_axial,broken_diagonal,plates,"
                       "plate_mean_w,plate_mean_h\n",

@@ -224,6 +224,44 @@ TEST(Png, Rgba8RoundTripWithTextChunks) {
   ExpectOneLine(DecodeGray16Png(png->data(), png->size()).status(), "not greyscale");
 }
 
+// stb's lowest zlib effort (level 5, the bark maps') writes other bytes than its default 8, and
+// both decode to the same pixels; the default stays stb's (the level is restored after a call).
+TEST(Png, AFasterLevelDecodesToTheSamePixels) {
+  Rgba8Image image = MakeRgba8(256, 96);
+  Gray16Image grey = MakeGray16(256, 96);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      // Repeats at many distances, so the matcher has more candidates than level 5 keeps.
+      const uint32_t v = static_cast<uint32_t>((x * 7 + (y / 3) * 13) % 29 + ((x ^ y) & 12) * 3);
+      unsigned char* p = image.At(x, y);
+      p[0] = static_cast<unsigned char>(v * 5);
+      p[1] = static_cast<unsigned char>(v * 3 + y);
+      p[2] = static_cast<unsigned char>((x / 4) * 9);
+      p[3] = 255;
+      grey.At(x, y) = static_cast<uint16_t>(v * 1000 + (x / 8) * 7);
+    }
+  const Result<Bytes> before = EncodeRgba8Png(image);
+  PngWriteOptions fast;
+  fast.level = kMinPngLevel;
+  const Result<Bytes> rgba5 = EncodeRgba8Png(image, fast);
+  const Result<Bytes> rgba8 = EncodeRgba8Png(image);
+  ASSERT_TRUE(before.ok() && rgba5.ok() && rgba8.ok());
+  EXPECT_EQ(*rgba8, *before);
+  EXPECT_NE(*rgba5, *rgba8);
+  EXPECT_EQ(DecodeRgba8Png(rgba5->data(), rgba5->size())->pixels, image.pixels);
+  EXPECT_EQ(DecodeRgba8Png(rgba8->data(), rgba8->size())->pixels, image.pixels);
+  const Result<Bytes> grey5 = EncodeGray16Png(grey, fast);
+  const Result<Bytes> grey8 = EncodeGray16Png(grey);
+  ASSERT_TRUE(grey5.ok() && grey8.ok());
+  EXPECT_NE(*grey5, *grey8);
+  EXPECT_EQ(DecodeGray16Png(grey5->data(), grey5->size())->pixels, grey.pixels);
+  EXPECT_EQ(DecodeGray16Png(grey8->data(), grey8->size())->pixels, grey.pixels);
+  // Below stb's floor is stb's floor.
+  PngWriteOptions lowest;
+  lowest.level = 1;
+  EXPECT_EQ(*EncodeRgba8Png(image, lowest), *rgba5);
+}
+
 TEST(Png, BadInputIsAOneLineStatus) {
   const Bytes good = *EncodeGray16Png(Ramp16(9, 7));
   // Every truncation is an error, never a crash.
