@@ -185,3 +185,48 @@ TEST(MossRun, TheStateHashCarriesSceneDaysAndSeed) {
 
 }  // namespace
 }  // namespace niwa::moss
+
+namespace niwa::moss {
+namespace {
+
+// Stats every K days (spec §6 `--every K`, issue 29 item 3): rows at the end of days K, 2K, ...
+// and the last day, each the breakdown the stats give; the last row equals the stats' own fields;
+// the rows are what the run was on those days (a run of 3 days has the 7-day run's first row);
+// without RecordEvery the stats have no rows; asked after day 0 or out of range it is refused.
+TEST(MossRun, StatsEveryKDaysAreTheBreakdownOfThoseDays) {
+  MossRun run = *MossRun::Start(SmallState("thesis", 7, 1024), Budget{});
+  ASSERT_TRUE(run.RecordEvery(3).ok());
+  ASSERT_TRUE(run.Advance({}).ok());
+  const nlohmann::json stats = nlohmann::json::parse(run.StatsJson());
+  ASSERT_EQ(stats["every"], 3);
+  const nlohmann::json& rows = stats["every_days"];
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0]["day"], 3);
+  EXPECT_EQ(rows[1]["day"], 6);
+  EXPECT_EQ(rows[2]["day"], 7);
+  const nlohmann::json& last = rows[2];
+  EXPECT_EQ(last["mosses"], stats["mosses"]);
+  EXPECT_EQ(last["seeds"], stats["seeds"]);
+  EXPECT_EQ(last["births"], stats["births"]);
+  EXPECT_EQ(last["deaths"], stats["deaths"]);
+  EXPECT_EQ(last["soil"], stats["soil_last_day"]);
+  EXPECT_EQ(last["photons"]["stored_by_depth"], stats["photons_last_day"]["stored_by_depth"]);
+  // Day 3's row is the 3-day run's breakdown.
+  MossRun three = *MossRun::Start(SmallState("thesis", 3, 1024), Budget{});
+  ASSERT_TRUE(three.Advance({}).ok());
+  const nlohmann::json at3 = nlohmann::json::parse(three.StatsJson());
+  EXPECT_EQ(rows[0]["mosses"], at3["mosses"]);
+  EXPECT_EQ(rows[0]["seeds"], at3["seeds"]);
+  EXPECT_EQ(rows[0]["soil"], at3["soil_last_day"]);
+  EXPECT_EQ(at3.find("every"), at3.end());
+  // Without rows the stats are those of before: the same text but for the rows.
+  EXPECT_EQ(StatsWithoutMs(three).find("every_days"), std::string::npos);
+  EXPECT_EQ(run.RecordEvery(2).field(), "stats_every");  // after day 0
+  MossRun fresh = *MossRun::Start(SmallState("plane", 2, 64), Budget{});
+  EXPECT_EQ(fresh.RecordEvery(-1).field(), "stats_every");
+  EXPECT_EQ(fresh.RecordEvery(1.5).field(), "stats_every");
+  EXPECT_TRUE(fresh.RecordEvery(0).ok());
+}
+
+}  // namespace
+}  // namespace niwa::moss
