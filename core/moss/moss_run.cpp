@@ -107,8 +107,6 @@ Result<MossRun> MossRun::Start(const MossState& state, const Budget& budget) {
 Result<MossRun> MossRun::StartOnScene(const MossState& state, MossScene scene_value,
                                       const Budget& budget, const std::string& mesh_name) {
   NIWA_RETURN_IF_ERROR(CheckMossParams(state.params));
-  if (state.params.Get(MossParam::kLightSmoothingDays) > 0)
-    return Status::Error("light_smoothing_days", "above 0 is not built yet; must be 0");
   if (scene_value.mesh.triangle_count() == 0)
     return Status::Error("mesh", "has no triangles; must have at least one");
   const MossScene* scene = &scene_value;
@@ -357,6 +355,20 @@ void MossRun::Day() {
     w.S[i] /= gather_area;
     w.m_over_M[i] = std::min(1.0, static_cast<double>(m_near[i]) / M);
   }
+  // light_smoothing_days N > 0 (spec §1.3's option): each cell's S is the exponential mean
+  // S̄_d = S̄_{d−1} + k·(S_d − S̄_{d−1}), k = 1 − e^(−1/N), S̄_1 = S_1 (choice 31).
+  const double smoothing = p.Get(MossParam::kLightSmoothingDays);
+  const double k_smooth = smoothing > 0 ? 1.0 - det::Exp(-1.0 / smoothing) : 1.0;
+  if (smoothing > 0) {
+    if (w.S_mean.size() != cells_.size()) {
+      w.S_mean = w.S;
+    } else {
+      for (std::size_t i = 0; i < cells_.size(); ++i) {
+        w.S_mean[i] += k_smooth * (w.S[i] - w.S_mean[i]);
+        w.S[i] = w.S_mean[i];
+      }
+    }
+  }
   const MossClock::time_point t2 = MossClock::now();
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     const SoilDay soil = AdvanceSoilDay(constants_, weather, GeologyLawOf(p, cells_.geology[i]),
@@ -457,9 +469,11 @@ void MossRun::Day() {
     if (!alive[j]) continue;
     MossPlant& m = w.mosses[j];
     const SpeciesRanges species = SpeciesOf(p, m.species);
-    const double S_moss = gather->Moss(m.pos, m.normal);
+    double S_moss = gather->Moss(m.pos, m.normal);
+    if (smoothing > 0 && m.lit) S_moss = m.S + k_smooth * (S_moss - m.S);  // its own mean
     const double G = FitnessOf(species, w.T_s[m.cell], w.rh_s[m.cell], S_moss, g_form).G;
     const GrowthDay grown = AdvanceGrowth(species, G, &m.growth);
+    m.lit = true;
     m.growing = grown.growing;
     m.S = S_moss;
     if (grown.dies) {

@@ -6,7 +6,7 @@
 // progress and cancel, and its estimate refused up front over the budget; the stats time the stages
 // (ms_* fields, the only bytes that differ between runs); its outputs: the .glb of the land's map
 // and the tufts (moss_gltf.h), the mosses and cells as JSON. Does not: load a mesh file, read a
-// weather file, or smooth the light over days (light_smoothing_days is refused above 0).
+// weather file, or spread the sun over the day's arc (sun_path 1 is refused by photons.h).
 #pragma once
 
 #include <array>
@@ -44,7 +44,9 @@ struct MossPlant {
   double G_max = 0;  // the running maximum of G_moss (gemmae, spec §4.20)
   bool on_moss = false;
   bool growing = false;  // today's D > 0
-  double S = 0;          // its light on its last day of growth [W/m²]
+  double S = 0;          // its light on its last day of growth [W/m²] (with
+                         // light_smoothing_days: its exponential mean)
+  bool lit = false;      // S holds a day's light (the mean's start)
 };
 
 // A waiting seed (a gemma or a spore) where it landed.
@@ -77,6 +79,7 @@ struct MossWorld {
   std::vector<MossSeed> seeds;
   std::vector<Bucket> buckets;                        // per cell
   std::vector<double> S, T_s, rh_s, theta, m_over_M;  // per cell, the last day's
+  std::vector<double> S_mean;  // per cell, light_smoothing_days' exponential mean of S
   Pcg32 photon_rng, growth_rng, rain_rng, place_rng;
   int64_t births = 0, deaths_declined = 0, deaths_contest = 0;
   std::array<int64_t, 2> seeds_made{};  // by SeedKind
@@ -96,7 +99,7 @@ class MossRun : public run::StudyRun {
  public:
   // Builds the scene and its soil cells, places n_init mosses (day 0) and checks the estimate of
   // the whole run against the budget first. Errors name state fields ("scene", "days", a row
-  // such as "light_smoothing_days" or "sun_path") or the budget's limit.
+  // such as "sun_path") or the budget's limit.
   static Result<MossRun> Start(const MossState& state, const Budget& budget);
   // The same on a scene made by the caller (a loaded mesh through soil_cells.h SceneFromMesh):
   // the state's scene is not read; `mesh_name` (the file's name) goes into the stats beside

@@ -366,7 +366,7 @@ for (const [args, field] of [
   [['--scene', 'garden'], '--scene'], [['--days', '-1'], '--days'], [['--days', '2.5'], '--days'],
   [['--indirect', 'maybe'], '--indirect'], [['--out', 'x.glb', '--map', 'G'], '--map'], [['--map', 'S'], '--map'],
   [['--instancing'], '--instancing'], [['--out', 'x.json', '--instancing'], '--instancing'], [['--seed', '1e20'], '--seed'], [['--photons', 'nan'], '--photons'],
-  [['--max-seconds', '1'], '--max-seconds'], [['--set', 'light_smoothing_days=2', '--days', '1'], 'light_smoothing_days'],
+  [['--max-seconds', '1'], '--max-seconds'], [['--set', 'sun_path=1', '--days', '1'], 'sun_path'],
 ]) {
   for (const cmd of [native, wasm]) {
     const r = spawn(cmd, ['moss', 'grow', ...args]);

@@ -4,6 +4,7 @@
 // off stores first hits only.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
@@ -122,9 +123,6 @@ TEST(MossRun, OverTheBudgetIsRefusedUpFront) {
 
 TEST(MossRun, RowsNotBuiltAreRefusedByName) {
   MossState state = SmallState("plane", 1, 64);
-  ASSERT_TRUE(state.params.Set(MossParam::kLightSmoothingDays, 3).ok());
-  EXPECT_EQ(MossRun::Start(state, Budget{}).status().field(), "light_smoothing_days");
-  state = SmallState("plane", 1, 64);
   ASSERT_TRUE(state.params.Set(MossParam::kSunPath, 1).ok());
   EXPECT_EQ(MossRun::Start(state, Budget{}).status().field(), "sun_path");
 }
@@ -226,6 +224,48 @@ TEST(MossRun, StatsEveryKDaysAreTheBreakdownOfThoseDays) {
   EXPECT_EQ(fresh.RecordEvery(-1).field(), "stats_every");
   EXPECT_EQ(fresh.RecordEvery(1.5).field(), "stats_every");
   EXPECT_TRUE(fresh.RecordEvery(0).ok());
+}
+
+}  // namespace
+}  // namespace niwa::moss
+
+namespace niwa::moss {
+namespace {
+
+// light_smoothing_days N (spec §1.3, choice 31): day 1's S is the day's own; day 2's cell S is
+// S_1 + k·(S_2 − S_1) with k = 1 − e^(−1/N), where S_2 is the unsmoothed run's day 2 (the same
+// mosses start day 2: day 1 used the same light); 0 keeps the run of before.
+TEST(MossRun, LightSmoothingIsAnExponentialMeanOverDays) {
+  const double N = 3;
+  const double k = 1.0 - std::exp(-1.0 / N);
+  MossState plain = SmallState("thesis", 1, 2048);
+  MossState smooth = plain;
+  ASSERT_TRUE(smooth.params.Set(MossParam::kLightSmoothingDays, N).ok());
+  MossRun a1 = *MossRun::Start(plain, Budget{});
+  MossRun b1 = *MossRun::Start(smooth, Budget{});
+  ASSERT_TRUE(a1.Advance({}).ok());
+  ASSERT_TRUE(b1.Advance({}).ok());
+  EXPECT_EQ(a1.world().S, b1.world().S);
+  plain.days = 2;
+  smooth.days = 2;
+  MossRun a2 = *MossRun::Start(plain, Budget{});
+  MossRun b2 = *MossRun::Start(smooth, Budget{});
+  ASSERT_TRUE(a2.Advance({}).ok());
+  ASSERT_TRUE(b2.Advance({}).ok());
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < a2.world().S.size(); ++i) {
+    const double S1 = a1.world().S[i], S2 = a2.world().S[i];
+    ASSERT_NEAR(b2.world().S[i], S1 + k * (S2 - S1), 1e-9 * (1 + std::abs(S1) + std::abs(S2))) << i;
+    differ += S1 != S2;
+  }
+  EXPECT_GT(differ, 100u);  // the days' light differs, so the mean is not either day's
+  // A moss's own light is its mean too (it grew on day 1 and day 2).
+  for (std::size_t j = 0; j < b2.world().mosses.size(); ++j) {
+    const MossPlant& m = b2.world().mosses[j];
+    if (m.birth_day == 0) {
+      ASSERT_TRUE(m.lit);
+    }
+  }
 }
 
 }  // namespace
