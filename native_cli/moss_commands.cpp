@@ -14,7 +14,7 @@
 
 #include "base/echo.h"
 #include "cli_common.h"
-#include "compose/moss_on_tree.h"
+#include "compose/moss_land.h"
 #include "io/gltf_writer.h"
 #include "io/mesh_reader.h"
 #include "moss/moss_params.h"
@@ -53,10 +53,14 @@ const run::FieldNames kFieldFlags = {
     {"weather", "--weather"},
     {"tree", "--tree-preset"},
     {"tree_years", "--tree-years"},
+    {"terrain", "--terrain-preset"},
+    {"terrain_seed", "--terrain-seed"},
+    {"stats_every", "--every"},
 };
 constexpr FlagRange kDaysRange{0, moss::kMaxMossDays, true};
 constexpr FlagRange kSeedRange{0, static_cast<double>(moss::kMaxMossSeed), true};
 constexpr FlagRange kTreeYearsRange{1, 100, true};  // the tree study's kMaxYears
+constexpr FlagRange kEveryRange{1, moss::kMaxMossDays, true};
 
 // Ranges of the flags that are not table rows (the soil cell's and the fitness place's inputs).
 constexpr FlagRange kThetaRange{0, 1, false, " (at most the geology's theta_SAT)"};
@@ -166,8 +170,8 @@ int RunFitness(const FitnessOptions& o, std::ostream& out) {
 // state, then the budget.
 struct RunOptions {
   StateOptions state;
-  std::string scene, indirect, mesh, weather, tree_preset;
-  double days = 0, photons = 0, seed = 0, tree_years = 10;
+  std::string scene, indirect, mesh, weather, tree_preset, terrain_preset;
+  double days = 0, photons = 0, seed = 0, tree_years = 10, terrain_seed = 1, every = 0;
   bool stats = false, instancing = false;
   std::string out_path, csv_path, map = "coverage";
   BudgetOptions budget;
@@ -182,7 +186,16 @@ void AddRunOptions(CLI::App* cmd, RunOptions* o, bool with_days) {
       "--tree-preset", o->tree_preset,
       "Land: a Niwa tree ('niwa presets tree') on a square of humus; moss on bark and ground");
   AddNumberFlag(cmd, "--tree-years", &o->tree_years, kTreeYearsRange,
-                "Age of that tree, " + RangeHelp(kTreeYearsRange) + " (default 10)");
+                "Age of that tree, " + RangeHelp(kTreeYearsRange) +
+                    " (default 10; only with a tree: --tree-preset or a link's scene=tree)");
+  CLI::Option* terrain = cmd->add_option(
+      "--terrain-preset", o->terrain_preset,
+      "Land: a Niwa terrain ('niwa presets terrain': simple, midpoint, fourier, improved or a "
+      "figure preset) grown from the built-in disk, in metres; geology by slope and height");
+  AddNumberFlag(cmd, "--terrain-seed", &o->terrain_seed, kSeedRange,
+                "RNG seed of that terrain, " + RangeHelp(kSeedRange) +
+                    " (default 1; only with a terrain: --terrain-preset or a link's "
+                    "scene=terrain)");
   CLI::Option* mesh = AddInputFlag(
       cmd, "--mesh", &o->mesh,
       "Land mesh instead of a scene: .glb, .gltf or .obj (geology from material names "
@@ -190,6 +203,9 @@ void AddRunOptions(CLI::App* cmd, RunOptions* o, bool with_days) {
       "COLOR_0 times the base colour; not in the link)");
   Excludes(mesh, tree);  // --mesh with --scene: refused by the run, naming --mesh
   Excludes(scene, tree);
+  Excludes(mesh, terrain);
+  Excludes(scene, terrain);
+  Excludes(tree, terrain);
   if (with_days)
     AddNumberFlag(cmd, "--days", &o->days, kDaysRange,
                   "Days to grow, " + RangeHelp(kDaysRange) + " (default 300)");
@@ -208,6 +224,30 @@ moss::MossState ResolveRunState(const RunOptions& o) {
   moss::MossState state = ResolveState(o.state);
   if (o.cmd->count("--scene"))
     Check(run::RenameField(moss::SetMossScene(o.scene, &state), kFieldFlags));
+  // The land: a tree or a terrain (state fields, so the link regrows it); their second flag only
+  // with their scene, never accepted and ignored.
+  if (!o.tree_preset.empty()) {
+    Check(run::RenameField(moss::SetMossScene(moss::kTreeLand, &state), kFieldFlags));
+    Check(run::RenameField(moss::SetMossTree(o.tree_preset, &state), kFieldFlags));
+  }
+  if (!o.terrain_preset.empty()) {
+    Check(run::RenameField(moss::SetMossScene(moss::kTerrainLand, &state), kFieldFlags));
+    Check(run::RenameField(moss::SetMossTerrain(o.terrain_preset, &state), kFieldFlags));
+  }
+  if (o.cmd->count("--tree-years")) {
+    if (state.scene != moss::kTreeLand || !o.mesh.empty())
+      Fail(Status::Error("--tree-years",
+                         "given without a tree; must come with --tree-preset (or a link's "
+                         "scene=tree)"));
+    Check(run::RenameField(moss::SetMossTreeYears(o.tree_years, &state), kFieldFlags));
+  }
+  if (o.cmd->count("--terrain-seed")) {
+    if (state.scene != moss::kTerrainLand || !o.mesh.empty())
+      Fail(Status::Error("--terrain-seed",
+                         "given without a terrain; must come with --terrain-preset (or a "
+                         "link's scene=terrain)"));
+    Check(run::RenameField(moss::SetMossTerrainSeed(o.terrain_seed, &state), kFieldFlags));
+  }
   if (o.cmd->get_option_no_throw("--days") != nullptr && o.cmd->count("--days"))
     Check(run::RenameField(moss::SetMossDays(o.days, &state), kFieldFlags));
   if (o.cmd->count("--seed"))
@@ -224,16 +264,12 @@ moss::MossState ResolveRunState(const RunOptions& o) {
 
 moss::MossRun StartRun(const RunOptions& o, const moss::MossState& state) {
   Result<moss::MossRun> run = Status::Error("", "");
-  if (!o.tree_preset.empty()) {
-    const Budget budget = ResolveBudget(o.budget);
+  if (o.mesh.empty()) {
+    // A built-in scene, or the state's tree or terrain grown through the composition tier.
     std::string truncated_by;
-    Result<moss::MossScene> land =
-        compose::MossTreeLand(o.tree_preset, o.tree_years, budget, "--tree-years", &truncated_by);
-    if (!land.ok()) Fail(run::RenameField(land.status(), kFieldFlags));
-    ReportTruncated(truncated_by);
-    const std::string name = land->name;
-    run = moss::MossRun::StartOnScene(state, std::move(land).value(), budget, name);
-  } else if (!o.mesh.empty()) {
+    run = compose::StartMossOnLand(state, ResolveBudget(o.budget), kFieldFlags, &truncated_by);
+    if (run.ok()) ReportTruncated(truncated_by);
+  } else {
     io::MeshReadStats read;
     Result<geom::TriMesh> mesh = io::ReadMeshFile(o.mesh, &read);
     if (!mesh.ok()) Fail(mesh.status().Within("--mesh"));
@@ -241,8 +277,6 @@ moss::MossRun StartRun(const RunOptions& o, const moss::MossState& state) {
     Result<moss::MossScene> scene = moss::SceneFromMesh(*mesh, read.materials, name, read.images);
     if (!scene.ok()) Fail(scene.status().Within("--mesh"));
     run = moss::MossRun::StartOnScene(state, *scene, ResolveBudget(o.budget), name);
-  } else {
-    run = moss::MossRun::Start(state, ResolveBudget(o.budget));
   }
   if (!run.ok()) Fail(run::RenameField(run.status(), kFieldFlags));
   return std::move(*run);
@@ -280,7 +314,10 @@ int RunGrow(const RunOptions& o, std::ostream& out) {
     if (!days.ok()) Fail(run::RenameField(days.status(), kFieldFlags));
     weather = std::move(*days);
   }
+  if (o.cmd->count("--every") && !o.stats)
+    Fail(Status::Error("--every", "only applies with --stats"));
   moss::MossRun run = StartRun(o, state);
+  if (o.cmd->count("--every")) Check(run::RenameField(run.RecordEvery(o.every), kFieldFlags));
   if (!weather.empty()) {
     const std::string name = o.weather.substr(o.weather.find_last_of('/') + 1);
     Check(run::RenameField(run.UseWeather(std::move(weather), name), kFieldFlags));
@@ -374,6 +411,11 @@ void AddMossCommands(CLI::App& app, CommandList& commands) {
   auto go = std::make_shared<RunOptions>();
   AddRunOptions(grow, go.get(), true);
   grow->add_flag("--stats", go->stats, "Print every statistic as one JSON object");
+  AddNumberFlag(grow, "--every", &go->every, kEveryRange,
+                "With --stats: the breakdown (mosses by species, region, orientation and "
+                "irradiance band; seeds; births and deaths; photons; soil per geology) every K "
+                "days and on the last day, as rows 'every_days', " +
+                    RangeHelp(kEveryRange));
   AddOutputFlag(grow, "--out", &go->out_path, {".json", ".glb", ".svg"},
                 "Write .json (every living moss and soil cell), .glb (the land with a per-vertex "
                 "map and the moss tufts of fig 3.7, species and birth day as extras) or .svg (the "

@@ -95,6 +95,10 @@ Estimate MossRun::RunEstimate(const MossState& state, std::size_t cells) {
 }
 
 Result<MossRun> MossRun::Start(const MossState& state, const Budget& budget) {
+  if (state.scene == kTreeLand || state.scene == kTerrainLand)
+    return Status::Error("scene", "'" + state.scene +
+                                      "' is another study's land; it is grown through the "
+                                      "composition tier (compose/moss_land.h)");
   Result<MossScene> scene = BuildScene(state.scene);
   if (!scene.ok()) return scene.status();
   return StartOnScene(state, std::move(*scene), budget, "");
@@ -103,8 +107,6 @@ Result<MossRun> MossRun::Start(const MossState& state, const Budget& budget) {
 Result<MossRun> MossRun::StartOnScene(const MossState& state, MossScene scene_value,
                                       const Budget& budget, const std::string& mesh_name) {
   NIWA_RETURN_IF_ERROR(CheckMossParams(state.params));
-  if (state.params.Get(MossParam::kLightSmoothingDays) > 0)
-    return Status::Error("light_smoothing_days", "above 0 is not built yet; must be 0");
   if (scene_value.mesh.triangle_count() == 0)
     return Status::Error("mesh", "has no triangles; must have at least one");
   const MossScene* scene = &scene_value;
@@ -353,6 +355,20 @@ void MossRun::Day() {
     w.S[i] /= gather_area;
     w.m_over_M[i] = std::min(1.0, static_cast<double>(m_near[i]) / M);
   }
+  // light_smoothing_days N > 0 (spec §1.3's option): each cell's S is the exponential mean
+  // S̄_d = S̄_{d−1} + k·(S_d − S̄_{d−1}), k = 1 − e^(−1/N), S̄_1 = S_1 (choice 31).
+  const double smoothing = p.Get(MossParam::kLightSmoothingDays);
+  const double k_smooth = smoothing > 0 ? 1.0 - det::Exp(-1.0 / smoothing) : 1.0;
+  if (smoothing > 0) {
+    if (w.S_mean.size() != cells_.size()) {
+      w.S_mean = w.S;
+    } else {
+      for (std::size_t i = 0; i < cells_.size(); ++i) {
+        w.S_mean[i] += k_smooth * (w.S[i] - w.S_mean[i]);
+        w.S[i] = w.S_mean[i];
+      }
+    }
+  }
   const MossClock::time_point t2 = MossClock::now();
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     const SoilDay soil = AdvanceSoilDay(constants_, weather, GeologyLawOf(p, cells_.geology[i]),
@@ -453,9 +469,11 @@ void MossRun::Day() {
     if (!alive[j]) continue;
     MossPlant& m = w.mosses[j];
     const SpeciesRanges species = SpeciesOf(p, m.species);
-    const double S_moss = gather->Moss(m.pos, m.normal);
+    double S_moss = gather->Moss(m.pos, m.normal);
+    if (smoothing > 0 && m.lit) S_moss = m.S + k_smooth * (S_moss - m.S);  // its own mean
     const double G = FitnessOf(species, w.T_s[m.cell], w.rh_s[m.cell], S_moss, g_form).G;
     const GrowthDay grown = AdvanceGrowth(species, G, &m.growth);
+    m.lit = true;
     m.growing = grown.growing;
     m.S = S_moss;
     if (grown.dies) {
@@ -524,11 +542,24 @@ void MossRun::Day() {
   record.births = static_cast<int>(w.births - births_before);
   record.deaths = static_cast<int>(w.deaths_declined + w.deaths_contest - deaths_before);
   w.days.push_back(record);
+  if (stats_every_ > 0 && (day % stats_every_ == 0 || day == state_.days)) {
+    nlohmann::ordered_json row;
+    row["day"] = day;
+    row.update(Breakdown());
+    w.every_rows.push_back(row.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+  }
   const MossClock::time_point t4 = MossClock::now();
   ms_photons_ += MossMs(t0, t1);
   ms_gather_ += MossMs(t1, t2);
   ms_soil_ += MossMs(t2, t3);
   ms_growth_ += MossMs(t3, t4);
+}
+
+Status MossRun::RecordEvery(double every) {
+  if (world_.day > 0) return Status::Error("stats_every", "given after day 0; must be given first");
+  NIWA_RETURN_IF_ERROR(CheckValue("stats_every", every, 0, kMaxMossDays, true));
+  stats_every_ = static_cast<int>(every);
+  return Status::Ok();
 }
 
 Status MossRun::UseWeather(std::vector<WeatherDay> days, const std::string& name) {
@@ -646,6 +677,24 @@ Result<gltf::Document> MossRun::MapDocument(MossMap map, bool instancing) const 
   return MossDocument(LandMapMesh(cells_, map, value, ramp), map, world_.day, Tufts(), instancing);
 }
 
+std::string MossRun::LandName() const {
+  if (!mesh_name_.empty()) return mesh_name_;
+  if (state_.scene == kTreeLand) return "tree:" + state_.tree;
+  if (state_.scene == kTerrainLand) return "terrain:" + state_.terrain;
+  return state_.scene;
+}
+
+void MossRun::AddLandFields(nlohmann::ordered_json* j) const {
+  if (!mesh_name_.empty()) return;
+  if (state_.scene == kTreeLand) {
+    (*j)["tree"] = state_.tree;
+    (*j)["tree_years"] = state_.tree_years;
+  } else if (state_.scene == kTerrainLand) {
+    (*j)["terrain"] = state_.terrain;
+    (*j)["terrain_seed"] = state_.terrain_seed;
+  }
+}
+
 std::string MossRun::Hash(const std::string& prefix) const {
   return EncodeMossHash(state_, prefix);
 }
@@ -709,8 +758,8 @@ PhotonMap MossRun::NextDayPhotons() const {
 
 std::string MossRun::PhotonsSvg(bool next_day) const {
   const int day = next_day ? world_.day + 1 : world_.day;
-  const std::string title = "moss photons day " + std::to_string(day) + ", " +
-                            (mesh_name_.empty() ? state_.scene : mesh_name_) + ", indirect " +
+  const std::string title = "moss photons day " + std::to_string(day) + ", " + LandName() +
+                            ", indirect " +
                             (state_.params.GetInt(MossParam::kIndirect) != 0 ? "on" : "off");
   return PhotonSvg(cells_, next_day ? NextDayPhotons() : map_, title);
 }
@@ -721,6 +770,7 @@ std::string MossRun::PhotonDayJson() const {
   j["study"] = "moss";
   j["scene"] = mesh_name_.empty() ? state_.scene : "mesh";
   if (!mesh_name_.empty()) j["mesh"] = mesh_name_;
+  AddLandFields(&j);
   j["url"] = Hash("");
   j["day"] = world_.day + 1;
   j["mosses"] = world_.mosses.size();
@@ -836,34 +886,9 @@ std::string MossRun::MossesJson() const {
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
-std::string MossRun::StatsJson() const {
+nlohmann::ordered_json MossRun::Breakdown() const {
   const MossWorld& w = world_;
   nlohmann::ordered_json j;
-  j["study"] = "moss";
-  j["scene"] = mesh_name_.empty() ? state_.scene : "mesh";
-  if (!mesh_name_.empty()) j["mesh"] = mesh_name_;  // a loaded mesh: not in the link
-  if (!weather_.empty())                            // a weather file: not in the link
-    j["weather"] = {{"file", weather_name_}, {"days", weather_.size()}};
-  j["preset"] = state_.preset;
-  j["url"] = Hash("");
-  j["days"] = w.day;
-  j["seed"] = state_.seed;
-  j["photons"] = state_.params.GetInt(MossParam::kPhotons);
-  j["indirect"] = state_.params.GetInt(MossParam::kIndirect);
-  // Soil cells by geology and region.
-  std::array<int, kGeologyCount> by_geology{};
-  std::vector<int> by_region(cells_.region_names.size(), 0);
-  for (std::size_t i = 0; i < cells_.size(); ++i) {
-    ++by_geology[static_cast<int>(cells_.geology[i])];
-    ++by_region[cells_.region[i]];
-  }
-  nlohmann::ordered_json cells;
-  cells["total"] = cells_.size();
-  for (int g = 0; g < kGeologyCount; ++g)
-    cells["by_geology"][GeologyName(static_cast<Geology>(g))] = by_geology[g];
-  for (std::size_t r = 0; r < by_region.size(); ++r)
-    cells["by_region"][cells_.region_names[r]] = by_region[r];
-  j["cells"] = cells;
   // Mosses by species, region, orientation; on mosses; coverage of the faces by orientation.
   nlohmann::ordered_json mosses;
   mosses["total"] = w.mosses.size();
@@ -904,9 +929,6 @@ std::string MossRun::StatsJson() const {
   for (const char* o : {"up", "down", "vertical"})
     mosses["coverage"][o] = coverage[o].second > 0 ? coverage[o].first / coverage[o].second : 0.0;
   j["mosses"] = mosses;
-  nlohmann::ordered_json population = nlohmann::ordered_json::array();
-  for (const auto& pop : w.population) population.push_back({pop[0], pop[1], pop[2]});
-  j["population"] = {{"species", {"gingoke", "haigoke", "sugigoke"}}, {"by_day", population}};
   // Seeds, births and deaths.
   std::array<int, 2> waiting{};
   for (const MossSeed& seed : w.seeds) ++waiting[static_cast<int>(seed.kind)];
@@ -919,13 +941,12 @@ std::string MossRun::StatsJson() const {
   j["seeds"] = seeds;
   j["births"] = w.births;
   j["deaths"] = {{"declined", w.deaths_declined}, {"lost_contest", w.deaths_contest}};
-  // The photons: the last day's and every day's, by bounce depth.
+  // The day's photons by bounce depth.
   nlohmann::ordered_json photons;
   photons["emitted_sun"] = w.emitted_sun;
   photons["emitted_sky"] = w.emitted_sky;
   photons["stored_by_depth"] = w.stored_by_depth;
-  photons["stored_by_depth_all_days"] = w.stored_by_depth_total;
-  j["photons_last_day"] = photons;
+  j["photons"] = photons;
   // The last day's soil per geology: mean S, T_s, rh_s, θ (area-weighted).
   nlohmann::ordered_json soil;
   for (int g = 0; g < kGeologyCount; ++g) {
@@ -940,7 +961,59 @@ std::string MossRun::StatsJson() const {
     soil[GeologyName(static_cast<Geology>(g))] = {
         {"S", S / area}, {"T_s", T_s / area}, {"rh_s", rh_s / area}, {"theta", theta / area}};
   }
-  j["soil_last_day"] = soil.is_null() ? nlohmann::ordered_json::object() : soil;
+  j["soil"] = soil.is_null() ? nlohmann::ordered_json::object() : soil;
+  return j;
+}
+
+std::string MossRun::StatsJson() const {
+  const MossWorld& w = world_;
+  nlohmann::ordered_json j;
+  j["study"] = "moss";
+  j["scene"] = mesh_name_.empty() ? state_.scene : "mesh";
+  if (!mesh_name_.empty()) j["mesh"] = mesh_name_;  // a loaded mesh: not in the link
+  AddLandFields(&j);
+  if (!weather_.empty())  // a weather file: not in the link
+    j["weather"] = {{"file", weather_name_}, {"days", weather_.size()}};
+  j["preset"] = state_.preset;
+  j["url"] = Hash("");
+  j["days"] = w.day;
+  j["seed"] = state_.seed;
+  j["photons"] = state_.params.GetInt(MossParam::kPhotons);
+  j["indirect"] = state_.params.GetInt(MossParam::kIndirect);
+  // Soil cells by geology and region.
+  std::array<int, kGeologyCount> by_geology{};
+  std::vector<int> by_region(cells_.region_names.size(), 0);
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    ++by_geology[static_cast<int>(cells_.geology[i])];
+    ++by_region[cells_.region[i]];
+  }
+  nlohmann::ordered_json cells;
+  cells["total"] = cells_.size();
+  for (int g = 0; g < kGeologyCount; ++g)
+    cells["by_geology"][GeologyName(static_cast<Geology>(g))] = by_geology[g];
+  for (std::size_t r = 0; r < by_region.size(); ++r)
+    cells["by_region"][cells_.region_names[r]] = by_region[r];
+  j["cells"] = cells;
+  const nlohmann::ordered_json b = Breakdown();
+  j["mosses"] = b["mosses"];
+  nlohmann::ordered_json population = nlohmann::ordered_json::array();
+  for (const auto& pop : w.population) population.push_back({pop[0], pop[1], pop[2]});
+  j["population"] = {{"species", {"gingoke", "haigoke", "sugigoke"}}, {"by_day", population}};
+  j["seeds"] = b["seeds"];
+  j["births"] = b["births"];
+  j["deaths"] = b["deaths"];
+  // The photons: the last day's and every day's, by bounce depth.
+  nlohmann::ordered_json photons = b["photons"];
+  photons["stored_by_depth_all_days"] = w.stored_by_depth_total;
+  j["photons_last_day"] = photons;
+  j["soil_last_day"] = b["soil"];
+  // Every K days (--every K): the same breakdown as it stood at the end of those days.
+  if (stats_every_ > 0) {
+    j["every"] = stats_every_;
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    for (const std::string& row : w.every_rows) rows.push_back(nlohmann::ordered_json::parse(row));
+    j["every_days"] = rows;
+  }
   // The stages' wall time (the only fields that differ between runs of one state).
   j["ms"] = ms_photons_ + ms_gather_ + ms_soil_ + ms_growth_;
   j["ms_photons"] = ms_photons_;

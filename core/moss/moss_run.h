@@ -6,13 +6,14 @@
 // progress and cancel, and its estimate refused up front over the budget; the stats time the stages
 // (ms_* fields, the only bytes that differ between runs); its outputs: the .glb of the land's map
 // and the tufts (moss_gltf.h), the mosses and cells as JSON. Does not: load a mesh file, read a
-// weather file, or smooth the light over days (light_smoothing_days is refused above 0).
+// weather file, or spread the sun over the day's arc (sun_path 1 is refused by photons.h).
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <memory>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
@@ -43,7 +44,9 @@ struct MossPlant {
   double G_max = 0;  // the running maximum of G_moss (gemmae, spec §4.20)
   bool on_moss = false;
   bool growing = false;  // today's D > 0
-  double S = 0;          // its light on its last day of growth [W/m²]
+  double S = 0;          // its light on its last day of growth [W/m²] (with
+                         // light_smoothing_days: its exponential mean)
+  bool lit = false;      // S holds a day's light (the mean's start)
 };
 
 // A waiting seed (a gemma or a spore) where it landed.
@@ -76,6 +79,7 @@ struct MossWorld {
   std::vector<MossSeed> seeds;
   std::vector<Bucket> buckets;                        // per cell
   std::vector<double> S, T_s, rh_s, theta, m_over_M;  // per cell, the last day's
+  std::vector<double> S_mean;  // per cell, light_smoothing_days' exponential mean of S
   Pcg32 photon_rng, growth_rng, rain_rng, place_rng;
   int64_t births = 0, deaths_declined = 0, deaths_contest = 0;
   std::array<int64_t, 2> seeds_made{};  // by SeedKind
@@ -86,18 +90,24 @@ struct MossWorld {
   std::vector<int64_t> stored_by_depth;                    // the last day's
   std::vector<int64_t> stored_by_depth_total;              // over every day
   std::vector<MossDayRecord> days;                         // day 1 .. day
+  // With RecordEvery(K): the stats' breakdown (MossRun::Breakdown, "day" first) at the end of
+  // every K-th day and of the run's last day, as JSON text.
+  std::vector<std::string> every_rows;
 };
 
 class MossRun : public run::StudyRun {
  public:
   // Builds the scene and its soil cells, places n_init mosses (day 0) and checks the estimate of
   // the whole run against the budget first. Errors name state fields ("scene", "days", a row
-  // such as "light_smoothing_days" or "sun_path") or the budget's limit.
+  // such as "sun_path") or the budget's limit.
   static Result<MossRun> Start(const MossState& state, const Budget& budget);
   // The same on a scene made by the caller (a loaded mesh through soil_cells.h SceneFromMesh):
   // the state's scene is not read; `mesh_name` (the file's name) goes into the stats beside
-  // "scene": "mesh" (a mesh is not part of the link). Errors as Start's, and "mesh" for a scene
-  // without triangles.
+  // "scene": "mesh" (a mesh is not part of the link). With `mesh_name` "" the scene is the land
+  // of the state's scene, tree or terrain, grown by the composition tier (compose/moss_land.h):
+  // the stats and the link say the state's scene and its land fields. Errors as Start's, and
+  // "mesh" for a scene without triangles. (Start refuses the scenes tree and terrain, naming
+  // "scene": core/moss cannot grow them.)
   static Result<MossRun> StartOnScene(const MossState& state, MossScene scene, const Budget& budget,
                                       const std::string& mesh_name);
   // Daily weather replacing the table's climate from day 1 (before any day is grown): day d reads
@@ -105,6 +115,13 @@ class MossRun : public run::StudyRun {
   // photons. `name` (the file's name) goes into the stats as "weather" (not part of the link).
   // Errors name "weather".
   Status UseWeather(std::vector<WeatherDay> days, const std::string& name);
+  // Records the stats' breakdown (mosses by species, region, orientation and irradiance band, on
+  // mosses and coverage; seeds waiting, made and lost; births and deaths by cause so far; the
+  // day's photons by depth; mean S, T_s, rh_s, theta per geology) at the end of every `every`-th
+  // day and of the last day (spec §6's `--every K`); StatsJson then adds "every" and
+  // "every_days" (the rows). 0: none (the default; the stats keep their bytes). Before the first
+  // day only; the error names "stats_every" (a whole number in [0, 3650]).
+  Status RecordEvery(double every);
   // What the run of `state` on `cells` needs (calibrated upper bounds).
   static Estimate RunEstimate(const MossState& state, std::size_t cells);
 
@@ -157,6 +174,13 @@ class MossRun : public run::StudyRun {
 
  private:
   MossRun() = default;
+  // The land's name for a picture: the mesh file, "tree:<preset>", "terrain:<preset>" or the scene.
+  std::string LandName() const;
+  // The stats' fields of a tree or terrain land (tree, tree_years; terrain, terrain_seed).
+  void AddLandFields(nlohmann::ordered_json* j) const;
+  // The world's breakdown now: {mosses, seeds, births, deaths, photons (the day's), soil (the
+  // day's means per geology)}, as StatsJson prints them for the last day.
+  nlohmann::ordered_json Breakdown() const;
   void Day();  // one day, world_.day + 1
   // Where a seed starting at `start` comes to rest (spec §1.5.6); false with the loss otherwise.
   // `centres` are the mosses a seed may rest on (those inside a mat), owner[k] their index.
@@ -171,6 +195,7 @@ class MossRun : public run::StudyRun {
   std::string mesh_name_;            // the loaded mesh's file name; "" on a built-in scene
   std::vector<WeatherDay> weather_;  // a weather file's days; empty: the table's climate
   std::string weather_name_;
+  int stats_every_ = 0;  // RecordEvery's K; 0: no rows
   Budget budget_;
   SoilCells cells_;
   std::vector<double> cumulative_area_;

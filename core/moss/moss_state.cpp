@@ -37,8 +37,53 @@ Status SetMossScene(std::string_view scene, MossState* state) {
     state->scene = name;
     return Status::Ok();
   }
-  return Status::Error(
-      "scene", "'" + Printable(scene) + "' is unknown; must be plane, thesis, walls or rocks");
+  if (scene == kTreeLand || scene == kTerrainLand) {
+    state->scene = std::string(scene);
+    return Status::Ok();
+  }
+  return Status::Error("scene", "'" + Printable(scene) +
+                                    "' is unknown; must be plane, thesis, walls, rocks, tree or "
+                                    "terrain");
+}
+
+namespace {
+
+// A preset name of another study: 1..40 of [a-z0-9_-] (whether it exists is that study's word).
+Status CheckPresetSpelling(const char* field, const char* study, std::string_view name) {
+  bool spelled = !name.empty() && name.size() <= 40;
+  for (char c : name)
+    spelled = spelled && ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '_');
+  if (spelled) return Status::Ok();
+  return Status::Error(field, "'" + Printable(name) + "' is not a " + study +
+                                  " preset name; must be 1..40 of a-z 0-9 - _ ('niwa presets " +
+                                  study + "')");
+}
+
+}  // namespace
+
+Status SetMossTree(std::string_view name, MossState* state) {
+  NIWA_RETURN_IF_ERROR(CheckPresetSpelling("tree", "tree", name));
+  state->tree = std::string(name);
+  return Status::Ok();
+}
+
+Status SetMossTreeYears(double years, MossState* state) {
+  NIWA_RETURN_IF_ERROR(CheckValue("tree_years", years, 1, kMaxMossTreeYears, true));
+  state->tree_years = static_cast<int>(years);
+  return Status::Ok();
+}
+
+Status SetMossTerrain(std::string_view name, MossState* state) {
+  NIWA_RETURN_IF_ERROR(CheckPresetSpelling("terrain", "terrain", name));
+  state->terrain = std::string(name);
+  return Status::Ok();
+}
+
+Status SetMossTerrainSeed(double seed, MossState* state) {
+  NIWA_RETURN_IF_ERROR(
+      CheckValue("terrain_seed", seed, 0, static_cast<double>(kMaxMossSeed), true));
+  state->terrain_seed = static_cast<uint64_t>(seed);
+  return Status::Ok();
 }
 
 void ApplyMossHash(std::string_view hash, std::string_view prefix, MossState* state,
@@ -57,16 +102,21 @@ void ApplyMossHash(std::string_view hash, std::string_view prefix, MossState* st
   }
   for (const auto& [key, value] : pairs) {
     if (key == pre + "preset") continue;
-    if (key == pre + "days" || key == pre + "seed") {
+    if (key == pre + "days" || key == pre + "seed" || key == pre + "tree_years" ||
+        key == pre + "terrain_seed") {
       const std::optional<double> x = ParseNumber(value);
       const Status s = !x ? Status::Error(key, "'" + Printable(value) + "' is not a number")
-                       : key == pre + "days" ? SetMossDays(*x, state)
-                                             : SetMossSeed(*x, state);
+                       : key == pre + "days"       ? SetMossDays(*x, state)
+                       : key == pre + "seed"       ? SetMossSeed(*x, state)
+                       : key == pre + "tree_years" ? SetMossTreeYears(*x, state)
+                                                   : SetMossTerrainSeed(*x, state);
       if (!s.ok()) notices->push_back(Printable(key) + ": " + s.message() + "; dropped");
       continue;
     }
-    if (key == pre + "scene") {
-      const Status s = SetMossScene(value, state);
+    if (key == pre + "scene" || key == pre + "tree" || key == pre + "terrain") {
+      const Status s = key == pre + "scene"  ? SetMossScene(value, state)
+                       : key == pre + "tree" ? SetMossTree(value, state)
+                                             : SetMossTerrain(value, state);
       if (!s.ok()) notices->push_back(Printable(key) + ": " + s.message() + "; dropped");
       continue;
     }
@@ -83,6 +133,13 @@ std::string EncodeMossHash(const MossState& state, std::string_view prefix) {
   if (state.scene != "thesis") out += "&" + pre + "scene=" + PercentEncode(state.scene);
   if (state.days != 300) out += "&" + pre + "days=" + std::to_string(state.days);
   if (state.seed != 1) out += "&" + pre + "seed=" + std::to_string(state.seed);
+  if (state.scene == kTreeLand) {
+    out += "&" + pre + "tree=" + PercentEncode(state.tree) + "&" + pre +
+           "tree_years=" + std::to_string(state.tree_years);
+  } else if (state.scene == kTerrainLand) {
+    out += "&" + pre + "terrain=" + PercentEncode(state.terrain) + "&" + pre +
+           "terrain_seed=" + std::to_string(state.terrain_seed);
+  }
   return out + EncodeChangedParams(state.params, base.ok() ? *base : MossParams(), prefix);
 }
 
@@ -111,7 +168,27 @@ Status ApplyMossStateJson(const std::string& text, MossState* state) {
       return Status::Error("seed", "must be a whole number in [0, 4294967295]");
     NIWA_RETURN_IF_ERROR(SetMossSeed(j["seed"].get<double>(), &next));
   }
-  NIWA_RETURN_IF_ERROR(ApplyParamsJson(text, &next.params, {"preset", "scene", "days", "seed"}));
+  if (j.contains("tree")) {
+    if (!j["tree"].is_string()) return Status::Error("tree", "must be a tree preset name");
+    NIWA_RETURN_IF_ERROR(SetMossTree(j["tree"].get<std::string>(), &next));
+  }
+  if (j.contains("tree_years")) {
+    if (!j["tree_years"].is_number())
+      return Status::Error("tree_years", "must be a whole number in [1, 100]");
+    NIWA_RETURN_IF_ERROR(SetMossTreeYears(j["tree_years"].get<double>(), &next));
+  }
+  if (j.contains("terrain")) {
+    if (!j["terrain"].is_string()) return Status::Error("terrain", "must be a terrain preset name");
+    NIWA_RETURN_IF_ERROR(SetMossTerrain(j["terrain"].get<std::string>(), &next));
+  }
+  if (j.contains("terrain_seed")) {
+    if (!j["terrain_seed"].is_number())
+      return Status::Error("terrain_seed", "must be a whole number in [0, 4294967295]");
+    NIWA_RETURN_IF_ERROR(SetMossTerrainSeed(j["terrain_seed"].get<double>(), &next));
+  }
+  NIWA_RETURN_IF_ERROR(ApplyParamsJson(
+      text, &next.params,
+      {"preset", "scene", "days", "seed", "tree", "tree_years", "terrain", "terrain_seed"}));
   NIWA_RETURN_IF_ERROR(CheckMossParams(next.params));  // the cross-row checks at load
   *state = next;
   return Status::Ok();
@@ -123,6 +200,13 @@ std::string MossStateJson(const MossState& state) {
   j["scene"] = state.scene;
   j["days"] = state.days;
   j["seed"] = state.seed;
+  if (state.scene == kTreeLand) {
+    j["tree"] = state.tree;
+    j["tree_years"] = state.tree_years;
+  } else if (state.scene == kTerrainLand) {
+    j["terrain"] = state.terrain;
+    j["terrain_seed"] = state.terrain_seed;
+  }
   j["params"] = nlohmann::json::parse(ParamsToJson(state.params, -1));
   return j.dump();
 }

@@ -327,8 +327,54 @@ for (const [args, field] of hostile) {
   const b = JSON.stringify(withoutMs(JSON.parse(run(wasm, args))));
   const s = JSON.parse(a);
   check(`moss grow --tree-preset sakura --tree-years 4: native == WASM; cells ${JSON.stringify(s.cells.by_region)} ${JSON.stringify(s.cells.by_geology)}, ${s.mosses.total} mosses`,
-    a === b && s.mesh === 'tree:sakura' && s.cells.by_region.bark > 0 && s.cells.by_region.ground > 0 &&
+    a === b && s.scene === 'tree' && s.tree === 'sakura' && s.tree_years === 4 && s.cells.by_region.bark > 0 && s.cells.by_region.ground > 0 &&
     s.cells.by_geology.sandy === s.cells.by_region.bark && s.cells.by_geology.humus === s.cells.by_region.ground);
+  // The land is in the link: --url alone regrows the same stats and moss.json, in both builds.
+  check(`moss grow --tree-preset: url ${s.url} holds the tree`, /(^|&)scene=tree(&|$)/.test(s.url) && s.url.includes('tree=sakura&tree_years=4'));
+  const again = ['moss', 'grow', '--url', s.url, '--stats'];
+  const ua = JSON.stringify(withoutMs(JSON.parse(run(native, again))));
+  const ub = JSON.stringify(withoutMs(JSON.parse(run(wasm, again))));
+  check('moss grow --url (tree land): the same stats as the flags, native == WASM', ua === a && ub === a);
+}
+
+// Stats every K days (--every K with --stats): rows at days K, 2K, ... and the last, native == WASM,
+// the last row the stats' own breakdown.
+{
+  const args = ['moss', 'grow', '--scene', 'walls', '--days', '5', '--photons', '512', '--stats', '--every', '2'];
+  const a = JSON.stringify(withoutMs(JSON.parse(run(native, args))));
+  const b = JSON.stringify(withoutMs(JSON.parse(run(wasm, args))));
+  const s = JSON.parse(a);
+  const rows = s.every_days ?? [];
+  const last = rows[rows.length - 1] ?? {};
+  check(`moss grow --stats --every 2 (5 days): native == WASM; rows on days ${rows.map((r) => r.day)}, by region ${JSON.stringify(rows.map((r) => r.mosses.by_region))}`,
+    a === b && s.every === 2 && rows.map((r) => r.day).join() === '2,4,5' &&
+    JSON.stringify(last.mosses) === JSON.stringify(s.mosses) && JSON.stringify(last.soil) === JSON.stringify(s.soil_last_day) &&
+    JSON.stringify(last.deaths) === JSON.stringify(s.deaths));
+  const plain = JSON.parse(run(native, args.slice(0, -2)));
+  check('moss grow --stats without --every: no rows', !('every_days' in plain) && !('every' in plain));
+}
+
+// A Niwa terrain as the land (core/compose/moss_on_terrain): geology by slope and height, regions
+// by height; the flags and the url regrow the same bytes in both builds.
+{
+  const args = ['moss', 'grow', '--terrain-preset', 'fig13b', '--terrain-seed', '3', '--days', '2', '--photons', '256', '--set', 'soil_edge=2', '--stats'];
+  const a = JSON.stringify(withoutMs(JSON.parse(run(native, args))));
+  const b = JSON.stringify(withoutMs(JSON.parse(run(wasm, args))));
+  const s = JSON.parse(a);
+  check(`moss grow --terrain-preset fig13b --terrain-seed 3: native == WASM; cells ${JSON.stringify(s.cells.by_region)} ${JSON.stringify(s.cells.by_geology)}, ${s.mosses.total} mosses`,
+    a === b && s.scene === 'terrain' && s.terrain === 'fig13b' && s.terrain_seed === 3 &&
+    s.cells.by_region.foot > 0 && s.cells.by_region.top > 0 && s.cells.by_geology.humus > 0 && s.cells.by_geology.sandy > 0);
+  const again = ['moss', 'grow', '--url', s.url, '--stats'];
+  const ua = JSON.stringify(withoutMs(JSON.parse(run(native, again))));
+  const ub = JSON.stringify(withoutMs(JSON.parse(run(wasm, again))));
+  check(`moss grow --url ${s.url}: the same stats as the flags, native == WASM`, ua === a && ub === a);
+  const other = JSON.parse(run(native, ['moss', 'grow', '--terrain-preset', 'fig13b', '--terrain-seed', '4', '--days', '0', '--set', 'soil_edge=2', '--stats']));
+  check(`moss grow --terrain-seed 4: another mountain (${other.cells.total} cells against ${s.cells.total})`,
+    JSON.stringify(other.cells) !== JSON.stringify(s.cells) || other.url !== s.url);
+  // The default run on a mountain is over the 60 s budget: refused before anything grows.
+  const r = spawn(native, ['moss', 'grow', '--terrain-preset', 'improved']);
+  check(`moss grow --terrain-preset improved (300 days): refused up front, "${r.stderr.trim()}"`,
+    r.status === 2 && r.stderr.startsWith('niwa: error: --max-seconds') && r.stdout === '');
 }
 
 for (const [args, field] of [
@@ -337,10 +383,16 @@ for (const [args, field] of [
   [['--mesh', join(root, 'tests/data/meshes/materials.glb'), '--scene', 'thesis'], '--mesh'],
   [['--tree-preset', 'baobab'], '--tree-preset'], [['--tree-preset', 'sakura', '--tree-years', '0'], '--tree-years'],
   [['--tree-preset', 'sakura', '--scene', 'thesis'], '--scene'],
+  [['--every', '2', '--days', '1'], '--every'], [['--stats', '--every', '0', '--days', '1'], '--every'], [['--stats', '--every', '1.5'], '--every'],
+  [['--tree-years', '4'], '--tree-years'], [['--scene', 'thesis', '--tree-years', '4'], '--tree-years'],
+  [['--url', 'preset=nomura2010&scene=thesis', '--tree-years', '4'], '--tree-years'],
+  [['--terrain-seed', '2'], '--terrain-seed'], [['--tree-preset', 'sakura', '--terrain-seed', '2'], '--terrain-seed'],
+  [['--terrain-preset', 'everest', '--days', '1'], '--terrain-preset'], [['--terrain-preset', 'fig16', '--terrain-seed', '-1'], '--terrain-seed'],
+  [['--terrain-preset', 'fig16', '--tree-preset', 'sakura'], '--tree-preset'], [['--terrain-preset', 'Bad!'], '--terrain-preset'],
   [['--scene', 'garden'], '--scene'], [['--days', '-1'], '--days'], [['--days', '2.5'], '--days'],
   [['--indirect', 'maybe'], '--indirect'], [['--out', 'x.glb', '--map', 'G'], '--map'], [['--map', 'S'], '--map'],
   [['--instancing'], '--instancing'], [['--out', 'x.json', '--instancing'], '--instancing'], [['--seed', '1e20'], '--seed'], [['--photons', 'nan'], '--photons'],
-  [['--max-seconds', '1'], '--max-seconds'], [['--set', 'light_smoothing_days=2', '--days', '1'], 'light_smoothing_days'],
+  [['--max-seconds', '1'], '--max-seconds'], [['--set', 'sun_path=1', '--days', '1'], 'sun_path'],
 ]) {
   for (const cmd of [native, wasm]) {
     const r = spawn(cmd, ['moss', 'grow', ...args]);

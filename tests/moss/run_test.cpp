@@ -4,6 +4,7 @@
 // off stores first hits only.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
@@ -122,9 +123,6 @@ TEST(MossRun, OverTheBudgetIsRefusedUpFront) {
 
 TEST(MossRun, RowsNotBuiltAreRefusedByName) {
   MossState state = SmallState("plane", 1, 64);
-  ASSERT_TRUE(state.params.Set(MossParam::kLightSmoothingDays, 3).ok());
-  EXPECT_EQ(MossRun::Start(state, Budget{}).status().field(), "light_smoothing_days");
-  state = SmallState("plane", 1, 64);
   ASSERT_TRUE(state.params.Set(MossParam::kSunPath, 1).ok());
   EXPECT_EQ(MossRun::Start(state, Budget{}).status().field(), "sun_path");
 }
@@ -181,6 +179,93 @@ TEST(MossRun, TheStateHashCarriesSceneDaysAndSeed) {
   EXPECT_EQ(notices.size(), 3u);
   EXPECT_EQ(SetMossDays(3651, &back).field(), "days");
   EXPECT_EQ(SetMossScene("x", &back).field(), "scene");
+}
+
+}  // namespace
+}  // namespace niwa::moss
+
+namespace niwa::moss {
+namespace {
+
+// Stats every K days (spec §6 `--every K`, issue 29 item 3): rows at the end of days K, 2K, ...
+// and the last day, each the breakdown the stats give; the last row equals the stats' own fields;
+// the rows are what the run was on those days (a run of 3 days has the 7-day run's first row);
+// without RecordEvery the stats have no rows; asked after day 0 or out of range it is refused.
+TEST(MossRun, StatsEveryKDaysAreTheBreakdownOfThoseDays) {
+  MossRun run = *MossRun::Start(SmallState("thesis", 7, 1024), Budget{});
+  ASSERT_TRUE(run.RecordEvery(3).ok());
+  ASSERT_TRUE(run.Advance({}).ok());
+  const nlohmann::json stats = nlohmann::json::parse(run.StatsJson());
+  ASSERT_EQ(stats["every"], 3);
+  const nlohmann::json& rows = stats["every_days"];
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0]["day"], 3);
+  EXPECT_EQ(rows[1]["day"], 6);
+  EXPECT_EQ(rows[2]["day"], 7);
+  const nlohmann::json& last = rows[2];
+  EXPECT_EQ(last["mosses"], stats["mosses"]);
+  EXPECT_EQ(last["seeds"], stats["seeds"]);
+  EXPECT_EQ(last["births"], stats["births"]);
+  EXPECT_EQ(last["deaths"], stats["deaths"]);
+  EXPECT_EQ(last["soil"], stats["soil_last_day"]);
+  EXPECT_EQ(last["photons"]["stored_by_depth"], stats["photons_last_day"]["stored_by_depth"]);
+  // Day 3's row is the 3-day run's breakdown.
+  MossRun three = *MossRun::Start(SmallState("thesis", 3, 1024), Budget{});
+  ASSERT_TRUE(three.Advance({}).ok());
+  const nlohmann::json at3 = nlohmann::json::parse(three.StatsJson());
+  EXPECT_EQ(rows[0]["mosses"], at3["mosses"]);
+  EXPECT_EQ(rows[0]["seeds"], at3["seeds"]);
+  EXPECT_EQ(rows[0]["soil"], at3["soil_last_day"]);
+  EXPECT_EQ(at3.find("every"), at3.end());
+  // Without rows the stats are those of before: the same text but for the rows.
+  EXPECT_EQ(StatsWithoutMs(three).find("every_days"), std::string::npos);
+  EXPECT_EQ(run.RecordEvery(2).field(), "stats_every");  // after day 0
+  MossRun fresh = *MossRun::Start(SmallState("plane", 2, 64), Budget{});
+  EXPECT_EQ(fresh.RecordEvery(-1).field(), "stats_every");
+  EXPECT_EQ(fresh.RecordEvery(1.5).field(), "stats_every");
+  EXPECT_TRUE(fresh.RecordEvery(0).ok());
+}
+
+}  // namespace
+}  // namespace niwa::moss
+
+namespace niwa::moss {
+namespace {
+
+// light_smoothing_days N (spec §1.3, choice 31): day 1's S is the day's own; day 2's cell S is
+// S_1 + k·(S_2 − S_1) with k = 1 − e^(−1/N), where S_2 is the unsmoothed run's day 2 (the same
+// mosses start day 2: day 1 used the same light); 0 keeps the run of before.
+TEST(MossRun, LightSmoothingIsAnExponentialMeanOverDays) {
+  const double N = 3;
+  const double k = 1.0 - std::exp(-1.0 / N);
+  MossState plain = SmallState("thesis", 1, 2048);
+  MossState smooth = plain;
+  ASSERT_TRUE(smooth.params.Set(MossParam::kLightSmoothingDays, N).ok());
+  MossRun a1 = *MossRun::Start(plain, Budget{});
+  MossRun b1 = *MossRun::Start(smooth, Budget{});
+  ASSERT_TRUE(a1.Advance({}).ok());
+  ASSERT_TRUE(b1.Advance({}).ok());
+  EXPECT_EQ(a1.world().S, b1.world().S);
+  plain.days = 2;
+  smooth.days = 2;
+  MossRun a2 = *MossRun::Start(plain, Budget{});
+  MossRun b2 = *MossRun::Start(smooth, Budget{});
+  ASSERT_TRUE(a2.Advance({}).ok());
+  ASSERT_TRUE(b2.Advance({}).ok());
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < a2.world().S.size(); ++i) {
+    const double S1 = a1.world().S[i], S2 = a2.world().S[i];
+    ASSERT_NEAR(b2.world().S[i], S1 + k * (S2 - S1), 1e-9 * (1 + std::abs(S1) + std::abs(S2))) << i;
+    differ += S1 != S2;
+  }
+  EXPECT_GT(differ, 100u);  // the days' light differs, so the mean is not either day's
+  // A moss's own light is its mean too (it grew on day 1 and day 2).
+  for (std::size_t j = 0; j < b2.world().mosses.size(); ++j) {
+    const MossPlant& m = b2.world().mosses[j];
+    if (m.birth_day == 0) {
+      ASSERT_TRUE(m.lit);
+    }
+  }
 }
 
 }  // namespace

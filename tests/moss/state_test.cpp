@@ -51,5 +51,52 @@ TEST(MossState, PrefixedKeysOnAComposedPage) {
   EXPECT_EQ(SetMossPreset("x", &back).field(), "preset");
 }
 
+// The land of another study is state: scene tree with tree and tree_years, scene terrain with
+// terrain and terrain_seed, in the hash (on their scene only) and the state JSON, read back to the
+// same state; bad values are refused naming their field.
+TEST(MossState, TheLandIsStateAndItsHashRegrowsIt) {
+  MossState state;
+  ASSERT_TRUE(SetMossScene("tree", &state).ok());
+  ASSERT_TRUE(SetMossTree("sakura", &state).ok());
+  ASSERT_TRUE(SetMossTreeYears(4, &state).ok());
+  ASSERT_TRUE(SetMossTerrainSeed(9, &state).ok());  // not on the tree's scene: not in the hash
+  const std::string hash = EncodeMossHash(state, "moss.");
+  EXPECT_EQ(hash, "moss.preset=nomura2010&moss.scene=tree&moss.tree=sakura&moss.tree_years=4");
+  MossState back;
+  std::vector<std::string> notices;
+  ApplyMossHash(hash, "moss.", &back, &notices);
+  EXPECT_TRUE(notices.empty());
+  EXPECT_EQ(back.scene, "tree");
+  EXPECT_EQ(back.tree, "sakura");
+  EXPECT_EQ(back.tree_years, 4);
+  MossState from_json;
+  ASSERT_TRUE(ApplyMossStateJson(MossStateJson(back), &from_json).ok());
+  EXPECT_EQ(EncodeMossHash(from_json), "preset=nomura2010&scene=tree&tree=sakura&tree_years=4");
+
+  MossState terrain;
+  ApplyMossHash("scene=terrain&terrain=fig16&terrain_seed=7", "", &terrain, &notices);
+  EXPECT_TRUE(notices.empty());
+  EXPECT_EQ(terrain.terrain, "fig16");
+  EXPECT_EQ(terrain.terrain_seed, 7u);
+  EXPECT_EQ(EncodeMossHash(terrain),
+            "preset=nomura2010&scene=terrain&terrain=fig16&terrain_seed=7");
+  MossState terrain_back;
+  ASSERT_TRUE(ApplyMossStateJson(MossStateJson(terrain), &terrain_back).ok());
+  EXPECT_EQ(EncodeMossHash(terrain_back), EncodeMossHash(terrain));
+  // A built-in scene writes no land fields (links of before keep their bytes).
+  EXPECT_EQ(MossStateJson(MossState()).find("tree"), std::string::npos);
+
+  EXPECT_EQ(SetMossTree("Sakura!", &state).field(), "tree");
+  EXPECT_EQ(SetMossTreeYears(0, &state).field(), "tree_years");
+  EXPECT_EQ(SetMossTreeYears(2.5, &state).field(), "tree_years");
+  EXPECT_EQ(SetMossTerrain("", &state).field(), "terrain");
+  EXPECT_EQ(SetMossTerrainSeed(-1, &state).field(), "terrain_seed");
+  EXPECT_EQ(ApplyMossStateJson(R"({"tree_years": 200})", &state).field(), "tree_years");
+  notices.clear();
+  ApplyMossHash("tree_years=x", "", &state, &notices);
+  ASSERT_EQ(notices.size(), 1u);
+  EXPECT_EQ(state.tree_years, 4);
+}
+
 }  // namespace
 }  // namespace niwa::moss

@@ -27,7 +27,8 @@
 //             after n bounces) of every photon the last day stored (MossRun::photon_map()), on
 //             the land and on mosses (figs 4.1/4.2's photon points)
 // Calls: setProgress(fn) (fn(stage, done, total) after every day), grow(stateJson) -> ""/error
-// record (on the state's built-in scene), or loadMesh(bytes, name) -> ""/error record (a dropped
+// record (on the state's land: a built-in scene, or scene "tree" / "terrain" with its land fields,
+// grown through core/compose/moss_land.h), or loadMesh(bytes, name) -> ""/error record (a dropped
 // .glb/.gltf/.obj, Draco already decoded by the page, read as `niwa moss grow --mesh` reads a
 // file: soil_cells.h SceneFromMesh, geology from its materials, textures and colours) then
 // growOnMesh(stateJson) (MossRun::StartOnScene: the stats say scene "mesh" and the file's name;
@@ -36,7 +37,7 @@
 // statsJson() (the CLI's `niwa moss grow --stats`, ms* timing fields included), hash(),
 // stateJson(), boundsJson(), buffers(group); build("glb"|"json") then buffers("download"): the
 // bytes of `--out moss.glb` / `--out moss.json`. The state JSON: {preset, scene, days, seed,
-// params: {row: value}} (params over the preset's values).
+// [tree, tree_years | terrain, terrain_seed], params: {row: value}} (params over the preset's).
 // Does not: keep more than one run or mesh, or tell a moss that
 // died and one with the same place, species and birth day apart (the run never makes two).
 #include <emscripten/bind.h>
@@ -53,6 +54,7 @@
 #include <vector>
 
 #include "buffers.h"
+#include "compose/moss_land.h"
 #include "error_record.h"
 #include "geom/mesh_metrics.h"
 #include "io/gltf_writer.h"
@@ -78,6 +80,13 @@ ordered_json MossStateObject(const moss::MossState& state) {
   j["scene"] = state.scene;
   j["days"] = state.days;
   j["seed"] = state.seed;
+  if (state.scene == moss::kTreeLand) {
+    j["tree"] = state.tree;
+    j["tree_years"] = state.tree_years;
+  } else if (state.scene == moss::kTerrainLand) {
+    j["terrain"] = state.terrain;
+    j["terrain_seed"] = state.terrain_seed;
+  }
   j["params"] = ordered_json::parse(ParamsToJson(state.params, -1));
   return j;
 }
@@ -143,9 +152,11 @@ class MossLab {
     Status s = moss::ApplyMossStateJson(state_json, &state);
     if (!s.ok()) return ErrorText(s);
     if (on_mesh && !mesh_scene_) return ErrorText(Status::Error("mesh", "no mesh is loaded"));
+    // A built-in scene, or the state's Niwa tree or terrain grown through the composition tier
+    // (as `niwa moss grow --url` grows it).
     Result<moss::MossRun> started =
         on_mesh ? moss::MossRun::StartOnScene(state, *mesh_scene_, PageBudget(), mesh_name_)
-                : moss::MossRun::Start(state, PageBudget());
+                : compose::StartMossOnLand(state, PageBudget(), {}, nullptr);
     if (!started.ok()) return ErrorText(started.status());
     moss::MossRun run = std::move(started).value();
     Lives lives;

@@ -3,7 +3,9 @@
 // the moss table, keeps the state in location.hash through the moss hash codec (the text `niwa
 // moss grow --url` reads), picks a built-in scene or takes a dropped .glb/.gltf/.obj (read as
 // `niwa moss grow --mesh` reads it; Draco decoded here by web/mesh/mesh_file.js; not part of the
-// link; a bad file is one line beside the drop control), a preset, the days and the RNG seed, shows the
+// link; a bad file is one line beside the drop control) or another study's land (Land: a Niwa tree
+// with its preset and years, or a Niwa terrain with its preset and seed: state fields, so the link
+// regrows it, grown in the worker through core/compose), a preset, the days and the RNG seed, shows the
 // land tinted by an overlay and every moss as a tuft (moss_renderer.js), and replays the run day
 // by day with the day scrubber and Play (nothing regrows: every moss comes with its birth and
 // death day). Growth runs in the worker (web/worker/moss_handler.js).
@@ -38,6 +40,8 @@ const ui = {
   overlay: $('overlay'), overlayHelp: $('overlay-help'), compare: $('compare'), compareHelp: $('compare-help'), resetView: $('reset-view'), copyLink: $('copy-link'), shareStatus: $('share-status'),
   params: $('params'), play: $('play'), day: $('day'), dayText: $('day-text'), cancel: $('cancel'),
   downloadStats: $('download-stats'), downloadCsv: $('download-csv'), meshFile: $('mesh-file'), meshError: $('mesh-error'),
+  land: $('land'), landHelp: $('land-help'), landTree: $('land-tree'), landTerrain: $('land-terrain'),
+  treePreset: $('tree-preset'), treeYears: $('tree-years'), terrainPreset: $('terrain-preset'), terrainSeed: $('terrain-seed'),
 };
 const chart = new PopulationChart($('population-chart'), $('population-legend'));
 let lastStats = null;  // the stats of the run shown (the downloads' source)
@@ -45,7 +49,10 @@ mountStudyNav($('studies'), 'moss');
 
 const notices = new Notices($('notice'), ['webgl', 'error', 'hash', 'mesh']);
 // Errors beside the controls outside the panel (the panel's rows find their own).
-const BASIC_FIELDS = { scene: 'scene-error', mesh: 'mesh-error', preset: 'preset-error', days: 'days-error', seed: 'rng-seed-error' };
+const BASIC_FIELDS = {
+  scene: 'scene-error', mesh: 'mesh-error', preset: 'preset-error', days: 'days-error', seed: 'rng-seed-error',
+  tree: 'tree-preset-error', tree_years: 'tree-years-error', terrain: 'terrain-preset-error', terrain_seed: 'terrain-seed-error',
+};
 const controller = new StudyController({
   study: 'moss', notices, ui, fields: BASIC_FIELDS, panel: () => panel, state: () => currentState(false),
   onCancel: () => {
@@ -164,15 +171,39 @@ let frameNext = true;
 // The state the worker grows: scene, preset, days, RNG seed and (unless `reset`, which takes the
 // preset's values) every row of the panel.
 function currentState(reset) {
-  return {
-    preset: ui.preset.value, scene: ui.scene.value, days: numberOr(ui.days), seed: numberOr(ui.rngSeed),
-    params: reset ? {} : panel.values(),
+  const land = ui.land.value;
+  const state = {
+    preset: ui.preset.value, scene: land === 'scene' ? ui.scene.value : land, days: numberOr(ui.days), seed: numberOr(ui.rngSeed),
   };
+  if (land === 'tree') Object.assign(state, { tree: ui.treePreset.value.trim(), tree_years: numberOr(ui.treeYears) });
+  if (land === 'terrain') Object.assign(state, { terrain: ui.terrainPreset.value.trim(), terrain_seed: numberOr(ui.terrainSeed) });
+  state.params = reset ? {} : panel.values();
+  return state;
+}
+
+// The Land control: a built-in scene (the scene select), or a Niwa tree or terrain (their fields).
+function showLand() {
+  const land = ui.land.value;
+  ui.landTree.hidden = land !== 'tree';
+  ui.landTerrain.hidden = land !== 'terrain';
+  ui.scene.disabled = land !== 'scene';
+  ui.landHelp.textContent = land === 'tree' ? 'Moss on a grown Niwa tree: its bark (sandy) and a square of humus around its foot.'
+    : land === 'terrain' ? 'Moss on a grown Niwa terrain (metres, y up): a mountain of a few hundred metres, so the photons spread thin.' : '';
 }
 
 function applyState(state) {
   ui.preset.value = state.preset;
-  ui.scene.value = state.scene;
+  if (state.scene === 'tree' || state.scene === 'terrain') {
+    ui.land.value = state.scene;
+    if (state.tree !== undefined) ui.treePreset.value = state.tree;
+    if (state.tree_years !== undefined) ui.treeYears.value = String(state.tree_years);
+    if (state.terrain !== undefined) ui.terrainPreset.value = state.terrain;
+    if (state.terrain_seed !== undefined) ui.terrainSeed.value = String(state.terrain_seed);
+  } else {
+    ui.land.value = 'scene';
+    ui.scene.value = state.scene;
+  }
+  showLand();
   ui.days.value = String(state.days);
   ui.rngSeed.value = String(state.seed);
   panel.setValues(state.params);
@@ -180,7 +211,7 @@ function applyState(state) {
 }
 
 function showHelp() {
-  const scene = scenes.find((s) => s.name === ui.scene.value);
+  const scene = ui.land.value === 'scene' ? scenes.find((s) => s.name === ui.scene.value) : null;
   ui.sceneHelp.textContent = useMesh && meshInfo ? `Growing on the dropped mesh ${meshInfo.name} (${meshInfo.triangles} triangles); pick a scene to go back.`
     : scene ? `${scene.description} (${scene.cells} soil cells)` : '';
   notices.set('mesh', useMesh && meshInfo ? `Growing on the dropped mesh ${meshInfo.name}; a dropped mesh is not part of the link.` : '');
@@ -260,10 +291,12 @@ worker.on('moss', (msg) => {
   controller.showWork(false);
   ui.progress.textContent = '';
   const m = s.mosses;
-  ui.stats.textContent = `${s.scene === 'mesh' ? s.mesh : s.scene || ui.scene.value} · ${lastDay} days · ${m.total} mosses (${m.by_species.gingoke} gingoke, ${m.by_species.haigoke} haigoke, ${m.by_species.sugigoke} sugigoke) · ${m.on_mosses} on mosses · ${msg.bounds.mosses_ever} ever · ${(msg.growMs / 1000).toFixed(1)} s`;
+  const landText = s.scene === 'mesh' ? s.mesh : s.scene === 'tree' ? `tree ${s.tree} (${s.tree_years} years)`
+    : s.scene === 'terrain' ? `terrain ${s.terrain} (seed ${s.terrain_seed})` : s.scene || ui.scene.value;
+  ui.stats.textContent = `${landText} · ${lastDay} days · ${m.total} mosses (${m.by_species.gingoke} gingoke, ${m.by_species.haigoke} haigoke, ${m.by_species.sugigoke} sugigoke) · ${m.on_mosses} on mosses · ${msg.bounds.mosses_ever} ever · ${(msg.growMs / 1000).toFixed(1)} s`;
   setHooks({
     status: 'ready', error: '', mossSerial, mosses: m.total, mossesEver: msg.bounds.mosses_ever, days: lastDay,
-    stats: JSON.stringify(s), statsText: msg.statsText, hash: msg.hash, sceneShown: s.scene === 'mesh' ? `mesh:${s.mesh}` : s.scene, wallMs: msg.wallMs.toFixed(1), growMs: msg.growMs.toFixed(1),
+    stats: JSON.stringify(s), statsText: msg.statsText, hash: msg.hash, sceneShown: s.scene === 'mesh' ? `mesh:${s.mesh}` : s.scene === 'tree' ? `tree:${s.tree}` : s.scene === 'terrain' ? `terrain:${s.terrain}` : s.scene, wallMs: msg.wallMs.toFixed(1), growMs: msg.growMs.toFixed(1),
     buffersReused: msg.bufferCounts?.reused ?? '', buffersFresh: msg.bufferCounts?.fresh ?? '',
   });
   requestFrame();
@@ -393,6 +426,19 @@ ui.scene.addEventListener('change', () => {
   frameNext = true;
   sendUpdate(true);
 });
+ui.land.addEventListener('change', () => {
+  useMesh = false;
+  showLand();
+  showHelp();
+  frameNext = true;
+  sendUpdate(true);
+});
+for (const input of [ui.treePreset, ui.treeYears, ui.terrainPreset, ui.terrainSeed]) {
+  input.addEventListener('input', () => {
+    frameNext = true;
+    scheduleUpdate();
+  });
+}
 ui.preset.addEventListener('change', () => {
   showHelp();
   sendUpdate(true, true);
