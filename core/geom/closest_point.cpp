@@ -18,6 +18,12 @@ struct ClosestQuery {
     *key = detail::BoxDistanceSquared(box, p);
     return *key <= state.best_d2;
   }
+  int Keys(const BvhWideNode& n, int slots, double keys[4]) const {
+    int kept = 0;
+    for (int i = 0; i < slots; ++i)
+      if (Key(n.ChildBounds(i), &keys[i])) kept |= 1 << i;
+    return kept;
+  }
   void Test(const glm::vec3* abc, uint32_t t) { state.Test(abc, p, t); }
 };
 

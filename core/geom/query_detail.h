@@ -16,6 +16,7 @@
 #include "geom/ray_cast.h"
 #include "geom/tri_mesh.h"
 #include "geom/triangle_queries.h"
+#include "math/simd4.h"
 
 namespace niwa::geom::detail {
 
@@ -158,7 +159,7 @@ struct RayState {
       hit = true;
     }
   }
-  RayHit Result(const TriMesh& mesh, const PreparedRay& ray) const {
+  RayHit Result(const TriMesh& mesh, const PreparedRay& ray, bool normal = true) const {
     RayHit h;
     if (!hit) return h;
     h.hit = true;
@@ -167,6 +168,7 @@ struct RayState {
     h.triangle = best_tri;
     h.barycentric = glm::vec3(static_cast<float>(1.0 - best_u - best_v), static_cast<float>(best_u),
                               static_cast<float>(best_v));
+    if (!normal) return h;
     DVec3 a, b, c;
     Corners(mesh, best_tri, &a, &b, &c);
     DVec3 n = Cross(Sub(b, a), Sub(c, a));
@@ -221,12 +223,66 @@ inline bool RayBox(const Bounds3& b, const PreparedRay& r, double t_max, double*
   return true;
 }
 
+// RayBox of each of a wide node's first `count` child boxes (ChildBounds) at once, the very IEEE
+// operations of the scalar test lane by lane (math/simd4.h), so the keys are its bits: the boxes
+// decoded in four float lanes, the slabs in two double lanes. Without NaNs (finite boxes, and a
+// direction from floats, so a finite inverse) the scalar test's early outs only stop it sooner:
+// lo never falls and hi never rises, so a box missed on one axis is missed after all three.
+// Returns a bit per kept slot (empty slots too: the caller masks them); keys[k] its slab entry.
+inline int WideRayKeys(const BvhWideNode& n, const PreparedRay& r, double t_max, double keys[4]) {
+  using simd::Double2;
+  using simd::Float4;
+  using simd::Long2;
+  const double o[3] = {r.origin.x, r.origin.y, r.origin.z};
+  const double d[3] = {r.dir.x, r.dir.y, r.dir.z};
+  const double inv[3] = {r.inv.x, r.inv.y, r.inv.z};
+  Double2 lo[2] = {simd::Splat2(0.0), simd::Splat2(0.0)};
+  Double2 hi[2] = {simd::Splat2(t_max), simd::Splat2(t_max)};
+  Long2 miss[2] = {Long2{0, 0}, Long2{0, 0}};
+  for (int a = 0; a < 3; ++a) {
+    const Float4 step = simd::Splat4(BvhWideNode::Step(n.exponent[a]));
+    const Float4 origin = simd::Splat4(n.origin[a]);
+    const Float4 qlo{static_cast<float>(n.lo[a][0]), static_cast<float>(n.lo[a][1]),
+                     static_cast<float>(n.lo[a][2]), static_cast<float>(n.lo[a][3])};
+    const Float4 qhi{static_cast<float>(n.hi[a][0]), static_cast<float>(n.hi[a][1]),
+                     static_cast<float>(n.hi[a][2]), static_cast<float>(n.hi[a][3])};
+    const Float4 blo = origin + qlo * step, bhi = origin + qhi * step;  // BvhWideNode::Decode
+    const Double2 oa = simd::Splat2(o[a]), ia = simd::Splat2(inv[a]);
+    for (int h = 0; h < 2; ++h) {
+      const Double2 bmin{static_cast<double>(blo[2 * h]), static_cast<double>(blo[2 * h + 1])};
+      const Double2 bmax{static_cast<double>(bhi[2 * h]), static_cast<double>(bhi[2 * h + 1])};
+      if (d[a] == 0.0) {  // parallel to this slab: inside it or never
+        miss[h] |= (oa < bmin) | (oa > bmax);
+        continue;
+      }
+      const Double2 t1 = (bmin - oa) * ia, t2 = (bmax - oa) * ia;
+      const Long2 swap = t1 > t2;
+      const Double2 t_in = simd::Select(swap, t2, t1), t_out = simd::Select(swap, t1, t2);
+      lo[h] = simd::Select(lo[h] < t_in, t_in, lo[h]);     // std::max(lo, t1)
+      hi[h] = simd::Select(t_out < hi[h], t_out, hi[h]);   // std::min(hi, t2)
+    }
+  }
+  int kept = 0;
+  for (int h = 0; h < 2; ++h) {
+    const Long2 out = miss[h] | (lo[h] > hi[h]);
+    for (int j = 0; j < 2; ++j) {
+      const int k = 2 * h + j;
+      if (out[j] == 0) {
+        keys[k] = lo[h][j];
+        kept |= 1 << k;
+      }
+    }
+  }
+  return kept;
+}
+
 // The nearest-first depth-first walk that ClosestPoint and FirstHit share. From the root (pushed
 // with root_key), it pops an entry, skips it when its key is beyond query.Bound() (the best got
 // closer since it was pushed; ties kept), tests a leaf's triangles with
 // query.Test(corners of slot i, order()[i]), and for a wide node keys each child with
 // query.Key(box, &key) (false: pruned), pushes the kept ones farthest first (so the nearest, or
-// the leftmost on equal keys, is searched first) and prefetches them. Counts into *visited (boxes
+// the leftmost on equal keys, is searched first) and prefetches them. query.Keys(node, slots, keys)
+// keys a node's first `slots` children at once (a bit per kept one). Counts into *visited (boxes
 // tested, the root's included) and *tested (triangles).
 template <typename Query>
 void NearestFirstWalk(const Bvh& bvh, double root_key, Query& query, uint64_t* visited,
@@ -249,11 +305,13 @@ void NearestFirstWalk(const Bvh& bvh, double root_key, Query& query, uint64_t* v
     const BvhWideNode& n = wide[e.index];
     WideEntry kids[4];
     int k = 0;
-    for (int i = 0; i < 4 && n.count[i] != BvhWideNode::kEmpty; ++i) {
-      ++*visited;
-      double key;
-      if (query.Key(n.ChildBounds(i), &key)) kids[k++] = {n.child[i], n.count[i], key};
-    }
+    int slots = 0;
+    while (slots < 4 && n.count[slots] != BvhWideNode::kEmpty) ++slots;
+    *visited += static_cast<uint64_t>(slots);
+    double keys[4];
+    const int kept = query.Keys(n, slots, keys);
+    for (int i = 0; i < slots; ++i)
+      if (kept & (1 << i)) kids[k++] = {n.child[i], n.count[i], keys[i]};
     SortDescending(kids, k);
     for (int i = 0; i < k; ++i) {
       Prefetch(kids[i], wide, corners);

@@ -9,21 +9,20 @@ namespace niwa::geom {
 
 namespace {
 
-// RayState as NearestFirstWalk's query: keys are slab entry distances along the ray.
+// RayState as NearestFirstWalk's query: keys are slab entry distances along the ray (RayBox's,
+// four children at once: detail::WideRayKeys).
 struct FirstHitQuery {
   detail::RayState state;
   detail::PreparedRay ray;
   double Bound() const { return state.best_t; }
-  bool Key(const Bounds3& box, double* key) const {
-    return detail::RayBox(box, ray, state.best_t, key);
+  int Keys(const BvhWideNode& n, int /*slots*/, double keys[4]) const {
+    return detail::WideRayKeys(n, ray, state.best_t, keys);
   }
   void Test(const glm::vec3* abc, uint32_t t) { state.Test(abc, ray, t); }
 };
 
-}  // namespace
-
-RayHit FirstHit(const TriMesh& mesh, const Bvh& bvh, glm::vec3 origin, glm::vec3 dir,
-                float max_distance, QueryStats* stats) {
+RayHit FirstHitOf(const TriMesh& mesh, const Bvh& bvh, glm::vec3 origin, glm::vec3 dir,
+                  float max_distance, QueryStats* stats, bool normal) {
   if (stats) ++stats->queries;
   if (!(max_distance >= 0.0f) || bvh.empty() || bvh.triangle_count() != mesh.triangle_count())
     return {};
@@ -38,7 +37,19 @@ RayHit FirstHit(const TriMesh& mesh, const Bvh& bvh, glm::vec3 origin, glm::vec3
     stats->nodes_visited += visited;
     stats->triangles_tested += tested;
   }
-  return query.state.Result(mesh, query.ray);
+  return query.state.Result(mesh, query.ray, normal);
+}
+
+}  // namespace
+
+RayHit FirstHit(const TriMesh& mesh, const Bvh& bvh, glm::vec3 origin, glm::vec3 dir,
+                float max_distance, QueryStats* stats) {
+  return FirstHitOf(mesh, bvh, origin, dir, max_distance, stats, true);
+}
+
+RayHit FirstHitWithoutNormal(const TriMesh& mesh, const Bvh& bvh, glm::vec3 origin, glm::vec3 dir,
+                             float max_distance, QueryStats* stats) {
+  return FirstHitOf(mesh, bvh, origin, dir, max_distance, stats, false);
 }
 
 bool SegmentHits(const TriMesh& mesh, const Bvh& bvh, glm::vec3 a, glm::vec3 b, QueryStats* stats) {

@@ -28,6 +28,12 @@ struct RayHit {
 RayHit FirstHit(const TriMesh& mesh, const Bvh& bvh, glm::vec3 origin, glm::vec3 dir,
                 float max_distance, QueryStats* stats = nullptr);
 
+// FirstHit without the normal (left zero): the same hit, distance, point, triangle and
+// barycentrics, without reading the winning triangle's corners from the mesh again (callers that
+// keep their own per-triangle normals: the moss photons).
+RayHit FirstHitWithoutNormal(const TriMesh& mesh, const Bvh& bvh, glm::vec3 origin, glm::vec3 dir,
+                             float max_distance, QueryStats* stats = nullptr);
+
 // Does the closed segment a→b touch any triangle (a + t (b - a), t in [0, 1], edges and vertices
 // included: watertight on shared edges)? a == b hits nothing. Stops at the first hit found.
 bool SegmentHits(const TriMesh& mesh, const Bvh& bvh, glm::vec3 a, glm::vec3 b,

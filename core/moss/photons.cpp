@@ -290,8 +290,8 @@ void TracePhotons(const SoilCells& cells, const MossOccluders& mosses, const Pho
     }
     for (int depth = 0;; ++depth) {
       const geom::RayHit hit =
-          geom::FirstHit(cells.mesh, cells.bvh, glm::vec3(origin), glm::vec3(dir),
-                         std::numeric_limits<float>::infinity());
+          geom::FirstHitWithoutNormal(cells.mesh, cells.bvh, glm::vec3(origin), glm::vec3(dir),
+                                      std::numeric_limits<float>::infinity());
       double t_moss = 0;
       uint32_t moss = 0;
       const double t_mesh =

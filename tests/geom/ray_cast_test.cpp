@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "geom/linear_queries.h"
@@ -91,6 +92,29 @@ TEST(RayCast, BvhEqualsLinearOnThousandsOfQueries) {
     EXPECT_GT(counts.segment_hits, 300);
     EXPECT_LT(counts.segment_hits, 3000);
   }
+}
+
+// FirstHitWithoutNormal is FirstHit's hit bit for bit, only the normal left zero.
+TEST(RayCast, WithoutNormalIsTheSameHit) {
+  const TriMesh m = Subdivide(MakeBox({2, 1, 3}), 3);
+  const Bvh bvh = Bvh::Build(m);
+  int hits = 0;
+  for (int i = 0; i < 400; ++i) {
+    const float a = 0.05f * static_cast<float>(i), b = 0.031f * static_cast<float>(i);
+    const glm::vec3 o(3.0f * std::cos(a), 0.4f * std::sin(b), 3.0f * std::sin(a));
+    const glm::vec3 d = glm::vec3(0.1f * std::sin(b), -0.05f, 0.2f * std::cos(b)) - o;
+    const RayHit h = FirstHit(m, bvh, o, d, 1e6f);
+    const RayHit w = FirstHitWithoutNormal(m, bvh, o, d, 1e6f);
+    ASSERT_EQ(h.hit, w.hit);
+    if (!h.hit) continue;
+    ++hits;
+    EXPECT_EQ(h.triangle, w.triangle);
+    EXPECT_EQ(std::memcmp(&h.distance, &w.distance, sizeof(float)), 0);
+    EXPECT_EQ(std::memcmp(&h.point, &w.point, sizeof(glm::vec3)), 0);
+    EXPECT_EQ(std::memcmp(&h.barycentric, &w.barycentric, sizeof(glm::vec3)), 0);
+    EXPECT_EQ(w.normal, glm::vec3(0.0f));
+  }
+  EXPECT_GT(hits, 300);
 }
 
 TEST(RayCast, StatsCountQueries) {
