@@ -16,8 +16,9 @@
 // right with the same camera, day and overlay): the same state with indirect light switched, or at
 // the other of fig 4.3's temperatures (288.15 / 293.15 K), on the scene or the dropped mesh (the
 // file's bytes go to the worker once, transferred; run B's lab shares the mesh run A's lab read).
-// Does not: parse or check states (the core does; its one line is shown beside its field),
-// export (.glb, moss.json), or draw directly.
+// The Moss .glb and Moss .json downloads are the worker's run's own bytes (MossLab.build: the
+// bytes of `niwa moss grow --url HASH --out`). Does not: parse or check states (the core does; its
+// one line is shown beside its field), build the exports' bytes itself, or draw directly.
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { Frame } from '../gl/frame.js';
 import { OrbitCamera } from '../gl/orbit_camera.js';

@@ -1,5 +1,6 @@
 // The moss study's worker handler (Nomura 2010): one MossLab (web/bindings/moss_bindings.cpp) per
-// client holds the last run. An 'update' grows the state ({preset, scene, days, seed, params})
+// client holds the last run. An 'update' grows the state ({preset, scene, days, seed, params, and
+// for scene tree or terrain the land's fields tree, tree_years, terrain, terrain_seed})
 // to its days, posting progress after every day (at most every 100 ms), then sends the stats (the
 // CLI's `niwa moss grow --stats`, parsed, and its text as statsText), the resolved state and hash,
 // the bounds, and buffer groups:
