@@ -34,6 +34,16 @@ struct Scored {
   nlohmann::ordered_json parts;
 };
 
+// `state`'s run with `seed`, grown through all its cycles (one candidate's run at one seed).
+Result<BarkRun> GrownWithSeed(const BarkState& state, uint64_t seed, const Budget& budget) {
+  BarkState s = state;
+  s.seed = seed;
+  Result<BarkRun> run = BarkRun::Start(s, budget);
+  if (!run.ok()) return run.status();
+  NIWA_RETURN_IF_ERROR(run->Advance({}));
+  return run;
+}
+
 // The 2-layer measures over the seeds and their deviations from the paper's row.
 Result<Scored> ScoreTwoLayer(const BarkState& state, const CalibrateRequest& r,
                              const Budget& budget) {
@@ -43,11 +53,8 @@ Result<Scored> ScoreTwoLayer(const BarkState& state, const CalibrateRequest& r,
   int strips = 0;
   const double n = static_cast<double>(r.last_seed - r.first_seed + 1);
   for (uint64_t seed = r.first_seed; seed <= r.last_seed; ++seed) {
-    BarkState s = state;
-    s.seed = seed;
-    Result<BarkRun> run = BarkRun::Start(s, budget);
+    Result<BarkRun> run = GrownWithSeed(state, seed, budget);
     if (!run.ok()) return run.status();
-    NIWA_RETURN_IF_ERROR(run->Advance({}));
     const CrackMeasures& c = run->cracks();
     mean_w += c.mean_width / n;
     mean_h += c.mean_height / n;
@@ -94,11 +101,8 @@ Result<Scored> ScoreFourLayer(const BarkState& state, const CalibrateRequest& r,
   int counted = 0;
   const double n = static_cast<double>(r.last_seed - r.first_seed + 1);
   for (uint64_t seed = r.first_seed; seed <= r.last_seed; ++seed) {
-    BarkState s = state;
-    s.seed = seed;
-    Result<BarkRun> run = BarkRun::Start(s, budget);
+    Result<BarkRun> run = GrownWithSeed(state, seed, budget);
     if (!run.ok()) return run.status();
-    NIWA_RETURN_IF_ERROR(run->Advance({}));
     const std::vector<BarkSample>& rows = run->samples();
     int bonds_before = 0;
     for (int c = 0; c < cycles; ++c) {

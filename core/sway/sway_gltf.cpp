@@ -238,9 +238,10 @@ namespace {
 
 // The clustered skin of WriteSwayGlb (SwayClusters): one joint a representative, every vertex on
 // its node point's group with weight 1, and the clip's keys; the errors against eq. 3.15 into info.
-void ClusteredSkin(const Tree& tree, const SwayParams& params, const SwayGlbOptions& options,
-                   const TreeSkin& skin, GltfSkinning* out, SwayGlbInfo* info) {
-  SwaySimulator sim(tree, params);
+// `sim` is WriteSwayGlb's simulator, not yet stepped.
+void ClusteredSkin(SwaySimulator& sim, const Tree& tree, const SwayParams& params,
+                   const SwayGlbOptions& options, const TreeSkin& skin, GltfSkinning* out,
+                   SwayGlbInfo* info) {
   const SwayModel& model = sim.model();
   const std::size_t n = model.nodes.size();
   const VertexSkin* parts[3] = {&skin.bark, &skin.leaves, &skin.flowers};
@@ -347,7 +348,7 @@ Status WriteSwayGlb(const Tree& tree, const SwayParams& params, const SwayGlbOpt
   out.attributes[2] = WindAttributes(tree, levels, mesh.flower_branch_id, mesh.flower_node_index);
   if (joints.count > options.max_joints) {
     info->clustered = true;
-    ClusteredSkin(tree, params, options, skin, &out, info);
+    ClusteredSkin(sim, tree, params, options, skin, &out, info);
     info->joints = out.joints.size();
   } else {
     info->joints = joints.count;
