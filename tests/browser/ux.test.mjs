@@ -299,6 +299,20 @@ await runBrowserTest(async (server, browser) => {
   await andWait(page, () => page.fill('#param-D_high', '1'));
   const middle = await page.evaluate(() => document.getElementById('param-D_high').closest('.field').querySelector('.slider').value);
   check('... and a typed 1 cm puts that slider in its middle', middle === '500', `position ${middle}`);
+  // Getting started's Shoot length is the same row: its slider takes the row's mapping too
+  // (web/shell/slider_scale.js; it was linear, issue 32), both ways.
+  const simpleShoot = await page.evaluate(() => {
+    const range = document.querySelector('.getting-started [data-for-key="D_high"] .slider');
+    const number = document.querySelector('.getting-started [data-for-key="D_high"] input[type=number]');
+    const at1cm = { min: range.min, max: range.max, position: range.value, number: number.value };
+    range.value = '750';
+    range.dispatchEvent(new Event('input', { bubbles: true }));
+    return { at1cm, number: number.value, row: document.getElementById('param-D_high').value,
+      rowSlider: document.getElementById('param-D_high').closest('.field').querySelector('.slider').value };
+  });
+  check('Getting started\'s Shoot length slider is logarithmic as the table\'s: 1 cm in its middle, position 750 is 10 cm in both',
+    simpleShoot.at1cm.min === '0' && simpleShoot.at1cm.max === '1000' && simpleShoot.at1cm.position === '500' && simpleShoot.at1cm.number === '1'
+    && simpleShoot.number === '10' && simpleShoot.row === '10' && simpleShoot.rowSlider === '750', JSON.stringify(simpleShoot));
   await andWait(page, () => page.fill('#param-D_high', '3'));
   await snapshotCanvas(page, 'rest');
   await page.click('#wind');

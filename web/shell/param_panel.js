@@ -4,7 +4,10 @@
 // aria-describedby, shown under the row while any of its controls has focus (keyboard or tap).
 // Each edit reports the row's `stage` (grow | mesh | sway | view) so the page reruns only what the
 // edit invalidates.
+// Each slider's mapping (linear, or logarithmic over several decades) is the table row's range's
+// (web/shell/slider_scale.js).
 // Does not: validate values (the core does and its error line is shown), or send anything.
+import { sliderScale } from './slider_scale.js';
 
 // A readable title when a table has no group_title (older WASM builds).
 function groupTitle(spec) {
@@ -15,30 +18,7 @@ function groupTitle(spec) {
 // The row's stage; rows without one are growth rows (an edit regrows: always correct, if slow).
 export const stageOf = (spec) => (['grow', 'mesh', 'sway', 'view'].includes(spec?.stage) ? spec.stage : 'grow');
 
-// Slider step: 1 for whole numbers, else a power of ten about a thousandth of the range.
-export function stepOf(spec) {
-  if (spec.integer) return 1;
-  const range = spec.max - spec.min;
-  return range > 0 ? 10 ** (Math.floor(Math.log10(range)) - 3) : 'any';
-}
-
 const isFlag = (spec) => spec.integer && spec.min === 0 && spec.max === 1 && !spec.unit;
-
-// A row whose range spans three decades or more (shoot length 0.01-100 cm, dt 0.0001-0.1 s) gets a
-// logarithmic slider: a linear one put all of 0.01-1 in its first pixel. Positions 0..LOG_STEPS
-// map to min·(max/min)^(p/LOG_STEPS), three significant digits; the number field stays exact.
-const LOG_STEPS = 1000;
-export const isLogRow = (spec) => !spec.integer && spec.min > 0 && spec.max / spec.min >= 1000;
-export function logSliderValue(spec, position) {
-  const v = spec.min * (spec.max / spec.min) ** (Number(position) / LOG_STEPS);
-  return Math.min(spec.max, Math.max(spec.min, Number(v.toPrecision(3))));
-}
-export function logSliderPosition(spec, value) {
-  const v = Number(value);
-  if (!(v > 0)) return 0;
-  const p = Math.round((LOG_STEPS * Math.log(v / spec.min)) / Math.log(spec.max / spec.min));
-  return Math.min(LOG_STEPS, Math.max(0, p));
-}
 
 function el(tag, attrs = {}, text) {
   const node = document.createElement(tag);
@@ -94,22 +74,24 @@ export class ParamPanel {
       return row;
     }
 
-    const log = isLogRow(spec);
+    const scale = sliderScale(spec);
     const range = el('input', {
-      type: 'range', min: log ? 0 : spec.min, max: log ? LOG_STEPS : spec.max, step: log ? 1 : stepOf(spec),
-      tabindex: '-1', 'aria-hidden': 'true', class: log ? 'slider log' : 'slider',
+      type: 'range', ...scale.attrs, tabindex: '-1', 'aria-hidden': 'true', class: scale.log ? 'slider log' : 'slider',
     });
-    const toRange = (v) => String(log ? logSliderPosition(spec, v) : v);
+    const toRange = (v) => {
+      const p = scale.position(v);
+      if (p !== null) range.value = p;
+    };
     const number = el('input', {
       id, type: 'number', min: spec.min, max: spec.max, step: spec.integer ? 1 : 'any',
       inputmode: spec.integer ? 'numeric' : 'decimal', 'aria-describedby': helpId, 'data-key': spec.key,
     });
     range.addEventListener('input', () => {
-      number.value = log ? String(logSliderValue(spec, range.value)) : range.value;
+      number.value = scale.value(range.value);
       onChange();
     });
     number.addEventListener('input', () => {
-      if (number.value !== '' && Number.isFinite(Number(number.value))) range.value = toRange(number.value);
+      toRange(number.value);
       onChange();
     });
     const controls = el('div', { class: 'controls' });
@@ -119,7 +101,7 @@ export class ParamPanel {
       spec,
       // Valid numbers go as numbers, anything else as text: the core checks both and says what is wrong.
       read: () => (number.value.trim() !== '' && Number.isFinite(Number(number.value)) ? Number(number.value) : number.value),
-      write: (v) => { number.value = String(v); range.value = toRange(v); },
+      write: (v) => { number.value = String(v); toRange(v); },
       setInvalid: (bad) => { number.setAttribute('aria-invalid', bad ? 'true' : 'false'); },
     });
     return row;

@@ -4,8 +4,10 @@
 // adds them from core/tree/tree_simple.cpp), plus Age, which is the state's Years field.
 // Each control writes its table row's field (or Years) and fires that field's own input event, so
 // an edit here is exactly an edit of the row; the full table below keeps the thesis's names.
+// Each slider maps its row's range as the full table's slider of the row does (web/shell/slider_scale.js:
+// Shoot length, 0.01-100 cm, is logarithmic in both).
 // Does not: hold a list of parameters, check values, or send anything itself.
-import { stepOf } from '../shell/param_panel.js';
+import { sliderScale } from '../shell/slider_scale.js';
 
 function el(tag, attrs = {}, text) {
   const node = document.createElement(tag);
@@ -34,14 +36,14 @@ export class GettingStarted {
     box.append(intro);
     const group = el('div', { class: 'simple-controls', role: 'group', 'aria-label': 'Main controls' });
     group.append(this.#control({
-      key: 'years', label: 'Age', unit: 'years', min: Number(years.min), max: Number(years.max), step: 1,
+      key: 'years', label: 'Age', unit: 'years', range: { min: Number(years.min), max: Number(years.max), integer: true },
       help: 'How many years the tree has grown.', target: years, row: 'Years',
     }));
     for (const spec of simpleRows(paramTable)) {
       const target = document.getElementById(`param-${spec.key}`);
       if (!target) continue;
       group.append(this.#control({
-        key: spec.key, label: spec.simple, unit: spec.unit, min: spec.min, max: spec.max, step: stepOf(spec),
+        key: spec.key, label: spec.simple, unit: spec.unit, range: spec,
         help: spec.simple_help || spec.help, target,
         row: [spec.key, spec.symbol].filter(Boolean).join(', '), openRow: () => openRow(spec.key),
       }));
@@ -53,26 +55,31 @@ export class GettingStarted {
     this.root = box;
   }
 
-  #control({ key, label, unit, min, max, step, help, target, row, openRow }) {
+  #control({ key, label, unit, range: spec, help, target, row, openRow }) {
+    const scale = sliderScale(spec);
     const id = `simple-${key}`;
     const wrap = el('div', { class: 'simple', 'data-for-key': key });
     const head = el('label', { for: id });
     head.append(el('span', { class: 'simple-name' }, label));
     if (unit) head.append(el('span', { class: 'symbol' }, ` (${unit})`));
     const helpId = `simple-help-${key}`;
-    const range = el('input', { type: 'range', min, max, step, tabindex: '-1', 'aria-hidden': 'true', class: 'slider' });
-    const number = el('input', { id, type: 'number', min, max, step: 'any', 'aria-describedby': helpId,
-      inputmode: step === 1 ? 'numeric' : 'decimal' });
+    const range = el('input', { type: 'range', ...scale.attrs, tabindex: '-1', 'aria-hidden': 'true', class: scale.log ? 'slider log' : 'slider' });
+    const number = el('input', { id, type: 'number', min: spec.min, max: spec.max, step: 'any', 'aria-describedby': helpId,
+      inputmode: spec.integer ? 'numeric' : 'decimal' });
+    const toRange = (v) => {
+      const p = scale.position(v);
+      if (p !== null) range.value = p;
+    };
     const write = (value) => {
       target.value = value;
       target.dispatchEvent(new Event('input', { bubbles: true }));
     };
     range.addEventListener('input', () => {
-      number.value = range.value;
-      write(range.value);
+      number.value = scale.value(range.value);
+      write(number.value);
     });
     number.addEventListener('input', () => {
-      if (number.value !== '' && Number.isFinite(Number(number.value))) range.value = number.value;
+      toRange(number.value);
       write(number.value);
     });
     const controls = el('div', { class: 'controls' });
@@ -86,7 +93,7 @@ export class GettingStarted {
       text.append(` (the ${row} field below)`);
     }
     wrap.append(head, controls, text);
-    this.controls.push({ key, target, range, number });
+    this.controls.push({ key, target, range, number, toRange });
     return wrap;
   }
 
@@ -95,7 +102,7 @@ export class GettingStarted {
     for (const c of this.controls) {
       if (document.activeElement === c.number) continue;  // the user is typing here
       c.number.value = c.target.value;
-      if (c.target.value !== '' && Number.isFinite(Number(c.target.value))) c.range.value = c.target.value;
+      c.toRange(c.target.value);
     }
   }
 }
