@@ -23,6 +23,7 @@ import { ExportGuard, cutRefusal } from './cut_rules.js';
 import { EditFeedback } from './edit_feedback.js';
 import { GettingStarted } from './getting_started.js';
 import { RenderTable } from './render_table.js';
+import { PhoneDock } from './phone_dock.js';
 import { mountStateFile } from './state_file.js';
 import { exportRefusals, mountExportPanel } from './export_panel.js';
 import { Renderer } from './tree_renderer.js';
@@ -44,6 +45,11 @@ mountStudyNav($('studies'), 'tree');
 const feedback = new EditFeedback(ui.canvas.closest('.stage'), { seed: ui.seed, years: ui.years, preset: ui.preset });
 const exportGuard = new ExportGuard(ui.downloadGlb);
 let gettingStarted = null;  // the Getting started controls (built with the panel)
+// On a phone the controls used most sit under the view (Age joins once Getting started is built).
+const dock = new PhoneDock($('dock'))
+  .add('preset', document.querySelector('label[for="preset"]'), ui.preset)
+  .add('buttons', ui.wind, ui.cut, ui.undo, ui.redo)
+  .add('selection', ui.selection);
 
 // webgl: drawing problems; error: the core's line for the current state; hash: from decoding the
 // URL hash; prunes: prunes of the current state that cut nothing (from the grown tree).
@@ -430,6 +436,7 @@ worker.on('ready', (msg) => {
     scheduleUpdate(stage);
   });
   gettingStarted = new GettingStarted($('getting-started'), msg.paramTable, ui.years, openTableRow);
+  dock.add('age', $('getting-started').querySelector('[data-for-key="years"]'));
   applyState(msg.decoded.state);
   ui.bark.value = msg.decoded.bark === 'sim' ? 'sim' : 'procedural';
   notices.set('hash', msg.decoded.notices);
