@@ -65,6 +65,28 @@ await runBrowserTest(async (server, browser) => {
   await page.locator('#view').screenshot({ path: path.join(ARTIFACTS, 'render-full.png') });
   const full = await timeFrames(page, 'timedFull');
   const fullCells = await cell(page, 'data-full');
+  // Time 10 frames is its own Cancel while it runs (issue 32: a full frame of a big tree takes
+  // seconds on a CPU GL): pressed again two animation frames in, it stops with the frames it timed.
+  const cancelled = await page.evaluate(() => new Promise((resolve) => {
+    const button = document.getElementById('time-frames');
+    button.click();
+    const running = button.textContent;
+    requestAnimationFrame(() => requestAnimationFrame(() => {
+      button.click();
+      const cancelling = button.textContent;
+      new MutationObserver((_, observer) => {
+        const d = document.documentElement.dataset;
+        if (d.timing === 'running') return;
+        observer.disconnect();
+        resolve({ running, cancelling, timing: d.timing, frames: d.timedFrames, after: button.textContent,
+          cell: document.querySelector('#render-table [data-full="timed_ms"]').textContent });
+      }).observe(document.documentElement, { attributes: true, attributeFilter: ['data-timing'] });
+    }));
+  }));
+  check('Time 10 frames: pressed again while it runs, it cancels (the frames timed so far shown)',
+    cancelled.running === 'Cancel timing' && cancelled.cancelling === 'Cancelling…' && cancelled.timing === 'cancelled'
+    && Number(cancelled.frames) < 10 && cancelled.after === 'Time 10 frames' && /cancelled|of 10\)$/.test(cancelled.cell),
+    JSON.stringify(cancelled));
 
   // ---- hybrid, switched in the panel: the URL keeps it, the camera stays
   const serial = Number((await root(page)).treeSerial);

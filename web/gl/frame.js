@@ -212,18 +212,26 @@ export class Frame {
   // Frame time with the GPU's work included: draws `frames` whole frames, each followed by reading
   // one pixel back (which returns only once the frame is finished), and resolves to the median and
   // what a frame draws. One animation frame between draws keeps the page responsive.
-  async timeFrames(frames = 10) {
+  // cancelled(): asked before each frame; once true the timing stops and resolves to the frames
+  // timed so far ({cancelled: true}, ms null when none was) — a frame of a big tree on a CPU GL
+  // takes seconds, so a timing button is its own Cancel (issue 32).
+  async timeFrames(frames = 10, { cancelled = () => false } = {}) {
     const times = [];
     let drawn = null;
+    let stopped = false;
     for (let i = 0; i <= frames; ++i) {
       await new Promise((resolve) => requestAnimationFrame(resolve));
+      if (cancelled()) {
+        stopped = true;
+        break;
+      }
       const start = performance.now();
       drawn = this.render();
       finishGpu(this.gl);
       if (i > 0) times.push(performance.now() - start);  // the first is a warm-up
     }
     times.sort((a, b) => a - b);
-    return { ms: times[Math.floor(times.length / 2)], frames, ...drawn };
+    return { ...drawn, ms: times.length ? times[Math.floor(times.length / 2)] : null, frames: times.length, cancelled: stopped };
   }
 
   // Asks for a frame (several requests before it runs make one): the page's loop, or the frame's own.

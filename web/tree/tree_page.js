@@ -741,17 +741,37 @@ function setWind(play) {
 ui.wind.addEventListener('click', () => setWind(!windPlaying));
 
 // Frame time of this view with the GPU's work included (the "frame (CPU)" row is only the CPU time
-// of issuing the draw calls), into the column of the mode shown.
+// of issuing the draw calls), into the column of the mode shown. While it runs the button is its
+// Cancel (a full frame of a big tree takes seconds on a CPU GL; issue 32: every long button has
+// Cancel); a cancelled timing shows the median of the frames it timed.
+let timing = null;  // {cancelled} while a timing runs
 ui.timeFrames.addEventListener('click', async () => {
-  if (!renderer || ui.timeFrames.disabled) return;
-  ui.timeFrames.disabled = true;
+  if (timing) {
+    timing.cancelled = true;
+    ui.timeFrames.textContent = 'Cancelling…';
+    return;
+  }
+  if (!renderer) return;
+  const label = ui.timeFrames.textContent;
+  const run = { cancelled: false };
+  timing = run;
+  ui.timeFrames.textContent = 'Cancel timing';
+  setHooks({ timing: 'running' });
   try {
-    const timed = await frame.timeFrames(10);
-    table.set(timed.mode === 'hybrid' ? 'row' : 'full', 'timed_ms', `${timed.ms.toFixed(1)} ms`);
-    setHooks({ [timed.mode === 'hybrid' ? 'timedHybrid' : 'timedFull']:
-      JSON.stringify({ ms: timed.ms, triangles: timed.triangles, lines: timed.lines, drawCalls: timed.drawCalls }) });
+    const timed = await frame.timeFrames(10, { cancelled: () => run.cancelled });
+    const column = timed.mode === 'hybrid' ? 'row' : 'full';
+    if (timed.ms === null) {
+      table.set(column, 'timed_ms', 'cancelled');
+    } else {
+      table.set(column, 'timed_ms', `${timed.ms.toFixed(1)} ms${timed.cancelled ? ` (${timed.frames} of 10)` : ''}`);
+      setHooks({ [timed.mode === 'hybrid' ? 'timedHybrid' : 'timedFull']:
+        JSON.stringify({ ms: timed.ms, triangles: timed.triangles, lines: timed.lines, drawCalls: timed.drawCalls, frames: timed.frames }) });
+    }
+    setHooks({ timing: timed.cancelled ? 'cancelled' : 'done', timedFrames: timed.frames });
   } finally {
-    ui.timeFrames.disabled = false;
+    timing = null;
+    ui.timeFrames.textContent = label;
+    requestFrame();
   }
 });
 
