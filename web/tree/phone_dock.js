@@ -40,8 +40,10 @@ export class PhoneDock {
   apply() {
     const docked = this.media.matches;
     for (const { element, mark, slot } of this.items) {
-      if (docked) this.dock.querySelector(`[data-dock-slot="${slot}"]`)?.append(element);
-      else mark.after(element);
+      // (an element already in its place stays put: a move would take its focus away)
+      const home = docked ? this.dock.querySelector(`[data-dock-slot="${slot}"]`) : null;
+      if (docked && home && element.parentElement !== home) home.append(element);
+      else if (!docked && element.previousSibling !== mark) mark.after(element);
     }
     this.dock.hidden = !docked || this.items.length === 0;
     setHooks({ docked: docked ? 1 : 0 });  // tests
