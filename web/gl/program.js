@@ -1,7 +1,7 @@
 // GLSL programs: fetches shader files and resolves `#include "file"` lines (relative to the file
 // that includes them, each file inserted once per shader, cycles refused), then compiles and links.
-// loadPrograms compiles and links every program of a renderer at once and, with
-// KHR_parallel_shader_compile, waits for them without blocking (issue 16: on SwiftShader a status
+// loadPrograms compiles and links every program of a renderer at once and waits for them without
+// blocking (KHR_parallel_shader_compile, else a fence; issue 16: on SwiftShader a status
 // query right after compiling held the main thread 100-350 ms a shader, and the compile held the
 // GPU process, so the page's first clicks waited up to 1.8 s for a frame).
 // Does not: know any study's shaders, cache programs across contexts, or preprocess anything but
@@ -104,24 +104,38 @@ export function link(gl, vertexSource, fragmentSource, name) {
 }
 
 // Resolves once every program of `started` has finished linking: polled every `ms` through
-// KHR_parallel_shader_compile's COMPLETION_STATUS_KHR (which never blocks); at once without the
-// extension (the status queries then wait, as before).
+// KHR_parallel_shader_compile's COMPLETION_STATUS_KHR (which never blocks). Without the extension
+// (SwiftShader has none) a fence after the links is polled instead (gl.getSyncParameter never
+// blocks either): the GPU process compiles and links the programs while the page goes on, and the
+// status queries that follow wait only for what is left of a link (ANGLE may finish one after the
+// fence: in two instrumented loads of the tree page the ground's query then took 2 ms once, 1.3 s
+// after a 1.1 s fence the other time, on a machine loaded 24 on 2 cores). Reading LINK_STATUS at
+// once waited for every compile in one main-thread task (93% of a 609 ms task during the tree
+// page's load, issue 32).
 export function whenLinked(gl, started, ms = 16) {
   const ext = gl.getExtension('KHR_parallel_shader_compile');
-  if (!ext) return Promise.resolve();
+  const fence = ext ? null : gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+  if (fence) gl.flush();
+  const done = () => gl.isContextLost() || (ext
+    ? started.every((s) => gl.getProgramParameter(s.program, ext.COMPLETION_STATUS_KHR))
+    : gl.getSyncParameter(fence, gl.SYNC_STATUS) === gl.SIGNALED);
   return new Promise((resolve) => {
     const poll = () => {
-      if (gl.isContextLost() || started.every((s) => gl.getProgramParameter(s.program, ext.COMPLETION_STATUS_KHR))) resolve();
-      else setTimeout(poll, ms);
+      if (!done()) {
+        setTimeout(poll, ms);
+        return;
+      }
+      if (fence) gl.deleteSync(fence);
+      resolve();
     };
-    poll();
+    setTimeout(poll, ms);  // (a fence's status changes only between tasks)
   });
 }
 
 // Loads several programs at once. specs: {name: [vertexPath, fragmentPath]}, paths relative to
 // `base` (a URL ending in '/'); returns {name: {program, uniforms}}. Every program is compiled and
-// linked before any status is read, and (with KHR_parallel_shader_compile) the renderer's first
-// frame waits until they are all done without blocking the page.
+// linked before any status is read, and the renderer's first frame waits until they are all done
+// without blocking the page (whenLinked).
 export async function loadPrograms(gl, base, specs) {
   const read = cachedReader();
   const entries = Object.entries(specs);
@@ -129,5 +143,12 @@ export async function loadPrograms(gl, base, specs) {
     resolveIncludes(new URL(vert, base).href, read), resolveIncludes(new URL(frag, base).href, read)])));
   const started = entries.map(([name], i) => startLink(gl, sources[i][0], sources[i][1], name));
   await whenLinked(gl, started);
-  return Object.fromEntries(entries.map(([name], i) => [name, finishLink(gl, started[i])]));
+  // One program's status a task: a link still under way (the fence does not always cover it) holds
+  // the page for that program alone, not for all of them in one task.
+  const out = {};
+  for (const [i, [name]] of entries.entries()) {
+    if (i > 0) await new Promise((resolve) => setTimeout(resolve, 0));
+    out[name] = finishLink(gl, started[i]);
+  }
+  return out;
 }
