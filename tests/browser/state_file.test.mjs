@@ -61,7 +61,8 @@ await runBrowserTest(async (server, browser) => {
   const backHash = await page.evaluate(() => history.length);
   check('the opened state is a history entry', backHash >= 2, String(backHash));
 
-  // Bad files: a notice naming the field; the old tree and hash stay.
+  // Bad files: the line beside Open names the field; the old tree and hash stay; nothing goes to
+  // the notices at the panel's top (out of view: issue 32).
   const cases = [
     ['{"preset": "keyaki-thesis", "colour": "red"}', /colour: unknown state key; the keys are preset, seed, years, params, prunes, camera/],
     ['{"years": 300}', /years: 300 is out of range; must be a whole number in \[0, 100\]/],
@@ -78,17 +79,18 @@ await runBrowserTest(async (server, browser) => {
     await page.waitForTimeout(500);
     d = await data(page);
     const notice = await noticeText(page);
-    check(`a bad file (${text}) is a notice naming the field, old tree kept`, d.stateFile === 'open-error' &&
-      pattern.test(notice) && d.treeSerial === serial && (await page.evaluate(() => location.hash)) === hashBefore &&
-      d.status === 'ready', `${d.stateFile}: ${JSON.stringify(notice)}`);
+    check(`a bad file (${text}) is refused, old tree kept, no notice at the panel's top`, d.stateFile === 'open-error' &&
+      !pattern.test(notice) && !notice.includes('state_file-bad.json') && d.treeSerial === serial &&
+      (await page.evaluate(() => location.hash)) === hashBefore && d.status === 'ready', `${d.stateFile}: notice ${JSON.stringify(notice)}`);
     // ... and the line beside Open says so, in view (it said "Opened" of the file before).
     const line = await page.evaluate(() => {
-      const el = document.getElementById('share-status');
+      const el = document.getElementById('state-status');
       const r = el.getBoundingClientRect();
-      return { text: el.textContent, inView: r.top >= 0 && r.bottom <= innerHeight };
+      const open = document.getElementById('open-state').getBoundingClientRect();
+      return { text: el.textContent, inView: r.top >= 0 && r.bottom <= innerHeight, belowOpen: Math.round(r.top - open.bottom) };
     });
-    check(`... and the line beside Open names the refusal, in view`, line.text.startsWith('Open state_file-bad.json refused: ') &&
-      pattern.test(line.text) && line.inView, JSON.stringify(line));
+    check(`... and the line beside Open names the refusal, in view, right under Open`, line.text.startsWith('Open state_file-bad.json refused: ') &&
+      pattern.test(line.text) && line.inView && line.belowOpen >= 0 && line.belowOpen < 80, JSON.stringify(line));
   }
   check('no console errors or page errors', problems.length === 0, problems.join(' | ').slice(0, 300));
 });

@@ -3,18 +3,17 @@
 // grow --state' reads), Open reads one through a file input. Both go through the worker
 // (web/worker/tree_handler.js 'stateFile', core/tree/tree_state), so page and CLI read one format.
 // Does not: check a state itself (the core does), or change the tree on a bad file (the old tree
-// stays and the error is a notice).
+// stays and the error is the line beside Open).
 import { download } from '../shell/study_page.js';
 import { setHooks } from '../shell/test_hooks.js';
 
 // Largest file Open reads: the CLI's cap for --state (kMaxParamsFileBytes, docs/input-rules.md).
 const MAX_STATE_BYTES = 1 << 20;
 
-// ui: {save, open, input (a hidden <input type=file>), status (the share line)}; worker: the page's
+// ui: {save, open, input (a hidden <input type=file>), status (the line under Save and Open)}; worker: the page's
 // WorkerClient; state(): the page state to save (camera included); stem(): the file name stem;
-// onOpen(state): apply an opened state (every value, as the hash decoder gives it);
-// onError(line): show a notice.
-export function mountStateFile(ui, { worker, state, stem, onOpen, onError }) {
+// onOpen(state): apply an opened state (every value, as the hash decoder gives it).
+export function mountStateFile(ui, { worker, state, stem, onOpen }) {
   let requests = 0;
   const ask = (fields) => worker.request('stateFile', fields, { group: `state-file-${++requests}`, done: ['stateFile'] }).reply;
 
@@ -26,6 +25,7 @@ export function mountStateFile(ui, { worker, state, stem, onOpen, onError }) {
       setHooks({ stateFile: 'save-error' });
       return;
     }
+    ui.status.classList.remove('field-error');
     download(new Blob([reply.json], { type: 'application/json' }), `${stem()}-state.json`, ui.status);
     setHooks({ stateFile: 'saved' });
   });
@@ -35,10 +35,9 @@ export function mountStateFile(ui, { worker, state, stem, onOpen, onError }) {
     const file = ui.input.files?.[0];
     ui.input.value = '';  // the same file can be opened again
     if (!file) return;
-    // The refusal is a notice and the line beside Open too (it went only to the panel's top,
-    // out of view, while this line still said "Opened" of an earlier file).
+    // The refusal is the line beside Open, scrolled into view (issue 32: it went to the notices at
+    // the panel's top, out of view, while this line still said "Opened" of an earlier file).
     const fail = (line) => {
-      onError(`Open ${file.name}: ${line}`);
       ui.status.textContent = `Open ${file.name} refused: ${line}`;
       ui.status.classList.add('field-error');
       ui.status.scrollIntoView?.({ block: 'nearest' });

@@ -824,7 +824,7 @@ ui.downloadPng.addEventListener('click', () => {
 
 // Save / Open: the whole state as a file (the CLI's --state); an opened state is a new history
 // entry, drawn from its own camera when it has one.
-mountStateFile({ save: $('save-state'), open: $('open-state'), input: $('open-state-file'), status: ui.shareStatus }, {
+mountStateFile({ save: $('save-state'), open: $('open-state'), input: $('open-state-file'), status: $('state-status') }, {
   worker,
   state: () => ({ ...currentState(), camera: renderer ? camera.toHash() : '' }),
   stem: fileStem,
@@ -837,7 +837,6 @@ mountStateFile({ save: $('save-state'), open: $('open-state'), input: $('open-st
     sendUpdate('edit');
     frameNext = !camera.fromHash(state.camera);
   },
-  onError: (line) => notices.set('error', line),
 });
 
 ui.resetView.addEventListener('click', () => {
