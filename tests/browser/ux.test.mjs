@@ -196,6 +196,11 @@ await runBrowserTest(async (server, browser) => {
   });
   check('a Years error is shown beside Years (and beside Age)', /^years: 130 is out of range/.test(yearsError)
     && (await page.evaluate(() => !document.querySelector('[data-for-key="years"] .field-error')?.hidden)), yearsError);
+  // The year bar stays on the tree shown (8 years), not on the refused Years.
+  const barAfterBad = await page.textContent('#year-text');
+  const barMax = await page.evaluate(() => document.getElementById('year').max);
+  check('a refused Years leaves the year bar on the tree shown', barAfterBad === `${yearsBefore} of ${yearsBefore}` && barMax === yearsBefore,
+    `"${barAfterBad}", max ${barMax}; the tree shown is ${yearsBefore} years`);
   await andWait(page, () => page.fill('#years', '8'));
   // A bad Shoot length typed in Getting started: its error shows beside that field and the panel
   // stays on it (issue 32: it scrolled to the full table's copy of the row, away from the field).
