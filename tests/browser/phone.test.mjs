@@ -117,6 +117,24 @@ await runBrowserTest(async (server, browser) => {
   check('phone: Age set the tree\'s years (the year bar says so)', (await page.textContent('#year-text')) === '6 of 6'
     && (await page.inputValue('#years')) === '6', await page.textContent('#year-text'));
 
+  // A bad Age: its error shows in the dock beside the field typed in, the page not scrolled away.
+  await page.fill('#simple-years', '130');
+  await page.waitForFunction(() => document.documentElement.dataset.status === 'error', null, { timeout: TIMEOUT, polling: 50 });
+  await page.waitForTimeout(200);
+  const ageError = await page.evaluate(() => {
+    const line = document.querySelector('#dock [data-for-key="years"] .field-error');
+    const r = line?.getBoundingClientRect();
+    return { text: line && !line.hidden ? line.textContent : '', top: r?.top, bottom: r?.bottom, scrollY: window.scrollY };
+  });
+  await page.screenshot({ path: path.join(ARTIFACTS, 'phone-age-error.png') });
+  check('phone: a bad Age shows its error in the dock, on the first screen, the page not scrolled',
+    /^years: 130 is out of range/.test(ageError.text) && ageError.bottom <= H && ageError.scrollY === 0, JSON.stringify(ageError));
+  serial = await serialOf(page);
+  await page.fill('#simple-years', '6');
+  await page.evaluate(() => document.activeElement?.blur());
+  await waitReady(page, serial, 100);
+  await settled(page);
+
   // ---- Play: the tree grows from year 0 again; a screenshot while it plays shows a younger tree.
   await page.tap('#play');
   await page.waitForFunction(() => ['1', '2'].includes(document.documentElement.dataset.year)
