@@ -108,7 +108,7 @@ export async function runBatch(program, argsList, { jobs = 2, timeoutMs = 30000,
 // shipped program is still checked on a share of the cases. A case's output files are written when
 // prepare runs: its input files must exist by then.
 export class PreparedCli {
-  constructor(cli, { every = 8, work, jobs = 2 }) {
+  constructor(cli, { every = 4, work, jobs = 1 }) {
     this.cli = cli;
     this.program = batchOf(cli);
     this.every = every;

@@ -93,8 +93,8 @@ int main(int argc, char** argv) {
     std::cout.rdbuf(real_cout);
     std::cerr.rdbuf(real_cerr);
     if (keep_stdout) {
-      report << index << ' ' << code << " [" << JsonString(err.str()) << ',' << JsonString(out.str()) << ']'
-             << std::endl;
+      report << index << ' ' << code << " [" << JsonString(err.str()) << ','
+             << JsonString(out.str()) << ']' << std::endl;
     } else {
       report << index << ' ' << code << ' ' << JsonString(err.str()) << std::endl;
     }
