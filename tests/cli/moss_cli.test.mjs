@@ -7,30 +7,53 @@
 // cells; `--out moss.glb` (merged and --instancing, every --map) native == WASM and gltf-validator
 // clean, its estimate refused before the days are grown with no file left; --csv days; --weather
 // and --params files, hostile ones refused naming the day and field; photons.svg from both commands.
+// The WASM runs of each part are prepared ahead, batched in niwa_cli_batch.js (the same RunCli; a
+// niwa.js start under node costs about 0.3 CPU s), every NIWA_MOSS_WASM_EVERY-th case (default 4)
+// and the few that depend on an earlier result as one niwa.js process each (support/cli_batch.mjs
+// PreparedCli).
 import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
-import { buildName, check, finish, native, requireWasm, root, run, spawn, wasm, withoutMs } from '../support/cli_pair.mjs';
+import { PreparedCli } from '../support/cli_batch.mjs';
+import { buildName, check, finish, native, requireWasm, root, run as runOne, spawn as spawnOne, wasm, withoutMs } from '../support/cli_pair.mjs';
 
 requireWasm();
+const dir = mkdtempSync(join(tmpdir(), 'niwa-moss-'));
+const W = new PreparedCli(wasm, { every: Math.max(1, Number(process.env.NIWA_MOSS_WASM_EVERY || 4)), work: dir, jobs: 1 });
+// run/spawn as cli_pair.mjs's, the WASM CLI's answered from the prepared runs.
+const run = (cmd, args) => (cmd === wasm ? W.run(args) : runOne(cmd, args));
+const spawn = (cmd, args) => (cmd === wasm ? W.spawn(args) : spawnOne(cmd, args));
 
 const near = (got, want) => Math.abs(got - want) <= 1e-4 * Math.abs(want);
 
 // Soil: one cell, both builds, byte for byte.
-let soilCases = 0;
+const soilArgs = [];
 for (const geology of ['humus', 'sandy', 'asphalt']) {
   for (const theta of ['0', '0.01', '0.012']) {
     for (const S of ['0', '25', '250']) {
       for (const extra of [[], ['--preset', 'nomura2010-sky', '--V', '0.4'], ['--set', 'delta_form=1', '--mM', '1', '--T', '293.15']]) {
-        const args = ['moss', 'soil', '--geology', geology, '--theta', theta, '--S', S, ...extra];
-        const a = run(native, args), b = run(wasm, args);
-        ++soilCases;
-        if (a !== b) check(`soil ${args.join(' ')}: native == WASM`, false, `${a}\n${b}`);
+        soilArgs.push(['moss', 'soil', '--geology', geology, '--theta', theta, '--S', S, ...extra]);
       }
     }
   }
+}
+const fitnessArgs = [];
+for (const species of ['gingoke', 'haigoke', 'sugigoke', null]) {
+  for (const [Ts, rhs, S] of [['278.1', '1.01148', '25'], ['290', '1.3', '0'], ['300', '0.7', '250']]) {
+    for (const extra of [[], ['--set', 'g_form=1']]) {
+      fitnessArgs.push(['moss', 'fitness', ...(species ? ['--species', species] : []), '--Ts', Ts, '--rhs', rhs, '--S', S, ...extra]);
+    }
+  }
+}
+const tableArgs = [['params', 'moss', '--json'], ['params', 'moss'], ['presets', 'moss']];
+await W.prepare([...soilArgs, ...fitnessArgs, ...tableArgs]);
+let soilCases = 0;
+for (const args of soilArgs) {
+  const a = run(native, args), b = run(wasm, args);
+  ++soilCases;
+  if (a !== b) check(`soil ${args.join(' ')}: native == WASM`, false, `${a}\n${b}`);
 }
 check(`moss soil: ${soilCases} cells (3 geologies x 3 theta x 3 S x 3 settings): native == WASM byte for byte`, soilCases === 81);
 
@@ -47,15 +70,10 @@ check(`moss soil --set delta_form=1: literal Delta ${literal.Delta} (spec: 2.442
 
 // Fitness: every species, both g forms, a few places.
 let fitnessCases = 0;
-for (const species of ['gingoke', 'haigoke', 'sugigoke', null]) {
-  for (const [Ts, rhs, S] of [['278.1', '1.01148', '25'], ['290', '1.3', '0'], ['300', '0.7', '250']]) {
-    for (const extra of [[], ['--set', 'g_form=1']]) {
-      const args = ['moss', 'fitness', ...(species ? ['--species', species] : []), '--Ts', Ts, '--rhs', rhs, '--S', S, ...extra];
-      const a = run(native, args), b = run(wasm, args);
-      ++fitnessCases;
-      if (a !== b) check(`fitness ${args.join(' ')}: native == WASM`, false, `${a}\n${b}`);
-    }
-  }
+for (const args of fitnessArgs) {
+  const a = run(native, args), b = run(wasm, args);
+  ++fitnessCases;
+  if (a !== b) check(`fitness ${args.join(' ')}: native == WASM`, false, `${a}\n${b}`);
 }
 check(`moss fitness: ${fitnessCases} places: native == WASM byte for byte`, fitnessCases === 24);
 const all = JSON.parse(run(native, ['moss', 'fitness', '--Ts', '278.1', '--rhs', '1.01148', '--S', '25']));
@@ -64,39 +82,42 @@ check(`moss fitness (no --species): all three species; sugigoke G ${sugi.G} (by 
   all.species.length === 3 && Math.abs(sugi.G - 0.4943444815062233) < 1e-12);
 
 // The table and presets, both builds.
-for (const args of [['params', 'moss', '--json'], ['params', 'moss'], ['presets', 'moss']]) {
+for (const args of tableArgs) {
   const a = run(native, args), b = run(wasm, args);
   check(`niwa ${args.join(' ')}: native == WASM (${a.length} bytes)`, a.length > 100 && a === b);
 }
 
 // The run: every scene, both presets, seeds 1-2; --stats (no timing fields) and moss.json.
-const dir = mkdtempSync(join(tmpdir(), 'niwa-moss-'));
-let growCases = 0, withMosses = 0;
+const growRuns = [];
 for (const scene of ['plane', 'thesis', 'walls', 'rocks']) {
   for (const preset of ['nomura2010', 'nomura2010-sky']) {
-    for (const seed of ['1', '2']) {
-      const args = ['moss', 'grow', '--scene', scene, '--preset', preset, '--seed', seed, '--days', '12', '--photons', '1024', '--stats'];
-      const na = join(dir, `n-${scene}-${preset}-${seed}.json`), wa = join(dir, `w-${scene}-${preset}-${seed}.json`);
-      const a = JSON.stringify(withoutMs(JSON.parse(run(native, [...args, '--out', na]))));
-      const b = JSON.stringify(withoutMs(JSON.parse(run(wasm, [...args, '--out', wa]))));
-      const ja = readFileSync(na, 'utf8'), jb = readFileSync(wa, 'utf8');
-      ++growCases;
-      if (a !== b || ja !== jb) check(`grow ${args.join(' ')}: native == WASM`, false, `${a.slice(0, 300)}\n${b.slice(0, 300)}`);
-      const stats = JSON.parse(a), list = JSON.parse(ja);
-      if (list.mosses.length !== stats.mosses.total || stats.days !== 12)
-        check(`grow ${scene} ${preset} ${seed}: moss.json lists the ${stats.mosses.total} living mosses`, false, ja.slice(0, 200));
-      if (list.mosses.length > 0) ++withMosses;
-      if (list.cells.length !== stats.cells.total || !list.cells.every((c) => ['humus', 'sandy', 'asphalt'].includes(c.geology) &&
-          c.centre.length === 3 && c.normal.length === 3 && ['S', 'T_s', 'rh_s', 'theta', 'm_over_M'].every((k) => Number.isFinite(c[k]))))
-        check(`grow ${scene} ${preset} ${seed}: moss.json lists the ${stats.cells.total} cells with their soil`, false, JSON.stringify(list.cells[0]));
-      for (const m of list.mosses)
-        if (!['gingoke', 'haigoke', 'sugigoke'].includes(m.species) || m.pos.length !== 3 || m.normal.length !== 3 ||
-            !(m.birth_day >= 0 && m.birth_day <= 12) || !Number.isFinite(m.G_moss)) {
-          check(`grow ${scene}: a moss's fields`, false, JSON.stringify(m));
-          break;
-        }
-    }
+    for (const seed of ['1', '2']) growRuns.push([scene, preset, seed]);
   }
+}
+const growArgs = ([scene, preset, seed]) => ['moss', 'grow', '--scene', scene, '--preset', preset, '--seed', seed, '--days', '12', '--photons', '1024', '--stats'];
+await W.prepare(growRuns.map((g) => [...growArgs(g), '--out', join(dir, `w-${g.join('-')}.json`)]));
+let growCases = 0, withMosses = 0;
+for (const [scene, preset, seed] of growRuns) {
+  const args = growArgs([scene, preset, seed]);
+  const na = join(dir, `n-${scene}-${preset}-${seed}.json`), wa = join(dir, `w-${scene}-${preset}-${seed}.json`);
+  const a = JSON.stringify(withoutMs(JSON.parse(run(native, [...args, '--out', na]))));
+  const b = JSON.stringify(withoutMs(JSON.parse(run(wasm, [...args, '--out', wa]))));
+  const ja = readFileSync(na, 'utf8'), jb = readFileSync(wa, 'utf8');
+  ++growCases;
+  if (a !== b || ja !== jb) check(`grow ${args.join(' ')}: native == WASM`, false, `${a.slice(0, 300)}\n${b.slice(0, 300)}`);
+  const stats = JSON.parse(a), list = JSON.parse(ja);
+  if (list.mosses.length !== stats.mosses.total || stats.days !== 12)
+    check(`grow ${scene} ${preset} ${seed}: moss.json lists the ${stats.mosses.total} living mosses`, false, ja.slice(0, 200));
+  if (list.mosses.length > 0) ++withMosses;
+  if (list.cells.length !== stats.cells.total || !list.cells.every((c) => ['humus', 'sandy', 'asphalt'].includes(c.geology) &&
+      c.centre.length === 3 && c.normal.length === 3 && ['S', 'T_s', 'rh_s', 'theta', 'm_over_M'].every((k) => Number.isFinite(c[k]))))
+    check(`grow ${scene} ${preset} ${seed}: moss.json lists the ${stats.cells.total} cells with their soil`, false, JSON.stringify(list.cells[0]));
+  for (const m of list.mosses)
+    if (!['gingoke', 'haigoke', 'sugigoke'].includes(m.species) || m.pos.length !== 3 || m.normal.length !== 3 ||
+        !(m.birth_day >= 0 && m.birth_day <= 12) || !Number.isFinite(m.G_moss)) {
+      check(`grow ${scene}: a moss's fields`, false, JSON.stringify(m));
+      break;
+    }
 }
 check(`moss grow: ${growCases} runs (4 scenes x 2 presets x seeds 1-2, 12 days, 1,024 photons): --stats and moss.json (mosses and cells) native == WASM byte for byte; ${withMosses} with living mosses`,
   growCases === 16 && withMosses >= 8);
@@ -112,8 +133,12 @@ check(`moss grow: ${growCases} runs (4 scenes x 2 presets x seeds 1-2, 12 days, 
     ['thesis', []], ['thesis', ['--instancing']], ['walls', ['--map', 'S']], ['rocks', ['--map', 'T_s', '--instancing']],
     ['thesis', ['--map', 'rh_s']], ['thesis', ['--map', 'theta']], ['thesis', ['--map', 'fitness']],
   ];
+  const glbArgs = ([scene, extra]) => ['moss', 'grow', '--scene', scene, '--days', '15', '--photons', '1024', ...extra];
+  const csvArgs = ['moss', 'grow', '--scene', 'thesis', '--days', '20', '--photons', '1024', '--seed', '3'];
+  await W.prepare([...runs.map((r, i) => [...glbArgs(r), '--out', join(dir, `w-${i}.glb`)]),
+    [...csvArgs, '--csv', join(dir, 'w.csv'), '--out', join(dir, 'w-days.glb')]]);
   for (const [scene, extra] of runs) {
-    const args = ['moss', 'grow', '--scene', scene, '--days', '15', '--photons', '1024', ...extra];
+    const args = glbArgs([scene, extra]);
     const na = join(dir, `n-${glbCases}.glb`), wa = join(dir, `w-${glbCases}.glb`);
     run(native, [...args, '--out', na]);
     run(wasm, [...args, '--out', wa]);
@@ -135,7 +160,7 @@ check(`moss grow: ${growCases} runs (4 scenes x 2 presets x seeds 1-2, 12 days, 
   }
   // --csv: one row a day, both builds' bytes equal, written with --out in one commit.
   {
-    const args = ['moss', 'grow', '--scene', 'thesis', '--days', '20', '--photons', '1024', '--seed', '3'];
+    const args = csvArgs;
     const nc = join(dir, 'n.csv'), wc = join(dir, 'w.csv');
     const stats = JSON.parse(run(native, [...args, '--csv', nc, '--out', join(dir, 'n-days.glb'), '--stats']));
     run(wasm, [...args, '--csv', wc, '--out', join(dir, 'w-days.glb')]);
@@ -155,6 +180,23 @@ check(`moss grow: ${growCases} runs (4 scenes x 2 presets x seeds 1-2, 12 days, 
     writeFileSync(json, JSON.stringify({ days: [{ T: 293.15, rh: 0.8, U: 0.5, N: 7, N0: 9, P: 12 }, { T: 283.15, rh: 0.6, U: 0.1, N: 2, N0: 8, P: 0 }] }));
     writeFileSync(params, JSON.stringify({ scene: 'walls', days: 6, params: { T: 290, photons: 512 } }));
     const args = ['moss', 'grow', '--scene', 'thesis', '--days', '8', '--photons', '1024', '--stats'];
+    const hostileFiles = [
+      ['bad1.csv', 'T,rh\n400,0.8\n', '--weather: day 1: T: 400 is out of range; must be a number in [233.15, 323.15]'],
+      ['bad2.csv', 'T,Tmax\n290,300\n', "--weather: column 'Tmax' is unknown"],
+      ['bad3.csv', 'N\nnan\n', "--weather: day 1: N: 'nan' is not a decimal number"],
+      ['bad4.json', '{"days": [{"T": 290}, {"rh": -0.1}]}', '--weather: day 2: rh: -0.1 is out of range; must be a number in [0, 1]'],
+      ['bad5.json', '{"days": [{"N": 10, "N0": 9}]}', '--weather: day 1: N: 10 is above N0 9'],
+      ['bad6.json', '{"days": []}', '--weather: has 0 days; must have 1 to 3650'],
+      ['bad7.txt', 'T\n290\n', '--weather: '],
+      ['badp1.json', '{"params": {"rh": 2}}', '--params: rh: 2 is out of range; must be a number in [0, 1]'],
+      ['badp2.json', '{"days": -1}', '--params: days'],
+      ['badp3.json', '{"params": {"T": 290, "T": 291}}', '--params'],
+    ];
+    const hostileArgs = (name) => ['moss', 'grow', '--scene', 'plane', '--days', '2', '--photons', '64',
+      name.startsWith('badp') ? '--params' : '--weather', join(dir, name), '--out', join(dir, `never-${name}.glb`)];
+    for (const [name, text] of hostileFiles) writeFileSync(join(dir, name), text);
+    await W.prepare([[...args, '--weather', csv], ['moss', 'grow', '--params', params, '--stats'],
+      ...hostileFiles.map(([name]) => hostileArgs(name))]);
     const bytes = (cmd, extra) => JSON.stringify(withoutMs(JSON.parse(run(cmd, [...args, ...extra]))));
     const a = bytes(native, ['--weather', csv]), b = bytes(wasm, ['--weather', csv]);
     const c = bytes(native, ['--weather', json]);
@@ -168,25 +210,11 @@ check(`moss grow: ${growCases} runs (4 scenes x 2 presets x seeds 1-2, 12 days, 
     check(`moss grow --params {scene walls, days 6, T 290, photons 512}: native == WASM; url ${ps.url}`,
       JSON.stringify(withoutMs(ps)) === JSON.stringify(withoutMs(JSON.parse(pb))) && ps.scene === 'walls' && ps.days === 6 && ps.photons === 512 && ps.url.includes('T=290'));
     // Hostile weather and params files: one line naming the flag, the day and field with its range; exit 2; no file written.
-    const hostileFiles = [
-      ['bad1.csv', 'T,rh\n400,0.8\n', '--weather: day 1: T: 400 is out of range; must be a number in [233.15, 323.15]'],
-      ['bad2.csv', 'T,Tmax\n290,300\n', "--weather: column 'Tmax' is unknown"],
-      ['bad3.csv', 'N\nnan\n', "--weather: day 1: N: 'nan' is not a decimal number"],
-      ['bad4.json', '{"days": [{"T": 290}, {"rh": -0.1}]}', '--weather: day 2: rh: -0.1 is out of range; must be a number in [0, 1]'],
-      ['bad5.json', '{"days": [{"N": 10, "N0": 9}]}', '--weather: day 1: N: 10 is above N0 9'],
-      ['bad6.json', '{"days": []}', '--weather: has 0 days; must have 1 to 3650'],
-      ['bad7.txt', 'T\n290\n', '--weather: '],
-      ['badp1.json', '{"params": {"rh": 2}}', '--params: rh: 2 is out of range; must be a number in [0, 1]'],
-      ['badp2.json', '{"days": -1}', '--params: days'],
-      ['badp3.json', '{"params": {"T": 290, "T": 291}}', '--params'],
-    ];
-    for (const [name, text, want] of hostileFiles) {
-      const path = join(dir, name);
-      writeFileSync(path, text);
+    for (const [name, , want] of hostileFiles) {
       const flag = name.startsWith('badp') ? '--params' : '--weather';
       const out = join(dir, `never-${name}.glb`);
       for (const cmd of [native, wasm]) {
-        const r = spawn(cmd, ['moss', 'grow', '--scene', 'plane', '--days', '2', '--photons', '64', flag, path, '--out', out]);
+        const r = spawn(cmd, hostileArgs(name));
         const lines = r.stderr.trim().split('\n');
         check(`${buildName(cmd)} moss grow ${flag} ${name}: exit ${r.status}, "${lines[0]}", no file`,
           r.status === 2 && lines.length === 1 && lines[0].startsWith(`niwa: error: ${want}`) && r.stdout === '' && !existsSync(out));
@@ -196,8 +224,13 @@ check(`moss grow: ${growCases} runs (4 scenes x 2 presets x seeds 1-2, 12 days, 
   // photons.svg: `moss photons --out` (the next day's map) and `moss grow --out` (the last day's):
   // both builds' bytes equal; first hits and bounced dots in their colours, none bounced with
   // indirect off.
+  const svgArgs = (indirect) => ['moss', 'photons', '--scene', 'thesis', '--photons', '2048', '--indirect', indirect];
+  const growSvgArgs = ['moss', 'grow', '--scene', 'walls', '--days', '4', '--photons', '1024', '--set', 'sun_altitude=45'];
+  const refusedArgs = ['moss', 'grow', '--scene', 'plane', '--days', '2', '--photons', '64', '--set', 'max_mosses=1048576', '--max-memory', '1G', '--out', join(dir, 'refused.glb')];
+  await W.prepare([...['on', 'off'].map((i) => [...svgArgs(i), '--out', join(dir, `w-${i}.svg`)]),
+    [...growSvgArgs, '--out', join(dir, 'w-grow.svg')], refusedArgs]);
   for (const indirect of ['on', 'off']) {
-    const args = ['moss', 'photons', '--scene', 'thesis', '--photons', '2048', '--indirect', indirect];
+    const args = svgArgs(indirect);
     const na = join(dir, `n-${indirect}.svg`), wa = join(dir, `w-${indirect}.svg`);
     const day = JSON.parse(run(native, [...args, '--out', na]));
     run(wasm, [...args, '--out', wa]);
@@ -207,7 +240,7 @@ check(`moss grow: ${growCases} runs (4 scenes x 2 presets x seeds 1-2, 12 days, 
       a === b && a.startsWith('<svg ') && direct > 0 && direct <= day.stored_by_depth[0] && (indirect === 'off' ? bounced === 0 : bounced > 0));
   }
   {
-    const args = ['moss', 'grow', '--scene', 'walls', '--days', '4', '--photons', '1024', '--set', 'sun_altitude=45'];
+    const args = growSvgArgs;
     run(native, [...args, '--out', join(dir, 'n-grow.svg')]);
     run(wasm, [...args, '--out', join(dir, 'w-grow.svg')]);
     const a = readFileSync(join(dir, 'n-grow.svg'), 'utf8');
@@ -217,15 +250,16 @@ check(`moss grow: ${growCases} runs (4 scenes x 2 presets x seeds 1-2, 12 days, 
   // The .glb's estimate (the mosses at their cap) is refused before the days are grown, no file.
   const out = join(dir, 'refused.glb');
   for (const cmd of [native, wasm]) {
-    const r = spawn(cmd, ['moss', 'grow', '--scene', 'plane', '--days', '2', '--photons', '64', '--set', 'max_mosses=1048576', '--max-memory', '1G', '--out', out]);
+    const r = spawn(cmd, refusedArgs);
     check(`${buildName(cmd)} moss grow --out moss.glb at 1,048,576 max_mosses under --max-memory 1G: exit ${r.status}, "${r.stderr.trim()}", no file`,
       r.status === 2 && r.stderr.startsWith('niwa: error: --max-memory') && r.stderr.includes('.glb') && !existsSync(out));
   }
 }
-rmSync(dir, { recursive: true, force: true });
+const photonsArgs = (scene, indirect) => ['moss', 'photons', '--scene', scene, '--photons', '2048', '--indirect', indirect, '--preset', 'nomura2010-sky'];
+await W.prepare([...['plane', 'thesis', 'walls', 'rocks'].flatMap((scene) => ['on', 'off'].map((i) => photonsArgs(scene, i))), ['moss', 'scenes']]);
 for (const scene of ['plane', 'thesis', 'walls', 'rocks']) {
   for (const indirect of ['on', 'off']) {
-    const args = ['moss', 'photons', '--scene', scene, '--photons', '2048', '--indirect', indirect, '--preset', 'nomura2010-sky'];
+    const args = photonsArgs(scene, indirect);
     const a = run(native, args), b = run(wasm, args);
     const day = JSON.parse(a);
     const bounced = day.stored_by_depth.slice(1).reduce((x, y) => x + y, 0);
@@ -253,6 +287,7 @@ const hostile = [
   // The sky view applies only to the sky-view longwave (nomura2010-sky, longwave=1).
   [['--geology', 'humus', '--theta', '0.2', '--S', '25', '--V', '0.5'], '--V'],
 ];
+await W.prepare(hostile.map(([args]) => ['moss', 'soil', ...args]));
 for (const [args, field] of hostile) {
   for (const cmd of [native, wasm]) {
     const r = spawn(cmd, ['moss', 'soil', ...args]);
@@ -266,6 +301,9 @@ for (const [args, field] of hostile) {
 {
   const mesh = join(root, 'tests/data/meshes/materials.glb');
   const args = ['moss', 'grow', '--mesh', mesh, '--days', '5', '--photons', '512', '--stats'];
+  const textured = ['moss', 'grow', '--mesh', join(root, 'tests/data/meshes/textured.glb'), '--days', '3', '--photons', '512', '--stats'];
+  const flower = ['moss', 'grow', '--mesh', join(root, 'tests/data/meshes/flower_blue.glb'), '--days', '2', '--photons', '256', '--stats'];
+  await W.prepare([args, textured, flower]);
   const a = JSON.stringify(withoutMs(JSON.parse(run(native, args))));
   const b = JSON.stringify(withoutMs(JSON.parse(run(wasm, args))));
   const s = JSON.parse(a);
@@ -279,8 +317,7 @@ for (const [args, field] of hostile) {
 // sandy everywhere), so --stats counts as many humus cells as sandy ones and no asphalt; ez-tree's
 // flower_blue.glb (three PNG textures, four plain colours) reads in both builds alike.
 {
-  const mesh = join(root, 'tests/data/meshes/textured.glb');
-  const args = ['moss', 'grow', '--mesh', mesh, '--days', '3', '--photons', '512', '--stats'];
+  const args = ['moss', 'grow', '--mesh', join(root, 'tests/data/meshes/textured.glb'), '--days', '3', '--photons', '512', '--stats'];
   const a = JSON.stringify(withoutMs(JSON.parse(run(native, args))));
   const b = JSON.stringify(withoutMs(JSON.parse(run(wasm, args))));
   const g = JSON.parse(a).cells.by_geology;
@@ -301,15 +338,17 @@ for (const [args, field] of hostile) {
     'texture_offset.glb': [1024, 3072], 'texture_scale.glb': [2048, 2048], 'texture_rotation.glb': [2048, 2048],
     'texture_texcoord1.glb': [2048, 2048], 'texture_transform_texcoord1.glb': [1024, 3072],
   };
+  const splitArgs = (file) => ['moss', 'grow', '--mesh', join(root, 'tests/data/meshes', file), '--days', '2', '--photons', '256', '--stats'];
+  const missing = join(root, 'tests/data/meshes/texture_missing_texcoord.glb');
+  await W.prepare([...Object.keys(split).map(splitArgs), ['moss', 'grow', '--mesh', missing, '--days', '1', '--stats']]);
   for (const [file, [humus, sandy]] of Object.entries(split)) {
-    const args = ['moss', 'grow', '--mesh', join(root, 'tests/data/meshes', file), '--days', '2', '--photons', '256', '--stats'];
+    const args = splitArgs(file);
     const a = JSON.stringify(withoutMs(JSON.parse(run(native, args))));
     const b = JSON.stringify(withoutMs(JSON.parse(run(wasm, args))));
     const g = JSON.parse(a).cells.by_geology;
     check(`moss grow --mesh ${file}: native == WASM; cells by geology ${JSON.stringify(g)} (want humus ${humus}, sandy ${sandy})`,
       a === b && g.humus === humus && g.sandy === sandy && (g.asphalt ?? 0) === 0);
   }
-  const missing = join(root, 'tests/data/meshes/texture_missing_texcoord.glb');
   const want = "niwa: error: --mesh: texture_missing_texcoord.glb: mesh 0 'ground' primitive 0: material 0 'ground' baseColorTexture reads TEXCOORD_1, which the primitive does not have";
   for (const cmd of [native, wasm]) {
     const r = spawn(cmd, ['moss', 'grow', '--mesh', missing, '--days', '1', '--stats']);
@@ -323,6 +362,9 @@ for (const [args, field] of hostile) {
 // cells and mosses by region name both, the same bytes in both builds.
 {
   const args = ['moss', 'grow', '--tree-preset', 'sakura', '--tree-years', '4', '--days', '3', '--photons', '512', '--stats'];
+  const everyArgs = ['moss', 'grow', '--scene', 'walls', '--days', '5', '--photons', '512', '--stats', '--every', '2'];
+  const terrainArgs = ['moss', 'grow', '--terrain-preset', 'fig13b', '--terrain-seed', '3', '--days', '2', '--photons', '256', '--set', 'soil_edge=2', '--stats'];
+  await W.prepare([args, everyArgs, terrainArgs]);
   const a = JSON.stringify(withoutMs(JSON.parse(run(native, args))));
   const b = JSON.stringify(withoutMs(JSON.parse(run(wasm, args))));
   const s = JSON.parse(a);
@@ -340,7 +382,7 @@ for (const [args, field] of hostile) {
 // Stats every K days (--every K with --stats): rows at days K, 2K, ... and the last, native == WASM,
 // the last row the stats' own breakdown.
 {
-  const args = ['moss', 'grow', '--scene', 'walls', '--days', '5', '--photons', '512', '--stats', '--every', '2'];
+  const args = ['moss', 'grow', '--scene', 'walls', '--days', '5', '--photons', '512', '--stats', '--every', '2'];  // prepared above
   const a = JSON.stringify(withoutMs(JSON.parse(run(native, args))));
   const b = JSON.stringify(withoutMs(JSON.parse(run(wasm, args))));
   const s = JSON.parse(a);
@@ -357,7 +399,7 @@ for (const [args, field] of hostile) {
 // A Niwa terrain as the land (core/compose/moss_on_terrain): geology by slope and height, regions
 // by height; the flags and the url regrow the same bytes in both builds.
 {
-  const args = ['moss', 'grow', '--terrain-preset', 'fig13b', '--terrain-seed', '3', '--days', '2', '--photons', '256', '--set', 'soil_edge=2', '--stats'];
+  const args = ['moss', 'grow', '--terrain-preset', 'fig13b', '--terrain-seed', '3', '--days', '2', '--photons', '256', '--set', 'soil_edge=2', '--stats'];  // prepared above
   const a = JSON.stringify(withoutMs(JSON.parse(run(native, args))));
   const b = JSON.stringify(withoutMs(JSON.parse(run(wasm, args))));
   const s = JSON.parse(a);
@@ -377,7 +419,7 @@ for (const [args, field] of hostile) {
     r.status === 2 && r.stderr.startsWith('niwa: error: --max-seconds') && r.stdout === '');
 }
 
-for (const [args, field] of [
+const growHostile = [
   [['--mesh', join(root, 'tests/data/meshes/truncated.glb')], '--mesh'],
   [['--mesh', join(root, 'tests/data/meshes/empty.glb')], '--mesh'],
   [['--mesh', join(root, 'tests/data/meshes/materials.glb'), '--scene', 'thesis'], '--mesh'],
@@ -393,7 +435,10 @@ for (const [args, field] of [
   [['--indirect', 'maybe'], '--indirect'], [['--out', 'x.glb', '--map', 'G'], '--map'], [['--map', 'S'], '--map'],
   [['--instancing'], '--instancing'], [['--out', 'x.json', '--instancing'], '--instancing'], [['--seed', '1e20'], '--seed'], [['--photons', 'nan'], '--photons'],
   [['--max-seconds', '1'], '--max-seconds'], [['--set', 'sun_path=1', '--days', '1'], 'sun_path'],
-]) {
+];
+const zenigoke = ['moss', 'fitness', '--species', 'zenigoke', '--Ts', '286', '--rhs', '1', '--S', '20'];
+await W.prepare([...growHostile.map(([args]) => ['moss', 'grow', ...args]), zenigoke]);
+for (const [args, field] of growHostile) {
   for (const cmd of [native, wasm]) {
     const r = spawn(cmd, ['moss', 'grow', ...args]);
     const lines = r.stderr.trim().split('\n');
@@ -402,9 +447,11 @@ for (const [args, field] of [
   }
 }
 for (const cmd of [native, wasm]) {
-  const r = spawn(cmd, ['moss', 'fitness', '--species', 'zenigoke', '--Ts', '286', '--rhs', '1', '--S', '20']);
+  const r = spawn(cmd, zenigoke);
   check(`${buildName(cmd)} moss fitness --species zenigoke: exit ${r.status}, "${r.stderr.trim()}"`,
     r.status === 2 && r.stderr.trim().split('\n').length === 1 && r.stderr.startsWith('niwa: error: --species'));
 }
 
+console.log(`(the WASM runs: ${W.summary()})`);
+rmSync(dir, { recursive: true, force: true });
 finish();

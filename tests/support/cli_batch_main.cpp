@@ -2,13 +2,15 @@
 // sanitized builds, where starting a process costs more than the case (0.3 CPU s to compile niwa.js
 // under node, 0.12-0.18 s to start the ASan binary).
 //
-// Usage: niwa_cli_batch CASES
+// Usage: niwa_cli_batch [--stdout] CASES
 // CASES holds the cases back to back, each "<index> <argc>\n" then per argument "<bytes>\n<arg>\n"
 // (arguments may hold any byte but NUL, newlines included). For each case it calls RunCli, the same
 // entry point as the niwa executable's main, with stdout discarded and stderr (its stream and
 // std::cerr, which a few warnings write to directly) captured, and prints one line on stdout:
 // "<index> <exit code> <stderr as a JSON string>", flushed, so a reader can time each case and tell
-// which one crashed or hung (the one after the last line).
+// which one crashed or hung (the one after the last line). With --stdout the line keeps the case's
+// stdout too: "<index> <exit code> [<stderr>,<stdout>]" (a JSON array of two strings), for the
+// native-against-WASM tests that compare what a run prints (tests/cli/moss_cli.test.mjs).
 //
 // What it does not do: isolate cases from each other (a case that corrupts memory or hangs ends the
 // batch: the reader restarts it after that case), or run a case with a fresh process's globals
@@ -60,14 +62,16 @@ bool ReadCase(std::istream& in, long* index, std::vector<std::string>* args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: niwa_cli_batch CASES\n");
+  const bool keep_stdout = argc == 3 && std::string(argv[1]) == "--stdout";
+  if (argc != 2 && !keep_stdout) {
+    std::fprintf(stderr, "usage: niwa_cli_batch [--stdout] CASES\n");
     return 2;
   }
   niwa::KeepFreedMemoryForReuse();
-  std::ifstream in(argv[1], std::ios::binary);
+  const char* const cases = argv[argc - 1];
+  std::ifstream in(cases, std::ios::binary);
   if (!in) {
-    std::fprintf(stderr, "niwa_cli_batch: cannot read %s\n", argv[1]);
+    std::fprintf(stderr, "niwa_cli_batch: cannot read %s\n", cases);
     return 2;
   }
   std::streambuf* const real_cout = std::cout.rdbuf();
@@ -88,7 +92,12 @@ int main(int argc, char** argv) {
     const int code = niwa::RunCli(args, out, err);
     std::cout.rdbuf(real_cout);
     std::cerr.rdbuf(real_cerr);
-    report << index << ' ' << code << ' ' << JsonString(err.str()) << std::endl;
+    if (keep_stdout) {
+      report << index << ' ' << code << " [" << JsonString(err.str()) << ','
+             << JsonString(out.str()) << ']' << std::endl;
+    } else {
+      report << index << ' ' << code << ' ' << JsonString(err.str()) << std::endl;
+    }
     ++ran;
   }
   return 0;
