@@ -1,5 +1,5 @@
 // Per-vertex tangents from positions, normals and uvs (area-weighted sum of per-triangle dP/du,
-// Gram-Schmidt against the normal, handedness from dP/dv).
+// Gram-Schmidt against the normal, handedness from -dP/dv: glTF's "+Y up the image").
 #include "geom/tangents.h"
 
 #include <cmath>
@@ -69,7 +69,9 @@ std::vector<float> ComputeTangentValues(const TriMesh& mesh) {
       tangent = usable ? UnitOrZero(along) : glm::dvec3(0.0);
       if (tangent == glm::dvec3(0.0)) {
         tangent = AnyPerpendicular(normal);
-      } else if (glm::dot(glm::cross(normal, tangent), bitangent_sum[v]) < 0.0) {
+      } else if (glm::dot(glm::cross(normal, tangent), bitangent_sum[v]) > 0.0) {
+        // glTF's normal texture has +Y up the image, and its uv origin is the image's top-left
+        // corner, so the map's +Y runs along -dP/dv: cross(normal, tangent) * w must too.
         w = -1.0;
       }
     }

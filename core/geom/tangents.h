@@ -20,8 +20,11 @@ inline constexpr char kTangentAttribute[] = "TANGENT";
 // tangent) and dP/dv (the bitangent) are solved from its edges, normalised and summed into its
 // three vertices weighted by the triangle's area (in double, in triangle order). At each vertex
 // the tangent sum is made orthogonal to the normal (Gram-Schmidt) and normalised; w is -1 when
-// cross(normal, tangent) points away from the bitangent sum (a mirrored uv map), else +1, so
-// bitangent = cross(normal, tangent.xyz) * w as glTF reads it. A vertex with no usable uv
+// cross(normal, tangent) points along the bitangent sum, else +1, so that bitangent =
+// cross(normal, tangent.xyz) * w (as glTF reads it) runs along -dP/dv: glTF's normal texture has
+// +Y up the image ("OpenGL" convention) and its uv origin at the image's top-left, so v grows
+// down the image. (three.js' GLTFLoader agrees: without TANGENT it derives B = +dP/dv and negates
+// normalScale.y.) A uv map seen from the front with u right and v down the image gets w = +1. A vertex with no usable uv
 // triangle (degenerate uvs, unused, or a tangent along its normal) gets a unit tangent
 // perpendicular to its normal and w = +1; a zero normal gets (1, 0, 0, 1). Never NaN for finite
 // input.

@@ -8,6 +8,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { buildName, check, finish, native, requireWasm, root, run, spawn, wasm } from '../support/cli_pair.mjs';
+import { mapUpAgreement } from '../support/tangent_frame.mjs';
 
 requireWasm();
 const require = createRequire(join(root, 'package.json'));
@@ -170,6 +171,9 @@ for (const model of ['2layer', '4layer']) {
     Math.abs(pos.max[0] - radius) < 1e-5 && Math.abs(pos.max[2] - radius) < 1e-5 && pos.min[1] === 0 && Math.abs(pos.max[1] - s.H_o * (1 + s.strain.z) / 100) < 1e-5 &&
     Math.min(...us) === 0 && Math.max(...us) === 1 && prim.attributes.TANGENT !== undefined,
     `${JSON.stringify(pos.min)} ${JSON.stringify(pos.max)} u ${Math.min(...us)}..${Math.max(...us)}`);
+  const up = mapUpAgreement(json, bin, prim);
+  check(`trunk.glb ${model}: cross(N, T) * w runs along -dP/dv (glTF's normal-map +Y) on ${up.agree} of ${up.triangles} triangles`,
+    up.triangles > 0 && up.agree === up.triangles);
   const m = json.materials[prim.material];
   const image = (t) => view(json.images[json.textures[t].source].bufferView);
   const base = join(dir, 'c.png');

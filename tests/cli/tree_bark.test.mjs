@@ -5,13 +5,15 @@
 // default (no --bark, or --bark procedural) writes the procedural .glb byte for byte; bad values of
 // --bark and its flags are one line naming the flag, exit 2, nothing written. Issue 32 item 2: both
 // .glb carry TANGENT (VEC4 floats: unit xyz perpendicular to NORMAL, w = +-1) on exactly the
-// primitives whose material has a normal texture, and the validator has no missing-tangent warning.
+// primitives whose material has a normal texture, and the validator has no missing-tangent warning;
+// their handedness turns the map's +Y along -dP/dv, as glTF's "+Y up the image" asks.
 import { mkdtempSync, readFileSync, readdirSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { buildName, check, finish, native, requireWasm, root, spawn, wasm, withoutMs } from '../support/cli_pair.mjs';
+import { mapUpAgreement } from '../support/tangent_frame.mjs';
 
 requireWasm();
 const require = createRequire(join(root, 'package.json'));
@@ -38,7 +40,7 @@ function parseGlb(bytes) {
     const size = { SCALAR: 1, VEC2: 2, VEC3: 3, VEC4: 4 }[a.type];
     return new Float32Array(bin.buffer.slice(bin.byteOffset + start, bin.byteOffset + start + a.count * size * 4));
   };
-  return { json, image, floats };
+  return { json, bin, image, floats };
 }
 
 // TANGENT on every normal-mapped primitive (and on no other), well formed; no validator warning.
@@ -49,7 +51,7 @@ async function checkTangents(label, bytes) {
     report.issues.numErrors === 0 && missing.length === 0,
     JSON.stringify(report.issues.messages.slice(0, 3)));
   const glb = parseGlb(bytes);
-  let mapped = 0, vertices = 0;
+  let mapped = 0, vertices = 0, triangles = 0, agree = 0;
   const bad = [];
   glb.json.meshes.forEach((mesh, i) => mesh.primitives.forEach((p, j) => {
     const normalMapped = p.material !== undefined && glb.json.materials[p.material].normalTexture !== undefined;
@@ -75,9 +77,15 @@ async function checkTangents(label, bytes) {
       }
     }
     vertices += a.count;
+    const up = mapUpAgreement(glb.json, glb.bin, p);
+    triangles += up.triangles;
+    agree += up.agree;
   }));
   check(`${label}: TANGENT on the ${mapped} normal-mapped primitives (${vertices} vertices), unit, perpendicular to NORMAL, w = +-1`,
     mapped > 0 && bad.length === 0, bad.slice(0, 3).join('; '));
+  // glTF's map +Y is -dP/dv (tests/support/tangent_frame.mjs): bumps lit from the right side.
+  check(`${label}: cross(N, T) * w runs along -dP/dv (glTF's normal-map +Y) on ${agree} of ${triangles} uv triangles`,
+    triangles > 0 && agree >= 0.99 * triangles);
 }
 
 // The sim .glb in both builds.

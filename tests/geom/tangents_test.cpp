@@ -1,5 +1,5 @@
 // Tangents for normal maps (geom/tangents): dP/du on a UV-mapped quad, a cylinder and planes with
-// affine uv maps, w = -1 for mirrored uvs, and a unit tangent perpendicular to the normal (never
+// affine uv maps, w = +1 where the map's +Y runs along -dP/dv (glTF), and a unit tangent perpendicular to the normal (never
 // NaN) for degenerate uvs and normals.
 #include "geom/tangents.h"
 
@@ -50,17 +50,18 @@ TEST(Tangents, QuadTangentIsDPdu) {
   ExpectWellFormed(m, t);
   for (std::size_t v = 0; v < 4; ++v) {
     EXPECT_EQ(TangentOf(t, v), glm::vec3(1, 0, 0)) << "vertex " << v;
-    EXPECT_EQ(t[v * 4 + 3], 1.0f);  // cross(+z, +x) = +y = dP/dv
+    // cross(+z, +x) = +y = dP/dv, but glTF's map +Y runs along -dP/dv (v grows down the image).
+    EXPECT_EQ(t[v * 4 + 3], -1.0f);
   }
 }
 
-TEST(Tangents, MirroredUvsGiveMinusOne) {
+TEST(Tangents, MirroringFlipsTheHandedness) {
   TriMesh m = Quad(true);
   const std::vector<float> t = ComputeTangentValues(m);
   ExpectWellFormed(m, t);
   for (std::size_t v = 0; v < 4; ++v) {
     EXPECT_EQ(TangentOf(t, v), glm::vec3(-1, 0, 0)) << "vertex " << v;
-    EXPECT_EQ(t[v * 4 + 3], -1.0f);  // cross(+z, -x) = -y, but dP/dv = +y
+    EXPECT_EQ(t[v * 4 + 3], 1.0f);  // cross(+z, -x) = -y = -dP/dv
   }
   // Mirrored in v instead: the tangent stays +x, the handedness flips.
   TriMesh flipped = Quad(false);
@@ -68,7 +69,7 @@ TEST(Tangents, MirroredUvsGiveMinusOne) {
   const std::vector<float> f = ComputeTangentValues(flipped);
   for (std::size_t v = 0; v < 4; ++v) {
     EXPECT_EQ(TangentOf(f, v), glm::vec3(1, 0, 0));
-    EXPECT_EQ(f[v * 4 + 3], -1.0f);
+    EXPECT_EQ(f[v * 4 + 3], 1.0f);  // dP/dv = -y: u right, v down, as an upright image
   }
 }
 
@@ -102,14 +103,15 @@ TEST(Tangents, CylinderTangentFollowsTheAngle) {
     const double a = 2 * kPi * static_cast<double>(v % (sides + 1)) / sides;
     const glm::vec3 expected(static_cast<float>(-std::sin(a)), 0, static_cast<float>(std::cos(a)));
     EXPECT_NEAR(glm::dot(TangentOf(t, v), expected), 1.0f, 1e-5f) << "vertex " << v;
-    // cross(n, dP/du) = -y while dP/dv = +y: this parameterisation is left-handed.
-    EXPECT_EQ(t[v * 4 + 3], -1.0f) << "vertex " << v;
+    // cross(n, dP/du) = -y = -dP/dv: the map's +Y runs down the cylinder, as v = 0 is its base
+    // row and glTF's images have row 0 at the top.
+    EXPECT_EQ(t[v * 4 + 3], 1.0f) << "vertex " << v;
   }
 }
 
 // Random triangles on a tilted plane with an affine uv map uv = M (x, y) + c in the plane's
 // frame (x, y): dP/du is the same on every triangle, the first column of M's inverse mapped back,
-// and w is the sign of det M (negative: mirrored).
+// and w is minus the sign of det M (glTF's v grows down the image).
 TEST(Tangents, AffineUvMapsOnAPlaneGiveTheExactDirection) {
   Pcg32 rng(7);
   for (int trial = 0; trial < 20; ++trial) {
@@ -137,7 +139,7 @@ TEST(Tangents, AffineUvMapsOnAPlaneGiveTheExactDirection) {
         glm::normalize(x * static_cast<float>(m11 / det) - y * static_cast<float>(m10 / det));
     for (std::size_t v = 0; v < m.vertex_count(); ++v) {
       EXPECT_NEAR(glm::dot(TangentOf(t, v), expected), 1.0f, 1e-4f) << "trial " << trial;
-      EXPECT_EQ(t[v * 4 + 3], det > 0 ? 1.0f : -1.0f) << "trial " << trial;
+      EXPECT_EQ(t[v * 4 + 3], det > 0 ? -1.0f : 1.0f) << "trial " << trial;
     }
   }
 }

@@ -302,7 +302,7 @@ TEST(GltfWriter, TangentsForNormalTextures) {
       model.accessors.at(static_cast<std::size_t>(prims[0].attributes.at("TANGENT")));
   EXPECT_EQ(accessor.type, TINYGLTF_TYPE_VEC4);
   EXPECT_EQ(Read<float>(model, prims[0].attributes.at("TANGENT")),
-            (std::vector<float>{-1, 0, 0, -1, -1, 0, 0, -1, -1, 0, 0, -1}));
+            (std::vector<float>{-1, 0, 0, 1, -1, 0, 0, 1, -1, 0, 0, 1}));  // cross(z, -x) = -dP/dv
   EXPECT_EQ(prims[1].attributes.count("TANGENT"), 0u);
   EXPECT_EQ(Read<float>(model, prims[2].attributes.at("TANGENT")), given.mesh.attributes[0].values);
   EXPECT_EQ(prims[3].attributes.count("TANGENT"), 0u);
