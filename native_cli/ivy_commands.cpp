@@ -7,8 +7,10 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "base/echo.h"
 #include "cli_common.h"
 #include "compose/ivy_on_tree.h"
 #include "io/mesh_reader.h"
@@ -35,7 +37,7 @@ constexpr FlagRange kSubdivideRange = {0, ivy::kMaxIvySubdivide, true};
 constexpr FlagRange kSvgLeavesRange = {0, 1, true};
 
 struct IvyOptions {
-  std::string scene, mesh, preset, params_file, url, accel = "bvh";
+  std::string scene, mesh, preset, params_file, url, accel = "bvh", units;
   double steps = 0, seed = 0, subdivide = 0, tree_years = 10, svg_leaves = 1;
   std::string tree_preset, caption;
   std::string out_path;
@@ -60,7 +62,8 @@ const run::FieldNames& IvyFlagNames() {
                                         {"tree", "--tree-preset"},
                                         {"tree_years", "--tree-years"},
                                         {"preset", "--preset"},
-                                        {"accel", "--accel"}};
+                                        {"accel", "--accel"},
+                                        {"scale", "--units"}};
   return names;
 }
 
@@ -99,6 +102,23 @@ ivy::IvyState ResolveState(const IvyOptions& o) {
     Check(AsFlag(ivy::SetIvyPreset("metric", &state), "--preset"));
   }
   for (const std::string& set : o.sets) Check(state.params.SetFromAssignment(set).Within("--set"));
+  // --units: the support's unit as the row "scale" (paper px per unit; 1 px = 1 mm), over the
+  // preset's and --set's; auto = 0, the support's own (a mesh file: from its bounds).
+  if (!o.units.empty()) {
+    const std::pair<const char*, double> units[] = {
+        {"auto", 0}, {"px", 1}, {"mm", 1}, {"cm", 10}, {"m", 1000}};
+    bool known = false;
+    for (const auto& [name, k] : units) {
+      if (o.units != name) continue;
+      Check(state.params.Set(IvyParam::kScale, k));
+      known = true;
+    }
+    if (!known) {
+      Fail(Status::Error("--units", "'" + Echo(o.units) +
+                                        "' is unknown; must be auto, px, mm, cm "
+                                        "or m"));
+    }
+  }
   // The flags' own strict parse (their lines), then the state's setters.
   // The flags were parsed strictly (AddNumberFlag); the state's setters check the rest.
   if (o.cmd->count("--steps")) Check(AsIvyFlags(ivy::SetIvySteps(o.steps, &state)));
@@ -196,7 +216,8 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   if (!run.ok()) Fail(AsIvyFlags(run.status()));
   Check(AsIvyFlags(run->Advance({})));
   ReportTruncated(run->log().truncated_by);
-  // Nothing grown is an error, not an empty file (a row named by the core is a --set row).
+  // Nothing grown is an error, not an empty file (a row named by the core is a --set row; its
+  // scale is --units).
   if (Status grew = run->CheckGrewSomething(); grew.field() == "L") {
     Fail(Status::Error("--set L", grew.message()));
   } else {
@@ -304,6 +325,10 @@ void AddIvyCommands(CLI::App& app, CommandList& commands) {
   AddNumberFlag(grow, "--seed", &o->seed, kSeedRange,
                 "Random seed, " + RangeHelp(kSeedRange) + " (default 1)");
   grow->add_option("--preset", o->preset, "paper (default), literal, improved or metric");
+  grow->add_option("--units", o->units,
+                   "The support's unit: auto (default: a built-in scene's px, a tree's m, a mesh "
+                   "file's from its bounds), px, mm, cm or m; the preset's lengths are in px "
+                   "(1 px = 1 mm)");
   grow->add_option("--set", o->sets, "KEY=VALUE of the ivy table ('niwa params ivy')");
   AddInputFlag(grow, "--params", &o->params_file,
                "State JSON {preset, seed, steps, params}; other flags override it");

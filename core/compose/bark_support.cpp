@@ -41,7 +41,7 @@ geom::TriMesh BarkTriMesh(const MeshBuffers& bark) {
 }
 
 Result<BarkSupport> GrowBarkSupport(const std::string& preset, double years,
-                                    const BarkBudget* budget) {
+                                    const BarkBudget* budget, const BarkProgress& on_stage) {
   TreeState state;
   Status s = SetStatePreset(preset, &state);
   if (!s.ok()) return Status::Error("tree", s.message());
@@ -56,7 +56,10 @@ Result<BarkSupport> GrowBarkSupport(const std::string& preset, double years,
                                              kTriMeshBytesPerTriangle * kBarkTrianglesPerInternode;
   }
   Grower grower(state);
-  while (grower.year() < state.years && !grower.stopped()) grower.GrowYear();
+  while (grower.year() < state.years && !grower.stopped()) {
+    grower.GrowYear();
+    if (on_stage) on_stage("tree", grower.year(), state.years);
+  }
   BarkSupport out;
   out.estimate = grower.estimate();
   const Tree tree = grower.TakeTree();
@@ -80,6 +83,7 @@ Result<BarkSupport> GrowBarkSupport(const std::string& preset, double years,
       if (!s.ok()) return s;
     }
   }
+  if (on_stage) on_stage("bark", 0, static_cast<double>(CountTree(tree).internodes));
   out.description =
       "the bark of Niwa's " + preset + " tree at " + FormatNumber(years) + " years (metres)";
   out.mesh = BarkTriMesh(BuildTreeMesh(tree).bark);

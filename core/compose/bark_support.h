@@ -6,6 +6,7 @@
 // support (ivy climbs bark only), or build the climber's BVH.
 #pragma once
 
+#include <functional>
 #include <glm/vec3.hpp>
 #include <string>
 
@@ -45,7 +46,11 @@ geom::TriMesh BarkTriMesh(const MeshBuffers& bark);
 // alive internode, so it stops (truncated_by) where the bark still fits; the grown bark's estimate
 // is then checked, and a bark beyond the budget is refused with the line naming the limit
 // (field budget.memory_limit or budget.seconds_limit) before the mesh is built.
+// on_stage (optional): called after every year ("tree", year, years) and before the bark is built
+// ("bark", 0, internodes), so a page's progress line moves through a long tree (issue 31 item 7).
+using BarkProgress = std::function<void(const char* stage, double done, double total)>;
 Result<BarkSupport> GrowBarkSupport(const std::string& preset, double years,
-                                    const BarkBudget* budget = nullptr);
+                                    const BarkBudget* budget = nullptr,
+                                    const BarkProgress& on_stage = {});
 
 }  // namespace niwa::compose

@@ -9,6 +9,7 @@
 
 #include "base/budget.h"
 #include "base/status.h"
+#include "compose/bark_support.h"
 #include "ivy/ivy_run.h"
 
 namespace niwa::compose {
@@ -17,8 +18,10 @@ namespace niwa::compose {
 // shared with the ivy's own; a truncation line tells the user to lower `years_name`) and returns
 // it as a prepared ivy support: scene "tree:<preset>" whose one named seed, "trunk", is the +z side
 // of the trunk foot, with the tree's and its bark's estimate and the tree's stop line ("" if none).
+// on_stage: GrowBarkSupport's progress (every year, then the bark).
 Result<ivy::IvySupportInput> IvyTreeSupport(const std::string& preset, double years,
                                             const Budget& budget,
-                                            const std::string& years_name = "tree_years");
+                                            const std::string& years_name = "tree_years",
+                                            const BarkProgress& on_stage = {});
 
 }  // namespace niwa::compose

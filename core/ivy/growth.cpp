@@ -25,7 +25,8 @@ char BudSymbol(BudKind kind) {
 }
 
 const char* RejectName(int reason) {
-  static const char* names[] = {"gravitropism", "bend", "far", "near", "collision", "crowding"};
+  static const char* names[] = {"gravitropism", "bend",     "far", "near",
+                                "collision",    "crowding", "body"};
   return reason >= 0 && reason < kRejectCount ? names[reason] : "";
 }
 
@@ -255,10 +256,22 @@ class Grower {
   // The search's parameters, read once per search.
   struct SearchParams {
     double g_min, max_bend, r_avoid, wd, wa, wg;
+    double body;  // the body's largest distance to a face (body · d); 0: not checked
   };
   SearchParams ReadSearchParams() const {
-    return {p_.Get(IvyParam::kGMin),  p_.Get(IvyParam::kMaxBend) * kDeg, p_.Get(IvyParam::kAvoid),
-            p_.Get(IvyParam::kWDist), p_.Get(IvyParam::kWAngle),         p_.Get(IvyParam::kWGrav)};
+    return {p_.Get(IvyParam::kGMin),     p_.Get(IvyParam::kMaxBend) * kDeg,
+            p_.Get(IvyParam::kAvoid),    p_.Get(IvyParam::kWDist),
+            p_.Get(IvyParam::kWAngle),   p_.Get(IvyParam::kWGrav),
+            p_.Get(IvyParam::kBody) * d_};
+  }
+
+  // Is a point of the body p→q farther than `reach` from every face? Its quarter points and
+  // midpoint (issue 31 item 6: the nodes alone let bodies reach 1.35 d over a convex edge).
+  bool BodyAway(const glm::dvec3& p, const glm::dvec3& q, double reach) {
+    for (double t : {0.5, 0.25, 0.75}) {
+      if (!Closest(p + t * (q - p), reach).found) return true;
+    }
+    return false;
   }
 
   // E8-E9 on the candidate q = p + L·u of bud `from`: the rejection reason (counted in the log),
@@ -285,6 +298,8 @@ class Grower {
         reason = kCollision;
       } else if (sp.r_avoid > 0 && Crowded(from, p, q, sp.r_avoid)) {
         reason = kCrowding;
+      } else if (sp.body > 0 && BodyAway(p, q, sp.body)) {
+        reason = kBody;
       }
     }
     if (reason >= 0) {
@@ -340,14 +355,16 @@ class Grower {
         return true;
       }
       // E10: correct the direction by the dominant reason (ties: collision > far > near >
-      // gravitropism > bend > crowding), then widen the cone.
-      static const int kPriority[] = {kCollision, kFar, kNear, kGravitropism, kBend, kCrowding};
+      // gravitropism > bend > crowding > body), then widen the cone; body turns toward the
+      // surface as far does.
+      static const int kPriority[] = {kCollision, kFar,      kNear, kGravitropism,
+                                      kBend,      kCrowding, kBody};
       int dominant = kPriority[0];
       for (int reason : kPriority)
         if (rejects[static_cast<std::size_t>(reason)] > rejects[static_cast<std::size_t>(dominant)])
           dominant = reason;
       glm::dvec3 nv = v;
-      if (dominant == kFar) {
+      if (dominant == kFar || dominant == kBody) {
         geom::ClosestHit c = Closest(p, std::numeric_limits<double>::infinity());
         if (c.found) nv = Unit(v + Unit(glm::dvec3(c.point) - p));
       } else if (dominant == kCollision || dominant == kNear) {

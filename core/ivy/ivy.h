@@ -70,7 +70,9 @@ struct IvyModel {
 };
 
 // Rejection reasons of the position search (E8), in the order they are tested.
-enum Reject : int { kGravitropism, kBend, kFar, kNear, kCollision, kCrowding, kRejectCount };
+// kBody (appended, issue 31 item 6): a point of the internode's body farther than body·d from
+// every face (the row "body"; 0: off, nodes only).
+enum Reject : int { kGravitropism, kBend, kFar, kNear, kCollision, kCrowding, kBody, kRejectCount };
 const char* RejectName(int reason);
 
 // The candidates of the tangent fan (growth.cpp's TangentRetry, parameter tangent_retry): 16

@@ -6,6 +6,8 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "geom/linear_queries.h"
+#include "geom/ray_cast.h"
 #include "io/gltf_writer.h"
 #include "ivy/ivy_leaf_texture.h"
 #include "math/det_math.h"
@@ -106,9 +108,20 @@ std::vector<glm::vec2> LeafOutlineUvs() {
   return uvs;
 }
 
+// Does the segment a→b touch the support (every triangle: obstacles too)?
+bool Crosses(const Support& s, const glm::dvec3& a, const glm::dvec3& b) {
+  if (s.accel == Accel::kLinear)
+    return geom::SegmentHitsLinear(*s.mesh, glm::vec3(a), glm::vec3(b));
+  return geom::SegmentHits(*s.mesh, *s.bvh, glm::vec3(a), glm::vec3(b));
+}
+
+// The blade's turns about the face normal tried in order (issue 31 item 7), in degrees.
+constexpr double kLeafTurns[] = {0, 45, -45, 90, -90, 135, -135, 180};
+
 }  // namespace
 
-IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p) {
+IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p, const Support* support,
+                         LeafPlacement* placement) {
   const double r_tip = p.Get(IvyParam::kRTip), pipe = p.Get(IvyParam::kPipeExp);
   const double leaf = p.Get(IvyParam::kLeafSize), petiole = p.Get(IvyParam::kPetiole);
   const double tau = p.Get(IvyParam::kLeafAge), tilt = p.Get(IvyParam::kLeafTilt);
@@ -162,26 +175,72 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p) {
     }
     suckers.Fan(b.anchor + 0.01 * L * n, t1, t2, disc, b.born_step);
     if (b.parent < 0) continue;
-    // Leaf opposite the sucker: petiole along n tilted toward up, blade normal ≈ n.
+    // Leaf opposite the sucker: petiole along n tilted toward up, blade normal ≈ n. With the
+    // support: n is the anchor face's normal on the bud's side, and the leaf turns about it, then
+    // shrinks, until its petiole, spokes and rim cross no face (LeafPlacement).
+    glm::dvec3 leaf_n = n;
+    const bool check = support != nullptr && support->mesh != nullptr && b.anchor_tri >= 0;
+    if (check) {
+      const geom::TriMesh& attach = support->attach_mesh ? *support->attach_mesh : *support->mesh;
+      const glm::dvec3 face = TriangleNormal(attach, static_cast<uint32_t>(b.anchor_tri));
+      leaf_n = glm::dot(face, b.pos - b.anchor) < 0 ? -face : face;
+    }
     double st, ct;
     det::SinCos(tilt * det::kPi / 180.0, &st, &ct);
-    glm::dvec3 up_t = up - glm::dot(up, n) * n;
-    up_t = glm::dot(up_t, up_t) > 1e-12 ? UnitOrUp(up_t) : t1;
-    const glm::dvec3 pet_dir = UnitOrUp(ct * n + st * up_t);
-    const glm::dvec3 base = b.pos + petiole * pet_dir;
+    glm::dvec3 up_t = up - glm::dot(up, leaf_n) * leaf_n;
+    up_t = glm::dot(up_t, up_t) > 1e-12 ? UnitOrUp(up_t) : Perpendicular(leaf_n);
     const double age = static_cast<double>(last_step - b.born_step);
-    const double width = leaf * std::min(1.0, (age + 1.0) / tau);
-    const glm::dvec3 across = UnitOrUp(glm::cross(up_t, n));
+    const double full_width = leaf * std::min(1.0, (age + 1.0) / tau);
+    glm::dvec3 dir_t = up_t, base = b.pos;
+    double width = full_width;
+    std::vector<glm::dvec2> blade;
+    bool placed = false;
+    for (int halving = 0; halving < 3 && !placed; ++halving) {
+      for (double turn : kLeafTurns) {
+        double sa, ca;
+        det::SinCos(turn * det::kPi / 180.0, &sa, &ca);
+        dir_t = ca * up_t + sa * glm::cross(leaf_n, up_t);
+        width = full_width / static_cast<double>(1 << halving);
+        const double pet = petiole / static_cast<double>(1 << halving);
+        base = b.pos + pet * UnitOrUp(ct * leaf_n + st * dir_t);
+        blade = LeafOutline(width);
+        if (!check) {
+          placed = true;
+          break;
+        }
+        const glm::dvec3 across = UnitOrUp(glm::cross(dir_t, leaf_n));
+        bool crosses = Crosses(*support, b.pos, base);
+        glm::dvec3 prev = base + blade.back().x * across + blade.back().y * dir_t;
+        for (std::size_t k = 0; k < blade.size() && !crosses; ++k) {
+          const glm::dvec3 q = base + blade[k].x * across + blade[k].y * dir_t;
+          crosses = Crosses(*support, base, q) || Crosses(*support, prev, q);
+          prev = q;
+        }
+        if (!crosses) {
+          placed = true;
+          if (placement && (turn != 0 || halving > 0)) ++placement->turned;
+          if (placement && halving > 0) ++placement->shrunk;
+          break;
+        }
+      }
+    }
+    if (check && !placed && placement) {
+      ++placement->turned;
+      ++placement->shrunk;
+      ++placement->crossing;
+    }
+    const glm::dvec3 across = UnitOrUp(glm::cross(dir_t, leaf_n));
     leaves.uv = petiole_uv;
     leaves.Tube(b.pos, base, 0.3 * r_tip, 0.3 * r_tip, b.born_step);
-    leaves.Fan(base, across, up_t, LeafOutline(width), b.born_step, &outline_uvs, base_uv);
+    leaves.Fan(base, across, dir_t, blade, b.born_step, &outline_uvs, base_uv);
   }
   return {stems.Done(), leaves.Done(), suckers.Done()};
 }
 
 Result<gltf::Document> BuildIvyDocument(const IvyModel& model, const IvyParams& params,
-                                        uint64_t seed, int steps, const geom::TriMesh* support) {
-  IvyMeshes meshes = BuildIvyMeshes(model, params);
+                                        uint64_t seed, int steps, const geom::TriMesh* support,
+                                        const Support* leaves_outside) {
+  IvyMeshes meshes = BuildIvyMeshes(model, params, leaves_outside);
   gltf::Document doc;
   doc.scene_name = "ivy";
   nlohmann::json extras;
@@ -244,8 +303,10 @@ Result<gltf::Document> BuildIvyDocument(const IvyModel& model, const IvyParams& 
 
 Result<std::vector<unsigned char>> WriteIvyGlb(const IvyModel& model, const IvyParams& params,
                                                uint64_t seed, int steps,
-                                               const geom::TriMesh* support) {
-  Result<gltf::Document> doc = BuildIvyDocument(model, params, seed, steps, support);
+                                               const geom::TriMesh* support,
+                                               const Support* leaves_outside) {
+  Result<gltf::Document> doc =
+      BuildIvyDocument(model, params, seed, steps, support, leaves_outside);
   if (!doc.ok()) return doc.status();
   return gltf::WriteGlb(*doc);
 }

@@ -11,6 +11,7 @@
 #include "base/status.h"
 #include "geom/tri_mesh.h"
 #include "io/gltf_writer.h"
+#include "ivy/growth.h"
 #include "ivy/ivy.h"
 #include "ivy/ivy_params.h"
 
@@ -20,18 +21,31 @@ struct IvyMeshes {
   geom::TriMesh stems, leaves, suckers;  // each with the attribute "birth_step" (1 float)
 };
 
-IvyMeshes BuildIvyMeshes(const IvyModel& model, const IvyParams& params);
+// With `support` (the one the ivy grew on; issue 31 item 7), every leaf sits outside it: its
+// petiole leaves along the anchor face's normal (turned to the bud's side), and a leaf whose
+// petiole, spokes or rim would cross a face is turned about that normal (±45°, ±90°, ±135°,
+// 180°), then halved (twice), until none does; the last try is kept (LeafPlacement counts).
+// Without it, the leaf stands along unit(pos - anchor), unchecked (the spec's §1.5 as before).
+struct LeafPlacement {
+  std::size_t turned = 0;    // leaves not in their first direction
+  std::size_t shrunk = 0;    // leaves halved
+  std::size_t crossing = 0;  // leaves whose last try still crosses a face
+};
+IvyMeshes BuildIvyMeshes(const IvyModel& model, const IvyParams& params,
+                         const Support* support = nullptr, LeafPlacement* placement = nullptr);
 
 // The glTF document of the .glb, for a writer or a composer to merge: nodes ivy_stems, ivy_leaves,
 // ivy_suckers (+ support when given), asset extras = {params, seed, steps}. `_BIRTH_STEP` per
 // vertex. Error: the leaf texture's PNG.
 Result<gltf::Document> BuildIvyDocument(const IvyModel& model, const IvyParams& params,
                                         uint64_t seed, int steps,
-                                        const geom::TriMesh* support = nullptr);
+                                        const geom::TriMesh* support = nullptr,
+                                        const Support* leaves_outside = nullptr);
 
 // The .glb: gltf::WriteGlb of BuildIvyDocument.
 Result<std::vector<unsigned char>> WriteIvyGlb(const IvyModel& model, const IvyParams& params,
                                                uint64_t seed, int steps,
-                                               const geom::TriMesh* support = nullptr);
+                                               const geom::TriMesh* support = nullptr,
+                                               const Support* leaves_outside = nullptr);
 
 }  // namespace niwa::ivy

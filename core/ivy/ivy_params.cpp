@@ -1,8 +1,10 @@
 // The ivy table's rows (Table 2 of Shindo & Sakamoto and the choices of docs/ivy-model.md), the
-// cross-row checks and the four presets.
+// cross-row checks, the four presets and the scale (paper pixels per scene unit).
 #include "ivy/ivy_params.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "params/embedded_presets.h"
 #include "params/param_text.h"
@@ -76,6 +78,15 @@ std::vector<ParamSpec> Rows() {
       {35, "tangent_retry", "", "", 1, 0, 1, true, "search", g,
        "When every retry failed, try a fixed fan of directions in the face's tangent plane and "
        "tilted over its edge (0: off, the plain E10)."},
+      // Appended last (issue 31 item 4): the scale is the support's, not a preset's. Every row in
+      // px is in the paper's pixels, divided by this when the run starts (IvyScaledParams).
+      {36, "scale", "k", "px/unit", 0, 0, 1e9, false, "scale", g,
+       "Paper pixels per scene unit (1 px = 1 mm): 1000 metres, 10 cm, 1 mm or px; 0 = the "
+       "support's own (built-in scenes 1, a tree 1000, a mesh file 1200 / its largest extent)."},
+      // Appended (issue 31 item 6): §3.2's condition (b) checked along the internode too.
+      {37, "body", "", "d", 0, 0, 10, false, "search", g,
+       "Largest distance of an internode's midpoint and quarter points from a face, in d (0: "
+       "off, only the nodes are checked; 1: the body stays within d)."},
   };
 }
 
@@ -91,7 +102,8 @@ const std::vector<Preset>& Presets();
 
 const ParamTable& IvyTable() {
   static const ParamTable table("ivy", Rows(),
-                                {{"rules", "Nutrient rules (Table 2, p0-p3)"},
+                                {{"scale", "Scale (the support's units)"},
+                                 {"rules", "Nutrient rules (Table 2, p0-p3)"},
                                  {"lateral", "Lateral rotation R(θx, θy, θz)"},
                                  {"search", "Position search (§3.2)"},
                                  {"improved", "The paper's two problems (§4)"},
@@ -144,6 +156,38 @@ Status ValidateIvyParams(const IvyParams& p) {
     return Status::Error("up_y", "the up vector (up_x, up_y, up_z) is zero; must be non-zero");
   }
   return Status::Ok();
+}
+
+bool IsIvyLength(std::size_t row) { return std::strcmp(IvyTable().row(row).unit, "px") == 0; }
+
+double IvyPxPerUnit(const IvyParams& params, double support_px_per_unit, double support_extent) {
+  const double k = params.Get(IvyParam::kScale);
+  if (k > 0) return k;
+  if (support_px_per_unit > 0) return support_px_per_unit;
+  if (support_extent > 0 && std::isfinite(support_extent)) return kIvyPaperExtent / support_extent;
+  return 1;
+}
+
+Result<IvyParams> IvyScaledParams(const IvyParams& declared, double px_per_unit) {
+  if (!(px_per_unit > 0) || !std::isfinite(px_per_unit)) {
+    return Status::Error("scale", FormatNumber(px_per_unit) +
+                                      " px per unit is out of range; must be a number in (0, 1e9]");
+  }
+  IvyParams out = declared;
+  for (std::size_t row = 0; row < out.size(); ++row) {
+    if (!IsIvyLength(row)) continue;
+    // A division (not a product with 1/k): 50 px at 1000 px/m is 0.05 exactly as written.
+    const double value = declared.Get(row) / px_per_unit;
+    if (!out.Set(row, value).ok()) {
+      const ParamSpec& spec = IvyTable().row(row);
+      return Status::Error("scale",
+                           FormatNumber(px_per_unit) + " px per unit makes " + spec.key + " = " +
+                               FormatNumber(declared.Get(row)) + " px " + FormatNumber(value) +
+                               " scene units, outside its range; must make every length row fit");
+    }
+  }
+  NIWA_RETURN_IF_ERROR(out.Set(IvyParam::kScale, 1));
+  return out;
 }
 
 const std::vector<std::string>& IvyPresetNames() {

@@ -57,6 +57,10 @@ enum class IvyParam : int {
   kLeafTilt,
   // appended after the look rows (row ids are URL/JSON-stable): the position search's last resort
   kTangentRetry,
+  // appended (issue 31 item 4): paper pixels per scene unit; 0 = the support's own
+  kScale,
+  // appended (issue 31 item 6): the internode body's largest distance to a face, in d; 0 = off
+  kBody,
   kCount
 };
 
@@ -67,6 +71,20 @@ using IvyParams = StudyParams<IvyParam>;
 // Checks what one row's range cannot: t1 < t2 (§3.1), alpha > 1/2 ("A more than D"), eps < d, a
 // non-zero up vector. The error names the row and its allowed range.
 Status ValidateIvyParams(const IvyParams& params);
+
+// The scale (issue 31 item 4). The rows whose unit is "px" (L, d, eps, avoid, r_tip, leaf_size,
+// petiole) are in the paper's pixels (Table 2: L = 50 on cubes4, 1200 px high; 1 px = 1 mm, the
+// old metric preset's reading); a run divides them by the pixels per scene unit, so the rules of
+// any preset run on a support in any unit.
+constexpr double kIvyPaperExtent = 1200;  // cubes4's largest extent, px
+bool IsIvyLength(std::size_t row);        // the row's unit is "px"
+// The pixels per scene unit of a run: the row "scale" when > 0, else the support's own (its
+// px_per_unit: 1 on a built-in scene, 1000 on a tree), else its bounds (kIvyPaperExtent / its
+// largest extent, so it is as big as cubes4 in pixels), else 1.
+double IvyPxPerUnit(const IvyParams& params, double support_px_per_unit, double support_extent);
+// The parameters in scene units: every length row divided by px_per_unit, "scale" set to 1 (the
+// lengths now are per unit). Error "scale" naming the row a scale pushes out of its range.
+Result<IvyParams> IvyScaledParams(const IvyParams& declared, double px_per_unit);
 
 // The preset names, in the order `niwa presets ivy` prints them.
 const std::vector<std::string>& IvyPresetNames();

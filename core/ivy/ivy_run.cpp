@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -33,7 +34,8 @@ Result<IvyExport> ExportKind(const std::string& format) {
 }
 
 // The default seed of a dropped mesh: the surface point nearest to a point in front of the mesh
-// (+z) at a tenth of its height (Grow lifts it to d/2 off that face).
+// (+z) at a tenth of its height, 1e-5 of its extent toward that point (Grow lifts it to d/2 off
+// that face, on that side).
 void AddFrontSeed(const geom::TriMesh& seedable, const geom::Bvh& bvh, IvyScene* scene) {
   if (seedable.triangle_count() == 0) return;
   const geom::Bounds3 b = geom::MeshBounds(seedable);
@@ -42,7 +44,15 @@ void AddFrontSeed(const geom::TriMesh& seedable, const geom::Bvh& bvh, IvyScene*
                         b.max.z + std::max({size.x, size.y, size.z}));
   geom::ClosestHit hit =
       geom::ClosestPoint(seedable, bvh, probe, std::numeric_limits<float>::infinity());
-  if (hit.found) scene->seeds.push_back({"front", glm::dvec3(hit.point)});
+  if (!hit.found) return;
+  // A hair off the surface toward the probe, which is outside: Grow lifts a seed to the side it is
+  // on, and one exactly on the surface along the face's winding, which a scan with inward faces
+  // turns inside (issue 31 item 7: the ivy, leaves and all, grew inside the bunny).
+  const glm::dvec3 at(hit.point);
+  const glm::dvec3 to_probe = glm::dvec3(probe) - at;
+  const double extent = std::max({size.x, size.y, size.z});
+  const double len = std::sqrt(glm::dot(to_probe, to_probe));
+  scene->seeds.push_back({"front", len > 0 ? at + to_probe * (1e-5 * extent / len) : at});
 }
 
 // One of the state's seed_point_items on a scene: "X,Y,Z" (each in [-1e30, 1e30]) or one of the
@@ -196,6 +206,10 @@ Result<std::shared_ptr<const IvySupport>> IvySupport::Prepare(IvySupportInput in
   s.estimate_.seconds += prepared_seconds;
   if (options.check_budget)
     NIWA_RETURN_IF_ERROR(CheckEstimate(s.estimate_, budget, options.change));
+  if (!s.scene_.free && s.scene_.mesh.triangle_count() > 0) {
+    const geom::Bounds3 b = geom::MeshBounds(s.scene_.mesh);
+    if (!b.empty()) s.extent_ = std::max({b.max.x - b.min.x, b.max.y - b.min.y, b.max.z - b.min.z});
+  }
   if (levels > 0 && !s.scene_.free) s.scene_.mesh = geom::Subdivide(s.scene_.mesh, levels);
   const auto t0 = Clock::now();
   s.accel_ = options.accel;
@@ -207,6 +221,14 @@ Result<std::shared_ptr<const IvySupport>> IvySupport::Prepare(IvySupportInput in
   }
   s.ms_bvh_ = Ms(t0, Clock::now());
   return std::shared_ptr<const IvySupport>(std::move(out));
+}
+
+double IvySupport::px_per_unit() const {
+  return IvyPxPerUnit(IvyParams(), scene_.px_per_unit, extent_);
+}
+
+Result<IvyParams> IvySupport::Scaled(const IvyParams& declared) const {
+  return IvyScaledParams(declared, IvyPxPerUnit(declared, scene_.px_per_unit, extent_));
 }
 
 Support IvySupport::ForGrow() const {
@@ -233,13 +255,21 @@ Result<IvyRun> IvyRun::Start(const IvyState& state, std::shared_ptr<const IvySup
   Result<std::vector<glm::dvec3>> seeds = SeedsOn(run.state_, *run.support_);
   if (!seeds.ok()) return seeds.status();
   run.seeds_ = std::move(seeds).value();
+  Result<IvyParams> scaled = run.support_->Scaled(run.state_.params);
+  if (!scaled.ok()) return scaled.status();
+  run.params_ = std::move(scaled).value();
+  run.leaf_support_ = run.support_->ForGrow();
   run.SetLimits();
   run.timings_.ms_bvh = run.support_->ms_bvh();
   return run;
 }
 
+const Support* IvyRun::LeafSupport() const {
+  return leaf_support_.mesh != nullptr ? &leaf_support_ : nullptr;
+}
+
 void IvyRun::SetLimits() {
-  limits_ = IvyLimits(state_.params, budget_, support_->estimate(), !support_->free());
+  limits_ = IvyLimits(params_, budget_, support_->estimate(), !support_->free());
   limits_.bytes_per_bud += options_.extra_bytes_per_bud;
   if (!options_.change.empty()) limits_.change = options_.change;
   grow_limits_ = limits_;
@@ -267,7 +297,7 @@ Status IvyRun::Advance(const run::Observer& observer) {
       return ExportEstimateOf(model, so_far, options_.planned_export,
                               options_.planned_with_support);
     return EstimateIvyGrown(model, so_far, limits_) +
-           EstimateIvyStats(CountIvyStatsWork(model, state_.params, support_->triangles()));
+           EstimateIvyStats(CountIvyStatsWork(model, params_, support_->triangles()));
   };
   const std::string change =
       options_.planned_export.empty() ? options_.stats_change : options_.export_change;
@@ -304,8 +334,8 @@ Status IvyRun::Advance(const run::Observer& observer) {
     return !observer || observer({"grow", static_cast<double>(step), static_cast<double>(steps)});
   };
   ++grows_;
-  Result<IvyModel> model = Grow(support_->ForGrow(), seeds_, state_.params, state_.steps,
-                                state_.seed, &log, &grow_limits_, on_step);
+  Result<IvyModel> model = Grow(support_->ForGrow(), seeds_, params_, state_.steps, state_.seed,
+                                &log, &grow_limits_, on_step);
   if (!early.ok()) return early;
   if (!model.ok()) return model.status();
   model_ = std::move(model).value();
@@ -315,8 +345,12 @@ Status IvyRun::Advance(const run::Observer& observer) {
   timings_.ms_mesh = 0;
   meshes_ = IvyMeshes{};
   if (options_.build_meshes) {
+    // A stage of its own on the progress line (a big ivy's leaves are checked against the
+    // support); its answer cannot cancel a grown ivy.
+    const double buds = static_cast<double>(model_.buds.size());
+    if (observer) (void)observer({"meshing", 0, buds});
     const auto t0 = Clock::now();
-    meshes_ = BuildIvyMeshes(model_, state_.params);
+    meshes_ = BuildIvyMeshes(model_, params_, LeafSupport());
     ++remeshes_;
     timings_.ms_mesh = Ms(t0, Clock::now());
   }
@@ -341,6 +375,9 @@ Status IvyRun::Update(const IvyState& given) {
   }
   Result<std::vector<glm::dvec3>> seeds = SeedsOn(state, *support_);
   if (!seeds.ok()) return seeds.status();
+  Result<IvyParams> scaled = support_->Scaled(state.params);
+  if (!scaled.ok()) return scaled.status();
+  params_ = std::move(scaled).value();
   state_ = state;
   seeds_ = std::move(seeds).value();
   SetLimits();
@@ -353,7 +390,7 @@ Status IvyRun::Update(const IvyState& given) {
   }
   if (remesh && options_.build_meshes) {
     const auto t0 = Clock::now();
-    meshes_ = BuildIvyMeshes(model_, state_.params);
+    meshes_ = BuildIvyMeshes(model_, params_, LeafSupport());
     ++remeshes_;
     timings_.ms_mesh = Ms(t0, Clock::now());
   }
@@ -386,34 +423,40 @@ std::vector<run::Part> IvyRun::Parts() const {
 
 Result<gltf::Document> IvyRun::Document() const {
   if (!grown_) return Status::Error("ivy", "nothing grown yet");
-  return BuildIvyDocument(model_, state_.params, state_.seed, state_.steps, nullptr);
+  return BuildIvyDocument(model_, params_, state_.seed, state_.steps, nullptr, LeafSupport());
 }
 
 Estimate IvyRun::StatsEstimate() const {
-  return EstimateIvyStats(CountIvyStatsWork(model_, state_.params, support_->triangles()));
+  return EstimateIvyStats(CountIvyStatsWork(model_, params_, support_->triangles()));
 }
 
 Status IvyRun::CheckGrewSomething() const {
   if (state_.steps == 0 || !model_.internodes.empty() || !log_.truncated_by.empty())
     return Status::Ok();
-  const double L = state_.params.Get(IvyParam::kL), d = state_.params.Get(IvyParam::kD);
-  double size = 0;
-  if (const geom::TriMesh* mesh = support_->mesh()) {
-    const geom::Bounds3 b = geom::MeshBounds(*mesh);
-    if (!b.empty()) size = std::max({b.max.x - b.min.x, b.max.y - b.min.y, b.max.z - b.min.z});
-  }
+  const double L = params_.Get(IvyParam::kL), d = params_.Get(IvyParam::kD);
+  const double size = support_->extent();
   const std::string grew = "grew no internode in " + std::to_string(state_.steps) + " steps";
   if (size > 0 && std::max(L, d) >= 0.5 * size) {
+    // The lengths are the preset's (in px) and a scale was given (the row, or the preset's own):
+    // the scale does not fit the support; else the user's own L or d do not.
     Result<IvyParams> preset = IvyPreset(state_.preset);
-    const bool presets_lengths =
-        preset.ok() && preset->Get(IvyParam::kL) == L && preset->Get(IvyParam::kD) == d;
-    return Status::Error(presets_lengths ? "preset" : "L",
-                         grew + ": its internode length L = " + FormatNumber(L) +
-                             " and distance d = " + FormatNumber(d) +
-                             " are in the support's units, and the support is " +
-                             FormatNumber(std::round(size * 1000) / 1000) + " across; " +
-                             (presets_lengths ? "pick a preset of its scale (metric for metres)"
-                                              : "set L and d below half its size"));
+    const bool presets_lengths = preset.ok() &&
+                                 preset->Get(IvyParam::kL) == state_.params.Get(IvyParam::kL) &&
+                                 preset->Get(IvyParam::kD) == state_.params.Get(IvyParam::kD);
+    const double k = state_.params.Get(IvyParam::kScale);
+    const std::string across = " scene units, and the support is " +
+                               FormatNumber(std::round(size * 1000) / 1000) + " across";
+    if (presets_lengths && k > 0) {
+      return Status::Error(
+          "scale", grew + ": at " + FormatNumber(k) + " px per unit the internode length L = " +
+                       FormatNumber(L) + " and distance d = " + FormatNumber(d) + across +
+                       "; give the support's units (m, cm, mm, px) or 0 to read the scale from "
+                       "its bounds (" +
+                       FormatNumber(kIvyPaperExtent / size) + " px per unit)");
+    }
+    return Status::Error("L", grew + ": its internode length L = " + FormatNumber(L) +
+                                  " and distance d = " + FormatNumber(d) + across +
+                                  "; set L and d below half its size");
   }
   return Status::Error("seed_points", grew + ": no seed found a place to grow within d = " +
                                           FormatNumber(d) + " of the support");
@@ -431,7 +474,7 @@ std::string IvyRun::StatsJson() const {
   // with the grown ivy's; when it does not fit, the sweep is left out and its line is a notice.
   const Status fits = CheckStats();
   IvyStats stats =
-      MeasureIvy(model_, log_, support_->mesh(), state_.params, support_->attach(), fits.ok());
+      MeasureIvy(model_, log_, support_->mesh(), params_, support_->attach(), fits.ok());
   stats.overlap_skipped_by = fits.Line();
   stats.tree_truncated_by = support_->truncated_by();
   return IvyStatsJson(stats, log_, model_, timings_);
@@ -457,7 +500,7 @@ Result<Estimate> IvyRun::ExportEstimateOf(const IvyModel& model, const GrowLog& 
       EstimateIvyGrown(model, log, options_.export_with_stats_room ? grow_limits_ : limits_) +
       EstimateIvyExport(model, *kind, support_out ? support_->triangles() : 0);
   if (options_.stats) {
-    e = e + EstimateIvyStats(CountIvyStatsWork(model, state_.params, support_->triangles()));
+    e = e + EstimateIvyStats(CountIvyStatsWork(model, params_, support_->triangles()));
   }
   return e;
 }
@@ -478,14 +521,13 @@ Result<std::string> IvyRun::Export(const std::string& format,
 Result<std::string> IvyRun::ExportUnchecked(const std::string& format,
                                             const IvyExportOptions& options) const {
   if (!grown_) return Status::Error(format, "nothing grown yet");
-  if (format == "json")
-    return IvyModelJson(model_, state_.params, state_.seed, state_.steps) + "\n";
+  if (format == "json") return IvyModelJson(model_, params_, state_.seed, state_.steps) + "\n";
   if (format == "lsys") return PrintLString(model_);
-  if (format == "svg") return IvySvg(model_, state_.params, support_->mesh(), options.svg);
+  if (format == "svg") return IvySvg(model_, params_, support_->mesh(), options.svg);
   if (format == "glb") {
     Result<std::vector<unsigned char>> glb =
-        WriteIvyGlb(model_, state_.params, state_.seed, state_.steps,
-                    options.with_support ? support_->mesh() : nullptr);
+        WriteIvyGlb(model_, params_, state_.seed, state_.steps,
+                    options.with_support ? support_->mesh() : nullptr, LeafSupport());
     if (!glb.ok()) return glb.status();
     return std::string(glb->begin(), glb->end());
   }

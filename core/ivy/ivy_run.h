@@ -96,6 +96,12 @@ class IvySupport {
   const Estimate& estimate() const { return estimate_; }  // the support's, with a tree's seconds
   const std::string& truncated_by() const { return truncated_by_; }
   double ms_bvh() const { return ms_bvh_; }  // building the BVHs (timing, not compared)
+  // Its largest extent (0 on the free replay) and its own paper pixels per unit (IvyPxPerUnit with
+  // the row "scale" at 0: the scene's, else from the extent).
+  double extent() const { return extent_; }
+  double px_per_unit() const;
+  // A state's parameters in the support's units (IvyScaledParams at IvyPxPerUnit); error "scale".
+  Result<IvyParams> Scaled(const IvyParams& declared) const;
 
  private:
   IvyScene scene_;
@@ -107,6 +113,7 @@ class IvySupport {
   Estimate estimate_;
   std::string truncated_by_;
   double ms_bvh_ = 0;
+  double extent_ = 0;
 };
 
 struct IvyRunOptions {
@@ -167,6 +174,8 @@ class IvyRun : public run::StudyRun {
   // Ivy's own.
   bool grown() const { return grown_; }
   const IvyState& state() const { return state_; }
+  // The parameters the ivy grows with: the state's in the support's units (IvyScaledParams).
+  const IvyParams& params() const { return params_; }
   const IvySupport& support() const { return *support_; }
   const IvyModel& model() const { return model_; }
   const GrowLog& log() const { return log_; }
@@ -179,9 +188,9 @@ class IvyRun : public run::StudyRun {
   int remeshes() const { return remeshes_; }  // BuildIvyMeshes calls so far
 
   // After Advance: an error when steps > 0 grew no internode (a run that makes nothing is not a
-  // result; issue 31 item 4), naming why: "preset" (or "L" when L or d is not the preset's) when
-  // L or d is half the support's size or more (a pixel preset on a mesh in metres), else
-  // "seed_points" (every seed's first search found no place within d of the support).
+  // result; issue 31 item 4), naming why: "scale" when the scaled L or d is half the support's
+  // size or more at a given scale (px on a mesh in metres), "L" when the user's own L or d are,
+  // else "seed_points" (every seed's first search found no place within d of the support).
   Status CheckGrewSomething() const;
   // The measurement's estimate (counted from the model) and its check with the grown ivy.
   Estimate StatsEstimate() const;
@@ -200,8 +209,12 @@ class IvyRun : public run::StudyRun {
  private:
   IvyRun() = default;
   void SetLimits();
+  // The support the leaves are kept outside of (BuildIvyMeshes), nullptr on the free replay.
+  const Support* LeafSupport() const;
 
   IvyState state_;
+  IvyParams params_;      // state_.params in the support's units
+  Support leaf_support_;  // support_->ForGrow()
   std::shared_ptr<const IvySupport> support_;
   Budget budget_;
   IvyRunOptions options_;

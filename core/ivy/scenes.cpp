@@ -168,13 +168,9 @@ geom::TriMesh IvyAttachTriangles(const geom::TriMesh& mesh,
   return out;
 }
 
-const std::vector<std::string>& IvySceneNames() {
-  static const std::vector<std::string> names = {"cubes4", "wall",   "overhang", "stairs",
-                                                 "pillar", "sphere", "free"};
-  return names;
-}
+namespace {
 
-Result<IvyScene> MakeIvyScene(std::string_view name) {
+Result<IvyScene> BuiltInScene(std::string_view name) {
   if (name == "cubes4") return Cubes4();
   if (name == "wall") return Wall();
   if (name == "overhang") return Overhang();
@@ -183,8 +179,22 @@ Result<IvyScene> MakeIvyScene(std::string_view name) {
   if (name == "sphere") return Sphere();
   if (name == "free") return Free();
   return Status::Error("scene", "'" + std::string(name) +
-                                      "' is unknown; must be one of cubes4, wall, overhang, "
-                                      "stairs, pillar, sphere, free");
+                                    "' is unknown; must be one of cubes4, wall, overhang, "
+                                    "stairs, pillar, sphere, free");
+}
+
+}  // namespace
+
+const std::vector<std::string>& IvySceneNames() {
+  static const std::vector<std::string> names = {"cubes4", "wall",   "overhang", "stairs",
+                                                 "pillar", "sphere", "free"};
+  return names;
+}
+
+Result<IvyScene> MakeIvyScene(std::string_view name) {
+  Result<IvyScene> scene = BuiltInScene(name);
+  if (scene.ok()) scene->px_per_unit = 1;  // every built-in scene is in px
+  return scene;
 }
 
 }  // namespace niwa::ivy

@@ -26,6 +26,9 @@ struct IvyScene {
   bool free = false;  // no support: the RNG-free nutrient replay
   geom::TriMesh mesh;
   std::vector<NamedSeed> seeds;  // the first is the default
+  // Paper pixels per scene unit (IvyPxPerUnit): 1 on the built-in scenes (px), 1000 on a tree (in
+  // metres); 0 = unknown (a read mesh: from its bounds, or the state's "scale").
+  double px_per_unit = 0;
 };
 
 const std::vector<std::string>& IvySceneNames();

@@ -82,7 +82,7 @@ const COMMANDS = [
   { base: ['ivy', 'grow', '--steps', '3'],
     flags: { '--steps': NUMBERS, '--seed': NUMBERS, '--scene': TEXT, '--seed-point': VECTORS, '--set': SETS,
       '--params': jsonFile, '--url': hash, '--out': outPath, '--stats': null, '--accel': TEXT,
-      '--subdivide': NUMBERS, '--preset': TEXT } },
+      '--subdivide': NUMBERS, '--preset': TEXT, '--units': TEXT } },
   { base: ['terrain', 'grow', '--set', 'res=32'],
     flags: { '--builtin': TEXT, '--contour': jsonFile, '--method': ['simple', 'fourier', 'fig9a', 'x', ''],
       '--seed': NUMBERS, '--set': SETS, '--contours': outPath, '--stats': null } },

@@ -119,25 +119,36 @@ TEST(IvyCli, BadInputIsOneLineExit2NoFile) {
 }
 
 // A run that grows nothing is an error naming why, with no file (issue 31 item 4: the pixel preset
-// on a mesh in metres grew 0 internodes with exit 0 and wrote the file).
+// on a mesh in metres grew 0 internodes with exit 0 and wrote the file). The scale is the mesh's:
+// read from its bounds unless --units gives it, so the paper preset grows on the 5 m mesh.
 TEST(IvyCli, GrowingNothingIsAnErrorNamingWhy) {
   const std::string mesh = std::string(NIWA_SOURCE_DIR) + "/tests/data/meshes/shapes.obj";
   const std::string out = "ivy_cli_nothing.glb";
-  CliResult paper = RunNiwa({"ivy", "grow", "--mesh", mesh, "--seed-point", "0,0,0", "--out", out});
-  EXPECT_EQ(paper.code, 2);
-  EXPECT_EQ(paper.err,
-            "niwa: error: --preset: grew no internode in 50 steps: its internode length L = 50 and "
-            "distance d = 20 are in the support's units, and the support is 5 across; pick a "
-            "preset of its scale (metric for metres)\n");
+  CliResult px = RunNiwa(
+      {"ivy", "grow", "--mesh", mesh, "--seed-point", "0,0,0", "--units", "px", "--out", out});
+  EXPECT_EQ(px.code, 2);
+  EXPECT_EQ(px.err,
+            "niwa: error: --units: grew no internode in 50 steps: at 1 px per unit the internode "
+            "length L = 50 and distance d = 20 scene units, and the support is 5 across; give the "
+            "support's units (m, cm, mm, px) or 0 to read the scale from its bounds (240 px per "
+            "unit)\n");
   EXPECT_FALSE(std::ifstream(out).good());
   CliResult set = RunNiwa({"ivy", "grow", "--mesh", mesh, "--seed-point", "0,0,0", "--preset",
-                           "metric", "--set", "L=3", "--stats"});
+                           "metric", "--set", "L=3000", "--stats"});
   EXPECT_EQ(set.code, 2);
   EXPECT_EQ(set.err.rfind("niwa: error: --set L: grew no internode", 0), 0u) << set.err;
   EXPECT_NE(set.err.find("set L and d below half its size"), std::string::npos) << set.err;
+  for (const char* units : {"auto", "m"}) {
+    CliResult grown = RunNiwa(
+        {"ivy", "grow", "--mesh", mesh, "--seed-point", "0,0,0", "--units", units, "--stats"});
+    EXPECT_EQ(grown.code, 0) << units << ": " << grown.err;
+    EXPECT_GT(nlohmann::json::parse(grown.out).value("internodes", 0), 0) << units;
+  }
   CliResult metric = RunNiwa(
       {"ivy", "grow", "--mesh", mesh, "--seed-point", "0,0,0", "--preset", "metric", "--stats"});
   EXPECT_EQ(metric.code, 0) << metric.err;
+  EXPECT_EQ(RunNiwa({"ivy", "grow", "--units", "ft", "--stats"}).err,
+            "niwa: error: --units: 'ft' is unknown; must be auto, px, mm, cm or m\n");
   // Zero steps asks for nothing: not an error.
   EXPECT_EQ(RunNiwa({"ivy", "grow", "--mesh", mesh, "--seed-point", "0,0,0", "--steps", "0"}).code,
             0);

@@ -15,16 +15,13 @@ TEST(IvyPresets, ReadFromTheEmbeddedListInItsOrder) {
   EXPECT_EQ(IvyPresetOverrides("paper"), V{});
   EXPECT_EQ(IvyPresetOverrides("literal"), (V{{"kappa", 0}, {"lambda", 1}}));
   EXPECT_EQ(IvyPresetOverrides("improved"),
-            (V{{"max_bend", 60}, {"avoid", 10}, {"candidates", 32}}));
-  EXPECT_EQ(IvyPresetOverrides("metric"), (V{{"L", 0.05},
-                                             {"d", 0.02},
-                                             {"eps", 0.002},
-                                             {"r_tip", 0.0015},
-                                             {"leaf_size", 0.05},
-                                             {"petiole", 0.02}}));
+            (V{{"max_bend", 60}, {"avoid", 10}, {"candidates", 32}, {"body", 1}}));
+  // metric is a scale, not lengths (issue 31 item 4): the paper's rows at 1000 px per unit.
+  EXPECT_EQ(IvyPresetOverrides("metric"), (V{{"scale", 1000}}));
   Result<IvyParams> metric = IvyPreset("metric");
   ASSERT_TRUE(metric.ok());
-  EXPECT_EQ(metric->Get(IvyParam::kL), 0.05);
+  EXPECT_EQ(metric->Get(IvyParam::kL), 50);
+  EXPECT_EQ(metric->Get(IvyParam::kScale), 1000);
   EXPECT_FALSE(IvyPreset("nope").ok());
 }
 

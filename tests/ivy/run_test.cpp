@@ -359,6 +359,47 @@ TEST(IvyRun, UpdateRedoesOnlyTheStageThatChanged) {
 // Issue 28 item 2: --seed-point and --accel are state fields the run reads. Seed points given one
 // by one ("X,Y,Z" or a named seed of the scene) are resolved in order against the support, and
 // the run's state (its hash) holds the points; errors name "seed_points" and "accel".
+// Issue 31 item 4: the scale is the support's, not a preset's. cubes4 shrunk 1024 times (exact in
+// float and double) and read as a mesh (no unit: the scale from its bounds, 1200 / 1.171875 =
+// 1024 px per unit) grows the px ivy bud for bud, 1024 times smaller; so does --units-like
+// "scale" = 1024 with any preset, and improved's px rows (avoid) scale with it (rules x scale).
+TEST(IvyRun, TheScaleIsTheSupportsAndCombinesWithAnyPreset) {
+  auto cubes = Prepared(IvySupportInput::Scene("cubes4"));
+  EXPECT_EQ(cubes->px_per_unit(), 1);
+  Result<IvyScene> scene = MakeIvyScene("cubes4");
+  ASSERT_TRUE(scene.ok());
+  geom::TriMesh small = scene->mesh;
+  for (glm::vec3& p : small.positions) p /= 1024.0f;
+  auto shrunk = Prepared(IvySupportInput::Mesh(small, "cubes4-small", {}));
+  EXPECT_EQ(shrunk->px_per_unit(), 1024);
+  for (const char* preset : {"paper", "improved"}) {
+    for (double scale : {0.0, 1024.0}) {
+      IvyState px = Steps(50, preset);
+      px.seed_points = {scene->seeds[0].pos};
+      IvyRun big = Started(px, cubes);
+      ASSERT_TRUE(big.Advance({}).ok());
+      IvyState st = px;
+      st.seed_points = {scene->seeds[0].pos / 1024.0};
+      ASSERT_TRUE(st.params.Set(IvyParam::kScale, scale).ok());
+      IvyRun run = Started(st, shrunk);
+      EXPECT_EQ(run.params().Get(IvyParam::kL), 50.0 / 1024);
+      EXPECT_EQ(run.params().Get(IvyParam::kAvoid), px.params.Get(IvyParam::kAvoid) / 1024);
+      ASSERT_TRUE(run.Advance({}).ok());
+      ASSERT_GT(big.model().internodes.size(), 20u) << preset;
+      ASSERT_EQ(run.model().buds.size(), big.model().buds.size()) << preset << " " << scale;
+      for (std::size_t i = 0; i < big.model().buds.size(); ++i) {
+        ASSERT_EQ(run.model().buds[i].pos, big.model().buds[i].pos / 1024.0) << preset << " " << i;
+      }
+    }
+  }
+  // A given scale that makes a length row leave its range is refused naming "scale".
+  IvyState tiny = Steps(10);
+  ASSERT_TRUE(tiny.params.Set(IvyParam::kScale, 1e9).ok());
+  Result<IvyRun> refused = IvyRun::Start(tiny, cubes, Budget{});
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.status().field(), "scale");
+}
+
 TEST(IvyRun, SeedPointItemsAndAccelAreStateFields) {
   std::shared_ptr<const IvySupport> cubes = Prepared(IvySupportInput::Scene("cubes4"));
   ASSERT_FALSE(cubes->scene().seeds.empty());

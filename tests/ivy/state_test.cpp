@@ -23,11 +23,18 @@ TEST(IvyTable, HoldsTable2WithItsSymbols) {
 }
 
 TEST(IvyTable, PresetsChangeWhatTheySay) {
+  // metric: the paper's rows at 1000 px per unit; scaled, they are the old metric lengths exactly
+  // (a division: 50 / 1000 == 0.05 as written).
   IvyParams metric = *IvyPreset("metric");
-  EXPECT_EQ(metric.Get(IvyParam::kL), 0.05);
-  EXPECT_EQ(metric.Get(IvyParam::kD), 0.02);
-  // The ratios of the paper are kept: L : d = 50 : 20.
-  EXPECT_DOUBLE_EQ(metric.Get(IvyParam::kL) / metric.Get(IvyParam::kD), 2.5);
+  EXPECT_EQ(metric.Get(IvyParam::kScale), 1000.0);
+  IvyParams scaled = *IvyScaledParams(metric, metric.Get(IvyParam::kScale));
+  EXPECT_EQ(scaled.Get(IvyParam::kL), 0.05);
+  EXPECT_EQ(scaled.Get(IvyParam::kD), 0.02);
+  EXPECT_EQ(scaled.Get(IvyParam::kEps), 0.002);
+  EXPECT_EQ(scaled.Get(IvyParam::kRTip), 0.0015);
+  EXPECT_EQ(scaled.Get(IvyParam::kLeafSize), 0.05);
+  EXPECT_EQ(scaled.Get(IvyParam::kPetiole), 0.02);
+  EXPECT_EQ(scaled.Get(IvyParam::kScale), 1.0);  // now per scene unit
   EXPECT_TRUE(ValidateIvyParams(metric).ok());
   IvyParams improved = *IvyPreset("improved");
   EXPECT_EQ(improved.Get(IvyParam::kMaxBend), 60.0);

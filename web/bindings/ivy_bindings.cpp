@@ -162,8 +162,9 @@ class IvyLab {
   // tree or tree_years. The tree stops where its bark fits the page's budget, or is refused.
   std::string loadTree(const std::string& preset, double years) {
     Progress("tree", 0, years);
-    Result<ivy::IvySupportInput> tree =
-        compose::IvyTreeSupport(preset, years, PageBudget(), "tree_years");
+    Result<ivy::IvySupportInput> tree = compose::IvyTreeSupport(
+        preset, years, PageBudget(), "tree_years",
+        [this](const char* stage, double done, double total) { Progress(stage, done, total); });
     if (!tree.ok()) return ErrorText(tree.status());
     Progress("bvh", 0, static_cast<double>(tree->prepared.mesh.triangle_count()));
     const auto t0 = Clock::now();  // ms_bvh: the support's BVH, not the tree's growth
@@ -196,7 +197,8 @@ class IvyLab {
     return "";
   }
 
-  // {name, dropped, free, triangles, obstacles, bounds: {min, max}, seeds: [{name, pos}], ms_bvh}.
+  // {name, dropped, free, triangles, obstacles, bounds: {min, max}, px_per_unit (its own scale:
+  // the paper pixels per unit of the row "scale" at 0, auto), seeds: [{name, pos}], ms_bvh}.
   std::string supportJson() const {
     ordered_json j;
     if (!support_) return JsonText(j);
@@ -212,6 +214,7 @@ class IvyLab {
     } else {
       j["bounds"] = nullptr;
     }
+    j["px_per_unit"] = support_->px_per_unit();
     ordered_json seeds = ordered_json::array();
     for (const ivy::NamedSeed& seed : scene.seeds)
       seeds.push_back({{"name", seed.name}, {"pos", Vec(seed.pos)}});

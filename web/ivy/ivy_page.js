@@ -26,7 +26,7 @@ const $ = (id) => document.getElementById(id);
 const ui = {
   stage: $('stage'), canvas: $('view'), stats: $('stats'), progress: $('progress'), scene: $('scene'),
   sceneHelp: $('scene-help'), tree: $('tree'), treeYears: $('tree-years'), meshFile: $('mesh-file'), preset: $('preset'), seed: $('seed'), steps: $('steps'),
-  reset: $('reset'), seeds: $('seeds'), clickSeeds: $('click-seeds'), clearSeeds: $('clear-seeds'),
+  reset: $('reset'), undo: $('undo'), redo: $('redo'), seeds: $('seeds'), clickSeeds: $('click-seeds'), clearSeeds: $('clear-seeds'),
   showLeaves: $('show-leaves'), showLeafTexture: $('show-leaf-texture'), showSuckers: $('show-suckers'), showSupport: $('show-support'), showSeeds: $('show-seeds'), showBuds: $('show-buds'),
   resetView: $('reset-view'), copyLink: $('copy-link'), downloadGlb: $('download-glb'), glbSupport: $('glb-support'),
   downloadJson: $('download-json'), downloadLsys: $('download-lsys'), shareStatus: $('share-status'), params: $('params'),
@@ -52,6 +52,7 @@ const controller = new StudyController({
     const text = useMesh ? 'cancelled: the dropped mesh is dropped; back to the last finished ivy' : 'cancelled: back to the last finished ivy';
     useMesh = false;
     meshRequest = 0;
+    showDropped('');
     return text;
   },
   // Cancel restarted the worker: init it again from the last ivy shown (a dropped mesh is gone
@@ -60,11 +61,14 @@ const controller = new StudyController({
     restarting = true;
     worker.request('init', { hash: lastBuiltIn ? `#${lastBuiltIn}` : '' }, { done: ['ready'] });
   },
+  // Undo/Redo are back/forward over the committed states (web/shell/hash_history.js).
+  onHistoryChange: () => updateUndoButtons(),
   // A dropped mesh's error is the mesh's notice, not the state's.
   onError: (msg, when) => {
     if (when === 'before' && msg.id === meshRequest) {
       notices.set('mesh', msg.message);
       if (meshBefore) ({ useMesh, meshName } = meshBefore);  // the next edit grows on what was there
+      showDropped(useMesh ? meshName : '');
       showScene();
       ui.progress.textContent = '';
       controller.showWork(false);
@@ -74,7 +78,12 @@ const controller = new StudyController({
     return false;
   },
 });
-const { worker } = controller;
+const { worker, history: history_ } = controller;
+function updateUndoButtons() {
+  ui.undo.disabled = !history_.canUndo();
+  ui.redo.disabled = !history_.canRedo();
+  setHooks({ canUndo: history_.canUndo(), canRedo: history_.canRedo() });
+}
 let restarting = false;  // the next 'ready' answers a restart (the panel exists already)
 let lastBuiltIn = '';    // the hash of the last ivy grown on a built-in scene or tree
 const progressSeen = [];
@@ -169,7 +178,9 @@ function applyState(state) {
   panel.setValues(state.params);
   if (state.scene) {
     ui.scene.value = state.scene;
+    builtInScene = state.scene;
     useMesh = false;
+    showDropped('');
   }
   if (state.tree) ui.tree.value = state.tree;
   if (state.tree_years !== undefined) ui.treeYears.value = String(state.tree_years);
@@ -187,6 +198,26 @@ function showScene() {
       : scene ? scene.description : '';
 }
 
+// The Scene select shows the dropped file as its choice (the option goes when another scene is
+// picked: the worker holds one support, so the file would have to be dropped again).
+const DROPPED = '(dropped)';
+let builtInScene = 'cubes4';  // the select's last built-in choice
+function showDropped(name) {
+  let option = [...ui.scene.options].find((o) => o.value === DROPPED);
+  if (!name) {
+    if (option) option.remove();
+    if (ui.scene.value === DROPPED || !ui.scene.value) ui.scene.value = builtInScene;
+    return;
+  }
+  if (ui.scene.value !== DROPPED && ui.scene.value) builtInScene = ui.scene.value;
+  if (!option) {
+    option = new Option('', DROPPED);
+    ui.scene.prepend(option);
+  }
+  option.textContent = `${name} (dropped${support?.dropped && support.name === name ? `, ${support.triangles} tris` : ''})`;
+  ui.scene.value = DROPPED;
+}
+
 function showSeeds() {
   const named = support?.seeds?.[0];
   ui.seeds.textContent = seedPoints.length
@@ -201,6 +232,9 @@ function showSeeds() {
 const sendUpdate = (commit) => controller.update(commit, { useMesh }, { done: ['ivy'] });
 // An edit of a control (stage 'grow') or a panel row (its stage): one update after a quiet moment.
 const scheduleUpdate = (stage = 'grow') => controller.schedule(() => sendUpdate(true), stage);
+
+// A hash without the points and scene of a dropped mesh (they mean nothing elsewhere).
+const linkWithoutMesh = (hash) => hash.split('&').filter((kv) => !/^(at|scene)=/.test(kv)).join('&');
 
 // ---------------------------------------------------------------- worker replies
 worker.on('ready', (msg) => {
@@ -253,14 +287,14 @@ worker.on('support', (msg) => {
   }
   worker.recycle({ support: msg.buffers });  // for the worker's next support to fill
   notices.set('mesh', support.dropped
-    ? `Growing on the dropped mesh ${support.name} (${support.triangles} triangles${support.obstacles ? `, ${support.obstacles} obstacle-only` : ''}); a dropped mesh is not part of the link.`
+    ? `Growing on the dropped mesh ${support.name} (${support.triangles} triangles${support.obstacles ? `, ${support.obstacles} obstacle-only` : ''}, ${Number(support.px_per_unit.toPrecision(3))} px per unit from its size unless Scale is set); a dropped mesh is not part of the link.`
     : '');
   setHooks({ supportName: support.name, supportTriangles: support.triangles, supportDropped: support.dropped,
     supportLoadMs: msg.loadMs === null ? '' : Math.round(msg.loadMs) });
+  if (support.dropped) showDropped(support.name);
   showSeeds();
   if (msg.id === meshRequest) {  // a dropped mesh: grow on it once it is loaded
     ui.progress.textContent = '';
-    fitPresetToMesh();
     // Its default seed goes into the state, so the link (with the mesh file) regrows this ivy.
     if (!seedPoints.length && support.seeds?.length) seedPoints = [support.seeds[0].pos];
     showSeeds();
@@ -268,23 +302,11 @@ worker.on('support', (msg) => {
   }
 });
 
-// The built-in scenes are in px (L = 50 on a scene 1200 px high); assets come in any unit. When
-// L is far from the dropped mesh's size (over a quarter of it, or under 1/400), the length rows
-// (those the metric preset rescales: L, d, eps, r_tip, leaf_size, petiole) are set to the paper's
-// values times extent / 1200, so the ivy covers the mesh as it covers cubes4; a notice says so.
-function fitPresetToMesh() {
-  const b = support?.bounds;
-  if (!b) return;
-  const extent = Math.max(b.max[0] - b.min[0], b.max[1] - b.min[1], b.max[2] - b.min[2]);
-  const L = Number(panel.values().L);
-  const paper = presets.find((p) => p.name === 'paper');
-  const metric = presets.find((p) => p.name === 'metric');
-  if (!paper || !metric || !(extent > 0) || (L <= extent / 4 && L >= extent / 400)) return;
-  const factor = Number((extent / 1200).toPrecision(3));
-  const scaled = {};
-  for (const key of Object.keys(metric.overrides)) scaled[key] = Number((paper.params[key] * factor).toPrecision(4));
-  panel.setValues(scaled);
-  notices.set('drop', `${support.name} is ${Number(extent.toPrecision(3))} units across: ${Object.keys(scaled).join(', ')} set to the paper's values × ${factor} (L = ${scaled.L}).`);
+// The support's paper pixels per unit: the row "scale", else the support's own (a dropped mesh's
+// from its bounds: core/ivy/ivy_params.h IvyPxPerUnit), so the px rows are in scene units / k.
+function pxPerUnit() {
+  const k = Number(panel.values().scale);
+  return k > 0 ? k : (support?.px_per_unit || 1);
 }
 
 worker.on('ivy', (msg) => {
@@ -324,7 +346,9 @@ worker.on('ivy', (msg) => {
   }
   scrubber.reset(msg.steps);
   if (!support?.dropped) lastBuiltIn = msg.hash;
-  controller.grown(msg.hash);
+  // On a dropped mesh the page's link leaves out its seed points (at=): the mesh is not in the
+  // link, which opens on the default scene with these settings, without an error.
+  controller.grown(support?.dropped ? linkWithoutMesh(msg.hash) : msg.hash);
   ivySerial += 1;
   setHooks({
     status: 'ready', error: '', meshError: '', ivySerial, internodes: s.internodes, leaves: s.leaves, laterals: s.laterals,
@@ -339,15 +363,20 @@ worker.on('picked', (msg) => {
     ui.shareStatus.textContent = 'That click missed the support.';
     return;
   }
-  // Half the sucker length off the face along its normal (the seed must be within d of a face).
-  const d = Number(panel.values().d);
+  // Half the sucker length off the face along its normal (the seed must be within d of a face;
+  // d is in paper pixels, pxPerUnit() of them a scene unit), on the side the click came from: a
+  // face wound inward (a scan's) would otherwise put the seed, and the ivy, inside the mesh.
+  const d = Number(panel.values().d) / pxPerUnit();
   const lift = Number.isFinite(d) && d > 0 ? d / 2 : 0;
-  seedPoints.push(msg.hit.point.map((x, i) => x + lift * msg.hit.normal[i]));
+  const n = msg.hit.normal;
+  const facing = pickRay && n[0] * pickRay.direction[0] + n[1] * pickRay.direction[1] + n[2] * pickRay.direction[2] > 0 ? -1 : 1;
+  seedPoints.push(msg.hit.point.map((x, i) => x + facing * lift * n[i]));
   showSeeds();
   bumpHook('seedClicks');
   scheduleUpdate();
 });
 
+let pickRay = null;  // the ray of the last click on the view
 let meshRequest = 0;
 let meshBefore = null;  // what the page grew on before the last drop: a refused file goes back to it
 
@@ -365,6 +394,7 @@ async function loadMeshFile(file) {
     meshName = file.name;
     useMesh = true;
     seedPoints = [];
+    showDropped(file.name);
     showScene();
     const request = worker.request('mesh', { name: file.name, bytes: bytes.buffer }, { group: 'mesh', done: ['support'] });
     meshRequest = request.id;
@@ -394,12 +424,16 @@ ui.canvas.addEventListener('pointerup', (e) => {
   if (moved > 4 || !plain) return;
   const rect = ui.canvas.getBoundingClientRect();
   const ray = renderer.rayAt(camera, e.clientX - rect.left, e.clientY - rect.top);
+  pickRay = ray;
   worker.request('pick', ray, { done: ['picked'] });
 });
 
 ui.scene.addEventListener('change', () => {
+  if (ui.scene.value === DROPPED) return;  // the dropped file is shown already
   useMesh = false;
   seedPoints = [];
+  builtInScene = ui.scene.value;
+  showDropped('');
   // A tree is in metres: its ivy preset is metric (the CLI's --tree-preset default).
   if (ui.scene.value === 'tree' && ui.preset.value !== 'metric') {
     ui.preset.value = 'metric';
@@ -441,7 +475,25 @@ ui.resetView.addEventListener('click', () => {
   if (renderer?.bounds()) camera.reset(renderer.bounds());
   requestFrame();
 });
-ui.copyLink.addEventListener('click', () => copyLink(ui.shareStatus));
+// On a dropped mesh the link says so plainly: the mesh is not in it (the page's hash holds no
+// seed points or scene then, so the link opens on the default scene without an error).
+ui.copyLink.addEventListener('click', async () => {
+  await copyLink(ui.shareStatus);
+  if (useMesh) {
+    ui.shareStatus.textContent += ` The dropped mesh ${meshName} is not in the link: it opens on ${builtInScene} with these settings; drop the file there to grow on it again.`;
+  }
+});
+ui.undo.addEventListener('click', () => history_.undo());
+ui.redo.addEventListener('click', () => history_.redo());
+const editable = (t) => t instanceof HTMLElement && (t.isContentEditable || ['INPUT', 'TEXTAREA', 'SELECT'].includes(t.tagName));
+document.addEventListener('keydown', (e) => {
+  if (editable(e.target)) return;  // the fields keep their own undo
+  const key = e.key.toLowerCase();
+  if ((e.ctrlKey || e.metaKey) && (key === 'z' || key === 'y')) {
+    e.preventDefault();
+    (key === 'y' || e.shiftKey ? ui.redo : ui.undo).click();
+  }
+});
 // The embed: <niwa-ivy> (public/niwa-ivy.js) or an iframe of public/embed.html?study=ivy, with this hash.
 ui.embed.addEventListener('click', () => {
   showEmbedDialog({ tag: 'niwa-ivy', title: 'Niwa ivy', heading: 'Embed this ivy', script: 'niwa-ivy.js', frame: 'embed.html?study=ivy' });
@@ -454,5 +506,6 @@ ui.downloadLsys.addEventListener('click', () => exportAs('lsys'));
 
 // ---------------------------------------------------------------- start
 setHooks({ status: 'loading' });
+updateUndoButtons();
 await startRenderer();
 worker.request('init', { hash: location.hash }, { done: ['ready'] });

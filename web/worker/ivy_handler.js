@@ -36,15 +36,18 @@ export function createHandler(Module, ctx) {
   const STAGE_TEXT = {
     read: (done, total) => `reading the mesh (${(total / 1048576).toFixed(1)} MB)`,
     bvh: (done, total) => `building the BVH of ${total.toLocaleString('en-US')} triangles`,
-    tree: (done, total) => `growing the tree (${total} years)`,
+    tree: (done, total) => `growing the tree: year ${done} of ${total}`,
+    bark: (done, total) => `building the tree's bark (${total.toLocaleString('en-US')} internodes)`,
     grow: (done, total) => `growing: step ${done} of ${total}`,
+    meshing: (done, total) => `building tubes and leaves for ${total.toLocaleString('en-US')} buds`,
   };
   function labOf(client) {
     if (!labs.has(client)) {
       const entry = { lab: new Module.IvyLab(), support: null, working: 0, lastPost: 0, leafTextureSent: false };
       entry.lab.setProgress((stage, done, total) => {
         const now = performance.now();
-        const edge = stage !== 'grow' || done === 1 || done === total;
+        // Every stage's first and last message goes; steps and years in between at most every 100 ms.
+        const edge = (stage !== 'grow' && stage !== 'tree') || done <= 1 || done === total;
         if (!edge && now - entry.lastPost < 100) return;
         entry.lastPost = now;
         post({ type: 'progress', id: entry.working, client, stage, done, total, text: STAGE_TEXT[stage]?.(done, total) ?? stage });
@@ -105,6 +108,9 @@ export function createHandler(Module, ctx) {
       post(errorReply(error, id, client));
       return;
     }
+    // The statistics re-measure the ivy against the support (brute force): seconds on a big one,
+    // so the progress line says so instead of keeping the last growth step.
+    post({ type: 'progress', id, client, stage: 'measure', text: 'measuring the ivy (statistics)' });
     const stats = JSON.parse(entry.lab.statsJson());
     const transfer = [];
     const mesh = {};
