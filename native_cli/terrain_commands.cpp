@@ -1,6 +1,7 @@
 // niwa CLI commands of the terrain study: 'terrain grow' (a whole mountain from one seed contour,
 // Misawa, Chiba, Saito 1987; core/terrain, docs/terrain-model.md), 'terrain compare', 'terrain
-// shrink' (the shrinking algorithm traced for Figs 2-8 and 12) and 'terrain seeds'.
+// shrink' (the shrinking algorithm traced for Figs 2-8 and 12), 'terrain render' (a bird's-eye
+// picture of any heightmap, Fig 17) and 'terrain seeds'.
 // cli-order: 40
 #include <chrono>
 #include <cstdio>
@@ -13,8 +14,11 @@
 
 #include "base/echo.h"
 #include "cli_common.h"
+#include "image/png.h"
+#include "image/relief.h"
 #include "io/gltf_writer.h"
 #include "run/field_names.h"
+#include "terrain/compare.h"
 #include "terrain/contour_io.h"
 #include "terrain/contour_repair.h"
 #include "terrain/generate.h"
@@ -242,6 +246,90 @@ int RunCompare(const GrowOptions& o, const std::string& dem_path, std::ostream& 
   return 0;
 }
 
+struct RenderOptions {
+  std::string dem, out, frame, tint;
+  double view_from = 200, elevation = 35, fov = 30, exaggeration = 1, sun_from = 315,
+         sun_elevation = 40, floor = -1e9;
+  int width = 960, height = 600;
+};
+
+// "A,B[,C,D]": `count` numbers, each finite, or one line naming the flag.
+std::vector<double> NumberList(const std::string& flag, const std::string& text, std::size_t count,
+                               const std::string& form) {
+  std::vector<std::string> parts;
+  std::size_t at = 0;
+  for (std::size_t k; (k = text.find(',', at)) != std::string::npos; at = k + 1)
+    parts.push_back(text.substr(at, k - at));
+  parts.push_back(text.substr(at));
+  if (parts.size() != count) Fail(Status::Error(flag, "'" + text + "' must be " + form));
+  std::vector<double> values;
+  for (const std::string& part : parts)
+    values.push_back(FlagNumber(flag, part, {-1e9, 1e9, false, " (m)"}));
+  return values;
+}
+
+// terrain render: a bird's-eye PNG of a 16-bit heightmap and its sidecar (a grown mountain's
+// --heightmap or a real DEM), through image::RenderRelief; one JSON object on stdout.
+int RunRender(const RenderOptions& o, std::ostream& out) {
+  Check(CheckEnding("--dem", o.dem, {".png"}));
+  Result<std::string> png = ReadFile(o.dem, "--dem", kMaxDemFileBytes);
+  if (!png.ok()) Fail(png.status());
+  const std::string side_path = o.dem.substr(0, o.dem.size() - 4) + ".json";
+  Result<std::string> side = ReadFile(side_path, "--dem", kMaxParamsFileBytes);
+  if (!side.ok()) Fail(side.status());
+  Result<terrain::Heightfield> dem =
+      terrain::ReadHeightmap(std::vector<unsigned char>(png->begin(), png->end()), *side, "--dem");
+  if (!dem.ok()) Fail(dem.status());
+  image::ReliefGrid grid;
+  grid.width = dem->width;
+  grid.height = dem->height;
+  grid.cell = dem->cell;
+  grid.x0 = dem->x0 + 0.5 * dem->cell;  // sample (0, 0) is the north-west cell's centre
+  grid.y1 = dem->y1 - 0.5 * dem->cell;
+  grid.heights = dem->h;
+  image::ReliefView view;
+  view.width = o.width;
+  view.height = o.height;
+  view.view_from_deg = o.view_from;
+  view.elevation_deg = o.elevation;
+  view.fov_deg = o.fov;
+  view.exaggeration = o.exaggeration;
+  view.sun_from_deg = o.sun_from;
+  view.sun_elevation_deg = o.sun_elevation;
+  if (o.floor > -1e9) view.floor = o.floor;
+  if (!o.frame.empty()) {
+    const std::vector<double> f = NumberList("--frame", o.frame, 4, "X_MIN,Y_MIN,X_MAX,Y_MAX (m)");
+    if (!(f[0] < f[2] && f[1] < f[3]))
+      Fail(Status::Error("--frame", "'" + o.frame + "' must have X_MIN < X_MAX and Y_MIN < Y_MAX"));
+    for (int k = 0; k < 4; ++k) view.frame[k] = f[static_cast<std::size_t>(k)];
+  }
+  if (!o.tint.empty()) {
+    const std::vector<double> t = NumberList("--tint", o.tint, 2, "LOW,HIGH (m)");
+    if (!(t[0] < t[1])) Fail(Status::Error("--tint", "'" + o.tint + "' must have LOW < HIGH"));
+    view.tint_min = t[0];
+    view.tint_max = t[1];
+  }
+  Result<image::Rgba8Image> picture = image::RenderRelief(grid, view);
+  if (!picture.ok()) {
+    // The core names "grid" (the heightmap) or "view" (the flags).
+    const Status& st = picture.status();
+    Fail(Status::Error(st.field() == "grid"                              ? "--dem"
+                       : st.message().find("frame") != std::string::npos ? "--frame"
+                                                                         : "--floor",
+                       st.message()));
+  }
+  Result<std::vector<unsigned char>> bytes = image::EncodeRgba8Png(*picture);
+  if (!bytes.ok()) Fail(bytes.status());
+  WriteAllOrNone({{"--out", o.out, std::string(bytes->begin(), bytes->end())}});
+  nlohmann::json j = {{"out", o.out},
+                      {"width", view.width},
+                      {"height", view.height},
+                      {"samples", {grid.width, grid.height}},
+                      {"cell", grid.cell}};
+  out << j.dump() << "\n";
+  return 0;
+}
+
 struct ShrinkCommandOptions {
   std::string contour, builtin, join = "capped", displace, svg;
   double d = 0, c = 1.4, clean_len = 0, clean_angle = 0;
@@ -461,6 +549,40 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
       {shrink,
        [so, shrink](std::ostream& out) { return RunShrink(*so, shrink->count("--seed") > 0, out); },
        {"--builtin", "disk"}});
+
+  CLI::App* render = terrain_cmd->add_subcommand(
+      "render",
+      "Draw a bird's-eye picture of a heightmap (a grown mountain's --heightmap or a real DEM): "
+      "perspective, hypsometric tint, sun-lit (Fig 17's views); one JSON object");
+  auto ro = std::make_shared<RenderOptions>();
+  AddInputFlag(render, "--dem", &ro->dem, "The heightmap: a 16-bit .png with its sidecar FILE.json")
+      ->required();
+  AddOutputFlag(render, "--out", &ro->out, {".png"}, "Write the picture as .png")->required();
+  AddNumberFlag(render, "--width", &ro->width, {16, 4096, true}, "Picture width (px), 16..4096");
+  AddNumberFlag(render, "--height", &ro->height, {16, 4096, true}, "Picture height (px), 16..4096");
+  AddNumberFlag(render, "--view-from", &ro->view_from, {0, 360, false, " (degrees)"},
+                "Compass bearing the camera stands towards (0 north, 180 south), 0..360");
+  AddNumberFlag(render, "--elevation", &ro->elevation, {5, 90, false, " (degrees)"},
+                "Camera elevation above the horizon, 5..90 (90: straight down)");
+  AddNumberFlag(render, "--fov", &ro->fov, {5, 120, false, " (degrees)"},
+                "Vertical field of view, 5..120");
+  AddNumberFlag(render, "--exaggeration", &ro->exaggeration, {0.1, 20},
+                "Vertical exaggeration, 0.1..20");
+  AddNumberFlag(render, "--sun-from", &ro->sun_from, {0, 360, false, " (degrees)"},
+                "Compass bearing of the sun, 0..360 (default 315: north-west)");
+  AddNumberFlag(render, "--sun-elevation", &ro->sun_elevation, {0, 90, false, " (degrees)"},
+                "Sun elevation, 0..90");
+  AddNumberFlag(render, "--floor", &ro->floor, {-1e9, 1e9, false, " (m)"},
+                "Draw heights below this at this (a DEM cut at a seed contour's level), m");
+  render->add_option("--frame", ro->frame,
+                     "X_MIN,Y_MIN,X_MAX,Y_MAX (m): the box framed and drawn (default the "
+                     "heightmap's own; one box gives several pictures one camera)");
+  render->add_option("--tint", ro->tint,
+                     "LOW,HIGH (m): heights at the ends of the colour ramp (default the "
+                     "heightmap's range)");
+  commands.push_back({render,
+                      [ro](std::ostream& out) { return RunRender(*ro, out); },
+                      {"--dem", "tests/data/terrain/jacksboro_dem.png", "--out", "render.png"}});
 
   CLI::App* seeds = terrain_cmd->add_subcommand("seeds", "List the built-in seed contours");
   commands.push_back({seeds, [](std::ostream& out) {

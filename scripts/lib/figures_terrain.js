@@ -255,6 +255,38 @@ const figures = {
         relief_real: r2(rows[0].real.relief),
       };
     }
+    // As the paper shows it: bird's-eye views of the four methods (seed 1) and of the real DEM the
+    // seed was traced from, one camera and footprint for all (the grown mountains' box), the DEM cut
+    // at the seed's level h0 (a grown mountain stands on a plain at h0), one colour ramp (h0 to the
+    // DEM's top), heights ×3, from `niwa terrain grow --heightmap` and `niwa terrain render`.
+    const side = JSON.parse(fs.readFileSync(dem.replace(/\.png$/, '.json'), 'utf8'));
+    let frame = null, h0 = null, view = null;
+    const panels = [];
+    for (const preset of ['simple', 'midpoint', 'fourier', 'improved']) {
+      const hm = path.join(tmpDir, `fig17_${preset}.png`);
+      run(['terrain', 'grow', '--builtin', 'jacksboro', '--method', preset, '--seed', '1', '--res', '256', '--heightmap', hm]);
+      const sc = JSON.parse(fs.readFileSync(hm.replace(/\.png$/, '.json'), 'utf8'));
+      frame = frame || [sc.origin.x, sc.origin.y - sc.height * sc.cell_size, sc.origin.x + sc.width * sc.cell_size, sc.origin.y].join(',');
+      h0 = h0 ?? sc.min_elevation;
+      view = view || ['--width', '480', '--height', '300', '--elevation', '35', '--view-from', '200',
+        '--exaggeration', '3', '--tint', `${h0},${side.max_elevation}`];
+      const png = `terrain_fig17_${preset}.png`;
+      run(['terrain', 'render', '--dem', hm, '--out', path.join(outDir, png), '--frame', frame, ...view]);
+      panels.push({ label: preset, png });
+    }
+    run(['terrain', 'render', '--dem', dem, '--out', path.join(outDir, 'terrain_fig17_real.png'), '--frame', frame,
+      '--floor', String(h0), ...view]);
+    panels.push({ label: 'real DEM (jacksboro)', png: 'terrain_fig17_real.png' });
+    const w = 480, h = 300, gap = 10, cols = 3;
+    const body = panels.map((p, k) => {
+      const x = (k % cols) * (w + gap), y = 30 + Math.floor(k / cols) * (h + 30);
+      return `<image href="${p.png}" x="${x}" y="${y}" width="${w}" height="${h}"/>` +
+        `<text x="${x + 6}" y="${y + h + 18}" font-size="15">${esc(p.label)}</text>`;
+    }).join('\n');
+    fs.writeFileSync(path.join(outDir, 'terrain_fig17.svg'),
+      `<svg xmlns="http://www.w3.org/2000/svg" width="${cols * (w + gap)}" height="${30 + 2 * (h + 30)}" font-family="sans-serif">\n` +
+      `<text x="4" y="20" font-size="16">Fig. 17: the four methods from the jacksboro seed (seed 1) beside the real DEM, one camera, the DEM cut at the seed's level, heights ×3</text>\n${body}\n</svg>\n`);
+    out.render = { frame_m: frame, floor_m: r2(h0), exaggeration: 3 };
     return out;
   },
   fig18() {

@@ -1,13 +1,15 @@
 // Terrain outputs across builds: for every built-in seed (improved method), native == WASM byte for
 // byte for the .glb, the 16-bit heightmap .png and its .json sidecar, the .geojson and the .svg
 // contours; every .glb is gltf-validator clean (0 errors, 0 warnings); `--url` of the stats regrows
-// the same .glb; `terrain compare` on the real DEM prints the same JSON in both builds.
-import { mkdtempSync, readFileSync } from 'node:fs';
+// the same .glb; `terrain compare` on the real DEM prints the same JSON in both builds; `terrain
+// render` (Fig 17's views) draws the same PNG in both builds from a grown heightmap and the real DEM
+// (framed, floored), and refuses bad flags in one line, exit 2, no file.
+import { existsSync, mkdtempSync, readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
-import { check, finish, native, requireWasm, root, run, wasm } from '../support/cli_pair.mjs';
+import { check, finish, native, requireWasm, root, run, spawn, wasm } from '../support/cli_pair.mjs';
 
 requireWasm();
 const require = createRequire(join(root, 'package.json'));
@@ -44,5 +46,32 @@ for (const method of ['simple', 'improved']) {
   const a = run(native, args), b = run(wasm, args);
   check(`compare ${method}: native == WASM (mean IoU ${JSON.parse(a).mean_iou.toFixed(3)})`,
     a === b && JSON.parse(a).levels.length > 3);
+}
+
+// terrain render: the last seed's grown heightmap, and the real DEM framed on it and floored.
+const grown = join(dir, `${seeds[seeds.length - 1]}-n.png`);
+for (const [label, args] of [
+  ['grown heightmap', ['--dem', grown, '--width', '200', '--height', '120']],
+  ['real DEM, framed and floored', ['--dem', dem, '--width', '160', '--height', '100', '--frame', '8000,17000,13000,23000',
+    '--floor', '800', '--exaggeration', '3', '--tint', '800,1072', '--view-from', '150', '--elevation', '50']],
+]) {
+  const out = (b) => join(dir, `render-${label.length}-${b}.png`);
+  const jn = JSON.parse(run(native, ['terrain', 'render', ...args, '--out', out('n')]));
+  run(wasm, ['terrain', 'render', ...args, '--out', out('w')]);
+  const a = readFileSync(out('n')), w = readFileSync(out('w'));
+  check(`render ${label}: native == WASM PNG (${a.length} bytes, ${jn.width} x ${jn.height})`,
+    a.length > 1000 && a.equals(w) && a.readUInt32BE(16) === jn.width && a.readUInt32BE(20) === jn.height);
+}
+for (const [args, text] of [
+  [['--elevation', '3'], '--elevation: 3 is out of range'],
+  [['--frame', '1,2,3'], "--frame: '1,2,3' must be X_MIN,Y_MIN,X_MAX,Y_MAX (m)"],
+  [['--frame', '0,0,10,10'], '--frame: the frame holds no cell of the grid'],
+  [['--frame', '-9000,-9000,-8000,-8000'], '--frame: the frame holds no cell of the grid'],
+  [['--tint', '5,1'], "--tint: '5,1' must have LOW < HIGH"],
+]) {
+  const out = join(dir, 'refused.png');
+  const r = spawn(native, ['terrain', 'render', '--dem', dem, ...args, '--out', out]);
+  check(`render ${args.join(' ')}: exit 2, one line naming the flag, no file`,
+    r.status === 2 && r.stderr.trim().split('\n').length === 1 && r.stderr.includes(text) && !existsSync(out), r.stderr.trim());
 }
 finish();
