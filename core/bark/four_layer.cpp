@@ -200,8 +200,8 @@ bool StepFourLayer(const Lattice& L, FourLayer* f) {
   CorkLayer& M1 = f->layer[kM1];
   CorkLayer& M2 = f->layer[kM2];
   const int n = L.nodes();
-  // Four nodes a batch (lane by lane what the single node below does, selects in place of its
-  // branches), a tail of fewer one by one.
+  // Four nodes a batch where their springs lie in runs (lane by lane what the single node below
+  // does, selects in place of its branches); the rest, at the seams, one by one.
   using simd::Float4;
   using simd::Int4;
   const Float4 vks0 = simd::Splat4(ks0), vcs0 = simd::Splat4(cs0), vks1 = simd::Splat4(ks1),
@@ -217,7 +217,7 @@ bool StepFourLayer(const Lattice& L, FourLayer* f) {
   };
   int i = 0;
   while (i < n) {
-    if (i + 4 <= n) {
+    if (i + 4 <= n && L.node_run4[i]) {
       Float4 fsx, fsz, f1x, f1z, f2x, f2z;
       NodeForce4(L, S.s, i, &fsx, &fsz);
       NodeForce4(L, M1.s, i, &f1x, &f1z);

@@ -205,7 +205,8 @@ int Step(const Lattice& L, const Mechanics& mech, const Growth& g, Surface* s) {
   const float rest[2] = {l0, l0};
   const int broke = SpringSlotForces(L, k, c, rest, g, s);
   // Nodes: the springs' forces, the shear spring and dashpot to the anchor, then symplectic Euler
-  // (four nodes a batch, lane by lane as one by one; a tail of fewer one by one).
+  // (four nodes a batch where their springs lie in runs, lane by lane as one by one; the rest, at
+  // the seams where a node's springs come in another order, one by one).
   const float dt = static_cast<float>(mech.dt);
   const float inv_m = static_cast<float>(1.0 / mech.mass);
   const float ks = static_cast<float>(mech.k_s), cs = static_cast<float>(mech.c_s);
@@ -219,7 +220,7 @@ int Step(const Lattice& L, const Mechanics& mech, const Growth& g, Surface* s) {
                vcs = simd::Splat4(cs);
   int i = 0;
   while (i < n) {
-    if (i + 4 <= n) {
+    if (i + 4 <= n && L.node_run4[i]) {
       Float4 fx, fz, x, z, vx, vz;
       NodeForce4(L, *s, i, &fx, &fz);
       std::memcpy(&x, ux + i, sizeof x);

@@ -98,8 +98,8 @@ int SpringForces(const Lattice& lattice, const float k[2], const float c[2], con
 
 // SpringForces in two halves, for a node pass that sums its own forces: the springs' forces into
 // gx, gz by slot (not the accumulators), then a node's sums. NodeForce4 sums nodes n..n+3 as lanes
-// (runs of slots as vectors where lattice.node_run4[n] says so); both add the springs in ascending
-// index to 0, as the accumulators did, so the bits are theirs.
+// (lattice.node_run4[n] must hold); both add the springs in ascending index to 0, as the
+// accumulators did, so the bits are theirs.
 int SpringSlotForces(const Lattice& lattice, const float k[2], const float c[2],
                      const float rest[2], const Growth& growth, Surface* surface);
 inline void NodeForce(const Lattice& L, const Surface& s, int n, float* fx, float* fz) {
@@ -122,31 +122,16 @@ inline void NodeForce4(const Lattice& L, const Surface& s, int n, simd::Float4* 
                        simd::Float4* fz) {
   simd::Float4 x = simd::Splat4(0.0f), z = x;
   const std::size_t e0 = 6 * static_cast<std::size_t>(n);
-  if (L.node_run4[n]) {
-    for (std::size_t e = e0; e < e0 + 6; ++e) {
-      simd::Float4 vx, vz;
-      std::memcpy(&vx, s.gx.data() + L.inc_slot[e], sizeof vx);
-      std::memcpy(&vz, s.gz.data() + L.inc_slot[e], sizeof vz);
-      if (L.inc_a[e]) {
-        x += vx;
-        z += vz;
-      } else {
-        x -= vx;
-        z -= vz;
-      }
-    }
-  } else {
-    // Lane by lane: each node's e-th spring, negated where the node is its b (a − g = a + (−g)).
-    for (std::size_t e = e0; e < e0 + 6; ++e) {
-      simd::Float4 vx, vz;
-      for (int q = 0; q < 4; ++q) {
-        const std::size_t eq = e + 6 * static_cast<std::size_t>(q);
-        const float gx = s.gx[L.inc_slot[eq]], gz = s.gz[L.inc_slot[eq]];
-        vx[q] = L.inc_a[eq] ? gx : -gx;
-        vz[q] = L.inc_a[eq] ? gz : -gz;
-      }
+  for (std::size_t e = e0; e < e0 + 6; ++e) {
+    simd::Float4 vx, vz;
+    std::memcpy(&vx, s.gx.data() + L.inc_slot[e], sizeof vx);
+    std::memcpy(&vz, s.gz.data() + L.inc_slot[e], sizeof vz);
+    if (L.inc_a[e]) {
       x += vx;
       z += vz;
+    } else {
+      x -= vx;
+      z -= vz;
     }
   }
   *fx = x;
