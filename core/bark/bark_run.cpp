@@ -135,12 +135,11 @@ Result<std::string> Table3Json(const std::vector<BarkState>& states, uint64_t fi
       if (!run.ok()) return run.status();
       NIWA_RETURN_IF_ERROR(run->Advance({}));
       const CrackMeasures& c = run->cracks();
-      const double v[kMeasures] = {c.mean_width,           c.mean_height,
-                                   c.max_width,            c.max_height,
-                                   c.intercept_width,      c.intercept_height,
-                                   c.vertical_crack_share, c.closed_fraction,
-                                   c.spacing_width.mean,   c.spacing_height.mean,
-                                   c.spacing_width.max,    c.spacing_height.max};
+      const double v[kMeasures] = {
+          c.mean_width,           c.mean_height,       c.max_width,
+          c.max_height,           c.intercept_width,   c.intercept_height,
+          c.vertical_crack_share, c.closed_fraction,   c.spacing_width.mean,
+          c.spacing_height.mean,  c.spacing_width.max, c.spacing_height.max};
       for (int k = 0; k < kMeasures; ++k) values[k].push_back(v[k]);
       strips += c.strips;
       open_along += c.spacing_height.open;
@@ -159,10 +158,9 @@ Result<std::string> Table3Json(const std::vector<BarkState>& states, uint64_t fi
     // Level B (spec §4.1) on the paper's measure, the crack spacing along scan lines: each mean
     // over the seeds within ±25 % of the paper's experiment column, each maximum within ±40 %;
     // camphor's "(>20)": some line along the trunk crosses no horizontal crack at some seed.
-    const double ours_b[4] = {ours["spacing_mean_w"]["mean"].get<double>(),
-                              ours["spacing_mean_h"]["mean"].get<double>(),
-                              ours["spacing_max_w"]["mean"].get<double>(),
-                              ours["spacing_max_h"]["mean"].get<double>()};
+    const double ours_b[4] = {
+        ours["spacing_mean_w"]["mean"].get<double>(), ours["spacing_mean_h"]["mean"].get<double>(),
+        ours["spacing_max_w"]["mean"].get<double>(), ours["spacing_max_h"]["mean"].get<double>()};
     const double paper_b[4] = {paper->mean_w, paper->mean_h, paper->max_w, paper->max_h};
     static const char* kLevelB[4] = {"mean_w", "mean_h", "max_w", "max_h"};
     nlohmann::ordered_json level_b;

@@ -228,9 +228,10 @@ bool StepFourLayer(const Lattice& L, FourLayer* f) {
              awz = load(M1.s.wz, i);
       Float4 bux = load(M2.s.ux, i), buz = load(M2.s.uz, i), bwx = load(M2.s.wx, i),
              bwz = load(M2.s.wz, i);
-      const Int4 bonded = Int4{S.bonded[i], S.bonded[i + 1], S.bonded[i + 2], S.bonded[i + 3]} != Int4{0, 0, 0, 0};
-      const Int4 present =
-          Int4{S.present[i], S.present[i + 1], S.present[i + 2], S.present[i + 3]} != Int4{0, 0, 0, 0};
+      const Int4 bonded =
+          Int4{S.bonded[i], S.bonded[i + 1], S.bonded[i + 2], S.bonded[i + 3]} != Int4{0, 0, 0, 0};
+      const Int4 present = Int4{S.present[i], S.present[i + 1], S.present[i + 2],
+                                S.present[i + 3]} != Int4{0, 0, 0, 0};
       const Float4 slip_x = (sux - aux) - load(S.bond_x, i);
       const Float4 slip_z = (suz - auz) - load(S.bond_z, i);
       const Int4 snaps = bonded & (slip_x * slip_x + slip_z * slip_z > load(S.shear_limit2, i));

@@ -54,7 +54,9 @@ struct Lattice {
   int node(int i, int j) const { return i * n_h + j; }
   // The force slot of spring s (see slot_b), and the spring of a slot.
   int slot(int s) const {
-    return s < axial_count ? s : axial_count + ((s - axial_count) & 1) * nodes() + (s - axial_count) / 2;
+    return s < axial_count
+               ? s
+               : axial_count + ((s - axial_count) & 1) * nodes() + (s - axial_count) / 2;
   }
   int spring_of_slot(int q) const {
     if (q < axial_count) return q;

@@ -21,8 +21,8 @@ struct Region {
   bool closed() const { return !wraps_around && !wraps_along; }
 };
 
-// Crack spacing along scan lines (the paper's Table 3: 「縦横のひびの間隔を計測した」, the spacing of
-// the vertical and the horizontal cracks; lattice.h's lines). On a line a crack is a run of
+// Crack spacing along scan lines (the paper's Table 3: 「縦横のひびの間隔を計測した」, the spacing
+// of the vertical and the horizontal cracks; lattice.h's lines). On a line a crack is a run of
 // halves whose triangle is in no counted plate (a cracked triangle or a plate under two
 // triangles); a line's spacing is its length / the cracks it crosses, as a line drawn across a
 // picture and its crossings counted.
@@ -30,8 +30,8 @@ struct Spacing {
   double mean = 0;  // cm: the mean of the lines' spacings
   double max = 0;   // cm: the largest line spacing (a line crossing no crack: its length)
   double gap_mean = 0, gap_max = 0;  // cm: over single gaps between neighbouring cracks' middles
-  int lines = 0;    // lines with a plate on them (the others are all crack and not counted)
-  int open = 0;     // of those, lines crossing no crack (the paper's "(>20)")
+  int lines = 0;  // lines with a plate on them (the others are all crack and not counted)
+  int open = 0;   // of those, lines crossing no crack (the paper's "(>20)")
 };
 
 struct CrackMeasures {

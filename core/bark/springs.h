@@ -50,7 +50,7 @@ struct Surface {
   // By slot (lattice.h: Lattice::slot(spring)), so the spring pass reads them in runs:
   std::vector<float> limit2;  // (κ_s·L_o)²: squared length that breaks the spring; +inf once broken
   std::vector<float> on;      // 1 while intact, 0 once broken (multiplies the spring's force)
-  std::vector<uint8_t> broken;  // by spring
+  std::vector<uint8_t> broken;   // by spring
   int broken_count[2] = {0, 0};  // per family
 };
 
