@@ -41,6 +41,13 @@ std::string BarkStatsJson(const BarkRun& run) {
                   {"closed_fraction", c.closed_fraction},
                   {"plate_fraction", c.plate_fraction}};
   j["intercept"] = {{"width", c.intercept_width}, {"height", c.intercept_height}};
+  // Crack spacing along scan lines (regions.h: the paper's Table 3 measure).
+  auto spacing = [](const Spacing& sp) {
+    return nlohmann::ordered_json{{"mean", sp.mean},         {"max", sp.max},
+                                  {"gap_mean", sp.gap_mean}, {"gap_max", sp.gap_max},
+                                  {"lines", sp.lines},       {"open", sp.open}};
+  };
+  j["spacing"] = {{"width", spacing(c.spacing_width)}, {"height", spacing(c.spacing_height)}};
   if (run.four_layer()) {
     // The 4-layer model: three spring layers over the inner one (four_layer.h).
     const FourLayer& f = run.layers();

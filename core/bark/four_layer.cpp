@@ -3,11 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <utility>
 
 #include "bark/regions.h"
 #include "math/det_math.h"
+#include "math/simd4.h"
 
 namespace niwa::bark {
 namespace {
@@ -91,7 +93,7 @@ LayerGrowth LayoutAt(const FourLayerMechanics& m, int k, double tau, bool growin
 }
 
 // Takes node i out of S: its springs off (marked broken without counting a crack), its bond cut.
-void PeelNode(const FourLayer& f, int i, CorkLayer* s) {
+void PeelNode(const Lattice& L, const FourLayer& f, int i, CorkLayer* s) {
   s->present[i] = 0;
   s->bonded[i] = 0;
   s->s.wx[i] = 0.0f;
@@ -99,8 +101,8 @@ void PeelNode(const FourLayer& f, int i, CorkLayer* s) {
   for (int q = f.node_spring_start[i]; q < f.node_spring_start[i + 1]; ++q) {
     const int sp = f.node_springs[q];
     s->s.broken[sp] = 1;
-    s->s.on[sp] = 0.0f;
-    s->s.limit2[sp] = kNever;
+    s->s.on[L.slot(sp)] = 0.0f;
+    s->s.limit2[L.slot(sp)] = kNever;
   }
 }
 
@@ -181,7 +183,7 @@ bool StepFourLayer(const Lattice& L, FourLayer* f) {
     const float c[2] = {static_cast<float>(b.c[0] * share), static_cast<float>(b.c[1] * share)};
     const float rest[2] = {static_cast<float>(f->layer[r].rest[0]),
                            static_cast<float>(f->layer[r].rest[1])};
-    cracked += SpringForces(L, k, c, rest, lg.g[r], &f->layer[r].s);
+    cracked += SpringSlotForces(L, k, c, rest, lg.g[r], &f->layer[r].s);
   }
   if (cracked > 0 && f->first_crack_step < 0) f->first_crack_step = f->step;
   // Nodes: the shear springs S→M1 (breakable), M1→M2, M2→I, then symplectic Euler per layer.
@@ -198,7 +200,84 @@ bool StepFourLayer(const Lattice& L, FourLayer* f) {
   CorkLayer& M1 = f->layer[kM1];
   CorkLayer& M2 = f->layer[kM2];
   const int n = L.nodes();
-  for (int i = 0; i < n; ++i) {
+  // Four nodes a batch where their springs lie in runs (lane by lane what the single node below
+  // does, selects in place of its branches); the rest, at the seams, one by one.
+  using simd::Float4;
+  using simd::Int4;
+  const Float4 vks0 = simd::Splat4(ks0), vcs0 = simd::Splat4(cs0), vks1 = simd::Splat4(ks1),
+               vcs1 = simd::Splat4(cs1), vdt = simd::Splat4(dt), vinv = simd::Splat4(inv_m),
+               vinv2 = simd::Splat4(inv_m2), zero = simd::Splat4(0.0f);
+  auto load = [](const std::vector<float>& v, int i) {
+    Float4 x;
+    std::memcpy(&x, v.data() + i, sizeof x);
+    return x;
+  };
+  auto store = [](std::vector<float>* v, int i, Float4 x) {
+    std::memcpy(v->data() + i, &x, sizeof x);
+  };
+  int i = 0;
+  while (i < n) {
+    if (i + 4 <= n && L.node_run4[i]) {
+      Float4 fsx, fsz, f1x, f1z, f2x, f2z;
+      NodeForce4(L, S.s, i, &fsx, &fsz);
+      NodeForce4(L, M1.s, i, &f1x, &f1z);
+      NodeForce4(L, M2.s, i, &f2x, &f2z);
+      const Float4 sux = load(S.s.ux, i), suz = load(S.s.uz, i), swx = load(S.s.wx, i),
+                   swz = load(S.s.wz, i);
+      Float4 aux = load(M1.s.ux, i), auz = load(M1.s.uz, i), awx = load(M1.s.wx, i),
+             awz = load(M1.s.wz, i);
+      Float4 bux = load(M2.s.ux, i), buz = load(M2.s.uz, i), bwx = load(M2.s.wx, i),
+             bwz = load(M2.s.wz, i);
+      const Int4 bonded =
+          Int4{S.bonded[i], S.bonded[i + 1], S.bonded[i + 2], S.bonded[i + 3]} != Int4{0, 0, 0, 0};
+      const Int4 present = Int4{S.present[i], S.present[i + 1], S.present[i + 2],
+                                S.present[i + 3]} != Int4{0, 0, 0, 0};
+      const Float4 slip_x = (sux - aux) - load(S.bond_x, i);
+      const Float4 slip_z = (suz - auz) - load(S.bond_z, i);
+      const Int4 snaps = bonded & (slip_x * slip_x + slip_z * slip_z > load(S.shear_limit2, i));
+      const Int4 holds = bonded & ~snaps;
+      if (simd::AnyTrue(snaps)) {
+        for (int q = 0; q < 4; ++q) {
+          if (!snaps[q]) continue;
+          S.bonded[i + q] = 0;
+          ++f->bonds_broken;
+        }
+      }
+      const Float4 sx = simd::Select(holds, vks0 * slip_x + vcs0 * (swx - awx), zero);
+      const Float4 sz = simd::Select(holds, vks0 * slip_z + vcs0 * (swz - awz), zero);
+      const Float4 px = vks1 * ((aux - bux) - load(M1.bond_x, i)) + vcs1 * (awx - bwx);
+      const Float4 pz = vks1 * ((auz - buz) - load(M1.bond_z, i)) + vcs1 * (awz - bwz);
+      const Float4 qx = vks1 * bux + vcs1 * bwx;
+      const Float4 qz = vks1 * buz + vcs1 * bwz;
+      const Float4 nwx = swx + vdt * ((fsx - sx) * vinv);
+      const Float4 nwz = swz + vdt * ((fsz - sz) * vinv);
+      store(&S.s.wx, i, simd::Select(present, nwx, swx));
+      store(&S.s.wz, i, simd::Select(present, nwz, swz));
+      store(&S.s.ux, i, simd::Select(present, sux + vdt * nwx, sux));
+      store(&S.s.uz, i, simd::Select(present, suz + vdt * nwz, suz));
+      awx += vdt * ((f1x + sx - px) * vinv);
+      awz += vdt * ((f1z + sz - pz) * vinv);
+      aux += vdt * awx;
+      auz += vdt * awz;
+      bwx += vdt * ((f2x + px - qx) * vinv2);
+      bwz += vdt * ((f2z + pz - qz) * vinv2);
+      bux += vdt * bwx;
+      buz += vdt * bwz;
+      store(&M1.s.wx, i, awx);
+      store(&M1.s.wz, i, awz);
+      store(&M1.s.ux, i, aux);
+      store(&M1.s.uz, i, auz);
+      store(&M2.s.wx, i, bwx);
+      store(&M2.s.wz, i, bwz);
+      store(&M2.s.ux, i, bux);
+      store(&M2.s.uz, i, buz);
+      i += 4;
+      continue;
+    }
+    float fsx, fsz, f1x, f1z, f2x, f2z;
+    NodeForce(L, S.s, i, &fsx, &fsz);
+    NodeForce(L, M1.s, i, &f1x, &f1z);
+    NodeForce(L, M2.s, i, &f2x, &f2z);
     // S → M1, breaking past the node's shear limit (checked on the positions the step starts
     // from, as the springs are).
     float sx = 0.0f, sz = 0.0f;
@@ -222,23 +301,20 @@ bool StepFourLayer(const Lattice& L, FourLayer* f) {
     const float qx = ks1 * M2.s.ux[i] + cs1 * M2.s.wx[i];
     const float qz = ks1 * M2.s.uz[i] + cs1 * M2.s.wz[i];
     if (S.present[i]) {
-      S.s.wx[i] += dt * ((S.s.fx[i] - sx) * inv_m);
-      S.s.wz[i] += dt * ((S.s.fz[i] - sz) * inv_m);
+      S.s.wx[i] += dt * ((fsx - sx) * inv_m);
+      S.s.wz[i] += dt * ((fsz - sz) * inv_m);
       S.s.ux[i] += dt * S.s.wx[i];
       S.s.uz[i] += dt * S.s.wz[i];
     }
-    M1.s.wx[i] += dt * ((M1.s.fx[i] + sx - px) * inv_m);
-    M1.s.wz[i] += dt * ((M1.s.fz[i] + sz - pz) * inv_m);
+    M1.s.wx[i] += dt * ((f1x + sx - px) * inv_m);
+    M1.s.wz[i] += dt * ((f1z + sz - pz) * inv_m);
     M1.s.ux[i] += dt * M1.s.wx[i];
     M1.s.uz[i] += dt * M1.s.wz[i];
-    M2.s.wx[i] += dt * ((M2.s.fx[i] + px - qx) * inv_m2);
-    M2.s.wz[i] += dt * ((M2.s.fz[i] + pz - qz) * inv_m2);
+    M2.s.wx[i] += dt * ((f2x + px - qx) * inv_m2);
+    M2.s.wz[i] += dt * ((f2z + pz - qz) * inv_m2);
     M2.s.ux[i] += dt * M2.s.wx[i];
     M2.s.uz[i] += dt * M2.s.wz[i];
-    for (int r = 0; r < 3; ++r) {
-      f->layer[r].s.fx[i] = 0.0f;
-      f->layer[r].s.fz[i] = 0.0f;
-    }
+    ++i;
   }
   ++f->step;
   if (f->step % kPeelCheckSteps == 0) CheckPeeling(L, f);
@@ -349,7 +425,7 @@ void CheckPeeling(const Lattice& L, FourLayer* f) {
   std::sort(peel.begin(), peel.end());
   peel.erase(std::unique(peel.begin(), peel.end()), peel.end());
   if (!peel.empty() && f->first_peel_step < 0) f->first_peel_step = f->step;
-  for (int v : peel) PeelNode(*f, v, &S);
+  for (int v : peel) PeelNode(L, *f, v, &S);
   f->peeled_nodes += static_cast<int>(peel.size());
 }
 

@@ -1,6 +1,7 @@
 // The triangular torus lattice of the 2-layer model: springs and triangles by fixed rules.
 #include "bark/lattice.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -83,6 +84,66 @@ Lattice BuildLattice(int n_r, int n_h, double l_o) {
       std::array<int32_t, 2>& side = L.spring_tris[L.tri_springs[t][e]];
       side[side[0] < 0 ? 0 : 1] = static_cast<int32_t>(t);
     }
+  }
+  // The spring pass's layout: slots, each node's springs in index order, the runs of four.
+  const int springs = L.springs();
+  L.slot_b.assign(springs, 0);
+  for (int s = 0; s < springs; ++s) L.slot_b[L.slot(s)] = L.b[s];
+  std::vector<int> count(n, 0);
+  L.inc_slot.assign(6 * static_cast<std::size_t>(n), 0);
+  L.inc_a.assign(6 * static_cast<std::size_t>(n), 0);
+  for (int s = 0; s < springs; ++s) {
+    for (int end = 0; end < 2; ++end) {
+      const int v = end == 0 ? L.a[s] : L.b[s];
+      const std::size_t e = 6 * static_cast<std::size_t>(v) + count[v]++;
+      L.inc_slot[e] = L.slot(s);
+      L.inc_a[e] = end == 0;
+    }
+  }
+  L.slot_run4.assign(springs, 0);
+  for (int q = 0; q + 3 < springs; ++q) {
+    bool run = (q % n) + 3 < n;  // within one sub-family
+    for (int k = 1; k < 4 && run; ++k) run = L.slot_b[q + k] == L.slot_b[q] + k;
+    L.slot_run4[q] = run;
+  }
+  L.node_run4.assign(n, 0);
+  for (int v = 0; v + 3 < n; ++v) {
+    bool run = true;
+    for (int k = 1; k < 4 && run; ++k) {
+      for (int e = 0; e < 6 && run; ++e) {
+        const std::size_t p = 6 * static_cast<std::size_t>(v) + e, q = p + 6 * k;
+        run = L.inc_slot[q] == L.inc_slot[p] + k && L.inc_a[q] == L.inc_a[p];
+      }
+    }
+    L.node_run4[v] = run;
+  }
+  // Scan lines: a triangle's axial edge (its two nodes in one column) and its apex fix its strip,
+  // its half (beside the axial edge) and the lines through it. Heights in quarters of L_o.
+  L.line_around.assign(static_cast<std::size_t>(n_h) * 2 * n_r, -1);
+  L.line_along.assign(static_cast<std::size_t>(n_r) * 2 * n_h, -1);
+  auto pmod = [](int v, int m) { return ((v % m) + m) % m; };
+  for (std::size_t t = 0; t < L.tri_nodes.size(); ++t) {
+    const int n0 = L.tri_nodes[t][0], c0 = n0 / n_h;
+    const auto& o = L.tri_offsets[t];
+    int col[3], z4[3];
+    col[0] = c0;
+    z4[0] = 4 * (n0 % n_h) + 2 * (c0 % 2);
+    for (int k = 1; k < 3; ++k) {
+      col[k] = c0 + static_cast<int>(std::lround(o[2 * (k - 1)] / pitch));
+      z4[k] = z4[0] + static_cast<int>(std::lround(o[2 * (k - 1) + 1] / (lo / 4.0f)));
+    }
+    int apex = 0;
+    for (int k = 0; k < 3; ++k)
+      if (col[k] != col[(k + 1) % 3] && col[k] != col[(k + 2) % 3]) apex = k;
+    const int e0 = (apex + 1) % 3, e1 = (apex + 2) % 3;
+    const int za = std::min(z4[e0], z4[e1]);  // the axial edge spans [za, za + 4]
+    const bool right = col[apex] > col[e0];   // the apex right of the axial edge
+    const int strip = pmod(std::min(col[apex], col[e0]), n_r);
+    const int line = pmod((za + pmod(1 - za, 4) - 1) / 4, n_h);
+    const int side = 2 * strip + (right ? 0 : 1);
+    L.line_around[static_cast<std::size_t>(line) * 2 * n_r + side] = static_cast<int32_t>(t);
+    L.line_along[static_cast<std::size_t>(strip) * 2 * n_h + pmod(za / 2, 2 * n_h)] =
+        static_cast<int32_t>(t);
   }
   return L;
 }

@@ -31,11 +31,38 @@ struct Lattice {
   std::vector<std::array<float, 4>> tri_offsets;  // x1, z1, x2, z2
   // The two triangles on either side of each spring (every spring has two on the torus).
   std::vector<std::array<int32_t, 2>> spring_tris;
+  // The spring pass's layout (springs.cpp). A spring's force slot: axial s -> s, diagonal
+  // s = N + 2n + k -> N + k·N + n (N nodes), so each of the three sub-families (axial, first and
+  // second diagonal of a node) lists its springs in node order, node a = n. slot_b: node b of each
+  // slot. inc_slot / inc_a: each node's six springs in ascending spring index (the order the
+  // forces were summed in, spring by spring), as slot and 1 when the node is the spring's a.
+  // slot_run4: slots n..n+3 of a sub-family have consecutive b. node_run4: nodes n..n+3 have, entry
+  // by entry, consecutive slots and the same ends (so four nodes sum as lanes).
+  std::vector<int32_t> slot_b, inc_slot;
+  // Scan lines (the crack-spacing measure, regions.h), one triangle a half of a strip or row.
+  // line_around: N_H lines around the trunk at z = (j + 1/4)·L_o, each of 2·N_R halves, half h
+  // at x ∈ [h, h + 1]·pitch/2 (no line runs through a node, each triangle there is pitch/2 wide);
+  // line_along: N_R lines along the trunk half-way between columns i and i + 1, each of 2·N_H
+  // halves, half h at z ∈ [L_o/4 + h·L_o/2, L_o/4 + (h + 1)·L_o/2]. Every triangle is on one line
+  // of each.
+  std::vector<int32_t> line_around, line_along;
+  std::vector<uint8_t> inc_a, slot_run4, node_run4;
 
   int nodes() const { return n_r * n_h; }
   int springs() const { return static_cast<int>(a.size()); }
   Family family(int s) const { return s < axial_count ? Family::kAxial : Family::kDiagonal; }
   int node(int i, int j) const { return i * n_h + j; }
+  // The force slot of spring s (see slot_b), and the spring of a slot.
+  int slot(int s) const {
+    return s < axial_count
+               ? s
+               : axial_count + ((s - axial_count) & 1) * nodes() + (s - axial_count) / 2;
+  }
+  int spring_of_slot(int q) const {
+    if (q < axial_count) return q;
+    const int k = (q - axial_count) / nodes(), n = (q - axial_count) % nodes();
+    return axial_count + 2 * n + k;
+  }
   double pitch() const;          // (√3/2)·L_o: the column spacing around the trunk
   double circumference() const;  // N_R·pitch = 2π·R_o
   double height() const;         // H_o = L_o·N_H

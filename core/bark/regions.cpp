@@ -5,6 +5,64 @@
 #include <cmath>
 
 namespace niwa::bark {
+namespace {
+
+// The spacing of the cracks on `lines` lines of `halves` halves each (cm a half), line l's half h
+// the triangle table[l·halves + h]; counted[t]: triangle t is in a counted plate.
+Spacing ScanSpacing(const std::vector<int32_t>& table, int lines, int halves, double half_cm,
+                    const std::vector<uint8_t>& counted) {
+  Spacing sp;
+  double sum = 0, gaps = 0, gap_sum = 0;
+  std::vector<double> middles;
+  for (int l = 0; l < lines; ++l) {
+    const int32_t* row = table.data() + static_cast<std::size_t>(l) * halves;
+    int first_crack = -1, plates = 0;
+    for (int h = 0; h < halves; ++h) {
+      if (counted[row[h]])
+        ++plates;
+      else if (first_crack < 0)
+        first_crack = h;
+    }
+    if (plates == 0) continue;
+    ++sp.lines;
+    const double length = halves * half_cm;
+    if (first_crack < 0) {
+      ++sp.open;
+      sum += length;
+      sp.max = std::max(sp.max, length);
+      continue;
+    }
+    // Runs of crack from a plate half on, going round once: their middles.
+    int start = first_crack;
+    while (!counted[row[start % halves]]) ++start;  // the first plate half after a crack
+    middles.clear();
+    for (int k = 0; k < halves;) {
+      if (counted[row[(start + k) % halves]]) {
+        ++k;
+        continue;
+      }
+      const int run_start = k;
+      while (k < halves && !counted[row[(start + k) % halves]]) ++k;
+      middles.push_back(start + (run_start + k) / 2.0);
+    }
+    const int cracks = static_cast<int>(middles.size());
+    const double spacing = length / cracks;
+    sum += spacing;
+    sp.max = std::max(sp.max, spacing);
+    for (int c = 0; c < cracks; ++c) {
+      const double next = c + 1 < cracks ? middles[c + 1] : middles[0] + halves;
+      const double gap = (next - middles[c]) * half_cm;
+      gap_sum += gap;
+      gaps += 1;
+      sp.gap_max = std::max(sp.gap_max, gap);
+    }
+  }
+  if (sp.lines > 0) sp.mean = sum / sp.lines;
+  if (gaps > 0) sp.gap_mean = gap_sum / gaps;
+  return sp;
+}
+
+}  // namespace
 
 CrackMeasures MeasureCracks(const Lattice& L, const Surface& s, double s_theta, double s_z) {
   CrackMeasures m;
@@ -85,8 +143,12 @@ CrackMeasures MeasureCracks(const Lattice& L, const Surface& s, double s_theta, 
       }
     }
     r.triangles = static_cast<int>(queue.size());
-    r.width = r.wraps_around ? L.circumference() * s_theta : (cmax - cmin) * pitch;
-    r.height = r.wraps_along ? L.height() * s_z : (zmax - zmin) * half;
+    // On the torus no plate is wider or taller than the patch: a plate wrapping around the trunk
+    // may wind up and down in its unwrapped walk (a wavy band) further than H without closing a
+    // loop along it; it then covers every height, so its height is H (likewise the width).
+    const double c_patch = L.circumference() * s_theta, h_patch = L.height() * s_z;
+    r.width = r.wraps_around ? c_patch : std::min((cmax - cmin) * pitch, c_patch);
+    r.height = r.wraps_along ? h_patch : std::min((zmax - zmin) * half, h_patch);
     m.regions.push_back(r);
     plates += r.triangles;
     if (r.triangles < 2) continue;
@@ -115,6 +177,15 @@ CrackMeasures MeasureCracks(const Lattice& L, const Surface& s, double s_theta, 
   const double per_row = crossings / L.n_h, per_column = axial_broken / L.n_r;
   m.intercept_width = per_row > 0 ? L.circumference() * s_theta / per_row : 0.0;
   m.intercept_height = per_column > 0 ? L.height() * s_z / per_column : 0.0;
+  // Crack spacing along the scan lines, over the counted plates.
+  std::vector<uint8_t> in_counted(nt, 0);
+  for (int t = 0; t < nt; ++t) {
+    const int id = m.tri_region[t];
+    in_counted[t] = id >= 0 && m.regions[id].triangles >= 2;
+  }
+  m.spacing_width =
+      ScanSpacing(L.line_around, L.n_h, 2 * L.n_r, L.pitch() * s_theta / 2.0, in_counted);
+  m.spacing_height = ScanSpacing(L.line_along, L.n_r, 2 * L.n_h, L.l_o * s_z / 2.0, in_counted);
   return m;
 }
 

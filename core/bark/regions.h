@@ -21,6 +21,19 @@ struct Region {
   bool closed() const { return !wraps_around && !wraps_along; }
 };
 
+// Crack spacing along scan lines (the paper's Table 3: 「縦横のひびの間隔を計測した」, the spacing
+// of the vertical and the horizontal cracks; lattice.h's lines). On a line a crack is a run of
+// halves whose triangle is in no counted plate (a cracked triangle or a plate under two
+// triangles); a line's spacing is its length / the cracks it crosses, as a line drawn across a
+// picture and its crossings counted.
+struct Spacing {
+  double mean = 0;  // cm: the mean of the lines' spacings
+  double max = 0;   // cm: the largest line spacing (a line crossing no crack: its length)
+  double gap_mean = 0, gap_max = 0;  // cm: over single gaps between neighbouring cracks' middles
+  int lines = 0;  // lines with a plate on them (the others are all crack and not counted)
+  int open = 0;   // of those, lines crossing no crack (the paper's "(>20)")
+};
+
 struct CrackMeasures {
   int springs[2] = {0, 0}, broken[2] = {0, 0};
   double broken_fraction[2] = {0, 0};
@@ -35,6 +48,9 @@ struct CrackMeasures {
   // Intercepts: C / mean crack crossings of a row, H / mean broken axial springs of a column
   // (0 when no crack crosses: the spacing is over the patch).
   double intercept_width = 0, intercept_height = 0;
+  // Crack spacing around the trunk (width: the vertical cracks) and along it (height: the
+  // horizontal cracks).
+  Spacing spacing_width, spacing_height;
 };
 
 // The measures of the surface at the growth factors (s_θ, s_z scale the reference lattice).

@@ -42,92 +42,103 @@ constexpr float kNever = std::numeric_limits<float>::infinity();
 
 constexpr float kTinyLength2 = 1e-12f;  // a floor under l² (two nodes on one point)
 
-// Break checks and forces of the springs [begin, end) of one family: four springs a batch
-// (indexed loads into lanes, the arithmetic lane by lane, the forces scattered in spring order),
-// the rest one by one with the same operations, so the bits do not depend on the batching.
-int SpringPass(const Lattice& L, int begin, int end, float k, float c, float l0, const Growth& g,
-               Surface* s) {
+// Break checks and forces of one sub-family of springs (0: the axial springs; 1, 2: each node's
+// first and second diagonal), the spring of node n joining a = n to b = slot_b: four nodes a
+// batch, b loaded as a run where slot_run4 says so, else lane by lane, and the arithmetic lane by
+// lane; a tail of fewer than four one by one with the same operations, so the bits do not depend
+// on the batching. The forces go to the slots (gx, gz); a node pass sums them (NodeForce,
+// NodeForce4). A batch of four broken springs only writes its zero forces. The reference vector of
+// a sub-family is one (lattice.h: axial (0, L_o), diagonals (pitch, ±L_o/2)).
+int SubFamilyPass(const Lattice& L, int sub, float k, float c, float l0, const Growth& g,
+                  Surface* s) {
   using simd::Float4;
   using simd::Int4;
-  const int32_t* A = L.a.data();
-  const int32_t* B = L.b.data();
-  const float* OX = L.ox.data();
-  const float* OZ = L.oz.data();
+  const int n_nodes = L.nodes();
+  const int base = sub * n_nodes;
+  const int first = sub == 0 ? 0 : L.axial_count + (sub - 1), stride = sub == 0 ? 1 : 2;
+  const float ox = L.ox[first], oz = L.oz[first];
+  const int32_t* B = L.slot_b.data() + base;
+  const uint8_t* run4 = L.slot_run4.data() + base;
   const float* ux = s->ux.data();
   const float* uz = s->uz.data();
   const float* wx = s->wx.data();
   const float* wz = s->wz.data();
-  float* fx = s->fx.data();
-  float* fz = s->fz.data();
-  float* limit2 = s->limit2.data();
-  float* on = s->on.data();
+  float* gx = s->gx.data() + base;
+  float* gz = s->gz.data() + base;
+  float* limit2 = s->limit2.data() + base;
+  float* on = s->on.data() + base;
   const float st = g.s_theta, sz = g.s_z, rt = g.rate_theta, rz = g.rate_z;
   int broke = 0;
-  auto record_break = [&](int i) {
-    limit2[i] = kNever;
-    on[i] = 0.0f;
-    s->broken[i] = 1;
+  auto record_break = [&](int n) {
+    limit2[n] = kNever;
+    on[n] = 0.0f;
+    s->broken[first + stride * n] = 1;
     ++broke;
   };
-  int i = begin;
-  const Float4 vst = simd::Splat4(st), vsz = simd::Splat4(sz), vrt = simd::Splat4(rt),
-               vrz = simd::Splat4(rz), vk = simd::Splat4(k), vc = simd::Splat4(c),
+  // The products of the constant reference vector (as the per-spring ox·s_θ etc. were).
+  const float dx0 = ox * st, dz0 = oz * sz, rx0 = ox * rt, rz0 = oz * rz;
+  const Float4 vdx0 = simd::Splat4(dx0), vdz0 = simd::Splat4(dz0), vrx0 = simd::Splat4(rx0),
+               vrz0 = simd::Splat4(rz0), vk = simd::Splat4(k), vc = simd::Splat4(c),
                vl0 = simd::Splat4(l0), tiny = simd::Splat4(kTinyLength2), zero = simd::Splat4(0.0f),
                one = simd::Splat4(1.0f);
-  for (; i + 4 <= end; i += 4) {
-    const int a0 = A[i], a1 = A[i + 1], a2 = A[i + 2], a3 = A[i + 3];
-    const int b0 = B[i], b1 = B[i + 1], b2 = B[i + 2], b3 = B[i + 3];
-    Float4 ox, oz, lim, alive;
-    std::memcpy(&ox, OX + i, sizeof ox);
-    std::memcpy(&oz, OZ + i, sizeof oz);
-    std::memcpy(&lim, limit2 + i, sizeof lim);
-    std::memcpy(&alive, on + i, sizeof alive);
-    const Float4 dux =
-        Float4{ux[b0], ux[b1], ux[b2], ux[b3]} - Float4{ux[a0], ux[a1], ux[a2], ux[a3]};
-    const Float4 duz =
-        Float4{uz[b0], uz[b1], uz[b2], uz[b3]} - Float4{uz[a0], uz[a1], uz[a2], uz[a3]};
-    const Float4 dwx =
-        Float4{wx[b0], wx[b1], wx[b2], wx[b3]} - Float4{wx[a0], wx[a1], wx[a2], wx[a3]};
-    const Float4 dwz =
-        Float4{wz[b0], wz[b1], wz[b2], wz[b3]} - Float4{wz[a0], wz[a1], wz[a2], wz[a3]};
-    const Float4 dx = ox * vst + dux, dz = oz * vsz + duz;
+  auto load = [](const float* p) {
+    Float4 v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  };
+  int n = 0;
+  for (; n + 4 <= n_nodes; n += 4) {
+    const Float4 alive = load(on + n);
+    if (!simd::AnyTrue(alive != zero)) {
+      // Broken before this step: no force, no break.
+      std::memcpy(gx + n, &zero, sizeof zero);
+      std::memcpy(gz + n, &zero, sizeof zero);
+      continue;
+    }
+    Float4 bux, buz, bwx, bwz;
+    if (run4[n]) {
+      const int b = B[n];
+      bux = load(ux + b);
+      buz = load(uz + b);
+      bwx = load(wx + b);
+      bwz = load(wz + b);
+    } else {
+      const int b0 = B[n], b1 = B[n + 1], b2 = B[n + 2], b3 = B[n + 3];
+      bux = Float4{ux[b0], ux[b1], ux[b2], ux[b3]};
+      buz = Float4{uz[b0], uz[b1], uz[b2], uz[b3]};
+      bwx = Float4{wx[b0], wx[b1], wx[b2], wx[b3]};
+      bwz = Float4{wz[b0], wz[b1], wz[b2], wz[b3]};
+    }
+    const Float4 dx = vdx0 + (bux - load(ux + n)), dz = vdz0 + (buz - load(uz + n));
     const Float4 l2 = dx * dx + dz * dz;
-    const Int4 breaks = l2 > lim;
+    const Int4 breaks = l2 > load(limit2 + n);
     const Float4 l = simd::Sqrt(simd::Select(l2 > tiny, l2, tiny));
     const Float4 inv = one / l;
     const Float4 nx = dx * inv, nz = dz * inv;
-    const Float4 rel = (dwx + ox * vrt) * nx + (dwz + oz * vrz) * nz;
+    const Float4 rel = ((bwx - load(wx + n)) + vrx0) * nx + ((bwz - load(wz + n)) + vrz0) * nz;
     const Float4 f = simd::Select(breaks, zero, alive) * (vk * (l - vl0) + vc * rel);
-    const Float4 gx = f * nx, gz = f * nz;
-    if (breaks[0] | breaks[1] | breaks[2] | breaks[3]) {
+    const Float4 fx = f * nx, fz = f * nz;
+    std::memcpy(gx + n, &fx, sizeof fx);
+    std::memcpy(gz + n, &fz, sizeof fz);
+    if (simd::AnyTrue(breaks)) {
       for (int q = 0; q < 4; ++q)
-        if (breaks[q]) record_break(i + q);
-    }
-    const int av[4] = {a0, a1, a2, a3}, bv[4] = {b0, b1, b2, b3};
-    for (int q = 0; q < 4; ++q) {
-      fx[av[q]] += gx[q];
-      fz[av[q]] += gz[q];
-      fx[bv[q]] -= gx[q];
-      fz[bv[q]] -= gz[q];
+        if (breaks[q]) record_break(n + q);
     }
   }
-  for (; i < end; ++i) {
-    const int a = A[i], b = B[i];
-    const float dx = OX[i] * st + (ux[b] - ux[a]);
-    const float dz = OZ[i] * sz + (uz[b] - uz[a]);
+  for (; n < n_nodes; ++n) {
+    const int a = n, b = B[n];
+    const float dx = dx0 + (ux[b] - ux[a]);
+    const float dz = dz0 + (uz[b] - uz[a]);
     const float l2 = dx * dx + dz * dz;
-    const bool breaks = l2 > limit2[i];
+    const bool breaks = l2 > limit2[n];
     const float l = std::sqrt(l2 > kTinyLength2 ? l2 : kTinyLength2);
     const float inv = 1.0f / l;
     const float nx = dx * inv, nz = dz * inv;
-    const float rel = ((wx[b] - wx[a]) + OX[i] * rt) * nx + ((wz[b] - wz[a]) + OZ[i] * rz) * nz;
-    const float f = (breaks ? 0.0f : on[i]) * (k * (l - l0) + c * rel);
-    const float gx = f * nx, gz = f * nz;
-    if (breaks) record_break(i);
-    fx[a] += gx;
-    fz[a] += gz;
-    fx[b] -= gx;
-    fz[b] -= gz;
+    const float rel = ((wx[b] - wx[a]) + rx0) * nx + ((wz[b] - wz[a]) + rz0) * nz;
+    const float f = (breaks ? 0.0f : on[n]) * (k * (l - l0) + c * rel);
+    gx[n] = f * nx;
+    gz[n] = f * nz;
+    if (breaks) record_break(n);
   }
   return broke;
 }
@@ -170,6 +181,8 @@ Surface BornSurface(const Lattice& L, const Mechanics& mech, uint64_t seed, uint
   s.wz.assign(n, 0.0f);
   s.fx.assign(n, 0.0f);
   s.fz.assign(n, 0.0f);
+  s.gx.assign(L.a.size(), 0.0f);
+  s.gz.assign(L.a.size(), 0.0f);
   s.limit2.resize(L.a.size());
   s.on.assign(L.a.size(), 1.0f);
   s.broken.assign(L.a.size(), 0);
@@ -180,21 +193,20 @@ Surface BornSurface(const Lattice& L, const Mechanics& mech, uint64_t seed, uint
     double excess = (mech.kappa_mean[f] - 1.0) * (1.0 + mech.sigma * normal.Next());
     if (excess < 1e-4) excess = 1e-4;
     const double limit = (1.0 + excess) * rest[f];
-    s.limit2[i] = static_cast<float>(limit * limit);
+    s.limit2[L.slot(i)] = static_cast<float>(limit * limit);
   }
   return s;
 }
 
 int Step(const Lattice& L, const Mechanics& mech, const Growth& g, Surface* s) {
   const float l0 = static_cast<float>(L.l_o);
-  int broke = SpringPass(L, 0, L.axial_count, static_cast<float>(mech.k[0]),
-                         static_cast<float>(mech.c[0]), l0, g, s);
-  s->broken_count[0] += broke;
-  const int diag = SpringPass(L, L.axial_count, L.springs(), static_cast<float>(mech.k[1]),
-                              static_cast<float>(mech.c[1]), l0, g, s);
-  s->broken_count[1] += diag;
-  broke += diag;
-  // Nodes: shear spring and dashpot to the anchor, then symplectic Euler.
+  const float k[2] = {static_cast<float>(mech.k[0]), static_cast<float>(mech.k[1])};
+  const float c[2] = {static_cast<float>(mech.c[0]), static_cast<float>(mech.c[1])};
+  const float rest[2] = {l0, l0};
+  const int broke = SpringSlotForces(L, k, c, rest, g, s);
+  // Nodes: the springs' forces, the shear spring and dashpot to the anchor, then symplectic Euler
+  // (four nodes a batch where their springs lie in runs, lane by lane as one by one; the rest, at
+  // the seams where a node's springs come in another order, one by one).
   const float dt = static_cast<float>(mech.dt);
   const float inv_m = static_cast<float>(1.0 / mech.mass);
   const float ks = static_cast<float>(mech.k_s), cs = static_cast<float>(mech.c_s);
@@ -202,29 +214,78 @@ int Step(const Lattice& L, const Mechanics& mech, const Growth& g, Surface* s) {
   float* uz = s->uz.data();
   float* wx = s->wx.data();
   float* wz = s->wz.data();
-  float* fx = s->fx.data();
-  float* fz = s->fz.data();
   const int n = L.nodes();
-  for (int i = 0; i < n; ++i) {
-    const float ax = (fx[i] - ks * ux[i] - cs * wx[i]) * inv_m;
-    const float az = (fz[i] - ks * uz[i] - cs * wz[i]) * inv_m;
+  using simd::Float4;
+  const Float4 vdt = simd::Splat4(dt), vinv = simd::Splat4(inv_m), vks = simd::Splat4(ks),
+               vcs = simd::Splat4(cs);
+  int i = 0;
+  while (i < n) {
+    if (i + 4 <= n && L.node_run4[i]) {
+      Float4 fx, fz, x, z, vx, vz;
+      NodeForce4(L, *s, i, &fx, &fz);
+      std::memcpy(&x, ux + i, sizeof x);
+      std::memcpy(&z, uz + i, sizeof z);
+      std::memcpy(&vx, wx + i, sizeof vx);
+      std::memcpy(&vz, wz + i, sizeof vz);
+      const Float4 ax = (fx - vks * x - vcs * vx) * vinv;
+      const Float4 az = (fz - vks * z - vcs * vz) * vinv;
+      vx += vdt * ax;
+      vz += vdt * az;
+      x += vdt * vx;
+      z += vdt * vz;
+      std::memcpy(ux + i, &x, sizeof x);
+      std::memcpy(uz + i, &z, sizeof z);
+      std::memcpy(wx + i, &vx, sizeof vx);
+      std::memcpy(wz + i, &vz, sizeof vz);
+      i += 4;
+      continue;
+    }
+    float fx, fz;
+    NodeForce(L, *s, i, &fx, &fz);
+    const float ax = (fx - ks * ux[i] - cs * wx[i]) * inv_m;
+    const float az = (fz - ks * uz[i] - cs * wz[i]) * inv_m;
     wx[i] += dt * ax;
     wz[i] += dt * az;
     ux[i] += dt * wx[i];
     uz[i] += dt * wz[i];
-    fx[i] = 0.0f;
-    fz[i] = 0.0f;
+    ++i;
   }
   return broke;
 }
 
-int SpringForces(const Lattice& L, const float k[2], const float c[2], const float rest[2],
-                 const Growth& g, Surface* s) {
-  const int axial = SpringPass(L, 0, L.axial_count, k[0], c[0], rest[0], g, s);
+int SpringSlotForces(const Lattice& L, const float k[2], const float c[2], const float rest[2],
+                     const Growth& g, Surface* s) {
+  const std::size_t slots = static_cast<std::size_t>(L.springs());
+  if (s->gx.size() != slots) {
+    s->gx.assign(slots, 0.0f);
+    s->gz.assign(slots, 0.0f);
+  }
+  const int axial = SubFamilyPass(L, 0, k[0], c[0], rest[0], g, s);
   s->broken_count[0] += axial;
-  const int diag = SpringPass(L, L.axial_count, L.springs(), k[1], c[1], rest[1], g, s);
+  const int diag = SubFamilyPass(L, 1, k[1], c[1], rest[1], g, s) +
+                   SubFamilyPass(L, 2, k[1], c[1], rest[1], g, s);
   s->broken_count[1] += diag;
   return axial + diag;
+}
+
+int SpringForces(const Lattice& L, const float k[2], const float c[2], const float rest[2],
+                 const Growth& g, Surface* s) {
+  const int broke = SpringSlotForces(L, k, c, rest, g, s);
+  for (int i = 0; i < L.nodes(); ++i) {
+    // The accumulators plus the springs in ascending index: what adding spring by spring gave.
+    const std::size_t e0 = 6 * static_cast<std::size_t>(i);
+    for (std::size_t e = e0; e < e0 + 6; ++e) {
+      const int q = L.inc_slot[e];
+      if (L.inc_a[e]) {
+        s->fx[i] += s->gx[q];
+        s->fz[i] += s->gz[q];
+      } else {
+        s->fx[i] -= s->gx[q];
+        s->fz[i] -= s->gz[q];
+      }
+    }
+  }
+  return broke;
 }
 
 double SpringStrain(const Lattice& L, const Surface& s, const Growth& g, int i) {

@@ -13,10 +13,12 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "bark/bark_params.h"
 #include "bark/lattice.h"
+#include "math/simd4.h"
 #include "random/pcg32.h"
 
 namespace niwa::bark {
@@ -44,9 +46,11 @@ struct Surface {
   std::vector<float> ux, uz;  // displacement from the anchor (cm)
   std::vector<float> wx, wz;  // its rate (cm/s)
   std::vector<float> fx, fz;  // force accumulators (zero between steps)
+  std::vector<float> gx, gz;  // each spring's force on its node a in a step, by slot (lattice.h)
+  // By slot (lattice.h: Lattice::slot(spring)), so the spring pass reads them in runs:
   std::vector<float> limit2;  // (κ_s·L_o)²: squared length that breaks the spring; +inf once broken
   std::vector<float> on;      // 1 while intact, 0 once broken (multiplies the spring's force)
-  std::vector<uint8_t> broken;
+  std::vector<uint8_t> broken;   // by spring
   int broken_count[2] = {0, 0};  // per family
 };
 
@@ -91,6 +95,48 @@ int Step(const Lattice& lattice, const Mechanics& mech, const Growth& growth, Su
 // scaled by growth; adds to the force accumulators and broken_count. Returns the springs broken.
 int SpringForces(const Lattice& lattice, const float k[2], const float c[2], const float rest[2],
                  const Growth& growth, Surface* surface);
+
+// SpringForces in two halves, for a node pass that sums its own forces: the springs' forces into
+// gx, gz by slot (not the accumulators), then a node's sums. NodeForce4 sums nodes n..n+3 as lanes
+// (lattice.node_run4[n] must hold); both add the springs in ascending index to 0, as the
+// accumulators did, so the bits are theirs.
+int SpringSlotForces(const Lattice& lattice, const float k[2], const float c[2],
+                     const float rest[2], const Growth& growth, Surface* surface);
+inline void NodeForce(const Lattice& L, const Surface& s, int n, float* fx, float* fz) {
+  float x = 0.0f, z = 0.0f;
+  const std::size_t e0 = 6 * static_cast<std::size_t>(n);
+  for (std::size_t e = e0; e < e0 + 6; ++e) {
+    const int q = L.inc_slot[e];
+    if (L.inc_a[e]) {
+      x += s.gx[q];
+      z += s.gz[q];
+    } else {
+      x -= s.gx[q];
+      z -= s.gz[q];
+    }
+  }
+  *fx = x;
+  *fz = z;
+}
+inline void NodeForce4(const Lattice& L, const Surface& s, int n, simd::Float4* fx,
+                       simd::Float4* fz) {
+  simd::Float4 x = simd::Splat4(0.0f), z = x;
+  const std::size_t e0 = 6 * static_cast<std::size_t>(n);
+  for (std::size_t e = e0; e < e0 + 6; ++e) {
+    simd::Float4 vx, vz;
+    std::memcpy(&vx, s.gx.data() + L.inc_slot[e], sizeof vx);
+    std::memcpy(&vz, s.gz.data() + L.inc_slot[e], sizeof vz);
+    if (L.inc_a[e]) {
+      x += vx;
+      z += vz;
+    } else {
+      x -= vx;
+      z -= vz;
+    }
+  }
+  *fx = x;
+  *fz = z;
+}
 
 // The strain l/L_o − 1 of spring s at the growth (a test's and a report's view).
 double SpringStrain(const Lattice& lattice, const Surface& surface, const Growth& growth, int s);

@@ -61,6 +61,17 @@ inline Double2 Select(Long2 mask, Double2 yes, Double2 no) {
 }
 
 inline Float4 Splat4(float v) { return Float4{v, v, v, v}; }
+
+// Whether any lane of a mask (all ones or all zeros a lane) is set.
+inline bool AnyTrue(Int4 mask) {
+#if defined(__wasm_simd128__)
+  return wasm_v128_any_true((v128_t)mask);
+#elif defined(__SSE2__)
+  return _mm_movemask_ps((__m128)mask) != 0;
+#else
+  return (mask[0] | mask[1] | mask[2] | mask[3]) != 0;
+#endif
+}
 inline Double2 Splat2(double v) { return Double2{v, v}; }
 
 // Four glm::vec3, one per lane, and glm's cross, dot and normalize in glm's order of operations.

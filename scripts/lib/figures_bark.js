@@ -40,14 +40,19 @@ function table3(level, extra) {
     species: r.species, paper: r.paper,
     ours: { mean: [pm(r.ours.mean_w), pm(r.ours.mean_h)], max: [pm(r.ours.max_w), pm(r.ours.max_h)],
       vertical_crack_share: pm(r.ours.vertical_crack_share), closed_fraction: pm(r.ours.closed_fraction),
-      strips: r.ours.strips },
+      strips: r.ours.strips,
+      // The paper's measure: crack spacing along scan lines (docs/bark-model.md "Crack spacing").
+      spacing: { mean: [pm(r.ours.spacing_mean_w), pm(r.ours.spacing_mean_h)],
+        max: [pm(r.ours.spacing_max_w), pm(r.ours.spacing_max_h)], open_lines_h: r.ours.spacing_open_lines_h } },
+    level_b_spacing: r.level_b_spacing,
   }));
   measures[`table3_${level}`] = { seeds, rows };
   console.log(`Table 3, level ${level} (seeds ${seeds}):`);
   for (const r of rows)
     console.log(`  ${r.species.padEnd(8)} paper ${r.paper.mean.join(' x ')} (max ${r.paper.max.join(' x ')})` +
       `  ours ${r.ours.mean.join(' x ')} (max ${r.ours.max.join(' x ')}), vertical ${r.ours.vertical_crack_share},` +
-      ` closed ${r.ours.closed_fraction}`);
+      ` closed ${r.ours.closed_fraction}; crack spacing ${r.ours.spacing.mean.join(' x ')}` +
+      ` (max ${r.ours.spacing.max.join(' x ')})`);
   if (level === 'A') {
     const w = (sp) => o(sp, 'mean_w'), h = (sp) => o(sp, 'mean_h');
     check('A: pine wider than tallow and camphor by 1.25x', w('pine') >= 1.25 * Math.max(w('tallow'), w('camphor')),
@@ -75,6 +80,13 @@ function table3(level, extra) {
     }
     check('B: camphor max height ">H" (a plate wraps along the trunk)', by.camphor.ours.strips > 0,
       `${by.camphor.ours.strips} strips over the seeds`);
+    // The same bars on the crack spacing along scan lines, the measure the paper names.
+    for (const r of t.rows) {
+      const b = r.level_b_spacing, sp = r.species;
+      const pc = (k) => b[k].ratio === undefined ? `${b[k].open_lines} open lines` : `${Math.round((b[k].ratio - 1) * 100)} %`;
+      check(`B (crack spacing): ${sp} means within ±25 %`, b.mean_w.met && b.mean_h.met, `width ${pc('mean_w')}, height ${pc('mean_h')}`);
+      check(`B (crack spacing): ${sp} maxima within ±40 %`, b.max_w.met && b.max_h.met, `width ${pc('max_w')}, height ${pc('max_h')}`);
+    }
   }
 }
 

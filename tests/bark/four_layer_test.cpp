@@ -121,7 +121,7 @@ std::vector<int> CutBlock(Model* m) {
   for (int sp = 0; sp < L.springs(); ++sp) {
     if (inside(L.a[sp]) != inside(L.b[sp])) {
       s.broken[sp] = 1;
-      s.on[sp] = 0.0f;
+      s.on[L.slot(sp)] = 0.0f;
     }
   }
   std::vector<int> block;

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <set>
+#include <utility>
+#include <vector>
 
 namespace niwa::bark {
 namespace {
@@ -81,6 +83,100 @@ TEST(Lattice, TrianglesTileThePatch) {
     area += a;
   }
   EXPECT_NEAR(area, L.circumference() * L.height(), 1e-4);
+}
+
+// The spring pass's layout: slots a bijection onto the springs, each sub-family in node order
+// with node a = n, each node's six springs in ascending index with its end, and the runs of four.
+TEST(Lattice, SlotsAndEachNodesSpringsInIndexOrder) {
+  for (const auto& [n_r, n_h] : {std::pair{8, 4}, std::pair{12, 7}, std::pair{16, 10}}) {
+    const Lattice L = BuildLattice(n_r, n_h, 0.33);
+    const int n = L.nodes();
+    std::vector<int> seen(L.springs(), 0);
+    for (int s = 0; s < L.springs(); ++s) {
+      const int q = L.slot(s);
+      ++seen[q];
+      EXPECT_EQ(L.spring_of_slot(q), s);
+      EXPECT_EQ(L.a[s], q % n) << s;  // node a of slot q is q mod N
+      EXPECT_EQ(L.slot_b[q], L.b[s]) << s;
+      // A sub-family's reference vector is one.
+      EXPECT_EQ(L.ox[s], L.ox[L.spring_of_slot(q - q % n)]) << s;
+      EXPECT_EQ(L.oz[s], L.oz[L.spring_of_slot(q - q % n)]) << s;
+    }
+    for (int v : seen) EXPECT_EQ(v, 1);
+    for (int v = 0; v < n; ++v) {
+      int last = -1;
+      for (int e = 0; e < 6; ++e) {
+        const std::size_t k = 6 * static_cast<std::size_t>(v) + e;
+        const int s = L.spring_of_slot(L.inc_slot[k]);
+        EXPECT_GT(s, last) << v;
+        last = s;
+        EXPECT_EQ(L.inc_a[k] ? L.a[s] : L.b[s], v) << v;
+      }
+      if (v + 3 < n && L.node_run4[v]) {
+        for (int q = 1; q < 4; ++q)
+          for (int e = 0; e < 6; ++e)
+            EXPECT_EQ(L.inc_slot[6 * (v + q) + e], L.inc_slot[6 * v + e] + q);
+      }
+    }
+    for (int q = 0; q + 3 < L.springs(); ++q) {
+      if (!L.slot_run4[q]) continue;
+      EXPECT_EQ(q / n, (q + 3) / n);
+      for (int k = 1; k < 4; ++k) EXPECT_EQ(L.slot_b[q + k], L.slot_b[q] + k);
+    }
+  }
+}
+
+// Whether the reference triangle t holds the point (x, z) on the torus (strictly inside).
+bool TriangleHolds(const Lattice& L, int t, double x, double z) {
+  const int n0 = L.tri_nodes[t][0];
+  const double x0 = L.x_of(n0 / L.n_h), z0 = L.z_of(n0 / L.n_h, n0 % L.n_h);
+  const auto& o = L.tri_offsets[t];
+  const double C = L.circumference(), H = L.height();
+  for (int wx = -1; wx <= 1; ++wx) {
+    for (int wz = -1; wz <= 1; ++wz) {
+      const double px = x + wx * C - x0, pz = z + wz * H - z0;
+      const double p[3][2] = {{0, 0}, {o[0], o[1]}, {o[2], o[3]}};
+      bool in = true;
+      for (int e = 0; e < 3 && in; ++e) {
+        const double* a = p[e];
+        const double* b = p[(e + 1) % 3];
+        in = (b[0] - a[0]) * (pz - a[1]) - (b[1] - a[1]) * (px - a[0]) > 1e-9;  // left of a->b
+      }
+      if (in) return true;
+    }
+  }
+  return false;
+}
+
+// The scan lines: every triangle once on each family of lines, and each half's middle inside it.
+TEST(Lattice, ScanLinesCrossEveryTriangleOnce) {
+  for (const auto& [n_r, n_h] : {std::pair{8, 4}, std::pair{12, 7}, std::pair{16, 10}}) {
+    const Lattice L = BuildLattice(n_r, n_h, 0.33);
+    const std::size_t nt = L.tri_nodes.size();
+    std::vector<int> around(nt, 0), along(nt, 0);
+    const double pitch = L.pitch(), lo = L.l_o;
+    for (int j = 0; j < n_h; ++j) {
+      for (int h = 0; h < 2 * n_r; ++h) {
+        const int t = L.line_around[static_cast<std::size_t>(j) * 2 * n_r + h];
+        ASSERT_GE(t, 0);
+        ++around[t];
+        EXPECT_TRUE(TriangleHolds(L, t, (h + 0.5) * pitch / 2, (j + 0.25) * lo)) << j << " " << h;
+      }
+    }
+    for (int i = 0; i < n_r; ++i) {
+      for (int h = 0; h < 2 * n_h; ++h) {
+        const int t = L.line_along[static_cast<std::size_t>(i) * 2 * n_h + h];
+        ASSERT_GE(t, 0);
+        ++along[t];
+        EXPECT_TRUE(TriangleHolds(L, t, (i + 0.5) * pitch, lo / 4 + (h + 0.5) * lo / 2))
+            << i << " " << h;
+      }
+    }
+    for (std::size_t t = 0; t < nt; ++t) {
+      EXPECT_EQ(around[t], 1) << t;
+      EXPECT_EQ(along[t], 1) << t;
+    }
+  }
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "bark/bark_state.h"
 
 namespace niwa::bark {
@@ -68,6 +70,69 @@ TEST(Regions, AnIntactLayerIsOneRegionWrappingBothWays) {
   EXPECT_NEAR(m.regions[0].width, L.circumference() * 1.02, 1e-12);
   EXPECT_NEAR(m.regions[0].height, L.height() * 1.03, 1e-12);
   EXPECT_DOUBLE_EQ(m.vertical_crack_share, 0.0);
+}
+
+// The crack spacing of the scan lines on the strips above: every line around crosses the two
+// vertical cuts (spacing C/2; the cuts' middles 4 and 8 pitches apart), no line along crosses a
+// crack (open lines, the paper's "(>20)": spacing H), the lines inside the cut strips are all
+// crack and not counted.
+TEST(Regions, ScanLinesAroundCrossTheVerticalCuts) {
+  const Lattice L = BuildLattice(12, 8, 0.33);
+  const Surface s = CutBy(L, [](int i, int) { return i >= 4 && i < 8 ? 1 : 0; });
+  const CrackMeasures m = MeasureCracks(L, s, 1.0, 1.0);
+  EXPECT_EQ(m.spacing_width.lines, 8);
+  EXPECT_EQ(m.spacing_width.open, 0);
+  EXPECT_NEAR(m.spacing_width.mean, L.circumference() / 2, 1e-12);
+  EXPECT_NEAR(m.spacing_width.max, L.circumference() / 2, 1e-12);
+  EXPECT_NEAR(m.spacing_width.gap_mean, L.circumference() / 2, 1e-12);
+  EXPECT_NEAR(m.spacing_width.gap_max, 8 * L.pitch(), 1e-12);
+  EXPECT_EQ(m.spacing_height.lines, 10);  // strips 3 and 7 (between the cut columns) all crack
+  EXPECT_EQ(m.spacing_height.open, 10);
+  EXPECT_NEAR(m.spacing_height.mean, L.height(), 1e-12);
+  EXPECT_NEAR(m.spacing_height.max, L.height(), 1e-12);
+}
+
+// Horizontal cuts every 4 rows: every line along the trunk crosses two (spacing H/2, at the grown
+// scale).
+TEST(Regions, ScanLinesAlongCrossTheHorizontalCuts) {
+  const Lattice L = BuildLattice(12, 8, 0.33);
+  const Surface s = CutBy(L, [](int, int j) { return j / 4; });
+  const CrackMeasures m = MeasureCracks(L, s, 1.0, 1.5);
+  EXPECT_EQ(m.spacing_height.lines, 12);
+  EXPECT_EQ(m.spacing_height.open, 0);
+  EXPECT_NEAR(m.spacing_height.mean, L.height() * 1.5 / 2, 1e-12);
+  EXPECT_NEAR(m.spacing_height.max, L.height() * 1.5 / 2, 1e-12);
+  // Around: the four lines between the cuts (rows 1, 2, 5, 6) cross none; the four running along
+  // a cut cross its zigzag back and forth.
+  EXPECT_EQ(m.spacing_width.lines, 8);
+  EXPECT_EQ(m.spacing_width.open, 4);
+  EXPECT_NEAR(m.spacing_width.max, L.circumference(), 1e-12);
+}
+
+// A wavy band round the trunk whose unwrapped walk climbs further than the patch is tall (a
+// triangle wave of 8·L_o on a patch 6·L_o tall) without closing a loop along it: on the torus it
+// covers every height, so no region is taller than the patch (before, its height was the walk's).
+TEST(Regions, ABandWavingRoundTheTrunkIsNoTallerThanThePatch) {
+  const Lattice L = BuildLattice(24, 6, 0.33);
+  const Surface s = CutBy(L, [&L](int i, int j) {
+    const double wave = 8.0 * 0.33 * (i <= 12 ? i : 24 - i) / 12.0;
+    double z = L.z_of(i, j) - wave;
+    z -= L.height() * std::floor(z / L.height());
+    return z < 3 * 0.33 ? 1 : 0;
+  });
+  const CrackMeasures m = MeasureCracks(L, s, 1.0, 1.0);
+  ASSERT_GE(m.count, 1);
+  bool band = false;
+  for (const Region& r : m.regions) {
+    EXPECT_LE(r.height, L.height() + 1e-12);
+    EXPECT_LE(r.width, L.circumference() + 1e-12);
+    if (r.wraps_around && !r.wraps_along && r.triangles > 20) {
+      band = true;
+      EXPECT_NEAR(r.height, L.height(), 1e-12);
+    }
+  }
+  EXPECT_TRUE(band);
+  EXPECT_LE(m.max_height, L.height() + 1e-12);
 }
 
 }  // namespace

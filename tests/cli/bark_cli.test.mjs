@@ -35,8 +35,9 @@ for (const species of ['camphor', 'tallow', 'pine']) {
   const a = outputs.native, b = outputs.wasm;
   check(`${species}: --stats native == WASM (timings aside)`, JSON.stringify(a.stats) === JSON.stringify(b.stats),
     `${JSON.stringify(a.stats)}\n${JSON.stringify(b.stats)}`);
-  check(`${species}: the stats have every field`, ['nodes', 'springs', 'steps', 'broken_fraction', 'vertical_crack_share', 'regions', 'intercept', 'hash']
-    .every((k) => k in a.stats) && a.stats.nodes === 512 && a.stats.broken.diagonal > 0);
+  check(`${species}: the stats have every field`, ['nodes', 'springs', 'steps', 'broken_fraction', 'vertical_crack_share', 'regions', 'intercept', 'spacing', 'hash']
+    .every((k) => k in a.stats) && a.stats.nodes === 512 && a.stats.broken.diagonal > 0
+    && a.stats.spacing.width.lines > 0 && a.stats.spacing.width.mean > 0);
   for (const name of Object.values(a.files)) {
     const x = readFileSync(join(a.dir, name)), y = readFileSync(join(b.dir, name));
     check(`${species} ${name}: native == WASM bytes (${x.length})`, x.length > 0 && x.equals(y));

@@ -251,7 +251,7 @@ class BarkLab {
           first = first < 0 ? at : std::min(first, at);
           continue;
         }
-        const double limit = std::sqrt(static_cast<double>(s.limit2[spring])) / L.l_o - 1.0;
+        const double limit = std::sqrt(static_cast<double>(s.limit2[L.slot(spring)])) / L.l_o - 1.0;
         const double strain = bark::SpringStrain(L, s, g, spring);
         if (limit > 0) stretch = std::max(stretch, static_cast<float>(strain / limit));
       }
