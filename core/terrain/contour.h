@@ -70,6 +70,7 @@ struct GrowCounts {
   bool truncated = false;          // stopped at the level or vertex cap, or a budget
   double vertices_worked = 0;  // Σ vertices of shrunk contours and their children (budget work)
   double sweep_tests = 0;      // Σ edge tests of the shrinks' union sweeps (terrain_budget.h)
+  double largest_worked = 0;   // the most points of one contour shrunk (held with its copies)
   std::string truncated_by;    // the budget's line when one stopped the growth (terrain_budget)
   double ms_shrink = 0, ms_mpd = 0, ms_fd = 0, ms_loops = 0;
 };
@@ -79,6 +80,10 @@ struct Terrain {
   std::vector<ContourNode> contours;
   std::vector<Summit> summits;  // one per top contour, in contour order
   double h0 = 0, dh = 0, d = 0;
+  // §4.1's d0 (the mean edge of the seed as grown: resampled at d/4, generate.h ResampleSeed) and
+  // that resampled seed's points (held while growing, besides the seed as given).
+  double d0 = 0;
+  std::size_t seed_samples = 0;
   GrowCounts counts;
 };
 
