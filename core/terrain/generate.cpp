@@ -282,6 +282,43 @@ bool Conflicts(const SiblingRings& s, std::size_t self, std::size_t k, const IRi
   return false;
 }
 
+// The levels' elevations under the profile ratio q (`dh_ratio`; contour.h Terrain::dh_ratio):
+// h_k = h0 + Δh·(1 + q + … + q^(k−1)) above the seed, h0 − Δh·(1/q + … + 1/q^(−k)) below it, by
+// products and sums only (no pow: the same bits natively and in WASM); with q = 1 exactly
+// h0 + k·Δh as before the row existed.
+class LevelElevations {
+ public:
+  LevelElevations(double h0, double dh, double q) : h0_(h0), dh_(dh), q_(q) {}
+  double At(int level) {
+    if (q_ == 1) return h0_ + level * dh_;
+    std::vector<double>& e = level >= 0 ? up_ : down_;
+    const std::size_t k = static_cast<std::size_t>(level >= 0 ? level : -level);
+    while (e.size() <= k) {
+      if (e.empty()) {
+        e.push_back(h0_);
+        step_up_ = dh_;
+        step_down_ = dh_ / q_;
+        continue;
+      }
+      if (level >= 0) {
+        e.push_back(e.back() + step_up_);
+        step_up_ *= q_;
+      } else {
+        e.push_back(e.back() - step_down_);
+        step_down_ /= q_;
+      }
+    }
+    return e[k];
+  }
+  // The interval from `level` to the level above it.
+  double Above(int level) { return q_ == 1 ? dh_ : At(level + 1) - At(level); }
+
+ private:
+  double h0_, dh_, q_;
+  double step_up_ = 0, step_down_ = 0;
+  std::vector<double> up_, down_;
+};
+
 }  // namespace
 
 double MidpointDelta(double l, double theta_deg, double d2) {
@@ -583,6 +620,8 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_s
   t.d = p.Get(P::kD);
   t.dh = p.Get(P::kDh);
   t.h0 = p.Get(P::kH0);
+  t.dh_ratio = p.Get(P::kDhRatio);
+  LevelElevations elevations(t.h0, t.dh, t.dh_ratio);
   const double d = t.d;
   // Issue 31: grown from the seed at a uniform arc length of d/4 (ResampleSeed), so the mountain
   // does not depend on how the line was sampled: d0 follows d, not the drawing. The seed as given
@@ -642,7 +681,7 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_s
     ContourNode node;
     node.ring = below[static_cast<std::size_t>(k)];
     node.level = -(k + 1);
-    node.elevation = t.h0 + node.level * t.dh;
+    node.elevation = elevations.At(node.level);
     node.parent = t.contours.empty() ? -1 : static_cast<int>(t.contours.size()) - 1;
     if (node.parent >= 0)
       t.contours[static_cast<std::size_t>(node.parent)].children.push_back(
@@ -799,7 +838,7 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_s
         ContourNode node;
         node.ring = r;
         node.level = level;
-        node.elevation = t.h0 + level * t.dh;
+        node.elevation = elevations.At(level);
         node.parent = at;
         work.vertices_held += static_cast<double>(r.size());
         work.vertices_worked += static_cast<double>(r.size());
@@ -818,7 +857,8 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_s
     Summit s;
     s.contour = static_cast<int>(i);
     s.position = PoleOfInaccessibility(t.contours[i].ring, &s.radius);
-    s.elevation = t.contours[i].elevation + t.dh * std::min(1.0, s.radius / d);
+    s.elevation = t.contours[i].elevation +
+                  elevations.Above(t.contours[i].level) * std::min(1.0, s.radius / d);
     t.summits.push_back(s);
   }
   return t;
