@@ -383,7 +383,8 @@ std::size_t FillWithinBandsPlanchonDarboux(int width, int height, const std::vec
 
 std::vector<double> BandTops(const Terrain& t) {
   std::vector<double> top(t.contours.size());
-  for (std::size_t c = 0; c < t.contours.size(); ++c) top[c] = t.contours[c].elevation + t.dh;
+  for (std::size_t c = 0; c < t.contours.size(); ++c)
+    top[c] = t.contours[c].elevation + BandInterval(t, t.contours[c]);
   for (const Summit& s : t.summits) {
     const ContourNode& node = t.contours[static_cast<std::size_t>(s.contour)];
     top[static_cast<std::size_t>(s.contour)] = node.elevation + (s.elevation - node.elevation);

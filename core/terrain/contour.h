@@ -70,6 +70,7 @@ struct GrowCounts {
   bool truncated = false;          // stopped at the level or vertex cap, or a budget
   double vertices_worked = 0;  // Σ vertices of shrunk contours and their children (budget work)
   double sweep_tests = 0;      // Σ edge tests of the shrinks' union sweeps (terrain_budget.h)
+  double largest_worked = 0;   // the most points of one contour shrunk (held with its copies)
   std::string truncated_by;    // the budget's line when one stopped the growth (terrain_budget)
   double ms_shrink = 0, ms_mpd = 0, ms_fd = 0, ms_loops = 0;
 };
@@ -79,7 +80,22 @@ struct Terrain {
   std::vector<ContourNode> contours;
   std::vector<Summit> summits;  // one per top contour, in contour order
   double h0 = 0, dh = 0, d = 0;
+  // The profile (issue 31 item 3, the `dh_ratio` row q): the interval from level k to k + 1 is
+  // Δh·q^k, so q > 1 makes the upper levels steeper than the foothills, q < 1 the reverse; q = 1
+  // is the paper's equal intervals (generate.cpp LevelElevations).
+  double dh_ratio = 1;
+  // §4.1's d0 (the mean edge of the seed as grown: resampled at d/4, generate.h ResampleSeed) and
+  // that resampled seed's points (held while growing, besides the seed as given).
+  double d0 = 0;
+  std::size_t seed_samples = 0;
   GrowCounts counts;
 };
+
+// The elevation interval of a contour's band: to its children (all one level up), or Δh when it
+// has none (a top band then rises to its summit instead) or the intervals are equal.
+inline double BandInterval(const Terrain& t, const ContourNode& node) {
+  if (t.dh_ratio == 1 || node.children.empty()) return t.dh;
+  return t.contours[static_cast<std::size_t>(node.children[0])].elevation - node.elevation;
+}
 
 }  // namespace niwa::terrain

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <deque>
+#include <functional>
 #include <string>
 #include <unordered_map>
 
@@ -34,10 +35,16 @@ double EdgeLen(const Vec2& a, const Vec2& b) {
   return std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
 }
 
+// One split's draws: θ's uniform in [0, 1) and the side's (generate.h SplitDraws).
+struct SplitDraw {
+  double u_theta, u_side;
+};
+using DrawFor = std::function<SplitDraw(const Vec2& midpoint, double len, int depth)>;
+
 // False once `out` holds max_points (the splitting stops there: midpoint displacement at θ ≥ 60°
 // doubles the points at every level, generate.h).
 bool SplitEdge(const Vec2& a, const Vec2& b, double d0, double d2, double tmin, double tmax,
-               Pcg32* rng, int depth, std::size_t max_points, Ring* out) {
+               const DrawFor& draw, int depth, std::size_t max_points, Ring* out) {
   const double len = EdgeLen(a, b);
   if (len < 2.0 * d0 || depth > 40) {
     if (out->size() >= max_points) return false;
@@ -45,13 +52,32 @@ bool SplitEdge(const Vec2& a, const Vec2& b, double d0, double d2, double tmin, 
     return true;
   }
   const double l = 0.5 * len;
-  const double theta = rng->Uniform(tmin, tmax);
-  const double side = rng->Uniform() < 0.5 ? -1.0 : 1.0;
+  const SplitDraw u = draw({0.5 * (a.x + b.x), 0.5 * (a.y + b.y)}, len, depth);
+  const double theta = tmin + (tmax - tmin) * u.u_theta;
+  const double side = u.u_side < 0.5 ? -1.0 : 1.0;
   const double delta = MidpointDelta(l, theta, d2);
   const Vec2 n{-(b.y - a.y) / len, (b.x - a.x) / len};
   const Vec2 m{0.5 * (a.x + b.x) + side * delta * n.x, 0.5 * (a.y + b.y) + side * delta * n.y};
-  return SplitEdge(a, m, d0, d2, tmin, tmax, rng, depth + 1, max_points, out) &&
-         SplitEdge(m, b, d0, d2, tmin, tmax, rng, depth + 1, max_points, out);
+  return SplitEdge(a, m, d0, d2, tmin, tmax, draw, depth + 1, max_points, out) &&
+         SplitEdge(m, b, d0, d2, tmin, tmax, draw, depth + 1, max_points, out);
+}
+
+std::optional<Ring> DisplaceWith(const Ring& ring, double d0, double d2, double tmin, double tmax,
+                                 const DrawFor& draw, std::size_t max_points) {
+  Ring out;
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if (!SplitEdge(ring[i], ring[(i + 1) % n], d0, d2, tmin, tmax, draw, 0, max_points, &out))
+      return std::nullopt;
+  return out;
+}
+
+// SplitMix64's finaliser (Steele, Lea, Flood 2014): the key of a split's PCG32 seed.
+uint64_t Mix(uint64_t h, uint64_t v) {
+  uint64_t z = h ^ (v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2));
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
 }
 
 // A union of the perturbation counted against the grow's sweep budget (`budget`: its work so far
@@ -59,7 +85,7 @@ bool SplitEdge(const Vec2& a, const Vec2& b, double d0, double d2, double tmin, 
 std::vector<Ring> CountedUnion(const Ring& ring, ShrinkCounts* budget, ShrinkCounts* sc) {
   if (budget->max_sweep_tests >= 0)
     sc->max_sweep_tests = std::max(0.0, budget->max_sweep_tests - budget->sweep_tests);
-  std::vector<Ring> out = PositiveUnion({Snap(ring)}, sc);
+  std::vector<Ring> out = PositiveUnion({Snap(ring)}, sc, true);
   budget->sweep_tests += sc->sweep_tests;
   if (sc->stopped) budget->stopped = true;
   return out;
@@ -91,7 +117,7 @@ std::vector<Ring> MakeSimple(const Ring& ring, const TerrainParams& p, GrowCount
                              ShrinkCounts* budget) {
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<Ring> out;
-  Ring r = Normalise(ring);
+  Ring r = Normalise(ring, true);
   SweepWork check = SweepWorkLeft(*budget);
   const bool simple = r.size() >= 3 && IsSimple(ToGrid(r), &check);
   ChargeSweepWork(check, budget);
@@ -103,7 +129,7 @@ std::vector<Ring> MakeSimple(const Ring& ring, const TerrainParams& p, GrowCount
     const int threshold = method == 1 ? p.GetInt(P::kLoopFaces) : p.GetInt(P::kLoopRun);
     int removed = 0;
     SweepWork untwist = SweepWorkLeft(*budget);
-    Ring u = Normalise(UntwistRing(Snap(ring), method, threshold, &removed, &untwist));
+    Ring u = Normalise(UntwistRing(Snap(ring), method, threshold, &removed, &untwist), true);
     // The cut must keep the ring's body: loop removal deletes from a crossing to its twin in walk
     // order, and where the perturbation pinches a deep narrow valley shut that can be the large
     // side (the valleys seed lost 490 of 496 points so). An untwisted ring with less than half the
@@ -143,9 +169,10 @@ std::vector<Ring> MakeSimple(const Ring& ring, const TerrainParams& p, GrowCount
 
 // The method's perturbation of one freshly shrunk ring (§4.1-4.3 steps 1.2-1.3); the midpoint
 // displacement makes at most max_points points, else the error (MidpointOverflow).
-Result<std::vector<Ring>> Perturb(const Ring& shrunk, const TerrainParams& p, double d0, Pcg32* rng,
-                                  std::size_t max_points, const std::string& what,
-                                  GrowCounts* counts, ShrinkCounts* budget) {
+Result<std::vector<Ring>> Perturb(const Ring& shrunk, const TerrainParams& p, double d0,
+                                  const SplitDraws& draws, Pcg32* rng, std::size_t max_points,
+                                  const std::string& what, GrowCounts* counts,
+                                  ShrinkCounts* budget) {
   const int method = p.GetInt(P::kMethod);
   if (method == static_cast<int>(Method::kSimple)) return std::vector<Ring>{shrunk};
   const double d = p.Get(P::kD);
@@ -154,7 +181,7 @@ Result<std::vector<Ring>> Perturb(const Ring& shrunk, const TerrainParams& p, do
       method == static_cast<int>(Method::kImproved)) {
     const auto t0 = std::chrono::steady_clock::now();
     std::optional<Ring> displaced = MidpointDisplace(r, d0, p.Get(P::kD2) * d, p.Get(P::kThetaMin),
-                                                     p.Get(P::kThetaMax), rng, max_points);
+                                                     p.Get(P::kThetaMax), draws, max_points);
     counts->ms_mpd += Ms(t0);
     if (!displaced) {
       return MidpointOverflow(d0, p.Get(P::kD2) * d, p.Get(P::kThetaMax),
@@ -255,6 +282,43 @@ bool Conflicts(const SiblingRings& s, std::size_t self, std::size_t k, const IRi
   return false;
 }
 
+// The levels' elevations under the profile ratio q (`dh_ratio`; contour.h Terrain::dh_ratio):
+// h_k = h0 + Δh·(1 + q + … + q^(k−1)) above the seed, h0 − Δh·(1/q + … + 1/q^(−k)) below it, by
+// products and sums only (no pow: the same bits natively and in WASM); with q = 1 exactly
+// h0 + k·Δh as before the row existed.
+class LevelElevations {
+ public:
+  LevelElevations(double h0, double dh, double q) : h0_(h0), dh_(dh), q_(q) {}
+  double At(int level) {
+    if (q_ == 1) return h0_ + level * dh_;
+    std::vector<double>& e = level >= 0 ? up_ : down_;
+    const std::size_t k = static_cast<std::size_t>(level >= 0 ? level : -level);
+    while (e.size() <= k) {
+      if (e.empty()) {
+        e.push_back(h0_);
+        step_up_ = dh_;
+        step_down_ = dh_ / q_;
+        continue;
+      }
+      if (level >= 0) {
+        e.push_back(e.back() + step_up_);
+        step_up_ *= q_;
+      } else {
+        e.push_back(e.back() - step_down_);
+        step_down_ /= q_;
+      }
+    }
+    return e[k];
+  }
+  // The interval from `level` to the level above it.
+  double Above(int level) { return q_ == 1 ? dh_ : At(level + 1) - At(level); }
+
+ private:
+  double h0_, dh_, q_;
+  double step_up_ = 0, step_down_ = 0;
+  std::vector<double> up_, down_;
+};
+
 }  // namespace
 
 double MidpointDelta(double l, double theta_deg, double d2) {
@@ -265,12 +329,36 @@ double MidpointDelta(double l, double theta_deg, double d2) {
 
 std::optional<Ring> MidpointDisplace(const Ring& ring, double d0, double d2, double tmin,
                                      double tmax, Pcg32* rng, std::size_t max_points) {
-  Ring out;
-  const std::size_t n = ring.size();
-  for (std::size_t i = 0; i < n; ++i)
-    if (!SplitEdge(ring[i], ring[(i + 1) % n], d0, d2, tmin, tmax, rng, 0, max_points, &out))
-      return std::nullopt;
-  return out;
+  return DisplaceWith(
+      ring, d0, d2, tmin, tmax,
+      [rng](const Vec2&, double, int) {
+        const double u_theta = rng->Uniform();
+        return SplitDraw{u_theta, rng->Uniform()};
+      },
+      max_points);
+}
+
+std::optional<Ring> MidpointDisplace(const Ring& ring, double d0, double d2, double tmin,
+                                     double tmax, const SplitDraws& draws, std::size_t max_points) {
+  return DisplaceWith(
+      ring, d0, d2, tmin, tmax,
+      [&draws](const Vec2& m, double, int depth) {
+        // The cell of side draws.cell holding the midpoint (clamped: coordinates are ≤ 1e6 m).
+        const auto cell = [&](double v) {
+          const double c = std::floor(v / draws.cell);
+          return static_cast<uint64_t>(static_cast<int64_t>(std::clamp(c, -4e18, 4e18)));
+        };
+        const uint64_t key =
+            Mix(Mix(Mix(draws.key, static_cast<uint64_t>(depth)), cell(m.x)), cell(m.y));
+        Pcg32 rng(key, draws.key);
+        const double u_theta = rng.Uniform();
+        return SplitDraw{u_theta, rng.Uniform()};
+      },
+      max_points);
+}
+
+uint64_t SplitDrawsKey(uint64_t rng_seed, int level) {
+  return Mix(Mix(0x6d696473706c6974ULL, rng_seed), static_cast<uint64_t>(level));
 }
 
 Status MidpointOverflow(double d0, double d2, double theta_max_deg, double max_points,
@@ -493,7 +581,9 @@ Ring ResampleSeed(const Ring& seed, const Ring& checked, double d) {
   double spacing = kSeedSpacingShare * d;
   for (int attempt = 0; attempt < 5; ++attempt, spacing *= 0.5) {
     const double want = std::round(perimeter / spacing);
-    if (attempt > 0 && want > static_cast<double>(kMaxSeedSamples)) break;
+    // Never coarser than d/4: a seed that would need more than the cap is grown as given (a
+    // 3,000-tooth comb at d = 0.6 m would have been resampled at 1.4 m, across its 1 m gaps).
+    if (want > static_cast<double>(kMaxSeedSamples)) break;
     const std::size_t n = static_cast<std::size_t>(std::clamp(
         want, static_cast<double>(kMinSeedSamples), static_cast<double>(kMaxSeedSamples)));
     const double h = perimeter / static_cast<double>(n);
@@ -530,30 +620,40 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_s
   t.d = p.Get(P::kD);
   t.dh = p.Get(P::kDh);
   t.h0 = p.Get(P::kH0);
+  t.dh_ratio = p.Get(P::kDhRatio);
+  LevelElevations elevations(t.h0, t.dh, t.dh_ratio);
   const double d = t.d;
-  const double d0 = MeanEdge(*seed);
+  // Issue 31: grown from the seed at a uniform arc length of d/4 (ResampleSeed), so the mountain
+  // does not depend on how the line was sampled: d0 follows d, not the drawing. The seed as given
+  // stays the lowest contour (level 0); its children lie within d/8 of d inside it.
+  const Ring sampled = ResampleSeed(seed_in, *seed, d);
+  const double d0 = MeanEdge(sampled);
+  t.d0 = d0;
+  t.seed_samples = sampled.size();
   ShrinkOptions so;
   so.d = d;
   so.join = static_cast<Join>(p.GetInt(P::kJoin));
   so.c = p.Get(P::kC);
   so.clean_len = p.Get(P::kCleanLen) * d;
   so.clean_angle_deg = p.Get(P::kCleanAngle);
+  so.keep_straight = true;  // the resampled seed's straight runs keep their points (offset.h)
   const int max_levels = p.GetInt(P::kMaxLevels);
 
   TerrainWork work;  // counted for the budget's checks (terrain_budget.h)
-  work.vertices_held = static_cast<double>(seed->size());
+  work.vertices_held = static_cast<double>(seed->size() + sampled.size());
   // Growth below the seed (§2 enlarging): a chain of enlarged contours, the lowest the root.
   std::vector<Ring> below;
   {
     ShrinkOptions out = so;
     out.outward = true;
-    Ring cur = *seed;
+    Ring cur = sampled;
     for (int k = 0; k < p.GetInt(P::kDown); ++k) {
       if (watch && !watch(-k - 1)) return run::CancelledStatus();
       if (limits != nullptr) {
         t.counts.truncated_by = CheckTerrainContour(cur, 0, p, work, *limits, -k - 1);
         if (!t.counts.truncated_by.empty()) break;
       }
+      t.counts.largest_worked = std::max(t.counts.largest_worked, static_cast<double>(cur.size()));
       ShrinkCounts sc;
       if (limits != nullptr)
         sc.max_sweep_tests = SweepTestsLeft(*limits, work, t.counts.sweep_tests);
@@ -581,7 +681,7 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_s
     ContourNode node;
     node.ring = below[static_cast<std::size_t>(k)];
     node.level = -(k + 1);
-    node.elevation = t.h0 + node.level * t.dh;
+    node.elevation = elevations.At(node.level);
     node.parent = t.contours.empty() ? -1 : static_cast<int>(t.contours.size()) - 1;
     if (node.parent >= 0)
       t.contours[static_cast<std::size_t>(node.parent)].children.push_back(
@@ -609,13 +709,15 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_s
       t.counts.truncated = true;
       continue;
     }
-    const Ring parent = t.contours[static_cast<std::size_t>(at)].ring;
+    const bool is_seed = t.contours[static_cast<std::size_t>(at)].level == 0;
+    const Ring parent = is_seed ? sampled : t.contours[static_cast<std::size_t>(at)].ring;
     const int level = t.contours[static_cast<std::size_t>(at)].level + 1;
     if (watch && !watch(level)) return run::CancelledStatus();
     if (limits != nullptr) {
       t.counts.truncated_by = CheckTerrainContour(parent, d0, p, work, *limits, level);
       if (!t.counts.truncated_by.empty()) break;
     }
+    t.counts.largest_worked = std::max(t.counts.largest_worked, static_cast<double>(parent.size()));
     const auto t0 = std::chrono::steady_clock::now();
     ShrinkCounts sc;
     if (limits != nullptr) sc.max_sweep_tests = SweepTestsLeft(*limits, work, t.counts.sweep_tests);
@@ -646,8 +748,10 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_s
       if (!t.counts.truncated_by.empty()) break;
     }
     work.vertices_worked += PerturbationWork(shrunk.size(), p);
-    // One RNG stream per contour, from the seed and the parent's index (order-independent).
+    // One RNG stream per contour, from the seed and the parent's index (order-independent), for
+    // the Fourier phases; the midpoint splits draw by place (SplitDraws).
     Pcg32 rng(rng_seed, static_cast<uint64_t>(at) * 2654435761ULL + 1);
+    const SplitDraws draws{SplitDrawsKey(rng_seed, level), 2.0 * d0};
     // The midpoint displacement's room: what the budget leaves after the contours kept and the
     // vertices worked (the children's transient copies and their shrink), or the hard cap.
     std::size_t max_points = kMaxMidpointPoints;
@@ -675,7 +779,7 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_s
       perturbed.max_sweep_tests = SweepTestsLeft(*limits, work, t.counts.sweep_tests);
     for (const Ring& r : shrunk) {
       Result<std::vector<Ring>> g =
-          Perturb(r, p, d0, &rng, max_points, what, &t.counts, &perturbed);
+          Perturb(r, p, d0, draws, &rng, max_points, what, &t.counts, &perturbed);
       if (!g.ok()) return g.status();
       if (perturbed.stopped) break;
       groups.push_back(std::move(g).value());
@@ -686,9 +790,10 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_s
           SweepStoppedLine(parent, perturbed.max_sweep_tests, *limits, level, max_levels);
       break;
     }
-    // Perturbed rings must lie inside the parent and apart from their siblings; offenders go back
-    // to the unperturbed shrink (which is both), until none is left.
-    const IRing gp = ToGrid(parent);
+    // Perturbed rings must lie inside the parent (the seed as given, not its resampling) and
+    // apart from their siblings; offenders go back to the unperturbed shrink (which is both),
+    // until none is left.
+    const IRing gp = ToGrid(t.contours[static_cast<std::size_t>(at)].ring);
     bool changed = true;
     for (std::size_t i = 0; i < groups.size(); ++i)
       if (groups[i].empty()) {
@@ -733,7 +838,7 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_s
         ContourNode node;
         node.ring = r;
         node.level = level;
-        node.elevation = t.h0 + level * t.dh;
+        node.elevation = elevations.At(level);
         node.parent = at;
         work.vertices_held += static_cast<double>(r.size());
         work.vertices_worked += static_cast<double>(r.size());
@@ -752,7 +857,8 @@ Result<Terrain> Grow(const Ring& seed_in, const TerrainParams& p, uint64_t rng_s
     Summit s;
     s.contour = static_cast<int>(i);
     s.position = PoleOfInaccessibility(t.contours[i].ring, &s.radius);
-    s.elevation = t.contours[i].elevation + t.dh * std::min(1.0, s.radius / d);
+    s.elevation = t.contours[i].elevation +
+                  elevations.Above(t.contours[i].level) * std::min(1.0, s.radius / d);
     t.summits.push_back(s);
   }
   return t;

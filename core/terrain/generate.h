@@ -36,6 +36,21 @@ constexpr std::size_t kMaxMidpointPoints = std::size_t{8} << 20;
 std::optional<Ring> MidpointDisplace(const Ring& ring, double d0, double d2, double theta_min_deg,
                                      double theta_max_deg, Pcg32* rng,
                                      std::size_t max_points = kMaxMidpointPoints);
+// Issue 31: the same splitting with each split's θ and side drawn from a PCG32 seeded by `key`
+// (SplitDrawsKey: the RNG seed and the level), the split's depth and the cell of side `cell`
+// holding the edge's midpoint: tied to where the split is, not to its place in the ring's order.
+// With one stream drawn edge by edge (the overload above, the paper's reading), a seed jittered
+// by centimetres changed which edges reached 2·d0 and so every draw after the first difference
+// (an L grew 1 peak, its jittered copy 3); placed draws change only where the line moved across
+// a cell's side. Grow uses these with cell = 2·d0 (docs/terrain-model.md "Seed sampling").
+struct SplitDraws {
+  uint64_t key = 0;
+  double cell = 1;
+};
+std::optional<Ring> MidpointDisplace(const Ring& ring, double d0, double d2, double theta_min_deg,
+                                     double theta_max_deg, const SplitDraws& draws,
+                                     std::size_t max_points = kMaxMidpointPoints);
+uint64_t SplitDrawsKey(uint64_t rng_seed, int level);
 // The line of a midpoint displacement that passed `max_points` (`what`: the limit it came from,
 // e.g. "what --max-memory leaves"), under the field "theta_max".
 Status MidpointOverflow(double d0, double d2, double theta_max_deg, double max_points,
@@ -64,9 +79,9 @@ struct TerrainGrowLimits;  // terrain_budget.h
 // Issue 31: the seed at a uniform arc length, so that a mountain need not depend on how the user
 // happened to sample the line (a square given by its 4 corners has d0 = its side and gets no
 // midpoint displacement; the same square densified gets plenty). The spacing is
-// kSeedSpacingShare·d, with at least kMinSeedSamples and at most kMaxSeedSamples points; the walk
-// starts at vertex 0. NOT YET APPLIED by Grow (docs/terrain-model.md "Seed sampling": wired in, it
-// broke 7 budget and quality tests whose estimates assume today's vertex counts).
+// kSeedSpacingShare·d, with at least kMinSeedSamples points; the walk starts at vertex 0. Grow
+// grows from it (docs/terrain-model.md "Seed sampling"); a seed that would need more than
+// kMaxSeedSamples points is grown as given, never resampled coarser than d/4.
 inline constexpr double kSeedSpacingShare = 0.25;
 inline constexpr std::size_t kMinSeedSamples = 16;
 inline constexpr std::size_t kMaxSeedSamples = 50000;

@@ -102,7 +102,7 @@ std::vector<int> SummitOf(const Terrain& t) {
 double BruteBandHeight(const Terrain& t, const std::vector<int>& summit_of, int b, Vec2 p) {
   const ContourNode& node = t.contours[static_cast<std::size_t>(b)];
   const double a = RingDistance(node.ring, p);
-  double up = 1e300, dh = t.dh;
+  double up = 1e300, dh = BandInterval(t, node);
   if (node.children.empty()) {
     const Summit& s = t.summits[static_cast<std::size_t>(summit_of[static_cast<std::size_t>(b)])];
     up = std::sqrt((p.x - s.position.x) * (p.x - s.position.x) +
@@ -233,7 +233,7 @@ Heightfield BandSurfaceOn(const Terrain& t, const Heightfield& grid) {
         }
         a = own[ub].Distance(p, &hint_a[ub]);
       }
-      double up, dh = t.dh;
+      double up, dh = BandInterval(t, node);
       if (node.children.empty()) {
         const Summit& s = t.summits[static_cast<std::size_t>(summit_of[ub])];
         up = std::sqrt((p.x - s.position.x) * (p.x - s.position.x) +

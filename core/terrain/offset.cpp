@@ -194,7 +194,9 @@ bool TurnsMoreLeft(const IPoint& u, const IPoint& w1, const IPoint& w2) {
   return c > 0;
 }
 
-IRing CleanRing(IRing r) {
+// Repeated points and collinear ones dropped; with keep_straight only those where the ring turns
+// back on itself (a spike), the points of a straight run kept.
+IRing CleanRing(IRing r, bool keep_straight = false) {
   bool changed = true;
   while (changed && r.size() >= 3) {
     changed = false;
@@ -204,7 +206,12 @@ IRing CleanRing(IRing r) {
       const IPoint& prev = out.empty() ? r[(i + n - 1) % n] : out.back();
       const IPoint& cur = r[i];
       const IPoint& next = r[(i + 1) % n];
-      if (cur == prev || Orient(prev, cur, next) == 0) {
+      const auto straight = [&] {
+        const Int128 dot = static_cast<Int128>(cur.x - prev.x) * (next.x - cur.x) +
+                           static_cast<Int128>(cur.y - prev.y) * (next.y - cur.y);
+        return keep_straight && dot > 0;
+      };
+      if (cur == prev || (Orient(prev, cur, next) == 0 && !straight())) {
         changed = true;
         continue;
       }
@@ -215,9 +222,11 @@ IRing CleanRing(IRing r) {
   return r;
 }
 
-std::vector<Ring> UnionOnce(const std::vector<IRing>& paths, ShrinkCounts* counts, int depth);
+std::vector<Ring> UnionOnce(const std::vector<IRing>& paths, ShrinkCounts* counts, int depth,
+                            bool keep_straight = false);
 
-std::vector<Ring> UnionOnce(const std::vector<IRing>& paths, ShrinkCounts* counts, int depth) {
+std::vector<Ring> UnionOnce(const std::vector<IRing>& paths, ShrinkCounts* counts, int depth,
+                            bool keep_straight) {
   std::vector<Seg> segs;
   for (const IRing& p : paths)
     for (std::size_t i = 0; i < p.size(); ++i)
@@ -306,7 +315,7 @@ std::vector<Ring> UnionOnce(const std::vector<IRing>& paths, ShrinkCounts* count
       if (counts) ++counts->dropped_rings;
       continue;
     }
-    ring = CleanRing(std::move(ring));
+    ring = CleanRing(std::move(ring), keep_straight);
     if (ring.size() < 3) continue;
     const Int128 area = TwiceArea(ring);
     if (area <= 0) {
@@ -315,7 +324,7 @@ std::vector<Ring> UnionOnce(const std::vector<IRing>& paths, ShrinkCounts* count
     }
     if (!IsSimple(ring)) {
       if (depth < 2) {
-        std::vector<Ring> again = UnionOnce({ring}, counts, depth + 1);
+        std::vector<Ring> again = UnionOnce({ring}, counts, depth + 1, keep_straight);
         if (counts != nullptr && counts->stopped) return {};
         result.insert(result.end(), again.begin(), again.end());
       } else if (counts) {
@@ -350,9 +359,9 @@ Vec2 CappedJoinPoint(const Vec2& v, const Vec2& n1, const Vec2& n2, double d, do
   return {v.x + dist * s.x / len, v.y + dist * s.y / len};
 }
 
-Ring Normalise(const Ring& ring) {
+Ring Normalise(const Ring& ring, bool keep_straight) {
   IRing r = ToGrid(ring);
-  r = CleanRing(std::move(r));
+  r = CleanRing(std::move(r), keep_straight);
   if (r.size() >= 3 && TwiceArea(r) < 0) std::reverse(r.begin(), r.end());
   return FromGrid(r);
 }
@@ -639,7 +648,7 @@ double TriedEdgePairs(const Ring& ring) {
 SplitForecast ForecastSplits(const Ring& ring, const ShrinkOptions& o) {
   // As Shrink: the pre-clean, the normalised ring, its raw offset path on the grid.
   Ring r = PreClean(ring, o.clean_len, o.clean_angle_deg, nullptr);
-  r = Normalise(r);
+  r = Normalise(r, o.keep_straight);
   SplitForecast f;
   if (r.size() < 3) return f;
   const IRing p = ToGrid(RawOffsetPath(r, o));
@@ -654,17 +663,18 @@ SplitForecast ForecastSplits(const Ring& ring, const ShrinkOptions& o) {
   return f;
 }
 
-std::vector<Ring> PositiveUnion(const std::vector<Ring>& paths, ShrinkCounts* counts) {
+std::vector<Ring> PositiveUnion(const std::vector<Ring>& paths, ShrinkCounts* counts,
+                                bool keep_straight) {
   std::vector<IRing> g;
   for (const Ring& p : paths) g.push_back(ToGrid(p));
-  return UnionOnce(g, counts, 0);
+  return UnionOnce(g, counts, 0, keep_straight);
 }
 
 std::vector<Ring> Shrink(const Ring& ring, const ShrinkOptions& o, ShrinkCounts* counts) {
   int cleaned = 0;
   Ring r = PreClean(ring, o.clean_len, o.clean_angle_deg, &cleaned);
   if (counts) counts->cleaned_points += cleaned;
-  r = Normalise(r);
+  r = Normalise(r, o.keep_straight);
   if (r.size() < 3) return {};
   // Steps 3-4: the faces of winding ≥ 1 of the raw offset path (Fig 6d: its CCW cycles), or,
   // with options.swept, of the ring with the swept pieces (−1 each when shrinking): the exact
@@ -676,7 +686,7 @@ std::vector<Ring> Shrink(const Ring& ring, const ShrinkOptions& o, ShrinkCounts*
   } else {
     paths.push_back(RawOffsetPath(r, o));
   }
-  std::vector<Ring> rings = PositiveUnion(paths, counts);
+  std::vector<Ring> rings = PositiveUnion(paths, counts, o.keep_straight);
   if (counts != nullptr && counts->stopped) return {};
   // Slivers the rounding onto the grid can leave (area below 1e-4·d²) are dropped and counted.
   const IRing g = ToGrid(r);

@@ -26,6 +26,12 @@ struct ShrinkOptions {
   double clean_angle_deg = 0;  // Fig 8 pre-clean: drop a vertex with interior angle below this
   bool outward = false;        // grow toward the foot (clockwise offset, holes filled)
   bool swept = false;          // exact swept-piece union instead of the raw path (the test twin)
+  // The points of straight runs kept (only repeated points and spikes dropped), in the input and
+  // in the union's rings: Grow's (issue 31), so that a straight run sampled at d/4 keeps its
+  // edges whether its points are exactly collinear on the grid (an axis-parallel side) or a
+  // millimetre off (any other side, or a jittered copy); dropped, the first became one edge of
+  // hundreds of metres that the midpoint displacement split, and the second none.
+  bool keep_straight = false;
 };
 
 struct ShrinkCounts {
@@ -80,7 +86,8 @@ SplitForecast ForecastSplits(const Ring& ring, const ShrinkOptions& options);
 
 // Steps 3-4: the regions of winding number ≥ 1 of a set of closed paths, as simple
 // counter-clockwise rings on the grid (clockwise rings = holes are dropped and counted).
-std::vector<Ring> PositiveUnion(const std::vector<Ring>& paths, ShrinkCounts* counts);
+std::vector<Ring> PositiveUnion(const std::vector<Ring>& paths, ShrinkCounts* counts,
+                                bool keep_straight = false);
 // The work (ShrinkCounts::sweep_tests) of the union sweep over the ring's own edges, counted
 // without the exact tests: terrain_budget's estimate of a shrink's sweep from its seed.
 double UnionSweepWork(const Ring& ring);
@@ -89,7 +96,8 @@ double UnionSweepWork(const Ring& ring);
 // the ring (outside when options.outward).
 std::vector<Ring> Shrink(const Ring& ring, const ShrinkOptions& options, ShrinkCounts* counts);
 
-// Ring made counter-clockwise, snapped, without repeated or collinear points.
-Ring Normalise(const Ring& ring);
+// Ring made counter-clockwise, snapped, without repeated or collinear points (with keep_straight,
+// the points of straight runs kept: ShrinkOptions::keep_straight).
+Ring Normalise(const Ring& ring, bool keep_straight = false);
 
 }  // namespace niwa::terrain

@@ -23,11 +23,15 @@ constexpr double kBytesPerVertex = 32, kTransientBytesPerVertex = 200;
 // perturbation per vertex worked.
 constexpr double kNsPerVertex = 10000;
 // The heightfield: h (8 bytes), band (4), the stamped a and b (8 + 8) and the painting rows (36
-// measured) a cell; a segment grid's
-// entry and cell list (about 48 bytes) a contour vertex. Time a cell (painting, stamping about
+// measured) a cell; a contour vertex is a segment in two segment grids (its contour's and its
+// parent's children's), each with its ends (32 bytes), its share of up to 16 buckets' counts and
+// starts (segment_grid.cpp) and its bucket entries: 160 bytes a vertex measured on jacksboro /
+// improved at d = 20 m (34,888 vertices, 7.85 MB at res 256, 2026-12-06), 240 with a margin. (48
+// before: true while seeds kept few, long edges; the seed resampled at d/4, issue 31, keeps many
+// short ones, and the grids' buckets follow the segments.) Time a cell (painting, stamping about
 // three contours' windows, the band height) and a vertex (its segment grid). The band fill's W,
 // marks and heap, where it raises cells, stay under the same figure (tested on valleys).
-constexpr double kBytesPerCell = 36, kBytesPerGridVertex = 48;
+constexpr double kBytesPerCell = 36, kBytesPerGridVertex = 240;
 constexpr double kNsPerCell = 600, kNsPerGridVertex = 400;
 // One edge test of the union sweep (WindingBeside), with the sweep's other per-test work: 7 to 15
 // ns on the combs of docs/budgets.md (native release, a loaded 2-core host), twice the slowest
@@ -93,8 +97,11 @@ double WorstChildren(const Ring& parent, double d0, const TerrainParams& params,
   return m * l.growth;
 }
 
+// The children (at most m vertices) are held with the rest once made: counted here, so that the
+// grown contours' estimate (EstimateTerrainGrown, which holds them all) stays within a limit that
+// stopped the growth.
 double CheckBytes(const TerrainGrowLimits& l, double held, double m) {
-  return l.base_bytes + l.bytes_per_vertex * held + l.transient_bytes_per_vertex * m;
+  return l.base_bytes + l.bytes_per_vertex * (held + m) + l.transient_bytes_per_vertex * m;
 }
 
 double CheckSeconds(const TerrainGrowLimits& l, double worked, double n, double m) {
@@ -175,19 +182,18 @@ std::string SweepStoppedWhy(const Ring& parent, double allowed, const TerrainGro
 
 bool GrowFitsLimits(const Terrain& t, const TerrainParams& params, const TerrainGrowLimits& l) {
   if (t.contours.empty()) return true;
-  // Grow's d0: the seed's mean edge (the down chain's checks use 0, which asks less).
-  const ContourNode* seed = &t.contours[0];
-  for (const ContourNode& c : t.contours)
-    if (c.level == 0) seed = &c;
-  const double d0 =
-      seed->ring.empty() ? 0 : Perimeter(seed->ring) / static_cast<double>(seed->ring.size());
-  const double held = Vertices(t), worked = t.counts.vertices_worked;
+  // Grow's d0 (the resampled seed's mean edge; the down chain's checks use 0, which asks less).
+  const double d0 = t.d0;
+  const double held = Vertices(t) + static_cast<double>(t.seed_samples),
+               worked = t.counts.vertices_worked;
   for (const ContourNode& c : t.contours) {
-    const double m = WorstChildren(c.ring, d0, params, l);
+    // The seed was shrunk as resampled (its points and about its perimeter).
+    const double n = c.level == 0 ? std::max(static_cast<double>(c.ring.size()),
+                                             static_cast<double>(t.seed_samples))
+                                  : static_cast<double>(c.ring.size());
+    const double m = std::max(WorstChildren(c.ring, d0, params, l), n * l.growth);
     if (l.max_bytes >= 0 && CheckBytes(l, held, m) > l.max_bytes) return false;
-    if (l.max_seconds >= 0 &&
-        CheckSeconds(l, worked, static_cast<double>(c.ring.size()), m) > l.max_seconds)
-      return false;
+    if (l.max_seconds >= 0 && CheckSeconds(l, worked, n, m) > l.max_seconds) return false;
   }
   return true;
 }
@@ -203,8 +209,10 @@ SeedShrinkForecast ForecastSeedShrink(const Ring& seed, const TerrainParams& p) 
   if (seed.size() < 3) return f;
   // As Grow: the seed normalised (CheckSeed), then shrunk with the table's options (enlarged
   // first when down > 0).
-  const Ring ring = Normalise(seed);
-  if (ring.size() < 3) return f;
+  const Ring normal = Normalise(seed);
+  if (normal.size() < 3) return f;
+  // Grow shrinks the seed resampled at d/4 (generate.h ResampleSeed): its points are forecast.
+  const Ring ring = ResampleSeed(seed, normal, p.Get(TerrainParam::kD));
   f.windings = ShrinkSweepTests(ring);
   f.tried_pairs = TriedEdgePairs(ring);  // IsSimple
   ShrinkOptions so;
@@ -213,6 +221,7 @@ SeedShrinkForecast ForecastSeedShrink(const Ring& seed, const TerrainParams& p) 
   so.c = p.Get(TerrainParam::kC);
   so.clean_len = p.Get(TerrainParam::kCleanLen) * so.d;
   so.clean_angle_deg = p.Get(TerrainParam::kCleanAngle);
+  so.keep_straight = true;  // as Grow
   for (const bool outward : {false, true}) {
     if (outward && p.GetInt(TerrainParam::kDown) == 0) break;
     so.outward = outward;
@@ -249,9 +258,10 @@ Status CheckSeedShape(const Ring& seed, const TerrainParams& params, const Budge
 
 Estimate EstimateTerrainGrown(const Terrain& t, const TerrainGrowLimits& l) {
   Estimate e;
-  const double vertices = Vertices(t);
-  double largest = 0;  // the largest contour in the making held its copies at once
-  for (const ContourNode& c : t.contours) largest = std::max(largest, double(c.ring.size()));
+  const double vertices = Vertices(t) + static_cast<double>(t.seed_samples);
+  // The largest contour in the making held its copies at once: the largest one shrunk (a contour
+  // a budget stopped before is not; the resampled seed is, when it was shrunk).
+  const double largest = t.counts.largest_worked;
   e.memory_bytes = l.base_bytes + l.bytes_per_vertex * vertices +
                    l.transient_bytes_per_vertex * l.growth * largest;
   e.seconds = l.seconds_per_vertex * t.counts.vertices_worked;

@@ -17,7 +17,7 @@ namespace niwa::terrain {
 // What Grow may use (no limit when max_bytes and max_seconds are negative). Before shrinking a
 // contour of n vertices it checks the worst case after it: its children hold at most
 // m = growth · max(n, nfft (§4.2), perimeter / d0 (§4.1 splits every edge ≥ 2·d0)) vertices.
-//   memory  = base_bytes + bytes_per_vertex · vertices held + transient_bytes_per_vertex · m
+//   memory  = base_bytes + bytes_per_vertex · (vertices held + m) + transient_bytes_per_vertex · m
 //   seconds = seconds_per_vertex · (vertices worked + n + m)
 struct TerrainGrowLimits {
   double max_bytes = -1, max_seconds = -1;

@@ -66,6 +66,9 @@ const ParamTable& TerrainTable() {
            "Heightfield cells along the longer side of the mountain."},
           {Id(P::kTint), "tint", "", "", 1, 0, 1, true, "surface", kView,
            "Hypsometric vertex colours on the mesh (1) or plain grey (0)."},
+          {Id(P::kDhRatio), "dh_ratio", "q", "", 1, 0.5, 2, false, "shrink", kGrow,
+           "Profile: the interval from level k to k + 1 is Δh·q^k; above 1 the peaks are steeper "
+           "than the foothills, below 1 gentler (1: the paper's equal intervals)."},
       },
       {{"method", "Method"},
        {"shrink", "Shrinking (Figs 5-8)"},

@@ -36,6 +36,7 @@ enum class TerrainParam : int {
   kDown,        // contours grown below the seed (enlarging, §2)
   kRes,         // heightfield cells along the longer side
   kTint,        // hypsometric vertex colours in the mesh (0/1)
+  kDhRatio,     // q: the interval from level k to k + 1 is Δh·q^k (the profile; 1: equal)
   kCount
 };
 

@@ -270,6 +270,73 @@ TEST(Grow, EverySummitLiesInsideItsTopContour) {
   }
 }
 
+// Mean slope (degrees, central differences) of the inside cells whose height lies in [lo, hi).
+double MeanSlopeBetween(const Heightfield& hf, double lo, double hi) {
+  double sum = 0;
+  int n = 0;
+  for (int j = 1; j + 1 < hf.height; ++j) {
+    for (int i = 1; i + 1 < hf.width; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * hf.width + i;
+      if (hf.band[k] < 0 || hf.h[k] < lo || hf.h[k] >= hi) continue;
+      const double gx = (hf.At(i + 1, j) - hf.At(i - 1, j)) / (2 * hf.cell);
+      const double gy = (hf.At(i, j + 1) - hf.At(i, j - 1)) / (2 * hf.cell);
+      sum += std::atan(std::sqrt(gx * gx + gy * gy)) * 180 / 3.14159265358979323846;
+      ++n;
+    }
+  }
+  return n > 0 ? sum / n : 0;
+}
+
+// Issue 31 item 3: the profile row dh_ratio = q makes the interval from level k to k + 1 Δh·q^k.
+// On the disk (simple: a cone at q = 1, every slope atan(Δh/d)) q = 1.15 makes the upper third of
+// the relief steeper than the lower third and q = 0.87 the reverse, the first band keeping
+// atan(Δh/d); the levels' elevations follow the formula and the surface has no pits.
+TEST(Grow, ProfileRatioMakesPeaksSteeperThanFoothills) {
+  const Ring disk = *BuiltinSeed("disk");
+  struct Run {
+    double q, lower, upper, base;
+  };
+  std::vector<Run> runs;
+  for (double q : {1.0, 1.15, 0.87}) {
+    TerrainParams p = For("simple");
+    ASSERT_TRUE(p.Set(P::kD, 20).ok());
+    ASSERT_TRUE(p.Set(P::kDh, 10).ok());
+    ASSERT_TRUE(p.Set(P::kDhRatio, q).ok());
+    Result<Terrain> t = Grow(disk, p, kDefaultTerrainSeed);
+    ASSERT_TRUE(t.ok());
+    for (const ContourNode& c : t->contours) {
+      double h = 0, s = 10;
+      for (int k = 0; k < c.level; ++k) {
+        h += s;
+        s *= q;
+      }
+      EXPECT_NEAR(c.elevation, h, 1e-9 * (1 + h)) << q << " level " << c.level;
+    }
+    const Heightfield hf = BuildHeightfield(*t, 256);
+    double top = 0;
+    for (const Summit& s : t->summits) top = std::max(top, s.elevation);
+    const Run r{q, MeanSlopeBetween(hf, 0.05 * top, top / 3),
+                MeanSlopeBetween(hf, 2 * top / 3, 0.95 * top), MeanSlopeBetween(hf, 1, 9)};
+    std::printf(
+        "disk q %.2f: relief %.1f m, mean slope lower third %.1f deg, upper third %.1f, first "
+        "band %.1f\n",
+        q, top, r.lower, r.upper, r.base);
+    EXPECT_EQ(ComputeStats(*t, &hf).pits, 0) << q;
+    runs.push_back(r);
+  }
+  // q = 1: a cone, atan(10/20) = 26.6° in both thirds.
+  EXPECT_NEAR(runs[0].lower, 26.6, 1.5);
+  EXPECT_NEAR(runs[0].upper, 26.6, 1.5);
+  EXPECT_GT(runs[1].upper, runs[1].lower + 15);                     // peaks steep, foothills gentle
+  for (const Run& r : runs) EXPECT_NEAR(r.base, 26.6, 1.5) << r.q;  // the first band: Δh still
+  EXPECT_LT(runs[2].upper, runs[2].lower - 10);                     // the reverse
+  // The row is refused outside [0.5, 2], naming it.
+  TerrainParams p;
+  const Status bad = p.Set(P::kDhRatio, 3);
+  EXPECT_FALSE(bad.ok());
+  EXPECT_NE(bad.Line().find("dh_ratio"), std::string::npos) << bad.Line();
+}
+
 TEST(Loops, Fig18SequenceWithBothMethods) {
   const std::vector<int> expected{1, 2, 3, 4, 10, 11, 12, 13, 14, 17};
   int removed = 0;

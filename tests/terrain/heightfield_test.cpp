@@ -123,7 +123,6 @@ TEST(Heightfield, SubCellSlotsGoToTheChildAndLeaveNoPitOnValleys) {
     std::vector<int> twin = raw.band;
     EXPECT_EQ(AssignSubCellSlotsBySweeps(raw.width, raw.height, t, &twin), hf.slot_cells) << rng;
     EXPECT_EQ(twin, hf.band) << rng;
-    EXPECT_GT(hf.slot_cells, 0u) << rng;
     slots_total += hf.slot_cells;
     std::size_t raised = 0, moved = 0;
     for (std::size_t k = 0; k < hf.h.size(); ++k) {
@@ -144,6 +143,9 @@ TEST(Heightfield, SubCellSlotsGoToTheChildAndLeaveNoPitOnValleys) {
     EXPECT_GE(hf.cells_filled, raised) << rng;
   }
   std::printf("valleys/improved res 256, RNG 1-5: %zu sub-cell slot cells\n", slots_total);
+  // The case under test arises (RNG 3 and 5 since the seed is resampled at d/4, issue 31; every
+  // RNG seed before).
+  EXPECT_GT(slots_total, 0u);
 }
 
 // No interior cell below all 8 neighbours on any built-in seed with any method (RNG seeds 1-5) at

@@ -144,7 +144,12 @@ TEST(TerrainBudget, MemoryBudgetStopsAtAContourWithTheLineAndTheSameContours) {
   TerrainGrowLimits limits = Unlimited(p);
   double vertices = 0;
   for (const ContourNode& c : full->contours) vertices += static_cast<double>(c.ring.size());
-  limits.max_bytes = limits.base_bytes + limits.bytes_per_vertex * vertices / 3;
+  // Room for the resampled seed's shrink (its copies) and a third of the contours: it stops
+  // part way up.
+  limits.max_bytes =
+      limits.base_bytes +
+      limits.transient_bytes_per_vertex * limits.growth * static_cast<double>(full->seed_samples) +
+      limits.bytes_per_vertex * vertices / 3;
   Result<Terrain> cut = Grow(*BuiltinSeed("lobes7"), p, kDefaultTerrainSeed, &limits);
   ASSERT_TRUE(cut.ok());
   EXPECT_TRUE(cut->counts.truncated);
@@ -159,9 +164,12 @@ TEST(TerrainBudget, MemoryBudgetStopsAtAContourWithTheLineAndTheSameContours) {
 TEST(TerrainBudget, TimeBudgetStopsAtAContourWithTheLine) {
   const TerrainParams p = For("improved", 2);
   TerrainGrowLimits limits = Unlimited(p);
-  limits.max_seconds = 0.2;  // a count of vertices worked: the same contour in both builds
+  // A count of vertices worked: the same contour in both builds. (0.2 s before the seed was
+  // resampled at d/4, issue 31: its 5,858 points now leave the first level's midpoint
+  // displacement less room than it needs, which is refused, not truncated.)
+  limits.max_seconds = 0.5;
   Result<Terrain> cut = Grow(*BuiltinSeed("lobes7"), p, kDefaultTerrainSeed, &limits);
-  ASSERT_TRUE(cut.ok());
+  ASSERT_TRUE(cut.ok()) << cut.status().Line();
   EXPECT_EQ(cut->counts.truncated_by.rfind("max_seconds: stopped at level ", 0), 0u)
       << cut->counts.truncated_by;
   EXPECT_LE(EstimateTerrainGrown(*cut, limits).seconds, limits.max_seconds);
@@ -455,7 +463,12 @@ TEST(TerrainBudget, ThePerturbationOfManySiblingsCountsAgainstTheBudget) {
   Result<Terrain> small = Grow(ToothComb(30), p, kDefaultTerrainSeed, &limits);
   ASSERT_TRUE(small.ok());
   EXPECT_TRUE(small->counts.truncated_by.empty()) << small->counts.truncated_by;
-  EXPECT_EQ(small->contours.size(), 61u);  // the root and two levels of 30 teeth
+  // The root and every tooth on the first level (61 contours in two levels before the seed was
+  // resampled at d/4, issue 31: the teeth are now perturbed, and some split higher up).
+  int first = 0;
+  for (const ContourNode& c : small->contours) first += c.level == 1 ? 1 : 0;
+  EXPECT_EQ(first, 30);
+  EXPECT_GE(small->contours.size(), 61u);
   EXPECT_EQ(ComputeStats(*small, nullptr).nesting_violations, 0);
 }
 
