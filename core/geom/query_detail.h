@@ -118,6 +118,7 @@ struct ClosestState {
 struct PreparedRay {
   DVec3 origin, dir, inv;
   bool valid = false;
+  bool oblique = false;  // no zero direction component: WideRayKeys' near/far path
 };
 
 inline PreparedRay PrepareRay(const glm::vec3& origin, const glm::vec3& dir, bool normalize) {
@@ -135,6 +136,7 @@ inline PreparedRay PrepareRay(const glm::vec3& origin, const glm::vec3& dir, boo
     return r;
   r.inv = {1.0 / r.dir.x, 1.0 / r.dir.y, 1.0 / r.dir.z};  // ±inf on a zero component
   r.valid = true;
+  r.oblique = r.dir.x != 0.0 && r.dir.y != 0.0 && r.dir.z != 0.0;
   return r;
 }
 
@@ -223,13 +225,15 @@ inline bool RayBox(const Bounds3& b, const PreparedRay& r, double t_max, double*
   return true;
 }
 
-// RayBox of each of a wide node's first `count` child boxes (ChildBounds) at once, the very IEEE
+// WideRayKeys for any ray (a zero direction component included): RayBox of each of a wide node's
+// first `count` child boxes (ChildBounds) at once, the very IEEE
 // operations of the scalar test lane by lane (math/simd4.h), so the keys are its bits: the boxes
 // decoded in four float lanes, the slabs in two double lanes. Without NaNs (finite boxes, and a
 // direction from floats, so a finite inverse) the scalar test's early outs only stop it sooner:
 // lo never falls and hi never rises, so a box missed on one axis is missed after all three.
 // Returns a bit per kept slot (empty slots too: the caller masks them); keys[k] its slab entry.
-inline int WideRayKeys(const BvhWideNode& n, const PreparedRay& r, double t_max, double keys[4]) {
+inline int WideRayKeysGeneral(const BvhWideNode& n, const PreparedRay& r, double t_max,
+                              double keys[4]) {
   using simd::Double2;
   using simd::Float4;
   using simd::Long2;
@@ -258,8 +262,8 @@ inline int WideRayKeys(const BvhWideNode& n, const PreparedRay& r, double t_max,
       const Double2 t1 = (bmin - oa) * ia, t2 = (bmax - oa) * ia;
       const Long2 swap = t1 > t2;
       const Double2 t_in = simd::Select(swap, t2, t1), t_out = simd::Select(swap, t1, t2);
-      lo[h] = simd::Select(lo[h] < t_in, t_in, lo[h]);     // std::max(lo, t1)
-      hi[h] = simd::Select(t_out < hi[h], t_out, hi[h]);   // std::min(hi, t2)
+      lo[h] = simd::Select(lo[h] < t_in, t_in, lo[h]);    // std::max(lo, t1)
+      hi[h] = simd::Select(t_out < hi[h], t_out, hi[h]);  // std::min(hi, t2)
     }
   }
   int kept = 0;
@@ -273,6 +277,50 @@ inline int WideRayKeys(const BvhWideNode& n, const PreparedRay& r, double t_max,
       }
     }
   }
+  return kept;
+}
+
+// RayBox of each of a wide node's child boxes (ChildBounds) at once, with RayBox's keys, bit for
+// bit. An oblique ray (no zero direction component; PrepareRay) takes the near/far form: on an axis
+// with dir > 0 RayBox's (t1, t2) are never swapped (t1 <= t2 when bmin <= bmax and the inverse is
+// finite and positive), with dir < 0 they are, or are equal; so the entry is the near side's t and
+// the exit the far side's, chosen once per axis, and std::max/std::min become their lane-wise twins
+// (simd::Max, simd::Min) (simd::Max, Min). The boxes are decoded as ChildBounds does (float lanes),
+// then widened to double. Any other ray goes through WideRayKeysGeneral. Returns a bit per kept
+// slot (empty slots too: the caller masks them); keys[k] its slab entry.
+inline int WideRayKeys(const BvhWideNode& n, const PreparedRay& r, double t_max, double keys[4]) {
+  if (!r.oblique) return WideRayKeysGeneral(n, r, t_max, keys);
+  using simd::Double2;
+  using simd::Float4;
+  using simd::Long2;
+  const double o[3] = {r.origin.x, r.origin.y, r.origin.z};
+  const double d[3] = {r.dir.x, r.dir.y, r.dir.z};
+  const double inv[3] = {r.inv.x, r.inv.y, r.inv.z};
+  Double2 lo0 = simd::Splat2(0.0), lo1 = lo0;
+  Double2 hi0 = simd::Splat2(t_max), hi1 = hi0;
+  for (int a = 0; a < 3; ++a) {
+    const Float4 step = simd::Splat4(BvhWideNode::Step(n.exponent[a]));
+    const Float4 origin = simd::Splat4(n.origin[a]);
+    const bool forward = d[a] > 0.0;
+    const Float4 q_near = simd::BytesToFloat4(forward ? n.lo[a] : n.hi[a]);
+    const Float4 q_far = simd::BytesToFloat4(forward ? n.hi[a] : n.lo[a]);
+    const Float4 b_near = origin + q_near * step, b_far = origin + q_far * step;  // Decode
+    const Double2 oa = simd::Splat2(o[a]), ia = simd::Splat2(inv[a]);
+    const Double2 t_in0 = (simd::LowToDouble2(b_near) - oa) * ia;
+    const Double2 t_in1 = (simd::HighToDouble2(b_near) - oa) * ia;
+    const Double2 t_out0 = (simd::LowToDouble2(b_far) - oa) * ia;
+    const Double2 t_out1 = (simd::HighToDouble2(b_far) - oa) * ia;
+    lo0 = simd::Max(lo0, t_in0);  // std::max(lo, t1)
+    lo1 = simd::Max(lo1, t_in1);
+    hi0 = simd::Min(hi0, t_out0);  // std::min(hi, t2)
+    hi1 = simd::Min(hi1, t_out1);
+  }
+  const Long2 out0 = lo0 > hi0, out1 = lo1 > hi1;
+  int kept = 0;
+  if (out0[0] == 0) keys[0] = lo0[0], kept |= 1;
+  if (out0[1] == 0) keys[1] = lo0[1], kept |= 2;
+  if (out1[0] == 0) keys[2] = lo1[0], kept |= 4;
+  if (out1[1] == 0) keys[3] = lo1[1], kept |= 8;
   return kept;
 }
 

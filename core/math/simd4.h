@@ -60,6 +60,28 @@ inline Double2 Select(Long2 mask, Double2 yes, Double2 no) {
   return (Double2)(((Long2)yes & mask) | ((Long2)no & ~mask));
 }
 
+// std::max(a, b) = (a < b) ? b : a and std::min(a, b) = (b < a) ? b : a, lane by lane, their very
+// choices (a NaN or an equal pair gives a): maxpd/minpd with the operands swapped, pmax/pmin in
+// WASM.
+inline Double2 Max(Double2 a, Double2 b) {
+#if defined(__wasm_simd128__)
+  return (Double2)wasm_f64x2_pmax((v128_t)a, (v128_t)b);
+#elif defined(__SSE2__)
+  return (Double2)_mm_max_pd((__m128d)b, (__m128d)a);
+#else
+  return Double2{a[0] < b[0] ? b[0] : a[0], a[1] < b[1] ? b[1] : a[1]};
+#endif
+}
+inline Double2 Min(Double2 a, Double2 b) {
+#if defined(__wasm_simd128__)
+  return (Double2)wasm_f64x2_pmin((v128_t)a, (v128_t)b);
+#elif defined(__SSE2__)
+  return (Double2)_mm_min_pd((__m128d)b, (__m128d)a);
+#else
+  return Double2{b[0] < a[0] ? b[0] : a[0], b[1] < a[1] ? b[1] : a[1]};
+#endif
+}
+
 inline Float4 Splat4(float v) { return Float4{v, v, v, v}; }
 
 // Whether any lane of a mask (all ones or all zeros a lane) is set.
@@ -71,6 +93,32 @@ inline bool AnyTrue(Int4 mask) {
 #else
   return (mask[0] | mask[1] | mask[2] | mask[3]) != 0;
 #endif
+}
+// Four bytes as four floats (exact: every byte is a float), lane k from q[k].
+inline Float4 BytesToFloat4(const uint8_t q[4]) {
+#if defined(__wasm_simd128__)
+  uint32_t word;
+  __builtin_memcpy(&word, q, 4);
+  const v128_t b = wasm_i32x4_splat(static_cast<int32_t>(word));
+  return (Float4)wasm_f32x4_convert_u32x4(
+      wasm_u32x4_extend_low_u16x8(wasm_u16x8_extend_low_u8x16(b)));
+#elif defined(__SSE2__)
+  uint32_t word;
+  __builtin_memcpy(&word, q, 4);
+  const __m128i zero = _mm_setzero_si128();
+  const __m128i b = _mm_cvtsi32_si128(static_cast<int>(word));
+  return (Float4)_mm_cvtepi32_ps(_mm_unpacklo_epi16(_mm_unpacklo_epi8(b, zero), zero));
+#else
+  return Float4{static_cast<float>(q[0]), static_cast<float>(q[1]), static_cast<float>(q[2]),
+                static_cast<float>(q[3])};
+#endif
+}
+// Lanes 0, 1 (Low) or 2, 3 (High) of v widened to double (exact).
+inline Double2 LowToDouble2(Float4 v) {
+  return Double2{static_cast<double>(v[0]), static_cast<double>(v[1])};
+}
+inline Double2 HighToDouble2(Float4 v) {
+  return Double2{static_cast<double>(v[2]), static_cast<double>(v[3])};
 }
 inline Double2 Splat2(double v) { return Double2{v, v}; }
 

@@ -29,10 +29,10 @@ constexpr uint64_t kDisplayStream = 5;
 // Calibrated upper bounds of the work (seconds per unit; bytes per item).
 // Provisional (not yet measured at the caps): 30 days of `thesis` at 8,192 photons and ~100
 // mosses took 1.2 s natively, about 40 ms a day.
-constexpr double kSecondsPerPhoton = 2e-6;    // a path of ~2 hits with the gather's share
-constexpr double kSecondsPerCellDay = 2e-6;   // gather, m/M and the soil of one cell
-constexpr double kSecondsPerMossDay = 4e-6;   // gather, growth and landing of a moss or seed
-constexpr double kBytesPerCell = 400;         // mesh, BVH, values, bucket
+constexpr double kSecondsPerPhoton = 2e-6;   // a path of ~2 hits with the gather's share
+constexpr double kSecondsPerCellDay = 2e-6;  // gather, m/M and the soil of one cell
+constexpr double kSecondsPerMossDay = 4e-6;  // gather, growth and landing of a moss or seed
+constexpr double kBytesPerCell = 800;  // mesh, BVH, values, bucket; the spread lists (<= 96 x 4 B)
 constexpr double kBytesPerPhoton = 3 * 64.0;  // stored photons (~2 a path) and the index
 constexpr double kBytesPerMoss = 200;         // moss or seed, indices
 
@@ -131,8 +131,7 @@ Result<MossRun> MossRun::StartOnScene(const MossState& state, MossScene scene_va
   Result<PhotonLight> light = PhotonLightOf(state.params, run.cells_);
   if (!light.ok()) return light.status();
   run.light_ = *light;
-  run.cells_by_gather_ =
-      std::make_shared<const geom::RadiusGrid>(run.cells_.centroid, run.light_.r_gather);
+  run.soil_spread_ = std::make_shared<const SoilPhotonSpread>(run.cells_, run.light_.r_gather);
   run.cells_by_ch_ = std::make_shared<const geom::RadiusGrid>(run.cells_.centroid,
                                                               state.params.Get(MossParam::kRCH));
   run.constants_ = SoilConstantsOf(state.params);
@@ -341,12 +340,7 @@ void MossRun::Day() {
   // S of each cell: the soil photons within r_gather on faces turned its way (PhotonGather::Soil's
   // sum, spread from the photons, in photon order); m of eq 3.5: the mosses within r_CH.
   std::fill(w.S.begin(), w.S.end(), 0.0);
-  for (const Photon& ph : map_.photons) {
-    if (ph.on_moss) continue;
-    cells_by_gather_->ForEachWithin(ph.position, [&](uint32_t c, double) {
-      if (glm::dot(ph.normal, cells_.normal[c]) > 0.5) w.S[c] += ph.power;
-    });
-  }
+  soil_spread_->Spread(cells_, map_, &w.S);
   const double gather_area = det::kPi * light_.r_gather * light_.r_gather;
   std::vector<int> m_near(cells_.size(), 0);
   for (const glm::dvec3& c : centres)

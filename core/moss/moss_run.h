@@ -208,10 +208,12 @@ class MossRun : public run::StudyRun {
   // cells' S and m/M; the soil; the life cycle (its own gathers included).
   double ms_photons_ = 0, ms_gather_ = 0, ms_soil_ = 0, ms_growth_ = 0;
   MossOccluders occluders_;  // scratch
-  // The cells' centroids in buckets of r_gather and of r_CH, built once (the cells do not move):
-  // each day's photons and mosses are spread onto the cells near them, work in photons and mosses
-  // rather than a query per cell (spec §4.6, eq 3.5).
-  std::shared_ptr<const geom::RadiusGrid> cells_by_gather_, cells_by_ch_;
+  // Built once (the cells do not move): each day's photons and mosses are spread onto the cells
+  // near them, work in photons and mosses rather than a query per cell (spec §4.6, eq 3.5): the
+  // photons through each cell's candidate lists (photons.h), the mosses through the centroids in
+  // buckets of r_CH.
+  std::shared_ptr<const SoilPhotonSpread> soil_spread_;
+  std::shared_ptr<const geom::RadiusGrid> cells_by_ch_;
 };
 
 // Every built-in scene: name, description, triangles, soil cells by geology, regions.

@@ -330,6 +330,92 @@ void TracePhotons(const SoilCells& cells, const MossOccluders& mosses, const Pho
   }
 }
 
+// ---- the soil's spread
+
+SoilPhotonSpread::SoilPhotonSpread(const SoilCells& cells, double r_gather)
+    : grid_(cells.centroid, r_gather), r2_(r_gather * r_gather) {
+  const std::size_t n = cells.size();
+  if (n == 0) return;
+  // reach_t: the farthest corner of cell t from its centroid, with room for the ray test's edge
+  // slack and the hit point's rounding to float.
+  reach2_.resize(n);
+  double reach_max = 0;
+  for (std::size_t t = 0; t < n; ++t) {
+    double far2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      const glm::dvec3 d = glm::dvec3(cells.mesh.positions[3 * t + k]) - cells.centroid[t];
+      far2 = std::max(far2, glm::dot(d, d));
+    }
+    const double reach = std::sqrt(far2) * (1 + 1e-3) + 1e-6;
+    reach2_[t] = reach * reach;
+    reach_max = std::max(reach_max, reach);
+  }
+  const double r = std::sqrt(r2_);
+  const geom::RadiusGrid wide(cells.centroid, r + reach_max);
+  // One query a cell for both sides; over the cap, the grid alone.
+  start_.assign(2 * n + 1, 0);
+  std::vector<uint32_t> lists[2];
+  for (std::size_t t = 0; t < n; ++t) {
+    const double limit = (r + std::sqrt(reach2_[t])) * (1 + 1e-9);
+    const double limit2 = limit * limit;
+    const glm::dvec3 front = cells.normal[t], back = -cells.normal[t];
+    lists[0].clear();
+    lists[1].clear();
+    wide.ForEachWithin(cells.centroid[t], [&](uint32_t c, double d2) {
+      if (d2 > limit2) return;
+      // The photon's own test, n_p·n > 0.5, with n_p the side hit (TracePhotons).
+      if (glm::dot(front, cells.normal[c]) > 0.5) lists[0].push_back(c);
+      if (glm::dot(back, cells.normal[c]) > 0.5) lists[1].push_back(c);
+    });
+    for (int side = 0; side < 2; ++side) {
+      std::sort(lists[side].begin(), lists[side].end());
+      start_[2 * t + side] = static_cast<uint32_t>(items_.size());
+      items_.insert(items_.end(), lists[side].begin(), lists[side].end());
+    }
+    if (items_.size() > kMaxCandidatesPerCell * n) {
+      start_.clear();
+      items_.clear();
+      items_.shrink_to_fit();
+      return;
+    }
+  }
+  start_[2 * n] = static_cast<uint32_t>(items_.size());
+}
+
+void SoilPhotonSpread::Spread(const SoilCells& cells, const PhotonMap& map,
+                              std::vector<double>* S) const {
+  double* out = S->data();
+  const glm::dvec3* centroid = cells.centroid.data();
+  for (const Photon& ph : map.photons) {
+    if (ph.on_moss) continue;
+    const uint32_t t = ph.target;
+    const glm::dvec3& q = ph.position;
+    int side = -1;
+    if (!start_.empty()) {
+      const glm::dvec3 d = q - centroid[t];
+      if (glm::dot(d, d) <= reach2_[t]) {
+        if (ph.normal == cells.normal[t])
+          side = 0;
+        else if (ph.normal == -cells.normal[t])
+          side = 1;
+      }
+    }
+    if (side < 0) {  // the grid's radius query
+      grid_.ForEachWithin(q, [&](uint32_t c, double) {
+        if (glm::dot(ph.normal, cells.normal[c]) > 0.5) out[c] += ph.power;
+      });
+      continue;
+    }
+    // The grid's distance, ((dx² + dy²) + dz²) from the centroid to the photon (radius_grid.h).
+    const uint32_t* end = items_.data() + start_[2 * t + side + 1];
+    for (const uint32_t* it = items_.data() + start_[2 * t + side]; it != end; ++it) {
+      const glm::dvec3& p = centroid[*it];
+      const double dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
+      if ((dx * dx + dy * dy) + dz * dz <= r2_) out[*it] += ph.power;
+    }
+  }
+}
+
 // ---- the gather
 
 Result<PhotonGather> PhotonGather::Build(const PhotonMap& map, double r_gather) {

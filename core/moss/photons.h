@@ -100,6 +100,33 @@ void EmitSunPhotonByRejection(const PhotonLight& light, Pcg32* rng, glm::dvec3* 
 void TracePhotons(const SoilCells& cells, const MossOccluders& mosses, const PhotonLight& light,
                   int photons, Pcg32* rng, PhotonMap* map);
 
+// The soil cells' share of a day's gather, spread from the photons (spec §4.6): for each stored
+// land photon in map order, its power added to every cell whose centroid lies within r_gather of it
+// and whose normal n has n_p·n > 0.5 (PhotonGather::Soil's sum at every cell at once, without the
+// division by πr²). The candidates of a photon that hit cell t are listed once per cell (the cells
+// within r + reach_t of t's centroid, reach_t the farthest a hit on t lies from it, split by which
+// side was hit), so a photon tests about the cells its disc covers instead of a radius query's 27
+// buckets; the same distance expression and order of additions as the grid, so the same bits. A
+// photon farther than reach_t from its cell's centroid (it cannot be, but for rounding) falls back
+// to the grid; lists longer than kMaxCandidatesPerCell a cell on average are not built (the grid
+// serves every photon).
+class SoilPhotonSpread {
+ public:
+  static constexpr std::size_t kMaxCandidatesPerCell = 96;
+  SoilPhotonSpread(const SoilCells& cells, double r_gather);
+  // S[c] += power of every land photon of `map` within r_gather of cell c facing its way; `cells`
+  // are the ones it was built on, S is their size.
+  void Spread(const SoilCells& cells, const PhotonMap& map, std::vector<double>* S) const;
+  bool listed() const { return !start_.empty(); }  // the lists were built
+
+ private:
+  geom::RadiusGrid grid_;  // the centroids in buckets of r_gather (the fallback)
+  double r2_;
+  std::vector<double> reach2_;   // per cell
+  std::vector<uint32_t> start_;  // 2 lists a cell (front side hit, back side hit): start_[2c + s]
+  std::vector<uint32_t> items_;  // candidate cells, list by list, each in cell order
+};
+
 // The gather (§3.5.1): E(x, n) = Σ dPhi_p / (π r²) over stored photons within r of x with
 // n_p·n > 0.5; soil cells count land hits only (a moss shades the soil), mosses every hit.
 class PhotonGather {

@@ -10,6 +10,7 @@
 
 #include "geom/linear_queries.h"
 #include "geom/primitives.h"
+#include "geom/query_detail.h"
 #include "geom_oracle.h"
 #include "support/test_meshes.h"
 
@@ -115,6 +116,50 @@ TEST(RayCast, WithoutNormalIsTheSameHit) {
     EXPECT_EQ(w.normal, glm::vec3(0.0f));
   }
   EXPECT_GT(hits, 300);
+}
+
+// The oblique rays' near/far slab test (WideRayKeys) keeps and keys a wide node's children as the
+// general lane-by-lane RayBox does, bit for bit: down the tree of every oracle mesh along the
+// kept children, rays from inside and outside, finite and infinite max distances, with the general
+// path taken by rays with a zero component.
+TEST(RayCast, ObliqueSlabKeysAreTheGeneralKeys) {
+  Pcg32 rng(77, 5);
+  int64_t kept = 0, nodes = 0;
+  for (const test::OracleCase& c : test::OracleMeshes()) {
+    const Bvh bvh = Bvh::Build(c.mesh);
+    const std::vector<BvhWideNode>& wide = bvh.wide_nodes();
+    if (wide.empty()) continue;
+    const Bounds3 box = bvh.nodes()[0].bounds;
+    for (int i = 0; i < 3000; ++i) {
+      const glm::vec3 o =
+          test::RandomPoint(rng, Bounds3{box.min - glm::vec3(1), box.max + glm::vec3(1)});
+      glm::vec3 d = test::RandomDirection(rng);
+      if (i % 10 == 0) d[i % 3] = 0.0f;
+      const detail::PreparedRay ray = detail::PrepareRay(o, d, /*normalize=*/true);
+      if (!ray.valid) continue;
+      const double t_max = i % 2 ? std::numeric_limits<double>::infinity() : 4.0 * rng.Uniform();
+      uint32_t at = 0;
+      for (int level = 0; level < 64; ++level) {
+        const BvhWideNode& n = wide[at];
+        double fast[4] = {-1, -1, -1, -1}, general[4] = {-1, -1, -1, -1};
+        const int a = detail::WideRayKeys(n, ray, t_max, fast);
+        const int b = detail::WideRayKeysGeneral(n, ray, t_max, general);
+        ++nodes;
+        ASSERT_EQ(a, b) << c.name;
+        ASSERT_EQ(std::memcmp(fast, general, sizeof fast), 0) << c.name;
+        int next = -1;
+        for (int k = 0; k < 4; ++k)
+          if (n.count[k] != BvhWideNode::kEmpty && (a & (1 << k))) {
+            ++kept;
+            if (n.count[k] == 0 && (next < 0 || rng.Uniform() < 0.5)) next = k;
+          }
+        if (next < 0) break;
+        at = n.child[next];
+      }
+    }
+  }
+  EXPECT_GT(nodes, 20000);
+  EXPECT_GT(kept, 10000);
 }
 
 TEST(RayCast, StatsCountQueries) {
