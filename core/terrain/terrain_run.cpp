@@ -163,6 +163,18 @@ Status TerrainRun::Advance(const run::Observer& observer) {
     grown.emplace(std::move(t).value());
   }
   const Terrain& t = grown ? *grown : terrain_;
+  if (plan_.max_contour_vertices > 0) {
+    double vertices = 0;
+    for (const ContourNode& c : t.contours) vertices += static_cast<double>(c.ring.size());
+    if (vertices > plan_.max_contour_vertices) {
+      const bool down = params.GetInt(TerrainParam::kDown) > 0;
+      const std::string field = down ? "down" : "max_levels";
+      return Status::Error(field, FormatCount(vertices) + " contour vertices are more than " +
+                                      plan_.contour_vertex_holder + " (" +
+                                      FormatCount(plan_.max_contour_vertices) + "); lower " +
+                                      field + " or raise d");
+    }
+  }
   {
     // The heightfield and the plan's outputs on top of the grown contours, refused before they
     // start.

@@ -37,6 +37,11 @@ struct TerrainRunPlan {
   std::vector<TerrainOutput> outputs;
   // Its words for the state fields a refusal line quotes ("res" -> "--res": "lower --res").
   run::FieldNames words;
+  // A cap on the grown contours' vertices (0: none) and who holds it ("the page draws"): above it
+  // the run refuses right after growing, naming down (when > 0) or max_levels, before the
+  // heightfield's and outputs' estimate (whose advice, res, would not help).
+  double max_contour_vertices = 0;
+  std::string contour_vertex_holder;
 };
 
 // What the run has done since Start (a test counts what an Update re-did).

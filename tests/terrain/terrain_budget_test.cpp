@@ -299,15 +299,14 @@ TEST(TerrainBudget, SeedForecastSeesACombsShape) {
   const TerrainParams p = For("improved", 20);
   const TerrainGrowLimits limits = Unlimited(p);
   for (const bool turned : {false, true}) {
-    const Ring comb = turned ? TurnedComb(1000) : Comb(1000);
+    const Ring comb = turned ? TurnedComb(150) : Comb(150);
     const SeedShrinkForecast f = ForecastSeedShrink(comb, p);
     Result<Terrain> grown = Grow(comb, p, kDefaultTerrainSeed, &limits);
     ASSERT_TRUE(grown.ok()) << grown.status().Line();
     const double counted = grown->counts.sweep_tests;
-    std::printf(
-        "comb 1000%s: forecast %.0f (split points %.0f, pairs %.0f), counted %.0f: %.2f x\n",
-        turned ? " turned" : "", f.work(), f.split_points, f.tried_pairs, counted,
-        f.work() / counted);
+    std::printf("comb 150%s: forecast %.0f (split points %.0f, pairs %.0f), counted %.0f: %.2f x\n",
+                turned ? " turned" : "", f.work(), f.split_points, f.tried_pairs, counted,
+                f.work() / counted);
     EXPECT_GE(f.work(), counted) << turned;
     EXPECT_LE(f.work(), 2.5 * counted) << turned;
   }

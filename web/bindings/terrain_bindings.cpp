@@ -209,6 +209,10 @@ class TerrainLab {
     if (!run_) {
       terrain::TerrainRunPlan plan;
       plan.outputs = {terrain::TerrainOutput::kGlb};
+      // Refused right after growing, before the heightfield's estimate (whose advice, res, would
+      // not help against `down`'s contours).
+      plan.max_contour_vertices = kPageMaxContourVertices;
+      plan.contour_vertex_holder = "the page draws";
       Result<terrain::TerrainRun> run = terrain::TerrainRun::Start(state, PageBudget(), plan);
       if (!run.ok()) return ErrorText(run.status());
       run_.emplace(std::move(run).value());
