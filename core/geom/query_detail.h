@@ -232,6 +232,13 @@ inline bool RayBox(const Bounds3& b, const PreparedRay& r, double t_max, double*
 // direction from floats, so a finite inverse) the scalar test's early outs only stop it sooner:
 // lo never falls and hi never rises, so a box missed on one axis is missed after all three.
 // Returns a bit per kept slot (empty slots too: the caller masks them); keys[k] its slab entry.
+// Four children's box sides on axis a from their bytes q (lo or hi): BvhWideNode::Decode in four
+// float lanes (a byte is exactly a float), shared by both slab tests below.
+inline simd::Float4 DecodeWideSlabs(const BvhWideNode& n, int a, const uint8_t q[4]) {
+  return simd::Splat4(n.origin[a]) +
+         simd::BytesToFloat4(q) * simd::Splat4(BvhWideNode::Step(n.exponent[a]));
+}
+
 inline int WideRayKeysGeneral(const BvhWideNode& n, const PreparedRay& r, double t_max,
                               double keys[4]) {
   using simd::Double2;
@@ -244,13 +251,7 @@ inline int WideRayKeysGeneral(const BvhWideNode& n, const PreparedRay& r, double
   Double2 hi[2] = {simd::Splat2(t_max), simd::Splat2(t_max)};
   Long2 miss[2] = {Long2{0, 0}, Long2{0, 0}};
   for (int a = 0; a < 3; ++a) {
-    const Float4 step = simd::Splat4(BvhWideNode::Step(n.exponent[a]));
-    const Float4 origin = simd::Splat4(n.origin[a]);
-    const Float4 qlo{static_cast<float>(n.lo[a][0]), static_cast<float>(n.lo[a][1]),
-                     static_cast<float>(n.lo[a][2]), static_cast<float>(n.lo[a][3])};
-    const Float4 qhi{static_cast<float>(n.hi[a][0]), static_cast<float>(n.hi[a][1]),
-                     static_cast<float>(n.hi[a][2]), static_cast<float>(n.hi[a][3])};
-    const Float4 blo = origin + qlo * step, bhi = origin + qhi * step;  // BvhWideNode::Decode
+    const Float4 blo = DecodeWideSlabs(n, a, n.lo[a]), bhi = DecodeWideSlabs(n, a, n.hi[a]);
     const Double2 oa = simd::Splat2(o[a]), ia = simd::Splat2(inv[a]);
     for (int h = 0; h < 2; ++h) {
       const Double2 bmin{static_cast<double>(blo[2 * h]), static_cast<double>(blo[2 * h + 1])};
@@ -285,7 +286,7 @@ inline int WideRayKeysGeneral(const BvhWideNode& n, const PreparedRay& r, double
 // with dir > 0 RayBox's (t1, t2) are never swapped (t1 <= t2 when bmin <= bmax and the inverse is
 // finite and positive), with dir < 0 they are, or are equal; so the entry is the near side's t and
 // the exit the far side's, chosen once per axis, and std::max/std::min become their lane-wise twins
-// (simd::Max, simd::Min) (simd::Max, Min). The boxes are decoded as ChildBounds does (float lanes),
+// (simd::Max, simd::Min). The boxes are decoded as ChildBounds does (float lanes),
 // then widened to double. Any other ray goes through WideRayKeysGeneral. Returns a bit per kept
 // slot (empty slots too: the caller masks them); keys[k] its slab entry.
 inline int WideRayKeys(const BvhWideNode& n, const PreparedRay& r, double t_max, double keys[4]) {
@@ -299,12 +300,9 @@ inline int WideRayKeys(const BvhWideNode& n, const PreparedRay& r, double t_max,
   Double2 lo0 = simd::Splat2(0.0), lo1 = lo0;
   Double2 hi0 = simd::Splat2(t_max), hi1 = hi0;
   for (int a = 0; a < 3; ++a) {
-    const Float4 step = simd::Splat4(BvhWideNode::Step(n.exponent[a]));
-    const Float4 origin = simd::Splat4(n.origin[a]);
     const bool forward = d[a] > 0.0;
-    const Float4 q_near = simd::BytesToFloat4(forward ? n.lo[a] : n.hi[a]);
-    const Float4 q_far = simd::BytesToFloat4(forward ? n.hi[a] : n.lo[a]);
-    const Float4 b_near = origin + q_near * step, b_far = origin + q_far * step;  // Decode
+    const Float4 b_near = DecodeWideSlabs(n, a, forward ? n.lo[a] : n.hi[a]);
+    const Float4 b_far = DecodeWideSlabs(n, a, forward ? n.hi[a] : n.lo[a]);
     const Double2 oa = simd::Splat2(o[a]), ia = simd::Splat2(inv[a]);
     const Double2 t_in0 = (simd::LowToDouble2(b_near) - oa) * ia;
     const Double2 t_in1 = (simd::HighToDouble2(b_near) - oa) * ia;
