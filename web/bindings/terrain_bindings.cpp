@@ -54,7 +54,6 @@ namespace {
 
 using nlohmann::json;
 using nlohmann::ordered_json;
-using terrain::TerrainParam;
 using Clock = std::chrono::steady_clock;
 
 // The most contour vertices a grown mountain may bring to the page (every builtin grows < 2,000).
@@ -209,8 +208,10 @@ class TerrainLab {
     if (!run_) {
       terrain::TerrainRunPlan plan;
       plan.outputs = {terrain::TerrainOutput::kGlb};
-      // Refused right after growing, before the heightfield's estimate (whose advice, res, would
-      // not help against `down`'s contours).
+      // What the page draws (the plan view's paths on the main thread, the line buffers) is
+      // capped: `down` at its largest (1,000 enlarged contours, 1.9 M vertices) stalled the main
+      // thread for 71 s. The run refuses right after growing, naming down or max_levels, before
+      // the heightfield's estimate (whose advice, res, would not help).
       plan.max_contour_vertices = kPageMaxContourVertices;
       plan.contour_vertex_holder = "the page draws";
       Result<terrain::TerrainRun> run = terrain::TerrainRun::Start(state, PageBudget(), plan);
@@ -223,20 +224,6 @@ class TerrainLab {
     const int built = run_->counts().heightfields;
     s = run_->Advance({});
     if (!s.ok()) return ErrorText(s);
-    // What the page draws (the plan view's paths on the main thread, the line buffers), refused
-    // beyond kPageMaxContourVertices: `down` at its largest (1,000 enlarged contours, 1.9 M
-    // vertices) stalled the main thread for 71 s.
-    double vertices = 0;
-    for (const terrain::ContourNode& c : run_->terrain().contours)
-      vertices += static_cast<double>(c.ring.size());
-    if (vertices > kPageMaxContourVertices) {
-      const bool down = state.params.GetInt(TerrainParam::kDown) > 0;
-      return ErrorText(Status::Error(
-          down ? "down" : "max_levels",
-          FormatCount(vertices) + " contour vertices are more than the page draws (" +
-              FormatCount(kPageMaxContourVertices) + "); lower " + (down ? "down" : "max_levels") +
-              " or raise d (the CLI takes any number)"));
-    }
     ms_heightfield_ = run_->ms_heightfield();
     ms_grow_ = Ms(t0, Clock::now()) - ms_heightfield_;
     const auto t2 = Clock::now();
