@@ -13,7 +13,7 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import {
-  ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, watchPage,
+  ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, waitStudyRun, watchPage,
 } from './harness.mjs';
 
 const TIMING = new Set(['ms', 'ns_per_spring_step']);
@@ -23,14 +23,7 @@ const canonical = (v) => (Array.isArray(v) ? v.map(canonical) : v && typeof v ==
 const same = (a, b) => JSON.stringify(canonical(untimed(a))) === JSON.stringify(canonical(untimed(b)));
 
 // Waits for a run newer than serialAbove drawn on screen (or an error); returns the dataset.
-async function waitBark(page, serialAbove) {
-  await page.waitForFunction((n) => {
-    const d = document.documentElement.dataset;
-    if (d.status === 'error') return true;
-    return d.status === 'ready' && Number(d.barkSerial) > n && (d.drawnSerial === d.barkSerial || d.drawing === 'off');
-  }, serialAbove, { timeout: TIMEOUT, polling: 200 });
-  return page.evaluate(() => ({ ...document.documentElement.dataset }));
-}
+const waitBark = (page, serialAbove) => waitStudyRun(page, 'barkSerial', serialAbove);
 
 function compareWithNative(name, data) {
   let native = null;

@@ -13,7 +13,7 @@ import { createRequire } from 'node:module';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import {
-  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, watchPage,
+  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, waitStudyRun, watchPage,
 } from './harness.mjs';
 import { openThreePage, saveSideBySide } from './three_page.mjs';
 
@@ -21,14 +21,7 @@ const require = createRequire(path.join(ROOT, 'package.json'));
 const validatorModule = await import(pathToFileURL(require.resolve('gltf-validator')).href);
 const validator = validatorModule.default ?? validatorModule;
 
-async function waitBark(page, serialAbove) {
-  await page.waitForFunction((n) => {
-    const d = document.documentElement.dataset;
-    if (d.status === 'error') return true;
-    return d.status === 'ready' && Number(d.barkSerial) > n && (d.drawnSerial === d.barkSerial || d.drawing === 'off');
-  }, serialAbove, { timeout: TIMEOUT, polling: 200 });
-  return page.evaluate(() => ({ ...document.documentElement.dataset }));
-}
+const waitBark = (page, serialAbove) => waitStudyRun(page, 'barkSerial', serialAbove);
 
 // Counts of canvas pixels within `tolerance` of each named colour (8-bit sRGB), in the canvas's
 // left half (the tile's; the lit trunk stands to the right).

@@ -66,6 +66,18 @@ export async function waitReady(page, serialAbove, polling = 250) {
   await page.waitForTimeout(300);  // hybrid mode: let the draw list of the new tree arrive
 }
 
+// Waits until a study page (ivy, moss, bark, terrain) has a run newer than serialAbove drawn on screen,
+// or shows an error; returns the page's dataset. serialKey names the page's run counter (e.g.
+// 'mossSerial'); the frame drawn with it is data-drawn-serial (unless the page cannot draw).
+export async function waitStudyRun(page, serialKey, serialAbove) {
+  await page.waitForFunction(([key, n]) => {
+    const d = document.documentElement.dataset;
+    if (d.status === 'error') return true;
+    return d.status === 'ready' && Number(d[key]) > n && (d.drawnSerial === d[key] || d.drawing === 'off');
+  }, [serialKey, serialAbove], { timeout: TIMEOUT, polling: 200 });
+  return page.evaluate(() => ({ ...document.documentElement.dataset }));
+}
+
 // Adds the console errors and warnings and the uncaught errors of `page` to `problems` (a test
 // ends with a check that it stayed empty); returns the page.
 export function watchPage(page, problems) {

@@ -10,8 +10,7 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import {
-  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, snapshotCanvas,
-  snapshotDifference, watchPage,
+  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, snapshotCanvas, snapshotDifference, waitStudyRun, watchPage,
 } from './harness.mjs';
 import { glbBytes as glb, triangleBin } from '../support/glb_bytes.mjs';
 
@@ -23,14 +22,7 @@ function nativeIvyStats(args) {
 }
 
 // Waits for an ivy newer than serialAbove drawn on screen (or an error); returns the dataset.
-async function waitIvy(page, serialAbove) {
-  await page.waitForFunction((n) => {
-    const d = document.documentElement.dataset;
-    if (d.status === 'error') return true;
-    return d.status === 'ready' && Number(d.ivySerial) > n && (d.drawnSerial === d.ivySerial || d.drawing === 'off');
-  }, serialAbove, { timeout: TIMEOUT, polling: 200 });
-  return page.evaluate(() => ({ ...document.documentElement.dataset }));
-}
+const waitIvy = (page, serialAbove) => waitStudyRun(page, 'ivySerial', serialAbove);
 
 // Leaf green and stem brown shares of the canvas.
 async function colours(page) {

@@ -9,18 +9,13 @@
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
-import { NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, watchPage } from './harness.mjs';
+import {
+  NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, waitStudyRun, watchPage,
+} from './harness.mjs';
 
 const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => k !== 'ms' && !k.startsWith('ms_')));
 
-async function waitIvy(page, serialAbove) {
-  await page.waitForFunction((n) => {
-    const d = document.documentElement.dataset;
-    if (d.status === 'error') return true;
-    return d.status === 'ready' && Number(d.ivySerial) > n && (d.drawnSerial === d.ivySerial || d.drawing === 'off');
-  }, serialAbove, { timeout: TIMEOUT, polling: 200 });
-  return page.evaluate(() => ({ ...document.documentElement.dataset }));
-}
+const waitIvy = (page, serialAbove) => waitStudyRun(page, 'ivySerial', serialAbove);
 
 const problems = [];
 await runBrowserTest(async (server, browser) => {

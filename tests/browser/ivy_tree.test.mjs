@@ -10,20 +10,15 @@
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
-import { ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, watchPage } from './harness.mjs';
+import {
+  ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, waitStudyRun, watchPage,
+} from './harness.mjs';
 import { buildGlb } from '../../web/mesh/mesh_import.js';
 
 const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => k !== 'ms' && !k.startsWith('ms_')));
 const nativeIvy = (args) => withoutMs(JSON.parse(execFileSync(NATIVE, ['ivy', 'grow', ...args, '--stats'], { encoding: 'utf8' }).trim()));
 
-async function waitIvy(page, serialAbove) {
-  await page.waitForFunction((n) => {
-    const d = document.documentElement.dataset;
-    if (d.status === 'error') return true;
-    return d.status === 'ready' && Number(d.ivySerial) > n && (d.drawnSerial === d.ivySerial || d.drawing === 'off');
-  }, serialAbove, { timeout: TIMEOUT, polling: 200 });
-  return page.evaluate(() => ({ ...document.documentElement.dataset }));
-}
+const waitIvy = (page, serialAbove) => waitStudyRun(page, 'ivySerial', serialAbove);
 
 function same(name, web, native) {
   const a = JSON.stringify(withoutMs(JSON.parse(web))), b = JSON.stringify(native);

@@ -19,7 +19,7 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import {
-  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, watchPage,
+  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, waitStudyRun, watchPage,
 } from './harness.mjs';
 
 const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => k !== 'ms' && !k.startsWith('ms_')));
@@ -28,14 +28,7 @@ const canonical = (v) => (Array.isArray(v) ? v.map(canonical) : v && typeof v ==
 const same = (a, b) => JSON.stringify(canonical(withoutMs(a))) === JSON.stringify(canonical(withoutMs(b)));
 
 // Waits for a run newer than serialAbove drawn on screen (or an error); returns the dataset.
-async function waitMoss(page, serialAbove) {
-  await page.waitForFunction((n) => {
-    const d = document.documentElement.dataset;
-    if (d.status === 'error') return true;
-    return d.status === 'ready' && Number(d.mossSerial) > n && (d.drawnSerial === d.mossSerial || d.drawing === 'off');
-  }, serialAbove, { timeout: TIMEOUT, polling: 200 });
-  return page.evaluate(() => ({ ...document.documentElement.dataset }));
-}
+const waitMoss = (page, serialAbove) => waitStudyRun(page, 'mossSerial', serialAbove);
 
 function compareWithNative(name, data, extra = []) {
   let native = null;

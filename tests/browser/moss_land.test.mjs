@@ -10,7 +10,7 @@
 import { execFileSync } from 'node:child_process';
 import path from 'node:path';
 import {
-  ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, watchPage,
+  ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, waitStudyRun, watchPage,
 } from './harness.mjs';
 
 const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => k !== 'ms' && !k.startsWith('ms_')));
@@ -18,14 +18,7 @@ const canonical = (v) => (Array.isArray(v) ? v.map(canonical) : v && typeof v ==
   ? Object.fromEntries(Object.keys(v).sort().map((k) => [k, canonical(v[k])])) : v);
 const same = (a, b) => JSON.stringify(canonical(withoutMs(a))) === JSON.stringify(canonical(withoutMs(b)));
 
-async function waitMoss(page, serialAbove) {
-  await page.waitForFunction((n) => {
-    const d = document.documentElement.dataset;
-    if (d.status === 'error') return true;
-    return d.status === 'ready' && Number(d.mossSerial) > n && (d.drawnSerial === d.mossSerial || d.drawing === 'off');
-  }, serialAbove, { timeout: TIMEOUT, polling: 200 });
-  return page.evaluate(() => ({ ...document.documentElement.dataset }));
-}
+const waitMoss = (page, serialAbove) => waitStudyRun(page, 'mossSerial', serialAbove);
 
 function compareWithNative(name, data) {
   const args = ['moss', 'grow', '--url', data.hash, '--stats'];

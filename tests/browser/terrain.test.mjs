@@ -10,7 +10,7 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import {
-  ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, snapshotCanvas, snapshotDifference, watchPage,
+  ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, snapshotCanvas, snapshotDifference, waitStudyRun, watchPage,
 } from './harness.mjs';
 
 const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => k !== 'ms' && !k.startsWith('ms_')));
@@ -22,14 +22,7 @@ function nativeTerrain(args) {
 }
 
 // Waits for a mountain newer than serialAbove drawn on screen (or an error); returns the dataset.
-async function waitTerrain(page, serialAbove) {
-  await page.waitForFunction((n) => {
-    const d = document.documentElement.dataset;
-    if (d.status === 'error') return true;
-    return d.status === 'ready' && Number(d.terrainSerial) > n && (d.drawnSerial === d.terrainSerial || d.drawing === 'off');
-  }, serialAbove, { timeout: TIMEOUT, polling: 200 });
-  return page.evaluate(() => ({ ...document.documentElement.dataset }));
-}
+const waitTerrain = (page, serialAbove) => waitStudyRun(page, 'terrainSerial', serialAbove);
 
 function compareWithNative(name, data) {
   let native = null;
