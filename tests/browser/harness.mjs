@@ -13,13 +13,16 @@ export const TIMEOUT = 180_000;  // SwiftShader and a first WASM compile are slo
 fs.mkdirSync(ARTIFACTS, { recursive: true });
 
 const counts = { passed: 0, failed: 0 };
+const STARTED_MS = performance.now();
 // check(name, ok, detail), the order of tests/support/cli_pair.mjs too. `ok` must not be a string
 // (the arguments swapped): that is a failure, not a pass.
 export function check(name, ok, detail = '') {
   const pass = typeof ok !== 'string' && Boolean(ok);
   if (pass) ++counts.passed; else ++counts.failed;
   const why = typeof ok === 'string' ? ' — check(name, ok): ok is a string (arguments swapped?)' : '';
-  console.log(`${pass ? 'PASS' : 'FAIL'} ${name}${detail ? ` — ${detail}` : ''}${why}`);
+  // [t s]: seconds since the test started, so a slow step shows in the log (build/artifacts/*.test.txt).
+  const at = ((performance.now() - STARTED_MS) / 1000).toFixed(1);
+  console.log(`${pass ? 'PASS' : 'FAIL'} ${name}${detail ? ` — ${detail}` : ''}${why} [${at} s]`);
 }
 
 // Page answer times (a click answered within 1 s, no main-thread task over 200 ms) are speed goals,
