@@ -165,13 +165,13 @@ export async function newContext(browser, options) {
         const key = `${r.target.id ? `#${r.target.id}` : r.target.tagName.toLowerCase()} ${r.attributeName}`;
         (window.__niwaHookLog[key] ||= []).push(r.target.getAttribute(r.attributeName));
       }
-    }).observe(document, { subtree: true, attributes: true, attributeFilter: ['data-step-shown', 'data-level-shown', 'data-hash'] });
+    }).observe(document, { subtree: true, attributes: true, attributeFilter: ['data-step-shown', 'data-level-shown', 'data-hash', 'data-year'] });
   });
   return context;
 }
 
 // The values data-<attribute> of `selector` ('#id', or 'html') took since the page loaded, in
-// order (data-step-shown, data-level-shown and data-hash are recorded).
+// order (data-step-shown, data-level-shown, data-hash and data-year are recorded).
 export async function hookLog(page, selector, attribute) {
   return page.evaluate((key) => window.__niwaHookLog[key] || [], `${selector} ${attribute}`);
 }
