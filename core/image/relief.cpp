@@ -193,13 +193,15 @@ bool Drawn(const Scene& s, const std::size_t k[3]) {
 }
 
 // Rasterises every triangle with a z-buffer of 1/depth (nearest wins; on a tie the lower index
-// stays), calling shade(t, pixel, barycentrics b0..b2 perspective-corrected) for each survivor at
-// the end.
+// stays), calling visit(pixel, triangle or -1, b1, b2) for each pixel at the end, b1 and b2 the
+// perspective-correct barycentrics of corners 1 and 2 at the pixel centre: the screen's edge weights
+// e_k interpolate 1/z linearly, so b_k = e_k·(1/z_k) / (1/z) (no second ray per pixel).
 template <typename Visit>
 void Rasterise(const Scene& s, Visit visit) {
   const std::size_t pixels = static_cast<std::size_t>(s.pw) * s.ph;
   std::vector<double> depth(pixels, 0.0);  // 1/z; 0 = nothing yet
   std::vector<int64_t> id(pixels, -1);
+  std::vector<double> bary(2 * pixels, 0.0);  // b1, b2 of the surviving triangle
   const int64_t triangles = 2 * static_cast<int64_t>(s.w - 1) * (s.h - 1);
   for (int64_t t = 0; t < triangles; ++t) {
     std::size_t k[3];
@@ -232,10 +234,12 @@ void Rasterise(const Scene& s, Visit visit) {
         if (!(inv_z > depth[q])) continue;
         depth[q] = inv_z;
         id[q] = t;
+        bary[2 * q] = e1 * iz[1] / inv_z;
+        bary[2 * q + 1] = e2 * iz[2] / inv_z;
       }
     }
   }
-  for (std::size_t q = 0; q < pixels; ++q) visit(q, id[q]);
+  for (std::size_t q = 0; q < pixels; ++q) visit(q, id[q], bary[2 * q], bary[2 * q + 1]);
 }
 
 // Where the ray through pixel centre q meets triangle t: barycentrics (b1, b2 of corners 1 and 2)
@@ -320,7 +324,7 @@ Result<Rgba8Image> RenderRelief(const ReliefGrid& grid, const ReliefView& view) 
     }
   }
   Rgba8Image out = MakeRgba8(view.width, view.height);
-  Rasterise(s, [&](std::size_t q, int64_t t) {
+  Rasterise(s, [&](std::size_t q, int64_t t, double b1, double b2) {
     unsigned char* px = out.pixels.data() + 4 * q;
     const double fy = static_cast<double>(q / s.pw) / s.ph;
     if (t < 0) {  // sky: pale blue at the top to haze at the bottom
@@ -330,14 +334,9 @@ Result<Rgba8Image> RenderRelief(const ReliefGrid& grid, const ReliefView& view) 
       px[3] = 255;
       return;
     }
-    // Gouraud: the colour at the pixel from the ray's perspective-correct barycentrics.
-    double b1 = 0, b2 = 0, dist = 0;
+    // Gouraud: the colour at the pixel from the perspective-correct barycentrics.
     std::size_t k[3];
     Corners(s, t, k);
-    if (!RayHit(s, q, t, &b1, &b2, &dist)) {  // a rasterised edge pixel the ray just misses
-      b1 = std::min(1.0, std::max(0.0, b1));
-      b2 = std::min(1.0 - b1, std::max(0.0, b2));
-    }
     const double b0 = 1.0 - b1 - b2;
     for (int ch = 0; ch < 3; ++ch) {
       px[ch] = Byte(b0 * colour[3 * k[0] + ch] + b1 * colour[3 * k[1] + ch] +
@@ -351,25 +350,40 @@ Result<Rgba8Image> RenderRelief(const ReliefGrid& grid, const ReliefView& view) 
 std::vector<int64_t> RenderReliefIds(const ReliefGrid& grid, const ReliefView& view) {
   const Scene s = MakeScene(grid, view);
   std::vector<int64_t> ids(static_cast<std::size_t>(s.pw) * s.ph, -1);
-  Rasterise(s, [&](std::size_t q, int64_t t) { ids[q] = t; });
+  Rasterise(s, [&](std::size_t q, int64_t t, double, double) { ids[q] = t; });
   return ids;
 }
 
 std::vector<int64_t> CastReliefIds(const ReliefGrid& grid, const ReliefView& view) {
+  std::vector<int64_t> ids;
+  for (const ReliefHit& h : CastReliefHits(grid, view)) ids.push_back(h.triangle);
+  return ids;
+}
+
+std::vector<ReliefHit> RenderReliefHits(const ReliefGrid& grid, const ReliefView& view) {
   const Scene s = MakeScene(grid, view);
-  std::vector<int64_t> ids(static_cast<std::size_t>(s.pw) * s.ph, -1);
+  std::vector<ReliefHit> hits(static_cast<std::size_t>(s.pw) * s.ph);
+  Rasterise(s, [&](std::size_t q, int64_t t, double b1, double b2) {
+    if (t >= 0) hits[q] = {t, b1, b2};
+  });
+  return hits;
+}
+
+std::vector<ReliefHit> CastReliefHits(const ReliefGrid& grid, const ReliefView& view) {
+  const Scene s = MakeScene(grid, view);
+  std::vector<ReliefHit> hits(static_cast<std::size_t>(s.pw) * s.ph);
   const int64_t triangles = 2 * static_cast<int64_t>(s.w - 1) * (s.h - 1);
-  for (std::size_t q = 0; q < ids.size(); ++q) {
+  for (std::size_t q = 0; q < hits.size(); ++q) {
     double best = INFINITY;
     for (int64_t t = 0; t < triangles; ++t) {
       double b1 = 0, b2 = 0, dist = 0;
       if (RayHit(s, q, t, &b1, &b2, &dist) && dist < best) {
         best = dist;
-        ids[q] = t;
+        hits[q] = {t, b1, b2};
       }
     }
   }
-  return ids;
+  return hits;
 }
 
 }  // namespace niwa::image

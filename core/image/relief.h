@@ -54,4 +54,14 @@ Result<Rgba8Image> RenderRelief(const ReliefGrid& grid, const ReliefView& view);
 std::vector<int64_t> RenderReliefIds(const ReliefGrid& grid, const ReliefView& view);
 std::vector<int64_t> CastReliefIds(const ReliefGrid& grid, const ReliefView& view);
 
+// A pixel's triangle (−1 sky) and the barycentrics of its corners 1 and 2 where the ray through the
+// pixel centre meets it: the rasteriser's perspective-corrected edge weights, and the same by ray
+// (the test oracle, as above; 0 for the sky).
+struct ReliefHit {
+  int64_t triangle = -1;
+  double b1 = 0, b2 = 0;
+};
+std::vector<ReliefHit> RenderReliefHits(const ReliefGrid& grid, const ReliefView& view);
+std::vector<ReliefHit> CastReliefHits(const ReliefGrid& grid, const ReliefView& view);
+
 }  // namespace niwa::image

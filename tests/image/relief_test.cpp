@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -48,6 +49,31 @@ ReliefGrid Cone(int side) {
 double Luminance(const Rgba8Image& img, std::size_t q) {
   const unsigned char* p = img.pixels.data() + 4 * q;
   return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+}
+
+// The colour's barycentrics come from the rasteriser's edge weights corrected by 1/z: where both
+// answers show the same triangle, they are the ray's own hit point's barycentrics.
+TEST(Relief, RasterisedBarycentricsAreTheRaysHitPoint) {
+  for (const double elevation : {20.0, 60.0, 90.0}) {
+    ReliefGrid g = Bumpy(9, 7, 3);
+    ReliefView v;
+    v.width = 80;
+    v.height = 60;
+    v.elevation_deg = elevation;
+    v.view_from_deg = 200;
+    v.exaggeration = 2;
+    const std::vector<ReliefHit> raster = RenderReliefHits(g, v), cast = CastReliefHits(g, v);
+    ASSERT_EQ(raster.size(), cast.size());
+    std::size_t compared = 0;
+    double worst = 0;
+    for (std::size_t q = 0; q < raster.size(); ++q) {
+      if (raster[q].triangle < 0 || raster[q].triangle != cast[q].triangle) continue;
+      ++compared;
+      worst = std::max({worst, std::abs(raster[q].b1 - cast[q].b1), std::abs(raster[q].b2 - cast[q].b2)});
+    }
+    EXPECT_GT(compared, raster.size() / 8) << "elevation " << elevation;
+    EXPECT_LT(worst, 1e-9) << "elevation " << elevation;
+  }
 }
 
 TEST(Relief, RasteriserShowsWhatARayMeetsFirst) {
