@@ -5,7 +5,7 @@
 import { spawn, spawnSync } from 'node:child_process';
 import { existsSync, writeFileSync } from 'node:fs';
 import { basename, dirname, join } from 'node:path';
-import { cliArgv } from './cli_pair.mjs';
+import { batchArgv, cliArgv } from './cli_pair.mjs';
 
 // The batch program beside a CLI (bin/niwa -> bin/niwa_cli_batch, bin/niwa.js -> bin/niwa_cli_batch.js),
 // or null when that build has none.
@@ -32,7 +32,7 @@ function encode(indices, argsList) {
 function runProcess(program, argsList, indices, results, file, timeoutMs, keepStdout) {
   return new Promise((resolve) => {
     writeFileSync(file, encode(indices, argsList));
-    const [cmd, argv] = cliArgv(program, keepStdout ? ['--stdout', file] : [file]);
+    const [cmd, argv] = batchArgv(program, keepStdout ? ['--stdout', file] : [file]);
     const child = spawn(cmd, argv, { stdio: ['ignore', 'pipe', 'pipe'] });
     let next = 0;  // position in `indices` of the case running now
     let pending = '';
