@@ -410,6 +410,8 @@ Status BarkRun::AdvanceFourLayer(const run::Observer& observer) {
   const int cycles_before = cycles_done_;
   const std::size_t samples_before = samples_.size(), frames_before = frames_.size();
   const int sample_every = std::max(1, f.m.steps_per_cycle / 10);
+  StepLanes lanes(lanes_);
+  StepLanes* split = lanes.threaded() ? &lanes : nullptr;
   while (f.step < total) {
     if (observer && f.step % kProgressSteps == 0) {
       const run::Progress progress{f.step < growth_steps ? "grow" : "settle",
@@ -425,7 +427,7 @@ Status BarkRun::AdvanceFourLayer(const run::Observer& observer) {
     }
     // A cycle's end: its sample and frame, then (when another cycle follows) the role exchange
     // and the sample after it.
-    if (StepFourLayer(lattice_, &f)) {
+    if (StepFourLayer(lattice_, &f, split)) {
       step_ = f.step;
       ++cycles_done_;
       samples_.push_back(FourLayerSample());

@@ -107,6 +107,10 @@ class BarkRun : public run::StudyRun {
   // Keep a base-colour PNG of each cycle's end (the 4-layer model: before its role exchange),
   // drawn at map_size, from the next Advance; off by default.
   void RecordFrames(bool on) { record_frames_ = on; }
+  // The 4-layer model's steps on 1 or 2 lanes (step_lanes.h: two threads where the build has
+  // them; the same bits either way), from the next Advance; 2 by default.
+  void SetLanes(int lanes) { lanes_ = lanes < 2 ? 1 : 2; }
+  int lanes() const { return lanes_; }
   const std::vector<std::string>& FramePngs() const { return frames_; }
   bool four_layer() const { return four_.has_value(); }
   // The 4-layer model's state (four_layer() only).
@@ -145,6 +149,7 @@ class BarkRun : public run::StudyRun {
   std::optional<FourLayer> four_;
   bool record_frames_ = false;
   std::vector<std::string> frames_;
+  int lanes_ = 2;
 };
 
 }  // namespace niwa::bark

@@ -170,20 +170,48 @@ LayerGrowth LayerGrowthAt(const FourLayer& f) {
   return LayoutAt(f.m, f.cycle, tau, growing);
 }
 
-bool StepFourLayer(const Lattice& L, FourLayer* f) {
+bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
   const FourLayerMechanics& m = f->m;
   const Mechanics& b = m.base;
   const LayerGrowth lg = LayerGrowthAt(*f);
   const double th = lg.stiffness_m2;
+  const int n = L.nodes();
+  // The lanes' halves: nodes [0, mid) and [mid, n), mid a multiple of four (the spring pass's
+  // batches start there).
+  const int mid = lanes ? (n / 8) * 4 : n;
   // Springs of the three layers (M2's constants scaled by its thickness share).
-  int cracked = 0;
+  float k[3][2], c[3][2], rest[3][2];
   for (int r = 0; r < 3; ++r) {
     const double share = r == kM2 ? th : 1.0;
-    const float k[2] = {static_cast<float>(b.k[0] * share), static_cast<float>(b.k[1] * share)};
-    const float c[2] = {static_cast<float>(b.c[0] * share), static_cast<float>(b.c[1] * share)};
-    const float rest[2] = {static_cast<float>(f->layer[r].rest[0]),
-                           static_cast<float>(f->layer[r].rest[1])};
-    cracked += SpringSlotForces(L, k, c, rest, lg.g[r], &f->layer[r].s);
+    for (int t = 0; t < 2; ++t) {
+      k[r][t] = static_cast<float>(b.k[t] * share);
+      c[r][t] = static_cast<float>(b.c[t] * share);
+      rest[r][t] = static_cast<float>(f->layer[r].rest[t]);
+    }
+    Surface& s = f->layer[r].s;
+    if (s.gx.size() != static_cast<std::size_t>(L.springs())) {
+      s.gx.assign(L.springs(), 0.0f);
+      s.gz.assign(L.springs(), 0.0f);
+    }
+  }
+  int broke[2][3][2] = {};  // lane, layer, family
+  auto spring_pass = [&](int lane) {
+    for (int r = 0; r < 3; ++r)
+      SpringSlotForcesRange(L, k[r], c[r], rest[r], lg.g[r], &f->layer[r].s, lane ? mid : 0,
+                            lane ? n : mid, broke[lane][r]);
+  };
+  if (lanes) {
+    lanes->Run(spring_pass);
+  } else {
+    spring_pass(0);
+  }
+  int cracked = 0;
+  for (int r = 0; r < 3; ++r) {
+    for (int t = 0; t < 2; ++t) {
+      const int count = broke[0][r][t] + broke[1][r][t];
+      f->layer[r].s.broken_count[t] += count;
+      cracked += count;
+    }
   }
   if (cracked > 0 && f->first_crack_step < 0) f->first_crack_step = f->step;
   // Nodes: the shear springs S→M1 (breakable), M1→M2, M2→I, then symplectic Euler per layer.
@@ -199,7 +227,6 @@ bool StepFourLayer(const Lattice& L, FourLayer* f) {
   CorkLayer& S = f->layer[kS];
   CorkLayer& M1 = f->layer[kM1];
   CorkLayer& M2 = f->layer[kM2];
-  const int n = L.nodes();
   // Four nodes a batch where their springs lie in runs (lane by lane what the single node below
   // does, selects in place of its branches); the rest, at the seams, one by one.
   using simd::Float4;
@@ -215,9 +242,12 @@ bool StepFourLayer(const Lattice& L, FourLayer* f) {
   auto store = [](std::vector<float>* v, int i, Float4 x) {
     std::memcpy(v->data() + i, &x, sizeof x);
   };
-  int i = 0;
-  while (i < n) {
-    if (i + 4 <= n && L.node_run4[i]) {
+  // Nodes [begin, end), the S→M1 bonds broken counted in *snapped (the nodes' arithmetic is
+  // their own: any split of the range gives the same bits).
+  auto node_pass = [&](int begin, int end, int* snapped) {
+  int i = begin;
+  while (i < end) {
+    if (i + 4 <= end && L.node_run4[i]) {
       Float4 fsx, fsz, f1x, f1z, f2x, f2z;
       NodeForce4(L, S.s, i, &fsx, &fsz);
       NodeForce4(L, M1.s, i, &f1x, &f1z);
@@ -240,7 +270,7 @@ bool StepFourLayer(const Lattice& L, FourLayer* f) {
         for (int q = 0; q < 4; ++q) {
           if (!snaps[q]) continue;
           S.bonded[i + q] = 0;
-          ++f->bonds_broken;
+          ++*snapped;
         }
       }
       const Float4 sx = simd::Select(holds, vks0 * slip_x + vcs0 * (swx - awx), zero);
@@ -286,7 +316,7 @@ bool StepFourLayer(const Lattice& L, FourLayer* f) {
       const float slip_z = (S.s.uz[i] - M1.s.uz[i]) - S.bond_z[i];
       if (slip_x * slip_x + slip_z * slip_z > S.shear_limit2[i]) {
         S.bonded[i] = 0;
-        ++f->bonds_broken;
+        ++*snapped;
       } else {
         sx = ks0 * slip_x + cs0 * (S.s.wx[i] - M1.s.wx[i]);
         sz = ks0 * slip_z + cs0 * (S.s.wz[i] - M1.s.wz[i]);
@@ -316,6 +346,14 @@ bool StepFourLayer(const Lattice& L, FourLayer* f) {
     M2.s.uz[i] += dt * M2.s.wz[i];
     ++i;
   }
+  };
+  int snapped[2] = {0, 0};
+  if (lanes) {
+    lanes->Run([&](int lane) { node_pass(lane ? mid : 0, lane ? n : mid, &snapped[lane]); });
+  } else {
+    node_pass(0, n, &snapped[0]);
+  }
+  f->bonds_broken += snapped[0] + snapped[1];
   ++f->step;
   if (f->step % kPeelCheckSteps == 0) CheckPeeling(L, f);
   return f->step <= f->growth_steps && f->step % m.steps_per_cycle == 0;
