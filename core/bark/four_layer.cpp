@@ -217,23 +217,18 @@ bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
   // Nodes: the shear springs S→M1 (breakable), M1→M2, M2→I, then symplectic Euler per layer.
   const double m2_mass = b.mass * th;
   const double k_low = ShearK(b, 1.0, th);  // M1→M2 and M2→I (I counted thickness D)
-  const float ks0 = static_cast<float>(b.k_s), cs0 = static_cast<float>(b.c_s);
-  const float ks1 = static_cast<float>(k_low);
-  const float cs1 = static_cast<float>(2.0 * (b.c_s / (2.0 * std::sqrt(b.k_s * b.mass))) *
-                                       std::sqrt(k_low * m2_mass));
-  const float dt = static_cast<float>(m.dt);
-  const float inv_m = static_cast<float>(1.0 / b.mass);
-  const float inv_m2 = static_cast<float>(1.0 / m2_mass);
+  const float ks0_all = static_cast<float>(b.k_s), cs0_all = static_cast<float>(b.c_s);
+  const float ks1_all = static_cast<float>(k_low);
+  const float cs1_all = static_cast<float>(2.0 * (b.c_s / (2.0 * std::sqrt(b.k_s * b.mass))) *
+                                           std::sqrt(k_low * m2_mass));
+  const float dt_all = static_cast<float>(m.dt);
+  const float inv_m_all = static_cast<float>(1.0 / b.mass);
+  const float inv_m2_all = static_cast<float>(1.0 / m2_mass);
   CorkLayer& S = f->layer[kS];
   CorkLayer& M1 = f->layer[kM1];
   CorkLayer& M2 = f->layer[kM2];
-  // Four nodes a batch where their springs lie in runs (lane by lane what the single node below
-  // does, selects in place of its branches); the rest, at the seams, one by one.
   using simd::Float4;
   using simd::Int4;
-  const Float4 vks0 = simd::Splat4(ks0), vcs0 = simd::Splat4(cs0), vks1 = simd::Splat4(ks1),
-               vcs1 = simd::Splat4(cs1), vdt = simd::Splat4(dt), vinv = simd::Splat4(inv_m),
-               vinv2 = simd::Splat4(inv_m2), zero = simd::Splat4(0.0f);
   auto load = [](const std::vector<float>& v, int i) {
     Float4 x;
     std::memcpy(&x, v.data() + i, sizeof x);
@@ -243,8 +238,16 @@ bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
     std::memcpy(v->data() + i, &x, sizeof x);
   };
   // Nodes [begin, end), the S→M1 bonds broken counted in *snapped (the nodes' arithmetic is
-  // their own: any split of the range gives the same bits).
+  // their own: any split of the range gives the same bits). Four nodes a batch where their
+  // springs lie in runs (lane by lane what the single node below does, selects in place of its
+  // branches); the rest, at the seams, one by one. The constants are the lambda's own locals (a
+  // byte store may alias anything it reaches through a capture, forcing reloads).
   auto node_pass = [&](int begin, int end, int* snapped) {
+  const float ks0 = ks0_all, cs0 = cs0_all, ks1 = ks1_all, cs1 = cs1_all, dt = dt_all,
+              inv_m = inv_m_all, inv_m2 = inv_m2_all;
+  const Float4 vks0 = simd::Splat4(ks0), vcs0 = simd::Splat4(cs0), vks1 = simd::Splat4(ks1),
+               vcs1 = simd::Splat4(cs1), vdt = simd::Splat4(dt), vinv = simd::Splat4(inv_m),
+               vinv2 = simd::Splat4(inv_m2), zero = simd::Splat4(0.0f);
   int i = begin;
   while (i < end) {
     if (i + 4 <= end && L.node_run4[i]) {
