@@ -377,7 +377,8 @@ void AddBarkCommands(CLI::App& app, CommandList& commands) {
   CLI::App* calibrate = bark_app->add_subcommand(
       "calibrate",
       "Search the rows the spec lets a species calibrate (2layer: dH, dR, D against Table 3's "
-      "means and maxima of the crack spacing along scan lines; 4layer: kappa_h, gamma, A, eta against a partly peeled surface) on a "
+      "means and maxima of the crack spacing along scan lines; 4layer: kappa_h, gamma, A, eta "
+      "against a partly peeled surface) on a "
       "grid over seeds, as one JSON object with every candidate, the best and whether it meets "
       "the bars");
   auto co = std::make_shared<CalibrateOptions>();

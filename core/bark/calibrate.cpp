@@ -46,10 +46,10 @@ Result<BarkRun> GrownWithSeed(const BarkState& state, uint64_t seed, const Budge
 
 // The 2-layer measures over the seeds and their deviations from the paper's row. The score reads
 // the paper's measure, the crack spacing along scan lines (regions.h Spacing; docs/bark-model.md
-// choice 10a), as `niwa bark table3`'s level_b_spacing does: the seeds' means of the lines' mean and
-// largest spacing around (width) and along (height); camphor's "(>20)" is met when some line along
-// the trunk crosses no horizontal crack at some seed. The plates' extents (choice 8) are printed
-// beside them, not scored.
+// choice 10a), as `niwa bark table3`'s level_b_spacing does: the seeds' means of the lines' mean
+// and largest spacing around (width) and along (height); camphor's "(>20)" is met when some line
+// along the trunk crosses no horizontal crack at some seed. The plates' extents (choice 8) are
+// printed beside them, not scored.
 Result<Scored> ScoreTwoLayer(const BarkState& state, const CalibrateRequest& r,
                              const Budget& budget) {
   const PaperTable3Row* paper = PaperTable3(state.species);

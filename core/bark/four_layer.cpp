@@ -243,112 +243,112 @@ bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
   // branches); the rest, at the seams, one by one. The constants are the lambda's own locals (a
   // byte store may alias anything it reaches through a capture, forcing reloads).
   auto node_pass = [&](int begin, int end, int* snapped) {
-  const float ks0 = ks0_all, cs0 = cs0_all, ks1 = ks1_all, cs1 = cs1_all, dt = dt_all,
-              inv_m = inv_m_all, inv_m2 = inv_m2_all;
-  const Float4 vks0 = simd::Splat4(ks0), vcs0 = simd::Splat4(cs0), vks1 = simd::Splat4(ks1),
-               vcs1 = simd::Splat4(cs1), vdt = simd::Splat4(dt), vinv = simd::Splat4(inv_m),
-               vinv2 = simd::Splat4(inv_m2), zero = simd::Splat4(0.0f);
-  int i = begin;
-  while (i < end) {
-    if (i + 4 <= end && L.node_run4[i]) {
-      Float4 fsx, fsz, f1x, f1z, f2x, f2z;
-      NodeForce4(L, S.s, i, &fsx, &fsz);
-      NodeForce4(L, M1.s, i, &f1x, &f1z);
-      NodeForce4(L, M2.s, i, &f2x, &f2z);
-      const Float4 sux = load(S.s.ux, i), suz = load(S.s.uz, i), swx = load(S.s.wx, i),
-                   swz = load(S.s.wz, i);
-      Float4 aux = load(M1.s.ux, i), auz = load(M1.s.uz, i), awx = load(M1.s.wx, i),
-             awz = load(M1.s.wz, i);
-      Float4 bux = load(M2.s.ux, i), buz = load(M2.s.uz, i), bwx = load(M2.s.wx, i),
-             bwz = load(M2.s.wz, i);
-      const Int4 bonded =
-          Int4{S.bonded[i], S.bonded[i + 1], S.bonded[i + 2], S.bonded[i + 3]} != Int4{0, 0, 0, 0};
-      const Int4 present = Int4{S.present[i], S.present[i + 1], S.present[i + 2],
-                                S.present[i + 3]} != Int4{0, 0, 0, 0};
-      const Float4 slip_x = (sux - aux) - load(S.bond_x, i);
-      const Float4 slip_z = (suz - auz) - load(S.bond_z, i);
-      const Int4 snaps = bonded & (slip_x * slip_x + slip_z * slip_z > load(S.shear_limit2, i));
-      const Int4 holds = bonded & ~snaps;
-      if (simd::AnyTrue(snaps)) {
-        for (int q = 0; q < 4; ++q) {
-          if (!snaps[q]) continue;
-          S.bonded[i + q] = 0;
+    const float ks0 = ks0_all, cs0 = cs0_all, ks1 = ks1_all, cs1 = cs1_all, dt = dt_all,
+                inv_m = inv_m_all, inv_m2 = inv_m2_all;
+    const Float4 vks0 = simd::Splat4(ks0), vcs0 = simd::Splat4(cs0), vks1 = simd::Splat4(ks1),
+                 vcs1 = simd::Splat4(cs1), vdt = simd::Splat4(dt), vinv = simd::Splat4(inv_m),
+                 vinv2 = simd::Splat4(inv_m2), zero = simd::Splat4(0.0f);
+    int i = begin;
+    while (i < end) {
+      if (i + 4 <= end && L.node_run4[i]) {
+        Float4 fsx, fsz, f1x, f1z, f2x, f2z;
+        NodeForce4(L, S.s, i, &fsx, &fsz);
+        NodeForce4(L, M1.s, i, &f1x, &f1z);
+        NodeForce4(L, M2.s, i, &f2x, &f2z);
+        const Float4 sux = load(S.s.ux, i), suz = load(S.s.uz, i), swx = load(S.s.wx, i),
+                     swz = load(S.s.wz, i);
+        Float4 aux = load(M1.s.ux, i), auz = load(M1.s.uz, i), awx = load(M1.s.wx, i),
+               awz = load(M1.s.wz, i);
+        Float4 bux = load(M2.s.ux, i), buz = load(M2.s.uz, i), bwx = load(M2.s.wx, i),
+               bwz = load(M2.s.wz, i);
+        const Int4 bonded = Int4{S.bonded[i], S.bonded[i + 1], S.bonded[i + 2], S.bonded[i + 3]} !=
+                            Int4{0, 0, 0, 0};
+        const Int4 present = Int4{S.present[i], S.present[i + 1], S.present[i + 2],
+                                  S.present[i + 3]} != Int4{0, 0, 0, 0};
+        const Float4 slip_x = (sux - aux) - load(S.bond_x, i);
+        const Float4 slip_z = (suz - auz) - load(S.bond_z, i);
+        const Int4 snaps = bonded & (slip_x * slip_x + slip_z * slip_z > load(S.shear_limit2, i));
+        const Int4 holds = bonded & ~snaps;
+        if (simd::AnyTrue(snaps)) {
+          for (int q = 0; q < 4; ++q) {
+            if (!snaps[q]) continue;
+            S.bonded[i + q] = 0;
+            ++*snapped;
+          }
+        }
+        const Float4 sx = simd::Select(holds, vks0 * slip_x + vcs0 * (swx - awx), zero);
+        const Float4 sz = simd::Select(holds, vks0 * slip_z + vcs0 * (swz - awz), zero);
+        const Float4 px = vks1 * ((aux - bux) - load(M1.bond_x, i)) + vcs1 * (awx - bwx);
+        const Float4 pz = vks1 * ((auz - buz) - load(M1.bond_z, i)) + vcs1 * (awz - bwz);
+        const Float4 qx = vks1 * bux + vcs1 * bwx;
+        const Float4 qz = vks1 * buz + vcs1 * bwz;
+        const Float4 nwx = swx + vdt * ((fsx - sx) * vinv);
+        const Float4 nwz = swz + vdt * ((fsz - sz) * vinv);
+        store(&S.s.wx, i, simd::Select(present, nwx, swx));
+        store(&S.s.wz, i, simd::Select(present, nwz, swz));
+        store(&S.s.ux, i, simd::Select(present, sux + vdt * nwx, sux));
+        store(&S.s.uz, i, simd::Select(present, suz + vdt * nwz, suz));
+        awx += vdt * ((f1x + sx - px) * vinv);
+        awz += vdt * ((f1z + sz - pz) * vinv);
+        aux += vdt * awx;
+        auz += vdt * awz;
+        bwx += vdt * ((f2x + px - qx) * vinv2);
+        bwz += vdt * ((f2z + pz - qz) * vinv2);
+        bux += vdt * bwx;
+        buz += vdt * bwz;
+        store(&M1.s.wx, i, awx);
+        store(&M1.s.wz, i, awz);
+        store(&M1.s.ux, i, aux);
+        store(&M1.s.uz, i, auz);
+        store(&M2.s.wx, i, bwx);
+        store(&M2.s.wz, i, bwz);
+        store(&M2.s.ux, i, bux);
+        store(&M2.s.uz, i, buz);
+        i += 4;
+        continue;
+      }
+      float fsx, fsz, f1x, f1z, f2x, f2z;
+      NodeForce(L, S.s, i, &fsx, &fsz);
+      NodeForce(L, M1.s, i, &f1x, &f1z);
+      NodeForce(L, M2.s, i, &f2x, &f2z);
+      // S → M1, breaking past the node's shear limit (checked on the positions the step starts
+      // from, as the springs are).
+      float sx = 0.0f, sz = 0.0f;
+      if (S.bonded[i]) {
+        const float slip_x = (S.s.ux[i] - M1.s.ux[i]) - S.bond_x[i];
+        const float slip_z = (S.s.uz[i] - M1.s.uz[i]) - S.bond_z[i];
+        if (slip_x * slip_x + slip_z * slip_z > S.shear_limit2[i]) {
+          S.bonded[i] = 0;
           ++*snapped;
+        } else {
+          sx = ks0 * slip_x + cs0 * (S.s.wx[i] - M1.s.wx[i]);
+          sz = ks0 * slip_z + cs0 * (S.s.wz[i] - M1.s.wz[i]);
         }
       }
-      const Float4 sx = simd::Select(holds, vks0 * slip_x + vcs0 * (swx - awx), zero);
-      const Float4 sz = simd::Select(holds, vks0 * slip_z + vcs0 * (swz - awz), zero);
-      const Float4 px = vks1 * ((aux - bux) - load(M1.bond_x, i)) + vcs1 * (awx - bwx);
-      const Float4 pz = vks1 * ((auz - buz) - load(M1.bond_z, i)) + vcs1 * (awz - bwz);
-      const Float4 qx = vks1 * bux + vcs1 * bwx;
-      const Float4 qz = vks1 * buz + vcs1 * bwz;
-      const Float4 nwx = swx + vdt * ((fsx - sx) * vinv);
-      const Float4 nwz = swz + vdt * ((fsz - sz) * vinv);
-      store(&S.s.wx, i, simd::Select(present, nwx, swx));
-      store(&S.s.wz, i, simd::Select(present, nwz, swz));
-      store(&S.s.ux, i, simd::Select(present, sux + vdt * nwx, sux));
-      store(&S.s.uz, i, simd::Select(present, suz + vdt * nwz, suz));
-      awx += vdt * ((f1x + sx - px) * vinv);
-      awz += vdt * ((f1z + sz - pz) * vinv);
-      aux += vdt * awx;
-      auz += vdt * awz;
-      bwx += vdt * ((f2x + px - qx) * vinv2);
-      bwz += vdt * ((f2z + pz - qz) * vinv2);
-      bux += vdt * bwx;
-      buz += vdt * bwz;
-      store(&M1.s.wx, i, awx);
-      store(&M1.s.wz, i, awz);
-      store(&M1.s.ux, i, aux);
-      store(&M1.s.uz, i, auz);
-      store(&M2.s.wx, i, bwx);
-      store(&M2.s.wz, i, bwz);
-      store(&M2.s.ux, i, bux);
-      store(&M2.s.uz, i, buz);
-      i += 4;
-      continue;
-    }
-    float fsx, fsz, f1x, f1z, f2x, f2z;
-    NodeForce(L, S.s, i, &fsx, &fsz);
-    NodeForce(L, M1.s, i, &f1x, &f1z);
-    NodeForce(L, M2.s, i, &f2x, &f2z);
-    // S → M1, breaking past the node's shear limit (checked on the positions the step starts
-    // from, as the springs are).
-    float sx = 0.0f, sz = 0.0f;
-    if (S.bonded[i]) {
-      const float slip_x = (S.s.ux[i] - M1.s.ux[i]) - S.bond_x[i];
-      const float slip_z = (S.s.uz[i] - M1.s.uz[i]) - S.bond_z[i];
-      if (slip_x * slip_x + slip_z * slip_z > S.shear_limit2[i]) {
-        S.bonded[i] = 0;
-        ++*snapped;
-      } else {
-        sx = ks0 * slip_x + cs0 * (S.s.wx[i] - M1.s.wx[i]);
-        sz = ks0 * slip_z + cs0 * (S.s.wz[i] - M1.s.wz[i]);
+      // M1 → M2 (never breaks).
+      const float px =
+          ks1 * ((M1.s.ux[i] - M2.s.ux[i]) - M1.bond_x[i]) + cs1 * (M1.s.wx[i] - M2.s.wx[i]);
+      const float pz =
+          ks1 * ((M1.s.uz[i] - M2.s.uz[i]) - M1.bond_z[i]) + cs1 * (M1.s.wz[i] - M2.s.wz[i]);
+      // M2 → I (the anchor; never breaks).
+      const float qx = ks1 * M2.s.ux[i] + cs1 * M2.s.wx[i];
+      const float qz = ks1 * M2.s.uz[i] + cs1 * M2.s.wz[i];
+      if (S.present[i]) {
+        S.s.wx[i] += dt * ((fsx - sx) * inv_m);
+        S.s.wz[i] += dt * ((fsz - sz) * inv_m);
+        S.s.ux[i] += dt * S.s.wx[i];
+        S.s.uz[i] += dt * S.s.wz[i];
       }
+      M1.s.wx[i] += dt * ((f1x + sx - px) * inv_m);
+      M1.s.wz[i] += dt * ((f1z + sz - pz) * inv_m);
+      M1.s.ux[i] += dt * M1.s.wx[i];
+      M1.s.uz[i] += dt * M1.s.wz[i];
+      M2.s.wx[i] += dt * ((f2x + px - qx) * inv_m2);
+      M2.s.wz[i] += dt * ((f2z + pz - qz) * inv_m2);
+      M2.s.ux[i] += dt * M2.s.wx[i];
+      M2.s.uz[i] += dt * M2.s.wz[i];
+      ++i;
     }
-    // M1 → M2 (never breaks).
-    const float px =
-        ks1 * ((M1.s.ux[i] - M2.s.ux[i]) - M1.bond_x[i]) + cs1 * (M1.s.wx[i] - M2.s.wx[i]);
-    const float pz =
-        ks1 * ((M1.s.uz[i] - M2.s.uz[i]) - M1.bond_z[i]) + cs1 * (M1.s.wz[i] - M2.s.wz[i]);
-    // M2 → I (the anchor; never breaks).
-    const float qx = ks1 * M2.s.ux[i] + cs1 * M2.s.wx[i];
-    const float qz = ks1 * M2.s.uz[i] + cs1 * M2.s.wz[i];
-    if (S.present[i]) {
-      S.s.wx[i] += dt * ((fsx - sx) * inv_m);
-      S.s.wz[i] += dt * ((fsz - sz) * inv_m);
-      S.s.ux[i] += dt * S.s.wx[i];
-      S.s.uz[i] += dt * S.s.wz[i];
-    }
-    M1.s.wx[i] += dt * ((f1x + sx - px) * inv_m);
-    M1.s.wz[i] += dt * ((f1z + sz - pz) * inv_m);
-    M1.s.ux[i] += dt * M1.s.wx[i];
-    M1.s.uz[i] += dt * M1.s.wz[i];
-    M2.s.wx[i] += dt * ((f2x + px - qx) * inv_m2);
-    M2.s.wz[i] += dt * ((f2z + pz - qz) * inv_m2);
-    M2.s.ux[i] += dt * M2.s.wx[i];
-    M2.s.uz[i] += dt * M2.s.wz[i];
-    ++i;
-  }
   };
   int snapped[2] = {0, 0};
   if (lanes) {
