@@ -69,7 +69,8 @@ else()
 endif()
 
 # Threads (native only): the BVH build runs the root's two halves on two threads (core/geom/bvh.cpp;
-# the same nodes as one thread, bit for bit). The WASM build has no threads and builds on one.
+# the same nodes as one thread, bit for bit), and the bark's 4-layer passes run on two lanes
+# (core/bark/step_lanes.cpp; the same bits). The WASM build has no threads and runs on one.
 find_package(Threads REQUIRED)
 set(NIWA_THREADS_LIBRARY Threads::Threads)
 set(NIWA_THREADS_DEFINITIONS NIWA_HAVE_THREADS=1)

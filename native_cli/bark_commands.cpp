@@ -41,6 +41,7 @@ const run::FieldNames kFieldFlags = {
 };
 
 constexpr FlagRange kSeedRange = {0, bark::kMaxBarkSeed, true};
+constexpr FlagRange kThreadsRange = {1, 2, true};
 
 FlagRange BarkRowRange(BarkParam row) {
   return RowFlagRange(bark::BarkTable().row(static_cast<std::size_t>(row)));
@@ -52,6 +53,7 @@ struct GrowOptions {
   std::vector<std::string> sets;
   double seed = -1;  // -1: not given
   int cycles = 0;    // 0: not given (the row starts at 1)
+  int threads = 2;   // the 4-layer model's lanes (bark/step_lanes.h)
   bool stats = false;
   BudgetOptions budget;
 };
@@ -111,6 +113,7 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
                         "lower N_R, N_H, cycles, T, settle_steps or map_size"));
   }
   run->RecordFrames(!o.frames.empty());
+  run->SetLanes(o.threads);
   const auto t1 = std::chrono::steady_clock::now();
   Check(run::RenameField(run->Advance({}), kFieldFlags));
   const auto t2 = std::chrono::steady_clock::now();
@@ -330,6 +333,9 @@ void AddBarkCommands(CLI::App& app, CommandList& commands) {
   grow->add_option("--frames", o->frames,
                    "Write a base-colour map of each cycle's end into this existing folder "
                    "(bark_cycle_001.png, ...)");
+  AddNumberFlag(grow, "--threads", &o->threads, kThreadsRange,
+                "Threads of the 4-layer model's steps, " + RangeHelp(kThreadsRange) +
+                    " (default 2; the same bytes either way; one where the build has no threads)");
   AddBudgetOptions(grow, &o->budget);
   commands.push_back({grow, [o](std::ostream& out) { return RunGrow(*o, out); }, example});
 
@@ -371,7 +377,8 @@ void AddBarkCommands(CLI::App& app, CommandList& commands) {
   CLI::App* calibrate = bark_app->add_subcommand(
       "calibrate",
       "Search the rows the spec lets a species calibrate (2layer: dH, dR, D against Table 3's "
-      "means and maxima; 4layer: kappa_h, gamma, A, eta against a partly peeled surface) on a "
+      "means and maxima of the crack spacing along scan lines; 4layer: kappa_h, gamma, A, eta "
+      "against a partly peeled surface) on a "
       "grid over seeds, as one JSON object with every candidate, the best and whether it meets "
       "the bars");
   auto co = std::make_shared<CalibrateOptions>();

@@ -17,10 +17,10 @@ namespace niwa::bark {
 namespace {
 
 // Calibrated upper bounds (docs/bark-model.md "Budgets"): bytes a node holds while a run lives
-// (its state, springs, triangles, the region measure and the lattice's build map), seconds of a
-// spring-step, bytes and seconds of a map pixel (the four maps and their PNGs).
+// (its state, springs, triangles, the region measure and the lattice's build map), bytes and
+// seconds of a map pixel (the four maps and their PNGs). The seconds of a spring-step are
+// kBarkSecondsPerSpringStep (bark_run.h).
 constexpr double kBytesPerNode = 800;
-constexpr double kSecondsPerSpringStep = 6e-9;
 constexpr double kBytesPerMapPixel = 48;
 constexpr double kSecondsPerMapPixel = 2e-7;
 // The maps' PNGs at stb's fastest zlib effort: about a quarter faster than its default, a few
@@ -75,7 +75,7 @@ Estimate EstimateBarkRun(const BarkState& state) {
   const double map_passes = four ? 2 : 1;  // three layers' rasters, distances and pillows
   Estimate e;
   e.memory_bytes = layers * nodes * kBytesPerNode + map_passes * pixels * kBytesPerMapPixel;
-  e.seconds = 4 * layers * nodes * steps * kSecondsPerSpringStep +
+  e.seconds = 4 * layers * nodes * steps * kBarkSecondsPerSpringStep +
               map_passes * pixels * kSecondsPerMapPixel;
   e.what = "the bark (" + FormatCount(nodes) + " nodes" + (four ? " a layer, 3 layers, " : ", ") +
            FormatCount(steps) + " steps)";
@@ -410,6 +410,8 @@ Status BarkRun::AdvanceFourLayer(const run::Observer& observer) {
   const int cycles_before = cycles_done_;
   const std::size_t samples_before = samples_.size(), frames_before = frames_.size();
   const int sample_every = std::max(1, f.m.steps_per_cycle / 10);
+  StepLanes lanes(lanes_);
+  StepLanes* split = lanes.threaded() ? &lanes : nullptr;
   while (f.step < total) {
     if (observer && f.step % kProgressSteps == 0) {
       const run::Progress progress{f.step < growth_steps ? "grow" : "settle",
@@ -425,7 +427,7 @@ Status BarkRun::AdvanceFourLayer(const run::Observer& observer) {
     }
     // A cycle's end: its sample and frame, then (when another cycle follows) the role exchange
     // and the sample after it.
-    if (StepFourLayer(lattice_, &f)) {
+    if (StepFourLayer(lattice_, &f, split)) {
       step_ = f.step;
       ++cycles_done_;
       samples_.push_back(FourLayerSample());

@@ -56,8 +56,17 @@ struct PaperTable3Row {
 // The paper's row of camphor, tallow or pine; nullptr for any other species.
 const PaperTable3Row* PaperTable3(const std::string& species);
 
+// CPU seconds of one spring-step in the estimate (one core; the 4-layer model's second lane does
+// not lower it). Measured on the passes in slots (docs/bark-model.md choice 6, docs/BENCHMARKS.md,
+// at load 0.7-0.9): 2.39 ns the 2-layer camphor 128 × 64 (the whole process, maps included),
+// 2.61 ns the 4-layer pine 128 × 64 over 10 cycles (39.8 s for 15.23 G spring-steps); with a
+// third over the larger of them for a busier machine. The bench's bark workloads print it beside
+// what they measure (bench/bark_workloads.cpp): re-measure when the passes change.
+constexpr double kBarkSecondsPerSpringStep = 3.5e-9;
+
 // What the state will cost: memory of the lattice, its state and the maps, and time by spring-steps
-// and map pixels (calibrated upper bounds; docs/bark-model.md).
+// (kBarkSecondsPerSpringStep, four a node a spring layer: three springs and a shear spring) and
+// map pixels (calibrated upper bounds; docs/bark-model.md).
 Estimate EstimateBarkRun(const BarkState& state);
 
 // Table 3 of paper 003 measured (spec §4.1, E1): the 2-layer model of each state (one per species,
@@ -107,6 +116,10 @@ class BarkRun : public run::StudyRun {
   // Keep a base-colour PNG of each cycle's end (the 4-layer model: before its role exchange),
   // drawn at map_size, from the next Advance; off by default.
   void RecordFrames(bool on) { record_frames_ = on; }
+  // The 4-layer model's steps on 1 or 2 lanes (step_lanes.h: two threads where the build has
+  // them; the same bits either way), from the next Advance; 2 by default.
+  void SetLanes(int lanes) { lanes_ = lanes < 2 ? 1 : 2; }
+  int lanes() const { return lanes_; }
   const std::vector<std::string>& FramePngs() const { return frames_; }
   bool four_layer() const { return four_.has_value(); }
   // The 4-layer model's state (four_layer() only).
@@ -145,6 +158,7 @@ class BarkRun : public run::StudyRun {
   std::optional<FourLayer> four_;
   bool record_frames_ = false;
   std::vector<std::string> frames_;
+  int lanes_ = 2;
 };
 
 }  // namespace niwa::bark

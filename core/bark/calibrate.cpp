@@ -44,22 +44,32 @@ Result<BarkRun> GrownWithSeed(const BarkState& state, uint64_t seed, const Budge
   return run;
 }
 
-// The 2-layer measures over the seeds and their deviations from the paper's row.
+// The 2-layer measures over the seeds and their deviations from the paper's row. The score reads
+// the paper's measure, the crack spacing along scan lines (regions.h Spacing; docs/bark-model.md
+// choice 10a), as `niwa bark table3`'s level_b_spacing does: the seeds' means of the lines' mean
+// and largest spacing around (width) and along (height); camphor's "(>20)" is met when some line
+// along the trunk crosses no horizontal crack at some seed. The plates' extents (choice 8) are
+// printed beside them, not scored.
 Result<Scored> ScoreTwoLayer(const BarkState& state, const CalibrateRequest& r,
                              const Budget& budget) {
   const PaperTable3Row* paper = PaperTable3(state.species);
-  double mean_w = 0, mean_h = 0, max_w = 0, max_h = 0, icpt_w = 0, icpt_h = 0, vertical = 0,
-         closed = 0;
-  int strips = 0;
+  double mean_w = 0, mean_h = 0, max_w = 0, max_h = 0, plate_mean_w = 0, plate_mean_h = 0,
+         plate_max_w = 0, plate_max_h = 0, icpt_w = 0, icpt_h = 0, vertical = 0, closed = 0;
+  int strips = 0, open_along = 0;
   const double n = static_cast<double>(r.last_seed - r.first_seed + 1);
   for (uint64_t seed = r.first_seed; seed <= r.last_seed; ++seed) {
     Result<BarkRun> run = GrownWithSeed(state, seed, budget);
     if (!run.ok()) return run.status();
     const CrackMeasures& c = run->cracks();
-    mean_w += c.mean_width / n;
-    mean_h += c.mean_height / n;
-    max_w += c.max_width / n;
-    max_h += c.max_height / n;
+    mean_w += c.spacing_width.mean / n;
+    mean_h += c.spacing_height.mean / n;
+    max_w += c.spacing_width.max / n;
+    max_h += c.spacing_height.max / n;
+    open_along += c.spacing_height.open;
+    plate_mean_w += c.mean_width / n;
+    plate_mean_h += c.mean_height / n;
+    plate_max_w += c.max_width / n;
+    plate_max_h += c.max_height / n;
     icpt_w += c.intercept_width / n;
     icpt_h += c.intercept_height / n;
     vertical += c.vertical_crack_share / n;
@@ -71,18 +81,25 @@ Result<Scored> ScoreTwoLayer(const BarkState& state, const CalibrateRequest& r,
                   {"mean_h", mean_h},
                   {"max_w", max_w},
                   {"max_h", max_h},
+                  {"open_lines_h", open_along},
+                  {"plates",
+                   {{"mean_w", plate_mean_w},
+                    {"mean_h", plate_mean_h},
+                    {"max_w", plate_max_w},
+                    {"max_h", plate_max_h},
+                    {"strips", strips}}},
                   {"intercept_w", icpt_w},
                   {"intercept_h", icpt_h},
                   {"vertical_crack_share", vertical},
-                  {"closed_fraction", closed},
-                  {"strips", strips}};
+                  {"closed_fraction", closed}};
   const double d_mw = Deviation(mean_w, paper->mean_w, kMeanTolerance);
   const double d_mh = Deviation(mean_h, paper->mean_h, kMeanTolerance);
   const double d_xw = Deviation(max_w, paper->max_w, kMaxTolerance);
-  // "(>20)": a plate wrapping the patch along the trunk at some seed; else over 1 by the shortfall.
+  // "(>20)": a line along the trunk crossing no horizontal crack at some seed; else over 1 by the
+  // shortfall of the largest spacing from the patch.
   const double h_o = state.params.Get(BarkParam::kLo) * state.params.GetInt(BarkParam::kNH);
   const double d_xh = paper->max_h > 0 ? Deviation(max_h, paper->max_h, kMaxTolerance)
-                      : strips > 0     ? 0.0
+                      : open_along > 0 ? 0.0
                                        : 1.0 + std::max(0.0, 1.0 - max_h / h_o);
   const double means = std::max(d_mw, d_mh), maxima = std::max(d_xw, d_xh);
   out.score = std::max(means, maxima);

@@ -2,8 +2,9 @@
 // §4.6): a deterministic, budgeted grid search over the rows the spec lets a species calibrate —
 // the growth and thickness of the 2-layer model (dH, dR, D: Table 3 level B, "per-species growth"),
 // the peeling constants of the 4-layer model (κ_h, γ, A, η: Table 4 prints no values) — each grid
-// point run over the seeds and scored against the paper: the 2-layer model against Table 3's means
-// (±25 %) and maxima (±40 %, camphor's "(>20)" as a plate wrapping the patch), the 4-layer model
+// point run over the seeds and scored against the paper: the 2-layer model's crack spacing along
+// scan lines (the paper's measure, regions.h Spacing) against Table 3's means (±25 %) and maxima
+// (±40 %, camphor's "(>20)" as a line along the trunk crossing no crack), the 4-layer model
 // against "part of the bark peeled" (the share of S peeled by each cycle's end within a band, and
 // peeling in every cycle after the first). One JSON object: every candidate with its measures and
 // score, the best, and whether it meets the bars. Does not: change a preset (the values found are

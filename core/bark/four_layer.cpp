@@ -170,43 +170,65 @@ LayerGrowth LayerGrowthAt(const FourLayer& f) {
   return LayoutAt(f.m, f.cycle, tau, growing);
 }
 
-bool StepFourLayer(const Lattice& L, FourLayer* f) {
+bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
   const FourLayerMechanics& m = f->m;
   const Mechanics& b = m.base;
   const LayerGrowth lg = LayerGrowthAt(*f);
   const double th = lg.stiffness_m2;
+  const int n = L.nodes();
+  // The lanes' halves: nodes [0, mid) and [mid, n), mid a multiple of four (the spring pass's
+  // batches start there).
+  const int mid = lanes ? (n / 8) * 4 : n;
   // Springs of the three layers (M2's constants scaled by its thickness share).
-  int cracked = 0;
+  float k[3][2], c[3][2], rest[3][2];
   for (int r = 0; r < 3; ++r) {
     const double share = r == kM2 ? th : 1.0;
-    const float k[2] = {static_cast<float>(b.k[0] * share), static_cast<float>(b.k[1] * share)};
-    const float c[2] = {static_cast<float>(b.c[0] * share), static_cast<float>(b.c[1] * share)};
-    const float rest[2] = {static_cast<float>(f->layer[r].rest[0]),
-                           static_cast<float>(f->layer[r].rest[1])};
-    cracked += SpringSlotForces(L, k, c, rest, lg.g[r], &f->layer[r].s);
+    for (int t = 0; t < 2; ++t) {
+      k[r][t] = static_cast<float>(b.k[t] * share);
+      c[r][t] = static_cast<float>(b.c[t] * share);
+      rest[r][t] = static_cast<float>(f->layer[r].rest[t]);
+    }
+    Surface& s = f->layer[r].s;
+    if (s.gx.size() != static_cast<std::size_t>(L.springs())) {
+      s.gx.assign(L.springs(), 0.0f);
+      s.gz.assign(L.springs(), 0.0f);
+    }
+  }
+  int broke[2][3][2] = {};  // lane, layer, family
+  auto spring_pass = [&](int lane) {
+    for (int r = 0; r < 3; ++r)
+      SpringSlotForcesRange(L, k[r], c[r], rest[r], lg.g[r], &f->layer[r].s, lane ? mid : 0,
+                            lane ? n : mid, broke[lane][r]);
+  };
+  if (lanes) {
+    lanes->Run(spring_pass);
+  } else {
+    spring_pass(0);
+  }
+  int cracked = 0;
+  for (int r = 0; r < 3; ++r) {
+    for (int t = 0; t < 2; ++t) {
+      const int count = broke[0][r][t] + broke[1][r][t];
+      f->layer[r].s.broken_count[t] += count;
+      cracked += count;
+    }
   }
   if (cracked > 0 && f->first_crack_step < 0) f->first_crack_step = f->step;
   // Nodes: the shear springs S→M1 (breakable), M1→M2, M2→I, then symplectic Euler per layer.
   const double m2_mass = b.mass * th;
   const double k_low = ShearK(b, 1.0, th);  // M1→M2 and M2→I (I counted thickness D)
-  const float ks0 = static_cast<float>(b.k_s), cs0 = static_cast<float>(b.c_s);
-  const float ks1 = static_cast<float>(k_low);
-  const float cs1 = static_cast<float>(2.0 * (b.c_s / (2.0 * std::sqrt(b.k_s * b.mass))) *
-                                       std::sqrt(k_low * m2_mass));
-  const float dt = static_cast<float>(m.dt);
-  const float inv_m = static_cast<float>(1.0 / b.mass);
-  const float inv_m2 = static_cast<float>(1.0 / m2_mass);
+  const float ks0_all = static_cast<float>(b.k_s), cs0_all = static_cast<float>(b.c_s);
+  const float ks1_all = static_cast<float>(k_low);
+  const float cs1_all = static_cast<float>(2.0 * (b.c_s / (2.0 * std::sqrt(b.k_s * b.mass))) *
+                                           std::sqrt(k_low * m2_mass));
+  const float dt_all = static_cast<float>(m.dt);
+  const float inv_m_all = static_cast<float>(1.0 / b.mass);
+  const float inv_m2_all = static_cast<float>(1.0 / m2_mass);
   CorkLayer& S = f->layer[kS];
   CorkLayer& M1 = f->layer[kM1];
   CorkLayer& M2 = f->layer[kM2];
-  const int n = L.nodes();
-  // Four nodes a batch where their springs lie in runs (lane by lane what the single node below
-  // does, selects in place of its branches); the rest, at the seams, one by one.
   using simd::Float4;
   using simd::Int4;
-  const Float4 vks0 = simd::Splat4(ks0), vcs0 = simd::Splat4(cs0), vks1 = simd::Splat4(ks1),
-               vcs1 = simd::Splat4(cs1), vdt = simd::Splat4(dt), vinv = simd::Splat4(inv_m),
-               vinv2 = simd::Splat4(inv_m2), zero = simd::Splat4(0.0f);
   auto load = [](const std::vector<float>& v, int i) {
     Float4 x;
     std::memcpy(&x, v.data() + i, sizeof x);
@@ -215,107 +237,126 @@ bool StepFourLayer(const Lattice& L, FourLayer* f) {
   auto store = [](std::vector<float>* v, int i, Float4 x) {
     std::memcpy(v->data() + i, &x, sizeof x);
   };
-  int i = 0;
-  while (i < n) {
-    if (i + 4 <= n && L.node_run4[i]) {
-      Float4 fsx, fsz, f1x, f1z, f2x, f2z;
-      NodeForce4(L, S.s, i, &fsx, &fsz);
-      NodeForce4(L, M1.s, i, &f1x, &f1z);
-      NodeForce4(L, M2.s, i, &f2x, &f2z);
-      const Float4 sux = load(S.s.ux, i), suz = load(S.s.uz, i), swx = load(S.s.wx, i),
-                   swz = load(S.s.wz, i);
-      Float4 aux = load(M1.s.ux, i), auz = load(M1.s.uz, i), awx = load(M1.s.wx, i),
-             awz = load(M1.s.wz, i);
-      Float4 bux = load(M2.s.ux, i), buz = load(M2.s.uz, i), bwx = load(M2.s.wx, i),
-             bwz = load(M2.s.wz, i);
-      const Int4 bonded =
-          Int4{S.bonded[i], S.bonded[i + 1], S.bonded[i + 2], S.bonded[i + 3]} != Int4{0, 0, 0, 0};
-      const Int4 present = Int4{S.present[i], S.present[i + 1], S.present[i + 2],
-                                S.present[i + 3]} != Int4{0, 0, 0, 0};
-      const Float4 slip_x = (sux - aux) - load(S.bond_x, i);
-      const Float4 slip_z = (suz - auz) - load(S.bond_z, i);
-      const Int4 snaps = bonded & (slip_x * slip_x + slip_z * slip_z > load(S.shear_limit2, i));
-      const Int4 holds = bonded & ~snaps;
-      if (simd::AnyTrue(snaps)) {
-        for (int q = 0; q < 4; ++q) {
-          if (!snaps[q]) continue;
-          S.bonded[i + q] = 0;
-          ++f->bonds_broken;
+  // Nodes [begin, end), the S→M1 bonds broken counted in *snapped (the nodes' arithmetic is
+  // their own: any split of the range gives the same bits). Four nodes a batch where their
+  // springs lie in runs (lane by lane what the single node below does, selects in place of its
+  // branches); the rest, at the seams, one by one. The constants are the lambda's own locals (a
+  // byte store may alias anything it reaches through a capture, forcing reloads).
+  auto node_pass = [&](int begin, int end, int* snapped) {
+    const float ks0 = ks0_all, cs0 = cs0_all, ks1 = ks1_all, cs1 = cs1_all, dt = dt_all,
+                inv_m = inv_m_all, inv_m2 = inv_m2_all;
+    const Float4 vks0 = simd::Splat4(ks0), vcs0 = simd::Splat4(cs0), vks1 = simd::Splat4(ks1),
+                 vcs1 = simd::Splat4(cs1), vdt = simd::Splat4(dt), vinv = simd::Splat4(inv_m),
+                 vinv2 = simd::Splat4(inv_m2), zero = simd::Splat4(0.0f);
+    int i = begin;
+    while (i < end) {
+      if (i + 4 <= end && L.node_run4[i]) {
+        Float4 fsx, fsz, f1x, f1z, f2x, f2z;
+        NodeForce4(L, S.s, i, &fsx, &fsz);
+        NodeForce4(L, M1.s, i, &f1x, &f1z);
+        NodeForce4(L, M2.s, i, &f2x, &f2z);
+        const Float4 sux = load(S.s.ux, i), suz = load(S.s.uz, i), swx = load(S.s.wx, i),
+                     swz = load(S.s.wz, i);
+        Float4 aux = load(M1.s.ux, i), auz = load(M1.s.uz, i), awx = load(M1.s.wx, i),
+               awz = load(M1.s.wz, i);
+        Float4 bux = load(M2.s.ux, i), buz = load(M2.s.uz, i), bwx = load(M2.s.wx, i),
+               bwz = load(M2.s.wz, i);
+        const Int4 bonded = Int4{S.bonded[i], S.bonded[i + 1], S.bonded[i + 2], S.bonded[i + 3]} !=
+                            Int4{0, 0, 0, 0};
+        const Int4 present = Int4{S.present[i], S.present[i + 1], S.present[i + 2],
+                                  S.present[i + 3]} != Int4{0, 0, 0, 0};
+        const Float4 slip_x = (sux - aux) - load(S.bond_x, i);
+        const Float4 slip_z = (suz - auz) - load(S.bond_z, i);
+        const Int4 snaps = bonded & (slip_x * slip_x + slip_z * slip_z > load(S.shear_limit2, i));
+        const Int4 holds = bonded & ~snaps;
+        if (simd::AnyTrue(snaps)) {
+          for (int q = 0; q < 4; ++q) {
+            if (!snaps[q]) continue;
+            S.bonded[i + q] = 0;
+            ++*snapped;
+          }
+        }
+        const Float4 sx = simd::Select(holds, vks0 * slip_x + vcs0 * (swx - awx), zero);
+        const Float4 sz = simd::Select(holds, vks0 * slip_z + vcs0 * (swz - awz), zero);
+        const Float4 px = vks1 * ((aux - bux) - load(M1.bond_x, i)) + vcs1 * (awx - bwx);
+        const Float4 pz = vks1 * ((auz - buz) - load(M1.bond_z, i)) + vcs1 * (awz - bwz);
+        const Float4 qx = vks1 * bux + vcs1 * bwx;
+        const Float4 qz = vks1 * buz + vcs1 * bwz;
+        const Float4 nwx = swx + vdt * ((fsx - sx) * vinv);
+        const Float4 nwz = swz + vdt * ((fsz - sz) * vinv);
+        store(&S.s.wx, i, simd::Select(present, nwx, swx));
+        store(&S.s.wz, i, simd::Select(present, nwz, swz));
+        store(&S.s.ux, i, simd::Select(present, sux + vdt * nwx, sux));
+        store(&S.s.uz, i, simd::Select(present, suz + vdt * nwz, suz));
+        awx += vdt * ((f1x + sx - px) * vinv);
+        awz += vdt * ((f1z + sz - pz) * vinv);
+        aux += vdt * awx;
+        auz += vdt * awz;
+        bwx += vdt * ((f2x + px - qx) * vinv2);
+        bwz += vdt * ((f2z + pz - qz) * vinv2);
+        bux += vdt * bwx;
+        buz += vdt * bwz;
+        store(&M1.s.wx, i, awx);
+        store(&M1.s.wz, i, awz);
+        store(&M1.s.ux, i, aux);
+        store(&M1.s.uz, i, auz);
+        store(&M2.s.wx, i, bwx);
+        store(&M2.s.wz, i, bwz);
+        store(&M2.s.ux, i, bux);
+        store(&M2.s.uz, i, buz);
+        i += 4;
+        continue;
+      }
+      float fsx, fsz, f1x, f1z, f2x, f2z;
+      NodeForce(L, S.s, i, &fsx, &fsz);
+      NodeForce(L, M1.s, i, &f1x, &f1z);
+      NodeForce(L, M2.s, i, &f2x, &f2z);
+      // S → M1, breaking past the node's shear limit (checked on the positions the step starts
+      // from, as the springs are).
+      float sx = 0.0f, sz = 0.0f;
+      if (S.bonded[i]) {
+        const float slip_x = (S.s.ux[i] - M1.s.ux[i]) - S.bond_x[i];
+        const float slip_z = (S.s.uz[i] - M1.s.uz[i]) - S.bond_z[i];
+        if (slip_x * slip_x + slip_z * slip_z > S.shear_limit2[i]) {
+          S.bonded[i] = 0;
+          ++*snapped;
+        } else {
+          sx = ks0 * slip_x + cs0 * (S.s.wx[i] - M1.s.wx[i]);
+          sz = ks0 * slip_z + cs0 * (S.s.wz[i] - M1.s.wz[i]);
         }
       }
-      const Float4 sx = simd::Select(holds, vks0 * slip_x + vcs0 * (swx - awx), zero);
-      const Float4 sz = simd::Select(holds, vks0 * slip_z + vcs0 * (swz - awz), zero);
-      const Float4 px = vks1 * ((aux - bux) - load(M1.bond_x, i)) + vcs1 * (awx - bwx);
-      const Float4 pz = vks1 * ((auz - buz) - load(M1.bond_z, i)) + vcs1 * (awz - bwz);
-      const Float4 qx = vks1 * bux + vcs1 * bwx;
-      const Float4 qz = vks1 * buz + vcs1 * bwz;
-      const Float4 nwx = swx + vdt * ((fsx - sx) * vinv);
-      const Float4 nwz = swz + vdt * ((fsz - sz) * vinv);
-      store(&S.s.wx, i, simd::Select(present, nwx, swx));
-      store(&S.s.wz, i, simd::Select(present, nwz, swz));
-      store(&S.s.ux, i, simd::Select(present, sux + vdt * nwx, sux));
-      store(&S.s.uz, i, simd::Select(present, suz + vdt * nwz, suz));
-      awx += vdt * ((f1x + sx - px) * vinv);
-      awz += vdt * ((f1z + sz - pz) * vinv);
-      aux += vdt * awx;
-      auz += vdt * awz;
-      bwx += vdt * ((f2x + px - qx) * vinv2);
-      bwz += vdt * ((f2z + pz - qz) * vinv2);
-      bux += vdt * bwx;
-      buz += vdt * bwz;
-      store(&M1.s.wx, i, awx);
-      store(&M1.s.wz, i, awz);
-      store(&M1.s.ux, i, aux);
-      store(&M1.s.uz, i, auz);
-      store(&M2.s.wx, i, bwx);
-      store(&M2.s.wz, i, bwz);
-      store(&M2.s.ux, i, bux);
-      store(&M2.s.uz, i, buz);
-      i += 4;
-      continue;
-    }
-    float fsx, fsz, f1x, f1z, f2x, f2z;
-    NodeForce(L, S.s, i, &fsx, &fsz);
-    NodeForce(L, M1.s, i, &f1x, &f1z);
-    NodeForce(L, M2.s, i, &f2x, &f2z);
-    // S → M1, breaking past the node's shear limit (checked on the positions the step starts
-    // from, as the springs are).
-    float sx = 0.0f, sz = 0.0f;
-    if (S.bonded[i]) {
-      const float slip_x = (S.s.ux[i] - M1.s.ux[i]) - S.bond_x[i];
-      const float slip_z = (S.s.uz[i] - M1.s.uz[i]) - S.bond_z[i];
-      if (slip_x * slip_x + slip_z * slip_z > S.shear_limit2[i]) {
-        S.bonded[i] = 0;
-        ++f->bonds_broken;
-      } else {
-        sx = ks0 * slip_x + cs0 * (S.s.wx[i] - M1.s.wx[i]);
-        sz = ks0 * slip_z + cs0 * (S.s.wz[i] - M1.s.wz[i]);
+      // M1 → M2 (never breaks).
+      const float px =
+          ks1 * ((M1.s.ux[i] - M2.s.ux[i]) - M1.bond_x[i]) + cs1 * (M1.s.wx[i] - M2.s.wx[i]);
+      const float pz =
+          ks1 * ((M1.s.uz[i] - M2.s.uz[i]) - M1.bond_z[i]) + cs1 * (M1.s.wz[i] - M2.s.wz[i]);
+      // M2 → I (the anchor; never breaks).
+      const float qx = ks1 * M2.s.ux[i] + cs1 * M2.s.wx[i];
+      const float qz = ks1 * M2.s.uz[i] + cs1 * M2.s.wz[i];
+      if (S.present[i]) {
+        S.s.wx[i] += dt * ((fsx - sx) * inv_m);
+        S.s.wz[i] += dt * ((fsz - sz) * inv_m);
+        S.s.ux[i] += dt * S.s.wx[i];
+        S.s.uz[i] += dt * S.s.wz[i];
       }
+      M1.s.wx[i] += dt * ((f1x + sx - px) * inv_m);
+      M1.s.wz[i] += dt * ((f1z + sz - pz) * inv_m);
+      M1.s.ux[i] += dt * M1.s.wx[i];
+      M1.s.uz[i] += dt * M1.s.wz[i];
+      M2.s.wx[i] += dt * ((f2x + px - qx) * inv_m2);
+      M2.s.wz[i] += dt * ((f2z + pz - qz) * inv_m2);
+      M2.s.ux[i] += dt * M2.s.wx[i];
+      M2.s.uz[i] += dt * M2.s.wz[i];
+      ++i;
     }
-    // M1 → M2 (never breaks).
-    const float px =
-        ks1 * ((M1.s.ux[i] - M2.s.ux[i]) - M1.bond_x[i]) + cs1 * (M1.s.wx[i] - M2.s.wx[i]);
-    const float pz =
-        ks1 * ((M1.s.uz[i] - M2.s.uz[i]) - M1.bond_z[i]) + cs1 * (M1.s.wz[i] - M2.s.wz[i]);
-    // M2 → I (the anchor; never breaks).
-    const float qx = ks1 * M2.s.ux[i] + cs1 * M2.s.wx[i];
-    const float qz = ks1 * M2.s.uz[i] + cs1 * M2.s.wz[i];
-    if (S.present[i]) {
-      S.s.wx[i] += dt * ((fsx - sx) * inv_m);
-      S.s.wz[i] += dt * ((fsz - sz) * inv_m);
-      S.s.ux[i] += dt * S.s.wx[i];
-      S.s.uz[i] += dt * S.s.wz[i];
-    }
-    M1.s.wx[i] += dt * ((f1x + sx - px) * inv_m);
-    M1.s.wz[i] += dt * ((f1z + sz - pz) * inv_m);
-    M1.s.ux[i] += dt * M1.s.wx[i];
-    M1.s.uz[i] += dt * M1.s.wz[i];
-    M2.s.wx[i] += dt * ((f2x + px - qx) * inv_m2);
-    M2.s.wz[i] += dt * ((f2z + pz - qz) * inv_m2);
-    M2.s.ux[i] += dt * M2.s.wx[i];
-    M2.s.uz[i] += dt * M2.s.wz[i];
-    ++i;
+  };
+  int snapped[2] = {0, 0};
+  if (lanes) {
+    lanes->Run([&](int lane) { node_pass(lane ? mid : 0, lane ? n : mid, &snapped[lane]); });
+  } else {
+    node_pass(0, n, &snapped[0]);
   }
+  f->bonds_broken += snapped[0] + snapped[1];
   ++f->step;
   if (f->step % kPeelCheckSteps == 0) CheckPeeling(L, f);
   return f->step <= f->growth_steps && f->step % m.steps_per_cycle == 0;

@@ -24,6 +24,7 @@
 #include "bark/bark_params.h"
 #include "bark/lattice.h"
 #include "bark/springs.h"
+#include "bark/step_lanes.h"
 
 namespace niwa::bark {
 
@@ -93,8 +94,9 @@ LayerGrowth LayerGrowthAt(const FourLayer& f);
 
 // One step of all three layers; every kPeelCheckSteps steps the drying and the area rule (after
 // the step). True when the step ended a growth cycle: the caller then exchanges the roles if
-// another cycle follows (step < growth_steps).
-bool StepFourLayer(const Lattice& lattice, FourLayer* f);
+// another cycle follows (step < growth_steps). With lanes, the spring pass and the node pass are
+// each split in two halves of the nodes, one a lane (step_lanes.h): the same bits as without.
+bool StepFourLayer(const Lattice& lattice, FourLayer* f, StepLanes* lanes = nullptr);
 
 // Role exchange now: S shed (counted), M1 → S, M2 → M1, a new M2 born at r_I from cycle
 // f->cycle + 1's stream.

@@ -48,13 +48,15 @@ constexpr float kTinyLength2 = 1e-12f;  // a floor under l² (two nodes on one p
 // lane; a tail of fewer than four one by one with the same operations, so the bits do not depend
 // on the batching. The forces go to the slots (gx, gz); a node pass sums them (NodeForce,
 // NodeForce4). A batch of four broken springs only writes its zero forces. The reference vector of
-// a sub-family is one (lattice.h: axial (0, L_o), diagonals (pitch, ±L_o/2)).
+// a sub-family is one (lattice.h: axial (0, L_o), diagonals (pitch, ±L_o/2)). Only the springs of
+// nodes [begin, end) (begin a multiple of four): each spring's arithmetic is its own, so a pass
+// split into ranges gives the bits of the whole.
 int SubFamilyPass(const Lattice& L, int sub, float k, float c, float l0, const Growth& g,
-                  Surface* s) {
+                  Surface* s, int begin, int end) {
   using simd::Float4;
   using simd::Int4;
-  const int n_nodes = L.nodes();
-  const int base = sub * n_nodes;
+  const int n_nodes = end;
+  const int base = sub * L.nodes();
   const int first = sub == 0 ? 0 : L.axial_count + (sub - 1), stride = sub == 0 ? 1 : 2;
   const float ox = L.ox[first], oz = L.oz[first];
   const int32_t* B = L.slot_b.data() + base;
@@ -86,7 +88,7 @@ int SubFamilyPass(const Lattice& L, int sub, float k, float c, float l0, const G
     std::memcpy(&v, p, sizeof v);
     return v;
   };
-  int n = 0;
+  int n = begin;
   for (; n + 4 <= n_nodes; n += 4) {
     const Float4 alive = load(on + n);
     if (!simd::AnyTrue(alive != zero)) {
@@ -260,12 +262,19 @@ int SpringSlotForces(const Lattice& L, const float k[2], const float c[2], const
     s->gx.assign(slots, 0.0f);
     s->gz.assign(slots, 0.0f);
   }
-  const int axial = SubFamilyPass(L, 0, k[0], c[0], rest[0], g, s);
-  s->broken_count[0] += axial;
-  const int diag = SubFamilyPass(L, 1, k[1], c[1], rest[1], g, s) +
-                   SubFamilyPass(L, 2, k[1], c[1], rest[1], g, s);
-  s->broken_count[1] += diag;
-  return axial + diag;
+  int broke[2] = {0, 0};
+  SpringSlotForcesRange(L, k, c, rest, g, s, 0, L.nodes(), broke);
+  s->broken_count[0] += broke[0];
+  s->broken_count[1] += broke[1];
+  return broke[0] + broke[1];
+}
+
+void SpringSlotForcesRange(const Lattice& L, const float k[2], const float c[2],
+                           const float rest[2], const Growth& g, Surface* s, int begin, int end,
+                           int broke[2]) {
+  broke[0] += SubFamilyPass(L, 0, k[0], c[0], rest[0], g, s, begin, end);
+  broke[1] += SubFamilyPass(L, 1, k[1], c[1], rest[1], g, s, begin, end) +
+              SubFamilyPass(L, 2, k[1], c[1], rest[1], g, s, begin, end);
 }
 
 int SpringForces(const Lattice& L, const float k[2], const float c[2], const float rest[2],

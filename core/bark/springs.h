@@ -102,6 +102,12 @@ int SpringForces(const Lattice& lattice, const float k[2], const float c[2], con
 // accumulators did, so the bits are theirs.
 int SpringSlotForces(const Lattice& lattice, const float k[2], const float c[2],
                      const float rest[2], const Growth& growth, Surface* surface);
+// SpringSlotForces of the springs of nodes [begin, end) alone (begin a multiple of four; gx, gz
+// sized): the same bits spring by spring, the breaks added to broke[family] (not broken_count), so
+// two lanes (step_lanes.h) can each take a range.
+void SpringSlotForcesRange(const Lattice& lattice, const float k[2], const float c[2],
+                           const float rest[2], const Growth& growth, Surface* surface, int begin,
+                           int end, int broke[2]);
 inline void NodeForce(const Lattice& L, const Surface& s, int n, float* fx, float* fz) {
   float x = 0.0f, z = 0.0f;
   const std::size_t e0 = 6 * static_cast<std::size_t>(n);

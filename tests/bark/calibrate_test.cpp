@@ -1,5 +1,6 @@
 // The bark calibration (core/bark/calibrate.h): the --vary form and its refusals naming "vary", the
-// grid's order and values, the scores recomputed from the measures against Table 3, the best
+// grid's order and values, the scores recomputed from the measures (the crack spacing along scan
+// lines, the numbers `niwa bark table3` prints) against Table 3, the best
 // candidate the lowest score, the same bytes twice, the estimate refused before any run, and the
 // 4-layer search's peel share (less peeling at a larger κ_h, spec §4.6).
 #include "bark/calibrate.h"
@@ -88,6 +89,7 @@ TEST(Calibrate, TwoLayerScoresAgainstTable3AndPicksTheLowest) {
     const double d_xh = std::fabs(m["max_h"].get<double>() / paper->max_h - 1) / 0.4;
     EXPECT_NEAR(c["score"].get<double>(), std::max({d_mw, d_mh, d_xw, d_xh}), 1e-12);
     EXPECT_GT(m["mean_w"].get<double>(), 0);
+    EXPECT_GT(m["plates"]["mean_w"].get<double>(), 0);  // printed beside, not scored
     lowest = std::min(lowest, c["score"].get<double>());
   }
   EXPECT_EQ(j["best"]["score"].get<double>(), lowest);
@@ -96,6 +98,40 @@ TEST(Calibrate, TwoLayerScoresAgainstTable3AndPicksTheLowest) {
             j["best"]["deviations"]["means"].get<double>());
   // The same request, the same bytes.
   EXPECT_EQ(*CalibrateJson(r, Budget{}), *text);
+}
+
+// The score reads the measure Table 3 is printed with: the crack spacing along scan lines, the same
+// numbers (the seeds' means) `niwa bark table3` gives for the same state and seeds, and camphor's
+// "(>20)" met exactly when table3's level_b_spacing says so.
+TEST(Calibrate, TwoLayerMeasuresAreTable3sSpacing) {
+  for (const char* species : {"camphor", "pine"}) {
+    CalibrateRequest r = Small(species, "2layer");
+    ASSERT_TRUE(SetBarkSize("32x32", &r.base).ok());
+    r.first_seed = 1;
+    r.last_seed = 2;
+    r.vary = {{"dH", 0.02, 0.02, 1}};
+    Result<std::string> text = CalibrateJson(r, Budget{});
+    ASSERT_TRUE(text.ok()) << text.status().Line();
+    const nlohmann::json c = nlohmann::json::parse(*text)["candidates"][0];
+    BarkState state = r.base;
+    ASSERT_TRUE(state.params.Set(BarkParam::kDeltaH, 0.02).ok());
+    ASSERT_TRUE(state.params.Set(BarkParam::kMapSize, 256).ok());
+    Result<std::string> table = Table3Json({state}, 1, 2, Budget{});
+    ASSERT_TRUE(table.ok()) << table.status().Line();
+    const nlohmann::json row = nlohmann::json::parse(*table)["rows"][0];
+    const auto& ours = row["ours"];
+    const auto& m = c["measures"];
+    EXPECT_NEAR(m["mean_w"].get<double>(), ours["spacing_mean_w"]["mean"].get<double>(), 1e-12);
+    EXPECT_NEAR(m["mean_h"].get<double>(), ours["spacing_mean_h"]["mean"].get<double>(), 1e-12);
+    EXPECT_NEAR(m["max_w"].get<double>(), ours["spacing_max_w"]["mean"].get<double>(), 1e-12);
+    EXPECT_NEAR(m["max_h"].get<double>(), ours["spacing_max_h"]["mean"].get<double>(), 1e-12);
+    EXPECT_EQ(m["open_lines_h"].get<int>(), ours["spacing_open_lines_h"].get<int>());
+    const auto& b = row["level_b_spacing"];
+    EXPECT_EQ(c["score"].get<double>() <= 1.0, b["met"].get<bool>()) << *text << *table;
+    if (std::string(species) == "camphor") {
+      EXPECT_EQ(c["deviations"]["max_h"].get<double>() == 0.0, b["max_h"]["met"].get<bool>());
+    }
+  }
 }
 
 TEST(Calibrate, TheEstimateIsRefusedBeforeAnyRun) {

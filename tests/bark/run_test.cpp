@@ -130,5 +130,43 @@ TEST(BarkRun, AMapSizeUpdateOnlyRedraws) {
   EXPECT_EQ(run->steps(), 0);  // regrows at the next Advance
 }
 
+// The estimate follows the measured cost (kBarkSecondsPerSpringStep): the documented workloads at
+// their defaults fit the default 60 s (the CLI's --max-seconds, the page's budget): one run of
+// each species, Table 3's 15 runs (128 × 64, seeds 1-5: niwa bark table3 sums them), the 4-layer
+// pine 128 × 64 over 8 cycles (spec E5, Fig. 8) and over 10 (the speed workload) with
+// 1024 px maps; over-budget runs are still refused: 20 cycles, or 10 on a 256 × 128 lattice.
+TEST(BarkRun, TheDocumentedWorkloadsFitTheDefaultBudget) {
+  const Budget budget;
+  double table3 = 0;
+  for (const char* species : {"camphor", "tallow", "pine"}) {
+    BarkState s;
+    ASSERT_TRUE(SetBarkSpecies(species, &s).ok());
+    const Estimate one = EstimateBarkRun(s);
+    EXPECT_LE(one.seconds, budget.seconds) << species;
+    EXPECT_TRUE(CheckEstimate(one, budget, "").ok()) << species;
+    table3 += 5 * one.seconds;
+  }
+  EXPECT_LE(table3, budget.seconds);
+  BarkState four;
+  ASSERT_TRUE(SetBarkSpecies("pine", &four).ok());
+  ASSERT_TRUE(SetBarkModel("4layer", &four).ok());
+  for (int cycles : {8, 10}) {
+    ASSERT_TRUE(four.params.Set(BarkParam::kCycles, cycles).ok());
+    EXPECT_TRUE(BarkRun::Start(four, budget).ok()) << cycles << " cycles";
+  }
+  // Its spring-steps priced at the measured cost: 3 layers × 4 springs a node × 128 × 64 nodes ×
+  // (10 cycles of steps + the settling).
+  const double steps =
+      10.0 * FourLayerMechanicsOf(four.params, BuildLattice(128, 64, 0.33)).steps_per_cycle +
+      four.params.GetInt(BarkParam::kSettleSteps);
+  EXPECT_NEAR(EstimateBarkRun(four).seconds,
+              12.0 * 128 * 64 * steps * kBarkSecondsPerSpringStep + 2 * 1024 * 4096 * 2e-7, 1e-6);
+  ASSERT_TRUE(four.params.Set(BarkParam::kCycles, 20).ok());
+  EXPECT_EQ(BarkRun::Start(four, budget).status().field(), "max_seconds");
+  ASSERT_TRUE(four.params.Set(BarkParam::kCycles, 10).ok());
+  ASSERT_TRUE(SetBarkSize("256x128", &four).ok());
+  EXPECT_EQ(BarkRun::Start(four, budget).status().field(), "max_seconds");
+}
+
 }  // namespace
 }  // namespace niwa::bark

@@ -205,6 +205,7 @@ for (const [args, flag] of [
   [['--set', 'kappa1=2'], '--set'],
   [['--size', '2048x512', '--max-memory', '128M'], '--max-memory'],
   [['--url', 'species=pine&N_R=64&N_R=64'], '--url'],
+  [['--threads', '3'], '--threads'],
 ]) {
   for (const cmd of [native, wasm]) {
     const dir = mkdtempSync(join(work, 'bad-'));
