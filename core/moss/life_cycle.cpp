@@ -116,6 +116,12 @@ double GerminationScore(double G, double L, SeedKind kind, const LifeRules& rule
   return G * RangeScore(L, L_0, L_1);
 }
 
+double SeedWindowScore(double L, SeedKind kind, const LifeRules& rules) {
+  const double L_0 = kind == SeedKind::kSpore ? rules.L_spore_0 : rules.L_gemma_0;
+  const double L_1 = kind == SeedKind::kSpore ? rules.L_spore_1 : rules.L_gemma_1;
+  return RangeScore(L, L_0, L_1);  // g of eq 3.24 (GerminationScore's factor)
+}
+
 SeedFate SeedDay(double G, double L, SeedKind kind, double tau_b, bool at_cap,
                  const LifeRules& rules) {
   if (GerminationScore(G, L, kind, rules) > tau_b) {  // moss eq. 3.24
@@ -143,13 +149,24 @@ MossRest RestOnMoss(const glm::dvec3& seed, const std::vector<glm::dvec3>& centr
       rest.moss = i;
     }
   }
+  if (!rest.touches) {
+    rest.position = seed;
+    return rest;
+  }
+  return RestedOn(seed, centres, rest.moss, best2, rules);
+}
+
+MossRest RestedOn(const glm::dvec3& seed, const std::vector<glm::dvec3>& centres, uint32_t moss,
+                  double d2, const LifeRules& rules) {
+  MossRest rest;
+  rest.touches = true;
+  rest.moss = moss;
   rest.position = seed;
-  if (!rest.touches) return rest;
   const double o = rules.overlap * rules.s;
   // §3.6 (spec §1.5.6): a seed touching a moss rests on it, s from its centre.
-  if (best2 > 0.0 && !(best2 < o * o)) {
-    const glm::dvec3& c = centres[rest.moss];
-    rest.position = c + (seed - c) * (rules.s / std::sqrt(best2));
+  if (d2 > 0.0 && !(d2 < o * o)) {
+    const glm::dvec3& c = centres[moss];
+    rest.position = c + (seed - c) * (rules.s / std::sqrt(d2));
   }
   return rest;
 }

@@ -89,6 +89,10 @@ enum class SeedFate : int {
 // would germinate waits (spec §1.5.8).
 SeedFate SeedDay(double G, double L, SeedKind kind, double tau_b, bool at_cap,
                  const LifeRules& rules);
+// g(L, L_0, L_1, 1) of eq 3.24 alone: the window's score of a seed of age L. When it is at most τ_b
+// no G in [0, 1] (FitnessOf's range) can make G·g exceed τ_b (G·g ≤ g, rounding kept), so SeedDay
+// gives the fate of G = 0 for every G: the run then skips the seed's gather and fitness.
+double SeedWindowScore(double L, SeedKind kind, const LifeRules& rules);
 
 // ---- seeds among mosses (§3.3, §3.6; spec §1.5.6-1.5.7)
 
@@ -109,6 +113,11 @@ struct MossRest {
 // already is: Occupants and WinsPlace decide); a seed exactly at the centre stays too.
 MossRest RestOnMoss(const glm::dvec3& seed, const std::vector<glm::dvec3>& centres,
                     const LifeRules& rules);
+
+// RestOnMoss's last step, given its nearest centre `moss` at squared distance d2 (for a caller that
+// found it through buckets with the same distances and tie rule): touches, and the position.
+MossRest RestedOn(const glm::dvec3& seed, const std::vector<glm::dvec3>& centres, uint32_t moss,
+                  double d2, const LifeRules& rules);
 
 // A seed falling along −y from `seed` onto moss spheres: the first centre c it meets is the one
 // with horizontal distance d ≤ s whose contact height c.y + √(s² − d²) is highest and not above
