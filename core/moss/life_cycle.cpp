@@ -195,6 +195,53 @@ MossRest FallOntoMosses(const glm::dvec3& seed, const std::vector<glm::dvec3>& c
   return rest;
 }
 
+namespace {
+std::vector<glm::dvec3> Flat(const std::vector<glm::dvec3>& points) {
+  std::vector<glm::dvec3> flat;
+  flat.reserve(points.size());
+  for (const glm::dvec3& p : points) flat.emplace_back(p.x, 0.0, p.z);
+  return flat;
+}
+}  // namespace
+
+MatBuckets::MatBuckets(const std::vector<glm::dvec3>& centres, const LifeRules& rules,
+                       std::size_t max_buckets)
+    : centres_(&centres),
+      near_(centres, ContactDistance(rules), max_buckets),
+      below_(Flat(centres), rules.s, max_buckets) {}
+
+MossRest MatBuckets::Rest(const glm::dvec3& seed, const LifeRules& rules) const {
+  // RestOnMoss: the least d² within ContactDistance (the grid's r² is its contact²), ties to the
+  // lower index.
+  bool touches = false;
+  uint32_t best = 0;
+  double best2 = 0;
+  near_.ForEachWithin(seed, [&](uint32_t i, double d2) {
+    if (!touches || d2 < best2 || (d2 == best2 && i < best)) touches = true, best = i, best2 = d2;
+  });
+  if (!touches) {
+    MossRest rest;
+    rest.position = seed;
+    return rest;
+  }
+  return RestedOn(seed, *centres_, best, best2, rules);
+}
+
+MossRest MatBuckets::Fall(const glm::dvec3& seed, const LifeRules& rules) const {
+  // FallOntoMosses: h² <= s², the highest contact not above the seed, ties to the lower index.
+  MossRest rest;
+  const double s2 = rules.s * rules.s;
+  double best_y = 0;
+  below_.ForEachWithin(glm::dvec3(seed.x, 0.0, seed.z), [&](uint32_t i, double h2) {
+    const double y = (*centres_)[i].y + std::sqrt(s2 - h2);
+    if (y > seed.y) return;
+    if (!rest.touches || y > best_y || (y == best_y && i < rest.moss))
+      rest.touches = true, rest.moss = i, best_y = y;
+  });
+  rest.position = rest.touches ? glm::dvec3(seed.x, best_y, seed.z) : seed;
+  return rest;
+}
+
 double PlacePriority(const SpeciesRanges& species, double G_moss) {
   return species.alpha_g * (1.0 + std::max(G_moss, 0.0));  // spec §4.22
 }

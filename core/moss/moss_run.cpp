@@ -214,57 +214,8 @@ void MossRun::PlaceAtRandom(Species species, bool as_seed) {
   w.mosses.push_back(moss);
 }
 
-// The mosses a seed may rest on (those inside a mat) in buckets: RestOnMoss's nearest within the
-// contact distance and FallOntoMosses's highest within s across, by the very distances (a
-// bucket's ((dx² + dy²) + dz²) of the centre minus the seed is LifeCycleDistance2's bits; with
-// every y at 0 it is the fall's dx² + dz²) and tie rules (the lower index), visiting the mosses
-// near the seed instead of all of them (the two passes were 4.5 % of the thesis run).
-struct MossRun::MatIndex {
-  MatIndex(const std::vector<glm::dvec3>& mat_centres, const LifeRules& rules)
-      : centres(&mat_centres),
-        near(mat_centres, ContactDistance(rules), MossGridBuckets(mat_centres.size())),
-        below(Flat(mat_centres), rules.s, MossGridBuckets(mat_centres.size())) {}
-  static std::vector<glm::dvec3> Flat(const std::vector<glm::dvec3>& points) {
-    std::vector<glm::dvec3> flat;
-    flat.reserve(points.size());
-    for (const glm::dvec3& p : points) flat.emplace_back(p.x, 0.0, p.z);
-    return flat;
-  }
-  // RestOnMoss(seed, *centres, rules).
-  MossRest Rest(const glm::dvec3& seed, const LifeRules& rules) const {
-    bool touches = false;
-    uint32_t best = 0;
-    double best2 = 0;
-    near.ForEachWithin(seed, [&](uint32_t i, double d2) {
-      if (!touches || d2 < best2 || (d2 == best2 && i < best)) touches = true, best = i, best2 = d2;
-    });
-    if (!touches) {
-      MossRest rest;
-      rest.position = seed;
-      return rest;
-    }
-    return RestedOn(seed, *centres, best, best2, rules);
-  }
-  // FallOntoMosses(seed, *centres, rules).
-  MossRest Fall(const glm::dvec3& seed, const LifeRules& rules) const {
-    MossRest rest;
-    const double s2 = rules.s * rules.s;
-    double best_y = 0;
-    below.ForEachWithin(glm::dvec3(seed.x, 0.0, seed.z), [&](uint32_t i, double h2) {
-      const double y = (*centres)[i].y + std::sqrt(s2 - h2);  // FallOntoMosses's contact height
-      if (y > seed.y) return;
-      if (!rest.touches || y > best_y || (y == best_y && i < rest.moss))
-        rest.touches = true, rest.moss = i, best_y = y;
-    });
-    rest.position = rest.touches ? glm::dvec3(seed.x, best_y, seed.z) : seed;
-    return rest;
-  }
-  const std::vector<glm::dvec3>* centres;
-  geom::RadiusGrid near, below;
-};
-
 bool MossRun::Land(const glm::dvec3& start, const std::vector<glm::dvec3>& centres,
-                   const std::vector<uint32_t>& owner, const MatIndex* mats, MossSeed* seed,
+                   const std::vector<uint32_t>& owner, const MatBuckets* mats, MossSeed* seed,
                    SeedLoss* loss) const {
   const double s = rules_.s;
   // On the front side of a face, or behind it (inside a solid)?
@@ -334,7 +285,7 @@ bool MossRun::LandSeed(const glm::dvec3& start, MossSeed* seed, SeedLoss* loss) 
 
 void MossRun::AddSeed(const glm::dvec3& start, Species species, SeedKind kind,
                       const std::vector<glm::dvec3>& centres, const std::vector<uint32_t>& owner,
-                      const MatIndex* mats) {
+                      const MatBuckets* mats) {
   MossWorld& w = world_;
   ++w.seeds_made[static_cast<int>(kind)];
   MossSeed seed;
@@ -590,7 +541,7 @@ void MossRun::Day() {
       dense_owner.push_back(static_cast<uint32_t>(j));
     }
   }
-  const MatIndex mats(dense_centres, rules_);
+  const MatBuckets mats(dense_centres, rules_, MossGridBuckets(dense_centres.size()));
   for (std::size_t j = 0; j < parents; ++j) {
     if (!was_old[j]) continue;
     const MossPlant parent = w.mosses[j];

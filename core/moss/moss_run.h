@@ -184,15 +184,14 @@ class MossRun : public run::StudyRun {
   void Day();  // one day, world_.day + 1
   // Where a seed starting at `start` comes to rest (spec §1.5.6); false with the loss otherwise.
   // `centres` are the mosses a seed may rest on (those inside a mat), owner[k] their index.
-  // `mats`, when given, holds those centres in buckets (moss_run.cpp): the same answers as the
-  // pass over all of them.
-  struct MatIndex;
+  // `mats`, when given, holds those centres in buckets (life_cycle.h MatBuckets): the same
+  // answers as the passes over all of them.
   bool Land(const glm::dvec3& start, const std::vector<glm::dvec3>& centres,
-            const std::vector<uint32_t>& owner, const MatIndex* mats, MossSeed* seed,
+            const std::vector<uint32_t>& owner, const MatBuckets* mats, MossSeed* seed,
             SeedLoss* loss) const;
   void AddSeed(const glm::dvec3& start, Species species, SeedKind kind,
                const std::vector<glm::dvec3>& centres, const std::vector<uint32_t>& owner,
-               const MatIndex* mats);
+               const MatBuckets* mats);
   void PlaceAtRandom(Species species, bool as_seed);
   Result<Estimate> ExportEstimateAt(const std::string& format, double mosses) const;
 

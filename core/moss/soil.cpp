@@ -105,8 +105,8 @@ SoilTerms SoilEnergyBalance(const SoilConstants& k, const Weather& w, const Soil
                             const SoilCell& cell) {
   SoilTerms t;
   const double T = w.T;
-  t.A = day.A;             // §3.5.1 (SoilWeatherTermsOf)
-  t.C = day.C;             // moss eq. 3.2
+  t.A = day.A;  // §3.5.1 (SoilWeatherTermsOf)
+  t.C = day.C;  // moss eq. 3.2
   t.sigma_T4 = day.sigma_T4;
   // moss eq. 3.3: longwave from the sky. The sky-view mode (spec §3.1, docs/moss-model.md) sees the
   // sky over the fraction V_sky of the cell's hemisphere and surfaces at air temperature elsewhere.

@@ -216,9 +216,9 @@ TEST(MossSoil, TheBucketsDayFollowsEq36) {
 }
 
 // The run's kept balance (SoilMemo) against AdvanceSoilDay day by day: the same bucket, T_s, rh_s
-// and θ bits, over days that repeat yesterday's inputs (kept), change S, m/M or the rain (worked out
-// again), and a weather change (the caller resets the memo). A memo that answered for other inputs
-// would give yesterday's T_s on the day S changes.
+// and θ bits, over days that repeat yesterday's inputs (kept), change S, m/M or the rain (worked
+// out again), and a weather change (the caller resets the memo). A memo that answered for other
+// inputs would give yesterday's T_s on the day S changes.
 TEST(MossSoil, KeptBalanceIsTheDaysBalanceBitForBit) {
   MossParams params;
   const SoilConstants k = SoilConstantsOf(params);
@@ -242,8 +242,8 @@ TEST(MossSoil, KeptBalanceIsTheDaysBalanceBitForBit) {
       if (d == 40) memo = SoilMemo{};
       const SoilMemo before = memo;
       const SoilDay a = AdvanceSoilDay(k, day_w, law, S, mM, 1, &plain);
-      const SoilCellDay b = AdvanceSoilDayKept(k, day_w, hot ? warm_terms : terms, law, S, mM, 1,
-                                               &kept, &memo);
+      const SoilCellDay b =
+          AdvanceSoilDayKept(k, day_w, hot ? warm_terms : terms, law, S, mM, 1, &kept, &memo);
       reworked += before.S != memo.S || before.theta != memo.theta ||
                   before.m_over_M != memo.m_over_M || before.E != memo.E;
       ASSERT_EQ(kept.O, plain.O) << "day " << d;
