@@ -116,6 +116,12 @@ double GerminationScore(double G, double L, SeedKind kind, const LifeRules& rule
   return G * RangeScore(L, L_0, L_1);
 }
 
+double SeedWindowScore(double L, SeedKind kind, const LifeRules& rules) {
+  const double L_0 = kind == SeedKind::kSpore ? rules.L_spore_0 : rules.L_gemma_0;
+  const double L_1 = kind == SeedKind::kSpore ? rules.L_spore_1 : rules.L_gemma_1;
+  return RangeScore(L, L_0, L_1);  // g of eq 3.24 (GerminationScore's factor)
+}
+
 SeedFate SeedDay(double G, double L, SeedKind kind, double tau_b, bool at_cap,
                  const LifeRules& rules) {
   if (GerminationScore(G, L, kind, rules) > tau_b) {  // moss eq. 3.24
@@ -143,13 +149,24 @@ MossRest RestOnMoss(const glm::dvec3& seed, const std::vector<glm::dvec3>& centr
       rest.moss = i;
     }
   }
+  if (!rest.touches) {
+    rest.position = seed;
+    return rest;
+  }
+  return RestedOn(seed, centres, rest.moss, best2, rules);
+}
+
+MossRest RestedOn(const glm::dvec3& seed, const std::vector<glm::dvec3>& centres, uint32_t moss,
+                  double d2, const LifeRules& rules) {
+  MossRest rest;
+  rest.touches = true;
+  rest.moss = moss;
   rest.position = seed;
-  if (!rest.touches) return rest;
   const double o = rules.overlap * rules.s;
   // §3.6 (spec §1.5.6): a seed touching a moss rests on it, s from its centre.
-  if (best2 > 0.0 && !(best2 < o * o)) {
-    const glm::dvec3& c = centres[rest.moss];
-    rest.position = c + (seed - c) * (rules.s / std::sqrt(best2));
+  if (d2 > 0.0 && !(d2 < o * o)) {
+    const glm::dvec3& c = centres[moss];
+    rest.position = c + (seed - c) * (rules.s / std::sqrt(d2));
   }
   return rest;
 }
@@ -174,6 +191,53 @@ MossRest FallOntoMosses(const glm::dvec3& seed, const std::vector<glm::dvec3>& c
       best_y = y;
     }
   }
+  rest.position = rest.touches ? glm::dvec3(seed.x, best_y, seed.z) : seed;
+  return rest;
+}
+
+namespace {
+std::vector<glm::dvec3> Flat(const std::vector<glm::dvec3>& points) {
+  std::vector<glm::dvec3> flat;
+  flat.reserve(points.size());
+  for (const glm::dvec3& p : points) flat.emplace_back(p.x, 0.0, p.z);
+  return flat;
+}
+}  // namespace
+
+MatBuckets::MatBuckets(const std::vector<glm::dvec3>& centres, const LifeRules& rules,
+                       std::size_t max_buckets)
+    : centres_(&centres),
+      near_(centres, ContactDistance(rules), max_buckets),
+      below_(Flat(centres), rules.s, max_buckets) {}
+
+MossRest MatBuckets::Rest(const glm::dvec3& seed, const LifeRules& rules) const {
+  // RestOnMoss: the least d² within ContactDistance (the grid's r² is its contact²), ties to the
+  // lower index.
+  bool touches = false;
+  uint32_t best = 0;
+  double best2 = 0;
+  near_.ForEachWithin(seed, [&](uint32_t i, double d2) {
+    if (!touches || d2 < best2 || (d2 == best2 && i < best)) touches = true, best = i, best2 = d2;
+  });
+  if (!touches) {
+    MossRest rest;
+    rest.position = seed;
+    return rest;
+  }
+  return RestedOn(seed, *centres_, best, best2, rules);
+}
+
+MossRest MatBuckets::Fall(const glm::dvec3& seed, const LifeRules& rules) const {
+  // FallOntoMosses: h² <= s², the highest contact not above the seed, ties to the lower index.
+  MossRest rest;
+  const double s2 = rules.s * rules.s;
+  double best_y = 0;
+  below_.ForEachWithin(glm::dvec3(seed.x, 0.0, seed.z), [&](uint32_t i, double h2) {
+    const double y = (*centres_)[i].y + std::sqrt(s2 - h2);
+    if (y > seed.y) return;
+    if (!rest.touches || y > best_y || (y == best_y && i < rest.moss))
+      rest.touches = true, rest.moss = i, best_y = y;
+  });
   rest.position = rest.touches ? glm::dvec3(seed.x, best_y, seed.z) : seed;
   return rest;
 }

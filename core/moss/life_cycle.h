@@ -4,16 +4,18 @@
 // from the project's seeded Pcg32), when a seed germinates, waits or expires (eq 3.24), and the
 // rules between a seed and the moss centres near it: resting on a moss it touches, falling along
 // −y onto a moss, and the contest for an occupied place. Pure functions of a moss and its
-// neighbours' values, deterministic math only. Does not: find neighbours (geom::PointIndex), touch
-// a mesh (snapping to a face, falling onto a face, back faces, soil cells: the run decides those
-// with the mesh and compares heights with FallOntoMosses), keep the seed pool or the caps, or know
-// a day number.
+// neighbours' values, deterministic math only. Does not: find neighbours (geom::PointIndex;
+// MatBuckets only answers RestOnMoss and FallOntoMosses faster), touch a mesh (snapping to a face,
+// falling onto a face, back faces, soil cells: the run decides those with the mesh and compares
+// heights with FallOntoMosses), keep the seed pool or the caps, or know a day number.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <vector>
 
+#include "geom/radius_grid.h"
 #include "moss/moss.h"
 #include "moss/moss_params.h"
 #include "random/pcg32.h"
@@ -89,6 +91,10 @@ enum class SeedFate : int {
 // would germinate waits (spec §1.5.8).
 SeedFate SeedDay(double G, double L, SeedKind kind, double tau_b, bool at_cap,
                  const LifeRules& rules);
+// g(L, L_0, L_1, 1) of eq 3.24 alone: the window's score of a seed of age L. When it is at most τ_b
+// no G in [0, 1] (FitnessOf's range) can make G·g exceed τ_b (G·g ≤ g, rounding kept), so SeedDay
+// gives the fate of G = 0 for every G: the run then skips the seed's gather and fitness.
+double SeedWindowScore(double L, SeedKind kind, const LifeRules& rules);
 
 // ---- seeds among mosses (§3.3, §3.6; spec §1.5.6-1.5.7)
 
@@ -110,12 +116,36 @@ struct MossRest {
 MossRest RestOnMoss(const glm::dvec3& seed, const std::vector<glm::dvec3>& centres,
                     const LifeRules& rules);
 
+// RestOnMoss's last step, given its nearest centre `moss` at squared distance d2 (for a caller that
+// found it through buckets with the same distances and tie rule): touches, and the position.
+MossRest RestedOn(const glm::dvec3& seed, const std::vector<glm::dvec3>& centres, uint32_t moss,
+                  double d2, const LifeRules& rules);
+
 // A seed falling along −y from `seed` onto moss spheres: the first centre c it meets is the one
 // with horizontal distance d ≤ s whose contact height c.y + √(s² − d²) is highest and not above
 // seed.y (ties: the lower index); it rests there, s from c. `touches` false: no moss below (the run
 // then lets it fall to the mesh, or compares this height with the mesh's hit: the higher wins).
 MossRest FallOntoMosses(const glm::dvec3& seed, const std::vector<glm::dvec3>& centres,
                         const LifeRules& rules);
+
+// The centres a seed may rest on in buckets (geom::RadiusGrid), for many seeds a day: RestOnMoss's
+// nearest within ContactDistance and FallOntoMosses's highest within s across, by the very
+// distances (a bucket's ((dx² + dy²) + dz²) of the centre minus the seed is the same bits as the
+// seed minus the centre; with every y at 0 it is the fall's dx² + dz²) and the same tie rule (the
+// lower index), visiting the centres near the seed instead of all of them. `centres` must outlive
+// it; `max_buckets` as RadiusGrid's.
+class MatBuckets {
+ public:
+  MatBuckets(const std::vector<glm::dvec3>& centres, const LifeRules& rules,
+             std::size_t max_buckets);
+  MossRest Rest(const glm::dvec3& seed, const LifeRules& rules) const;  // RestOnMoss's answer
+  MossRest Fall(const glm::dvec3& seed, const LifeRules& rules) const;  // FallOntoMosses's answer
+
+ private:
+  const std::vector<glm::dvec3>* centres_;
+  geom::RadiusGrid near_;   // the centres, buckets of ContactDistance
+  geom::RadiusGrid below_;  // (x, 0, z) of the centres, buckets of s
+};
 
 // The priority of a moss in a contest for a place (spec §4.22: "by species and growth"):
 // α_g·(1 + max(G_moss, 0)); a seed has G_moss 0.

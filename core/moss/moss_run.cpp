@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <map>
@@ -68,6 +69,13 @@ const char* SeedLossName(SeedLoss loss) {
 
 const char* OrientationName(const glm::dvec3& n) {
   return n.y > 0.5 ? "up" : (n.y < -0.5 ? "down" : "vertical");
+}
+
+// Buckets for a day's grid over the mosses: about 64 a moss (mats are dense, so a coarser grid
+// puts tens of mosses in a bucket), at least 4,096, at most RadiusGrid's 2^21 (an empty
+// bucket costs its start entry, built every day).
+std::size_t MossGridBuckets(std::size_t mosses) {
+  return std::min<std::size_t>(std::size_t{1} << 21, std::max<std::size_t>(4096, 64 * mosses));
 }
 
 std::vector<glm::dvec3> CentresOf(const std::vector<MossPlant>& mosses) {
@@ -207,7 +215,8 @@ void MossRun::PlaceAtRandom(Species species, bool as_seed) {
 }
 
 bool MossRun::Land(const glm::dvec3& start, const std::vector<glm::dvec3>& centres,
-                   const std::vector<uint32_t>& owner, MossSeed* seed, SeedLoss* loss) const {
+                   const std::vector<uint32_t>& owner, const MatBuckets* mats, MossSeed* seed,
+                   SeedLoss* loss) const {
   const double s = rules_.s;
   // On the front side of a face, or behind it (inside a solid)?
   auto behind_a_face = [&](const glm::dvec3& p) {
@@ -239,13 +248,13 @@ bool MossRun::Land(const glm::dvec3& start, const std::vector<glm::dvec3>& centr
     return true;
   }
   // 2. Touching a moss: rests on it.
-  const MossRest rest = RestOnMoss(start, centres, rules_);
+  const MossRest rest = mats ? mats->Rest(start, rules_) : RestOnMoss(start, centres, rules_);
   if (rest.touches) return rest_on(rest.position, rest.moss);
   // 3. Falling along −y onto the highest of a face and a moss below.
   const geom::RayHit hit =
       geom::FirstHit(cells_.mesh, cells_.bvh, glm::vec3(start), glm::vec3(0, -1, 0),
                      std::numeric_limits<float>::infinity());
-  const MossRest fall = FallOntoMosses(start, centres, rules_);
+  const MossRest fall = mats ? mats->Fall(start, rules_) : FallOntoMosses(start, centres, rules_);
   if (fall.touches && (!hit.hit || fall.position.y >= static_cast<double>(hit.point.y)))
     return rest_on(fall.position, fall.moss);
   if (!hit.hit) return *loss = SeedLoss::kFellOff, false;
@@ -271,16 +280,17 @@ bool MossRun::LandSeed(const glm::dvec3& start, MossSeed* seed, SeedLoss* loss) 
       dense.push_back(centres[j]);
       owner.push_back(static_cast<uint32_t>(j));
     }
-  return Land(start, dense, owner, seed, loss);
+  return Land(start, dense, owner, nullptr, seed, loss);
 }
 
 void MossRun::AddSeed(const glm::dvec3& start, Species species, SeedKind kind,
-                      const std::vector<glm::dvec3>& centres, const std::vector<uint32_t>& owner) {
+                      const std::vector<glm::dvec3>& centres, const std::vector<uint32_t>& owner,
+                      const MatBuckets* mats) {
   MossWorld& w = world_;
   ++w.seeds_made[static_cast<int>(kind)];
   MossSeed seed;
   SeedLoss loss = SeedLoss::kFellOff;
-  if (!Land(start, centres, owner, &seed, &loss)) {
+  if (!Land(start, centres, owner, mats, &seed, &loss)) {
     ++w.seeds_lost[static_cast<int>(loss)];
     return;
   }
@@ -331,8 +341,7 @@ void MossRun::Day() {
     w.stored_by_depth_total[d] += map_.stored_by_depth[d];
   const MossClock::time_point t1 = MossClock::now();
   Result<PhotonGather> gather = PhotonGather::Build(map_, light_.r_gather);
-  Result<geom::PointIndex> index = geom::PointIndex::Build(centres);
-  if (!gather.ok() || !index.ok()) return;  // finite positions only: cannot happen
+  if (!gather.ok()) return;  // finite positions only: cannot happen
 
   // 2. The soil of every cell (spec §1.4 order), m/M from the mosses within r_CH (eq 3.5).
   const bool rain_day = weather.P > 0.0;
@@ -364,12 +373,26 @@ void MossRun::Day() {
     }
   }
   const MossClock::time_point t2 = MossClock::now();
+  // The day's weather terms and the geologies' laws once, not once a cell (the same values); a
+  // cell whose S, m/M and θ are yesterday's bits under yesterday's weather keeps yesterday's
+  // balance (soil.h SoilMemo: the same bits, without the arithmetic).
+  const SoilWeatherTerms weather_terms = SoilWeatherTermsOf(constants_, weather);
+  std::array<GeologyLaw, kGeologyCount> laws;
+  for (int g = 0; g < kGeologyCount; ++g) laws[g] = GeologyLawOf(p, static_cast<Geology>(g));
+  const auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  if (soil_memo_.size() != cells_.size() || !same(weather.T, soil_memo_weather_.T) ||
+      !same(weather.rh, soil_memo_weather_.rh) || !same(weather.U, soil_memo_weather_.U) ||
+      !same(weather.N, soil_memo_weather_.N) || !same(weather.N_0, soil_memo_weather_.N_0)) {
+    soil_memo_.assign(cells_.size(), SoilMemo{});
+    soil_memo_weather_ = weather;
+  }
   for (std::size_t i = 0; i < cells_.size(); ++i) {
-    const SoilDay soil = AdvanceSoilDay(constants_, weather, GeologyLawOf(p, cells_.geology[i]),
-                                        w.S[i], w.m_over_M[i], cells_.V_sky[i], &w.buckets[i]);
-    w.T_s[i] = soil.terms.T_s;
-    w.rh_s[i] = soil.terms.rh_s;
-    w.theta[i] = soil.terms.theta;
+    const SoilCellDay soil = AdvanceSoilDayKept(
+        constants_, weather, weather_terms, laws[static_cast<int>(cells_.geology[i])], w.S[i],
+        w.m_over_M[i], cells_.V_sky[i], &w.buckets[i], &soil_memo_[i]);
+    w.T_s[i] = soil.T_s;
+    w.rh_s[i] = soil.rh_s;
+    w.theta[i] = soil.theta;
   }
 
   MossDayRecord record;
@@ -395,6 +418,12 @@ void MossRun::Day() {
   const MossClock::time_point t3 = MossClock::now();
   // 3a. Germination (eq 3.24) of the seeds made before today, in pool order.
   const int max_mosses = p.GetInt(MossParam::kMaxMosses);
+  // The species' rows once a day (SpeciesOf reads 13 rows), and the day's first mosses in buckets
+  // of overlap·s for the contests (the same points and distances as a PointIndex radius query;
+  // a contest does not depend on the order its occupants come in).
+  std::array<SpeciesRanges, kSpeciesCount> species_of;
+  for (int k = 0; k < kSpeciesCount; ++k) species_of[k] = SpeciesOf(p, static_cast<Species>(k));
+  const geom::RadiusGrid index(centres, rules_.overlap * s, MossGridBuckets(centres.size()));
   const std::size_t old_count = w.mosses.size();
   std::vector<bool> alive(old_count, true);
   std::vector<MossSeed> waiting;
@@ -405,11 +434,16 @@ void MossRun::Day() {
       waiting.push_back(seed);
       continue;
     }
-    const SpeciesRanges species = SpeciesOf(p, seed.species);
-    const double S_seed = gather->Moss(seed.pos, seed.normal);
-    const double G = FitnessOf(species, w.T_s[seed.cell], w.rh_s[seed.cell], S_seed, g_form).G;
-    const SeedFate fate =
-        SeedDay(G, day - seed.birth_day, seed.kind, species.tau_b, living >= max_mosses, rules_);
+    const SpeciesRanges& species = species_of[static_cast<int>(seed.species)];
+    const double L = day - seed.birth_day;
+    // Outside its window (g(L) <= τ_b) a seed's fate is that of G = 0 for every G in [0, 1]
+    // (SeedWindowScore): its light and fitness are not needed.
+    double G = 0.0;
+    if (SeedWindowScore(L, seed.kind, rules_) > species.tau_b) {
+      const double S_seed = gather->Moss(seed.pos, seed.normal);
+      G = FitnessOf(species, w.T_s[seed.cell], w.rh_s[seed.cell], S_seed, g_form).G;
+    }
+    const SeedFate fate = SeedDay(G, L, seed.kind, species.tau_b, living >= max_mosses, rules_);
     if (fate == SeedFate::kWaits) {
       waiting.push_back(seed);
       continue;
@@ -422,17 +456,18 @@ void MossRun::Day() {
     const double limit2 = (rules_.overlap * s) * (rules_.overlap * s);
     std::vector<std::size_t> occupants;
     std::vector<double> priorities;
-    for (const geom::PointHit& h : index->WithinRadius(seed.pos, rules_.overlap * s))
-      if (h.distance_squared < limit2 && alive[h.index]) {
-        occupants.push_back(h.index);
-        priorities.push_back(PlacePriority(SpeciesOf(p, w.mosses[h.index].species),
-                                           w.mosses[h.index].growth.G_moss));
+    index.ForEachWithin(seed.pos, [&](uint32_t j, double d2) {
+      if (d2 < limit2 && alive[j]) {
+        occupants.push_back(j);
+        priorities.push_back(PlacePriority(species_of[static_cast<int>(w.mosses[j].species)],
+                                           w.mosses[j].growth.G_moss));
       }
+    });
     for (std::size_t j = old_count; j < w.mosses.size(); ++j) {
       const glm::dvec3 d = w.mosses[j].pos - seed.pos;
       if (alive[j] && glm::dot(d, d) < limit2) {
         occupants.push_back(j);
-        priorities.push_back(PlacePriority(SpeciesOf(p, w.mosses[j].species), 0.0));
+        priorities.push_back(PlacePriority(species_of[static_cast<int>(w.mosses[j].species)], 0.0));
       }
     }
     if (!WinsPlace(PlacePriority(species, 0.0), priorities)) {
@@ -462,7 +497,7 @@ void MossRun::Day() {
   for (std::size_t j = 0; j < old_count; ++j) {
     if (!alive[j]) continue;
     MossPlant& m = w.mosses[j];
-    const SpeciesRanges species = SpeciesOf(p, m.species);
+    const SpeciesRanges& species = species_of[static_cast<int>(m.species)];
     double S_moss = gather->Moss(m.pos, m.normal);
     if (smoothing > 0 && m.lit) S_moss = m.S + k_smooth * (S_moss - m.S);  // its own mean
     const double G = FitnessOf(species, w.T_s[m.cell], w.rh_s[m.cell], S_moss, g_form).G;
@@ -488,8 +523,10 @@ void MossRun::Day() {
   // 3c-d. Gemmae (eq 3.22) and spores (eq 3.23) of the mosses that grew today; they land among
   // the mosses as they are after growth and death.
   centres = CentresOf(w.mosses);
-  Result<geom::PointIndex> after = geom::PointIndex::Build(centres);
-  if (!after.ok()) return;
+  // The mats' count through buckets of interior_radius·s: PointIndex::WithinRadius's points (the
+  // same distance expression and <= r²), without its per-query allocation and sort.
+  const geom::RadiusGrid after(centres, rules_.interior_radius * s,
+                               MossGridBuckets(centres.size()));
   const std::size_t parents = w.mosses.size();
   // §3.8's mats: a moss with interior_count others within interior_radius·s. A seed rests only on
   // the surface of such dense moss (§3.3, "密生したコケモデルの表面"), so lone mosses never carry
@@ -498,14 +535,13 @@ void MossRun::Day() {
   std::vector<glm::dvec3> dense_centres;
   std::vector<uint32_t> dense_owner;
   for (std::size_t j = 0; j < parents; ++j) {
-    dense[j] =
-        static_cast<int>(after->WithinRadius(centres[j], rules_.interior_radius * s).size()) - 1 >=
-        rules_.interior_count;
+    dense[j] = static_cast<int>(after.CountWithin(centres[j])) - 1 >= rules_.interior_count;
     if (dense[j]) {
       dense_centres.push_back(centres[j]);
       dense_owner.push_back(static_cast<uint32_t>(j));
     }
   }
+  const MatBuckets mats(dense_centres, rules_, MossGridBuckets(dense_centres.size()));
   for (std::size_t j = 0; j < parents; ++j) {
     if (!was_old[j]) continue;
     const MossPlant parent = w.mosses[j];
@@ -515,10 +551,10 @@ void MossRun::Day() {
     w.mosses[j].G_max = G_max;
     for (int g = 0; g < gemmae; ++g)
       AddSeed(GemmaStart(parent.pos, rules_.k, &w.growth_rng), parent.species, SeedKind::kGemma,
-              dense_centres, dense_owner);
+              dense_centres, dense_owner, &mats);
     if (MakesSpore(parent.growth.G_moss, parent.growing, rain_day, rules_.spore_G))
       AddSeed(SporeStart(parent.pos, parent.normal, rules_.l, &w.growth_rng), parent.species,
-              SeedKind::kSpore, dense_centres, dense_owner);
+              SeedKind::kSpore, dense_centres, dense_owner, &mats);
   }
 
   // 4. Immigration: one outside spore every immigration_days, at a random surface point.

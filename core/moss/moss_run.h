@@ -184,10 +184,14 @@ class MossRun : public run::StudyRun {
   void Day();  // one day, world_.day + 1
   // Where a seed starting at `start` comes to rest (spec §1.5.6); false with the loss otherwise.
   // `centres` are the mosses a seed may rest on (those inside a mat), owner[k] their index.
+  // `mats`, when given, holds those centres in buckets (life_cycle.h MatBuckets): the same
+  // answers as the passes over all of them.
   bool Land(const glm::dvec3& start, const std::vector<glm::dvec3>& centres,
-            const std::vector<uint32_t>& owner, MossSeed* seed, SeedLoss* loss) const;
+            const std::vector<uint32_t>& owner, const MatBuckets* mats, MossSeed* seed,
+            SeedLoss* loss) const;
   void AddSeed(const glm::dvec3& start, Species species, SeedKind kind,
-               const std::vector<glm::dvec3>& centres, const std::vector<uint32_t>& owner);
+               const std::vector<glm::dvec3>& centres, const std::vector<uint32_t>& owner,
+               const MatBuckets* mats);
   void PlaceAtRandom(Species species, bool as_seed);
   Result<Estimate> ExportEstimateAt(const std::string& format, double mosses) const;
 
@@ -208,6 +212,10 @@ class MossRun : public run::StudyRun {
   // cells' S and m/M; the soil; the life cycle (its own gathers included).
   double ms_photons_ = 0, ms_gather_ = 0, ms_soil_ = 0, ms_growth_ = 0;
   MossOccluders occluders_;  // scratch
+  // Each cell's last soil balance and the weather it was worked out under (soil.h SoilMemo): a
+  // cache keyed by its inputs' bits, so a cancel need not restore it.
+  std::vector<SoilMemo> soil_memo_;
+  Weather soil_memo_weather_{};
   // Built once (the cells do not move): each day's photons and mosses are spread onto the cells
   // near them, work in photons and mosses rather than a query per cell (spec §4.6, eq 3.5): the
   // photons through each cell's candidate lists (photons.h), the mosses through the centroids in

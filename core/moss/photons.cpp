@@ -38,15 +38,45 @@ bool MeetsSphere(const glm::dvec3& origin, const glm::dvec3& dir, const glm::dve
   return glm::dot(m, m) - t * t <= R * R;
 }
 
-glm::dvec3 SunSquarePoint(const PhotonLight& light, Pcg32* rng, glm::dvec3* normal) {
-  const glm::dvec3 n = -light.sun;
-  glm::dvec3 b1, b2;
-  BasisAbout(n, &b1, &b2);
+// The sun square's normal and sides (the same for every photon of a light).
+struct SunFrame {
+  glm::dvec3 n, b1, b2;
+  explicit SunFrame(const PhotonLight& light) : n(-light.sun) { BasisAbout(n, &b1, &b2); }
+};
+
+glm::dvec3 SunSquarePoint(const PhotonLight& light, const SunFrame& frame, Pcg32* rng) {
   const double side = light.sun_size * light.R;
   const double u = rng->Uniform(), v = rng->Uniform();
-  *normal = n;
-  return light.centre + (light.sun_distance * light.R) * light.sun + ((u - 0.5) * side) * b1 +
-         ((v - 0.5) * side) * b2;
+  return light.centre + (light.sun_distance * light.R) * light.sun + ((u - 0.5) * side) * frame.b1 +
+         ((v - 0.5) * side) * frame.b2;
+}
+
+// EmitSunPhoton with the light's frame worked out once (TracePhotons: once a day, not a photon).
+void EmitSunPhotonIn(const PhotonLight& light, const SunFrame& frame, Pcg32* rng,
+                     glm::dvec3* origin, glm::dvec3* dir) {
+  const glm::dvec3& n = frame.n;
+  *origin = SunSquarePoint(light, frame, rng);
+  const glm::dvec3 m = light.centre - *origin;
+  const double D = glm::length(m);
+  const glm::dvec3 axis = m / D;
+  const double sin_a = std::min(1.0, light.R / D);
+  const double cos_a = std::sqrt(std::max(0.0, 1.0 - sin_a * sin_a));
+  glm::dvec3 b1, b2;
+  BasisAbout(axis, &b1, &b2);
+  for (;;) {
+    // Uniform in the sphere's cone, kept with probability cos θ to the light's normal: together
+    // the cosine weight of eq 3.1 restricted to the directions that meet the sphere.
+    const double cos_g = 1.0 - rng->Uniform() * (1.0 - cos_a);
+    const double sin_g = std::sqrt(std::max(0.0, 1.0 - cos_g * cos_g));
+    double s = 0, c = 1;
+    det::SinCos(2.0 * det::kPi * rng->Uniform(), &s, &c);
+    const glm::dvec3 w = cos_g * axis + (sin_g * c) * b1 + (sin_g * s) * b2;
+    const double cos_theta = glm::dot(w, n);
+    if (rng->Uniform() < cos_theta) {
+      *dir = w;
+      return;
+    }
+  }
 }
 
 }  // namespace
@@ -215,35 +245,14 @@ bool MossOccluders::FirstHit(const glm::dvec3& origin, const glm::dvec3& dir, do
 // ---- emission
 
 void EmitSunPhoton(const PhotonLight& light, Pcg32* rng, glm::dvec3* origin, glm::dvec3* dir) {
-  glm::dvec3 n;
-  *origin = SunSquarePoint(light, rng, &n);
-  const glm::dvec3 m = light.centre - *origin;
-  const double D = glm::length(m);
-  const glm::dvec3 axis = m / D;
-  const double sin_a = std::min(1.0, light.R / D);
-  const double cos_a = std::sqrt(std::max(0.0, 1.0 - sin_a * sin_a));
-  glm::dvec3 b1, b2;
-  BasisAbout(axis, &b1, &b2);
-  for (;;) {
-    // Uniform in the sphere's cone, kept with probability cos θ to the light's normal: together
-    // the cosine weight of eq 3.1 restricted to the directions that meet the sphere.
-    const double cos_g = 1.0 - rng->Uniform() * (1.0 - cos_a);
-    const double sin_g = std::sqrt(std::max(0.0, 1.0 - cos_g * cos_g));
-    double s = 0, c = 1;
-    det::SinCos(2.0 * det::kPi * rng->Uniform(), &s, &c);
-    const glm::dvec3 w = cos_g * axis + (sin_g * c) * b1 + (sin_g * s) * b2;
-    const double cos_theta = glm::dot(w, n);
-    if (rng->Uniform() < cos_theta) {
-      *dir = w;
-      return;
-    }
-  }
+  EmitSunPhotonIn(light, SunFrame(light), rng, origin, dir);
 }
 
 void EmitSunPhotonByRejection(const PhotonLight& light, Pcg32* rng, glm::dvec3* origin,
                               glm::dvec3* dir) {
-  glm::dvec3 n;
-  *origin = SunSquarePoint(light, rng, &n);
+  const SunFrame frame(light);
+  const glm::dvec3& n = frame.n;
+  *origin = SunSquarePoint(light, frame, rng);
   do {
     *dir = CosineDirection(n, rng);  // moss eq. 3.1
   } while (!MeetsSphere(*origin, *dir, light.centre, light.R));
@@ -266,11 +275,12 @@ void TracePhotons(const SoilCells& cells, const MossOccluders& mosses, const Pho
   map->dPhi_sun = map->emitted_sun > 0 ? light.S_sun * piR2 / map->emitted_sun : 0.0;
   map->dPhi_sky = map->emitted_sky > 0 ? 2.0 * piR2 * light.S_sky / map->emitted_sky : 0.0;
   map->power_emitted = map->emitted_sun * map->dPhi_sun + map->emitted_sky * map->dPhi_sky;
+  const SunFrame sun_frame(light);
   for (int i = 0; i < photons; ++i) {
     glm::dvec3 origin, dir;
     double power;
     if (i < map->emitted_sun) {
-      EmitSunPhoton(light, rng, &origin, &dir);
+      EmitSunPhotonIn(light, sun_frame, rng, &origin, &dir);
       power = map->dPhi_sun;
     } else {
       // A sky photon: a direction uniform over the upper hemisphere, a parallel beam from a disc

@@ -81,9 +81,23 @@ struct SoilTerms {
   double residual_nonlinear;
 };
 
+// The terms of eqs 3.2-3.15 that read only the day's weather and the constants, not the cell: the
+// same for every cell of a day, so the run works them out once a day (their exp and divisions
+// were a third of the soil's work). SoilEnergyBalance with them gives the same bits as without.
+struct SoilWeatherTerms {
+  double A, C, sigma_T4;  // SoilTerms' A, C, sigma_T4
+  double L_sky;           // eq 3.3 under the open sky [W/m²]
+  double e_SAT, q_SAT, Delta;
+  double four_sigma_T3;  // 4σT³, eq 3.11's linear emission [W m⁻² K⁻¹]
+};
+SoilWeatherTerms SoilWeatherTermsOf(const SoilConstants& k, const Weather& w);
+
 // Eqs 3.2-3.16 in the thesis's order (§3.7) for one cell and day; the cell must pass
 // CheckSoilCell and the weather hold the table's ranges.
 SoilTerms SoilEnergyBalance(const SoilConstants& k, const Weather& w, const SoilCell& cell);
+// The same with the day's weather terms given (day = SoilWeatherTermsOf(k, w)).
+SoilTerms SoilEnergyBalance(const SoilConstants& k, const Weather& w, const SoilWeatherTerms& day,
+                            const SoilCell& cell);
 
 // The bucket of one cell (eqs 3.6-3.8): depth h [mm] and water O [mm], O_SAT = h·θ_SAT.
 struct Bucket {
@@ -102,5 +116,28 @@ struct SoilDay {
 };
 SoilDay AdvanceSoilDay(const SoilConstants& k, const Weather& w, const GeologyLaw& law, double S,
                        double m_over_M, double V_sky, Bucket* bucket);
+// The same with the day's weather terms given (day = SoilWeatherTermsOf(k, w)): the same bits.
+SoilDay AdvanceSoilDay(const SoilConstants& k, const Weather& w, const SoilWeatherTerms& day,
+                       const GeologyLaw& law, double S, double m_over_M, double V_sky,
+                       Bucket* bucket);
+
+// A cell's last balance, keyed by its inputs: the balance (eqs 3.2-3.16) is a pure function of S,
+// m/M and θ after the rain, the cell's law and sky view, the constants and the day's weather, so a
+// day whose weather and inputs are the last day's, bit for bit, has the last day's T_s, rh_s and E
+// (most of the thesis's cells are dark and saturated day after day). S < 0: nothing kept.
+struct SoilMemo {
+  double S = -1, m_over_M = -1, theta = -1;
+  double T_s = 0, rh_s = 0, E = 0;
+};
+// The run's day of one cell: AdvanceSoilDay's bucket steps, with the balance taken from *memo when
+// its inputs are the memo's bits, else worked out and kept there. The caller gives memos of the
+// same cell, law, sky view and constants, and resets them (SoilMemo{}) when the weather's fields
+// but P differ from the day they were kept on. The same bucket, T_s, rh_s and θ as AdvanceSoilDay.
+struct SoilCellDay {
+  double T_s, rh_s, theta;
+};
+SoilCellDay AdvanceSoilDayKept(const SoilConstants& k, const Weather& w,
+                               const SoilWeatherTerms& day, const GeologyLaw& law, double S,
+                               double m_over_M, double V_sky, Bucket* bucket, SoilMemo* memo);
 
 }  // namespace niwa::moss

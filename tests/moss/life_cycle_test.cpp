@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "moss/fitness.h"
+#include "random/pcg32.h"
 
 namespace niwa::moss {
 namespace {
@@ -223,6 +224,74 @@ TEST(MossLifeCycle, FallingOntoTheHighestMossBelow) {
   // Horizontally more than s away: no moss below.
   rest = FallOntoMosses({0.0101, 1, 0}, {{0, 0, 0}}, r);
   EXPECT_FALSE(rest.touches);
+}
+
+// MatBuckets (the run's buckets of the mat mosses) against the passes over every centre: the same
+// touch, moss and position bits for 4,000 seeds among 600 clustered centres with exact duplicates
+// (ties go to the lower index), seeds exactly s above a centre, and a few grid sizes (coarse grids
+// put many centres in a bucket; fine ones split a contact ball over many).
+TEST(MossLifeCycle, MatBucketsAnswerAsThePassesOverEveryCentre) {
+  const LifeRules r = Rules();
+  Pcg32 rng(7, 3);
+  std::vector<glm::dvec3> centres;
+  for (int k = 0; k < 600; ++k) {
+    if (k % 10 == 9) {  // an exact duplicate of an earlier centre
+      centres.push_back(centres[static_cast<std::size_t>(rng.Uniform() * k)]);
+      continue;
+    }
+    const double spread = k < 400 ? 0.05 : 0.6;  // a dense mat and scattered mosses
+    centres.emplace_back(spread * rng.Uniform(), 0.02 * rng.Uniform(), spread * rng.Uniform());
+  }
+  int touched = 0, fell = 0;
+  for (std::size_t buckets : {std::size_t{64}, std::size_t{4096}, std::size_t{1} << 18}) {
+    const MatBuckets mats(centres, r, buckets);
+    Pcg32 seeds(11, 5);
+    for (int q = 0; q < 4000; ++q) {
+      glm::dvec3 seed(0.06 * seeds.Uniform(), 0.04 * seeds.Uniform() - 0.01,
+                      0.06 * seeds.Uniform());
+      if (q % 50 == 0)
+        seed = centres[static_cast<std::size_t>(q) % centres.size()] +
+               glm::dvec3(0, r.s, 0);  // exactly s above: the contact's edge
+      const MossRest a = RestOnMoss(seed, centres, r), b = mats.Rest(seed, r);
+      ASSERT_EQ(a.touches, b.touches) << q;
+      ASSERT_EQ(a.moss, b.moss) << q;
+      ASSERT_EQ(a.position, b.position) << q;
+      const MossRest c = FallOntoMosses(seed, centres, r), d = mats.Fall(seed, r);
+      ASSERT_EQ(c.touches, d.touches) << q;
+      ASSERT_EQ(c.moss, d.moss) << q;
+      ASSERT_EQ(c.position, d.position) << q;
+      touched += a.touches;
+      fell += c.touches;
+    }
+  }
+  EXPECT_GT(touched, 1000);  // the seeds met mosses often, and missed them often
+  EXPECT_LT(touched, 11000);
+  EXPECT_GT(fell, 1000);
+  EXPECT_LT(fell, 11000);
+}
+
+// Outside its window (g(L) <= τ_b) a seed's fate does not depend on G in [0, 1] (the run then
+// skips its gather and fitness): SeedDay(G) is SeedDay(0) for every species, kind and age.
+TEST(MossLifeCycle, ASeedOutsideItsWindowHasTheFateOfGZero) {
+  const LifeRules r = Rules();
+  int skipped = 0, scored = 0;
+  for (Species sp : {Species::kGingoke, Species::kHaigoke, Species::kSugigoke})
+    for (SeedKind kind : {SeedKind::kGemma, SeedKind::kSpore})
+      for (int L = 0; L <= 500; ++L) {
+        const double tau_b = TauB(sp);
+        if (SeedWindowScore(L, kind, r) > tau_b) {
+          ++scored;
+          continue;
+        }
+        ++skipped;
+        for (double G : {0.0, 1e-9, 0.25, 0.5, 0.999, 1.0})
+          for (bool at_cap : {false, true})
+            ASSERT_EQ(SeedDay(G, L, kind, tau_b, at_cap, r),
+                      SeedDay(0.0, L, kind, tau_b, at_cap, r))
+                << L;
+      }
+  EXPECT_GT(skipped, 100);
+  EXPECT_GT(scored, 100);
 }
 
 TEST(MossLifeCycle, TheContestForAnOccupiedPlace) {

@@ -215,6 +215,59 @@ TEST(MossSoil, TheBucketsDayFollowsEq36) {
   EXPECT_EQ(b.O, 0.0);
 }
 
+// The run's kept balance (SoilMemo) against AdvanceSoilDay day by day: the same bucket, T_s, rh_s
+// and θ bits, over days that repeat yesterday's inputs (kept), change S, m/M or the rain (worked
+// out again), and a weather change (the caller resets the memo). A memo that answered for other
+// inputs would give yesterday's T_s on the day S changes.
+TEST(MossSoil, KeptBalanceIsTheDaysBalanceBitForBit) {
+  MossParams params;
+  const SoilConstants k = SoilConstantsOf(params);
+  for (Geology g : {Geology::kHumus, Geology::kSandy, Geology::kAsphalt}) {
+    const GeologyLaw law = GeologyLawOf(params, g);
+    Bucket plain = MakeBucket(300, law, 0.5), kept = plain;
+    SoilMemo memo;
+    Weather w = ClimateOf(params);
+    const SoilWeatherTerms terms = SoilWeatherTermsOf(k, w);
+    Weather warm = w;
+    warm.T += 5;
+    const SoilWeatherTerms warm_terms = SoilWeatherTermsOf(k, warm);
+    int reworked = 0;
+    for (int d = 0; d < 60; ++d) {
+      const bool hot = d >= 40;  // the weather changes on day 40
+      Weather& day_w = hot ? warm : w;
+      // Rain, and on days 20-34 a downpour that keeps the bucket full (θ = θ_SAT each day).
+      day_w.P = d >= 20 && d < 35 ? 1000.0 : (d % 7 == 3 ? 10.34 : 0.0);
+      const double S = d % 5 == 0 ? 180.0 + d : 0.0;
+      const double mM = d < 20 ? 0.0 : 0.25;
+      if (d == 40) memo = SoilMemo{};
+      const SoilMemo before = memo;
+      const SoilDay a = AdvanceSoilDay(k, day_w, law, S, mM, 1, &plain);
+      const SoilCellDay b =
+          AdvanceSoilDayKept(k, day_w, hot ? warm_terms : terms, law, S, mM, 1, &kept, &memo);
+      reworked += before.S != memo.S || before.theta != memo.theta ||
+                  before.m_over_M != memo.m_over_M || before.E != memo.E;
+      ASSERT_EQ(kept.O, plain.O) << "day " << d;
+      ASSERT_EQ(b.T_s, a.terms.T_s) << "day " << d;
+      ASSERT_EQ(b.rh_s, a.terms.rh_s) << "day " << d;
+      ASSERT_EQ(b.theta, a.terms.theta) << "day " << d;
+    }
+    EXPECT_GT(reworked, 10);  // S and the rain changed often
+    EXPECT_LT(reworked, 52);  // and the dark full days (21-34 but 25 and 30) were kept
+  }
+  // The day's weather terms are those SoilEnergyBalance works out alone.
+  SoilCell cell;
+  cell.law = GeologyLawOf(params, Geology::kHumus);
+  cell.theta = 0.2;
+  cell.S = 120;
+  const Weather w = ClimateOf(params);
+  const SoilTerms alone = SoilEnergyBalance(k, w, cell);
+  const SoilTerms given = SoilEnergyBalance(k, w, SoilWeatherTermsOf(k, w), cell);
+  EXPECT_EQ(alone.e_SAT, given.e_SAT);
+  EXPECT_EQ(alone.Delta, given.Delta);
+  EXPECT_EQ(alone.T_s, given.T_s);
+  EXPECT_EQ(alone.residual_nonlinear, given.residual_nonlinear);
+}
+
 TEST(MossSoil, EvenRainDaysHoldTheYearsTotal) {
   int days = 0;
   double total = 0;
