@@ -7,7 +7,7 @@
 // {"build":"native","workload":"grow/sakura-15y","ms":median,"min_ms":..,"reps":.., "check":..},
 // with "check" the workload's checksum (equal on both builds when results agree), plus
 // "unit", "units" and "ns_per_unit" (median) for workloads that count units (sway:
-// internode-steps).
+// internode-steps), and the workload's size under its own name (moss rocks: "triangles").
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -92,6 +92,11 @@ void Run(const Workload& w, const Options& o) {
     std::snprintf(buffer, sizeof buffer, ",\"unit\":\"%s\",\"units\":%.0f,\"ns_per_unit\":%.3f",
                   w.unit.c_str(), *w.units, median * 1e6 / *w.units);
     per_unit = buffer;
+  }
+  if (*w.size > 0 && !w.size_name.empty()) {
+    char buffer[120];
+    std::snprintf(buffer, sizeof buffer, ",\"%s\":%.0f", w.size_name.c_str(), *w.size);
+    per_unit += buffer;
   }
   std::printf(
       "{\"build\":\"%s\",\"workload\":\"%s\",\"ms\":%.4f,\"min_ms\":%.4f,\"reps\":%zu,"

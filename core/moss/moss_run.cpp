@@ -99,7 +99,14 @@ Result<MossRun> MossRun::Start(const MossState& state, const Budget& budget) {
     return Status::Error("scene", "'" + state.scene +
                                       "' is another study's land; it is grown through the "
                                       "composition tier (compose/moss_land.h)");
-  Result<MossScene> scene = BuildScene(state.scene);
+  // The rocks (up to 6.5 M triangles): their estimate before the scene is built (the rocks' own
+  // triangles are the fewest cells).
+  if (state.scene == "rocks" && state.rock_triangles >= kRockTrianglesMin &&
+      state.rock_triangles <= kRockTrianglesMax)
+    NIWA_RETURN_IF_ERROR(CheckEstimate(RunEstimate(state, RockTrianglesBuilt(state.rock_triangles)),
+                                       budget,
+                                       "lower days, photons, max_mosses or rock_triangles"));
+  Result<MossScene> scene = BuildScene(state.scene, state.rock_triangles);
   if (!scene.ok()) return scene.status();
   return StartOnScene(state, std::move(*scene), budget, "");
 }
@@ -686,6 +693,8 @@ void MossRun::AddLandFields(nlohmann::ordered_json* j) const {
   } else if (state_.scene == kTerrainLand) {
     (*j)["terrain"] = state_.terrain;
     (*j)["terrain_seed"] = state_.terrain_seed;
+  } else if (state_.scene == "rocks" && state_.rock_triangles != kRockTrianglesDefault) {
+    (*j)["rock_triangles"] = state_.rock_triangles;
   }
 }
 
@@ -738,15 +747,32 @@ Result<Estimate> MossRun::ExportEstimateAt(const std::string& format, double mos
              FormatCount(photons) + " photons)";
     return held + e;
   }
-  return Status::Error("format", "'" + format + "' is unknown; must be glb, json, csv or svg");
+  if (format == "rays") {
+    // geom/ray_dump.h: the cells' mesh (3 corners a cell) and the rays, each a CastRay (40 B)
+    // and its 36 bytes, traced again (the next day's photons). A path casts 1 + its reflections:
+    // 1/(1 − ρ) on average for the roulette's larger ρ, at most max_bounces + 1; 1.5x that.
+    const double rho = light_.indirect ? std::max(light_.rho_mesh, light_.rho_moss) : 0.0;
+    const double per_path = std::min(light_.max_bounces + 1.0, 1.0 / std::max(1e-3, 1.0 - rho));
+    const double rays = 1.5 * per_path * state_.params.Get(MossParam::kPhotons);
+    const double bytes = geom::kRayDumpHeaderBytes + 48.0 * cells + 36.0 * rays;
+    Estimate e;
+    e.memory_bytes = 2.0 * bytes + 40.0 * rays + kBytesPerPhoton * rays;
+    e.seconds = kSecondsPerPhoton * state_.params.Get(MossParam::kPhotons) + 1e-8 * bytes;
+    e.what = "writing the photons' rays (" + FormatCount(cells) + " cells, " + FormatCount(rays) +
+             " rays)";
+    return held + e;
+  }
+  return Status::Error("format",
+                       "'" + format + "' is unknown; must be glb, json, csv, svg or rays");
 }
 
-PhotonMap MossRun::NextDayPhotons() const {
+PhotonMap MossRun::NextDayPhotons(std::vector<geom::CastRay>* rays) const {
   Pcg32 rng = world_.photon_rng;
   PhotonMap map;
   MossOccluders occluders;
   occluders.Build(CentresOf(world_.mosses), 0.5 * rules_.s);
-  TracePhotons(cells_, occluders, light_, state_.params.GetInt(MossParam::kPhotons), &rng, &map);
+  TracePhotons(cells_, occluders, light_, state_.params.GetInt(MossParam::kPhotons), &rng, &map,
+               rays);
   return map;
 }
 
