@@ -12,7 +12,8 @@
 // The machine may be loaded: beside the wall-clock median it prints cpu_ns_per_unit, the process's
 // CPU time (user + system, process.cpuUsage) over the timed repetitions per ray.
 //
-// Usage: node bench/moss_rays_peer.mjs FILE.bin [--reps N] (N: exactly N timed repetitions)
+// Usage: node [--single-threaded] bench/moss_rays_peer.mjs FILE.bin [--reps N] (N: exactly N timed
+// repetitions; scripts/bench passes --single-threaded so the CPU time is one thread's, GC included)
 import { readFileSync } from 'node:fs';
 import { BufferAttribute, BufferGeometry, DoubleSide, Ray, Vector3 } from 'three';
 import { CENTER, MeshBVH, SAH } from 'three-mesh-bvh';

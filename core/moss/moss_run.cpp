@@ -32,7 +32,12 @@ constexpr uint64_t kDisplayStream = 5;
 constexpr double kSecondsPerPhoton = 2e-6;   // a path of ~2 hits with the gather's share
 constexpr double kSecondsPerCellDay = 2e-6;  // gather, m/M and the soil of one cell
 constexpr double kSecondsPerMossDay = 4e-6;  // gather, growth and landing of a moss or seed
-constexpr double kBytesPerCell = 800;  // mesh, BVH, values, bucket; the spread lists (<= 96 x 4 B)
+// A cell's bytes at the run's peak (building the cells: the split, mesh, BVH, values, bucket; the
+// spread lists, <= 96 x 4 B), and its build time (soil depth ray, BVH, lists): measured on rocks
+// (2026-12-06, native, CPU time and peak RSS of niwa moss grow --days 0): 1,100 B a cell at
+// 105 k and 412 k cells, 1,375 B at 1.64 M (vectors' growth slack); 10-11 µs a cell. 800 B before.
+constexpr double kBytesPerCell = 1500;
+constexpr double kSecondsPerCellBuild = 2e-5;
 constexpr double kBytesPerPhoton = 3 * 64.0;  // stored photons (~2 a path) and the index
 constexpr double kBytesPerMoss = 200;         // moss or seed, indices
 
@@ -86,7 +91,8 @@ Estimate MossRun::RunEstimate(const MossState& state, std::size_t cells) {
       state.params.Get(MossParam::kMaxMosses) + state.params.Get(MossParam::kSeedCap);
   const double n_cells = static_cast<double>(cells);
   Estimate e;
-  e.seconds = days * (photons * kSecondsPerPhoton + n_cells * kSecondsPerCellDay +
+  e.seconds = n_cells * kSecondsPerCellBuild +
+              days * (photons * kSecondsPerPhoton + n_cells * kSecondsPerCellDay +
                       mosses * kSecondsPerMossDay);
   e.memory_bytes = n_cells * kBytesPerCell + photons * kBytesPerPhoton + mosses * kBytesPerMoss;
   e.what = "growing " + FormatCount(days) + " days of " + FormatCount(photons) + " photons on " +

@@ -279,12 +279,13 @@ for (const scene of ['plane', 'thesis', 'walls', 'rocks']) {
 // refused up front naming --max-seconds at 300 days, and without the rocks scene naming itself.
 {
   const raysArgs = (file) => ['moss', 'photons', '--scene', 'walls', '--photons', '1024', '--rays', file];
-  const refusedRocks = ['moss', 'grow', '--scene', 'rocks', '--rock-triangles', '1000000', '--stats'];
+  const refusedRocks = ['moss', 'grow', '--scene', 'rocks', '--rock-triangles', '1000000', '--max-memory', '3G', '--stats'];
+  const overMemory = ['moss', 'grow', '--scene', 'rocks', '--rock-triangles', '1000000', '--days', '3'];
   const notRocks = ['moss', 'grow', '--scene', 'thesis', '--rock-triangles', '2000', '--days', '1'];
   const outOfRange = ['moss', 'grow', '--scene', 'rocks', '--rock-triangles', '99', '--days', '1'];
   const badEnding = ['moss', 'photons', '--scene', 'plane', '--rays', join(dir, 'rays.txt')];
   const rocksLink = ['moss', 'grow', '--scene', 'rocks', '--rock-triangles', '6400', '--days', '2', '--photons', '256', '--stats'];
-  await W.prepare([raysArgs(join(dir, 'w-rays.bin')), refusedRocks, notRocks, outOfRange, badEnding, rocksLink]);
+  await W.prepare([raysArgs(join(dir, 'w-rays.bin')), refusedRocks, overMemory, notRocks, outOfRange, badEnding, rocksLink]);
   const day = JSON.parse(run(native, raysArgs(join(dir, 'n-rays.bin'))));
   run(wasm, raysArgs(join(dir, 'w-rays.bin')));
   const a = readFileSync(join(dir, 'n-rays.bin')), b = readFileSync(join(dir, 'w-rays.bin'));
@@ -298,8 +299,11 @@ for (const scene of ['plane', 'thesis', 'walls', 'rocks']) {
     a.equals(b) && a.subarray(0, 8).toString() === 'NIWARAY1' && a.length === at + 36 * rays && rays >= 1024 && hits > 0 && hits <= rays);
   for (const cmd of [native, wasm]) {
     const r = spawn(cmd, refusedRocks);
-    check(`${buildName(cmd)} moss grow --scene rocks --rock-triangles 1000000 (300 days): exit ${r.status}, "${r.stderr.trim()}"`,
+    check(`${buildName(cmd)} moss grow --scene rocks --rock-triangles 1000000 --max-memory 3G (300 days): exit ${r.status}, "${r.stderr.trim()}"`,
       r.status === 2 && r.stderr.startsWith('niwa: error: --max-seconds: growing 300 days') && r.stderr.includes('1,638,400 soil cells') && r.stdout === '');
+    const m = spawn(cmd, overMemory);
+    check(`${buildName(cmd)} moss grow --scene rocks --rock-triangles 1000000 --days 3 (the default 2 GB): exit ${m.status}, "${m.stderr.trim()}"`,
+      m.status === 2 && m.stderr.startsWith('niwa: error: --max-memory: growing 3 days') && m.stderr.includes('1,638,400 soil cells') && m.stdout === '');
     for (const [args, want] of [[notRocks, '--rock-triangles: given without the rocks scene'], [outOfRange, '--rock-triangles'], [badEnding, '--rays']]) {
       const q = spawn(cmd, args);
       check(`${buildName(cmd)} ${args.slice(1).join(' ')}: exit ${q.status}, "${q.stderr.trim()}"`,
