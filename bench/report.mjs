@@ -3,14 +3,15 @@
 // node bench/report.mjs --native N1.jsonl[,N2.jsonl...] --wasm W1.jsonl[,...] [--peer P1.jsonl[,...]]
 //                       [--gbench G.txt] [--grove GR.jsonl] [--terrain-page T1.jsonl[,...]]
 //                       [--worker WK.jsonl] [--page-timings PT.jsonl] [--moss-page M1.jsonl[,...]]
-//                       [--meta META.json]
+//                       [--moss-rays R.jsonl] [--meta META.json]
 //                       [--record docs/BENCHMARKS.md]
 // N/W/P hold one JSON object per line as printed by niwa_bench_runner / ez_tree_peer.mjs /
 // fastnoise_peer.mjs, one file per run (process): each workload keeps its fastest run, and the table
 // lists every run's time. GR the lines of bench/grove.mjs (one per mode); T the lines of
 // bench/terrain_page.mjs (the page's 512² regrow); WK those of bench/worker_first_grow.mjs; PT the page's
 // answer times of the browser tests (harness.mjs timedCheck); M the lines of bench/moss_page.mjs (the
-// moss page's 300-day thesis run and its scrubber); META holds {date, machine, cpu, cores, tools, load,
+// moss page's 300-day thesis run and its scrubber); R those of bench/moss_rays_peer.mjs (three-mesh-bvh
+// on the thesis rays of niwa moss photons --rays); META holds {date, machine, cpu, cores, tools, load,
 // command, seconds}.
 import {readFileSync, writeFileSync, existsSync} from 'node:fs';
 
@@ -235,6 +236,56 @@ for (const kind of ['closest', 'segment']) {
   }
   if (scrub) goal('moss page: the day scrubber answers ≤ 100 ms (input to frame, day 300 run)', `${fmt(scrub.ms)} ms median, ${fmt(scrub.max_ms)} ms slowest`, scrub.ms <= 100);
 }
+// Moss tracing (issue 29 item 6): photon cost linear in photons (thesis, 2 k to 64 k), tracing cost
+// ≤ 2× per 10× triangles (rocks, rock_triangles 1 k to 1 M: the icosphere levels they round up to),
+// read as the slope between the ends in ns per photon over the traced triangles (the runner's
+// `triangles` field: the soil cells, the rocks' and the ground's).
+{
+  const p2 = perUnit(native.get('moss/photons-thesis/2k')), p64 = perUnit(native.get('moss/photons-thesis/64k'));
+  if (p2 !== undefined && p64 !== undefined)
+    goal('moss/photons-thesis 2 k → 64 k photons: cost linear in photons (ns per photon within 1.5×, native)',
+      `${p2.toFixed(0)} → ${p64.toFixed(0)} ns: ${(p64 / p2).toFixed(2)}×`, p64 / p2 <= 1.5 && p2 / p64 <= 1.5);
+  // CPU time per photon where the runner printed it (native), else the wall median.
+  const cpuUnit = (r) => r.cpu_ns_per_unit ?? perUnit(r);
+  const rocks = ['1k', '10k', '100k', '1m'].map((k) => native.get(`moss/photons-rocks/${k}`)).filter((r) => r && r.triangles);
+  for (let i = 1; i < rocks.length; ++i) {
+    const a = rocks[i - 1], b = rocks[i];
+    const per10 = Math.pow(cpuUnit(b) / cpuUnit(a), 1 / Math.log10(b.triangles / a.triangles));
+    goal(`${a.workload} → ${b.workload} (${a.triangles.toLocaleString('en-US')} → ${b.triangles.toLocaleString('en-US')} traced triangles): ≤ 2× per 10× (native, CPU ns a photon)`,
+      `${cpuUnit(a).toFixed(0)} → ${cpuUnit(b).toFixed(0)} ns a photon: ${per10.toFixed(2)}× per 10×`, per10 <= 2);
+  }
+  if (rocks.length > 1) {
+    const a = rocks[0], b = rocks[rocks.length - 1];
+    const per10 = Math.pow(cpuUnit(b) / cpuUnit(a), 1 / Math.log10(b.triangles / a.triangles));
+    goal(`moss/photons-rocks, ends (${a.triangles.toLocaleString('en-US')} → ${b.triangles.toLocaleString('en-US')} traced triangles): ≤ 2× per 10× (native, CPU ns a photon)`,
+      `${(cpuUnit(b) / cpuUnit(a)).toFixed(2)}× over ${(b.triangles / a.triangles).toFixed(0)}×: ${per10.toFixed(2)}× per 10×`, per10 <= 2);
+  }
+}
+// The moss photon tracer beside three-mesh-bvh on the same rays (bench/moss_rays_peer.mjs on the file
+// of niwa moss photons --rays; the runners' moss/rays-thesis casts the same rays through Niwa's BVH).
+let mossRaysSection = '';
+{
+  const peers = [...fastestRuns(args['moss-rays']).values()];
+  const n = native.get('moss/rays-thesis'), w = wasm.get('moss/rays-thesis');
+  if (peers.length && (n || w)) {
+    const rows = [];
+    const cpu = (r) => (r.cpu_ns_per_unit === undefined ? '—' : r.cpu_ns_per_unit.toFixed(0));
+    const over = (a, b) => (a === undefined || b === undefined ? '—' : `${(a / b).toFixed(2)}×`);
+    if (n) rows.push(`| Niwa geom::FirstHitWithoutNormal, native (moss/rays-thesis) | ${perUnit(n).toFixed(0)} | ${cpu(n)} | 1.00× | ${runList(n)} | checksum ${n.check} |`);
+    if (w) rows.push(`| Niwa geom::FirstHitWithoutNormal, WASM in node (moss/rays-thesis) | ${perUnit(w).toFixed(0)} | — | ${n ? over(perUnit(w), perUnit(n)) + ' (wall)' : '—'} | ${runList(w)} | checksum ${w.check} |`);
+    for (const p of peers) {
+      const agree = `${p.same_triangle} same triangle, ${p.same_distance_other_triangle} same t on another (an edge), ${p.both_miss} both miss, ${p.differ} differ; build ${fmt(p.build_ms)} ms; checksum ${p.check}`;
+      const ratio = n?.cpu_ns_per_unit !== undefined ? `${over(p.cpu_ns_per_unit, n.cpu_ns_per_unit)} (CPU)` : `${over(perUnit(p), perUnit(n))} (wall)`;
+      rows.push(`| ${p.workload} (node) | ${perUnit(p).toFixed(0)} | ${cpu(p)} | ${n ? ratio : '—'} | ${runList(p)} | ${agree} |`);
+      if (n) goal(`moss rays: ${p.workload} against Niwa native, time per ray (a figure, not a goal)`, `${ratio} Niwa's`);
+      if (w) goal(`moss rays: ${p.workload} against Niwa WASM in node, wall time per ray (a figure, not a goal)`, `${over(perUnit(p), perUnit(w))} Niwa's`);
+    }
+    const same = peers.every((p) => (!n || p.check === n.check) && (!w || p.check === w.check));
+    mossRaysSection = `| ray caster (${(n ?? w).units} rays, ${peers[0].triangles} triangles) | wall ns per ray | CPU ns per ray | / Niwa native | ms, each run | hits against Niwa's |\n|---|--:|--:|--:|--:|---|\n` +
+      rows.join('\n') + '\n\n- ' + (same ? 'The file\'s checksum (Σ triangle + 1 over Niwa\'s hits) equals the runners\': the same rays and hits.' :
+        '**The file\'s checksum differs from the runners\': not the same rays.**') + '\n';
+  }
+}
 const goalsTable = goals.length ? `| goal | measured | |\n|---|---|---|\n${goals.join('\n')}\n` : '';
 
 // Per-sub-model split like thesis table 2.3, from the CLI's --stats (native).
@@ -304,6 +355,7 @@ if (grove.size) {
 const out = `${table}\n${peerTable ? peerTable + '\n' : ''}${notes.map((n) => `- ${n}`).join('\n')}\n` +
   (goalsTable ? `\n### Speed goals\n\n${goalsTable}` : '') +
   (terrainSection ? `\n### Terrain heightfield and its peer\n\n${terrainSection}` : '') +
+  (mossRaysSection ? `\n### The moss photon tracer beside three-mesh-bvh (the same rays)\n\n${mossRaysSection}` : '') +
   (workerTable ? `\n### First grow in the page's worker (ms, medians; bench/worker_first_grow.mjs)\n\n${workerTable}` : '') +
   (splitTable ? `\n### Time per sub-model (like thesis table 2.3; native CLI --stats, one run)\n\n${splitNote}\n\n${splitTable}` : '');
 process.stdout.write(out + (groveSection ? `\n### Grove (100 trees, headless chromium, SwiftShader)\n\n${groveSection}` : ''));

@@ -7,12 +7,14 @@
 // {"build":"native","workload":"grow/sakura-15y","ms":median,"min_ms":..,"reps":.., "check":..},
 // with "check" the workload's checksum (equal on both builds when results agree), plus
 // "unit", "units" and "ns_per_unit" (median) for workloads that count units (sway:
-// internode-steps).
+// internode-steps), natively "cpu_ns_per_unit" (the process's CPU time over the timed
+// repetitions), and the workload's size under its own name (moss rocks: "triangles").
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <string>
 #include <vector>
 
@@ -74,6 +76,7 @@ void Run(const Workload& w, const Options& o) {
   } else {
     check = body();  // warm-up
   }
+  const std::clock_t cpu_start = std::clock();
   while (!w.once && (static_cast<int>(times.size()) < o.min_reps ||
                      (total < o.min_ms && static_cast<int>(times.size()) < o.max_reps))) {
     auto start = std::chrono::steady_clock::now();
@@ -83,6 +86,11 @@ void Run(const Workload& w, const Options& o) {
     times.push_back(ms);
     total += ms;
   }
+  // The process's CPU time over the timed repetitions (native: clock() is CPU time; in WASM it is
+  // not, so not printed): on a loaded machine the wall-clock median is not evidence.
+  const double cpu_ms_per_rep = w.once ? 0.0
+                                       : 1000.0 * static_cast<double>(std::clock() - cpu_start) /
+                                             CLOCKS_PER_SEC / static_cast<double>(times.size());
   std::sort(times.begin(), times.end());
   double median = times[times.size() / 2];
   if (times.size() % 2 == 0) median = 0.5 * (median + times[times.size() / 2 - 1]);
@@ -92,6 +100,17 @@ void Run(const Workload& w, const Options& o) {
     std::snprintf(buffer, sizeof buffer, ",\"unit\":\"%s\",\"units\":%.0f,\"ns_per_unit\":%.3f",
                   w.unit.c_str(), *w.units, median * 1e6 / *w.units);
     per_unit = buffer;
+  }
+  if (*w.units > 0 && cpu_ms_per_rep > 0 && std::string(kBuild) == "native") {
+    char buffer[80];
+    std::snprintf(buffer, sizeof buffer, ",\"cpu_ns_per_unit\":%.3f",
+                  cpu_ms_per_rep * 1e6 / *w.units);
+    per_unit += buffer;
+  }
+  if (*w.size > 0 && !w.size_name.empty()) {
+    char buffer[120];
+    std::snprintf(buffer, sizeof buffer, ",\"%s\":%.0f", w.size_name.c_str(), *w.size);
+    per_unit += buffer;
   }
   std::printf(
       "{\"build\":\"%s\",\"workload\":\"%s\",\"ms\":%.4f,\"min_ms\":%.4f,\"reps\":%zu,"

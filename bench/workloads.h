@@ -23,6 +23,10 @@ struct Workload {
   // prepare(); when > 0 the runners also report the time per unit (`unit` names it).
   std::string unit = "";
   std::shared_ptr<double> units = std::make_shared<double>(0.0);
+  // Optional: the size of what a run works on (e.g. the triangles traced), filled in by prepare();
+  // when > 0 the runner prints it as the field `size_name` (the report's scaling goals read it).
+  std::string size_name = "";
+  std::shared_ptr<double> size = std::make_shared<double>(0.0);
 };
 
 // Every workload, in table order.

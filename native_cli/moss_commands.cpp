@@ -15,6 +15,7 @@
 #include "base/echo.h"
 #include "cli_common.h"
 #include "compose/moss_land.h"
+#include "geom/ray_dump.h"
 #include "io/gltf_writer.h"
 #include "io/mesh_reader.h"
 #include "moss/moss_params.h"
@@ -55,11 +56,13 @@ const run::FieldNames kFieldFlags = {
     {"tree_years", "--tree-years"},
     {"terrain", "--terrain-preset"},
     {"terrain_seed", "--terrain-seed"},
+    {"rock_triangles", "--rock-triangles"},
     {"stats_every", "--every"},
 };
 constexpr FlagRange kDaysRange{0, moss::kMaxMossDays, true};
 constexpr FlagRange kSeedRange{0, static_cast<double>(moss::kMaxMossSeed), true};
 constexpr FlagRange kTreeYearsRange{1, 100, true};  // the tree study's kMaxYears
+constexpr FlagRange kRockTrianglesRange{moss::kRockTrianglesMin, moss::kRockTrianglesMax, true};
 constexpr FlagRange kEveryRange{1, moss::kMaxMossDays, true};
 
 // Ranges of the flags that are not table rows (the soil cell's and the fitness place's inputs).
@@ -171,9 +174,10 @@ int RunFitness(const FitnessOptions& o, std::ostream& out) {
 struct RunOptions {
   StateOptions state;
   std::string scene, indirect, mesh, weather, tree_preset, terrain_preset;
-  double days = 0, photons = 0, seed = 0, tree_years = 10, terrain_seed = 1, every = 0;
+  double days = 0, photons = 0, seed = 0, tree_years = 10, terrain_seed = 1, every = 0,
+         rock_triangles = moss::kRockTrianglesDefault;
   bool stats = false, instancing = false;
-  std::string out_path, csv_path, map = "coverage";
+  std::string out_path, csv_path, rays_path, map = "coverage";
   BudgetOptions budget;
   CLI::App* cmd = nullptr;
 };
@@ -196,6 +200,11 @@ void AddRunOptions(CLI::App* cmd, RunOptions* o, bool with_days) {
                 "RNG seed of that terrain, " + RangeHelp(kSeedRange) +
                     " (default 1; only with a terrain: --terrain-preset or a link's "
                     "scene=terrain)");
+  AddNumberFlag(cmd, "--rock-triangles", &o->rock_triangles, kRockTrianglesRange,
+                "The rocks scene's rock triangles (the ground's 3,200 come on top; each rock an "
+                "icosphere at the next level up), " +
+                    RangeHelp(kRockTrianglesRange) +
+                    " (default 1600; only with --scene rocks or a link's scene=rocks)");
   CLI::Option* mesh = AddInputFlag(
       cmd, "--mesh", &o->mesh,
       "Land mesh instead of a scene: .glb, .gltf or .obj (geology from material names "
@@ -247,6 +256,13 @@ moss::MossState ResolveRunState(const RunOptions& o) {
                          "given without a terrain; must come with --terrain-preset (or a "
                          "link's scene=terrain)"));
     Check(run::RenameField(moss::SetMossTerrainSeed(o.terrain_seed, &state), kFieldFlags));
+  }
+  if (o.cmd->count("--rock-triangles")) {
+    if (state.scene != "rocks" || !o.mesh.empty())
+      Fail(Status::Error("--rock-triangles",
+                         "given without the rocks scene; must come with --scene rocks (or a "
+                         "link's scene=rocks)"));
+    Check(run::RenameField(moss::SetMossRockTriangles(o.rock_triangles, &state), kFieldFlags));
   }
   if (o.cmd->get_option_no_throw("--days") != nullptr && o.cmd->count("--days"))
     Check(run::RenameField(moss::SetMossDays(o.days, &state), kFieldFlags));
@@ -369,14 +385,23 @@ int RunPhotons(const RunOptions& o, std::ostream& out) {
   moss::MossState state = ResolveRunState(o);
   state.days = 1;
   const moss::MossRun run = StartRun(o, state);
-  if (!o.out_path.empty()) {
-    Result<Estimate> e = run.ExportEstimate("svg");
-    Check(AsFlag(e.status(), "--out"));
+  // Each file's estimate first, then both written, all or none.
+  std::vector<std::pair<std::string, std::string>> outputs;  // {flag, format}
+  if (!o.out_path.empty()) outputs.push_back({"--out", "svg"});
+  if (!o.rays_path.empty()) outputs.push_back({"--rays", "rays"});
+  for (const auto& [flag, kind] : outputs) {
+    Result<Estimate> e = run.ExportEstimate(kind);
+    Check(AsFlag(e.status(), flag));
     Check(CheckEstimate(*e, ResolveBudget(o.budget), "lower photons"));
-    StagedOutputs staged;
-    Check(staged.Stage("--out", o.out_path, run.PhotonsSvg(true)));
-    Check(staged.Commit());
   }
+  StagedOutputs staged;
+  if (!o.out_path.empty()) Check(staged.Stage("--out", o.out_path, run.PhotonsSvg(true)));
+  if (!o.rays_path.empty()) {
+    std::vector<geom::CastRay> rays;
+    run.NextDayPhotons(&rays);
+    Check(staged.Stage("--rays", o.rays_path, geom::WriteRayDump(run.cells().mesh, rays)));
+  }
+  Check(staged.Commit());
   out << run.PhotonDayJson() << "\n";
   return 0;
 }
@@ -447,6 +472,11 @@ void AddMossCommands(CLI::App& app, CommandList& commands) {
   AddOutputFlag(photons, "--out", &po->out_path, {".svg"},
                 "Write the stored photons seen from the front (figs 4.1/4.2's right halves): first "
                 "hits and bounced photons in two colours over the land");
+  AddOutputFlag(photons, "--rays", &po->rays_path, {".bin"},
+                "Write every ray the day's photons cast at the land, with the land hit Niwa's "
+                "BVH found, and the land's triangles (the soil cells), as a little-endian binary "
+                "file (geom/ray_dump.h), for timing another ray tracer on the same rays "
+                "(bench/moss_rays_peer.mjs)");
   commands.push_back({photons,
                       [po](std::ostream& out) { return RunPhotons(*po, out); },
                       {"--scene", "plane", "--photons", "256"}});

@@ -33,7 +33,12 @@ constexpr uint64_t kDisplayStream = 5;
 constexpr double kSecondsPerPhoton = 2e-6;   // a path of ~2 hits with the gather's share
 constexpr double kSecondsPerCellDay = 2e-6;  // gather, m/M and the soil of one cell
 constexpr double kSecondsPerMossDay = 4e-6;  // gather, growth and landing of a moss or seed
-constexpr double kBytesPerCell = 800;  // mesh, BVH, values, bucket; the spread lists (<= 96 x 4 B)
+// A cell's bytes at the run's peak (building the cells: the split, mesh, BVH, values, bucket; the
+// spread lists, <= 96 x 4 B), and its build time (soil depth ray, BVH, lists): measured on rocks
+// (2026-12-06, native, CPU time and peak RSS of niwa moss grow --days 0): 1,100 B a cell at
+// 105 k and 412 k cells, 1,375 B at 1.64 M (vectors' growth slack); 10-11 µs a cell. 800 B before.
+constexpr double kBytesPerCell = 1500;
+constexpr double kSecondsPerCellBuild = 2e-5;
 constexpr double kBytesPerPhoton = 3 * 64.0;  // stored photons (~2 a path) and the index
 constexpr double kBytesPerMoss = 200;         // moss or seed, indices
 
@@ -94,7 +99,8 @@ Estimate MossRun::RunEstimate(const MossState& state, std::size_t cells) {
       state.params.Get(MossParam::kMaxMosses) + state.params.Get(MossParam::kSeedCap);
   const double n_cells = static_cast<double>(cells);
   Estimate e;
-  e.seconds = days * (photons * kSecondsPerPhoton + n_cells * kSecondsPerCellDay +
+  e.seconds = n_cells * kSecondsPerCellBuild +
+              days * (photons * kSecondsPerPhoton + n_cells * kSecondsPerCellDay +
                       mosses * kSecondsPerMossDay);
   e.memory_bytes = n_cells * kBytesPerCell + photons * kBytesPerPhoton + mosses * kBytesPerMoss;
   e.what = "growing " + FormatCount(days) + " days of " + FormatCount(photons) + " photons on " +
@@ -107,7 +113,14 @@ Result<MossRun> MossRun::Start(const MossState& state, const Budget& budget) {
     return Status::Error("scene", "'" + state.scene +
                                       "' is another study's land; it is grown through the "
                                       "composition tier (compose/moss_land.h)");
-  Result<MossScene> scene = BuildScene(state.scene);
+  // The rocks (up to 6.5 M triangles): their estimate before the scene is built (the rocks' own
+  // triangles are the fewest cells).
+  if (state.scene == "rocks" && state.rock_triangles >= kRockTrianglesMin &&
+      state.rock_triangles <= kRockTrianglesMax)
+    NIWA_RETURN_IF_ERROR(CheckEstimate(RunEstimate(state, RockTrianglesBuilt(state.rock_triangles)),
+                                       budget,
+                                       "lower days, photons, max_mosses or rock_triangles"));
+  Result<MossScene> scene = BuildScene(state.scene, state.rock_triangles);
   if (!scene.ok()) return scene.status();
   return StartOnScene(state, std::move(*scene), budget, "");
 }
@@ -722,6 +735,8 @@ void MossRun::AddLandFields(nlohmann::ordered_json* j) const {
   } else if (state_.scene == kTerrainLand) {
     (*j)["terrain"] = state_.terrain;
     (*j)["terrain_seed"] = state_.terrain_seed;
+  } else if (state_.scene == "rocks" && state_.rock_triangles != kRockTrianglesDefault) {
+    (*j)["rock_triangles"] = state_.rock_triangles;
   }
 }
 
@@ -774,15 +789,32 @@ Result<Estimate> MossRun::ExportEstimateAt(const std::string& format, double mos
              FormatCount(photons) + " photons)";
     return held + e;
   }
-  return Status::Error("format", "'" + format + "' is unknown; must be glb, json, csv or svg");
+  if (format == "rays") {
+    // geom/ray_dump.h: the cells' mesh (3 corners a cell) and the rays, each a CastRay (40 B)
+    // and its 36 bytes, traced again (the next day's photons). A path casts 1 + its reflections:
+    // 1/(1 − ρ) on average for the roulette's larger ρ, at most max_bounces + 1; 1.5x that.
+    const double rho = light_.indirect ? std::max(light_.rho_mesh, light_.rho_moss) : 0.0;
+    const double per_path = std::min(light_.max_bounces + 1.0, 1.0 / std::max(1e-3, 1.0 - rho));
+    const double rays = 1.5 * per_path * state_.params.Get(MossParam::kPhotons);
+    const double bytes = geom::kRayDumpHeaderBytes + 48.0 * cells + 36.0 * rays;
+    Estimate e;
+    e.memory_bytes = 2.0 * bytes + 40.0 * rays + kBytesPerPhoton * rays;
+    e.seconds = kSecondsPerPhoton * state_.params.Get(MossParam::kPhotons) + 1e-8 * bytes;
+    e.what = "writing the photons' rays (" + FormatCount(cells) + " cells, " + FormatCount(rays) +
+             " rays)";
+    return held + e;
+  }
+  return Status::Error("format",
+                       "'" + format + "' is unknown; must be glb, json, csv, svg or rays");
 }
 
-PhotonMap MossRun::NextDayPhotons() const {
+PhotonMap MossRun::NextDayPhotons(std::vector<geom::CastRay>* rays) const {
   Pcg32 rng = world_.photon_rng;
   PhotonMap map;
   MossOccluders occluders;
   occluders.Build(CentresOf(world_.mosses), 0.5 * rules_.s);
-  TracePhotons(cells_, occluders, light_, state_.params.GetInt(MossParam::kPhotons), &rng, &map);
+  TracePhotons(cells_, occluders, light_, state_.params.GetInt(MossParam::kPhotons), &rng, &map,
+               rays);
   return map;
 }
 

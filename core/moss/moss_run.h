@@ -134,8 +134,8 @@ class MossRun : public run::StudyRun {
   Result<gltf::Document> Document() const override;
   std::string StatsJson() const override;
   std::string Hash(const std::string& prefix) const override;
-  // format "glb", "json", "csv", "svg" (the photons): what writing it needs now, with what the run
-  // holds (cells, photons).
+  // format "glb", "json", "csv", "svg" (the photons), "rays" (the next day's rays,
+  // geom/ray_dump.h): what writing it needs now, with what the run holds (cells, photons).
   Result<Estimate> ExportEstimate(const std::string& format) const override;
   // The same with the mosses at their cap (max_mosses), and the days' time added, for a refusal
   // before the days are grown.
@@ -160,8 +160,9 @@ class MossRun : public run::StudyRun {
   // photons emitted, stored and by depth, power, and per region the stored photons (first hits,
   // bounced) and the cells' mean gathered S.
   std::string PhotonDayJson() const;
-  // The next day's photon map (traced through the land and today's mosses, without advancing).
-  PhotonMap NextDayPhotons() const;
+  // The next day's photon map (traced through the land and today's mosses, without advancing);
+  // with `rays`, every ray it cast at the land and the hit (photons.h TracePhotons).
+  PhotonMap NextDayPhotons(std::vector<geom::CastRay>* rays = nullptr) const;
   // The stored photons of the next day's map (`next_day`) or of the last grown day's, seen from
   // the front as in figs 4.1/4.2 (moss_svg.h).
   std::string PhotonsSvg(bool next_day) const;

@@ -86,6 +86,13 @@ Status SetMossTerrainSeed(double seed, MossState* state) {
   return Status::Ok();
 }
 
+Status SetMossRockTriangles(double triangles, MossState* state) {
+  NIWA_RETURN_IF_ERROR(
+      CheckValue("rock_triangles", triangles, kRockTrianglesMin, kRockTrianglesMax, true));
+  state->rock_triangles = static_cast<int>(triangles);
+  return Status::Ok();
+}
+
 void ApplyMossHash(std::string_view hash, std::string_view prefix, MossState* state,
                    std::vector<std::string>* notices) {
   const std::string pre(prefix);
@@ -103,13 +110,14 @@ void ApplyMossHash(std::string_view hash, std::string_view prefix, MossState* st
   for (const auto& [key, value] : pairs) {
     if (key == pre + "preset") continue;
     if (key == pre + "days" || key == pre + "seed" || key == pre + "tree_years" ||
-        key == pre + "terrain_seed") {
+        key == pre + "terrain_seed" || key == pre + "rock_triangles") {
       const std::optional<double> x = ParseNumber(value);
       const Status s = !x ? Status::Error(key, "'" + Printable(value) + "' is not a number")
-                       : key == pre + "days"       ? SetMossDays(*x, state)
-                       : key == pre + "seed"       ? SetMossSeed(*x, state)
-                       : key == pre + "tree_years" ? SetMossTreeYears(*x, state)
-                                                   : SetMossTerrainSeed(*x, state);
+                       : key == pre + "days"           ? SetMossDays(*x, state)
+                       : key == pre + "seed"           ? SetMossSeed(*x, state)
+                       : key == pre + "tree_years"     ? SetMossTreeYears(*x, state)
+                       : key == pre + "rock_triangles" ? SetMossRockTriangles(*x, state)
+                                                       : SetMossTerrainSeed(*x, state);
       if (!s.ok()) notices->push_back(Printable(key) + ": " + s.message() + "; dropped");
       continue;
     }
@@ -139,6 +147,8 @@ std::string EncodeMossHash(const MossState& state, std::string_view prefix) {
   } else if (state.scene == kTerrainLand) {
     out += "&" + pre + "terrain=" + PercentEncode(state.terrain) + "&" + pre +
            "terrain_seed=" + std::to_string(state.terrain_seed);
+  } else if (state.scene == "rocks" && state.rock_triangles != kRockTrianglesDefault) {
+    out += "&" + pre + "rock_triangles=" + std::to_string(state.rock_triangles);
   }
   return out + EncodeChangedParams(state.params, base.ok() ? *base : MossParams(), prefix);
 }
@@ -186,9 +196,16 @@ Status ApplyMossStateJson(const std::string& text, MossState* state) {
       return Status::Error("terrain_seed", "must be a whole number in [0, 4294967295]");
     NIWA_RETURN_IF_ERROR(SetMossTerrainSeed(j["terrain_seed"].get<double>(), &next));
   }
-  NIWA_RETURN_IF_ERROR(ApplyParamsJson(
-      text, &next.params,
-      {"preset", "scene", "days", "seed", "tree", "tree_years", "terrain", "terrain_seed"}));
+  if (j.contains("rock_triangles")) {
+    if (!j["rock_triangles"].is_number())
+      return Status::Error("rock_triangles", "must be a whole number in [" +
+                                                 std::to_string(kRockTrianglesMin) + ", " +
+                                                 std::to_string(kRockTrianglesMax) + "]");
+    NIWA_RETURN_IF_ERROR(SetMossRockTriangles(j["rock_triangles"].get<double>(), &next));
+  }
+  NIWA_RETURN_IF_ERROR(ApplyParamsJson(text, &next.params,
+                                       {"preset", "scene", "days", "seed", "tree", "tree_years",
+                                        "terrain", "terrain_seed", "rock_triangles"}));
   NIWA_RETURN_IF_ERROR(CheckMossParams(next.params));  // the cross-row checks at load
   *state = next;
   return Status::Ok();
@@ -206,6 +223,8 @@ std::string MossStateJson(const MossState& state) {
   } else if (state.scene == kTerrainLand) {
     j["terrain"] = state.terrain;
     j["terrain_seed"] = state.terrain_seed;
+  } else if (state.scene == "rocks" && state.rock_triangles != kRockTrianglesDefault) {
+    j["rock_triangles"] = state.rock_triangles;
   }
   j["params"] = nlohmann::json::parse(ParamsToJson(state.params, -1));
   return j.dump();

@@ -6,7 +6,7 @@
 // RNG seed; the composition tier grows it, core/compose/moss_land.h). Does not: read files, grow
 // a land or check that a tree or terrain preset exists (the composition tier does), or know a
 // front end (errors name state fields: "preset", "days", "seed", "scene", "tree", "tree_years",
-// "terrain", "terrain_seed", a row key).
+// "terrain", "terrain_seed", "rock_triangles", a row key).
 #pragma once
 
 #include <cstdint>
@@ -16,6 +16,7 @@
 
 #include "base/status.h"
 #include "moss/moss_params.h"
+#include "moss/scenes.h"
 
 namespace niwa::moss {
 
@@ -32,6 +33,8 @@ struct MossState {
   // preset) and its RNG seed.
   std::string terrain = "improved";
   uint64_t terrain_seed = 1;
+  // With scene "rocks": the rocks' triangles (scenes.h: the next icosphere level up).
+  int rock_triangles = kRockTrianglesDefault;
 };
 
 // The scene names of a land grown by another study (through core/compose, never core/moss).
@@ -54,6 +57,8 @@ Status SetMossTree(std::string_view name, MossState* state);
 Status SetMossTreeYears(double years, MossState* state);
 Status SetMossTerrain(std::string_view name, MossState* state);
 Status SetMossTerrainSeed(double seed, MossState* state);
+// "rock_triangles" whole in [kRockTrianglesMin, kRockTrianglesMax] (read on scene rocks only).
+Status SetMossRockTriangles(double triangles, MossState* state);
 
 // Resets the values to the preset's (moss_params.h MossPreset); the error names "preset".
 Status SetMossPreset(std::string_view name, MossState* state);
@@ -64,16 +69,17 @@ Status SetMossPreset(std::string_view name, MossState* state);
 void ApplyMossHash(std::string_view hash, std::string_view prefix, MossState* state,
                    std::vector<std::string>* notices);
 
-// A state file {preset, scene, days, seed, tree, tree_years, terrain, terrain_seed, params: {key:
-// value}} (any subset): the preset first,
+// A state file {preset, scene, days, seed, tree, tree_years, terrain, terrain_seed,
+// rock_triangles, params: {key: value}} (any subset): the preset first,
 // then the others; a key outside these, a repeated key or a wrong type is an error naming it
-// (nothing applied). MossStateJson writes every field (the land's on its scene only) and every
-// row, read back to the same state.
+// (nothing applied). MossStateJson writes every field (the land's on its scene only;
+// rock_triangles on rocks where it differs from 1,600) and every row, read back to the same state.
 Status ApplyMossStateJson(const std::string& text, MossState* state);
 std::string MossStateJson(const MossState& state);
 
 // "preset=NAME", then scene, days and seed where they differ from the defaults (thesis, 300, 1),
-// the land's fields on its scene (tree and tree_years; terrain and terrain_seed), then every row
+// the land's fields on its scene (tree and tree_years; terrain and terrain_seed; rock_triangles on
+// rocks where it differs from 1,600), then every row
 // that differs from the preset, keys prefixed.
 std::string EncodeMossHash(const MossState& state, std::string_view prefix = "");
 

@@ -261,7 +261,7 @@ void EmitSunPhotonByRejection(const PhotonLight& light, Pcg32* rng, glm::dvec3* 
 // ---- tracing
 
 void TracePhotons(const SoilCells& cells, const MossOccluders& mosses, const PhotonLight& light,
-                  int photons, Pcg32* rng, PhotonMap* map) {
+                  int photons, Pcg32* rng, PhotonMap* map, std::vector<geom::CastRay>* rays) {
   map->photons.clear();
   map->stored_by_depth.assign(static_cast<std::size_t>(light.max_bounces) + 1, 0);
   map->power_by_depth.assign(static_cast<std::size_t>(light.max_bounces) + 1, 0.0);
@@ -302,6 +302,9 @@ void TracePhotons(const SoilCells& cells, const MossOccluders& mosses, const Pho
       const geom::RayHit hit =
           geom::FirstHitWithoutNormal(cells.mesh, cells.bvh, glm::vec3(origin), glm::vec3(dir),
                                       std::numeric_limits<float>::infinity());
+      if (rays != nullptr)
+        rays->push_back({glm::vec3(origin), glm::vec3(dir), std::numeric_limits<float>::infinity(),
+                         hit.hit, hit.triangle, hit.distance});
       double t_moss = 0;
       uint32_t moss = 0;
       const double t_mesh =

@@ -14,6 +14,7 @@
 
 #include "base/status.h"
 #include "geom/radius_grid.h"
+#include "geom/ray_dump.h"
 #include "moss/moss_params.h"
 #include "moss/soil_cells.h"
 #include "random/pcg32.h"
@@ -96,9 +97,11 @@ void EmitSunPhotonByRejection(const PhotonLight& light, Pcg32* rng, glm::dvec3* 
 
 // The day's photon pass: `photons` accepted emissions (sun and, with S_sky > 0 and indirect on, sky
 // photons in the budget's share f_sky = 2·S_sky/(S_sun + 2·S_sky)) traced through the land and the
-// mosses. Reuses map's arrays.
+// mosses. Reuses map's arrays. With `rays`: every ray cast at the land appended, in order, with
+// the land hit it found (the moss spheres are not in it; geom/ray_dump.h writes them out).
 void TracePhotons(const SoilCells& cells, const MossOccluders& mosses, const PhotonLight& light,
-                  int photons, Pcg32* rng, PhotonMap* map);
+                  int photons, Pcg32* rng, PhotonMap* map,
+                  std::vector<geom::CastRay>* rays = nullptr);
 
 // The soil cells' share of a day's gather, spread from the photons (spec §4.6): for each stored
 // land photon in map order, its power added to every cell whose centroid lies within r_gather of it

@@ -2,6 +2,7 @@
 // rocks (scenes.h).
 #include "moss/scenes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <glm/geometric.hpp>
@@ -294,6 +295,12 @@ MossScene RocksScene(int rock_triangles) {
 const std::vector<std::string>& SceneNames() {
   static const std::vector<std::string> names = {"plane", "thesis", "walls", "rocks"};
   return names;
+}
+
+std::size_t RockTrianglesBuilt(int rock_triangles) {
+  std::size_t triangles = 5 * 20;
+  while (triangles < static_cast<std::size_t>(std::max(rock_triangles, 0))) triangles *= 4;
+  return triangles;
 }
 
 Result<MossScene> BuildScene(std::string_view name, int rock_triangles) {

@@ -7,6 +7,7 @@
 // know a run.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -53,6 +54,10 @@ const std::vector<std::string>& SceneNames();
 constexpr int kRockTrianglesDefault = 5 * 20 * 16;  // 1,600 (two subdivisions)
 constexpr int kRockTrianglesMin = 100;
 constexpr int kRockTrianglesMax = 5 * 20 * 65536;  // 6,553,600 (eight subdivisions)
+
+// The rocks' own triangles the knob gives: 5·20·4^L at the first level L with at least
+// `rock_triangles` (the ground's come on top). For an estimate before the scene is built.
+std::size_t RockTrianglesBuilt(int rock_triangles);
 
 // The built-in scene `name`; the error names "scene" (and the allowed names) or "rock_triangles".
 Result<MossScene> BuildScene(std::string_view name, int rock_triangles = kRockTrianglesDefault);

@@ -245,15 +245,18 @@ Result<SoilCells> MakeSoilCells(const MossScene& scene, const SoilCellOptions& o
     }
     return tri;
   };
-  // The edge: soil_edge, doubled while the cells would exceed the cap.
+  // The edge: soil_edge, doubled while the cells would exceed the cap: max_cells, or the land's
+  // own triangles when it has more (each triangle is one cell at least; the run's estimate
+  // decides whether that many are grown).
+  const std::size_t cap = std::max(options.max_cells, land.triangle_count());
   double edge = options.soil_edge;
   for (int doubling = 0;; ++doubling) {
     std::size_t count = 0;
-    for (std::size_t t = 0; t < land.triangle_count() && count <= options.max_cells; ++t)
-      count += SplitCellTriangle(tri_of(t), edge, nullptr, options.max_cells - count);
-    if (count <= options.max_cells) break;
-    if (doubling == 16 || count == land.triangle_count())
-      return Status::Error("scene", "needs more than " + std::to_string(options.max_cells) +
+    for (std::size_t t = 0; t < land.triangle_count() && count <= cap; ++t)
+      count += SplitCellTriangle(tri_of(t), edge, nullptr, cap - count);
+    if (count <= cap) break;
+    if (doubling == 16)
+      return Status::Error("scene", "needs more than " + std::to_string(cap) +
                                         " soil cells even at soil_edge " + std::to_string(edge) +
                                         " (each triangle is one cell at least)");
     edge *= 2;
@@ -261,7 +264,8 @@ Result<SoilCells> MakeSoilCells(const MossScene& scene, const SoilCellOptions& o
   cells.soil_edge = edge;
   if (edge != options.soil_edge)
     cells.notices.push_back("soil_edge doubled to " + std::to_string(edge) + " m: more than " +
-                            std::to_string(options.max_cells) + " soil cells");
+                            std::to_string(cap) + " soil cells" +
+                            (cap > options.max_cells ? " (the land's own triangles)" : ""));
   std::vector<CellSplitTri> split;
   for (std::size_t t = 0; t < land.triangle_count(); ++t)
     SplitCellTriangle(tri_of(t), edge, &split, std::numeric_limits<std::size_t>::max());

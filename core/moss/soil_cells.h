@@ -23,6 +23,9 @@
 
 namespace niwa::moss {
 
+// max_cells: a land of more triangles keeps its own (each is one cell at least: its cap is its
+// triangle count), and the run's estimate of memory and time, not a count, says whether it is
+// grown (moss_run.h RunEstimate).
 struct SoilCellOptions {
   double soil_edge = 0.075;        // m (row soil_edge)
   double h_max = 1000;             // mm: open ground and the cap (row h_max)
@@ -54,7 +57,8 @@ constexpr double kVerticalNy = 0.1;
 constexpr int kSkyViewRays = 64;
 
 // The soil cells of a scene (built-in, or from SceneFromMesh). Error "scene" for a mesh without
-// triangles, or when even soil_edge doubled 16 times leaves more than max_cells cells.
+// triangles, or when even soil_edge doubled 16 times leaves more than max(max_cells, triangles)
+// cells.
 Result<SoilCells> MakeSoilCells(const MossScene& scene, const SoilCellOptions& options);
 
 // The nearest of the three reference colours of fig 3.1 (spec §1.2: humus #4A3322, sandy

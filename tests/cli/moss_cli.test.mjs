@@ -6,7 +6,8 @@
 // byte on every built-in scene, both presets, seeds 1-2, at a few days and photons; moss.json's
 // cells; `--out moss.glb` (merged and --instancing, every --map) native == WASM and gltf-validator
 // clean, its estimate refused before the days are grown with no file left; --csv days; --weather
-// and --params files, hostile ones refused naming the day and field; photons.svg from both commands.
+// and --params files, hostile ones refused naming the day and field; photons.svg from both commands;
+// the rays file of `moss photons --rays`; the rocks scene's --rock-triangles and its budget.
 // The WASM runs of each part are prepared ahead, batched in niwa_cli_batch.js (the same RunCli; a
 // niwa.js start under node costs about 0.3 CPU s), every NIWA_MOSS_WASM_EVERY-th case (default 4)
 // and the few that depend on an earlier result as one niwa.js process each (support/cli_batch.mjs
@@ -270,6 +271,49 @@ for (const scene of ['plane', 'thesis', 'walls', 'rocks']) {
 {
   const a = run(native, ['moss', 'scenes']), b = run(wasm, ['moss', 'scenes']);
   check(`moss scenes: native == WASM, ${JSON.parse(a).scenes.map((s) => `${s.name} ${s.cells} cells`).join(', ')}`, a === b);
+}
+
+// --rays (geom/ray_dump.h): the day's rays at the land and Niwa's hits, the same bytes in both
+// builds, the header's counts and a ray for every stored land photon or escape; --rock-triangles
+// (the rocks scene's size) grows the rocks on a million triangles only within the budget:
+// refused up front naming --max-seconds at 300 days, and without the rocks scene naming itself.
+{
+  const raysArgs = (file) => ['moss', 'photons', '--scene', 'walls', '--photons', '1024', '--rays', file];
+  const refusedRocks = ['moss', 'grow', '--scene', 'rocks', '--rock-triangles', '1000000', '--max-memory', '3G', '--stats'];
+  const overMemory = ['moss', 'grow', '--scene', 'rocks', '--rock-triangles', '1000000', '--days', '3'];
+  const notRocks = ['moss', 'grow', '--scene', 'thesis', '--rock-triangles', '2000', '--days', '1'];
+  const outOfRange = ['moss', 'grow', '--scene', 'rocks', '--rock-triangles', '99', '--days', '1'];
+  const badEnding = ['moss', 'photons', '--scene', 'plane', '--rays', join(dir, 'rays.txt')];
+  const rocksLink = ['moss', 'grow', '--scene', 'rocks', '--rock-triangles', '6400', '--days', '2', '--photons', '256', '--stats'];
+  await W.prepare([raysArgs(join(dir, 'w-rays.bin')), refusedRocks, overMemory, notRocks, outOfRange, badEnding, rocksLink]);
+  const day = JSON.parse(run(native, raysArgs(join(dir, 'n-rays.bin'))));
+  run(wasm, raysArgs(join(dir, 'w-rays.bin')));
+  const a = readFileSync(join(dir, 'n-rays.bin')), b = readFileSync(join(dir, 'w-rays.bin'));
+  const words = new Uint32Array(a.buffer, a.byteOffset + 8, 4);
+  const [vertices, triangles, rays] = words;
+  const at = 24 + 12 * vertices + 12 * triangles;
+  let hits = 0;
+  for (let i = 0; i < rays; ++i) hits += a.readInt32LE(at + 36 * i + 28) >= 0 ? 1 : 0;
+  const stored = day.stored_by_depth.reduce((x, y) => x + y, 0);
+  check(`moss photons --rays: native == WASM (${a.length} bytes): ${triangles} triangles, ${rays} rays, ${hits} hit the land; ${stored} photons stored`,
+    a.equals(b) && a.subarray(0, 8).toString() === 'NIWARAY1' && a.length === at + 36 * rays && rays >= 1024 && hits > 0 && hits <= rays);
+  for (const cmd of [native, wasm]) {
+    const r = spawn(cmd, refusedRocks);
+    check(`${buildName(cmd)} moss grow --scene rocks --rock-triangles 1000000 --max-memory 3G (300 days): exit ${r.status}, "${r.stderr.trim()}"`,
+      r.status === 2 && r.stderr.startsWith('niwa: error: --max-seconds: growing 300 days') && r.stderr.includes('1,638,400 soil cells') && r.stdout === '');
+    const m = spawn(cmd, overMemory);
+    check(`${buildName(cmd)} moss grow --scene rocks --rock-triangles 1000000 --days 3 (the default 2 GB): exit ${m.status}, "${m.stderr.trim()}"`,
+      m.status === 2 && m.stderr.startsWith('niwa: error: --max-memory: growing 3 days') && m.stderr.includes('1,638,400 soil cells') && m.stdout === '');
+    for (const [args, want] of [[notRocks, '--rock-triangles: given without the rocks scene'], [outOfRange, '--rock-triangles'], [badEnding, '--rays']]) {
+      const q = spawn(cmd, args);
+      check(`${buildName(cmd)} ${args.slice(1).join(' ')}: exit ${q.status}, "${q.stderr.trim()}"`,
+        q.status === 2 && q.stderr.trim().split('\n').length === 1 && q.stderr.startsWith(`niwa: error: ${want}`) && !existsSync(join(dir, 'rays.txt')));
+    }
+  }
+  const rocks = run(native, rocksLink), rocksW = run(wasm, rocksLink);
+  const st = JSON.parse(rocks);
+  check(`moss grow --scene rocks --rock-triangles 6400: native == WASM; rock_triangles ${st.rock_triangles} in the stats, url ${st.url}`,
+    JSON.stringify(withoutMs(st)) === JSON.stringify(withoutMs(JSON.parse(rocksW))) && st.rock_triangles === 6400 && st.url.includes('rock_triangles=6400'));
 }
 
 // Hostile values: exit 2, one line naming the flag, in both builds.

@@ -56,8 +56,26 @@ TEST(MossSoilCells, OverTheCapTheEdgeDoublesOrTheSceneIsRefused) {
   EXPECT_EQ(cells.size(), 6400u);
   EXPECT_DOUBLE_EQ(cells.soil_edge, 0.06);
   ASSERT_EQ(cells.notices.size(), 1u);
-  options.max_cells = 1000;  // fewer than the triangles
-  EXPECT_EQ(MakeSoilCells(*BuildScene("plane"), options).status().field(), "scene");
+  // Fewer than the land's 3,200 triangles: each triangle is one cell (the cap is the land's own
+  // count; the run's estimate decides whether it is grown), the edge doubled until none splits.
+  options.max_cells = 1000;
+  const SoilCells own = *MakeSoilCells(*BuildScene("plane"), options);
+  EXPECT_EQ(own.size(), 3200u);
+  EXPECT_DOUBLE_EQ(own.soil_edge, 0.12);
+  ASSERT_EQ(own.notices.size(), 1u);
+  EXPECT_NE(own.notices[0].find("the land's own triangles"), std::string::npos) << own.notices[0];
+  // Refused when even 16 doublings leave a triangle split: one 1 km triangle at 5 mm.
+  MossScene huge;
+  huge.mesh.positions = {{0, 0, 0}, {0, 0, 1000}, {1000, 0, 0}};
+  huge.mesh.indices = {0, 1, 2};
+  huge.geology = {Geology::kHumus};
+  huge.region = {0};
+  huge.region_names = {"all"};
+  options.soil_edge = 0.005;
+  options.max_cells = 1;
+  const Status refused = MakeSoilCells(huge, options).status();
+  EXPECT_EQ(refused.field(), "scene");
+  EXPECT_NE(refused.message().find("even at soil_edge"), std::string::npos) << refused.message();
 }
 
 TEST(MossSoilCells, ThesisSoilDepthByFaceClass) {

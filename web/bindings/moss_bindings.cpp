@@ -86,6 +86,8 @@ ordered_json MossStateObject(const moss::MossState& state) {
   } else if (state.scene == moss::kTerrainLand) {
     j["terrain"] = state.terrain;
     j["terrain_seed"] = state.terrain_seed;
+  } else if (state.scene == "rocks" && state.rock_triangles != moss::kRockTrianglesDefault) {
+    j["rock_triangles"] = state.rock_triangles;
   }
   j["params"] = ordered_json::parse(ParamsToJson(state.params, -1));
   return j;
