@@ -270,7 +270,9 @@ Estimate TreeRun::ExportWork(const TreeExportRequest& request) const {
           static_cast<double>(request.sway_triangles) >= FullMeshTriangles(counts)) {
         return clip;
       }
-      return clip + EstimateLodExport(counts, request.sway_triangles, false);
+      Estimate both = clip + EstimateLodExport(counts, request.sway_triangles, false);
+      both.what = clip.what;  // the refusal names the clip, whose duration and fps the user sets
+      return both;
     }
     case Kind::kGlb:
       break;
