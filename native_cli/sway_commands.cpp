@@ -19,6 +19,8 @@ namespace {
 const FlagRange kTips = {1, 50, true};
 const FlagRange kFps = {1, 240, false};
 const FlagRange kMaxJoints = {2, static_cast<double>(kMaxGltfJoints), true};
+const FlagRange kSwayTriangles = {static_cast<double>(kMinLodTriangles), 100000000, true};
+const FlagRange kKeyError = {0, 1, false, " (metres)"};
 
 struct SwayOptions {
   StateOptions state;
@@ -29,7 +31,10 @@ struct SwayOptions {
   int tips = 4;
   std::string out_path;  // .glb (skinned, animated), .csv or .svg
   double fps = 30;       // keys per second in the .glb
-  double max_joints = static_cast<double>(kDefaultSwayJoints);  // the .glb skin's joints
+  double max_joints = static_cast<double>(kDefaultSwayJoints);        // the .glb skin's joints
+  double max_triangles = static_cast<double>(kDefaultSwayTriangles);  // the .glb's mesh
+  bool full_mesh = false;                                             // --full-mesh
+  double key_error = kDefaultSwayKeyError;  // the clip's key reduction bound, metres
 };
 
 // "m/s, 0..100": a table row's unit and range for a flag's help.
@@ -74,6 +79,21 @@ void AddSwayOptions(CLI::App* cmd, SwayOptions* o) {
                         "); a tree that needs more for the exact skin gets node points "
                         "grouped, each group turning with one rod"),
       "--out", {".glb"});
+  OnlyWith(AddNumberFlag(cmd, "--max-triangles", &o->max_triangles, kSwayTriangles,
+                         "Triangles of the --out .glb's mesh, " + RangeHelp(kSwayTriangles) +
+                             " (default " + std::to_string(kDefaultSwayTriangles) +
+                             "): a larger tree is skinned on its budgeted mesh (tubes, branch "
+                             "and leaf-cluster cards, twig cones; docs/lod-export.md)"),
+           "--out", {".glb"});
+  OnlyWith(cmd->add_flag("--full-mesh", o->full_mesh,
+                         "Skin the full mesh in --out .glb whatever its triangles"),
+           "--out", {".glb"});
+  OnlyWith(AddNumberFlag(cmd, "--key-error", &o->key_error, kKeyError,
+                         "Keys of the --out .glb clip left out while their joints' interpolation "
+                         "stays within this many metres at every vertex, " +
+                             RangeHelp(kKeyError) + " (default " +
+                             FormatNumber(kDefaultSwayKeyError) + "; 0 keeps every key)"),
+           "--out", {".glb"});
 }
 
 // The flag whose values made CheckSwayParams fail: the last given of --gust, --set-sway, --set,
@@ -123,6 +143,11 @@ int RunSwayCommand(const SwayOptions& o, const CLI::App& cmd, std::ostream& out)
   const std::string out_ext = Extension(o.out_path);  // its ending and --fps: the shared flags
   Check(CheckFlag("--fps", o.fps, kFps));
   Check(CheckFlag("--max-joints", o.max_joints, kMaxJoints));
+  Check(CheckFlag("--max-triangles", o.max_triangles, kSwayTriangles));
+  Check(CheckFlag("--key-error", o.key_error, kKeyError));
+  if (o.full_mesh && cmd.count("--max-triangles")) {
+    throw BadInput{"--full-mesh: give it without --max-triangles"};
+  }
   TreeState state = ResolveTreeState(o.state, cmd);
   SwayParams params = ResolveSwayParams(o, cmd, &state.params);
   Result<TreeRun> started = TreeRun::Start(state, ResolveBudget(o.state.budget));
@@ -135,6 +160,9 @@ int RunSwayCommand(const SwayOptions& o, const CLI::App& cmd, std::ostream& out)
   glb_request.kind = TreeExportRequest::Kind::kSwayGlb;
   glb_request.fps = o.fps;
   glb_request.max_joints = static_cast<std::size_t>(o.max_joints);
+  glb_request.sway_triangles = o.full_mesh ? -1 : static_cast<long>(o.max_triangles);
+  glb_request.key_error = o.key_error;
+  glb_request.lod_field = "--max-triangles";
   {
     // Every output's estimate, refused before any work starts (so no output is left behind).
     Estimate total = run.SwayEstimate(o.tips);
@@ -146,9 +174,13 @@ int RunSwayCommand(const SwayOptions& o, const CLI::App& cmd, std::ostream& out)
   // Every output is staged first and renamed only when all were written (all or none).
   StagedOutputs outputs;
   SwayGlbInfo glb_info;
-  if (out_ext == ".glb") {  // core/sway/sway_gltf: exact two-joint skinning of eq. 3.15
-    Result<std::string> glb = run.Export(glb_request, &glb_info);
-    if (!glb.ok()) throw BadInput{"--out: " + glb.status().Line()};
+  LodChoice glb_choice;
+  if (out_ext == ".glb") {  // core/sway/sway_gltf's skin on render/tree_lod_sway's mesh
+    Result<std::string> glb = run.Export(glb_request, &glb_info, &glb_choice);
+    if (!glb.ok()) {
+      if (glb.status().field() == "--max-triangles") throw BadInput{glb.status().Line()};
+      throw BadInput{"--out: " + glb.status().Line()};
+    }
     Check(outputs.Stage("--out", o.out_path, *glb));
   }
   SwayRun sway = run.Sway(o.tips);
@@ -188,6 +220,11 @@ int RunSwayCommand(const SwayOptions& o, const CLI::App& cmd, std::ostream& out)
       g["max_error_m"] = glb_info.max_error;
       g["mean_error_m"] = glb_info.mean_error;
       g["max_motion_m"] = glb_info.max_motion;
+      g["joint_keys"] = glb_info.joint_keys;  // the clip's keys (docs/sway-model.md "Clip keys")
+      g["full_joint_keys"] = glb_info.full_joint_keys;
+      g["key_error_m"] = glb_info.key_error;
+      g["full_mesh"] = glb_choice.full;  // the mesh (docs/lod-export.md)
+      g["triangles"] = glb_choice.triangles;
       j["glb"] = g;
     }
     out << j.dump() << "\n";

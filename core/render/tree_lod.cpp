@@ -103,6 +103,18 @@ void PushTwig(const glm::vec3& base, const glm::vec3& tip, float radius_m, MeshB
   }
 }
 
+// The node of `branch` (id `id`) nearest each vertex's place along its axis (`along`, 0..1, one a
+// vertex from `first` on), appended to the vertices' ids.
+void AppendAxisNodes(const std::vector<float>& along, std::size_t first, std::size_t id,
+                     const Branch& branch, std::vector<uint32_t>* branch_id,
+                     std::vector<uint32_t>* node_index) {
+  const float last = static_cast<float>(branch.nodes.size() - 1);
+  for (std::size_t v = first; v < along.size(); ++v) {
+    branch_id->push_back(static_cast<uint32_t>(id));
+    node_index->push_back(static_cast<uint32_t>(std::lround(along[v] * last)));
+  }
+}
+
 // Branch kinds of one level, thinnest last in the demotion order.
 enum class Kind : int { kNone = 0, kTwig = 1, kCard = 2, kTube = 3 };
 
@@ -457,6 +469,8 @@ Result<LodMesh> BuildLevel(const Tree& tree, long max_triangles, const LodOption
         AppendAxisWind(out.cards.positions, first, branch.nodes.front() * scale,
                        branch.nodes.back() * scale, static_cast<float>(levels[i]),
                        WindPhase(static_cast<uint32_t>(i)), &out.card_wind);
+        AppendAxisNodes(out.card_wind[1].values, first, i, branch, &out.card_branch_id,
+                        &out.card_node_index);
         break;
       }
       case Kind::kTwig: {
@@ -467,6 +481,8 @@ Result<LodMesh> BuildLevel(const Tree& tree, long max_triangles, const LodOption
         AppendAxisWind(out.twigs.positions, first, branch.nodes.front() * scale,
                        branch.nodes.back() * scale, static_cast<float>(levels[i]),
                        WindPhase(static_cast<uint32_t>(i)), &out.twig_wind);
+        AppendAxisNodes(out.twig_wind[1].values, first, i, branch, &out.twig_branch_id,
+                        &out.twig_node_index);
         break;
       }
       case Kind::kNone:
@@ -495,6 +511,27 @@ Result<LodMesh> BuildLevel(const Tree& tree, long max_triangles, const LodOption
                                      static_cast<float>(deepest));
       out.card_wind[1].values.insert(out.card_wind[1].values.end(), added, 1.0f);
       out.card_wind[2].values.insert(out.card_wind[2].values.end(), added, phase);
+      // The sway binds the card to its leafiest branch's tip.
+      uint32_t leafiest = 0;
+      std::size_t most = 0;
+      bool any = false;
+      for (int b : cluster.branches) {
+        const Branch& branch = tree.branches[static_cast<std::size_t>(b)];
+        const std::size_t count = branch.leaves.size() + branch.flowers.size();
+        if (!any || count > most || (count == most && static_cast<uint32_t>(b) < leafiest)) {
+          leafiest = static_cast<uint32_t>(b);
+          most = count;
+          any = true;
+        }
+      }
+      const uint32_t tip =
+          any ? static_cast<uint32_t>(tree.branches[leafiest].nodes.empty()
+                                          ? 0
+                                          : tree.branches[leafiest].nodes.size() - 1)
+              : 0;
+      out.card_branch_id.insert(out.card_branch_id.end(), added,
+                                any ? leafiest : static_cast<uint32_t>(tree.branches.size()));
+      out.card_node_index.insert(out.card_node_index.end(), added, tip);
     }
     choice.clusters = static_cast<int>(scene.clusters.size());
     out.cluster_triangles = Triangles(out.cards) - branch_card_triangles;

@@ -55,6 +55,11 @@ struct LodMesh {
   // own.
   std::array<std::vector<geom::VertexAttribute>, 3> parts_wind;
   std::vector<geom::VertexAttribute> card_wind, twig_wind;
+  // The branch and node every card and twig vertex hangs on (as TreeMesh's ids, for the sway
+  // skin, render/tree_lod_sway): a branch card's and a twig's branch, at the node nearest its
+  // place along the base -> tip axis; a leaf-cluster card's, the branch of the cluster with the
+  // most leaves and flowers (the lowest id of a tie), at its tip node.
+  std::vector<uint32_t> card_branch_id, card_node_index, twig_branch_id, twig_node_index;
 };
 
 struct LodOptions {

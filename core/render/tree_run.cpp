@@ -263,8 +263,16 @@ Estimate TreeRun::ExportWork(const TreeExportRequest& request) const {
       return EstimateLodExport(counts, request.max_triangles, request.lod);
     case Kind::kSwayGlb: {
       SwayModel scratch;
-      return EstimateSwayGlb(ModelOrBuilt(&scratch), counts, sway_params(), request.fps,
-                             request.max_joints);
+      const Estimate clip = EstimateSwayGlb(ModelOrBuilt(&scratch), counts, sway_params(),
+                                            request.fps, request.max_joints);
+      // A budgeted mesh is built from the full one first (render/tree_lod_sway).
+      if (request.sway_triangles < 0 ||
+          static_cast<double>(request.sway_triangles) >= FullMeshTriangles(counts)) {
+        return clip;
+      }
+      Estimate both = clip + EstimateLodExport(counts, request.sway_triangles, false);
+      both.what = clip.what;  // the refusal names the clip, whose duration and fps the user sets
+      return both;
     }
     case Kind::kGlb:
       break;
@@ -288,7 +296,8 @@ Status TreeRun::CheckExport(const TreeExportRequest& request) const {
                            : "lower " + years + ", N_high or B_l");
 }
 
-Result<std::string> TreeRun::Export(const TreeExportRequest& request, SwayGlbInfo* sway) const {
+Result<std::string> TreeRun::Export(const TreeExportRequest& request, SwayGlbInfo* sway,
+                                    LodChoice* sway_choice) const {
   using Kind = TreeExportRequest::Kind;
   std::vector<unsigned char> glb;
   switch (request.kind) {
@@ -323,11 +332,14 @@ Result<std::string> TreeRun::Export(const TreeExportRequest& request, SwayGlbInf
       break;
     }
     case Kind::kSwayGlb: {
-      // core/sway/sway_gltf: exact two-joint skinning of eq. 3.15.
+      // core/sway/sway_gltf's skin (exact or grouped), on the budgeted mesh when the full one
+      // is over sway_triangles (render/tree_lod_sway).
       SwayGlbOptions options;
       options.fps = request.fps;
       options.max_joints = request.max_joints;
-      NIWA_RETURN_IF_ERROR(WriteSwayGlb(tree(), sway_params(), options, &glb, sway));
+      options.key_error = request.key_error;
+      NIWA_RETURN_IF_ERROR(WriteLodSwayGlb(tree(), sway_params(), options, request.sway_triangles,
+                                           &glb, sway, sway_choice, request.lod_field));
       break;
     }
   }

@@ -16,6 +16,7 @@
 #include "base/status.h"
 #include "render/hybrid.h"
 #include "render/tree_lod.h"
+#include "render/tree_lod_sway.h"
 #include "run/study_run.h"
 #include "sway/skin.h"
 #include "sway/sway.h"
@@ -39,6 +40,10 @@ struct TreeExportRequest {
   std::string lod_field = "max_triangles";      // the field a level that cannot fit names
   double fps = 30;                              // kSwayGlb: keys per second
   std::size_t max_joints = kDefaultSwayJoints;  // kSwayGlb: the skin's joints (sway_gltf.h)
+  // kSwayGlb: the mesh within N triangles (render/tree_lod_sway; -1: the full mesh) and the
+  // clip's key reduction bound, metres (0: every key).
+  long sway_triangles = kDefaultSwayTriangles;
+  double key_error = kDefaultSwayKeyError;
 };
 
 // The run's export kinds by name: "glb", "json", "svg", "lod.glb", "sway.glb" (else an error
@@ -172,8 +177,9 @@ class TreeRun : public run::StudyRun {
   Status CheckExport(const TreeExportRequest& request) const;
   // The export's bytes (not checked against the budget: call CheckExport first). .glb errors
   // name "glb" (io/gltf_writer), LOD ones request.lod_field. `sway` (kSwayGlb): the skin's joints
-  // and, when clustered, its error against eq. 3.15.
-  Result<std::string> Export(const TreeExportRequest& request, SwayGlbInfo* sway = nullptr) const;
+  // and, when clustered, its error against eq. 3.15; `sway_choice` the budgeted mesh's choice.
+  Result<std::string> Export(const TreeExportRequest& request, SwayGlbInfo* sway = nullptr,
+                             LodChoice* sway_choice = nullptr) const;
 
   // ---- sway (thesis ch. 3) ----
   SwayParams sway_params() const { return SwayParams(state_.params); }

@@ -6,6 +6,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <queue>
 
+#include "math/det_math.h"
 #include "sway/skin.h"
 #include "sway/wind_attributes.h"
 #include "tree/mesh.h"
@@ -183,8 +184,9 @@ namespace {
 
 // The exact two-joint skin of eq. 3.15 (MapSwayJoints) and the clip's keys.
 void ExactSkin(SwaySimulator& sim, const SwayParams& params, const SwayGlbOptions& options,
-               const SwayJoints& joints, const TreeSkin& skin, GltfSkinning* out_skin) {
-  GltfSkinning& out = *out_skin;
+               const SwayJoints& joints, const std::vector<SwaySkinPart>& parts,
+               SwaySkin* out_skin) {
+  SwaySkin& out = *out_skin;
   const SwayModel& model = sim.model();
   out.joints.resize(joints.count);
   out.joints[0].name = "root";
@@ -200,9 +202,10 @@ void ExactSkin(SwaySimulator& sim, const SwayParams& params, const SwayGlbOption
       joint.inverse_bind_offset = ToArray(-s * node.rest_anchor);
     }
   }
-  const VertexSkin* parts[3] = {&skin.bark, &skin.leaves, &skin.flowers};
-  for (std::size_t k = 0; k < 3; ++k) {
-    VertexJoints(*parts[k], joints, &out.joints0[k], &out.weights0[k]);
+  out.joints0.resize(parts.size());
+  out.weights0.resize(parts.size());
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    VertexJoints(*parts[k].skin, joints, &out.joints0[k], &out.weights0[k]);
   }
   std::vector<glm::dquat> last(model.nodes.size(), glm::dquat(1, 0, 0, 0));
   for (long step : KeySteps(params, options.fps)) {
@@ -240,14 +243,13 @@ namespace {
 // its node point's group with weight 1, and the clip's keys; the errors against eq. 3.15 into info.
 // `sim` is WriteSwayGlb's simulator, not yet stepped.
 void ClusteredSkin(SwaySimulator& sim, const Tree& tree, const SwayParams& params,
-                   const SwayGlbOptions& options, const TreeSkin& skin, GltfSkinning* out,
-                   SwayGlbInfo* info) {
+                   const SwayGlbOptions& options, const std::vector<SwaySkinPart>& parts,
+                   SwaySkin* out, SwayGlbInfo* info, std::vector<int>* joint_of_node) {
   const SwayModel& model = sim.model();
   const std::size_t n = model.nodes.size();
-  const VertexSkin* parts[3] = {&skin.bark, &skin.leaves, &skin.flowers};
   std::vector<double> vertices(n, 0.0);
-  for (const VertexSkin* part : parts) {
-    for (uint32_t j : part->joint) vertices[j] += 1.0;
+  for (const SwaySkinPart& part : parts) {
+    for (uint32_t j : part.skin->joint) vertices[j] += 1.0;
   }
   const SwayClusters clusters =
       ClusterSwayNodePoints(tree, params, vertices, options.max_joints - 1);
@@ -263,14 +265,19 @@ void ClusteredSkin(SwaySimulator& sim, const Tree& tree, const SwayParams& param
     joint.translation = ToArray(s * node.rest_anchor);
     joint.inverse_bind_offset = ToArray(-s * node.rest_anchor);
   }
-  for (std::size_t k = 0; k < 3; ++k) {
-    const VertexSkin& part = *parts[k];
+  out->joints0.resize(parts.size());
+  out->weights0.resize(parts.size());
+  joint_of_node->assign(n, 0);
+  for (std::size_t u = 0; u < n; ++u) {
+    const int r = clusters.rep[u];
+    (*joint_of_node)[u] = r < 0 ? 0 : joint_of[static_cast<std::size_t>(r)];
+  }
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const VertexSkin& part = *parts[k].skin;
     out->joints0[k].assign(4 * part.joint.size(), 0);
     out->weights0[k].assign(4 * part.joint.size(), 0.0f);
     for (std::size_t v = 0; v < part.joint.size(); ++v) {
-      const int r = clusters.rep[part.joint[v]];
-      out->joints0[k][4 * v] =
-          static_cast<uint16_t>(r < 0 ? 0 : joint_of[static_cast<std::size_t>(r)]);
+      out->joints0[k][4 * v] = static_cast<uint16_t>((*joint_of_node)[part.joint[v]]);
       out->weights0[k][4 * v] = 1.0f;
     }
   }
@@ -316,10 +323,101 @@ void ClusteredSkin(SwaySimulator& sim, const Tree& tree, const SwayParams& param
 
 }  // namespace
 
-Status WriteSwayGlb(const Tree& tree, const SwayParams& params, const SwayGlbOptions& options,
-                    std::vector<unsigned char>* bytes, SwayGlbInfo* info) {
-  if (bytes == nullptr) return Status::Error("glb", "no output buffer");
-  bytes->clear();
+namespace {
+
+// glTF's LINEAR rotation between two keys (spec 3.11: slerp; the keys already take the shorter
+// arc), in det math so both builds agree.
+glm::dquat SlerpKeys(const glm::dquat& a, const glm::dquat& b, double u) {
+  const double c = glm::dot(a, b);
+  double wa = 1.0 - u, wb = u;
+  if (c < 0.9999999) {
+    const double theta = det::Acos(std::max(-1.0, c));
+    const double s = det::Sin(theta);
+    wa = det::Sin((1.0 - u) * theta) / s;
+    wb = det::Sin(u * theta) / s;
+  }
+  return glm::normalize(glm::dquat(wa * a.w + wb * b.w, wa * a.x + wb * b.x, wa * a.y + wb * b.y,
+                                   wa * a.z + wb * b.z));
+}
+
+// Leaves out the keys of one unit (joints sharing one rotation: a node point's base and tip, or a
+// group's joint) that the interpolation of the kept ones reproduces within `tolerance` metres at
+// every vertex: the error bound at key k between kept keys a and b is the largest translation
+// miss over the unit's joints plus 2 sin(phi / 2) reach (phi the angle between the slerped and
+// the true rotation, reach the farthest vertex from the joint). Greedy: from a kept key, the
+// farthest next key whose span fits. Joints whose keys all stay keep the shared times; `worst`
+// takes the largest bound of a left-out key.
+void ReduceUnitKeys(const std::vector<float>& times, const std::vector<int>& unit, double reach,
+                    double tolerance, std::vector<GltfJoint>* joints, double* worst) {
+  const std::size_t n = times.size();
+  if (!(tolerance > 0) || n < 3 || unit.empty()) return;
+  const GltfJoint& first = (*joints)[static_cast<std::size_t>(unit[0])];
+  if (first.rotation_keys.size() != 4 * n) return;
+  auto rotation = [&](std::size_t k) {
+    const float* q = &first.rotation_keys[4 * k];
+    return glm::normalize(glm::dquat(q[3], q[0], q[1], q[2]));
+  };
+  auto translation = [&](int j, std::size_t k) {
+    const float* t = &(*joints)[static_cast<std::size_t>(j)].translation_keys[3 * k];
+    return glm::dvec3(t[0], t[1], t[2]);
+  };
+  // The largest error bound of the keys strictly between a and b.
+  auto span_error = [&](std::size_t a, std::size_t b) {
+    double e_max = 0;
+    const double ta = times[a], tb = times[b];
+    const glm::dquat qa = rotation(a), qb = rotation(b);
+    for (std::size_t k = a + 1; k < b; ++k) {
+      const double u = (static_cast<double>(times[k]) - ta) / (tb - ta);
+      double e = 0;
+      for (int j : unit) {
+        const glm::dvec3 t = translation(j, a) + u * (translation(j, b) - translation(j, a));
+        e = std::max(e, glm::length(t - translation(j, k)));
+      }
+      const double c = std::min(1.0, std::fabs(glm::dot(SlerpKeys(qa, qb, u), rotation(k))));
+      e += 2.0 * std::sqrt(std::max(0.0, 1.0 - c * c)) * reach;
+      e_max = std::max(e_max, e);
+      if (e_max > tolerance) break;
+    }
+    return e_max;
+  };
+  std::vector<std::size_t> kept = {0};
+  double unit_worst = 0;
+  for (std::size_t a = 0; a + 1 < n;) {
+    std::size_t b = a + 1;
+    double e_b = 0;
+    while (b + 1 < n) {
+      const double e = span_error(a, b + 1);
+      if (e > tolerance) break;
+      ++b;
+      e_b = e;
+    }
+    unit_worst = std::max(unit_worst, e_b);
+    kept.push_back(b);
+    a = b;
+  }
+  if (kept.size() == n) return;
+  *worst = std::max(*worst, unit_worst);
+  std::vector<float> kept_times;
+  for (std::size_t k : kept) kept_times.push_back(times[k]);
+  for (int j : unit) {
+    GltfJoint& joint = (*joints)[static_cast<std::size_t>(j)];
+    std::vector<float> t, r;
+    for (std::size_t k : kept) {
+      t.insert(t.end(), joint.translation_keys.begin() + static_cast<long>(3 * k),
+               joint.translation_keys.begin() + static_cast<long>(3 * k + 3));
+      r.insert(r.end(), joint.rotation_keys.begin() + static_cast<long>(4 * k),
+               joint.rotation_keys.begin() + static_cast<long>(4 * k + 4));
+    }
+    joint.translation_keys = std::move(t);
+    joint.rotation_keys = std::move(r);
+    joint.times = kept_times;
+  }
+}
+
+}  // namespace
+
+Status BuildSwaySkin(const Tree& tree, const SwayParams& params, const SwayGlbOptions& options,
+                     const std::vector<SwaySkinPart>& parts, SwaySkin* out, SwayGlbInfo* info) {
   if (!(options.fps > 0) || !std::isfinite(options.fps)) {
     return Status::Error("fps", "must be a positive number");
   }
@@ -328,34 +426,93 @@ Status WriteSwayGlb(const Tree& tree, const SwayParams& params, const SwayGlbOpt
                                            " is out of range; must be a whole number in [2, " +
                                            std::to_string(kMaxGltfJoints) + "]");
   }
+  if (!(options.key_error >= 0) || !std::isfinite(options.key_error)) {
+    return Status::Error("key_error", "must be a number >= 0");
+  }
   SwayGlbInfo local;
   if (info == nullptr) info = &local;
   *info = SwayGlbInfo{};
+  *out = SwaySkin{};
   SwaySimulator sim(tree, params);
   const SwayModel& model = sim.model();
   const SwayJoints joints = MapSwayJoints(model);
   info->exact_joints = joints.count;
   info->node_points = model.nodes.size();
+  // Key units: joints that share a rotation (a node point's base and tip) are reduced together.
+  std::vector<std::vector<int>> units;
+  std::vector<int> unit_of_node(model.nodes.size(), -1);
+  if (joints.count > options.max_joints) {
+    info->clustered = true;
+    std::vector<int> joint_of_node;
+    ClusteredSkin(sim, tree, params, options, parts, out, info, &joint_of_node);
+    for (std::size_t j = 1; j < out->joints.size(); ++j) units.push_back({static_cast<int>(j)});
+    for (std::size_t u = 0; u < model.nodes.size(); ++u) unit_of_node[u] = joint_of_node[u] - 1;
+  } else {
+    ExactSkin(sim, params, options, joints, parts, out);
+    for (std::size_t u = 0; u < model.nodes.size(); ++u) {
+      if (joints.base[u] <= 0) continue;
+      unit_of_node[u] = static_cast<int>(units.size());
+      units.push_back({joints.base[u]});
+      if (joints.tip[u] >= 0) units.back().push_back(joints.tip[u]);
+    }
+  }
+  info->joints = out->joints.size();
+  info->keys = out->times.size();
+  info->seconds = out->times.empty() ? 0.0 : static_cast<double>(out->times.back());
+  // Each unit's reach: the farthest vertex bound to it from its joints' rest place.
+  std::vector<double> reach(units.size(), 0.0);
+  for (const SwaySkinPart& part : parts) {
+    const std::vector<float>& p = *part.positions;
+    for (std::size_t v = 0; v < part.skin->joint.size(); ++v) {
+      const int u = unit_of_node[part.skin->joint[v]];
+      if (u < 0) continue;
+      const std::array<float, 3>& o =
+          out->joints[static_cast<std::size_t>(units[static_cast<std::size_t>(u)][0])]
+              .inverse_bind_offset;
+      const glm::dvec3 d(static_cast<double>(p[3 * v]) + o[0],
+                         static_cast<double>(p[3 * v + 1]) + o[1],
+                         static_cast<double>(p[3 * v + 2]) + o[2]);
+      reach[static_cast<std::size_t>(u)] =
+          std::max(reach[static_cast<std::size_t>(u)], glm::length(d));
+    }
+  }
+  for (std::size_t u = 0; u < units.size(); ++u) {
+    info->full_joint_keys += units[u].size() * out->times.size();
+    ReduceUnitKeys(out->times, units[u], reach[u], options.key_error, &out->joints,
+                   &info->key_error);
+    for (int j : units[u]) {
+      const GltfJoint& joint = out->joints[static_cast<std::size_t>(j)];
+      info->joint_keys += joint.times.empty() ? out->times.size() : joint.times.size();
+    }
+  }
+  return Status::Ok();
+}
+
+Status WriteSwayGlb(const Tree& tree, const SwayParams& params, const SwayGlbOptions& options,
+                    std::vector<unsigned char>* bytes, SwayGlbInfo* info) {
+  if (bytes == nullptr) return Status::Error("glb", "no output buffer");
+  bytes->clear();
   MeshOptions mesh_options;
   mesh_options.cm_to_units = options.cm_to_units;
   const TreeMesh mesh = BuildTreeMesh(tree, mesh_options);
+  SwayModel model = BuildSwayModel(tree, params);
   const TreeSkin skin = BuildTreeSkin(mesh, model);
-
+  const std::vector<SwaySkinPart> parts = {{&skin.bark, &mesh.bark.positions},
+                                           {&skin.leaves, &mesh.leaves.positions},
+                                           {&skin.flowers, &mesh.flowers.positions}};
+  SwaySkin built;
+  NIWA_RETURN_IF_ERROR(BuildSwaySkin(tree, params, options, parts, &built, info));
   GltfSkinning out;
+  out.joints = std::move(built.joints);
+  out.times = std::move(built.times);
+  for (std::size_t k = 0; k < 3; ++k) {
+    out.joints0[k] = std::move(built.joints0[k]);
+    out.weights0[k] = std::move(built.weights0[k]);
+  }
   const std::vector<int> levels = BranchLevels(tree);
   out.attributes[0] = WindAttributes(tree, levels, mesh.bark_branch_id, mesh.bark_node_index);
   out.attributes[1] = WindAttributes(tree, levels, mesh.leaf_branch_id, mesh.leaf_node_index);
   out.attributes[2] = WindAttributes(tree, levels, mesh.flower_branch_id, mesh.flower_node_index);
-  if (joints.count > options.max_joints) {
-    info->clustered = true;
-    ClusteredSkin(sim, tree, params, options, skin, &out, info);
-    info->joints = out.joints.size();
-  } else {
-    info->joints = joints.count;
-    ExactSkin(sim, params, options, joints, skin, &out);
-  }
-  info->keys = out.times.size();
-  info->seconds = out.times.empty() ? 0.0 : static_cast<double>(out.times.back());
   return WriteSkinnedTreeGlb(mesh, out, bytes);
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "base/status.h"
+#include "sway/skin.h"
 #include "sway/sway.h"
 #include "tree/tree_gltf.h"
 
@@ -27,12 +28,20 @@ SwayJoints MapSwayJoints(const SwayModel& model);
 // and Godot draw 128-joint skins on every platform).
 inline constexpr std::size_t kDefaultSwayJoints = 128;
 
+// Key reduction's bound by default, metres (SwayGlbOptions::key_error).
+inline constexpr double kDefaultSwayKeyError = 0.002;
+
 struct SwayGlbOptions {
   double fps = 30;            // keys per second of simulated time (each at the nearest step)
   float cm_to_units = 0.01f;  // the mesh's units (metres)
   // The most joints of the skin, the root included, in [2, kMaxGltfJoints]. The exact skin (1 + 2
   // per moving node point + 1 per follower) is written when it fits; else the clustered one.
   std::size_t max_joints = kDefaultSwayJoints;
+  // Key reduction (docs/sway-model.md "Clip keys"): a joint's key is left out when the glTF
+  // LINEAR interpolation (lerp, slerp) of its neighbours kept puts every vertex it moves within
+  // this many metres of where the key puts it (a bound: |dT| + 2 sin(phi / 2) reach, phi the
+  // rotation's error, reach the farthest vertex from the joint); 0 keeps every key.
+  double key_error = kDefaultSwayKeyError;
 };
 
 struct SwayGlbInfo {
@@ -44,6 +53,10 @@ struct SwayGlbInfo {
   // (eq. 3.15), metres, over every node of every node point at every key (the largest and the
   // mean), and the largest distance a node moved from rest, for scale.
   double max_error = 0, mean_error = 0, max_motion = 0;
+  // Key reduction: keys written over every animated joint, of keys x animated joints before, and
+  // the largest vertex error bound of a left-out key (<= key_error), metres.
+  std::size_t joint_keys = 0, full_joint_keys = 0;
+  double key_error = 0;
 };
 
 // The clustered skin (docs/sway-model.md "Joint budget"): each representative node point's whole
@@ -69,6 +82,28 @@ SwayClusters ClusterSwayNodePoints(const Tree& tree, const SwayParams& params,
 // hierarchy level), _WIND_ALONG (node / last node of the branch, 0..1) and _WIND_PHASE (per branch,
 // [0, 1)) for an engine's own wind shader (docs/sway-model.md "Wind attributes"). Errors are one
 // line (e.g. too many joints for JOINTS_0).
+// One part of a mesh to skin: each vertex's node point and eq. 3.15 weight (sway/skin.h) and its
+// rest position (xyz a vertex, mesh units).
+struct SwaySkinPart {
+  const VertexSkin* skin = nullptr;
+  const std::vector<float>* positions = nullptr;
+};
+
+// The skin of any parts (WriteSwayGlb's bark, leaves, flowers; the budgeted mesh's cards and
+// twigs too, render/tree_lod_sway): the joints with their (reduced) keys, JOINTS_0 and WEIGHTS_0
+// per part, and the times of the unreduced keys (joints with times of their own use those).
+struct SwaySkin {
+  std::vector<GltfJoint> joints;
+  std::vector<float> times;
+  std::vector<std::vector<uint16_t>> joints0;
+  std::vector<std::vector<float>> weights0;
+};
+
+// WriteSwayGlb's skin and clip over `parts` (exact when it fits options.max_joints, else
+// clustered, the vertices counted over every part), keys reduced by options.key_error.
+Status BuildSwaySkin(const Tree& tree, const SwayParams& params, const SwayGlbOptions& options,
+                     const std::vector<SwaySkinPart>& parts, SwaySkin* out, SwayGlbInfo* info);
+
 Status WriteSwayGlb(const Tree& tree, const SwayParams& params, const SwayGlbOptions& options,
                     std::vector<unsigned char>* bytes, SwayGlbInfo* info = nullptr);
 

@@ -155,16 +155,18 @@ Status CheckSkinning(const GltfSkinning& skin, const MeshBuffers* const (&parts)
   }
   for (const GltfJoint& joint : skin.joints) {
     if (joint.translation_keys.empty() && joint.rotation_keys.empty()) continue;
-    if (joint.translation_keys.size() != 3 * skin.times.size() ||
-        joint.rotation_keys.size() != 4 * skin.times.size()) {
+    const std::size_t keys = joint.times.empty() ? skin.times.size() : joint.times.size();
+    if (joint.translation_keys.size() != 3 * keys || joint.rotation_keys.size() != 4 * keys) {
       return Status::Error("animation", "keys disagree with the times");
     }
   }
   return Status::Ok();
 }
 
+}  // namespace
+
 // Skeleton nodes (joints[0] the root, the others its children), the skin and the clip.
-void AddSkinAndAnimation(const GltfSkinning& skin, gltf::Document* doc) {
+void AddTreeSkinAndAnimation(const GltfSkinning& skin, gltf::Document* doc) {
   const int first = static_cast<int>(doc->nodes.size());
   gltf::Skin out_skin;
   out_skin.name = "tree";
@@ -189,21 +191,31 @@ void AddSkinAndAnimation(const GltfSkinning& skin, gltf::Document* doc) {
   doc->nodes[0].skin = 0;
   doc->scene_nodes.push_back(first);  // the skeleton root, at top
 
-  if (skin.times.empty()) return;
   gltf::Animation clip;
   clip.name = skin.clip_name;
-  clip.inputs.push_back(skin.times);
+  // One input a distinct key-time list, in the order joints first use them (input 0: the shared
+  // times when a joint uses them), so an unreduced clip has the one input it always had.
+  std::map<std::vector<float>, int> input_of;
   for (std::size_t j = 0; j < skin.joints.size(); ++j) {
     const GltfJoint& joint = skin.joints[j];
     if (joint.translation_keys.empty()) continue;
+    const std::vector<float>& times = joint.times.empty() ? skin.times : joint.times;
+    if (times.empty()) continue;
+    auto found = input_of.find(times);
+    if (found == input_of.end()) {
+      found = input_of.emplace(times, static_cast<int>(clip.inputs.size())).first;
+      clip.inputs.push_back(times);
+    }
     const int node = first + static_cast<int>(j);
-    clip.channels.push_back(
-        {node, gltf::Path::kTranslation, gltf::Interpolation::kLinear, 0, joint.translation_keys});
-    clip.channels.push_back(
-        {node, gltf::Path::kRotation, gltf::Interpolation::kLinear, 0, joint.rotation_keys});
+    clip.channels.push_back({node, gltf::Path::kTranslation, gltf::Interpolation::kLinear,
+                             found->second, joint.translation_keys});
+    clip.channels.push_back({node, gltf::Path::kRotation, gltf::Interpolation::kLinear,
+                             found->second, joint.rotation_keys});
   }
   if (!clip.channels.empty()) doc->animations.push_back(std::move(clip));
 }
+
+namespace {
 
 Status WriteTo(const Result<gltf::Document>& doc, std::vector<unsigned char>* bytes) {
   if (bytes == nullptr) return Status::Error("glb", "no output buffer");
@@ -280,7 +292,7 @@ Result<gltf::Document> TreeGltfDocument(const TreeMesh& mesh, const GltfSkinning
   }
   doc.nodes.push_back(std::move(node));
   doc.scene_nodes.push_back(0);
-  if (any && skinning != nullptr) AddSkinAndAnimation(*skinning, &doc);
+  if (any && skinning != nullptr) AddTreeSkinAndAnimation(*skinning, &doc);
   return doc;
 }
 

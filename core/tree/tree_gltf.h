@@ -23,6 +23,9 @@ struct GltfJoint {
   std::array<float, 3> inverse_bind_offset{0, 0, 0};  // inverse bind matrix = translate(offset)
   std::vector<float> translation_keys;                // 3 per key; empty: not animated
   std::vector<float> rotation_keys;                   // 4 per key, unit quaternion x, y, z, w
+  // The keys' times (s, strictly increasing) when the joint has keys of its own (a reduced clip);
+  // empty: GltfSkinning::times. Joints with equal times share one input accessor.
+  std::vector<float> times;
 };
 
 constexpr std::size_t kMaxGltfJoints = 65536;  // JOINTS_0 as unsigned short: indices 0..65535
@@ -50,6 +53,12 @@ Result<gltf::Document> TreeGltfDocument(const TreeMesh& mesh,
 
 // Fills bytes with the .glb of TreeGltfDocument (cleared on error).
 Status WriteTreeGlb(const TreeMesh& mesh, std::vector<unsigned char>* bytes);
+
+// The skeleton nodes of `skinning` (its joints; joints[0] the root, the others its children), the
+// skin "tree" on node 0 (the mesh's node) and the clip, appended to `doc` (its per-part joints0,
+// weights0 and attributes are not read: the caller fills its primitives). For documents of other
+// meshes over a tree (render/tree_lod_sway).
+void AddTreeSkinAndAnimation(const GltfSkinning& skinning, gltf::Document* doc);
 
 // The same, skinned and animated.
 Status WriteSkinnedTreeGlb(const TreeMesh& mesh, const GltfSkinning& skinning,

@@ -73,6 +73,7 @@ const COMMANDS = [
   { base: ['tree', 'sway', '--preset', 'binary', '--years', '2', '--duration', '1'],
     flags: { '--wind': NUMBERS, '--dt': ['0.05', '0', '0x1', '-1', ''], '--gust': ['1:6', '7:6', 'a:b', ':', '0x1:2'],
       '--tips': NUMBERS, '--fps': NUMBERS, '--out': outPath, '--csv': outPath, '--svg': outPath,
+      '--max-joints': NUMBERS, '--max-triangles': NUMBERS, '--key-error': NUMBERS, '--full-mesh': null,
       '--params': jsonFile, '--url': hash, '--set-sway': SETS, '--stats': null } },
   { base: ['tree', 'render-stats', '--preset', 'binary', '--years', '2'],
     flags: { '--cam': VECTORS, '--target': VECTORS, '--yaw': NUMBERS, '--pitch': NUMBERS, '--width': NUMBERS,

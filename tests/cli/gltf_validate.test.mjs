@@ -312,6 +312,10 @@ try {
     [['--out', join(dir, 'bad.obj')], 'bad --out extension', '--out:'],
     [['--out', join(dir, 'bad.glb'), '--fps', '0'], '--fps 0', '--fps:'],
     [['--fps', '30'], '--fps without .glb', '--fps:'],
+    [['--out', join(dir, 'bad.glb'), '--max-triangles', '3'], '--max-triangles 3', '--max-triangles:'],
+    [['--out', join(dir, 'bad.glb'), '--max-triangles', '100', '--full-mesh'], '--full-mesh with --max-triangles', '--full-mesh:'],
+    [['--out', join(dir, 'bad.glb'), '--key-error', '2'], '--key-error 2', '--key-error:'],
+    [['--key-error', '0.01'], '--key-error without .glb', '--key-error:'],
   ]) {
     const before = readdirSync(dir).length;
     const run = spawnSync(native, [...swayArgs, ...args], { encoding: 'utf8' });
@@ -319,6 +323,55 @@ try {
     check(run.status === 2 && lines.length === 1 && lines[0].includes(want) &&
           readdirSync(dir).length === before, `sway ${label}: one-line error, exit 2, no file`,
           `exit ${run.status}: ${run.stderr.trim()}`);
+  }
+  // The sway .glb within its budgets (issue 32 item 2, docs/lod-export.md "The sway .glb"): a 15-year
+  // sakura at the defaults is skinned on its 20,000-triangle mesh with 128 joints, its clip's keys
+  // reduced within 2 mm, <= 8 MB; three.js moves its cards and twigs with the bones.
+  {
+    const out = join(dir, 'sway-sakura15.glb');
+    const run = spawnSync(native, ['tree', 'sway', '--preset', 'sakura', '--years', '15', '--out', out, '--stats'],
+                          { encoding: 'utf8' });
+    check(run.status === 0, 'sway budget: niwa tree sway --preset sakura --years 15 --out x.glb', run.stderr.trim());
+    if (run.status === 0) {
+      const g = JSON.parse(run.stdout).glb;
+      const bytes = readFileSync(out);
+      check(bytes.length <= 8e6 && g.joints <= 128 && !g.full_mesh && g.triangles <= 20000,
+            'sway budget: a 15-year sakura\'s sway .glb <= 8 MB, <= 128 joints, <= 20,000 triangles',
+            `${(bytes.length / 1e6).toFixed(2)} MB, ${g.joints} joints of ${g.exact_joints}, ${g.triangles} triangles`);
+      check(g.joint_keys < g.full_joint_keys && g.key_error_m > 0 && g.key_error_m <= 0.002,
+            'sway budget: the clip\'s keys reduced within 2 mm',
+            `${g.joint_keys} of ${g.full_joint_keys} joint keys, largest bound ${(1000 * g.key_error_m).toFixed(3)} mm`);
+      const report = await validate(bytes);
+      check(report.issues.numErrors === 0 && report.info?.hasSkins && report.info?.animationCount === 1,
+            'sway budget: gltf-validator, a skin and one animation',
+            `${report.issues.numErrors} errors, ${report.issues.numWarnings} warnings`);
+      const gltf = await loadGltf(bytes);
+      const skinned = [];
+      gltf.scene.traverse((o) => { if (o.isSkinnedMesh) skinned.push(o); });
+      const names = skinned.map((m) => m.material?.name).sort();
+      check(['bark', 'cards_0', 'twigs'].every((n) => names.includes(n)) &&
+            skinned.every((m) => m.skeleton.bones.length === g.joints),
+            'sway budget: three.js finds skinned bark, cards and twigs on one skeleton', names.join(', '));
+      const mixer = new THREE.AnimationMixer(gltf.scene);
+      mixer.clipAction(gltf.animations[0]).play();
+      mixer.update(3.0);  // inside the default gust (1-6 s)
+      gltf.scene.updateMatrixWorld(true);
+      const movedBy = (mesh) => {
+        const position = mesh.geometry.getAttribute('position');
+        const a = new THREE.Vector3(), b = new THREE.Vector3();
+        let most = 0;
+        for (let v = 0; v < position.count; v += 5) {
+          a.fromBufferAttribute(position, v);
+          mesh.applyBoneTransform(v, b.copy(a));
+          most = Math.max(most, a.distanceTo(b));
+        }
+        return most;
+      };
+      const moved = Object.fromEntries(skinned.map((m) => [m.material?.name, movedBy(m)]));
+      check(moved.cards_0 > 0.05 && moved.twigs > 0.05,
+            'sway budget: at 3 s the cards and twigs move with the bones (largest vertex motion, m)',
+            Object.entries(moved).map(([k, v]) => `${k} ${v.toFixed(3)}`).join(', '));
+    }
   }
   const csv = join(dir, 'sway.csv');
   const csvRun = spawnSync(native, [...swayArgs, '--out', csv], { encoding: 'utf8' });

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 
 #include "support/glb_parse.h"
@@ -115,7 +116,9 @@ TEST(GltfSwayTest, SkinnedGlbHasJointsClipAndReproducesTheSkinnedPoses) {
   const SwayParams params = ShortGust();
   std::vector<unsigned char> bytes;
   SwayGlbInfo info;
-  ASSERT_EQ(WriteSwayGlb(tree, params, SwayGlbOptions{}, &bytes, &info).Line(), "");
+  SwayGlbOptions every_key;
+  every_key.key_error = 0;  // every key (the reduction: KeyReductionStaysWithinItsBound)
+  ASSERT_EQ(WriteSwayGlb(tree, params, every_key, &bytes, &info).Line(), "");
   const Glb glb = ParseGlb(bytes);
   const json& gltf = glb.gltf;
 
@@ -366,6 +369,7 @@ TEST(GltfSwayTest, ClusteredSkinApproachesTheSwayAsJointsGrow) {
   std::vector<unsigned char> exact, wide;
   SwayGlbInfo exact_info;
   SwayGlbOptions options;
+  options.key_error = 0;  // keys compared by index
   options.max_joints = kMaxGltfJoints;
   ASSERT_EQ(WriteSwayGlb(tree, params, options, &wide, &exact_info).Line(), "");
   options.max_joints = exact_info.exact_joints;
@@ -419,6 +423,132 @@ TEST(GltfSwayTest, ClusteredSkinApproachesTheSwayAsJointsGrow) {
   EXPECT_LT(last_vertex_mean, 0.1 * motion);
   // 64 of the tree's joints: on average within a tenth of the largest motion.
   EXPECT_LT(last_mean, 0.1 * motion);
+}
+
+// Every vertex of every primitive of a skinned .glb at time t, from the .glb alone: each joint's
+// channels interpolated as glTF LINEAR (lerp, slerp) over their own input times.
+std::vector<std::vector<glm::dvec3>> VerticesAtTime(const std::vector<unsigned char>& bytes,
+                                                    double t) {
+  const Glb glb = ParseGlb(bytes);
+  const json& gltf = glb.gltf;
+  const json& skin = gltf["skins"][0];
+  const std::size_t joints = skin["joints"].size();
+  std::vector<glm::dvec3> translation(joints);
+  std::vector<glm::dquat> rotation(joints, glm::dquat(1, 0, 0, 0));
+  std::vector<glm::dvec3> offset(joints);
+  const std::vector<float> ibm = ReadAccessor<float>(glb, skin["inverseBindMatrices"].get<int>());
+  for (std::size_t j = 0; j < joints; ++j) {
+    const json& node = gltf["nodes"][skin["joints"][j].get<std::size_t>()];
+    if (node.contains("translation")) {
+      translation[j] =
+          glm::dvec3(node["translation"][0].get<double>(), node["translation"][1].get<double>(),
+                     node["translation"][2].get<double>());
+    }
+    offset[j] = glm::dvec3(ibm[16 * j + 12], ibm[16 * j + 13], ibm[16 * j + 14]);
+  }
+  const json& clip = gltf["animations"][0];
+  for (const json& channel : clip["channels"]) {
+    const int node = channel["target"]["node"].get<int>();
+    const std::size_t j = static_cast<std::size_t>(
+        std::find(skin["joints"].begin(), skin["joints"].end(), node) - skin["joints"].begin());
+    const json& sampler = clip["samplers"][channel["sampler"].get<std::size_t>()];
+    const std::vector<float> times = ReadAccessor<float>(glb, sampler["input"].get<int>());
+    const std::vector<float> values = ReadAccessor<float>(glb, sampler["output"].get<int>());
+    std::size_t b = 1;
+    while (b + 1 < times.size() && times[b] < t) ++b;
+    const std::size_t a = b - 1;
+    const double u = std::clamp((t - times[a]) / (times[b] - times[a]), 0.0, 1.0);
+    if (channel["target"]["path"] == "translation") {
+      const glm::dvec3 pa(values[3 * a], values[3 * a + 1], values[3 * a + 2]);
+      const glm::dvec3 pb(values[3 * b], values[3 * b + 1], values[3 * b + 2]);
+      translation[j] = pa + u * (pb - pa);
+    } else {
+      const glm::dquat qa(values[4 * a + 3], values[4 * a], values[4 * a + 1], values[4 * a + 2]);
+      const glm::dquat qb(values[4 * b + 3], values[4 * b], values[4 * b + 1], values[4 * b + 2]);
+      rotation[j] = glm::slerp(qa, qb, u);
+    }
+  }
+  std::vector<std::vector<glm::dvec3>> out;
+  for (const json& p : gltf["meshes"][0]["primitives"]) {
+    const std::vector<uint16_t> j0 =
+        ReadAccessor<uint16_t>(glb, p["attributes"]["JOINTS_0"].get<int>());
+    const std::vector<float> w0 = ReadAccessor<float>(glb, p["attributes"]["WEIGHTS_0"].get<int>());
+    const std::vector<float> pos = ReadAccessor<float>(glb, p["attributes"]["POSITION"].get<int>());
+    out.emplace_back();
+    for (std::size_t v = 0; 3 * v + 2 < pos.size(); ++v) {
+      const glm::dvec3 rest(pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]);
+      glm::dvec3 at(0.0);
+      for (std::size_t c = 0; c < 4; ++c) {
+        const double w = w0[4 * v + c];
+        if (w == 0) continue;
+        const std::size_t j = j0[4 * v + c];
+        at += w * (rotation[j] * (rest + offset[j]) + translation[j]);
+      }
+      out.back().push_back(at);
+    }
+  }
+  return out;
+}
+
+// The clip's key reduction (docs/sway-model.md "Clip keys"): fewer keys, and at every key time of
+// the full clip every vertex of the reduced one within the bound of the full one's place, for the
+// exact and the clustered skin; key_error 0 keeps every key (one shared input).
+TEST(GltfSwayTest, KeyReductionStaysWithinItsBound) {
+  const Tree tree = GrowForSway("sakura-thesis", 5);
+  TreeParams ps;
+  ASSERT_EQ(ps.Set(ParamId::kWindSpeed, 8.0).Line(), "");
+  ASSERT_EQ(ps.Set(ParamId::kGustOn, 0.5).Line(), "");
+  ASSERT_EQ(ps.Set(ParamId::kGustOff, 1.5).Line(), "");
+  ASSERT_EQ(ps.Set(ParamId::kSwayDuration, 3.0).Line(), "");
+  const SwayParams params(ps);
+  for (std::size_t max_joints : {kMaxGltfJoints, std::size_t{24}}) {
+    SwayGlbOptions options;
+    options.max_joints = max_joints;
+    options.key_error = 0;
+    std::vector<unsigned char> full;
+    SwayGlbInfo full_info;
+    ASSERT_EQ(WriteSwayGlb(tree, params, options, &full, &full_info).Line(), "");
+    EXPECT_EQ(full_info.joint_keys, full_info.full_joint_keys);
+    const Glb full_glb = ParseGlb(full);
+    const json& samplers = full_glb.gltf["animations"][0]["samplers"];
+    EXPECT_EQ(samplers.size(), 2 * (full_info.joints - 1));
+    std::set<int> full_inputs;
+    for (const json& s : samplers) full_inputs.insert(s["input"].get<int>());
+    EXPECT_EQ(full_inputs.size(), 1u);
+    const std::size_t keys = full_info.keys;
+    ASSERT_EQ(keys, 91u);
+    std::vector<std::vector<std::vector<glm::dvec3>>> want;
+    for (std::size_t k = 0; k < keys; ++k) {
+      want.push_back(VerticesAtTime(full, static_cast<double>(k) * params.dt));
+    }
+    std::size_t last_keys = full_info.joint_keys + 1;
+    for (double bound : {0.001, 0.01}) {
+      options.key_error = bound;
+      std::vector<unsigned char> reduced;
+      SwayGlbInfo info;
+      ASSERT_EQ(WriteSwayGlb(tree, params, options, &reduced, &info).Line(), "");
+      EXPECT_EQ(info.full_joint_keys, full_info.full_joint_keys);
+      EXPECT_LT(info.joint_keys, last_keys) << bound;  // fewer keys for a looser bound
+      last_keys = info.joint_keys;
+      EXPECT_LE(info.key_error, bound);
+      EXPECT_GT(info.key_error, 0.0);
+      EXPECT_LT(reduced.size(), full.size());
+      double worst = 0;
+      for (std::size_t k = 0; k < keys; ++k) {
+        const auto got = VerticesAtTime(reduced, static_cast<double>(k) * params.dt);
+        ASSERT_EQ(got.size(), want[k].size());
+        for (std::size_t p = 0; p < got.size(); ++p) {
+          ASSERT_EQ(got[p].size(), want[k][p].size());
+          for (std::size_t v = 0; v < got[p].size(); ++v) {
+            worst = std::max(worst, glm::length(got[p][v] - want[k][p][v]));
+          }
+        }
+      }
+      // float keys: a few micrometres beside the bound.
+      EXPECT_LE(worst, bound + 1e-5) << max_joints << " joints, bound " << bound;
+      EXPECT_GT(worst, 0.0);
+    }
+  }
 }
 
 }  // namespace
