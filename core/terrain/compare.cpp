@@ -10,6 +10,7 @@
 #include "math/det_math.h"
 #include "params/json_guard.h"
 #include "params/param_text.h"
+#include "terrain/generate.h"
 
 namespace niwa::terrain {
 namespace {
@@ -153,10 +154,13 @@ Comparison CompareTerrain(const Heightfield& dem, const Terrain& grown) {
     c.slope_share_l1 += std::fabs(c.real.slope_share[static_cast<std::size_t>(b)] -
                                   c.grown.slope_share[static_cast<std::size_t>(b)]);
   double iou_sum = 0;
-  for (int level = 1;; ++level) {
+  // The grown levels' own heights (h0 + k·Δh only when dh_ratio = 1), counted from the lowest
+  // contour (a `down` level when there are any), and past the top by the same law.
+  const int lowest = grown.contours[0].level;
+  for (int up = 1;; ++up) {
     LevelOverlap o;
-    o.level = level;
-    o.elevation = h0 + level * grown.dh;
+    o.level = lowest + up;
+    o.elevation = LevelElevation(grown, o.level);
     int both = 0, either = 0;
     for (std::size_t k = 0; k < inside.size(); ++k) {
       if (!inside[k]) continue;

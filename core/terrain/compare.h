@@ -36,7 +36,9 @@ struct LevelOverlap {
 
 struct Comparison {
   SurfaceMeasures real, grown;
-  std::vector<LevelOverlap> levels;  // h0 + Δh, h0 + 2Δh, ... while either has cells
+  // The grown levels above the lowest contour at their own heights (h0 + kΔh when dh_ratio = 1;
+  // generate.h LevelElevation), while either surface has cells at or above one.
+  std::vector<LevelOverlap> levels;
   double mean_iou = 0;
   double slope_share_l1 = 0;  // Σ |share_real − share_grown| over the bins (0 same, 2 disjoint)
 };

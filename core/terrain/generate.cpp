@@ -321,6 +321,10 @@ class LevelElevations {
 
 }  // namespace
 
+double LevelElevation(const Terrain& t, int level) {
+  return LevelElevations(t.h0, t.dh, t.dh_ratio).At(level);
+}
+
 double MidpointDelta(double l, double theta_deg, double d2) {
   double s, c;
   det::SinCos(theta_deg * det::kPi / 180.0, &s, &c);

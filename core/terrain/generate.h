@@ -55,6 +55,9 @@ uint64_t SplitDrawsKey(uint64_t rng_seed, int level);
 // e.g. "what --max-memory leaves"), under the field "theta_max".
 Status MidpointOverflow(double d0, double d2, double theta_max_deg, double max_points,
                         const std::string& what);
+// The elevation of `level` (0: the seed, negative: below it) under t's h0, Δh and profile ratio
+// q (dh_ratio): the grown contours' own heights, continued past the top by the same law.
+double LevelElevation(const Terrain& t, int level);
 // δ of Fig 12 for an edge of length 2l: min(d'', |l·tan θ|).
 double MidpointDelta(double l, double theta_deg, double d2);
 

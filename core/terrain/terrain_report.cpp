@@ -1,8 +1,10 @@
 // TerrainStatsJson: the one list of the terrain's stats keys.
 #include "terrain/terrain_report.h"
 
+#include <cmath>
 #include <cstdint>
 
+#include "terrain/level_measures.h"
 #include "terrain/terrain_params.h"
 
 namespace niwa::terrain {
@@ -32,6 +34,25 @@ nlohmann::json TerrainStatsJson(const TerrainState& state, const Terrain& terrai
   j["slivers_dropped"] = terrain.counts.slivers_dropped;
   j["truncated"] = terrain.counts.truncated;
   if (!terrain.counts.truncated_by.empty()) j["truncated_by"] = terrain.counts.truncated_by;
+  // Per level (issue 31 item 2, the spec's §3 measures; level_measures.h); NaN (no level below,
+  // too short a ring for two divider steps) is null.
+  const auto number = [](double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+  };
+  nlohmann::json per_level = nlohmann::json::array();
+  for (const LevelMeasures& m : ComputeLevelMeasures(terrain)) {
+    per_level.push_back({{"level", m.level},
+                         {"elevation", m.elevation},
+                         {"rings", m.rings},
+                         {"vertices", m.vertices},
+                         {"area", m.area},
+                         {"perimeter", m.perimeter},
+                         {"area_ratio", number(m.area_ratio)},
+                         {"compactness", m.compactness},
+                         {"long_edge_share", m.long_edge_share},
+                         {"fractal_dimension", number(m.fractal_dimension)}});
+  }
+  j["per_level"] = per_level;
   j["res"] = params.GetInt(TerrainParam::kRes);
   j["cells"] = hf.h.size();
   j["url"] = EncodeTerrainHash(state);

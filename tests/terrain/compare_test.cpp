@@ -9,10 +9,10 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli_runner.h"
+#include "support/files.h"
 #include "terrain/contour_io.h"
 #include "terrain/seeds.h"
 #include "terrain/terrain_run.h"
-#include "support/files.h"
 
 namespace niwa {
 namespace {
@@ -43,6 +43,32 @@ TEST(TerrainCompare, OwnHeightmapComparesAsTheSameMountain) {
   ASSERT_EQ(other.code, 0);
   EXPECT_LT(nlohmann::json::parse(other.out)["mean_iou"].get<double>(),
             j["mean_iou"].get<double>());
+}
+
+// Issue 31 item 3: under a profile ratio (dh_ratio = q ≠ 1) the levels are cut at the grown
+// contours' own heights, h0 + Δh·(1 + q + … + q^(k−1)), not at h0 + k·Δh.
+TEST(TerrainCompare, LevelsAreCutAtTheGrownLevelsHeights) {
+  const std::string png = ::testing::TempDir() + "t_cmp_ratio.png";
+  const std::vector<std::string> state = {"--builtin", "disk",  "--method",
+                                          "simple",    "--set", "dh_ratio=1.3"};
+  std::vector<std::string> grow = {"terrain", "grow", "--res", "100", "--heightmap", png};
+  grow.insert(grow.end(), state.begin(), state.end());
+  ASSERT_EQ(RunNiwa(grow).code, 0);
+  std::vector<std::string> compare = {"terrain", "compare", "--dem", png};
+  compare.insert(compare.end(), state.begin(), state.end());
+  CliResult r = RunNiwa(compare);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const double h0 = j["h0"].get<double>(), dh = 10, q = 1.3;  // the disk's Δh
+  ASSERT_GE(j["levels"].size(), 4u);
+  double h = h0, step = dh;
+  for (std::size_t k = 0; k < j["levels"].size(); ++k) {
+    h += step;
+    step *= q;
+    EXPECT_EQ(j["levels"][k]["level"], static_cast<int>(k) + 1);
+    EXPECT_NEAR(j["levels"][k]["elevation"].get<double>(), h, 1e-9 * h) << k;
+    EXPECT_GT(j["levels"][k]["iou"].get<double>(), 0.9) << j["levels"][k];
+  }
 }
 
 // Issue 28 item 2: the whole comparison is the core's; the CLI prints its JSON as it is, and its
