@@ -458,8 +458,8 @@ class Grower {
     if (AngleBetween(dir, down) > turn) {
       glm::dvec3 w = down - glm::dot(down, dir) * dir;
       if (Length(w) < 1e-9) w = b.outward - glm::dot(b.outward, dir) * dir;
-      if (Length(w) < 1e-9) w = glm::cross(dir, std::fabs(dir.x) < 0.9 ? glm::dvec3(1, 0, 0)
-                                                                        : glm::dvec3(0, 1, 0));
+      if (Length(w) < 1e-9)
+        w = glm::cross(dir, std::fabs(dir.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0));
       double st, ct;
       det::SinCos(turn, &st, &ct);
       u = Unit(ct * dir + st * Unit(w));
@@ -630,8 +630,8 @@ class Grower {
                s,
                -1,
                {p_.Get(IvyParam::kThetaX), p_.Get(IvyParam::kThetaY), LateralThetaZ(from)}});
-          int nb = AddBud(from, pl, s, BudKind::kApical, rem, axis, from.order + 1, 1,
-                          hanging ? 1 : 0);
+          int nb =
+              AddBud(from, pl, s, BudKind::kApical, rem, axis, from.order + 1, 1, hanging ? 1 : 0);
           m_.buds[static_cast<std::size_t>(id)].child[1] = nb;
           if (log_->first_break_step < 0) log_->first_break_step = s;
           ++st.p1;

@@ -182,15 +182,15 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p, const Support* s
     // hanging tendril's buds (they hold on to nothing).
     const glm::dvec3 n = b.outward;
     if (b.hang == 0) {
-    suckers.Tube(b.pos, b.anchor + 0.01 * L * n, 0.2 * r_tip, 0.2 * r_tip, b.born_step);
-    const glm::dvec3 t1 = Perpendicular(n), t2 = glm::cross(n, t1);
-    std::vector<glm::dvec2> disc;
-    for (int k = 0; k < 8; ++k) {
-      double s, c;
-      det::SinCos(2.0 * det::kPi * k / 8, &s, &c);
-      disc.push_back({0.1 * L * c, 0.1 * L * s});
-    }
-    suckers.Fan(b.anchor + 0.01 * L * n, t1, t2, disc, b.born_step);
+      suckers.Tube(b.pos, b.anchor + 0.01 * L * n, 0.2 * r_tip, 0.2 * r_tip, b.born_step);
+      const glm::dvec3 t1 = Perpendicular(n), t2 = glm::cross(n, t1);
+      std::vector<glm::dvec2> disc;
+      for (int k = 0; k < 8; ++k) {
+        double s, c;
+        det::SinCos(2.0 * det::kPi * k / 8, &s, &c);
+        disc.push_back({0.1 * L * c, 0.1 * L * s});
+      }
+      suckers.Fan(b.anchor + 0.01 * L * n, t1, t2, disc, b.born_step);
     }
     if (b.parent < 0) continue;
     // Leaf opposite the sucker: petiole along n tilted toward up, blade normal ≈ n. With the
@@ -209,12 +209,12 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p, const Support* s
       bool shaded = false;
       if (support != nullptr && support->mesh != nullptr) {
         const float reach = static_cast<float>(1e3 * L);
-        shaded = support->accel == Accel::kLinear
-                     ? geom::FirstHitLinear(*support->mesh, glm::vec3(b.pos), glm::vec3(up), reach)
-                           .hit
-                     : geom::FirstHit(*support->mesh, *support->bvh, glm::vec3(b.pos),
-                                      glm::vec3(up), reach)
-                           .hit;
+        shaded =
+            support->accel == Accel::kLinear
+                ? geom::FirstHitLinear(*support->mesh, glm::vec3(b.pos), glm::vec3(up), reach).hit
+                : geom::FirstHit(*support->mesh, *support->bvh, glm::vec3(b.pos), glm::vec3(up),
+                                 reach)
+                      .hit;
       }
       const double light = LeafLight(leaf_n, up, shaded);
       if (BudHash01(b.id) >= 1.0 - 0.75 * light_w * (1.0 - light)) {

@@ -9,8 +9,7 @@ namespace niwa {
 namespace {
 
 TEST(IvyPresets, ReadFromTheEmbeddedListInItsOrder) {
-  const std::vector<std::string> names = {"paper", "literal", "improved", "metric",
-                                           "artist"};
+  const std::vector<std::string> names = {"paper", "literal", "improved", "metric", "artist"};
   EXPECT_EQ(IvyPresetNames(), names);
   using V = std::vector<std::pair<std::string, double>>;
   EXPECT_EQ(IvyPresetOverrides("paper"), V{});
@@ -20,9 +19,16 @@ TEST(IvyPresets, ReadFromTheEmbeddedListInItsOrder) {
   // metric is a scale, not lengths (issue 31 item 4): the paper's rows at 1000 px per unit.
   EXPECT_EQ(IvyPresetOverrides("metric"), (V{{"scale", 1000}}));
   // artist (issue 31 item 5): beyond the paper; its two own rows are 0 in every other preset.
-  EXPECT_EQ(IvyPresetOverrides("artist"),
-            (V{{"g_min", -1}, {"hang", 8}, {"max_bend", 90}, {"avoid", 20}, {"candidates", 32},
-               {"body", 1}, {"leaf_light", 1}, {"w_grav", 0.5}, {"t2", 0.5}, {"leaf_size", 75}}));
+  EXPECT_EQ(IvyPresetOverrides("artist"), (V{{"g_min", -1},
+                                             {"hang", 8},
+                                             {"max_bend", 90},
+                                             {"avoid", 20},
+                                             {"candidates", 32},
+                                             {"body", 1},
+                                             {"leaf_light", 1},
+                                             {"w_grav", 0.5},
+                                             {"t2", 0.5},
+                                             {"leaf_size", 75}}));
   for (const char* other : {"paper", "literal", "improved", "metric"}) {
     EXPECT_EQ(IvyPreset(other)->Get(IvyParam::kHang), 0) << other;
     EXPECT_EQ(IvyPreset(other)->Get(IvyParam::kLeafLight), 0) << other;
