@@ -445,8 +445,46 @@ class Grower {
     return true;
   }
 
+  // A hanging tendril's next internode (the row "hang", beyond §3.2; docs/ivy-model.md "The
+  // artist preset"): from bud `from`, its direction `dir` turned toward the ground by 30° (or
+  // β_max when smaller; straight down once within that), as Luft's Ivy Generator lets a shoot
+  // that lost the surface fall. Taken when it crosses no face and, with r_avoid, no other
+  // internode; the anchor is the closest support point at any distance.
+  bool Hang(int from, const glm::dvec3& dir, Placement* out) {
+    const Bud& b = m_.buds[static_cast<std::size_t>(from)];
+    const glm::dvec3 p = b.pos, down = -up_;
+    const double turn = std::min(30.0 * kDeg, p_.Get(IvyParam::kMaxBend) * kDeg);
+    glm::dvec3 u = down;
+    if (AngleBetween(dir, down) > turn) {
+      glm::dvec3 w = down - glm::dot(down, dir) * dir;
+      if (Length(w) < 1e-9) w = b.outward - glm::dot(b.outward, dir) * dir;
+      if (Length(w) < 1e-9)
+        w = glm::cross(dir, std::fabs(dir.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0));
+      double st, ct;
+      det::SinCos(turn, &st, &ct);
+      u = Unit(ct * dir + st * Unit(w));
+    }
+    const glm::dvec3 q = p + L_ * u;
+    ++log_->candidates;
+    int reason = -1;
+    const double r_avoid = p_.Get(IvyParam::kAvoid);
+    if (SegmentHits(p, q)) {
+      reason = kCollision;
+    } else if (r_avoid > 0 && Crowded(from, p, q, r_avoid)) {
+      reason = kCrowding;
+    }
+    if (reason >= 0) {
+      ++log_->rejected[static_cast<std::size_t>(reason)];
+      return false;
+    }
+    out->q = q;
+    out->u = u;
+    out->anchor = Closest(q, std::numeric_limits<double>::infinity());
+    return true;
+  }
+
   int AddBud(const Bud& from, const Placement& pl, int step, BudKind kind, double N, int axis,
-             int order, int index_on_axis) {
+             int order, int index_on_axis, int hang = 0) {
     Bud b;
     b.id = static_cast<int>(m_.buds.size());
     b.kind = kind;
@@ -459,6 +497,8 @@ class Grower {
     b.index_on_axis = index_on_axis;
     b.parent = from.id;
     b.born_step = step;
+    b.hang = hang;
+    if (hang > 0) ++log_->hang_internodes;
     if (free()) {
       b.anchor = b.pos - from.outward * (d_ / 2);
       b.clearance = d_ / 2;
@@ -503,6 +543,7 @@ class Grower {
     const double kappa = p_.Get(IvyParam::kKappa), alpha = p_.Get(IvyParam::kAlpha);
     const double lambda = p_.Get(IvyParam::kLambda);
     const double da = p_.Get(IvyParam::kDeltaA), dd = p_.Get(IvyParam::kDeltaD);
+    const int hang_max = free() ? 0 : p_.GetInt(IvyParam::kHang);
     // Parallel rule choice from the state at the start of the step.
     enum Rule { kNone, kP0, kP1, kP2 };
     std::vector<int> order = PreOrder();
@@ -525,7 +566,18 @@ class Grower {
       } else if (rule[i] == kP0) {
         Placement pl;
         auto t0 = Clock::now();
-        bool ok = Search(id, b->dir, s, &pl);
+        // A tendril hangs on until it is `hang` internodes long (then p3, its nutrient lost); an
+        // apex on the support searches (E6-E10) and, when that fails, starts a tendril.
+        bool ok = false, hanging = false;
+        if (b->hang > 0) {
+          ok = hanging = b->hang < hang_max && Hang(id, b->dir, &pl);
+        } else {
+          ok = Search(id, b->dir, s, &pl);
+          if (!ok && hang_max > 0 && Hang(id, m_.buds[static_cast<std::size_t>(id)].dir, &pl)) {
+            ok = hanging = true;
+            ++log_->tendrils;
+          }
+        }
         log_->ms_search += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
         b = &m_.buds[static_cast<std::size_t>(id)];
         if (ok) {
@@ -536,7 +588,7 @@ class Grower {
           st.spent += spent;
           const Bud from = *b;
           int nb = AddBud(from, pl, s, BudKind::kApical, alpha * rem, from.axis, from.order,
-                          from.index_on_axis + 1);
+                          from.index_on_axis + 1, hanging ? from.hang + 1 : 0);
           m_.buds[static_cast<std::size_t>(id)].child[0] = nb;
           ++st.p0;
         } else {
@@ -547,7 +599,17 @@ class Grower {
         const glm::dvec3 v0 = LateralDirection(*b);
         Placement pl;
         auto t0 = Clock::now();
-        bool ok = Search(id, v0, s, &pl);
+        // With `hang`: a tendril does not branch (its D fails, p3), and a lateral born on a face
+        // looking down (under an overhang: outward·ĝ < -1/2) hangs from its first internode.
+        bool ok = false, hanging = false;
+        if (b->hang > 0) {
+          ok = false;
+        } else if (hang_max > 0 && glm::dot(b->outward, up_) < -0.5) {
+          ok = hanging = Hang(id, v0, &pl);
+          if (ok) ++log_->tendrils;
+        } else {
+          ok = Search(id, v0, s, &pl);
+        }
         log_->ms_search += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
         b = &m_.buds[static_cast<std::size_t>(id)];
         if (ok) {
@@ -568,7 +630,8 @@ class Grower {
                s,
                -1,
                {p_.Get(IvyParam::kThetaX), p_.Get(IvyParam::kThetaY), LateralThetaZ(from)}});
-          int nb = AddBud(from, pl, s, BudKind::kApical, rem, axis, from.order + 1, 1);
+          int nb =
+              AddBud(from, pl, s, BudKind::kApical, rem, axis, from.order + 1, 1, hanging ? 1 : 0);
           m_.buds[static_cast<std::size_t>(id)].child[1] = nb;
           if (log_->first_break_step < 0) log_->first_break_step = s;
           ++st.p1;
@@ -596,7 +659,8 @@ class Grower {
     ++st->p3_a;
     const double n = b.N;
     b.N = 0;
-    if (p_.GetBool(IvyParam::kObstacleBreak)) {
+    // A tendril's end (it hung its `hang` internodes, or hit something) wakes no bud.
+    if (p_.GetBool(IvyParam::kObstacleBreak) && b.hang == 0) {
       for (int w = m_.buds[static_cast<std::size_t>(id)].parent; w >= 0;
            w = m_.buds[static_cast<std::size_t>(w)].parent) {
         Bud& d = m_.buds[static_cast<std::size_t>(w)];

@@ -43,6 +43,9 @@ struct Bud {
   int anchor_tri = -1;                // its triangle, -1 without a support
   double clearance = 0;               // |pos - anchor|, <= d
   glm::dvec3 outward{0.0, 0.0, 1.0};  // unit(pos - anchor): the sucker's opposite = leaf side
+  // Hanging tendril (the row "hang", beyond §3.2): the internodes off the support up to and
+  // including this bud's (0: on the support; no sucker, clearance may exceed d).
+  int hang = 0;
 };
 
 struct Internode {
@@ -97,6 +100,8 @@ struct GrowLog {
   // The tangent fan (tangent_retry): searches that reached it after every E10 retry failed, and
   // those it saved (found a valid position); its candidates are in `candidates` and `rejected`.
   int64_t tangent_retries = 0, tangent_saves = 0;
+  // Hanging tendrils (the row "hang"): internodes grown off the support, tendrils started.
+  int64_t hang_internodes = 0, tendrils = 0;
   std::array<int64_t, kRejectCount> rejected{};
   geom::QueryStats closest, segment;
   double ms_rules = 0, ms_search = 0;

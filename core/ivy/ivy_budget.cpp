@@ -91,10 +91,12 @@ IvyGrowLimits IvyLimits(const IvyParams& params, const Budget& budget, const Est
   l.seconds_before = support.seconds;
   l.seconds_per_bud_step = kNsPerBudStep * 1e-9;
   l.seconds_per_candidate = kNsPerCandidate * 1e-9;
-  // The walk's n_c · (R_max + 1), and the tangent fan's directions when it is on.
+  // The walk's n_c · (R_max + 1), the tangent fan's directions when it is on, and a hanging
+  // tendril's one when "hang" is.
   l.candidates_per_search =
       has_support ? params.GetInt(IvyParam::kCandidates) * (params.GetInt(IvyParam::kRetries) + 1) +
-                        (params.GetBool(IvyParam::kTangentRetry) ? kTangentFanCandidates : 0)
+                        (params.GetBool(IvyParam::kTangentRetry) ? kTangentFanCandidates : 0) +
+                        (params.GetInt(IvyParam::kHang) > 0 ? 1 : 0)
                   : 0;
   l.memory_limit = budget.memory_limit;
   l.seconds_limit = budget.seconds_limit;

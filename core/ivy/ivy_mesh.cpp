@@ -115,10 +115,24 @@ bool Crosses(const Support& s, const glm::dvec3& a, const glm::dvec3& b) {
   return geom::SegmentHits(*s.mesh, *s.bvh, glm::vec3(a), glm::vec3(b));
 }
 
+// A uniform number in [0, 1) from a bud's id (SplitMix64; the leaves' thinning, no RNG stream).
+double BudHash01(int id) {
+  uint64_t x = static_cast<uint64_t>(id) * 0x2545f4914f6cdd1dULL + 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  x ^= x >> 31;
+  return static_cast<double>(x >> 11) * (1.0 / 9007199254740992.0);
+}
+
 // The blade's turns about the face normal tried in order (issue 31 item 7), in degrees.
 constexpr double kLeafTurns[] = {0, 45, -45, 90, -90, 135, -135, 180};
 
 }  // namespace
+
+double LeafLight(const glm::dvec3& face_normal, const glm::dvec3& up, bool shaded) {
+  const double facing = (1.0 + glm::dot(face_normal, up)) / 2.0;
+  return (0.6 + 0.4 * facing) * (shaded ? 0.35 : 1.0);
+}
 
 IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p, const Support* support,
                          LeafPlacement* placement) {
@@ -126,6 +140,7 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p, const Support* s
   const double leaf = p.Get(IvyParam::kLeafSize), petiole = p.Get(IvyParam::kPetiole);
   const double tau = p.Get(IvyParam::kLeafAge), tilt = p.Get(IvyParam::kLeafTilt);
   const double L = p.Get(IvyParam::kL);
+  const double light_w = p.Get(IvyParam::kLeafLight);
   const glm::dvec3 up =
       UnitOrUp(glm::dvec3(p.Get(IvyParam::kUpX), p.Get(IvyParam::kUpY), p.Get(IvyParam::kUpZ)));
   // Tips below each bud (pipe model r = r_tip · n_tips^(1/pipe_exp)), children before parents.
@@ -163,34 +178,64 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p, const Support* s
     stems.Tube(a.pos, b.pos, radius(a.id), radius(b.id), in.step);
   }
   for (const Bud& b : m.buds) {
-    // Sucker: pos -> anchor, a disc of radius 0.1 L at the anchor facing the surface.
+    // Sucker: pos -> anchor, a disc of radius 0.1 L at the anchor facing the surface; none on a
+    // hanging tendril's buds (they hold on to nothing).
     const glm::dvec3 n = b.outward;
-    suckers.Tube(b.pos, b.anchor + 0.01 * L * n, 0.2 * r_tip, 0.2 * r_tip, b.born_step);
-    const glm::dvec3 t1 = Perpendicular(n), t2 = glm::cross(n, t1);
-    std::vector<glm::dvec2> disc;
-    for (int k = 0; k < 8; ++k) {
-      double s, c;
-      det::SinCos(2.0 * det::kPi * k / 8, &s, &c);
-      disc.push_back({0.1 * L * c, 0.1 * L * s});
+    if (b.hang == 0) {
+      suckers.Tube(b.pos, b.anchor + 0.01 * L * n, 0.2 * r_tip, 0.2 * r_tip, b.born_step);
+      const glm::dvec3 t1 = Perpendicular(n), t2 = glm::cross(n, t1);
+      std::vector<glm::dvec2> disc;
+      for (int k = 0; k < 8; ++k) {
+        double s, c;
+        det::SinCos(2.0 * det::kPi * k / 8, &s, &c);
+        disc.push_back({0.1 * L * c, 0.1 * L * s});
+      }
+      suckers.Fan(b.anchor + 0.01 * L * n, t1, t2, disc, b.born_step);
     }
-    suckers.Fan(b.anchor + 0.01 * L * n, t1, t2, disc, b.born_step);
     if (b.parent < 0) continue;
     // Leaf opposite the sucker: petiole along n tilted toward up, blade normal ≈ n. With the
     // support: n is the anchor face's normal on the bud's side, and the leaf turns about it, then
     // shrinks, until its petiole, spokes and rim cross no face (LeafPlacement).
     glm::dvec3 leaf_n = n;
     const bool check = support != nullptr && support->mesh != nullptr && b.anchor_tri >= 0;
-    if (check) {
+    if (check && b.hang == 0) {
       const geom::TriMesh& attach = support->attach_mesh ? *support->attach_mesh : *support->mesh;
       const glm::dvec3 face = TriangleNormal(attach, static_cast<uint32_t>(b.anchor_tri));
       leaf_n = glm::dot(face, b.pos - b.anchor) < 0 ? -face : face;
     }
+    // Light (leaf_light): thinning, size and the blade's turn toward the sky.
+    double size_factor = 1, blade_turn = 0;
+    if (light_w > 0) {
+      bool shaded = false;
+      if (support != nullptr && support->mesh != nullptr) {
+        const float reach = static_cast<float>(1e3 * L);
+        shaded =
+            support->accel == Accel::kLinear
+                ? geom::FirstHitLinear(*support->mesh, glm::vec3(b.pos), glm::vec3(up), reach).hit
+                : geom::FirstHit(*support->mesh, *support->bvh, glm::vec3(b.pos), glm::vec3(up),
+                                 reach)
+                      .hit;
+      }
+      const double light = LeafLight(leaf_n, up, shaded);
+      if (BudHash01(b.id) >= 1.0 - 0.75 * light_w * (1.0 - light)) {
+        if (placement) ++placement->thinned;
+        continue;
+      }
+      size_factor = 1.0 + 0.6 * light_w * (1.0 - light);
+      blade_turn = light_w * 0.5 * det::Acos(std::clamp(glm::dot(leaf_n, up), -1.0, 1.0));
+    }
+    if (placement) ++placement->drawn;
+    // The blade's direction from its base: along the petiole's tangent direction (leaf_light 0),
+    // else hanging from the petiole's end, leaning out from the face by the turn (never into it).
+    double sb = 0, cb = 1;
+    if (blade_turn != 0) det::SinCos(blade_turn, &sb, &cb);
+    const double hang_b = light_w > 0 ? -1.0 : 1.0;
     double st, ct;
     det::SinCos(tilt * det::kPi / 180.0, &st, &ct);
     glm::dvec3 up_t = up - glm::dot(up, leaf_n) * leaf_n;
     up_t = glm::dot(up_t, up_t) > 1e-12 ? UnitOrUp(up_t) : Perpendicular(leaf_n);
     const double age = static_cast<double>(last_step - b.born_step);
-    const double full_width = leaf * std::min(1.0, (age + 1.0) / tau);
+    const double full_width = leaf * size_factor * std::min(1.0, (age + 1.0) / tau);
     glm::dvec3 dir_t = up_t, base = b.pos;
     double width = full_width;
     std::vector<glm::dvec2> blade;
@@ -209,10 +254,11 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p, const Support* s
           break;
         }
         const glm::dvec3 across = UnitOrUp(glm::cross(dir_t, leaf_n));
+        const glm::dvec3 along = hang_b * cb * dir_t + sb * leaf_n;
         bool crosses = Crosses(*support, b.pos, base);
-        glm::dvec3 prev = base + blade.back().x * across + blade.back().y * dir_t;
+        glm::dvec3 prev = base + blade.back().x * across + blade.back().y * along;
         for (std::size_t k = 0; k < blade.size() && !crosses; ++k) {
-          const glm::dvec3 q = base + blade[k].x * across + blade[k].y * dir_t;
+          const glm::dvec3 q = base + blade[k].x * across + blade[k].y * along;
           crosses = Crosses(*support, base, q) || Crosses(*support, prev, q);
           prev = q;
         }
@@ -229,10 +275,14 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p, const Support* s
       ++placement->shrunk;
       ++placement->crossing;
     }
-    const glm::dvec3 across = UnitOrUp(glm::cross(dir_t, leaf_n));
+    glm::dvec3 across = UnitOrUp(glm::cross(dir_t, leaf_n));
+    // Turned by light: the blade's normal is the side of its plane that looks up (its outline
+    // mirrored across the midrib, so the sun lights its face).
+    if (light_w > 0 && glm::dot(-cb * leaf_n - sb * dir_t, up) < 0) across = -across;
     leaves.uv = petiole_uv;
     leaves.Tube(b.pos, base, 0.3 * r_tip, 0.3 * r_tip, b.born_step);
-    leaves.Fan(base, across, dir_t, blade, b.born_step, &outline_uvs, base_uv);
+    leaves.Fan(base, across, hang_b * cb * dir_t + sb * leaf_n, blade, b.born_step, &outline_uvs,
+               base_uv);
   }
   return {stems.Done(), leaves.Done(), suckers.Done()};
 }

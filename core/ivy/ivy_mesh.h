@@ -30,7 +30,18 @@ struct LeafPlacement {
   std::size_t turned = 0;    // leaves not in their first direction
   std::size_t shrunk = 0;    // leaves halved
   std::size_t crossing = 0;  // leaves whose last try still crosses a face
+  std::size_t thinned = 0;   // leaves left out by light (the row leaf_light)
+  std::size_t drawn = 0;     // leaves drawn
 };
+// The row leaf_light (issue 31 item 5, docs/ivy-model.md "The artist preset"): a leaf's light in
+// [0.21, 1] from its face's normal n (toward the bud) and the sky: (0.6 + 0.4 (1 + n·ĝ)/2),
+// times 0.35 when a ray from the bud toward ĝ meets the support (under an overhang). With
+// leaf_light = w > 0 a leaf is drawn with probability 1 - 0.75 w (1 - light) (a hash of its bud,
+// no RNG stream), its width times 1 + 0.6 w (1 - light) (shade leaves larger, as real ivy's and
+// Luft's ground leaves), and its blade hangs from the petiole's end, leaning out from the face by
+// w times half the angle between n and ĝ (flat on a top, 45° out on a wall, straight down under an
+// overhang), its normal the side that looks up.
+double LeafLight(const glm::dvec3& face_normal, const glm::dvec3& up, bool shaded);
 IvyMeshes BuildIvyMeshes(const IvyModel& model, const IvyParams& params,
                          const Support* support = nullptr, LeafPlacement* placement = nullptr);
 

@@ -87,6 +87,14 @@ std::vector<ParamSpec> Rows() {
       {37, "body", "", "d", 0, 0, 10, false, "search", g,
        "Largest distance of an internode's midpoint and quarter points from a face, in d (0: "
        "off, only the nodes are checked; 1: the body stays within d)."},
+      // Appended (issue 31 item 5): beyond §3.2, docs/ivy-model.md "The artist preset".
+      {38, "hang", "", "internodes", 0, 0, 100, true, "search", g,
+       "Hanging tendrils: internodes an apex may grow off the support, turning 30° a step toward "
+       "the ground (0: off, §3.2 as written); an apex whose search failed, or a lateral born on a "
+       "face looking down, hangs."},
+      {39, "leaf_light", "", "", 0, 0, 1, false, "look", m,
+       "Leaves by light and support normal: shaded leaves larger and fewer, blades hanging from "
+       "the petiole, leaning out by half their face's angle from up (0: off, every leaf alike)."},
   };
 }
 
@@ -215,9 +223,9 @@ Result<IvyParams> IvyPreset(std::string_view name) {
     }
     return params;
   }
-  return Status::Error("preset", "'" + std::string(name) +
-                                     "' is unknown; must be one of paper, literal, improved, "
-                                     "metric");
+  std::string names;
+  for (const Preset& p : Presets()) names += (names.empty() ? "" : ", ") + p.name;
+  return Status::Error("preset", "'" + std::string(name) + "' is unknown; must be one of " + names);
 }
 
 }  // namespace niwa

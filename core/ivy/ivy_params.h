@@ -61,6 +61,9 @@ enum class IvyParam : int {
   kScale,
   // appended (issue 31 item 6): the internode body's largest distance to a face, in d; 0 = off
   kBody,
+  // appended (issue 31 item 5, the artist preset): hanging tendrils and leaves by light
+  kHang,
+  kLeafLight,
   kCount
 };
 

@@ -108,7 +108,13 @@ IvyStats MeasureIvy(const IvyModel& m, const GrowLog& log, const geom::TriMesh* 
   int within = 0;
   s.clearance_min = std::numeric_limits<double>::infinity();
   s.clearance_max = 0;
+  s.tendrils = log.tendrils;
+  s.hang_internodes = log.hang_internodes;
   for (const Bud& b : m.buds) {
+    if (b.hang > 0) {
+      ++s.hanging_buds;
+      continue;
+    }
     double c = b.clearance;
     if (mesh) {
       geom::ClosestHit h =
@@ -121,8 +127,9 @@ IvyStats MeasureIvy(const IvyModel& m, const GrowLog& log, const geom::TriMesh* 
     // The seed is snapped to d/2; every other node passed eps <= dist <= d in the search.
     within += c <= d && (c >= eps || b.parent < 0);
   }
+  const std::size_t attached = m.buds.size() - static_cast<std::size_t>(s.hanging_buds);
   s.frac_nodes_within_d =
-      m.buds.empty() ? 0 : static_cast<double>(within) / static_cast<double>(m.buds.size());
+      attached == 0 ? 0 : static_cast<double>(within) / static_cast<double>(attached);
   s.up_min = m.internodes.empty() ? 0 : std::numeric_limits<double>::infinity();
   double up_sum = 0;
   for (const Internode& in : m.internodes) {
@@ -189,7 +196,7 @@ IvyStats MeasureIvy(const IvyModel& m, const GrowLog& log, const geom::TriMesh* 
     }
   }
   s.leaves = static_cast<int>(m.buds.size()) - static_cast<int>(m.roots.size());
-  s.suckers = static_cast<int>(m.buds.size());
+  s.suckers = static_cast<int>(m.buds.size()) - s.hanging_buds;
   // E5 ledger: ΣN(s) = ΣN(s-1) + accumulated - spent - lost, worst error over the steps.
   double prev = log.nutrient_start;
   for (const StepLog& st : log.steps) {
@@ -199,8 +206,71 @@ IvyStats MeasureIvy(const IvyModel& m, const GrowLog& log, const geom::TriMesh* 
   }
   s.nutrient_total = prev;
   s.lstring_ok = LStringMatchesModel(m);
-  if (m.buds.empty()) s.clearance_min = 0;
+  if (m.buds.empty() || std::isinf(s.clearance_min)) s.clearance_min = 0;
   return s;
+}
+
+namespace {
+
+// The nearest z (largest: the viewer is at +z) of a mesh at every cell centre of the grid.
+void DepthRaster(const geom::TriMesh& mesh, double x0, double y0, double cell, int cells,
+                 std::vector<double>* depth) {
+  const std::size_t n = mesh.triangle_count();
+  for (std::size_t t = 0; t < n; ++t) {
+    const glm::dvec3 a(mesh.positions[mesh.indices[3 * t]]);
+    const glm::dvec3 b(mesh.positions[mesh.indices[3 * t + 1]]);
+    const glm::dvec3 c(mesh.positions[mesh.indices[3 * t + 2]]);
+    const double area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+    if (area == 0) continue;  // edge-on: hides nothing
+    const double lo_x = std::min({a.x, b.x, c.x}), hi_x = std::max({a.x, b.x, c.x});
+    const double lo_y = std::min({a.y, b.y, c.y}), hi_y = std::max({a.y, b.y, c.y});
+    // Cells whose centre x0 + (i + 1/2) cell lies in [lo, hi].
+    const int i0 = std::max(0, static_cast<int>(std::ceil((lo_x - x0) / cell - 0.5)));
+    const int i1 = std::min(cells - 1, static_cast<int>(std::floor((hi_x - x0) / cell - 0.5)));
+    const int j0 = std::max(0, static_cast<int>(std::ceil((lo_y - y0) / cell - 0.5)));
+    const int j1 = std::min(cells - 1, static_cast<int>(std::floor((hi_y - y0) / cell - 0.5)));
+    for (int j = j0; j <= j1; ++j) {
+      const double py = y0 + (j + 0.5) * cell;
+      for (int i = i0; i <= i1; ++i) {
+        const double px = x0 + (i + 0.5) * cell;
+        const double w0 = ((b.x - px) * (c.y - py) - (c.x - px) * (b.y - py)) / area;
+        const double w1 = ((c.x - px) * (a.y - py) - (a.x - px) * (c.y - py)) / area;
+        const double w2 = 1.0 - w0 - w1;
+        if (w0 < 0 || w1 < 0 || w2 < 0) continue;
+        const double z = w0 * a.z + w1 * b.z + w2 * c.z;
+        double& d = (*depth)[static_cast<std::size_t>(j) * static_cast<std::size_t>(cells) +
+                             static_cast<std::size_t>(i)];
+        d = std::max(d, z);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+double LeafCoverFront(const geom::TriMesh& support, const geom::TriMesh& leaves, int cells) {
+  if (support.positions.empty() || cells < 1) return 0;
+  glm::dvec3 lo(support.positions[0]), hi = lo;
+  for (const glm::vec3& p : support.positions) {
+    lo = glm::min(lo, glm::dvec3(p));
+    hi = glm::max(hi, glm::dvec3(p));
+  }
+  const double cell = std::max(hi.x - lo.x, hi.y - lo.y) / cells;
+  if (!(cell > 0)) return 0;
+  const double none = -std::numeric_limits<double>::infinity();
+  const std::size_t count = static_cast<std::size_t>(cells) * static_cast<std::size_t>(cells);
+  std::vector<double> s_depth(count, none), l_depth(count, none);
+  DepthRaster(support, lo.x, lo.y, cell, cells, &s_depth);
+  DepthRaster(leaves, lo.x, lo.y, cell, cells, &l_depth);
+  // "Level with it": within a millionth of the support's size (a leaf lying on a face).
+  const double tol = 1e-6 * std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  std::size_t seen = 0, covered = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    if (s_depth[k] == none) continue;
+    ++seen;
+    covered += l_depth[k] >= s_depth[k] - tol;
+  }
+  return seen == 0 ? 0 : static_cast<double>(covered) / static_cast<double>(seen);
 }
 
 std::string IvyStatsJson(const IvyStats& s, const GrowLog& log, const IvyModel& model,
@@ -242,7 +312,11 @@ std::string IvyStatsJson(const IvyStats& s, const GrowLog& log, const IvyModel& 
       s.overlap_skipped_by.empty() ? nlohmann::json(s.overlap_pairs) : nlohmann::json(nullptr);
   if (!s.overlap_skipped_by.empty()) j["overlap_skipped_by"] = s.overlap_skipped_by;
   j["leaves"] = s.leaves;
+  j["leaves_thinned"] = s.leaves_thinned;
+  j["leaf_cover"] = s.leaf_cover < 0 ? nlohmann::json(nullptr) : nlohmann::json(s.leaf_cover);
   j["suckers"] = s.suckers;
+  j["hanging"] = {
+      {"tendrils", s.tendrils}, {"internodes", s.hang_internodes}, {"buds", s.hanging_buds}};
   j["nutrient_total"] = s.nutrient_total;
   j["ledger_err"] = s.ledger_err;
   j["lstring_ok"] = s.lstring_ok;
@@ -290,6 +364,7 @@ std::string IvyModelJson(const IvyModel& m, const IvyParams& params, uint64_t se
                     {"anchor", Vec(b.anchor)},
                     {"anchor_tri", b.anchor_tri},
                     {"clearance", b.clearance}});
+    if (b.hang > 0) buds.back()["hang"] = b.hang;  // a tendril's bud (the row "hang")
   }
   nlohmann::json internodes = nlohmann::json::array();
   for (const Internode& in : m.internodes)

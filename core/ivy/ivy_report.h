@@ -35,6 +35,14 @@ struct IvyStats {
   int overlap_pairs = 0;                     // non-adjacent internodes closer than 2 r_tip (P2)
   double overlap_pairs_examined = 0;  // pairs the sweep tested (ivy_budget's CountIvyStatsWork)
   int leaves = 0, suckers = 0;
+  // Hanging tendrils (the row "hang"): tendrils started, internodes off the support. Their buds
+  // are left out of frac_nodes_within_d (they hold on to nothing) and counted here.
+  int64_t tendrils = 0, hang_internodes = 0;
+  int hanging_buds = 0;
+  // Set by the caller (IvyRun, with the leaves meshed): the share of the support's area seen from
+  // the front (+z) that leaves hide (LeafCoverFront); < 0 when not measured (JSON null).
+  double leaf_cover = -1;
+  int leaves_thinned = 0;  // leaves left out by light (leaf_light)
   double nutrient_total = 0, ledger_err = 0;
   bool lstring_ok = false;
   std::size_t tri_count = 0;
@@ -53,6 +61,14 @@ struct IvyStats {
 IvyStats MeasureIvy(const IvyModel& model, const GrowLog& log, const geom::TriMesh* mesh,
                     const IvyParams& params, const geom::TriMesh* attach_mesh = nullptr,
                     bool overlap_sweep = true);
+
+// Leaf cover seen from the front (issue 31 item 5): both meshes drawn orthographically along -z
+// into a grid of `cells` × `cells` square cells over the support's x-y bounds (the larger side
+// split in `cells`); a cell whose centre sees the support counts, and is covered when a leaf
+// triangle is nearer the viewer there than the support (or level with it). The share covered, 0
+// when the support shows in no cell. z-buffer of cell centres, no RNG: the same number natively
+// and in WASM.
+double LeafCoverFront(const geom::TriMesh& support, const geom::TriMesh& leaves, int cells = 256);
 
 // Laterals (axes of order >= 1) alive at the end of step `step` (born at or before it).
 int LateralsAt(const IvyModel& model, int step);

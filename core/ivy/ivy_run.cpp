@@ -350,7 +350,8 @@ Status IvyRun::Advance(const run::Observer& observer) {
     const double buds = static_cast<double>(model_.buds.size());
     if (observer) (void)observer({"meshing", 0, buds});
     const auto t0 = Clock::now();
-    meshes_ = BuildIvyMeshes(model_, params_, LeafSupport());
+    placement_ = LeafPlacement{};
+    meshes_ = BuildIvyMeshes(model_, params_, LeafSupport(), &placement_);
     ++remeshes_;
     timings_.ms_mesh = Ms(t0, Clock::now());
   }
@@ -390,7 +391,8 @@ Status IvyRun::Update(const IvyState& given) {
   }
   if (remesh && options_.build_meshes) {
     const auto t0 = Clock::now();
-    meshes_ = BuildIvyMeshes(model_, params_, LeafSupport());
+    placement_ = LeafPlacement{};
+    meshes_ = BuildIvyMeshes(model_, params_, LeafSupport(), &placement_);
     ++remeshes_;
     timings_.ms_mesh = Ms(t0, Clock::now());
   }
@@ -477,6 +479,20 @@ std::string IvyRun::StatsJson() const {
       MeasureIvy(model_, log_, support_->mesh(), params_, support_->attach(), fits.ok());
   stats.overlap_skipped_by = fits.Line();
   stats.tree_truncated_by = support_->truncated_by();
+  // The leaves as drawn: their count after thinning and their cover seen from the front.
+  if (support_->mesh() != nullptr) {
+    IvyMeshes local;
+    LeafPlacement placement = placement_;
+    const IvyMeshes* meshes = &meshes_;
+    if (!options_.build_meshes) {
+      placement = LeafPlacement{};
+      local = BuildIvyMeshes(model_, params_, LeafSupport(), &placement);
+      meshes = &local;
+    }
+    stats.leaves_thinned = static_cast<int>(placement.thinned);
+    stats.leaves -= stats.leaves_thinned;
+    stats.leaf_cover = LeafCoverFront(*support_->mesh(), meshes->leaves);
+  }
   return IvyStatsJson(stats, log_, model_, timings_);
 }
 

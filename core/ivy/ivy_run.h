@@ -224,6 +224,7 @@ class IvyRun : public run::StudyRun {
   IvyModel model_;
   GrowLog log_;
   IvyMeshes meshes_;
+  LeafPlacement placement_;  // BuildIvyMeshes' counts for meshes_
   IvyTimings timings_;
   int grows_ = 0, remeshes_ = 0;
 };

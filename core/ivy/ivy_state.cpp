@@ -195,10 +195,12 @@ void ApplyIvyHash(std::string_view hash, std::string_view prefix, IvyState* stat
   for (const auto& [key, value] : pairs) {
     if (key != pre + "preset") continue;
     Status s = SetIvyPreset(value, state);
-    if (!s.ok())
+    if (!s.ok()) {
+      std::string names;
+      for (const std::string& n : IvyPresetNames()) names += (names.empty() ? "" : ", ") + n;
       notices->push_back(Printable(key) + ": '" + Printable(value) +
-                         "' is unknown; must be one of paper, literal, improved, "
-                         "metric");
+                         "' is unknown; must be one of " + names);
+    }
   }
   for (const auto& [key, value] : pairs) {
     if (key == pre + "preset") continue;

@@ -147,6 +147,26 @@ std::string IvySvg(const IvyModel& model, const IvyParams& params, const geom::T
            "\"/>\n";
     }
     s += "</g>\n";
+    // §2.2's second trigger made visible (issue 31 item 6): a red ring where an apex ended by p3
+    // (an ending bud with no child), an orange dot at the base of a lateral born after its parent
+    // axis's apex died (the dormant bud that apex woke). Drawn only when there are any.
+    std::string marks;
+    for (const Bud& b : model.buds) {
+      if (b.kind != BudKind::kEnding || b.child[0] >= 0 || b.child[1] >= 0 || b.died_step < 0 ||
+          !born(b.died_step))
+        continue;
+      marks += "<circle cx=\"" + Fixed2(X(view, b.pos)) + "\" cy=\"" + Fixed2(Y(b.pos)) +
+               "\" r=\"5\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"1.5\"/>\n";
+    }
+    for (const Axis& a : model.axes) {
+      if (a.order == 0 || !born(a.born_step)) continue;
+      const Axis& parent = model.axes[static_cast<std::size_t>(a.parent_axis)];
+      if (parent.death_step < 0 || a.born_step <= parent.death_step) continue;
+      const Bud& base = model.buds[static_cast<std::size_t>(a.base_bud)];
+      marks += "<circle cx=\"" + Fixed2(X(view, base.pos)) + "\" cy=\"" + Fixed2(Y(base.pos)) +
+               "\" r=\"4\" fill=\"#ff9f1c\" stroke=\"#8a4b00\" stroke-width=\"0.8\"/>\n";
+    }
+    if (!marks.empty()) s += "<g id=\"p3-marks\">\n" + marks + "</g>\n";
     if (o.leaves) {
       // A leaf per bud but the seed, a little off the stem on the side opposite the sucker.
       const double leaf = params.Get(IvyParam::kLeafSize);

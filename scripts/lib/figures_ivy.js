@@ -3,8 +3,9 @@
 // and the last step with leaves) and measures the claims of its §4 through the CLI
 // (build/native/bin/niwa, from `scripts/build native`, or $NIWA) into docs/figures/ivy/: fig3_steps.svg,
 // fig3_leaves.svg, problems.svg (the paper's two problems in `paper` and `improved`), scenes.svg
-// (convex and concave supports), tree.svg (ivy on Niwa's sakura), and claims.md (the numbers,
-// seeds 1-5). docs/FIGURES.md shows them. Deterministic. Usage: scripts/figures ivy [NAME...]
+// (convex and concave supports), tree.svg (ivy on Niwa's sakura), dormancy.svg/.md (§2.2's second
+// trigger on cubes4 with the search of §3.2 alone), look_*.png/look.md (paper beside artist, drawn
+// by three.js: figures_ivy_look.mjs) and claims.md (the numbers, seeds 1-5). docs/FIGURES.md shows them. Deterministic. Usage: scripts/figures ivy [NAME...]
 // e.g. `scripts/figures ivy claims` to redo only the numbers.
 'use strict';
 const fs = require('fs');
@@ -24,6 +25,7 @@ function growArgs(p) {
   else args.push('--scene', p.scene || 'cubes4');
   args.push('--preset', p.preset || 'paper', '--seed', String(p.seed ?? 1), '--steps', String(p.steps ?? 50));
   for (const s of p.seedPoints || []) args.push('--seed-point', s);
+  for (const s of p.set || []) args.push('--set', s);
   return args;
 }
 
@@ -122,6 +124,38 @@ const FIGURES = {
       cells.push({ svg, view: 0, label: [`sakura 10 years, ${steps} steps`, `${s.internodes} internodes, rise ${fmt(s.rise)} m, within d ${fmt(s.frac_nodes_within_d, 3)}, hits ${s.internode_hits}`] });
     }
     figure('tree', 'Ivy on Niwa\'s sakura (metric preset: L = 5 cm, d = 2 cm)', cells, 2);
+  },
+  // §2.2's second trigger on the paper's own scene (issue 31 item 6): cubes4, paper, 50 steps, with
+  // the search the paper describes (E6-E10 alone: --set tangent_retry=0, R_max 3, n_c 16, φ 30°,
+  // Δφ 15°) beside the default search with the tangent fan. An apex whose search fails ends (p3)
+  // and wakes the nearest dormant bud below it (released break), which grows a lateral after its
+  // parent's apex died (a reiteration).
+  dormancy() {
+    const cells = [];
+    const rows = [];
+    for (const [seed, where] of [[1, 'side'], [3, 'side'], [5, 'side']]) {
+      for (const fan of [1, 0]) {
+        const p = { seed, seedPoints: [where], set: [`tangent_retry=${fan}`], leaves: false };
+        const { svg, stats: s } = panel(p);
+        rows.push({ seed, where, fan, s });
+        console.log(`  seed ${seed} ${where} tangent_retry=${fan}: p3 A ${s.p3.A}, released ${s.released_breaks}, reiterations ${s.reiterations}`);
+        cells.push({ svg, view: 0, label: [`seed ${seed}, ${where}, tangent_retry=${fan}${fan ? ' (default)' : ' (E6-E10 alone)'}`,
+          `p3 on apices ${s.p3.A}, released breaks ${s.released_breaks}, reiterations ${s.reiterations}, ${s.internodes} internodes`] });
+      }
+    }
+    figure('dormancy', '§2.2 second trigger on cubes4 (paper, 50 steps): the search of §3.2 alone (tangent_retry=0: R_max 3, n_c 16, φ 30°, Δφ 15°) against the default with the tangent fan', cells, 6);
+    let md = '| seed | seed point | tangent_retry | p3 on apices | released breaks | reiterations | internodes | rejected (gravitropism / far / near / collision) |\n|---|---|---|---|---|---|---|---|\n';
+    for (const { seed, where, fan, s } of rows) {
+      const r = s.search.rejected;
+      md += `| ${seed} | ${where} | ${fan} | ${s.p3.A} | ${s.released_breaks} | ${s.reiterations} | ${s.internodes} | ${r.gravitropism} / ${r.far} / ${r.near} / ${r.collision} |\n`;
+    }
+    fs.writeFileSync(path.join(outDir, 'dormancy.md'), md);
+    console.log(md);
+  },
+  // The look (issue 31 item 5): paper beside artist on the bunny and the overhang facade, drawn by
+  // three.js in Chromium (scripts/lib/figures_ivy_look.mjs; needs the browser tests' Chromium).
+  look() {
+    require('child_process').execFileSync(process.execPath, [path.join(__dirname, 'figures_ivy_look.mjs')], { stdio: 'inherit' });
   },
   // §4's claims as numbers, seeds 1-5, cubes4, 50 steps.
   claims() {

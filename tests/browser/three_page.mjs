@@ -39,8 +39,9 @@ window.renderGlbs = async (names, { plain = false, rgba = false } = {}) => {
       const box = new THREE.Box3().setFromObject(gltf.scene);
       const centre = box.getCenter(new THREE.Vector3());
       const radius = box.getSize(new THREE.Vector3()).length() / 2;
-      camera = new THREE.PerspectiveCamera(45, 1, 0.05, 1000);
       const distance = radius / Math.sin(Math.PI / 8) * 1.05;
+      // far: 1000, or past the scene when it is larger (a facade in px, docs/figures/ivy/look_*).
+      camera = new THREE.PerspectiveCamera(45, 1, 0.05, Math.max(1000, distance + 2 * radius));
       camera.position.set(centre.x + distance * Math.sin(0.6), centre.y + distance * 0.1, centre.z + distance * Math.cos(0.6));
       camera.lookAt(centre);
     }

@@ -21,7 +21,10 @@ const spawn = (cmd, args) => (cmd === wasm ? W.spawn(args) : spawnOne(cmd, args)
 const scenes = run(native, ['ivy', 'scenes']).trim().split('\n').map((l) => l.split('\t')[0]);
 check(`scenes listed: ${scenes.join(', ')}`, scenes.includes('cubes4') && scenes.length >= 7);
 const growArgs = (scene, seed) => ['ivy', 'grow', '--scene', scene, '--steps', '50', '--seed', String(seed), '--stats'];
-const extras = [['--seed-point', 'side', '--seed-point', 'column'], ['--preset', 'improved']];
+const extras = [['--seed-point', 'side', '--seed-point', 'column'], ['--preset', 'improved'],
+  ['--preset', 'artist', '--steps', '120']];
+// The artist preset on the overhang (tendrils, leaves by light, leaf cover): the .glb byte for byte.
+const artistGlb = (tag) => ['ivy', 'grow', '--scene', 'overhang', '--preset', 'artist', '--steps', '100', '--out', join(dir, `artist-${tag}.glb`)];
 const hostile = [
   [['--set', 't1=0.9'], 't1'], [['--steps', '-1'], '--steps'], [['--set', 'L=nan'], '--set: L'],
   [['--seed-point', '600,10,450'], '--seed-point'], [['--url', 'steps=-3'], '--url'],
@@ -31,6 +34,7 @@ const hostile = [
 await W.prepare([
   ...scenes.flatMap((scene) => [1, 2, 3, 4, 5].map((seed) => [...growArgs(scene, seed), '--out', join(dir, `${scene}-${seed}-w.json`)])),
   ...extras.map((extra) => ['ivy', 'grow', '--scene', 'cubes4', ...extra, '--stats']),
+  artistGlb('w'),
   ...hostile.map(([args]) => ['ivy', 'grow', ...args, '--out', join(dir, 'bad.json')]),
 ]);
 for (const scene of scenes) {
@@ -51,6 +55,11 @@ for (const extra of extras) {
   const a = JSON.parse(run(native, args)), b = JSON.parse(run(wasm, args));
   check(`cubes4 ${extra.join(' ')}: native == WASM`, JSON.stringify(withoutMs(a)) === JSON.stringify(withoutMs(b)));
 }
+
+run(native, artistGlb('n'));
+run(wasm, artistGlb('w'));
+const artistN = readFileSync(join(dir, 'artist-n.glb')), artistW = readFileSync(join(dir, 'artist-w.glb'));
+check(`overhang, artist: .glb native == WASM (${artistN.length} bytes)`, artistN.length > 1000 && artistN.equals(artistW));
 
 // .glb: validator-clean, with _BIRTH_STEP.
 const require = createRequire(join(root, 'package.json'));

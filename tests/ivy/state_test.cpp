@@ -42,7 +42,7 @@ TEST(IvyTable, PresetsChangeWhatTheySay) {
   IvyParams literal = *IvyPreset("literal");
   EXPECT_EQ(literal.Get(IvyParam::kKappa), 0.0);
   EXPECT_EQ(literal.Get(IvyParam::kLambda), 1.0);
-  EXPECT_EQ(IvyPresetNames().size(), 4u);
+  EXPECT_EQ(IvyPresetNames().size(), 5u);
 }
 
 TEST(IvyTable, CrossRowChecksNameTheField) {
@@ -105,7 +105,7 @@ TEST(IvyState, HostileHashValuesGiveNotices) {
   ApplyIvyHash("#preset=nope&steps=-4&t1=abc&zzz=1&gamma=2", "", &s, &notices);
   ASSERT_EQ(notices.size(), 5u);
   EXPECT_EQ(notices[0],
-            "preset: 'nope' is unknown; must be one of paper, literal, improved, metric");
+            "preset: 'nope' is unknown; must be one of paper, literal, improved, metric, artist");
   EXPECT_NE(notices[1].find("steps"), std::string::npos);
   EXPECT_EQ(s.steps, 50);
   // On a composed page the tree's keys are not the ivy's business.
