@@ -76,7 +76,7 @@ await runBrowserTest(async (server, browser) => {
   check('opens with an ivy grown', data.status === 'ready' && Number(data.internodes) > 20, `status ${data.status}, ${data.internodes} internodes, ${data.error || ''}`);
   const firstBuffers = { fresh: Number(data.buffersFresh), reused: Number(data.buffersReused) };
   check('the support is cubes4', data.supportName === 'cubes4' && data.supportTriangles === '20', `${data.supportName}, ${data.supportTriangles} tris`);
-  check('the hash is the ivy state', /^#preset=paper&seed=1&steps=50&scene=cubes4/.test(await page.evaluate(() => location.hash)), await page.evaluate(() => location.hash));
+  check('the hash is the ivy state (the page opens on the artist preset)', /^#preset=artist&seed=1&steps=50&scene=cubes4/.test(await page.evaluate(() => location.hash)), await page.evaluate(() => location.hash));
   compareWithNative('cubes4', data, ['--url', data.hash]);
   const navIvy = await page.locator('#studies a[aria-current="page"]').textContent().catch(() => '');
   check('the studies nav marks Ivy', navIvy === 'Ivy', navIvy);

@@ -59,7 +59,7 @@ const controller = new StudyController({
   // with the old worker; the last built-in scene or tree comes back). The ivy on screen stays.
   onRestart: () => {
     restarting = true;
-    worker.request('init', { hash: lastBuiltIn ? `#${lastBuiltIn}` : '' }, { done: ['ready'] });
+    worker.request('init', { hash: lastBuiltIn ? `#${lastBuiltIn}` : OPENING_HASH }, { done: ['ready'] });
   },
   // Undo/Redo are back/forward over the committed states (web/shell/hash_history.js).
   onHistoryChange: () => updateUndoButtons(),
@@ -508,4 +508,7 @@ ui.downloadLsys.addEventListener('click', () => exportAs('lsys'));
 setHooks({ status: 'loading' });
 updateUndoButtons();
 await startRenderer();
-worker.request('init', { hash: location.hash }, { done: ['ready'] });
+// Opened with no hash: the artist preset (issue 31 item 5: the page's default covers a support as
+// artists expect; the CLI's default stays the paper's rules).
+const OPENING_HASH = '#preset=artist';
+worker.request('init', { hash: location.hash || OPENING_HASH }, { done: ['ready'] });
