@@ -112,13 +112,17 @@ function outputs(ext) {
   };
   return list;
 }
+// Every ending an output flag declares ('niwa flags'): a folder and a symlink to a folder under
+// each name, so a new output kind (moss photons --rays .bin) is covered without a list here.
+const ENDINGS = [...new Set(declared.commands.flatMap((c) => c.flags)
+  .filter((f) => f.kind === 'output').flatMap((f) => f.extensions || []))];
 function prepareOut(dir) {
-  mkdirSync(join(dir, 'dir.glb')); mkdirSync(join(dir, 'dir.json')); mkdirSync(join(dir, 'dir.svg'));
-  mkdirSync(join(dir, 'dir.csv')); mkdirSync(join(dir, 'dir.lsys')); mkdirSync(join(dir, 'dir.png'));
-  for (const ext of ['.glb', '.json', '.svg', '.csv', '.lsys', '.png']) symlinkSync(files, join(dir, `link${ext}`));
+  for (const ext of ENDINGS) {
+    mkdirSync(join(dir, `dir${ext}`));
+    symlinkSync(files, join(dir, `link${ext}`));
+  }
 }
-const preset = new Set(['dir.glb', 'dir.json', 'dir.svg', 'dir.csv', 'dir.lsys', 'dir.png',
-  'link.glb', 'link.json', 'link.svg', 'link.csv', 'link.lsys', 'link.png']);
+const preset = new Set(ENDINGS.flatMap((ext) => [`dir${ext}`, `link${ext}`]));
 
 // A valid-looking value of a flag (for repeats and for giving an output its flag).
 const sample = (flag) => flag.kind === 'number' ? String(flag.min)
