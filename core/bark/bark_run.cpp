@@ -194,10 +194,14 @@ Result<std::string> Table3Json(const std::vector<BarkState>& states, uint64_t fi
   return j.dump();
 }
 
-Result<BarkRun> BarkRun::Start(const BarkState& state, const Budget& budget) {
+Status BarkRun::Check(const BarkState& state, const Budget& budget) {
   NIWA_RETURN_IF_ERROR(CheckRunnable(state));
-  NIWA_RETURN_IF_ERROR(CheckEstimate(EstimateBarkRun(state), budget,
-                                     "lower N_R, N_H, cycles, T, settle_steps or map_size"));
+  return CheckEstimate(EstimateBarkRun(state), budget,
+                       "lower N_R, N_H, cycles, T, settle_steps or map_size");
+}
+
+Result<BarkRun> BarkRun::Start(const BarkState& state, const Budget& budget) {
+  NIWA_RETURN_IF_ERROR(Check(state, budget));
   BarkRun run;
   run.state_ = state;
   run.budget_ = budget;

@@ -83,6 +83,9 @@ class BarkRun : public run::StudyRun {
   // Checks the state (CheckBarkState, the model) and the estimate against the budget (errors name
   // the row or the budget's limit), then builds the lattice at rest. The growth waits for Advance.
   static Result<BarkRun> Start(const BarkState& state, const Budget& budget);
+  // Start's checks alone, with no lattice built: a front end refuses a state up front with them
+  // before a smaller stand-in of it runs (the page's preview).
+  static Status Check(const BarkState& state, const Budget& budget);
 
   // A new state: a changed grow row, species, model or seed regrows at the next Advance; only
   // map_size changed: the maps are redrawn on demand from the kept surface.

@@ -168,5 +168,22 @@ TEST(BarkRun, TheDocumentedWorkloadsFitTheDefaultBudget) {
   EXPECT_EQ(BarkRun::Start(four, budget).status().field(), "max_seconds");
 }
 
+// Check is Start's refusal without the lattice: the same answer, for the page's worker to ask before
+// it grows a preview (a 64 × 32 stand-in of a 100-cycle state fits where the state does not).
+TEST(BarkRun, CheckRefusesWhatStartRefusesWithoutBuilding) {
+  const Budget budget;
+  BarkState s;
+  ASSERT_TRUE(SetBarkSpecies("camphor", &s).ok());
+  EXPECT_TRUE(BarkRun::Check(s, budget).ok());
+  ASSERT_TRUE(s.params.Set(BarkParam::kCycles, 100).ok());
+  const Status refused = BarkRun::Check(s, budget);
+  EXPECT_EQ(refused.field(), "max_seconds");
+  EXPECT_EQ(refused.Line(), BarkRun::Start(s, budget).status().Line());
+  BarkState preview = s;  // the page's preview lattice of the same state
+  ASSERT_TRUE(SetBarkSize("64x32", &preview).ok());
+  ASSERT_TRUE(preview.params.Set(BarkParam::kMapSize, 256).ok());
+  EXPECT_TRUE(BarkRun::Check(preview, budget).ok()) << "the stand-in alone would run";
+}
+
 }  // namespace
 }  // namespace niwa::bark

@@ -66,6 +66,15 @@ class BarkLab {
  public:
   void setProgress(emscripten::val fn) { progress_ = fn; }
 
+  // The state's checks and estimate against the page's budget, nothing built: "" or the error
+  // record (the worker asks before it grows a preview of a state that the full run would refuse).
+  std::string check(const std::string& state_json) const {
+    bark::BarkState state;
+    Status s = bark::ApplyBarkStateJson(state_json, &state);
+    if (s.ok()) s = bark::BarkRun::Check(state, PageBudget());
+    return s.ok() ? "" : ErrorText(s);
+  }
+
   // Starts the run of the state ({species, model, seed, params: {row: value}}) and grows it to its
   // cycles and settling: "" or the error record (the last run is kept on error or cancel).
   std::string grow(const std::string& state_json) {
@@ -323,6 +332,7 @@ EMSCRIPTEN_BINDINGS(niwa_bark) {
   class_<niwa::BarkLab>("BarkLab")
       .constructor<>()
       .function("setProgress", &niwa::BarkLab::setProgress)
+      .function("check", &niwa::BarkLab::check)
       .function("grow", &niwa::BarkLab::grow)
       .function("statsJson", &niwa::BarkLab::statsJson)
       .function("hash", &niwa::BarkLab::hash)

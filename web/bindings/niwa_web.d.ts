@@ -168,6 +168,8 @@ export class BarkLab {
   constructor();
   /** fn(stage, done, total) every 256 steps of a grow; a false return cancels it. */
   setProgress(fn: ((stage: string, done: number, total: number) => boolean | void) | null): void;
+  /** The state's checks and estimate against the page's budget, nothing grown: "" or the error record. */
+  check(stateJson: string): ErrorText;
   grow(stateJson: string): ErrorText;
   statsJson(): string;
   hash(): string;

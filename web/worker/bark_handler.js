@@ -71,6 +71,13 @@ export function createHandler(Module, ctx) {
     entry.working = id;
     const state = msg.state || {};
     const t0 = performance.now();
+    // Refused up front: a state the full run would refuse (over the page's budget) grows no preview
+    // either (the preview's smaller lattice alone could fit: 100 cycles ran for minutes).
+    const refused = errorOf(entry.lab.check(JSON.stringify(state)));
+    if (refused) {
+      post(errorReply(refused, id, client));
+      return;
+    }
     if (wantsPreview(state)) {
       entry.phase = 'preview';
       entry.lastPost = 0;
