@@ -179,8 +179,9 @@ await runBrowserTest(async (server, browser) => {
   check('the page recovers after the bad value', data.status === 'ready' && data.hash.includes('kappa1=1.03'), `${data.status} ${data.hash} ${data.error || ''}`);
 
   // 6. Copy link: the link reopens the same run.
+  // (The line beside the buttons still says what the download above saved: wait for Copy link's own.)
   await page.click('#copy-link');
-  await page.waitForFunction(() => document.getElementById('share-status').textContent !== '', null, { timeout: TIMEOUT });
+  await page.waitForFunction(() => /^(Link copied\.|Copy this link: )/.test(document.getElementById('share-status').textContent), null, { timeout: TIMEOUT });
   const status = await page.textContent('#share-status');
   const link = status === 'Link copied.' ? await page.evaluate(() => navigator.clipboard.readText()) : status.replace(/^Copy this link: /, '');
   check('Copy link gives the page\'s link', link.endsWith(`#${data.hash}`), `${status}: ${link}`);
