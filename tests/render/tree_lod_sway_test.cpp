@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "support/glb_parse.h"
+#include "support/glb_skin.h"
 #include "support/grow.h"
 #include "tree/mesh.h"
 #include "tree/tree_params.h"
@@ -23,6 +24,7 @@ namespace {
 using nlohmann::json;
 using testing::Glb;
 using testing::ParseGlb;
+using testing::PrimitiveAtKey;
 using testing::ReadAccessor;
 
 SwayParams Gust() {
@@ -32,54 +34,6 @@ SwayParams Gust() {
   EXPECT_EQ(ps.Set(ParamId::kGustOff, 5.0).Line(), "");
   EXPECT_EQ(ps.Set(ParamId::kSwayDuration, 1.0).Line(), "");
   return SwayParams(ps);
-}
-
-// Every vertex of primitive `primitive` at key `key` (every key kept), skinned from the .glb alone.
-std::vector<glm::dvec3> PrimitiveAtKey(const Glb& glb, std::size_t primitive, std::size_t key) {
-  const json& gltf = glb.gltf;
-  const json& skin = gltf["skins"][0];
-  const std::size_t joints = skin["joints"].size();
-  std::vector<glm::dvec3> t(joints), offset(joints);
-  std::vector<glm::dquat> q(joints, glm::dquat(1, 0, 0, 0));
-  const std::vector<float> ibm = ReadAccessor<float>(glb, skin["inverseBindMatrices"].get<int>());
-  for (std::size_t j = 0; j < joints; ++j) {
-    const json& node = gltf["nodes"][skin["joints"][j].get<std::size_t>()];
-    if (node.contains("translation")) {
-      t[j] = {node["translation"][0].get<double>(), node["translation"][1].get<double>(),
-              node["translation"][2].get<double>()};
-    }
-    offset[j] = {ibm[16 * j + 12], ibm[16 * j + 13], ibm[16 * j + 14]};
-  }
-  const json& clip = gltf["animations"][0];
-  for (const json& channel : clip["channels"]) {
-    const int node = channel["target"]["node"].get<int>();
-    const std::size_t j = static_cast<std::size_t>(
-        std::find(skin["joints"].begin(), skin["joints"].end(), node) - skin["joints"].begin());
-    const json& sampler = clip["samplers"][channel["sampler"].get<std::size_t>()];
-    const std::vector<float> v = ReadAccessor<float>(glb, sampler["output"].get<int>());
-    if (channel["target"]["path"] == "translation") {
-      t[j] = {v[3 * key], v[3 * key + 1], v[3 * key + 2]};
-    } else {
-      q[j] = glm::dquat(v[4 * key + 3], v[4 * key], v[4 * key + 1], v[4 * key + 2]);
-    }
-  }
-  const json& a = gltf["meshes"][0]["primitives"][primitive]["attributes"];
-  const std::vector<uint16_t> j0 = ReadAccessor<uint16_t>(glb, a["JOINTS_0"].get<int>());
-  const std::vector<float> w0 = ReadAccessor<float>(glb, a["WEIGHTS_0"].get<int>());
-  const std::vector<float> p = ReadAccessor<float>(glb, a["POSITION"].get<int>());
-  std::vector<glm::dvec3> out;
-  for (std::size_t v = 0; 3 * v + 2 < p.size(); ++v) {
-    const glm::dvec3 rest(p[3 * v], p[3 * v + 1], p[3 * v + 2]);
-    glm::dvec3 at(0.0);
-    for (std::size_t c = 0; c < 4; ++c) {
-      const double w = w0[4 * v + c];
-      if (w == 0) continue;
-      const std::size_t j = j0[4 * v + c];
-      at += w * (q[j] * (rest + offset[j]) + t[j]);
-    }
-    out.push_back(at);
-  }
-  return out;
 }
 
 TEST(TreeLodSway, FullMeshThatFitsIsTheSwayGlb) {
