@@ -33,14 +33,15 @@ export function requireWasm() {
 // result whichever tier compiles it, so the native == WASM comparisons hold. NIWA_WASM_NODE_FLAGS
 // replaces the flag (empty: V8's default tiers). The unit-test binaries keep the default tiers (their
 // long loops gain from it: ivy_tests 50 s against 62 s liftoff-only).
-const nodeFlags = (process.env.NIWA_WASM_NODE_FLAGS ?? '--liftoff-only').split(' ').filter(Boolean);
-export const cliArgv = (cmd, args) => (cmd.endsWith('.js') ? ['node', [...nodeFlags, cmd, ...args]] : [cmd, args]);
+const flagsOf = (text) => text.split(' ').filter(Boolean);
+// [program, argv] of cmd: a .js build under node with `flags`, a native one as it is.
+const argvWith = (flags) => (cmd, args) => (cmd.endsWith('.js') ? ['node', [...flags, cmd, ...args]] : [cmd, args]);
+export const cliArgv = argvWith(flagsOf(process.env.NIWA_WASM_NODE_FLAGS ?? '--liftoff-only'));
 // A batch process (niwa_cli_batch.js: hundreds of cases in one process, tests/support/cli_batch.mjs)
 // keeps V8's default tiers: the same code runs case after case, so the optimising tier pays for itself
 // (the hostile suite's 2,970 WASM cases: 87.5 s with --liftoff-only, 30.2 s with the default tiers, at
 // load 21). NIWA_WASM_BATCH_NODE_FLAGS replaces it (e.g. --liftoff-only).
-const batchNodeFlags = (process.env.NIWA_WASM_BATCH_NODE_FLAGS ?? '').split(' ').filter(Boolean);
-export const batchArgv = (cmd, args) => (cmd.endsWith('.js') ? ['node', [...batchNodeFlags, cmd, ...args]] : [cmd, args]);
+export const batchArgv = argvWith(flagsOf(process.env.NIWA_WASM_BATCH_NODE_FLAGS ?? ''));
 // stdout of a successful run (throws on a non-zero exit).
 export const run = (cmd, args) => execFileSync(...cliArgv(cmd, args), { encoding: 'utf8' });
 // {status, stdout, stderr} of any run.
