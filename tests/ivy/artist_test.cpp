@@ -14,21 +14,10 @@
 #include "io/mesh_reader.h"
 #include "ivy/ivy_report.h"
 #include "ivy/ivy_run.h"
+#include "support/ivy_bunny.h"
 
 namespace niwa::ivy {
 namespace {
-
-std::shared_ptr<const IvySupport> Bunny() {
-  const std::string path = std::string(NIWA_SOURCE_DIR) + "/tests/data/meshes/bunny.obj";
-  Result<geom::TriMesh> bunny = io::ReadMeshFile(path);
-  EXPECT_TRUE(bunny.ok()) << bunny.status().Line();
-  IvySupportOptions options;
-  options.front_seed = true;  // the page's default seed on a dropped mesh
-  Result<std::shared_ptr<const IvySupport>> support =
-      IvySupport::Prepare(IvySupportInput::Mesh(*bunny, "bunny.obj", {}), options, Budget{});
-  EXPECT_TRUE(support.ok()) << support.status().Line();
-  return *support;
-}
 
 std::shared_ptr<const IvySupport> Scene(const char* name) {
   Result<std::shared_ptr<const IvySupport>> support =
@@ -102,7 +91,8 @@ void Print(const char* where, const char* preset, const Grown& g) {
 }
 
 TEST(IvyArtist, SpreadsDownTheFarSideWithoutReversalsOnTheBunnyAndAFacade) {
-  const std::shared_ptr<const IvySupport> bunny = Bunny(), facade = Scene("overhang");
+  const std::shared_ptr<const IvySupport> bunny = testing::BunnySupport(),
+                                          facade = Scene("overhang");
   for (const auto& [where, support] : {std::pair{"bunny", bunny}, std::pair{"facade", facade}}) {
     const Grown paper = GrowOn(support, "paper", 150);
     const Grown artist = GrowOn(support, "artist", 150);

@@ -13,6 +13,7 @@
 #include "geom/ray_cast.h"
 #include "io/mesh_reader.h"
 #include "ivy/ivy_run.h"
+#include "support/ivy_bunny.h"
 
 namespace niwa::ivy {
 namespace {
@@ -92,26 +93,9 @@ Grown GrowAndMeasure(const std::shared_ptr<const IvySupport>& support, const cha
   return g;
 }
 
-std::shared_ptr<const IvySupport> Bunny(bool inward) {
-  const std::string path = std::string(NIWA_SOURCE_DIR) + "/tests/data/meshes/bunny.obj";
-  Result<geom::TriMesh> bunny = io::ReadMeshFile(path);
-  EXPECT_TRUE(bunny.ok()) << bunny.status().Line();
-  if (inward) {  // a scan whose faces are wound inward
-    for (std::size_t t = 0; t + 2 < bunny->indices.size(); t += 3)
-      std::swap(bunny->indices[t + 1], bunny->indices[t + 2]);
-    for (glm::vec3& n : bunny->normals) n = -n;
-  }
-  IvySupportOptions options;
-  options.front_seed = true;  // the page's default seed on a dropped mesh
-  Result<std::shared_ptr<const IvySupport>> support =
-      IvySupport::Prepare(IvySupportInput::Mesh(*bunny, "bunny.obj", {}), options, Budget{});
-  EXPECT_TRUE(support.ok()) << support.status().Line();
-  return *support;
-}
-
 TEST(IvyLeaves, AtMostOnePercentOfTheLeafAreaIsInsideTheBunny) {
   for (bool inward : {false, true}) {
-    std::shared_ptr<const IvySupport> bunny = Bunny(inward);
+    std::shared_ptr<const IvySupport> bunny = testing::BunnySupport(inward);
     for (const char* preset : {"paper", "improved"}) {
       if (inward && preset != std::string("paper")) continue;  // the seed's side is what differs
       const Grown g = GrowAndMeasure(bunny, preset, 150);
@@ -126,7 +110,7 @@ TEST(IvyLeaves, AtMostOnePercentOfTheLeafAreaIsInsideTheBunny) {
   }
   // What the page did before on a scan wound inward: the default seed exactly on the surface was
   // lifted along the face's winding, inside, and the ivy grew inside the bunny, every leaf with it.
-  std::shared_ptr<const IvySupport> inward = Bunny(true);
+  std::shared_ptr<const IvySupport> inward = testing::BunnySupport(true);
   const NamedSeed front = inward->scene().seeds.at(0);
   const geom::ClosestHit on = geom::ClosestPoint(
       *inward->mesh(), inward->bvh(), glm::vec3(front.pos), std::numeric_limits<float>::infinity());
