@@ -86,6 +86,13 @@ let framesInstalled = 0;  // the live frames put on the renderer (data-drawn-fra
 let livePhase = '';       // the phase of the last of them (preview or full)
 let liveFullDrawn = 0;    // distinct full-lattice frames drawn while a run grows (data-live-full-drawn)
 let lastFullDrawn = -1;
+// A live frame is drawn in full before the next replaces it: on a slow GPU (SwiftShader under load)
+// a frame drawn in parts takes longer than the worker's 100 ms between frames, and installing each
+// as it came restarted the frame every time, so no growing lattice was ever finished on screen
+// (and a frame in parts could mix two steps). A frame arriving meanwhile waits here; a newer one
+// replaces it.
+let liveWaiting = null;   // the newest live frame not yet installed
+let liveDrawing = false;  // the installed live frame has not been drawn in full yet
 const loop = new ProgressiveLoop({
   renderer: () => (renderer ? frame : null),
   camera,
@@ -93,6 +100,12 @@ const loop = new ProgressiveLoop({
     if (renderer?.live && livePhase === 'full' && framesInstalled !== lastFullDrawn) {
       lastFullDrawn = framesInstalled;
       liveFullDrawn += 1;
+    }
+    liveDrawing = false;
+    if (liveWaiting) {
+      const next = liveWaiting;
+      liveWaiting = null;
+      installLive(next);
     }
     setHooks({ drawnSerial: installedSerial, drawnFrame: framesInstalled, drawnPhase: renderer?.live ? livePhase : '', liveFullDrawn, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls, tileShows: renderer?.tileShows ?? '' });
   },
@@ -217,22 +230,39 @@ worker.on('progress', (msg) => {
 // A frame of the lattice while it grows (the preview's or the full run's).
 worker.on('frame', (msg) => {
   if (!controller.isLatest(msg) || !renderer) return;
+  framesSeen += 1;
+  setHooks({ framesSeen, framePhase: msg.phase });
+  if (liveDrawing) {
+    liveWaiting = msg;  // drawn once the frame on screen is finished (above)
+    return;
+  }
+  installLive(msg);
+});
+
+function installLive(msg) {
+  if (!controller.isLatest(msg) || !renderer) return;  // a newer run, or its result, came meanwhile
   renderer.setStep(Infinity);
   renderer.setTile(msg.tile, msg.bounds, { live: true });
   renderer.setSprings(null);  // the finished run's come with it
   framesInstalled += 1;
   livePhase = msg.phase;
+  liveDrawing = true;
   if (frameNext) {
     frameBark();
     frameNext = false;
   }
-  framesSeen += 1;
-  setHooks({ framesSeen, framePhase: msg.phase });
   requestFrame();
-});
+}
+
+// A preview or a finished run replaces what is on screen: no live frame waits any more.
+function endLive() {
+  liveWaiting = null;
+  liveDrawing = false;
+}
 
 worker.on('preview', (msg) => {
   if (!controller.isLatest(msg)) return;
+  endLive();
   if (renderer) {
     renderer.setStep(Infinity);
     renderer.setTile(msg.buffers.tile, msg.bounds);
@@ -259,6 +289,7 @@ function fmt(x, patchHeight = Infinity) {
 
 worker.on('bark', (msg) => {
   if (!controller.isLatest(msg)) return;
+  endLive();
   notices.set('error', '');
   controller.showFieldError('');
   ui.rngSeed.setAttribute('aria-invalid', 'false');
