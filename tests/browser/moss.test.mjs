@@ -287,6 +287,33 @@ await runBrowserTest(async (server, browser) => {
   check('a bad days in the hash is a notice, and a run grows', data.status === 'ready' && /days/.test(hashNotice),
     `${data.status}, ${data.hash}, notice '${hashNotice.replace(/\n/g, ' | ')}'`);
 
+  // 5b. The rocks scene's size knob (rock_triangles): shown only on rocks, in the hash, a bad value beside it.
+  serial = Number(data.mossSerial);
+  await page.selectOption('#scene', 'rocks');
+  data = await waitMoss(page, serial);
+  const rocksBefore = JSON.parse(data.stats);
+  const knobShown = await page.isVisible('#rock-triangles');
+  serial = Number(data.mossSerial);
+  await page.fill('#rock-triangles', '6400');
+  data = await waitMoss(page, serial);
+  const rocksAfter = JSON.parse(data.stats);
+  check('Rock triangles shows on rocks and regrows them finer (hash, stats)', knobShown && data.hash.includes('rock_triangles=6400')
+    && rocksBefore.rock_triangles === undefined && rocksAfter.rock_triangles === 6400 && rocksAfter.cells.total > rocksBefore.cells.total,
+    `shown ${knobShown}, ${data.hash}, stats rock_triangles ${rocksBefore.rock_triangles} (the default is left out) -> ${rocksAfter.rock_triangles}, cells ${rocksBefore.cells.total} -> ${rocksAfter.cells.total}`);
+  await page.fill('#rock-triangles', '50');
+  await page.waitForFunction(() => document.documentElement.dataset.status === 'error', null, { timeout: TIMEOUT });
+  const rocksLine = await page.evaluate(() => {
+    const line = document.getElementById('rock-triangles-error');
+    return line && !line.hidden ? line.textContent : '';
+  });
+  check('Rock triangles 50 is a line beside it naming the range', /rock_triangles/.test(rocksLine) && /100/.test(rocksLine) && /6553600|6,553,600/.test(rocksLine), rocksLine);
+  await page.fill('#rock-triangles', '1600');
+  data = await waitMoss(page, serial);
+  check('after it the rocks grow again, and the hash leaves the default out', data.status === 'ready' && !data.hash.includes('rock_triangles'), `${data.status} ${data.hash}`);
+  await page.selectOption('#scene', 'plane');
+  const knobHidden = !(await page.isVisible('#rock-triangles'));
+  check('Rock triangles hides on other scenes', knobHidden, `hidden ${knobHidden}`);
+
   // 6. Copy link: the link reopens the same run.
   serial = Number(data.mossSerial);
   await page.selectOption('#scene', 'plane');

@@ -43,6 +43,7 @@ const ui = {
   downloadStats: $('download-stats'), downloadCsv: $('download-csv'), meshFile: $('mesh-file'), meshError: $('mesh-error'),
   land: $('land'), landHelp: $('land-help'), landTree: $('land-tree'), landTerrain: $('land-terrain'),
   treePreset: $('tree-preset'), treeYears: $('tree-years'), terrainPreset: $('terrain-preset'), terrainSeed: $('terrain-seed'),
+  landRocks: $('land-rocks'), rockTriangles: $('rock-triangles'),
 };
 const chart = new PopulationChart($('population-chart'), $('population-legend'));
 let lastStats = null;  // the stats of the run shown (the downloads' source)
@@ -53,6 +54,7 @@ const notices = new Notices($('notice'), ['webgl', 'error', 'hash', 'mesh']);
 const BASIC_FIELDS = {
   scene: 'scene-error', mesh: 'mesh-error', preset: 'preset-error', days: 'days-error', seed: 'rng-seed-error',
   tree: 'tree-preset-error', tree_years: 'tree-years-error', terrain: 'terrain-preset-error', terrain_seed: 'terrain-seed-error',
+  rock_triangles: 'rock-triangles-error',
 };
 const controller = new StudyController({
   study: 'moss', notices, ui, fields: BASIC_FIELDS, panel: () => panel, state: () => currentState(false),
@@ -178,6 +180,7 @@ function currentState(reset) {
   };
   if (land === 'tree') Object.assign(state, { tree: ui.treePreset.value.trim(), tree_years: numberOr(ui.treeYears) });
   if (land === 'terrain') Object.assign(state, { terrain: ui.terrainPreset.value.trim(), terrain_seed: numberOr(ui.terrainSeed) });
+  if (land === 'scene' && ui.scene.value === 'rocks') state.rock_triangles = numberOr(ui.rockTriangles);
   state.params = reset ? {} : panel.values();
   return state;
 }
@@ -187,6 +190,7 @@ function showLand() {
   const land = ui.land.value;
   ui.landTree.hidden = land !== 'tree';
   ui.landTerrain.hidden = land !== 'terrain';
+  ui.landRocks.hidden = !(land === 'scene' && ui.scene.value === 'rocks');  // the rocks scene's size knob
   ui.scene.disabled = land !== 'scene';
   ui.landHelp.textContent = land === 'tree' ? 'Moss on a grown Niwa tree: its bark (sandy) and a square of humus around its foot.'
     : land === 'terrain' ? 'Moss on a grown Niwa terrain (metres, y up): a mountain of a few hundred metres, so the photons spread thin.' : '';
@@ -203,6 +207,7 @@ function applyState(state) {
   } else {
     ui.land.value = 'scene';
     ui.scene.value = state.scene;
+    if (state.rock_triangles !== undefined) ui.rockTriangles.value = String(state.rock_triangles);
   }
   showLand();
   ui.days.value = String(state.days);
@@ -423,6 +428,7 @@ new FileDrop({
 // ---------------------------------------------------------------- controls
 ui.scene.addEventListener('change', () => {
   useMesh = false;
+  showLand();
   showHelp();
   frameNext = true;
   sendUpdate(true);
@@ -434,7 +440,7 @@ ui.land.addEventListener('change', () => {
   frameNext = true;
   sendUpdate(true);
 });
-for (const input of [ui.treePreset, ui.treeYears, ui.terrainPreset, ui.terrainSeed]) {
+for (const input of [ui.treePreset, ui.treeYears, ui.terrainPreset, ui.terrainSeed, ui.rockTriangles]) {
   input.addEventListener('input', () => {
     frameNext = true;
     scheduleUpdate();
