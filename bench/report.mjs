@@ -3,7 +3,7 @@
 // node bench/report.mjs --native N1.jsonl[,N2.jsonl...] --wasm W1.jsonl[,...] [--peer P1.jsonl[,...]]
 //                       [--gbench G.txt] [--grove GR.jsonl] [--terrain-page T1.jsonl[,...]]
 //                       [--worker WK.jsonl] [--page-timings PT.jsonl] [--moss-page M1.jsonl[,...]]
-//                       [--moss-rays R.jsonl] [--meta META.json]
+//                       [--moss-rays R.jsonl] [--first-picture FP.jsonl] [--meta META.json]
 //                       [--record docs/BENCHMARKS.md]
 // N/W/P hold one JSON object per line as printed by niwa_bench_runner / ez_tree_peer.mjs /
 // fastnoise_peer.mjs, one file per run (process): each workload keeps its fastest run, and the table
@@ -11,7 +11,8 @@
 // bench/terrain_page.mjs (the page's 512² regrow); WK those of bench/worker_first_grow.mjs; PT the page's
 // answer times of the browser tests (harness.mjs timedCheck); M the lines of bench/moss_page.mjs (the
 // moss page's 300-day thesis run and its scrubber); R those of bench/moss_rays_peer.mjs (three-mesh-bvh
-// on the thesis rays of niwa moss photons --rays); META holds {date, machine, cpu, cores, tools, load,
+// on the thesis rays of niwa moss photons --rays); FP those of bench/first_picture.mjs (the tree page's
+// first picture beside an ez-tree page's, fresh Chromium each); META holds {date, machine, cpu, cores, tools, load,
 // command, seconds}.
 import {readFileSync, writeFileSync, existsSync} from 'node:fs';
 
@@ -235,6 +236,18 @@ for (const kind of ['closest', 'segment']) {
       `${fmt(grow.ms)} ms (worker ${fmt(grow.worker_ms)} ms; ${grow.runs.map(fmt).join(' / ')})`, grow.ms <= 10_000);
   }
   if (scrub) goal('moss page: the day scrubber answers ≤ 100 ms (input to frame, day 300 run)', `${fmt(scrub.ms)} ms median, ${fmt(scrub.max_ms)} ms slowest`, scrub.ms <= 100);
+}
+// The tree page's first picture (issue 32 item 5): within 2× an ez-tree page's load in the same run.
+{
+  const rows = readLines(args['first-picture']).filter((r) => r.workload);
+  const niwa = rows.find((r) => r.workload === 'first-picture/niwa/tree');
+  const ez = rows.find((r) => r.workload === 'first-picture/ez-tree');
+  const bare = rows.find((r) => r.workload === 'first-picture/ez-tree-untextured');
+  if (niwa && ez) {
+    goal(`tree page's first picture ≤ 2× an ez-tree page's (${niwa.ez_tree_preset}, textured; fresh Chromium each, medians of ${niwa.reps})`,
+      `${fmt(niwa.ms)} ms against ${fmt(ez.ms)} ms: ${(niwa.ms / ez.ms).toFixed(2)}×${bare ? ` (${(niwa.ms / bare.ms).toFixed(2)}× its first untextured frame, ${fmt(bare.ms)} ms)` : ''}`,
+      niwa.ms <= 2 * ez.ms);
+  }
 }
 // Moss tracing (issue 29 item 6): photon cost linear in photons (thesis, 2 k to 64 k), tracing cost
 // ≤ 2× per 10× triangles (rocks, rock_triangles 1 k to 1 M: the icosphere levels they round up to),
