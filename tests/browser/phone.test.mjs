@@ -206,5 +206,37 @@ await runBrowserTest(async (server, browser) => {
   check('phone again: the controls back in the dock', (await dataset(page)).docked === '1'
     && (await onScreen(page, '#wind')).ok && (await onScreen(page, '#simple-years')).ok);
 
+  // ---- A tablet held upright (768 x 1024): one column like the phone, the view the screen's width,
+  // the dock's controls on the first screen; turned (1024 x 768): view and panel side by side, the
+  // studies' links on one line.
+  await page.setViewportSize({ width: 768, height: 1024 });
+  await page.waitForTimeout(300);
+  const upright = await page.evaluate(() => {
+    const v = document.getElementById('view').getBoundingClientRect();
+    return { width: v.width, height: v.height, docked: document.documentElement.dataset.docked };
+  });
+  const reach = [];
+  for (const [name, selector] of Object.entries(CONTROLS)) {
+    const r = await page.evaluate(([sel]) => {
+      const e = document.querySelector(sel);
+      const b = e.getBoundingClientRect();
+      return { ok: b.top >= 0 && b.bottom <= innerHeight && b.height > 0, box: [b.x, b.y, b.width, b.height].map(Math.round) };
+    }, [selector]);
+    if (!r.ok) reach.push(`${name} ${JSON.stringify(r.box)}`);
+  }
+  await page.screenshot({ path: path.join(ARTIFACTS, 'tablet-portrait.png') });
+  check('tablet upright: one column, the view the screen\'s width, every control on the first screen', upright.width === 768
+    && upright.height >= 0.5 * 1024 && upright.docked === '1' && reach.length === 0, `${JSON.stringify(upright)} ${reach.join(', ')}`);
+  await page.setViewportSize({ width: 1024, height: 768 });
+  await page.waitForTimeout(300);
+  const turned = await page.evaluate(() => {
+    const v = document.getElementById('view').getBoundingClientRect();
+    const tops = [...document.querySelectorAll('.studies li')].map((li) => Math.round(li.getBoundingClientRect().top));
+    return { width: v.width, height: v.height, docked: document.documentElement.dataset.docked, links: tops.length, lines: new Set(tops).size };
+  });
+  await page.screenshot({ path: path.join(ARTIFACTS, 'tablet-landscape.png') });
+  check('tablet turned: view and panel side by side, the studies\' links on one line', turned.width >= 0.6 * 1024 && turned.height === 768
+    && turned.docked !== '1' && turned.links >= 6 && turned.lines === 1, JSON.stringify(turned));
+
   check('no console errors or warnings', problems.length === 0, problems.slice(0, 5).join(' | '));
 });

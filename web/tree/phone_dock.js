@@ -1,5 +1,6 @@
 // The tree page's dock on a phone (issue 32 item 4): on a view as narrow as style.css's one-column
-// layout (max-width 760 px: the panel goes under the view), the controls used most (Preset, Age,
+// layout (max-width 760 px, or a tablet held upright: portrait up to 1,100 px wide; the panel goes
+// under the view), the controls used most (Preset, Age,
 // Blow, Cut and Undo, with the line saying what is selected) move into the dock right under the view,
 // so each one's effect shows on the same screen as the control (they sat 1,868-2,945 px down the
 // panel); on a wider view they go back to their places in the panel. Play is in the view already.
@@ -8,7 +9,8 @@
 // Does not: create or wire a control, or style the dock (style.css `.dock`).
 import { setHooks } from '../shell/test_hooks.js';
 
-export const PHONE_QUERY = '(max-width: 760px)';
+// Keep in step with style.css's one-column @media rule.
+export const PHONE_QUERY = '(max-width: 760px), (orientation: portrait) and (max-width: 1100px)';
 
 export class PhoneDock {
   // dock: the element under the view, holding slots [data-dock-slot=NAME]; query: the media query
