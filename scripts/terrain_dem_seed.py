@@ -1,24 +1,30 @@
 #!/usr/bin/env python3
-"""Makes the terrain study's real seed from a real elevation model shipped in a Debian package.
+"""Makes the terrain study's real seeds from real elevation models shipped in a Debian package.
 
-Source: /usr/share/matplotlib/mpl-data/sample_data/jacksboro_fault_dem.npz (Debian package
-python-matplotlib-data; scripts/setup installs it). It is a USGS elevation grid of the Jacksboro
-fault, Tennessee (3 arc-second cells, 344 x 403, 236-1076 m); USGS elevation data is a work of the
-US federal government (public domain), shipped by matplotlib as its sample data under matplotlib's
-licence (/usr/share/doc/python-matplotlib-data/copyright).
+Sources (Debian package python-matplotlib-data, which scripts/setup installs; matplotlib's sample
+data under matplotlib's licence, /usr/share/doc/python-matplotlib-data/copyright):
+  jacksboro  /usr/share/matplotlib/mpl-data/sample_data/jacksboro_fault_dem.npz: a USGS elevation grid
+             of the Jacksboro fault, Tennessee (3 arc-second cells, 344 x 403, 236-1076 m); USGS
+             elevation data is a work of the US federal government (public domain).
+  topobathy  /usr/share/matplotlib/mpl-data/sample_data/topobathy.npz: topography and bathymetry of
+             Vancouver Island, the Strait of Georgia and the Coast Mountains (2 arc-minute cells,
+             91 x 120, 48.0-50.0 N, 126.0-122.0 W, -1437..2205 m): a second, coarser real DEM
+             (cells of about 2.2 km) of younger, steeper mountains than the Appalachian ridge.
 
 Writes (python3 standard library only: the .npz is a zip of .npy arrays):
-  tests/data/terrain/jacksboro_dem.png + .json  the DEM resampled (bilinear) to square cells in local
+  tests/data/terrain/<source>_dem.png + .json  the DEM resampled (bilinear) to square cells in local
       metres (x east from the west edge, y north from the south edge), in the format of
       `niwa terrain grow --heightmap` (16-bit grey, sidecar with min/max elevation, cell, origin)
-  tests/data/terrain/jacksboro_<E>.json         the longest closed contour at elevation E (marching
+  tests/data/terrain/<source>_<E>.json         the longest closed contour at elevation E (marching
       squares on that grid, Douglas-Peucker to a quarter cell), {"points", "elevation", "source"}
-  core/terrain/seed_jacksboro.inc               the same points as a C++ initialiser (built-in seed)
-Usage: scripts/terrain_dem_seed.py [ELEVATION=700]
+  core/terrain/seed_jacksboro.inc               (jacksboro only) the same points as a C++
+      initialiser (the built-in seed)
+Usage: scripts/terrain_dem_seed.py [jacksboro|topobathy] [ELEVATION=700]
+       (a number first: jacksboro at that elevation, as before)
 """
 import json, math, struct, sys, zipfile, zlib, os
 
-NPZ = '/usr/share/matplotlib/mpl-data/sample_data/jacksboro_fault_dem.npz'
+SAMPLES = '/usr/share/matplotlib/mpl-data/sample_data/'
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
@@ -27,7 +33,7 @@ def npy(z, name):
     hlen = struct.unpack('<H', data[8:10])[0]
     header = eval(data[10:10 + hlen].decode('latin1'))  # numpy's own header dict literal
     body = data[10 + hlen:]
-    fmt = {'<i2': 'h', '<f8': 'd'}[header['descr']]
+    fmt = {'<i2': 'h', '<f4': 'f', '<f8': 'd'}[header['descr']]
     shape = header['shape']
     count = 1
     for s in shape:
@@ -36,18 +42,46 @@ def npy(z, name):
     return values, shape
 
 
+def load(source):
+    """The DEM as (elevations row-major with row 0 north, rows, cols, west, east, south, north in
+    degrees of the grid's outer edges, a line naming it)."""
+    if source == 'jacksboro':
+        z = zipfile.ZipFile(SAMPLES + 'jacksboro_fault_dem.npz')
+        elev, (rows, cols) = npy(z, 'elevation.npy')
+        xmin, ymin = npy(z, 'xmin.npy')[0][0], npy(z, 'ymin.npy')[0][0]
+        xmax, ymax = npy(z, 'xmax.npy')[0][0], npy(z, 'ymax.npy')[0][0]
+        # The file's ymin (36.733) is its north edge and ymax (36.446) its south: row 0 is north.
+        return (list(elev), rows, cols, min(xmin, xmax), max(xmin, xmax), min(ymin, ymax), max(ymin, ymax),
+                'USGS DEM of the Jacksboro fault (matplotlib sample data jacksboro_fault_dem.npz, '
+                'Debian python-matplotlib-data)')
+    if source == 'topobathy':
+        z = zipfile.ZipFile(SAMPLES + 'topobathy.npz')
+        topo, (rows, cols) = npy(z, 'topo.npy')
+        lon, _ = npy(z, 'longitude.npy')
+        lat, _ = npy(z, 'latitude.npy')
+        # Cell centres, latitude ascending (row 0 south): flipped so row 0 is north.
+        dlon, dlat = (lon[-1] - lon[0]) / (cols - 1), (lat[-1] - lat[0]) / (rows - 1)
+        elev = []
+        for j in range(rows - 1, -1, -1):
+            elev += topo[j * cols:(j + 1) * cols]
+        return (elev, rows, cols, lon[0] - dlon / 2, lon[-1] + dlon / 2, lat[0] - dlat / 2, lat[-1] + dlat / 2,
+                'topography and bathymetry of Vancouver Island and the Coast Mountains (matplotlib sample '
+                'data topobathy.npz, Debian python-matplotlib-data)')
+    sys.exit('terrain_dem_seed.py: source must be jacksboro or topobathy, not %r' % source)
+
+
 def main():
-    level = float(sys.argv[1]) if len(sys.argv) > 1 else 700.0
-    z = zipfile.ZipFile(NPZ)
-    elev, (rows, cols) = npy(z, 'elevation.npy')
-    xmin, ymin = npy(z, 'xmin.npy')[0][0], npy(z, 'ymin.npy')[0][0]
-    xmax, ymax = npy(z, 'xmax.npy')[0][0], npy(z, 'ymax.npy')[0][0]
+    args = sys.argv[1:]
+    source = 'jacksboro'
+    if args and not args[0].replace('.', '', 1).isdigit():
+        source = args.pop(0)
+    level = float(args[0]) if args else 700.0
+    elev, rows, cols, west, east, south, north, what = load(source)
     # Degrees to local metres (equirectangular at the mid latitude; WGS84 metres per degree).
-    lat = math.radians((ymin + ymax) / 2)
+    lat = math.radians((south + north) / 2)
     m_lat = 111132.92 - 559.82 * math.cos(2 * lat) + 1.175 * math.cos(4 * lat)
     m_lon = 111412.84 * math.cos(lat) - 93.5 * math.cos(3 * lat)
-    # The file's ymin (36.733) is its north edge and ymax (36.446) its south: row 0 is north.
-    width_m, height_m = abs(xmax - xmin) * m_lon, abs(ymax - ymin) * m_lat
+    width_m, height_m = (east - west) * m_lon, (north - south) * m_lat
     cx, cy = width_m / cols, height_m / rows  # the source cells (row 0 north, as matplotlib shows it)
     cell = round(min(cx, cy), 3)
     W, H = int(width_m / cell), int(height_m / cell)
@@ -72,8 +106,7 @@ def main():
             'max_elevation': hi, 'cell_size': cell, 'origin': {'x': 0.0, 'y': H * cell},
             'origin_is': 'north-west corner of pixel (0, 0); x east, y north, metres; row 0 is north',
             'elevation': 'min_elevation + sample / 65535 * (max_elevation - min_elevation)',
-            'source': 'USGS DEM of the Jacksboro fault (matplotlib sample data jacksboro_fault_dem.npz, '
-                      'Debian python-matplotlib-data), resampled bilinear to square cells'}
+            'source': what + ', resampled bilinear to square cells'}
     raw = bytearray()
     for j in range(H):
         raw.append(0)
@@ -87,8 +120,8 @@ def main():
     png += chunk(b'IDAT', zlib.compress(bytes(raw), 9)) + chunk(b'IEND', b'')
     out = os.path.join(ROOT, 'tests', 'data', 'terrain')
     os.makedirs(out, exist_ok=True)
-    open(os.path.join(out, 'jacksboro_dem.png'), 'wb').write(png)
-    open(os.path.join(out, 'jacksboro_dem.json'), 'w').write(json.dumps(meta, indent=2) + '\n')
+    open(os.path.join(out, source + '_dem.png'), 'wb').write(png)
+    open(os.path.join(out, source + '_dem.json'), 'w').write(json.dumps(meta, indent=2) + '\n')
 
     # Marching squares over the cell centres; segments chained into closed rings.
     def pos(i, j):
@@ -158,16 +191,21 @@ def main():
         second = simplify(points[far:] + [points[0]])
         return first[:-1] + second[:-1]
     simple = [(round(x, 2), round(y, 2)) for x, y in dp(ring, cell / 4)]
-    name = 'jacksboro_%d' % level
-    source = ('the %g m contour of the USGS Jacksboro fault DEM (matplotlib sample data, Debian '
-              'python-matplotlib-data; public domain USGS data), marching squares on %g m cells, '
-              'Douglas-Peucker %g m; %d points; scripts/terrain_dem_seed.py' %
-              (level, cell, cell / 4, len(simple)))
-    seed = {'points': [list(p) for p in simple], 'elevation': level, 'source': source}
+    name = '%s_%d' % (source, level)
+    if source == 'jacksboro':  # the text the built-in seed has always carried
+        line = ('the %g m contour of the USGS Jacksboro fault DEM (matplotlib sample data, Debian '
+                'python-matplotlib-data; public domain USGS data), marching squares on %g m cells, '
+                'Douglas-Peucker %g m; %d points; scripts/terrain_dem_seed.py' %
+                (level, cell, cell / 4, len(simple)))
+    else:
+        line = ('the %g m contour of the %s, marching squares on %g m cells, Douglas-Peucker %g m; %d '
+                'points; scripts/terrain_dem_seed.py %s %g' % (level, what, cell, cell / 4, len(simple), source, level))
+    seed = {'points': [list(p) for p in simple], 'elevation': level, 'source': line}
     open(os.path.join(out, name + '.json'), 'w').write(json.dumps(seed) + '\n')
-    inc = ('// Generated by scripts/terrain_dem_seed.py %g: %s.\n' % (level, source))
-    inc += '\n'.join('{%r, %r},' % p for p in simple) + '\n'
-    open(os.path.join(ROOT, 'core', 'terrain', 'seed_jacksboro.inc'), 'w').write(inc)
+    if source == 'jacksboro':
+        inc = ('// Generated by scripts/terrain_dem_seed.py %g: %s.\n' % (level, line))
+        inc += '\n'.join('{%r, %r},' % p for p in simple) + '\n'
+        open(os.path.join(ROOT, 'core', 'terrain', 'seed_jacksboro.inc'), 'w').write(inc)
     print('%s: %d x %d cells of %g m, %g..%g m; %d closed rings at %g m, the largest %d -> %d points, '
           'area %.0f m^2' % (name, W, H, cell, lo, hi, len(rings), level, len(ring), len(simple), area(ring)))
 

@@ -48,6 +48,18 @@ for (const method of ['simple', 'improved']) {
     a === b && JSON.parse(a).levels.length > 3);
 }
 
+// The second real DEM (topobathy, 2.43 km cells, bathymetry below 0 m) with a contour file: the
+// same JSON in both builds, the contour's 46 cells and the DEM's relief inside it (451 m) read back.
+{
+  const args = ['terrain', 'compare', '--dem', join(root, 'tests/data/terrain/topobathy_dem.png'), '--contour',
+    join(root, 'tests/data/terrain/topobathy_1200.json'), '--method', 'improved', '--seed', '1',
+    '--set', 'h0=1200', '--set', 'd=600', '--set', 'dh=95.8'];
+  const a = run(native, args), b = run(wasm, args);
+  const j = JSON.parse(a);
+  check(`compare on topobathy 1200 m: native == WASM, ${j.real.cells} cells, real relief ${j.real.relief.toFixed(0)} m, mean IoU ${j.mean_iou.toFixed(3)}`,
+    a === b && j.real.cells === 46 && Math.abs(j.real.relief - 451) < 1 && j.levels.length >= 3 && j.mean_iou > 0.1);
+}
+
 // terrain render: the last seed's grown heightmap, and the real DEM framed on it and floored.
 const grown = join(dir, `${seeds[seeds.length - 1]}-n.png`);
 for (const [label, args] of [
