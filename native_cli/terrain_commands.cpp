@@ -331,7 +331,7 @@ int RunRender(const RenderOptions& o, std::ostream& out) {
 }
 
 struct ShrinkCommandOptions {
-  std::string contour, builtin, join = "capped", displace, svg;
+  std::string contour, builtin, join = "capped", displace, fourier, svg;
   double d = 0, c = 1.4, clean_len = 0, clean_angle = 0;
   int steps = 1;
   uint64_t seed = 1;
@@ -351,8 +351,8 @@ nlohmann::json RingJson(const terrain::Ring& r) {
 
 // terrain shrink: one JSON object of the measures per step on stdout, the figure as --svg.
 int RunShrink(const ShrinkCommandOptions& o, bool seed_given, std::ostream& out) {
-  if (seed_given && o.displace.empty())
-    Fail(Status::Error("--seed", "only applies with --displace D0,D2,THETA_MIN,THETA_MAX"));
+  if (seed_given && o.displace.empty() && o.fourier.empty())
+    Fail(Status::Error("--seed", "only applies with --displace D0,D2,THETA_MIN,THETA_MAX or --fourier F0[,N]"));
   if (o.contour.empty() == o.builtin.empty())
     Fail(Status::Error("--contour",
                        "give one of --contour FILE or --builtin NAME (disk, "
@@ -399,12 +399,22 @@ int RunShrink(const ShrinkCommandOptions& o, bool seed_given, std::ostream& out)
     t.theta_min_deg = FlagNumber("--displace", parts[2], {0, 89, false, " (theta min, degrees)"});
     t.theta_max_deg = FlagNumber("--displace", parts[3], {0, 89, false, " (theta max, degrees)"});
   }
+  if (!o.fourier.empty()) {  // F0[,N]: Fig 14, every kept ring phase-randomised
+    const std::size_t comma = o.fourier.find(',');
+    t.fourier = true;
+    t.fd_f0 = static_cast<int>(
+        FlagNumber("--fourier", o.fourier.substr(0, comma), {1, 32768, true, " (f0)"}));
+    if (comma != std::string::npos)
+      t.fd_n = static_cast<int>(
+          FlagNumber("--fourier", o.fourier.substr(comma + 1), {16, 65536, true, " (FFT samples n)"}));
+  }
   Result<terrain::ShrinkTrace> trace = terrain::TraceShrink(seed, t);
   if (!trace.ok()) {
     // The core names its option; the flag that set it: d0, d2 and theta come from --displace.
     const Status& s = trace.status();
     const std::string& f = s.field();
-    const std::string flag = f == "d0" || f == "d2" || f == "theta" ? "--displace"
+    const std::string flag = f == "d0" || f == "d2" || f == "theta"       ? "--displace"
+                             : f == "fd_f0" || f == "fd_n" || f == "fd_amp" ? "--fourier"
                              : f == "clean_len"                     ? "--clean-len"
                              : f == "clean_angle"                   ? "--clean-angle"
                                                                     : "--" + f;
@@ -442,6 +452,10 @@ int RunShrink(const ShrinkCommandOptions& o, bool seed_given, std::ostream& out)
                      {"holes_filled", s.counts.holes_filled},
                      {"dropped_rings", s.counts.dropped_rings},
                      {"contours", rings}});
+    if (t.fourier) {
+      steps.back()["fourier_max_shift"] = s.fourier_max_shift;
+      steps.back()["fourier_not_simple"] = s.fourier_not_simple;
+    }
   }
   j["steps"] = steps;
   if (!o.svg.empty()) WriteAllOrNone({{"--svg", o.svg, terrain::ShrinkTraceToSvg(*trace)}});
@@ -542,8 +556,11 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
                 "Successive shrinks, " + RangeHelp(kShrinkSteps));
   shrink->add_option("--displace", so->displace,
                      "D0,D2,THETA_MIN,THETA_MAX: midpoint-displace the contour first (Fig 12)");
+  shrink->add_option("--fourier", so->fourier,
+                     "F0[,N]: phase-randomise every ring each step keeps for |k| >= F0, FFT of N "
+                     "samples (default 1024), not fed back (Fig 14)");
   AddNumberFlag(shrink, "--seed", &so->seed, kSeedRange,
-                "RNG seed of --displace, " + RangeHelp(kSeedRange));
+                "RNG seed of --displace and --fourier, " + RangeHelp(kSeedRange));
   AddOutputFlag(shrink, "--svg", &so->svg, {".svg"}, "Write the figure as .svg");
   commands.push_back(
       {shrink,

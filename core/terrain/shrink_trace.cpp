@@ -8,6 +8,7 @@
 #include "math/det_math.h"
 #include "params/param_text.h"
 #include "random/pcg32.h"
+#include "terrain/fourier.h"
 #include "terrain/generate.h"
 #include "terrain/polygon.h"
 
@@ -69,6 +70,15 @@ Status CheckOptions(const ShrinkTraceOptions& o) {
     if (!(o.theta_min_deg >= 0 && o.theta_max_deg <= 89 && o.theta_min_deg <= o.theta_max_deg))
       return Status::Error("theta", "must be two numbers 0 <= min <= max <= 89 degrees");
   }
+  if (o.fourier) {
+    if (o.fd_n < 16 || o.fd_n > 65536)
+      return Status::Error("fd_n", "must be a whole number in [16, 65536]");
+    if (o.fd_f0 < 1 || o.fd_f0 > o.fd_n / 2)
+      return Status::Error("fd_f0", "must be a whole number in [1, " + std::to_string(o.fd_n / 2) +
+                                        "] (half the FFT's samples)");
+    if (!(o.fd_amp >= 0 && o.fd_amp <= det::kPi))
+      return Status::Error("fd_amp", "must be a number in [0, pi]");
+  }
   return Status::Ok();
 }
 
@@ -96,8 +106,8 @@ Result<ShrinkTrace> TraceShrink(const Ring& seed, const ShrinkTraceOptions& o) {
   ShrinkTrace trace;
   trace.seed = *checked;
   std::vector<Ring> input{trace.seed};
+  Pcg32 rng(o.rng_seed);
   if (o.displace) {  // paper §4.1, Fig 12
-    Pcg32 rng(o.rng_seed);
     // A figure's displaced seed holds at most what a figure takes (kMaxTracePoints).
     std::optional<Ring> displaced = MidpointDisplace(trace.seed, o.d0, o.d2, o.theta_min_deg,
                                                      o.theta_max_deg, &rng, kMaxTracePoints);
@@ -138,6 +148,14 @@ Result<ShrinkTrace> TraceShrink(const Ring& seed, const ShrinkTraceOptions& o) {
       return Status::Error("steps", "step " + std::to_string(s + 1) + " holds " +
                                         std::to_string(total) + " points; a figure takes at most " +
                                         std::to_string(kMaxStepPoints));
+    if (o.fourier) {  // paper §4.2, Fig 14: each ring on its own, nothing fed back
+      for (const Ring& r : step.rings) {
+        Ring z = FourierPerturb(r, o.fd_n, o.fd_f0, o.fd_amp, &rng);
+        for (const Vec2& p : z) step.fourier_max_shift = std::max(step.fourier_max_shift, RingDistance(r, p));
+        if (!IsSimple(ToGrid(z))) ++step.fourier_not_simple;
+        step.fourier.push_back(std::move(z));
+      }
+    }
     input = step.rings;
     trace.steps.push_back(std::move(step));
   }
@@ -155,6 +173,8 @@ std::string ShrinkTraceToSvg(const ShrinkTrace& t) {
     for (const auto& edges : s.naive)
       for (const EdgeOffset& e : edges) grow(e.a), grow(e.b);
     for (const Ring& r : s.raw)
+      for (const Vec2& p : r) grow(p);
+    for (const Ring& r : s.fourier)
       for (const Vec2& p : r) grow(p);
   }
   const double span = std::max({x1 - x0, y1 - y0, 1e-9});
@@ -202,6 +222,9 @@ std::string ShrinkTraceToSvg(const ShrinkTrace& t) {
     for (const Ring& r : step.rings)
       svg += "<path class=\"ring\"" + tag + " d=\"" + path(r, true) + "\" fill=\"none\" stroke=\"" +
              colour + "\" stroke-width=\"1.5\"/>\n";
+    for (const Ring& r : step.fourier)
+      svg += "<path class=\"fourier\"" + tag + " d=\"" + path(r, true) +
+             "\" fill=\"none\" stroke=\"#2a8a3a\" stroke-width=\"1\"/>\n";
   }
   return svg + "</svg>\n";
 }

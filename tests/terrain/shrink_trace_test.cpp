@@ -1,6 +1,7 @@
 // The traced shrinking algorithm behind Figs 2-8 and 12: each figure's measured effect on a small
 // contour (naive gaps and crossings, the raw path's crossings removed, islands, corners, joins,
-// the Fig 8 pre-clean, midpoint displacement bounded by d'') and its bad input.
+// the Fig 8 pre-clean, midpoint displacement bounded by d'', Fig 14's phase randomisation of the
+// kept rings) and its bad input.
 #include "terrain/shrink_trace.h"
 
 #include <gtest/gtest.h>
@@ -120,6 +121,46 @@ TEST(ShrinkTrace, Fig12DisplacementIsBoundedByD2) {
   EXPECT_LE(t->max_displacement, 3 * 6 + 0.01);  // each of ≤ 6 halvings moves a point ≤ d''
 }
 
+// Fig 14 as the paper shows it: the simple method's contours, each phase-randomised on its own.
+// Nothing is fed back (the kept rings are those of the trace without it, point for point), the
+// closure holds, and a lower f0 (more frequencies shaken) moves the contours farther.
+TEST(ShrinkTrace, Fig14RandomisesEachKeptRingWithoutFeedingItBack) {
+  Result<Ring> seed = BuiltinSeed("jacksboro");
+  ASSERT_TRUE(seed.ok());
+  ShrinkTraceOptions plain = Options(70, Join::kCapped, 4);
+  Result<ShrinkTrace> base = TraceShrink(*seed, plain);
+  ASSERT_TRUE(base.ok()) << base.status().message();
+  double shift[2] = {0, 0};
+  const int f0s[2] = {64, 256};
+  for (int k = 0; k < 2; ++k) {
+    ShrinkTraceOptions o = plain;
+    o.fourier = true;
+    o.fd_f0 = f0s[k];
+    Result<ShrinkTrace> t = TraceShrink(*seed, o);
+    ASSERT_TRUE(t.ok()) << t.status().message();
+    ASSERT_EQ(t->steps.size(), base->steps.size());
+    for (std::size_t s = 0; s < t->steps.size(); ++s) {
+      const ShrinkTraceStep& a = t->steps[s];
+      const ShrinkTraceStep& b = base->steps[s];
+      ASSERT_EQ(a.rings.size(), b.rings.size());
+      for (std::size_t r = 0; r < a.rings.size(); ++r) {
+        ASSERT_EQ(a.rings[r].size(), b.rings[r].size());
+        for (std::size_t i = 0; i < a.rings[r].size(); ++i) {
+          EXPECT_EQ(a.rings[r][i].x, b.rings[r][i].x);
+          EXPECT_EQ(a.rings[r][i].y, b.rings[r][i].y);
+        }
+      }
+      ASSERT_EQ(a.fourier.size(), a.rings.size());
+      for (const Ring& z : a.fourier) EXPECT_EQ(z.size(), 1024u);  // n samples, closed by c(0)
+      EXPECT_GT(a.fourier_max_shift, 0);
+      shift[k] = std::max(shift[k], a.fourier_max_shift);
+    }
+    EXPECT_TRUE(base->steps[0].fourier.empty());
+  }
+  EXPECT_GT(shift[0], 2 * shift[1]) << "f0 64: " << shift[0] << " m, f0 256: " << shift[1] << " m";
+  EXPECT_LT(shift[0], 70) << "a shake of the high frequencies stays within d of the ring";
+}
+
 TEST(ShrinkTrace, BadInputNamesTheField) {
   EXPECT_EQ(TraceShrink(LShape(), Options(0, Join::kCapped, 1)).status().field(), "d");
   EXPECT_EQ(TraceShrink(LShape(), Options(5, Join::kCapped, 65)).status().field(), "steps");
@@ -128,6 +169,13 @@ TEST(ShrinkTrace, BadInputNamesTheField) {
   EXPECT_EQ(TraceShrink(LShape(), c).status().field(), "c");
   const Ring bowtie = {{0, 0}, {10, 10}, {10, 0}, {0, 10}};
   EXPECT_EQ(TraceShrink(bowtie, Options(1, Join::kCapped, 1)).status().field(), "contour");
+  ShrinkTraceOptions f = Options(5, Join::kCapped, 1);
+  f.fourier = true;
+  f.fd_f0 = 513;  // above n / 2
+  EXPECT_EQ(TraceShrink(LShape(), f).status().field(), "fd_f0");
+  f.fd_f0 = 64;
+  f.fd_n = 8;
+  EXPECT_EQ(TraceShrink(LShape(), f).status().field(), "fd_n");
 }
 
 TEST(ShrinkTrace, SvgDrawsEveryLayer) {
