@@ -352,7 +352,8 @@ nlohmann::json RingJson(const terrain::Ring& r) {
 // terrain shrink: one JSON object of the measures per step on stdout, the figure as --svg.
 int RunShrink(const ShrinkCommandOptions& o, bool seed_given, std::ostream& out) {
   if (seed_given && o.displace.empty() && o.fourier.empty())
-    Fail(Status::Error("--seed", "only applies with --displace D0,D2,THETA_MIN,THETA_MAX or --fourier F0[,N]"));
+    Fail(Status::Error(
+        "--seed", "only applies with --displace D0,D2,THETA_MIN,THETA_MAX or --fourier F0[,N]"));
   if (o.contour.empty() == o.builtin.empty())
     Fail(Status::Error("--contour",
                        "give one of --contour FILE or --builtin NAME (disk, "
@@ -405,19 +406,19 @@ int RunShrink(const ShrinkCommandOptions& o, bool seed_given, std::ostream& out)
     t.fd_f0 = static_cast<int>(
         FlagNumber("--fourier", o.fourier.substr(0, comma), {1, 32768, true, " (f0)"}));
     if (comma != std::string::npos)
-      t.fd_n = static_cast<int>(
-          FlagNumber("--fourier", o.fourier.substr(comma + 1), {16, 65536, true, " (FFT samples n)"}));
+      t.fd_n = static_cast<int>(FlagNumber("--fourier", o.fourier.substr(comma + 1),
+                                           {16, 65536, true, " (FFT samples n)"}));
   }
   Result<terrain::ShrinkTrace> trace = terrain::TraceShrink(seed, t);
   if (!trace.ok()) {
     // The core names its option; the flag that set it: d0, d2 and theta come from --displace.
     const Status& s = trace.status();
     const std::string& f = s.field();
-    const std::string flag = f == "d0" || f == "d2" || f == "theta"       ? "--displace"
+    const std::string flag = f == "d0" || f == "d2" || f == "theta"         ? "--displace"
                              : f == "fd_f0" || f == "fd_n" || f == "fd_amp" ? "--fourier"
-                             : f == "clean_len"                     ? "--clean-len"
-                             : f == "clean_angle"                   ? "--clean-angle"
-                                                                    : "--" + f;
+                             : f == "clean_len"                             ? "--clean-len"
+                             : f == "clean_angle"                           ? "--clean-angle"
+                                                                            : "--" + f;
     Fail(Status::Error(flag, s.message()));
   }
   nlohmann::json j;

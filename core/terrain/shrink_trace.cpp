@@ -151,7 +151,8 @@ Result<ShrinkTrace> TraceShrink(const Ring& seed, const ShrinkTraceOptions& o) {
     if (o.fourier) {  // paper §4.2, Fig 14: each ring on its own, nothing fed back
       for (const Ring& r : step.rings) {
         Ring z = FourierPerturb(r, o.fd_n, o.fd_f0, o.fd_amp, &rng);
-        for (const Vec2& p : z) step.fourier_max_shift = std::max(step.fourier_max_shift, RingDistance(r, p));
+        for (const Vec2& p : z)
+          step.fourier_max_shift = std::max(step.fourier_max_shift, RingDistance(r, p));
         if (!IsSimple(ToGrid(z))) ++step.fourier_not_simple;
         step.fourier.push_back(std::move(z));
       }

@@ -48,11 +48,11 @@ struct ShrinkTraceStep {
   int gaps = 0;                // Fig 2(a): naive offsets that leave a gap (at every reflex vertex)
   int crossings = 0;           // Fig 2(b): convex vertices whose two naive offsets cross
   int raw_self_intersections =
-      0;                       // crossing segment pairs of the raw paths (the union removes them)
-  int points = 0;              // vertices of the kept rings
-  double min_angle_deg = 180;  // smallest interior angle of the kept rings (Fig 3's "corner")
-  ShrinkCounts counts;         // Fig 8 pre-clean, holes, dropped slivers
-  std::vector<Ring> fourier;   // Fig 14: each kept ring phase-randomised (options.fourier)
+      0;                         // crossing segment pairs of the raw paths (the union removes them)
+  int points = 0;                // vertices of the kept rings
+  double min_angle_deg = 180;    // smallest interior angle of the kept rings (Fig 3's "corner")
+  ShrinkCounts counts;           // Fig 8 pre-clean, holes, dropped slivers
+  std::vector<Ring> fourier;     // Fig 14: each kept ring phase-randomised (options.fourier)
   double fourier_max_shift = 0;  // farthest point of a randomised ring from its ring (m)
   int fourier_not_simple = 0;    // randomised rings that cross themselves (loops, §4.3)
 };

@@ -140,7 +140,8 @@ TEST(TerrainCli, NumericFlagsAreStrictAndApplyOnlyWhereRead) {
       {{"compare", "--dem", "none.png", "--builtin", "disk", "--seed", "1.5"},
        "niwa: error: --seed: 1.5 is out of range; must be a whole number in [0, 4294967295]\n"},
       {{"shrink", "--builtin", "disk", "--seed", "3"},
-       "niwa: error: --seed: only applies with --displace D0,D2,THETA_MIN,THETA_MAX\n"},
+       "niwa: error: --seed: only applies with --displace D0,D2,THETA_MIN,THETA_MAX or --fourier "
+       "F0[,N]\n"},
   };
   for (const Case& c : cases) {
     std::vector<std::string> args{"terrain"};
