@@ -76,6 +76,13 @@ Result<gltf::Texture> MakeTexture(TextureKind kind, const TreeLook& look) {
       texture.name =
           std::string("leaf_") + LeafShapeName(look.leaf_shape) + "_" + SeasonName(look.season);
       texture.wrap_s = texture.wrap_t = gltf::Wrap::kClampToEdge;
+      // Needles without mipmaps, as the LOD cards (render/tree_lod.cpp): an engine's alpha test
+      // (cutoff 0.5) on averaged mip levels drops thin needles altogether; a pine drawn by three.js
+      // had no foliage pixel (docs/figures/species, 0 against 0.115 of the tree without mips). The
+      // page scales alpha by the mip level instead (shaders/tree/tree_textured.frag), which a .glb
+      // cannot ask of an engine. Broad leaves keep their mipmaps: there the same measure went
+      // both ways (maple 0.44 -> 0.60, sakura 0.33 -> 0.22), and mipmaps spare them the shimmer.
+      if (look.leaf_shape == LeafShape::kNeedle) texture.min_filter = gltf::kFilterLinear;
       break;
     case TextureKind::kFlower:
     default:

@@ -35,7 +35,9 @@ constexpr int kElementArrayBuffer = 34963;
 constexpr int kRepeat = 10497;
 constexpr int kClampToEdge = 33071;
 
-Tree GrowForGltf(const std::string& preset, int years) { return testing::GrowPreset(preset, years, 1); }
+Tree GrowForGltf(const std::string& preset, int years) {
+  return testing::GrowPreset(preset, years, 1);
+}
 
 // The material's base colour comes from an embedded PNG (bufferView + mimeType) through a texture
 // and sampler; double-sided cut-outs (leaves, flowers) are alpha-masked and clamped, bark repeats.
@@ -204,6 +206,27 @@ TEST(TreeGltf, WritesAGlbWithBarkLeavesAndFlowers) {
         gltf["accessors"][primitive["indices"].get<std::size_t>()]["bufferView"].get<std::size_t>();
     EXPECT_EQ(gltf["bufferViews"][index_view]["target"], kElementArrayBuffer);
   }
+}
+
+// The leaves' sampler: a pine's needles without mipmaps (an engine's alpha test on averaged mip
+// levels drops thin needles: docs/figures/species), broad leaves with them.
+TEST(TreeGltf, NeedlesAreSampledWithoutMipmapsBroadLeavesWith) {
+  auto leaf_min_filter = [](const std::string& preset) {
+    TreeMesh mesh = BuildTreeMesh(GrowForGltf(preset, 4));
+    std::vector<unsigned char> bytes;
+    EXPECT_EQ(WriteTreeGlb(mesh, &bytes).Line(), "");
+    const json gltf = ParseGlb(bytes).gltf;
+    for (const json& mat : gltf["materials"]) {
+      if (mat.value("name", "") != "leaves") continue;
+      const json& texture =
+          gltf["textures"]
+              [mat["pbrMetallicRoughness"]["baseColorTexture"]["index"].get<std::size_t>()];
+      return gltf["samplers"][texture["sampler"].get<std::size_t>()].value("minFilter", 0);
+    }
+    return -1;
+  };
+  EXPECT_EQ(leaf_min_filter("pine"), 9729);    // LINEAR
+  EXPECT_EQ(leaf_min_filter("sakura"), 9987);  // LINEAR_MIPMAP_LINEAR
 }
 
 TEST(TreeGltf, SkipsEmptyPrimitives) {
