@@ -34,7 +34,7 @@ std::vector<ParamSpec> BarkRows() {
        "one cycle adds."},
       {Id(P::kDeltaH), "dH", "δh·T/H_o", "", 0.030, 0, 0.5, false, "growth", kGrow,
        "Height growth 高さ成長 δh per cycle as a share of H_o (spec §4.1: 0.030 for all species, "
-       "level A; the presets carry the per-species 0.027 / 0.042 / 0.032, level B)."},
+       "level A; the presets carry the per-species 0.028 / 0.042 / 0.032, level B)."},
       {Id(P::kCycles), "cycles", "", "", 1, 1, 100, true, "growth", kGrow,
        "Growth periods T run one after the other (the 2-layer model grows on linearly; the "
        "paper's 2-layer runs are one period)."},

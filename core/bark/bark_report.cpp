@@ -47,7 +47,9 @@ std::string BarkStatsJson(const BarkRun& run) {
                                   {"gap_mean", sp.gap_mean}, {"gap_max", sp.gap_max},
                                   {"lines", sp.lines},       {"open", sp.open}};
   };
-  j["spacing"] = {{"width", spacing(c.spacing_width)}, {"height", spacing(c.spacing_height)}};
+  j["spacing"] = {{"width", spacing(c.spacing_width)},
+                  {"height", spacing(c.spacing_height)},
+                  {"height_all_runs", spacing(c.spacing_height_all_runs)}};
   if (run.four_layer()) {
     // The 4-layer model: three spring layers over the inner one (four_layer.h).
     const FourLayer& f = run.layers();

@@ -8,9 +8,11 @@ namespace niwa::bark {
 namespace {
 
 // The spacing of the cracks on `lines` lines of `halves` halves each (cm a half), line l's half h
-// the triangle table[l·halves + h]; counted[t]: triangle t is in a counted plate.
+// the triangle table[l·halves + h]; counted[t]: triangle t is in a counted plate. With `crosses`,
+// a crack run is a crossing only when one of its triangles has crosses[t] set; the line goes
+// through any other run as through plate (see MeasureCracks: the horizontal cracks along).
 Spacing ScanSpacing(const std::vector<int32_t>& table, int lines, int halves, double half_cm,
-                    const std::vector<uint8_t>& counted) {
+                    const std::vector<uint8_t>& counted, const std::vector<uint8_t>* crosses) {
   Spacing sp;
   double sum = 0, gaps = 0, gap_sum = 0;
   std::vector<double> middles;
@@ -32,7 +34,7 @@ Spacing ScanSpacing(const std::vector<int32_t>& table, int lines, int halves, do
       sp.max = std::max(sp.max, length);
       continue;
     }
-    // Runs of crack from a plate half on, going round once: their middles.
+    // Runs of crack from a plate half on, going round once: the middles of those that cross.
     int start = first_crack;
     while (!counted[row[start % halves]]) ++start;  // the first plate half after a crack
     middles.clear();
@@ -42,10 +44,18 @@ Spacing ScanSpacing(const std::vector<int32_t>& table, int lines, int halves, do
         continue;
       }
       const int run_start = k;
-      while (k < halves && !counted[row[(start + k) % halves]]) ++k;
-      middles.push_back(start + (run_start + k) / 2.0);
+      bool crossing = crosses == nullptr;
+      for (; k < halves && !counted[row[(start + k) % halves]]; ++k)
+        crossing = crossing || (*crosses)[row[(start + k) % halves]];
+      if (crossing) middles.push_back(start + (run_start + k) / 2.0);
     }
     const int cracks = static_cast<int>(middles.size());
+    if (cracks == 0) {  // only runs that do not cross: the line is open
+      ++sp.open;
+      sum += length;
+      sp.max = std::max(sp.max, length);
+      continue;
+    }
     const double spacing = length / cracks;
     sum += spacing;
     sp.max = std::max(sp.max, spacing);
@@ -184,8 +194,30 @@ CrackMeasures MeasureCracks(const Lattice& L, const Surface& s, double s_theta, 
     in_counted[t] = id >= 0 && m.regions[id].triangles >= 2;
   }
   m.spacing_width =
-      ScanSpacing(L.line_around, L.n_h, 2 * L.n_r, L.pitch() * s_theta / 2.0, in_counted);
-  m.spacing_height = ScanSpacing(L.line_along, L.n_r, 2 * L.n_h, L.l_o * s_z / 2.0, in_counted);
+      ScanSpacing(L.line_around, L.n_h, 2 * L.n_r, L.pitch() * s_theta / 2.0, in_counted, nullptr);
+  // Along the trunk the paper measured the spacing of the *horizontal* cracks (「縦横のひびの間隔を
+  // 計測した」, paper 003 §3.2 before Table 3: the spacing of the vertical and the horizontal
+  // cracks; Table 3's height is the horizontal cracks' spacing). A horizontal crack cuts a column:
+  // it breaks axial springs (spec §1.3: family 1 makes the horizontal cracks), and a crack can only
+  // pass from one column gap to the next through a broken axial spring. A run of crack on a line
+  // along, which lies half-way between two columns, whose triangles lost only diagonal edges is a
+  // vertical crack lying on the line for a while (a furrow confined to that column gap, ending
+  // there, its neighbour en échelon in the next gap): the line runs along it and crosses nothing
+  // horizontal, so it is not a region boundary along the trunk. Only runs holding a triangle whose
+  // axial edge broke count. Around the trunk every crack run counts (a horizontal crack breaks
+  // diagonals as well, so the families do not tell its runs apart there). docs/bark-model.md
+  // choice 10a; `spacing_height_all_runs` keeps the measure before (every run a crossing).
+  std::vector<uint8_t> axial_cut(nt, 0);
+  for (int t = 0; t < nt; ++t) {
+    for (int e = 0; e < 3; ++e) {
+      const int spring = L.tri_springs[t][e];
+      if (L.family(spring) == Family::kAxial && s.broken[spring]) axial_cut[t] = 1;
+    }
+  }
+  m.spacing_height =
+      ScanSpacing(L.line_along, L.n_r, 2 * L.n_h, L.l_o * s_z / 2.0, in_counted, &axial_cut);
+  m.spacing_height_all_runs =
+      ScanSpacing(L.line_along, L.n_r, 2 * L.n_h, L.l_o * s_z / 2.0, in_counted, nullptr);
   return m;
 }
 

@@ -25,7 +25,8 @@ struct Region {
 // of the vertical and the horizontal cracks; lattice.h's lines). On a line a crack is a run of
 // halves whose triangle is in no counted plate (a cracked triangle or a plate under two
 // triangles); a line's spacing is its length / the cracks it crosses, as a line drawn across a
-// picture and its crossings counted.
+// picture and its crossings counted. Along the trunk a run crosses only if it holds a broken axial
+// spring (a horizontal crack; a vertical one lying on the line is run along, not crossed).
 struct Spacing {
   double mean = 0;  // cm: the mean of the lines' spacings
   double max = 0;   // cm: the largest line spacing (a line crossing no crack: its length)
@@ -49,8 +50,10 @@ struct CrackMeasures {
   // (0 when no crack crosses: the spacing is over the patch).
   double intercept_width = 0, intercept_height = 0;
   // Crack spacing around the trunk (width: the vertical cracks) and along it (height: the
-  // horizontal cracks).
-  Spacing spacing_width, spacing_height;
+  // horizontal cracks, runs holding a broken axial spring; regions.cpp). spacing_height_all_runs:
+  // along it with every crack run a crossing (the measure before 2026-12-06, which counts the ends
+  // of vertical cracks lying on a line as crossings), for comparison.
+  Spacing spacing_width, spacing_height, spacing_height_all_runs;
 };
 
 // The measures of the surface at the growth factors (s_θ, s_z scale the reference lattice).

@@ -135,5 +135,87 @@ TEST(Regions, ABandWavingRoundTheTrunkIsNoTallerThanThePatch) {
   EXPECT_LE(m.max_height, L.height() + 1e-12);
 }
 
+// Breaks both diagonals of the nodes (i, j0..j1−1) to the next column: a vertical crack lying in
+// the column gap i | i+1 from about row j0 to j1, ending there (no axial spring breaks).
+void BreakGap(const Lattice& L, int i, int j0, int j1, Surface* s) {
+  for (int j = j0; j < j1; ++j) {
+    const int n = L.node(i, j);
+    for (int k = 0; k < 2; ++k) {
+      const int spring = L.axial_count + 2 * n + k;
+      ASSERT_EQ(L.a[spring], n);
+      if (!s->broken[spring]) {
+        s->broken[spring] = 1;
+        ++s->broken_count[1];
+      }
+    }
+  }
+}
+
+// Vertical cracks en échelon (each confined to one column gap, ending inside it, as camphor's
+// furrows break up on this lattice; docs/bark-model.md choice 10a) lie on the lines along the
+// trunk between their columns. The measure before counted each such run as a crossing (two runs
+// on line 2: H/2; one on line 6: H); the paper's spacing of the horizontal cracks counts none of
+// them: every line along is open. Two horizontal cuts (rows 7|8 and 15|0, axial springs broken)
+// are crossed by every line under both measures, the old one adding the vertical runs.
+TEST(Regions, VerticalCracksLyingOnALineAlongAreNoHorizontalCrossings) {
+  const Lattice L = BuildLattice(12, 16, 0.33);
+  const double H = L.height();
+  Surface s = CutBy(L, [](int, int) { return 0; });
+  BreakGap(L, 2, 2, 6, &s);
+  BreakGap(L, 2, 10, 14, &s);
+  BreakGap(L, 6, 3, 6, &s);
+  CrackMeasures m = MeasureCracks(L, s, 1.0, 1.0);
+  ASSERT_EQ(m.broken[0], 0);
+  EXPECT_EQ(m.spacing_height.lines, 12);
+  EXPECT_EQ(m.spacing_height.open, 12);
+  EXPECT_NEAR(m.spacing_height.mean, H, 1e-12);
+  EXPECT_NEAR(m.spacing_height.max, H, 1e-12);
+  EXPECT_EQ(m.spacing_height_all_runs.lines, 12);
+  EXPECT_EQ(m.spacing_height_all_runs.open, 10);
+  EXPECT_NEAR(m.spacing_height_all_runs.mean, (10 * H + H / 2 + H) / 12, 1e-12);
+  EXPECT_NEAR(m.spacing_height_all_runs.max, H, 1e-12);
+
+  // The same with two horizontal cuts.
+  const Surface cut = CutBy(L, [](int, int j) { return j < 8 ? 0 : 1; });
+  for (int k = 0; k < L.springs(); ++k) {
+    if (cut.broken[k] && !s.broken[k]) {
+      s.broken[k] = 1;
+      ++s.broken_count[static_cast<int>(L.family(k))];
+    }
+  }
+  m = MeasureCracks(L, s, 1.0, 1.5);
+  EXPECT_GT(m.broken[0], 0);
+  EXPECT_EQ(m.spacing_height.lines, 12);
+  EXPECT_EQ(m.spacing_height.open, 0);
+  EXPECT_NEAR(m.spacing_height.mean, 1.5 * H / 2, 1e-12);
+  EXPECT_NEAR(m.spacing_height.max, 1.5 * H / 2, 1e-12);
+  EXPECT_NEAR(m.spacing_height.gap_max, 1.5 * H / 2, 1e-12);  // the cuts' middles half H apart
+  EXPECT_EQ(m.spacing_height_all_runs.open, 0);
+  EXPECT_NEAR(m.spacing_height_all_runs.mean, 1.5 * (10 * H / 2 + H / 4 + H / 3) / 12, 1e-12);
+}
+
+// A vertical crack that steps sideways across a column breaks an axial spring there: a line along
+// between the columns it leaves and enters crosses it (the crack passes from one side of the line
+// to the other), so it is a crossing under both measures.
+TEST(Regions, AVerticalCrackSteppingAcrossAColumnIsCrossed) {
+  const Lattice L = BuildLattice(12, 16, 0.33);
+  Surface s = CutBy(L, [](int, int) { return 0; });
+  BreakGap(L, 2, 0, 8, &s);   // in gap 2|3 over the lower half
+  BreakGap(L, 3, 8, 16, &s);  // in gap 3|4 over the upper half
+  for (int j : {7, 15}) {     // joined across column 3 at both ends (the torus along)
+    const int axial = L.node(3, j);
+    ASSERT_EQ(L.b[axial], L.node(3, (j + 1) % 16));
+    s.broken[axial] = 1;
+    ++s.broken_count[0];
+  }
+  const CrackMeasures m = MeasureCracks(L, s, 1.0, 1.0);
+  // Lines 2 and 3 each hold one run of the crack with a broken axial edge at its ends.
+  EXPECT_EQ(m.spacing_height.lines, 12);
+  EXPECT_EQ(m.spacing_height.open, 10);
+  EXPECT_EQ(m.spacing_height_all_runs.open, 10);
+  EXPECT_NEAR(m.spacing_height.mean, m.spacing_height_all_runs.mean, 1e-12);
+  EXPECT_NEAR(m.spacing_height.mean, L.height(), 1e-12);  // one crossing a line: spacing H
+}
+
 }  // namespace
 }  // namespace niwa::bark
