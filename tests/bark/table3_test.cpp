@@ -1,7 +1,8 @@
 // Table 3's orderings (spec §4.1) from the 2-layer model on a 64 × 64 patch, seeds 1-2, the means
 // over the seeds: level A (one height growth, dH = 0.03, for all three species) and level B (the
-// presets' per-species growth). The paper's numbers themselves (±25 % means) are not reached yet
-// (docs/bark-model.md); these are the orderings the three species' Table 2 constants must give.
+// presets' per-species growth). The paper's numbers themselves (level B, 128 × 64, seeds 1-5) are
+// measured by scripts/figures bark table3 (docs/FIGURES.md); these are the orderings the three
+// species' Table 2 constants must give.
 #include <gtest/gtest.h>
 
 #include <map>
