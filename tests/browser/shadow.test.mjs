@@ -156,6 +156,33 @@ await runBrowserTest(async (server, browser) => {
   check('a new sun redraws the map once, the next frame reuses it',
     sunMoved.first === 'drawn' && sunMoved.second === 'reused' && sunMoved.passes === on.passes + 1, JSON.stringify(sunMoved));
 
+  // Frame cost (printed, not asserted: wall times on a loaded CPU GL are not evidence alone; the
+  // ratios of one run are what docs/rendering-model.md quotes): median of 5 whole frames, GPU work
+  // included (a pixel read back), shadows off, the map reused, and the map redrawn every frame (a
+  // new pose each frame, as in a sway at full quality).
+  const cost = await page.evaluate(async () => {
+    const { finishGpu } = await import('/web/gl/context.js');
+    const { frame, tree } = window.__shadow;
+    const median = (fn) => {
+      const times = [];
+      for (let i = 0; i < 6; ++i) {
+        fn();
+        const t0 = performance.now();
+        frame.render();
+        finishGpu(frame.gl);
+        if (i > 0) times.push(performance.now() - t0);
+      }
+      return times.sort((a, b) => a - b)[2];
+    };
+    frame.setShadows(false);
+    const off = median(() => {});
+    frame.setShadows(true);
+    const reused = median(() => {});
+    const redrawn = median(() => { tree.poseSerial += 1; });
+    return { off, reused, redrawn, reusedRatio: reused / off, redrawnRatio: redrawn / off };
+  });
+  console.log(`frame cost (median ms of 5, ratios to shadows off): ${JSON.stringify(cost)}`);
+
   // Acne: a bare tree (winter) lit by the sun, seen close. Bark pixels that the shadow darkens by a
   // quarter or more: a few where branches shadow branches, not the sun-lit bark at large.
   await page.evaluate(async (sun) => {

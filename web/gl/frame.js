@@ -25,9 +25,11 @@
 //
 // The shadow map is redrawn only when it is stale (a caster's key or the sun changed): its steps
 // come first in the frame and count against the frame's budget like any other (a frame in parts
-// draws them in parts). While only the camera moves, the map is reused. A frame at a governor's
-// cheap level (> 0) never redraws it: it reuses a map of the same casters and sun drawn at an older
-// pose (a swaying tree's shadow lags its cheap frames), or draws without the sun's shadow.
+// draws them in parts). While only the camera moves, the map is reused. A moving frame (a
+// FrameGovernor's quality.moving: a sway's poses, a drag) or one at a cheap level (> 0) never redraws
+// it: it reuses a map of the same casters and sun drawn at an older pose (a swaying tree's shadow
+// stays at the pose it had when the motion began, and is redrawn once the view is still), or draws
+// without the sun's shadow.
 // Does not: talk to the worker, know any study's meshes, or pace its frames (the page's FrameLoop,
 // FrameGovernor or ProgressiveLoop call render; a frame alone asks its own FrameLoop).
 import { createContext, drawingBufferSize, finishGpu, resizeCanvas } from './context.js';
@@ -157,9 +159,10 @@ export class Frame {
     return groundUnder(footprint, this.light);
   }
 
-  // The shadow map for a frame at governor level `cheap`: {steps (its redrawing, or none), sun
-  // ({matrix, texel} the receivers read, or null)}. See the file's opening comment.
-  #shadowPass(cheap) {
+  // The shadow map for a frame at governor level `cheap`, `moving` (a FrameGovernor's quality: the
+  // view or the tree's pose moves): {steps (its redrawing, or none), sun ({matrix, texel} the
+  // receivers read, or null)}. See the file's opening comment.
+  #shadowPass(cheap, moving) {
     const map = this.shadowMap;
     const none = { steps: [], sun: null };
     if (!this.shadows || !map || !map.complete) return none;
@@ -170,7 +173,7 @@ export class Frame {
     const key = `${keys.join('|')}@${lightKey}`;
     const current = { matrix: map.matrix, texel: map.texel };
     if (map.key === key) return { steps: [], sun: current };
-    if (cheap > 0) {
+    if (cheap > 0 || moving) {
       // The same casters' (mesh ids before the pose's '#') and sun's map at an older pose, or none.
       const loose = (k) => k && k.split('@').map((part, i) => (i === 0 ? part.split('|').map((c) => c.split('#')[0]).join('|') : part)).join('@');
       return map.key && loose(map.key) === loose(key) ? { steps: [], sun: current } : none;
@@ -233,7 +236,7 @@ export class Frame {
       light: this.light, scale: this.scale, width, height,
     };
     const gl = this.gl;
-    const shadow = this.#shadowPass(quality?.cheap || 0);
+    const shadow = this.#shadowPass(quality?.cheap || 0, Boolean(quality?.moving));
     view.shadow = this.shadowMap;
     view.sun = shadow.sun;
     const steps = [...shadow.steps];

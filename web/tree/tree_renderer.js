@@ -1,10 +1,11 @@
 // The tree study's WebGL2 renderer: bark tubes, double-sided leaves and flowers on the shared
 // ground (full-polygon mode, textured as the .glb: shaders/tree/tree_textured.frag), or the hybrid mode of thesis chapter 4: texture cards from a card
 // atlas plus lines. Shaders (GLSL ES 3.00) are shaders/tree/*, including shaders/common/*.
-// Full mode casts the sun's shadow (shadowKey, shadowSteps: its parts into the frame's shadow map,
-// web/gl/shadow_map.js, leaves cut out by alpha) and receives it on every part, with the crown's
-// ambient occlusion per vertex (the worker's `occlusion`, core/tree/crown_occlusion.h) darkening
-// the sky light of inner leaves; hybrid mode (cards and lines) neither casts nor receives.
+// The tree casts the sun's shadow (shadowKey, shadowSteps: its full mesh's parts into the frame's
+// shadow map, web/gl/shadow_map.js, leaves cut out by alpha, in both modes) and full mode receives
+// it on every part, with the crown's ambient occlusion per vertex (the worker's `occlusion`,
+// core/tree/crown_occlusion.h) darkening the sky light of inner leaves; hybrid mode's cards and
+// lines do not receive it.
 // A StudyLayer (web/gl/frame.js): a layer of a Frame (layerSteps: the tree under the frame's
 // camera and sun; the frame draws the ground under its footprint), on the tree page, the grove's
 // neighbours to come, <niwa-tree> and beside other studies (tests/browser/frame_layers.test.mjs).
@@ -774,10 +775,13 @@ export class Renderer extends StudyLayer {
   }
 
   // What the tree casts into the sun's shadow map now (web/gl/frame.js): its mesh and pose
-  // ("mesh#pose"), or null (hybrid mode: its cards face the camera, nothing casts; no tree yet).
+  // ("mesh#pose"), or null (no tree yet). Hybrid mode casts from its full mesh too (its parts are
+  // installed in both modes), so the ground's shadow is the same; its cards do not receive it, and
+  // its map is drawn once per mesh and sun (at the pose then), not again for every pose: a full
+  // mesh's shadow pass would cost hybrid mode's frames many times their own primitives.
   shadowKey() {
-    if (this.hybrid || !this.shadowProgram || Object.keys(this.parts).length === 0) return null;
-    return `${this.meshSerial}#${this.poseSerial}`;
+    if (!this.shadowProgram || Object.keys(this.parts).length === 0) return null;
+    return `${this.meshSerial}#${this.hybrid ? 'hybrid' : this.poseSerial}`;
   }
 
   // The parts' steps into the shadow map (the frame's ShadowMap binds it in each setup), seen
