@@ -1,8 +1,8 @@
 // The sun's shadow map (web/gl/shadow_map.js) read by a receiver's fragment shader (web/gl/program.js
 // inserts it where a shader says #include "../common/shadow.glsl", relative to that shader):
 // 2 × 2 taps, 1.5 texels apart, of a hardware-compared, linearly filtered depth texture (each tap
-// itself a 2 × 2 PCF: a 4 × 4-texel footprint); 1 lit, 0 in shadow. (3 × 3 taps cost SwiftShader,
-// the CPU WebGL, about twice the frame time of a whole tree view for a softer edge only.)
+// itself a 2 × 2 PCF: a 4 × 4-texel footprint in 4 reads, for SwiftShader, the CPU WebGL, where
+// every fragment's reads cost); 1 lit, 0 in shadow.
 // vShadow: the fragment in the sun's clip space (its vertex shader computes it, normal-offset).
 uniform highp sampler2DShadow uShadowMap;
 uniform float uShadowOn;     // 0: no map (every fragment lit)

@@ -1,12 +1,12 @@
 // The sun's shadow map of a Frame (issue 32, "light and look"): a depth texture seen from the sun
 // (an orthographic view fitted to the casters' box and their shadow on the ground y = 0), drawn by
 // the casting layers' shadow steps and read by the receivers (the tree's parts, the ground) through
-// a sampler2DShadow with hardware compare and linear filtering, 3 × 3 taps (PCF). WebGL2 depth
+// a sampler2DShadow with hardware compare and linear filtering, 2 × 2 taps (PCF). WebGL2 depth
 // textures (DEPTH_COMPONENT24, compare mode LEQUAL) work on SwiftShader (checked by
 // tests/browser/shadow.test.mjs on Debian chromium).
 // The map is drawn as steps of the frame (web/gl/progressive_frame.js: counted against the budget,
-// drawn in parts like any step) only when it is stale (the casters, their pose or the sun changed);
-// while only the camera moves it is reused as it is.
+// drawn in parts like any step) only when it is stale (the casters, their pose or the sun changed)
+// and the view is still; while the camera or a sway moves it is reused as it is (web/gl/frame.js).
 // Does not: know what a caster draws (its layer's shadowSteps), or cascade for big scenes.
 import { lookAt, multiply } from './orbit_camera.js';
 
