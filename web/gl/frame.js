@@ -240,9 +240,11 @@ export class Frame {
     view.shadow = this.shadowMap;
     view.sun = shadow.sun;
     const steps = [...shadow.steps];
-    const totals = { triangles: 0, lines: 0, drawCalls: 0, shadowPrimitives: 0 };
-    totals.shadowPrimitives = shadow.steps.reduce((n, step) => n + step.primitives, 0);
-    totals.shadow = shadow.sun ? (shadow.steps.length ? 'drawn' : 'reused') : 'off';
+    // The shadow pass's primitives are in totals.primitives (the budget's count), not in triangles
+    // (what the layers show: table 4.1's counts).
+    const totals = { triangles: 0, lines: 0, drawCalls: 0,
+      shadowPrimitives: shadow.steps.reduce((n, step) => n + step.primitives, 0),
+      shadow: shadow.sun ? (shadow.steps.length ? 'drawn' : 'reused') : 'off' };
     if (this.showGround && this.ground) {
       const ground = this.#groundOptions();
       // The stand-in shadow under the crown only where no layer casts the sun's (shadows on).
