@@ -75,6 +75,7 @@ void main() {
   }
   float diffuse = max(dot(n, uLightDirection), 0.0);
   if (uDoubleSided > 0.5) diffuse = 0.25 + 0.75 * diffuse;  // thin parts let light through
+  float unshadowed = diffuse;  // the selection's mark stays bright in the shadow (it must show)
   diffuse *= sunVisibility(vShadow);
   vec3 sky = vec3(0.62, 0.72, 0.85);
   vec3 ground = vec3(0.32, 0.30, 0.24);
@@ -85,6 +86,6 @@ void main() {
   vec3 color = base * (ambient + vec3(1.0, 0.97, 0.9) * diffuse * 1.1) + vec3(spec);
   color = pow(color, vec3(1.0 / 2.2));  // linear to sRGB
   vec3 mark = vSelected > 0.75 ? vec3(1.0, 0.55, 0.1) : vec3(1.0, 0.85, 0.25);
-  color = mix(color, mark * (0.45 + 0.75 * diffuse), vSelected > 0.0 ? 0.85 : 0.0);
+  color = mix(color, mark * (0.45 + 0.75 * unshadowed), vSelected > 0.0 ? 0.85 : 0.0);
   outColor = vec4(color, uXray > 0.5 ? 0.65 : 1.0);
 }
