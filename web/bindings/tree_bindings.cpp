@@ -186,9 +186,11 @@ class TreeSession {
       if (occlusion) out.Add("occlusion", occlusion->*part);
     };
     if (group == "bark") {
+      // Before the first view: WrapBarkUvs allocates, and a growth of the WASM memory would leave
+      // the views already added pointing at the old buffer.
+      if (bark_ && run_) bark_uvs_ = compose::WrapBarkUvs(run_->tree(), mesh, bark_->old_bark);
       part(mesh.bark, skin.bark);
       occluded(&CrownOcclusion::bark);
-      if (bark_ && run_) bark_uvs_ = compose::WrapBarkUvs(run_->tree(), mesh, bark_->old_bark);
       out.Add("uvs", bark_ && run_ ? bark_uvs_ : mesh.bark.uvs)
           .Add("branchIds", mesh.bark_branch_id)
           .Add("branchParents", parents_);
