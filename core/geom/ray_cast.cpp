@@ -11,11 +11,15 @@ namespace {
 
 // RayState as NearestFirstWalk's query: keys are slab entry distances along the ray (RayBox's,
 // four children at once: detail::WideRayKeys).
+// An oblique ray of tame size takes the float lanes' conservative keys (the same first hit, see
+// WideRayKeysConservative); any other the exact ones.
 struct FirstHitQuery {
   detail::RayState state;
   detail::PreparedRay ray;
+  detail::FloatSlabRay float_ray;
   double Bound() const { return state.best_t; }
   int Keys(const BvhWideNode& n, int /*slots*/, double keys[4]) const {
+    if (float_ray.usable) return detail::WideRayKeysConservative(n, float_ray, state.best_t, keys);
     return detail::WideRayKeys(n, ray, state.best_t, keys);
   }
   void Test(const glm::vec3* abc, uint32_t t) { state.Test(abc, ray, t); }
@@ -26,9 +30,10 @@ RayHit FirstHitOf(const TriMesh& mesh, const Bvh& bvh, glm::vec3 origin, glm::ve
   if (stats) ++stats->queries;
   if (!(max_distance >= 0.0f) || bvh.empty() || bvh.triangle_count() != mesh.triangle_count())
     return {};
-  FirstHitQuery query{detail::RayState(static_cast<double>(max_distance)),
-                      detail::PrepareRay(origin, dir, /*normalize=*/true)};
-  if (!query.ray.valid) return {};
+  const detail::PreparedRay ray = detail::PrepareRay(origin, dir, /*normalize=*/true);
+  if (!ray.valid) return {};
+  FirstHitQuery query{detail::RayState(static_cast<double>(max_distance)), ray,
+                      detail::PrepareFloatSlabRay(ray, origin, bvh.nodes()[0].bounds)};
   uint64_t visited = 1, tested = 0;
   double t0;
   if (detail::RayBox(bvh.nodes()[0].bounds, query.ray, query.state.best_t, &t0))
