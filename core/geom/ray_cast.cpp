@@ -1,6 +1,8 @@
 // FirstHit and SegmentHits through the BVH's 4-wide tree: depth-first, a node's four child boxes
 // slab-tested from the node, nearer entry first; a box entered beyond the best hit so far is
-// skipped (ties kept for the lowest triangle index).
+// skipped (ties kept for the lowest triangle index). FirstHit's oblique rays key the boxes in
+// float lanes with outward margins (WideRayKeysConservative: more boxes kept, never fewer, so the
+// same hit); other rays and SegmentHits use the exact double slab test.
 #include "geom/ray_cast.h"
 
 #include "geom/query_detail.h"
