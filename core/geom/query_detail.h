@@ -323,10 +323,11 @@ inline int WideRayKeys(const BvhWideNode& n, const PreparedRay& r, double t_max,
 }
 
 // A ray for the float slab test below (WideRayKeysConservative): its origin (floats: the caller's,
-// exactly) and the double inverse direction rounded to float. usable is false (the caller keeps WideRayKeys) unless the ray is oblique, each |inverse| is
-// at most 2^40 and each |origin| and |root box side| at most 2^40: then no float product below
-// overflows (|box side − origin| < 2^43 for the wide boxes, which lie within a few of their parent's
-// extents of the root box, times 2^40) and none underflows (|inverse| >= 1 for a unit direction).
+// exactly) and the double inverse direction rounded to float. usable is false (the caller keeps
+// WideRayKeys) unless the ray is oblique, each |inverse| is at most 2^40 and each |origin| and
+// |root box side| at most 2^40: then no float product below overflows (|box side − origin| < 2^43
+// for the wide boxes, which lie within a few of their parent's extents of the root box, times 2^40)
+// and none underflows (|inverse| >= 1 for a unit direction).
 struct FloatSlabRay {
   simd::Float4 origin[3] = {}, inv[3] = {};  // each in all four lanes
   bool usable = false;

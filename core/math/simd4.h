@@ -184,8 +184,8 @@ inline Float4 LoadFloat4(const float* p) {
   __builtin_memcpy(&v, p, sizeof v);
   return v;
 }
-// 2^e[k] in lanes k = 0..2 for the exponents e[k] in [-126, 127] (BvhWideNode::Step's bits: (e + 127)
-// << 23); lane 3 is not meant to be read.
+// 2^e[k] in lanes k = 0..2 for the exponents e[k] in [-126, 127] (BvhWideNode::Step's bits,
+// (e + 127) << 23); lane 3 is not meant to be read.
 inline Float4 ExponentBytesToPowers(const int8_t e[3]) {
   const Int4 v{e[0], e[1], e[2], 0};
   return (Float4)((v + 127) << 23);
