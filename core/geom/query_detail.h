@@ -322,6 +322,88 @@ inline int WideRayKeys(const BvhWideNode& n, const PreparedRay& r, double t_max,
   return kept;
 }
 
+// A ray for the float slab test below (WideRayKeysConservative): its origin (floats: the caller's,
+// exactly) and the double inverse direction rounded to float. usable is false (the caller keeps
+// WideRayKeys) unless the ray is oblique, each |inverse| is at most 2^40 and each |origin| and
+// |root box side| at most 2^40: then no float product below overflows (|box side − origin| < 2^43
+// for the wide boxes, which lie within a few of their parent's extents of the root box, times 2^40)
+// and none underflows (|inverse| >= 1 for a unit direction).
+struct FloatSlabRay {
+  simd::Float4 origin[3] = {}, inv[3] = {};  // each in all four lanes
+  bool usable = false;
+};
+
+inline FloatSlabRay PrepareFloatSlabRay(const PreparedRay& r, const glm::vec3& origin,
+                                        const Bounds3& root) {
+  FloatSlabRay f;
+  if (!r.valid || !r.oblique) return f;
+  constexpr double kLimit = 1099511627776.0;  // 2^40
+  const double inv[3] = {r.inv.x, r.inv.y, r.inv.z};
+  for (int a = 0; a < 3; ++a) {
+    if (!(std::fabs(inv[a]) <= kLimit) || !(std::fabs(origin[a]) <= kLimit) ||
+        !(std::fabs(root.min[a]) <= kLimit) || !(std::fabs(root.max[a]) <= kLimit))
+      return f;
+    f.origin[a] = simd::Splat4(origin[a]);
+    f.inv[a] = simd::Splat4(static_cast<float>(inv[a]));
+  }
+  f.usable = true;
+  return f;
+}
+
+// The first float >= t (t >= 0, or +inf), for the float test's upper limit.
+inline float FloatAtLeast(double t) {
+  if (!(t < 3.0e38)) return std::numeric_limits<float>::infinity();
+  const float f = static_cast<float>(t);
+  return static_cast<double>(f) >= t ? f : f + f * 0x1p-22f;
+}
+
+// A conservative twin of WideRayKeys in float lanes: all four child boxes at once, four lanes a
+// step instead of two doubles, and no widening to double. It keeps every child WideRayKeys keeps
+// (perhaps more) and keys it at most at WideRayKeys' key, so a walk with it tests every triangle
+// the exact walk tests (perhaps more, never pruned wrongly) and finds the same first hit: the
+// answer is the lowest (t, triangle) among the triangles the slab tests let through, and those
+// always include the winner. Why the bounds hold: the boxes are decoded as ChildBounds does (the
+// same floats); a slab distance (side − origin)·inverse is worked out here with three roundings
+// to float (the difference, the inverse, the product) and by WideRayKeys with three to double, so
+// the two lie within a relative 2^-22 of each other and have the same sign (the difference of two
+// floats is zero only when they are equal, in either precision); the entries' largest and the
+// exits' smallest are then widened by a relative 2^-20 and an absolute 2^-120 (the latter for
+// subnormal products), outward: entry down, exit up. Returns a bit per kept slot (empty slots
+// too: the caller masks them); keys[k] its (lowered) slab entry.
+inline int WideRayKeysConservative(const BvhWideNode& n, const FloatSlabRay& r, double t_max,
+                                   double keys[4]) {
+  using simd::Float4;
+  static_assert(offsetof(BvhWideNode, hi) == offsetof(BvhWideNode, lo) + 12, "lo, hi adjacent");
+  Float4 q[6];  // lo[0..2], hi[0..2] as floats
+  simd::Bytes24ToFloat4(&n.lo[0][0], q);
+  // The node's origin (lanes 0-2) and steps 2^exponent (lanes 0-2; BvhWideNode::Step's bits).
+  const Float4 origin = simd::LoadFloat4(n.origin);
+  const Float4 step = simd::ExponentBytesToPowers(n.exponent);
+  Float4 lo = simd::Splat4(0.0f);
+  Float4 hi = simd::Splat4(FloatAtLeast(t_max));
+  const Float4 origins[3] = {simd::LaneSplat<0>(origin), simd::LaneSplat<1>(origin),
+                             simd::LaneSplat<2>(origin)};
+  const Float4 steps[3] = {simd::LaneSplat<0>(step), simd::LaneSplat<1>(step),
+                           simd::LaneSplat<2>(step)};
+  for (int a = 0; a < 3; ++a) {
+    // ChildBounds' decode (origin + q·step, the same floats), then the slab distances; the entry
+    // is the nearer side's (forward: lo; else hi): min and max of the two give the same lanes.
+    const Float4 t_lo = ((origins[a] + q[a] * steps[a]) - r.origin[a]) * r.inv[a];
+    const Float4 t_hi = ((origins[a] + q[3 + a] * steps[a]) - r.origin[a]) * r.inv[a];
+    lo = simd::MaxNoNaN(lo, simd::MinNoNaN(t_lo, t_hi));
+    hi = simd::MinNoNaN(hi, simd::MaxNoNaN(t_lo, t_hi));
+  }
+  // lo >= 0: lowered by a relative 2^-20 and 2^-120. hi: raised the same way when >= 0 (a
+  // negative exit means WideRayKeys' exit is negative too, below its entry >= 0: a miss either
+  // way, so how it is widened does not matter).
+  const Float4 tiny = simd::Splat4(0x1p-120f);
+  lo = lo * simd::Splat4(1.0f - 0x1p-20f) - tiny;
+  hi = hi * simd::Splat4(1.0f + 0x1p-20f) + tiny;
+  const int kept = simd::LaneBits(lo <= hi);
+  for (int k = 0; k < 4; ++k) keys[k] = static_cast<double>(lo[k]);
+  return kept;
+}
+
 // The nearest-first depth-first walk that ClosestPoint and FirstHit share. From the root (pushed
 // with root_key), it pops an entry, skips it when its key is beyond query.Bound() (the best got
 // closer since it was pushed; ties kept), tests a leaf's triangles with

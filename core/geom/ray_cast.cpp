@@ -1,6 +1,8 @@
 // FirstHit and SegmentHits through the BVH's 4-wide tree: depth-first, a node's four child boxes
 // slab-tested from the node, nearer entry first; a box entered beyond the best hit so far is
-// skipped (ties kept for the lowest triangle index).
+// skipped (ties kept for the lowest triangle index). FirstHit's oblique rays key the boxes in
+// float lanes with outward margins (WideRayKeysConservative: more boxes kept, never fewer, so the
+// same hit); other rays and SegmentHits use the exact double slab test.
 #include "geom/ray_cast.h"
 
 #include "geom/query_detail.h"
@@ -11,11 +13,15 @@ namespace {
 
 // RayState as NearestFirstWalk's query: keys are slab entry distances along the ray (RayBox's,
 // four children at once: detail::WideRayKeys).
+// An oblique ray of tame size takes the float lanes' conservative keys (the same first hit, see
+// WideRayKeysConservative); any other the exact ones.
 struct FirstHitQuery {
   detail::RayState state;
   detail::PreparedRay ray;
+  detail::FloatSlabRay float_ray;
   double Bound() const { return state.best_t; }
   int Keys(const BvhWideNode& n, int /*slots*/, double keys[4]) const {
+    if (float_ray.usable) return detail::WideRayKeysConservative(n, float_ray, state.best_t, keys);
     return detail::WideRayKeys(n, ray, state.best_t, keys);
   }
   void Test(const glm::vec3* abc, uint32_t t) { state.Test(abc, ray, t); }
@@ -26,9 +32,10 @@ RayHit FirstHitOf(const TriMesh& mesh, const Bvh& bvh, glm::vec3 origin, glm::ve
   if (stats) ++stats->queries;
   if (!(max_distance >= 0.0f) || bvh.empty() || bvh.triangle_count() != mesh.triangle_count())
     return {};
-  FirstHitQuery query{detail::RayState(static_cast<double>(max_distance)),
-                      detail::PrepareRay(origin, dir, /*normalize=*/true)};
-  if (!query.ray.valid) return {};
+  const detail::PreparedRay ray = detail::PrepareRay(origin, dir, /*normalize=*/true);
+  if (!ray.valid) return {};
+  FirstHitQuery query{detail::RayState(static_cast<double>(max_distance)), ray,
+                      detail::PrepareFloatSlabRay(ray, origin, bvh.nodes()[0].bounds)};
   uint64_t visited = 1, tested = 0;
   double t0;
   if (detail::RayBox(bvh.nodes()[0].bounds, query.ray, query.state.best_t, &t0))

@@ -84,6 +84,39 @@ inline Double2 Min(Double2 a, Double2 b) {
 
 inline Float4 Splat4(float v) { return Float4{v, v, v, v}; }
 
+// The larger and the smaller of each lane pair, for lanes without NaNs (which one a NaN or an equal
+// pair gives is not promised: maxps/minps natively, pmax/pmin in WASM).
+inline Float4 MaxNoNaN(Float4 a, Float4 b) {
+#if defined(__wasm_simd128__)
+  return (Float4)wasm_f32x4_pmax((v128_t)a, (v128_t)b);
+#elif defined(__SSE2__)
+  return (Float4)_mm_max_ps((__m128)b, (__m128)a);
+#else
+  return Float4{a[0] < b[0] ? b[0] : a[0], a[1] < b[1] ? b[1] : a[1], a[2] < b[2] ? b[2] : a[2],
+                a[3] < b[3] ? b[3] : a[3]};
+#endif
+}
+inline Float4 MinNoNaN(Float4 a, Float4 b) {
+#if defined(__wasm_simd128__)
+  return (Float4)wasm_f32x4_pmin((v128_t)a, (v128_t)b);
+#elif defined(__SSE2__)
+  return (Float4)_mm_min_ps((__m128)b, (__m128)a);
+#else
+  return Float4{b[0] < a[0] ? b[0] : a[0], b[1] < a[1] ? b[1] : a[1], b[2] < a[2] ? b[2] : a[2],
+                b[3] < a[3] ? b[3] : a[3]};
+#endif
+}
+// A bit per lane of a mask (lane k: bit k), as _mm_movemask_ps.
+inline int LaneBits(Int4 mask) {
+#if defined(__wasm_simd128__)
+  return static_cast<int>(wasm_i32x4_bitmask((v128_t)mask));
+#elif defined(__SSE2__)
+  return _mm_movemask_ps((__m128)mask);
+#else
+  return (mask[0] ? 1 : 0) | (mask[1] ? 2 : 0) | (mask[2] ? 4 : 0) | (mask[3] ? 8 : 0);
+#endif
+}
+
 // Whether any lane of a mask (all ones or all zeros a lane) is set.
 inline bool AnyTrue(Int4 mask) {
 #if defined(__wasm_simd128__)
@@ -112,6 +145,55 @@ inline Float4 BytesToFloat4(const uint8_t q[4]) {
   return Float4{static_cast<float>(q[0]), static_cast<float>(q[1]), static_cast<float>(q[2]),
                 static_cast<float>(q[3])};
 #endif
+}
+// Twenty-four bytes as six times four floats (exact), out[j] lane k from q[4j + k]: BytesToFloat4
+// of q, q + 4, .., q + 20 with two loads.
+inline void Bytes24ToFloat4(const uint8_t* q, Float4 out[6]) {
+#if defined(__wasm_simd128__)
+  uint64_t tail;
+  __builtin_memcpy(&tail, q + 16, 8);
+  const v128_t a = wasm_v128_load(q);
+  const v128_t b = wasm_i64x2_splat(static_cast<int64_t>(tail));
+  const v128_t a_lo = wasm_u16x8_extend_low_u8x16(a), a_hi = wasm_u16x8_extend_high_u8x16(a);
+  const v128_t b_lo = wasm_u16x8_extend_low_u8x16(b);
+  out[0] = (Float4)wasm_f32x4_convert_u32x4(wasm_u32x4_extend_low_u16x8(a_lo));
+  out[1] = (Float4)wasm_f32x4_convert_u32x4(wasm_u32x4_extend_high_u16x8(a_lo));
+  out[2] = (Float4)wasm_f32x4_convert_u32x4(wasm_u32x4_extend_low_u16x8(a_hi));
+  out[3] = (Float4)wasm_f32x4_convert_u32x4(wasm_u32x4_extend_high_u16x8(a_hi));
+  out[4] = (Float4)wasm_f32x4_convert_u32x4(wasm_u32x4_extend_low_u16x8(b_lo));
+  out[5] = (Float4)wasm_f32x4_convert_u32x4(wasm_u32x4_extend_high_u16x8(b_lo));
+#elif defined(__SSE2__)
+  const __m128i zero = _mm_setzero_si128();
+  const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(q));
+  const __m128i b = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(q + 16));
+  const __m128i a_lo = _mm_unpacklo_epi8(a, zero), a_hi = _mm_unpackhi_epi8(a, zero);
+  const __m128i b_lo = _mm_unpacklo_epi8(b, zero);
+  out[0] = (Float4)_mm_cvtepi32_ps(_mm_unpacklo_epi16(a_lo, zero));
+  out[1] = (Float4)_mm_cvtepi32_ps(_mm_unpackhi_epi16(a_lo, zero));
+  out[2] = (Float4)_mm_cvtepi32_ps(_mm_unpacklo_epi16(a_hi, zero));
+  out[3] = (Float4)_mm_cvtepi32_ps(_mm_unpackhi_epi16(a_hi, zero));
+  out[4] = (Float4)_mm_cvtepi32_ps(_mm_unpacklo_epi16(b_lo, zero));
+  out[5] = (Float4)_mm_cvtepi32_ps(_mm_unpackhi_epi16(b_lo, zero));
+#else
+  for (int j = 0; j < 6; ++j) out[j] = BytesToFloat4(q + 4 * j);
+#endif
+}
+// Four floats from memory (16 bytes; lanes past what the caller uses are whatever lies there).
+inline Float4 LoadFloat4(const float* p) {
+  Float4 v;
+  __builtin_memcpy(&v, p, sizeof v);
+  return v;
+}
+// 2^e[k] in lanes k = 0..2 for the exponents e[k] in [-126, 127] (BvhWideNode::Step's bits,
+// (e + 127) << 23); lane 3 is not meant to be read.
+inline Float4 ExponentBytesToPowers(const int8_t e[3]) {
+  const Int4 v{e[0], e[1], e[2], 0};
+  return (Float4)((v + 127) << 23);
+}
+// Lane k of v in every lane.
+template <int k>
+inline Float4 LaneSplat(Float4 v) {
+  return __builtin_shufflevector(v, v, k, k, k, k);
 }
 // Lanes 0, 1 (Low) or 2, 3 (High) of v widened to double (exact).
 inline Double2 LowToDouble2(Float4 v) {
