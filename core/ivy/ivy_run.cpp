@@ -134,12 +134,14 @@ IvySupportInput IvySupportInput::Scene(std::string name) {
 }
 
 IvySupportInput IvySupportInput::Mesh(geom::TriMesh mesh, std::string name,
-                                      std::vector<io::MeshMaterial> materials) {
+                                      std::vector<io::MeshMaterial> materials,
+                                      double metres_per_unit) {
   IvySupportInput in;
   in.kind = Kind::kMesh;
   in.mesh = std::move(mesh);
   in.name = std::move(name);
   in.materials = std::move(materials);
+  in.metres_per_unit = metres_per_unit;
   return in;
 }
 
@@ -171,6 +173,9 @@ Result<std::shared_ptr<const IvySupport>> IvySupport::Prepare(IvySupportInput in
       s.scene_.name = input.name;
       s.scene_.mesh = std::move(input.mesh);
       s.is_mesh_ = true;
+      // 1000 px (mm) per metre: a glTF's tubes and leaves are sized in metres (IvyLookPxPerUnit).
+      if (input.metres_per_unit > 0 && std::isfinite(input.metres_per_unit))
+        s.scene_.unit_px_per_unit = 1000 * input.metres_per_unit;
       break;
     }
     case IvySupportInput::Kind::kPrepared:
@@ -227,8 +232,14 @@ double IvySupport::px_per_unit() const {
   return IvyPxPerUnit(IvyParams(), scene_.px_per_unit, extent_);
 }
 
+double IvySupport::look_px_per_unit() const {
+  return IvyLookPxPerUnit(IvyParams(), scene_.px_per_unit, scene_.unit_px_per_unit, px_per_unit());
+}
+
 Result<IvyParams> IvySupport::Scaled(const IvyParams& declared) const {
-  return IvyScaledParams(declared, IvyPxPerUnit(declared, scene_.px_per_unit, extent_));
+  const double k = IvyPxPerUnit(declared, scene_.px_per_unit, extent_);
+  return IvyScaledParams(
+      declared, k, IvyLookPxPerUnit(declared, scene_.px_per_unit, scene_.unit_px_per_unit, k));
 }
 
 Support IvySupport::ForGrow() const {
