@@ -284,7 +284,10 @@ void IvyRun::SetLimits() {
   limits_.bytes_per_bud += options_.extra_bytes_per_bud;
   if (!options_.change.empty()) limits_.change = options_.change;
   grow_limits_ = limits_;
-  if (options_.reserve_stats) ReserveIvyStats(support_->triangles(), &grow_limits_);
+  if (options_.reserve_stats) {
+    ReserveIvyStats(support_->triangles(), &grow_limits_,
+                    !options_.build_meshes && !support_->free());
+  }
 }
 
 Status IvyRun::Advance(const run::Observer& observer) {
@@ -307,8 +310,7 @@ Status IvyRun::Advance(const run::Observer& observer) {
     if (!options_.planned_export.empty())
       return ExportEstimateOf(model, so_far, options_.planned_export,
                               options_.planned_with_support);
-    return EstimateIvyGrown(model, so_far, limits_) +
-           EstimateIvyStats(CountIvyStatsWork(model, params_, support_->triangles()));
+    return EstimateIvyGrown(model, so_far, limits_) + EstimateIvyStats(StatsWork(model));
   };
   const std::string change =
       options_.planned_export.empty() ? options_.stats_change : options_.export_change;
@@ -439,9 +441,17 @@ Result<gltf::Document> IvyRun::Document() const {
   return BuildIvyDocument(model_, params_, state_.seed, state_.steps, nullptr, LeafSupport());
 }
 
-Estimate IvyRun::StatsEstimate() const {
-  return EstimateIvyStats(CountIvyStatsWork(model_, params_, support_->triangles()));
+IvyStatsWork IvyRun::StatsWork(const IvyModel& model) const {
+  IvyStatsWork w = CountIvyStatsWork(model, params_, support_->triangles());
+  if (support_->mesh() != nullptr) {  // StatsJson's leaves as drawn and their cover
+    w.meshed_buds = options_.build_meshes ? 0 : w.buds;
+    w.leaf_cover = true;
+    w.cover_triangles = support_->triangles() + kIvyLeafTrianglesPerBud * w.buds;
+  }
+  return w;
 }
+
+Estimate IvyRun::StatsEstimate() const { return EstimateIvyStats(StatsWork(model_)); }
 
 Status IvyRun::CheckGrewSomething() const {
   if (state_.steps == 0 || !model_.internodes.empty() || !log_.truncated_by.empty())
@@ -527,7 +537,7 @@ Result<Estimate> IvyRun::ExportEstimateOf(const IvyModel& model, const GrowLog& 
       EstimateIvyGrown(model, log, options_.export_with_stats_room ? grow_limits_ : limits_) +
       EstimateIvyExport(model, *kind, support_out ? support_->triangles() : 0);
   if (options_.stats) {
-    e = e + EstimateIvyStats(CountIvyStatsWork(model, params_, support_->triangles()));
+    e = e + EstimateIvyStats(StatsWork(model));
   }
   return e;
 }

@@ -216,6 +216,9 @@ class IvyRun : public run::StudyRun {
   void SetLimits();
   // The support the leaves are kept outside of (BuildIvyMeshes), nullptr on the free replay.
   const Support* LeafSupport() const;
+  // The measurement's work for `model`: CountIvyStatsWork and StatsJson's leaves as drawn (meshed
+  // unless options_.build_meshes, and their cover) on a support.
+  IvyStatsWork StatsWork(const IvyModel& model) const;
 
   IvyState state_;
   IvyParams params_;      // state_.params in the support's units
