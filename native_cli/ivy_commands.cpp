@@ -163,7 +163,8 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
     io::MeshReadStats read;
     Result<geom::TriMesh> mesh = io::ReadMeshFile(o.mesh, &read);
     if (!mesh.ok()) Fail(mesh.status().Within("--mesh"));
-    input = ivy::IvySupportInput::Mesh(std::move(mesh).value(), o.mesh, std::move(read.materials));
+    input = ivy::IvySupportInput::Mesh(std::move(mesh).value(), o.mesh, std::move(read.materials),
+                                       read.metres_per_unit);
   } else {
     // --scene, else the state's (--url scene=, --params "scene"), else cubes4.
     const std::string name = !o.scene.empty()      ? o.scene

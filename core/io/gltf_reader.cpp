@@ -988,6 +988,7 @@ Status Reader::ReadMaterials(std::vector<MeshMaterial>* materials,
         NIWA_RETURN_IF_ERROR(ReadImage(source, &(*images)[static_cast<std::size_t>(source)]));
         read[static_cast<std::size_t>(source)] = true;
       }
+      material.base_color_source = source;
       if (!(*images)[static_cast<std::size_t>(source)].bytes.empty()) {
         material.base_color_image = source;
       }
@@ -1056,6 +1057,7 @@ Status Reader::Run(geom::TriMesh* out) {
   if (stats_ != nullptr) {
     stats_->materials = std::move(materials);
     stats_->images = std::move(images);
+    stats_->metres_per_unit = 1;  // glTF 2.0 §3.4
   }
   *out = std::move(mesh_);
   return Status::Ok();

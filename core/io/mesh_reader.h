@@ -41,6 +41,10 @@ struct MeshMaterial {
   // Index in MeshReadStats::images of the baseColorTexture's image (any texCoord set); -1 when
   // the material has none or its image has no bytes (a format this build does not decode).
   int base_color_image = -1;
+  // The glTF image index of the baseColorTexture (its source, or EXT_texture_webp's, etc.) whether
+  // or not its bytes are kept: a page that decodes WebP itself (the ivy page draws a dropped mesh
+  // with it) finds its bytes there; -1 when the material has none.
+  int base_color_source = -1;
   int wrap_s = kWrapRepeat, wrap_t = kWrapRepeat;
   // The baseColorTexture's UV set (textureInfo.texCoord, or KHR_texture_transform's texCoord,
   // which overrides it) and its KHR_texture_transform (glTF spec: uv' = T(offset) * R(rotation) *
@@ -77,6 +81,9 @@ struct MeshReadStats {
   // glTF images in file order (MeshMaterial::base_color_image indexes them): only the base colour
   // textures' images carry bytes.
   std::vector<MeshImage> images;
+  // Metres per unit the format names: 1 for glTF (glTF 2.0 §3.4: "the units for all linear
+  // distances are meters"), 0 for OBJ (no unit).
+  double metres_per_unit = 0;
 };
 
 // Limits every reader enforces, each named in its error line.

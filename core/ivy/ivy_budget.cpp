@@ -39,6 +39,18 @@ constexpr double kNsPerTriangleTest = 40;
 constexpr double kNsPerOverlapPair = 160;
 constexpr double kNsPerStatsBud = 3000;  // printing, re-reading, sorting the L-string
 constexpr double kStatsBytesPerBud = 5 * 100 + 2 * 24;
+// The leaves as drawn for --stats (IvyRun::StatsJson): the ivy meshed (BuildIvyMeshes reserves
+// exactly its .glb's vertices and indices, kGlb.per_bud below, and copies each part's birth steps
+// into its attribute, 56 floats a bud) and the leaf cover's two 256² rasters of doubles. Times:
+// a bud's tube, sucker and leaf with its placement checks (segment queries on the BVH), and a
+// triangle drawn into a raster (its cells: small leaf triangles; a support's big triangles cover
+// more, not counted) and a raster cell compared, measured in tests/ivy/ivy_budget_test.cpp
+// (StatsMeshesAndLeafCoverAreInTheEstimate; docs/budgets.md).
+constexpr double kMeshBirthCopyBytesPerBud = 56 * 4;
+constexpr double kCoverCells = 256.0 * 256.0;
+constexpr double kNsPerMeshedBud = 60000;
+constexpr double kNsPerCoverTriangle = 400;
+constexpr double kNsPerCoverCell = 20;
 
 double AliveBuds(const IvyModel& model) {
   double alive = 0;
@@ -177,19 +189,30 @@ IvyStatsWork CountIvyStatsWork(const IvyModel& model, const IvyParams& params,
 
 Estimate EstimateIvyStats(const IvyStatsWork& w) {
   Estimate e;
-  e.memory_bytes = kStatsBytesPerBud * w.buds + 8192;
+  e.memory_bytes = kStatsBytesPerBud * w.buds + 8192 +
+                   (kGlb.per_bud + kMeshBirthCopyBytesPerBud) * w.meshed_buds +
+                   (w.leaf_cover ? 2 * kCoverCells * 8 : 0);
   e.seconds = 1e-9 * (kNsPerTriangleTest * w.triangle_tests +
-                      kNsPerOverlapPair * w.overlap_pairs_examined + kNsPerStatsBud * w.buds);
+                      kNsPerOverlapPair * w.overlap_pairs_examined + kNsPerStatsBud * w.buds +
+                      kNsPerMeshedBud * w.meshed_buds + kNsPerCoverTriangle * w.cover_triangles +
+                      (w.leaf_cover ? kNsPerCoverCell * 2 * kCoverCells : 0));
   e.what = "measuring the statistics (" + FormatCount(w.buds) + " buds re-checked against " +
            FormatCount(w.buds > 0 ? w.triangle_tests / (w.buds + w.internodes) : 0) +
            " triangles, " + FormatCount(w.overlap_pairs_examined) + " internode pairs)";
   return e;
 }
 
-void ReserveIvyStats(double support_triangles, IvyGrowLimits* limits) {
-  // Each bud adds itself and (but a seed) its internode to the brute-force re-checks.
+void ReserveIvyStats(double support_triangles, IvyGrowLimits* limits, bool meshes) {
+  // Each bud adds itself and (but a seed) its internode to the brute-force re-checks, and its
+  // leaf's triangles to the leaf cover's raster; meshed for it (meshes) its tube, sucker and leaf.
   limits->seconds_per_bud += 1e-9 * (kNsPerTriangleTest * 2 * support_triangles + kNsPerStatsBud);
   limits->bytes_per_bud += kStatsBytesPerBud;
+  if (support_triangles > 0)
+    limits->seconds_per_bud += 1e-9 * kNsPerCoverTriangle * kIvyLeafTrianglesPerBud;
+  if (meshes) {
+    limits->seconds_per_bud += 1e-9 * kNsPerMeshedBud;
+    limits->bytes_per_bud += kGlb.per_bud + kMeshBirthCopyBytesPerBud;
+  }
 }
 
 Estimate EstimateIvyExport(const IvyModel& model, IvyExport kind, double support_triangles) {

@@ -74,7 +74,15 @@ struct IvyStatsWork {
   double buds = 0, internodes = 0;
   double triangle_tests = 0;          // (buds + internodes) · triangles: an upper bound
   double overlap_pairs_examined = 0;  // pairs the x-sweep tests by distance (exact)
+  // The leaves as drawn (IvyRun::StatsJson, on a support): the buds meshed for them
+  // (BuildIvyMeshes: a tube, a sucker and a checked leaf a bud; 0 where the run holds its meshes
+  // already, the page), and the leaf cover's two 256² depth rasters over the support's triangles
+  // and the leaves' (kIvyLeafTrianglesPerBud a bud at most).
+  double meshed_buds = 0;
+  bool leaf_cover = false;
+  double cover_triangles = 0;
 };
+inline constexpr double kIvyLeafTrianglesPerBud = 46;  // a petiole tube (36) and a blade fan (10)
 IvyStatsWork CountIvyStatsWork(const IvyModel& model, const IvyParams& params,
                                double support_triangles);
 // Its memory (the sweep's spans, the L-string and its re-read) and time (work-unit constants).
@@ -82,7 +90,8 @@ Estimate EstimateIvyStats(const IvyStatsWork& work);
 // Keeps room for the measurement in Grow's per-step check: the part that grows with every bud
 // (its triangle tests, L-string and spans), so a growth with --stats stops where they still fit;
 // the sweep's pairs, which are not linear in the buds, are checked once grown (EstimateIvyStats).
-void ReserveIvyStats(double support_triangles, IvyGrowLimits* limits);
+// meshes: the measurement meshes the ivy for its leaves (the CLI; the page's run holds them).
+void ReserveIvyStats(double support_triangles, IvyGrowLimits* limits, bool meshes = false);
 
 enum class IvyExport { kJson, kLsys, kSvg, kGlb };
 // Memory and time of one export of a grown model (upper bounds); `support_triangles` is the

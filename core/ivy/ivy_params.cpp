@@ -176,20 +176,37 @@ double IvyPxPerUnit(const IvyParams& params, double support_px_per_unit, double 
   return 1;
 }
 
-Result<IvyParams> IvyScaledParams(const IvyParams& declared, double px_per_unit) {
-  if (!(px_per_unit > 0) || !std::isfinite(px_per_unit)) {
-    return Status::Error("scale", FormatNumber(px_per_unit) +
-                                      " px per unit is out of range; must be a number in (0, 1e9]");
+bool IsIvyLookLength(std::size_t row) {
+  return IsIvyLength(row) && std::strcmp(IvyTable().row(row).group, "look") == 0;
+}
+
+double IvyLookPxPerUnit(const IvyParams& params, double support_px_per_unit,
+                        double unit_px_per_unit, double px_per_unit) {
+  const double k = params.Get(IvyParam::kScale);
+  if (k > 0) return k;
+  if (support_px_per_unit > 0) return support_px_per_unit;
+  if (unit_px_per_unit > 0 && std::isfinite(unit_px_per_unit)) return unit_px_per_unit;
+  return px_per_unit;
+}
+
+Result<IvyParams> IvyScaledParams(const IvyParams& declared, double px_per_unit,
+                                  double look_px_per_unit) {
+  for (const double k : {px_per_unit, look_px_per_unit}) {
+    if (!(k > 0) || !std::isfinite(k)) {
+      return Status::Error(
+          "scale", FormatNumber(k) + " px per unit is out of range; must be a number in (0, 1e9]");
+    }
   }
   IvyParams out = declared;
   for (std::size_t row = 0; row < out.size(); ++row) {
     if (!IsIvyLength(row)) continue;
+    const double k = IsIvyLookLength(row) ? look_px_per_unit : px_per_unit;
     // A division (not a product with 1/k): 50 px at 1000 px/m is 0.05 exactly as written.
-    const double value = declared.Get(row) / px_per_unit;
+    const double value = declared.Get(row) / k;
     if (!out.Set(row, value).ok()) {
       const ParamSpec& spec = IvyTable().row(row);
       return Status::Error("scale",
-                           FormatNumber(px_per_unit) + " px per unit makes " + spec.key + " = " +
+                           FormatNumber(k) + " px per unit makes " + spec.key + " = " +
                                FormatNumber(declared.Get(row)) + " px " + FormatNumber(value) +
                                " scene units, outside its range; must make every length row fit");
     }

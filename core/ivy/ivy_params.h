@@ -85,9 +85,24 @@ bool IsIvyLength(std::size_t row);        // the row's unit is "px"
 // px_per_unit: 1 on a built-in scene, 1000 on a tree), else its bounds (kIvyPaperExtent / its
 // largest extent, so it is as big as cubes4 in pixels), else 1.
 double IvyPxPerUnit(const IvyParams& params, double support_px_per_unit, double support_extent);
-// The parameters in scene units: every length row divided by px_per_unit, "scale" set to 1 (the
-// lengths now are per unit). Error "scale" naming the row a scale pushes out of its range.
-Result<IvyParams> IvyScaledParams(const IvyParams& declared, double px_per_unit);
+// The look's length rows (group "look": r_tip, leaf_size, petiole; issue 31 item 7: leaves and
+// tubes keep their size in metres): their pixels per scene unit are the row "scale" when > 0 (a
+// given unit, as every length row's), else the support's own (support_px_per_unit: a built-in
+// scene's or a tree's), else the unit its file names (unit_px_per_unit: 1000 on a glTF, in
+// metres), else px_per_unit (the bounds': an OBJ names no unit). So a leaf of s_leaf = 50 px is
+// 5 cm on a 0.3 m rock and on a 20 m facade read as glTF, while the growth's lengths (L, d, eps,
+// avoid) are read from the mesh's bounds.
+bool IsIvyLookLength(std::size_t row);  // r_tip, leaf_size, petiole
+double IvyLookPxPerUnit(const IvyParams& params, double support_px_per_unit,
+                        double unit_px_per_unit, double px_per_unit);
+// The parameters in scene units: every length row divided by px_per_unit (the look's by
+// look_px_per_unit), "scale" set to 1 (the lengths now are per unit). Error "scale" naming the row
+// a scale pushes out of its range.
+Result<IvyParams> IvyScaledParams(const IvyParams& declared, double px_per_unit,
+                                  double look_px_per_unit);
+inline Result<IvyParams> IvyScaledParams(const IvyParams& declared, double px_per_unit) {
+  return IvyScaledParams(declared, px_per_unit, px_per_unit);
+}
 
 // The preset names, in the order `niwa presets ivy` prints them.
 const std::vector<std::string>& IvyPresetNames();

@@ -134,12 +134,14 @@ IvySupportInput IvySupportInput::Scene(std::string name) {
 }
 
 IvySupportInput IvySupportInput::Mesh(geom::TriMesh mesh, std::string name,
-                                      std::vector<io::MeshMaterial> materials) {
+                                      std::vector<io::MeshMaterial> materials,
+                                      double metres_per_unit) {
   IvySupportInput in;
   in.kind = Kind::kMesh;
   in.mesh = std::move(mesh);
   in.name = std::move(name);
   in.materials = std::move(materials);
+  in.metres_per_unit = metres_per_unit;
   return in;
 }
 
@@ -171,6 +173,9 @@ Result<std::shared_ptr<const IvySupport>> IvySupport::Prepare(IvySupportInput in
       s.scene_.name = input.name;
       s.scene_.mesh = std::move(input.mesh);
       s.is_mesh_ = true;
+      // 1000 px (mm) per metre: a glTF's tubes and leaves are sized in metres (IvyLookPxPerUnit).
+      if (input.metres_per_unit > 0 && std::isfinite(input.metres_per_unit))
+        s.scene_.unit_px_per_unit = 1000 * input.metres_per_unit;
       break;
     }
     case IvySupportInput::Kind::kPrepared:
@@ -227,8 +232,14 @@ double IvySupport::px_per_unit() const {
   return IvyPxPerUnit(IvyParams(), scene_.px_per_unit, extent_);
 }
 
+double IvySupport::look_px_per_unit() const {
+  return IvyLookPxPerUnit(IvyParams(), scene_.px_per_unit, scene_.unit_px_per_unit, px_per_unit());
+}
+
 Result<IvyParams> IvySupport::Scaled(const IvyParams& declared) const {
-  return IvyScaledParams(declared, IvyPxPerUnit(declared, scene_.px_per_unit, extent_));
+  const double k = IvyPxPerUnit(declared, scene_.px_per_unit, extent_);
+  return IvyScaledParams(
+      declared, k, IvyLookPxPerUnit(declared, scene_.px_per_unit, scene_.unit_px_per_unit, k));
 }
 
 Support IvySupport::ForGrow() const {
@@ -273,7 +284,10 @@ void IvyRun::SetLimits() {
   limits_.bytes_per_bud += options_.extra_bytes_per_bud;
   if (!options_.change.empty()) limits_.change = options_.change;
   grow_limits_ = limits_;
-  if (options_.reserve_stats) ReserveIvyStats(support_->triangles(), &grow_limits_);
+  if (options_.reserve_stats) {
+    ReserveIvyStats(support_->triangles(), &grow_limits_,
+                    !options_.build_meshes && !support_->free());
+  }
 }
 
 Status IvyRun::Advance(const run::Observer& observer) {
@@ -296,8 +310,7 @@ Status IvyRun::Advance(const run::Observer& observer) {
     if (!options_.planned_export.empty())
       return ExportEstimateOf(model, so_far, options_.planned_export,
                               options_.planned_with_support);
-    return EstimateIvyGrown(model, so_far, limits_) +
-           EstimateIvyStats(CountIvyStatsWork(model, params_, support_->triangles()));
+    return EstimateIvyGrown(model, so_far, limits_) + EstimateIvyStats(StatsWork(model));
   };
   const std::string change =
       options_.planned_export.empty() ? options_.stats_change : options_.export_change;
@@ -428,9 +441,17 @@ Result<gltf::Document> IvyRun::Document() const {
   return BuildIvyDocument(model_, params_, state_.seed, state_.steps, nullptr, LeafSupport());
 }
 
-Estimate IvyRun::StatsEstimate() const {
-  return EstimateIvyStats(CountIvyStatsWork(model_, params_, support_->triangles()));
+IvyStatsWork IvyRun::StatsWork(const IvyModel& model) const {
+  IvyStatsWork w = CountIvyStatsWork(model, params_, support_->triangles());
+  if (support_->mesh() != nullptr) {  // StatsJson's leaves as drawn and their cover
+    w.meshed_buds = options_.build_meshes ? 0 : w.buds;
+    w.leaf_cover = true;
+    w.cover_triangles = support_->triangles() + kIvyLeafTrianglesPerBud * w.buds;
+  }
+  return w;
 }
+
+Estimate IvyRun::StatsEstimate() const { return EstimateIvyStats(StatsWork(model_)); }
 
 Status IvyRun::CheckGrewSomething() const {
   if (state_.steps == 0 || !model_.internodes.empty() || !log_.truncated_by.empty())
@@ -516,7 +537,7 @@ Result<Estimate> IvyRun::ExportEstimateOf(const IvyModel& model, const GrowLog& 
       EstimateIvyGrown(model, log, options_.export_with_stats_room ? grow_limits_ : limits_) +
       EstimateIvyExport(model, *kind, support_out ? support_->triangles() : 0);
   if (options_.stats) {
-    e = e + EstimateIvyStats(CountIvyStatsWork(model, params_, support_->triangles()));
+    e = e + EstimateIvyStats(StatsWork(model));
   }
   return e;
 }

@@ -43,13 +43,14 @@ struct IvySupportInput {
   geom::TriMesh mesh;                       // kMesh: the mesh as read (io::ReadMeshBytes)
   std::string name;                         // kMesh: its name (the scene's name)
   std::vector<io::MeshMaterial> materials;  // kMesh: the reader's (noivy obstacles)
+  double metres_per_unit = 0;  // kMesh: the unit its file names (io MeshReadStats), 0 none
   IvyScene prepared;                        // kPrepared: e.g. compose/ivy_on_tree's bark
   Estimate prepared_estimate;               // kPrepared: building it (its seconds count)
   std::string prepared_truncated_by;        // kPrepared: its stop line, "" if none
 
   static IvySupportInput Scene(std::string name);
   static IvySupportInput Mesh(geom::TriMesh mesh, std::string name,
-                              std::vector<io::MeshMaterial> materials);
+                              std::vector<io::MeshMaterial> materials, double metres_per_unit = 0);
   static IvySupportInput Prepared(IvyScene scene, Estimate estimate, std::string truncated_by);
 };
 
@@ -100,7 +101,11 @@ class IvySupport {
   // the row "scale" at 0: the scene's, else from the extent).
   double extent() const { return extent_; }
   double px_per_unit() const;
-  // A state's parameters in the support's units (IvyScaledParams at IvyPxPerUnit); error "scale".
+  // The paper pixels per unit of its look's lengths (tubes, leaves: IvyLookPxPerUnit with the row
+  // "scale" at 0): a glTF's metres (1000) whatever its size, else px_per_unit().
+  double look_px_per_unit() const;
+  // A state's parameters in the support's units (IvyScaledParams at IvyPxPerUnit, the look's at
+  // IvyLookPxPerUnit); error "scale".
   Result<IvyParams> Scaled(const IvyParams& declared) const;
 
  private:
@@ -211,6 +216,9 @@ class IvyRun : public run::StudyRun {
   void SetLimits();
   // The support the leaves are kept outside of (BuildIvyMeshes), nullptr on the free replay.
   const Support* LeafSupport() const;
+  // The measurement's work for `model`: CountIvyStatsWork and StatsJson's leaves as drawn (meshed
+  // unless options_.build_meshes, and their cover) on a support.
+  IvyStatsWork StatsWork(const IvyModel& model) const;
 
   IvyState state_;
   IvyParams params_;      // state_.params in the support's units

@@ -29,6 +29,10 @@ struct IvyScene {
   // Paper pixels per scene unit (IvyPxPerUnit): 1 on the built-in scenes (px), 1000 on a tree (in
   // metres); 0 = unknown (a read mesh: from its bounds, or the state's "scale").
   double px_per_unit = 0;
+  // A read mesh whose file names its unit (glTF: metres, 1000 px per unit; issue 31 item 7): the
+  // pixels per unit of the look's lengths (tubes, leaves) when "scale" is 0 (IvyLookPxPerUnit);
+  // 0 = no unit named (OBJ).
+  double unit_px_per_unit = 0;
 };
 
 const std::vector<std::string>& IvySceneNames();

@@ -266,12 +266,17 @@ TEST(GltfReader, MeshBytesDispatchByName) {
     return text.str();
   };
   for (const char* name : {"hierarchy.glb", "embedded.gltf", "shapes.obj"}) {
-    Result<geom::TriMesh> file = ReadMeshFile(MeshPath(name));
+    MeshReadStats read_file, read_bytes;
+    Result<geom::TriMesh> file = ReadMeshFile(MeshPath(name), &read_file);
     ASSERT_TRUE(file.ok()) << file.status().Line();
-    Result<geom::TriMesh> bytes = ReadMeshBytes(slurp(MeshPath(name)), name);
+    Result<geom::TriMesh> bytes = ReadMeshBytes(slurp(MeshPath(name)), name, &read_bytes);
     ASSERT_TRUE(bytes.ok()) << bytes.status().Line();
     EXPECT_EQ(bytes->positions, file->positions) << name;
     EXPECT_EQ(bytes->indices, file->indices) << name;
+    // glTF names its unit (metres, §3.4); OBJ none.
+    const double metres = std::string(name) == "shapes.obj" ? 0 : 1;
+    EXPECT_EQ(read_file.metres_per_unit, metres) << name;
+    EXPECT_EQ(read_bytes.metres_per_unit, metres) << name;
   }
   Result<geom::TriMesh> upper = ReadMeshBytes(slurp(MeshPath("shapes.obj")), "SHAPES.OBJ");
   EXPECT_TRUE(upper.ok()) << upper.status().Line();

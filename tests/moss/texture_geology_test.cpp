@@ -185,7 +185,10 @@ TEST(MossTextureGeology, EzTreesFlowerDecodesItsThreePngs) {
   const geom::TriMesh mesh = io::ReadMeshFile(MeshPath("flower_blue.glb"), &read).value();
   ASSERT_EQ(read.images.size(), 3u);
   int textured = 0;
-  for (const io::MeshMaterial& m : read.materials) textured += m.base_color_image >= 0;
+  for (const io::MeshMaterial& m : read.materials) {
+    textured += m.base_color_image >= 0;
+    EXPECT_EQ(m.base_color_source, m.base_color_image);  // PNGs: kept, the same index
+  }
   EXPECT_EQ(textured, 3);
   const MossScene scene =
       SceneFromMesh(mesh, read.materials, "flower_blue.glb", read.images).value();
@@ -199,6 +202,7 @@ TEST(MossTextureGeology, EzTreesFlowerDecodesItsThreePngs) {
   if (io::ReadMeshFile(MeshPath("rock1.glb"), &rock).ok()) {  // Draco: native only
     ASSERT_EQ(rock.materials.size(), 1u);
     EXPECT_EQ(rock.materials[0].base_color_image, -1);
+    EXPECT_EQ(rock.materials[0].base_color_source, 1);  // Stones_1001_BaseColor, for the page
   }
 }
 

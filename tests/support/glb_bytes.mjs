@@ -28,3 +28,30 @@ export function triangleBin(i2 = 2) {
   b.writeInt16LE(0, 36); b.writeInt16LE(1, 38); b.writeInt16LE(i2, 40);
   return b;
 }
+
+// Reads .glb bytes back: {json, bin} (the BIN chunk, empty when none), and `floats(accessor)` /
+// `indices(accessor)`: an accessor's values as numbers (FLOAT, or UNSIGNED_BYTE/SHORT/INT
+// indices; tightly packed or strided), for tests that measure what a page or the CLI wrote.
+export function readGlb(bytes) {
+  const buf = Buffer.from(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const jsonLength = buf.readUInt32LE(12);
+  const json = JSON.parse(buf.subarray(20, 20 + jsonLength).toString('utf8'));
+  const at = 20 + jsonLength;
+  const bin = at + 8 <= buf.length ? buf.subarray(at + 8, at + 8 + buf.readUInt32LE(at)) : Buffer.alloc(0);
+  const COMPONENTS = { SCALAR: 1, VEC2: 2, VEC3: 3, VEC4: 4 };
+  const READ = { 5126: [4, 'readFloatLE'], 5121: [1, 'readUInt8'], 5123: [2, 'readUInt16LE'], 5125: [4, 'readUInt32LE'] };
+  const values = (index) => {
+    const a = json.accessors[index];
+    const view = json.bufferViews[a.bufferView];
+    const n = COMPONENTS[a.type];
+    const [size, read] = READ[a.componentType];
+    const stride = view.byteStride || n * size;
+    const start = (view.byteOffset || 0) + (a.byteOffset || 0);
+    const out = new Array(a.count * n);
+    for (let i = 0; i < a.count; ++i) {
+      for (let c = 0; c < n; ++c) out[i * n + c] = bin[read](start + i * stride + c * size);
+    }
+    return out;
+  };
+  return { json, bin, floats: values, indices: values };
+}

@@ -6,7 +6,11 @@
 // JavaScript arrives as text or bytes and is checked by the core (core/ivy/ivy_state,
 // io/gltf_reader, ivy::Grow); nothing throws, errors come back as one line ("" = success).
 // Buffers leave through buffers(group) (buffers.h), copied once by the worker. Groups:
-//   "support"                    positions, normals (Float32 xyz), indices (Uint32)
+//   "support"                    positions, normals (Float32 xyz), indices (Uint32); a dropped
+//                                glTF's look: uvs (Float32 uv: where its material's
+//                                baseColorTexture is sampled, io kBaseColorUvAttribute), colors
+//                                (Float32 RGBA: COLOR_0) and material (Float32: the index in
+//                                supportJson's materials, -1 none), each when the file has them
 //   "stems" | "leaves" | "suckers"  positions, normals, indices, birth (Float32 per vertex: the
 //                                birth_step of core/ivy/ivy_mesh.h, the .glb's _BIRTH_STEP);
 //                                "leaves" also uvs (Float32 uv per vertex: the .glb's TEXCOORD_0)
@@ -73,6 +77,7 @@ json Vec(const glm::dvec3& v) { return json::array({v.x, v.y, v.z}); }
 struct FlatMesh {
   std::vector<float> positions, normals, birth, uvs;
   std::vector<uint32_t> indices;
+  std::vector<float> colors, material;  // the support's look (a dropped glTF's), else empty
 };
 
 FlatMesh Flatten(const geom::TriMesh& mesh) {
@@ -188,17 +193,23 @@ class IvyLab {
     if (!valid.ok()) return ErrorText(valid);
     Progress("bvh", 0, static_cast<double>(mesh->triangle_count()));
     const auto t0 = Clock::now();
+    std::vector<io::MeshMaterial> materials = read.materials;  // the page draws with them
     Result<std::shared_ptr<const ivy::IvySupport>> s = ivy::IvySupport::Prepare(
-        ivy::IvySupportInput::Mesh(std::move(mesh).value(), name, std::move(read.materials)),
+        ivy::IvySupportInput::Mesh(std::move(mesh).value(), name, std::move(read.materials),
+                                   read.metres_per_unit),
         PageSupportOptions(), PageBudget());
     if (!s.ok()) return ErrorText(run::RenameField(s.status(), {{"mesh", name}}));
     SetSupport(std::move(s).value());
+    materials_ = std::move(materials);
     ms_bvh_ = Ms(t0, Clock::now());
     return "";
   }
 
   // {name, dropped, free, triangles, obstacles, bounds: {min, max}, px_per_unit (its own scale:
-  // the paper pixels per unit of the row "scale" at 0, auto), seeds: [{name, pos}], ms_bvh}.
+  // the paper pixels per unit of the row "scale" at 0, auto), look_px_per_unit (its tubes' and
+  // leaves' own: 1000 on a glTF, in metres, whatever its size), seeds: [{name, pos}], ms_bvh,
+  // materials: [{name, base_color: linear RGBA, image: the glTF image index of its
+  // baseColorTexture or -1 (WebP too: the page decodes it), wrap_s, wrap_t}] (a dropped glTF's)}.
   std::string supportJson() const {
     ordered_json j;
     if (!support_) return JsonText(j);
@@ -215,11 +226,22 @@ class IvyLab {
       j["bounds"] = nullptr;
     }
     j["px_per_unit"] = support_->px_per_unit();
+    j["look_px_per_unit"] = support_->look_px_per_unit();  // a glTF's metres (issue 31 item 7)
     ordered_json seeds = ordered_json::array();
     for (const ivy::NamedSeed& seed : scene.seeds)
       seeds.push_back({{"name", seed.name}, {"pos", Vec(seed.pos)}});
     j["seeds"] = seeds;
     j["ms_bvh"] = ms_bvh_;
+    ordered_json materials = ordered_json::array();
+    for (const io::MeshMaterial& m : materials_) {
+      materials.push_back(
+          {{"name", m.name},
+           {"base_color", {m.base_color.r, m.base_color.g, m.base_color.b, m.base_color.a}},
+           {"image", m.base_color_source},
+           {"wrap_s", m.wrap_s},
+           {"wrap_t", m.wrap_t}});
+    }
+    j["materials"] = materials;
     return JsonText(j);
   }
 
@@ -338,6 +360,9 @@ class IvyLab {
       out.Add("positions", support_buffers_.positions)
           .Add("normals", support_buffers_.normals)
           .Add("indices", support_buffers_.indices);
+      if (!support_buffers_.uvs.empty()) out.Add("uvs", support_buffers_.uvs);
+      if (!support_buffers_.colors.empty()) out.Add("colors", support_buffers_.colors);
+      if (!support_buffers_.material.empty()) out.Add("material", support_buffers_.material);
     } else if (group == "stems") {
       part(stems_);
     } else if (group == "leaves") {
@@ -370,6 +395,19 @@ class IvyLab {
     support_ = std::move(support);
     const geom::TriMesh& mesh = support_->scene().mesh;
     support_buffers_ = Flatten(mesh);
+    // Its look: the base colour's uvs (not TEXCOORD_0 as read), COLOR_0 and the material index.
+    support_buffers_.uvs.clear();
+    const std::size_t n = mesh.positions.size();
+    const auto look = [&mesh, n](const char* name, int width, std::vector<float>* to) {
+      const geom::VertexAttribute* a = mesh.FindAttribute(name);
+      if (a != nullptr && a->components == width &&
+          a->values.size() == n * static_cast<std::size_t>(width))
+        *to = a->values;
+    };
+    look(io::kBaseColorUvAttribute, 2, &support_buffers_.uvs);
+    look(io::kColorAttribute, 4, &support_buffers_.colors);
+    look(io::kMaterialAttribute, 1, &support_buffers_.material);
+    materials_.clear();
     if (support_buffers_.normals.size() != support_buffers_.positions.size()) {
       support_buffers_.normals.clear();
       for (const glm::vec3& n : geom::FaceNormals(mesh))
@@ -381,6 +419,7 @@ class IvyLab {
   }
 
   std::shared_ptr<const ivy::IvySupport> support_;
+  std::vector<io::MeshMaterial> materials_;  // a dropped glTF's, for the page's drawing
   double ms_bvh_ = 0;
   FlatMesh support_buffers_;
   std::optional<ivy::IvyRun> run_;  // the last grow, empty before one (or after a failed one)

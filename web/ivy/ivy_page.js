@@ -2,7 +2,8 @@
 // cubes4 grown, builds the panel from the ivy table, keeps the state in location.hash through the
 // ivy hash codec (the same text `niwa ivy grow --url` reads: preset, seed, steps, scene, at=
 // seed points, changed parameters), picks a built-in scene or takes a dropped .glb/.gltf/.obj
-// (Draco decoded here by web/mesh/mesh_file.js), adds a seed point where the surface is clicked,
+// (Draco decoded here by web/mesh/mesh_file.js; a glTF drawn with its own base colour textures,
+// WebP included, web/mesh/mesh_images.js, and factors and vertex colours), adds a seed point where the surface is clicked,
 // replays the growth with the step scrubber (the vertices' birth steps; nothing regrows), and
 // downloads .glb, .json and .lsys. Growth runs in the worker (web/worker/ivy_handler.js).
 // Does not: parse or check states (the core does; its one line is shown beside its field), draw
@@ -14,6 +15,7 @@ import { Frame } from '../gl/frame.js';
 import { ProgressiveLoop } from '../gl/progressive_loop.js';
 import { DEFAULT_SUNS } from '../gl/sun.js';
 import { meshFileBytes } from '../mesh/mesh_file.js';
+import { baseColorImages } from '../mesh/mesh_images.js';
 import { FileDrop } from '../shell/file_drop.js';
 import { ParamPanel } from '../shell/param_panel.js';
 import { StepScrubber } from '../shell/step_scrubber.js';
@@ -27,7 +29,7 @@ const ui = {
   stage: $('stage'), canvas: $('view'), stats: $('stats'), progress: $('progress'), scene: $('scene'),
   sceneHelp: $('scene-help'), tree: $('tree'), treeYears: $('tree-years'), meshFile: $('mesh-file'), preset: $('preset'), seed: $('seed'), steps: $('steps'),
   reset: $('reset'), undo: $('undo'), redo: $('redo'), seeds: $('seeds'), clickSeeds: $('click-seeds'), clearSeeds: $('clear-seeds'),
-  showLeaves: $('show-leaves'), showLeafTexture: $('show-leaf-texture'), showSuckers: $('show-suckers'), showSupport: $('show-support'), showSeeds: $('show-seeds'), showBuds: $('show-buds'),
+  showLeaves: $('show-leaves'), showLeafTexture: $('show-leaf-texture'), showSupportTexture: $('show-support-texture'), showSuckers: $('show-suckers'), showSupport: $('show-support'), showSeeds: $('show-seeds'), showBuds: $('show-buds'),
   resetView: $('reset-view'), copyLink: $('copy-link'), downloadGlb: $('download-glb'), glbSupport: $('glb-support'),
   downloadJson: $('download-json'), downloadLsys: $('download-lsys'), shareStatus: $('share-status'), params: $('params'),
   embed: $('embed'),
@@ -37,8 +39,9 @@ mountStudyNav($('studies'), 'ivy');
 
 // webgl: drawing problems; error: the core's line for the current state; hash: decoding notices;
 // mesh: the dropped mesh (not part of the link); drop: refused files; budget: the page budget's
-// line when it stopped the growth early (docs/budgets.md).
-const notices = new Notices($('notice'), ['webgl', 'error', 'hash', 'mesh', 'drop', 'budget']);
+// line when it stopped the growth early (docs/budgets.md); look: a dropped glTF's base colour image
+// the browser could not decode (its material drawn with its colour).
+const notices = new Notices($('notice'), ['webgl', 'error', 'hash', 'mesh', 'look', 'drop', 'budget']);
 // Errors beside the controls outside the panel (the panel's rows find their own).
 const BASIC_FIELDS = {
   seed: 'seed-error', steps: 'steps-error', at: 'at-error', seed_points: 'at-error', tree: 'tree-error', tree_years: 'tree-error',
@@ -113,7 +116,7 @@ const loop = new ProgressiveLoop({
     setHooks({
       drawnSerial: installedSerial, drawnStep: scrubber.value, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls,
       drawnStems: counts.stems, drawnLeaves: counts.leaves, drawnSuckers: counts.suckers,
-      leafTexture: drawn.leavesTextured ? 'on' : 'off',
+      leafTexture: drawn.leavesTextured ? 'on' : 'off', supportTexture: drawn.supportTextured ? 'on' : 'off',
     });
   },
 });
@@ -286,12 +289,29 @@ worker.on('support', (msg) => {
     frameNext = true;
   }
   worker.recycle({ support: msg.buffers });  // for the worker's next support to fill
+  // A glTF is in metres (its spec): its leaves and tubes keep their size in metres whatever its size, while
+  // the growth's lengths are read from its bounds (core/ivy/ivy_params.h IvyLookPxPerUnit).
+  const leavesInMetres = support.dropped && support.look_px_per_unit === 1000 && support.look_px_per_unit !== support.px_per_unit;
   notices.set('mesh', support.dropped
-    ? `Growing on the dropped mesh ${support.name} (${support.triangles} triangles${support.obstacles ? `, ${support.obstacles} obstacle-only` : ''}, ${Number(support.px_per_unit.toPrecision(3))} px per unit from its size unless Scale is set); a dropped mesh is not part of the link.`
+    ? `Growing on the dropped mesh ${support.name} (${support.triangles} triangles${support.obstacles ? `, ${support.obstacles} obstacle-only` : ''}, ${Number(support.px_per_unit.toPrecision(3))} px per unit from its size unless Scale is set${leavesInMetres ? '; its leaves and tubes in metres, as glTF is: 1 px of their sizes = 1 mm' : ''}); a dropped mesh is not part of the link.`
     : '');
+  setHooks({ supportPxPerUnit: support.px_per_unit, supportLookPxPerUnit: support.look_px_per_unit ?? '' });
   setHooks({ supportName: support.name, supportTriangles: support.triangles, supportDropped: support.dropped,
     supportLoadMs: msg.loadMs === null ? '' : Math.round(msg.loadMs) });
   if (support.dropped) showDropped(support.name);
+  // A dropped glTF's own look: its base colour images (kept from the file) decoded and uploaded.
+  if (renderer && support.dropped && meshImages.id === msg.id && support.materials?.length) {
+    const look = support.materials.map((m) => m.image);
+    setHooks({ supportLook: 'decoding' });
+    renderer.setSupportMaterials(support.materials, meshImages.images, requestFrame).then((r) => {
+      if (!r) return;
+      notices.set('look', r.failed.length ? `${support.name}: ${r.failed.join('; ')}; those materials are drawn with their colour.` : '');
+      setHooks({ supportLook: 'ready', supportTextures: r.textures, supportMaterials: look.length, supportTextureFailures: r.failed.join(' | ') });
+    });
+  } else {
+    notices.set('look', '');
+    setHooks({ supportLook: support.dropped ? 'ready' : '', supportTextures: 0, supportMaterials: support.materials?.length || 0, supportTextureFailures: '' });
+  }
   showSeeds();
   if (msg.id === meshRequest) {  // a dropped mesh: grow on it once it is loaded
     ui.progress.textContent = '';
@@ -378,6 +398,7 @@ worker.on('picked', (msg) => {
 
 let pickRay = null;  // the ray of the last click on the view
 let meshRequest = 0;
+let meshImages = { id: 0, images: new Map() };  // the base colour images of the mesh request `id`
 let meshBefore = null;  // what the page grew on before the last drop: a refused file goes back to it
 
 // ---------------------------------------------------------------- dropped meshes
@@ -396,8 +417,10 @@ async function loadMeshFile(file) {
     seedPoints = [];
     showDropped(file.name);
     showScene();
+    const images = baseColorImages(bytes, file.name);  // copied: the bytes go to the worker
     const request = worker.request('mesh', { name: file.name, bytes: bytes.buffer }, { group: 'mesh', done: ['support'] });
     meshRequest = request.id;
+    meshImages = { id: request.id, images };
     bumpHook('meshDrops');
   } catch (e) {
     ui.progress.textContent = '';
@@ -465,7 +488,7 @@ ui.clearSeeds.addEventListener('click', () => {
   showSeeds();
   scheduleUpdate();
 });
-for (const [input, part] of [[ui.showLeaves, 'leaves'], [ui.showLeafTexture, 'leafTexture'], [ui.showSuckers, 'suckers'], [ui.showSupport, 'support'], [ui.showSeeds, 'seeds'], [ui.showBuds, 'buds']]) {
+for (const [input, part] of [[ui.showLeaves, 'leaves'], [ui.showLeafTexture, 'leafTexture'], [ui.showSupportTexture, 'supportTexture'], [ui.showSuckers, 'suckers'], [ui.showSupport, 'support'], [ui.showSeeds, 'seeds'], [ui.showBuds, 'buds']]) {
   input.addEventListener('change', () => {
     renderer?.setVisible({ [part]: input.checked });
     requestFrame();

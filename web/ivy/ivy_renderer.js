@@ -1,4 +1,6 @@
-// The ivy page's WebGL2 view (shaders/ivy/): the support mesh in stone grey, the ivy's stems,
+// The ivy page's WebGL2 view (shaders/ivy/): the support mesh (in stone grey, or a dropped glTF with
+// its own look: each material's baseColorTexture, WebP included, decoded by the browser, its
+// baseColorFactor and the vertex colours), the ivy's stems,
 // leaves and suckers over it (the leaves textured with the .glb's own leaf texture, alpha-cut to
 // its outline, when the worker has sent it; one flat green otherwise), and the seed points and (optionally) the buds A/D/Z as dots. Positions stay in the scene's units
 // (px for the built-in scenes, metres for most assets); uModel scales the support into a view of
@@ -70,7 +72,12 @@ export class IvyRenderer extends StudyLayer {
     this.parts = {};  // name -> {vao, buffers, count, births}
     this.model = [0, 0, 0, 1];
     this.step = Infinity;
-    this.visible = { support: true, stems: true, leaves: true, suckers: true, seeds: true, buds: false, leafTexture: true };
+    this.visible = { support: true, stems: true, leaves: true, suckers: true, seeds: true, buds: false, leafTexture: true, supportTexture: true };
+    // A dropped glTF's materials ({factor: linear RGBA, image, wrapS, wrapT}) and its base colour
+    // textures by glTF image index (decoded and uploaded by setSupportMaterials).
+    this.supportMaterials = [];
+    this.supportTextures = new Map();
+    this.supportLooks = 0;  // setSupportMaterials calls so far (a newer one drops an older decode)
     this.leafTexture = null;  // the worker's leaf texture (core/ivy/ivy_leaf_texture.h), uploaded
     this.buds = { vao: null, buffers: [], count: 0 };
     this.seeds = { vao: null, buffer: null, count: 0 };
@@ -128,7 +135,8 @@ export class IvyRenderer extends StudyLayer {
     if (!gl.isContextLost()) gl.deleteSync(fence);
   }
 
-  // The support (no birth steps: always drawn), uploaded at once.
+  // The support (no birth steps: always drawn), uploaded at once; a dropped glTF's with its uvs,
+  // vertex colours and material per vertex (its triangles drawn in runs of one material).
   #uploadSupport(b) {
     const gl = this.gl;
     this.progress.abort();
@@ -136,6 +144,7 @@ export class IvyRenderer extends StudyLayer {
     // The worker's buffers (ArrayBuffers or views) read in place: uploaded at once, then handed back.
     const indices = viewOf(Uint32Array, b.indices);
     if (indices.length === 0) return;
+    const has = (name) => Boolean(b[name] && b[name].byteLength > 0);
     const vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
     const buffers = [staticBuffer(gl, viewOf(Float32Array, b.positions)), staticBuffer(gl, viewOf(Float32Array, b.normals))];
@@ -143,10 +152,24 @@ export class IvyRenderer extends StudyLayer {
     floatAttribute(gl, 1, buffers[1], 3);
     gl.disableVertexAttribArray(2);
     gl.vertexAttrib1f(2, 0);
-    gl.disableVertexAttribArray(3);
+    const uvs = has('uvs');
+    if (uvs) {
+      buffers.push(staticBuffer(gl, viewOf(Float32Array, b.uvs)));
+      floatAttribute(gl, 3, buffers.at(-1), 2);
+    } else {
+      gl.disableVertexAttribArray(3);
+    }
+    const colors = has('colors');
+    if (colors) {
+      buffers.push(staticBuffer(gl, viewOf(Float32Array, b.colors)));
+      floatAttribute(gl, 4, buffers.at(-1), 4);
+    } else {
+      gl.disableVertexAttribArray(4);
+    }
     buffers.push(staticBuffer(gl, indices, gl.ELEMENT_ARRAY_BUFFER));
     gl.bindVertexArray(null);
-    this.parts.support = { vao, buffers, count: indices.length, births: null };
+    const runs = has('material') ? materialRuns(indices, viewOf(Float32Array, b.material)) : [{ first: 0, count: indices.length / 3, material: -1 }];
+    this.parts.support = { vao, buffers, count: indices.length, births: null, uvs, colors, runs };
   }
 
   #drop(name) {
@@ -158,10 +181,77 @@ export class IvyRenderer extends StudyLayer {
   }
 
   // The support's triangles and bounds ({min, max} in scene units, or null for the free scene):
-  // sets the scale that fits it in the view.
+  // sets the scale that fits it in the view. Its materials go until setSupportMaterials.
   setSupport(buffers, bounds) {
     this.#uploadSupport(buffers);
     this.#fit(bounds);
+    this.#dropSupportLook();
+  }
+
+  // A dropped glTF's look: `materials` as the worker's support description gives them ({name,
+  // base_color: linear RGBA, image: glTF image index or -1, wrap_s, wrap_t}) and `images` (a Map
+  // from a glTF image index to its encoded bytes as a Blob: PNG, JPEG or WebP, web/mesh/
+  // mesh_images.js). Each image is decoded by the browser (createImageBitmap) and uploaded with
+  // mipmaps; a frame is asked for (`request`) once they are in place. Resolves to {textures,
+  // failed: [lines]} (a material whose image fails keeps its factor), or null when a newer support
+  // or look replaced this one.
+  async setSupportMaterials(materials, images, request = () => {}) {
+    const gl = this.gl;
+    this.#dropSupportLook();
+    const serial = ++this.supportLooks;
+    this.supportMaterials = (materials || []).map((m) => ({
+      factor: Array.isArray(m.base_color) && m.base_color.length === 4 ? m.base_color.map(Number) : [1, 1, 1, 1],
+      image: Number.isInteger(m.image) ? m.image : -1,
+      wrapS: wrapOf(gl, m.wrap_s), wrapT: wrapOf(gl, m.wrap_t),
+    }));
+    const wanted = [...new Set(this.supportMaterials.map((m) => m.image).filter((i) => i >= 0))];
+    const failed = [];
+    const max = gl.getParameter(gl.MAX_TEXTURE_SIZE);
+    for (const index of wanted) {
+      const blob = images?.get(index);
+      if (!blob) {
+        failed.push(`image ${index}: its bytes are not in the file (an external uri)`);
+        continue;
+      }
+      let bitmap;
+      try {
+        bitmap = await createImageBitmap(blob, { premultiplyAlpha: 'none', colorSpaceConversion: 'none' });
+        if (bitmap.width > max || bitmap.height > max) {  // over this GPU's limit: scaled to fit
+          const k = max / Math.max(bitmap.width, bitmap.height);
+          const fitted = await createImageBitmap(bitmap, { resizeWidth: Math.max(1, Math.floor(bitmap.width * k)), resizeHeight: Math.max(1, Math.floor(bitmap.height * k)), premultiplyAlpha: 'none', colorSpaceConversion: 'none' });
+          bitmap.close();
+          bitmap = fitted;
+        }
+      } catch (e) {
+        failed.push(`image ${index} (${blob.type || 'unknown type'}): the browser cannot decode it`);
+        continue;
+      }
+      if (serial !== this.supportLooks || gl.isContextLost()) {
+        bitmap.close();
+        return null;
+      }
+      const texture = gl.createTexture();
+      gl.bindTexture(gl.TEXTURE_2D, texture);
+      gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, false);  // row 0 = v 0, glTF's origin
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, bitmap);
+      gl.generateMipmap(gl.TEXTURE_2D);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+      gl.bindTexture(gl.TEXTURE_2D, null);
+      bitmap.close();
+      this.supportTextures.set(index, texture);
+      request();
+    }
+    if (serial !== this.supportLooks) return null;
+    request();
+    return { textures: this.supportTextures.size, failed };
+  }
+
+  #dropSupportLook() {
+    ++this.supportLooks;  // a decode on its way is dropped
+    for (const t of this.supportTextures.values()) this.gl.deleteTexture(t);
+    this.supportTextures = new Map();
+    this.supportMaterials = [];
   }
 
   #fit(bounds) {
@@ -343,51 +433,71 @@ export class IvyRenderer extends StudyLayer {
   // The ivy's steps of a frame (web/gl/progressive_frame.js) under `view` ({viewProjection, eye,
   // light: the unit direction towards the sun, scale: the drawing buffer's}): the support and the
   // ivy's parts, then the markers. Returns {steps, totals} (leavesTextured: the leaves drawn with
-  // the leaf texture). Drawn by its Frame (web/gl/frame.js).
+  // the leaf texture; supportTextured: the support with a base colour texture of its own). Drawn
+  // by its Frame (web/gl/frame.js).
   layerSteps(view) {
     const gl = this.gl;
     const { viewProjection: vp, eye, light } = view;
     const step = Number.isFinite(this.step) ? this.step : 1e9;
     const p = this.programs.ivy;
-    const totals = { triangles: 0, drawCalls: 0, primitives: 0, leavesTextured: false };
+    const totals = { triangles: 0, drawCalls: 0, primitives: 0, leavesTextured: false, supportTextured: false };
     const steps = [];
+    const WHITE = [1, 1, 1], NONE = [0, 0, 0], OPAQUE = [1, 1, 1, 1];
     for (const name of ['support', 'stems', 'suckers', 'leaves']) {
       const part = this.parts[name];
       if (!part || !this.visible[name]) continue;
-      // Leaves with uvs and the worker's texture: the .glb's texels, cut at its outline.
-      const textured = Boolean(name === 'leaves' && part.uvs && this.leafTexture && this.visible.leafTexture);
-      if (textured) totals.leavesTextured = true;
-      steps.push({
-        primitives: part.count / 3,
-        setup: () => {
-          gl.useProgram(p.program);
-          gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, vp);
-          gl.uniform4fv(p.uniforms.uModel, this.model);
-          gl.uniform1f(p.uniforms.uStep, step);
-          gl.uniform3fv(p.uniforms.uLightDirection, light);
-          gl.uniform3fv(p.uniforms.uCameraPosition, eye);
-          gl.disable(gl.CULL_FACE);
-          gl.uniform3fv(p.uniforms.uColor, COLORS[name].color);
-          gl.uniform3fv(p.uniforms.uVariation, COLORS[name].variation);
-          gl.uniform1f(p.uniforms.uUseTexture, textured ? 1 : 0);
-          gl.activeTexture(gl.TEXTURE0);
-          gl.bindTexture(gl.TEXTURE_2D, textured ? this.leafTexture : null);
-          gl.uniform1i(p.uniforms.uLeafMap, 0);
-          if (name === 'support') {
-            gl.enable(gl.POLYGON_OFFSET_FILL);  // ivy lying on a face wins the depth test
-            gl.polygonOffset(1, 1);
-          }
-          gl.bindVertexArray(part.vao);
-        },
-        draw: (first, n) => gl.drawElements(gl.TRIANGLES, 3 * n, gl.UNSIGNED_INT, 12 * first),
-        teardown: () => {
-          gl.disable(gl.POLYGON_OFFSET_FILL);
-          gl.bindTexture(gl.TEXTURE_2D, null);
-        },
-      });
+      // One draw per run of one material (the support of a dropped glTF), else one for the part.
+      const runs = part.runs || [{ first: 0, count: part.count / 3, material: -1 }];
+      for (const run of runs) {
+        const material = name === 'support' ? this.supportMaterials[run.material] : undefined;
+        // Leaves with uvs and the worker's texture: the .glb's texels, cut at its outline; a
+        // dropped glTF's support with its material's base colour texture once decoded.
+        const map = name === 'leaves' ? (part.uvs && this.visible.leafTexture ? this.leafTexture : null)
+          : material && part.uvs && this.visible.supportTexture ? this.supportTextures.get(material.image) ?? null : null;
+        if (map && name === 'leaves') totals.leavesTextured = true;
+        if (map && name === 'support') totals.supportTextured = true;
+        // A material's factor and colours replace the stone grey; its texture multiplies them.
+        const color = map || material ? WHITE : COLORS[name].color;
+        const variation = map || material ? NONE : COLORS[name].variation;
+        steps.push({
+          primitives: run.count,
+          setup: () => {
+            gl.useProgram(p.program);
+            gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, vp);
+            gl.uniform4fv(p.uniforms.uModel, this.model);
+            gl.uniform1f(p.uniforms.uStep, step);
+            gl.uniform3fv(p.uniforms.uLightDirection, light);
+            gl.uniform3fv(p.uniforms.uCameraPosition, eye);
+            gl.disable(gl.CULL_FACE);
+            gl.uniform3fv(p.uniforms.uColor, color);
+            gl.uniform3fv(p.uniforms.uVariation, variation);
+            gl.uniform4fv(p.uniforms.uFactor, material ? material.factor : OPAQUE);
+            gl.uniform1f(p.uniforms.uUseTexture, map ? 1 : 0);
+            gl.uniform1f(p.uniforms.uAlphaCut, name === 'leaves' ? 0.5 : 0);
+            gl.activeTexture(gl.TEXTURE0);
+            gl.bindTexture(gl.TEXTURE_2D, map);
+            if (map && material) {  // the material's sampler
+              gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, material.wrapS);
+              gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, material.wrapT);
+            }
+            gl.uniform1i(p.uniforms.uMap, 0);
+            if (!part.colors) gl.vertexAttrib4f(4, 1, 1, 1, 1);  // no COLOR_0: white (a constant, not VAO state)
+            if (name === 'support') {
+              gl.enable(gl.POLYGON_OFFSET_FILL);  // ivy lying on a face wins the depth test
+              gl.polygonOffset(1, 1);
+            }
+            gl.bindVertexArray(part.vao);
+          },
+          draw: (first, n) => gl.drawElements(gl.TRIANGLES, 3 * n, gl.UNSIGNED_INT, 12 * (run.first + first)),
+          teardown: () => {
+            gl.disable(gl.POLYGON_OFFSET_FILL);
+            gl.bindTexture(gl.TEXTURE_2D, null);
+          },
+        });
+        ++totals.drawCalls;
+      }
       totals.triangles += part.count / 3;
       totals.primitives += part.count / 3;
-      ++totals.drawCalls;
     }
     const markers = [];
     if (this.buds.count && this.visible.buds) markers.push(this.buds);
@@ -431,9 +541,30 @@ export class IvyRenderer extends StudyLayer {
     }
     if (this.leafTexture) gl.deleteTexture(this.leafTexture);
     this.leafTexture = null;
+    this.#dropSupportLook();
     for (const p of Object.values(this.programs || {})) gl.deleteProgram(p.program);
     this.programs = null;
   }
+}
+
+// The runs of consecutive triangles of one material ({first, count} in triangles, material: the
+// index at each triangle's first vertex, -1 none): a glTF's primitives are read one after another,
+// so a file has about as many runs as primitives.
+export function materialRuns(indices, material) {
+  const runs = [];
+  const triangles = Math.floor(indices.length / 3);
+  for (let t = 0; t < triangles; ++t) {
+    const m = Number.isFinite(material[indices[3 * t]]) ? material[indices[3 * t]] : -1;
+    const last = runs.at(-1);
+    if (last && last.material === m) ++last.count;
+    else runs.push({ first: t, count: 1, material: m });
+  }
+  return runs;
+}
+
+// A glTF sampler's wrap mode (§5.26) as GL's; glTF's default REPEAT.
+function wrapOf(gl, mode) {
+  return mode === gl.CLAMP_TO_EDGE || mode === gl.MIRRORED_REPEAT ? mode : gl.REPEAT;
 }
 
 function cross(a, b) {

@@ -62,7 +62,7 @@ export function dracoPrimitiveCount(json) {
   return n;
 }
 
-function dataUriBytes(uri) {
+export function dataUriBytes(uri) {
   const comma = uri.indexOf(',');
   if (!uri.startsWith('data:') || comma < 0 || !uri.slice(0, comma).endsWith(';base64')) return null;
   const text = atob(uri.slice(comma + 1));
