@@ -276,6 +276,62 @@ bool AnyCellWithoutLowerNeighbour(int width, int height, const std::vector<int>&
   return false;
 }
 
+std::vector<std::uint32_t> CellsWithoutLowerNeighbour(int width, int height,
+                                                      const std::vector<int>& band,
+                                                      const std::vector<double>& h) {
+  std::vector<std::uint32_t> out;
+  for (int j = 1; j + 1 < height; ++j) {
+    for (int i = 1; i + 1 < width; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * width + i;
+      if (band[k] < 0) continue;
+      bool lower = false;
+      for (int q = 0; q < 8 && !lower; ++q)
+        lower = h[k + static_cast<std::ptrdiff_t>(kDj[q]) * width + kDi[q]] < h[k];
+      if (!lower) out.push_back(static_cast<std::uint32_t>(k));
+    }
+  }
+  return out;
+}
+
+bool AnyOnASlotIsland(int width, int height, const Terrain& t, const std::vector<int>& band,
+                      const std::vector<std::uint32_t>& cells_in) {
+  if (cells_in.empty() || t.contours.empty()) return false;
+  const TreeOrder tree(t);
+  // seen: 0 not yet, 1 in the current search, 2 joined to an anchored cell within its band.
+  std::vector<char> seen(static_cast<std::size_t>(width) * height, 0);
+  std::vector<std::uint32_t> queue;
+  for (const std::uint32_t start : cells_in) {
+    if (band[start] < 0 || seen[start] == 2) continue;
+    const int b = band[start];
+    queue.assign(1, start);
+    seen[start] = 1;
+    bool anchored = false;
+    for (std::size_t r = 0; r < queue.size() && !anchored; ++r) {
+      const std::size_t k = queue[r];
+      const int i = static_cast<int>(k % static_cast<std::size_t>(width));
+      const int j = static_cast<int>(k / static_cast<std::size_t>(width));
+      if (Anchored(width, height, band, tree, i, j)) {
+        anchored = true;
+        break;
+      }
+      // Not anchored, so not on the grid's edge: its 8 neighbours exist.
+      for (int q = 0; q < 8; ++q) {
+        const std::size_t n = k + static_cast<std::ptrdiff_t>(kDj[q]) * width + kDi[q];
+        if (band[n] != b || seen[n] == 1) continue;
+        if (seen[n] == 2) {
+          anchored = true;
+          break;
+        }
+        seen[n] = 1;
+        queue.push_back(static_cast<std::uint32_t>(n));
+      }
+    }
+    if (!anchored) return true;
+    for (const std::uint32_t k : queue) seen[k] = 2;
+  }
+  return false;
+}
+
 std::size_t FillWithinBands(int width, int height, const std::vector<int>& band,
                             const std::vector<double>& top, std::vector<double>* h) {
   const std::size_t cells = static_cast<std::size_t>(width) * height;
@@ -283,45 +339,64 @@ std::size_t FillWithinBands(int width, int height, const std::vector<int>& band,
   const std::vector<double>& h0 = *h;
   // 0. If every cell off the outlets has a strictly lower neighbour, every one has a strictly
   // descending path to an outlet and nothing is raised: one raster scan.
-  const bool any_minimum = AnyCellWithoutLowerNeighbour(width, height, band, h0);
-  if (!any_minimum) return 0;
-  // 1. The cells with a strictly descending 8-path to an outlet keep W = h (the path's maximum is
-  // their own height): a breadth-first search up from the outlets, no heap. On a surface without
-  // depressions that is every cell, and the fill ends here.
-  std::vector<char> drains(cells, 0);
-  std::vector<std::uint32_t> fifo;
-  fifo.reserve(cells);
-  for (int j = 0; j < height; ++j)
-    for (int i = 0; i < width; ++i)
-      if (IsOutlet(width, height, band, i, j)) {
-        const std::size_t k = static_cast<std::size_t>(j) * width + i;
-        drains[k] = 1;
-        fifo.push_back(static_cast<std::uint32_t>(k));
+  const std::vector<std::uint32_t> minima = CellsWithoutLowerNeighbour(width, height, band, h0);
+  if (minima.empty()) return 0;
+  // 1. The trapped cells, those without a strictly descending 8-path to an outlet (the others
+  // keep W = h: the path's maximum is their own height): a cell off the outlets is trapped iff
+  // every strictly lower neighbour is (a cell without one is). Found upwards from the minima in
+  // the order of height (a binary heap over (h, cell index)): when a cell is popped every lower
+  // neighbour has been, so each candidate is decided once. Depressions are small, and so is the
+  // work (the whole grid is no longer searched from the outlets).
+  std::vector<char> trapped(cells, 0), queued(cells, 0);
+  std::vector<std::uint32_t> trapped_cells;
+  using Entry = std::pair<double, std::uint32_t>;  // (height, cell index): a total order
+  {
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> rising;
+    for (const std::uint32_t k : minima) {
+      queued[k] = 1;
+      rising.push({h0[k], k});
+    }
+    while (!rising.empty()) {
+      const std::size_t k = rising.top().second;
+      rising.pop();
+      const int i = static_cast<int>(k % static_cast<std::size_t>(width));
+      const int j = static_cast<int>(k / static_cast<std::size_t>(width));
+      if (IsOutlet(width, height, band, i, j)) continue;
+      bool trap = true;
+      for (int q = 0; q < 8 && trap; ++q) {
+        const std::size_t n = k + static_cast<std::ptrdiff_t>(kDj[q]) * width + kDi[q];
+        if (h0[n] < h0[k] && !trapped[n]) trap = false;
       }
-  FloodFrom(width, height, &fifo, &drains,
-            [&](std::size_t k, std::size_t n) { return h0[n] > h0[k]; });
-  if (fifo.size() == cells) return 0;
-  fifo = std::vector<std::uint32_t>();
-  // 2. The rest (in or above a depression): the flood, seeded by the draining cells next to them.
-  // Every walk from an outlet into the rest enters it through such a cell, whose W = h is final,
-  // so the result is the whole grid's flood (the Planchon-Darboux twin checks it).
+      if (!trap) continue;
+      trapped[k] = 1;
+      trapped_cells.push_back(static_cast<std::uint32_t>(k));
+      for (int q = 0; q < 8; ++q) {
+        const std::size_t n = k + static_cast<std::ptrdiff_t>(kDj[q]) * width + kDi[q];
+        if (queued[n] || !(h0[n] > h0[k])) continue;
+        queued[n] = 1;
+        rising.push({h0[n], static_cast<std::uint32_t>(n)});
+      }
+    }
+  }
+  if (trapped_cells.empty()) return 0;
+  queued = std::vector<char>();
+  // 2. The trapped cells (in or above a depression): the flood, seeded by the draining cells next
+  // to them. Every walk from an outlet into them enters through such a cell, whose W = h is
+  // final, so the result is the whole grid's flood (the Planchon-Darboux twin checks it). The
+  // pops are one total order, so the order of the seeds' pushes does not matter.
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> w(h0);
-  using Entry = std::pair<double, std::uint32_t>;  // (W, cell index): the heap's total order
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-  for (std::size_t k = 0; k < cells; ++k)
-    if (!drains[k]) w[k] = inf;
-  for (int j = 0; j < height; ++j) {
-    for (int i = 0; i < width; ++i) {
-      const std::size_t k = static_cast<std::size_t>(j) * width + i;
-      if (!drains[k]) continue;
+  for (const std::uint32_t k : trapped_cells) w[k] = inf;
+  {
+    std::vector<char> seeded(cells, 0);
+    for (const std::uint32_t k : trapped_cells) {
+      // A trapped cell is off the outlets, so not on the grid's edge: its 8 neighbours exist.
       for (int q = 0; q < 8; ++q) {
-        std::size_t n;
-        if (!Neighbour(width, height, i, j, q, &n)) continue;
-        if (!drains[n]) {
-          open.push({w[k], static_cast<std::uint32_t>(k)});
-          break;
-        }
+        const std::size_t n = k + static_cast<std::ptrdiff_t>(kDj[q]) * width + kDi[q];
+        if (trapped[n] || seeded[n]) continue;
+        seeded[n] = 1;
+        open.push({w[n], static_cast<std::uint32_t>(n)});
       }
     }
   }
@@ -335,7 +410,7 @@ std::size_t FillWithinBands(int width, int height, const std::vector<int>& band,
     for (int q = 0; q < 8; ++q) {
       std::size_t n;
       if (!Neighbour(width, height, i, j, q, &n)) continue;
-      if (drains[n]) continue;  // outlets and draining cells keep W = h
+      if (!trapped[n]) continue;  // outlets and draining cells keep W = h
       const double offer = Offer(h0, band, top, n, e.first);
       if (offer < w[n]) {
         w[n] = offer;

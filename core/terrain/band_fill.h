@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "terrain/contour.h"
@@ -43,6 +44,17 @@ std::size_t AssignSubCellSlotsBySweeps(int width, int height, const Terrain& ter
 // child), so AssignSubCellSlots would change nothing: heightfield.cpp skips it then.
 bool AnyCellWithoutLowerNeighbour(int width, int height, const std::vector<int>& band,
                                   const std::vector<double>& h);
+// Those cells (band ≥ 0, not on the grid's edge, no strictly lower neighbour), in raster order.
+std::vector<std::uint32_t> CellsWithoutLowerNeighbour(int width, int height,
+                                                      const std::vector<int>& band,
+                                                      const std::vector<double>& h);
+// Whether one of `cells` lies in a sub-cell slot island of the band map (a component
+// AssignSubCellSlots would relabel in its first pass). Every such island holds a cell without a
+// lower neighbour (as above), so with `cells` = CellsWithoutLowerNeighbour false means
+// AssignSubCellSlots would change nothing. Searches each cell's band component only until it
+// meets an anchored cell (a few rows of cells, not the whole map).
+bool AnyOnASlotIsland(int width, int height, const Terrain& terrain, const std::vector<int>& band,
+                      const std::vector<std::uint32_t>& cells);
 
 // The filled surface W on a width × height grid (row-major, 8-neighbour) is the smallest one with
 // W ≥ h and, for every cell c that is not an outlet,
@@ -58,14 +70,15 @@ bool AnyCellWithoutLowerNeighbour(int width, int height, const std::vector<int>&
 // BandTops) keeps its h. Returns the number of cells raised (W > h).
 //
 // First a raster scan: if every cell off the outlets has a strictly lower neighbour, nothing is
-// raised and the fill ends (the usual case, O(cells)). Else a breadth-first search up from the
-// outlets marks the cells with a strictly descending path to one (they keep W = h; when that is
-// every cell, e.g. minima on flats that drain, nothing else runs). Then a priority-flood
-// over the rest with a binary heap over (W, cell index), seeded by the marked cells next to them: a
-// popped cell offers W' = max(h[n], min(top, W)) to each unmarked neighbour, which is pushed again
-// whenever its W drops (the cap makes W' < W possible, so this is the label-correcting form of the
-// flood; every pushed (W, index) pair is distinct, so the pops are one total order, the same on
-// every platform).
+// raised and the fill ends (the usual case, O(cells)). Else the trapped cells, those without a
+// strictly descending path to an outlet (the others keep W = h), found upwards from the cells
+// without a lower neighbour in the order of height: a cell off the outlets is trapped iff all its
+// strictly lower neighbours are (O(trapped cells · log), not a search of the whole grid). Then a
+// priority-flood over the trapped cells with a binary heap over (W, cell index), seeded by the
+// draining cells next to them: a popped cell offers W' = max(h[n], min(top, W)) to each trapped
+// neighbour, which is pushed again whenever its W drops (the cap makes W' < W possible, so this is
+// the label-correcting form of the flood; every pushed (W, index) pair is distinct, so the pops
+// are one total order, the same on every platform).
 std::size_t FillWithinBands(int width, int height, const std::vector<int>& band,
                             const std::vector<double>& top, std::vector<double>* h);
 // The same by Planchon & Darboux's iteration (W = max(h, top) off the outlets, then raster sweeps

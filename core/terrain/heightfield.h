@@ -30,7 +30,8 @@ struct Heightfield {
 
 // The heightfield with `res` cells along the longer side of the lowest contour's box (plus one
 // cell of margin each side); cells outside it get the lowest elevation.
-// Distances through a SegmentGrid per contour (segment_grid.h): O(cells), not O(cells·vertices).
+// Distances stamped by each segment into its slab and vertex wedges, the far cells through a
+// SegmentGrid per contour (segment_grid.h): O(cells), not O(cells·vertices).
 // fill_depressions: AssignSubCellSlots on the painted band map, then FillHeightfieldWithinBands
 // (band_fill.h) on the band heights; false gives the band distance-ratio surface alone on the
 // painted map.

@@ -14,7 +14,7 @@ void SegmentGrid::AddRing(const Ring& ring) {
   }
 }
 
-void SegmentGrid::Build() {
+void SegmentGrid::Build(double min_bucket) {
   if (a_.empty()) return;
   double x1 = a_[0].x, y1 = a_[0].y;
   x0_ = x1;
@@ -32,7 +32,8 @@ void SegmentGrid::Build() {
   for (std::size_t s = 0; s < a_.size(); ++s)
     perimeter += std::hypot(b_[s].x - a_[s].x, b_[s].y - a_[s].y);
   const double n = static_cast<double>(a_.size());
-  cell_ = std::max({2 * perimeter / n, std::sqrt(w * h / (16 * n)), std::max(w, h) / 1024.0});
+  cell_ = std::max(
+      {2 * perimeter / n, std::sqrt(w * h / (16 * n)), std::max(w, h) / 1024.0, min_bucket});
   nx_ = std::max(1, static_cast<int>(std::ceil(w / cell_)));
   ny_ = std::max(1, static_cast<int>(std::ceil(h / cell_)));
   std::vector<uint32_t> count(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
@@ -74,7 +75,15 @@ double SegmentGrid::Distance(const Vec2& p, int* hint) const {
   const auto row = [this](double y) {
     return std::clamp(static_cast<int>(std::floor((y - y0_) / cell_)), 0, ny_ - 1);
   };
-  const auto scan = [&](std::size_t c) {
+  // A bucket is skipped when its box lies farther than the best so far (with a hair for the
+  // rounding): the nearest point q of a segment lies in a bucket that lists it and is no farther
+  // from p than q, so the least distance is still found.
+  const auto scan = [&](int i, int j) {
+    const double bx0 = x0_ + i * cell_, by0 = y0_ + j * cell_;
+    const double gx = std::max({0.0, bx0 - p.x, p.x - (bx0 + cell_)});
+    const double gy = std::max({0.0, by0 - p.y, p.y - (by0 + cell_)});
+    if (gx * gx + gy * gy > best * (1 + 1e-9) + 1e-12 * cell_ * cell_) return;
+    const std::size_t c = static_cast<std::size_t>(j) * nx_ + i;
     for (uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
       const double d2 = Dist2(p, items_[k]);
       if (d2 < best) {
@@ -89,11 +98,10 @@ double SegmentGrid::Distance(const Vec2& p, int* hint) const {
     // The ring r only: its top and bottom rows whole, the other rows' two ends.
     for (int j = std::max(j0, 0); j <= std::min(j1, ny_ - 1); ++j) {
       if (j == j0 || j == j1) {
-        for (int i = std::max(i0, 0); i <= std::min(i1, nx_ - 1); ++i)
-          scan(static_cast<std::size_t>(j) * nx_ + i);
+        for (int i = std::max(i0, 0); i <= std::min(i1, nx_ - 1); ++i) scan(i, j);
       } else {
-        if (i0 >= 0) scan(static_cast<std::size_t>(j) * nx_ + i0);
-        if (i1 < nx_ && i1 != i0) scan(static_cast<std::size_t>(j) * nx_ + i1);
+        if (i0 >= 0) scan(i0, j);
+        if (i1 < nx_ && i1 != i0) scan(i1, j);
       }
     }
     // Every segment not yet seen lies wholly beyond one of the visited square's inner sides (less

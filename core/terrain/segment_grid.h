@@ -30,7 +30,9 @@ class SegmentGrid {
   SegmentGrid() = default;
   // Adds every edge of the ring (closing edge included); call Build after the last ring.
   void AddRing(const Ring& ring);
-  void Build();
+  // min_bucket: the least bucket side (m). Queries far from every segment (the heightfield's, at
+  // d and beyond) visit fewer buckets when they are about that distance wide.
+  void Build(double min_bucket = 0);
   bool empty() const { return a_.empty(); }
   // min over segments of SegmentDistance(p, a, b); 1e300 when empty. `hint` (in/out, may be null)
   // is a segment index to start from (the last answer), which only changes the speed.
