@@ -125,7 +125,6 @@ Status TreeRun::BuildMesh() {
                     "lower " + state_.limits.years_name + ", N_high or B_l");
   if (!fits.ok()) {
     mesh_ = TreeMesh{};
-    occlusion_.reset();
     has_mesh_ = true;
     return fits;
   }
@@ -136,13 +135,7 @@ Status TreeRun::BuildMesh() {
 
 void TreeRun::BuildBareMesh() {
   mesh_ = BuildTreeMesh(tree(), LookOptions());
-  occlusion_.reset();
   has_mesh_ = true;
-}
-
-const CrownOcclusion& TreeRun::occlusion() {
-  if (!occlusion_) occlusion_ = ComputeCrownOcclusion(mesh_);
-  return *occlusion_;
 }
 
 void TreeRun::BuildSkin() {
@@ -185,7 +178,6 @@ Result<run::StageMask> TreeRun::Update(const TreeState& next) {
     grower_ = std::make_unique<Grower>(state_);
     has_mesh_ = false;
     mesh_ = TreeMesh{};
-    occlusion_.reset();
     sway_model_ = SwayModel{};
     skin_ = TreeSkin{};
     return mask;
