@@ -260,25 +260,10 @@ std::size_t AssignSubCellSlotsBySweeps(int width, int height, const Terrain& t,
   }
 }
 
-bool AnyCellWithoutLowerNeighbour(int width, int height, const std::vector<int>& band,
-                                  const std::vector<double>& h) {
-  // Off the outlets all cells are inside the grid's edge, so the neighbours are fixed offsets.
-  for (int j = 1; j + 1 < height; ++j) {
-    for (int i = 1; i + 1 < width; ++i) {
-      const std::size_t k = static_cast<std::size_t>(j) * width + i;
-      if (band[k] < 0) continue;
-      bool lower = false;
-      for (int q = 0; q < 8 && !lower; ++q)
-        lower = h[k + static_cast<std::ptrdiff_t>(kDj[q]) * width + kDi[q]] < h[k];
-      if (!lower) return true;
-    }
-  }
-  return false;
-}
-
 std::vector<std::uint32_t> CellsWithoutLowerNeighbour(int width, int height,
                                                       const std::vector<int>& band,
                                                       const std::vector<double>& h) {
+  // Off the outlets all cells are inside the grid's edge, so the neighbours are fixed offsets.
   std::vector<std::uint32_t> out;
   for (int j = 1; j + 1 < height; ++j) {
     for (int i = 1; i + 1 < width; ++i) {

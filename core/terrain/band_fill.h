@@ -37,14 +37,11 @@ std::size_t AssignSubCellSlots(int width, int height, const Terrain& terrain,
 std::size_t AssignSubCellSlotsBySweeps(int width, int height, const Terrain& terrain,
                                        std::vector<int>* band);
 
-// Whether some cell off the outlets (band ≥ 0, not on the grid's edge) has no strictly lower
-// neighbour: the fill's first scan. False means nothing can be raised, and also that the band
+// The cells off the outlets (band ≥ 0, not on the grid's edge) with no strictly lower neighbour,
+// in raster order: the fill's first scan. None means nothing can be raised, and also that the band
 // map has no sub-cell slot island (an island's lowest cell has no lower neighbour: its band's
 // heights are at most its top, which is the child's elevation, the least height inside the
 // child), so AssignSubCellSlots would change nothing: heightfield.cpp skips it then.
-bool AnyCellWithoutLowerNeighbour(int width, int height, const std::vector<int>& band,
-                                  const std::vector<double>& h);
-// Those cells (band ≥ 0, not on the grid's edge, no strictly lower neighbour), in raster order.
 std::vector<std::uint32_t> CellsWithoutLowerNeighbour(int width, int height,
                                                       const std::vector<int>& band,
                                                       const std::vector<double>& h);
