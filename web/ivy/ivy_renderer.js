@@ -152,20 +152,18 @@ export class IvyRenderer extends StudyLayer {
     floatAttribute(gl, 1, buffers[1], 3);
     gl.disableVertexAttribArray(2);
     gl.vertexAttrib1f(2, 0);
-    const uvs = has('uvs');
-    if (uvs) {
-      buffers.push(staticBuffer(gl, viewOf(Float32Array, b.uvs)));
-      floatAttribute(gl, 3, buffers.at(-1), 2);
-    } else {
-      gl.disableVertexAttribArray(3);
-    }
-    const colors = has('colors');
-    if (colors) {
-      buffers.push(staticBuffer(gl, viewOf(Float32Array, b.colors)));
-      floatAttribute(gl, 4, buffers.at(-1), 4);
-    } else {
-      gl.disableVertexAttribArray(4);
-    }
+    // An attribute the file may lack: its buffer when given, else the location switched off.
+    const optional = (name, location, size) => {
+      if (!has(name)) {
+        gl.disableVertexAttribArray(location);
+        return false;
+      }
+      buffers.push(staticBuffer(gl, viewOf(Float32Array, b[name])));
+      floatAttribute(gl, location, buffers.at(-1), size);
+      return true;
+    };
+    const uvs = optional('uvs', 3, 2);
+    const colors = optional('colors', 4, 4);
     buffers.push(staticBuffer(gl, indices, gl.ELEMENT_ARRAY_BUFFER));
     gl.bindVertexArray(null);
     const runs = has('material') ? materialRuns(indices, viewOf(Float32Array, b.material)) : [{ first: 0, count: indices.length / 3, material: -1 }];
