@@ -8,6 +8,12 @@
 // click's effect waits for at most the frame being drawn. The time from a frame's fence to its
 // signal is its latency (`gpuMs`, measured at animation-frame granularity), which a
 // FrameGovernor (frame_governor.js) turns into a cheaper frame while things move.
+// Chromium updates a sync's status only when a query finds control has been back in the event loop
+// since the last one, so a status read once per animation frame lags a whole animation frame (on
+// SwiftShader they are 100-150 ms apart while the compositor draws): while a frame is wanted and
+// the GPU is busy, the fence is also read every few milliseconds between animation frames, so the
+// wanted frame is drawn at the first animation frame after the fence signals (issue 29: the moss
+// day scrubber's answer).
 // A request marked urgent (a discrete action such as Still: its frame must show now) is drawn at
 // the next animation frame even while the last frame is still on the GPU.
 // Does not: run a steady loop, know what is drawn, or choose the frame's quality (the governor
@@ -26,6 +32,7 @@ export class FrameLoop {
     this.ticking = false;    // an animation frame callback is pending
     this.fence = null;       // the last frame's fence, until it signals
     this.fenceAt = 0;
+    this.watching = 0;       // the timer reading the fence between animation frames
     this.stats = { drawn: 0, skippedBusy: 0, gpuMs: 0 };
   }
 
@@ -37,7 +44,21 @@ export class FrameLoop {
   request(urgent = false) {
     this.requested = true;
     this.urgent ||= urgent;
+    this.#watch();
     this.#tick();
+  }
+
+  // Reads the fence every 4 ms while a frame is wanted and the last one is on the GPU (the status
+  // the next animation frame reads is then at most that old).
+  #watch() {
+    if (this.watching || !this.fence || !this.requested) return;
+    const read = () => {
+      this.watching = 0;
+      const gl = this.gl;
+      if (!this.fence || !this.requested || gl.isContextLost()) return;
+      if (gl.getSyncParameter(this.fence, gl.SYNC_STATUS) !== gl.SIGNALED) this.watching = setTimeout(read, 4);
+    };
+    this.watching = setTimeout(read, 0);
   }
 
   // True while the last frame drawn has not finished on the GPU.
@@ -67,6 +88,7 @@ export class FrameLoop {
         this.fence = null;
       } else {
         if (this.requested) this.stats.skippedBusy += 1;
+        this.#watch();
         this.#tick();  // poll again next frame (the last frame still being drawn)
         return;
       }

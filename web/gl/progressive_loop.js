@@ -41,11 +41,13 @@ export class ProgressiveLoop {
     return true;
   }
 
-  // Something on screen changed: draw it (when there is a renderer).
-  request() {
+  // Something on screen changed: draw it (when there is a renderer). urgent: a discrete step the
+  // user waits to see (a day picked on a scrubber), drawn at the next animation frame even while
+  // the last frame is on the GPU (FrameLoop; the browser's own frame pacing still bounds the queue).
+  request(urgent = false) {
     if (!this.renderer()) return;
     this.dirty = true;
-    this.frames.request();
+    this.frames.request(urgent);
   }
 
   // The camera moved: the governor may lower the quality while it moves.
