@@ -7,7 +7,8 @@
 // as stored: sRGB-encoded, display values): the .glb's leaf texture (core/ivy/ivy_leaf_texture.h)
 // on the leaves, or a dropped glTF's baseColorTexture on the support. uAlphaCut: texels with
 // alpha under it are discarded (0.5 on the leaves: the blade's outline; 0 on a support, drawn
-// opaque).
+// opaque). Values over 0.75 roll off smoothly towards 1 (a shoulder with slope 1 where it starts),
+// so a white support keeps its shading on the lit side instead of clipping to one flat white.
 precision highp float;
 
 in vec3 vNormal;
@@ -25,6 +26,11 @@ uniform float uUseTexture;
 uniform float uAlphaCut;
 
 out vec4 outColor;
+
+vec3 shoulder(vec3 c) {
+  vec3 over = max(c - 0.75, 0.0);
+  return min(c, vec3(0.75)) + 0.25 * (1.0 - exp(-over / 0.25));
+}
 
 float hash(vec3 p) {
   p = fract(p * vec3(12.9898, 78.233, 37.719));
@@ -50,5 +56,5 @@ void main() {
   vec3 ground = vec3(0.32, 0.30, 0.24);
   vec3 ambient = mix(ground, sky, 0.5 + 0.5 * n.y) * 0.45;
   vec3 color = base * (ambient + vec3(1.0, 0.97, 0.9) * diffuse * 0.8);
-  outColor = vec4(pow(color, vec3(1.0 / 1.1)), 1.0);
+  outColor = vec4(pow(shoulder(color), vec3(1.0 / 1.1)), 1.0);
 }

@@ -49,7 +49,8 @@ const grab = (page, key) => page.evaluate((k) => {
 // detail (the pixel differs by more than 16, summed RGB, from the mean of the four pixels 3 away
 // left, right, up and down, all inside: smooth lighting, linear across a few pixels, gives about
 // 0; a texture's grain does not), the mean chroma (largest minus smallest channel), the distinct
-// 5-bit shades, and the share of red and of blue pixels.
+// 5-bit shades, the share of red and of blue pixels, and the share at full white (every channel
+// ≥ 250: lighting clipped).
 const compare = (page, a, b) => page.evaluate(([ka, kb]) => {
   const bg = [219, 230, 240];
   const A = window.__look[ka], B = window.__look[kb];
@@ -57,7 +58,7 @@ const compare = (page, a, b) => page.evaluate(([ka, kb]) => {
   const fore = (d, i) => Math.abs(d[i] - bg[0]) + Math.abs(d[i + 1] - bg[1]) + Math.abs(d[i + 2] - bg[2]) > 30;
   const inside = (i) => fore(A.data, i) && fore(B.data, i);
   const measure = (d) => {
-    let n = 0, probed = 0, detail = 0, chroma = 0, red = 0, blue = 0;
+    let n = 0, probed = 0, detail = 0, chroma = 0, red = 0, blue = 0, white = 0;
     const shades = new Set();
     const at = (x, y) => 4 * (y * w + x);
     for (let y = 0; y < h; ++y) {
@@ -69,6 +70,7 @@ const compare = (page, a, b) => page.evaluate(([ka, kb]) => {
         chroma += Math.max(d[i], d[i + 1], d[i + 2]) - Math.min(d[i], d[i + 1], d[i + 2]);
         if (d[i] > d[i + 1] + 60 && d[i] > d[i + 2] + 60) ++red;
         if (d[i + 2] > d[i] + 60 && d[i + 2] > d[i + 1] + 40) ++blue;
+        if (d[i] >= 250 && d[i + 1] >= 250 && d[i + 2] >= 250) ++white;
         if (x < 3 || y < 3 || x + 3 >= w || y + 3 >= h) continue;
         const around = [at(x - 3, y), at(x + 3, y), at(x, y - 3), at(x, y + 3)];
         if (!around.every(inside)) continue;
@@ -80,7 +82,7 @@ const compare = (page, a, b) => page.evaluate(([ka, kb]) => {
     }
     return {
       share: n / (w * h), detail: detail / Math.max(1, probed), chroma: chroma / Math.max(1, n), shades: shades.size,
-      red: red / Math.max(1, n), blue: blue / Math.max(1, n),
+      red: red / Math.max(1, n), blue: blue / Math.max(1, n), white: white / Math.max(1, n),
     };
   };
   return { a: measure(A.data), b: measure(B.data) };
@@ -222,6 +224,8 @@ await runBrowserTest(async (server, browser) => {
     `${(rock.a.detail * 100).toFixed(1)}% of its pixels with detail textured, ${(rock.b.detail * 100).toFixed(1)}% flat`);
   check('textured, the rock takes its colours (moss green, grey stone); flat, its colour only (white)', rock.a.chroma > 20 && rock.a.chroma > 3 * rock.b.chroma,
     `mean chroma ${rock.a.chroma.toFixed(1)} textured, ${rock.b.chroma.toFixed(1)} flat; ${rock.a.shades} and ${rock.b.shades} shades`);
+  check('flat, the white rock keeps its shading where the sun is (at most 2 % of it at full white)', rock.b.white <= 0.02,
+    `${(rock.b.white * 100).toFixed(1)}% of the flat rock's pixels at full white`);
   await page.check('#show-support-texture');
 
   // 2. Vertex colours and a factor, no texture, under node transforms; then the flower's PNGs.
