@@ -367,8 +367,8 @@ void AddBarkCommands(CLI::App& app, CommandList& commands) {
       "--size", to->state.size,
       "Lattice WxH (N_R even, " + RangeHelp(BarkRowRange(BarkParam::kNR)) + "); default 128x64");
   table3->add_option("--set", to->state.sets,
-                     "KEY=VALUE of the bark table over every species' preset (e.g. dH=0.03: "
-                     "level A)");
+                     "KEY=VALUE of the bark table over every species' preset (e.g. dH=0.03, "
+                     "dR=0.021 and D=1: level A, one growth for all)");
   AddBudgetOptions(table3, &to->state.budget);
   commands.push_back({table3,
                       [to](std::ostream& out) { return RunTable3(*to, out); },

@@ -339,7 +339,7 @@ function drawSweep() {
   fs.writeFileSync(path.join(outDir, 'bark_sweep.svg'), parts.join('\n') + '\n');
 }
 
-if (want('table3')) { table3('B', []); table3('A', ['--set', 'dH=0.03']); }
+if (want('table3')) { table3('B', []); table3('A', ['--set', 'dH=0.03', '--set', 'dR=0.021', '--set', 'D=1']); }
 if (want('fig5')) fig5();
 if (want('fig7')) fig7();
 if (want('fig8')) fig8();

@@ -26,11 +26,11 @@ TEST(BarkParams, ThePresetsAreTable2) {
   EXPECT_EQ(BarkPresetNames(), (std::vector<std::string>{"camphor", "tallow", "pine"}));
   struct Row {
     const char* name;
-    double e1, e2, g, k1, k2, dh;
+    double e1, e2, g, k1, k2, dh, dr, d;  // dR and D: Table 1's, tallow's calibrated (level B)
   };
-  for (const Row& r : {Row{"camphor", 107.1e7, 117.3e7, 47.7e7, 1.040, 1.015, 0.028},
-                       Row{"tallow", 117.3e7, 117.3e7, 53.3e7, 1.033, 1.015, 0.042},
-                       Row{"pine", 117.3e7, 117.3e7, 53.3e7, 1.038, 1.023, 0.032}}) {
+  for (const Row& r : {Row{"camphor", 107.1e7, 117.3e7, 47.7e7, 1.040, 1.015, 0.028, 0.021, 1.0},
+                       Row{"tallow", 117.3e7, 117.3e7, 53.3e7, 1.033, 1.015, 0.042, 0.009, 0.9},
+                       Row{"pine", 117.3e7, 117.3e7, 53.3e7, 1.038, 1.023, 0.032, 0.021, 1.0}}) {
     Result<BarkParams> p = BarkPreset(r.name);
     ASSERT_TRUE(p.ok()) << r.name;
     EXPECT_DOUBLE_EQ(p->Get(BarkParam::kE1), r.e1) << r.name;
@@ -39,6 +39,8 @@ TEST(BarkParams, ThePresetsAreTable2) {
     EXPECT_DOUBLE_EQ(p->Get(BarkParam::kKappa1), r.k1) << r.name;
     EXPECT_DOUBLE_EQ(p->Get(BarkParam::kKappa2), r.k2) << r.name;
     EXPECT_DOUBLE_EQ(p->Get(BarkParam::kDeltaH), r.dh) << r.name;
+    EXPECT_DOUBLE_EQ(p->Get(BarkParam::kDeltaR), r.dr) << r.name;
+    EXPECT_DOUBLE_EQ(p->Get(BarkParam::kD), r.d) << r.name;
     EXPECT_DOUBLE_EQ(p->Get(BarkParam::kLo), 0.33) << r.name;  // Table 2: all three
     EXPECT_NE(BarkPresetSource(r.name).find("Table 2"), std::string::npos);
   }

@@ -25,8 +25,10 @@ Measured Grow(const std::string& species, bool level_a) {
     EXPECT_TRUE(SetBarkSpecies(species, &s).ok());
     EXPECT_TRUE(SetBarkSize("64x64", &s).ok());
     EXPECT_TRUE(SetBarkSeed(seed, &s).ok());
-    if (level_a) {
+    if (level_a) {  // one growth for all: dH 0.03 and Table 1's dR and D (tallow's preset differs)
       EXPECT_TRUE(s.params.Set(BarkParam::kDeltaH, 0.03).ok());
+      EXPECT_TRUE(s.params.Set(BarkParam::kDeltaR, 0.021).ok());
+      EXPECT_TRUE(s.params.Set(BarkParam::kD, 1.0).ok());
     }
     Result<BarkRun> run = BarkRun::Start(s, Budget{});
     EXPECT_TRUE(run.ok());
