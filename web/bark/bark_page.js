@@ -344,14 +344,16 @@ worker.on('table3', (msg) => {
   const out = [];
   for (const { species, stats } of msg.rows) {
     const paper = PAPER_TABLE3[species];
-    const r = stats.regions;
+    // The paper's measure: crack spacing along scan lines (docs/bark-model.md choice 10a), as
+    // `niwa bark table3` scores it; an open line along (no horizontal crack) is "(>H)".
+    const w = stats.spacing.width, h = stats.spacing.height;
     const tr = document.createElement('tr');
     const cells = [
       species,
       paper ? `${fmt(paper.mean[0])} × ${fmt(paper.mean[1])}` : '—',
-      `${fmt(r.mean_w)} × ${fmt(r.mean_h, stats.H_o)}`,
+      `${fmt(w.mean)} × ${fmt(h.mean)}`,
       paper ? `${fmt(paper.max[0])} × ${paper.max[1] === null ? '(>20)' : fmt(paper.max[1])}` : '—',
-      `${fmt(r.max_w)} × ${fmt(r.max_h, stats.H_o)}`,
+      `${fmt(w.max)} × ${h.open > 0 ? `(>${Math.round(stats.H_o)})` : fmt(h.max)}`,
     ];
     for (const c of cells) {
       const td = document.createElement('td');
@@ -359,7 +361,7 @@ worker.on('table3', (msg) => {
       tr.append(td);
     }
     body.append(tr);
-    out.push({ species, mean_w: r.mean_w, mean_h: r.mean_h, max_w: r.max_w, max_h: r.max_h });
+    out.push({ species, mean_w: w.mean, mean_h: h.mean, max_w: w.max, max_h: h.max, open_h: h.open });
   }
   ui.table3.hidden = false;
   setHooks({ table3: JSON.stringify(out) });
