@@ -36,7 +36,7 @@ const ui = {
   yearText: $('year-text'), selection: $('selection'), cut: $('cut'), undo: $('undo'), redo: $('redo'),
   prunes: $('prunes'), copyLink: $('copy-link'), resetView: $('reset-view'), embed: $('embed'),
   downloadGlb: $('download-glb'), downloadJson: $('download-json'), downloadPng: $('download-png'),
-  shareStatus: $('share-status'), wind: $('wind'), windInfo: $('wind-info'), renderMode: $('render-mode'),
+  shareStatus: $('share-status'), wind: $('wind'), windInfo: $('wind-info'), renderMode: $('render-mode'), shadows: $('shadows'),
   bark: $('bark'), barkInfo: $('bark-info'),
   renderTable: $('render-table'), renderCol: $('render-col'), timeFrames: $('time-frames'), cancel: $('cancel'),
 };
@@ -137,6 +137,7 @@ let frameDirty = true;
 let wholeNext = false;  // the next frame is drawn whole, not in parts (requestFrame(true, true))
 let freshNext = false;  // the next frame starts anew, not resuming one begun before (a new selection)
 let frameLevel = -1;  // the governor's level of the frame in parts
+let poseAtFrameStart = 0;  // the renderer's poseSerial when the frame on its way was started
 const frames = new FrameLoop(() => {
   // While a big tree goes up in parts the canvas keeps its last frame (no draw: a frame of the old
   // big tree costs seconds on a CPU GL, and every part's upload would wait for it).
@@ -162,6 +163,7 @@ const frames = new FrameLoop(() => {
   let whole = false;
   if (!resume) {
     viewsAtFrameStart = viewsReceived;
+    poseAtFrameStart = renderer.poseSerial;
     freshNext = false;
     quality = governor.quality(cheapAvailable);
     frameLevel = quality.level;
@@ -190,7 +192,11 @@ const frames = new FrameLoop(() => {
   if (drawn.mode !== 'motion') table.showFrame(drawn);
   // tests wait for the new tree's frame, and for the frame that shows a new selection
   setHooks({ drawnTreeSerial: treeSerial, drawnSelection: drawn.selected ?? -1,
-    drawnMode: drawn.mode, drawnViews: viewsAtFrameStart });
+    drawnMode: drawn.mode, drawnViews: viewsAtFrameStart,
+    // the sun's shadow map in this frame: 'drawn' (redrawn), 'reused' or 'off'; maps drawn so far
+    drawnShadow: drawn.shadow, shadowPasses: frame.shadowMap?.passes ?? 0,
+    // the poses this frame was started with, and the latest (equal: the pose on screen is the latest)
+    drawnPose: poseAtFrameStart, latestPose: renderer.poseSerial });
   bumpHook('framesShown');  // finished frames (the orbit frame time of tests/browser/no_blank_frames)
   if (freshOnDraw) {  // the tree that answers the latest edit is on screen now
     freshOnDraw = false;
@@ -272,6 +278,7 @@ async function startRenderer() {
   try {
     frame = new Frame(ui.canvas, { camera, what: 'the tree', request: () => requestFrame() });
     await frame.init();
+    frame.setShadows(ui.shadows.value !== 'off');
     renderer = await frame.addLayer(new Renderer(frame));
     frames.attach(frame.gl, ui.canvas);
     camera.attach(ui.canvas, cameraMoved);
@@ -789,6 +796,14 @@ ui.renderMode.addEventListener('change', () => {
   if (!panel) return;
   panel.setValues({ render_mode: Number(ui.renderMode.value) });
   scheduleUpdate(panel.stage('render_mode'));
+});
+
+// Sun shadows on or off (the frame's shadow map and the ground's stand-in shadow; a page view
+// setting, not a row of the tree's table: the tree and its exports are the same either way).
+ui.shadows.addEventListener('change', () => {
+  frame?.setShadows(ui.shadows.value !== 'off');
+  setHooks({ shadows: ui.shadows.value });
+  requestFrame(true, true);
 });
 
 // ---------------------------------------------------------------- share and export
