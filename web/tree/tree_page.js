@@ -176,7 +176,7 @@ const frames = new FrameLoop(() => {
   const dragging = next.moving && next.capped && !windPlaying;
   const drawn = frame.render(camera, quality, { budget: dragging || whole ? Infinity : governor.budget(), resume });
   if (!drawn) return false;
-  governor.drew(drawn.drawnPrimitives, !drawn.partial, drawn.primitives);
+  governor.drew(drawn.drawnPrimitives, !drawn.partial, drawn.primitives, drawn.shadowPrimitives);
   setHooks({ frameScale: frame.scale, frameMode: drawn.mode, framesDrawn: frames.stats.drawn,
     framesSkipped: frames.stats.skippedBusy, frameGpuMs: Math.round(frames.stats.gpuMs), framePartial: drawn.partial ? 1 : 0 });
   if (drawn.partial) {
