@@ -4,7 +4,8 @@
 // lit through its tangent-space normal map (tangent frame from screen-space derivatives, as three.js
 // does for a glTF without tangents); half-Lambert sun, shadowed by the sun's shadow map
 // (../common/shadow.glsl), plus a sky/ground hemisphere ambient darkened by the crown's ambient
-// occlusion (vOcclusion, core/tree/crown_occlusion.h).
+// occlusion (vOcclusion, core/tree/crown_occlusion.h); leaves and petals get back part of what the
+// crown takes, coloured by its leaves (see main).
 // uDoubleSided = 1 for leaves and petals: the back face is lit with the flipped normal.
 precision highp float;
 
@@ -76,14 +77,23 @@ void main() {
   float diffuse = max(dot(n, uLightDirection), 0.0);
   if (uDoubleSided > 0.5) diffuse = 0.25 + 0.75 * diffuse;  // thin parts let light through
   float unshadowed = diffuse;  // the selection's mark stays bright in the shadow (it must show)
-  diffuse *= sunVisibility(vShadow);
+  float visible = sunVisibility(vShadow);
+  // Light the crown takes from a leaf or petal is not all lost: in the shadow of the leaves
+  // between it and the sun it gets the sunlight they let through (a leaf's transmittance taken
+  // equal to its reflectance, the base colour, as for a thin leaf; the part's own colour stands in
+  // for theirs), and the sky the crown hides (occlusion) is replaced by those leaves, half of them
+  // sunlit. So a summer crown's shade is green and an autumn one's warm, not grey. Bark gets neither.
+  vec3 through = uDoubleSided > 0.5 ? base : vec3(0.0);
+  vec3 sunColour = vec3(1.0, 0.97, 0.9) * 1.1;
+  vec3 sun = sunColour * diffuse * (visible + (1.0 - visible) * through);
   vec3 sky = vec3(0.62, 0.72, 0.85);
   vec3 ground = vec3(0.32, 0.30, 0.24);
-  vec3 ambient = mix(ground, sky, 0.5 + 0.5 * n.y) * 0.55 * (1.0 - 0.8 * vOcclusion);
+  vec3 ambient = mix(ground, sky, 0.5 + 0.5 * n.y) * 0.55 * (1.0 - 0.8 * vOcclusion)
+      + 0.8 * vOcclusion * through * sunColour * 0.5;
   vec3 view = normalize(uCameraPosition - vWorld);
   vec3 halfway = normalize(view + uLightDirection);
   float spec = uSpecular * pow(max(dot(n, halfway), 0.0), 24.0);
-  vec3 color = base * (ambient + vec3(1.0, 0.97, 0.9) * diffuse * 1.1) + vec3(spec);
+  vec3 color = base * (ambient + sun) + vec3(spec);
   color = pow(color, vec3(1.0 / 2.2));  // linear to sRGB
   vec3 mark = vSelected > 0.75 ? vec3(1.0, 0.55, 0.1) : vec3(1.0, 0.85, 0.25);
   color = mix(color, mark * (0.45 + 0.75 * unshadowed), vSelected > 0.0 ? 0.85 : 0.0);
