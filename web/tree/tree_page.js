@@ -104,8 +104,10 @@ const controller = new StudyController({
     return false;
   },
   // The hash carries the camera after the state; each history entry keeps the year shown.
-  // and the Bark choice when simulated (bark=sim: the worker takes it out before the core decodes).
-  viewHash: () => `${renderer ? `&cam=${camera.toHash()}` : ''}${ui.bark.value === 'sim' ? '&bark=sim' : ''}`,
+  // and the page's fields off their first value (the worker takes them out before the core
+  // decodes): the Bark choice when simulated (bark=sim), Sun shadows when off (shadows=off).
+  viewHash: () => `${renderer ? `&cam=${camera.toHash()}` : ''}${ui.bark.value === 'sim' ? '&bark=sim' : ''}`
+    + `${ui.shadows.value === 'off' ? '&shadows=off' : ''}`,
   historyExtra: () => showYear,
   // Back/forward (and undo/redo, which use them) restore the entry's state; a hash typed by the
   // user arrives here too and becomes a new entry.
@@ -191,7 +193,8 @@ const frames = new FrameLoop(() => {
   }
   if (drawn.mode !== 'motion') table.showFrame(drawn);
   // tests wait for the new tree's frame, and for the frame that shows a new selection
-  setHooks({ drawnTreeSerial: treeSerial, drawnSelection: drawn.selected ?? -1,
+  treeDrawn(treeSerial);
+  setHooks({ drawnTreeSerial: treeSerial, drawnYear: shownYear, drawnSelection: drawn.selected ?? -1,
     drawnMode: drawn.mode, drawnViews: viewsAtFrameStart,
     // the sun's shadow map in this frame: 'drawn' (redrawn), 'reused' or 'off'; maps drawn so far
     drawnShadow: drawn.shadow, shadowPasses: frame.shadowMap?.passes ?? 0,
@@ -204,6 +207,20 @@ const frames = new FrameLoop(() => {
   }
   return true;
 }, { governor });
+// The tree serials drawn: treeOnScreen(serial) resolves once a finished frame shows that tree or
+// a newer one (at once without a renderer: nothing will be drawn).
+let drawnSerial = 0;
+let drawnWaiters = [];
+function treeDrawn(serial) {
+  drawnSerial = Math.max(drawnSerial, serial);
+  const done = drawnWaiters.filter((w) => w.serial <= drawnSerial);
+  drawnWaiters = drawnWaiters.filter((w) => w.serial > drawnSerial);
+  for (const w of done) w.resolve();
+}
+function treeOnScreen(serial) {
+  if (!renderer || drawnSerial >= serial) return Promise.resolve();
+  return new Promise((resolve) => drawnWaiters.push({ serial, resolve }));
+}
 const requestFrame = (urgent = false, whole = false) => {
   if (!renderer) return;
   frameDirty = true;
@@ -446,6 +463,7 @@ worker.on('ready', (msg) => {
   dock.add('age', $('getting-started').querySelector('[data-for-key="years"]'));
   applyState(msg.decoded.state);
   ui.bark.value = msg.decoded.bark === 'sim' ? 'sim' : 'procedural';
+  showShadows(msg.decoded.shadows);
   notices.set('hash', msg.decoded.notices);
   if (camera.fromHash(msg.decoded.state.camera)) frameNext = false;
   updateUndoButtons();
@@ -455,6 +473,7 @@ worker.on('ready', (msg) => {
 worker.on('decoded', (msg) => {
   applyState(msg.state);
   ui.bark.value = msg.bark === 'sim' ? 'sim' : 'procedural';
+  showShadows(msg.shadows);
   notices.set('hash', msg.notices);
   if (camera.fromHash(msg.state.camera)) frameNext = false;
   sendUpdate('restore');
@@ -642,9 +661,15 @@ ui.year.addEventListener('input', () => {
   sendUpdate('scrub');
 });
 
+// Play shows every year: the next year is asked for 250 ms after this year's tree is on screen
+// (not after its reply: with a frame slower than that, drawn in parts or with the sun's shadow map
+// redrawn for each new tree, the year bar ran ahead of the view and years were never seen). Pause
+// holds the year shown. playRun: a Pause and a new Play do not leave the old loop running.
 let playing = false;
+let playRun = 0;
 function stopPlaying() {
   playing = false;
+  playRun += 1;
   ui.play.textContent = 'Play';
   ui.play.setAttribute('aria-pressed', 'false');
 }
@@ -653,17 +678,20 @@ ui.play.addEventListener('click', async () => {
   const n = fullYears();
   if (n === null || panel === null) return;
   playing = true;
+  const run = ++playRun;
   ui.play.textContent = 'Pause';
   ui.play.setAttribute('aria-pressed', 'true');
   let y = showYear === null || showYear >= n ? 0 : showYear;
-  while (playing && y <= n) {
+  while (run === playRun && y <= n) {
     showYear = y >= n ? null : y;
     const reply = await sendUpdate('scrub').reply;  // null when superseded
-    if (!reply || reply.type !== 'tree' || !playing) break;
+    if (!reply || reply.type !== 'tree' || run !== playRun) break;
+    await treeOnScreen(treeSerial);
+    if (run !== playRun) break;
     await new Promise((resolve) => setTimeout(resolve, 250));
     y += 1;
   }
-  stopPlaying();
+  if (run === playRun) stopPlaying();
 });
 
 // Picking: a click (not a drag) on the view selects the branch under the pointer.
@@ -799,11 +827,17 @@ ui.renderMode.addEventListener('change', () => {
 });
 
 // Sun shadows on or off (the frame's shadow map and the ground's stand-in shadow; a page view
-// setting, not a row of the tree's table: the tree and its exports are the same either way).
-ui.shadows.addEventListener('change', () => {
+// setting, not a row of the tree's table: the tree and its exports are the same either way). The
+// link carries shadows=off as it carries the camera: the current history entry is rewritten.
+function showShadows(value) {
+  ui.shadows.value = value === 'off' ? 'off' : 'on';
   frame?.setShadows(ui.shadows.value !== 'off');
   setHooks({ shadows: ui.shadows.value });
   requestFrame(true, true);
+}
+ui.shadows.addEventListener('change', () => {
+  showShadows(ui.shadows.value);
+  writeHash();
 });
 
 // ---------------------------------------------------------------- share and export
