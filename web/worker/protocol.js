@@ -21,14 +21,15 @@
  * @typedef {Envelope & {type: 'init', hash?: string}} InitMessage
  *   -> ReadyMessage
  * @typedef {Envelope & {type: 'ready', paramTable: ParamRow[], presets: Object[],
- *   decoded: {state: TreeStateJson, notices: string[]}}} ReadyMessage
+ *   decoded: {state: TreeStateJson, notices: string[], bark: 'procedural'|'sim', shadows: 'on'|'off'}}} ReadyMessage
  * @typedef {{key: string, symbol: string, unit: string, default: number, min: number, max: number,
  *   integer: boolean, group: string, group_title?: string, stage?: 'grow'|'mesh'|'sway'|'view',
  *   help: string}} ParamRow
  *
  * @typedef {Envelope & {type: 'decode', hash: string}} DecodeMessage
- *   -> {type: 'decoded', id, client, state: TreeStateJson, notices: string[], bark: 'procedural'|'sim'}
- *   (the link's bark=sim is the page's field, taken out before the core decodes the hash)
+ *   -> {type: 'decoded', id, client, state: TreeStateJson, notices: string[], bark: 'procedural'|'sim',
+ *   shadows: 'on'|'off'} (the link's bark= and shadows= are the page's fields, taken out before the
+ *   core decodes the hash; a bad value of one is a notice)
  */
 
 /**
