@@ -4,8 +4,8 @@
 // lit through its tangent-space normal map (tangent frame from screen-space derivatives, as three.js
 // does for a glTF without tangents); half-Lambert sun, shadowed by the sun's shadow map
 // (../common/shadow.glsl), plus a sky/ground hemisphere ambient darkened by the crown's ambient
-// occlusion (vOcclusion, core/tree/crown_occlusion.h); leaves and petals get back part of what the
-// crown takes, coloured by its leaves (see main).
+// occlusion (vOcclusion, core/tree/crown_occlusion.h); leaves get back part of what the crown
+// takes, in their colour (see main).
 // uDoubleSided = 1 for leaves and petals: the back face is lit with the flipped normal.
 precision highp float;
 
@@ -28,6 +28,7 @@ uniform vec3 uCameraPosition;
 uniform float uDoubleSided;
 uniform float uSpecular;
 uniform float uXray;  // 1 in the see-through pass that shows a selection hidden behind leaves
+uniform float uCrownLight;  // 1 for leaves: the light the crown takes comes partly back (main)
 
 out vec4 outColor;
 
@@ -78,12 +79,13 @@ void main() {
   if (uDoubleSided > 0.5) diffuse = 0.25 + 0.75 * diffuse;  // thin parts let light through
   float unshadowed = diffuse;  // the selection's mark stays bright in the shadow (it must show)
   float visible = sunVisibility(vShadow);
-  // Light the crown takes from a leaf or petal is not all lost: in the shadow of the leaves
-  // between it and the sun it gets the sunlight they let through (a leaf's transmittance taken
-  // equal to its reflectance, the base colour, as for a thin leaf; the part's own colour stands in
-  // for theirs), and the sky the crown hides (occlusion) is replaced by those leaves, half of them
-  // sunlit. So a summer crown's shade is green and an autumn one's warm, not grey. Bark gets neither.
-  vec3 through = uDoubleSided > 0.5 ? base : vec3(0.0);
+  // Light the crown takes from a leaf is not all lost (uCrownLight = 1, the leaves): in the shadow
+  // of the leaves between it and the sun it gets the sunlight they let through (a leaf's
+  // transmittance taken equal to its reflectance, the base colour, as for a thin leaf; its own
+  // colour stands in for theirs), and the sky the crown hides (occlusion) is replaced by those
+  // leaves, half of them sunlit. So a summer crown's shade is green and an autumn one's warm, not
+  // grey. Bark and blossom (whose colour is not the leaves') get neither.
+  vec3 through = uCrownLight > 0.5 ? base : vec3(0.0);
   vec3 sunColour = vec3(1.0, 0.97, 0.9) * 1.1;
   vec3 sun = sunColour * diffuse * (visible + (1.0 - visible) * through);
   vec3 sky = vec3(0.62, 0.72, 0.85);

@@ -728,6 +728,7 @@ export class Renderer extends StudyLayer {
           gl.uniform3fv(t.uniforms.uColor, look.color);
           gl.uniform3fv(t.uniforms.uColorVariation, look.variation);
           gl.uniform1f(t.uniforms.uDoubleSided, look.doubleSided);
+          gl.uniform1f(t.uniforms.uCrownLight, name === 'leaves' ? 1 : 0);  // tree_textured.frag
           gl.uniform1f(t.uniforms.uSpecular, look.specular);
           gl.uniform1f(t.uniforms.uXray, 0);
           gl.uniform1f(t.uniforms.uFlutter, name === 'leaves' ? flutter : 0);
@@ -750,6 +751,7 @@ export class Renderer extends StudyLayer {
           gl.uniform1f(t.uniforms.uUseTexture, 0);
           gl.uniform3fv(t.uniforms.uColor, PARTS.bark.color);
           gl.uniform1f(t.uniforms.uDoubleSided, 0);
+          gl.uniform1f(t.uniforms.uCrownLight, 0);
           gl.uniform1f(t.uniforms.uFlutter, 0);
           gl.disable(gl.DEPTH_TEST);
           gl.enable(gl.BLEND);
