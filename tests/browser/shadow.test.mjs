@@ -6,7 +6,8 @@
 // with shadows off the two must match; the crown's own leaves are darker with shadows on (the crown
 // shadows itself), bare bark lit by the sun is not (no acne). The map is redrawn when the sun or
 // the tree's pose changes and reused while only the camera moves. The worker sends the crown's
-// occlusion per vertex. Then the tree page itself: its Sun shadows select turns the shadow off.
+// occlusion per vertex. Then the tree page itself: its Sun shadows select turns the shadow off, and
+// the share link carries it (shadows=off).
 // Run: node tests/browser/shadow.test.mjs (needs build/wasm's niwa_web). Screenshots:
 // build/artifacts/shadow-on.png, shadow-off.png, shadow-bare-on.png, shadow-bare-off.png,
 // shadow-page-on.png, shadow-page-off.png.
@@ -251,6 +252,32 @@ await runBrowserTest(async (server, browser) => {
   await treePage.locator('#view').screenshot({ path: path.join(ARTIFACTS, 'shadow-page-off.png') });
   check('the tree page draws the sun\'s shadow map, and its Sun shadows select turns it off',
     ['drawn', 'reused'].includes(first.drawnShadow), `on: ${first.drawnShadow}, passes ${first.shadowPasses}`);
+
+  // The share link carries the setting (a page field, as bark=sim): shadows=off when off, nothing
+  // when on; the link opens with shadows off; a bad value is dropped with a notice naming the field.
+  const linkOff = await treePage.waitForFunction(() => /[#&]shadows=off(&|$)/.test(location.hash) && location.hash,
+    null, { timeout: TIMEOUT, polling: 100 }).then((h) => h.jsonValue(), () => treePage.evaluate(() => location.hash));
+  check('Sun shadows Off puts shadows=off in the share link', /[#&]shadows=off(&|$)/.test(linkOff), linkOff);
+  await treePage.selectOption('#shadows', 'on');
+  const linkOn = await treePage.waitForFunction(() => !/shadows=/.test(location.hash) && location.hash,
+    null, { timeout: TIMEOUT, polling: 100 }).then((h) => h.jsonValue(), () => treePage.evaluate(() => location.hash));
+  check('Sun shadows On takes it out again', !/shadows=/.test(linkOn) && /preset=sakura/.test(linkOn), linkOn);
+  const opened = watchPage(await context.newPage(), problems);
+  await opened.goto(`${server.url}${linkOff}`, { timeout: TIMEOUT });
+  await waitReady(opened, 0, 200);
+  const openedHooks = await opened.evaluate(() => ({ ...document.documentElement.dataset }));
+  const openedNotice = await opened.textContent('#notice');
+  check('the link with shadows=off opens with Sun shadows Off, drawn without the map, and no notice',
+    (await opened.inputValue('#shadows')) === 'off' && openedHooks.drawnShadow === 'off' && !/shadows/.test(openedNotice),
+    `select ${await opened.inputValue('#shadows')}, drawn ${openedHooks.drawnShadow}, notice '${openedNotice}'`);
+  await opened.close();
+  const bad = watchPage(await context.newPage(), problems);
+  await bad.goto(`${server.url}#preset=sakura&seed=1&years=8&shadows=maybe`, { timeout: TIMEOUT });
+  await waitReady(bad, 0, 200);
+  const badNotice = await bad.textContent('#notice');
+  check('a bad shadows value is dropped with a notice naming the field and its values (shadows on)',
+    /shadows: 'maybe' dropped, must be on or off/.test(badNotice) && (await bad.inputValue('#shadows')) === 'on', badNotice);
+  await bad.close();
 
   check('no console errors or warnings', problems.length === 0, problems.slice(0, 5).join(' | '));
 });
