@@ -125,6 +125,7 @@ Status TreeRun::BuildMesh() {
                     "lower " + state_.limits.years_name + ", N_high or B_l");
   if (!fits.ok()) {
     mesh_ = TreeMesh{};
+    occlusion_.reset();
     has_mesh_ = true;
     return fits;
   }
@@ -135,7 +136,13 @@ Status TreeRun::BuildMesh() {
 
 void TreeRun::BuildBareMesh() {
   mesh_ = BuildTreeMesh(tree(), LookOptions());
+  occlusion_.reset();
   has_mesh_ = true;
+}
+
+const CrownOcclusion& TreeRun::occlusion() {
+  if (!occlusion_) occlusion_ = ComputeCrownOcclusion(mesh_);
+  return *occlusion_;
 }
 
 void TreeRun::BuildSkin() {
@@ -178,6 +185,7 @@ Result<run::StageMask> TreeRun::Update(const TreeState& next) {
     grower_ = std::make_unique<Grower>(state_);
     has_mesh_ = false;
     mesh_ = TreeMesh{};
+    occlusion_.reset();
     sway_model_ = SwayModel{};
     skin_ = TreeSkin{};
     return mask;

@@ -21,6 +21,7 @@
 #include "sway/skin.h"
 #include "sway/sway.h"
 #include "sway/sway_gltf.h"
+#include "tree/crown_occlusion.h"
 #include "tree/growth.h"
 #include "tree/mesh.h"
 #include "tree/tree_budget.h"
@@ -130,6 +131,10 @@ class TreeRun : public run::StudyRun {
   // 3.15). Built by BuildMesh and by an Update that re-does the mesh or sway stage.
   const SwayModel& sway_model() const { return sway_model_; }
   const TreeSkin& skin() const { return skin_; }
+  // The crown's ambient occlusion of every vertex of mesh() (tree/crown_occlusion.h), computed at
+  // the first call after the mesh was (re)built and kept with it (the page shades with it; no
+  // export carries it).
+  const CrownOcclusion& occlusion();
 
   // A new state: re-does only the earliest stage whose rows changed (the table's stage column:
   // grow, mesh, sway, view) and the ones after it, and returns those stages as a mask (0: nothing
@@ -209,6 +214,7 @@ class TreeRun : public run::StudyRun {
   std::unique_ptr<Grower> grower_;
   bool has_mesh_ = false;
   TreeMesh mesh_;
+  std::optional<CrownOcclusion> occlusion_;  // of mesh_, once asked for
   SwayModel sway_model_;
   TreeSkin skin_;
 };

@@ -10,11 +10,15 @@ out vec3 vNormal;
 out vec3 vWorld;
 out float vSelected;
 out vec2 vUv;
+out float vOcclusion;  // tree_textured.frag's: none here (no occlusion, no shadow map in the atlas)
+out vec4 vShadow;
 
 void main() {
   vNormal = aNormal;
   vUv = aUv;
   vWorld = vec3(aPosition.xy * 8.0, 0.0);  // only seeds tree.frag's colour variation
   vSelected = 0.0;
+  vOcclusion = 0.0;
+  vShadow = vec4(0.0);
   gl_Position = vec4(aPosition, 1.0);
 }

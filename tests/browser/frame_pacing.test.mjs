@@ -192,6 +192,47 @@ const { birthCounter } = await import('../../web/ivy/ivy_renderer.js');
   g.stop();
 }
 
+// ---- The sun's shadow map is redrawn by still frames only (moving ones reuse it): a still frame
+// is judged for the motion level without its shadow pass (drew's `once`).
+{
+  const g = new FrameGovernor({ targetMs: 100, firstBudget: 50_000 });
+  g.quality();
+  g.drew(50_000, false, 180_000, 90_000);  // 90 k of the tree + 90 k into the shadow map, in parts
+  g.frameDone(100);
+  g.motion();
+  check('a still frame of 90 k primitives plus a 90 k shadow pass, in parts: the motion starts at full quality (90 k is not governed)',
+    g.quality().level === 0, `level ${g.quality().level}`);
+  g.stop();
+  g.reset();
+  g.quality();  // the same frame without the shadow pass counted apart
+  g.drew(50_000, false, 180_000);
+  g.frameDone(100);
+  g.motion();
+  check('... counted whole it would be judged slow (180 k over a 50 k budget: 1 + floor(log2 3.6) = 2 levels)',
+    g.quality().level === 2, `level ${g.quality().level}`);
+  g.stop();
+  g.reset();
+  const t0 = performance.now();
+  g.quality();
+  while (performance.now() - t0 < 60) { /* a whole still frame of 60 ms */ }
+  g.drew(400_000, true, 400_000, 300_000);  // a quarter of it moves
+  g.frameDone(60);
+  g.motion();
+  const judged = g.quality().level;
+  g.stop();
+  g.reset();
+  const t1 = performance.now();
+  g.quality();
+  while (performance.now() - t1 < 240) { /* four times as long, the same primitives */ }
+  g.drew(400_000, true, 400_000, 300_000);
+  g.frameDone(240);
+  g.motion();
+  const judgedSlow = g.quality().level;
+  g.stop();
+  check('a whole still frame is judged by its time times the share moving frames draw again (60 ms x 1/4 fast, 240 ms x 1/4 = 60 ms fast, not 240 ms slow)',
+    judged === 0 && judgedSlow === 0, `levels ${judged}, ${judgedSlow}`);
+}
+
 // ---- birthCounter against the sort it replaces (whole steps and fractional ones).
 {
   let seed = 12345;

@@ -165,7 +165,7 @@ export async function newContext(browser, options) {
         const key = `${r.target.id ? `#${r.target.id}` : r.target.tagName.toLowerCase()} ${r.attributeName}`;
         (window.__niwaHookLog[key] ||= []).push(r.target.getAttribute(r.attributeName));
       }
-    }).observe(document, { subtree: true, attributes: true, attributeFilter: ['data-step-shown', 'data-level-shown', 'data-hash', 'data-year'] });
+    }).observe(document, { subtree: true, attributes: true, attributeFilter: ['data-step-shown', 'data-level-shown', 'data-hash', 'data-year', 'data-drawn-year'] });
   });
   return context;
 }

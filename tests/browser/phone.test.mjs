@@ -135,17 +135,42 @@ await runBrowserTest(async (server, browser) => {
   await waitReady(page, serial, 100);
   await settled(page);
 
-  // ---- Play: the tree grows from year 0 again; a screenshot while it plays shows a younger tree.
+  // ---- Play: the tree grows from year 0 again; a screenshot while it plays shows a younger tree
+  // and the year bar says which. Play goes on 250 ms after each year is on screen, and a screenshot
+  // takes longer than that on a loaded machine (seconds on SwiftShader with the sun's shadow pass),
+  // so the test pauses it the moment a young year is drawn (Pause, in the page: a round trip from
+  // here is slower than a year), takes the screenshot and reads the year bar, then plays on.
+  const drawnYearsBefore = await page.evaluate(() => (window.__niwaHookLog['html data-drawn-year'] || []).length);
   await page.tap('#play');
-  await page.waitForFunction(() => ['1', '2'].includes(document.documentElement.dataset.year)
-    && document.documentElement.dataset.drawnTreeSerial === document.documentElement.dataset.treeSerial, null, { timeout: TIMEOUT, polling: 50 });
+  const pausedAt = await page.evaluate(() => new Promise((resolve) => {
+    const d = document.documentElement.dataset;
+    const observer = new MutationObserver(() => look());
+    const look = () => {
+      if (!['1', '2'].includes(d.drawnYear) || d.drawnTreeSerial !== d.treeSerial) return;
+      observer.disconnect();
+      document.getElementById('play').click();  // Pause
+      resolve({ year: d.drawnYear, button: document.getElementById('play').textContent });
+    };
+    observer.observe(document.documentElement, { attributes: true });
+    look();
+  }));
+  await settled(page);
   const playing = await shot(page, 'phone-play.png');
   const playYear = await page.textContent('#year-text');
+  const shownAfter = await dataset(page);
   await used(page, 'Play', afterAge, playing);
-  check('phone: Play shows the young tree on the year bar', /^[12] of 6$/.test(playYear), playYear);
+  check('phone: Play shows the young tree on the year bar', /^[12] of 6$/.test(playYear) && playYear.startsWith(`${pausedAt.year} `)
+    && shownAfter.drawnYear === pausedAt.year && pausedAt.button === 'Play',
+  `${playYear}; paused at drawn year ${pausedAt.year} (button then '${pausedAt.button}'), drawn year at the screenshot ${shownAfter.drawnYear}`);
+  await page.tap('#play');  // Play on from the year shown
   await page.waitForFunction(() => document.getElementById('play').textContent === 'Play', null, { timeout: TIMEOUT, polling: 100 });
   await settled(page);
   const played = await shot(page, 'phone-played.png');
+  // Every year of the tree was on screen in turn (the next one asked for after this one is drawn).
+  const drawnYears = await page.evaluate((n) => (window.__niwaHookLog['html data-drawn-year'] || []).slice(n).map(Number), drawnYearsBefore);
+  const seen = [1, 2, 3, 4, 5, 6].filter((y) => drawnYears.includes(y));
+  check('phone: Play draws every year in turn, 1 to 6', seen.length === 6 && drawnYears.at(-1) === 6
+    && drawnYears.every((y, i) => i === 0 || y >= drawnYears[i - 1]), `years drawn ${drawnYears.join(',')}`);
 
   // ---- Blow: the tree sways (a screenshot well into the gust).
   await page.tap('#wind');

@@ -179,8 +179,15 @@ await runBrowserTest(async (server, browser) => {
   await page.locator('#view').screenshot({ path: path.join(ARTIFACTS, 'render-hybrid-wind.png') });
   const moved = await snapshotDifference(page, 'hybridStill', 'hybridBlowing', 30);
   check('cards and lines move in the wind', moved > 0.002, `${(moved * 100).toFixed(2)}% of pixels changed`);
+  // The rest pose's frame, once it is finished (data-drawn-pose: the poses a finished frame started
+  // with; on a loaded CPU GL it can come later than 400 ms after Still).
+  const shownBefore = await page.evaluate(() => Number(document.documentElement.dataset.framesShown || 0));
   await page.click('#wind');
   await page.waitForTimeout(400);
+  await page.waitForFunction((n) => {
+    const d = document.documentElement.dataset;
+    return Number(d.framesShown || 0) > n && d.drawnPose === d.latestPose && Number(d.frameScale) === 1;
+  }, shownBefore, { timeout: TIMEOUT, polling: 100 });
   await snapshotCanvas(page, 'hybridStilled');
   const back = await snapshotDifference(page, 'hybridStill', 'hybridStilled', 0);
   check('Still puts cards and lines back exactly', back === 0, `${(back * 100).toFixed(3)}% of pixels differ`);

@@ -20,7 +20,10 @@
 //                                     eq. 3.15) of the sway skin (core/sway/skin.h); leaves also
 //                                     uvs (Float32 uv: the texture coordinates of the .glb; leaves
 //                                     v = 0 at the petiole); bark also branchIds (Uint32 per
-//                                     vertex) and branchParents (Int32 per branch, -1 at the root)
+//                                     vertex) and branchParents (Int32 per branch, -1 at the root);
+//                                     each also occlusion (Float32 per vertex, 0-1: the crown's
+//                                     ambient occlusion, core/tree/crown_occlusion.h, computed at
+//                                     the first call after a mesh build, before any view is made)
 //     "atlas.bark" | "atlas.leaves" | "atlas.flowers"   positions, normals, uvs, indices:
 //                                     clip-space triangles that paint the card atlas (after
 //                                     buildHybrid), uvs into the part's texture
@@ -71,6 +74,7 @@
 #include "sway/skin.h"
 #include "sway/sway.h"
 #include "sway/sway_budget.h"
+#include "tree/crown_occlusion.h"
 #include "tree/mesh.h"
 #include "tree/tree.h"
 #include "tree/tree_budget.h"
@@ -175,20 +179,29 @@ class TreeSession {
     };
     const TreeMesh& mesh = run_ ? run_->mesh() : kNoMesh;
     const TreeSkin& skin = run_ ? run_->skin() : kNoSkin;
+    // The crown's ambient occlusion per vertex (core/tree/crown_occlusion.h), computed once per
+    // mesh.
+    const CrownOcclusion* occlusion = run_ && run_->has_mesh() ? &run_->occlusion() : nullptr;
+    const auto occluded = [&out, occlusion](const std::vector<float> CrownOcclusion::*part) {
+      if (occlusion) out.Add("occlusion", occlusion->*part);
+    };
     if (group == "bark") {
       // Before the first view: WrapBarkUvs allocates, and a growth of the WASM memory would leave
       // the views already added pointing at the old buffer.
       if (bark_ && run_) bark_uvs_ = compose::WrapBarkUvs(run_->tree(), mesh, bark_->old_bark);
       part(mesh.bark, skin.bark);
+      occluded(&CrownOcclusion::bark);
       out.Add("uvs", bark_ && run_ ? bark_uvs_ : mesh.bark.uvs)
           .Add("branchIds", mesh.bark_branch_id)
           .Add("branchParents", parents_);
     } else if (group == "leaves") {
       part(mesh.leaves, skin.leaves);
       out.Add("uvs", mesh.leaves.uvs);
+      occluded(&CrownOcclusion::leaves);
     } else if (group == "flowers") {
       part(mesh.flowers, skin.flowers);
       out.Add("uvs", mesh.flowers.uvs);
+      occluded(&CrownOcclusion::flowers);
     } else if (group == "atlas.bark") {
       atlas(atlas_.bark);
     } else if (group == "atlas.leaves") {

@@ -16,8 +16,20 @@
 // or draw(gl, view) for a layer drawn whole), worldBounds() (its box in metres, or null),
 // footprint() (optional: the ground under it, {center, extent, shadowRadius, crownHeight,
 // shadowOffset?}), ready() (optional: false until it can draw), uploading (optional: true while its
-// new buffers go up), dispose(). view: {viewProjection, eye, light (unit, towards the sun), scale
-// (the drawing buffer's), width, height}. A study's renderer extends StudyLayer (below).
+// new buffers go up), dispose(); a layer that casts the sun's shadow also gives shadowKey() (a
+// string that changes with what it casts: its mesh and pose; null: casts nothing now) and
+// shadowSteps(sun) (its steps into the shadow map, sun: {matrix, texel}). view: {viewProjection,
+// eye, light (unit, towards the sun), scale (the drawing buffer's), width, height, shadow (the
+// frame's ShadowMap, web/gl/shadow_map.js: every receiver binds its texture), sun ({matrix, texel}
+// of the map this frame reads, or null: no shadow)}. A study's renderer extends StudyLayer (below).
+//
+// The shadow map is redrawn only when it is stale (a caster's key or the sun changed): its steps
+// come first in the frame and count against the frame's budget like any other (a frame in parts
+// draws them in parts). While only the camera moves, the map is reused. A moving frame (a
+// FrameGovernor's quality.moving: a sway's poses, a drag) or one at a cheap level (> 0) never redraws
+// it: it reuses a map of the same casters and sun drawn at an older pose (a swaying tree's shadow
+// stays at the pose it had when the motion began, and is redrawn once the view is still), or draws
+// without the sun's shadow.
 // Does not: talk to the worker, know any study's meshes, or pace its frames (the page's FrameLoop,
 // FrameGovernor or ProgressiveLoop call render; a frame alone asks its own FrameLoop).
 import { createContext, drawingBufferSize, finishGpu, resizeCanvas } from './context.js';
@@ -26,6 +38,7 @@ import { Ground, groundUnder } from './ground.js';
 import { OrbitCamera } from './orbit_camera.js';
 import { ProgressiveFrame } from './progressive_frame.js';
 import { loadPrograms } from './program.js';
+import { ShadowMap, sunViewProjection } from './shadow_map.js';
 import { DEFAULT_SUNS, defaultSunDirection, sunDirection } from './sun.js';
 
 const COMMON_SHADERS = new URL('../../shaders/common/', import.meta.url).href;
@@ -58,10 +71,19 @@ export class Frame {
     this.frameTotals = {};
     this.frameCpuMs = 0;
     this.lastFrame = { layers: 0, steps: 0 };
+    this.shadows = true;     // the sun's shadow map on (setShadows)
+    this.shadowMap = null;   // made by init()
+  }
+
+  // Sun shadows on or off (off: neither the shadow map nor the ground's stand-in shadow).
+  setShadows(on) {
+    this.shadows = Boolean(on);
+    this.request();
   }
 
   // Compiles the ground's program (when the frame has a ground); call once before the first frame.
   async init() {
+    this.shadowMap ||= new ShadowMap(this.gl);
     if (!this.withGround) return;
     const p = await loadPrograms(this.gl, COMMON_SHADERS, { ground: ['ground.vert', 'ground.frag'] });
     this.groundProgram = p.ground;
@@ -137,6 +159,39 @@ export class Frame {
     return groundUnder(footprint, this.light);
   }
 
+  // The shadow map for a frame at governor level `cheap`, `moving` (a FrameGovernor's quality: the
+  // view or the tree's pose moves): {steps (its redrawing, or none), sun ({matrix, texel} the
+  // receivers read, or null)}. See the file's opening comment.
+  #shadowPass(cheap, moving) {
+    const map = this.shadowMap;
+    const none = { steps: [], sun: null };
+    if (!this.shadows || !map || !map.complete) return none;
+    const casters = this.layers.filter((layer) => layer.shadowSteps && layer.shadowKey?.() && layer.worldBounds?.());
+    if (casters.length === 0) return none;
+    const keys = casters.map((layer) => layer.shadowKey());
+    const lightKey = this.light.map((x) => x.toFixed(6)).join(',');
+    const key = `${keys.join('|')}@${lightKey}`;
+    const current = { matrix: map.matrix, texel: map.texel };
+    if (map.key === key) return { steps: [], sun: current };
+    if (cheap > 0 || moving) {
+      // The same casters' (mesh ids before the pose's '#') and sun's map at an older pose, or none.
+      const loose = (k) => k && k.split('@').map((part, i) => (i === 0 ? part.split('|').map((c) => c.split('#')[0]).join('|') : part)).join('@');
+      return map.key && loose(map.key) === loose(key) ? { steps: [], sun: current } : none;
+    }
+    let box = null;
+    for (const layer of casters) {
+      const b = layer.worldBounds();
+      if (!box) box = { min: [...b.min], max: [...b.max] };
+      else for (let i = 0; i < 3; ++i) {
+        box.min[i] = Math.min(box.min[i], b.min[i]);
+        box.max[i] = Math.max(box.max[i], b.max[i]);
+      }
+    }
+    const sun = sunViewProjection(box, this.light, map.size);
+    const steps = map.steps(key, sun, casters.flatMap((layer) => layer.shadowSteps(sun)));
+    return { steps, sun };
+  }
+
   // False while the frame cannot draw (its ground or a layer's programs not made yet).
   ready() {
     return !(this.withGround && !this.ground) && this.layers.every((layer) => layer.ready?.() !== false);
@@ -181,11 +236,20 @@ export class Frame {
       light: this.light, scale: this.scale, width, height,
     };
     const gl = this.gl;
-    const steps = [];
-    const totals = { triangles: 0, lines: 0, drawCalls: 0 };
+    const shadow = this.#shadowPass(quality?.cheap || 0, Boolean(quality?.moving));
+    view.shadow = this.shadowMap;
+    view.sun = shadow.sun;
+    const steps = [...shadow.steps];
+    // The shadow pass's primitives are in totals.primitives (the budget's count), not in triangles
+    // (what the layers show: table 4.1's counts).
+    const totals = { triangles: 0, lines: 0, drawCalls: 0,
+      shadowPrimitives: shadow.steps.reduce((n, step) => n + step.primitives, 0),
+      shadow: shadow.sun ? (shadow.steps.length ? 'drawn' : 'reused') : 'off' };
     if (this.showGround && this.ground) {
       const ground = this.#groundOptions();
-      steps.push({ primitives: 0, setup: () => {}, draw: () => this.ground.draw(view.viewProjection, ground) });
+      // The stand-in shadow under the crown only where no layer casts the sun's (shadows on).
+      ground.blob = this.shadows && !shadow.sun ? 0.45 : 0;
+      steps.push({ primitives: 0, setup: () => {}, draw: () => this.ground.draw(view.viewProjection, ground, this.shadowMap, shadow.sun) });
       totals.triangles += 2;
       totals.drawCalls += 1;
     }
@@ -249,6 +313,8 @@ export class Frame {
     for (const layer of this.layers.splice(0)) layer.dispose?.();
     this.progress.abort();
     this.ground?.dispose();
+    this.shadowMap?.dispose();
+    this.shadowMap = null;
     if (this.groundProgram) this.gl.deleteProgram(this.groundProgram.program);
     this.ground = null;
   }

@@ -59,9 +59,15 @@ export class FrameGovernor {
 
   // The page drew `primitives` in this animation frame of a frame of `framePrimitives`; complete:
   // the frame is finished (else a ProgressiveFrame continues it, or a moving view starts the next
-  // one). Call after drawing, before the FrameLoop's fence signals.
-  drew(primitives, complete, framePrimitives = primitives) {
-    this.pendingDraw = { primitives, complete, framePrimitives };
+  // one). once: the frame's primitives that moving frames do not draw again (the sun's shadow map,
+  // web/gl/shadow_map.js: redrawn only when the view is still, reused while it moves). A frame is
+  // judged for the motion level as if without them (its time scaled by the share of the rest):
+  // the still frame that redraws the map after an edit says what a moving frame costs without it,
+  // and a frame below MIN_GOVERNED without them is not judged. The rate counts every primitive.
+  // Call after drawing, before the FrameLoop's fence signals.
+  drew(primitives, complete, framePrimitives = primitives, once = 0) {
+    const repeated = Math.max(0, framePrimitives - (once || 0));
+    this.pendingDraw = { primitives, complete, framePrimitives, repeated };
   }
 
   // Something in the view moves now (a new pose, a camera step).
@@ -128,17 +134,18 @@ export class FrameGovernor {
     if (part && !part.complete) {
       // A frame too big for one animation frame is too slow by its size over the budget: judged
       // at its first part (a moving frame is not finished: the next one starts cheaper).
-      if (!drawn.judged && part.framePrimitives > budget && part.framePrimitives >= MIN_GOVERNED) {
+      if (!drawn.judged && part.repeated > budget && part.repeated >= MIN_GOVERNED) {
         drawn.judged = true;
-        this.#judge(drawn, this.targetMs * (part.framePrimitives / budget));
+        this.#judge(drawn, this.targetMs * (part.repeated / budget));
       }
       return;
     }
     this.drawn = null;
     // A frame of few primitives is never made cheaper: its latency is the page's and the
     // compositor's, not its own (SwiftShader: 100-300 ms for any frame on a loaded machine).
-    if (part && part.framePrimitives < MIN_GOVERNED) return;
-    if (!drawn.judged) this.#judge(drawn, part ? performance.now() - this.frameStart : drawMs);
+    if (part && part.repeated < MIN_GOVERNED) return;
+    const share = part && part.framePrimitives > 0 ? part.repeated / part.framePrimitives : 1;
+    if (!drawn.judged) this.#judge(drawn, part ? (performance.now() - this.frameStart) * share : drawMs);
   }
 
   #judge(drawn, ms) {

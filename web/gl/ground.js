@@ -1,6 +1,7 @@
-// The ground plane (shaders/common/ground.*): a square of half-size `extent` at y = 0 with a soft
-// contact shadow, fading into the background. Shared by every study's view.
-// Does not: cast real shadows or follow a terrain (the terrain study draws its own surface).
+// The ground plane (shaders/common/ground.*): a square of half-size `extent` at y = 0 fading into
+// the background, receiving the sun's shadow map (web/gl/shadow_map.js) where a layer casts one,
+// else a soft stand-in shadow under the crown. Shared by every study's view.
+// Does not: cast shadows or follow a terrain (the terrain study draws its own surface).
 import { BACKGROUND } from './context.js';
 
 // The ground's draw options under a footprint {center, extent, shadowRadius, crownHeight,
@@ -30,10 +31,15 @@ export class Ground {
   }
 
   // Draws the ground (2 triangles, 1 draw call) pushed back by a polygon offset.
-  // center: [x, y, z] m; shadowOffset: [x, z] m of the shadow's centre from `center`.
-  draw(viewProjection, { center, extent, shadowRadius, shadowOffset }) {
+  // center: [x, y, z] m; shadowOffset: [x, z] m of the stand-in shadow's centre from `center`;
+  // blob: its strength (0: none). map: the frame's ShadowMap (its texture is always bound for the
+  // sampler) and sun: {matrix, texel} when the ground reads it, else null.
+  draw(viewProjection, { center, extent, shadowRadius, shadowOffset, blob = 0.45 }, map = null, sun = null) {
     const gl = this.gl, g = this.program;
     gl.useProgram(g.program);
+    if (map) map.bindFor(g, sun);
+    else gl.uniform1f(g.uniforms.uShadowOn, 0);
+    gl.uniform1f(g.uniforms.uBlob, blob);
     gl.uniformMatrix4fv(g.uniforms.uViewProjection, false, viewProjection);
     gl.uniform3fv(g.uniforms.uCenter, center);
     gl.uniform1f(g.uniforms.uExtent, extent);

@@ -12,10 +12,12 @@
 import { BACKGROUND, setDrawingBufferSize } from './context.js';
 import { OffscreenTarget } from './offscreen_target.js';
 
-// A step: {primitives, setup(), draw(first, count), teardown()?}. primitives 0: an atomic step
-// (cheap: the ground, markers), run whole and not counted against the budget; else draw(first,
-// count) draws primitives [first, first + count) of it, after setup() (called again on every
-// resume: other code may have changed the GL state in between), then teardown().
+// A step: {primitives, setup(), draw(first, count), teardown()?, ownTarget?}. primitives 0: an
+// atomic step (cheap: the ground, markers), run whole and not counted against the budget; else
+// draw(first, count) draws primitives [first, first + count) of it, after setup() (called again on
+// every resume: other code may have changed the GL state in between), then teardown(). ownTarget:
+// the step draws into a framebuffer of its own (the sun's shadow map, web/gl/shadow_map.js), and
+// the frame's target is bound again after it.
 export class ProgressiveFrame {
   // gl: the context whose canvas frames are drawn on (omitted: start/run only, no target).
   constructor(gl = null) {
@@ -90,6 +92,7 @@ export class ProgressiveFrame {
         s.setup();
         s.draw(0, 0);
         s.teardown?.();
+        if (s.ownTarget && this.gl) this.#bind();
         this.step += 1;
         continue;
       }
@@ -99,6 +102,7 @@ export class ProgressiveFrame {
       s.setup();
       s.draw(this.offset, n);
       s.teardown?.();
+      if (s.ownTarget && this.gl) this.#bind();
       drawn += n;
       this.offset += n;
       if (this.offset >= s.primitives) {

@@ -32,7 +32,7 @@ export class ProgressiveLoop {
       this.dirty = false;
     }
     const drawn = r.render(this.camera, quality, { budget: this.governor.budget(), resume });
-    this.governor.drew(drawn.drawnPrimitives, !drawn.partial, drawn.primitives);
+    this.governor.drew(drawn.drawnPrimitives, !drawn.partial, drawn.primitives, drawn.shadowPrimitives);
     if (drawn.partial || this.dirty) {  // the rest of the frame, or what changed while it was drawn
       this.frames.request();
       return true;  // (and the hooks wait for that frame)

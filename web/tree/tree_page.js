@@ -36,7 +36,7 @@ const ui = {
   yearText: $('year-text'), selection: $('selection'), cut: $('cut'), undo: $('undo'), redo: $('redo'),
   prunes: $('prunes'), copyLink: $('copy-link'), resetView: $('reset-view'), embed: $('embed'),
   downloadGlb: $('download-glb'), downloadJson: $('download-json'), downloadPng: $('download-png'),
-  shareStatus: $('share-status'), wind: $('wind'), windInfo: $('wind-info'), renderMode: $('render-mode'),
+  shareStatus: $('share-status'), wind: $('wind'), windInfo: $('wind-info'), renderMode: $('render-mode'), shadows: $('shadows'),
   bark: $('bark'), barkInfo: $('bark-info'),
   renderTable: $('render-table'), renderCol: $('render-col'), timeFrames: $('time-frames'), cancel: $('cancel'),
 };
@@ -104,8 +104,10 @@ const controller = new StudyController({
     return false;
   },
   // The hash carries the camera after the state; each history entry keeps the year shown.
-  // and the Bark choice when simulated (bark=sim: the worker takes it out before the core decodes).
-  viewHash: () => `${renderer ? `&cam=${camera.toHash()}` : ''}${ui.bark.value === 'sim' ? '&bark=sim' : ''}`,
+  // and the page's fields off their first value (the worker takes them out before the core
+  // decodes): the Bark choice when simulated (bark=sim), Sun shadows when off (shadows=off).
+  viewHash: () => `${renderer ? `&cam=${camera.toHash()}` : ''}${ui.bark.value === 'sim' ? '&bark=sim' : ''}`
+    + `${ui.shadows.value === 'off' ? '&shadows=off' : ''}`,
   historyExtra: () => showYear,
   // Back/forward (and undo/redo, which use them) restore the entry's state; a hash typed by the
   // user arrives here too and becomes a new entry.
@@ -137,6 +139,7 @@ let frameDirty = true;
 let wholeNext = false;  // the next frame is drawn whole, not in parts (requestFrame(true, true))
 let freshNext = false;  // the next frame starts anew, not resuming one begun before (a new selection)
 let frameLevel = -1;  // the governor's level of the frame in parts
+let poseAtFrameStart = 0;  // the renderer's poseSerial when the frame on its way was started
 const frames = new FrameLoop(() => {
   // While a big tree goes up in parts the canvas keeps its last frame (no draw: a frame of the old
   // big tree costs seconds on a CPU GL, and every part's upload would wait for it).
@@ -162,6 +165,7 @@ const frames = new FrameLoop(() => {
   let whole = false;
   if (!resume) {
     viewsAtFrameStart = viewsReceived;
+    poseAtFrameStart = renderer.poseSerial;
     freshNext = false;
     quality = governor.quality(cheapAvailable);
     frameLevel = quality.level;
@@ -174,7 +178,7 @@ const frames = new FrameLoop(() => {
   const dragging = next.moving && next.capped && !windPlaying;
   const drawn = frame.render(camera, quality, { budget: dragging || whole ? Infinity : governor.budget(), resume });
   if (!drawn) return false;
-  governor.drew(drawn.drawnPrimitives, !drawn.partial, drawn.primitives);
+  governor.drew(drawn.drawnPrimitives, !drawn.partial, drawn.primitives, drawn.shadowPrimitives);
   setHooks({ frameScale: frame.scale, frameMode: drawn.mode, framesDrawn: frames.stats.drawn,
     framesSkipped: frames.stats.skippedBusy, frameGpuMs: Math.round(frames.stats.gpuMs), framePartial: drawn.partial ? 1 : 0 });
   if (drawn.partial) {
@@ -189,8 +193,13 @@ const frames = new FrameLoop(() => {
   }
   if (drawn.mode !== 'motion') table.showFrame(drawn);
   // tests wait for the new tree's frame, and for the frame that shows a new selection
-  setHooks({ drawnTreeSerial: treeSerial, drawnSelection: drawn.selected ?? -1,
-    drawnMode: drawn.mode, drawnViews: viewsAtFrameStart });
+  treeDrawn(treeSerial);
+  setHooks({ drawnTreeSerial: treeSerial, drawnYear: shownYear, drawnSelection: drawn.selected ?? -1,
+    drawnMode: drawn.mode, drawnViews: viewsAtFrameStart,
+    // the sun's shadow map in this frame: 'drawn' (redrawn), 'reused' or 'off'; maps drawn so far
+    drawnShadow: drawn.shadow, shadowPasses: frame.shadowMap?.passes ?? 0,
+    // the poses this frame was started with, and the latest (equal: the pose on screen is the latest)
+    drawnPose: poseAtFrameStart, latestPose: renderer.poseSerial });
   bumpHook('framesShown');  // finished frames (the orbit frame time of tests/browser/no_blank_frames)
   if (freshOnDraw) {  // the tree that answers the latest edit is on screen now
     freshOnDraw = false;
@@ -198,6 +207,20 @@ const frames = new FrameLoop(() => {
   }
   return true;
 }, { governor });
+// The tree serials drawn: treeOnScreen(serial) resolves once a finished frame shows that tree or
+// a newer one (at once without a renderer: nothing will be drawn).
+let drawnSerial = 0;
+let drawnWaiters = [];
+function treeDrawn(serial) {
+  drawnSerial = Math.max(drawnSerial, serial);
+  const done = drawnWaiters.filter((w) => w.serial <= drawnSerial);
+  drawnWaiters = drawnWaiters.filter((w) => w.serial > drawnSerial);
+  for (const w of done) w.resolve();
+}
+function treeOnScreen(serial) {
+  if (!renderer || drawnSerial >= serial) return Promise.resolve();
+  return new Promise((resolve) => drawnWaiters.push({ serial, resolve }));
+}
 const requestFrame = (urgent = false, whole = false) => {
   if (!renderer) return;
   frameDirty = true;
@@ -272,6 +295,7 @@ async function startRenderer() {
   try {
     frame = new Frame(ui.canvas, { camera, what: 'the tree', request: () => requestFrame() });
     await frame.init();
+    frame.setShadows(ui.shadows.value !== 'off');
     renderer = await frame.addLayer(new Renderer(frame));
     frames.attach(frame.gl, ui.canvas);
     camera.attach(ui.canvas, cameraMoved);
@@ -439,6 +463,7 @@ worker.on('ready', (msg) => {
   dock.add('age', $('getting-started').querySelector('[data-for-key="years"]'));
   applyState(msg.decoded.state);
   ui.bark.value = msg.decoded.bark === 'sim' ? 'sim' : 'procedural';
+  showShadows(msg.decoded.shadows);
   notices.set('hash', msg.decoded.notices);
   if (camera.fromHash(msg.decoded.state.camera)) frameNext = false;
   updateUndoButtons();
@@ -448,6 +473,7 @@ worker.on('ready', (msg) => {
 worker.on('decoded', (msg) => {
   applyState(msg.state);
   ui.bark.value = msg.bark === 'sim' ? 'sim' : 'procedural';
+  showShadows(msg.shadows);
   notices.set('hash', msg.notices);
   if (camera.fromHash(msg.state.camera)) frameNext = false;
   sendUpdate('restore');
@@ -635,9 +661,15 @@ ui.year.addEventListener('input', () => {
   sendUpdate('scrub');
 });
 
+// Play shows every year: the next year is asked for 250 ms after this year's tree is on screen
+// (not after its reply: with a frame slower than that, drawn in parts or with the sun's shadow map
+// redrawn for each new tree, the year bar ran ahead of the view and years were never seen). Pause
+// holds the year shown. playRun: a Pause and a new Play do not leave the old loop running.
 let playing = false;
+let playRun = 0;
 function stopPlaying() {
   playing = false;
+  playRun += 1;
   ui.play.textContent = 'Play';
   ui.play.setAttribute('aria-pressed', 'false');
 }
@@ -646,17 +678,20 @@ ui.play.addEventListener('click', async () => {
   const n = fullYears();
   if (n === null || panel === null) return;
   playing = true;
+  const run = ++playRun;
   ui.play.textContent = 'Pause';
   ui.play.setAttribute('aria-pressed', 'true');
   let y = showYear === null || showYear >= n ? 0 : showYear;
-  while (playing && y <= n) {
+  while (run === playRun && y <= n) {
     showYear = y >= n ? null : y;
     const reply = await sendUpdate('scrub').reply;  // null when superseded
-    if (!reply || reply.type !== 'tree' || !playing) break;
+    if (!reply || reply.type !== 'tree' || run !== playRun) break;
+    await treeOnScreen(treeSerial);
+    if (run !== playRun) break;
     await new Promise((resolve) => setTimeout(resolve, 250));
     y += 1;
   }
-  stopPlaying();
+  if (run === playRun) stopPlaying();
 });
 
 // Picking: a click (not a drag) on the view selects the branch under the pointer.
@@ -789,6 +824,20 @@ ui.renderMode.addEventListener('change', () => {
   if (!panel) return;
   panel.setValues({ render_mode: Number(ui.renderMode.value) });
   scheduleUpdate(panel.stage('render_mode'));
+});
+
+// Sun shadows on or off (the frame's shadow map and the ground's stand-in shadow; a page view
+// setting, not a row of the tree's table: the tree and its exports are the same either way). The
+// link carries shadows=off as it carries the camera: the current history entry is rewritten.
+function showShadows(value) {
+  ui.shadows.value = value === 'off' ? 'off' : 'on';
+  frame?.setShadows(ui.shadows.value !== 'off');
+  setHooks({ shadows: ui.shadows.value });
+  requestFrame(true, true);
+}
+ui.shadows.addEventListener('change', () => {
+  showShadows(ui.shadows.value);
+  writeHash();
 });
 
 // ---------------------------------------------------------------- share and export

@@ -1,6 +1,11 @@
 // The tree study's WebGL2 renderer: bark tubes, double-sided leaves and flowers on the shared
 // ground (full-polygon mode, textured as the .glb: shaders/tree/tree_textured.frag), or the hybrid mode of thesis chapter 4: texture cards from a card
 // atlas plus lines. Shaders (GLSL ES 3.00) are shaders/tree/*, including shaders/common/*.
+// The tree casts the sun's shadow (shadowKey, shadowSteps: its full mesh's parts into the frame's
+// shadow map, web/gl/shadow_map.js, leaves cut out by alpha, in both modes) and full mode receives
+// it on every part, with the crown's ambient occlusion per vertex (the worker's `occlusion`,
+// core/tree/crown_occlusion.h) darkening the sky light of inner leaves; hybrid mode's cards and
+// lines do not receive it.
 // A StudyLayer (web/gl/frame.js): a layer of a Frame (layerSteps: the tree under the frame's
 // camera and sun; the frame draws the ground under its footprint), on the tree page, the grove's
 // neighbours to come, <niwa-tree> and beside other studies (tests/browser/frame_layers.test.mjs).
@@ -13,6 +18,7 @@ import { copyOf, floatAttribute, staticBuffer, uintAttribute, viewOf } from '../
 import { PickTarget } from '../gl/pick.js';
 import { ProgressiveFrame } from '../gl/progressive_frame.js';
 import { loadPrograms } from '../gl/program.js';
+import { ShadowMap } from '../gl/shadow_map.js';
 import { dataTexture, imageTexture, restPoses, uploadPoses } from '../gl/textures.js';
 
 export { BACKGROUND } from '../gl/context.js';
@@ -74,7 +80,9 @@ function atlasPartLook(gl, program, name, map) {
 // the atlas triangles' uvs (leaf blades and blossoms cut out by alpha, as the full view and the
 // .glb's cards_* atlas); without, in the parts' plain colours (PARTS).
 // uploaded: Map('part.attr' -> buffer) of geometry already uploaded (in parts), deleted here.
-export function paintAtlas(gl, program, hybrid, fb, texture, light, textures = null, uploaded = null) {
+// shadowMap: a ShadowMap whose texture the program's shadow sampler reads (tree_textured.frag
+// declares one; the atlas is drawn unshadowed), or null for a program without one (tree.frag).
+export function paintAtlas(gl, program, hybrid, fb, texture, light, textures = null, uploaded = null, shadowMap = null) {
   const size = hybrid.atlasSize;
   gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
   gl.viewport(0, 0, size, size);
@@ -88,6 +96,7 @@ export function paintAtlas(gl, program, hybrid, fb, texture, light, textures = n
   gl.uniform1f(program.uniforms.uXray, 0);
   gl.uniform1f(program.uniforms.uSpecular, 0);
   clearAtlasSamplers(gl);
+  shadowMap?.bindFor(program, null);
   let triangles = 0;
   for (const name of ['bark', 'leaves', 'flowers']) {
     const part = hybrid[name];
@@ -148,7 +157,7 @@ export function createAtlasTarget(gl, size) {
 // SwiftShader time at once, so it is drawn `budget` triangles at a time, each part once the GPU
 // has finished the last (gpuDone), then mipmapped. uploaded: its buffers (chunked_upload.js),
 // deleted here. Resolves to the triangles drawn, or -1 when cancelled() turned true.
-export async function paintAtlasInParts(gl, program, hybrid, fb, texture, light, uploaded, budget, cancelled, textures = null) {
+export async function paintAtlasInParts(gl, program, hybrid, fb, texture, light, uploaded, budget, cancelled, textures = null, shadowMap = null) {
   const size = hybrid.atlasSize;
   gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
   gl.viewport(0, 0, size, size);
@@ -191,6 +200,7 @@ export async function paintAtlasInParts(gl, program, hybrid, fb, texture, light,
         gl.uniform1f(program.uniforms.uSpecular, 0);
         // The textures of the full view (as paintAtlas), or plain colours before they are there.
         clearAtlasSamplers(gl);
+        shadowMap?.bindFor(program, null);
         atlasPartLook(gl, program, name, map);
         gl.bindVertexArray(vao);
       },
@@ -244,6 +254,9 @@ export class Renderer extends StudyLayer {
     this.leafLength = 0.05;  // metres (the tree's leaf_size)
     this.textures = {};      // kind -> {texture, digest}: the worker's procedural textures
     this.look = null;        // {leaf_shape, season, autumn_colour} of the mesh drawn
+    this.meshSerial = 0;     // meshes installed: with poseSerial, what the shadow map holds
+    this.poseSerial = 0;
+    this.ownShadow = null;   // a renderer alone: a ShadowMap for its samplers (never drawn)
     this.setRestPoses(1);
   }
 
@@ -294,6 +307,7 @@ export class Renderer extends StudyLayer {
     const nodes = Math.floor(poses.length / 16);
     this.poseRows = uploadPoses(gl, this.poseTexture, poses, nodes, this.poseRows);
     this.poseNodes = nodes;
+    this.poseSerial += 1;
     this.wind = Number(wind) || 0;
     this.swayTime = Number(time) || 0;
     this.swaying = true;
@@ -303,8 +317,9 @@ export class Renderer extends StudyLayer {
     const gl = this.gl;
     const p = await loadPrograms(gl, shaderBase, {
       tree: ['tree.vert', 'tree_textured.frag'], pick: ['pick.vert', '../common/pick.frag'], atlas: ['atlas.vert', 'tree_textured.frag'],
-      card: ['card.vert', 'card.frag'], line: ['line.vert', 'line.frag'],
+      card: ['card.vert', 'card.frag'], line: ['line.vert', 'line.frag'], shadow: ['shadow.vert', 'shadow.frag'],
     });
+    this.shadowProgram = p.shadow;
     this.treeProgram = p.tree;
     this.pickProgram = p.pick;
     this.atlasProgram = p.atlas;
@@ -396,6 +411,14 @@ export class Renderer extends StudyLayer {
         floatAttribute(gl, 6, uvs, 2);
         buffers.push(uvs);
       }
+      // The crown's ambient occlusion per vertex (without it: the constant 0, see layerSteps).
+      if (data.occlusion && data.occlusion.byteLength === vertices * 4) {
+        const occlusion = upload('occlusion', data.occlusion);
+        floatAttribute(gl, 7, occlusion, 1);
+        buffers.push(occlusion);
+      } else {
+        gl.disableVertexAttribArray(7);
+      }
       if (data.branchIds && data.branchIds.byteLength === data.positions.byteLength / 3) {
         const buffer = upload('branchIds', data.branchIds);
         uintAttribute(gl, 2, buffer, 1);
@@ -416,6 +439,7 @@ export class Renderer extends StudyLayer {
       gl.bindVertexArray(null);
       this.parts[name] = { vao, buffers, count: data.indices.byteLength / 4, picking: Boolean(data.branchIds) };
     }
+    this.meshSerial += 1;  // the shadow map is redrawn for it
     const min = bounds.min, max = bounds.max;
     this.treeBounds = { min: [...min], max: [...max] };
     this.center = [(min[0] + max[0]) / 2, 0, (min[2] + max[2]) / 2];
@@ -443,7 +467,7 @@ export class Renderer extends StudyLayer {
   // Paints the card atlas of `hybrid` into this.atlas (reallocated when its size changes).
   #paintHybridAtlas(hybrid, uploaded = null) {
     this.#allocateAtlas(hybrid.atlasSize);
-    const triangles = paintAtlas(this.gl, this.atlasProgram, hybrid, this.atlas.fb, this.atlas.texture, this.light, this.textures, uploaded);
+    const triangles = paintAtlas(this.gl, this.atlasProgram, hybrid, this.atlas.fb, this.atlas.texture, this.light, this.textures, uploaded, this.#shadowMap());
     return { atlasSize: hybrid.atlasSize, atlasTriangles: triangles };
   }
 
@@ -488,7 +512,7 @@ export class Renderer extends StudyLayer {
       }
       this.#allocateAtlas(hybrid.atlasSize);
       const triangles = await paintAtlasInParts(gl, this.atlasProgram, hybrid, this.atlas.fb, this.atlas.texture, this.light,
-        uploaded, budget, () => !current(), this.textures);
+        uploaded, budget, () => !current(), this.textures, this.#shadowMap());
       if (!current() || triangles < 0) return false;
       this.motionPending = false;
       // The parts painted from the full view's textures (the others in plain colours).
@@ -690,7 +714,9 @@ export class Renderer extends StudyLayer {
       this.#bindPoses(t);
       gl.vertexAttrib1f(3, 0);  // no highlight on parts without branch ids
       gl.vertexAttrib2f(6, 0, 0);  // no flutter on parts without uvs
+      gl.vertexAttrib1f(7, 0);     // no occlusion on parts without it
       gl.uniform1f(t.uniforms.uLeafLength, this.leafLength);
+      (view.shadow || this.#shadowMap()).bindFor(t, view.sun || null);
     };
     const flutter = this.#flutter();
     for (const [name, part] of Object.entries(this.parts)) {
@@ -702,6 +728,7 @@ export class Renderer extends StudyLayer {
           gl.uniform3fv(t.uniforms.uColor, look.color);
           gl.uniform3fv(t.uniforms.uColorVariation, look.variation);
           gl.uniform1f(t.uniforms.uDoubleSided, look.doubleSided);
+          gl.uniform1f(t.uniforms.uCrownLight, name === 'leaves' ? 1 : 0);  // tree_textured.frag
           gl.uniform1f(t.uniforms.uSpecular, look.specular);
           gl.uniform1f(t.uniforms.uXray, 0);
           gl.uniform1f(t.uniforms.uFlutter, name === 'leaves' ? flutter : 0);
@@ -724,6 +751,7 @@ export class Renderer extends StudyLayer {
           gl.uniform1f(t.uniforms.uUseTexture, 0);
           gl.uniform3fv(t.uniforms.uColor, PARTS.bark.color);
           gl.uniform1f(t.uniforms.uDoubleSided, 0);
+          gl.uniform1f(t.uniforms.uCrownLight, 0);
           gl.uniform1f(t.uniforms.uFlutter, 0);
           gl.disable(gl.DEPTH_TEST);
           gl.enable(gl.BLEND);
@@ -740,6 +768,53 @@ export class Renderer extends StudyLayer {
       out.drawCalls += 1;
     }
     return { steps, totals: out };
+  }
+
+  // The ShadowMap whose texture the samplers read: the frame's, or (a renderer alone) one of its own.
+  #shadowMap() {
+    if (this.frame?.shadowMap) return this.frame.shadowMap;
+    return (this.ownShadow ||= new ShadowMap(this.gl));
+  }
+
+  // What the tree casts into the sun's shadow map now (web/gl/frame.js): its mesh and pose
+  // ("mesh#pose"), or null (no tree yet). Hybrid mode casts from its full mesh too (its parts are
+  // installed in both modes), so the ground's shadow is the same; its cards do not receive it, and
+  // its map is drawn once per mesh and sun (at the pose then), not again for every pose: a full
+  // mesh's shadow pass would cost hybrid mode's frames many times their own primitives.
+  shadowKey() {
+    if (!this.shadowProgram || Object.keys(this.parts).length === 0) return null;
+    return `${this.meshSerial}#${this.hybrid ? 'hybrid' : this.poseSerial}`;
+  }
+
+  // The parts' steps into the shadow map (the frame's ShadowMap binds it in each setup), seen
+  // through sun.matrix; leaves and flowers cut out by their texture's alpha, as drawn.
+  shadowSteps(sun) {
+    const gl = this.gl;
+    const s = this.shadowProgram;
+    const flutter = this.#flutter();
+    return Object.entries(this.parts).map(([name, part]) => ({
+      primitives: part.count / 3,
+      setup: () => {
+        gl.useProgram(s.program);
+        gl.uniformMatrix4fv(s.uniforms.uSunViewProjection, false, sun.matrix);
+        this.#bindPoses(s);
+        gl.vertexAttrib2f(6, 0, 0);
+        gl.uniform1f(s.uniforms.uLeafLength, this.leafLength);
+        gl.uniform1f(s.uniforms.uFlutter, name === 'leaves' ? flutter : 0);
+        const spec = TEXTURED[name];
+        const map = spec && spec.alphaCutoff > 0 && this.textures[spec.map];
+        gl.uniform1f(s.uniforms.uUseTexture, map ? 1 : 0);
+        gl.uniform1f(s.uniforms.uAlphaCutoff, spec ? spec.alphaCutoff : 0);
+        gl.activeTexture(gl.TEXTURE1);
+        gl.bindTexture(gl.TEXTURE_2D, map ? map.texture : null);
+        gl.uniform1i(s.uniforms.uBaseMap, 1);
+        gl.activeTexture(gl.TEXTURE0);
+        gl.disable(gl.CULL_FACE);
+        gl.bindVertexArray(part.vao);
+      },
+      draw: (first, n) => gl.drawElements(gl.TRIANGLES, 3 * n, gl.UNSIGNED_INT, 12 * first),
+      teardown: () => gl.bindVertexArray(null),
+    }));
   }
 
   // ---- As a layer of a Frame (web/gl/frame.js) ----
@@ -762,7 +837,9 @@ export class Renderer extends StudyLayer {
     for (const t of Object.values(this.textures)) gl.deleteTexture(t.texture);
     this.textures = {};
     gl.deleteTexture(this.poseTexture);
-    for (const p of [this.treeProgram, this.pickProgram, this.atlasProgram, this.cardProgram, this.lineProgram]) {
+    this.ownShadow?.dispose();
+    this.ownShadow = null;
+    for (const p of [this.treeProgram, this.pickProgram, this.atlasProgram, this.cardProgram, this.lineProgram, this.shadowProgram]) {
       if (p) gl.deleteProgram(p.program);
     }
     this.treeProgram = null;

@@ -21,14 +21,15 @@
  * @typedef {Envelope & {type: 'init', hash?: string}} InitMessage
  *   -> ReadyMessage
  * @typedef {Envelope & {type: 'ready', paramTable: ParamRow[], presets: Object[],
- *   decoded: {state: TreeStateJson, notices: string[]}}} ReadyMessage
+ *   decoded: {state: TreeStateJson, notices: string[], bark: 'procedural'|'sim', shadows: 'on'|'off'}}} ReadyMessage
  * @typedef {{key: string, symbol: string, unit: string, default: number, min: number, max: number,
  *   integer: boolean, group: string, group_title?: string, stage?: 'grow'|'mesh'|'sway'|'view',
  *   help: string}} ParamRow
  *
  * @typedef {Envelope & {type: 'decode', hash: string}} DecodeMessage
- *   -> {type: 'decoded', id, client, state: TreeStateJson, notices: string[], bark: 'procedural'|'sim'}
- *   (the link's bark=sim is the page's field, taken out before the core decodes the hash)
+ *   -> {type: 'decoded', id, client, state: TreeStateJson, notices: string[], bark: 'procedural'|'sim',
+ *   shadows: 'on'|'off'} (the link's bark= and shadows= are the page's fields, taken out before the
+ *   core decodes the hash; a bad value of one is a notice)
  */
 
 /**
@@ -60,9 +61,11 @@
  * counts them {reused, fresh, dropped}; the textures' pixels ('textures.<kind>') and the hybrid atlas
  * ('atlas.<part>.*') go the same way (web/shell/worker_client.js treeExtras). Every part has joints (Uint32) and weights (Float32)
  * per vertex: the sway skin of core/sway/skin.h; leaves have uvs; bark has branchIds per vertex and
- * branchParents per branch.
+ * branchParents per branch; every part has occlusion (Float32 per vertex, 0-1: the crown's ambient
+ * occlusion, core/tree/crown_occlusion.h) when the mesh was built.
  * @typedef {{positions: ArrayBuffer, normals: ArrayBuffer, indices: ArrayBuffer, joints: ArrayBuffer,
- *   weights: ArrayBuffer, uvs?: ArrayBuffer, branchIds?: ArrayBuffer, branchParents?: ArrayBuffer}} MeshPart
+ *   weights: ArrayBuffer, uvs?: ArrayBuffer, branchIds?: ArrayBuffer, branchParents?: ArrayBuffer,
+ *   occlusion?: ArrayBuffer}} MeshPart
  * With render_mode 1, hybrid holds the clip-space triangles that paint the card atlas (thesis 4.2.1).
  * @typedef {{atlasSize: number, bark: MeshPart, leaves: MeshPart, flowers: MeshPart}} HybridAtlas
  * @typedef {Envelope & {type: 'tree', stats: Object, mesh: {bark: MeshPart, leaves: MeshPart,

@@ -354,16 +354,27 @@ export function createHandler(Module, ctx) {
     post({ type: 'export', id: msg.id, client, format: msg.format, variant: msg.variant, bytes }, [bytes]);
   }
 
-  // The link's page field bark=sim|procedural (the Bark choice) is the page's, not the core's: it
-  // is taken out before the core decodes the rest, and returned beside the state.
+  // The link's page fields are the page's choices, not rows of the tree's table (the tree and its
+  // exports are the same either way): taken out before the core decodes the rest, and returned
+  // beside the state, each at its first value unless the link names another (a bad value is
+  // dropped with a notice, as the core drops a bad value of its own keys): bark=procedural|sim
+  // (the Bark choice), shadows=on|off (Sun shadows). The page writes only values off the first.
+  const PAGE_FIELDS = { bark: ['procedural', 'sim'], shadows: ['on', 'off'] };
   const decode = (hash) => {
-    let bark = 'procedural';
+    const page = Object.fromEntries(Object.entries(PAGE_FIELDS).map(([key, values]) => [key, values[0]]));
+    const pageNotices = [];
     const rest = String(hash ?? '').replace(/^#/, '').split('&').filter((pair) => {
-      if (!pair.startsWith('bark=')) return true;
-      bark = pair.slice(5) === 'sim' ? 'sim' : 'procedural';
+      const eq = pair.indexOf('=');
+      const key = eq < 0 ? pair : pair.slice(0, eq);
+      const values = Object.hasOwn(PAGE_FIELDS, key) ? PAGE_FIELDS[key] : null;
+      if (!values) return true;
+      const value = eq < 0 ? '' : pair.slice(eq + 1);
+      if (values.includes(value)) page[key] = value;
+      else pageNotices.push(`${key}: '${value.slice(0, 64).replace(/[^\x20-\x7e]/g, '?')}' dropped, must be ${values.join(' or ')}`);
       return false;
     }).join('&');
-    return { ...JSON.parse(Module.decodeHash('tree', rest, '')), bark };
+    const decoded = JSON.parse(Module.decodeHash('tree', rest, ''));
+    return { ...decoded, notices: [...(decoded.notices || []), ...pageNotices], ...page };
   };
 
   // The client went away (web/worker/worker.js 'close'): its sway stops, its tree session is
@@ -383,8 +394,8 @@ export function createHandler(Module, ctx) {
     ready: (msg) => ({ paramTable, presets: JSON.parse(Module.presetsJson('tree')), decoded: decode(msg.hash) }),
     messages: {
       decode: (msg, client) => {
-        const { state, notices, bark } = decode(msg.hash);
-        post({ type: 'decoded', id: msg.id, client, state, notices, bark });
+        const { state, notices, bark, shadows } = decode(msg.hash);
+        post({ type: 'decoded', id: msg.id, client, state, notices, bark, shadows });
       },
       // An update of a later stage than 'grow' (the page's controller sends the earliest stage its
       // edits touched) restages the tree grown; the others grow.
