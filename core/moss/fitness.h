@@ -38,11 +38,11 @@ struct Fitness {
 Fitness FitnessOf(const SpeciesRanges& species, double T_s, double rh_s, double S, GForm form);
 
 // FitnessOf's G through a memo of each factor (a run's mosses and seeds ask the same T_s and rh_s
-// of a cell kept from yesterday, and the few light values a handful of equal photons give, day after
-// day): each factor is Suitability of its input, looked up by the input's bits in a direct-mapped
-// table per species and variable, and worked out (and stored) on a miss. The same bits as
-// FitnessOf(...).G (the same functions on the same inputs, multiplied in the same order). The
-// species' ranges and the form must stay those of the first call (one run's table).
+// of a cell kept from yesterday, and the few light values a handful of equal photons give, day
+// after day): each factor is Suitability of its input, looked up by the input's bits in a
+// direct-mapped table per species and variable, and worked out (and stored) on a miss. The same
+// bits as FitnessOf(...).G (the same functions on the same inputs, multiplied in the same order).
+// The species' ranges and the form must stay those of the first call (one run's table).
 class FitnessMemo {
  public:
   double G(Species species, const SpeciesRanges& ranges, double T_s, double rh_s, double S,
