@@ -112,7 +112,10 @@ void TracePhotons(const SoilCells& cells, const MossOccluders& mosses, const Pho
 // buckets; the same distance expression and order of additions as the grid, so the same bits. A
 // photon farther than reach_t from its cell's centroid (it cannot be, but for rounding) falls back
 // to the grid; lists longer than kMaxCandidatesPerCell a cell on average are not built (the grid
-// serves every photon).
+// serves every photon). When the map's land photons carry one power, or two in two runs (the
+// sun's, then the sky's: every day's map), each cell's photons are counted and its additions
+// replayed from the counts (the same bits); the cells within r_gather − reach_t of t's centroid
+// come first in t's lists and are counted without a distance test.
 class SoilPhotonSpread {
  public:
   static constexpr std::size_t kMaxCandidatesPerCell = 96;
