@@ -33,26 +33,40 @@ class RadiusGrid {
   // point_index.h computes it: ((dx² + dy²) + dz²) in double), in the grid's order.
   template <class Fn>
   void ForEachWithin(const glm::dvec3& q, Fn&& fn) const {
-    if (points_.empty()) return;
+    const double r2 = radius_ * radius_;
+    ForEachRowAround(q, [&](uint32_t k0, uint32_t k1) {
+      for (uint32_t k = k0; k < k1; ++k) {
+        const glm::dvec3& p = slot_points_[k];
+        const double dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
+        const double d2 = (dx * dx + dy * dy) + dz * dz;
+        if (d2 <= r2) fn(items_[k], d2);
+      }
+    });
+  }
+
+  // The candidates of ForEachWithin before its distance test, as runs of slots: fn(k0, k1) for
+  // each row of buckets around q, in the grid's order; slot k holds point order()[k]. For callers
+  // that keep their own per-point data in slot order (a photon's normal and power beside its
+  // position) and read it in one run.
+  template <class Fn>
+  void ForEachRowAround(const glm::dvec3& q, Fn&& fn) const {
+    if (items_.empty()) return;
     int lo[3], hi[3];
     const double reach = radius_ * (1 + 1e-9);  // past any rounding of the bucket bounds
     for (int a = 0; a < 3; ++a) {
       lo[a] = Clamp(std::floor((q[a] - reach - origin_[a]) / bucket_), dims_[a]);
       hi[a] = Clamp(std::floor((q[a] + reach - origin_[a]) / bucket_), dims_[a]);
     }
-    const double r2 = radius_ * radius_;
     for (int z = lo[2]; z <= hi[2]; ++z)
       for (int y = lo[1]; y <= hi[1]; ++y) {
         const std::size_t row = (static_cast<std::size_t>(z) * dims_[1] + y) * dims_[0];
-        for (uint32_t k = start_[row + lo[0]]; k < start_[row + hi[0] + 1]; ++k) {
-          const uint32_t i = items_[k];
-          const glm::dvec3& p = points_[i];
-          const double dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
-          const double d2 = (dx * dx + dy * dy) + dz * dz;
-          if (d2 <= r2) fn(i, d2);
-        }
+        const uint32_t k0 = start_[row + lo[0]], k1 = start_[row + hi[0] + 1];
+        if (k0 < k1) fn(k0, k1);
       }
   }
+  // The point in each slot, bucket by bucket (each bucket in index order), and its position.
+  const std::vector<uint32_t>& order() const { return items_; }
+  const std::vector<glm::dvec3>& slot_points() const { return slot_points_; }
 
   // The number of points within the radius of q.
   std::size_t CountWithin(const glm::dvec3& q) const {
@@ -68,7 +82,7 @@ class RadiusGrid {
     return static_cast<int>(cell);
   }
 
-  std::vector<glm::dvec3> points_;
+  std::vector<glm::dvec3> slot_points_;  // points_[items_[k]] at k: a query reads one run
   double radius_ = 0, bucket_ = 1;
   glm::dvec3 origin_{0.0};
   int dims_[3] = {1, 1, 1};

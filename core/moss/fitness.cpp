@@ -2,6 +2,7 @@
 #include "moss/fitness.h"
 
 #include <algorithm>
+#include <cstring>
 
 #include "math/det_math.h"
 
@@ -49,6 +50,31 @@ Fitness FitnessOf(const SpeciesRanges& sp, double T_s, double rh_s, double S, GF
   f.g_S = Suitability(S, sp.S_0, sp.S_1, sp.n_S, form);
   f.G = f.g_T * f.g_rh * f.g_S;  // moss eq. 3.17
   return f;
+}
+
+double FitnessMemo::Factor(int table, double x, double x_0, double x_1, double n, GForm form) {
+  uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  // Fibonacci hashing of the bits (a hint only: a slot is used when its bits match).
+  const std::size_t k = static_cast<std::size_t>(table) * kSlots +
+                        static_cast<std::size_t>((bits * 0x9E3779B97F4A7C15ull) >> 54);
+  Slot& slot = slots_[k];
+  if (slot.used && slot.bits == bits) return slot.value;
+  slot.bits = bits;
+  slot.value = Suitability(x, x_0, x_1, n, form);
+  slot.used = true;
+  return slot.value;
+}
+
+double FitnessMemo::G(Species species, const SpeciesRanges& sp, double T_s, double rh_s, double S,
+                      GForm form) {
+  static_assert(kSlots == 1024, "the hash keeps 10 bits");
+  if (slots_.empty()) slots_.resize(static_cast<std::size_t>(kSpeciesCount) * 3 * kSlots);
+  const int t = 3 * static_cast<int>(species);
+  const double g_T = Factor(t, T_s, sp.T_0, sp.T_1, sp.n_T, form);
+  const double g_rh = Factor(t + 1, rh_s, sp.rh_0, sp.rh_1, sp.n_rh, form);
+  const double g_S = Factor(t + 2, S, sp.S_0, sp.S_1, sp.n_S, form);
+  return g_T * g_rh * g_S;  // moss eq. 3.17, FitnessOf's product
 }
 
 double DailyGrowth(const SpeciesRanges& sp, double G) {

@@ -7,6 +7,9 @@
 // place mosses or know a day number.
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include "moss/moss.h"
 #include "moss/moss_params.h"
 
@@ -33,6 +36,28 @@ struct Fitness {
 // Eq 3.17 for one species at a place with surface temperature T_s [K], surface humidity rh_s and
 // light S [W/m²].
 Fitness FitnessOf(const SpeciesRanges& species, double T_s, double rh_s, double S, GForm form);
+
+// FitnessOf's G through a memo of each factor (a run's mosses and seeds ask the same T_s and rh_s
+// of a cell kept from yesterday, and the few light values a handful of equal photons give, day
+// after day): each factor is Suitability of its input, looked up by the input's bits in a
+// direct-mapped table per species and variable, and worked out (and stored) on a miss. The same
+// bits as FitnessOf(...).G (the same functions on the same inputs, multiplied in the same order).
+// The species' ranges and the form must stay those of the first call (one run's table).
+class FitnessMemo {
+ public:
+  double G(Species species, const SpeciesRanges& ranges, double T_s, double rh_s, double S,
+           GForm form);
+
+ private:
+  static constexpr int kSlots = 1024;  // a power of two, per species and variable
+  struct Slot {
+    uint64_t bits = 0;
+    double value = 0;
+    bool used = false;
+  };
+  double Factor(int table, double x, double x_0, double x_1, double n, GForm form);
+  std::vector<Slot> slots_;
+};
 
 // Eq 3.20: the day's growth D = α_g·(G − τ_g) (growing when D > 0, declining when D < 0).
 double DailyGrowth(const SpeciesRanges& species, double G);

@@ -454,7 +454,8 @@ void MossRun::Day() {
     double G = 0.0;
     if (SeedWindowScore(L, seed.kind, rules_) > species.tau_b) {
       const double S_seed = gather->Moss(seed.pos, seed.normal);
-      G = FitnessOf(species, w.T_s[seed.cell], w.rh_s[seed.cell], S_seed, g_form).G;
+      G = fitness_memo_.G(seed.species, species, w.T_s[seed.cell], w.rh_s[seed.cell], S_seed,
+                          g_form);
     }
     const SeedFate fate = SeedDay(G, L, seed.kind, species.tau_b, living >= max_mosses, rules_);
     if (fate == SeedFate::kWaits) {
@@ -513,7 +514,8 @@ void MossRun::Day() {
     const SpeciesRanges& species = species_of[static_cast<int>(m.species)];
     double S_moss = gather->Moss(m.pos, m.normal);
     if (smoothing > 0 && m.lit) S_moss = m.S + k_smooth * (S_moss - m.S);  // its own mean
-    const double G = FitnessOf(species, w.T_s[m.cell], w.rh_s[m.cell], S_moss, g_form).G;
+    const double G =
+        fitness_memo_.G(m.species, species, w.T_s[m.cell], w.rh_s[m.cell], S_moss, g_form);
     const GrowthDay grown = AdvanceGrowth(species, G, &m.growth);
     m.lit = true;
     m.growing = grown.growing;

@@ -217,6 +217,8 @@ class MossRun : public run::StudyRun {
   // cache keyed by its inputs' bits, so a cancel need not restore it.
   std::vector<SoilMemo> soil_memo_;
   Weather soil_memo_weather_{};
+  // The fitness factors by their inputs' bits (fitness.h FitnessMemo; a cache, like soil_memo_).
+  FitnessMemo fitness_memo_;
   // Built once (the cells do not move): each day's photons and mosses are spread onto the cells
   // near them, work in photons and mosses rather than a query per cell (spec §4.6, eq 3.5): the
   // photons through each cell's candidate lists (photons.h), the mosses through the centroids in

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <glm/geometric.hpp>
 #include <limits>
 
@@ -367,26 +368,37 @@ SoilPhotonSpread::SoilPhotonSpread(const SoilCells& cells, double r_gather)
   const geom::RadiusGrid wide(cells.centroid, r + reach_max);
   // One query a cell for both sides; over the cap, the grid alone.
   start_.assign(2 * n + 1, 0);
-  std::vector<uint32_t> lists[2];
+  sure_end_.assign(2 * n, 0);
+  std::vector<uint32_t> lists[2][2];  // [side][0: sure, 1: maybe]
   for (std::size_t t = 0; t < n; ++t) {
-    const double limit = (r + std::sqrt(reach2_[t])) * (1 + 1e-9);
+    const double reach = std::sqrt(reach2_[t]);
+    const double limit = (r + reach) * (1 + 1e-9);
     const double limit2 = limit * limit;
+    // Within r − reach_t of t's centroid (with a relative 1e-6 to spare for the roundings of
+    // either distance), a cell is within r of every point at most reach_t from that centroid.
+    const double sure = (r - reach) * (1 - 1e-6);
+    const double sure2 = sure > 0 ? sure * sure : -1.0;
     const glm::dvec3 front = cells.normal[t], back = -cells.normal[t];
-    lists[0].clear();
-    lists[1].clear();
+    for (auto& side : lists)
+      for (auto& list : side) list.clear();
     wide.ForEachWithin(cells.centroid[t], [&](uint32_t c, double d2) {
       if (d2 > limit2) return;
+      const int kind = d2 <= sure2 ? 0 : 1;
       // The photon's own test, n_p·n > 0.5, with n_p the side hit (TracePhotons).
-      if (glm::dot(front, cells.normal[c]) > 0.5) lists[0].push_back(c);
-      if (glm::dot(back, cells.normal[c]) > 0.5) lists[1].push_back(c);
+      if (glm::dot(front, cells.normal[c]) > 0.5) lists[0][kind].push_back(c);
+      if (glm::dot(back, cells.normal[c]) > 0.5) lists[1][kind].push_back(c);
     });
     for (int side = 0; side < 2; ++side) {
-      std::sort(lists[side].begin(), lists[side].end());
       start_[2 * t + side] = static_cast<uint32_t>(items_.size());
-      items_.insert(items_.end(), lists[side].begin(), lists[side].end());
+      for (int kind = 0; kind < 2; ++kind) {
+        std::sort(lists[side][kind].begin(), lists[side][kind].end());
+        items_.insert(items_.end(), lists[side][kind].begin(), lists[side][kind].end());
+        if (kind == 0) sure_end_[2 * t + side] = static_cast<uint32_t>(items_.size());
+      }
     }
     if (items_.size() > kMaxCandidatesPerCell * n) {
       start_.clear();
+      sure_end_.clear();
       items_.clear();
       items_.shrink_to_fit();
       return;
@@ -395,37 +407,94 @@ SoilPhotonSpread::SoilPhotonSpread(const SoilCells& cells, double r_gather)
   start_[2 * n] = static_cast<uint32_t>(items_.size());
 }
 
+int SoilPhotonSpread::SideOf(const SoilCells& cells, const Photon& ph) const {
+  if (start_.empty()) return -1;
+  const uint32_t t = ph.target;
+  const glm::dvec3 d = ph.position - cells.centroid[t];
+  if (!(glm::dot(d, d) <= reach2_[t])) return -1;
+  if (ph.normal == cells.normal[t]) return 0;
+  if (ph.normal == -cells.normal[t]) return 1;
+  return -1;
+}
+
+template <class Add>
+void SoilPhotonSpread::ForEachCellOf(const SoilCells& cells, const Photon& ph, Add&& add) const {
+  const int side = SideOf(cells, ph);
+  if (side < 0) {  // the grid's radius query
+    grid_.ForEachWithin(ph.position, [&](uint32_t c, double) {
+      if (glm::dot(ph.normal, cells.normal[c]) > 0.5) add(c);
+    });
+    return;
+  }
+  const std::size_t list = 2 * static_cast<std::size_t>(ph.target) + side;
+  const uint32_t* items = items_.data();
+  // The sure cells are within r of the photon (SoilPhotonSpread's build) without a test.
+  const uint32_t* sure_end = items + sure_end_[list];
+  const uint32_t* it = items + start_[list];
+  for (; it != sure_end; ++it) add(*it);
+  // The grid's distance, ((dx² + dy²) + dz²) from the centroid to the photon (radius_grid.h).
+  const glm::dvec3* centroid = cells.centroid.data();
+  const glm::dvec3& q = ph.position;
+  const uint32_t* end = items + start_[list + 1];
+  for (; it != end; ++it) {
+    const glm::dvec3& p = centroid[*it];
+    const double dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
+    if ((dx * dx + dy * dy) + dz * dz <= r2_) add(*it);
+  }
+}
+
 void SoilPhotonSpread::Spread(const SoilCells& cells, const PhotonMap& map,
                               std::vector<double>* S) const {
   double* out = S->data();
-  const glm::dvec3* centroid = cells.centroid.data();
+  // The land photons' powers in map order as runs of one power (bits): the sun's photons, then the
+  // sky's. With at most two runs, a cell's sum is its first run's power added k_1 times, then the
+  // second's k_2 times, so counts give the same bits as the additions (and a table of the first
+  // power's running sums from 0 serves every cell that starts at zero).
+  const auto bits_of = [](double x) {
+    uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+  };
+  double power[2] = {0, 0};
+  int runs = 0;
   for (const Photon& ph : map.photons) {
     if (ph.on_moss) continue;
-    const uint32_t t = ph.target;
-    const glm::dvec3& q = ph.position;
-    int side = -1;
-    if (!start_.empty()) {
-      const glm::dvec3 d = q - centroid[t];
-      if (glm::dot(d, d) <= reach2_[t]) {
-        if (ph.normal == cells.normal[t])
-          side = 0;
-        else if (ph.normal == -cells.normal[t])
-          side = 1;
+    if (runs > 0 && bits_of(ph.power) == bits_of(power[runs - 1])) continue;
+    if (runs == 2) {
+      runs = 3;
+      break;
+    }
+    power[runs++] = ph.power;
+  }
+  if (runs > 2) {  // any other map (tests' made-up photons): one addition a photon and cell
+    for (const Photon& ph : map.photons)
+      if (!ph.on_moss) ForEachCellOf(cells, ph, [&](uint32_t c) { out[c] += ph.power; });
+    return;
+  }
+  if (runs == 0) return;
+  const std::size_t n = cells.size();
+  std::vector<uint32_t> counts(2 * n, 0);  // [run][cell]
+  int run = 0;
+  for (const Photon& ph : map.photons) {
+    if (ph.on_moss) continue;
+    if (run == 0 && bits_of(ph.power) != bits_of(power[0])) run = 1;
+    uint32_t* count = counts.data() + run * n;
+    ForEachCellOf(cells, ph, [&](uint32_t c) { ++count[c]; });
+  }
+  std::vector<double> sums(1, 0.0);  // sums[k]: 0 + power[0] added k times
+  for (std::size_t c = 0; c < n; ++c) {
+    const uint32_t k0 = counts[c], k1 = counts[n + c];
+    double v = out[c];
+    if (k0 > 0) {
+      if (v == 0.0) {
+        while (sums.size() <= k0) sums.push_back(sums.back() + power[0]);
+        v = sums[k0];
+      } else {
+        for (uint32_t k = 0; k < k0; ++k) v += power[0];
       }
     }
-    if (side < 0) {  // the grid's radius query
-      grid_.ForEachWithin(q, [&](uint32_t c, double) {
-        if (glm::dot(ph.normal, cells.normal[c]) > 0.5) out[c] += ph.power;
-      });
-      continue;
-    }
-    // The grid's distance, ((dx² + dy²) + dz²) from the centroid to the photon (radius_grid.h).
-    const uint32_t* end = items_.data() + start_[2 * t + side + 1];
-    for (const uint32_t* it = items_.data() + start_[2 * t + side]; it != end; ++it) {
-      const glm::dvec3& p = centroid[*it];
-      const double dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
-      if ((dx * dx + dy * dy) + dz * dz <= r2_) out[*it] += ph.power;
-    }
+    for (uint32_t k = 0; k < k1; ++k) v += power[1];
+    out[c] = v;
   }
 }
 
@@ -440,16 +509,32 @@ Result<PhotonGather> PhotonGather::Build(const PhotonMap& map, double r_gather) 
       return Status::Error("photons", "a photon's position is not finite");
   if (!(r_gather > 0) || !std::isfinite(r_gather))
     return Status::Error("r_gather", "must be a positive number");
-  return PhotonGather(geom::RadiusGrid(points, r_gather), &map, r_gather);
+  geom::RadiusGrid grid(points, r_gather);
+  std::vector<Slot> slots;
+  slots.reserve(points.size());
+  for (uint32_t i : grid.order()) {
+    const Photon& p = map.photons[i];
+    slots.push_back({p.normal, p.power, p.on_moss});
+  }
+  return PhotonGather(std::move(grid), std::move(slots), r_gather);
 }
 
 // The photons' power within r of x on faces turned the query's way (spec §4.6), summed in the
-// grid's order (its buckets, then photon index: the same in every build).
+// grid's order (its buckets, then photon index: the same in every build); the distance as
+// RadiusGrid::ForEachWithin's.
 double PhotonGather::Gather(const glm::dvec3& x, const glm::dvec3& n, bool all) const {
   double sum = 0.0;
-  grid_.ForEachWithin(x, [&](uint32_t i, double) {
-    const Photon& p = map_->photons[i];
-    if ((all || !p.on_moss) && glm::dot(p.normal, n) > 0.5) sum += p.power;
+  const double r2 = r_ * r_;
+  const glm::dvec3* points = grid_.slot_points().data();
+  const Slot* slots = slots_.data();
+  grid_.ForEachRowAround(x, [&](uint32_t k0, uint32_t k1) {
+    for (uint32_t k = k0; k < k1; ++k) {
+      const glm::dvec3& p = points[k];
+      const double dx = p.x - x.x, dy = p.y - x.y, dz = p.z - x.z;
+      if (!((dx * dx + dy * dy) + dz * dz <= r2)) continue;
+      const Slot& s = slots[k];
+      if ((all || !s.on_moss) && glm::dot(s.normal, n) > 0.5) sum += s.power;
+    }
   });
   return sum / (det::kPi * r_ * r_);
 }

@@ -112,7 +112,10 @@ void TracePhotons(const SoilCells& cells, const MossOccluders& mosses, const Pho
 // buckets; the same distance expression and order of additions as the grid, so the same bits. A
 // photon farther than reach_t from its cell's centroid (it cannot be, but for rounding) falls back
 // to the grid; lists longer than kMaxCandidatesPerCell a cell on average are not built (the grid
-// serves every photon).
+// serves every photon). When the map's land photons carry one power, or two in two runs (the
+// sun's, then the sky's: every day's map), each cell's photons are counted and its additions
+// replayed from the counts (the same bits); the cells within r_gather − reach_t of t's centroid
+// come first in t's lists and are counted without a distance test.
 class SoilPhotonSpread {
  public:
   static constexpr std::size_t kMaxCandidatesPerCell = 96;
@@ -123,11 +126,19 @@ class SoilPhotonSpread {
   bool listed() const { return !start_.empty(); }  // the lists were built
 
  private:
+  // The list of the side of its cell a photon hit (0 front, 1 back), or -1 for the grid.
+  int SideOf(const SoilCells& cells, const Photon& ph) const;
+  // add(c) for every cell c within r_gather of ph facing its way (any order).
+  template <class Add>
+  void ForEachCellOf(const SoilCells& cells, const Photon& ph, Add&& add) const;
   geom::RadiusGrid grid_;  // the centroids in buckets of r_gather (the fallback)
   double r2_;
   std::vector<double> reach2_;   // per cell
   std::vector<uint32_t> start_;  // 2 lists a cell (front side hit, back side hit): start_[2c + s]
-  std::vector<uint32_t> items_;  // candidate cells, list by list, each in cell order
+  // Each list: first the cells within r_gather − reach_t of t's centroid (within r_gather of any
+  // photon on t: counted without a distance test), up to sure_end_[2c + s], then the others.
+  std::vector<uint32_t> sure_end_;
+  std::vector<uint32_t> items_;  // candidate cells, list by list, each part in cell order
 };
 
 // The gather (§3.5.1): E(x, n) = Σ dPhi_p / (π r²) over stored photons within r of x with
@@ -139,12 +150,19 @@ class PhotonGather {
   double Moss(const glm::dvec3& x, const glm::dvec3& n) const { return Gather(x, n, true); }
 
  private:
-  PhotonGather(geom::RadiusGrid grid, const PhotonMap* map, double r)
-      : grid_(std::move(grid)), map_(map), r_(r) {}
+  // A photon's normal, power and kind beside its position in the grid's slot order, so a query
+  // reads its candidates in runs instead of through the map.
+  struct Slot {
+    glm::dvec3 normal;
+    double power;
+    bool on_moss;
+  };
+  PhotonGather(geom::RadiusGrid grid, std::vector<Slot> slots, double r)
+      : grid_(std::move(grid)), slots_(std::move(slots)), r_(r) {}
   double Gather(const glm::dvec3& x, const glm::dvec3& n, bool all) const;
   geom::RadiusGrid
       grid_;  // the photons in buckets of r_gather (radius_grid.h: no allocation a query)
-  const PhotonMap* map_;
+  std::vector<Slot> slots_;
   double r_;
 };
 

@@ -4,6 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <vector>
+
+#include "random/pcg32.h"
+
 namespace niwa::moss {
 namespace {
 
@@ -81,6 +86,35 @@ TEST(MossFitness, FitnessIsTheProductOfTheThreeFactors) {
   // hand: exp(−4 ln2 / 60² · 220²)), kept exact rather than lost to 1/2 − (1/2 − s).
   EXPECT_NEAR(FitnessOf(Of(Species::kGingoke), 286.65, 1, 250, GForm::kClamped).g_S,
               6.47553699315637e-17, 1e-28);
+}
+
+// The run's memo gives FitnessOf's G bit for bit: every species and form, inputs asked again
+// (hits), inputs that share a slot (more distinct values than slots), a memo whose slots were
+// filled by other inputs, and the values a run asks most (S = 0, a cell's kept T_s and rh_s).
+TEST(MossFitness, TheMemoIsFitnessOfBitForBit) {
+  for (GForm form : {GForm::kClamped, GForm::kNormalized}) {
+    FitnessMemo memo;
+    Pcg32 rng(7, 3);
+    std::vector<double> T, rh, S;
+    for (int i = 0; i < 3000; ++i) {
+      T.push_back(rng.Uniform(260, 320));
+      rh.push_back(rng.Uniform(0, 1));
+      S.push_back(i % 5 == 0 ? 0.0 : rng.Uniform(0, 300));
+    }
+    int different = 0;
+    for (int pass = 0; pass < 3; ++pass)
+      for (std::size_t i = 0; i < T.size(); ++i) {
+        // Later passes ask each input again, mixed with other positions' inputs.
+        const std::size_t j = pass == 0 ? i : (i * 7 + static_cast<std::size_t>(pass)) % T.size();
+        for (int k = 0; k < kSpeciesCount; ++k) {
+          const Species species = static_cast<Species>(k);
+          const double want = FitnessOf(Of(species), T[i], rh[j], S[j], form).G;
+          const double got = memo.G(species, Of(species), T[i], rh[j], S[j], form);
+          different += std::memcmp(&want, &got, sizeof want) != 0;
+        }
+      }
+    EXPECT_EQ(different, 0) << static_cast<int>(form);
+  }
 }
 
 TEST(MossFitness, GrowthAndDeathOnAScriptedSeries) {

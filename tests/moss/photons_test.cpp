@@ -1,12 +1,15 @@
 // The photon pass and gather (core/moss/photons.h): eq 3.1's sampler, the emission against its
 // literal rejection form, the light's power, the open plane's direct irradiance, indirect off,
-// bounces on the thesis scene, and the mosses' grid as occluders.
+// bounces on the thesis scene, the soil's spread (per photon and by counts), and the mosses' grid
+// as occluders.
 #include "moss/photons.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <glm/geometric.hpp>
+#include <string>
 
 #include "moss/sampling.h"
 
@@ -230,6 +233,43 @@ TEST(MossPhotons, TheSpreadIsTheGridsRadiusQueryBitForBit) {
                   1e-9 * (1 + S[c] / area))
           << scene << " cell " << c;
   }
+}
+
+// A day's own map, whose land photons carry one power (nomura2010: the sun's) or two in two runs
+// (nomura2010-sky: the sun's, then the sky's), is spread by counting: the same bits as one
+// addition a photon (the grid's query from every photon), from zero and from sums already there.
+TEST(MossPhotons, TheSpreadsCountsAreTheAdditionsBitForBit) {
+  for (const char* preset : {"nomura2010", "nomura2010-sky"})
+    for (const char* scene : {"thesis", "walls"}) {
+      const Lit lit = LitScene(scene, *MossPreset(preset));
+      MossOccluders none;
+      PhotonMap map;
+      Pcg32 rng(3, 4);
+      TracePhotons(lit.cells, none, lit.light, 8192, &rng, &map);
+      const bool sky = std::string(preset) == "nomura2010-sky";
+      EXPECT_EQ(map.emitted_sky > 0, sky);
+      ASSERT_GT(map.stored_by_depth[1], 0) << scene;
+      const SoilPhotonSpread spread(lit.cells, lit.light.r_gather);
+      const geom::RadiusGrid centroids(lit.cells.centroid, lit.light.r_gather);
+      for (double start : {0.0, 3.25}) {
+        std::vector<double> S(lit.cells.size(), 0.0), grid(lit.cells.size(), 0.0);
+        for (std::size_t c = 0; c < S.size(); c += 3) S[c] = grid[c] = start;
+        spread.Spread(lit.cells, map, &S);
+        for (const Photon& ph : map.photons) {
+          if (ph.on_moss) continue;
+          centroids.ForEachWithin(ph.position, [&](uint32_t c, double) {
+            if (glm::dot(ph.normal, lit.cells.normal[c]) > 0.5) grid[c] += ph.power;
+          });
+        }
+        int lit_cells = 0;
+        for (std::size_t c = 0; c < S.size(); ++c) {
+          ASSERT_EQ(std::memcmp(&S[c], &grid[c], sizeof(double)), 0)
+              << preset << " " << scene << " cell " << c << " start " << start;
+          lit_cells += S[c] > start;
+        }
+        EXPECT_GT(lit_cells, 1000) << preset << " " << scene;
+      }
+    }
 }
 
 TEST(MossPhotons, TheMossGridFindsWhatEverySphereTestFinds) {
