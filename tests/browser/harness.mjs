@@ -213,13 +213,22 @@ export async function saveCanvasPng(page, file, selector = '#view') {
 // snapshots taken with snapshotCanvas.
 export async function snapshotDifference(page, a, b, tolerance = 0) {
   return page.evaluate(([ka, kb, tol]) => {
-    const x = window.__snapshots[ka].data, y = window.__snapshots[kb].data;
-    if (x.length !== y.length) return 1;
+    const A = window.__snapshots[ka], B = window.__snapshots[kb];
+    // Two drawing-buffer sizes (the governor's scale while moving) are compared on the smaller
+    // one's grid, each pixel against the nearest of the other (before, any size change counted as
+    // every pixel changed, so a check for motion passed on a scale change alone).
+    const w = Math.min(A.width, B.width), h = Math.min(A.height, B.height);
+    const at = (img, i, j) => 4 * (Math.min(img.height - 1, Math.floor(((j + 0.5) * img.height) / h)) * img.width +
+      Math.min(img.width - 1, Math.floor(((i + 0.5) * img.width) / w)));
     let n = 0;
-    for (let i = 0; i < x.length; i += 4) {
-      if (Math.abs(x[i] - y[i]) + Math.abs(x[i + 1] - y[i + 1]) + Math.abs(x[i + 2] - y[i + 2]) > tol) ++n;
+    for (let j = 0; j < h; ++j) {
+      for (let i = 0; i < w; ++i) {
+        const p = at(A, i, j), q = at(B, i, j);
+        const x = A.data, y = B.data;
+        if (Math.abs(x[p] - y[q]) + Math.abs(x[p + 1] - y[q + 1]) + Math.abs(x[p + 2] - y[q + 2]) > tol) ++n;
+      }
     }
-    return n / (x.length / 4);
+    return n / (w * h);
   }, [a, b, tolerance]);
 }
 
