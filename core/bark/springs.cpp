@@ -2,15 +2,55 @@
 #include "bark/springs.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
 
 #include "math/det_math.h"
 #include "math/simd4.h"
+#include "math/simd8.h"
 #include "random/pcg32.h"
 
+// The batch kernels are inlined into their four- and eight-lane loops (math/simd8.h), so no 256-bit
+// value crosses a call: GCC's warning on that ABI does not apply (to the end of the file, where GCC
+// places some of them).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
 namespace niwa::bark {
+
+namespace {
+std::atomic<int> g_batch_lanes{0};  // 0: not yet decided
+}  // namespace
+
+int BatchLanes() {
+  int lanes = g_batch_lanes.load(std::memory_order_relaxed);
+  if (lanes == 0) {
+#if NIWA_BARK_AVX2
+    lanes = __builtin_cpu_supports("avx2") ? 8 : 4;
+#else
+    lanes = 4;
+#endif
+    g_batch_lanes.store(lanes, std::memory_order_relaxed);
+  }
+  return lanes;
+}
+
+int SetBatchLanes(int lanes) {
+  const int before = BatchLanes();
+  g_batch_lanes.store(lanes == 8 && EightLanesAvailable() ? 8 : 4, std::memory_order_relaxed);
+  return before;
+}
+
+bool EightLanesAvailable() {
+#if NIWA_BARK_AVX2
+  return __builtin_cpu_supports("avx2");
+#else
+  return false;
+#endif
+}
 
 Mechanics MechanicsOf(const BarkParams& p) {
   Mechanics m;
@@ -42,107 +82,185 @@ constexpr float kNever = std::numeric_limits<float>::infinity();
 
 constexpr float kTinyLength2 = 1e-12f;  // a floor under l² (two nodes on one point)
 
-// Break checks and forces of one sub-family of springs (0: the axial springs; 1, 2: each node's
-// first and second diagonal), the spring of node n joining a = n to b = slot_b: four nodes a
-// batch, b loaded as a run where slot_run4 says so, else lane by lane, and the arithmetic lane by
-// lane; a tail of fewer than four one by one with the same operations, so the bits do not depend
-// on the batching. The forces go to the slots (gx, gz); a node pass sums them (NodeForce,
-// NodeForce4). A batch of four broken springs only writes its zero forces. The reference vector of
-// a sub-family is one (lattice.h: axial (0, L_o), diagonals (pitch, ±L_o/2)). Only the springs of
-// nodes [begin, end) (begin a multiple of four): each spring's arithmetic is its own, so a pass
-// split into ranges gives the bits of the whole.
+
+// One sub-family's pass (0: the axial springs; 1, 2: each node's first and second diagonal), the
+// spring of node n joining a = n to b = slot_b: raw pointers and constants, copied into the loops'
+// locals (a byte store may alias anything it reaches through a reference, forcing reloads). The
+// reference vector of a sub-family is one (lattice.h: axial (0, L_o), diagonals (pitch, ±L_o/2)),
+// so its products with the growth factors are constants of the pass (as the per-spring ox·s_θ
+// etc. were).
+struct SubPass {
+  const int32_t* b;
+  const uint8_t* run4;
+  const uint8_t* run8;
+  const float *ux, *uz, *wx, *wz;
+  float *gx, *gz, *limit2, *on;
+  uint8_t* broken;  // by spring: first + stride·n
+  int first, stride;
+  float dx0, dz0, rx0, rz0, k, c, l0;
+};
+
+// Spring n broke in this step: never again, no force from the next step on.
+NIWA_LANES_INLINE void RecordBreak(const SubPass& p, int n, int* broke) {
+  p.limit2[n] = kNever;
+  p.on[n] = 0.0f;
+  p.broken[p.first + p.stride * n] = 1;
+  ++*broke;
+}
+// Springs n + k broke for the bits k of `bits` (rare: out of the batch loops' way).
+__attribute__((noinline)) void RecordBreaks(const SubPass& p, int n, int bits, int* broke) {
+  for (int q = 0; bits != 0; ++q, bits >>= 1)
+    if (bits & 1) RecordBreak(p, n + q, broke);
+}
+
+using simd::LoadLanes;
+using simd::SplatLanes;
+using simd::StoreLanes;
+
+// A pass's constants in every lane, made once a loop.
+template <class V>
+struct SubLanes {
+  V dx0, dz0, rx0, rz0, k, c, l0, tiny, one, zero;
+  explicit SubLanes(const SubPass& p)
+      : dx0(SplatLanes<V>(p.dx0)),
+        dz0(SplatLanes<V>(p.dz0)),
+        rx0(SplatLanes<V>(p.rx0)),
+        rz0(SplatLanes<V>(p.rz0)),
+        k(SplatLanes<V>(p.k)),
+        c(SplatLanes<V>(p.c)),
+        l0(SplatLanes<V>(p.l0)),
+        tiny(SplatLanes<V>(kTinyLength2)),
+        one(SplatLanes<V>(1.0f)),
+        zero(SplatLanes<V>(0.0f)) {}
+};
+
+// Springs n..n+W−1 (W lanes of V, masks I): b loaded as a run where `run` says so, else lane by
+// lane; the arithmetic lane by lane, the very operations of SpringOne. A batch of broken springs
+// only writes its zero forces.
+template <class V, class I>
+NIWA_LANES_INLINE void SpringBatch(const SubPass& p, const SubLanes<V>& v, int n, bool run,
+                                   int* broke) {
+  constexpr int W = sizeof(V) / sizeof(float);  // lanes
+  const V alive = LoadLanes<V>(p.on + n);
+  if (!simd::AnyTrue(alive != v.zero)) {
+    // Broken before this step: no force, no break.
+    StoreLanes(p.gx + n, v.zero);
+    StoreLanes(p.gz + n, v.zero);
+    return;
+  }
+  V bux, buz, bwx, bwz;
+  if (run) {
+    const int b = p.b[n];
+    bux = LoadLanes<V>(p.ux + b);
+    buz = LoadLanes<V>(p.uz + b);
+    bwx = LoadLanes<V>(p.wx + b);
+    bwz = LoadLanes<V>(p.wz + b);
+  } else {
+    for (int q = 0; q < W; ++q) {
+      const int b = p.b[n + q];
+      bux[q] = p.ux[b];
+      buz[q] = p.uz[b];
+      bwx[q] = p.wx[b];
+      bwz[q] = p.wz[b];
+    }
+  }
+  const V dx = v.dx0 + (bux - LoadLanes<V>(p.ux + n));
+  const V dz = v.dz0 + (buz - LoadLanes<V>(p.uz + n));
+  const V l2 = dx * dx + dz * dz;
+  const I breaks = l2 > LoadLanes<V>(p.limit2 + n);
+  const V l = simd::Sqrt(simd::Select(l2 > v.tiny, l2, v.tiny));
+  const V inv = v.one / l;
+  const V nx = dx * inv, nz = dz * inv;
+  const V rel = ((bwx - LoadLanes<V>(p.wx + n)) + v.rx0) * nx + ((bwz - LoadLanes<V>(p.wz + n)) + v.rz0) * nz;
+  const V f = simd::Select(breaks, v.zero, alive) * (v.k * (l - v.l0) + v.c * rel);
+  StoreLanes(p.gx + n, f * nx);
+  StoreLanes(p.gz + n, f * nz);
+  if (simd::AnyTrue(breaks)) RecordBreaks(p, n, simd::LaneBits(breaks), broke);
+}
+
+// Spring n alone (the tail of fewer than four), with SpringBatch's operations.
+NIWA_LANES_INLINE void SpringOne(const SubPass& p, int n, int* broke) {
+  const int a = n, b = p.b[n];
+  const float dx = p.dx0 + (p.ux[b] - p.ux[a]);
+  const float dz = p.dz0 + (p.uz[b] - p.uz[a]);
+  const float l2 = dx * dx + dz * dz;
+  const bool breaks = l2 > p.limit2[n];
+  const float l = std::sqrt(l2 > kTinyLength2 ? l2 : kTinyLength2);
+  const float inv = 1.0f / l;
+  const float nx = dx * inv, nz = dz * inv;
+  const float rel = ((p.wx[b] - p.wx[a]) + p.rx0) * nx + ((p.wz[b] - p.wz[a]) + p.rz0) * nz;
+  const float f = (breaks ? 0.0f : p.on[n]) * (p.k * (l - p.l0) + p.c * rel);
+  p.gx[n] = f * nx;
+  p.gz[n] = f * nz;
+  if (breaks) RecordBreak(p, n, broke);
+}
+
+// The springs of nodes [begin, end): four a batch, then one by one.
+int SubFamilyLoop4(const SubPass& pass, int begin, int end) {
+  const SubPass p = pass;
+  const SubLanes<simd::Float4> v4(p);
+  int broke = 0, n = begin;
+  for (; n + 4 <= end; n += 4) SpringBatch<simd::Float4, simd::Int4>(p, v4, n, p.run4[n], &broke);
+  for (; n < end; ++n) SpringOne(p, n, &broke);
+  return broke;
+}
+
+#if NIWA_BARK_AVX2
+// The same with eight a batch where the eight b run on (else two batches of four), in AVX2.
+__attribute__((target("avx2"))) int SubFamilyLoop8(const SubPass& pass, int begin, int end) {
+  const SubPass p = pass;
+  const SubLanes<simd::Float4> v4(p);
+  const SubLanes<simd::Float8> v8(p);
+  int broke = 0, n = begin;
+  for (; n + 8 <= end; n += 8) {
+    if (p.run8[n]) {
+      SpringBatch<simd::Float8, simd::Int8>(p, v8, n, true, &broke);
+    } else {
+      SpringBatch<simd::Float4, simd::Int4>(p, v4, n, p.run4[n], &broke);
+      SpringBatch<simd::Float4, simd::Int4>(p, v4, n + 4, p.run4[n + 4], &broke);
+    }
+  }
+  for (; n + 4 <= end; n += 4) SpringBatch<simd::Float4, simd::Int4>(p, v4, n, p.run4[n], &broke);
+  for (; n < end; ++n) SpringOne(p, n, &broke);
+  return broke;
+}
+#endif
+
+// Break checks and forces of one sub-family of springs, four or eight a batch (BatchLanes), the
+// arithmetic lane by lane; a tail of fewer than four one by one with the same operations, so the
+// bits do not depend on the batching. The forces go to the slots (gx, gz); a node pass sums them
+// (NodeForce, NodeForce4). Only the springs of nodes [begin, end) (begin a multiple of four): each
+// spring's arithmetic is its own, so a pass split into ranges gives the bits of the whole.
 int SubFamilyPass(const Lattice& L, int sub, float k, float c, float l0, const Growth& g,
                   Surface* s, int begin, int end) {
-  using simd::Float4;
-  using simd::Int4;
-  const int n_nodes = end;
   const int base = sub * L.nodes();
-  const int first = sub == 0 ? 0 : L.axial_count + (sub - 1), stride = sub == 0 ? 1 : 2;
-  const float ox = L.ox[first], oz = L.oz[first];
-  const int32_t* B = L.slot_b.data() + base;
-  const uint8_t* run4 = L.slot_run4.data() + base;
-  const float* ux = s->ux.data();
-  const float* uz = s->uz.data();
-  const float* wx = s->wx.data();
-  const float* wz = s->wz.data();
-  float* gx = s->gx.data() + base;
-  float* gz = s->gz.data() + base;
-  float* limit2 = s->limit2.data() + base;
-  float* on = s->on.data() + base;
-  const float st = g.s_theta, sz = g.s_z, rt = g.rate_theta, rz = g.rate_z;
-  int broke = 0;
-  auto record_break = [&](int n) {
-    limit2[n] = kNever;
-    on[n] = 0.0f;
-    s->broken[first + stride * n] = 1;
-    ++broke;
-  };
-  // The products of the constant reference vector (as the per-spring ox·s_θ etc. were).
-  const float dx0 = ox * st, dz0 = oz * sz, rx0 = ox * rt, rz0 = oz * rz;
-  const Float4 vdx0 = simd::Splat4(dx0), vdz0 = simd::Splat4(dz0), vrx0 = simd::Splat4(rx0),
-               vrz0 = simd::Splat4(rz0), vk = simd::Splat4(k), vc = simd::Splat4(c),
-               vl0 = simd::Splat4(l0), tiny = simd::Splat4(kTinyLength2), zero = simd::Splat4(0.0f),
-               one = simd::Splat4(1.0f);
-  auto load = [](const float* p) {
-    Float4 v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-  };
-  int n = begin;
-  for (; n + 4 <= n_nodes; n += 4) {
-    const Float4 alive = load(on + n);
-    if (!simd::AnyTrue(alive != zero)) {
-      // Broken before this step: no force, no break.
-      std::memcpy(gx + n, &zero, sizeof zero);
-      std::memcpy(gz + n, &zero, sizeof zero);
-      continue;
-    }
-    Float4 bux, buz, bwx, bwz;
-    if (run4[n]) {
-      const int b = B[n];
-      bux = load(ux + b);
-      buz = load(uz + b);
-      bwx = load(wx + b);
-      bwz = load(wz + b);
-    } else {
-      const int b0 = B[n], b1 = B[n + 1], b2 = B[n + 2], b3 = B[n + 3];
-      bux = Float4{ux[b0], ux[b1], ux[b2], ux[b3]};
-      buz = Float4{uz[b0], uz[b1], uz[b2], uz[b3]};
-      bwx = Float4{wx[b0], wx[b1], wx[b2], wx[b3]};
-      bwz = Float4{wz[b0], wz[b1], wz[b2], wz[b3]};
-    }
-    const Float4 dx = vdx0 + (bux - load(ux + n)), dz = vdz0 + (buz - load(uz + n));
-    const Float4 l2 = dx * dx + dz * dz;
-    const Int4 breaks = l2 > load(limit2 + n);
-    const Float4 l = simd::Sqrt(simd::Select(l2 > tiny, l2, tiny));
-    const Float4 inv = one / l;
-    const Float4 nx = dx * inv, nz = dz * inv;
-    const Float4 rel = ((bwx - load(wx + n)) + vrx0) * nx + ((bwz - load(wz + n)) + vrz0) * nz;
-    const Float4 f = simd::Select(breaks, zero, alive) * (vk * (l - vl0) + vc * rel);
-    const Float4 fx = f * nx, fz = f * nz;
-    std::memcpy(gx + n, &fx, sizeof fx);
-    std::memcpy(gz + n, &fz, sizeof fz);
-    if (simd::AnyTrue(breaks)) {
-      for (int q = 0; q < 4; ++q)
-        if (breaks[q]) record_break(n + q);
-    }
-  }
-  for (; n < n_nodes; ++n) {
-    const int a = n, b = B[n];
-    const float dx = dx0 + (ux[b] - ux[a]);
-    const float dz = dz0 + (uz[b] - uz[a]);
-    const float l2 = dx * dx + dz * dz;
-    const bool breaks = l2 > limit2[n];
-    const float l = std::sqrt(l2 > kTinyLength2 ? l2 : kTinyLength2);
-    const float inv = 1.0f / l;
-    const float nx = dx * inv, nz = dz * inv;
-    const float rel = ((wx[b] - wx[a]) + rx0) * nx + ((wz[b] - wz[a]) + rz0) * nz;
-    const float f = (breaks ? 0.0f : on[n]) * (k * (l - l0) + c * rel);
-    gx[n] = f * nx;
-    gz[n] = f * nz;
-    if (breaks) record_break(n);
-  }
-  return broke;
+  SubPass p;
+  p.first = sub == 0 ? 0 : L.axial_count + (sub - 1);
+  p.stride = sub == 0 ? 1 : 2;
+  const float ox = L.ox[p.first], oz = L.oz[p.first];
+  p.b = L.slot_b.data() + base;
+  p.run4 = L.slot_run4.data() + base;
+  p.run8 = L.slot_run8.data() + base;
+  p.ux = s->ux.data();
+  p.uz = s->uz.data();
+  p.wx = s->wx.data();
+  p.wz = s->wz.data();
+  p.gx = s->gx.data() + base;
+  p.gz = s->gz.data() + base;
+  p.limit2 = s->limit2.data() + base;
+  p.on = s->on.data() + base;
+  p.broken = s->broken.data();
+  p.dx0 = ox * g.s_theta;
+  p.dz0 = oz * g.s_z;
+  p.rx0 = ox * g.rate_theta;
+  p.rz0 = oz * g.rate_z;
+  p.k = k;
+  p.c = c;
+  p.l0 = l0;
+#if NIWA_BARK_AVX2
+  if (BatchLanes() == 8) return SubFamilyLoop8(p, begin, end);
+#endif
+  return SubFamilyLoop4(p, begin, end);
 }
 
 }  // namespace

@@ -21,7 +21,23 @@
 #include "math/simd4.h"
 #include "random/pcg32.h"
 
+// Whether this build also compiles the spring and node passes for AVX2 (x86-64 GCC; chosen at run
+// time, BatchLanes).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define NIWA_BARK_AVX2 1
+#else
+#define NIWA_BARK_AVX2 0
+#endif
+
 namespace niwa::bark {
+
+// Springs and nodes a batch of the passes: 8 where the build has the AVX2 path and the CPU AVX2
+// (math/simd8.h: the same IEEE operations lane by lane, so the bits of 4), else 4 (SSE2, WASM
+// simd128). SetBatchLanes(4 or 8) sets it for the process (8 only where EightLanesAvailable; for a
+// test's comparison or a measurement) and returns the previous value.
+int BatchLanes();
+int SetBatchLanes(int lanes);
+bool EightLanesAvailable();
 
 // The constants of one run, from the table (spec §1.5).
 struct Mechanics {
