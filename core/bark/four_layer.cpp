@@ -109,7 +109,6 @@ void PeelNode(const Lattice& L, const FourLayer& f, int i, CorkLayer* s) {
   for (int q = f.node_spring_start[i]; q < f.node_spring_start[i + 1]; ++q) {
     const int sp = f.node_springs[q];
     s->s.broken[sp] = 1;
-    s->s.on[L.slot(sp)] = 0.0f;
     s->s.limit2[L.slot(sp)] = kNever;
   }
 }

@@ -64,8 +64,9 @@ struct Surface {
   std::vector<float> fx, fz;  // force accumulators (zero between steps)
   std::vector<float> gx, gz;  // each spring's force on its node a in a step, by slot (lattice.h)
   // By slot (lattice.h: Lattice::slot(spring)), so the spring pass reads them in runs:
-  std::vector<float> limit2;  // (κ_s·L_o)²: squared length that breaks the spring; +inf once broken
-  std::vector<float> on;      // 1 while intact, 0 once broken (multiplies the spring's force)
+  // (κ_s·L_o)²: squared length that breaks the spring; +inf once broken (the mark the spring pass
+  // reads: a spring at +inf exerts no force and never breaks again).
+  std::vector<float> limit2;
   std::vector<uint8_t> broken;   // by spring
   int broken_count[2] = {0, 0};  // per family
 };

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "bark/bark_run.h"
@@ -179,7 +180,7 @@ std::vector<int> CutBlock(Model* m) {
   for (int sp = 0; sp < L.springs(); ++sp) {
     if (inside(L.a[sp]) != inside(L.b[sp])) {
       s.broken[sp] = 1;
-      s.on[L.slot(sp)] = 0.0f;
+      s.limit2[L.slot(sp)] = std::numeric_limits<float>::infinity();
     }
   }
   std::vector<int> block;

@@ -41,7 +41,6 @@ TEST(Springs, OneSpringsForceIsTheFormula) {
   // Only spring 0 (axial, node 0 -> node 1) left: every other one broken.
   for (int i = 1; i < L.springs(); ++i) {
     s.limit2[L.slot(i)] = std::numeric_limits<float>::infinity();
-    s.on[L.slot(i)] = 0.0f;
   }
   s.uz[1] = 0.002f;  // stretched by 2e-3 cm (strain 0.6 %, below κ̄_1 − 1)
   s.ux[1] = 0.001f;
