@@ -515,7 +515,7 @@ bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
 void ExchangeRoles(const Lattice& L, uint64_t seed, FourLayer* f) {
   // What is left of S is shed: its plates (of two triangles or more, as the region measure
   // counts them) and its nodes.
-  f->shed_regions += MeasureCracks(L, f->layer[kS].s, 1.0, 1.0).count;
+  f->shed_regions += MeasurePlates(L, f->layer[kS].s, 1.0, 1.0).count;
   f->shed_nodes += PresentNodes(*f);
   f->layer[kS] = std::move(f->layer[kM1]);
   f->layer[kM1] = std::move(f->layer[kM2]);
@@ -582,7 +582,7 @@ void CheckPeeling(const Lattice& L, FourLayer* f) {
   // across their edges, not wrapping the torus, as the maps draw them) with S_r/S_b > A, S_r and
   // S_b counted in nodes (its nodes, and those still bonded), or with no bond at all, peel. A node
   // in no plate (every triangle around it cracked) is a fragment of its own: it peels unbonded.
-  const CrackMeasures plates = MeasureCracks(L, S.s, 1.0, 1.0);
+  const CrackMeasures plates = MeasurePlates(L, S.s, 1.0, 1.0);
   std::vector<std::vector<int>> members(plates.regions.size());
   std::vector<int> stamp(n, -1);
   std::vector<uint8_t> in_plate(n, 0);

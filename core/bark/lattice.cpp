@@ -85,6 +85,16 @@ Lattice BuildLattice(int n_r, int n_h, double l_o) {
       side[side[0] < 0 ? 0 : 1] = static_cast<int32_t>(t);
     }
   }
+  // The triangles' steps (regions.cpp walks plates by them), as the region measure computed them.
+  const double pitch0 = L.pitch(), half0 = L.l_o / 2.0;
+  for (const auto& o : L.tri_offsets) {
+    std::array<int8_t, 4> st;
+    for (int k = 0; k < 2; ++k) {
+      st[2 * k] = static_cast<int8_t>(std::lround(o[2 * k] / pitch0));
+      st[2 * k + 1] = static_cast<int8_t>(std::lround(o[2 * k + 1] / half0));
+    }
+    L.tri_steps.push_back(st);
+  }
   // The spring pass's layout: slots, each node's springs in index order, the runs of four.
   const int springs = L.springs();
   L.slot_b.assign(springs, 0);

@@ -29,6 +29,8 @@ struct Lattice {
   // (2,0), and the reference vectors of nodes 1 and 2 from node 0.
   std::vector<std::array<int32_t, 3>> tri_nodes, tri_springs;
   std::vector<std::array<float, 4>> tri_offsets;  // x1, z1, x2, z2
+  // The same in whole steps: columns and half-spacings (lround(x/pitch), lround(z/(L_o/2))).
+  std::vector<std::array<int8_t, 4>> tri_steps;
   // The two triangles on either side of each spring (every spring has two on the torus).
   std::vector<std::array<int32_t, 2>> spring_tris;
   // The spring pass's layout (springs.cpp). A spring's force slot: axial s -> s, diagonal
