@@ -309,8 +309,8 @@ NIWA_LANES_INLINE void NodeOne(const NodePass& p, int i, int* snapped) {
 }
 
 // Nodes [begin, end): four a batch (their sums as lanes where their springs lie in runs), a tail of
-// fewer than four one by one; returns the S→M1 bonds snapped (the nodes' arithmetic is their own: any split of the range gives the
-// same bits).
+// fewer than four one by one; returns the S→M1 bonds snapped (the nodes' arithmetic is their own:
+// any split of the range gives the same bits).
 int NodeLoop4(const NodePass& pass, int begin, int end) {
   const NodePass p = pass;
   const NodeLanes<simd::Float4> c4(p);

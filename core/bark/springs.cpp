@@ -82,7 +82,6 @@ constexpr float kNever = std::numeric_limits<float>::infinity();
 
 constexpr float kTinyLength2 = 1e-12f;  // a floor under l² (two nodes on one point)
 
-
 // One layer's spring pass over the three sub-families (0: the axial springs; 1, 2: each node's
 // first and second diagonal), the spring of sub-family t at node n joining a = n to b = slot_b:
 // raw pointers and constants, copied into the loops' locals (a byte store may alias anything it
@@ -209,7 +208,8 @@ NIWA_LANES_INLINE void SpringOne(const SpringPass& p, int t, int n, int* broke) 
   const float inv = 1.0f / l;
   const float nx = dx * inv, nz = dz * inv;
   const float rel = ((p.wx[b] - p.wx[a]) + p.rx0[t]) * nx + ((p.wz[b] - p.wz[a]) + p.rz0[t]) * nz;
-  const float f = (breaks || limit2 == kNever ? 0.0f : 1.0f) * (p.k[t] * (l - p.l0[t]) + p.c[t] * rel);
+  const float f =
+      (breaks || limit2 == kNever ? 0.0f : 1.0f) * (p.k[t] * (l - p.l0[t]) + p.c[t] * rel);
   p.gx[t][n] = f * nx;
   p.gz[t][n] = f * nz;
   if (breaks) RecordBreak(p, t, n, broke);

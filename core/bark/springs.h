@@ -7,8 +7,8 @@
 // springs per step (break checks, in ascending index, on the positions the step starts from;
 // then forces) and one over the nodes. Deterministic: the project's PCG32 for the thresholds,
 // det:: maths, no FMA contraction. The spring pass takes four springs a batch (math/simd4.h lanes:
-// indexed loads, IEEE arithmetic lane by lane, the same bits as the scalar tail), scattering the
-// forces in spring order. Does not: measure regions (regions.h), draw (bark_maps.h),
+// indexed loads, IEEE arithmetic lane by lane, the same bits as the scalar tail), or eight in AVX2
+// where the CPU has it (BatchLanes, math/simd8.h), writing each spring's force to its slot. Does not: measure regions (regions.h), draw (bark_maps.h),
 // schedule cycles or check budgets (bark_run.h), or model radial motion, curl or peeling.
 #pragma once
 
