@@ -337,7 +337,6 @@ Status BarkRun::Advance(const run::Observer& observer) {
       const int q = lattice_.slot(i);
       if (static_cast<float>(l * l) > s.limit2[q]) {
         s.broken[i] = 1;
-        s.on[q] = 0.0f;
         s.limit2[q] = std::numeric_limits<float>::infinity();
         ++s.broken_count[static_cast<int>(lattice_.family(i))];
       }

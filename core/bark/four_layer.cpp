@@ -10,6 +10,14 @@
 #include "bark/regions.h"
 #include "math/det_math.h"
 #include "math/simd4.h"
+#include "math/simd8.h"
+
+// The batch kernels are inlined into their four- and eight-lane loops (math/simd8.h), so no 256-bit
+// value crosses a call: GCC's warning on that ABI does not apply (to the end of the file, where GCC
+// places some of them).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
 
 namespace niwa::bark {
 namespace {
@@ -101,10 +109,237 @@ void PeelNode(const Lattice& L, const FourLayer& f, int i, CorkLayer* s) {
   for (int q = f.node_spring_start[i]; q < f.node_spring_start[i + 1]; ++q) {
     const int sp = f.node_springs[q];
     s->s.broken[sp] = 1;
-    s->s.on[L.slot(sp)] = 0.0f;
     s->s.limit2[L.slot(sp)] = kNever;
   }
 }
+
+// The node pass of a step (StepFourLayer): each node's spring forces (summed from the slots),
+// the shear springs S→M1 (breakable), M1→M2 and M2→I, then symplectic Euler per layer. Raw
+// pointers and constants, copied into the loops' locals (a byte store may alias anything it
+// reaches through a reference, forcing reloads).
+struct NodePass {
+  const int32_t* inc_slot;
+  const uint8_t *inc_a, *run4, *run8;
+  float *ux[3], *uz[3], *wx[3], *wz[3];  // by role
+  const float *gx[3], *gz[3];
+  uint8_t* bonded;  // S's
+  const uint8_t* present;
+  const float *bond_x[2], *bond_z[2];  // S's and M1's
+  const float* shear_limit2;
+  float ks0, cs0, ks1, cs1, dt, inv_m, inv_m2;
+};
+
+// The constants in every lane, made once a loop.
+template <class V>
+struct NodeLanes {
+  V ks0, cs0, ks1, cs1, dt, inv_m, inv_m2, zero;
+  explicit NodeLanes(const NodePass& p)
+      : ks0(simd::SplatLanes<V>(p.ks0)),
+        cs0(simd::SplatLanes<V>(p.cs0)),
+        ks1(simd::SplatLanes<V>(p.ks1)),
+        cs1(simd::SplatLanes<V>(p.cs1)),
+        dt(simd::SplatLanes<V>(p.dt)),
+        inv_m(simd::SplatLanes<V>(p.inv_m)),
+        inv_m2(simd::SplatLanes<V>(p.inv_m2)),
+        zero(simd::SplatLanes<V>(0.0f)) {}
+};
+
+// The S→M1 bonds of nodes i + k snapped, k the bits of `bits` (rare: out of the loops' way).
+__attribute__((noinline)) void SnapBonds(const NodePass& p, int i, int bits, int* snapped) {
+  for (int q = 0; bits != 0; ++q, bits >>= 1) {
+    if (!(bits & 1)) continue;
+    p.bonded[i + q] = 0;
+    ++*snapped;
+  }
+}
+
+// Node i's spring forces in layer r: its six springs in ascending index added to 0 (springs.h
+// NodeForce).
+NIWA_LANES_INLINE void NodeForceOf(const NodePass& p, int r, int i, float* fx, float* fz) {
+  float x = 0.0f, z = 0.0f;
+  const std::size_t e0 = 6 * static_cast<std::size_t>(i);
+  for (std::size_t e = e0; e < e0 + 6; ++e) {
+    const int q = p.inc_slot[e];
+    if (p.inc_a[e]) {
+      x += p.gx[r][q];
+      z += p.gz[r][q];
+    } else {
+      x -= p.gx[r][q];
+      z -= p.gz[r][q];
+    }
+  }
+  *fx = x;
+  *fz = z;
+}
+
+// Nodes i..i+W−1 (W lanes of V, masks I): lane by lane what NodeOne does, selects in place of its
+// branches. Each layer's springs are summed in ascending index from 0: as lanes where the nodes'
+// springs lie in runs (`run`: node_run4 or node_run8 at i; springs.h NodeForce4), else node by
+// node.
+template <class V, class I>
+NIWA_LANES_INLINE void NodeBatch(const NodePass& p, const NodeLanes<V>& c, int i, bool run,
+                                 int* snapped) {
+  using simd::LoadLanes;
+  using simd::StoreLanes;
+  constexpr int W = sizeof(V) / sizeof(float);  // lanes
+  V fx[3], fz[3];
+  if (run) {
+    const std::size_t e0 = 6 * static_cast<std::size_t>(i);
+    for (int r = 0; r < 3; ++r) {
+      V x = c.zero, z = c.zero;
+      for (std::size_t e = e0; e < e0 + 6; ++e) {
+        const V vx = LoadLanes<V>(p.gx[r] + p.inc_slot[e]);
+        const V vz = LoadLanes<V>(p.gz[r] + p.inc_slot[e]);
+        if (p.inc_a[e]) {
+          x += vx;
+          z += vz;
+        } else {
+          x -= vx;
+          z -= vz;
+        }
+      }
+      fx[r] = x;
+      fz[r] = z;
+    }
+  } else {
+    // At the seams each node's springs come in its own order: the sums one by one.
+    for (int r = 0; r < 3; ++r) {
+      for (int q = 0; q < W; ++q) {
+        float x, z;
+        NodeForceOf(p, r, i + q, &x, &z);
+        fx[r][q] = x;
+        fz[r][q] = z;
+      }
+    }
+  }
+  const V sux = LoadLanes<V>(p.ux[kS] + i), suz = LoadLanes<V>(p.uz[kS] + i),
+          swx = LoadLanes<V>(p.wx[kS] + i), swz = LoadLanes<V>(p.wz[kS] + i);
+  V aux = LoadLanes<V>(p.ux[kM1] + i), auz = LoadLanes<V>(p.uz[kM1] + i),
+    awx = LoadLanes<V>(p.wx[kM1] + i), awz = LoadLanes<V>(p.wz[kM1] + i);
+  V bux = LoadLanes<V>(p.ux[kM2] + i), buz = LoadLanes<V>(p.uz[kM2] + i),
+    bwx = LoadLanes<V>(p.wx[kM2] + i), bwz = LoadLanes<V>(p.wz[kM2] + i);
+  const I bonded = simd::NonZeroBytes<I>(p.bonded + i);
+  const I present = simd::NonZeroBytes<I>(p.present + i);
+  const V slip_x = (sux - aux) - LoadLanes<V>(p.bond_x[0] + i);
+  const V slip_z = (suz - auz) - LoadLanes<V>(p.bond_z[0] + i);
+  const I snaps = bonded & (slip_x * slip_x + slip_z * slip_z > LoadLanes<V>(p.shear_limit2 + i));
+  const I holds = bonded & ~snaps;
+  if (simd::AnyTrue(snaps)) SnapBonds(p, i, simd::LaneBits(snaps), snapped);
+  const V sx = simd::Select(holds, c.ks0 * slip_x + c.cs0 * (swx - awx), c.zero);
+  const V sz = simd::Select(holds, c.ks0 * slip_z + c.cs0 * (swz - awz), c.zero);
+  const V px = c.ks1 * ((aux - bux) - LoadLanes<V>(p.bond_x[1] + i)) + c.cs1 * (awx - bwx);
+  const V pz = c.ks1 * ((auz - buz) - LoadLanes<V>(p.bond_z[1] + i)) + c.cs1 * (awz - bwz);
+  const V qx = c.ks1 * bux + c.cs1 * bwx;
+  const V qz = c.ks1 * buz + c.cs1 * bwz;
+  const V nwx = swx + c.dt * ((fx[kS] - sx) * c.inv_m);
+  const V nwz = swz + c.dt * ((fz[kS] - sz) * c.inv_m);
+  StoreLanes(p.wx[kS] + i, simd::Select(present, nwx, swx));
+  StoreLanes(p.wz[kS] + i, simd::Select(present, nwz, swz));
+  StoreLanes(p.ux[kS] + i, simd::Select(present, sux + c.dt * nwx, sux));
+  StoreLanes(p.uz[kS] + i, simd::Select(present, suz + c.dt * nwz, suz));
+  awx += c.dt * ((fx[kM1] + sx - px) * c.inv_m);
+  awz += c.dt * ((fz[kM1] + sz - pz) * c.inv_m);
+  aux += c.dt * awx;
+  auz += c.dt * awz;
+  bwx += c.dt * ((fx[kM2] + px - qx) * c.inv_m2);
+  bwz += c.dt * ((fz[kM2] + pz - qz) * c.inv_m2);
+  bux += c.dt * bwx;
+  buz += c.dt * bwz;
+  StoreLanes(p.wx[kM1] + i, awx);
+  StoreLanes(p.wz[kM1] + i, awz);
+  StoreLanes(p.ux[kM1] + i, aux);
+  StoreLanes(p.uz[kM1] + i, auz);
+  StoreLanes(p.wx[kM2] + i, bwx);
+  StoreLanes(p.wz[kM2] + i, bwz);
+  StoreLanes(p.ux[kM2] + i, bux);
+  StoreLanes(p.uz[kM2] + i, buz);
+}
+
+// Node i alone (at the seams, where a node's springs come in another order).
+NIWA_LANES_INLINE void NodeOne(const NodePass& p, int i, int* snapped) {
+  float fx[3], fz[3];
+  for (int r = 0; r < 3; ++r) NodeForceOf(p, r, i, &fx[r], &fz[r]);
+  float* sux = p.ux[kS];
+  float* suz = p.uz[kS];
+  float* swx = p.wx[kS];
+  float* swz = p.wz[kS];
+  float* aux = p.ux[kM1];
+  float* auz = p.uz[kM1];
+  float* awx = p.wx[kM1];
+  float* awz = p.wz[kM1];
+  float* bux = p.ux[kM2];
+  float* buz = p.uz[kM2];
+  float* bwx = p.wx[kM2];
+  float* bwz = p.wz[kM2];
+  // S → M1, breaking past the node's shear limit (checked on the positions the step starts from,
+  // as the springs are).
+  float sx = 0.0f, sz = 0.0f;
+  if (p.bonded[i]) {
+    const float slip_x = (sux[i] - aux[i]) - p.bond_x[0][i];
+    const float slip_z = (suz[i] - auz[i]) - p.bond_z[0][i];
+    if (slip_x * slip_x + slip_z * slip_z > p.shear_limit2[i]) {
+      p.bonded[i] = 0;
+      ++*snapped;
+    } else {
+      sx = p.ks0 * slip_x + p.cs0 * (swx[i] - awx[i]);
+      sz = p.ks0 * slip_z + p.cs0 * (swz[i] - awz[i]);
+    }
+  }
+  // M1 → M2 (never breaks).
+  const float px = p.ks1 * ((aux[i] - bux[i]) - p.bond_x[1][i]) + p.cs1 * (awx[i] - bwx[i]);
+  const float pz = p.ks1 * ((auz[i] - buz[i]) - p.bond_z[1][i]) + p.cs1 * (awz[i] - bwz[i]);
+  // M2 → I (the anchor; never breaks).
+  const float qx = p.ks1 * bux[i] + p.cs1 * bwx[i];
+  const float qz = p.ks1 * buz[i] + p.cs1 * bwz[i];
+  const float dt = p.dt;
+  if (p.present[i]) {
+    swx[i] += dt * ((fx[kS] - sx) * p.inv_m);
+    swz[i] += dt * ((fz[kS] - sz) * p.inv_m);
+    sux[i] += dt * swx[i];
+    suz[i] += dt * swz[i];
+  }
+  awx[i] += dt * ((fx[kM1] + sx - px) * p.inv_m);
+  awz[i] += dt * ((fz[kM1] + sz - pz) * p.inv_m);
+  aux[i] += dt * awx[i];
+  auz[i] += dt * awz[i];
+  bwx[i] += dt * ((fx[kM2] + px - qx) * p.inv_m2);
+  bwz[i] += dt * ((fz[kM2] + pz - qz) * p.inv_m2);
+  bux[i] += dt * bwx[i];
+  buz[i] += dt * bwz[i];
+}
+
+// Nodes [begin, end): four a batch (their sums as lanes where their springs lie in runs), a tail of
+// fewer than four one by one; returns the S→M1 bonds snapped (the nodes' arithmetic is their own:
+// any split of the range gives the same bits).
+int NodeLoop4(const NodePass& pass, int begin, int end) {
+  const NodePass p = pass;
+  const NodeLanes<simd::Float4> c4(p);
+  int snapped = 0, i = begin;
+  for (; i + 4 <= end; i += 4) NodeBatch<simd::Float4, simd::Int4>(p, c4, i, p.run4[i], &snapped);
+  for (; i < end; ++i) NodeOne(p, i, &snapped);
+  return snapped;
+}
+
+#if NIWA_BARK_AVX2
+// The same with eight a batch where eight nodes' springs lie in runs (else two of four), in AVX2.
+__attribute__((target("avx2"))) int NodeLoop8(const NodePass& pass, int begin, int end) {
+  const NodePass p = pass;
+  const NodeLanes<simd::Float4> c4(p);
+  const NodeLanes<simd::Float8> c8(p);
+  int snapped = 0, i = begin;
+  for (; i + 8 <= end; i += 8) {
+    if (p.run8[i]) {
+      NodeBatch<simd::Float8, simd::Int8>(p, c8, i, true, &snapped);
+    } else {
+      NodeBatch<simd::Float4, simd::Int4>(p, c4, i, p.run4[i], &snapped);
+      NodeBatch<simd::Float4, simd::Int4>(p, c4, i + 4, p.run4[i + 4], &snapped);
+    }
+  }
+  for (; i + 4 <= end; i += 4) NodeBatch<simd::Float4, simd::Int4>(p, c4, i, p.run4[i], &snapped);
+  for (; i < end; ++i) NodeOne(p, i, &snapped);
+  return snapped;
+}
+#endif
 
 }  // namespace
 
@@ -176,9 +411,9 @@ bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
   const LayerGrowth lg = LayerGrowthAt(*f);
   const double th = lg.stiffness_m2;
   const int n = L.nodes();
-  // The lanes' halves: nodes [0, mid) and [mid, n), mid a multiple of four (the spring pass's
-  // batches start there).
-  const int mid = lanes ? (n / 8) * 4 : n;
+  // The lanes' halves: nodes [0, mid) and [mid, n), mid a multiple of eight (the passes' batches
+  // start there).
+  const int mid = lanes ? (n / 16) * 8 : n;
   // Springs of the three layers (M2's constants scaled by its thickness share).
   float k[3][2], c[3][2], rest[3][2];
   for (int r = 0; r < 3; ++r) {
@@ -224,131 +459,46 @@ bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
   const float dt_all = static_cast<float>(m.dt);
   const float inv_m_all = static_cast<float>(1.0 / b.mass);
   const float inv_m2_all = static_cast<float>(1.0 / m2_mass);
+  NodePass p;
+  p.inc_slot = L.inc_slot.data();
+  p.inc_a = L.inc_a.data();
+  p.run4 = L.node_run4.data();
+  p.run8 = L.node_run8.data();
+  for (int r = 0; r < 3; ++r) {
+    Surface& s = f->layer[r].s;
+    p.ux[r] = s.ux.data();
+    p.uz[r] = s.uz.data();
+    p.wx[r] = s.wx.data();
+    p.wz[r] = s.wz.data();
+    p.gx[r] = s.gx.data();
+    p.gz[r] = s.gz.data();
+  }
   CorkLayer& S = f->layer[kS];
   CorkLayer& M1 = f->layer[kM1];
-  CorkLayer& M2 = f->layer[kM2];
-  using simd::Float4;
-  using simd::Int4;
-  auto load = [](const std::vector<float>& v, int i) {
-    Float4 x;
-    std::memcpy(&x, v.data() + i, sizeof x);
-    return x;
-  };
-  auto store = [](std::vector<float>* v, int i, Float4 x) {
-    std::memcpy(v->data() + i, &x, sizeof x);
-  };
-  // Nodes [begin, end), the S→M1 bonds broken counted in *snapped (the nodes' arithmetic is
-  // their own: any split of the range gives the same bits). Four nodes a batch where their
-  // springs lie in runs (lane by lane what the single node below does, selects in place of its
-  // branches); the rest, at the seams, one by one. The constants are the lambda's own locals (a
-  // byte store may alias anything it reaches through a capture, forcing reloads).
+  p.bonded = S.bonded.data();
+  p.present = S.present.data();
+  p.bond_x[0] = S.bond_x.data();
+  p.bond_z[0] = S.bond_z.data();
+  p.bond_x[1] = M1.bond_x.data();
+  p.bond_z[1] = M1.bond_z.data();
+  p.shear_limit2 = S.shear_limit2.data();
+  p.ks0 = ks0_all;
+  p.cs0 = cs0_all;
+  p.ks1 = ks1_all;
+  p.cs1 = cs1_all;
+  p.dt = dt_all;
+  p.inv_m = inv_m_all;
+  p.inv_m2 = inv_m2_all;
+  const bool eight = BatchLanes() == 8;
   auto node_pass = [&](int begin, int end, int* snapped) {
-    const float ks0 = ks0_all, cs0 = cs0_all, ks1 = ks1_all, cs1 = cs1_all, dt = dt_all,
-                inv_m = inv_m_all, inv_m2 = inv_m2_all;
-    const Float4 vks0 = simd::Splat4(ks0), vcs0 = simd::Splat4(cs0), vks1 = simd::Splat4(ks1),
-                 vcs1 = simd::Splat4(cs1), vdt = simd::Splat4(dt), vinv = simd::Splat4(inv_m),
-                 vinv2 = simd::Splat4(inv_m2), zero = simd::Splat4(0.0f);
-    int i = begin;
-    while (i < end) {
-      if (i + 4 <= end && L.node_run4[i]) {
-        Float4 fsx, fsz, f1x, f1z, f2x, f2z;
-        NodeForce4(L, S.s, i, &fsx, &fsz);
-        NodeForce4(L, M1.s, i, &f1x, &f1z);
-        NodeForce4(L, M2.s, i, &f2x, &f2z);
-        const Float4 sux = load(S.s.ux, i), suz = load(S.s.uz, i), swx = load(S.s.wx, i),
-                     swz = load(S.s.wz, i);
-        Float4 aux = load(M1.s.ux, i), auz = load(M1.s.uz, i), awx = load(M1.s.wx, i),
-               awz = load(M1.s.wz, i);
-        Float4 bux = load(M2.s.ux, i), buz = load(M2.s.uz, i), bwx = load(M2.s.wx, i),
-               bwz = load(M2.s.wz, i);
-        const Int4 bonded = Int4{S.bonded[i], S.bonded[i + 1], S.bonded[i + 2], S.bonded[i + 3]} !=
-                            Int4{0, 0, 0, 0};
-        const Int4 present = Int4{S.present[i], S.present[i + 1], S.present[i + 2],
-                                  S.present[i + 3]} != Int4{0, 0, 0, 0};
-        const Float4 slip_x = (sux - aux) - load(S.bond_x, i);
-        const Float4 slip_z = (suz - auz) - load(S.bond_z, i);
-        const Int4 snaps = bonded & (slip_x * slip_x + slip_z * slip_z > load(S.shear_limit2, i));
-        const Int4 holds = bonded & ~snaps;
-        if (simd::AnyTrue(snaps)) {
-          for (int q = 0; q < 4; ++q) {
-            if (!snaps[q]) continue;
-            S.bonded[i + q] = 0;
-            ++*snapped;
-          }
-        }
-        const Float4 sx = simd::Select(holds, vks0 * slip_x + vcs0 * (swx - awx), zero);
-        const Float4 sz = simd::Select(holds, vks0 * slip_z + vcs0 * (swz - awz), zero);
-        const Float4 px = vks1 * ((aux - bux) - load(M1.bond_x, i)) + vcs1 * (awx - bwx);
-        const Float4 pz = vks1 * ((auz - buz) - load(M1.bond_z, i)) + vcs1 * (awz - bwz);
-        const Float4 qx = vks1 * bux + vcs1 * bwx;
-        const Float4 qz = vks1 * buz + vcs1 * bwz;
-        const Float4 nwx = swx + vdt * ((fsx - sx) * vinv);
-        const Float4 nwz = swz + vdt * ((fsz - sz) * vinv);
-        store(&S.s.wx, i, simd::Select(present, nwx, swx));
-        store(&S.s.wz, i, simd::Select(present, nwz, swz));
-        store(&S.s.ux, i, simd::Select(present, sux + vdt * nwx, sux));
-        store(&S.s.uz, i, simd::Select(present, suz + vdt * nwz, suz));
-        awx += vdt * ((f1x + sx - px) * vinv);
-        awz += vdt * ((f1z + sz - pz) * vinv);
-        aux += vdt * awx;
-        auz += vdt * awz;
-        bwx += vdt * ((f2x + px - qx) * vinv2);
-        bwz += vdt * ((f2z + pz - qz) * vinv2);
-        bux += vdt * bwx;
-        buz += vdt * bwz;
-        store(&M1.s.wx, i, awx);
-        store(&M1.s.wz, i, awz);
-        store(&M1.s.ux, i, aux);
-        store(&M1.s.uz, i, auz);
-        store(&M2.s.wx, i, bwx);
-        store(&M2.s.wz, i, bwz);
-        store(&M2.s.ux, i, bux);
-        store(&M2.s.uz, i, buz);
-        i += 4;
-        continue;
-      }
-      float fsx, fsz, f1x, f1z, f2x, f2z;
-      NodeForce(L, S.s, i, &fsx, &fsz);
-      NodeForce(L, M1.s, i, &f1x, &f1z);
-      NodeForce(L, M2.s, i, &f2x, &f2z);
-      // S → M1, breaking past the node's shear limit (checked on the positions the step starts
-      // from, as the springs are).
-      float sx = 0.0f, sz = 0.0f;
-      if (S.bonded[i]) {
-        const float slip_x = (S.s.ux[i] - M1.s.ux[i]) - S.bond_x[i];
-        const float slip_z = (S.s.uz[i] - M1.s.uz[i]) - S.bond_z[i];
-        if (slip_x * slip_x + slip_z * slip_z > S.shear_limit2[i]) {
-          S.bonded[i] = 0;
-          ++*snapped;
-        } else {
-          sx = ks0 * slip_x + cs0 * (S.s.wx[i] - M1.s.wx[i]);
-          sz = ks0 * slip_z + cs0 * (S.s.wz[i] - M1.s.wz[i]);
-        }
-      }
-      // M1 → M2 (never breaks).
-      const float px =
-          ks1 * ((M1.s.ux[i] - M2.s.ux[i]) - M1.bond_x[i]) + cs1 * (M1.s.wx[i] - M2.s.wx[i]);
-      const float pz =
-          ks1 * ((M1.s.uz[i] - M2.s.uz[i]) - M1.bond_z[i]) + cs1 * (M1.s.wz[i] - M2.s.wz[i]);
-      // M2 → I (the anchor; never breaks).
-      const float qx = ks1 * M2.s.ux[i] + cs1 * M2.s.wx[i];
-      const float qz = ks1 * M2.s.uz[i] + cs1 * M2.s.wz[i];
-      if (S.present[i]) {
-        S.s.wx[i] += dt * ((fsx - sx) * inv_m);
-        S.s.wz[i] += dt * ((fsz - sz) * inv_m);
-        S.s.ux[i] += dt * S.s.wx[i];
-        S.s.uz[i] += dt * S.s.wz[i];
-      }
-      M1.s.wx[i] += dt * ((f1x + sx - px) * inv_m);
-      M1.s.wz[i] += dt * ((f1z + sz - pz) * inv_m);
-      M1.s.ux[i] += dt * M1.s.wx[i];
-      M1.s.uz[i] += dt * M1.s.wz[i];
-      M2.s.wx[i] += dt * ((f2x + px - qx) * inv_m2);
-      M2.s.wz[i] += dt * ((f2z + pz - qz) * inv_m2);
-      M2.s.ux[i] += dt * M2.s.wx[i];
-      M2.s.uz[i] += dt * M2.s.wz[i];
-      ++i;
+#if NIWA_BARK_AVX2
+    if (eight) {
+      *snapped += NodeLoop8(p, begin, end);
+      return;
     }
+#endif
+    static_cast<void>(eight);
+    *snapped += NodeLoop4(p, begin, end);
   };
   int snapped[2] = {0, 0};
   if (lanes) {
@@ -365,7 +515,7 @@ bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
 void ExchangeRoles(const Lattice& L, uint64_t seed, FourLayer* f) {
   // What is left of S is shed: its plates (of two triangles or more, as the region measure
   // counts them) and its nodes.
-  f->shed_regions += MeasureCracks(L, f->layer[kS].s, 1.0, 1.0).count;
+  f->shed_regions += MeasurePlates(L, f->layer[kS].s, 1.0, 1.0).count;
   f->shed_nodes += PresentNodes(*f);
   f->layer[kS] = std::move(f->layer[kM1]);
   f->layer[kM1] = std::move(f->layer[kM2]);
@@ -432,7 +582,7 @@ void CheckPeeling(const Lattice& L, FourLayer* f) {
   // across their edges, not wrapping the torus, as the maps draw them) with S_r/S_b > A, S_r and
   // S_b counted in nodes (its nodes, and those still bonded), or with no bond at all, peel. A node
   // in no plate (every triangle around it cracked) is a fragment of its own: it peels unbonded.
-  const CrackMeasures plates = MeasureCracks(L, S.s, 1.0, 1.0);
+  const CrackMeasures plates = MeasurePlates(L, S.s, 1.0, 1.0);
   std::vector<std::vector<int>> members(plates.regions.size());
   std::vector<int> stamp(n, -1);
   std::vector<uint8_t> in_plate(n, 0);

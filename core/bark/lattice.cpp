@@ -85,6 +85,16 @@ Lattice BuildLattice(int n_r, int n_h, double l_o) {
       side[side[0] < 0 ? 0 : 1] = static_cast<int32_t>(t);
     }
   }
+  // The triangles' steps (regions.cpp walks plates by them), as the region measure computed them.
+  const double pitch0 = L.pitch(), half0 = L.l_o / 2.0;
+  for (const auto& o : L.tri_offsets) {
+    std::array<int8_t, 4> st;
+    for (int k = 0; k < 2; ++k) {
+      st[2 * k] = static_cast<int8_t>(std::lround(o[2 * k] / pitch0));
+      st[2 * k + 1] = static_cast<int8_t>(std::lround(o[2 * k + 1] / half0));
+    }
+    L.tri_steps.push_back(st);
+  }
   // The spring pass's layout: slots, each node's springs in index order, the runs of four.
   const int springs = L.springs();
   L.slot_b.assign(springs, 0);
@@ -100,23 +110,33 @@ Lattice BuildLattice(int n_r, int n_h, double l_o) {
       L.inc_a[e] = end == 0;
     }
   }
-  L.slot_run4.assign(springs, 0);
-  for (int q = 0; q + 3 < springs; ++q) {
-    bool run = (q % n) + 3 < n;  // within one sub-family
-    for (int k = 1; k < 4 && run; ++k) run = L.slot_b[q + k] == L.slot_b[q] + k;
-    L.slot_run4[q] = run;
-  }
-  L.node_run4.assign(n, 0);
-  for (int v = 0; v + 3 < n; ++v) {
-    bool run = true;
-    for (int k = 1; k < 4 && run; ++k) {
-      for (int e = 0; e < 6 && run; ++e) {
-        const std::size_t p = 6 * static_cast<std::size_t>(v) + e, q = p + 6 * k;
-        run = L.inc_slot[q] == L.inc_slot[p] + k && L.inc_a[q] == L.inc_a[p];
-      }
+  // Runs of w slots (consecutive b within one sub-family) and of w nodes (entry by entry
+  // consecutive slots, the same ends).
+  auto slot_runs = [&](int w, std::vector<uint8_t>* out) {
+    out->assign(springs, 0);
+    for (int q = 0; q + w - 1 < springs; ++q) {
+      bool run = (q % n) + w - 1 < n;  // within one sub-family
+      for (int k = 1; k < w && run; ++k) run = L.slot_b[q + k] == L.slot_b[q] + k;
+      (*out)[q] = run;
     }
-    L.node_run4[v] = run;
-  }
+  };
+  auto node_runs = [&](int w, std::vector<uint8_t>* out) {
+    out->assign(n, 0);
+    for (int v = 0; v + w - 1 < n; ++v) {
+      bool run = true;
+      for (int k = 1; k < w && run; ++k) {
+        for (int e = 0; e < 6 && run; ++e) {
+          const std::size_t p = 6 * static_cast<std::size_t>(v) + e, q = p + 6 * k;
+          run = L.inc_slot[q] == L.inc_slot[p] + k && L.inc_a[q] == L.inc_a[p];
+        }
+      }
+      (*out)[v] = run;
+    }
+  };
+  slot_runs(4, &L.slot_run4);
+  slot_runs(8, &L.slot_run8);
+  node_runs(4, &L.node_run4);
+  node_runs(8, &L.node_run8);
   // Scan lines: a triangle's axial edge (its two nodes in one column) and its apex fix its strip,
   // its half (beside the axial edge) and the lines through it. Heights in quarters of L_o.
   L.line_around.assign(static_cast<std::size_t>(n_h) * 2 * n_r, -1);

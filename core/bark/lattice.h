@@ -29,6 +29,8 @@ struct Lattice {
   // (2,0), and the reference vectors of nodes 1 and 2 from node 0.
   std::vector<std::array<int32_t, 3>> tri_nodes, tri_springs;
   std::vector<std::array<float, 4>> tri_offsets;  // x1, z1, x2, z2
+  // The same in whole steps: columns and half-spacings (lround(x/pitch), lround(z/(L_o/2))).
+  std::vector<std::array<int8_t, 4>> tri_steps;
   // The two triangles on either side of each spring (every spring has two on the torus).
   std::vector<std::array<int32_t, 2>> spring_tris;
   // The spring pass's layout (springs.cpp). A spring's force slot: axial s -> s, diagonal
@@ -37,7 +39,8 @@ struct Lattice {
   // slot. inc_slot / inc_a: each node's six springs in ascending spring index (the order the
   // forces were summed in, spring by spring), as slot and 1 when the node is the spring's a.
   // slot_run4: slots n..n+3 of a sub-family have consecutive b. node_run4: nodes n..n+3 have, entry
-  // by entry, consecutive slots and the same ends (so four nodes sum as lanes).
+  // by entry, consecutive slots and the same ends (so four nodes sum as lanes). slot_run8 and
+  // node_run8: the same for eight (the AVX2 batches, springs.h BatchLanes).
   std::vector<int32_t> slot_b, inc_slot;
   // Scan lines (the crack-spacing measure, regions.h), one triangle a half of a strip or row.
   // line_around: N_H lines around the trunk at z = (j + 1/4)·L_o, each of 2·N_R halves, half h
@@ -46,7 +49,7 @@ struct Lattice {
   // halves, half h at z ∈ [L_o/4 + h·L_o/2, L_o/4 + (h + 1)·L_o/2]. Every triangle is on one line
   // of each.
   std::vector<int32_t> line_around, line_along;
-  std::vector<uint8_t> inc_a, slot_run4, node_run4;
+  std::vector<uint8_t> inc_a, slot_run4, node_run4, slot_run8, node_run8;
 
   int nodes() const { return n_r * n_h; }
   int springs() const { return static_cast<int>(a.size()); }

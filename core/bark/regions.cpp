@@ -74,20 +74,10 @@ Spacing ScanSpacing(const std::vector<int32_t>& table, int lines, int halves, do
 
 }  // namespace
 
-CrackMeasures MeasureCracks(const Lattice& L, const Surface& s, double s_theta, double s_z) {
+CrackMeasures MeasurePlates(const Lattice& L, const Surface& s, double s_theta, double s_z) {
   CrackMeasures m;
-  for (int i = 0; i < L.springs(); ++i) {
-    const int f = static_cast<int>(L.family(i));
-    ++m.springs[f];
-    m.broken[f] += s.broken[i];
-  }
-  for (int f = 0; f < 2; ++f)
-    m.broken_fraction[f] = m.springs[f] ? static_cast<double>(m.broken[f]) / m.springs[f] : 0.0;
-  const int all = m.broken[0] + m.broken[1];
-  m.vertical_crack_share = all ? static_cast<double>(m.broken[1]) / all : 0.0;
-
   // Plates: intact triangles joined across their (intact) edges. Each triangle's nodes sit at
-  // whole steps of columns and half-spacings from its node 0.
+  // whole steps of columns and half-spacings from its node 0 (lattice.h tri_steps).
   const int nt = static_cast<int>(L.tri_nodes.size());
   const double pitch0 = L.pitch(), half0 = L.l_o / 2.0;
   auto step_of = [&](int t, int k, int* dc, int* dz) {
@@ -95,8 +85,8 @@ CrackMeasures MeasureCracks(const Lattice& L, const Surface& s, double s_theta, 
       *dc = *dz = 0;
       return;
     }
-    *dc = static_cast<int>(std::lround(L.tri_offsets[t][2 * (k - 1)] / pitch0));
-    *dz = static_cast<int>(std::lround(L.tri_offsets[t][2 * (k - 1) + 1] / half0));
+    *dc = L.tri_steps[t][2 * (k - 1)];
+    *dz = L.tri_steps[t][2 * (k - 1) + 1];
   };
   std::vector<uint8_t> plate(nt, 0);
   for (int t = 0; t < nt; ++t) {
@@ -177,6 +167,21 @@ CrackMeasures MeasureCracks(const Lattice& L, const Surface& s, double s_theta, 
     m.mean_height = sum_h / m.count;
     m.closed_fraction = closed / counted;
   }
+  return m;
+}
+
+CrackMeasures MeasureCracks(const Lattice& L, const Surface& s, double s_theta, double s_z) {
+  CrackMeasures m = MeasurePlates(L, s, s_theta, s_z);
+  const int nt = static_cast<int>(L.tri_nodes.size());
+  for (int i = 0; i < L.springs(); ++i) {
+    const int f = static_cast<int>(L.family(i));
+    ++m.springs[f];
+    m.broken[f] += s.broken[i];
+  }
+  for (int f = 0; f < 2; ++f)
+    m.broken_fraction[f] = m.springs[f] ? static_cast<double>(m.broken[f]) / m.springs[f] : 0.0;
+  const int all = m.broken[0] + m.broken[1];
+  m.vertical_crack_share = all ? static_cast<double>(m.broken[1]) / all : 0.0;
   // Intercepts. A row j crosses a crack between columns i and i+1 when a diagonal of (i, j) broke;
   // a column's cracks are its broken axial springs.
   double crossings = 0, axial_broken = 0;

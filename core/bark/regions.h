@@ -59,5 +59,9 @@ struct CrackMeasures {
 // The measures of the surface at the growth factors (s_θ, s_z scale the reference lattice).
 CrackMeasures MeasureCracks(const Lattice& lattice, const Surface& surface, double s_theta,
                             double s_z);
+// Its plates alone (tri_region, regions, count, strips, their extents and fractions; the other
+// fields zero): what the 4-layer model's peeling and shedding read, every kPeelCheckSteps steps.
+CrackMeasures MeasurePlates(const Lattice& lattice, const Surface& surface, double s_theta,
+                            double s_z);
 
 }  // namespace niwa::bark

@@ -2,15 +2,55 @@
 #include "bark/springs.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
 
 #include "math/det_math.h"
 #include "math/simd4.h"
+#include "math/simd8.h"
 #include "random/pcg32.h"
 
+// The batch kernels are inlined into their four- and eight-lane loops (math/simd8.h), so no 256-bit
+// value crosses a call: GCC's warning on that ABI does not apply (to the end of the file, where GCC
+// places some of them).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
 namespace niwa::bark {
+
+namespace {
+std::atomic<int> g_batch_lanes{0};  // 0: not yet decided
+}  // namespace
+
+int BatchLanes() {
+  int lanes = g_batch_lanes.load(std::memory_order_relaxed);
+  if (lanes == 0) {
+#if NIWA_BARK_AVX2
+    lanes = __builtin_cpu_supports("avx2") ? 8 : 4;
+#else
+    lanes = 4;
+#endif
+    g_batch_lanes.store(lanes, std::memory_order_relaxed);
+  }
+  return lanes;
+}
+
+int SetBatchLanes(int lanes) {
+  const int before = BatchLanes();
+  g_batch_lanes.store(lanes == 8 && EightLanesAvailable() ? 8 : 4, std::memory_order_relaxed);
+  return before;
+}
+
+bool EightLanesAvailable() {
+#if NIWA_BARK_AVX2
+  return __builtin_cpu_supports("avx2");
+#else
+  return false;
+#endif
+}
 
 Mechanics MechanicsOf(const BarkParams& p) {
   Mechanics m;
@@ -42,108 +82,190 @@ constexpr float kNever = std::numeric_limits<float>::infinity();
 
 constexpr float kTinyLength2 = 1e-12f;  // a floor under l² (two nodes on one point)
 
-// Break checks and forces of one sub-family of springs (0: the axial springs; 1, 2: each node's
-// first and second diagonal), the spring of node n joining a = n to b = slot_b: four nodes a
-// batch, b loaded as a run where slot_run4 says so, else lane by lane, and the arithmetic lane by
-// lane; a tail of fewer than four one by one with the same operations, so the bits do not depend
-// on the batching. The forces go to the slots (gx, gz); a node pass sums them (NodeForce,
-// NodeForce4). A batch of four broken springs only writes its zero forces. The reference vector of
-// a sub-family is one (lattice.h: axial (0, L_o), diagonals (pitch, ±L_o/2)). Only the springs of
-// nodes [begin, end) (begin a multiple of four): each spring's arithmetic is its own, so a pass
-// split into ranges gives the bits of the whole.
-int SubFamilyPass(const Lattice& L, int sub, float k, float c, float l0, const Growth& g,
-                  Surface* s, int begin, int end) {
-  using simd::Float4;
-  using simd::Int4;
-  const int n_nodes = end;
-  const int base = sub * L.nodes();
-  const int first = sub == 0 ? 0 : L.axial_count + (sub - 1), stride = sub == 0 ? 1 : 2;
-  const float ox = L.ox[first], oz = L.oz[first];
-  const int32_t* B = L.slot_b.data() + base;
-  const uint8_t* run4 = L.slot_run4.data() + base;
-  const float* ux = s->ux.data();
-  const float* uz = s->uz.data();
-  const float* wx = s->wx.data();
-  const float* wz = s->wz.data();
-  float* gx = s->gx.data() + base;
-  float* gz = s->gz.data() + base;
-  float* limit2 = s->limit2.data() + base;
-  float* on = s->on.data() + base;
-  const float st = g.s_theta, sz = g.s_z, rt = g.rate_theta, rz = g.rate_z;
-  int broke = 0;
-  auto record_break = [&](int n) {
-    limit2[n] = kNever;
-    on[n] = 0.0f;
-    s->broken[first + stride * n] = 1;
-    ++broke;
-  };
-  // The products of the constant reference vector (as the per-spring ox·s_θ etc. were).
-  const float dx0 = ox * st, dz0 = oz * sz, rx0 = ox * rt, rz0 = oz * rz;
-  const Float4 vdx0 = simd::Splat4(dx0), vdz0 = simd::Splat4(dz0), vrx0 = simd::Splat4(rx0),
-               vrz0 = simd::Splat4(rz0), vk = simd::Splat4(k), vc = simd::Splat4(c),
-               vl0 = simd::Splat4(l0), tiny = simd::Splat4(kTinyLength2), zero = simd::Splat4(0.0f),
-               one = simd::Splat4(1.0f);
-  auto load = [](const float* p) {
-    Float4 v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-  };
-  int n = begin;
-  for (; n + 4 <= n_nodes; n += 4) {
-    const Float4 alive = load(on + n);
-    if (!simd::AnyTrue(alive != zero)) {
-      // Broken before this step: no force, no break.
-      std::memcpy(gx + n, &zero, sizeof zero);
-      std::memcpy(gz + n, &zero, sizeof zero);
-      continue;
-    }
-    Float4 bux, buz, bwx, bwz;
-    if (run4[n]) {
-      const int b = B[n];
-      bux = load(ux + b);
-      buz = load(uz + b);
-      bwx = load(wx + b);
-      bwz = load(wz + b);
-    } else {
-      const int b0 = B[n], b1 = B[n + 1], b2 = B[n + 2], b3 = B[n + 3];
-      bux = Float4{ux[b0], ux[b1], ux[b2], ux[b3]};
-      buz = Float4{uz[b0], uz[b1], uz[b2], uz[b3]};
-      bwx = Float4{wx[b0], wx[b1], wx[b2], wx[b3]};
-      bwz = Float4{wz[b0], wz[b1], wz[b2], wz[b3]};
-    }
-    const Float4 dx = vdx0 + (bux - load(ux + n)), dz = vdz0 + (buz - load(uz + n));
-    const Float4 l2 = dx * dx + dz * dz;
-    const Int4 breaks = l2 > load(limit2 + n);
-    const Float4 l = simd::Sqrt(simd::Select(l2 > tiny, l2, tiny));
-    const Float4 inv = one / l;
-    const Float4 nx = dx * inv, nz = dz * inv;
-    const Float4 rel = ((bwx - load(wx + n)) + vrx0) * nx + ((bwz - load(wz + n)) + vrz0) * nz;
-    const Float4 f = simd::Select(breaks, zero, alive) * (vk * (l - vl0) + vc * rel);
-    const Float4 fx = f * nx, fz = f * nz;
-    std::memcpy(gx + n, &fx, sizeof fx);
-    std::memcpy(gz + n, &fz, sizeof fz);
-    if (simd::AnyTrue(breaks)) {
-      for (int q = 0; q < 4; ++q)
-        if (breaks[q]) record_break(n + q);
-    }
-  }
-  for (; n < n_nodes; ++n) {
-    const int a = n, b = B[n];
-    const float dx = dx0 + (ux[b] - ux[a]);
-    const float dz = dz0 + (uz[b] - uz[a]);
-    const float l2 = dx * dx + dz * dz;
-    const bool breaks = l2 > limit2[n];
-    const float l = std::sqrt(l2 > kTinyLength2 ? l2 : kTinyLength2);
-    const float inv = 1.0f / l;
-    const float nx = dx * inv, nz = dz * inv;
-    const float rel = ((wx[b] - wx[a]) + rx0) * nx + ((wz[b] - wz[a]) + rz0) * nz;
-    const float f = (breaks ? 0.0f : on[n]) * (k * (l - l0) + c * rel);
-    gx[n] = f * nx;
-    gz[n] = f * nz;
-    if (breaks) record_break(n);
-  }
-  return broke;
+// One layer's spring pass over the three sub-families (0: the axial springs; 1, 2: each node's
+// first and second diagonal), the spring of sub-family t at node n joining a = n to b = slot_b:
+// raw pointers and constants, copied into the loops' locals (a byte store may alias anything it
+// reaches through a reference, forcing reloads). The reference vector of a sub-family is one
+// (lattice.h: axial (0, L_o), diagonals (pitch, ±L_o/2)), so its products with the growth factors
+// are constants of the pass (as the per-spring ox·s_θ etc. were). A spring is broken when its
+// limit is +inf (Surface::limit2).
+struct SpringPass {
+  const int32_t* b[3];
+  const uint8_t* run4[3];
+  const uint8_t* run8[3];
+  const float *ux, *uz, *wx, *wz;
+  float *gx[3], *gz[3], *limit2[3];
+  uint8_t* broken;  // by spring: first[t] + stride[t]·n
+  int first[3], stride[3];
+  float dx0[3], dz0[3], rx0[3], rz0[3], k[3], c[3], l0[3];  // k, c, l0 by sub-family's family
+};
+
+// Spring n of sub-family t broke in this step: never again, no force from the next step on.
+NIWA_LANES_INLINE void RecordBreak(const SpringPass& p, int t, int n, int* broke) {
+  p.limit2[t][n] = kNever;
+  p.broken[p.first[t] + p.stride[t] * n] = 1;
+  ++*broke;
 }
+// Springs n + k of sub-family t broke for the bits k of `bits` (rare: out of the loops' way).
+__attribute__((noinline)) void RecordBreaks(const SpringPass& p, int t, int n, int bits,
+                                            int* broke) {
+  for (int q = 0; bits != 0; ++q, bits >>= 1)
+    if (bits & 1) RecordBreak(p, t, n + q, broke);
+}
+
+using simd::LoadLanes;
+using simd::SplatLanes;
+using simd::StoreLanes;
+
+// A pass's constants in every lane, made once a loop.
+template <class V>
+struct SpringLanes {
+  V dx0[3], dz0[3], rx0[3], rz0[3], k[3], c[3], l0[3];
+  V tiny, one, zero, never;
+  explicit SpringLanes(const SpringPass& p)
+      : tiny(SplatLanes<V>(kTinyLength2)),
+        one(SplatLanes<V>(1.0f)),
+        zero(SplatLanes<V>(0.0f)),
+        never(SplatLanes<V>(kNever)) {
+    for (int t = 0; t < 3; ++t) {
+      dx0[t] = SplatLanes<V>(p.dx0[t]);
+      dz0[t] = SplatLanes<V>(p.dz0[t]);
+      rx0[t] = SplatLanes<V>(p.rx0[t]);
+      rz0[t] = SplatLanes<V>(p.rz0[t]);
+      k[t] = SplatLanes<V>(p.k[t]);
+      c[t] = SplatLanes<V>(p.c[t]);
+      l0[t] = SplatLanes<V>(p.l0[t]);
+    }
+  }
+};
+
+// Node a's state in lanes n..n+W−1.
+template <class V>
+struct NodeState {
+  V ux, uz, wx, wz;
+};
+template <class V>
+NIWA_LANES_INLINE NodeState<V> LoadState(const SpringPass& p, int n) {
+  return NodeState<V>{LoadLanes<V>(p.ux + n), LoadLanes<V>(p.uz + n), LoadLanes<V>(p.wx + n),
+                      LoadLanes<V>(p.wz + n)};
+}
+
+// Springs n..n+W−1 of sub-family t (W lanes of V, masks I; a: their nodes a's state): b loaded as a
+// run where `run` says so, else lane by lane; the arithmetic lane by lane, the very operations of
+// SpringOne (a broken spring's factor 0 where SpringOne's `on` was). A batch of springs all broken
+// before the step only writes its zero forces.
+template <class V, class I>
+NIWA_LANES_INLINE void SpringBatch(const SpringPass& p, const SpringLanes<V>& v, int t, int n,
+                                   bool run, const NodeState<V>& a, int* broke) {
+  constexpr int W = sizeof(V) / sizeof(float);  // lanes
+  const V limit2 = LoadLanes<V>(p.limit2[t] + n);
+  const I intact = limit2 != v.never;
+  if (!simd::AnyTrue(intact)) {
+    StoreLanes(p.gx[t] + n, v.zero);
+    StoreLanes(p.gz[t] + n, v.zero);
+    return;
+  }
+  V bux, buz, bwx, bwz;
+  if (run) {
+    const int b = p.b[t][n];
+    bux = LoadLanes<V>(p.ux + b);
+    buz = LoadLanes<V>(p.uz + b);
+    bwx = LoadLanes<V>(p.wx + b);
+    bwz = LoadLanes<V>(p.wz + b);
+  } else {
+    for (int q = 0; q < W; ++q) {
+      const int b = p.b[t][n + q];
+      bux[q] = p.ux[b];
+      buz[q] = p.uz[b];
+      bwx[q] = p.wx[b];
+      bwz[q] = p.wz[b];
+    }
+  }
+  const V dx = v.dx0[t] + (bux - a.ux);
+  const V dz = v.dz0[t] + (buz - a.uz);
+  const V l2 = dx * dx + dz * dz;
+  const I breaks = l2 > limit2;
+  const V l = simd::Sqrt(simd::Select(l2 > v.tiny, l2, v.tiny));
+  const V inv = v.one / l;
+  const V nx = dx * inv, nz = dz * inv;
+  const V rel = ((bwx - a.wx) + v.rx0[t]) * nx + ((bwz - a.wz) + v.rz0[t]) * nz;
+  const V alive = simd::Select(intact & ~breaks, v.one, v.zero);
+  const V f = alive * (v.k[t] * (l - v.l0[t]) + v.c[t] * rel);
+  StoreLanes(p.gx[t] + n, f * nx);
+  StoreLanes(p.gz[t] + n, f * nz);
+  if (simd::AnyTrue(breaks)) RecordBreaks(p, t, n, simd::LaneBits(breaks), broke);
+}
+
+// Spring n of sub-family t alone (the tail of fewer than four), with SpringBatch's operations.
+NIWA_LANES_INLINE void SpringOne(const SpringPass& p, int t, int n, int* broke) {
+  const int a = n, b = p.b[t][n];
+  const float dx = p.dx0[t] + (p.ux[b] - p.ux[a]);
+  const float dz = p.dz0[t] + (p.uz[b] - p.uz[a]);
+  const float l2 = dx * dx + dz * dz;
+  const float limit2 = p.limit2[t][n];
+  const bool breaks = l2 > limit2;
+  const float l = std::sqrt(l2 > kTinyLength2 ? l2 : kTinyLength2);
+  const float inv = 1.0f / l;
+  const float nx = dx * inv, nz = dz * inv;
+  const float rel = ((p.wx[b] - p.wx[a]) + p.rx0[t]) * nx + ((p.wz[b] - p.wz[a]) + p.rz0[t]) * nz;
+  const float f =
+      (breaks || limit2 == kNever ? 0.0f : 1.0f) * (p.k[t] * (l - p.l0[t]) + p.c[t] * rel);
+  p.gx[t][n] = f * nx;
+  p.gz[t][n] = f * nz;
+  if (breaks) RecordBreak(p, t, n, broke);
+}
+
+// The springs of nodes [begin, end), the three sub-families of a batch of nodes together (their
+// node a's state loaded once): four nodes a batch, then one by one. broke: per family.
+void SpringLoop4(const SpringPass& pass, int begin, int end, int broke[2]) {
+  const SpringPass p = pass;
+  const SpringLanes<simd::Float4> v4(p);
+  int n = begin;
+  for (; n + 4 <= end; n += 4) {
+    const NodeState<simd::Float4> a = LoadState<simd::Float4>(p, n);
+#pragma GCC unroll 3
+    for (int t = 0; t < 3; ++t)
+      SpringBatch<simd::Float4, simd::Int4>(p, v4, t, n, p.run4[t][n], a, &broke[t > 0]);
+  }
+  for (; n < end; ++n) {
+    for (int t = 0; t < 3; ++t) SpringOne(p, t, n, &broke[t > 0]);
+  }
+}
+
+#if NIWA_BARK_AVX2
+// The same with eight nodes a batch (a sub-family whose eight b do not run on: two batches of
+// four), in AVX2.
+__attribute__((target("avx2"))) void SpringLoop8(const SpringPass& pass, int begin, int end,
+                                                 int broke[2]) {
+  const SpringPass p = pass;
+  const SpringLanes<simd::Float4> v4(p);
+  const SpringLanes<simd::Float8> v8(p);
+  int n = begin;
+  for (; n + 8 <= end; n += 8) {
+    const NodeState<simd::Float8> a = LoadState<simd::Float8>(p, n);
+#pragma GCC unroll 3
+    for (int t = 0; t < 3; ++t) {
+      if (p.run8[t][n]) {
+        SpringBatch<simd::Float8, simd::Int8>(p, v8, t, n, true, a, &broke[t > 0]);
+      } else {
+        for (int h = n; h < n + 8; h += 4) {
+          SpringBatch<simd::Float4, simd::Int4>(p, v4, t, h, p.run4[t][h],
+                                                LoadState<simd::Float4>(p, h), &broke[t > 0]);
+        }
+      }
+    }
+  }
+  for (; n + 4 <= end; n += 4) {
+    const NodeState<simd::Float4> a = LoadState<simd::Float4>(p, n);
+#pragma GCC unroll 3
+    for (int t = 0; t < 3; ++t)
+      SpringBatch<simd::Float4, simd::Int4>(p, v4, t, n, p.run4[t][n], a, &broke[t > 0]);
+  }
+  for (; n < end; ++n) {
+    for (int t = 0; t < 3; ++t) SpringOne(p, t, n, &broke[t > 0]);
+  }
+}
+#endif
 
 }  // namespace
 
@@ -186,7 +308,6 @@ Surface BornSurface(const Lattice& L, const Mechanics& mech, uint64_t seed, uint
   s.gx.assign(L.a.size(), 0.0f);
   s.gz.assign(L.a.size(), 0.0f);
   s.limit2.resize(L.a.size());
-  s.on.assign(L.a.size(), 1.0f);
   s.broken.assign(L.a.size(), 0);
 
   TruncatedNormal normal(seed, stream);
@@ -272,9 +393,44 @@ int SpringSlotForces(const Lattice& L, const float k[2], const float c[2], const
 void SpringSlotForcesRange(const Lattice& L, const float k[2], const float c[2],
                            const float rest[2], const Growth& g, Surface* s, int begin, int end,
                            int broke[2]) {
-  broke[0] += SubFamilyPass(L, 0, k[0], c[0], rest[0], g, s, begin, end);
-  broke[1] += SubFamilyPass(L, 1, k[1], c[1], rest[1], g, s, begin, end) +
-              SubFamilyPass(L, 2, k[1], c[1], rest[1], g, s, begin, end);
+  // Break checks and forces of the three sub-families, four or eight nodes a batch (BatchLanes),
+  // the arithmetic lane by lane; a tail of fewer than four one by one with the same operations,
+  // so the bits do not depend on the batching. The forces go to the slots (gx, gz); a node pass
+  // sums them (NodeForce, NodeForce4). Each spring's arithmetic is its own, so a pass split into
+  // ranges gives the bits of the whole.
+  SpringPass p;
+  const int n = L.nodes();
+  p.ux = s->ux.data();
+  p.uz = s->uz.data();
+  p.wx = s->wx.data();
+  p.wz = s->wz.data();
+  p.broken = s->broken.data();
+  for (int t = 0; t < 3; ++t) {
+    const int base = t * n, family = t > 0;
+    p.first[t] = t == 0 ? 0 : L.axial_count + (t - 1);
+    p.stride[t] = t == 0 ? 1 : 2;
+    const float ox = L.ox[p.first[t]], oz = L.oz[p.first[t]];
+    p.b[t] = L.slot_b.data() + base;
+    p.run4[t] = L.slot_run4.data() + base;
+    p.run8[t] = L.slot_run8.data() + base;
+    p.gx[t] = s->gx.data() + base;
+    p.gz[t] = s->gz.data() + base;
+    p.limit2[t] = s->limit2.data() + base;
+    p.dx0[t] = ox * g.s_theta;
+    p.dz0[t] = oz * g.s_z;
+    p.rx0[t] = ox * g.rate_theta;
+    p.rz0[t] = oz * g.rate_z;
+    p.k[t] = k[family];
+    p.c[t] = c[family];
+    p.l0[t] = rest[family];
+  }
+#if NIWA_BARK_AVX2
+  if (BatchLanes() == 8) {
+    SpringLoop8(p, begin, end, broke);
+    return;
+  }
+#endif
+  SpringLoop4(p, begin, end, broke);
 }
 
 int SpringForces(const Lattice& L, const float k[2], const float c[2], const float rest[2],

@@ -7,8 +7,8 @@
 // springs per step (break checks, in ascending index, on the positions the step starts from;
 // then forces) and one over the nodes. Deterministic: the project's PCG32 for the thresholds,
 // det:: maths, no FMA contraction. The spring pass takes four springs a batch (math/simd4.h lanes:
-// indexed loads, IEEE arithmetic lane by lane, the same bits as the scalar tail), scattering the
-// forces in spring order. Does not: measure regions (regions.h), draw (bark_maps.h),
+// indexed loads, IEEE arithmetic lane by lane, the same bits as the scalar tail), or eight in AVX2
+// where the CPU has it (BatchLanes, math/simd8.h), writing each spring's force to its slot. Does not: measure regions (regions.h), draw (bark_maps.h),
 // schedule cycles or check budgets (bark_run.h), or model radial motion, curl or peeling.
 #pragma once
 
@@ -21,7 +21,23 @@
 #include "math/simd4.h"
 #include "random/pcg32.h"
 
+// Whether this build also compiles the spring and node passes for AVX2 (x86-64 GCC; chosen at run
+// time, BatchLanes).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define NIWA_BARK_AVX2 1
+#else
+#define NIWA_BARK_AVX2 0
+#endif
+
 namespace niwa::bark {
+
+// Springs and nodes a batch of the passes: 8 where the build has the AVX2 path and the CPU AVX2
+// (math/simd8.h: the same IEEE operations lane by lane, so the bits of 4), else 4 (SSE2, WASM
+// simd128). SetBatchLanes(4 or 8) sets it for the process (8 only where EightLanesAvailable; for a
+// test's comparison or a measurement) and returns the previous value.
+int BatchLanes();
+int SetBatchLanes(int lanes);
+bool EightLanesAvailable();
 
 // The constants of one run, from the table (spec §1.5).
 struct Mechanics {
@@ -48,8 +64,9 @@ struct Surface {
   std::vector<float> fx, fz;  // force accumulators (zero between steps)
   std::vector<float> gx, gz;  // each spring's force on its node a in a step, by slot (lattice.h)
   // By slot (lattice.h: Lattice::slot(spring)), so the spring pass reads them in runs:
-  std::vector<float> limit2;  // (κ_s·L_o)²: squared length that breaks the spring; +inf once broken
-  std::vector<float> on;      // 1 while intact, 0 once broken (multiplies the spring's force)
+  // (κ_s·L_o)²: squared length that breaks the spring; +inf once broken (the mark the spring pass
+  // reads: a spring at +inf exerts no force and never breaks again).
+  std::vector<float> limit2;
   std::vector<uint8_t> broken;   // by spring
   int broken_count[2] = {0, 0};  // per family
 };
