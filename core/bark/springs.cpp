@@ -255,15 +255,7 @@ __attribute__((target("avx2"))) void SpringLoop8(const SpringPass& pass, int beg
       }
     }
   }
-  for (; n + 4 <= end; n += 4) {
-    const NodeState<simd::Float4> a = LoadState<simd::Float4>(p, n);
-#pragma GCC unroll 3
-    for (int t = 0; t < 3; ++t)
-      SpringBatch<simd::Float4, simd::Int4>(p, v4, t, n, p.run4[t][n], a, &broke[t > 0]);
-  }
-  for (; n < end; ++n) {
-    for (int t = 0; t < 3; ++t) SpringOne(p, t, n, &broke[t > 0]);
-  }
+  SpringLoop4(pass, n, end, broke);  // the rest: four nodes a batch, then one by one
 }
 #endif
 
