@@ -21,6 +21,18 @@ BarkParams Params(const char* species, int n_r, int n_h) {
   return p;
 }
 
+// One growth cycle of steps from `s`, the strains growing at the mechanics' rates.
+void GrowOneCycle(const Lattice& L, const Mechanics& m, Surface* s) {
+  for (int k = 0; k < m.steps_per_cycle; ++k) {
+    const double t = k * m.dt;
+    Step(L, m,
+         Growth{static_cast<float>(1 + m.strain_rate_theta * t),
+                static_cast<float>(1 + m.strain_rate_z * t),
+                static_cast<float>(m.strain_rate_theta), static_cast<float>(m.strain_rate_z)},
+         s);
+  }
+}
+
 TEST(Springs, MechanicsFollowTheSpec) {
   // The spec's prototype grew tallow at Table 1's D = 1 cm (the preset's is 0.9 since its level B
   // calibration, docs/bark-model.md).
@@ -110,14 +122,7 @@ TEST(Springs, EnergyFallsOnceGrowthStopsAndBreaksStay) {
   const Mechanics m = MechanicsOf(p);
   Surface s = InitialSurface(L, m, 5);
   const int steps = m.steps_per_cycle;
-  for (int k = 0; k < steps; ++k) {
-    const double t = k * m.dt;
-    Step(L, m,
-         Growth{static_cast<float>(1 + m.strain_rate_theta * t),
-                static_cast<float>(1 + m.strain_rate_z * t),
-                static_cast<float>(m.strain_rate_theta), static_cast<float>(m.strain_rate_z)},
-         &s);
-  }
+  GrowOneCycle(L, m, &s);
   ASSERT_GT(s.broken_count[0] + s.broken_count[1], 0);  // it cracked
   const Growth frozen{static_cast<float>(1 + m.strain_rate_theta * steps * m.dt),
                       static_cast<float>(1 + m.strain_rate_z * steps * m.dt), 0, 0};
@@ -140,14 +145,7 @@ TEST(Springs, OneSeedOneBrokenSet) {
   const Mechanics m = MechanicsOf(p);
   auto run = [&](uint64_t seed) {
     Surface s = InitialSurface(L, m, seed);
-    for (int k = 0; k < m.steps_per_cycle; ++k) {
-      const double t = k * m.dt;
-      Step(L, m,
-           Growth{static_cast<float>(1 + m.strain_rate_theta * t),
-                  static_cast<float>(1 + m.strain_rate_z * t),
-                  static_cast<float>(m.strain_rate_theta), static_cast<float>(m.strain_rate_z)},
-           &s);
-    }
+    GrowOneCycle(L, m, &s);
     return s.broken;
   };
   const std::vector<uint8_t> a = run(1), b = run(1), c = run(2);
@@ -168,14 +166,7 @@ TEST(Springs, EightLanesGiveTheBitsOfFour) {
     const int before = SetBatchLanes(lanes);
     EXPECT_EQ(BatchLanes(), lanes);
     Surface s = InitialSurface(L, m, 5);
-    for (int k = 0; k < m.steps_per_cycle; ++k) {
-      const double t = k * m.dt;
-      Step(L, m,
-           Growth{static_cast<float>(1 + m.strain_rate_theta * t),
-                  static_cast<float>(1 + m.strain_rate_z * t),
-                  static_cast<float>(m.strain_rate_theta), static_cast<float>(m.strain_rate_z)},
-           &s);
-    }
+    GrowOneCycle(L, m, &s);
     SetBatchLanes(before);
     return s;
   };
