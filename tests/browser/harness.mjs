@@ -209,6 +209,37 @@ export async function saveCanvasPng(page, file, selector = '#view') {
   fs.writeFileSync(path.join(ARTIFACTS, file), Buffer.from(url.split(',')[1], 'base64'));
 }
 
+// Pans (a right drag: no click, so no seed) the centroid of the canvas pixels of one colour class to
+// the view's centre, then zooms in by `wheelSteps` wheel steps there. colourTest: the source of a
+// function (r, g, b) => boolean, run in the page. Returns whether any pixel was of that class (no
+// pan without one; the zoom happens either way).
+export async function panToColourAndZoom(page, colourTest, { wheelSteps = 5 } = {}) {
+  const box = await page.locator('#view').boundingBox();
+  const centre = await page.evaluate((source) => {
+    const keep = (0, eval)(source);
+    const image = window.__niwaCanvasImage('#view');
+    const d = image.data;
+    let sx = 0, sy = 0, n = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      if (!keep(d[i], d[i + 1], d[i + 2])) continue;
+      sx += (i / 4) % image.width;
+      sy += Math.floor(i / 4 / image.width);
+      ++n;
+    }
+    const css = image.width / document.getElementById('view').clientWidth;
+    return n ? { x: sx / n / css, y: sy / n / css } : null;
+  }, colourTest);
+  if (centre) {
+    await page.mouse.move(box.x + centre.x, box.y + centre.y);
+    await page.mouse.down({ button: 'right' });
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2, { steps: 8 });
+    await page.mouse.up({ button: 'right' });
+  }
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  for (let i = 0; i < wheelSteps; ++i) await page.mouse.wheel(0, -240);
+  return centre !== null;
+}
+
 // Share of pixels whose colour differs by more than `tolerance` (sum over RGB) between two
 // snapshots taken with snapshotCanvas.
 export async function snapshotDifference(page, a, b, tolerance = 0) {

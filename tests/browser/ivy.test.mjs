@@ -10,7 +10,7 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import {
-  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, snapshotCanvas, snapshotDifference, waitStudyRun, watchPage,
+  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, newContext, panToColourAndZoom, runBrowserTest, saveCanvasPng, snapshotCanvas, snapshotDifference, waitStudyRun, watchPage,
 } from './harness.mjs';
 import { glbBytes as glb, triangleBin } from '../support/glb_bytes.mjs';
 
@@ -91,28 +91,7 @@ await runBrowserTest(async (server, browser) => {
   // thin light lines (the veins) appear. Screenshots: build/artifacts/ivy-leaves-textured.png and
   // ivy-leaves-flat.png.
   // Pan (right-drag: no click, no seed) the leaves' centre to the view's centre, then zoom in.
-  const viewBox = await page.locator('#view').boundingBox();
-  const leafCentre = await page.evaluate(() => {
-    const image = window.__niwaCanvasImage('#view');
-    const d = image.data;
-    let sx = 0, sy = 0, n = 0;
-    for (let i = 0; i < d.length; i += 4) {
-      if (!(d[i + 1] > d[i] + 20 && d[i + 1] > d[i + 2] + 20)) continue;
-      sx += (i / 4) % image.width;
-      sy += Math.floor(i / 4 / image.width);
-      ++n;
-    }
-    const css = image.width / document.getElementById('view').clientWidth;
-    return n ? { x: sx / n / css, y: sy / n / css } : null;
-  });
-  if (leafCentre) {
-    await page.mouse.move(viewBox.x + leafCentre.x, viewBox.y + leafCentre.y);
-    await page.mouse.down({ button: 'right' });
-    await page.mouse.move(viewBox.x + viewBox.width / 2, viewBox.y + viewBox.height / 2, { steps: 8 });
-    await page.mouse.up({ button: 'right' });
-  }
-  await page.mouse.move(viewBox.x + viewBox.width / 2, viewBox.y + viewBox.height / 2);
-  for (let i = 0; i < 5; ++i) await page.mouse.wheel(0, -240);
+  await panToColourAndZoom(page, '(r, g, b) => g > r + 20 && g > b + 20');  // the leaves' green
   const zoomed = await page.waitForFunction(() => document.documentElement.dataset.leafTexture === 'on', null, { timeout: TIMEOUT })
     .then(() => true, () => false);
   check('the leaves are drawn textured (hook leafTexture on)', zoomed, `leafTexture ${await page.evaluate(() => document.documentElement.dataset.leafTexture)}`);

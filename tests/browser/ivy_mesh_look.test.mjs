@@ -14,7 +14,7 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import {
-  ARTIFACTS, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, waitStudyRun, watchPage,
+  ARTIFACTS, ROOT, TIMEOUT, check, newContext, panToColourAndZoom, runBrowserTest, saveCanvasPng, waitStudyRun, watchPage,
 } from './harness.mjs';
 import { glbBytes, readGlb } from '../support/glb_bytes.mjs';
 
@@ -168,28 +168,8 @@ const quantile = (sorted, q) => (sorted.length ? sorted[Math.floor(q * (sorted.l
 // Pans the seed marker (orange) to the view's centre, zooms in and saves the canvas as `file`:
 // the leaves of a big mesh, a few pixels in the whole view.
 async function closeUpOnSeed(page, file) {
-  const box = await page.locator('#view').boundingBox();
-  const seed = await page.evaluate(() => {
-    const image = window.__niwaCanvasImage('#view');
-    const d = image.data;
-    let sx = 0, sy = 0, n = 0;
-    for (let i = 0; i < d.length; i += 4) {
-      if (!(d[i] > 200 && d[i + 1] > 80 && d[i + 1] < 170 && d[i + 2] < 90)) continue;
-      sx += (i / 4) % image.width;
-      sy += Math.floor(i / 4 / image.width);
-      ++n;
-    }
-    const css = image.width / document.getElementById('view').clientWidth;
-    return n ? { x: sx / n / css, y: sy / n / css } : null;
-  });
-  if (seed) {
-    await page.mouse.move(box.x + seed.x, box.y + seed.y);
-    await page.mouse.down({ button: 'right' });
-    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2, { steps: 8 });
-    await page.mouse.up({ button: 'right' });
-  }
-  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
-  for (let i = 0; i < 5; ++i) await page.mouse.wheel(0, -240);
+  // The seed marker's orange.
+  await panToColourAndZoom(page, '(r, g, b) => r > 200 && g > 80 && g < 170 && b < 90');
   await page.waitForTimeout(1200);
   await saveCanvasPng(page, file);
   await page.click('#reset-view');
