@@ -1,6 +1,8 @@
 // The moss page's population per day (the stats' population.by_day, as `niwa moss grow --stats`
 // writes it): a small SVG chart with one line per species and a marker on the day the scrubber
 // shows, and the same days as CSV text for a download (day, one column per species, total).
+// The marker is an HTML element over the SVG moved by a CSS transform (its own compositor layer,
+// public/style.css), so a scrubbed day repaints none of the chart's lines.
 // Does not: grow, replay mosses (moss_renderer.js does) or read anything but the stats object.
 
 const SVG = 'http://www.w3.org/2000/svg';
@@ -25,10 +27,13 @@ function node(name, attrs, parent) {
 }
 
 export class PopulationChart {
-  // svg: an <svg> element (its content is replaced); legend: an element for the species' names.
-  constructor(svg, legend) {
+  // svg: an <svg> element (its content is replaced); legend: an element for the species' names;
+  // marker: an element absolutely placed over the SVG, as wide as it (its left edge is the line).
+  constructor(svg, legend, marker = null) {
     this.svg = svg;
     this.legend = legend;
+    this.markerElement = marker;
+    this.marker = null;
     svg.setAttribute('viewBox', `0 0 ${W} ${H}`);
     this.days = 0;
     this.max = 1;
@@ -62,7 +67,12 @@ export class PopulationChart {
       const points = byDay.map((counts, day) => `${this.x(day).toFixed(1)},${this.y(counts[s]).toFixed(1)}`).join(' ');
       return node('polyline', { points, fill: 'none', stroke: SPECIES_COLOURS[s] || '#333', 'stroke-width': 1.5, 'data-species': name }, this.svg);
     });
-    this.marker = node('line', { x1: this.x(this.days), y1: PAD.top, x2: this.x(this.days), y2: this.y(0), class: 'marker' }, this.svg);
+    this.marker = this.markerElement;
+    if (this.marker) {
+      this.marker.style.top = `${(100 * PAD.top) / H}%`;
+      this.marker.style.height = `${(100 * (this.y(0) - PAD.top)) / H}%`;
+      this.mark(this.days);
+    }
     if (this.legend) {
       this.legend.replaceChildren(...species.map((name, s) => {
         const span = document.createElement('span');
@@ -77,9 +87,9 @@ export class PopulationChart {
   mark(day) {
     const d = Math.max(0, Math.min(this.days, Number.isFinite(day) ? day : this.days));
     if (this.marker) {
-      const x = this.x(d).toFixed(1);
-      this.marker.setAttribute('x1', x);
-      this.marker.setAttribute('x2', x);
+      const x = this.x(d);
+      this.marker.style.transform = `translateX(calc(${((100 * x) / W).toFixed(3)}% - 0.6px))`;
+      this.marker.dataset.x = x.toFixed(1);  // in the SVG's viewBox units (tests)
       this.marker.dataset.day = String(d);
     }
     return d;

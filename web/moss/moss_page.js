@@ -45,7 +45,7 @@ const ui = {
   treePreset: $('tree-preset'), treeYears: $('tree-years'), terrainPreset: $('terrain-preset'), terrainSeed: $('terrain-seed'),
   landRocks: $('land-rocks'), rockTriangles: $('rock-triangles'),
 };
-const chart = new PopulationChart($('population-chart'), $('population-legend'));
+const chart = new PopulationChart($('population-chart'), $('population-legend'), $('population-marker'));
 let lastStats = null;  // the stats of the run shown (the downloads' source)
 mountStudyNav($('studies'), 'moss');
 
