@@ -184,6 +184,10 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   const std::string tree_truncated_by = input.prepared_truncated_by;
   ivy::IvySupportOptions support_options = ivy::IvySupportOptions::For(state);  // its accel
   support_options.subdivide = levels;
+  // A mesh grows from the page's default seed "front" (the surface point nearest to a point in
+  // front of it, +z, at a tenth of its height) when no --seed-point is given; `--seed-point front`
+  // names it beside others.
+  support_options.front_seed = !o.mesh.empty();
   // A tree's growth and bark took their time before the ivy's (its memory is freed but the bark).
   support_options.change = tree ? "lower --tree-years" : kIvyCliChange;
   Result<std::shared_ptr<const ivy::IvySupport>> support =
@@ -198,9 +202,6 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
   }
   ReportTruncated(tree_truncated_by);
   const ivy::IvyScene& scene = (*support)->scene();
-  if (state.seed_point_items.empty() && state.seed_points.empty() && !o.mesh.empty()) {
-    Fail(Status::Error("--seed-point", "required with --mesh; must be X,Y,Z within d of a face"));
-  }
   ivy::IvyRunOptions options;
   // With --stats the growth keeps room for the measurement's part that grows with every bud, and
   // an export's check counts the measurement's exact estimate (the overlap pairs, known once
@@ -320,7 +321,8 @@ void AddIvyCommands(CLI::App& app, CommandList& commands) {
   AddNumberFlag(grow, "--tree-years", &o->tree_years, kTreeYearsRange,
                 "Age of that tree, " + RangeHelp(kTreeYearsRange) + " (default 10)");
   grow->add_option("--seed-point", o->seed_points,
-                   "Growth start X,Y,Z or a scene's named seed; repeat for several plants");
+                   "Growth start X,Y,Z or a scene's named seed (a mesh's: front, the default); repeat for "
+                   "several plants");
   AddNumberFlag(grow, "--steps", &o->steps, kStepsRange,
                 "Final step number, " + RangeHelp(kStepsRange) + " (default 50)");
   AddNumberFlag(grow, "--seed", &o->seed, kSeedRange,

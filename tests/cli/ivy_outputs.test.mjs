@@ -60,6 +60,23 @@ for (const withSupport of [true, false]) {
     report.issues.numErrors === 0 && names.includes('support') === withSupport);
 }
 
+// A mesh without --seed-point grows from the page's default seed "front" (issue 31 item 4: the page
+// and the CLI grow the same ivy on a dropped mesh), native == WASM, and `--seed-point front` names it.
+const rock = join(root, 'tests/data/meshes/bunny.obj');
+const fa = JSON.parse(run(native, ['ivy', 'grow', '--mesh', rock, '--stats']));
+const fb = JSON.parse(run(wasm, ['ivy', 'grow', '--mesh', rock, '--stats']));
+const named = JSON.parse(run(native, ['ivy', 'grow', '--mesh', rock, '--seed-point', 'front', '--stats']));
+const elsewhere = JSON.parse(run(native, ['ivy', 'grow', '--mesh', rock, '--seed-point', 'front', '--seed-point', 'front', '--stats']));
+check(`--mesh bunny.obj, no --seed-point: grows from "front" (${fa.internodes} internodes), native == WASM == --seed-point front`,
+  fa.internodes > 10 && JSON.stringify(withoutMs(fa)) === JSON.stringify(withoutMs(fb)) &&
+  JSON.stringify(withoutMs(fa)) === JSON.stringify(withoutMs(named)) && elsewhere.internodes > fa.internodes);
+for (const cmd of [native, wasm]) {
+  const r = spawn(cmd, ['ivy', 'grow', '--mesh', rock, '--accel', 'linear', '--stats']);
+  const lines = r.stderr.trim().split('\n');
+  check(`${buildName(cmd)} --mesh with --accel linear (no front seed without a BVH) and no --seed-point: exit ${r.status}, "${lines[0]}"`,
+    r.status === 2 && lines.length === 1 && lines[0].startsWith('niwa: error: --seed-point'));
+}
+
 // Hostile values of the new flags and hash keys.
 const hostile = [
   [['--tree-preset', 'oak'], '--tree-preset'], [['--tree-preset', 'sakura', '--tree-years', '101'], '--tree-years'],
