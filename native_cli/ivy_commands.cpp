@@ -232,13 +232,14 @@ int RunGrow(const IvyOptions& o, std::ostream& out) {
     const std::string format = ext.substr(1);
     if (trace) {
       const bool support_out = !scene.free && (ext == ".svg" || o.with_support);
-      const Estimate export_estimate = ivy::EstimateIvyExport(
-          run->model(),
-          ext == ".json"   ? ivy::IvyExport::kJson
-          : ext == ".lsys" ? ivy::IvyExport::kLsys
-          : ext == ".svg"  ? ivy::IvyExport::kSvg
-                           : ivy::IvyExport::kGlb,
-          support_out ? static_cast<double>(scene.mesh.triangle_count()) : 0);
+      const Estimate export_estimate =
+          ivy::EstimateIvyExport(run->model(),
+                                 ext == ".json"   ? ivy::IvyExport::kJson
+                                 : ext == ".lsys" ? ivy::IvyExport::kLsys
+                                 : ext == ".svg"  ? ivy::IvyExport::kSvg
+                                                  : ivy::IvyExport::kGlb,
+                                 support_out ? static_cast<double>(scene.mesh.triangle_count()) : 0,
+                                 IvyLeavesPerBud(run->params()));
       std::fprintf(stderr, "budget: grown %.0f MB %.2f s; export %.0f MB %.2f s\n",
                    grown.memory_bytes / 1048576, grown.seconds,
                    export_estimate.memory_bytes / 1048576, export_estimate.seconds);
@@ -320,9 +321,10 @@ void AddIvyCommands(CLI::App& app, CommandList& commands) {
   Excludes(scene, tree);
   AddNumberFlag(grow, "--tree-years", &o->tree_years, kTreeYearsRange,
                 "Age of that tree, " + RangeHelp(kTreeYearsRange) + " (default 10)");
-  grow->add_option("--seed-point", o->seed_points,
-                   "Growth start X,Y,Z or a scene's named seed (a mesh's: front, the default); repeat for "
-                   "several plants");
+  grow->add_option(
+      "--seed-point", o->seed_points,
+      "Growth start X,Y,Z or a scene's named seed (a mesh's: front, the default); repeat for "
+      "several plants");
   AddNumberFlag(grow, "--steps", &o->steps, kStepsRange,
                 "Final step number, " + RangeHelp(kStepsRange) + " (default 50)");
   AddNumberFlag(grow, "--seed", &o->seed, kSeedRange,

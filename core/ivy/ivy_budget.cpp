@@ -77,7 +77,9 @@ constexpr ExportCost kGlb = {56 * 28 + 23 * 8 + 54 * 12, 0, 84, 131072, 7, 40, "
 
 }  // namespace
 
-double IvyPageMeshBytesPerBud() { return 2 * kGlb.per_bud + 20; }
+double IvyPageMeshBytesPerBud(double leaves_per_bud) {
+  return 2 * (kGlb.per_bud + (leaves_per_bud - 1) * kIvyGlbBytesPerLeaf) + 20;
+}
 
 Estimate EstimateIvySupport(const IvySupportSize& s) {
   const double after = s.triangles * std::pow(4.0, s.levels);
@@ -189,9 +191,11 @@ IvyStatsWork CountIvyStatsWork(const IvyModel& model, const IvyParams& params,
 
 Estimate EstimateIvyStats(const IvyStatsWork& w) {
   Estimate e;
-  e.memory_bytes = kStatsBytesPerBud * w.buds + 8192 +
-                   (kGlb.per_bud + kMeshBirthCopyBytesPerBud) * w.meshed_buds +
-                   (w.leaf_cover ? 2 * kCoverCells * 8 : 0);
+  e.memory_bytes =
+      kStatsBytesPerBud * w.buds + 8192 +
+      (kGlb.per_bud + (w.leaves_per_bud - 1) * kIvyGlbBytesPerLeaf + kMeshBirthCopyBytesPerBud) *
+          w.meshed_buds +
+      (w.leaf_cover ? 2 * kCoverCells * 8 : 0);
   e.seconds = 1e-9 * (kNsPerTriangleTest * w.triangle_tests +
                       kNsPerOverlapPair * w.overlap_pairs_examined + kNsPerStatsBud * w.buds +
                       kNsPerMeshedBud * w.meshed_buds + kNsPerCoverTriangle * w.cover_triangles +
@@ -202,26 +206,32 @@ Estimate EstimateIvyStats(const IvyStatsWork& w) {
   return e;
 }
 
-void ReserveIvyStats(double support_triangles, IvyGrowLimits* limits, bool meshes) {
+void ReserveIvyStats(double support_triangles, IvyGrowLimits* limits, bool meshes,
+                     double leaves_per_bud) {
   // Each bud adds itself and (but a seed) its internode to the brute-force re-checks, and its
   // leaf's triangles to the leaf cover's raster; meshed for it (meshes) its tube, sucker and leaf.
   limits->seconds_per_bud += 1e-9 * (kNsPerTriangleTest * 2 * support_triangles + kNsPerStatsBud);
   limits->bytes_per_bud += kStatsBytesPerBud;
   if (support_triangles > 0)
-    limits->seconds_per_bud += 1e-9 * kNsPerCoverTriangle * kIvyLeafTrianglesPerBud;
+    limits->seconds_per_bud +=
+        1e-9 * kNsPerCoverTriangle * kIvyLeafTrianglesPerBud * leaves_per_bud;
   if (meshes) {
-    limits->seconds_per_bud += 1e-9 * kNsPerMeshedBud;
-    limits->bytes_per_bud += kGlb.per_bud + kMeshBirthCopyBytesPerBud;
+    limits->seconds_per_bud += 1e-9 * kNsPerMeshedBud * leaves_per_bud;
+    limits->bytes_per_bud +=
+        kGlb.per_bud + (leaves_per_bud - 1) * kIvyGlbBytesPerLeaf + kMeshBirthCopyBytesPerBud;
   }
 }
 
-Estimate EstimateIvyExport(const IvyModel& model, IvyExport kind, double support_triangles) {
+Estimate EstimateIvyExport(const IvyModel& model, IvyExport kind, double support_triangles,
+                           double leaves_per_bud) {
   const ExportCost& c = kind == IvyExport::kJson   ? kJson
                         : kind == IvyExport::kLsys ? kLsys
                         : kind == IvyExport::kSvg  ? kSvg
                                                    : kGlb;
   const double buds = static_cast<double>(model.buds.size());
-  const double bytes = c.fixed + c.per_bud * buds +
+  const double per_bud =
+      c.per_bud + (kind == IvyExport::kGlb ? (leaves_per_bud - 1) * kIvyGlbBytesPerLeaf : 0);
+  const double bytes = c.fixed + per_bud * buds +
                        c.per_internode * static_cast<double>(model.internodes.size()) +
                        c.per_support_triangle * support_triangles;
   Estimate e;

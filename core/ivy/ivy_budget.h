@@ -79,10 +79,14 @@ struct IvyStatsWork {
   // already, the page), and the leaf cover's two 256² depth rasters over the support's triangles
   // and the leaves' (kIvyLeafTrianglesPerBud a bud at most).
   double meshed_buds = 0;
+  double leaves_per_bud = 1;  // IvyLeavesPerBud of the run's params
   bool leaf_cover = false;
   double cover_triangles = 0;
 };
 inline constexpr double kIvyLeafTrianglesPerBud = 46;  // a petiole tube (36) and a blade fan (10)
+// A leaf's part of the .glb (its 23 vertices of 28 bytes with 8 bytes of texture coordinates, 46
+// triangles of 12 bytes): each further leaf a bud (the row leaf_spacing, IvyLeavesPerBud) adds it.
+inline constexpr double kIvyGlbBytesPerLeaf = 23 * 28 + 23 * 8 + 46 * 12;
 IvyStatsWork CountIvyStatsWork(const IvyModel& model, const IvyParams& params,
                                double support_triangles);
 // Its memory (the sweep's spans, the L-string and its re-read) and time (work-unit constants).
@@ -91,12 +95,15 @@ Estimate EstimateIvyStats(const IvyStatsWork& work);
 // (its triangle tests, L-string and spans), so a growth with --stats stops where they still fit;
 // the sweep's pairs, which are not linear in the buds, are checked once grown (EstimateIvyStats).
 // meshes: the measurement meshes the ivy for its leaves (the CLI; the page's run holds them).
-void ReserveIvyStats(double support_triangles, IvyGrowLimits* limits, bool meshes = false);
+// leaves_per_bud: IvyLeavesPerBud of the run's params.
+void ReserveIvyStats(double support_triangles, IvyGrowLimits* limits, bool meshes = false,
+                     double leaves_per_bud = 1);
 
 enum class IvyExport { kJson, kLsys, kSvg, kGlb };
 // Memory and time of one export of a grown model (upper bounds); `support_triangles` is the
 // support written into the .glb (--with-support) or drawn in the .svg, else 0.
-Estimate EstimateIvyExport(const IvyModel& model, IvyExport kind, double support_triangles);
+Estimate EstimateIvyExport(const IvyModel& model, IvyExport kind, double support_triangles,
+                           double leaves_per_bud = 1);
 
 // A planned export's projection to the last step (IvyRun::Advance, issue 34), made as the buds
 // grow by 5 %: the buds the growth will have by the last step if every further step adds at least
@@ -118,6 +125,6 @@ Status ProjectIvyBuds(BudProjection* projection, double buds, double new_buds, d
 
 // The page's meshes per bud (BuildIvyMeshes, their flat copies and the buds' buffer, held with the
 // model): the page adds it to IvyGrowLimits::bytes_per_bud, so the growth stops where they fit.
-double IvyPageMeshBytesPerBud();
+double IvyPageMeshBytesPerBud(double leaves_per_bud = 1);
 
 }  // namespace niwa::ivy

@@ -115,9 +115,13 @@ bool Crosses(const Support& s, const glm::dvec3& a, const glm::dvec3& b) {
   return geom::SegmentHits(*s.mesh, *s.bvh, glm::vec3(a), glm::vec3(b));
 }
 
-// A uniform number in [0, 1) from a bud's id (SplitMix64; the leaves' thinning, no RNG stream).
-double BudHash01(int id) {
-  uint64_t x = static_cast<uint64_t>(id) * 0x2545f4914f6cdd1dULL + 0x9e3779b97f4a7c15ULL;
+// A uniform number in [0, 1) from a bud's id (SplitMix64; the leaves' thinning, no RNG stream);
+// `k` > 0 gives the bud's k-th further number (its extra leaves', the row leaf_spacing).
+double BudHash01(int id, int k = 0) {
+  uint64_t x = (static_cast<uint64_t>(static_cast<uint32_t>(id)) |
+                (static_cast<uint64_t>(static_cast<uint32_t>(k)) << 32)) *
+                   0x2545f4914f6cdd1dULL +
+               0x9e3779b97f4a7c15ULL;
   x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
   x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
   x ^= x >> 31;
@@ -141,6 +145,8 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p, const Support* s
   const double tau = p.Get(IvyParam::kLeafAge), tilt = p.Get(IvyParam::kLeafTilt);
   const double L = p.Get(IvyParam::kL);
   const double light_w = p.Get(IvyParam::kLeafLight);
+  const double density = IvyLeafDensity(p);  // leaves a bud (leaf_spacing)
+  const int copies = IvyLeavesPerBud(p);
   const glm::dvec3 up =
       UnitOrUp(glm::dvec3(p.Get(IvyParam::kUpX), p.Get(IvyParam::kUpY), p.Get(IvyParam::kUpZ)));
   // Tips below each bud (pipe model r = r_tip · n_tips^(1/pipe_exp)), children before parents.
@@ -165,7 +171,8 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p, const Support* s
   // and an 11-vertex fan; a sucker: its tube and a 9-vertex disc).
   const std::size_t outline = LeafOutlineUnit().size();
   stems.Reserve(m.internodes.size(), 2 * kSides, 6 * kSides);
-  leaves.Reserve(m.buds.size(), 2 * kSides + 1 + outline, 6 * kSides + 3 * outline);
+  leaves.Reserve(m.buds.size() * static_cast<std::size_t>(copies), 2 * kSides + 1 + outline,
+                 6 * kSides + 3 * outline);
   suckers.Reserve(m.buds.size(), 2 * kSides + 9, 6 * kSides + 3 * 8);
   // The petiole on the midrib's texels; the fan's centre (the blade's base) at the petiole end.
   glm::vec2 petiole_uv, base_uv;
@@ -193,6 +200,11 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p, const Support* s
       suckers.Fan(b.anchor + 0.01 * L * n, t1, t2, disc, b.born_step);
     }
     if (b.parent < 0) continue;
+    // The row leaf_spacing (docs/ivy-model.md "Leaves a real length apart"): below one leaf a bud
+    // a bud keeps its leaf with probability n (its hash 7, apart from the light's); above,
+    // `copies` leaves share the internode from its parent: the bud's own at the bud, the others
+    // evenly back along the stem, each with the bud's face and age and its own hash.
+    if (density < 1 && BudHash01(b.id, 7) >= density) continue;
     // Leaf opposite the sucker: petiole along n tilted toward up, blade normal ≈ n. With the
     // support: n is the anchor face's normal on the bud's side, and the leaf turns about it, then
     // shrinks, until its petiole, spokes and rim cross no face (LeafPlacement).
@@ -204,85 +216,90 @@ IvyMeshes BuildIvyMeshes(const IvyModel& m, const IvyParams& p, const Support* s
       leaf_n = glm::dot(face, b.pos - b.anchor) < 0 ? -face : face;
     }
     // Light (leaf_light): thinning, size and the blade's turn toward the sky.
-    double size_factor = 1, blade_turn = 0;
-    if (light_w > 0) {
-      bool shaded = false;
-      if (support != nullptr && support->mesh != nullptr) {
-        const float reach = static_cast<float>(1e3 * L);
-        shaded =
-            support->accel == Accel::kLinear
-                ? geom::FirstHitLinear(*support->mesh, glm::vec3(b.pos), glm::vec3(up), reach).hit
-                : geom::FirstHit(*support->mesh, *support->bvh, glm::vec3(b.pos), glm::vec3(up),
-                                 reach)
-                      .hit;
-      }
-      const double light = LeafLight(leaf_n, up, shaded);
-      if (BudHash01(b.id) >= 1.0 - 0.75 * light_w * (1.0 - light)) {
-        if (placement) ++placement->thinned;
-        continue;
-      }
-      size_factor = 1.0 + 0.6 * light_w * (1.0 - light);
-      blade_turn = light_w * 0.5 * det::Acos(std::clamp(glm::dot(leaf_n, up), -1.0, 1.0));
+    bool shaded = false;
+    if (light_w > 0 && support != nullptr && support->mesh != nullptr) {
+      const float reach = static_cast<float>(1e3 * L);
+      shaded =
+          support->accel == Accel::kLinear
+              ? geom::FirstHitLinear(*support->mesh, glm::vec3(b.pos), glm::vec3(up), reach).hit
+              : geom::FirstHit(*support->mesh, *support->bvh, glm::vec3(b.pos), glm::vec3(up),
+                               reach)
+                    .hit;
     }
-    if (placement) ++placement->drawn;
-    // The blade's direction from its base: along the petiole's tangent direction (leaf_light 0),
-    // else hanging from the petiole's end, leaning out from the face by the turn (never into it).
-    double sb = 0, cb = 1;
-    if (blade_turn != 0) det::SinCos(blade_turn, &sb, &cb);
-    const double hang_b = light_w > 0 ? -1.0 : 1.0;
-    double st, ct;
-    det::SinCos(tilt * det::kPi / 180.0, &st, &ct);
-    glm::dvec3 up_t = up - glm::dot(up, leaf_n) * leaf_n;
-    up_t = glm::dot(up_t, up_t) > 1e-12 ? UnitOrUp(up_t) : Perpendicular(leaf_n);
-    const double age = static_cast<double>(last_step - b.born_step);
-    const double full_width = leaf * size_factor * std::min(1.0, (age + 1.0) / tau);
-    glm::dvec3 dir_t = up_t, base = b.pos;
-    double width = full_width;
-    std::vector<glm::dvec2> blade;
-    bool placed = false;
-    for (int halving = 0; halving < 3 && !placed; ++halving) {
-      for (double turn : kLeafTurns) {
-        double sa, ca;
-        det::SinCos(turn * det::kPi / 180.0, &sa, &ca);
-        dir_t = ca * up_t + sa * glm::cross(leaf_n, up_t);
-        width = full_width / static_cast<double>(1 << halving);
-        const double pet = petiole / static_cast<double>(1 << halving);
-        base = b.pos + pet * UnitOrUp(ct * leaf_n + st * dir_t);
-        blade = LeafOutline(width);
-        if (!check) {
-          placed = true;
-          break;
+    const glm::dvec3 stem_from = m.buds[static_cast<std::size_t>(b.parent)].pos;
+    for (int copy = 0; copy < copies; ++copy) {
+      const glm::dvec3 at =
+          copy == 0 ? b.pos : b.pos + (stem_from - b.pos) * (static_cast<double>(copy) / copies);
+      double size_factor = 1, blade_turn = 0;
+      if (light_w > 0) {
+        const double light = LeafLight(leaf_n, up, shaded);
+        if (BudHash01(b.id, copy == 0 ? 0 : 7 + copy) >= 1.0 - 0.75 * light_w * (1.0 - light)) {
+          if (placement) ++placement->thinned;
+          continue;
         }
-        const glm::dvec3 across = UnitOrUp(glm::cross(dir_t, leaf_n));
-        const glm::dvec3 along = hang_b * cb * dir_t + sb * leaf_n;
-        bool crosses = Crosses(*support, b.pos, base);
-        glm::dvec3 prev = base + blade.back().x * across + blade.back().y * along;
-        for (std::size_t k = 0; k < blade.size() && !crosses; ++k) {
-          const glm::dvec3 q = base + blade[k].x * across + blade[k].y * along;
-          crosses = Crosses(*support, base, q) || Crosses(*support, prev, q);
-          prev = q;
-        }
-        if (!crosses) {
-          placed = true;
-          if (placement && (turn != 0 || halving > 0)) ++placement->turned;
-          if (placement && halving > 0) ++placement->shrunk;
-          break;
+        size_factor = 1.0 + 0.6 * light_w * (1.0 - light);
+        blade_turn = light_w * 0.5 * det::Acos(std::clamp(glm::dot(leaf_n, up), -1.0, 1.0));
+      }
+      if (placement) ++placement->drawn;
+      // The blade's direction from its base: along the petiole's tangent direction (leaf_light 0),
+      // else hanging from the petiole's end, leaning out from the face by the turn (never into it).
+      double sb = 0, cb = 1;
+      if (blade_turn != 0) det::SinCos(blade_turn, &sb, &cb);
+      const double hang_b = light_w > 0 ? -1.0 : 1.0;
+      double st, ct;
+      det::SinCos(tilt * det::kPi / 180.0, &st, &ct);
+      glm::dvec3 up_t = up - glm::dot(up, leaf_n) * leaf_n;
+      up_t = glm::dot(up_t, up_t) > 1e-12 ? UnitOrUp(up_t) : Perpendicular(leaf_n);
+      const double age = static_cast<double>(last_step - b.born_step);
+      const double full_width = leaf * size_factor * std::min(1.0, (age + 1.0) / tau);
+      glm::dvec3 dir_t = up_t, base = at;
+      double width = full_width;
+      std::vector<glm::dvec2> blade;
+      bool placed = false;
+      for (int halving = 0; halving < 3 && !placed; ++halving) {
+        for (double turn : kLeafTurns) {
+          double sa, ca;
+          det::SinCos(turn * det::kPi / 180.0, &sa, &ca);
+          dir_t = ca * up_t + sa * glm::cross(leaf_n, up_t);
+          width = full_width / static_cast<double>(1 << halving);
+          const double pet = petiole / static_cast<double>(1 << halving);
+          base = at + pet * UnitOrUp(ct * leaf_n + st * dir_t);
+          blade = LeafOutline(width);
+          if (!check) {
+            placed = true;
+            break;
+          }
+          const glm::dvec3 across = UnitOrUp(glm::cross(dir_t, leaf_n));
+          const glm::dvec3 along = hang_b * cb * dir_t + sb * leaf_n;
+          bool crosses = Crosses(*support, at, base);
+          glm::dvec3 prev = base + blade.back().x * across + blade.back().y * along;
+          for (std::size_t k = 0; k < blade.size() && !crosses; ++k) {
+            const glm::dvec3 q = base + blade[k].x * across + blade[k].y * along;
+            crosses = Crosses(*support, base, q) || Crosses(*support, prev, q);
+            prev = q;
+          }
+          if (!crosses) {
+            placed = true;
+            if (placement && (turn != 0 || halving > 0)) ++placement->turned;
+            if (placement && halving > 0) ++placement->shrunk;
+            break;
+          }
         }
       }
+      if (check && !placed && placement) {
+        ++placement->turned;
+        ++placement->shrunk;
+        ++placement->crossing;
+      }
+      glm::dvec3 across = UnitOrUp(glm::cross(dir_t, leaf_n));
+      // Turned by light: the blade's normal is the side of its plane that looks up (its outline
+      // mirrored across the midrib, so the sun lights its face).
+      if (light_w > 0 && glm::dot(-cb * leaf_n - sb * dir_t, up) < 0) across = -across;
+      leaves.uv = petiole_uv;
+      leaves.Tube(at, base, 0.3 * r_tip, 0.3 * r_tip, b.born_step);
+      leaves.Fan(base, across, hang_b * cb * dir_t + sb * leaf_n, blade, b.born_step, &outline_uvs,
+                 base_uv);
     }
-    if (check && !placed && placement) {
-      ++placement->turned;
-      ++placement->shrunk;
-      ++placement->crossing;
-    }
-    glm::dvec3 across = UnitOrUp(glm::cross(dir_t, leaf_n));
-    // Turned by light: the blade's normal is the side of its plane that looks up (its outline
-    // mirrored across the midrib, so the sun lights its face).
-    if (light_w > 0 && glm::dot(-cb * leaf_n - sb * dir_t, up) < 0) across = -across;
-    leaves.uv = petiole_uv;
-    leaves.Tube(b.pos, base, 0.3 * r_tip, 0.3 * r_tip, b.born_step);
-    leaves.Fan(base, across, hang_b * cb * dir_t + sb * leaf_n, blade, b.born_step, &outline_uvs,
-               base_uv);
   }
   return {stems.Done(), leaves.Done(), suckers.Done()};
 }

@@ -95,6 +95,12 @@ std::vector<ParamSpec> Rows() {
       {39, "leaf_light", "", "", 0, 0, 1, false, "look", m,
        "Leaves by light and support normal: shaded leaves larger and fewer, blades hanging from "
        "the petiole, leaning out by half their face's angle from up (0: off, every leaf alike)."},
+      // Appended (issue 31 items 4 and 7): leaves a real length apart along the stems, whatever
+      // the growth's scale; docs/ivy-model.md "Leaves a real length apart".
+      {40, "leaf_spacing", "s_n", "px", 0, 0, 1e6, false, "look", m,
+       "Stem length between leaves: on a mesh whose growth is scaled to its size while its leaves "
+       "keep their real size, long internodes carry several leaves and short ones share one "
+       "(0: one leaf a bud, the paper; at most 8 a bud)."},
   };
 }
 
@@ -174,6 +180,16 @@ double IvyPxPerUnit(const IvyParams& params, double support_px_per_unit, double 
   if (support_px_per_unit > 0) return support_px_per_unit;
   if (support_extent > 0 && std::isfinite(support_extent)) return kIvyPaperExtent / support_extent;
   return 1;
+}
+
+double IvyLeafDensity(const IvyParams& scaled) {
+  const double spacing = scaled.Get(IvyParam::kLeafSpacing);
+  return spacing > 0 ? scaled.Get(IvyParam::kL) / spacing : 1.0;
+}
+
+int IvyLeavesPerBud(const IvyParams& scaled) {
+  const double n = IvyLeafDensity(scaled);
+  return n <= 1 ? 1 : static_cast<int>(std::min<double>(kIvyMaxLeavesPerBud, std::floor(n + 0.5)));
 }
 
 bool IsIvyLookLength(std::size_t row) {

@@ -64,6 +64,8 @@ enum class IvyParam : int {
   // appended (issue 31 item 5, the artist preset): hanging tendrils and leaves by light
   kHang,
   kLeafLight,
+  // appended (issue 31 items 4 and 7): the stem length between leaves; 0 = one leaf a bud
+  kLeafSpacing,
   kCount
 };
 
@@ -92,7 +94,14 @@ double IvyPxPerUnit(const IvyParams& params, double support_px_per_unit, double 
 // metres), else px_per_unit (the bounds': an OBJ names no unit). So a leaf of s_leaf = 50 px is
 // 5 cm on a 0.3 m rock and on a 20 m facade read as glTF, while the growth's lengths (L, d, eps,
 // avoid) are read from the mesh's bounds.
-bool IsIvyLookLength(std::size_t row);  // r_tip, leaf_size, petiole
+bool IsIvyLookLength(std::size_t row);  // r_tip, leaf_size, petiole, leaf_spacing
+
+// Leaves a bud carries with the row leaf_spacing s_n on scaled params: n = L / s_n; below 1 a bud
+// keeps its leaf with probability n (IvyLeafKept), else round(n) leaves, at most
+// kIvyMaxLeavesPerBud; 1 when s_n is 0 (the paper: one leaf a bud).
+inline constexpr int kIvyMaxLeavesPerBud = 8;
+double IvyLeafDensity(const IvyParams& scaled);  // n (1 when s_n is 0)
+int IvyLeavesPerBud(const IvyParams& scaled);    // the leaves a bud draws at most (1..8)
 double IvyLookPxPerUnit(const IvyParams& params, double support_px_per_unit,
                         double unit_px_per_unit, double px_per_unit);
 // The parameters in scene units: every length row divided by px_per_unit (the look's by

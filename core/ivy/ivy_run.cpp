@@ -282,11 +282,15 @@ const Support* IvyRun::LeafSupport() const {
 void IvyRun::SetLimits() {
   limits_ = IvyLimits(params_, budget_, support_->estimate(), !support_->free());
   limits_.bytes_per_bud += options_.extra_bytes_per_bud;
+  // The page's meshes hold each bud's further leaves too (the row leaf_spacing).
+  const double leaves_per_bud = IvyLeavesPerBud(params_);
+  if (options_.build_meshes)
+    limits_.bytes_per_bud += IvyPageMeshBytesPerBud(leaves_per_bud) - IvyPageMeshBytesPerBud();
   if (!options_.change.empty()) limits_.change = options_.change;
   grow_limits_ = limits_;
   if (options_.reserve_stats) {
     ReserveIvyStats(support_->triangles(), &grow_limits_,
-                    !options_.build_meshes && !support_->free());
+                    !options_.build_meshes && !support_->free(), leaves_per_bud);
   }
 }
 
@@ -445,8 +449,9 @@ IvyStatsWork IvyRun::StatsWork(const IvyModel& model) const {
   IvyStatsWork w = CountIvyStatsWork(model, params_, support_->triangles());
   if (support_->mesh() != nullptr) {  // StatsJson's leaves as drawn and their cover
     w.meshed_buds = options_.build_meshes ? 0 : w.buds;
+    w.leaves_per_bud = IvyLeavesPerBud(params_);
     w.leaf_cover = true;
-    w.cover_triangles = support_->triangles() + kIvyLeafTrianglesPerBud * w.buds;
+    w.cover_triangles = support_->triangles() + kIvyLeafTrianglesPerBud * w.leaves_per_bud * w.buds;
   }
   return w;
 }
@@ -510,8 +515,9 @@ std::string IvyRun::StatsJson() const {
       local = BuildIvyMeshes(model_, params_, LeafSupport(), &placement);
       meshes = &local;
     }
+    // (one a bud less those thinned, unless leaf_spacing gives a bud more or fewer)
     stats.leaves_thinned = static_cast<int>(placement.thinned);
-    stats.leaves -= stats.leaves_thinned;
+    stats.leaves = static_cast<int>(placement.drawn);
     stats.leaf_cover = LeafCoverFront(*support_->mesh(), meshes->leaves);
   }
   return IvyStatsJson(stats, log_, model_, timings_);
@@ -535,7 +541,8 @@ Result<Estimate> IvyRun::ExportEstimateOf(const IvyModel& model, const GrowLog& 
       !support_->free() && (*kind == IvyExport::kSvg || (with_support && *kind == IvyExport::kGlb));
   Estimate e =
       EstimateIvyGrown(model, log, options_.export_with_stats_room ? grow_limits_ : limits_) +
-      EstimateIvyExport(model, *kind, support_out ? support_->triangles() : 0);
+      EstimateIvyExport(model, *kind, support_out ? support_->triangles() : 0,
+                        IvyLeavesPerBud(params_));
   if (options_.stats) {
     e = e + EstimateIvyStats(StatsWork(model));
   }

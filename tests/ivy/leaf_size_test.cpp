@@ -1,7 +1,8 @@
 // Leaves (and tubes) keep a size in metres on a dropped mesh (issue 31 items 4 and 7): the same
 // mesh (the Stanford bunny) as a 0.3 m rock and a 20 m facade, read as glTF (metres), grows leaves
 // of about the same width in metres, measured on the leaf meshes, while its growth keeps the scale
-// of its bounds; read as OBJ (no unit) its leaves stay a fixed share of its size, as before.
+// of its bounds; read as OBJ (no unit) its leaves stay a fixed share of its size, as before. The
+// row leaf_spacing puts those leaves a real stem length apart on both (counted on the meshes).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,10 +10,12 @@
 #include <cstdio>
 #include <glm/geometric.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geom/mesh_metrics.h"
 #include "io/mesh_reader.h"
+#include "ivy/ivy_mesh.h"
 #include "ivy/ivy_run.h"
 
 namespace niwa::ivy {
@@ -50,11 +53,16 @@ struct Grown {
   double px_per_unit = 0, look_px_per_unit = 0, L = 0, leaf_size = 0, r_tip = 0;
   std::size_t leaves = 0;
   double p50 = 0, p90 = 0;  // blade widths in scene units
+  // Without the support's checks: leaves drawn, buds that carry them (all but the seeds), and
+  // the stems' length (scene units).
+  std::size_t drawn = 0, leafy_buds = 0;
+  double stem_length = 0;
 };
 
 // The bunny scaled to `extent` scene units across, read with `metres_per_unit` (1: a glTF, 0: an
 // OBJ), with the page's front seed, grown 60 steps with the page's default preset (artist).
-Grown GrowBunny(double extent, double metres_per_unit) {
+Grown GrowBunny(double extent, double metres_per_unit,
+                std::vector<std::pair<std::string, double>> rows = {}) {
   const std::string path = std::string(NIWA_SOURCE_DIR) + "/tests/data/meshes/bunny.obj";
   Result<geom::TriMesh> mesh = io::ReadMeshFile(path);
   EXPECT_TRUE(mesh.ok()) << mesh.status().Line();
@@ -69,6 +77,9 @@ Grown GrowBunny(double extent, double metres_per_unit) {
   EXPECT_TRUE(support.ok()) << support.status().Line();
   IvyState state;
   EXPECT_TRUE(SetIvyPreset("artist", &state).ok());
+  for (const auto& [key, value] : rows) {
+    EXPECT_TRUE(state.params.SetFromText(key, std::to_string(value)).ok()) << key;
+  }
   state.steps = 60;
   IvyRunOptions run_options;
   run_options.build_meshes = true;
@@ -85,6 +96,14 @@ Grown GrowBunny(double extent, double metres_per_unit) {
   g.leaves = widths.size();
   g.p50 = Quantile(widths, 0.5);
   g.p90 = Quantile(widths, 0.9);
+  LeafPlacement placement;
+  (void)BuildIvyMeshes(run->model(), run->params(), nullptr, &placement);
+  g.drawn = placement.drawn;
+  for (const Bud& bud : run->model().buds) g.leafy_buds += bud.parent >= 0 ? 1 : 0;
+  for (const Internode& in : run->model().internodes) {
+    g.stem_length += glm::length(run->model().buds[static_cast<std::size_t>(in.to_bud)].pos -
+                                 run->model().buds[static_cast<std::size_t>(in.from_bud)].pos);
+  }
   std::printf(
       "[ leaves   ] bunny %.1f m across, %s: %zu blade triangles, widths median %.4f, 90th "
       "percentile %.4f scene units; L %.4f\n",
@@ -137,6 +156,42 @@ TEST(IvyLeafSize, AnObjNamesNoUnitSoItsLeavesFollowItsBounds) {
   ASSERT_TRUE(scaled.ok());
   EXPECT_EQ(scaled->Get(IvyParam::kLeafSize), 5.0);
   EXPECT_EQ(scaled->Get(IvyParam::kL), 5.0);
+}
+
+// The row leaf_spacing (artist: 50 px, 5 cm on a glTF): where the growth is scaled to the mesh's
+// bounds and the leaves are in metres, a 0.3 m rock's 1.25 cm internodes share a leaf (a quarter
+// of the buds keep one) and a 20 m facade's 83 cm internodes carry 8 (the cap; 16.7 would be 5 cm
+// apart), so both have leaves a few centimetres of stem apart instead of a heap and a scatter.
+// leaf_light 0 here: no leaf thinned by light, so the counts are the spacing's alone.
+TEST(IvyLeafSize, AGltfsLeavesAreARealStemLengthApart) {
+  const Grown rock = GrowBunny(0.3, 1, {{"leaf_light", 0}});
+  const Grown facade = GrowBunny(20, 1, {{"leaf_light", 0}});
+  const Grown rock_one = GrowBunny(0.3, 1, {{"leaf_light", 0}, {"leaf_spacing", 0}});
+  for (const Grown* g : {&rock, &facade, &rock_one}) {
+    std::printf("[ spacing  ] %zu leaves on %zu buds, %.3f scene units of stem: %.4f a leaf\n",
+                g->drawn, g->leafy_buds, g->stem_length,
+                g->stem_length / static_cast<double>(std::max<std::size_t>(g->drawn, 1)));
+    ASSERT_GT(g->leafy_buds, 100u);
+  }
+  // leaf_spacing 0: one leaf a bud (the paper), a leaf every 1.25 cm of stem on the rock.
+  EXPECT_EQ(rock_one.drawn, rock_one.leafy_buds);
+  // The rock: each bud keeps its leaf with probability n = 0.25 (a hash of its id).
+  const double kept = static_cast<double>(rock.drawn) / static_cast<double>(rock.leafy_buds);
+  EXPECT_GT(kept, 0.18);
+  EXPECT_LT(kept, 0.32);
+  EXPECT_GT(rock.stem_length / static_cast<double>(rock.drawn), 0.035);
+  EXPECT_LT(rock.stem_length / static_cast<double>(rock.drawn), 0.07);
+  // The facade: 8 leaves a bud, about 10 cm of stem apart.
+  EXPECT_EQ(facade.drawn, 8 * facade.leafy_buds);
+  EXPECT_GT(facade.stem_length / static_cast<double>(facade.drawn), 0.07);
+  EXPECT_LT(facade.stem_length / static_cast<double>(facade.drawn), 0.14);
+}
+
+// Where the growth and the leaves share a scale (a built-in scene, an OBJ, a tree), L / s_n is
+// exactly 1 with artist's 50 / 50 px: one leaf a bud, the same leaves as without the row.
+TEST(IvyLeafSize, OneScaleMeansOneLeafABudAsBefore) {
+  const Grown obj = GrowBunny(0.3, 0, {{"leaf_light", 0}});
+  EXPECT_EQ(obj.drawn, obj.leafy_buds);
 }
 
 }  // namespace

@@ -18,7 +18,7 @@ TEST(IvyPresets, ReadFromTheEmbeddedListInItsOrder) {
             (V{{"max_bend", 60}, {"avoid", 10}, {"candidates", 32}, {"body", 1}}));
   // metric is a scale, not lengths (issue 31 item 4): the paper's rows at 1000 px per unit.
   EXPECT_EQ(IvyPresetOverrides("metric"), (V{{"scale", 1000}}));
-  // artist (issue 31 item 5): beyond the paper; its two own rows are 0 in every other preset.
+  // artist (issue 31 item 5): beyond the paper; its own rows are 0 in every other preset.
   EXPECT_EQ(IvyPresetOverrides("artist"), (V{{"g_min", -1},
                                              {"hang", 8},
                                              {"max_bend", 90},
@@ -28,11 +28,13 @@ TEST(IvyPresets, ReadFromTheEmbeddedListInItsOrder) {
                                              {"leaf_light", 1},
                                              {"w_grav", 0.5},
                                              {"t2", 0.5},
-                                             {"leaf_size", 75}}));
+                                             {"leaf_size", 75},
+                                             {"leaf_spacing", 50}}));
   for (const char* other : {"paper", "literal", "improved", "metric"}) {
     EXPECT_EQ(IvyPreset(other)->Get(IvyParam::kHang), 0) << other;
     EXPECT_EQ(IvyPreset(other)->Get(IvyParam::kLeafLight), 0) << other;
     EXPECT_EQ(IvyPreset(other)->Get(IvyParam::kGMin), 0) << other;
+    EXPECT_EQ(IvyPreset(other)->Get(IvyParam::kLeafSpacing), 0) << other;
   }
   Result<IvyParams> metric = IvyPreset("metric");
   ASSERT_TRUE(metric.ok());
