@@ -51,7 +51,8 @@ function compareWithNative(name, data, args) {
   const same = JSON.stringify(web) === JSON.stringify(withoutMs(native));
   check(`${name}: page --stats == native CLI (${args.join(' ')})`, same,
     same ? `${web.internodes} internodes, ${web.leaves} leaves, ${web.laterals} laterals`
-      : `web ${JSON.stringify(web).slice(0, 300)} native ${JSON.stringify(withoutMs(native)).slice(0, 300)}`);
+      : Object.keys({ ...web, ...withoutMs(native) }).filter((k) => JSON.stringify(web[k]) !== JSON.stringify(withoutMs(native)[k]))
+        .map((k) => `${k}: web ${JSON.stringify(web[k])?.slice(0, 120)}, native ${JSON.stringify(withoutMs(native)[k])?.slice(0, 120)}`).join('; '));
   // The measurement's own re-checks by name (issue 16): the overlapping internode pairs of the
   // x-sweep and the brute-force hit counts are in both and equal (a field missing from both would
   // leave the equality above true).
