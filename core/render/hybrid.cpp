@@ -491,7 +491,9 @@ HybridScene BuildHybridScene(const Tree& tree, const RenderOptions& options) {
   HybridScene scene;
   scene.options = options;
   const std::size_t n = tree.branches.size();
-  const float leaf_size = static_cast<float>(tree.params.Get(ParamId::kLeafSize));
+  // The leaf cards' extent, as the mesh draws them (mesh.cpp: leaf_size times leaf_card).
+  const float leaf_size =
+      static_cast<float>(tree.params.Get(ParamId::kLeafSize) * tree.params.Get(ParamId::kLeafCard));
   const bool leaves_on_cards = options.leaf_mode == LeafMode::kBranchCards;
   scene.frames.resize(n);
   scene.shapes.resize(n);

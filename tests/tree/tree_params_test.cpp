@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <string>
 
 #include "tree/growth.h"
@@ -22,8 +23,8 @@ TEST(TreeParamStages, FollowTheGroups) {
     const std::string group = s.group;
     const Stage expected = group == "sway" || group == "wind" ? Stage::kSway
                            : group == "render"                ? Stage::kView
-                           : s.key == std::string("leaf_shape")
-                               ? Stage::kMesh  // the one row the mesh alone uses
+                           : s.key == std::string("leaf_shape") || s.key == std::string("leaf_card")
+                               ? Stage::kMesh  // the two rows the mesh alone uses
                                : Stage::kGrow;
     EXPECT_EQ(s.stage, expected) << s.key;
     EXPECT_STRNE(table.GroupTitle(s.group), "") << s.key;
@@ -66,7 +67,33 @@ TEST(TreeParamStages, RowsAfterGrowLeaveTheTreeAndItsMeshUnchanged) {
     }
     ++checked;
   }
-  EXPECT_EQ(checked, 31);  // 13 sway, 9 wind, 8 render rows and leaf_shape (mesh)
+  EXPECT_EQ(checked, 32);  // 13 sway, 9 wind, 8 render rows, leaf_shape and leaf_card (mesh)
+}
+
+TEST(TreeParamStages, LeafCardScalesTheDrawnLeavesAboutTheirBases) {
+  // leaf_card (a mesh row) draws each leaf's card that many times longer and wider from the same
+  // base: the tree is the same, the leaf quads' extent from their base grows by exactly the factor.
+  GrowRequest base;
+  base.preset = "pine";
+  base.params = FindPreset("pine")->params;
+  base.years = 4;
+  ASSERT_EQ(base.params.Get(TreeParam::kLeafCard), 2.5);
+  const Tree tree = GrowTree(base);
+  Tree one = tree;
+  ASSERT_TRUE(one.params.Set(TreeParam::kLeafCard, 1).ok());
+  const TreeMesh drawn = BuildTreeMesh(tree), plain = BuildTreeMesh(one);
+  ASSERT_EQ(drawn.leaves.positions.size(), plain.leaves.positions.size());
+  ASSERT_GT(drawn.leaves.positions.size(), 300u);
+  // positions: x, y, z per vertex; a leaf is two quads of 4 vertices (its two sides).
+  auto at = [](const MeshBuffers& m, std::size_t v) {
+    return glm::dvec3(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
+  };
+  double drawn_extent = 0, plain_extent = 0;
+  for (std::size_t v = 0; v < drawn.leaves.positions.size() / 3; ++v) {
+    drawn_extent += glm::length(at(drawn.leaves, v) - at(drawn.leaves, v - v % 4));
+    plain_extent += glm::length(at(plain.leaves, v) - at(plain.leaves, v - v % 4));
+  }
+  EXPECT_NEAR(drawn_extent / plain_extent, 2.5, 1e-3);
 }
 
 TEST(TreeParamStages, AGrowRowDoesChangeTheTree) {
