@@ -7,10 +7,10 @@
 // shadows itself), bare bark lit by the sun is not (no acne). The map is redrawn when the sun or
 // the tree's pose changes and reused while only the camera moves. The worker sends the crown's
 // occlusion per vertex. Then the tree page itself: its Sun shadows select turns the shadow off, and
-// the share link carries it (shadows=off).
+// the share link carries it (shadows=off); in hybrid mode (render_mode=1) the cards are shadowed too.
 // Run: node tests/browser/shadow.test.mjs (needs build/wasm's niwa_web). Screenshots:
 // build/artifacts/shadow-on.png, shadow-off.png, shadow-bare-on.png, shadow-bare-off.png,
-// shadow-page-on.png, shadow-page-off.png.
+// shadow-page-on.png, shadow-page-off.png, shadow-hybrid-on.png, shadow-hybrid-off.png.
 import fs from 'node:fs';
 import path from 'node:path';
 import { ARTIFACTS, TIMEOUT, check, modulePage, newContext, runBrowserTest, saveCanvasPng, waitReady, watchPage } from './harness.mjs';
@@ -278,6 +278,41 @@ await runBrowserTest(async (server, browser) => {
   check('a bad shadows value is dropped with a notice naming the field and its values (shadows on)',
     /shadows: 'maybe' dropped, must be on or off/.test(badNotice) && (await bad.inputValue('#shadows')) === 'on', badNotice);
   await bad.close();
+
+  // ---- hybrid mode (thesis ch. 4 cards): the cards receive the shadow map too (card_lit.frag).
+  // The crown's pixels (green over red and blue, in the upper 60 % of the view, above the
+  // meadow) are darker with shadows on than off; the tree is the same, only the select changes.
+  const hybrid = watchPage(await context.newPage(), problems);
+  await hybrid.goto(`${server.url}#preset=sakura&seed=1&years=8&render_mode=1`, { timeout: TIMEOUT });
+  await waitReady(hybrid, 0, 200);
+  const crownLuma = async (shadows) => {
+    let before = Number(await hybrid.evaluate(() => document.documentElement.dataset.framesShown || 0));
+    if ((await hybrid.inputValue('#shadows')) !== shadows) await hybrid.selectOption('#shadows', shadows);
+    else before -= 1;  // nothing changes: the frame shown already
+    await hybrid.waitForFunction(([n, want]) => {
+      const d = document.documentElement.dataset;
+      return Number(d.framesShown || 0) > n && d.frameMode === 'hybrid' && (want === 'off') === (d.drawnShadow === 'off');
+    }, [before, shadows], { timeout: TIMEOUT, polling: 200 });
+    await hybrid.waitForTimeout(300);
+    await hybrid.locator('#view').screenshot({ path: path.join(ARTIFACTS, `shadow-hybrid-${shadows}.png`) });
+    return hybrid.evaluate(() => {
+      const image = window.__niwaCanvasImage('#view');
+      let sum = 0, n = 0;
+      for (let y = 0; y < Math.floor(0.6 * image.height); ++y)
+        for (let x = 0; x < image.width; ++x) {
+          const i = 4 * (y * image.width + x);
+          const r = image.data[i], g = image.data[i + 1], b = image.data[i + 2];
+          if (g - Math.max(r, b) > 12) { sum += 0.299 * r + 0.587 * g + 0.114 * b; ++n; }
+        }
+      return { luma: n ? sum / n : 0, pixels: n, mode: document.documentElement.dataset.frameMode };
+    });
+  };
+  const hybridOn = await crownLuma('on');
+  const hybridOff = await crownLuma('off');
+  check('hybrid mode: the cards receive the sun\'s shadow (the crown darker with shadows on)',
+    hybridOn.pixels > 1000 && hybridOff.pixels > 1000 && hybridOn.luma < 0.95 * hybridOff.luma,
+    `crown luma ${hybridOn.luma.toFixed(1)} on, ${hybridOff.luma.toFixed(1)} off, over ${hybridOn.pixels} and ${hybridOff.pixels} pixels (${hybridOn.mode})`);
+  await hybrid.close();
 
   check('no console errors or warnings', problems.length === 0, problems.slice(0, 5).join(' | '));
 });

@@ -4,8 +4,8 @@
 // The tree casts the sun's shadow (shadowKey, shadowSteps: its full mesh's parts into the frame's
 // shadow map, web/gl/shadow_map.js, leaves cut out by alpha, in both modes) and full mode receives
 // it on every part, with the crown's ambient occlusion per vertex (the worker's `occlusion`,
-// core/tree/crown_occlusion.h) darkening the sky light of inner leaves; hybrid mode's cards and
-// lines do not receive it.
+// core/tree/crown_occlusion.h) darkening the sky light of inner leaves; hybrid mode's cards
+// receive it too (card_lit.frag), its lines do not.
 // A StudyLayer (web/gl/frame.js): a layer of a Frame (layerSteps: the tree under the frame's
 // camera and sun; the frame draws the ground under its footprint), on the tree page, the grove's
 // neighbours to come, <niwa-tree> and beside other studies (tests/browser/frame_layers.test.mjs).
@@ -317,7 +317,7 @@ export class Renderer extends StudyLayer {
     const gl = this.gl;
     const p = await loadPrograms(gl, shaderBase, {
       tree: ['tree.vert', 'tree_textured.frag'], pick: ['pick.vert', '../common/pick.frag'], atlas: ['atlas.vert', 'tree_textured.frag'],
-      card: ['card.vert', 'card.frag'], line: ['line.vert', 'line.frag'], shadow: ['shadow.vert', 'shadow.frag'],
+      card: ['card.vert', 'card_lit.frag'], line: ['line.vert', 'line.frag'], shadow: ['shadow.vert', 'shadow.frag'],
     });
     this.shadowProgram = p.shadow;
     this.treeProgram = p.tree;
@@ -625,7 +625,10 @@ export class Renderer extends StudyLayer {
       const p = this.cardProgram;
       gl.useProgram(p.program);
       gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, viewProjection);
+      gl.uniform3fv(p.uniforms.uLightDirection, view.light || this.light);
       this.#bindPoses(p);
+      // The sun's shadow map (card_lit.frag), drawn from the full mesh once per mesh and sun.
+      (view.shadow || this.#shadowMap()).bindFor(p, view.sun || null);
       gl.activeTexture(gl.TEXTURE1);
       gl.bindTexture(gl.TEXTURE_2D, this.atlas.texture);
       gl.uniform1i(p.uniforms.uAtlas, 1);
@@ -778,7 +781,7 @@ export class Renderer extends StudyLayer {
 
   // What the tree casts into the sun's shadow map now (web/gl/frame.js): its mesh and pose
   // ("mesh#pose"), or null (no tree yet). Hybrid mode casts from its full mesh too (its parts are
-  // installed in both modes), so the ground's shadow is the same; its cards do not receive it, and
+  // installed in both modes), so the ground's shadow is the same; its cards receive it, and
   // its map is drawn once per mesh and sun (at the pose then), not again for every pose: a full
   // mesh's shadow pass would cost hybrid mode's frames many times their own primitives.
   shadowKey() {
