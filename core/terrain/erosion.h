@@ -32,7 +32,7 @@ struct ErosionParams {
   int mode = 0;           // ErosionMode
   int iterations = 20;    // passes; each: thermal, then hydraulic (as the mode says)
   double talus_deg = 35;  // thermal: material above this slope to a neighbour slips
-  double capacity = 0.3;  // hydraulic Kc: sediment (m over a cell) per cell of water and unit slope
+  double capacity = 1.0;  // hydraulic Kc: sediment (m over a cell) per cell of water and unit slope
   double solubility = 0.3;    // Ks: share of the capacity's deficit a cell loses per pass
   double deposition = 0.3;    // Kd: share of the capacity's excess a cell gains per pass
   double evaporation = 0.01;  // share of the water lost at each cell it passes

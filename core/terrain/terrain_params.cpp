@@ -77,7 +77,7 @@ const ParamTable& TerrainTable() {
            kMesh, "Erosion passes (each: thermal, then hydraulic, as erosion says)."},
           {Id(P::kErosionTalus), "erosion_talus", "", "deg", 35, 1, 89, false, "erosion", kMesh,
            "Thermal: material on a slope to a neighbour steeper than this slips down (talus)."},
-          {Id(P::kErosionCapacity), "erosion_capacity", "K_c", "m", 0.3, 0, 10, false, "erosion",
+          {Id(P::kErosionCapacity), "erosion_capacity", "K_c", "m", 1, 0, 10, false, "erosion",
            kMesh,
            "Hydraulic: sediment water can carry, per cell of rain drained and unit slope (m over "
            "a cell)."},
