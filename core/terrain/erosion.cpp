@@ -131,7 +131,8 @@ void FlatDistance(const Heightfield& hf, HydraulicScratch* s) {
 // of them set to that level: volume kept), or until the shore meets a cell lower than the level
 // (the lake spills there: the rest is added to `spill` at that cell, to flow on from there), or
 // the lake reaches the grid's edge (the rest leaves the grid, counted). Priority-flood order as in
-// Barnes, Lehman & Mulla 2014 (band_fill.h), run only from the cells that hold a load.
+// Barnes, Lehman & Mulla 2014 (band_fill.h), run only from the cells that hold a load; a load
+// waiting on a cell the lake takes in joins it (so a basin is flooded once a pass).
 void FillBasins(Heightfield* hf, HydraulicScratch* s, std::vector<double>* spill) {
   const int w = hf->width, ht = hf->height;
   std::vector<double>& h = hf->h;
@@ -171,6 +172,8 @@ void FillBasins(Heightfield* hf, HydraulicScratch* s, std::vector<double>* spill
       }
       level = hc;
       s->lake.push_back(c);
+      load += s->pending[c];  // a load waiting in the same basin joins this one (one flood a basin)
+      s->pending[c] = 0;
       const int i = static_cast<int>(c % static_cast<std::uint32_t>(w));
       const int j = static_cast<int>(c / static_cast<std::uint32_t>(w));
       if (i == 0 || j == 0 || i + 1 == w || j + 1 == ht) {  // the lake reaches the edge
