@@ -213,13 +213,14 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
     const terrain::GrowCounts& counts = run->terrain().counts;
     j["ms"] = std::chrono::duration<double, std::milli>(t5 - t0).count();  // the whole run
     // Up to the heightfield: the flags, the state, the checks and the grow.
-    j["ms_grow"] =
-        std::chrono::duration<double, std::milli>(t2 - t0).count() - run->ms_heightfield();
+    j["ms_grow"] = std::chrono::duration<double, std::milli>(t2 - t0).count() -
+                   run->ms_heightfield() - run->ms_erosion();
     j["ms_shrink"] = counts.ms_shrink;
     j["ms_mpd"] = counts.ms_mpd;
     j["ms_fd"] = counts.ms_fd;
     j["ms_loops"] = counts.ms_loops;
     j["ms_heightfield"] = run->ms_heightfield();
+    if (j.contains("erosion")) j["ms_erosion"] = run->ms_erosion();
     j["ms_encode"] = std::chrono::duration<double, std::milli>(t3 - t2).count();
     j["ms_write"] = std::chrono::duration<double, std::milli>(t4 - t3).count();
     j["ms_stats"] = std::chrono::duration<double, std::milli>(t5 - t4).count();

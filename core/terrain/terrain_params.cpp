@@ -69,13 +69,32 @@ const ParamTable& TerrainTable() {
           {Id(P::kDhRatio), "dh_ratio", "q", "", 1, 0.5, 2, false, "shrink", kGrow,
            "Profile: the interval from level k to k + 1 is Δh·q^k; above 1 the peaks are steeper "
            "than the foothills, below 1 gentler (1: the paper's equal intervals)."},
+          {Id(P::kErosion), "erosion", "", "", 0, 0, 3, true, "erosion", kMesh,
+           "Erosion of the grown surface (beyond the paper): 0 off, 1 thermal, 2 hydraulic, 3 "
+           "both. "
+           "Re-run on the kept surface when only an erosion row changes."},
+          {Id(P::kErosionIterations), "erosion_iterations", "", "", 20, 1, 1000, true, "erosion",
+           kMesh, "Erosion passes (each: thermal, then hydraulic, as erosion says)."},
+          {Id(P::kErosionTalus), "erosion_talus", "", "deg", 35, 1, 89, false, "erosion", kMesh,
+           "Thermal: material on a slope to a neighbour steeper than this slips down (talus)."},
+          {Id(P::kErosionCapacity), "erosion_capacity", "K_c", "m", 1, 0, 10, false, "erosion",
+           kMesh,
+           "Hydraulic: sediment water can carry, per cell of rain drained and unit slope (m over "
+           "a cell)."},
+          {Id(P::kErosionSolubility), "erosion_solubility", "K_s", "", 0.3, 0, 1, false, "erosion",
+           kMesh, "Hydraulic: share of the capacity's deficit a cell loses to the water per pass."},
+          {Id(P::kErosionDeposition), "erosion_deposition", "K_d", "", 0.3, 0, 1, false, "erosion",
+           kMesh, "Hydraulic: share of the capacity's excess the water drops on a cell per pass."},
+          {Id(P::kErosionEvaporation), "erosion_evaporation", "K_e", "", 0.01, 0, 0.99, false,
+           "erosion", kMesh, "Hydraulic: share of the water lost at each cell it passes."},
       },
       {{"method", "Method"},
        {"shrink", "Shrinking (Figs 5-8)"},
        {"midpoint", "Midpoint displacement (§4.1)"},
        {"fourier", "Fourier descriptors (§4.2-4.3)"},
        {"loops", "Loops (§4.4)"},
-       {"surface", "Surface"}});
+       {"surface", "Surface"},
+       {"erosion", "Erosion (beyond the paper)"}});
   return table;
 }
 

@@ -37,6 +37,14 @@ enum class TerrainParam : int {
   kRes,         // heightfield cells along the longer side
   kTint,        // hypsometric vertex colours in the mesh (0/1)
   kDhRatio,     // q: the interval from level k to k + 1 is Δh·q^k (the profile; 1: equal)
+  // Erosion (beyond the paper, erosion.h): stage mesh, re-run on the kept heightfield.
+  kErosion,             // 0 off, 1 thermal, 2 hydraulic, 3 both
+  kErosionIterations,   // passes
+  kErosionTalus,        // talus angle (deg)
+  kErosionCapacity,     // Kc: sediment per cell of water and unit slope (m)
+  kErosionSolubility,   // Ks: share of the capacity's deficit eroded per pass
+  kErosionDeposition,   // Kd: share of the capacity's excess deposited per pass
+  kErosionEvaporation,  // share of the water lost at each cell it passes
   kCount
 };
 

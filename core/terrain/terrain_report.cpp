@@ -59,4 +59,27 @@ nlohmann::json TerrainStatsJson(const TerrainState& state, const Terrain& terrai
   return j;
 }
 
+nlohmann::json ErosionJson(const ErosionReport& r) {
+  const auto drainage = [](const DrainageMeasure& m) {
+    return nlohmann::json{{"channel_threshold", m.threshold},
+                          {"channel_share", m.channel_share},
+                          {"max_accumulation", m.max_accumulation},
+                          {"mean_accumulation", m.mean_accumulation}};
+  };
+  nlohmann::json j;
+  j["volume_moved"] = r.volume_moved;
+  j["max_cut"] = r.max_cut;
+  j["max_deposit"] = r.max_deposit;
+  j["volume_laid"] = r.volume_laid;
+  j["volume_exported"] = r.volume_exported;  // m³ that left at the grid's edge
+  // Σh after + exported − before (m): rounding only.
+  j["volume_change"] = r.sum_after + r.exported - r.sum_before;
+  j["pits_before"] = r.pits_before;
+  j["pits_after"] = r.pits_after;
+  j["pits_levelled"] = r.pits_levelled;
+  j["drainage_before"] = drainage(r.drainage_before);
+  j["drainage_after"] = drainage(r.drainage_after);
+  return j;
+}
+
 }  // namespace niwa::terrain

@@ -101,7 +101,18 @@ Status TerrainRun::Update(const TerrainState& state) {
       if (state.params.Get(row) != state_.params.Get(row))
         stage = std::min(stage, table[row].stage);
   }
+  bool erosion_only = false;
   if (stage == Stage::kMesh) {
+    // Only erosion rows (and view rows) changed: the kept heightfield is re-eroded.
+    erosion_only = true;
+    const ParamTable& table = TerrainTable();
+    for (std::size_t row = 0; row < table.size(); ++row) {
+      if (table[row].stage != Stage::kMesh || state.params.Get(row) == state_.params.Get(row))
+        continue;
+      if (std::string(table[row].group) != "erosion") erosion_only = false;
+    }
+  }
+  if (stage == Stage::kMesh && !erosion_only) {
     // res is held back from the grow's budget (TerrainLimits): the kept contours are what a regrow
     // would give when the limits are the same, or when no limit stopped them and every check of
     // their grow passes the new limits too.
@@ -116,7 +127,7 @@ Status TerrainRun::Update(const TerrainState& state) {
   if (stage == Stage::kGrow) {
     redo_ = Redo::kGrow;
   } else if (stage == Stage::kMesh) {
-    redo_ = Redo::kHeightfield;
+    redo_ = erosion_only ? Redo::kErosion : Redo::kHeightfield;
   } else {  // sway and view rows: nothing built depends on them until it is asked for
     state_ = next_;
     redo_ = Redo::kNothing;
@@ -131,8 +142,36 @@ int TerrainRun::target() const {
   return next_.params.GetInt(TerrainParam::kMaxLevels) + next_.params.GetInt(TerrainParam::kDown);
 }
 
+void TerrainRun::ErodeKept(const TerrainState& state) {
+  const ErosionParams p = ErosionParamsOf(state.params);
+  const auto t0 = Clock::now();
+  if (p.mode == static_cast<int>(ErosionMode::kOff)) {
+    if (!hf_raw_.h.empty()) hf_ = std::move(hf_raw_);
+    hf_raw_ = Heightfield();
+    erosion_ = ErosionReport();
+    ms_erosion_ = 0;
+    return;
+  }
+  if (hf_raw_.h.empty()) hf_raw_ = hf_;
+  hf_ = hf_raw_;
+  erosion_ = Erode(p, &hf_);
+  ++counts_.erosions;
+  ms_erosion_ = Ms(t0, Clock::now());
+}
+
 Status TerrainRun::Advance(const run::Observer& observer) {
   if (redo_ == Redo::kNothing) return Status::Ok();
+  if (redo_ == Redo::kErosion) {
+    if (observer && !observer({"erosion", 0, 1})) return run::CancelledStatus();
+    ErodeKept(next_);
+    if (observer) observer({"erosion", 1, 1});
+    heightmap_.reset();
+    state_ = next_;
+    redo_ = Redo::kNothing;
+    ms_grow_ = 0;
+    ms_heightfield_ = 0;
+    return Status::Ok();
+  }
   const auto t0 = Clock::now();
   const TerrainParams& params = next_.params;
   std::optional<Terrain> grown;
@@ -195,6 +234,8 @@ Status TerrainRun::Advance(const run::Observer& observer) {
     limits_ = limits;
   }
   hf_ = std::move(hf);
+  hf_raw_ = Heightfield();
+  ErodeKept(next_);
   heightmap_.reset();
   state_ = next_;
   grown_ = true;
@@ -231,7 +272,9 @@ std::vector<run::Part> TerrainRun::Parts() const {
 
 std::string TerrainRun::StatsJson() const {
   if (!grown_) return "{}";
-  const nlohmann::json j = TerrainStatsJson(state_, terrain_, hf_, ComputeStats(terrain_, &hf_));
+  nlohmann::json j = TerrainStatsJson(state_, terrain_, hf_, ComputeStats(terrain_, &hf_));
+  // Only with erosion on, so every stats object without it is as before.
+  if (state_.params.GetInt(TerrainParam::kErosion) != 0) j["erosion"] = ErosionJson(erosion_);
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
@@ -266,6 +309,8 @@ const Heightfield& TerrainRun::heightmap_field() const {
   if (!heightmap_) {
     heightmap_ =
         BuildHeightfieldOn(terrain_, HeightmapGrid(hf_, state_.params.GetInt(TerrainParam::kRes)));
+    // The erosion's change, carried from the surface's grid to the heightmap's (erosion.h).
+    if (!hf_raw_.h.empty()) AddErosionChange(hf_raw_, hf_, &*heightmap_);
   }
   return *heightmap_;
 }

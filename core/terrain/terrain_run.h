@@ -6,7 +6,8 @@
 // its sidecar, the contour tree as .json, .geojson and .svg, the page's surface buffers), the
 // stats JSON, the share hash and the export estimates. Update(state) keeps what the changed rows'
 // stage allows: a view row (tint) re-does nothing but what is derived from the state on demand, a
-// mesh row (res) re-samples the heightfield from the kept contours, a grow row or the seed regrows.
+// mesh row (res) re-samples the heightfield from the kept contours, an erosion row (stage mesh too)
+// re-erodes the kept uneroded heightfield (erosion.h), a grow row or the seed regrows.
 // Does not: parse flags or panels, read or write files, print, repair a contour that crosses
 // itself (contour_repair.h; a front end does so before Start), or time anything but its own steps.
 #pragma once
@@ -21,6 +22,7 @@
 #include "run/field_names.h"
 #include "run/study_run.h"
 #include "terrain/contour.h"
+#include "terrain/erosion.h"
 #include "terrain/heightfield.h"
 #include "terrain/terrain_budget.h"
 #include "terrain/terrain_output.h"
@@ -48,6 +50,7 @@ struct TerrainRunPlan {
 struct TerrainRunCounts {
   int grows = 0;         // contour trees grown
   int heightfields = 0;  // heightfields built
+  int erosions = 0;      // erosion passes run (erosion.h; none while erosion is 0)
 };
 
 // `terrain compare` (issue 19 item 4), once for every front end: the state grown from its seed and
@@ -134,9 +137,12 @@ class TerrainRun : public run::StudyRun {
   // Wall time of the last successful Advance's grow and heightfield (0 when not re-done).
   double ms_grow() const { return ms_grow_; }
   double ms_heightfield() const { return ms_heightfield_; }
+  double ms_erosion() const { return ms_erosion_; }
+  // The last erosion's report (erosion.h; an empty one while erosion is 0).
+  const ErosionReport& erosion() const { return erosion_; }
 
  private:
-  enum class Redo { kNothing, kHeightfield, kGrow };
+  enum class Redo { kNothing, kErosion, kHeightfield, kGrow };
   TerrainRun() = default;
   Result<Ring> Check(const TerrainState& state) const;  // Start's checks
   std::string Change() const;                           // "lower res", in the plan's words
@@ -149,13 +155,17 @@ class TerrainRun : public run::StudyRun {
   bool grown_ = false;
   TerrainState state_;  // the state of terrain_ and hf_
   Terrain terrain_;
-  Heightfield hf_;
+  Heightfield hf_;      // eroded when the state's erosion is on
+  Heightfield hf_raw_;  // hf_ before erosion (kept only while erosion is on)
+  ErosionReport erosion_;
   mutable std::optional<Heightfield> heightmap_;  // hf_'s surface on HeightmapGrid
   TerrainGrowLimits limits_;                      // the limits terrain_ was grown within
   TerrainRunCounts counts_;
   std::string truncated_by_;
   std::optional<Estimate> checked_estimate_;
-  double ms_grow_ = 0, ms_heightfield_ = 0;
+  double ms_grow_ = 0, ms_heightfield_ = 0, ms_erosion_ = 0;
+  // Erodes hf_ from hf_raw_ by the state's erosion rows (or keeps hf_ = hf_raw_ when off).
+  void ErodeKept(const TerrainState& state);
 };
 
 }  // namespace niwa::terrain

@@ -351,6 +351,76 @@ const figures = {
     }
     return out;
   },
+  figerosion() {
+    // Beyond the paper (issue 31 item 3): the erosion pass (core/terrain/erosion.h, erosion=3:
+    // thermal and hydraulic, the table's other defaults) beside the paper's four methods, from the
+    // jacksboro seed (seed 1), res 256, one camera as Fig 17's (top row without, bottom row with),
+    // and the improved method's central massif closer; the measures from --stats' "erosion".
+    const out = {};
+    let frame = null, view = null, lo = null, hi = null;
+    const grown = {};
+    for (const preset of ['simple', 'midpoint', 'fourier', 'improved']) {
+      for (const erosion of [0, 3]) {
+        const hm = path.join(tmpDir, `erosion_${preset}_${erosion}.png`);
+        const s = JSON.parse(run(['terrain', 'grow', '--builtin', 'jacksboro', '--method', preset, '--seed', '1', '--res', '256',
+          '--set', `erosion=${erosion}`, '--heightmap', hm, '--stats']));
+        const sc = JSON.parse(fs.readFileSync(hm.replace(/\.png$/, '.json'), 'utf8'));
+        frame = frame || [sc.origin.x, sc.origin.y - sc.height * sc.cell_size, sc.origin.x + sc.width * sc.cell_size, sc.origin.y].join(',');
+        lo = lo ?? sc.min_elevation;
+        hi = Math.max(hi ?? 0, sc.max_elevation);
+        grown[`${preset}_${erosion}`] = { hm, s };
+      }
+      const a = grown[`${preset}_0`].s, b = grown[`${preset}_3`].s, e = b.erosion;
+      out[preset] = {
+        volume_moved_m3: Math.round(e.volume_moved), volume_laid_m3: Math.round(e.volume_laid),
+        volume_exported_m3: Math.round(e.volume_exported), volume_change_m: e.volume_change,
+        max_cut_m: r2(e.max_cut), max_deposit_m: r2(e.max_deposit),
+        pits: [e.pits_before, e.pits_after], pits_levelled: e.pits_levelled,
+        channel_share: [r3(e.drainage_before.channel_share * 100), r3(e.drainage_after.channel_share * 100)],
+        max_accumulation: [e.drainage_before.max_accumulation, e.drainage_after.max_accumulation],
+        mean_accumulation: [r2(e.drainage_before.mean_accumulation), r2(e.drainage_after.mean_accumulation)],
+        mean_slope_deg: [r2(a.mean_slope_deg), r2(b.mean_slope_deg)],
+        hypsometric_integral: [r3(a.hypsometric_integral), r3(b.hypsometric_integral)],
+      };
+    }
+    view = ['--width', '400', '--height', '250', '--elevation', '35', '--view-from', '200', '--exaggeration', '3', '--tint', `${lo},${hi}`];
+    const panels = [];
+    for (const erosion of [0, 3]) {
+      for (const preset of ['simple', 'midpoint', 'fourier', 'improved']) {
+        const png = `terrain_erosion_${preset}_${erosion}.png`;
+        run(['terrain', 'render', '--dem', grown[`${preset}_${erosion}`].hm, '--out', path.join(outDir, png), '--frame', frame, ...view]);
+        panels.push({ label: `${preset}${erosion ? ', eroded' : ''}`, png, w: 400, h: 250 });
+      }
+    }
+    // Closer: the improved method's highest massif, a quarter of the box around the summit.
+    const f = frame.split(',').map(Number);
+    const cx = f[0] + 0.43 * (f[2] - f[0]), cy = f[1] + 0.62 * (f[3] - f[1]), half = 0.16 * (f[2] - f[0]);
+    const close = [cx - half, cy - half, cx + half, cy + half].map((v) => v.toFixed(1)).join(',');
+    const closeView = ['--width', '600', '--height', '375', '--elevation', '40', '--view-from', '200', '--exaggeration', '2', '--tint', `${lo},${hi}`];
+    for (const erosion of [0, 3]) {
+      const png = `terrain_erosion_close_${erosion}.png`;
+      run(['terrain', 'render', '--dem', grown[`improved_${erosion}`].hm, '--out', path.join(outDir, png), '--frame', close, ...closeView]);
+      panels.push({ label: `improved, closer${erosion ? ', eroded' : ''}`, png, w: 600, h: 375 });
+    }
+    const gap = 10;
+    let y = 30;
+    const rows = [panels.slice(0, 4), panels.slice(4, 8), panels.slice(8)];
+    const body = rows.map((row) => {
+      const h = row[0].h;
+      const text = row.map((p, k) => {
+        const x = k * (p.w + gap);
+        return `<image href="${p.png}" x="${x}" y="${y}" width="${p.w}" height="${p.h}"/>` +
+          `<text x="${x + 6}" y="${y + p.h + 18}" font-size="15">${esc(p.label)}</text>`;
+      }).join('\n');
+      y += h + 30;
+      return text;
+    }).join('\n');
+    fs.writeFileSync(path.join(outDir, 'terrain_erosion.svg'),
+      `<svg xmlns="http://www.w3.org/2000/svg" width="${4 * (400 + gap)}" height="${y}" font-family="sans-serif">\n` +
+      `<text x="4" y="20" font-size="16">Erosion (beyond the paper): the four methods from jacksboro (seed 1) without and with erosion=3 (thermal + hydraulic, defaults), heights ×3</text>\n${body}\n</svg>\n`);
+    out.render = { frame_m: frame, close_frame_m: close, exaggeration: [3, 2] };
+    return out;
+  },
   fig18() {
     // Loops: how many each perturbing method removes on lobes7 and jacksboro (method 1 and 2).
     const out = {};

@@ -5,7 +5,8 @@
 // plan (the hash gains contour=, and the CLI regrows it identically); a drawing that crosses itself
 // and one too small get a notice beside the plan and the page recovers; a bad value is one line
 // beside its field and the page recovers; the downloaded .glb and heightmap equal the CLI's bytes
-// for the same hash; the contour toggle hides the lines. Screenshots: build/artifacts/terrain-*.png.
+// for the same hash; the contour toggle hides the lines; an erosion row re-erodes the kept surface
+// without a regrow (and a view row does not re-erode). Screenshots: build/artifacts/terrain-*.png.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -367,6 +368,62 @@ await runBrowserTest(async (server, browser) => {
     check('a hostile link: notices for each bad field, and a mountain grows', d.status === 'ready' && text.includes('builtin') && text.includes('zzz') && /(^|\n)d[: ]/.test(text),
       `${d.status}; notice '${text.replace(/\n/g, ' | ')}'`);
     await hostile.close();
+  }
+
+  // 11b. Erosion rows (stage mesh, core/terrain/erosion.h): erosion=3 re-erodes the kept surface
+  // (no regrow, no new heightfield: the worker's run counts each), the picture changes, and the
+  // stats are the CLI's for the new link; another erosion row re-erodes again; tint does not.
+  {
+    data = await page.evaluate(() => ({ ...document.documentElement.dataset }));
+    serial = Number(data.terrainSerial);
+    await page.click('#params details:has(#param-erosion) > summary');
+    const was = { grows: Number(data.grows), heightfields: Number(data.heightfields), erosions: Number(data.erosions) };
+    await snapshotCanvas(page, 'uneroded');
+    await saveCanvasPng(page, 'terrain-uneroded.png');
+    await page.fill('#param-erosion', '3');
+    data = await waitTerrain(page, serial);
+    serial = Number(data.terrainSerial);
+    await page.waitForTimeout(300);
+    await snapshotCanvas(page, 'eroded');
+    await saveCanvasPng(page, 'terrain-eroded.png');
+    const erodedChange = await snapshotDifference(page, 'uneroded', 'eroded', 12);
+    const stats = JSON.parse(data.stats || '{}');
+    check('erosion=3 re-erodes the kept surface: no regrow, no new heightfield, the picture changes',
+      data.status === 'ready' && Number(data.grows) === was.grows && Number(data.heightfields) === was.heightfields &&
+      Number(data.erosions) === was.erosions + 1 && erodedChange > 0.01 && stats.erosion?.volume_moved > 0 && /erosion=3/.test(data.hash),
+      `grows ${was.grows} -> ${data.grows}, heightfields ${was.heightfields} -> ${data.heightfields}, erosions ${was.erosions} -> ${data.erosions}, ` +
+      `${(erodedChange * 100).toFixed(2)}% of pixels changed, moved ${Math.round(stats.erosion?.volume_moved)} m³, worker erosion ${data.msErosion} ms`);
+    if (data.status === 'ready') compareWithNative('erosion=3 (re-eroded in the page)', data);
+    await page.fill('#param-erosion_talus', '25');
+    data = await waitTerrain(page, serial);
+    serial = Number(data.terrainSerial);
+    check('another erosion row (talus 25) re-erodes again, nothing regrown',
+      data.status === 'ready' && Number(data.grows) === was.grows && Number(data.heightfields) === was.heightfields && Number(data.erosions) === was.erosions + 2,
+      `grows ${data.grows}, heightfields ${data.heightfields}, erosions ${data.erosions}`);
+    if (data.status === 'ready') compareWithNative('erosion_talus=25 (re-eroded in the page)', data);
+    await page.evaluate(() => {
+      const box = document.getElementById('param-tint');
+      box.checked = !box.checked;
+      box.dispatchEvent(new Event('change', { bubbles: true }));
+    });
+    data = await waitTerrain(page, serial);
+    serial = Number(data.terrainSerial);
+    check('a view row (tint) does not re-erode', Number(data.erosions) === was.erosions + 2, `erosions ${data.erosions}`);
+    await page.evaluate(() => {
+      const box = document.getElementById('param-tint');
+      box.checked = !box.checked;
+      box.dispatchEvent(new Event('change', { bubbles: true }));
+    });
+    data = await waitTerrain(page, serial);
+    serial = Number(data.terrainSerial);
+    await page.fill('#param-erosion', '0');
+    data = await waitTerrain(page, serial);
+    serial = Number(data.terrainSerial);
+    check('erosion back to 0: the uneroded surface, nothing regrown', data.status === 'ready' && Number(data.grows) === was.grows &&
+      Number(data.heightfields) === was.heightfields && !JSON.parse(data.stats || '{}').erosion, `grows ${data.grows}, heightfields ${data.heightfields}`);
+    await page.fill('#param-erosion_talus', '35');
+    data = await waitTerrain(page, serial);
+    serial = Number(data.terrainSerial);
   }
 
   // 12. Measured (not a pass/fail: a shared, loaded machine): a drawn contour regrown with a 512²

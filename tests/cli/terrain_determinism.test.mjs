@@ -1,6 +1,7 @@
 // Terrain CLI: native == WASM `niwa terrain grow --stats` (minus the ms fields) and the contour-tree
 // .json, byte for byte, for every built-in seed × method and two RNG seeds, and `terrain shrink`'s
-// JSON and figure SVG for every seed × join; hostile input is one line naming the field, exit 2, no
+// JSON and figure SVG for every seed × join; the erosion pass (thermal, hydraulic, both: --stats
+// and the --heightmap .png) on jacksboro, valleys and a drawn contour; hostile input is one line naming the field, exit 2, no
 // file left behind; --repair grows a crossing contour the same in both builds. The WASM runs are
 // batched in niwa_cli_batch.js (the same RunCli; a niwa.js start under node costs about 0.3 CPU s),
 // every NIWA_TERRAIN_WASM_EVERY-th (default 4) one niwa.js process each (support/cli_batch.mjs
@@ -24,7 +25,19 @@ const joins = ['miter', 'bevel', 'round', 'capped'];
 const growArgs = (seedName, method, rng) => ['terrain', 'grow', '--builtin', seedName, '--method', method, '--seed', String(rng), '--stats'];
 const shrinkArgs = (seedName, joinName) => ['terrain', 'shrink', '--builtin', seedName, '--join', joinName, '--steps', '3',
   '--displace', '20,8,0,30', '--seed', '2', '--clean-len', '1'];
+// The erosion pass (core/terrain/erosion.h): the same bytes in both builds.
+const drawn = join(dir, 'drawn.json');
+writeFileSync(drawn, JSON.stringify({ points: Array.from({ length: 90 }, (_, k) => {
+  const a = (2 * Math.PI * k) / 90, r = 250 * (1 + 0.3 * Math.sin(5 * a) + 0.1 * Math.cos(3 * a + 1));
+  return [Math.round(r * Math.cos(a) * 100) / 100, Math.round(r * Math.sin(a) * 100) / 100];
+}) }));
+const erosionCases = [['--builtin', 'jacksboro'], ['--builtin', 'valleys'], ['--contour', drawn]].flatMap((src) =>
+  // (thermal at 15°: jacksboro's slopes, 14° on average, are below the default 35°, nothing slips)
+  [1, 2, 3].map((mode) => [...src, '--method', 'improved', '--set', `erosion=${mode}`, '--set', 'res=128',
+    ...(mode === 1 ? ['--set', 'erosion_talus=15'] : [])]));
+const erosionArgs = (args, k, build) => ['terrain', 'grow', ...args, '--stats', '--heightmap', join(dir, `erosion-${k}-${build}.png`)];
 await W.prepare([
+  ...erosionCases.map((args, k) => erosionArgs(args, k, 'w')),
   ...seeds.flatMap((seedName) => methods.flatMap((method) => [1, 2].map((rng) =>
     [...growArgs(seedName, method, rng), '--contours', join(dir, `${seedName}-${method}-${rng}-w.json`)]))),
   ...seeds.flatMap((seedName) => joins.map((joinName) => [...shrinkArgs(seedName, joinName), '--svg', join(dir, `${seedName}-${joinName}-w.svg`)])),
@@ -42,6 +55,14 @@ for (const seedName of seeds) {
       check(`${seedName} ${method} seed ${rng}: contours .json identical (${ja.length} bytes)`, ja.length > 100 && ja === jb);
     }
   }
+}
+
+for (const [k, args] of erosionCases.entries()) {
+  const a = JSON.parse(run(native, erosionArgs(args, k, 'n')));
+  const b = JSON.parse(run(wasm, erosionArgs(args, k, 'w')));
+  const pa = readFileSync(join(dir, `erosion-${k}-n.png`)), pb = readFileSync(join(dir, `erosion-${k}-w.png`));
+  check(`${args.slice(0, 2).join(' ').replace(dir, '')} ${args[5]}: --stats (moved ${Math.round(a.erosion?.volume_moved)} m³, pits ${a.erosion?.pits_before} -> ${a.erosion?.pits_after}) and heightmap (${pa.length} bytes) native == WASM`,
+    a.erosion?.volume_moved > 0 && typeof a.ms_erosion === 'number' && JSON.stringify(withoutMs(a)) === JSON.stringify(withoutMs(b)) && pa.equals(pb));
 }
 
 // The traced shrinking algorithm (Figs 2-8, 12): the JSON (with every ring) and the SVG, byte for byte.
@@ -66,6 +87,9 @@ const hostile = [
   [['--contour', join(dir, 'none.json')], '--contour'], [['--contour', crossing], '--contour'],
   // The seed is a state field, not a table row (issue 28 item 6): --set does not take it.
   [['--set', 'seed=3'], '--set'], [['--seed', '4294967296'], '--seed'],
+  // Erosion rows: the table's range in the line.
+  [['--set', 'erosion=4'], '--set: erosion: 4 is out of range; must be a whole number in [0, 3]'],
+  [['--set', 'erosion_talus=95'], '--set: erosion_talus: 95 is out of range; must be a number in [1, 89]'],
 ];
 const hostileArgs = (args) => ['terrain', 'grow', ...(args[0] === '--builtin' || args[0] === '--contour' ? [] : ['--builtin', 'disk']), ...args,
   '--contours', join(dir, 'bad.json')];

@@ -191,6 +191,70 @@ TEST(TerrainRun, HashUnderThePrefixReadsBackTheState) {
   EXPECT_EQ(EncodeTerrainHash(back), run.Hash(""));
 }
 
+// Erosion rows (stage mesh, erosion.h): an edit re-erodes the kept uneroded heightfield, neither
+// regrowing nor rebuilding it; the result is a fresh run's; a view row does not re-erode; erosion
+// back to 0 gives the uneroded bytes; res rebuilds and re-erodes.
+TEST(TerrainRun, ErosionRowsReErodeTheKeptSurface) {
+  TerrainState state = State("lobes7", "improved", 2, 64);
+  TerrainRun run = Grown(state);
+  const std::string plain_glb = *run.Export("glb");
+  const std::string plain_map = *run.Export("heightmap");
+  EXPECT_EQ(run.counts().erosions, 0);
+  EXPECT_EQ(nlohmann::json::parse(run.StatsJson()).count("erosion"), 0u);
+
+  TerrainState eroded = state;
+  ASSERT_TRUE(eroded.params.Set(TerrainParam::kErosion, 3).ok());
+  ASSERT_TRUE(run.Update(eroded).ok());
+  EXPECT_EQ(run.done(), 0);  // pending
+  ASSERT_TRUE(run.Advance({}).ok());
+  EXPECT_EQ(run.counts().grows, 1);
+  EXPECT_EQ(run.counts().heightfields, 1);
+  EXPECT_EQ(run.counts().erosions, 1);
+  EXPECT_NE(*run.Export("glb"), plain_glb);
+  EXPECT_NE(*run.Export("heightmap"), plain_map);
+  EXPECT_EQ(*run.Export("glb"), *Grown(eroded).Export("glb"));
+  EXPECT_EQ(*run.Export("heightmap"), *Grown(eroded).Export("heightmap"));
+  EXPECT_EQ(run.StatsJson(), Grown(eroded).StatsJson());
+  const nlohmann::json stats = nlohmann::json::parse(run.StatsJson());
+  ASSERT_EQ(stats.count("erosion"), 1u);
+  EXPECT_GT(stats["erosion"]["volume_moved"].get<double>(), 0);
+  EXPECT_EQ(stats["erosion"]["pits_after"].get<int>(), 0);
+  EXPECT_NE(stats["url"].get<std::string>().find("erosion=3"), std::string::npos);
+
+  TerrainState talus = eroded;  // another erosion row: re-eroded from the kept surface
+  ASSERT_TRUE(talus.params.Set(TerrainParam::kErosionTalus, 25).ok());
+  ASSERT_TRUE(run.Update(talus).ok());
+  ASSERT_TRUE(run.Advance({}).ok());
+  EXPECT_EQ(run.counts().heightfields, 1);
+  EXPECT_EQ(run.counts().erosions, 2);
+  EXPECT_EQ(*run.Export("glb"), *Grown(talus).Export("glb"));
+
+  TerrainState grey = talus;  // a view row: nothing re-eroded
+  ASSERT_TRUE(grey.params.Set(TerrainParam::kTint, 0).ok());
+  ASSERT_TRUE(run.Update(grey).ok());
+  ASSERT_TRUE(run.Advance({}).ok());
+  EXPECT_EQ(run.counts().erosions, 2);
+  EXPECT_EQ(*run.Export("glb"), *Grown(grey).Export("glb"));
+
+  TerrainState finer = grey;  // res: rebuilt, then eroded again
+  ASSERT_TRUE(finer.params.Set(TerrainParam::kRes, 80).ok());
+  ASSERT_TRUE(run.Update(finer).ok());
+  ASSERT_TRUE(run.Advance({}).ok());
+  EXPECT_EQ(run.counts().grows, 1);
+  EXPECT_EQ(run.counts().heightfields, 2);
+  EXPECT_EQ(run.counts().erosions, 3);
+  EXPECT_EQ(*run.Export("glb"), *Grown(finer).Export("glb"));
+
+  TerrainState off = finer;  // erosion off: the uneroded surface, bit for bit
+  ASSERT_TRUE(off.params.Set(TerrainParam::kErosion, 0).ok());
+  ASSERT_TRUE(run.Update(off).ok());
+  ASSERT_TRUE(run.Advance({}).ok());
+  EXPECT_EQ(run.counts().heightfields, 2);
+  EXPECT_EQ(run.counts().erosions, 3);
+  EXPECT_EQ(*run.Export("glb"), *Grown(off).Export("glb"));
+  EXPECT_EQ(run.StatsJson(), Grown(off).StatsJson());
+}
+
 TEST(TerrainRun, UpdateRedoesOnlyTheChangedRowsStage) {
   TerrainState state = State("lobes7", "improved", 3, 48);
   TerrainRun run = Grown(state);

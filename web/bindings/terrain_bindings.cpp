@@ -190,8 +190,8 @@ std::string TerrainParseContour(const std::string& text) {
 }
 
 // An adapter over core/terrain/terrain_run.h: one TerrainRun kept from grow to grow (an edit of
-// tint or res re-does only its stage, TerrainRun::Update), the page's surface buffers filled from
-// it.
+// tint, res or an erosion row re-does only its stage, TerrainRun::Update), the page's surface
+// buffers filled from it.
 class TerrainLab {
  public:
   // Grows the state (JSON, as ApplyTerrainStateJson reads it) and builds its heightfield: "" or
@@ -221,13 +221,16 @@ class TerrainLab {
       s = run_->Update(state);
       if (!s.ok()) return ErrorText(s);
     }
-    const int built = run_->counts().heightfields;
+    const int built = run_->counts().heightfields, eroded = run_->counts().erosions;
     s = run_->Advance({});
     if (!s.ok()) return ErrorText(s);
     ms_heightfield_ = run_->ms_heightfield();
-    ms_grow_ = Ms(t0, Clock::now()) - ms_heightfield_;
+    ms_erosion_ = run_->counts().erosions != eroded ? run_->ms_erosion() : 0.0;
+    ms_grow_ = Ms(t0, Clock::now()) - ms_heightfield_ - ms_erosion_;
     const auto t2 = Clock::now();
-    if (run_->counts().heightfields != built || !grown_) run_->FillSurfaceBuffers(&flat_);
+    // The surface changed when it was rebuilt or re-eroded (an erosion row's edit: only that).
+    if (run_->counts().heightfields != built || run_->counts().erosions != eroded || !grown_)
+      run_->FillSurfaceBuffers(&flat_);
     ms_buffers_ = Ms(t2, Clock::now());
     download_.clear();
     grown_ = true;
@@ -238,14 +241,16 @@ class TerrainLab {
   // ms* fields (timings are in timingsJson), or "{}".
   std::string statsJson() const { return grown_ ? run_->StatsJson() : "{}"; }
 
-  // {ms_grow, ms_heightfield, ms_buffers, ms_shrink, ms_mpd, ms_fd, ms_loops, grows,
-  // heightfields} of the last grow (the core's four of the grow its contours come from; grows and
-  // heightfields: how many the lab's run has done, so an edit that re-did less is seen).
+  // {ms_grow, ms_heightfield, ms_erosion, ms_buffers, ms_shrink, ms_mpd, ms_fd, ms_loops, grows,
+  // heightfields, erosions} of the last grow (the core's four of the grow its contours come from;
+  // grows, heightfields and erosions: how many the lab's run has done, so an edit that re-did less
+  // is seen; ms_erosion 0 when the last update did not erode).
   std::string timingsJson() const {
     const terrain::GrowCounts counts = grown_ ? run_->terrain().counts : terrain::GrowCounts{};
     ordered_json j;
     j["ms_grow"] = ms_grow_;
     j["ms_heightfield"] = ms_heightfield_;
+    j["ms_erosion"] = ms_erosion_;
     j["ms_buffers"] = ms_buffers_;
     j["ms_shrink"] = counts.ms_shrink;
     j["ms_mpd"] = counts.ms_mpd;
@@ -253,6 +258,7 @@ class TerrainLab {
     j["ms_loops"] = counts.ms_loops;
     j["grows"] = run_ ? run_->counts().grows : 0;
     j["heightfields"] = run_ ? run_->counts().heightfields : 0;
+    j["erosions"] = run_ ? run_->counts().erosions : 0;
     return JsonText(j);
   }
 
@@ -328,7 +334,7 @@ class TerrainLab {
  private:
   bool grown_ = false;
   std::optional<terrain::TerrainRun> run_;
-  double ms_grow_ = 0, ms_heightfield_ = 0, ms_buffers_ = 0;
+  double ms_grow_ = 0, ms_heightfield_ = 0, ms_erosion_ = 0, ms_buffers_ = 0;
   terrain::SurfaceBuffers flat_;  // core/terrain/terrain_surface.h: reused from grow to grow
   std::vector<unsigned char> download_;
 };

@@ -338,7 +338,7 @@ worker.on('terrainStats', (reply) => {
     status: 'ready', error: '', terrainSerial, levels: s.levels, contours: s.contours, peaks: s.peaks,
     stats: JSON.stringify(s), hash: msg.hash, truncatedBy: s.truncated_by || '', wallMs: msg.wallMs.toFixed(1), msGrow: msg.timings.ms_grow.toFixed(1),
     msHeightfield: msg.timings.ms_heightfield.toFixed(1), msBuffers: msg.timings.ms_buffers.toFixed(1), msStatsAfter: reply.statsMs.toFixed(1),
-    grows: msg.timings.grows, heightfields: msg.timings.heightfields,
+    grows: msg.timings.grows, heightfields: msg.timings.heightfields, erosions: msg.timings.erosions, msErosion: msg.timings.ms_erosion.toFixed(1),
     regrowParts: JSON.stringify(msg.parts || {}), gridSize: JSON.stringify({ width: msg.bounds.width, height: msg.bounds.height }),
   });
 });

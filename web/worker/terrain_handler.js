@@ -1,7 +1,8 @@
 // The terrain study's worker handler (paper 002, Misawa, Chiba, Saito): one TerrainLab
 // (web/bindings/terrain_bindings.cpp) per client holds the last mountain, in a core TerrainRun
 // that re-does only the stage of the rows an 'update' changed (tint: nothing; res: the heightfield
-// from the kept contours; a grow row or the seed: the grow). An 'update' grows the
+// from the kept contours; an erosion row: the erosion of the kept heightfield; a grow row or the
+// seed: the grow). An 'update' grows the
 // state (a built-in seed or a drawn contour, as JSON through core/terrain/terrain_state) and sends
 // the stats (the CLI's --stats minus its timings), the resolved state and hash, and the surface
 // (without its triangles: the page builds the grid's, web/terrain/grid_indices.js), contour and
