@@ -162,6 +162,11 @@ void TerrainRun::ErodeKept(const TerrainState& state) {
 Status TerrainRun::Advance(const run::Observer& observer) {
   if (redo_ == Redo::kNothing) return Status::Ok();
   if (redo_ == Redo::kErosion) {
+    // The kept surface's erosion again, refused before it starts when it cannot fit.
+    NIWA_RETURN_IF_ERROR(CheckEstimate(
+        EstimateErosion({static_cast<double>(hf_.width), static_cast<double>(hf_.height)},
+                        next_.params),
+        budget_, Change()));
     if (observer && !observer({"erosion", 0, 1})) return run::CancelledStatus();
     ErodeKept(next_);
     if (observer) observer({"erosion", 1, 1});
@@ -218,7 +223,8 @@ Status TerrainRun::Advance(const run::Observer& observer) {
     // The heightfield and the plan's outputs on top of the grown contours, refused before they
     // start.
     const GridSize grid = TerrainGridSize(t, params.GetInt(TerrainParam::kRes));
-    Estimate e = EstimateTerrainGrown(t, limits) + EstimateHeightfield(t, grid);
+    Estimate e = EstimateTerrainGrown(t, limits) + EstimateHeightfield(t, grid) +
+                 EstimateErosion(grid, params);
     for (TerrainOutput kind : plan_.outputs) e = e + EstimateTerrainOutput(t, grid, kind);
     checked_estimate_ = e;
     NIWA_RETURN_IF_ERROR(CheckEstimate(e, budget_, Change()));

@@ -194,6 +194,29 @@ TEST(TerrainRun, HashUnderThePrefixReadsBackTheState) {
 // Erosion rows (stage mesh, erosion.h): an edit re-erodes the kept uneroded heightfield, neither
 // regrowing nor rebuilding it; the result is a fresh run's; a view row does not re-erode; erosion
 // back to 0 gives the uneroded bytes; res rebuilds and re-erodes.
+TEST(TerrainRun, AnErosionThatCannotFitIsRefusedBeforeItStarts) {
+  // The erosion's passes are in the estimate (EstimateErosion): 1000 passes over a 512² grid are
+  // about 130 s, refused within 60 s, naming the limit and the erosion; without them it grows.
+  TerrainState state = State("lobes7", "improved", 2, 512);
+  ASSERT_TRUE(state.params.Set(TerrainParam::kErosion, 3).ok());
+  ASSERT_TRUE(state.params.Set(TerrainParam::kErosionIterations, 1000).ok());
+  Result<TerrainRun> run = TerrainRun::Start(state, Budget{});
+  Status status = run.ok() ? run->Advance({}) : run.status();
+  ASSERT_FALSE(status.ok());
+  EXPECT_EQ(status.field(), "max_seconds");
+  EXPECT_NE(status.message().find("the erosion (1,000 passes"), std::string::npos) << status.Line();
+  // A grown run asked to re-erode with them keeps its surface and refuses the same way.
+  TerrainState plain = state;
+  ASSERT_TRUE(plain.params.Set(TerrainParam::kErosion, 0).ok());
+  TerrainRun grown = Grown(plain);
+  const std::string glb = *grown.Export("glb");
+  ASSERT_TRUE(grown.Update(state).ok());
+  const Status again = grown.Advance({});
+  EXPECT_EQ(again.field(), "max_seconds") << again.Line();
+  EXPECT_EQ(grown.counts().erosions, 0);
+  EXPECT_EQ(*grown.Export("glb"), glb);
+}
+
 TEST(TerrainRun, ErosionRowsReErodeTheKeptSurface) {
   TerrainState state = State("lobes7", "improved", 2, 64);
   TerrainRun run = Grown(state);
