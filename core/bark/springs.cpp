@@ -197,8 +197,7 @@ NIWA_LANES_INLINE void SpringBatch(const SpringPass& p, const SpringLanes<V>& v,
   StoreLanes(p.gx[t] + n, f * nx);
   StoreLanes(p.gz[t] + n, f * nz);
   if (simd::AnyTrue(breaks)) {
-    RecordBreaks(p.limit2[t], p.broken + p.first[t], p.stride[t], n, simd::LaneBits(breaks),
-                 broke);
+    RecordBreaks(p.limit2[t], p.broken + p.first[t], p.stride[t], n, simd::LaneBits(breaks), broke);
   }
 }
 
