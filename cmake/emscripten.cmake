@@ -20,6 +20,14 @@ set(NIWA_THIRD_PARTY_INCLUDES ${NIWA_SYSINC})
 # results stay identical to the native build.
 add_compile_options(-fwasm-exceptions -msimd128)
 add_link_options(-fwasm-exceptions -sALLOW_MEMORY_GROWTH=1)
+# Binaryen's -O3 link inlines every function that has one caller, however large (its
+# --one-caller-inline-max-function-size defaults to unlimited). V8 (node 20, Chrome) runs a function in
+# its baseline compiler (Liftoff) until a later call finds it optimised: there is no on-stack
+# replacement for WASM, so a long loop inlined into a function called once never leaves Liftoff. The
+# bark model's Step, inlined into BarkRun::Advance, ran its whole node pass there (node --prof: 29 % of
+# the camphor 128x64 run in unoptimised code; 8.0 -> 3.1 ns a spring-step with this cap, 2026-12-06).
+# Functions of up to 200 expressions (binaryen's measure) with one caller are still inlined.
+add_link_options(-sBINARYEN_EXTRA_PASSES=--one-caller-inline-max-function-size=200)
 
 # Programs that run under node (CLI, tests, benchmarks): synchronous compile (gotcha 4) and the real
 # file system (gotcha 6).

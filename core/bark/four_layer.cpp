@@ -145,10 +145,11 @@ struct NodeLanes {
 };
 
 // The S→M1 bonds of nodes i + k snapped, k the bits of `bits` (rare: out of the loops' way).
-__attribute__((noinline)) void SnapBonds(const NodePass& p, int i, int bits, int* snapped) {
+// It takes S's bond flags, not the pass, so the pass's address does not escape the loops.
+__attribute__((noinline)) void SnapBonds(uint8_t* bonded, int i, int bits, int* snapped) {
   for (int q = 0; bits != 0; ++q, bits >>= 1) {
     if (!(bits & 1)) continue;
-    p.bonded[i + q] = 0;
+    bonded[i + q] = 0;
     ++*snapped;
   }
 }
@@ -202,14 +203,13 @@ NIWA_LANES_INLINE void NodeBatch(const NodePass& p, const NodeLanes<V>& c, int i
       fz[r] = z;
     }
   } else {
-    // At the seams each node's springs come in its own order: the sums one by one.
+    // At the seams each node's springs come in its own order: the sums one by one (into an array,
+    // not lane by lane into the vector: WASM would spill it for each lane).
     for (int r = 0; r < 3; ++r) {
-      for (int q = 0; q < W; ++q) {
-        float x, z;
-        NodeForceOf(p, r, i + q, &x, &z);
-        fx[r][q] = x;
-        fz[r][q] = z;
-      }
+      float x[W], z[W];
+      for (int q = 0; q < W; ++q) NodeForceOf(p, r, i + q, &x[q], &z[q]);
+      fx[r] = LoadLanes<V>(x);
+      fz[r] = LoadLanes<V>(z);
     }
   }
   const V sux = LoadLanes<V>(p.ux[kS] + i), suz = LoadLanes<V>(p.uz[kS] + i),
@@ -224,7 +224,7 @@ NIWA_LANES_INLINE void NodeBatch(const NodePass& p, const NodeLanes<V>& c, int i
   const V slip_z = (suz - auz) - LoadLanes<V>(p.bond_z[0] + i);
   const I snaps = bonded & (slip_x * slip_x + slip_z * slip_z > LoadLanes<V>(p.shear_limit2 + i));
   const I holds = bonded & ~snaps;
-  if (simd::AnyTrue(snaps)) SnapBonds(p, i, simd::LaneBits(snaps), snapped);
+  if (simd::AnyTrue(snaps)) SnapBonds(p.bonded, i, simd::LaneBits(snaps), snapped);
   const V sx = simd::Select(holds, c.ks0 * slip_x + c.cs0 * (swx - awx), c.zero);
   const V sz = simd::Select(holds, c.ks0 * slip_z + c.cs0 * (swz - awz), c.zero);
   const V px = c.ks1 * ((aux - bux) - LoadLanes<V>(p.bond_x[1] + i)) + c.cs1 * (awx - bwx);

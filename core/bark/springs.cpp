@@ -106,11 +106,17 @@ NIWA_LANES_INLINE void RecordBreak(const SpringPass& p, int t, int n, int* broke
   p.broken[p.first[t] + p.stride[t] * n] = 1;
   ++*broke;
 }
-// Springs n + k of sub-family t broke for the bits k of `bits` (rare: out of the loops' way).
-__attribute__((noinline)) void RecordBreaks(const SpringPass& p, int t, int n, int bits,
-                                            int* broke) {
-  for (int q = 0; bits != 0; ++q, bits >>= 1)
-    if (bits & 1) RecordBreak(p, t, n + q, broke);
+// Springs n + k of sub-family t broke for the bits k of `bits` (rare: out of the loops' way). It
+// takes the sub-family's arrays, not the pass, so the pass's address does not escape the loops
+// (clang keeps it in registers then, not in WASM's stack memory reloaded every batch).
+__attribute__((noinline)) void RecordBreaks(float* limit2, uint8_t* broken, int stride, int n,
+                                            int bits, int* broke) {
+  for (int q = 0; bits != 0; ++q, bits >>= 1) {
+    if (!(bits & 1)) continue;
+    limit2[n + q] = kNever;
+    broken[stride * (n + q)] = 1;
+    ++*broke;
+  }
 }
 
 using simd::LoadLanes;
@@ -157,7 +163,6 @@ NIWA_LANES_INLINE NodeState<V> LoadState(const SpringPass& p, int n) {
 template <class V, class I>
 NIWA_LANES_INLINE void SpringBatch(const SpringPass& p, const SpringLanes<V>& v, int t, int n,
                                    bool run, const NodeState<V>& a, int* broke) {
-  constexpr int W = sizeof(V) / sizeof(float);  // lanes
   const V limit2 = LoadLanes<V>(p.limit2[t] + n);
   const I intact = limit2 != v.never;
   if (!simd::AnyTrue(intact)) {
@@ -173,13 +178,11 @@ NIWA_LANES_INLINE void SpringBatch(const SpringPass& p, const SpringLanes<V>& v,
     bwx = LoadLanes<V>(p.wx + b);
     bwz = LoadLanes<V>(p.wz + b);
   } else {
-    for (int q = 0; q < W; ++q) {
-      const int b = p.b[t][n + q];
-      bux[q] = p.ux[b];
-      buz[q] = p.uz[b];
-      bwx[q] = p.wx[b];
-      bwz[q] = p.wz[b];
-    }
+    const int32_t* b = p.b[t] + n;
+    bux = simd::GatherLanes<V>(p.ux, b);
+    buz = simd::GatherLanes<V>(p.uz, b);
+    bwx = simd::GatherLanes<V>(p.wx, b);
+    bwz = simd::GatherLanes<V>(p.wz, b);
   }
   const V dx = v.dx0[t] + (bux - a.ux);
   const V dz = v.dz0[t] + (buz - a.uz);
@@ -193,7 +196,9 @@ NIWA_LANES_INLINE void SpringBatch(const SpringPass& p, const SpringLanes<V>& v,
   const V f = alive * (v.k[t] * (l - v.l0[t]) + v.c[t] * rel);
   StoreLanes(p.gx[t] + n, f * nx);
   StoreLanes(p.gz[t] + n, f * nz);
-  if (simd::AnyTrue(breaks)) RecordBreaks(p, t, n, simd::LaneBits(breaks), broke);
+  if (simd::AnyTrue(breaks)) {
+    RecordBreaks(p.limit2[t], p.broken + p.first[t], p.stride[t], n, simd::LaneBits(breaks), broke);
+  }
 }
 
 // Spring n of sub-family t alone (the tail of fewer than four), with SpringBatch's operations.
@@ -319,9 +324,9 @@ int Step(const Lattice& L, const Mechanics& mech, const Growth& g, Surface* s) {
   const float c[2] = {static_cast<float>(mech.c[0]), static_cast<float>(mech.c[1])};
   const float rest[2] = {l0, l0};
   const int broke = SpringSlotForces(L, k, c, rest, g, s);
-  // Nodes: the springs' forces, the shear spring and dashpot to the anchor, then symplectic Euler
-  // (four nodes a batch where their springs lie in runs, lane by lane as one by one; the rest, at
-  // the seams where a node's springs come in another order, one by one).
+  // Nodes: the springs' forces, the shear spring and dashpot to the anchor, then symplectic Euler,
+  // four nodes a batch (their sums as lanes where their springs lie in runs, else node by node;
+  // the rest of the arithmetic lane by lane as one by one), a tail of fewer than four one by one.
   const float dt = static_cast<float>(mech.dt);
   const float inv_m = static_cast<float>(1.0 / mech.mass);
   const float ks = static_cast<float>(mech.k_s), cs = static_cast<float>(mech.c_s);
@@ -334,27 +339,34 @@ int Step(const Lattice& L, const Mechanics& mech, const Growth& g, Surface* s) {
   const Float4 vdt = simd::Splat4(dt), vinv = simd::Splat4(inv_m), vks = simd::Splat4(ks),
                vcs = simd::Splat4(cs);
   int i = 0;
-  while (i < n) {
-    if (i + 4 <= n && L.node_run4[i]) {
-      Float4 fx, fz, x, z, vx, vz;
+  for (; i + 4 <= n; i += 4) {
+    Float4 fx, fz, x, z, vx, vz;
+    if (L.node_run4[i]) {
       NodeForce4(L, *s, i, &fx, &fz);
-      std::memcpy(&x, ux + i, sizeof x);
-      std::memcpy(&z, uz + i, sizeof z);
-      std::memcpy(&vx, wx + i, sizeof vx);
-      std::memcpy(&vz, wz + i, sizeof vz);
-      const Float4 ax = (fx - vks * x - vcs * vx) * vinv;
-      const Float4 az = (fz - vks * z - vcs * vz) * vinv;
-      vx += vdt * ax;
-      vz += vdt * az;
-      x += vdt * vx;
-      z += vdt * vz;
-      std::memcpy(ux + i, &x, sizeof x);
-      std::memcpy(uz + i, &z, sizeof z);
-      std::memcpy(wx + i, &vx, sizeof vx);
-      std::memcpy(wz + i, &vz, sizeof vz);
-      i += 4;
-      continue;
+    } else {
+      // At the seams each node's springs come in its own order: the sums one by one (into an
+      // array, not lane by lane into the vector: WASM would spill it for each lane).
+      float sx[4], sz[4];
+      for (int q = 0; q < 4; ++q) NodeForce(L, *s, i + q, &sx[q], &sz[q]);
+      fx = simd::LoadFloat4(sx);
+      fz = simd::LoadFloat4(sz);
     }
+    std::memcpy(&x, ux + i, sizeof x);
+    std::memcpy(&z, uz + i, sizeof z);
+    std::memcpy(&vx, wx + i, sizeof vx);
+    std::memcpy(&vz, wz + i, sizeof vz);
+    const Float4 ax = (fx - vks * x - vcs * vx) * vinv;
+    const Float4 az = (fz - vks * z - vcs * vz) * vinv;
+    vx += vdt * ax;
+    vz += vdt * az;
+    x += vdt * vx;
+    z += vdt * vz;
+    std::memcpy(ux + i, &x, sizeof x);
+    std::memcpy(uz + i, &z, sizeof z);
+    std::memcpy(wx + i, &vx, sizeof vx);
+    std::memcpy(wz + i, &vz, sizeof vz);
+  }
+  for (; i < n; ++i) {
     float fx, fz;
     NodeForce(L, *s, i, &fx, &fz);
     const float ax = (fx - ks * ux[i] - cs * wx[i]) * inv_m;
@@ -363,7 +375,6 @@ int Step(const Lattice& L, const Mechanics& mech, const Growth& g, Surface* s) {
     wz[i] += dt * az;
     ux[i] += dt * wx[i];
     uz[i] += dt * wz[i];
-    ++i;
   }
   return broke;
 }

@@ -48,8 +48,8 @@ NIWA_LANES_INLINE int LaneBits(const Int8& mask) {
   return LaneBits(Low(mask)) | (LaneBits(High(mask)) << 4);
 }
 
-// Four- or eight-lane code written once (V = Float4 or Float8, I its mask type): a load and a
-// store of W floats, a constant in every lane, and the mask "byte != 0" of W bytes.
+// Four- or eight-lane code written once (V = Float4 or Float8, I its mask type): a load, a gather
+// and a store of W floats, a constant in every lane, and the mask "byte != 0" of W bytes.
 template <class V>
 NIWA_LANES_INLINE V LoadLanes(const float* p) {
   V v;
@@ -59,6 +59,17 @@ NIWA_LANES_INLINE V LoadLanes(const float* p) {
 template <class V>
 NIWA_LANES_INLINE void StoreLanes(float* p, const V& v) {
   __builtin_memcpy(p, &v, sizeof v);
+}
+// W floats from base[idx[0]], .., base[idx[W − 1]], each lane named (a lane loop with a variable
+// index makes clang's WASM spill the vector to the stack and store lane by lane).
+template <class V>
+NIWA_LANES_INLINE V GatherLanes(const float* base, const int32_t* idx) {
+  if constexpr (sizeof(V) == sizeof(Float4)) {
+    return V{base[idx[0]], base[idx[1]], base[idx[2]], base[idx[3]]};
+  } else {
+    return V{base[idx[0]], base[idx[1]], base[idx[2]], base[idx[3]],
+             base[idx[4]], base[idx[5]], base[idx[6]], base[idx[7]]};
+  }
 }
 template <class V>
 NIWA_LANES_INLINE V SplatLanes(float x) {
