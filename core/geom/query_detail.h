@@ -404,6 +404,27 @@ inline int WideRayKeysConservative(const BvhWideNode& n, const FloatSlabRay& r, 
   return kept;
 }
 
+// WideRayKeysConservative from a node's decoded boxes (Bvh::wide_boxes(): the floats its decode
+// gives, stored), so the same lanes, keys and kept bits, without the bytes' decode at each visit.
+inline int WideRayKeysConservativeDecoded(const BvhWideBoxes& b, const FloatSlabRay& r,
+                                          double t_max, double keys[4]) {
+  using simd::Float4;
+  Float4 lo = simd::Splat4(0.0f);
+  Float4 hi = simd::Splat4(FloatAtLeast(t_max));
+  for (int a = 0; a < 3; ++a) {
+    const Float4 t_lo = (simd::LoadFloat4(b.lo[a]) - r.origin[a]) * r.inv[a];
+    const Float4 t_hi = (simd::LoadFloat4(b.hi[a]) - r.origin[a]) * r.inv[a];
+    lo = simd::MaxNoNaN(lo, simd::MinNoNaN(t_lo, t_hi));
+    hi = simd::MinNoNaN(hi, simd::MaxNoNaN(t_lo, t_hi));
+  }
+  const Float4 tiny = simd::Splat4(0x1p-120f);
+  lo = lo * simd::Splat4(1.0f - 0x1p-20f) - tiny;
+  hi = hi * simd::Splat4(1.0f + 0x1p-20f) + tiny;
+  const int kept = simd::LaneBits(lo <= hi);
+  for (int k = 0; k < 4; ++k) keys[k] = static_cast<double>(lo[k]);
+  return kept;
+}
+
 // The nearest-first depth-first walk that ClosestPoint and FirstHit share. From the root (pushed
 // with root_key), it pops an entry, skips it when its key is beyond query.Bound() (the best got
 // closer since it was pushed; ties kept), tests a leaf's triangles with
