@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <glm/vec3.hpp>
 #include <limits>
 #include <utility>
@@ -425,6 +426,26 @@ inline int WideRayKeysConservativeDecoded(const BvhWideBoxes& b, const FloatSlab
   return kept;
 }
 
+// A wide node's used slots (they fill from 0; an unused one's count is kEmpty, 0xff), without a
+// loop: the lowest byte of ~count that is zero, by the has-zero-byte trick (exact for the lowest
+// zero byte, the only one read), else 4.
+inline int UsedSlots(const BvhWideNode& n) {
+  uint32_t c;
+  std::memcpy(&c, n.count, sizeof c);
+  const uint32_t x = ~c;  // byte k: 0 where slot k is unused
+  const uint32_t zero = (x - 0x01010101u) & ~x & 0x80808080u;
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+  return zero == 0 ? 4 : __builtin_ctz(zero) >> 3;
+#else
+  int slots = 0;
+  while (slots < 4 && n.count[slots] != BvhWideNode::kEmpty) ++slots;
+  return slots;
+#endif
+}
+
+// The index of the lowest set bit of bits (bits != 0).
+inline int LowestBit(unsigned bits) { return __builtin_ctz(bits); }
+
 // The nearest-first depth-first walk that ClosestPoint and FirstHit share. From the root (pushed
 // with root_key), it pops an entry, skips it when its key is beyond query.Bound() (the best got
 // closer since it was pushed; ties kept), tests a leaf's triangles with
@@ -454,13 +475,15 @@ void NearestFirstWalk(const Bvh& bvh, double root_key, Query& query, uint64_t* v
     const BvhWideNode& n = wide[e.index];
     WideEntry kids[4];
     int k = 0;
-    int slots = 0;
-    while (slots < 4 && n.count[slots] != BvhWideNode::kEmpty) ++slots;
+    const int slots = UsedSlots(n);
     *visited += static_cast<uint64_t>(slots);
     double keys[4];
-    const int kept = query.Keys(n, slots, keys);
-    for (int i = 0; i < slots; ++i)
-      if (kept & (1 << i)) kids[k++] = {n.child[i], n.count[i], keys[i]};
+    // The kept used slots, lowest first (as a loop over the slots would take them).
+    for (unsigned bits = static_cast<unsigned>(query.Keys(n, slots, keys)) & ((1u << slots) - 1u);
+         bits != 0; bits &= bits - 1) {
+      const int i = LowestBit(bits);
+      kids[k++] = {n.child[i], n.count[i], keys[i]};
+    }
     SortDescending(kids, k);
     for (int i = 0; i < k; ++i) {
       Prefetch(kids[i], wide, corners);
