@@ -330,7 +330,9 @@ inline int WideRayKeys(const BvhWideNode& n, const PreparedRay& r, double t_max,
 // for the wide boxes, which lie within a few of their parent's extents of the root box, times 2^40)
 // and none underflows (|inverse| >= 1 for a unit direction).
 struct FloatSlabRay {
-  simd::Float4 origin[3] = {}, inv[3] = {};  // each in all four lanes
+  // Each in all four lanes; set only when usable (not zeroed first: FirstHit builds one a ray,
+  // and the zeroing was a 112-byte store per ray).
+  simd::Float4 origin[3], inv[3];
   bool usable = false;
 };
 
