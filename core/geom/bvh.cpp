@@ -381,6 +381,20 @@ void Bvh::BuildWide() {
   wide_depth_ = widener.max_depth;
 }
 
+void Bvh::DecodeWideBoxes() {
+  wide_boxes_.resize(wide_.size());
+  for (std::size_t w = 0; w < wide_.size(); ++w) {
+    const BvhWideNode& n = wide_[w];
+    for (int a = 0; a < 3; ++a) {
+      const float step = BvhWideNode::Step(n.exponent[a]);
+      for (int k = 0; k < 4; ++k) {  // ChildBounds' expression, so its floats
+        wide_boxes_[w].lo[a][k] = BvhWideNode::Decode(n.origin[a], n.lo[a][k], step);
+        wide_boxes_[w].hi[a][k] = BvhWideNode::Decode(n.origin[a], n.hi[a][k], step);
+      }
+    }
+  }
+}
+
 Bvh Bvh::Build(const TriMesh& mesh, const BvhOptions& options_in) {
   BvhOptions options = options_in;
   options.bins = std::clamp(options.bins, 2, kMaxBins);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <glm/vec3.hpp>
 #include <limits>
 #include <utility>
@@ -329,7 +330,9 @@ inline int WideRayKeys(const BvhWideNode& n, const PreparedRay& r, double t_max,
 // for the wide boxes, which lie within a few of their parent's extents of the root box, times 2^40)
 // and none underflows (|inverse| >= 1 for a unit direction).
 struct FloatSlabRay {
-  simd::Float4 origin[3] = {}, inv[3] = {};  // each in all four lanes
+  // Each in all four lanes; set only when usable (not zeroed first: FirstHit builds one a ray,
+  // and the zeroing was a 112-byte store per ray).
+  simd::Float4 origin[3], inv[3];
   bool usable = false;
 };
 
@@ -404,6 +407,47 @@ inline int WideRayKeysConservative(const BvhWideNode& n, const FloatSlabRay& r, 
   return kept;
 }
 
+// WideRayKeysConservative from a node's decoded boxes (Bvh::wide_boxes(): the floats its decode
+// gives, stored), so the same lanes, keys and kept bits, without the bytes' decode at each visit.
+inline int WideRayKeysConservativeDecoded(const BvhWideBoxes& b, const FloatSlabRay& r,
+                                          double t_max, double keys[4]) {
+  using simd::Float4;
+  Float4 lo = simd::Splat4(0.0f);
+  Float4 hi = simd::Splat4(FloatAtLeast(t_max));
+  for (int a = 0; a < 3; ++a) {
+    const Float4 t_lo = (simd::LoadFloat4(b.lo[a]) - r.origin[a]) * r.inv[a];
+    const Float4 t_hi = (simd::LoadFloat4(b.hi[a]) - r.origin[a]) * r.inv[a];
+    lo = simd::MaxNoNaN(lo, simd::MinNoNaN(t_lo, t_hi));
+    hi = simd::MinNoNaN(hi, simd::MaxNoNaN(t_lo, t_hi));
+  }
+  const Float4 tiny = simd::Splat4(0x1p-120f);
+  lo = lo * simd::Splat4(1.0f - 0x1p-20f) - tiny;
+  hi = hi * simd::Splat4(1.0f + 0x1p-20f) + tiny;
+  const int kept = simd::LaneBits(lo <= hi);
+  for (int k = 0; k < 4; ++k) keys[k] = static_cast<double>(lo[k]);
+  return kept;
+}
+
+// A wide node's used slots (they fill from 0; an unused one's count is kEmpty, 0xff), without a
+// loop: the lowest byte of ~count that is zero, by the has-zero-byte trick (exact for the lowest
+// zero byte, the only one read), else 4.
+inline int UsedSlots(const BvhWideNode& n) {
+  uint32_t c;
+  std::memcpy(&c, n.count, sizeof c);
+  const uint32_t x = ~c;  // byte k: 0 where slot k is unused
+  const uint32_t zero = (x - 0x01010101u) & ~x & 0x80808080u;
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+  return zero == 0 ? 4 : __builtin_ctz(zero) >> 3;
+#else
+  int slots = 0;
+  while (slots < 4 && n.count[slots] != BvhWideNode::kEmpty) ++slots;
+  return slots;
+#endif
+}
+
+// The index of the lowest set bit of bits (bits != 0).
+inline int LowestBit(unsigned bits) { return __builtin_ctz(bits); }
+
 // The nearest-first depth-first walk that ClosestPoint and FirstHit share. From the root (pushed
 // with root_key), it pops an entry, skips it when its key is beyond query.Bound() (the best got
 // closer since it was pushed; ties kept), tests a leaf's triangles with
@@ -433,13 +477,15 @@ void NearestFirstWalk(const Bvh& bvh, double root_key, Query& query, uint64_t* v
     const BvhWideNode& n = wide[e.index];
     WideEntry kids[4];
     int k = 0;
-    int slots = 0;
-    while (slots < 4 && n.count[slots] != BvhWideNode::kEmpty) ++slots;
+    const int slots = UsedSlots(n);
     *visited += static_cast<uint64_t>(slots);
     double keys[4];
-    const int kept = query.Keys(n, slots, keys);
-    for (int i = 0; i < slots; ++i)
-      if (kept & (1 << i)) kids[k++] = {n.child[i], n.count[i], keys[i]};
+    // The kept used slots, lowest first (as a loop over the slots would take them).
+    for (unsigned bits = static_cast<unsigned>(query.Keys(n, slots, keys)) & ((1u << slots) - 1u);
+         bits != 0; bits &= bits - 1) {
+      const int i = LowestBit(bits);
+      kids[k++] = {n.child[i], n.count[i], keys[i]};
+    }
     SortDescending(kids, k);
     for (int i = 0; i < k; ++i) {
       Prefetch(kids[i], wide, corners);

@@ -2,7 +2,8 @@
 // slab-tested from the node, nearer entry first; a box entered beyond the best hit so far is
 // skipped (ties kept for the lowest triangle index). FirstHit's oblique rays key the boxes in
 // float lanes with outward margins (WideRayKeysConservative: more boxes kept, never fewer, so the
-// same hit); other rays and SegmentHits use the exact double slab test.
+// same hit; from Bvh::wide_boxes() when the tree has them decoded, the same keys without the
+// bytes' decode); other rays and SegmentHits use the exact double slab test.
 #include "geom/ray_cast.h"
 
 #include "geom/query_detail.h"
@@ -19,9 +20,16 @@ struct FirstHitQuery {
   detail::RayState state;
   detail::PreparedRay ray;
   detail::FloatSlabRay float_ray;
+  const BvhWideNode* wide;    // bvh.wide_nodes()
+  const BvhWideBoxes* boxes;  // bvh.wide_boxes(), or null when not decoded
   double Bound() const { return state.best_t; }
   int Keys(const BvhWideNode& n, int /*slots*/, double keys[4]) const {
-    if (float_ray.usable) return detail::WideRayKeysConservative(n, float_ray, state.best_t, keys);
+    if (float_ray.usable) {
+      if (boxes != nullptr)
+        return detail::WideRayKeysConservativeDecoded(boxes[&n - wide], float_ray, state.best_t,
+                                                      keys);
+      return detail::WideRayKeysConservative(n, float_ray, state.best_t, keys);
+    }
     return detail::WideRayKeys(n, ray, state.best_t, keys);
   }
   void Test(const glm::vec3* abc, uint32_t t) { state.Test(abc, ray, t); }
@@ -35,7 +43,9 @@ RayHit FirstHitOf(const TriMesh& mesh, const Bvh& bvh, glm::vec3 origin, glm::ve
   const detail::PreparedRay ray = detail::PrepareRay(origin, dir, /*normalize=*/true);
   if (!ray.valid) return {};
   FirstHitQuery query{detail::RayState(static_cast<double>(max_distance)), ray,
-                      detail::PrepareFloatSlabRay(ray, origin, bvh.nodes()[0].bounds)};
+                      detail::PrepareFloatSlabRay(ray, origin, bvh.nodes()[0].bounds),
+                      bvh.wide_nodes().data(),
+                      bvh.wide_boxes().empty() ? nullptr : bvh.wide_boxes().data()};
   uint64_t visited = 1, tested = 0;
   double t0;
   if (detail::RayBox(bvh.nodes()[0].bounds, query.ray, query.state.best_t, &t0))

@@ -124,13 +124,18 @@ double SeedWindowScore(double L, SeedKind kind, const LifeRules& rules) {
 
 SeedFate SeedDay(double G, double L, SeedKind kind, double tau_b, bool at_cap,
                  const LifeRules& rules) {
-  if (GerminationScore(G, L, kind, rules) > tau_b) {  // moss eq. 3.24
+  return SeedDayOfScore(G, SeedWindowScore(L, kind, rules), L, kind, tau_b, at_cap, rules);
+}
+
+SeedFate SeedDayOfScore(double G, double g, double L, SeedKind kind, double tau_b, bool at_cap,
+                        const LifeRules& rules) {
+  if (G * g > tau_b) {  // moss eq. 3.24 (GerminationScore: G·g)
     return at_cap ? SeedFate::kWaits : SeedFate::kGerminates;
   }
   // Past the window's centre g(L) only falls, and G ≤ 1: once g(L) ≤ τ_b the seed never will.
   const double L_0 = kind == SeedKind::kSpore ? rules.L_spore_0 : rules.L_gemma_0;
   const double L_1 = kind == SeedKind::kSpore ? rules.L_spore_1 : rules.L_gemma_1;
-  if (L > (L_0 + L_1) / 2.0 && RangeScore(L, L_0, L_1) <= tau_b) return SeedFate::kExpires;
+  if (L > (L_0 + L_1) / 2.0 && g <= tau_b) return SeedFate::kExpires;
   return SeedFate::kWaits;
 }
 

@@ -95,6 +95,10 @@ SeedFate SeedDay(double G, double L, SeedKind kind, double tau_b, bool at_cap,
 // no G in [0, 1] (FitnessOf's range) can make G·g exceed τ_b (G·g ≤ g, rounding kept), so SeedDay
 // gives the fate of G = 0 for every G: the run then skips the seed's gather and fitness.
 double SeedWindowScore(double L, SeedKind kind, const LifeRules& rules);
+// SeedDay with the window's score g = SeedWindowScore(L, kind, rules) given (the run looks it up
+// by the seed's age and kind, once a run): the same fate, G·g and g ≤ τ_b as SeedDay works out.
+SeedFate SeedDayOfScore(double G, double g, double L, SeedKind kind, double tau_b, bool at_cap,
+                        const LifeRules& rules);
 
 // ---- seeds among mosses (§3.3, §3.6; spec §1.5.6-1.5.7)
 

@@ -317,6 +317,14 @@ void MossRun::AddSeed(const glm::dvec3& start, Species species, SeedKind kind,
   w.seeds.push_back(seed);
 }
 
+double MossRun::WindowScore(int age, SeedKind kind) {
+  std::vector<double>& table = window_score_[static_cast<int>(kind)];
+  const std::size_t i = static_cast<std::size_t>(age);
+  if (i >= table.size()) table.resize(i + 1, std::numeric_limits<double>::quiet_NaN());
+  if (std::isnan(table[i])) table[i] = SeedWindowScore(static_cast<double>(age), kind, rules_);
+  return table[i];
+}
+
 void MossRun::Day() {
   MossWorld& w = world_;
   const MossParams& p = state_.params;
@@ -452,12 +460,14 @@ void MossRun::Day() {
     // Outside its window (g(L) <= τ_b) a seed's fate is that of G = 0 for every G in [0, 1]
     // (SeedWindowScore): its light and fitness are not needed.
     double G = 0.0;
-    if (SeedWindowScore(L, seed.kind, rules_) > species.tau_b) {
+    const double g_window = WindowScore(day - seed.birth_day, seed.kind);
+    if (g_window > species.tau_b) {
       const double S_seed = gather->Moss(seed.pos, seed.normal);
       G = fitness_memo_.G(seed.species, species, w.T_s[seed.cell], w.rh_s[seed.cell], S_seed,
                           g_form);
     }
-    const SeedFate fate = SeedDay(G, L, seed.kind, species.tau_b, living >= max_mosses, rules_);
+    const SeedFate fate =
+        SeedDayOfScore(G, g_window, L, seed.kind, species.tau_b, living >= max_mosses, rules_);
     if (fate == SeedFate::kWaits) {
       waiting.push_back(seed);
       continue;

@@ -182,7 +182,8 @@ class MossRun : public run::StudyRun {
   // The world's breakdown now: {mosses, seeds, births, deaths, photons (the day's), soil (the
   // day's means per geology)}, as StatsJson prints them for the last day.
   nlohmann::ordered_json Breakdown() const;
-  void Day();  // one day, world_.day + 1
+  void Day();                                  // one day, world_.day + 1
+  double WindowScore(int age, SeedKind kind);  // SeedWindowScore(age, kind, rules_), cached
   // Where a seed starting at `start` comes to rest (spec §1.5.6); false with the loss otherwise.
   // `centres` are the mosses a seed may rest on (those inside a mat), owner[k] their index.
   // `mats`, when given, holds those centres in buckets (life_cycle.h MatBuckets): the same
@@ -219,6 +220,9 @@ class MossRun : public run::StudyRun {
   Weather soil_memo_weather_{};
   // The fitness factors by their inputs' bits (fitness.h FitnessMemo; a cache, like soil_memo_).
   FitnessMemo fitness_memo_;
+  // SeedWindowScore by kind and whole age in days (L = day − birth day), filled as ages come (a
+  // cache of the same bits; NaN: not yet worked out).
+  std::array<std::vector<double>, 2> window_score_;
   // Built once (the cells do not move): each day's photons and mosses are spread onto the cells
   // near them, work in photons and mosses rather than a query per cell (spec §4.6, eq 3.5): the
   // photons through each cell's candidate lists (photons.h), the mosses through the centroids in

@@ -162,6 +162,8 @@ void MossOccluders::Build(const std::vector<glm::dvec3>& centres, double radius)
           }
     }
   }
+  occupied_.resize(n_cells);
+  for (std::size_t k = 0; k < n_cells; ++k) occupied_[k] = start_[k] != start_[k + 1] ? 1 : 0;
 }
 
 bool MossOccluders::FirstHitLinear(const glm::dvec3& origin, const glm::dvec3& dir, double max_t,
@@ -217,28 +219,37 @@ bool MossOccluders::FirstHit(const glm::dvec3& origin, const glm::dvec3& dir, do
       delta[a] = std::numeric_limits<double>::infinity();
     }
   }
+  // The walk's cell index, stepped with the cell (the same cells as cell[]).
+  const std::ptrdiff_t stride[3] = {1, dims_[0], static_cast<std::ptrdiff_t>(dims_[0]) * dims_[1]};
+  std::ptrdiff_t k =
+      (static_cast<std::ptrdiff_t>(cell[2]) * dims_[1] + cell[1]) * dims_[0] + cell[0];
+  const uint8_t* occupied = occupied_.data();
   for (;;) {
-    const double exit = std::min(std::min(next[0], next[1]), std::min(next[2], t1));
-    const std::size_t k =
-        (static_cast<std::size_t>(cell[2]) * dims_[1] + cell[1]) * dims_[0] + cell[0];
-    bool found = false;
-    double best = exit;
-    for (uint32_t j = start_[k]; j < start_[k + 1]; ++j) {
-      const uint32_t s = items_[j];
-      double ts;
-      if (EnterSphere(origin, dir, centres_[s], radius_, &ts) && ts <= best &&
-          (!found || ts < best || (ts == best && s < *index))) {
-        best = ts, *index = s, found = true;
+    // The axis whose cell side comes first (the lowest next[], ties to the lower axis).
+    const int a = next[0] <= next[1] ? (next[0] <= next[2] ? 0 : 2) : (next[1] <= next[2] ? 1 : 2);
+    if (occupied[k] != 0) {
+      const double exit = std::min(std::min(next[0], next[1]), std::min(next[2], t1));
+      bool found = false;
+      double best = exit;
+      for (uint32_t j = start_[k]; j < start_[k + 1]; ++j) {
+        const uint32_t s = items_[j];
+        double ts;
+        if (EnterSphere(origin, dir, centres_[s], radius_, &ts) && ts <= best &&
+            (!found || ts < best || (ts == best && s < *index))) {
+          best = ts, *index = s, found = true;
+        }
+      }
+      if (found) {
+        *t = best;
+        return true;
       }
     }
-    if (found) {
-      *t = best;
-      return true;
-    }
-    if (exit >= t1) return false;
-    const int a = next[0] <= next[1] ? (next[0] <= next[2] ? 0 : 2) : (next[1] <= next[2] ? 1 : 2);
+    // An empty cell is passed by its exit alone: min(next[], t1) >= t1 is next[a] >= t1 (no
+    // NaN here: t1 is finite, next[] finite or +inf), the occupied cells' test above.
+    if (next[a] >= t1) return false;
     cell[a] += step[a];
     if (cell[a] < 0 || cell[a] >= dims_[a]) return false;
+    k += step[a] * stride[a];
     next[a] += delta[a];
   }
 }

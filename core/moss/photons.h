@@ -61,6 +61,9 @@ class MossOccluders {
   double cell_ = 1;
   int dims_[3] = {0, 0, 0};
   std::vector<uint32_t> start_, items_;
+  // 1 where a cell lists a sphere: FirstHit's walk passes the empty ones (most of a ray's cells)
+  // with one byte read and its step, without their exit or list.
+  std::vector<uint8_t> occupied_;
 };
 
 // One stored photon: where it hit, the normal of the side it hit, its power, its bounce depth

@@ -299,6 +299,7 @@ Result<SoilCells> MakeSoilCells(const MossScene& scene, const SoilCellOptions& o
   cells.centre = 0.5 * (lo + hi);
   cells.radius = 0.5 * glm::length(hi - lo);
   cells.bvh = geom::Bvh::Build(cells.mesh);
+  cells.bvh.DecodeWideBoxes();  // the photons' ray casts key children from them (96 B a node)
 
   // Soil depth (spec §1.2): a ray from 1e-4 m inside the face along −y (upward faces) or +y
   // (downward faces) to the first hit; none: open ground, h_max; near-vertical: h_wall.

@@ -216,6 +216,71 @@ TEST(RayCast, ConservativeFloatKeysKeepEveryExactChild) {
   EXPECT_GT(lower, kept / 2);  // the keys are lowered, not copied
 }
 
+// The decoded boxes (Bvh::DecodeWideBoxes) are ChildBounds' floats, and the keys from them are
+// WideRayKeysConservative's bits (kept bits and keys), so FirstHit walks the same nodes with or
+// without them: the same visit counts, hit, triangle and distance bits, on every oracle mesh.
+TEST(RayCast, DecodedWideBoxesGiveTheBytesKeys) {
+  Pcg32 rng(79, 5);
+  int64_t nodes = 0, hits = 0;
+  for (const test::OracleCase& c : test::OracleMeshes()) {
+    const Bvh plain = Bvh::Build(c.mesh);
+    Bvh decoded = Bvh::Build(c.mesh);
+    decoded.DecodeWideBoxes();
+    const std::vector<BvhWideNode>& wide = decoded.wide_nodes();
+    ASSERT_EQ(decoded.wide_boxes().size(), wide.size()) << c.name;
+    EXPECT_TRUE(plain.wide_boxes().empty());
+    for (std::size_t w = 0; w < wide.size(); ++w)
+      for (int k = 0; k < 4; ++k) {
+        const Bounds3 b = wide[w].ChildBounds(k);
+        for (int a = 0; a < 3; ++a) {
+          ASSERT_EQ(std::memcmp(&decoded.wide_boxes()[w].lo[a][k], &b.min[a], 4), 0) << c.name;
+          ASSERT_EQ(std::memcmp(&decoded.wide_boxes()[w].hi[a][k], &b.max[a], 4), 0) << c.name;
+        }
+      }
+    if (wide.empty()) continue;
+    const Bounds3 box = decoded.nodes()[0].bounds;
+    for (int i = 0; i < 2000; ++i) {
+      const glm::vec3 o =
+          test::RandomPoint(rng, Bounds3{box.min - glm::vec3(1), box.max + glm::vec3(1)});
+      const glm::vec3 d = test::RandomDirection(rng);
+      const detail::PreparedRay ray = detail::PrepareRay(o, d, /*normalize=*/true);
+      const detail::FloatSlabRay float_ray = detail::PrepareFloatSlabRay(ray, o, box);
+      const double t_max = i % 2 ? std::numeric_limits<double>::infinity() : 4.0 * rng.Uniform();
+      if (float_ray.usable) {
+        const std::size_t w = rng.NextU32() % wide.size();
+        double from_bytes[4], from_boxes[4];
+        const int a = detail::WideRayKeysConservative(wide[w], float_ray, t_max, from_bytes);
+        const int b = detail::WideRayKeysConservativeDecoded(decoded.wide_boxes()[w], float_ray,
+                                                             t_max, from_boxes);
+        ASSERT_EQ(a, b) << c.name;
+        for (int k = 0; k < 4; ++k) {
+          if (a & (1 << k)) {
+            ASSERT_EQ(std::memcmp(&from_bytes[k], &from_boxes[k], 8), 0) << c.name;
+          }
+        }
+        ++nodes;
+      }
+      QueryStats sp, sd;
+      const RayHit hp = FirstHitWithoutNormal(c.mesh, plain, o, d, static_cast<float>(t_max), &sp);
+      const RayHit hd =
+          FirstHitWithoutNormal(c.mesh, decoded, o, d, static_cast<float>(t_max), &sd);
+      const RayHit l = FirstHitLinear(c.mesh, o, d, static_cast<float>(t_max));
+      ASSERT_EQ(sp.nodes_visited, sd.nodes_visited) << c.name;
+      ASSERT_EQ(sp.triangles_tested, sd.triangles_tested) << c.name;
+      ASSERT_EQ(hd.hit, hp.hit) << c.name;
+      ASSERT_EQ(hd.hit, l.hit) << c.name;
+      if (hd.hit) {
+        ++hits;
+        EXPECT_EQ(hd.triangle, l.triangle) << c.name;
+        EXPECT_EQ(std::memcmp(&hd.distance, &l.distance, sizeof(float)), 0) << c.name;
+        EXPECT_EQ(std::memcmp(&hd.distance, &hp.distance, sizeof(float)), 0) << c.name;
+      }
+    }
+  }
+  EXPECT_GT(nodes, 10000);
+  EXPECT_GT(hits, 1000);
+}
+
 // A ray too large for float lanes (or with a zero direction component) keeps the exact test.
 TEST(RayCast, FloatSlabRayOnlyForObliqueTameRays) {
   const Bounds3 box{glm::vec3(-1), glm::vec3(1)};

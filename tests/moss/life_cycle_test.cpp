@@ -294,6 +294,38 @@ TEST(MossLifeCycle, ASeedOutsideItsWindowHasTheFateOfGZero) {
   EXPECT_GT(scored, 100);
 }
 
+// SeedDayOfScore (the run's form: the window's score looked up by age) is eq 3.24's fate from
+// GerminationScore, as SeedDay worked it out before: G·g is GerminationScore's bits, and the fate
+// is the same for every kind, age, G, τ_b and cap.
+TEST(MossLifeCycle, SeedDayOfScoreIsTheGerminationScoresFate) {
+  const LifeRules r = Rules();
+  int germinates = 0, expires = 0, waits = 0;
+  for (Species sp : {Species::kGingoke, Species::kHaigoke, Species::kSugigoke})
+    for (SeedKind kind : {SeedKind::kGemma, SeedKind::kSpore})
+      for (int L = 0; L <= 400; ++L)
+        for (double G : {0.0, 0.1, 0.45, 0.7, 0.999, 1.0})
+          for (bool at_cap : {false, true}) {
+            const double tau_b = TauB(sp);
+            const double g = SeedWindowScore(L, kind, r);
+            ASSERT_EQ(G * g, GerminationScore(G, L, kind, r));
+            const double L_0 = kind == SeedKind::kSpore ? r.L_spore_0 : r.L_gemma_0;
+            const double L_1 = kind == SeedKind::kSpore ? r.L_spore_1 : r.L_gemma_1;
+            SeedFate want = SeedFate::kWaits;
+            if (GerminationScore(G, L, kind, r) > tau_b)
+              want = at_cap ? SeedFate::kWaits : SeedFate::kGerminates;
+            else if (L > (L_0 + L_1) / 2.0 && RangeScore(L, L_0, L_1) <= tau_b)
+              want = SeedFate::kExpires;
+            ASSERT_EQ(SeedDayOfScore(G, g, L, kind, tau_b, at_cap, r), want) << L;
+            ASSERT_EQ(SeedDay(G, L, kind, tau_b, at_cap, r), want) << L;
+            germinates += want == SeedFate::kGerminates;
+            expires += want == SeedFate::kExpires;
+            waits += want == SeedFate::kWaits;
+          }
+  EXPECT_GT(germinates, 100);
+  EXPECT_GT(expires, 100);
+  EXPECT_GT(waits, 100);
+}
+
 TEST(MossLifeCycle, TheContestForAnOccupiedPlace) {
   const LifeRules r = Rules();
   const SpeciesRanges gin = SpeciesOf(Defaults(), Species::kGingoke);  // α_g 0.3
