@@ -5,7 +5,8 @@
 // fig3_leaves.svg, problems.svg (the paper's two problems in `paper` and `improved`), scenes.svg
 // (convex and concave supports), tree.svg (ivy on Niwa's sakura), dormancy.svg/.md (§2.2's second
 // trigger on cubes4 with the search of §3.2 alone), look_*.png/look.md (paper beside artist, drawn
-// by three.js: figures_ivy_look.mjs) and claims.md (the numbers, seeds 1-5). docs/FIGURES.md shows them. Deterministic. Usage: scripts/figures ivy [NAME...]
+// by three.js: figures_ivy_look.mjs), luft_*.png/luft.md (artist beside a Luft-style reference,
+// tests/ivy/luft_reference_test.cpp) and claims.md (the numbers, seeds 1-5). docs/FIGURES.md shows them. Deterministic. Usage: scripts/figures ivy [NAME...]
 // e.g. `scripts/figures ivy claims` to redo only the numbers.
 'use strict';
 const fs = require('fs');
@@ -156,6 +157,20 @@ const FIGURES = {
   // three.js in Chromium (scripts/lib/figures_ivy_look.mjs; needs the browser tests' Chromium).
   look() {
     require('child_process').execFileSync(process.execPath, [path.join(__dirname, 'figures_ivy_look.mjs')], { stdio: 'inherit' });
+  },
+  // The artist preset against a Luft-style reference (issue 31 item 5): tests/ivy/luft_reference_test.cpp
+  // run from build/native (scripts/build native) draws both front views and prints the leaf covers.
+  luft() {
+    const bin = path.join(root, 'build/native/bin/ivy_tests');
+    const out = require('child_process').execFileSync(bin, ['--gtest_filter=IvyLuftReference.*'], {
+      encoding: 'utf8', env: { ...process.env, NIWA_LUFT_FIGURES: outDir },
+    });
+    const lines = out.split('\n').filter((l) => l.startsWith('[ luft'));
+    if (!/\[  PASSED  \] 1 test/.test(out)) throw new Error(`figures ivy luft: the test failed\n${out}`);
+    let md = 'Printed by `build/native/bin/ivy_tests --gtest_filter=IvyLuftReference.*` (`scripts/figures ivy luft`):\n\n';
+    md += lines.map((l) => `    ${l}`).join('\n') + '\n';
+    fs.writeFileSync(path.join(outDir, 'luft.md'), md);
+    console.log(md);
   },
   // §4's claims as numbers, seeds 1-5, cubes4, 50 steps.
   claims() {
