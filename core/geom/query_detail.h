@@ -360,6 +360,20 @@ inline float FloatAtLeast(double t) {
   return static_cast<double>(f) >= t ? f : f + f * 0x1p-22f;
 }
 
+// The conservative slab test's last step, shared by WideRayKeysConservative and its decoded-box
+// twin (so both widen alike): lo >= 0 lowered by a relative 2^-20 and 2^-120; hi raised the same
+// way when >= 0 (a negative exit means WideRayKeys' exit is negative too, below its entry >= 0: a
+// miss either way, so how it is widened does not matter). Returns the kept lanes' bits, keys[k] =
+// the widened entry of lane k.
+inline int WidenedLaneKeys(simd::Float4 lo, simd::Float4 hi, double keys[4]) {
+  const simd::Float4 tiny = simd::Splat4(0x1p-120f);
+  lo = lo * simd::Splat4(1.0f - 0x1p-20f) - tiny;
+  hi = hi * simd::Splat4(1.0f + 0x1p-20f) + tiny;
+  const int kept = simd::LaneBits(lo <= hi);
+  for (int k = 0; k < 4; ++k) keys[k] = static_cast<double>(lo[k]);
+  return kept;
+}
+
 // A conservative twin of WideRayKeys in float lanes: all four child boxes at once, four lanes a
 // step instead of two doubles, and no widening to double. It keeps every child WideRayKeys keeps
 // (perhaps more) and keys it at most at WideRayKeys' key, so a walk with it tests every triangle
@@ -396,15 +410,7 @@ inline int WideRayKeysConservative(const BvhWideNode& n, const FloatSlabRay& r, 
     lo = simd::MaxNoNaN(lo, simd::MinNoNaN(t_lo, t_hi));
     hi = simd::MinNoNaN(hi, simd::MaxNoNaN(t_lo, t_hi));
   }
-  // lo >= 0: lowered by a relative 2^-20 and 2^-120. hi: raised the same way when >= 0 (a
-  // negative exit means WideRayKeys' exit is negative too, below its entry >= 0: a miss either
-  // way, so how it is widened does not matter).
-  const Float4 tiny = simd::Splat4(0x1p-120f);
-  lo = lo * simd::Splat4(1.0f - 0x1p-20f) - tiny;
-  hi = hi * simd::Splat4(1.0f + 0x1p-20f) + tiny;
-  const int kept = simd::LaneBits(lo <= hi);
-  for (int k = 0; k < 4; ++k) keys[k] = static_cast<double>(lo[k]);
-  return kept;
+  return WidenedLaneKeys(lo, hi, keys);
 }
 
 // WideRayKeysConservative from a node's decoded boxes (Bvh::wide_boxes(): the floats its decode
@@ -420,12 +426,7 @@ inline int WideRayKeysConservativeDecoded(const BvhWideBoxes& b, const FloatSlab
     lo = simd::MaxNoNaN(lo, simd::MinNoNaN(t_lo, t_hi));
     hi = simd::MinNoNaN(hi, simd::MaxNoNaN(t_lo, t_hi));
   }
-  const Float4 tiny = simd::Splat4(0x1p-120f);
-  lo = lo * simd::Splat4(1.0f - 0x1p-20f) - tiny;
-  hi = hi * simd::Splat4(1.0f + 0x1p-20f) + tiny;
-  const int kept = simd::LaneBits(lo <= hi);
-  for (int k = 0; k < 4; ++k) keys[k] = static_cast<double>(lo[k]);
-  return kept;
+  return WidenedLaneKeys(lo, hi, keys);
 }
 
 // A wide node's used slots (they fill from 0; an unused one's count is kEmpty, 0xff), without a
