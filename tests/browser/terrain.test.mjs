@@ -378,6 +378,12 @@ await runBrowserTest(async (server, browser) => {
     serial = Number(data.terrainSerial);
     await page.click('#params details:has(#param-erosion) > summary');
     const was = { grows: Number(data.grows), heightfields: Number(data.heightfields), erosions: Number(data.erosions) };
+    // The tint checkbox (a view row) flipped as a user clicks it.
+    const toggleTint = () => page.evaluate(() => {
+      const box = document.getElementById('param-tint');
+      box.checked = !box.checked;
+      box.dispatchEvent(new Event('change', { bubbles: true }));
+    });
     await snapshotCanvas(page, 'uneroded');
     await saveCanvasPng(page, 'terrain-uneroded.png');
     await page.fill('#param-erosion', '3');
@@ -401,19 +407,11 @@ await runBrowserTest(async (server, browser) => {
       data.status === 'ready' && Number(data.grows) === was.grows && Number(data.heightfields) === was.heightfields && Number(data.erosions) === was.erosions + 2,
       `grows ${data.grows}, heightfields ${data.heightfields}, erosions ${data.erosions}`);
     if (data.status === 'ready') compareWithNative('erosion_talus=25 (re-eroded in the page)', data);
-    await page.evaluate(() => {
-      const box = document.getElementById('param-tint');
-      box.checked = !box.checked;
-      box.dispatchEvent(new Event('change', { bubbles: true }));
-    });
+    await toggleTint();
     data = await waitTerrain(page, serial);
     serial = Number(data.terrainSerial);
     check('a view row (tint) does not re-erode', Number(data.erosions) === was.erosions + 2, `erosions ${data.erosions}`);
-    await page.evaluate(() => {
-      const box = document.getElementById('param-tint');
-      box.checked = !box.checked;
-      box.dispatchEvent(new Event('change', { bubbles: true }));
-    });
+    await toggleTint();
     data = await waitTerrain(page, serial);
     serial = Number(data.terrainSerial);
     await page.fill('#param-erosion', '0');
