@@ -17,6 +17,7 @@
 #include "math/det_math.h"
 #include "math/rotation.h"
 #include "params/param_text.h"
+#include "tree/tree_look.h"
 #include "tree/tree_params.h"
 
 namespace niwa {
@@ -492,8 +493,7 @@ HybridScene BuildHybridScene(const Tree& tree, const RenderOptions& options) {
   scene.options = options;
   const std::size_t n = tree.branches.size();
   // The leaf cards' extent, as the mesh draws them (mesh.cpp: leaf_size times leaf_card).
-  const float leaf_size =
-      static_cast<float>(tree.params.Get(ParamId::kLeafSize) * tree.params.Get(ParamId::kLeafCard));
+  const float leaf_size = LeafCardLength(tree.params);
   const bool leaves_on_cards = options.leaf_mode == LeafMode::kBranchCards;
   scene.frames.resize(n);
   scene.shapes.resize(n);

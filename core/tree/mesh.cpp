@@ -348,8 +348,7 @@ TreeMesh BuildTreeMesh(const Tree& tree, const MeshOptions& options) {
   mesh.look = options.look ? *options.look : LookFromParams(tree.params);
   const float leaf_aspect = LeafQuadAspect(mesh.look.leaf_shape);
   // The card drawn for each leaf: leaf_size (the light model's leaf) times leaf_card.
-  const float leaf_size =
-      static_cast<float>(tree.params.Get(ParamId::kLeafSize) * tree.params.Get(ParamId::kLeafCard));
+  const float leaf_size = LeafCardLength(tree.params);
   const int lo_sides = std::max(3, options.min_sides);
   const int hi_sides = std::max(lo_sides, options.max_sides);
   const std::size_t count = tree.branches.size();

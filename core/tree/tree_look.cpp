@@ -44,6 +44,10 @@ bool ShowsFlowers(const TreeLook& look) {
   return look.season == Season::kSpring || look.season == Season::kSummer;
 }
 
+float LeafCardLength(const TreeParams& params) {
+  return static_cast<float>(params.Get(TreeParam::kLeafSize) * params.Get(TreeParam::kLeafCard));
+}
+
 float LeafQuadAspect(LeafShape shape) {
   switch (shape) {
     case LeafShape::kNeedle:

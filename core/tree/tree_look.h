@@ -75,6 +75,9 @@ bool ShowsFlowers(const TreeLook& look);
 
 // Width of a leaf quad over its length, per shape: broad 0.5, needle 0.8, palmate 1, fan 1.2.
 float LeafQuadAspect(LeafShape shape);
+// Length of the card drawn for each leaf, cm: leaf_size (the light model's leaf) times leaf_card
+// (the mesh and the hybrid view's cards alike).
+float LeafCardLength(const TreeParams& params);
 
 // "broad", "spring", "red", ... (the names in the rows' help and the .glb's extras).
 const char* LeafShapeName(LeafShape shape);
