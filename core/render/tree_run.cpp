@@ -102,6 +102,16 @@ bool TreeRun::GrowYear() {
   return true;
 }
 
+bool TreeRun::StartYear() {
+  if (finished()) return false;
+  grower_->StartYear();
+  return true;
+}
+
+void TreeRun::FinishYear(const std::vector<LeafSphere>& foreign_shade) {
+  grower_->FinishYear(foreign_shade);
+}
+
 Status TreeRun::Advance(const run::Observer& observer) {
   while (!finished()) {
     if (observer && !observer({"grow", static_cast<double>(done()), static_cast<double>(target())}))

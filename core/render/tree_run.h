@@ -106,6 +106,15 @@ class TreeRun : public run::StudyRun {
 
   // Grows one more year (false when finished).
   bool GrowYear();
+  // GrowYear in two halves (Grower::StartYear, FinishYear), for trees grown together
+  // (core/compose/tree_neighbours): StartYear (false when finished) makes this year's
+  // leaf_spheres(); FinishYear lights them shaded also by `foreign_shade` (other trees' leaf
+  // spheres in this tree's frame, cm) and ends the year. With no foreign shade the pair is
+  // GrowYear.
+  bool StartYear();
+  void FinishYear(const std::vector<LeafSphere>& foreign_shade);
+  // The leaf spheres of the year last started (Grower::leaf_spheres), in this tree's frame, cm.
+  const std::vector<LeafSphere>& leaf_spheres() const { return grower_->leaf_spheres(); }
   // Grows to the state's years, year by year; the observer sees {"grow", years done, years} before
   // each year and after the last. A cancel leaves the run at its last whole year (a later Advance
   // goes on from there) and returns run::CancelledStatus().

@@ -620,20 +620,28 @@ void Grower::LayOutShoots(bool bend) {
   flush();
 }
 
-void Grower::ComputeLight() {
-  const ParamSet& p = tree_.params;
-  if (!p.GetBool(ParamId::kUseLight)) return;  // L = 1, v_L = up, no death
-  std::vector<LeafSphere> spheres;
-  spheres.reserve(new_shoots_.size());
-  float leaf = static_cast<float>(p.Get(ParamId::kLeafSize));
+void Grower::MakeLeafSpheres() {
+  // Thesis 2.3.2: each shoot of the year a shading sphere around its straight layout.
+  leaf_spheres_.clear();
+  leaf_spheres_.reserve(new_shoots_.size());
+  float leaf = static_cast<float>(tree_.params.Get(ParamId::kLeafSize));
   for (int id : new_shoots_) {
     const Branch& s = tree_.branches[static_cast<std::size_t>(id)];
     glm::vec3 base = s.nodes.front(), tip = s.nodes.back();
-    spheres.push_back({0.5f * (base + tip), 0.5f * glm::length(tip - base) + 0.5f * leaf});
+    leaf_spheres_.push_back({0.5f * (base + tip), 0.5f * glm::length(tip - base) + 0.5f * leaf});
   }
+}
+
+void Grower::ComputeLight(const std::vector<LeafSphere>& foreign_shade) {
+  const ParamSet& p = tree_.params;
+  if (!p.GetBool(ParamId::kUseLight)) return;  // L = 1, v_L = up, no death
+  const std::vector<LeafSphere>& spheres = leaf_spheres_;
   Sky sky = GrowthSky(p);
-  std::vector<LightSample> samples = ComputeLightGrid(
-      spheres, sky, static_cast<float>(p.Get(ParamId::kSphereOpacity)), light_buffers_);
+  const float opacity = static_cast<float>(p.Get(ParamId::kSphereOpacity));
+  std::vector<LightSample> samples =
+      foreign_shade.empty()
+          ? ComputeLightGrid(spheres, sky, opacity, light_buffers_)
+          : ComputeLightGrid(spheres, foreign_shade, sky, opacity, light_buffers_);
   float k = static_cast<float>(p.Get(ParamId::kKDeath));
   float light_scale = static_cast<float>(p.Get(ParamId::kLightScale));
   for (std::size_t i = 0; i < new_shoots_.size(); ++i) {
@@ -869,7 +877,12 @@ Estimate Grower::estimate() const {
 }
 
 void Grower::GrowYear() {
-  if (stopped_) return;
+  StartYear();
+  FinishYear();
+}
+
+void Grower::StartYear() {
+  if (stopped_ || year_started_) return;
   const GrowLimits& limits = request_.limits;
   // A year costs at least its alive internodes' light, hormone and thickening.
   if (limits.max_seconds >= 0 &&
@@ -887,10 +900,17 @@ void Grower::GrowYear() {
   ++tree_.years;
   BreakBuds();
   LayOutShoots(false);
-  double branching = MsSince(start);
+  MakeLeafSpheres();
+  ms_started_ = MsSince(start);
+  year_started_ = true;
+}
 
+void Grower::FinishYear(const std::vector<LeafSphere>& foreign_shade) {
+  // Not stopped_: a limit met during this year's bud break stops the years after, not this one.
+  if (!year_started_) return;
+  year_started_ = false;
   Clock::time_point light_start = Clock::now();
-  ComputeLight();
+  ComputeLight(foreign_shade);
   timings_.ms_light += MsSince(light_start);
 
   Clock::time_point hormone_start = Clock::now();
@@ -904,8 +924,9 @@ void Grower::GrowYear() {
   ApplyPrunes();
   RaiseCrown();
   internode_years_ += static_cast<double>(internodes_);
-  timings_.ms_branching += branching + MsSince(shape_start);
-  timings_.ms_total += MsSince(start);
+  const double shape = MsSince(shape_start);
+  timings_.ms_branching += ms_started_ + shape;
+  timings_.ms_total += ms_started_ + MsSince(light_start);
 }
 
 Tree GrowTree(const GrowRequest& request, GrowthTimings* timings) {

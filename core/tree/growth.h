@@ -41,8 +41,23 @@ struct ShootLayout {
 class Grower {
  public:
   explicit Grower(const GrowRequest& request);
-  // Grows one more year (thesis 2.4 steps 1-5) and applies the prunes of that year.
+  // Grows one more year (thesis 2.4 steps 1-5) and applies the prunes of that year: StartYear()
+  // then FinishYear() without foreign shade.
   void GrowYear();
+  // GrowYear in two halves, for trees grown together (core/compose/tree_neighbours), which trade
+  // their leaf spheres between the halves. StartYear: the budget check (which may stop the growth),
+  // bud break and this year's shoots laid out straight (2.4.3 steps 1 and 4 before light), so that
+  // leaf_spheres() are this year's. FinishYear: the light of those spheres shaded also by
+  // `foreign_shade` (other trees' leaf spheres in this tree's frame, cm, its trunk foot at the
+  // origin; they receive no light), then steps 3-5 and the year's prunes (also when a limit met in
+  // the bud break stopped the years after). Each does nothing out of turn (StartYear twice, or
+  // FinishYear with no year started); with no foreign shade the pair is GrowYear, bit for bit.
+  void StartYear();
+  void FinishYear(const std::vector<LeafSphere>& foreign_shade = {});
+  // The leaf spheres of the year last started, the ones its light model lights and is shaded by
+  // (thesis 2.3.2: one per shoot of the year, around the shoot laid out straight, radius half its
+  // length plus half a leaf), in this tree's frame (cm). Empty before the first year.
+  const std::vector<LeafSphere>& leaf_spheres() const { return leaf_spheres_; }
   int year() const { return tree_.years; }
   const Tree& tree() const { return tree_; }
   Tree TakeTree() { return std::move(tree_); }
@@ -57,7 +72,8 @@ class Grower {
   void BreakBuds();  // step 1
   // Step 4 geometry of this year's living shoots (also straight, before light).
   void LayOutShoots(bool bend);
-  void ComputeLight();     // step 2
+  void ComputeLight(const std::vector<LeafSphere>& foreign_shade);  // step 2
+  void MakeLeafSpheres();  // leaf_spheres_ of this year's shoots
   void ComputeHormone();   // step 3
   void ThickenBranches();  // 2.4.4
   void SetNextYearBuds();  // step 5, including dormancy break (2.4.6)
@@ -95,6 +111,9 @@ class Grower {
   void Truncate(const std::string& limit, const std::string& why, const std::string& change);
   std::vector<int> kill_stack_;  // Kill's work list
   LightGridBuffers light_buffers_;
+  std::vector<LeafSphere> leaf_spheres_;
+  bool year_started_ = false;  // StartYear ran and FinishYear has not yet
+  double ms_started_ = 0;      // StartYear's bud break and straight layout, for the timings
   Pcg32 rng_;
 };
 

@@ -33,6 +33,11 @@ Sky MakeSky(float sun_elevation_deg, float sun_azimuth_deg, float sun_weight,
 // sphere.
 std::vector<LightSample> ComputeLightReference(const std::vector<LeafSphere>& spheres,
                                                const Sky& sky, float opacity);
+// The same with `foreign` spheres (other trees' leaves, core/compose/tree_neighbours): they shade
+// every sphere of `spheres` and receive no light themselves.
+std::vector<LightSample> ComputeLightReference(const std::vector<LeafSphere>& spheres,
+                                               const std::vector<LeafSphere>& foreign,
+                                               const Sky& sky, float opacity);
 
 // Near-linear production model: sphere density rasterized into a voxel grid, rays marched through
 // it.
@@ -77,8 +82,17 @@ struct LightGridBuffers {
   std::vector<int> spans;  // rasterization: first and last covered x of each row of a sphere's box
   std::vector<float> received, strongest;  // per sphere, while resolving L and v_L
   std::vector<int> strongest_direction;
+  ScratchArray<float> foreign_exponents;  // the foreign grid's exponents, per direction a row
 };
 std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres, const Sky& sky,
+                                          float opacity, LightGridBuffers& buffers);
+// With `foreign` spheres (other trees' leaves in this tree's frame, core/compose/tree_neighbours)
+// that shade `spheres` and receive no light. The spheres' own shade is the grid above, cell for
+// cell (so with no foreign spheres the same bits); the foreign spheres go into a second grid over
+// the box of both, alone, and its optical depth at each sphere's centre is added to the own one
+// before the exponential (Beer-Lambert: the depths along a ray add).
+std::vector<LightSample> ComputeLightGrid(const std::vector<LeafSphere>& spheres,
+                                          const std::vector<LeafSphere>& foreign, const Sky& sky,
                                           float opacity, LightGridBuffers& buffers);
 
 }  // namespace niwa
