@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "math/det_math.h"
 #include "tree/tree_params.h"
 
 namespace niwa::compose {
@@ -20,17 +21,40 @@ struct NeighbourCrown {
   float lowest_centre = 0.0f;
 };
 
-glm::vec3 NeighbourOrigin(const TreeAt& tree) {  // the trunk foot, cm
-  return glm::vec3(static_cast<float>(tree.x * kShadeCmPerMetre),
-                   static_cast<float>(tree.y * kShadeCmPerMetre),
-                   static_cast<float>(tree.z * kShadeCmPerMetre));
-}
+// A tree's placement: its trunk foot in the garden (cm) and its turn about y.
+struct NeighbourPlace {
+  glm::vec3 origin;
+  float cos_rot = 1.0f, sin_rot = 0.0f;
+  bool turned = false;
+  explicit NeighbourPlace(const TreeAt& tree)
+      : origin(static_cast<float>(tree.x * kShadeCmPerMetre),
+               static_cast<float>(tree.y * kShadeCmPerMetre),
+               static_cast<float>(tree.z * kShadeCmPerMetre)),
+        turned(tree.rot != 0) {
+    if (turned) {
+      const float angle = static_cast<float>(tree.rot * (det::kPi / 180.0));
+      cos_rot = det::Cosf(angle);
+      sin_rot = det::Sinf(angle);
+    }
+  }
+  // The tree's frame to the garden's: turned about y (counter-clockwise seen from above), moved.
+  glm::vec3 ToGarden(const glm::vec3& p) const {
+    if (!turned) return origin + p;
+    return origin + glm::vec3(cos_rot * p.x + sin_rot * p.z, p.y, cos_rot * p.z - sin_rot * p.x);
+  }
+  // The garden's frame to the tree's (the inverse).
+  glm::vec3 FromGarden(const glm::vec3& g) const {
+    const glm::vec3 p = g - origin;
+    if (!turned) return p;
+    return glm::vec3(cos_rot * p.x - sin_rot * p.z, p.y, cos_rot * p.z + sin_rot * p.x);
+  }
+};
 
 NeighbourCrown CrownOf(const TreeAt& tree) {
   NeighbourCrown crown;
-  const glm::vec3 origin = NeighbourOrigin(tree);
+  const NeighbourPlace place(tree);
   for (const LeafSphere& s : tree.run->leaf_spheres()) {
-    const glm::vec3 c = origin + s.center;
+    const glm::vec3 c = place.ToGarden(s.center);
     if (crown.empty) {
       crown.lo = crown.hi = c;
       crown.lowest_centre = c.y;
@@ -57,7 +81,7 @@ std::vector<LeafSphere> ShadeFor(const std::vector<TreeAt>& trees,
   if (!shade.shade_each_other || crowns[i].empty) return foreign;
   const NeighbourCrown& own = crowns[i];
   const float reach = static_cast<float>(shade.reach_m * kShadeCmPerMetre);
-  const glm::vec3 to_own = -NeighbourOrigin(trees[i]);
+  const NeighbourPlace own_place(trees[i]);
   for (std::size_t j = 0; j < trees.size(); ++j) {
     const NeighbourCrown& other = crowns[j];
     if (j == i || other.empty) continue;
@@ -66,12 +90,12 @@ std::vector<LeafSphere> ShadeFor(const std::vector<TreeAt>& trees,
     const float gap_x = std::max({own.lo.x - other.hi.x, 0.0f, other.lo.x - own.hi.x});
     const float gap_z = std::max({own.lo.z - other.hi.z, 0.0f, other.lo.z - own.hi.z});
     if (gap_x * gap_x + gap_z * gap_z > reach * reach || other.hi.y < own.lowest_centre) continue;
-    const glm::vec3 origin = NeighbourOrigin(trees[j]);
+    const NeighbourPlace place(trees[j]);
     for (const LeafSphere& s : trees[j].run->leaf_spheres()) {
-      const glm::vec3 c = origin + s.center;
+      const glm::vec3 c = place.ToGarden(s.center);
       if (c.y + s.radius < own.lowest_centre) continue;  // below every receiver: cannot shade
       if (HorizontalGap(c, own) - s.radius > reach) continue;
-      foreign.push_back({c + to_own, s.radius});
+      foreign.push_back({own_place.FromGarden(c), s.radius});
     }
   }
   return foreign;
@@ -95,8 +119,10 @@ Status CheckTreesTogether(const std::vector<TreeAt>& trees, const NeighbourShade
     if (t.run == nullptr) {
       return Status::Error("trees", "tree " + std::to_string(i) + " has no run");
     }
-    if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z)) {
-      return Status::Error("trees", "tree " + std::to_string(i) + "'s position must be finite");
+    if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z) ||
+        !std::isfinite(t.rot)) {
+      return Status::Error("trees",
+                           "tree " + std::to_string(i) + "'s position and turn must be finite");
     }
   }
   return Status::Ok();

@@ -2,10 +2,10 @@
 // every tree's light model (thesis 2.3.2, leaves as shading spheres) is shaded also by the leaf
 // spheres its neighbours grow that year, so neighbours grow away from each other. Part of the
 // composition tier (the garden calls it; the tree study does not know it). Does not: start, own,
-// mesh or export the runs (the caller's TreeRuns do), turn a tree (each stands upright in the
-// garden's axes), shade the ground or another study, let a tree's wood or last year's leaves cast
-// shade (only the leaf spheres of the year, as the thesis's own light), run threads, or name a
-// flag (the garden's table holds the switch and the reach).
+// mesh or export the runs (the caller's TreeRuns do; a tree's nursery years grown alone before are
+// the caller's too), shade the ground or another study, let a tree's wood or last year's leaves
+// cast shade (only the leaf spheres of the year, as the thesis's own light), run threads, or name
+// a flag (the garden's table holds the switch and the reach).
 #pragma once
 
 #include <cstddef>
@@ -25,11 +25,14 @@ namespace niwa::compose {
 constexpr double kDefaultShadeReach = 10.0;
 constexpr double kMaxShadeReach = 1000.0;  // m
 
-// One tree of the group: its run (started by the caller with its state and budget; grown here)
-// and where its trunk foot stands in the garden, metres, y up (y: the ground's height there).
+// One tree of the group: its run (started by the caller with its state and budget; grown here),
+// where its trunk foot stands in the garden, metres, y up (y: the ground's height there), and its
+// turn about y, degrees, counter-clockwise seen from above (the garden's `rot`: +x turns towards
+// -z at 90; the turn the caller gives the tree's node, so its leaves shade where they are drawn).
 struct TreeAt {
   TreeRun* run = nullptr;
   double x = 0, y = 0, z = 0;
+  double rot = 0;
 };
 
 struct NeighbourShade {
@@ -41,12 +44,13 @@ struct NeighbourShade {
   double reach_m = kDefaultShadeReach;
 };
 
-// Checks the group: every run set, every position finite, reach_m in its range (errors name
-// "trees" with the index, or "reach_m").
+// Checks the group: every run set, every position and turn finite, reach_m in its range (errors
+// name "trees" with the index, or "reach_m").
 Status CheckTreesTogether(const std::vector<TreeAt>& trees, const NeighbourShade& shade);
 
 // The foreign shade tree `i` gets from the others' current leaf spheres (TreeRun::leaf_spheres,
-// each run's last started year), moved into tree i's frame (cm, its foot at the origin) and culled
+// each run's last started year), turned and moved into tree i's frame (cm, its foot at the origin,
+// its own turn undone) and culled
 // by `shade` as said above; in the order of the trees, then of each one's spheres. Empty with
 // shade_each_other off.
 std::vector<LeafSphere> ForeignShade(const std::vector<TreeAt>& trees, std::size_t i,

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <glm/geometric.hpp>
 #include <memory>
 #include <string>
 
@@ -152,6 +153,47 @@ TEST(TreeNeighbours, ForeignShadeIsInTheTreesFrameAndCulledBelow) {
     EXPECT_EQ(on_low[i].radius, own[i].radius);
   }
   EXPECT_TRUE(ForeignShade(trees, 1, NeighbourShade()).empty());
+}
+
+// The whole garden turned a quarter about y (every foot and every tree's rot): each tree's shade,
+// in its own frame, is the same (to float rounding of the turns).
+TEST(TreeNeighbours, TurningTheWholeGardenChangesNoTreesShade) {
+  auto a = StartRun(StateOf(kPreset, 5)), b = StartRun(StateOf("keyaki", 6));
+  auto c = StartRun(StateOf("pine", 6));
+  ASSERT_TRUE(a->Advance(nullptr).ok());
+  ASSERT_TRUE(b->Advance(nullptr).ok());
+  ASSERT_TRUE(c->Advance(nullptr).ok());
+  const std::vector<TreeAt> garden = {
+      {a.get(), 0.0, 0.0, 0.0, 30.0}, {b.get(), 2.0, 0.5, -1.0, -45.0}, {c.get(), -1.5, 0.0, 2.0}};
+  std::vector<TreeAt> turned = garden;
+  for (TreeAt& t : turned) {  // +90 about y, counter-clockwise from above: (x, z) -> (z, -x)
+    const double x = t.x;
+    t.x = t.z;
+    t.z = -x;
+    t.rot += 90.0;
+  }
+  for (std::size_t i = 0; i < garden.size(); ++i) {
+    const std::vector<LeafSphere> before = ForeignShade(garden, i, NeighbourShade());
+    const std::vector<LeafSphere> after = ForeignShade(turned, i, NeighbourShade());
+    ASSERT_FALSE(before.empty());
+    ASSERT_EQ(before.size(), after.size()) << "tree " << i;
+    float worst = 0.0f;
+    for (std::size_t k = 0; k < before.size(); ++k) {
+      worst = std::max(worst, glm::length(before[k].center - after[k].center));
+      ASSERT_EQ(before[k].radius, after[k].radius);
+    }
+    EXPECT_LT(worst, 0.01f) << "tree " << i;  // cm
+  }
+  // And a turn moves the shade: tree 1 turned another 90 degrees casts it elsewhere on tree 0.
+  std::vector<TreeAt> spun = garden;
+  spun[1].rot += 90.0;
+  const std::vector<LeafSphere> moved = ForeignShade(spun, 0, NeighbourShade());
+  const std::vector<LeafSphere> still = ForeignShade(garden, 0, NeighbourShade());
+  float farthest = 0.0f;
+  for (std::size_t k = 0; k < std::min(moved.size(), still.size()); ++k) {
+    farthest = std::max(farthest, glm::length(moved[k].center - still[k].center));
+  }
+  EXPECT_GT(farthest, 20.0f);  // cm (a quarter turn moves a sphere r from the trunk by r·√2)
 }
 
 TEST(TreeNeighbours, ProgressAndCancelPerYear) {
