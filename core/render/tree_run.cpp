@@ -104,8 +104,9 @@ bool TreeRun::GrowYear() {
 
 bool TreeRun::StartYear() {
   if (finished()) return false;
-  grower_->StartYear();
-  return true;
+  const int before = grower_->year();
+  grower_->StartYear();  // a limit may stop the growth instead
+  return grower_->year() > before;
 }
 
 void TreeRun::FinishYear(const std::vector<LeafSphere>& foreign_shade) {

@@ -107,7 +107,8 @@ class TreeRun : public run::StudyRun {
   // Grows one more year (false when finished).
   bool GrowYear();
   // GrowYear in two halves (Grower::StartYear, FinishYear), for trees grown together
-  // (core/compose/tree_neighbours): StartYear (false when finished) makes this year's
+  // (core/compose/tree_neighbours): StartYear (false when finished or a limit stopped the growth
+  // before the year began) makes this year's
   // leaf_spheres(); FinishYear lights them shaded also by `foreign_shade` (other trees' leaf
   // spheres in this tree's frame, cm) and ends the year. With no foreign shade the pair is
   // GrowYear.

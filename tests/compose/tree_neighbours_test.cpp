@@ -219,6 +219,24 @@ TEST(TreeNeighbours, ProgressAndCancelPerYear) {
   EXPECT_EQ(b->done(), 5);
 }
 
+// A tree a limit stops keeps shading with its last spheres while the others grow on; the group
+// ends when every tree is finished or stopped. Its stop line is its lone run's.
+TEST(TreeNeighbours, ATreeALimitStopsLeavesTheOthersGrowing) {
+  TreeState capped = StateOf(kPreset, 8);
+  capped.limits.max_internodes = 2000;
+  capped.limits.internode_limit = "max_internodes";
+  auto small = StartRun(capped), big = StartRun(StateOf(kPreset, 8));
+  const std::vector<TreeAt> trees = {{small.get(), 0.0, 0.0, 0.0}, {big.get(), 3.0, 0.0, 0.0}};
+  ASSERT_TRUE(GrowTreesTogether(trees, NeighbourShade(), nullptr).ok());
+  EXPECT_TRUE(small->stopped());
+  EXPECT_LT(small->done(), 8);
+  EXPECT_EQ(big->done(), 8);
+  std::unique_ptr<TreeRun> lone = StartRun(capped);
+  ASSERT_TRUE(lone->Advance(nullptr).ok());
+  EXPECT_EQ(small->tree().truncated_by, lone->tree().truncated_by);
+  EXPECT_EQ(GrowTogetherYear(trees, NeighbourShade()), 0);  // nothing left to grow
+}
+
 TEST(TreeNeighbours, BadGroupsAreRefusedByField) {
   NeighbourShade far;
   far.reach_m = -1;
