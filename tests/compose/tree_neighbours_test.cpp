@@ -120,6 +120,10 @@ TEST(TreeNeighbours, TheOrderOfTheTreesChangesNothing) {
   EXPECT_EQ(TreeToJson(west->tree()), TreeToJson(west2->tree()));
   EXPECT_EQ(TreeToJson(east->tree()), TreeToJson(east2->tree()));
   EXPECT_NE(TreeToJson(west->tree()), TreeToJson(east->tree()));  // they did shade each other
+  // For comparing builds (native and WASM print the same).
+  std::printf("shaded pair, %s 6 years: FNV-1a of the trees' JSON %016llx %016llx\n", kPreset,
+              static_cast<unsigned long long>(Fnv1a(TreeToJson(west->tree()))),
+              static_cast<unsigned long long>(Fnv1a(TreeToJson(east->tree()))));
 }
 
 TEST(TreeNeighbours, BeyondTheReachATreeGrowsAsAlone) {
