@@ -20,8 +20,9 @@
 namespace niwa::compose {
 
 // Horizontal reach of a tree's shade, metres (NeighbourShade::reach_m's default): 10 m is the
-// spacing of the 100-tree, 100 m garden (issue 33 item 7), and a 4 m crown seen across it stands
-// under 20 degrees, where the growth sky's lowest rings of 16 directions carry little weight.
+// spacing of the 100-tree, 100 m garden (issue 33 item 7); a 4 m crown 10 m away stands under 22
+// degrees and spans about 23 degrees of azimuth, so it meets at most one or two of the growth sky's
+// 16 directions (5 of them lie below 22 degrees).
 constexpr double kDefaultShadeReach = 10.0;
 constexpr double kMaxShadeReach = 1000.0;  // m
 
