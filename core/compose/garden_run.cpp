@@ -147,18 +147,19 @@ Result<GardenRun> GardenRun::Start(const GardenState& state, const Budget& budge
     run.groups_[g].trees.push_back(static_cast<int>(t));
     run.tree_group_[t] = g;
   }
-  // Each group's growth within an equal share of the budget (its limits stop it with a line).
-  Budget share = budget;
+  // Each group's growth within an equal share of the budget above the process's own base (the
+  // tree's limits count that base once per tree; its limits stop a tree with a line).
   const double groups = std::max<double>(1, static_cast<double>(run.groups_.size()));
-  share.memory_bytes = static_cast<uint64_t>(static_cast<double>(budget.memory_bytes) / groups);
-  share.seconds = budget.seconds / groups;
   const int years = state.params.GetInt(GardenParam::kYears);
   for (GardenTreeGroup& g : run.groups_) {
     TreeState ts;
     NIWA_RETURN_IF_ERROR(SetStatePreset(g.species, &ts));
     NIWA_RETURN_IF_ERROR(SetStateSeed(static_cast<double>(g.seed), &ts));
     NIWA_RETURN_IF_ERROR(SetStateYears(std::min(kMaxYears, g.age + years), &ts).Within("years"));
-    ts.limits = TreeGrowLimits(ts.params, share, "years");
+    ts.limits = TreeGrowLimits(ts.params, budget, "years");
+    ts.limits.max_bytes =
+        ts.limits.base_bytes + std::max(0.0, ts.limits.max_bytes - ts.limits.base_bytes) / groups;
+    ts.limits.max_seconds /= groups;
     g.grower = std::make_unique<Grower>(ts);
   }
   return run;
