@@ -48,6 +48,10 @@ std::vector<ParamSpec> GardenRows() {
        "leaves in the thesis's light model (2.3.2); 0: every tree grows alone."},
       {GardenId(GP::kShadeReach), "shade_reach", "", "m", 10, 0.5, 100, false, "interactions",
        kGardenGrow, "Trunks closer than this shade each other (when shade is 1)."},
+      {GardenId(GP::kIvySteps), "ivy_steps", "", "steps/year", 60, 0, 160, true, "interactions",
+       kGardenGrow,
+       "Ivy steps (paper 004's unit) a garden year: the ivy of the state's seeds grows years × "
+       "ivy_steps steps on the objects, the trunks near them and the ground (0: no ivy)."},
       // ------------------------------------------------ export
       {GardenId(GP::kMaxTriangles), "max_triangles", "", "", 8000, 100, 1000000, true, "export",
        kGardenMesh,

@@ -29,6 +29,7 @@ enum class GardenParam : int {
   // interactions
   kShade,
   kShadeReach,
+  kIvySteps,
   // export
   kMaxTriangles,
   kLod,

@@ -8,10 +8,14 @@
 #include <nlohmann/json.hpp>
 #include <tuple>
 
+#include "compose/bark_support.h"
+#include "geom/linear_queries.h"
 #include "image/png.h"
 #include "io/gltf_writer.h"
+#include "ivy/ivy_state.h"
 #include "math/det_math.h"
 #include "render/tree_lod.h"
+#include "tree/mesh.h"
 #include "tree/presets.h"
 #include "tree/tree_budget.h"
 #include "tree/tree_state.h"
@@ -182,10 +186,127 @@ Status GardenRun::Advance(const run::Observer& observer) {
     ++year_;
   }
   if (observer) observer({"grow", static_cast<double>(year_), static_cast<double>(years)});
+  if (!ivy_ && !state_.ivy_on.empty() && state_.params.GetInt(GardenParam::kIvySteps) > 0 &&
+      years > 0) {
+    if (observer && !observer({"ivy", 0, 1})) return run::CancelledStatus();
+    const auto ti = Clock::now();
+    NIWA_RETURN_IF_ERROR(GrowIvy());
+    ms_ivy_ = MsSince(ti);
+  }
   for (const GardenTreeGroup& g : groups_)
     if (truncated_by_.empty() && g.grower->tree().truncated)
       truncated_by_ = g.name + ": " + g.grower->tree().truncated_by;
   ms_trees_ += MsSince(t0);
+  return Status::Ok();
+}
+
+namespace {
+
+// Trees whose trunk stands within this of an ivy seed's foot lend their bark to the ivy's support.
+constexpr double kIvyTreeReach = 6;
+// Bytes and seconds the ivy's support takes per triangle (its mesh and BVHs), as ivy_budget's.
+constexpr double kIvySupportBytesPerTriangle = 160, kIvySupportSecondsPerTriangle = 1e-6;
+
+void AppendMoved(geom::TriMesh* into, const geom::TriMesh& part, double x, double y, double z,
+                 double rot_deg) {
+  const double a = rot_deg * det::kPi / 180.0;
+  const float c = static_cast<float>(det::Cos(a)), s = static_cast<float>(det::Sin(a));
+  const uint32_t base = static_cast<uint32_t>(into->positions.size());
+  for (const glm::vec3& p : part.positions)
+    into->positions.emplace_back(c * p.x + s * p.z + static_cast<float>(x),
+                                 p.y + static_cast<float>(y),
+                                 -s * p.x + c * p.z + static_cast<float>(z));
+  for (uint32_t i : part.indices) into->indices.push_back(base + i);
+}
+
+}  // namespace
+
+Status GardenRun::GrowIvy() {
+  // The support: the ground, every object, and the bark of the trees near a seed, as they stand
+  // after the clock (the ivy is grown on the grown garden: docs/garden-model.md).
+  ivy::IvyScene scene;
+  scene.name = "garden";
+  scene.description = "the garden's ground, objects and trunks (metres)";
+  scene.px_per_unit = 1000;  // metres: the ivy's px are mm
+  scene.mesh = scene_.ground.Mesh();
+  scene.mesh.normals.clear();
+  scene.mesh.uvs.clear();
+  for (const PlacedObject& o : scene_.objects) AppendMoved(&scene.mesh, o.mesh, 0, 0, 0, 0);
+  std::vector<glm::dvec3> feet;
+  for (const std::string& on : state_.ivy_on) {
+    Result<GardenIvyTarget> t = ParseIvyTarget(on, state_);
+    if (!t.ok()) return t.status();
+    if (t->object) {
+      const PlacedObject& o = scene_.objects[t->index];
+      feet.emplace_back(o.x, o.base_y, o.z);
+    } else {
+      const PlacedTree& p = planting_.trees[t->index];  // hand-placed trees come first
+      feet.emplace_back(p.x, p.y, p.z);
+    }
+  }
+  std::map<int, geom::TriMesh> bark_of_group;
+  std::vector<std::pair<int, std::size_t>> tree_parts;  // (tree, first vertex) in the support
+  for (std::size_t t = 0; t < planting_.trees.size(); ++t) {
+    const PlacedTree& p = planting_.trees[t];
+    bool near = false;
+    for (const glm::dvec3& f : feet)
+      near = near || std::hypot(f.x - p.x, f.z - p.z) <= kIvyTreeReach;
+    if (!near) continue;
+    const int g = tree_group_[t];
+    if (!bark_of_group.count(g))
+      bark_of_group[g] = BarkTriMesh(BuildTreeMesh(groups_[g].grower->tree()).bark);
+    tree_parts.emplace_back(static_cast<int>(t), scene.mesh.positions.size());
+    AppendMoved(&scene.mesh, bark_of_group[g], p.x, p.y, p.z, p.rot);
+  }
+  const double triangles = static_cast<double>(scene.mesh.triangle_count());
+  const Estimate support{triangles * kIvySupportBytesPerTriangle,
+                         triangles * kIvySupportSecondsPerTriangle,
+                         "the ivy's support (" + FormatCount(triangles) + " triangles)"};
+  // Each seed: the support point nearest to a point just outside its object's footprint (south,
+  // 0.3 m up) or its trunk's foot (south, 0.3 m up).
+  for (std::size_t k = 0; k < state_.ivy_on.size(); ++k) {
+    Result<GardenIvyTarget> t = ParseIvyTarget(state_.ivy_on[k], state_);
+    glm::dvec3 probe;
+    geom::TriMesh part;
+    if (t->object) {
+      const PlacedObject& o = scene_.objects[t->index];
+      const double a = o.rot * det::kPi / 180.0;
+      const double lz = o.hz + 0.02;
+      probe = {o.x + det::Sin(a) * lz, o.base_y + 0.3, o.z + det::Cos(a) * lz};
+      part = o.mesh;
+    } else {
+      const PlacedTree& p = planting_.trees[t->index];
+      probe = {p.x, p.y + 0.3, p.z + 0.05};
+      AppendMoved(&part, bark_of_group[tree_group_[t->index]], p.x, p.y, p.z, p.rot);
+    }
+    const geom::ClosestHit hit =
+        geom::ClosestPointLinear(part, glm::vec3(probe), std::numeric_limits<float>::infinity());
+    if (!hit.found)
+      return Status::Error("ivy", "'" + state_.ivy_on[k] + "' has no surface to climb");
+    scene.seeds.push_back({state_.ivy_on[k], glm::dvec3(hit.point)});
+  }
+  ivy::IvyState ivy_state;
+  NIWA_RETURN_IF_ERROR(ivy::SetIvyPreset(state_.ivy_preset, &ivy_state).Within("ivy"));
+  NIWA_RETURN_IF_ERROR(
+      ivy::SetIvySeed(state_.params.Get(GardenParam::kPlantSeed), &ivy_state).Within("ivy"));
+  NIWA_RETURN_IF_ERROR(
+      ivy::SetIvySteps(std::min(10000, state_.params.GetInt(GardenParam::kIvySteps) * year_),
+                       &ivy_state)
+          .Within("ivy_steps"));
+  ivy_state.seed_point_items = state_.ivy_on;
+  ivy::IvySupportOptions options = ivy::IvySupportOptions::For(ivy_state);
+  options.change = "lower ivy_steps or the ivy seeds";
+  Result<std::shared_ptr<const ivy::IvySupport>> prepared = ivy::IvySupport::Prepare(
+      ivy::IvySupportInput::Prepared(std::move(scene), support, ""), options, budget_);
+  if (!prepared.ok()) return prepared.status();
+  ivy::IvyRunOptions run_options;
+  run_options.change = "lower ivy_steps or the ivy seeds";
+  Result<ivy::IvyRun> run = ivy::IvyRun::Start(ivy_state, *prepared, budget_, run_options);
+  if (!run.ok()) return run.status();
+  NIWA_RETURN_IF_ERROR(run->Advance(nullptr));
+  if (truncated_by_.empty() && !run->log().truncated_by.empty())
+    truncated_by_ = "ivy: " + run->log().truncated_by;
+  ivy_ = std::make_unique<ivy::IvyRun>(std::move(*run));
   return Status::Ok();
 }
 
@@ -255,6 +376,19 @@ Result<gltf::Document> GardenRun::Document() const {
     doc.meshes.push_back(std::move(mesh));
     doc.scene_nodes.push_back(static_cast<int>(doc.nodes.size()));
     doc.nodes.push_back(std::move(node));
+  }
+  if (ivy_) {
+    Result<gltf::Document> ivy_doc = ivy_->Document();
+    if (!ivy_doc.ok()) return ivy_doc.status();
+    const int mesh_base = AppendGardenDocument(&doc, *ivy_doc);
+    for (const gltf::Node& n : ivy_doc->nodes) {
+      if (n.mesh < 0) continue;
+      gltf::Node node;
+      node.name = "ivy_" + n.name;
+      node.mesh = mesh_base + n.mesh;
+      doc.scene_nodes.push_back(static_cast<int>(doc.nodes.size()));
+      doc.nodes.push_back(std::move(node));
+    }
   }
   const long max_triangles = state_.params.GetInt(GardenParam::kMaxTriangles);
   const bool lod = state_.params.GetBool(GardenParam::kLod);
@@ -337,6 +471,12 @@ std::string GardenRun::StatsJson() const {
                 {"grown_with_neighbours", shaded}, {"by_species", species},
                 {"internodes", internodes},        {"leaves", leaves}};
   j["planting"] = nlohmann::ordered_json::parse(PlantingJson(planting_))["report"];
+  if (ivy_) {
+    j["ivy"] = {{"seeds", state_.ivy_on.size()},
+                {"steps", ivy_->log().steps_run},
+                {"internodes", ivy_->model().internodes.size()},
+                {"support_triangles", ivy_->support().triangles()}};
+  }
   if (!truncated_by_.empty()) j["truncated_by"] = truncated_by_;
   return j.dump();
 }

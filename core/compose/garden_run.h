@@ -6,9 +6,11 @@
 // leaves each year when shade is 1 (compose/tree_neighbours). Outputs: the .glb (ground, objects,
 // each distinct tree once within max_triangles (render/tree_lod), its copies as
 // EXT_mesh_gpu_instancing or plain nodes sharing the mesh, optional _LOD1/_LOD2), the 16-bit
-// heightmap of the ground, the plan as SVG, the stats. Does not (yet): grow ivy, moss or simulated
-// bark in the garden (their studies run alone or on one tree: compose/ivy_on_tree, moss_on_tree,
-// bark_on_tree), replay years without regrowing, read files, or name a flag.
+// heightmap of the ground, the plan as SVG, the stats. Ivy (paper 004) grows from the state's seeds
+// at the feet of objects and hand-placed trees, climbing the objects, the trunks near them and the
+// ground. Does not (yet): grow moss or simulated bark in the garden (their studies run alone or
+// on one tree: compose/moss_on_tree, bark_on_tree), replay years without regrowing, read files,
+// or name a flag.
 #pragma once
 
 #include <memory>
@@ -20,6 +22,7 @@
 #include "compose/garden_plant.h"
 #include "compose/garden_scene.h"
 #include "compose/garden_state.h"
+#include "ivy/ivy_run.h"
 #include "run/study_run.h"
 #include "tree/growth.h"
 
@@ -79,6 +82,9 @@ class GardenRun : public run::StudyRun {
   // The leaf-area centroid of planted tree t, in the garden's frame (m).
   glm::dvec3 CrownCentroid(int t) const;
   const std::string& truncated_by() const { return truncated_by_; }
+  // The garden's ivy once grown (nullptr without ivy seeds, ivy_steps 0 or before Advance).
+  const ivy::IvyRun* ivy() const { return ivy_.get(); }
+  double ms_ivy() const { return ms_ivy_; }
   double ms_ground() const { return ms_ground_; }
   double ms_plant() const { return ms_plant_; }
   double ms_trees() const { return ms_trees_; }
@@ -93,7 +99,10 @@ class GardenRun : public run::StudyRun {
   int year_ = 0;
   bool nursery_done_ = false;
   std::string truncated_by_;
-  double ms_ground_ = 0, ms_plant_ = 0, ms_trees_ = 0;
+  double ms_ground_ = 0, ms_plant_ = 0, ms_trees_ = 0, ms_ivy_ = 0;
+  std::unique_ptr<ivy::IvyRun> ivy_;
+  // Grows the state's ivy on the garden as it stands after the clock (see docs/garden-model.md).
+  Status GrowIvy();
 };
 
 }  // namespace niwa::compose

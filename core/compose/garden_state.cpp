@@ -1,12 +1,14 @@
 // The garden's state, its JSON and its share-link hash (see garden_state.h).
 #include "compose/garden_state.h"
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <optional>
 
 #include "base/echo.h"
 #include "io/hash_codec.h"
+#include "ivy/ivy_params.h"
 #include "params/param_json.h"
 #include "params/param_text.h"
 #include "tree/presets.h"
@@ -168,6 +170,7 @@ void LayOutDefaults(GardenState* state) {
                     {"rock", -8 * f, 8 * f, 70, 0.8},
                     {"lantern", 3 * f, -3 * f, 0, 1}};
   state->plants = {{"keyaki", 1, 5, -3 * f, 2 * f, 0}};
+  state->ivy_on = {"objects[0]"};
 }
 
 GardenState DefaultGardenState() {
@@ -176,6 +179,33 @@ GardenState DefaultGardenState() {
   LayOutDefaults(&state);
   state.mix = {{"keyaki", 2}, {"sakura", 1}, {"maple", 1}};
   return state;
+}
+
+Result<GardenIvyTarget> ParseIvyTarget(std::string_view text, const GardenState& state) {
+  GardenIvyTarget t;
+  std::size_t count = 0;
+  std::string_view rest;
+  if (text.rfind("objects[", 0) == 0) {
+    t.object = true;
+    count = state.objects.size();
+    rest = text.substr(8);
+  } else if (text.rfind("plants[", 0) == 0) {
+    count = state.plants.size();
+    rest = text.substr(7);
+  } else {
+    return Status::Error("ivy", "'" + Echo(text) + "' is not objects[i] or plants[i]");
+  }
+  const std::size_t close = rest.find(']');
+  const std::optional<double> i = close == std::string_view::npos || close + 1 != rest.size()
+                                      ? std::nullopt
+                                      : ParseNumber(rest.substr(0, close));
+  if (!i || *i < 0 || *i != std::floor(*i) || *i >= static_cast<double>(count))
+    return Status::Error("ivy", "'" + Echo(text) + "' names no " +
+                                    (t.object ? "object" : "hand-placed tree") +
+                                    "; the garden has " + std::to_string(count) +
+                                    (t.object ? " objects" : " of them"));
+  t.index = static_cast<std::size_t>(*i);
+  return t;
 }
 
 Status CheckGardenState(const GardenState& state) {
@@ -225,6 +255,15 @@ Status CheckGardenState(const GardenState& state) {
       return Status::Error("mix." + w.species,
                            FormatNumber(w.weight) + " must be a weight in (0, 1000]");
   }
+  for (const std::string& on : state.ivy_on) {
+    Result<GardenIvyTarget> t = ParseIvyTarget(on, state);
+    if (!t.ok()) return t.status();
+  }
+  if (state.ivy_on.size() > kMaxGardenIvy)
+    return Status::Error("ivy", std::to_string(state.ivy_on.size()) + " seeds; at most " +
+                                    std::to_string(kMaxGardenIvy));
+  if (const Result<IvyParams> preset = IvyPreset(state.ivy_preset); !preset.ok())
+    return Status::Error("ivy.preset", preset.status().message());
   if (state.params.Get(GardenParam::kDensity) > 0 && state.mix.empty())
     return Status::Error("mix", "is empty; density > 0 needs at least one species to plant");
   if (state.params.Get(GardenParam::kAltMin) > state.params.Get(GardenParam::kAltMax))
@@ -245,6 +284,8 @@ Status ApplyGardenStateJson(const std::string& text, GardenState* state) {
                          "is not a JSON object; must be {params, ground, objects, "
                          "plants, mix, mask}");
   GardenState next = *state;
+  const bool was_default = next.default_layout;
+  bool ivy_given = false;
   for (const auto& [key, v] : j.items()) {
     if (key == "params") {
       if (!v.is_object()) return Status::Error("params", "must be an object {key: value}");
@@ -306,6 +347,26 @@ Status ApplyGardenStateJson(const std::string& text, GardenState* state) {
         if (!w.ok()) return w.status();
         next.mix.push_back({species, *w});
       }
+    } else if (key == "ivy") {
+      if (!v.is_object()) return Status::Error("ivy", "must be an object {preset, on: [...]}");
+      ivy_given = v.contains("on");
+      for (const auto& [k, value] : v.items()) {
+        if (k == "preset") {
+          if (!value.is_string()) return Status::Error("ivy.preset", "must be an ivy preset name");
+          next.ivy_preset = value.get<std::string>();
+        } else if (k == "on") {
+          if (!value.is_array())
+            return Status::Error("ivy.on", "must be an array of objects[i] or plants[i]");
+          next.ivy_on.clear();
+          for (const auto& item : value) {
+            if (!item.is_string())
+              return Status::Error("ivy.on", "must be an array of objects[i] or plants[i]");
+            next.ivy_on.push_back(item.get<std::string>());
+          }
+        } else {
+          return Status::Error("ivy." + Echo(k), "unknown field; ivy has preset and on");
+        }
+      }
     } else if (key == "mask") {
       if (v.is_null()) {
         next.mask_name.clear();
@@ -318,10 +379,13 @@ Status ApplyGardenStateJson(const std::string& text, GardenState* state) {
       }
     } else {
       return Status::Error(Echo(key),
-                           "unknown field; a garden has params, ground, objects, plants, mix "
-                           "and mask");
+                           "unknown field; a garden has params, ground, objects, plants, mix, "
+                           "ivy and mask");
     }
   }
+  // The default ivy grows on the default wall: a file that places its own objects or plants and
+  // names no ivy has none.
+  if (was_default && !next.default_layout && !ivy_given) next.ivy_on.clear();
   LayOutDefaults(&next);
   NIWA_RETURN_IF_ERROR(CheckGardenState(next));
   *state = std::move(next);
@@ -353,6 +417,7 @@ std::string GardenStateJson(const GardenState& state) {
                            {"rot", p.rot}});
   j["mix"] = nlohmann::ordered_json::object();
   for (const SpeciesWeight& w : state.mix) j["mix"][w.species] = w.weight;
+  j["ivy"] = {{"preset", state.ivy_preset}, {"on", state.ivy_on}};
   if (!state.mask_name.empty()) j["mask"] = state.mask_name;
   return j.dump(2);
 }
@@ -381,6 +446,9 @@ std::string EncodeGardenHash(const GardenState& state, std::string_view prefix) 
   for (const SpeciesWeight& w : state.mix)
     items.push_back(w.species + ":" + FormatNumber(w.weight));
   list("mix", items);
+  list("ivy", state.ivy_on);
+  if (state.ivy_preset != base.ivy_preset)
+    hash += "&" + pre + "ivy_preset=" + PercentEncode(state.ivy_preset);
   if (state.ground == GroundKind::kTerrain)
     hash += "&" + terrain::EncodeTerrainHash(state.terrain, pre + "terrain.");
   return pre + hash;
@@ -391,7 +459,14 @@ void ApplyGardenHash(std::string_view hash, std::string_view prefix, GardenState
   const std::string pre(prefix);
   const std::string terrain_prefix = pre + "terrain.";
   bool terrain_keys = false;
-  for (const auto& [key, value] : SplitHash(hash, notices)) {
+  const bool was_default = state->default_layout;
+  bool ivy_given = false;
+  // The ivy keys last: they name objects and plants the other keys may replace.
+  HashPairs pairs = SplitHash(hash, notices);
+  std::stable_partition(pairs.begin(), pairs.end(), [&](const auto& kv) {
+    return kv.first != pre + "ivy" && kv.first != pre + "ivy_preset";
+  });
+  for (const auto& [key, value] : pairs) {
     if (key.rfind(terrain_prefix, 0) == 0) {
       terrain_keys = true;
       continue;
@@ -411,6 +486,20 @@ void ApplyGardenHash(std::string_view hash, std::string_view prefix, GardenState
         state->ground = GroundKind::kFlat;
       } else {
         state->ground = *kind;
+      }
+    } else if (bare == "ivy" || bare == "ivy_preset") {
+      ivy_given = ivy_given || bare == "ivy";
+      GardenState next = *state;
+      if (bare == "ivy_preset") {
+        next.ivy_preset = value;
+      } else {
+        next.ivy_on = value.empty() ? std::vector<std::string>{} : SplitOn(value, ',');
+      }
+      const Status s = CheckGardenState(next);
+      if (s.ok()) {
+        *state = std::move(next);
+      } else {
+        notice(bare + ": dropped; " + s.Line());
       }
     } else if (bare == "objects" || bare == "plants" || bare == "mix") {
       std::vector<GardenObject> objects;
@@ -445,8 +534,11 @@ void ApplyGardenHash(std::string_view hash, std::string_view prefix, GardenState
         }
       }
       GardenState next = *state;
-      LayOutDefaults(&next);
-      next.default_layout = false;
+      if (next.default_layout) {
+        LayOutDefaults(&next);
+        next.default_layout = false;
+        next.ivy_on.clear();  // the default ivy is the default wall's; an ivy key comes after
+      }
       if (bare == "objects") next.objects = objects;
       if (bare == "plants") next.plants = plants;
       if (bare == "mix") next.mix = mix;
@@ -461,6 +553,7 @@ void ApplyGardenHash(std::string_view hash, std::string_view prefix, GardenState
     }
   }
   if (terrain_keys) terrain::ApplyTerrainHash(hash, terrain_prefix, &state->terrain, notices);
+  if (was_default && !state->default_layout && !ivy_given) state->ivy_on.clear();
   LayOutDefaults(state);
 }
 

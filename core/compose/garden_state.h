@@ -57,6 +57,10 @@ struct GardenState {
   std::vector<GardenObject> objects;
   std::vector<GardenPlant> plants;
   std::vector<SpeciesWeight> mix;
+  // Ivy: the things it starts at the foot of ("objects[i]" or "plants[i]", the hand-placed
+  // trees), grown with the ivy preset `ivy_preset` (niwa presets ivy).
+  std::vector<std::string> ivy_on;
+  std::string ivy_preset = "artist";
   // True until objects or plants are given (a state JSON's lists, a link's): the objects and the
   // hand-placed tree are then the default layout, laid out anew for the garden's size
   // (LayOutDefaults), so a smaller garden keeps them inside.
@@ -71,7 +75,18 @@ constexpr std::size_t kMaxGardenMix = 16;
 constexpr int kMaxPlantAge = 60;
 constexpr double kMaxGardenSeed = 4294967295.0;
 
+// A thing ivy starts at: objects[index] or plants[index].
+struct GardenIvyTarget {
+  bool object = false;
+  std::size_t index = 0;
+};
+
+constexpr std::size_t kMaxGardenIvy = 64;
+
 // ---- functions ----
+
+// "objects[2]" or "plants[0]" of `state`; error "ivy" when it names nothing there.
+Result<GardenIvyTarget> ParseIvyTarget(std::string_view text, const GardenState& state);
 
 // "wall", "rock", "lantern".
 const std::vector<std::string>& GardenObjectKinds();
@@ -92,7 +107,8 @@ Status CheckGardenState(const GardenState& state);
 
 // Applies {params: {...}, ground: {kind: "flat" | "terrain" | "heightmap", terrain: {...the
 // terrain's state JSON...}, file: "h.png"}, objects: [{kind, pos: [x, z], rot, scale}], plants:
-// [{species, seed, age, pos: [x, z], rot}], mix: {species: weight}, mask: "m.png"} onto state.
+// [{species, seed, age, pos: [x, z], rot}], mix: {species: weight}, mask: "m.png", ivy: {preset,
+// on: ["objects[0]", "plants[1]"]}} onto state.
 // Given lists replace the state's; a heightmap's and a mask's file names are kept for the front end
 // to read (their bytes are cleared). Strict: the first bad field is the error, the state unchanged.
 Status ApplyGardenStateJson(const std::string& text, GardenState* state);
@@ -101,8 +117,9 @@ std::string GardenStateJson(const GardenState& state);
 
 // The share-link hash: the table's rows that differ from the defaults, ground=flat|terrain|
 // heightmap, the terrain's keys under "terrain.", objects=kind:x:z:rot:scale,..., plants=
-// species:seed:age:x:z:rot,..., mix=species:weight,... (a heightmap or a mask is not carried: a
-// link of such a garden says so in `notices` when read). Keys carry `prefix`.
+// species:seed:age:x:z:rot,..., mix=species:weight,..., ivy=objects[0],..., ivy_preset=artist (a
+// heightmap or a mask is not carried: a link of such a garden says so in `notices` when read). Keys
+// carry `prefix`.
 std::string EncodeGardenHash(const GardenState& state, std::string_view prefix = "");
 // Forgiving, as every study's hash: bad values clamped or dropped with a printable notice each.
 void ApplyGardenHash(std::string_view hash, std::string_view prefix, GardenState* state,

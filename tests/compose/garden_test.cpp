@@ -3,7 +3,8 @@
 // objects and trees standing on the surface (within 2 cm); the planting rules' spacing, altitude
 // band, slope limit, mask and objects each kept, every dart counted once; a hand-placed tree in a
 // wall refused naming plants[i].pos; the run's groups (copies share one growth when no neighbour
-// is within reach) and its clock.
+// is within reach) and its clock; ivy from the wall's foot climbing the wall, and an ivy seed
+// naming nothing refused naming "ivy".
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -206,6 +207,37 @@ TEST(Garden, CopiesShareOneGrowthAndTheClockGrowsEveryTree) {
   Result<GardenRun> shaded = GardenRun::Start(s, Budget{});
   ASSERT_TRUE(shaded.ok());
   EXPECT_GT(shaded->groups().size(), 4u);
+}
+
+TEST(Garden, IvyClimbsTheWallItStartsAt) {
+  GardenState s = SmallGarden();
+  ASSERT_TRUE(s.params.Set(GardenParam::kDensity, 0).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kYears, 3).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kIvySteps, 40).ok());
+  s.ivy_on = {"objects[0]"};
+  Result<GardenRun> run = GardenRun::Start(s, Budget{});
+  ASSERT_TRUE(run.ok()) << run.status().Line();
+  ASSERT_TRUE(run->Advance({}).ok());
+  ASSERT_NE(run->ivy(), nullptr);
+  EXPECT_EQ(run->ivy()->log().steps_run, 120);
+  const ivy::IvyModel& m = run->ivy()->model();
+  ASSERT_GT(m.internodes.size(), 50u);
+  // The wall: 6 m along x, 0.45 m thick, 1.8 m high, at (0, base, −0.3·size).
+  const PlacedObject& wall = run->scene().objects[0];
+  int on_wall = 0, up_high = 0;
+  for (const ivy::Bud& b : m.buds) {
+    on_wall += wall.Covers(b.pos.x, b.pos.z, 0.3) ? 1 : 0;
+    up_high += b.pos.y > wall.base_y + 0.9 ? 1 : 0;
+  }
+  EXPECT_GT(on_wall, static_cast<int>(m.buds.size()) / 2) << "most of the ivy is on the wall";
+  EXPECT_GT(up_high, 10) << "some climbed above half the wall's height";
+  const nlohmann::json stats = nlohmann::json::parse(run->StatsJson());
+  EXPECT_EQ(stats["ivy"]["internodes"].get<std::size_t>(), m.internodes.size());
+
+  s.ivy_on = {"objects[9]"};
+  const Result<GardenRun> bad = GardenRun::Start(s, Budget{});
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.status().field(), "ivy") << bad.status().Line();
 }
 
 }  // namespace
