@@ -69,27 +69,26 @@ geom::TriMesh Moved(geom::TriMesh mesh, const glm::vec3& by) {
 
 }  // namespace
 
-double GardenGround::HeightAt(double x, double z) const {
-  if (n <= 0) return 0;
+GardenGround::Plane GardenGround::PlaneAt(double x, double z) const {
+  if (n <= 0) return {};
   const double fx = std::clamp((x + size / 2) / cell, 0.0, static_cast<double>(n));
   const double fz = std::clamp((z + size / 2) / cell, 0.0, static_cast<double>(n));
   const int i = std::min(static_cast<int>(fx), n - 1), j = std::min(static_cast<int>(fz), n - 1);
   const double u = fx - i, v = fz - j;
   const double h00 = At(i, j), h10 = At(i + 1, j), h01 = At(i, j + 1), h11 = At(i + 1, j + 1);
   // Triangles (00, 11, 10) where u >= v and (00, 01, 11) where u < v: Mesh()'s split.
-  return u >= v ? h00 + u * (h10 - h00) + v * (h11 - h10) : h00 + v * (h01 - h00) + u * (h11 - h01);
+  Plane p;
+  p.dx = u >= v ? h10 - h00 : h11 - h01;
+  p.dz = u >= v ? h11 - h10 : h01 - h00;
+  p.h = h00 + u * p.dx + v * p.dz;
+  return p;
 }
 
+double GardenGround::HeightAt(double x, double z) const { return PlaneAt(x, z).h; }
+
 double GardenGround::SlopeAt(double x, double z) const {
-  if (n <= 0) return 0;
-  const double fx = std::clamp((x + size / 2) / cell, 0.0, static_cast<double>(n));
-  const double fz = std::clamp((z + size / 2) / cell, 0.0, static_cast<double>(n));
-  const int i = std::min(static_cast<int>(fx), n - 1), j = std::min(static_cast<int>(fz), n - 1);
-  const double u = fx - i, v = fz - j;
-  const double h00 = At(i, j), h10 = At(i + 1, j), h01 = At(i, j + 1), h11 = At(i + 1, j + 1);
-  const double dx = u >= v ? h10 - h00 : h11 - h01;  // per cell along x
-  const double dz = u >= v ? h11 - h10 : h01 - h00;  // per cell along z
-  const double g = std::sqrt(dx * dx + dz * dz) / cell;
+  const Plane p = PlaneAt(x, z);
+  const double g = std::sqrt(p.dx * p.dx + p.dz * p.dz) / cell;
   return det::Atan2(g, 1.0) * 180.0 / det::kPi;
 }
 

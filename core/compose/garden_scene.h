@@ -33,6 +33,13 @@ struct GardenGround {
   double SlopeAt(double x, double z) const;
   // The ground's triangles (normals by central differences, uvs over the square).
   geom::TriMesh Mesh() const;
+
+ private:
+  // The triangle under (x, z): its height there and its rise per cell along x and along z.
+  struct Plane {
+    double h = 0, dx = 0, dz = 0;
+  };
+  Plane PlaneAt(double x, double z) const;
 };
 
 // One placed object: its mesh in the garden's frame and its plan footprint (a rectangle of half
