@@ -30,6 +30,19 @@ export function pngBytes(width, height, rgba, { declared = null } = {}) {
     chunk('IDAT', deflateSync(rows)), chunk('IEND', Buffer.alloc(0))]);
 }
 
+// width x height 16-bit grey samples, value(x, y) in 0..65535 (row 0 first): a heightmap.
+export function gray16PngBytes(width, height, value) {
+  const ihdr = Buffer.alloc(13);
+  ihdr.writeUInt32BE(width, 0);
+  ihdr.writeUInt32BE(height, 4);
+  ihdr[8] = 16; ihdr[9] = 0;  // 16-bit grey
+  const rows = Buffer.alloc(height * (1 + 2 * width));
+  for (let y = 0; y < height; ++y)
+    for (let x = 0; x < width; ++x) rows.writeUInt16BE(value(x, y), y * (1 + 2 * width) + 1 + 2 * x);
+  return Buffer.concat([Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]), chunk('IHDR', ihdr),
+    chunk('IDAT', deflateSync(rows)), chunk('IEND', Buffer.alloc(0))]);
+}
+
 // A one-triangle glTF JSON whose material's baseColorTexture is image 0 at buffer view 1 (the
 // image bytes after the triangle's 44): with glbBytes and triangleBin (glb_bytes.mjs) a textured
 // .glb; `image` overrides the image entry (e.g. {uri: ...}), `source` the texture's image index.

@@ -1,0 +1,88 @@
+// Garden workloads (core/compose/garden_*, issue 33 item 7): the planting rules alone over a flat
+// 1 km square asking for 100,000 trees (the unit one dart: the goal is 100 k candidates in
+// <= 100 ms, <= 1 us a dart), and the scale workload: a 100 m x 100 m garden on a 512² terrain
+// ground with 100 trees of 10 species grown to 15 years on one clock (shade on), timed once. The
+// scale workload has no ivy or moss yet (the garden does not grow them yet: docs/garden-model.md).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "compose/garden_plant.h"
+#include "compose/garden_run.h"
+#include "compose/garden_scene.h"
+#include "compose/garden_state.h"
+#include "workloads.h"
+
+namespace niwa {
+namespace {
+
+using compose::GardenParam;
+
+Workload Plant() {
+  Workload wl;
+  wl.name = "garden/plant-100k";
+  wl.note =
+      "PlantGarden: the planting rules over a flat 1000 m square, density 0.1 (100,000 "
+      "trees asked for), spacing 1.5 m, slope and altitude open, the default objects; the "
+      "unit one dart (candidate)";
+  wl.unit = "dart";
+  auto units = wl.units;
+  wl.prepare = [units]() -> WorkloadBody {
+    auto state = std::make_shared<compose::GardenState>(compose::DefaultGardenState());
+    (void)state->params.Set(GardenParam::kSize, 1000);
+    (void)state->params.Set(GardenParam::kDensity, 0.1);
+    (void)state->params.Set(GardenParam::kSpacing, 1.5);
+    (void)state->params.Set(GardenParam::kGroundRes, 8);
+    state->ground = compose::GroundKind::kFlat;
+    compose::LayOutDefaults(state.get());
+    auto scene = std::make_shared<compose::GardenScene>();
+    Result<compose::GardenScene> made = compose::BuildGardenScene(*state, Budget{});
+    if (!made.ok()) return []() { return -1.0; };
+    *scene = std::move(*made);
+    return [state, scene, units]() {
+      Result<compose::Planting> p = compose::PlantGarden(*state, *scene);
+      if (!p.ok()) return -1.0;
+      *units = static_cast<double>(p->report.candidates);
+      return static_cast<double>(p->trees.size()) +
+             1e-6 * static_cast<double>(p->report.candidates);
+    };
+  };
+  return wl;
+}
+
+Workload Scale() {
+  Workload wl;
+  wl.name = "garden/scale-100-trees-15y";
+  wl.note =
+      "GardenRun::Start and Advance: 100 m x 100 m, terrain ground at 512², 100 trees of 10 "
+      "species by the rules (density 0.01, spacing 5 m), 15 years on one clock, shade on; "
+      "timed once (cold); no ivy or moss yet";
+  wl.once = true;
+  wl.prepare = []() -> WorkloadBody {
+    return []() {
+      compose::GardenState state = compose::DefaultGardenState();
+      (void)state.params.Set(GardenParam::kSize, 100);
+      (void)state.params.Set(GardenParam::kGroundRes, 512);
+      (void)state.params.Set(GardenParam::kYears, 15);
+      (void)state.params.Set(GardenParam::kDensity, 0.0099);
+      (void)state.params.Set(GardenParam::kSpacing, 5);
+      (void)state.params.Set(GardenParam::kSlopeMax, 90);
+      compose::LayOutDefaults(&state);
+      state.mix.clear();
+      for (const char* s : {"keyaki", "sakura", "maple", "pine", "ginkgo", "weeping", "tsutsuji",
+                            "binary", "keyaki-thesis", "sakura-thesis"})
+        state.mix.push_back({s, 1});
+      Result<compose::GardenRun> run = compose::GardenRun::Start(state, Budget{});
+      if (!run.ok() || !run->Advance({}).ok()) return -1.0;
+      return static_cast<double>(run->planting().trees.size()) +
+             1e-6 * static_cast<double>(run->groups().size());
+    };
+  };
+  return wl;
+}
+
+}  // namespace
+
+std::vector<Workload> GardenWorkloads() { return {Plant(), Scale()}; }
+
+}  // namespace niwa

@@ -1,0 +1,577 @@
+// The garden's run (see garden_run.h).
+#include "compose/garden_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <tuple>
+
+#include "compose/bark_support.h"
+#include "geom/linear_queries.h"
+#include "image/png.h"
+#include "io/gltf_writer.h"
+#include "ivy/ivy_state.h"
+#include "math/det_math.h"
+#include "render/tree_lod.h"
+#include "tree/mesh.h"
+#include "tree/presets.h"
+#include "tree/tree_budget.h"
+#include "tree/tree_state.h"
+
+namespace niwa::compose {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double MsSince(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// Bytes and seconds of one distinct tree's .glb part per triangle of its budget (the LOD mesh,
+// its atlas share and the writer's copies), generous as docs/budgets.md's constants.
+constexpr double kGardenGlbBytesPerTriangle = 400;
+constexpr double kGardenGlbSecondsPerTriangle = 2e-6;
+// The cards' atlas of a distinct tree in the garden's .glb (texels a side; render/tree_lod).
+constexpr int kGardenAtlasSize = 512;
+
+gltf::Material PlainMaterial(const std::string& name, double r, double g, double b,
+                             double roughness) {
+  gltf::Material m;
+  m.name = name;
+  m.base_color_factor = {r, g, b, 1};
+  m.metallic_factor = 0;
+  m.roughness_factor = roughness;
+  return m;
+}
+
+// Appends `from`'s meshes, materials and textures to `into` (indices remapped); returns the
+// offset of its meshes in `into`.
+int AppendGardenDocument(gltf::Document* into, const gltf::Document& from) {
+  const int mesh_base = static_cast<int>(into->meshes.size());
+  const int material_base = static_cast<int>(into->materials.size());
+  // A texture already in `into` with the same bytes and sampler (a species' bark and leaf
+  // textures, the same for every tree of it) is shared, not written again.
+  std::vector<int> texture_at;
+  for (const gltf::Texture& t : from.textures) {
+    int found = -1;
+    for (std::size_t k = 0; k < into->textures.size() && found < 0; ++k) {
+      const gltf::Texture& u = into->textures[k];
+      if (u.png == t.png && u.wrap_s == t.wrap_s && u.wrap_t == t.wrap_t &&
+          u.mag_filter == t.mag_filter && u.min_filter == t.min_filter)
+        found = static_cast<int>(k);
+    }
+    if (found < 0) {
+      found = static_cast<int>(into->textures.size());
+      into->textures.push_back(t);
+    }
+    texture_at.push_back(found);
+  }
+  for (gltf::Material m : from.materials) {
+    for (int* tex : {&m.base_color_texture, &m.metallic_roughness_texture, &m.normal_texture,
+                     &m.occlusion_texture})
+      if (*tex >= 0) *tex = texture_at[static_cast<std::size_t>(*tex)];
+    into->materials.push_back(std::move(m));
+  }
+  for (gltf::Mesh mesh : from.meshes) {
+    for (gltf::Primitive& p : mesh.primitives)
+      if (p.material >= 0) p.material += material_base;
+    into->meshes.push_back(std::move(mesh));
+  }
+  return mesh_base;
+}
+
+std::array<double, 4> YawQuaternion(double rot_deg) {
+  const double half = rot_deg * det::kPi / 360.0;
+  return {0, det::Sin(half), 0, det::Cos(half)};
+}
+
+std::string SpeciesColour(const std::string& species) {
+  static const std::map<std::string, std::string> colours = {
+      {"keyaki", "#5d8f3a"},          {"keyaki-thesis", "#5d8f3a"}, {"sakura", "#d98fa8"},
+      {"sakura-thesis", "#d98fa8"},   {"maple", "#c4502c"},         {"pine", "#2f5d3a"},
+      {"ginkgo", "#d8c03a"},          {"weeping", "#7fa65a"},       {"tsutsuji", "#c0457a"},
+      {"tsutsuji-thesis", "#c0457a"}, {"binary", "#808080"}};
+  const auto it = colours.find(species);
+  return it == colours.end() ? "#4c7a3c" : it->second;
+}
+
+}  // namespace
+
+Result<GardenRun> GardenRun::Start(const GardenState& state, const Budget& budget) {
+  NIWA_RETURN_IF_ERROR(CheckGardenState(state));
+  GardenRun run;
+  run.state_ = state;
+  run.budget_ = budget;
+  auto t0 = Clock::now();
+  Result<GardenScene> scene = BuildGardenScene(state, budget);
+  if (!scene.ok()) return scene.status();
+  run.scene_ = std::move(*scene);
+  run.truncated_by_ = run.scene_.truncated_by;
+  run.ms_ground_ = MsSince(t0);
+  t0 = Clock::now();
+  Result<Planting> planting = PlantGarden(state, run.scene_);
+  if (!planting.ok()) return planting.status();
+  run.planting_ = std::move(*planting);
+  run.ms_plant_ = MsSince(t0);
+
+  // Groups: a tree with a neighbour within shade_reach (shade 1) is grown on its own; the rest
+  // share one growth per (species, seed, age).
+  const std::vector<PlacedTree>& trees = run.planting_.trees;
+  const bool shade = state.params.GetBool(GardenParam::kShade);
+  const double reach = state.params.Get(GardenParam::kShadeReach);
+  std::vector<bool> near(trees.size(), false);
+  if (shade) {
+    for (std::size_t a = 0; a < trees.size(); ++a)
+      for (std::size_t b = a + 1; b < trees.size(); ++b) {
+        const double dx = trees[a].x - trees[b].x, dz = trees[a].z - trees[b].z;
+        if (dx * dx + dz * dz < reach * reach) near[a] = near[b] = true;
+      }
+  }
+  std::map<std::tuple<std::string, uint64_t, int>, int> shared;
+  run.tree_group_.assign(trees.size(), -1);
+  for (std::size_t t = 0; t < trees.size(); ++t) {
+    const PlacedTree& p = trees[t];
+    const auto key = std::make_tuple(p.species, p.seed, p.age);
+    const auto it = near[t] ? shared.end() : shared.find(key);
+    int g = it != shared.end() ? it->second : -1;
+    if (g < 0) {
+      g = static_cast<int>(run.groups_.size());
+      if (!near[t]) shared[key] = g;
+      GardenTreeGroup group;
+      group.species = p.species;
+      group.seed = p.seed;
+      group.age = p.age;
+      group.shaded = near[t];
+      group.name = near[t]
+                       ? p.species + "_t" + std::to_string(t)
+                       : p.species + "_s" + std::to_string(p.seed) + "_a" + std::to_string(p.age);
+      run.groups_.push_back(std::move(group));
+    }
+    run.groups_[g].trees.push_back(static_cast<int>(t));
+    run.tree_group_[t] = g;
+  }
+  // Each group's growth within an equal share of the budget above the process's own base (the
+  // tree's limits count that base once per tree; its limits stop a tree with a line).
+  const double groups = std::max<double>(1, static_cast<double>(run.groups_.size()));
+  const int years = state.params.GetInt(GardenParam::kYears);
+  for (GardenTreeGroup& g : run.groups_) {
+    TreeState ts;
+    NIWA_RETURN_IF_ERROR(SetStatePreset(g.species, &ts));
+    NIWA_RETURN_IF_ERROR(SetStateSeed(static_cast<double>(g.seed), &ts));
+    NIWA_RETURN_IF_ERROR(SetStateYears(std::min(kMaxYears, g.age + years), &ts).Within("years"));
+    ts.limits = TreeGrowLimits(ts.params, budget, "years");
+    ts.limits.max_bytes =
+        ts.limits.base_bytes + std::max(0.0, ts.limits.max_bytes - ts.limits.base_bytes) / groups;
+    ts.limits.max_seconds /= groups;
+    g.grower = std::make_unique<Grower>(ts);
+  }
+  return run;
+}
+
+Status GardenRun::Advance(const run::Observer& observer) {
+  const auto t0 = Clock::now();
+  const int years = target();
+  if (!nursery_done_) {
+    // The nursery: a tree planted at age a grows its first a years alone, before the clock.
+    for (GardenTreeGroup& g : groups_)
+      while (g.grower->year() < g.age && !g.grower->stopped()) g.grower->GrowYear();
+    nursery_done_ = true;
+  }
+  while (year_ < years) {
+    if (observer && !observer({"grow", static_cast<double>(year_), static_cast<double>(years)}))
+      return run::CancelledStatus();
+    for (GardenTreeGroup& g : groups_)
+      if (g.grower->year() < g.age + year_ + 1 && !g.grower->stopped()) g.grower->GrowYear();
+    ++year_;
+  }
+  if (observer) observer({"grow", static_cast<double>(year_), static_cast<double>(years)});
+  if (!ivy_ && !state_.ivy_on.empty() && state_.params.GetInt(GardenParam::kIvySteps) > 0 &&
+      years > 0) {
+    if (observer && !observer({"ivy", 0, 1})) return run::CancelledStatus();
+    const auto ti = Clock::now();
+    NIWA_RETURN_IF_ERROR(GrowIvy());
+    ms_ivy_ = MsSince(ti);
+  }
+  for (const GardenTreeGroup& g : groups_)
+    if (truncated_by_.empty() && g.grower->tree().truncated)
+      truncated_by_ = g.name + ": " + g.grower->tree().truncated_by;
+  ms_trees_ += MsSince(t0);
+  return Status::Ok();
+}
+
+namespace {
+
+// Trees whose trunk stands within this of an ivy seed's foot lend their bark to the ivy's support.
+constexpr double kIvyTreeReach = 6;
+// Bytes and seconds the ivy's support takes per triangle (its mesh and BVHs), as ivy_budget's.
+constexpr double kIvySupportBytesPerTriangle = 160, kIvySupportSecondsPerTriangle = 1e-6;
+
+void AppendMoved(geom::TriMesh* into, const geom::TriMesh& part, double x, double y, double z,
+                 double rot_deg) {
+  const double a = rot_deg * det::kPi / 180.0;
+  const float c = static_cast<float>(det::Cos(a)), s = static_cast<float>(det::Sin(a));
+  const uint32_t base = static_cast<uint32_t>(into->positions.size());
+  for (const glm::vec3& p : part.positions)
+    into->positions.emplace_back(c * p.x + s * p.z + static_cast<float>(x),
+                                 p.y + static_cast<float>(y),
+                                 -s * p.x + c * p.z + static_cast<float>(z));
+  for (uint32_t i : part.indices) into->indices.push_back(base + i);
+}
+
+}  // namespace
+
+Status GardenRun::GrowIvy() {
+  // The support: the ground, every object, and the bark of the trees near a seed, as they stand
+  // after the clock (the ivy is grown on the grown garden: docs/garden-model.md).
+  ivy::IvyScene scene;
+  scene.name = "garden";
+  scene.description = "the garden's ground, objects and trunks (metres)";
+  scene.px_per_unit = 1000;  // metres: the ivy's px are mm
+  scene.mesh = scene_.ground.Mesh();
+  scene.mesh.normals.clear();
+  scene.mesh.uvs.clear();
+  for (const PlacedObject& o : scene_.objects) AppendMoved(&scene.mesh, o.mesh, 0, 0, 0, 0);
+  std::vector<glm::dvec3> feet;
+  for (const std::string& on : state_.ivy_on) {
+    Result<GardenIvyTarget> t = ParseIvyTarget(on, state_);
+    if (!t.ok()) return t.status();
+    if (t->object) {
+      const PlacedObject& o = scene_.objects[t->index];
+      feet.emplace_back(o.x, o.base_y, o.z);
+    } else {
+      const PlacedTree& p = planting_.trees[t->index];  // hand-placed trees come first
+      feet.emplace_back(p.x, p.y, p.z);
+    }
+  }
+  std::map<int, geom::TriMesh> bark_of_group;
+  std::vector<std::pair<int, std::size_t>> tree_parts;  // (tree, first vertex) in the support
+  for (std::size_t t = 0; t < planting_.trees.size(); ++t) {
+    const PlacedTree& p = planting_.trees[t];
+    bool near = false;
+    for (const glm::dvec3& f : feet)
+      near = near || std::hypot(f.x - p.x, f.z - p.z) <= kIvyTreeReach;
+    if (!near) continue;
+    const int g = tree_group_[t];
+    if (!bark_of_group.count(g))
+      bark_of_group[g] = BarkTriMesh(BuildTreeMesh(groups_[g].grower->tree()).bark);
+    tree_parts.emplace_back(static_cast<int>(t), scene.mesh.positions.size());
+    AppendMoved(&scene.mesh, bark_of_group[g], p.x, p.y, p.z, p.rot);
+  }
+  const double triangles = static_cast<double>(scene.mesh.triangle_count());
+  const Estimate support{triangles * kIvySupportBytesPerTriangle,
+                         triangles * kIvySupportSecondsPerTriangle,
+                         "the ivy's support (" + FormatCount(triangles) + " triangles)"};
+  // Each seed: the support point nearest to a point just outside its object's footprint (south,
+  // 0.3 m up) or its trunk's foot (south, 0.3 m up).
+  for (std::size_t k = 0; k < state_.ivy_on.size(); ++k) {
+    Result<GardenIvyTarget> t = ParseIvyTarget(state_.ivy_on[k], state_);
+    glm::dvec3 probe;
+    geom::TriMesh part;
+    if (t->object) {
+      const PlacedObject& o = scene_.objects[t->index];
+      const double a = o.rot * det::kPi / 180.0;
+      const double lz = o.hz + 0.02;
+      probe = {o.x + det::Sin(a) * lz, o.base_y + 0.3, o.z + det::Cos(a) * lz};
+      part = o.mesh;
+    } else {
+      const PlacedTree& p = planting_.trees[t->index];
+      probe = {p.x, p.y + 0.3, p.z + 0.05};
+      AppendMoved(&part, bark_of_group[tree_group_[t->index]], p.x, p.y, p.z, p.rot);
+    }
+    const geom::ClosestHit hit =
+        geom::ClosestPointLinear(part, glm::vec3(probe), std::numeric_limits<float>::infinity());
+    if (!hit.found)
+      return Status::Error("ivy", "'" + state_.ivy_on[k] + "' has no surface to climb");
+    scene.seeds.push_back({state_.ivy_on[k], glm::dvec3(hit.point)});
+  }
+  ivy::IvyState ivy_state;
+  NIWA_RETURN_IF_ERROR(ivy::SetIvyPreset(state_.ivy_preset, &ivy_state).Within("ivy"));
+  NIWA_RETURN_IF_ERROR(
+      ivy::SetIvySeed(state_.params.Get(GardenParam::kPlantSeed), &ivy_state).Within("ivy"));
+  NIWA_RETURN_IF_ERROR(
+      ivy::SetIvySteps(std::min(10000, state_.params.GetInt(GardenParam::kIvySteps) * year_),
+                       &ivy_state)
+          .Within("ivy_steps"));
+  ivy_state.seed_point_items = state_.ivy_on;
+  ivy::IvySupportOptions options = ivy::IvySupportOptions::For(ivy_state);
+  options.change = "lower ivy_steps or the ivy seeds";
+  Result<std::shared_ptr<const ivy::IvySupport>> prepared = ivy::IvySupport::Prepare(
+      ivy::IvySupportInput::Prepared(std::move(scene), support, ""), options, budget_);
+  if (!prepared.ok()) return prepared.status();
+  ivy::IvyRunOptions run_options;
+  run_options.change = "lower ivy_steps or the ivy seeds";
+  Result<ivy::IvyRun> run = ivy::IvyRun::Start(ivy_state, *prepared, budget_, run_options);
+  if (!run.ok()) return run.status();
+  NIWA_RETURN_IF_ERROR(run->Advance(nullptr));
+  if (truncated_by_.empty() && !run->log().truncated_by.empty())
+    truncated_by_ = "ivy: " + run->log().truncated_by;
+  ivy_ = std::make_unique<ivy::IvyRun>(std::move(*run));
+  return Status::Ok();
+}
+
+double GardenRun::CrownRadius(int group) const {
+  double r2 = 0;
+  for (const Branch& b : groups_[group].grower->tree().branches) {
+    if (!b.alive) continue;
+    for (const glm::vec3& p : b.nodes)
+      r2 = std::max(r2, static_cast<double>(p.x) * p.x + static_cast<double>(p.z) * p.z);
+  }
+  return std::sqrt(r2) / 100.0;  // nodes are in cm
+}
+
+glm::dvec3 GardenRun::CrownCentroid(int t) const {
+  const PlacedTree& p = planting_.trees[t];
+  const Tree& tree = groups_[tree_group_[t]].grower->tree();
+  glm::dvec3 sum(0.0);
+  double n = 0;
+  for (const Branch& b : tree.branches) {
+    if (!b.alive) continue;
+    for (const Leaf& leaf : b.leaves) {
+      sum += glm::dvec3(b.nodes[leaf.node]);
+      n += 1;
+    }
+  }
+  glm::dvec3 local = n > 0 ? sum / n / 100.0 : glm::dvec3(0.0);
+  const double a = p.rot * det::kPi / 180.0;
+  const double c = det::Cos(a), s = det::Sin(a);
+  return {p.x + c * local.x + s * local.z, p.y + local.y, p.z - s * local.x + c * local.z};
+}
+
+std::vector<run::Part> GardenRun::Parts() const {
+  std::vector<run::Part> parts;
+  run::Part ground;
+  ground.name = "ground";
+  ground.mesh = scene_.ground.Mesh();
+  ground.material = PlainMaterial("ground", 0.36, 0.42, 0.24, 0.95);
+  parts.push_back(std::move(ground));
+  for (std::size_t k = 0; k < scene_.objects.size(); ++k) {
+    run::Part o;
+    o.name = "object_" + std::to_string(k) + "_" + scene_.objects[k].kind;
+    o.mesh = scene_.objects[k].mesh;
+    o.material = scene_.objects[k].kind == "wall" ? PlainMaterial("plaster", 0.86, 0.82, 0.74, 0.9)
+                                                  : PlainMaterial("stone", 0.52, 0.52, 0.5, 0.85);
+    parts.push_back(std::move(o));
+  }
+  return parts;
+}
+
+Result<gltf::Document> GardenRun::Document() const {
+  gltf::Document doc;
+  doc.scene_name = "garden";
+  nlohmann::ordered_json extras;
+  extras["niwa"] = {{"study", "garden"}, {"url", "#" + Hash("")}};
+  doc.asset_extras_json = extras.dump();
+  for (const run::Part& part : Parts()) {
+    gltf::Mesh mesh;
+    mesh.name = part.name;
+    gltf::Primitive prim;
+    prim.mesh = part.mesh;
+    prim.material = static_cast<int>(doc.materials.size());
+    doc.materials.push_back(part.material);
+    mesh.primitives.push_back(std::move(prim));
+    gltf::Node node;
+    node.name = part.name;
+    node.mesh = static_cast<int>(doc.meshes.size());
+    doc.meshes.push_back(std::move(mesh));
+    doc.scene_nodes.push_back(static_cast<int>(doc.nodes.size()));
+    doc.nodes.push_back(std::move(node));
+  }
+  if (ivy_) {
+    Result<gltf::Document> ivy_doc = ivy_->Document();
+    if (!ivy_doc.ok()) return ivy_doc.status();
+    const int mesh_base = AppendGardenDocument(&doc, *ivy_doc);
+    for (const gltf::Node& n : ivy_doc->nodes) {
+      if (n.mesh < 0) continue;
+      gltf::Node node;
+      node.name = "ivy_" + n.name;
+      node.mesh = mesh_base + n.mesh;
+      doc.scene_nodes.push_back(static_cast<int>(doc.nodes.size()));
+      doc.nodes.push_back(std::move(node));
+    }
+  }
+  const long max_triangles = state_.params.GetInt(GardenParam::kMaxTriangles);
+  const bool lod = state_.params.GetBool(GardenParam::kLod);
+  const bool instancing = state_.params.GetBool(GardenParam::kInstancing);
+  LodOptions options;
+  options.atlas_size = kGardenAtlasSize;
+  for (const GardenTreeGroup& g : groups_) {
+    std::vector<LodMesh> levels;
+    if (lod) {
+      Result<std::vector<LodMesh>> made =
+          BuildLodLevels(g.grower->tree(), max_triangles, options, "max_triangles");
+      if (!made.ok()) return made.status();
+      levels = std::move(*made);
+    } else {
+      Result<LodMesh> made =
+          BuildLodMesh(g.grower->tree(), max_triangles, options, "max_triangles");
+      if (!made.ok()) return made.status();
+      levels.push_back(std::move(*made));
+    }
+    Result<gltf::Document> tree_doc = LodGltfDocument(levels, g.name);
+    if (!tree_doc.ok()) return tree_doc.status();
+    const int mesh_base = AppendGardenDocument(&doc, *tree_doc);
+    // The tree document's nodes, one a level, each name its level's mesh.
+    for (const gltf::Node& level : tree_doc->nodes) {
+      if (level.mesh < 0) continue;
+      const int mesh = mesh_base + level.mesh;
+      if (instancing) {
+        gltf::Node node;
+        node.name = level.name;
+        node.mesh = mesh;
+        for (int t : g.trees) {
+          const PlacedTree& p = planting_.trees[t];
+          node.instance_translations.insert(
+              node.instance_translations.end(),
+              {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)});
+          const std::array<double, 4> q = YawQuaternion(p.rot);
+          for (double v : q) node.instance_rotations.push_back(static_cast<float>(v));
+        }
+        doc.scene_nodes.push_back(static_cast<int>(doc.nodes.size()));
+        doc.nodes.push_back(std::move(node));
+      } else {
+        for (int t : g.trees) {
+          const PlacedTree& p = planting_.trees[t];
+          gltf::Node node;
+          node.name = g.name + "_" + std::to_string(t) +
+                      (levels.size() > 1 ? level.name.substr(level.name.rfind('_')) : "");
+          node.mesh = mesh;
+          node.translation = {p.x, p.y, p.z};
+          node.rotation = YawQuaternion(p.rot);
+          doc.scene_nodes.push_back(static_cast<int>(doc.nodes.size()));
+          doc.nodes.push_back(std::move(node));
+        }
+      }
+    }
+  }
+  return doc;
+}
+
+std::string GardenRun::StatsJson() const {
+  nlohmann::ordered_json j;
+  j["study"] = "garden";
+  j["years"] = year_;
+  j["size"] = state_.params.Get(GardenParam::kSize);
+  j["ground"] = {
+      {"source", scene_.ground.source}, {"res", scene_.ground.n}, {"relief", scene_.ground.relief}};
+  j["objects"] = scene_.objects.size();
+  std::map<std::string, long> by_species;
+  for (const PlacedTree& t : planting_.trees) ++by_species[t.species];
+  double internodes = 0, leaves = 0;
+  long shaded = 0;
+  for (std::size_t t = 0; t < planting_.trees.size(); ++t) {
+    const TreeCounts c = CountTree(groups_[tree_group_[t]].grower->tree());
+    internodes += c.internodes;
+    leaves += c.leaves;
+  }
+  for (const GardenTreeGroup& g : groups_) shaded += g.shaded ? 1 : 0;
+  nlohmann::ordered_json species = nlohmann::ordered_json::object();
+  for (const auto& [name, count] : by_species) species[name] = count;
+  j["trees"] = {{"count", planting_.trees.size()}, {"distinct", groups_.size()},
+                {"grown_with_neighbours", shaded}, {"by_species", species},
+                {"internodes", internodes},        {"leaves", leaves}};
+  j["planting"] = nlohmann::ordered_json::parse(PlantingJson(planting_))["report"];
+  if (ivy_) {
+    j["ivy"] = {{"seeds", state_.ivy_on.size()},
+                {"steps", ivy_->log().steps_run},
+                {"internodes", ivy_->model().internodes.size()},
+                {"support_triangles", ivy_->support().triangles()}};
+  }
+  if (!truncated_by_.empty()) j["truncated_by"] = truncated_by_;
+  return j.dump();
+}
+
+std::string GardenRun::Hash(const std::string& prefix) const {
+  return EncodeGardenHash(state_, prefix);
+}
+
+Result<Estimate> GardenRun::ExportEstimate(const std::string& format) const {
+  const double groups = static_cast<double>(groups_.size());
+  const double ground_vertices = static_cast<double>(scene_.ground.n + 1) * (scene_.ground.n + 1);
+  if (format == "glb") {
+    const double tri = static_cast<double>(state_.params.GetInt(GardenParam::kMaxTriangles)) *
+                       (state_.params.GetBool(GardenParam::kLod) ? 1.3 : 1.0);
+    return Estimate{groups * tri * kGardenGlbBytesPerTriangle + ground_vertices * 120 +
+                        groups * 4.0 * kGardenAtlasSize * kGardenAtlasSize,
+                    groups * tri * kGardenGlbSecondsPerTriangle + ground_vertices * 1e-6,
+                    "writing the garden's .glb (" + FormatCount(groups) + " distinct trees)"};
+  }
+  if (format == "heightmap" || format == "svg" || format == "json")
+    return Estimate{ground_vertices * 16 + static_cast<double>(planting_.trees.size()) * 200.0,
+                    ground_vertices * 1e-7, "writing the garden's " + format};
+  return Status::Error("format", "'" + format +
+                                     "' is not an export; must be glb, heightmap, svg "
+                                     "or json");
+}
+
+Result<std::string> GardenRun::Export(const std::string& format) const {
+  if (format == "glb") {
+    Result<gltf::Document> doc = Document();
+    if (!doc.ok()) return doc.status();
+    Result<std::vector<unsigned char>> glb = gltf::WriteGlb(*doc);
+    if (!glb.ok()) return glb.status();
+    return std::string(glb->begin(), glb->end());
+  }
+  if (format == "json") return PlantingJson(planting_);
+  if (format == "heightmap") {
+    const GardenGround& g = scene_.ground;
+    image::Gray16Image img;
+    img.width = img.height = g.n + 1;
+    img.pixels.resize(static_cast<std::size_t>(img.width) * img.height);
+    for (std::size_t k = 0; k < g.h.size(); ++k)
+      img.pixels[k] = static_cast<uint16_t>(
+          g.relief > 0 ? std::lround(std::clamp(g.h[k] / g.relief, 0.0, 1.0) * 65535.0) : 0);
+    image::PngWriteOptions options;
+    options.text = {{"niwa:size_m", FormatNumber(g.size)},
+                    {"niwa:relief_m", FormatNumber(g.relief)},
+                    {"niwa:rows", "row 0 is the north edge (z = -size/2), column 0 the west"}};
+    Result<std::vector<unsigned char>> png = image::EncodeGray16Png(img, options);
+    if (!png.ok()) return png.status();
+    return std::string(png->begin(), png->end());
+  }
+  if (format == "svg") {
+    // The plan, north up: the ground shaded by height, objects as their footprints, each tree a
+    // circle of its crown's reach in its species' colour.
+    const GardenGround& g = scene_.ground;
+    const double px = 800.0 / g.size;
+    std::string svg =
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"800\" "
+        "viewBox=\"0 0 800 800\">\n";
+    const int cells = std::min(g.n, 64);
+    const double step = g.size / cells;
+    for (int j = 0; j < cells; ++j)
+      for (int i = 0; i < cells; ++i) {
+        const double h = g.HeightAt(-g.size / 2 + (i + 0.5) * step, -g.size / 2 + (j + 0.5) * step);
+        const int shade = static_cast<int>(150 + 80 * (g.relief > 0 ? h / g.relief : 0));
+        svg += "<rect x=\"" + FormatNumber(i * step * px) + "\" y=\"" +
+               FormatNumber(j * step * px) + "\" width=\"" + FormatNumber(step * px + 0.5) +
+               "\" height=\"" + FormatNumber(step * px + 0.5) + "\" fill=\"rgb(" +
+               std::to_string(shade - 40) + "," + std::to_string(shade) + "," +
+               std::to_string(shade - 70) + ")\"/>\n";
+      }
+    for (const PlacedObject& o : scene_.objects) {
+      svg += "<rect class=\"object\" x=\"" + FormatNumber((o.x - o.hx + g.size / 2) * px) +
+             "\" y=\"" + FormatNumber((o.z - o.hz + g.size / 2) * px) + "\" width=\"" +
+             FormatNumber(2 * o.hx * px) + "\" height=\"" + FormatNumber(2 * o.hz * px) +
+             "\" transform=\"rotate(" + FormatNumber(-o.rot) + " " +
+             FormatNumber((o.x + g.size / 2) * px) + " " + FormatNumber((o.z + g.size / 2) * px) +
+             ")\" fill=\"#8a8478\" stroke=\"#333\"><title>" + o.kind + "</title></rect>\n";
+    }
+    for (std::size_t t = 0; t < planting_.trees.size(); ++t) {
+      const PlacedTree& p = planting_.trees[t];
+      const double r = std::max(0.3, CrownRadius(tree_group_[t]));
+      svg += "<circle class=\"tree\" cx=\"" + FormatNumber((p.x + g.size / 2) * px) + "\" cy=\"" +
+             FormatNumber((p.z + g.size / 2) * px) + "\" r=\"" + FormatNumber(r * px) +
+             "\" fill=\"" + SpeciesColour(p.species) +
+             "\" fill-opacity=\"0.55\" stroke=\"#222\"><title>" + p.species + " seed " +
+             std::to_string(p.seed) + (p.hand >= 0 ? " (by hand)" : "") + "</title></circle>\n";
+    }
+    svg += "</svg>\n";
+    return svg;
+  }
+  return Status::Error("format", "'" + format +
+                                     "' is not an export; must be glb, heightmap, svg "
+                                     "or json");
+}
+
+}  // namespace niwa::compose

@@ -1,0 +1,108 @@
+// The garden's run (issue 33, docs/garden-model.md): the stage (ground and objects), the planting,
+// and every tree grown year by year on one clock, as a run::StudyRun the CLI (`niwa garden grow`)
+// and, next, the page call. Trees that are the same (species, seed, age) and stand apart from
+// every other tree (shade off, or no trunk within shade_reach) are grown once and placed as
+// copies; a tree with a neighbour within reach is grown on its own, shaded by its neighbours'
+// leaves each year when shade is 1 (compose/tree_neighbours). Outputs: the .glb (ground, objects,
+// each distinct tree once within max_triangles (render/tree_lod), its copies as
+// EXT_mesh_gpu_instancing or plain nodes sharing the mesh, optional _LOD1/_LOD2), the 16-bit
+// heightmap of the ground, the plan as SVG, the stats. Ivy (paper 004) grows from the state's seeds
+// at the feet of objects and hand-placed trees, climbing the objects, the trunks near them and the
+// ground. Does not (yet): grow moss or simulated bark in the garden (their studies run alone or
+// on one tree: compose/moss_on_tree, bark_on_tree), replay years without regrowing, read files,
+// or name a flag.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "base/budget.h"
+#include "base/status.h"
+#include "compose/garden_plant.h"
+#include "compose/garden_scene.h"
+#include "compose/garden_state.h"
+#include "ivy/ivy_run.h"
+#include "run/study_run.h"
+#include "tree/growth.h"
+
+namespace niwa::compose {
+
+// ---- data ----
+
+// One distinct grown tree and the planted trees that are copies of it.
+struct GardenTreeGroup {
+  std::string species;
+  uint64_t seed = 1;
+  int age = 0;             // years before the garden's clock starts
+  std::vector<int> trees;  // indices into Planting::trees (one when grown on its own)
+  bool shaded = false;     // grown with its neighbours' shade
+  std::unique_ptr<Grower> grower;
+  std::string name;  // "keyaki_s1_a0", "keyaki_t3" (a tree grown on its own)
+};
+
+// ---- the run ----
+
+class GardenRun : public run::StudyRun {
+ public:
+  // Builds the stage and plants it (the state checked first, then every tree's growth estimated
+  // against `budget`: each group gets an equal share of it). Errors name state fields
+  // ("plants[1].pos", "ground.terrain", "density") or the budget's limit ("lower years, density or
+  // size").
+  static Result<GardenRun> Start(const GardenState& state, const Budget& budget);
+
+  const char* study() const override { return "garden"; }
+  const char* unit() const override { return "years"; }
+  int done() const override { return year_; }
+  int target() const override { return state_.params.GetInt(GardenParam::kYears); }
+
+  // Grows every tree to the garden's years on one clock (a tree planted at age a is first grown
+  // a years alone: the nursery), year by year; the observer sees {"grow", year, years}. A cancel
+  // stops at the last whole year.
+  Status Advance(const run::Observer& observer) override;
+
+  // ground, objects, and one part per distinct tree (its full mesh's bark and leaves, at the
+  // origin): what a page draws with the placements.
+  std::vector<run::Part> Parts() const override;
+  Result<gltf::Document> Document() const override;
+  std::string StatsJson() const override;
+  std::string Hash(const std::string& prefix) const override;
+  // "glb", "heightmap" (16-bit PNG), "svg", "json" (the planting).
+  Result<Estimate> ExportEstimate(const std::string& format) const override;
+  Result<std::string> Export(const std::string& format) const;
+
+  const GardenState& state() const { return state_; }
+  const GardenScene& scene() const { return scene_; }
+  const Planting& planting() const { return planting_; }
+  const std::vector<GardenTreeGroup>& groups() const { return groups_; }
+  // The group of planted tree t.
+  int group_of(int t) const { return tree_group_[t]; }
+  // Horizontal reach of a group's crown (m): the farthest alive node from the trunk's axis.
+  double CrownRadius(int group) const;
+  // The leaf-area centroid of planted tree t, in the garden's frame (m).
+  glm::dvec3 CrownCentroid(int t) const;
+  const std::string& truncated_by() const { return truncated_by_; }
+  // The garden's ivy once grown (nullptr without ivy seeds, ivy_steps 0 or before Advance).
+  const ivy::IvyRun* ivy() const { return ivy_.get(); }
+  double ms_ivy() const { return ms_ivy_; }
+  double ms_ground() const { return ms_ground_; }
+  double ms_plant() const { return ms_plant_; }
+  double ms_trees() const { return ms_trees_; }
+
+ private:
+  GardenState state_;
+  Budget budget_;
+  GardenScene scene_;
+  Planting planting_;
+  std::vector<GardenTreeGroup> groups_;
+  std::vector<int> tree_group_;
+  int year_ = 0;
+  bool nursery_done_ = false;
+  std::string truncated_by_;
+  double ms_ground_ = 0, ms_plant_ = 0, ms_trees_ = 0, ms_ivy_ = 0;
+  std::unique_ptr<ivy::IvyRun> ivy_;
+  // Grows the state's ivy on the garden as it stands after the clock (see docs/garden-model.md).
+  Status GrowIvy();
+};
+
+}  // namespace niwa::compose

@@ -1,0 +1,128 @@
+// The garden's state (issue 33 item 1): the garden table's values, the ground (flat, a terrain
+// grown from a seed contour, or a 16-bit heightmap), the objects placed on it (walls, rocks,
+// stone lanterns), the plants placed by hand, the planting rules' species mix and density mask,
+// read from a state JSON or a share-link hash and written back. Does not: read files (a front end
+// reads the heightmap and the mask and hands their bytes in), place or grow anything
+// (garden_plant.h, garden_run.h), or name a flag (errors name state fields: "plants[2].pos").
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "base/status.h"
+#include "compose/garden_params.h"
+#include "terrain/terrain_state.h"
+
+namespace niwa::compose {
+
+// ---- data ----
+
+enum class GroundKind { kFlat, kTerrain, kHeightmap };
+
+// A built-in object placed on the ground: its base's centre at (x, ground height, z), turned by
+// rot degrees about y (counter-clockwise seen from above), scaled by scale.
+struct GardenObject {
+  std::string kind;  // "wall", "rock" or "lantern" (GardenObjectKinds)
+  double x = 0, z = 0, rot = 0, scale = 1;
+};
+
+// A tree placed by hand: a tree preset (niwa presets tree), its seed, its age when the garden
+// starts (it grows age + years), its trunk foot at (x, ground height, z), turned rot degrees.
+struct GardenPlant {
+  std::string species;
+  uint64_t seed = 1;
+  int age = 0;
+  double x = 0, z = 0, rot = 0;
+};
+
+// A species of the planting rules with its relative weight (> 0).
+struct SpeciesWeight {
+  std::string species;
+  double weight = 1;
+};
+
+struct GardenState {
+  GardenParams params;
+  GroundKind ground = GroundKind::kTerrain;
+  terrain::TerrainState terrain;  // the ground when kTerrain (its heights scaled to `relief`)
+  // kHeightmap: a 16-bit (or 8-bit) grey PNG, row 0 the north (−z) edge, read by the front end.
+  std::string heightmap_name;
+  std::vector<unsigned char> heightmap_png;
+  // The planting rules' density mask: a grey or colour PNG over the garden (row 0 north), its
+  // luminance the chance a candidate is kept; none when empty.
+  std::string mask_name;
+  std::vector<unsigned char> mask_png;
+  std::vector<GardenObject> objects;
+  std::vector<GardenPlant> plants;
+  std::vector<SpeciesWeight> mix;
+  // Ivy: the things it starts at the foot of ("objects[i]" or "plants[i]", the hand-placed
+  // trees), grown with the ivy preset `ivy_preset` (niwa presets ivy).
+  std::vector<std::string> ivy_on;
+  std::string ivy_preset = "artist";
+  // True until objects or plants are given (a state JSON's lists, a link's): the objects and the
+  // hand-placed tree are then the default layout, laid out anew for the garden's size
+  // (LayOutDefaults), so a smaller garden keeps them inside.
+  bool default_layout = true;
+};
+
+// ---- limits ----
+
+constexpr std::size_t kMaxGardenObjects = 256;
+constexpr std::size_t kMaxGardenPlants = 1000;  // hand-placed
+constexpr std::size_t kMaxGardenMix = 16;
+constexpr int kMaxPlantAge = 60;
+constexpr double kMaxGardenSeed = 4294967295.0;
+
+// A thing ivy starts at: objects[index] or plants[index].
+struct GardenIvyTarget {
+  bool object = false;
+  std::size_t index = 0;
+};
+
+constexpr std::size_t kMaxGardenIvy = 64;
+
+// ---- functions ----
+
+// "objects[2]" or "plants[0]" of `state`; error "ivy" when it names nothing there.
+Result<GardenIvyTarget> ParseIvyTarget(std::string_view text, const GardenState& state);
+
+// "wall", "rock", "lantern".
+const std::vector<std::string>& GardenObjectKinds();
+
+// With state->default_layout, the default objects and hand-placed tree at their shares of the
+// garden's size (at 40 m: a wall 12 m north, two rocks, a lantern, a keyaki); else nothing.
+void LayOutDefaults(GardenState* state);
+
+// The small default garden every front end starts from (a result with no input): a 40 m terrain
+// ground 6 m high, a wall, two rocks and a stone lantern, a keyaki placed by hand, and rules
+// planting keyaki, sakura and maple.
+GardenState DefaultGardenState();
+
+// Checks what the table's ranges cannot: species names (tree presets), object kinds, every
+// position inside the garden, alt_min <= alt_max, a non-empty mix when density > 0. Errors name
+// the field ("plants[1].species", "objects[0].pos", "mix", "alt_min").
+Status CheckGardenState(const GardenState& state);
+
+// Applies {params: {...}, ground: {kind: "flat" | "terrain" | "heightmap", terrain: {...the
+// terrain's state JSON...}, file: "h.png"}, objects: [{kind, pos: [x, z], rot, scale}], plants:
+// [{species, seed, age, pos: [x, z], rot}], mix: {species: weight}, mask: "m.png", ivy: {preset,
+// on: ["objects[0]", "plants[1]"]}} onto state.
+// Given lists replace the state's; a heightmap's and a mask's file names are kept for the front end
+// to read (their bytes are cleared). Strict: the first bad field is the error, the state unchanged.
+Status ApplyGardenStateJson(const std::string& text, GardenState* state);
+// What ApplyGardenStateJson reads back to the same state (files by name).
+std::string GardenStateJson(const GardenState& state);
+
+// The share-link hash: the table's rows that differ from the defaults, ground=flat|terrain|
+// heightmap, the terrain's keys under "terrain.", objects=kind:x:z:rot:scale,..., plants=
+// species:seed:age:x:z:rot,..., mix=species:weight,..., ivy=objects[0],..., ivy_preset=artist (a
+// heightmap or a mask is not carried: a link of such a garden says so in `notices` when read). Keys
+// carry `prefix`.
+std::string EncodeGardenHash(const GardenState& state, std::string_view prefix = "");
+// Forgiving, as every study's hash: bad values clamped or dropped with a printable notice each.
+void ApplyGardenHash(std::string_view hash, std::string_view prefix, GardenState* state,
+                     std::vector<std::string>* notices);
+
+}  // namespace niwa::compose

@@ -1,0 +1,111 @@
+// Garden CLI (issue 33 items 4, 8): native == WASM bytes of `niwa garden grow --stats` (timings
+// aside), its .glb, 16-bit heightmap and plan .svg, and of `niwa garden plant`; the stats' counts
+// (trees by species, distinct trees, refusals by rule adding up to the darts); the link a grow
+// prints regrows the same garden; a heightmap ground and a mask read from files named beside the
+// garden file; bad input (a row out of range, a hand-placed tree in a wall, an unknown species, a
+// bad heightmap) one line naming the field, exit 2, nothing written.
+import { mkdtempSync, readFileSync, writeFileSync, existsSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { buildName, check, finish, native, requireWasm, spawn, wasm, withoutMs } from '../support/cli_pair.mjs';
+import { gray16PngBytes, pngBytes } from '../support/png_bytes.mjs';
+
+requireWasm();
+const work = mkdtempSync(join(tmpdir(), 'niwa-garden-'));
+const small = ['--set', 'size=20', '--set', 'ground_res=32', '--set', 'density=0.03', '--set', 'spacing=2',
+  '--set', 'max_triangles=2000', '--years', '3'];
+
+// 1. grow: native == WASM bytes.
+const got = {};
+for (const cmd of [native, wasm]) {
+  const dir = join(work, buildName(cmd));
+  spawn('mkdir', ['-p', dir]);
+  const r = spawn(cmd, ['garden', 'grow', ...small, '--stats', '--out', join(dir, 'g.glb'), '--heightmap', join(dir, 'h.png'),
+    '--svg', join(dir, 'plan.svg')]);
+  check(`grow ${buildName(cmd)}: exit 0`, r.status === 0, r.stderr);
+  got[buildName(cmd)] = { stats: r.status === 0 ? withoutMs(JSON.parse(r.stdout)) : {}, dir };
+}
+const a = got.native, b = got.wasm;
+check('grow --stats native == WASM (timings aside)', JSON.stringify(a.stats) === JSON.stringify(b.stats),
+  `${JSON.stringify(a.stats)}\n${JSON.stringify(b.stats)}`);
+for (const name of ['g.glb', 'h.png', 'plan.svg']) {
+  const x = readFileSync(join(a.dir, name)), y = readFileSync(join(b.dir, name));
+  check(`${name}: native == WASM bytes (${x.length})`, x.length > 0 && x.equals(y));
+}
+const s = a.stats;
+const bySpecies = Object.values(s.trees?.by_species ?? {}).reduce((p, q) => p + q, 0);
+check('stats: trees by species add up to the count; hand + rule = count', bySpecies === s.trees?.count
+  && s.planting.by_hand + s.planting.by_rule === s.trees.count && s.trees.count > 3, JSON.stringify(s.trees));
+const refused = Object.values(s.planting?.refused ?? {}).reduce((p, q) => p + q, 0);
+check('stats: every dart kept or refused by one rule', s.planting.candidates === s.planting.by_rule + refused, JSON.stringify(s.planting));
+check('stats: the clock ran the garden years, internodes grown', s.years === 3 && s.trees.internodes > 0, `${s.years} ${s.trees.internodes}`);
+const h = readFileSync(join(a.dir, 'h.png'));
+check('heightmap: 16-bit grey PNG of ground_res + 1 samples a side', h.readUInt32BE(16) === 33 && h.readUInt32BE(20) === 33 && h[24] === 16 && h[25] === 0,
+  `${h.readUInt32BE(16)} x ${h.readUInt32BE(20)}, depth ${h[24]}, colour ${h[25]}`);
+const svg = readFileSync(join(a.dir, 'plan.svg'), 'utf8');
+check('plan: one circle a tree, one rect an object', (svg.match(/class="tree"/g) || []).length === s.trees.count
+  && (svg.match(/class="object"/g) || []).length === s.objects, `${(svg.match(/class="tree"/g) || []).length} trees`);
+
+// 2. plant: native == WASM, fast path (no growth).
+const plants = [native, wasm].map((cmd) => spawn(cmd, ['garden', 'plant', ...small]));
+check('plant: exit 0 both', plants.every((r) => r.status === 0), plants.map((r) => r.stderr).join(''));
+check('plant: native == WASM bytes', plants[0].stdout === plants[1].stdout && plants[0].stdout.length > 0);
+const planted = JSON.parse(plants[0].stdout);
+check('plant: the same trees the grow placed', planted.trees.length === s.trees.count, `${planted.trees.length}`);
+
+// 3. The link a grow prints regrows the same garden.
+const plain = spawn(native, ['garden', 'grow', ...small]);
+check('grow without --stats: exit 0, a hash', plain.status === 0 && JSON.parse(plain.stdout).hash?.length > 0, plain.stderr);
+const hash = JSON.parse(plain.stdout).hash;
+const relinked = spawn(native, ['garden', 'grow', '--url', `http://127.0.0.1:8080/garden.html#${hash}`, '--stats']);
+check('--url of that hash: the same stats', relinked.status === 0
+  && JSON.stringify(withoutMs(JSON.parse(relinked.stdout))) === JSON.stringify(s), relinked.stderr);
+
+// 4. Files beside the garden file: a heightmap ground and a mask.
+writeFileSync(join(work, 'ramp.png'), gray16PngBytes(16, 16, (x) => Math.round((x / 15) * 65535)));
+writeFileSync(join(work, 'slope.json'), JSON.stringify({ params: { relief: 4, size: 20, ground_res: 16, years: 1, density: 0 },
+  ground: { kind: 'heightmap', file: 'ramp.png' }, objects: [], plants: [{ species: 'keyaki', pos: [9, 0] }, { species: 'keyaki', pos: [-9, 0] }] }));
+const ramp = spawn(native, ['garden', 'plant', '--garden', join(work, 'slope.json')]);
+check('heightmap ground: read beside the garden file, exit 0', ramp.status === 0, ramp.stderr);
+if (ramp.status === 0) {
+  const t = JSON.parse(ramp.stdout).trees;
+  // x = ±9 of a 20 m ramp 0..4 m west to east: 0.2 and 3.8 m.
+  check('heightmap ground: the ramp rises west to east to the relief', Math.abs(t[0].pos[1] - 3.8) < 0.02 && Math.abs(t[1].pos[1] - 0.2) < 0.02,
+    `${t[0].pos[1]} ${t[1].pos[1]}`);
+}
+
+const maskRgba = new Uint8Array(8 * 8 * 4).fill(255);
+for (let y = 0; y < 8; ++y) for (let x = 0; x < 4; ++x) maskRgba.fill(0, 4 * (8 * y + x), 4 * (8 * y + x) + 3);
+writeFileSync(join(work, 'east.png'), pngBytes(8, 8, maskRgba));
+writeFileSync(join(work, 'masked.json'), JSON.stringify({ params: { size: 20, ground_res: 16, density: 0.05, spacing: 1.5, slope_max: 90 },
+  mask: 'east.png', plants: [] }));
+const masked = spawn(native, ['garden', 'plant', '--garden', join(work, 'masked.json')]);
+check('mask: read beside the garden file, exit 0', masked.status === 0, masked.stderr);
+if (masked.status === 0) {
+  const m = JSON.parse(masked.stdout);
+  check('mask: no tree on its black west half, some refused by it', m.trees.length > 5 && m.trees.every((t) => t.pos[0] >= 0)
+    && m.report.refused.mask > 0, JSON.stringify(m.report));
+}
+
+// 5. Bad input: one line naming the field, exit 2, nothing written.
+writeFileSync(join(work, 'in-wall.json'), JSON.stringify({ plants: [{ species: 'keyaki', pos: [0, -12] }] }));
+writeFileSync(join(work, 'oak.json'), JSON.stringify({ plants: [{ species: 'oak', pos: [0, 0] }] }));
+writeFileSync(join(work, 'badmap.json'), JSON.stringify({ ground: { kind: 'heightmap', file: 'slope.json' } }));
+const bad = [
+  [['--set', 'size=2'], /--set: size/],
+  [['--years', '99'], /--years/],
+  [['--garden', join(work, 'in-wall.json')], /plants\[0\]\.pos.*objects\[0\] \(wall\)/],
+  [['--garden', join(work, 'oak.json')], /plants\[0\]\.species/],
+  [['--garden', join(work, 'badmap.json'), '--set', 'ground_res=16'], /ground\.file/],
+  [['--url', 'plants=oak:1:0:0:0:0'], /--url: plants/],
+];
+for (const [args, pattern] of bad) {
+  for (const cmd of [native, wasm]) {
+    const out = join(work, `bad-${buildName(cmd)}.glb`);
+    const r = spawn(cmd, ['garden', 'grow', ...args, '--out', out]);
+    const lines = r.stderr.trim().split('\n');
+    check(`${args.join(' ').replace(work, '')} ${buildName(cmd)}: exit 2, one line naming the field, nothing written`,
+      r.status === 2 && lines.length === 1 && pattern.test(lines[0]) && !existsSync(out), `${r.status}: ${r.stderr.trim()}`);
+  }
+}
+finish();

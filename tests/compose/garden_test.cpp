@@ -1,0 +1,244 @@
+// The garden (core/compose/garden_*): its state JSON and hash round trips and their errors naming
+// the field; the ground's heights against a ray cast down onto its own drawn triangles (the twin);
+// objects and trees standing on the surface (within 2 cm); the planting rules' spacing, altitude
+// band, slope limit, mask and objects each kept, every dart counted once; a hand-placed tree in a
+// wall refused naming plants[i].pos; the run's groups (copies share one growth when no neighbour
+// is within reach) and its clock; ivy from the wall's foot climbing the wall, and an ivy seed
+// naming nothing refused naming "ivy".
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include "compose/garden_plant.h"
+#include "compose/garden_run.h"
+#include "compose/garden_scene.h"
+#include "compose/garden_state.h"
+#include "geom/bvh.h"
+#include "geom/ray_cast.h"
+#include "image/png.h"
+
+namespace niwa::compose {
+namespace {
+
+GardenState SmallGarden() {
+  GardenState s = DefaultGardenState();
+  EXPECT_TRUE(s.params.Set(GardenParam::kSize, 30).ok());
+  EXPECT_TRUE(s.params.Set(GardenParam::kGroundRes, 48).ok());
+  EXPECT_TRUE(s.params.Set(GardenParam::kYears, 2).ok());
+  EXPECT_TRUE(s.params.Set(GardenParam::kDensity, 0.05).ok());
+  EXPECT_TRUE(s.params.Set(GardenParam::kSpacing, 2).ok());
+  return s;
+}
+
+// The ground's height at (x, z) by a ray cast straight down onto its drawn triangles.
+double CastDown(const geom::TriMesh& mesh, const geom::Bvh& bvh, double x, double z) {
+  const geom::RayHit hit =
+      geom::FirstHit(mesh, bvh, glm::vec3(x, 1000.0, z), glm::vec3(0, -1, 0), 5000.0f);
+  EXPECT_TRUE(hit.hit);
+  return hit.point.y;
+}
+
+TEST(Garden, StateJsonRoundTripsAndBadFieldsAreNamed) {
+  GardenState s = SmallGarden();
+  const std::string text = GardenStateJson(s);
+  GardenState back;
+  ASSERT_TRUE(ApplyGardenStateJson(text, &back).ok());
+  EXPECT_EQ(GardenStateJson(back), text);
+  const std::pair<const char*, const char*> bad[] = {
+      {R"({"plants": [{"species": "oak", "pos": [0, 0]}]})", "plants[0].species"},
+      {R"({"plants": [{"species": "pine", "pos": [0]}]})", "plants[0].pos"},
+      {R"({"plants": [{"species": "pine", "pos": [0, 99]}]})", "plants[0].pos"},
+      {R"({"plants": [{"species": "pine", "pos": [0, 0], "age": 2.5}]})", "plants[0].age"},
+      {R"({"objects": [{"kind": "castle", "pos": [0, 0]}]})", "objects[0].kind"},
+      {R"({"objects": [{"kind": "rock", "pos": [0, 0], "scale": 0}]})", "objects[0].scale"},
+      {R"({"mix": {"pine": -1}})", "mix.pine"},
+      {R"({"params": {"spacing": 0}})", "spacing"},
+      {R"({"params": {"alt_min": 9, "alt_max": 3}})", "alt_min"},
+      {R"({"ground": {"kind": "lava"}})", "ground.kind"},
+      {R"({"ground": {"terrain": {"preset": "nope"}}})", "ground.terrain"},
+      {R"({"trees": []})", "trees"},
+  };
+  for (const auto& [json, field] : bad) {
+    GardenState t = SmallGarden();
+    const Status st = ApplyGardenStateJson(json, &t);
+    ASSERT_FALSE(st.ok()) << json;
+    EXPECT_EQ(st.field(), field) << st.Line();
+    EXPECT_EQ(GardenStateJson(t), GardenStateJson(SmallGarden())) << "the state is unchanged";
+  }
+}
+
+TEST(Garden, HashRoundTripsAndDropsBadItemsWithANotice) {
+  GardenState s = SmallGarden();
+  s.plants.push_back({"pine", 7, 3, 4.5, -2.25, 90});
+  s.ground = GroundKind::kFlat;
+  const std::string hash = EncodeGardenHash(s, "garden.");
+  GardenState back = DefaultGardenState();
+  std::vector<std::string> notices;
+  ApplyGardenHash(hash, "garden.", &back, &notices);
+  EXPECT_TRUE(notices.empty()) << notices.front();
+  EXPECT_EQ(GardenStateJson(back), GardenStateJson(s));
+  GardenState t = DefaultGardenState();
+  ApplyGardenHash("plants=pine:1:0:0:0:0,oak:1:0:0:0:0&size=99999", "", &t, &notices);
+  ASSERT_EQ(notices.size(), 2u);
+  EXPECT_NE(notices[0].find("plants"), std::string::npos) << notices[0];
+  EXPECT_EQ(t.plants.size(), DefaultGardenState().plants.size())
+      << "a list with a bad item is dropped whole";
+  EXPECT_EQ(t.params.Get(GardenParam::kSize), 1000) << "clamped into its range";
+}
+
+TEST(Garden, GroundHeightsAreItsDrawnTrianglesAndThingsStandOnThem) {
+  const GardenState s = SmallGarden();
+  Result<GardenScene> scene = BuildGardenScene(s, Budget{});
+  ASSERT_TRUE(scene.ok()) << scene.status().Line();
+  const GardenGround& g = scene->ground;
+  EXPECT_NEAR(g.relief, 6.0, 1e-9);
+  const geom::TriMesh mesh = g.Mesh();
+  const geom::Bvh bvh = geom::Bvh::Build(mesh);
+  for (int k = 0; k < 200; ++k) {
+    const double x = -14.9 + 29.8 * ((k * 37) % 200) / 200.0,
+                 z = -14.9 + 29.8 * ((k * 91) % 200) / 200.0;
+    EXPECT_NEAR(g.HeightAt(x, z), CastDown(mesh, bvh, x, z), 1e-3) << x << ", " << z;
+  }
+  for (const PlacedObject& o : scene->objects)
+    EXPECT_NEAR(o.base_y, CastDown(mesh, bvh, o.x, o.z), 0.02) << o.kind;
+  Result<Planting> planting = PlantGarden(s, *scene);
+  ASSERT_TRUE(planting.ok());
+  for (const PlacedTree& t : planting->trees)
+    EXPECT_NEAR(t.y, CastDown(mesh, bvh, t.x, t.z), 0.02)
+        << t.species << " at " << t.x << ", " << t.z;
+}
+
+TEST(Garden, PlantingRulesKeepSpacingAltitudeSlopeAndObjects) {
+  GardenState s = SmallGarden();
+  ASSERT_TRUE(s.params.Set(GardenParam::kAltMin, 1).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kAltMax, 5).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kSlopeMax, 24).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kSpacing, 2.5).ok());
+  Result<GardenScene> scene = BuildGardenScene(s, Budget{});
+  ASSERT_TRUE(scene.ok());
+  Result<Planting> p = PlantGarden(s, *scene);
+  ASSERT_TRUE(p.ok()) << p.status().Line();
+  const PlantingReport& r = p->report;
+  EXPECT_EQ(r.target, 45);
+  EXPECT_GT(r.by_rule, 5);
+  EXPECT_EQ(r.candidates, r.by_rule + r.refused_mask + r.refused_altitude + r.refused_slope +
+                              r.refused_object + r.refused_spacing);
+  EXPECT_GT(r.refused_altitude, 0);
+  EXPECT_GT(r.refused_slope, 0);
+  EXPECT_GT(r.refused_spacing, 0);
+  for (std::size_t a = 0; a < p->trees.size(); ++a) {
+    const PlacedTree& t = p->trees[a];
+    if (t.hand >= 0) continue;
+    EXPECT_GE(t.y, 1.0);
+    EXPECT_LE(t.y, 5.0);
+    EXPECT_LE(scene->ground.SlopeAt(t.x, t.z), 24.0);
+    for (const PlacedObject& o : scene->objects) EXPECT_FALSE(o.Covers(t.x, t.z, kTrunkClearance));
+    for (std::size_t b = 0; b < p->trees.size(); ++b) {
+      if (b == a) continue;
+      EXPECT_GE(std::hypot(t.x - p->trees[b].x, t.z - p->trees[b].z), 2.5);
+    }
+  }
+  // The same state plants the same trees; another seed others.
+  Result<Planting> again = PlantGarden(s, *scene);
+  EXPECT_EQ(PlantingJson(*again), PlantingJson(*p));
+  ASSERT_TRUE(s.params.Set(GardenParam::kPlantSeed, 2).ok());
+  EXPECT_NE(PlantingJson(*PlantGarden(s, *scene)), PlantingJson(*p));
+}
+
+TEST(Garden, AMaskKeepsTreesOffItsBlackHalf) {
+  GardenState s = SmallGarden();
+  ASSERT_TRUE(s.params.Set(GardenParam::kSlopeMax, 90).ok());
+  image::Rgba8Image mask;
+  mask.width = 8, mask.height = 8;
+  mask.pixels.assign(8 * 8 * 4, 255);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 4; ++x)  // the west half black
+      for (int c = 0; c < 3; ++c) mask.pixels[4 * (y * 8 + x) + c] = 0;
+  Result<std::vector<unsigned char>> png = image::EncodeRgba8Png(mask);
+  ASSERT_TRUE(png.ok());
+  s.mask_png = *png;
+  s.mask_name = "half.png";
+  Result<GardenScene> scene = BuildGardenScene(s, Budget{});
+  Result<Planting> p = PlantGarden(s, *scene);
+  ASSERT_TRUE(p.ok()) << p.status().Line();
+  EXPECT_GT(p->report.refused_mask, 0);
+  EXPECT_GT(p->report.by_rule, 5);
+  for (const PlacedTree& t : p->trees) {
+    if (t.hand < 0) {
+      EXPECT_GE(t.x, 0.0) << "a rule tree on the mask's black half";
+    }
+  }
+  s.mask_png = {1, 2, 3};
+  const Result<Planting> bad = PlantGarden(s, *scene);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.status().field(), "mask");
+}
+
+TEST(Garden, AHandPlacedTreeInsideAnObjectIsRefusedNamingIt) {
+  GardenState s = SmallGarden();
+  s.plants = {{"keyaki", 1, 0, 0.5, -12, 0}};  // in the default wall at z = −12
+  Result<GardenScene> scene = BuildGardenScene(s, Budget{});
+  ASSERT_TRUE(scene.ok());
+  const Result<Planting> p = PlantGarden(s, *scene);
+  ASSERT_FALSE(p.ok());
+  EXPECT_EQ(p.status().field(), "plants[0].pos") << p.status().Line();
+  EXPECT_NE(p.status().message().find("objects[0] (wall)"), std::string::npos);
+}
+
+TEST(Garden, CopiesShareOneGrowthAndTheClockGrowsEveryTree) {
+  GardenState s = SmallGarden();
+  ASSERT_TRUE(s.params.Set(GardenParam::kShade, 0).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kVariants, 1).ok());
+  Result<GardenRun> run = GardenRun::Start(s, Budget{});
+  ASSERT_TRUE(run.ok()) << run.status().Line();
+  EXPECT_EQ(run->done(), 0);
+  ASSERT_TRUE(run->Advance({}).ok());
+  EXPECT_EQ(run->done(), 2);
+  // One growth per (species, seed, age): the hand keyaki (age 5) and one per species of the mix.
+  EXPECT_EQ(run->groups().size(), 4u);
+  for (const GardenTreeGroup& g : run->groups()) EXPECT_EQ(g.grower->year(), g.age + 2) << g.name;
+  const nlohmann::json stats = nlohmann::json::parse(run->StatsJson());
+  EXPECT_EQ(stats["trees"]["count"].get<std::size_t>(), run->planting().trees.size());
+  EXPECT_EQ(stats["trees"]["distinct"], 4);
+  // With shade on, trees within reach are grown on their own.
+  ASSERT_TRUE(s.params.Set(GardenParam::kShade, 1).ok());
+  Result<GardenRun> shaded = GardenRun::Start(s, Budget{});
+  ASSERT_TRUE(shaded.ok());
+  EXPECT_GT(shaded->groups().size(), 4u);
+}
+
+TEST(Garden, IvyClimbsTheWallItStartsAt) {
+  GardenState s = SmallGarden();
+  ASSERT_TRUE(s.params.Set(GardenParam::kDensity, 0).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kYears, 3).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kIvySteps, 40).ok());
+  s.ivy_on = {"objects[0]"};
+  Result<GardenRun> run = GardenRun::Start(s, Budget{});
+  ASSERT_TRUE(run.ok()) << run.status().Line();
+  ASSERT_TRUE(run->Advance({}).ok());
+  ASSERT_NE(run->ivy(), nullptr);
+  EXPECT_EQ(run->ivy()->log().steps_run, 120);
+  const ivy::IvyModel& m = run->ivy()->model();
+  ASSERT_GT(m.internodes.size(), 50u);
+  // The wall: 6 m along x, 0.45 m thick, 1.8 m high, at (0, base, −0.3·size).
+  const PlacedObject& wall = run->scene().objects[0];
+  int on_wall = 0, up_high = 0;
+  for (const ivy::Bud& b : m.buds) {
+    on_wall += wall.Covers(b.pos.x, b.pos.z, 0.3) ? 1 : 0;
+    up_high += b.pos.y > wall.base_y + 0.9 ? 1 : 0;
+  }
+  EXPECT_GT(on_wall, static_cast<int>(m.buds.size()) / 2) << "most of the ivy is on the wall";
+  EXPECT_GT(up_high, 10) << "some climbed above half the wall's height";
+  const nlohmann::json stats = nlohmann::json::parse(run->StatsJson());
+  EXPECT_EQ(stats["ivy"]["internodes"].get<std::size_t>(), m.internodes.size());
+
+  s.ivy_on = {"objects[9]"};
+  const Result<GardenRun> bad = GardenRun::Start(s, Budget{});
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.status().field(), "ivy") << bad.status().Line();
+}
+
+}  // namespace
+}  // namespace niwa::compose
