@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "compose/bark_support.h"
+#include "compose/tree_neighbours.h"
 #include "geom/linear_queries.h"
 #include "image/png.h"
 #include "io/gltf_writer.h"
@@ -164,7 +165,9 @@ Result<GardenRun> GardenRun::Start(const GardenState& state, const Budget& budge
     ts.limits.max_bytes =
         ts.limits.base_bytes + std::max(0.0, ts.limits.max_bytes - ts.limits.base_bytes) / groups;
     ts.limits.max_seconds /= groups;
-    g.grower = std::make_unique<Grower>(ts);
+    Result<TreeRun> tree_run = TreeRun::Start(ts, budget);
+    if (!tree_run.ok()) return tree_run.status();
+    g.run = std::make_unique<TreeRun>(std::move(*tree_run));
   }
   return run;
 }
@@ -175,14 +178,25 @@ Status GardenRun::Advance(const run::Observer& observer) {
   if (!nursery_done_) {
     // The nursery: a tree planted at age a grows its first a years alone, before the clock.
     for (GardenTreeGroup& g : groups_)
-      while (g.grower->year() < g.age && !g.grower->stopped()) g.grower->GrowYear();
+      while (g.run->done() < g.age && !g.run->stopped()) g.run->GrowYear();
     nursery_done_ = true;
   }
+  // The trees grown with their neighbours' shade (each one tree), where they stand.
+  std::vector<TreeAt> together;
+  for (GardenTreeGroup& g : groups_) {
+    if (!g.shaded) continue;
+    const PlacedTree& p = planting_.trees[g.trees.front()];
+    together.push_back({g.run.get(), p.x, p.y, p.z, p.rot});
+  }
+  NeighbourShade shade;
+  shade.shade_each_other = state_.params.GetBool(GardenParam::kShade);
+  shade.reach_m = state_.params.Get(GardenParam::kShadeReach);
   while (year_ < years) {
     if (observer && !observer({"grow", static_cast<double>(year_), static_cast<double>(years)}))
       return run::CancelledStatus();
+    if (!together.empty()) (void)GrowTogetherYear(together, shade);
     for (GardenTreeGroup& g : groups_)
-      if (g.grower->year() < g.age + year_ + 1 && !g.grower->stopped()) g.grower->GrowYear();
+      if (!g.shaded && g.run->done() < g.age + year_ + 1 && !g.run->stopped()) g.run->GrowYear();
     ++year_;
   }
   if (observer) observer({"grow", static_cast<double>(year_), static_cast<double>(years)});
@@ -194,8 +208,8 @@ Status GardenRun::Advance(const run::Observer& observer) {
     ms_ivy_ = MsSince(ti);
   }
   for (const GardenTreeGroup& g : groups_)
-    if (truncated_by_.empty() && g.grower->tree().truncated)
-      truncated_by_ = g.name + ": " + g.grower->tree().truncated_by;
+    if (truncated_by_.empty() && g.tree().truncated)
+      truncated_by_ = g.name + ": " + g.tree().truncated_by;
   ms_trees_ += MsSince(t0);
   return Status::Ok();
 }
@@ -254,7 +268,7 @@ Status GardenRun::GrowIvy() {
     if (!near) continue;
     const int g = tree_group_[t];
     if (!bark_of_group.count(g))
-      bark_of_group[g] = BarkTriMesh(BuildTreeMesh(groups_[g].grower->tree()).bark);
+      bark_of_group[g] = BarkTriMesh(BuildTreeMesh(groups_[g].tree()).bark);
     tree_parts.emplace_back(static_cast<int>(t), scene.mesh.positions.size());
     AppendMoved(&scene.mesh, bark_of_group[g], p.x, p.y, p.z, p.rot);
   }
@@ -312,7 +326,7 @@ Status GardenRun::GrowIvy() {
 
 double GardenRun::CrownRadius(int group) const {
   double r2 = 0;
-  for (const Branch& b : groups_[group].grower->tree().branches) {
+  for (const Branch& b : groups_[group].tree().branches) {
     if (!b.alive) continue;
     for (const glm::vec3& p : b.nodes)
       r2 = std::max(r2, static_cast<double>(p.x) * p.x + static_cast<double>(p.z) * p.z);
@@ -322,7 +336,7 @@ double GardenRun::CrownRadius(int group) const {
 
 glm::dvec3 GardenRun::CrownCentroid(int t) const {
   const PlacedTree& p = planting_.trees[t];
-  const Tree& tree = groups_[tree_group_[t]].grower->tree();
+  const Tree& tree = groups_[tree_group_[t]].tree();
   glm::dvec3 sum(0.0);
   double n = 0;
   for (const Branch& b : tree.branches) {
@@ -399,12 +413,11 @@ Result<gltf::Document> GardenRun::Document() const {
     std::vector<LodMesh> levels;
     if (lod) {
       Result<std::vector<LodMesh>> made =
-          BuildLodLevels(g.grower->tree(), max_triangles, options, "max_triangles");
+          BuildLodLevels(g.tree(), max_triangles, options, "max_triangles");
       if (!made.ok()) return made.status();
       levels = std::move(*made);
     } else {
-      Result<LodMesh> made =
-          BuildLodMesh(g.grower->tree(), max_triangles, options, "max_triangles");
+      Result<LodMesh> made = BuildLodMesh(g.tree(), max_triangles, options, "max_triangles");
       if (!made.ok()) return made.status();
       levels.push_back(std::move(*made));
     }
@@ -460,7 +473,7 @@ std::string GardenRun::StatsJson() const {
   double internodes = 0, leaves = 0;
   long shaded = 0;
   for (std::size_t t = 0; t < planting_.trees.size(); ++t) {
-    const TreeCounts c = CountTree(groups_[tree_group_[t]].grower->tree());
+    const TreeCounts c = CountTree(groups_[tree_group_[t]].tree());
     internodes += c.internodes;
     leaves += c.leaves;
   }

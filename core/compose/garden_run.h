@@ -3,8 +3,8 @@
 // and, next, the page call. Trees that are the same (species, seed, age) and stand apart from
 // every other tree (shade off, or no trunk within shade_reach) are grown once and placed as
 // copies; a tree with a neighbour within reach is grown on its own, shaded by its neighbours'
-// leaves each year when shade is 1 (compose/tree_neighbours). Outputs: the .glb (ground, objects,
-// each distinct tree once within max_triangles (render/tree_lod), its copies as
+// leaves each year when shade is 1 (compose/tree_neighbours GrowTogetherYear). Outputs: the .glb
+// (ground, objects, each distinct tree once within max_triangles (render/tree_lod), its copies as
 // EXT_mesh_gpu_instancing or plain nodes sharing the mesh, optional _LOD1/_LOD2), the 16-bit
 // heightmap of the ground, the plan as SVG, the stats. Ivy (paper 004) grows from the state's seeds
 // at the feet of objects and hand-placed trees, climbing the objects, the trunks near them and the
@@ -23,8 +23,8 @@
 #include "compose/garden_scene.h"
 #include "compose/garden_state.h"
 #include "ivy/ivy_run.h"
+#include "render/tree_run.h"
 #include "run/study_run.h"
-#include "tree/growth.h"
 
 namespace niwa::compose {
 
@@ -34,10 +34,11 @@ namespace niwa::compose {
 struct GardenTreeGroup {
   std::string species;
   uint64_t seed = 1;
-  int age = 0;             // years before the garden's clock starts
-  std::vector<int> trees;  // indices into Planting::trees (one when grown on its own)
-  bool shaded = false;     // grown with its neighbours' shade
-  std::unique_ptr<Grower> grower;
+  int age = 0;                   // years before the garden's clock starts
+  std::vector<int> trees;        // indices into Planting::trees (one when grown on its own)
+  bool shaded = false;           // grown with its neighbours' shade
+  std::unique_ptr<TreeRun> run;  // the tree study's run (render/tree_run)
+  const Tree& tree() const { return run->tree(); }
   std::string name;  // "keyaki_s1_a0", "keyaki_t3" (a tree grown on its own)
 };
 
