@@ -24,6 +24,7 @@ namespace {
 
 constexpr float kNever = std::numeric_limits<float>::infinity();
 constexpr double kThinFloor = 0.05;  // M2's mechanical thickness floor, a share of D
+constexpr int kMaxChunks = 64;       // chunks of a pass on lanes (step_lanes.h), ~128 nodes each
 // PCG32 streams of a layer born at cycle k: its springs' thresholds and its upper bond's κ_h.
 constexpr uint64_t kLayerStream = 0x4c41594552000000ull;  // "LAYER"
 uint64_t SpringStream(int born) { return kLayerStream + 2u * static_cast<uint64_t>(born + 2); }
@@ -411,9 +412,12 @@ bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
   const LayerGrowth lg = LayerGrowthAt(*f);
   const double th = lg.stiffness_m2;
   const int n = L.nodes();
-  // The lanes' halves: nodes [0, mid) and [mid, n), mid a multiple of eight (the passes' batches
-  // start there).
-  const int mid = lanes ? (n / 16) * 8 : n;
+  // With lanes, the passes' chunks: nodes [Bound(k), Bound(k + 1)), about 128 a chunk (2 to
+  // kMaxChunks), each bound but the last a multiple of eight (the passes' batches start there).
+  const int chunks = lanes ? std::clamp(n / 128, 2, kMaxChunks) : 1;
+  auto bound = [&](int k) {
+    return k == chunks ? n : static_cast<int>(static_cast<int64_t>(k) * n / chunks) / 8 * 8;
+  };
   // Springs of the three layers (M2's constants scaled by its thickness share).
   float k[3][2], c[3][2], rest[3][2];
   for (int r = 0; r < 3; ++r) {
@@ -429,21 +433,22 @@ bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
       s.gz.assign(L.springs(), 0.0f);
     }
   }
-  int broke[2][3][2] = {};  // lane, layer, family
-  auto spring_pass = [&](int lane) {
+  int broke[kMaxChunks][3][2] = {};  // chunk, layer, family
+  auto spring_pass = [&](int chunk) {
     for (int r = 0; r < 3; ++r)
-      SpringSlotForcesRange(L, k[r], c[r], rest[r], lg.g[r], &f->layer[r].s, lane ? mid : 0,
-                            lane ? n : mid, broke[lane][r]);
+      SpringSlotForcesRange(L, k[r], c[r], rest[r], lg.g[r], &f->layer[r].s, bound(chunk),
+                            bound(chunk + 1), broke[chunk][r]);
   };
   if (lanes) {
-    lanes->Run(spring_pass);
+    lanes->Run(chunks, spring_pass);
   } else {
     spring_pass(0);
   }
   int cracked = 0;
   for (int r = 0; r < 3; ++r) {
     for (int t = 0; t < 2; ++t) {
-      const int count = broke[0][r][t] + broke[1][r][t];
+      int count = 0;
+      for (int q = 0; q < chunks; ++q) count += broke[q][r][t];
       f->layer[r].s.broken_count[t] += count;
       cracked += count;
     }
@@ -500,13 +505,14 @@ bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
     static_cast<void>(eight);
     *snapped += NodeLoop4(p, begin, end);
   };
-  int snapped[2] = {0, 0};
+  int snapped[kMaxChunks] = {};
   if (lanes) {
-    lanes->Run([&](int lane) { node_pass(lane ? mid : 0, lane ? n : mid, &snapped[lane]); });
+    lanes->Run(chunks,
+               [&](int chunk) { node_pass(bound(chunk), bound(chunk + 1), &snapped[chunk]); });
   } else {
     node_pass(0, n, &snapped[0]);
   }
-  f->bonds_broken += snapped[0] + snapped[1];
+  for (int q = 0; q < chunks; ++q) f->bonds_broken += snapped[q];
   ++f->step;
   if (f->step % kPeelCheckSteps == 0) CheckPeeling(L, f);
   return f->step <= f->growth_steps && f->step % m.steps_per_cycle == 0;
