@@ -514,7 +514,7 @@ bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
   }
   for (int q = 0; q < chunks; ++q) f->bonds_broken += snapped[q];
   ++f->step;
-  if (f->step % kPeelCheckSteps == 0) CheckPeeling(L, f);
+  if (f->step % kPeelCheckSteps == 0) CheckPeeling(L, f, lanes);
   return f->step <= f->growth_steps && f->step % m.steps_per_cycle == 0;
 }
 
@@ -538,7 +538,11 @@ void ExchangeRoles(const Lattice& L, uint64_t seed, FourLayer* f) {
   FormBond(f->m, seed, f->cycle, &f->layer[kM1]);
 }
 
-void CheckPeeling(const Lattice& L, FourLayer* f) {
+namespace {
+
+// The drying half of CheckPeeling: onsets (t_i) of S's nodes within η of a drying source and
+// their shear limits now. Reads S's springs and flags, writes only dry_step and shear_limit2.
+void Dry(const Lattice& L, FourLayer* f) {
   const FourLayerMechanics& m = f->m;
   CorkLayer& S = f->layer[kS];
   const int n = L.nodes();
@@ -584,11 +588,33 @@ void CheckPeeling(const Lattice& L, FourLayer* f) {
     lim *= m.d;
     S.shear_limit2[i] = static_cast<float>(lim * lim);
   }
+}
+
+}  // namespace
+
+void CheckPeeling(const Lattice& L, FourLayer* f, StepLanes* lanes) {
+  const FourLayerMechanics& m = f->m;
+  CorkLayer& S = f->layer[kS];
+  const int n = L.nodes();
+  // The drying and the plates of S read the same state and write apart: one a lane.
+  CrackMeasures plates;
+  auto part = [&](int k) {
+    if (k == 0) {
+      plates = MeasurePlates(L, S.s, 1.0, 1.0);
+    } else {
+      Dry(L, f);
+    }
+  };
+  if (lanes) {
+    lanes->Run(2, part);
+  } else {
+    part(1);
+    part(0);
+  }
   // The area rule: closed regions (plates: S's triangles with three intact springs joined
   // across their edges, not wrapping the torus, as the maps draw them) with S_r/S_b > A, S_r and
   // S_b counted in nodes (its nodes, and those still bonded), or with no bond at all, peel. A node
   // in no plate (every triangle around it cracked) is a fragment of its own: it peels unbonded.
-  const CrackMeasures plates = MeasurePlates(L, S.s, 1.0, 1.0);
   std::vector<std::vector<int>> members(plates.regions.size());
   std::vector<int> stamp(n, -1);
   std::vector<uint8_t> in_plate(n, 0);
