@@ -24,7 +24,7 @@ namespace {
 
 constexpr float kNever = std::numeric_limits<float>::infinity();
 constexpr double kThinFloor = 0.05;  // M2's mechanical thickness floor, a share of D
-constexpr int kMaxChunks = 64;       // chunks of a pass on lanes (step_lanes.h), ~128 nodes each
+constexpr int kMaxChunks = 4;        // chunks of a pass on lanes (step_lanes.h)
 // PCG32 streams of a layer born at cycle k: its springs' thresholds and its upper bond's κ_h.
 constexpr uint64_t kLayerStream = 0x4c41594552000000ull;  // "LAYER"
 uint64_t SpringStream(int born) { return kLayerStream + 2u * static_cast<uint64_t>(born + 2); }
@@ -412,9 +412,12 @@ bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
   const LayerGrowth lg = LayerGrowthAt(*f);
   const double th = lg.stiffness_m2;
   const int n = L.nodes();
-  // With lanes, the passes' chunks: nodes [Bound(k), Bound(k + 1)), about 128 a chunk (2 to
-  // kMaxChunks), each bound but the last a multiple of eight (the passes' batches start there).
-  const int chunks = lanes ? std::clamp(n / 128, 2, kMaxChunks) : 1;
+  // With lanes, the passes' chunks: nodes [bound(k), bound(k + 1)), quarters (halves below 512
+  // nodes), each bound but the last a multiple of eight (the passes' batches start there). Few and
+  // large: 128-node chunks made the two threads' pass 1.15× slower than quarters (pine 128 × 64;
+  // docs/bark-model.md choice 16), the layers' state streamed in short runs and moved between
+  // the cores' caches; with quarters each thread keeps its half in its own cache when both run.
+  const int chunks = !lanes ? 1 : n >= 512 ? kMaxChunks : 2;
   auto bound = [&](int k) {
     return k == chunks ? n : static_cast<int>(static_cast<int64_t>(k) * n / chunks) / 8 * 8;
   };

@@ -127,7 +127,7 @@ void ExpectLanesGiveTheSameBits(int n_h) {
 TEST(FourLayer, TwoLanesGiveTheSameBits) { ExpectLanesGiveTheSameBits(9); }
 
 // 14 × 40 nodes: four chunks a pass (bounds 136, 280, 416, each inside a column), shared between
-// this thread and the worker as they come.
+// this thread and the worker as they come (each claims half of what is left).
 TEST(FourLayer, FourChunksGiveTheSameBits) { ExpectLanesGiveTheSameBits(40); }
 
 TEST(FourLayer, EightNodesABatchGiveTheSameBits) {
