@@ -414,7 +414,7 @@ bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
   const int n = L.nodes();
   // With lanes, the passes' chunks: nodes [bound(k), bound(k + 1)), quarters (halves below 512
   // nodes), each bound but the last a multiple of eight (the passes' batches start there). Few and
-  // large: 128-node chunks made the two threads' pass 1.15× slower than quarters (pine 128 × 64;
+  // large: 128-node chunks made the two threads' steps ~1.1× slower than quarters (pine 128 × 64;
   // docs/bark-model.md choice 16), the layers' state streamed in short runs and moved between
   // the cores' caches; with quarters each thread keeps its half in its own cache when both run.
   const int chunks = !lanes ? 1 : n >= 512 ? kMaxChunks : 2;
