@@ -24,6 +24,7 @@ namespace {
 
 constexpr float kNever = std::numeric_limits<float>::infinity();
 constexpr double kThinFloor = 0.05;  // M2's mechanical thickness floor, a share of D
+constexpr int kMaxChunks = 4;        // chunks of a pass on lanes (step_lanes.h)
 // PCG32 streams of a layer born at cycle k: its springs' thresholds and its upper bond's κ_h.
 constexpr uint64_t kLayerStream = 0x4c41594552000000ull;  // "LAYER"
 uint64_t SpringStream(int born) { return kLayerStream + 2u * static_cast<uint64_t>(born + 2); }
@@ -411,9 +412,15 @@ bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
   const LayerGrowth lg = LayerGrowthAt(*f);
   const double th = lg.stiffness_m2;
   const int n = L.nodes();
-  // The lanes' halves: nodes [0, mid) and [mid, n), mid a multiple of eight (the passes' batches
-  // start there).
-  const int mid = lanes ? (n / 16) * 8 : n;
+  // With lanes, the passes' chunks: nodes [bound(k), bound(k + 1)), quarters (halves below 512
+  // nodes), each bound but the last a multiple of eight (the passes' batches start there). Few and
+  // large: 128-node chunks made the two threads' steps ~1.1× slower than quarters (pine 128 × 64;
+  // docs/bark-model.md choice 16), the layers' state streamed in short runs and moved between
+  // the cores' caches; with quarters each thread keeps its half in its own cache when both run.
+  const int chunks = !lanes ? 1 : n >= 512 ? kMaxChunks : 2;
+  auto bound = [&](int k) {
+    return k == chunks ? n : static_cast<int>(static_cast<int64_t>(k) * n / chunks) / 8 * 8;
+  };
   // Springs of the three layers (M2's constants scaled by its thickness share).
   float k[3][2], c[3][2], rest[3][2];
   for (int r = 0; r < 3; ++r) {
@@ -429,21 +436,22 @@ bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
       s.gz.assign(L.springs(), 0.0f);
     }
   }
-  int broke[2][3][2] = {};  // lane, layer, family
-  auto spring_pass = [&](int lane) {
+  int broke[kMaxChunks][3][2] = {};  // chunk, layer, family
+  auto spring_pass = [&](int chunk) {
     for (int r = 0; r < 3; ++r)
-      SpringSlotForcesRange(L, k[r], c[r], rest[r], lg.g[r], &f->layer[r].s, lane ? mid : 0,
-                            lane ? n : mid, broke[lane][r]);
+      SpringSlotForcesRange(L, k[r], c[r], rest[r], lg.g[r], &f->layer[r].s, bound(chunk),
+                            bound(chunk + 1), broke[chunk][r]);
   };
   if (lanes) {
-    lanes->Run(spring_pass);
+    lanes->Run(chunks, spring_pass);
   } else {
     spring_pass(0);
   }
   int cracked = 0;
   for (int r = 0; r < 3; ++r) {
     for (int t = 0; t < 2; ++t) {
-      const int count = broke[0][r][t] + broke[1][r][t];
+      int count = 0;
+      for (int q = 0; q < chunks; ++q) count += broke[q][r][t];
       f->layer[r].s.broken_count[t] += count;
       cracked += count;
     }
@@ -500,15 +508,16 @@ bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
     static_cast<void>(eight);
     *snapped += NodeLoop4(p, begin, end);
   };
-  int snapped[2] = {0, 0};
+  int snapped[kMaxChunks] = {};
   if (lanes) {
-    lanes->Run([&](int lane) { node_pass(lane ? mid : 0, lane ? n : mid, &snapped[lane]); });
+    lanes->Run(chunks,
+               [&](int chunk) { node_pass(bound(chunk), bound(chunk + 1), &snapped[chunk]); });
   } else {
     node_pass(0, n, &snapped[0]);
   }
-  f->bonds_broken += snapped[0] + snapped[1];
+  for (int q = 0; q < chunks; ++q) f->bonds_broken += snapped[q];
   ++f->step;
-  if (f->step % kPeelCheckSteps == 0) CheckPeeling(L, f);
+  if (f->step % kPeelCheckSteps == 0) CheckPeeling(L, f, lanes);
   return f->step <= f->growth_steps && f->step % m.steps_per_cycle == 0;
 }
 
@@ -532,7 +541,11 @@ void ExchangeRoles(const Lattice& L, uint64_t seed, FourLayer* f) {
   FormBond(f->m, seed, f->cycle, &f->layer[kM1]);
 }
 
-void CheckPeeling(const Lattice& L, FourLayer* f) {
+namespace {
+
+// The drying half of CheckPeeling: onsets (t_i) of S's nodes within η of a drying source and
+// their shear limits now. Reads S's springs and flags, writes only dry_step and shear_limit2.
+void Dry(const Lattice& L, FourLayer* f) {
   const FourLayerMechanics& m = f->m;
   CorkLayer& S = f->layer[kS];
   const int n = L.nodes();
@@ -578,11 +591,33 @@ void CheckPeeling(const Lattice& L, FourLayer* f) {
     lim *= m.d;
     S.shear_limit2[i] = static_cast<float>(lim * lim);
   }
+}
+
+}  // namespace
+
+void CheckPeeling(const Lattice& L, FourLayer* f, StepLanes* lanes) {
+  const FourLayerMechanics& m = f->m;
+  CorkLayer& S = f->layer[kS];
+  const int n = L.nodes();
+  // The drying and the plates of S read the same state and write apart: one a lane.
+  CrackMeasures plates;
+  auto part = [&](int k) {
+    if (k == 0) {
+      plates = MeasurePlates(L, S.s, 1.0, 1.0);
+    } else {
+      Dry(L, f);
+    }
+  };
+  if (lanes) {
+    lanes->Run(2, part);
+  } else {
+    part(1);
+    part(0);
+  }
   // The area rule: closed regions (plates: S's triangles with three intact springs joined
   // across their edges, not wrapping the torus, as the maps draw them) with S_r/S_b > A, S_r and
   // S_b counted in nodes (its nodes, and those still bonded), or with no bond at all, peel. A node
   // in no plate (every triangle around it cracked) is a fragment of its own: it peels unbonded.
-  const CrackMeasures plates = MeasurePlates(L, S.s, 1.0, 1.0);
   std::vector<std::vector<int>> members(plates.regions.size());
   std::vector<int> stamp(n, -1);
   std::vector<uint8_t> in_plate(n, 0);

@@ -102,8 +102,9 @@ bool StepFourLayer(const Lattice& lattice, FourLayer* f, StepLanes* lanes = null
 // f->cycle + 1's stream.
 void ExchangeRoles(const Lattice& lattice, uint64_t seed, FourLayer* f);
 
-// Drying onsets, shear limits and the area rule on S now (what every kPeelCheckSteps does).
-void CheckPeeling(const Lattice& lattice, FourLayer* f);
+// Drying onsets, shear limits and the area rule on S now (what every kPeelCheckSteps does). With
+// lanes, the drying and the measure of S's plates run as two chunks (the same bits).
+void CheckPeeling(const Lattice& lattice, FourLayer* f, StepLanes* lanes = nullptr);
 
 // S's nodes still present.
 int PresentNodes(const FourLayer& f);

@@ -1,8 +1,8 @@
 // The 4-layer model (spec §1.7-1.8): role exchange keeps the node counts and moves each layer one
 // role outward, a new M2 is born stress free with fresh thresholds, the area rule peels a
 // hand-cut block by A, the drying limit decays only with γ > 0 and only within η, whole runs
-// repeat bit for bit, two lanes (step_lanes.h, threaded or not) give the bits of one, and the
-// estimate counts the three spring layers.
+// repeat bit for bit, passes in chunks (step_lanes.h, threaded or not) give the bits of one, and
+// the estimate counts the three spring layers.
 #include "bark/four_layer.h"
 
 #include <gtest/gtest.h>
@@ -50,10 +50,10 @@ bool RunCycle(Model* m) {
 }
 
 // Two cycles (an exchange between) with cracks, snapped bonds and peeling, stepped without lanes,
-// with two lanes run one after the other here, and with two lanes on a thread where the build has
-// one, each with four nodes a batch and (where the build and CPU have AVX2) eight: every layer's
-// state and every tally the same bits. 14 × 9 nodes: the lanes' split (node 56) falls inside a
-// column, so a lane's first batch is not where the one-lane pass has one; 14 × 20: batches of
+// with the passes' chunks run one after the other here, and shared with a worker thread where the
+// build has one, each with four nodes a batch and (where the build and CPU have AVX2) eight: every
+// layer's state and every tally the same bits. 14 × 9 nodes: two chunks, split at node 56 inside a
+// column, so a chunk's first batch is not where the one-lane pass has one; 14 × 20: batches of
 // eight run within a column, and fall back to four at its seams.
 void ExpectLanesGiveTheSameBits(int n_h) {
   BarkParams p = Params();
@@ -125,6 +125,10 @@ void ExpectLanesGiveTheSameBits(int n_h) {
 }
 
 TEST(FourLayer, TwoLanesGiveTheSameBits) { ExpectLanesGiveTheSameBits(9); }
+
+// 14 × 40 nodes: four chunks a pass (bounds 136, 280, 416, each inside a column), shared between
+// this thread and the worker as they come (each claims half of what is left).
+TEST(FourLayer, FourChunksGiveTheSameBits) { ExpectLanesGiveTheSameBits(40); }
 
 TEST(FourLayer, EightNodesABatchGiveTheSameBits) {
   if (!EightLanesAvailable()) GTEST_SKIP() << "no AVX2 path in this build or CPU";
