@@ -94,12 +94,14 @@ async function startRenderer() {
   }
 }
 
-// The whole garden in view, seen from the south-east above.
+// The whole garden in view, seen from the south-east above: the ground's square (its relief, not the
+// crowns) filling the view.
 function frameGarden() {
   if (!bounds) return;
   camera.yaw = 0.6;
-  camera.pitch = 0.6;
-  camera.frame({ min: bounds.min, max: bounds.max }, 0.85);
+  camera.pitch = 0.75;
+  const half = bounds.size / 2;
+  camera.frame({ min: [-half, 0, -half], max: [half, bounds.relief, half] }, 0.62);
   requestFrame();
 }
 
