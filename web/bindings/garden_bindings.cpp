@@ -1,10 +1,10 @@
 // The garden's bindings (issue 33 item 6; docs/garden-model.md "The page"): GardenLab, one garden
 // run (core/compose/garden_run.h) grown to its years for the worker (web/worker/garden_handler.js),
 // flattened for the page from GardenRun's public API: the ground's triangles and heights, the
-// objects' meshes, each distinct tree's full mesh once (bark, leaves, flowers; the tree study's
-// BuildTreeMesh with tubes of 3 to 6 sides: the page's view, not the .glb's LOD) and every planted
-// tree's placement in its group; and the garden table and share-link codec as JSON (the compose
-// registry, core/compose/studies.cpp, has no garden row).
+// objects' meshes, each distinct tree's full mesh once (bark, leaves, flowers: GardenGroupMesh of
+// compose/garden_view, tubes of 3 to 6 sides; the page's view, not the .glb's LOD) and every
+// planted tree's placement in its group; and the garden table and share-link codec as JSON (the
+// compose registry, core/compose/studies.cpp, has no garden row).
 //
 // Design (as the moss lab's): everything from JavaScript arrives as text and is checked by the core
 // (ApplyGardenStateJson, CheckGardenState, GardenRun::Start's estimate against the page budget);
@@ -12,15 +12,15 @@
 // state field ("plants[1].pos", "years", "density") or the budget's line. Buffers leave through
 // buffers(group) (buffers.h), copied once by the worker. Groups:
 //   "ground"  positions, normals (Float32 xyz, metres, y up), indices (Uint32): GardenGround::Mesh;
-//             heights (Float32, (n + 1)² in GardenGround's order: vertex (i, j) at x = −L/2 + i·cell,
-//             z = −L/2 + j·cell), for the page's ray against the ground (its clicks)
+//             heights (Float32, (n + 1)² in GardenGround's order: vertex (i, j) at x = −L/2 +
+//             i·cell, z = −L/2 + j·cell), for the page's ray against the ground (its clicks)
 //   "objects" positions, normals, indices (every object's mesh, placed, in one list), kind (Float32
 //             per vertex: 0 wall, 1 rock, 2 lantern)
-//   "trees"   positions, normals, indices (each group's mesh at the origin, one after another; the
-//             indices absolute), part (Float32 per vertex: 0 bark, 1
-//             leaves, 2 flowers), ranges (Uint32, 4 per group: first index, index count, first
-//             instance, instance count), instances (Float32, 4 per planted tree in group order: x,
-//             y, z of its foot, its turn about y in radians, counter-clockwise seen from above)
+//   "trees"   positions, normals, indices (each group's mesh at the origin, one after another;
+//             the indices absolute), part (Float32 per vertex: 0 bark, 1 leaves, 2 flowers),
+//             ranges (Uint32, 4 per group: first index, index count, first instance, instance
+//             count), instances (Float32, 4 per planted tree in group order: x, y, z of its
+//             foot, its turn about y in radians, counter-clockwise seen from above)
 // Calls: setProgress(fn) (fn(stage, done, total) after every year), grow(stateJson) -> ""/error
 // record (the state JSON of GardenStateJson over the default garden, LayOutDefaults, checked,
 // started and advanced); statsJson() (the run's StatsJson, as `niwa garden grow --stats` without
@@ -45,10 +45,10 @@
 #include "compose/garden_params.h"
 #include "compose/garden_run.h"
 #include "compose/garden_state.h"
+#include "compose/garden_view.h"
 #include "error_record.h"
 #include "page_budget.h"
 #include "params/param_json.h"
-#include "tree/mesh.h"
 
 namespace niwa {
 namespace {
@@ -245,11 +245,10 @@ class GardenLab {
     tree_indices_.clear();
     tree_ranges_.clear();
     tree_instances_.clear();
-    MeshOptions options;
-    options.max_sides = 6;  // the page draws many trees: coarser tubes than the tree page's 12
     const std::vector<compose::PlacedTree>& placed = run_->planting().trees;
-    for (const compose::GardenTreeGroup& grp : run_->groups()) {
-      const TreeMesh mesh = BuildTreeMesh(grp.grower->tree(), options);
+    for (std::size_t k = 0; k < run_->groups().size(); ++k) {
+      const compose::GardenTreeGroup& grp = run_->groups()[k];
+      const TreeMesh mesh = compose::GardenGroupMesh(*run_, static_cast<int>(k));
       const auto first_index = static_cast<uint32_t>(tree_indices_.size());
       AppendPart(mesh.bark, 0.f, &tree_positions_, &tree_normals_, &tree_part_, &tree_indices_);
       AppendPart(mesh.leaves, 1.f, &tree_positions_, &tree_normals_, &tree_part_, &tree_indices_);
