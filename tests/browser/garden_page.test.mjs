@@ -7,7 +7,7 @@
 // 0.3 m of the clicked point) and its Remove button takes it away; Copy link reopens the same
 // garden (same hash and stats); the Garden .glb download is the bytes of native `niwa garden grow
 // --url HASH --out g.glb`; a bad Years value is a line beside its field naming the range, and the
-// page recovers. Screenshots: build/artifacts/garden-*.png.
+// page recovers; Cancel stops a long regrow and the page grows its last garden again. Screenshots: build/artifacts/garden-*.png.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -139,6 +139,18 @@ await runBrowserTest(async (server, browser) => {
   check('the page recovers after the bad value', data.status === 'ready' && /years=3/.test(data.hash), `${data.status} ${data.hash}`);
   seen = await looks(page);
   check('the recovered garden is drawn (leaves on the ground)', seen.leaf > 0.0005, `leaf ${seen.leaf.toFixed(3)}`);
+
+  // 7. Cancel: a long regrow (years 14) stopped at once; the page goes back to the last garden.
+  serial = Number(data.gardenSerial);
+  const good = data.hash;
+  await page.fill('#param-years', '14');
+  await page.waitForSelector('#cancel:not([hidden])', { timeout: TIMEOUT });
+  await page.waitForFunction(() => document.documentElement.dataset.status === 'growing', null, { timeout: TIMEOUT });
+  await page.click('#cancel');
+  const cancelled = await page.evaluate(() => ({ ...document.documentElement.dataset }));
+  data = await waitGarden(page, serial);
+  check('Cancel stops the regrow and the page regrows the last garden', cancelled.status === 'cancelled' && cancelled.cancels === '1' && data.status === 'ready' && data.hash === good,
+    `${cancelled.status} cancels ${cancelled.cancels}, then ${data.status} ${data.hash === good ? 'the last hash' : data.hash}`);
 
   check('no console errors or warnings', problems.length === 0, problems.slice(0, 5).join(' | '));
 });
