@@ -251,8 +251,6 @@ const baseName = () => `garden-${state?.params?.years ?? 0}y`;
 $('download-glb').addEventListener('click', () => controller.exportAs('glb', `${baseName()}.glb`, 'model/gltf-binary'));
 $('download-svg').addEventListener('click', () => controller.exportAs('svg', `${baseName()}-plan.svg`, 'image/svg+xml'));
 
-// The page's test hook: a click on the ground at world (x, z) as a click on the view would make.
-window.__niwaGardenClickGround = (x, z) => clickGround(x, z);
 // The canvas point (CSS pixels) where the ground point (x, z) is drawn: for a test's real click.
 window.__niwaGardenScreenOf = (x, z) => {
   if (!renderer) return null;
