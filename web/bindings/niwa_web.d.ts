@@ -163,6 +163,30 @@ export class MossLab {
   delete(): void;
 }
 
+// ---- garden_bindings.cpp: issue 33 over core/compose/garden_run
+/** The garden table as the panel reads it (the compose registry has no garden row). */
+export function gardenTableJson(): string;
+/** {state (GardenStateJson), notices} of the default garden with the link's keys. */
+export function gardenDecodeJson(hash: string): string;
+
+export class GardenLab {
+  constructor();
+  /** fn(stage, done, total) after every year of a grow. */
+  setProgress(fn: ((stage: string, done: number, total: number) => void) | null): void;
+  /** The garden state JSON (GardenStateJson) over the default garden, grown to its years. */
+  grow(stateJson: string): ErrorText;
+  statsJson(): string;
+  hash(): string;
+  stateJson(): string;
+  /** {size, n, cell, relief, min, max, groups: [{name, species, seed, age, trees, shaded, crown}], trees: [{species, seed, age, pos, rot, hand, group}]}. */
+  boundsJson(): string;
+  /** "ground": positions, normals, indices, heights; "objects": positions, normals, indices, kind; "trees": positions, normals, indices, part, ranges, instances; "download": bytes (of the last build). */
+  buffers(group: string): BufferViews;
+  /** "glb" | "svg" | "json" | "heightmap": the run's Export bytes into buffers("download"); errors name "download". */
+  build(format: string): ErrorText;
+  delete(): void;
+}
+
 // ---- bark_bindings.cpp: paper 003 (Hirota, Kato, Kaneko) over core/bark/bark_run
 export class BarkLab {
   constructor();

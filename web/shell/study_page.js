@@ -3,7 +3,7 @@
 // the embed dialog. A study page module wires only its own controls on top of these.
 // Does not: talk to the worker, keep history (hash_history.js), or draw (web/gl, web/<study>).
 
-// The studies' pages, in nav order: the ONE list of them (the five papers' studies, plus the grove).
+// The studies' pages, in nav order: the ONE list of them (the five papers' studies, the grove and the garden).
 // The tree and grove pages always exist; the others are linked once public/ holds their page, which
 // the build lists in wasm/studies.json (web/CMakeLists.txt), so adding a study's page needs no edit here.
 export const STUDIES = [
@@ -13,6 +13,7 @@ export const STUDIES = [
   { id: 'terrain', title: 'Terrain', page: 'terrain.html' },
   { id: 'moss', title: 'Moss', page: 'moss.html' },
   { id: 'bark', title: 'Bark', page: 'bark.html' },
+  { id: 'garden', title: 'Garden', page: 'garden.html' },
 ];
 
 const PAGES_URL = new URL('../../wasm/studies.json', import.meta.url);

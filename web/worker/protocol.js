@@ -187,5 +187,20 @@
  * @typedef {Envelope & {type: 'recycle', buffers: Object<string, ArrayBuffer>}} MossRecycleMessage
  *   (no reply) the page's land and moss buffers back once on the GPU.
  */
+/**
+ * The garden page (study: 'garden', web/worker/garden_handler.js). State: the garden state JSON
+ * (core/compose/garden_state.h GardenStateJson: {params, ground, objects, plants, mix}); ready
+ * carries `paramTable` (the garden table), `species` (the tree presets' names: the planting picker)
+ * and `decoded` ({state, notices}: the default garden with the link's keys).
+ * @typedef {Envelope & {type: 'update', state: Object}} GardenUpdateMessage
+ *   -> ProgressMessage (after every year: stage 'grow', done, total years), {type: 'garden', stats
+ *       (the run's StatsJson), statsText, hash, state, bounds: {size, n, cell, relief, min, max,
+ *       groups: [{name, species, seed, age, trees, shaded, crown}], trees: [{species, seed, age,
+ *       pos, rot, hand, group}]}, buffers: {ground: {positions, normals, indices, heights},
+ *       objects: {positions, normals, indices, kind}, trees: {positions, normals, indices, part,
+ *       ranges, instances}} (views into the buffers the client handed back when they fit),
+ *       bufferCounts, growMs, wallMs}
+ * export: format 'glb' | 'svg' | 'json' | 'heightmap' (the run's Export bytes).
+ */
 // (No list of message types here: each study's handler says which it answers, and the router
 // refuses any other per study; a new study adds messages without touching this file.)

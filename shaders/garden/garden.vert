@@ -1,0 +1,34 @@
+#version 300 es
+// The garden page's meshes (web/garden/garden_renderer.js): the ground, the objects and every
+// distinct tree's mesh, in metres, y up; a tree's mesh drawn once per planted tree (instanced:
+// aInstance = its foot x, y, z and its turn about y in radians, counter-clockwise seen from above,
+// as the .glb's YawQuaternion); the ground and the objects with aInstance (0, 0, 0, 0). aTint: the
+// ground's height (m), an object's kind (0 wall, 1 rock, 2 lantern), a tree vertex's part (0 bark,
+// 1 leaves, 2 flowers): garden.frag's colour.
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in float aTint;
+layout(location = 3) in vec4 aInstance;
+
+uniform mat4 uViewProjection;
+uniform mat4 uSunViewProjection;    // the shadow map's (web/gl/shadow_map.js)
+uniform float uShadowNormalOffset;  // metres along the normal before the lookup
+
+out vec3 vNormal;
+out float vTint;
+out float vHeight;
+out vec4 vShadow;
+
+vec3 turn(vec3 v, float a) {
+  float c = cos(a), s = sin(a);
+  return vec3(c * v.x + s * v.z, v.y, -s * v.x + c * v.z);
+}
+
+void main() {
+  vec3 world = aInstance.xyz + turn(aPosition, aInstance.w);
+  vNormal = turn(aNormal, aInstance.w);
+  vTint = aTint;
+  vHeight = world.y;
+  vShadow = uSunViewProjection * vec4(world + normalize(vNormal + vec3(0.0, 1e-6, 0.0)) * uShadowNormalOffset, 1.0);
+  gl_Position = uViewProjection * vec4(world, 1.0);
+}

@@ -1,0 +1,156 @@
+// Browser test of the garden page (public/garden.html): node tests/browser/garden_page.test.mjs
+// (exit 0 = pass). The page opens with no input and grows the default garden (8 years) with its
+// ground, objects and trees drawn (leaf-green and bark-brown pixels over the ground's); its stats
+// equal the native CLI's `niwa garden grow --url HASH --stats` (the ms* timings aside) for the
+// page's own hash; a panel edit (plant_seed) regrows with the row in the hash; a real click on the
+// ground places a tree of the picked species there (the stats' by-hand count + 1, the plant within
+// 0.3 m of the clicked point) and its Remove button takes it away; Copy link reopens the same
+// garden (same hash and stats); the Garden .glb download is the bytes of native `niwa garden grow
+// --url HASH --out g.glb`; a bad Years value is a line beside its field naming the range, and the
+// page recovers; Cancel stops a long regrow and the page grows its last garden again. Screenshots: build/artifacts/garden-*.png.
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import { ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, waitStudyRun, watchPage } from './harness.mjs';
+
+const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => k !== 'ms' && !k.startsWith('ms_')));
+const waitGarden = (page, serialAbove) => waitStudyRun(page, 'gardenSerial', serialAbove);
+
+// Shares of the canvas: sky, leaf green, bark brown, and the rest (ground, objects). The ground's
+// greens are yellower than the leaves' (g < 1.7 r): a garden drawn without its trees has no leaf
+// pixel (0.000 at 4 years, when the trees are saplings a pixel wide).
+async function looks(page) {
+  return page.evaluate(() => {
+    const d = window.__niwaCanvasImage('#view').data;
+    let sky = 0, leaf = 0, bark = 0, grey = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      const r = d[i], g = d[i + 1], b = d[i + 2];
+      if (Math.abs(r - 219) < 8 && Math.abs(g - 230) < 8 && Math.abs(b - 240) < 8) ++sky;
+      else if (g > 1.7 * r && g > 2.2 * b && g > 30) ++leaf;
+      else if (r > 1.3 * g && g > 1.25 * b && r > 25 && r < 160) ++bark;
+      else if (Math.abs(r - g) < 8 && Math.abs(g - b) < 10 && r > 90) ++grey;
+    }
+    const n = d.length / 4;
+    return { sky: sky / n, leaf: leaf / n, bark: bark / n, grey: grey / n };
+  });
+}
+
+const problems = [];
+await runBrowserTest(async (server, browser) => {
+  const context = await newContext(browser, { viewport: { width: 1200, height: 800 }, acceptDownloads: true, permissions: ['clipboard-read', 'clipboard-write'] });
+  const page = watchPage(await context.newPage(), problems);
+
+  // 1. Opens with no input: the default garden grown and drawn.
+  await page.goto(`${server.url}garden.html`, { waitUntil: 'load' });
+  let data = await waitGarden(page, 0);
+  const stats = JSON.parse(data.stats || '{}');
+  check('opens with the default garden grown (trees, objects, a terrain ground)', data.status === 'ready' && Number(data.trees) > 3 && stats.objects === 4 && /terrain/.test(stats.ground?.source || ''),
+    `${data.status} ${data.error || ''} trees ${data.trees}, ${stats.objects} objects, ground ${stats.ground?.source}`);
+  check('every planted tree is drawn (instanced)', Number(data.drawnTrees) === Number(data.trees), `drawn ${data.drawnTrees} of ${data.trees}`);
+  check('the garden is in the page\'s link', /years=8/.test(data.hash) && (await page.evaluate(() => location.hash)).includes('years=8'), data.hash);
+  check('the nav links the garden page', await page.$eval('#studies', (nav) => [...nav.querySelectorAll('a')].some((a) => a.getAttribute('href') === 'garden.html' && a.getAttribute('aria-current') === 'page')));
+  let seen = await looks(page);
+  check('the view shows the ground, leaves and bark (pixels)', seen.sky < 0.5 && seen.leaf > 0.003 && seen.bark > 0.0001,
+    `sky ${seen.sky.toFixed(3)} leaf ${seen.leaf.toFixed(3)} bark ${seen.bark.toFixed(4)} grey ${seen.grey.toFixed(4)}`);
+  check('the sun\'s shadow map is drawn', data.shadow === 'drawn' || data.shadow === 'reused', data.shadow);
+  await saveCanvasPng(page, 'garden-first.png');
+  await page.screenshot({ path: path.join(ARTIFACTS, 'garden-page.png') });
+
+  let native = null;
+  try {
+    native = JSON.parse(execFileSync(NATIVE, ['garden', 'grow', '--url', data.hash, '--stats'], { encoding: 'utf8' }).trim().split('\n').pop());
+  } catch (e) {
+    check('native garden grow runs', false, e.message.split('\n')[0]);
+  }
+  check('page stats == native `niwa garden grow --url HASH --stats` (ms* aside)', native && JSON.stringify(withoutMs(native)) === JSON.stringify(withoutMs(stats)),
+    `web ${JSON.stringify(withoutMs(stats)).slice(0, 200)} native ${JSON.stringify(native ? withoutMs(native) : null).slice(0, 200)}`);
+
+  // 2. A panel edit regrows in the worker.
+  await page.$$eval('#params details', (all) => all.forEach((d) => { d.open = true; }));
+  let serial = Number(data.gardenSerial);
+  await page.fill('#param-plant_seed', '2');
+  data = await waitGarden(page, serial);
+  check('a panel edit (plant_seed 2) regrows, the row in the hash', data.status === 'ready' && /plant_seed=2/.test(data.hash), `${data.status} ${data.hash}`);
+
+  // 3. A click on the ground places a tree there; its Remove button takes it away.
+  serial = Number(data.gardenSerial);
+  const before = { byHand: Number(data.byHand), trees: Number(data.trees), plants: Number(data.handPlants) };
+  const [gx, gz] = [12, 10];
+  const at = await page.evaluate(([x, z]) => window.__niwaGardenScreenOf(x, z), [gx, gz]);
+  const box = await page.$eval('#view', (c) => { const r = c.getBoundingClientRect(); return [r.left, r.top]; });
+  await page.mouse.click(box[0] + at[0], box[1] + at[1]);
+  data = await waitGarden(page, serial);
+  const state = await page.evaluate(() => location.hash);
+  const placed = JSON.parse(data.stats);
+  const plantMatch = /plants=([^&]*)/.exec(data.hash);
+  const last = plantMatch ? decodeURIComponent(plantMatch[1]).split(',').pop().split(':') : [];
+  const near = last.length >= 5 && Math.hypot(Number(last[3]) - gx, Number(last[4]) - gz) < 0.3;
+  check('a click on the ground places a tree there (by hand + 1)', data.status === 'ready' && Number(data.byHand) === before.byHand + 1 && Number(data.handPlants) === before.plants + 1 && near,
+    `${data.status} ${data.error || ''} by hand ${before.byHand} -> ${data.byHand}, trees ${before.trees} -> ${data.trees} (${JSON.stringify(placed.planting)}), last plant ${last.join(':')}, ${state.slice(0, 120)}`);
+  await saveCanvasPng(page, 'garden-placed.png');
+  serial = Number(data.gardenSerial);
+  await page.click(`#plants button[data-plant="${before.plants}"]`);
+  data = await waitGarden(page, serial);
+  check('its Remove button takes it away (by hand back)', data.status === 'ready' && Number(data.byHand) === before.byHand, `${data.status} by hand ${data.byHand}`);
+
+  // 4. Copy link reopens the same garden.
+  await page.evaluate(() => { document.getElementById('share-status').textContent = ''; });
+  await page.click('#copy-link');
+  await page.waitForFunction(() => document.getElementById('share-status').textContent !== '', null, { timeout: TIMEOUT });
+  const status = await page.textContent('#share-status');
+  const link = status === 'Link copied.' ? await page.evaluate(() => navigator.clipboard.readText()) : status.replace(/^Copy this link: /, '');
+  check('Copy link gives the page\'s link', link.endsWith(`#${data.hash}`), `${status}: ${link}`);
+  const page2 = watchPage(await context.newPage(), problems);
+  await page2.goto(link, { waitUntil: 'load' });
+  const data2 = await waitGarden(page2, 0);
+  check('the copied link reopens the same garden (same hash and stats)', data2.status === 'ready' && data2.hash === data.hash && data2.stats === data.stats,
+    `${data2.status} ${data2.hash} vs ${data.hash}`);
+  await page2.close();
+
+  // 5. The .glb: the bytes of native `niwa garden grow --url HASH --out g.glb`.
+  const [d] = await Promise.all([page.waitForEvent('download', { timeout: TIMEOUT }), page.click('#download-glb')]);
+  const file = path.join(ARTIFACTS, d.suggestedFilename());
+  await d.saveAs(file);
+  const nativeFile = path.join(ARTIFACTS, 'garden-native.glb');
+  let nativeBytes = Buffer.alloc(0);
+  try {
+    execFileSync(NATIVE, ['garden', 'grow', '--url', data.hash, '--out', nativeFile]);
+    nativeBytes = fs.readFileSync(nativeFile);
+  } catch (e) {
+    check('native garden grow --out runs', false, e.message.split('\n')[0]);
+  }
+  const pageBytes = fs.readFileSync(file);
+  check('Garden .glb downloads the bytes of `niwa garden grow --url HASH --out g.glb`', d.suggestedFilename().endsWith('.glb') && pageBytes.length > 1000 && pageBytes.equals(nativeBytes),
+    `${d.suggestedFilename()}: ${pageBytes.length} bytes, native ${nativeBytes.length}`);
+
+  // 6. A bad value: a line beside its field naming the range; the page keeps working.
+  serial = Number(data.gardenSerial);
+  await page.fill('#param-years', '99');
+  await page.waitForFunction(() => document.documentElement.dataset.status === 'error', null, { timeout: TIMEOUT });
+  const line = await page.evaluate(() => {
+    const row = document.getElementById('param-years').closest('.param, .row, div');
+    const el = row && [...row.parentElement.querySelectorAll('.field-error')].find((e) => !e.hidden);
+    return el ? el.textContent : '';
+  });
+  check('years 99 is a line beside its field naming the range', /years/.test(line) && /60/.test(line), `'${line}' (error: ${await page.evaluate(() => document.documentElement.dataset.error)})`);
+  await page.screenshot({ path: path.join(ARTIFACTS, 'garden-bad-years.png') });
+  await page.fill('#param-years', '3');
+  data = await waitGarden(page, serial);
+  check('the page recovers after the bad value', data.status === 'ready' && /years=3/.test(data.hash), `${data.status} ${data.hash}`);
+  seen = await looks(page);
+  check('the recovered garden is drawn (leaves on the ground)', seen.leaf > 0.0005, `leaf ${seen.leaf.toFixed(3)}`);
+
+  // 7. Cancel: a long regrow (years 14) stopped at once; the page goes back to the last garden.
+  serial = Number(data.gardenSerial);
+  const good = data.hash;
+  await page.fill('#param-years', '14');
+  await page.waitForSelector('#cancel:not([hidden])', { timeout: TIMEOUT });
+  await page.waitForFunction(() => document.documentElement.dataset.status === 'growing', null, { timeout: TIMEOUT });
+  await page.click('#cancel');
+  const cancelled = await page.evaluate(() => ({ ...document.documentElement.dataset }));
+  data = await waitGarden(page, serial);
+  check('Cancel stops the regrow and the page regrows the last garden', cancelled.status === 'cancelled' && cancelled.cancels === '1' && data.status === 'ready' && data.hash === good,
+    `${cancelled.status} cancels ${cancelled.cancels}, then ${data.status} ${data.hash === good ? 'the last hash' : data.hash}`);
+
+  check('no console errors or warnings', problems.length === 0, problems.slice(0, 5).join(' | '));
+});

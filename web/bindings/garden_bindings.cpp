@@ -1,0 +1,296 @@
+// The garden's bindings (issue 33 item 6; docs/garden-model.md "The page"): GardenLab, one garden
+// run (core/compose/garden_run.h) grown to its years for the worker (web/worker/garden_handler.js),
+// flattened for the page from GardenRun's public API: the ground's triangles and heights, the
+// objects' meshes, each distinct tree's full mesh once (bark, leaves, flowers: GardenGroupMesh of
+// compose/garden_view, tubes of 3 to 6 sides; the page's view, not the .glb's LOD) and every
+// planted tree's placement in its group; and the garden table and share-link codec as JSON (the
+// compose registry, core/compose/studies.cpp, has no garden row).
+//
+// Design (as the moss lab's): everything from JavaScript arrives as text and is checked by the core
+// (ApplyGardenStateJson, CheckGardenState, GardenRun::Start's estimate against the page budget);
+// nothing throws, errors come back as the {ok, field, message} record (error_record.h) naming a
+// state field ("plants[1].pos", "years", "density") or the budget's line. Buffers leave through
+// buffers(group) (buffers.h), copied once by the worker. Groups:
+//   "ground"  positions, normals (Float32 xyz, metres, y up), indices (Uint32): GardenGround::Mesh;
+//             heights (Float32, (n + 1)² in GardenGround's order: vertex (i, j) at x = −L/2 +
+//             i·cell, z = −L/2 + j·cell), for the page's ray against the ground (its clicks)
+//   "objects" positions, normals, indices (every object's mesh, placed, in one list), kind (Float32
+//             per vertex: 0 wall, 1 rock, 2 lantern)
+//   "trees"   positions, normals, indices (each group's mesh at the origin, one after another;
+//             the indices absolute), part (Float32 per vertex: 0 bark, 1 leaves, 2 flowers),
+//             ranges (Uint32, 4 per group: first index, index count, first instance, instance
+//             count), instances (Float32, 4 per planted tree in group order: x, y, z of its
+//             foot, its turn about y in radians, counter-clockwise seen from above)
+// Calls: setProgress(fn) (fn(stage, done, total) after every year), grow(stateJson) -> ""/error
+// record (the state JSON of GardenStateJson over the default garden, LayOutDefaults, checked,
+// started and advanced); statsJson() (the run's StatsJson, as `niwa garden grow --stats` without
+// the CLI's timings), hash(), stateJson(), boundsJson() ({size, n, cell, relief, min, max, groups,
+// trees}); build("glb"|"svg"|"json") then buffers("download"): the run's Export bytes (the bytes of
+// `niwa garden grow --url HASH --out g.glb`). Free functions: gardenTableJson(),
+// gardenDecodeJson(hash) ({state, notices}: the default garden with the link's keys).
+// Does not: keep more than one run, replay years, or read files (a heightmap or mask ground is not
+// offered by the page yet).
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "buffers.h"
+#include "compose/garden_params.h"
+#include "compose/garden_run.h"
+#include "compose/garden_state.h"
+#include "compose/garden_view.h"
+#include "error_record.h"
+#include "page_budget.h"
+#include "params/param_json.h"
+
+namespace niwa {
+namespace {
+
+using nlohmann::ordered_json;
+
+constexpr double kPi = 3.14159265358979323846;
+
+void AppendMesh(const geom::TriMesh& mesh, std::vector<float>* positions,
+                std::vector<float>* normals, std::vector<uint32_t>* indices) {
+  const auto base = static_cast<uint32_t>(positions->size() / 3);
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    const glm::vec3& p = mesh.positions[v];
+    positions->insert(positions->end(), {p.x, p.y, p.z});
+    const glm::vec3 n = v < mesh.normals.size() ? mesh.normals[v] : glm::vec3(0, 1, 0);
+    normals->insert(normals->end(), {n.x, n.y, n.z});
+  }
+  for (uint32_t i : mesh.indices) indices->push_back(base + i);
+}
+
+// One part of a tree's mesh appended: its vertices tagged `part`, its indices absolute.
+void AppendPart(const MeshBuffers& m, float part, std::vector<float>* positions,
+                std::vector<float>* normals, std::vector<float>* parts,
+                std::vector<uint32_t>* indices) {
+  const auto base = static_cast<uint32_t>(positions->size() / 3);
+  positions->insert(positions->end(), m.positions.begin(), m.positions.end());
+  normals->insert(normals->end(), m.normals.begin(), m.normals.end());
+  parts->insert(parts->end(), m.vertex_count(), part);
+  for (uint32_t i : m.indices) indices->push_back(base + i);
+}
+
+}  // namespace
+
+std::string GardenTableJson() { return ParamTableJson(compose::GardenTable()); }
+
+// {state (GardenStateJson, parsed), notices} of the default garden with the link's keys.
+std::string GardenDecodeJson(const std::string& hash) {
+  compose::GardenState state = compose::DefaultGardenState();
+  std::vector<std::string> notices;
+  std::string_view h = hash;
+  if (!h.empty() && h[0] == '#') h.remove_prefix(1);
+  compose::ApplyGardenHash(h, "", &state, &notices);
+  compose::LayOutDefaults(&state);
+  ordered_json j;
+  j["state"] = ordered_json::parse(compose::GardenStateJson(state));
+  j["notices"] = notices;
+  return JsonText(j);
+}
+
+// An adapter over core/compose/garden_run.h: one garden grown to its years, flattened for the page.
+class GardenLab {
+ public:
+  void setProgress(emscripten::val fn) { progress_ = fn; }
+
+  std::string grow(const std::string& state_json) {
+    compose::GardenState state = compose::DefaultGardenState();
+    Status s = compose::ApplyGardenStateJson(state_json, &state);
+    if (!s.ok()) return ErrorText(s);
+    compose::LayOutDefaults(&state);
+    s = compose::CheckGardenState(state);
+    if (!s.ok()) return ErrorText(s);
+    Result<compose::GardenRun> started = compose::GardenRun::Start(state, PageBudget());
+    if (!started.ok()) return ErrorText(started.status());
+    compose::GardenRun run = std::move(started).value();
+    s = run.Advance([&](const run::Progress& p) {
+      if (!progress_.isNull() && !progress_.isUndefined())
+        progress_(std::string(p.phase), p.done, p.total);
+      return true;
+    });
+    if (!s.ok()) return ErrorText(s);
+    run_.emplace(std::move(run));
+    FillGround();
+    FillObjects();
+    FillTrees();
+    return "";
+  }
+
+  std::string statsJson() const { return run_ ? run_->StatsJson() : "{}"; }
+  std::string hash() const { return run_ ? run_->Hash("") : ""; }
+  std::string stateJson() const { return run_ ? compose::GardenStateJson(run_->state()) : "{}"; }
+
+  // {size, n, cell, relief (m), min, max (the ground's and the trees' box), groups: [{name,
+  // species, seed, age, trees, shaded, crown (m)}], trees: [{species, seed, age, pos: [x, y, z],
+  // rot, hand, group}]}.
+  std::string boundsJson() const {
+    if (!run_) return "{}";
+    const compose::GardenGround& g = run_->scene().ground;
+    ordered_json j;
+    j["size"] = g.size;
+    j["n"] = g.n;
+    j["cell"] = g.cell;
+    j["relief"] = g.relief;
+    double top = g.relief;
+    for (const float y : tree_positions_) top = std::max(top, g.relief + static_cast<double>(y));
+    j["min"] = {-g.size / 2, 0.0, -g.size / 2};
+    j["max"] = {g.size / 2, top, g.size / 2};
+    ordered_json groups = ordered_json::array();
+    for (std::size_t k = 0; k < run_->groups().size(); ++k) {
+      const compose::GardenTreeGroup& grp = run_->groups()[k];
+      groups.push_back({{"name", grp.name},
+                        {"species", grp.species},
+                        {"seed", grp.seed},
+                        {"age", grp.age},
+                        {"trees", grp.trees.size()},
+                        {"shaded", grp.shaded},
+                        {"crown", run_->CrownRadius(static_cast<int>(k))}});
+    }
+    j["groups"] = groups;
+    ordered_json trees = ordered_json::array();
+    const std::vector<compose::PlacedTree>& placed = run_->planting().trees;
+    for (std::size_t t = 0; t < placed.size(); ++t) {
+      const compose::PlacedTree& p = placed[t];
+      trees.push_back({{"species", p.species},
+                       {"seed", p.seed},
+                       {"age", p.age},
+                       {"pos", {p.x, p.y, p.z}},
+                       {"rot", p.rot},
+                       {"hand", p.hand},
+                       {"group", run_->group_of(static_cast<int>(t))}});
+    }
+    j["trees"] = trees;
+    return JsonText(j);
+  }
+
+  // One download of the last run into the "download" group: "" or an error record naming
+  // "download" (over the page's memory budget, or the export's own field).
+  std::string build(const std::string& format) {
+    download_.clear();
+    if (!run_) return ErrorText(Status::Error("download", "nothing grown yet"));
+    Result<Estimate> needs = run_->ExportEstimate(format);
+    if (!needs.ok()) return ErrorText(needs.status().Within("download"));
+    const Status fits =
+        CheckEstimate(*needs, PageBudget(), "lower max_triangles or the trees (density, size)");
+    if (!fits.ok()) return ErrorText(fits);
+    Result<std::string> bytes = run_->Export(format);
+    if (!bytes.ok()) return ErrorText(bytes.status().Within("download"));
+    download_.assign(bytes->begin(), bytes->end());
+    return "";
+  }
+
+  emscripten::val buffers(const std::string& group) const {
+    NamedBuffers out;
+    if (group == "ground") {
+      out.Add("positions", ground_positions_)
+          .Add("normals", ground_normals_)
+          .Add("indices", ground_indices_)
+          .Add("heights", ground_heights_);
+    } else if (group == "objects") {
+      out.Add("positions", object_positions_)
+          .Add("normals", object_normals_)
+          .Add("indices", object_indices_)
+          .Add("kind", object_kind_);
+    } else if (group == "trees") {
+      out.Add("positions", tree_positions_)
+          .Add("normals", tree_normals_)
+          .Add("indices", tree_indices_)
+          .Add("part", tree_part_)
+          .Add("ranges", tree_ranges_)
+          .Add("instances", tree_instances_);
+    } else if (group == "download") {
+      out.Add("bytes", download_);
+    } else {
+      return emscripten::val::null();
+    }
+    return out.ToJs();
+  }
+
+ private:
+  void FillGround() {
+    const compose::GardenGround& g = run_->scene().ground;
+    ground_positions_.clear();
+    ground_normals_.clear();
+    ground_indices_.clear();
+    AppendMesh(g.Mesh(), &ground_positions_, &ground_normals_, &ground_indices_);
+    ground_heights_.assign(g.h.begin(), g.h.end());
+  }
+
+  void FillObjects() {
+    object_positions_.clear();
+    object_normals_.clear();
+    object_indices_.clear();
+    object_kind_.clear();
+    for (const compose::PlacedObject& o : run_->scene().objects) {
+      AppendMesh(o.mesh, &object_positions_, &object_normals_, &object_indices_);
+      const float kind = o.kind == "wall" ? 0.f : o.kind == "rock" ? 1.f : 2.f;
+      object_kind_.resize(object_positions_.size() / 3, kind);
+    }
+  }
+
+  void FillTrees() {
+    tree_positions_.clear();
+    tree_normals_.clear();
+    tree_part_.clear();
+    tree_indices_.clear();
+    tree_ranges_.clear();
+    tree_instances_.clear();
+    const std::vector<compose::PlacedTree>& placed = run_->planting().trees;
+    for (std::size_t k = 0; k < run_->groups().size(); ++k) {
+      const compose::GardenTreeGroup& grp = run_->groups()[k];
+      const TreeMesh mesh = compose::GardenGroupMesh(*run_, static_cast<int>(k));
+      const auto first_index = static_cast<uint32_t>(tree_indices_.size());
+      AppendPart(mesh.bark, 0.f, &tree_positions_, &tree_normals_, &tree_part_, &tree_indices_);
+      AppendPart(mesh.leaves, 1.f, &tree_positions_, &tree_normals_, &tree_part_, &tree_indices_);
+      AppendPart(mesh.flowers, 2.f, &tree_positions_, &tree_normals_, &tree_part_, &tree_indices_);
+      tree_ranges_.push_back(first_index);
+      tree_ranges_.push_back(static_cast<uint32_t>(tree_indices_.size()) - first_index);
+      tree_ranges_.push_back(static_cast<uint32_t>(tree_instances_.size() / 4));
+      tree_ranges_.push_back(static_cast<uint32_t>(grp.trees.size()));
+      for (int t : grp.trees) {
+        const compose::PlacedTree& p = placed[t];
+        tree_instances_.insert(tree_instances_.end(),
+                               {static_cast<float>(p.x), static_cast<float>(p.y),
+                                static_cast<float>(p.z), static_cast<float>(p.rot * kPi / 180.0)});
+      }
+    }
+  }
+
+  std::optional<compose::GardenRun> run_;
+  std::vector<float> ground_positions_, ground_normals_, ground_heights_;
+  std::vector<uint32_t> ground_indices_;
+  std::vector<float> object_positions_, object_normals_, object_kind_;
+  std::vector<uint32_t> object_indices_;
+  std::vector<float> tree_positions_, tree_normals_, tree_part_, tree_instances_;
+  std::vector<uint32_t> tree_indices_, tree_ranges_;
+  std::vector<unsigned char> download_;  // the last build's bytes (group "download")
+  emscripten::val progress_ = emscripten::val::null();
+};
+
+}  // namespace niwa
+
+EMSCRIPTEN_BINDINGS(niwa_garden) {
+  using namespace emscripten;
+  function("gardenTableJson", &niwa::GardenTableJson);
+  function("gardenDecodeJson", &niwa::GardenDecodeJson);
+  class_<niwa::GardenLab>("GardenLab")
+      .constructor<>()
+      .function("setProgress", &niwa::GardenLab::setProgress)
+      .function("grow", &niwa::GardenLab::grow)
+      .function("statsJson", &niwa::GardenLab::statsJson)
+      .function("hash", &niwa::GardenLab::hash)
+      .function("stateJson", &niwa::GardenLab::stateJson)
+      .function("boundsJson", &niwa::GardenLab::boundsJson)
+      .function("buffers", &niwa::GardenLab::buffers)
+      .function("build", &niwa::GardenLab::build);
+}

@@ -1,0 +1,267 @@
+// The garden's page (public/garden.html, main thread; issue 33 item 6, docs/garden-model.md "The
+// page"): opens with the default garden (DefaultGardenState: a 40 m terrain ground, a wall, two
+// rocks, a stone lantern, a keyaki placed by hand and the rules' keyaki, sakura and maple) grown
+// OPENING_YEARS years, builds the panel from the garden table, keeps the state in location.hash
+// through the garden's hash codec (the text `niwa garden grow --url` reads), and draws the ground,
+// the objects and every planted tree (each distinct tree's mesh once, instanced at its
+// placements: garden_renderer.js) under the frame's orbit camera and sun with its shadow map.
+// A click on the ground (not a drag) places a tree of the species picked (its foot where the click's
+// ray meets the ground's heights), a click within a metre of a hand-placed tree's foot removes it,
+// and the list of hand-placed trees has a Remove button each: every one edits the state's plants and
+// regrows in the worker (web/worker/garden_handler.js) with progress and Cancel. Copy link, the
+// .glb download (the worker's run's Export("glb"): the bytes of `niwa garden grow --url HASH --out
+// g.glb`), the plan .svg, and the stats line (trees by species).
+// Does not (yet): the year scrubber without regrowing, Blow, overlays, the embed element, hybrid
+// (card) trees, moving objects, or several workers growing at once.
+import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
+import { Frame } from '../gl/frame.js';
+import { OrbitCamera } from '../gl/orbit_camera.js';
+import { ProgressiveLoop } from '../gl/progressive_loop.js';
+import { DEFAULT_SUNS } from '../gl/sun.js';
+import { ParamPanel } from '../shell/param_panel.js';
+import { StudyController } from '../shell/study_controller.js';
+import { Notices, copyLink, mountStudyNav } from '../shell/study_page.js';
+import { setHooks } from '../shell/test_hooks.js';
+import { GardenRenderer } from './garden_renderer.js';
+
+const $ = (id) => document.getElementById(id);
+const ui = {
+  canvas: $('view'), stats: $('stats'), progress: $('progress'), cancel: $('cancel'), params: $('params'),
+  species: $('species'), plants: $('plants'), copyLink: $('copy-link'), shareStatus: $('share-status'),
+  resetView: $('reset-view'), clickHelp: $('click-help'),
+};
+mountStudyNav($('studies'), 'garden');
+// The timeline of the skeleton: no year scrubber yet (it would regrow); hidden.
+for (const el of document.querySelectorAll('.timeline')) el.style.display = 'none';
+
+const notices = new Notices($('notice'), ['webgl', 'error', 'hash']);
+// The opening garden's years: a result in a few seconds in the page with trees that read as trees
+// (8 years: ~64 k internodes; the table's default, 10 years, gives ~130 k: a heavy first frame on a
+// CPU rasteriser).
+const OPENING_YEARS = 8;
+const OPENING_HASH = `#years=${OPENING_YEARS}`;
+const HAND_REACH = 1.0;  // metres: a click this near a hand-placed tree's foot removes it
+
+const controller = new StudyController({
+  study: 'garden', notices, ui, fields: {}, panel: () => panel, state: () => currentState(),
+  onCancel: () => 'cancelled: back to the last finished garden',
+  onRestart: () => {
+    restarting = true;
+    worker.request('init', { hash: '' }, { done: ['ready'] });
+  },
+  onError: (msg, when) => {
+    if (when === 'after') showPlantError(/^plants/.test(msg.field || '') ? msg.message : '');
+    return false;
+  },
+});
+const { worker } = controller;
+let restarting = false;
+let lastGoodHash = null;
+let panel = null;
+let state = null;       // the resolved garden state (GardenStateJson) of the last grow or decode
+let bounds = null;
+let gardenSerial = 0;
+let frameNext = true;
+
+// ---------------------------------------------------------------- rendering
+const camera = new OrbitCamera();
+let frame = null;
+let renderer = null;
+const loop = new ProgressiveLoop({
+  renderer: () => (renderer ? frame : null),
+  camera,
+  onDrawn: (drawn) => {
+    setHooks({ drawnSerial: gardenSerial, drawnTrees: drawn.trees ?? 0, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls, shadow: drawn.shadow ?? '' });
+  },
+});
+const requestFrame = () => loop.request();
+
+async function startRenderer() {
+  try {
+    await loop.start(async () => {
+      frame = new Frame(ui.canvas, { camera, sun: DEFAULT_SUNS.tree, ground: false, fit: false, request: () => loop.request(), what: 'the garden', antialias: 'hardware' });
+      await frame.init();
+      renderer = await frame.addLayer(new GardenRenderer(frame));
+      return frame;
+    }, {
+      canvas: ui.canvas, camera,
+      onLost: () => notices.set('webgl', 'The WebGL2 context was lost; reload the page to draw again.'),
+    });
+  } catch (e) {
+    renderer = null;
+    setHooks({ drawing: 'off' });
+    notices.set('webgl', `Cannot draw: ${e.message}`);
+  }
+}
+
+// The whole garden in view, seen from the south-east above: the ground's square (its relief, not the
+// crowns) filling the view.
+function frameGarden() {
+  if (!bounds) return;
+  camera.yaw = 0.6;
+  camera.pitch = 0.75;
+  const half = bounds.size / 2;
+  camera.frame({ min: [-half, 0, -half], max: [half, bounds.relief, half] }, 0.62);
+  requestFrame();
+}
+
+// ---------------------------------------------------------------- state
+function currentState() {
+  const s = state ? { ...state } : {};
+  if (panel) s.params = panel.values();
+  return s;
+}
+
+const sendUpdate = (commit) => controller.update(commit, {}, { done: ['garden'] });
+const scheduleUpdate = (stage = 'grow') => controller.schedule(() => sendUpdate(true), stage);
+
+function applyState(next) {
+  state = next;
+  panel.setValues(next.params || {});
+  showPlants();
+}
+
+function showPlantError(line) {
+  const el = $('plants-error');
+  el.textContent = line;
+  el.hidden = !line;
+}
+
+// The hand-placed trees, each with a Remove button.
+function showPlants() {
+  ui.plants.replaceChildren();
+  (state?.plants || []).forEach((p, k) => {
+    const item = document.createElement('li');
+    const [x, z] = p.pos || [0, 0];
+    item.append(`${p.species} (seed ${p.seed}, age ${p.age}) at ${x.toFixed(1)}, ${z.toFixed(1)} m `);
+    const remove = document.createElement('button');
+    remove.type = 'button';
+    remove.textContent = 'Remove';
+    remove.dataset.plant = String(k);
+    remove.addEventListener('click', () => removePlant(k));
+    item.append(remove);
+    ui.plants.append(item);
+  });
+  setHooks({ handPlants: (state?.plants || []).length });
+}
+
+function editPlants(plants) {
+  state = { ...currentState(), plants };
+  showPlants();
+  sendUpdate(true);
+}
+
+function removePlant(k) {
+  editPlants(state.plants.filter((_, i) => i !== k));
+}
+
+// A click on the ground at (x, z): removes the hand-placed tree whose foot is within HAND_REACH,
+// else places a tree of the picked species there (seed 1, age 0).
+function clickGround(x, z) {
+  const plants = state?.plants || [];
+  const near = plants.findIndex((p) => Math.hypot(p.pos[0] - x, p.pos[1] - z) <= HAND_REACH);
+  const round = (v) => Math.round(v * 100) / 100;
+  if (near >= 0) {
+    setHooks({ lastClick: `remove:${near}` });
+    removePlant(near);
+    return;
+  }
+  setHooks({ lastClick: `plant:${round(x)},${round(z)}` });
+  editPlants([...plants, { species: ui.species.value, seed: 1, age: 0, pos: [round(x), round(z)], rot: 0 }]);
+}
+
+// ---------------------------------------------------------------- worker replies
+worker.on('ready', (msg) => {
+  if (restarting) {
+    restarting = false;
+    worker.request('decode', { hash: lastGoodHash ? `#${lastGoodHash}` : OPENING_HASH }, { done: ['decoded'] });
+    return;
+  }
+  for (const name of msg.species) ui.species.append(new Option(name, name));
+  if (msg.species.includes('sakura')) ui.species.value = 'sakura';
+  panel = new ParamPanel(ui.params, msg.paramTable, (spec, stage) => scheduleUpdate(stage));
+  notices.set('hash', msg.decoded.notices);
+  applyState(msg.decoded.state);
+  sendUpdate(false);
+});
+
+worker.on('decoded', (msg) => {
+  applyState(msg.state);
+  notices.set('hash', msg.notices);
+  frameNext = true;
+  sendUpdate(false);
+});
+
+worker.on('progress', (msg) => {
+  ui.progress.textContent = msg.text;
+});
+
+worker.on('garden', (msg) => {
+  if (!controller.isLatest(msg)) return;
+  notices.set('error', '');
+  controller.showFieldError('');
+  showPlantError('');
+  lastGoodHash = msg.hash;
+  bounds = msg.bounds;
+  applyState(msg.state);
+  if (renderer) {
+    renderer.setGarden(msg.buffers, msg.bounds);
+    if (frameNext) {
+      frameGarden();
+      frameNext = false;
+    }
+  }
+  worker.recycle(msg.buffers);
+  controller.grown(msg.hash);
+  gardenSerial += 1;
+  controller.showWork(false);
+  ui.progress.textContent = '';
+  const s = msg.stats;
+  const species = Object.entries(s.trees.by_species).map(([name, n]) => `${n} ${name}`).join(', ');
+  ui.stats.textContent = `${s.size} m garden · ${s.years} years · ${s.trees.count} trees (${species}; ${s.trees.distinct} distinct, ${s.planting.by_hand} by hand) · ${s.objects} objects · ${(msg.growMs / 1000).toFixed(1)} s`;
+  setHooks({
+    status: 'ready', error: '', gardenSerial, trees: s.trees.count, byHand: s.planting.by_hand, distinct: s.trees.distinct,
+    stats: JSON.stringify(s), statsText: msg.statsText, hash: msg.hash, growMs: msg.growMs.toFixed(1),
+  });
+  requestFrame();
+});
+
+// ---------------------------------------------------------------- controls
+let down = null;
+ui.canvas.addEventListener('pointerdown', (e) => { down = { x: e.clientX, y: e.clientY, button: e.button, shift: e.shiftKey }; });
+ui.canvas.addEventListener('pointerup', (e) => {
+  if (!down || !renderer || !state) return;
+  const moved = Math.hypot(e.clientX - down.x, e.clientY - down.y);
+  const plain = down.button === 0 && !down.shift;
+  down = null;
+  if (moved > 4 || !plain) return;
+  const rect = ui.canvas.getBoundingClientRect();
+  const hit = renderer.groundHit(renderer.rayAt(camera, e.clientX - rect.left, e.clientY - rect.top));
+  if (!hit) {
+    ui.clickHelp.textContent = 'That click missed the ground.';
+    return;
+  }
+  ui.clickHelp.textContent = '';
+  clickGround(hit[0], hit[2]);
+});
+
+ui.resetView.addEventListener('click', frameGarden);
+ui.copyLink.addEventListener('click', () => copyLink(ui.shareStatus));
+const baseName = () => `garden-${state?.params?.years ?? 0}y`;
+$('download-glb').addEventListener('click', () => controller.exportAs('glb', `${baseName()}.glb`, 'model/gltf-binary'));
+$('download-svg').addEventListener('click', () => controller.exportAs('svg', `${baseName()}-plan.svg`, 'image/svg+xml'));
+
+// The canvas point (CSS pixels) where the ground point (x, z) is drawn: for a test's real click.
+window.__niwaGardenScreenOf = (x, z) => {
+  if (!renderer) return null;
+  const y = renderer.heightAt(x, z);
+  const w = ui.canvas.clientWidth, h = ui.canvas.clientHeight;
+  const m = camera.viewProjection(w / h);
+  const c = [0, 1, 2, 3].map((r) => m[r] * x + m[4 + r] * y + m[8 + r] * z + m[12 + r]);
+  return [((c[0] / c[3] + 1) / 2) * w, ((1 - c[1] / c[3]) / 2) * h];
+};
+
+// ---------------------------------------------------------------- start
+setHooks({ status: 'loading' });
+await startRenderer();
+worker.request('init', { hash: location.hash && location.hash !== '#' ? location.hash : OPENING_HASH }, { done: ['ready'] });

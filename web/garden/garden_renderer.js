@@ -1,0 +1,266 @@
+// The garden page's WebGL2 view (shaders/garden/): the ground (tinted by height), the objects
+// (walls, rocks, stone lanterns) and every planted tree, each distinct tree's mesh uploaded once and
+// drawn at all its placements with instancing (as the grove draws its copies), in metres, y up, under
+// the frame's camera and sun; the objects and trees cast the sun's shadow into the frame's shadow
+// map and everything receives it. Also the ground's height under a point and the ray of a click
+// (the page's planting by click).
+// A StudyLayer (web/gl/frame.js), a layer of a Frame of fit: false (metres).
+// Does not: talk to the worker, know the garden model, or draw the hybrid (card) trees of the grove.
+import { copyOf, floatAttribute, staticBuffer, viewOf } from '../gl/buffers.js';
+import { StudyLayer } from '../gl/frame.js';
+import { loadPrograms } from '../gl/program.js';
+
+const SHADERS = new URL('../../shaders/garden/', import.meta.url).href;
+const INSTANCE_BYTES = 16;  // x, y, z, turn (radians)
+
+const normalize = (v) => {
+  const l = Math.hypot(v[0], v[1], v[2]) || 1;
+  return [v[0] / l, v[1] / l, v[2] / l];
+};
+const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+
+export class GardenRenderer extends StudyLayer {
+  constructor(target) {
+    super(target, { what: 'the garden', study: 'tree' });
+    this.ground = null;   // {vao, buffers, count}
+    this.objects = null;  // {vao, buffers, count}
+    this.trees = null;    // {vao, buffers, instanceBuffer, groups: [{firstIndex, count, firstInstance, instances}]}
+    this.grid = null;     // {n, size, cell, heights: Float32Array, relief}
+    this.serial = 0;
+  }
+
+  async init() {
+    this.programs = await loadPrograms(this.gl, SHADERS, {
+      mesh: ['garden.vert', 'garden.frag'], shadow: ['shadow.vert', 'shadow.frag'],
+    });
+  }
+
+  ready() {
+    return Boolean(this.programs);
+  }
+
+  #drop(part) {
+    if (!part) return;
+    this.gl.deleteVertexArray(part.vao);
+    for (const b of part.buffers) this.gl.deleteBuffer(b);
+  }
+
+  // An indexed mesh (positions, normals, indices, and a per-vertex tint or none) in a new VAO.
+  #mesh(m, tint) {
+    const gl = this.gl;
+    const vao = gl.createVertexArray();
+    gl.bindVertexArray(vao);
+    const buffers = [staticBuffer(gl, m.positions), staticBuffer(gl, m.normals)];
+    floatAttribute(gl, 0, buffers[0], 3);
+    floatAttribute(gl, 1, buffers[1], 3);
+    if (tint) {
+      buffers.push(staticBuffer(gl, tint));
+      floatAttribute(gl, 2, buffers[2], 1);
+    }
+    buffers.push(staticBuffer(gl, m.indices, gl.ELEMENT_ARRAY_BUFFER));
+    gl.bindVertexArray(null);
+    return { vao, buffers, count: m.indices.byteLength / 4 };
+  }
+
+  // buffers: the worker's {ground, objects, trees} (web/bindings/garden_bindings.cpp; used at once:
+  // the page may recycle them after this returns); bounds: its boundsJson (size, n, cell, relief,
+  // min, max).
+  setGarden(buffers, bounds) {
+    const gl = this.gl;
+    this.progress.abort();
+    this.clear();
+    this.ground = this.#mesh(buffers.ground, null);
+    this.objects = buffers.objects.indices.byteLength > 0 ? this.#mesh(buffers.objects, buffers.objects.kind) : null;
+    const t = buffers.trees;
+    if (t.indices.byteLength > 0) {
+      const trees = this.#mesh(t, t.part);
+      gl.bindVertexArray(trees.vao);
+      trees.instanceBuffer = staticBuffer(gl, t.instances);
+      trees.buffers.push(trees.instanceBuffer);
+      gl.bindVertexArray(null);
+      const r = viewOf(Uint32Array, t.ranges);
+      trees.groups = [];
+      for (let k = 0; k + 3 < r.length; k += 4) {
+        trees.groups.push({ firstIndex: r[k], count: r[k + 1], firstInstance: r[k + 2], instances: r[k + 3] });
+      }
+      this.trees = trees;
+    }
+    this.grid = { n: bounds.n, size: bounds.size, cell: bounds.cell, relief: bounds.relief, heights: copyOf(Float32Array, buffers.ground.heights) };
+    this.boundsView = { min: [...bounds.min], max: [...bounds.max] };
+    this.serial += 1;
+  }
+
+  clear() {
+    this.progress.abort();
+    this.#drop(this.ground);
+    this.#drop(this.objects);
+    this.#drop(this.trees);
+    this.ground = this.objects = this.trees = null;
+  }
+
+  // The ground's height under (x, z) (metres): the triangle of its grid under the point, split along
+  // the (i, j)-(i + 1, j + 1) diagonal as core/compose/garden_scene.h GardenGround::HeightAt; the
+  // point clamped into the square.
+  heightAt(x, z) {
+    const g = this.grid;
+    if (!g) return 0;
+    const fx = Math.min(Math.max((x + g.size / 2) / g.cell, 0), g.n);
+    const fz = Math.min(Math.max((z + g.size / 2) / g.cell, 0), g.n);
+    const i = Math.min(Math.floor(fx), g.n - 1), j = Math.min(Math.floor(fz), g.n - 1);
+    const u = fx - i, v = fz - j;
+    const h = (a, b) => g.heights[b * (g.n + 1) + a];
+    if (u >= v) return h(i, j) + u * (h(i + 1, j) - h(i, j)) + v * (h(i + 1, j + 1) - h(i + 1, j));
+    return h(i, j) + v * (h(i, j + 1) - h(i, j)) + u * (h(i + 1, j + 1) - h(i, j + 1));
+  }
+
+  // The ray through the canvas point (x, y) (CSS pixels) under `camera`: {origin, direction}.
+  rayAt(camera, x, y) {
+    const w = this.canvas.clientWidth, h = this.canvas.clientHeight;
+    const ndcX = (2 * x) / w - 1, ndcY = 1 - (2 * y) / h;
+    const eye = camera.position(), target = camera.target;
+    const f = normalize([target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]]);
+    const r = normalize(cross(f, [0, 1, 0]));
+    const u = cross(r, f);
+    const t = Math.tan(camera.fov / 2), aspect = w / h;
+    const dir = [0, 1, 2].map((i) => f[i] + r[i] * ndcX * t * aspect + u[i] * ndcY * t);
+    return { origin: eye, direction: normalize(dir) };
+  }
+
+  // Where `ray` first meets the ground inside the square: [x, y, z], or null. Marched in steps of
+  // a quarter cell, the crossing refined by bisection.
+  groundHit(ray) {
+    const g = this.grid;
+    if (!g) return null;
+    const { origin: o, direction: d } = ray;
+    const above = (s) => o[1] + d[1] * s - this.heightAt(o[0] + d[0] * s, o[2] + d[2] * s);
+    const half = g.size / 2;
+    const step = g.cell / 4;
+    const far = Math.hypot(o[0], o[1], o[2]) + 2 * g.size + g.relief;
+    let prev = 0;
+    if (above(0) < 0) return null;
+    for (let s = step; s <= far; s += step) {
+      if (above(s) > 0) {
+        prev = s;
+        continue;
+      }
+      let lo = prev, hi = s;
+      for (let k = 0; k < 40; ++k) {
+        const mid = (lo + hi) / 2;
+        if (above(mid) > 0) lo = mid;
+        else hi = mid;
+      }
+      const p = [o[0] + d[0] * hi, 0, o[2] + d[2] * hi];
+      if (Math.abs(p[0]) > half || Math.abs(p[2]) > half) return null;
+      p[1] = this.heightAt(p[0], p[2]);
+      return p;
+    }
+    return null;
+  }
+
+  // The trees' draw of triangles [first, first + count) of group `g` over its instances (each
+  // instance `tris` triangles): partial instances drawn alone, whole ones in one instanced draw.
+  #drawGroup(g, first, count) {
+    const gl = this.gl;
+    const tris = g.count / 3;
+    const draw = (instance, from, n, instances) => {
+      floatAttribute(gl, 3, this.trees.instanceBuffer, 4, INSTANCE_BYTES, (g.firstInstance + instance) * INSTANCE_BYTES, 1);
+      gl.drawElementsInstanced(gl.TRIANGLES, n * 3, gl.UNSIGNED_INT, (g.firstIndex + from * 3) * 4, instances);
+    };
+    let at = first;
+    const end = first + count;
+    while (at < end) {
+      const instance = Math.floor(at / tris), from = at - instance * tris;
+      if (from === 0 && end - at >= tris) {
+        const whole = Math.floor((end - at) / tris);
+        draw(instance, 0, tris, whole);
+        at += whole * tris;
+      } else {
+        const n = Math.min(tris - from, end - at);
+        draw(instance, from, n, 1);
+        at += n;
+      }
+    }
+  }
+
+  // A step of an indexed mesh (the ground, the objects) with the program `p` set up by `uniforms`.
+  #meshStep(part, uniforms) {
+    const gl = this.gl;
+    return {
+      primitives: part.count / 3,
+      setup: () => {
+        gl.bindVertexArray(part.vao);
+        uniforms();
+        gl.vertexAttrib4f(3, 0, 0, 0, 0);  // not an array in these VAOs: the generic value (no turn)
+      },
+      draw: (first, n) => gl.drawElements(gl.TRIANGLES, n * 3, gl.UNSIGNED_INT, first * 12),
+    };
+  }
+
+  #treeSteps(uniforms) {
+    const gl = this.gl;
+    if (!this.trees) return [];
+    return this.trees.groups.filter((g) => g.count > 0 && g.instances > 0).map((g) => ({
+      primitives: (g.count / 3) * g.instances,
+      setup: () => {
+        gl.bindVertexArray(this.trees.vao);
+        uniforms();
+      },
+      draw: (first, n) => this.#drawGroup(g, first, n),
+    }));
+  }
+
+  shadowKey() {
+    return this.objects || this.trees ? `garden:${this.serial}` : null;
+  }
+
+  worldBounds() {
+    return this.boundsView;
+  }
+
+  shadowSteps(sun) {
+    const gl = this.gl;
+    const s = this.programs.shadow;
+    const uniforms = () => {
+      gl.useProgram(s.program);
+      gl.uniformMatrix4fv(s.uniforms.uSunViewProjection, false, sun.matrix);
+      gl.disable(gl.CULL_FACE);
+    };
+    const steps = [];
+    if (this.objects) steps.push(this.#meshStep(this.objects, uniforms));
+    steps.push(...this.#treeSteps(uniforms));
+    return steps;
+  }
+
+  layerSteps(view) {
+    const gl = this.gl;
+    const p = this.programs.mesh;
+    const totals = { triangles: 0, drawCalls: 0, primitives: 0, trees: 0 };
+    if (!this.ground) return { steps: [], totals };
+    const uniforms = (mode) => () => {
+      gl.useProgram(p.program);
+      gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, view.viewProjection);
+      gl.uniform3fv(p.uniforms.uLightDirection, view.light);
+      gl.uniform1i(p.uniforms.uMode, mode);
+      gl.uniform1f(p.uniforms.uRelief, this.grid ? this.grid.relief : 1);
+      view.shadow?.bindFor(p, view.sun);
+      gl.enable(gl.DEPTH_TEST);
+      gl.disable(gl.CULL_FACE);
+      gl.vertexAttrib1f(2, 0);  // the ground's tint (not an array in its VAO)
+    };
+    const steps = [this.#meshStep(this.ground, uniforms(0))];
+    if (this.objects) steps.push(this.#meshStep(this.objects, uniforms(1)));
+    const trees = this.#treeSteps(uniforms(2));
+    steps.push(...trees);
+    for (const s of steps) totals.triangles += s.primitives;
+    totals.drawCalls = steps.length;
+    totals.trees = this.trees ? this.trees.groups.reduce((n, g) => n + g.instances, 0) : 0;
+    return { steps, totals };
+  }
+
+  dispose() {
+    super.dispose();
+    this.clear();
+    for (const p of Object.values(this.programs || {})) this.gl.deleteProgram(p.program);
+    this.programs = null;
+  }
+}

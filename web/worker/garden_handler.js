@@ -1,0 +1,95 @@
+// The garden's worker handler (issue 33; web/bindings/garden_bindings.cpp): one GardenLab per
+// client holds the last run. An 'update' grows the state (the garden state JSON, GardenStateJson's
+// shape: {params, ground, objects, plants, mix}) to its years, posting progress after every year
+// (at most every 100 ms), then sends the stats (the run's StatsJson, parsed, and its text), the
+// resolved state and hash, the bounds (the ground's size and grid, each distinct tree's group and
+// every planted tree) and the buffer groups ground, objects and trees (each distinct tree's mesh
+// once with its placements), copied once out of the WASM heap into buffers the page gave back
+// ('recycle') where they fit (web/worker/transfer.js TransferPool), then transferred.
+// Table: the garden bindings' gardenTableJson; presets: the tree study's (the species picker);
+// decode: gardenDecodeJson (the default garden with the link's keys).
+// An 'export' ({format: glb | svg | json | heightmap}) answers with the run's bytes (the bytes of
+// `niwa garden grow --url HASH --out g.glb`), transferred, or an error naming "download".
+// Messages: web/worker/protocol.js. Does not: load the module, route messages or catch errors
+// (web/worker/worker.js does).
+import { errorOf, errorReply } from './errors.js';
+import { TransferPool, closeLabSession, takeBuffers } from './transfer.js';
+import { nextTask } from './next_task.js';
+
+export function createHandler(Module, ctx) {
+  const { post, isLatest } = ctx;
+  const paramTable = JSON.parse(Module.gardenTableJson());
+  const species = JSON.parse(Module.presetsJson('tree')).map((p) => p.name);
+  const decode = (hash) => JSON.parse(Module.gardenDecodeJson(hash));
+  const labs = new Map();  // client -> {lab, working, lastPost}
+  const returned = new TransferPool();
+
+  function labOf(client) {
+    if (!labs.has(client)) {
+      const entry = { lab: new Module.GardenLab(), working: 0, lastPost: 0 };
+      entry.lab.setProgress((stage, done, total) => {
+        const now = performance.now();
+        if (done !== total && now - entry.lastPost < 100) return;
+        entry.lastPost = now;
+        post({ type: 'progress', id: entry.working, client, stage, done, total, text: `growing: year ${done} of ${total}` });
+      });
+      labs.set(client, entry);
+    }
+    return labs.get(client);
+  }
+
+  async function update(msg, client) {
+    const { id } = msg;
+    const entry = labOf(client);
+    await nextTask();  // a newer update already queued supersedes this one
+    if (!isLatest(client, id)) return;
+    entry.working = id;
+    post({ type: 'progress', id, client, stage: 'grow', done: 0, total: 0, text: 'laying out the garden' });
+    const t0 = performance.now();
+    const error = errorOf(entry.lab.grow(JSON.stringify(msg.state || {})));
+    if (error) {
+      post(errorReply(error, id, client));
+      return;
+    }
+    const growMs = performance.now() - t0;
+    const statsText = entry.lab.statsJson();
+    const transfer = [];
+    const counts = { reused: 0, fresh: 0, dropped: 0 };
+    const buffers = {};
+    for (const group of ['ground', 'objects', 'trees']) buffers[group] = returned.take(client, group, entry.lab.buffers(group), transfer, counts);
+    post({
+      type: 'garden', id, client, stats: JSON.parse(statsText), statsText, hash: entry.lab.hash(),
+      state: JSON.parse(entry.lab.stateJson()), bounds: JSON.parse(entry.lab.boundsJson()),
+      buffers, bufferCounts: counts, growMs, wallMs: performance.now() - t0,
+    }, transfer);
+  }
+
+  const FORMATS = ['glb', 'svg', 'json', 'heightmap'];
+  function exportGarden(msg, client) {
+    const format = String(msg.format);
+    if (!FORMATS.includes(format)) throw new Error(`export: format '${format.slice(0, 20)}' is unknown; must be ${FORMATS.join(', ')}`);
+    const entry = labOf(client);
+    const error = errorOf(entry.lab.build(format));
+    if (error) {
+      post(errorReply(error, msg.id, client));
+      return;
+    }
+    const transfer = [];
+    const { bytes } = takeBuffers(entry.lab.buffers('download'), transfer);
+    post({ type: 'export', id: msg.id, client, format, bytes }, transfer);
+  }
+
+  const close = (client) => closeLabSession(labs, returned, client);
+
+  return {
+    superseding: ['update'],
+    close,
+    ready: (msg) => ({ paramTable, species, decoded: decode(String(msg.hash || '')) }),
+    messages: {
+      decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...decode(String(msg.hash || '')) }),
+      update,
+      export: exportGarden,
+      recycle: (msg, client) => returned.give(client, msg.buffers),
+    },
+  };
+}
