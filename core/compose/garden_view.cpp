@@ -6,7 +6,7 @@ namespace niwa::compose {
 TreeMesh GardenGroupMesh(const GardenRun& run, int group) {
   MeshOptions options;
   options.max_sides = kGardenViewMaxSides;
-  return BuildTreeMesh(run.groups()[group].grower->tree(), options);
+  return BuildTreeMesh(run.groups()[group].tree(), options);
 }
 
 }  // namespace niwa::compose

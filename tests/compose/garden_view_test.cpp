@@ -27,7 +27,7 @@ TEST(GardenView, EachGroupsMeshIsTheTreesAtPageDetailAtTheOrigin) {
   ASSERT_FALSE(run->groups().empty());
   for (int g = 0; g < static_cast<int>(run->groups().size()); ++g) {
     const TreeMesh page = GardenGroupMesh(*run, g);
-    const TreeMesh full = BuildTreeMesh(run->groups()[g].grower->tree());
+    const TreeMesh full = BuildTreeMesh(run->groups()[g].tree());
     const std::string& name = run->groups()[g].name;
     EXPECT_GT(page.bark.indices.size(), 0u) << name;
     EXPECT_LT(page.bark.indices.size(), full.bark.indices.size()) << name;
