@@ -459,9 +459,15 @@ void MossRun::Day() {
     const double L = day - seed.birth_day;
     // Outside its window (g(L) <= τ_b) a seed's fate is that of G = 0 for every G in [0, 1]
     // (SeedWindowScore): its light and fitness are not needed.
+    // Nor is it when g_T·g_rh·g(L) <= τ_b: G = g_T·g_rh·g_S with g_S in [0, 1] is at most g_T·g_rh
+    // (rounding is monotone), so G·g(L) <= τ_b whatever the light, the fate of G = 0.
     double G = 0.0;
     const double g_window = WindowScore(day - seed.birth_day, seed.kind);
-    if (g_window > species.tau_b) {
+    if (g_window > species.tau_b &&
+        fitness_memo_.TemperatureHumidity(seed.species, species, w.T_s[seed.cell],
+                                          w.rh_s[seed.cell], g_form) *
+                g_window >
+            species.tau_b) {
       const double S_seed = gather->Moss(seed.pos, seed.normal);
       G = fitness_memo_.G(seed.species, species, w.T_s[seed.cell], w.rh_s[seed.cell], S_seed,
                           g_form);
