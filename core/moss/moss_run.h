@@ -80,6 +80,9 @@ struct MossWorld {
   std::vector<Bucket> buckets;                        // per cell
   std::vector<double> S, T_s, rh_s, theta, m_over_M;  // per cell, the last day's
   std::vector<double> S_mean;  // per cell, light_smoothing_days' exponential mean of S
+  // Per cell: the living mosses within r_CH of its centroid (eq 3.5's m), kept as mosses are born
+  // and die (they never move); empty until the first day counts them.
+  std::vector<int> m_near;
   Pcg32 photon_rng, growth_rng, rain_rng, place_rng;
   int64_t births = 0, deaths_declined = 0, deaths_contest = 0;
   std::array<int64_t, 2> seeds_made{};  // by SeedKind
