@@ -549,6 +549,7 @@ void MossRun::Day() {
   std::vector<MossPlant> next;
   next.reserve(w.mosses.size());
   std::vector<bool> was_old;
+  std::vector<glm::dvec3> changed;  // where an old moss died or a new one lives on
   for (std::size_t j = 0; j < w.mosses.size(); ++j) {
     // The day's deaths of old mosses and its surviving births, in m (eq 3.5) for tomorrow.
     const bool old = j < old_count;
@@ -556,6 +557,7 @@ void MossRun::Day() {
       const int change = alive[j] ? 1 : -1;
       cells_by_ch_->ForEachWithin(w.mosses[j].pos,
                                   [&](uint32_t i, double) { w.m_near[i] += change; });
+      changed.push_back(w.mosses[j].pos);
     }
     if (alive[j]) {
       next.push_back(w.mosses[j]);
@@ -578,8 +580,16 @@ void MossRun::Day() {
   std::vector<bool> dense(parents, false);
   std::vector<glm::dvec3> dense_centres;
   std::vector<uint32_t> dense_owner;
+  // A moss's count changes only with a birth or death within the radius (the same distance either
+  // way round): those are counted again, the others keep yesterday's count.
+  std::vector<bool> recount(parents, false);
+  for (const glm::dvec3& c : changed)
+    after.ForEachWithin(c, [&](uint32_t j, double) { recount[j] = true; });
   for (std::size_t j = 0; j < parents; ++j) {
-    dense[j] = static_cast<int>(after.CountWithin(centres[j])) - 1 >= rules_.interior_count;
+    MossPlant& m = w.mosses[j];
+    if (m.mat_count < 0 || recount[j])
+      m.mat_count = static_cast<int>(after.CountWithin(centres[j]));
+    dense[j] = m.mat_count - 1 >= rules_.interior_count;
     if (dense[j]) {
       dense_centres.push_back(centres[j]);
       dense_owner.push_back(static_cast<uint32_t>(j));

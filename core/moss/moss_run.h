@@ -47,6 +47,9 @@ struct MossPlant {
   double S = 0;          // its light on its last day of growth [W/m²] (with
                          // light_smoothing_days: its exponential mean)
   bool lit = false;      // S holds a day's light (the mean's start)
+  // The mosses within interior_radius·s of it, itself included (the mats' count, §3.8), at the
+  // last day's end; kept while no moss near it is born or dies. -1: not counted yet.
+  int mat_count = -1;
 };
 
 // A waiting seed (a gemma or a spore) where it landed.

@@ -124,6 +124,17 @@ TEST(MossRun, TheKeptMossCountsAreAFreshCount) {
   int near = 0;
   for (int n : want) near += n > 0;
   EXPECT_GT(near, 100);
+  // Each moss's mats count (§3.8), kept while no moss near it is born or dies.
+  const LifeRules rules = LifeRulesOf(state.params);
+  std::vector<glm::dvec3> centres;
+  for (const MossPlant& m : w.mosses) centres.push_back(m.pos);
+  const geom::RadiusGrid mats(centres, rules.interior_radius * rules.s);
+  int crowded = 0;
+  for (const MossPlant& m : w.mosses) {
+    ASSERT_EQ(m.mat_count, static_cast<int>(mats.CountWithin(m.pos)));
+    crowded += m.mat_count > 1;
+  }
+  EXPECT_GT(crowded, 5);
 }
 
 TEST(MossRun, OverTheBudgetIsRefusedUpFront) {
