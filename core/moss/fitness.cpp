@@ -77,6 +77,15 @@ double FitnessMemo::G(Species species, const SpeciesRanges& sp, double T_s, doub
   return g_T * g_rh * g_S;  // moss eq. 3.17, FitnessOf's product
 }
 
+double FitnessMemo::TemperatureHumidity(Species species, const SpeciesRanges& sp, double T_s,
+                                        double rh_s, GForm form) {
+  if (slots_.empty()) slots_.resize(static_cast<std::size_t>(kSpeciesCount) * 3 * kSlots);
+  const int t = 3 * static_cast<int>(species);
+  const double g_T = Factor(t, T_s, sp.T_0, sp.T_1, sp.n_T, form);
+  const double g_rh = Factor(t + 1, rh_s, sp.rh_0, sp.rh_1, sp.n_rh, form);
+  return g_T * g_rh;  // moss eq. 3.17's first product
+}
+
 double DailyGrowth(const SpeciesRanges& sp, double G) {
   return sp.alpha_g * (G - sp.tau_g);  // moss eq. 3.20
 }

@@ -47,6 +47,10 @@ class FitnessMemo {
  public:
   double G(Species species, const SpeciesRanges& ranges, double T_s, double rh_s, double S,
            GForm form);
+  // G's first product g_T·g_rh (the same factors and bits): G is it times g_S in [0, 1], so G is
+  // at most it (rounding is monotone), whatever the light.
+  double TemperatureHumidity(Species species, const SpeciesRanges& ranges, double T_s, double rh_s,
+                             GForm form);
 
  private:
   static constexpr int kSlots = 1024;  // a power of two, per species and variable

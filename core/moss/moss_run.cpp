@@ -372,12 +372,16 @@ void MossRun::Day() {
   std::fill(w.S.begin(), w.S.end(), 0.0);
   soil_spread_->Spread(cells_, map_, &w.S);
   const double gather_area = det::kPi * light_.r_gather * light_.r_gather;
-  std::vector<int> m_near(cells_.size(), 0);
-  for (const glm::dvec3& c : centres)
-    cells_by_ch_->ForEachWithin(c, [&](uint32_t i, double) { ++m_near[i]; });
+  // m: counted once over every moss, then kept by the births and deaths at the day's end (the same
+  // radius query, so the same counts).
+  if (w.m_near.size() != cells_.size()) {
+    w.m_near.assign(cells_.size(), 0);
+    for (const glm::dvec3& c : centres)
+      cells_by_ch_->ForEachWithin(c, [&](uint32_t i, double) { ++w.m_near[i]; });
+  }
   for (std::size_t i = 0; i < cells_.size(); ++i) {
     w.S[i] /= gather_area;
-    w.m_over_M[i] = std::min(1.0, static_cast<double>(m_near[i]) / M);
+    w.m_over_M[i] = std::min(1.0, static_cast<double>(w.m_near[i]) / M);
   }
   // light_smoothing_days N > 0 (spec §1.3's option): each cell's S is the exponential mean
   // S̄_d = S̄_{d−1} + k·(S_d − S̄_{d−1}), k = 1 − e^(−1/N), S̄_1 = S_1 (choice 31).
@@ -448,7 +452,8 @@ void MossRun::Day() {
   const std::size_t old_count = w.mosses.size();
   std::vector<bool> alive(old_count, true);
   std::vector<MossSeed> waiting;
-  waiting.reserve(w.seeds.size());
+  waiting.reserve(
+      w.seeds.capacity());  // the pool's room so far: today's new seeds seldom regrow it
   int living = static_cast<int>(old_count);
   for (const MossSeed& seed : w.seeds) {
     if (seed.birth_day >= day) {
@@ -459,9 +464,15 @@ void MossRun::Day() {
     const double L = day - seed.birth_day;
     // Outside its window (g(L) <= τ_b) a seed's fate is that of G = 0 for every G in [0, 1]
     // (SeedWindowScore): its light and fitness are not needed.
+    // Nor is it when g_T·g_rh·g(L) <= τ_b: G = g_T·g_rh·g_S with g_S in [0, 1] is at most g_T·g_rh
+    // (rounding is monotone), so G·g(L) <= τ_b whatever the light, the fate of G = 0.
     double G = 0.0;
     const double g_window = WindowScore(day - seed.birth_day, seed.kind);
-    if (g_window > species.tau_b) {
+    if (g_window > species.tau_b &&
+        fitness_memo_.TemperatureHumidity(seed.species, species, w.T_s[seed.cell],
+                                          w.rh_s[seed.cell], g_form) *
+                g_window >
+            species.tau_b) {
       const double S_seed = gather->Moss(seed.pos, seed.normal);
       G = fitness_memo_.G(seed.species, species, w.T_s[seed.cell], w.rh_s[seed.cell], S_seed,
                           g_form);
@@ -538,11 +549,21 @@ void MossRun::Day() {
   std::vector<MossPlant> next;
   next.reserve(w.mosses.size());
   std::vector<bool> was_old;
-  for (std::size_t j = 0; j < w.mosses.size(); ++j)
+  std::vector<glm::dvec3> changed;  // where an old moss died or a new one lives on
+  for (std::size_t j = 0; j < w.mosses.size(); ++j) {
+    // The day's deaths of old mosses and its surviving births, in m (eq 3.5) for tomorrow.
+    const bool old = j < old_count;
+    if (old != alive[j]) {
+      const int change = alive[j] ? 1 : -1;
+      cells_by_ch_->ForEachWithin(w.mosses[j].pos,
+                                  [&](uint32_t i, double) { w.m_near[i] += change; });
+      changed.push_back(w.mosses[j].pos);
+    }
     if (alive[j]) {
       next.push_back(w.mosses[j]);
-      was_old.push_back(j < old_count);
+      was_old.push_back(old);
     }
+  }
   w.mosses.swap(next);
 
   // 3c-d. Gemmae (eq 3.22) and spores (eq 3.23) of the mosses that grew today; they land among
@@ -559,8 +580,16 @@ void MossRun::Day() {
   std::vector<bool> dense(parents, false);
   std::vector<glm::dvec3> dense_centres;
   std::vector<uint32_t> dense_owner;
+  // A moss's count changes only with a birth or death within the radius (the same distance either
+  // way round): those are counted again, the others keep yesterday's count.
+  std::vector<bool> recount(parents, false);
+  for (const glm::dvec3& c : changed)
+    after.ForEachWithin(c, [&](uint32_t j, double) { recount[j] = true; });
   for (std::size_t j = 0; j < parents; ++j) {
-    dense[j] = static_cast<int>(after.CountWithin(centres[j])) - 1 >= rules_.interior_count;
+    MossPlant& m = w.mosses[j];
+    if (m.mat_count < 0 || recount[j])
+      m.mat_count = static_cast<int>(after.CountWithin(centres[j]));
+    dense[j] = m.mat_count - 1 >= rules_.interior_count;
     if (dense[j]) {
       dense_centres.push_back(centres[j]);
       dense_owner.push_back(static_cast<uint32_t>(j));

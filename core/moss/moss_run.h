@@ -47,6 +47,9 @@ struct MossPlant {
   double S = 0;          // its light on its last day of growth [W/m²] (with
                          // light_smoothing_days: its exponential mean)
   bool lit = false;      // S holds a day's light (the mean's start)
+  // The mosses within interior_radius·s of it, itself included (the mats' count, §3.8), at the
+  // last day's end; kept while no moss near it is born or dies. -1: not counted yet.
+  int mat_count = -1;
 };
 
 // A waiting seed (a gemma or a spore) where it landed.
@@ -80,6 +83,9 @@ struct MossWorld {
   std::vector<Bucket> buckets;                        // per cell
   std::vector<double> S, T_s, rh_s, theta, m_over_M;  // per cell, the last day's
   std::vector<double> S_mean;  // per cell, light_smoothing_days' exponential mean of S
+  // Per cell: the living mosses within r_CH of its centroid (eq 3.5's m), kept as mosses are born
+  // and die (they never move); empty until the first day counts them.
+  std::vector<int> m_near;
   Pcg32 photon_rng, growth_rng, rain_rng, place_rng;
   int64_t births = 0, deaths_declined = 0, deaths_contest = 0;
   std::array<int64_t, 2> seeds_made{};  // by SeedKind

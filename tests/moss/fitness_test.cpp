@@ -117,6 +117,34 @@ TEST(MossFitness, TheMemoIsFitnessOfBitForBit) {
   }
 }
 
+// The run skips a seed's light when g_T·g_rh·g(L) <= τ_b: TemperatureHumidity is FitnessOf's
+// g_T·g_rh bit for bit, G (any light) times g is then at most τ_b too, and both outcomes occur.
+TEST(MossFitness, TemperatureHumidityBoundsGWhateverTheLight) {
+  for (GForm form : {GForm::kClamped, GForm::kNormalized}) {
+    FitnessMemo memo;
+    Pcg32 rng(11, 5);
+    int bounded = 0, open = 0;
+    for (int i = 0; i < 4000; ++i) {
+      const Species species = static_cast<Species>(i % kSpeciesCount);
+      const double T = rng.Uniform(260, 320), rh = rng.Uniform(0, 1), g = rng.Uniform(0, 1);
+      const double tau_b = rng.Uniform(0, 0.6);
+      const Fitness f = FitnessOf(Of(species), T, rh, 0.0, form);
+      const double th = memo.TemperatureHumidity(species, Of(species), T, rh, form);
+      const double want = f.g_T * f.g_rh;
+      ASSERT_EQ(std::memcmp(&th, &want, sizeof th), 0);
+      if (th * g > tau_b) {
+        ++open;
+        continue;
+      }
+      ++bounded;
+      for (double S : {0.0, 1.0, 5.0, 20.0, 45.0, 100.0, 250.0, rng.Uniform(0, 300)})
+        ASSERT_LE(memo.G(species, Of(species), T, rh, S, form) * g, tau_b) << T << " " << rh;
+    }
+    EXPECT_GT(bounded, 500);
+    EXPECT_GT(open, 100);
+  }
+}
+
 TEST(MossFitness, GrowthAndDeathOnAScriptedSeries) {
   const SpeciesRanges& h = Of(Species::kHaigoke);  // α_g 0.25, τ_g 0.1, τ_d 0.15
   MossGrowth m;

@@ -107,6 +107,36 @@ TEST(MossRun, ProgressAndCancelRestoresTheRun) {
   EXPECT_EQ(StatsWithoutMs(run), StatsWithoutMs(fresh));
 }
 
+// Eq 3.5's m per cell is counted on day 1 and then kept by each day's births and deaths: after
+// days of both it is a fresh count over the living mosses (the run's own r_CH query).
+TEST(MossRun, TheKeptMossCountsAreAFreshCount) {
+  MossState state = SmallState("thesis", 45, 2048);
+  MossRun run = *MossRun::Start(state, Budget{});
+  ASSERT_TRUE(run.Advance(nullptr).ok());
+  const MossWorld& w = run.world();
+  ASSERT_GT(w.births, 0);
+  ASSERT_GT(w.deaths_declined + w.deaths_contest, 0);
+  const geom::RadiusGrid grid(run.cells().centroid, state.params.Get(MossParam::kRCH));
+  std::vector<int> want(run.cells().size(), 0);
+  for (const MossPlant& m : w.mosses)
+    grid.ForEachWithin(m.pos, [&](uint32_t i, double) { ++want[i]; });
+  EXPECT_EQ(w.m_near, want);
+  int near = 0;
+  for (int n : want) near += n > 0;
+  EXPECT_GT(near, 100);
+  // Each moss's mats count (§3.8), kept while no moss near it is born or dies.
+  const LifeRules rules = LifeRulesOf(state.params);
+  std::vector<glm::dvec3> centres;
+  for (const MossPlant& m : w.mosses) centres.push_back(m.pos);
+  const geom::RadiusGrid mats(centres, rules.interior_radius * rules.s);
+  int crowded = 0;
+  for (const MossPlant& m : w.mosses) {
+    ASSERT_EQ(m.mat_count, static_cast<int>(mats.CountWithin(m.pos)));
+    crowded += m.mat_count > 1;
+  }
+  EXPECT_GT(crowded, 5);
+}
+
 TEST(MossRun, OverTheBudgetIsRefusedUpFront) {
   Budget budget;
   budget.seconds = 1;
