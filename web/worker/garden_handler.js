@@ -13,7 +13,7 @@
 // Messages: web/worker/protocol.js. Does not: load the module, route messages or catch errors
 // (web/worker/worker.js does).
 import { errorOf, errorReply } from './errors.js';
-import { TransferPool, closeLabSession, takeBuffers } from './transfer.js';
+import { TransferPool, closeLabSession, exportLabDownload } from './transfer.js';
 import { nextTask } from './next_task.js';
 
 export function createHandler(Module, ctx) {
@@ -65,19 +65,7 @@ export function createHandler(Module, ctx) {
   }
 
   const FORMATS = ['glb', 'svg', 'json', 'heightmap'];
-  function exportGarden(msg, client) {
-    const format = String(msg.format);
-    if (!FORMATS.includes(format)) throw new Error(`export: format '${format.slice(0, 20)}' is unknown; must be ${FORMATS.join(', ')}`);
-    const entry = labOf(client);
-    const error = errorOf(entry.lab.build(format));
-    if (error) {
-      post(errorReply(error, msg.id, client));
-      return;
-    }
-    const transfer = [];
-    const { bytes } = takeBuffers(entry.lab.buffers('download'), transfer);
-    post({ type: 'export', id: msg.id, client, format, bytes }, transfer);
-  }
+  const exportGarden = (msg, client) => exportLabDownload(labOf(client).lab, FORMATS, msg, client, post);
 
   const close = (client) => closeLabSession(labs, returned, client);
 

@@ -21,7 +21,7 @@
 // or `--out moss.json` for the last run (MossLab build), transferred, or an error naming "download".
 // Does not: load the module, route messages or catch errors (web/worker/worker.js does).
 import { errorOf, errorReply } from './errors.js';
-import { TransferPool, closeLabSession, takeBuffers } from './transfer.js';
+import { TransferPool, closeLabSession, exportLabDownload } from './transfer.js';
 import { nextTask } from './next_task.js';
 
 // ctx: {post(msg, transfer), isLatest(client, id)} from the router.
@@ -99,19 +99,7 @@ export function createHandler(Module, ctx) {
   }
 
   const FORMATS = ['glb', 'json'];
-  function exportMoss(msg, client) {
-    const format = String(msg.format);
-    if (!FORMATS.includes(format)) throw new Error(`export: format '${format.slice(0, 20)}' is unknown; must be ${FORMATS.join(', ')}`);
-    const entry = labOf(client);
-    const error = errorOf(entry.lab.build(format));
-    if (error) {
-      post(errorReply(error, msg.id, client));
-      return;
-    }
-    const transfer = [];
-    const { bytes } = takeBuffers(entry.lab.buffers('download'), transfer);
-    post({ type: 'export', id: msg.id, client, format, bytes }, transfer);
-  }
+  const exportMoss = (msg, client) => exportLabDownload(labOf(client).lab, FORMATS, msg, client, post);
 
   // The client went away (web/worker/worker.js 'close'): its lab is deleted and its returned
   // buffers are dropped. Returns what was let go.

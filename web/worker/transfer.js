@@ -5,6 +5,8 @@
 // Does not: keep views (they are only valid until the next call into WASM that may allocate), or
 // decide when a page is done with a buffer (the page returns it: web/shell/worker_client.js).
 
+import { errorOf, errorReply } from './errors.js';
+
 // Copies one WASM-memory view into a fresh typed array of its own type; returns its buffer.
 export function copyView(view) {
   const out = new view.constructor(view.length);
@@ -160,4 +162,21 @@ export function closeLabSession(labs, pool, client) {
   }
   labs.delete(client);
   return { sessions: entry ? 1 : 0, buffers: pool.forget(client) };
+}
+
+// A handler's 'export' for a lab that builds its bytes by format (`lab.build(format)`, "" or an
+// error record) into its 'download' buffer group (the moss and garden labs): a format outside
+// `formats` throws (the router's error envelope), a build error is the reply, else the bytes are
+// copied once and transferred as {type: 'export', id, client, format, bytes}.
+export function exportLabDownload(lab, formats, msg, client, post) {
+  const format = String(msg.format);
+  if (!formats.includes(format)) throw new Error(`export: format '${format.slice(0, 20)}' is unknown; must be ${formats.join(', ')}`);
+  const error = errorOf(lab.build(format));
+  if (error) {
+    post(errorReply(error, msg.id, client));
+    return;
+  }
+  const transfer = [];
+  const { bytes } = takeBuffers(lab.buffers('download'), transfer);
+  post({ type: 'export', id: msg.id, client, format, bytes }, transfer);
 }
