@@ -485,12 +485,14 @@ std::string GardenRun::StatsJson() const {
   for (const PlacedTree& t : planting_.trees) ++by_species[t.species];
   double internodes = 0, leaves = 0;
   long shaded = 0;
-  for (std::size_t t = 0; t < planting_.trees.size(); ++t) {
-    const TreeCounts c = CountTree(groups_[tree_group_[t]].tree());
-    internodes += c.internodes;
-    leaves += c.leaves;
+  // Each distinct tree counted once, times its copies (CountTree walks the whole tree).
+  for (const GardenTreeGroup& g : groups_) {
+    const TreeCounts c = CountTree(g.tree());
+    const double copies = static_cast<double>(g.trees.size());
+    internodes += c.internodes * copies;
+    leaves += c.leaves * copies;
+    shaded += g.shaded ? 1 : 0;
   }
-  for (const GardenTreeGroup& g : groups_) shaded += g.shaded ? 1 : 0;
   nlohmann::ordered_json species = nlohmann::ordered_json::object();
   for (const auto& [name, count] : by_species) species[name] = count;
   j["trees"] = {{"count", planting_.trees.size()}, {"distinct", groups_.size()},
