@@ -79,7 +79,7 @@ const requestFrame = () => loop.request();
 async function startRenderer() {
   try {
     await loop.start(async () => {
-      frame = new Frame(ui.canvas, { camera, sun: DEFAULT_SUNS.tree, ground: false, fit: false, request: () => loop.request(), what: 'the garden', antialias: 'hardware' });
+      frame = new Frame(ui.canvas, { camera, sun: DEFAULT_SUNS.tree, ground: false, fit: false, request: () => loop.request(), what: 'the garden' });
       await frame.init();
       renderer = await frame.addLayer(new GardenRenderer(frame));
       return frame;

@@ -53,9 +53,9 @@ export class Frame {
   // to its view (ten units, the ivy and terrain pages' look) instead of in metres (the layers
   // added read frame.fit: StudyLayer.fitView); request: how the frame asks for a frame (the
   // page's loop; default: its own FrameLoop drawing it whole); what: the view's name in the error
-  // when WebGL2 is missing; antialias: the context's MSAA (createContext: true, false or
-  // 'hardware').
-  constructor(canvas, { camera = new OrbitCamera(), sun = DEFAULT_SUNS.tree, ground = true, fit = false, request = null, what = 'the scene', antialias = true } = {}) {
+  // when WebGL2 is missing; antialias: the context's MSAA (createContext: 'hardware', the
+  // default, true or false).
+  constructor(canvas, { camera = new OrbitCamera(), sun = DEFAULT_SUNS.tree, ground = true, fit = false, request = null, what = 'the scene', antialias = 'hardware' } = {}) {
     this.canvas = canvas;
     this.gl = createContext(canvas, what, { antialias });
     this.camera = camera;

@@ -140,7 +140,7 @@ async function startRenderer() {
     await loop.start(async () => {
       // No MSAA on a CPU rasteriser: it triples the frame that answers the day scrubber (issue 29
       // item 6: the scrubber in ≤ 100 ms; 140 ms a frame with it on SwiftShader).
-      frame = new Frame(ui.canvas, { camera, sun: DEFAULT_SUNS.ivy, ground: false, fit: true, request: () => loop.request(), what: 'the moss', antialias: 'hardware' });
+      frame = new Frame(ui.canvas, { camera, sun: DEFAULT_SUNS.ivy, ground: false, fit: true, request: () => loop.request(), what: 'the moss' });
       await frame.init();
       renderer = await frame.addLayer(new MossRenderer(frame));
       rendererB = await frame.addLayer(new MossRenderer(frame, { beside: 1.15 }));

@@ -140,6 +140,7 @@ let wholeNext = false;  // the next frame is drawn whole, not in parts (requestF
 let freshNext = false;  // the next frame starts anew, not resuming one begun before (a new selection)
 let frameLevel = -1;  // the governor's level of the frame in parts
 let poseAtFrameStart = 0;  // the renderer's poseSerial when the frame on its way was started
+let swayTimeAtFrameStart = 0;  // ... and the simulated time of that pose (s)
 const frames = new FrameLoop(() => {
   // While a big tree goes up in parts the canvas keeps its last frame (no draw: a frame of the old
   // big tree costs seconds on a CPU GL, and every part's upload would wait for it).
@@ -166,6 +167,7 @@ const frames = new FrameLoop(() => {
   if (!resume) {
     viewsAtFrameStart = viewsReceived;
     poseAtFrameStart = renderer.poseSerial;
+    swayTimeAtFrameStart = renderer.swaying ? renderer.swayTime : 0;
     freshNext = false;
     quality = governor.quality(cheapAvailable);
     frameLevel = quality.level;
@@ -199,7 +201,7 @@ const frames = new FrameLoop(() => {
     // the sun's shadow map in this frame: 'drawn' (redrawn), 'reused' or 'off'; maps drawn so far
     drawnShadow: drawn.shadow, shadowPasses: frame.shadowMap?.passes ?? 0,
     // the poses this frame was started with, and the latest (equal: the pose on screen is the latest)
-    drawnPose: poseAtFrameStart, latestPose: renderer.poseSerial });
+    drawnPose: poseAtFrameStart, latestPose: renderer.poseSerial, drawnSwayTime: swayTimeAtFrameStart.toFixed(3) });
   bumpHook('framesShown');  // finished frames (the orbit frame time of tests/browser/no_blank_frames)
   if (freshOnDraw) {  // the tree that answers the latest edit is on screen now
     freshOnDraw = false;
