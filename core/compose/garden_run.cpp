@@ -162,6 +162,7 @@ Result<GardenRun> GardenRun::Start(const GardenState& state, const Budget& budge
     NIWA_RETURN_IF_ERROR(SetStateSeed(static_cast<double>(g.seed), &ts));
     NIWA_RETURN_IF_ERROR(SetStateYears(std::min(kMaxYears, g.age + years), &ts).Within("years"));
     ts.limits = TreeGrowLimits(ts.params, budget, "years");
+    run.tree_base_bytes_ = ts.limits.base_bytes;
     ts.limits.max_bytes =
         ts.limits.base_bytes + std::max(0.0, ts.limits.max_bytes - ts.limits.base_bytes) / groups;
     ts.limits.max_seconds /= groups;
@@ -308,14 +309,37 @@ Status GardenRun::GrowIvy() {
                        &ivy_state)
           .Within("ivy_steps"));
   ivy_state.seed_point_items = state_.ivy_on;
+  // The garden is one job with one budget: the ivy gets what the trees' growth left of it (their
+  // estimates; the process's base counted once), so a garden stops within the budget as a whole.
+  Budget left = budget_;
+  double trees_seconds = 0, trees_bytes = 0;
+  for (const GardenTreeGroup& g : groups_) {
+    const Estimate used = g.run->grown();
+    trees_seconds += used.seconds;
+    trees_bytes += std::max(0.0, used.memory_bytes - tree_base_bytes_);
+  }
+  left.seconds = budget_.seconds - trees_seconds;
+  left.memory_bytes = static_cast<uint64_t>(
+      std::max(0.0, static_cast<double>(budget_.memory_bytes) - trees_bytes));
+  const std::string change = "lower ivy_steps or the ivy seeds, or years or density";
+  if (left.seconds < support.seconds || static_cast<double>(left.memory_bytes) < support.memory_bytes) {
+    // Nothing left for the ivy: the garden shows its trees and says why the ivy is missing.
+    const std::string& limit =
+        left.seconds < support.seconds ? budget_.seconds_limit : budget_.memory_limit;
+    if (truncated_by_.empty())
+      truncated_by_ = "ivy: " + TruncatedLine(limit, "before step 1",
+                                              "the trees' growth used the garden's budget",
+                                              change + RaiseHint(limit));
+    return Status::Ok();
+  }
   ivy::IvySupportOptions options = ivy::IvySupportOptions::For(ivy_state);
-  options.change = "lower ivy_steps or the ivy seeds";
+  options.change = change;
   Result<std::shared_ptr<const ivy::IvySupport>> prepared = ivy::IvySupport::Prepare(
-      ivy::IvySupportInput::Prepared(std::move(scene), support, ""), options, budget_);
+      ivy::IvySupportInput::Prepared(std::move(scene), support, ""), options, left);
   if (!prepared.ok()) return prepared.status();
   ivy::IvyRunOptions run_options;
-  run_options.change = "lower ivy_steps or the ivy seeds";
-  Result<ivy::IvyRun> run = ivy::IvyRun::Start(ivy_state, *prepared, budget_, run_options);
+  run_options.change = change;
+  Result<ivy::IvyRun> run = ivy::IvyRun::Start(ivy_state, *prepared, left, run_options);
   if (!run.ok()) return run.status();
   NIWA_RETURN_IF_ERROR(run->Advance(nullptr));
   if (truncated_by_.empty() && !run->log().truncated_by.empty())

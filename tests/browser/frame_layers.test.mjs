@@ -176,7 +176,9 @@ await runBrowserTest(async (server, browser) => {
     const gi = await drawGroveIvy('bare-grove-ivy', ['grove', 'ivy'], { ground: false });
     const groveShare = await drawn(page, 'bare-grove'), ivyShare = await drawn(page, 'bare-grove-ivy-only', 'bare-grove');
     const ivyOverGrove = await snapshotDifference(page, 'bare-grove-ivy', 'bare-grove', 30);
-    check('grove + ivy: both layers draw in the one canvas', groveShare.share > 0.01 && ivyShare.share > 0.0002 && ivyOverGrove > 0.0001,
+    // The 6-year ivy on the middle trunk is a few dozen pixels (about 30 without MSAA, which a CPU
+    // rasteriser goes without: web/gl/context.js): more than 15 pixels of it, alone and over the grove.
+    check('grove + ivy: both layers draw in the one canvas', groveShare.share > 0.01 && ivyShare.share > 0.00005 && ivyOverGrove > 0.00005,
       `grove ${(groveShare.share * 100).toFixed(2)}%, ivy ${(ivyShare.share * 100).toFixed(3)}% of the canvas; ${(ivyOverGrove * 100).toFixed(3)}% of pixels change when the ivy joins the grove`);
     check('grove + ivy: the frame counts both layers (triangles and draw calls add up)',
       gi.drawn.layers === 2 && g.drawn.instances === 3 && gi.drawn.triangles === g.drawn.triangles + i.drawn.triangles &&
