@@ -8,10 +8,15 @@
 // drawn in parts like any step) only when it is stale (the casters, their pose or the sun changed)
 // and the view is still; while the camera or a sway moves it is reused as it is (web/gl/frame.js).
 // Does not: know what a caster draws (its layer's shadowSteps), or cascade for big scenes.
+import { softwareRenderer } from './context.js';
 import { lookAt, multiply } from './orbit_camera.js';
 
 export const SHADOW_UNIT = 7;     // the texture unit receivers read the map from
 export const SHADOW_SIZE = 2048;  // texels square
+// On a CPU rasteriser (SwiftShader, llvmpipe) a quarter of the texels: clearing and filling the map
+// costs as much as the view itself there.
+export const SOFTWARE_SHADOW_SIZE = 1024;
+export const shadowSize = () => (softwareRenderer() ? SOFTWARE_SHADOW_SIZE : SHADOW_SIZE);
 const IDENTITY = new Float32Array([1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]);
 
 // Column-major orthographic projection of the box [l, r] × [b, t] × [n, f] (view space, -z ahead).
@@ -30,7 +35,7 @@ function transform(m, p) {
 // sun): the box's corners and where their shadows fall on y = 0 inside the depth range, the box's
 // corners inside x and y (a shadow falls where its caster is, seen from the sun) with a margin, so
 // that the map's edge texels stay clear. Also returns the size of a texel in metres.
-export function sunViewProjection(box, light, size = SHADOW_SIZE) {
+export function sunViewProjection(box, light, size = shadowSize()) {
   const center = [0, 1, 2].map((i) => 0.5 * (box.min[i] + box.max[i]));
   const reach = Math.hypot(box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]) || 1;
   const eye = center.map((c, i) => c + light[i] * 2 * reach);
@@ -62,7 +67,7 @@ export function sunViewProjection(box, light, size = SHADOW_SIZE) {
 export class ShadowMap {
   // size: texels square of the map once it is drawn (until then it is 1 texel: a receiver's
   // sampler always has a depth texture to read, and a frame that never casts pays nothing).
-  constructor(gl, size = SHADOW_SIZE) {
+  constructor(gl, size = shadowSize()) {
     this.gl = gl;
     this.size = size;
     this.allocated = 0;
