@@ -50,7 +50,7 @@ const cell = (page, attr) => page.$$eval(`#render-table [${attr}]`, (cells) =>
 
 await runBrowserTest(async (server, browser) => {
   // The stage is the window less the 340 px panel: a 512 x 512 canvas at device pixel ratio 1.
-  const context = await newContext(browser, { viewport: { width: SIZE + 340, height: SIZE } });
+  const context = await newContext(browser, { viewport: { width: SIZE + 340, height: SIZE }, deviceScaleFactor: 1 });
   const page = await context.newPage();
   watchPage(page, problems);
 

@@ -122,7 +122,7 @@ function cliGlb(hash) {
 }
 
 await runBrowserTest(async (server, browser) => {
-  const context = await newContext(browser, { viewport: { width: SIZE + 340, height: SIZE } });
+  const context = await newContext(browser, { viewport: { width: SIZE + 340, height: SIZE }, deviceScaleFactor: 1 });
   const page = await context.newPage();
   watchPage(page, problems);
 
