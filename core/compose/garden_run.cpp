@@ -319,10 +319,12 @@ Status GardenRun::GrowIvy() {
     trees_bytes += std::max(0.0, used.memory_bytes - tree_base_bytes_);
   }
   left.seconds = budget_.seconds - trees_seconds;
-  left.memory_bytes = static_cast<uint64_t>(
-      std::max(0.0, static_cast<double>(budget_.memory_bytes) - trees_bytes));
+  left.memory_bytes =
+      static_cast<uint64_t>(std::max(0.0, static_cast<double>(budget_.memory_bytes) - trees_bytes));
+  ivy_budget_ = left;
   const std::string change = "lower ivy_steps or the ivy seeds, or years or density";
-  if (left.seconds < support.seconds || static_cast<double>(left.memory_bytes) < support.memory_bytes) {
+  if (left.seconds < support.seconds ||
+      static_cast<double>(left.memory_bytes) < support.memory_bytes) {
     // Nothing left for the ivy: the garden shows its trees and says why the ivy is missing.
     const std::string& limit =
         left.seconds < support.seconds ? budget_.seconds_limit : budget_.memory_limit;

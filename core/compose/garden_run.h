@@ -86,6 +86,8 @@ class GardenRun : public run::StudyRun {
   // The garden's ivy once grown (nullptr without ivy seeds, ivy_steps 0 or before Advance).
   const ivy::IvyRun* ivy() const { return ivy_.get(); }
   double ms_ivy() const { return ms_ivy_; }
+  // The budget the ivy was grown within: the garden's less what the trees' growth used.
+  const Budget& ivy_budget() const { return ivy_budget_; }
   double ms_ground() const { return ms_ground_; }
   double ms_plant() const { return ms_plant_; }
   double ms_trees() const { return ms_trees_; }
@@ -100,7 +102,8 @@ class GardenRun : public run::StudyRun {
   int year_ = 0;
   bool nursery_done_ = false;
   std::string truncated_by_;
-  double tree_base_bytes_ = 0;  // the process's base in each tree's estimate (counted once)
+  double tree_base_bytes_ = 0;
+  Budget ivy_budget_;  // the process's base in each tree's estimate (counted once)
   double ms_ground_ = 0, ms_plant_ = 0, ms_trees_ = 0, ms_ivy_ = 0;
   std::unique_ptr<ivy::IvyRun> ivy_;
   // Grows the state's ivy on the garden as it stands after the clock (see docs/garden-model.md),

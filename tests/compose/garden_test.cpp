@@ -4,7 +4,8 @@
 // band, slope limit, mask and objects each kept, every dart counted once; a hand-placed tree in a
 // wall refused naming plants[i].pos; the run's groups (copies share one growth when no neighbour
 // is within reach) and its clock; two trees 3 m apart leaning their crowns apart with shade on; ivy
-// from the wall's foot climbing the wall, and an ivy seed naming nothing refused naming "ivy".
+// from the wall's foot climbing the wall, and an ivy seed naming nothing refused naming "ivy"; the
+// ivy grown within what the trees left of the budget.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -271,6 +272,33 @@ TEST(Garden, IvyClimbsTheWallItStartsAt) {
   const Result<GardenRun> bad = GardenRun::Start(s, Budget{});
   ASSERT_FALSE(bad.ok());
   EXPECT_EQ(bad.status().field(), "ivy") << bad.status().Line();
+}
+
+// The garden is one job: the ivy gets what the trees' growth left of the budget, so trees and ivy
+// together stay within it (before, the ivy had the whole budget again after the trees).
+TEST(Garden, TheIvyGetsWhatTheTreesLeftOfTheBudget) {
+  GardenState s = SmallGarden();
+  ASSERT_TRUE(s.params.Set(GardenParam::kYears, 3).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kIvySteps, 40).ok());
+  s.ivy_on = {"objects[0]"};
+  s.ground = GroundKind::kFlat;  // a grown terrain would take the budget's first share itself
+  Budget tight;
+  tight.seconds = 0.05;
+  Result<GardenRun> run = GardenRun::Start(s, tight);
+  ASSERT_TRUE(run.ok()) << run.status().Line();
+  ASSERT_TRUE(run->Advance({}).ok());
+  double trees = 0;
+  for (const GardenTreeGroup& g : run->groups()) trees += g.run->grown().seconds;
+  EXPECT_GT(trees, 0.0);
+  EXPECT_LE(trees, tight.seconds);
+  EXPECT_DOUBLE_EQ(run->ivy_budget().seconds, tight.seconds - trees);
+  const std::string& line = run->truncated_by();
+  ASSERT_EQ(line.rfind("ivy: max_seconds: stopped ", 0), 0u) << line;
+  if (run->ivy() != nullptr) {
+    EXPECT_LT(run->ivy()->log().steps_run, 120) << "the ivy stopped at what the trees left";
+  } else {
+    EXPECT_NE(line.find("before step 1"), std::string::npos) << line;
+  }
 }
 
 }  // namespace
