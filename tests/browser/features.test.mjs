@@ -458,8 +458,9 @@ await runBrowserTest(async (server, browser) => {
   await embed.waitForFunction(() => [...document.querySelectorAll('niwa-tree')].every((e) => e.dataset.status === 'ready'),
     null, { timeout: TIMEOUT });
   // Every year the element showed since the page loaded (harness hook log: a loaded machine can
-  // finish the animation before a sampling loop starts), after a moment for the last years.
-  await embed.waitForTimeout(500);
+  // finish the animation before a sampling loop starts), once it has shown four (a fixed 500 ms
+  // after ready saw only 10, 0, 1 under the suite's load).
+  await embed.waitForFunction(() => (window.__niwaHookLog['#maple data-year'] || []).length >= 4, null, { timeout: TIMEOUT, polling: 100 });
   const years = (await hookLog(embed, '#maple', 'data-year')).map(Number);
   // (The full tree comes first, to frame the camera; then every age from 0 up: a rising run.)
   let run = 1, longest = years.length ? 1 : 0;
