@@ -1,7 +1,7 @@
 #version 300 es
 // The garden page's colours: uMode 0 the ground, moss green in the hollows to dry grass and earth
 // on the heights (by height over uRelief); 1 the objects (plaster walls, grey rocks and stone
-// lanterns, the .glb's materials); 2 the trees (bark brown, leaves green, flowers pale pink).
+// lanterns, the .glb's materials) and the ivy on them (brown stems, dark green leaves); 2 the trees (bark brown, leaves green, flowers pale pink).
 // Lambert from the frame's sun, shadowed by its shadow map, over a sky/ground ambient; both faces
 // lit (leaves are cards).
 precision highp float;
@@ -29,7 +29,8 @@ void main() {
     base = t < 0.5 ? mix(low, mid, t * 2.0) : mix(mid, high, t * 2.0 - 1.0);
   } else if (uMode == 1) {
     int k = int(vTint + 0.5);
-    base = k == 0 ? vec3(0.86, 0.82, 0.74) : k == 1 ? vec3(0.50, 0.50, 0.48) : vec3(0.62, 0.61, 0.57);
+    base = k == 0 ? vec3(0.86, 0.82, 0.74) : k == 1 ? vec3(0.50, 0.50, 0.48) : k == 2 ? vec3(0.62, 0.61, 0.57)
+         : k == 3 ? vec3(0.34, 0.27, 0.18) : vec3(0.15, 0.34, 0.11);
   } else {
     int k = int(vTint + 0.5);
     base = k == 0 ? vec3(0.36, 0.25, 0.16) : k == 1 ? vec3(0.22, 0.46, 0.16) : vec3(0.95, 0.80, 0.85);

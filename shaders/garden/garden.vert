@@ -3,8 +3,8 @@
 // distinct tree's mesh, in metres, y up; a tree's mesh drawn once per planted tree (instanced:
 // aInstance = its foot x, y, z and its turn about y in radians, counter-clockwise seen from above,
 // as the .glb's YawQuaternion); the ground and the objects with aInstance (0, 0, 0, 0). aTint: the
-// ground's height (m), an object's kind (0 wall, 1 rock, 2 lantern), a tree vertex's part (0 bark,
-// 1 leaves, 2 flowers): garden.frag's colour.
+// ground's height (m), an object's kind (0 wall, 1 rock, 2 lantern, 3 ivy stem, 4 ivy leaf), a
+// tree vertex's part (0 bark, 1 leaves, 2 flowers): garden.frag's colour.
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in float aTint;

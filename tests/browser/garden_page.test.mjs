@@ -53,6 +53,10 @@ await runBrowserTest(async (server, browser) => {
   check('the view shows the ground, leaves and bark (pixels)', seen.sky < 0.5 && seen.leaf > 0.003 && seen.bark > 0.0001,
     `sky ${seen.sky.toFixed(3)} leaf ${seen.leaf.toFixed(3)} bark ${seen.bark.toFixed(4)} grey ${seen.grey.toFixed(4)}`);
   check('the sun\'s shadow map is drawn', data.shadow === 'drawn' || data.shadow === 'reused', data.shadow);
+  // The ivy grown on the wall is drawn with the objects: its stems and leaves (no suckers), as many
+  // vertices as the .glb's ivy_stems and ivy_leaves meshes at least a dozen a bud.
+  check('the ivy grown on the wall is drawn with the objects', stats.ivy?.internodes > 100 && Number(data.ivyVertices) > 12 * stats.ivy.internodes,
+    `ivy ${stats.ivy?.internodes} internodes, ${data.ivyVertices} vertices drawn`);
   await saveCanvasPng(page, 'garden-first.png');
   await page.screenshot({ path: path.join(ARTIFACTS, 'garden-page.png') });
 

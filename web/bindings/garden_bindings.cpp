@@ -46,6 +46,7 @@
 #include "compose/garden_run.h"
 #include "compose/garden_state.h"
 #include "compose/garden_view.h"
+#include "ivy/ivy_run.h"
 #include "error_record.h"
 #include "page_budget.h"
 #include "params/param_json.h"
@@ -235,6 +236,17 @@ class GardenLab {
       AppendMesh(o.mesh, &object_positions_, &object_normals_, &object_indices_);
       const float kind = o.kind == "wall" ? 0.f : o.kind == "rock" ? 1.f : 2.f;
       object_kind_.resize(object_positions_.size() / 3, kind);
+    }
+    // The ivy grown on the garden (in its frame, metres), as the .glb has it: its stems (kind 3)
+    // and leaves (kind 4), the suckers left out (under a centimetre: invisible at this scale).
+    if (const ivy::IvyRun* ivy = run_->ivy()) {
+      for (const run::Part& part : ivy->Parts()) {
+        if (part.mode != gltf::Mode::kTriangles || part.name.find("sucker") != std::string::npos)
+          continue;
+        AppendMesh(part.mesh, &object_positions_, &object_normals_, &object_indices_);
+        const float kind = part.name.find("leaves") != std::string::npos ? 4.f : 3.f;
+        object_kind_.resize(object_positions_.size() / 3, kind);
+      }
     }
   }
 

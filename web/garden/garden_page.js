@@ -204,6 +204,10 @@ worker.on('garden', (msg) => {
   lastGoodHash = msg.hash;
   bounds = msg.bounds;
   applyState(msg.state);
+  // The ivy's vertices among the objects' (kinds 3 and 4: its stems and leaves), read before the
+  // buffers go back to the worker.
+  let ivyVertices = 0;
+  for (const k of msg.buffers.objects?.kind || []) ivyVertices += k > 2.5 ? 1 : 0;
   if (renderer) {
     renderer.setGarden(msg.buffers, msg.bounds);
     if (frameNext) {
@@ -218,9 +222,10 @@ worker.on('garden', (msg) => {
   ui.progress.textContent = '';
   const s = msg.stats;
   const species = Object.entries(s.trees.by_species).map(([name, n]) => `${n} ${name}`).join(', ');
-  ui.stats.textContent = `${s.size} m garden · ${s.years} years · ${s.trees.count} trees (${species}; ${s.trees.distinct} distinct, ${s.planting.by_hand} by hand) · ${s.objects} objects · ${(msg.growMs / 1000).toFixed(1)} s`;
+  const ivy = s.ivy ? ` · ivy ${s.ivy.internodes.toLocaleString('en')} internodes` : '';
+  ui.stats.textContent = `${s.size} m garden · ${s.years} years · ${s.trees.count} trees (${species}; ${s.trees.distinct} distinct, ${s.planting.by_hand} by hand) · ${s.objects} objects${ivy} · ${(msg.growMs / 1000).toFixed(1)} s`;
   setHooks({
-    status: 'ready', error: '', gardenSerial, trees: s.trees.count, byHand: s.planting.by_hand, distinct: s.trees.distinct,
+    status: 'ready', error: '', gardenSerial, trees: s.trees.count, byHand: s.planting.by_hand, distinct: s.trees.distinct, ivyVertices,
     stats: JSON.stringify(s), statsText: msg.statsText, hash: msg.hash, growMs: msg.growMs.toFixed(1),
   });
   requestFrame();
