@@ -1,6 +1,7 @@
 // Id picking: an offscreen colour + depth target the size of the canvas, into which a renderer
 // draws ids as 24-bit RGB (id + 1; 0 = nothing, shaders/common/pick.frag), and the read-back of
-// the nearest id around a pixel (so thin parts can be clicked).
+// the nearest id around a pixel (so thin parts can be clicked). Only the square read back is
+// cleared and drawn (a scissor): on a CPU rasteriser a whole-canvas pick cost as much as a frame.
 // Does not: draw (the renderer binds its own program and geometry between begin() and read()).
 
 export class PickTarget {
@@ -9,8 +10,9 @@ export class PickTarget {
     this.target = null;
   }
 
-  // Binds a cleared target of w x h pixels (recreated when the size changes).
-  begin(w, h) {
+  // Binds a target of w x h pixels (recreated when the size changes) whose square of radius r
+  // about drawing-buffer pixel (px, py) (y up) is cleared, the only pixels drawn until read().
+  begin(w, h, px, py, r) {
     const gl = this.gl;
     if (!this.target || this.target.w !== w || this.target.h !== h) {
       if (this.target) {
@@ -32,6 +34,8 @@ export class PickTarget {
     }
     gl.bindFramebuffer(gl.FRAMEBUFFER, this.target.fb);
     gl.viewport(0, 0, w, h);
+    gl.enable(gl.SCISSOR_TEST);
+    gl.scissor(px - r, py - r, 2 * r + 1, 2 * r + 1);
     gl.clearColor(0, 0, 0, 0);
     gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
     gl.enable(gl.DEPTH_TEST);
@@ -59,6 +63,7 @@ export class PickTarget {
         }
       }
     }
+    gl.disable(gl.SCISSOR_TEST);
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
     gl.enable(gl.DITHER);
     return best;

@@ -903,7 +903,10 @@ export class Renderer extends StudyLayer {
     if (!this.pickProgram || !bark || !bark.picking) return null;
     // The last frame's drawing-buffer size, the canvas left alone (resizing it blanks it).
     const [w, h] = drawingBufferSize(this.canvas, this.scale);
-    this.pickTarget.begin(w, h);
+    const scale = w / Math.max(1, this.canvas.clientWidth);
+    const px = Math.round(x * scale), py = Math.round(h - 1 - y * scale);
+    const r = Math.round(radius * scale);
+    this.pickTarget.begin(w, h, px, py, r);
     const p = this.pickProgram;
     gl.useProgram(p.program);
     gl.uniformMatrix4fv(p.uniforms.uViewProjection, false, camera.viewProjection(w / h));
@@ -911,10 +914,6 @@ export class Renderer extends StudyLayer {
     gl.bindVertexArray(bark.vao);
     gl.drawElements(gl.TRIANGLES, bark.count, gl.UNSIGNED_INT, 0);
     gl.bindVertexArray(null);
-
-    const scale = w / Math.max(1, this.canvas.clientWidth);
-    const px = Math.round(x * scale), py = Math.round(h - 1 - y * scale);
-    const r = Math.round(radius * scale);
     return this.pickTarget.read(px, py, r);
   }
 }
