@@ -341,6 +341,7 @@ Status GardenRun::GrowIvy() {
   if (!prepared.ok()) return prepared.status();
   ivy::IvyRunOptions run_options;
   run_options.change = change;
+  run_options.extra_bytes_per_bud = ivy_extra_bytes_per_bud_;
   Result<ivy::IvyRun> run = ivy::IvyRun::Start(ivy_state, *prepared, left, run_options);
   if (!run.ok()) return run.status();
   NIWA_RETURN_IF_ERROR(run->Advance(nullptr));

@@ -86,6 +86,10 @@ class GardenRun : public run::StudyRun {
   // The garden's ivy once grown (nullptr without ivy seeds, ivy_steps 0 or before Advance).
   const ivy::IvyRun* ivy() const { return ivy_.get(); }
   double ms_ivy() const { return ms_ivy_; }
+  // Memory a front end holds per ivy bud beside the run (the page's mesh of the ivy: its
+  // ivy::IvyPageMeshBytesPerBud; 0 on the CLI), counted in the ivy's growth limits. Set before
+  // Advance.
+  void set_ivy_extra_bytes_per_bud(double bytes) { ivy_extra_bytes_per_bud_ = bytes; }
   // The budget the ivy was grown within: the garden's less what the trees' growth used.
   const Budget& ivy_budget() const { return ivy_budget_; }
   double ms_ground() const { return ms_ground_; }
@@ -103,7 +107,8 @@ class GardenRun : public run::StudyRun {
   bool nursery_done_ = false;
   std::string truncated_by_;
   double tree_base_bytes_ = 0;
-  Budget ivy_budget_;  // the process's base in each tree's estimate (counted once)
+  Budget ivy_budget_;
+  double ivy_extra_bytes_per_bud_ = 0;  // the process's base in each tree's estimate (counted once)
   double ms_ground_ = 0, ms_plant_ = 0, ms_trees_ = 0, ms_ivy_ = 0;
   std::unique_ptr<ivy::IvyRun> ivy_;
   // Grows the state's ivy on the garden as it stands after the clock (see docs/garden-model.md),

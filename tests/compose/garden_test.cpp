@@ -301,5 +301,28 @@ TEST(Garden, TheIvyGetsWhatTheTreesLeftOfTheBudget) {
   }
 }
 
+// The memory a front end holds per ivy bud (the page's mesh of it) counts in the ivy's limits.
+TEST(Garden, TheIvyCountsTheMemoryItsFrontEndHoldsPerBud) {
+  GardenState s = SmallGarden();
+  ASSERT_TRUE(s.params.Set(GardenParam::kDensity, 0).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kYears, 3).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kIvySteps, 40).ok());
+  s.ivy_on = {"objects[0]"};
+  s.ground = GroundKind::kFlat;
+  Budget budget;
+  budget.memory_bytes = uint64_t{512} << 20;
+  Result<GardenRun> held = GardenRun::Start(s, budget);
+  ASSERT_TRUE(held.ok()) << held.status().Line();
+  held->set_ivy_extra_bytes_per_bud(4e6);  // about 100 buds fit in what is left
+  ASSERT_TRUE(held->Advance({}).ok());
+  ASSERT_NE(held->ivy(), nullptr);
+  EXPECT_LT(held->ivy()->log().steps_run, 120);
+  EXPECT_EQ(held->truncated_by().rfind("ivy: max_memory: stopped ", 0), 0u) << held->truncated_by();
+  Result<GardenRun> alone = GardenRun::Start(s, budget);
+  ASSERT_TRUE(alone.ok());
+  ASSERT_TRUE(alone->Advance({}).ok());
+  EXPECT_EQ(alone->ivy()->log().steps_run, 120) << alone->truncated_by();
+}
+
 }  // namespace
 }  // namespace niwa::compose

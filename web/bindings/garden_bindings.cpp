@@ -46,8 +46,9 @@
 #include "compose/garden_run.h"
 #include "compose/garden_state.h"
 #include "compose/garden_view.h"
-#include "ivy/ivy_run.h"
 #include "error_record.h"
+#include "ivy/ivy_budget.h"
+#include "ivy/ivy_run.h"
 #include "page_budget.h"
 #include "params/param_json.h"
 
@@ -114,6 +115,7 @@ class GardenLab {
     Result<compose::GardenRun> started = compose::GardenRun::Start(state, PageBudget());
     if (!started.ok()) return ErrorText(started.status());
     compose::GardenRun run = std::move(started).value();
+    run.set_ivy_extra_bytes_per_bud(ivy::IvyPageMeshBytesPerBud());  // FillObjects' ivy mesh
     s = run.Advance([&](const run::Progress& p) {
       if (!progress_.isNull() && !progress_.isUndefined())
         progress_(std::string(p.phase), p.done, p.total);
