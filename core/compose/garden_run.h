@@ -106,9 +106,9 @@ class GardenRun : public run::StudyRun {
   int year_ = 0;
   bool nursery_done_ = false;
   std::string truncated_by_;
-  double tree_base_bytes_ = 0;
+  double tree_base_bytes_ = 0;  // the process's base in each tree's estimate (counted once)
   Budget ivy_budget_;
-  double ivy_extra_bytes_per_bud_ = 0;  // the process's base in each tree's estimate (counted once)
+  double ivy_extra_bytes_per_bud_ = 0;
   double ms_ground_ = 0, ms_plant_ = 0, ms_trees_ = 0, ms_ivy_ = 0;
   std::unique_ptr<ivy::IvyRun> ivy_;
   // Grows the state's ivy on the garden as it stands after the clock (see docs/garden-model.md),

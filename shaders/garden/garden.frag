@@ -1,7 +1,8 @@
 #version 300 es
 // The garden page's colours: uMode 0 the ground, moss green in the hollows to dry grass and earth
 // on the heights (by height over uRelief); 1 the objects (plaster walls, grey rocks and stone
-// lanterns, the .glb's materials) and the ivy on them (brown stems, dark green leaves); 2 the trees (bark brown, leaves green, flowers pale pink).
+// lanterns, the .glb's materials) and the ivy on them (brown stems, dark green leaves); 2 the
+// trees (bark brown, leaves green, flowers pale pink).
 // Lambert from the frame's sun, shadowed by its shadow map, over a sky/ground ambient; both faces
 // lit (leaves are cards).
 precision highp float;
