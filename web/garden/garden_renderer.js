@@ -13,12 +13,6 @@ import { loadPrograms } from '../gl/program.js';
 const SHADERS = new URL('../../shaders/garden/', import.meta.url).href;
 const INSTANCE_BYTES = 16;  // x, y, z, turn (radians)
 
-const normalize = (v) => {
-  const l = Math.hypot(v[0], v[1], v[2]) || 1;
-  return [v[0] / l, v[1] / l, v[2] / l];
-};
-const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
-
 export class GardenRenderer extends StudyLayer {
   constructor(target) {
     super(target, { what: 'the garden', study: 'tree' });
@@ -115,15 +109,7 @@ export class GardenRenderer extends StudyLayer {
 
   // The ray through the canvas point (x, y) (CSS pixels) under `camera`: {origin, direction}.
   rayAt(camera, x, y) {
-    const w = this.canvas.clientWidth, h = this.canvas.clientHeight;
-    const ndcX = (2 * x) / w - 1, ndcY = 1 - (2 * y) / h;
-    const eye = camera.position(), target = camera.target;
-    const f = normalize([target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]]);
-    const r = normalize(cross(f, [0, 1, 0]));
-    const u = cross(r, f);
-    const t = Math.tan(camera.fov / 2), aspect = w / h;
-    const dir = [0, 1, 2].map((i) => f[i] + r[i] * ndcX * t * aspect + u[i] * ndcY * t);
-    return { origin: eye, direction: normalize(dir) };
+    return camera.ray(x, y, this.canvas.clientWidth, this.canvas.clientHeight);
   }
 
   // Where `ray` first meets the ground inside the square: [x, y, z], or null. Marched in steps of

@@ -1,6 +1,11 @@
 // Orbit camera: yaw/pitch/distance around a target; orbit, pan and zoom by mouse, wheel, touch and keys.
 
 const clamp = (x, lo, hi) => Math.min(hi, Math.max(lo, x));
+const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+const normalize = (v) => {
+  const l = Math.hypot(v[0], v[1], v[2]) || 1;
+  return [v[0] / l, v[1] / l, v[2] / l];
+};
 
 export class OrbitCamera {
   constructor() {
@@ -81,6 +86,19 @@ export class OrbitCamera {
 
   viewProjection(aspect) {
     return multiply(perspective(this.fov, aspect, this.near, this.far), lookAt(this.position(), this.target, [0, 1, 0]));
+  }
+
+  // The ray through point (x, y) (CSS pixels from the top left) of a view `width` × `height` that
+  // viewProjection(width / height) draws: {origin (the eye), direction (unit)}, in the camera's world.
+  ray(x, y, width, height) {
+    const ndcX = (2 * x) / width - 1, ndcY = 1 - (2 * y) / height;
+    const eye = this.position(), target = this.target;
+    const f = normalize([target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]]);
+    const r = normalize(cross(f, [0, 1, 0]));
+    const u = cross(r, f);
+    const t = Math.tan(this.fov / 2), aspect = width / height;
+    const dir = [0, 1, 2].map((i) => f[i] + r[i] * ndcX * t * aspect + u[i] * ndcY * t);
+    return { origin: eye, direction: normalize(dir) };
   }
 
   // Drag / one-finger orbit; right- or Shift-drag / two-finger drag pan; wheel / pinch zoom;

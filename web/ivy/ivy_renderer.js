@@ -416,16 +416,9 @@ export class IvyRenderer extends StudyLayer {
 
   // A ray through canvas pixel (x, y) (CSS pixels from the top left) in scene units.
   rayAt(camera, x, y) {
-    const w = this.canvas.clientWidth, h = this.canvas.clientHeight;
-    const ndcX = (2 * x) / w - 1, ndcY = 1 - (2 * y) / h;
-    const eye = camera.position(), target = camera.target;
-    const f = normalize([target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]]);
-    const r = normalize(cross(f, [0, 1, 0]));
-    const u = cross(r, f);
-    const t = Math.tan(camera.fov / 2), aspect = w / h;
-    const dir = [0, 1, 2].map((i) => f[i] + r[i] * ndcX * t * aspect + u[i] * ndcY * t);
+    const { origin, direction } = camera.ray(x, y, this.canvas.clientWidth, this.canvas.clientHeight);
     const s = this.model[3];
-    return { origin: eye.map((e, i) => e / s + this.model[i]), direction: normalize(dir) };
+    return { origin: origin.map((e, i) => e / s + this.model[i]), direction };
   }
 
   // The ivy's steps of a frame (web/gl/progressive_frame.js) under `view` ({viewProjection, eye,
@@ -563,13 +556,4 @@ export function materialRuns(indices, material) {
 // A glTF sampler's wrap mode (§5.26) as GL's; glTF's default REPEAT.
 function wrapOf(gl, mode) {
   return mode === gl.CLAMP_TO_EDGE || mode === gl.MIRRORED_REPEAT ? mode : gl.REPEAT;
-}
-
-function cross(a, b) {
-  return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
-}
-
-function normalize(v) {
-  const l = Math.hypot(v[0], v[1], v[2]) || 1;
-  return [v[0] / l, v[1] / l, v[2] / l];
 }
