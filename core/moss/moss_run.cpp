@@ -355,6 +355,8 @@ void MossRun::Day() {
   TracePhotons(cells_, occluders_, light, p.GetInt(MossParam::kPhotons), &w.photon_rng, &map_);
   w.emitted_sun = map_.emitted_sun;
   w.emitted_sky = map_.emitted_sky;
+  w.canopy_intercepted += map_.canopy_intercepted;
+  w.canopy_absorbed += map_.canopy_absorbed;
   w.stored_by_depth = map_.stored_by_depth;
   if (w.stored_by_depth_total.size() < map_.stored_by_depth.size())
     w.stored_by_depth_total.resize(map_.stored_by_depth.size(), 0);
@@ -656,9 +658,12 @@ Status MossRun::UseWeather(std::vector<WeatherDay> days, const std::string& name
   return Status::Ok();
 }
 
-Status MossRun::Advance(const run::Observer& observer) {
+Status MossRun::Advance(const run::Observer& observer) { return AdvanceTo(state_.days, observer); }
+
+Status MossRun::AdvanceTo(int day, const run::Observer& observer) {
+  const int last = std::min(day, state_.days);
   const MossWorld before = world_;
-  while (world_.day < state_.days) {
+  while (world_.day < last) {
     if (observer &&
         !observer({"grow", static_cast<double>(world_.day), static_cast<double>(state_.days)})) {
       world_ = before;
@@ -669,6 +674,16 @@ Status MossRun::Advance(const run::Observer& observer) {
   if (observer)
     observer({"grow", static_cast<double>(world_.day), static_cast<double>(state_.days)});
   return Status::Ok();
+}
+
+void MossRun::SetCanopy(std::vector<CanopySphere> spheres) {
+  if (spheres.empty()) {
+    light_.canopy.reset();
+    return;
+  }
+  auto canopy = std::make_shared<CanopyShade>();
+  canopy->Build(std::move(spheres));
+  light_.canopy = std::move(canopy);
 }
 
 std::vector<run::Part> MossRun::Parts() const {
@@ -1109,6 +1124,10 @@ std::string MossRun::StatsJson() const {
   nlohmann::ordered_json photons = b["photons"];
   photons["stored_by_depth_all_days"] = w.stored_by_depth_total;
   j["photons_last_day"] = photons;
+  if (light_.canopy != nullptr)  // a composed run's leaves (SetCanopy)
+    j["canopy"] = {{"spheres", light_.canopy->size()},
+                   {"photons_intercepted", w.canopy_intercepted},
+                   {"photons_absorbed", w.canopy_absorbed}};
   j["soil_last_day"] = b["soil"];
   // Every K days (--every K): the same breakdown as it stood at the end of those days.
   if (stats_every_ > 0) {

@@ -90,6 +90,8 @@ struct MossWorld {
   int64_t births = 0, deaths_declined = 0, deaths_contest = 0;
   std::array<int64_t, 2> seeds_made{};  // by SeedKind
   int64_t immigrants = 0;
+  // Photons the canopy's leaves intercepted and, of them, absorbed, over every day (SetCanopy).
+  int64_t canopy_intercepted = 0, canopy_absorbed = 0;
   std::array<int64_t, static_cast<int>(SeedLoss::kCount)> seeds_lost{};
   std::vector<std::array<int, kSpeciesCount>> population;  // day 0 .. day
   int emitted_sun = 0, emitted_sky = 0;                    // the last day's
@@ -128,6 +130,13 @@ class MossRun : public run::StudyRun {
   // "every_days" (the rows). 0: none (the default; the stats keep their bytes). Before the first
   // day only; the error names "stats_every" (a whole number in [0, 3650]).
   Status RecordEvery(double every);
+  // Leaves the study does not grow shading the next days' photons (canopy.h; the garden's tree
+  // crowns, handed in again each garden year); empty: none. The land and its cells are unchanged.
+  void SetCanopy(std::vector<CanopySphere> spheres);
+  const CanopyShade* canopy() const { return light_.canopy.get(); }
+  // Grows the days up to min(day, the state's days) (Advance grows them all): a composed run
+  // grows its days in parts between other studies' years. A cancel restores the world as it was.
+  Status AdvanceTo(int day, const run::Observer& observer);
   // What the run of `state` on `cells` needs (calibrated upper bounds).
   static Estimate RunEstimate(const MossState& state, std::size_t cells);
 
@@ -175,6 +184,7 @@ class MossRun : public run::StudyRun {
   // Where a seed starting at `start` would land among today's mosses (spec §1.5.6 and the mat
   // rule: it rests only on mosses inside a mat); false with the loss when it is dropped.
   bool LandSeed(const glm::dvec3& start, MossSeed* seed, SeedLoss* loss) const;
+  const MossState& state() const { return state_; }
   const MossWorld& world() const { return world_; }
   const SoilCells& cells() const { return cells_; }
   const PhotonMap& photon_map() const { return map_; }

@@ -278,6 +278,10 @@ void TracePhotons(const SoilCells& cells, const MossOccluders& mosses, const Pho
   map->stored_by_depth.assign(static_cast<std::size_t>(light.max_bounces) + 1, 0);
   map->power_by_depth.assign(static_cast<std::size_t>(light.max_bounces) + 1, 0.0);
   map->escaped = map->absorbed = 0;
+  map->canopy_intercepted = map->canopy_absorbed = 0;
+  map->canopy_power_absorbed = 0;
+  const CanopyShade* canopy =
+      light.canopy != nullptr && !light.canopy->empty() ? light.canopy.get() : nullptr;
   const double piR2 = det::kPi * light.R * light.R;
   // The budget's sky share (spec §1.3); no sky photons without indirect light.
   const bool sky = light.indirect && light.S_sky > 0.0;
@@ -322,6 +326,26 @@ void TracePhotons(const SoilCells& cells, const MossOccluders& mosses, const Pho
       const double t_mesh =
           hit.hit ? static_cast<double>(hit.distance) : std::numeric_limits<double>::infinity();
       const bool on_moss = mosses.FirstHit(origin, dir, t_mesh, &t_moss, &moss);
+      if (canopy != nullptr) {
+        // The leaves before the first hit: an optical depth drawn for the path (one draw a path
+        // segment, only with a canopy, so a scene without one keeps its bits).
+        const double tau = -det::Log(1.0 - rng->Uniform());
+        double t_leaf = 0;
+        if (canopy->Intercept(origin, dir, on_moss ? t_moss : t_mesh, tau, &t_leaf)) {
+          ++map->canopy_intercepted;
+          if (!light.indirect || depth >= light.max_bounces || rng->Uniform() >= light.omega_leaf) {
+            ++map->canopy_absorbed;
+            map->canopy_power_absorbed += power;
+            ++map->absorbed;
+            break;
+          }
+          // Reflected (about −dir) or transmitted (about dir), one half each.
+          const glm::dvec3 facing = rng->Uniform() < 0.5 ? -dir : dir;
+          origin += t_leaf * dir;
+          dir = CosineDirection(facing, rng);
+          continue;
+        }
+      }
       if (!hit.hit && !on_moss) {
         ++map->escaped;
         break;

@@ -10,11 +10,13 @@
 
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <vector>
 
 #include "base/status.h"
 #include "geom/radius_grid.h"
 #include "geom/ray_dump.h"
+#include "moss/canopy.h"
 #include "moss/moss_params.h"
 #include "moss/soil_cells.h"
 #include "random/pcg32.h"
@@ -33,6 +35,12 @@ struct PhotonLight {
   int max_bounces = 16;
   bool indirect = true;   // false: first hits only, no sky photons (fig 4.2)
   double r_gather = 0.1;  // m
+  // Leaves the study does not grow (a garden's tree crowns; none on the study's own scenes): a
+  // photon's path through them is intercepted by Beer–Lambert (canopy.h); an intercepted photon
+  // is scattered with probability omega_leaf (the leaves' broadband single-scattering albedo:
+  // reflected or transmitted, one half each, cosine-weighted), else absorbed; none is stored.
+  std::shared_ptr<const CanopyShade> canopy;
+  double omega_leaf = 0.5;
 };
 // The light of `params` over `cells` (the sun_altitude row is at least 1°); the error names
 // "sun_path" (the arc is not built).
@@ -86,6 +94,9 @@ struct PhotonMap {
   std::vector<double> power_by_depth;    // W stored at each depth
   int64_t escaped = 0;                   // paths that left without a hit
   int64_t absorbed = 0;                  // paths ended by the roulette (or the bounce cap)
+  int64_t canopy_intercepted = 0;        // interceptions by the canopy's leaves
+  int64_t canopy_absorbed = 0;           // of them, paths ended there
+  double canopy_power_absorbed = 0;      // W
 };
 
 // Eq 3.1's emission from the sun's square: a uniform point on the square (two draws), then a
