@@ -109,6 +109,7 @@ int RunGardenGrow(const GardenOptions& o, std::ostream& out) {
     Check(CheckEstimate(*e, budget, "lower max_triangles or the trees (density, size)"));
   }
   const auto t1 = std::chrono::steady_clock::now();
+  const double moss_start_ms = run->ms_moss();
   Check(run::RenameField(run->Advance({}), kGardenFlags));
   ReportTruncated(run->truncated_by());
   const auto t2 = std::chrono::steady_clock::now();
@@ -129,7 +130,9 @@ int RunGardenGrow(const GardenOptions& o, std::ostream& out) {
     j["ms"] = Ms(t0, std::chrono::steady_clock::now());
     j["ms_ground"] = run->ms_ground();
     j["ms_plant"] = run->ms_plant();
-    j["ms_trees"] = Ms(t1, t2);
+    j["ms_moss"] = run->ms_moss();  // its start (the land's cells) and its days
+    j["ms_ivy"] = run->ms_ivy();
+    j["ms_trees"] = Ms(t1, t2) - run->ms_ivy() - (run->ms_moss() - moss_start_ms);
     j["ms_export"] = Ms(t2, t3);
   } else {
     j["trees"] = run->planting().trees.size();

@@ -52,6 +52,19 @@ std::vector<ParamSpec> GardenRows() {
        kGardenGrow,
        "Ivy steps (paper 004's unit) a garden year: the ivy of the state's seeds grows years × "
        "ivy_steps steps on the objects, the trunks near them and the ground (0: no ivy)."},
+      {GardenId(GP::kMossDays), "moss_days", "", "days/year", 10, 0, 60, true, "interactions",
+       kGardenGrow,
+       "Moss days (paper 001's unit) a garden year: after each year of the trees, the moss grows "
+       "moss_days days over the ground and the objects, under that year's leaves (0: no moss)."},
+      {GardenId(GP::kMossShade), "moss_shade", "", "", 1, 0, 1, true, "interactions", kGardenGrow,
+       "1: the moss's photons cross the trees' leaves (Beer–Lambert through the leaf spheres of "
+       "the thesis's light model), so the moss grows in the canopies' shade; 0: no leaves in its "
+       "light."},
+      {GardenId(GP::kMossCanopy), "moss_canopy", "", "×", 1, 0.1, 20, false, "interactions",
+       kGardenGrow,
+       "Scales the leaves' extinction in the moss's light (1: the tree's own sphere_opacity, "
+       "the thesis's light model, whose crowns let about 60 % of the sun through; real crowns of "
+       "leaf area index 3 to 5 let 5 to 20 % through)."},
       // ------------------------------------------------ export
       {GardenId(GP::kMaxTriangles), "max_triangles", "", "", 8000, 100, 1000000, true, "export",
        kGardenMesh,

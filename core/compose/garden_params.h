@@ -30,6 +30,9 @@ enum class GardenParam : int {
   kShade,
   kShadeReach,
   kIvySteps,
+  kMossDays,
+  kMossShade,
+  kMossCanopy,
   // export
   kMaxTriangles,
   kLod,

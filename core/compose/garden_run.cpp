@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "compose/bark_support.h"
+#include "compose/garden_moss.h"
 #include "compose/tree_neighbours.h"
 #include "geom/linear_queries.h"
 #include "image/png.h"
@@ -152,16 +153,36 @@ Result<GardenRun> GardenRun::Start(const GardenState& state, const Budget& budge
     run.groups_[g].trees.push_back(static_cast<int>(t));
     run.tree_group_[t] = g;
   }
+  const int years = state.params.GetInt(GardenParam::kYears);
+  // The moss, started before the trees so its whole run's estimate is taken off their share (it
+  // is refused up front, as the moss study refuses a run over its budget).
+  Budget tree_budget = budget;
+  const int moss_days = state.params.GetInt(GardenParam::kMossDays);
+  if (moss_days > 0 && years > 0) {
+    t0 = Clock::now();
+    moss::MossState ms = state.moss;
+    NIWA_RETURN_IF_ERROR(moss::SetMossDays(years * moss_days, &ms).Within("moss_days"));
+    NIWA_RETURN_IF_ERROR(
+        moss::SetMossSeed(state.params.Get(GardenParam::kPlantSeed), &ms).Within("plant_seed"));
+    Result<moss::MossRun> moss =
+        moss::MossRun::StartOnScene(ms, GardenMossLand(run.scene_), budget, "garden");
+    if (!moss.ok()) return Status::Error("moss_days", moss.status().Line());
+    const Estimate used = moss::MossRun::RunEstimate(ms, moss->cells().size());
+    tree_budget.seconds = std::max(0.0, budget.seconds - used.seconds);
+    tree_budget.memory_bytes = static_cast<uint64_t>(
+        std::max(0.0, static_cast<double>(budget.memory_bytes) - used.memory_bytes));
+    run.moss_ = std::make_unique<moss::MossRun>(std::move(*moss));
+    run.ms_moss_ = MsSince(t0);
+  }
   // Each group's growth within an equal share of the budget above the process's own base (the
   // tree's limits count that base once per tree; its limits stop a tree with a line).
   const double groups = std::max<double>(1, static_cast<double>(run.groups_.size()));
-  const int years = state.params.GetInt(GardenParam::kYears);
   for (GardenTreeGroup& g : run.groups_) {
     TreeState ts;
     NIWA_RETURN_IF_ERROR(SetStatePreset(g.species, &ts));
     NIWA_RETURN_IF_ERROR(SetStateSeed(static_cast<double>(g.seed), &ts));
     NIWA_RETURN_IF_ERROR(SetStateYears(std::min(kMaxYears, g.age + years), &ts).Within("years"));
-    ts.limits = TreeGrowLimits(ts.params, budget, "years");
+    ts.limits = TreeGrowLimits(ts.params, tree_budget, "years");
     run.tree_base_bytes_ = ts.limits.base_bytes;
     ts.limits.max_bytes =
         ts.limits.base_bytes + std::max(0.0, ts.limits.max_bytes - ts.limits.base_bytes) / groups;
@@ -199,6 +220,7 @@ Status GardenRun::Advance(const run::Observer& observer) {
     for (GardenTreeGroup& g : groups_)
       if (!g.shaded && g.run->done() < g.age + year_ + 1 && !g.run->stopped()) g.run->GrowYear();
     ++year_;
+    if (moss_) GrowMossYear();
   }
   if (observer) observer({"grow", static_cast<double>(year_), static_cast<double>(years)});
   if (!ivy_ && !state_.ivy_on.empty() && state_.params.GetInt(GardenParam::kIvySteps) > 0 &&
@@ -351,6 +373,22 @@ Status GardenRun::GrowIvy() {
   return Status::Ok();
 }
 
+void GardenRun::GrowMossYear() {
+  const auto t0 = Clock::now();
+  std::vector<moss::CanopySphere> canopy;
+  if (state_.params.GetBool(GardenParam::kMossShade)) {
+    std::vector<TreeAt> trees;
+    for (std::size_t t = 0; t < planting_.trees.size(); ++t) {
+      const PlacedTree& p = planting_.trees[t];
+      trees.push_back({groups_[tree_group_[t]].run.get(), p.x, p.y, p.z, p.rot});
+    }
+    canopy = GardenCanopy(trees, state_.params.Get(GardenParam::kMossCanopy));
+  }
+  moss_->SetCanopy(std::move(canopy));
+  (void)moss_->AdvanceTo(year_ * state_.params.GetInt(GardenParam::kMossDays), nullptr);
+  ms_moss_ += MsSince(t0);
+}
+
 double GardenRun::CrownRadius(int group) const {
   double r2 = 0;
   for (const Branch& b : groups_[group].tree().branches) {
@@ -444,6 +482,28 @@ Result<gltf::Document> GardenRun::Document() const {
       doc.nodes.push_back(std::move(node));
     }
   }
+  if (moss_ && !moss_->world().mosses.empty()) {
+    // The mosses as tufts (moss_gltf.h: COLOR_0 by species); the land's coverage map is not
+    // written (the ground is the garden's own).
+    gltf::Mesh mesh;
+    mesh.name = "moss_tufts";
+    gltf::Primitive prim;
+    prim.mesh = moss::MergedTufts(moss_->Tufts());
+    gltf::Material m;
+    m.name = "moss_tufts";
+    m.metallic_factor = 0;
+    m.roughness_factor = 0.95;
+    m.double_sided = true;
+    prim.material = static_cast<int>(doc.materials.size());
+    doc.materials.push_back(std::move(m));
+    mesh.primitives.push_back(std::move(prim));
+    gltf::Node node;
+    node.name = "moss_tufts";
+    node.mesh = static_cast<int>(doc.meshes.size());
+    doc.meshes.push_back(std::move(mesh));
+    doc.scene_nodes.push_back(static_cast<int>(doc.nodes.size()));
+    doc.nodes.push_back(std::move(node));
+  }
   const long max_triangles = state_.params.GetInt(GardenParam::kMaxTriangles);
   const bool lod = state_.params.GetBool(GardenParam::kLod);
   const bool instancing = state_.params.GetBool(GardenParam::kInstancing);
@@ -532,6 +592,7 @@ std::string GardenRun::StatsJson() const {
                 {"internodes", ivy_->model().internodes.size()},
                 {"support_triangles", ivy_->support().triangles()}};
   }
+  if (moss_) j["moss"] = GardenMossStats(*moss_, moss_->canopy());
   if (!truncated_by_.empty()) j["truncated_by"] = truncated_by_;
   return j.dump();
 }
@@ -544,12 +605,18 @@ Result<Estimate> GardenRun::ExportEstimate(const std::string& format) const {
   const double groups = static_cast<double>(groups_.size());
   const double ground_vertices = static_cast<double>(scene_.ground.n + 1) * (scene_.ground.n + 1);
   if (format == "glb") {
+    Estimate moss{0, 0, ""};
+    if (moss_)  // the tufts at the cap (the land map is not written, but counted: an upper bound)
+      moss = moss::MossGlbEstimate(
+          moss_->cells().size(),
+          static_cast<std::size_t>(moss_->state().params.Get(moss::MossParam::kMaxMosses)));
     const double tri = static_cast<double>(state_.params.GetInt(GardenParam::kMaxTriangles)) *
                        (state_.params.GetBool(GardenParam::kLod) ? 1.3 : 1.0);
-    return Estimate{groups * tri * kGardenGlbBytesPerTriangle + ground_vertices * 120 +
-                        groups * 4.0 * kGardenAtlasSize * kGardenAtlasSize,
-                    groups * tri * kGardenGlbSecondsPerTriangle + ground_vertices * 1e-6,
-                    "writing the garden's .glb (" + FormatCount(groups) + " distinct trees)"};
+    return Estimate{
+        groups * tri * kGardenGlbBytesPerTriangle + ground_vertices * 120 +
+            groups * 4.0 * kGardenAtlasSize * kGardenAtlasSize + moss.memory_bytes,
+        groups * tri * kGardenGlbSecondsPerTriangle + ground_vertices * 1e-6 + moss.seconds,
+        "writing the garden's .glb (" + FormatCount(groups) + " distinct trees)"};
   }
   if (format == "heightmap" || format == "svg" || format == "json")
     return Estimate{ground_vertices * 16 + static_cast<double>(planting_.trees.size()) * 200.0,

@@ -8,9 +8,10 @@
 // EXT_mesh_gpu_instancing or plain nodes sharing the mesh, optional _LOD1/_LOD2), the 16-bit
 // heightmap of the ground, the plan as SVG, the stats. Ivy (paper 004) grows from the state's seeds
 // at the feet of objects and hand-placed trees, climbing the objects, the trunks near them and the
-// ground. Does not (yet): grow moss or simulated bark in the garden (their studies run alone or
-// on one tree: compose/moss_on_tree, bark_on_tree), replay years without regrowing, read files,
-// or name a flag.
+// ground. Moss (paper 001) grows over the ground and the objects, moss_days days after each
+// garden year, its photons crossing that year's leaves (compose/garden_moss). Does not (yet): grow
+// simulated bark in the garden (compose/bark_on_tree runs it on one tree), replay years without
+// regrowing, read files, or name a flag.
 #pragma once
 
 #include <memory>
@@ -23,6 +24,7 @@
 #include "compose/garden_scene.h"
 #include "compose/garden_state.h"
 #include "ivy/ivy_run.h"
+#include "moss/moss_run.h"
 #include "render/tree_run.h"
 #include "run/study_run.h"
 
@@ -86,6 +88,9 @@ class GardenRun : public run::StudyRun {
   // The garden's ivy once grown (nullptr without ivy seeds, ivy_steps 0 or before Advance).
   const ivy::IvyRun* ivy() const { return ivy_.get(); }
   double ms_ivy() const { return ms_ivy_; }
+  // The garden's moss (nullptr with moss_days 0 or years 0), grown to years × moss_days days.
+  const moss::MossRun* moss() const { return moss_.get(); }
+  double ms_moss() const { return ms_moss_; }
   // Memory a front end holds per ivy bud beside the run (the page's mesh of the ivy: its
   // ivy::IvyPageMeshBytesPerBud; 0 on the CLI), counted in the ivy's growth limits. Set before
   // Advance.
@@ -109,8 +114,11 @@ class GardenRun : public run::StudyRun {
   double tree_base_bytes_ = 0;  // the process's base in each tree's estimate (counted once)
   Budget ivy_budget_;
   double ivy_extra_bytes_per_bud_ = 0;
-  double ms_ground_ = 0, ms_plant_ = 0, ms_trees_ = 0, ms_ivy_ = 0;
+  double ms_ground_ = 0, ms_plant_ = 0, ms_trees_ = 0, ms_ivy_ = 0, ms_moss_ = 0;
   std::unique_ptr<ivy::IvyRun> ivy_;
+  std::unique_ptr<moss::MossRun> moss_;
+  // The moss's days of one garden year, after the trees' year: that year's leaves as its canopy.
+  void GrowMossYear();
   // Grows the state's ivy on the garden as it stands after the clock (see docs/garden-model.md),
   // within what the trees left of the budget.
   Status GrowIvy();

@@ -277,6 +277,24 @@ Status CheckGardenState(const GardenState& state) {
   return Status::Ok();
 }
 
+moss::MossState GardenMossDefaults() {
+  moss::MossState state;
+  (void)moss::SetMossPreset("nomura2010-sky", &state);
+  moss::MossParams& p = state.params;
+  (void)p.Set(moss::MossParam::kPhotons, 8192);
+  (void)p.Set(moss::MossParam::kRGather, 1.0);
+  (void)p.Set(moss::MossParam::kSoilEdge, 0.5);
+  (void)p.Set(moss::MossParam::kLightSmoothingDays, 10);
+  // Caps for a garden's moss: its estimate counts every moss and seed the caps allow each day.
+  (void)p.Set(moss::MossParam::kMaxMosses, 4096);
+  (void)p.Set(moss::MossParam::kSeedCap, 4096);
+  // The sun in the south at 55° (a mean of the noon altitudes at 35° N: 31° to 78°), not the
+  // thesis's zenith: a garden's north faces and the ground north of a crown are in shade.
+  (void)p.Set(moss::MossParam::kSunAltitude, 55);
+  (void)p.Set(moss::MossParam::kSunAzimuth, 90);
+  return state;
+}
+
 Status ApplyGardenStateJson(const std::string& text, GardenState* state) {
   json j = json::parse(text, nullptr, false);
   if (j.is_discarded() || !j.is_object())
@@ -316,6 +334,9 @@ Status ApplyGardenStateJson(const std::string& text, GardenState* state) {
                                "unknown field; the ground has kind, terrain and file");
         }
       }
+    } else if (key == "moss") {
+      if (!v.is_object()) return Status::Error("moss", "must be the moss's state {preset, params}");
+      NIWA_RETURN_IF_ERROR(moss::ApplyMossStateJson(v.dump(), &next.moss).Within("moss"));
     } else if (key == "objects" || key == "plants") {
       if (!v.is_array()) return Status::Error(key, "must be an array");
       if (next.default_layout) {
@@ -419,6 +440,9 @@ std::string GardenStateJson(const GardenState& state) {
   for (const SpeciesWeight& w : state.mix) j["mix"][w.species] = w.weight;
   j["ivy"] = {{"preset", state.ivy_preset}, {"on", state.ivy_on}};
   if (!state.mask_name.empty()) j["mask"] = state.mask_name;
+  const std::string moss_json = moss::MossStateJson(state.moss);
+  if (moss_json != moss::MossStateJson(GardenMossDefaults()))
+    j["moss"] = nlohmann::ordered_json::parse(moss_json);
   return j.dump(2);
 }
 
@@ -451,6 +475,8 @@ std::string EncodeGardenHash(const GardenState& state, std::string_view prefix) 
     hash += "&" + pre + "ivy_preset=" + PercentEncode(state.ivy_preset);
   if (state.ground == GroundKind::kTerrain)
     hash += "&" + terrain::EncodeTerrainHash(state.terrain, pre + "terrain.");
+  if (moss::MossStateJson(state.moss) != moss::MossStateJson(GardenMossDefaults()))
+    hash += "&" + moss::EncodeMossHash(state.moss, pre + "moss.");
   return pre + hash;
 }
 
@@ -466,9 +492,15 @@ void ApplyGardenHash(std::string_view hash, std::string_view prefix, GardenState
   std::stable_partition(pairs.begin(), pairs.end(), [&](const auto& kv) {
     return kv.first != pre + "ivy" && kv.first != pre + "ivy_preset";
   });
+  const std::string moss_prefix = pre + "moss.";
+  bool moss_keys = false;
   for (const auto& [key, value] : pairs) {
     if (key.rfind(terrain_prefix, 0) == 0) {
       terrain_keys = true;
+      continue;
+    }
+    if (key.rfind(moss_prefix, 0) == 0) {
+      moss_keys = true;
       continue;
     }
     if (key.rfind(pre, 0) != 0) continue;
@@ -553,6 +585,12 @@ void ApplyGardenHash(std::string_view hash, std::string_view prefix, GardenState
     }
   }
   if (terrain_keys) terrain::ApplyTerrainHash(hash, terrain_prefix, &state->terrain, notices);
+  if (moss_keys) {
+    std::vector<std::string> moss_notices;
+    moss::ApplyMossHash(hash, moss_prefix, &state->moss, &moss_notices);
+    if (notices != nullptr)
+      notices->insert(notices->end(), moss_notices.begin(), moss_notices.end());
+  }
   if (was_default && !state->default_layout && !ivy_given) state->ivy_on.clear();
   LayOutDefaults(state);
 }

@@ -13,6 +13,7 @@
 
 #include "base/status.h"
 #include "compose/garden_params.h"
+#include "moss/moss_state.h"
 #include "terrain/terrain_state.h"
 
 namespace niwa::compose {
@@ -43,6 +44,13 @@ struct SpeciesWeight {
   double weight = 1;
 };
 
+// The moss's preset and rows in a garden before the state's own (GardenState::moss): the sky's
+// light (in a crown's shade most light is the sky's), photons and a gather radius for a scene of
+// tens of metres, soil cells no finer than the ground's own triangles, and the light smoothed
+// over 10 days (a gather of about 20 photons a day is noisy), the sun in the south at 55°.
+// docs/garden-model.md, "Moss".
+moss::MossState GardenMossDefaults();
+
 struct GardenState {
   GardenParams params;
   GroundKind ground = GroundKind::kTerrain;
@@ -61,6 +69,9 @@ struct GardenState {
   // trees), grown with the ivy preset `ivy_preset` (niwa presets ivy).
   std::vector<std::string> ivy_on;
   std::string ivy_preset = "artist";
+  // The moss's preset and rows (climate, sun, light, life cycle: niwa params moss); its scene,
+  // days and seed are the garden's (its land, years × moss_days, plant_seed), not read here.
+  moss::MossState moss = GardenMossDefaults();
   // True until objects or plants are given (a state JSON's lists, a link's): the objects and the
   // hand-placed tree are then the default layout, laid out anew for the garden's size
   // (LayOutDefaults), so a smaller garden keeps them inside.
@@ -108,7 +119,7 @@ Status CheckGardenState(const GardenState& state);
 // Applies {params: {...}, ground: {kind: "flat" | "terrain" | "heightmap", terrain: {...the
 // terrain's state JSON...}, file: "h.png"}, objects: [{kind, pos: [x, z], rot, scale}], plants:
 // [{species, seed, age, pos: [x, z], rot}], mix: {species: weight}, mask: "m.png", ivy: {preset,
-// on: ["objects[0]", "plants[1]"]}} onto state.
+// on: ["objects[0]", "plants[1]"]}, moss: {...the moss's state JSON...}} onto state.
 // Given lists replace the state's; a heightmap's and a mask's file names are kept for the front end
 // to read (their bytes are cleared). Strict: the first bad field is the error, the state unchanged.
 Status ApplyGardenStateJson(const std::string& text, GardenState* state);
@@ -117,7 +128,8 @@ std::string GardenStateJson(const GardenState& state);
 
 // The share-link hash: the table's rows that differ from the defaults, ground=flat|terrain|
 // heightmap, the terrain's keys under "terrain.", objects=kind:x:z:rot:scale,..., plants=
-// species:seed:age:x:z:rot,..., mix=species:weight,..., ivy=objects[0],..., ivy_preset=artist (a
+// species:seed:age:x:z:rot,..., mix=species:weight,..., ivy=objects[0],..., ivy_preset=artist, the
+// moss's keys under "moss." when its state is not GardenMossDefaults' (a
 // heightmap or a mask is not carried: a link of such a garden says so in `notices` when read). Keys
 // carry `prefix`.
 std::string EncodeGardenHash(const GardenState& state, std::string_view prefix = "");

@@ -280,6 +280,7 @@ TEST(Garden, TheIvyGetsWhatTheTreesLeftOfTheBudget) {
   GardenState s = SmallGarden();
   ASSERT_TRUE(s.params.Set(GardenParam::kYears, 3).ok());
   ASSERT_TRUE(s.params.Set(GardenParam::kIvySteps, 40).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kMossDays, 0).ok());  // the moss would take its share
   s.ivy_on = {"objects[0]"};
   s.ground = GroundKind::kFlat;  // a grown terrain would take the budget's first share itself
   Budget tight;

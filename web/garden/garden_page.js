@@ -223,7 +223,9 @@ worker.on('garden', (msg) => {
   const s = msg.stats;
   const species = Object.entries(s.trees.by_species).map(([name, n]) => `${n} ${name}`).join(', ');
   const ivy = s.ivy ? ` · ivy ${s.ivy.internodes.toLocaleString('en')} internodes` : '';
-  ui.stats.textContent = `${s.size} m garden · ${s.years} years · ${s.trees.count} trees (${species}; ${s.trees.distinct} distinct, ${s.planting.by_hand} by hand) · ${s.objects} objects${ivy} · ${(msg.growMs / 1000).toFixed(1)} s`;
+  const m = s.moss;
+  const moss = m ? ` · moss ${m.mosses.toLocaleString('en')} (${m.ground_in_crown_shade.mosses_per_m2.toFixed(2)}/m² in crown shade, ${m.ground_open.mosses_per_m2.toFixed(2)}/m² open)` : '';
+  ui.stats.textContent = `${s.size} m garden · ${s.years} years · ${s.trees.count} trees (${species}; ${s.trees.distinct} distinct, ${s.planting.by_hand} by hand) · ${s.objects} objects${ivy}${moss} · ${(msg.growMs / 1000).toFixed(1)} s`;
   setHooks({
     status: 'ready', error: '', gardenSerial, trees: s.trees.count, byHand: s.planting.by_hand, distinct: s.trees.distinct, ivyVertices,
     stats: JSON.stringify(s), statsText: msg.statsText, hash: msg.hash, growMs: msg.growMs.toFixed(1),

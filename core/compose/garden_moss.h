@@ -1,0 +1,41 @@
+// Moss over the garden (issue 33 items 1-3; docs/garden-model.md "Moss"): the moss study's land
+// made of the garden's ground and objects, the trees' leaves of the year as the canopy its photons
+// cross (moss/canopy.h), the garden's defaults for the moss's state, and the stats that say where
+// the moss grew (under the crowns or in the open, on which object). Part of the composition tier:
+// the moss study knows nothing of trees or gardens, the tree study nothing of moss. Does not: grow
+// the moss (moss/moss_run does, driven year by year by compose/garden_run), mesh it, or name a
+// flag (errors name state fields).
+#pragma once
+
+#include <nlohmann/json_fwd.hpp>
+#include <vector>
+
+#include "compose/garden_scene.h"
+#include "compose/tree_neighbours.h"
+#include "moss/canopy.h"
+#include "moss/moss_run.h"
+#include "moss/moss_state.h"
+#include "moss/scenes.h"
+
+namespace niwa::compose {
+
+// The land: the ground's triangles (humus, region "ground") and every object's (stone and plaster
+// are hard, impervious surfaces: geology asphalt, the thesis's; region its kind: "wall", "rock",
+// "lantern"), in the garden's frame.
+moss::MossScene GardenMossLand(const GardenScene& scene);
+
+// The trees' leaves as the moss's canopy: every tree's leaf spheres of its last started year
+// (TreeRun::leaf_spheres, cm in its frame) turned and moved into the garden's frame (m), with the
+// extinction that keeps 1 − opacity through a sphere's diameter (the tree's sphere_opacity row,
+// thesis 2.3.2), times `scale` (the garden's moss_canopy).
+std::vector<moss::CanopySphere> GardenCanopy(const std::vector<TreeAt>& trees, double scale = 1);
+
+// Where the moss grew: for the ground's cells in the crowns' shade (the path from the cell's
+// centre towards the moss's sun meets leaves: optical depth > 0) and in the open, their area,
+// the mosses on them, per m², and their mean light S of the last day; the mosses per region
+// (ground, wall, rock, lantern) and per species; the objects' faces by facing (up, down, north,
+// east, south, west: area, mosses on them, per m²); the canopy's photons. `canopy` is the shade
+// the last days were grown under (none: every ground cell is open).
+nlohmann::ordered_json GardenMossStats(const moss::MossRun& run, const moss::CanopyShade* canopy);
+
+}  // namespace niwa::compose

@@ -1,0 +1,162 @@
+// Moss in the garden (core/compose/garden_moss, GardenRun's moss): the land is the ground and the
+// objects; the canopy is the trees' leaf spheres where the trees stand; under a crown the moss's
+// light falls against the same garden with moss_shade 0, cell for cell; moss_days 0 grows none;
+// the moss's state rides in the garden's JSON and link; the tufts are in the .glb.
+#include "compose/garden_moss.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include "compose/garden_run.h"
+#include "compose/garden_state.h"
+#include "io/gltf_writer.h"
+#include "light/sun.h"
+
+namespace niwa::compose {
+namespace {
+
+// A flat 12 m garden, one sakura by hand at the centre (4 years old), a rock east of it, moss for
+// 5 years × 12 days at 4,096 photons a day.
+GardenState MossGarden(bool shade) {
+  GardenState s = DefaultGardenState();
+  s.ground = GroundKind::kFlat;
+  EXPECT_TRUE(s.params.Set(GardenParam::kSize, 12).ok());
+  EXPECT_TRUE(s.params.Set(GardenParam::kGroundRes, 24).ok());
+  EXPECT_TRUE(s.params.Set(GardenParam::kYears, 5).ok());
+  EXPECT_TRUE(s.params.Set(GardenParam::kDensity, 0).ok());
+  EXPECT_TRUE(s.params.Set(GardenParam::kMossDays, 12).ok());
+  EXPECT_TRUE(s.params.Set(GardenParam::kMossShade, shade ? 1 : 0).ok());
+  EXPECT_TRUE(s.moss.params.Set(moss::MossParam::kPhotons, 4096).ok());
+  s.default_layout = false;
+  s.objects = {{"rock", 3.5, 0, 0, 1}};
+  s.plants = {{"sakura", 1, 4, 0, 0, 0}};
+  s.ivy_on.clear();
+  return s;
+}
+
+GardenRun Grown(const GardenState& s) {
+  Result<GardenRun> run = GardenRun::Start(s, Budget{});
+  EXPECT_TRUE(run.ok()) << run.status().Line();
+  EXPECT_TRUE(run->Advance(nullptr).ok());
+  return std::move(*run);
+}
+
+TEST(GardenMoss, TheLandIsTheGroundAndTheObjects) {
+  const GardenState s = MossGarden(true);
+  Result<GardenScene> scene = BuildGardenScene(s, Budget{});
+  ASSERT_TRUE(scene.ok());
+  const moss::MossScene land = GardenMossLand(*scene);
+  const std::size_t ground = scene->ground.Mesh().triangle_count();
+  ASSERT_EQ(land.mesh.triangle_count(), ground + scene->objects[0].mesh.triangle_count());
+  ASSERT_EQ(land.region.size(), land.mesh.triangle_count());
+  EXPECT_EQ(land.region_names[land.region.front()], "ground");
+  EXPECT_EQ(land.region_names[land.region.back()], "rock");
+  EXPECT_EQ(land.geology.front(), moss::Geology::kHumus);
+  EXPECT_EQ(land.geology.back(), moss::Geology::kAsphalt);
+}
+
+TEST(GardenMoss, TheCanopyShadesTheMossUnderTheCrown) {
+  const GardenRun shaded = Grown(MossGarden(true));
+  const GardenRun open = Grown(MossGarden(false));
+  ASSERT_NE(shaded.moss(), nullptr);
+  ASSERT_NE(open.moss(), nullptr);
+  EXPECT_EQ(shaded.moss()->world().day, 60);
+  const moss::CanopyShade* canopy = shaded.moss()->canopy();
+  ASSERT_NE(canopy, nullptr);
+  EXPECT_GT(canopy->size(), 20u);
+  EXPECT_EQ(open.moss()->canopy(), nullptr);
+  // The canopy's spheres are where the tree's leaves are: over the trunk, above the ground.
+  double lowest = 1e9, far = 0;
+  for (const moss::CanopySphere& c : canopy->spheres()) {
+    lowest = std::min(lowest, c.centre.y);
+    far = std::max(far, std::hypot(c.centre.x, c.centre.z));
+  }
+  EXPECT_GT(lowest, 0.2);
+  EXPECT_LT(far, 4.0);
+  // The same cells (one land) in the crown's shade (the path to the sun, 55° in the south,
+  // crosses more than one optical depth of leaves): the light with the leaves against without.
+  const glm::dvec3 sun = glm::normalize(glm::dvec3(light::SunDirection(55, 90)));
+  const moss::SoilCells& cells = shaded.moss()->cells();
+  ASSERT_EQ(cells.size(), open.moss()->cells().size());
+  double with = 0, without = 0, far_with = 0, far_without = 0;
+  int under = 0, away = 0;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (cells.region[i] != 0) continue;
+    const double depth = canopy->OpticalDepth(cells.centroid[i], sun, 1e9);
+    if (depth > 1.0) {
+      with += shaded.moss()->world().S[i];
+      without += open.moss()->world().S[i];
+      ++under;
+    } else if (depth == 0.0 && std::hypot(cells.centroid[i].x, cells.centroid[i].z) > 4.5) {
+      far_with += shaded.moss()->world().S[i];
+      far_without += open.moss()->world().S[i];
+      ++away;
+    }
+  }
+  ASSERT_GT(under, 5);
+  ASSERT_GT(away, 50);
+  EXPECT_LT(with, 0.6 * without) << "under the crown: " << with / under << " against "
+                                 << without / under << " W/m² without leaves";
+  // Away from the crown the light is about the same (the gather's noise, and the sky the crown
+  // hides low over the horizon).
+  EXPECT_NEAR(far_with / far_without, 1.0, 0.1);
+  // The stats split the ground by the crowns.
+  const nlohmann::json j = nlohmann::json::parse(shaded.StatsJson());
+  ASSERT_TRUE(j.contains("moss"));
+  EXPECT_GT(j["moss"]["ground_in_crown_shade"]["area_m2"].get<double>(), 1.0);
+  EXPECT_LT(j["moss"]["ground_in_crown_shade"]["mean_S"].get<double>(),
+            j["moss"]["ground_open"]["mean_S"].get<double>());
+  EXPECT_GT(j["moss"]["canopy"]["photons_intercepted"].get<double>(), 0);
+}
+
+TEST(GardenMoss, NoMossDaysNoMoss) {
+  GardenState s = MossGarden(true);
+  ASSERT_TRUE(s.params.Set(GardenParam::kMossDays, 0).ok());
+  const GardenRun run = Grown(s);
+  EXPECT_EQ(run.moss(), nullptr);
+  EXPECT_FALSE(nlohmann::json::parse(run.StatsJson()).contains("moss"));
+}
+
+TEST(GardenMoss, TheMossStateRidesInTheJsonAndTheLink) {
+  GardenState s = MossGarden(true);
+  // The garden's defaults write nothing of the moss.
+  EXPECT_EQ(GardenStateJson(DefaultGardenState()).find("\"moss\""), std::string::npos);
+  EXPECT_EQ(EncodeGardenHash(DefaultGardenState()).find("moss."), std::string::npos);
+  ASSERT_TRUE(s.moss.params.Set(moss::MossParam::kT, 290).ok());
+  const std::string hash = EncodeGardenHash(s, "");
+  EXPECT_NE(hash.find("moss.T=290"), std::string::npos) << hash;
+  GardenState back = DefaultGardenState();
+  std::vector<std::string> notices;
+  ApplyGardenHash(hash, "", &back, &notices);
+  EXPECT_TRUE(notices.empty()) << notices.front();
+  EXPECT_EQ(moss::MossStateJson(back.moss), moss::MossStateJson(s.moss));
+  GardenState from_json = DefaultGardenState();
+  ASSERT_TRUE(ApplyGardenStateJson(GardenStateJson(s), &from_json).ok());
+  EXPECT_EQ(moss::MossStateJson(from_json.moss), moss::MossStateJson(s.moss));
+  // A bad moss row names itself under "moss".
+  GardenState bad = DefaultGardenState();
+  const Status st = ApplyGardenStateJson(R"({"moss": {"params": {"photons": -1}}})", &bad);
+  ASSERT_FALSE(st.ok());
+  EXPECT_EQ(st.field().rfind("moss", 0), 0u) << st.Line();
+}
+
+TEST(GardenMoss, TheTuftsAreInTheGlb) {
+  const GardenRun run = Grown(MossGarden(true));
+  ASSERT_GT(run.moss()->world().mosses.size(), 0u);
+  Result<gltf::Document> doc = run.Document();
+  ASSERT_TRUE(doc.ok());
+  bool found = false;
+  for (const gltf::Node& n : doc->nodes)
+    if (n.name == "moss_tufts") {
+      found = true;
+      const geom::TriMesh& m = doc->meshes[static_cast<std::size_t>(n.mesh)].primitives[0].mesh;
+      EXPECT_GE(m.triangle_count(), run.moss()->world().mosses.size());
+    }
+  EXPECT_TRUE(found);
+}
+
+}  // namespace
+}  // namespace niwa::compose
