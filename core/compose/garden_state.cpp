@@ -304,6 +304,9 @@ Status ApplyGardenStateJson(const std::string& text, GardenState* state) {
   GardenState next = *state;
   const bool was_default = next.default_layout;
   bool ivy_given = false;
+  // The ivy's targets as given: the default layout (laid out when a list is given, in whichever
+  // order the keys come, and below) would put back the default wall's.
+  std::optional<std::vector<std::string>> ivy_on;
   for (const auto& [key, v] : j.items()) {
     if (key == "params") {
       if (!v.is_object()) return Status::Error("params", "must be an object {key: value}");
@@ -384,6 +387,7 @@ Status ApplyGardenStateJson(const std::string& text, GardenState* state) {
               return Status::Error("ivy.on", "must be an array of objects[i] or plants[i]");
             next.ivy_on.push_back(item.get<std::string>());
           }
+          ivy_on = next.ivy_on;
         } else {
           return Status::Error("ivy." + Echo(k), "unknown field; ivy has preset and on");
         }
@@ -408,6 +412,7 @@ Status ApplyGardenStateJson(const std::string& text, GardenState* state) {
   // names no ivy has none.
   if (was_default && !next.default_layout && !ivy_given) next.ivy_on.clear();
   LayOutDefaults(&next);
+  if (ivy_on) next.ivy_on = *ivy_on;
   NIWA_RETURN_IF_ERROR(CheckGardenState(next));
   *state = std::move(next);
   return Status::Ok();
@@ -592,7 +597,11 @@ void ApplyGardenHash(std::string_view hash, std::string_view prefix, GardenState
       notices->insert(notices->end(), moss_notices.begin(), moss_notices.end());
   }
   if (was_default && !state->default_layout && !ivy_given) state->ivy_on.clear();
+  // The default layout anew for the link's size, keeping the ivy's targets a link gave (ivy= alone:
+  // no ivy on the default wall).
+  const std::vector<std::string> ivy_on = state->ivy_on;
   LayOutDefaults(state);
+  if (ivy_given) state->ivy_on = ivy_on;
 }
 
 }  // namespace niwa::compose

@@ -1,10 +1,13 @@
-// The registry of studies: each study's table, presets and hash codec behind one shape.
+// The registry of studies (and the garden that composes them): each one's table, presets and hash
+// codec behind one shape.
 #include "compose/studies.h"
 
 #include <nlohmann/json.hpp>
 
 #include "bark/bark_params.h"
 #include "bark/bark_state.h"
+#include "compose/garden_params.h"
+#include "compose/garden_state.h"
 #include "ivy/ivy_params.h"
 #include "ivy/ivy_state.h"
 #include "moss/moss_params.h"
@@ -166,6 +169,33 @@ Result<std::string> MossEncode(const std::string& state_json, std::string_view p
   return moss::EncodeMossHash(state, prefix);
 }
 
+// ---------------------------------------------------------------- garden (issue 33)
+// One preset: the small default garden every front end starts from (DefaultGardenState), as
+// `niwa presets garden` lists it.
+std::string GardenPresetsJson() {
+  ordered_json out = ordered_json::array();
+  out.push_back({{"name", "default"},
+                 {"caption",
+                  "the small default garden: a 40 m terrain ground, a wall, two rocks, a stone "
+                  "lantern, a keyaki by hand, keyaki, sakura and maple by the rules"}});
+  return out.dump();
+}
+
+// The default garden with the link's keys (as the garden page and `niwa garden grow --url` read
+// a link).
+std::string GardenDecode(std::string_view hash, std::string_view prefix) {
+  GardenState state = DefaultGardenState();
+  std::vector<std::string> notices;
+  ApplyGardenHash(hash, prefix, &state, &notices);
+  return DecodedJson(GardenStateJson(state), notices);
+}
+
+Result<std::string> GardenEncode(const std::string& state_json, std::string_view prefix) {
+  GardenState state = DefaultGardenState();
+  NIWA_RETURN_IF_ERROR(ApplyGardenStateJson(state_json, &state));
+  return EncodeGardenHash(state, prefix);
+}
+
 }  // namespace
 
 const std::vector<StudyInfo>& Studies() {
@@ -181,6 +211,8 @@ const std::vector<StudyInfo>& Studies() {
        &BarkPresetsJson, &BarkDecode, &BarkEncode},
       {"moss", "days", &moss::MossTable, [] { return ParamTableJson(moss::MossTable()); },
        &MossPresetsJson, &MossDecode, &MossEncode},
+      {"garden", "years", &GardenTable, [] { return ParamTableJson(GardenTable()); },
+       &GardenPresetsJson, &GardenDecode, &GardenEncode},
   };
   return studies;
 }

@@ -1,8 +1,10 @@
-// The registry of studies (tree, ivy, terrain, bark; moss next): each study's name, time unit,
-// parameter table, presets and share-link codec behind one shape, so the CLI (`niwa params
-// STUDY`), the web module's generic bindings (tableJson(study), decodeHash(study, hash, prefix))
-// and the garden reach every study the same way. Does not: grow anything (core/<study>/*_run),
-// or know a front end (errors name state fields).
+// The registry of studies (tree, ivy, terrain, bark, moss, and the garden that composes them):
+// each one's name, time unit, parameter table, presets and share-link codec behind one shape, so
+// the web module's generic bindings (tableJson(study), decodeHash(study, hash, prefix)), the tests
+// and a composed page reach every study the same way (the CLI's `niwa params STUDY` and `niwa
+// presets STUDY` read each study's command file, native_cli/<study>_commands.cpp). Does not: grow
+// anything (core/<study>/*_run, compose/garden_run), or know a front end (errors name state
+// fields).
 #pragma once
 
 #include <string>
@@ -16,7 +18,7 @@ namespace niwa::compose {
 
 struct StudyInfo {
   std::string name;  // "tree", "ivy", "terrain": the key prefix on a composed page is name + "."
-  std::string unit;  // what a run advances in: "years", "steps", "levels", "cycles"
+  std::string unit;  // what a run advances in: "years", "steps", "levels", "cycles", "days"
   const ParamTable& (*table)();
   // The table as the page's panel reads it (params/param_json ParamTableJson; the tree's with its
   // Getting started rows).
@@ -31,13 +33,13 @@ struct StudyInfo {
   Result<std::string> (*encode_hash)(const std::string& state_json, std::string_view prefix);
 };
 
-// Every study, in the order of the pages' nav (tree, ivy, terrain, bark).
+// Every study: tree, ivy, terrain, bark, moss, then the garden.
 const std::vector<StudyInfo>& Studies();
 
 // The study named `name`, or nullptr.
 const StudyInfo* FindStudy(std::string_view name);
 
-// "tree, ivy, terrain, bark or moss": the names for an error line.
+// "tree, ivy, terrain, bark, moss or garden": the names for an error line.
 std::string StudyNames();
 
 }  // namespace niwa::compose

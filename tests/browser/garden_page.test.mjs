@@ -5,9 +5,10 @@
 // page's own hash; a panel edit (plant_seed) regrows with the row in the hash; a real click on the
 // ground places a tree of the picked species there (the stats' by-hand count + 1, the plant within
 // 0.3 m of the clicked point) and its Remove button takes it away; Copy link reopens the same
-// garden (same hash and stats); the Garden .glb download is the bytes of native `niwa garden grow
-// --url HASH --out g.glb`; a bad Years value is a line beside its field naming the range, and the
-// page recovers; Cancel stops a long regrow and the page grows its last garden again. Screenshots: build/artifacts/garden-*.png.
+// garden (same hash and stats); Embed offers <niwa-garden> and the iframe of the page's hash; the
+// Garden .glb download is the bytes of native `niwa garden grow --url HASH --out g.glb`; a bad Years
+// value is a line beside its field naming the range, and the page recovers; Cancel stops a long
+// regrow and the page grows its last garden again. Screenshots: build/artifacts/garden-*.png.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -104,6 +105,15 @@ await runBrowserTest(async (server, browser) => {
   const status = await page.textContent('#share-status');
   const link = status === 'Link copied.' ? await page.evaluate(() => navigator.clipboard.readText()) : status.replace(/^Copy this link: /, '');
   check('Copy link gives the page\'s link', link.endsWith(`#${data.hash}`), `${status}: ${link}`);
+  // Embed: both snippets (<niwa-garden> and the iframe) carry the page's hash (the element itself:
+  // embed_garden.test.mjs).
+  await page.click('#embed');
+  const snippets = await page.evaluate(() => [document.getElementById('embed-element').value, document.getElementById('embed-iframe').value]);
+  const escaped = data.hash.replace(/&/g, '&amp;');
+  check('Embed offers <niwa-garden> and the iframe with the page\'s hash', snippets[0].includes('niwa-garden.js') && snippets[0].includes(`<niwa-garden state="${escaped}"`) && snippets[1].includes(`embed.html?study=garden#${escaped}`),
+    snippets.join(' | ').slice(0, 300));
+  await page.screenshot({ path: path.join(ARTIFACTS, 'garden-embed-dialog.png') });
+  await page.click('#embed-dialog button[type="submit"]');
   const page2 = watchPage(await context.newPage(), problems);
   await page2.goto(link, { waitUntil: 'load' });
   const data2 = await waitGarden(page2, 0);

@@ -8,11 +8,12 @@
 // A click on the ground (not a drag) places a tree of the species picked (its foot where the click's
 // ray meets the ground's heights), a click within a metre of a hand-placed tree's foot removes it,
 // and the list of hand-placed trees has a Remove button each: every one edits the state's plants and
-// regrows in the worker (web/worker/garden_handler.js) with progress and Cancel. Copy link, the
-// .glb download (the worker's run's Export("glb"): the bytes of `niwa garden grow --url HASH --out
-// g.glb`), the plan .svg, and the stats line (trees by species).
-// Does not (yet): the year scrubber without regrowing, Blow, overlays, the embed element, hybrid
-// (card) trees, moving objects, or several workers growing at once.
+// regrows in the worker (web/worker/garden_handler.js) with progress and Cancel. Copy link, Embed
+// (<niwa-garden>, public/niwa-garden.js, or the iframe public/embed.html?study=garden, of the
+// page's hash), the .glb download (the worker's run's Export("glb"): the bytes of `niwa garden
+// grow --url HASH --out g.glb`), the plan .svg, and the stats line (trees by species).
+// Does not (yet): the year scrubber without regrowing, Blow, overlays, hybrid (card) trees, moving
+// objects, or several workers growing at once.
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { Frame } from '../gl/frame.js';
 import { OrbitCamera } from '../gl/orbit_camera.js';
@@ -20,7 +21,7 @@ import { ProgressiveLoop } from '../gl/progressive_loop.js';
 import { DEFAULT_SUNS } from '../gl/sun.js';
 import { ParamPanel } from '../shell/param_panel.js';
 import { StudyController } from '../shell/study_controller.js';
-import { Notices, copyLink, mountStudyNav } from '../shell/study_page.js';
+import { Notices, copyLink, mountStudyNav, showEmbedDialog } from '../shell/study_page.js';
 import { setHooks } from '../shell/test_hooks.js';
 import { GardenRenderer } from './garden_renderer.js';
 
@@ -254,6 +255,11 @@ ui.canvas.addEventListener('pointerup', (e) => {
 
 ui.resetView.addEventListener('click', frameGarden);
 ui.copyLink.addEventListener('click', () => copyLink(ui.shareStatus));
+// The embed: <niwa-garden> (public/niwa-garden.js) or an iframe of public/embed.html?study=garden,
+// both of the page's hash.
+$('embed').addEventListener('click', () => {
+  showEmbedDialog({ tag: 'niwa-garden', title: 'Niwa garden', heading: 'Embed this garden', script: 'niwa-garden.js', frame: 'embed.html?study=garden' });
+});
 const baseName = () => `garden-${state?.params?.years ?? 0}y`;
 $('download-glb').addEventListener('click', () => controller.exportAs('glb', `${baseName()}.glb`, 'model/gltf-binary'));
 $('download-svg').addEventListener('click', () => controller.exportAs('svg', `${baseName()}-plan.svg`, 'image/svg+xml'));
