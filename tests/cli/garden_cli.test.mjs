@@ -39,6 +39,10 @@ check('stats: trees by species add up to the count; hand + rule = count', bySpec
 const refused = Object.values(s.planting?.refused ?? {}).reduce((p, q) => p + q, 0);
 check('stats: every dart kept or refused by one rule', s.planting.candidates === s.planting.by_rule + refused, JSON.stringify(s.planting));
 check('stats: the clock ran the garden years, internodes grown', s.years === 3 && s.trees.internodes > 0, `${s.years} ${s.trees.internodes}`);
+const m = s.moss ?? {};
+check('stats: the moss grew years × moss_days (3 × 10) days over the ground and the objects, under the leaves',
+  m.days === 30 && m.cells > 1000 && m.canopy?.spheres > 0 && m.ground_open?.area_m2 > 100
+  && Object.values(m.by_region ?? {}).reduce((p, q) => p + q, 0) === m.mosses, JSON.stringify(m).slice(0, 400));
 const h = readFileSync(join(a.dir, 'h.png'));
 check('heightmap: 16-bit grey PNG of ground_res + 1 samples a side', h.readUInt32BE(16) === 33 && h.readUInt32BE(20) === 33 && h[24] === 16 && h[25] === 0,
   `${h.readUInt32BE(16)} x ${h.readUInt32BE(20)}, depth ${h[24]}, colour ${h[25]}`);
@@ -91,6 +95,7 @@ if (masked.status === 0) {
 writeFileSync(join(work, 'in-wall.json'), JSON.stringify({ plants: [{ species: 'keyaki', pos: [0, -12] }] }));
 writeFileSync(join(work, 'oak.json'), JSON.stringify({ plants: [{ species: 'oak', pos: [0, 0] }] }));
 writeFileSync(join(work, 'badmap.json'), JSON.stringify({ ground: { kind: 'heightmap', file: 'slope.json' } }));
+writeFileSync(join(work, 'badmoss.json'), JSON.stringify({ moss: { params: { photons: -5 } } }));
 const bad = [
   [['--set', 'size=2'], /--set: size/],
   [['--years', '99'], /--years/],
@@ -98,6 +103,8 @@ const bad = [
   [['--garden', join(work, 'oak.json')], /plants\[0\]\.species/],
   [['--garden', join(work, 'badmap.json'), '--set', 'ground_res=16'], /ground\.file/],
   [['--url', 'plants=oak:1:0:0:0:0'], /--url: plants/],
+  [['--garden', join(work, 'badmoss.json')], /moss.*photons/],
+  [['--url', 'moss.photons=abc'], /--url: moss\.photons/],
 ];
 for (const [args, pattern] of bad) {
   for (const cmd of [native, wasm]) {
