@@ -1,6 +1,7 @@
 // Moss over the garden (garden_moss.h).
 #include "compose/garden_moss.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -55,6 +56,28 @@ std::vector<moss::CanopySphere> GardenCanopy(const std::vector<TreeAt>& trees, d
     }
   }
   return spheres;
+}
+
+std::vector<float> GardenMossGroundLight(const moss::MossRun& run, const GardenGround& ground) {
+  const moss::SoilCells& cells = run.cells();
+  const std::vector<double>& S = run.world().S;
+  const int side = ground.n + 1;
+  std::vector<double> sum(static_cast<std::size_t>(side) * side, 0.0), area(sum.size(), 0.0);
+  for (std::size_t i = 0; i < cells.size() && i < S.size(); ++i) {
+    if (cells.region[i] != 0) continue;
+    const glm::dvec3& c = cells.centroid[i];
+    const int gi = std::clamp(
+        static_cast<int>(std::floor((c.x + ground.size / 2) / ground.cell + 0.5)), 0, ground.n);
+    const int gj = std::clamp(
+        static_cast<int>(std::floor((c.z + ground.size / 2) / ground.cell + 0.5)), 0, ground.n);
+    const std::size_t k = static_cast<std::size_t>(gj) * side + gi;
+    sum[k] += S[i] * cells.area[i];
+    area[k] += cells.area[i];
+  }
+  std::vector<float> out(sum.size(), -1.0f);
+  for (std::size_t k = 0; k < out.size(); ++k)
+    if (area[k] > 0) out[k] = static_cast<float>(sum[k] / area[k]);
+  return out;
 }
 
 nlohmann::ordered_json GardenMossStats(const moss::MossRun& run, const moss::CanopyShade* canopy) {

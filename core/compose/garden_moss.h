@@ -36,6 +36,12 @@ std::vector<moss::CanopySphere> GardenCanopy(const std::vector<TreeAt>& trees, d
 // (ground, wall, rock, lantern) and per species; the objects' faces by facing (up, down, north,
 // east, south, west: area, mosses on them, per m²); the canopy's photons. `canopy` is the shade
 // the last days were grown under (none: every ground cell is open).
+// The moss's light S of the last day (W/m², light_smoothing_days' mean) on the ground, per vertex
+// of its grid in GardenGround's order (vertex (i, j) at x = −L/2 + i·cell, z = −L/2 + j·cell):
+// the area-weighted mean over the ground's cells whose centroid lies nearest that vertex; −1 where
+// none does. For a page's overlay.
+std::vector<float> GardenMossGroundLight(const moss::MossRun& run, const GardenGround& ground);
+
 nlohmann::ordered_json GardenMossStats(const moss::MossRun& run, const moss::CanopyShade* canopy);
 
 }  // namespace niwa::compose

@@ -13,7 +13,9 @@
 // buffers(group) (buffers.h), copied once by the worker. Groups:
 //   "ground"  positions, normals (Float32 xyz, metres, y up), indices (Uint32): GardenGround::Mesh;
 //             heights (Float32, (n + 1)² in GardenGround's order: vertex (i, j) at x = −L/2 +
-//             i·cell, z = −L/2 + j·cell), for the page's ray against the ground (its clicks)
+//             i·cell, z = −L/2 + j·cell), for the page's ray against the ground (its clicks);
+//             moss_S (Float32 per ground vertex, the same order: the moss's light of its last day,
+//             compose/garden_moss GardenMossGroundLight; −1 where no cell; empty without moss)
 //   "objects" positions, normals, indices (every object's mesh, placed, in one list), kind (Float32
 //             per vertex: 0 wall, 1 rock, 2 lantern)
 //   "trees"   positions, normals, indices (each group's mesh at the origin, one after another;
@@ -42,6 +44,7 @@
 #include <vector>
 
 #include "buffers.h"
+#include "compose/garden_moss.h"
 #include "compose/garden_params.h"
 #include "compose/garden_run.h"
 #include "compose/garden_state.h"
@@ -198,7 +201,8 @@ class GardenLab {
       out.Add("positions", ground_positions_)
           .Add("normals", ground_normals_)
           .Add("indices", ground_indices_)
-          .Add("heights", ground_heights_);
+          .Add("heights", ground_heights_)
+          .Add("moss_S", ground_moss_S_);
     } else if (group == "objects") {
       out.Add("positions", object_positions_)
           .Add("normals", object_normals_)
@@ -227,6 +231,8 @@ class GardenLab {
     ground_indices_.clear();
     AppendMesh(g.Mesh(), &ground_positions_, &ground_normals_, &ground_indices_);
     ground_heights_.assign(g.h.begin(), g.h.end());
+    ground_moss_S_.clear();
+    if (run_->moss() != nullptr) ground_moss_S_ = compose::GardenMossGroundLight(*run_->moss(), g);
   }
 
   void FillObjects() {
@@ -281,7 +287,7 @@ class GardenLab {
   }
 
   std::optional<compose::GardenRun> run_;
-  std::vector<float> ground_positions_, ground_normals_, ground_heights_;
+  std::vector<float> ground_positions_, ground_normals_, ground_heights_, ground_moss_S_;
   std::vector<uint32_t> ground_indices_;
   std::vector<float> object_positions_, object_normals_, object_kind_;
   std::vector<uint32_t> object_indices_;
