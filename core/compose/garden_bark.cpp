@@ -146,7 +146,7 @@ Status GrowGardenBarks(const std::vector<const Tree*>& trees, const std::vector<
             "bark: " + TruncatedLine(limit, "before distinct tree " + std::to_string(g),
                                      "the trees, the ivy and the barks before it "
                                      "used the garden's budget",
-                                     "lower bark_map_size, or set bark 0" + RaiseHint(limit));
+                                     "set bark 0, or lower bark_map_size" + RaiseHint(limit));
       continue;
     }
     Result<BarkFrame> frame = GrowOldBark(*plan, mine);

@@ -176,8 +176,9 @@ Result<GardenRun> GardenRun::Start(const GardenState& state, const Budget& budge
   Result<GardenBarks> barks = StartGardenBarks(state, species);
   if (!barks.ok()) return barks.status();
   run.barks_ = std::move(*barks);
-  const Status bark_fits = CheckEstimate(GardenBarkLeastEstimate(run.barks_), budget,
-                                         "lower bark_map_size, or set bark 0");
+  const Status bark_fits =
+      CheckEstimate(GardenBarkLeastEstimate(run.barks_), budget,
+                    "set bark 0, or plant fewer distinct trees (density, variants)");
   if (!bark_fits.ok()) return Status::Error("bark", bark_fits.message());
   return run;
 }
