@@ -110,6 +110,9 @@ Status GrowGardenBarks(const std::vector<const Tree*>& trees, const std::vector<
   if (!barks->on) return Status::Ok();
   const auto t0 = std::chrono::steady_clock::now();
   double seconds_used = 0;
+  // Barks whose states are the same (species, seed, lattice, cycles, dR: trees of one species,
+  // seed and thin trunk often clamp to the same) are one run: the same state gives the same bytes.
+  std::map<std::string, std::shared_ptr<const BarkFrame>> runs;
   const double n = static_cast<double>(barks->trees.size());
   for (std::size_t g = 0; g < barks->trees.size() && g < trees.size(); ++g) {
     if (observer && !observer({"bark", static_cast<double>(g), n})) return run::CancelledStatus();
@@ -132,6 +135,13 @@ Status GrowGardenBarks(const std::vector<const Tree*>& trees, const std::vector<
     Result<BarkOnTreePlan> plan = PlanBarkOnTree(*history, options);
     if (!plan.ok()) {
       b.procedural_why = plan.status().Line();
+      continue;
+    }
+    const std::string key = bark::EncodeBarkHash(plan->state);
+    if (const auto it = runs.find(key); it != runs.end()) {
+      b.height_m = history->height_m;
+      b.plan = std::move(plan).value();
+      b.frame = it->second;
       continue;
     }
     Budget mine = left;
@@ -158,6 +168,8 @@ Status GrowGardenBarks(const std::vector<const Tree*>& trees, const std::vector<
     b.height_m = history->height_m;
     b.plan = std::move(plan).value();
     b.frame = std::make_shared<const BarkFrame>(std::move(frame).value());
+    runs[key] = b.frame;
+    ++barks->runs;
   }
   barks->grown = true;
   barks->ms =
@@ -207,6 +219,7 @@ std::string GardenBarksJson(const GardenBarks& barks) {
   nlohmann::ordered_json j;
   j["simulated"] = barks.simulated();
   j["procedural"] = static_cast<int>(barks.trees.size()) - barks.simulated();
+  j["runs"] = barks.runs;
   j["map_size"] = barks.map_size;
   nlohmann::ordered_json by_species = nlohmann::ordered_json::object();
   nlohmann::ordered_json trees = nlohmann::ordered_json::array();

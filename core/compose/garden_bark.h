@@ -3,10 +3,10 @@
 // too), the bark study run on that history (compose/bark_on_tree's plan and run) with the bark
 // species its tree species maps to, and the maps put on that tree's tube bark in the garden's
 // .glb (base colour, normal, occlusion/roughness), on every level of detail. Copies that share one
-// growth share one bark. Does not: grow trees (GardenRun does, calling RecordGardenTrunk after each
-// year), draw the bark on the page, dress the twig cones or branch cards (they keep their
-// colour and atlas), or run the young shoots' second bark (one frame on every tube, as the tree
-// page's one bark part does).
+// growth share one bark, and trees whose bark states come out the same share one run. Does not:
+// grow trees (GardenRun does, calling RecordGardenTrunk after each year), draw the bark on the
+// page, dress the twig cones or branch cards (they keep their colour and atlas), or run the young
+// shoots' second bark (one frame on every tube, as the tree page's one bark part does).
 #pragma once
 
 #include <memory>
@@ -49,6 +49,7 @@ struct GardenBarks {
   int map_size = 256;             // the state's bark_map_size
   std::vector<GardenBark> trees;  // one per group, in the groups' order
   bool grown = false;             // GrowGardenBarks ran
+  int runs = 0;                   // bark runs made (trees with the same bark state share one)
   double ms = 0;                  // wall time of the bark runs
   int simulated() const;
 };
@@ -87,8 +88,9 @@ void DressGardenBark(const BarkFrame& frame, gltf::Document* tree_doc);
 // The bark's part of the .glb's estimate: three maps a simulated tree.
 Estimate GardenBarkExportEstimate(const GardenBarks& barks);
 
-// {"simulated", "procedural", "map_size", "species": {bark preset: trees}} for the stats (null
-// json text "" when bark is 0).
+// {"simulated", "procedural", "runs", "map_size", "species": {bark preset: trees}, "trees": [one
+// per distinct tree: its species, height, window's years and radii, N_R, dR, tile, hash, or why it
+// kept the procedural bark]} for the stats ("" when bark is 0).
 std::string GardenBarksJson(const GardenBarks& barks);
 
 }  // namespace niwa::compose
