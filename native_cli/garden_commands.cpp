@@ -132,7 +132,8 @@ int RunGardenGrow(const GardenOptions& o, std::ostream& out) {
     j["ms_plant"] = run->ms_plant();
     j["ms_moss"] = run->ms_moss();  // its start (the land's cells) and its days
     j["ms_ivy"] = run->ms_ivy();
-    j["ms_trees"] = Ms(t1, t2) - run->ms_ivy() - (run->ms_moss() - moss_start_ms);
+    j["ms_bark"] = run->ms_bark();  // the simulated barks (bark 1), after the clock
+    j["ms_trees"] = Ms(t1, t2) - run->ms_ivy() - (run->ms_moss() - moss_start_ms) - run->ms_bark();
     j["ms_export"] = Ms(t2, t3);
   } else {
     j["trees"] = run->planting().trees.size();
@@ -212,7 +213,8 @@ void AddGardenCommands(CLI::App& app, CommandList& commands) {
   AddGardenStateFlags(grow, o.get());
   AddOutputFlag(grow, "--out", &o->out, {".glb"},
                 "Write the garden as .glb: ground, objects, each distinct tree once within "
-                "max_triangles, its copies instanced (EXT_mesh_gpu_instancing) or as plain nodes");
+                "max_triangles (with bark 1, wearing its own simulated bark's maps), its copies "
+                "instanced (EXT_mesh_gpu_instancing) or as plain nodes");
   AddOutputFlag(grow, "--heightmap", &o->heightmap, {".png"},
                 "Write the ground as a 16-bit grey PNG (row 0 north; size and relief in its text)");
   AddOutputFlag(grow, "--svg", &o->svg, {".svg"},

@@ -292,6 +292,24 @@ Result<BarkOnTree> GrowBarkOnTree(const BarkOnTreePlan& plan, const Budget& budg
   return out;
 }
 
+Estimate OldBarkEstimate(const BarkOnTreePlan& plan) {
+  Estimate e = bark::EstimateBarkRun(plan.state);
+  e.what = "the bark (" +
+           FormatCount(plan.state.params.GetInt(BarkParam::kNR) *
+                       static_cast<double>(plan.state.params.GetInt(BarkParam::kNH))) +
+           " nodes, " + std::to_string(plan.state.params.GetInt(BarkParam::kCycles)) +
+           " cycles, maps " + std::to_string(plan.state.params.GetInt(BarkParam::kMapSize)) +
+           " px wide)";
+  return e;
+}
+
+Result<BarkFrame> GrowOldBark(const BarkOnTreePlan& plan, const Budget& budget,
+                              const run::Observer& observer) {
+  const Status fits = CheckEstimate(OldBarkEstimate(plan), budget, "lower the bark's map size");
+  if (!fits.ok()) return Status::Error("bark", fits.message());
+  return RunFrame(plan.state, budget, observer);
+}
+
 int WrapsAround(double radius_m, double tile_width_m) {
   if (!(tile_width_m > 0)) return 1;
   return std::max(1, static_cast<int>(std::lround(2 * kPi * radius_m / tile_width_m)));

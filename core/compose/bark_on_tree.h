@@ -101,6 +101,13 @@ struct BarkOnTree {
 Result<BarkOnTree> GrowBarkOnTree(const BarkOnTreePlan& plan, const Budget& budget,
                                   const run::Observer& observer = nullptr);
 
+// The plan's old bark run alone (no young shoots' run: the garden wears one frame on every tube),
+// checked against `budget` with its own estimate (OldBarkEstimate): a refusal names "bark".
+Result<BarkFrame> GrowOldBark(const BarkOnTreePlan& plan, const Budget& budget,
+                              const run::Observer& observer = nullptr);
+// The old bark run's estimate (its run and maps; plan.estimate counts both runs).
+Estimate OldBarkEstimate(const BarkOnTreePlan& plan);
+
 // Whole wraps of a tile `tile_width_m` around a branch of radius `radius_m`:
 // max(1, round(2π·r / C_tile)).
 int WrapsAround(double radius_m, double tile_width_m);

@@ -75,6 +75,16 @@ std::vector<ParamSpec> GardenRows() {
       {GardenId(GP::kInstancing), "instancing", "", "", 1, 0, 1, true, "export", kGardenMesh,
        "1: a distinct tree's copies as one node with EXT_mesh_gpu_instancing; 0: one plain node "
        "a copy, sharing the mesh (for loaders without the extension)."},
+      // ------------------------------------------------ bark
+      {GardenId(GP::kBark), "bark", "", "", 0, 0, 1, true, "bark", kGardenGrow,
+       "0: every tree wears the tree study's procedural bark texture; 1: each distinct tree's "
+       "bark is the bark study (paper 003, 2-layer) run on its own trunk's radius history, the "
+       "bark species from its tree species (pine: pine; cherries, keyaki, azalea: tallow; the "
+       "rest: camphor)."},
+      {GardenId(GP::kBarkMapSize), "bark_map_size", "", "px", 256, 256, 4096, true, "bark",
+       kGardenGrow,
+       "Width of each simulated bark's maps around the trunk (a power of two): small, since the "
+       "garden is seen from afar."},
   };
 }
 
@@ -86,7 +96,8 @@ const ParamTable& GardenTable() {
                                  {"clock", "Clock"},
                                  {"planting", "Planting rules"},
                                  {"interactions", "Interactions"},
-                                 {"export", "Export"}});
+                                 {"export", "Export"},
+                                 {"bark", "Bark"}});
   return table;
 }
 

@@ -191,6 +191,16 @@ Result<GardenRun> GardenRun::Start(const GardenState& state, const Budget& budge
     if (!tree_run.ok()) return tree_run.status();
     g.run = std::make_unique<TreeRun>(std::move(*tree_run));
   }
+  // Each distinct tree's bark (compose/garden_bark); its least cost refused up front.
+  std::vector<std::string> species;
+  for (const GardenTreeGroup& g : run.groups_) species.push_back(g.species);
+  Result<GardenBarks> barks = StartGardenBarks(state, species);
+  if (!barks.ok()) return barks.status();
+  run.barks_ = std::move(*barks);
+  const Status bark_fits =
+      CheckEstimate(GardenBarkLeastEstimate(run.barks_), budget,
+                    "set bark 0, or plant fewer distinct trees (density, variants)");
+  if (!bark_fits.ok()) return Status::Error("bark", bark_fits.message());
   return run;
 }
 
@@ -199,8 +209,13 @@ Status GardenRun::Advance(const run::Observer& observer) {
   const int years = target();
   if (!nursery_done_) {
     // The nursery: a tree planted at age a grows its first a years alone, before the clock.
-    for (GardenTreeGroup& g : groups_)
-      while (g.run->done() < g.age && !g.run->stopped()) g.run->GrowYear();
+    for (std::size_t k = 0; k < groups_.size(); ++k) {
+      GardenTreeGroup& g = groups_[k];
+      while (g.run->done() < g.age && !g.run->stopped()) {
+        g.run->GrowYear();
+        RecordGardenTrunk(g.tree(), k, &barks_);  // the bark's history (bark 1)
+      }
+    }
     nursery_done_ = true;
   }
   // The trees grown with their neighbours' shade (each one tree), where they stand.
@@ -219,6 +234,8 @@ Status GardenRun::Advance(const run::Observer& observer) {
     if (!together.empty()) (void)GrowTogetherYear(together, shade);
     for (GardenTreeGroup& g : groups_)
       if (!g.shaded && g.run->done() < g.age + year_ + 1 && !g.run->stopped()) g.run->GrowYear();
+    for (std::size_t k = 0; k < groups_.size(); ++k)
+      RecordGardenTrunk(groups_[k].tree(), k, &barks_);
     ++year_;
     if (moss_) GrowMossYear();
   }
@@ -234,7 +251,34 @@ Status GardenRun::Advance(const run::Observer& observer) {
     if (truncated_by_.empty() && g.tree().truncated)
       truncated_by_ = g.name + ": " + g.tree().truncated_by;
   ms_trees_ += MsSince(t0);
-  return Status::Ok();
+  return GrowBarks(observer);
+}
+
+Status GardenRun::GrowBarks(const run::Observer& observer) {
+  if (!barks_.on || barks_.grown) return Status::Ok();
+  // What the trees' growth (their estimates; the process's base counted once) and the ivy's
+  // support left of the garden's budget.
+  Budget left = budget_;
+  double seconds = 0, bytes = 0;
+  for (const GardenTreeGroup& g : groups_) {
+    const Estimate used = g.run->grown();
+    seconds += used.seconds;
+    bytes += std::max(0.0, used.memory_bytes - tree_base_bytes_);
+  }
+  if (ivy_) {
+    seconds += ivy_->support().estimate().seconds;
+    bytes += ivy_->support().estimate().memory_bytes;
+  }
+  left.seconds = budget_.seconds - seconds;
+  left.memory_bytes =
+      static_cast<uint64_t>(std::max(0.0, static_cast<double>(budget_.memory_bytes) - bytes));
+  std::vector<const Tree*> trees;
+  std::vector<uint64_t> seeds;
+  for (const GardenTreeGroup& g : groups_) {
+    trees.push_back(&g.tree());
+    seeds.push_back(g.seed);
+  }
+  return GrowGardenBarks(trees, seeds, left, observer, &barks_, &truncated_by_);
 }
 
 namespace {
@@ -521,8 +565,14 @@ Result<gltf::Document> GardenRun::Document() const {
       if (!made.ok()) return made.status();
       levels.push_back(std::move(*made));
     }
+    // The simulated bark of this distinct tree (bark 1), on every level's tubes.
+    const std::size_t k = static_cast<std::size_t>(&g - groups_.data());
+    const BarkFrame* bark =
+        k < barks_.trees.size() && barks_.trees[k].frame ? barks_.trees[k].frame.get() : nullptr;
+    if (bark != nullptr) WrapGardenBarkUvs(g.tree(), *bark, &levels);
     Result<gltf::Document> tree_doc = LodGltfDocument(levels, g.name);
     if (!tree_doc.ok()) return tree_doc.status();
+    if (bark != nullptr) DressGardenBark(*bark, &*tree_doc);
     const int mesh_base = AppendGardenDocument(&doc, *tree_doc);
     // The tree document's nodes, one a level, each name its level's mesh.
     for (const gltf::Node& level : tree_doc->nodes) {
@@ -593,6 +643,7 @@ std::string GardenRun::StatsJson() const {
                 {"support_triangles", ivy_->support().triangles()}};
   }
   if (moss_) j["moss"] = GardenMossStats(*moss_, moss_->canopy());
+  if (barks_.on) j["bark"] = nlohmann::ordered_json::parse(GardenBarksJson(barks_));
   if (!truncated_by_.empty()) j["truncated_by"] = truncated_by_;
   return j.dump();
 }
@@ -613,10 +664,11 @@ Result<Estimate> GardenRun::ExportEstimate(const std::string& format) const {
     const double tri = static_cast<double>(state_.params.GetInt(GardenParam::kMaxTriangles)) *
                        (state_.params.GetBool(GardenParam::kLod) ? 1.3 : 1.0);
     return Estimate{
-        groups * tri * kGardenGlbBytesPerTriangle + ground_vertices * 120 +
-            groups * 4.0 * kGardenAtlasSize * kGardenAtlasSize + moss.memory_bytes,
-        groups * tri * kGardenGlbSecondsPerTriangle + ground_vertices * 1e-6 + moss.seconds,
-        "writing the garden's .glb (" + FormatCount(groups) + " distinct trees)"};
+               groups * tri * kGardenGlbBytesPerTriangle + ground_vertices * 120 +
+                   groups * 4.0 * kGardenAtlasSize * kGardenAtlasSize + moss.memory_bytes,
+               groups * tri * kGardenGlbSecondsPerTriangle + ground_vertices * 1e-6 + moss.seconds,
+               "writing the garden's .glb (" + FormatCount(groups) + " distinct trees)"} +
+           GardenBarkExportEstimate(barks_);
   }
   if (format == "heightmap" || format == "svg" || format == "json")
     return Estimate{ground_vertices * 16 + static_cast<double>(planting_.trees.size()) * 200.0,

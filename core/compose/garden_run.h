@@ -9,9 +9,10 @@
 // heightmap of the ground, the plan as SVG, the stats. Ivy (paper 004) grows from the state's seeds
 // at the feet of objects and hand-placed trees, climbing the objects, the trunks near them and the
 // ground. Moss (paper 001) grows over the ground and the objects, moss_days days after each
-// garden year, its photons crossing that year's leaves (compose/garden_moss). Does not (yet): grow
-// simulated bark in the garden (compose/bark_on_tree runs it on one tree), replay years without
-// regrowing, read files, or name a flag.
+// garden year, its photons crossing that year's leaves (compose/garden_moss). With bark 1, each
+// distinct tree's bark is the bark study run on its own trunk's radius history
+// (compose/garden_bark). Does not (yet): replay years without regrowing, read files, or name a
+// flag.
 #pragma once
 
 #include <memory>
@@ -20,6 +21,7 @@
 
 #include "base/budget.h"
 #include "base/status.h"
+#include "compose/garden_bark.h"
 #include "compose/garden_plant.h"
 #include "compose/garden_scene.h"
 #include "compose/garden_state.h"
@@ -100,6 +102,9 @@ class GardenRun : public run::StudyRun {
   double ms_ground() const { return ms_ground_; }
   double ms_plant() const { return ms_plant_; }
   double ms_trees() const { return ms_trees_; }
+  // Each distinct tree's bark (one per group; empty when bark is 0) and the bark runs' wall time.
+  const GardenBarks& barks() const { return barks_; }
+  double ms_bark() const { return barks_.ms; }
 
  private:
   GardenState state_;
@@ -122,6 +127,10 @@ class GardenRun : public run::StudyRun {
   // Grows the state's ivy on the garden as it stands after the clock (see docs/garden-model.md),
   // within what the trees left of the budget.
   Status GrowIvy();
+  // The simulated bark (compose/garden_bark): the trunks recorded each year, the bark run on each
+  // history after the clock, within what the trees' growth and the ivy's support left.
+  GardenBarks barks_;
+  Status GrowBarks(const run::Observer& observer);
 };
 
 }  // namespace niwa::compose

@@ -23,12 +23,11 @@
 namespace niwa::compose {
 namespace {
 
-using nlohmann::json;
 using nlohmann::ordered_json;
 
 // Notices and errors may echo hostile text: bytes that are not UTF-8 are replaced.
 std::string Dump(const ordered_json& j) {
-  return j.dump(-1, ' ', false, json::error_handler_t::replace);
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string DecodedJson(const std::string& state_json, const std::vector<std::string>& notices) {

@@ -2,12 +2,14 @@
 // aside), its .glb, 16-bit heightmap and plan .svg, and of `niwa garden plant`; the stats' counts
 // (trees by species, distinct trees, refusals by rule adding up to the darts); the link a grow
 // prints regrows the same garden; a heightmap ground and a mask read from files named beside the
-// garden file; bad input (a row out of range, a hand-placed tree in a wall, an unknown species, a
+// garden file; bark=1 (simulated bark per trunk) native == WASM and gltf-validator clean; bad input (a row out of range, a hand-placed tree in a wall, an unknown species, a
 // bad heightmap) one line naming the field, exit 2, nothing written.
 import { mkdtempSync, readFileSync, writeFileSync, existsSync } from 'node:fs';
+import { createRequire } from 'node:module';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { buildName, check, finish, native, requireWasm, spawn, wasm, withoutMs } from '../support/cli_pair.mjs';
+import { pathToFileURL } from 'node:url';
+import { buildName, check, finish, native, requireWasm, root, spawn, wasm, withoutMs } from '../support/cli_pair.mjs';
 import { gray16PngBytes, pngBytes } from '../support/png_bytes.mjs';
 
 requireWasm();
@@ -91,7 +93,45 @@ if (masked.status === 0) {
     && m.report.refused.mask > 0, JSON.stringify(m.report));
 }
 
-// 5. Bad input: one line naming the field, exit 2, nothing written.
+// 5. bark=1: each distinct tree's simulated bark (the hand keyaki of the default layout, planted at
+// 5 years) in the .glb: native == WASM bytes and stats, gltf-validator clean (0 errors, 0
+// warnings), the tree's "bark" material with base colour, normal and occlusion maps that are not
+// bark 0's; bark 0's file has none.
+{
+  const require = createRequire(join(root, 'package.json'));
+  const validatorModule = await import(pathToFileURL(require.resolve('gltf-validator')).href);
+  const validator = validatorModule.default ?? validatorModule;
+  const barkArgs = [...small, '--set', 'density=0', '--set', 'bark=1', '--stats'];
+  const grown = {};
+  for (const cmd of [native, wasm]) {
+    const out = join(work, `bark-${buildName(cmd)}.glb`);
+    const r = spawn(cmd, ['garden', 'grow', ...barkArgs, '--out', out]);
+    check(`bark=1 ${buildName(cmd)}: exit 0`, r.status === 0, r.stderr);
+    grown[buildName(cmd)] = { stats: r.status === 0 ? JSON.parse(r.stdout) : {}, glb: existsSync(out) ? readFileSync(out) : Buffer.alloc(0) };
+  }
+  const n = grown.native, w = grown.wasm;
+  check(`bark=1: native == WASM .glb bytes (${n.glb.length}) and stats`, n.glb.length > 0 && n.glb.equals(w.glb)
+    && JSON.stringify(withoutMs(n.stats)) === JSON.stringify(withoutMs(w.stats)));
+  check('bark=1 --stats: ms_bark beside the other ms fields, one simulated bark of the tallow species (keyaki)',
+    typeof n.stats.ms_bark === 'number' && n.stats.bark?.simulated === 1 && n.stats.bark?.species?.tallow === 1
+    && n.stats.bark.trees[0].radii_cm.length >= 2, JSON.stringify(n.stats.bark));
+  const report = await validator.validateBytes(new Uint8Array(n.glb), { maxIssues: 50 });
+  check(`bark=1 .glb: gltf-validator ${report.issues.numErrors} errors, ${report.issues.numWarnings} warnings`,
+    report.issues.numErrors === 0 && report.issues.numWarnings === 0,
+    JSON.stringify(report.issues.messages.filter((m) => m.severity <= 1).slice(0, 3)));
+  const gltfOf = (glb) => JSON.parse(glb.subarray(20, 20 + glb.readUInt32LE(12)).toString('utf8'));
+  const dressed = gltfOf(n.glb).materials.filter((m) => m.name === 'bark'
+    && m.pbrMetallicRoughness?.baseColorTexture && m.normalTexture && m.occlusionTexture);
+  check('bark=1 .glb: one bark material with base colour, normal and occlusion maps', dressed.length === 1,
+    JSON.stringify(gltfOf(n.glb).materials.map((m) => m.name)));
+  const plainOut = join(work, 'bark0.glb');
+  const plain = spawn(native, ['garden', 'grow', ...small, '--set', 'density=0', '--out', plainOut]);
+  const plainDoc = plain.status === 0 ? gltfOf(readFileSync(plainOut)) : { materials: [] };
+  check('bark=0 (the default) .glb: a bark material, no occlusion map on any material', plain.status === 0
+    && plainDoc.materials.some((m) => m.name === 'bark') && plainDoc.materials.every((m) => !m.occlusionTexture), plain.stderr);
+}
+
+// 6. Bad input: one line naming the field, exit 2, nothing written.
 writeFileSync(join(work, 'in-wall.json'), JSON.stringify({ plants: [{ species: 'keyaki', pos: [0, -12] }] }));
 writeFileSync(join(work, 'oak.json'), JSON.stringify({ plants: [{ species: 'oak', pos: [0, 0] }] }));
 writeFileSync(join(work, 'badmap.json'), JSON.stringify({ ground: { kind: 'heightmap', file: 'slope.json' } }));
@@ -105,6 +145,8 @@ const bad = [
   [['--url', 'plants=oak:1:0:0:0:0'], /--url: plants/],
   [['--garden', join(work, 'badmoss.json')], /moss.*photons/],
   [['--url', 'moss.photons=abc'], /--url: moss\.photons/],
+  [['--set', 'bark=1', '--set', 'bark_map_size=300'], /bark_map_size/],
+  [['--set', 'bark=1', '--max-seconds', '2'], /error: bark: the simulated bark of \d+ distinct trees .* set bark 0/],
 ];
 for (const [args, pattern] of bad) {
   for (const cmd of [native, wasm]) {
