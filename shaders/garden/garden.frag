@@ -1,6 +1,9 @@
 #version 300 es
 // The garden page's colours: uMode 0 the ground, moss green in the hollows to dry grass and earth
-// on the heights (by height over uRelief); 1 the objects (plaster walls, grey rocks and stone
+// on the heights (by height over uRelief), or its overlay uOverlay: 1 the moss's light of its last
+// day (vTint, W/m²: dark blue 0, teal 50 (the thesis's mosses grow below it), yellow 300 and over;
+// grey where the moss has no cell), 2 the slope (green 0°, yellow 20°, red 45° and over), 3
+// altitude bands uBand metres high with a dark line at each band's foot; 1 the objects (plaster walls, grey rocks and stone
 // lanterns, the .glb's materials) and the ivy on them (brown stems, dark green leaves); 2 the
 // trees (bark brown, leaves green, flowers pale pink).
 // Lambert from the frame's sun, shadowed by its shadow map, over a sky/ground ambient; both faces
@@ -17,6 +20,8 @@ in vec4 vShadow;
 uniform vec3 uLightDirection;  // unit, towards the sun
 uniform int uMode;
 uniform float uRelief;
+uniform int uOverlay;  // the ground's: 0 none, 1 moss light, 2 slope, 3 altitude bands
+uniform float uBand;   // m, an altitude band's height
 
 out vec4 outColor;
 
@@ -24,7 +29,20 @@ void main() {
   vec3 n = normalize(vNormal);
   if (!gl_FrontFacing) n = -n;
   vec3 base;
-  if (uMode == 0) {
+  if (uMode == 0 && uOverlay == 1) {
+    float s = vTint;
+    vec3 dark = vec3(0.12, 0.10, 0.38), teal = vec3(0.10, 0.58, 0.52), yellow = vec3(0.96, 0.88, 0.22);
+    base = s < 0.0 ? vec3(0.5) : s < 50.0 ? mix(dark, teal, s / 50.0) : mix(teal, yellow, clamp((s - 50.0) / 250.0, 0.0, 1.0));
+  } else if (uMode == 0 && uOverlay == 2) {
+    float deg = degrees(acos(clamp(abs(n.y), 0.0, 1.0)));
+    vec3 green = vec3(0.20, 0.55, 0.20), yellow = vec3(0.90, 0.80, 0.20), red = vec3(0.80, 0.15, 0.10);
+    base = deg < 20.0 ? mix(green, yellow, deg / 20.0) : mix(yellow, red, clamp((deg - 20.0) / 25.0, 0.0, 1.0));
+  } else if (uMode == 0 && uOverlay == 3) {
+    float b = vHeight / max(uBand, 1e-3);
+    float k = mod(floor(b), 2.0);
+    base = k < 0.5 ? vec3(0.78, 0.70, 0.52) : vec3(0.55, 0.66, 0.45);
+    if (fract(b) < 0.06 && vHeight > 0.02) base *= 0.45;  // not on the flat at the lowest point
+  } else if (uMode == 0) {
     float t = clamp(vHeight / max(uRelief, 1e-3), 0.0, 1.0);
     vec3 low = vec3(0.30, 0.42, 0.20), mid = vec3(0.45, 0.50, 0.28), high = vec3(0.58, 0.52, 0.38);
     base = t < 0.5 ? mix(low, mid, t * 2.0) : mix(mid, high, t * 2.0 - 1.0);

@@ -5,7 +5,8 @@
 // page's own hash; a panel edit (plant_seed) regrows with the row in the hash; a real click on the
 // ground places a tree of the picked species there (the stats' by-hand count + 1, the plant within
 // 0.3 m of the clicked point) and its Remove button takes it away; Copy link reopens the same
-// garden (same hash and stats); Embed offers <niwa-garden> and the iframe of the page's hash; the
+// garden (same hash and stats); the ground's overlays (moss light, slope, altitude bands) each
+// change the ground with a legend; Embed offers <niwa-garden> and the iframe of the page's hash; the
 // Garden .glb download is the bytes of native `niwa garden grow --url HASH --out g.glb`; a bad Years
 // value is a line beside its field naming the range, and the page recovers; Cancel stops a long
 // regrow and the page grows its last garden again. Screenshots: build/artifacts/garden-*.png.
@@ -69,6 +70,39 @@ await runBrowserTest(async (server, browser) => {
   }
   check('page stats == native `niwa garden grow --url HASH --stats` (ms* aside)', native && JSON.stringify(withoutMs(native)) === JSON.stringify(withoutMs(stats)),
     `web ${JSON.stringify(withoutMs(stats)).slice(0, 200)} native ${JSON.stringify(native ? withoutMs(native) : null).slice(0, 200)}`);
+
+  // 1b. The ground's overlays: the moss's light (the default garden grows moss: moss_days 10), the
+  // slope and altitude bands, each a visibly other ground with its legend beside the select.
+  const groundShares = () => page.evaluate(() => {
+    const d = window.__niwaCanvasImage('#view').data;
+    let yellow = 0, red = 0, sand = 0, pale = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      const r = d[i], g = d[i + 1], b = d[i + 2];
+      if (r > 150 && g > 130 && b < 0.55 * g) ++yellow;
+      if (r > 1.8 * g && r > 110) ++red;
+      if (r > 170 && r > g + 12 && g > b + 25 && b > 90) ++sand;     // the altitude bands' sand
+      if (g > 150 && g > r + 12 && g > b + 30 && r > 110) ++pale;    // and their pale green
+    }
+    const n = d.length / 4;
+    return { yellow: yellow / n, red: red / n, sand: sand / n, pale: pale / n };
+  });
+  const plain = await groundShares();
+  const overlays = {};
+  for (const name of ['moss', 'slope', 'altitude']) {
+    await page.selectOption('#overlay', name);
+    await page.waitForFunction((n) => document.documentElement.dataset.drawnOverlay === n, name, { timeout: TIMEOUT });
+    overlays[name] = { shares: await groundShares(), legend: await page.textContent('#overlay-help') };
+    await saveCanvasPng(page, `garden-overlay-${name}.png`);
+  }
+  const fmt = (o) => Object.entries(o).map(([k, v]) => `${k} ${v.toFixed(3)}`).join(' ');
+  check('overlay moss light: the open ground in yellow (its light over 200 W/m²), a legend in W/m²', overlays.moss.shares.yellow > plain.yellow + 0.1 && /W\/m²/.test(overlays.moss.legend),
+    `plain ${fmt(plain)}; moss ${fmt(overlays.moss.shares)}; ${overlays.moss.legend.slice(0, 60)}`);
+  check('overlay slope: a ramp over the hill (yellow and red where steep), a legend', overlays.slope.shares.yellow + overlays.slope.shares.red > plain.yellow + plain.red + 0.02 && /°/.test(overlays.slope.legend),
+    `slope ${fmt(overlays.slope.shares)}`);
+  check('overlay altitude: bands of sand and pale green', overlays.altitude.shares.sand > plain.sand + 0.05 && overlays.altitude.shares.pale > plain.pale + 0.05 && /band/.test(overlays.altitude.legend),
+    `altitude ${fmt(overlays.altitude.shares)}`);
+  await page.selectOption('#overlay', 'none');
+  await page.waitForFunction(() => document.documentElement.dataset.drawnOverlay === 'none', null, { timeout: TIMEOUT });
 
   // 2. A panel edit regrows in the worker.
   await page.$$eval('#params details', (all) => all.forEach((d) => { d.open = true; }));

@@ -11,8 +11,9 @@
 // regrows in the worker (web/worker/garden_handler.js) with progress and Cancel. Copy link, Embed
 // (<niwa-garden>, public/niwa-garden.js, or the iframe public/embed.html?study=garden, of the
 // page's hash), the .glb download (the worker's run's Export("glb"): the bytes of `niwa garden
-// grow --url HASH --out g.glb`), the plan .svg, and the stats line (trees by species).
-// Does not (yet): the year scrubber without regrowing, Blow, overlays, hybrid (card) trees, moving
+// grow --url HASH --out g.glb`), the plan .svg, the stats line (trees by species, the ivy, the
+// moss), and the ground's overlay (the moss's light, slope, altitude bands) with its legend.
+// Does not (yet): the year scrubber without regrowing, Blow, hybrid (card) trees, moving
 // objects, or several workers growing at once.
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { Frame } from '../gl/frame.js';
@@ -29,7 +30,7 @@ const $ = (id) => document.getElementById(id);
 const ui = {
   canvas: $('view'), stats: $('stats'), progress: $('progress'), cancel: $('cancel'), params: $('params'),
   species: $('species'), plants: $('plants'), copyLink: $('copy-link'), shareStatus: $('share-status'),
-  resetView: $('reset-view'), clickHelp: $('click-help'),
+  resetView: $('reset-view'), clickHelp: $('click-help'), overlay: $('overlay'), overlayHelp: $('overlay-help'),
 };
 mountStudyNav($('studies'), 'garden');
 // The timeline of the skeleton: no year scrubber yet (it would regrow); hidden.
@@ -72,7 +73,7 @@ const loop = new ProgressiveLoop({
   renderer: () => (renderer ? frame : null),
   camera,
   onDrawn: (drawn) => {
-    setHooks({ drawnSerial: gardenSerial, drawnTrees: drawn.trees ?? 0, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls, shadow: drawn.shadow ?? '' });
+    setHooks({ drawnSerial: gardenSerial, drawnTrees: drawn.trees ?? 0, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls, shadow: drawn.shadow ?? '', drawnOverlay: renderer?.overlay ?? 'none' });
   },
 });
 const requestFrame = () => loop.request();
@@ -211,6 +212,7 @@ worker.on('garden', (msg) => {
   for (const k of msg.buffers.objects?.kind || []) ivyVertices += k > 2.5 ? 1 : 0;
   if (renderer) {
     renderer.setGarden(msg.buffers, msg.bounds);
+    showOverlay();
     if (frameNext) {
       frameGarden();
       frameNext = false;
@@ -233,6 +235,25 @@ worker.on('garden', (msg) => {
   });
   requestFrame();
 });
+
+// ---------------------------------------------------------------- overlays
+// The ground's overlay (garden_renderer.js OVERLAYS) and its legend; the moss's light needs a moss
+// (moss_days > 0), else the ground keeps its height tint and the legend says why.
+const OVERLAY_LEGEND = {
+  none: '',
+  moss: 'The moss\'s light S of its last day (W/m², the photon map gathered, 10-day mean): dark blue 0, teal 50 (the thesis\'s mosses grow below about 50), yellow 300 and over; grey where the moss has no cell.',
+  slope: 'Slope of the ground: green 0°, yellow 20°, red 45° and over (slope_max refuses the rules\' trees above it).',
+  altitude: 'Altitude bands: one band a metre (or a tenth of the relief, if that is more), a dark line at each band\'s foot.',
+};
+function showOverlay() {
+  const name = ui.overlay.value;
+  const noMoss = name === 'moss' && renderer && !renderer.hasMoss;
+  if (renderer) renderer.overlay = name;
+  ui.overlayHelp.textContent = noMoss ? 'No moss in this garden (moss_days is 0, or years is 0): the ground keeps its height tint.' : OVERLAY_LEGEND[name];
+  setHooks({ overlay: noMoss ? 'none' : name });
+  requestFrame();
+}
+ui.overlay.addEventListener('change', showOverlay);
 
 // ---------------------------------------------------------------- controls
 let down = null;

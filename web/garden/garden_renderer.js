@@ -1,4 +1,5 @@
-// The garden page's WebGL2 view (shaders/garden/): the ground (tinted by height), the objects
+// The garden page's WebGL2 view (shaders/garden/): the ground (tinted by height, or by an overlay:
+// the moss's light of its last day, the slope, altitude bands), the objects
 // (walls, rocks, stone lanterns) and every planted tree, each distinct tree's mesh uploaded once and
 // drawn at all its placements with instancing (as the grove draws its copies), in metres, y up, under
 // the frame's camera and sun; the objects and trees cast the sun's shadow into the frame's shadow
@@ -12,6 +13,8 @@ import { loadPrograms } from '../gl/program.js';
 
 const SHADERS = new URL('../../shaders/garden/', import.meta.url).href;
 const INSTANCE_BYTES = 16;  // x, y, z, turn (radians)
+// The ground's overlays, in garden.frag's uOverlay order.
+export const OVERLAYS = ['none', 'moss', 'slope', 'altitude'];
 
 export class GardenRenderer extends StudyLayer {
   constructor(target) {
@@ -21,6 +24,8 @@ export class GardenRenderer extends StudyLayer {
     this.trees = null;    // {vao, buffers, instanceBuffer, groups: [{firstIndex, count, firstInstance, instances}]}
     this.grid = null;     // {n, size, cell, heights: Float32Array, relief}
     this.serial = 0;
+    this.overlay = 'none';  // one of OVERLAYS
+    this.hasMoss = false;   // the ground carries the moss's light (its moss_S buffer)
   }
 
   async init() {
@@ -63,7 +68,9 @@ export class GardenRenderer extends StudyLayer {
     const gl = this.gl;
     this.progress.abort();
     this.clear();
-    this.ground = this.#mesh(buffers.ground, null);
+    const mossS = buffers.ground.moss_S;
+    this.hasMoss = !!mossS && mossS.byteLength > 0;
+    this.ground = this.#mesh(buffers.ground, this.hasMoss ? mossS : null);
     this.objects = buffers.objects.indices.byteLength > 0 ? this.#mesh(buffers.objects, buffers.objects.kind) : null;
     const t = buffers.trees;
     if (t.indices.byteLength > 0) {
@@ -228,6 +235,11 @@ export class GardenRenderer extends StudyLayer {
       gl.uniform3fv(p.uniforms.uLightDirection, view.light);
       gl.uniform1i(p.uniforms.uMode, mode);
       gl.uniform1f(p.uniforms.uRelief, this.grid ? this.grid.relief : 1);
+      // The ground's overlay (garden.frag): none, the moss's light (needs moss_S), slope, altitude
+      // bands (a band a metre, or relief/10 when that is more than 10 bands).
+      const overlay = OVERLAYS.indexOf(this.overlay);
+      gl.uniform1i(p.uniforms.uOverlay, overlay === 1 && !this.hasMoss ? 0 : Math.max(0, overlay));
+      gl.uniform1f(p.uniforms.uBand, Math.max(1, (this.grid ? this.grid.relief : 1) / 10));
       view.shadow?.bindFor(p, view.sun);
       gl.enable(gl.DEPTH_TEST);
       gl.disable(gl.CULL_FACE);
