@@ -164,9 +164,14 @@ Result<GardenRun> GardenRun::Start(const GardenState& state, const Budget& budge
     NIWA_RETURN_IF_ERROR(moss::SetMossDays(years * moss_days, &ms).Within("moss_days"));
     NIWA_RETURN_IF_ERROR(
         moss::SetMossSeed(state.params.Get(GardenParam::kPlantSeed), &ms).Within("plant_seed"));
-    Result<moss::MossRun> moss =
-        moss::MossRun::StartOnScene(ms, GardenMossLand(run.scene_), budget, "garden");
-    if (!moss.ok()) return Status::Error("moss_days", moss.status().Line());
+    moss::MossScene land = GardenMossLand(run.scene_);
+    // Refused in the garden's words first (the land's triangles are the fewest cells it can have).
+    const Status fits =
+        CheckEstimate(moss::MossRun::RunEstimate(ms, land.mesh.triangle_count()), budget,
+                      "lower moss_days or years, or set moss_days 0 (no moss)");
+    if (!fits.ok()) return Status::Error("moss_days", "the moss: " + fits.Line());
+    Result<moss::MossRun> moss = moss::MossRun::StartOnScene(ms, std::move(land), budget, "garden");
+    if (!moss.ok()) return Status::Error("moss_days", "the moss: " + moss.status().Line());
     const Estimate used = moss::MossRun::RunEstimate(ms, moss->cells().size());
     tree_budget.seconds = std::max(0.0, budget.seconds - used.seconds);
     tree_budget.memory_bytes = static_cast<uint64_t>(
