@@ -120,6 +120,19 @@ TEST(GardenMoss, NoMossDaysNoMoss) {
   EXPECT_FALSE(nlohmann::json::parse(run.StatsJson()).contains("moss"));
 }
 
+TEST(GardenMoss, OverTheBudgetTheMossIsRefusedUpFrontNamingMossDays) {
+  Budget tight;
+  tight.seconds = 0.05;
+  const Result<GardenRun> refused = GardenRun::Start(MossGarden(true), tight);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.status().field(), "moss_days") << refused.status().Line();
+  EXPECT_NE(refused.status().Line().find("set moss_days 0"), std::string::npos)
+      << refused.status().Line();
+  GardenState none = MossGarden(true);
+  ASSERT_TRUE(none.params.Set(GardenParam::kMossDays, 0).ok());
+  EXPECT_TRUE(GardenRun::Start(none, tight).ok()) << "without moss the trees fit";
+}
+
 TEST(GardenMoss, TheMossStateRidesInTheJsonAndTheLink) {
   GardenState s = MossGarden(true);
   // The garden's defaults write nothing of the moss.
