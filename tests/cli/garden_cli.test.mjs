@@ -146,7 +146,8 @@ const bad = [
   [['--garden', join(work, 'badmoss.json')], /moss.*photons/],
   [['--url', 'moss.photons=abc'], /--url: moss\.photons/],
   [['--set', 'bark=1', '--set', 'bark_map_size=300'], /bark_map_size/],
-  [['--set', 'bark=1', '--max-seconds', '2'], /error: bark: the simulated bark of \d+ distinct trees .* set bark 0/],
+  [['--set', 'bark=1', '--set', 'moss_days=0', '--max-seconds', '2'], /error: bark: the simulated bark of \d+ distinct trees .* set bark 0/],
+  [['--max-seconds', '2'], /error: moss_days: the moss: --max-seconds: .* set moss_days 0/],
 ];
 for (const [args, pattern] of bad) {
   for (const cmd of [native, wasm]) {
