@@ -176,6 +176,7 @@ Result<GardenRun> GardenRun::Start(const GardenState& state, const Budget& budge
     tree_budget.seconds = std::max(0.0, budget.seconds - used.seconds);
     tree_budget.memory_bytes = static_cast<uint64_t>(
         std::max(0.0, static_cast<double>(budget.memory_bytes) - used.memory_bytes));
+    run.moss_estimate_ = used;
     run.moss_ = std::make_unique<moss::MossRun>(std::move(*moss));
     run.ms_moss_ = MsSince(t0);
   }
@@ -259,24 +260,27 @@ Status GardenRun::Advance(const run::Observer& observer) {
   return GrowBarks(observer);
 }
 
-Status GardenRun::GrowBarks(const run::Observer& observer) {
-  if (!barks_.on || barks_.grown) return Status::Ok();
-  // What the trees' growth (their estimates; the process's base counted once) and the ivy's
-  // support left of the garden's budget.
+Budget GardenRun::BudgetLeft(bool ivy_support) const {
   Budget left = budget_;
-  double seconds = 0, bytes = 0;
+  double seconds = moss_estimate_.seconds, bytes = moss_estimate_.memory_bytes;
   for (const GardenTreeGroup& g : groups_) {
     const Estimate used = g.run->grown();
     seconds += used.seconds;
     bytes += std::max(0.0, used.memory_bytes - tree_base_bytes_);
   }
-  if (ivy_) {
+  if (ivy_support && ivy_) {
     seconds += ivy_->support().estimate().seconds;
     bytes += ivy_->support().estimate().memory_bytes;
   }
   left.seconds = budget_.seconds - seconds;
   left.memory_bytes =
       static_cast<uint64_t>(std::max(0.0, static_cast<double>(budget_.memory_bytes) - bytes));
+  return left;
+}
+
+Status GardenRun::GrowBarks(const run::Observer& observer) {
+  if (!barks_.on || barks_.grown) return Status::Ok();
+  const Budget left = BudgetLeft(true);
   std::vector<const Tree*> trees;
   std::vector<uint64_t> seeds;
   for (const GardenTreeGroup& g : groups_) {
@@ -380,18 +384,9 @@ Status GardenRun::GrowIvy() {
                        &ivy_state)
           .Within("ivy_steps"));
   ivy_state.seed_point_items = state_.ivy_on;
-  // The garden is one job with one budget: the ivy gets what the trees' growth left of it (their
-  // estimates; the process's base counted once), so a garden stops within the budget as a whole.
-  Budget left = budget_;
-  double trees_seconds = 0, trees_bytes = 0;
-  for (const GardenTreeGroup& g : groups_) {
-    const Estimate used = g.run->grown();
-    trees_seconds += used.seconds;
-    trees_bytes += std::max(0.0, used.memory_bytes - tree_base_bytes_);
-  }
-  left.seconds = budget_.seconds - trees_seconds;
-  left.memory_bytes =
-      static_cast<uint64_t>(std::max(0.0, static_cast<double>(budget_.memory_bytes) - trees_bytes));
+  // The garden is one job with one budget: the ivy gets what the trees' growth and the moss left
+  // of it, so a garden stops within the budget as a whole.
+  const Budget left = BudgetLeft(false);
   ivy_budget_ = left;
   const std::string change = "lower ivy_steps or the ivy seeds, or years or density";
   if (left.seconds < support.seconds ||

@@ -124,6 +124,11 @@ class GardenRun : public run::StudyRun {
   std::unique_ptr<moss::MossRun> moss_;
   // The moss's days of one garden year, after the trees' year: that year's leaves as its canopy.
   void GrowMossYear();
+  // What the garden's budget holds after the trees' growth (their estimates; the process's base
+  // counted once), the moss's whole run (its estimate, taken up front) and, with `ivy_support`,
+  // the ivy's support: the ivy's and the barks' share.
+  Budget BudgetLeft(bool ivy_support) const;
+  Estimate moss_estimate_{0, 0, ""};
   // Grows the state's ivy on the garden as it stands after the clock (see docs/garden-model.md),
   // within what the trees left of the budget.
   Status GrowIvy();

@@ -133,6 +133,25 @@ TEST(GardenMoss, OverTheBudgetTheMossIsRefusedUpFrontNamingMossDays) {
   EXPECT_TRUE(GardenRun::Start(none, tight).ok()) << "without moss the trees fit";
 }
 
+// One budget: the ivy gets what the trees' growth and the moss's whole run left of it.
+TEST(GardenMoss, TheIvyGetsWhatTheTreesAndTheMossLeft) {
+  GardenState s = MossGarden(true);
+  s.ivy_on = {"objects[0]"};
+  ASSERT_TRUE(s.params.Set(GardenParam::kIvySteps, 10).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kYears, 2).ok());
+  Budget budget;
+  budget.seconds = 1000;
+  Result<GardenRun> within = GardenRun::Start(s, budget);
+  ASSERT_TRUE(within.ok()) << within.status().Line();
+  ASSERT_TRUE(within->Advance(nullptr).ok());
+  double trees = 0;
+  for (const GardenTreeGroup& g : within->groups()) trees += g.run->grown().seconds;
+  const double moss =
+      moss::MossRun::RunEstimate(within->moss()->state(), within->moss()->cells().size()).seconds;
+  EXPECT_GT(moss, 0.0);
+  EXPECT_DOUBLE_EQ(within->ivy_budget().seconds, budget.seconds - moss - trees);
+}
+
 TEST(GardenMoss, TheMossStateRidesInTheJsonAndTheLink) {
   GardenState s = MossGarden(true);
   // The garden's defaults write nothing of the moss.
