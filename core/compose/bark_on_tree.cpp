@@ -103,22 +103,6 @@ gltf::Texture PngTexture(const std::string& name, const std::string& png) {
   return texture;
 }
 
-// Sets the material's four maps from the frame (new textures appended to doc).
-void Dress(const BarkFrame& frame, const std::string& name, gltf::Material* material,
-           gltf::Document* doc) {
-  const auto add = [doc](gltf::Texture t) {
-    doc->textures.push_back(std::move(t));
-    return static_cast<int>(doc->textures.size()) - 1;
-  };
-  material->base_color_texture = add(PngTexture(name, frame.base_colour));
-  material->normal_texture = add(PngTexture(name + "_normal", frame.normal));
-  const int orm = add(PngTexture(name + "_orm", frame.orm));
-  material->occlusion_texture = orm;           // R: occlusion
-  material->metallic_roughness_texture = orm;  // G: roughness, B: metallic
-  material->metallic_factor = 1.0;             // the ORM's B (0) is the metalness
-  material->roughness_factor = 1.0;            // the ORM's G is the roughness
-}
-
 geom::TriMesh ToTriMesh(const MeshBuffers& b) {
   geom::TriMesh m;
   const std::size_t n = b.vertex_count();
@@ -310,6 +294,26 @@ Result<BarkFrame> GrowOldBark(const BarkOnTreePlan& plan, const Budget& budget,
   return RunFrame(plan.state, budget, observer);
 }
 
+void DressBarkMaterial(const BarkFrame& frame, const std::string& name, gltf::Material* material,
+                       gltf::Document* doc) {
+  const auto put = [doc](gltf::Texture texture, int* index) {
+    if (*index >= 0) {
+      doc->textures[static_cast<std::size_t>(*index)] = std::move(texture);
+    } else {
+      doc->textures.push_back(std::move(texture));
+      *index = static_cast<int>(doc->textures.size()) - 1;
+    }
+  };
+  put(PngTexture(name, frame.base_colour), &material->base_color_texture);
+  put(PngTexture(name + "_normal", frame.normal), &material->normal_texture);
+  doc->textures.push_back(PngTexture(name + "_orm", frame.orm));
+  const int orm = static_cast<int>(doc->textures.size()) - 1;
+  material->occlusion_texture = orm;           // R: occlusion
+  material->metallic_roughness_texture = orm;  // G: roughness, B: metallic
+  material->metallic_factor = 1.0;             // the ORM's B (0) is the metalness
+  material->roughness_factor = 1.0;            // the ORM's G is the roughness
+}
+
 int WrapsAround(double radius_m, double tile_width_m) {
   if (!(tile_width_m > 0)) return 1;
   return std::max(1, static_cast<int>(std::lround(2 * kPi * radius_m / tile_width_m)));
@@ -398,22 +402,11 @@ Result<gltf::Document> BarkTreeDocument(const Tree& tree, const TreeMesh& mesh,
   for (gltf::Material& m : doc.materials) {
     if (m.name == "bark") old_material = &m;
   }
-  if (old_material != nullptr) {
-    const int colour = old_material->base_color_texture, normal = old_material->normal_texture;
-    doc.textures[static_cast<std::size_t>(colour)] = PngTexture("bark", bark.old_bark.base_colour);
-    doc.textures[static_cast<std::size_t>(normal)] =
-        PngTexture("bark_normal", bark.old_bark.normal);
-    const int orm = static_cast<int>(doc.textures.size());
-    doc.textures.push_back(PngTexture("bark_orm", bark.old_bark.orm));
-    old_material->occlusion_texture = orm;
-    old_material->metallic_roughness_texture = orm;
-    old_material->metallic_factor = 1.0;
-    old_material->roughness_factor = 1.0;
-  }
+  if (old_material != nullptr) DressBarkMaterial(bark.old_bark, "bark", old_material, &doc);
   if (!parts.young_bark.indices.empty()) {
     gltf::Material young;
     young.name = "bark_young";
-    Dress(bark.young_bark, "bark_young", &young, &doc);
+    DressBarkMaterial(bark.young_bark, "bark_young", &young, &doc);
     doc.materials.push_back(std::move(young));
     gltf::Primitive primitive;
     primitive.mesh = ToTriMesh(parts.young_bark);

@@ -108,6 +108,13 @@ Result<BarkFrame> GrowOldBark(const BarkOnTreePlan& plan, const Budget& budget,
 // The old bark run's estimate (its run and maps; plan.estimate counts both runs).
 Estimate OldBarkEstimate(const BarkOnTreePlan& plan);
 
+// Puts the frame's maps on `material` of `doc`: its base colour and normal textures (names `name`,
+// `name`_normal) replace the ones it has (the procedural bark's give way) or are appended, and the
+// ORM map (`name`_orm, appended) is its occlusion (R) and metallic-roughness (G, B), sampler
+// REPEAT.
+void DressBarkMaterial(const BarkFrame& frame, const std::string& name, gltf::Material* material,
+                       gltf::Document* doc);
+
 // Whole wraps of a tile `tile_width_m` around a branch of radius `radius_m`:
 // max(1, round(2π·r / C_tile)).
 int WrapsAround(double radius_m, double tile_width_m);

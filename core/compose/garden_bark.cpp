@@ -18,24 +18,6 @@ namespace {
 
 using bark::BarkParam;
 
-gltf::Texture MapTexture(const std::string& name, const std::string& png) {
-  gltf::Texture t;
-  t.name = name;
-  t.png.assign(png.begin(), png.end());
-  t.wrap_s = t.wrap_t = gltf::Wrap::kRepeat;
-  return t;
-}
-
-// Puts `texture` at *index (a new texture when *index < 0).
-void SetTexture(gltf::Texture texture, int* index, gltf::Document* doc) {
-  if (*index >= 0) {
-    doc->textures[static_cast<std::size_t>(*index)] = std::move(texture);
-  } else {
-    doc->textures.push_back(std::move(texture));
-    *index = static_cast<int>(doc->textures.size()) - 1;
-  }
-}
-
 // The tallest a bark map can be (rows; bark_run's estimate takes the same).
 constexpr double kMaxMapRows = 4096;
 // Bytes of the three maps' PNGs per pixel, at most (RGBA, barely compressed), and seconds to copy
@@ -187,14 +169,7 @@ void WrapGardenBarkUvs(const Tree& tree, const BarkFrame& frame, std::vector<Lod
 void DressGardenBark(const BarkFrame& frame, gltf::Document* tree_doc) {
   for (gltf::Material& m : tree_doc->materials) {
     if (m.name != "bark") continue;
-    SetTexture(MapTexture("bark", frame.base_colour), &m.base_color_texture, tree_doc);
-    SetTexture(MapTexture("bark_normal", frame.normal), &m.normal_texture, tree_doc);
-    tree_doc->textures.push_back(MapTexture("bark_orm", frame.orm));
-    const int orm = static_cast<int>(tree_doc->textures.size()) - 1;
-    m.occlusion_texture = orm;           // R: occlusion
-    m.metallic_roughness_texture = orm;  // G: roughness, B: metallic
-    m.metallic_factor = 1.0;             // the ORM's B (0) is the metalness
-    m.roughness_factor = 1.0;            // the ORM's G is the roughness
+    DressBarkMaterial(frame, "bark", &m, tree_doc);
     m.base_color_factor = {1, 1, 1, 1};
   }
 }
