@@ -6,6 +6,8 @@
 #include <glm/geometric.hpp>
 #include <limits>
 
+#include "moss/sphere_cells.h"
+
 namespace niwa::moss {
 
 void CanopyShade::Build(std::vector<CanopySphere> spheres) {
@@ -40,39 +42,11 @@ void CanopyShade::Build(std::vector<CanopySphere> spheres) {
     if (static_cast<double>(dims_[0]) * dims_[1] * dims_[2] <= static_cast<double>(1 << 20)) break;
     cell_ *= 1.5;
   }
-  const std::size_t n_cells = static_cast<std::size_t>(dims_[0]) * dims_[1] * dims_[2];
-  start_.assign(n_cells + 1, 0);
   stamp_.assign(spheres_.size(), 0);
   path_ = 0;
-  auto range = [&](const CanopySphere& s, int a, int* i0, int* i1) {
-    *i0 = std::clamp(static_cast<int>(std::floor((s.centre[a] - s.radius - lo_[a]) / cell_)), 0,
-                     dims_[a] - 1);
-    *i1 = std::clamp(static_cast<int>(std::floor((s.centre[a] + s.radius - lo_[a]) / cell_)), 0,
-                     dims_[a] - 1);
-  };
-  std::vector<uint32_t> fill;
-  for (int pass = 0; pass < 2; ++pass) {
-    if (pass == 1) {
-      for (std::size_t k = 0; k < n_cells; ++k) start_[k + 1] += start_[k];
-      items_.assign(start_[n_cells], 0);
-      fill.assign(start_.begin(), start_.end() - 1);
-    }
-    for (uint32_t i = 0; i < spheres_.size(); ++i) {
-      int x0, x1, y0, y1, z0, z1;
-      range(spheres_[i], 0, &x0, &x1);
-      range(spheres_[i], 1, &y0, &y1);
-      range(spheres_[i], 2, &z0, &z1);
-      for (int z = z0; z <= z1; ++z)
-        for (int y = y0; y <= y1; ++y)
-          for (int x = x0; x <= x1; ++x) {
-            const std::size_t k = (static_cast<std::size_t>(z) * dims_[1] + y) * dims_[0] + x;
-            if (pass == 0)
-              ++start_[k + 1];
-            else
-              items_[fill[k]++] = i;
-          }
-    }
-  }
+  ListSpheresInCells(
+      spheres_.size(), [&](uint32_t s) -> const glm::dvec3& { return spheres_[s].centre; },
+      [&](uint32_t s) { return spheres_[s].radius; }, lo_, cell_, dims_, &start_, &items_);
 }
 
 void CanopyShade::AddChord(uint32_t s, const glm::dvec3& origin, const glm::dvec3& dir,

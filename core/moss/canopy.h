@@ -7,7 +7,8 @@
 // move the leaves (the caller hands in each year's), or know which study made them.
 // Why no library: the spheres' optical depth along a ray with an exact crossing point is not a
 // ray-tracing library's query (three-mesh-bvh and Embree answer first hits on surfaces); the grid
-// is small and tested against a pass over every sphere (InterceptLinear).
+// is small (its lists: sphere_cells.h, shared with the mosses' grid) and tested against a pass
+// over every sphere (InterceptLinear).
 #pragma once
 
 #include <cstdint>

@@ -11,6 +11,7 @@
 #include "light/sun.h"
 #include "math/det_math.h"
 #include "moss/sampling.h"
+#include "moss/sphere_cells.h"
 
 namespace niwa::moss {
 namespace {
@@ -132,36 +133,9 @@ void MossOccluders::Build(const std::vector<glm::dvec3>& centres, double radius)
   }
   lo_ = lo;
   const std::size_t n_cells = static_cast<std::size_t>(dims_[0]) * dims_[1] * dims_[2];
-  start_.assign(n_cells + 1, 0);
-  auto range = [&](const glm::dvec3& c, int a, int* i0, int* i1) {
-    *i0 = std::clamp(static_cast<int>(std::floor((c[a] - radius_ - lo_[a]) / cell_)), 0,
-                     dims_[a] - 1);
-    *i1 = std::clamp(static_cast<int>(std::floor((c[a] + radius_ - lo_[a]) / cell_)), 0,
-                     dims_[a] - 1);
-  };
-  for (int pass = 0; pass < 2; ++pass) {
-    if (pass == 1) {
-      for (std::size_t k = 0; k < n_cells; ++k) start_[k + 1] += start_[k];
-      items_.assign(start_[n_cells], 0);
-    }
-    std::vector<uint32_t> fill;
-    if (pass == 1) fill.assign(start_.begin(), start_.end() - 1);
-    for (uint32_t s = 0; s < centres_.size(); ++s) {
-      int x0, x1, y0, y1, z0, z1;
-      range(centres_[s], 0, &x0, &x1);
-      range(centres_[s], 1, &y0, &y1);
-      range(centres_[s], 2, &z0, &z1);
-      for (int z = z0; z <= z1; ++z)
-        for (int y = y0; y <= y1; ++y)
-          for (int x = x0; x <= x1; ++x) {
-            const std::size_t k = (static_cast<std::size_t>(z) * dims_[1] + y) * dims_[0] + x;
-            if (pass == 0)
-              ++start_[k + 1];
-            else
-              items_[fill[k]++] = s;
-          }
-    }
-  }
+  ListSpheresInCells(
+      centres_.size(), [&](uint32_t s) -> const glm::dvec3& { return centres_[s]; },
+      [&](uint32_t) { return radius_; }, lo_, cell_, dims_, &start_, &items_);
   occupied_.resize(n_cells);
   for (std::size_t k = 0; k < n_cells; ++k) occupied_[k] = start_[k] != start_[k + 1] ? 1 : 0;
 }
