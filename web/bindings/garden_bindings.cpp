@@ -25,13 +25,14 @@
 //             foot, its turn about y in radians, counter-clockwise seen from above)
 // Calls: setProgress(fn) (fn(stage, done, total) after every year), grow(stateJson) -> ""/error
 // record (the state JSON of GardenStateJson over the default garden, LayOutDefaults, checked,
-// started and advanced); statsJson() (the run's StatsJson, as `niwa garden grow --stats` without
-// the CLI's timings), hash(), stateJson(), boundsJson() ({size, n, cell, relief, min, max, groups,
-// trees}); build("glb"|"svg"|"json") then buffers("download"): the run's Export bytes (the bytes of
-// `niwa garden grow --url HASH --out g.glb`). Free functions: gardenTableJson(),
-// gardenDecodeJson(hash) ({state, notices}: the default garden with the link's keys).
-// Does not: keep more than one run, replay years, or read files (a heightmap or mask ground is not
-// offered by the page yet).
+// started and advanced), or the same in parts: start(stateJson) -> ""/error, then step() ->
+// "more" | "grown" | error (one garden year a call; the worker yields between them); statsJson()
+// (the run's StatsJson, as `niwa garden grow --stats` without the CLI's timings), hash(),
+// stateJson(), boundsJson() ({size, n, cell, relief, min, max, groups, trees});
+// build("glb"|"svg"|"json") then buffers("download"): the run's Export bytes (the bytes of `niwa
+// garden grow --url HASH --out g.glb`). Free functions: gardenTableJson(), gardenDecodeJson(hash)
+// ({state, notices}: the default garden with the link's keys). Does not: keep more than one run,
+// replay years, or read files (a heightmap or mask ground is not offered by the page yet).
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
@@ -109,6 +110,22 @@ class GardenLab {
   void setProgress(emscripten::val fn) { progress_ = fn; }
 
   std::string grow(const std::string& state_json) {
+    std::string error = start(state_json);
+    while (error.empty()) {
+      error = step();
+      if (error == "more")
+        error.clear();
+      else if (error == "grown")
+        return "";
+    }
+    return error;
+  }
+
+  // Starts a garden (checked and estimated, nothing grown yet): "" or an error record. The worker
+  // then calls step() until it says "grown", yielding to its messages between calls, so a newer
+  // update (an edit, a link) takes over within a garden year instead of after the whole growth.
+  std::string start(const std::string& state_json) {
+    pending_.reset();
     compose::GardenState state = compose::DefaultGardenState();
     Status s = compose::ApplyGardenStateJson(state_json, &state);
     if (!s.ok()) return ErrorText(s);
@@ -117,19 +134,36 @@ class GardenLab {
     if (!s.ok()) return ErrorText(s);
     Result<compose::GardenRun> started = compose::GardenRun::Start(state, PageBudget());
     if (!started.ok()) return ErrorText(started.status());
-    compose::GardenRun run = std::move(started).value();
-    run.set_ivy_extra_bytes_per_bud(ivy::IvyPageMeshBytesPerBud());  // FillObjects' ivy mesh
-    s = run.Advance([&](const run::Progress& p) {
+    pending_.emplace(std::move(started).value());
+    pending_->set_ivy_extra_bytes_per_bud(ivy::IvyPageMeshBytesPerBud());  // FillObjects' ivy mesh
+    return "";
+  }
+
+  // Grows the started garden by one garden year (the nursery with the first), or, after the last
+  // year, its ivy and barks and the page's buffers: "more" (years remain), "grown" (the run is
+  // the lab's last run now, its buffers filled) or an error record. The same calls in the same
+  // order as one Advance (GardenRun::Advance stops at a year's start when its observer says no,
+  // as it was, and goes on from there), so the garden's bytes do not depend on the steps.
+  std::string step() {
+    if (!pending_) return ErrorText(Status::Error("run", "no garden started"));
+    int years_left = 1;
+    const Status s = pending_->Advance([&](const run::Progress& p) {
       if (!progress_.isNull() && !progress_.isUndefined())
         progress_(std::string(p.phase), p.done, p.total);
+      if (std::string(p.phase) == "grow" && p.done < p.total) return years_left-- > 0;
       return true;
     });
-    if (!s.ok()) return ErrorText(s);
-    run_.emplace(std::move(run));
+    if (run::IsCancelled(s)) return "more";
+    if (!s.ok()) {
+      pending_.reset();
+      return ErrorText(s);
+    }
+    run_.emplace(std::move(*pending_));
+    pending_.reset();
     FillGround();
     FillObjects();
     FillTrees();
-    return "";
+    return "grown";
   }
 
   std::string statsJson() const { return run_ ? run_->StatsJson() : "{}"; }
@@ -287,6 +321,7 @@ class GardenLab {
   }
 
   std::optional<compose::GardenRun> run_;
+  std::optional<compose::GardenRun> pending_;  // started by start(), grown by step()
   std::vector<float> ground_positions_, ground_normals_, ground_heights_, ground_moss_S_;
   std::vector<uint32_t> ground_indices_;
   std::vector<float> object_positions_, object_normals_, object_kind_;
@@ -307,6 +342,8 @@ EMSCRIPTEN_BINDINGS(niwa_garden) {
       .constructor<>()
       .function("setProgress", &niwa::GardenLab::setProgress)
       .function("grow", &niwa::GardenLab::grow)
+      .function("start", &niwa::GardenLab::start)
+      .function("step", &niwa::GardenLab::step)
       .function("statsJson", &niwa::GardenLab::statsJson)
       .function("hash", &niwa::GardenLab::hash)
       .function("stateJson", &niwa::GardenLab::stateJson)

@@ -1,6 +1,7 @@
 // The garden's worker handler (issue 33; web/bindings/garden_bindings.cpp): one GardenLab per
 // client holds the last run. An 'update' grows the state (the garden state JSON, GardenStateJson's
-// shape: {params, ground, objects, plants, mix}) to its years, posting progress after every year
+// shape: {params, ground, objects, plants, mix}) to its years, a year a step with the worker's
+// messages taken between steps (a newer update supersedes it there), posting progress after every year
 // (at most every 100 ms), then sends the stats (the run's StatsJson, parsed, and its text), the
 // resolved state and hash, the bounds (the ground's size and grid, each distinct tree's group and
 // every planted tree) and the buffer groups ground, objects and trees (each distinct tree's mesh
@@ -46,12 +47,25 @@ export function createHandler(Module, ctx) {
     entry.working = id;
     post({ type: 'progress', id, client, stage: 'grow', done: 0, total: 0, text: 'laying out the garden' });
     const t0 = performance.now();
-    const error = errorOf(entry.lab.grow(JSON.stringify(msg.state || {})));
+    let error = errorOf(entry.lab.start(JSON.stringify(msg.state || {})));
+    // A garden year a step; between them the worker takes its messages, and a newer update
+    // supersedes this one there (within a year, not after the whole growth). The lab's last run
+    // stays the one before until the last step.
+    let grownMs = 0;
+    while (!error) {
+      const s0 = performance.now();
+      const step = entry.lab.step();
+      grownMs += performance.now() - s0;
+      if (step === 'grown') break;
+      if (step !== 'more') { error = errorOf(step); break; }
+      await nextTask();
+      if (!isLatest(client, id)) return;
+    }
     if (error) {
       post(errorReply(error, id, client));
       return;
     }
-    const growMs = performance.now() - t0;
+    const growMs = grownMs;
     const statsText = entry.lab.statsJson();
     const transfer = [];
     const counts = { reused: 0, fresh: 0, dropped: 0 };
