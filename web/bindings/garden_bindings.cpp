@@ -23,10 +23,10 @@
 //             ranges (Uint32, 4 per group: first index, index count, first instance, instance
 //             count), instances (Float32, 4 per planted tree in group order: x, y, z of its
 //             foot, its turn about y in radians, counter-clockwise seen from above)
-// Calls: setProgress(fn) (fn(stage, done, total) after every year), grow(stateJson) -> ""/error
-// record (the state JSON of GardenStateJson over the default garden, LayOutDefaults, checked,
-// started and advanced), or the same in parts: start(stateJson) -> ""/error, then step() ->
-// "more" | "grown" | error (one garden year a call; the worker yields between them); statsJson()
+// Calls: setProgress(fn) (fn(stage, done, total) after every year), start(stateJson) -> ""/error
+// record (the state JSON of GardenStateJson over the default garden, LayOutDefaults, checked and
+// started), then step() -> "more" | "grown" | error (one garden year a call, the worker taking its
+// messages between them; "grown": the run advanced and its buffers filled); statsJson()
 // (the run's StatsJson, as `niwa garden grow --stats` without the CLI's timings), hash(),
 // stateJson(), boundsJson() ({size, n, cell, relief, min, max, groups, trees});
 // build("glb"|"svg"|"json") then buffers("download"): the run's Export bytes (the bytes of `niwa
@@ -108,18 +108,6 @@ std::string GardenDecodeJson(const std::string& hash) {
 class GardenLab {
  public:
   void setProgress(emscripten::val fn) { progress_ = fn; }
-
-  std::string grow(const std::string& state_json) {
-    std::string error = start(state_json);
-    while (error.empty()) {
-      error = step();
-      if (error == "more")
-        error.clear();
-      else if (error == "grown")
-        return "";
-    }
-    return error;
-  }
 
   // Starts a garden (checked and estimated, nothing grown yet): "" or an error record. The worker
   // then calls step() until it says "grown", yielding to its messages between calls, so a newer
@@ -341,7 +329,6 @@ EMSCRIPTEN_BINDINGS(niwa_garden) {
   class_<niwa::GardenLab>("GardenLab")
       .constructor<>()
       .function("setProgress", &niwa::GardenLab::setProgress)
-      .function("grow", &niwa::GardenLab::grow)
       .function("start", &niwa::GardenLab::start)
       .function("step", &niwa::GardenLab::step)
       .function("statsJson", &niwa::GardenLab::statsJson)
