@@ -28,38 +28,64 @@ struct PhotonSvgItem {
 
 }  // namespace
 
+PhotonView PhotonViewOf(const SoilCells& cells) {
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const glm::vec3& p : cells.mesh.positions) {
+    lo = glm::min(lo, glm::dvec3(p));
+    hi = glm::max(hi, glm::dvec3(p));
+  }
+  if (!(hi.x >= lo.x)) lo = glm::dvec3(-1), hi = glm::dvec3(1);
+  const glm::dvec3 centre = 0.5 * (lo + hi);
+  const double r = std::max(1e-6, 0.5 * glm::length(hi - lo));
+  // scripts/lib/figures_moss.js's camera for the thesis scene (r = 1.676 m): eye (0.45, 0.75,
+  // 3.6), looking at (0, 0.45, −0.4), as offsets in units of r from the land's centre.
+  PhotonView v;
+  v.at = centre + r * glm::dvec3(0.0, -0.0895, -0.2387);
+  v.eye = v.at + r * 2.408 * glm::normalize(glm::dvec3(0.45, 0.30, 4.0));
+  return v;
+}
+
 std::string PhotonSvg(const SoilCells& cells, const PhotonMap& map, const std::string& title) {
-  // The view: towards the eye v = (0, 0.6, 1)/|.|, right (1, 0, 0), up (0, 1, −0.6)/|.|.
-  const double len = std::sqrt(1.0 + 0.36);
-  const glm::dvec3 toward(0, 0.6 / len, 1 / len), right(1, 0, 0), up(0, 1 / len, -0.6 / len);
-  auto sx = [&](const glm::dvec3& p) { return glm::dot(p, right); };
-  auto sy = [&](const glm::dvec3& p) { return -glm::dot(p, up); };
-  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+  // A perspective view from PhotonViewOf's eye (figs 4.1/4.2's viewpoint on the thesis scene), a
+  // focal of 1,000 px on an 800 × 600 frame (the figures' 700 on 560 × 420), narrowed only when
+  // the land would not fit.
+  const PhotonView view = PhotonViewOf(cells);
+  const glm::dvec3 fwd = glm::normalize(view.at - view.eye);
+  const glm::dvec3 right = glm::normalize(glm::cross(fwd, glm::dvec3(0, 1, 0)));
+  const glm::dvec3 up = glm::cross(right, fwd);
+  const double width = 800, frame_height = 600, margin = 10, caption = 28;
+  auto depth_of = [&](const glm::dvec3& p) { return glm::dot(p - view.eye, fwd); };
+  auto sx = [&](const glm::dvec3& p) { return glm::dot(p - view.eye, right) / depth_of(p); };
+  auto sy = [&](const glm::dvec3& p) { return -glm::dot(p - view.eye, up) / depth_of(p); };
+  double focal = 1000;
   for (const glm::vec3& p : cells.mesh.positions) {
     const glm::dvec3 q(p);
-    x0 = std::min(x0, sx(q)), x1 = std::max(x1, sx(q));
-    y0 = std::min(y0, sy(q)), y1 = std::max(y1, sy(q));
+    if (depth_of(q) <= 1e-9) continue;
+    const double ax = std::abs(sx(q)), ay = std::abs(sy(q));
+    if (ax > 0) focal = std::min(focal, (width / 2 - margin) / ax);
+    if (ay > 0) focal = std::min(focal, (frame_height / 2 - margin) / ay);
   }
-  if (!(x1 > x0)) x0 = -1, x1 = 1;
-  if (!(y1 > y0)) y0 = -1, y1 = 1;
-  const double width = 800, margin = 10, caption = 28;
-  const double scale = (width - 2 * margin) / (x1 - x0);
-  const double height = std::ceil((y1 - y0) * scale + 2 * margin + caption);
-  auto X = [&](const glm::dvec3& p) { return PhotonFixed1(margin + (sx(p) - x0) * scale); };
-  auto Y = [&](const glm::dvec3& p) { return PhotonFixed1(margin + (sy(p) - y0) * scale); };
+  const double height = frame_height + caption;
+  auto X = [&](const glm::dvec3& p) { return PhotonFixed1(width / 2 + focal * sx(p)); };
+  auto Y = [&](const glm::dvec3& p) { return PhotonFixed1(frame_height / 2 + focal * sy(p)); };
+  auto toward_eye = [&](const glm::dvec3& p) { return glm::normalize(view.eye - p); };
 
   std::vector<PhotonSvgItem> items;
   items.reserve(cells.size() + map.photons.size());
-  for (uint32_t i = 0; i < cells.size(); ++i)
-    if (glm::dot(cells.normal[i], toward) > 0)  // faces the viewer
-      items.push_back({glm::dot(cells.centroid[i], toward), i, false});
+  for (uint32_t i = 0; i < cells.size(); ++i) {
+    const glm::dvec3 c(cells.centroid[i]);
+    if (depth_of(c) > 1e-9 && glm::dot(glm::dvec3(cells.normal[i]), toward_eye(c)) > 0)
+      items.push_back({-depth_of(c), i, false});  // faces the viewer; far ones first
+  }
   int64_t direct = 0, bounced = 0;
   for (uint32_t k = 0; k < map.photons.size(); ++k) {
     const Photon& ph = map.photons[k];
-    if (glm::dot(ph.normal, toward) <= 0) continue;  // on a side turned away
+    const glm::dvec3 at(ph.position);
+    if (depth_of(at) <= 1e-9 || glm::dot(glm::dvec3(ph.normal), toward_eye(at)) <= 0)
+      continue;  // behind the eye, or on a side turned away
     ++(ph.depth == 0 ? direct : bounced);
     // A photon lies on its face: just in front of the face's own cell in the order.
-    items.push_back({glm::dot(ph.position, toward) + 1e-6, k, true});
+    items.push_back({-depth_of(at) + 1e-6, k, true});
   }
   std::stable_sort(items.begin(), items.end(), [](const PhotonSvgItem& a, const PhotonSvgItem& b) {
     return a.depth < b.depth;
@@ -81,7 +107,9 @@ std::string PhotonSvg(const SoilCells& cells, const PhotonMap& map, const std::s
         c(cells.mesh.positions[v + 2]);
     const int grey =
         120 + static_cast<int>(std::lround(
-                  100.0 * std::clamp(glm::dot(cells.normal[item.index], toward), 0.0, 1.0)));
+                  100.0 * std::clamp(glm::dot(glm::dvec3(cells.normal[item.index]),
+                                              toward_eye(glm::dvec3(cells.centroid[item.index]))),
+                                     0.0, 1.0)));
     char fill[8];
     std::snprintf(fill, sizeof fill, "#%02x%02x%02x", grey, grey, grey);
     s += "<path d=\"M" + X(a) + " " + Y(a) + "L" + X(b) + " " + Y(b) + "L" + X(c) + " " + Y(c) +

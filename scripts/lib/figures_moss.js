@@ -4,7 +4,8 @@
 // docs/figures/moss_*.svg and docs/figures/moss_measures.json (the numbers docs/FIGURES.md quotes),
 // and prints each check with its bar and whether it holds, in both presets, over seeds 1-5. Every
 // run is deterministic. The pictures look at the `thesis` scene from the front, a little below the
-// roof, as the thesis's figs 4.1-4.3 do. Does not: tune anything toward the thesis's captions.
+// roof, as the thesis's figs 4.1-4.3 do; figs 4.1/4.2 show day 1's photon map below the mosses from
+// the same viewpoint (niwa moss photons --out, whose camera is this file's kEye/kAt). Does not: tune anything toward the thesis's captions.
 // Usage: scripts/figures moss [4.1 4.2 4.3 walls 3.5.2] (default all); MOSS_SEEDS=1,2 for fewer.
 'use strict';
 const fs = require('fs');
@@ -55,12 +56,27 @@ const kBoxes = [
   { lo: [0.3, 0, 0.1], hi: [0.7, 0.4, 0.5], colour: '#c9b48a' },
   { lo: [-0.7, 0, 0.2], hi: [-0.3, 0.25, 0.6], colour: '#c9b48a' },
 ];
-const kEye = [0.45, 0.75, 3.6], kAt = [0, 0.45, -0.4], kW = 560, kH = 420, kFocal = 700;
+const kEye = [0.45, 0.75, 3.6], kAt = [0, 0.45, -0.4], kW = 560, kH = 420;
 const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
 const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
 const unit = (a) => { const l = Math.hypot(...a); return a.map((x) => x / l); };
 const fwd = unit(sub(kAt, kEye)), right = unit(cross(fwd, [0, 1, 0])), up = cross(right, fwd);
+// The focal: 700 px, narrowed until every box corner is 7 px inside the frame, as
+// core/moss/moss_svg.cpp fits the land (1,000 px and 10 px on its 800 x 600 frame: this at 0.7).
+const kFocal = (() => {
+  let f = 700;
+  for (const b of kBoxes) {
+    for (let c = 0; c < 8; ++c) {
+      const p = [c & 1 ? b.hi[0] : b.lo[0], c & 2 ? b.hi[1] : b.lo[1], c & 4 ? b.hi[2] : b.lo[2]];
+      const d = sub(p, kEye), z = dot(d, fwd);
+      const ax = Math.abs(dot(d, right) / z), ay = Math.abs(dot(d, up) / z);
+      if (ax > 0) f = Math.min(f, (kW / 2 - 7) / ax);
+      if (ay > 0) f = Math.min(f, (kH / 2 - 7) / ay);
+    }
+  }
+  return f;
+})();
 function project(p) {
   const d = sub(p, kEye), z = dot(d, fwd);
   return [kW / 2 + kFocal * dot(d, right) / z, kH / 2 - kFocal * dot(d, up) / z, z];
@@ -137,13 +153,28 @@ function picture(mosses, x0, title) {
   parts.push(`<text x="${x0 + 6}" y="32" font-size="11" fill="#222">${(mosses || []).length} mosses, ${shown} in view from here</text>`);
   return parts.join('\n');
 }
+// One day's photon map as `niwa moss photons --out` draws it (core/moss/moss_svg.cpp: this file's
+// camera scaled to the land, on an 800 x 600 frame with a caption below), placed at (x0, y0) in a
+// kW x kH panel: the same viewpoint as the mosses' picture above it (figs 4.1/4.2 put the two side
+// by side).
+function photonPanel(args, x0, y0) {
+  const file = path.join(tmpDir, 'photons.svg');
+  run(['moss', 'photons', ...args, '--out', file]);
+  const text = fs.readFileSync(file, 'utf8');
+  const inner = text.slice(text.indexOf('>', text.indexOf('<svg')) + 1, text.lastIndexOf('</svg>'));
+  return `<svg x="${x0}" y="${y0}" width="${kW}" height="${kH + 22}" viewBox="0 0 800 628">${inner}</svg>`;
+}
+// panels: [{mosses, title, photons?: the `niwa moss photons` flags of the day-1 map under it}].
 function svgOf(panels, caption) {
   const w = kW * panels.length;
-  const body = panels.map((p, i) => picture(p.mosses, i * kW, p.title)).join('\n');
-  return `<svg xmlns="http://www.w3.org/2000/svg" width="${w}" height="${kH + 22}" viewBox="0 0 ${w} ${kH + 22}" font-family="sans-serif">
-<rect width="${w}" height="${kH + 22}" fill="#dfe8ee"/>
+  const rows = panels.some((p) => p.photons) ? 2 : 1;
+  const h = rows * (kH + 22);
+  const body = panels.map((p, i) => picture(p.mosses, i * kW, p.title) +
+    (p.photons ? '\n' + photonPanel(p.photons, i * kW, kH + 22) : '')).join('\n');
+  return `<svg xmlns="http://www.w3.org/2000/svg" width="${w}" height="${h + 22}" viewBox="0 0 ${w} ${h + 22}" font-family="sans-serif">
+<rect width="${w}" height="${h + 22}" fill="#dfe8ee"/>
 ${body}
-<text x="6" y="${kH + 16}" font-size="11" fill="#000">${esc(caption)}</text>
+<text x="6" y="${h + 16}" font-size="11" fill="#000">${esc(caption)}</text>
 </svg>
 `;
 }
@@ -231,9 +262,11 @@ for (const preset of presets) {
     check(preset, '4.2', 'all mosses at day 100, off / on', `${range(m.fig4_2.total_day100)} / ${range(m.fig4_1.total_day100)} = ${r3(t100)}`,
       '<= 0.5', t100 <= 0.5);
     fs.writeFileSync(path.join(outDir, `moss_fig4_1_4_2_${preset}.svg`), svgOf([
-      { mosses: grow(preset, seeds[0]).mosses, title: `fig 4.1: indirect light on (${preset}, seed ${seeds[0]}, day 300)` },
-      { mosses: grow(preset, seeds[0], ['--indirect', 'off']).mosses, title: `fig 4.2: indirect light off` },
-    ], `scripts/figures moss 4.1 4.2: light green gingoke, mid green haigoke, dark green sugigoke; slab humus | sandy | asphalt by x`));
+      { mosses: grow(preset, seeds[0]).mosses, title: `fig 4.1: indirect light on (${preset}, seed ${seeds[0]}, day 300)`,
+        photons: ['--preset', preset, '--seed', String(seeds[0]), '--indirect', 'on'] },
+      { mosses: grow(preset, seeds[0], ['--indirect', 'off']).mosses, title: `fig 4.2: indirect light off`,
+        photons: ['--preset', preset, '--seed', String(seeds[0]), '--indirect', 'off'] },
+    ], `scripts/figures moss 4.1 4.2: top, mosses at day 300 (gingoke light, haigoke mid, sugigoke dark green; slab humus | sandy | asphalt); below, day 1's photons, same viewpoint`));
   }
   if (want('4.3')) {
     const cool = seeds.map((s) => grow(preset, s, [], s === seeds[0]).stats);

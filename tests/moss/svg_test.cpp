@@ -3,6 +3,7 @@
 // caption; with indirect off no bounced dot; the title escaped; the same run gives the same bytes.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <glm/geometric.hpp>
 
 #include "moss/moss_run.h"
@@ -32,10 +33,11 @@ MossRun ThesisRun(int days, bool indirect) {
 TEST(MossPhotonSvg, OneDotPerVisiblePhotonInTwoColours) {
   const MossRun run = ThesisRun(2, true);
   const PhotonMap& map = run.photon_map();
-  const glm::dvec3 toward = glm::normalize(glm::dvec3(0, 0.6, 1));
+  const glm::dvec3 eye = PhotonViewOf(run.cells()).eye;
   std::size_t direct = 0, bounced = 0;
   for (const Photon& p : map.photons)
-    if (glm::dot(p.normal, toward) > 0) ++(p.depth == 0 ? direct : bounced);
+    if (glm::dot(glm::dvec3(p.normal), eye - glm::dvec3(p.position)) > 0)
+      ++(p.depth == 0 ? direct : bounced);
   ASSERT_GT(direct, 0u);
   ASSERT_GT(bounced, 0u);
   const std::string svg = run.PhotonsSvg(false);
@@ -49,6 +51,32 @@ TEST(MossPhotonSvg, OneDotPerVisiblePhotonInTwoColours) {
   // The next day's map is traced without advancing: day 3, and the run unchanged.
   EXPECT_NE(run.PhotonsSvg(true).find("day 3"), std::string::npos);
   EXPECT_EQ(run.done(), 2);
+}
+
+// The photon picture's viewpoint on the thesis scene is the figures' (scripts/lib/figures_moss.js
+// kEye, kAt), so figs 4.1/4.2's mosses and photons are seen from one place; the land fits the frame.
+TEST(MossPhotonSvg, TheThesisViewIsTheFiguresCameraAndTheLandFits) {
+  const MossRun run = ThesisRun(1, true);
+  const PhotonView v = PhotonViewOf(run.cells());
+  EXPECT_NEAR(v.eye.x, 0.45, 0.02);
+  EXPECT_NEAR(v.eye.y, 0.75, 0.02);
+  EXPECT_NEAR(v.eye.z, 3.6, 0.02);
+  EXPECT_NEAR(v.at.x, 0.0, 0.02);
+  EXPECT_NEAR(v.at.y, 0.45, 0.02);
+  EXPECT_NEAR(v.at.z, -0.4, 0.02);
+  const std::string svg = run.PhotonsSvg(false);
+  // Every triangle's corners inside the 800 x 600 frame.
+  std::size_t paths = 0;
+  for (std::size_t at = svg.find("<path d=\"M"); at != std::string::npos;
+       at = svg.find("<path d=\"M", at + 1), ++paths) {
+    const std::string d = svg.substr(at + 10, svg.find('"', at + 10) - at - 10);
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0, x2 = 0, y2 = 0;
+    ASSERT_EQ(std::sscanf(d.c_str(), "%lf %lfL%lf %lfL%lf %lfZ", &x0, &y0, &x1, &y1, &x2, &y2), 6)
+        << d;
+    for (const double x : {x0, x1, x2}) EXPECT_TRUE(x >= 0 && x <= 800) << d;
+    for (const double y : {y0, y1, y2}) EXPECT_TRUE(y >= 0 && y <= 600) << d;
+  }
+  EXPECT_GT(paths, 100u);
 }
 
 TEST(MossPhotonSvg, IndirectOffHasNoBouncedDotAndTheTitleIsEscaped) {
