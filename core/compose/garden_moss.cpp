@@ -14,6 +14,23 @@
 
 namespace niwa::compose {
 
+GardenGround MossGround(const GardenGround& ground) {
+  if (ground.n <= kMossGroundCells) return ground;
+  GardenGround coarse;
+  coarse.n = kMossGroundCells;
+  coarse.size = ground.size;
+  coarse.cell = ground.size / kMossGroundCells;
+  coarse.relief = ground.relief;
+  coarse.source = ground.source;
+  const int m = coarse.n + 1;
+  coarse.h.resize(static_cast<std::size_t>(m) * m);
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < m; ++i)
+      coarse.h[static_cast<std::size_t>(j) * m + i] =
+          ground.HeightAt(-ground.size / 2 + i * coarse.cell, -ground.size / 2 + j * coarse.cell);
+  return coarse;
+}
+
 moss::MossScene GardenMossLand(const GardenScene& scene) {
   moss::MossScene land;
   land.name = "garden";
@@ -28,7 +45,7 @@ moss::MossScene GardenMossLand(const GardenScene& scene) {
     land.geology.insert(land.geology.end(), triangles, geology);
     land.region.insert(land.region.end(), triangles, region);
   };
-  geom::TriMesh ground = scene.ground.Mesh();
+  geom::TriMesh ground = MossGround(scene.ground).Mesh();
   ground.normals.clear();
   ground.uvs.clear();
   append(ground, moss::Geology::kHumus, 0);
@@ -61,22 +78,32 @@ std::vector<moss::CanopySphere> GardenCanopy(const std::vector<TreeAt>& trees, d
 std::vector<float> GardenMossGroundLight(const moss::MossRun& run, const GardenGround& ground) {
   const moss::SoilCells& cells = run.cells();
   const std::vector<double>& S = run.world().S;
-  const int side = ground.n + 1;
+  const int n = std::min(ground.n, kMossGroundCells);  // MossGround's cells a side
+  const double cell = ground.size / n;
+  const int side = n + 1;
+  auto nearest = [&](double x, double step, int cells_a_side) {
+    return std::clamp(static_cast<int>(std::floor((x + ground.size / 2) / step + 0.5)), 0,
+                      cells_a_side);
+  };
   std::vector<double> sum(static_cast<std::size_t>(side) * side, 0.0), area(sum.size(), 0.0);
   for (std::size_t i = 0; i < cells.size() && i < S.size(); ++i) {
     if (cells.region[i] != 0) continue;
     const glm::dvec3& c = cells.centroid[i];
-    const int gi = std::clamp(
-        static_cast<int>(std::floor((c.x + ground.size / 2) / ground.cell + 0.5)), 0, ground.n);
-    const int gj = std::clamp(
-        static_cast<int>(std::floor((c.z + ground.size / 2) / ground.cell + 0.5)), 0, ground.n);
-    const std::size_t k = static_cast<std::size_t>(gj) * side + gi;
+    const std::size_t k =
+        static_cast<std::size_t>(nearest(c.z, cell, n)) * side + nearest(c.x, cell, n);
     sum[k] += S[i] * cells.area[i];
     area[k] += cells.area[i];
   }
-  std::vector<float> out(sum.size(), -1.0f);
-  for (std::size_t k = 0; k < out.size(); ++k)
-    if (area[k] > 0) out[k] = static_cast<float>(sum[k] / area[k]);
+  const int fine = ground.n + 1;
+  std::vector<float> out(static_cast<std::size_t>(fine) * fine, -1.0f);
+  for (int j = 0; j < fine; ++j)
+    for (int i = 0; i < fine; ++i) {
+      const std::size_t k =
+          static_cast<std::size_t>(nearest(-ground.size / 2 + j * ground.cell, cell, n)) * side +
+          nearest(-ground.size / 2 + i * ground.cell, cell, n);
+      if (area[k] > 0)
+        out[static_cast<std::size_t>(j) * fine + i] = static_cast<float>(sum[k] / area[k]);
+    }
   return out;
 }
 

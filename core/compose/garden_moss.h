@@ -19,9 +19,18 @@
 
 namespace niwa::compose {
 
-// The land: the ground's triangles (humus, region "ground") and every object's (stone and plaster
-// are hard, impervious surfaces: geology asphalt, the thesis's; region its kind: "wall", "rock",
-// "lantern"), in the garden's frame.
+// The most cells a side of the moss's ground: a finer garden ground (ground_res 512 on a 100 m
+// garden: 525 k triangles, about 176 s of moss for 15 years) is resampled to this for the moss.
+constexpr int kMossGroundCells = 128;
+
+// The ground the moss grows on: `ground` itself at kMossGroundCells cells a side or fewer, else a
+// grid of kMossGroundCells cells over the same square whose vertices take the ground's height
+// there (GardenGround::HeightAt); its relief and source are the ground's.
+GardenGround MossGround(const GardenGround& ground);
+
+// The land: the moss's ground's triangles (MossGround; humus, region "ground") and every object's
+// (stone and plaster are hard, impervious surfaces: geology asphalt, the thesis's; region its kind:
+// "wall", "rock", "lantern"), in the garden's frame.
 moss::MossScene GardenMossLand(const GardenScene& scene);
 
 // The trees' leaves as the moss's canopy: every tree's leaf spheres of its last started year
@@ -38,8 +47,9 @@ std::vector<moss::CanopySphere> GardenCanopy(const std::vector<TreeAt>& trees, d
 // the last days were grown under (none: every ground cell is open).
 // The moss's light S of the last day (W/m², light_smoothing_days' mean) on the ground, per vertex
 // of its grid in GardenGround's order (vertex (i, j) at x = −L/2 + i·cell, z = −L/2 + j·cell):
-// the area-weighted mean over the ground's cells whose centroid lies nearest that vertex; −1 where
-// none does. For a page's overlay.
+// the area-weighted mean over the moss's ground cells whose centroid lies nearest that vertex of
+// the moss's ground (MossGround), read at the moss's ground vertex nearest each vertex of
+// `ground`; −1 where no cell is. For a page's overlay.
 std::vector<float> GardenMossGroundLight(const moss::MossRun& run, const GardenGround& ground);
 
 nlohmann::ordered_json GardenMossStats(const moss::MossRun& run, const moss::CanopyShade* canopy);

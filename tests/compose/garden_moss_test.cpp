@@ -58,6 +58,48 @@ TEST(GardenMoss, TheLandIsTheGroundAndTheObjects) {
   EXPECT_EQ(land.geology.back(), moss::Geology::kAsphalt);
 }
 
+// A ground finer than kMossGroundCells a side is resampled for the moss: 128 cells a side whose
+// vertices lie on the garden's ground; the light overlay still covers every vertex of the fine
+// grid. At 128 or fewer the moss's ground is the garden's own (the default garden's bytes).
+TEST(GardenMoss, AFineGroundIsResampledForTheMoss) {
+  GardenState s = MossGarden(true);
+  s.ground = GroundKind::kTerrain;
+  ASSERT_TRUE(s.params.Set(GardenParam::kGroundRes, 300).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kYears, 1).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kMossDays, 2).ok());
+  Result<GardenScene> scene = BuildGardenScene(s, Budget{});
+  ASSERT_TRUE(scene.ok()) << scene.status().Line();
+  ASSERT_EQ(scene->ground.n, 300);
+  const GardenGround coarse = MossGround(scene->ground);
+  ASSERT_EQ(coarse.n, kMossGroundCells);
+  EXPECT_DOUBLE_EQ(coarse.size, scene->ground.size);
+  ASSERT_GT(scene->ground.relief, 0.1);  // a terrain: the heights matter
+  for (int j = 0; j <= coarse.n; j += 7)
+    for (int i = 0; i <= coarse.n; i += 5) {
+      const double x = -coarse.size / 2 + i * coarse.cell, z = -coarse.size / 2 + j * coarse.cell;
+      EXPECT_DOUBLE_EQ(coarse.At(i, j), scene->ground.HeightAt(x, z));
+    }
+  const moss::MossScene land = GardenMossLand(*scene);
+  EXPECT_EQ(land.mesh.triangle_count(), 2u * kMossGroundCells * kMossGroundCells +
+                                            scene->objects[0].mesh.triangle_count());
+  const GardenRun run = Grown(s);
+  ASSERT_NE(run.moss(), nullptr);
+  const std::vector<float> light = GardenMossGroundLight(*run.moss(), run.scene().ground);
+  ASSERT_EQ(light.size(), 301u * 301u);
+  // Every fine vertex reads a moss cell but those nearest the moss grid's (0, 0) and (n, n)
+  // corners, which no triangle's centroid is nearest (each cell's two triangles bin to its (i + 1,
+  // j) and (i, j + 1) corners): about (301 / 128)² each.
+  std::size_t none = 0;
+  for (const float v : light) none += v < 0 ? 1 : 0;
+  EXPECT_LE(none, 2u * 3u * 3u);
+  EXPECT_GE(light[150 * 301 + 150], 0.0f);
+  // At ground_res 24 (≤ 128) the moss's ground is the garden's, vertex for vertex.
+  Result<GardenScene> small = BuildGardenScene(MossGarden(true), Budget{});
+  ASSERT_TRUE(small.ok());
+  EXPECT_EQ(MossGround(small->ground).h, small->ground.h);
+  EXPECT_EQ(MossGround(small->ground).n, small->ground.n);
+}
+
 TEST(GardenMoss, TheCanopyShadesTheMossUnderTheCrown) {
   const GardenRun shaded = Grown(MossGarden(true));
   const GardenRun open = Grown(MossGarden(false));
