@@ -1,8 +1,10 @@
 // Garden workloads (core/compose/garden_*, issue 33 item 7): the planting rules alone over a flat
 // 1 km square asking for 100,000 trees (the unit one dart: the goal is 100 k candidates in
 // <= 100 ms, <= 1 us a dart), and the scale workload: a 100 m x 100 m garden on a 512² terrain
-// ground with 100 trees of 10 species grown to 15 years on one clock (shade on), timed once. The
-// scale workload grows the default ivy on the wall, no moss yet (docs/garden-model.md).
+// ground with 100 trees of 10 species grown to 15 years on one clock (shade on), ivy on the four
+// default objects and the default moss, timed once; and the 1,000-tree export: a 320 m garden of
+// about 1,000 trees grown alone (shade off: 3 variants of each of the 3 default species, instanced)
+// to 10 years and written as .glb, timed once, its check the .glb's megabytes (the goal: <= 50 MB).
 #include <memory>
 #include <string>
 #include <vector>
@@ -85,6 +87,35 @@ Workload Scale() {
 
 }  // namespace
 
-std::vector<Workload> GardenWorkloads() { return {Plant(), Scale()}; }
+Workload Export1000() {
+  Workload wl;
+  wl.name = "garden/export-1000-trees";
+  wl.note =
+      "GardenRun::Start, Advance and Export(\"glb\"): 320 m x 320 m terrain garden, density 0.0098 "
+      "(about 1,000 trees of the 3 default species, 3 variants each), spacing 3 m, shade off "
+      "(so each variant is one instanced mesh), 10 years, the default ivy and moss; timed once "
+      "(cold); check: the .glb's MB (goal <= 50 with instancing)";
+  wl.once = true;
+  wl.prepare = []() -> WorkloadBody {
+    return []() {
+      compose::GardenState state = compose::DefaultGardenState();
+      (void)state.params.Set(GardenParam::kSize, 320);
+      (void)state.params.Set(GardenParam::kDensity, 0.0098);
+      (void)state.params.Set(GardenParam::kSpacing, 3);
+      (void)state.params.Set(GardenParam::kSlopeMax, 90);
+      (void)state.params.Set(GardenParam::kShade, 0);
+      compose::LayOutDefaults(&state);
+      Result<compose::GardenRun> run = compose::GardenRun::Start(state, Budget{});
+      if (!run.ok() || !run->Advance({}).ok()) return -1.0;
+      Result<std::string> glb = run->Export("glb");
+      if (!glb.ok()) return -1.0;
+      return static_cast<double>(glb->size()) / 1e6 +
+             1e-6 * static_cast<double>(run->planting().trees.size());
+    };
+  };
+  return wl;
+}
+
+std::vector<Workload> GardenWorkloads() { return {Plant(), Scale(), Export1000()}; }
 
 }  // namespace niwa
