@@ -2,8 +2,9 @@
 // grow' (the stage, the planting and every tree grown on one clock; the .glb, the 16-bit heightmap,
 // the plan as SVG, the statistics as one JSON object) and 'garden plant' (the planting rules alone:
 // positions as JSON, fast), and the table for 'niwa params garden'. A thin adapter over
-// compose::GardenRun: flags into a state (the garden file's heightmap and mask read relative to the
-// file), the run, its outputs written all or none, the stats with the CLI's timings. cli-order: 70
+// compose::GardenRun: flags into a state (the garden file's heightmap, ground mesh and mask read
+// relative to the file), the run, its outputs written all or none, the stats with the CLI's
+// timings. cli-order: 70
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <memory>
@@ -18,6 +19,7 @@
 #include "compose/garden_run.h"
 #include "compose/garden_state.h"
 #include "io/hash_codec.h"
+#include "io/mesh_reader.h"
 #include "params/param_text.h"
 #include "run/field_names.h"
 
@@ -71,6 +73,14 @@ compose::GardenState ResolveGardenState(const GardenOptions& o) {
                    "--garden " + Echo(o.garden) + ": ground.file", kMaxGardenImageBytes);
       if (!png.ok()) Fail(png.status());
       state.heightmap_png.assign(png->begin(), png->end());
+    }
+    if (state.ground == compose::GroundKind::kMesh && !state.heightmap_name.empty()) {
+      Result<geom::TriMesh> mesh =
+          io::ReadMeshFile(BesideGardenFile(o.garden, state.heightmap_name));
+      if (!mesh.ok())
+        Fail(Status::Error("--garden " + Echo(o.garden) + ": ground.file",
+                           mesh.status().Line() + "; must be a .glb, .gltf or .obj ground"));
+      state.ground_mesh = std::move(*mesh);
     }
     if (!state.mask_name.empty()) {
       Result<std::string> png =
@@ -168,10 +178,11 @@ int RunGardenPlant(const GardenOptions& o, std::ostream& out) {
 }
 
 void AddGardenStateFlags(CLI::App* cmd, GardenOptions* o) {
-  AddInputFlag(cmd, "--garden", &o->garden,
-               "Garden file JSON {params, ground: {kind: flat|terrain|heightmap, terrain: {...}, "
-               "file}, objects: [{kind, pos: [x, z], rot, scale}], plants: [{species, seed, age, "
-               "pos, rot}], mix: {species: weight}, mask} (files relative to it)");
+  AddInputFlag(
+      cmd, "--garden", &o->garden,
+      "Garden file JSON {params, ground: {kind: flat|terrain|heightmap|mesh, terrain: {...}, "
+      "file}, objects: [{kind, pos: [x, z], rot, scale}], plants: [{species, seed, age, "
+      "pos, rot}], mix: {species: weight}, mask} (files relative to it)");
   cmd->add_option("--url", o->url,
                   "A share-link hash (size=...&plants=keyaki:1:0:3:2:0&terrain.preset=...); "
                   "other flags override it");
@@ -206,7 +217,8 @@ void AddGardenCommands(CLI::App& app, CommandList& commands) {
 
   CLI::App* grow = garden_app->add_subcommand(
       "grow",
-      "Grow the garden: the ground (flat, a terrain from a seed contour, or a heightmap), its "
+      "Grow the garden: the ground (flat, a terrain from a seed contour, a heightmap or a mesh), "
+      "its "
       "objects, trees placed by hand and by the planting rules, grown year by year on one clock "
       "(neighbours shading each other); the .glb, heightmap, plan and statistics");
   auto o = std::make_shared<GardenOptions>();

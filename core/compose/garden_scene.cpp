@@ -4,9 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 
+#include "geom/bvh.h"
 #include "geom/mesh_metrics.h"
 #include "geom/primitives.h"
+#include "geom/ray_cast.h"
 #include "image/png.h"
 #include "math/det_math.h"
 #include "random/pcg32.h"
@@ -15,6 +18,12 @@
 
 namespace niwa::compose {
 namespace {
+
+// A ground mesh: bytes a triangle holds in its BVH while the grid's rays are cast, seconds a
+// triangle's build takes and seconds a ray takes (generous: docs/budgets.md).
+constexpr double kGroundMeshBytesPerTriangle = 256;
+constexpr double kGroundMeshSecondsPerTriangle = 1e-6;
+constexpr double kGroundMeshSecondsPerRay = 5e-6;
 
 // Bytes a ground vertex holds while built (a height, then position, normal, uv and its share of
 // the indices) and seconds a vertex takes: counts times generous constants (docs/budgets.md).
@@ -162,6 +171,54 @@ Result<GardenGround> BuildGardenGround(const GardenState& state, const Budget& b
       }
     g.source = "terrain " + (ts.preset.empty() ? std::string("default") : ts.preset) + " (seed " +
                std::to_string(ts.seed) + ")";
+  } else if (state.ground == GroundKind::kMesh) {
+    // Any mesh as the ground, as a heightmap is: its plan's bounding square (the longer side,
+    // centred) stretched over the garden's square, x east and z south as the mesh's own x and z,
+    // and the surface seen from above (a ray down at each vertex of the grid: the highest hit)
+    // scaled to `relief`. Overhangs and caves are lost; a vertex whose ray meets nothing (a hole,
+    // or beyond a round mesh's rim) takes the lowest height hit.
+    const geom::TriMesh& mesh = state.ground_mesh;
+    const std::string name = "'" + state.heightmap_name + "'";
+    if (mesh.triangle_count() == 0)
+      return Status::Error("ground.file", name + " has no triangles; must be a mesh to stand on");
+    const double triangles = static_cast<double>(mesh.triangle_count());
+    NIWA_RETURN_IF_ERROR(CheckEstimate(
+        {triangles * kGroundMeshBytesPerTriangle,
+         triangles * kGroundMeshSecondsPerTriangle + vertices * kGroundMeshSecondsPerRay,
+         "the ground mesh (" + FormatCount(triangles) + " triangles, " + FormatCount(vertices) +
+             " rays)"},
+        budget, "lower ground_res or use a smaller mesh"));
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (const glm::vec3& p : mesh.positions) {
+      lo = glm::min(lo, glm::dvec3(p));
+      hi = glm::max(hi, glm::dvec3(p));
+    }
+    const double side = std::max(hi.x - lo.x, hi.z - lo.z);
+    if (!(side > 0) || !std::isfinite(side))
+      return Status::Error("ground.file", name + " has no extent in plan (x, z); must be a ground");
+    const double cx = (lo.x + hi.x) / 2, cz = (lo.z + hi.z) / 2;
+    const geom::Bvh bvh = geom::Bvh::Build(mesh);
+    const float top = static_cast<float>(hi.y + 1.0 + 0.01 * (hi.y - lo.y));
+    std::vector<bool> hit(g.h.size(), false);
+    double lowest = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) {
+        const double px = cx + (static_cast<double>(i) / g.n - 0.5) * side;
+        const double pz = cz + (static_cast<double>(j) / g.n - 0.5) * side;
+        const geom::RayHit r = geom::FirstHitWithoutNormal(
+            mesh, bvh, glm::vec3(static_cast<float>(px), top, static_cast<float>(pz)),
+            glm::vec3(0, -1, 0), std::numeric_limits<float>::infinity());
+        if (!r.hit) continue;
+        const std::size_t k = static_cast<std::size_t>(j) * m + i;
+        g.h[k] = static_cast<double>(r.point.y);
+        hit[k] = true;
+        lowest = std::min(lowest, g.h[k]);
+      }
+    if (!std::isfinite(lowest))
+      return Status::Error("ground.file", name + ": no ray from above meets it; must be a ground");
+    for (std::size_t k = 0; k < g.h.size(); ++k)
+      if (!hit[k]) g.h[k] = lowest;
+    g.source = "mesh " + state.heightmap_name + " (" + FormatCount(triangles) + " triangles)";
   } else {
     Result<image::Gray16Image> img =
         image::DecodeGray16Png(state.heightmap_png.data(), state.heightmap_png.size());

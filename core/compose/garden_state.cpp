@@ -131,6 +131,8 @@ const char* GroundKindName(GroundKind kind) {
       return "terrain";
     case GroundKind::kHeightmap:
       return "heightmap";
+    case GroundKind::kMesh:
+      return "mesh";
   }
   return "flat";
 }
@@ -139,6 +141,7 @@ std::optional<GroundKind> GroundKindOf(std::string_view name) {
   if (name == "flat") return GroundKind::kFlat;
   if (name == "terrain") return GroundKind::kTerrain;
   if (name == "heightmap") return GroundKind::kHeightmap;
+  if (name == "mesh") return GroundKind::kMesh;
   return std::nullopt;
 }
 
@@ -274,6 +277,9 @@ Status CheckGardenState(const GardenState& state) {
   if (state.ground == GroundKind::kHeightmap && state.heightmap_png.empty() &&
       state.heightmap_name.empty())
     return Status::Error("ground.file", "a heightmap ground needs a 16-bit grey PNG file");
+  if (state.ground == GroundKind::kMesh && state.ground_mesh.triangle_count() == 0 &&
+      state.heightmap_name.empty())
+    return Status::Error("ground.file", "a mesh ground needs a .glb, .gltf or .obj file");
   return Status::Ok();
 }
 
@@ -317,21 +323,26 @@ Status ApplyGardenStateJson(const std::string& text, GardenState* state) {
       }
     } else if (key == "ground") {
       if (!v.is_object())
-        return Status::Error("ground", "must be an object {kind: flat, terrain or heightmap}");
+        return Status::Error("ground",
+                             "must be an object {kind: flat, terrain, heightmap or mesh}");
       for (const auto& [k, value] : v.items()) {
         if (k == "kind") {
           const std::optional<GroundKind> kind =
               value.is_string() ? GroundKindOf(value.get<std::string>()) : std::nullopt;
-          if (!kind) return Status::Error("ground.kind", "must be flat, terrain or heightmap");
+          if (!kind)
+            return Status::Error("ground.kind", "must be flat, terrain, heightmap or mesh");
           next.ground = *kind;
         } else if (k == "terrain") {
           NIWA_RETURN_IF_ERROR(
               terrain::ApplyTerrainStateJson(value.dump(), &next.terrain).Within("ground.terrain"));
         } else if (k == "file") {
           if (!value.is_string() || value.get<std::string>().empty())
-            return Status::Error("ground.file", "must name a 16-bit grey PNG file");
+            return Status::Error("ground.file",
+                                 "must name a 16-bit grey PNG file (a heightmap ground) or a .glb, "
+                                 ".gltf or .obj file (a mesh ground)");
           next.heightmap_name = value.get<std::string>();
           next.heightmap_png.clear();
+          next.ground_mesh = geom::TriMesh{};
         } else {
           return Status::Error("ground." + Echo(k),
                                "unknown field; the ground has kind, terrain and file");
@@ -428,7 +439,8 @@ std::string GardenStateJson(const GardenState& state) {
   ground["kind"] = GroundKindName(state.ground);
   if (state.ground == GroundKind::kTerrain)
     ground["terrain"] = nlohmann::ordered_json::parse(terrain::TerrainStateJson(state.terrain));
-  if (state.ground == GroundKind::kHeightmap) ground["file"] = state.heightmap_name;
+  if (state.ground == GroundKind::kHeightmap || state.ground == GroundKind::kMesh)
+    ground["file"] = state.heightmap_name;
   j["ground"] = ground;
   j["objects"] = nlohmann::ordered_json::array();
   for (const GardenObject& o : state.objects)
@@ -517,9 +529,11 @@ void ApplyGardenHash(std::string_view hash, std::string_view prefix, GardenState
     if (bare == "ground") {
       const std::optional<GroundKind> kind = GroundKindOf(value);
       if (!kind) {
-        notice("ground: '" + Printable(value) + "' dropped; must be flat, terrain or heightmap");
-      } else if (*kind == GroundKind::kHeightmap) {
-        notice("ground: a heightmap is not carried by a link; the ground is flat");
+        notice("ground: '" + Printable(value) +
+               "' dropped; must be flat, terrain, heightmap or mesh");
+      } else if (*kind == GroundKind::kHeightmap || *kind == GroundKind::kMesh) {
+        notice(std::string("ground: a ") + (*kind == GroundKind::kMesh ? "mesh" : "heightmap") +
+               " is not carried by a link; the ground is flat");
         state->ground = GroundKind::kFlat;
       } else {
         state->ground = *kind;

@@ -13,6 +13,7 @@
 
 #include "base/status.h"
 #include "compose/garden_params.h"
+#include "geom/tri_mesh.h"
 #include "moss/moss_state.h"
 #include "terrain/terrain_state.h"
 
@@ -20,7 +21,7 @@ namespace niwa::compose {
 
 // ---- data ----
 
-enum class GroundKind { kFlat, kTerrain, kHeightmap };
+enum class GroundKind { kFlat, kTerrain, kHeightmap, kMesh };
 
 // A built-in object placed on the ground: its base's centre at (x, ground height, z), turned by
 // rot degrees about y (counter-clockwise seen from above), scaled by scale.
@@ -56,8 +57,11 @@ struct GardenState {
   GroundKind ground = GroundKind::kTerrain;
   terrain::TerrainState terrain;  // the ground when kTerrain (its heights scaled to `relief`)
   // kHeightmap: a 16-bit (or 8-bit) grey PNG, row 0 the north (−z) edge, read by the front end.
+  // kMesh: any .glb, .gltf or .obj, read by the front end into `ground_mesh` (its world space, y
+  // up); heightmap_name is then the mesh file's name (the JSON's ground.file, either kind).
   std::string heightmap_name;
   std::vector<unsigned char> heightmap_png;
+  geom::TriMesh ground_mesh;
   // The planting rules' density mask: a grey or colour PNG over the garden (row 0 north), its
   // luminance the chance a candidate is kept; none when empty.
   std::string mask_name;
@@ -116,12 +120,14 @@ GardenState DefaultGardenState();
 // the field ("plants[1].species", "objects[0].pos", "mix", "alt_min").
 Status CheckGardenState(const GardenState& state);
 
-// Applies {params: {...}, ground: {kind: "flat" | "terrain" | "heightmap", terrain: {...the
-// terrain's state JSON...}, file: "h.png"}, objects: [{kind, pos: [x, z], rot, scale}], plants:
+// Applies {params: {...}, ground: {kind: "flat" | "terrain" | "heightmap" | "mesh", terrain:
+// {...the terrain's state JSON...}, file: "h.png" or "hill.glb"}, objects: [{kind, pos: [x, z],
+// rot, scale}], plants:
 // [{species, seed, age, pos: [x, z], rot}], mix: {species: weight}, mask: "m.png", ivy: {preset,
 // on: ["objects[0]", "plants[1]"]}, moss: {...the moss's state JSON...}} onto state.
-// Given lists replace the state's; a heightmap's and a mask's file names are kept for the front end
-// to read (their bytes are cleared). Strict: the first bad field is the error, the state unchanged.
+// Given lists replace the state's; a heightmap's, a ground mesh's and a mask's file names are kept
+// for the front end to read (their bytes and mesh are cleared). Strict: the first bad field is the
+// error, the state unchanged.
 Status ApplyGardenStateJson(const std::string& text, GardenState* state);
 // What ApplyGardenStateJson reads back to the same state (files by name).
 std::string GardenStateJson(const GardenState& state);
@@ -130,8 +136,8 @@ std::string GardenStateJson(const GardenState& state);
 // heightmap, the terrain's keys under "terrain.", objects=kind:x:z:rot:scale,..., plants=
 // species:seed:age:x:z:rot,..., mix=species:weight,..., ivy=objects[0],..., ivy_preset=artist, the
 // moss's keys under "moss." when its state is not GardenMossDefaults' (a
-// heightmap or a mask is not carried: a link of such a garden says so in `notices` when read). Keys
-// carry `prefix`.
+// heightmap, a ground mesh or a mask is not carried: a link of such a garden says so in `notices`
+// when read). Keys carry `prefix`.
 std::string EncodeGardenHash(const GardenState& state, std::string_view prefix = "");
 // Forgiving, as every study's hash: bad values clamped or dropped with a printable notice each.
 void ApplyGardenHash(std::string_view hash, std::string_view prefix, GardenState* state,

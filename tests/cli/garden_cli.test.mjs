@@ -80,6 +80,46 @@ if (ramp.status === 0) {
     `${t[0].pos[1]} ${t[1].pos[1]}`);
 }
 
+// A mesh ground: the same ramp as an OBJ beside the garden file (its plan's square stretched over
+// the garden, its surface from above scaled to the relief, as a heightmap is).
+writeFileSync(join(work, 'ramp.obj'), 'v -10 0 -10\nv 10 2 -10\nv 10 2 10\nv -10 0 10\nf 1 3 2\nf 1 4 3\n');
+writeFileSync(join(work, 'meshramp.json'), JSON.stringify({ params: { relief: 4, size: 20, ground_res: 16, years: 1, density: 0 },
+  ground: { kind: 'mesh', file: 'ramp.obj' }, objects: [], plants: [{ species: 'keyaki', pos: [9, 0] }, { species: 'keyaki', pos: [-9, 0] }] }));
+const meshRamp = spawn(native, ['garden', 'plant', '--garden', join(work, 'meshramp.json')]);
+check('mesh ground: an OBJ read beside the garden file, exit 0', meshRamp.status === 0, meshRamp.stderr);
+if (meshRamp.status === 0) {
+  const t = JSON.parse(meshRamp.stdout).trees;
+  check('mesh ground: the OBJ ramp rises west to east to the relief', Math.abs(t[0].pos[1] - 3.8) < 0.02 && Math.abs(t[1].pos[1] - 0.2) < 0.02,
+    `${t[0].pos[1]} ${t[1].pos[1]}`);
+}
+// Real assets as the ground: tests/data/meshes/rock1.glb (ez-tree's scanned rock, Draco-compressed: a
+// mound seen from above) natively, where Draco is decoded; the WASM CLI names the field and Draco
+// (the page decodes Draco before handing a mesh over). The Stanford bunny (bunny.obj) natively and in
+// WASM: the same stats and the same .glb.
+writeFileSync(join(work, 'rock1.glb'), readFileSync(join(root, 'tests/data/meshes/rock1.glb')));
+writeFileSync(join(work, 'bunny.obj'), readFileSync(join(root, 'tests/data/meshes/bunny.obj')));
+const meshGround = (file) => JSON.stringify({ params: { relief: 3, size: 16, ground_res: 24, years: 2, density: 0.02,
+  spacing: 2, slope_max: 90, moss_days: 2, max_triangles: 1500 }, ground: { kind: 'mesh', file }, objects: [], plants: [] });
+writeFileSync(join(work, 'rockground.json'), meshGround('rock1.glb'));
+writeFileSync(join(work, 'bunnyground.json'), meshGround('bunny.obj'));
+const rock = spawn(native, ['garden', 'grow', '--garden', join(work, 'rockground.json'), '--stats']);
+const rockStats = rock.status === 0 ? JSON.parse(rock.stdout) : {};
+check('mesh ground rock1.glb (Draco) native: the ground is the mesh, at the relief, and trees stand on it',
+  rock.status === 0 && /^mesh rock1\.glb \(1,756 triangles\)/.test(rockStats.ground?.source ?? '')
+  && Math.abs((rockStats.ground?.relief ?? 0) - 3) < 1e-9 && (rockStats.trees?.count ?? 0) > 0, `${rock.stderr} ${JSON.stringify(rockStats.ground)}`);
+const rockWasm = spawn(wasm, ['garden', 'grow', '--garden', join(work, 'rockground.json'), '--stats']);
+check('mesh ground rock1.glb (Draco) WASM CLI: exit 2, one line naming ground.file and Draco', rockWasm.status === 2
+  && /^niwa: error: .*ground\.file: rock1\.glb: .*Draco/.test(rockWasm.stderr) && rockWasm.stderr.trim().split('\n').length === 1, rockWasm.stderr);
+const bunny = {};
+for (const cmd of [native, wasm]) {
+  const out = join(work, `bunny-${buildName(cmd)}.glb`);
+  const r = spawn(cmd, ['garden', 'grow', '--garden', join(work, 'bunnyground.json'), '--stats', '--out', out]);
+  check(`mesh ground bunny.obj ${buildName(cmd)}: exit 0`, r.status === 0, r.stderr);
+  bunny[buildName(cmd)] = r.status === 0 ? { stats: withoutMs(JSON.parse(r.stdout)), glb: readFileSync(out) } : { stats: {}, glb: Buffer.alloc(0) };
+}
+check('mesh ground bunny.obj: native == WASM stats and .glb bytes', JSON.stringify(bunny.native.stats) === JSON.stringify(bunny.wasm.stats)
+  && bunny.native.glb.length > 0 && bunny.native.glb.equals(bunny.wasm.glb), JSON.stringify(bunny.native.stats.ground));
+
 const maskRgba = new Uint8Array(8 * 8 * 4).fill(255);
 for (let y = 0; y < 8; ++y) for (let x = 0; x < 4; ++x) maskRgba.fill(0, 4 * (8 * y + x), 4 * (8 * y + x) + 3);
 writeFileSync(join(work, 'east.png'), pngBytes(8, 8, maskRgba));
@@ -136,6 +176,8 @@ writeFileSync(join(work, 'in-wall.json'), JSON.stringify({ plants: [{ species: '
 writeFileSync(join(work, 'oak.json'), JSON.stringify({ plants: [{ species: 'oak', pos: [0, 0] }] }));
 writeFileSync(join(work, 'badmap.json'), JSON.stringify({ ground: { kind: 'heightmap', file: 'slope.json' } }));
 writeFileSync(join(work, 'badmoss.json'), JSON.stringify({ moss: { params: { photons: -5 } } }));
+writeFileSync(join(work, 'badground.json'), JSON.stringify({ ground: { kind: 'mesh', file: 'slope.json' } }));
+writeFileSync(join(work, 'noground.json'), JSON.stringify({ ground: { kind: 'mesh' } }));
 const bad = [
   [['--set', 'size=2'], /--set: size/],
   [['--years', '99'], /--years/],
@@ -144,6 +186,8 @@ const bad = [
   [['--garden', join(work, 'badmap.json'), '--set', 'ground_res=16'], /ground\.file/],
   [['--url', 'plants=oak:1:0:0:0:0'], /--url: plants/],
   [['--garden', join(work, 'badmoss.json')], /moss.*photons/],
+  [['--garden', join(work, 'badground.json')], /ground\.file.*slope\.json/],
+  [['--garden', join(work, 'noground.json')], /ground\.file: a mesh ground needs a \.glb, \.gltf or \.obj file/],
   [['--url', 'moss.photons=abc'], /--url: moss\.photons/],
   [['--set', 'bark=1', '--set', 'bark_map_size=300'], /bark_map_size/],
   [['--set', 'bark=1', '--set', 'moss_days=0', '--max-seconds', '2'], /error: bark: the simulated bark of \d+ distinct trees .* set bark 0/],

@@ -111,6 +111,44 @@ TEST(Garden, GroundHeightsAreItsDrawnTrianglesAndThingsStandOnThem) {
         << t.species << " at " << t.x << ", " << t.z;
 }
 
+// A mesh ground: its plan's square over the garden, the surface seen from above scaled to the
+// relief: a square pyramid (apex at the centre) gives its height falling linearly to the rim, the
+// highest hit wins over a lower sheet under it, and a hole in the mesh takes the lowest height hit.
+TEST(Garden, AMeshGroundIsItsSurfaceFromAbove) {
+  GardenState s = DefaultGardenState();
+  s.ground = GroundKind::kMesh;
+  s.heightmap_name = "pyramid.obj";
+  ASSERT_TRUE(s.params.Set(GardenParam::kSize, 20).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kGroundRes, 20).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kRelief, 5).ok());
+  s.default_layout = false;
+  s.objects.clear();
+  s.plants.clear();
+  geom::TriMesh& m = s.ground_mesh;
+  // A pyramid 4 units wide, 1 high, over x, z in [-2, 2], with its north-east quarter's face left
+  // out (a hole), and a lower sheet at y = -3 under all of it.
+  m.positions = {{-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}, {0, 1, 0},
+                 {-2, -3, -2}, {2, -3, -2}, {2, -3, 2}, {-2, -3, 2}};
+  m.indices = {0, 4, 1, 2, 4, 3, 3, 4, 0, 5, 6, 7, 5, 7, 8};  // no 1-4-2 face (east)
+  Result<GardenScene> scene = BuildGardenScene(s, Budget{});
+  ASSERT_TRUE(scene.ok()) << scene.status().Line();
+  const GardenGround& g = scene->ground;
+  EXPECT_EQ(g.source, "mesh pyramid.obj (5 triangles)");
+  EXPECT_NEAR(g.relief, 5.0, 1e-9);
+  // The apex at the centre; halfway to the west rim (x = -5 m: mesh x = -1) half its height above
+  // the rim's; the east face is a hole: its ray meets the sheet 3 below the rim, the lowest hit (0).
+  EXPECT_NEAR(g.HeightAt(0, 0), 5.0, 1e-6);
+  const double rim = g.HeightAt(-10, 0);
+  EXPECT_NEAR(g.HeightAt(-5, 0), rim + (5.0 - rim) / 2, 1e-6);
+  EXPECT_NEAR(g.HeightAt(5, 0), 0.0, 1e-6);
+  EXPECT_NEAR(rim, 5.0 * 3 / 4, 1e-6);  // the sheet at -3, the apex at 1: the rim 3 of 4 up
+  // No triangles: refused naming ground.file.
+  s.ground_mesh = geom::TriMesh{};
+  Result<GardenScene> none = BuildGardenScene(s, Budget{});
+  ASSERT_FALSE(none.ok());
+  EXPECT_EQ(none.status().field(), "ground.file");
+}
+
 TEST(Garden, PlantingRulesKeepSpacingAltitudeSlopeAndObjects) {
   GardenState s = SmallGarden();
   ASSERT_TRUE(s.params.Set(GardenParam::kAltMin, 1).ok());
