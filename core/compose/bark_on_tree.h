@@ -1,11 +1,11 @@
 // The bark study on a grown Niwa tree (issue 30 item 3; ../shared/specs/bark.md §6): the trunk's
 // radius history at a height, the 2-layer bark model run on it (one cycle: the real circumference,
 // the strain the visible surface has seen since it formed, read off the tree's own radial growth
-// over at most the last W years), and the tree's .glb re-textured with the maps:
-// the tile wrapped a whole number of times around each branch, v in metres over the tile's height,
-// an earlier year's maps on the young shoots. Part of the composition tier (core/compose includes
-// the tree and bark studies; neither includes it), for `niwa tree grow --bark sim` and the page
-// alike. Does not: grow the tree (the caller's Grower or TreeRun does, calling RecordTrunkYear
+// over at most the last W years), and the tree's .glb re-textured with the maps: the tile wrapped
+// a whole number of times around each branch, v in metres over the tile's height, a younger
+// surface's maps (half the strain) on the young shoots. Part of the composition tier (core/compose
+// includes the tree and bark studies; neither includes it), for `niwa tree grow --bark sim` and the
+// page alike. Does not: grow the tree (the caller's Grower or TreeRun does, calling RecordTrunkYear
 // after each year), change the procedural export (the default .glb keeps its bytes), run the
 // 4-layer model, or name a flag (errors name "bark", "bark_height", "bark_species",
 // "bark_map_size").
