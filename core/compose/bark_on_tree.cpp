@@ -219,7 +219,6 @@ Result<BarkOnTreePlan> PlanBarkOnTree(const TrunkHistory& history,
                                             FormatNumber(range.min) + ", " +
                                             FormatNumber(range.max) + "] m");
   }
-  const int cycles = plan.last_year - plan.first_year;
   const double r0 = plan.radii_cm.front(), r1 = plan.radii_cm.back();
   plan.hoop_strain = r1 / r0 - 1;
 
@@ -230,34 +229,50 @@ Result<BarkOnTreePlan> PlanBarkOnTree(const TrunkHistory& history,
   if (!st.ok()) return Status::Error("bark_species", st.message());
   st = bark::SetBarkSeed(static_cast<double>(options.seed), &s);
   if (!st.ok()) return Status::Error("bark", st.message());
+  // The visible surface has seen only the strain since it formed (docs/bark-model.md, "On Niwa's
+  // trees"): at most kSurfaceCycles of the species' calibrated cycles, and at most the window.
+  plan.strain_ceiling = kSurfaceCycles * s.params.Get(BarkParam::kDeltaR);
+  plan.surface_strain = std::clamp(plan.hoop_strain, 0.0, plan.strain_ceiling);
+  plan.clamped = plan.hoop_strain > plan.strain_ceiling;
+  plan.surface_years = plan.last_year - plan.first_year;
+  if (plan.clamped) {
+    // Back from the last year (radii linear between the recorded years) to where the trunk was
+    // r1 / (1 + ceiling) thick: the surface formed there.
+    const double birth = r1 / (1 + plan.surface_strain);
+    for (std::size_t i = plan.radii_cm.size() - 1; i > 0; --i) {
+      const double a = plan.radii_cm[i - 1], b = plan.radii_cm[i];
+      if (a > birth) continue;
+      const double t = b > a ? (b - birth) / (b - a) : 0;
+      plan.surface_years = static_cast<double>(plan.radii_cm.size() - 1 - i) + t;
+      break;
+    }
+  }
   const double lo = s.params.Get(BarkParam::kLo);
-  // The even column count nearest the real circumference 2π·r over the column pitch (√3/2)·L_o.
-  const double columns = 2 * kPi * r0 / (std::sqrt(3.0) / 2 * lo);
+  // The even column count nearest the surface's circumference at its birth, 2π·r1/(1 + strain),
+  // over the column pitch (√3/2)·L_o: the run ends at the trunk's real circumference 2π·r1.
+  const double r_birth = r1 / (1 + plan.surface_strain);
+  const double columns = 2 * kPi * r_birth / (std::sqrt(3.0) / 2 * lo);
   const auto& nr_spec = bark::BarkTable().row(static_cast<std::size_t>(BarkParam::kNR));
   const double n_r = std::clamp(2 * std::round(columns / 2), nr_spec.min_value, nr_spec.max_value);
-  double d_r = std::max(0.0, plan.hoop_strain) / cycles;
-  const auto& dr_spec = bark::BarkTable().row(static_cast<std::size_t>(BarkParam::kDeltaR));
-  if (d_r > dr_spec.max_value) {
-    d_r = dr_spec.max_value;
-    plan.clamped = true;
-  }
+  // One cycle, as the paper's Table 3 runs (its dH per cycle cuts the plates across once).
   for (const auto& [row, value] : {std::pair<BarkParam, double>{BarkParam::kNR, n_r},
-                                   {BarkParam::kCycles, cycles},
-                                   {BarkParam::kDeltaR, d_r},
+                                   {BarkParam::kCycles, 1},
+                                   {BarkParam::kDeltaR, plan.surface_strain},
                                    {BarkParam::kMapSize, options.map_size}}) {
     st = s.params.Set(row, value);
     if (!st.ok()) return Status::Error("bark", st.Line());
   }
   st = bark::CheckBarkState(s);
   if (!st.ok()) return Status::Error("bark", st.Line());
+  // The young shoots' surface: half as old (half the strain; at the ceiling, the paper's one
+  // cycle of the species).
   plan.young_state = s;
-  st = plan.young_state.params.Set(BarkParam::kCycles, 1);
+  st = plan.young_state.params.Set(BarkParam::kDeltaR, plan.surface_strain / 2);
   if (!st.ok()) return Status::Error("bark", st.Line());
   plan.estimate = bark::EstimateBarkRun(s) + bark::EstimateBarkRun(plan.young_state);
-  plan.estimate.what = "the bark (two runs of " +
-                       FormatCount(n_r * s.params.GetInt(BarkParam::kNH)) + " nodes, " +
-                       std::to_string(cycles) + " and 1 cycles, maps " +
-                       std::to_string(options.map_size) + " px wide)";
+  plan.estimate.what =
+      "the bark (two runs of " + FormatCount(n_r * s.params.GetInt(BarkParam::kNH)) +
+      " nodes, 1 cycle each, maps " + std::to_string(options.map_size) + " px wide)";
   return plan;
 }
 
@@ -431,10 +446,13 @@ std::string BarkOnTreeJson(const BarkOnTree& bark, double height_m) {
   return "{\"species\":\"" + p.state.species + "\",\"height_m\":" + FormatNumber(height_m) +
          ",\"years\":[" + std::to_string(p.first_year) + "," + std::to_string(p.last_year) +
          "],\"radii_cm\":[" + radii + "],\"hoop_strain\":" + FormatNumber(p.hoop_strain) +
+         ",\"strain_ceiling\":" + FormatNumber(p.strain_ceiling) +
+         ",\"surface_years\":" + FormatNumber(p.surface_years) +
          ",\"N_R\":" + std::to_string(params.GetInt(BarkParam::kNR)) +
          ",\"N_H\":" + std::to_string(params.GetInt(BarkParam::kNH)) +
          ",\"cycles\":" + std::to_string(params.GetInt(BarkParam::kCycles)) +
          ",\"dR\":" + FormatNumber(params.Get(BarkParam::kDeltaR)) +
+         ",\"young_dR\":" + FormatNumber(p.young_state.params.Get(BarkParam::kDeltaR)) +
          ",\"clamped\":" + (p.clamped ? "true" : "false") + ",\"tile_cm\":[" +
          FormatNumber(bark.old_bark.tile_width_m * kCmPerMetre) + "," +
          FormatNumber(bark.old_bark.tile_height_m * kCmPerMetre) +

@@ -1,10 +1,11 @@
 // The bark study on a grown Niwa tree (issue 30 item 3; ../shared/specs/bark.md §6): the trunk's
-// radius history at a height, the 2-layer bark model run on it (the real circumference, the
-// tree's own radial growth over the last W years), and the tree's .glb re-textured with the maps:
-// the tile wrapped a whole number of times around each branch, v in metres over the tile's height,
-// an earlier year's maps on the young shoots. Part of the composition tier (core/compose includes
-// the tree and bark studies; neither includes it), for `niwa tree grow --bark sim` and the page
-// alike. Does not: grow the tree (the caller's Grower or TreeRun does, calling RecordTrunkYear
+// radius history at a height, the 2-layer bark model run on it (one cycle: the real circumference,
+// the strain the visible surface has seen since it formed, read off the tree's own radial growth
+// over at most the last W years), and the tree's .glb re-textured with the maps: the tile wrapped
+// a whole number of times around each branch, v in metres over the tile's height, a younger
+// surface's maps (half the strain) on the young shoots. Part of the composition tier (core/compose
+// includes the tree and bark studies; neither includes it), for `niwa tree grow --bark sim` and the
+// page alike. Does not: grow the tree (the caller's Grower or TreeRun does, calling RecordTrunkYear
 // after each year), change the procedural export (the default .glb keeps its bytes), run the
 // 4-layer model, or name a flag (errors name "bark", "bark_height", "bark_species",
 // "bark_map_size").
@@ -26,9 +27,13 @@ namespace niwa::compose {
 
 constexpr double kDefaultBarkHeight = 1.3;  // m above the ground (breast height)
 constexpr double kMaxBarkHeight = 100;      // m: the flag's static range; the tree's is tighter
-constexpr int kBarkWindow = 4;              // W: growth cycles (years) the bark runs over
-// Shoots of at most this age in years (grown this year: 1) get the young bark (the first cycle's
-// maps); older ones and the trunk the last year's.
+constexpr int kBarkWindow = 4;              // W: years of growth the surface may have seen
+// The visible surface's hoop strain at most: this many of the species' calibrated cycles (its dR,
+// Table 3's 0.021, tallow's 0.009); a trunk that grew more shows a younger surface
+// (docs/bark-model.md, "On Niwa's trees").
+constexpr double kSurfaceCycles = 2;
+// Shoots of at most this age in years (grown this year: 1) get the young bark (half the trunk
+// surface's strain); older ones and the trunk the old bark.
 constexpr int kYoungBarkYears = 2;
 
 // The trunk at one height, year by year: the trunk is the seedling shoot and, from each shoot's
@@ -56,16 +61,20 @@ struct BarkHeightRange {
 };
 BarkHeightRange BarkHeights(const TrunkHistory& history);
 
-// What the bark run on the tree will be: the state (species preset, N_R from the real
-// circumference at the window's first year, dR the tree's hoop strain per year over the window,
-// cycles = the window's years), the window's radii, and the two runs' estimate.
+// What the bark run on the tree will be: the state (species preset, one cycle, dR the surface's
+// strain: the window's hoop strain, at most kSurfaceCycles × the species' dR; N_R from the real
+// circumference when that surface formed, so the run ends at the last year's), the window's radii,
+// and the two runs' estimate.
 struct BarkOnTreePlan {
-  bark::BarkState state;        // the old bark's run (cycles = window)
-  bark::BarkState young_state;  // the same lattice and seed, one cycle: the young shoots' bark
-  int first_year = 0, last_year = 0;  // r(first_year) .. r(last_year)
+  bark::BarkState state;        // the old bark's run (one cycle)
+  bark::BarkState young_state;  // the same lattice and seed, half the strain: the young shoots'
+  int first_year = 0, last_year = 0;  // r(first_year) .. r(last_year), one a year
   std::vector<double> radii_cm;       // r(first_year), ..., r(last_year)
-  double hoop_strain = 0;             // r(last)/r(first) − 1, the strain the runs reach
-  bool clamped = false;               // dR above the bark table's range: clamped to its max
+  double hoop_strain = 0;             // r(last)/r(first) − 1, the window's strain
+  double strain_ceiling = 0;          // kSurfaceCycles × the species' dR
+  double surface_strain = 0;          // min(hoop_strain, strain_ceiling): the old run's dR
+  double surface_years = 0;           // years since the surface formed (radii linear between)
+  bool clamped = false;               // the window's strain above the ceiling
   Estimate estimate;                  // both runs, their maps and the .glb's re-texturing
 };
 
@@ -141,8 +150,9 @@ std::vector<float> WrapBarkUvs(const Tree& tree, const TreeMesh& mesh, const Bar
 Result<gltf::Document> BarkTreeDocument(const Tree& tree, const TreeMesh& mesh,
                                         const BarkOnTree& bark);
 
-// {"species", "height_m", "years": [first, last], "radii_cm": [...], "hoop_strain", "N_R", "N_H",
-// "cycles", "dR", "clamped", "tile_cm": [w, h], "young_years", "hash"} for the CLI's stats.
+// {"species", "height_m", "years": [first, last], "radii_cm": [...], "hoop_strain",
+// "strain_ceiling", "surface_years", "N_R", "N_H", "cycles", "dR", "young_dR", "clamped",
+// "tile_cm": [w, h], "young_years", "hash"} for the CLI's stats.
 std::string BarkOnTreeJson(const BarkOnTree& bark, double height_m);
 
 }  // namespace niwa::compose

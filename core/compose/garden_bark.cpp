@@ -93,7 +93,8 @@ Status GrowGardenBarks(const std::vector<const Tree*>& trees, const std::vector<
   const auto t0 = std::chrono::steady_clock::now();
   double seconds_used = 0;
   // Barks whose states are the same (species, seed, lattice, cycles, dR: trees of one species,
-  // seed and thin trunk often clamp to the same) are one run: the same state gives the same bytes.
+  // seed and thin trunk often reach the same ceiling and N_R) are one run: the same state gives the
+  // same bytes.
   std::map<std::string, std::shared_ptr<const BarkFrame>> runs;
   const double n = static_cast<double>(barks->trees.size());
   for (std::size_t g = 0; g < barks->trees.size() && g < trees.size(); ++g) {

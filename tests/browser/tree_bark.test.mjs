@@ -33,8 +33,10 @@ await runBrowserTest(async (server, browser) => {
   const h1 = await root(page);
   check('Simulated: the bark texture is the bark study\'s', h1.barkDigest.startsWith('bark-sim-') && h1.barkDigest !== h0.barkDigest, h1.barkDigest);
   const stats = h1.barkStats ? JSON.parse(h1.barkStats) : {};
-  check(`Simulated: the bark ran on the trunk's history (N_R ${stats.N_R}, ${stats.cycles} cycles at ${stats.height_m} m)`,
-    stats.N_R % 2 === 0 && stats.cycles >= 1 && stats.radii_cm?.length === stats.cycles + 1, h1.barkStats);
+  check(`Simulated: the bark ran on the trunk's history (N_R ${stats.N_R}, ${stats.cycles} cycle at dR ${stats.dR}, ` +
+    `the surface ${stats.surface_years} of ${stats.radii_cm?.length - 1} years, at ${stats.height_m} m)`,
+  stats.N_R % 2 === 0 && stats.cycles === 1 && stats.radii_cm?.length >= 2 &&
+    stats.dR === Math.min(stats.hoop_strain, stats.strain_ceiling), h1.barkStats);
   check('Simulated: a restage, not a regrowth', h1.growRequests === h0.growRequests &&
     Number(h1.restageRequests) === Number(h0.restageRequests) + 1,
   `grows ${h0.growRequests} -> ${h1.growRequests}, restages ${h0.restageRequests} -> ${h1.restageRequests}`);
