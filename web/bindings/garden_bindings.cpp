@@ -34,13 +34,14 @@
 // the CLI's timings), hash(), stateJson(), boundsJson() ({size, n, cell, relief, min, max, groups,
 // trees}); build("glb"|"svg"|"json") then buffers("download"): the run's Export bytes (the bytes of
 // `niwa garden grow --url HASH --out g.glb`); grows() (how many grows this lab started: a page's
-// check that the scrubber grows nothing); yearsJson() ({years, recorded: [years], stopped_by,
-// record_bytes, bytes: [per recorded year], mosses: [per recorded year]}); showYear(y) -> ""/error
-// record naming "year": the "year" group filled from the run's record of year y (GardenRun's
-// record_years, on for every page grow: compose/garden_view GardenGroupMeshAt). Free functions:
-// gardenTableJson(), gardenDecodeJson(hash) ({state, notices}: the default garden with the link's
-// keys). Does not: keep more than one run, keep more than one year's buffers, or read files (a
-// heightmap or mask ground is not offered by the page yet).
+// check that the scrubber grows nothing), runGrows() (grows() when the run kept was grown);
+// yearsJson() ({years, recorded: [years], stopped_by, record_bytes, bytes: [per recorded year],
+// mosses: [per recorded year]}); showYear(y) -> ""/error record naming "year": the "year" group
+// filled from the run's record of year y (GardenRun's record_years, on for every page grow:
+// compose/garden_view GardenGroupMeshAt). Free functions: gardenTableJson(), gardenDecodeJson(hash)
+// ({state, notices}: the default garden with the link's keys). Does not: keep more than one run,
+// keep more than one year's buffers, or read files (a heightmap or mask ground is not offered by
+// the page yet).
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
@@ -138,6 +139,7 @@ class GardenLab {
     });
     if (!s.ok()) return ErrorText(s);
     run_.emplace(std::move(run));
+    run_grows_ = grows_;
     FillGround();
     FillObjects();
     FillTrees(run_->done(), &trees_);
@@ -145,6 +147,8 @@ class GardenLab {
   }
 
   int grows() const { return grows_; }
+  // grows() when the run kept now was grown (a refused grow keeps the run before it).
+  int runGrows() const { return run_grows_; }
 
   std::string yearsJson() const {
     if (!run_) return "{}";
@@ -364,7 +368,7 @@ class GardenLab {
   TreeBuffers trees_;  // the last year's (group "trees")
   TreeBuffers year_;   // the year last shown (group "year")
   std::vector<float> year_moss_S_;
-  int grows_ = 0;
+  int grows_ = 0, run_grows_ = 0;
   std::vector<unsigned char> download_;  // the last build's bytes (group "download")
   emscripten::val progress_ = emscripten::val::null();
 };
@@ -386,6 +390,7 @@ EMSCRIPTEN_BINDINGS(niwa_garden) {
       .function("buffers", &niwa::GardenLab::buffers)
       .function("build", &niwa::GardenLab::build)
       .function("grows", &niwa::GardenLab::grows)
+      .function("runGrows", &niwa::GardenLab::runGrows)
       .function("yearsJson", &niwa::GardenLab::yearsJson)
       .function("showYear", &niwa::GardenLab::showYear);
 }

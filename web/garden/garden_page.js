@@ -288,12 +288,12 @@ function pickYear(y) {
   ui.yearText.textContent = yearText(y);
   askedYear = { year: y, at: performance.now(), frames: 0 };
   setHooks({ yearAsked: y, yearAnswerMs: '' });
-  worker.request('year', { year: y }, { done: ['gardenYear'] });
+  worker.request('year', { year: y, grows: gardenGrows }, { done: ['gardenYear'] });
 }
 
 worker.on('gardenYear', (msg) => {
   // A reply for a garden no longer on screen (a grow came between): its buffers go back.
-  if (msg.grows !== gardenGrows || !renderer || !askedYear || msg.year !== askedYear.year) {
+  if (msg.stale || msg.run !== gardenGrows || !renderer || !askedYear || msg.year !== askedYear.year) {
     worker.recycle(msg.buffers);
     return;
   }

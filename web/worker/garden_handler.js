@@ -10,10 +10,12 @@
 // bytes, why the recording stopped) and `grows` (how many grows this client's lab started).
 // A 'year' ({year}) draws another garden year WITHOUT growing (the year scrubber and Play): the
 // lab's showYear(y) builds each distinct tree's mesh of that year from the run's record and the
-// reply {type: 'gardenYear', year, grows, buffers: {year: {positions, normals, indices, part,
+// reply {type: 'gardenYear', year, grows, run, buffers: {year: {positions, normals, indices, part,
 // ranges, instances, moss_S}}, ms} sends them as the trees' buffers are sent (copied once,
 // transferred, reused when the page gave them back); a newer 'year' of the client drops an older
-// one still queued (no reply: the page's request of that group was superseded too).
+// one still queued (no reply: the page's request of that group was superseded too), and a 'year'
+// whose `grows` is not the lab's runGrows() (asked of a garden since regrown) is answered {stale:
+// true}; `run` is runGrows() (the grow of the garden the year is of).
 // Table: the garden bindings' gardenTableJson; presets: the tree study's (the species picker);
 // decode: gardenDecodeJson (the default garden with the link's keys).
 // An 'export' ({format: glb | svg | json | heightmap}) answers with the run's bytes (the bytes of
@@ -79,6 +81,11 @@ export function createHandler(Module, ctx) {
     entry.wantYear = msg.id;
     await nextTask();  // a newer 'year' already queued supersedes this one
     if (entry.wantYear !== msg.id) return;
+    // Asked of a garden since regrown (the pick waited behind a grow): answered stale, not shown.
+    if (msg.grows !== undefined && msg.grows !== entry.lab.runGrows()) {
+      post({ type: 'gardenYear', id: msg.id, client, year: Number(msg.year), grows: entry.lab.grows(), run: entry.lab.runGrows(), stale: true, buffers: {}, ms: 0 });
+      return;
+    }
     const t0 = performance.now();
     const error = errorOf(entry.lab.showYear(Number(msg.year)));
     if (error) {
@@ -88,7 +95,7 @@ export function createHandler(Module, ctx) {
     const transfer = [];
     const counts = { reused: 0, fresh: 0, dropped: 0 };
     const buffers = { year: returned.take(client, 'year', entry.lab.buffers('year'), transfer, counts) };
-    post({ type: 'gardenYear', id: msg.id, client, year: Number(msg.year), grows: entry.lab.grows(), buffers, bufferCounts: counts, ms: performance.now() - t0 }, transfer);
+    post({ type: 'gardenYear', id: msg.id, client, year: Number(msg.year), grows: entry.lab.grows(), run: entry.lab.runGrows(), buffers, bufferCounts: counts, ms: performance.now() - t0 }, transfer);
   }
 
   const FORMATS = ['glb', 'svg', 'json', 'heightmap'];

@@ -203,11 +203,13 @@
  *       year an ivy vertex grew in)}, trees: {positions, normals, indices, part, ranges,
  *       instances}} (views into the buffers the client handed back when they fit), bufferCounts,
  *       growMs, wallMs}
- * @typedef {Envelope & {type: 'year', year: number}} GardenYearMessage
- *   (the year scrubber: nothing grows) -> {type: 'gardenYear', year, grows, buffers: {year:
+ * @typedef {Envelope & {type: 'year', year: number, grows?: number}} GardenYearMessage
+ *   (the year scrubber: nothing grows) -> {type: 'gardenYear', year, grows, run, buffers: {year:
  *       {positions, normals, indices, part, ranges, instances, moss_S}} (that year's trees and moss
  *       light, from the run's record), bufferCounts, ms} or an error naming "year" (not recorded);
- *       a newer 'year' of the client drops an older one still queued (no reply)
+ *       a newer 'year' of the client drops an older one still queued (no reply); one whose
+ *       `grows` is not the lab's run's (asked of the garden before a regrow) is answered {stale:
+ *       true}; grows: the lab's grows so far, run: the grow of the garden kept
  * export: format 'glb' | 'svg' | 'json' | 'heightmap' (the run's Export bytes).
  */
 // (No list of message types here: each study's handler says which it answers, and the router
