@@ -100,11 +100,13 @@ std::string SpeciesColour(const std::string& species) {
 
 }  // namespace
 
-Result<GardenRun> GardenRun::Start(const GardenState& state, const Budget& budget) {
+Result<GardenRun> GardenRun::Start(const GardenState& state, const Budget& budget,
+                                   bool record_years) {
   NIWA_RETURN_IF_ERROR(CheckGardenState(state));
   GardenRun run;
   run.state_ = state;
   run.budget_ = budget;
+  run.record_years_ = record_years;
   auto t0 = Clock::now();
   Result<GardenScene> scene = BuildGardenScene(state, budget);
   if (!scene.ok()) return scene.status();
@@ -180,6 +182,13 @@ Result<GardenRun> GardenRun::Start(const GardenState& state, const Budget& budge
     run.moss_ = std::make_unique<moss::MossRun>(std::move(*moss));
     run.ms_moss_ = MsSince(t0);
   }
+  // The year records' share of the memory, kept from the trees' (docs/garden-model.md "One
+  // clock"): the trees share the rest, so the garden and its records stay within the budget.
+  if (record_years) {
+    run.record_limit_ = kGardenRecordShare * static_cast<double>(budget.memory_bytes);
+    tree_budget.memory_bytes = static_cast<uint64_t>(
+        std::max(0.0, static_cast<double>(tree_budget.memory_bytes) - run.record_limit_));
+  }
   // Each group's growth within an equal share of the budget above the process's own base (the
   // tree's limits count that base once per tree; its limits stop a tree with a line).
   const double groups = std::max<double>(1, static_cast<double>(run.groups_.size()));
@@ -223,6 +232,7 @@ Status GardenRun::Advance(const run::Observer& observer) {
       }
     }
     nursery_done_ = true;
+    if (year_ == 0) RecordYear();  // year 0: the planted garden
   }
   // The trees grown with their neighbours' shade (each one tree), where they stand.
   std::vector<TreeAt> together;
@@ -244,6 +254,7 @@ Status GardenRun::Advance(const run::Observer& observer) {
       RecordGardenTrunk(groups_[k].tree(), k, &barks_);
     ++year_;
     if (moss_) GrowMossYear();
+    RecordYear();
   }
   if (observer) observer({"grow", static_cast<double>(year_), static_cast<double>(years)});
   if (!ivy_ && !state_.ivy_on.empty() && state_.params.GetInt(GardenParam::kIvySteps) > 0 &&
@@ -272,6 +283,7 @@ Budget GardenRun::BudgetLeft(bool ivy_support) const {
     seconds += ivy_->support().estimate().seconds;
     bytes += ivy_->support().estimate().memory_bytes;
   }
+  bytes += record_bytes_;  // the year records (record_years), within their share
   left.seconds = budget_.seconds - seconds;
   left.memory_bytes =
       static_cast<uint64_t>(std::max(0.0, static_cast<double>(budget_.memory_bytes) - bytes));
@@ -431,6 +443,49 @@ void GardenRun::GrowMossYear() {
   moss_->SetCanopy(std::move(canopy));
   (void)moss_->AdvanceTo(year_ * state_.params.GetInt(GardenParam::kMossDays), nullptr);
   ms_moss_ += MsSince(t0);
+}
+
+void GardenRun::RecordYear() {
+  if (!record_years_ || !record_stopped_by_.empty()) return;
+  if (!records_.empty() && records_.back().year >= year_) return;  // already kept
+  GardenYearRecord r;
+  r.year = year_;
+  const GardenYearRecord* last = records_.empty() ? nullptr : &records_.back();
+  // A tree that grew no year since the last record (at its years, or stopped) shares its copy.
+  std::vector<bool> fresh(groups_.size(), true);
+  for (std::size_t k = 0; k < groups_.size(); ++k) {
+    const GardenTreeGroup& g = groups_[k];
+    fresh[k] = last == nullptr || last->trees[k]->years != g.tree().years;
+    if (fresh[k])  // a copy of the tree: what its growth estimate counts, the process's base aside
+      r.bytes += std::max(0.0, g.run->grown().memory_bytes - tree_base_bytes_);
+  }
+  if (moss_) {
+    r.moss_light = GardenMossGroundLight(*moss_, scene_.ground);
+    r.mosses = static_cast<long>(moss_->world().mosses.size());
+    r.bytes += 4.0 * static_cast<double>(r.moss_light.size());
+  }
+  r.bytes += 64.0 * static_cast<double>(groups_.size());  // the record's pointers
+  if (record_bytes_ + r.bytes > record_limit_) {
+    record_stopped_by_ = TruncatedLine(
+        budget_.memory_limit, "after year " + std::to_string(year_ - 1),
+        "the years' pictures took " + FormatBytes(record_bytes_) + " and year " +
+            std::to_string(year_) + "'s needs " + FormatBytes(r.bytes) + ", more than their " +
+            FormatBytes(record_limit_) + " (a quarter of the budget)",
+        "lower years, density or size to replay every year; the later years regrow");
+    return;
+  }
+  for (std::size_t k = 0; k < groups_.size(); ++k)
+    r.trees.push_back(fresh[k] ? std::make_shared<const Tree>(groups_[k].tree()) : last->trees[k]);
+  record_bytes_ += r.bytes;
+  records_.push_back(std::move(r));
+}
+
+const Tree* GardenRun::TreeAtYear(int group, int year) const {
+  if (group < 0 || group >= static_cast<int>(groups_.size())) return nullptr;
+  if (year == year_) return &groups_[group].tree();
+  for (const GardenYearRecord& r : records_)
+    if (r.year == year) return r.trees[static_cast<std::size_t>(group)].get();
+  return nullptr;
 }
 
 double GardenRun::CrownRadius(int group) const {

@@ -11,8 +11,11 @@
 // ground. Moss (paper 001) grows over the ground and the objects, moss_days days after each
 // garden year, its photons crossing that year's leaves (compose/garden_moss). With bark 1, each
 // distinct tree's bark is the bark study run on its own trunk's radius history
-// (compose/garden_bark). Does not (yet): replay years without regrowing, read files, or name a
-// flag.
+// (compose/garden_bark). With record_years (the page), each garden year's picture is kept as the
+// clock runs (GardenYearRecord: each distinct tree as it stood after that year, the moss's light
+// and count), within a quarter of the budget's memory, so a front end replays the years without
+// regrowing. Does not: record the ivy or the bark year by year (both are grown after the clock;
+// the ivy's birth steps date its parts), read files, or name a flag.
 #pragma once
 
 #include <memory>
@@ -46,6 +49,24 @@ struct GardenTreeGroup {
   std::string name;  // "keyaki_s1_a0", "keyaki_t3" (a tree grown on its own)
 };
 
+// One garden year's picture, kept as the clock runs (GardenRun::Start's record_years): what a
+// front end needs to draw that year again without regrowing.
+struct GardenYearRecord {
+  int year = 0;  // garden years done (0: the planted garden, after the nursery, before the clock)
+  // Each distinct tree (one per group) as it stood after that year: a copy of the tree study's
+  // Tree, shared with the year before when the tree did not change (at its years, or stopped).
+  std::vector<std::shared_ptr<const Tree>> trees;
+  // The moss's light S on the ground after that year's days (GardenMossGroundLight), and its
+  // living mosses; empty and 0 without moss.
+  std::vector<float> moss_light;
+  long mosses = 0;
+  double bytes = 0;  // its estimate (the trees' copies new this year, the light)
+};
+
+// The share of the budget's memory the year records may take when recording (the trees' growth
+// then shares the rest, so the garden with its records stays within the budget).
+constexpr double kGardenRecordShare = 0.25;
+
 // ---- the run ----
 
 class GardenRun : public run::StudyRun {
@@ -53,8 +74,11 @@ class GardenRun : public run::StudyRun {
   // Builds the stage and plants it (the state checked first, then every tree's growth estimated
   // against `budget`: each group gets an equal share of it). Errors name state fields
   // ("plants[1].pos", "ground.terrain", "density") or the budget's limit ("lower years, density or
-  // size").
-  static Result<GardenRun> Start(const GardenState& state, const Budget& budget);
+  // size"). With `record_years`, each year's picture is recorded as the clock runs (years(),
+  // kGardenRecordShare of the memory kept for it); the .glb, the stats and the trees' growth are
+  // the same as without it unless the trees reach their memory share.
+  static Result<GardenRun> Start(const GardenState& state, const Budget& budget,
+                                 bool record_years = false);
 
   const char* study() const override { return "garden"; }
   const char* unit() const override { return "years"; }
@@ -87,6 +111,14 @@ class GardenRun : public run::StudyRun {
   // The leaf-area centroid of planted tree t, in the garden's frame (m).
   glm::dvec3 CrownCentroid(int t) const;
   const std::string& truncated_by() const { return truncated_by_; }
+  // The recorded years (0, 1, ... in order; empty without record_years), and why the recording
+  // stopped before the clock's end ("" when every year was recorded).
+  const std::vector<GardenYearRecord>& years() const { return records_; }
+  const std::string& record_stopped_by() const { return record_stopped_by_; }
+  double record_bytes() const { return record_bytes_; }
+  // Group `group`'s tree after garden year `year`: the record's, the run's own at the last year
+  // grown, or nullptr when that year was not recorded.
+  const Tree* TreeAtYear(int group, int year) const;
   // The garden's ivy once grown (nullptr without ivy seeds, ivy_steps 0 or before Advance).
   const ivy::IvyRun* ivy() const { return ivy_.get(); }
   double ms_ivy() const { return ms_ivy_; }
@@ -122,6 +154,14 @@ class GardenRun : public run::StudyRun {
   double ms_ground_ = 0, ms_plant_ = 0, ms_trees_ = 0, ms_ivy_ = 0, ms_moss_ = 0;
   std::unique_ptr<ivy::IvyRun> ivy_;
   std::unique_ptr<moss::MossRun> moss_;
+  // The year records (record_years): each year's picture, their estimated bytes, and the memory
+  // they may take (kGardenRecordShare of the budget's).
+  bool record_years_ = false;
+  std::vector<GardenYearRecord> records_;
+  double record_bytes_ = 0, record_limit_ = 0;
+  std::string record_stopped_by_;
+  // Keeps year_'s picture when it fits what is left of the records' share, else stops recording.
+  void RecordYear();
   // The moss's days of one garden year, after the trees' year: that year's leaves as its canopy.
   void GrowMossYear();
   // What the garden's budget holds after the trees' growth (their estimates; the process's base

@@ -3,10 +3,30 @@
 
 namespace niwa::compose {
 
-TreeMesh GardenGroupMesh(const GardenRun& run, int group) {
+namespace {
+
+TreeMesh PageMesh(const Tree& tree) {
   MeshOptions options;
   options.max_sides = kGardenViewMaxSides;
-  return BuildTreeMesh(run.groups()[group].tree(), options);
+  return BuildTreeMesh(tree, options);
+}
+
+}  // namespace
+
+TreeMesh GardenGroupMesh(const GardenRun& run, int group) {
+  return PageMesh(run.groups()[group].tree());
+}
+
+TreeMesh GardenGroupMeshAt(const GardenRun& run, int group, int year) {
+  const Tree* tree = run.TreeAtYear(group, year);
+  return tree != nullptr ? PageMesh(*tree) : TreeMesh{};
+}
+
+bool GardenYearShown(const GardenRun& run, int year) {
+  if (year == run.done()) return true;
+  for (const GardenYearRecord& r : run.years())
+    if (r.year == year) return true;
+  return false;
 }
 
 }  // namespace niwa::compose

@@ -5,7 +5,8 @@
 // grey where the moss has no cell), 2 the slope (green 0°, yellow 20°, red 45° and over), 3
 // altitude bands uBand metres high with a dark line at each band's foot; 1 the objects (plaster walls, grey rocks and stone
 // lanterns, the .glb's materials) and the ivy on them (brown stems, dark green leaves); 2 the
-// trees (bark brown, leaves green, flowers pale pink).
+// trees (bark brown, leaves green, flowers pale pink). Ivy born after the year shown (vBirth over
+// uYear: the year scrubber) is not drawn.
 // Lambert from the frame's sun, shadowed by its shadow map, over a sky/ground ambient; both faces
 // lit (leaves are cards).
 precision highp float;
@@ -16,16 +17,19 @@ in vec3 vNormal;
 in float vTint;
 in float vHeight;
 in vec4 vShadow;
+in float vBirth;
 
 uniform vec3 uLightDirection;  // unit, towards the sun
 uniform int uMode;
 uniform float uRelief;
 uniform int uOverlay;  // the ground's: 0 none, 1 moss light, 2 slope, 3 altitude bands
 uniform float uBand;   // m, an altitude band's height
+uniform float uYear;   // the garden year shown
 
 out vec4 outColor;
 
 void main() {
+  if (vBirth > uYear + 0.5) discard;
   vec3 n = normalize(vNormal);
   if (!gl_FrontFacing) n = -n;
   vec3 base;

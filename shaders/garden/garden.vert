@@ -4,11 +4,14 @@
 // aInstance = its foot x, y, z and its turn about y in radians, counter-clockwise seen from above,
 // as the .glb's YawQuaternion); the ground and the objects with aInstance (0, 0, 0, 0). aTint: the
 // ground's height (m), an object's kind (0 wall, 1 rock, 2 lantern, 3 ivy stem, 4 ivy leaf), a
-// tree vertex's part (0 bark, 1 leaves, 2 flowers): garden.frag's colour.
+// tree vertex's part (0 bark, 1 leaves, 2 flowers): garden.frag's colour. aBirth: the garden year
+// an ivy vertex grew in (0 for every other vertex): garden.frag hides what the year shown (the
+// year scrubber) had not grown.
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in float aTint;
 layout(location = 3) in vec4 aInstance;
+layout(location = 4) in float aBirth;
 
 uniform mat4 uViewProjection;
 uniform mat4 uSunViewProjection;    // the shadow map's (web/gl/shadow_map.js)
@@ -18,6 +21,7 @@ out vec3 vNormal;
 out float vTint;
 out float vHeight;
 out vec4 vShadow;
+out float vBirth;
 
 vec3 turn(vec3 v, float a) {
   float c = cos(a), s = sin(a);
@@ -28,6 +32,7 @@ void main() {
   vec3 world = aInstance.xyz + turn(aPosition, aInstance.w);
   vNormal = turn(aNormal, aInstance.w);
   vTint = aTint;
+  vBirth = aBirth;
   vHeight = world.y;
   vShadow = uSunViewProjection * vec4(world + normalize(vNormal + vec3(0.0, 1e-6, 0.0)) * uShadowNormalOffset, 1.0);
   gl_Position = uViewProjection * vec4(world, 1.0);

@@ -9,7 +9,10 @@
 // change the ground with a legend; Embed offers <niwa-garden> and the iframe of the page's hash; the
 // Garden .glb download is the bytes of native `niwa garden grow --url HASH --out g.glb`; a bad Years
 // value is a line beside its field naming the range, and the page recovers; Cancel stops a long
-// regrow and the page grows its last garden again. Screenshots: build/artifacts/garden-*.png.
+// regrow and the page grows its last garden again; the year scrubber shows year 2 and year 8 of the
+// opening garden from the run's record (other pixels, fewer leaves at 2) with no grow in the worker
+// (data-worker-grows and the garden serial unchanged), each answered within two frames, and Play
+// steps through the years to the last. Screenshots: build/artifacts/garden-*.png.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -103,6 +106,44 @@ await runBrowserTest(async (server, browser) => {
     `altitude ${fmt(overlays.altitude.shares)}`);
   await page.selectOption('#overlay', 'none');
   await page.waitForFunction(() => document.documentElement.dataset.drawnOverlay === 'none', null, { timeout: TIMEOUT });
+
+  // 1c. The year scrubber and Play replay the recorded years; the worker grows nothing.
+  const dataset = () => page.evaluate(() => ({ ...document.documentElement.dataset }));
+  const before1c = await dataset();
+  const pickYear = async (y) => {
+    await page.$eval('#year', (el, v) => { el.value = String(v); el.dispatchEvent(new Event('input', { bubbles: true })); }, y);
+    await page.waitForFunction((v) => document.documentElement.dataset.yearShown === String(v) && document.documentElement.dataset.yearAnswerMs !== '', y, { timeout: TIMEOUT });
+    return { d: await dataset(), seen: await looks(page) };
+  };
+  const y2 = await pickYear(2);
+  await page.evaluate(() => { window.__gardenYear2 = window.__niwaCanvasImage('#view').data; });
+  await saveCanvasPng(page, 'garden-year-2.png');
+  const y8 = await pickYear(8);
+  await saveCanvasPng(page, 'garden-year-8.png');
+  // The share of pixels whose colour differs between the two years (compared in the page).
+  const differShare = await page.evaluate(() => {
+    const a = window.__gardenYear2, b = window.__niwaCanvasImage('#view').data;
+    let differ = 0;
+    for (let i = 0; i < a.length; i += 4) {
+      if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 30) ++differ;
+    }
+    delete window.__gardenYear2;
+    return differ / (a.length / 4);
+  });
+  check('the year scrubber shows year 2 and year 8 (other pixels; fewer leaves at 2)', differShare > 0.01 && y2.seen.leaf < y8.seen.leaf,
+    `${(differShare * 100).toFixed(1)} % of pixels differ; leaf ${y2.seen.leaf.toFixed(4)} at 2, ${y8.seen.leaf.toFixed(4)} at 8`);
+  const after1c = await dataset();
+  check('scrubbing grows nothing in the worker (its grow count and the garden serial unchanged)', Number(before1c.workerGrows) > 0 && after1c.workerGrows === before1c.workerGrows && after1c.gardenSerial === before1c.gardenSerial && Number(after1c.yearsRecorded) === 9,
+    `worker grows ${before1c.workerGrows} -> ${after1c.workerGrows}, garden serial ${before1c.gardenSerial} -> ${after1c.gardenSerial}, ${after1c.yearsRecorded} years recorded (${after1c.recordKb} kB)`);
+  check('each pick is on screen within two frames', Number(y2.d.yearFrames) <= 2 && Number(y8.d.yearFrames) <= 2,
+    `year 2: ${y2.d.yearAnswerMs} ms (worker ${y2.d.yearBuildMs} ms), ${y2.d.yearFrames} frames; year 8: ${y8.d.yearAnswerMs} ms (worker ${y8.d.yearBuildMs} ms), ${y8.d.yearFrames} frames`);
+  check('the link does not change when scrubbing', (await page.evaluate(() => location.hash)).includes('years=8') && !/year=/.test(await page.evaluate(() => location.hash)), await page.evaluate(() => location.hash));
+  await pickYear(6);
+  await page.click('#play');
+  await page.waitForFunction(() => document.getElementById('play').getAttribute('aria-pressed') === 'false', null, { timeout: TIMEOUT });
+  const played = await dataset();
+  check('Play steps through the years to the last (6, 7, 8), growing nothing', played.yearsPlayed === '6,7,8' && played.yearShown === '8' && played.workerGrows === before1c.workerGrows,
+    `played ${played.yearsPlayed}, shown ${played.yearShown}, worker grows ${played.workerGrows}`);
 
   // 2. A panel edit regrows in the worker.
   await page.$$eval('#params details', (all) => all.forEach((d) => { d.open = true; }));

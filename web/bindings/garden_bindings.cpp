@@ -17,22 +17,33 @@
 //             moss_S (Float32 per ground vertex, the same order: the moss's light of its last day,
 //             compose/garden_moss GardenMossGroundLight; −1 where no cell; empty without moss)
 //   "objects" positions, normals, indices (every object's mesh, placed, in one list), kind (Float32
-//             per vertex: 0 wall, 1 rock, 2 lantern)
+//             per vertex: 0 wall, 1 rock, 2 lantern, 3 ivy stem, 4 ivy leaf), birth (Float32 per
+//             vertex: the garden year an ivy vertex grew in, ceil(birth_step / ivy_steps), 0 for
+//             the objects; the ivy is grown after the clock on the final garden, so a year's ivy
+//             is the part of it born by then)
 //   "trees"   positions, normals, indices (each group's mesh at the origin, one after another;
 //             the indices absolute), part (Float32 per vertex: 0 bark, 1 leaves, 2 flowers),
 //             ranges (Uint32, 4 per group: first index, index count, first instance, instance
 //             count), instances (Float32, 4 per planted tree in group order: x, y, z of its
 //             foot, its turn about y in radians, counter-clockwise seen from above)
+//   "year"    the trees' six buffers above for the year of the last showYear(y), and moss_S of
+//             that year (the garden's year scrubber: nothing regrows)
 // Calls: setProgress(fn) (fn(stage, done, total) after every year), start(stateJson) -> ""/error
 // record (the state JSON of GardenStateJson over the default garden, LayOutDefaults, checked and
-// started), then step() -> "more" | "grown" | error (one garden year a call, the worker taking its
-// messages between them; "grown": the run advanced and its buffers filled); statsJson()
-// (the run's StatsJson, as `niwa garden grow --stats` without the CLI's timings), hash(),
-// stateJson(), boundsJson() ({size, n, cell, relief, min, max, groups, trees});
+// started, recording every year), then step() -> "more" | "grown" | error (one garden year a call,
+// the worker taking its messages between them; "grown": the run advanced and its buffers filled);
+// statsJson() (the run's StatsJson, as `niwa garden grow --stats` without the CLI's timings),
+// hash(), stateJson(), boundsJson() ({size, n, cell, relief, min, max, groups, trees});
 // build("glb"|"svg"|"json") then buffers("download"): the run's Export bytes (the bytes of `niwa
-// garden grow --url HASH --out g.glb`). Free functions: gardenTableJson(), gardenDecodeJson(hash)
+// garden grow --url HASH --out g.glb`); grows() (how many grows this lab started: a page's check
+// that the scrubber grows nothing), runGrows() (grows() when the run kept was grown);
+// yearsJson() ({years, recorded: [years], stopped_by, record_bytes, bytes: [per recorded year],
+// mosses: [per recorded year]}); showYear(y) -> ""/error record naming "year": the "year" group
+// filled from the run's record of year y (GardenRun's record_years, on for every page grow:
+// compose/garden_view GardenGroupMeshAt). Free functions: gardenTableJson(), gardenDecodeJson(hash)
 // ({state, notices}: the default garden with the link's keys). Does not: keep more than one run,
-// replay years, or read files (a heightmap or mask ground is not offered by the page yet).
+// keep more than one year's buffers, or read files (a heightmap, mesh or mask ground is not
+// offered by the page yet).
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
@@ -120,7 +131,10 @@ class GardenLab {
     compose::LayOutDefaults(&state);
     s = compose::CheckGardenState(state);
     if (!s.ok()) return ErrorText(s);
-    Result<compose::GardenRun> started = compose::GardenRun::Start(state, PageBudget());
+    ++grows_;
+    // Every year's picture recorded as the clock runs: the year scrubber replays them.
+    Result<compose::GardenRun> started =
+        compose::GardenRun::Start(state, PageBudget(), /*record_years=*/true);
     if (!started.ok()) return ErrorText(started.status());
     pending_.emplace(std::move(started).value());
     pending_->set_ivy_extra_bytes_per_bud(ivy::IvyPageMeshBytesPerBud());  // FillObjects' ivy mesh
@@ -148,10 +162,56 @@ class GardenLab {
     }
     run_.emplace(std::move(*pending_));
     pending_.reset();
+    run_grows_ = grows_;
     FillGround();
     FillObjects();
-    FillTrees();
+    FillTrees(run_->done(), &trees_);
     return "grown";
+  }
+
+  int grows() const { return grows_; }
+  // grows() when the run kept now was grown (a refused grow keeps the run before it).
+  int runGrows() const { return run_grows_; }
+
+  std::string yearsJson() const {
+    if (!run_) return "{}";
+    ordered_json j;
+    j["years"] = run_->done();
+    ordered_json recorded = ordered_json::array(), bytes = ordered_json::array(),
+                 mosses = ordered_json::array();
+    for (const compose::GardenYearRecord& r : run_->years()) {
+      recorded.push_back(r.year);
+      bytes.push_back(r.bytes);
+      mosses.push_back(r.mosses);
+    }
+    j["recorded"] = recorded;
+    j["stopped_by"] = run_->record_stopped_by();
+    j["record_bytes"] = run_->record_bytes();
+    j["bytes"] = bytes;
+    j["mosses"] = mosses;
+    return JsonText(j);
+  }
+
+  // The "year" group: the trees and the moss's light of garden year `year`, from the run's record.
+  std::string showYear(int year) {
+    if (!run_) return ErrorText(Status::Error("year", "nothing grown yet"));
+    if (year < 0 || year > run_->done())
+      return ErrorText(Status::Error("year", "must be in 0.." + std::to_string(run_->done()) +
+                                                 " (got " + std::to_string(year) + ")"));
+    if (!compose::GardenYearShown(*run_, year))
+      return ErrorText(Status::Error(
+          "year",
+          "year " + std::to_string(year) + " was not recorded: " + run_->record_stopped_by()));
+    year_moss_S_.clear();
+    if (year == run_->done()) {  // the last year: the grow's own buffers, not meshed again
+      year_ = trees_;
+      year_moss_S_ = ground_moss_S_;
+    } else {
+      FillTrees(year, &year_);
+      for (const compose::GardenYearRecord& r : run_->years())
+        if (r.year == year) year_moss_S_ = r.moss_light;
+    }
+    return "";
   }
 
   std::string statsJson() const { return run_ ? run_->StatsJson() : "{}"; }
@@ -170,7 +230,7 @@ class GardenLab {
     j["cell"] = g.cell;
     j["relief"] = g.relief;
     double top = g.relief;
-    for (const float y : tree_positions_) top = std::max(top, g.relief + static_cast<double>(y));
+    for (const float y : trees_.positions) top = std::max(top, g.relief + static_cast<double>(y));
     j["min"] = {-g.size / 2, 0.0, -g.size / 2};
     j["max"] = {g.size / 2, top, g.size / 2};
     ordered_json groups = ordered_json::array();
@@ -229,14 +289,17 @@ class GardenLab {
       out.Add("positions", object_positions_)
           .Add("normals", object_normals_)
           .Add("indices", object_indices_)
-          .Add("kind", object_kind_);
-    } else if (group == "trees") {
-      out.Add("positions", tree_positions_)
-          .Add("normals", tree_normals_)
-          .Add("indices", tree_indices_)
-          .Add("part", tree_part_)
-          .Add("ranges", tree_ranges_)
-          .Add("instances", tree_instances_);
+          .Add("kind", object_kind_)
+          .Add("birth", object_birth_);
+    } else if (group == "trees" || group == "year") {
+      const TreeBuffers& t = group == "trees" ? trees_ : year_;
+      out.Add("positions", t.positions)
+          .Add("normals", t.normals)
+          .Add("indices", t.indices)
+          .Add("part", t.part)
+          .Add("ranges", t.ranges)
+          .Add("instances", t.instances);
+      if (group == "year") out.Add("moss_S", year_moss_S_);
     } else if (group == "download") {
       out.Add("bytes", download_);
     } else {
@@ -262,11 +325,15 @@ class GardenLab {
     object_normals_.clear();
     object_indices_.clear();
     object_kind_.clear();
+    object_birth_.clear();
     for (const compose::PlacedObject& o : run_->scene().objects) {
       AppendMesh(o.mesh, &object_positions_, &object_normals_, &object_indices_);
       const float kind = o.kind == "wall" ? 0.f : o.kind == "rock" ? 1.f : 2.f;
       object_kind_.resize(object_positions_.size() / 3, kind);
     }
+    object_birth_.resize(object_kind_.size(), 0.f);
+    const double steps_a_year =
+        std::max(1, run_->state().params.GetInt(compose::GardenParam::kIvySteps));
     // The ivy grown on the garden (in its frame, metres), as the .glb has it: its stems (kind 3)
     // and leaves (kind 4), the suckers left out (under a centimetre: invisible at this scale).
     if (const ivy::IvyRun* ivy = run_->ivy()) {
@@ -276,34 +343,42 @@ class GardenLab {
         AppendMesh(part.mesh, &object_positions_, &object_normals_, &object_indices_);
         const float kind = part.name.find("leaves") != std::string::npos ? 4.f : 3.f;
         object_kind_.resize(object_positions_.size() / 3, kind);
+        // The garden year each vertex's ivy step falls in (step s of year ceil(s / ivy_steps)).
+        const geom::VertexAttribute* birth = part.mesh.FindAttribute("birth_step");
+        for (std::size_t v = 0; v < part.mesh.vertex_count(); ++v)
+          object_birth_.push_back(
+              birth != nullptr && v < birth->values.size()
+                  ? static_cast<float>(std::ceil(birth->values[v] / steps_a_year))
+                  : 0.f);
       }
     }
   }
 
-  void FillTrees() {
-    tree_positions_.clear();
-    tree_normals_.clear();
-    tree_part_.clear();
-    tree_indices_.clear();
-    tree_ranges_.clear();
-    tree_instances_.clear();
+  // Each distinct tree's page mesh as it stood after garden year `year` (the last grown: the run's
+  // own trees), with every placement.
+  struct TreeBuffers {
+    std::vector<float> positions, normals, part, instances;
+    std::vector<uint32_t> indices, ranges;
+  };
+  void FillTrees(int year, TreeBuffers* out) {
+    *out = TreeBuffers{};
     const std::vector<compose::PlacedTree>& placed = run_->planting().trees;
     for (std::size_t k = 0; k < run_->groups().size(); ++k) {
       const compose::GardenTreeGroup& grp = run_->groups()[k];
-      const TreeMesh mesh = compose::GardenGroupMesh(*run_, static_cast<int>(k));
-      const auto first_index = static_cast<uint32_t>(tree_indices_.size());
-      AppendPart(mesh.bark, 0.f, &tree_positions_, &tree_normals_, &tree_part_, &tree_indices_);
-      AppendPart(mesh.leaves, 1.f, &tree_positions_, &tree_normals_, &tree_part_, &tree_indices_);
-      AppendPart(mesh.flowers, 2.f, &tree_positions_, &tree_normals_, &tree_part_, &tree_indices_);
-      tree_ranges_.push_back(first_index);
-      tree_ranges_.push_back(static_cast<uint32_t>(tree_indices_.size()) - first_index);
-      tree_ranges_.push_back(static_cast<uint32_t>(tree_instances_.size() / 4));
-      tree_ranges_.push_back(static_cast<uint32_t>(grp.trees.size()));
+      const TreeMesh mesh = compose::GardenGroupMeshAt(*run_, static_cast<int>(k), year);
+      const auto first_index = static_cast<uint32_t>(out->indices.size());
+      AppendPart(mesh.bark, 0.f, &out->positions, &out->normals, &out->part, &out->indices);
+      AppendPart(mesh.leaves, 1.f, &out->positions, &out->normals, &out->part, &out->indices);
+      AppendPart(mesh.flowers, 2.f, &out->positions, &out->normals, &out->part, &out->indices);
+      out->ranges.push_back(first_index);
+      out->ranges.push_back(static_cast<uint32_t>(out->indices.size()) - first_index);
+      out->ranges.push_back(static_cast<uint32_t>(out->instances.size() / 4));
+      out->ranges.push_back(static_cast<uint32_t>(grp.trees.size()));
       for (int t : grp.trees) {
         const compose::PlacedTree& p = placed[t];
-        tree_instances_.insert(tree_instances_.end(),
-                               {static_cast<float>(p.x), static_cast<float>(p.y),
-                                static_cast<float>(p.z), static_cast<float>(p.rot * kPi / 180.0)});
+        out->instances.insert(out->instances.end(),
+                              {static_cast<float>(p.x), static_cast<float>(p.y),
+                               static_cast<float>(p.z), static_cast<float>(p.rot * kPi / 180.0)});
       }
     }
   }
@@ -312,10 +387,12 @@ class GardenLab {
   std::optional<compose::GardenRun> pending_;  // started by start(), grown by step()
   std::vector<float> ground_positions_, ground_normals_, ground_heights_, ground_moss_S_;
   std::vector<uint32_t> ground_indices_;
-  std::vector<float> object_positions_, object_normals_, object_kind_;
+  std::vector<float> object_positions_, object_normals_, object_kind_, object_birth_;
   std::vector<uint32_t> object_indices_;
-  std::vector<float> tree_positions_, tree_normals_, tree_part_, tree_instances_;
-  std::vector<uint32_t> tree_indices_, tree_ranges_;
+  TreeBuffers trees_;  // the last year's (group "trees")
+  TreeBuffers year_;   // the year last shown (group "year")
+  std::vector<float> year_moss_S_;
+  int grows_ = 0, run_grows_ = 0;
   std::vector<unsigned char> download_;  // the last build's bytes (group "download")
   emscripten::val progress_ = emscripten::val::null();
 };
@@ -336,5 +413,9 @@ EMSCRIPTEN_BINDINGS(niwa_garden) {
       .function("stateJson", &niwa::GardenLab::stateJson)
       .function("boundsJson", &niwa::GardenLab::boundsJson)
       .function("buffers", &niwa::GardenLab::buffers)
-      .function("build", &niwa::GardenLab::build);
+      .function("build", &niwa::GardenLab::build)
+      .function("grows", &niwa::GardenLab::grows)
+      .function("runGrows", &niwa::GardenLab::runGrows)
+      .function("yearsJson", &niwa::GardenLab::yearsJson)
+      .function("showYear", &niwa::GardenLab::showYear);
 }

@@ -13,8 +13,13 @@
 // page's hash), the .glb download (the worker's run's Export("glb"): the bytes of `niwa garden
 // grow --url HASH --out g.glb`), the plan .svg, the stats line (trees by species, the ivy, the
 // moss), and the ground's overlay (the moss's light, slope, altitude bands) with its legend.
-// Does not (yet): the year scrubber without regrowing, Blow, hybrid (card) trees, moving
-// objects, or several workers growing at once.
+// The year scrubber and Play replay the garden's years WITHOUT regrowing: every grow records each
+// year's picture as the clock runs (core GardenRun's record_years), a picked year's trees are meshed
+// from that record in the worker ('year' -> 'gardenYear') and swapped in with the moss's light of
+// that year; the ivy (grown after the clock) is shown to the part of it born by that year. The link
+// does not change when scrubbing (a view, like the camera); the downloads are the last year's.
+// Does not (yet): Blow, hybrid (card) trees, moving objects, regrowing a year the record left out
+// (over its memory share: the scrubber says so), or several workers growing at once.
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { Frame } from '../gl/frame.js';
 import { OrbitCamera } from '../gl/orbit_camera.js';
@@ -31,10 +36,9 @@ const ui = {
   canvas: $('view'), stats: $('stats'), progress: $('progress'), cancel: $('cancel'), params: $('params'),
   species: $('species'), plants: $('plants'), copyLink: $('copy-link'), shareStatus: $('share-status'),
   resetView: $('reset-view'), clickHelp: $('click-help'), overlay: $('overlay'), overlayHelp: $('overlay-help'),
+  year: $('year'), yearText: $('year-text'), play: $('play'),
 };
 mountStudyNav($('studies'), 'garden');
-// The timeline of the skeleton: no year scrubber yet (it would regrow); hidden.
-for (const el of document.querySelectorAll('.timeline')) el.style.display = 'none';
 
 const notices = new Notices($('notice'), ['webgl', 'error', 'hash']);
 // The opening garden's years: a result in a few seconds in the page with trees that read as trees
@@ -74,6 +78,7 @@ const loop = new ProgressiveLoop({
   camera,
   onDrawn: (drawn) => {
     setHooks({ drawnSerial: gardenSerial, drawnTrees: drawn.trees ?? 0, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls, shadow: drawn.shadow ?? '', drawnOverlay: renderer?.overlay ?? 'none' });
+    yearDrawn();
   },
 });
 const requestFrame = () => loop.request();
@@ -221,6 +226,7 @@ worker.on('garden', (msg) => {
   worker.recycle(msg.buffers);
   controller.grown(msg.hash);
   gardenSerial += 1;
+  resetYears(msg.stats.years, msg.years, msg.grows);
   controller.showWork(false);
   ui.progress.textContent = '';
   const s = msg.stats;
@@ -234,6 +240,116 @@ worker.on('garden', (msg) => {
     stats: JSON.stringify(s), statsText: msg.statsText, hash: msg.hash, growMs: msg.growMs.toFixed(1),
   });
   requestFrame();
+});
+
+// ---------------------------------------------------------------- the year scrubber and Play
+// Each grow records every year's picture (the worker's 'garden' reply: `years`, the recorded years
+// and their bytes); the scrubber asks the worker for a year's trees ('year'; a newer pick
+// supersedes an older one), which builds them from that record: no year is grown again
+// (data-worker-grows, the worker's count of grows, stays put while scrubbing). The year asked and
+// the time from the pick to that year on screen are hooks (yearShown, yearAnswerMs).
+let lastYear = 0;        // the garden's years (the last grown)
+let years = null;        // the worker's yearsJson of the garden on screen
+let gardenGrows = 0;     // the worker's grows count of the garden on screen
+let shownYear = 0;       // the year on screen
+let askedYear = null;    // {year, at: performance.now()} of the pick not yet drawn
+let yearSerial = 0;
+let yearWaiters = [];    // Play: resolved once the year asked is on screen
+
+function yearText(y) {
+  const mosses = years?.mosses?.[years.recorded.indexOf(y)];
+  return `year ${y} of ${lastYear}${Number.isFinite(mosses) && mosses > 0 ? ` · ${mosses.toLocaleString('en')} mosses` : ''}`;
+}
+
+function resetYears(total, record, grows) {
+  stopPlaying();
+  lastYear = Number(total) || 0;
+  years = record || null;
+  gardenGrows = grows;
+  shownYear = lastYear;
+  askedYear = null;
+  ui.year.max = String(lastYear);
+  ui.year.value = String(lastYear);
+  ui.year.disabled = lastYear === 0;
+  ui.yearText.textContent = yearText(lastYear) + (years?.stopped_by ? ` · years after ${years.recorded.at(-1) ?? 0} not recorded` : '');
+  const kb = (years?.record_bytes ?? 0) / 1024;
+  setHooks({ yearShown: lastYear, yearsRecorded: years?.recorded?.length ?? 0, recordKb: kb.toFixed(0), workerGrows: grows, yearAnswerMs: '' });
+}
+
+// Shows garden year y (0..lastYear) from the record; a year the record left out says so.
+function pickYear(y) {
+  y = Math.max(0, Math.min(lastYear, Math.round(y)));
+  ui.year.value = String(y);
+  if (!years || !renderer) return;
+  if (y !== lastYear && !years.recorded.includes(y)) {
+    ui.yearText.textContent = `year ${y} of ${lastYear} was not recorded (${years.stopped_by}): set Years to ${y} to grow it`;
+    return;
+  }
+  ui.yearText.textContent = yearText(y);
+  askedYear = { year: y, at: performance.now(), frames: 0 };
+  setHooks({ yearAsked: y, yearAnswerMs: '' });
+  worker.request('year', { year: y, grows: gardenGrows }, { done: ['gardenYear'] });
+}
+
+worker.on('gardenYear', (msg) => {
+  // A reply for a garden no longer on screen (a grow came between): its buffers go back.
+  if (msg.stale || msg.run !== gardenGrows || !renderer || !askedYear || msg.year !== askedYear.year) {
+    worker.recycle(msg.buffers);
+    return;
+  }
+  renderer.setYear(msg.buffers.year, msg.year, msg.year === lastYear);
+  worker.recycle(msg.buffers);
+  shownYear = msg.year;
+  yearSerial += 1;
+  setHooks({ yearSerial, workerGrows: msg.grows, yearBuildMs: msg.ms.toFixed(1) });
+  loop.request(true);  // the picked year at the next animation frame
+});
+
+// Called after every finished frame: a year picked is on screen.
+function yearDrawn() {
+  if (!askedYear || !renderer) return;
+  askedYear.frames += 1;  // frames finished since the pick, this one included
+  if (shownYear !== askedYear.year) return;
+  const ms = performance.now() - askedYear.at;
+  setHooks({ yearShown: shownYear, yearAnswerMs: ms.toFixed(0), yearFrames: askedYear.frames, drawnYearSerial: yearSerial });
+  askedYear = null;
+  const waiting = yearWaiters;
+  yearWaiters = [];
+  for (const resolve of waiting) resolve(true);
+}
+
+ui.year.addEventListener('input', () => {
+  stopPlaying();
+  pickYear(Number(ui.year.value));
+});
+
+// Play shows every year from the one on screen (or 0 at the end) to the last: the next year is
+// picked 200 ms after this one is on screen, so no year is skipped on a slow frame.
+let playRun = 0;
+function stopPlaying() {
+  playRun += 1;
+  ui.play.textContent = 'Play';
+  ui.play.setAttribute('aria-pressed', 'false');
+}
+ui.play.addEventListener('click', async () => {
+  if (ui.play.getAttribute('aria-pressed') === 'true') return stopPlaying();
+  if (!years || lastYear === 0) return;
+  const run = ++playRun;
+  ui.play.textContent = 'Pause';
+  ui.play.setAttribute('aria-pressed', 'true');
+  let y = shownYear >= lastYear ? 0 : shownYear;
+  const played = [];
+  while (run === playRun && y <= lastYear) {
+    const onScreen = new Promise((resolve) => yearWaiters.push(resolve));
+    pickYear(y);
+    if (!(await Promise.race([onScreen, new Promise((r) => setTimeout(() => r(false), 10000))]))) break;
+    if (run !== playRun) break;
+    played.push(y);
+    setHooks({ yearsPlayed: played.join(',') });
+    await new Promise((resolve) => setTimeout(resolve, 200));
+    y += 1;
+  }
+  if (run === playRun) stopPlaying();
 });
 
 // ---------------------------------------------------------------- overlays

@@ -4,7 +4,9 @@
 // drawn at all its placements with instancing (as the grove draws its copies), in metres, y up, under
 // the frame's camera and sun; the objects and trees cast the sun's shadow into the frame's shadow
 // map and everything receives it. Also the ground's height under a point and the ray of a click
-// (the page's planting by click).
+// (the page's planting by click). Another garden year (the year scrubber: setYear) swaps the trees'
+// meshes and the ground's moss light for that year's and hides the ivy born after it (the objects'
+// birth year per vertex against uYear); nothing else is re-uploaded.
 // A StudyLayer (web/gl/frame.js), a layer of a Frame of fit: false (metres).
 // Does not: talk to the worker, know the garden model, or draw the hybrid (card) trees of the grove.
 import { copyOf, floatAttribute, staticBuffer, viewOf } from '../gl/buffers.js';
@@ -26,6 +28,7 @@ export class GardenRenderer extends StudyLayer {
     this.serial = 0;
     this.overlay = 'none';  // one of OVERLAYS
     this.hasMoss = false;   // the ground carries the moss's light (its moss_S buffer)
+    this.year = null;       // the garden year shown (null: the last grown; ivy by its birth year)
   }
 
   async init() {
@@ -44,21 +47,29 @@ export class GardenRenderer extends StudyLayer {
     for (const b of part.buffers) this.gl.deleteBuffer(b);
   }
 
-  // An indexed mesh (positions, normals, indices, and a per-vertex tint or none) in a new VAO.
-  #mesh(m, tint) {
+  // An indexed mesh (positions, normals, indices, a per-vertex tint or none, a per-vertex birth
+  // year or none) in a new VAO; `tintBuffer` is the tint's buffer (the ground's moss light, which
+  // another year replaces).
+  #mesh(m, tint, birth) {
     const gl = this.gl;
     const vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
     const buffers = [staticBuffer(gl, m.positions), staticBuffer(gl, m.normals)];
     floatAttribute(gl, 0, buffers[0], 3);
     floatAttribute(gl, 1, buffers[1], 3);
+    let tintBuffer = null;
     if (tint) {
-      buffers.push(staticBuffer(gl, tint));
-      floatAttribute(gl, 2, buffers[2], 1);
+      tintBuffer = staticBuffer(gl, tint);
+      buffers.push(tintBuffer);
+      floatAttribute(gl, 2, tintBuffer, 1);
+    }
+    if (birth && birth.byteLength > 0) {
+      buffers.push(staticBuffer(gl, birth));
+      floatAttribute(gl, 4, buffers[buffers.length - 1], 1);
     }
     buffers.push(staticBuffer(gl, m.indices, gl.ELEMENT_ARRAY_BUFFER));
     gl.bindVertexArray(null);
-    return { vao, buffers, count: m.indices.byteLength / 4 };
+    return { vao, buffers, tintBuffer, count: m.indices.byteLength / 4 };
   }
 
   // buffers: the worker's {ground, objects, trees} (web/bindings/garden_bindings.cpp; used at once:
@@ -71,8 +82,35 @@ export class GardenRenderer extends StudyLayer {
     const mossS = buffers.ground.moss_S;
     this.hasMoss = !!mossS && mossS.byteLength > 0;
     this.ground = this.#mesh(buffers.ground, this.hasMoss ? mossS : null);
-    this.objects = buffers.objects.indices.byteLength > 0 ? this.#mesh(buffers.objects, buffers.objects.kind) : null;
-    const t = buffers.trees;
+    this.objects = buffers.objects.indices.byteLength > 0 ? this.#mesh(buffers.objects, buffers.objects.kind, buffers.objects.birth) : null;
+    this.year = null;
+    this.#setTrees(buffers.trees);
+    this.grid = { n: bounds.n, size: bounds.size, cell: bounds.cell, relief: bounds.relief, heights: copyOf(Float32Array, buffers.ground.heights) };
+    this.boundsView = { min: [...bounds.min], max: [...bounds.max] };
+    this.serial += 1;
+  }
+
+  // Garden year `year` of the garden on screen (the worker's 'gardenYear' buffers: the trees' six
+  // buffers and that year's moss_S; used at once, may be recycled after): the trees' meshes
+  // replaced, the ground's moss light rewritten in place, the ivy shown to its birth year `year`.
+  // `last`: the year is the last grown (its ivy all shown).
+  setYear(buffers, year, last) {
+    const gl = this.gl;
+    this.progress.abort();
+    this.#drop(this.trees);
+    this.trees = null;
+    this.#setTrees(buffers);
+    const mossS = buffers.moss_S;
+    if (this.hasMoss && this.ground?.tintBuffer && mossS && mossS.byteLength > 0) {
+      gl.bindBuffer(gl.ARRAY_BUFFER, this.ground.tintBuffer);
+      gl.bufferSubData(gl.ARRAY_BUFFER, 0, viewOf(Float32Array, mossS));
+    }
+    this.year = last ? null : year;
+    this.serial += 1;
+  }
+
+  #setTrees(t) {
+    const gl = this.gl;
     if (t.indices.byteLength > 0) {
       const trees = this.#mesh(t, t.part);
       gl.bindVertexArray(trees.vao);
@@ -86,9 +124,6 @@ export class GardenRenderer extends StudyLayer {
       }
       this.trees = trees;
     }
-    this.grid = { n: bounds.n, size: bounds.size, cell: bounds.cell, relief: bounds.relief, heights: copyOf(Float32Array, buffers.ground.heights) };
-    this.boundsView = { min: [...bounds.min], max: [...bounds.max] };
-    this.serial += 1;
   }
 
   clear() {
@@ -184,6 +219,7 @@ export class GardenRenderer extends StudyLayer {
         gl.bindVertexArray(part.vao);
         uniforms();
         gl.vertexAttrib4f(3, 0, 0, 0, 0);  // not an array in these VAOs: the generic value (no turn)
+        gl.vertexAttrib1f(4, 0);  // born in year 0 (the objects' VAO has its ivy's birth years)
       },
       draw: (first, n) => gl.drawElements(gl.TRIANGLES, n * 3, gl.UNSIGNED_INT, first * 12),
     };
@@ -197,9 +233,15 @@ export class GardenRenderer extends StudyLayer {
       setup: () => {
         gl.bindVertexArray(this.trees.vao);
         uniforms();
+        gl.vertexAttrib1f(4, 0);
       },
       draw: (first, n) => this.#drawGroup(g, first, n),
     }));
+  }
+
+  // The year the ivy is shown to (every ivy vertex at the last year grown).
+  #shownYear() {
+    return this.year === null ? 1e9 : this.year;
   }
 
   shadowKey() {
@@ -216,6 +258,7 @@ export class GardenRenderer extends StudyLayer {
     const uniforms = () => {
       gl.useProgram(s.program);
       gl.uniformMatrix4fv(s.uniforms.uSunViewProjection, false, sun.matrix);
+      gl.uniform1f(s.uniforms.uYear, this.#shownYear());
       gl.disable(gl.CULL_FACE);
     };
     const steps = [];
@@ -240,6 +283,7 @@ export class GardenRenderer extends StudyLayer {
       const overlay = OVERLAYS.indexOf(this.overlay);
       gl.uniform1i(p.uniforms.uOverlay, overlay === 1 && !this.hasMoss ? 0 : Math.max(0, overlay));
       gl.uniform1f(p.uniforms.uBand, Math.max(1, (this.grid ? this.grid.relief : 1) / 10));
+      gl.uniform1f(p.uniforms.uYear, this.#shownYear());
       view.shadow?.bindFor(p, view.sun);
       gl.enable(gl.DEPTH_TEST);
       gl.disable(gl.CULL_FACE);

@@ -7,6 +7,16 @@
 // every planted tree) and the buffer groups ground, objects and trees (each distinct tree's mesh
 // once with its placements), copied once out of the WASM heap into buffers the page gave back
 // ('recycle') where they fit (web/worker/transfer.js TransferPool), then transferred.
+// The reply also carries `years` (the lab's yearsJson: the years recorded as the clock ran, their
+// bytes, why the recording stopped) and `grows` (how many grows this client's lab started).
+// A 'year' ({year}) draws another garden year WITHOUT growing (the year scrubber and Play): the
+// lab's showYear(y) builds each distinct tree's mesh of that year from the run's record and the
+// reply {type: 'gardenYear', year, grows, run, buffers: {year: {positions, normals, indices, part,
+// ranges, instances, moss_S}}, ms} sends them as the trees' buffers are sent (copied once,
+// transferred, reused when the page gave them back); a newer 'year' of the client drops an older
+// one still queued (no reply: the page's request of that group was superseded too), and a 'year'
+// whose `grows` is not the lab's runGrows() (asked of a garden since regrown) is answered {stale:
+// true}; `run` is runGrows() (the grow of the garden the year is of).
 // Table: the garden bindings' gardenTableJson; presets: the tree study's (the species picker);
 // decode: gardenDecodeJson (the default garden with the link's keys).
 // An 'export' ({format: glb | svg | json | heightmap}) answers with the run's bytes (the bytes of
@@ -27,7 +37,7 @@ export function createHandler(Module, ctx) {
 
   function labOf(client) {
     if (!labs.has(client)) {
-      const entry = { lab: new Module.GardenLab(), working: 0, lastPost: 0 };
+      const entry = { lab: new Module.GardenLab(), working: 0, lastPost: 0, wantYear: 0 };
       entry.lab.setProgress((stage, done, total) => {
         const now = performance.now();
         if (done !== total && now - entry.lastPost < 100) return;
@@ -74,8 +84,32 @@ export function createHandler(Module, ctx) {
     post({
       type: 'garden', id, client, stats: JSON.parse(statsText), statsText, hash: entry.lab.hash(),
       state: JSON.parse(entry.lab.stateJson()), bounds: JSON.parse(entry.lab.boundsJson()),
+      years: JSON.parse(entry.lab.yearsJson()), grows: entry.lab.grows(),
       buffers, bufferCounts: counts, growMs, wallMs: performance.now() - t0,
     }, transfer);
+  }
+
+  // Another year of the garden grown: its trees' meshes from the run's record (nothing grows).
+  async function year(msg, client) {
+    const entry = labOf(client);
+    entry.wantYear = msg.id;
+    await nextTask();  // a newer 'year' already queued supersedes this one
+    if (entry.wantYear !== msg.id) return;
+    // Asked of a garden since regrown (the pick waited behind a grow): answered stale, not shown.
+    if (msg.grows !== undefined && msg.grows !== entry.lab.runGrows()) {
+      post({ type: 'gardenYear', id: msg.id, client, year: Number(msg.year), grows: entry.lab.grows(), run: entry.lab.runGrows(), stale: true, buffers: {}, ms: 0 });
+      return;
+    }
+    const t0 = performance.now();
+    const error = errorOf(entry.lab.showYear(Number(msg.year)));
+    if (error) {
+      post(errorReply(error, msg.id, client));
+      return;
+    }
+    const transfer = [];
+    const counts = { reused: 0, fresh: 0, dropped: 0 };
+    const buffers = { year: returned.take(client, 'year', entry.lab.buffers('year'), transfer, counts) };
+    post({ type: 'gardenYear', id: msg.id, client, year: Number(msg.year), grows: entry.lab.grows(), run: entry.lab.runGrows(), buffers, bufferCounts: counts, ms: performance.now() - t0 }, transfer);
   }
 
   const FORMATS = ['glb', 'svg', 'json', 'heightmap'];
@@ -90,6 +124,7 @@ export function createHandler(Module, ctx) {
     messages: {
       decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...decode(String(msg.hash || '')) }),
       update,
+      year,
       export: exportGarden,
       recycle: (msg, client) => returned.give(client, msg.buffers),
     },

@@ -196,10 +196,20 @@
  *   -> ProgressMessage (after every year: stage 'grow', done, total years), {type: 'garden', stats
  *       (the run's StatsJson), statsText, hash, state, bounds: {size, n, cell, relief, min, max,
  *       groups: [{name, species, seed, age, trees, shaded, crown}], trees: [{species, seed, age,
- *       pos, rot, hand, group}]}, buffers: {ground: {positions, normals, indices, heights},
- *       objects: {positions, normals, indices, kind}, trees: {positions, normals, indices, part,
- *       ranges, instances}} (views into the buffers the client handed back when they fit),
- *       bufferCounts, growMs, wallMs}
+ *       pos, rot, hand, group}]}, years: {years, recorded: [years], stopped_by, record_bytes,
+ *       bytes: [per recorded year], mosses: [per recorded year]} (the years recorded as the clock
+ *       ran), grows (the client's lab's grows so far), buffers: {ground: {positions, normals,
+ *       indices, heights, moss_S}, objects: {positions, normals, indices, kind, birth (the garden
+ *       year an ivy vertex grew in)}, trees: {positions, normals, indices, part, ranges,
+ *       instances}} (views into the buffers the client handed back when they fit), bufferCounts,
+ *       growMs, wallMs}
+ * @typedef {Envelope & {type: 'year', year: number, grows?: number}} GardenYearMessage
+ *   (the year scrubber: nothing grows) -> {type: 'gardenYear', year, grows, run, buffers: {year:
+ *       {positions, normals, indices, part, ranges, instances, moss_S}} (that year's trees and moss
+ *       light, from the run's record), bufferCounts, ms} or an error naming "year" (not recorded);
+ *       a newer 'year' of the client drops an older one still queued (no reply); one whose
+ *       `grows` is not the lab's run's (asked of the garden before a regrow) is answered {stale:
+ *       true}; grows: the lab's grows so far, run: the grow of the garden kept
  * export: format 'glb' | 'svg' | 'json' | 'heightmap' (the run's Export bytes).
  */
 // (No list of message types here: each study's handler says which it answers, and the router
