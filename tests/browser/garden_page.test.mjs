@@ -4,7 +4,8 @@
 // equal the native CLI's `niwa garden grow --url HASH --stats` (the ms* timings aside) for the
 // page's own hash; a panel edit (plant_seed) regrows with the row in the hash; a real click on the
 // ground places a tree of the picked species there (the stats' by-hand count + 1, the plant within
-// 0.3 m of the clicked point) and its Remove button takes it away; Copy link reopens the same
+// 0.3 m of the clicked point); a rock placed by a click and the default keyaki moved by Move and a
+// click end in one grown garden; the Remove buttons take the tree and the rock away; Copy link reopens the same
 // garden (same hash and stats); the ground's overlays (moss light, slope, altitude bands) each
 // change the ground with a legend; Embed offers <niwa-garden> and the iframe of the page's hash; the
 // Garden .glb download is the bytes of native `niwa garden grow --url HASH --out g.glb`; a bad Years
@@ -168,10 +169,44 @@ await runBrowserTest(async (server, browser) => {
   check('a click on the ground places a tree there (by hand + 1)', data.status === 'ready' && Number(data.byHand) === before.byHand + 1 && Number(data.handPlants) === before.plants + 1 && near,
     `${data.status} ${data.error || ''} by hand ${before.byHand} -> ${data.byHand}, trees ${before.trees} -> ${data.trees} (${JSON.stringify(placed.planting)}), last plant ${last.join(':')}, ${state.slice(0, 120)}`);
   await saveCanvasPng(page, 'garden-placed.png');
+  // 3b. Objects and Move: pick "rock" and click the ground (an object placed there), then Move the
+  // default keyaki (plants[0]) and click the ground (it goes there): two edits, the second taking
+  // over the first's growth; the last garden has both.
+  const clickAt = async ([x, z]) => {
+    const p = await page.evaluate(([gx2, gz2]) => window.__niwaGardenScreenOf(gx2, gz2), [x, z]);
+    await page.mouse.click(box[0] + p[0], box[1] + p[1]);
+  };
+  const objectsBefore = Number(data.objects);
+  await page.selectOption('#species', 'object:rock');
+  await clickAt([-12, -6]);
+  await page.click('#plants button[data-plant="0"][data-action="move"]');
+  const movingHook = await page.evaluate(() => document.documentElement.dataset.moving);
+  await clickAt([-4, 12]);
+  const parts = (hash, key) => (new RegExp(`(?:^|&)${key}=([^&]*)`).exec(hash)?.[1] ?? '').split(',').map((e) => decodeURIComponent(e).split(':'));
+  let both = null;
+  for (let t0 = Date.now(); Date.now() - t0 < TIMEOUT; await page.waitForTimeout(250)) {
+    const d = await page.evaluate(() => ({ ...document.documentElement.dataset }));
+    if (d.status !== 'ready' || d.drawnSerial !== d.gardenSerial) continue;
+    const rock = parts(d.hash, 'objects').pop();
+    const keyaki = parts(d.hash, 'plants')[0];
+    if (rock[0] === 'rock' && Math.hypot(Number(rock[1]) + 12, Number(rock[2]) + 6) < 0.3
+      && Math.hypot(Number(keyaki[3]) + 4, Number(keyaki[4]) - 12) < 0.3) { both = d; break; }
+  }
+  check('a rock placed by a click and the keyaki moved by Move + a click: both in the grown garden', both !== null
+    && Number(both.objects) === objectsBefore + 1 && Number(both.handPlants) === before.plants + 1 && movingHook === 'plants[0]',
+    both ? `objects ${objectsBefore} -> ${both.objects}; ${both.hash.slice(0, 200)}` : `moving hook ${movingHook}; never both: ${(await page.evaluate(() => document.documentElement.dataset.hash)).slice(0, 200)}`);
+  await saveCanvasPng(page, 'garden-moved.png');
+  data = both ?? data;
   serial = Number(data.gardenSerial);
-  await page.click(`#plants button[data-plant="${before.plants}"]`);
-  data = await waitGarden(page, serial);
-  check('its Remove button takes it away (by hand back)', data.status === 'ready' && Number(data.byHand) === before.byHand, `${data.status} by hand ${data.byHand}`);
+  await page.click(`#objects button[data-object="${objectsBefore}"][data-action="remove"]`);
+  await page.click(`#plants button[data-plant="${before.plants}"][data-action="remove"]`);
+  for (let t0 = Date.now(); Date.now() - t0 < TIMEOUT; await page.waitForTimeout(250)) {
+    data = await page.evaluate(() => ({ ...document.documentElement.dataset }));
+    if (data.status === 'ready' && Number(data.gardenSerial) > serial && data.drawnSerial === data.gardenSerial
+      && Number(data.byHand) === before.byHand && Number(data.objects) === objectsBefore) break;
+  }
+  check('the Remove buttons take the placed tree and the rock away (by hand and objects back)', data.status === 'ready'
+    && Number(data.byHand) === before.byHand && Number(data.objects) === objectsBefore, `${data.status} by hand ${data.byHand}, objects ${data.objects}`);
 
   // 4. Copy link reopens the same garden.
   await page.evaluate(() => { document.getElementById('share-status').textContent = ''; });

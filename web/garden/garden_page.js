@@ -5,10 +5,11 @@
 // through the garden's hash codec (the text `niwa garden grow --url` reads), and draws the ground,
 // the objects and every planted tree (each distinct tree's mesh once, instanced at its
 // placements: garden_renderer.js) under the frame's orbit camera and sun with its shadow map.
-// A click on the ground (not a drag) places a tree of the species picked (its foot where the click's
-// ray meets the ground's heights), a click within a metre of a hand-placed tree's foot removes it,
-// and the list of hand-placed trees has a Remove button each: every one edits the state's plants and
-// regrows in the worker (web/worker/garden_handler.js) with progress and Cancel. Copy link, Embed
+// A click on the ground (not a drag) places the tree preset or object (wall, rock, lantern) picked
+// (its foot where the click's ray meets the ground's heights), a click within a metre of a
+// hand-placed tree's foot removes it, and the lists of hand-placed trees and of objects have Move
+// (the next click on the ground moves it there) and Remove buttons: every one edits the state's
+// plants or objects (the ivy's seeds by index follow) and regrows in the worker (web/worker/garden_handler.js) with progress and Cancel. Copy link, Embed
 // (<niwa-garden>, public/niwa-garden.js, or the iframe public/embed.html?study=garden, of the
 // page's hash), the .glb download (the worker's run's Export("glb"): the bytes of `niwa garden
 // grow --url HASH --out g.glb`), the plan .svg, the stats line (trees by species, the ivy, the
@@ -18,7 +19,7 @@
 // from that record in the worker ('year' -> 'gardenYear') and swapped in with the moss's light of
 // that year; the ivy (grown after the clock) is shown to the part of it born by that year. The link
 // does not change when scrubbing (a view, like the camera); the downloads are the last year's.
-// Does not (yet): Blow, hybrid (card) trees, moving objects, regrowing a year the record left out
+// Does not (yet): Blow, hybrid (card) trees, dragging things (a Move, then a click), regrowing a year the record left out
 // (over its memory share: the scrubber says so), or several workers growing at once.
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { Frame } from '../gl/frame.js';
@@ -34,7 +35,7 @@ import { GardenRenderer } from './garden_renderer.js';
 const $ = (id) => document.getElementById(id);
 const ui = {
   canvas: $('view'), stats: $('stats'), progress: $('progress'), cancel: $('cancel'), params: $('params'),
-  species: $('species'), plants: $('plants'), copyLink: $('copy-link'), shareStatus: $('share-status'),
+  species: $('species'), plants: $('plants'), objects: $('objects'), copyLink: $('copy-link'), shareStatus: $('share-status'),
   resetView: $('reset-view'), clickHelp: $('click-help'), overlay: $('overlay'), overlayHelp: $('overlay-help'),
   year: $('year'), yearText: $('year-text'), play: $('play'),
 };
@@ -56,7 +57,7 @@ const controller = new StudyController({
     worker.request('init', { hash: '' }, { done: ['ready'] });
   },
   onError: (msg, when) => {
-    if (when === 'after') showPlantError(/^plants/.test(msg.field || '') ? msg.message : '');
+    if (when === 'after') showPlantError(/^(plants|objects)/.test(msg.field || '') ? msg.message : '');
     return false;
   },
 });
@@ -134,47 +135,99 @@ function showPlantError(line) {
   el.hidden = !line;
 }
 
-// The hand-placed trees, each with a Remove button.
+// The hand-placed trees and the objects, each with Move and Remove buttons.
+const OBJECT_KINDS = ['wall', 'rock', 'lantern'];
+let moving = null;  // {list: 'plants' | 'objects', index}: the next click on the ground moves it there
+
 function showPlants() {
   ui.plants.replaceChildren();
+  const item = (list, k, text) => {
+    const li = document.createElement('li');
+    li.append(`${text} `);
+    for (const [label, act] of [['Move', () => startMove(list, k)], ['Remove', () => removeItem(list, k)]]) {
+      const button = document.createElement('button');
+      button.type = 'button';
+      button.textContent = label;
+      button.dataset[list === 'plants' ? 'plant' : 'object'] = String(k);
+      button.dataset.action = label.toLowerCase();
+      if (moving && moving.list === list && moving.index === k && label === 'Move') button.setAttribute('aria-pressed', 'true');
+      button.addEventListener('click', act);
+      li.append(button);
+    }
+    return li;
+  };
   (state?.plants || []).forEach((p, k) => {
-    const item = document.createElement('li');
     const [x, z] = p.pos || [0, 0];
-    item.append(`${p.species} (seed ${p.seed}, age ${p.age}) at ${x.toFixed(1)}, ${z.toFixed(1)} m `);
-    const remove = document.createElement('button');
-    remove.type = 'button';
-    remove.textContent = 'Remove';
-    remove.dataset.plant = String(k);
-    remove.addEventListener('click', () => removePlant(k));
-    item.append(remove);
-    ui.plants.append(item);
+    ui.plants.append(item('plants', k, `${p.species} (seed ${p.seed}, age ${p.age}) at ${x.toFixed(1)}, ${z.toFixed(1)} m`));
   });
-  setHooks({ handPlants: (state?.plants || []).length });
+  ui.objects.replaceChildren();
+  (state?.objects || []).forEach((o, k) => {
+    const [x, z] = o.pos || [0, 0];
+    ui.objects.append(item('objects', k, `${o.kind} at ${x.toFixed(1)}, ${z.toFixed(1)} m`));
+  });
+  setHooks({ handPlants: (state?.plants || []).length, objects: (state?.objects || []).length, moving: moving ? `${moving.list}[${moving.index}]` : '' });
 }
 
-function editPlants(plants) {
-  state = { ...currentState(), plants };
+// The state with `list` replaced; the ivy's seeds named by index ("objects[2]", "plants[0]") follow
+// their thing when one before it is removed, and go with it when it is.
+function editList(list, items, removed = -1) {
+  const next = { ...currentState(), [list]: items };
+  if (removed >= 0 && next.ivy?.on) {
+    const re = new RegExp(`^${list}\\[(\\d+)\\]$`);
+    const on = [];
+    for (const seed of next.ivy.on) {
+      const m = re.exec(seed);
+      if (!m) { on.push(seed); continue; }
+      const i = Number(m[1]);
+      if (i !== removed) on.push(`${list}[${i > removed ? i - 1 : i}]`);
+    }
+    next.ivy = { ...next.ivy, on };
+  }
+  state = next;
   showPlants();
   sendUpdate(true);
 }
 
-function removePlant(k) {
-  editPlants(state.plants.filter((_, i) => i !== k));
+function removeItem(list, k) {
+  moving = null;
+  editList(list, (state[list] || []).filter((_, i) => i !== k), k);
 }
 
-// A click on the ground at (x, z): removes the hand-placed tree whose foot is within HAND_REACH,
-// else places a tree of the picked species there (seed 1, age 0).
+function startMove(list, k) {
+  moving = moving && moving.list === list && moving.index === k ? null : { list, index: k };
+  ui.clickHelp.textContent = moving ? `Click the ground where the ${list === 'plants' ? state.plants[k].species : state.objects[k].kind} goes.` : '';
+  showPlants();
+}
+
+// A click on the ground at (x, z): moves the thing picked by a Move button there; else removes the
+// hand-placed tree whose foot is within HAND_REACH; else places the picked tree preset (seed 1,
+// age 0) or object (turned 0, scale 1) there.
 function clickGround(x, z) {
-  const plants = state?.plants || [];
-  const near = plants.findIndex((p) => Math.hypot(p.pos[0] - x, p.pos[1] - z) <= HAND_REACH);
   const round = (v) => Math.round(v * 100) / 100;
+  const plants = state?.plants || [];
+  if (moving) {
+    const { list, index } = moving;
+    moving = null;
+    ui.clickHelp.textContent = '';
+    setHooks({ lastClick: `move:${list}[${index}]:${round(x)},${round(z)}` });
+    editList(list, (state[list] || []).map((it, i) => (i === index ? { ...it, pos: [round(x), round(z)] } : it)));
+    return;
+  }
+  const near = plants.findIndex((p) => Math.hypot(p.pos[0] - x, p.pos[1] - z) <= HAND_REACH);
   if (near >= 0) {
     setHooks({ lastClick: `remove:${near}` });
-    removePlant(near);
+    removeItem('plants', near);
+    return;
+  }
+  const picked = ui.species.value;
+  if (picked.startsWith('object:')) {
+    const kind = picked.slice('object:'.length);
+    setHooks({ lastClick: `object:${kind}:${round(x)},${round(z)}` });
+    editList('objects', [...(state?.objects || []), { kind, pos: [round(x), round(z)], rot: 0, scale: 1 }]);
     return;
   }
   setHooks({ lastClick: `plant:${round(x)},${round(z)}` });
-  editPlants([...plants, { species: ui.species.value, seed: 1, age: 0, pos: [round(x), round(z)], rot: 0 }]);
+  editList('plants', [...plants, { species: picked, seed: 1, age: 0, pos: [round(x), round(z)], rot: 0 }]);
 }
 
 // ---------------------------------------------------------------- worker replies
@@ -184,7 +237,13 @@ worker.on('ready', (msg) => {
     worker.request('decode', { hash: lastGoodHash ? `#${lastGoodHash}` : OPENING_HASH }, { done: ['decoded'] });
     return;
   }
-  for (const name of msg.species) ui.species.append(new Option(name, name));
+  const trees = document.createElement('optgroup');
+  trees.label = 'Trees';
+  for (const name of msg.species) trees.append(new Option(name, name));
+  const objects = document.createElement('optgroup');
+  objects.label = 'Objects';
+  for (const kind of OBJECT_KINDS) objects.append(new Option(kind, `object:${kind}`));
+  ui.species.append(trees, objects);
   if (msg.species.includes('sakura')) ui.species.value = 'sakura';
   panel = new ParamPanel(ui.params, msg.paramTable, (spec, stage) => scheduleUpdate(stage));
   notices.set('hash', msg.decoded.notices);
