@@ -82,6 +82,16 @@ compose::GardenState ResolveGardenState(const GardenOptions& o) {
                            mesh.status().Line() + "; must be a .glb, .gltf or .obj ground"));
       state.ground_mesh = std::move(*mesh);
     }
+    for (std::size_t i = 0; i < state.objects.size(); ++i) {
+      compose::GardenObject& obj = state.objects[i];
+      if (obj.kind != "mesh" || obj.file.empty()) continue;
+      Result<geom::TriMesh> mesh = io::ReadMeshFile(BesideGardenFile(o.garden, obj.file));
+      if (!mesh.ok())
+        Fail(Status::Error(
+            "--garden " + Echo(o.garden) + ": objects[" + std::to_string(i) + "].file",
+            mesh.status().Line() + "; must be a .glb, .gltf or .obj mesh"));
+      obj.mesh = std::move(*mesh);
+    }
     if (!state.mask_name.empty()) {
       Result<std::string> png =
           ReadFile(BesideGardenFile(o.garden, state.mask_name),

@@ -50,6 +50,7 @@ moss::MossScene GardenMossLand(const GardenScene& scene) {
   ground.uvs.clear();
   append(ground, moss::Geology::kHumus, 0);
   for (const PlacedObject& o : scene.objects) {
+    // A dropped mesh is counted with the lanterns' stone (the default garden's regions stay four).
     const uint8_t region = o.kind == "wall" ? 1 : o.kind == "rock" ? 2 : 3;
     append(o.mesh, moss::Geology::kAsphalt, region);
   }

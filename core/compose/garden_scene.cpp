@@ -298,6 +298,34 @@ geom::TriMesh GardenObjectMesh(const std::string& kind, uint64_t variant) {
   return mesh;
 }
 
+// A dropped mesh as an object: its bounds' base centre moved to the origin (so it stands where it
+// is placed, on the ground), its uvs and other attributes dropped (objects are drawn in one plain
+// material), and a normal per vertex (the area-weighted mean of its triangles') when it has none.
+geom::TriMesh StandingMesh(const geom::TriMesh& in) {
+  geom::TriMesh mesh;
+  mesh.positions = in.positions;
+  mesh.indices = in.indices;
+  if (mesh.positions.empty()) return mesh;
+  const geom::Bounds3 box = geom::MeshBounds(mesh);
+  const glm::vec3 base((box.min.x + box.max.x) / 2, box.min.y, (box.min.z + box.max.z) / 2);
+  for (glm::vec3& p : mesh.positions) p -= base;
+  if (in.normals.size() == in.positions.size()) {
+    mesh.normals = in.normals;
+    return mesh;
+  }
+  std::vector<glm::dvec3> sum(mesh.positions.size(), glm::dvec3(0));
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+    const glm::dvec3 n = glm::cross(glm::dvec3(mesh.positions[b] - mesh.positions[a]),
+                                    glm::dvec3(mesh.positions[c] - mesh.positions[a]));
+    sum[a] += n, sum[b] += n, sum[c] += n;
+  }
+  mesh.normals.reserve(sum.size());
+  for (const glm::dvec3& n : sum)
+    mesh.normals.push_back(glm::length(n) > 0 ? glm::vec3(glm::normalize(n)) : glm::vec3(0, 1, 0));
+  return mesh;
+}
+
 Result<GardenScene> BuildGardenScene(const GardenState& state, const Budget& budget) {
   GardenScene scene;
   Result<GardenGround> ground = BuildGardenGround(state, budget, &scene.truncated_by);
@@ -309,7 +337,10 @@ Result<GardenScene> BuildGardenScene(const GardenState& state, const Budget& bud
     placed.kind = o.kind;
     placed.x = o.x, placed.z = o.z, placed.rot = o.rot;
     placed.base_y = scene.ground.HeightAt(o.x, o.z);
-    geom::TriMesh mesh = GardenObjectMesh(o.kind, k);
+    geom::TriMesh mesh = o.kind == "mesh" ? StandingMesh(o.mesh) : GardenObjectMesh(o.kind, k);
+    if (mesh.triangle_count() == 0)
+      return Status::Error("objects[" + std::to_string(k) + "].file",
+                           "'" + o.file + "' has no triangles; must be a mesh");
     const geom::Bounds3 box = geom::MeshBounds(mesh);
     placed.hx = std::max(std::abs(box.min.x), std::abs(box.max.x)) * o.scale;
     placed.hz = std::max(std::abs(box.min.z), std::abs(box.max.z)) * o.scale;

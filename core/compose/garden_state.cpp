@@ -23,12 +23,13 @@ std::string GardenIndexed(const char* list, std::size_t i, const char* field) {
 }
 
 bool KnownObjectKind(const std::string& kind) {
+  if (kind == "mesh") return true;
   for (const std::string& k : GardenObjectKinds())
     if (k == kind) return true;
   return false;
 }
 
-std::string ObjectKindList() { return "wall, rock or lantern"; }
+std::string ObjectKindList() { return "wall, rock, lantern or mesh (with a file)"; }
 
 // A finite number from a JSON value, else the error naming `field`.
 Result<double> GardenNumber(const json& v, const std::string& field, const std::string& what) {
@@ -81,9 +82,13 @@ Result<GardenObject> ParseGardenObject(const json& o, std::size_t i) {
       Result<double> d = GardenNumber(v, at + ".scale", "a number in [0.1, 20]");
       if (!d.ok()) return d.status();
       obj.scale = *d;
+    } else if (key == "file") {
+      if (!v.is_string() || v.get<std::string>().empty())
+        return Status::Error(at + ".file", "must name a .glb, .gltf or .obj file");
+      obj.file = v.get<std::string>();
     } else {
       return Status::Error(at + "." + Echo(key),
-                           "unknown field; an object has kind, pos, rot and scale");
+                           "unknown field; an object has kind, pos, rot, scale and file");
     }
   }
   return obj;
@@ -233,6 +238,12 @@ Status CheckGardenState(const GardenState& state) {
                                " (move it or raise size)");
     NIWA_RETURN_IF_ERROR(CheckIn(o.rot, -360, 360, GardenIndexed("objects", i, "rot")));
     NIWA_RETURN_IF_ERROR(CheckIn(o.scale, 0.1, 20, GardenIndexed("objects", i, "scale")));
+    if (o.kind == "mesh" && o.file.empty() && o.mesh.triangle_count() == 0)
+      return Status::Error(GardenIndexed("objects", i, "file"),
+                           "a mesh object needs a .glb, .gltf or .obj file");
+    if (o.kind != "mesh" && !o.file.empty())
+      return Status::Error(GardenIndexed("objects", i, "file"),
+                           "only a mesh object has a file (kind '" + Echo(o.kind) + "')");
   }
   for (std::size_t i = 0; i < state.plants.size(); ++i) {
     const GardenPlant& p = state.plants[i];
@@ -443,9 +454,12 @@ std::string GardenStateJson(const GardenState& state) {
     ground["file"] = state.heightmap_name;
   j["ground"] = ground;
   j["objects"] = nlohmann::ordered_json::array();
-  for (const GardenObject& o : state.objects)
-    j["objects"].push_back(
-        {{"kind", o.kind}, {"pos", {o.x, o.z}}, {"rot", o.rot}, {"scale", o.scale}});
+  for (const GardenObject& o : state.objects) {
+    nlohmann::ordered_json item = {
+        {"kind", o.kind}, {"pos", {o.x, o.z}}, {"rot", o.rot}, {"scale", o.scale}};
+    if (o.kind == "mesh") item["file"] = o.file;
+    j["objects"].push_back(item);
+  }
   j["plants"] = nlohmann::ordered_json::array();
   for (const GardenPlant& p : state.plants)
     j["plants"].push_back({{"species", p.species},
@@ -568,7 +582,9 @@ void ApplyGardenHash(std::string_view hash, std::string_view prefix, GardenState
           n.push_back(d.value_or(0));
         }
         const std::string at = bare + "[" + std::to_string(i) + "]";
-        if (bare == "objects" && f.size() == 5 && numbers) {
+        if (bare == "objects" && !f.empty() && f[0] == "mesh") {
+          notice(at + ": a mesh object is not carried by a link (its file); dropped");
+        } else if (bare == "objects" && f.size() == 5 && numbers) {
           objects.push_back({f[0], n[0], n[1], n[2], n[3]});
         } else if (bare == "plants" && f.size() == 6 && numbers && n[0] >= 0 &&
                    n[0] <= kMaxGardenSeed && n[0] == std::floor(n[0]) && n[1] >= 0 &&

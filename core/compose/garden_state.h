@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <string_view>
 #include <vector>
 
@@ -26,8 +27,15 @@ enum class GroundKind { kFlat, kTerrain, kHeightmap, kMesh };
 // A built-in object placed on the ground: its base's centre at (x, ground height, z), turned by
 // rot degrees about y (counter-clockwise seen from above), scaled by scale.
 struct GardenObject {
-  std::string kind;  // "wall", "rock" or "lantern" (GardenObjectKinds)
+  GardenObject() = default;
+  GardenObject(std::string kind_in, double x_in, double z_in, double rot_in, double scale_in)
+      : kind(std::move(kind_in)), x(x_in), z(z_in), rot(rot_in), scale(scale_in) {}
+  std::string kind;  // "wall", "rock" or "lantern" (GardenObjectKinds), or "mesh"
   double x = 0, z = 0, rot = 0, scale = 1;
+  // kind "mesh": a .glb, .gltf or .obj (its `file`, read by the front end into `mesh`: world space,
+  // y up, metres), stood on the ground at (x, z) by its bounds' base centre.
+  std::string file;
+  geom::TriMesh mesh;
 };
 
 // A tree placed by hand: a tree preset (niwa presets tree), its seed, its age when the garden

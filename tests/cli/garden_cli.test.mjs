@@ -120,6 +120,24 @@ for (const cmd of [native, wasm]) {
 check('mesh ground bunny.obj: native == WASM stats and .glb bytes', JSON.stringify(bunny.native.stats) === JSON.stringify(bunny.wasm.stats)
   && bunny.native.glb.length > 0 && bunny.native.glb.equals(bunny.wasm.glb), JSON.stringify(bunny.native.stats.ground));
 
+// A dropped mesh as an object (the bunny, 0.4 of its 9.9 units, turned 30°), ivy on it: it stands on
+// the ground, the rules plant none inside it, the ivy climbs it, natively == WASM.
+writeFileSync(join(work, 'bunnyobject.json'), JSON.stringify({ params: { size: 20, ground_res: 32, years: 2, density: 0.05, spacing: 1.5,
+  slope_max: 90, moss_days: 2, max_triangles: 1500 }, objects: [{ kind: 'mesh', file: 'bunny.obj', pos: [2, 1], rot: 30, scale: 0.4 }],
+  plants: [], ivy: { on: ['objects[0]'] } }));
+const bunnyObject = {};
+for (const cmd of [native, wasm]) {
+  const out = join(work, `bunnyobject-${buildName(cmd)}.glb`);
+  const r = spawn(cmd, ['garden', 'grow', '--garden', join(work, 'bunnyobject.json'), '--stats', '--out', out]);
+  check(`mesh object bunny.obj ${buildName(cmd)}: exit 0`, r.status === 0, r.stderr);
+  bunnyObject[buildName(cmd)] = r.status === 0 ? { stats: withoutMs(JSON.parse(r.stdout)), glb: readFileSync(out) } : { stats: {}, glb: Buffer.alloc(0) };
+}
+const bo = bunnyObject.native.stats;
+check('mesh object: one object, trees refused inside it, the ivy climbs it', bo.objects === 1 && (bo.planting?.refused?.object ?? 0) >= 1
+  && (bo.ivy?.internodes ?? 0) > 100, JSON.stringify({ objects: bo.objects, planting: bo.planting, ivy: bo.ivy }));
+check('mesh object: native == WASM stats and .glb bytes', JSON.stringify(bo) === JSON.stringify(bunnyObject.wasm.stats)
+  && bunnyObject.native.glb.length > 0 && bunnyObject.native.glb.equals(bunnyObject.wasm.glb));
+
 const maskRgba = new Uint8Array(8 * 8 * 4).fill(255);
 for (let y = 0; y < 8; ++y) for (let x = 0; x < 4; ++x) maskRgba.fill(0, 4 * (8 * y + x), 4 * (8 * y + x) + 3);
 writeFileSync(join(work, 'east.png'), pngBytes(8, 8, maskRgba));
@@ -178,6 +196,8 @@ writeFileSync(join(work, 'badmap.json'), JSON.stringify({ ground: { kind: 'heigh
 writeFileSync(join(work, 'badmoss.json'), JSON.stringify({ moss: { params: { photons: -5 } } }));
 writeFileSync(join(work, 'badground.json'), JSON.stringify({ ground: { kind: 'mesh', file: 'slope.json' } }));
 writeFileSync(join(work, 'noground.json'), JSON.stringify({ ground: { kind: 'mesh' } }));
+writeFileSync(join(work, 'nofileobject.json'), JSON.stringify({ objects: [{ kind: 'mesh', pos: [0, 0] }] }));
+writeFileSync(join(work, 'badobject.json'), JSON.stringify({ objects: [{ kind: 'mesh', file: 'slope.json', pos: [0, 0] }] }));
 const bad = [
   [['--set', 'size=2'], /--set: size/],
   [['--years', '99'], /--years/],
@@ -188,6 +208,8 @@ const bad = [
   [['--garden', join(work, 'badmoss.json')], /moss.*photons/],
   [['--garden', join(work, 'badground.json')], /ground\.file.*slope\.json/],
   [['--garden', join(work, 'noground.json')], /ground\.file: a mesh ground needs a \.glb, \.gltf or \.obj file/],
+  [['--garden', join(work, 'nofileobject.json')], /objects\[0\]\.file: a mesh object needs a \.glb, \.gltf or \.obj file/],
+  [['--garden', join(work, 'badobject.json')], /objects\[0\]\.file.*slope\.json/],
   [['--url', 'moss.photons=abc'], /--url: moss\.photons/],
   [['--set', 'bark=1', '--set', 'bark_map_size=300'], /bark_map_size/],
   [['--set', 'bark=1', '--set', 'moss_days=0', '--max-seconds', '2'], /error: bark: the simulated bark of \d+ distinct trees .* set bark 0/],

@@ -17,6 +17,8 @@
 #include "compose/garden_scene.h"
 #include "compose/garden_state.h"
 #include "geom/bvh.h"
+#include "geom/mesh_metrics.h"
+#include "geom/primitives.h"
 #include "geom/ray_cast.h"
 #include "image/png.h"
 
@@ -147,6 +149,36 @@ TEST(Garden, AMeshGroundIsItsSurfaceFromAbove) {
   Result<GardenScene> none = BuildGardenScene(s, Budget{});
   ASSERT_FALSE(none.ok());
   EXPECT_EQ(none.status().field(), "ground.file");
+}
+
+// A mesh as an object stands on the ground at its place by its bounds' base centre, wherever the
+// mesh was modelled (here a box from y 5 to 6 around x 10.5, z -20.5), and its footprint refuses
+// trees (Covers).
+TEST(Garden, AMeshObjectStandsOnTheGroundWhereItIsPlaced) {
+  GardenState s = DefaultGardenState();  // the default terrain ground
+  s.default_layout = false;
+  s.plants.clear();
+  GardenObject o("mesh", 2, 1, 30, 2);
+  o.file = "box.obj";
+  o.mesh = geom::MakeBox({1.0f, 1.0f, 1.0f}, {10.5f, 5.5f, -20.5f});
+  o.mesh.normals.clear();  // given none: made from its triangles
+  s.objects = {o};
+  ASSERT_TRUE(CheckGardenState(s).ok()) << CheckGardenState(s).Line();
+  Result<GardenScene> scene = BuildGardenScene(s, Budget{});
+  ASSERT_TRUE(scene.ok()) << scene.status().Line();
+  const PlacedObject& p = scene->objects[0];
+  const geom::Bounds3 box = geom::MeshBounds(p.mesh);
+  EXPECT_NEAR(box.min.y, scene->ground.HeightAt(2, 1), 1e-4);
+  EXPECT_NEAR(box.max.y - box.min.y, 2.0, 1e-4);  // scale 2
+  EXPECT_NEAR((box.min.x + box.max.x) / 2, 2.0, 1e-4);
+  EXPECT_NEAR((box.min.z + box.max.z) / 2, 1.0, 1e-4);
+  EXPECT_EQ(p.mesh.normals.size(), p.mesh.positions.size());
+  EXPECT_TRUE(p.Covers(2, 1, 0));
+  EXPECT_FALSE(p.Covers(5, 1, 0));
+  // A mesh object's file rides in the state JSON; a built-in object has none.
+  EXPECT_EQ(nlohmann::json::parse(GardenStateJson(s))["objects"][0]["file"], "box.obj");
+  s.objects[0].kind = "rock";
+  EXPECT_EQ(CheckGardenState(s).field(), "objects[0].file");
 }
 
 TEST(Garden, PlantingRulesKeepSpacingAltitudeSlopeAndObjects) {
