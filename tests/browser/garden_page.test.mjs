@@ -4,8 +4,9 @@
 // equal the native CLI's `niwa garden grow --url HASH --stats` (the ms* timings aside) for the
 // page's own hash; a panel edit (plant_seed) regrows with the row in the hash; a real click on the
 // ground places a tree of the picked species there (the stats' by-hand count + 1, the plant within
-// 0.3 m of the clicked point); a rock placed by a click and the default keyaki moved by Move and a
-// click end in one grown garden; the Remove buttons take the tree and the rock away; Copy link reopens the same
+// 0.3 m of the clicked point); a dropped Draco .glb (ez-tree's rock1.glb) joins the Place list, and
+// placed by a click, with the default keyaki moved by Move and a click, ends in one grown garden;
+// the Remove buttons take the tree and the mesh away; Copy link reopens the same
 // garden (same hash and stats); the ground's overlays (moss light, slope, altitude bands) each
 // change the ground with a legend; Embed offers <niwa-garden> and the iframe of the page's hash; the
 // Garden .glb download is the bytes of native `niwa garden grow --url HASH --out g.glb`; a bad Years
@@ -17,7 +18,7 @@
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
-import { ARTIFACTS, NATIVE, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, waitStudyRun, watchPage } from './harness.mjs';
+import { ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, waitStudyRun, watchPage } from './harness.mjs';
 
 const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => k !== 'ms' && !k.startsWith('ms_')));
 const waitGarden = (page, serialAbove) => waitStudyRun(page, 'gardenSerial', serialAbove);
@@ -177,7 +178,12 @@ await runBrowserTest(async (server, browser) => {
     await page.mouse.click(box[0] + p[0], box[1] + p[1]);
   };
   const objectsBefore = Number(data.objects);
-  await page.selectOption('#species', 'object:rock');
+  // The mesh: ez-tree's Draco rock1.glb dropped in (decoded by the page, read by the worker), then
+  // picked from the Place list by itself and stood on the ground by a click.
+  await page.setInputFiles('#mesh-file', path.join(ROOT, 'tests/data/meshes/rock1.glb'));
+  await page.waitForFunction(() => document.documentElement.dataset.meshName === 'rock1.glb' || document.documentElement.dataset.meshError, null, { timeout: TIMEOUT });
+  const meshPicked = await page.evaluate(() => [document.getElementById('species').value, document.documentElement.dataset.meshTriangles, document.documentElement.dataset.meshError || '']);
+  check('a dropped Draco .glb (rock1.glb) joins the Place list, picked', meshPicked[0] === 'mesh:rock1.glb' && Number(meshPicked[1]) === 1756, JSON.stringify(meshPicked));
   await clickAt([-12, -6]);
   await page.click('#plants button[data-plant="0"][data-action="move"]');
   const movingHook = await page.evaluate(() => document.documentElement.dataset.moving);
@@ -189,10 +195,10 @@ await runBrowserTest(async (server, browser) => {
     if (d.status !== 'ready' || d.drawnSerial !== d.gardenSerial) continue;
     const rock = parts(d.hash, 'objects').pop();
     const keyaki = parts(d.hash, 'plants')[0];
-    if (rock[0] === 'rock' && Math.hypot(Number(rock[1]) + 12, Number(rock[2]) + 6) < 0.3
+    if (rock[0] === 'mesh' && Math.hypot(Number(rock[1]) + 12, Number(rock[2]) + 6) < 0.3
       && Math.hypot(Number(keyaki[3]) + 4, Number(keyaki[4]) - 12) < 0.3) { both = d; break; }
   }
-  check('a rock placed by a click and the keyaki moved by Move + a click: both in the grown garden', both !== null
+  check('the dropped mesh placed by a click and the keyaki moved by Move + a click: both in the grown garden', both !== null
     && Number(both.objects) === objectsBefore + 1 && Number(both.handPlants) === before.plants + 1 && movingHook === 'plants[0]',
     both ? `objects ${objectsBefore} -> ${both.objects}; ${both.hash.slice(0, 200)}` : `moving hook ${movingHook}; never both: ${(await page.evaluate(() => document.documentElement.dataset.hash)).slice(0, 200)}`);
   await saveCanvasPng(page, 'garden-moved.png');
@@ -205,7 +211,7 @@ await runBrowserTest(async (server, browser) => {
     if (data.status === 'ready' && Number(data.gardenSerial) > serial && data.drawnSerial === data.gardenSerial
       && Number(data.byHand) === before.byHand && Number(data.objects) === objectsBefore) break;
   }
-  check('the Remove buttons take the placed tree and the rock away (by hand and objects back)', data.status === 'ready'
+  check('the Remove buttons take the placed tree and the mesh away (by hand and objects back)', data.status === 'ready'
     && Number(data.byHand) === before.byHand && Number(data.objects) === objectsBefore, `${data.status} by hand ${data.byHand}, objects ${data.objects}`);
 
   // 4. Copy link reopens the same garden.

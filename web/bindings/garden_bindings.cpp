@@ -28,15 +28,17 @@
 //             foot, its turn about y in radians, counter-clockwise seen from above)
 //   "year"    the trees' six buffers above for the year of the last showYear(y), and moss_S of
 //             that year (the garden's year scrubber: nothing regrows)
-// Calls: setProgress(fn) (fn(stage, done, total) after every year), start(stateJson) -> ""/error
-// record (the state JSON of GardenStateJson over the default garden, LayOutDefaults, checked and
-// started, recording every year), then step() -> "more" | "grown" | error (one garden year a call,
-// the worker taking its messages between them; "grown": the run advanced and its buffers filled);
-// statsJson() (the run's StatsJson, as `niwa garden grow --stats` without the CLI's timings),
-// hash(), stateJson(), boundsJson() ({size, n, cell, relief, min, max, groups, trees});
-// build("glb"|"svg"|"json") then buffers("download"): the run's Export bytes (the bytes of `niwa
-// garden grow --url HASH --out g.glb`); grows() (how many grows this lab started: a page's check
-// that the scrubber grows nothing), runGrows() (grows() when the run kept was grown);
+// Calls: loadMesh(bytes, name) -> ""/error record naming "mesh" (a dropped .glb/.gltf/.obj, Draco
+// decoded by the page, kept by name for the state's mesh objects: kind "mesh", file name),
+// meshTriangles(); setProgress(fn) (fn(stage, done, total) after every year), start(stateJson) ->
+// ""/error record (the state JSON of GardenStateJson over the default garden, LayOutDefaults,
+// checked and started, recording every year), then step() -> "more" | "grown" | error (one garden
+// year a call, the worker taking its messages between them; "grown": the run advanced and its
+// buffers filled); statsJson() (the run's StatsJson, as `niwa garden grow --stats` without the
+// CLI's timings), hash(), stateJson(), boundsJson() ({size, n, cell, relief, min, max, groups,
+// trees}); build("glb"|"svg"|"json") then buffers("download"): the run's Export bytes (the bytes of
+// `niwa garden grow --url HASH --out g.glb`); grows() (how many grows this lab started: a page's
+// check that the scrubber grows nothing), runGrows() (grows() when the run kept was grown);
 // yearsJson() ({years, recorded: [years], stopped_by, record_bytes, bytes: [per recorded year],
 // mosses: [per recorded year]}); showYear(y) -> ""/error record naming "year": the "year" group
 // filled from the run's record of year y (GardenRun's record_years, on for every page grow:
@@ -50,6 +52,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -62,6 +65,8 @@
 #include "compose/garden_state.h"
 #include "compose/garden_view.h"
 #include "error_record.h"
+#include "geom/mesh_metrics.h"
+#include "io/mesh_reader.h"
 #include "ivy/ivy_budget.h"
 #include "ivy/ivy_run.h"
 #include "page_budget.h"
@@ -128,6 +133,18 @@ class GardenLab {
     compose::GardenState state = compose::DefaultGardenState();
     Status s = compose::ApplyGardenStateJson(state_json, &state);
     if (!s.ok()) return ErrorText(s);
+    // Mesh objects: the meshes this lab read (loadMesh), by file name.
+    for (std::size_t i = 0; i < state.objects.size(); ++i) {
+      compose::GardenObject& o = state.objects[i];
+      if (o.kind != "mesh" || o.file.empty()) continue;
+      const auto it = meshes_.find(o.file);
+      if (it == meshes_.end())
+        return ErrorText(Status::Error("objects[" + std::to_string(i) + "].file",
+                                       "'" + o.file +
+                                           "' is not loaded in this page; drop the file again "
+                                           "(a link does not carry it)"));
+      o.mesh = it->second;
+    }
     compose::LayOutDefaults(&state);
     s = compose::CheckGardenState(state);
     if (!s.ok()) return ErrorText(s);
@@ -168,6 +185,24 @@ class GardenLab {
     FillTrees(run_->done(), &trees_);
     return "grown";
   }
+
+  // A dropped mesh file's bytes (Draco already decoded by the page), read as `niwa garden grow`
+  // reads a garden file's mesh object: "" with the mesh kept by its name for the objects that
+  // name it (kind "mesh", file `name`), or the error record naming "mesh". At most 8 are kept (the
+  // oldest goes).
+  std::string loadMesh(const std::string& bytes, const std::string& name) {
+    Result<geom::TriMesh> mesh = io::ReadMeshBytes(bytes, name);
+    if (!mesh.ok()) return ErrorText(mesh.status().Within("mesh"));
+    Status valid = geom::ValidateMesh(*mesh, name);
+    if (!valid.ok()) return ErrorText(valid.Within("mesh"));
+    if (meshes_.size() >= 8 && !meshes_.count(name)) meshes_.erase(mesh_order_.front());
+    mesh_order_.erase(std::remove(mesh_order_.begin(), mesh_order_.end(), name), mesh_order_.end());
+    mesh_order_.push_back(name);
+    last_mesh_triangles_ = mesh->triangle_count();
+    meshes_[name] = std::move(*mesh);
+    return "";
+  }
+  double meshTriangles() const { return static_cast<double>(last_mesh_triangles_); }
 
   int grows() const { return grows_; }
   // grows() when the run kept now was grown (a refused grow keeps the run before it).
@@ -384,7 +419,10 @@ class GardenLab {
   }
 
   std::optional<compose::GardenRun> run_;
-  std::optional<compose::GardenRun> pending_;  // started by start(), grown by step()
+  std::optional<compose::GardenRun> pending_;    // started by start(), grown by step()
+  std::map<std::string, geom::TriMesh> meshes_;  // loadMesh's, by file name
+  std::vector<std::string> mesh_order_;          // their names, oldest first
+  std::size_t last_mesh_triangles_ = 0;
   std::vector<float> ground_positions_, ground_normals_, ground_heights_, ground_moss_S_;
   std::vector<uint32_t> ground_indices_;
   std::vector<float> object_positions_, object_normals_, object_kind_, object_birth_;
@@ -407,6 +445,8 @@ EMSCRIPTEN_BINDINGS(niwa_garden) {
       .constructor<>()
       .function("setProgress", &niwa::GardenLab::setProgress)
       .function("start", &niwa::GardenLab::start)
+      .function("loadMesh", &niwa::GardenLab::loadMesh)
+      .function("meshTriangles", &niwa::GardenLab::meshTriangles)
       .function("step", &niwa::GardenLab::step)
       .function("statsJson", &niwa::GardenLab::statsJson)
       .function("hash", &niwa::GardenLab::hash)

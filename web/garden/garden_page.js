@@ -23,6 +23,8 @@
 // (over its memory share: the scrubber says so), or several workers growing at once.
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { Frame } from '../gl/frame.js';
+import { FileDrop } from '../shell/file_drop.js';
+import { meshFileBytes } from '../mesh/mesh_file.js';
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { ProgressiveLoop } from '../gl/progressive_loop.js';
 import { DEFAULT_SUNS } from '../gl/sun.js';
@@ -35,7 +37,7 @@ import { GardenRenderer } from './garden_renderer.js';
 const $ = (id) => document.getElementById(id);
 const ui = {
   canvas: $('view'), stats: $('stats'), progress: $('progress'), cancel: $('cancel'), params: $('params'),
-  species: $('species'), plants: $('plants'), objects: $('objects'), copyLink: $('copy-link'), shareStatus: $('share-status'),
+  species: $('species'), plants: $('plants'), objects: $('objects'), meshFile: $('mesh-file'), meshError: $('mesh-error'), copyLink: $('copy-link'), shareStatus: $('share-status'),
   resetView: $('reset-view'), clickHelp: $('click-help'), overlay: $('overlay'), overlayHelp: $('overlay-help'),
   year: $('year'), yearText: $('year-text'), play: $('play'),
 };
@@ -57,6 +59,13 @@ const controller = new StudyController({
     worker.request('init', { hash: '' }, { done: ['ready'] });
   },
   onError: (msg, when) => {
+    // A dropped file's read failed: its line beside the file control; the garden shown stays.
+    if (when === 'before' && meshRequest && msg.id === meshRequest) {
+      meshRequest = 0;
+      showMeshError(msg.message);
+      ui.progress.textContent = '';
+      return true;
+    }
     if (when === 'after') showPlantError(/^(plants|objects)/.test(msg.field || '') ? msg.message : '');
     return false;
   },
@@ -163,7 +172,7 @@ function showPlants() {
   ui.objects.replaceChildren();
   (state?.objects || []).forEach((o, k) => {
     const [x, z] = o.pos || [0, 0];
-    ui.objects.append(item('objects', k, `${o.kind} at ${x.toFixed(1)}, ${z.toFixed(1)} m`));
+    ui.objects.append(item('objects', k, `${o.kind === 'mesh' ? o.file : o.kind} at ${x.toFixed(1)}, ${z.toFixed(1)} m`));
   });
   setHooks({ handPlants: (state?.plants || []).length, objects: (state?.objects || []).length, moving: moving ? `${moving.list}[${moving.index}]` : '' });
 }
@@ -220,6 +229,12 @@ function clickGround(x, z) {
     return;
   }
   const picked = ui.species.value;
+  if (picked.startsWith('mesh:')) {
+    const file = picked.slice('mesh:'.length);
+    setHooks({ lastClick: `mesh:${file}:${round(x)},${round(z)}` });
+    editList('objects', [...(state?.objects || []), { kind: 'mesh', file, pos: [round(x), round(z)], rot: 0, scale: 1 }]);
+    return;
+  }
   if (picked.startsWith('object:')) {
     const kind = picked.slice('object:'.length);
     setHooks({ lastClick: `object:${kind}:${round(x)},${round(z)}` });
@@ -229,6 +244,52 @@ function clickGround(x, z) {
   setHooks({ lastClick: `plant:${round(x)},${round(z)}` });
   editList('plants', [...plants, { species: picked, seed: 1, age: 0, pos: [round(x), round(z)], rot: 0 }]);
 }
+
+// ---------------------------------------------------------------- dropped meshes
+// A mesh file dropped on the view or picked: its bytes (Draco decoded here) go to the worker once
+// (transferred), which keeps it by name; it then joins the Place list as `mesh:<name>`.
+let meshRequest = 0;  // the id of the 'mesh' request in flight
+const meshGroup = document.createElement('optgroup');
+meshGroup.label = 'Meshes (dropped)';
+
+function showMeshError(line) {
+  ui.meshError.textContent = line;
+  ui.meshError.hidden = !line;
+  setHooks({ meshError: line });
+}
+
+async function loadMeshFile(file) {
+  showMeshError('');
+  ui.progress.textContent = `reading ${file.name}`;
+  let bytes;
+  try {
+    bytes = await meshFileBytes(file);
+  } catch (e) {
+    ui.progress.textContent = '';
+    showMeshError(`mesh: ${String(file.name).slice(0, 60)}: ${e.message}`);
+    return;
+  }
+  const buffer = bytes.byteOffset === 0 && bytes.byteLength === bytes.buffer.byteLength ? bytes.buffer : bytes.slice().buffer;
+  meshRequest = worker.request('mesh', { name: file.name, bytes: buffer }, { group: 'mesh', done: ['meshLoaded'], transfer: [buffer] }).id;
+}
+
+worker.on('meshLoaded', (msg) => {
+  if (!meshRequest || msg.id !== meshRequest) return;
+  meshRequest = 0;
+  ui.progress.textContent = '';
+  const value = `mesh:${msg.mesh.name}`;
+  if (![...meshGroup.children].some((o) => o.value === value)) meshGroup.append(new Option(`${msg.mesh.name} (${msg.mesh.triangles} triangles)`, value));
+  if (!meshGroup.parentElement) ui.species.append(meshGroup);
+  ui.species.value = value;
+  ui.clickHelp.textContent = `Click the ground to stand ${msg.mesh.name} there.`;
+  setHooks({ meshName: msg.mesh.name, meshTriangles: msg.mesh.triangles });
+});
+
+new FileDrop({
+  target: $('stage'), input: ui.meshFile, accept: ['.glb', '.gltf', '.obj'],
+  onFiles: (files) => loadMeshFile(files[0]),
+  onRefuse: (line) => showMeshError(`mesh: ${line}`),
+});
 
 // ---------------------------------------------------------------- worker replies
 worker.on('ready', (msg) => {

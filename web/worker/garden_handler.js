@@ -112,6 +112,20 @@ export function createHandler(Module, ctx) {
     post({ type: 'gardenYear', id: msg.id, client, year: Number(msg.year), grows: entry.lab.grows(), run: entry.lab.runGrows(), buffers, bufferCounts: counts, ms: performance.now() - t0 }, transfer);
   }
 
+  // A dropped mesh ('mesh': bytes, Draco already decoded by the page), read into the client's lab
+  // and kept by its name for the state's mesh objects; answered 'meshLoaded' ({name, triangles}) or
+  // an error naming "mesh".
+  function mesh(msg, client) {
+    const entry = labOf(client);
+    const name = String(msg.name || 'mesh');
+    const error = errorOf(entry.lab.loadMesh(new Uint8Array(msg.bytes || new ArrayBuffer(0)), name));
+    if (error) {
+      post(errorReply(error, msg.id, client));
+      return;
+    }
+    post({ type: 'meshLoaded', id: msg.id, client, mesh: { name, triangles: entry.lab.meshTriangles() } });
+  }
+
   const FORMATS = ['glb', 'svg', 'json', 'heightmap'];
   const exportGarden = (msg, client) => exportLabDownload(labOf(client).lab, FORMATS, msg, client, post);
 
@@ -125,6 +139,7 @@ export function createHandler(Module, ctx) {
       decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...decode(String(msg.hash || '')) }),
       update,
       year,
+      mesh,
       export: exportGarden,
       recycle: (msg, client) => returned.give(client, msg.buffers),
     },

@@ -210,6 +210,9 @@
  *       a newer 'year' of the client drops an older one still queued (no reply); one whose
  *       `grows` is not the lab's run's (asked of the garden before a regrow) is answered {stale:
  *       true}; grows: the lab's grows so far, run: the grow of the garden kept
+ * @typedef {Envelope & {type: 'mesh', name: string, bytes: ArrayBuffer}} GardenMeshMessage
+ *   -> {type: 'meshLoaded', mesh: {name, triangles}} or an error naming "mesh": the mesh kept by
+ *   name for the state's mesh objects ({kind: 'mesh', file: name}; at most 8 a client)
  * export: format 'glb' | 'svg' | 'json' | 'heightmap' (the run's Export bytes).
  */
 // (No list of message types here: each study's handler says which it answers, and the router
