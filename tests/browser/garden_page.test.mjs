@@ -213,6 +213,23 @@ await runBrowserTest(async (server, browser) => {
   }
   check('the Remove buttons take the placed tree and the mesh away (by hand and objects back)', data.status === 'ready'
     && Number(data.byHand) === before.byHand && Number(data.objects) === objectsBefore, `${data.status} by hand ${data.byHand}, objects ${data.objects}`);
+  // 3c. The dropped mesh as the ground (Ground: mesh rock1.glb): the stats say so and the view's
+  // ground changes; then back to the terrain (the same hill as before).
+  const terrainSource = JSON.parse(data.stats).ground.source;
+  const beforeGround = await looks(page);
+  serial = Number(data.gardenSerial);
+  await page.selectOption('#ground-kind', 'mesh:rock1.glb');
+  data = await waitGarden(page, serial);
+  const meshSource = data.status === 'ready' ? JSON.parse(data.stats).ground.source : data.error;
+  await saveCanvasPng(page, 'garden-mesh-ground.png');
+  const onRock = await looks(page);
+  check('Ground: the dropped rock1.glb as the ground (its surface from above), drawn', /^mesh rock1\.glb \(1,756 triangles\)/.test(meshSource)
+    && data.groundKind === 'mesh:rock1.glb' && JSON.stringify(onRock) !== JSON.stringify(beforeGround), `${meshSource}; ${JSON.stringify(onRock)}`);
+  serial = Number(data.gardenSerial);
+  await page.selectOption('#ground-kind', 'terrain');
+  data = await waitGarden(page, serial);
+  check('Ground: back to the terrain, the same hill', data.status === 'ready' && JSON.parse(data.stats).ground.source === terrainSource,
+    `${data.status} ${data.error || ''} ${data.status === 'ready' ? JSON.parse(data.stats).ground.source : ''} vs ${terrainSource}`);
 
   // 4. Copy link reopens the same garden.
   await page.evaluate(() => { document.getElementById('share-status').textContent = ''; });

@@ -29,7 +29,8 @@
 //   "year"    the trees' six buffers above for the year of the last showYear(y), and moss_S of
 //             that year (the garden's year scrubber: nothing regrows)
 // Calls: loadMesh(bytes, name) -> ""/error record naming "mesh" (a dropped .glb/.gltf/.obj, Draco
-// decoded by the page, kept by name for the state's mesh objects: kind "mesh", file name),
+// decoded by the page, kept by name for the state's mesh objects (kind "mesh", file name) and a
+// mesh ground (ground.kind "mesh", file name)),
 // meshTriangles(); setProgress(fn) (fn(stage, done, total) after every year), start(stateJson) ->
 // ""/error record (the state JSON of GardenStateJson over the default garden, LayOutDefaults,
 // checked and started, recording every year), then step() -> "more" | "grown" | error (one garden
@@ -144,6 +145,15 @@ class GardenLab {
                                            "' is not loaded in this page; drop the file again "
                                            "(a link does not carry it)"));
       o.mesh = it->second;
+    }
+    if (state.ground == compose::GroundKind::kMesh && !state.heightmap_name.empty()) {
+      const auto it = meshes_.find(state.heightmap_name);
+      if (it == meshes_.end())
+        return ErrorText(
+            Status::Error("ground.file", "'" + state.heightmap_name +
+                                             "' is not loaded in this page; drop "
+                                             "the file again (a link does not carry it)"));
+      state.ground_mesh = it->second;
     }
     compose::LayOutDefaults(&state);
     s = compose::CheckGardenState(state);

@@ -37,7 +37,7 @@ import { GardenRenderer } from './garden_renderer.js';
 const $ = (id) => document.getElementById(id);
 const ui = {
   canvas: $('view'), stats: $('stats'), progress: $('progress'), cancel: $('cancel'), params: $('params'),
-  species: $('species'), plants: $('plants'), objects: $('objects'), meshFile: $('mesh-file'), meshError: $('mesh-error'), copyLink: $('copy-link'), shareStatus: $('share-status'),
+  species: $('species'), plants: $('plants'), objects: $('objects'), meshFile: $('mesh-file'), meshError: $('mesh-error'), groundKind: $('ground-kind'), groundError: $('ground-error'), copyLink: $('copy-link'), shareStatus: $('share-status'),
   resetView: $('reset-view'), clickHelp: $('click-help'), overlay: $('overlay'), overlayHelp: $('overlay-help'),
   year: $('year'), yearText: $('year-text'), play: $('play'),
 };
@@ -66,7 +66,11 @@ const controller = new StudyController({
       ui.progress.textContent = '';
       return true;
     }
-    if (when === 'after') showPlantError(/^(plants|objects)/.test(msg.field || '') ? msg.message : '');
+    if (when === 'after') {
+      showPlantError(/^(plants|objects)/.test(msg.field || '') ? msg.message : '');
+      ui.groundError.textContent = /^ground/.test(msg.field || '') ? msg.message : '';
+      ui.groundError.hidden = !/^ground/.test(msg.field || '');
+    }
     return false;
   },
 });
@@ -136,7 +140,28 @@ function applyState(next) {
   state = next;
   panel.setValues(next.params || {});
   showPlants();
+  showGround();
 }
+
+// The Ground select: terrain, flat, or a dropped mesh (mesh:<name>); the terrain's own state is
+// kept while another ground is shown, so going back to terrain regrows the same hill.
+let lastTerrain = null;
+function showGround() {
+  const g = state?.ground || { kind: 'terrain' };
+  if (g.kind === 'terrain') lastTerrain = g;
+  const value = g.kind === 'mesh' ? `mesh:${g.file}` : g.kind;
+  if (![...ui.groundKind.options].some((o) => o.value === value)) ui.groundKind.append(new Option(g.kind === 'mesh' ? `mesh ${g.file}` : g.kind, value));
+  ui.groundKind.value = value;
+  setHooks({ groundKind: value });
+}
+ui.groundKind.addEventListener('change', () => {
+  const v = ui.groundKind.value;
+  const ground = v.startsWith('mesh:') ? { kind: 'mesh', file: v.slice('mesh:'.length) }
+    : v === 'terrain' ? (lastTerrain || { kind: 'terrain' }) : { kind: v };
+  state = { ...currentState(), ground };
+  frameNext = true;
+  sendUpdate(true);
+});
 
 function showPlantError(line) {
   const el = $('plants-error');
@@ -280,6 +305,7 @@ worker.on('meshLoaded', (msg) => {
   const value = `mesh:${msg.mesh.name}`;
   if (![...meshGroup.children].some((o) => o.value === value)) meshGroup.append(new Option(`${msg.mesh.name} (${msg.mesh.triangles} triangles)`, value));
   if (!meshGroup.parentElement) ui.species.append(meshGroup);
+  if (![...ui.groundKind.options].some((o) => o.value === value)) ui.groundKind.append(new Option(`mesh ${msg.mesh.name}`, value));
   ui.species.value = value;
   ui.clickHelp.textContent = `Click the ground to stand ${msg.mesh.name} there.`;
   setHooks({ meshName: msg.mesh.name, meshTriangles: msg.mesh.triangles });
@@ -328,6 +354,7 @@ worker.on('garden', (msg) => {
   notices.set('error', '');
   controller.showFieldError('');
   showPlantError('');
+  ui.groundError.hidden = true;
   lastGoodHash = msg.hash;
   bounds = msg.bounds;
   applyState(msg.state);
