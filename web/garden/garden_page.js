@@ -24,7 +24,7 @@
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { Frame } from '../gl/frame.js';
 import { FileDrop } from '../shell/file_drop.js';
-import { meshFileBytes } from '../mesh/mesh_file.js';
+import { sendMeshFile } from '../mesh/mesh_file.js';
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { ProgressiveLoop } from '../gl/progressive_loop.js';
 import { DEFAULT_SUNS } from '../gl/sun.js';
@@ -286,16 +286,13 @@ function showMeshError(line) {
 async function loadMeshFile(file) {
   showMeshError('');
   ui.progress.textContent = `reading ${file.name}`;
-  let bytes;
   try {
-    bytes = await meshFileBytes(file);
+    const sent = await sendMeshFile(worker, file);
+    meshRequest = sent.id;
   } catch (e) {
     ui.progress.textContent = '';
     showMeshError(`mesh: ${String(file.name).slice(0, 60)}: ${e.message}`);
-    return;
   }
-  const buffer = bytes.byteOffset === 0 && bytes.byteLength === bytes.buffer.byteLength ? bytes.buffer : bytes.slice().buffer;
-  meshRequest = worker.request('mesh', { name: file.name, bytes: buffer }, { group: 'mesh', done: ['meshLoaded'], transfer: [buffer] }).id;
 }
 
 worker.on('meshLoaded', (msg) => {

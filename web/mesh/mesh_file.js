@@ -3,7 +3,8 @@
 // draco3d decoder, loaded once on first need from /vendor/draco3d/; mesh_import.js rewrites them),
 // since the WASM core cannot link Draco. A file that is not even glTF goes to the core as it is,
 // which names what is wrong with it.
-// Does not: parse meshes for the core, send them to a worker, or show notices (the page does).
+// sendMeshFile hands a file's bytes to a worker's 'mesh' message (moss and garden pages).
+// Does not: parse meshes for the core, or show notices (the page does).
 import { dracoPrimitiveCount, importMesh, isGlb, parseGlb } from './mesh_import.js';
 import { extensionOf } from '../shell/file_drop.js';
 
@@ -37,4 +38,15 @@ export async function meshFileBytes(file) {
     if (json && dracoPrimitiveCount(json) > 0) bytes = importMesh(bytes, { draco: await dracoDecoder() }).bytes;
   }
   return bytes;
+}
+
+// Reads `file` (meshFileBytes) and sends its bytes to `worker` as a 'mesh' request ({name, bytes},
+// answered 'meshLoaded'), moved, not copied (a view on part of a buffer is cut out first). Returns
+// {id, transferred} (transferred: the page's buffer is detached); throws with a one-line message
+// when the file cannot be read (a Draco primitive that does not decode).
+export async function sendMeshFile(worker, file) {
+  const bytes = await meshFileBytes(file);
+  const buffer = bytes.byteOffset === 0 && bytes.byteLength === bytes.buffer.byteLength ? bytes.buffer : bytes.slice().buffer;
+  const request = worker.request('mesh', { name: file.name, bytes: buffer }, { group: 'mesh', done: ['meshLoaded'], transfer: [buffer] });
+  return { id: request.id, transferred: buffer.byteLength === 0 };
 }

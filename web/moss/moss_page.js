@@ -29,7 +29,7 @@ import { StepScrubber } from '../shell/step_scrubber.js';
 import { StudyController, numberOr } from '../shell/study_controller.js';
 import { Notices, copyLink, download, mountStudyNav, showEmbedDialog } from '../shell/study_page.js';
 import { FileDrop } from '../shell/file_drop.js';
-import { meshFileBytes } from '../mesh/mesh_file.js';
+import { sendMeshFile } from '../mesh/mesh_file.js';
 import { setHooks } from '../shell/test_hooks.js';
 import { PopulationChart, populationCsv } from './moss_chart.js';
 import { MossRenderer } from './moss_renderer.js';
@@ -395,19 +395,14 @@ function showMeshError(line) {
 async function loadMeshFile(file) {
   showMeshError('');
   ui.progress.textContent = `reading ${file.name}`;
-  let bytes;
   try {
-    bytes = await meshFileBytes(file);
+    const sent = await sendMeshFile(worker, file);
+    meshRequest = sent.id;
+    setHooks({ meshTransferred: sent.transferred ? 'yes' : 'no' });
   } catch (e) {
     ui.progress.textContent = '';
     showMeshError(`mesh: ${String(file.name).slice(0, 60)}: ${e.message}`);
-    return;
   }
-  // Moved to the worker, not copied (a view on part of a buffer is cut out first).
-  const buffer = bytes.byteOffset === 0 && bytes.byteLength === bytes.buffer.byteLength ? bytes.buffer : bytes.slice().buffer;
-  const request = worker.request('mesh', { name: file.name, bytes: buffer }, { group: 'mesh', done: ['meshLoaded'], transfer: [buffer] });
-  meshRequest = request.id;
-  setHooks({ meshTransferred: buffer.byteLength === 0 ? 'yes' : 'no' });
 }
 
 worker.on('meshLoaded', (msg) => {
