@@ -173,14 +173,28 @@ export class GardenLab {
   constructor();
   /** fn(stage, done, total) after every year of a grow. */
   setProgress(fn: ((stage: string, done: number, total: number) => void) | null): void;
-  /** The garden state JSON (GardenStateJson) over the default garden, grown to its years. */
-  grow(stateJson: string): ErrorText;
+  /** A dropped .glb/.gltf/.obj's bytes (Draco decoded by the page), kept by `name` for the state's mesh objects and mesh ground; errors name "mesh". */
+  loadMesh(bytes: Uint8Array, name: string): ErrorText;
+  /** The triangles of the last mesh loadMesh read. */
+  meshTriangles(): number;
+  /** The garden state JSON (GardenStateJson) over the default garden, checked and started (every year recorded); nothing grown yet. */
+  start(stateJson: string): ErrorText;
+  /** One garden year of the started garden: "more", "grown" (the run kept, its buffers filled) or an error record. */
+  step(): string;
+  /** How many grows this lab started. */
+  grows(): number;
+  /** grows() when the run kept was grown. */
+  runGrows(): number;
+  /** {years, recorded: [years], stopped_by, record_bytes, bytes: [per year], mosses: [per year]}. */
+  yearsJson(): string;
+  /** Fills buffers("year") with the recorded year's trees and moss light; errors name "year". */
+  showYear(year: number): ErrorText;
   statsJson(): string;
   hash(): string;
   stateJson(): string;
   /** {size, n, cell, relief, min, max, groups: [{name, species, seed, age, trees, shaded, crown}], trees: [{species, seed, age, pos, rot, hand, group}]}. */
   boundsJson(): string;
-  /** "ground": positions, normals, indices, heights; "objects": positions, normals, indices, kind; "trees": positions, normals, indices, part, ranges, instances; "download": bytes (of the last build). */
+  /** "ground": positions, normals, indices, heights, moss_S; "objects": positions, normals, indices, kind, birth; "trees": positions, normals, indices, part, ranges, instances; "year": the trees' six and moss_S of showYear's year; "download": bytes (of the last build). */
   buffers(group: string): BufferViews;
   /** "glb" | "svg" | "json" | "heightmap": the run's Export bytes into buffers("download"); errors name "download". */
   build(format: string): ErrorText;
