@@ -181,7 +181,7 @@ std::string GardenPresetsJson() {
 }
 
 // The default garden with the link's keys (as the garden page and `niwa garden grow --url` read
-// a link).
+// a link; ApplyGardenHash lays the default objects out for the link's size, keeping its ivy).
 std::string GardenDecode(std::string_view hash, std::string_view prefix) {
   GardenState state = DefaultGardenState();
   std::vector<std::string> notices;

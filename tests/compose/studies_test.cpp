@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compose/garden_params.h"
+#include "compose/garden_state.h"
 
 namespace niwa::compose {
 namespace {
@@ -109,6 +110,13 @@ TEST(Studies, TheGardensIvyAsGiven) {
   EXPECT_TRUE(none["notices"].empty()) << none["notices"].dump();
   EXPECT_EQ(none["state"]["ivy"]["on"], json::array());
   EXPECT_EQ(none["state"]["objects"].size(), 4u);  // the default layout
+  // A smaller garden's default objects are laid out for its size (the wall 12 m north at 40 m: 6
+  // at 20), so the decoded state is one the garden grows (CheckGardenState: inside the square).
+  const json small = json::parse(garden.decode_hash("size=20", ""));
+  EXPECT_EQ(small["state"]["objects"][0]["pos"], json::array({0.0, -6.0}));
+  GardenState check = DefaultGardenState();
+  ASSERT_TRUE(ApplyGardenStateJson(small["state"].dump(), &check).ok());
+  EXPECT_TRUE(CheckGardenState(check).ok()) << CheckGardenState(check).Line();
   Result<std::string> hash = garden.encode_hash(
       R"({"ivy": {"on": ["objects[1]"]}, "objects": [{"kind": "wall", "pos": [0, -12]},
           {"kind": "rock", "pos": [6, 4]}]})",

@@ -65,6 +65,7 @@
 #include "compose/garden_run.h"
 #include "compose/garden_state.h"
 #include "compose/garden_view.h"
+#include "compose/studies.h"
 #include "error_record.h"
 #include "geom/mesh_metrics.h"
 #include "io/mesh_reader.h"
@@ -107,18 +108,14 @@ void AppendPart(const MeshBuffers& m, float part, std::vector<float>* positions,
 
 std::string GardenTableJson() { return ParamTableJson(compose::GardenTable()); }
 
-// {state (GardenStateJson, parsed), notices} of the default garden with the link's keys.
+// {state (GardenStateJson, parsed), notices} of the default garden with the link's keys: the
+// compose registry's decode (the one every composer reads a garden link with), a leading '#' off.
+// (Until 2026-12-07 this was a copy that laid the defaults out again after ApplyGardenHash, which
+// put the default wall's ivy back on a link that said `ivy=`.)
 std::string GardenDecodeJson(const std::string& hash) {
-  compose::GardenState state = compose::DefaultGardenState();
-  std::vector<std::string> notices;
   std::string_view h = hash;
   if (!h.empty() && h[0] == '#') h.remove_prefix(1);
-  compose::ApplyGardenHash(h, "", &state, &notices);
-  compose::LayOutDefaults(&state);
-  ordered_json j;
-  j["state"] = ordered_json::parse(compose::GardenStateJson(state));
-  j["notices"] = notices;
-  return JsonText(j);
+  return compose::FindStudy("garden")->decode_hash(h, "");
 }
 
 // An adapter over core/compose/garden_run.h: one garden grown to its years, flattened for the page.
