@@ -74,24 +74,13 @@ compose::GardenState ResolveGardenState(const GardenOptions& o) {
       if (!png.ok()) Fail(png.status());
       state.heightmap_png.assign(png->begin(), png->end());
     }
-    if (state.ground == compose::GroundKind::kMesh && !state.heightmap_name.empty()) {
-      Result<geom::TriMesh> mesh =
-          io::ReadMeshFile(BesideGardenFile(o.garden, state.heightmap_name));
-      if (!mesh.ok())
-        Fail(Status::Error("--garden " + Echo(o.garden) + ": ground.file",
-                           mesh.status().Line() + "; must be a .glb, .gltf or .obj ground"));
-      state.ground_mesh = std::move(*mesh);
-    }
-    for (std::size_t i = 0; i < state.objects.size(); ++i) {
-      compose::GardenObject& obj = state.objects[i];
-      if (obj.kind != "mesh" || obj.file.empty()) continue;
-      Result<geom::TriMesh> mesh = io::ReadMeshFile(BesideGardenFile(o.garden, obj.file));
-      if (!mesh.ok())
-        Fail(Status::Error(
-            "--garden " + Echo(o.garden) + ": objects[" + std::to_string(i) + "].file",
-            mesh.status().Line() + "; must be a .glb, .gltf or .obj mesh"));
-      obj.mesh = std::move(*mesh);
-    }
+    // A mesh ground and mesh objects, read beside the garden file (the reader's error names it).
+    Check(compose::LoadGardenMeshes(
+              [&](const std::string& file) {
+                return io::ReadMeshFile(BesideGardenFile(o.garden, file));
+              },
+              &state)
+              .Within("--garden " + Echo(o.garden)));
     if (!state.mask_name.empty()) {
       Result<std::string> png =
           ReadFile(BesideGardenFile(o.garden, state.mask_name),

@@ -188,11 +188,8 @@ Result<GardenGround> BuildGardenGround(const GardenState& state, const Budget& b
          "the ground mesh (" + FormatCount(triangles) + " triangles, " + FormatCount(vertices) +
              " rays)"},
         budget, "lower ground_res or use a smaller mesh"));
-    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi = -lo;
-    for (const glm::vec3& p : mesh.positions) {
-      lo = glm::min(lo, glm::dvec3(p));
-      hi = glm::max(hi, glm::dvec3(p));
-    }
+    const geom::Bounds3 bounds = geom::MeshBounds(mesh);
+    const glm::dvec3 lo(bounds.min), hi(bounds.max);
     const double side = std::max(hi.x - lo.x, hi.z - lo.z);
     if (!(side > 0) || !std::isfinite(side))
       return Status::Error("ground.file", name + " has no extent in plan (x, z); must be a ground");
@@ -300,7 +297,8 @@ geom::TriMesh GardenObjectMesh(const std::string& kind, uint64_t variant) {
 
 // A dropped mesh as an object: its bounds' base centre moved to the origin (so it stands where it
 // is placed, on the ground), its uvs and other attributes dropped (objects are drawn in one plain
-// material), and a normal per vertex (the area-weighted mean of its triangles') when it has none.
+// material), and a normal per vertex (geom::FaceNormals: its triangles', area-weighted) when it has
+// none.
 geom::TriMesh StandingMesh(const geom::TriMesh& in) {
   geom::TriMesh mesh;
   mesh.positions = in.positions;
@@ -309,20 +307,7 @@ geom::TriMesh StandingMesh(const geom::TriMesh& in) {
   const geom::Bounds3 box = geom::MeshBounds(mesh);
   const glm::vec3 base((box.min.x + box.max.x) / 2, box.min.y, (box.min.z + box.max.z) / 2);
   for (glm::vec3& p : mesh.positions) p -= base;
-  if (in.normals.size() == in.positions.size()) {
-    mesh.normals = in.normals;
-    return mesh;
-  }
-  std::vector<glm::dvec3> sum(mesh.positions.size(), glm::dvec3(0));
-  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-    const uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
-    const glm::dvec3 n = glm::cross(glm::dvec3(mesh.positions[b] - mesh.positions[a]),
-                                    glm::dvec3(mesh.positions[c] - mesh.positions[a]));
-    sum[a] += n, sum[b] += n, sum[c] += n;
-  }
-  mesh.normals.reserve(sum.size());
-  for (const glm::dvec3& n : sum)
-    mesh.normals.push_back(glm::length(n) > 0 ? glm::vec3(glm::normalize(n)) : glm::vec3(0, 1, 0));
+  mesh.normals = in.normals.size() == in.positions.size() ? in.normals : geom::FaceNormals(mesh);
   return mesh;
 }
 

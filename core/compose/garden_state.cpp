@@ -294,6 +294,22 @@ Status CheckGardenState(const GardenState& state) {
   return Status::Ok();
 }
 
+Status LoadGardenMeshes(const GardenMeshReader& read, GardenState* state) {
+  if (state->ground == GroundKind::kMesh && !state->heightmap_name.empty()) {
+    Result<geom::TriMesh> mesh = read(state->heightmap_name);
+    if (!mesh.ok()) return mesh.status().Within("ground.file");
+    state->ground_mesh = std::move(*mesh);
+  }
+  for (std::size_t i = 0; i < state->objects.size(); ++i) {
+    GardenObject& o = state->objects[i];
+    if (o.kind != "mesh" || o.file.empty()) continue;
+    Result<geom::TriMesh> mesh = read(o.file);
+    if (!mesh.ok()) return mesh.status().Within(GardenIndexed("objects", i, "file"));
+    o.mesh = std::move(*mesh);
+  }
+  return Status::Ok();
+}
+
 moss::MossState GardenMossDefaults() {
   moss::MossState state;
   (void)moss::SetMossPreset("nomura2010-sky", &state);

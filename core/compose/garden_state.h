@@ -7,9 +7,10 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
-#include <utility>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "base/status.h"
@@ -127,6 +128,15 @@ GardenState DefaultGardenState();
 // position inside the garden, alt_min <= alt_max, a non-empty mix when density > 0. Errors name
 // the field ("plants[1].species", "objects[0].pos", "mix", "alt_min").
 Status CheckGardenState(const GardenState& state);
+
+// A front end's reader of a mesh file by the name a garden state gives it (the CLI: beside the
+// garden file; the page: a file dropped in): the mesh in world space, or its own error line.
+using GardenMeshReader = std::function<Result<geom::TriMesh>(const std::string& file)>;
+
+// Fills the meshes a state names by file (a mesh ground's ground_mesh, each mesh object's mesh)
+// through `read`; one without a file name is left as it is. A read's error is returned under the
+// field that named the file ("ground.file", "objects[2].file").
+Status LoadGardenMeshes(const GardenMeshReader& read, GardenState* state);
 
 // Applies {params: {...}, ground: {kind: "flat" | "terrain" | "heightmap" | "mesh", terrain:
 // {...the terrain's state JSON...}, file: "h.png" or "hill.glb"}, objects: [{kind, pos: [x, z],

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "base/markup_escape.h"
+#include "geom/mesh_metrics.h"
 
 namespace niwa::moss {
 namespace {
@@ -29,12 +30,11 @@ struct PhotonSvgItem {
 }  // namespace
 
 PhotonView PhotonViewOf(const SoilCells& cells) {
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const glm::vec3& p : cells.mesh.positions) {
-    lo = glm::min(lo, glm::dvec3(p));
-    hi = glm::max(hi, glm::dvec3(p));
+  glm::dvec3 lo(-1), hi(1);
+  if (cells.mesh.triangle_count() > 0) {
+    const geom::Bounds3 bounds = geom::MeshBounds(cells.mesh);
+    lo = glm::dvec3(bounds.min), hi = glm::dvec3(bounds.max);
   }
-  if (!(hi.x >= lo.x)) lo = glm::dvec3(-1), hi = glm::dvec3(1);
   const glm::dvec3 centre = 0.5 * (lo + hi);
   const double r = std::max(1e-6, 0.5 * glm::length(hi - lo));
   // scripts/lib/figures_moss.js's camera for the thesis scene (r = 1.676 m): eye (0.45, 0.75,

@@ -131,27 +131,18 @@ class GardenLab {
     compose::GardenState state = compose::DefaultGardenState();
     Status s = compose::ApplyGardenStateJson(state_json, &state);
     if (!s.ok()) return ErrorText(s);
-    // Mesh objects: the meshes this lab read (loadMesh), by file name.
-    for (std::size_t i = 0; i < state.objects.size(); ++i) {
-      compose::GardenObject& o = state.objects[i];
-      if (o.kind != "mesh" || o.file.empty()) continue;
-      const auto it = meshes_.find(o.file);
-      if (it == meshes_.end())
-        return ErrorText(Status::Error("objects[" + std::to_string(i) + "].file",
-                                       "'" + o.file +
-                                           "' is not loaded in this page; drop the file again "
-                                           "(a link does not carry it)"));
-      o.mesh = it->second;
-    }
-    if (state.ground == compose::GroundKind::kMesh && !state.heightmap_name.empty()) {
-      const auto it = meshes_.find(state.heightmap_name);
-      if (it == meshes_.end())
-        return ErrorText(
-            Status::Error("ground.file", "'" + state.heightmap_name +
-                                             "' is not loaded in this page; drop "
-                                             "the file again (a link does not carry it)"));
-      state.ground_mesh = it->second;
-    }
+    // A mesh ground and mesh objects: the meshes this lab read (loadMesh), by file name.
+    s = compose::LoadGardenMeshes(
+        [this](const std::string& file) -> Result<geom::TriMesh> {
+          const auto it = meshes_.find(file);
+          if (it == meshes_.end())
+            return Status::Error("", "'" + file +
+                                         "' is not loaded in this page; drop the file again (a "
+                                         "link does not carry it)");
+          return it->second;
+        },
+        &state);
+    if (!s.ok()) return ErrorText(s);
     compose::LayOutDefaults(&state);
     s = compose::CheckGardenState(state);
     if (!s.ok()) return ErrorText(s);
