@@ -68,6 +68,22 @@ function table3(level, extra) {
       `camphor ${r2(v('camphor'))}, tallow ${r2(v('tallow'))}, pine ${r2(v('pine'))}`);
     check('A: tallow closed-area fraction > camphor\'s', o('tallow', 'closed_fraction') > o('camphor', 'closed_fraction'),
       `${r2(o('tallow', 'closed_fraction'))} vs ${r2(o('camphor', 'closed_fraction'))}`);
+    // The same orderings on the crack spacing along scan lines, the measure the paper names and
+    // level B is scored on (docs/bark-model.md choice 10a). The closed fraction has no spacing
+    // twin: a scan line along the trunk that no horizontal crack crosses is the open case
+    // (spacing_open_lines_h), so tallow must have none and camphor more.
+    const sw = (sp) => o(sp, 'spacing_mean_w'), sh = (sp) => o(sp, 'spacing_mean_h');
+    check('A (crack spacing): pine wider than tallow and camphor by 1.25x',
+      sw('pine') >= 1.25 * Math.max(sw('tallow'), sw('camphor')),
+      `pine ${r2(sw('pine'))}, tallow ${r2(sw('tallow'))}, camphor ${r2(sw('camphor'))} cm`);
+    check('A (crack spacing): height camphor > pine > tallow', sh('camphor') > sh('pine') && sh('pine') > sh('tallow'),
+      `${r2(sh('camphor'))} > ${r2(sh('pine'))} > ${r2(sh('tallow'))} cm`);
+    const sar = (sp) => sh(sp) / sw(sp);
+    check('A (crack spacing): camphor height/width >= 1.3x tallow\'s', sar('camphor') >= 1.3 * sar('tallow'),
+      `${r2(sar('camphor') / sar('tallow'))}x (paper 4.1x)`);
+    const open = (sp) => by[sp].ours.spacing_open_lines_h;
+    check('A (crack spacing): lines along the trunk no horizontal crack crosses, camphor > tallow',
+      open('camphor') > open('tallow'), `camphor ${open('camphor')}, tallow ${open('tallow')} over the seeds`);
   } else {
     for (const r of t.rows) {
       const sp = r.species, p = r.paper;

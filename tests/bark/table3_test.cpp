@@ -15,6 +15,7 @@ namespace {
 
 struct Measured {
   double vertical = 0, mean_w = 0, mean_h = 0, intercept_h = 0, closed = 0;
+  double spacing_w = 0, spacing_h = 0;  // crack spacing along scan lines (the paper's measure)
 };
 
 Measured Grow(const std::string& species, bool level_a) {
@@ -39,6 +40,8 @@ Measured Grow(const std::string& species, bool level_a) {
     m.mean_h += c.mean_height / seeds;
     m.intercept_h += c.intercept_height / seeds;
     m.closed += c.closed_fraction / seeds;
+    m.spacing_w += c.spacing_width.mean / seeds;
+    m.spacing_h += c.spacing_height.mean / seeds;
   }
   return m;
 }
@@ -55,6 +58,12 @@ TEST(Table3, LevelAOneGrowthForAllSpecies) {
   // Height (the crack spacing along the trunk): camphor > pine > tallow.
   EXPECT_GT(camphor.intercept_h, pine.intercept_h);
   EXPECT_GT(pine.intercept_h, tallow.intercept_h);
+  // On the crack spacing along scan lines (docs/bark-model.md choice 10a): the same height order,
+  // and camphor's spacing at least 1.3x as elongated as tallow's (the plates' extents miss this
+  // one: docs/FIGURES.md, Table 3 level A).
+  EXPECT_GT(camphor.spacing_h, pine.spacing_h);
+  EXPECT_GT(pine.spacing_h, tallow.spacing_h);
+  EXPECT_GE(camphor.spacing_h / camphor.spacing_w, 1.3 * tallow.spacing_h / tallow.spacing_w);
 }
 
 TEST(Table3, LevelBPerSpeciesGrowth) {
