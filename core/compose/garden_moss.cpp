@@ -49,9 +49,18 @@ moss::MossScene GardenMossLand(const GardenScene& scene) {
   ground.normals.clear();
   ground.uvs.clear();
   append(ground, moss::Geology::kHumus, 0);
+  // A dropped mesh object is a fifth region, "mesh", named only when the garden has one (a garden
+  // of built-in objects keeps the four regions of its stats).
+  for (const PlacedObject& o : scene.objects)
+    if (o.kind == "mesh") {
+      land.region_names.push_back("mesh");
+      break;
+    }
   for (const PlacedObject& o : scene.objects) {
-    // A dropped mesh is counted with the lanterns' stone (the default garden's regions stay four).
-    const uint8_t region = o.kind == "wall" ? 1 : o.kind == "rock" ? 2 : 3;
+    const uint8_t region = o.kind == "wall"      ? 1
+                           : o.kind == "rock"    ? 2
+                           : o.kind == "lantern" ? 3
+                                                 : 4;
     append(o.mesh, moss::Geology::kAsphalt, region);
   }
   return land;

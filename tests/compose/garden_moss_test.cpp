@@ -12,6 +12,7 @@
 
 #include "compose/garden_run.h"
 #include "compose/garden_state.h"
+#include "geom/primitives.h"
 #include "io/gltf_writer.h"
 #include "light/sun.h"
 
@@ -56,6 +57,18 @@ TEST(GardenMoss, TheLandIsTheGroundAndTheObjects) {
   EXPECT_EQ(land.region_names[land.region.back()], "rock");
   EXPECT_EQ(land.geology.front(), moss::Geology::kHumus);
   EXPECT_EQ(land.geology.back(), moss::Geology::kAsphalt);
+  EXPECT_EQ(land.region_names.size(), 4u);  // no mesh object: the four regions
+  // A dropped mesh object is its own region, "mesh", not the lanterns'.
+  GardenState with_mesh = s;
+  GardenObject o("mesh", 2, 1, 0, 1);
+  o.file = "box.obj";
+  o.mesh = geom::MakeBox({0.5f, 0.5f, 0.5f}, {0.0f, 0.5f, 0.0f});
+  with_mesh.objects.push_back(o);
+  Result<GardenScene> meshed = BuildGardenScene(with_mesh, Budget{});
+  ASSERT_TRUE(meshed.ok()) << meshed.status().Line();
+  const moss::MossScene land2 = GardenMossLand(*meshed);
+  ASSERT_EQ(land2.region_names.size(), 5u);
+  EXPECT_EQ(land2.region_names[land2.region.back()], "mesh");
 }
 
 // A ground finer than kMossGroundCells a side is resampled for the moss: 128 cells a side whose
@@ -80,8 +93,8 @@ TEST(GardenMoss, AFineGroundIsResampledForTheMoss) {
       EXPECT_DOUBLE_EQ(coarse.At(i, j), scene->ground.HeightAt(x, z));
     }
   const moss::MossScene land = GardenMossLand(*scene);
-  EXPECT_EQ(land.mesh.triangle_count(), 2u * kMossGroundCells * kMossGroundCells +
-                                            scene->objects[0].mesh.triangle_count());
+  EXPECT_EQ(land.mesh.triangle_count(),
+            2u * kMossGroundCells * kMossGroundCells + scene->objects[0].mesh.triangle_count());
   const GardenRun run = Grown(s);
   ASSERT_NE(run.moss(), nullptr);
   const std::vector<float> light = GardenMossGroundLight(*run.moss(), run.scene().ground);
