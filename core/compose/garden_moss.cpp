@@ -104,6 +104,21 @@ std::vector<float> GardenMossGroundLight(const moss::MossRun& run, const GardenG
     sum[k] += S[i] * cells.area[i];
     area[k] += cells.area[i];
   }
+  // A vertex no centroid is nearest (the grid's (0, 0) and (n, n) corners: each cell's two
+  // triangles bin to its other two corners) takes the cells of its eight neighbours.
+  const std::vector<double> own_sum = sum, own_area = area;
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * side + i;
+      if (own_area[k] > 0) continue;
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di) {
+          const int ii = i + di, jj = j + dj;
+          if (ii < 0 || jj < 0 || ii >= side || jj >= side) continue;
+          sum[k] += own_sum[static_cast<std::size_t>(jj) * side + ii];
+          area[k] += own_area[static_cast<std::size_t>(jj) * side + ii];
+        }
+    }
   const int fine = ground.n + 1;
   std::vector<float> out(static_cast<std::size_t>(fine) * fine, -1.0f);
   for (int j = 0; j < fine; ++j)

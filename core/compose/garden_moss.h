@@ -48,8 +48,9 @@ std::vector<moss::CanopySphere> GardenCanopy(const std::vector<TreeAt>& trees, d
 // The moss's light S of the last day (W/m², light_smoothing_days' mean) on the ground, per vertex
 // of its grid in GardenGround's order (vertex (i, j) at x = −L/2 + i·cell, z = −L/2 + j·cell):
 // the area-weighted mean over the moss's ground cells whose centroid lies nearest that vertex of
-// the moss's ground (MossGround), read at the moss's ground vertex nearest each vertex of
-// `ground`; −1 where no cell is. For a page's overlay.
+// the moss's ground (MossGround), or, where none is (the grid's two corners), over those nearest
+// its eight neighbours; read at the moss's ground vertex nearest each vertex of `ground`; −1 only
+// where no ground cell is near (a garden without a moss ground). For a page's overlay.
 std::vector<float> GardenMossGroundLight(const moss::MossRun& run, const GardenGround& ground);
 
 nlohmann::ordered_json GardenMossStats(const moss::MossRun& run, const moss::CanopyShade* canopy);

@@ -15,7 +15,7 @@
 //             heights (Float32, (n + 1)² in GardenGround's order: vertex (i, j) at x = −L/2 +
 //             i·cell, z = −L/2 + j·cell), for the page's ray against the ground (its clicks);
 //             moss_S (Float32 per ground vertex, the same order: the moss's light of its last day,
-//             compose/garden_moss GardenMossGroundLight; −1 where no cell; empty without moss)
+//             compose/garden_moss GardenMossGroundLight; −1 where no cell is near; empty without moss)
 //   "objects" positions, normals, indices (every object's mesh, placed, in one list), kind (Float32
 //             per vertex: 0 wall, 1 rock, 2 lantern, 3 ivy stem, 4 ivy leaf), birth (Float32 per
 //             vertex: the garden year an ivy vertex grew in, ceil(birth_step / ivy_steps), 0 for
