@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <tuple>
@@ -83,6 +84,13 @@ int AppendGardenDocument(gltf::Document* into, const gltf::Document& from) {
   return mesh_base;
 }
 
+// A share as a percentage for a line: "25 %", "0.5 %".
+std::string SharePercent(double share) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g %%", share * 100.0);
+  return text;
+}
+
 std::array<double, 4> YawQuaternion(double rot_deg) {
   const double half = rot_deg * det::kPi / 360.0;
   return {0, det::Sin(half), 0, det::Cos(half)};
@@ -101,7 +109,9 @@ std::string SpeciesColour(const std::string& species) {
 }  // namespace
 
 Result<GardenRun> GardenRun::Start(const GardenState& state, const Budget& budget,
-                                   bool record_years) {
+                                   bool record_years, double record_share) {
+  if (!(record_share > 0 && record_share < 1))
+    return Status::Error("record_share", "must be in (0, 1)");
   NIWA_RETURN_IF_ERROR(CheckGardenState(state));
   GardenRun run;
   run.state_ = state;
@@ -185,7 +195,8 @@ Result<GardenRun> GardenRun::Start(const GardenState& state, const Budget& budge
   // The year records' share of the memory, kept from the trees' (docs/garden-model.md "One
   // clock"): the trees share the rest, so the garden and its records stay within the budget.
   if (record_years) {
-    run.record_limit_ = kGardenRecordShare * static_cast<double>(budget.memory_bytes);
+    run.record_share_ = record_share;
+    run.record_limit_ = record_share * static_cast<double>(budget.memory_bytes);
     tree_budget.memory_bytes = static_cast<uint64_t>(
         std::max(0.0, static_cast<double>(tree_budget.memory_bytes) - run.record_limit_));
   }
@@ -470,7 +481,7 @@ void GardenRun::RecordYear() {
         budget_.memory_limit, "after year " + std::to_string(year_ - 1),
         "the years' pictures took " + FormatBytes(record_bytes_) + " and year " +
             std::to_string(year_) + "'s needs " + FormatBytes(r.bytes) + ", more than their " +
-            FormatBytes(record_limit_) + " (a quarter of the budget)",
+            FormatBytes(record_limit_) + " (" + SharePercent(record_share_) + " of the budget)",
         "lower years, density or size to replay every year; the later years regrow");
     return;
   }

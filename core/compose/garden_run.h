@@ -75,10 +75,12 @@ class GardenRun : public run::StudyRun {
   // against `budget`: each group gets an equal share of it). Errors name state fields
   // ("plants[1].pos", "ground.terrain", "density") or the budget's limit ("lower years, density or
   // size"). With `record_years`, each year's picture is recorded as the clock runs (years(),
-  // kGardenRecordShare of the memory kept for it); the .glb, the stats and the trees' growth are
-  // the same as without it unless the trees reach their memory share.
+  // `record_share` (default kGardenRecordShare, in (0, 1)) of the memory kept for it); the .glb,
+  // the stats and the trees' growth are the same as without it unless the trees reach their
+  // memory share.
   static Result<GardenRun> Start(const GardenState& state, const Budget& budget,
-                                 bool record_years = false);
+                                 bool record_years = false,
+                                 double record_share = kGardenRecordShare);
 
   const char* study() const override { return "garden"; }
   const char* unit() const override { return "years"; }
@@ -158,7 +160,7 @@ class GardenRun : public run::StudyRun {
   // they may take (kGardenRecordShare of the budget's).
   bool record_years_ = false;
   std::vector<GardenYearRecord> records_;
-  double record_bytes_ = 0, record_limit_ = 0;
+  double record_bytes_ = 0, record_limit_ = 0, record_share_ = kGardenRecordShare;
   std::string record_stopped_by_;
   // Keeps year_'s picture when it fits what is left of the records' share, else stops recording.
   void RecordYear();

@@ -99,5 +99,41 @@ TEST(GardenView, YearKOfARecordedRunIsTheGardenGrownToK) {
   EXPECT_EQ(whole->TreeAtYear(0, kYears), &whole->groups()[0].tree());
 }
 
+// Records that outgrow their share stop, say why, and change nothing else: a share that holds
+// years 0..1 of a 3-year garden keeps those two, names year 2 in the line, and leaves the trees,
+// the moss and the .glb those of the run that recorded every year.
+TEST(GardenView, RecordsOverTheirShareStopAndSayWhy) {
+  constexpr int kYears = 3, kKept = 2;
+  const Budget budget{};
+  Result<GardenRun> all = GardenRun::Start(SmallGarden(kYears), budget, true);
+  ASSERT_TRUE(all.ok()) << all.status().Line();
+  ASSERT_TRUE(all->Advance({}).ok());
+  ASSERT_EQ(all->years().size(), static_cast<std::size_t>(kYears + 1));
+  double kept_bytes = 0;
+  for (int y = 0; y < kKept; ++y) kept_bytes += all->years()[y].bytes;
+  const double next = all->years()[kKept].bytes;
+  ASSERT_GT(next, 0);
+  const double share = (kept_bytes + next / 2) / static_cast<double>(budget.memory_bytes);
+  Result<GardenRun> part = GardenRun::Start(SmallGarden(kYears), budget, true, share);
+  ASSERT_TRUE(part.ok()) << part.status().Line();
+  ASSERT_TRUE(part->Advance({}).ok());
+  EXPECT_EQ(part->years().size(), static_cast<std::size_t>(kKept));
+  EXPECT_NE(part->record_stopped_by().find("year " + std::to_string(kKept)), std::string::npos)
+      << part->record_stopped_by();
+  for (int y = 0; y < kKept; ++y) EXPECT_TRUE(GardenYearShown(*part, y)) << y;
+  EXPECT_FALSE(GardenYearShown(*part, kKept));  // not recorded: the page says it regrows
+  EXPECT_TRUE(GardenYearShown(*part, kYears));  // the last year is the run's own
+  EXPECT_EQ(part->TreeAtYear(0, kKept), nullptr);
+  EXPECT_TRUE(GardenGroupMeshAt(*part, 0, kKept).bark.positions.empty());
+  EXPECT_EQ(GardenGroupMeshAt(*part, 0, 1).bark.positions,
+            GardenGroupMeshAt(*all, 0, 1).bark.positions);
+  Result<std::string> part_glb = part->Export("glb"), all_glb = all->Export("glb");
+  ASSERT_TRUE(part_glb.ok() && all_glb.ok());
+  EXPECT_TRUE(*part_glb == *all_glb);
+  // A share outside (0, 1) is refused, naming it.
+  EXPECT_EQ(GardenRun::Start(SmallGarden(kYears), budget, true, 0).status().field(),
+            "record_share");
+}
+
 }  // namespace
 }  // namespace niwa::compose
