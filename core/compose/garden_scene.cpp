@@ -52,6 +52,34 @@ void NormaliseHeights(std::vector<double>* h, double relief) {
   for (double& v : *h) v = span > 0 && relief > 0 ? (v - low) / span * relief : 0.0;
 }
 
+// Fills the vertices of an m × m grid whose `known` is false, ring by ring outwards from the
+// known ones: each takes the mean of its eight neighbours known or filled in an earlier ring (the
+// rings in grid order, so the fill is the same bits everywhere). Needs one known vertex.
+void FillFromNeighbours(std::vector<double>* h, std::vector<bool> known, int m) {
+  std::vector<std::size_t> ring;
+  for (;;) {
+    ring.clear();
+    std::vector<double> value;
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) {
+        const std::size_t k = static_cast<std::size_t>(j) * m + i;
+        if (known[k]) continue;
+        double sum = 0;
+        int count = 0;
+        for (int dj = -1; dj <= 1; ++dj)
+          for (int di = -1; di <= 1; ++di) {
+            const int ii = i + di, jj = j + dj;
+            if (ii < 0 || jj < 0 || ii >= m || jj >= m) continue;
+            const std::size_t q = static_cast<std::size_t>(jj) * m + ii;
+            if (known[q]) sum += (*h)[q], ++count;
+          }
+        if (count > 0) ring.push_back(k), value.push_back(sum / count);
+      }
+    if (ring.empty()) return;
+    for (std::size_t r = 0; r < ring.size(); ++r) (*h)[ring[r]] = value[r], known[ring[r]] = true;
+  }
+}
+
 // The rotation of (x, z) by rot degrees about y (counter-clockwise seen from above: +x towards −z).
 glm::dvec2 TurnPlan(double x, double z, double rot_deg) {
   const double a = rot_deg * det::kPi / 180.0;
@@ -176,7 +204,9 @@ Result<GardenGround> BuildGardenGround(const GardenState& state, const Budget& b
     // centred) stretched over the garden's square, x east and z south as the mesh's own x and z,
     // and the surface seen from above (a ray down at each vertex of the grid: the highest hit)
     // scaled to `relief`. Overhangs and caves are lost; a vertex whose ray meets nothing (a hole,
-    // or beyond a round mesh's rim) takes the lowest height hit.
+    // or beyond a round mesh's rim) takes the mean of its hit or already filled neighbours, ring
+    // by ring outwards from the hits, so the surface runs on level past the rim (before
+    // 2026-12-07 it took the lowest height hit: a cliff at the rim of a round mesh).
     const geom::TriMesh& mesh = state.ground_mesh;
     const std::string name = "'" + state.heightmap_name + "'";
     if (mesh.triangle_count() == 0)
@@ -213,8 +243,7 @@ Result<GardenGround> BuildGardenGround(const GardenState& state, const Budget& b
       }
     if (!std::isfinite(lowest))
       return Status::Error("ground.file", name + ": no ray from above meets it; must be a ground");
-    for (std::size_t k = 0; k < g.h.size(); ++k)
-      if (!hit[k]) g.h[k] = lowest;
+    FillFromNeighbours(&g.h, hit, m);
     g.source = "mesh " + state.heightmap_name + " (" + FormatCount(triangles) + " triangles)";
   } else {
     Result<image::Gray16Image> img =

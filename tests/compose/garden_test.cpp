@@ -129,7 +129,7 @@ TEST(Garden, AMeshGroundIsItsSurfaceFromAbove) {
   geom::TriMesh& m = s.ground_mesh;
   // A pyramid 4 units wide, 1 high, over x, z in [-2, 2], with its north-east quarter's face left
   // out (a hole), and a lower sheet at y = -3 under all of it.
-  m.positions = {{-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}, {0, 1, 0},
+  m.positions = {{-2, 0, -2},  {2, 0, -2},  {2, 0, 2},  {-2, 0, 2}, {0, 1, 0},
                  {-2, -3, -2}, {2, -3, -2}, {2, -3, 2}, {-2, -3, 2}};
   m.indices = {0, 4, 1, 2, 4, 3, 3, 4, 0, 5, 6, 7, 5, 7, 8};  // no 1-4-2 face (east)
   Result<GardenScene> scene = BuildGardenScene(s, Budget{});
@@ -138,7 +138,8 @@ TEST(Garden, AMeshGroundIsItsSurfaceFromAbove) {
   EXPECT_EQ(g.source, "mesh pyramid.obj (5 triangles)");
   EXPECT_NEAR(g.relief, 5.0, 1e-9);
   // The apex at the centre; halfway to the west rim (x = -5 m: mesh x = -1) half its height above
-  // the rim's; the east face is a hole: its ray meets the sheet 3 below the rim, the lowest hit (0).
+  // the rim's; the east face is a hole: its ray meets the sheet 3 below the rim, the lowest hit
+  // (0).
   EXPECT_NEAR(g.HeightAt(0, 0), 5.0, 1e-6);
   const double rim = g.HeightAt(-10, 0);
   EXPECT_NEAR(g.HeightAt(-5, 0), rim + (5.0 - rim) / 2, 1e-6);
@@ -149,6 +150,30 @@ TEST(Garden, AMeshGroundIsItsSurfaceFromAbove) {
   Result<GardenScene> none = BuildGardenScene(s, Budget{});
   ASSERT_FALSE(none.ok());
   EXPECT_EQ(none.status().field(), "ground.file");
+}
+
+// A round mesh (here a diamond, a bowl dipping 1 to its centre) leaves the square's corners
+// without a hit: they run on level from the rim, not down to the lowest height (a cliff).
+TEST(Garden, AMeshGroundRunsOnLevelPastItsRim) {
+  GardenState s = DefaultGardenState();
+  s.ground = GroundKind::kMesh;
+  s.heightmap_name = "bowl.obj";
+  ASSERT_TRUE(s.params.Set(GardenParam::kSize, 20).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kGroundRes, 20).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kRelief, 4).ok());
+  s.default_layout = false;
+  s.objects.clear();
+  s.plants.clear();
+  s.ground_mesh.positions = {{-2, 0, 0}, {0, 0, -2}, {2, 0, 0}, {0, 0, 2}, {0, -1, 0}};
+  s.ground_mesh.indices = {0, 4, 1, 1, 4, 2, 2, 4, 3, 3, 4, 0};
+  Result<GardenScene> scene = BuildGardenScene(s, Budget{});
+  ASSERT_TRUE(scene.ok()) << scene.status().Line();
+  const GardenGround& g = scene->ground;
+  EXPECT_NEAR(g.HeightAt(0, 0), 0.0, 1e-6);    // the bowl's bottom, the lowest
+  EXPECT_NEAR(g.HeightAt(-10, 0), 4.0, 1e-6);  // the rim, the relief
+  // Every corner of the square lies outside the diamond: at the rim's height, not the bottom's.
+  for (const double x : {-10.0, 10.0})
+    for (const double z : {-10.0, 10.0}) EXPECT_GT(g.HeightAt(x, z), 3.5) << x << ", " << z;
 }
 
 // A mesh as an object stands on the ground at its place by its bounds' base centre, wherever the
