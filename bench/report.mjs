@@ -3,7 +3,8 @@
 // node bench/report.mjs --native N1.jsonl[,N2.jsonl...] --wasm W1.jsonl[,...] [--peer P1.jsonl[,...]]
 //                       [--gbench G.txt] [--grove GR.jsonl] [--terrain-page T1.jsonl[,...]]
 //                       [--worker WK.jsonl] [--page-timings PT.jsonl] [--moss-page M1.jsonl[,...]]
-//                       [--moss-rays R.jsonl] [--first-picture FP.jsonl] [--meta META.json]
+//                       [--moss-rays R.jsonl] [--first-picture FP.jsonl] [--garden-page GP.jsonl]
+//                       [--meta META.json]
 //                       [--record docs/BENCHMARKS.md]
 // N/W/P hold one JSON object per line as printed by niwa_bench_runner / ez_tree_peer.mjs /
 // fastnoise_peer.mjs, one file per run (process): each workload keeps its fastest run, and the table
@@ -12,7 +13,8 @@
 // answer times of the browser tests (harness.mjs timedCheck); M the lines of bench/moss_page.mjs (the
 // moss page's 300-day thesis run and its scrubber); R those of bench/moss_rays_peer.mjs (three-mesh-bvh
 // on the thesis rays of niwa moss photons --rays); FP those of bench/first_picture.mjs (the tree page's
-// first picture beside an ez-tree page's, fresh Chromium each); META holds {date, machine, cpu, cores, tools, load,
+// first picture beside an ez-tree page's, fresh Chromium each); GP that of bench/garden_page.mjs (the
+// scale garden on the page and natively in one run); META holds {date, machine, cpu, cores, tools, load,
 // command, seconds}.
 import {readFileSync, writeFileSync, existsSync} from 'node:fs';
 
@@ -236,6 +238,12 @@ for (const kind of ['closest', 'segment']) {
       `${fmt(grow.ms)} ms (worker ${fmt(grow.worker_ms)} ms; ${grow.runs.map(fmt).join(' / ')})`, grow.ms <= 10_000);
   }
   if (scrub) goal('moss page: the day scrubber answers ≤ 100 ms (input to frame, day 300 run)', `${fmt(scrub.ms)} ms median, ${fmt(scrub.max_ms)} ms slowest`, scrub.ms <= 100);
+}
+// The garden page (issue 33 item 7): the scale garden in the page ≤ 2× its native growth, one run.
+for (const row of readLines(args['garden-page']).filter((r) => r.workload)) {
+  goal(`${row.workload}: the page ≤ 2× native (link to frame, chromium, WASM; native niwa garden grow in the same run)`,
+    `${fmt(row.ms)} ms against ${fmt(row.native_ms)} ms: ${row.ratio}× (ivy internodes page ${row.page_ivy_internodes}, native ${row.ivy_internodes})`,
+    row.ratio <= 2);
 }
 // The tree page's first picture (issue 32 item 5): within 2× an ez-tree page's load in the same run.
 {
