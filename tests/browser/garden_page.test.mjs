@@ -16,7 +16,7 @@
 // (data-worker-grows and the garden serial unchanged), each answered within two frames, and Play
 // steps through the years to the last; Blow sends a gust front across the garden (the trees west of
 // it sway while those east of it are still at rest; the pixels change, no frame blank)
-// and Still draws the grown shape again. Screenshots: build/artifacts/garden-*.png.
+// and Still draws the grown shape again; a regrow stops the wind. Screenshots: build/artifacts/garden-*.png.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -202,12 +202,20 @@ await runBrowserTest(async (server, browser) => {
   check('Still: the grown shape again (the still garden\'s pixels), the wind off', stillShare < 0.0005 && stilled.wind === 'off' && (await page.textContent('#wind')) === 'Blow',
     `${(stillShare * 100).toFixed(3)} % of pixels differ from before Blow; wind ${stilled.wind}`);
 
-  // 2. A panel edit regrows in the worker.
+  // 2. A panel edit regrows in the worker (while Blow plays: the regrow stops the wind).
   await page.$$eval('#params details', (all) => all.forEach((d) => { d.open = true; }));
   let serial = Number(data.gardenSerial);
+  const posesBefore = Number(stilled.posesDrawn);
+  await page.click('#wind');
+  await page.waitForFunction((n) => Number(document.documentElement.dataset.posesDrawn) > n, posesBefore, { timeout: TIMEOUT });
   await page.fill('#param-plant_seed', '2');
   data = await waitGarden(page, serial);
   check('a panel edit (plant_seed 2) regrows, the row in the hash', data.status === 'ready' && /plant_seed=2/.test(data.hash), `${data.status} ${data.hash}`);
+  const posesAfterGrow = Number(data.posesDrawn);
+  await page.waitForTimeout(500);
+  const afterGrow = await dataset();
+  check('the regrow stopped the wind (Blow again, no pose since)', data.wind === 'off' && (await page.textContent('#wind')) === 'Blow' && Number(afterGrow.posesDrawn) === posesAfterGrow && posesAfterGrow > posesBefore,
+    `wind ${data.wind}, poses drawn ${posesBefore} -> ${posesAfterGrow} -> ${afterGrow.posesDrawn}`);
 
   // 3. A click on the ground places a tree there; its Remove button takes it away.
   serial = Number(data.gardenSerial);

@@ -367,7 +367,7 @@ worker.on('garden', (msg) => {
   // buffers go back to the worker.
   let ivyVertices = 0;
   for (const k of msg.buffers.objects?.kind || []) ivyVertices += k > 2.5 ? 1 : 0;
-  gardenWind.stop(false);  // the worker stopped it at the update
+  gardenWind.stop();  // (the worker stopped it at the update)
   if (renderer) {
     renderer.setGarden(msg.buffers, msg.bounds);
     showOverlay();
@@ -431,7 +431,7 @@ function resetYears(total, record, grows) {
 
 // Shows garden year y (0..lastYear) from the record; a year the record left out says so.
 function pickYear(y) {
-  gardenWind.stop(false);  // a recorded year is drawn still (the worker stops the wind at 'year')
+  gardenWind.stop();  // a recorded year is drawn still
   y = Math.max(0, Math.min(lastYear, Math.round(y)));
   ui.year.value = String(y);
   if (!years || !renderer) return;

@@ -116,9 +116,9 @@ export class GardenWind {
 
   #pose(msg) {
     const r = this.renderer();
-    if (!this.playing || !this.skinned || !r) {
+    if (!this.playing || !this.skinned || !r) {  // a pose of a wind stopped here: stopped there too
       this.worker.recycle({ wind: { poses: msg.poses } });
-      this.worker.post('poseDone');
+      this.worker.post(this.playing ? 'poseDone' : 'wind', this.playing ? {} : { play: false });
       return;
     }
     const poses = viewOf(Float32Array, msg.poses);

@@ -47,6 +47,10 @@ export function createBlow({ post, returned, labOf }) {
   function tick(client, blow) {
     if (blows.get(client) !== blow) return;
     const { lab } = blow;
+    if (lab.blowBlocks() === 0) {  // the lab stopped it (a grow finished: its trees are gone)
+      stop(client);
+      return;
+    }
     const dt = lab.blowDt();
     const due = Math.floor((performance.now() - blow.start) / (1000 * dt)) - blow.steps;
     if (due > 0 || blow.steps === 0) {
