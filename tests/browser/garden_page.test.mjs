@@ -14,7 +14,9 @@
 // regrow and the page grows its last garden again; the year scrubber shows year 2 and year 8 of the
 // opening garden from the run's record (other pixels, fewer leaves at 2) with no grow in the worker
 // (data-worker-grows and the garden serial unchanged), each answered within two frames, and Play
-// steps through the years to the last. Screenshots: build/artifacts/garden-*.png.
+// steps through the years to the last; Blow sends a gust front across the garden (the trees west of
+// it sway while those east of it are still at rest; the pixels change, no frame blank)
+// and Still draws the grown shape again; a regrow stops the wind. Screenshots: build/artifacts/garden-*.png.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -147,12 +149,73 @@ await runBrowserTest(async (server, browser) => {
   check('Play steps through the years to the last (6, 7, 8), growing nothing', played.yearsPlayed === '6,7,8' && played.yearShown === '8' && played.workerGrows === before1c.workerGrows,
     `played ${played.yearsPlayed}, shown ${played.yearShown}, worker grows ${played.workerGrows}`);
 
-  // 2. A panel edit regrows in the worker.
+  // 1d. Blow: a gust front crosses the garden from the west (−x) at 4 m/s, entering its edge as the
+  // wind starts; every planted tree sways in the wind at its place (one simulator per tree in the
+  // worker, its poses skinned by the renderer). The trees west of the front move while those east
+  // of it are still at rest (all of them sway later: compose garden_wind_test); the pixels change;
+  // no frame drawn while blowing is blank; Still draws the grown shape again (the pixels of the
+  // still garden before Blow).
+  await page.evaluate(() => { window.__gardenStill = window.__niwaCanvasImage('#view').data; });
+  const blowAt = Date.now();
+  await page.click('#wind');
+  let split = null, lastProbe = null, blank = 0, samples = 0;
+  for (let t0 = Date.now(); Date.now() - t0 < TIMEOUT; await page.waitForTimeout(150)) {
+    const p = await page.evaluate(() => window.__niwaGardenSway());
+    if (!p) continue;
+    // Until a split pose and a later one 4 s into the wind (8 of the 17 trees west of the front).
+    if (split && p.time >= 4 && Number(await page.evaluate(() => document.documentElement.dataset.posesDrawn)) >= 2) break;
+    lastProbe = p;
+    const seenNow = await looks(page);
+    samples += 1;
+    if (seenNow.sky > 0.5 || seenNow.leaf < 0.003) ++blank;
+    const moving = p.trees.filter((t) => t.offset > 1e-3), still = p.trees.filter((t) => t.offset < 1e-6);
+    if (!split && moving.length > 0 && still.length > 0) {
+      split = { time: p.time, moving: moving.length, still: still.length,
+        movingMaxX: Math.max(...moving.map((t) => t.x)), stillMinX: Math.min(...still.map((t) => t.x)) };
+    }
+  }
+  check('Blow: the front reaches the trees west of it first (some sway while those east of it are still at rest)',
+    split !== null && split.movingMaxX < split.stillMinX + 3,
+    split ? `t = ${split.time.toFixed(2)} s: ${split.moving} swaying (x <= ${split.movingMaxX.toFixed(1)} m), ${split.still} at rest (x >= ${split.stillMinX.toFixed(1)} m)`
+      : `no such pose; last ${JSON.stringify(lastProbe)?.slice(0, 300)}`);
+  const blowing = await dataset();
+  const blownShare = await page.evaluate(() => {
+    const a = window.__gardenStill, b = window.__niwaCanvasImage('#view').data;
+    let differ = 0;
+    for (let i = 0; i < a.length; i += 4) if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 30) ++differ;
+    return differ / (a.length / 4);
+  });
+  check('Blow: the trees\' pixels change, no frame drawn while blowing is blank', blownShare > 0.002 && blank === 0 && samples > 0 && blowing.wind === 'on' && Number(blowing.posesDrawn) >= 2,
+    `${(blownShare * 100).toFixed(2)} % of pixels differ from the still garden; ${blank} blank of ${samples} frames sampled; ${blowing.posesDrawn} poses drawn in ${((Date.now() - blowAt) / 1000).toFixed(1)} s, sway ${blowing.swayTime} s, speed ${blowing.windSpeed}, ${blowing.windStepsPerTick} steps a tick`);
+  await saveCanvasPng(page, 'garden-blow.png');
+  const stills = Number(blowing.windStills || 0);
+  await page.click('#wind');
+  await page.waitForFunction((n) => Number(document.documentElement.dataset.windStills || 0) > n, stills, { timeout: TIMEOUT });
+  const stillShare = await page.evaluate(() => {
+    const a = window.__gardenStill, b = window.__niwaCanvasImage('#view').data;
+    let differ = 0;
+    for (let i = 0; i < a.length; i += 4) if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 30) ++differ;
+    delete window.__gardenStill;
+    return differ / (a.length / 4);
+  });
+  const stilled = await dataset();
+  check('Still: the grown shape again (the still garden\'s pixels), the wind off', stillShare < 0.0005 && stilled.wind === 'off' && (await page.textContent('#wind')) === 'Blow',
+    `${(stillShare * 100).toFixed(3)} % of pixels differ from before Blow; wind ${stilled.wind}`);
+
+  // 2. A panel edit regrows in the worker (while Blow plays: the regrow stops the wind).
   await page.$$eval('#params details', (all) => all.forEach((d) => { d.open = true; }));
   let serial = Number(data.gardenSerial);
+  const posesBefore = Number(stilled.posesDrawn);
+  await page.click('#wind');
+  await page.waitForFunction((n) => Number(document.documentElement.dataset.posesDrawn) > n, posesBefore, { timeout: TIMEOUT });
   await page.fill('#param-plant_seed', '2');
   data = await waitGarden(page, serial);
   check('a panel edit (plant_seed 2) regrows, the row in the hash', data.status === 'ready' && /plant_seed=2/.test(data.hash), `${data.status} ${data.hash}`);
+  const posesAfterGrow = Number(data.posesDrawn);
+  await page.waitForTimeout(500);
+  const afterGrow = await dataset();
+  check('the regrow stopped the wind (Blow again, no pose since)', data.wind === 'off' && (await page.textContent('#wind')) === 'Blow' && Number(afterGrow.posesDrawn) === posesAfterGrow && posesAfterGrow > posesBefore,
+    `wind ${data.wind}, poses drawn ${posesBefore} -> ${posesAfterGrow} -> ${afterGrow.posesDrawn}`);
 
   // 3. A click on the ground places a tree there; its Remove button takes it away.
   serial = Number(data.gardenSerial);

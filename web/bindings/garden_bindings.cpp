@@ -28,6 +28,11 @@
 //             foot, its turn about y in radians, counter-clockwise seen from above)
 //   "year"    the trees' six buffers above for the year of the last showYear(y), and moss_S of
 //             that year (the garden's year scrubber: nothing regrows)
+//   "skin"    after blowStart: joints (Uint32 per vertex of "trees": its node point in its
+//             group's sway model, compose/garden_wind Skin) and weights (Float32, eq. 3.15), and
+//             blocks (Float32 per planted tree in the instances' order: its first pose block)
+//   "wind"    poses (Float32, 16 per node point of every copy, core/sway/skin.h; copy k's node
+//             point j at block blocks[k] + j), after blowStart and every blowStep
 // Calls: loadMesh(bytes, name) -> ""/error record naming "mesh" (a dropped .glb/.gltf/.obj, Draco
 // decoded by the page, kept by name for the state's mesh objects (kind "mesh", file name) and a
 // mesh ground (ground.kind "mesh", file name)),
@@ -43,10 +48,16 @@
 // yearsJson() ({years, recorded: [years], stopped_by, record_bytes, bytes: [per recorded year],
 // mosses: [per recorded year]}); showYear(y) -> ""/error record naming "year": the "year" group
 // filled from the run's record of year y (GardenRun's record_years, on for every page grow:
-// compose/garden_view GardenGroupMeshAt). Free functions: gardenTableJson(), gardenDecodeJson(hash)
+// compose/garden_view GardenGroupMeshAt). Blow (compose/garden_wind, the last grown year's trees):
+// blowStart(windJson) -> ""/error record (the wind rows over the garden's defaults, "{}" for none;
+// errors name the row, "wind" or the page budget's limit; fills "skin" and "wind" at rest),
+// blowStep(steps) -> the wind's time (s; at most 64 steps a call; fills "wind"), blowStop(),
+// blowDt(), blowDuration(), blowStepsPerTick(), blowSpeed() (the share of real time the worker can
+// keep), blowWindSpeed() (m/s at the garden's centre now), blowBlocks() (pose blocks of every copy;
+// 0: not blowing); a new grow stops it. Free functions: gardenTableJson(), gardenDecodeJson(hash)
 // ({state, notices}: the default garden with the link's keys). Does not: keep more than one run,
-// keep more than one year's buffers, or read files (a heightmap, mesh or mask ground is not
-// offered by the page yet).
+// keep more than one year's buffers, sway a recorded year's trees, or read files (a heightmap, mesh
+// or mask ground is not offered by the page yet).
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
@@ -65,6 +76,7 @@
 #include "compose/garden_run.h"
 #include "compose/garden_state.h"
 #include "compose/garden_view.h"
+#include "compose/garden_wind.h"
 #include "compose/studies.h"
 #include "error_record.h"
 #include "geom/mesh_metrics.h"
@@ -175,6 +187,7 @@ class GardenLab {
       pending_.reset();
       return ErrorText(s);
     }
+    blowStop();  // the wind swayed the trees of the garden before
     run_.emplace(std::move(*pending_));
     pending_.reset();
     run_grows_ = grows_;
@@ -246,6 +259,54 @@ class GardenLab {
     }
     return "";
   }
+
+  // ---- Blow: the wind over the last grown year's trees (compose/garden_wind) ----
+  std::string blowStart(const std::string& wind_json) {
+    blowStop();
+    if (!run_) return ErrorText(Status::Error("wind", "nothing grown yet"));
+    Result<ParamSet> rows = compose::GardenWindRows(run_->scene().ground.size, wind_json);
+    if (!rows.ok()) return ErrorText(rows.status());
+    Result<compose::GardenWind> wind = compose::GardenWind::Start(*run_, *rows, PageBudget());
+    if (!wind.ok()) return ErrorText(wind.status());
+    // The skin of the "trees" buffers (each group's page mesh: bark, leaves, flowers, as
+    // FillTrees appends them) and each copy's first pose block in the instances' order.
+    for (int g = 0; g < wind->groups(); ++g) {
+      const TreeSkin skin = wind->Skin(*run_, g);
+      for (const VertexSkin* part : {&skin.bark, &skin.leaves, &skin.flowers}) {
+        skin_joints_.insert(skin_joints_.end(), part->joint.begin(), part->joint.end());
+        skin_weights_.insert(skin_weights_.end(), part->weight.begin(), part->weight.end());
+      }
+      for (std::size_t k = 0; k < run_->groups()[g].trees.size(); ++k)
+        skin_blocks_.push_back(static_cast<float>(wind->first_block(g, static_cast<int>(k))));
+    }
+    if (skin_joints_.size() != trees_.positions.size() / 3) {
+      blowStop();
+      return ErrorText(Status::Error("wind", "the trees' sway skin does not match their mesh"));
+    }
+    blow_.emplace(std::move(wind).value());
+    poses_.assign(blow_->blocks() * kSwayPoseFloats, 0.0f);
+    blow_->WritePoses(poses_.data());
+    return "";
+  }
+  double blowStep(int steps) {
+    if (!blow_) return 0;
+    blow_->Step(std::clamp(steps, 0, 64));
+    blow_->WritePoses(poses_.data());
+    return blow_->time();
+  }
+  void blowStop() {
+    blow_.reset();
+    skin_joints_.clear();
+    skin_weights_.clear();
+    skin_blocks_.clear();
+    poses_.clear();
+  }
+  double blowDt() const { return blow_ ? blow_->dt() : 0; }
+  double blowDuration() const { return blow_ ? blow_->duration() : 0; }
+  int blowStepsPerTick() const { return blow_ ? blow_->steps_per_tick() : 0; }
+  double blowSpeed() const { return blow_ ? blow_->speed() : 0; }
+  double blowWindSpeed() const { return blow_ ? blow_->SpeedAt(0, 0) : 0; }
+  double blowBlocks() const { return blow_ ? static_cast<double>(blow_->blocks()) : 0; }
 
   std::string statsJson() const { return run_ ? run_->StatsJson() : "{}"; }
   std::string hash() const { return run_ ? run_->Hash("") : ""; }
@@ -333,6 +394,10 @@ class GardenLab {
           .Add("ranges", t.ranges)
           .Add("instances", t.instances);
       if (group == "year") out.Add("moss_S", year_moss_S_);
+    } else if (group == "skin") {
+      out.Add("joints", skin_joints_).Add("weights", skin_weights_).Add("blocks", skin_blocks_);
+    } else if (group == "wind") {
+      out.Add("poses", poses_);
     } else if (group == "download") {
       out.Add("bytes", download_);
     } else {
@@ -429,7 +494,11 @@ class GardenLab {
   TreeBuffers year_;   // the year last shown (group "year")
   std::vector<float> year_moss_S_;
   int grows_ = 0, run_grows_ = 0;
-  std::vector<unsigned char> download_;  // the last build's bytes (group "download")
+  std::vector<unsigned char> download_;      // the last build's bytes (group "download")
+  std::optional<compose::GardenWind> blow_;  // Blow's wind over the last run's trees
+  std::vector<uint32_t> skin_joints_;        // group "skin"
+  std::vector<float> skin_weights_, skin_blocks_;
+  std::vector<float> poses_;  // group "wind": blow_->blocks() x 16 floats
   emscripten::val progress_ = emscripten::val::null();
 };
 
@@ -455,5 +524,14 @@ EMSCRIPTEN_BINDINGS(niwa_garden) {
       .function("grows", &niwa::GardenLab::grows)
       .function("runGrows", &niwa::GardenLab::runGrows)
       .function("yearsJson", &niwa::GardenLab::yearsJson)
-      .function("showYear", &niwa::GardenLab::showYear);
+      .function("showYear", &niwa::GardenLab::showYear)
+      .function("blowStart", &niwa::GardenLab::blowStart)
+      .function("blowStep", &niwa::GardenLab::blowStep)
+      .function("blowStop", &niwa::GardenLab::blowStop)
+      .function("blowDt", &niwa::GardenLab::blowDt)
+      .function("blowDuration", &niwa::GardenLab::blowDuration)
+      .function("blowStepsPerTick", &niwa::GardenLab::blowStepsPerTick)
+      .function("blowSpeed", &niwa::GardenLab::blowSpeed)
+      .function("blowWindSpeed", &niwa::GardenLab::blowWindSpeed)
+      .function("blowBlocks", &niwa::GardenLab::blowBlocks);
 }

@@ -189,12 +189,27 @@ export class GardenLab {
   yearsJson(): string;
   /** Fills buffers("year") with the recorded year's trees and moss light; errors name "year". */
   showYear(year: number): ErrorText;
+  /** Blow: the wind rows ({"wind_speed": 5, ...}; "{}": the garden's defaults, the front entering its upwind edge at t = 0) over the last grown year's trees, one sway simulator a tree; fills buffers("skin") and buffers("wind") at rest; errors name the row, "wind" or the page budget's limit. */
+  blowStart(windJson: string): ErrorText;
+  /** Every tree `steps` (at most 64) time steps further; fills buffers("wind"); returns the wind's time (s). */
+  blowStep(steps: number): number;
+  blowStop(): void;
+  blowDt(): number;
+  blowDuration(): number;
+  /** Steps one worker tick may take (the page sway's rules over every tree). */
+  blowStepsPerTick(): number;
+  /** The share of real time the sway keeps (at most 1). */
+  blowSpeed(): number;
+  /** The wind's speed (m/s) at the garden's centre now. */
+  blowWindSpeed(): number;
+  /** Pose blocks of every copy (0: not blowing). */
+  blowBlocks(): number;
   statsJson(): string;
   hash(): string;
   stateJson(): string;
   /** {size, n, cell, relief, min, max, groups: [{name, species, seed, age, trees, shaded, crown}], trees: [{species, seed, age, pos, rot, hand, group}]}. */
   boundsJson(): string;
-  /** "ground": positions, normals, indices, heights, moss_S; "objects": positions, normals, indices, kind, birth; "trees": positions, normals, indices, part, ranges, instances; "year": the trees' six and moss_S of showYear's year; "download": bytes (of the last build). */
+  /** "ground": positions, normals, indices, heights, moss_S; "objects": positions, normals, indices, kind, birth; "trees": positions, normals, indices, part, ranges, instances; "year": the trees' six and moss_S of showYear's year; "skin": joints, weights, blocks (after blowStart); "wind": poses; "download": bytes (of the last build). */
   buffers(group: string): BufferViews;
   /** "glb" | "svg" | "json" | "heightmap": the run's Export bytes into buffers("download"); errors name "download". */
   build(format: string): ErrorText;

@@ -19,7 +19,9 @@
 // from that record in the worker ('year' -> 'gardenYear') and swapped in with the moss's light of
 // that year; the ivy (grown after the clock) is shown to the part of it born by that year. The link
 // does not change when scrubbing (a view, like the camera); the downloads are the last year's.
-// Does not (yet): Blow, hybrid (card) trees, dragging things (a Move, then a click), regrowing a year the record left out
+// Blow / Still (garden_wind.js): the wind over the last year's trees, a simulator per planted tree
+// in the worker, its poses skinned by the renderer; a regrow or a year picked stops it.
+// Does not (yet): hybrid (card) trees, dragging things (a Move, then a click), regrowing a year the record left out
 // (over its memory share: the scrubber says so), or several workers growing at once.
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { Frame } from '../gl/frame.js';
@@ -33,6 +35,7 @@ import { StudyController } from '../shell/study_controller.js';
 import { Notices, copyLink, mountStudyNav, showEmbedDialog } from '../shell/study_page.js';
 import { setHooks } from '../shell/test_hooks.js';
 import { GardenRenderer } from './garden_renderer.js';
+import { GardenWind } from './garden_wind.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
@@ -59,6 +62,10 @@ const controller = new StudyController({
     worker.request('init', { hash: '' }, { done: ['ready'] });
   },
   onError: (msg, when) => {
+    if (msg.control === 'wind') {  // Blow refused: its line beside the button
+      gardenWind.failed(msg);
+      return true;
+    }
     // A dropped file's read failed: its line beside the file control; the garden shown stays.
     if (when === 'before' && meshRequest && msg.id === meshRequest) {
       meshRequest = 0;
@@ -93,6 +100,7 @@ const loop = new ProgressiveLoop({
   onDrawn: (drawn) => {
     setHooks({ drawnSerial: gardenSerial, drawnTrees: drawn.trees ?? 0, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls, shadow: drawn.shadow ?? '', drawnOverlay: renderer?.overlay ?? 'none' });
     yearDrawn();
+    gardenWind.drawn();
   },
 });
 const requestFrame = () => loop.request();
@@ -359,6 +367,7 @@ worker.on('garden', (msg) => {
   // buffers go back to the worker.
   let ivyVertices = 0;
   for (const k of msg.buffers.objects?.kind || []) ivyVertices += k > 2.5 ? 1 : 0;
+  gardenWind.stop();  // (the worker stopped it at the update)
   if (renderer) {
     renderer.setGarden(msg.buffers, msg.bounds);
     showOverlay();
@@ -422,6 +431,7 @@ function resetYears(total, record, grows) {
 
 // Shows garden year y (0..lastYear) from the record; a year the record left out says so.
 function pickYear(y) {
+  gardenWind.stop();  // a recorded year is drawn still
   y = Math.max(0, Math.min(lastYear, Math.round(y)));
   ui.year.value = String(y);
   if (!years || !renderer) return;
@@ -554,6 +564,14 @@ window.__niwaGardenScreenOf = (x, z) => {
   const c = [0, 1, 2, 3].map((r) => m[r] * x + m[4 + r] * y + m[8 + r] * z + m[12 + r]);
   return [((c[0] / c[3] + 1) / 2) * w, ((1 - c[1] / c[3]) / 2) * h];
 };
+
+// Blow / Still: the last year's trees swayed by a gust front crossing the garden.
+const gardenWind = new GardenWind({
+  worker, button: $('wind'), info: $('wind-info'), renderer: () => renderer,
+  moved: () => loop.moved(), request: () => loop.request(), trees: () => bounds?.trees,
+  canBlow: () => (!bounds || !renderer ? 'Nothing grown yet.' : !bounds.trees?.length ? 'No trees to sway.'
+    : shownYear !== lastYear ? `Blow sways the last year's trees: show year ${lastYear} first.` : ''),
+});
 
 // ---------------------------------------------------------------- start
 setHooks({ status: 'loading' });

@@ -6,15 +6,20 @@
 // map and everything receives it. Also the ground's height under a point and the ray of a click
 // (the page's planting by click). Another garden year (the year scrubber: setYear) swaps the trees'
 // meshes and the ground's moss light for that year's and hides the ivy born after it (the objects'
-// birth year per vertex against uYear); nothing else is re-uploaded.
+// birth year per vertex against uYear); nothing else is re-uploaded. Blow (web/garden/garden_wind.js):
+// setSkin adds the trees' sway skin (joints, weights per vertex; each copy's first pose block) to
+// their VAO, setPoses uploads every copy's poses into one pose texture and the shaders skin each
+// copy with its own block (shaders/common/skin.glsl); still() draws the grown shape again.
 // A StudyLayer (web/gl/frame.js), a layer of a Frame of fit: false (metres).
 // Does not: talk to the worker, know the garden model, or draw the hybrid (card) trees of the grove.
-import { copyOf, floatAttribute, staticBuffer, viewOf } from '../gl/buffers.js';
+import { copyOf, floatAttribute, staticBuffer, uintAttribute, viewOf } from '../gl/buffers.js';
 import { StudyLayer } from '../gl/frame.js';
 import { loadPrograms } from '../gl/program.js';
+import { restPoses, uploadPoses } from '../gl/textures.js';
 
 const SHADERS = new URL('../../shaders/garden/', import.meta.url).href;
 const INSTANCE_BYTES = 16;  // x, y, z, turn (radians)
+const POSE_UNIT = 1;       // the texture unit of the sway poses (the shadow map's is 7)
 // The ground's overlays, in garden.frag's uOverlay order.
 export const OVERLAYS = ['none', 'moss', 'slope', 'altitude'];
 
@@ -29,12 +34,17 @@ export class GardenRenderer extends StudyLayer {
     this.overlay = 'none';  // one of OVERLAYS
     this.hasMoss = false;   // the ground carries the moss's light (its moss_S buffer)
     this.year = null;       // the garden year shown (null: the last grown; ivy by its birth year)
+    this.swayOn = false;    // the trees skinned to the poses (Blow)
+    this.poseSerial = 0;    // poses uploaded since the wind started (the shadow map's key)
   }
 
   async init() {
     this.programs = await loadPrograms(this.gl, SHADERS, {
       mesh: ['garden.vert', 'garden.frag'], shadow: ['shadow.vert', 'shadow.frag'],
     });
+    // Every program reads a pose texture (at rest until Blow), so one is always bound.
+    this.poseTexture = this.gl.createTexture();
+    this.poseRows = uploadPoses(this.gl, this.poseTexture, restPoses(1), 1, 0);
   }
 
   ready() {
@@ -111,8 +121,11 @@ export class GardenRenderer extends StudyLayer {
 
   #setTrees(t) {
     const gl = this.gl;
+    this.still();
     if (t.indices.byteLength > 0) {
       const trees = this.#mesh(t, t.part);
+      trees.vertices = t.positions.byteLength / 12;
+      trees.blockBuffer = null;
       gl.bindVertexArray(trees.vao);
       trees.instanceBuffer = staticBuffer(gl, t.instances);
       trees.buffers.push(trees.instanceBuffer);
@@ -124,6 +137,41 @@ export class GardenRenderer extends StudyLayer {
       }
       this.trees = trees;
     }
+  }
+
+  // Blow: the worker's 'blowing' skin ({joints: Uint32 and weights: Float32 per vertex of the
+  // trees on screen, blocks: Float32 per copy in the instances' order}) on the trees' VAO, used at
+  // once (may be recycled after). False when it is not the trees' on screen (a vertex count apart).
+  setSkin(skin) {
+    const gl = this.gl, trees = this.trees;
+    if (!trees || skin.joints.byteLength / 4 !== trees.vertices) return false;
+    // A skin given before (an earlier Blow of these trees) is replaced.
+    for (const b of trees.skin || []) gl.deleteBuffer(b);
+    trees.buffers = trees.buffers.filter((b) => !(trees.skin || []).includes(b));
+    gl.bindVertexArray(trees.vao);
+    const joints = staticBuffer(gl, skin.joints), weights = staticBuffer(gl, skin.weights);
+    uintAttribute(gl, 5, joints, 1);
+    floatAttribute(gl, 6, weights, 1);
+    gl.bindVertexArray(null);
+    trees.blockBuffer = staticBuffer(gl, skin.blocks);
+    trees.skin = [joints, weights, trees.blockBuffer];
+    trees.buffers.push(...trees.skin);
+    return true;
+  }
+
+  // Every copy's poses (Float32Array, `blocks` × 16 floats: the worker's 'pose'), the trees then
+  // skinned to them.
+  setPoses(poses, blocks) {
+    if (!this.trees?.blockBuffer) return;
+    this.poseRows = uploadPoses(this.gl, this.poseTexture, poses, blocks, this.poseRows);
+    this.swayOn = true;
+    this.poseSerial += 1;
+  }
+
+  // The grown shape again (Still, a regrow, a year picked): the trees drawn unskinned.
+  still() {
+    this.swayOn = false;
+    this.poseSerial = 0;
   }
 
   clear() {
@@ -190,8 +238,10 @@ export class GardenRenderer extends StudyLayer {
   #drawGroup(g, first, count) {
     const gl = this.gl;
     const tris = g.count / 3;
+    const blocks = this.trees.blockBuffer;  // once skinned, always pointed at its copies (in range)
     const draw = (instance, from, n, instances) => {
       floatAttribute(gl, 3, this.trees.instanceBuffer, 4, INSTANCE_BYTES, (g.firstInstance + instance) * INSTANCE_BYTES, 1);
+      if (blocks) floatAttribute(gl, 7, blocks, 1, 4, (g.firstInstance + instance) * 4, 1);
       gl.drawElementsInstanced(gl.TRIANGLES, n * 3, gl.UNSIGNED_INT, (g.firstIndex + from * 3) * 4, instances);
     };
     let at = first;
@@ -210,14 +260,30 @@ export class GardenRenderer extends StudyLayer {
     }
   }
 
+  // The pose texture on its unit for program `p`, skinning on (`sway`) or off; the generic values
+  // of the skin's attributes where a VAO has no array for them (an integer attribute's must be
+  // integer).
+  #bindSway(p, sway) {
+    const gl = this.gl;
+    gl.activeTexture(gl.TEXTURE0 + POSE_UNIT);
+    gl.bindTexture(gl.TEXTURE_2D, this.poseTexture);
+    gl.activeTexture(gl.TEXTURE0);
+    if (p.uniforms.uPoses) gl.uniform1i(p.uniforms.uPoses, POSE_UNIT);
+    if (p.uniforms.uSway) gl.uniform1i(p.uniforms.uSway, sway ? 1 : 0);
+    gl.vertexAttribI4ui(5, 0, 0, 0, 0);
+    gl.vertexAttrib1f(6, 0);
+    gl.vertexAttrib1f(7, 0);
+  }
+
   // A step of an indexed mesh (the ground, the objects) with the program `p` set up by `uniforms`.
-  #meshStep(part, uniforms) {
+  #meshStep(part, uniforms, p) {
     const gl = this.gl;
     return {
       primitives: part.count / 3,
       setup: () => {
         gl.bindVertexArray(part.vao);
         uniforms();
+        this.#bindSway(p, false);
         gl.vertexAttrib4f(3, 0, 0, 0, 0);  // not an array in these VAOs: the generic value (no turn)
         gl.vertexAttrib1f(4, 0);  // born in year 0 (the objects' VAO has its ivy's birth years)
       },
@@ -225,7 +291,7 @@ export class GardenRenderer extends StudyLayer {
     };
   }
 
-  #treeSteps(uniforms) {
+  #treeSteps(uniforms, p) {
     const gl = this.gl;
     if (!this.trees) return [];
     return this.trees.groups.filter((g) => g.count > 0 && g.instances > 0).map((g) => ({
@@ -233,6 +299,7 @@ export class GardenRenderer extends StudyLayer {
       setup: () => {
         gl.bindVertexArray(this.trees.vao);
         uniforms();
+        this.#bindSway(p, this.swayOn && !!this.trees.blockBuffer);
         gl.vertexAttrib1f(4, 0);
       },
       draw: (first, n) => this.#drawGroup(g, first, n),
@@ -245,7 +312,8 @@ export class GardenRenderer extends StudyLayer {
   }
 
   shadowKey() {
-    return this.objects || this.trees ? `garden:${this.serial}` : null;
+    // The poses after '#': a swaying frame (the page's motion) reuses the map of an older pose.
+    return this.objects || this.trees ? `garden:${this.serial}#${this.swayOn ? this.poseSerial : 'rest'}` : null;
   }
 
   worldBounds() {
@@ -262,8 +330,8 @@ export class GardenRenderer extends StudyLayer {
       gl.disable(gl.CULL_FACE);
     };
     const steps = [];
-    if (this.objects) steps.push(this.#meshStep(this.objects, uniforms));
-    steps.push(...this.#treeSteps(uniforms));
+    if (this.objects) steps.push(this.#meshStep(this.objects, uniforms, s));
+    steps.push(...this.#treeSteps(uniforms, s));
     return steps;
   }
 
@@ -289,9 +357,9 @@ export class GardenRenderer extends StudyLayer {
       gl.disable(gl.CULL_FACE);
       gl.vertexAttrib1f(2, 0);  // the ground's tint (not an array in its VAO)
     };
-    const steps = [this.#meshStep(this.ground, uniforms(0))];
-    if (this.objects) steps.push(this.#meshStep(this.objects, uniforms(1)));
-    const trees = this.#treeSteps(uniforms(2));
+    const steps = [this.#meshStep(this.ground, uniforms(0), p)];
+    if (this.objects) steps.push(this.#meshStep(this.objects, uniforms(1), p));
+    const trees = this.#treeSteps(uniforms(2), p);
     steps.push(...trees);
     for (const s of steps) totals.triangles += s.primitives;
     totals.drawCalls = steps.length;
@@ -303,6 +371,7 @@ export class GardenRenderer extends StudyLayer {
     super.dispose();
     this.clear();
     for (const p of Object.values(this.programs || {})) this.gl.deleteProgram(p.program);
+    if (this.poseTexture) this.gl.deleteTexture(this.poseTexture);
     this.programs = null;
   }
 }

@@ -21,11 +21,14 @@
 // decode: gardenDecodeJson (the default garden with the link's keys).
 // An 'export' ({format: glb | svg | json | heightmap}) answers with the run's bytes (the bytes of
 // `niwa garden grow --url HASH --out g.glb`), transferred, or an error naming "download".
+// Blow: 'wind' ({play, wind?}) and 'poseDone' run the wind over the last garden's trees
+// (web/worker/garden_blow.js); an update or a 'year' stops it.
 // Messages: web/worker/protocol.js. Does not: load the module, route messages or catch errors
 // (web/worker/worker.js does).
 import { errorOf, errorReply } from './errors.js';
 import { TransferPool, closeLabSession, exportLabDownload } from './transfer.js';
 import { nextTask } from './next_task.js';
+import { createBlow } from './garden_blow.js';
 
 export function createHandler(Module, ctx) {
   const { post, isLatest } = ctx;
@@ -49,9 +52,12 @@ export function createHandler(Module, ctx) {
     return labs.get(client);
   }
 
+  const blow = createBlow({ post, returned, labOf });
+
   async function update(msg, client) {
     const { id } = msg;
     const entry = labOf(client);
+    blow.stop(client);  // the wind swayed the garden before this one
     await nextTask();  // a newer update already queued supersedes this one
     if (!isLatest(client, id)) return;
     entry.working = id;
@@ -92,6 +98,7 @@ export function createHandler(Module, ctx) {
   // Another year of the garden grown: its trees' meshes from the run's record (nothing grows).
   async function year(msg, client) {
     const entry = labOf(client);
+    blow.stop(client);  // a recorded year is drawn still
     entry.wantYear = msg.id;
     await nextTask();  // a newer 'year' already queued supersedes this one
     if (entry.wantYear !== msg.id) return;
@@ -129,7 +136,10 @@ export function createHandler(Module, ctx) {
   const FORMATS = ['glb', 'svg', 'json', 'heightmap'];
   const exportGarden = (msg, client) => exportLabDownload(labOf(client).lab, FORMATS, msg, client, post);
 
-  const close = (client) => closeLabSession(labs, returned, client);
+  const close = (client) => {
+    blow.stop(client);
+    return closeLabSession(labs, returned, client);
+  };
 
   return {
     superseding: ['update'],
@@ -141,6 +151,8 @@ export function createHandler(Module, ctx) {
       year,
       mesh,
       export: exportGarden,
+      wind: (msg, client) => (msg.play ? blow.start(msg, client) : blow.stop(client)),
+      poseDone: (msg, client) => blow.poseDone(client),
       recycle: (msg, client) => returned.give(client, msg.buffers),
     },
   };

@@ -213,6 +213,13 @@
  * @typedef {Envelope & {type: 'mesh', name: string, bytes: ArrayBuffer}} GardenMeshMessage
  *   -> {type: 'meshLoaded', mesh: {name, triangles}} or an error naming "mesh": the mesh kept by
  *   name for the state's mesh objects ({kind: 'mesh', file: name}; at most 8 a client)
+ * @typedef {Envelope & {type: 'wind', play: boolean, wind?: Object}} GardenWindMessage
+ *   Blow (web/worker/garden_blow.js): play: true starts one sway simulator per planted tree of the
+ *   last garden in the wind rows `wind` over the garden's defaults -> {type: 'blowing', run, skin:
+ *   {joints, weights, blocks}, blocks, dt, speed, stepsPerTick} (the "trees" buffers' sway skin
+ *   and each copy's first pose block) or an error with control: 'wind'; then {type: 'pose', time,
+ *   wind, stepMs, speed, poses} one at a time, the next after the page's 'poseDone' (poses into
+ *   the buffer handed back as 'recycle' {wind: {poses}}). play: false, an update or a 'year' stops it.
  * export: format 'glb' | 'svg' | 'json' | 'heightmap' (the run's Export bytes).
  */
 // (No list of message types here: each study's handler says which it answers, and the router
