@@ -213,6 +213,11 @@
  * @typedef {Envelope & {type: 'mesh', name: string, bytes: ArrayBuffer}} GardenMeshMessage
  *   -> {type: 'meshLoaded', mesh: {name, triangles}} or an error naming "mesh": the mesh kept by
  *   name for the state's mesh objects ({kind: 'mesh', file: name}; at most 8 a client)
+ * @typedef {Envelope & {type: 'image', role: 'heightmap'|'mask', name: string, bytes: ArrayBuffer}}
+ *   GardenImageMessage -> {type: 'imageLoaded', image: {role, name, width, height, bit_depth,
+ *   colour_type}} or an error naming "ground.file" (heightmap) or "mask": the PNG decoded in the
+ *   core and kept by name for the state's heightmap ground ({kind: 'heightmap', file: name}) or
+ *   mask (mask: name); at most 4 of each a client
  * export: format 'glb' | 'svg' | 'json' | 'heightmap' (the run's Export bytes).
  */
 // (No list of message types here: each study's handler says which it answers, and the router
