@@ -33,7 +33,9 @@ Status WriteLodSwayGlb(const Tree& tree, const SwayParams& params, const SwayGlb
     if (choice != nullptr) *choice = LodChoice{};
     return WriteSwayGlb(tree, params, options, bytes, info);
   }
-  Result<LodMesh> built = BuildLodMesh(tree, max_triangles, LodOptions{}, field);
+  LodOptions lod;
+  lod.atlas_size = kSwayAtlasSize;
+  Result<LodMesh> built = BuildLodMesh(tree, max_triangles, lod, field);
   if (!built.ok()) return built.status();
   std::vector<LodMesh> levels;
   levels.push_back(std::move(built).value());

@@ -16,14 +16,19 @@ namespace niwa {
 // its BuildLodMesh level within this many (a 15-year sakura: 386,300 -> 17,478), the budget
 // .glb of docs/lod-export.md with the skin and clip on top.
 inline constexpr long kDefaultSwayTriangles = 20000;
+// The card atlas side of the sway .glb's level (texels): half the budget .glb's 2048. With the
+// species' leaf sprays (tree mesh row leaf_spray) the leaf-cluster cards fill a 2048² atlas with
+// leaves, 8.4 MB of PNG for a 15-year sakura, which puts its sway .glb at 12 MB against issue 32's
+// 8 MB; at 1024² the atlas is about a quarter of that (docs/lod-export.md "The sway .glb").
+inline constexpr int kSwayAtlasSize = 1024;
 
 // WriteSwayGlb when max_triangles < 0 or the full mesh fits (the same bytes); else one node
-// "tree" of BuildLodMesh(tree, max_triangles)'s level (LodGltfDocument: its materials, atlas and
-// wind attributes), every primitive skinned by BuildSwaySkin: tubes, leaves and flowers through
-// their branch and node as the full mesh, branch cards and twig cones through the node nearest
-// each vertex along their branch, leaf-cluster cards through their leafiest branch's tip
-// (LodMesh's card and twig ids). `choice` (optional) gets the level's choice. Errors name
-// `field` for a budget the tree cannot fit, else as WriteSwayGlb's.
+// "tree" of BuildLodMesh(tree, max_triangles)'s level at kSwayAtlasSize (LodGltfDocument: its
+// materials, atlas and wind attributes), every primitive skinned by BuildSwaySkin: tubes, leaves
+// and flowers through their branch and node as the full mesh, branch cards and twig cones through
+// the node nearest each vertex along their branch, leaf-cluster cards through their leafiest
+// branch's tip (LodMesh's card and twig ids). `choice` (optional) gets the level's choice. Errors
+// name `field` for a budget the tree cannot fit, else as WriteSwayGlb's.
 Status WriteLodSwayGlb(const Tree& tree, const SwayParams& params, const SwayGlbOptions& options,
                        long max_triangles, std::vector<unsigned char>* bytes,
                        SwayGlbInfo* info = nullptr, LodChoice* choice = nullptr,
