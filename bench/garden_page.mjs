@@ -17,6 +17,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { startServer } from '../scripts/serve.mjs';
 import { launchChromium } from '../tests/browser/harness.mjs';
+import { linkToFrameMs, newBenchPage, waitDrawn } from './page_bench.mjs';
 
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const MIX = ['keyaki', 'sakura', 'maple', 'pine', 'ginkgo', 'weeping', 'tsutsuji', 'binary', 'keyaki-thesis',
@@ -33,29 +34,11 @@ const server = await startServer({ port: 0 });
 const browser = await launchChromium();
 let failed = false;
 try {
-  const context = await browser.newContext({ viewport: { width: 1200, height: 800 }, deviceScaleFactor: 1 });
-  const page = await context.newPage();
-  const errors = [];
-  page.on('pageerror', (e) => errors.push(e.message));
+  const { page, errors } = await newBenchPage(browser);
   // The opening garden first (the module compiled and the worker warm), then the link.
   await page.goto(`${server.url}garden.html`);
-  await page.waitForFunction(() => {
-    const d = document.documentElement.dataset;
-    return d.status === 'error' || (d.status === 'ready' && Number(d.gardenSerial) > 0 && d.drawnSerial === d.gardenSerial);
-  }, null, { timeout: 600_000, polling: 100 });
-  const serial = Number(await page.evaluate(() => document.documentElement.dataset.gardenSerial));
-  const ms = await page.evaluate(({ hash, n }) => new Promise((resolve) => {
-    const t = performance.now();
-    const observer = new MutationObserver(() => {
-      const d = document.documentElement.dataset;
-      if ((d.status === 'ready' && Number(d.gardenSerial) > n && d.drawnSerial === d.gardenSerial) || d.status === 'error') {
-        observer.disconnect();
-        resolve(d.status === 'error' ? -1 : performance.now() - t);
-      }
-    });
-    observer.observe(document.documentElement, { attributes: true });
-    location.hash = hash;
-  }), { hash: `#${HASH}`, n: serial });
+  await waitDrawn(page, 'gardenSerial', 0);
+  const ms = await linkToFrameMs(page, 'gardenSerial', `#${HASH}`);
   const data = await page.evaluate(() => ({ ...document.documentElement.dataset }));
   const notice = await page.evaluate(() => [...document.querySelectorAll('.notice, #message, [data-notice]')]
     .map((e) => e.textContent.trim()).filter(Boolean).join(' | ').slice(0, 600));

@@ -14,6 +14,7 @@
 // SwiftShader draws on the CPU, so the frame times hold a software rasteriser's share.
 import { startServer } from '../scripts/serve.mjs';
 import { launchChromium } from '../tests/browser/harness.mjs';
+import { linkToFrameMs, newBenchPage, waitDrawn } from './page_bench.mjs';
 
 const args = { reps: 3, scrubs: 20 };
 for (let i = 2; i < process.argv.length; i += 2) {
@@ -38,34 +39,16 @@ const server = await startServer({ port: 0 });
 const browser = await launchChromium();
 let failed = false;
 try {
-  const context = await browser.newContext({ viewport: { width: 1200, height: 800 }, deviceScaleFactor: 1 });
-  const page = await context.newPage();
-  const errors = [];
-  page.on('pageerror', (e) => errors.push(e.message));
+  const { page, errors } = await newBenchPage(browser);
   // A short run first (the module compiled and the worker warm), then the workload `reps` times:
   // each rep changes the seed so that the page grows again (a link it shows already is no change).
   await page.goto(`${server.url}moss.html#preset=nomura2010&scene=thesis&days=5&photons=1024`);
-  await page.waitForFunction(() => {
-    const d = document.documentElement.dataset;
-    return d.status === 'error' || (d.status === 'ready' && Number(d.mossSerial) > 0 && d.drawnSerial === d.mossSerial);
-  }, null, { timeout: 600_000, polling: 50 });
+  await waitDrawn(page, 'mossSerial', 0);
   const grows = [];
   let last = null;
   for (let rep = 0; rep < args.reps; ++rep) {
-    const serial = Number(await page.evaluate(() => document.documentElement.dataset.mossSerial));
     // Page time from the link's change to the frame that shows the run (data-drawn-serial moves).
-    const ms = await page.evaluate(({ hash, n }) => new Promise((resolve) => {
-      const t0 = performance.now();
-      const observer = new MutationObserver(() => {
-        const d = document.documentElement.dataset;
-        if ((d.status === 'ready' && Number(d.mossSerial) > n && d.drawnSerial === d.mossSerial) || d.status === 'error') {
-          observer.disconnect();
-          resolve(d.status === 'error' ? -1 : performance.now() - t0);
-        }
-      });
-      observer.observe(document.documentElement, { attributes: true });
-      location.hash = hash;
-    }), { hash: `#${THESIS}&seed=${rep + 1}`, n: serial });
+    const ms = await linkToFrameMs(page, 'mossSerial', `#${THESIS}&seed=${rep + 1}`);
     last = await page.evaluate(() => ({ ...document.documentElement.dataset }));
     if (ms < 0 || last.status !== 'ready') throw new Error(`moss page: ${last.error || last.status}`);
     if (Number(last.days) !== DAYS) throw new Error(`moss page: the run has ${last.days} days, not ${DAYS}`);

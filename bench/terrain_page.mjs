@@ -15,6 +15,7 @@
 // SwiftShader draws on the CPU: screen_ms is reported, the goal is on the worker's regrow.
 import { startServer } from '../scripts/serve.mjs';
 import { launchChromium } from '../tests/browser/harness.mjs';
+import { newBenchPage, waitDrawn } from './page_bench.mjs';
 
 const args = { reps: 7, res: 512 };
 for (let i = 2; i < process.argv.length; i += 2) {
@@ -39,19 +40,13 @@ const loop = (n, phase) => Array.from({ length: n + 1 }, (_, k) => {
   return [0.5 + r * Math.cos(phi), 0.5 - r * Math.sin(phi)];
 });
 
-const waitMountain = (page, above) => page.waitForFunction((n) => {
-  const d = document.documentElement.dataset;
-  return d.status === 'error' || (d.status === 'ready' && Number(d.terrainSerial) > n && d.drawnSerial === d.terrainSerial);
-}, above, { timeout: 300_000, polling: 100 });
+const waitMountain = (page, above) => waitDrawn(page, 'terrainSerial', above, 300_000);
 
 const server = await startServer({ port: 0 });
 const browser = await launchChromium();
 let failed = false;
 try {
-  const context = await browser.newContext({ viewport: { width: 1200, height: 800 }, deviceScaleFactor: 1 });
-  const page = await context.newPage();
-  const errors = [];
-  page.on('pageerror', (e) => errors.push(e.message));
+  const { page, errors } = await newBenchPage(browser);
   await page.goto(`${server.url}terrain.html#preset=improved&builtin=lobes7&res=${args.res}`);
   await waitMountain(page, 0);
   // Page side: the time from the pointer's release on the plan to the frame of the next mountain.
