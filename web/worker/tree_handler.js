@@ -84,7 +84,8 @@ export function createHandler(Module, ctx) {
   // The 'tree' message of a session whose mesh is built; false (after an error message) when the
   // hybrid scene cannot be built.
   // stages: the stages a restage re-did (a grow: null).
-  function sendTree(id, client, session, grown, stages = null) {
+  // workerMs: the worker's wall time from the request to this message (a grow's), or null.
+  function sendTree(id, client, session, grown, stages = null, workerMs = null) {
     const stats = JSON.parse(session.statsJson());
     if (session.barkDressed()) stats.bark = JSON.parse(session.barkJson());
     const transfer = [];
@@ -99,12 +100,13 @@ export function createHandler(Module, ctx) {
       }
       hybrid = takeAtlas(session, client, transfer, buffers);
     }
-    post({ type: 'tree', id, client, stats, mesh, hybrid, swayNodes: session.swayNodes(), grown, stages, buffers }, transfer);
+    post({ type: 'tree', id, client, stats, mesh, hybrid, swayNodes: session.swayNodes(), grown, stages, buffers, workerMs }, transfer);
     return true;
   }
 
   async function grow(msg, client) {
     const { id, state, until } = msg;
+    const started = performance.now();  // the worker's time for this grow, sent with the tree
     let session;
     try {
       session = new Module.TreeSession(JSON.stringify(state));
@@ -137,7 +139,7 @@ export function createHandler(Module, ctx) {
         return;
       }
       dressBark(session, msg.bark, client);
-      if (!sendTree(id, client, session, true)) return;
+      if (!sendTree(id, client, session, true, null, performance.now() - started)) return;
       stopWind(client);  // the client restarts the wind on the new tree if it is playing
       finished.get(client)?.session.delete();
       finished.set(client, { session, state, until, bark: session.barkDressed() ? 'sim' : 'procedural' });
