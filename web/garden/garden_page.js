@@ -105,7 +105,7 @@ const loop = new ProgressiveLoop({
   renderer: () => (renderer ? frame : null),
   camera,
   onDrawn: (drawn) => {
-    setHooks({ drawnSerial: gardenSerial, drawnTrees: drawn.trees ?? 0, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls, shadow: drawn.shadow ?? '', drawnOverlay: renderer?.overlay ?? 'none' });
+    setHooks({ drawnSerial: gardenSerial, drawnTrees: drawn.trees ?? 0, drawnTriangles: drawn.triangles, drawnLines: drawn.lines ?? 0, drawCalls: drawn.drawCalls, shadow: drawn.shadow ?? '', drawnOverlay: renderer?.overlay ?? 'none' });
     yearDrawn();
     gardenWind.drawn();
     hybrid?.drawn();

@@ -149,6 +149,7 @@ export class GardenRenderer extends StudyLayer {
   setFull(mask) {
     const gl = this.gl, trees = this.trees;
     if (!trees) return;
+    this.progress.abort();  // a frame in parts must not draw from the buffer deleted here
     if (trees.full) gl.deleteBuffer(trees.full.buffer);
     trees.full = null;
     if (!mask) return;

@@ -129,7 +129,7 @@ export class GroveRenderer extends StudyLayer {
 
   // Every unique tree and band dropped (the garden's trees replaced).
   clearTrees() {
-    this.setBands([]);
+    this.setBands([]);  // (aborts a frame in parts: its steps read these trees)
     for (const tree of this.trees) this.#dropTree(tree);
     this.trees = [];
   }
@@ -206,6 +206,7 @@ export class GroveRenderer extends StudyLayer {
   // instances, turn about y).
   setBands(lists) {
     const gl = this.gl;
+    this.progress.abort();  // a frame in parts must not draw the bands deleted here
     for (const band of this.bands.values()) {
       band.buffers.forEach((b) => gl.deleteBuffer(b));
       if (band.vaoCards) gl.deleteVertexArray(band.vaoCards);
