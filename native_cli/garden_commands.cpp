@@ -31,8 +31,6 @@ using compose::GardenParam;
 // The one table of the garden commands' names for state fields (run/field_names.h).
 const run::FieldNames kGardenFlags = {{"years", "--years"}, {"plant_seed", "--seed"}};
 
-constexpr std::size_t kMaxGardenImageBytes = std::size_t{64} << 20;
-
 FlagRange GardenRowRange(GardenParam row) {
   return RowFlagRange(compose::GardenTable().row(static_cast<std::size_t>(row)));
 }
@@ -67,13 +65,17 @@ compose::GardenState ResolveGardenState(const GardenOptions& o) {
     Result<std::string> text = ReadFile(o.garden, "--garden", kMaxParamsFileBytes);
     if (!text.ok()) Fail(text.status());
     Check(compose::ApplyGardenStateJson(*text, &state).Within("--garden " + Echo(o.garden)));
-    if (state.ground == compose::GroundKind::kHeightmap && !state.heightmap_name.empty()) {
-      Result<std::string> png =
-          ReadFile(BesideGardenFile(o.garden, state.heightmap_name),
-                   "--garden " + Echo(o.garden) + ": ground.file", kMaxGardenImageBytes);
-      if (!png.ok()) Fail(png.status());
-      state.heightmap_png.assign(png->begin(), png->end());
-    }
+    // A heightmap ground and a mask, read beside the garden file (the reader's error names it).
+    Check(
+        compose::LoadGardenImages(
+            [&](const std::string&, const std::string& file) -> Result<std::vector<unsigned char>> {
+              Result<std::string> png =
+                  ReadFile(BesideGardenFile(o.garden, file), "", compose::kMaxGardenImageBytes);
+              if (!png.ok()) return png.status();
+              return std::vector<unsigned char>(png->begin(), png->end());
+            },
+            &state)
+            .Within("--garden " + Echo(o.garden)));
     // A mesh ground and mesh objects, read beside the garden file (the reader's error names it).
     Check(compose::LoadGardenMeshes(
               [&](const std::string& file) {
@@ -81,13 +83,6 @@ compose::GardenState ResolveGardenState(const GardenOptions& o) {
               },
               &state)
               .Within("--garden " + Echo(o.garden)));
-    if (!state.mask_name.empty()) {
-      Result<std::string> png =
-          ReadFile(BesideGardenFile(o.garden, state.mask_name),
-                   "--garden " + Echo(o.garden) + ": mask", kMaxGardenImageBytes);
-      if (!png.ok()) Fail(png.status());
-      state.mask_png.assign(png->begin(), png->end());
-    }
   }
   if (o.years >= 0) Check(AsFlag(state.params.Set(GardenParam::kYears, o.years), "--years"));
   if (o.seed >= 0) Check(AsFlag(state.params.Set(GardenParam::kPlantSeed, o.seed), "--seed"));

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "image/png.h"
 #include "random/pcg32.h"
 
 namespace niwa::compose {
@@ -76,13 +75,8 @@ Result<Planting> PlantGarden(const GardenState& state, const GardenScene& scene)
   if (r.target == 0) return out;
   image::Rgba8Image mask;
   if (!state.mask_png.empty()) {
-    Result<image::Rgba8Image> img =
-        image::DecodeRgba8Png(state.mask_png.data(), state.mask_png.size());
-    if (!img.ok())
-      return Status::Error(
-          "mask", "'" + state.mask_name + "': " + img.status().message() + "; must be a PNG");
-    if (img->width < 1 || img->height < 1)
-      return Status::Error("mask", "'" + state.mask_name + "' has no pixels");
+    Result<image::Rgba8Image> img = DecodeGardenMask(state.mask_name, state.mask_png);
+    if (!img.ok()) return img.status();
     mask = std::move(*img);
   }
   const double spacing = state.params.Get(GardenParam::kSpacing);

@@ -10,7 +10,6 @@
 #include "geom/mesh_metrics.h"
 #include "geom/primitives.h"
 #include "geom/ray_cast.h"
-#include "image/png.h"
 #include "math/det_math.h"
 #include "random/pcg32.h"
 #include "terrain/terrain_params.h"
@@ -247,15 +246,8 @@ Result<GardenGround> BuildGardenGround(const GardenState& state, const Budget& b
     g.source = "mesh " + state.heightmap_name + " (" + FormatCount(triangles) + " triangles)";
   } else {
     Result<image::Gray16Image> img =
-        image::DecodeGray16Png(state.heightmap_png.data(), state.heightmap_png.size());
-    if (!img.ok())
-      return Status::Error("ground.file", "'" + state.heightmap_name +
-                                              "': " + img.status().message() +
-                                              "; must be a grey PNG (16-bit or 8-bit)");
-    if (img->width < 2 || img->height < 2)
-      return Status::Error(
-          "ground.file", "'" + state.heightmap_name + "' is " + std::to_string(img->width) + " x " +
-                             std::to_string(img->height) + " pixels; must be at least 2 x 2");
+        DecodeGardenHeightmap(state.heightmap_name, state.heightmap_png);
+    if (!img.ok()) return img.status();
     std::vector<double> v(img->pixels.begin(), img->pixels.end());
     for (int j = 0; j < m; ++j)
       for (int i = 0; i < m; ++i)

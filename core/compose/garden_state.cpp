@@ -6,7 +6,9 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "base/budget.h"
 #include "base/echo.h"
+#include "image/png.h"
 #include "io/hash_codec.h"
 #include "ivy/ivy_params.h"
 #include "params/param_json.h"
@@ -310,6 +312,79 @@ Status LoadGardenMeshes(const GardenMeshReader& read, GardenState* state) {
   return Status::Ok();
 }
 
+namespace {
+
+// The checks both images share: the file's bytes, the PNG's chunks and its declared size.
+Result<image::PngInfo> GardenImageInfo(const std::string& field, const std::string& name,
+                                       const std::vector<unsigned char>& png, int min_side,
+                                       const std::string& must) {
+  const std::string quoted = "'" + Echo(name) + "'";
+  if (png.size() > kMaxGardenImageBytes)
+    return Status::Error(field, quoted + " is " + FormatCount(static_cast<double>(png.size())) +
+                                    " bytes; at most " +
+                                    FormatCount(static_cast<double>(kMaxGardenImageBytes)) + " (" +
+                                    FormatBytes(static_cast<double>(kMaxGardenImageBytes)) + ")");
+  Result<image::PngInfo> info = image::ReadPngInfo(png.data(), png.size());
+  if (!info.ok())
+    return Status::Error(field, quoted + ": " + info.status().message() + "; must be " + must);
+  if (info->width < min_side || info->height < min_side || info->width > kMaxGardenImageSide ||
+      info->height > kMaxGardenImageSide)
+    return Status::Error(field, quoted + " is " + std::to_string(info->width) + " x " +
+                                    std::to_string(info->height) +
+                                    " pixels; each side must be in " + std::to_string(min_side) +
+                                    ".." + std::to_string(kMaxGardenImageSide));
+  return info;
+}
+
+}  // namespace
+
+Result<image::Gray16Image> DecodeGardenHeightmap(const std::string& name,
+                                                 const std::vector<unsigned char>& png) {
+  const std::string must = "a grey PNG (16-bit or 8-bit)";
+  Result<image::PngInfo> info = GardenImageInfo("ground.file", name, png, 2, must);
+  if (!info.ok()) return info.status();
+  if (!info->is_grey())
+    return Status::Error(
+        "ground.file",
+        "'" + Echo(name) + "' is a " +
+            (info->colour_type == 2   ? std::string("colour (RGB)")
+             : info->colour_type == 3 ? std::string("palette")
+             : info->colour_type == 6 ? std::string("colour (RGBA)")
+                                      : "colour type " + std::to_string(info->colour_type)) +
+            " PNG; must be " + must);
+  Result<image::Gray16Image> img = image::DecodeGray16Png(png.data(), png.size());
+  if (!img.ok())
+    return Status::Error("ground.file",
+                         "'" + Echo(name) + "': " + img.status().message() + "; must be " + must);
+  return img;
+}
+
+Result<image::Rgba8Image> DecodeGardenMask(const std::string& name,
+                                           const std::vector<unsigned char>& png) {
+  const std::string must = "a PNG (grey or colour: its luminance the chance a tree is kept)";
+  Result<image::PngInfo> info = GardenImageInfo("mask", name, png, 1, must);
+  if (!info.ok()) return info.status();
+  Result<image::Rgba8Image> img = image::DecodeRgba8Png(png.data(), png.size());
+  if (!img.ok())
+    return Status::Error("mask",
+                         "'" + Echo(name) + "': " + img.status().message() + "; must be " + must);
+  return img;
+}
+
+Status LoadGardenImages(const GardenFileReader& read, GardenState* state) {
+  if (state->ground == GroundKind::kHeightmap && !state->heightmap_name.empty()) {
+    Result<std::vector<unsigned char>> png = read("ground.file", state->heightmap_name);
+    if (!png.ok()) return png.status().Within("ground.file");
+    state->heightmap_png = std::move(*png);
+  }
+  if (!state->mask_name.empty()) {
+    Result<std::vector<unsigned char>> png = read("mask", state->mask_name);
+    if (!png.ok()) return png.status().Within("mask");
+    state->mask_png = std::move(*png);
+  }
+  return Status::Ok();
+}
+
 moss::MossState GardenMossDefaults() {
   moss::MossState state;
   (void)moss::SetMossPreset("nomura2010-sky", &state);
@@ -518,6 +593,7 @@ std::string EncodeGardenHash(const GardenState& state, std::string_view prefix) 
     items.push_back(w.species + ":" + FormatNumber(w.weight));
   list("mix", items);
   list("ivy", state.ivy_on);
+  if (!state.mask_name.empty() || !state.mask_png.empty()) hash += "&" + pre + "mask=1";
   if (state.ivy_preset != base.ivy_preset)
     hash += "&" + pre + "ivy_preset=" + PercentEncode(state.ivy_preset);
   if (state.ground == GroundKind::kTerrain)
@@ -568,6 +644,8 @@ void ApplyGardenHash(std::string_view hash, std::string_view prefix, GardenState
       } else {
         state->ground = *kind;
       }
+    } else if (bare == "mask") {
+      notice("mask: a density mask is not carried by a link (its file); no mask");
     } else if (bare == "ivy" || bare == "ivy_preset") {
       ivy_given = ivy_given || bare == "ivy";
       GardenState next = *state;

@@ -1,8 +1,10 @@
 // The garden's state (issue 33 item 1): the garden table's values, the ground (flat, a terrain
 // grown from a seed contour, or a 16-bit heightmap), the objects placed on it (walls, rocks,
 // stone lanterns), the plants placed by hand, the planting rules' species mix and density mask,
-// read from a state JSON or a share-link hash and written back. Does not: read files (a front end
-// reads the heightmap and the mask and hands their bytes in), place or grow anything
+// read from a state JSON or a share-link hash and written back; the heightmap's and the mask's
+// bytes checked and decoded as the garden reads them (every front end the same lines). Does not:
+// read files (a front end reads the heightmap and the mask and hands their bytes in), place or
+// grow anything
 // (garden_plant.h, garden_run.h), or name a flag (errors name state fields: "plants[2].pos").
 #pragma once
 
@@ -16,6 +18,7 @@
 #include "base/status.h"
 #include "compose/garden_params.h"
 #include "geom/tri_mesh.h"
+#include "image/image.h"
 #include "moss/moss_state.h"
 #include "terrain/terrain_state.h"
 
@@ -98,6 +101,10 @@ constexpr std::size_t kMaxGardenPlants = 1000;  // hand-placed
 constexpr std::size_t kMaxGardenMix = 16;
 constexpr int kMaxPlantAge = 60;
 constexpr double kMaxGardenSeed = 4294967295.0;
+// A heightmap's or a mask's file: at most this many bytes, and this many pixels a side (the
+// ground's grid is at most 1025 samples a side; a 4096² 16-bit heightmap is 32 MB decoded).
+constexpr std::size_t kMaxGardenImageBytes = std::size_t{64} << 20;
+constexpr int kMaxGardenImageSide = 4096;
 
 // A thing ivy starts at: objects[index] or plants[index].
 struct GardenIvyTarget {
@@ -138,6 +145,28 @@ using GardenMeshReader = std::function<Result<geom::TriMesh>(const std::string& 
 // field that named the file ("ground.file", "objects[2].file").
 Status LoadGardenMeshes(const GardenMeshReader& read, GardenState* state);
 
+// A heightmap's PNG bytes (`name` its file) as the ground reads them: a grey PNG (16-bit, or 8-bit
+// and lower scaled to 0..65535) of 2 to kMaxGardenImageSide pixels a side, at most
+// kMaxGardenImageBytes. Errors name "ground.file" and the file ("ground.file: 'h.png' is an RGB
+// PNG ...").
+Result<image::Gray16Image> DecodeGardenHeightmap(const std::string& name,
+                                                 const std::vector<unsigned char>& png);
+// A density mask's PNG bytes as the planting rules read them: any PNG (grey or colour, its
+// luminance the chance a dart is kept) of 1 to kMaxGardenImageSide pixels a side, at most
+// kMaxGardenImageBytes. Errors name "mask" and the file.
+Result<image::Rgba8Image> DecodeGardenMask(const std::string& name,
+                                           const std::vector<unsigned char>& png);
+
+// A front end's reader of an image file by the field that names it ("ground.file": the heightmap,
+// "mask") and the name the state gives it: its bytes, or its own error line.
+using GardenFileReader = std::function<Result<std::vector<unsigned char>>(const std::string& field,
+                                                                          const std::string& file)>;
+
+// Fills the heightmap's bytes (a heightmap ground with a file name) and the mask's (a mask name)
+// through `read` (decoded, and so checked, when the garden is built: DecodeGardenHeightmap, Mask).
+// A read's error is returned under "ground.file" or "mask".
+Status LoadGardenImages(const GardenFileReader& read, GardenState* state);
+
 // Applies {params: {...}, ground: {kind: "flat" | "terrain" | "heightmap" | "mesh", terrain:
 // {...the terrain's state JSON...}, file: "h.png" or "hill.glb"}, objects: [{kind, pos: [x, z],
 // rot, scale}], plants:
@@ -153,9 +182,9 @@ std::string GardenStateJson(const GardenState& state);
 // The share-link hash: the table's rows that differ from the defaults, ground=flat|terrain|
 // heightmap, the terrain's keys under "terrain.", objects=kind:x:z:rot:scale,..., plants=
 // species:seed:age:x:z:rot,..., mix=species:weight,..., ivy=objects[0],..., ivy_preset=artist, the
-// moss's keys under "moss." when its state is not GardenMossDefaults' (a
-// heightmap, a ground mesh or a mask is not carried: a link of such a garden says so in `notices`
-// when read). Keys carry `prefix`.
+// moss's keys under "moss." when its state is not GardenMossDefaults', mask=1 when the state has a
+// mask (a heightmap, a ground mesh, a mesh object or a mask is not carried: a link of such a
+// garden says so in `notices` when read). Keys carry `prefix`.
 std::string EncodeGardenHash(const GardenState& state, std::string_view prefix = "");
 // Forgiving, as every study's hash: bad values clamped or dropped with a printable notice each.
 void ApplyGardenHash(std::string_view hash, std::string_view prefix, GardenState* state,

@@ -18,11 +18,17 @@
 // it sway while those east of it are still at rest; the pixels change, no frame blank)
 // and Still draws the grown shape again; a regrow stops the wind; Trees: hybrid draws the far copies
 // as cards and lines (the trees still show, fewer triangles, orbit and zoom keep them, Blow refused)
-// and full again the same picture. Screenshots: build/artifacts/garden-*.png.
+// and full again the same picture;
+// a 16-bit heightmap opened as the ground, a bad PNG dropped
+// on the view and one opened as the mask (the core's line beside each), a bad mix weight (its line
+// beside the row), the mix edited and a mask opened, the files named beside Copy link, and that
+// garden's .glb == native `niwa garden grow --garden F.json --out g.glb` with the files beside.
+// Screenshots: build/artifacts/garden-*.png.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import { ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, waitStudyRun, watchPage } from './harness.mjs';
+import { gray16PngBytes, pngBytes } from '../support/png_bytes.mjs';
 
 const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => k !== 'ms' && !k.startsWith('ms_')));
 const waitGarden = (page, serialAbove) => waitStudyRun(page, 'gardenSerial', serialAbove);
@@ -422,5 +428,117 @@ await runBrowserTest(async (server, browser) => {
   check('Cancel stops the regrow and the page regrows the last garden', cancelled.status === 'cancelled' && cancelled.cancels === '1' && data.status === 'ready' && data.hash === good,
     `${cancelled.status} cancels ${cancelled.cancels}, then ${data.status} ${data.hash === good ? 'the last hash' : data.hash}`);
 
+  // 8. Files (issue 33 items 1, 6, 8): a 16-bit heightmap (a ramp west to east with a wave north to
+  // south, every sample's low byte used) opened as the ground; a bad PNG dropped on the view and
+  // one opened as the mask, each the core's line beside its control, nothing regrown; a bad mix
+  // weight beside its row; then the mix edited (a weight, a species added, maple removed) and a
+  // mask (its west half black) opened: one grown garden with both; Copy link's note names the
+  // files; the .glb == native `niwa garden grow --garden F.json --out g.glb` with the files beside
+  // F.json. Last in the test: the garden is then 3 years old (step 6), so its grows are short, and
+  // nothing after it needs the terrain back.
+  const filesDir = path.join(ARTIFACTS, 'garden-files');
+  fs.mkdirSync(filesDir, { recursive: true });
+  const ramp = gray16PngBytes(65, 65, (x, y) => Math.round(50000 * (x / 64) + 7000 * (1 + Math.sin((y / 64) * 2 * Math.PI)) + (x * 37 + y * 11) % 200));
+  const maskRgba = new Uint8Array(16 * 16 * 4).fill(255);
+  for (let y = 0; y < 16; ++y) for (let x = 0; x < 8; ++x) maskRgba.fill(0, 4 * (16 * y + x), 4 * (16 * y + x) + 3);
+  const east = pngBytes(16, 16, maskRgba);
+  fs.writeFileSync(path.join(filesDir, 'ramp.png'), ramp);
+  fs.writeFileSync(path.join(filesDir, 'east.png'), east);
+  // A grown garden whose dataset passes `pred`.
+  const grownWhere = async (above, pred) => {
+    for (let t0 = Date.now(); Date.now() - t0 < TIMEOUT; await page.waitForTimeout(250)) {
+      const d = await page.evaluate(() => ({ ...document.documentElement.dataset }));
+      if (d.status === 'ready' && Number(d.gardenSerial) > above && d.drawnSerial === d.gardenSerial && pred(d)) return d;
+    }
+    return null;
+  };
+  const beforeRamp = await looks(page);
+  serial = Number(data.gardenSerial);
+  await page.setInputFiles('#heightmap-file', { name: 'ramp.png', mimeType: 'image/png', buffer: ramp });
+  data = (await grownWhere(serial, (d) => d.groundKind === 'heightmap:ramp.png' && /years=3/.test(d.hash)))
+    ?? await page.evaluate(() => ({ ...document.documentElement.dataset }));
+  const rampSource = data.status === 'ready' ? JSON.parse(data.stats).ground.source : data.error;
+  await saveCanvasPng(page, 'garden-heightmap.png');
+  const onRamp = await looks(page);
+  const groundText = await page.evaluate(() => document.getElementById('ground-kind').selectedOptions[0]?.textContent || '');
+  check('Heightmap: a 16-bit ramp.png opened is decoded in the core (16-bit) and is the ground, drawn', rampSource === 'heightmap ramp.png (65 x 65)'
+    && data.groundKind === 'heightmap:ramp.png' && data.heightmapLoaded === 'ramp.png:65x65:16' && /ramp\.png \(65 x 65, 16-bit\)/.test(groundText)
+    && JSON.stringify(onRamp) !== JSON.stringify(beforeRamp), `${rampSource}; ${data.groundKind} ${data.heightmapLoaded} '${groundText}'; ${JSON.stringify(onRamp)}`);
+  // Bad files: an RGBA PNG dropped on the view (as a heightmap) and a text file named .png opened
+  // as the mask: the core's line beside each control; nothing regrows, the garden stays.
+  serial = Number(data.gardenSerial);
+  const rgba = [...pngBytes(2, 2, new Uint8Array(16).fill(200))];
+  await page.evaluate((bytes) => {
+    const transfer = new DataTransfer();
+    transfer.items.add(new File([new Uint8Array(bytes)], 'colour.png', { type: 'image/png' }));
+    const stage = document.getElementById('stage');
+    stage.dispatchEvent(new DragEvent('dragenter', { dataTransfer: transfer, bubbles: true }));
+    stage.dispatchEvent(new DragEvent('drop', { dataTransfer: transfer, bubbles: true }));
+  }, rgba);
+  await page.waitForFunction(() => document.documentElement.dataset.heightmapError, null, { timeout: TIMEOUT });
+  await page.setInputFiles('#mask-file', { name: 'notes.png', mimeType: 'image/png', buffer: Buffer.from('not a PNG at all') });
+  await page.waitForFunction(() => document.documentElement.dataset.maskError, null, { timeout: TIMEOUT });
+  const lines = await page.evaluate(() => ['ground-error', 'mask-error'].map((id) => { const e = document.getElementById(id); return e.hidden ? '' : e.textContent; }));
+  data = await page.evaluate(() => ({ ...document.documentElement.dataset }));
+  check('a colour PNG dropped on the view: the core\'s line beside Ground; the garden stays', lines[0] === 'ground.file: \'colour.png\' is a colour (RGBA) PNG; must be a grey PNG (16-bit or 8-bit)'
+    && Number(data.gardenSerial) === serial && data.status === 'ready' && data.groundKind === 'heightmap:ramp.png', `'${lines[0]}' serial ${serial} -> ${data.gardenSerial} ${data.status}`);
+  check('a text file opened as the mask: the core\'s line beside the mask; the garden stays', /^mask: 'notes\.png': not a PNG file/.test(lines[1])
+    && Number(data.gardenSerial) === serial && data.status === 'ready', `'${lines[1]}' ${data.status}`);
+  await page.screenshot({ path: path.join(ARTIFACTS, 'garden-bad-files.png') });
+  // The species mix: a bad weight is the core's line beside its row.
+  const mixBefore = await page.evaluate(() => [...document.querySelectorAll('#mix li')].map((li) => `${li.querySelector('select').value}:${li.querySelector('input').value}`));
+  await page.fill('#mix input[data-mix-weight="0"]', '-1');
+  await page.waitForFunction(() => document.documentElement.dataset.status === 'error', null, { timeout: TIMEOUT });
+  const weightLine = await page.evaluate(() => { const e = document.getElementById('mix-error-0'); return e.hidden ? '' : e.textContent; });
+  check('mix: a weight of -1 is the core\'s line beside its row', mixBefore[0] === 'keyaki:2' && weightLine === 'mix.keyaki: -1 must be a weight in (0, 1000]',
+    `rows ${mixBefore.join(' ')}; '${weightLine}'`);
+  // The mix edited (keyaki 3, a species added at weight 2, maple removed) and the mask opened.
+  await page.fill('#mix input[data-mix-weight="0"]', '3');
+  await page.click('#mix-add');
+  const added = await page.evaluate(() => document.querySelector('#mix li:last-child select').value);
+  await page.fill('#mix li:last-child input', '2');
+  const mapleRow = await page.evaluate(() => [...document.querySelectorAll('#mix li')].findIndex((li) => li.querySelector('select').value === 'maple'));
+  await page.click(`#mix button[data-mix-remove="${mapleRow}"]`);
+  await page.setInputFiles('#mask-file', { name: 'east.png', mimeType: 'image/png', buffer: east });
+  const wantMix = `keyaki:3,sakura:1,${added}:2`;
+  const edited = await grownWhere(serial, (d) => {
+    const st = JSON.parse(d.stateJson || '{}');
+    return st.mask === 'east.png' && Object.entries(st.mix || {}).map(([k, v]) => `${k}:${v}`).join(',') === wantMix;
+  });
+  const editedStats = edited ? JSON.parse(edited.stats) : null;
+  check('the mix edited and the mask opened: one grown garden with both (the mask refuses darts; the added species planted, no maple)', editedStats !== null
+    && editedStats.planting.refused.mask > 0 && editedStats.trees.by_species[added] > 0 && !editedStats.trees.by_species.maple
+    && edited.hash.includes(`mix=${wantMix}`) && edited.mask === 'east.png',
+    edited ? `${JSON.stringify(editedStats.planting)} ${JSON.stringify(editedStats.trees.by_species)} ${edited.hash.slice(0, 160)}` : `never grown: ${(await page.evaluate(() => document.documentElement.dataset.stateJson || '')).slice(0, 300)}`);
+  await saveCanvasPng(page, 'garden-heightmap-mask.png');
+  await page.locator('#rules-files').screenshot({ path: path.join(ARTIFACTS, 'garden-rules-files.png') });
+  data = edited ?? data;
+  const linkNote = await page.evaluate(() => { const e = document.getElementById('link-files'); return e.hidden ? '' : e.textContent; });
+  check('beside Copy link: a link cannot carry the heightmap and the mask', /cannot carry files/.test(linkNote) && linkNote.includes('ramp.png') && linkNote.includes('east.png'), linkNote);
+  // The link reads back flat and without the mask, with a notice (the CLI says the same).
+  let cliLine = '';
+  try {
+    execFileSync(NATIVE, ['garden', 'grow', '--url', data.hash, '--stats'], { encoding: 'utf8', stdio: 'pipe' });
+  } catch (e) {
+    cliLine = String(e.stderr || '').trim();
+  }
+  check('the CLI reads that link back flat, with the heightmap\'s notice', /--url: ground: a heightmap is not carried by a link; the ground is flat/.test(cliLine), cliLine);
+  // The .glb: the bytes of native `niwa garden grow --garden F.json --out g.glb`, F.json the page's
+  // state with ramp.png and east.png beside it.
+  const stateFile = path.join(filesDir, 'garden.json');
+  fs.writeFileSync(stateFile, data.stateJson);
+  const [dl] = await Promise.all([page.waitForEvent('download', { timeout: TIMEOUT }), page.click('#download-glb')]);
+  const filesGlb = path.join(filesDir, 'page.glb');
+  await dl.saveAs(filesGlb);
+  let filesNative = Buffer.alloc(0);
+  try {
+    execFileSync(NATIVE, ['garden', 'grow', '--garden', stateFile, '--out', path.join(filesDir, 'native.glb')]);
+    filesNative = fs.readFileSync(path.join(filesDir, 'native.glb'));
+  } catch (e) {
+    check('native garden grow --garden F.json runs', false, e.message.split('\n')[0]);
+  }
+  const filesPage = fs.readFileSync(filesGlb);
+  check('the heightmap and mask garden\'s .glb == `niwa garden grow --garden F.json --out g.glb`', filesPage.length > 1000 && filesPage.equals(filesNative),
+    `page ${filesPage.length} bytes, native ${filesNative.length}`);
   check('no console errors or warnings', problems.length === 0, problems.slice(0, 5).join(' | '));
 });

@@ -5,7 +5,8 @@
 // 16,384 characters); the page
 // must show the notice (one line per refused row, capped at five and "... N more"), settle (ready,
 // or an error line beside a field), keep its worker (a valid hash then grows again) and log no
-// uncaught error. Hostile files are dropped on the pages that take files (#mesh-file, #contour-file):
+// uncaught error. Hostile files are dropped on the pages that take files (#mesh-file, #contour-file,
+// the garden's #heightmap-file and #mask-file):
 // each must end in a notice or a line beside the field, and a page that still works. Like tests/cli/hostile.test.mjs it lists no
 // row or value by hand: a new study page is covered by its table.
 import { execFileSync } from 'node:child_process';
@@ -14,6 +15,7 @@ import { join } from 'node:path';
 import { NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, watchPage } from './harness.mjs';
 import { glbBytes } from '../support/glb_bytes.mjs';
 import { dracoGlb } from '../support/draco_encode.mjs';
+import { gray16PngBytes, pngBytes } from '../support/png_bytes.mjs';
 
 const declared = JSON.parse(execFileSync(NATIVE, ['flags'], { encoding: 'utf8' }));
 const pageOf = (study) => (study === 'tree' ? 'index.html' : `${study}.html`);
@@ -109,6 +111,17 @@ const FILES = {
     // decodes (web/mesh/mesh_import.js), with the native reader's line (issue 34; before, Draco's own refusal).
     'a Draco header over the cap': { name: 'capped.glb', expect: /the Draco data declares 49 vertices and 268435456 triangles; the limits are 12000000 and 4000000/,
       buffer: dracoGlb(Buffer.concat([Buffer.from('DRACO'), Buffer.from([2, 2, 1, 1, 0, 0, 0, 49, 0x80, 0x80, 0x80, 0x80, 0x01]), Buffer.alloc(35)]), 3) },
+  },
+  // The garden's PNGs (a heightmap ground, a density mask): decoded in the core, each refusal its line.
+  '#heightmap-file': {
+    'text named .png': { name: 'text.png', buffer: Buffer.from('not a PNG'), expect: /ground\.file: 'text\.png': not a PNG file/ },
+    'a colour PNG': { name: 'colour.png', buffer: pngBytes(2, 2, new Uint8Array(16).fill(90)), expect: /ground\.file: 'colour\.png' is a colour \(RGBA\) PNG; must be a grey PNG/ },
+    'a PNG declaring 5000 x 5000': { name: 'huge.png', buffer: pngBytes(1, 1, new Uint8Array(4), { declared: { width: 5000, height: 5000 } }), expect: /ground\.file: 'huge\.png' is 5000 x 5000 pixels; each side must be in 2\.\.4096/ },
+    'a truncated 16-bit PNG': { name: 'cut.png', buffer: gray16PngBytes(8, 8, (x) => x * 8000).subarray(0, 40), expect: /ground\.file: 'cut\.png': truncated PNG/ },
+  },
+  '#mask-file': {
+    'text named .png': { name: 'text.png', buffer: Buffer.from('not a PNG'), expect: /mask: 'text\.png': not a PNG file/ },
+    'a PNG declaring 5000 x 5000': { name: 'huge.png', buffer: pngBytes(1, 1, new Uint8Array(4), { declared: { width: 5000, height: 5000 } }), expect: /mask: 'huge\.png' is 5000 x 5000 pixels; each side must be in 1\.\.4096/ },
   },
   '#contour-file': {
     'a numeric type': { name: 'n.json', buffer: Buffer.from('{"type": 7, "coordinates": [[0,0],[1,0],[1,1]]}') },

@@ -272,6 +272,75 @@ TEST(Garden, AMaskKeepsTreesOffItsBlackHalf) {
   EXPECT_EQ(bad.status().field(), "mask");
 }
 
+// The heightmap's and the mask's bytes, checked as every front end reads them (the CLI's files, the
+// page's opened ones): 16-bit samples kept, an 8-bit grey scaled, a colour heightmap, a non-PNG,
+// a 1-pixel heightmap and a side over the cap each one line naming the field and the file; the
+// files read through a front end's reader; a link of a masked garden says the mask is not carried.
+TEST(Garden, HeightmapAndMaskFilesAreCheckedAndReadByName) {
+  image::Gray16Image ramp = image::MakeGray16(3, 2);
+  ramp.pixels = {0, 1, 65535, 2, 3, 40000};
+  const std::vector<unsigned char> png16 = *image::EncodeGray16Png(ramp);
+  Result<image::Gray16Image> h = DecodeGardenHeightmap("ramp.png", png16);
+  ASSERT_TRUE(h.ok()) << h.status().Line();
+  EXPECT_EQ(h->pixels, ramp.pixels) << "16-bit samples as stored";
+  image::Rgba8Image rgb;
+  rgb.width = 2, rgb.height = 2;
+  rgb.pixels.assign(16, 200);
+  const std::vector<unsigned char> colour = *image::EncodeRgba8Png(rgb);
+  const Result<image::Gray16Image> c = DecodeGardenHeightmap("rgb.png", colour);
+  ASSERT_FALSE(c.ok());
+  EXPECT_EQ(c.status().Line(),
+            "ground.file: 'rgb.png' is a colour (RGBA) PNG; must be a grey PNG (16-bit or 8-bit)");
+  EXPECT_TRUE(DecodeGardenMask("rgb.png", colour).ok()) << "a mask may be in colour";
+  const std::vector<unsigned char> text = {'n', 'o', 't', ' ', 'a', ' ', 'P', 'N', 'G'};
+  EXPECT_EQ(DecodeGardenHeightmap("x.png", text).status().Line(),
+            "ground.file: 'x.png': not a PNG file (no PNG signature); must be a grey PNG (16-bit "
+            "or 8-bit)");
+  EXPECT_EQ(DecodeGardenMask("x.png", text).status().field(), "mask");
+  const std::vector<unsigned char> dot = *image::EncodeGray16Png(image::MakeGray16(1, 1));
+  EXPECT_EQ(DecodeGardenHeightmap("dot.png", dot).status().Line(),
+            "ground.file: 'dot.png' is 1 x 1 pixels; each side must be in 2..4096");
+  EXPECT_TRUE(DecodeGardenMask("dot.png", dot).ok());
+  const std::vector<unsigned char> wide =
+      *image::EncodeGray16Png(image::MakeGray16(kMaxGardenImageSide + 1, 2));
+  EXPECT_EQ(DecodeGardenMask("wide.png", wide).status().Line(),
+            "mask: 'wide.png' is 4097 x 2 pixels; each side must be in 1..4096");
+  // Read by name through the front end's reader, the field named.
+  GardenState s = SmallGarden();
+  ASSERT_TRUE(ApplyGardenStateJson(
+                  R"({"ground": {"kind": "heightmap", "file": "ramp.png"}, "mask": "m.png"})", &s)
+                  .ok());
+  std::vector<std::string> asked;
+  const Status read = LoadGardenImages(
+      [&](const std::string& field, const std::string& file) -> Result<std::vector<unsigned char>> {
+        asked.push_back(field + "=" + file);
+        return png16;
+      },
+      &s);
+  ASSERT_TRUE(read.ok()) << read.Line();
+  EXPECT_EQ(asked, (std::vector<std::string>{"ground.file=ramp.png", "mask=m.png"}));
+  EXPECT_EQ(s.heightmap_png, png16);
+  EXPECT_EQ(s.mask_png, png16);
+  const Status missing = LoadGardenImages(
+      [](const std::string&, const std::string&) -> Result<std::vector<unsigned char>> {
+        return Status::Error("", "gone");
+      },
+      &s);
+  EXPECT_EQ(missing.Line(), "ground.file: gone");
+  // A link cannot carry the files: ground=heightmap reads back flat and mask=1 as no mask, each
+  // with a notice.
+  const std::string hash = EncodeGardenHash(s);
+  EXPECT_NE(hash.find("mask=1"), std::string::npos) << hash;
+  GardenState back = DefaultGardenState();
+  std::vector<std::string> notices;
+  ApplyGardenHash(hash, "", &back, &notices);
+  ASSERT_EQ(notices.size(), 2u);
+  EXPECT_EQ(notices[0], "ground: a heightmap is not carried by a link; the ground is flat");
+  EXPECT_EQ(notices[1], "mask: a density mask is not carried by a link (its file); no mask");
+  EXPECT_TRUE(back.mask_name.empty());
+  EXPECT_EQ(back.ground, GroundKind::kFlat);
+}
+
 TEST(Garden, AHandPlacedTreeInsideAnObjectIsRefusedNamingIt) {
   GardenState s = SmallGarden();
   s.plants = {{"keyaki", 1, 0, 0.5, -12, 0}};  // in the default wall at z = −12

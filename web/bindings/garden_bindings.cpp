@@ -37,7 +37,12 @@
 // Calls: loadMesh(bytes, name) -> ""/error record naming "mesh" (a dropped .glb/.gltf/.obj, Draco
 // decoded by the page, kept by name for the state's mesh objects (kind "mesh", file name) and a
 // mesh ground (ground.kind "mesh", file name)),
-// meshTriangles(); setProgress(fn) (fn(stage, done, total) after every year), start(stateJson) ->
+// meshTriangles(); loadImage(role, bytes, name) -> ""/error record naming "ground.file" (role
+// "heightmap") or "mask" (role "mask"): an opened PNG decoded as the garden reads it
+// (DecodeGardenHeightmap, DecodeGardenMask: 16-bit samples kept) and kept by its name for the
+// state's heightmap ground (ground.kind "heightmap", file name) or mask (mask: name), at most 4 of
+// each; imageJson() ({role, name, width, height, bit_depth, colour_type} of the last loaded);
+// setProgress(fn) (fn(stage, done, total) after every year), start(stateJson) ->
 // ""/error record (the state JSON of GardenStateJson over the default garden, LayOutDefaults,
 // checked and started, recording every year), then step() -> "more" | "grown" | error (one garden
 // year a call, the worker taking its messages between them; "grown": the run advanced and its
@@ -57,8 +62,8 @@
 // keep), blowWindSpeed() (m/s at the garden's centre now), blowBlocks() (pose blocks of every copy;
 // 0: not blowing); a new grow stops it. Free functions: gardenTableJson(), gardenDecodeJson(hash)
 // ({state, notices}: the default garden with the link's keys). Does not: keep more than one run,
-// keep more than one year's buffers, sway a recorded year's trees, or read files (a heightmap, mesh
-// or mask ground is not offered by the page yet).
+// keep more than one year's buffers, sway a recorded year's trees, or read files (the page hands
+// their bytes in).
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
@@ -81,6 +86,7 @@
 #include "compose/studies.h"
 #include "error_record.h"
 #include "geom/mesh_metrics.h"
+#include "image/png.h"
 #include "io/mesh_reader.h"
 #include "ivy/ivy_budget.h"
 #include "ivy/ivy_run.h"
@@ -159,6 +165,20 @@ class GardenLab {
         },
         &state);
     if (!s.ok()) return ErrorText(s);
+    // A heightmap ground and a mask: the images this lab read (loadImage), by file name.
+    s = compose::LoadGardenImages(
+        [this](const std::string& field,
+               const std::string& file) -> Result<std::vector<unsigned char>> {
+          const auto& kept = images_[field == "mask" ? 1 : 0];
+          const auto it = kept.find(file);
+          if (it == kept.end())
+            return Status::Error("", "'" + file +
+                                         "' is not loaded in this page; open the file again (a "
+                                         "link does not carry it)");
+          return it->second;
+        },
+        &state);
+    if (!s.ok()) return ErrorText(s);
     compose::LayOutDefaults(&state);
     s = compose::CheckGardenState(state);
     if (!s.ok()) return ErrorText(s);
@@ -220,6 +240,41 @@ class GardenLab {
     return "";
   }
   double meshTriangles() const { return static_cast<double>(last_mesh_triangles_); }
+
+  // An opened PNG (a heightmap, role "heightmap", or a density mask, role "mask"), decoded as the
+  // garden decodes it (16-bit samples kept; the browser's canvas is not used): "" with its bytes
+  // kept by name for the states that name it, or the error record naming "ground.file" or "mask".
+  // At most 4 of each role are kept (the oldest goes).
+  std::string loadImage(const std::string& role, const std::string& bytes,
+                        const std::string& name) {
+    const bool mask = role == "mask";
+    if (!mask && role != "heightmap")
+      return ErrorText(Status::Error("image", "role must be heightmap or mask"));
+    const std::vector<unsigned char> png(bytes.begin(), bytes.end());
+    const Status decoded = mask ? compose::DecodeGardenMask(name, png).status()
+                                : compose::DecodeGardenHeightmap(name, png).status();
+    if (!decoded.ok()) return ErrorText(decoded);
+    Result<image::PngInfo> info = image::ReadPngInfo(png.data(), png.size());
+    auto& kept = images_[mask ? 1 : 0];
+    auto& order = image_order_[mask ? 1 : 0];
+    if (kept.size() >= 4 && !kept.count(name)) {
+      kept.erase(order.front());
+      order.erase(order.begin());
+    }
+    order.erase(std::remove(order.begin(), order.end(), name), order.end());
+    order.push_back(name);
+    kept[name] = png;
+    ordered_json j;
+    j["role"] = role;
+    j["name"] = name;
+    j["width"] = info.ok() ? info->width : 0;
+    j["height"] = info.ok() ? info->height : 0;
+    j["bit_depth"] = info.ok() ? info->bit_depth : 0;
+    j["colour_type"] = info.ok() ? info->colour_type : 0;
+    last_image_ = JsonText(j);
+    return "";
+  }
+  std::string imageJson() const { return last_image_; }
 
   int grows() const { return grows_; }
   // grows() when the run kept now was grown (a refused grow keeps the run before it).
@@ -561,6 +616,10 @@ class GardenLab {
   std::map<std::string, geom::TriMesh> meshes_;  // loadMesh's, by file name
   std::vector<std::string> mesh_order_;          // their names, oldest first
   std::size_t last_mesh_triangles_ = 0;
+  // loadImage's bytes by file name: [0] heightmaps, [1] masks; their names, oldest first.
+  std::map<std::string, std::vector<unsigned char>> images_[2];
+  std::vector<std::string> image_order_[2];
+  std::string last_image_ = "{}";
   std::vector<float> ground_positions_, ground_normals_, ground_heights_, ground_moss_S_;
   std::vector<uint32_t> ground_indices_;
   std::vector<float> object_positions_, object_normals_, object_kind_, object_birth_;
@@ -596,6 +655,8 @@ EMSCRIPTEN_BINDINGS(niwa_garden) {
       .function("start", &niwa::GardenLab::start)
       .function("loadMesh", &niwa::GardenLab::loadMesh)
       .function("meshTriangles", &niwa::GardenLab::meshTriangles)
+      .function("loadImage", &niwa::GardenLab::loadImage)
+      .function("imageJson", &niwa::GardenLab::imageJson)
       .function("step", &niwa::GardenLab::step)
       .function("statsJson", &niwa::GardenLab::statsJson)
       .function("hash", &niwa::GardenLab::hash)

@@ -177,6 +177,10 @@ export class GardenLab {
   loadMesh(bytes: Uint8Array, name: string): ErrorText;
   /** The triangles of the last mesh loadMesh read. */
   meshTriangles(): number;
+  /** An opened PNG, role "heightmap" (a grey PNG, 16-bit kept) or "mask", decoded in the core and kept by `name` for the state's heightmap ground or mask; errors name "ground.file" or "mask". */
+  loadImage(role: string, bytes: Uint8Array, name: string): ErrorText;
+  /** {role, name, width, height, bit_depth, colour_type} of the last image loadImage kept. */
+  imageJson(): string;
   /** The garden state JSON (GardenStateJson) over the default garden, checked and started (every year recorded); nothing grown yet. */
   start(stateJson: string): ErrorText;
   /** One garden year of the started garden: "more", "grown" (the run kept, its buffers filled) or an error record. */

@@ -14,6 +14,13 @@
 // page's hash), the .glb download (the worker's run's Export("glb"): the bytes of `niwa garden
 // grow --url HASH --out g.glb`), the plan .svg, the stats line (trees by species, the ivy, the
 // moss), and the ground's overlay (the moss's light, slope, altitude bands) with its legend.
+// Files: a grey PNG opened (Ground: Heightmap…, or dropped on the view) is the ground, and a PNG
+// opened as the planting rules' density mask (with a Clear); their bytes go to the worker once,
+// decoded in the core (16-bit samples kept: not the browser's canvas), kept there by name, and the
+// garden regrows; a bad file is the core's line beside its control. The rules' species mix is a
+// list of rows (species, weight, Remove; Add species) checked by the core (a bad weight: its line
+// beside the row). A link cannot carry the files: the Share section says so while one is in use
+// (the link reads back flat and without the mask, with a notice, as `niwa garden grow --url` does).
 // The year scrubber and Play replay the garden's years WITHOUT regrowing: every grow records each
 // year's picture as the clock runs (core GardenRun's record_years), a picked year's trees are meshed
 // from that record in the worker ('year' -> 'gardenYear') and swapped in with the moss's light of
@@ -26,13 +33,13 @@
 // (over its memory share: the scrubber says so), or several workers growing at once.
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { Frame } from '../gl/frame.js';
-import { FileDrop } from '../shell/file_drop.js';
+import { FileDrop, extensionOf } from '../shell/file_drop.js';
 import { sendMeshFile } from '../mesh/mesh_file.js';
 import { OrbitCamera } from '../gl/orbit_camera.js';
 import { ProgressiveLoop } from '../gl/progressive_loop.js';
 import { DEFAULT_SUNS } from '../gl/sun.js';
 import { ParamPanel } from '../shell/param_panel.js';
-import { StudyController } from '../shell/study_controller.js';
+import { StudyController, numberOr } from '../shell/study_controller.js';
 import { Notices, copyLink, mountStudyNav, showEmbedDialog } from '../shell/study_page.js';
 import { setHooks } from '../shell/test_hooks.js';
 import { GardenRenderer } from './garden_renderer.js';
@@ -45,6 +52,8 @@ const ui = {
   species: $('species'), plants: $('plants'), objects: $('objects'), meshFile: $('mesh-file'), meshError: $('mesh-error'), groundKind: $('ground-kind'), groundError: $('ground-error'), copyLink: $('copy-link'), shareStatus: $('share-status'),
   resetView: $('reset-view'), clickHelp: $('click-help'), overlay: $('overlay'), overlayHelp: $('overlay-help'),
   year: $('year'), yearText: $('year-text'), play: $('play'),
+  heightmapFile: $('heightmap-file'), maskFile: $('mask-file'), maskName: $('mask-name'), maskClear: $('mask-clear'), maskError: $('mask-error'),
+  mix: $('mix'), mixAdd: $('mix-add'), mixError: $('mix-error'), linkFiles: $('link-files'), rulesFiles: $('rules-files'),
 };
 mountStudyNav($('studies'), 'garden');
 
@@ -56,8 +65,11 @@ const OPENING_YEARS = 8;
 const OPENING_HASH = `#years=${OPENING_YEARS}`;
 const HAND_REACH = 1.0;  // metres: a click this near a hand-placed tree's foot removes it
 
+// The error lines of the controls outside the panel, by the core's field: the heightmap's, the
+// mask's, the mix's, and one per mix row ('mix.<species>', filled as the rows are drawn).
+const errorFields = { 'ground.file': 'ground-error', mask: 'mask-error', mix: 'mix-error' };
 const controller = new StudyController({
-  study: 'garden', notices, ui, fields: {}, panel: () => panel, state: () => currentState(),
+  study: 'garden', notices, ui, fields: errorFields, panel: () => panel, state: () => currentState(),
   onCancel: () => 'cancelled: back to the last finished garden',
   onRestart: () => {
     restarting = true;
@@ -76,6 +88,14 @@ const controller = new StudyController({
     if (when === 'before' && meshRequest && msg.id === meshRequest) {
       meshRequest = 0;
       showMeshError(msg.message);
+      ui.progress.textContent = '';
+      return true;
+    }
+    // An opened PNG the core refused: its line beside its control; the garden shown stays.
+    if (when === 'before' && imageRequest && msg.id === imageRequest.id) {
+      const { role } = imageRequest;
+      imageRequest = null;
+      showImageError(role, msg.message);
       ui.progress.textContent = '';
       return true;
     }
@@ -159,26 +179,46 @@ function applyState(next) {
   panel.setValues(next.params || {});
   showPlants();
   showGround();
+  showMix();
+  showMask();
+  showLinkFiles();
 }
 
-// The Ground select: terrain, flat, or a dropped mesh (mesh:<name>); the terrain's own state is
-// kept while another ground is shown, so going back to terrain regrows the same hill.
+// The Ground select: terrain, flat, a dropped mesh (mesh:<name>) or an opened heightmap
+// (heightmap:<name>); "Heightmap…" opens the file picker. The terrain's own state is kept while
+// another ground is shown, so going back to terrain regrows the same hill.
 let lastTerrain = null;
+const groundValue = (g) => (g.kind === 'mesh' || g.kind === 'heightmap' ? `${g.kind}:${g.file}` : g.kind);
+function addGroundOption(value, text) {
+  if ([...ui.groundKind.options].some((o) => o.value === value)) return;
+  // Before "Heightmap…", which stays last.
+  ui.groundKind.insertBefore(new Option(text, value), ui.groundKind.querySelector('option[value="open-heightmap"]'));
+}
 function showGround() {
   const g = state?.ground || { kind: 'terrain' };
   if (g.kind === 'terrain') lastTerrain = g;
-  const value = g.kind === 'mesh' ? `mesh:${g.file}` : g.kind;
-  if (![...ui.groundKind.options].some((o) => o.value === value)) ui.groundKind.append(new Option(g.kind === 'mesh' ? `mesh ${g.file}` : g.kind, value));
+  const value = groundValue(g);
+  addGroundOption(value, g.kind === 'mesh' ? `mesh ${g.file}` : g.kind === 'heightmap' ? `heightmap ${g.file}` : g.kind);
   ui.groundKind.value = value;
   setHooks({ groundKind: value });
 }
-ui.groundKind.addEventListener('change', () => {
-  const v = ui.groundKind.value;
+function setGround(v) {
   const ground = v.startsWith('mesh:') ? { kind: 'mesh', file: v.slice('mesh:'.length) }
-    : v === 'terrain' ? (lastTerrain || { kind: 'terrain' }) : { kind: v };
+    : v.startsWith('heightmap:') ? { kind: 'heightmap', file: v.slice('heightmap:'.length) }
+      : v === 'terrain' ? (lastTerrain || { kind: 'terrain' }) : { kind: v };
   state = { ...currentState(), ground };
   frameNext = true;
+  showLinkFiles();
   sendUpdate(true);
+}
+ui.groundKind.addEventListener('change', () => {
+  const v = ui.groundKind.value;
+  if (v === 'open-heightmap') {
+    ui.groundKind.value = groundValue(state?.ground || { kind: 'terrain' });
+    ui.heightmapFile.click();
+    return;
+  }
+  setGround(v);
 });
 
 function showPlantError(line) {
@@ -327,10 +367,179 @@ worker.on('meshLoaded', (msg) => {
 });
 
 new FileDrop({
-  target: $('stage'), input: ui.meshFile, accept: ['.glb', '.gltf', '.obj'],
+  target: ui.meshFile, input: ui.meshFile, accept: ['.glb', '.gltf', '.obj'],
   onFiles: (files) => loadMeshFile(files[0]),
   onRefuse: (line) => showMeshError(`mesh: ${line}`),
 });
+// Dropped on the view: a mesh (to place, or as the ground) or a grey PNG (the ground's heightmap).
+new FileDrop({
+  target: $('stage'), accept: ['.glb', '.gltf', '.obj', '.png'], what: 'mesh or PNG heightmap',
+  onFiles: (files) => (extensionOf(files[0].name) === '.png' ? loadImageFile('heightmap', files[0]) : loadMeshFile(files[0])),
+  onRefuse: (line) => showMeshError(`mesh: ${line}`),
+});
+
+// ---------------------------------------------------------------- opened images and the mix
+// A PNG opened for the ground (role 'heightmap') or the rules' density mask (role 'mask'): its
+// bytes go to the worker once (transferred), where the core decodes it (16-bit samples kept) and
+// keeps it by name; the state then names it and the garden regrows. A refusal (not a PNG, a colour
+// heightmap, a side over the cap) is the core's line beside the control.
+let imageRequest = null;  // {id, role} of the 'image' request in flight
+const imageError = (role) => (role === 'mask' ? ui.maskError : ui.groundError);
+function showImageError(role, line) {
+  const el = imageError(role);
+  el.textContent = line;
+  el.hidden = !line;
+  setHooks({ [role === 'mask' ? 'maskError' : 'heightmapError']: line });
+}
+
+async function loadImageFile(role, file) {
+  showImageError(role, '');
+  ui.progress.textContent = `reading ${file.name}`;
+  const buffer = await file.arrayBuffer();
+  const request = worker.request('image', { role, name: file.name, bytes: buffer }, { group: 'image', done: ['imageLoaded'], transfer: [buffer] });
+  imageRequest = { id: request.id, role };
+}
+
+worker.on('imageLoaded', (msg) => {
+  if (!imageRequest || msg.id !== imageRequest.id) return;
+  imageRequest = null;
+  ui.progress.textContent = '';
+  const im = msg.image;
+  const about = `${im.name} (${im.width} x ${im.height}, ${im.bit_depth}-bit)`;
+  setHooks({ [im.role === 'mask' ? 'maskLoaded' : 'heightmapLoaded']: `${im.name}:${im.width}x${im.height}:${im.bit_depth}` });
+  if (im.role === 'mask') {
+    maskAbout = about;
+    state = { ...currentState(), mask: im.name };
+    showMask();
+    showLinkFiles();
+    sendUpdate(true);
+  } else {
+    addGroundOption(`heightmap:${im.name}`, `heightmap ${about}`);
+    setGround(`heightmap:${im.name}`);
+    showGround();
+  }
+});
+
+const pngDrop = (role, input) => new FileDrop({
+  target: input, input, accept: ['.png'], what: 'PNG',
+  onFiles: (files) => loadImageFile(role, files[0]),
+  onRefuse: (line) => showImageError(role, `${role === 'mask' ? 'mask' : 'ground.file'}: ${line}`),
+});
+pngDrop('heightmap', ui.heightmapFile);
+pngDrop('mask', ui.maskFile);
+
+// The mask in use (its name, and its size when opened in this page) and Clear.
+let maskAbout = '';
+function showMask() {
+  const name = state?.mask || '';
+  if (!name) maskAbout = '';
+  ui.maskName.textContent = name ? `Mask: ${maskAbout.startsWith(`${name} (`) ? maskAbout : name}` : 'No mask: every dart has its chance.';
+  ui.maskClear.hidden = !name;
+  setHooks({ mask: name });
+}
+ui.maskClear.addEventListener('click', () => {
+  const next = { ...currentState() };
+  delete next.mask;
+  state = next;
+  showMask();
+  showLinkFiles();
+  showImageError('mask', '');
+  sendUpdate(true);
+});
+
+// The species mix: a row per species (its preset, its weight, Remove) and Add species; an edit
+// regrows after a quiet moment (a burst of edits is one grow). The core checks the weights: a bad
+// one is its line ('mix.<species>: ...') beside the row.
+let speciesNames = [];
+function mixRows() {
+  return [...ui.mix.querySelectorAll('li')].map((li) => {
+    const weight = li.querySelector('input');
+    return [li.querySelector('select').value, numberOr(weight)];
+  });
+}
+function mixOf(rows) {
+  const mix = {};
+  for (const [species, weight] of rows) mix[species] = weight;
+  return mix;
+}
+// An edit of the rows: the state's mix from them, regrown after a quiet moment; `redraw` when a
+// row's species changed or a row went (the other rows' species lists change), not while a weight
+// is typed (its input keeps the focus).
+function mixEdited(redraw) {
+  state = { ...currentState(), mix: mixOf(mixRows()) };
+  if (redraw) showMix(true);
+  scheduleUpdate();
+}
+// Redraws the rows from state.mix (unless they show it already: a grow's reply does not take the
+// focus away from a weight being typed); `force` after an edit of the rows themselves.
+function showMix(force = false) {
+  const entries = Object.entries(state?.mix || {});
+  if (!force && JSON.stringify(mixRows()) === JSON.stringify(entries)) return;
+  for (const key of Object.keys(errorFields)) if (key.startsWith('mix.')) delete errorFields[key];
+  const used = new Set(entries.map(([name]) => name));
+  const rows = entries.map(([species, weight], k) => {
+    const li = document.createElement('li');
+    const pick = document.createElement('select');
+    pick.setAttribute('aria-label', `Species of mix row ${k + 1}`);
+    pick.dataset.mix = String(k);
+    for (const name of [species, ...speciesNames.filter((n) => n !== species && !used.has(n))]) pick.append(new Option(name, name));
+    pick.value = species;
+    pick.addEventListener('change', () => mixEdited(true));
+    const w = document.createElement('input');
+    w.type = 'number';
+    w.min = '0';
+    w.max = '1000';
+    w.step = 'any';
+    w.inputMode = 'decimal';
+    w.value = String(weight);
+    w.setAttribute('aria-label', `Weight of ${species}`);
+    w.dataset.mixWeight = String(k);
+    w.addEventListener('input', () => mixEdited(false));
+    const remove = document.createElement('button');
+    remove.type = 'button';
+    remove.textContent = 'Remove';
+    remove.dataset.mixRemove = String(k);
+    remove.addEventListener('click', () => {
+      li.remove();
+      mixEdited(true);
+    });
+    const line = document.createElement('p');
+    line.className = 'field-error';
+    line.id = `mix-error-${k}`;
+    line.setAttribute('role', 'alert');
+    line.hidden = true;
+    errorFields[`mix.${species}`] = line.id;
+    li.append(pick, ' weight ', w, ' ', remove, line);
+    return li;
+  });
+  ui.mix.replaceChildren(...rows);
+  ui.mixAdd.disabled = speciesNames.every((n) => used.has(n));
+  setHooks({ mix: entries.map(([n, w]) => `${n}:${w}`).join(',') });
+}
+ui.mixAdd.addEventListener('click', () => {
+  const rows = mixRows();
+  const free = speciesNames.find((n) => !rows.some(([name]) => name === n));
+  if (!free) return;
+  state = { ...currentState(), mix: mixOf([...rows, [free, 1]]) };
+  showMix(true);
+  scheduleUpdate();
+});
+
+// The files a link cannot carry (the heightmap or mesh ground, the mask, mesh objects): named
+// beside Copy link while in use. The link reads back flat, without the mask or mesh objects, with a
+// notice (the core's ApplyGardenHash: the page and `niwa garden grow --url` the same).
+function showLinkFiles() {
+  const files = [];
+  const g = state?.ground;
+  if (g && (g.kind === 'heightmap' || g.kind === 'mesh')) files.push(`the ${g.kind} ground ${g.file}`);
+  if (state?.mask) files.push(`the mask ${state.mask}`);
+  const meshes = (state?.objects || []).filter((o) => o.kind === 'mesh').map((o) => o.file);
+  if (meshes.length) files.push(`the mesh object${meshes.length > 1 ? 's' : ''} ${[...new Set(meshes)].join(', ')}`);
+  const text = files.length ? `A link cannot carry files: ${files.join(', ')} ${files.length > 1 ? 'are' : 'is'} not in it (it opens ${g && g.kind !== 'terrain' && g.kind !== 'flat' ? 'on a flat ground' : 'this garden'}${state?.mask ? ' without the mask' : ''}${meshes.length ? ' without the mesh objects' : ''}, with a notice); open the files there again.` : '';
+  ui.linkFiles.textContent = text;
+  ui.linkFiles.hidden = !text;
+  setHooks({ linkFiles: text });
+}
 
 // ---------------------------------------------------------------- worker replies
 worker.on('ready', (msg) => {
@@ -348,6 +557,9 @@ worker.on('ready', (msg) => {
   ui.species.append(trees, objects);
   if (msg.species.includes('sakura')) ui.species.value = 'sakura';
   panel = new ParamPanel(ui.params, msg.paramTable, (spec, stage) => scheduleUpdate(stage));
+  speciesNames = msg.species;
+  // The species mix and the mask join the panel's planting rules.
+  $('param-density')?.closest('details')?.append(ui.rulesFiles);
   notices.set('hash', msg.decoded.notices);
   applyState(msg.decoded.state);
   sendUpdate(false);
@@ -401,7 +613,7 @@ worker.on('garden', (msg) => {
   ui.stats.textContent = `${s.size} m garden · ${s.years} years · ${s.trees.count} trees (${species}; ${s.trees.distinct} distinct, ${s.planting.by_hand} by hand) · ${s.objects} objects${ivy}${moss} · ${(msg.growMs / 1000).toFixed(1)} s`;
   setHooks({
     status: 'ready', error: '', gardenSerial, trees: s.trees.count, byHand: s.planting.by_hand, distinct: s.trees.distinct, ivyVertices,
-    stats: JSON.stringify(s), statsText: msg.statsText, hash: msg.hash, growMs: msg.growMs.toFixed(1),
+    stats: JSON.stringify(s), statsText: msg.statsText, hash: msg.hash, growMs: msg.growMs.toFixed(1), stateJson: JSON.stringify(msg.state),
   });
   requestFrame();
 });
@@ -557,7 +769,10 @@ ui.canvas.addEventListener('pointerup', (e) => {
 });
 
 ui.resetView.addEventListener('click', frameGarden);
-ui.copyLink.addEventListener('click', () => copyLink(ui.shareStatus));
+ui.copyLink.addEventListener('click', async () => {
+  await copyLink(ui.shareStatus);
+  if (ui.linkFiles.textContent) ui.shareStatus.textContent += ' It does not carry the files (below).';
+});
 // The embed: <niwa-garden> (public/niwa-garden.js) or an iframe of public/embed.html?study=garden,
 // both of the page's hash.
 $('embed').addEventListener('click', () => {

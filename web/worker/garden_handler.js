@@ -23,6 +23,9 @@
 // `niwa garden grow --url HASH --out g.glb`), transferred, or an error naming "download".
 // Blow: 'wind' ({play, wind?}) and 'poseDone' run the wind over the last garden's trees
 // (web/worker/garden_blow.js); an update or a 'year' stops it.
+// An 'image' ({role: heightmap | mask, name, bytes}) is an opened PNG for the heightmap ground or
+// the density mask, decoded in the core and kept by name ('imageLoaded' or an error naming
+// "ground.file" or "mask"); a 'mesh' a dropped mesh ('meshLoaded' or an error naming "mesh").
 // Hybrid trees (thesis ch. 4, the grove's; web/garden/garden_hybrid.js): 'hybrid' ({year, grows})
 // builds each distinct tree's hybrid scene of that year and answers {type: 'gardenAtlas', year,
 // run, atlases: [per group {atlasSize, bark, leaves, flowers}]} (the card atlas's geometry, as the
@@ -140,6 +143,22 @@ export function createHandler(Module, ctx) {
     post({ type: 'meshLoaded', id: msg.id, client, mesh: { name, triangles: entry.lab.meshTriangles() } });
   }
 
+  // An opened PNG ('image': {role: 'heightmap' | 'mask', name, bytes}), decoded in the core as the
+  // garden reads it (16-bit samples kept) and kept by the client's lab by its name for the state's
+  // heightmap ground or mask; answered 'imageLoaded' ({image: {role, name, width, height,
+  // bit_depth, colour_type}}) or an error naming "ground.file" or "mask".
+  function image(msg, client) {
+    const entry = labOf(client);
+    const role = msg.role === 'mask' ? 'mask' : 'heightmap';
+    const name = String(msg.name || `${role}.png`);
+    const error = errorOf(entry.lab.loadImage(role, new Uint8Array(msg.bytes || new ArrayBuffer(0)), name));
+    if (error) {
+      post(errorReply(error, msg.id, client));
+      return;
+    }
+    post({ type: 'imageLoaded', id: msg.id, client, image: JSON.parse(entry.lab.imageJson()) });
+  }
+
   // Hybrid trees: the atlases of every distinct tree of garden year `year`.
   function hybrid(msg, client) {
     const entry = labOf(client);
@@ -199,6 +218,7 @@ export function createHandler(Module, ctx) {
       update,
       year,
       mesh,
+      image,
       export: exportGarden,
       wind: (msg, client) => (msg.play ? blow.start(msg, client) : blow.stop(client)),
       poseDone: (msg, client) => blow.poseDone(client),

@@ -226,6 +226,11 @@
  *   and each copy's first pose block) or an error with control: 'wind'; then {type: 'pose', time,
  *   wind, stepMs, speed, poses} one at a time, the next after the page's 'poseDone' (poses into
  *   the buffer handed back as 'recycle' {wind: {poses}}). play: false, an update or a 'year' stops it.
+ * @typedef {Envelope & {type: 'image', role: 'heightmap'|'mask', name: string, bytes: ArrayBuffer}}
+ *   GardenImageMessage -> {type: 'imageLoaded', image: {role, name, width, height, bit_depth,
+ *   colour_type}} or an error naming "ground.file" (heightmap) or "mask": the PNG decoded in the
+ *   core and kept by name for the state's heightmap ground ({kind: 'heightmap', file: name}) or
+ *   mask (mask: name); at most 4 of each a client
  * export: format 'glb' | 'svg' | 'json' | 'heightmap' (the run's Export bytes).
  */
 // (No list of message types here: each study's handler says which it answers, and the router
