@@ -155,8 +155,8 @@ __attribute__((noinline)) void SnapBonds(uint8_t* bonded, int i, int bits, int* 
   }
 }
 
-// Node i's spring forces in layer r: its six springs in ascending index added to 0 (springs.h
-// NodeForce).
+// Node i's spring forces in layer r: its six springs in ascending index added to 0 (springs.cpp
+// NodeForce2).
 NIWA_LANES_INLINE void NodeForceOf(const NodePass& p, int r, int i, float* fx, float* fz) {
   float x = 0.0f, z = 0.0f;
   const std::size_t e0 = 6 * static_cast<std::size_t>(i);
@@ -176,7 +176,7 @@ NIWA_LANES_INLINE void NodeForceOf(const NodePass& p, int r, int i, float* fx, f
 
 // Nodes i..i+W−1 (W lanes of V, masks I): lane by lane what NodeOne does, selects in place of its
 // branches. Each layer's springs are summed in ascending index from 0: as lanes where the nodes'
-// springs lie in runs (`run`: node_run4 or node_run8 at i; springs.h NodeForce4), else node by
+// springs lie in runs (`run`: node_run4 or node_run8 at i; springs.cpp NodeBatch2), else node by
 // node.
 template <class V, class I>
 NIWA_LANES_INLINE void NodeBatch(const NodePass& p, const NodeLanes<V>& c, int i, bool run,
@@ -321,9 +321,10 @@ int NodeLoop4(const NodePass& pass, int begin, int end) {
   return snapped;
 }
 
-#if NIWA_BARK_AVX2
-// The same with eight a batch where eight nodes' springs lie in runs (else two of four), in AVX2.
-__attribute__((target("avx2"))) int NodeLoop8(const NodePass& pass, int begin, int end) {
+#if NIWA_BARK_EIGHT
+// The same with eight a batch where eight nodes' springs lie in runs (else two of four), in AVX2
+// natively.
+NIWA_BARK_EIGHT_TARGET int NodeLoop8(const NodePass& pass, int begin, int end) {
   const NodePass p = pass;
   const NodeLanes<simd::Float4> c4(p);
   const NodeLanes<simd::Float8> c8(p);
@@ -499,7 +500,7 @@ bool StepFourLayer(const Lattice& L, FourLayer* f, StepLanes* lanes) {
   p.inv_m2 = inv_m2_all;
   const bool eight = BatchLanes() == 8;
   auto node_pass = [&](int begin, int end, int* snapped) {
-#if NIWA_BARK_AVX2
+#if NIWA_BARK_EIGHT
     if (eight) {
       *snapped += NodeLoop8(p, begin, end);
       return;

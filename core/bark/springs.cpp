@@ -28,11 +28,7 @@ std::atomic<int> g_batch_lanes{0};  // 0: not yet decided
 int BatchLanes() {
   int lanes = g_batch_lanes.load(std::memory_order_relaxed);
   if (lanes == 0) {
-#if NIWA_BARK_AVX2
-    lanes = __builtin_cpu_supports("avx2") ? 8 : 4;
-#else
-    lanes = 4;
-#endif
+    lanes = EightLanesAvailable() ? 8 : 4;
     g_batch_lanes.store(lanes, std::memory_order_relaxed);
   }
   return lanes;
@@ -47,6 +43,8 @@ int SetBatchLanes(int lanes) {
 bool EightLanesAvailable() {
 #if NIWA_BARK_AVX2
   return __builtin_cpu_supports("avx2");
+#elif NIWA_BARK_EIGHT
+  return true;
 #else
   return false;
 #endif
@@ -237,11 +235,10 @@ void SpringLoop4(const SpringPass& pass, int begin, int end, int broke[2]) {
   }
 }
 
-#if NIWA_BARK_AVX2
+#if NIWA_BARK_EIGHT
 // The same with eight nodes a batch (a sub-family whose eight b do not run on: two batches of
-// four), in AVX2.
-__attribute__((target("avx2"))) void SpringLoop8(const SpringPass& pass, int begin, int end,
-                                                 int broke[2]) {
+// four), in AVX2 natively.
+NIWA_BARK_EIGHT_TARGET void SpringLoop8(const SpringPass& pass, int begin, int end, int broke[2]) {
   const SpringPass p = pass;
   const SpringLanes<simd::Float4> v4(p);
   const SpringLanes<simd::Float8> v8(p);
@@ -261,6 +258,123 @@ __attribute__((target("avx2"))) void SpringLoop8(const SpringPass& pass, int beg
     }
   }
   SpringLoop4(pass, n, end, broke);  // the rest: four nodes a batch, then one by one
+}
+#endif
+
+// The 2-layer model's node pass (Step): raw pointers and constants, copied into the loops' locals.
+struct NodePass2 {
+  const int32_t* inc_slot;
+  const uint8_t *inc_a, *run4, *run8;
+  const float *gx, *gz;
+  float *ux, *uz, *wx, *wz;
+  float dt, inv_m, ks, cs;
+};
+
+// Node i's spring forces: its six springs in ascending index added to 0.
+NIWA_LANES_INLINE void NodeForce2(const NodePass2& p, int i, float* fx, float* fz) {
+  float x = 0.0f, z = 0.0f;
+  const std::size_t e0 = 6 * static_cast<std::size_t>(i);
+  for (std::size_t e = e0; e < e0 + 6; ++e) {
+    const int q = p.inc_slot[e];
+    if (p.inc_a[e]) {
+      x += p.gx[q];
+      z += p.gz[q];
+    } else {
+      x -= p.gx[q];
+      z -= p.gz[q];
+    }
+  }
+  *fx = x;
+  *fz = z;
+}
+
+// Nodes i..i+W−1 (W lanes of V): the springs' sums as lanes where `run` (node_run4 or node_run8
+// at i), else node by node into an array (not lane by lane into the vector: WASM
+// would spill it for each lane); then the shear spring and dashpot and symplectic Euler lane by
+// lane, the operations of the one-by-one tail.
+template <class V>
+NIWA_LANES_INLINE void NodeBatch2(const NodePass2& p, const V& dt, const V& inv_m, const V& ks,
+                                  const V& cs, int i, bool run) {
+  constexpr int W = sizeof(V) / sizeof(float);
+  V fx, fz;
+  if (run) {
+    fx = SplatLanes<V>(0.0f);
+    fz = fx;
+    const std::size_t e0 = 6 * static_cast<std::size_t>(i);
+    for (std::size_t e = e0; e < e0 + 6; ++e) {
+      const V vx = LoadLanes<V>(p.gx + p.inc_slot[e]);
+      const V vz = LoadLanes<V>(p.gz + p.inc_slot[e]);
+      if (p.inc_a[e]) {
+        fx += vx;
+        fz += vz;
+      } else {
+        fx -= vx;
+        fz -= vz;
+      }
+    }
+  } else {
+    float sx[W], sz[W];
+    for (int q = 0; q < W; ++q) NodeForce2(p, i + q, &sx[q], &sz[q]);
+    fx = LoadLanes<V>(sx);
+    fz = LoadLanes<V>(sz);
+  }
+  V x = LoadLanes<V>(p.ux + i), z = LoadLanes<V>(p.uz + i);
+  V vx = LoadLanes<V>(p.wx + i), vz = LoadLanes<V>(p.wz + i);
+  const V ax = (fx - ks * x - cs * vx) * inv_m;
+  const V az = (fz - ks * z - cs * vz) * inv_m;
+  vx += dt * ax;
+  vz += dt * az;
+  x += dt * vx;
+  z += dt * vz;
+  StoreLanes(p.ux + i, x);
+  StoreLanes(p.uz + i, z);
+  StoreLanes(p.wx + i, vx);
+  StoreLanes(p.wz + i, vz);
+}
+
+// Node i alone, with NodeBatch2's operations.
+NIWA_LANES_INLINE void NodeOne2(const NodePass2& p, int i) {
+  float fx, fz;
+  NodeForce2(p, i, &fx, &fz);
+  const float ax = (fx - p.ks * p.ux[i] - p.cs * p.wx[i]) * p.inv_m;
+  const float az = (fz - p.ks * p.uz[i] - p.cs * p.wz[i]) * p.inv_m;
+  p.wx[i] += p.dt * ax;
+  p.wz[i] += p.dt * az;
+  p.ux[i] += p.dt * p.wx[i];
+  p.uz[i] += p.dt * p.wz[i];
+}
+
+// Nodes [begin, n): four a batch, then one by one.
+void NodeLoop2Four(const NodePass2& pass, int n, int begin = 0) {
+  const NodePass2 p = pass;
+  using simd::Float4;
+  const Float4 dt = simd::Splat4(p.dt), inv_m = simd::Splat4(p.inv_m), ks = simd::Splat4(p.ks),
+               cs = simd::Splat4(p.cs);
+  int i = begin;
+  for (; i + 4 <= n; i += 4) NodeBatch2<Float4>(p, dt, inv_m, ks, cs, i, p.run4[i]);
+  for (; i < n; ++i) NodeOne2(p, i);
+}
+
+#if NIWA_BARK_EIGHT
+// Eight a batch where eight nodes' springs lie in runs (else two of four), then NodeLoop2Four.
+NIWA_BARK_EIGHT_TARGET void NodeLoop2Eight(const NodePass2& pass, int n) {
+  const NodePass2 p = pass;
+  using simd::Float4;
+  using simd::Float8;
+  const Float4 dt4 = simd::Splat4(p.dt), inv_m4 = simd::Splat4(p.inv_m), ks4 = simd::Splat4(p.ks),
+               cs4 = simd::Splat4(p.cs);
+  const Float8 dt8 = simd::Splat8(p.dt), inv_m8 = simd::Splat8(p.inv_m), ks8 = simd::Splat8(p.ks),
+               cs8 = simd::Splat8(p.cs);
+  int i = 0;
+  for (; i + 8 <= n; i += 8) {
+    if (p.run8[i]) {
+      NodeBatch2<Float8>(p, dt8, inv_m8, ks8, cs8, i, true);
+    } else {
+      NodeBatch2<Float4>(p, dt4, inv_m4, ks4, cs4, i, p.run4[i]);
+      NodeBatch2<Float4>(p, dt4, inv_m4, ks4, cs4, i + 4, p.run4[i + 4]);
+    }
+  }
+  NodeLoop2Four(p, n, i);
 }
 #endif
 
@@ -325,57 +439,31 @@ int Step(const Lattice& L, const Mechanics& mech, const Growth& g, Surface* s) {
   const float rest[2] = {l0, l0};
   const int broke = SpringSlotForces(L, k, c, rest, g, s);
   // Nodes: the springs' forces, the shear spring and dashpot to the anchor, then symplectic Euler,
-  // four nodes a batch (their sums as lanes where their springs lie in runs, else node by node;
-  // the rest of the arithmetic lane by lane as one by one), a tail of fewer than four one by one.
-  const float dt = static_cast<float>(mech.dt);
-  const float inv_m = static_cast<float>(1.0 / mech.mass);
-  const float ks = static_cast<float>(mech.k_s), cs = static_cast<float>(mech.c_s);
-  float* ux = s->ux.data();
-  float* uz = s->uz.data();
-  float* wx = s->wx.data();
-  float* wz = s->wz.data();
-  const int n = L.nodes();
-  using simd::Float4;
-  const Float4 vdt = simd::Splat4(dt), vinv = simd::Splat4(inv_m), vks = simd::Splat4(ks),
-               vcs = simd::Splat4(cs);
-  int i = 0;
-  for (; i + 4 <= n; i += 4) {
-    Float4 fx, fz, x, z, vx, vz;
-    if (L.node_run4[i]) {
-      NodeForce4(L, *s, i, &fx, &fz);
-    } else {
-      // At the seams each node's springs come in its own order: the sums one by one (into an
-      // array, not lane by lane into the vector: WASM would spill it for each lane).
-      float sx[4], sz[4];
-      for (int q = 0; q < 4; ++q) NodeForce(L, *s, i + q, &sx[q], &sz[q]);
-      fx = simd::LoadFloat4(sx);
-      fz = simd::LoadFloat4(sz);
-    }
-    std::memcpy(&x, ux + i, sizeof x);
-    std::memcpy(&z, uz + i, sizeof z);
-    std::memcpy(&vx, wx + i, sizeof vx);
-    std::memcpy(&vz, wz + i, sizeof vz);
-    const Float4 ax = (fx - vks * x - vcs * vx) * vinv;
-    const Float4 az = (fz - vks * z - vcs * vz) * vinv;
-    vx += vdt * ax;
-    vz += vdt * az;
-    x += vdt * vx;
-    z += vdt * vz;
-    std::memcpy(ux + i, &x, sizeof x);
-    std::memcpy(uz + i, &z, sizeof z);
-    std::memcpy(wx + i, &vx, sizeof vx);
-    std::memcpy(wz + i, &vz, sizeof vz);
+  // four or eight nodes a batch (BatchLanes; their sums as lanes where their springs lie in runs,
+  // else node by node; the rest of the arithmetic lane by lane as one by one), a tail of fewer
+  // than four one by one.
+  NodePass2 p;
+  p.inc_slot = L.inc_slot.data();
+  p.inc_a = L.inc_a.data();
+  p.run4 = L.node_run4.data();
+  p.run8 = L.node_run8.data();
+  p.gx = s->gx.data();
+  p.gz = s->gz.data();
+  p.ux = s->ux.data();
+  p.uz = s->uz.data();
+  p.wx = s->wx.data();
+  p.wz = s->wz.data();
+  p.dt = static_cast<float>(mech.dt);
+  p.inv_m = static_cast<float>(1.0 / mech.mass);
+  p.ks = static_cast<float>(mech.k_s);
+  p.cs = static_cast<float>(mech.c_s);
+#if NIWA_BARK_EIGHT
+  if (BatchLanes() == 8) {
+    NodeLoop2Eight(p, L.nodes());
+    return broke;
   }
-  for (; i < n; ++i) {
-    float fx, fz;
-    NodeForce(L, *s, i, &fx, &fz);
-    const float ax = (fx - ks * ux[i] - cs * wx[i]) * inv_m;
-    const float az = (fz - ks * uz[i] - cs * wz[i]) * inv_m;
-    wx[i] += dt * ax;
-    wz[i] += dt * az;
-    ux[i] += dt * wx[i];
-    uz[i] += dt * wz[i];
-  }
+#endif
+  NodeLoop2Four(p, L.nodes());
   return broke;
 }
 
@@ -399,7 +487,7 @@ void SpringSlotForcesRange(const Lattice& L, const float k[2], const float c[2],
   // Break checks and forces of the three sub-families, four or eight nodes a batch (BatchLanes),
   // the arithmetic lane by lane; a tail of fewer than four one by one with the same operations,
   // so the bits do not depend on the batching. The forces go to the slots (gx, gz); a node pass
-  // sums them (NodeForce, NodeForce4). Each spring's arithmetic is its own, so a pass split into
+  // sums them (NodeBatch2, NodeOne2). Each spring's arithmetic is its own, so a pass split into
   // ranges gives the bits of the whole.
   SpringPass p;
   const int n = L.nodes();
@@ -427,7 +515,7 @@ void SpringSlotForcesRange(const Lattice& L, const float k[2], const float c[2],
     p.c[t] = c[family];
     p.l0[t] = rest[family];
   }
-#if NIWA_BARK_AVX2
+#if NIWA_BARK_EIGHT
   if (BatchLanes() == 8) {
     SpringLoop8(p, begin, end, broke);
     return;

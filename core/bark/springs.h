@@ -8,17 +8,16 @@
 // then forces) and one over the nodes. Deterministic: the project's PCG32 for the thresholds,
 // det:: maths, no FMA contraction. The spring pass takes four springs a batch (math/simd4.h lanes:
 // indexed loads, IEEE arithmetic lane by lane, the same bits as the scalar tail), or eight in AVX2
-// where the CPU has it (BatchLanes, math/simd8.h), writing each spring's force to its slot. Does not: measure regions (regions.h), draw (bark_maps.h),
+// where the CPU has it and in WASM (BatchLanes, math/simd8.h), writing each spring's force to its
+// slot; the node pass the same. Does not: measure regions (regions.h), draw (bark_maps.h),
 // schedule cycles or check budgets (bark_run.h), or model radial motion, curl or peeling.
 #pragma once
 
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 #include "bark/bark_params.h"
 #include "bark/lattice.h"
-#include "math/simd4.h"
 #include "random/pcg32.h"
 
 // Whether this build also compiles the spring and node passes for AVX2 (x86-64 GCC; chosen at run
@@ -28,12 +27,25 @@
 #else
 #define NIWA_BARK_AVX2 0
 #endif
+// Whether this build has the eight-lane passes at all: the AVX2 ones above, or WASM simd128's,
+// where an eight-lane operation is two v128 ones (more independent work a loop turn for V8's code;
+// always there, no run-time choice). NIWA_BARK_EIGHT_TARGET marks the eight-lane loops' functions.
+#if NIWA_BARK_AVX2
+#define NIWA_BARK_EIGHT 1
+#define NIWA_BARK_EIGHT_TARGET __attribute__((target("avx2")))
+#elif defined(__wasm_simd128__)
+#define NIWA_BARK_EIGHT 1
+#define NIWA_BARK_EIGHT_TARGET
+#else
+#define NIWA_BARK_EIGHT 0
+#define NIWA_BARK_EIGHT_TARGET
+#endif
 
 namespace niwa::bark {
 
-// Springs and nodes a batch of the passes: 8 where the build has the AVX2 path and the CPU AVX2
-// (math/simd8.h: the same IEEE operations lane by lane, so the bits of 4), else 4 (SSE2, WASM
-// simd128). SetBatchLanes(4 or 8) sets it for the process (8 only where EightLanesAvailable; for a
+// Springs and nodes a batch of the passes: 8 where the build has the AVX2 path and the CPU AVX2,
+// and in WASM simd128 (math/simd8.h: the same IEEE operations lane by lane, so the bits of 4), else
+// 4 (SSE2). SetBatchLanes(4 or 8) sets it for the process (8 only where EightLanesAvailable; for a
 // test's comparison or a measurement) and returns the previous value.
 int BatchLanes();
 int SetBatchLanes(int lanes);
@@ -114,9 +126,10 @@ int SpringForces(const Lattice& lattice, const float k[2], const float c[2], con
                  const Growth& growth, Surface* surface);
 
 // SpringForces in two halves, for a node pass that sums its own forces: the springs' forces into
-// gx, gz by slot (not the accumulators), then a node's sums. NodeForce4 sums nodes n..n+3 as lanes
-// (lattice.node_run4[n] must hold); both add the springs in ascending index to 0, as the
-// accumulators did, so the bits are theirs.
+// gx, gz by slot (not the accumulators); the node pass (Step's, four_layer.cpp's) then sums a
+// node's six springs in ascending index from 0 (lattice.h inc_slot, inc_a), as lanes where the
+// nodes' springs lie in runs (node_run4, node_run8), as the accumulators did, so the bits are
+// theirs.
 int SpringSlotForces(const Lattice& lattice, const float k[2], const float c[2],
                      const float rest[2], const Growth& growth, Surface* surface);
 // SpringSlotForces of the springs of nodes [begin, end) alone (begin a multiple of four; gx, gz
@@ -125,42 +138,6 @@ int SpringSlotForces(const Lattice& lattice, const float k[2], const float c[2],
 void SpringSlotForcesRange(const Lattice& lattice, const float k[2], const float c[2],
                            const float rest[2], const Growth& growth, Surface* surface, int begin,
                            int end, int broke[2]);
-inline void NodeForce(const Lattice& L, const Surface& s, int n, float* fx, float* fz) {
-  float x = 0.0f, z = 0.0f;
-  const std::size_t e0 = 6 * static_cast<std::size_t>(n);
-  for (std::size_t e = e0; e < e0 + 6; ++e) {
-    const int q = L.inc_slot[e];
-    if (L.inc_a[e]) {
-      x += s.gx[q];
-      z += s.gz[q];
-    } else {
-      x -= s.gx[q];
-      z -= s.gz[q];
-    }
-  }
-  *fx = x;
-  *fz = z;
-}
-inline void NodeForce4(const Lattice& L, const Surface& s, int n, simd::Float4* fx,
-                       simd::Float4* fz) {
-  simd::Float4 x = simd::Splat4(0.0f), z = x;
-  const std::size_t e0 = 6 * static_cast<std::size_t>(n);
-  for (std::size_t e = e0; e < e0 + 6; ++e) {
-    simd::Float4 vx, vz;
-    std::memcpy(&vx, s.gx.data() + L.inc_slot[e], sizeof vx);
-    std::memcpy(&vz, s.gz.data() + L.inc_slot[e], sizeof vz);
-    if (L.inc_a[e]) {
-      x += vx;
-      z += vz;
-    } else {
-      x -= vx;
-      z -= vz;
-    }
-  }
-  *fx = x;
-  *fz = z;
-}
-
 // The strain l/L_o − 1 of spring s at the growth (a test's and a report's view).
 double SpringStrain(const Lattice& lattice, const Surface& surface, const Growth& growth, int s);
 

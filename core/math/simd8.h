@@ -5,7 +5,8 @@
 // test through the two 128-bit halves) forced inline, so they take the caller's AVX2 encoding and
 // no 256-bit value crosses a call (whose ABI differs with and without AVX; the helpers take
 // references, and -Wpsabi is quiet for their returns). Without AVX the
-// compiler splits the types into halves; WASM has no 256-bit registers and keeps four lanes.
+// compiler splits the types into halves; so does WASM simd128 (two v128 an operation), where the
+// bark passes take eight lanes too (bark/springs.h NIWA_BARK_EIGHT).
 // Not here: the dispatch (the study's, e.g. bark/springs.h BatchLanes).
 #pragma once
 

@@ -185,7 +185,8 @@ Result<run::StageMask> TreeRun::Update(const TreeState& next) {
   // textures): a changed look re-does the mesh.
   const TreeLook was = LookFromParams(state_.params), look = LookFromParams(next.params);
   if (was.leaf_shape != look.leaf_shape || was.season != look.season || was.autumn != look.autumn ||
-      was.flower_colour != look.flower_colour || was.flower_form != look.flower_form) {
+      was.flower_colour != look.flower_colour || was.flower_form != look.flower_form ||
+      was.leaf_spray != look.leaf_spray) {
     earliest = std::min(earliest, static_cast<int>(Stage::kMesh));
   }
   run::StageMask mask = 0;

@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "math/det_math.h"
+#include "tree/tree_textures.h"
 
 namespace niwa {
 namespace {
@@ -36,7 +37,8 @@ glm::dvec3 OcclusionVertex(const std::vector<float>& positions, std::size_t v) {
 }  // namespace
 
 CrownOcclusionField::CrownOcclusionField(const std::vector<const MeshBuffers*>& occluders,
-                                         const std::vector<const MeshBuffers*>& covered) {
+                                         const std::vector<const MeshBuffers*>& covered,
+                                         const std::vector<double>& weights) {
   bool leaves = false;
   for (const MeshBuffers* part : occluders) leaves = leaves || !part->indices.empty();
   if (!leaves) return;
@@ -78,7 +80,9 @@ CrownOcclusionField::CrownOcclusionField(const std::vector<const MeshBuffers*>& 
   // leaf's one-sided area.
   std::vector<double> density(cells, 0.0);
   const double volume = cell_ * cell_ * cell_;
-  for (const MeshBuffers* part : occluders) {
+  for (std::size_t k = 0; k < occluders.size(); ++k) {
+    const MeshBuffers* part = occluders[k];
+    const double weight = k < weights.size() ? weights[k] : 1.0;
     for (std::size_t t = 0; t + 2 < part->indices.size(); t += 3) {
       const glm::dvec3 a = OcclusionVertex(part->positions, part->indices[t]);
       const glm::dvec3 b = OcclusionVertex(part->positions, part->indices[t + 1]);
@@ -87,7 +91,7 @@ CrownOcclusionField::CrownOcclusionField(const std::vector<const MeshBuffers*>& 
       const double area = 0.5 * std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
       int at[3];
       if (cell_of((a + b + c) / 3.0, at))
-        density[index(at[0], at[1], at[2])] += 0.5 * area / volume;
+        density[index(at[0], at[1], at[2])] += weight * (0.5 * area / volume);
     }
   }
   // Optical depth from each cell centre along each sky direction, Beer-Lambert: tau = Σ G·LAD·h
@@ -161,7 +165,14 @@ std::vector<float> CrownOcclusionField::AtVertices(const MeshBuffers& part) cons
 }
 
 CrownOcclusion ComputeCrownOcclusion(const TreeMesh& mesh) {
-  const CrownOcclusionField field({&mesh.leaves, &mesh.flowers}, {&mesh.bark});
+  // A leaf_spray card (tree_textures.h) is n leaves painted on a card larger than one leaf's quad;
+  // it counts as the one grown leaf's quad, so a spray leaves the occlusion as it was (its n× leaf
+  // area would darken the crown's inside and the trunk under it to near black).
+  const LeafCardSize card = LeafCardOf(mesh.look);
+  const double leaf_weight = mesh.look.leaf_spray > 1
+                                 ? LeafQuadAspect(mesh.look.leaf_shape) / (card.width * card.length)
+                                 : 1.0;
+  const CrownOcclusionField field({&mesh.leaves, &mesh.flowers}, {&mesh.bark}, {leaf_weight, 1.0});
   return {field.AtVertices(mesh.bark), field.AtVertices(mesh.leaves),
           field.AtVertices(mesh.flowers)};
 }

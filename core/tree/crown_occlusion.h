@@ -34,9 +34,11 @@ class CrownOcclusionField {
  public:
   // Bins the triangles of the occluding parts (each double-sided: its area counted once) into a
   // grid over their box and the vertices of `covered` (parts queried but not occluding: the bark,
-  // whose trunk foot lies below the crown).
+  // whose trunk foot lies below the crown). `weights`: one factor per occluder on its triangles'
+  // area (empty: 1 each); a leaf_spray card counts as the one grown leaf it stands for.
   explicit CrownOcclusionField(const std::vector<const MeshBuffers*>& occluders,
-                               const std::vector<const MeshBuffers*>& covered = {});
+                               const std::vector<const MeshBuffers*>& covered = {},
+                               const std::vector<double>& weights = {});
 
   // The occlusion at `p` (metres), trilinear in the cell-centre values; 0 outside the grid's box
   // and everywhere when there are no leaves.

@@ -1,4 +1,5 @@
-// Triangle meshes of a grown tree: bark tubes, double-sided leaf quads and blossom-cluster cards.
+// Triangle meshes of a grown tree: bark tubes, double-sided leaf quads (one leaf or a spray each)
+// and blossom-cluster cards.
 #include "tree/mesh.h"
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <glm/vec2.hpp>
 
 #include "math/rotation.h"
+#include "tree/tree_textures.h"
 
 namespace niwa {
 namespace {
@@ -346,9 +348,13 @@ void AddFlower(const Branch& branch, int node, const MeshOptions& options,
 TreeMesh BuildTreeMesh(const Tree& tree, const MeshOptions& options) {
   TreeMesh mesh;
   mesh.look = options.look ? *options.look : LookFromParams(tree.params);
-  const float leaf_aspect = LeafQuadAspect(mesh.look.leaf_shape);
-  // The card drawn for each leaf: leaf_size (the light model's leaf) times leaf_card.
-  const float leaf_size = LeafCardLength(tree.params);
+  // The card drawn for each leaf: leaf_size (the light model's leaf) times leaf_card is the length
+  // of the leaf on it; with leaf_spray > 1 the card holds a twig with several such leaves and is
+  // that many leaf lengths long and wide (tree_textures.h LeafCardOf). leaf_spray 1: the leaf's
+  // own quad, aspect × 1.
+  const LeafCardSize card = LeafCardOf(mesh.look);
+  const float leaf_aspect = card.width / card.length;
+  const float leaf_size = LeafCardLength(tree.params) * card.length;
   const int lo_sides = std::max(3, options.min_sides);
   const int hi_sides = std::max(lo_sides, options.max_sides);
   const std::size_t count = tree.branches.size();

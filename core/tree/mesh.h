@@ -34,8 +34,9 @@ struct TreeMesh {
   MeshBuffers bark;  // generalized cylinders, one ring per node, end caps at tips
   std::vector<uint32_t> bark_branch_id;   // branch id of each bark vertex (picking, pruning)
   std::vector<uint32_t> bark_node_index;  // node of that branch (ring or tip of the cap)
-  MeshBuffers leaves;                    // one double-sided quad (two triangles each side) per leaf
-  std::vector<uint32_t> leaf_branch_id;  // branch the leaf grows on
+  MeshBuffers leaves;  // one double-sided quad (two triangles each side) per leaf: its blade, or
+                       // with leaf_spray > 1 a spray card (tree_textures.h LeafCardOf)
+  std::vector<uint32_t> leaf_branch_id;     // branch the leaf grows on
   std::vector<uint32_t> leaf_node_index;    // node of that branch the leaf sits at
   MeshBuffers flowers;                      // a blossom-cluster decagon per open flower
   std::vector<uint32_t> flower_branch_id;   // branch the flower grows on

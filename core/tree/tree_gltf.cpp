@@ -32,8 +32,8 @@ Result<std::vector<unsigned char>> EncodedTexture(TextureKind kind, const TreeLo
   static std::map<int, std::vector<unsigned char>> cache;
   const int key =
       kind == TextureKind::kLeaf
-          ? 1000 + 100 * static_cast<int>(look.leaf_shape) + 10 * static_cast<int>(look.season) +
-                static_cast<int>(look.autumn)
+          ? 10000 * look.leaf_spray + 100 * static_cast<int>(look.leaf_shape) +
+                10 * static_cast<int>(look.season) + static_cast<int>(look.autumn)
       : kind == TextureKind::kFlower
           ? 2000 + 10 * static_cast<int>(look.flower_colour) + static_cast<int>(look.flower_form)
           : static_cast<int>(kind);
@@ -75,6 +75,7 @@ Result<gltf::Texture> MakeTexture(TextureKind kind, const TreeLook& look) {
     case TextureKind::kLeaf:
       texture.name =
           std::string("leaf_") + LeafShapeName(look.leaf_shape) + "_" + SeasonName(look.season);
+      if (look.leaf_spray > 1) texture.name += "_spray" + std::to_string(look.leaf_spray);
       texture.wrap_s = texture.wrap_t = gltf::Wrap::kClampToEdge;
       // Needles without mipmaps, as the LOD cards (render/tree_lod.cpp): an engine's alpha test
       // (cutoff 0.5) on averaged mip levels drops thin needles altogether; a pine drawn by three.js
@@ -82,7 +83,9 @@ Result<gltf::Texture> MakeTexture(TextureKind kind, const TreeLook& look) {
       // page scales alpha by the mip level instead (shaders/tree/tree_textured.frag), which a .glb
       // cannot ask of an engine. Broad leaves keep their mipmaps: there the same measure went
       // both ways (maple 0.44 -> 0.60, sakura 0.33 -> 0.22), and mipmaps spare them the shimmer.
-      if (look.leaf_shape == LeafShape::kNeedle) texture.min_filter = gltf::kFilterLinear;
+      if (look.leaf_shape == LeafShape::kNeedle || look.leaf_spray > 1) {
+        texture.min_filter = gltf::kFilterLinear;
+      }
       break;
     case TextureKind::kFlower:
     default:
@@ -271,10 +274,13 @@ Result<gltf::Document> TreeGltfDocument(const TreeMesh& mesh, const GltfSkinning
       if (!normal.ok()) return normal.status();
       material.normal_texture = *normal;
       // The look the tree was dressed in (the season also decides which parts exist).
-      material.extras_json = std::string("{\"leaf_shape\":\"") +
-                             LeafShapeName(mesh.look.leaf_shape) + "\",\"season\":\"" +
-                             SeasonName(mesh.look.season) + "\",\"autumn_colour\":\"" +
-                             AutumnColourName(mesh.look.autumn) + "\"}";
+      material.extras_json =
+          std::string("{\"leaf_shape\":\"") + LeafShapeName(mesh.look.leaf_shape) +
+          "\",\"season\":\"" + SeasonName(mesh.look.season) + "\",\"autumn_colour\":\"" +
+          AutumnColourName(mesh.look.autumn) + "\"" +
+          (mesh.look.leaf_spray > 1 ? ",\"leaf_spray\":" + std::to_string(mesh.look.leaf_spray)
+                                    : std::string()) +
+          "}";
     } else if (part.material.texture == TextureKind::kFlower) {
       material.extras_json = std::string("{\"flower_colour\":\"") +
                              FlowerColourName(mesh.look.flower_colour) + "\",\"flower_form\":\"" +

@@ -23,6 +23,7 @@ TreeLook LookFromParams(const TreeParams& params) {
       static_cast<FlowerColour>(Clamped(params, TreeParam::kFlowerColour, kFlowerColourCount));
   look.flower_form =
       static_cast<FlowerForm>(Clamped(params, TreeParam::kFlowerForm, kFlowerFormCount));
+  look.leaf_spray = std::min(kMaxLeafSpray, std::max(1, params.GetInt(TreeParam::kLeafSpray)));
   return look;
 }
 

@@ -1,7 +1,7 @@
-// How a grown tree is dressed when it is meshed and textured: its leaf shape, the season, its
-// autumn colour and its flowers' colour and form (the tree table's leaf_shape, season,
-// autumn_colour, flower_colour and flower_form rows). Does not: grow anything, build meshes
-// (tree/mesh) or paint textures (tree/tree_textures).
+// How a grown tree is dressed when it is meshed and textured: its leaf shape and the leaves on each
+// card, the season, its autumn colour and its flowers' colour and form (the tree table's
+// leaf_shape, leaf_spray, season, autumn_colour, flower_colour and flower_form rows). Does not:
+// grow anything, build meshes (tree/mesh) or paint textures (tree/tree_textures).
 #pragma once
 
 #include <optional>
@@ -56,12 +56,16 @@ enum class FlowerForm : int {
 };
 constexpr int kFlowerFormCount = 2;
 
+// The leaf_spray row's largest value: leaves painted on one card (a twig with that many leaves).
+constexpr int kMaxLeafSpray = 12;
+
 struct TreeLook {
   LeafShape leaf_shape = LeafShape::kBroad;
   Season season = Season::kSummer;
   AutumnColour autumn = AutumnColour::kRedOrange;
   FlowerColour flower_colour = FlowerColour::kPalePink;
   FlowerForm flower_form = FlowerForm::kCherry;
+  int leaf_spray = 1;  // the leaf_spray row: leaves painted on each card (1..kMaxLeafSpray)
 };
 
 // The look the rows of `params` ask for (values outside the rows' ranges are clamped).

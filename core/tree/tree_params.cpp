@@ -14,10 +14,10 @@ constexpr int Id(TreeParam p) { return static_cast<int>(p); }
 
 // Stages: every growth row regrows (leaf_size and pipe_area too: the leaf-sphere radius and the
 // pipe model are growth inputs); sway and wind rows only restart the sway; render rows only change
-// the hybrid view. leaf_shape and leaf_card are used by the mesh alone (kMesh); season,
-// autumn_colour, flower_colour and flower_form only dress the tree already grown (kView): none
-// regrows. terminal_flowers places flowers while growing (kGrow) but draws no random number, so
-// trees without it grow the same.
+// the hybrid view. leaf_shape, leaf_card and leaf_spray are used by the mesh alone (kMesh);
+// season, autumn_colour, flower_colour and flower_form only dress the tree already grown (kView):
+// none regrows. terminal_flowers places flowers while growing (kGrow) but draws no random number,
+// so trees without it grow the same.
 //
 // Defaults are the sakura column of thesis table 2.2. "a ~ b" ranges are split into *_low (value at
 // hormone 0, or for P_l at age 0) and *_high (value at hormone H_sat, or at age P_l_years).
@@ -250,6 +250,14 @@ const std::vector<ParamSpec>& Rows() {
       {Id(P::kLeafCard), "leaf_card", "", "", 1, 0.25, 4, false, "shape", kMesh,
        "Drawn leaf card's length over leaf_size (the light model's leaf): 1 the leaf itself; "
        "above 1 a bundle or cluster longer than one leaf sphere (pine 2.5: its needles' 7.5 cm)."},
+      // Not in the thesis (issue 32 item 3; docs/tree-species.md "Leaf sprays"): as ez-tree and
+      // SpeedTree, one card may show a spray, a twig with several leaves, so a crown drawn by a
+      // standard engine reads as dense as the species'. The grown leaves and the light model stay
+      // one per leaf; only the drawn card (tree_textures.h MakeLeafTexture) changes.
+      {Id(P::kLeafSpray), "leaf_spray", "", "leaves", 1, 1, 12, true, "shape", kMesh,
+       "Leaves painted on each drawn leaf card: 1 the leaf itself; n > 1 a spray, a twig with n "
+       "leaves of leaf_shape, each leaf_size × leaf_card long, on one card of the same two "
+       "triangles a side (a crown as dense as the species', as ez-tree and SpeedTree draw)."},
       {Id(P::kSeason), "season", "", "", 1, 0, 3, true, "render", kView,
        "0 spring (fresh leaves; a flowering deciduous tree blossoms on bare wood, as cherries do), "
        "1 summer (leaves and flowers as grown), 2 autumn (autumn colour, no flowers), 3 winter "

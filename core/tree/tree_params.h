@@ -118,7 +118,8 @@ enum class TreeParam : int {
   kLeafClusterCards,  // 1: leaf-cluster cards (thesis 5.2), 0: leaves on branch cards (4.2.1)
   // look (not in the thesis; core/tree/tree_look.h): leaf shape, season, autumn colour
   kLeafShape,
-  kLeafCard,  // not in the thesis: the drawn leaf card over leaf_size (a pine's needle fascicle)
+  kLeafCard,   // not in the thesis: the drawn leaf card over leaf_size (a pine's needle fascicle)
+  kLeafSpray,  // not in the thesis: leaves painted on each drawn card (a twig with n leaves)
   kSeason,
   kAutumnColour,
   // flowers (not in the thesis; core/tree/tree_look.h, growth.cpp): colour and form of the flower

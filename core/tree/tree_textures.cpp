@@ -274,6 +274,205 @@ Rgb LeafColour(const TreeLook& look) {
   }
 }
 
+// ---- Leaf sprays (leaf_spray > 1) ----
+
+// One blade on a spray card: its base (x across, y along the twig, in leaf lengths), its direction
+// (radians from the twig, positive towards +x), its length over the species' leaf length, a shade
+// factor, and the box its silhouette covers on the card.
+struct SprayLeaf {
+  double x = 0, y = 0, angle = 0, scale = 1, shade = 1;
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+};
+
+struct Spray {
+  std::vector<SprayLeaf> leaves;  // painted in this order, each over the ones before
+  double twig = 0.0;              // the twig's length from the base (0, 0)
+  double width = 0.0, length = 0.0;
+};
+
+// Where (x, y) falls on a blade of the spray: the blade's own sample (physical leaf-local
+// coordinates turned into the single leaf's (u, v)); outside when off the blade's quad.
+BladeSample SampleSprayLeaf(LeafShape shape, double aspect, const SprayLeaf& leaf, double x,
+                            double y, double* v_out) {
+  const double dx = x - leaf.x, dy = y - leaf.y;
+  const double s = det::Sin(leaf.angle), c = det::Cos(leaf.angle);
+  const double along = (dx * s + dy * c) / leaf.scale, across = (dx * c - dy * s) / leaf.scale;
+  const double u = across / aspect + 0.5;
+  *v_out = along;
+  if (along < 0.0 || along > 1.0 || u < 0.0 || u > 1.0) return {};
+  return SampleBlade(shape, u, along);
+}
+
+// The spray's layout for `count` leaves of `shape` (count >= 2). Fixed hashes: the same card for
+// every tree of a look.
+Spray LayoutSpray(LeafShape shape, int count) {
+  Spray spray;
+  const int laterals = count - 1;
+  auto jitter = [](int k, uint32_t salt) {
+    return Hash01(static_cast<uint32_t>(k), salt, 131u) - 0.5;
+  };
+  auto add = [&](int k, double x, double y, double angle_deg) {
+    SprayLeaf leaf;
+    leaf.x = x;
+    leaf.y = y;
+    leaf.angle = (angle_deg + 6.0 * jitter(k, 1u)) * kDegree;
+    leaf.scale = 0.88 + 0.12 * (jitter(k, 2u) + 0.5);
+    leaf.shade = 0.90 + 0.16 * (jitter(k, 3u) + 0.5);
+    spray.leaves.push_back(leaf);
+  };
+  switch (shape) {
+    case LeafShape::kPalmate: {
+      // Acer: opposite pairs on long petioles (the blade's own), then a terminal leaf.
+      constexpr double kSpacing = 0.55;
+      for (int k = 0; k < laterals; ++k) {
+        const double side = (k % 2 == 0) ? -1.0 : 1.0;
+        add(k, 0.0, 0.05 + kSpacing * (k / 2), side * (64.0 - 8.0 * (k / 2)));
+      }
+      spray.twig = 0.05 + kSpacing * ((laterals - 1) / 2) + 0.30;
+      add(laterals, 0.0, spray.twig, 0.0);
+      break;
+    }
+    case LeafShape::kNeedle: {
+      // Pine: fascicles around the shoot's tip, pointing forward, and one at the tip.
+      constexpr double kSpacing = 0.14;
+      for (int k = 0; k < laterals; ++k) {
+        const double side = (k % 2 == 0) ? -1.0 : 1.0;
+        add(k, 0.0, 0.04 + kSpacing * k, side * (34.0 - 10.0 * k / std::max(1, laterals - 1)));
+      }
+      spray.twig = 0.04 + kSpacing * std::max(0, laterals - 1) + 0.10;
+      add(laterals, 0.0, spray.twig, 0.0);
+      break;
+    }
+    case LeafShape::kFan:
+    case LeafShape::kBroad:
+    default: {
+      // Alternate leaves along a twig (a ginkgo's long shoot too, its fans farther apart),
+      // spreading about 55° and less towards the tip, and a terminal leaf.
+      const bool fan = shape == LeafShape::kFan;
+      const double spacing = fan ? 0.55 : 0.31, spread = fan ? 58.0 : 54.0;
+      for (int k = 0; k < laterals; ++k) {
+        const double side = (k % 2 == 0) ? -1.0 : 1.0;
+        add(k, 0.0, 0.06 + spacing * k, side * (spread - 10.0 * k / std::max(1, laterals - 1)));
+      }
+      spray.twig = 0.06 + spacing * std::max(0, laterals - 1) + 0.22;
+      add(laterals, 0.0, spray.twig, 0.0);
+      break;
+    }
+  }
+  // Each blade's box, from its silhouette sampled on a 48 × 48 grid over its quad; then the card:
+  // symmetric about the twig, from the base (everything moved up when a blade dips below it).
+  const double aspect = LeafQuadAspect(shape);
+  constexpr int kGrid = 48;
+  double lowest = 0.0;
+  for (SprayLeaf& leaf : spray.leaves) {
+    const double s = det::Sin(leaf.angle), c = det::Cos(leaf.angle);
+    leaf.x0 = leaf.x1 = leaf.x;  // the base (a petiole or sheath thinner than the grid) is in
+    leaf.y0 = leaf.y1 = leaf.y;
+    for (int i = 0; i < kGrid; ++i) {
+      for (int j = 0; j < kGrid; ++j) {
+        const double u = (i + 0.5) / kGrid, v = (j + 0.5) / kGrid;
+        if (!SampleBlade(shape, u, v).inside) continue;
+        const double across = (u - 0.5) * aspect * leaf.scale, along = v * leaf.scale;
+        const double x = leaf.x + across * c + along * s, y = leaf.y - across * s + along * c;
+        leaf.x0 = std::min(leaf.x0, x);
+        leaf.x1 = std::max(leaf.x1, x);
+        leaf.y0 = std::min(leaf.y0, y);
+        leaf.y1 = std::max(leaf.y1, y);
+      }
+    }
+    // A grid cell's reach around each sample, so nothing of the silhouette falls off the box.
+    const double pad = 1.5 * std::max(1.0, aspect) * leaf.scale / kGrid;
+    leaf.x0 -= pad;
+    leaf.x1 += pad;
+    leaf.y0 -= pad;
+    leaf.y1 += pad;
+    lowest = std::min(lowest, leaf.y0);
+  }
+  double half = 0.0, top = spray.twig;
+  for (SprayLeaf& leaf : spray.leaves) {
+    leaf.y -= lowest;
+    leaf.y0 -= lowest;
+    leaf.y1 -= lowest;
+    half = std::max(half, std::max(std::fabs(leaf.x0), std::fabs(leaf.x1)));
+    top = std::max(top, leaf.y1);
+  }
+  spray.twig -= lowest;
+  spray.width = 2.0 * half;
+  spray.length = top;
+  return spray;
+}
+
+// What covers the card point (x, y) of a spray (leaf lengths): the topmost blade (its index, its
+// sample and its v), or the twig (index -1, inside), or nothing.
+struct SprayHit {
+  int leaf = -1;
+  BladeSample sample;
+  double v = 0.0;
+};
+
+SprayHit HitSpray(const Spray& spray, LeafShape shape, double aspect, double x, double y) {
+  SprayHit hit;
+  for (int k = static_cast<int>(spray.leaves.size()); k-- > 0;) {
+    const SprayLeaf& leaf = spray.leaves[static_cast<std::size_t>(k)];
+    if (x < leaf.x0 || x > leaf.x1 || y < leaf.y0 || y > leaf.y1) continue;
+    double v = 0.0;
+    BladeSample s = SampleSprayLeaf(shape, aspect, leaf, x, y, &v);
+    if (s.inside) {
+      hit.leaf = k;
+      hit.sample = s;
+      hit.v = v;
+      return hit;
+    }
+  }
+  // The twig: tapering from 0.024 to 0.012 leaf lengths across, from the base to its end.
+  if (y >= 0.0 && y <= spray.twig) {
+    const double t = spray.twig > 0.0 ? y / spray.twig : 1.0;
+    if (std::fabs(x) < 0.012 - 0.006 * t) hit.sample.inside = true;
+  }
+  return hit;
+}
+
+// The spray card's texture (MakeLeafTexture with leaf_spray > 1): each blade coloured as the single
+// leaf's (its own v for the light tip and mottle), shaded by its own factor, over a brown twig.
+Rgba8Image MakeSprayTexture(const TreeLook& look, const Rgb& base, const Rgb& light,
+                            Rgba8Image image) {
+  const Spray spray = LayoutSpray(look.leaf_shape, std::min(look.leaf_spray, kMaxLeafSpray));
+  const double aspect = LeafQuadAspect(look.leaf_shape);
+  const Rgb twig{0.34, 0.24, 0.15};
+  auto card_x = [&](double px) { return (px / image.width - 0.5) * spray.width; };
+  auto card_y = [&](double py) { return py / image.height * spray.length; };
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      int covered = 0;
+      for (int k = 0; k < 4; ++k) {
+        const double cx = card_x(x + 0.25 + 0.5 * (k & 1)), cy = card_y(y + 0.25 + 0.5 * (k >> 1));
+        covered += HitSpray(spray, look.leaf_shape, aspect, cx, cy).sample.inside ? 1 : 0;
+      }
+      if (covered == 0) {  // the blade's colour under alpha 0, so filtering fringes stay green
+        SetPixel(&image, x, y, Scale(base, 0.85), 0.0);
+        continue;
+      }
+      const double cx = card_x(x + 0.5), cy = card_y(y + 0.5);
+      SprayHit hit = HitSpray(spray, look.leaf_shape, aspect, cx, cy);
+      Rgb colour = twig;
+      if (hit.leaf >= 0) {
+        const SprayLeaf& leaf = spray.leaves[static_cast<std::size_t>(hit.leaf)];
+        const BladeSample& s = hit.sample;
+        const double v = hit.v;
+        const double mottle = PeriodicFbm(cx / spray.width + 0.5, cy / spray.length, 6, 6, 2, 53u);
+        double shade = (0.88 + 0.12 * v) * (1.0 - 0.18 * s.edge * s.edge) + 0.12 * (mottle - 0.5);
+        colour = MixRgb(Scale(base, shade * leaf.shade), light, Clamp01(s.vein));
+      } else if (!hit.sample.inside) {
+        // The centre is off every blade (an edge pixel): the nearest sample's colour would do; the
+        // blade colour keeps the edge from darkening.
+        colour = base;
+      }
+      SetPixel(&image, x, y, colour, covered / 4.0);
+    }
+  }
+  return image;
+}
+
 // ---- Blossoms ----
 
 // The petals' colours of a flower_colour (tree_look.h): petal, the centre or throat (and an
@@ -447,10 +646,17 @@ Rgba8Image MakeBarkNormalMap(int width, int height) {
   return image;
 }
 
+LeafCardSize LeafCardOf(const TreeLook& look) {
+  if (look.leaf_spray <= 1) return {LeafQuadAspect(look.leaf_shape), 1.0f};
+  const Spray spray = LayoutSpray(look.leaf_shape, std::min(look.leaf_spray, kMaxLeafSpray));
+  return {static_cast<float>(spray.width), static_cast<float>(spray.length)};
+}
+
 Rgba8Image MakeLeafTexture(const TreeLook& look, int size) {
   Rgba8Image image = Allocate(size, size);
   const Rgb base = LeafColour(look);
   const Rgb light = MixRgb(base, {1.0, 1.0, 0.85}, 0.42);
+  if (look.leaf_spray > 1) return MakeSprayTexture(look, base, light, std::move(image));
   for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < image.width; ++x) {
       // Coverage from 2 × 2 samples; the colour from the pixel's centre.

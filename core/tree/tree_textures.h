@@ -1,5 +1,6 @@
 // Procedural RGBA8 textures of the tree's exported and drawn materials (bark colour and normal
-// map, one leaf blade per leaf shape in its season's colour, flowers per colour and form), as
+// map, one leaf blade or a spray of them per leaf shape in its season's colour, flowers per colour
+// and form), as
 // image::Rgba8Image (row 0 is texture coordinate v = 0, glTF's top-left origin; PNG encoding is
 // image/png.h). The .glb (tree/tree_gltf) and the page (web/bindings/texture_bindings.cpp) use the
 // same pixels. Deterministic: integer hashing and det:: math only, so the native and WASM builds
@@ -27,10 +28,23 @@ Rgba8Image MakeBarkTexture(int width = kTreeTextureSize, int height = kTreeTextu
 // v, +z out of the wood) from the same furrow relief as MakeBarkTexture; tileable; alpha 255.
 Rgba8Image MakeBarkNormalMap(int width = kTreeTextureSize, int height = kTreeTextureSize);
 
-// One leaf blade in the leaf quad's UV space: u across (midrib at u = 0.5), v from the base
-// (v = 0) to the tip (v = 1), for the quad's proportions (LeafQuadAspect). Alpha 0 outside the
-// silhouette. The colour is the look's: summer green, spring's fresh green, the autumn colour, or
-// an evergreen's darker green in autumn and winter.
+// The drawn leaf card of a look, in leaf lengths (leaf_size × leaf_card): its width across and its
+// length from the base (the node it hangs on, at u = 0.5, v = 0) to the far edge. leaf_spray 1:
+// the blade's quad (LeafQuadAspect(shape) × 1); n > 1: the box around the spray's twig and leaves.
+struct LeafCardSize {
+  float width = 0.5f;
+  float length = 1.0f;
+};
+LeafCardSize LeafCardOf(const TreeLook& look);
+
+// The texture of one leaf card. leaf_spray 1: one leaf blade in the leaf quad's UV space, u across
+// (midrib at u = 0.5), v from the base (v = 0) to the tip (v = 1), for the quad's proportions
+// (LeafQuadAspect). leaf_spray n > 1: a spray on the card LeafCardOf gives, a brown twig from the
+// base (u = 0.5, v = 0) with n blades of the same shape, colour and length: alternate along the
+// twig (broad; fan, farther apart, as on a ginkgo's long shoot), in opposite pairs on long
+// petioles (palmate), or fascicles pointing forward (needle). Alpha 0 outside the silhouettes. The
+// colour is the look's: summer green, spring's fresh green, the autumn colour, or an evergreen's
+// darker green in autumn and winter.
 Rgba8Image MakeLeafTexture(const TreeLook& look, int size = kTreeTextureSize);
 
 // One five-petal cherry blossom around (0.5, 0.5) (notched petal tips at 90°, 162°, ...), with a

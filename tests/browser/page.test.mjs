@@ -79,7 +79,11 @@ await runBrowserTest(async (server, browser) => {
   // The species sakura (issue 17) is framed from farther back than the thesis tree, and its 3.2 cm
   // flowers fall below a pixel there (blossom that reads from a distance is issue 17 item 3), so
   // the flower colour is checked on the thesis tree below (section 4b).
-  check('canvas shows leaves and bark colours', pixels.green > 0.01 && pixels.brown > 0.0005,
+  // Its crown is drawn as dense as the species' (leaf_spray 5, docs/tree-species.md "Beside
+  // ez-tree"): it hides the limbs and shades the trunk, whose lit-bark pixels fell from 0.54 % (as
+  // docs/tree-species.md last measured it) to 0.05 % of the canvas (the floor was 0.05 %); the bark colour's floor of 0.05 % stays on the
+  // thesis tree (section 4b), here 0.02 %.
+  check('canvas shows leaves and bark colours', pixels.green > 0.01 && pixels.brown > 0.0002,
     `green ${(pixels.green * 100).toFixed(2)}% pink ${(pixels.pink * 100).toFixed(2)}% brown ${(pixels.brown * 100).toFixed(2)}%`);
   await page.screenshot({ path: path.join(ARTIFACTS, 'niwa-sakura.png') });
   check('screenshot saved', fs.existsSync(path.join(ARTIFACTS, 'niwa-sakura.png')), 'build/artifacts/niwa-sakura.png');

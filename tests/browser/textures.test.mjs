@@ -190,6 +190,14 @@ await runBrowserTest(async (server, browser) => {
     const h = await histogram(p);
     await saveCanvasPng(p, `tex-${name}.png`);
     check(`${name} ${what}`, ok(h), fmt(h));
+    if (name === 'pine') {
+      // The pine's leaf_spray 3 card (three fascicles on a twig): the page's texture is the one the
+      // gtest pins for both builds (tree_textures_test.cpp LeafSpray), and the CLI's .glb names it.
+      const digest = (await root(p)).leafDigest;
+      check('pine: the page draws the leaf_spray card the core paints (digest)', digest === '3bd6c76cb188dd1c', digest);
+      const names = glbTextureNames(['--preset', 'pine', '--years', '4', '--season', 'winter']);
+      check('pine: the CLI .glb carries the same card (leaf_needle_winter_spray3)', names.includes('leaf_needle_winter_spray3'), names.join(','));
+    }
     await p.close();
   }
   // Close-ups of the four shapes on keyaki-thesis at 6 years (leaf_shape is a mesh row: restaged):

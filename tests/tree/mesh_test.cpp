@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <map>
@@ -13,13 +14,16 @@
 #include "support/grow.h"
 #include "tree/growth.h"
 #include "tree/presets.h"
+#include "tree/tree_textures.h"
 
 namespace niwa {
 namespace {
 
 constexpr float kScale = 0.01f;  // default cm_to_units
 
-Tree GrowForMesh(const std::string& preset, int years) { return testing::GrowPreset(preset, years, 1); }
+Tree GrowForMesh(const std::string& preset, int years) {
+  return testing::GrowPreset(preset, years, 1);
+}
 
 glm::vec3 Vec(const std::vector<float>& data, std::size_t vertex) {
   return {data[3 * vertex], data[3 * vertex + 1], data[3 * vertex + 2]};
@@ -432,6 +436,56 @@ TEST(MeshLeafShapes, SpeciesPresetsCarryTheirShapeAndAutumnColour) {
   EXPECT_EQ(look("sakura").leaf_shape, LeafShape::kBroad);
   EXPECT_EQ(look("sakura").autumn, AutumnColour::kRedOrange);
   EXPECT_EQ(look("tsutsuji").autumn, AutumnColour::kEvergreen);
+}
+
+// FNV-1a over the bytes of the leaf buffers (positions, normals, uvs, indices).
+std::string LeafBytesDigest(const TreeMesh& mesh) {
+  uint64_t h = 0xcbf29ce484222325ull;
+  auto mix = [&h](const void* data, std::size_t bytes) {
+    const unsigned char* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * 0x100000001b3ull;
+  };
+  const MeshBuffers& m = mesh.leaves;
+  mix(m.positions.data(), m.positions.size() * sizeof(float));
+  mix(m.normals.data(), m.normals.size() * sizeof(float));
+  mix(m.uvs.data(), m.uvs.size() * sizeof(float));
+  mix(m.indices.data(), m.indices.size() * sizeof(uint32_t));
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
+  return text;
+}
+
+// leaf_spray (a mesh row): 1 is the leaf quad as before the row (the digest is that of the mesh
+// built before it existed); n > 1 draws the same quads, as many triangles, each the spray card
+// LeafCardOf gives, from the same base along the same direction.
+TEST(MeshLeafSpray, OneIsTodaysQuadAndASprayIsTheSameQuadsOnALargerCard) {
+  Tree tree = GrowForMesh("keyaki-thesis", 4);
+  ASSERT_EQ(tree.params.GetInt(TreeParam::kLeafSpray), 1);
+  const TreeMesh plain = BuildTreeMesh(tree);
+  EXPECT_EQ(LeafBytesDigest(plain), "d2187914aa581af1");
+  ASSERT_TRUE(tree.params.Set(TreeParam::kLeafSpray, 5).ok());
+  const TreeMesh spray = BuildTreeMesh(tree);
+  EXPECT_EQ(spray.look.leaf_spray, 5);
+  ASSERT_GT(plain.leaves.vertex_count(), 100u);
+  EXPECT_EQ(spray.leaves.indices.size(), plain.leaves.indices.size());
+  EXPECT_EQ(spray.leaves.uvs, plain.leaves.uvs);
+  EXPECT_EQ(spray.bark.positions, plain.bark.positions);
+  const LeafCardSize card = LeafCardOf(spray.look);
+  const float size = static_cast<float>(tree.params.Get(ParamId::kLeafSize)) * kScale;
+  for (std::size_t q = 0; q < plain.leaves.vertex_count(); q += 4) {
+    // Corners 0, 1 at the base, 2, 3 at the far end: same base midpoint, same direction.
+    const glm::vec3 base_a =
+        0.5f * (Vec(plain.leaves.positions, q) + Vec(plain.leaves.positions, q + 1));
+    const glm::vec3 base_b =
+        0.5f * (Vec(spray.leaves.positions, q) + Vec(spray.leaves.positions, q + 1));
+    EXPECT_LT(glm::length(base_a - base_b), 1e-6f);
+    const glm::vec3 along_b = Vec(spray.leaves.positions, q + 3) - Vec(spray.leaves.positions, q);
+    const glm::vec3 across_b = Vec(spray.leaves.positions, q + 1) - Vec(spray.leaves.positions, q);
+    EXPECT_NEAR(glm::length(along_b), card.length * size, 1e-5f);
+    EXPECT_NEAR(glm::length(across_b), card.width * size, 1e-5f);
+    const glm::vec3 along_a = Vec(plain.leaves.positions, q + 3) - Vec(plain.leaves.positions, q);
+    EXPECT_GT(glm::dot(glm::normalize(along_a), glm::normalize(along_b)), 0.9999f);
+  }
 }
 
 }  // namespace

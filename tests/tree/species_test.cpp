@@ -427,7 +427,10 @@ TEST(SpeciesForm, WeepingCherryHangsFromAStandardTrunk) {
   }
   EXPECT_TRUE(above) << "the leader reaches the top of the stake";
   EXPECT_GT(straight, 10);
-  EXPECT_GE(f.lowest_leaf - f.bottom, 0.35);
+  // The trim cuts a shoot whose tip hangs below 40 cm; its leaf cards hang below the tip: a card
+  // of leaf_spray 2 reaches 1.3 leaf lengths (12 cm) from its node, the single 9 cm leaf 9 cm (the
+  // floor was 0.35 then; 0.347 with the spray).
+  EXPECT_GE(f.lowest_leaf - f.bottom, 0.30);
   std::size_t widest = 0;
   for (std::size_t b = 0; b < f.band_width.size(); ++b) {
     if (f.band_width[b] > f.band_width[widest]) widest = b;

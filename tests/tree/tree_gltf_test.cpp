@@ -208,9 +208,10 @@ TEST(TreeGltf, WritesAGlbWithBarkLeavesAndFlowers) {
   }
 }
 
-// The leaves' sampler: a pine's needles without mipmaps (an engine's alpha test on averaged mip
-// levels drops thin needles: docs/figures/species), broad leaves with them.
-TEST(TreeGltf, NeedlesAreSampledWithoutMipmapsBroadLeavesWith) {
+// The leaves' sampler: a pine's needles and every leaf spray (leaf_spray > 1) without mipmaps (an
+// engine's alpha test on averaged mip levels drops thin needles and a spray's leaves, whose
+// gaps average the alpha below the cutoff: docs/figures/species), a single broad leaf with them.
+TEST(TreeGltf, NeedlesAndSpraysAreSampledWithoutMipmapsSingleBroadLeavesWith) {
   auto leaf_min_filter = [](const std::string& preset) {
     TreeMesh mesh = BuildTreeMesh(GrowForGltf(preset, 4));
     std::vector<unsigned char> bytes;
@@ -225,8 +226,9 @@ TEST(TreeGltf, NeedlesAreSampledWithoutMipmapsBroadLeavesWith) {
     }
     return -1;
   };
-  EXPECT_EQ(leaf_min_filter("pine"), 9729);    // LINEAR
-  EXPECT_EQ(leaf_min_filter("sakura"), 9987);  // LINEAR_MIPMAP_LINEAR
+  EXPECT_EQ(leaf_min_filter("pine"), 9729);           // LINEAR
+  EXPECT_EQ(leaf_min_filter("sakura"), 9729);         // leaf_spray 5
+  EXPECT_EQ(leaf_min_filter("sakura-thesis"), 9987);  // LINEAR_MIPMAP_LINEAR
 }
 
 TEST(TreeGltf, SkipsEmptyPrimitives) {

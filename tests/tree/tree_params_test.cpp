@@ -23,8 +23,10 @@ TEST(TreeParamStages, FollowTheGroups) {
     const std::string group = s.group;
     const Stage expected = group == "sway" || group == "wind" ? Stage::kSway
                            : group == "render"                ? Stage::kView
-                           : s.key == std::string("leaf_shape") || s.key == std::string("leaf_card")
-                               ? Stage::kMesh  // the two rows the mesh alone uses
+                           : s.key == std::string("leaf_shape") ||
+                                   s.key == std::string("leaf_card") ||
+                                   s.key == std::string("leaf_spray")
+                               ? Stage::kMesh  // the three rows the mesh alone uses
                                : Stage::kGrow;
     EXPECT_EQ(s.stage, expected) << s.key;
     EXPECT_STRNE(table.GroupTitle(s.group), "") << s.key;
@@ -67,7 +69,7 @@ TEST(TreeParamStages, RowsAfterGrowLeaveTheTreeAndItsMeshUnchanged) {
     }
     ++checked;
   }
-  EXPECT_EQ(checked, 32);  // 13 sway, 9 wind, 8 render rows, leaf_shape and leaf_card (mesh)
+  EXPECT_EQ(checked, 33);  // 13 sway, 9 wind, 8 render rows, leaf_shape, leaf_card, leaf_spray
 }
 
 TEST(TreeParamStages, LeafCardScalesTheDrawnLeavesAboutTheirBases) {

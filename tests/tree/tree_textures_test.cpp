@@ -333,5 +333,106 @@ TEST(TexturesTest, BarkIsOpaqueBrownAndTileable) {
   EXPECT_GT(across, along * 0.8);
 }
 
+// Connected groups (4-neighbour) of the opaque (alpha >= 128) leaf-coloured pixels: green over
+// red in a summer look, so a brown twig joins nothing; their sizes, largest first.
+std::vector<int> LeafBlobs(const Rgba8Image& image) {
+  const int w = image.width, h = image.height;
+  std::vector<int> label(static_cast<std::size_t>(w * h), 0);
+  auto leafy = [&](int x, int y) {
+    const unsigned char* p = image.At(x, y);
+    return p[3] >= 128 && p[1] > p[0];
+  };
+  std::vector<int> sizes;
+  std::vector<std::pair<int, int>> stack;
+  for (int y0 = 0; y0 < h; ++y0) {
+    for (int x0 = 0; x0 < w; ++x0) {
+      if (!leafy(x0, y0) || label[static_cast<std::size_t>(y0 * w + x0)] != 0) continue;
+      const int id = static_cast<int>(sizes.size()) + 1;
+      int size = 0;
+      stack.assign(1, {x0, y0});
+      label[static_cast<std::size_t>(y0 * w + x0)] = id;
+      while (!stack.empty()) {
+        auto [x, y] = stack.back();
+        stack.pop_back();
+        ++size;
+        for (auto [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+          const int nx = x + dx, ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+          int& l = label[static_cast<std::size_t>(ny * w + nx)];
+          if (l != 0 || !leafy(nx, ny)) continue;
+          l = id;
+          stack.push_back({nx, ny});
+        }
+      }
+      sizes.push_back(size);
+    }
+  }
+  std::sort(sizes.rbegin(), sizes.rend());
+  return sizes;
+}
+
+TreeLook Spray(LeafShape shape, int leaves) {
+  TreeLook look = Look(shape);
+  look.leaf_spray = leaves;
+  return look;
+}
+
+// Blobs of LeafBlobs at least a tenth of the largest: the leaves (or groups of touching leaves).
+int BigBlobs(const Rgba8Image& image) {
+  const std::vector<int> blobs = LeafBlobs(image);
+  int big = 0;
+  for (int size : blobs) big += size * 10 >= blobs.front() ? 1 : 0;
+  return big;
+}
+
+// leaf_spray (issue 32 item 3): one card paints a twig with several leaves. Broad leaves
+// alternate along the twig without touching: one blob of leaf colour each; a ginkgo's fans mostly
+// (the terminal fan overlaps one); a maple's opposite pairs overlap the pair above and needle
+// fascicles cross one another (their leaf area is checked). A brown twig on the midline at the
+// base.
+TEST(LeafSpray, ACardHoldsSeveralSeparateLeavesOnATwig) {
+  for (LeafShape shape : kShapes) {
+    const Rgba8Image spray = MakeLeafTexture(Spray(shape, 5), 256);
+    const int leaves = BigBlobs(spray);
+    const int expected = shape == LeafShape::kBroad ? 5 : shape == LeafShape::kFan ? 4 : 1;
+    EXPECT_GE(leaves, expected) << LeafShapeName(shape);
+    // The painted leaf area (leaf lengths²): at least three single leaves' worth.
+    const LeafCardSize card = LeafCardOf(Spray(shape, 5));
+    const double one = Coverage(MakeLeafTexture(Look(shape), 256)) * LeafQuadAspect(shape);
+    EXPECT_GT(Coverage(spray) * card.width * card.length, 3.0 * one) << LeafShapeName(shape);
+    // The twig: brown (red over green) opaque pixels on the midline near the base.
+    const unsigned char* twig = spray.At(spray.width / 2, 2);
+    EXPECT_EQ(twig[3], 255) << LeafShapeName(shape);
+    EXPECT_GT(twig[0], twig[1]) << LeafShapeName(shape);
+  }
+  EXPECT_EQ(LeafBlobs(MakeLeafTexture(Look(LeafShape::kBroad), 256)).size(), 1u);
+  // More leaves, more blobs.
+  EXPECT_GT(BigBlobs(MakeLeafTexture(Spray(LeafShape::kBroad, 7), 256)),
+            BigBlobs(MakeLeafTexture(Spray(LeafShape::kBroad, 3), 256)));
+}
+
+TEST(LeafSpray, OneLeafIsTodaysBladeAndASprayCardIsLargerAndTheSameEveryTime) {
+  for (LeafShape shape : kShapes) {
+    EXPECT_EQ(MakeLeafTexture(Spray(shape, 1), 64).pixels, MakeLeafTexture(Look(shape), 64).pixels);
+    const LeafCardSize one = LeafCardOf(Spray(shape, 1)), five = LeafCardOf(Spray(shape, 5));
+    EXPECT_EQ(one.width, LeafQuadAspect(shape));
+    EXPECT_EQ(one.length, 1.0f);
+    EXPECT_GT(five.width, one.width) << LeafShapeName(shape);
+    EXPECT_GT(five.length, one.length) << LeafShapeName(shape);
+    EXPECT_LT(five.width * five.length, 8.0f) << LeafShapeName(shape);
+  }
+  // Values outside the row are clamped to its range by the look (tree_look.cpp), so the card never
+  // grows past kMaxLeafSpray leaves.
+  EXPECT_EQ(LeafCardOf(Spray(LeafShape::kBroad, 99)).length,
+            LeafCardOf(Spray(LeafShape::kBroad, kMaxLeafSpray)).length);
+  // native == WASM: the digest of a spray (this binary also runs on the WASM build).
+  EXPECT_EQ(ImageDigest(MakeLeafTexture(Spray(LeafShape::kBroad, 5), 128)), "bd73e7ecc6ff1da7");
+  // The pine preset's card in winter (3 fascicles), 512 px: the page shows the same digest
+  // (tests/browser/textures.test.mjs).
+  TreeLook pine = Look(LeafShape::kNeedle, Season::kWinter, AutumnColour::kEvergreen);
+  pine.leaf_spray = 3;
+  EXPECT_EQ(ImageDigest(MakeLeafTexture(pine)), "3bd6c76cb188dd1c");
+}
+
 }  // namespace
 }  // namespace niwa

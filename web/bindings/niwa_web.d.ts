@@ -36,7 +36,7 @@ export function openStateFile(text: string): string;
 
 // ---- texture_bindings.cpp
 /** {width, height, pixels: Uint8Array} (RGBA, row 0 = v 0) of a procedural texture ('bark', 'barkNormal', 'leaf', 'flower'), or null. */
-export function treeTexture(kind: string, leafShape: number, season: number, autumnColour: number, flowerColour: number, flowerForm: number): { width: number; height: number; pixels: Uint8Array } | null;
+export function treeTexture(kind: string, leafShape: number, season: number, autumnColour: number, flowerColour: number, flowerForm: number, leafSpray: number): { width: number; height: number; pixels: Uint8Array } | null;
 
 // ---- light_bindings.cpp: core/light/sun.h
 /** The unit direction towards the sun, [x, y, z] (y up, azimuth from +x towards +z). */

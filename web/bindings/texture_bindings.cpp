@@ -15,17 +15,18 @@ namespace {
 
 int Clamp(int value, int count) { return value < 0 ? 0 : (value >= count ? count - 1 : value); }
 
-// treeTexture(kind, leafShape, season, autumnColour, flowerColour, flowerForm) -> {width, height,
-// pixels: Uint8Array RGBA, row 0 = v 0} for kind "bark" | "barkNormal" | "leaf" | "flower"; null
-// for another kind.
+// treeTexture(kind, leafShape, season, autumnColour, flowerColour, flowerForm, leafSpray) ->
+// {width, height, pixels: Uint8Array RGBA, row 0 = v 0} for kind "bark" | "barkNormal" | "leaf" |
+// "flower"; null for another kind.
 emscripten::val TreeTexture(const std::string& kind, int leaf_shape, int season, int autumn,
-                            int flower_colour, int flower_form) {
+                            int flower_colour, int flower_form, int leaf_spray) {
   TreeLook look;
   look.leaf_shape = static_cast<LeafShape>(Clamp(leaf_shape, kLeafShapeCount));
   look.season = static_cast<Season>(Clamp(season, kSeasonCount));
   look.autumn = static_cast<AutumnColour>(Clamp(autumn, kAutumnColourCount));
   look.flower_colour = static_cast<FlowerColour>(Clamp(flower_colour, kFlowerColourCount));
   look.flower_form = static_cast<FlowerForm>(Clamp(flower_form, kFlowerFormCount));
+  look.leaf_spray = 1 + Clamp(leaf_spray - 1, kMaxLeafSpray);
   Rgba8Image image;
   if (kind == "bark") {
     image = MakeBarkTexture();

@@ -358,7 +358,7 @@ class TreeSession {
 
   // The look of the mesh last built, for the textures (web/bindings/texture_bindings.cpp):
   // {"leaf_shape": 0..3, "season": 0..3, "autumn_colour": 0..4, "flower_colour": 0..4,
-  // "flower_form": 0..1} (core/tree/tree_look.h).
+  // "flower_form": 0..1, "leaf_spray": 1..12} (core/tree/tree_look.h).
   std::string lookJson() const {
     const TreeLook& look = (run_ ? run_->mesh() : kNoMesh).look;
     ordered_json out;
@@ -367,6 +367,7 @@ class TreeSession {
     out["autumn_colour"] = static_cast<int>(look.autumn);
     out["flower_colour"] = static_cast<int>(look.flower_colour);
     out["flower_form"] = static_cast<int>(look.flower_form);
+    out["leaf_spray"] = look.leaf_spray;
     return out.dump();
   }
 

@@ -528,8 +528,10 @@ worker.on('tree', (msg) => {
   if (!controller.isLatest(msg)) return;
   controller.showWork(false);
   if (history_.base) lastGood = { hash: history_.base, state: latestRequest.state };
-  // The bark texture the tree wears (a simulated one's digest starts 'bark-sim-') and its summary.
-  setHooks({ barkDigest: msg.mesh.textures?.bark?.digest || '', barkStats: msg.stats.bark ? JSON.stringify(msg.stats.bark) : '' });
+  // The bark texture the tree wears (a simulated one's digest starts 'bark-sim-') and its summary;
+  // the leaf texture's digest (a leaf_spray card's too: tests/browser/textures.test.mjs).
+  setHooks({ barkDigest: msg.mesh.textures?.bark?.digest || '', barkStats: msg.stats.bark ? JSON.stringify(msg.stats.bark) : '',
+    leafDigest: msg.mesh.textures?.leaf?.digest || '' });
   notices.set('error', '');
   controller.showFieldError('');
   exportGuard.update(msg.stats, msg.mesh);

@@ -37,13 +37,13 @@ export function createHandler(Module, ctx) {
 
   // The procedural textures of a look (core/tree/tree_textures.h: the .glb's own pixels), painted
   // once per look and kept: kind -> {width, height, pixels: Uint8Array, digest}.
-  const textureCache = new Map();  // "bark" | "barkNormal" | "leaf:shape,season,autumn" | "flower:colour,form"
+  const textureCache = new Map();  // "bark" | "barkNormal" | "leaf:shape,season,autumn,spray" | "flower:colour,form"
   function texture(kind, look) {
-    const flowerColour = look.flower_colour ?? 0, flowerForm = look.flower_form ?? 0;
-    const key = kind === 'leaf' ? `leaf:${look.leaf_shape},${look.season},${look.autumn_colour}`
+    const flowerColour = look.flower_colour ?? 0, flowerForm = look.flower_form ?? 0, spray = look.leaf_spray ?? 1;
+    const key = kind === 'leaf' ? `leaf:${look.leaf_shape},${look.season},${look.autumn_colour},${spray}`
       : kind === 'flower' ? `flower:${flowerColour},${flowerForm}` : kind;
     if (!textureCache.has(key)) {
-      textureCache.set(key, Module.treeTexture(kind, look.leaf_shape, look.season, look.autumn_colour, flowerColour, flowerForm));
+      textureCache.set(key, Module.treeTexture(kind, look.leaf_shape, look.season, look.autumn_colour, flowerColour, flowerForm, spray));
     }
     return textureCache.get(key);
   }
