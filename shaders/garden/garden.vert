@@ -29,11 +29,7 @@ out float vHeight;
 out vec4 vShadow;
 out float vBirth;
 
-vec3 turn(vec3 v, float a) {
-  float c = cos(a), s = sin(a);
-  return vec3(c * v.x + s * v.z, v.y, -s * v.x + c * v.z);
-}
-
+#include "../common/turn.glsl"
 #include "../common/skin.glsl"
 
 void main() {

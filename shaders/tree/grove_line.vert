@@ -10,6 +10,7 @@
 layout(location = 0) in vec4 aInstance;   // xyz: position of the tree's base, w: scale
 layout(location = 1) in float aWidthScale;  // band representative's depth / this instance's depth
 layout(location = 2) in float aBlock;       // the instance's pose block (index among the tree's instances)
+layout(location = 3) in float aTurn;        // radians about y (0 in the grove; the garden's copies')
 
 uniform highp sampler2D uSegments;
 uniform mat4 uViewProjection;
@@ -24,11 +25,12 @@ out float vCoverage;  // a line thinner than a pixel is drawn 1 px wide and this
 vec4 texel(int i) { return texelFetch(uSegments, ivec2(i % 1024, i / 1024), 0); }
 
 #include "../common/skin.glsl"
+#include "../common/turn.glsl"
 
 // End `end` (0: p0, 1: p1) of a segment at p, swayed with this instance's poses, in the world.
 vec3 world(vec3 p, vec4 skin, int end) {
   uint joint = uint(aBlock) * uint(uNodes) + uint(end == 0 ? skin.x : skin.y);
-  return aInstance.xyz + aInstance.w * skinPosition(joint, end == 0 ? skin.z : skin.w, p);
+  return aInstance.xyz + aInstance.w * turn(skinPosition(joint, end == 0 ? skin.z : skin.w, p), aTurn);
 }
 
 void main() {

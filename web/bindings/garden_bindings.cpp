@@ -15,7 +15,8 @@
 //             heights (Float32, (n + 1)² in GardenGround's order: vertex (i, j) at x = −L/2 +
 //             i·cell, z = −L/2 + j·cell), for the page's ray against the ground (its clicks);
 //             moss_S (Float32 per ground vertex, the same order: the moss's light of its last day,
-//             compose/garden_moss GardenMossGroundLight; −1 where no cell is near; empty without moss)
+//             compose/garden_moss GardenMossGroundLight; −1 where no cell is near; empty without
+//             moss)
 //   "objects" positions, normals, indices (every object's mesh, placed, in one list), kind (Float32
 //             per vertex: 0 wall, 1 rock, 2 lantern, 3 ivy stem, 4 ivy leaf), birth (Float32 per
 //             vertex: the garden year an ivy vertex grew in, ceil(birth_step / ivy_steps), 0 for
@@ -91,6 +92,9 @@
 #include "ivy/ivy_run.h"
 #include "page_budget.h"
 #include "params/param_json.h"
+#include "render/atlas_mesh.h"
+#include "render/hybrid.h"
+#include "view_camera.h"
 
 namespace niwa {
 namespace {
@@ -210,6 +214,8 @@ class GardenLab {
     blowStop();  // the wind swayed the trees of the garden before
     run_.emplace(std::move(*pending_));
     pending_.reset();
+    hybrid_.clear();  // the hybrid scenes were of the garden before
+    hybrid_slots_.clear();
     run_grows_ = grows_;
     FillGround();
     FillObjects();
@@ -312,6 +318,57 @@ class GardenLab {
       for (const compose::GardenYearRecord& r : run_->years())
         if (r.year == year) year_moss_S_ = r.moss_light;
     }
+    return "";
+  }
+
+  // ---- Hybrid trees (thesis ch. 4, as the grove page draws them; render/hybrid.h) ----
+  // Each distinct tree's hybrid scene (default RenderOptions) of garden year `year` (the year
+  // shown), built once; hybridAtlas(g) then fills "atlas.bark|leaves|flowers" with group g's
+  // card-atlas geometry, hybridView(g, slot, ...) its draw list for a camera in its own frame.
+  std::string hybridBuild(int year) {
+    hybrid_.clear();
+    hybrid_slots_.clear();
+    if (!run_) return ErrorText(Status::Error("trees", "nothing grown yet"));
+    if (year < 0 || year > run_->done() || !compose::GardenYearShown(*run_, year))
+      return ErrorText(Status::Error("year", "year " + std::to_string(year) + " is not shown"));
+    hybrid_year_ = year;
+    const RenderOptions options;
+    for (std::size_t g = 0; g < run_->groups().size(); ++g) {
+      const Tree* tree = run_->TreeAtYear(static_cast<int>(g), year);
+      if (tree == nullptr) return ErrorText(Status::Error("year", "no tree of that year"));
+      hybrid_.push_back(BuildHybridScene(*tree, options));
+      if (!hybrid_.back().atlas_fits)
+        return ErrorText(Status::Error("trees", "a tree's card atlas does not fit; use full"));
+    }
+    return "";
+  }
+  int hybridGroups() const { return static_cast<int>(hybrid_.size()); }
+  // Group `group`'s atlas geometry into "atlas.*"; its atlas side (texels), 0 for no such group.
+  int hybridAtlas(int group) {
+    if (group < 0 || group >= hybridGroups()) return 0;
+    atlas_ = BuildAtlasMesh(compose::GardenGroupMeshAt(*run_, group, hybrid_year_), hybrid_[group]);
+    return hybrid_[group].atlas_size;
+  }
+  // Eq. 4.1 per branch of group `group` for a camera in its own frame (metres, radians, pixels)
+  // with the hysteresis of `slot` (0..255, per group), lines lit from (lx, ly, lz); fills "cards"
+  // and "lines" (their skin at rest: joints and weights 0). "" or an error record naming "view".
+  std::string hybridView(int group, int slot, double ex, double ey, double ez, double tx, double ty,
+                         double tz, double fov_y, int width, int height, double lx, double ly,
+                         double lz) {
+    if (group < 0 || group >= hybridGroups() || slot < 0 || slot > 255)
+      return ErrorText(Status::Error("view", "group or slot out of range (no hybrid scene?)"));
+    const Tree* tree = run_->TreeAtYear(group, hybrid_year_);
+    const RenderCamera camera = ViewCamera(ex, ey, ez, tx, ty, tz, fov_y, width, height);
+    HybridSelection& previous = hybrid_slots_[group * 256 + slot];
+    HybridSelection selection =
+        SelectHybrid(*tree, hybrid_[group], camera, previous.draw.empty() ? nullptr : &previous);
+    LineShading shading;
+    shading.light_dir =
+        glm::vec3(static_cast<float>(lx), static_cast<float>(ly), static_cast<float>(lz));
+    draw_ = BuildDrawList(*tree, hybrid_[group], selection, camera, shading);
+    previous = std::move(selection);
+    draw_joints_.assign(draw_.card_positions.size() / 3, 0u);
+    draw_weights_.assign(draw_joints_.size(), 0.f);
     return "";
   }
 
@@ -453,6 +510,24 @@ class GardenLab {
       out.Add("joints", skin_joints_).Add("weights", skin_weights_).Add("blocks", skin_blocks_);
     } else if (group == "wind") {
       out.Add("poses", poses_);
+    } else if (group == "atlas.bark" || group == "atlas.leaves" || group == "atlas.flowers") {
+      const MeshBuffers& m = group == "atlas.bark"     ? atlas_.bark
+                             : group == "atlas.leaves" ? atlas_.leaves
+                                                       : atlas_.flowers;
+      out.Add("positions", m.positions)
+          .Add("normals", m.normals)
+          .Add("uvs", m.uvs)
+          .Add("indices", m.indices);
+    } else if (group == "cards") {
+      out.Add("positions", draw_.card_positions)
+          .Add("uvs", draw_.card_uvs)
+          .Add("indices", draw_.card_indices)
+          .Add("joints", draw_joints_)
+          .Add("weights", draw_weights_);
+    } else if (group == "lines") {
+      out.Add("positions", draw_.line_positions)
+          .Add("colors", draw_.line_colors)
+          .Add("widths", draw_.line_widths);
     } else if (group == "download") {
       out.Add("bytes", download_);
     } else {
@@ -559,6 +634,13 @@ class GardenLab {
   std::vector<float> skin_weights_, skin_blocks_;
   std::vector<float> poses_;  // group "wind": blow_->blocks() x 16 floats
   emscripten::val progress_ = emscripten::val::null();
+  std::vector<HybridScene> hybrid_;  // per group, of hybrid_year_ (hybridBuild)
+  int hybrid_year_ = 0;
+  std::map<int, HybridSelection> hybrid_slots_;  // group * 256 + slot: hybridView's hysteresis
+  AtlasMesh atlas_;                              // group "atlas.*": the last hybridAtlas's
+  HybridDrawList draw_;                          // groups "cards", "lines": the last hybridView's
+  std::vector<uint32_t> draw_joints_;
+  std::vector<float> draw_weights_;
 };
 
 }  // namespace niwa
@@ -594,5 +676,9 @@ EMSCRIPTEN_BINDINGS(niwa_garden) {
       .function("blowStepsPerTick", &niwa::GardenLab::blowStepsPerTick)
       .function("blowSpeed", &niwa::GardenLab::blowSpeed)
       .function("blowWindSpeed", &niwa::GardenLab::blowWindSpeed)
-      .function("blowBlocks", &niwa::GardenLab::blowBlocks);
+      .function("blowBlocks", &niwa::GardenLab::blowBlocks)
+      .function("hybridBuild", &niwa::GardenLab::hybridBuild)
+      .function("hybridGroups", &niwa::GardenLab::hybridGroups)
+      .function("hybridAtlas", &niwa::GardenLab::hybridAtlas)
+      .function("hybridView", &niwa::GardenLab::hybridView);
 }

@@ -208,6 +208,15 @@ export class GardenLab {
   blowWindSpeed(): number;
   /** Pose blocks of every copy (0: not blowing). */
   blowBlocks(): number;
+  /** Each distinct tree's hybrid scene (thesis ch. 4) of garden year `year`: "" or an error record. */
+  hybridBuild(year: number): string;
+  /** Distinct trees with a hybrid scene (0 before hybridBuild). */
+  hybridGroups(): number;
+  /** Group `group`'s card-atlas geometry into "atlas.bark|leaves|flowers"; its atlas side (0: none). */
+  hybridAtlas(group: number): number;
+  /** Group `group`'s draw list ("cards", "lines") for a camera in its frame, hysteresis of `slot` (0..255), lines lit from (lx, ly, lz): "" or an error record naming "view". */
+  hybridView(group: number, slot: number, ex: number, ey: number, ez: number, tx: number, ty: number, tz: number,
+    fovY: number, width: number, height: number, lx: number, ly: number, lz: number): string;
   statsJson(): string;
   hash(): string;
   stateJson(): string;

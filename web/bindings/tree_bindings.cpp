@@ -81,6 +81,7 @@
 #include "tree/tree_params.h"
 #include "tree/tree_state.h"
 #include "tree/tree_textures.h"
+#include "view_camera.h"
 
 namespace niwa {
 namespace {
@@ -434,13 +435,7 @@ class TreeSession {
       return ErrorRecordJson(Status::Error("view", "no hybrid scene"));
     }
     const Tree& tree = run_->tree();
-    RenderCamera camera;
-    camera.eye = glm::vec3(static_cast<float>(ex), static_cast<float>(ey), static_cast<float>(ez));
-    camera.target =
-        glm::vec3(static_cast<float>(tx), static_cast<float>(ty), static_cast<float>(tz));
-    camera.fov_y = static_cast<float>(fov_y);
-    camera.width = std::max(1, width);
-    camera.height = std::max(1, height);
+    const RenderCamera camera = ViewCamera(ex, ey, ez, tx, ty, tz, fov_y, width, height);
     selection_ = SelectHybrid(tree, hybrid_, camera, has_selection_ ? &selection_ : nullptr);
     has_selection_ = true;
     LineShading shading;  // eq. 4.2 lit by the light model's sun (renderer.js setSun)

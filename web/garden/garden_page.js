@@ -28,7 +28,8 @@
 // does not change when scrubbing (a view, like the camera); the downloads are the last year's.
 // Blow / Still (garden_wind.js): the wind over the last year's trees, a simulator per planted tree
 // in the worker, its poses skinned by the renderer; a regrow or a year picked stops it.
-// Does not (yet): hybrid (card) trees, dragging things (a Move, then a click), regrowing a year the record left out
+// Trees: full | hybrid (garden_hybrid.js): far copies as the grove's cards and lines.
+// Does not (yet): dragging things (a Move, then a click), regrowing a year the record left out
 // (over its memory share: the scrubber says so), or several workers growing at once.
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { Frame } from '../gl/frame.js';
@@ -43,6 +44,7 @@ import { Notices, copyLink, mountStudyNav, showEmbedDialog } from '../shell/stud
 import { setHooks } from '../shell/test_hooks.js';
 import { GardenRenderer } from './garden_renderer.js';
 import { GardenWind } from './garden_wind.js';
+import { GardenHybrid } from './garden_hybrid.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
@@ -76,6 +78,10 @@ const controller = new StudyController({
   onError: (msg, when) => {
     if (msg.control === 'wind') {  // Blow refused: its line beside the button
       gardenWind.failed(msg);
+      return true;
+    }
+    if (msg.control === 'trees') {  // hybrid trees refused: its line beside the Trees select
+      hybrid?.failed(msg);
       return true;
     }
     // A dropped file's read failed: its line beside the file control; the garden shown stays.
@@ -114,13 +120,15 @@ let frameNext = true;
 const camera = new OrbitCamera();
 let frame = null;
 let renderer = null;
+let hybrid = null;  // the Trees: full | hybrid control (garden_hybrid.js)
 const loop = new ProgressiveLoop({
   renderer: () => (renderer ? frame : null),
   camera,
   onDrawn: (drawn) => {
-    setHooks({ drawnSerial: gardenSerial, drawnTrees: drawn.trees ?? 0, drawnTriangles: drawn.triangles, drawCalls: drawn.drawCalls, shadow: drawn.shadow ?? '', drawnOverlay: renderer?.overlay ?? 'none' });
+    setHooks({ drawnSerial: gardenSerial, drawnTrees: drawn.trees ?? 0, drawnTriangles: drawn.triangles, drawnLines: drawn.lines ?? 0, drawCalls: drawn.drawCalls, shadow: drawn.shadow ?? '', drawnOverlay: renderer?.overlay ?? 'none' });
     yearDrawn();
     gardenWind.drawn();
+    hybrid?.drawn();
   },
 });
 const requestFrame = () => loop.request();
@@ -131,6 +139,8 @@ async function startRenderer() {
       frame = new Frame(ui.canvas, { camera, sun: DEFAULT_SUNS.tree, ground: false, fit: false, request: () => loop.request(), what: 'the garden' });
       await frame.init();
       renderer = await frame.addLayer(new GardenRenderer(frame));
+      hybrid = new GardenHybrid({ worker, frame, full: () => renderer, camera, select: $('trees-mode'), info: $('trees-help'), request: () => loop.request(), stopWind: () => gardenWind.stop() });
+      await hybrid.init();
       return frame;
     }, {
       canvas: ui.canvas, camera,
@@ -592,6 +602,7 @@ worker.on('garden', (msg) => {
   controller.grown(msg.hash);
   gardenSerial += 1;
   resetYears(msg.stats.years, msg.years, msg.grows);
+  hybrid?.garden(bounds, lastYear, msg.grows);
   controller.showWork(false);
   ui.progress.textContent = '';
   const s = msg.stats;
@@ -666,6 +677,7 @@ worker.on('gardenYear', (msg) => {
   renderer.setYear(msg.buffers.year, msg.year, msg.year === lastYear);
   worker.recycle(msg.buffers);
   shownYear = msg.year;
+  hybrid?.garden(bounds, shownYear, gardenGrows);
   yearSerial += 1;
   setHooks({ yearSerial, workerGrows: msg.grows, yearBuildMs: msg.ms.toFixed(1) });
   loop.request(true);  // the picked year at the next animation frame
@@ -785,7 +797,8 @@ const gardenWind = new GardenWind({
   worker, button: $('wind'), info: $('wind-info'), renderer: () => renderer,
   moved: () => loop.moved(), request: () => loop.request(), trees: () => bounds?.trees,
   canBlow: () => (!bounds || !renderer ? 'Nothing grown yet.' : !bounds.trees?.length ? 'No trees to sway.'
-    : shownYear !== lastYear ? `Blow sways the last year's trees: show year ${lastYear} first.` : ''),
+    : shownYear !== lastYear ? `Blow sways the last year's trees: show year ${lastYear} first.`
+      : hybrid?.mode === 'hybrid' ? 'Blow sways the full trees: set Trees to full first.' : ''),
 });
 
 // ---------------------------------------------------------------- start

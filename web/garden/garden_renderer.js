@@ -10,8 +10,10 @@
 // setSkin adds the trees' sway skin (joints, weights per vertex; each copy's first pose block) to
 // their VAO, setPoses uploads every copy's poses into one pose texture and the shaders skin each
 // copy with its own block (shaders/common/skin.glsl); still() draws the grown shape again.
+// Hybrid trees (garden_hybrid.js): setFull(mask) draws only the copies the mask keeps in full
+// (the others are the grove renderer's cards and lines, another layer); setFull(null) all of them.
 // A StudyLayer (web/gl/frame.js), a layer of a Frame of fit: false (metres).
-// Does not: talk to the worker, know the garden model, or draw the hybrid (card) trees of the grove.
+// Does not: talk to the worker, know the garden model, or draw the hybrid (card) trees itself.
 import { copyOf, floatAttribute, staticBuffer, uintAttribute, viewOf } from '../gl/buffers.js';
 import { StudyLayer } from '../gl/frame.js';
 import { loadPrograms } from '../gl/program.js';
@@ -55,6 +57,7 @@ export class GardenRenderer extends StudyLayer {
     if (!part) return;
     this.gl.deleteVertexArray(part.vao);
     for (const b of part.buffers) this.gl.deleteBuffer(b);
+    if (part.full) this.gl.deleteBuffer(part.full.buffer);
   }
 
   // An indexed mesh (positions, normals, indices, a per-vertex tint or none, a per-vertex birth
@@ -129,6 +132,8 @@ export class GardenRenderer extends StudyLayer {
       gl.bindVertexArray(trees.vao);
       trees.instanceBuffer = staticBuffer(gl, t.instances);
       trees.buffers.push(trees.instanceBuffer);
+      trees.instanceData = copyOf(Float32Array, t.instances);  // the copies' x, y, z, turn (setFull)
+      trees.full = null;  // setFull's buffer of the copies drawn in full, or null (all of them)
       gl.bindVertexArray(null);
       const r = viewOf(Uint32Array, t.ranges);
       trees.groups = [];
@@ -137,6 +142,30 @@ export class GardenRenderer extends StudyLayer {
       }
       this.trees = trees;
     }
+  }
+
+  // The copies drawn in full: mask (Uint8Array, one per copy in the instances' order, 1 = full) or
+  // null (every copy). Each group's kept copies are packed into one buffer, drawn unskinned.
+  setFull(mask) {
+    const gl = this.gl, trees = this.trees;
+    if (!trees) return;
+    this.progress.abort();  // a frame in parts must not draw from the buffer deleted here
+    if (trees.full) gl.deleteBuffer(trees.full.buffer);
+    trees.full = null;
+    if (!mask) return;
+    const data = new Float32Array(trees.instanceData.length);
+    const ranges = [];
+    let n = 0;
+    for (const g of trees.groups) {
+      const first = n;
+      for (let k = g.firstInstance; k < g.firstInstance + g.instances; ++k) {
+        if (!mask[k]) continue;
+        data.set(trees.instanceData.subarray(k * 4, k * 4 + 4), n * 4);
+        n += 1;
+      }
+      ranges.push({ firstInstance: first, instances: n - first });
+    }
+    trees.full = { buffer: staticBuffer(gl, data.subarray(0, Math.max(4, n * 4))), ranges };
   }
 
   // Blow: the worker's 'blowing' skin ({joints: Uint32 and weights: Float32 per vertex of the
@@ -235,12 +264,15 @@ export class GardenRenderer extends StudyLayer {
 
   // The trees' draw of triangles [first, first + count) of group `g` over its instances (each
   // instance `tris` triangles): partial instances drawn alone, whole ones in one instanced draw.
-  #drawGroup(g, first, count) {
+  // copies: {firstInstance, instances} of the instance buffer, or of setFull's when `full`.
+  #drawGroup(g, first, count, copies, full) {
     const gl = this.gl;
     const tris = g.count / 3;
-    const blocks = this.trees.blockBuffer;  // once skinned, always pointed at its copies (in range)
+    // once skinned, always pointed at its copies (in range); the copies of setFull drawn unskinned
+    const blocks = full ? null : this.trees.blockBuffer;
+    const buffer = full ? full.buffer : this.trees.instanceBuffer;
     const draw = (instance, from, n, instances) => {
-      floatAttribute(gl, 3, this.trees.instanceBuffer, 4, INSTANCE_BYTES, (g.firstInstance + instance) * INSTANCE_BYTES, 1);
+      floatAttribute(gl, 3, buffer, 4, INSTANCE_BYTES, (copies.firstInstance + instance) * INSTANCE_BYTES, 1);
       if (blocks) floatAttribute(gl, 7, blocks, 1, 4, (g.firstInstance + instance) * 4, 1);
       gl.drawElementsInstanced(gl.TRIANGLES, n * 3, gl.UNSIGNED_INT, (g.firstIndex + from * 3) * 4, instances);
     };
@@ -291,19 +323,23 @@ export class GardenRenderer extends StudyLayer {
     };
   }
 
-  #treeSteps(uniforms, p) {
+  // every: all copies (the shadow map: kept while the camera moves, so the far copies drawn as
+  // cards still cast their full shadow), else the copies of setFull.
+  #treeSteps(uniforms, p, every = false) {
     const gl = this.gl;
     if (!this.trees) return [];
-    return this.trees.groups.filter((g) => g.count > 0 && g.instances > 0).map((g) => ({
-      primitives: (g.count / 3) * g.instances,
-      setup: () => {
-        gl.bindVertexArray(this.trees.vao);
-        uniforms();
-        this.#bindSway(p, this.swayOn && !!this.trees.blockBuffer);
-        gl.vertexAttrib1f(4, 0);
-      },
-      draw: (first, n) => this.#drawGroup(g, first, n),
-    }));
+    const full = every ? null : this.trees.full;
+    return this.trees.groups.map((g, k) => ({ g, copies: full ? full.ranges[k] : g }))
+      .filter(({ g, copies }) => g.count > 0 && copies.instances > 0).map(({ g, copies }) => ({
+        primitives: (g.count / 3) * copies.instances,
+        setup: () => {
+          gl.bindVertexArray(this.trees.vao);
+          uniforms();
+          this.#bindSway(p, !full && this.swayOn && !!this.trees.blockBuffer);
+          gl.vertexAttrib1f(4, 0);
+        },
+        draw: (first, n) => this.#drawGroup(g, first, n, copies, full),
+      }));
   }
 
   // The year the ivy is shown to (every ivy vertex at the last year grown).
@@ -331,7 +367,7 @@ export class GardenRenderer extends StudyLayer {
     };
     const steps = [];
     if (this.objects) steps.push(this.#meshStep(this.objects, uniforms, s));
-    steps.push(...this.#treeSteps(uniforms, s));
+    steps.push(...this.#treeSteps(uniforms, s, true));
     return steps;
   }
 
@@ -364,6 +400,7 @@ export class GardenRenderer extends StudyLayer {
     for (const s of steps) totals.triangles += s.primitives;
     totals.drawCalls = steps.length;
     totals.trees = this.trees ? this.trees.groups.reduce((n, g) => n + g.instances, 0) : 0;
+    totals.fullTrees = this.trees?.full ? this.trees.full.ranges.reduce((n, r) => n + r.instances, 0) : totals.trees;
     return { steps, totals };
   }
 

@@ -21,7 +21,7 @@ import { StudyController } from '../shell/study_controller.js';
 import { Notices, mountStudyNav } from '../shell/study_page.js';
 import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
 import { treeExtras } from '../shell/worker_client.js';
-import { GroveRenderer } from './grove_renderer.js';
+import { GroveRenderer, MEMBER_FLOATS } from './grove_renderer.js';
 
 // The unique trees: a few seconds of growing in total.
 export const UNIQUE = [
@@ -213,10 +213,10 @@ function requestViews() {
     const rep = group.members[0];
     const s = rep.instance.scale, p = rep.instance.position;
     const local = (v) => v.map((x, k) => (x - p[k]) / s);
-    const members = new Float32Array(group.members.length * 6);  // grove_renderer MEMBER_FLOATS
+    const members = new Float32Array(group.members.length * MEMBER_FLOATS);
     group.members.forEach((m, i) => {
       members.set([...m.instance.position, m.instance.scale, (m.instance.scale / s) * (rep.distance / m.distance),
-        m.instance.block], i * 6);
+        m.instance.block, 0], i * MEMBER_FLOATS);
     });
     viewPending.lists.push({ tree: group.tree, band: group.band, members });
     treeClients[group.tree].post('view', {

@@ -17,7 +17,8 @@ import { PARTS, SHADERS, paintAtlas } from './tree_renderer.js';
 
 const SEGMENT_ROW = 1024;  // texels per row of a line-segment texture (grove_line.vert)
 const SEGMENT_TEXELS = 4;  // p0 + width, p1, colour, skin (joint0, joint1, weight0, weight1)
-const MEMBER_FLOATS = 6;   // per band member: x, y, z, scale, width scale, pose block
+// Per band member: x, y, z, scale, width scale, pose block, turn about y (radians; the grove's 0).
+export const MEMBER_FLOATS = 7;
 
 export class GroveRenderer extends StudyLayer {
   // target: the page's Frame ({canvas, gl}: a layer of it, in metres) or a canvas (its own
@@ -56,11 +57,12 @@ export class GroveRenderer extends StudyLayer {
 
   // Per-instance attributes on the bound VAO: `location` = vec4 (x, y, z, scale) from `b` (stride
   // `floats` floats) and, when floats is MEMBER_FLOATS, location + 1 = the width scale
-  // (grove_line.vert) and location + 2 = the instance's pose block (grove_card/line.vert).
+  // (grove_line.vert), location + 2 = the instance's pose block (grove_card/line.vert) and
+  // location + 3 = its turn about y.
   #instanceAttributes(b, floats, location = 7) {
     floatAttribute(this.gl, location, b, 4, floats * 4, 0, 1);
     if (floats === MEMBER_FLOATS) {
-      for (const k of [1, 2]) floatAttribute(this.gl, location + k, b, 1, floats * 4, 12 + 4 * k, 1);
+      for (const k of [1, 2, 3]) floatAttribute(this.gl, location + k, b, 1, floats * 4, 12 + 4 * k, 1);
     }
   }
 
@@ -101,6 +103,35 @@ export class GroveRenderer extends StudyLayer {
     };
     this.setRestPoses(index);
     if (bounds) this.#growBounds(instances, bounds);
+  }
+
+  // Unique tree `index` drawn only in hybrid mode (the garden's far copies, web/garden/garden_hybrid.js):
+  // its card atlas painted from the worker's hybrid geometry (as addTree's), no full mesh, one pose
+  // block at rest (every band member's pose block 0).
+  addCards(index, hybrid) {
+    this.#dropTree(this.trees[index]);
+    this.trees[index] = { parts: {}, instanceBuffer: null, instances: 1, atlas: this.#paintAtlas(hybrid), nodes: 1, poseTexture: this.gl.createTexture(), poseRows: 0 };
+    this.setRestPoses(index);
+  }
+
+  // Frees one unique tree's meshes, atlas and pose texture.
+  #dropTree(tree) {
+    if (!tree) return;
+    const gl = this.gl;
+    for (const part of Object.values(tree.parts)) {
+      gl.deleteVertexArray(part.vao);
+      part.buffers.forEach((b) => gl.deleteBuffer(b));
+    }
+    if (tree.instanceBuffer) gl.deleteBuffer(tree.instanceBuffer);
+    if (tree.atlas) gl.deleteTexture(tree.atlas);
+    gl.deleteTexture(tree.poseTexture);
+  }
+
+  // Every unique tree and band dropped (the garden's trees replaced).
+  clearTrees() {
+    this.setBands([]);  // (aborts a frame in parts: its steps read these trees)
+    for (const tree of this.trees) this.#dropTree(tree);
+    this.trees = [];
   }
 
   // The grove's box (metres, worldBounds) grown by every instance (x, y, z, scale) of a tree of box
@@ -171,9 +202,11 @@ export class GroveRenderer extends StudyLayer {
   // Replaces every band's draw list at once. lists: [{tree, band, cards, lines, members}] with the
   // worker's 'drawList' buffers (with the sway skin: cards.joints/weights per vertex,
   // lines.joints/weights 2 per segment) and members = Float32Array, MEMBER_FLOATS per instance
-  // (x, y, z, scale, width scale, pose block = the instance's index among its unique tree's instances).
+  // (x, y, z, scale, width scale, pose block = the instance's index among its unique tree's
+  // instances, turn about y).
   setBands(lists) {
     const gl = this.gl;
+    this.progress.abort();  // a frame in parts must not draw the bands deleted here
     for (const band of this.bands.values()) {
       band.buffers.forEach((b) => gl.deleteBuffer(b));
       if (band.vaoCards) gl.deleteVertexArray(band.vaoCards);
@@ -377,18 +410,7 @@ export class GroveRenderer extends StudyLayer {
   dispose() {
     const gl = this.gl;
     super.dispose();
-    this.setBands([]);
-    for (const tree of this.trees) {
-      if (!tree) continue;
-      for (const part of Object.values(tree.parts)) {
-        gl.deleteVertexArray(part.vao);
-        part.buffers.forEach((b) => gl.deleteBuffer(b));
-      }
-      gl.deleteBuffer(tree.instanceBuffer);
-      if (tree.atlas) gl.deleteTexture(tree.atlas);
-      gl.deleteTexture(tree.poseTexture);
-    }
-    this.trees = [];
+    this.clearTrees();
     if (this.atlasDepth) gl.deleteRenderbuffer(this.atlasDepth.rb);
     this.atlasDepth = null;
     if (this.quads) gl.deleteBuffer(this.quads.buffer);

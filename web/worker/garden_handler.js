@@ -26,6 +26,13 @@
 // An 'image' ({role: heightmap | mask, name, bytes}) is an opened PNG for the heightmap ground or
 // the density mask, decoded in the core and kept by name ('imageLoaded' or an error naming
 // "ground.file" or "mask"); a 'mesh' a dropped mesh ('meshLoaded' or an error naming "mesh").
+// Hybrid trees (thesis ch. 4, the grove's; web/garden/garden_hybrid.js): 'hybrid' ({year, grows})
+// builds each distinct tree's hybrid scene of that year and answers {type: 'gardenAtlas', year,
+// run, atlases: [per group {atlasSize, bark, leaves, flowers}]} (the card atlas's geometry, as the
+// tree handler's 'tree' hybrid); 'hybridViews' ({tag, light, views: [{group, slot, camera: {eye,
+// target, fovY, width, height}}]}) answers {type: 'gardenDrawLists', tag, run, lists: [per view
+// {group, slot, cards: {positions, uvs, indices, joints, weights}, lines: {positions, colors,
+// widths}}]}, each view's eq. 4.1 choice with its (group, slot)'s hysteresis.
 // Messages: web/worker/protocol.js. Does not: load the module, route messages or catch errors
 // (web/worker/worker.js does).
 import { errorOf, errorReply } from './errors.js';
@@ -152,6 +159,48 @@ export function createHandler(Module, ctx) {
     post({ type: 'imageLoaded', id: msg.id, client, image: JSON.parse(entry.lab.imageJson()) });
   }
 
+  // Hybrid trees: the atlases of every distinct tree of garden year `year`.
+  function hybrid(msg, client) {
+    const entry = labOf(client);
+    if (msg.grows !== undefined && msg.grows !== entry.lab.runGrows()) return;  // a garden since regrown
+    const error = errorOf(entry.lab.hybridBuild(Number(msg.year)));
+    if (error) {
+      post(errorReply(error, msg.id, client, { control: 'trees' }));
+      return;
+    }
+    const transfer = [], counts = { reused: 0, fresh: 0, dropped: 0 };
+    const atlases = [];
+    for (let g = 0; g < entry.lab.hybridGroups(); ++g) {
+      const atlasSize = entry.lab.hybridAtlas(g);
+      const part = (name) => returned.take(client, `atlas${g}.${name}`, entry.lab.buffers(`atlas.${name}`), transfer, counts);
+      atlases.push({ atlasSize, bark: part('bark'), leaves: part('leaves'), flowers: part('flowers') });
+    }
+    post({ type: 'gardenAtlas', id: msg.id, client, year: Number(msg.year), run: entry.lab.runGrows(), atlases }, transfer);
+  }
+
+  // One round of hybrid views: each (group, slot)'s draw list for its camera in the tree's frame.
+  function hybridViews(msg, client) {
+    const entry = labOf(client);
+    const n = (x, d) => (Number.isFinite(Number(x)) ? Number(x) : d);
+    const light = msg.light || [0.3, 0.8, 0.5];
+    const transfer = [], counts = { reused: 0, fresh: 0, dropped: 0 };
+    const lists = [];
+    (msg.views || []).forEach((v, i) => {
+      const c = v.camera || {};
+      const eye = c.eye || [0, 0, 10], target = c.target || [0, 0, 0];
+      const error = errorOf(entry.lab.hybridView(Number(v.group), Number(v.slot), n(eye[0], 0), n(eye[1], 0), n(eye[2], 10),
+        n(target[0], 0), n(target[1], 0), n(target[2], 0), n(c.fovY, Math.PI / 4), Math.round(n(c.width, 512)),
+        Math.round(n(c.height, 512)), n(light[0], 0.3), n(light[1], 0.8), n(light[2], 0.5)));
+      if (error) throw new Error(error.message);
+      lists.push({
+        group: v.group, slot: v.slot,
+        cards: returned.take(client, `cards${i}`, entry.lab.buffers('cards'), transfer, counts),
+        lines: returned.take(client, `lines${i}`, entry.lab.buffers('lines'), transfer, counts),
+      });
+    });
+    post({ type: 'gardenDrawLists', id: msg.id, client, tag: msg.tag, run: entry.lab.runGrows(), lists }, transfer);
+  }
+
   const FORMATS = ['glb', 'svg', 'json', 'heightmap'];
   const exportGarden = (msg, client) => exportLabDownload(labOf(client).lab, FORMATS, msg, client, post);
 
@@ -174,6 +223,8 @@ export function createHandler(Module, ctx) {
       wind: (msg, client) => (msg.play ? blow.start(msg, client) : blow.stop(client)),
       poseDone: (msg, client) => blow.poseDone(client),
       recycle: (msg, client) => returned.give(client, msg.buffers),
+      hybrid,
+      hybridViews,
     },
   };
 }

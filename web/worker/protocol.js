@@ -214,6 +214,12 @@
  * @typedef {Envelope & {type: 'mesh', name: string, bytes: ArrayBuffer}} GardenMeshMessage
  *   -> {type: 'meshLoaded', mesh: {name, triangles}} or an error naming "mesh": the mesh kept by
  *   name for the state's mesh objects ({kind: 'mesh', file: name}; at most 8 a client)
+ *   Hybrid trees (web/garden/garden_hybrid.js): {type: 'hybrid', year, grows?} -> {type:
+ *   'gardenAtlas', year, run, atlases: [per distinct tree {atlasSize, bark, leaves, flowers}: the
+ *   card atlas's geometry]} (an error with control: 'trees' when a scene cannot be built); {type:
+ *   'hybridViews', tag, light, views: [{group, slot (0..255), camera: {eye, target, fovY, width,
+ *   height} in the tree's frame}]} -> {type: 'gardenDrawLists', tag, run, lists: [per view {group,
+ *   slot, cards: {positions, uvs, indices, joints, weights}, lines: {positions, colors, widths}}]}.
  * @typedef {Envelope & {type: 'wind', play: boolean, wind?: Object}} GardenWindMessage
  *   Blow (web/worker/garden_blow.js): play: true starts one sway simulator per planted tree of the
  *   last garden in the wind rows `wind` over the garden's defaults -> {type: 'blowing', run, skin:
