@@ -50,15 +50,16 @@ try {
       ...sets.flatMap((s) => ['--set', s]), '--out', out]);
     return readFileSync(out);
   };
-  // preset, years, --set values, expected parts, the leaf texture's name.
+  // preset, years, --set values, expected parts, the leaf texture's name (the species presets draw
+  // their leaves as sprays of leaf_spray leaves: '_spray3'; the -thesis presets single leaves).
   const cases = [
     { name: 'sakura-summer', preset: 'sakura-thesis', years: 8, sets: [], parts: ['bark', 'leaves', 'flowers'], leaf: 'leaf_broad_summer' },
     { name: 'sakura-spring', preset: 'sakura-thesis', years: 8, sets: ['season=0'], parts: ['bark', 'flowers'] },
     { name: 'sakura-autumn', preset: 'sakura-thesis', years: 8, sets: ['season=2'], parts: ['bark', 'leaves'], leaf: 'leaf_broad_autumn' },
     { name: 'sakura-winter', preset: 'sakura-thesis', years: 8, sets: ['season=3'], parts: ['bark'] },
-    { name: 'pine-winter', preset: 'pine', years: 6, sets: ['season=3'], parts: ['bark', 'leaves'], leaf: 'leaf_needle_winter' },
-    { name: 'maple-autumn', preset: 'maple', years: 6, sets: ['season=2'], parts: ['bark', 'leaves'], leaf: 'leaf_palmate_autumn' },
-    { name: 'ginkgo-autumn', preset: 'ginkgo', years: 6, sets: ['season=2'], parts: ['bark', 'leaves'], leaf: 'leaf_fan_autumn' },
+    { name: 'pine-winter', preset: 'pine', years: 6, sets: ['season=3'], parts: ['bark', 'leaves'], leaf: 'leaf_needle_winter_spray3' },
+    { name: 'maple-autumn', preset: 'maple', years: 6, sets: ['season=2'], parts: ['bark', 'leaves'], leaf: 'leaf_palmate_autumn_spray3' },
+    { name: 'ginkgo-autumn', preset: 'ginkgo', years: 6, sets: ['season=2'], parts: ['bark', 'leaves'], leaf: 'leaf_fan_autumn_spray3' },
     { name: 'keyaki-fan', preset: 'keyaki-thesis', years: 4, sets: ['leaf_shape=3'], parts: ['bark', 'leaves'], leaf: 'leaf_fan_summer' },
     { name: 'tsutsuji-spring', preset: 'tsutsuji', years: 8, sets: ['season=0'], parts: ['bark', 'leaves', 'flowers'], leaf: 'leaf_broad_spring' },
   ];
