@@ -13,21 +13,9 @@
 // Needs build/wasm/web/niwa_web.js and playwright-core. SwiftShader draws on the CPU.
 import { startServer } from '../scripts/serve.mjs';
 import { launchChromium } from '../tests/browser/harness.mjs';
-import { newBenchPage } from './page_bench.mjs';
+import { median, newBenchPage, wholeNumberArgs } from './page_bench.mjs';
 
-const args = { reps: 5 };
-for (let i = 2; i < process.argv.length; i += 2) {
-  const key = process.argv[i].replace(/^--/, '');
-  if (!(key in args) || !Number.isInteger(Number(process.argv[i + 1])) || Number(process.argv[i + 1]) < 1) {
-    console.error('usage: node bench/edit_latency.mjs [--reps N]');
-    process.exit(2);
-  }
-  args[key] = Number(process.argv[i + 1]);
-}
-const median = (xs) => {
-  const s = [...xs].sort((a, b) => a - b);
-  return s.length % 2 ? s[s.length >> 1] : 0.5 * (s[s.length / 2 - 1] + s[s.length / 2]);
-};
+const args = wholeNumberArgs({ reps: 5 }, 'usage: node bench/edit_latency.mjs [--reps N]');
 
 const server = await startServer({ port: 0 });
 const browser = await launchChromium();

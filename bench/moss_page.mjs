@@ -14,22 +14,9 @@
 // SwiftShader draws on the CPU, so the frame times hold a software rasteriser's share.
 import { startServer } from '../scripts/serve.mjs';
 import { launchChromium } from '../tests/browser/harness.mjs';
-import { linkToFrameMs, newBenchPage, waitDrawn } from './page_bench.mjs';
+import { linkToFrameMs, median, newBenchPage, waitDrawn, wholeNumberArgs } from './page_bench.mjs';
 
-const args = { reps: 3, scrubs: 20 };
-for (let i = 2; i < process.argv.length; i += 2) {
-  const key = process.argv[i].replace(/^--/, '');
-  if (!(key in args) || !Number.isInteger(Number(process.argv[i + 1])) || Number(process.argv[i + 1]) < 1) {
-    console.error('usage: node bench/moss_page.mjs [--reps N] [--scrubs N]');
-    process.exit(2);
-  }
-  args[key] = Number(process.argv[i + 1]);
-}
-
-const median = (xs) => {
-  const s = [...xs].sort((a, b) => a - b);
-  return s.length % 2 ? s[s.length >> 1] : 0.5 * (s[s.length / 2 - 1] + s[s.length / 2]);
-};
+const args = wholeNumberArgs({ reps: 3, scrubs: 20 }, 'usage: node bench/moss_page.mjs [--reps N] [--scrubs N]');
 const round = (x, digits = 1) => Number(x.toFixed(digits));
 
 const THESIS = 'preset=nomura2010&scene=thesis&days=300&photons=8192&max_mosses=16384';

@@ -1,7 +1,7 @@
 // Shared steps of the page benchmarks (bench/garden_page.mjs, moss_page.mjs, terrain_page.mjs): a
 // fresh 1200 × 800 page that collects page errors, waiting for a study's run to be drawn, and the
-// time from setting a link to the frame that shows its run. Does not: start the server or browser,
-// or print anything.
+// time from setting a link to the frame that shows its run; their whole-number flags and medians
+// (edit_latency.mjs too). Does not: start the server or browser, or print anything.
 
 // A new page of `browser` at 1200 × 800 (device scale 1) and the list its page errors go to.
 export async function newBenchPage(browser) {
@@ -37,4 +37,25 @@ export async function linkToFrameMs(page, serialKey, hash) {
     observer.observe(document.documentElement, { attributes: true });
     location.hash = h;
   }), { key: serialKey, h: hash, above: n });
+}
+
+// `--key N` pairs of process.argv over `defaults` (each a whole number ≥ 1); anything else prints
+// `usage` and exits 2.
+export function wholeNumberArgs(defaults, usage) {
+  const args = { ...defaults };
+  for (let i = 2; i < process.argv.length; i += 2) {
+    const key = process.argv[i].replace(/^--/, '');
+    if (!(key in args) || !Number.isInteger(Number(process.argv[i + 1])) || Number(process.argv[i + 1]) < 1) {
+      console.error(usage);
+      process.exit(2);
+    }
+    args[key] = Number(process.argv[i + 1]);
+  }
+  return args;
+}
+
+// The median of numbers (the mean of the middle two for an even count).
+export function median(xs) {
+  const s = [...xs].sort((a, b) => a - b);
+  return s.length % 2 ? s[s.length >> 1] : 0.5 * (s[s.length / 2 - 1] + s[s.length / 2]);
 }

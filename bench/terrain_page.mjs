@@ -15,22 +15,9 @@
 // SwiftShader draws on the CPU: screen_ms is reported, the goal is on the worker's regrow.
 import { startServer } from '../scripts/serve.mjs';
 import { launchChromium } from '../tests/browser/harness.mjs';
-import { newBenchPage, waitDrawn } from './page_bench.mjs';
+import { median, newBenchPage, waitDrawn, wholeNumberArgs } from './page_bench.mjs';
 
-const args = { reps: 7, res: 512 };
-for (let i = 2; i < process.argv.length; i += 2) {
-  const key = process.argv[i].replace(/^--/, '');
-  if (!(key in args) || !Number.isInteger(Number(process.argv[i + 1])) || Number(process.argv[i + 1]) < 1) {
-    console.error('usage: node bench/terrain_page.mjs [--reps N] [--res CELLS]');
-    process.exit(2);
-  }
-  args[key] = Number(process.argv[i + 1]);
-}
-
-const median = (xs) => {
-  const s = [...xs].sort((a, b) => a - b);
-  return s.length % 2 ? s[s.length >> 1] : 0.5 * (s[s.length / 2 - 1] + s[s.length / 2]);
-};
+const args = wholeNumberArgs({ reps: 7, res: 512 }, 'usage: node bench/terrain_page.mjs [--reps N] [--res CELLS]');
 
 // A closed loop of n points (fractions of the plan canvas): r = 0.3·(1 + 0.2 cos(3φ + phase) +
 // 0.06 sin(11φ)), one shape per repetition.
