@@ -2,7 +2,8 @@
 // node tests/browser/ux.test.mjs (exit 0 = pass). Getting started controls generated from the
 // table's simple rows; help on focus and on tap; an error beside its field and the "stale" label;
 // the trunk cut refused and no .glb of an empty tree; a slider drag grows only the latest value;
-// long tasks of a 30 -> 15 year change (numbers to build/artifacts/ux-longtasks.json); Blow moves
+// long tasks of a 30 -> 15 year change (numbers to build/artifacts/ux-longtasks.json; only under
+// scripts/bench, NIWA_TIMED=1); Blow moves
 // at once; touch targets >= 44 px and tap-to-cut at a phone viewport. Screenshots:
 // build/artifacts/ux-*.png.
 // Its answer times are speed goals (harness.mjs timedCheck): checked by scripts/bench with NIWA_TIMED=1,
@@ -11,7 +12,7 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import {
-  ARTIFACTS, NATIVE, TIMEOUT, check, nativeStats, newContext, runBrowserTest, snapshotCanvas, snapshotDifference, timedCheck,
+  ARTIFACTS, NATIVE, TIMED, TIMEOUT, check, nativeStats, newContext, runBrowserTest, snapshotCanvas, snapshotDifference, timedCheck,
   waitReady, watchPage,
 } from './harness.mjs';
 
@@ -335,8 +336,15 @@ await runBrowserTest(async (server, browser) => {
   await page.locator('#view').screenshot({ path: path.join(ARTIFACTS, 'ux-blow-early.png') });
   await page.click('#wind');
 
-  // ---- 7. Long tasks while a 30-year tree becomes a 15-year one.
-  await longTasks(context, server);
+  // ---- 7. Long tasks while a 30-year tree becomes a 15-year one: a speed goal, so its 30-year grow
+  // (23 s of the suite's CPU) runs only under scripts/bench (NIWA_TIMED=1); here the observer the
+  // measurement reads is checked on this page (the Blow above made tasks to see).
+  if (TIMED) {
+    await longTasks(context, server);
+  } else {
+    check('long tasks are observed in this Chromium',
+      await page.evaluate(() => PerformanceObserver.supportedEntryTypes.includes('longtask') && Array.isArray(window.__longtasks)));
+  }
 
   // ---- 8. A phone: touch targets, help on tap, tap a branch and Cut.
   const phone = await newContext(browser, { viewport: { width: 390, height: 760 }, isMobile: true, hasTouch: true, deviceScaleFactor: 1 });
