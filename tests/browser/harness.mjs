@@ -113,14 +113,33 @@ export function waitGroveDrawn(page, mode, viewSerialAbove = 0) {
 }
 
 // Debian chromium with a real WebGL2 context on SwiftShader (see ../shared/TOOLCHAIN.md).
-export function launchChromium() {
-  return chromium.launch({
-    executablePath: '/usr/bin/chromium',
-    headless: true,
-    args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-gpu-sandbox',
-      '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update',
-      '--disable-sync'],
-  });
+export const CHROMIUM_OPTIONS = {
+  executablePath: '/usr/bin/chromium',
+  headless: true,
+  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-gpu-sandbox',
+    '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update',
+    '--disable-sync'],
+};
+
+// The test's browser. Under scripts/test, each lane's tests connect to that lane's one browser
+// (NIWA_BROWSER_WS, tests/browser/lane_browser.mjs) instead of starting their own: a fresh browser's
+// first page cost 5-6 CPU s more than the same page in a browser that had drawn before (its GPU
+// process compiling SwiftShader's routines and ANGLE's shaders; tree, ivy and garden pages alike,
+// measured 2026-12-07), plus 2.4 s to start it, about 400 CPU s over the browser tests. Each test
+// still gets its own contexts (cookies, storage, caches) and its own server (its own origin); closing
+// a connected browser closes this test's contexts only. When the lane's browser is gone (it crashed),
+// the test starts its own and says so. Alone (node tests/browser/X.test.mjs) or under scripts/bench,
+// a fresh browser as before.
+export async function launchChromium() {
+  const ws = process.env.NIWA_BROWSER_WS;
+  if (ws) {
+    try {
+      return await chromium.connect(ws, { timeout: 30_000 });
+    } catch (e) {
+      console.log(`(the lane's browser at ${ws} did not answer: ${String(e.message).split('\n')[0]}; starting one)`);
+    }
+  }
+  return chromium.launch(CHROMIUM_OPTIONS);
 }
 
 // Runs one browser test: serves the app on a free port, launches Chromium, awaits
