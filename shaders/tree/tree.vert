@@ -16,6 +16,10 @@ uniform mat4 uViewProjection;
 uniform mat4 uSunViewProjection;  // the shadow map's (web/gl/shadow_map.js)
 uniform float uShadowNormalOffset;  // metres along the normal (towards the sun) before the lookup
 uniform vec3 uLightDirection;       // unit, towards the sun
+// The selection's x-ray pass only (else 0): clip-space x and y per pixel times the half-width in
+// pixels a selected branch is drawn at least (a twig thinner than a pixel has no fragments, so a
+// branch picked in a dense crown showed no highlight at all).
+uniform vec2 uXrayWiden;
 
 out vec3 vNormal;
 out vec3 vWorld;
@@ -41,4 +45,11 @@ void main() {
   vec3 towards = dot(n, uLightDirection) >= 0.0 ? n : -n;
   vShadow = uSunViewProjection * vec4(world + towards * uShadowNormalOffset, 1.0);
   gl_Position = uViewProjection * vec4(world, 1.0);
+  if (aHighlight > 0.0 && uXrayWiden.x > 0.0) {
+    // The tube's vertices pushed apart on screen along their normals' projection, by the half-width
+    // (times clip w: the same pixels at any depth). A normal seen end-on is left where it is.
+    vec2 side = (uViewProjection * vec4(rotation * aNormal, 0.0)).xy;
+    float len = length(side);
+    if (len > 1e-6) gl_Position.xy += side / len * uXrayWiden * gl_Position.w;
+  }
 }

@@ -95,12 +95,11 @@ function watch(page) {
   return page;
 }
 
-// leaf_spray=1: the maple's single leaves (its preset draws sprays of 3 since 2026-12-07). In the
-// sprayed crown the walk up the trunk (section 4) picked twigs whose highlight showed no pixel
-// (branch 425 after 30 clicks, 0.000 %): a pick inside a dense crown is not yet made visible
-// enough (docs/rendering-model.md, the note of 2026-12-07). The sections here test the features
-// on the tree whose limbs show.
-const START = 'preset=maple&seed=2&years=10&leaf_spray=1';
+// The maple preset's crown of leaf sprays (3 leaves a card since 2026-12-07). In it, the walk up the
+// trunk (section 4) once picked twig 425 whose highlight showed no pixel (0.000 %), and the test ran
+// on leaf_spray=1; the selection's x-ray pass now draws the picked branch 3 px wider (tree.vert
+// uXrayWiden), so a twig picked in the dense crown shows (docs/rendering-model.md).
+const START = 'preset=maple&seed=2&years=10';
 await runBrowserTest(async (server, browser) => {
   const context = await newContext(browser, { viewport: { width: 1280, height: 800 }, acceptDownloads: true });
   await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: server.url.replace(/\/$/, '') });
