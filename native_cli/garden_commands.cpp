@@ -138,6 +138,7 @@ int RunGardenGrow(const GardenOptions& o, std::ostream& out) {
     j["ms_ivy"] = run->ms_ivy();
     j["ms_bark"] = run->ms_bark();  // the simulated barks (bark 1), after the clock
     j["ms_trees"] = Ms(t1, t2) - run->ms_ivy() - (run->ms_moss() - moss_start_ms) - run->ms_bark();
+    j["ms_growth"] = run->ms_growth();  // within ms_trees: the trees' own years
     j["ms_export"] = Ms(t2, t3);
   } else {
     j["trees"] = run->planting().trees.size();

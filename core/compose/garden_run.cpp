@@ -235,6 +235,7 @@ Status GardenRun::Advance(const run::Observer& observer) {
   const int years = target();
   if (!nursery_done_) {
     // The nursery: a tree planted at age a grows its first a years alone, before the clock.
+    const auto tn = Clock::now();
     for (std::size_t k = 0; k < groups_.size(); ++k) {
       GardenTreeGroup& g = groups_[k];
       while (g.run->done() < g.age && !g.run->stopped()) {
@@ -243,6 +244,7 @@ Status GardenRun::Advance(const run::Observer& observer) {
       }
     }
     nursery_done_ = true;
+    ms_growth_ += MsSince(tn);
     if (year_ == 0) RecordYear();  // year 0: the planted garden
   }
   // The trees grown with their neighbours' shade (each one tree), where they stand.
@@ -258,11 +260,13 @@ Status GardenRun::Advance(const run::Observer& observer) {
   while (year_ < years) {
     if (observer && !observer({"grow", static_cast<double>(year_), static_cast<double>(years)}))
       return run::CancelledStatus();
+    const auto ty = Clock::now();
     if (!together.empty()) (void)GrowTogetherYear(together, shade);
     for (GardenTreeGroup& g : groups_)
       if (!g.shaded && g.run->done() < g.age + year_ + 1 && !g.run->stopped()) g.run->GrowYear();
     for (std::size_t k = 0; k < groups_.size(); ++k)
       RecordGardenTrunk(groups_[k].tree(), k, &barks_);
+    ms_growth_ += MsSince(ty);
     ++year_;
     if (moss_) GrowMossYear();
     RecordYear();
@@ -457,6 +461,12 @@ void GardenRun::GrowMossYear() {
 }
 
 void GardenRun::RecordYear() {
+  const auto t0 = Clock::now();
+  RecordYearPicture();
+  ms_records_ += MsSince(t0);
+}
+
+void GardenRun::RecordYearPicture() {
   if (!record_years_ || !record_stopped_by_.empty()) return;
   if (!records_.empty() && records_.back().year >= year_) return;  // already kept
   GardenYearRecord r;

@@ -136,6 +136,13 @@ class GardenRun : public run::StudyRun {
   double ms_ground() const { return ms_ground_; }
   double ms_plant() const { return ms_plant_; }
   double ms_trees() const { return ms_trees_; }
+  // The trees' own growth within ms_trees: the nursery and each year's growth of every distinct
+  // tree (with its neighbours' shade) and its trunk's record, without the moss's days, the year
+  // records or the ivy (the seam a front end would split across workers: docs/garden-model.md
+  // "Where the garden's time goes").
+  double ms_growth() const { return ms_growth_; }
+  // The year records' time (record_years: copying each year's trees and the moss's light).
+  double ms_records() const { return ms_records_; }
   // Each distinct tree's bark (one per group; empty when bark is 0) and the bark runs' wall time.
   const GardenBarks& barks() const { return barks_; }
   double ms_bark() const { return barks_.ms; }
@@ -154,6 +161,7 @@ class GardenRun : public run::StudyRun {
   Budget ivy_budget_;
   double ivy_extra_bytes_per_bud_ = 0;
   double ms_ground_ = 0, ms_plant_ = 0, ms_trees_ = 0, ms_ivy_ = 0, ms_moss_ = 0;
+  double ms_growth_ = 0, ms_records_ = 0;
   std::unique_ptr<ivy::IvyRun> ivy_;
   std::unique_ptr<moss::MossRun> moss_;
   // The year records (record_years): each year's picture, their estimated bytes, and the memory
@@ -163,7 +171,8 @@ class GardenRun : public run::StudyRun {
   double record_bytes_ = 0, record_limit_ = 0, record_share_ = kGardenRecordShare;
   std::string record_stopped_by_;
   // Keeps year_'s picture when it fits what is left of the records' share, else stops recording.
-  void RecordYear();
+  void RecordYear();  // RecordYearPicture, timed (ms_records)
+  void RecordYearPicture();
   // The moss's days of one garden year, after the trees' year: that year's leaves as its canopy.
   void GrowMossYear();
   // What the garden's budget holds after the trees' growth (their estimates; the process's base

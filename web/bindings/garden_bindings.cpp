@@ -63,11 +63,14 @@
 // 0: not blowing); a new grow stops it. Free functions: gardenTableJson(), gardenDecodeJson(hash)
 // ({state, notices}: the default garden with the link's keys). Does not: keep more than one run,
 // keep more than one year's buffers, sway a recorded year's trees, or read files (the page hands
-// their bytes in).
+// their bytes in). phasesJson(): where the last grow's time went in the worker, ms (ground, plant,
+// moss_start, growth (the trees' own years), moss (its days), records, ivy, bark, mesh (the page's
+// buffers)).
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -187,6 +190,7 @@ class GardenLab {
     Result<compose::GardenRun> started =
         compose::GardenRun::Start(state, PageBudget(), /*record_years=*/true);
     if (!started.ok()) return ErrorText(started.status());
+    pending_moss_start_ms_ = started->ms_moss();  // the moss's land, before any day
     pending_.emplace(std::move(started).value());
     pending_->set_ivy_extra_bytes_per_bud(ivy::IvyPageMeshBytesPerBud());  // FillObjects' ivy mesh
     return "";
@@ -217,9 +221,13 @@ class GardenLab {
     hybrid_.clear();  // the hybrid scenes were of the garden before
     hybrid_slots_.clear();
     run_grows_ = grows_;
+    moss_start_ms_ = pending_moss_start_ms_;
+    const auto t0 = std::chrono::steady_clock::now();
     FillGround();
     FillObjects();
     FillTrees(run_->done(), &trees_);
+    ms_mesh_ =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     return "grown";
   }
 
@@ -421,6 +429,24 @@ class GardenLab {
   double blowBlocks() const { return blow_ ? static_cast<double>(blow_->blocks()) : 0; }
 
   std::string statsJson() const { return run_ ? run_->StatsJson() : "{}"; }
+  // Where the last grow's time went in this worker, ms (docs/garden-model.md "Where the garden's
+  // time goes"): {ground, plant, moss_start (the moss's land, in start()), growth (the trees' own
+  // years), moss (its days), records (the year records), ivy, bark, mesh (the page's buffers:
+  // FillGround, FillObjects, FillTrees)}.
+  std::string phasesJson() const {
+    if (!run_) return "{}";
+    nlohmann::ordered_json j;
+    j["ground"] = run_->ms_ground();
+    j["plant"] = run_->ms_plant();
+    j["growth"] = run_->ms_growth();
+    j["moss_start"] = moss_start_ms_;
+    j["moss"] = run_->ms_moss() - moss_start_ms_;
+    j["records"] = run_->ms_records();
+    j["ivy"] = run_->ms_ivy();
+    j["bark"] = run_->ms_bark();
+    j["mesh"] = ms_mesh_;
+    return j.dump();
+  }
   std::string hash() const { return run_ ? run_->Hash("") : ""; }
   std::string stateJson() const { return run_ ? compose::GardenStateJson(run_->state()) : "{}"; }
 
@@ -611,6 +637,10 @@ class GardenLab {
     }
   }
 
+  // The last grow's phases (phasesJson): the page's buffers, and the moss's land in start().
+  double ms_mesh_ = 0;
+  double moss_start_ms_ = 0, pending_moss_start_ms_ = 0;
+
   std::optional<compose::GardenRun> run_;
   std::optional<compose::GardenRun> pending_;    // started by start(), grown by step()
   std::map<std::string, geom::TriMesh> meshes_;  // loadMesh's, by file name
@@ -659,6 +689,7 @@ EMSCRIPTEN_BINDINGS(niwa_garden) {
       .function("imageJson", &niwa::GardenLab::imageJson)
       .function("step", &niwa::GardenLab::step)
       .function("statsJson", &niwa::GardenLab::statsJson)
+      .function("phasesJson", &niwa::GardenLab::phasesJson)
       .function("hash", &niwa::GardenLab::hash)
       .function("stateJson", &niwa::GardenLab::stateJson)
       .function("boundsJson", &niwa::GardenLab::boundsJson)

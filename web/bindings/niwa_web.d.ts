@@ -185,6 +185,8 @@ export class GardenLab {
   start(stateJson: string): ErrorText;
   /** One garden year of the started garden: "more", "grown" (the run kept, its buffers filled) or an error record. */
   step(): string;
+  /** Where the last grow's time went in the worker, ms: {ground, plant, moss_start, growth, moss, records, ivy, bark, mesh}. */
+  phasesJson(): string;
   /** How many grows this lab started. */
   grows(): number;
   /** grows() when the run kept was grown. */

@@ -611,9 +611,13 @@ worker.on('garden', (msg) => {
   const m = s.moss;
   const moss = m ? ` · moss ${m.mosses.toLocaleString('en')} (${m.ground_in_crown_shade.mosses_per_m2.toFixed(2)}/m² in crown shade, ${m.ground_open.mosses_per_m2.toFixed(2)}/m² open)` : '';
   ui.stats.textContent = `${s.size} m garden · ${s.years} years · ${s.trees.count} trees (${species}; ${s.trees.distinct} distinct, ${s.planting.by_hand} by hand) · ${s.objects} objects${ivy}${moss} · ${(msg.growMs / 1000).toFixed(1)} s`;
+  // Where the grow's time went in the worker (docs/garden-model.md "Where the garden's time goes").
+  const phases = msg.phases || {};
+  ui.stats.title = `in the worker: ${Object.entries(phases).filter(([, ms]) => ms >= 0.5).map(([k, ms]) => `${k} ${(ms / 1000).toFixed(2)} s`).join(', ')}`;
   setHooks({
     status: 'ready', error: '', gardenSerial, trees: s.trees.count, byHand: s.planting.by_hand, distinct: s.trees.distinct, ivyVertices,
     stats: JSON.stringify(s), statsText: msg.statsText, hash: msg.hash, growMs: msg.growMs.toFixed(1), stateJson: JSON.stringify(msg.state),
+    growPhases: JSON.stringify(phases),
   });
   requestFrame();
 });

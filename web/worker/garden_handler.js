@@ -7,7 +7,7 @@
 // every planted tree) and the buffer groups ground, objects and trees (each distinct tree's mesh
 // once with its placements), copied once out of the WASM heap into buffers the page gave back
 // ('recycle') where they fit (web/worker/transfer.js TransferPool), then transferred.
-// The reply also carries `years` (the lab's yearsJson: the years recorded as the clock ran, their
+// The reply also carries `phases` (the lab's phasesJson: where the grow's time went, ms), `years` (the lab's yearsJson: the years recorded as the clock ran, their
 // bytes, why the recording stopped) and `grows` (how many grows this client's lab started).
 // A 'year' ({year}) draws another garden year WITHOUT growing (the year scrubber and Play): the
 // lab's showYear(y) builds each distinct tree's mesh of that year from the run's record and the
@@ -101,6 +101,7 @@ export function createHandler(Module, ctx) {
       type: 'garden', id, client, stats: JSON.parse(statsText), statsText, hash: entry.lab.hash(),
       state: JSON.parse(entry.lab.stateJson()), bounds: JSON.parse(entry.lab.boundsJson()),
       years: JSON.parse(entry.lab.yearsJson()), grows: entry.lab.grows(),
+      phases: JSON.parse(entry.lab.phasesJson()),
       buffers, bufferCounts: counts, growMs, wallMs: performance.now() - t0,
     }, transfer);
   }
