@@ -310,7 +310,7 @@ await runBrowserTest(async (server, browser) => {
     const number = document.getElementById('param-D_high');
     const grows = () => Number(d.growRequests);
     const out = { before: grows(), commits: Number(d.editsCommitted || 0) };
-    for (const v of ['2', '2.', '2.5', '2.52', '2.5']) {
+    for (const v of ['2', '2.5', '2.52', '2.5', '2.6']) {
       number.value = v;
       number.dispatchEvent(new Event('input', { bubbles: true }));
     }
