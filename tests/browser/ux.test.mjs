@@ -2,6 +2,7 @@
 // node tests/browser/ux.test.mjs (exit 0 = pass). Getting started controls generated from the
 // table's simple rows; help on focus and on tap; an error beside its field and the "stale" label;
 // the trunk cut refused and no .glb of an empty tree; a slider drag grows only the latest value;
+// typing waits for its quiet moment and a committed value (change) goes at once;
 // long tasks of a 30 -> 15 year change (numbers to build/artifacts/ux-longtasks.json; only under
 // scripts/bench, NIWA_TIMED=1); Blow moves
 // at once; touch targets >= 44 px and tap-to-cut at a phone viewport. Screenshots:
@@ -300,6 +301,44 @@ await runBrowserTest(async (server, browser) => {
     `${Number(after.growRequests) - Number(before.growRequests)} grow requests for a ${dragMs} ms drag to D_high ${dragged} (${slider2.width.toFixed(0)} px slider); coalesced ${after.editsCoalesced || 0}`);
   check('the drag\'s last value is the tree shown', (await page.evaluate(() => location.hash)).includes(`D_high=${dragged}`)
     && after.internodes === String(draggedNative.internodes), `web ${after.internodes} native ${draggedNative.internodes} at D_high=${dragged}`);
+
+  // ---- 5b. Typing waits for its quiet moment (one update for a burst of `input` events); a
+  // committed value (the `change` of Enter or blur) goes to the worker at once, without the 250 ms
+  // debounce (issue 32 item 5: the debounce alone was over an edit's budget). Read in the page:
+  // data-grow-requests is bumped, and data-update-sent-ms stamped, as the update is posted.
+  const burst = await page.evaluate(() => new Promise((resolve) => {
+    const d = document.documentElement.dataset;
+    const number = document.getElementById('param-D_high');
+    const grows = () => Number(d.growRequests);
+    const out = { before: grows(), commits: Number(d.editsCommitted || 0) };
+    for (const v of ['2', '2.5', '2.52', '2.5', '2.6']) {
+      number.value = v;
+      number.dispatchEvent(new Event('input', { bubbles: true }));
+    }
+    out.burst = grows();  // the burst is waiting
+    setTimeout(() => {
+      out.mid = grows();  // 100 ms on: still waiting (its debounce is 250 ms)
+      setTimeout(() => {
+        out.quiet = grows();  // the burst's one update
+        number.value = '2.75';
+        number.dispatchEvent(new Event('input', { bubbles: true }));
+        const t0 = performance.now();
+        number.dispatchEvent(new Event('change', { bubbles: true }));  // Enter
+        out.change = grows();
+        out.sentAfterMs = Number(d.updateSentMs) - t0;
+        out.commitsAfter = Number(d.editsCommitted || 0);
+        resolve(out);
+      }, 450);
+    }, 100);
+  }));
+  check('typing waits: a burst of 5 input events sends nothing for 100 ms, then one grow', burst.burst === burst.before
+    && burst.mid === burst.before && burst.quiet === burst.before + 1, JSON.stringify(burst));
+  check('a committed value (change) goes to the worker at once, not after the debounce', burst.change === burst.quiet + 1
+    && burst.sentAfterMs > -1 && burst.sentAfterMs < 50 && burst.commitsAfter === burst.commits + 1, JSON.stringify(burst));
+  await page.waitForFunction(() => {
+    const d = document.documentElement.dataset;
+    return d.status === 'ready' && d.drawnTreeSerial === d.treeSerial && d.stale === '0' && location.hash.includes('D_high=2.75');
+  }, null, { timeout: TIMEOUT, polling: 100 });
 
   // ---- 6. Blow moves at once: the first pose is already in the gust (not in the still air before it).
   await andWait(page, () => page.fill('#param-D_high', '1'));

@@ -27,14 +27,19 @@ export async function gpuDone(gl) {
 // Bytes of a plan ([{key, bytes, target}], bytes an ArrayBuffer or a view).
 export const planBytes = (plan) => plan.reduce((n, p) => n + p.bytes.byteLength, 0);
 
-// Creates one STATIC_DRAW buffer per plan item ({key, bytes, target}) and fills it
-// UPLOAD_PART_BYTES at a time, yielding to the event loop between parts; resolves to
-// Map(key -> buffer), early with what it has once cancelled() is true (the caller deletes them).
-// Each part waits for the GPU to finish the one before (gpuDone).
+// Creates one STATIC_DRAW buffer per plan item ({key, bytes, target}) and fills them
+// UPLOAD_PART_BYTES at a time (a part may span the end of one buffer and the start of the next),
+// yielding to the event loop between parts; resolves to Map(key -> buffer), early with what it has
+// once cancelled() is true (the caller deletes them). Each part waits for the GPU to finish the one
+// before (gpuDone); the last is not waited for (the caller's draws queue behind it on the GPU).
+// Issue 32 item 5: a wait after each buffer (a tree has some 20, most under a part) and after the
+// last part cost the default tree's edit 0.5-1 s of fence round trips on a loaded SwiftShader.
 // A plan of at most UPLOAD_PARTS_ABOVE bytes is uploaded at once, without yielding.
 export async function uploadInParts(gl, plan, cancelled = () => false) {
   const buffers = new Map();
-  const parts = planBytes(plan) > UPLOAD_PARTS_ABOVE;
+  let left = planBytes(plan);  // bytes not handed to the GPU yet
+  let room = UPLOAD_PART_BYTES;  // bytes the part going up may still take
+  const parts = left > UPLOAD_PARTS_ABOVE;
   for (const { key, bytes, target } of plan) {
     const u8 = ArrayBuffer.isView(bytes) ? new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength) : new Uint8Array(bytes);
     const buffer = gl.createBuffer();
@@ -46,12 +51,19 @@ export async function uploadInParts(gl, plan, cancelled = () => false) {
       continue;
     }
     gl.bufferData(target, u8.byteLength, gl.STATIC_DRAW);
-    for (let offset = 0; offset < u8.byteLength; offset += UPLOAD_PART_BYTES) {
+    for (let offset = 0; offset < u8.byteLength;) {
       if (cancelled()) return buffers;
+      const end = Math.min(u8.byteLength, offset + room);
       gl.bindVertexArray(null);
       gl.bindBuffer(target, buffer);
-      gl.bufferSubData(target, offset, u8.subarray(offset, Math.min(u8.byteLength, offset + UPLOAD_PART_BYTES)));
-      await gpuDone(gl);
+      gl.bufferSubData(target, offset, u8.subarray(offset, end));
+      left -= end - offset;
+      room -= end - offset;
+      offset = end;
+      if (room === 0 && left > 0) {  // a whole part is up: the next once the GPU has taken it
+        await gpuDone(gl);
+        room = UPLOAD_PART_BYTES;
+      }
     }
   }
   return buffers;

@@ -68,12 +68,12 @@ export class EmbedElement extends HTMLElement {
 
   // This element's client of the page's one worker (attributes may arrive before connectedCallback):
   // the client of a study controller of its own (web/shell/study_controller.js: no history, no
-  // Cancel, its hooks on this element, a worker failure on the element's line); the element's
+  // Cancel, no edits to commit, its hooks on this element, a worker failure on the element's line); the element's
   // handlers of the messages it names (its own error replies included) are installed on it.
   ensureWorker() {
     if (this.worker && !this.worker.isClosed) return;
     this.controller = new StudyController({
-      study: this.study, name: this.client, history: false, ui: {}, hooks: this,
+      study: this.study, name: this.client, history: false, ui: {}, hooks: this, commits: null,
       notices: { set: (source, lines) => {
         const text = [lines].flat().filter(Boolean).join('\n');
         if (text) this.showMessage(text);

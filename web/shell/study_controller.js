@@ -1,8 +1,9 @@
 // The study pages' one controller (tree, ivy, terrain and the grove; moss, bark and the garden
 // next): the study's worker (and a page's further clients of it: the grove's one per unique tree)
 // and its restart on Cancel, a worker failure in the notices, the progress line with Cancel (shown while an update
-// or an export runs), debounced updates that carry the earliest stage their edits touched, edits
-// that arrive while an update is in flight merged into one update sent when it is answered, the
+// or an export runs), debounced updates that carry the earliest stage their edits touched (only
+// while typing or dragging: a committed value, a `change` event, sends the waiting edit at once),
+// edits that arrive while an update is in flight merged into one update sent when it is answered, the
 // restage counters and the stages a restage re-did, the grown state's history entry (a commit or
 // a replace, with the page's view fields and extras), export routing to downloads (any number of
 // kinds and variants, a refusal beside the button that asked), and the error reply routed to the
@@ -34,17 +35,20 @@ export class StudyController {
   // page appends to the state's hash (the tree's camera, '&cam=...'); historyExtra(): what each
   // history entry keeps beside its hash (the tree's year shown); onRestore(extra): back/forward
   // landed on an entry, before its state is decoded; onHistoryChange(): Undo/Redo availability
-  // changed. debounceMs: the quiet moment before an edit goes; coalesceMs: an edit waits this long
-  // at most for the update in flight to be answered (issue 17: a one-second slider drag regrew 17
-  // trees) before it supersedes it (a long grow never holds the newest edit back). name: the
-  // controller's client (default: the study's name); history: false for a page whose hash is its
-  // own view, not a state (the grove, an embed: no history entries, back/forward decode nothing);
-  // a page without Cancel omits ui.cancel (and ui.progress); hooks: the element whose data-* the
-  // tests read (an embed's own; default the document's).
+  // changed. debounceMs: the quiet moment before an edit of `input` events goes (typing, a slider
+  // dragged); commits: the node whose bubbling `change` events (Enter or blur in a field, a select,
+  // a checkbox, a slider let go) send the waiting edit at once (issue 32 item 5: the debounce alone
+  // was over an edit's budget; default the document, null for none: an embed); coalesceMs: an
+  // edit waits this long at most for the update in flight to be answered (issue 17: a one-second
+  // slider drag regrew 17 trees) before it supersedes it (a long grow never holds the newest edit
+  // back). name: the controller's client (default: the study's name); history: false for a page
+  // whose hash is its own view, not a state (the grove, an embed: no history entries, back/forward
+  // decode nothing); a page without Cancel omits ui.cancel (and ui.progress); hooks: the element
+  // whose data-* the tests read (an embed's own; default the document's).
   constructor({
     study, name = study, notices, ui, fields = {}, panel, errors, state, onCancel, onRestart, onError,
     viewHash, historyExtra, onRestore, onHistoryChange, debounceMs = 250, coalesceMs = 400, history = true,
-    hooks = document.documentElement,
+    hooks = document.documentElement, commits = document,
   }) {
     this.study = study;
     this.hooks = hooks;
@@ -86,6 +90,8 @@ export class StudyController {
     ui.cancel?.addEventListener('click', () => this.cancel(onCancel));
     this.worker.on('export', (msg) => this.#exported(msg));
     this.worker.on('error', (msg) => this.#failed(msg));
+    // Bubbling: the control's own handlers (which schedule the edit) have run by then.
+    commits?.addEventListener('change', () => this.commitWaiting());
     if (hookValue('growRequests', this.hooks) === undefined) setHooks({ growRequests: 0, restageRequests: 0 }, this.hooks);
   }
 
@@ -142,13 +148,14 @@ export class StudyController {
     this.inFlightSince = performance.now();
     this.showWork(true);
     bumpHook(sent === 'grow' ? 'growRequests' : 'restageRequests', this.hooks);
+    setHooks({ updateSentMs: this.inFlightSince.toFixed(1) }, this.hooks);  // tests: when it went (page clock)
     request.reply.then((reply) => this.#answered(request.id, reply));
     return { ...request, stage: sent };
   }
 
   // An edit: the update goes after a quiet moment (one update for a burst of edits), by
-  // send(); `stage`: the edited row's (param_panel.js stageOf), 'grow' for the controls outside
-  // the panel. While a young update is in flight the edit waits for its answer (merged: one update
+  // send(), or at the `change` that commits it (commitWaiting); `stage`: the edited row's
+  // (param_panel.js stageOf), 'grow' for the controls outside the panel. While a young update is in flight the edit waits for its answer (merged: one update
   // carries every edit since).
   schedule(send, stage = 'grow') {
     this.notices.set('hash', []);
@@ -158,6 +165,15 @@ export class StudyController {
     clearTimeout(this.debounceTimer);
     setHooks({ status: 'pending' }, this.hooks);
     this.debounceTimer = setTimeout(() => this.#flush(), this.debounceMs);
+  }
+
+  // A committed value (a `change` event): the edit waiting for its quiet moment, or queued behind
+  // the update in flight, goes now (it supersedes that update); nothing when none waits (its
+  // debounce sent it already).
+  commitWaiting() {
+    if (!this.editPending) return;
+    bumpHook('editsCommitted', this.hooks);
+    this.pendingSend();
   }
 
   // An edit waits to be sent (the page keeps its "stale" look meanwhile).
