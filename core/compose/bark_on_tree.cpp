@@ -182,6 +182,8 @@ Status CheckBarkOnTreeOptions(const BarkOnTreeOptions& options) {
   bark::BarkState s;
   const Status species = bark::SetBarkSpecies(options.species, &s);
   if (!species.ok()) return Status::Error("bark_species", species.message());
+  const Status model = bark::SetBarkModel(options.model, &s);
+  if (!model.ok()) return Status::Error("bark_model", model.message());
   NIWA_RETURN_IF_ERROR(CheckValue("bark_map_size", options.map_size, 256, 4096, true));
   if ((options.map_size & (options.map_size - 1)) != 0) {
     return Status::Error("bark_map_size", FormatNumber(options.map_size) +
@@ -232,6 +234,8 @@ Result<BarkOnTreePlan> PlanBarkOnTree(const TrunkHistory& history,
   if (!st.ok()) return st;
   st = bark::SetBarkSpecies(options.species, &s);
   if (!st.ok()) return Status::Error("bark_species", st.message());
+  st = bark::SetBarkModel(options.model, &s);
+  if (!st.ok()) return Status::Error("bark_model", st.message());
   st = bark::SetBarkSeed(static_cast<double>(options.seed), &s);
   if (!st.ok()) return Status::Error("bark", st.message());
   // The visible surface has seen only the strain since it formed (docs/bark-model.md, "On Niwa's
@@ -252,29 +256,47 @@ Result<BarkOnTreePlan> PlanBarkOnTree(const TrunkHistory& history,
     plan.surface_years = static_cast<double>(plan.radii_cm.size() - 1 - i) + t;
     break;
   }
-  // The even column count nearest the surface's circumference at its birth, 2π·r1/(1 + strain),
-  // over the column pitch (√3/2)·L_o: the run ends at the trunk's real circumference 2π·r1.
-  const double columns = 2 * kPi * birth / (std::sqrt(3.0) / 2 * lo);
+  // The 4-layer model: kFourLayerCycles cycles of ε_s / kSurfaceCycles, the last kSurfaceCycles
+  // the shown surface's life.
+  const bool four = options.model == "4layer";
+  const int cycles = four ? kFourLayerCycles : 1;
+  const double cycle_dr = four ? plan.surface_strain / kSurfaceCycles : plan.surface_strain;
+  // The even column count nearest the circumference where the run starts, 2π·r1/(1 + growth),
+  // over the column pitch (√3/2)·L_o: the run ends at the trunk's real circumference 2π·r1 (the
+  // 2-layer run starts at the surface's birth).
+  // The 4-layer surface S lies outside the inner layer: its middle d_c·τ + 1.5·d_c beyond r_I,
+  // 2.5·d_c at the last cycle's end (four_layer.cpp LayoutAt; d_c = cork·D), so r_I starts where
+  // S ends at r1.
+  const double d_c = s.params.Get(BarkParam::kCork) * s.params.Get(BarkParam::kD);
+  const double start = four ? std::max(0.0, r1 - 2.5 * d_c) / (1 + cycles * cycle_dr) : birth;
+  const double columns = 2 * kPi * start / (std::sqrt(3.0) / 2 * lo);
   const auto& nr_spec = bark::BarkTable().row(static_cast<std::size_t>(BarkParam::kNR));
   const double n_r = std::clamp(2 * std::round(columns / 2), nr_spec.min_value, nr_spec.max_value);
   // One cycle, as the paper's Table 3 runs (its dH per cycle cuts the plates across once).
   for (const auto& [row, value] : {std::pair<BarkParam, double>{BarkParam::kNR, n_r},
-                                   {BarkParam::kCycles, 1},
-                                   {BarkParam::kDeltaR, plan.surface_strain},
+                                   {BarkParam::kCycles, cycles},
+                                   {BarkParam::kDeltaR, cycle_dr},
                                    {BarkParam::kMapSize, options.map_size}}) {
     st = s.params.Set(row, value);
     if (!st.ok()) return Status::Error("bark", st.Line());
   }
   st = bark::CheckBarkState(s);
   if (!st.ok()) return Status::Error("bark", st.Line());
-  // The young shoots' surface: half as old (half the strain).
+  // The young shoots' surface: half as old (half the strain), one 2-layer cycle (a young shoot's
+  // one periderm: nothing to peel yet).
   plan.young_state = s;
-  st = plan.young_state.params.Set(BarkParam::kDeltaR, plan.surface_strain / 2);
+  st = bark::SetBarkModel("2layer", &plan.young_state);
+  if (st.ok()) st = plan.young_state.params.Set(BarkParam::kCycles, 1);
+  if (st.ok()) st = plan.young_state.params.Set(BarkParam::kDeltaR, plan.surface_strain / 2);
   if (!st.ok()) return Status::Error("bark", st.Line());
   plan.estimate = bark::EstimateBarkRun(s) + bark::EstimateBarkRun(plan.young_state);
-  plan.estimate.what =
-      "the bark (two runs of " + FormatCount(n_r * s.params.GetInt(BarkParam::kNH)) +
-      " nodes, 1 cycle each, maps " + std::to_string(options.map_size) + " px wide)";
+  const std::string nodes = FormatCount(n_r * s.params.GetInt(BarkParam::kNH));
+  plan.estimate.what = four ? "the bark (the 4-layer model over " + std::to_string(cycles) +
+                                  " cycles of " + nodes +
+                                  " nodes a layer and a 2-layer cycle, maps " +
+                                  std::to_string(options.map_size) + " px wide)"
+                            : "the bark (two runs of " + nodes + " nodes, 1 cycle each, maps " +
+                                  std::to_string(options.map_size) + " px wide)";
   return plan;
 }
 
@@ -445,9 +467,10 @@ std::string BarkOnTreeJson(const BarkOnTree& bark, double height_m) {
   std::string radii;
   for (double r : p.radii_cm) radii += (radii.empty() ? "" : ",") + FormatNumber(r);
   const auto& params = p.state.params;
-  return "{\"species\":\"" + p.state.species + "\",\"height_m\":" + FormatNumber(height_m) +
-         ",\"years\":[" + std::to_string(p.first_year) + "," + std::to_string(p.last_year) +
-         "],\"radii_cm\":[" + radii + "],\"hoop_strain\":" + FormatNumber(p.hoop_strain) +
+  return "{\"species\":\"" + p.state.species + "\",\"model\":\"" + p.state.model +
+         "\",\"height_m\":" + FormatNumber(height_m) + ",\"years\":[" +
+         std::to_string(p.first_year) + "," + std::to_string(p.last_year) + "],\"radii_cm\":[" +
+         radii + "],\"hoop_strain\":" + FormatNumber(p.hoop_strain) +
          ",\"surface_growth_cm\":" + FormatNumber(p.surface_growth_cm) +
          ",\"turnover_strain\":" + FormatNumber(p.turnover_strain) +
          ",\"surface_years\":" + FormatNumber(p.surface_years) +

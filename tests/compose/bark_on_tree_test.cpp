@@ -307,6 +307,41 @@ TEST(BarkOnTree, DifferentHistoriesGiveDifferentBark) {
   }
 }
 
+// --bark-model 4layer: the old run is the 4-layer model over kFourLayerCycles cycles of ε_s / 2
+// (the shown surface's life: two cycles), the inner layer starting at (r(last) − 2.5·d_c)/(1 +
+// 3·dR) so that S ends at the trunk's radius; the young run stays the 2-layer cycle at ε_s / 2; the
+// estimate counts the three layers; an unknown model names bark_model.
+TEST(BarkOnTree, TheFourLayerModelRunsOverTheSurfacesLife) {
+  const TrunkHistory h = Thickening(10.0, 1.2);
+  BarkOnTreeOptions two, four;
+  four.model = "4layer";
+  Result<BarkOnTreePlan> p2 = PlanBarkOnTree(h, two), p4 = PlanBarkOnTree(h, four);
+  ASSERT_TRUE(p2.ok() && p4.ok());
+  EXPECT_EQ(p2->state.model, "2layer");
+  EXPECT_EQ(p4->state.model, "4layer");
+  EXPECT_EQ(p4->surface_strain, p2->surface_strain);
+  const auto& q = p4->state.params;
+  EXPECT_EQ(q.GetInt(BarkParam::kCycles), kFourLayerCycles);
+  EXPECT_EQ(kFourLayerCycles, 3);
+  EXPECT_DOUBLE_EQ(q.Get(BarkParam::kDeltaR), p4->surface_strain / kSurfaceCycles);
+  // r_I at the start: S (2.5·d_c outside r_I at the end, d_c = cork·D) ends at r(last).
+  const double d_c = q.Get(BarkParam::kCork) * q.Get(BarkParam::kD);
+  const double start =
+      (p4->radii_cm.back() - 2.5 * d_c) / (1 + kFourLayerCycles * q.Get(BarkParam::kDeltaR));
+  const double pitch = std::sqrt(3.0) / 2 * q.Get(BarkParam::kLo);
+  EXPECT_LE(std::fabs(q.GetInt(BarkParam::kNR) * pitch - 2 * M_PI * start), pitch + 1e-9);
+  EXPECT_EQ(p4->young_state.model, "2layer");
+  EXPECT_EQ(p4->young_state.params.GetInt(BarkParam::kCycles), 1);
+  EXPECT_DOUBLE_EQ(p4->young_state.params.Get(BarkParam::kDeltaR), p4->surface_strain / 2);
+  EXPECT_GT(p4->estimate.seconds, 3 * p2->estimate.seconds);
+  EXPECT_NE(p4->estimate.what.find("4-layer"), std::string::npos) << p4->estimate.what;
+  four.model = "3layer";
+  const Result<BarkOnTreePlan> bad = PlanBarkOnTree(h, four);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.status().field(), "bark_model") << bad.status().Line();
+  EXPECT_EQ(CheckBarkOnTreeOptions(four).field(), "bark_model");
+}
+
 // A history of `years` years growing `cm_a_year` in radius every year (linear, as Niwa's trunks
 // thicken at 1.3 m: keyaki and sakura 0.7-1.0 cm a year at 15 years), its last W + 1 recorded.
 TrunkHistory Linear(int years, double cm_a_year) {
