@@ -32,6 +32,7 @@ const run::FieldNames& BarkFlagNames() {
   static const run::FieldNames names = {{"bark", "--bark"},
                                         {"bark_height", "--bark-height"},
                                         {"bark_species", "--bark-species"},
+                                        {"bark_model", "--bark-model"},
                                         {"bark_map_size", "--bark-map-size"}};
   return names;
 }
@@ -46,7 +47,8 @@ struct GrowOptions {
   std::string lod_layout;           // --lod-layout siblings|msft (with --lod)
   std::string bark = "procedural";  // --bark procedural|sim
   double bark_height = compose::kDefaultBarkHeight;
-  compose::BarkOnTreeOptions bark_options;  // --bark-species, --bark-map-size (seed: the tree's)
+  // --bark-species, --bark-model, --bark-map-size (seed: the tree's)
+  compose::BarkOnTreeOptions bark_options;
 };
 
 // --bark and its flags, checked before any growth: the value, the flags that need --bark sim, and
@@ -56,7 +58,7 @@ bool CheckBarkFlags(const GrowOptions& o, const CLI::App& cmd, const std::string
     throw BadInput{"--bark: '" + Echo(o.bark) + "' must be procedural or sim"};
   }
   const bool sim = o.bark == "sim";
-  for (const char* flag : {"--bark-height", "--bark-species", "--bark-map-size"}) {
+  for (const char* flag : {"--bark-height", "--bark-species", "--bark-model", "--bark-map-size"}) {
     if (!sim && cmd.count(flag))
       throw BadInput{std::string(flag) + ": only applies with --bark sim"};
   }
@@ -100,7 +102,11 @@ Result<std::string> BarkGlb(const GrowOptions& o, const Budget& budget,
   Result<compose::BarkOnTreePlan> plan = compose::PlanBarkOnTree(*trunk, options);
   Check(run::RenameField(plan.status(), BarkFlagNames()));
   const Estimate total = run->Held() + run->ExportWork(request) + plan->estimate;
-  const Status fits = CheckEstimate(total, budget, "lower --bark-map-size or --bark-height");
+  const Status fits =
+      CheckEstimate(total, budget,
+                    options.model == "4layer"
+                        ? "use --bark-model 2layer, or lower --bark-map-size or --bark-height"
+                        : "lower --bark-map-size or --bark-height");
   if (!fits.ok()) Fail(Status::Error("--bark", fits.message()));
   Result<compose::BarkOnTree> bark = compose::GrowBarkOnTree(*plan, budget);
   Check(run::RenameField(bark.status(), BarkFlagNames()));
@@ -272,6 +278,11 @@ void AddTreeCommands(CLI::App& app, CommandList& commands) {
   OnlyWith(grow->add_option("--bark-species", grow_options->bark_options.species,
                             "With --bark sim: the bark preset (camphor, tallow or pine; default "
                             "camphor)"),
+           "--out", {".glb"});
+  OnlyWith(grow->add_option("--bark-model", grow_options->bark_options.model,
+                            "With --bark sim: the trunk's bark model, 2layer (the default: one "
+                            "cycle) or 4layer (3 cycles with layer birth, peeling and shedding; "
+                            "several times the cost, estimated and refused up front)"),
            "--out", {".glb"});
   OnlyWith(
       AddNumberFlag(grow, "--bark-map-size", &grow_options->bark_options.map_size, kBarkMapSize,

@@ -182,6 +182,8 @@ Status CheckBarkOnTreeOptions(const BarkOnTreeOptions& options) {
   bark::BarkState s;
   const Status species = bark::SetBarkSpecies(options.species, &s);
   if (!species.ok()) return Status::Error("bark_species", species.message());
+  const Status model = bark::SetBarkModel(options.model, &s);
+  if (!model.ok()) return Status::Error("bark_model", model.message());
   NIWA_RETURN_IF_ERROR(CheckValue("bark_map_size", options.map_size, 256, 4096, true));
   if ((options.map_size & (options.map_size - 1)) != 0) {
     return Status::Error("bark_map_size", FormatNumber(options.map_size) +
@@ -189,6 +191,11 @@ Status CheckBarkOnTreeOptions(const BarkOnTreeOptions& options) {
                                               "2048 or 4096");
   }
   return Status::Ok();
+}
+
+double SurfaceStrain(double hoop_strain, double turnover_strain) {
+  if (!(hoop_strain > 0) || !(turnover_strain > 0)) return 0;
+  return hoop_strain * turnover_strain / (hoop_strain + turnover_strain);
 }
 
 Result<BarkOnTreePlan> PlanBarkOnTree(const TrunkHistory& history,
@@ -227,52 +234,69 @@ Result<BarkOnTreePlan> PlanBarkOnTree(const TrunkHistory& history,
   if (!st.ok()) return st;
   st = bark::SetBarkSpecies(options.species, &s);
   if (!st.ok()) return Status::Error("bark_species", st.message());
+  st = bark::SetBarkModel(options.model, &s);
+  if (!st.ok()) return Status::Error("bark_model", st.message());
   st = bark::SetBarkSeed(static_cast<double>(options.seed), &s);
   if (!st.ok()) return Status::Error("bark", st.message());
   // The visible surface has seen only the strain since it formed (docs/bark-model.md, "On Niwa's
-  // trees"): at most kSurfaceCycles of the species' calibrated cycles, and at most the window.
-  plan.strain_ceiling = kSurfaceCycles * s.params.Get(BarkParam::kDeltaR);
-  plan.surface_strain = std::clamp(plan.hoop_strain, 0.0, plan.strain_ceiling);
-  plan.clamped = plan.hoop_strain > plan.strain_ceiling;
-  plan.surface_years = plan.last_year - plan.first_year;
-  if (plan.clamped) {
-    // Back from the last year (radii linear between the recorded years) to where the trunk was
-    // r1 / (1 + ceiling) thick: the surface formed there.
-    const double birth = r1 / (1 + plan.surface_strain);
-    for (std::size_t i = plan.radii_cm.size() - 1; i > 0; --i) {
-      const double a = plan.radii_cm[i - 1], b = plan.radii_cm[i];
-      if (a > birth) continue;
-      const double t = b > a ? (b - birth) / (b - a) : 0;
-      plan.surface_years = static_cast<double>(plan.radii_cm.size() - 1 - i) + t;
-      break;
-    }
-  }
+  // trees", item 4): the window's and the turnover's limits on its age, as rates that add.
   const double lo = s.params.Get(BarkParam::kLo);
-  // The even column count nearest the surface's circumference at its birth, 2π·r1/(1 + strain),
-  // over the column pitch (√3/2)·L_o: the run ends at the trunk's real circumference 2π·r1.
-  const double r_birth = r1 / (1 + plan.surface_strain);
-  const double columns = 2 * kPi * r_birth / (std::sqrt(3.0) / 2 * lo);
+  const double r_o = std::sqrt(3.0) * lo * s.params.Get(BarkParam::kNR) / (4 * kPi);
+  plan.surface_growth_cm = kSurfaceCycles * s.params.Get(BarkParam::kDeltaR) * r_o;
+  plan.turnover_strain = plan.surface_growth_cm / std::max(r_o, r1 - plan.surface_growth_cm);
+  plan.surface_strain = SurfaceStrain(plan.hoop_strain, plan.turnover_strain);
+  plan.surface_years = plan.last_year - plan.first_year;
+  // Back from the last year (radii linear between the recorded years) to where the trunk was
+  // r1 / (1 + ε_s) thick: the surface formed there (within the window: ε_s < ε_window).
+  const double birth = r1 / (1 + plan.surface_strain);
+  for (std::size_t i = plan.radii_cm.size() - 1; i > 0; --i) {
+    const double a = plan.radii_cm[i - 1], b = plan.radii_cm[i];
+    if (a > birth) continue;
+    const double t = b > a ? (b - birth) / (b - a) : 0;
+    plan.surface_years = static_cast<double>(plan.radii_cm.size() - 1 - i) + t;
+    break;
+  }
+  // The 4-layer model: kFourLayerCycles cycles of ε_s / kSurfaceCycles, the last kSurfaceCycles
+  // the shown surface's life.
+  const bool four = options.model == "4layer";
+  const int cycles = four ? kFourLayerCycles : 1;
+  const double cycle_dr = four ? plan.surface_strain / kSurfaceCycles : plan.surface_strain;
+  // The even column count nearest the circumference where the run starts, 2π·r1/(1 + growth),
+  // over the column pitch (√3/2)·L_o: the run ends at the trunk's real circumference 2π·r1 (the
+  // 2-layer run starts at the surface's birth).
+  // The 4-layer surface S lies outside the inner layer: its middle d_c·τ + 1.5·d_c beyond r_I,
+  // 2.5·d_c at the last cycle's end (four_layer.cpp LayoutAt; d_c = cork·D), so r_I starts where
+  // S ends at r1.
+  const double d_c = s.params.Get(BarkParam::kCork) * s.params.Get(BarkParam::kD);
+  const double start = four ? std::max(0.0, r1 - 2.5 * d_c) / (1 + cycles * cycle_dr) : birth;
+  const double columns = 2 * kPi * start / (std::sqrt(3.0) / 2 * lo);
   const auto& nr_spec = bark::BarkTable().row(static_cast<std::size_t>(BarkParam::kNR));
   const double n_r = std::clamp(2 * std::round(columns / 2), nr_spec.min_value, nr_spec.max_value);
   // One cycle, as the paper's Table 3 runs (its dH per cycle cuts the plates across once).
   for (const auto& [row, value] : {std::pair<BarkParam, double>{BarkParam::kNR, n_r},
-                                   {BarkParam::kCycles, 1},
-                                   {BarkParam::kDeltaR, plan.surface_strain},
+                                   {BarkParam::kCycles, cycles},
+                                   {BarkParam::kDeltaR, cycle_dr},
                                    {BarkParam::kMapSize, options.map_size}}) {
     st = s.params.Set(row, value);
     if (!st.ok()) return Status::Error("bark", st.Line());
   }
   st = bark::CheckBarkState(s);
   if (!st.ok()) return Status::Error("bark", st.Line());
-  // The young shoots' surface: half as old (half the strain; at the ceiling, the paper's one
-  // cycle of the species).
+  // The young shoots' surface: half as old (half the strain), one 2-layer cycle (a young shoot's
+  // one periderm: nothing to peel yet).
   plan.young_state = s;
-  st = plan.young_state.params.Set(BarkParam::kDeltaR, plan.surface_strain / 2);
+  st = bark::SetBarkModel("2layer", &plan.young_state);
+  if (st.ok()) st = plan.young_state.params.Set(BarkParam::kCycles, 1);
+  if (st.ok()) st = plan.young_state.params.Set(BarkParam::kDeltaR, plan.surface_strain / 2);
   if (!st.ok()) return Status::Error("bark", st.Line());
   plan.estimate = bark::EstimateBarkRun(s) + bark::EstimateBarkRun(plan.young_state);
-  plan.estimate.what =
-      "the bark (two runs of " + FormatCount(n_r * s.params.GetInt(BarkParam::kNH)) +
-      " nodes, 1 cycle each, maps " + std::to_string(options.map_size) + " px wide)";
+  const std::string nodes = FormatCount(n_r * s.params.GetInt(BarkParam::kNH));
+  plan.estimate.what = four ? "the bark (the 4-layer model over " + std::to_string(cycles) +
+                                  " cycles of " + nodes +
+                                  " nodes a layer and a 2-layer cycle, maps " +
+                                  std::to_string(options.map_size) + " px wide)"
+                            : "the bark (two runs of " + nodes + " nodes, 1 cycle each, maps " +
+                                  std::to_string(options.map_size) + " px wide)";
   return plan;
 }
 
@@ -443,18 +467,19 @@ std::string BarkOnTreeJson(const BarkOnTree& bark, double height_m) {
   std::string radii;
   for (double r : p.radii_cm) radii += (radii.empty() ? "" : ",") + FormatNumber(r);
   const auto& params = p.state.params;
-  return "{\"species\":\"" + p.state.species + "\",\"height_m\":" + FormatNumber(height_m) +
-         ",\"years\":[" + std::to_string(p.first_year) + "," + std::to_string(p.last_year) +
-         "],\"radii_cm\":[" + radii + "],\"hoop_strain\":" + FormatNumber(p.hoop_strain) +
-         ",\"strain_ceiling\":" + FormatNumber(p.strain_ceiling) +
+  return "{\"species\":\"" + p.state.species + "\",\"model\":\"" + p.state.model +
+         "\",\"height_m\":" + FormatNumber(height_m) + ",\"years\":[" +
+         std::to_string(p.first_year) + "," + std::to_string(p.last_year) + "],\"radii_cm\":[" +
+         radii + "],\"hoop_strain\":" + FormatNumber(p.hoop_strain) +
+         ",\"surface_growth_cm\":" + FormatNumber(p.surface_growth_cm) +
+         ",\"turnover_strain\":" + FormatNumber(p.turnover_strain) +
          ",\"surface_years\":" + FormatNumber(p.surface_years) +
          ",\"N_R\":" + std::to_string(params.GetInt(BarkParam::kNR)) +
          ",\"N_H\":" + std::to_string(params.GetInt(BarkParam::kNH)) +
          ",\"cycles\":" + std::to_string(params.GetInt(BarkParam::kCycles)) +
          ",\"dR\":" + FormatNumber(params.Get(BarkParam::kDeltaR)) +
          ",\"young_dR\":" + FormatNumber(p.young_state.params.Get(BarkParam::kDeltaR)) +
-         ",\"clamped\":" + (p.clamped ? "true" : "false") + ",\"tile_cm\":[" +
-         FormatNumber(bark.old_bark.tile_width_m * kCmPerMetre) + "," +
+         ",\"tile_cm\":[" + FormatNumber(bark.old_bark.tile_width_m * kCmPerMetre) + "," +
          FormatNumber(bark.old_bark.tile_height_m * kCmPerMetre) +
          "],\"young_years\":" + std::to_string(kYoungBarkYears) + ",\"hash\":\"" +
          bark.old_bark.hash + "\"}";

@@ -3,12 +3,13 @@
 // the strain the visible surface has seen since it formed, read off the tree's own radial growth
 // over at most the last W years), and the tree's .glb re-textured with the maps: the tile wrapped
 // a whole number of times around each branch, v in metres over the tile's height, a younger
-// surface's maps (half the strain) on the young shoots. Part of the composition tier (core/compose
-// includes the tree and bark studies; neither includes it), for `niwa tree grow --bark sim` and the
-// page alike. Does not: grow the tree (the caller's Grower or TreeRun does, calling RecordTrunkYear
-// after each year), change the procedural export (the default .glb keeps its bytes), run the
-// 4-layer model, or name a flag (errors name "bark", "bark_height", "bark_species",
-// "bark_map_size").
+// surface's maps (half the strain) on the young shoots; the old bark may be the 4-layer model
+// (kFourLayerCycles cycles, peeling). Part of the composition tier (core/compose includes the tree
+// and bark studies; neither includes it), for `niwa tree grow --bark sim` and the page alike. Does
+// not: grow the tree (the caller's Grower or TreeRun does, calling RecordTrunkYear after each
+// year), change the procedural export (the default .glb keeps its bytes), run the young shoots'
+// bark with the 4-layer model, or name a flag (errors name "bark", "bark_height", "bark_species",
+// "bark_model", "bark_map_size").
 #pragma once
 
 #include <string>
@@ -28,10 +29,13 @@ namespace niwa::compose {
 constexpr double kDefaultBarkHeight = 1.3;  // m above the ground (breast height)
 constexpr double kMaxBarkHeight = 100;      // m: the flag's static range; the tree's is tighter
 constexpr int kBarkWindow = 4;              // W: years of growth the surface may have seen
-// The visible surface's hoop strain at most: this many of the species' calibrated cycles (its dR,
-// Table 3's 0.021, tallow's 0.009); a trunk that grew more shows a younger surface
-// (docs/bark-model.md, "On Niwa's trees").
+// The visible surface's life in the species' calibrated cycles: it has grown by at most this many
+// of the cycle's absolute radial growth, dR·R_o of the preset's lattice (Table 3's 0.021 × 5.82 cm
+// = 0.122 cm; tallow's 0.009 × 5.82 cm), since it formed (docs/bark-model.md, "On Niwa's trees").
 constexpr double kSurfaceCycles = 2;
+// The 4-layer old bark's cycles: the surface shown at the end is kSurfaceCycles role exchanges old
+// (the first cycle's surface cracks, peels and is shed), each cycle 1/kSurfaceCycles of ε_s.
+constexpr int kFourLayerCycles = static_cast<int>(kSurfaceCycles) + 1;
 // Shoots of at most this age in years (grown this year: 1) get the young bark (half the trunk
 // surface's strain); older ones and the trunk the old bark.
 constexpr int kYoungBarkYears = 2;
@@ -62,34 +66,47 @@ struct BarkHeightRange {
 BarkHeightRange BarkHeights(const TrunkHistory& history);
 
 // What the bark run on the tree will be: the state (species preset, one cycle, dR the surface's
-// strain: the window's hoop strain, at most kSurfaceCycles × the species' dR; N_R from the real
-// circumference when that surface formed, so the run ends at the last year's), the window's radii,
-// and the two runs' estimate.
+// strain ε_s, N_R from the real circumference when that surface formed, so the run ends at the
+// last year's), the window's radii, and the two runs' estimate. ε_s combines two limits on the
+// surface's age as rates that add (docs/bark-model.md, "On Niwa's trees", item 4):
+//   ε_window   = r(last)/r(first) − 1: the surface is at most the window's W years old;
+//   ε_turnover = G / max(R_o, r(last) − G), G = kSurfaceCycles·dR·R_o (cm, R_o the preset's lattice
+//                radius): it has grown at most G since it formed, so a thicker trunk's surface is
+//                less strained (Table 3's note *3; spec E3: the same absolute ΔR on a larger R);
+//   ε_s = ε_window·ε_turnover / (ε_window + ε_turnover), below both (no ceiling is reached).
 struct BarkOnTreePlan {
   bark::BarkState state;        // the old bark's run (one cycle)
   bark::BarkState young_state;  // the same lattice and seed, half the strain: the young shoots'
   int first_year = 0, last_year = 0;  // r(first_year) .. r(last_year), one a year
   std::vector<double> radii_cm;       // r(first_year), ..., r(last_year)
-  double hoop_strain = 0;             // r(last)/r(first) − 1, the window's strain
-  double strain_ceiling = 0;          // kSurfaceCycles × the species' dR
-  double surface_strain = 0;          // min(hoop_strain, strain_ceiling): the old run's dR
+  double hoop_strain = 0;             // ε_window = r(last)/r(first) − 1
+  double surface_growth_cm = 0;       // G = kSurfaceCycles·dR·R_o of the species' preset
+  double turnover_strain = 0;         // ε_turnover = G / max(R_o, r(last) − G)
+  double surface_strain = 0;          // ε_s: the old run's dR
   double surface_years = 0;           // years since the surface formed (radii linear between)
-  bool clamped = false;               // the window's strain above the ceiling
   Estimate estimate;                  // both runs, their maps and the .glb's re-texturing
 };
 
+// ε_s of a trunk from its window's hoop strain and the turnover's strain (0 when either is ≤ 0).
+double SurfaceStrain(double hoop_strain, double turnover_strain);
+
 struct BarkOnTreeOptions {
   std::string species = "camphor";  // a bark preset (bark::BarkPresetNames)
+  std::string model = "2layer";     // the old bark's model: 2layer or 4layer (bark::SetBarkModel)
   int map_size = 1024;              // the maps' width, a power of two in [256, 4096]
   uint64_t seed = 1;
 };
 
-// The options' own checks, before any growth: "bark_species" (a bark preset), "bark_map_size" (a
-// power of two in [256, 4096]).
+// The options' own checks, before any growth: "bark_species" (a bark preset), "bark_model"
+// (2layer or 4layer), "bark_map_size" (a power of two in [256, 4096]).
 Status CheckBarkOnTreeOptions(const BarkOnTreeOptions& options);
 
 // The plan for the history's height. Errors: "bark_height" (outside BarkHeights, with the range
-// in metres), "bark" (a tree of fewer than two years), "bark_species", "bark_map_size".
+// in metres), "bark" (a tree of fewer than two years), "bark_species", "bark_model",
+// "bark_map_size". With model 4layer the old run is the 4-layer model over kFourLayerCycles cycles
+// of dR = ε_s / kSurfaceCycles each, N_R from the inner layer's radius at the run's start,
+// (r(last) − 2.5·d_c)/(1 + kFourLayerCycles·dR), so that the surface layer S ends at r(last);
+// the young run stays the 2-layer cycle at ε_s/2.
 Result<BarkOnTreePlan> PlanBarkOnTree(const TrunkHistory& history,
                                       const BarkOnTreeOptions& options);
 
@@ -150,9 +167,9 @@ std::vector<float> WrapBarkUvs(const Tree& tree, const TreeMesh& mesh, const Bar
 Result<gltf::Document> BarkTreeDocument(const Tree& tree, const TreeMesh& mesh,
                                         const BarkOnTree& bark);
 
-// {"species", "height_m", "years": [first, last], "radii_cm": [...], "hoop_strain",
-// "strain_ceiling", "surface_years", "N_R", "N_H", "cycles", "dR", "young_dR", "clamped",
-// "tile_cm": [w, h], "young_years", "hash"} for the CLI's stats.
+// {"species", "model", "height_m", "years": [first, last], "radii_cm": [...], "hoop_strain",
+// "surface_growth_cm", "turnover_strain", "surface_years", "N_R", "N_H", "cycles", "dR",
+// "young_dR", "tile_cm": [w, h], "young_years", "hash"} for the CLI's stats.
 std::string BarkOnTreeJson(const BarkOnTree& bark, double height_m);
 
 }  // namespace niwa::compose

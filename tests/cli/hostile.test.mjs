@@ -205,6 +205,7 @@ const CHOSEN = [
   [['tree', 'grow', '--preset', 'binary', '--years', '2', '--out', `${OUT}/o.json`], '--bark', ['sim']],
   [['tree', 'grow', '--preset', 'binary', '--years', '2', '--out', `${OUT}/o.glb`, '--bark', 'sim'], '--bark-species', ['oak', '']],
   [['tree', 'grow', '--preset', 'binary', '--years', '2', '--out', `${OUT}/o.glb`, '--bark', 'sim'], '--bark-map-size', ['300', '1000']],
+  [['tree', 'grow', '--preset', 'binary', '--years', '2', '--out', `${OUT}/o.glb`, '--bark', 'sim'], '--bark-model', ['3layer', '4LAYER', '']],
 ];
 for (const [args, flag, values] of CHOSEN) {
   if (!values.length) cases.push({ name: `${args.join(' ')} (refused naming ${flag})`, args, expect: 'refused', names: flag });

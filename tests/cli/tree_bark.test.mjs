@@ -101,12 +101,46 @@ check(`--bark sim: native == WASM .glb bytes (${got.native.bytes.length})`,
   got.native.bytes.length > 0 && got.native.bytes.equals(got.wasm.bytes));
 check('--bark sim: native == WASM --stats (timings aside)', JSON.stringify(got.native.stats) === JSON.stringify(got.wasm.stats));
 const bark = got.native.stats.bark || {};
-check(`--stats bark: ${bark.cycles} cycle at dR ${bark.dR} (the window's strain ${bark.hoop_strain} capped at ${bark.strain_ceiling}; ` +
+// dR: the window's strain and the turnover's combined as rates (docs/bark-model.md, "On Niwa's trees" item 4), below both.
+const surfaceStrain = bark.hoop_strain * bark.turnover_strain / (bark.hoop_strain + bark.turnover_strain);
+check(`--stats bark: ${bark.cycles} cycle at dR ${bark.dR} (the window's strain ${bark.hoop_strain} with the turnover's ${bark.turnover_strain}; ` +
   `young ${bark.young_dR}), surface ${bark.surface_years} years, years ${bark.years}, N_R ${bark.N_R} even, radii rising`,
   bark.cycles === 1 && bark.years?.[1] === 6 && bark.N_R % 2 === 0 &&
-  bark.dR === Math.min(bark.hoop_strain, bark.strain_ceiling) && bark.young_dR === bark.dR / 2 &&
+  Math.abs(bark.dR - surfaceStrain) <= 1e-9 * surfaceStrain && bark.dR < bark.hoop_strain &&
+  bark.dR < bark.turnover_strain && bark.young_dR === bark.dR / 2 &&
   bark.surface_years > 0 && bark.surface_years <= 4 &&
   bark.radii_cm.every((r, i) => i === 0 || r >= bark.radii_cm[i - 1]) && bark.tile_cm[0] > 0);
+
+// --bark-model 4layer: the old bark is the 4-layer model (3 cycles, peeling), the same bytes and
+// stats natively and in WASM, validator-clean; its maps are not the 2-layer run's.
+const four = {};
+for (const cmd of [native, wasm]) {
+  const out = join(work, `sim4-${buildName(cmd)}.glb`);
+  const r = spawn(cmd, [...tree, ...sim, '--bark-model', '4layer', '--out', out, '--stats']);
+  check(`--bark sim --bark-model 4layer ${buildName(cmd)}: exit 0`, r.status === 0, r.stderr.trim());
+  four[buildName(cmd)] = { bytes: r.status === 0 ? readFileSync(out) : Buffer.alloc(0),
+    stats: r.status === 0 ? withoutMs(JSON.parse(r.stdout)) : {} };
+}
+const bark4 = four.native.stats.bark || {};
+check(`--bark-model 4layer: native == WASM .glb bytes (${four.native.bytes.length}) and --stats`,
+  four.native.bytes.length > 0 && four.native.bytes.equals(four.wasm.bytes) &&
+  JSON.stringify(four.native.stats) === JSON.stringify(four.wasm.stats));
+check(`--bark-model 4layer --stats: model ${bark4.model}, ${bark4.cycles} cycles at dR ${bark4.dR} (the surface's ${bark.dR} over 2), ` +
+  `young ${bark4.young_dR}, hash ${bark4.hash}`,
+  bark4.model === '4layer' && bark.model === '2layer' && bark4.cycles === 3 &&
+  Math.abs(bark4.dR - bark.dR / 2) <= 1e-12 && bark4.young_dR === bark.young_dR && bark4.hash !== bark.hash &&
+  String(bark4.hash).includes('model=4layer'));
+const report4 = await validator.validateBytes(new Uint8Array(four.native.bytes), { maxIssues: 50 });
+check('--bark-model 4layer .glb: gltf-validator 0 errors', report4.issues.numErrors === 0,
+  JSON.stringify(report4.issues.messages.filter((m) => m.severity === 0).slice(0, 3)));
+{
+  const g4 = parseGlb(four.native.bytes);
+  const m4 = g4.json.materials.find((x) => x.name === 'bark');
+  const m2 = parseGlb(got.native.bytes).json.materials.find((x) => x.name === 'bark');
+  check('--bark-model 4layer: the bark\'s base colour is not the 2-layer run\'s',
+    Boolean(m4 && m2) && !g4.image(m4.pbrMetallicRoughness.baseColorTexture.index).equals(
+      parseGlb(got.native.bytes).image(m2.pbrMetallicRoughness.baseColorTexture.index)));
+}
 
 // Validator-clean, the two bark materials dressed in the maps.
 const report = await validator.validateBytes(new Uint8Array(got.native.bytes), { maxIssues: 50 });
@@ -155,6 +189,9 @@ for (const [args, flag, text] of [
   [['--bark-height', '0.02'], '--bark-height', 'only applies with --bark sim'],
   [['--bark', 'sim', '--bark-species', 'oak'], '--bark-species', 'camphor, tallow or pine'],
   [['--bark', 'sim', '--bark-map-size', '300'], '--bark-map-size', 'power of two'],
+  [['--bark', 'sim', '--bark-model', '3layer'], '--bark-model', 'must be 2layer or 4layer'],
+  [['--bark-model', '4layer'], '--bark-model', 'only applies with --bark sim'],
+  [['--bark', 'sim', '--bark-height', '0.02', '--bark-model', '4layer', '--max-seconds', '1'], '--bark', 'use --bark-model 2layer'],
   [['--bark', 'sim', '--lod'], '--bark', ''],
   [['--bark', 'sim', '--bark-height', '0.02', '--bark-map-size', '4096', '--max-memory', '512M'], '--bark', 'the bark'],
 ]) {

@@ -1,6 +1,7 @@
 // core/compose/bark_on_tree: the trunk's radius history at a height (monotone, from the year the
 // trunk reaches it), the bark plan (N_R from the real circumference, dR the strain the visible
-// surface has seen: the window's, at most the ceiling; plates on a fast trunk), whole wraps of the
+// surface has seen: the window's and the turnover's limits as rates, so trunks of other growth
+// differ and an old trunk's plates are larger; plates on a fast trunk), whole wraps of the
 // tile around every branch (the seam at an integer u), v in tiles, the young shoots on their own
 // material, and the dressed .glb's materials.
 #include "compose/bark_on_tree.h"
@@ -9,8 +10,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "bark/bark_params.h"
+#include "bark/bark_run.h"
 #include "image/png.h"
 #include "tree/growth.h"
 #include "tree/presets.h"
@@ -75,13 +78,22 @@ TEST(BarkOnTree, ThePlanWrapsTheRealCircumferenceAndGrowsByTheTreesStrain) {
   const int n_r = p.GetInt(BarkParam::kNR);
   EXPECT_EQ(n_r % 2, 0);
   EXPECT_NEAR(plan->hoop_strain, plan->radii_cm.back() / plan->radii_cm.front() - 1, 1e-12);
-  // The sakura's trunk thickens past the ceiling (2 × camphor's 0.021): the surface is younger
-  // than the window, formed where the trunk was r(last) / (1 + ceiling) thick.
-  EXPECT_NEAR(plan->strain_ceiling, kSurfaceCycles * 0.021, 1e-12);
-  ASSERT_TRUE(plan->clamped);
+  // The surface's strain: the window's and the turnover's (G = 2 × camphor's 0.021 × R_o 5.82 cm,
+  // on a trunk r(last) − G thick) combined as rates, below both; the sakura's trunk thickens far
+  // faster than G over the window, so the surface is younger than the window.
+  const double r_o = std::sqrt(3.0) * 0.33 * 128 / (4 * M_PI);
+  EXPECT_NEAR(plan->surface_growth_cm, kSurfaceCycles * 0.021 * r_o, 1e-12);
+  EXPECT_NEAR(
+      plan->turnover_strain,
+      plan->surface_growth_cm / std::max(r_o, plan->radii_cm.back() - plan->surface_growth_cm),
+      1e-12);
+  const double e =
+      plan->hoop_strain * plan->turnover_strain / (plan->hoop_strain + plan->turnover_strain);
   EXPECT_EQ(p.GetInt(BarkParam::kCycles), 1);
-  EXPECT_DOUBLE_EQ(p.Get(BarkParam::kDeltaR), plan->strain_ceiling);
-  const double birth = plan->radii_cm.back() / (1 + plan->strain_ceiling);
+  EXPECT_NEAR(p.Get(BarkParam::kDeltaR), e, 1e-15);
+  EXPECT_LT(p.Get(BarkParam::kDeltaR), plan->turnover_strain);
+  EXPECT_LT(p.Get(BarkParam::kDeltaR), plan->hoop_strain);
+  const double birth = plan->radii_cm.back() / (1 + p.Get(BarkParam::kDeltaR));
   EXPECT_GT(plan->surface_years, 0);
   EXPECT_LT(plan->surface_years, kBarkWindow);
   const std::size_t last = plan->radii_cm.size() - 1;
@@ -95,7 +107,7 @@ TEST(BarkOnTree, ThePlanWrapsTheRealCircumferenceAndGrowsByTheTreesStrain) {
   // The young run: the same lattice and seed, one cycle, half the strain.
   EXPECT_EQ(plan->young_state.params.GetInt(BarkParam::kCycles), 1);
   EXPECT_EQ(plan->young_state.params.GetInt(BarkParam::kNR), n_r);
-  EXPECT_DOUBLE_EQ(plan->young_state.params.Get(BarkParam::kDeltaR), plan->strain_ceiling / 2);
+  EXPECT_DOUBLE_EQ(plan->young_state.params.Get(BarkParam::kDeltaR), p.Get(BarkParam::kDeltaR) / 2);
   EXPECT_EQ(plan->young_state.seed, plan->state.seed);
   EXPECT_GT(plan->estimate.seconds, 0);
   EXPECT_GT(plan->estimate.memory_bytes, 0);
@@ -255,8 +267,11 @@ TEST(BarkOnTree, AFastThickeningTrunkShowsPlates) {
               0.2 * plan->radii_cm.back());
 }
 
-// The history still drives the run: a slower trunk's surface sees its own smaller strain over the
-// whole window, a thicker trunk has more columns, and a faster one a younger surface.
+// The history drives the run (issue 30, "every trunk at the strain ceiling"): trunks of other
+// growth get other strains, each below both its limits; a slower trunk's surface sees less strain
+// than a faster one's of the same thickness, a thicker trunk less than a thinner one of the same
+// growth (the turnover: note *3), a thicker trunk has more columns, and a faster one a younger
+// surface.
 TEST(BarkOnTree, DifferentHistoriesGiveDifferentBark) {
   const auto plan = [](const TrunkHistory& h) {
     Result<BarkOnTreePlan> p = PlanBarkOnTree(h, {});
@@ -267,10 +282,20 @@ TEST(BarkOnTree, DifferentHistoriesGiveDifferentBark) {
                        thick = plan(Thickening(10.0, 1.2)), slow = plan(Thickening(10.0, 1.004));
   const auto dr = [](const BarkOnTreePlan& p) { return p.state.params.Get(BarkParam::kDeltaR); };
   const auto n_r = [](const BarkOnTreePlan& p) { return p.state.params.GetInt(BarkParam::kNR); };
-  EXPECT_FALSE(slow.clamped);
-  EXPECT_NEAR(dr(slow), std::pow(1.004, 4) - 1, 1e-9);
-  EXPECT_EQ(slow.surface_years, kBarkWindow);
-  EXPECT_LT(dr(slow), dr(thick));
+  std::vector<double> strains;
+  for (const BarkOnTreePlan* p : {&fast, &faster, &thick, &slow}) {
+    EXPECT_GT(dr(*p), 0);
+    EXPECT_LT(dr(*p), p->turnover_strain);
+    EXPECT_LT(dr(*p), p->hoop_strain);
+    EXPECT_EQ(std::count(strains.begin(), strains.end(), dr(*p)), 0) << dr(*p);
+    strains.push_back(dr(*p));
+  }
+  EXPECT_NEAR(slow.hoop_strain, std::pow(1.004, 4) - 1, 1e-9);
+  EXPECT_NEAR(dr(slow), SurfaceStrain(slow.hoop_strain, slow.turnover_strain), 1e-15);
+  EXPECT_GT(slow.surface_years, fast.surface_years);
+  EXPECT_LT(dr(slow), dr(thick));  // slower, the same thickness at the start
+  EXPECT_LT(dr(thick), dr(fast));  // thicker, the same growth
+  EXPECT_GT(dr(faster), dr(fast));
   EXPECT_GT(n_r(thick), 4 * n_r(fast));
   EXPECT_LT(faster.surface_years, fast.surface_years);
   EXPECT_GT(n_r(faster), n_r(fast));  // a thicker trunk at the end
@@ -279,6 +304,89 @@ TEST(BarkOnTree, DifferentHistoriesGiveDifferentBark) {
     const std::string hash = bark::EncodeBarkHash(p->state);
     EXPECT_EQ(std::count(hashes.begin(), hashes.end(), hash), 0) << hash;
     hashes.push_back(hash);
+  }
+}
+
+// --bark-model 4layer: the old run is the 4-layer model over kFourLayerCycles cycles of ε_s / 2
+// (the shown surface's life: two cycles), the inner layer starting at (r(last) − 2.5·d_c)/(1 +
+// 3·dR) so that S ends at the trunk's radius; the young run stays the 2-layer cycle at ε_s / 2; the
+// estimate counts the three layers; an unknown model names bark_model.
+TEST(BarkOnTree, TheFourLayerModelRunsOverTheSurfacesLife) {
+  const TrunkHistory h = Thickening(10.0, 1.2);
+  BarkOnTreeOptions two, four;
+  four.model = "4layer";
+  Result<BarkOnTreePlan> p2 = PlanBarkOnTree(h, two), p4 = PlanBarkOnTree(h, four);
+  ASSERT_TRUE(p2.ok() && p4.ok());
+  EXPECT_EQ(p2->state.model, "2layer");
+  EXPECT_EQ(p4->state.model, "4layer");
+  EXPECT_EQ(p4->surface_strain, p2->surface_strain);
+  const auto& q = p4->state.params;
+  EXPECT_EQ(q.GetInt(BarkParam::kCycles), kFourLayerCycles);
+  EXPECT_EQ(kFourLayerCycles, 3);
+  EXPECT_DOUBLE_EQ(q.Get(BarkParam::kDeltaR), p4->surface_strain / kSurfaceCycles);
+  // r_I at the start: S (2.5·d_c outside r_I at the end, d_c = cork·D) ends at r(last).
+  const double d_c = q.Get(BarkParam::kCork) * q.Get(BarkParam::kD);
+  const double start =
+      (p4->radii_cm.back() - 2.5 * d_c) / (1 + kFourLayerCycles * q.Get(BarkParam::kDeltaR));
+  const double pitch = std::sqrt(3.0) / 2 * q.Get(BarkParam::kLo);
+  EXPECT_LE(std::fabs(q.GetInt(BarkParam::kNR) * pitch - 2 * M_PI * start), pitch + 1e-9);
+  EXPECT_EQ(p4->young_state.model, "2layer");
+  EXPECT_EQ(p4->young_state.params.GetInt(BarkParam::kCycles), 1);
+  EXPECT_DOUBLE_EQ(p4->young_state.params.Get(BarkParam::kDeltaR), p4->surface_strain / 2);
+  EXPECT_GT(p4->estimate.seconds, 3 * p2->estimate.seconds);
+  EXPECT_NE(p4->estimate.what.find("4-layer"), std::string::npos) << p4->estimate.what;
+  four.model = "3layer";
+  const Result<BarkOnTreePlan> bad = PlanBarkOnTree(h, four);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.status().field(), "bark_model") << bad.status().Line();
+  EXPECT_EQ(CheckBarkOnTreeOptions(four).field(), "bark_model");
+}
+
+// A history of `years` years growing `cm_a_year` in radius every year (linear, as Niwa's trunks
+// thicken at 1.3 m: keyaki and sakura 0.7-1.0 cm a year at 15 years), its last W + 1 recorded.
+TrunkHistory Linear(int years, double cm_a_year) {
+  TrunkHistory h;
+  h.height_m = 1.3;
+  for (int year = 1; year <= years; ++year) h.years.push_back({year, 10.0, year * cm_a_year});
+  return h;
+}
+
+// Issue 30, "plate size not growing with the tree" (Table 3's note *3: bigger trees form bigger
+// closed regions): the surface of a 40-year trunk (29-32 cm over the window) is less strained than
+// a 5-year one's (0.8-4 cm) at the same absolute growth a year, and its plates, run on the study's
+// lattice at each plan's strain (a 64 × 32 patch: the plates' size in cm follows the strain and
+// L_o, not the patch), are larger around and in area. Before, both ran at the ceiling 0.042 and got
+// the same plates.
+TEST(BarkOnTree, AnOldTrunkShowsLargerPlatesThanAYoungOne) {
+  for (const char* species : {"camphor", "tallow", "pine"}) {
+    BarkOnTreeOptions options;
+    options.species = species;
+    options.map_size = 256;
+    Result<BarkOnTreePlan> young = PlanBarkOnTree(Linear(5, 0.8), options);
+    Result<BarkOnTreePlan> old = PlanBarkOnTree(Linear(40, 0.8), options);
+    ASSERT_TRUE(young.ok() && old.ok()) << species;
+    const double young_dr = young->state.params.Get(BarkParam::kDeltaR);
+    const double old_dr = old->state.params.Get(BarkParam::kDeltaR);
+    EXPECT_LT(old_dr, young_dr / 3) << species;
+    if (std::string(species) != "camphor") continue;  // one species run (the test's time)
+    const auto plates = [](BarkOnTreePlan plan) {
+      bark::BarkState s = plan.state;
+      EXPECT_TRUE(s.params.Set(BarkParam::kNR, 64).ok());
+      EXPECT_TRUE(s.params.Set(BarkParam::kNH, 32).ok());
+      Result<bark::BarkRun> run = bark::BarkRun::Start(s, Budget{});
+      EXPECT_TRUE(run.ok()) << run.status().Line();
+      if (!run.ok()) return bark::CrackMeasures{};
+      EXPECT_TRUE(run->Advance(nullptr).ok());
+      return run->cracks();
+    };
+    const bark::CrackMeasures y = plates(*young), o = plates(*old);
+    ASSERT_GT(y.count, 0);
+    ASSERT_GT(o.count, 0);
+    EXPECT_GT(o.mean_width, 1.5 * y.mean_width)
+        << o.mean_width << " × " << o.mean_height << " cm against " << y.mean_width << " × "
+        << y.mean_height;
+    EXPECT_GT(o.mean_width * o.mean_height, 2 * y.mean_width * y.mean_height);
+    EXPECT_LT(o.count, y.count);
   }
 }
 

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bark/bark_params.h"
 #include "compose/garden_run.h"
 #include "compose/garden_state.h"
 #include "render/tree_run.h"
@@ -83,6 +84,12 @@ TEST(GardenBark, EachTreesBarkIsFromItsOwnTrunkHistory) {
       if (y.year >= b.plan.first_year && y.year <= b.plan.last_year) radii.push_back(y.radius_cm);
     EXPECT_EQ(b.plan.last_year, group.age + 4) << group.name;
     EXPECT_EQ(b.plan.radii_cm, radii) << group.name;
+    // The surface's strain is the tree's own, below both its limits (no ceiling reached:
+    // docs/bark-model.md, "On Niwa's trees" item 4).
+    const double dr = b.plan.state.params.Get(bark::BarkParam::kDeltaR);
+    EXPECT_NEAR(dr, SurfaceStrain(b.plan.hoop_strain, b.plan.turnover_strain), 1e-15);
+    EXPECT_LT(dr, b.plan.hoop_strain) << group.name;
+    EXPECT_LT(dr, b.plan.turnover_strain) << group.name;
   }
   EXPECT_EQ(barks.trees[0].species, "pine");
   EXPECT_EQ(barks.trees[1].species, "tallow");
