@@ -60,6 +60,9 @@ async function orbitFrameTime(page, hook, presses = 12, everyMs = 150) {
     window.__niwaOrbitTiming = { shown, observer, start: performance.now() };
   }, `data-${hook}`);
   await arrowOrbit(page, presses, everyMs);
+  // A frame in parts still on the GPU when the keys stop (a loaded SwiftShader: 0 frames shown in
+  // the 1.8 s of keys in a cold run of 2026-12-07) is counted when it finishes, up to 20 s.
+  await page.waitForFunction(() => window.__niwaOrbitTiming.shown.length > 0, null, { timeout: 20_000, polling: 100 }).catch(() => {});
   return page.evaluate(() => {
     const { shown, observer, start } = window.__niwaOrbitTiming;
     observer.disconnect();
