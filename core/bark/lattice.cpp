@@ -10,10 +10,13 @@
 
 namespace niwa::bark {
 
-double Lattice::pitch() const { return std::sqrt(3.0) / 2.0 * l_o; }
+double LatticePitch(double l_o) { return std::sqrt(3.0) / 2.0 * l_o; }
+double LatticeRadius(int n_r, double l_o) { return std::sqrt(3.0) * l_o * n_r / (4.0 * det::kPi); }
+
+double Lattice::pitch() const { return LatticePitch(l_o); }
 double Lattice::circumference() const { return n_r * pitch(); }
 double Lattice::height() const { return n_h * l_o; }
-double Lattice::radius() const { return std::sqrt(3.0) * l_o * n_r / (4.0 * det::kPi); }
+double Lattice::radius() const { return LatticeRadius(n_r, l_o); }
 double Lattice::x_of(int i) const { return i * pitch(); }
 double Lattice::z_of(int i, int j) const { return j * l_o + (i % 2) * l_o / 2.0; }
 

@@ -78,4 +78,9 @@ struct Lattice {
 // The lattice of n_r (even, ≥ 4) columns and n_h (≥ 3) rows at spacing l_o.
 Lattice BuildLattice(int n_r, int n_h, double l_o);
 
+// A lattice's column pitch and radius from its rows without building it (Lattice::pitch and
+// radius are these): (√3/2)·L_o, and R_o = √3·L_o·N_R/(4π).
+double LatticePitch(double l_o);
+double LatticeRadius(int n_r, double l_o);
+
 }  // namespace niwa::bark

@@ -8,6 +8,7 @@
 
 #include "bark/bark_params.h"
 #include "bark/bark_run.h"
+#include "bark/lattice.h"
 #include "geom/tri_mesh.h"
 #include "params/param_text.h"
 #include "tree/tree_gltf.h"
@@ -241,7 +242,7 @@ Result<BarkOnTreePlan> PlanBarkOnTree(const TrunkHistory& history,
   // The visible surface has seen only the strain since it formed (docs/bark-model.md, "On Niwa's
   // trees", item 4): the window's and the turnover's limits on its age, as rates that add.
   const double lo = s.params.Get(BarkParam::kLo);
-  const double r_o = std::sqrt(3.0) * lo * s.params.Get(BarkParam::kNR) / (4 * kPi);
+  const double r_o = bark::LatticeRadius(s.params.GetInt(BarkParam::kNR), lo);
   plan.surface_growth_cm = kSurfaceCycles * s.params.Get(BarkParam::kDeltaR) * r_o;
   plan.turnover_strain = plan.surface_growth_cm / std::max(r_o, r1 - plan.surface_growth_cm);
   plan.surface_strain = SurfaceStrain(plan.hoop_strain, plan.turnover_strain);
@@ -269,7 +270,7 @@ Result<BarkOnTreePlan> PlanBarkOnTree(const TrunkHistory& history,
   // S ends at r1.
   const double d_c = s.params.Get(BarkParam::kCork) * s.params.Get(BarkParam::kD);
   const double start = four ? std::max(0.0, r1 - 2.5 * d_c) / (1 + cycles * cycle_dr) : birth;
-  const double columns = 2 * kPi * start / (std::sqrt(3.0) / 2 * lo);
+  const double columns = 2 * kPi * start / bark::LatticePitch(lo);
   const auto& nr_spec = bark::BarkTable().row(static_cast<std::size_t>(BarkParam::kNR));
   const double n_r = std::clamp(2 * std::round(columns / 2), nr_spec.min_value, nr_spec.max_value);
   // One cycle, as the paper's Table 3 runs (its dH per cycle cuts the plates across once).
