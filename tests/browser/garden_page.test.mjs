@@ -29,7 +29,7 @@
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
-import { ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, timedCheck, waitStudyRun, watchPage } from './harness.mjs';
+import { ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, clickToFrame, newContext, runBrowserTest, saveCanvasPng, timedCheck, waitStudyRun, watchPage } from './harness.mjs';
 import { gray16PngBytes, pngBytes } from '../support/png_bytes.mjs';
 
 const withoutMs = (stats) => Object.fromEntries(Object.entries(stats).filter(([k]) => k !== 'ms' && !k.startsWith('ms_')));
@@ -63,25 +63,6 @@ const differFrom = (page, name, drop = false) => page.evaluate(([key, dropIt]) =
   if (dropIt) delete window[key];
   return differ / (a.length / 4);
 }, [name, drop]);
-
-// One click on a parameter group's <summary> (another control than the growing one), timed from
-// node to the second animation frame after its handler (the toggled group painted), as
-// responsive.test.mjs's; the group is clicked again untimed, so it ends as it was. Infinity when
-// the group did not toggle.
-async function clickToFrame(page) {
-  const start = Date.now();
-  const toggled = await page.evaluate(() => new Promise((resolve) => {
-    const summary = [...document.querySelectorAll('#params details.group > summary')].at(-1);
-    if (!summary) { resolve(false); return; }
-    const details = summary.parentElement;
-    const before = details.open;
-    summary.addEventListener('click', () => requestAnimationFrame(() => requestAnimationFrame(() => resolve(details.open !== before))), { once: true });
-    summary.click();
-  }));
-  const ms = Date.now() - start;
-  await page.evaluate(() => [...document.querySelectorAll('#params details.group > summary')].at(-1)?.click());
-  return toggled ? ms : Infinity;
-}
 
 const problems = [];
 await runBrowserTest(async (server, browser) => {

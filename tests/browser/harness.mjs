@@ -100,6 +100,28 @@ export async function modulePage(server, browser, problems) {
   return page;
 }
 
+// One click on a parameter group's <summary> (a control other than the one that is busy: the
+// first closed group, else the first), timed from node to the second animation frame after its
+// handler (the toggled group painted); the same summary is clicked again untimed, so the group ends
+// as it was. Returns ms, or Infinity when there is no group or it did not toggle. The pages' answer
+// to a click while they grow, draw or export (responsive.test.mjs, garden_page.test.mjs).
+export async function clickToFrame(page) {
+  const start = Date.now();
+  const toggled = await page.evaluate(() => new Promise((resolve) => {
+    const summary = document.querySelector('#params details.group:not([open]) > summary') ||
+      document.querySelector('#params details.group > summary');
+    window.__niwaClickedSummary = summary;
+    if (!summary) { resolve(false); return; }
+    const details = summary.parentElement;
+    const before = details.open;
+    summary.addEventListener('click', () => requestAnimationFrame(() => requestAnimationFrame(() => resolve(details.open !== before))), { once: true });
+    summary.click();
+  }));
+  const ms = Date.now() - start;
+  await page.evaluate(() => window.__niwaClickedSummary?.click());  // back as it was (not timed)
+  return toggled ? ms : Infinity;
+}
+
 // Grove page: waits until it has drawn `mode` with everything it needs (all trees; in hybrid mode a
 // frame drawn with the draw lists of a view newer than viewSerialAbove: the lists arrive before the
 // frame that draws them, and a snapshot in between shows the previous lists), or shows an error.
@@ -125,7 +147,8 @@ export const CHROMIUM_OPTIONS = {
 // (NIWA_BROWSER_WS, tests/browser/lane_browser.mjs) instead of starting their own: a fresh browser's
 // first page cost 5-6 CPU s more than the same page in a browser that had drawn before (its GPU
 // process compiling SwiftShader's routines and ANGLE's shaders; tree, ivy and garden pages alike,
-// measured 2026-12-07), plus 2.4 s to start it, about 400 CPU s over the browser tests. Each test
+// measured 2026-12-07), plus 2.4 s to start it; four tests one after another took 204 CPU s with a
+// browser each and 187 sharing one (idle, 2026-12-07 14:50), about 4 CPU s a test. Each test
 // still gets its own contexts (cookies, storage, caches) and its own server (its own origin); closing
 // a connected browser closes this test's contexts only. When the lane's browser is gone (it crashed),
 // the test starts its own and says so. Alone (node tests/browser/X.test.mjs) or under scripts/bench,

@@ -9,7 +9,7 @@
 // Its answer times are speed goals (harness.mjs timedCheck): checked by scripts/bench with NIWA_TIMED=1,
 // guarded only against a hang here.
 import path from 'node:path';
-import { ARTIFACTS, TIMED, TIMEOUT, check, newContext, runBrowserTest, timedCheck, saveCanvasPng, waitReady, watchPage } from './harness.mjs';
+import { ARTIFACTS, TIMED, TIMEOUT, check, clickToFrame, newContext, runBrowserTest, timedCheck, saveCanvasPng, waitReady, watchPage } from './harness.mjs';
 
 const problems = [];
 const hooks = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
@@ -25,26 +25,6 @@ const LONGTASK_INIT = `
 `;
 const longTasksSince = (page, since) => page.evaluate((t) => (window.__longtasks || []).filter((e) => e.start >= t).map((e) => e.ms), since);
 const now = (page) => page.evaluate(() => performance.now());
-
-// One click on the first closed-or-open parameter group, timed from node to the second frame after
-// its handler (the toggled group painted); returns ms. The group ends as it was (two clicks).
-async function clickToFrame(page) {
-  const start = Date.now();
-  const toggled = await page.evaluate(() => new Promise((resolve) => {
-    const summary = document.querySelector('#params details.group:not([open]) > summary') ||
-      document.querySelector('#params details.group > summary');
-    const details = summary.parentElement;
-    const before = details.open;
-    summary.addEventListener('click', () => requestAnimationFrame(() => requestAnimationFrame(() => resolve(details.open !== before))), { once: true });
-    summary.click();
-  }));
-  const ms = Date.now() - start;
-  await page.evaluate(() => {  // close it again (not timed)
-    const open = [...document.querySelectorAll('#params details.group[open] > summary')];
-    if (open.length > 1) open[open.length - 1].click();
-  });
-  return toggled ? ms : Infinity;
-}
 
 // Clicks every 200 ms while `busy()` holds (at least `min` clicks, at most `max`): the slowest click.
 async function clicksDuring(page, busy, { min = 1, max = 300 } = {}) {
