@@ -16,9 +16,10 @@ uniform mat4 uViewProjection;
 uniform mat4 uSunViewProjection;  // the shadow map's (web/gl/shadow_map.js)
 uniform float uShadowNormalOffset;  // metres along the normal (towards the sun) before the lookup
 uniform vec3 uLightDirection;       // unit, towards the sun
-// The selection's x-ray pass only (else 0): clip-space x and y per pixel times the half-width in
-// pixels a selected branch is drawn at least (a twig thinner than a pixel has no fragments, so a
-// branch picked in a dense crown showed no highlight at all).
+// The selection's x-ray pass only (else 0): how far each side of a selected branch is pushed out
+// on screen, in clip-space x and y (tree_renderer.js XRAY_WIDEN_PX / the drawing buffer's size: the
+// branch drawn that many pixels wider; a twig thinner than a pixel has no fragments, so a branch
+// picked in a dense crown showed no highlight at all).
 uniform vec2 uXrayWiden;
 
 out vec3 vNormal;
@@ -46,7 +47,7 @@ void main() {
   vShadow = uSunViewProjection * vec4(world + towards * uShadowNormalOffset, 1.0);
   gl_Position = uViewProjection * vec4(world, 1.0);
   if (aHighlight > 0.0 && uXrayWiden.x > 0.0) {
-    // The tube's vertices pushed apart on screen along their normals' projection, by the half-width
+    // The tube's vertices pushed apart on screen along their normals' projection, by uXrayWiden
     // (times clip w: the same pixels at any depth). A normal seen end-on is left where it is.
     vec2 side = (uViewProjection * vec4(rotation * aNormal, 0.0)).xy;
     float len = length(side);

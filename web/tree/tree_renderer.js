@@ -25,9 +25,9 @@ export { BACKGROUND } from '../gl/context.js';
 export const SHADERS = new URL('../../shaders/tree/', import.meta.url).href;
 const NONE = 0xffffffff;  // "no branch" for the branch-id attribute and the selection
 // The selection's x-ray pass draws the selected branch this many drawing-buffer pixels wider than
-// it is (half on each side; clip space spans 2 units, so the offset is XRAY_MIN_PX / size): a twig
+// it is (half on each side; clip space spans 2 units, so the offset is XRAY_WIDEN_PX / size): a twig
 // thinner than a pixel still shows its highlight.
-const XRAY_MIN_PX = 3;
+const XRAY_WIDEN_PX = 3;
 
 // The worker's textures per part (mesh.textures, core/tree/tree_textures.h), as the .glb's
 // materials: wrap, alpha cutoff (glTF MASK 0.5) and the bark's normal map.
@@ -756,8 +756,8 @@ export class Renderer extends StudyLayer {
         setup: () => {
           common();
           gl.uniform1f(t.uniforms.uXray, 1);
-          // XRAY_MIN_PX wider on screen, so however thin the twig it shows (tree.vert).
-          gl.uniform2f(t.uniforms.uXrayWiden, XRAY_MIN_PX / gl.drawingBufferWidth, XRAY_MIN_PX / gl.drawingBufferHeight);
+          // XRAY_WIDEN_PX wider on screen, so however thin the twig it shows (tree.vert).
+          gl.uniform2f(t.uniforms.uXrayWiden, XRAY_WIDEN_PX / gl.drawingBufferWidth, XRAY_WIDEN_PX / gl.drawingBufferHeight);
           gl.uniform1f(t.uniforms.uUseTexture, 0);
           gl.uniform3fv(t.uniforms.uColor, PARTS.bark.color);
           gl.uniform1f(t.uniforms.uDoubleSided, 0);
