@@ -35,19 +35,19 @@ namespace {
 using bark::BarkParam;
 
 // The one table of the bark commands' names for state fields (run/field_names.h).
-const run::FieldNames kFieldFlags = {
+const run::FieldNames kBarkFieldFlags = {
     {"species", "--species"}, {"model", "--model"},   {"seed", "--seed"}, {"N_R", "--size"},
     {"N_H", "--size"},        {"cycles", "--cycles"}, {"vary", "--vary"}, {"seeds", "--seeds"},
 };
 
-constexpr FlagRange kSeedRange = {0, bark::kMaxBarkSeed, true};
+constexpr FlagRange kBarkSeedRange = {0, bark::kMaxBarkSeed, true};
 constexpr FlagRange kThreadsRange = {1, 2, true};
 
 FlagRange BarkRowRange(BarkParam row) {
   return RowFlagRange(bark::BarkTable().row(static_cast<std::size_t>(row)));
 }
 
-struct GrowOptions {
+struct BarkGrowOptions {
   std::string species, model, size, url, params_file;
   std::string out, normal, height, orm, csv, frames;
   std::vector<std::string> sets;
@@ -59,7 +59,7 @@ struct GrowOptions {
 };
 
 // The state from --url, then --species, --params, --model, --size, --seed, --cycles and --set.
-bark::BarkState ResolveBarkState(const GrowOptions& o) {
+bark::BarkState ResolveBarkState(const BarkGrowOptions& o) {
   bark::BarkState state;
   if (!o.url.empty()) {
     std::vector<std::string> notices;
@@ -67,19 +67,20 @@ bark::BarkState ResolveBarkState(const GrowOptions& o) {
     if (!notices.empty()) throw BadInput{"--url: " + notices.front()};
   }
   if (!o.species.empty())
-    Check(run::RenameField(bark::SetBarkSpecies(o.species, &state), kFieldFlags));
+    Check(run::RenameField(bark::SetBarkSpecies(o.species, &state), kBarkFieldFlags));
   if (!o.params_file.empty()) {
     Result<std::string> text = ReadFile(o.params_file, "--params", kMaxParamsFileBytes);
     if (!text.ok()) Fail(text.status());
     Check(bark::ApplyBarkStateJson(*text, &state).Within("--params " + o.params_file));
   }
-  if (!o.model.empty()) Check(run::RenameField(bark::SetBarkModel(o.model, &state), kFieldFlags));
-  if (!o.size.empty()) Check(run::RenameField(bark::SetBarkSize(o.size, &state), kFieldFlags));
-  if (o.seed >= 0) Check(run::RenameField(bark::SetBarkSeed(o.seed, &state), kFieldFlags));
+  if (!o.model.empty())
+    Check(run::RenameField(bark::SetBarkModel(o.model, &state), kBarkFieldFlags));
+  if (!o.size.empty()) Check(run::RenameField(bark::SetBarkSize(o.size, &state), kBarkFieldFlags));
+  if (o.seed >= 0) Check(run::RenameField(bark::SetBarkSeed(o.seed, &state), kBarkFieldFlags));
   if (o.cycles > 0)
-    Check(run::RenameField(state.params.Set(BarkParam::kCycles, o.cycles), kFieldFlags));
+    Check(run::RenameField(state.params.Set(BarkParam::kCycles, o.cycles), kBarkFieldFlags));
   for (const std::string& s : o.sets) Check(state.params.SetFromAssignment(s).Within("--set"));
-  Check(run::RenameField(bark::CheckBarkState(state), kFieldFlags));
+  Check(run::RenameField(bark::CheckBarkState(state), kBarkFieldFlags));
   return state;
 }
 
@@ -88,7 +89,7 @@ struct OutputFile {
 };
 
 // bark grow: an adapter over bark::BarkRun (core/bark/bark_run.h).
-int RunGrow(const GrowOptions& o, std::ostream& out) {
+int RunGrow(const BarkGrowOptions& o, std::ostream& out) {
   const auto t0 = std::chrono::steady_clock::now();
   const bark::BarkState state = ResolveBarkState(o);
   const Budget budget = ResolveBudget(o.budget);
@@ -104,7 +105,7 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
                          "'" + Echo(o.frames) + "' is not a folder; must be an existing folder"));
   }
   Result<bark::BarkRun> run = bark::BarkRun::Start(state, budget);
-  if (!run.ok()) Fail(run::RenameField(run.status(), kFieldFlags));
+  if (!run.ok()) Fail(run::RenameField(run.status(), kBarkFieldFlags));
   if (Extension(o.out) == ".glb") {
     // The .glb's maps and mesh on top of the run's estimate, before any growth.
     Result<Estimate> glb = run->ExportEstimate("glb");
@@ -115,7 +116,7 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   run->RecordFrames(!o.frames.empty());
   run->SetLanes(o.threads);
   const auto t1 = std::chrono::steady_clock::now();
-  Check(run::RenameField(run->Advance({}), kFieldFlags));
+  Check(run::RenameField(run->Advance({}), kBarkFieldFlags));
   const auto t2 = std::chrono::steady_clock::now();
   // The maps' raster (drawn once, on first use) timed apart from their PNG encoding.
   const bool any_map = !o.out.empty() || !o.normal.empty() || !o.height.empty() || !o.orm.empty();
@@ -178,7 +179,7 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
 }
 
 struct LayersOptions {
-  GrowOptions state;
+  BarkGrowOptions state;
   std::string csv;
 };
 
@@ -210,7 +211,7 @@ int RunLayers(const LayersOptions& o, std::ostream& out) {
 }
 
 struct Table3Options {
-  GrowOptions state;
+  BarkGrowOptions state;
   std::string seeds = "1-5";
 };
 
@@ -237,18 +238,18 @@ int RunTable3(const Table3Options& o, std::ostream& out) {
   const auto [first, last] = ParseSeeds(o.seeds);
   std::vector<bark::BarkState> states;
   for (const char* species : {"camphor", "tallow", "pine"}) {
-    GrowOptions one = o.state;
+    BarkGrowOptions one = o.state;
     one.species = species;
     states.push_back(ResolveBarkState(one));
   }
   Result<std::string> table = bark::Table3Json(states, first, last, ResolveBudget(o.state.budget));
-  if (!table.ok()) Fail(run::RenameField(table.status(), kFieldFlags));
+  if (!table.ok()) Fail(run::RenameField(table.status(), kBarkFieldFlags));
   out << *table << "\n";
   return 0;
 }
 
 struct CalibrateOptions {
-  GrowOptions state;
+  BarkGrowOptions state;
   std::string seeds = "1-3";
   std::vector<std::string> vary;
 };
@@ -263,17 +264,17 @@ int RunCalibrate(const CalibrateOptions& o, std::ostream& out) {
   request.last_seed = last;
   for (const std::string& v : o.vary) {
     Result<bark::CalibrateAxis> axis = bark::ParseCalibrateAxis(v, request.base.model);
-    if (!axis.ok()) Fail(run::RenameField(axis.status(), kFieldFlags));
+    if (!axis.ok()) Fail(run::RenameField(axis.status(), kBarkFieldFlags));
     request.vary.push_back(*axis);
   }
   if (request.vary.empty()) request.vary = bark::DefaultCalibrateAxes(request.base.model);
   Result<std::string> json = bark::CalibrateJson(request, ResolveBudget(o.state.budget));
-  if (!json.ok()) Fail(run::RenameField(json.status(), kFieldFlags));
+  if (!json.ok()) Fail(run::RenameField(json.status(), kBarkFieldFlags));
   out << *json << "\n";
   return 0;
 }
 
-void PrintPresets(std::ostream& out) {
+void PrintBarkPresets(std::ostream& out) {
   for (const std::string& name : bark::BarkPresetNames()) {
     out << name;
     for (const auto& [key, value] : bark::BarkPresetValues(name))
@@ -288,7 +289,7 @@ void AddBarkCommands(CLI::App& app, CommandList& commands) {
   const std::vector<std::string> example = {"--size", "16x8", "--set", "map_size=256", "--stats"};
   std::vector<std::string> study_example = {"bark", "grow"};
   study_example.insert(study_example.end(), example.begin(), example.end());
-  commands.studies.push_back({"bark", &bark::BarkTable(), &PrintPresets, {}, study_example});
+  commands.studies.push_back({"bark", &bark::BarkTable(), &PrintBarkPresets, {}, study_example});
   CLI::App* bark_app =
       Subcommand(app, "bark", "Bark that cracks as the trunk grows (Hirota, Kato, Kaneko)");
   bark_app->require_subcommand(1);
@@ -298,7 +299,7 @@ void AddBarkCommands(CLI::App& app, CommandList& commands) {
       "Grow the 2-layer spring model (paper 003 §3) or the 4-layer one (§4: peeling and shedding) "
       "on a torus patch of the trunk: cracks, maps (base colour, normal, 16-bit height, "
       "occlusion/roughness) and statistics");
-  auto o = std::make_shared<GrowOptions>();
+  auto o = std::make_shared<BarkGrowOptions>();
   grow->add_option("--species", o->species,
                    "camphor (default), tallow or pine: Table 2 (niwa presets bark)");
   grow->add_option("--model", o->model,
@@ -308,7 +309,7 @@ void AddBarkCommands(CLI::App& app, CommandList& commands) {
                    "Lattice WxH: N_R columns around (even, " +
                        RangeHelp(BarkRowRange(BarkParam::kNR)) + ") by N_H nodes along (" +
                        RangeHelp(BarkRowRange(BarkParam::kNH)) + "); default 128x64");
-  AddNumberFlag(grow, "--seed", &o->seed, kSeedRange, "RNG seed, " + RangeHelp(kSeedRange));
+  AddNumberFlag(grow, "--seed", &o->seed, kBarkSeedRange, "RNG seed, " + RangeHelp(kBarkSeedRange));
   AddNumberFlag(
       grow, "--cycles", &o->cycles, BarkRowRange(BarkParam::kCycles),
       "Growth periods T (the cycles row), " + RangeHelp(BarkRowRange(BarkParam::kCycles)));

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <ostream>
@@ -123,8 +124,9 @@ void Excludes(CLI::Option* a, CLI::Option* b);
 // flags given together that exclude each other.
 void CheckApplicable(const CLI::App& cmd);
 // Refuses, before any work, a given output flag (kOutput) that StagedOutputs would refuse after the
-// work: an empty name, one ending in '/' or one over 255 bytes, a folder that does not exist or cannot be written, an
-// existing target that is not a regular file, two outputs naming one file. Same lines as Stage's.
+// work: an empty name, one ending in '/' or one over 255 bytes, a folder that does not exist or
+// cannot be written, an existing target that is not a regular file, two outputs naming one file.
+// Same lines as Stage's.
 void PreflightOutputs(const CLI::App& cmd);
 // A caption flag: printable text of at most kMaxCaptionBytes bytes (control characters refused,
 // not silently dropped), written into markup escaped (base/markup_escape.h) by the core.
@@ -207,5 +209,10 @@ void AddBudgetOptions(CLI::App* cmd, BudgetOptions* options);
 Budget ResolveBudget(const BudgetOptions& options);
 // The line a command prints on stderr when a limit stopped its work early ("" prints nothing).
 void ReportTruncated(const std::string& line);
+
+// Milliseconds from a to b (the `ms` fields of --stats).
+inline double Ms(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
 
 }  // namespace niwa::cli

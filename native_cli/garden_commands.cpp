@@ -92,10 +92,6 @@ compose::GardenState ResolveGardenState(const GardenOptions& o) {
   return state;
 }
 
-double Ms(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
-  return std::chrono::duration<double, std::milli>(b - a).count();
-}
-
 // garden grow: an adapter over compose::GardenRun.
 int RunGardenGrow(const GardenOptions& o, std::ostream& out) {
   const auto t0 = std::chrono::steady_clock::now();

@@ -31,8 +31,8 @@ constexpr char kIvyCliStatsChange[] =
     "lower --steps or --subdivide, or raise t1 and t2, or leave out --stats";
 // The numeric flags' ranges, written once: parsed by FlagNumber, shown by RangeHelp.
 constexpr FlagRange kStepsRange = {0, ivy::kMaxSteps, true};
-constexpr FlagRange kSeedRange = {0, ivy::kMaxIvySeed, true};
-constexpr FlagRange kTreeYearsRange = {1, ivy::kMaxTreeYears, true};
+constexpr FlagRange kIvySeedRange = {0, ivy::kMaxIvySeed, true};
+constexpr FlagRange kIvyTreeYearsRange = {1, ivy::kMaxTreeYears, true};
 constexpr FlagRange kSubdivideRange = {0, ivy::kMaxIvySubdivide, true};
 constexpr FlagRange kSvgLeavesRange = {0, 1, true};
 
@@ -46,10 +46,6 @@ struct IvyOptions {
   BudgetOptions budget;
   CLI::App* cmd = nullptr;  // which flags were given
 };
-
-double Ms(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
-  return std::chrono::duration<double, std::milli>(b - a).count();
-}
 
 // The ivy run's state fields as this command's flags (core errors name the fields).
 const run::FieldNames& IvyFlagNames() {
@@ -319,16 +315,16 @@ void AddIvyCommands(CLI::App& app, CommandList& commands) {
   Excludes(mesh, scene);
   Excludes(mesh, tree);
   Excludes(scene, tree);
-  AddNumberFlag(grow, "--tree-years", &o->tree_years, kTreeYearsRange,
-                "Age of that tree, " + RangeHelp(kTreeYearsRange) + " (default 10)");
+  AddNumberFlag(grow, "--tree-years", &o->tree_years, kIvyTreeYearsRange,
+                "Age of that tree, " + RangeHelp(kIvyTreeYearsRange) + " (default 10)");
   grow->add_option(
       "--seed-point", o->seed_points,
       "Growth start X,Y,Z or a scene's named seed (a mesh's: front, the default); repeat for "
       "several plants");
   AddNumberFlag(grow, "--steps", &o->steps, kStepsRange,
                 "Final step number, " + RangeHelp(kStepsRange) + " (default 50)");
-  AddNumberFlag(grow, "--seed", &o->seed, kSeedRange,
-                "Random seed, " + RangeHelp(kSeedRange) + " (default 1)");
+  AddNumberFlag(grow, "--seed", &o->seed, kIvySeedRange,
+                "Random seed, " + RangeHelp(kIvySeedRange) + " (default 1)");
   grow->add_option("--preset", o->preset, "paper (default), literal, improved or metric");
   grow->add_option("--units", o->units,
                    "The support's unit: auto (default: a built-in scene's px, a tree's m, a mesh "

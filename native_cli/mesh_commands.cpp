@@ -80,10 +80,6 @@ float ParseMaxDistance(const std::string& text) {
   return static_cast<float>(*r);
 }
 
-double Ms(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
-  return std::chrono::duration<double, std::milli>(b - a).count();
-}
-
 nlohmann::json Vec(const glm::vec3& v) {
   return nlohmann::json::array(
       {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)});

@@ -34,7 +34,7 @@ namespace {
 using moss::MossParam;
 
 // The one table of the moss commands' names for state and cell fields (run/field_names.h).
-const run::FieldNames kFieldFlags = {
+const run::FieldNames kMossFieldFlags = {
     {"preset", "--preset"},
     {"geology", "--geology"},
     {"theta", "--theta"},
@@ -60,8 +60,8 @@ const run::FieldNames kFieldFlags = {
     {"stats_every", "--every"},
 };
 constexpr FlagRange kDaysRange{0, moss::kMaxMossDays, true};
-constexpr FlagRange kSeedRange{0, static_cast<double>(moss::kMaxMossSeed), true};
-constexpr FlagRange kTreeYearsRange{1, 100, true};  // the tree study's kMaxYears
+constexpr FlagRange kMossSeedRange{0, static_cast<double>(moss::kMaxMossSeed), true};
+constexpr FlagRange kMossTreeYearsRange{1, 100, true};  // the tree study's kMaxYears
 constexpr FlagRange kRockTrianglesRange{moss::kRockTrianglesMin, moss::kRockTrianglesMax, true};
 constexpr FlagRange kEveryRange{1, moss::kMaxMossDays, true};
 
@@ -77,11 +77,11 @@ FlagRange MossRowRange(MossParam row) {
 }
 
 // The flags every moss command shares: the state (--url, then --preset, then --set).
-struct StateOptions {
+struct MossStateOptions {
   std::string url, preset, params_file;
   std::vector<std::string> sets;
 };
-void AddStateOptions(CLI::App* cmd, StateOptions* o) {
+void AddStateOptions(CLI::App* cmd, MossStateOptions* o) {
   cmd->add_option("--preset", o->preset,
                   "nomura2010 (default) or nomura2010-sky (niwa presets moss)");
   cmd->add_option("--set", o->sets, "KEY=VALUE of the moss table (niwa params moss)");
@@ -91,7 +91,7 @@ void AddStateOptions(CLI::App* cmd, StateOptions* o) {
                "flags override it");
 }
 
-moss::MossState ResolveState(const StateOptions& o) {
+moss::MossState ResolveState(const MossStateOptions& o) {
   moss::MossState state;
   if (!o.url.empty()) {
     std::vector<std::string> notices;
@@ -105,13 +105,13 @@ moss::MossState ResolveState(const StateOptions& o) {
   }
   // --preset resets the values to its own only when it names another preset than the base's.
   if (!o.preset.empty() && (o.params_file.empty() || o.preset != state.preset))
-    Check(run::RenameField(moss::SetMossPreset(o.preset, &state), kFieldFlags));
+    Check(run::RenameField(moss::SetMossPreset(o.preset, &state), kMossFieldFlags));
   for (const std::string& s : o.sets) Check(state.params.SetFromAssignment(s).Within("--set"));
   return state;
 }
 
 struct SoilOptions {
-  StateOptions state;
+  MossStateOptions state;
   std::string geology;
   double theta = 0, S = 0, T = 0, m_over_M = 0, V = 1;
 };
@@ -138,14 +138,14 @@ int RunSoil(const SoilOptions& o, bool T_given, bool V_given, std::ostream& out)
   cell.S = o.S;
   cell.m_over_M = o.m_over_M;
   cell.V_sky = o.V;
-  Check(run::RenameField(moss::CheckSoilCell(cell), kFieldFlags));
+  Check(run::RenameField(moss::CheckSoilCell(cell), kMossFieldFlags));
   const nlohmann::ordered_json j = moss::SoilReport(state, geology, cell);
   out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
   return 0;
 }
 
 struct FitnessOptions {
-  StateOptions state;
+  MossStateOptions state;
   std::string species;
   double T_s = 0, rh_s = 0, S = 0;
 };
@@ -172,7 +172,7 @@ int RunFitness(const FitnessOptions& o, std::ostream& out) {
 // The flags of a run (grow, photons): the scene, days, photons, seed and indirect light over the
 // state, then the budget.
 struct RunOptions {
-  StateOptions state;
+  MossStateOptions state;
   std::string scene, indirect, mesh, weather, tree_preset, terrain_preset;
   double days = 0, photons = 0, seed = 0, tree_years = 10, terrain_seed = 1, every = 0,
          rock_triangles = moss::kRockTrianglesDefault;
@@ -189,15 +189,15 @@ void AddRunOptions(CLI::App* cmd, RunOptions* o, bool with_days) {
   CLI::Option* tree = cmd->add_option(
       "--tree-preset", o->tree_preset,
       "Land: a Niwa tree ('niwa presets tree') on a square of humus; moss on bark and ground");
-  AddNumberFlag(cmd, "--tree-years", &o->tree_years, kTreeYearsRange,
-                "Age of that tree, " + RangeHelp(kTreeYearsRange) +
+  AddNumberFlag(cmd, "--tree-years", &o->tree_years, kMossTreeYearsRange,
+                "Age of that tree, " + RangeHelp(kMossTreeYearsRange) +
                     " (default 10; only with a tree: --tree-preset or a link's scene=tree)");
   CLI::Option* terrain = cmd->add_option(
       "--terrain-preset", o->terrain_preset,
       "Land: a Niwa terrain ('niwa presets terrain': simple, midpoint, fourier, improved or a "
       "figure preset) grown from the built-in disk, in metres; geology by slope and height");
-  AddNumberFlag(cmd, "--terrain-seed", &o->terrain_seed, kSeedRange,
-                "RNG seed of that terrain, " + RangeHelp(kSeedRange) +
+  AddNumberFlag(cmd, "--terrain-seed", &o->terrain_seed, kMossSeedRange,
+                "RNG seed of that terrain, " + RangeHelp(kMossSeedRange) +
                     " (default 1; only with a terrain: --terrain-preset or a link's "
                     "scene=terrain)");
   AddNumberFlag(cmd, "--rock-triangles", &o->rock_triangles, kRockTrianglesRange,
@@ -221,8 +221,8 @@ void AddRunOptions(CLI::App* cmd, RunOptions* o, bool with_days) {
   AddNumberFlag(cmd, "--photons", &o->photons, MossRowRange(MossParam::kPhotons),
                 "Photons a day (the photons row), " + RangeHelp(MossRowRange(MossParam::kPhotons)) +
                     " (default 8192)");
-  AddNumberFlag(cmd, "--seed", &o->seed, kSeedRange,
-                "Random seed, " + RangeHelp(kSeedRange) + " (default 1)");
+  AddNumberFlag(cmd, "--seed", &o->seed, kMossSeedRange,
+                "Random seed, " + RangeHelp(kMossSeedRange) + " (default 1)");
   cmd->add_option("--indirect", o->indirect,
                   "on (default): photons bounce (fig 4.1); off: first hits only (fig 4.2)");
   AddStateOptions(cmd, &o->state);
@@ -232,42 +232,42 @@ void AddRunOptions(CLI::App* cmd, RunOptions* o, bool with_days) {
 moss::MossState ResolveRunState(const RunOptions& o) {
   moss::MossState state = ResolveState(o.state);
   if (o.cmd->count("--scene"))
-    Check(run::RenameField(moss::SetMossScene(o.scene, &state), kFieldFlags));
+    Check(run::RenameField(moss::SetMossScene(o.scene, &state), kMossFieldFlags));
   // The land: a tree or a terrain (state fields, so the link regrows it); their second flag only
   // with their scene, never accepted and ignored.
   if (!o.tree_preset.empty()) {
-    Check(run::RenameField(moss::SetMossScene(moss::kTreeLand, &state), kFieldFlags));
-    Check(run::RenameField(moss::SetMossTree(o.tree_preset, &state), kFieldFlags));
+    Check(run::RenameField(moss::SetMossScene(moss::kTreeLand, &state), kMossFieldFlags));
+    Check(run::RenameField(moss::SetMossTree(o.tree_preset, &state), kMossFieldFlags));
   }
   if (!o.terrain_preset.empty()) {
-    Check(run::RenameField(moss::SetMossScene(moss::kTerrainLand, &state), kFieldFlags));
-    Check(run::RenameField(moss::SetMossTerrain(o.terrain_preset, &state), kFieldFlags));
+    Check(run::RenameField(moss::SetMossScene(moss::kTerrainLand, &state), kMossFieldFlags));
+    Check(run::RenameField(moss::SetMossTerrain(o.terrain_preset, &state), kMossFieldFlags));
   }
   if (o.cmd->count("--tree-years")) {
     if (state.scene != moss::kTreeLand || !o.mesh.empty())
       Fail(Status::Error("--tree-years",
                          "given without a tree; must come with --tree-preset (or a link's "
                          "scene=tree)"));
-    Check(run::RenameField(moss::SetMossTreeYears(o.tree_years, &state), kFieldFlags));
+    Check(run::RenameField(moss::SetMossTreeYears(o.tree_years, &state), kMossFieldFlags));
   }
   if (o.cmd->count("--terrain-seed")) {
     if (state.scene != moss::kTerrainLand || !o.mesh.empty())
       Fail(Status::Error("--terrain-seed",
                          "given without a terrain; must come with --terrain-preset (or a "
                          "link's scene=terrain)"));
-    Check(run::RenameField(moss::SetMossTerrainSeed(o.terrain_seed, &state), kFieldFlags));
+    Check(run::RenameField(moss::SetMossTerrainSeed(o.terrain_seed, &state), kMossFieldFlags));
   }
   if (o.cmd->count("--rock-triangles")) {
     if (state.scene != "rocks" || !o.mesh.empty())
       Fail(Status::Error("--rock-triangles",
                          "given without the rocks scene; must come with --scene rocks (or a "
                          "link's scene=rocks)"));
-    Check(run::RenameField(moss::SetMossRockTriangles(o.rock_triangles, &state), kFieldFlags));
+    Check(run::RenameField(moss::SetMossRockTriangles(o.rock_triangles, &state), kMossFieldFlags));
   }
   if (o.cmd->get_option_no_throw("--days") != nullptr && o.cmd->count("--days"))
-    Check(run::RenameField(moss::SetMossDays(o.days, &state), kFieldFlags));
+    Check(run::RenameField(moss::SetMossDays(o.days, &state), kMossFieldFlags));
   if (o.cmd->count("--seed"))
-    Check(run::RenameField(moss::SetMossSeed(o.seed, &state), kFieldFlags));
+    Check(run::RenameField(moss::SetMossSeed(o.seed, &state), kMossFieldFlags));
   if (o.cmd->count("--photons"))
     Check(AsFlag(state.params.Set(MossParam::kPhotons, o.photons), "--photons"));
   if (o.cmd->count("--indirect")) {
@@ -283,7 +283,7 @@ moss::MossRun StartRun(const RunOptions& o, const moss::MossState& state) {
   if (o.mesh.empty()) {
     // A built-in scene, or the state's tree or terrain grown through the composition tier.
     std::string truncated_by;
-    run = compose::StartMossOnLand(state, ResolveBudget(o.budget), kFieldFlags, &truncated_by);
+    run = compose::StartMossOnLand(state, ResolveBudget(o.budget), kMossFieldFlags, &truncated_by);
     if (run.ok()) ReportTruncated(truncated_by);
   } else {
     io::MeshReadStats read;
@@ -294,7 +294,7 @@ moss::MossRun StartRun(const RunOptions& o, const moss::MossState& state) {
     if (!scene.ok()) Fail(scene.status().Within("--mesh"));
     run = moss::MossRun::StartOnScene(state, *scene, ResolveBudget(o.budget), name);
   }
-  if (!run.ok()) Fail(run::RenameField(run.status(), kFieldFlags));
+  if (!run.ok()) Fail(run::RenameField(run.status(), kMossFieldFlags));
   return std::move(*run);
 }
 
@@ -316,7 +316,7 @@ std::string GrowOutput(const moss::MossRun& run, const std::string& ext, moss::M
 // and the tufts (.glb), all or none, its estimate refused before the days are grown.
 int RunGrow(const RunOptions& o, std::ostream& out) {
   moss::MossMap map = moss::MossMap::kCoverage;
-  Check(run::RenameField(moss::MossMapFromName(o.map, &map), kFieldFlags));
+  Check(run::RenameField(moss::MossMapFromName(o.map, &map), kMossFieldFlags));
   if (!o.mesh.empty() && o.cmd->count("--scene"))
     Fail(Status::Error("--mesh", "given with --scene; must be one or the other"));
   const moss::MossState state = ResolveRunState(o);
@@ -327,16 +327,16 @@ int RunGrow(const RunOptions& o, std::ostream& out) {
     if (!text.ok()) Fail(text.status());
     Result<std::vector<moss::WeatherDay>> days =
         moss::ParseWeather(*text, Extension(o.weather) == ".csv", state.params);
-    if (!days.ok()) Fail(run::RenameField(days.status(), kFieldFlags));
+    if (!days.ok()) Fail(run::RenameField(days.status(), kMossFieldFlags));
     weather = std::move(*days);
   }
   if (o.cmd->count("--every") && !o.stats)
     Fail(Status::Error("--every", "only applies with --stats"));
   moss::MossRun run = StartRun(o, state);
-  if (o.cmd->count("--every")) Check(run::RenameField(run.RecordEvery(o.every), kFieldFlags));
+  if (o.cmd->count("--every")) Check(run::RenameField(run.RecordEvery(o.every), kMossFieldFlags));
   if (!weather.empty()) {
     const std::string name = o.weather.substr(o.weather.find_last_of('/') + 1);
-    Check(run::RenameField(run.UseWeather(std::move(weather), name), kFieldFlags));
+    Check(run::RenameField(run.UseWeather(std::move(weather), name), kMossFieldFlags));
   }
   const Budget budget = ResolveBudget(o.budget);
   const std::string ext = Extension(o.out_path);
@@ -352,7 +352,7 @@ int RunGrow(const RunOptions& o, std::ostream& out) {
     Check(AsFlag(planned.status(), flag));
     Check(CheckEstimate(*planned, budget, change));
   }
-  Check(run::RenameField(run.Advance(nullptr), kFieldFlags));
+  Check(run::RenameField(run.Advance(nullptr), kMossFieldFlags));
   for (const auto& [flag, kind] : outputs) {
     Result<Estimate> now = run.ExportEstimate(kind);
     Check(AsFlag(now.status(), flag));
@@ -406,7 +406,7 @@ int RunPhotons(const RunOptions& o, std::ostream& out) {
   return 0;
 }
 
-void PrintPresets(std::ostream& out) {
+void PrintMossPresets(std::ostream& out) {
   for (const std::string& name : moss::MossPresetNames()) {
     out << name;
     for (const auto& [key, value] : moss::MossPresetValues(name))
@@ -421,7 +421,7 @@ void AddMossCommands(CLI::App& app, CommandList& commands) {
   commands.studies.push_back(
       {"moss",
        &moss::MossTable(),
-       &PrintPresets,
+       &PrintMossPresets,
        {},
        {"moss", "soil", "--geology", "humus", "--theta", "0.2", "--S", "25"}});
   CLI::App* moss_app = Subcommand(app, "moss", "Moss on soil under light (Nomura 2010)");

@@ -38,7 +38,7 @@ using terrain::TerrainParam;
 // The one table of the terrain commands' names for state fields (run/field_names.h): a core error
 // naming the field reads with the flag that set it (errors of a --url, --params or --set value
 // keep the field, under that flag).
-const run::FieldNames kFieldFlags = {
+const run::FieldNames kTerrainFieldFlags = {
     {"builtin", "--builtin"}, {"contour", "--contour"}, {"preset", "--method"},
     {"seed", "--seed"},       {"res", "--res"},         {"heightmap", "--heightmap"},
     {"dem", "--dem"},
@@ -49,9 +49,9 @@ FlagRange TerrainRowRange(TerrainParam row) {
   return RowFlagRange(terrain::TerrainTable().row(static_cast<std::size_t>(row)));
 }
 // The RNG seed's range (a state field: terrain::SetTerrainSeed checks the same).
-constexpr FlagRange kSeedRange = {0, terrain::kMaxTerrainSeed, true};
+constexpr FlagRange kTerrainSeedRange = {0, terrain::kMaxTerrainSeed, true};
 
-struct GrowOptions {
+struct TerrainGrowOptions {
   std::string contour, builtin, method, contours_out, params_file, url, out, heightmap;
   std::vector<std::string> sets;
   double seed = -1;  // -1: not given (the seed's range starts at 0)
@@ -73,11 +73,11 @@ void WriteAllOrNone(const std::vector<OutputFile>& files) {
 
 // --repair: a seed contour that crosses itself (a drawing saved from the page, a traced file) made
 // simple as the page makes a fresh drawing (core/terrain/contour_repair.h), with a notice.
-void RepairSeed(const GrowOptions& o, terrain::TerrainState* state) {
+void RepairSeed(const TerrainGrowOptions& o, terrain::TerrainState* state) {
   Result<terrain::ContourRepair> r = terrain::RepairContour(state->points);
   // A file's contour is the flag's; one from --url or --params keeps its field under that flag.
   if (!r.ok()) {
-    Fail(!o.contour.empty()       ? run::RenameField(r.status(), kFieldFlags)
+    Fail(!o.contour.empty()       ? run::RenameField(r.status(), kTerrainFieldFlags)
          : !o.params_file.empty() ? r.status().Within("--params " + o.params_file)
                                   : r.status().Within("--url"));
   }
@@ -92,7 +92,7 @@ void RepairSeed(const GrowOptions& o, terrain::TerrainState* state) {
 }
 
 // The state from --url, then the seed flags, --method, --params, --seed, --set and --res.
-terrain::TerrainState ResolveTerrainState(const GrowOptions& o) {
+terrain::TerrainState ResolveTerrainState(const TerrainGrowOptions& o) {
   terrain::TerrainState state;
   if (!o.url.empty()) {
     std::vector<std::string> notices;
@@ -105,7 +105,7 @@ terrain::TerrainState ResolveTerrainState(const GrowOptions& o) {
   bool file_elevation = false;
   double elevation = 0;
   if (!o.builtin.empty()) {
-    Check(run::RenameField(terrain::SetTerrainBuiltin(o.builtin, &state), kFieldFlags));
+    Check(run::RenameField(terrain::SetTerrainBuiltin(o.builtin, &state), kTerrainFieldFlags));
   } else if (!o.contour.empty()) {
     Result<std::string> text = ReadFile(o.contour, "--contour", kMaxContourFileBytes);
     if (!text.ok()) Fail(text.status());
@@ -114,7 +114,7 @@ terrain::TerrainState ResolveTerrainState(const GrowOptions& o) {
     // A contour that cannot seed a mountain is the file's fault: name the flag (Grow checks again).
     if (!o.repair) {
       Result<terrain::Ring> checked = terrain::CheckSeed(file->ring);
-      if (!checked.ok()) Fail(run::RenameField(checked.status(), kFieldFlags));
+      if (!checked.ok()) Fail(run::RenameField(checked.status(), kTerrainFieldFlags));
     }
     state.builtin.clear();
     state.points = file->ring;
@@ -127,16 +127,18 @@ terrain::TerrainState ResolveTerrainState(const GrowOptions& o) {
   }
   // Without --url the preset is always applied (the built-in's d, Δh, h0, then the method's rows).
   if (!o.method.empty() || o.url.empty())
-    Check(run::RenameField(terrain::SetTerrainPreset(o.method, &state), kFieldFlags));
+    Check(run::RenameField(terrain::SetTerrainPreset(o.method, &state), kTerrainFieldFlags));
   if (file_elevation) Check(AsFlag(state.params.Set(TerrainParam::kH0, elevation), "elevation"));
   if (!o.params_file.empty()) {
     Result<std::string> text = ReadFile(o.params_file, "--params", kMaxParamsFileBytes);
     if (!text.ok()) Fail(text.status());
     Check(terrain::ApplyTerrainStateJson(*text, &state).Within("--params " + o.params_file));
   }
-  if (o.seed >= 0) Check(run::RenameField(terrain::SetTerrainSeed(o.seed, &state), kFieldFlags));
+  if (o.seed >= 0)
+    Check(run::RenameField(terrain::SetTerrainSeed(o.seed, &state), kTerrainFieldFlags));
   for (const std::string& s : o.sets) Check(state.params.SetFromAssignment(s).Within("--set"));
-  if (o.res != 0) Check(run::RenameField(state.params.Set(TerrainParam::kRes, o.res), kFieldFlags));
+  if (o.res != 0)
+    Check(run::RenameField(state.params.Set(TerrainParam::kRes, o.res), kTerrainFieldFlags));
   if (o.repair && state.builtin.empty()) RepairSeed(o, &state);
   return state;
 }
@@ -149,7 +151,7 @@ std::string ContoursFormat(const std::string& path) {
 
 // terrain grow: an adapter over terrain::TerrainRun (core/terrain/terrain_run.h): flags into a
 // state, the run, its outputs written all or none, its stats with the CLI's timings.
-int RunGrow(const GrowOptions& o, std::ostream& out) {
+int RunGrow(const TerrainGrowOptions& o, std::ostream& out) {
   const auto t0 = std::chrono::steady_clock::now();
   // The outputs' endings were checked by their declared flags (AddOutputFlag).
   if (!o.heightmap.empty() &&
@@ -161,13 +163,13 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   const terrain::TerrainState state = ResolveTerrainState(o);
   const Budget budget = ResolveBudget(o.budget);
   terrain::TerrainRunPlan plan;
-  plan.words = kFieldFlags;
+  plan.words = kTerrainFieldFlags;
   if (!o.out.empty()) plan.outputs.push_back(terrain::TerrainOutput::kGlb);
   if (!o.heightmap.empty()) plan.outputs.push_back(terrain::TerrainOutput::kHeightmap);
   if (!o.contours_out.empty())
     plan.outputs.push_back(*terrain::TerrainOutputOfFormat(ContoursFormat(o.contours_out)));
   Result<terrain::TerrainRun> run = terrain::TerrainRun::Start(state, budget, std::move(plan));
-  if (!run.ok()) Fail(run::RenameField(run.status(), kFieldFlags));
+  if (!run.ok()) Fail(run::RenameField(run.status(), kTerrainFieldFlags));
   const Status advanced = run->Advance({});
   ReportTruncated(run->truncated_by());
   if (std::getenv("NIWA_BUDGET_TRACE") && run->checked_estimate()) {  // docs/budgets.md
@@ -184,7 +186,7 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
                    run->terrain().counts.sweep_tests);
     }
   }
-  Check(run::RenameField(advanced, kFieldFlags));
+  Check(run::RenameField(advanced, kTerrainFieldFlags));
   const auto t2 = std::chrono::steady_clock::now();
   std::vector<OutputFile> files;
   if (!o.contours_out.empty()) {
@@ -199,7 +201,7 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
   }
   if (!o.heightmap.empty()) {
     Result<terrain::Heightmap> hm = run->EncodeHeightmapFiles();
-    if (!hm.ok()) Fail(run::RenameField(hm.status(), kFieldFlags));
+    if (!hm.ok()) Fail(run::RenameField(hm.status(), kTerrainFieldFlags));
     files.push_back({"--heightmap", o.heightmap, std::string(hm->png.begin(), hm->png.end())});
     const std::string stem = o.heightmap.substr(0, o.heightmap.size() - 4);
     files.push_back({"--heightmap", stem + ".json", hm->sidecar_json});
@@ -231,7 +233,7 @@ int RunGrow(const GrowOptions& o, std::ostream& out) {
 
 // terrain compare: an adapter over terrain::CompareWithDem (core/terrain/terrain_run.h): flags
 // into a state, the DEM's two files read, the comparison printed.
-int RunCompare(const GrowOptions& o, const std::string& dem_path, std::ostream& out) {
+int RunCompare(const TerrainGrowOptions& o, const std::string& dem_path, std::ostream& out) {
   Check(CheckEnding("--dem", dem_path, {".png"}));
   Result<std::string> png = ReadFile(dem_path, "--dem", kMaxDemFileBytes);
   if (!png.ok()) Fail(png.status());
@@ -241,7 +243,7 @@ int RunCompare(const GrowOptions& o, const std::string& dem_path, std::ostream& 
   const terrain::TerrainState state = ResolveTerrainState(o);
   Result<terrain::DemComparison> c = terrain::CompareWithDem(
       state, std::vector<unsigned char>(png->begin(), png->end()), *side, ResolveBudget(o.budget));
-  if (!c.ok()) Fail(run::RenameField(c.status(), kFieldFlags));
+  if (!c.ok()) Fail(run::RenameField(c.status(), kTerrainFieldFlags));
   ReportTruncated(c->truncated_by);
   out << c->json << "\n";
   return 0;
@@ -363,7 +365,7 @@ int RunShrink(const ShrinkCommandOptions& o, bool seed_given, std::ostream& out)
   double d = o.d;
   if (!o.builtin.empty()) {
     Result<terrain::Ring> r = terrain::BuiltinSeed(o.builtin);
-    if (!r.ok()) Fail(run::RenameField(r.status(), kFieldFlags));
+    if (!r.ok()) Fail(run::RenameField(r.status(), kTerrainFieldFlags));
     seed = *r;
     for (const terrain::SeedInfo& info : terrain::BuiltinSeeds())
       if (info.name == o.builtin && d == 0) d = info.d;
@@ -470,7 +472,7 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
   CLI::App* terrain_cmd = Subcommand(app, "terrain", "Grow mountains from one seed contour");
   CLI::App* grow = terrain_cmd->add_subcommand(
       "grow", "Grow every contour above a seed contour (Misawa, Chiba, Saito 1987)");
-  auto o = std::make_shared<GrowOptions>();
+  auto o = std::make_shared<TerrainGrowOptions>();
   CLI::Option* contour =
       AddInputFlag(grow, "--contour", &o->contour,
                    "Seed contour: {\"points\": [[x, y], ...]} in metres, or GeoJSON");
@@ -480,7 +482,8 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
   grow->add_option("--method", o->method,
                    "simple (Fig 9c), midpoint (Fig 13b), fourier (Fig 15), improved (Fig 16) or a "
                    "figure preset fig9a..fig16");
-  AddNumberFlag(grow, "--seed", &o->seed, kSeedRange, "RNG seed, " + RangeHelp(kSeedRange));
+  AddNumberFlag(grow, "--seed", &o->seed, kTerrainSeedRange,
+                "RNG seed, " + RangeHelp(kTerrainSeedRange));
   grow->add_option("--set", o->sets, "KEY=VALUE of the terrain table (niwa params terrain)");
   AddInputFlag(grow, "--params", &o->params_file,
                "State JSON {preset, builtin, contour: [[x, y], ...], seed, params: {key: value}}");
@@ -510,7 +513,7 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
       "compare",
       "Grow from one contour of a real DEM and compare the two mountains (hypsometric integral, "
       "slopes, peaks, each level's IoU) as one JSON object");
-  auto co = std::make_shared<GrowOptions>();
+  auto co = std::make_shared<TerrainGrowOptions>();
   auto dem = std::make_shared<std::string>();
   AddInputFlag(compare, "--dem", dem.get(),
                "The real DEM: a 16-bit .png with its sidecar FILE.json")
@@ -521,7 +524,8 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
       compare->add_option("--builtin", co->builtin, "Or a built-in seed (jacksboro)");
   Excludes(compare_contour, compare_builtin);
   compare->add_option("--method", co->method, "As for grow");
-  AddNumberFlag(compare, "--seed", &co->seed, kSeedRange, "RNG seed, " + RangeHelp(kSeedRange));
+  AddNumberFlag(compare, "--seed", &co->seed, kTerrainSeedRange,
+                "RNG seed, " + RangeHelp(kTerrainSeedRange));
   compare->add_option("--set", co->sets, "KEY=VALUE of the terrain table");
   AddInputFlag(compare, "--params", &co->params_file, "State JSON, as for grow");
   compare->add_option("--url", co->url, "A share-link hash, as for grow");
@@ -561,8 +565,8 @@ void AddTerrainCommands(CLI::App& app, CommandList& commands) {
   shrink->add_option("--fourier", so->fourier,
                      "F0[,N]: phase-randomise every ring each step keeps for |k| >= F0, FFT of N "
                      "samples (default 1024), not fed back (Fig 14)");
-  AddNumberFlag(shrink, "--seed", &so->seed, kSeedRange,
-                "RNG seed of --displace and --fourier, " + RangeHelp(kSeedRange));
+  AddNumberFlag(shrink, "--seed", &so->seed, kTerrainSeedRange,
+                "RNG seed of --displace and --fourier, " + RangeHelp(kTerrainSeedRange));
   AddOutputFlag(shrink, "--svg", &so->svg, {".svg"}, "Write the figure as .svg");
   commands.push_back(
       {shrink,

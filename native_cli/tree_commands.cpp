@@ -37,7 +37,7 @@ const run::FieldNames& BarkFlagNames() {
   return names;
 }
 
-struct GrowOptions {
+struct TreeGrowOptions {
   StateOptions state;
   std::string out_path;
   bool stats = false;
@@ -53,7 +53,7 @@ struct GrowOptions {
 
 // --bark and its flags, checked before any growth: the value, the flags that need --bark sim, and
 // what sim cannot be made with (a .glb only, the full mesh).
-bool CheckBarkFlags(const GrowOptions& o, const CLI::App& cmd, const std::string& ext) {
+bool CheckBarkFlags(const TreeGrowOptions& o, const CLI::App& cmd, const std::string& ext) {
   if (o.bark != "procedural" && o.bark != "sim") {
     throw BadInput{"--bark: '" + Echo(o.bark) + "' must be procedural or sim"};
   }
@@ -93,7 +93,7 @@ void AddSvgOptions(CLI::App* cmd, SvgOptions* o) {
 // --bark sim: the bark study on the trunk's radius history (core/compose/bark_on_tree), its
 // estimate added to the tree's and its export's and refused up front naming --bark, then the
 // tree's .glb dressed in its maps. Errors are BadInput lines naming the --bark flags.
-Result<std::string> BarkGlb(const GrowOptions& o, const Budget& budget,
+Result<std::string> BarkGlb(const TreeGrowOptions& o, const Budget& budget,
                             const TreeExportRequest& request, compose::TrunkHistory* trunk,
                             TreeRun* run, std::string* bark_json) {
   compose::RecordTrunkYear(run->tree(), trunk);
@@ -119,7 +119,7 @@ Result<std::string> BarkGlb(const GrowOptions& o, const Budget& budget,
   return std::string(glb->begin(), glb->end());
 }
 
-int RunGrow(const GrowOptions& o, const CLI::App& cmd, std::ostream& out) {
+int RunGrow(const TreeGrowOptions& o, const CLI::App& cmd, std::ostream& out) {
   // --out's ending and the flags that apply only to one output were checked by the shared flags.
   const std::string ext = Extension(o.out_path);
   LodLayout layout = LodLayout::kSiblings;
@@ -245,7 +245,7 @@ void AddTreeCommands(CLI::App& app, CommandList& commands) {
   CLI::App* tree = Subcommand(app, "tree", "Grow and export trees");
 
   CLI::App* grow = tree->add_subcommand("grow", "Grow a tree and write it or its statistics");
-  auto grow_options = std::make_shared<GrowOptions>();
+  auto grow_options = std::make_shared<TreeGrowOptions>();
   AddStateOptions(grow, TreeParamTable(), &grow_options->state);
   AddOutputFlag(grow, "--out", &grow_options->out_path, {".glb", ".json", ".svg"},
                 "Write the tree: .glb (binary glTF), .json or .svg (side view)");

@@ -16,7 +16,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-BarkState Small(const char* model) {
+BarkState SmallBark(const char* model) {
   BarkState s;
   EXPECT_TRUE(SetBarkSpecies("tallow", &s).ok());
   EXPECT_TRUE(SetBarkSize("32x16", &s).ok());
@@ -81,7 +81,7 @@ TEST(BarkGltf, TheSegmentIsACylinderWithItsTileFrame) {
 TEST(BarkGltf, AGrownRunIsATrunkOfItsRadiusWearingItsMaps) {
   for (const char* model : {"2layer", "4layer"}) {
     SCOPED_TRACE(model);
-    Result<BarkRun> run = BarkRun::Start(Small(model), Budget{});
+    Result<BarkRun> run = BarkRun::Start(SmallBark(model), Budget{});
     ASSERT_TRUE(run.ok());
     Result<gltf::Document> before = run->Document();
     ASSERT_FALSE(before.ok());
@@ -131,7 +131,7 @@ TEST(BarkGltf, AGrownRunIsATrunkOfItsRadiusWearingItsMaps) {
     EXPECT_EQ(parts[0].textures.size(), 3u);
     EXPECT_EQ(parts[0].material.normal_texture, 1);
   }
-  Result<BarkRun> run = BarkRun::Start(Small("2layer"), Budget{});
+  Result<BarkRun> run = BarkRun::Start(SmallBark("2layer"), Budget{});
   ASSERT_TRUE(run.ok());
   EXPECT_EQ(run->ExportEstimate("obj").status().field(), "format");
 }

@@ -38,7 +38,7 @@ bool LstatExists(const std::string& path) {
   struct stat info {};
   return ::lstat(path.c_str(), &info) == 0;
 }
-using testing::Slurp;
+using ::niwa::testing::Slurp;
 void Write(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
 }

@@ -12,12 +12,12 @@
 #include <sstream>
 #include <vector>
 
+#include "support/files.h"
+
 namespace niwa::io {
 namespace {
 
-std::string MeshPath(const std::string& name) {
-  return std::string(NIWA_SOURCE_DIR) + "/tests/data/meshes/" + name;
-}
+using ::niwa::testing::MeshPath;
 
 using Tri = std::array<glm::vec3, 3>;
 

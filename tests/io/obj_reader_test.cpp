@@ -9,15 +9,15 @@
 #include <sstream>
 #include <vector>
 
+#include "support/files.h"
+
 #define TINYOBJLOADER_IMPLEMENTATION
 #include <tiny_obj_loader.h>
 
 namespace niwa::io {
 namespace {
 
-std::string MeshPath(const std::string& name) {
-  return std::string(NIWA_SOURCE_DIR) + "/tests/data/meshes/" + name;
-}
+using ::niwa::testing::MeshPath;
 
 std::vector<std::array<float, 9>> Triangles(const geom::TriMesh& m) {
   std::vector<std::array<float, 9>> out;

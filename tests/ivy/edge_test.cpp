@@ -17,11 +17,11 @@
 namespace niwa::ivy {
 namespace {
 
-using testing::ConvexEdgeDeaths;
-using testing::ConvexEdgeDistance;
-using testing::EdgeDeath;
-using testing::MeshEdge;
-using testing::MeshEdges;
+using ::niwa::testing::ConvexEdgeDeaths;
+using ::niwa::testing::ConvexEdgeDistance;
+using ::niwa::testing::EdgeDeath;
+using ::niwa::testing::MeshEdge;
+using ::niwa::testing::MeshEdges;
 
 struct EdgeRun {
   IvyModel model;

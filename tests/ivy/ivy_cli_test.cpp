@@ -16,7 +16,7 @@
 namespace niwa {
 namespace {
 
-using testing::Slurp;
+using ::niwa::testing::Slurp;
 
 TEST(IvyCli, StatsHaveEveryNamedKey) {
   CliResult r = RunNiwa({"ivy", "grow", "--scene", "cubes4", "--seed-point", "column", "--stats"});

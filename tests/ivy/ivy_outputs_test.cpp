@@ -17,7 +17,7 @@
 namespace niwa {
 namespace {
 
-using testing::Slurp;
+using ::niwa::testing::Slurp;
 
 std::size_t Count(const std::string& text, const std::string& what) {
   std::size_t n = 0;

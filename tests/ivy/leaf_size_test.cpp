@@ -49,7 +49,7 @@ double Quantile(const std::vector<double>& sorted, double q) {
              : sorted[static_cast<std::size_t>(q * static_cast<double>(sorted.size() - 1))];
 }
 
-struct Grown {
+struct SizedIvy {
   double px_per_unit = 0, look_px_per_unit = 0, L = 0, leaf_size = 0, r_tip = 0;
   std::size_t leaves = 0;
   double p50 = 0, p90 = 0;  // blade widths in scene units
@@ -61,8 +61,8 @@ struct Grown {
 
 // The bunny scaled to `extent` scene units across, read with `metres_per_unit` (1: a glTF, 0: an
 // OBJ), with the page's front seed, grown 60 steps with the page's default preset (artist).
-Grown GrowBunny(double extent, double metres_per_unit,
-                std::vector<std::pair<std::string, double>> rows = {}) {
+SizedIvy GrowBunny(double extent, double metres_per_unit,
+                   std::vector<std::pair<std::string, double>> rows = {}) {
   const std::string path = std::string(NIWA_SOURCE_DIR) + "/tests/data/meshes/bunny.obj";
   Result<geom::TriMesh> mesh = io::ReadMeshFile(path);
   EXPECT_TRUE(mesh.ok()) << mesh.status().Line();
@@ -86,7 +86,7 @@ Grown GrowBunny(double extent, double metres_per_unit,
   Result<IvyRun> run = IvyRun::Start(state, *support, Budget{}, run_options);
   EXPECT_TRUE(run.ok()) << run.status().Line();
   EXPECT_TRUE(run->Advance({}).ok());
-  Grown g;
+  SizedIvy g;
   g.px_per_unit = (*support)->px_per_unit();
   g.look_px_per_unit = (*support)->look_px_per_unit();
   g.L = run->params().Get(IvyParam::kL);
@@ -112,13 +112,14 @@ Grown GrowBunny(double extent, double metres_per_unit,
 }
 
 TEST(IvyLeafSize, AGltfsLeavesAreCentimetresWhateverItsSize) {
-  const Grown rock = GrowBunny(0.3, 1), facade = GrowBunny(20, 1);
-  for (const Grown* g : {&rock, &facade}) {
+  const SizedIvy rock = GrowBunny(0.3, 1), facade = GrowBunny(20, 1);
+  for (const SizedIvy* g : {&rock, &facade}) {
     EXPECT_EQ(g->look_px_per_unit, 1000);  // a glTF's metres
     EXPECT_EQ(g->leaf_size, 0.075);        // artist: 75 px = 75 mm
     EXPECT_EQ(g->r_tip, 0.0015);           // 1.5 px: the tubes' tips 1.5 mm
     ASSERT_GT(g->leaves, 100u);
-    // Grown leaves 4-12 cm (age and light shrink the young and shaded ones, turns keep them out).
+    // SizedIvy leaves 4-12 cm (age and light shrink the young and shaded ones, turns keep them
+    // out).
     EXPECT_GE(g->p90, 0.04);
     EXPECT_LE(g->p90, 0.12);
     EXPECT_GE(g->p50, 0.01);
@@ -134,7 +135,7 @@ TEST(IvyLeafSize, AGltfsLeavesAreCentimetresWhateverItsSize) {
 }
 
 TEST(IvyLeafSize, AnObjNamesNoUnitSoItsLeavesFollowItsBounds) {
-  const Grown rock = GrowBunny(0.3, 0), facade = GrowBunny(20, 0);
+  const SizedIvy rock = GrowBunny(0.3, 0), facade = GrowBunny(20, 0);
   EXPECT_EQ(rock.look_px_per_unit, rock.px_per_unit);
   EXPECT_NEAR(rock.leaf_size, 75 * 0.3 / 1200, 1e-6 * rock.leaf_size);
   EXPECT_NEAR(facade.leaf_size, 75 * 20.0 / 1200, 1e-6 * facade.leaf_size);
@@ -164,10 +165,10 @@ TEST(IvyLeafSize, AnObjNamesNoUnitSoItsLeavesFollowItsBounds) {
 // apart), so both have leaves a few centimetres of stem apart instead of a heap and a scatter.
 // leaf_light 0 here: no leaf thinned by light, so the counts are the spacing's alone.
 TEST(IvyLeafSize, AGltfsLeavesAreARealStemLengthApart) {
-  const Grown rock = GrowBunny(0.3, 1, {{"leaf_light", 0}});
-  const Grown facade = GrowBunny(20, 1, {{"leaf_light", 0}});
-  const Grown rock_one = GrowBunny(0.3, 1, {{"leaf_light", 0}, {"leaf_spacing", 0}});
-  for (const Grown* g : {&rock, &facade, &rock_one}) {
+  const SizedIvy rock = GrowBunny(0.3, 1, {{"leaf_light", 0}});
+  const SizedIvy facade = GrowBunny(20, 1, {{"leaf_light", 0}});
+  const SizedIvy rock_one = GrowBunny(0.3, 1, {{"leaf_light", 0}, {"leaf_spacing", 0}});
+  for (const SizedIvy* g : {&rock, &facade, &rock_one}) {
     std::printf("[ spacing  ] %zu leaves on %zu buds, %.3f scene units of stem: %.4f a leaf\n",
                 g->drawn, g->leafy_buds, g->stem_length,
                 g->stem_length / static_cast<double>(std::max<std::size_t>(g->drawn, 1)));
@@ -190,7 +191,7 @@ TEST(IvyLeafSize, AGltfsLeavesAreARealStemLengthApart) {
 // Where the growth and the leaves share a scale (a built-in scene, an OBJ, a tree), L / s_n is
 // exactly 1 with artist's 50 / 50 px: one leaf a bud, the same leaves as without the row.
 TEST(IvyLeafSize, OneScaleMeansOneLeafABudAsBefore) {
-  const Grown obj = GrowBunny(0.3, 0, {{"leaf_light", 0}});
+  const SizedIvy obj = GrowBunny(0.3, 0, {{"leaf_light", 0}});
   EXPECT_EQ(obj.drawn, obj.leafy_buds);
 }
 

@@ -61,7 +61,7 @@ double AreaInside(const geom::TriMesh& leaves, const geom::TriMesh& mesh, const 
   return total > 0 ? inside / total : 0;
 }
 
-struct Grown {
+struct OutsideIvy {
   double inside = 0, unchecked = 0;
   std::size_t leaves = 0;
   LeafPlacement placement;
@@ -69,9 +69,9 @@ struct Grown {
 
 // Grows `preset` for `steps` on `support` (its front seed, or `seed` when given) and measures the
 // leaves inside the mesh, placed as the run places them and unchecked.
-Grown GrowAndMeasure(const std::shared_ptr<const IvySupport>& support, const char* preset,
-                     int steps, const std::vector<glm::dvec3>& seeds = {}) {
-  Grown g;
+OutsideIvy GrowAndMeasure(const std::shared_ptr<const IvySupport>& support, const char* preset,
+                          int steps, const std::vector<glm::dvec3>& seeds = {}) {
+  OutsideIvy g;
   IvyState state;
   EXPECT_TRUE(SetIvyPreset(preset, &state).ok());
   state.steps = steps;
@@ -98,7 +98,7 @@ TEST(IvyLeaves, AtMostOnePercentOfTheLeafAreaIsInsideTheBunny) {
     std::shared_ptr<const IvySupport> bunny = testing::BunnySupport(inward);
     for (const char* preset : {"paper", "improved"}) {
       if (inward && preset != std::string("paper")) continue;  // the seed's side is what differs
-      const Grown g = GrowAndMeasure(bunny, preset, 150);
+      const OutsideIvy g = GrowAndMeasure(bunny, preset, 150);
       std::printf(
           "%s bunny, %s: %zu leaves; inside %.4f of the leaf area (unchecked %.4f); "
           "turned %zu, shrunk %zu, still crossing %zu\n",
@@ -114,7 +114,7 @@ TEST(IvyLeaves, AtMostOnePercentOfTheLeafAreaIsInsideTheBunny) {
   const NamedSeed front = inward->scene().seeds.at(0);
   const geom::ClosestHit on = geom::ClosestPoint(
       *inward->mesh(), inward->bvh(), glm::vec3(front.pos), std::numeric_limits<float>::infinity());
-  const Grown before = GrowAndMeasure(inward, "paper", 150, {glm::dvec3(on.point)});
+  const OutsideIvy before = GrowAndMeasure(inward, "paper", 150, {glm::dvec3(on.point)});
   std::printf("inward bunny, seed on the surface: inside %.4f of the leaf area\n", before.inside);
   EXPECT_GT(before.inside, 0.5);
 }

@@ -19,7 +19,7 @@
 namespace niwa::ivy {
 namespace {
 
-using testing::Slurp;
+using ::niwa::testing::Slurp;
 
 nlohmann::json WithoutMs(nlohmann::json j) {
   for (const char* key : {"ms", "ms_bvh", "ms_rules", "ms_search", "ms_mesh"}) j.erase(key);

@@ -19,13 +19,12 @@
 #include "image/png.h"
 #include "io/mesh_reader.h"
 #include "moss/soil_cells.h"
+#include "support/files.h"
 
 namespace niwa::moss {
 namespace {
 
-std::string MeshPath(const std::string& name) {
-  return std::string(NIWA_SOURCE_DIR) + "/tests/data/meshes/" + name;
-}
+using ::niwa::testing::MeshPath;
 
 std::map<Geology, std::size_t> CountGeology(const SoilCells& cells) {
   std::map<Geology, std::size_t> count;
@@ -372,8 +371,8 @@ TEST(MossTextureGeology, TextureTransformAndTexCoordMoveTheSeam) {
 }
 
 // The transform applied by hand to textured.glb's TEXCOORD_0 (offset, rotation, scale in the
-// spec's order T * R * S), and a texCoord naming a UV set the primitive does not have refused in one
-// line naming the material and the set.
+// spec's order T * R * S), and a texCoord naming a UV set the primitive does not have refused in
+// one line naming the material and the set.
 TEST(MossTextureGeology, TheTransformIsTheSpecsAndAMissingSetIsRefused) {
   io::MeshReadStats plain, shifted;
   const geom::TriMesh a = io::ReadMeshFile(MeshPath("textured.glb"), &plain).value();

@@ -13,11 +13,11 @@
 
 #include "render/tree_run.h"
 #include "support/cli_runner.h"
+#include "support/files.h"
 #include "support/grow.h"
 #include "tree/tree_gltf.h"
 #include "tree/tree_json.h"
 #include "tree/tree_report.h"
-#include "support/files.h"
 
 namespace niwa {
 namespace {
@@ -30,7 +30,7 @@ TreeRun StartSakura(int years = kYears) {
   return std::move(run).value();
 }
 
-using testing::Slurp;
+using ::niwa::testing::Slurp;
 
 TEST(TreeRun, GrowsYearByYearWithProgress) {
   TreeRun run = StartSakura();

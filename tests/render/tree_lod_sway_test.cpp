@@ -21,11 +21,11 @@
 namespace niwa {
 namespace {
 
+using ::niwa::testing::Glb;
+using ::niwa::testing::ParseGlb;
+using ::niwa::testing::PrimitiveAtKey;
+using ::niwa::testing::ReadAccessor;
 using nlohmann::json;
-using testing::Glb;
-using testing::ParseGlb;
-using testing::PrimitiveAtKey;
-using testing::ReadAccessor;
 
 SwayParams Gust() {
   TreeParams ps;

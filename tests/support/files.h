@@ -13,4 +13,9 @@ inline std::string Slurp(const std::string& path) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+// A mesh under tests/data/meshes/ (the source tree's).
+inline std::string MeshPath(const std::string& name) {
+  return std::string(NIWA_SOURCE_DIR) + "/tests/data/meshes/" + name;
+}
+
 }  // namespace niwa::testing

@@ -18,25 +18,27 @@ namespace {
 constexpr float kScale = 0.01f;  // default cm_to_units
 
 // Branches of the hand-made trees carry a flower at their tip when they have leaves.
-int AddBranch(Tree* tree, int parent, int parent_node, glm::vec3 base, glm::vec3 tip, int segments,
-              float radius, int leaves = 0) {
-  return testing::AddBranch(tree, parent, parent_node, base, tip, segments, radius, leaves, true);
+int AddFloweringBranch(Tree* tree, int parent, int parent_node, glm::vec3 base, glm::vec3 tip,
+                       int segments, float radius, int leaves = 0) {
+  return ::niwa::testing::AddBranch(tree, parent, parent_node, base, tip, segments, radius, leaves,
+                                    true);
 }
 
 // Moving arms, a follower twig, a fixed stub, a branch starting at its parent's node 0 and a dead
 // branch with a child.
 Tree HandTree() {
   Tree t;
-  int trunk = AddBranch(&t, -1, 0, {0, 0, 0}, {0, 60, 0}, 6, 1.2f);
-  int arm = AddBranch(&t, trunk, 6, {}, {-30, 85, 10}, 5, 0.4f, 5);
-  AddBranch(&t, arm, 3, {}, {-40, 95, 5}, 4, 0.2f, 4);
-  AddBranch(&t, arm, 5, {}, {-31, 87, 10}, 1, 0.1f);  // short: a follower
-  int top = AddBranch(&t, trunk, 6, {}, {5, 100, 0}, 8, 0.6f, 8);
-  AddBranch(&t, top, 0, {}, {20, 70, 5}, 4, 0.3f, 3);                  // starts at top's node 0
-  int stump = AddBranch(&t, -1, 0, {50, 0, 0}, {50, 10, 0}, 2, 5.0f);  // second root: fixed
-  AddBranch(&t, stump, 1, {}, {55, 5, 0}, 1, 2.0f);                    // thick stub on it: fixed
-  int dead = AddBranch(&t, trunk, 3, {}, {30, 40, 0}, 3, 0.3f, 2);
-  AddBranch(&t, dead, 3, {}, {40, 45, 0}, 2, 0.2f, 2);
+  int trunk = AddFloweringBranch(&t, -1, 0, {0, 0, 0}, {0, 60, 0}, 6, 1.2f);
+  int arm = AddFloweringBranch(&t, trunk, 6, {}, {-30, 85, 10}, 5, 0.4f, 5);
+  AddFloweringBranch(&t, arm, 3, {}, {-40, 95, 5}, 4, 0.2f, 4);
+  AddFloweringBranch(&t, arm, 5, {}, {-31, 87, 10}, 1, 0.1f);  // short: a follower
+  int top = AddFloweringBranch(&t, trunk, 6, {}, {5, 100, 0}, 8, 0.6f, 8);
+  AddFloweringBranch(&t, top, 0, {}, {20, 70, 5}, 4, 0.3f, 3);  // starts at top's node 0
+  int stump =
+      AddFloweringBranch(&t, -1, 0, {50, 0, 0}, {50, 10, 0}, 2, 5.0f);  // second root: fixed
+  AddFloweringBranch(&t, stump, 1, {}, {55, 5, 0}, 1, 2.0f);            // thick stub on it: fixed
+  int dead = AddFloweringBranch(&t, trunk, 3, {}, {30, 40, 0}, 3, 0.3f, 2);
+  AddFloweringBranch(&t, dead, 3, {}, {40, 45, 0}, 2, 0.2f, 2);
   t.branches[static_cast<std::size_t>(dead)].alive = false;
   return t;
 }

@@ -25,12 +25,12 @@
 namespace niwa {
 namespace {
 
+using ::niwa::testing::Glb;
+using ::niwa::testing::GlbSkinEval;
+using ::niwa::testing::ParseGlb;
+using ::niwa::testing::PrimitiveAtKey;
+using ::niwa::testing::ReadAccessor;
 using nlohmann::json;
-using testing::Glb;
-using testing::GlbSkinEval;
-using testing::ParseGlb;
-using testing::PrimitiveAtKey;
-using testing::ReadAccessor;
 
 Tree GrowForSway(const std::string& preset, int years) {
   return testing::GrowPreset(preset, years, 1);

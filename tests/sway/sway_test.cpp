@@ -18,7 +18,7 @@ namespace {
 
 using glm::dvec3;
 
-using testing::AddBranch;
+using ::niwa::testing::AddBranch;
 
 // Mirror-symmetric (x -> -x) tree: trunk, two arms, each with a twig.
 Tree SymmetricTree() {

@@ -18,7 +18,7 @@
 namespace niwa::terrain {
 namespace {
 
-using testing::Slurp;
+using ::niwa::testing::Slurp;
 
 TerrainState State(const char* builtin, const char* preset, int seed, int res) {
   TerrainState s;

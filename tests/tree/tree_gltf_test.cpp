@@ -23,10 +23,10 @@
 namespace niwa {
 namespace {
 
+using ::niwa::testing::Glb;
+using ::niwa::testing::ParseGlb;
+using ::niwa::testing::ReadAccessor;
 using nlohmann::json;
-using testing::Glb;
-using testing::ParseGlb;
-using testing::ReadAccessor;
 
 constexpr int kFloat = 5126;
 constexpr int kUnsignedInt = 5125;
