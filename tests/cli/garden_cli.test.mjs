@@ -62,7 +62,7 @@ check('plant: the same trees the grow placed', planted.trees.length === s.trees.
 // The ivy grows on the clock (ivy_steps a year on that year's trunks): its internodes after each
 // year rise, and a garden grown to 2 years has year 2's ivy of the 3-year garden.
 const byYear = s.ivy?.internodes_by_year ?? [];
-const two = spawn(native, ['garden', 'grow', ...small, '--years', '2', '--stats']);
+const two = spawn(native, ['garden', 'grow', ...small.slice(0, -1), '2', '--stats']);  // --years 2
 const twoIvy = two.status === 0 ? JSON.parse(two.stdout).ivy?.internodes : -1;
 check('stats: the ivy grew year by year (internodes_by_year rising, the last the ivy\'s; year 2 the 2-year garden\'s)',
   byYear.length === 3 && byYear[0] > 0 && byYear[0] < byYear[1] && byYear[1] < byYear[2] && byYear[2] === s.ivy.internodes
