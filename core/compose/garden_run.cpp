@@ -780,7 +780,11 @@ std::string GardenRun::StatsJson() const {
           ivy::EstimateIvyGrown(grown_ivy->model(), grown_ivy->log(), grown_ivy->limits());
       e["ivy_s"] = ivy_e.seconds;
       e["ivy_support_s"] = grown_ivy->limits().seconds_before;
-      e["ivy_mb"] = ivy_e.memory_bytes / 1e6;
+      // Without what a front end holds beside it (the page's meshes), so the page's stats are the
+      // CLI's.
+      e["ivy_mb"] = (ivy_e.memory_bytes - ivy_extra_bytes_per_bud_ *
+                                              static_cast<double>(grown_ivy->model().buds.size())) /
+                    1e6;
     }
     j["estimates"] = e;
   }
