@@ -14,8 +14,9 @@
 // (compose/garden_bark). With record_years (the page), each garden year's picture is kept as the
 // clock runs (GardenYearRecord: each distinct tree as it stood after that year, the moss's light
 // and count), within a quarter of the budget's memory, so a front end replays the years without
-// regrowing. Does not: record the ivy or the bark year by year (both are grown after the clock;
-// the ivy's birth steps date its parts), read files, or name a flag.
+// regrowing; the ivy grows on the same clock (ivy_steps steps a year on the trunks of that year),
+// so its birth steps date the ivy of each year. Does not: record the bark year by year (grown
+// after the clock), read files, or name a flag.
 #pragma once
 
 #include <memory>
@@ -60,6 +61,11 @@ struct GardenYearRecord {
   // living mosses; empty and 0 without moss.
   std::vector<float> moss_light;
   long mosses = 0;
+  // The ivy after that year (grown year by year on the trunks of each year): its steps and
+  // internodes (0 without ivy). The ivy of year y is the final ivy's buds born by step ivy_steps
+  // (buds are never moved or removed), so a front end shows it by the buds' birth steps.
+  int ivy_steps = 0;
+  long ivy_internodes = 0;
   double bytes = 0;  // its estimate (the trees' copies new this year, the light)
 };
 
@@ -122,8 +128,16 @@ class GardenRun : public run::StudyRun {
   // grown, or nullptr when that year was not recorded.
   const Tree* TreeAtYear(int group, int year) const;
   // The garden's ivy once grown (nullptr without ivy seeds, ivy_steps 0 or before Advance).
-  const ivy::IvyRun* ivy() const { return ivy_.get(); }
+  const ivy::IvyRun* ivy() const { return ivy_ && ivy_->grown() ? ivy_.get() : nullptr; }
+  // The ivy's internodes after each garden year 1, 2, ... (with or without record_years).
+  const std::vector<long>& ivy_internodes_by_year() const { return ivy_by_year_; }
   double ms_ivy() const { return ms_ivy_; }
+  // Within ms_ivy: building each year's support (its meshes, the trunks' bark, the BVH).
+  double ms_ivy_support() const { return ms_ivy_support_; }
+  // The process's CPU time over the ivy's years (std::clock; the load does not stretch it): what
+  // tests/compose/garden_test.cpp holds the ivy's time estimate to.
+  double cpu_ms_ivy() const { return cpu_ms_ivy_; }
+  double cpu_ms_ivy_support() const { return cpu_ms_ivy_support_; }
   // The garden's moss (nullptr with moss_days 0 or years 0), grown to years × moss_days days.
   const moss::MossRun* moss() const { return moss_.get(); }
   double ms_moss() const { return ms_moss_; }
@@ -161,6 +175,7 @@ class GardenRun : public run::StudyRun {
   Budget ivy_budget_;
   double ivy_extra_bytes_per_bud_ = 0;
   double ms_ground_ = 0, ms_plant_ = 0, ms_trees_ = 0, ms_ivy_ = 0, ms_moss_ = 0;
+  double ms_ivy_support_ = 0, cpu_ms_ivy_ = 0, cpu_ms_ivy_support_ = 0;
   double ms_growth_ = 0, ms_records_ = 0;
   std::unique_ptr<ivy::IvyRun> ivy_;
   std::unique_ptr<moss::MossRun> moss_;
@@ -180,9 +195,12 @@ class GardenRun : public run::StudyRun {
   // the ivy's support: the ivy's and the barks' share.
   Budget BudgetLeft(bool ivy_support) const;
   Estimate moss_estimate_{0, 0, ""};
-  // Grows the state's ivy on the garden as it stands after the clock (see docs/garden-model.md),
-  // within what the trees left of the budget.
-  Status GrowIvy();
+  // Grows the state's ivy by one garden year's steps (ivy_steps) on the garden as it stands after
+  // that year's growth (see docs/garden-model.md "One clock"), within what the trees' growth so
+  // far, the moss and the records left of the budget.
+  Status GrowIvyYear();
+  std::vector<long> ivy_by_year_;
+  bool ivy_done_ = false;  // the ivy is grown to its steps, extinct, stopped, or has none
   // The simulated bark (compose/garden_bark): the trunks recorded each year, the bark run on each
   // history after the clock, within what the trees' growth and the ivy's support left.
   GardenBarks barks_;

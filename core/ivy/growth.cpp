@@ -120,6 +120,11 @@ struct BestPlacement {
   }
 };
 
+}  // namespace
+
+// Outside the anonymous namespace: IvyGrowth::Impl holds one.
+namespace growth_detail {
+
 class Grower {
  public:
   Grower(const Support& support, const IvyParams& p, uint64_t seed, GrowLog* log)
@@ -133,6 +138,20 @@ class Grower {
   }
 
   bool free() const { return s_.mesh == nullptr; }
+
+  // IvyGrowth::SetSupport: the new support; buds anchored at or past `kept` re-anchored on it.
+  void SetSupport(const Support& support, uint32_t kept) {
+    s_ = support;
+    if (free()) return;
+    for (Bud& b : m_.buds) {
+      if (b.anchor_tri < 0 || static_cast<uint32_t>(b.anchor_tri) < kept) continue;
+      const geom::ClosestHit hit = Closest(b.pos, std::numeric_limits<double>::infinity());
+      if (!hit.found) continue;
+      b.anchor = glm::dvec3(hit.point);
+      b.anchor_tri = static_cast<int>(hit.triangle);
+      b.clearance = static_cast<double>(hit.distance);
+    }
+  }
 
   geom::ClosestHit Closest(const glm::dvec3& q, double max_distance) {
     if (s_.attach_mesh != nullptr) {
@@ -693,14 +712,26 @@ class Grower {
   IvyModel m_;
 };
 
-}  // namespace
+}  // namespace growth_detail
 
-Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& seeds,
-                      const IvyParams& params, int steps, uint64_t seed, GrowLog* log,
-                      const IvyGrowLimits* limits, const StepObserver& on_step) {
-  GrowLog local;
-  if (log == nullptr) log = &local;
-  *log = GrowLog();
+using growth_detail::Grower;
+
+struct IvyGrowth::Impl {
+  IvyParams params;
+  GrowLog log;
+  std::unique_ptr<Grower> grower;
+  int steps = 0;
+  bool finished = false;
+  double ms_total = 0;
+};
+
+IvyGrowth::IvyGrowth(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+IvyGrowth::IvyGrowth(IvyGrowth&&) noexcept = default;
+IvyGrowth& IvyGrowth::operator=(IvyGrowth&&) noexcept = default;
+IvyGrowth::~IvyGrowth() = default;
+
+Result<IvyGrowth> IvyGrowth::Start(const Support& support, const std::vector<glm::dvec3>& seeds,
+                                   const IvyParams& params, int steps, uint64_t seed) {
   NIWA_RETURN_IF_ERROR(ValidateIvyParams(params));
   if (steps < 0 || steps > kMaxSteps) {
     return Status::Error(
@@ -723,28 +754,72 @@ Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& see
                          "has only obstacle triangles (noivy materials); ivy needs at "
                          "least 1 support triangle");
   }
-  Grower g(support, params, seed, log);
-  NIWA_RETURN_IF_ERROR(g.PlaceSeeds(seeds));
-  log->nutrient_start = g.NutrientTotal();
-  auto t0 = std::chrono::steady_clock::now();
-  for (int s = 1; s <= steps; ++s) {
+  auto impl = std::make_unique<Impl>();
+  impl->params = params;
+  impl->steps = steps;
+  impl->grower = std::make_unique<Grower>(support, impl->params, seed, &impl->log);
+  NIWA_RETURN_IF_ERROR(impl->grower->PlaceSeeds(seeds));
+  impl->log.nutrient_start = impl->grower->NutrientTotal();
+  impl->finished = steps == 0;
+  return IvyGrowth(std::move(impl));
+}
+
+void IvyGrowth::SetSupport(const Support& support, uint32_t kept_triangles) {
+  impl_->grower->SetSupport(support, kept_triangles);
+}
+
+Status IvyGrowth::GrowTo(int to, const IvyGrowLimits* limits, const StepObserver& on_step) {
+  Impl& m = *impl_;
+  GrowLog* log = &m.log;
+  Grower& g = *m.grower;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int s = log->steps_run + 1; !m.finished && s <= std::min(to, m.steps); ++s) {
     if (limits != nullptr) {
-      log->truncated_by = CheckIvyStep(g.model(), *log, *limits, s, steps);
-      if (!log->truncated_by.empty()) break;
+      log->truncated_by = CheckIvyStep(g.model(), *log, *limits, s, m.steps);
+      if (!log->truncated_by.empty()) {
+        m.finished = true;
+        break;
+      }
     }
     log->bud_steps += static_cast<double>(g.model().buds.size());
     g.Step(s);
     log->steps_run = s;
-    if (on_step && !on_step(s, steps, g.model(), *log)) return run::CancelledStatus();
+    if (on_step && !on_step(s, m.steps, g.model(), *log)) return run::CancelledStatus();
     if (!g.Alive()) {
       log->extinct_step = s;
-      break;
+      m.finished = true;
     }
+    if (s == m.steps) m.finished = true;
   }
-  double total =
+  m.ms_total +=
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  log->ms_rules = std::max(0.0, total - log->ms_search);
-  return std::move(g.model());
+  return Status::Ok();
+}
+
+bool IvyGrowth::finished() const { return impl_->finished; }
+int IvyGrowth::steps() const { return impl_->steps; }
+const IvyModel& IvyGrowth::model() const { return impl_->grower->model(); }
+const GrowLog& IvyGrowth::log() const { return impl_->log; }
+
+IvyModel IvyGrowth::TakeModel() { return std::move(impl_->grower->model()); }
+
+GrowLog IvyGrowth::TakeLog() {
+  impl_->log.ms_rules = std::max(0.0, impl_->ms_total - impl_->log.ms_search);
+  return std::move(impl_->log);
+}
+
+Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& seeds,
+                      const IvyParams& params, int steps, uint64_t seed, GrowLog* log,
+                      const IvyGrowLimits* limits, const StepObserver& on_step) {
+  GrowLog local;
+  if (log == nullptr) log = &local;
+  *log = GrowLog();
+  Result<IvyGrowth> growth = IvyGrowth::Start(support, seeds, params, steps, seed);
+  if (!growth.ok()) return growth.status();
+  const Status grown = growth->GrowTo(steps, limits, on_step);
+  *log = growth->TakeLog();
+  if (!grown.ok()) return grown;
+  return growth->TakeModel();
 }
 
 }  // namespace niwa::ivy

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <vector>
 
 #include "base/status.h"
@@ -48,6 +49,40 @@ using StepObserver =
 Result<IvyModel> Grow(const Support& support, const std::vector<glm::dvec3>& seeds,
                       const IvyParams& params, int steps, uint64_t seed, GrowLog* log,
                       const IvyGrowLimits* limits = nullptr, const StepObserver& on_step = {});
+
+// Grow's steps a stretch at a time, with the support replaceable between stretches: the garden
+// (compose/garden_run) grows its ivy year by year on the trunks as they stand that year. Grow is
+// this with one stretch on one support, so both make the same bytes. Replacing the support keeps
+// every bud where it grew; a bud anchored on a triangle at or past `kept_triangles` (the part of
+// the support that changed) is re-anchored to the new support's closest point (its position,
+// direction and side stay), so the anchors name the current support's triangles.
+class IvyGrowth {
+ public:
+  // Places the seeds on `support` (errors as Grow's). `steps` is the growth's last step (the
+  // lines' "of N" and the end); nothing grows until GrowTo. The support's mesh and BVH must
+  // outlive the growth or the next SetSupport.
+  static Result<IvyGrowth> Start(const Support& support, const std::vector<glm::dvec3>& seeds,
+                                 const IvyParams& params, int steps, uint64_t seed);
+  IvyGrowth(IvyGrowth&&) noexcept;
+  IvyGrowth& operator=(IvyGrowth&&) noexcept;
+  ~IvyGrowth();
+  void SetSupport(const Support& support, uint32_t kept_triangles);
+  // Grows steps up to `to` (at most the growth's steps), as Grow's loop: the limits checked before
+  // each step, on_step after it; stops for good when no A or D is left or a limit stops it.
+  Status GrowTo(int to, const IvyGrowLimits* limits, const StepObserver& on_step = {});
+  bool finished() const;  // at its steps, extinct, or stopped by a limit
+  int steps() const;
+  const IvyModel& model() const;
+  const GrowLog& log() const;
+  // Hands over the model and log (ms_rules set); the growth is spent.
+  IvyModel TakeModel();
+  GrowLog TakeLog();
+
+ private:
+  struct Impl;
+  explicit IvyGrowth(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
 
 // The geometric normal of a triangle (unit, from its winding).
 glm::dvec3 TriangleNormal(const geom::TriMesh& mesh, uint32_t triangle);

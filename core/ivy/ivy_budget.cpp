@@ -16,7 +16,7 @@ namespace {
 // at the same step). A Bud is 200 bytes natively (positions, directions, anchor in double), an
 // Internode 16, the crowding grid's entry and its cell share 64 (measured on the wall); the
 // PreOrder and rule lists of a step 8 a bud; the vectors double, so up to twice each while growing.
-constexpr double kBaseBytes = 64.0 * 1024 * 1024;  // the process, tables, code
+constexpr double kBaseBytes = kIvyBaseBytes;  // the process, tables, code
 constexpr double kBytesPerBud = 2.0 * (200 + 16 + 64) + 8;
 // Support: a TriMesh triangle (3 positions and normals once shared, 3 indices) about 40 bytes
 // after Subdivide (which makes new vertices per triangle: 3 × (12 + 12) + 12 = 84) and the BVH's
@@ -89,7 +89,8 @@ Estimate EstimateIvySupport(const IvySupportSize& s) {
       copies * (after * kBytesPerSubdividedTriangle + (s.bvh ? after * kBytesPerBvhTriangle : 0)) +
       (s.levels > 0 ? s.triangles * kBytesPerSubdividedTriangle : 0);
   e.memory_bytes += kBaseBytes;
-  e.seconds = copies * after * kNsPerTriangleBuild * 1e-9;
+  e.seconds = copies * after *
+              (s.ns_per_triangle_build >= 0 ? s.ns_per_triangle_build : kNsPerTriangleBuild) * 1e-9;
   e.what = s.levels > 0 ? "subdividing the support to " + FormatCount(after) + " triangles"
                         : "holding the support (" + FormatCount(after) + " triangles)";
   return e;

@@ -29,6 +29,9 @@ inline constexpr char kIvyChange[] = "lower steps or subdivide, or raise t1 and 
 inline constexpr char kIvyStatsChange[] =
     "lower steps or subdivide, or raise t1 and t2, or leave out the statistics";
 
+// The process, its tables and code: every ivy estimate's memory starts at it.
+inline constexpr double kIvyBaseBytes = 64.0 * 1024 * 1024;
+
 struct IvyGrowLimits {
   double max_bytes = -1, max_seconds = -1;
   double base_bytes = 0, bytes_per_bud = 0;
@@ -47,6 +50,9 @@ struct IvySupportSize {
   int levels = 0;          // --subdivide K
   bool bvh = true;         // --accel bvh (the linear twin builds none)
   bool obstacles = false;  // a second (attach) mesh and BVH
+  // Seconds a final triangle takes to build (subdividing and the BVH); negative: the study's
+  // constant (kNsPerTriangleBuild, docs/budgets.md). A caller that measured its own sets it.
+  double ns_per_triangle_build = -1;
 };
 // Memory and time of the process with its support (the mesh, its subdivision and BVH, held while
 // the ivy grows); `what` names it ("subdividing the support to 4,194,304 triangles").

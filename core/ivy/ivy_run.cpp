@@ -206,6 +206,7 @@ Result<std::shared_ptr<const IvySupport>> IvySupport::Prepare(IvySupportInput in
   size.levels = s.scene_.free ? 0 : levels;
   size.bvh = options.accel == Accel::kBvh;
   size.obstacles = s.is_mesh_ && (options.mesh_attach_always_counted || s.obstacles_ > 0);
+  size.ns_per_triangle_build = options.ns_per_triangle_build;
   s.estimate_ = EstimateIvySupport(size);
   // A prepared support's building (a tree's growth and bark) took its time before the ivy's.
   s.estimate_.seconds += prepared_seconds;
@@ -281,6 +282,9 @@ const Support* IvyRun::LeafSupport() const {
 
 void IvyRun::SetLimits() {
   limits_ = IvyLimits(params_, budget_, support_->estimate(), !support_->free());
+  limits_.seconds_before += earlier_supports_seconds_;  // AdvanceOn's earlier supports
+  if (options_.ns_per_candidate >= 0)
+    limits_.seconds_per_candidate = options_.ns_per_candidate * 1e-9;
   limits_.bytes_per_bud += options_.extra_bytes_per_bud;
   // The page's meshes hold each bud's further leaves too (the row leaf_spacing).
   const double leaves_per_bud = IvyLeavesPerBud(params_);
@@ -355,7 +359,43 @@ Status IvyRun::Advance(const run::Observer& observer) {
                                 &log, &grow_limits_, on_step);
   if (!early.ok()) return early;
   if (!model.ok()) return model.status();
-  model_ = std::move(model).value();
+  FinishGrowth(std::move(model).value(), std::move(log), observer);
+  return Status::Ok();
+}
+
+Status IvyRun::AdvanceOn(std::shared_ptr<const IvySupport> support, uint32_t kept_triangles,
+                         const Budget& budget, int to, const run::Observer& observer) {
+  if (grown_) return Status::Ok();
+  if (support != support_) {
+    earlier_supports_seconds_ += support_->estimate().seconds;
+    support_ = std::move(support);
+    leaf_support_ = support_->ForGrow();
+    if (growth_) growth_->SetSupport(leaf_support_, kept_triangles);
+  }
+  budget_ = budget;
+  SetLimits();
+  if (!growth_) {
+    ++grows_;
+    Result<IvyGrowth> growth =
+        IvyGrowth::Start(leaf_support_, seeds_, params_, state_.steps, state_.seed);
+    if (!growth.ok()) return growth.status();
+    growth_ = std::make_shared<IvyGrowth>(std::move(*growth));
+  }
+  const StepObserver on_step = [&](int step, int steps, const IvyModel&, const GrowLog&) {
+    return !observer || observer({"grow", static_cast<double>(step), static_cast<double>(steps)});
+  };
+  NIWA_RETURN_IF_ERROR(growth_->GrowTo(std::min(to, state_.steps), &grow_limits_, on_step));
+  if (growth_->finished()) {
+    IvyModel model = growth_->TakeModel();
+    GrowLog log = growth_->TakeLog();
+    growth_.reset();
+    FinishGrowth(std::move(model), std::move(log), observer);
+  }
+  return Status::Ok();
+}
+
+void IvyRun::FinishGrowth(IvyModel model, GrowLog log, const run::Observer& observer) {
+  model_ = std::move(model);
   log_ = std::move(log);
   timings_.ms_rules = log_.ms_rules;
   timings_.ms_search = log_.ms_search;
@@ -373,7 +413,6 @@ Status IvyRun::Advance(const run::Observer& observer) {
     timings_.ms_mesh = Ms(t0, Clock::now());
   }
   grown_ = true;
-  return Status::Ok();
 }
 
 Status IvyRun::Update(const IvyState& given) {

@@ -43,10 +43,10 @@ struct IvySupportInput {
   geom::TriMesh mesh;                       // kMesh: the mesh as read (io::ReadMeshBytes)
   std::string name;                         // kMesh: its name (the scene's name)
   std::vector<io::MeshMaterial> materials;  // kMesh: the reader's (noivy obstacles)
-  double metres_per_unit = 0;  // kMesh: the unit its file names (io MeshReadStats), 0 none
-  IvyScene prepared;                        // kPrepared: e.g. compose/ivy_on_tree's bark
-  Estimate prepared_estimate;               // kPrepared: building it (its seconds count)
-  std::string prepared_truncated_by;        // kPrepared: its stop line, "" if none
+  double metres_per_unit = 0;         // kMesh: the unit its file names (io MeshReadStats), 0 none
+  IvyScene prepared;                  // kPrepared: e.g. compose/ivy_on_tree's bark
+  Estimate prepared_estimate;         // kPrepared: building it (its seconds count)
+  std::string prepared_truncated_by;  // kPrepared: its stop line, "" if none
 
   static IvySupportInput Scene(std::string name);
   static IvySupportInput Mesh(geom::TriMesh mesh, std::string name,
@@ -67,6 +67,8 @@ struct IvySupportOptions {
   // A mesh support's estimate counts its attach mesh and BVH: always (the CLI), or only when it
   // has obstacles (the page). Kept apart so both keep their figures.
   bool mesh_attach_always_counted = true;
+  // Nanoseconds a triangle of the support takes to build (IvySupportSize); negative: the study's.
+  double ns_per_triangle_build = -1;
 
   // The options a state asks for (its accel); the rest as above.
   static IvySupportOptions For(const IvyState& state);
@@ -127,6 +129,9 @@ struct IvyRunOptions {
   double extra_bytes_per_bud = 0;  // held per bud beside the model (the page's meshes)
   std::string change;              // the truncation line's advice ("" = kIvyChange)
   bool build_meshes = false;       // BuildIvyMeshes once grown (the page shows them)
+  // The growth's time per candidate position tested (IvyGrowLimits::seconds_per_candidate), in
+  // ns; negative: the study's constant. The garden sets the figure measured on its supports.
+  double ns_per_candidate = -1;
   // What an export refusal and a statistics refusal tell the user to change.
   std::string export_change = kIvyChange;
   std::string stats_change = kIvyStatsChange;
@@ -165,6 +170,17 @@ class IvyRun : public run::StudyRun {
   // Grows to the state's steps (progress "grow", step of steps; the observer's false cancels,
   // leaving the run as it was). Errors: Grow's ("steps", "seed_points", "mesh"), cancelled.
   Status Advance(const run::Observer& observer) override;
+  // Grows on to step `to` (at most the state's steps) on `support`, which replaces the run's
+  // support from this step on (the garden: the trunks the ivy climbs grew since the last call;
+  // IvyGrowth::SetSupport with `kept_triangles`, the support's unchanged part), within `budget`
+  // (the limits are set again; the earlier supports' seconds stay counted). Once at the state's
+  // steps (or extinct, or stopped by a limit) the run is grown as after Advance. Advance's checks
+  // of planned outputs are not made. Errors: Grow's, cancelled.
+  Status AdvanceOn(std::shared_ptr<const IvySupport> support, uint32_t kept_triangles,
+                   const Budget& budget, int to, const run::Observer& observer);
+  // The model and log so far (a run between AdvanceOn calls; the grown ones after).
+  const IvyModel& model_so_far() const { return growth_ ? growth_->model() : model_; }
+  const GrowLog& log_so_far() const { return growth_ ? growth_->log() : log_; }
   // A new state on the same support: when only mesh-stage rows changed, re-meshes the grown ivy;
   // else forgets it (Advance grows again).
   Status Update(const IvyState& state);
@@ -235,6 +251,11 @@ class IvyRun : public run::StudyRun {
   LeafPlacement placement_;  // BuildIvyMeshes' counts for meshes_
   IvyTimings timings_;
   int grows_ = 0, remeshes_ = 0;
+  // AdvanceOn: the growth between calls, and the seconds of the supports it grew on before.
+  std::shared_ptr<IvyGrowth> growth_;
+  double earlier_supports_seconds_ = 0;
+  // Ends a growth: its model and log kept, the meshes built when asked for, grown_ set.
+  void FinishGrowth(IvyModel model, GrowLog log, const run::Observer& observer);
 };
 
 }  // namespace niwa::ivy

@@ -162,6 +162,8 @@ await runBrowserTest(async (server, browser) => {
   const after1c = await dataset();
   check('scrubbing grows nothing in the worker (its grow count and the garden serial unchanged)', Number(before1c.workerGrows) > 0 && after1c.workerGrows === before1c.workerGrows && after1c.gardenSerial === before1c.gardenSerial && Number(after1c.yearsRecorded) === 9,
     `worker grows ${before1c.workerGrows} -> ${after1c.workerGrows}, garden serial ${before1c.gardenSerial} -> ${after1c.gardenSerial}, ${after1c.yearsRecorded} years recorded (${after1c.recordKb} kB)`);
+  check('the ivy grows on the clock: year 2\'s recorded ivy has fewer internodes than year 8\'s', Number(y2.d.yearIvy) > 0 && Number(y2.d.yearIvy) < Number(y8.d.yearIvy),
+    `ivy ${y2.d.yearIvy} internodes at year 2, ${y8.d.yearIvy} at year 8`);
   check('each pick is on screen within two frames', Number(y2.d.yearFrames) <= 2 && Number(y8.d.yearFrames) <= 2,
     `year 2: ${y2.d.yearAnswerMs} ms (worker ${y2.d.yearBuildMs} ms), ${y2.d.yearFrames} frames; year 8: ${y8.d.yearAnswerMs} ms (worker ${y8.d.yearBuildMs} ms), ${y8.d.yearFrames} frames`);
   check('the link does not change when scrubbing', (await page.evaluate(() => location.hash)).includes('years=8') && !/year=/.test(await page.evaluate(() => location.hash)), await page.evaluate(() => location.hash));

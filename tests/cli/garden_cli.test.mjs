@@ -59,6 +59,15 @@ check('plant: native == WASM bytes', plants[0].stdout === plants[1].stdout && pl
 const planted = JSON.parse(plants[0].stdout);
 check('plant: the same trees the grow placed', planted.trees.length === s.trees.count, `${planted.trees.length}`);
 
+// The ivy grows on the clock (ivy_steps a year on that year's trunks): its internodes after each
+// year rise, and a garden grown to 2 years has year 2's ivy of the 3-year garden.
+const byYear = s.ivy?.internodes_by_year ?? [];
+const two = spawn(native, ['garden', 'grow', ...small.slice(0, -1), '2', '--stats']);  // --years 2
+const twoIvy = two.status === 0 ? JSON.parse(two.stdout).ivy?.internodes : -1;
+check('stats: the ivy grew year by year (internodes_by_year rising, the last the ivy\'s; year 2 the 2-year garden\'s)',
+  byYear.length === 3 && byYear[0] > 0 && byYear[0] < byYear[1] && byYear[1] < byYear[2] && byYear[2] === s.ivy.internodes
+  && twoIvy === byYear[1], `${JSON.stringify(byYear)}; 2 years: ${twoIvy}`);
+
 // 3. The link a grow prints regrows the same garden.
 const plain = spawn(native, ['garden', 'grow', ...small]);
 check('grow without --stats: exit 0, a hash', plain.status === 0 && JSON.parse(plain.stdout).hash?.length > 0, plain.stderr);

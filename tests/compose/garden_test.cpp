@@ -21,6 +21,7 @@
 #include "geom/primitives.h"
 #include "geom/ray_cast.h"
 #include "image/png.h"
+#include "ivy/ivy_budget.h"
 
 namespace niwa::compose {
 namespace {
@@ -456,7 +457,10 @@ TEST(Garden, TheIvyGetsWhatTheTreesLeftOfTheBudget) {
   for (const GardenTreeGroup& g : run->groups()) trees += g.run->grown().seconds;
   EXPECT_GT(trees, 0.0);
   EXPECT_LE(trees, tight.seconds);
-  EXPECT_DOUBLE_EQ(run->ivy_budget().seconds, tight.seconds - trees);
+  // The ivy grows year by year: its budget is what the trees had used by the last year it grew
+  // in (at most their final growth).
+  EXPECT_GE(run->ivy_budget().seconds, tight.seconds - trees);
+  EXPECT_LT(run->ivy_budget().seconds, tight.seconds);
   const std::string& line = run->truncated_by();
   ASSERT_EQ(line.rfind("ivy: max_seconds: stopped ", 0), 0u) << line;
   if (run->ivy() != nullptr) {
@@ -487,6 +491,98 @@ TEST(Garden, TheIvyCountsTheMemoryItsFrontEndHoldsPerBud) {
   ASSERT_TRUE(alone.ok());
   ASSERT_TRUE(alone->Advance({}).ok());
   EXPECT_EQ(alone->ivy()->log().steps_run, 120) << alone->truncated_by();
+}
+
+// The ivy grows on the garden's clock (issue 33 item 2): ivy_steps steps a year, on the trunks as
+// they stand that year. A hand-placed keyaki with ivy at its foot, beside the wall's: the ivy of
+// year 2 of a 4-year garden is the 2-year garden's ivy, bud for bud (the same positions: it grew
+// on the 2-year trunk, not on the 4-year one), and the ivy grows every year.
+TEST(Garden, TheIvyGrowsYearByYearOnTheTrunksOfEachYear) {
+  GardenState s = SmallGarden();
+  ASSERT_TRUE(s.params.Set(GardenParam::kDensity, 0).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kIvySteps, 20).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kMossDays, 0).ok());
+  s.ground = GroundKind::kFlat;
+  s.ivy_on = {"plants[0]", "objects[0]"};  // the default's hand-placed keaki and its wall
+  ASSERT_TRUE(s.params.Set(GardenParam::kYears, 4).ok());
+  Result<GardenRun> four = GardenRun::Start(s, Budget{}, true);
+  ASSERT_TRUE(four.ok()) << four.status().Line();
+  ASSERT_TRUE(four->Advance({}).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kYears, 2).ok());
+  Result<GardenRun> two = GardenRun::Start(s, Budget{});
+  ASSERT_TRUE(two.ok()) << two.status().Line();
+  ASSERT_TRUE(two->Advance({}).ok());
+  ASSERT_NE(four->ivy(), nullptr);
+  ASSERT_NE(two->ivy(), nullptr);
+  EXPECT_TRUE(four->truncated_by().empty()) << four->truncated_by();
+  EXPECT_EQ(four->ivy()->log().steps_run, 80);
+  EXPECT_EQ(two->ivy()->log().steps_run, 40);
+  // Every year's internodes, each year more; the last is the grown ivy's.
+  const std::vector<long>& by_year = four->ivy_internodes_by_year();
+  ASSERT_EQ(by_year.size(), 4u);
+  for (std::size_t y = 1; y < by_year.size(); ++y) EXPECT_LT(by_year[y - 1], by_year[y]) << y;
+  EXPECT_EQ(by_year.back(), static_cast<long>(four->ivy()->model().internodes.size()));
+  // The records carry it: year 0 none, year 2 the 2-year garden's.
+  ASSERT_EQ(four->years().size(), 5u);
+  EXPECT_EQ(four->years()[0].ivy_internodes, 0);
+  EXPECT_EQ(four->years()[2].ivy_steps, 40);
+  EXPECT_EQ(four->years()[2].ivy_internodes,
+            static_cast<long>(two->ivy()->model().internodes.size()));
+  EXPECT_LT(four->years()[2].ivy_internodes, four->years()[4].ivy_internodes);
+  // Year 2 of the 4-year ivy is the 2-year ivy: the buds born by step 40, where they grew.
+  const ivy::IvyModel& a = four->ivy()->model();
+  const ivy::IvyModel& b = two->ivy()->model();
+  ASSERT_LE(b.buds.size(), a.buds.size());
+  std::size_t born = 0, on_trunk = 0;
+  for (const ivy::Bud& bud : a.buds) born += bud.born_step <= 40 ? 1 : 0;
+  EXPECT_EQ(born, b.buds.size());
+  for (std::size_t k = 0; k < b.buds.size(); ++k) {
+    ASSERT_EQ(a.buds[k].pos, b.buds[k].pos) << "bud " << k;
+    on_trunk += b.buds[k].plant == 0 ? 1 : 0;
+  }
+  EXPECT_GT(on_trunk, 10u) << "the keyaki's ivy grew on its trunk";
+  const nlohmann::json stats = nlohmann::json::parse(four->StatsJson());
+  EXPECT_EQ(stats["ivy"]["internodes_by_year"].size(), 4u);
+}
+
+// The budget's estimate of the ivy (time and memory) against a measured run of a small garden:
+// never under what it took, and not more than twice it (issue 33: the estimate was several times
+// the ivy's cost, and the scale garden's ivy was stopped short for it). Time is the process's CPU
+// time over the ivy's years (GardenRun::cpu_ms_ivy; the machine's load does not stretch it);
+// memory the ivy's own structures as held at the end (its buds, internodes and axes, the last
+// support's mesh and BVH), against the estimate above the process's base.
+TEST(Garden, TheIvysEstimateIsNearWhatItTook) {
+  GardenState s = SmallGarden();
+  ASSERT_TRUE(s.params.Set(GardenParam::kDensity, 0).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kYears, 4).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kIvySteps, 40).ok());
+  ASSERT_TRUE(s.params.Set(GardenParam::kMossDays, 0).ok());
+  s.ivy_on = {"plants[0]", "objects[0]"};
+  Result<GardenRun> run = GardenRun::Start(s, Budget{});
+  ASSERT_TRUE(run.ok()) << run.status().Line();
+  ASSERT_TRUE(run->Advance({}).ok());
+  ASSERT_NE(run->ivy(), nullptr);
+  const ivy::IvyRun& ivy = *run->ivy();
+  const Estimate e = ivy::EstimateIvyGrown(ivy.model(), ivy.log(), ivy.limits());
+  const double cpu_s = run->cpu_ms_ivy() / 1000.0;
+  EXPECT_GE(e.seconds, cpu_s) << "estimated " << e.seconds << " s, took " << cpu_s << " s of CPU";
+  EXPECT_LE(e.seconds, 2 * cpu_s) << "estimated " << e.seconds << " s, took " << cpu_s << " s";
+  const ivy::IvyModel& m = ivy.model();
+  const geom::TriMesh& mesh = *ivy.support().mesh();
+  const double held =
+      static_cast<double>(m.buds.capacity() * sizeof(ivy::Bud) +
+                          m.internodes.capacity() * sizeof(ivy::Internode) +
+                          m.axes.capacity() * sizeof(ivy::Axis)) +
+      static_cast<double>(mesh.positions.capacity() * sizeof(glm::vec3) +
+                          mesh.indices.capacity() * sizeof(uint32_t)) +
+      static_cast<double>(ivy.support().bvh().nodes().capacity() * sizeof(geom::BvhNode) +
+                          ivy.support().bvh().wide_nodes().capacity() * sizeof(geom::BvhWideNode) +
+                          ivy.support().bvh().wide_boxes().capacity() * sizeof(geom::BvhWideBoxes) +
+                          ivy.support().bvh().order().capacity() * sizeof(uint32_t) +
+                          ivy.support().bvh().corners().capacity() * sizeof(glm::vec3));
+  const double above_base = e.memory_bytes - ivy::kIvyBaseBytes;
+  EXPECT_GE(above_base, held) << "estimated " << above_base << " B, held " << held << " B";
+  EXPECT_LE(above_base, 2 * held) << "estimated " << above_base << " B, held " << held << " B";
 }
 
 }  // namespace

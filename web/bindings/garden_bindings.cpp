@@ -20,8 +20,8 @@
 //   "objects" positions, normals, indices (every object's mesh, placed, in one list), kind (Float32
 //             per vertex: 0 wall, 1 rock, 2 lantern, 3 ivy stem, 4 ivy leaf), birth (Float32 per
 //             vertex: the garden year an ivy vertex grew in, ceil(birth_step / ivy_steps), 0 for
-//             the objects; the ivy is grown after the clock on the final garden, so a year's ivy
-//             is the part of it born by then)
+//             the objects; the ivy grows on the garden's clock, ivy_steps steps a year on that
+//             year's trunks, so a year's ivy is exactly the part of it born by then)
 //   "trees"   positions, normals, indices (each group's mesh at the origin, one after another;
 //             the indices absolute), part (Float32 per vertex: 0 bark, 1 leaves, 2 flowers),
 //             ranges (Uint32, 4 per group: first index, index count, first instance, instance
@@ -52,15 +52,16 @@
 // `niwa garden grow --url HASH --out g.glb`); grows() (how many grows this lab started: a page's
 // check that the scrubber grows nothing), runGrows() (grows() when the run kept was grown);
 // yearsJson() ({years, recorded: [years], stopped_by, record_bytes, bytes: [per recorded year],
-// mosses: [per recorded year]}); showYear(y) -> ""/error record naming "year": the "year" group
-// filled from the run's record of year y (GardenRun's record_years, on for every page grow:
-// compose/garden_view GardenGroupMeshAt). Blow (compose/garden_wind, the last grown year's trees):
-// blowStart(windJson) -> ""/error record (the wind rows over the garden's defaults, "{}" for none;
-// errors name the row, "wind" or the page budget's limit; fills "skin" and "wind" at rest),
-// blowStep(steps) -> the wind's time (s; at most 64 steps a call; fills "wind"), blowStop(),
-// blowDt(), blowDuration(), blowStepsPerTick(), blowSpeed() (the share of real time the worker can
-// keep), blowWindSpeed() (m/s at the garden's centre now), blowBlocks() (pose blocks of every copy;
-// 0: not blowing); a new grow stops it. Free functions: gardenTableJson(), gardenDecodeJson(hash)
+// mosses: [per recorded year], ivy: [the ivy's internodes per recorded year]}); showYear(y) ->
+// ""/error record naming "year": the "year" group filled from the run's record of year y
+// (GardenRun's record_years, on for every page grow: compose/garden_view GardenGroupMeshAt). Blow
+// (compose/garden_wind, the last grown year's trees): blowStart(windJson) -> ""/error record (the
+// wind rows over the garden's defaults, "{}" for none; errors name the row, "wind" or the page
+// budget's limit; fills "skin" and "wind" at rest), blowStep(steps) -> the wind's time (s; at most
+// 64 steps a call; fills "wind"), blowStop(), blowDt(), blowDuration(), blowStepsPerTick(),
+// blowSpeed() (the share of real time the worker can keep), blowWindSpeed() (m/s at the garden's
+// centre now), blowBlocks() (pose blocks of every copy; 0: not blowing); a new grow stops it. Free
+// functions: gardenTableJson(), gardenDecodeJson(hash)
 // ({state, notices}: the default garden with the link's keys). Does not: keep more than one run,
 // keep more than one year's buffers, sway a recorded year's trees, or read files (the page hands
 // their bytes in). phasesJson(): where the last grow's time went in the worker, ms (ground, plant,
@@ -293,17 +294,19 @@ class GardenLab {
     ordered_json j;
     j["years"] = run_->done();
     ordered_json recorded = ordered_json::array(), bytes = ordered_json::array(),
-                 mosses = ordered_json::array();
+                 mosses = ordered_json::array(), ivy = ordered_json::array();
     for (const compose::GardenYearRecord& r : run_->years()) {
       recorded.push_back(r.year);
       bytes.push_back(r.bytes);
       mosses.push_back(r.mosses);
+      ivy.push_back(r.ivy_internodes);
     }
     j["recorded"] = recorded;
     j["stopped_by"] = run_->record_stopped_by();
     j["record_bytes"] = run_->record_bytes();
     j["bytes"] = bytes;
     j["mosses"] = mosses;
+    j["ivy"] = ivy;
     return JsonText(j);
   }
 

@@ -24,7 +24,8 @@
 // The year scrubber and Play replay the garden's years WITHOUT regrowing: every grow records each
 // year's picture as the clock runs (core GardenRun's record_years), a picked year's trees are meshed
 // from that record in the worker ('year' -> 'gardenYear') and swapped in with the moss's light of
-// that year; the ivy (grown after the clock) is shown to the part of it born by that year. The link
+// that year; the ivy (grown on the same clock, ivy_steps steps a year) is shown to the part of it
+// born by that year, which is the ivy of that year. The link
 // does not change when scrubbing (a view, like the camera); the downloads are the last year's.
 // Blow / Still (garden_wind.js): the wind over the last year's trees, a simulator per planted tree
 // in the worker, its poses skinned by the renderer; a regrow or a year picked stops it.
@@ -636,9 +637,15 @@ let askedYear = null;    // {year, at: performance.now()} of the pick not yet dr
 let yearSerial = 0;
 let yearWaiters = [];    // Play: resolved once the year asked is on screen
 
+// The recorded ivy's internodes of year y (the ivy grows on the garden's clock), or NaN.
+function yearIvy(y) {
+  return Number(years?.ivy?.[years.recorded.indexOf(y)]);
+}
+
 function yearText(y) {
   const mosses = years?.mosses?.[years.recorded.indexOf(y)];
-  return `year ${y} of ${lastYear}${Number.isFinite(mosses) && mosses > 0 ? ` · ${mosses.toLocaleString('en')} mosses` : ''}`;
+  const ivy = yearIvy(y);
+  return `year ${y} of ${lastYear}${Number.isFinite(ivy) && ivy > 0 ? ` · ivy ${ivy.toLocaleString('en')} internodes` : ''}${Number.isFinite(mosses) && mosses > 0 ? ` · ${mosses.toLocaleString('en')} mosses` : ''}`;
 }
 
 function resetYears(total, record, grows) {
@@ -683,7 +690,7 @@ worker.on('gardenYear', (msg) => {
   shownYear = msg.year;
   hybrid?.garden(bounds, shownYear, gardenGrows);
   yearSerial += 1;
-  setHooks({ yearSerial, workerGrows: msg.grows, yearBuildMs: msg.ms.toFixed(1) });
+  setHooks({ yearSerial, workerGrows: msg.grows, yearBuildMs: msg.ms.toFixed(1), yearIvy: String(yearIvy(msg.year)) });
   loop.request(true);  // the picked year at the next animation frame
 });
 
