@@ -51,24 +51,40 @@ struct TreeGrowOptions {
   compose::BarkOnTreeOptions bark_options;
 };
 
-// --bark and its flags, checked before any growth: the value, the flags that need --bark sim, and
-// what sim cannot be made with (a .glb only, the full mesh).
-bool CheckBarkFlags(const TreeGrowOptions& o, const CLI::App& cmd, const std::string& ext) {
-  if (o.bark != "procedural" && o.bark != "sim") {
-    throw BadInput{"--bark: '" + Echo(o.bark) + "' must be procedural or sim"};
+// --bark and its flags, and the tree table's bark rows (`bark`, `bark_model`: from --set, --url or
+// --state), checked before any growth. The flags set the rows (--bark sim: bark 1, --bark-model
+// 4layer: bark_model 4), so the rows and the flags are one setting; what a flag cannot be made
+// with (a .glb only, the full mesh) is refused, while rows from a link simply leave the other
+// outputs (.json, .svg, the LOD .glb) procedural. True when the full .glb is dressed.
+bool CheckBarkFlags(TreeGrowOptions* o, const CLI::App& cmd, const std::string& ext,
+                    TreeState* state) {
+  if (o->bark != "procedural" && o->bark != "sim") {
+    throw BadInput{"--bark: '" + Echo(o->bark) + "' must be procedural or sim"};
   }
-  const bool sim = o.bark == "sim";
-  for (const char* flag : {"--bark-height", "--bark-species", "--bark-model", "--bark-map-size"}) {
-    if (!sim && cmd.count(flag))
-      throw BadInput{std::string(flag) + ": only applies with --bark sim"};
+  const bool flag = o->bark == "sim";
+  const bool rows = compose::TreeBarkSimulated(state->params);
+  for (const char* name : {"--bark-height", "--bark-species", "--bark-model", "--bark-map-size"}) {
+    if (!flag && !rows && cmd.count(name))
+      throw BadInput{std::string(name) + ": only applies with --bark sim"};
   }
-  if (!sim) return false;
-  if (ext != ".glb") throw BadInput{"--bark: sim only applies with --out FILE.glb"};
-  if (o.lod || o.max_triangles >= 0) {
-    throw BadInput{"--bark: sim dresses the full .glb; give it without --lod and --max-triangles"};
+  if (flag) {
+    if (ext != ".glb") throw BadInput{"--bark: sim only applies with --out FILE.glb"};
+    if (o->lod || o->max_triangles >= 0) {
+      throw BadInput{
+          "--bark: sim dresses the full .glb; give it without --lod and --max-triangles"};
+    }
+    Check(state->params.Set(TreeParam::kBark, 1));
   }
-  Check(run::RenameField(compose::CheckBarkOnTreeOptions(o.bark_options), BarkFlagNames()));
-  return true;
+  if (cmd.count("--bark-model")) {
+    Check(run::RenameField(compose::CheckBarkOnTreeOptions(o->bark_options), BarkFlagNames()));
+    Check(state->params.Set(TreeParam::kBarkModel, o->bark_options.model == "4layer" ? 4 : 2));
+  }
+  if (!flag && !rows) return false;
+  Result<std::string> model = compose::TreeBarkModel(state->params);
+  Check(run::RenameField(model.status(), TreeFlagNames()));
+  o->bark_options.model = *model;
+  Check(run::RenameField(compose::CheckBarkOnTreeOptions(o->bark_options), BarkFlagNames()));
+  return ext == ".glb" && !o->lod && o->max_triangles < 0;
 }
 
 // SVG-only drawing options of 'tree grow' (used by scripts/figures).
@@ -90,36 +106,32 @@ void AddSvgOptions(CLI::App* cmd, SvgOptions* o) {
   OnlyWith(AddCaptionFlag(cmd, "--caption", &o->caption, "SVG: text under the tree"), "--out", svg);
 }
 
-// --bark sim: the bark study on the trunk's radius history (core/compose/bark_on_tree), its
-// estimate added to the tree's and its export's and refused up front naming --bark, then the
-// tree's .glb dressed in its maps. Errors are BadInput lines naming the --bark flags.
+// --bark sim: the bark study on the trunk's radius history (core/compose/bark_on_tree's
+// GrowTreeBark, the page's TreeSession's run too), its estimate added to the tree's and its
+// export's and refused up front naming --bark, then the tree's .glb dressed in its maps. Errors
+// are BadInput lines naming the --bark flags.
 Result<std::string> BarkGlb(const TreeGrowOptions& o, const Budget& budget,
                             const TreeExportRequest& request, compose::TrunkHistory* trunk,
                             TreeRun* run, std::string* bark_json) {
   compose::RecordTrunkYear(run->tree(), trunk);
   compose::BarkOnTreeOptions options = o.bark_options;
   options.seed = run->state().seed;
-  Result<compose::BarkOnTreePlan> plan = compose::PlanBarkOnTree(*trunk, options);
-  Check(run::RenameField(plan.status(), BarkFlagNames()));
-  const Estimate total = run->Held() + run->ExportWork(request) + plan->estimate;
-  const Status fits =
-      CheckEstimate(total, budget,
-                    options.model == "4layer"
-                        ? "use --bark-model 2layer, or lower --bark-map-size or --bark-height"
-                        : "lower --bark-map-size or --bark-height");
-  if (!fits.ok()) Fail(Status::Error("--bark", fits.message()));
-  Result<compose::BarkOnTree> bark = compose::GrowBarkOnTree(*plan, budget);
+  Result<compose::BarkOnTree> bark = compose::GrowTreeBark(
+      {*trunk}, options, run->Held() + run->ExportWork(request), budget,
+      options.model == "4layer"
+          ? "use --bark-model 2layer, or lower --bark-map-size or --bark-height"
+          : "lower --bark-map-size or --bark-height");
   Check(run::RenameField(bark.status(), BarkFlagNames()));
   run->BuildBareMesh();
   Result<gltf::Document> doc = compose::BarkTreeDocument(run->tree(), run->mesh(), *bark);
   if (!doc.ok()) return doc.status();
   Result<std::vector<unsigned char>> glb = gltf::WriteGlb(*doc);
   if (!glb.ok()) return glb.status();
-  *bark_json = compose::BarkOnTreeJson(*bark, trunk->height_m);
+  *bark_json = compose::BarkOnTreeJson(*bark, bark->height_m);
   return std::string(glb->begin(), glb->end());
 }
 
-int RunGrow(const TreeGrowOptions& o, const CLI::App& cmd, std::ostream& out) {
+int RunGrow(TreeGrowOptions o, const CLI::App& cmd, std::ostream& out) {
   // --out's ending and the flags that apply only to one output were checked by the shared flags.
   const std::string ext = Extension(o.out_path);
   LodLayout layout = LodLayout::kSiblings;
@@ -131,8 +143,8 @@ int RunGrow(const TreeGrowOptions& o, const CLI::App& cmd, std::ostream& out) {
       throw BadInput{"--lod-layout: '" + Echo(o.lod_layout) + "' must be siblings or msft"};
     }
   }
-  const bool bark_sim = CheckBarkFlags(o, cmd, ext);
   TreeState state = ResolveTreeState(o.state, cmd);
+  const bool bark_sim = CheckBarkFlags(&o, cmd, ext, &state);
   const Budget budget = ResolveBudget(o.state.budget);
   compose::TrunkHistory trunk;  // --bark sim: the trunk's radius at --bark-height, year by year
   trunk.height_m = o.bark_height;

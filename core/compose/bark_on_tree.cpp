@@ -12,6 +12,7 @@
 #include "geom/tri_mesh.h"
 #include "params/param_text.h"
 #include "tree/tree_gltf.h"
+#include "tree/tree_params.h"
 
 namespace niwa::compose {
 namespace {
@@ -314,6 +315,40 @@ Result<BarkOnTree> GrowBarkOnTree(const BarkOnTreePlan& plan, const Budget& budg
   if (!young.ok()) return young.status();
   out.young_bark = std::move(young).value();
   return out;
+}
+
+bool TreeBarkSimulated(const ParamSet& tree_params) {
+  return tree_params.GetBool(TreeParam::kBark);
+}
+
+Result<std::string> TreeBarkModel(const ParamSet& tree_params) {
+  const int layers = tree_params.GetInt(TreeParam::kBarkModel);
+  if (layers == 2) return std::string("2layer");
+  if (layers == 4) return std::string("4layer");
+  return Status::Error("bark_model", FormatNumber(tree_params.Get(TreeParam::kBarkModel)) +
+                                         " must be 2 (the 2-layer model) or 4 (the 4-layer model)");
+}
+
+Result<BarkOnTree> GrowTreeBark(const std::vector<TrunkHistory>& trunks,
+                                const BarkOnTreeOptions& options, const Estimate& held,
+                                const Budget& budget, const std::string& hint,
+                                const run::Observer& observer) {
+  Result<BarkOnTreePlan> plan = Status::Error("bark", "no trunk recorded");
+  double height_m = 0;
+  for (const TrunkHistory& trunk : trunks) {
+    plan = PlanBarkOnTree(trunk, options);
+    if (plan.ok()) {
+      height_m = trunk.height_m;
+      break;
+    }
+  }
+  if (!plan.ok()) return plan.status();
+  const Status fits = CheckEstimate(held + plan->estimate, budget, hint);
+  if (!fits.ok()) return Status::Error("bark", fits.message());
+  Result<BarkOnTree> bark = GrowBarkOnTree(*plan, budget, observer);
+  if (!bark.ok()) return bark.status();
+  bark->height_m = height_m;
+  return bark;
 }
 
 Estimate OldBarkEstimate(const BarkOnTreePlan& plan) {

@@ -20,6 +20,7 @@
 #include "base/status.h"
 #include "image/image.h"
 #include "io/gltf_writer.h"
+#include "params/param_table.h"
 #include "run/study_run.h"
 #include "tree/mesh.h"
 #include "tree/tree.h"
@@ -120,12 +121,31 @@ struct BarkFrame {
 struct BarkOnTree {
   BarkOnTreePlan plan;
   BarkFrame old_bark, young_bark;
+  double height_m = 0;  // the trunk's height the plan read (GrowTreeBark)
 };
 
 // Runs both bark runs of the plan (checked against `budget`: a refusal names "bark"), with the
 // observer seeing the old run's progress then the young one's; a cancel is returned as is.
 Result<BarkOnTree> GrowBarkOnTree(const BarkOnTreePlan& plan, const Budget& budget,
                                   const run::Observer& observer = nullptr);
+
+// The tree table's bark rows (tree/tree_params.h: `bark`, `bark_model`), as the tree's state
+// carries them from a link, a state file, `--set` or the page's panel: true when `bark` is 1.
+bool TreeBarkSimulated(const ParamSet& tree_params);
+// The model `bark_model` names: "2layer" (2) or "4layer" (4); any other value an error naming
+// "bark_model".
+Result<std::string> TreeBarkModel(const ParamSet& tree_params);
+
+// The one run of the bark on a tree, for `niwa tree grow --bark sim` and the page's TreeSession
+// alike: the plan at the first of `trunks` (one height each, in the caller's order: the CLI gives
+// one, the page its fallbacks from breast height down) whose height the tree allows (else that
+// last plan's error), then `held` (what the caller holds and will make: the tree, its export)
+// plus the plan's estimate checked against `budget` before any bark work, a refusal naming "bark"
+// with `hint` (the caller's words for what to change), then both runs (GrowBarkOnTree).
+Result<BarkOnTree> GrowTreeBark(const std::vector<TrunkHistory>& trunks,
+                                const BarkOnTreeOptions& options, const Estimate& held,
+                                const Budget& budget, const std::string& hint,
+                                const run::Observer& observer = nullptr);
 
 // The plan's old bark run alone (no young shoots' run: the garden wears one frame on every tube),
 // checked against `budget` with its own estimate (OldBarkEstimate): a refusal names "bark".

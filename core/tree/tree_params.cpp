@@ -17,7 +17,7 @@ constexpr int Id(TreeParam p) { return static_cast<int>(p); }
 // the hybrid view. leaf_shape, leaf_card and leaf_spray are used by the mesh alone (kMesh);
 // season, autumn_colour, flower_colour and flower_form only dress the tree already grown (kView):
 // none regrows. terminal_flowers places flowers while growing (kGrow) but draws no random number,
-// so trees without it grow the same.
+// so trees without it grow the same. bark and bark_model only re-texture the tree grown (kView).
 //
 // Defaults are the sakura column of thesis table 2.2. "a ~ b" ranges are split into *_low (value at
 // hormone 0, or for P_l at age 0) and *_high (value at hormone H_sat, or at age P_l_years).
@@ -274,6 +274,17 @@ const std::vector<ParamSpec>& Rows() {
       {Id(P::kTerminalFlowers), "terminal_flowers", "", "", 0, 0, 1, true, "branching", kGrow,
        "Terminal flower buds (not in the thesis; Rhododendron): 1: every shoot of last year opens "
        "a flower truss at its tip this spring (the new shoots break beside it); 0: off."},
+      // Not in the thesis (issue 30 item 3; docs/bark-model.md "Bark on Niwa's trees"): the tree
+      // study only carries these two rows; core/compose/bark_on_tree reads them (the CLI's
+      // `tree grow` and the page's TreeSession), so they dress the tree grown (kView).
+      {Id(P::kBark), "bark", "", "", 0, 0, 1, true, "bark", kView,
+       "0: the procedural bark texture; 1: simulated, the bark study (paper 003) run on the "
+       "trunk's own radius history over its last years and its maps wrapped around every branch "
+       "(the full .glb and the page; a few seconds)."},
+      {Id(P::kBarkModel), "bark_model", "", "layers", 2, 2, 4, true, "bark", kView,
+       "With bark 1: the trunk's bark model, 2 (the 2-layer model: one cycle) or 4 (the 4-layer "
+       "model: 3 cycles with layer birth, peeling and shedding; several times the cost, "
+       "estimated and refused up front)."},
   };
   return rows;
 }
@@ -290,7 +301,8 @@ const ParamTable& TreeParamTable() {
                                  {"shape", "Shape and limits"},
                                  {"sway", "Sway"},
                                  {"wind", "Wind"},
-                                 {"render", "Render"}});
+                                 {"render", "Render"},
+                                 {"bark", "Bark"}});
   return table;
 }
 

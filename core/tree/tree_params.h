@@ -127,6 +127,9 @@ enum class TreeParam : int {
   kFlowerColour,
   kFlowerForm,
   kTerminalFlowers,
+  // bark (not in the thesis; core/compose/bark_on_tree: the bark study on the tree's trunk)
+  kBark,       // 0: the procedural texture, 1: the bark study's maps
+  kBarkModel,  // 2: the 2-layer model, 4: the 4-layer model
   kCount
 };
 

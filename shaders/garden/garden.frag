@@ -5,7 +5,10 @@
 // grey where the moss has no cell), 2 the slope (green 0°, yellow 20°, red 45° and over), 3
 // altitude bands uBand metres high with a dark line at each band's foot; 1 the objects (plaster walls, grey rocks and stone
 // lanterns, the .glb's materials) and the ivy on them (brown stems, dark green leaves); 2 the
-// trees (bark brown, leaves green, flowers pale pink). Ivy born after the year shown (vBirth over
+// trees (bark brown, leaves green, flowers pale pink); a distinct tree with simulated bark (uBarkSim
+// 1: the garden's bark 1) wears its bark maps instead of the brown: base colour uBarkMap and the
+// tangent-space normal map uBarkNormal (tangent frame from screen-space derivatives, as the tree
+// page's tree_textured.frag). Ivy born after the year shown (vBirth over
 // uYear: the year scrubber) is not drawn.
 // Lambert from the frame's sun, shadowed by its shadow map, over a sky/ground ambient; both faces
 // lit (leaves are cards).
@@ -18,6 +21,8 @@ in float vTint;
 in float vHeight;
 in vec4 vShadow;
 in float vBirth;
+in vec2 vUv;
+in vec3 vWorld;
 
 uniform vec3 uLightDirection;  // unit, towards the sun
 uniform int uMode;
@@ -25,13 +30,36 @@ uniform float uRelief;
 uniform int uOverlay;  // the ground's: 0 none, 1 moss light, 2 slope, 3 altitude bands
 uniform float uBand;   // m, an altitude band's height
 uniform float uYear;   // the garden year shown
+uniform int uBarkSim;  // 1: the trees drawn wear uBarkMap and uBarkNormal on their bark
+uniform sampler2D uBarkMap;     // RGBA8 base colour, row 0 = v 0
+uniform sampler2D uBarkNormal;  // RGBA8 OpenGL normal map
 
 out vec4 outColor;
+
+// The normal map's (x, y, z) around the surface normal n; the map's +y is up in the image, i.e.
+// towards decreasing v (as tree_textured.frag). The derivatives are taken by the caller in uniform
+// control flow.
+vec3 perturbNormal(vec3 n, vec3 mapN, vec3 q0, vec3 q1, vec2 st0, vec2 st1) {
+  vec3 q1perp = cross(q1, n), q0perp = cross(n, q0);
+  vec3 t = q1perp * st0.x + q0perp * st1.x;
+  vec3 b = q1perp * st0.y + q0perp * st1.y;
+  float det = max(dot(t, t), dot(b, b));
+  float scale = det == 0.0 ? 0.0 : inversesqrt(det);
+  return normalize(t * (mapN.x * scale) - b * (mapN.y * scale) + n * mapN.z);
+}
 
 void main() {
   if (vBirth > uYear + 0.5) discard;
   vec3 n = normalize(vNormal);
   if (!gl_FrontFacing) n = -n;
+  // The bark maps and the tangent frame's derivatives, read before any branch on a varying.
+  vec3 barkColour = vec3(0.0), barkN = vec3(0.0, 0.0, 1.0);
+  vec3 q0 = dFdx(vWorld), q1 = dFdy(vWorld);
+  vec2 st0 = dFdx(vUv), st1 = dFdy(vUv);
+  if (uBarkSim == 1) {
+    barkColour = texture(uBarkMap, vUv).rgb;
+    barkN = texture(uBarkNormal, vUv).xyz * 2.0 - 1.0;
+  }
   vec3 base;
   if (uMode == 0 && uOverlay == 1) {
     float s = vTint;
@@ -57,6 +85,10 @@ void main() {
   } else {
     int k = int(vTint + 0.5);
     base = k == 0 ? vec3(0.36, 0.25, 0.16) : k == 1 ? vec3(0.22, 0.46, 0.16) : vec3(0.95, 0.80, 0.85);
+    if (k == 0 && uBarkSim == 1) {
+      base = barkColour;
+      n = perturbNormal(n, barkN, q0, q1, st0, st1);
+    }
   }
   float lit = sunVisibility(vShadow);
   float diffuse = max(dot(n, uLightDirection), 0.0) * lit;

@@ -25,6 +25,9 @@
 // on the view and one opened as the mask (the core's line beside each), a bad mix weight (its line
 // beside the row), the mix edited and a mask opened, the files named beside Copy link, and that
 // garden's .glb == native `niwa garden grow --garden F.json --out g.glb` with the files beside.
+// Bark: the default garden wears the procedural bark; the panel's bark row (ticked with plant_seed's
+// edit, one regrow) draws each distinct tree's simulated maps (their digests the stats' bark runs'),
+// a trunk close-up differing from the same frame without them.
 // Screenshots: build/artifacts/garden-*.png.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -82,6 +85,8 @@ await runBrowserTest(async (server, browser) => {
   check('the view shows the ground, leaves and bark (pixels)', seen.sky < 0.5 && seen.leaf > 0.003 && seen.bark > 0.0001,
     `sky ${seen.sky.toFixed(3)} leaf ${seen.leaf.toFixed(3)} bark ${seen.bark.toFixed(4)} grey ${seen.grey.toFixed(4)}`);
   check('the sun\'s shadow map is drawn', data.shadow === 'drawn' || data.shadow === 'reused', data.shadow);
+  check('the default garden wears the procedural bark (no bark run, no bark maps sent)', stats.bark === undefined && Number(data.barkTrees) === 0 && data.barkDigests === '',
+    `stats.bark ${JSON.stringify(stats.bark)}, barkTrees ${data.barkTrees}`);
   // The ivy grown on the wall is drawn with the objects: its stems and leaves (no suckers), as many
   // vertices as the .glb's ivy_stems and ivy_leaves meshes at least a dozen a bud.
   check('the ivy grown on the wall is drawn with the objects', stats.ivy?.internodes > 100 && Number(data.ivyVertices) > 12 * stats.ivy.internodes,
@@ -306,9 +311,59 @@ await runBrowserTest(async (server, browser) => {
   const posesBefore = Number(stilled.posesDrawn);
   await page.click('#wind');
   await page.waitForFunction((n) => Number(document.documentElement.dataset.posesDrawn) > n, posesBefore, { timeout: TIMEOUT });
+  // The same regrow ticks the panel's bark row (the garden table's Bark group): each distinct tree
+  // wears its simulated bark (the bark study on its own trunk), the maps the .glb carries.
+  // (Ticked from the keyboard: the focus leaving plant_seed commits its edit at once, and a
+  // mouse click could land beside the box when the Cancel button the update shows moves it.)
   await page.fill('#param-plant_seed', '2');
+  await page.focus('#param-bark');
+  await page.keyboard.press('Space');
   data = await waitGarden(page, serial);
-  check('a panel edit (plant_seed 2) regrows, the row in the hash', data.status === 'ready' && /plant_seed=2/.test(data.hash), `${data.status} ${data.hash}`);
+  check('a panel edit (plant_seed 2, bark 1) regrows, the rows in the hash', data.status === 'ready' && /plant_seed=2/.test(data.hash) && /(^|&)bark=1(&|$)/.test(data.hash), `${data.status} ${data.hash}`);
+  const barkStats = JSON.parse(data.stats).bark || {};
+  const digests = (data.barkDigests || '').split(',');
+  const treeHashes = (barkStats.trees || []).map((t) => t.hash || '');
+  check(`bark 1: the page draws each simulated trunk's maps (${data.barkTrees} distinct trees textured, ${barkStats.simulated} simulated, ${barkStats.runs} runs)`,
+    barkStats.simulated > 0 && Number(data.barkTrees) === barkStats.simulated && digests.length === treeHashes.length &&
+      digests.every((d, g) => (treeHashes[g] ? d === `bark-sim-bark-${treeHashes[g]}` : d === '')),
+  `${data.barkDigests} vs ${JSON.stringify(treeHashes)}`);
+  {
+    // A trunk close-up of a tree with simulated bark, drawn with its maps and then without them
+    // (the same frame otherwise): the trunk's pixels differ. LOOK at garden-bark-sim.png.
+    const gardenBounds = await page.evaluate(() => window.__niwaGardenBounds?.() ?? null);
+    const tree = (gardenBounds?.trees || []).find((t) => digests[t.group]);
+    const look = async (options) => {
+      const { serial: n, view } = await page.evaluate((o) => window.__niwaGardenLook(o), options);
+      await page.waitForFunction((k) => Number(document.documentElement.dataset.drawnLook) >= k, n, { timeout: TIMEOUT });
+      return view;
+    };
+    let cmp = { share: 0, mean: 0, spread: 0 };
+    if (tree) {
+      const at = { x: tree.pos[0], z: tree.pos[2], up: 0.7, distance: 2.2 };
+      const view = await look({ ...at, bark: true });
+      await page.evaluate(() => { window.__barkOn = window.__niwaCanvasImage('#view').data; });
+      await saveCanvasPng(page, 'garden-bark-sim.png');
+      await look({ ...at, bark: false });
+      await saveCanvasPng(page, 'garden-bark-procedural.png');
+      // The pixels that differ (by more than 30) and, in the frame with the maps, their luma's
+      // mean and spread: the maps' cracks and plates, not a flat or black trunk.
+      cmp = await page.evaluate(() => {
+        const a = window.__barkOn, b = window.__niwaCanvasImage('#view').data;
+        const lumas = [];
+        for (let i = 0; i < a.length; i += 4) {
+          if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 30) lumas.push(0.299 * a[i] + 0.587 * a[i + 1] + 0.114 * a[i + 2]);
+        }
+        delete window.__barkOn;
+        const mean = lumas.reduce((x, y) => x + y, 0) / Math.max(1, lumas.length);
+        const spread = Math.sqrt(lumas.reduce((x, y) => x + (y - mean) ** 2, 0) / Math.max(1, lumas.length));
+        return { share: lumas.length / (a.length / 4), mean, spread };
+      });
+      await look({ view, bark: true });
+    }
+    check(`bark 1: a trunk close-up with its maps differs from the procedural brown (${(100 * cmp.share).toFixed(1)} % of pixels, their luma ${cmp.mean.toFixed(0)} ± ${cmp.spread.toFixed(0)})`,
+      Boolean(tree) && cmp.share > 0.02 && cmp.mean > 20 && cmp.spread > 8,
+      tree ? `${tree.species} at ${tree.pos.map((v) => v.toFixed(1)).join(', ')}` : 'no tree with simulated bark');
+  }
   const posesAfterGrow = Number(data.posesDrawn);
   await page.waitForTimeout(500);
   const afterGrow = await dataset();
@@ -321,6 +376,8 @@ await runBrowserTest(async (server, browser) => {
   // each, and the 8-year garden's own checks (stats == native, overlays, years, Blow, hybrid) are above.
   serial = Number(data.gardenSerial);
   await page.fill('#param-years', '99');
+  await page.focus('#param-bark');  // the 3-year gardens below wear the procedural bark
+  await page.keyboard.press('Space');
   await page.waitForFunction(() => document.documentElement.dataset.status === 'error', null, { timeout: TIMEOUT });
   const line = await page.evaluate(() => {
     const row = document.getElementById('param-years').closest('.param, .row, div');

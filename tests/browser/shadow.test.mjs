@@ -253,7 +253,7 @@ await runBrowserTest(async (server, browser) => {
   check('the tree page draws the sun\'s shadow map, and its Sun shadows select turns it off',
     ['drawn', 'reused'].includes(first.drawnShadow), `on: ${first.drawnShadow}, passes ${first.shadowPasses}`);
 
-  // The share link carries the setting (a page field, as bark=sim): shadows=off when off, nothing
+  // The share link carries the setting (a page field, not a table row): shadows=off when off, nothing
   // when on; the link opens with shadows off; a bad value is dropped with a notice naming the field.
   const linkOff = await treePage.waitForFunction(() => /[#&]shadows=off(&|$)/.test(location.hash) && location.hash,
     null, { timeout: TIMEOUT, polling: 100 }).then((h) => h.jsonValue(), () => treePage.evaluate(() => location.hash));

@@ -1,19 +1,29 @@
 // Browser test of the tree page's Bark choice (issue 30 item 3): node tests/browser/tree_bark.test.mjs.
-// A grown tree picks "Simulated": the worker dresses the session's tree in the bark study's maps
-// (TreeSession.dressBark, core/compose/bark_on_tree) without regrowing it, the bark texture the page
-// draws changes (its digest, and the canvas), the link carries bark=sim and opening that link shows
-// the simulated bark from the first tree; back to "Procedural" the procedural texture returns.
-// Screenshots to LOOK at: build/artifacts/bark-procedural.png, bark-sim.png.
+// The Bark choice is the tree table's rows `bark` and `bark_model` (the panel's Bark group, shown
+// beside the view's settings). A grown tree ticks bark: the worker dresses the session's tree in the
+// bark study's maps (TreeSession.dressBark over core/compose/bark_on_tree's GrowTreeBark, the CLI's
+// run) without regrowing it, the bark texture the page draws changes (its digest, and the canvas),
+// the link carries bark=1; bark_model 4 re-dresses it with the 4-layer model (3 cycles: other
+// texture bytes, other pixels, bark_model=4 in the link); bark_model 3 is the core's line beside the
+// choice; an older link's bark=sim opens with the simulated bark from the first tree; unticked, the
+// procedural texture returns. Screenshots to LOOK at: build/artifacts/bark-procedural.png,
+// bark-sim.png, bark-sim-4layer.png.
 import { TIMEOUT, check, newContext, runBrowserTest, saveCanvasPng, snapshotCanvas, snapshotDifference, waitReady, watchPage } from './harness.mjs';
 
 const problems = [];
 const root = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
 const TREE = 'preset=sakura-thesis&seed=1&years=6';
 
-// Picks the Bark choice and waits for the tree it sends to be drawn.
-async function pickBark(page, value) {
+// Sets the Bark rows (bark: the checkbox; model: bark_model's field) and waits for the tree it
+// sends to be drawn.
+async function pickBark(page, value, model) {
   const before = Number((await root(page)).treeSerial || 0);
-  await page.selectOption('#bark', value);
+  if (model !== undefined) {
+    await page.fill('#param-bark_model', String(model));
+    await page.press('#param-bark_model', 'Enter');
+  } else {
+    await page.setChecked('#param-bark', value === 'sim');
+  }
   await waitReady(page, before, 200);
 }
 
@@ -46,24 +56,50 @@ await runBrowserTest(async (server, browser) => {
   await saveCanvasPng(page, 'bark-sim.png');
   const changed = await snapshotDifference(page, 'procedural', 'sim', 24);
   check(`Simulated: the picture changed (${(100 * changed).toFixed(1)} % of pixels)`, changed > 0.01);
-  await page.waitForFunction(() => /bark=sim/.test(location.hash), null, { timeout: TIMEOUT });
+  await page.waitForFunction(() => /(^|[#&])bark=1(&|$)/.test(location.hash), null, { timeout: TIMEOUT });
   const link = await page.evaluate(() => location.hash);
-  check('the link carries bark=sim', /bark=sim/.test(link), link);
+  check('the link carries the row bark=1', /(^|[#&])bark=1(&|$)/.test(link), link);
+  check('the Bark rows sit beside the view\'s settings, not among the model\'s', await page.$eval('#param-bark_model', (e) => Boolean(e.closest('#bark-fields'))));
 
-  // The link opened afresh: the simulated bark on the first tree, no notice about the key.
+  // The 4-layer model: bark_model 4 re-dresses the tree grown (a restage), the 4-layer run's maps.
+  await pickBark(page, 'sim', 4);
+  const h4 = await root(page);
+  const stats4 = h4.barkStats ? JSON.parse(h4.barkStats) : {};
+  check(`bark_model 4: the 4-layer model (${stats4.model}, ${stats4.cycles} cycles at dR ${stats4.dR}, the 2-layer's ${stats.dR} over 2)`,
+    stats4.model === '4layer' && stats.model === '2layer' && stats4.cycles === 3 && Math.abs(stats4.dR - stats.dR / 2) <= 1e-12 &&
+    String(stats4.hash).includes('model=4layer'), h4.barkStats);
+  check('bark_model 4: other texture bytes than the 2-layer run\'s', h4.barkDigest.startsWith('bark-sim-') && h4.barkDigest !== h1.barkDigest, `${h4.barkDigest} vs ${h1.barkDigest}`);
+  check('bark_model 4: a restage, not a regrowth', h4.growRequests === h0.growRequests, `grows ${h0.growRequests} -> ${h4.growRequests}`);
+  check('bark_model 4: no refusal beside the choice', (h4.barkError || '') === '', h4.barkError);
+  await snapshotCanvas(page, 'sim4');
+  await saveCanvasPng(page, 'bark-sim-4layer.png');
+  const changed4 = await snapshotDifference(page, 'sim', 'sim4', 24);
+  check(`bark_model 4: the picture changed from the 2-layer bark's (${(100 * changed4).toFixed(1)} % of pixels)`, changed4 > 0.01);
+  await page.waitForFunction(() => /bark_model=4/.test(location.hash), null, { timeout: TIMEOUT });
+  check('the link carries bark_model=4', /bark_model=4/.test(await page.evaluate(() => location.hash)));
+
+  // bark_model 3 is no model: the core's line beside the Bark choice, the procedural bark drawn.
+  await pickBark(page, 'sim', 3);
+  const h5 = await root(page);
+  check('bark_model 3: the core\'s line beside the choice', /^bark_model/.test(await page.textContent('#bark-info')) && /must be 2/.test(h5.barkError || ''),
+    `${await page.textContent('#bark-info')} | ${h5.barkError}`);
+
+  // An older link's bark=sim (the page field before the rows) opened afresh: the simulated bark on
+  // the first tree, no notice about the key, the row ticked.
   const opened = await context.newPage();
   watchPage(opened, problems);
-  await opened.goto(`${server.url}${link}`);
+  await opened.goto(`${server.url}#${TREE}&bark=sim&cam=0.6,0.15,0.9,0,0.45,0`);
   await waitReady(opened, 0, 200);
   const h2 = await root(opened);
-  check('the link opens with the simulated bark', h2.barkDigest === h1.barkDigest, `${h2.barkDigest} vs ${h1.barkDigest}`);
-  check('the link\'s bark=sim gives no hash notice', (await opened.textContent('#notice')).indexOf('bark') < 0);
-  check('the link sets the choice', (await opened.inputValue('#bark')) === 'sim');
+  check('an older link\'s bark=sim opens with the simulated bark', h2.barkDigest === h1.barkDigest, `${h2.barkDigest} vs ${h1.barkDigest}`);
+  check('the older link\'s bark=sim gives no hash notice', (await opened.textContent('#notice')).indexOf('bark') < 0);
+  check('the link ticks the row', await opened.isChecked('#param-bark'));
   await opened.close();
 
   await pickBark(page, 'procedural');
   const h3 = await root(page);
-  check('Procedural again: the procedural texture returns', h3.barkDigest === h0.barkDigest && h3.barkStats === '', h3.barkDigest);
-  check('Procedural again: the link drops bark=sim', !/bark=sim/.test(await page.evaluate(() => location.hash)));
+  check('Procedural again (bark_model still 3): the procedural texture returns, the line gone', h3.barkDigest === h0.barkDigest && h3.barkStats === '' &&
+    (await page.textContent('#bark-info')) === '' && (h3.barkError || '') === '', `${h3.barkDigest} ${h3.barkError}`);
+  check('Procedural again: the link drops bark=1', !/(^|[#&])bark=1(&|$)/.test(await page.evaluate(() => location.hash)));
   check('no console errors or warnings', problems.length === 0, problems.join(' | '));
 });

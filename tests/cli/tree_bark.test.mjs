@@ -2,7 +2,9 @@
 // gives the same .glb bytes and --stats natively and in WASM (a small tree, 256 px maps), the .glb
 // is validator-clean (Khronos gltf-validator, 0 errors) with materials bark and bark_young carrying
 // base colour, normal and occlusion textures (sampler REPEAT) that are not the procedural ones; the
-// default (no --bark, or --bark procedural) writes the procedural .glb byte for byte; bad values of
+// default (no --bark, or --bark procedural) writes the procedural .glb byte for byte; the tree
+// table's rows bark and bark_model (--set, a page link) are the same setting as --bark sim and
+// --bark-model (the same bytes); bad values of
 // --bark and its flags are one line naming the flag, exit 2, nothing written. Issue 32 item 2: both
 // .glb carry TANGENT (VEC4 floats: unit xyz perpendicular to NORMAL, w = +-1) on exactly the
 // primitives whose material has a normal texture, and the validator has no missing-tangent warning;
@@ -130,6 +132,14 @@ check(`--bark-model 4layer --stats: model ${bark4.model}, ${bark4.cycles} cycles
   bark4.model === '4layer' && bark.model === '2layer' && bark4.cycles === 3 &&
   Math.abs(bark4.dR - bark.dR / 2) <= 1e-12 && bark4.young_dR === bark.young_dR && bark4.hash !== bark.hash &&
   String(bark4.hash).includes('model=4layer'));
+// The tree table's rows are the same setting (the page's panel and link: bark=1&bark_model=4):
+// --set bark=1 --set bark_model=4 writes the bytes of --bark sim --bark-model 4layer, in both builds.
+for (const cmd of [native, wasm]) {
+  const out = join(work, `rows4-${buildName(cmd)}.glb`);
+  const r = spawn(cmd, [...tree, '--set', 'bark=1', '--set', 'bark_model=4', '--bark-height', '0.02', '--bark-map-size', '256', '--out', out]);
+  check(`--set bark=1 --set bark_model=4 ${buildName(cmd)}: the bytes of --bark sim --bark-model 4layer`,
+    r.status === 0 && four.native.bytes.length > 0 && readFileSync(out).equals(four.native.bytes), r.stderr.trim());
+}
 const report4 = await validator.validateBytes(new Uint8Array(four.native.bytes), { maxIssues: 50 });
 check('--bark-model 4layer .glb: gltf-validator 0 errors', report4.issues.numErrors === 0,
   JSON.stringify(report4.issues.messages.filter((m) => m.severity === 0).slice(0, 3)));
@@ -193,6 +203,8 @@ for (const [args, flag, text] of [
   [['--bark-model', '4layer'], '--bark-model', 'only applies with --bark sim'],
   [['--bark', 'sim', '--bark-height', '0.02', '--bark-model', '4layer', '--max-seconds', '1'], '--bark', 'use --bark-model 2layer'],
   [['--bark', 'sim', '--lod'], '--bark', ''],
+  [['--set', 'bark=1', '--set', 'bark_model=3', '--bark-height', '0.02'], 'bark_model', 'must be 2 (the 2-layer model) or 4'],
+  [['--set', 'bark=2'], '--set', ''],
   [['--bark', 'sim', '--bark-height', '0.02', '--bark-map-size', '4096', '--max-memory', '512M'], '--bark', 'the bark'],
 ]) {
   for (const cmd of [native, wasm]) {

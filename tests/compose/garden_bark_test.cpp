@@ -13,6 +13,7 @@
 #include "bark/bark_params.h"
 #include "compose/garden_run.h"
 #include "compose/garden_state.h"
+#include "compose/garden_view.h"
 #include "render/tree_run.h"
 #include "tree/tree_state.h"
 
@@ -148,6 +149,22 @@ TEST(GardenBark, BarkOneChangesOnlyTheBarkAndWearsItsMaps) {
       ++dressed;
   }
   EXPECT_EQ(dressed, 1);
+  // The page's view of it (compose/garden_view): the group's frame, its two maps decoded from the
+  // PNGs the .glb carries, the page mesh's bark UVs wrapping its tile; with bark 0, none of them.
+  EXPECT_EQ(GardenGroupBark(*sim, 0), &f);
+  EXPECT_EQ(GardenGroupBark(*plain, 0), nullptr);
+  const Result<image::Rgba8Image> colour = GardenGroupBarkImage(*sim, 0, false);
+  const Result<image::Rgba8Image> normal = GardenGroupBarkImage(*sim, 0, true);
+  ASSERT_TRUE(colour.ok() && normal.ok());
+  EXPECT_EQ(colour->width, sim->barks().map_size);
+  EXPECT_EQ(colour->pixels.size(), static_cast<std::size_t>(4 * colour->width * colour->height));
+  EXPECT_NE(colour->pixels, normal->pixels);
+  EXPECT_EQ(GardenGroupBarkImage(*plain, 0, false).status().field(), "bark");
+  const TreeMesh mesh = GardenGroupMesh(*sim, 0);
+  const std::vector<float> uvs = GardenGroupBarkUvs(*sim, 0, sim->done(), mesh);
+  EXPECT_EQ(uvs.size(), mesh.bark.uvs.size());
+  EXPECT_NE(uvs, mesh.bark.uvs);
+  EXPECT_TRUE(GardenGroupBarkUvs(*plain, 0, plain->done(), GardenGroupMesh(*plain, 0)).empty());
 }
 
 TEST(GardenBark, RefusedUpFrontNamingBarkAndBadMapSizeNamed) {

@@ -21,8 +21,8 @@ TEST(TreeParamStages, FollowTheGroups) {
   EXPECT_EQ(table.name(), "tree");
   for (const ParamSpec& s : table) {
     const std::string group = s.group;
-    const Stage expected = group == "sway" || group == "wind" ? Stage::kSway
-                           : group == "render"                ? Stage::kView
+    const Stage expected = group == "sway" || group == "wind"     ? Stage::kSway
+                           : group == "render" || group == "bark" ? Stage::kView
                            : s.key == std::string("leaf_shape") ||
                                    s.key == std::string("leaf_card") ||
                                    s.key == std::string("leaf_spray")
@@ -69,7 +69,8 @@ TEST(TreeParamStages, RowsAfterGrowLeaveTheTreeAndItsMeshUnchanged) {
     }
     ++checked;
   }
-  EXPECT_EQ(checked, 33);  // 13 sway, 9 wind, 8 render rows, leaf_shape, leaf_card, leaf_spray
+  // 13 sway, 9 wind, 8 render rows, leaf_shape, leaf_card, leaf_spray, bark, bark_model
+  EXPECT_EQ(checked, 35);
 }
 
 TEST(TreeParamStages, LeafCardScalesTheDrawnLeavesAboutTheirBases) {

@@ -26,8 +26,10 @@
 //             the indices absolute), part (Float32 per vertex: 0 bark, 1 leaves, 2 flowers),
 //             ranges (Uint32, 4 per group: first index, index count, first instance, instance
 //             count), instances (Float32, 4 per planted tree in group order: x, y, z of its
-//             foot, its turn about y in radians, counter-clockwise seen from above)
-//   "year"    the trees' six buffers above for the year of the last showYear(y), and moss_S of
+//             foot, its turn about y in radians, counter-clockwise seen from above), uvs
+//             (Float32, u, v per vertex, only when some group wears simulated bark (bark 1): its
+//             bark's wrapping the tile of barkTexture(group, ...), 0 elsewhere; else empty)
+//   "year"    the trees' seven buffers above for the year of the last showYear(y), and moss_S of
 //             that year (the garden's year scrubber: nothing regrows)
 //   "skin"    after blowStart: joints (Uint32 per vertex of "trees": its node point in its
 //             group's sway model, compose/garden_wind Skin) and weights (Float32, eq. 3.15), and
@@ -512,6 +514,27 @@ class GardenLab {
     return "";
   }
 
+  // {width, height, pixels: Uint8Array RGBA (a copy; row 0 = v 0), digest} of distinct tree
+  // `group`'s simulated bark map, kind "bark" (base colour) or "barkNormal" (the OpenGL normal
+  // map): the PNGs the garden .glb's tree wears, decoded (compose/garden_view
+  // GardenGroupBarkImage); null when that tree wears the procedural bark, or another kind.
+  emscripten::val barkTexture(int group, const std::string& kind) const {
+    const compose::BarkFrame* frame = run_ ? compose::GardenGroupBark(*run_, group) : nullptr;
+    if (frame == nullptr || (kind != "bark" && kind != "barkNormal"))
+      return emscripten::val::null();
+    const Result<image::Rgba8Image> decoded =
+        compose::GardenGroupBarkImage(*run_, group, kind == "barkNormal");
+    if (!decoded.ok()) return emscripten::val::null();
+    const image::Rgba8Image& image = *decoded;
+    emscripten::val view(emscripten::typed_memory_view(image.pixels.size(), image.pixels.data()));
+    emscripten::val out = emscripten::val::object();
+    out.set("width", image.width);
+    out.set("height", image.height);
+    out.set("pixels", emscripten::val::global("Uint8Array").new_(view));
+    out.set("digest", "bark-sim-" + kind + "-" + frame->hash);
+    return out;
+  }
+
   emscripten::val buffers(const std::string& group) const {
     NamedBuffers out;
     if (group == "ground") {
@@ -533,7 +556,8 @@ class GardenLab {
           .Add("indices", t.indices)
           .Add("part", t.part)
           .Add("ranges", t.ranges)
-          .Add("instances", t.instances);
+          .Add("instances", t.instances)
+          .Add("uvs", t.uvs);
       if (group == "year") out.Add("moss_S", year_moss_S_);
     } else if (group == "skin") {
       out.Add("joints", skin_joints_).Add("weights", skin_weights_).Add("blocks", skin_blocks_);
@@ -613,20 +637,33 @@ class GardenLab {
 
   // Each distinct tree's page mesh as it stood after garden year `year` (the last grown: the run's
   // own trees), with every placement.
+  // uvs: u, v per vertex when any group wears simulated bark (its bark wrapping the tile, 0 on
+  // the leaves, flowers and procedural bark), else empty.
   struct TreeBuffers {
-    std::vector<float> positions, normals, part, instances;
+    std::vector<float> positions, normals, part, instances, uvs;
     std::vector<uint32_t> indices, ranges;
   };
   void FillTrees(int year, TreeBuffers* out) {
     *out = TreeBuffers{};
     const std::vector<compose::PlacedTree>& placed = run_->planting().trees;
+    bool simulated = false;  // any group wears simulated bark: the buffers carry uvs
+    for (std::size_t k = 0; k < run_->groups().size(); ++k)
+      simulated = simulated || compose::GardenGroupBark(*run_, static_cast<int>(k)) != nullptr;
     for (std::size_t k = 0; k < run_->groups().size(); ++k) {
       const compose::GardenTreeGroup& grp = run_->groups()[k];
       const TreeMesh mesh = compose::GardenGroupMeshAt(*run_, static_cast<int>(k), year);
       const auto first_index = static_cast<uint32_t>(out->indices.size());
+      if (simulated && out->uvs.empty()) out->uvs.assign(out->positions.size() / 3 * 2, 0.f);
       AppendPart(mesh.bark, 0.f, &out->positions, &out->normals, &out->part, &out->indices);
+      if (simulated) {
+        std::vector<float> uvs =
+            compose::GardenGroupBarkUvs(*run_, static_cast<int>(k), year, mesh);
+        uvs.resize(mesh.bark.vertex_count() * 2, 0.f);
+        out->uvs.insert(out->uvs.end(), uvs.begin(), uvs.end());
+      }
       AppendPart(mesh.leaves, 1.f, &out->positions, &out->normals, &out->part, &out->indices);
       AppendPart(mesh.flowers, 2.f, &out->positions, &out->normals, &out->part, &out->indices);
+      if (simulated) out->uvs.resize(out->positions.size() / 3 * 2, 0.f);
       out->ranges.push_back(first_index);
       out->ranges.push_back(static_cast<uint32_t>(out->indices.size()) - first_index);
       out->ranges.push_back(static_cast<uint32_t>(out->instances.size() / 4));
@@ -697,6 +734,7 @@ EMSCRIPTEN_BINDINGS(niwa_garden) {
       .function("stateJson", &niwa::GardenLab::stateJson)
       .function("boundsJson", &niwa::GardenLab::boundsJson)
       .function("buffers", &niwa::GardenLab::buffers)
+      .function("barkTexture", &niwa::GardenLab::barkTexture)
       .function("build", &niwa::GardenLab::build)
       .function("grows", &niwa::GardenLab::grows)
       .function("runGrows", &niwa::GardenLab::runGrows)

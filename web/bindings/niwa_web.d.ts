@@ -79,9 +79,8 @@ export class TreeSession {
   renderMode(): number;
   hybridView(ex: number, ey: number, ez: number, tx: number, ty: number, tz: number, fovY: number, width: number, height: number): string;
   hybridViewSlot(slot: number, ex: number, ey: number, ez: number, tx: number, ty: number, tz: number, fovY: number, width: number, height: number): string;
-  /** The bark study on the grown tree (core/compose/bark_on_tree): "" or an ErrorRecord as text. */
+  /** The bark the state's rows bark, bark_model ask for on the grown tree (core/compose/bark_on_tree's GrowTreeBark): "" or an ErrorRecord as text. */
   dressBark(): string;
-  undressBark(): void;
   barkDressed(): boolean;
   /** {width, height, pixels, digest} of the dressed bark's "bark" | "barkNormal" map, or null. */
   barkTexture(kind: string): { width: number; height: number; pixels: Uint8Array; digest: string } | null;
@@ -194,6 +193,8 @@ export class GardenLab {
   /** {years, recorded: [years], stopped_by, record_bytes, bytes: [per year], mosses: [per year]}. */
   yearsJson(): string;
   /** Fills buffers("year") with the recorded year's trees and moss light; errors name "year". */
+  /** Distinct tree `group`'s simulated bark map ("bark" base colour or "barkNormal"), the garden .glb's; null when it wears the procedural bark. */
+  barkTexture(group: number, kind: string): { width: number; height: number; pixels: Uint8Array; digest: string } | null;
   showYear(year: number): ErrorText;
   /** Blow: the wind rows ({"wind_speed": 5, ...}; "{}": the garden's defaults, the front entering its upwind edge at t = 0) over the last grown year's trees, one sway simulator a tree; fills buffers("skin") and buffers("wind") at rest; errors name the row, "wind" or the page budget's limit. */
   blowStart(windJson: string): ErrorText;

@@ -42,10 +42,11 @@
 //   swayDuration(), swayWindSpeed(), swayInstances(). buildHybrid() -> "" or error, atlasSize(),
 //   renderMode(), hybridView(ex,ey,ez, tx,ty,tz, fovY, width, height) -> table 4.1 JSON,
 //   hybridViewSlot(slot, ...) with the hysteresis of that slot (0..255). buildGlb() -> "" or error;
-//   paramsJson(). dressBark() -> "" or the error record: the bark study on the tree as grown
-//   (core/compose/bark_on_tree, 512 px maps, within the page budget): buffers("bark").uvs then wrap
-//   its maps, barkTexture("bark" | "barkNormal") gives them ({width, height, pixels, digest}, null
-//   when not dressed), barkJson() its summary; undressBark() goes back to the procedural bark.
+//   paramsJson(). dressBark() -> "" or the error record: the bark the state's rows `bark` and
+//   `bark_model` ask for on the tree as grown (core/compose/bark_on_tree's GrowTreeBark, the CLI's
+//   run; 512 px maps, within the page budget; bark 0 the procedural bark again):
+//   buffers("bark").uvs then wrap its maps, barkTexture("bark" | "barkNormal") gives them ({width,
+//   height, pixels, digest}, null when not dressed), barkJson() its summary.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
@@ -238,26 +239,38 @@ class TreeSession {
     return true;
   }
 
-  // The bark study on the tree as grown (see JS BINDINGS DESIGN): the first of kPageBarkHeights
-  // the trunk allows, the tree's seed, camphor, 512 px maps, refused over the page budget (field
-  // "bark"). "" or the error record; the session keeps its procedural bark on error.
+  // The bark the state's rows ask for (the tree table's `bark`, `bark_model`; see JS BINDINGS
+  // DESIGN): bark 0 takes any simulated bark off; bark 1 runs core/compose/bark_on_tree's
+  // GrowTreeBark (the CLI's run) on the tree as grown at the first of kPageBarkHeights the trunk
+  // allows, the tree's seed, camphor, 512 px maps, the tree's held estimate plus the bark's
+  // checked against the page budget before any bark work (refused naming "bark"), unless the
+  // bark on it is already that model's for this year. "" or the error record; on error the
+  // session wears the procedural bark.
   std::string dressBark() {
     if (!run_) return ErrorRecordJson(NoTree());
+    const ParamSet& rows = run_->state().params;
+    if (!compose::TreeBarkSimulated(rows)) {
+      undressBark();
+      return "";
+    }
+    const Result<std::string> model = compose::TreeBarkModel(rows);
+    if (!model.ok()) {
+      undressBark();
+      return ErrorRecordJson(model.status());
+    }
+    if (bark_ && bark_->plan.state.model == *model && bark_year_ == run_->done()) return "";
+    undressBark();
     compose::BarkOnTreeOptions options;
     options.map_size = kPageBarkMapSize;
     options.seed = run_->state().seed;
-    Result<compose::BarkOnTreePlan> plan = Status::Error("bark", "no trunk recorded");
-    for (const compose::TrunkHistory& trunk : trunks_) {
-      plan = compose::PlanBarkOnTree(trunk, options);
-      if (plan.ok()) {
-        bark_height_ = trunk.height_m;
-        break;
-      }
-    }
-    if (!plan.ok()) return ErrorRecordJson(plan.status());
-    Result<compose::BarkOnTree> bark = compose::GrowBarkOnTree(*plan, PageBudget());
+    options.model = *model;
+    Result<compose::BarkOnTree> bark = compose::GrowTreeBark(
+        trunks_, options, run_->Held(), PageBudget(),
+        *model == "4layer" ? "set bark_model 2 (the 2-layer model), or grow fewer years"
+                           : "grow fewer years");
     if (!bark.ok()) return ErrorRecordJson(bark.status());
     bark_ = std::move(bark).value();
+    bark_year_ = run_->done();
     return "";
   }
   void undressBark() {
@@ -281,7 +294,7 @@ class TreeSession {
   }
   // compose::BarkOnTreeJson of the dressed bark, "" when not dressed.
   std::string barkJson() const {
-    return bark_ ? compose::BarkOnTreeJson(*bark_, bark_height_) : "";
+    return bark_ ? compose::BarkOnTreeJson(*bark_, bark_->height_m) : "";
   }
 
   // Builds the triangle meshes of the tree as grown so far; call before the buffer views. "" or
@@ -542,9 +555,9 @@ class TreeSession {
 
   std::vector<compose::TrunkHistory> trunks_;  // the trunk at kPageBarkHeights, year by year
   std::optional<compose::BarkOnTree> bark_;    // dressBark's bark
-  double bark_height_ = compose::kDefaultBarkHeight;
-  mutable std::vector<float> bark_uvs_;  // the mesh's bark UVs wrapping bark_'s tile
-  TreeState state_;                      // as given (the run holds its own copy)
+  int bark_year_ = 0;                          // the tree's year bark_ was grown on
+  mutable std::vector<float> bark_uvs_;        // the mesh's bark UVs wrapping bark_'s tile
+  TreeState state_;                            // as given (the run holds its own copy)
   Status error_;                  // why the session has no run (a bad state or a refused start)
   std::unique_ptr<TreeRun> run_;  // core/render/tree_run: growth, mesh, skin, exports, counts
   std::vector<int32_t> parents_;
@@ -603,7 +616,6 @@ EMSCRIPTEN_BINDINGS(niwa_tree) {
       .function("hybridView", &niwa::TreeSession::hybridView)
       .function("hybridViewSlot", &niwa::TreeSession::hybridViewSlot)
       .function("dressBark", &niwa::TreeSession::dressBark)
-      .function("undressBark", &niwa::TreeSession::undressBark)
       .function("barkDressed", &niwa::TreeSession::barkDressed)
       .function("barkTexture", &niwa::TreeSession::barkTexture)
       .function("barkJson", &niwa::TreeSession::barkJson);

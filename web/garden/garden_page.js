@@ -116,6 +116,7 @@ let state = null;       // the resolved garden state (GardenStateJson) of the la
 let bounds = null;
 let gardenSerial = 0;
 let frameNext = true;
+let lookSerial = 0;  // window.__niwaGardenLook's calls (the frame drawn after one: data-drawn-look)
 
 // ---------------------------------------------------------------- rendering
 const camera = new OrbitCamera();
@@ -126,7 +127,7 @@ const loop = new ProgressiveLoop({
   renderer: () => (renderer ? frame : null),
   camera,
   onDrawn: (drawn) => {
-    setHooks({ drawnSerial: gardenSerial, drawnTrees: drawn.trees ?? 0, drawnTriangles: drawn.triangles, drawnLines: drawn.lines ?? 0, drawCalls: drawn.drawCalls, shadow: drawn.shadow ?? '', drawnOverlay: renderer?.overlay ?? 'none' });
+    setHooks({ drawnSerial: gardenSerial, drawnTrees: drawn.trees ?? 0, drawnTriangles: drawn.triangles, drawnLines: drawn.lines ?? 0, drawCalls: drawn.drawCalls, shadow: drawn.shadow ?? '', drawnOverlay: renderer?.overlay ?? 'none', drawnLook: lookSerial });
     yearDrawn();
     gardenWind.drawn();
     hybrid?.drawn();
@@ -592,7 +593,7 @@ worker.on('garden', (msg) => {
   for (const k of msg.buffers.objects?.kind || []) ivyVertices += k > 2.5 ? 1 : 0;
   gardenWind.stop();  // (the worker stopped it at the update)
   if (renderer) {
-    renderer.setGarden(msg.buffers, msg.bounds);
+    renderer.setGarden(msg.buffers, msg.bounds, msg.barks);
     showOverlay();
     if (frameNext) {
       frameGarden();
@@ -619,6 +620,9 @@ worker.on('garden', (msg) => {
     status: 'ready', error: '', gardenSerial, trees: s.trees.count, byHand: s.planting.by_hand, distinct: s.trees.distinct, ivyVertices,
     stats: JSON.stringify(s), statsText: msg.statsText, hash: msg.hash, growMs: msg.growMs.toFixed(1), stateJson: JSON.stringify(msg.state),
     growPhases: JSON.stringify(phases),
+    // the distinct trees wearing simulated bark (garden bark 1) and their maps' digests
+    barkTrees: renderer ? renderer.barkTrees() : 0,
+    barkDigests: (msg.barks || []).map((b) => (b ? b.bark.digest : '')).join(','),
   });
   requestFrame();
 });
@@ -801,6 +805,24 @@ window.__niwaGardenScreenOf = (x, z) => {
   const m = camera.viewProjection(w / h);
   const c = [0, 1, 2, 3].map((r) => m[r] * x + m[4 + r] * y + m[8 + r] * z + m[12 + r]);
   return [((c[0] / c[3] + 1) / 2) * w, ((1 - c[1] / c[3]) / 2) * h];
+};
+
+// For a test: the last garden's bounds (boundsJson: every planted tree's species, pos and group).
+window.__niwaGardenBounds = () => bounds;
+
+// For a test: the camera aimed at ground point (x, z), `up` metres above it, from `distance`
+// metres (a trunk close-up), or put back to `view` (what an earlier call returned), and the
+// simulated bark shown or left off (an A/B of the same frame). Returns {serial, view}: the frame
+// drawn after it sets data-drawn-look to serial; view, the camera as it was.
+window.__niwaGardenLook = ({ x = 0, z = 0, up = 0.8, distance = 3, bark = true, view = null } = {}) => {
+  if (!renderer) return null;
+  const before = { target: [...camera.target], distance: camera.distance, yaw: camera.yaw, pitch: camera.pitch };
+  if (view) Object.assign(camera, { target: [...view.target], distance: view.distance, yaw: view.yaw, pitch: view.pitch });
+  else Object.assign(camera, { target: [x, renderer.heightAt(x, z) + up, z], distance });
+  renderer.barkShown = bark;
+  lookSerial += 1;
+  requestFrame();
+  return { serial: lookSerial, view: before };
 };
 
 // Blow / Still: the last year's trees swayed by a gust front crossing the garden.

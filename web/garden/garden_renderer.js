@@ -10,6 +10,10 @@
 // setSkin adds the trees' sway skin (joints, weights per vertex; each copy's first pose block) to
 // their VAO, setPoses uploads every copy's poses into one pose texture and the shaders skin each
 // copy with its own block (shaders/common/skin.glsl); still() draws the grown shape again.
+// Simulated bark (the garden's bark 1): setGarden's `barks` (per distinct tree its bark maps, the
+// garden .glb's, or null) are uploaded once and bound for that tree's draws, its bark drawn with
+// them through the trees' uvs (garden.frag); the other trees keep the procedural brown. A year
+// picked keeps them (the bark is run once, on the last year's trunk).
 // Hybrid trees (garden_hybrid.js): setFull(mask) draws only the copies the mask keeps in full
 // (the others are the grove renderer's cards and lines, another layer); setFull(null) all of them.
 // A StudyLayer (web/gl/frame.js), a layer of a Frame of fit: false (metres).
@@ -17,11 +21,12 @@
 import { copyOf, floatAttribute, staticBuffer, uintAttribute, viewOf } from '../gl/buffers.js';
 import { StudyLayer } from '../gl/frame.js';
 import { loadPrograms } from '../gl/program.js';
-import { restPoses, uploadPoses } from '../gl/textures.js';
+import { imageTexture, restPoses, uploadPoses } from '../gl/textures.js';
 
 const SHADERS = new URL('../../shaders/garden/', import.meta.url).href;
 const INSTANCE_BYTES = 16;  // x, y, z, turn (radians)
 const POSE_UNIT = 1;       // the texture unit of the sway poses (the shadow map's is 7)
+const BARK_UNIT = 2;       // the simulated bark's base colour; its normal map on BARK_UNIT + 1
 // The ground's overlays, in garden.frag's uOverlay order.
 export const OVERLAYS = ['none', 'moss', 'slope', 'altitude'];
 
@@ -38,6 +43,8 @@ export class GardenRenderer extends StudyLayer {
     this.year = null;       // the garden year shown (null: the last grown; ivy by its birth year)
     this.swayOn = false;    // the trees skinned to the poses (Blow)
     this.poseSerial = 0;    // poses uploaded since the wind started (the shadow map's key)
+    this.barks = [];        // per distinct tree: {colour, normal, digest} textures, or null (procedural)
+    this.barkShown = true;  // false: every tree in the procedural brown (a test's A/B of one frame)
   }
 
   async init() {
@@ -47,6 +54,8 @@ export class GardenRenderer extends StudyLayer {
     // Every program reads a pose texture (at rest until Blow), so one is always bound.
     this.poseTexture = this.gl.createTexture();
     this.poseRows = uploadPoses(this.gl, this.poseTexture, restPoses(1), 1, 0);
+    // What the bark units hold for trees without simulated bark (no unit read is left unbound).
+    this.blankTexture = imageTexture(this.gl, { width: 1, height: 1, pixels: new Uint8Array([128, 128, 255, 255]) }, this.gl.REPEAT);
   }
 
   ready() {
@@ -80,6 +89,10 @@ export class GardenRenderer extends StudyLayer {
       buffers.push(staticBuffer(gl, birth));
       floatAttribute(gl, 4, buffers[buffers.length - 1], 1);
     }
+    if (m.uvs && m.uvs.byteLength > 0) {  // the trees' bark uvs (simulated bark)
+      buffers.push(staticBuffer(gl, m.uvs));
+      floatAttribute(gl, 8, buffers[buffers.length - 1], 2);
+    }
     buffers.push(staticBuffer(gl, m.indices, gl.ELEMENT_ARRAY_BUFFER));
     gl.bindVertexArray(null);
     return { vao, buffers, tintBuffer, count: m.indices.byteLength / 4 };
@@ -87,8 +100,9 @@ export class GardenRenderer extends StudyLayer {
 
   // buffers: the worker's {ground, objects, trees} (web/bindings/garden_bindings.cpp; used at once:
   // the page may recycle them after this returns); bounds: its boundsJson (size, n, cell, relief,
-  // min, max).
-  setGarden(buffers, bounds) {
+  // min, max); barks: the worker's per distinct tree simulated bark maps ({bark, barkNormal}:
+  // {width, height, pixels, digest}) or null; [] with bark 0.
+  setGarden(buffers, bounds, barks = []) {
     const gl = this.gl;
     this.progress.abort();
     this.clear();
@@ -98,6 +112,7 @@ export class GardenRenderer extends StudyLayer {
     this.objects = buffers.objects.indices.byteLength > 0 ? this.#mesh(buffers.objects, buffers.objects.kind, buffers.objects.birth) : null;
     this.year = null;
     this.#setTrees(buffers.trees);
+    this.#setBarks(barks);
     this.grid = { n: bounds.n, size: bounds.size, cell: bounds.cell, relief: bounds.relief, heights: copyOf(Float32Array, buffers.ground.heights) };
     this.boundsView = { min: [...bounds.min], max: [...bounds.max] };
     this.serial += 1;
@@ -142,6 +157,39 @@ export class GardenRenderer extends StudyLayer {
       }
       this.trees = trees;
     }
+  }
+
+  // Each distinct tree's bark textures (the ones before were deleted by clear()); trees sharing
+  // one bark run (the same digests) share its textures.
+  #setBarks(barks) {
+    const gl = this.gl;
+    const made = new Map();
+    this.barks = (barks || []).map((b) => {
+      if (!b || !(b.bark?.width > 0 && b.bark.height > 0 && b.barkNormal?.width > 0 && b.barkNormal.height > 0)) return null;
+      const digest = `${b.bark.digest}|${b.barkNormal.digest}`;
+      if (!made.has(digest)) made.set(digest, { digest, colour: imageTexture(gl, b.bark, gl.REPEAT), normal: imageTexture(gl, b.barkNormal, gl.REPEAT) });
+      return made.get(digest);
+    });
+  }
+
+  // How many distinct trees wear simulated bark (their textures uploaded).
+  barkTrees() {
+    return this.barks.filter(Boolean).length;
+  }
+
+  // Group k's bark textures on their units, or none (uBarkSim 0), for program `p`.
+  #bindBark(p, k) {
+    const gl = this.gl;
+    if (!p.uniforms.uBarkSim) return;
+    const bark = this.barkShown ? this.barks[k] : null;
+    gl.uniform1i(p.uniforms.uBarkSim, bark ? 1 : 0);
+    gl.activeTexture(gl.TEXTURE0 + BARK_UNIT);
+    gl.bindTexture(gl.TEXTURE_2D, bark ? bark.colour : this.blankTexture);
+    gl.activeTexture(gl.TEXTURE0 + BARK_UNIT + 1);
+    gl.bindTexture(gl.TEXTURE_2D, bark ? bark.normal : this.blankTexture);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.uniform1i(p.uniforms.uBarkMap, BARK_UNIT);
+    gl.uniform1i(p.uniforms.uBarkNormal, BARK_UNIT + 1);
   }
 
   // The copies drawn in full: mask (Uint8Array, one per copy in the instances' order, 1 = full) or
@@ -205,6 +253,11 @@ export class GardenRenderer extends StudyLayer {
 
   clear() {
     this.progress.abort();
+    for (const b of new Set(this.barks.filter(Boolean))) {
+      this.gl.deleteTexture(b.colour);
+      this.gl.deleteTexture(b.normal);
+    }
+    this.barks = [];
     this.#drop(this.ground);
     this.#drop(this.objects);
     this.#drop(this.trees);
@@ -305,6 +358,7 @@ export class GardenRenderer extends StudyLayer {
     gl.vertexAttribI4ui(5, 0, 0, 0, 0);
     gl.vertexAttrib1f(6, 0);
     gl.vertexAttrib1f(7, 0);
+    gl.vertexAttrib2f(8, 0, 0);  // no bark uvs (a VAO without them)
   }
 
   // A step of an indexed mesh (the ground, the objects) with the program `p` set up by `uniforms`.
@@ -316,6 +370,7 @@ export class GardenRenderer extends StudyLayer {
         gl.bindVertexArray(part.vao);
         uniforms();
         this.#bindSway(p, false);
+        this.#bindBark(p, -1);
         gl.vertexAttrib4f(3, 0, 0, 0, 0);  // not an array in these VAOs: the generic value (no turn)
         gl.vertexAttrib1f(4, 0);  // born in year 0 (the objects' VAO has its ivy's birth years)
       },
@@ -329,13 +384,14 @@ export class GardenRenderer extends StudyLayer {
     const gl = this.gl;
     if (!this.trees) return [];
     const full = every ? null : this.trees.full;
-    return this.trees.groups.map((g, k) => ({ g, copies: full ? full.ranges[k] : g }))
-      .filter(({ g, copies }) => g.count > 0 && copies.instances > 0).map(({ g, copies }) => ({
+    return this.trees.groups.map((g, k) => ({ g, k, copies: full ? full.ranges[k] : g }))
+      .filter(({ g, copies }) => g.count > 0 && copies.instances > 0).map(({ g, k, copies }) => ({
         primitives: (g.count / 3) * copies.instances,
         setup: () => {
           gl.bindVertexArray(this.trees.vao);
           uniforms();
           this.#bindSway(p, !full && this.swayOn && !!this.trees.blockBuffer);
+          this.#bindBark(p, k);
           gl.vertexAttrib1f(4, 0);
         },
         draw: (first, n) => this.#drawGroup(g, first, n, copies, full),
@@ -409,6 +465,7 @@ export class GardenRenderer extends StudyLayer {
     this.clear();
     for (const p of Object.values(this.programs || {})) this.gl.deleteProgram(p.program);
     if (this.poseTexture) this.gl.deleteTexture(this.poseTexture);
+    if (this.blankTexture) this.gl.deleteTexture(this.blankTexture);
     this.programs = null;
   }
 }

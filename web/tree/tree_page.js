@@ -37,7 +37,7 @@ const ui = {
   prunes: $('prunes'), copyLink: $('copy-link'), resetView: $('reset-view'), embed: $('embed'),
   downloadGlb: $('download-glb'), downloadJson: $('download-json'), downloadPng: $('download-png'),
   shareStatus: $('share-status'), wind: $('wind'), windInfo: $('wind-info'), renderMode: $('render-mode'), shadows: $('shadows'),
-  bark: $('bark'), barkInfo: $('bark-info'),
+  barkFields: $('bark-fields'), barkInfo: $('bark-info'),
   renderTable: $('render-table'), renderCol: $('render-col'), timeFrames: $('time-frames'), cancel: $('cancel'),
 };
 mountStudyNav($('studies'), 'tree');
@@ -105,9 +105,8 @@ const controller = new StudyController({
   },
   // The hash carries the camera after the state; each history entry keeps the year shown.
   // and the page's fields off their first value (the worker takes them out before the core
-  // decodes): the Bark choice when simulated (bark=sim), Sun shadows when off (shadows=off).
-  viewHash: () => `${renderer ? `&cam=${camera.toHash()}` : ''}${ui.bark.value === 'sim' ? '&bark=sim' : ''}`
-    + `${ui.shadows.value === 'off' ? '&shadows=off' : ''}`,
+  // decodes): Sun shadows when off (shadows=off). The Bark choice is the table's rows (bark=1).
+  viewHash: () => `${renderer ? `&cam=${camera.toHash()}` : ''}${ui.shadows.value === 'off' ? '&shadows=off' : ''}`,
   historyExtra: () => showYear,
   // Back/forward (and undo/redo, which use them) restore the entry's state; a hash typed by the
   // user arrives here too and becomes a new entry.
@@ -400,7 +399,7 @@ function sendUpdate(kind = 'edit') {
   syncScrubber();
   const state = currentState();
   if (kind !== 'scrub' && treeSerial > 0) feedback.stale();
-  const fields = { state, bark: ui.bark.value };
+  const fields = { state };
   if (showYear !== null) fields.until = showYear;
   const request = controller.update(kind === 'edit' || kind === 'prune', fields,
     { done: ['tree'], stage: kind === 'edit' ? undefined : 'grow' });
@@ -464,6 +463,10 @@ worker.on('ready', (msg) => {
   presets = msg.presets;
   for (const p of presets) ui.preset.append(new Option(`${p.title} (${p.name})`, p.name));
   panel = new ParamPanel(ui.params, msg.paramTable, (spec, stage) => {
+    if (spec.group === 'bark') {  // a new Bark choice: its last refusal goes
+      ui.barkInfo.textContent = '';
+      setHooks({ barkError: '' });
+    }
     showSun();
     ui.renderMode.value = String(Number(panel.values().render_mode) === 1 ? 1 : 0);
     gettingStarted?.sync();
@@ -471,8 +474,14 @@ worker.on('ready', (msg) => {
   });
   gettingStarted = new GettingStarted($('getting-started'), msg.paramTable, ui.years, openTableRow);
   dock.add('age', $('getting-started').querySelector('[data-for-key="years"]'));
+  // The table's Bark group (bark, bark_model: view rows, re-texturing the tree grown) shown in the
+  // view's settings beside the Bark notice, not among the model's rows.
+  const barkGroup = ui.params.querySelector('[data-key="bark"]')?.closest('details');
+  if (barkGroup) {
+    barkGroup.open = true;
+    ui.barkFields.append(barkGroup);
+  }
   applyState(msg.decoded.state);
-  ui.bark.value = msg.decoded.bark === 'sim' ? 'sim' : 'procedural';
   showShadows(msg.decoded.shadows);
   notices.set('hash', msg.decoded.notices);
   if (camera.fromHash(msg.decoded.state.camera)) frameNext = false;
@@ -482,7 +491,6 @@ worker.on('ready', (msg) => {
 
 worker.on('decoded', (msg) => {
   applyState(msg.state);
-  ui.bark.value = msg.bark === 'sim' ? 'sim' : 'procedural';
   showShadows(msg.shadows);
   notices.set('hash', msg.notices);
   if (camera.fromHash(msg.state.camera)) frameNext = false;
@@ -822,15 +830,6 @@ ui.timeFrames.addEventListener('click', async () => {
     ui.timeFrames.textContent = label;
     requestFrame();
   }
-});
-
-// The Bark choice re-textures the tree grown (a restage: the worker dresses or undresses the
-// session's bark, TreeSession.dressBark); the link carries bark=sim.
-ui.bark.addEventListener('change', () => {
-  if (!panel) return;
-  ui.barkInfo.textContent = '';
-  setHooks({ barkError: '' });
-  scheduleUpdate('view');
 });
 
 // The mode select mirrors the render_mode row (a view-stage edit: the tree is not regrown).

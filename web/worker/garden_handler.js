@@ -5,7 +5,8 @@
 // (at most every 100 ms), then sends the stats (the run's StatsJson, parsed, and its text), the
 // resolved state and hash, the bounds (the ground's size and grid, each distinct tree's group and
 // every planted tree) and the buffer groups ground, objects and trees (each distinct tree's mesh
-// once with its placements), copied once out of the WASM heap into buffers the page gave back
+// once with its placements; with bark 1 its bark's uvs), `barks` (each distinct tree's simulated
+// bark maps, or null: the garden .glb's textures), copied once out of the WASM heap into buffers the page gave back
 // ('recycle') where they fit (web/worker/transfer.js TransferPool), then transferred.
 // The reply also carries `phases` (the lab's phasesJson: where the grow's time went, ms), `years` (the lab's yearsJson: the years recorded as the clock ran, their
 // bytes, why the recording stopped) and `grows` (how many grows this client's lab started).
@@ -97,13 +98,28 @@ export function createHandler(Module, ctx) {
     const counts = { reused: 0, fresh: 0, dropped: 0 };
     const buffers = {};
     for (const group of ['ground', 'objects', 'trees']) buffers[group] = returned.take(client, group, entry.lab.buffers(group), transfer, counts);
+    const stats = JSON.parse(statsText);
     post({
-      type: 'garden', id, client, stats: JSON.parse(statsText), statsText, hash: entry.lab.hash(),
+      type: 'garden', id, client, stats, statsText, hash: entry.lab.hash(), barks: barkTextures(entry.lab, stats, transfer),
       state: JSON.parse(entry.lab.stateJson()), bounds: JSON.parse(entry.lab.boundsJson()),
       years: JSON.parse(entry.lab.yearsJson()), grows: entry.lab.grows(),
       phases: JSON.parse(entry.lab.phasesJson()),
       buffers, bufferCounts: counts, growMs, wallMs: performance.now() - t0,
     }, transfer);
+  }
+
+  // Each distinct tree's simulated bark maps ({bark, barkNormal}: {width, height, pixels, digest},
+  // the garden .glb's; GardenLab.barkTexture), or null where it wears the procedural bark; the
+  // pixels transferred. Empty with bark 0 (the default garden: nothing more to send).
+  function barkTextures(lab, stats, transfer) {
+    if (!stats.bark) return [];
+    const barks = [];
+    for (let g = 0; g < Number(stats.trees?.distinct || 0); ++g) {
+      const bark = lab.barkTexture(g, 'bark'), barkNormal = lab.barkTexture(g, 'barkNormal');
+      if (bark && barkNormal) transfer.push(bark.pixels.buffer, barkNormal.pixels.buffer);
+      barks.push(bark && barkNormal ? { bark, barkNormal } : null);
+    }
+    return barks;
   }
 
   // Another year of the garden grown: its trees' meshes from the run's record (nothing grows).

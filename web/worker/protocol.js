@@ -21,15 +21,15 @@
  * @typedef {Envelope & {type: 'init', hash?: string}} InitMessage
  *   -> ReadyMessage
  * @typedef {Envelope & {type: 'ready', paramTable: ParamRow[], presets: Object[],
- *   decoded: {state: TreeStateJson, notices: string[], bark: 'procedural'|'sim', shadows: 'on'|'off'}}} ReadyMessage
+ *   decoded: {state: TreeStateJson, notices: string[], shadows: 'on'|'off'}}} ReadyMessage
  * @typedef {{key: string, symbol: string, unit: string, default: number, min: number, max: number,
  *   integer: boolean, group: string, group_title?: string, stage?: 'grow'|'mesh'|'sway'|'view',
  *   help: string}} ParamRow
  *
  * @typedef {Envelope & {type: 'decode', hash: string}} DecodeMessage
- *   -> {type: 'decoded', id, client, state: TreeStateJson, notices: string[], bark: 'procedural'|'sim',
- *   shadows: 'on'|'off'} (the link's bark= and shadows= are the page's fields, taken out before the
- *   core decodes the hash; a bad value of one is a notice)
+ *   -> {type: 'decoded', id, client, state: TreeStateJson, notices: string[], shadows: 'on'|'off'}
+ *   (the link's shadows= is the page's field, taken out before the core decodes the hash; a bad
+ *   value is a notice; an older link's bark=sim|procedural is read as the row bark=1|0)
  */
 
 /**
@@ -40,11 +40,12 @@
  * earliest stage whose rows changed and the ones after it (mesh: re-dressed; sway: re-skinned;
  * view: the hybrid scene rebuilt) and the worker answers without growing (TreeMessage grown:
  * false, with the stages re-done). When the tree would differ (or none was grown) it grows.
- * `bark` 'sim' (the page's Bark choice): the tree's bark is the bark study's maps
- * (TreeSession.dressBark; a refusal is an error with control 'bark', the tree sent procedural);
- * a change of `bark` alone restages the tree grown (dressed or undressed, not regrown).
+ * The state's rows `bark` 1 and `bark_model` 2|4 (the Bark choice): the tree's bark is the bark
+ * study's maps (TreeSession.dressBark; a refusal is an error with control 'bark', the tree sent
+ * procedural); they are view rows, so a change of them alone restages the tree grown (dressed or
+ * undressed, not regrown).
  * @typedef {Envelope & {type: 'update', state: TreeStateJson, until?: number,
- *   stage?: 'grow'|'mesh'|'sway'|'view', bark?: 'procedural'|'sim'}} UpdateMessage
+ *   stage?: 'grow'|'mesh'|'sway'|'view'}} UpdateMessage
  *   -> HashMessage (state accepted), ProgressMessage (after each year), TreeMessage
  *
  * @typedef {Envelope & {type: 'hash', hash: string}} HashMessage
@@ -202,8 +203,9 @@
  *       ran), grows (the client's lab's grows so far), buffers: {ground: {positions, normals,
  *       indices, heights, moss_S}, objects: {positions, normals, indices, kind, birth (the garden
  *       year an ivy vertex grew in)}, trees: {positions, normals, indices, part, ranges,
- *       instances}} (views into the buffers the client handed back when they fit), bufferCounts,
- *       growMs, wallMs}
+ *       instances, uvs (with bark 1: the bark's uvs)}} (views into the buffers the client handed
+ *       back when they fit), barks (per distinct tree {bark, barkNormal: {width, height, pixels,
+ *       digest}} of its simulated bark, or null; [] with bark 0), bufferCounts, growMs, wallMs}
  * @typedef {Envelope & {type: 'year', year: number, grows?: number}} GardenYearMessage
  *   (the year scrubber: nothing grows) -> {type: 'gardenYear', year, grows, run, buffers: {year:
  *       {positions, normals, indices, part, ranges, instances, moss_S}} (that year's trees and moss

@@ -138,22 +138,22 @@ export function createHandler(Module, ctx) {
         post(errorReply(meshError, id, client));
         return;
       }
-      dressBark(session, msg.bark, client);
+      dressBark(session, client);
       if (!sendTree(id, client, session, true, null, performance.now() - started)) return;
       stopWind(client);  // the client restarts the wind on the new tree if it is playing
       finished.get(client)?.session.delete();
-      finished.set(client, { session, state, until, bark: session.barkDressed() ? 'sim' : 'procedural' });
+      finished.set(client, { session, state, until });
       keep = true;
     } finally {
       if (!keep) session.delete();
     }
   }
 
-  // The Bark choice 'sim': the bark study on the session's tree (TreeSession.dressBark); a refusal
-  // (a tree of one year, the page budget) goes beside the choice (control 'bark') and the tree
-  // keeps its procedural bark.
-  function dressBark(session, bark, client) {
-    if (bark !== 'sim') return;
+  // The bark the state's rows `bark` and `bark_model` ask for on the session's tree
+  // (TreeSession.dressBark: the bark study when bark is 1, the same run as the CLI's --bark sim);
+  // a refusal (a tree of one year, bark_model 3, the page budget) goes beside the Bark choice
+  // (control 'bark') and the tree keeps its procedural bark.
+  function dressBark(session, client) {
     const error = errorOf(session.dressBark());
     if (error) post(errorReply(error, undefined, client, { control: 'bark' }));
   }
@@ -178,11 +178,7 @@ export function createHandler(Module, ctx) {
     post({ type: 'hash', id: msg.id, client, hash: last.session.hash() });
     stopWind(client);  // the sway restarts in the new wind (the client asks when it is playing)
     last.state = msg.state;
-    const bark = msg.bark === 'sim' ? 'sim' : 'procedural';
-    if (bark !== last.bark) {  // the Bark choice: re-texture the tree grown, not regrow it
-      if (bark === 'sim') dressBark(last.session, bark, client); else last.session.undressBark();
-      last.bark = last.session.barkDressed() ? 'sim' : 'procedural';
-    }
+    dressBark(last.session, client);  // the bark rows re-texture the tree grown, not regrow it
     if (answer.stages.length > 0) last.motionHybrid = false;  // the update cleared the hybrid scene
     sendTree(msg.id, client, last.session, false, answer.stages);
   }
@@ -359,13 +355,15 @@ export function createHandler(Module, ctx) {
   // The link's page fields are the page's choices, not rows of the tree's table (the tree and its
   // exports are the same either way): taken out before the core decodes the rest, and returned
   // beside the state, each at its first value unless the link names another (a bad value is
-  // dropped with a notice, as the core drops a bad value of its own keys): bark=procedural|sim
-  // (the Bark choice), shadows=on|off (Sun shadows). The page writes only values off the first.
-  const PAGE_FIELDS = { bark: ['procedural', 'sim'], shadows: ['on', 'off'] };
+  // dropped with a notice, as the core drops a bad value of its own keys): shadows=on|off (Sun
+  // shadows). The page writes only values off the first. The Bark choice is the table's row
+  // `bark` now (bark=1); an older link's bark=sim or bark=procedural is read as bark=1 or 0.
+  const PAGE_FIELDS = { shadows: ['on', 'off'] };
+  const OLD_BARK = { 'bark=sim': 'bark=1', 'bark=procedural': 'bark=0' };
   const decode = (hash) => {
     const page = Object.fromEntries(Object.entries(PAGE_FIELDS).map(([key, values]) => [key, values[0]]));
     const pageNotices = [];
-    const rest = String(hash ?? '').replace(/^#/, '').split('&').filter((pair) => {
+    const rest = String(hash ?? '').replace(/^#/, '').split('&').map((pair) => OLD_BARK[pair] ?? pair).filter((pair) => {
       const eq = pair.indexOf('=');
       const key = eq < 0 ? pair : pair.slice(0, eq);
       const values = Object.hasOwn(PAGE_FIELDS, key) ? PAGE_FIELDS[key] : null;
@@ -396,8 +394,8 @@ export function createHandler(Module, ctx) {
     ready: (msg) => ({ paramTable, presets: JSON.parse(Module.presetsJson('tree')), decoded: decode(msg.hash) }),
     messages: {
       decode: (msg, client) => {
-        const { state, notices, bark, shadows } = decode(msg.hash);
-        post({ type: 'decoded', id: msg.id, client, state, notices, bark, shadows });
+        const { state, notices, shadows } = decode(msg.hash);
+        post({ type: 'decoded', id: msg.id, client, state, notices, shadows });
       },
       // An update of a later stage than 'grow' (the page's controller sends the earliest stage its
       // edits touched) restages the tree grown; the others grow.
