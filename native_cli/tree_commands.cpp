@@ -127,7 +127,7 @@ Result<std::string> BarkGlb(const TreeGrowOptions& o, const Budget& budget,
   if (!doc.ok()) return doc.status();
   Result<std::vector<unsigned char>> glb = gltf::WriteGlb(*doc);
   if (!glb.ok()) return glb.status();
-  *bark_json = compose::BarkOnTreeJson(*bark, bark->height_m);
+  *bark_json = compose::BarkOnTreeJson(*bark);
   return std::string(glb->begin(), glb->end());
 }
 

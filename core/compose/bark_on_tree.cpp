@@ -498,13 +498,13 @@ Result<gltf::Document> BarkTreeDocument(const Tree& tree, const TreeMesh& mesh,
   return doc;
 }
 
-std::string BarkOnTreeJson(const BarkOnTree& bark, double height_m) {
+std::string BarkOnTreeJson(const BarkOnTree& bark) {
   const BarkOnTreePlan& p = bark.plan;
   std::string radii;
   for (double r : p.radii_cm) radii += (radii.empty() ? "" : ",") + FormatNumber(r);
   const auto& params = p.state.params;
   return "{\"species\":\"" + p.state.species + "\",\"model\":\"" + p.state.model +
-         "\",\"height_m\":" + FormatNumber(height_m) + ",\"years\":[" +
+         "\",\"height_m\":" + FormatNumber(bark.height_m) + ",\"years\":[" +
          std::to_string(p.first_year) + "," + std::to_string(p.last_year) + "],\"radii_cm\":[" +
          radii + "],\"hoop_strain\":" + FormatNumber(p.hoop_strain) +
          ",\"surface_growth_cm\":" + FormatNumber(p.surface_growth_cm) +

@@ -190,6 +190,6 @@ Result<gltf::Document> BarkTreeDocument(const Tree& tree, const TreeMesh& mesh,
 // {"species", "model", "height_m", "years": [first, last], "radii_cm": [...], "hoop_strain",
 // "surface_growth_cm", "turnover_strain", "surface_years", "N_R", "N_H", "cycles", "dR",
 // "young_dR", "tile_cm": [w, h], "young_years", "hash"} for the CLI's stats.
-std::string BarkOnTreeJson(const BarkOnTree& bark, double height_m);
+std::string BarkOnTreeJson(const BarkOnTree& bark);  // "height_m" is bark.height_m
 
 }  // namespace niwa::compose
