@@ -93,6 +93,7 @@
 #include "error_record.h"
 #include "geom/mesh_metrics.h"
 #include "image/png.h"
+#include "image_val.h"
 #include "io/mesh_reader.h"
 #include "ivy/ivy_budget.h"
 #include "ivy/ivy_run.h"
@@ -526,11 +527,7 @@ class GardenLab {
         compose::GardenGroupBarkImage(*run_, group, kind == "barkNormal");
     if (!decoded.ok()) return emscripten::val::null();
     const image::Rgba8Image& image = *decoded;
-    emscripten::val view(emscripten::typed_memory_view(image.pixels.size(), image.pixels.data()));
-    emscripten::val out = emscripten::val::object();
-    out.set("width", image.width);
-    out.set("height", image.height);
-    out.set("pixels", emscripten::val::global("Uint8Array").new_(view));
+    emscripten::val out = ImageToJs(image);
     out.set("digest", "bark-sim-" + kind + "-" + frame->hash);
     return out;
   }

@@ -49,6 +49,7 @@
 #include "error_record.h"
 #include "geom/mesh_metrics.h"
 #include "geom/ray_cast.h"
+#include "image_val.h"
 #include "io/mesh_reader.h"
 #include "ivy/ivy_budget.h"
 #include "ivy/ivy_leaf_texture.h"
@@ -100,12 +101,7 @@ FlatMesh Flatten(const geom::TriMesh& mesh) {
 // The leaf texture (ivy_leaf_texture.h), the pixels the .glb's PNG encodes, copied out of the heap.
 emscripten::val IvyLeafTexture() {
   const image::Rgba8Image image = ivy::PaintLeafTexture(ivy::kLeafTextureSize);
-  emscripten::val view(emscripten::typed_memory_view(image.pixels.size(), image.pixels.data()));
-  emscripten::val out = emscripten::val::object();
-  out.set("width", image.width);
-  out.set("height", image.height);
-  out.set("pixels", emscripten::val::global("Uint8Array").new_(view));  // a copy
-  return out;
+  return ImageToJs(image);
 }
 
 std::string IvyScenesJson() {

@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "image_val.h"
 #include "tree/tree_look.h"
 #include "tree/tree_textures.h"
 
@@ -39,11 +40,7 @@ emscripten::val TreeTexture(const std::string& kind, int leaf_shape, int season,
   } else {
     return emscripten::val::null();
   }
-  emscripten::val view(emscripten::typed_memory_view(image.pixels.size(), image.pixels.data()));
-  emscripten::val out = emscripten::val::object();
-  out.set("width", image.width);
-  out.set("height", image.height);
-  out.set("pixels", emscripten::val::global("Uint8Array").new_(view));  // a copy
+  emscripten::val out = ImageToJs(image);
   out.set("digest", ImageDigest(image));
   return out;
 }

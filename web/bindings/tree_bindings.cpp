@@ -63,6 +63,7 @@
 #include "buffers.h"
 #include "compose/bark_on_tree.h"
 #include "error_record.h"
+#include "image_val.h"
 #include "light/sun.h"
 #include "page_budget.h"
 #include "params/param_json.h"
@@ -284,18 +285,12 @@ class TreeSession {
     if (!bark_ || (kind != "bark" && kind != "barkNormal")) return emscripten::val::null();
     const image::Rgba8Image& image =
         kind == "bark" ? bark_->old_bark.colour_pixels : bark_->old_bark.normal_pixels;
-    emscripten::val view(emscripten::typed_memory_view(image.pixels.size(), image.pixels.data()));
-    emscripten::val out = emscripten::val::object();
-    out.set("width", image.width);
-    out.set("height", image.height);
-    out.set("pixels", emscripten::val::global("Uint8Array").new_(view));
+    emscripten::val out = ImageToJs(image);
     out.set("digest", "bark-sim-" + kind + "-" + ImageDigest(image));
     return out;
   }
   // compose::BarkOnTreeJson of the dressed bark, "" when not dressed.
-  std::string barkJson() const {
-    return bark_ ? compose::BarkOnTreeJson(*bark_, bark_->height_m) : "";
-  }
+  std::string barkJson() const { return bark_ ? compose::BarkOnTreeJson(*bark_) : ""; }
 
   // Builds the triangle meshes of the tree as grown so far; call before the buffer views. "" or
   // the line naming the page budget the mesh would cross (the mesh is then left empty).
