@@ -173,6 +173,26 @@ const { birthCounter } = await import('../../web/ivy/ivy_renderer.js');
   frame.run(1);
   frame.abort();
   check('abort drops a frame in parts', !frame.pending() && frame.run(10).primitives === 0);
+  // retire: a layer's old objects are deleted only once no frame in progress can bind them.
+  const released = [];
+  frame.retire(() => released.push('idle'));
+  frame.start([step('bark', 250)]);
+  frame.run(100);
+  frame.retire(() => released.push('finished'));
+  const held = released.join(',');
+  frame.run(100);
+  const beforeEnd = released.join(',');
+  frame.run(100);
+  frame.start([step('bark', 250)]);
+  frame.run(100);
+  frame.retire(() => released.push('aborted'));
+  frame.abort();
+  frame.start([step('bark', 250)]);
+  frame.run(100);
+  frame.retire(() => released.push('replaced'));
+  frame.start([step('bark', 250)]);
+  check('retire deletes at once when idle, and otherwise when the frame in parts finishes, is aborted or replaced',
+    held === 'idle' && beforeEnd === 'idle' && released.join(',') === 'idle,finished,aborted,replaced', `${held}; ${beforeEnd}; ${released.join(',')}`);
 }
 
 // ---- The governor's budget: the measured rate times the target.

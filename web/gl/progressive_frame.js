@@ -29,6 +29,20 @@ export class ProgressiveFrame {
     this.target = null;
     this.canvas = null;
     this.canvasSize = [0, 0];  // the frame's drawing-buffer size, [width, height] pixels
+    this.retired = [];  // deletions waiting for the frame in progress to end (retire)
+  }
+
+  // Runs `release` (deleting GL objects) now, or, while a frame is in progress whose steps may
+  // still bind those objects, once that frame ends (finished, aborted or replaced): a layer that
+  // swaps its draw list between two parts of a frame must not leave the rest of the frame binding
+  // deleted objects (WebGL: "attempt to use a deleted object"; CI, 2026-12-07, shadow.test).
+  retire(release) {
+    if (this.pending()) this.retired.push(release);
+    else release();
+  }
+
+  #release() {
+    for (const release of this.retired.splice(0)) release();
   }
 
   // A new frame of `steps` on `canvas`, `size` ([width, height]: the drawing buffer it is drawn
@@ -66,6 +80,7 @@ export class ProgressiveFrame {
   }
 
   start(steps) {
+    this.#release();
     this.steps = steps;
     this.step = 0;
     this.offset = 0;
@@ -74,6 +89,7 @@ export class ProgressiveFrame {
   // Drops a frame in progress (its buffers are gone, or the canvas was resized).
   abort() {
     this.steps = null;
+    this.#release();
   }
 
   pending() {
@@ -115,7 +131,10 @@ export class ProgressiveFrame {
       setDrawingBufferSize(this.canvas, this.canvasSize);
       this.offscreen.present();
     }
-    if (done) this.steps = null;
+    if (done) {
+      this.steps = null;
+      this.#release();
+    }
     return { primitives: drawn, done };
   }
 }

@@ -479,9 +479,12 @@ export class Renderer extends StudyLayer {
     const gl = this.gl;
     if (!this.atlas || this.atlas.size !== size) {
       if (this.atlas) {
-        gl.deleteTexture(this.atlas.texture);
-        gl.deleteFramebuffer(this.atlas.fb);
-        gl.deleteRenderbuffer(this.atlas.depth);
+        const old = this.atlas;
+        this.progress.retire(() => {
+          gl.deleteTexture(old.texture);
+          gl.deleteFramebuffer(old.fb);
+          gl.deleteRenderbuffer(old.depth);
+        });
       }
       this.atlas = createAtlasTarget(gl, size);
     }
@@ -566,14 +569,17 @@ export class Renderer extends StudyLayer {
     this.drawList = null;
   }
 
+  // A frame in parts may still draw the list: deleted when that frame ends (ProgressiveFrame.retire).
   #deleteList(list) {
     const gl = this.gl;
-    for (const part of [list.cards, list.lines]) {
-      if (!part) continue;
-      gl.deleteVertexArray(part.vao);
-      part.buffers.forEach((b) => gl.deleteBuffer(b));
-      part.textures?.forEach((t) => gl.deleteTexture(t));
-    }
+    this.progress.retire(() => {
+      for (const part of [list.cards, list.lines]) {
+        if (!part) continue;
+        gl.deleteVertexArray(part.vao);
+        part.buffers.forEach((b) => gl.deleteBuffer(b));
+        part.textures?.forEach((t) => gl.deleteTexture(t));
+      }
+    });
   }
 
   // The worker's 'drawList' for the current view (hybrid mode): cards and line segments.
