@@ -23,6 +23,17 @@ const Tree& Sakura15() {
   return tree;
 }
 
+// The 20,000-triangle level and the three LOD levels of Sakura15, built once for the tests that
+// only read them (each build took 0.5-1 s; eight tests built the same ones).
+const Result<LodMesh>& Lod20k() {
+  static const Result<LodMesh> lod = BuildLodMesh(Sakura15(), 20000);
+  return lod;
+}
+const Result<std::vector<LodMesh>>& Levels20k() {
+  static const Result<std::vector<LodMesh>> levels = BuildLodLevels(Sakura15(), 20000);
+  return levels;
+}
+
 // Triangles of the TRIANGLES primitives (mode 4 or absent) of one mesh of a parsed .glb.
 long Triangles(const MeshBuffers& b) { return static_cast<long>(b.indices.size() / 3); }
 
@@ -48,7 +59,7 @@ TEST(TreeLod, FullMeshWhenItFits) {
 TEST(TreeLod, TwentyThousandTrianglesAndTheGlbAgrees) {
   const long full = FullTriangles(BuildTreeMesh(Sakura15()));
   ASSERT_GT(full, 100000);  // the 489 k tree: the budget has work to do
-  Result<LodMesh> lod = BuildLodMesh(Sakura15(), 20000);
+  const Result<LodMesh>& lod = Lod20k();
   ASSERT_TRUE(lod.ok()) << lod.status().Line();
   const LodChoice& c = lod->choice;
   EXPECT_FALSE(c.full);
@@ -76,7 +87,7 @@ TEST(TreeLod, TwentyThousandTrianglesAndTheGlbAgrees) {
 // branch and its apex at 1; leaf-cluster cards free (along 1) at the deepest level; whole levels,
 // phases in [0, 1), alongs in [0, 1]; the full-mesh level carries them too.
 TEST(TreeLod, EveryPrimitiveCarriesWindData) {
-  Result<LodMesh> lod = BuildLodMesh(Sakura15(), 20000);
+  const Result<LodMesh>& lod = Lod20k();
   ASSERT_TRUE(lod.ok()) << lod.status().Line();
   ASSERT_EQ(lod->twig_wind.size(), 3u);
   const std::vector<float>& twig_along = lod->twig_wind[1].values;
@@ -131,7 +142,7 @@ TEST(TreeLod, EveryPrimitiveCarriesWindData) {
 
 // Twig cones face outward: each triangle's normal points away from the twig's axis.
 TEST(TreeLod, TwigConesFaceOutward) {
-  Result<LodMesh> lod = BuildLodMesh(Sakura15(), 20000);
+  const Result<LodMesh>& lod = Lod20k();
   ASSERT_TRUE(lod.ok());
   const MeshBuffers& t = lod->twigs;
   ASSERT_GT(t.indices.size(), 0u);
@@ -153,7 +164,7 @@ TEST(TreeLod, TwigConesFaceOutward) {
 // Below a budgeted LOD0 no kind of primitive grows: bark, cards and twigs (vertices and
 // triangles) shrink level by level, and each level's tubes are at least as thick as above.
 TEST(TreeLod, LevelsShrinkInEveryKind) {
-  Result<std::vector<LodMesh>> levels = BuildLodLevels(Sakura15(), 20000);
+  const Result<std::vector<LodMesh>>& levels = Levels20k();
   ASSERT_TRUE(levels.ok()) << levels.status().Line();
   for (std::size_t l = 1; l < levels->size(); ++l) {
     const LodMesh& a = (*levels)[l - 1];
@@ -186,7 +197,7 @@ TEST(TreeLod, SmallerBudgetsNeverAddTrianglesOrTubes) {
 
 // The thickest branches stay tubes: every tube is at least as thick as every card and line.
 TEST(TreeLod, TubesAreTheThickestBranches) {
-  Result<LodMesh> lod = BuildLodMesh(Sakura15(), 20000);
+  const Result<LodMesh>& lod = Lod20k();
   ASSERT_TRUE(lod.ok());
   std::vector<bool> tube(Sakura15().branches.size(), false);
   for (uint32_t b : lod->parts.bark_branch_id) tube[b] = true;
@@ -207,7 +218,7 @@ TEST(TreeLod, TubesAreTheThickestBranches) {
 // Every card's uv rectangle holds painted texels (leaves, flowers or bark), and the atlas is
 // otherwise transparent.
 TEST(TreeLod, CardsAreTexturedFromTheAtlas) {
-  Result<LodMesh> lod = BuildLodMesh(Sakura15(), 20000);
+  const Result<LodMesh>& lod = Lod20k();
   ASSERT_TRUE(lod.ok());
   const image::Rgba8Image& atlas = lod->atlas;
   ASSERT_FALSE(atlas.empty());
@@ -241,7 +252,7 @@ TEST(TreeLod, TooFewTrianglesIsOneLineNamingTheFlag) {
 }
 
 TEST(TreeLod, LevelsAreSiblingNodesWithinTheirShares) {
-  Result<std::vector<LodMesh>> levels = BuildLodLevels(Sakura15(), 20000);
+  const Result<std::vector<LodMesh>>& levels = Levels20k();
   ASSERT_TRUE(levels.ok()) << levels.status().Line();
   ASSERT_EQ(levels->size(), 3u);
   const long lod0 = (*levels)[0].choice.triangles;
@@ -262,7 +273,7 @@ TEST(TreeLod, LevelsAreSiblingNodesWithinTheirShares) {
 }
 
 TEST(TreeLod, MsftLodLayoutPutsLod0InTheSceneAndNamesTheOthers) {
-  Result<std::vector<LodMesh>> levels = BuildLodLevels(Sakura15(), 20000);
+  const Result<std::vector<LodMesh>>& levels = Levels20k();
   ASSERT_TRUE(levels.ok()) << levels.status().Line();
   std::vector<unsigned char> bytes;
   ASSERT_TRUE(WriteLodGlb(*levels, &bytes, "tree", LodLayout::kMsftLod).ok());
