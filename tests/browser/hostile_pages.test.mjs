@@ -66,10 +66,15 @@ function namesRows(lines, keys) {
 // when opened with none, under another seed) must grow again in the same page. (A serial of the page,
 // treeSerial, ivySerial, ..., goes up and the page is ready.) The opening state, not the table's
 // defaults alone: the moss table's defaults are the thesis workload (300 days), the page opens on 60.
-// The garden's valid hash is its opening garden at 2 years instead of 8 (LIGHTER): any valid hash
-// shows the page recovered, and the 8-year garden's regrow took 13-17 s of the suite's CPU each
-// time (five times here); garden_page.test grows the 8-year one.
-const LIGHTER = { garden: { years: '2' } };
+// The valid hash is the page's opening state made lighter (LIGHTER: any valid hash shows the page
+// recovered, and each study's regrow here is five per page): the garden at 2 years instead of 8
+// (its regrow took 13-17 s of the suite's CPU each time), the tree at 3 years instead of 15, the
+// ivy at 15 steps, the terrain's mesh at 64², the moss over 10 days with 1,024 photons, the bark on
+// a 32 x 16 lattice. The opening states themselves are grown (and drawn) by each page's own test.
+const LIGHTER = {
+  garden: { years: '2' }, tree: { years: '3' }, ivy: { steps: '15' }, terrain: { res: '64' },
+  moss: { days: '10', photons: '1024' }, bark: { N_R: '32', N_H: '16' },
+};
 async function stillWorks(page, opening, lighter = {}) {
   const serials = () => Object.fromEntries(Object.entries(document.documentElement.dataset)
     .filter(([k]) => /^[a-z]+Serial$/.test(k) && !k.startsWith('drawn')).map(([k, v]) => [k, Number(v)]));
@@ -77,6 +82,7 @@ async function stillWorks(page, opening, lighter = {}) {
   const seed = `seed=${2 + Math.floor(Math.random() * 1000)}`;
   const fields = opening.replace(/^#/, '').split('&').filter((f) => f && !f.startsWith('seed='))
     .map((f) => { const k = f.split('=')[0]; return k in lighter ? `${k}=${lighter[k]}` : f; });
+  for (const [k, v] of Object.entries(lighter)) if (!fields.some((f) => f.split('=')[0] === k)) fields.push(`${k}=${v}`);
   await page.evaluate((h) => { location.hash = h; }, `#${[...fields, seed].join('&')}`);
   const grown = (old) => page.waitForFunction((o) => {
     const d = document.documentElement.dataset;
