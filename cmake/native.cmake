@@ -4,7 +4,9 @@ set(NIWA_THIRD_PARTY_INCLUDES "")  # glm, nlohmann, tinygltf, CLI11 live in /usr
 if(NIWA_SANITIZE)
   # GCC 12 reports false maybe-uninitialized warnings inside libstdc++'s <regex> under the sanitizers
   # (tests/params/strict_number_test.cpp's regex twin); the release build keeps the warning.
-  list(APPEND NIWA_WARNINGS -Wno-maybe-uninitialized)
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+    list(APPEND NIWA_WARNINGS -Wno-maybe-uninitialized)
+  endif()
   # UBSan plus float-cast-overflow (hostile numbers cast to integers; GCC's -fsanitize=undefined leaves
   # it out), without the null, alignment, vptr and nonnull checks: at -O0 those were about a quarter of
   # the ASan build's compile time (tree_state.cpp 12.5 s against 9.7 s, terrain_commands.cpp 15.8 s

@@ -8,22 +8,22 @@
 namespace niwa {
 
 const std::vector<SimpleControl>& TreeSimpleControls() {
-  using P = TreeParam;
+  using TP = TreeParam;
   static const std::vector<SimpleControl> group = {
-      {P::kDHigh, "Shoot length",
+      {TP::kDHigh, "Shoot length",
        "How far the strong shoots grow each year: longer shoots make a taller, wider tree."},
-      {P::kPsiL, "Branch angle",
+      {TP::kPsiL, "Branch angle",
        "How far side shoots lean out from their parent: small is upright and narrow, large is "
        "spreading."},
-      {P::kPLOld, "Branchiness",
+      {TP::kPLOld, "Branchiness",
        "How many side buds open into shoots each year: more makes a denser crown."},
-      {P::kSunWeight, "Sun",
+      {TP::kSunWeight, "Sun",
        "How much light comes from the sun instead of an overcast sky: the tree leans and grows "
        "towards it (the sun's place is in the Light section)."},
-      {P::kBGHigh, "Uprightness",
+      {TP::kBGHigh, "Uprightness",
        "How strongly the strong shoots turn upwards: below 0 they droop, as in a weeping cherry."},
-      {P::kLeafSize, "Leaf size", "Length of each leaf; bigger leaves also shade each other more."},
-      {P::kWindSpeed, "Wind",
+      {TP::kLeafSize, "Leaf size", "Length of each leaf; bigger leaves also shade each other more."},
+      {TP::kWindSpeed, "Wind",
        "How hard the wind blows when you press Blow (the tree is not grown again)."},
   };
   return group;
