@@ -40,8 +40,10 @@ endfunction()
 # Unit-test binaries link at -O1: their objects are still compiled at -O3 (CMAKE_BUILD_TYPE), but the
 # link skips binaryen's whole-module -O3 passes, which cost 30-65 CPU seconds per test binary (cli_tests:
 # 65.6 s at -O3 against 1.4 s at -O1, measured 2026-12-02) and dominated a clean CI build. Those passes
-# keep IEEE semantics (no fast-math), so the tests see the same bits; the CLI (niwa.js, used by the
-# native-against-WASM tests), the web module and the bench runner keep the -O3 link.
+# keep IEEE semantics (no fast-math), so the tests see the same bits. The CLI (niwa.js), which only the
+# tests run (native against WASM), links at -O1 too: its -O3 link was 72 CPU s of a clean WASM build
+# (2026-12-07, at load 5-10), and its runs were 0-15 % slower at -O1 (eight commands, 9.8 s against 10.1
+# and 11.5 s of CPU). The web module and the bench runner (the WASM speed figures) keep the -O3 link.
 function(niwa_test_program target)
   niwa_node_program(${target})
   target_link_options(${target} PRIVATE -O1)
