@@ -130,10 +130,12 @@ int RunGardenGrow(const GardenOptions& o, std::ostream& out) {
     j["ms"] = Ms(t0, std::chrono::steady_clock::now());
     j["ms_ground"] = run->ms_ground();
     j["ms_plant"] = run->ms_plant();
-    j["ms_moss"] = run->ms_moss();  // its start (the land's cells) and its days
-    j["ms_ivy"] = run->ms_ivy();    // the ivy's years: its supports and its growth
+    j["ms_moss"] = run->ms_moss();          // its start (the land's cells) and its days
+    j["ms_moss_cpu"] = run->cpu_ms_moss();  // the same in the process's CPU time
+    j["ms_ivy"] = run->ms_ivy();            // the ivy's years: its supports and its growth
     j["ms_ivy_support"] = run->ms_ivy_support();
-    j["ms_bark"] = run->ms_bark();  // the simulated barks (bark 1), after the clock
+    j["ms_ivy_cpu"] = run->cpu_ms_ivy();  // ms_ivy in the process's CPU time
+    j["ms_bark"] = run->ms_bark();        // the simulated barks (bark 1), after the clock
     j["ms_trees"] = Ms(t1, t2) - run->ms_ivy() - (run->ms_moss() - moss_start_ms) - run->ms_bark();
     j["ms_growth"] = run->ms_growth();  // within ms_trees: the trees' own years
     j["ms_export"] = Ms(t2, t3);

@@ -66,6 +66,20 @@ moss::MossScene GardenMossLand(const GardenScene& scene) {
   return land;
 }
 
+moss::MossCosts GardenMossCosts() {
+  // CPU time, native, 2026-12-07, at loads 6-8 (docs/garden-model.md "The moss's estimate"): the
+  // scale garden (66,804 cells, 20.7 within 1 m) and the default (35,132 cells, 64 within 1 m).
+  moss::MossCosts c;
+  c.cell_build = 16e-6;   // the land, its cells and their indexes: 21 and 31 µs a cell
+  c.cell_list = 0.25e-6;  // ... of which the spread lists, by the cells within 1 m (fitted)
+  c.photon = 1.1e-6;      // a path, the canopy's spheres crossed: 1.07-1.24 µs measured
+  c.photon_cell = 10e-9;  // the spread: 0.44 stored photons a path, about 22 ns a stored pair
+  c.cell_day = 70e-9;     // the soil (45-66 ns) and the cell's share of the gather
+  c.moss_day = 0.1e-6;    // a moss or seed at the caps: 0.16 µs all told on the default garden
+  c.moss_photon = 10e-9;  // its gather, by the photons within 1 m
+  return c;
+}
+
 std::vector<moss::CanopySphere> GardenCanopy(const std::vector<TreeAt>& trees, double scale) {
   std::vector<moss::CanopySphere> spheres;
   for (const TreeAt& t : trees) {

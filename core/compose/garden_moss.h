@@ -20,8 +20,16 @@
 namespace niwa::compose {
 
 // The most cells a side of the moss's ground: a finer garden ground (ground_res 512 on a 100 m
-// garden: 525 k triangles, about 176 s of moss for 15 years) is resampled to this for the moss.
+// garden: 525 k triangles, about 176 s of moss for 15 years at the moss study's provisional costs)
+// is resampled to this for the moss.
 constexpr int kMossGroundCells = 128;
+
+// What the garden's moss counts its work at (moss::MossRun::RunEstimate; docs/garden-model.md
+// "The moss's estimate"): measured in CPU time on the default and the scale gardens, where the
+// study's provisional figures counted a cell's day at 2 µs (about 70 ns measured) and the caps'
+// mosses at 4 µs a day; with the gather's disc over the land (r_gather 1 m) counted per cell and
+// per photon in it.
+moss::MossCosts GardenMossCosts();
 
 // The ground the moss grows on: `ground` itself at kMossGroundCells cells a side or fewer, else a
 // grid of kMossGroundCells cells over the same square whose vertices take the ground's height

@@ -134,13 +134,18 @@ class GardenRun : public run::StudyRun {
   double ms_ivy() const { return ms_ivy_; }
   // Within ms_ivy: building each year's support (its meshes, the trunks' bark, the BVH).
   double ms_ivy_support() const { return ms_ivy_support_; }
-  // The process's CPU time over the ivy's years (std::clock; the load does not stretch it): what
-  // tests/compose/garden_test.cpp holds the ivy's time estimate to.
+  // The process's CPU time over the ivy's years (std::clock): what --stats' ms_ivy_cpu and
+  // scripts/bench set beside the ivy's time estimate.
   double cpu_ms_ivy() const { return cpu_ms_ivy_; }
   double cpu_ms_ivy_support() const { return cpu_ms_ivy_support_; }
   // The garden's moss (nullptr with moss_days 0 or years 0), grown to years × moss_days days.
   const moss::MossRun* moss() const { return moss_.get(); }
   double ms_moss() const { return ms_moss_; }
+  // The process's CPU time over the moss's start (its land and cells) and its days, the canopy
+  // handed over each year included (std::clock): what scripts/bench sets beside the estimate.
+  double cpu_ms_moss() const { return cpu_ms_moss_; }
+  // The moss's whole run as the budget counted it at Start (GardenMossCosts; 0 without moss).
+  const Estimate& moss_estimate() const { return moss_estimate_; }
   // Memory a front end holds per ivy bud beside the run (the page's mesh of the ivy: its
   // ivy::IvyPageMeshBytesPerBud; 0 on the CLI), counted in the ivy's growth limits. Set before
   // Advance.
@@ -175,7 +180,7 @@ class GardenRun : public run::StudyRun {
   Budget ivy_budget_;
   double ivy_extra_bytes_per_bud_ = 0;
   double ms_ground_ = 0, ms_plant_ = 0, ms_trees_ = 0, ms_ivy_ = 0, ms_moss_ = 0;
-  double ms_ivy_support_ = 0, cpu_ms_ivy_ = 0, cpu_ms_ivy_support_ = 0;
+  double ms_ivy_support_ = 0, cpu_ms_ivy_ = 0, cpu_ms_ivy_support_ = 0, cpu_ms_moss_ = 0;
   double ms_growth_ = 0, ms_records_ = 0;
   std::unique_ptr<ivy::IvyRun> ivy_;
   std::unique_ptr<moss::MossRun> moss_;

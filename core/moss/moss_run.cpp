@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "geom/closest_point.h"
+#include "geom/mesh_metrics.h"
 #include "geom/point_index.h"
 #include "geom/ray_cast.h"
 #include "math/det_math.h"
@@ -27,18 +28,15 @@ constexpr uint64_t kPhotonStream = 1, kGrowthStream = 2, kRainStream = 3, kPlace
 // The tufts' turns about their normals (display only: never read by the simulation).
 constexpr uint64_t kDisplayStream = 5;
 
-// Calibrated upper bounds of the work (seconds per unit; bytes per item).
-// Provisional (not yet measured at the caps): 30 days of `thesis` at 8,192 photons and ~100
-// mosses took 1.2 s natively, about 40 ms a day.
-constexpr double kSecondsPerPhoton = 2e-6;   // a path of ~2 hits with the gather's share
-constexpr double kSecondsPerCellDay = 2e-6;  // gather, m/M and the soil of one cell
-constexpr double kSecondsPerMossDay = 4e-6;  // gather, growth and landing of a moss or seed
+// Calibrated upper bounds of the memory (bytes per item); the seconds are MossCosts' (moss_run.h:
+// its defaults are the study's provisional figures: 30 days of `thesis` at 8,192 photons and ~100
+// mosses took 1.2 s natively, about 40 ms a day; a cell's build, soil depth ray, BVH and lists,
+// measured on rocks 10-11 µs, counted at 20 µs).
 // A cell's bytes at the run's peak (building the cells: the split, mesh, BVH, values, bucket; the
-// spread lists, <= 96 x 4 B), and its build time (soil depth ray, BVH, lists): measured on rocks
-// (2026-12-06, native, CPU time and peak RSS of niwa moss grow --days 0): 1,100 B a cell at
-// 105 k and 412 k cells, 1,375 B at 1.64 M (vectors' growth slack); 10-11 µs a cell. 800 B before.
+// spread lists, <= 96 x 4 B): measured on rocks (2026-12-06, native, CPU time and peak RSS of niwa
+// moss grow --days 0): 1,100 B a cell at 105 k and 412 k cells, 1,375 B at 1.64 M (vectors' growth
+// slack). 800 B before.
 constexpr double kBytesPerCell = 1500;
-constexpr double kSecondsPerCellBuild = 2e-5;
 constexpr double kBytesPerPhoton = 3 * 64.0;  // stored photons (~2 a path) and the index
 constexpr double kBytesPerMoss = 200;         // moss or seed, indices
 
@@ -92,20 +90,32 @@ std::vector<glm::dvec3> CentresOf(const std::vector<MossPlant>& mosses) {
 
 }  // namespace
 
-Estimate MossRun::RunEstimate(const MossState& state, std::size_t cells) {
+Estimate MossRun::RunEstimate(const MossState& state, std::size_t cells, double area_m2,
+                              const MossCosts& costs) {
   const double days = state.days;
   const double photons = state.params.Get(MossParam::kPhotons);
   const double mosses =
       state.params.Get(MossParam::kMaxMosses) + state.params.Get(MossParam::kSeedCap);
   const double n_cells = static_cast<double>(cells);
+  // The share of the land under one gather's disc (π r², at the land's mean density), at most all.
+  const double r = state.params.Get(MossParam::kRGather);
+  const double share = area_m2 > 0 ? std::min(1.0, det::kPi * r * r / area_m2) : 0.0;
+  const double cells_near = n_cells * share, photons_near = photons * share;
+  const double listed =
+      std::min(cells_near, static_cast<double>(SoilPhotonSpread::kMaxCandidatesPerCell));
   Estimate e;
-  e.seconds = n_cells * kSecondsPerCellBuild +
-              days * (photons * kSecondsPerPhoton + n_cells * kSecondsPerCellDay +
-                      mosses * kSecondsPerMossDay);
+  e.seconds =
+      n_cells * (costs.cell_build + listed * costs.cell_list) +
+      days * (photons * (costs.photon + cells_near * costs.photon_cell) + n_cells * costs.cell_day +
+              mosses * (costs.moss_day + photons_near * costs.moss_photon));
   e.memory_bytes = n_cells * kBytesPerCell + photons * kBytesPerPhoton + mosses * kBytesPerMoss;
   e.what = "growing " + FormatCount(days) + " days of " + FormatCount(photons) + " photons on " +
            FormatCount(n_cells) + " soil cells";
   return e;
+}
+
+Estimate MossRun::RunEstimate() const {
+  return RunEstimate(state_, cells_.size(), land_area_, costs_);
 }
 
 Result<MossRun> MossRun::Start(const MossState& state, const Budget& budget) {
@@ -126,7 +136,8 @@ Result<MossRun> MossRun::Start(const MossState& state, const Budget& budget) {
 }
 
 Result<MossRun> MossRun::StartOnScene(const MossState& state, MossScene scene_value,
-                                      const Budget& budget, const std::string& mesh_name) {
+                                      const Budget& budget, const std::string& mesh_name,
+                                      const MossCosts& costs) {
   NIWA_RETURN_IF_ERROR(CheckMossParams(state.params));
   if (scene_value.mesh.triangle_count() == 0)
     return Status::Error("mesh", "has no triangles; must have at least one");
@@ -135,6 +146,7 @@ Result<MossRun> MossRun::StartOnScene(const MossState& state, MossScene scene_va
   run.state_ = state;
   run.mesh_name_ = mesh_name;
   run.budget_ = budget;
+  run.costs_ = costs;
   SoilCellOptions options;
   options.soil_edge = state.params.Get(MossParam::kSoilEdge);
   options.h_max = state.params.Get(MossParam::kHMax);
@@ -142,13 +154,16 @@ Result<MossRun> MossRun::StartOnScene(const MossState& state, MossScene scene_va
   options.sky_view =
       state.params.GetInt(MossParam::kLongwave) == static_cast<int>(Longwave::kSkyView);
   // The estimate before the cells are built: the scene's triangles are the fewest cells.
-  NIWA_RETURN_IF_ERROR(CheckEstimate(RunEstimate(state, scene->mesh.triangle_count()), budget,
-                                     "lower days, photons or max_mosses"));
+  const double area = geom::SurfaceArea(scene->mesh);
+  NIWA_RETURN_IF_ERROR(CheckEstimate(RunEstimate(state, scene->mesh.triangle_count(), area, costs),
+                                     budget, "lower days, photons or max_mosses"));
   Result<SoilCells> cells = MakeSoilCells(*scene, options);
   if (!cells.ok()) return cells.status();
   run.cells_ = std::move(*cells);
-  NIWA_RETURN_IF_ERROR(CheckEstimate(RunEstimate(state, run.cells_.size()), budget,
-                                     "lower days, photons or max_mosses"));
+  run.land_area_ = 0;
+  for (double a : run.cells_.area) run.land_area_ += a;
+  NIWA_RETURN_IF_ERROR(
+      CheckEstimate(run.RunEstimate(), budget, "lower days, photons or max_mosses"));
   Result<PhotonLight> light = PhotonLightOf(state.params, run.cells_);
   if (!light.ok()) return light.status();
   run.light_ = *light;
@@ -807,7 +822,7 @@ Result<Estimate> MossRun::ExportEstimate(const std::string& format) const {
 Result<Estimate> MossRun::PlannedExportEstimate(const std::string& format) const {
   Result<Estimate> e = ExportEstimateAt(format, state_.params.Get(MossParam::kMaxMosses));
   if (!e.ok()) return e;
-  Estimate days = RunEstimate(state_, cells_.size());
+  Estimate days = RunEstimate();
   days.memory_bytes = 0;  // already held
   return days + *e;
 }
@@ -815,7 +830,7 @@ Result<Estimate> MossRun::PlannedExportEstimate(const std::string& format) const
 Result<Estimate> MossRun::ExportEstimateAt(const std::string& format, double mosses) const {
   const double cells = static_cast<double>(cells_.size());
   Estimate held;  // the run's cells, photons and mosses, kept while the file is made
-  held.memory_bytes = RunEstimate(state_, cells_.size()).memory_bytes;
+  held.memory_bytes = RunEstimate().memory_bytes;
   if (format == "glb")
     return held + MossGlbEstimate(cells_.size(), static_cast<std::size_t>(mosses));
   if (format == "json") {
@@ -855,7 +870,7 @@ Result<Estimate> MossRun::ExportEstimateAt(const std::string& format, double mos
     const double bytes = geom::kRayDumpHeaderBytes + 48.0 * cells + 36.0 * rays;
     Estimate e;
     e.memory_bytes = 2.0 * bytes + 40.0 * rays + kBytesPerPhoton * rays;
-    e.seconds = kSecondsPerPhoton * state_.params.Get(MossParam::kPhotons) + 1e-8 * bytes;
+    e.seconds = costs_.photon * state_.params.Get(MossParam::kPhotons) + 1e-8 * bytes;
     e.what = "writing the photons' rays (" + FormatCount(cells) + " cells, " + FormatCount(rays) +
              " rays)";
     return held + e;

@@ -103,6 +103,20 @@ struct MossWorld {
   std::vector<std::string> every_rows;
 };
 
+// What RunEstimate counts a unit of the work at, in seconds. The defaults are the study's own
+// provisional upper bounds (no terms for the density of the land under the gather's disc); a
+// composed run passes its measured figures (compose/garden_moss.h GardenMossCosts). "Within
+// r_gather" is counted from the land's mean density: cells (or a day's photons) × π r² / area.
+struct MossCosts {
+  double cell_build = 2e-5;  // a cell built (its split, soil depth ray, BVH, indexes)
+  double cell_list = 0;      // and each cell within r_gather of it (its spread lists; at most 96)
+  double photon = 2e-6;      // a photon's path through the land (and the canopy)
+  double photon_cell = 0;    // a photon and a cell within r_gather of it (the soil's spread)
+  double cell_day = 2e-6;    // a cell's day: its gather's share, m/M and the soil
+  double moss_day = 4e-6;    // a moss or seed's day, at the caps (max_mosses + seed_cap)
+  double moss_photon = 0;    // a moss or seed and a photon within r_gather of it (its gather)
+};
+
 class MossRun : public run::StudyRun {
  public:
   // Builds the scene and its soil cells, places n_init mosses (day 0) and checks the estimate of
@@ -116,8 +130,10 @@ class MossRun : public run::StudyRun {
   // the stats and the link say the state's scene and its land fields. Errors as Start's, and
   // "mesh" for a scene without triangles. (Start refuses the scenes tree and terrain, naming
   // "scene": core/moss cannot grow them.)
+  // `costs`: what the estimates count a unit of work at (a composed run's measured figures).
   static Result<MossRun> StartOnScene(const MossState& state, MossScene scene, const Budget& budget,
-                                      const std::string& mesh_name);
+                                      const std::string& mesh_name,
+                                      const MossCosts& costs = MossCosts{});
   // Daily weather replacing the table's climate from day 1 (before any day is grown): day d reads
   // row (d − 1) mod rows; a row's N also sets the sun's beam S_sun = I_beam·N/24 of that day's
   // photons. `name` (the file's name) goes into the stats as "weather" (not part of the link).
@@ -137,8 +153,14 @@ class MossRun : public run::StudyRun {
   // Grows the days up to min(day, the state's days) (Advance grows them all): a composed run
   // grows its days in parts between other studies' years. A cancel restores the world as it was.
   Status AdvanceTo(int day, const run::Observer& observer);
-  // What the run of `state` on `cells` needs (calibrated upper bounds).
-  static Estimate RunEstimate(const MossState& state, std::size_t cells);
+  // What the run of `state` on `cells` cells of a land of `area_m2` (0: unknown, no density
+  // terms) needs, at `costs` (the study's provisional upper bounds by default).
+  static Estimate RunEstimate(const MossState& state, std::size_t cells, double area_m2 = 0,
+                              const MossCosts& costs = MossCosts{});
+  // The same for this run (its state, cells, land area and costs).
+  Estimate RunEstimate() const;
+  const MossCosts& costs() const { return costs_; }
+  double land_area() const { return land_area_; }  // m², the cells' sum
 
   const char* study() const override { return "moss"; }
   const char* unit() const override { return "days"; }
@@ -219,6 +241,8 @@ class MossRun : public run::StudyRun {
   std::string weather_name_;
   int stats_every_ = 0;  // RecordEvery's K; 0: no rows
   Budget budget_;
+  MossCosts costs_;       // what the estimates count the work at
+  double land_area_ = 0;  // m²: the cells' areas summed
   SoilCells cells_;
   std::vector<double> cumulative_area_;
   PhotonLight light_;
