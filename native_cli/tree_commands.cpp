@@ -8,7 +8,6 @@
 #include "base/echo.h"
 #include "cli_common.h"
 #include "compose/bark_on_tree.h"
-#include "io/gltf_writer.h"
 #include "render/tree_lod.h"
 #include "render/tree_run.h"
 #include "run/field_names.h"
@@ -123,12 +122,8 @@ Result<std::string> BarkGlb(const TreeGrowOptions& o, const Budget& budget,
           : "lower --bark-map-size or --bark-height");
   Check(run::RenameField(bark.status(), BarkFlagNames()));
   run->BuildBareMesh();
-  Result<gltf::Document> doc = compose::BarkTreeDocument(run->tree(), run->mesh(), *bark);
-  if (!doc.ok()) return doc.status();
-  Result<std::vector<unsigned char>> glb = gltf::WriteGlb(*doc);
-  if (!glb.ok()) return glb.status();
   *bark_json = compose::BarkOnTreeJson(*bark);
-  return std::string(glb->begin(), glb->end());
+  return compose::BarkTreeGlb(run->tree(), run->mesh(), *bark);  // the page's download too
 }
 
 int RunGrow(TreeGrowOptions o, const CLI::App& cmd, std::ostream& out) {

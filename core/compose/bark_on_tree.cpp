@@ -498,6 +498,14 @@ Result<gltf::Document> BarkTreeDocument(const Tree& tree, const TreeMesh& mesh,
   return doc;
 }
 
+Result<std::string> BarkTreeGlb(const Tree& tree, const TreeMesh& mesh, const BarkOnTree& bark) {
+  Result<gltf::Document> doc = BarkTreeDocument(tree, mesh, bark);
+  if (!doc.ok()) return doc.status();
+  Result<std::vector<unsigned char>> glb = gltf::WriteGlb(*doc);
+  if (!glb.ok()) return glb.status();
+  return std::string(glb->begin(), glb->end());
+}
+
 std::string BarkOnTreeJson(const BarkOnTree& bark) {
   const BarkOnTreePlan& p = bark.plan;
   std::string radii;

@@ -187,6 +187,11 @@ std::vector<float> WrapBarkUvs(const Tree& tree, const TreeMesh& mesh, const Bar
 Result<gltf::Document> BarkTreeDocument(const Tree& tree, const TreeMesh& mesh,
                                         const BarkOnTree& bark);
 
+// BarkTreeDocument written as binary glTF: the one .glb of a tree dressed in its simulated bark,
+// `niwa tree grow --bark sim --out t.glb` and the tree page's "Download .glb" with `bark` 1 alike
+// (the same state and bark give the same bytes). Errors name "glb" (io/gltf_writer).
+Result<std::string> BarkTreeGlb(const Tree& tree, const TreeMesh& mesh, const BarkOnTree& bark);
+
 // {"species", "model", "height_m", "years": [first, last], "radii_cm": [...], "hoop_strain",
 // "surface_growth_cm", "turnover_strain", "surface_years", "N_R", "N_H", "cycles", "dR",
 // "young_dR", "tile_cm": [w, h], "young_years", "hash"} for the CLI's stats.

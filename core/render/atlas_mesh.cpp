@@ -62,9 +62,11 @@ TileProjection MakeProjection(const glm::vec3& origin, const CardPlane& plane,
   return t;
 }
 
-// Appends the listed triangles of `part`, projected, to `out` (new vertices per triangle corner).
-void AppendProjected(const MeshBuffers& part, const std::vector<uint32_t>& triangles,
-                     const TileProjection& projection, MeshBuffers* out) {
+// Appends the listed triangles of `part`, projected, to `out` (new vertices per triangle corner),
+// their texture coordinates from `uvs` (u, v per vertex of `part`).
+void AppendProjected(const MeshBuffers& part, const std::vector<float>& uvs,
+                     const std::vector<uint32_t>& triangles, const TileProjection& projection,
+                     MeshBuffers* out) {
   for (uint32_t t : triangles) {
     for (int k = 0; k < 3; ++k) {
       uint32_t v = part.indices[t + static_cast<uint32_t>(k)];
@@ -74,7 +76,7 @@ void AppendProjected(const MeshBuffers& part, const std::vector<uint32_t>& trian
       out->positions.insert(out->positions.end(), {q.x, q.y, q.z});
       out->normals.insert(out->normals.end(),
                           {part.normals[3 * v], part.normals[3 * v + 1], part.normals[3 * v + 2]});
-      out->uvs.insert(out->uvs.end(), {part.uvs[2 * v], part.uvs[2 * v + 1]});
+      out->uvs.insert(out->uvs.end(), {uvs[2 * v], uvs[2 * v + 1]});
       out->indices.push_back(index);
     }
   }
@@ -82,8 +84,12 @@ void AppendProjected(const MeshBuffers& part, const std::vector<uint32_t>& trian
 
 }  // namespace
 
-AtlasMesh BuildAtlasMesh(const TreeMesh& mesh, const HybridScene& scene) {
+AtlasMesh BuildAtlasMesh(const TreeMesh& mesh, const HybridScene& scene,
+                         const std::vector<float>* bark_uvs) {
   AtlasMesh atlas;
+  // The override only when it has the bark's length (else the mesh's own).
+  const std::vector<float>& bark_uv =
+      bark_uvs != nullptr && bark_uvs->size() == mesh.bark.uvs.size() ? *bark_uvs : mesh.bark.uvs;
   const std::size_t branches = scene.frames.size();
   const auto bark = TrianglesByBranch(mesh.bark, mesh.bark_branch_id, branches);
   const auto leaves = TrianglesByBranch(mesh.leaves, mesh.leaf_branch_id, branches);
@@ -98,10 +104,10 @@ AtlasMesh BuildAtlasMesh(const TreeMesh& mesh, const HybridScene& scene) {
       TileProjection projection =
           MakeProjection(frame.origin, frame.planes[k], scene.group_tiles[g][k], scene.atlas_size);
       std::size_t before = atlas.bark.indices.size() + atlas.leaves.indices.size();
-      AppendProjected(mesh.bark, bark[rep], projection, &atlas.bark);
+      AppendProjected(mesh.bark, bark_uv, bark[rep], projection, &atlas.bark);
       if (leaves_on_cards) {
-        AppendProjected(mesh.leaves, leaves[rep], projection, &atlas.leaves);
-        AppendProjected(mesh.flowers, flowers[rep], projection, &atlas.flowers);
+        AppendProjected(mesh.leaves, mesh.leaves.uvs, leaves[rep], projection, &atlas.leaves);
+        AppendProjected(mesh.flowers, mesh.flowers.uvs, flowers[rep], projection, &atlas.flowers);
       }
       if (atlas.bark.indices.size() + atlas.leaves.indices.size() > before) ++atlas.tiles;
     }
@@ -114,10 +120,10 @@ AtlasMesh BuildAtlasMesh(const TreeMesh& mesh, const HybridScene& scene) {
       std::size_t before = atlas.leaves.indices.size() + atlas.flowers.indices.size();
       for (int b : cluster.branches) {
         if (b < 0 || static_cast<std::size_t>(b) >= branches) continue;
-        AppendProjected(mesh.leaves, leaves[static_cast<std::size_t>(b)], projection,
-                        &atlas.leaves);
-        AppendProjected(mesh.flowers, flowers[static_cast<std::size_t>(b)], projection,
-                        &atlas.flowers);
+        AppendProjected(mesh.leaves, mesh.leaves.uvs, leaves[static_cast<std::size_t>(b)],
+                        projection, &atlas.leaves);
+        AppendProjected(mesh.flowers, mesh.flowers.uvs, flowers[static_cast<std::size_t>(b)],
+                        projection, &atlas.flowers);
       }
       if (atlas.leaves.indices.size() + atlas.flowers.indices.size() > before) ++atlas.tiles;
     }

@@ -27,7 +27,11 @@ struct AtlasMesh {
 // its leaves and flowers) seen along the plane's normal and mapped onto the tile's rectangle
 // [u0, u1] x [v0, v1] -> texels [x, x + w] x [y, y + h] (the uv that BuildDrawList gives the card).
 // For every (cluster, plane) tile: the leaves and flowers of the cluster's branches likewise.
-AtlasMesh BuildAtlasMesh(const TreeMesh& mesh, const HybridScene& scene);
+// bark_uvs (u, v per bark vertex of `mesh`, as mesh.bark.uvs), when given, are the bark's texture
+// coordinates instead of mesh.bark.uvs: a simulated bark's tile wrapped around every tube
+// (compose/bark_on_tree WrapBarkUvs), so the cards wear the bark the full view wears.
+AtlasMesh BuildAtlasMesh(const TreeMesh& mesh, const HybridScene& scene,
+                         const std::vector<float>* bark_uvs = nullptr);
 
 // Sway skin of a draw list (core/sway/skin.h): per card vertex and per line endpoint the node point
 // and eq. 3.15 weight it follows. A branch card's base corners follow the branch's base (its

@@ -15,6 +15,7 @@ uniform int uNodes;  // node points of the unique tree: the size of one instance
 out vec3 vNormal;
 out vec3 vWorld;
 out float vSelected;
+out vec2 vUv;  // tree.frag's texture coordinates: none here (plain colours)
 
 #include "../common/skin.glsl"
 
@@ -26,5 +27,6 @@ void main() {
   vNormal = rotation * aNormal;  // uniform scale, no instance rotation: only the sway turns normals
   vWorld = world;
   vSelected = 0.0;
+  vUv = vec2(0.0);
   gl_Position = uViewProjection * vec4(world, 1.0);
 }

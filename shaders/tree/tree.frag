@@ -1,11 +1,19 @@
 #version 300 es
 // Lit tree parts: half-Lambert sun plus a sky/ground hemisphere ambient.
 // uDoubleSided = 1 for leaves and petals: the back face is lit with the flipped normal.
+// uUseTexture = 1 (the grove renderer's card atlas of a tree in simulated bark, the garden's far
+// trees): the base colour is uBaseMap at vUv instead of uColor, as shaders/garden/garden.frag
+// takes its bark map; 0 everywhere else (the plain colours).
 precision highp float;
 
 in vec3 vNormal;
 in vec3 vWorld;
 in float vSelected;  // 1 on the selected branch, 0.5 above it (drawn highlighted)
+in vec2 vUv;
+
+uniform sampler2D uBaseMap;  // RGBA8, row 0 = v 0 (with uUseTexture = 1)
+uniform float uUseTexture;
+uniform float uAlphaCutoff;  // with uUseTexture: texels below it are cut out (0: none)
 
 uniform vec3 uColor;
 uniform vec3 uColorVariation;  // added with a per-position hash (leaf-to-leaf variation)
@@ -28,6 +36,11 @@ void main() {
   vec3 n = normalize(vNormal);
   if (uDoubleSided > 0.5 && !gl_FrontFacing) n = -n;
   vec3 base = uColor + uColorVariation * (hash(floor(vWorld * 40.0)) - 0.5);
+  if (uUseTexture > 0.5) {
+    vec4 texel = texture(uBaseMap, vUv);
+    if (texel.a < uAlphaCutoff) discard;
+    base = texel.rgb;
+  }
   float diffuse = max(dot(n, uLightDirection), 0.0);
   if (uDoubleSided > 0.5) diffuse = 0.25 + 0.75 * diffuse;  // thin parts let light through
   vec3 sky = vec3(0.62, 0.72, 0.85);

@@ -27,7 +27,8 @@
 // garden's .glb == native `niwa garden grow --garden F.json --out g.glb` with the files beside.
 // Bark: the default garden wears the procedural bark; the panel's bark row (ticked with plant_seed's
 // edit, one regrow) draws each distinct tree's simulated maps (their digests the stats' bark runs'),
-// a trunk close-up differing from the same frame without them.
+// a trunk close-up differing from the same frame without them; in Trees: hybrid the far copies'
+// card atlases are painted from those maps (a view from 13 m differs from the plain brown's).
 // Screenshots: build/artifacts/garden-*.png.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -369,6 +370,54 @@ await runBrowserTest(async (server, browser) => {
   const afterGrow = await dataset();
   check('the regrow stopped the wind (Blow again, no pose since)', data.wind === 'off' && (await page.textContent('#wind')) === 'Blow' && Number(afterGrow.posesDrawn) === posesAfterGrow && posesAfterGrow > posesBefore,
     `wind ${data.wind}, poses drawn ${posesBefore} -> ${posesAfterGrow} -> ${afterGrow.posesDrawn}`);
+
+  // 2a. Trees: hybrid with bark 1: each distinct tree in simulated bark has its card atlas's bark
+  // painted from its map (its atlas uvs wrap the tile, as the full trees'); a view from 13 m of a
+  // tree in simulated bark (it and its neighbours beyond 12 m drawn as cards and lines) with the
+  // atlases so painted and then in the plain brown (the full trees untouched, the same draw lists):
+  // the cards' bark pixels differ. (From 45 m, the whole garden, no pixel differed by more than 30
+  // in a trial: a far tree's card bark is a few texels, and its thin branches are eq. 4.2 lines in
+  // the procedural brown.) LOOK at garden-hybrid-bark-sim.png.
+  {
+    const lookAt = async (options) => {
+      const { serial: n, view } = await page.evaluate((o) => window.__niwaGardenLook(o), options);
+      await page.waitForFunction((k) => Number(document.documentElement.dataset.drawnLook) >= k, n, { timeout: TIMEOUT });
+      return { view };
+    };
+    const simTree = ((await page.evaluate(() => window.__niwaGardenBounds?.() ?? null))?.trees || []).find((t) => digests[t.group]);
+    const overview = { x: simTree?.pos[0] ?? 0, z: simTree?.pos[2] ?? 0, up: 1, distance: 13 };
+    const { view: before } = await lookAt({ ...overview, bark: true, hybridBark: true });
+    let serialNow = Number(await hookNow('hybridSerial'));
+    await page.selectOption('#trees-mode', 'hybrid');
+    await waitHybrid(serialNow);
+    const on = await dataset();
+    await page.evaluate(() => { window.__hybridBarkOn = window.__niwaCanvasImage('#view').data; });
+    await saveCanvasPng(page, 'garden-hybrid-bark-sim.png');
+    check(`Trees hybrid, bark 1: every simulated tree's atlas painted from its bark map (${on.hybridBarkTrees} of ${data.barkTrees}; ${on.hybridTrees} copies hybrid, ${on.fullTrees} full)`,
+      Number(on.hybridBarkTrees) > 0 && on.hybridBarkTrees === data.barkTrees && Number(on.hybridTrees) > 0 && Boolean(simTree));
+    serialNow = Number(on.hybridSerial);
+    await lookAt({ ...overview, bark: true, hybridBark: false });
+    await waitHybrid(serialNow);
+    const off = await dataset();
+    await saveCanvasPng(page, 'garden-hybrid-bark-procedural.png');
+    // Pixels that differ by more than 30 (sum of |dR|, |dG|, |dB|), and that differ at all: with the
+    // atlases painted alike the two frames are the same (the same draw lists), so none would.
+    const diff = await page.evaluate(() => {
+      const a = window.__hybridBarkOn, b = window.__niwaCanvasImage('#view').data;
+      delete window.__hybridBarkOn;
+      let n = 0, any = 0;
+      for (let i = 0; i < a.length; i += 4) {
+        const d = Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]);
+        if (d > 30) ++n;
+        if (d > 0) ++any;
+      }
+      return { n, any, pixels: a.length / 4 };
+    });
+    check(`Trees hybrid, bark 1: the cards' bark differs from the plain brown's (${diff.n} of ${diff.pixels} pixels by more than 30, ${diff.any} at all; ${off.hybridBarkTrees} atlases with bark after; ${on.fullTrees} copies full)`,
+      diff.n >= 10 && off.hybridBarkTrees === '0' && off.fullTrees === on.fullTrees && Number(on.hybridTrees) > 0);
+    await page.selectOption('#trees-mode', 'full');
+    await lookAt({ view: before, bark: true, hybridBark: true });
+  }
 
   // 2b. A bad value: a line beside its field naming the range; the page keeps working. The good
   // value it then takes is 3 years, and the edits below (place, move, remove, grounds, the link,

@@ -418,7 +418,12 @@ TEST(BarkOnTree, TheDressedGlbCarriesBothFrames) {
     EXPECT_EQ(colour.wrap_t, gltf::Wrap::kRepeat);
   }
   EXPECT_EQ(dressed, 2);
-  EXPECT_TRUE(gltf::WriteGlb(*doc).ok());
+  // BarkTreeGlb (the CLI's and the tree page's .glb) is this document's bytes.
+  Result<std::vector<unsigned char>> glb = gltf::WriteGlb(*doc);
+  ASSERT_TRUE(glb.ok());
+  Result<std::string> bytes = BarkTreeGlb(tree, BuildTreeMesh(tree), *bark);
+  ASSERT_TRUE(bytes.ok()) << bytes.status().Line();
+  EXPECT_EQ(*bytes, std::string(glb->begin(), glb->end()));
   // Too small a budget: refused naming "bark" before any step.
   Budget tight;
   tight.memory_bytes = 1 << 20;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "support/grow.h"
 #include "tree/growth.h"
@@ -13,7 +14,9 @@
 namespace niwa {
 namespace {
 
-Tree GrowForAtlas(const std::string& preset, int years) { return testing::GrowPreset(preset, years); }
+Tree GrowForAtlas(const std::string& preset, int years) {
+  return testing::GrowPreset(preset, years);
+}
 
 // True when clip point (x, y) lies in some tile (half a texel of slack).
 bool InSomeTile(const HybridScene& scene, float x, float y) {
@@ -59,6 +62,36 @@ TEST(AtlasMesh, EveryProjectedVertexLandsInATileInBothLeafModes) {
     ExpectInTiles(scene, atlas.leaves, "leaves");
     ExpectInTiles(scene, atlas.flowers, "flowers");
   }
+}
+
+// Given bark uvs (a simulated bark's wrapped tile) are the atlas bark's texture coordinates, corner
+// by corner, and leave the positions and the leaves alone; the mesh's own uvs without them.
+TEST(AtlasMesh, GivenBarkUvsAreTheCardsBarkUvs) {
+  Tree tree = GrowForAtlas("sakura-thesis", 4);
+  TreeMesh mesh = BuildTreeMesh(tree);
+  HybridScene scene = BuildHybridScene(tree, RenderOptions{});
+  std::vector<float> uvs(mesh.bark.uvs.size());
+  for (std::size_t i = 0; i < uvs.size(); ++i) uvs[i] = 1000.0f + static_cast<float>(i);
+  const AtlasMesh plain = BuildAtlasMesh(mesh, scene);
+  const AtlasMesh wrapped = BuildAtlasMesh(mesh, scene, &uvs);
+  ASSERT_GT(plain.bark.uvs.size(), 0u);
+  EXPECT_EQ(wrapped.bark.positions, plain.bark.positions);
+  EXPECT_EQ(wrapped.leaves.uvs, plain.leaves.uvs);
+  // Each atlas vertex's uv is the override at the mesh vertex its plain uv came from: the pairs
+  // map one to one (the plain uvs of distinct mesh vertices may coincide, so compare through u).
+  ASSERT_EQ(wrapped.bark.uvs.size(), plain.bark.uvs.size());
+  int from_override = 0;
+  for (std::size_t k = 0; k < wrapped.bark.uvs.size(); k += 2) {
+    const float u = wrapped.bark.uvs[k], v = wrapped.bark.uvs[k + 1];
+    const std::size_t i = static_cast<std::size_t>(u - 1000.0f);  // 2 × the mesh vertex
+    if (i % 2 == 0 && i + 1 < uvs.size() && v == uvs[i + 1] &&
+        plain.bark.uvs[k] == mesh.bark.uvs[i] && plain.bark.uvs[k + 1] == mesh.bark.uvs[i + 1])
+      ++from_override;
+  }
+  EXPECT_EQ(from_override, static_cast<int>(wrapped.bark.uvs.size() / 2));
+  // Of another length (not this mesh's bark): the mesh's own.
+  const std::vector<float> short_uvs(2, 5.0f);
+  EXPECT_EQ(BuildAtlasMesh(mesh, scene, &short_uvs).bark.uvs, plain.bark.uvs);
 }
 
 // Bark triangles in the atlas = the representatives' triangles times the planes per card.

@@ -360,7 +360,11 @@ class GardenLab {
   // Group `group`'s atlas geometry into "atlas.*"; its atlas side (texels), 0 for no such group.
   int hybridAtlas(int group) {
     if (group < 0 || group >= hybridGroups()) return 0;
-    atlas_ = BuildAtlasMesh(compose::GardenGroupMeshAt(*run_, group, hybrid_year_), hybrid_[group]);
+    const TreeMesh mesh = compose::GardenGroupMeshAt(*run_, group, hybrid_year_);
+    // A tree in simulated bark: the cards' bark wraps its tile, as the full trees' "uvs" do.
+    const std::vector<float> bark_uvs =
+        compose::GardenGroupBarkUvs(*run_, group, hybrid_year_, mesh);
+    atlas_ = BuildAtlasMesh(mesh, hybrid_[group], bark_uvs.empty() ? nullptr : &bark_uvs);
     return hybrid_[group].atlas_size;
   }
   // Eq. 4.1 per branch of group `group` for a camera in its own frame (metres, radians, pixels)

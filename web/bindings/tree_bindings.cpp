@@ -45,8 +45,9 @@
 //   paramsJson(). dressBark() -> "" or the error record: the bark the state's rows `bark` and
 //   `bark_model` ask for on the tree as grown (core/compose/bark_on_tree's GrowTreeBark, the CLI's
 //   run; 512 px maps, within the page budget; bark 0 the procedural bark again):
-//   buffers("bark").uvs then wrap its maps, barkTexture("bark" | "barkNormal") gives them ({width,
-//   height, pixels, digest}, null when not dressed), barkJson() its summary.
+//   buffers("bark").uvs and the card atlas's "atlas.bark" uvs (buildHybrid) then wrap its maps,
+//   barkTexture("bark" | "barkNormal") gives them ({width, height, pixels, digest}, null when not
+//   dressed), barkJson() its summary, and buildGlb() writes them into the .glb (BarkTreeGlb).
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
@@ -379,11 +380,24 @@ class TreeSession {
     return out.dump();
   }
 
-  // Binary glTF of the mesh last built (buildMesh); "" or one error line. Then glbBytes() views it.
+  // Binary glTF of the mesh last built (buildMesh); "" or one error line. Then buffers("glb").
+  // With the bark dressed (dressBark), the tree in its simulated bark: core/compose/bark_on_tree's
+  // BarkTreeGlb, the bytes of `niwa tree grow --bark sim --out t.glb` for the same state, height
+  // and map size (the old and the young shoots' maps: base colour, normal, occlusion), checked
+  // first as the CLI checks it (the tree held, the .glb's work and the bark's, naming "bark").
   std::string buildGlb() {
     TreeExportRequest request;
     request.kind = TreeExportRequest::Kind::kGlb;
-    return Export(request);
+    if (!bark_ || !run_) return Export(request);
+    glb_.clear();
+    const Status fits =
+        CheckEstimate(run_->Held() + run_->ExportWork(request) + bark_->plan.estimate, PageBudget(),
+                      "set bark 0, or grow fewer years");
+    if (!fits.ok()) return ErrorText(Status::Error("bark", fits.message()));
+    Result<std::string> bytes = compose::BarkTreeGlb(run_->tree(), run_->mesh(), *bark_);
+    if (!bytes.ok()) return ErrorText(bytes.status());
+    glb_.assign(bytes->begin(), bytes->end());
+    return "";
   }
 
   // Game-ready .glb (issue 17 item 4, core/render/tree_lod): within max_triangles (< 0: the full
@@ -424,7 +438,14 @@ class TreeSession {
     const Status error = CheckRenderOptions(options);
     if (!error.ok()) return ErrorText(error);
     hybrid_ = BuildHybridScene(run_->tree(), options);
-    atlas_ = BuildAtlasMesh(run_->mesh(), hybrid_);
+    // A dressed bark's cards wear its tile as the full view does (buffers("bark").uvs).
+    if (bark_) {
+      const std::vector<float> bark_uvs =
+          compose::WrapBarkUvs(run_->tree(), run_->mesh(), bark_->old_bark);
+      atlas_ = BuildAtlasMesh(run_->mesh(), hybrid_, &bark_uvs);
+    } else {
+      atlas_ = BuildAtlasMesh(run_->mesh(), hybrid_);
+    }
     has_selection_ = false;
     slots_.clear();
     return hybrid_.atlas_fits ? ""

@@ -10,7 +10,10 @@
 // copies are turned so that the camera sees them from the same side as that copy (their own turn
 // is not kept: at a band's distance a tree's turn does not show, a card seen edge-on would).
 // Blow sways the full trees only: the page refuses it in hybrid (garden_page.js canBlow).
+// A distinct tree in simulated bark (bark 1) has its atlas's bark painted from its bark map (the
+// full trees' texture), so its far copies wear the simulated bark too.
 // Test hooks: data-trees-mode, data-hybrid-serial (rounds on screen), data-hybrid-pending,
+// data-hybrid-bark-trees (distinct trees whose atlas was painted from their simulated bark),
 // data-hybrid-trees, data-full-trees, data-hybrid-ms (a round's time, request to lists),
 // data-drawn-hybrid-serial (the round of the last frame drawn); window.__niwaGardenFrameMs(n): the
 // median ms of n whole frames of the view on screen (Frame.timeFrames).
@@ -47,6 +50,7 @@ export class GardenHybrid {
     this.dirty = false;
     this.tag = 0;
     this.serial = 0;
+    this.barkShown = true;  // false: the atlases in the plain bark brown (a test's A/B, showBark)
     worker.on('gardenAtlas', (msg) => this.#atlas(msg));
     worker.on('gardenDrawLists', (msg) => this.#lists(msg));
     select.addEventListener('change', () => this.setMode(select.value));
@@ -76,6 +80,16 @@ export class GardenHybrid {
     this.run = run;
     this.#reset();
     if (this.mode === 'hybrid') this.#ask();
+  }
+
+  // The simulated bark on the atlases (true) or the plain brown (a test's A/B of one view): in
+  // hybrid mode a change repaints them (a new round).
+  showBark(on) {
+    if (this.barkShown === Boolean(on)) return;
+    this.barkShown = Boolean(on);
+    if (this.mode !== 'hybrid') return;
+    this.#reset();
+    this.#ask();
   }
 
   // The worker could not build the hybrid scenes (its error record): full again, with its line.
@@ -123,9 +137,18 @@ export class GardenHybrid {
       return;
     }
     this.layer.clearTrees();
-    msg.atlases.forEach((hybrid, g) => this.layer.addCards(g, hybrid));
+    // A distinct tree in simulated bark (bark 1): its cards' bark painted from its base colour map
+    // (the full trees' texture, GardenRenderer.barks; the worker's atlas uvs wrap its tile).
+    const barks = this.barkShown ? this.full()?.barks || [] : [];
+    let barkTrees = 0;
+    msg.atlases.forEach((hybrid, g) => {
+      const bark = barks[g] ? { bark: { texture: barks[g].colour } } : null;
+      if (bark) barkTrees += 1;
+      this.layer.addCards(g, hybrid, bark);
+    });
     this.worker.recycle(atlasGroups(msg.atlases));
     this.atlases = true;
+    this.#hooks({ hybridBarkTrees: barkTrees });
     const plan = this.#plan();
     if (plan) this.#round(plan);
   }

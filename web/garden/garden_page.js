@@ -812,14 +812,17 @@ window.__niwaGardenBounds = () => bounds;
 
 // For a test: the camera aimed at ground point (x, z), `up` metres above it, from `distance`
 // metres (a trunk close-up), or put back to `view` (what an earlier call returned), and the
-// simulated bark shown or left off (an A/B of the same frame). Returns {serial, view}: the frame
-// drawn after it sets data-drawn-look to serial; view, the camera as it was.
-window.__niwaGardenLook = ({ x = 0, z = 0, up = 0.8, distance = 3, bark = true, view = null } = {}) => {
+// simulated bark shown or left off (an A/B of the same frame): `bark` on the full trees,
+// `hybridBark` (default: bark) on the hybrid trees' card atlases (repainted when it changes in
+// hybrid mode: a new round, data-hybrid-serial). Returns {serial, view}: the frame drawn after it
+// sets data-drawn-look to serial; view, the camera as it was.
+window.__niwaGardenLook = ({ x = 0, z = 0, up = 0.8, distance = 3, bark = true, hybridBark = bark, view = null } = {}) => {
   if (!renderer) return null;
   const before = { target: [...camera.target], distance: camera.distance, yaw: camera.yaw, pitch: camera.pitch };
   if (view) Object.assign(camera, { target: [...view.target], distance: view.distance, yaw: view.yaw, pitch: view.pitch });
   else Object.assign(camera, { target: [x, renderer.heightAt(x, z) + up, z], distance });
   renderer.barkShown = bark;
+  hybrid?.showBark(hybridBark);
   lookSerial += 1;
   requestFrame();
   return { serial: lookSerial, view: before };

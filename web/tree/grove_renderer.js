@@ -39,6 +39,11 @@ export class GroveRenderer extends StudyLayer {
       line: ['grove_line.vert', 'grove_line.frag'], atlas: ['atlas.vert', 'tree.frag'],
     });
     this.treeProgram = p.tree;
+    // tree.frag's base map (read only by the atlas, uUseTexture 1) on the pose unit of the full
+    // trees' draws: an active sampler never points at another unit's texture of another kind.
+    this.gl.useProgram(p.tree.program);
+    this.gl.uniform1i(p.tree.uniforms.uBaseMap, 1);
+    this.gl.useProgram(null);
     this.cardProgram = p.card;
     this.lineProgram = p.line;
     this.atlasProgram = p.atlas;
@@ -107,10 +112,12 @@ export class GroveRenderer extends StudyLayer {
 
   // Unique tree `index` drawn only in hybrid mode (the garden's far copies, web/garden/garden_hybrid.js):
   // its card atlas painted from the worker's hybrid geometry (as addTree's), no full mesh, one pose
-  // block at rest (every band member's pose block 0).
-  addCards(index, hybrid) {
+  // block at rest (every band member's pose block 0). textures: null (plain colours) or
+  // {bark: {texture}}: a simulated bark's base colour map, which the atlas's bark is painted from
+  // through the geometry's bark uvs (the worker wraps its tile, as the full trees').
+  addCards(index, hybrid, textures = null) {
     this.#dropTree(this.trees[index]);
-    this.trees[index] = { parts: {}, instanceBuffer: null, instances: 1, atlas: this.#paintAtlas(hybrid), nodes: 1, poseTexture: this.gl.createTexture(), poseRows: 0 };
+    this.trees[index] = { parts: {}, instanceBuffer: null, instances: 1, atlas: this.#paintAtlas(hybrid, textures), nodes: 1, poseTexture: this.gl.createTexture(), poseRows: 0, textured: Boolean(textures?.bark) };
     this.setRestPoses(index);
   }
 
@@ -177,7 +184,8 @@ export class GroveRenderer extends StudyLayer {
 
   // The card atlas of one unique tree (thesis 4.2.1), painted once from clip-space triangles, lit
   // by the sun like the full view, transparent elsewhere, mipmapped; shared by all its instances.
-  #paintAtlas(hybrid) {
+  // textures: paintAtlas's (kind -> {texture}), or null for the plain colours.
+  #paintAtlas(hybrid, textures = null) {
     const gl = this.gl;
     const size = hybrid.atlasSize;
     const texture = gl.createTexture();
@@ -194,7 +202,7 @@ export class GroveRenderer extends StudyLayer {
     gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
     gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
     gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, this.atlasDepth.rb);
-    paintAtlas(gl, this.atlasProgram, hybrid, fb, texture, this.light);
+    paintAtlas(gl, this.atlasProgram, hybrid, fb, texture, this.light, textures);
     gl.deleteFramebuffer(fb);
     return texture;
   }
