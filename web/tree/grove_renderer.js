@@ -117,7 +117,7 @@ export class GroveRenderer extends StudyLayer {
   // through the geometry's bark uvs (the worker wraps its tile, as the full trees').
   addCards(index, hybrid, textures = null) {
     this.#dropTree(this.trees[index]);
-    this.trees[index] = { parts: {}, instanceBuffer: null, instances: 1, atlas: this.#paintAtlas(hybrid, textures), nodes: 1, poseTexture: this.gl.createTexture(), poseRows: 0, textured: Boolean(textures?.bark) };
+    this.trees[index] = { parts: {}, instanceBuffer: null, instances: 1, atlas: this.#paintAtlas(hybrid, textures), nodes: 1, poseTexture: this.gl.createTexture(), poseRows: 0 };
     this.setRestPoses(index);
   }
 
