@@ -357,8 +357,20 @@ const CrackMeasures& BarkRun::cracks() const {
 }
 
 const BarkMaps& BarkRun::maps() const {
-  if (!maps_) maps_ = DrawMaps(state_.params.GetInt(BarkParam::kMapSize));
+  if (!maps_)
+    maps_ = DrawMaps(map_width_ > 0 ? map_width_ : state_.params.GetInt(BarkParam::kMapSize));
   return *maps_;
+}
+
+Status BarkRun::SetMapWidth(int width) {
+  if (width != 0 && (width < 16 || width > 4096 || width % 2 != 0)) {
+    return Status::Error("map_width", std::to_string(width) +
+                                          " is out of range; must be 0 or an even width in "
+                                          "[16, 4096]");
+  }
+  if (width != map_width_) maps_.reset();
+  map_width_ = width;
+  return Status::Ok();
 }
 
 BarkMaps BarkRun::DrawMaps(int width) const {

@@ -90,6 +90,11 @@ class BarkRun : public run::StudyRun {
   // A new state: a changed grow row, species, model or seed regrows at the next Advance; only
   // map_size changed: the maps are redrawn on demand from the kept surface.
   Status Update(const BarkState& state);
+  // Draws the maps (maps(), MapPng, Parts) `width` px wide (even, in [16, 4096]; the rows follow
+  // MapHeightPx) instead of the state's map_size: the composition tier's narrow tiles (a thin
+  // trunk's tile is tall and narrow; compose/bark_on_tree's GrowOldBark keeps its longer side at
+  // map_size). 0: the state's map_size again. Errors name "map_width".
+  Status SetMapWidth(int width);
 
   const char* study() const override { return "bark"; }
   const char* unit() const override { return "cycles"; }
@@ -158,6 +163,7 @@ class BarkRun : public run::StudyRun {
   std::vector<BarkSample> samples_;
   mutable std::optional<CrackMeasures> cracks_;
   mutable std::optional<BarkMaps> maps_;
+  int map_width_ = 0;  // SetMapWidth's width; 0: the state's map_size
   std::optional<FourLayer> four_;
   bool record_frames_ = false;
   std::vector<std::string> frames_;

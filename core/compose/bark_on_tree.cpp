@@ -46,7 +46,9 @@ Result<std::string> Map(const bark::BarkRun& run, const char* name) {
   return png;
 }
 
-Result<BarkFrame> Frame(const bark::BarkRun& run) {
+// with_height: the 16-bit height map's PNG too (the garden's frames go without: nothing of the
+// garden reads it).
+Result<BarkFrame> Frame(const bark::BarkRun& run, bool with_height = true) {
   BarkFrame frame;
   Result<std::string> png = Map(run, "base_colour");
   if (!png.ok()) return png.status();
@@ -57,25 +59,55 @@ Result<BarkFrame> Frame(const bark::BarkRun& run) {
   png = Map(run, "orm");
   if (!png.ok()) return png.status();
   frame.orm = std::move(png).value();
-  png = Map(run, "height");
-  if (!png.ok()) return png.status();
-  frame.height = std::move(png).value();
+  if (with_height) {
+    png = Map(run, "height");
+    if (!png.ok()) return png.status();
+    frame.height = std::move(png).value();
+  }
   const bark::Growth g = run.growth();
   frame.tile_width_m = run.lattice().circumference() * g.s_theta / kCmPerMetre;
   frame.tile_height_m = run.lattice().height() * g.s_z / kCmPerMetre;
   frame.hash = run.Hash("");
   frame.colour_pixels = run.maps().base_colour;
+  frame.mean_colour = image::MeanLinearRgb(frame.colour_pixels);
   frame.normal_pixels = run.maps().normal;
   return frame;
 }
 
+// The maps' width for a tile of circumference cf and height hf (cm) whose longer side is `size`
+// px: `size` when the tile is at least as wide as it is tall, else the power of two nearest
+// size·cf/hf, in [32, size] (MapHeightPx then gives about `size` rows).
+int FitMapWidth(int size, double cf, double hf) {
+  if (!(cf > 0) || !(hf > cf)) return size;
+  const double want = size * cf / hf;
+  int best = size;
+  double best_ratio = 1e300;
+  for (int p = 32; p <= size; p *= 2) {
+    const double r = std::max(p / want, want / p);
+    if (r < best_ratio) {
+      best_ratio = r;
+      best = p;
+    }
+  }
+  return best;
+}
+
+// Runs the state and frames it; fit: the maps' longer side is the state's map_size (FitMapWidth),
+// else their width is.
 Result<BarkFrame> RunFrame(const bark::BarkState& state, const Budget& budget,
-                           const run::Observer& observer) {
+                           const run::Observer& observer, bool fit = false) {
   Result<bark::BarkRun> started = bark::BarkRun::Start(state, budget);
   if (!started.ok()) return Status::Error("bark", started.status().Line());
   bark::BarkRun& run = *started;
   NIWA_RETURN_IF_ERROR(run.Advance(observer));
-  return Frame(run);
+  if (fit) {
+    const bark::Growth g = run.growth();
+    const int width =
+        FitMapWidth(state.params.GetInt(bark::BarkParam::kMapSize),
+                    run.lattice().circumference() * g.s_theta, run.lattice().height() * g.s_z);
+    NIWA_RETURN_IF_ERROR(run.SetMapWidth(width));
+  }
+  return Frame(run, /*with_height=*/!fit);
 }
 
 // The bark buffers' vertex range of each drawn branch: BuildTreeMesh writes one branch's tube
@@ -366,7 +398,7 @@ Result<BarkFrame> GrowOldBark(const BarkOnTreePlan& plan, const Budget& budget,
                               const run::Observer& observer) {
   const Status fits = CheckEstimate(OldBarkEstimate(plan), budget, "lower the bark's map size");
   if (!fits.ok()) return Status::Error("bark", fits.message());
-  return RunFrame(plan.state, budget, observer);
+  return RunFrame(plan.state, budget, observer, /*fit=*/true);
 }
 
 void DressBarkMaterial(const BarkFrame& frame, const std::string& name, gltf::Material* material,

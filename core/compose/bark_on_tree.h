@@ -12,6 +12,7 @@
 // "bark_model", "bark_map_size").
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -113,10 +114,13 @@ Result<BarkOnTreePlan> PlanBarkOnTree(const TrunkHistory& history,
 
 // One frame of bark maps (PNG bytes) and the tile they cover on the trunk.
 struct BarkFrame {
-  std::string base_colour, normal, orm, height;
+  std::string base_colour, normal, orm, height;    // height: empty in GrowOldBark's frames
   double tile_width_m = 0, tile_height_m = 0;      // circumference and height of the grown patch
   std::string hash;                                // the bark run's share hash
   image::Rgba8Image colour_pixels, normal_pixels;  // the page's textures (row 0 = v 0)
+  // The base colour map's mean in linear values (image::MeanLinearRgb): the colour a far tree's
+  // eq. 4.2 lines take as C_b in the garden's hybrid view.
+  std::array<double, 3> mean_colour = {0, 0, 0};
 };
 struct BarkOnTree {
   BarkOnTreePlan plan;
@@ -148,7 +152,10 @@ Result<BarkOnTree> GrowTreeBark(const std::vector<TrunkHistory>& trunks,
                                 const run::Observer& observer = nullptr);
 
 // The plan's old bark run alone (no young shoots' run: the garden wears one frame on every tube),
-// checked against `budget` with its own estimate (OldBarkEstimate): a refusal names "bark".
+// checked against `budget` with its own estimate (OldBarkEstimate): a refusal names "bark". Its
+// maps' longer side is the plan's map_size: a thin trunk's tall, narrow tile gets a narrower map
+// (a power of two, at least 32 px wide) at the texel density of its height, not a map_size-wide
+// one up to 16× as tall (docs/garden-model.md, "Bark").
 Result<BarkFrame> GrowOldBark(const BarkOnTreePlan& plan, const Budget& budget,
                               const run::Observer& observer = nullptr);
 // The old bark run's estimate (its run and maps; plan.estimate counts both runs).

@@ -83,8 +83,8 @@ std::vector<ParamSpec> GardenRows() {
        "rest: camphor)."},
       {GardenId(GP::kBarkMapSize), "bark_map_size", "", "px", 256, 256, 4096, true, "bark",
        kGardenGrow,
-       "Width of each simulated bark's maps around the trunk (a power of two): small, since the "
-       "garden is seen from afar."},
+       "Longer side of each simulated bark's maps (a power of two; a thin trunk's tall tile "
+       "gets a narrower map): small, since the garden is seen from afar."},
   };
 }
 

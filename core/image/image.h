@@ -3,6 +3,7 @@
 // bark, a terrain's height); no GL, no JS.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -58,5 +59,10 @@ Gray16Image MakeGray16(int width, int height, uint16_t value = 0);
 // Sets every pixel.
 void Fill(Rgba8Image* image, unsigned char r, unsigned char g, unsigned char b, unsigned char a);
 void Fill(Gray16Image* image, uint16_t value);
+
+// The mean colour of an sRGB image's pixels (alpha aside) in linear values (the sRGB transfer
+// function per byte, then the mean): what a renderer sampling it as an sRGB texture averages to.
+// {0, 0, 0} for an empty image.
+std::array<double, 3> MeanLinearRgb(const Rgba8Image& image);
 
 }  // namespace niwa::image

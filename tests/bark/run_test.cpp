@@ -125,6 +125,14 @@ TEST(BarkRun, AMapSizeUpdateOnlyRedraws) {
   ASSERT_TRUE(run->Update(s).ok());
   EXPECT_EQ(run->steps(), steps);
   EXPECT_EQ(run->maps().base_colour.width, 512);
+  // A width of the caller's (the composition tier's narrow tiles) redraws at it; 0 goes back.
+  ASSERT_TRUE(run->SetMapWidth(64).ok());
+  EXPECT_EQ(run->maps().base_colour.width, 64);
+  EXPECT_EQ(run->steps(), steps);
+  EXPECT_EQ(run->SetMapWidth(15).field(), "map_width");
+  EXPECT_EQ(run->SetMapWidth(8192).field(), "map_width");
+  ASSERT_TRUE(run->SetMapWidth(0).ok());
+  EXPECT_EQ(run->maps().base_colour.width, 512);
   ASSERT_TRUE(s.params.Set(BarkParam::kSigma, 0.2).ok());
   ASSERT_TRUE(run->Update(s).ok());
   EXPECT_EQ(run->steps(), 0);  // regrows at the next Advance
@@ -168,8 +176,9 @@ TEST(BarkRun, TheDocumentedWorkloadsFitTheDefaultBudget) {
   EXPECT_EQ(BarkRun::Start(four, budget).status().field(), "max_seconds");
 }
 
-// Check is Start's refusal without the lattice: the same answer, for the page's worker to ask before
-// it grows a preview (a 64 × 32 stand-in of a 100-cycle state fits where the state does not).
+// Check is Start's refusal without the lattice: the same answer, for the page's worker to ask
+// before it grows a preview (a 64 × 32 stand-in of a 100-cycle state fits where the state does
+// not).
 TEST(BarkRun, CheckRefusesWhatStartRefusesWithoutBuilding) {
   const Budget budget;
   BarkState s;

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "bark/bark_params.h"
@@ -156,7 +157,23 @@ TEST(GardenBark, BarkOneChangesOnlyTheBarkAndWearsItsMaps) {
   const Result<image::Rgba8Image> colour = GardenGroupBarkImage(*sim, 0, false);
   const Result<image::Rgba8Image> normal = GardenGroupBarkImage(*sim, 0, true);
   ASSERT_TRUE(colour.ok() && normal.ok());
-  EXPECT_EQ(colour->width, sim->barks().map_size);
+  // The map's longer side is map_size (a power of two either way, GrowOldBark): a thin trunk's
+  // tall tile gets a narrower map, its texels about square on the trunk.
+  const int size = sim->barks().map_size;
+  EXPECT_LT(colour->width, size) << "this 3-year trunk's tile is taller than it is wide";
+  EXPECT_GE(std::max(colour->width, colour->height), size / 2);
+  EXPECT_LE(std::max(colour->width, colour->height), 2 * size);
+  const double texel_aspect = (f.tile_width_m / colour->width) / (f.tile_height_m / colour->height);
+  EXPECT_GT(texel_aspect, 0.5) << colour->width << " x " << colour->height;
+  EXPECT_LT(texel_aspect, 2.0) << colour->width << " x " << colour->height;
+  EXPECT_TRUE(f.height.empty()) << "the garden reads no height map";
+  // The far tree's line colour (C_b in the hybrid view): the map's mean, a bark's dull colour.
+  EXPECT_EQ(f.mean_colour,
+            image::MeanLinearRgb(f.colour_pixels.empty() ? *colour : f.colour_pixels));
+  for (double c : f.mean_colour) {
+    EXPECT_GT(c, 0.005);
+    EXPECT_LT(c, 0.8);
+  }
   EXPECT_EQ(colour->pixels.size(), static_cast<std::size_t>(4 * colour->width * colour->height));
   EXPECT_NE(colour->pixels, normal->pixels);
   EXPECT_EQ(GardenGroupBarkImage(*plain, 0, false).status().field(), "bark");

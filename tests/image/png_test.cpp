@@ -111,6 +111,19 @@ TEST(Image, MakeAndFill) {
   EXPECT_TRUE(MakeRgba8(5, -1).pixels.empty());
 }
 
+// The sRGB image's mean in linear values: white and black average to 0.5 (not sRGB 128's
+// 0.2158), sRGB 128 alone is 0.2158, alpha is ignored, an empty image is black.
+TEST(Image, MeanLinearRgbAveragesAfterTheTransferFunction) {
+  Rgba8Image two = MakeRgba8(2, 1, 0, 128, 255, 7);
+  two.At(1, 0)[0] = 255;
+  const std::array<double, 3> m = MeanLinearRgb(two);
+  EXPECT_DOUBLE_EQ(m[0], 0.5);
+  EXPECT_NEAR(m[1], 0.21586, 1e-5);
+  EXPECT_DOUBLE_EQ(m[2], 1.0);
+  EXPECT_NEAR(MeanLinearRgb(MakeRgba8(1, 1, 10, 10, 10))[0], 10 / 255.0 / 12.92, 1e-12);
+  EXPECT_EQ(MeanLinearRgb(Rgba8Image{})[0], 0.0);
+}
+
 TEST(Png, Gray16RoundTripKeepsEverySample) {
   for (auto [w, h] : {std::pair{1, 1}, std::pair{37, 23}, std::pair{256, 3}}) {
     const Gray16Image image = Ramp16(w, h);

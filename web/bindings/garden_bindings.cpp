@@ -368,11 +368,13 @@ class GardenLab {
     return hybrid_[group].atlas_size;
   }
   // Eq. 4.1 per branch of group `group` for a camera in its own frame (metres, radians, pixels)
-  // with the hysteresis of `slot` (0..255, per group), lines lit from (lx, ly, lz); fills "cards"
-  // and "lines" (their skin at rest: joints and weights 0). "" or an error record naming "view".
+  // with the hysteresis of `slot` (0..255, per group), lines lit from (lx, ly, lz); with `bark`
+  // and the group in simulated bark, the lines' C_b is its base colour map's mean (else the
+  // procedural brown); fills "cards" and "lines" (their skin at rest: joints and weights 0). ""
+  // or an error record naming "view".
   std::string hybridView(int group, int slot, double ex, double ey, double ez, double tx, double ty,
                          double tz, double fov_y, int width, int height, double lx, double ly,
-                         double lz) {
+                         double lz, bool bark) {
     if (group < 0 || group >= hybridGroups() || slot < 0 || slot > 255)
       return ErrorText(Status::Error("view", "group or slot out of range (no hybrid scene?)"));
     const Tree* tree = run_->TreeAtYear(group, hybrid_year_);
@@ -383,6 +385,11 @@ class GardenLab {
     LineShading shading;
     shading.light_dir =
         glm::vec3(static_cast<float>(lx), static_cast<float>(ly), static_cast<float>(lz));
+    if (const compose::BarkFrame* frame = bark ? compose::GardenGroupBark(*run_, group) : nullptr) {
+      const std::array<double, 3>& c = frame->mean_colour;
+      shading.branch_color =
+          glm::vec3(static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2]));
+    }
     draw_ = BuildDrawList(*tree, hybrid_[group], selection, camera, shading);
     previous = std::move(selection);
     draw_joints_.assign(draw_.card_positions.size() / 3, 0u);

@@ -217,9 +217,9 @@ export class GardenLab {
   hybridGroups(): number;
   /** Group `group`'s card-atlas geometry into "atlas.bark|leaves|flowers"; its atlas side (0: none). */
   hybridAtlas(group: number): number;
-  /** Group `group`'s draw list ("cards", "lines") for a camera in its frame, hysteresis of `slot` (0..255), lines lit from (lx, ly, lz): "" or an error record naming "view". */
+  /** Group `group`'s draw list ("cards", "lines") for a camera in its frame, hysteresis of `slot` (0..255), lines lit from (lx, ly, lz), their C_b the group's simulated bark's mean colour when `bark` (else the procedural brown): "" or an error record naming "view". */
   hybridView(group: number, slot: number, ex: number, ey: number, ez: number, tx: number, ty: number, tz: number,
-    fovY: number, width: number, height: number, lx: number, ly: number, lz: number): string;
+    fovY: number, width: number, height: number, lx: number, ly: number, lz: number, bark: boolean): string;
   statsJson(): string;
   hash(): string;
   stateJson(): string;

@@ -206,7 +206,7 @@ export class GardenHybrid {
     this.pending = { tag: ++this.tag, start: performance.now(), lists: plan.lists, mask: plan.mask, keys: plan.keys };
     this.keys = plan.keys;
     this.#hooks({ hybridPending: 1 });
-    this.worker.post('hybridViews', { tag: this.tag, light: [...this.frame.light], views });
+    this.worker.post('hybridViews', { tag: this.tag, light: [...this.frame.light], bark: this.barkShown, views });
   }
 
   #lists(msg) {

@@ -30,7 +30,7 @@
 // Hybrid trees (thesis ch. 4, the grove's; web/garden/garden_hybrid.js): 'hybrid' ({year, grows})
 // builds each distinct tree's hybrid scene of that year and answers {type: 'gardenAtlas', year,
 // run, atlases: [per group {atlasSize, bark, leaves, flowers}]} (the card atlas's geometry, as the
-// tree handler's 'tree' hybrid); 'hybridViews' ({tag, light, views: [{group, slot, camera: {eye,
+// tree handler's 'tree' hybrid); 'hybridViews' ({tag, light, bark, views: [{group, slot, camera: {eye,
 // target, fovY, width, height}}]}) answers {type: 'gardenDrawLists', tag, run, lists: [per view
 // {group, slot, cards: {positions, uvs, indices, joints, weights}, lines: {positions, colors,
 // widths}}]}, each view's eq. 4.1 choice with its (group, slot)'s hysteresis.
@@ -207,7 +207,7 @@ export function createHandler(Module, ctx) {
       const eye = c.eye || [0, 0, 10], target = c.target || [0, 0, 0];
       const error = errorOf(entry.lab.hybridView(Number(v.group), Number(v.slot), n(eye[0], 0), n(eye[1], 0), n(eye[2], 10),
         n(target[0], 0), n(target[1], 0), n(target[2], 0), n(c.fovY, Math.PI / 4), Math.round(n(c.width, 512)),
-        Math.round(n(c.height, 512)), n(light[0], 0.3), n(light[1], 0.8), n(light[2], 0.5)));
+        Math.round(n(c.height, 512)), n(light[0], 0.3), n(light[1], 0.8), n(light[2], 0.5), msg.bark !== false));
       if (error) throw new Error(error.message);
       lists.push({
         group: v.group, slot: v.slot,

@@ -219,7 +219,8 @@
  *   Hybrid trees (web/garden/garden_hybrid.js): {type: 'hybrid', year, grows?} -> {type:
  *   'gardenAtlas', year, run, atlases: [per distinct tree {atlasSize, bark, leaves, flowers}: the
  *   card atlas's geometry]} (an error with control: 'trees' when a scene cannot be built); {type:
- *   'hybridViews', tag, light, views: [{group, slot (0..255), camera: {eye, target, fovY, width,
+ *   'hybridViews', tag, light, bark (default true: a tree in simulated bark colours its lines with its
+ *   map's mean), views: [{group, slot (0..255), camera: {eye, target, fovY, width,
  *   height} in the tree's frame}]} -> {type: 'gardenDrawLists', tag, run, lists: [per view {group,
  *   slot, cards: {positions, uvs, indices, joints, weights}, lines: {positions, colors, widths}}]}.
  * @typedef {Envelope & {type: 'wind', play: boolean, wind?: Object}} GardenWindMessage
