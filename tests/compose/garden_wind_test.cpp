@@ -145,6 +145,10 @@ TEST(GardenWind, TheWindRowsAreChecked) {
   Result<ParamSet> order = GardenWindRows(30, R"({"gust_on": 10, "gust_off": 5})");
   ASSERT_FALSE(order.ok());
   EXPECT_EQ(order.status().field(), "gust_off");
+  // A front that would take 15 m / 0.001 m/s = 15000 s to the centre: past gust_on's range.
+  Result<ParamSet> slow = GardenWindRows(30, R"({"gust_front_speed": 0.001})");
+  ASSERT_FALSE(slow.ok());
+  EXPECT_EQ(slow.status().field(), "gust_front_speed");
   Result<ParamSet> instant = GardenWindRows(30, R"({"gust_front_speed": 0})");
   ASSERT_TRUE(instant.ok());
   EXPECT_EQ(instant->Get(TreeParam::kGustOn), 0.0);
