@@ -2,11 +2,14 @@
 // grow' (the stage, the planting and every tree grown on one clock; the .glb, the 16-bit heightmap,
 // the plan as SVG, the statistics as one JSON object) and 'garden plant' (the planting rules alone:
 // positions as JSON, fast), and the table for 'niwa params garden'. A thin adapter over
-// compose::GardenRun: flags into a state (the garden file's heightmap, ground mesh and mask read
-// relative to the file), the run, its outputs written all or none, the stats with the CLI's
-// timings. cli-order: 70
+// compose::GardenRun (and, with --wind-time, compose::GardenWind over its trees): flags into a
+// state (the garden file's heightmap, ground mesh and mask read relative to the file), the run, its
+// outputs written all or none, the stats with the CLI's timings. `--wind-time T` sways the grown
+// trees T seconds in the state's wind (the page's Blow) and prints each tree's sway under "wind".
+// cli-order: 70
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -18,6 +21,7 @@
 #include "compose/garden_params.h"
 #include "compose/garden_run.h"
 #include "compose/garden_state.h"
+#include "compose/garden_wind.h"
 #include "io/hash_codec.h"
 #include "io/mesh_reader.h"
 #include "params/param_text.h"
@@ -39,6 +43,7 @@ struct GardenOptions {
   std::string garden, url, out, heightmap, svg;
   std::vector<std::string> sets;
   double years = -1, seed = -1;  // -1: not given
+  double wind_time = -1;         // -1: no wind (garden grow)
   bool stats = false;
   BudgetOptions budget;
 };
@@ -86,7 +91,21 @@ compose::GardenState ResolveGardenState(const GardenOptions& o) {
   }
   if (o.years >= 0) Check(AsFlag(state.params.Set(GardenParam::kYears, o.years), "--years"));
   if (o.seed >= 0) Check(AsFlag(state.params.Set(GardenParam::kPlantSeed, o.seed), "--seed"));
-  for (const std::string& s : o.sets) Check(state.params.SetFromAssignment(s).Within("--set"));
+  for (const std::string& s : o.sets) {
+    // wind.KEY=VALUE: a row of the garden's wind (the tree table's "wind" group).
+    if (s.rfind("wind.", 0) == 0) {
+      const std::size_t eq = s.find('=');
+      const std::string key = s.substr(5, eq == std::string::npos ? std::string::npos : eq - 5);
+      if (!compose::IsGardenWindKey(key))
+        Fail(Status::Error("--set", "wind." + Echo(key) +
+                                        " is not a wind row of the garden (niwa params tree, "
+                                        "group wind, but gust_on)"));
+      const Status set = state.wind.SetFromAssignment(s.substr(5));
+      if (!set.ok()) Fail(Status::Error("--set", "wind." + set.Line()));
+      continue;
+    }
+    Check(state.params.SetFromAssignment(s).Within("--set"));
+  }
   compose::LayOutDefaults(&state);
   Check(run::RenameField(compose::CheckGardenState(state), kGardenFlags));
   return state;
@@ -124,6 +143,18 @@ int RunGardenGrow(const GardenOptions& o, std::ostream& out) {
   }
   Check(staged.Commit());
   const auto t3 = std::chrono::steady_clock::now();
+  // The wind (the page's Blow): every grown tree swayed wind_time s in the state's wind.
+  std::string wind_stats;
+  if (o.wind_time >= 0) {
+    Result<ParamSet> rows =
+        compose::GardenWindRows(run->scene().ground.size, run->state().wind, "");
+    if (!rows.ok()) Fail(rows.status().Within("wind"));
+    Result<compose::GardenWind> wind = compose::GardenWind::Start(*run, *rows, budget);
+    if (!wind.ok()) Fail(wind.status().Within("--wind-time"));
+    wind->Step(static_cast<int>(std::lround(o.wind_time / wind->dt())));
+    wind_stats = wind->StatsJson(*run);
+  }
+  const auto t4 = std::chrono::steady_clock::now();
   nlohmann::ordered_json j;
   if (o.stats) {
     j = nlohmann::ordered_json::parse(run->StatsJson());
@@ -139,6 +170,7 @@ int RunGardenGrow(const GardenOptions& o, std::ostream& out) {
     j["ms_trees"] = Ms(t1, t2) - run->ms_ivy() - (run->ms_moss() - moss_start_ms) - run->ms_bark();
     j["ms_growth"] = run->ms_growth();  // within ms_trees: the trees' own years
     j["ms_export"] = Ms(t2, t3);
+    if (!wind_stats.empty()) j["ms_wind"] = Ms(t3, t4);
   } else {
     j["trees"] = run->planting().trees.size();
     j["distinct_trees"] = run->groups().size();
@@ -146,6 +178,7 @@ int RunGardenGrow(const GardenOptions& o, std::ostream& out) {
     j["hash"] = run->Hash("");
     j["written"] = written;
   }
+  if (!wind_stats.empty()) j["wind"] = nlohmann::ordered_json::parse(wind_stats);
   out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
   return 0;
 }
@@ -186,7 +219,9 @@ void AddGardenStateFlags(CLI::App* cmd, GardenOptions* o) {
   AddNumberFlag(cmd, "--seed", &o->seed, GardenRowRange(GardenParam::kPlantSeed),
                 "Seed of the planting rules (the plant_seed row), " +
                     RangeHelp(GardenRowRange(GardenParam::kPlantSeed)));
-  cmd->add_option("--set", o->sets, "KEY=VALUE of the garden table (niwa params garden)");
+  cmd->add_option("--set", o->sets,
+                  "KEY=VALUE of the garden table (niwa params garden), or wind.KEY=VALUE of the "
+                  "garden's wind (niwa params tree, group wind, but gust_on)");
   cmd->add_flag("--stats", o->stats, "Print the statistics (with timings) as one JSON object");
   AddBudgetOptions(cmd, &o->budget);
 }
@@ -225,6 +260,13 @@ void AddGardenCommands(CLI::App& app, CommandList& commands) {
                 "Write the ground as a 16-bit grey PNG (row 0 north; size and relief in its text)");
   AddOutputFlag(grow, "--svg", &o->svg, {".svg"},
                 "Write the plan as .svg (north up: ground by height, objects, crowns by species)");
+  const FlagRange wind_range =
+      RowFlagRange(TreeParams().table().row(static_cast<std::size_t>(TreeParam::kSwayDuration)));
+  AddNumberFlag(grow, "--wind-time", &o->wind_time, wind_range,
+                "Sway the grown trees this many seconds in the garden's wind (the page's Blow: a "
+                "gust front entering at the upwind edge) and print each tree's sway under "
+                "\"wind\", " +
+                    RangeHelp(wind_range) + " s");
   commands.push_back({grow, [o](std::ostream& out) { return RunGardenGrow(*o, out); }, example});
 
   CLI::App* plant = garden_app->add_subcommand(

@@ -109,6 +109,10 @@ class GardenRun : public run::StudyRun {
   Result<std::string> Export(const std::string& format) const;
 
   const GardenState& state() const { return state_; }
+  // The wind of Blow and `niwa garden grow --wind-time` (state().wind; ApplyGardenWindJson's rows
+  // and errors): not the growth's, so the garden grown stays as it is; Hash and the state's JSON
+  // carry it.
+  Status SetWind(const std::string& json) { return ApplyGardenWindJson(json, &state_); }
   const GardenScene& scene() const { return scene_; }
   const Planting& planting() const { return planting_; }
   const std::vector<GardenTreeGroup>& groups() const { return groups_; }

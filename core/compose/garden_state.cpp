@@ -33,6 +33,12 @@ bool KnownObjectKind(const std::string& kind) {
 
 std::string ObjectKindList() { return "wall, rock, lantern or mesh (with a file)"; }
 
+std::string JoinWindKeys() {
+  std::string out;
+  for (const std::string& k : GardenWindKeys()) out += (out.empty() ? "" : ", ") + k;
+  return out;
+}
+
 // A finite number from a JSON value, else the error naming `field`.
 Result<double> GardenNumber(const json& v, const std::string& field, const std::string& what) {
   if (!v.is_number()) return Status::Error(field, "must be " + what);
@@ -218,6 +224,23 @@ Result<GardenIvyTarget> ParseIvyTarget(std::string_view text, const GardenState&
   return t;
 }
 
+namespace {
+
+// The wind's rows together (the derived gust_on before gust_off, a front that reaches the centre
+// within gust_on's range), their errors under "wind.".
+Status CheckGardenWind(const GardenState& state) {
+  const Result<ParamSet> rows =
+      GardenWindRows(state.params.Get(GardenParam::kSize), state.wind, "");
+  if (rows.ok()) return Status::Ok();
+  const std::string& field = rows.status().field();
+  return Status::Error(
+      field.empty() || field == "wind" ? "wind" : "wind." + field,
+      rows.status().message() +
+          (field == "gust_off" ? ", the time the front reaches the garden's centre" : ""));
+}
+
+}  // namespace
+
 Status CheckGardenState(const GardenState& state) {
   const double half = state.params.Get(GardenParam::kSize) / 2;
   const std::string range = "[" + FormatNumber(-half) + ", " + FormatNumber(half) + "]";
@@ -293,7 +316,7 @@ Status CheckGardenState(const GardenState& state) {
   if (state.ground == GroundKind::kMesh && state.ground_mesh.triangle_count() == 0 &&
       state.heightmap_name.empty())
     return Status::Error("ground.file", "a mesh ground needs a .glb, .gltf or .obj file");
-  return Status::Ok();
+  return CheckGardenWind(state);
 }
 
 Status LoadGardenMeshes(const GardenMeshReader& read, GardenState* state) {
@@ -403,6 +426,50 @@ moss::MossState GardenMossDefaults() {
   return state;
 }
 
+namespace {
+
+// {wind_speed: 12, ...} onto `wind`, each key a garden wind row and its value in the row's range;
+// errors name "wind.<key>" (or "wind").
+Status ApplyWindRows(const json& v, TreeParams* wind) {
+  if (!v.is_object())
+    return Status::Error(
+        "wind", "must be an object {key: value} of the wind rows (" + JoinWindKeys() + ")");
+  TreeParams next = *wind;
+  for (const auto& [k, value] : v.items()) {
+    if (!IsGardenWindKey(k))
+      return Status::Error("wind." + Echo(k), "not a wind row; the garden's wind has " +
+                                                  JoinWindKeys() +
+                                                  " (gust_on follows from the front)");
+    if (!value.is_number()) return Status::Error("wind." + Echo(k), "must be a number");
+    const Status set = next.SetFromText(k, FormatNumber(value.get<double>()));
+    if (!set.ok()) return Status::Error("wind." + Echo(k), set.message());
+  }
+  *wind = next;
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status ApplyGardenWindJson(const std::string& text, GardenState* state) {
+  const json j = json::parse(text, nullptr, false);
+  if (j.is_discarded()) return Status::Error("wind", "is not JSON; must be {key: value}");
+  GardenState next = *state;
+  NIWA_RETURN_IF_ERROR(ApplyWindRows(j, &next.wind));
+  NIWA_RETURN_IF_ERROR(CheckGardenWind(next));
+  state->wind = next.wind;
+  return Status::Ok();
+}
+
+std::string GardenWindJson(const GardenState& state) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  const TreeParams base = GardenWindBase();
+  for (std::size_t r = 0; r < state.wind.size(); ++r) {
+    const std::string key = state.wind.table().row(r).key;
+    if (IsGardenWindKey(key) && state.wind.Get(r) != base.Get(r)) j[key] = state.wind.Get(r);
+  }
+  return j.dump();
+}
+
 Status ApplyGardenStateJson(const std::string& text, GardenState* state) {
   json j = json::parse(text, nullptr, false);
   if (j.is_discarded() || !j.is_object())
@@ -505,6 +572,8 @@ Status ApplyGardenStateJson(const std::string& text, GardenState* state) {
           return Status::Error("ivy." + Echo(k), "unknown field; ivy has preset and on");
         }
       }
+    } else if (key == "wind") {
+      NIWA_RETURN_IF_ERROR(ApplyWindRows(v, &next.wind));
     } else if (key == "mask") {
       if (v.is_null()) {
         next.mask_name.clear();
@@ -565,6 +634,8 @@ std::string GardenStateJson(const GardenState& state) {
   const std::string moss_json = moss::MossStateJson(state.moss);
   if (moss_json != moss::MossStateJson(GardenMossDefaults()))
     j["moss"] = nlohmann::ordered_json::parse(moss_json);
+  const std::string wind_json = GardenWindJson(state);
+  if (wind_json != "{}") j["wind"] = nlohmann::ordered_json::parse(wind_json);
   return j.dump(2);
 }
 
@@ -600,6 +671,12 @@ std::string EncodeGardenHash(const GardenState& state, std::string_view prefix) 
     hash += "&" + terrain::EncodeTerrainHash(state.terrain, pre + "terrain.");
   if (moss::MossStateJson(state.moss) != moss::MossStateJson(GardenMossDefaults()))
     hash += "&" + moss::EncodeMossHash(state.moss, pre + "moss.");
+  const TreeParams wind_base = GardenWindBase();
+  for (std::size_t r = 0; r < state.wind.size(); ++r) {
+    const std::string key = state.wind.table().row(r).key;
+    if (IsGardenWindKey(key) && state.wind.Get(r) != wind_base.Get(r))
+      hash += "&" + pre + "wind." + key + "=" + FormatNumber(state.wind.Get(r));
+  }
   return pre + hash;
 }
 
@@ -616,8 +693,24 @@ void ApplyGardenHash(std::string_view hash, std::string_view prefix, GardenState
     return kv.first != pre + "ivy" && kv.first != pre + "ivy_preset";
   });
   const std::string moss_prefix = pre + "moss.";
+  const std::string wind_prefix = pre + "wind.";
   bool moss_keys = false;
+  bool wind_keys = false;
   for (const auto& [key, value] : pairs) {
+    if (key.rfind(wind_prefix, 0) == 0) {
+      // The wind's rows, clamped into range as every table's (io/hash_codec ApplyHashParam).
+      if (IsGardenWindKey(std::string_view(key).substr(wind_prefix.size()))) {
+        std::vector<std::string> wind_notices;
+        ApplyHashParam(key, value, wind_prefix, &state->wind, &wind_notices);
+        if (notices != nullptr)
+          notices->insert(notices->end(), wind_notices.begin(), wind_notices.end());
+        wind_keys = true;
+      } else if (notices != nullptr) {
+        notices->push_back(Printable(key) + ": not a wind row of the garden (" + JoinWindKeys() +
+                           "); dropped");
+      }
+      continue;
+    }
     if (key.rfind(terrain_prefix, 0) == 0) {
       terrain_keys = true;
       continue;
@@ -719,6 +812,14 @@ void ApplyGardenHash(std::string_view hash, std::string_view prefix, GardenState
     moss::ApplyMossHash(hash, moss_prefix, &state->moss, &moss_notices);
     if (notices != nullptr)
       notices->insert(notices->end(), moss_notices.begin(), moss_notices.end());
+  }
+  if (wind_keys) {
+    const Status wind = CheckGardenWind(*state);
+    if (!wind.ok()) {
+      if (notices != nullptr)
+        notices->push_back(wind.Line() + "; the wind is the garden's default");
+      state->wind = GardenWindBase();
+    }
   }
   if (was_default && !state->default_layout && !ivy_given) state->ivy_on.clear();
   // The default layout anew for the link's size, keeping the ivy's targets a link gave (ivy= alone:

@@ -17,6 +17,7 @@
 
 #include "base/status.h"
 #include "compose/garden_params.h"
+#include "compose/garden_wind_rows.h"
 #include "geom/tri_mesh.h"
 #include "image/image.h"
 #include "moss/moss_state.h"
@@ -88,6 +89,10 @@ struct GardenState {
   // The moss's preset and rows (climate, sun, light, life cycle: niwa params moss); its scene,
   // days and seed are the garden's (its land, years × moss_days, plant_seed), not read here.
   moss::MossState moss = GardenMossDefaults();
+  // The wind of the page's Blow and of `niwa garden grow --wind-time` (not the growth's: an edit of
+  // it regrows nothing): the tree table's "wind" rows but gust_on (IsGardenWindKey), the garden's
+  // defaults over the table's (GardenWindBase); the other rows are not read.
+  TreeParams wind = GardenWindBase();
   // True until objects or plants are given (a state JSON's lists, a link's): the objects and the
   // hand-placed tree are then the default layout, laid out anew for the garden's size
   // (LayOutDefaults), so a smaller garden keeps them inside.
@@ -132,8 +137,9 @@ void LayOutDefaults(GardenState* state);
 GardenState DefaultGardenState();
 
 // Checks what the table's ranges cannot: species names (tree presets), object kinds, every
-// position inside the garden, alt_min <= alt_max, a non-empty mix when density > 0. Errors name
-// the field ("plants[1].species", "objects[0].pos", "mix", "alt_min").
+// position inside the garden, alt_min <= alt_max, a non-empty mix when density > 0, the wind's
+// rows together (gust_off after the derived gust_on: GardenWindRows). Errors name the field
+// ("plants[1].species", "objects[0].pos", "mix", "alt_min", "wind.gust_off").
 Status CheckGardenState(const GardenState& state);
 
 // A front end's reader of a mesh file by the name a garden state gives it (the CLI: beside the
@@ -171,18 +177,27 @@ Status LoadGardenImages(const GardenFileReader& read, GardenState* state);
 // {...the terrain's state JSON...}, file: "h.png" or "hill.glb"}, objects: [{kind, pos: [x, z],
 // rot, scale}], plants:
 // [{species, seed, age, pos: [x, z], rot}], mix: {species: weight}, mask: "m.png", ivy: {preset,
-// on: ["objects[0]", "plants[1]"]}, moss: {...the moss's state JSON...}} onto state.
+// on: ["objects[0]", "plants[1]"]}, moss: {...the moss's state JSON...}, wind: {wind_speed: 12,
+// ...: rows IsGardenWindKey accepts}} onto state.
 // Given lists replace the state's; a heightmap's, a ground mesh's and a mask's file names are kept
 // for the front end to read (their bytes and mesh are cleared). Strict: the first bad field is the
 // error, the state unchanged.
 Status ApplyGardenStateJson(const std::string& text, GardenState* state);
+// Applies {wind_speed: 12, wind_dir: 90, ...} (rows IsGardenWindKey accepts) onto state->wind,
+// then checks them together (CheckGardenState's wind part). Strict: errors name "wind.<key>" (or
+// "wind"), the state unchanged.
+Status ApplyGardenWindJson(const std::string& text, GardenState* state);
+// The state's wind rows that differ from GardenWindBase, as {key: value} in table order ("{}" when
+// none).
+std::string GardenWindJson(const GardenState& state);
 // What ApplyGardenStateJson reads back to the same state (files by name).
 std::string GardenStateJson(const GardenState& state);
 
 // The share-link hash: the table's rows that differ from the defaults, ground=flat|terrain|
 // heightmap, the terrain's keys under "terrain.", objects=kind:x:z:rot:scale,..., plants=
 // species:seed:age:x:z:rot,..., mix=species:weight,..., ivy=objects[0],..., ivy_preset=artist, the
-// moss's keys under "moss." when its state is not GardenMossDefaults', mask=1 when the state has a
+// moss's keys under "moss." when its state is not GardenMossDefaults', the wind's rows that differ
+// from GardenWindBase under "wind." (wind.wind_speed=12), mask=1 when the state has a
 // mask (a heightmap, a ground mesh, a mesh object or a mask is not carried: a link of such a
 // garden says so in `notices` when read). Keys carry `prefix`.
 std::string EncodeGardenHash(const GardenState& state, std::string_view prefix = "");

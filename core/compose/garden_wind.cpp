@@ -28,47 +28,6 @@ void TakeWindRows(const ParamSet& wind, ParamSet* params) {
 
 }  // namespace
 
-const std::vector<GardenWindValue>& GardenWindDefaults() {
-  static const std::vector<GardenWindValue> kDefaults = {
-      {"wind_speed", 8},       {"wind_dir", 0},         {"gust_off", 600},       {"duration", 600},
-      {"gust_front_speed", 4}, {"wind_variation", 0.4}, {"wind_wavelength", 25}, {"wind_period", 5},
-  };
-  return kDefaults;
-}
-
-Result<ParamSet> GardenWindRows(double size, const std::string& json) {
-  ParamSet wind = TreeParams();
-  for (const GardenWindValue& v : GardenWindDefaults()) {
-    const std::optional<std::size_t> row = wind.table().Find(v.key);
-    if (row) NIWA_RETURN_IF_ERROR(wind.Set(*row, v.value));
-  }
-  bool gust_on_given = false;
-  if (!json.empty()) {
-    const nlohmann::json j = nlohmann::json::parse(json, nullptr, false);
-    if (j.is_discarded() || !j.is_object())
-      return Status::Error("wind", "must be a JSON object of the wind rows");
-    for (auto it = j.begin(); it != j.end(); ++it) {
-      const std::optional<std::size_t> row = wind.table().Find(it.key());
-      if (!row || !IsWindRow(wind.table().row(*row)))
-        return Status::Error("wind", "'" + it.key().substr(0, 40) +
-                                         "' is not a wind row (niwa params tree, group wind)");
-      gust_on_given = gust_on_given || it.key() == "gust_on";
-    }
-    NIWA_RETURN_IF_ERROR(ApplyParamsJson(json, &wind));
-  }
-  if (!gust_on_given) {
-    // The upwind edge of the square: its corner farthest against the wind, |cos| + |sin| half
-    // sides upwind of the origin.
-    const double front = wind.Get(TreeParam::kGustFrontSpeed);
-    double s = 0, c = 1;
-    det::SinCos(wind.Get(TreeParam::kWindDir) * (det::kPi / 180.0), &s, &c);
-    const double upwind = 0.5 * size * (std::abs(c) + std::abs(s));
-    NIWA_RETURN_IF_ERROR(wind.Set(TreeParam::kGustOn, front > 0 ? upwind / front : 0.0));
-  }
-  NIWA_RETURN_IF_ERROR(CheckSwayParams(wind));
-  return wind;
-}
-
 Result<GardenWind> GardenWind::Start(const GardenRun& run, const ParamSet& wind,
                                      const Budget& budget) {
   GardenWind w;
@@ -128,6 +87,7 @@ Result<GardenWind> GardenWind::Start(const GardenRun& run, const ParamSet& wind,
 }
 
 void GardenWind::Step(int steps) {
+  steps_ += steps;
   for (Group& g : groups_)
     for (std::unique_ptr<SwaySimulator>& sim : g.copies)
       for (int i = 0; i < steps; ++i) sim->Step();
@@ -147,6 +107,36 @@ void GardenWind::WritePoses(float* out) const {
     for (std::size_t k = 0; k < g.copies.size(); ++k)
       WriteSwayPoses(*g.copies[k], cm_to_units,
                      out + (g.first + k * static_cast<std::size_t>(g.nodes)) * kSwayPoseFloats);
+}
+
+std::string GardenWind::StatsJson(const GardenRun& run) const {
+  const std::vector<PlacedTree>& placed = run.planting().trees;
+  std::vector<double> sway(placed.size(), 0.0);
+  std::vector<float> poses;
+  for (std::size_t g = 0; g < groups_.size() && g < run.groups().size(); ++g) {
+    const Group& group = groups_[g];
+    poses.resize(static_cast<std::size_t>(group.nodes) * kSwayPoseFloats);
+    for (std::size_t k = 0; k < group.copies.size(); ++k) {
+      WriteSwayPoses(*group.copies[k], MeshOptions{}.cm_to_units, poses.data());
+      double sum = 0;
+      for (int j = 0; j < group.nodes; ++j) {
+        const float* p = poses.data() + static_cast<std::size_t>(j) * kSwayPoseFloats;
+        sum += std::sqrt(static_cast<double>(p[3]) * p[3] + static_cast<double>(p[7]) * p[7] +
+                         static_cast<double>(p[11]) * p[11]);
+      }
+      const int t = run.groups()[g].trees[k];
+      if (t >= 0 && static_cast<std::size_t>(t) < sway.size()) sway[t] = sum;
+    }
+  }
+  nlohmann::ordered_json j;
+  j["time"] = time_;
+  j["steps"] = steps_;
+  j["dt"] = dt_;
+  j["wind_speed"] = SpeedAt(0, 0);
+  j["trees"] = nlohmann::ordered_json::array();
+  for (std::size_t t = 0; t < placed.size(); ++t)
+    j["trees"].push_back({{"x", placed[t].x}, {"z", placed[t].z}, {"sway", sway[t]}});
+  return j.dump();
 }
 
 double GardenWind::SpeedAt(double x, double z) const {

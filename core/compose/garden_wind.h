@@ -3,7 +3,7 @@
 // over the whole garden, a gust front entering at the garden's upwind edge; every copy's node-point
 // poses in one array, and each distinct tree's per-vertex sway skin of its page mesh
 // (compose/garden_view). Does not: grow, mesh or draw trees, run on a clock (the caller steps it),
-// or sway a recorded year's trees (the last grown only).
+// or sway a recorded year's trees (the last grown only). The wind's rows: garden_wind_rows.h.
 #pragma once
 
 #include <cstddef>
@@ -14,29 +14,12 @@
 #include "base/budget.h"
 #include "base/status.h"
 #include "compose/garden_run.h"
+#include "compose/garden_wind_rows.h"
 #include "sway/skin.h"
 #include "sway/sway.h"
 #include "sway/sway_budget.h"
 
 namespace niwa::compose {
-
-// The garden's wind before any override: the grove page's (web/tree/grove_page.js WIND), rows of
-// the tree table's "wind" group: 8 m/s towards +x, a gust front at 4 m/s, a ±40 % wave 25 m long
-// every 5 s, for 600 s. gust_on is not among them: by default the front reaches the garden's upwind
-// edge at t = 0 (GardenWindRows).
-struct GardenWindValue {
-  const char* key;
-  double value;
-};
-const std::vector<GardenWindValue>& GardenWindDefaults();
-
-// The wind rows (a tree-table ParamSet, only its "wind" group read) of a Blow: the table's
-// defaults, GardenWindDefaults over them, then `json` ({"wind_speed": 5, ...}: keys of the tree
-// table's "wind" group only, each checked against its row; "" or "{}" for none). Without gust_on in
-// `json`, gust_on is the time the front takes from the garden's upwind edge (a square of side
-// `size` m about the origin) to the origin, so the gust enters the garden as the wind starts (0
-// when the front is instant). Errors name the key ("wind_speed", "gust_off") or "wind".
-Result<ParamSet> GardenWindRows(double size, const std::string& json);
 
 class GardenWind {
  public:
@@ -71,6 +54,11 @@ class GardenWind {
   // Every copy's poses (core/sway/skin.h WriteSwayPoses, metres, the tree's own frame), copy after
   // copy as first_block orders them: blocks() × kSwayPoseFloats floats into `out`.
   void WritePoses(float* out) const;
+  // {time, steps, dt, wind_speed (m/s at the garden's centre now), trees: [{x, z, sway}]}: per
+  // planted tree in planting order (run.planting().trees; `run` the one Start was given), its foot
+  // and the sum over its node points of |M_j| (eq. 3.15 tip offsets, m) now: what `niwa garden grow
+  // --wind-time` prints under "wind" (the same bytes natively and in WASM).
+  std::string StatsJson(const GardenRun& run) const;
   // The wind's speed (m/s) at garden point (x, z) m now.
   double SpeedAt(double x, double z) const;
 
@@ -88,6 +76,7 @@ class GardenWind {
   std::vector<Group> groups_;
   std::size_t blocks_ = 0;
   double time_ = 0, dt_ = 0, duration_ = 0;
+  long steps_ = 0;
   SwayParams wind_;  // the wind rows (of the table's defaults elsewhere): SpeedAt's field
   PageSwayTime timing_;
 };

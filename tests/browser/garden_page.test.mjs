@@ -18,9 +18,12 @@
 // (data-worker-grows and the garden serial unchanged), each answered within two frames, and Play
 // steps through the years to the last; Blow sends a gust front across the garden (the trees west of
 // it sway while those east of it are still at rest; the pixels change, no frame blank)
-// and Still draws the grown shape again; a regrow stops the wind; Trees: hybrid draws the far copies
-// as cards and lines (the trees still show, fewer triangles, orbit and zoom keep them, Blow refused)
-// and full again the same picture;
+// and Still draws the grown shape again; the View's Wind rows (a bad value's line beside its row;
+// wind_dir 180 set without a regrow, in the link) turn the front so the trees east of it sway first;
+// a regrow stops the wind; Trees: hybrid draws the far copies
+// as cards and lines (the trees still show, fewer triangles, orbit and zoom keep them, Blow sways a
+// near full tree and a far card tree: their crown regions' pixels change) and full again the same
+// picture;
 // a 16-bit heightmap opened as the ground, a bad PNG dropped
 // on the view and one opened as the mask (the core's line beside each), a bad mix weight (its line
 // beside the row), the mix edited and a mask opened, the files named beside Copy link, and that
@@ -222,11 +225,49 @@ await runBrowserTest(async (server, browser) => {
   check('Still: the grown shape again (the still garden\'s pixels), the wind off', stillShare < 0.0005 && stilled.wind === 'off' && (await page.textContent('#wind')) === 'Blow',
     `${(stillShare * 100).toFixed(3)} % of pixels differ from before Blow; wind ${stilled.wind}`);
 
+  // 1d'. The Wind rows under Blow (the tree table's wind rows, the state's wind): a bad value is
+  // the core's line beside its row; wind_dir 180 (towards −x) is set in the worker without a regrow
+  // and written into the link (wind.wind_dir=180), and Blow's front then reaches the trees EAST of
+  // it first (the mirror of 1d's split).
+  const windRowsNow = () => page.evaluate(() => document.documentElement.dataset.windRows || '');
+  await page.$eval('#wind-params details', (d) => { d.open = true; });
+  const growsBeforeWind = (await dataset()).workerGrows;
+  await page.fill('#param-wind_speed', '500');
+  await page.waitForFunction(() => document.documentElement.dataset.windRowsError, null, { timeout: TIMEOUT });
+  const windLine = await page.$eval('#wind-error-wind_speed', (p) => (p.hidden ? '' : p.textContent));
+  check('Wind rows: a bad wind_speed is the core\'s one line beside its row', /^wind\.wind_speed: .*100/.test(windLine), windLine);
+  await page.fill('#param-wind_speed', '8');
+  await page.fill('#param-wind_dir', '180');
+  await page.waitForFunction(() => /"wind_dir":180/.test(document.documentElement.dataset.windRows || ''), null, { timeout: TIMEOUT });
+  const windSet = await dataset();
+  check('Wind rows: wind_dir 180 set without a regrow, in the link, the line cleared, the still line in its words',
+    windSet.workerGrows === growsBeforeWind && (await page.evaluate(() => location.hash)).includes('wind.wind_dir=180')
+      && (await page.$eval('#wind-error-wind_speed', (p) => p.hidden)) && /from the east/.test(await page.textContent('#wind-info')),
+    `grows ${growsBeforeWind} -> ${windSet.workerGrows}; rows ${await windRowsNow()}; hash ${await page.evaluate(() => location.hash)}; ${await page.textContent('#wind-info')}`);
+  await page.click('#wind');
+  let eastSplit = null;
+  for (let t0 = Date.now(); Date.now() - t0 < TIMEOUT && !eastSplit; await page.waitForTimeout(150)) {
+    const p = await page.evaluate(() => window.__niwaGardenSway());
+    if (!p) continue;
+    const moving = p.trees.filter((t) => t.offset > 1e-3), still = p.trees.filter((t) => t.offset < 1e-6);
+    if (moving.length > 0 && still.length > 0) {
+      eastSplit = { time: p.time, moving: moving.length, still: still.length,
+        movingMinX: Math.min(...moving.map((t) => t.x)), stillMaxX: Math.max(...still.map((t) => t.x)) };
+    }
+  }
+  check('Wind rows: towards −x the front reaches the trees EAST of it first',
+    eastSplit !== null && eastSplit.movingMinX > eastSplit.stillMaxX - 3,
+    eastSplit ? `t = ${eastSplit.time.toFixed(2)} s: ${eastSplit.moving} swaying (x >= ${eastSplit.movingMinX.toFixed(1)} m), ${eastSplit.still} at rest (x <= ${eastSplit.stillMaxX.toFixed(1)} m)` : 'no split pose');
+  await saveCanvasPng(page, 'garden-blow-east.png');
+  const stillsEast = Number((await dataset()).windStills || 0);
+  await page.click('#wind');
+  await page.waitForFunction((n) => Number(document.documentElement.dataset.windStills || 0) > n, stillsEast, { timeout: TIMEOUT });
+
   // 1e. Trees: hybrid (issue 33 items 6-7): the far copies as the grove's cards and lines (one draw
   // list per distinct tree and distance band), the near ones full. The trees still show (leaf and
   // bark pixels within a factor 3 of full's), fewer triangles, a frame-time ratio logged; an orbit
-  // and a zoom re-request the lists with no frame without its trees; Blow is refused; back to full
-  // the same picture as before.
+  // and a zoom re-request the lists with no frame without its trees; Blow sways the near full
+  // copies and the far cards (below); back to full the same picture as before.
   const hookNow = (k) => page.evaluate((key) => document.documentElement.dataset[key], k);
   const fullLook = await looks(page), fullHooks = await dataset();
   const fullMs = await page.evaluate(() => window.__niwaGardenFrameMs(5));
@@ -246,9 +287,6 @@ await runBrowserTest(async (server, browser) => {
     `leaf ${hybridLook.leaf.toFixed(4)} vs ${fullLook.leaf.toFixed(4)}, bark ${hybridLook.bark.toFixed(4)} vs ${fullLook.bark.toFixed(4)}; ${hybridHooks.hybridTrees} copies hybrid, ${hybridHooks.fullTrees} full; lists in ${hybridHooks.hybridMs} ms`);
   check('Trees hybrid: fewer triangles drawn', Number(hybridHooks.drawnTriangles) < Number(fullHooks.drawnTriangles) / 2,
     `triangles ${fullHooks.drawnTriangles} full -> ${hybridHooks.drawnTriangles} hybrid (+ ${hybridHooks.drawnLines} line segments); draw calls ${fullHooks.drawCalls} -> ${hybridHooks.drawCalls}; frame ${fullMs.toFixed(1)} ms full, ${hybridMs.toFixed(1)} ms hybrid (ratio ${(hybridMs / fullMs).toFixed(2)})`);
-  // Blow sways full trees only: refused with its line in hybrid.
-  await page.click('#wind');
-  check('Trees hybrid: Blow refused with a line', (await hookNow('wind')) !== 'on' && /Trees to full/.test(await page.textContent('#wind-info')), await page.textContent('#wind-info'));
   // Orbit (drags) and zoom (wheel): the lists follow the bands, every frame sampled keeps its trees.
   const viewBox = await page.$eval('#view', (el) => { const r = el.getBoundingClientRect(); return [r.x, r.y, r.width, r.height]; });
   const [cx, cy] = [viewBox[0] + viewBox[2] / 2, viewBox[1] + viewBox[3] / 2];
@@ -285,6 +323,54 @@ await runBrowserTest(async (server, browser) => {
   await saveCanvasPng(page, 'garden-trees-hybrid-near.png');
   check('Trees hybrid: orbit and zoom re-request the lists, no frame without its trees, near copies full', Number(zoomed.hybridSerial) > serialBefore && orbitBlank === 0 && Number(zoomed.fullTrees) > 0 && Number(zoomed.hybridTrees) > 0,
     `${Number(zoomed.hybridSerial) - serialBefore} rounds; ${orbitBlank} of ${orbitSamples} frames sampled without trees (leaf shares ${leaves.join(' ')}); zoomed in: ${zoomed.fullTrees} full, ${zoomed.hybridTrees} hybrid`);
+  // Blow in hybrid: the near copies (full meshes) and the far ones (cards and lines) sway. With
+  // gust_front_speed 0 (a Wind row: the wind everywhere at once) every tree sways from the start;
+  // a few poses later the crown region on screen of a near tree and of a far one (one no near
+  // tree's region overlaps) have pixels that differ from the still frame.
+  await page.fill('#param-gust_front_speed', '0');
+  await page.waitForFunction(() => /"gust_front_speed":0/.test(document.documentElement.dataset.windRows || ''), null, { timeout: TIMEOUT });
+  await page.waitForTimeout(700);  // the still frame after the zoom's motion
+  await page.evaluate(() => { window.__hybridStill = window.__niwaCanvasImage('#view').data; });
+  const posesBeforeHybrid = Number((await dataset()).posesDrawn || 0);
+  await page.click('#wind');
+  await page.waitForFunction((n) => {
+    const d = document.documentElement.dataset;
+    return d.wind === 'on' && Number(d.posesDrawn) >= n + 3 && Number(d.hybridSwayed) > 0;
+  }, posesBeforeHybrid, { timeout: TIMEOUT });
+  const regions = await page.evaluate(() => {
+    const probe = window.__niwaGardenSway();
+    const img = window.__niwaCanvasImage('#view'), a = window.__hybridStill, b = img.data;
+    delete window.__hybridStill;
+    const W = img.width, H = img.height, cw = document.getElementById('view').clientWidth, sc = W / cw;
+    const boxes = [];
+    for (const t of probe?.trees || []) {
+      const foot = window.__niwaGardenScreenOf(t.x, t.z, 0), top = window.__niwaGardenScreenOf(t.x, t.z, 6);
+      if (!foot || !top || !(top[1] < foot[1])) continue;  // behind the eye, or upside down
+      const h = foot[1] - top[1];
+      const box = [Math.round((foot[0] - h / 2) * sc), Math.round(top[1] * sc), Math.round((foot[0] + h / 2) * sc), Math.round(foot[1] * sc)];
+      let n = 0, differ = 0;
+      for (let y = Math.max(0, box[1]); y < Math.min(H, box[3]); ++y) {
+        for (let x = Math.max(0, box[0]); x < Math.min(W, box[2]); ++x) {
+          const i = (y * W + x) * 4;
+          n += 1;
+          if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 30) differ += 1;
+        }
+      }
+      if (n > 0) boxes.push({ x: t.x, z: t.z, full: t.full, offset: t.offset, box, n, differ });
+    }
+    const overlaps = (p, q) => p[0] < q[2] && q[0] < p[2] && p[1] < q[3] && q[1] < p[3];
+    const nearBoxes = boxes.filter((r) => r.full);
+    const best = (list) => list.sort((p, q) => q.differ - p.differ)[0] || null;
+    return { time: probe?.time, near: best(nearBoxes), far: best(boxes.filter((r) => !r.full && !nearBoxes.some((f) => overlaps(f.box, r.box)))), onScreen: boxes.length };
+  });
+  await saveCanvasPng(page, 'garden-trees-hybrid-blow.png');
+  const showRegion = (r) => (r ? `(${r.x.toFixed(1)}, ${r.z.toFixed(1)}) ${r.differ} of ${r.n} px differ, sway ${r.offset?.toFixed(3)} m` : 'none');
+  check('Blow in hybrid: a near (full) tree\'s and a far (cards and lines) tree\'s crown regions change their pixels',
+    regions.near && regions.far && regions.near.differ >= 20 && regions.far.differ >= 5,
+    `t = ${regions.time?.toFixed(2)} s, ${regions.onScreen} trees on screen; near ${showRegion(regions.near)}; far ${showRegion(regions.far)}; ${await hookNow('hybridSwayed')} distinct trees' cards swayed`);
+  const stillsHybrid = Number((await dataset()).windStills || 0);
+  await page.click('#wind');
+  await page.waitForFunction((n) => Number(document.documentElement.dataset.windStills || 0) > n, stillsHybrid, { timeout: TIMEOUT });
   // Back to full, from the view of before: the same picture.
   await page.click('#reset-view');
   await page.selectOption('#trees-mode', 'full');

@@ -52,6 +52,24 @@ const svg = readFileSync(join(a.dir, 'plan.svg'), 'utf8');
 check('plan: one circle a tree, one rect an object', (svg.match(/class="tree"/g) || []).length === s.trees.count
   && (svg.match(/class="object"/g) || []).length === s.objects, `${(svg.match(/class="tree"/g) || []).length} trees`);
 
+// 1a. The garden's wind (the page's Blow): --wind-time sways the grown trees in the state's wind
+// (--set wind.wind_dir=180: towards −x, the front entering at the east edge); native == WASM bytes
+// of the whole output (each tree's sway after 2 s), the wind row in the link, and 2 s after the
+// front entered the 20 m garden the trees east of x = +2 sway while those west of x = −2 are at rest.
+const windArgs = ['garden', 'grow', ...small, '--wind-time', '2', '--set', 'wind.wind_dir=180'];
+const winds = [native, wasm].map((cmd) => spawn(cmd, windArgs));
+check('grow --wind-time: exit 0 both', winds.every((r) => r.status === 0), winds.map((r) => r.stderr).join(''));
+check('grow --wind-time: native == WASM bytes (every tree\'s sway)', winds[0].stdout === winds[1].stdout && winds[0].stdout.length > 0);
+{
+  const w = winds[0].status === 0 ? JSON.parse(winds[0].stdout) : {};
+  const trees = w.wind?.trees ?? [];
+  const east = trees.filter((t) => t.x > 2), west = trees.filter((t) => t.x < -2);
+  check('grow --wind-time: every tree, the east ones swaying, the west ones at rest, the row in the link',
+    trees.length === w.trees && Math.abs(w.wind.time - 2) < 1e-9 && east.length > 0 && west.length > 0
+      && east.every((t) => t.sway > 1e-3) && west.every((t) => t.sway < 1e-6) && /(^|&)wind\.wind_dir=180(&|$)/.test(w.hash),
+    `${trees.length} of ${w.trees} trees; east ${east.map((t) => t.sway.toFixed(4)).join(' ')}; west ${west.map((t) => t.sway.toExponential(1)).join(' ')}; ${w.hash}`);
+}
+
 // 2. plant: native == WASM, fast path (no growth).
 const plants = [native, wasm].map((cmd) => spawn(cmd, ['garden', 'plant', ...small]));
 check('plant: exit 0 both', plants.every((r) => r.status === 0), plants.map((r) => r.stderr).join(''));
@@ -223,6 +241,11 @@ const bad = [
   [['--set', 'bark=1', '--set', 'bark_map_size=300'], /bark_map_size/],
   [['--set', 'bark=1', '--set', 'moss_days=0', '--max-seconds', '2'], /error: bark: the simulated bark of \d+ distinct trees .* set bark 0/],
   [['--max-seconds', '2'], /error: moss_days: the moss: --max-seconds: .* set moss_days 0/],
+  [['--set', 'wind.wind_speed=500'], /--set: wind\.wind_speed: .*100/],
+  [['--set', 'wind.gust_on=3'], /--set: wind\.gust_on is not a wind row/],
+  [['--url', 'wind.gust_off=1'], /--url: wind\.gust_off/],
+  [['--set', 'wind.gust_off=1'], /wind\.gust_off: .*gust_on/],
+  [['--wind-time', '700'], /--wind-time/],
 ];
 for (const [args, pattern] of bad) {
   for (const cmd of [native, wasm]) {

@@ -2,13 +2,16 @@
 // apart along the wind, sway apart while the gust front is between them (the upwind one moves,
 // the downwind one is still at rest) and both sway once it has passed; a turned copy meets the
 // front where its foot is; no wind keeps every pose at rest; the wind rows are checked (a key that
-// is not a wind row, a value out of range); the skin covers the page mesh's vertices.
+// is not a wind row, a value out of range); the skin covers the page mesh's vertices; the state's
+// wind (JSON, link, checks) and its direction: a wind towards −x reaches the east copy first, and
+// the run's SetWind changes the link, not the garden; StatsJson (the CLI's --wind-time) per tree.
 #include "compose/garden_wind.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <vector>
 
 #include "compose/garden_state.h"
@@ -142,9 +145,96 @@ TEST(GardenWind, TheWindRowsAreChecked) {
   Result<ParamSet> order = GardenWindRows(30, R"({"gust_on": 10, "gust_off": 5})");
   ASSERT_FALSE(order.ok());
   EXPECT_EQ(order.status().field(), "gust_off");
+  // A front that would take 15 m / 0.001 m/s = 15000 s to the centre: past gust_on's range.
+  Result<ParamSet> slow = GardenWindRows(30, R"({"gust_front_speed": 0.001})");
+  ASSERT_FALSE(slow.ok());
+  EXPECT_EQ(slow.status().field(), "gust_front_speed");
   Result<ParamSet> instant = GardenWindRows(30, R"({"gust_front_speed": 0})");
   ASSERT_TRUE(instant.ok());
   EXPECT_EQ(instant->Get(TreeParam::kGustOn), 0.0);
+}
+
+TEST(GardenWind, TheStateCarriesTheWind) {
+  GardenState s = DefaultGardenState();
+  EXPECT_EQ(GardenWindJson(s), "{}");
+  EXPECT_EQ(EncodeGardenHash(s).find("wind."), std::string::npos) << "the defaults: no wind keys";
+  ASSERT_TRUE(ApplyGardenStateJson(R"({"wind": {"wind_speed": 12, "wind_dir": 90}})", &s).ok());
+  EXPECT_EQ(s.wind.Get(TreeParam::kWindSpeed), 12.0);
+  EXPECT_EQ(s.wind.Get(TreeParam::kWindDir), 90.0);
+  EXPECT_EQ(GardenWindJson(s), R"({"wind_speed":12.0,"wind_dir":90.0})");
+  // The JSON and the link read back to the same wind.
+  GardenState back = DefaultGardenState();
+  ASSERT_TRUE(ApplyGardenStateJson(GardenStateJson(s), &back).ok());
+  EXPECT_TRUE(back.wind == s.wind);
+  const std::string hash = EncodeGardenHash(s);
+  EXPECT_NE(hash.find("wind.wind_speed=12"), std::string::npos) << hash;
+  EXPECT_NE(hash.find("wind.wind_dir=90"), std::string::npos) << hash;
+  GardenState linked = DefaultGardenState();
+  std::vector<std::string> notices;
+  ApplyGardenHash(hash, "", &linked, &notices);
+  EXPECT_TRUE(notices.empty()) << notices.front();
+  EXPECT_TRUE(linked.wind == s.wind);
+  // Bad values: one line naming wind.<key>, the state unchanged.
+  const Status big = ApplyGardenStateJson(R"({"wind": {"wind_speed": 500}})", &s);
+  EXPECT_EQ(big.field(), "wind.wind_speed");
+  EXPECT_NE(big.message().find("100"), std::string::npos) << big.Line();
+  EXPECT_EQ(ApplyGardenStateJson(R"({"wind": {"gust_on": 3}})", &s).field(), "wind.gust_on");
+  EXPECT_EQ(ApplyGardenWindJson(R"({"K_wind": 1})", &s).field(), "wind.K_wind");
+  // gust_off before the derived gust_on (the front reaches the centre of the 40 m garden at 5 s).
+  EXPECT_EQ(ApplyGardenWindJson(R"({"gust_off": 2})", &s).field(), "wind.gust_off");
+  EXPECT_EQ(s.wind.Get(TreeParam::kWindSpeed), 12.0) << "unchanged by the refusals";
+  // A link's bad wind values: clamped or dropped with a notice each, as every table's.
+  GardenState clamped = DefaultGardenState();
+  notices.clear();
+  ApplyGardenHash("wind.wind_speed=500&wind.K_wind=1&wind.gust_on=2", "", &clamped, &notices);
+  ASSERT_EQ(notices.size(), 3u);
+  EXPECT_NE(notices[0].find("wind.wind_speed: clamped to 100"), std::string::npos) << notices[0];
+  EXPECT_EQ(clamped.wind.Get(TreeParam::kWindSpeed), 100.0);
+  GardenState late = DefaultGardenState();
+  notices.clear();
+  ApplyGardenHash("wind.gust_off=1", "", &late, &notices);
+  ASSERT_EQ(notices.size(), 1u);
+  EXPECT_NE(notices[0].find("wind.gust_off"), std::string::npos) << notices[0];
+  EXPECT_TRUE(late.wind == GardenWindBase());
+}
+
+TEST(GardenWind, TheDirectionChoosesWhichTreeSwaysFirst) {
+  GardenRun run = ThreeCopies();
+  const std::string before = run.Hash("");
+  // Towards −x (180°): the front enters at the east edge and reaches x = +8 first.
+  ASSERT_TRUE(run.SetWind(R"({"wind_dir": 180})").ok());
+  EXPECT_NE(run.Hash(""), before);
+  EXPECT_NE(run.Hash("").find("wind.wind_dir=180"), std::string::npos);
+  EXPECT_EQ(run.SetWind(R"({"wind_dir": 400})").field(), "wind.wind_dir");
+  EXPECT_EQ(run.state().wind.Get(TreeParam::kWindDir), 180.0);
+  Result<ParamSet> rows = GardenWindRows(30, run.state().wind, "");
+  ASSERT_TRUE(rows.ok()) << rows.status().Line();
+  Result<GardenWind> wind = GardenWind::Start(run, *rows, Budget{});
+  ASSERT_TRUE(wind.ok()) << wind.status().Line();
+  wind->Step(static_cast<int>(std::lround(4.0 / wind->dt())));
+  std::vector<float> poses(wind->blocks() * kSwayPoseFloats);
+  wind->WritePoses(poses.data());
+  const int nodes = wind->nodes(0);
+  const int west = CopyAt(run, -8, 0), east = CopyAt(run, 8, 0);
+  EXPECT_GT(Offset(poses, wind->first_block(0, east), nodes), 0.05) << "the east copy sways";
+  EXPECT_LT(Offset(poses, wind->first_block(0, west), nodes), 1e-9) << "the west one is still";
+  // The CLI's stats: per planted tree in planting order, the east one swaying, the west at rest.
+  const nlohmann::json stats = nlohmann::json::parse(wind->StatsJson(run));
+  EXPECT_EQ(stats["steps"], 120);
+  ASSERT_EQ(stats["trees"].size(), run.planting().trees.size());
+  int seen = 0;
+  for (const nlohmann::json& t : stats["trees"]) {
+    if (t["z"] != 0.0) continue;
+    if (t["x"] == -8.0) {
+      EXPECT_LT(t["sway"].get<double>(), 1e-9);
+      ++seen;
+    }
+    if (t["x"] == 8.0) {
+      EXPECT_GT(t["sway"].get<double>(), 0.05);
+      ++seen;
+    }
+  }
+  EXPECT_EQ(seen, 2) << stats.dump();
 }
 
 TEST(GardenWind, TheSkinCoversThePageMesh) {

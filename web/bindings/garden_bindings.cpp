@@ -58,12 +58,15 @@
 // ""/error record naming "year": the "year" group filled from the run's record of year y
 // (GardenRun's record_years, on for every page grow: compose/garden_view GardenGroupMeshAt). Blow
 // (compose/garden_wind, the last grown year's trees): blowStart(windJson) -> ""/error record (the
-// wind rows over the garden's defaults, "{}" for none; errors name the row, "wind" or the page
-// budget's limit; fills "skin" and "wind" at rest), blowStep(steps) -> the wind's time (s; at most
-// 64 steps a call; fills "wind"), blowStop(), blowDt(), blowDuration(), blowStepsPerTick(),
-// blowSpeed() (the share of real time the worker can keep), blowWindSpeed() (m/s at the garden's
-// centre now), blowBlocks() (pose blocks of every copy; 0: not blowing); a new grow stops it. Free
-// functions: gardenTableJson(), gardenDecodeJson(hash)
+// wind rows over the state's wind (its "wind" rows, set by start or setWind), "{}" for none; errors
+// name the row, "wind" or the page budget's limit; fills "skin" and "wind" at rest),
+// setWind(windJson) -> ""/error record naming "wind.<key>" (the state's wind rows changed on the
+// last run, nothing regrown: hash() and stateJson() carry them), blowStep(steps) -> the wind's time
+// (s; at most 64 steps a call; fills "wind"), blowStop(), blowDt(), blowDuration(),
+// blowStepsPerTick(), blowSpeed() (the share of real time the worker can keep), blowWindSpeed()
+// (m/s at the garden's centre now), blowBlocks() (pose blocks of every copy; 0: not blowing); a new
+// grow stops it. Free functions: gardenTableJson(), gardenWindTableJson() (the wind panel's rows),
+// gardenDecodeJson(hash)
 // ({state, notices}: the default garden with the link's keys). Does not: keep more than one run,
 // keep more than one year's buffers, sway a recorded year's trees, or read files (the page hands
 // their bytes in). phasesJson(): where the last grow's time went in the worker, ms (ground, plant,
@@ -136,6 +139,23 @@ void AppendPart(const MeshBuffers& m, float part, std::vector<float>* positions,
 }  // namespace
 
 std::string GardenTableJson() { return ParamTableJson(compose::GardenTable()); }
+
+// The garden's wind panel: the tree table's rows a garden state carries as its wind
+// (compose::IsGardenWindKey: the "wind" group but gust_on), as ParamTableJson gives them, each
+// default the garden's (GardenWindBase).
+std::string GardenWindTableJson() {
+  const TreeParams base = compose::GardenWindBase();
+  nlohmann::json rows = nlohmann::json::parse(ParamTableJson(base.table()));
+  nlohmann::json out = nlohmann::json::array();
+  for (nlohmann::json& row : rows) {
+    const std::string key = row.value("key", "");
+    if (!compose::IsGardenWindKey(key)) continue;
+    const std::optional<std::size_t> r = base.table().Find(key);
+    if (r) row["default"] = base.Get(*r);
+    out.push_back(row);
+  }
+  return out.dump();
+}
 
 // {state (GardenStateJson, parsed), notices} of the default garden with the link's keys: the
 // compose registry's decode (the one every composer reads a garden link with), a leading '#' off.
@@ -341,6 +361,7 @@ class GardenLab {
   // card-atlas geometry, hybridView(g, slot, ...) its draw list for a camera in its own frame.
   std::string hybridBuild(int year) {
     hybrid_.clear();
+    hybrid_models_.clear();
     hybrid_slots_.clear();
     if (!run_) return ErrorText(Status::Error("trees", "nothing grown yet"));
     if (year < 0 || year > run_->done() || !compose::GardenYearShown(*run_, year))
@@ -351,12 +372,22 @@ class GardenLab {
       const Tree* tree = run_->TreeAtYear(static_cast<int>(g), year);
       if (tree == nullptr) return ErrorText(Status::Error("year", "no tree of that year"));
       hybrid_.push_back(BuildHybridScene(*tree, options));
+      // The tree's sway model (its node points: the skin of its draw lists, numbered as Blow's
+      // compose/garden_wind simulators number them; the numbering is the tree's, not the rows').
+      hybrid_models_.push_back(
+          BuildSwayModel(*tree, SwayParams(run_->groups()[g].run->state().params)));
       if (!hybrid_.back().atlas_fits)
         return ErrorText(Status::Error("trees", "a tree's card atlas does not fit; use full"));
     }
     return "";
   }
   int hybridGroups() const { return static_cast<int>(hybrid_.size()); }
+  // Group `group`'s sway node points (its pose block's length; Blow's GardenWind::nodes), 0 for no
+  // such group.
+  int hybridNodes(int group) const {
+    if (group < 0 || group >= static_cast<int>(hybrid_models_.size())) return 0;
+    return static_cast<int>(hybrid_models_[group].nodes.size());
+  }
   // Group `group`'s atlas geometry into "atlas.*"; its atlas side (texels), 0 for no such group.
   int hybridAtlas(int group) {
     if (group < 0 || group >= hybridGroups()) return 0;
@@ -370,8 +401,9 @@ class GardenLab {
   // Eq. 4.1 per branch of group `group` for a camera in its own frame (metres, radians, pixels)
   // with the hysteresis of `slot` (0..255, per group), lines lit from (lx, ly, lz); with `bark`
   // and the group in simulated bark, the lines' C_b is its base colour map's mean (else the
-  // procedural brown); fills "cards" and "lines" (their skin at rest: joints and weights 0). ""
-  // or an error record naming "view".
+  // procedural brown); fills "cards" and "lines" with their sway skin (render/atlas_mesh
+  // BuildDrawListSkin over the group's sway model: node points numbered as Blow's poses, so a
+  // copy's cards and lines sway with its pose block). "" or an error record naming "view".
   std::string hybridView(int group, int slot, double ex, double ey, double ez, double tx, double ty,
                          double tz, double fov_y, int width, int height, double lx, double ly,
                          double lz, bool bark) {
@@ -392,8 +424,7 @@ class GardenLab {
     }
     draw_ = BuildDrawList(*tree, hybrid_[group], selection, camera, shading);
     previous = std::move(selection);
-    draw_joints_.assign(draw_.card_positions.size() / 3, 0u);
-    draw_weights_.assign(draw_joints_.size(), 0.f);
+    draw_skin_ = BuildDrawListSkin(*tree, hybrid_[group], draw_, hybrid_models_[group]);
     return "";
   }
 
@@ -401,7 +432,8 @@ class GardenLab {
   std::string blowStart(const std::string& wind_json) {
     blowStop();
     if (!run_) return ErrorText(Status::Error("wind", "nothing grown yet"));
-    Result<ParamSet> rows = compose::GardenWindRows(run_->scene().ground.size, wind_json);
+    Result<ParamSet> rows =
+        compose::GardenWindRows(run_->scene().ground.size, run_->state().wind, wind_json);
     if (!rows.ok()) return ErrorText(rows.status());
     Result<compose::GardenWind> wind = compose::GardenWind::Start(*run_, *rows, PageBudget());
     if (!wind.ok()) return ErrorText(wind.status());
@@ -424,6 +456,13 @@ class GardenLab {
     poses_.assign(blow_->blocks() * kSwayPoseFloats, 0.0f);
     blow_->WritePoses(poses_.data());
     return "";
+  }
+  // The garden's wind rows ({wind_speed: 12, ...}: compose::ApplyGardenWindJson) set on the last
+  // run (nothing regrows; hash() and stateJson() carry them): "" or an error record naming
+  // "wind.<key>".
+  std::string setWind(const std::string& json) {
+    if (!run_) return ErrorText(Status::Error("wind", "nothing grown yet"));
+    return ErrorText(run_->SetWind(json));
   }
   double blowStep(int steps) {
     if (!blow_) return 0;
@@ -583,12 +622,14 @@ class GardenLab {
       out.Add("positions", draw_.card_positions)
           .Add("uvs", draw_.card_uvs)
           .Add("indices", draw_.card_indices)
-          .Add("joints", draw_joints_)
-          .Add("weights", draw_weights_);
+          .Add("joints", draw_skin_.cards.joint)
+          .Add("weights", draw_skin_.cards.weight);
     } else if (group == "lines") {
       out.Add("positions", draw_.line_positions)
           .Add("colors", draw_.line_colors)
-          .Add("widths", draw_.line_widths);
+          .Add("widths", draw_.line_widths)
+          .Add("joints", draw_skin_.lines.joint)
+          .Add("weights", draw_skin_.lines.weight);
     } else if (group == "download") {
       out.Add("bytes", download_);
     } else {
@@ -717,8 +758,8 @@ class GardenLab {
   std::map<int, HybridSelection> hybrid_slots_;  // group * 256 + slot: hybridView's hysteresis
   AtlasMesh atlas_;                              // group "atlas.*": the last hybridAtlas's
   HybridDrawList draw_;                          // groups "cards", "lines": the last hybridView's
-  std::vector<uint32_t> draw_joints_;
-  std::vector<float> draw_weights_;
+  DrawListSkin draw_skin_;  // the last hybridView's sway skin (its group's hybrid_models_)
+  std::vector<SwayModel> hybrid_models_;  // per group, of hybrid_year_ (hybridBuild)
 };
 
 }  // namespace niwa
@@ -726,6 +767,7 @@ class GardenLab {
 EMSCRIPTEN_BINDINGS(niwa_garden) {
   using namespace emscripten;
   function("gardenTableJson", &niwa::GardenTableJson);
+  function("gardenWindTableJson", &niwa::GardenWindTableJson);
   function("gardenDecodeJson", &niwa::GardenDecodeJson);
   class_<niwa::GardenLab>("GardenLab")
       .constructor<>()
@@ -750,6 +792,7 @@ EMSCRIPTEN_BINDINGS(niwa_garden) {
       .function("showYear", &niwa::GardenLab::showYear)
       .function("blowStart", &niwa::GardenLab::blowStart)
       .function("blowStep", &niwa::GardenLab::blowStep)
+      .function("setWind", &niwa::GardenLab::setWind)
       .function("blowStop", &niwa::GardenLab::blowStop)
       .function("blowDt", &niwa::GardenLab::blowDt)
       .function("blowDuration", &niwa::GardenLab::blowDuration)
@@ -759,6 +802,7 @@ EMSCRIPTEN_BINDINGS(niwa_garden) {
       .function("blowBlocks", &niwa::GardenLab::blowBlocks)
       .function("hybridBuild", &niwa::GardenLab::hybridBuild)
       .function("hybridGroups", &niwa::GardenLab::hybridGroups)
+      .function("hybridNodes", &niwa::GardenLab::hybridNodes)
       .function("hybridAtlas", &niwa::GardenLab::hybridAtlas)
       .function("hybridView", &niwa::GardenLab::hybridView);
 }

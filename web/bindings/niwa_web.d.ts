@@ -165,6 +165,8 @@ export class MossLab {
 // ---- garden_bindings.cpp: issue 33 over core/compose/garden_run
 /** The garden table as the panel reads it (the compose registry has no garden row). */
 export function gardenTableJson(): string;
+/** The garden's wind rows (the tree table's "wind" group but gust_on) as the panel reads a table, each default the garden's. */
+export function gardenWindTableJson(): string;
 /** {state (GardenStateJson), notices} of the default garden with the link's keys. */
 export function gardenDecodeJson(hash: string): string;
 
@@ -196,10 +198,12 @@ export class GardenLab {
   /** Distinct tree `group`'s simulated bark map ("bark" base colour or "barkNormal"), the garden .glb's; null when it wears the procedural bark. */
   barkTexture(group: number, kind: string): { width: number; height: number; pixels: Uint8Array; digest: string } | null;
   showYear(year: number): ErrorText;
-  /** Blow: the wind rows ({"wind_speed": 5, ...}; "{}": the garden's defaults, the front entering its upwind edge at t = 0) over the last grown year's trees, one sway simulator a tree; fills buffers("skin") and buffers("wind") at rest; errors name the row, "wind" or the page budget's limit. */
+  /** Blow: the wind rows ({"wind_speed": 5, ...}; "{}": the state's wind, the front entering its upwind edge at t = 0) over the last grown year's trees, one sway simulator a tree; fills buffers("skin") and buffers("wind") at rest; errors name the row, "wind" or the page budget's limit. */
   blowStart(windJson: string): ErrorText;
   /** Every tree `steps` (at most 64) time steps further; fills buffers("wind"); returns the wind's time (s). */
   blowStep(steps: number): number;
+  /** The state's wind rows ({"wind_speed": 12, ...}) set on the last run without regrowing (hash() and stateJson() carry them); errors name "wind.<key>". */
+  setWind(windJson: string): ErrorText;
   blowStop(): void;
   blowDt(): number;
   blowDuration(): number;
@@ -215,9 +219,11 @@ export class GardenLab {
   hybridBuild(year: number): string;
   /** Distinct trees with a hybrid scene (0 before hybridBuild). */
   hybridGroups(): number;
+  /** Group `group`'s sway node points (its pose block's length), 0 for no such group. */
+  hybridNodes(group: number): number;
   /** Group `group`'s card-atlas geometry into "atlas.bark|leaves|flowers"; its atlas side (0: none). */
   hybridAtlas(group: number): number;
-  /** Group `group`'s draw list ("cards", "lines") for a camera in its frame, hysteresis of `slot` (0..255), lines lit from (lx, ly, lz), their C_b the group's simulated bark's mean colour when `bark` (else the procedural brown): "" or an error record naming "view". */
+  /** Group `group`'s draw list ("cards", "lines") for a camera in its frame, hysteresis of `slot` (0..255), lines lit from (lx, ly, lz), their C_b the group's simulated bark's mean colour when `bark` (else the procedural brown), with their sway skin: "" or an error record naming "view". */
   hybridView(group: number, slot: number, ex: number, ey: number, ez: number, tx: number, ty: number, tz: number,
     fovY: number, width: number, height: number, lx: number, ly: number, lz: number, bark: boolean): string;
   statsJson(): string;

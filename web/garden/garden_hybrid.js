@@ -9,7 +9,12 @@
 // frame is blank. A band's draw list is chosen for its nearest copy's view of the tree; its other
 // copies are turned so that the camera sees them from the same side as that copy (their own turn
 // is not kept: at a band's distance a tree's turn does not show, a card seen edge-on would).
-// Blow sways the full trees only: the page refuses it in hybrid (garden_page.js canBlow).
+// Blow sways both: the near copies are the full meshes skinned to their own pose blocks
+// (garden_renderer.js setFull keeps them), the far copies' cards and lines are skinned to their
+// copy's pose block (the draw lists' skin numbers the node points as Blow's poses; setPoses
+// uploads each distinct tree's copies' poses into its pose texture of the grove layer). A band's
+// other copies are drawn turned to its nearest copy's view, so their sway turns with them (by
+// the difference between that turn and their own; docs/garden-model.md).
 // A distinct tree in simulated bark (bark 1) has its atlas's bark painted from its bark map (the
 // full trees' texture), so its far copies wear the simulated bark too.
 // Test hooks: data-trees-mode, data-hybrid-serial (rounds on screen), data-hybrid-pending,
@@ -17,7 +22,8 @@
 // data-hybrid-trees, data-full-trees, data-hybrid-ms (a round's time, request to lists),
 // data-drawn-hybrid-serial (the round of the last frame drawn); window.__niwaGardenFrameMs(n): the
 // median ms of n whole frames of the view on screen (Frame.timeFrames).
-// Does not: grow, sway or pick anything, or keep the mode in the link (a view, like the camera).
+// Does not: grow, step the wind or pick anything, or keep the mode in the link (a view, like the
+// camera).
 import { drawingBufferSize } from '../gl/context.js';
 import { setHooks } from '../shell/test_hooks.js';
 import { GroveRenderer, MEMBER_FLOATS } from '../tree/grove_renderer.js';
@@ -35,10 +41,9 @@ const angleOf = (x, z) => Math.atan2(-z, x);
 
 export class GardenHybrid {
   // worker: the page's WorkerClient; frame: its Frame; full(): its GardenRenderer; camera: its
-  // OrbitCamera; select, info: the Trees select and its line; request(): a frame; stopWind():
-  // Blow stopped (hybrid refuses it).
-  constructor({ worker, frame, full, camera, select, info, request, stopWind }) {
-    Object.assign(this, { worker, frame, full, camera, select, info, request, stopWind });
+  // OrbitCamera; select, info: the Trees select and its line; request(): a frame.
+  constructor({ worker, frame, full, camera, select, info, request }) {
+    Object.assign(this, { worker, frame, full, camera, select, info, request });
     this.mode = select.value === 'hybrid' ? 'hybrid' : 'full';
     this.layer = null;      // the GroveRenderer layer (its mode 'hybrid')
     this.groups = null;     // bounds.groups of the garden on screen
@@ -66,7 +71,6 @@ export class GardenHybrid {
   setMode(mode) {
     this.mode = mode === 'hybrid' ? 'hybrid' : 'full';
     this.select.value = this.mode;
-    if (this.mode === 'hybrid') this.stopWind();
     this.#reset();
     if (this.mode === 'hybrid') this.#ask();
     this.request();
@@ -90,6 +94,35 @@ export class GardenHybrid {
     if (this.mode !== 'hybrid') return;
     this.#reset();
     this.#ask();
+  }
+
+  // Blow's poses (Float32Array, 16 floats a node point of every copy, the worker's 'pose') and each
+  // copy's first pose block in the instances' order (the 'blowing' skin's blocks): each distinct
+  // tree's copies' poses into its cards' pose texture. A tree whose node points are not the
+  // wind's (another year's hybrid scene) stays at rest. The near copies sway in the full renderer.
+  setPoses(poses, firstBlocks, totalBlocks) {
+    const trees = this.full()?.trees;
+    if (this.mode !== 'hybrid' || !this.atlases || !trees || !this.layer) return;
+    let swayed = 0;
+    trees.groups.forEach((g, k) => {
+      const t = this.layer.trees[k];
+      if (!t || g.instances === 0) return;
+      const first = firstBlocks[g.firstInstance];
+      const next = k + 1 < trees.groups.length ? firstBlocks[trees.groups[k + 1].firstInstance] : totalBlocks;
+      if (t.instances !== g.instances || (next - first) !== t.instances * t.nodes) return;
+      this.layer.setPoses(k, poses.subarray(first * 16, next * 16));
+      swayed += 1;
+    });
+    this.swaying = swayed > 0;
+    this.#hooks({ hybridSwayed: swayed });
+  }
+
+  // Blow stopped: every card at rest again.
+  still() {
+    if (!this.swaying || !this.layer) return;
+    this.swaying = false;
+    this.layer.trees.forEach((t, k) => this.layer.setRestPoses(k));
+    this.#hooks({ hybridSwayed: 0 });
   }
 
   // The worker could not build the hybrid scenes (its error record): full again, with its line.
@@ -119,9 +152,10 @@ export class GardenHybrid {
     this.keys = '';
     this.pending = null;
     this.dirty = false;
+    this.mask = null;
     this.layer?.clearTrees();
     this.full()?.setFull(null);
-    this.info.textContent = this.mode === 'hybrid' ? `Copies farther than ${NEAR_M} m: the cards and lines of the thesis's hybrid rendering (ch. 4, as the grove page), one draw list per distinct tree and distance band; nearer ones full. Blow sways full trees only.` : '';
+    this.info.textContent = this.mode === 'hybrid' ? `Copies farther than ${NEAR_M} m: the cards and lines of the thesis's hybrid rendering (ch. 4, as the grove page), one draw list per distinct tree and distance band; nearer ones full. Blow sways both.` : '';
     this.#hooks({ hybridTrees: 0, fullTrees: '' });
   }
 
@@ -141,11 +175,14 @@ export class GardenHybrid {
     // (the full trees' texture, GardenRenderer.barks; the worker's atlas uvs wrap its tile).
     const barks = this.barkShown ? this.full()?.barks || [] : [];
     let barkTrees = 0;
+    const groups = this.full()?.trees?.groups || [];
     msg.atlases.forEach((hybrid, g) => {
       const bark = barks[g] ? { bark: { texture: barks[g].colour } } : null;
       if (bark) barkTrees += 1;
-      this.layer.addCards(g, hybrid, bark);
+      // Its copies' pose blocks (at rest until Blow's poses come: setPoses).
+      this.layer.addCards(g, hybrid, bark, groups[g]?.instances || 1, hybrid.nodes || 1);
     });
+    this.swaying = false;
     this.worker.recycle(atlasGroups(msg.atlases));
     this.atlases = true;
     this.#hooks({ hybridBarkTrees: barkTrees });
@@ -175,7 +212,7 @@ export class GardenHybrid {
         const key = `${group}:${band}`;
         keys.push(key);
         if (!lists.has(key)) lists.set(key, { tree: group, band, members: [] });
-        lists.get(key).members.push({ x, y, z, turn, d });
+        lists.get(key).members.push({ x, y, z, turn, d, copy: k - g.firstInstance });
       }
     });
     return { keys: keys.join(','), lists: [...lists.values()], mask };
@@ -198,7 +235,7 @@ export class GardenHybrid {
       const members = new Float32Array(list.members.length * MEMBER_FLOATS);
       list.members.forEach((m, i) => {
         const turn = rep.turn + angleOf(eye[0] - m.x, eye[2] - m.z) - seen;
-        members.set([m.x, m.y, m.z, 1, rep.d / m.d, 0, turn], i * MEMBER_FLOATS);
+        members.set([m.x, m.y, m.z, 1, rep.d / m.d, m.copy, turn], i * MEMBER_FLOATS);
       });
       list.members = members;
       views.push({ group: list.tree, slot: list.band, camera: { eye: local(eye), target: local(target), fovY: this.camera.fov, width, height } });
@@ -218,6 +255,7 @@ export class GardenHybrid {
     msg.lists.forEach((l, i) => Object.assign(pending.lists[i], { cards: l.cards, lines: l.lines }));
     this.layer.setBands(pending.lists);
     this.full().setFull(pending.mask);
+    this.mask = pending.mask;  // the copies drawn full now (1) or as cards and lines (0)
     this.worker.recycle(listGroups(msg.lists));
     this.pending = null;
     this.serial += 1;

@@ -28,7 +28,11 @@
 // born by that year, which is the ivy of that year. The link
 // does not change when scrubbing (a view, like the camera); the downloads are the last year's.
 // Blow / Still (garden_wind.js): the wind over the last year's trees, a simulator per planted tree
-// in the worker, its poses skinned by the renderer; a regrow or a year picked stops it.
+// in the worker, its poses skinned by the renderer (in hybrid mode the far copies' cards and lines
+// too); a regrow or a year picked stops it. The View's Wind rows (the tree table's "wind" group but
+// gust_on, the ready message's windTable: a second ParamPanel) are the state's wind: an edit is
+// set on the worker's garden without regrowing ('windRows'), written into the link (wind.KEY=...),
+// a bad value the core's line beside its row; a Blow under way starts again in the new wind.
 // Trees: full | hybrid (garden_hybrid.js): far copies as the grove's cards and lines.
 // Does not (yet): dragging things (a Move, then a click), regrowing a year the record left out
 // (over its memory share: the scrubber says so), or several workers growing at once.
@@ -81,6 +85,11 @@ const controller = new StudyController({
       gardenWind.failed(msg);
       return true;
     }
+    if (msg.control === 'windRows') {  // a wind row refused: its line beside the row
+      controller.showFieldError(msg);
+      setHooks({ windRowsError: msg.message });
+      return true;
+    }
     if (msg.control === 'trees') {  // hybrid trees refused: its line beside the Trees select
       hybrid?.failed(msg);
       return true;
@@ -112,6 +121,9 @@ const { worker } = controller;
 let restarting = false;
 let lastGoodHash = null;
 let panel = null;
+let windPanel = null;    // the View's Wind rows (the ready message's windTable)
+let windDefaults = {};   // the garden's wind defaults by key (the windTable's)
+let windTimer = 0;
 let state = null;       // the resolved garden state (GardenStateJson) of the last grow or decode
 let bounds = null;
 let gardenSerial = 0;
@@ -141,7 +153,7 @@ async function startRenderer() {
       frame = new Frame(ui.canvas, { camera, sun: DEFAULT_SUNS.tree, ground: false, fit: false, request: () => loop.request(), what: 'the garden' });
       await frame.init();
       renderer = await frame.addLayer(new GardenRenderer(frame));
-      hybrid = new GardenHybrid({ worker, frame, full: () => renderer, camera, select: $('trees-mode'), info: $('trees-help'), request: () => loop.request(), stopWind: () => gardenWind.stop() });
+      hybrid = new GardenHybrid({ worker, frame, full: () => renderer, camera, select: $('trees-mode'), info: $('trees-help'), request: () => loop.request() });
       await hybrid.init();
       return frame;
     }, {
@@ -179,6 +191,7 @@ const scheduleUpdate = (stage = 'grow') => controller.schedule(() => sendUpdate(
 function applyState(next) {
   state = next;
   panel.setValues(next.params || {});
+  windPanel?.setValues({ ...windDefaults, ...(next.wind || {}) });
   showPlants();
   showGround();
   showMix();
@@ -543,6 +556,45 @@ function showLinkFiles() {
   setHooks({ linkFiles: text });
 }
 
+// The View's Wind rows: the tree table's wind rows a garden carries (ParamPanel from the worker's
+// windTable: key, symbol, unit, range and help from the one table). An edit is checked and set in
+// the worker after a quiet moment ('windRows': nothing regrows), its link written; a refusal is the
+// core's line ('wind.wind_speed: ...') beside the row. The grow's state carries the last wind set.
+function makeWindPanel(table) {
+  const box = $('wind-params');
+  if (!box || !table.length) return;
+  windDefaults = Object.fromEntries(table.map((spec) => [spec.key, spec.default]));
+  windPanel = new ParamPanel(box, table, () => {
+    clearTimeout(windTimer);
+    windTimer = setTimeout(sendWind, 250);
+  });
+  for (const spec of table) {
+    const row = $(`param-${spec.key}`)?.closest('.field');
+    if (!row) continue;
+    const line = document.createElement('p');
+    line.className = 'field-error';
+    line.id = `wind-error-${spec.key}`;
+    line.setAttribute('role', 'alert');
+    line.hidden = true;
+    row.append(line);
+    errorFields[`wind.${spec.key}`] = line.id;
+  }
+  box.querySelector('details')?.removeAttribute('open');  // folded under Blow until asked for
+  gardenWind.changed();  // the still line in the defaults' words
+}
+function sendWind(wind = windPanel?.values()) {
+  if (!windPanel || !bounds) return;
+  worker.request('windRows', { wind }, { done: ['gardenWindRows'] });
+}
+worker.on('gardenWindRows', (msg) => {
+  controller.showFieldError('');
+  state = { ...(state || {}), wind: msg.state.wind || {} };
+  controller.grown(msg.hash);
+  lastGoodHash = msg.hash;
+  setHooks({ windRows: JSON.stringify(state.wind), windRowsError: '' });
+  gardenWind.changed();
+});
+
 // ---------------------------------------------------------------- worker replies
 worker.on('ready', (msg) => {
   if (restarting) {
@@ -559,6 +611,7 @@ worker.on('ready', (msg) => {
   ui.species.append(trees, objects);
   if (msg.species.includes('sakura')) ui.species.value = 'sakura';
   panel = new ParamPanel(ui.params, msg.paramTable, (spec, stage) => scheduleUpdate(stage));
+  makeWindPanel(msg.windTable || []);
   speciesNames = msg.species;
   // The species mix and the mask join the panel's planting rules.
   $('param-density')?.closest('details')?.append(ui.rulesFiles);
@@ -586,7 +639,15 @@ worker.on('garden', (msg) => {
   ui.groundError.hidden = true;
   lastGoodHash = msg.hash;
   bounds = msg.bounds;
+  // A wind set while this garden grew was set on the garden before it: set it on this one too.
+  const wind = state?.wind || {};
+  const windLost = JSON.stringify(wind) !== JSON.stringify(msg.state.wind || {});
   applyState(msg.state);
+  if (windLost) {
+    state.wind = wind;
+    windPanel?.setValues({ ...windDefaults, ...wind });
+    sendWind({ ...windDefaults, ...wind });
+  }
   // The ivy's vertices among the objects' (kinds 3 and 4: its stems and leaves), read before the
   // buffers go back to the worker.
   let ivyVertices = 0;
@@ -797,10 +858,11 @@ const baseName = () => `garden-${state?.params?.years ?? 0}y`;
 $('download-glb').addEventListener('click', () => controller.exportAs('glb', `${baseName()}.glb`, 'model/gltf-binary'));
 $('download-svg').addEventListener('click', () => controller.exportAs('svg', `${baseName()}-plan.svg`, 'image/svg+xml'));
 
-// The canvas point (CSS pixels) where the ground point (x, z) is drawn: for a test's real click.
-window.__niwaGardenScreenOf = (x, z) => {
+// The canvas point (CSS pixels) where the point `up` metres above ground point (x, z) is drawn: for
+// a test's real click (up 0) or a tree's crown on screen.
+window.__niwaGardenScreenOf = (x, z, up = 0) => {
   if (!renderer) return null;
-  const y = renderer.heightAt(x, z);
+  const y = renderer.heightAt(x, z) + up;
   const w = ui.canvas.clientWidth, h = ui.canvas.clientHeight;
   const m = camera.viewProjection(w / h);
   const c = [0, 1, 2, 3].map((r) => m[r] * x + m[4 + r] * y + m[8 + r] * z + m[12 + r]);
@@ -832,9 +894,9 @@ window.__niwaGardenLook = ({ x = 0, z = 0, up = 0.8, distance = 3, bark = true, 
 const gardenWind = new GardenWind({
   worker, button: $('wind'), info: $('wind-info'), renderer: () => renderer,
   moved: () => loop.moved(), request: () => loop.request(), trees: () => bounds?.trees,
+  hybrid: () => hybrid, wind: () => ({ ...windDefaults, ...(state?.wind || {}) }),
   canBlow: () => (!bounds || !renderer ? 'Nothing grown yet.' : !bounds.trees?.length ? 'No trees to sway.'
-    : shownYear !== lastYear ? `Blow sways the last year's trees: show year ${lastYear} first.`
-      : hybrid?.mode === 'hybrid' ? 'Blow sways the full trees: set Trees to full first.' : ''),
+    : shownYear !== lastYear ? `Blow sways the last year's trees: show year ${lastYear} first.` : ''),
 });
 
 // ---------------------------------------------------------------- start

@@ -15,7 +15,8 @@
 // them through the trees' uvs (garden.frag); the other trees keep the procedural brown. A year
 // picked keeps them (the bark is run once, on the last year's trunk).
 // Hybrid trees (garden_hybrid.js): setFull(mask) draws only the copies the mask keeps in full
-// (the others are the grove renderer's cards and lines, another layer); setFull(null) all of them.
+// (the others are the grove renderer's cards and lines, another layer), each skinned to its own
+// pose block while Blow plays; setFull(null) all of them.
 // A StudyLayer (web/gl/frame.js), a layer of a Frame of fit: false (metres).
 // Does not: talk to the worker, know the garden model, or draw the hybrid (card) trees itself.
 import { copyOf, floatAttribute, staticBuffer, uintAttribute, viewOf } from '../gl/buffers.js';
@@ -144,6 +145,8 @@ export class GardenRenderer extends StudyLayer {
       const trees = this.#mesh(t, t.part);
       trees.vertices = t.positions.byteLength / 12;
       trees.blockBuffer = null;
+      trees.blockData = null;
+      trees.fullMask = null;
       gl.bindVertexArray(trees.vao);
       trees.instanceBuffer = staticBuffer(gl, t.instances);
       trees.buffers.push(trees.instanceBuffer);
@@ -193,15 +196,21 @@ export class GardenRenderer extends StudyLayer {
   }
 
   // The copies drawn in full: mask (Uint8Array, one per copy in the instances' order, 1 = full) or
-  // null (every copy). Each group's kept copies are packed into one buffer, drawn unskinned.
+  // null (every copy). Each group's kept copies are packed into one buffer, with their pose blocks
+  // when Blow's skin is on (so the near copies of hybrid mode sway with their own poses).
   setFull(mask) {
     const gl = this.gl, trees = this.trees;
     if (!trees) return;
     this.progress.abort();  // a frame in parts must not draw from the buffer deleted here
-    if (trees.full) gl.deleteBuffer(trees.full.buffer);
+    if (trees.full) {
+      gl.deleteBuffer(trees.full.buffer);
+      if (trees.full.blockBuffer) gl.deleteBuffer(trees.full.blockBuffer);
+    }
     trees.full = null;
+    trees.fullMask = mask;
     if (!mask) return;
     const data = new Float32Array(trees.instanceData.length);
+    const blocks = trees.blockData ? new Float32Array(trees.blockData.length) : null;
     const ranges = [];
     let n = 0;
     for (const g of trees.groups) {
@@ -209,11 +218,15 @@ export class GardenRenderer extends StudyLayer {
       for (let k = g.firstInstance; k < g.firstInstance + g.instances; ++k) {
         if (!mask[k]) continue;
         data.set(trees.instanceData.subarray(k * 4, k * 4 + 4), n * 4);
+        if (blocks) blocks[n] = trees.blockData[k];
         n += 1;
       }
       ranges.push({ firstInstance: first, instances: n - first });
     }
-    trees.full = { buffer: staticBuffer(gl, data.subarray(0, Math.max(4, n * 4))), ranges };
+    trees.full = {
+      buffer: staticBuffer(gl, data.subarray(0, Math.max(4, n * 4))), ranges,
+      blockBuffer: blocks ? staticBuffer(gl, blocks.subarray(0, Math.max(1, n))) : null,
+    };
   }
 
   // Blow: the worker's 'blowing' skin ({joints: Uint32 and weights: Float32 per vertex of the
@@ -231,8 +244,10 @@ export class GardenRenderer extends StudyLayer {
     floatAttribute(gl, 6, weights, 1);
     gl.bindVertexArray(null);
     trees.blockBuffer = staticBuffer(gl, skin.blocks);
+    trees.blockData = copyOf(Float32Array, skin.blocks);
     trees.skin = [joints, weights, trees.blockBuffer];
     trees.buffers.push(...trees.skin);
+    if (trees.fullMask) this.setFull(trees.fullMask);  // the near copies' pose blocks too
     return true;
   }
 
@@ -321,12 +336,13 @@ export class GardenRenderer extends StudyLayer {
   #drawGroup(g, first, count, copies, full) {
     const gl = this.gl;
     const tris = g.count / 3;
-    // once skinned, always pointed at its copies (in range); the copies of setFull drawn unskinned
-    const blocks = full ? null : this.trees.blockBuffer;
+    // once skinned, always pointed at its copies (in range); the copies of setFull with their own
+    // blocks, packed as they are
+    const blocks = full ? full.blockBuffer : this.trees.blockBuffer;
     const buffer = full ? full.buffer : this.trees.instanceBuffer;
     const draw = (instance, from, n, instances) => {
       floatAttribute(gl, 3, buffer, 4, INSTANCE_BYTES, (copies.firstInstance + instance) * INSTANCE_BYTES, 1);
-      if (blocks) floatAttribute(gl, 7, blocks, 1, 4, (g.firstInstance + instance) * 4, 1);
+      if (blocks) floatAttribute(gl, 7, blocks, 1, 4, ((full ? copies.firstInstance : g.firstInstance) + instance) * 4, 1);
       gl.drawElementsInstanced(gl.TRIANGLES, n * 3, gl.UNSIGNED_INT, (g.firstIndex + from * 3) * 4, instances);
     };
     let at = first;
@@ -390,7 +406,7 @@ export class GardenRenderer extends StudyLayer {
         setup: () => {
           gl.bindVertexArray(this.trees.vao);
           uniforms();
-          this.#bindSway(p, !full && this.swayOn && !!this.trees.blockBuffer);
+          this.#bindSway(p, this.swayOn && !!(full ? full.blockBuffer : this.trees.blockBuffer));
           this.#bindBark(p, k);
           gl.vertexAttrib1f(4, 0);
         },

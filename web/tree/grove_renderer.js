@@ -111,13 +111,14 @@ export class GroveRenderer extends StudyLayer {
   }
 
   // Unique tree `index` drawn only in hybrid mode (the garden's far copies, web/garden/garden_hybrid.js):
-  // its card atlas painted from the worker's hybrid geometry (as addTree's), no full mesh, one pose
-  // block at rest (every band member's pose block 0). textures: null (plain colours) or
+  // its card atlas painted from the worker's hybrid geometry (as addTree's), no full mesh, poses at
+  // rest for `instances` copies of `nodes` node points (a band member's pose block: its copy's
+  // index; setPoses sways them). textures: null (plain colours) or
   // {bark: {texture}}: a simulated bark's base colour map, which the atlas's bark is painted from
   // through the geometry's bark uvs (the worker wraps its tile, as the full trees').
-  addCards(index, hybrid, textures = null) {
+  addCards(index, hybrid, textures = null, instances = 1, nodes = 1) {
     this.#dropTree(this.trees[index]);
-    this.trees[index] = { parts: {}, instanceBuffer: null, instances: 1, atlas: this.#paintAtlas(hybrid, textures), nodes: 1, poseTexture: this.gl.createTexture(), poseRows: 0 };
+    this.trees[index] = { parts: {}, instanceBuffer: null, instances: Math.max(1, instances), atlas: this.#paintAtlas(hybrid, textures), nodes: Math.max(1, nodes), poseTexture: this.gl.createTexture(), poseRows: 0 };
     this.setRestPoses(index);
   }
 

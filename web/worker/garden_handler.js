@@ -23,14 +23,16 @@
 // An 'export' ({format: glb | svg | json | heightmap}) answers with the run's bytes (the bytes of
 // `niwa garden grow --url HASH --out g.glb`), transferred, or an error naming "download".
 // Blow: 'wind' ({play, wind?}) and 'poseDone' run the wind over the last garden's trees
-// (web/worker/garden_blow.js); an update or a 'year' stops it.
+// (web/worker/garden_blow.js) in the state's wind rows; an update or a 'year' stops it. 'windRows'
+// ({wind: {wind_speed, ...}}) sets the state's wind on the last run without regrowing
+// ('gardenWindRows' {hash, state}, or an error naming "wind.<key>" with control: 'windRows').
 // An 'image' ({role: heightmap | mask, name, bytes}) is an opened PNG for the heightmap ground or
 // the density mask, decoded in the core and kept by name ('imageLoaded' or an error naming
 // "ground.file" or "mask"); a 'mesh' a dropped mesh ('meshLoaded' or an error naming "mesh").
 // Hybrid trees (thesis ch. 4, the grove's; web/garden/garden_hybrid.js): 'hybrid' ({year, grows})
 // builds each distinct tree's hybrid scene of that year and answers {type: 'gardenAtlas', year,
-// run, atlases: [per group {atlasSize, bark, leaves, flowers}]} (the card atlas's geometry, as the
-// tree handler's 'tree' hybrid); 'hybridViews' ({tag, light, bark, views: [{group, slot, camera: {eye,
+// run, atlases: [per group {atlasSize, nodes, bark, leaves, flowers}]} (the card atlas's geometry, as the
+// tree handler's 'tree' hybrid; nodes: the tree's sway node points, its pose block's length); 'hybridViews' ({tag, light, bark, views: [{group, slot, camera: {eye,
 // target, fovY, width, height}}]}) answers {type: 'gardenDrawLists', tag, run, lists: [per view
 // {group, slot, cards: {positions, uvs, indices, joints, weights}, lines: {positions, colors,
 // widths}}]}, each view's eq. 4.1 choice with its (group, slot)'s hysteresis.
@@ -44,6 +46,7 @@ import { createBlow } from './garden_blow.js';
 export function createHandler(Module, ctx) {
   const { post, isLatest } = ctx;
   const paramTable = JSON.parse(Module.gardenTableJson());
+  const windTable = JSON.parse(Module.gardenWindTableJson());
   const species = JSON.parse(Module.presetsJson('tree')).map((p) => p.name);
   const decode = (hash) => JSON.parse(Module.gardenDecodeJson(hash));
   const labs = new Map();  // client -> {lab, working, lastPost}
@@ -190,7 +193,7 @@ export function createHandler(Module, ctx) {
     for (let g = 0; g < entry.lab.hybridGroups(); ++g) {
       const atlasSize = entry.lab.hybridAtlas(g);
       const part = (name) => returned.take(client, `atlas${g}.${name}`, entry.lab.buffers(`atlas.${name}`), transfer, counts);
-      atlases.push({ atlasSize, bark: part('bark'), leaves: part('leaves'), flowers: part('flowers') });
+      atlases.push({ atlasSize, nodes: entry.lab.hybridNodes(g), bark: part('bark'), leaves: part('leaves'), flowers: part('flowers') });
     }
     post({ type: 'gardenAtlas', id: msg.id, client, year: Number(msg.year), run: entry.lab.runGrows(), atlases }, transfer);
   }
@@ -218,6 +221,18 @@ export function createHandler(Module, ctx) {
     post({ type: 'gardenDrawLists', id: msg.id, client, tag: msg.tag, run: entry.lab.runGrows(), lists }, transfer);
   }
 
+  // The state's wind rows changed (the wind panel): set on the last run, nothing regrown; the reply
+  // brings the run's link and state with them, or an error naming "wind.<key>" (control: 'windRows').
+  function windRows(msg, client) {
+    const { lab } = labOf(client);
+    const error = errorOf(lab.setWind(JSON.stringify(msg.wind && typeof msg.wind === 'object' ? msg.wind : {})));
+    if (error) {
+      post(errorReply(error, msg.id, client, { control: 'windRows' }));
+      return;
+    }
+    post({ type: 'gardenWindRows', id: msg.id, client, hash: lab.hash(), state: JSON.parse(lab.stateJson()) });
+  }
+
   const FORMATS = ['glb', 'svg', 'json', 'heightmap'];
   const exportGarden = (msg, client) => exportLabDownload(labOf(client).lab, FORMATS, msg, client, post);
 
@@ -229,7 +244,7 @@ export function createHandler(Module, ctx) {
   return {
     superseding: ['update'],
     close,
-    ready: (msg) => ({ paramTable, species, decoded: decode(String(msg.hash || '')) }),
+    ready: (msg) => ({ paramTable, windTable, species, decoded: decode(String(msg.hash || '')) }),
     messages: {
       decode: (msg, client) => post({ type: 'decoded', id: msg.id, client, ...decode(String(msg.hash || '')) }),
       update,
@@ -239,6 +254,7 @@ export function createHandler(Module, ctx) {
       export: exportGarden,
       wind: (msg, client) => (msg.play ? blow.start(msg, client) : blow.stop(client)),
       poseDone: (msg, client) => blow.poseDone(client),
+      windRows,
       recycle: (msg, client) => returned.give(client, msg.buffers),
       hybrid,
       hybridViews,

@@ -192,7 +192,8 @@
 /**
  * The garden page (study: 'garden', web/worker/garden_handler.js). State: the garden state JSON
  * (core/compose/garden_state.h GardenStateJson: {params, ground, objects, plants, mix}); ready
- * carries `paramTable` (the garden table), `species` (the tree presets' names: the planting picker)
+ * carries `paramTable` (the garden table), `windTable` (the tree table's rows of the garden's wind, its
+ * defaults), `species` (the tree presets' names: the planting picker)
  * and `decoded` ({state, notices}: the default garden with the link's keys).
  * @typedef {Envelope & {type: 'update', state: Object}} GardenUpdateMessage
  *   -> ProgressMessage (after every year: stage 'grow', done, total years), {type: 'garden', stats
@@ -217,12 +218,13 @@
  *   -> {type: 'meshLoaded', mesh: {name, triangles}} or an error naming "mesh": the mesh kept by
  *   name for the state's mesh objects ({kind: 'mesh', file: name}; at most 8 a client)
  *   Hybrid trees (web/garden/garden_hybrid.js): {type: 'hybrid', year, grows?} -> {type:
- *   'gardenAtlas', year, run, atlases: [per distinct tree {atlasSize, bark, leaves, flowers}: the
- *   card atlas's geometry]} (an error with control: 'trees' when a scene cannot be built); {type:
- *   'hybridViews', tag, light, bark (default true: a tree in simulated bark colours its lines with its
- *   map's mean), views: [{group, slot (0..255), camera: {eye, target, fovY, width,
+ *   'gardenAtlas', year, run, atlases: [per distinct tree {atlasSize, nodes, bark, leaves, flowers}:
+ *   the card atlas's geometry, nodes its sway node points]} (an error with control: 'trees' when a scene cannot be built); {type:
+ *   'hybridViews', tag, light, bark (default true: a tree in simulated bark colours its lines with
+ *   its map's mean), views: [{group, slot (0..255), camera: {eye, target, fovY, width,
  *   height} in the tree's frame}]} -> {type: 'gardenDrawLists', tag, run, lists: [per view {group,
- *   slot, cards: {positions, uvs, indices, joints, weights}, lines: {positions, colors, widths}}]}.
+ *   slot, cards: {positions, uvs, indices, joints, weights}, lines: {positions, colors, widths,
+ *   joints, weights}}]} (the skin: node points numbered as Blow's poses).
  * @typedef {Envelope & {type: 'wind', play: boolean, wind?: Object}} GardenWindMessage
  *   Blow (web/worker/garden_blow.js): play: true starts one sway simulator per planted tree of the
  *   last garden in the wind rows `wind` over the garden's defaults -> {type: 'blowing', run, skin:
@@ -230,6 +232,11 @@
  *   and each copy's first pose block) or an error with control: 'wind'; then {type: 'pose', time,
  *   wind, stepMs, speed, poses} one at a time, the next after the page's 'poseDone' (poses into
  *   the buffer handed back as 'recycle' {wind: {poses}}). play: false, an update or a 'year' stops it.
+ *   The rows under `wind` go over the state's own wind rows (GardenStateJson's wind).
+ * @typedef {Envelope & {type: 'windRows', wind: Object}} GardenWindRowsMessage
+ *   The state's wind rows ({wind_speed, wind_dir, ...}: the ready message's windTable) set on the
+ *   last garden without regrowing -> {type: 'gardenWindRows', hash, state} or an error naming
+ *   "wind.<key>" with control: 'windRows'.
  * @typedef {Envelope & {type: 'image', role: 'heightmap'|'mask', name: string, bytes: ArrayBuffer}}
  *   GardenImageMessage -> {type: 'imageLoaded', image: {role, name, width, height, bit_depth,
  *   colour_type}} or an error naming "ground.file" (heightmap) or "mask": the PNG decoded in the
