@@ -16,7 +16,7 @@ import {
 } from '../shell/study_page.js';
 import { StudyController, numberOr } from '../shell/study_controller.js';
 import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
-import { atlasGroups, treeExtras } from '../shell/worker_client.js';
+import { atlasGroups, buffersOf, treeGroups } from '../shell/worker_client.js';
 import { ExportGuard, cutRefusal } from './cut_rules.js';
 import { EditFeedback } from './edit_feedback.js';
 import { GettingStarted } from './getting_started.js';
@@ -24,7 +24,6 @@ import { RenderTable } from './render_table.js';
 import { PhoneDock } from './phone_dock.js';
 import { mountStateFile } from './state_file.js';
 import { exportRefusals, mountExportPanel } from './export_panel.js';
-import { buffersOf, treeGroups } from './tree_view.js';
 import { ViewClient } from './view_client.js';
 
 const $ = (id) => document.getElementById(id);
@@ -134,7 +133,7 @@ let freshSerial = 0;       // the tree whose first frame clears "stale" (0: none
 const viewReplies = { picked: [], timed: [], png: [], finished: [] };  // waiting for the view's answer
 const viewCss = () => ({ css: [ui.canvas.clientWidth, ui.canvas.clientHeight], dpr: globalThis.devicePixelRatio || 1 });
 const view = new ViewClient(ui.canvas, (msg) => onView(msg), { ...viewCss(), shadows: ui.shadows.value !== 'off' });
-setHooks({ viewThread: view.mode === 'main' ? 'main' : 'worker' });
+setHooks({ viewThread: view.mode });  // 'starting' until the view is up
 new ResizeObserver(() => view.send('resize', viewCss())).observe(ui.canvas);
 
 // Asks the view for one answer of `type` (picked, timed, png, finished); resolves to its message.
@@ -407,8 +406,7 @@ worker.on('progress', (msg) => {
 // Buffers the view will not draw go back for the worker's next tree to fill (the view hands back
 // those it drew once they are on the GPU).
 function giveBackTree(msg) {
-  const { bark, leaves, flowers } = msg.mesh;
-  worker.recycle({ bark, leaves, flowers, ...treeExtras(msg) });
+  worker.recycle(treeGroups(msg));
 }
 
 worker.on('tree', (msg) => {

@@ -22,30 +22,8 @@ import { FrameGovernor } from '../gl/frame_governor.js';
 import { FrameLoop } from '../gl/frame_loop.js';
 import { finishGpu } from '../gl/context.js';
 import { viewOf } from '../gl/buffers.js';
+import { atlasGroups, buffersOf, treeGroups } from '../shell/worker_client.js';
 import { Renderer } from './tree_renderer.js';
-
-// The ArrayBuffers of recycle-style groups ({group: {name: view or ArrayBuffer}}), each once, for a
-// postMessage transfer list (detached and empty ones left out).
-export function buffersOf(groups) {
-  const out = [];
-  for (const parts of Object.values(groups || {})) {
-    for (const value of Object.values(parts || {})) {
-      const buffer = ArrayBuffer.isView(value) ? value.buffer : value;
-      if (buffer instanceof ArrayBuffer && buffer.byteLength > 0 && !out.includes(buffer)) out.push(buffer);
-    }
-  }
-  return out;
-}
-
-// A tree message's buffers as recycle groups: the mesh's parts, its textures' pixels, its atlas.
-export function treeGroups(tree) {
-  const { bark, leaves, flowers } = tree.mesh || {};
-  const t = tree.mesh?.textures || {};
-  const textures = Object.fromEntries(['bark', 'barkNormal', 'leaf', 'flower'].map((kind) => [kind, t[kind]?.pixels]));
-  const h = tree.hybrid;
-  const atlas = h ? { 'atlas.bark': h.bark, 'atlas.leaves': h.leaves, 'atlas.flowers': h.flowers } : {};
-  return { bark, leaves, flowers, textures, ...atlas };
-}
 
 export class TreeView {
   // canvas: an HTMLCanvasElement (main thread) or an OffscreenCanvas (the render worker; its CSS size
@@ -153,8 +131,7 @@ export class TreeView {
       this.recycle({ sway: { poses: msg.poses } });
       this.toWorker('poseDone');
     } else if (msg.type === 'motionAtlas') {
-      const h = msg.hybrid;
-      this.recycle(h ? { 'atlas.bark': h.bark, 'atlas.leaves': h.leaves, 'atlas.flowers': h.flowers } : {});
+      this.recycle(atlasGroups(msg.hybrid));
     } else if (msg.type === 'drawList') {
       if (msg.motion) this.motionInFlight = false;
       else this.viewInFlight = false;
@@ -340,10 +317,9 @@ export class TreeView {
 
   on_motionAtlas(msg) {
     this.#countReuse('motion', msg.buffers);
-    const h = msg.hybrid;
     // Painted (or dropped): its buffers go back for the worker's next atlas to fill.
-    const giveBack = () => this.recycle(h ? { 'atlas.bark': h.bark, 'atlas.leaves': h.leaves, 'atlas.flowers': h.flowers } : {});
-    this.renderer.setMotionHybrid(h, this.governor.budget()).then((painted) => {
+    const giveBack = () => this.recycle(atlasGroups(msg.hybrid));
+    this.renderer.setMotionHybrid(msg.hybrid, this.governor.budget()).then((painted) => {
       giveBack();
       if (painted) this.hooks({ motionTextured: this.renderer.motion.hybrid.textured.join(',') });  // tests
       if (this.governor.moving()) this.requestFrame();

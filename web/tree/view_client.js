@@ -3,15 +3,15 @@
 // an OffscreenCanvas, else the same TreeView on the main thread (one renderer either way). Messages
 // go both ways as in tree_view.js; with the worker, buffers in `transfer` move (never copied), on
 // the main thread they are handed over as they are. Each direction keeps its order, and a message
-// is delivered in a later task or microtask, never inside send().
+// is delivered in a later task or microtask, never inside send(). tree_view.js (the renderer and
+// the GL toolkit) is loaded on the main thread only for the fallback.
 // Does not: know the view's messages, or start the growth worker.
-import { TreeView } from './tree_view.js';
-
 const WORKER_URL = new URL('./render_worker.js', import.meta.url);
 
 export class ViewClient {
   // canvas: the page's view; onMessage(msg): the view's messages; init: the 'init' message's
-  // fields ({css, dpr, shadows}). mode: 'starting', then 'worker' or 'main'.
+  // fields ({css, dpr, shadows}). mode: 'starting', then 'worker' or 'main' ('off': the fallback's
+  // module did not load).
   constructor(canvas, onMessage, init) {
     this.canvas = canvas;
     this.onMessage = onMessage;
@@ -58,8 +58,18 @@ export class ViewClient {
     worker.postMessage({ type: 'probe' });
   }
 
-  // The view on the main thread (no OffscreenCanvas WebGL2 in a worker here).
-  #onMain(init) {
+  // The view on the main thread (no OffscreenCanvas WebGL2 in a worker here); messages wait while
+  // its module loads.
+  async #onMain(init) {
+    let TreeView;
+    try {
+      ({ TreeView } = await import('./tree_view.js'));
+    } catch (e) {
+      this.onMessage({ type: 'failed', message: `the view's module did not load (${e.message})` });
+      this.mode = 'off';
+      this.waiting = [];
+      return;
+    }
     this.local = new TreeView(this.canvas, (type, fields = {}) => {
       const msg = { ...fields, type };
       queueMicrotask(() => this.onMessage(msg));
@@ -85,6 +95,6 @@ export class ViewClient {
   send(type, fields = {}, transfer = []) {
     const msg = { ...fields, type };
     if (this.mode === 'starting') this.waiting.push([msg, transfer]);
-    else this.#deliver(msg, transfer);
+    else if (this.mode !== 'off') this.#deliver(msg, transfer);
   }
 }
