@@ -8,7 +8,7 @@ import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import validator from 'gltf-validator';
 import {
-  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, hookLog, nativeStats, newContext, runBrowserTest, waitReady, watchPage,
+  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, hookLog, nativeStats, newContext, pickAt, runBrowserTest, waitReady, watchPage,
 } from './harness.mjs';
 
 const dataset = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
@@ -180,7 +180,7 @@ await runBrowserTest(async (server, browser) => {
   const trunk = await findTrunk(page);
   check('trunk found in the picture', trunk !== null, JSON.stringify(trunk));
   const box = await page.locator('#view').boundingBox();
-  await page.mouse.click(box.x + trunk.x, box.y + trunk.y);
+  await pickAt(page, box.x + trunk.x, box.y + trunk.y);
   let selected = (await dataset(page)).selected;
   if (/^\d+$/.test(selected || '')) await selectionDrawn(page, selected);
   // Branch 0 (the first year's trunk) carries the whole tree: its cut is refused (ux.test.mjs
@@ -190,9 +190,9 @@ await runBrowserTest(async (server, browser) => {
   let highlight = await canvasPixels(page);
   let clicks = 1, frames = 0;
   for (let dy = 8; (selected === '0' || highlight.orange <= 0.0005) && dy < 240; dy += 8) {
-    await page.mouse.click(box.x + trunk.x, box.y + trunk.y - dy);
+    await pickAt(page, box.x + trunk.x, box.y + trunk.y - dy);
     ++clicks;
-    selected = (await dataset(page)).selected;  // set by the click's handler (a CPU pick)
+    selected = (await dataset(page)).selected;  // set by the pick's answer
     // Still the trunk's first shoot, or nothing: no frame to wait for (a frame costs seconds here).
     if (!/^\d+$/.test(selected || '') || selected === '0') continue;
     await selectionDrawn(page, selected);
@@ -235,9 +235,9 @@ await runBrowserTest(async (server, browser) => {
   let side = null, sideAt = null, sideClicks = 0, sideFrames = 0;
   for (let dy = 60; dy < 400 && side === null; dy += 12) {
     for (const dx of [0, -20, 20, -40, 40]) {
-      await page.mouse.click(box.x + trunk.x + dx, box.y + trunk.y - dy);
+      await pickAt(page, box.x + trunk.x + dx, box.y + trunk.y - dy);
       ++sideClicks;
-      const id = Number((await dataset(page)).selected || 0);  // set by the click's handler
+      const id = Number((await dataset(page)).selected || 0);  // set by the pick's answer
       if (id <= 10) continue;
       // The first finished frame that started with this selection (a frame drawn in parts that
       // began before the click still shows the last selection's highlight).
