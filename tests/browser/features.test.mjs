@@ -362,8 +362,9 @@ await runBrowserTest(async (server, browser) => {
   await andWait(page, () => page.click('#undo'));
   check('Undo after a typed hash goes back', (await page.evaluate(() => location.hash)) === backTo);
 
-  // The view's light is the light model's sun: changing sun_azimuth changes the hash and, at once
-  // (before the regrown tree arrives), the shading of the tree on screen.
+  // The view's light is the light model's sun: changing sun_azimuth changes the hash and, with the
+  // view's next finished frame (an urgent whole one, asked for before the tree is regrown; the
+  // regrown tree may be in by then, "same mesh" says when it is not), the shading of the tree on screen.
   const sunHash = await page.evaluate(() => location.hash);
   const shading = await page.evaluate(async () => {
     const grab = () => window.__niwaCanvasImage('#view').data;
