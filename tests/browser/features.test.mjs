@@ -8,7 +8,7 @@ import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import validator from 'gltf-validator';
 import {
-  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, hookLog, nativeStats, newContext, runBrowserTest, waitReady, watchPage,
+  ARTIFACTS, NATIVE, ROOT, TIMEOUT, check, hookLog, nativeStats, newContext, pickAt, runBrowserTest, waitReady, watchPage,
 } from './harness.mjs';
 
 const dataset = (page) => page.evaluate(() => ({ ...document.documentElement.dataset }));
@@ -180,7 +180,7 @@ await runBrowserTest(async (server, browser) => {
   const trunk = await findTrunk(page);
   check('trunk found in the picture', trunk !== null, JSON.stringify(trunk));
   const box = await page.locator('#view').boundingBox();
-  await page.mouse.click(box.x + trunk.x, box.y + trunk.y);
+  await pickAt(page, box.x + trunk.x, box.y + trunk.y);
   let selected = (await dataset(page)).selected;
   if (/^\d+$/.test(selected || '')) await selectionDrawn(page, selected);
   // Branch 0 (the first year's trunk) carries the whole tree: its cut is refused (ux.test.mjs
@@ -190,9 +190,9 @@ await runBrowserTest(async (server, browser) => {
   let highlight = await canvasPixels(page);
   let clicks = 1, frames = 0;
   for (let dy = 8; (selected === '0' || highlight.orange <= 0.0005) && dy < 240; dy += 8) {
-    await page.mouse.click(box.x + trunk.x, box.y + trunk.y - dy);
+    await pickAt(page, box.x + trunk.x, box.y + trunk.y - dy);
     ++clicks;
-    selected = (await dataset(page)).selected;  // set by the click's handler (a CPU pick)
+    selected = (await dataset(page)).selected;  // set by the pick's answer
     // Still the trunk's first shoot, or nothing: no frame to wait for (a frame costs seconds here).
     if (!/^\d+$/.test(selected || '') || selected === '0') continue;
     await selectionDrawn(page, selected);
@@ -235,9 +235,9 @@ await runBrowserTest(async (server, browser) => {
   let side = null, sideAt = null, sideClicks = 0, sideFrames = 0;
   for (let dy = 60; dy < 400 && side === null; dy += 12) {
     for (const dx of [0, -20, 20, -40, 40]) {
-      await page.mouse.click(box.x + trunk.x + dx, box.y + trunk.y - dy);
+      await pickAt(page, box.x + trunk.x + dx, box.y + trunk.y - dy);
       ++sideClicks;
-      const id = Number((await dataset(page)).selected || 0);  // set by the click's handler
+      const id = Number((await dataset(page)).selected || 0);  // set by the pick's answer
       if (id <= 10) continue;
       // The first finished frame that started with this selection (a frame drawn in parts that
       // began before the click still shows the last selection's highlight).
@@ -362,8 +362,9 @@ await runBrowserTest(async (server, browser) => {
   await andWait(page, () => page.click('#undo'));
   check('Undo after a typed hash goes back', (await page.evaluate(() => location.hash)) === backTo);
 
-  // The view's light is the light model's sun: changing sun_azimuth changes the hash and, at once
-  // (before the regrown tree arrives), the shading of the tree on screen.
+  // The view's light is the light model's sun: changing sun_azimuth changes the hash and, with the
+  // view's next finished frame (an urgent whole one, asked for before the tree is regrown; the
+  // regrown tree may be in by then, "same mesh" says when it is not), the shading of the tree on screen.
   const sunHash = await page.evaluate(() => location.hash);
   const shading = await page.evaluate(async () => {
     const grab = () => window.__niwaCanvasImage('#view').data;
@@ -372,18 +373,25 @@ await runBrowserTest(async (server, browser) => {
     const a = grab();
     const input = document.getElementById('param-sun_azimuth');
     input.value = String(Number(input.value) >= 0 ? Number(input.value) - 150 : Number(input.value) + 150);
+    const shown = () => Number(document.documentElement.dataset.framesShown || 0);
+    const before = shown();
+    const t0 = performance.now();
     input.dispatchEvent(new Event('input', { bubbles: true }));
+    // The view draws in its render worker: the new light is its next finished frame (a whole one,
+    // asked for at once), not one within two of this page's animation frames (0.00% changed at load 15).
+    while (shown() <= before && performance.now() - t0 < 20_000) await frame();
+    const ms = Math.round(performance.now() - t0);
     await frame();
     const b = grab();
     let changed = 0;
     for (let i = 0; i < a.length; i += 4) {
       if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 12) ++changed;
     }
-    return { serial: Number(serial), changed: changed / (a.length / 4), sameTree: serial === document.documentElement.dataset.treeSerial,
+    return { serial: Number(serial), changed: changed / (a.length / 4), ms, sameTree: serial === document.documentElement.dataset.treeSerial,
       azimuth: input.value, info: document.getElementById('sun-info').textContent };
   });
   check('changing sun_azimuth changes the shading', shading.changed > 0.005 && shading.info.includes(`az ${shading.azimuth}°`),
-    `${(shading.changed * 100).toFixed(2)}% of pixels changed${shading.sameTree ? ' (same mesh, new light)' : ''}; ${shading.info}`);
+    `${(shading.changed * 100).toFixed(2)}% of pixels changed${shading.sameTree ? ' (same mesh, new light)' : ''}, the view's next frame ${shading.ms} ms after the edit; ${shading.info}`);
   await waitReady(page, shading.serial, 100);
   const sunHashAfter = await page.evaluate(() => location.hash);
   check('changing sun_azimuth changes the hash', sunHashAfter !== sunHash && sunHashAfter.includes('sun_azimuth='), sunHashAfter);

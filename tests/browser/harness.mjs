@@ -122,6 +122,18 @@ export async function clickToFrame(page) {
   return toggled ? ms : Infinity;
 }
 
+// A click (or with tap: true, a tap) on the tree page's view at page pixel (x, y), waiting until the
+// page has the pick's answer (the view picks in its render worker, web/tree/tree_view.js, after the
+// frame on the GPU: data-picks-answered counts the answers); at most 30 s.
+export async function pickAt(page, x, y, { tap = false } = {}) {
+  const answered = () => page.evaluate(() => Number(document.documentElement.dataset.picksAnswered || 0));
+  const before = await answered();
+  if (tap) await page.touchscreen.tap(x, y);
+  else await page.mouse.click(x, y);
+  await page.waitForFunction((n) => Number(document.documentElement.dataset.picksAnswered || 0) > n, before,
+    { timeout: 30_000, polling: 50 }).catch(() => {});
+}
+
 // Grove page: waits until it has drawn `mode` with everything it needs (all trees; in hybrid mode a
 // frame drawn with the draw lists of a view newer than viewSerialAbove: the lists arrive before the
 // frame that draws them, and a snapshot in between shows the previous lists), or shows an error.

@@ -6,7 +6,7 @@
 // that screenshot differ from the one before. On a desktop-sized window the controls are back in
 // their panel sections and the dock is hidden. Screenshots: build/artifacts/phone-*.png.
 import path from 'node:path';
-import { ARTIFACTS, TIMEOUT, check, nativeStats, newContext, runBrowserTest, waitReady, watchPage } from './harness.mjs';
+import { ARTIFACTS, TIMEOUT, check, nativeStats, newContext, pickAt, runBrowserTest, waitReady, watchPage } from './harness.mjs';
 
 const problems = [];
 const W = 390, H = 844;
@@ -189,8 +189,7 @@ await runBrowserTest(async (server, browser) => {
   let branch = null;
   for (let fy = 0.6; fy > 0.15 && branch === null; fy -= 0.04) {
     for (const fx of [0.5, 0.45, 0.55, 0.4, 0.6, 0.35, 0.65]) {
-      await page.touchscreen.tap(viewBox.x + viewBox.width * fx, viewBox.y + viewBox.height * fy);
-      await page.waitForTimeout(120);
+      await pickAt(page, viewBox.x + viewBox.width * fx, viewBox.y + viewBox.height * fy, { tap: true });
       const id = (await dataset(page)).selected;
       if (id && id !== '0' && await page.isEnabled('#cut')) { branch = id; break; }
     }

@@ -13,7 +13,7 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import {
-  ARTIFACTS, NATIVE, TIMED, TIMEOUT, check, nativeStats, newContext, runBrowserTest, snapshotCanvas, snapshotDifference, timedCheck,
+  ARTIFACTS, NATIVE, TIMED, TIMEOUT, check, nativeStats, newContext, pickAt, runBrowserTest, snapshotCanvas, snapshotDifference, timedCheck,
   waitReady, watchPage,
 } from './harness.mjs';
 
@@ -67,10 +67,14 @@ async function longTasks(context, server) {
   // The 30-year tree's frame may still be drawing in the GPU process (seconds on SwiftShader; the
   // page's JS is done with it long before): a finished pixel read waits for it, so the window below
   // measures the 30 -> 15 change, not the tail of the first frame.
-  await big.evaluate(() => {
-    const c = document.getElementById('view').getContext('webgl2');
-    c.readPixels(0, 0, 1, 1, c.RGBA, c.UNSIGNED_BYTE, new Uint8Array(4));
-  });
+  // (the view's context is the render worker's: the page asks it, web/tree/tree_page.js 'niwa-gpu-finish')
+  await big.evaluate(() => new Promise((resolve) => {
+    const answers = () => Number(document.documentElement.dataset.gpuFinished || 0);
+    const before = answers();
+    document.dispatchEvent(new Event('niwa-gpu-finish'));
+    const poll = () => (answers() > before ? resolve() : setTimeout(poll, 20));
+    poll();
+  }));
   await big.waitForTimeout(1000);
   const t0 = await big.evaluate(() => performance.now());
   const serial = await serialOf(big);
@@ -230,8 +234,7 @@ await runBrowserTest(async (server, browser) => {
   const view = await box(page, '#view');
   let trunkId = null;
   for (let dy = 0; trunk && dy < 60 && trunkId !== '0'; dy += 6) {
-    await page.mouse.click(view.x + trunk.x, view.y + trunk.y - dy);
-    await page.waitForTimeout(150);
+    await pickAt(page, view.x + trunk.x, view.y + trunk.y - dy);
     trunkId = (await dataset(page)).selected;
   }
   const selectionText = await page.textContent('#selection');
@@ -422,8 +425,7 @@ await runBrowserTest(async (server, browser) => {
   let branch = null;
   for (let fy = 0.55; fy > 0.2 && branch === null; fy -= 0.04) {
     for (const fx of [0.5, 0.45, 0.55, 0.4, 0.6]) {
-      await mobile.touchscreen.tap(phoneView.x + phoneView.width * fx, phoneView.y + phoneView.height * fy);
-      await mobile.waitForTimeout(120);
+      await pickAt(mobile, phoneView.x + phoneView.width * fx, phoneView.y + phoneView.height * fy, { tap: true });
       const id = (await dataset(mobile)).selected;
       if (id && id !== '0') { branch = id; break; }
     }

@@ -18,21 +18,31 @@ export function createContext(canvas, what = 'the scene', { antialias = 'hardwar
 }
 
 // True when WebGL2 draws on the CPU (SwiftShader, llvmpipe, a "software" renderer), by the
-// unmasked renderer string of a throwaway context; read once.
-let software = null;
-export function softwareRenderer() {
-  if (software !== null) return software;
-  software = false;
+// unmasked renderer string of a throwaway context (a canvas, or in a worker an OffscreenCanvas); read once.
+let probed = null;  // {webgl2, software}
+function probe() {
+  if (probed) return probed;
+  probed = { webgl2: false, software: false };
   try {
-    const gl = document.createElement('canvas').getContext('webgl2');
+    const canvas = typeof document !== 'undefined' ? document.createElement('canvas') : new OffscreenCanvas(1, 1);
+    const gl = canvas.getContext('webgl2');
     const info = gl?.getExtension('WEBGL_debug_renderer_info');
     const name = info ? String(gl.getParameter(info.UNMASKED_RENDERER_WEBGL)) : '';
-    software = /swiftshader|llvmpipe|software/i.test(name);
+    probed = { webgl2: Boolean(gl), software: /swiftshader|llvmpipe|software/i.test(name) };
     gl?.getExtension('WEBGL_lose_context')?.loseContext();
   } catch {
-    software = false;
+    // no WebGL2 here (an OffscreenCanvas without it, in a worker)
   }
-  return software;
+  return probed;
+}
+export function softwareRenderer() {
+  return probe().software;
+}
+
+// True when this thread can make a WebGL2 context (the tree page's render worker asks before the
+// page hands it the canvas).
+export function webgl2Available() {
+  return probe().webgl2;
 }
 
 // Clears the canvas's own drawing buffer to the background, leaving the bound framebuffer and the
@@ -71,9 +81,11 @@ export function setDrawingBufferSize(canvas, [w, h]) {
   }
 }
 
-// The drawing buffer size resizeCanvas(canvas, scale) gives, [width, height] in pixels.
+// The drawing buffer size resizeCanvas(canvas, scale) gives, [width, height] in pixels. An
+// OffscreenCanvas in a worker has no CSS size: the tree page's render worker sets its clientWidth,
+// clientHeight and the worker's devicePixelRatio from the page's (web/tree/tree_view.js).
 export function drawingBufferSize(canvas, scale = 1) {
-  const dpr = Math.min(window.devicePixelRatio || 1, 2) * scale;
+  const dpr = Math.min(globalThis.devicePixelRatio || 1, 2) * scale;
   return [Math.max(1, Math.round(canvas.clientWidth * dpr)), Math.max(1, Math.round(canvas.clientHeight * dpr))];
 }
 

@@ -89,15 +89,10 @@ export class WorkerClient {
   // Returns the number of buffers sent.
   recycle(groups, type = 'recycle') {
     const buffers = {}, transfer = [];
-    for (const [group, parts] of Object.entries(groups || {})) {
-      for (const [name, value] of Object.entries(parts || {})) {
-        const buffer = ArrayBuffer.isView(value) ? value.buffer : value;
-        // Skips empty and detached buffers, and a buffer named twice (one transfer each).
-        if (!(buffer instanceof ArrayBuffer) || buffer.byteLength === 0 || transfer.includes(buffer)) continue;
-        buffers[`${group}.${name}`] = buffer;
-        transfer.push(buffer);
-      }
-    }
+    eachBuffer(groups, (key, buffer) => {
+      buffers[key] = buffer;
+      transfer.push(buffer);
+    });
     if (transfer.length > 0) this.post(type, { buffers }, transfer);
     return transfer.length;
   }
@@ -177,6 +172,34 @@ export class WorkerClient {
     this.pending.delete(id);
     entry.resolve(value);
   }
+}
+
+// Calls fn("group.name", ArrayBuffer) for each buffer of recycle-style groups ({group: {name: view
+// or ArrayBuffer}}), skipping empty and detached buffers and a buffer named twice (one transfer each).
+function eachBuffer(groups, fn) {
+  const seen = new Set();
+  for (const [group, parts] of Object.entries(groups || {})) {
+    for (const [name, value] of Object.entries(parts || {})) {
+      const buffer = ArrayBuffer.isView(value) ? value.buffer : value;
+      if (!(buffer instanceof ArrayBuffer) || buffer.byteLength === 0 || seen.has(buffer)) continue;
+      seen.add(buffer);
+      fn(`${group}.${name}`, buffer);
+    }
+  }
+}
+
+// The ArrayBuffers of recycle-style groups, each once: a postMessage transfer list (the tree page
+// hands the worker's replies on to its render worker with it, web/tree/tree_view.js).
+export function buffersOf(groups) {
+  const out = [];
+  eachBuffer(groups, (key, buffer) => out.push(buffer));
+  return out;
+}
+
+// Every buffer of a tree reply (its mesh parts, and treeExtras) as recycle's groups.
+export function treeGroups(msg) {
+  const { bark, leaves, flowers } = msg?.mesh || {};
+  return { bark, leaves, flowers, ...treeExtras(msg) };
 }
 
 // A tree reply's ('tree': web/worker/tree_handler.js) buffers beside its mesh parts, as recycle's

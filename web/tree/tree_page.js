@@ -1,24 +1,22 @@
 // The tree study's page (public/index.html, main thread): builds the panel from the parameter
 // table, keeps the state in location.hash (one history entry per committed edit), reruns only the
 // stage an edit invalidates (a growth row regrows; a wind or sway row re-skins and restarts the
-// sway; a render row rebuilds the hybrid view, all on the tree already grown) and draws each tree
-// with WebGL2, as the layer of the view's one Frame (web/gl/frame.js: its camera, sun and ground). Growth runs in the worker (web/worker/tree_handler.js); the worker, Cancel,
+// sway; a render row rebuilds the hybrid view, all on the tree already grown) and shows each tree
+// in its view, drawn with WebGL2 by tree_view.js in the render worker (render_worker.js, the canvas
+// transferred to it) or, without OffscreenCanvas WebGL2 in workers, on this thread (view_client.js).
+// Growth runs in the growth worker (web/worker/tree_handler.js); the worker, Cancel,
 // debounced and merged edits with their stage, history (with the camera and the year shown),
 // exports and errors are the study controller's (web/shell/study_controller.js).
-// Does not: parse or check states (the core does), or draw directly (tree_renderer.js does).
+// Does not: parse or check states (the core does), or draw (tree_view.js and tree_renderer.js do).
 import '../shell/study_skeleton.js';  // first: the page's parts exist before this module's body runs
 import { OrbitCamera } from '../gl/orbit_camera.js';
-import { Frame } from '../gl/frame.js';
-import { FrameGovernor } from '../gl/frame_governor.js';
-import { FrameLoop } from '../gl/frame_loop.js';
-import { viewOf } from '../gl/buffers.js';
 import { ParamPanel } from '../shell/param_panel.js';
 import {
   Notices, copyLink, download, mountStudyNav, showEmbedDialog,
 } from '../shell/study_page.js';
 import { StudyController, numberOr } from '../shell/study_controller.js';
 import { bumpHook, hookValue, setHooks } from '../shell/test_hooks.js';
-import { atlasGroups, treeExtras } from '../shell/worker_client.js';
+import { atlasGroups, buffersOf, treeGroups } from '../shell/worker_client.js';
 import { ExportGuard, cutRefusal } from './cut_rules.js';
 import { EditFeedback } from './edit_feedback.js';
 import { GettingStarted } from './getting_started.js';
@@ -26,7 +24,7 @@ import { RenderTable } from './render_table.js';
 import { PhoneDock } from './phone_dock.js';
 import { mountStateFile } from './state_file.js';
 import { exportRefusals, mountExportPanel } from './export_panel.js';
-import { Renderer } from './tree_renderer.js';
+import { ViewClient } from './view_client.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
@@ -86,8 +84,7 @@ const controller = new StudyController({
       return false;
     }
     if (msg.control === 'motion') {  // no cheaper representation for this tree: full frames only
-      motionOff = true;
-      motionInFlight = false;
+      view.send('motionOff');
       return true;
     }
     if (msg.control === 'bark') {  // the simulated bark was refused: the line beside the choice
@@ -106,7 +103,7 @@ const controller = new StudyController({
   // The hash carries the camera after the state; each history entry keeps the year shown.
   // and the page's fields off their first value (the worker takes them out before the core
   // decodes): Sun shadows when off (shadows=off). The Bark choice is the table's rows (bark=1).
-  viewHash: () => `${renderer ? `&cam=${camera.toHash()}` : ''}${ui.shadows.value === 'off' ? '&shadows=off' : ''}`,
+  viewHash: () => `${drawing === 'on' ? `&cam=${camera.toHash()}` : ''}${ui.shadows.value === 'off' ? '&shadows=off' : ''}`,
   historyExtra: () => showYear,
   // Back/forward (and undo/redo, which use them) restore the entry's state; a hash typed by the
   // user arrives here too and becomes a new entry.
@@ -118,98 +115,87 @@ const controller = new StudyController({
 });
 const { worker, history: history_ } = controller;
 let restarting = false;  // the next 'ready' answers a restart (the panel exists already)
-let freshOnDraw = false; // the next frame drawn shows the tree of the latest edit (clears "stale")
 let lastGood = null;     // {hash, state} of the last tree shown
 
 // ---------------------------------------------------------------- rendering
+// The view draws in the render worker (web/tree/render_worker.js: the canvas transferred with
+// transferControlToOffscreen, WebGL2, the tree renderer, the frame loop and governor, the sway's
+// poses, picking), or on the main thread where a browser cannot draw WebGL2 in a worker; either
+// way through web/tree/tree_view.js's messages (view_client.js). The page keeps the DOM, the orbit
+// camera's input (its state goes to the view), the panel and the growth worker, whose replies it
+// hands on with their buffers transferred; the view hands them back for the growth worker's next
+// reply.
 const camera = new OrbitCamera();
-let frame = null;     // the view's one Frame (web/gl/frame.js): camera, sun, ground and the layers
-let renderer = null;  // the tree's layer of it (web/tree/tree_renderer.js)
-let poseDrawPending = false;
+let drawing = 'starting';  // 'on' once the view can draw, 'off' when it cannot
 const table = new RenderTable(ui.renderTable, ui.renderCol, ui.frameStats);
-// One frame in flight on the GPU (web/gl/frame_loop.js); while the tree sways or the camera
-// moves, the governor draws cheaper frames when they lag, and the full one once all is still.
-const governor = new FrameGovernor({ onStill: () => requestFrame() });
-// A frame bigger than the governor's budget is drawn in parts over several animation frames
-// (web/gl/progressive_frame.js) and goes on until it is finished, unless the governor now wants
-// another level (the view started or stopped moving, the cheap representation arrived); what
-// changed meanwhile (frameDirty) is drawn by the next frame.
-let frameDirty = true;
-let wholeNext = false;  // the next frame is drawn whole, not in parts (requestFrame(true, true))
-let freshNext = false;  // the next frame starts anew, not resuming one begun before (a new selection)
-let frameLevel = -1;  // the governor's level of the frame in parts
-let poseAtFrameStart = 0;  // the renderer's poseSerial when the frame on its way was started
-let swayTimeAtFrameStart = 0;  // ... and the simulated time of that pose (s)
-const frames = new FrameLoop(() => {
-  // While a big tree goes up in parts the canvas keeps its last frame (no draw: a frame of the old
-  // big tree costs seconds on a CPU GL, and every part's upload would wait for it).
-  if (renderer.uploading) return false;
-  if (poseDrawPending) governor.motion();  // a new pose to draw: moving, however long the last frame took
-  // (a hybrid-mode tree is cheap already: its levels only shrink the drawing buffer)
-  const cheapAvailable = hybridOn || renderer.motionReady() ? Infinity : 0;
-  const next = governor.peek(cheapAvailable);
-  if (next.wantCheap > 0 && !renderer.motionReady()) requestMotionView();
-  // Swaying, the cheaper representation on its way and a full frame too big for one animation
-  // frame: no full frame meanwhile (the canvas keeps the last one; the GPU paints the atlas), the
-  // sway goes on.
-  if (windPlaying && next.moving && next.capped && !motionOff && renderer.fullPrimitives() > governor.budget()) {
-    frame.progress.abort();  // a full frame in parts would only hold the atlas back
-    if (poseDrawPending) {
-      poseDrawPending = false;
-      worker.post('poseDone');
-    }
-    return false;
+let freshSerial = 0;       // the tree whose first frame clears "stale" (0: none waiting)
+const viewReplies = { picked: [], timed: [], png: [], finished: [] };  // waiting for the view's answer
+const viewCss = () => ({ css: [ui.canvas.clientWidth, ui.canvas.clientHeight], dpr: globalThis.devicePixelRatio || 1 });
+const view = new ViewClient(ui.canvas, (msg) => onView(msg), { ...viewCss(), shadows: ui.shadows.value !== 'off' });
+setHooks({ viewThread: view.mode });  // 'starting' until the view is up
+new ResizeObserver(() => view.send('resize', viewCss())).observe(ui.canvas);
+
+// Asks the view for one answer of `type` (picked, timed, png, finished); resolves to its message.
+function askView(type, reply, fields = {}) {
+  return new Promise((resolve) => {
+    viewReplies[reply].push(resolve);
+    view.send(type, fields);
+  });
+}
+
+// The view's messages (web/tree/tree_view.js).
+function onView(msg) {
+  switch (msg.type) {
+    case 'batch':  // the render worker's messages of one task
+      for (const m of msg.messages) onView(m);
+      return;
+    case 'ready':
+      drawing = 'on';
+      setHooks({ viewThread: view.mode });
+      camera.attach(ui.canvas, cameraMoved);
+      view.send('camera', { state: cameraState() });
+      writeHash();  // the link gains the camera (cam=)
+      return;
+    case 'failed':
+      drawing = 'off';
+      setHooks({ drawing: 'off' });  // no frames will come (tests stop waiting for them)
+      notices.set('webgl', `Cannot draw: ${msg.message}`);
+      treeDrawn(Infinity);
+      if (freshSerial) feedback.fresh();
+      return;
+    case 'lost':
+      notices.set('webgl', 'The WebGL2 context was lost; reload the page to draw again.');
+      return;
+    case 'hooks': return setHooks(msg.fields);
+    case 'bump': return void bumpHook(msg.key);
+    case 'table': return table[msg.method](msg.arg);
+    case 'worker': return worker.post(msg.message, msg.fields);
+    case 'recycle': return void worker.recycle(msg.groups);
+    case 'drawn':
+      treeDrawn(msg.serial);
+      if (freshSerial && msg.serial >= freshSerial) {  // the tree that answers the latest edit is on screen now
+        freshSerial = 0;
+        feedback.fresh();
+      }
+      return;
+    default:
+      if (viewReplies[msg.type]?.length) viewReplies[msg.type].shift()(msg);
   }
-  const resume = frame.progress.pending() && next.level === frameLevel && !wholeNext && !freshNext;
-  let quality = null;
-  let whole = false;
-  if (!resume) {
-    viewsAtFrameStart = viewsReceived;
-    poseAtFrameStart = renderer.poseSerial;
-    swayTimeAtFrameStart = renderer.swaying ? renderer.swayTime : 0;
-    freshNext = false;
-    quality = governor.quality(cheapAvailable);
-    frameLevel = quality.level;
-    frameDirty = false;
-    whole = wholeNext;
-    wholeNext = false;
-  }
-  // A camera drag without the cheaper representation: each frame at once (smaller), as it moves;
-  // an edit that must show at once (the sun): one whole frame, however long it takes.
-  const dragging = next.moving && next.capped && !windPlaying;
-  const drawn = frame.render(camera, quality, { budget: dragging || whole ? Infinity : governor.budget(), resume });
-  if (!drawn) return false;
-  governor.drew(drawn.drawnPrimitives, !drawn.partial, drawn.primitives, drawn.shadowPrimitives);
-  setHooks({ frameScale: frame.scale, frameMode: drawn.mode, framesDrawn: frames.stats.drawn,
-    framesSkipped: frames.stats.skippedBusy, frameGpuMs: Math.round(frames.stats.gpuMs), framePartial: drawn.partial ? 1 : 0 });
-  if (drawn.partial) {
-    if (drawn.mode !== 'motion') table.showPartial(drawn);
-    frames.request();  // the rest of this frame
-    return true;
-  }
-  if (frameDirty) frames.request();  // what changed while the frame was drawn in parts
-  if (poseDrawPending) {  // the worker sends the next pose once this one is on screen
-    poseDrawPending = false;
-    worker.post('poseDone');
-  }
-  if (drawn.mode !== 'motion') table.showFrame(drawn);
-  // tests wait for the new tree's frame, and for the frame that shows a new selection
-  treeDrawn(treeSerial);
-  setHooks({ drawnTreeSerial: treeSerial, drawnYear: shownYear, drawnSelection: drawn.selected ?? -1,
-    drawnMode: drawn.mode, drawnViews: viewsAtFrameStart,
-    // the sun's shadow map in this frame: 'drawn' (redrawn), 'reused' or 'off'; maps drawn so far
-    drawnShadow: drawn.shadow, shadowPasses: frame.shadowMap?.passes ?? 0,
-    // the poses this frame was started with, and the latest (equal: the pose on screen is the latest)
-    drawnPose: poseAtFrameStart, latestPose: renderer.poseSerial, drawnSwayTime: swayTimeAtFrameStart.toFixed(3) });
-  bumpHook('framesShown');  // finished frames (the orbit frame time of tests/browser/no_blank_frames)
-  if (freshOnDraw) {  // the tree that answers the latest edit is on screen now
-    freshOnDraw = false;
-    feedback.fresh();
-  }
-  return true;
-}, { governor });
+}
+
+// Tests: a 'niwa-gpu-finish' event on the document asks the view to wait for the GPU's work drawn
+// so far (the page's canvas has no context of its own to read a pixel from once transferred);
+// data-gpu-finished counts the answers.
+document.addEventListener('niwa-gpu-finish', () => askView('finish', 'finished').then(() => bumpHook('gpuFinished')));
+
+// The orbit camera's state for the view (its input stays here).
+function cameraState() {
+  const { yaw, pitch, distance, fov, near, far } = camera;
+  return { yaw, pitch, distance, target: [...camera.target], fov, near, far };
+}
+
 // The tree serials drawn: treeOnScreen(serial) resolves once a finished frame shows that tree or
-// a newer one (at once without a renderer: nothing will be drawn).
+// a newer one (at once when the view cannot draw: nothing will be drawn).
 let drawnSerial = 0;
 let drawnWaiters = [];
 function treeDrawn(serial) {
@@ -219,116 +205,35 @@ function treeDrawn(serial) {
   for (const w of done) w.resolve();
 }
 function treeOnScreen(serial) {
-  if (!renderer || drawnSerial >= serial) return Promise.resolve();
+  if (drawing === 'off' || drawnSerial >= serial) return Promise.resolve();
   return new Promise((resolve) => drawnWaiters.push({ serial, resolve }));
 }
-const requestFrame = (urgent = false, whole = false) => {
-  if (!renderer) return;
-  frameDirty = true;
-  wholeNext ||= whole;
-  frames.request(urgent);
-};
-
-// Hybrid mode: the worker chooses card or line per branch for each view (eq. 4.1 with hysteresis);
-// one request at a time, the newest camera wins.
-let hybridOn = false;
-let viewInFlight = false;
-let viewDirty = false;
-function requestView() {
-  if (!hybridOn || !renderer) return;
-  if (viewInFlight) {
-    viewDirty = true;
-    return;
-  }
-  viewInFlight = true;
-  viewDirty = false;
-  worker.post('view', { camera: renderer.viewFor(camera) });
-}
-
-// A full-mode tree's cheaper representation while it moves (the governor's cheap levels): its
-// hybrid scene from the worker ('view' with motion: true; the atlas once per tree), one request at
-// a time, the newest camera wins; none when the worker cannot build it for this tree.
-let motionInFlight = false;
-let motionDirty = false;
-let motionOff = false;
-function requestMotionView() {
-  if (hybridOn || !renderer || motionOff) return;
-  if (motionInFlight) {
-    motionDirty = true;
-    return;
-  }
-  motionInFlight = true;
-  motionDirty = false;
-  worker.post('view', { camera: renderer.viewFor(camera), motion: true, atlas: !renderer.hasMotionAtlas() });
-}
+const requestFrame = (urgent = false, whole = false) => view.send('frame', { urgent, whole });
 
 // The renderer's light is the light model's sun (parameters sun_elevation and sun_azimuth). Every
 // panel edit comes here: only a sun that moved is drawn at once (issue 32 item 5: an urgent whole
 // frame of the old tree for every edit held the new tree's first frame back until the GPU had
 // drawn it, 0.9 s of a probed 1.4 s edit on SwiftShader).
-// urgent: false when the renderer has just started (its first frame is asked for anyway).
-let sunShown = '';  // the sun the renderer has, 'elevation,azimuth'
-function showSun(urgent = true) {
+let sunShown = '';  // the sun the view has, 'elevation,azimuth'
+function showSun() {
   if (!panel) return;
   const v = panel.values();
   const el = Number(v.sun_elevation), az = Number(v.sun_azimuth), weight = Number(v.sun_weight);
   if (!Number.isFinite(el) || !Number.isFinite(az)) return;
   const growth = weight > 0 ? `and the growth model, weight ${weight}` : 'only; the growth model has sky light (sun_weight 0)';
   ui.sunInfo.textContent = `sun: az ${az}°, el ${el}° (lights the view ${growth})`;
-  if (!renderer || sunShown === `${el},${az}`) return;
+  if (sunShown === `${el},${az}`) return;
+  // The first sun goes with the first tree (no frame of its own); a moved one at once.
+  view.send('sun', { elevation: el, azimuth: az, urgent: sunShown !== '' });
   sunShown = `${el},${az}`;
-  renderer.setSun(el, az);
-  if (urgent) requestFrame(true, true);  // the new light at once, before the regrown tree
 }
 
 // Camera moves rewrite the cam= field of the current history entry (no new entry), a moment later.
 let cameraTimer = 0;
 function cameraMoved() {
-  governor.motion();
-  requestFrame();
-  requestView();
-  if (renderer?.motionReady()) requestMotionView();  // its draw list is for the last camera
+  view.send('camera', { state: cameraState(), moved: true });
   clearTimeout(cameraTimer);
   cameraTimer = setTimeout(writeHash, 400);
-}
-
-// The hybrid draw lists installed, and how many a frame began with (tests wait for a whole frame
-// drawn with the latest list: hook drawnViews).
-let viewsReceived = 0;
-let viewsAtFrameStart = 0;
-let rendererStarting = true;  // until startRenderer has a renderer or has failed
-let pendingTree = null;        // the tree that came before the renderer (installed once it is up)
-
-async function startRenderer() {
-  try {
-    frame = new Frame(ui.canvas, { camera, what: 'the tree', request: () => requestFrame() });
-    await frame.init();
-    frame.setShadows(ui.shadows.value !== 'off');
-    renderer = await frame.addLayer(new Renderer(frame));
-    showSun(false);  // the state's sun when the panel came first
-    frames.attach(frame.gl, ui.canvas);
-    camera.attach(ui.canvas, cameraMoved);
-    new ResizeObserver(() => {
-      requestFrame();
-      requestView();
-    }).observe(ui.canvas);
-    ui.canvas.addEventListener('webglcontextlost', (e) => {
-      e.preventDefault();
-      notices.set('webgl', 'The WebGL2 context was lost; reload the page to draw again.');
-    });
-    requestFrame();
-  } catch (e) {
-    renderer = null;
-    setHooks({ drawing: 'off' });  // no frames will come (tests stop waiting for them)
-    notices.set('webgl', `Cannot draw: ${e.message}`);
-  }
-  rendererStarting = false;
-  // A tree that came while WebGL started goes on now; the link gains the camera (cam=).
-  const waiting = pendingTree;
-  pendingTree = null;
-  if (waiting && renderer) installTree(waiting);
-  else if (waiting) giveBackTree(waiting);
-  writeHash();
 }
 
 // ---------------------------------------------------------------- state
@@ -427,19 +332,16 @@ function formatStats(s) {
   return `internodes ${s.internodes} · leaves ${s.leaves} · flowers ${s.flowers} · height ${height} cm · grown in ${s.ms.toFixed(0)} ms`;
 }
 
-function select(id) {
+// The selection (and its highlight in the view, unless `send` is false: a new tree carries it).
+function select(id, send = true) {
   selected = Number.isInteger(id) ? id : null;
-  renderer?.select(selected);
   const refusal = selected === null ? '' : cutRefusal(selected, shownYear);
   ui.cut.disabled = selected === null || refusal !== '';
   ui.selection.textContent = selected === null
     ? 'Click or tap a branch in the view to select it.'
     : refusal || `Branch ${selected} selected: Cut (or the Delete key) removes it and everything above it after year ${shownYear}.`;
   setHooks({ selected: selected === null ? '' : selected });
-  // A frame in parts begun before the click has the old selection's steps (no x-ray pass for the
-  // new branch): drop it and start one with the new highlight, instead of finishing it first.
-  freshNext = true;
-  requestFrame();
+  if (send) view.send('select', { id: selected });
 }
 
 // Opens the full table's row `key` (its section) and focuses it, so its help line shows.
@@ -509,35 +411,10 @@ worker.on('progress', (msg) => {
   ui.progress.textContent = msg.year < msg.years ? `growing: year ${msg.year} of ${msg.years}` : 'building mesh';
 });
 
-// Once on the GPU (or dropped), the mesh's buffers, its textures' pixels and the hybrid atlas
-// (painted at install) go back for the worker's next tree to fill; nothing on the page reads
-// them after (the renderer keeps copies of what it keeps).
+// Buffers the view will not draw go back for the worker's next tree to fill (the view hands back
+// those it drew once they are on the GPU).
 function giveBackTree(msg) {
-  const { bark, leaves, flowers } = msg.mesh;
-  worker.recycle({ bark, leaves, flowers, ...treeExtras(msg) });
-}
-
-// Puts a grown tree on the renderer (framing the camera on it when asked).
-function installTree(msg) {
-  const installed = renderer.setTree(msg.mesh, msg.stats.bounds, msg.swayNodes, msg.hybrid);
-  // A big mesh is installed a few tasks later (uploaded in parts): a draw list that arrives
-  // before then finds no hybrid tree and is dropped, so the view is asked for again once the
-  // tree is in place.
-  const later = renderer.uploading;
-  installed.then((done) => {
-    giveBackTree(msg);
-    if (done) governor.reset();  // another tree: its frames cost what they cost
-    if (done && later) requestView();
-    requestFrame();
-  });
-  renderer.leafLength = Number(panel.values().leaf_size) / 100 || 0.05;
-  lastBounds = msg.stats.bounds;
-  if (frameNext) {
-    camera.frame(msg.stats.bounds, 1.12);  // room for the year bar over the view
-    frameNext = false;
-    writeHash();
-  }
-  requestFrame();
+  worker.recycle(treeGroups(msg));
 }
 
 worker.on('tree', (msg) => {
@@ -566,25 +443,28 @@ worker.on('tree', (msg) => {
   table.showFullCounts(msg.mesh);
   // The worker's buffers reused (web/worker/transfer.js): what this reply's copy went into.
   setHooks({ buffersReused: msg.buffers?.reused ?? '', buffersFresh: msg.buffers?.fresh ?? '' });
-  if (renderer) installTree(msg);
-  else if (rendererStarting) {
-    // WebGL still starting (a slow first shader compile): the tree waits for it, the last one only.
-    if (pendingTree) giveBackTree(pendingTree);
-    pendingTree = msg;
-  } else {
-    giveBackTree(msg);
-  }
-  hybridOn = Boolean(msg.hybrid);
-  viewInFlight = false;
-  motionInFlight = false;
-  motionOff = false;
-  table.showHybridCounts(null);
-  setHooks({ renderMode: hybridOn ? 'hybrid' : 'full' });
-  requestView();
+  setHooks({ renderMode: msg.hybrid ? 'hybrid' : 'full' });
   // A new tree clears the selection; another age of it, or a later stage of it, keeps it.
   const sameTree = latestRequest.kind === 'scrub' || !msg.grown;
-  select(sameTree ? selected : null);
+  select(sameTree ? selected : null, false);
   treeSerial += 1;
+  lastBounds = msg.stats.bounds;
+  if (frameNext) {
+    camera.frame(msg.stats.bounds, 1.12);  // room for the year bar over the view
+    frameNext = false;
+    writeHash();
+  }
+  if (drawing === 'off') {
+    giveBackTree(msg);
+  } else {
+    // To the view (while WebGL starts it keeps the last tree only), its buffers moved, not copied;
+    // they come back once on the GPU ('recycle').
+    view.send('camera', { state: cameraState() });
+    const tree = { mesh: msg.mesh, bounds: msg.stats.bounds, swayNodes: msg.swayNodes, hybrid: msg.hybrid,
+      hybridOn: Boolean(msg.hybrid), leafLength: Number(panel.values().leaf_size) / 100 || 0.05,
+      serial: treeSerial, year: shownYear, selected };
+    view.send('tree', tree, buffersOf(treeGroups(tree)));
+  }
   // (the stages a restage re-did, core TreeRun::Update, go to the hooks from the controller)
   if (msg.grown) bumpHook('treesGrown');
   setHooks({
@@ -598,65 +478,30 @@ worker.on('tree', (msg) => {
   // "stale" stays while a newer edit waits (the controller sends it now if it was queued behind
   // this tree); else it goes with the first frame of this tree.
   if (!controller.editWaiting()) {
-    if (renderer) freshOnDraw = true; else feedback.fresh();
+    if (drawing !== 'off') freshSerial = treeSerial; else feedback.fresh();
   }
 });
 
+// The view's cheaper representation and hybrid draw lists (it asked for them), and the sway's
+// poses: to the view, their buffers moved; it hands them back once uploaded.
 worker.on('motionAtlas', (msg) => {
-  countReuse('motion', msg.buffers);
-  // Painted (or dropped): its buffers go back for the worker's next atlas to fill.
-  const giveBack = () => worker.recycle(atlasGroups(msg.hybrid));
-  if (!renderer) return giveBack();
-  renderer.setMotionHybrid(msg.hybrid, governor.budget()).then((painted) => {
-    giveBack();
-    if (painted) setHooks({ motionTextured: renderer.motion.hybrid.textured.join(',') });  // tests
-    if (governor.moving()) requestFrame();
-  });
+  if (drawing === 'off') return void worker.recycle(atlasGroups(msg.hybrid));
+  view.send('motionAtlas', { hybrid: msg.hybrid, buffers: msg.buffers }, buffersOf(atlasGroups(msg.hybrid)));
 });
 
 worker.on('drawList', (msg) => {
-  if (msg.motion) {
-    motionInFlight = false;
-    renderer?.setMotionDrawList(msg);
-    if (governor.moving()) requestFrame();
-    if (motionDirty) requestMotionView();
-    return;
-  }
-  viewInFlight = false;
-  if (!hybridOn || !renderer) return;
-  renderer.setDrawList(msg);
-  viewsReceived += 1;
-  // Uploaded: the list's buffers go back for the worker's next draw list to fill.
-  worker.recycle({ cards: msg.cards, lines: msg.lines });
-  countReuse('view', msg.buffers);
-  table.showHybridCounts(msg.stats);
-  requestFrame(true);  // a hybrid frame is cheap: the new list at once, not after the frame in flight
-  if (viewDirty) requestView();
+  if (drawing === 'off') return;
+  const { type, ...list } = msg;
+  view.send('drawList', list, buffersOf({ cards: msg.cards, lines: msg.lines }));
 });
 
-// The worker's buffers reused and fresh (web/worker/transfer.js), per kind of reply, for the hooks
-// data-<kind>-buffers-reused and -fresh.
-const reuse = {};
-function countReuse(kind, buffers) {
-  const r = (reuse[kind] ||= { reused: 0, fresh: 0 });
-  r.reused += buffers?.reused || 0;
-  r.fresh += buffers?.fresh || 0;
-  setHooks({ [`${kind}BuffersReused`]: r.reused, [`${kind}BuffersFresh`]: r.fresh });
-}
-
 worker.on('pose', (msg) => {
-  if (!windPlaying || !renderer || renderer.uploading) {  // no poses for a tree not yet in place
+  if (!windPlaying || drawing !== 'on') {  // no poses for a tree not drawn
     worker.post('poseDone');
     return;
   }
-  renderer.setPoses(viewOf(Float32Array, msg.poses), msg.wind, msg.time);
-  // Uploaded: the poses buffer goes back for the worker's next pose to fill.
-  worker.recycle({ sway: { poses: msg.poses } });
-  countReuse('pose', msg.buffers);
-  governor.motion();
-  poseDrawPending = true;
   showWind(msg);
-  requestFrame();
+  view.send('pose', { poses: msg.poses, wind: msg.wind, time: msg.time, buffers: msg.buffers }, buffersOf({ sway: { poses: msg.poses } }));
 });
 
 // ---------------------------------------------------------------- controls
@@ -722,13 +567,17 @@ ui.canvas.addEventListener('pointerdown', (e) => {
   down = { x: e.clientX, y: e.clientY, t: performance.now() };
 });
 ui.canvas.addEventListener('pointerup', (e) => {
-  if (!down || !renderer) return;
+  if (!down || drawing !== 'on') return;
   const moved = Math.hypot(e.clientX - down.x, e.clientY - down.y);
   const quick = performance.now() - down.t < 600;
   down = null;
   if (moved > 5 || !quick) return;
   const rect = ui.canvas.getBoundingClientRect();
-  select(renderer.pick(camera, e.clientX - rect.left, e.clientY - rect.top));
+  // The view picks (its readPixels waits for the frame on the GPU); data-picks-answered counts the answers.
+  askView('pick', 'picked', { x: e.clientX - rect.left, y: e.clientY - rect.top }).then((msg) => {
+    select(msg.id);
+    bumpHook('picksAnswered');
+  });
 });
 
 function cutSelected() {
@@ -785,14 +634,10 @@ function setWind(play) {
   windPlaying = play;
   ui.wind.textContent = play ? 'Still' : 'Blow';
   ui.wind.setAttribute('aria-pressed', String(play));
-  // The still frames were slow: the sway will want the cheaper representation, asked for first.
-  if (play && governor.motionCheap() > 0 && !renderer?.motionReady()) requestMotionView();
+  // The view asks for the cheaper representation first when its still frames were slow, and on
+  // Still draws the rest shape at full quality at once.
+  view.send('wind', { play });
   worker.post('wind', { play });
-  if (!play) {
-    governor.stop();  // the rest shape at full quality, at once
-    renderer?.setRestPoses(renderer.poseNodes);
-    requestFrame(true);
-  }
   showWind(null);
 }
 ui.wind.addEventListener('click', () => setWind(!windPlaying));
@@ -805,17 +650,18 @@ let timing = null;  // {cancelled} while a timing runs
 ui.timeFrames.addEventListener('click', async () => {
   if (timing) {
     timing.cancelled = true;
+    view.send('cancelTiming');
     ui.timeFrames.textContent = 'Cancelling…';
     return;
   }
-  if (!renderer) return;
+  if (drawing !== 'on') return;
   const label = ui.timeFrames.textContent;
   const run = { cancelled: false };
   timing = run;
   ui.timeFrames.textContent = 'Cancel timing';
   setHooks({ timing: 'running' });
   try {
-    const timed = await frame.timeFrames(10, { cancelled: () => run.cancelled });
+    const timed = (await askView('time', 'timed', { frames: 10 })).result || { ms: null, frames: 0, cancelled: true, mode: 'full' };
     const column = timed.mode === 'hybrid' ? 'row' : 'full';
     if (timed.ms === null) {
       table.set(column, 'timed_ms', 'cancelled');
@@ -828,7 +674,6 @@ ui.timeFrames.addEventListener('click', async () => {
   } finally {
     timing = null;
     ui.timeFrames.textContent = label;
-    requestFrame();
   }
 });
 
@@ -844,9 +689,8 @@ ui.renderMode.addEventListener('change', () => {
 // link carries shadows=off as it carries the camera: the current history entry is rewritten.
 function showShadows(value) {
   ui.shadows.value = value === 'off' ? 'off' : 'on';
-  frame?.setShadows(ui.shadows.value !== 'off');
+  view.send('shadows', { on: ui.shadows.value !== 'off' });
   setHooks({ shadows: ui.shadows.value });
-  requestFrame(true, true);
 }
 ui.shadows.addEventListener('change', () => {
   showShadows(ui.shadows.value);
@@ -876,19 +720,18 @@ ui.downloadGlb.addEventListener('click', () => requestExport('glb'));
 const refusals = exportRefusals(mountExportPanel(ui.downloadGlb.parentElement, requestExport), ui.downloadGlb);
 ui.downloadJson.addEventListener('click', () => requestExport('json'));
 ui.downloadPng.addEventListener('click', () => {
-  if (!renderer) return;
-  frame.render(camera);
-  ui.canvas.toBlob((blob) => {
+  if (drawing !== 'on') return;
+  askView('png', 'png').then(({ blob }) => {
     if (blob) download(blob, `${fileStem()}.png`, ui.shareStatus);
     else ui.shareStatus.textContent = 'The picture could not be saved.';
-  }, 'image/png');
+  });
 });
 
 // Save / Open: the whole state as a file (the CLI's --state); an opened state is a new history
 // entry, drawn from its own camera when it has one.
 mountStateFile({ save: $('save-state'), open: $('open-state'), input: $('open-state-file'), status: $('state-status') }, {
   worker,
-  state: () => ({ ...currentState(), camera: renderer ? camera.toHash() : '' }),
+  state: () => ({ ...currentState(), camera: drawing === 'on' ? camera.toHash() : '' }),
   stem: fileStem,
   onOpen: (state) => {
     stopPlaying();
@@ -918,5 +761,4 @@ ui.embed.addEventListener('click', () => {
 
 setHooks({ status: 'loading' });
 if (hookValue('treesGrown') === undefined) setHooks({ treesGrown: 0 });
-startRenderer();
 worker.request('init', { hash: location.hash }, { done: ['ready'] });
