@@ -7,6 +7,7 @@
 #include <limits>
 #include <utility>
 
+#include "bark/node_sums.h"
 #include "bark/regions.h"
 #include "math/det_math.h"
 #include "math/simd4.h"
@@ -158,20 +159,7 @@ __attribute__((noinline)) void SnapBonds(uint8_t* bonded, int i, int bits, int* 
 // Node i's spring forces in layer r: its six springs in ascending index added to 0 (springs.cpp
 // NodeForce2).
 NIWA_LANES_INLINE void NodeForceOf(const NodePass& p, int r, int i, float* fx, float* fz) {
-  float x = 0.0f, z = 0.0f;
-  const std::size_t e0 = 6 * static_cast<std::size_t>(i);
-  for (std::size_t e = e0; e < e0 + 6; ++e) {
-    const int q = p.inc_slot[e];
-    if (p.inc_a[e]) {
-      x += p.gx[r][q];
-      z += p.gz[r][q];
-    } else {
-      x -= p.gx[r][q];
-      z -= p.gz[r][q];
-    }
-  }
-  *fx = x;
-  *fz = z;
+  NodeSums(p.gx[r], p.gz[r], p.inc_slot, p.inc_a, 6 * static_cast<std::size_t>(i), fx, fz);
 }
 
 // Nodes i..i+W−1 (W lanes of V, masks I): lane by lane what NodeOne does, selects in place of its
@@ -187,22 +175,8 @@ NIWA_LANES_INLINE void NodeBatch(const NodePass& p, const NodeLanes<V>& c, int i
   V fx[3], fz[3];
   if (run) {
     const std::size_t e0 = 6 * static_cast<std::size_t>(i);
-    for (int r = 0; r < 3; ++r) {
-      V x = c.zero, z = c.zero;
-      for (std::size_t e = e0; e < e0 + 6; ++e) {
-        const V vx = LoadLanes<V>(p.gx[r] + p.inc_slot[e]);
-        const V vz = LoadLanes<V>(p.gz[r] + p.inc_slot[e]);
-        if (p.inc_a[e]) {
-          x += vx;
-          z += vz;
-        } else {
-          x -= vx;
-          z -= vz;
-        }
-      }
-      fx[r] = x;
-      fz[r] = z;
-    }
+    for (int r = 0; r < 3; ++r)
+      RunSums<V>(p.gx[r], p.gz[r], p.inc_slot, p.inc_a, e0, &fx[r], &fz[r]);
   } else {
     // At the seams each node's springs come in its own order: the sums one by one (into an array,
     // not lane by lane into the vector: WASM would spill it for each lane).

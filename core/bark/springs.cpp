@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 
+#include "bark/node_sums.h"
 #include "math/det_math.h"
 #include "math/simd4.h"
 #include "math/simd8.h"
@@ -143,6 +144,26 @@ struct SpringLanes {
   }
 };
 
+// x > floor ? x : floor, lane by lane (a NaN x gives floor): WASM's pmax(floor, x) = floor < x ? x
+// : floor is that very choice in one operation a v128 (the select is three in V8's code: and,
+// andnot, or); natively the select.
+template <class V>
+NIWA_LANES_INLINE V AtLeast(const V& x, const V& floor) {
+#if defined(__wasm_simd128__)
+  if constexpr (sizeof(V) == sizeof(simd::Float4)) {
+    return (V)wasm_f32x4_pmax((v128_t)floor, (v128_t)x);
+  } else {
+    const simd::Float4 lo =
+        (simd::Float4)wasm_f32x4_pmax((v128_t)simd::Low(floor), (v128_t)simd::Low(x));
+    const simd::Float4 hi =
+        (simd::Float4)wasm_f32x4_pmax((v128_t)simd::High(floor), (v128_t)simd::High(x));
+    return simd::Join(lo, hi);
+  }
+#else
+  return simd::Select(x > floor, x, floor);
+#endif
+}
+
 // Node a's state in lanes n..n+W−1.
 template <class V>
 struct NodeState {
@@ -186,11 +207,11 @@ NIWA_LANES_INLINE void SpringBatch(const SpringPass& p, const SpringLanes<V>& v,
   const V dz = v.dz0[t] + (buz - a.uz);
   const V l2 = dx * dx + dz * dz;
   const I breaks = l2 > limit2;
-  const V l = simd::Sqrt(simd::Select(l2 > v.tiny, l2, v.tiny));
+  const V l = simd::Sqrt(AtLeast(l2, v.tiny));
   const V inv = v.one / l;
   const V nx = dx * inv, nz = dz * inv;
   const V rel = ((bwx - a.wx) + v.rx0[t]) * nx + ((bwz - a.wz) + v.rz0[t]) * nz;
-  const V alive = simd::Select(intact & ~breaks, v.one, v.zero);
+  const V alive = (V)((I)v.one & (intact & ~breaks));  // 1 where intact and unbroken, else +0
   const V f = alive * (v.k[t] * (l - v.l0[t]) + v.c[t] * rel);
   StoreLanes(p.gx[t] + n, f * nx);
   StoreLanes(p.gz[t] + n, f * nz);
@@ -272,20 +293,7 @@ struct NodePass2 {
 
 // Node i's spring forces: its six springs in ascending index added to 0.
 NIWA_LANES_INLINE void NodeForce2(const NodePass2& p, int i, float* fx, float* fz) {
-  float x = 0.0f, z = 0.0f;
-  const std::size_t e0 = 6 * static_cast<std::size_t>(i);
-  for (std::size_t e = e0; e < e0 + 6; ++e) {
-    const int q = p.inc_slot[e];
-    if (p.inc_a[e]) {
-      x += p.gx[q];
-      z += p.gz[q];
-    } else {
-      x -= p.gx[q];
-      z -= p.gz[q];
-    }
-  }
-  *fx = x;
-  *fz = z;
+  NodeSums(p.gx, p.gz, p.inc_slot, p.inc_a, 6 * static_cast<std::size_t>(i), fx, fz);
 }
 
 // Nodes i..i+W−1 (W lanes of V): the springs' sums as lanes where `run` (node_run4 or node_run8
@@ -298,20 +306,7 @@ NIWA_LANES_INLINE void NodeBatch2(const NodePass2& p, const V& dt, const V& inv_
   constexpr int W = sizeof(V) / sizeof(float);
   V fx, fz;
   if (run) {
-    fx = SplatLanes<V>(0.0f);
-    fz = fx;
-    const std::size_t e0 = 6 * static_cast<std::size_t>(i);
-    for (std::size_t e = e0; e < e0 + 6; ++e) {
-      const V vx = LoadLanes<V>(p.gx + p.inc_slot[e]);
-      const V vz = LoadLanes<V>(p.gz + p.inc_slot[e]);
-      if (p.inc_a[e]) {
-        fx += vx;
-        fz += vz;
-      } else {
-        fx -= vx;
-        fz -= vz;
-      }
-    }
+    RunSums<V>(p.gx, p.gz, p.inc_slot, p.inc_a, 6 * static_cast<std::size_t>(i), &fx, &fz);
   } else {
     float sx[W], sz[W];
     for (int q = 0; q < W; ++q) NodeForce2(p, i + q, &sx[q], &sz[q]);
