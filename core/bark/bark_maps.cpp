@@ -586,11 +586,10 @@ BarkMaps DrawLayers(const Lattice& L, const std::vector<MapLayer>& layers, doubl
 
 }  // namespace
 
-int MapHeightPx(int width, double circumference_cm, double height_cm) {
-  const double want = width * height_cm / circumference_cm;
-  int best = 256;
+int NearestPowerOfTwo(double want, int lo, int hi) {
+  int best = lo;
   double best_ratio = 1e300;
-  for (int p = 256; p <= 4096; p *= 2) {
+  for (int p = lo; p <= hi; p *= 2) {
     const double r = std::max(p / want, want / p);
     if (r < best_ratio) {
       best_ratio = r;
@@ -598,6 +597,10 @@ int MapHeightPx(int width, double circumference_cm, double height_cm) {
     }
   }
   return best;
+}
+
+int MapHeightPx(int width, double circumference_cm, double height_cm) {
+  return NearestPowerOfTwo(width * height_cm / circumference_cm, 256, 4096);
 }
 
 BarkPalette SpeciesPalette(const std::string& species) {

@@ -30,6 +30,9 @@ struct BarkMaps {
 // The map height for a width and patch (power of two nearest width·height_cm/circumference_cm,
 // within [256, 4096]).
 int MapHeightPx(int width, double circumference_cm, double height_cm);
+// The power of two in [lo, hi] nearest `want` by ratio (the smaller on a tie): MapHeightPx's rows,
+// and the composition tier's narrow map widths (compose/bark_on_tree FitMapWidth).
+int NearestPowerOfTwo(double want, int lo, int hi);
 
 // A species' bark colours (sRGB fractions, before the grain, pillow and cavity shading): the
 // plates' tops, the fresh cork of a crack's walls, the crack floor (the inner layer) and the grey

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <utility>
 
+#include "bark/bark_maps.h"
 #include "bark/bark_params.h"
 #include "bark/bark_run.h"
 #include "bark/lattice.h"
@@ -79,17 +80,7 @@ Result<BarkFrame> Frame(const bark::BarkRun& run, bool with_height = true) {
 // size·cf/hf, in [32, size] (MapHeightPx then gives about `size` rows).
 int FitMapWidth(int size, double cf, double hf) {
   if (!(cf > 0) || !(hf > cf)) return size;
-  const double want = size * cf / hf;
-  int best = size;
-  double best_ratio = 1e300;
-  for (int p = 32; p <= size; p *= 2) {
-    const double r = std::max(p / want, want / p);
-    if (r < best_ratio) {
-      best_ratio = r;
-      best = p;
-    }
-  }
-  return best;
+  return bark::NearestPowerOfTwo(size * cf / hf, 32, size);
 }
 
 // Runs the state and frames it; fit: the maps' longer side is the state's map_size (FitMapWidth),
