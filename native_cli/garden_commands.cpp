@@ -125,7 +125,7 @@ int RunGardenGrow(const GardenOptions& o, std::ostream& out) {
     if (outputs[k].first->empty()) continue;
     Result<Estimate> e = run->ExportEstimate(outputs[k].second);
     if (!e.ok()) Fail(e.status().Within(flags[k]));
-    Check(CheckEstimate(*e, budget, "lower max_triangles or the trees (density, size)"));
+    Check(CheckEstimate(*e, budget, "lower max_triangles or shapes, or the trees (density, size)"));
   }
   const auto t1 = std::chrono::steady_clock::now();
   const double moss_start_ms = run->ms_moss();

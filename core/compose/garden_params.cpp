@@ -75,6 +75,11 @@ std::vector<ParamSpec> GardenRows() {
       {GardenId(GP::kInstancing), "instancing", "", "", 1, 0, 1, true, "export", kGardenMesh,
        "1: a distinct tree's copies as one node with EXT_mesh_gpu_instancing; 0: one plain node "
        "a copy, sharing the mesh (for loaders without the extension)."},
+      {GardenId(GP::kShapes), "shapes", "", "meshes/variant", 8, 0, 64, true, "export", kGardenMesh,
+       "Trees grown with their neighbours' shade differ a little, so each is its own mesh: with "
+       "N, the .glb keeps at most N meshes a species variant and draws each such tree as the "
+       "nearest of them (height, crown reach, lean), turned to lean its own way and scaled to "
+       "its height (within 25 %); 0: every such tree its own mesh."},
       // ------------------------------------------------ bark
       {GardenId(GP::kBark), "bark", "", "", 0, 0, 1, true, "bark", kGardenGrow,
        "0: every tree wears the tree study's procedural bark texture; 1: each distinct tree's "

@@ -1,9 +1,10 @@
 // The garden's parameter table ("garden"; issue 33, docs/garden-model.md): the ground's size,
 // relief and grid, the one clock (years), the planting rules (density, minimum spacing, altitude
 // band, slope limit, their seed, variants per species), the interactions' switches, the
-// export's triangle budget and the bark (procedural or simulated, its maps' size), each with its
-// unit, range and stage. Does not: hold the lists a garden places (plants, objects, the species
-// mix: garden_state.h), grow anything (garden_run.h) or parse text (params/, io/hash_codec).
+// export's triangle budget and shared shapes, and the bark (procedural or simulated, its maps'
+// size), each with its unit, range and stage. Does not: hold the lists a garden places (plants,
+// objects, the species mix: garden_state.h), grow anything (garden_run.h) or parse text (params/,
+// io/hash_codec).
 #pragma once
 
 #include "params/param_table.h"
@@ -37,6 +38,7 @@ enum class GardenParam : int {
   kMaxTriangles,
   kLod,
   kInstancing,
+  kShapes,
   // bark
   kBark,
   kBarkMapSize,

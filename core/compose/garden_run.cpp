@@ -12,6 +12,7 @@
 
 #include "compose/bark_support.h"
 #include "compose/garden_moss.h"
+#include "compose/garden_shapes.h"
 #include "compose/tree_neighbours.h"
 #include "geom/linear_queries.h"
 #include "geom/mesh_metrics.h"
@@ -590,6 +591,89 @@ glm::dvec3 GardenRun::CrownCentroid(int t) const {
   return {p.x + c * local.x + s * local.z, p.y + local.y, p.z - s * local.x + c * local.z};
 }
 
+namespace {
+
+// A tree's leaf-area centroid in its own frame (m; nodes are in cm), and its height (m): the
+// highest alive node.
+glm::dvec3 LocalLeafCentroid(const Tree& tree) {
+  glm::dvec3 sum(0.0);
+  double n = 0;
+  for (const Branch& b : tree.branches) {
+    if (!b.alive) continue;
+    for (const Leaf& leaf : b.leaves) {
+      sum += glm::dvec3(b.nodes[leaf.node]);
+      n += 1;
+    }
+  }
+  return n > 0 ? sum / n / 100.0 : glm::dvec3(0.0);
+}
+
+double TreeHeight(const Tree& tree) {
+  double top = 0;
+  for (const Branch& b : tree.branches) {
+    if (!b.alive) continue;
+    for (const glm::vec3& p : b.nodes) top = std::max(top, static_cast<double>(p.y));
+  }
+  return top / 100.0;
+}
+
+// A lean shorter than this (m) has no direction worth turning a shape to.
+constexpr double kShapeLeanMin = 0.01;
+
+}  // namespace
+
+std::vector<std::vector<GardenExportTree>> GardenRun::ExportTrees() const {
+  std::vector<std::vector<GardenExportTree>> out(groups_.size());
+  const int shapes = state_.params.GetInt(GardenParam::kShapes);
+  // The shaded groups of each (species, seed, age), in group order.
+  std::map<std::tuple<std::string, uint64_t, int>, std::vector<int>> variants;
+  for (std::size_t k = 0; k < groups_.size(); ++k) {
+    const GardenTreeGroup& g = groups_[k];
+    if (shapes > 0 && g.shaded) {
+      variants[{g.species, g.seed, g.age}].push_back(static_cast<int>(k));
+      continue;
+    }
+    for (int t : g.trees) out[k].push_back({t, planting_.trees[t].rot, 1.0});
+  }
+  for (const auto& [key, members] : variants) {
+    std::vector<TreeShape> measured;
+    std::vector<glm::dvec3> lean;  // each member's leaf centroid in its own frame
+    for (int k : members) {
+      const Tree& tree = groups_[k].tree();
+      lean.push_back(LocalLeafCentroid(tree));
+      measured.push_back(
+          {TreeHeight(tree), CrownRadius(k), std::hypot(lean.back().x, lean.back().z)});
+    }
+    const std::vector<int> rep_of = ShareShapes(measured, shapes);
+    for (std::size_t i = 0; i < members.size(); ++i) {
+      const std::size_t r = static_cast<std::size_t>(rep_of[i]);
+      const int rep = members[r];
+      for (int t : groups_[members[i]].trees) {
+        const double rot = planting_.trees[t].rot;
+        if (r == i) {
+          out[rep].push_back({t, rot, 1.0});
+          continue;
+        }
+        // Turned so that the shape's lean points where this tree's does: a turn about y by a
+        // adds a to atan2(x, z) (CrownCentroid's frame), and this tree's lean is its own
+        // local lean turned by rot.
+        double yaw = rot;
+        if (measured[i].lean >= kShapeLeanMin && measured[r].lean >= kShapeLeanMin) {
+          const double own = det::Atan2(lean[i].x, lean[i].z);
+          const double shape = det::Atan2(lean[r].x, lean[r].z);
+          yaw = rot + (own - shape) * 180.0 / det::kPi;
+        }
+        const double scale = measured[r].height > 0
+                                 ? std::clamp(measured[i].height / measured[r].height,
+                                              1.0 / kShapeScaleLimit, kShapeScaleLimit)
+                                 : 1.0;
+        out[rep].push_back({t, yaw, scale});
+      }
+    }
+  }
+  return out;
+}
+
 std::vector<run::Part> GardenRun::Parts() const {
   std::vector<run::Part> parts;
   run::Part ground;
@@ -682,7 +766,10 @@ Result<gltf::Document> GardenRun::Document() const {
   const bool instancing = state_.params.GetBool(GardenParam::kInstancing);
   LodOptions options;
   options.atlas_size = kGardenAtlasSize;
+  const std::vector<std::vector<GardenExportTree>> drawn = ExportTrees();
   for (const GardenTreeGroup& g : groups_) {
+    const std::size_t k = static_cast<std::size_t>(&g - groups_.data());
+    if (drawn[k].empty()) continue;  // drawn with another group's shape
     std::vector<LodMesh> levels;
     if (lod) {
       Result<std::vector<LodMesh>> made =
@@ -695,7 +782,6 @@ Result<gltf::Document> GardenRun::Document() const {
       levels.push_back(std::move(*made));
     }
     // The simulated bark of this distinct tree (bark 1), on every level's tubes.
-    const std::size_t k = static_cast<std::size_t>(&g - groups_.data());
     const BarkFrame* bark =
         k < barks_.trees.size() && barks_.trees[k].frame ? barks_.trees[k].frame.get() : nullptr;
     if (bark != nullptr) WrapGardenBarkUvs(g.tree(), *bark, &levels);
@@ -711,25 +797,30 @@ Result<gltf::Document> GardenRun::Document() const {
         gltf::Node node;
         node.name = level.name;
         node.mesh = mesh;
-        for (int t : g.trees) {
-          const PlacedTree& p = planting_.trees[t];
+        const bool scaled = std::any_of(drawn[k].begin(), drawn[k].end(),
+                                        [](const GardenExportTree& e) { return e.scale != 1.0; });
+        for (const GardenExportTree& e : drawn[k]) {
+          const PlacedTree& p = planting_.trees[e.tree];
           node.instance_translations.insert(
               node.instance_translations.end(),
               {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)});
-          const std::array<double, 4> q = YawQuaternion(p.rot);
+          const std::array<double, 4> q = YawQuaternion(e.yaw_deg);
           for (double v : q) node.instance_rotations.push_back(static_cast<float>(v));
+          if (scaled)
+            node.instance_scales.insert(node.instance_scales.end(), 3, static_cast<float>(e.scale));
         }
         doc.scene_nodes.push_back(static_cast<int>(doc.nodes.size()));
         doc.nodes.push_back(std::move(node));
       } else {
-        for (int t : g.trees) {
-          const PlacedTree& p = planting_.trees[t];
+        for (const GardenExportTree& e : drawn[k]) {
+          const PlacedTree& p = planting_.trees[e.tree];
           gltf::Node node;
-          node.name = g.name + "_" + std::to_string(t) +
+          node.name = g.name + "_" + std::to_string(e.tree) +
                       (levels.size() > 1 ? level.name.substr(level.name.rfind('_')) : "");
           node.mesh = mesh;
           node.translation = {p.x, p.y, p.z};
-          node.rotation = YawQuaternion(p.rot);
+          node.rotation = YawQuaternion(e.yaw_deg);
+          node.scale = {e.scale, e.scale, e.scale};
           doc.scene_nodes.push_back(static_cast<int>(doc.nodes.size()));
           doc.nodes.push_back(std::move(node));
         }
@@ -808,7 +899,18 @@ std::string GardenRun::Hash(const std::string& prefix) const {
 }
 
 Result<Estimate> GardenRun::ExportEstimate(const std::string& format) const {
-  const double groups = static_cast<double>(groups_.size());
+  // The meshes the .glb holds: one a group, or at most `shapes` for the shaded groups of one
+  // (species, seed, age) (an upper bound: the count before the trees have grown).
+  const int shapes = state_.params.GetInt(GardenParam::kShapes);
+  std::map<std::tuple<std::string, uint64_t, int>, double> shaded;
+  double groups = 0;
+  for (const GardenTreeGroup& g : groups_) {
+    if (shapes > 0 && g.shaded)
+      shaded[{g.species, g.seed, g.age}] += 1;
+    else
+      groups += 1;
+  }
+  for (const auto& [key, count] : shaded) groups += std::min<double>(count, shapes);
   const double ground_vertices = static_cast<double>(scene_.ground.n + 1) * (scene_.ground.n + 1);
   if (format == "glb") {
     Estimate moss{0, 0, ""};
@@ -822,7 +924,7 @@ Result<Estimate> GardenRun::ExportEstimate(const std::string& format) const {
                groups * tri * kGardenGlbBytesPerTriangle + ground_vertices * 120 +
                    groups * 4.0 * kGardenAtlasSize * kGardenAtlasSize + moss.memory_bytes,
                groups * tri * kGardenGlbSecondsPerTriangle + ground_vertices * 1e-6 + moss.seconds,
-               "writing the garden's .glb (" + FormatCount(groups) + " distinct trees)"} +
+               "writing the garden's .glb (" + FormatCount(groups) + " tree meshes)"} +
            GardenBarkExportEstimate(barks_);
   }
   if (format == "heightmap" || format == "svg" || format == "json")

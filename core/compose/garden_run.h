@@ -50,6 +50,15 @@ struct GardenTreeGroup {
   std::string name;  // "keyaki_s1_a0", "keyaki_t3" (a tree grown on its own)
 };
 
+// One planted tree in the .glb: the group whose mesh draws it, turned about y by yaw_deg and
+// scaled by `scale` (1, and its own rotation, unless it is drawn with a shared shape: `shapes`,
+// compose/garden_shapes.h).
+struct GardenExportTree {
+  int tree = 0;  // index into Planting::trees
+  double yaw_deg = 0;
+  double scale = 1;
+};
+
 // One garden year's picture, kept as the clock runs (GardenRun::Start's record_years): what a
 // front end needs to draw that year again without regrowing.
 struct GardenYearRecord {
@@ -120,6 +129,11 @@ class GardenRun : public run::StudyRun {
   int group_of(int t) const { return tree_group_[t]; }
   // Horizontal reach of a group's crown (m): the farthest alive node from the trunk's axis.
   double CrownRadius(int group) const;
+  // The .glb's trees by the group whose mesh draws them (one list per group; empty for a group
+  // drawn with another's shape): every group its own trees, unless `shapes` N > 0 shares the
+  // shapes of the trees grown with their neighbours' shade, at most N meshes per (species, seed,
+  // age) (compose/garden_shapes.h).
+  std::vector<std::vector<GardenExportTree>> ExportTrees() const;
   // The leaf-area centroid of planted tree t, in the garden's frame (m).
   glm::dvec3 CrownCentroid(int t) const;
   const std::string& truncated_by() const { return truncated_by_; }

@@ -17,12 +17,13 @@ const work = mkdtempSync(join(tmpdir(), 'niwa-garden-'));
 const small = ['--set', 'size=20', '--set', 'ground_res=32', '--set', 'density=0.03', '--set', 'spacing=2',
   '--set', 'max_triangles=2000', '--years', '3'];
 
-// 1. grow: native == WASM bytes.
+// 1. grow: native == WASM bytes (with shapes 1: the shaded trees of a variant drawn with one shared
+// shape each, turned and scaled per tree).
 const got = {};
 for (const cmd of [native, wasm]) {
   const dir = join(work, buildName(cmd));
   spawn('mkdir', ['-p', dir]);
-  const r = spawn(cmd, ['garden', 'grow', ...small, '--stats', '--out', join(dir, 'g.glb'), '--heightmap', join(dir, 'h.png'),
+  const r = spawn(cmd, ['garden', 'grow', ...small, '--set', 'shapes=1', '--stats', '--out', join(dir, 'g.glb'), '--heightmap', join(dir, 'h.png'),
     '--svg', join(dir, 'plan.svg')]);
   check(`grow ${buildName(cmd)}: exit 0`, r.status === 0, r.stderr);
   got[buildName(cmd)] = { stats: r.status === 0 ? withoutMs(JSON.parse(r.stdout)) : {}, dir };
@@ -35,6 +36,17 @@ for (const name of ['g.glb', 'h.png', 'plan.svg']) {
   check(`${name}: native == WASM bytes (${x.length})`, x.length > 0 && x.equals(y));
 }
 const s = a.stats;
+{
+  // The .glb's trees: every planted tree an instance, on fewer meshes than distinct trees.
+  const glb = readFileSync(join(a.dir, 'g.glb'));
+  const doc = JSON.parse(glb.subarray(20, 20 + glb.readUInt32LE(12)).toString('utf8'));
+  const treeNodes = doc.nodes.filter((n) => n.extensions?.EXT_mesh_gpu_instancing);
+  const instances = treeNodes.reduce((p, n) => p + doc.accessors[n.extensions.EXT_mesh_gpu_instancing.attributes.TRANSLATION].count, 0);
+  check('shapes 1: every tree drawn, on fewer meshes than distinct trees (shared shapes, some scaled)',
+    instances === s.trees?.count && treeNodes.length < s.trees.distinct
+      && treeNodes.some((n) => n.extensions.EXT_mesh_gpu_instancing.attributes.SCALE !== undefined),
+    `${treeNodes.length} meshes for ${s.trees?.distinct} distinct trees, ${instances} instances of ${s.trees?.count} trees`);
+}
 const bySpecies = Object.values(s.trees?.by_species ?? {}).reduce((p, q) => p + q, 0);
 check('stats: trees by species add up to the count; hand + rule = count', bySpecies === s.trees?.count
   && s.planting.by_hand + s.planting.by_rule === s.trees.count && s.trees.count > 3, JSON.stringify(s.trees));

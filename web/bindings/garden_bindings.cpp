@@ -557,7 +557,7 @@ class GardenLab {
     Result<Estimate> needs = run_->ExportEstimate(format);
     if (!needs.ok()) return ErrorText(needs.status().Within("download"));
     const Status fits =
-        CheckEstimate(*needs, PageBudget(), "lower max_triangles or the trees (density, size)");
+        CheckEstimate(*needs, PageBudget(), "lower max_triangles or shapes, or the trees (density, size)");
     if (!fits.ok()) return ErrorText(fits);
     Result<std::string> bytes = run_->Export(format);
     if (!bytes.ok()) return ErrorText(bytes.status().Within("download"));
