@@ -236,6 +236,8 @@ await runBrowserTest(async (server, browser) => {
   await page.waitForFunction(() => document.documentElement.dataset.windRowsError, null, { timeout: TIMEOUT });
   const windLine = await page.$eval('#wind-error-wind_speed', (p) => (p.hidden ? '' : p.textContent));
   check('Wind rows: a bad wind_speed is the core\'s one line beside its row', /^wind\.wind_speed: .*100/.test(windLine), windLine);
+  const windInvalid = () => page.$eval('#param-wind_speed', (i) => i.getAttribute('aria-invalid'));
+  const invalidAtBad = await windInvalid();
   await page.fill('#param-wind_speed', '8');
   await page.fill('#param-wind_dir', '180');
   await page.waitForFunction(() => /"wind_dir":180/.test(document.documentElement.dataset.windRows || ''), null, { timeout: TIMEOUT });
@@ -244,6 +246,9 @@ await runBrowserTest(async (server, browser) => {
     windSet.workerGrows === growsBeforeWind && (await page.evaluate(() => location.hash)).includes('wind.wind_dir=180')
       && (await page.$eval('#wind-error-wind_speed', (p) => p.hidden)) && /from the east/.test(await page.textContent('#wind-info')),
     `grows ${growsBeforeWind} -> ${windSet.workerGrows}; rows ${await windRowsNow()}; hash ${await page.evaluate(() => location.hash)}; ${await page.textContent('#wind-info')}`);
+  const invalidAtGood = await windInvalid();
+  check('Wind rows: the refused row is marked aria-invalid, and unmarked once a good value is set',
+    invalidAtBad === 'true' && invalidAtGood === 'false', `${invalidAtBad} then ${invalidAtGood}`);
   await page.click('#wind');
   let eastSplit = null;
   for (let t0 = Date.now(); Date.now() - t0 < TIMEOUT && !eastSplit; await page.waitForTimeout(150)) {
@@ -623,9 +628,22 @@ await runBrowserTest(async (server, browser) => {
   await page.click('#embed-dialog button[type="submit"]');
   const page2 = watchPage(await context.newPage(), problems);
   await page2.goto(link, { waitUntil: 'load' });
+  // A Wind row edited before the first garden is grown is kept and set on that garden (its wind
+  // rows, then the link), not dropped.
+  await page2.waitForSelector('#param-wind_speed', { state: 'attached', timeout: TIMEOUT });
+  await page2.$eval('#wind-params details', (d) => { d.open = true; });
+  await page2.fill('#param-wind_speed', '9');
+  const statusAtWindEdit = await page2.evaluate(() => document.documentElement.dataset.status);
   const data2 = await waitGarden(page2, 0);
   check('the copied link reopens the same garden (same hash and stats)', data2.status === 'ready' && data2.hash === data.hash && data2.stats === data.stats,
     `${data2.status} ${data2.hash} vs ${data.hash}`);
+  await page2.waitForFunction(() => /"wind_speed":9\b/.test(document.documentElement.dataset.windRows || ''), null, { timeout: TIMEOUT })
+    .catch(() => {});
+  const windRows2 = await page2.evaluate(() => document.documentElement.dataset.windRows || '');
+  const hash2 = await page2.evaluate(() => location.hash);
+  check('a Wind row edited before the first garden (status then not ready) is set on it and in the link',
+    statusAtWindEdit !== 'ready' && /"wind_speed":9\b/.test(windRows2) && hash2.includes('wind.wind_speed=9'),
+    `status at the edit ${statusAtWindEdit}; rows ${windRows2}; hash ${hash2.slice(-80)}`);
   await page2.close();
 
   // 5. The .glb: the bytes of native `niwa garden grow --url HASH --out g.glb`.

@@ -85,8 +85,9 @@ const controller = new StudyController({
       gardenWind.failed(msg);
       return true;
     }
-    if (msg.control === 'windRows') {  // a wind row refused: its line beside the row
+    if (msg.control === 'windRows') {  // a wind row refused: its line beside the row, the row marked
       controller.showFieldError(msg);
+      windPanel?.markError(String(msg.field || '').replace(/^wind\./, ''));
       setHooks({ windRowsError: msg.message });
       return true;
     }
@@ -582,12 +583,19 @@ function makeWindPanel(table) {
   box.querySelector('details')?.removeAttribute('open');  // folded under Blow until asked for
   gardenWind.changed();  // the still line in the defaults' words
 }
+// Before the first garden there is none to set the wind on: the rows are kept in the state, and
+// the first garden's reply sets them (its wind differs from the state's: 'garden' below).
 function sendWind(wind = windPanel?.values()) {
-  if (!windPanel || !bounds) return;
+  if (!windPanel) return;
+  if (!bounds) {
+    state = { ...(state || {}), wind };
+    return;
+  }
   worker.request('windRows', { wind }, { done: ['gardenWindRows'] });
 }
 worker.on('gardenWindRows', (msg) => {
   controller.showFieldError('');
+  windPanel?.markError('');
   state = { ...(state || {}), wind: msg.state.wind || {} };
   controller.grown(msg.hash);
   lastGoodHash = msg.hash;
