@@ -83,7 +83,10 @@ const { birthCounter } = await import('../../web/ivy/ivy_renderer.js');
   tick();  // the fence read once in an animation frame: still on the GPU
   loop.request();
   fences.at(-1).done = true;  // the GPU finishes between animation frames
-  await sleep(30);
+  // Until the loop's own read between frames has brought the real status into the cache (a loop
+  // that reads only in animation frames never does: the check below then fails after 2 s). Not a
+  // fixed sleep: at load 11 a 30 ms one ended before the loop's read came round (1 draw).
+  for (const t0 = Date.now(); !fences.at(-1).cached && Date.now() - t0 < 2000;) await sleep(5);
   tick();
   check('with a cached fence status, the wanted frame is drawn at the first animation frame after the GPU finished',
     draws === 2, `${draws} draws, ${loop.stats.skippedBusy} skipped`);
