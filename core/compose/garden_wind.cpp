@@ -40,12 +40,16 @@ Result<GardenWind> GardenWind::Start(const GardenRun& run, const ParamSet& wind,
   double internodes = 0;
   long trees = 0;
   std::vector<SwayParams> params(run.groups().size());
+  // Each distinct tree's model, built once: its copies' simulators take copies of it (the wind
+  // rows each copy turns do not enter the model).
+  std::vector<SwayModel> models(run.groups().size());
   for (std::size_t g = 0; g < run.groups().size(); ++g) {
     const GardenTreeGroup& group = run.groups()[g];
     ParamSet rows = group.run->state().params;
     TakeWindRows(wind, &rows);
     params[g] = SwayParams(rows);
-    const SwayModel model = BuildSwayModel(group.tree(), params[g]);
+    models[g] = BuildSwayModel(group.tree(), params[g]);
+    const SwayModel& model = models[g];
     const int copies = static_cast<int>(group.trees.size());
     memory = memory + EstimatePageSway(model, copies);
     internodes += static_cast<double>(model.internodes) * copies;
@@ -66,8 +70,8 @@ Result<GardenWind> GardenWind::Start(const GardenRun& run, const ParamSet& wind,
     Group out;
     out.params = params[g];
     out.first = w.blocks_;
-    for (int t : group.trees) {
-      const PlacedTree& p = placed[t];
+    for (std::size_t k = 0; k < group.trees.size(); ++k) {
+      const PlacedTree& p = placed[group.trees[k]];
       // The tree's own frame is the garden's turned by rot about y (garden.vert's turn): the wind
       // direction in it is wind_dir + rot, and its origin turned back by rot keeps every node's
       // distance along the wind equal to its world position's.
@@ -76,8 +80,10 @@ Result<GardenWind> GardenWind::Start(const GardenRun& run, const ParamSet& wind,
       double s = 0, c = 1;
       det::SinCos(p.rot * (det::kPi / 180.0), &s, &c);
       const glm::dvec3 origin(c * p.x - s * p.z, p.y, s * p.x + c * p.z);
+      // The last copy takes the model itself, the others a copy.
+      SwayModel model = k + 1 < group.trees.size() ? models[g] : std::move(models[g]);
       out.copies.push_back(
-          std::make_unique<SwaySimulator>(group.tree(), turned, origin * kWindCmPerM));
+          std::make_unique<SwaySimulator>(std::move(model), turned, origin * kWindCmPerM));
     }
     out.nodes = out.copies.empty() ? 0 : static_cast<int>(out.copies[0]->model().nodes.size());
     w.blocks_ += static_cast<std::size_t>(out.nodes) * out.copies.size();

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -232,7 +233,10 @@ dvec3 WindAt(const SwayParams& params, const dvec3& position, double t) {
 // ---- simulator ----
 
 SwaySimulator::SwaySimulator(const Tree& tree, const SwayParams& params, const dvec3& origin)
-    : params_(params), model_(BuildSwayModel(tree, params)), wind_(params) {
+    : SwaySimulator(BuildSwayModel(tree, params), params, origin) {}
+
+SwaySimulator::SwaySimulator(SwayModel model, const SwayParams& params, const dvec3& origin)
+    : params_(params), model_(std::move(model)), wind_(params) {
   const std::size_t n = model_.nodes.size();
   // The wind each node point feels is taken at its rest tip in the world (the tree moves by cm,
   // the field varies over metres).

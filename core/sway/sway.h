@@ -132,6 +132,12 @@ class SwaySimulator {
   // position below stays in the tree's own frame.
   SwaySimulator(const Tree& tree, const SwayParams& params,
                 const glm::dvec3& origin = glm::dvec3(0.0));
+  // From a model already built: BuildSwayModel(tree, p) with p's model rows (density, leaf mass
+  // and area, alpha, dt, the stiffnesses, omit_limit) those of `params`; the wind rows (speed,
+  // direction, gusts) may differ, since the model does not read them. What a garden does with the
+  // copies of one tree (compose/garden_wind): one model built, copied to each.
+  SwaySimulator(SwayModel model, const SwayParams& params,
+                const glm::dvec3& origin = glm::dvec3(0.0));
   void Step();  // one time step dt
   double time() const { return time_; }
   long steps() const { return steps_; }
