@@ -88,6 +88,26 @@ Workload Scale() {
 
 }  // namespace
 
+// The 320 m garden of about 1,000 trees grown to 10 years and written as .glb (check: its MB).
+WorkloadBody ExportGarden(bool shade, int shapes) {
+  return [shade, shapes]() {
+    compose::GardenState state = compose::DefaultGardenState();
+    (void)state.params.Set(GardenParam::kSize, 320);
+    (void)state.params.Set(GardenParam::kDensity, 0.0098);
+    (void)state.params.Set(GardenParam::kSpacing, 3);
+    (void)state.params.Set(GardenParam::kSlopeMax, 90);
+    (void)state.params.Set(GardenParam::kShade, shade ? 1 : 0);
+    (void)state.params.Set(GardenParam::kShapes, shapes);
+    compose::LayOutDefaults(&state);
+    Result<compose::GardenRun> run = compose::GardenRun::Start(state, Budget{});
+    if (!run.ok() || !run->Advance({}).ok()) return -1.0;
+    Result<std::string> glb = run->Export("glb");
+    if (!glb.ok()) return -1.0;
+    return static_cast<double>(glb->size()) / 1e6 +
+           1e-6 * static_cast<double>(run->planting().trees.size());
+  };
+}
+
 Workload Export1000() {
   Workload wl;
   wl.name = "garden/export-1000-trees";
@@ -97,23 +117,7 @@ Workload Export1000() {
       "(so each variant is one instanced mesh), 10 years, the default ivy and moss; timed once "
       "(cold); check: the .glb's MB (goal <= 50 with instancing)";
   wl.once = true;
-  wl.prepare = []() -> WorkloadBody {
-    return []() {
-      compose::GardenState state = compose::DefaultGardenState();
-      (void)state.params.Set(GardenParam::kSize, 320);
-      (void)state.params.Set(GardenParam::kDensity, 0.0098);
-      (void)state.params.Set(GardenParam::kSpacing, 3);
-      (void)state.params.Set(GardenParam::kSlopeMax, 90);
-      (void)state.params.Set(GardenParam::kShade, 0);
-      compose::LayOutDefaults(&state);
-      Result<compose::GardenRun> run = compose::GardenRun::Start(state, Budget{});
-      if (!run.ok() || !run->Advance({}).ok()) return -1.0;
-      Result<std::string> glb = run->Export("glb");
-      if (!glb.ok()) return -1.0;
-      return static_cast<double>(glb->size()) / 1e6 +
-             1e-6 * static_cast<double>(run->planting().trees.size());
-    };
-  };
+  wl.prepare = []() -> WorkloadBody { return ExportGarden(false, 8); };
   return wl;
 }
 
@@ -127,23 +131,7 @@ Workload Export1000Shade() {
       "as garden/export-1000-trees with shade on (961 of 1,005 trees grown with their "
       "neighbours' shade) and shapes 1; timed once (cold); check: the .glb's MB (goal <= 50)";
   wl.once = true;
-  wl.prepare = []() -> WorkloadBody {
-    return []() {
-      compose::GardenState state = compose::DefaultGardenState();
-      (void)state.params.Set(GardenParam::kSize, 320);
-      (void)state.params.Set(GardenParam::kDensity, 0.0098);
-      (void)state.params.Set(GardenParam::kSpacing, 3);
-      (void)state.params.Set(GardenParam::kSlopeMax, 90);
-      (void)state.params.Set(GardenParam::kShapes, 1);
-      compose::LayOutDefaults(&state);
-      Result<compose::GardenRun> run = compose::GardenRun::Start(state, Budget{});
-      if (!run.ok() || !run->Advance({}).ok()) return -1.0;
-      Result<std::string> glb = run->Export("glb");
-      if (!glb.ok()) return -1.0;
-      return static_cast<double>(glb->size()) / 1e6 +
-             1e-6 * static_cast<double>(run->planting().trees.size());
-    };
-  };
+  wl.prepare = []() -> WorkloadBody { return ExportGarden(true, 1); };
   return wl;
 }
 

@@ -563,34 +563,6 @@ const Tree* GardenRun::TreeAtYear(int group, int year) const {
   return nullptr;
 }
 
-double GardenRun::CrownRadius(int group) const {
-  double r2 = 0;
-  for (const Branch& b : groups_[group].tree().branches) {
-    if (!b.alive) continue;
-    for (const glm::vec3& p : b.nodes)
-      r2 = std::max(r2, static_cast<double>(p.x) * p.x + static_cast<double>(p.z) * p.z);
-  }
-  return std::sqrt(r2) / 100.0;  // nodes are in cm
-}
-
-glm::dvec3 GardenRun::CrownCentroid(int t) const {
-  const PlacedTree& p = planting_.trees[t];
-  const Tree& tree = groups_[tree_group_[t]].tree();
-  glm::dvec3 sum(0.0);
-  double n = 0;
-  for (const Branch& b : tree.branches) {
-    if (!b.alive) continue;
-    for (const Leaf& leaf : b.leaves) {
-      sum += glm::dvec3(b.nodes[leaf.node]);
-      n += 1;
-    }
-  }
-  glm::dvec3 local = n > 0 ? sum / n / 100.0 : glm::dvec3(0.0);
-  const double a = p.rot * det::kPi / 180.0;
-  const double c = det::Cos(a), s = det::Sin(a);
-  return {p.x + c * local.x + s * local.z, p.y + local.y, p.z - s * local.x + c * local.z};
-}
-
 namespace {
 
 // A tree's leaf-area centroid in its own frame (m; nodes are in cm), and its height (m): the
@@ -621,6 +593,24 @@ double TreeHeight(const Tree& tree) {
 constexpr double kShapeLeanMin = 0.01;
 
 }  // namespace
+
+double GardenRun::CrownRadius(int group) const {
+  double r2 = 0;
+  for (const Branch& b : groups_[group].tree().branches) {
+    if (!b.alive) continue;
+    for (const glm::vec3& p : b.nodes)
+      r2 = std::max(r2, static_cast<double>(p.x) * p.x + static_cast<double>(p.z) * p.z);
+  }
+  return std::sqrt(r2) / 100.0;  // nodes are in cm
+}
+
+glm::dvec3 GardenRun::CrownCentroid(int t) const {
+  const PlacedTree& p = planting_.trees[t];
+  const glm::dvec3 local = LocalLeafCentroid(groups_[tree_group_[t]].tree());
+  const double a = p.rot * det::kPi / 180.0;
+  const double c = det::Cos(a), s = det::Sin(a);
+  return {p.x + c * local.x + s * local.z, p.y + local.y, p.z - s * local.x + c * local.z};
+}
 
 std::vector<std::vector<GardenExportTree>> GardenRun::ExportTrees() const {
   std::vector<std::vector<GardenExportTree>> out(groups_.size());
