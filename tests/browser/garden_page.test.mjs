@@ -687,7 +687,7 @@ await runBrowserTest(async (server, browser) => {
   // weight beside its row; then the mix edited (a weight, a species added, maple removed) and a
   // mask (its west half black) opened: one grown garden with both; Copy link's note names the
   // files; the .glb == native `niwa garden grow --garden F.json --out g.glb` with the files beside
-  // F.json. Last in the test: the garden is then 3 years old (step 6), so its grows are short, and
+  // F.json; Cancel then regrows the garden on the files sent again. Last in the test: the garden is then 3 years old (step 6), so its grows are short, and
   // nothing after it needs the terrain back.
   const filesDir = path.join(ARTIFACTS, 'garden-files');
   fs.mkdirSync(filesDir, { recursive: true });
@@ -793,5 +793,19 @@ await runBrowserTest(async (server, browser) => {
   const filesPage = fs.readFileSync(filesGlb);
   check('the heightmap and mask garden\'s .glb == `niwa garden grow --garden F.json --out g.glb`', filesPage.length > 1000 && filesPage.equals(filesNative),
     `page ${filesPage.length} bytes, native ${filesNative.length}`);
+  // Cancel restarts the worker: the page sends it the files it holds again (the heightmap, the
+  // mask, the dropped mesh), so the last garden regrows on them instead of asking for them.
+  serial = Number(data.gardenSerial);
+  const filesHash = data.hash;
+  await page.fill('#param-years', '14');
+  await page.waitForFunction(() => document.documentElement.dataset.status === 'growing', null, { timeout: TIMEOUT });
+  await page.click('#cancel');
+  const afterCancel = await grownWhere(serial, (d) => d.hash === filesHash)
+    ?? await page.evaluate(() => ({ ...document.documentElement.dataset }));
+  const cancelStats = afterCancel.status === 'ready' ? JSON.parse(afterCancel.stats) : null;
+  check('Cancel on a garden of files: the new worker gets the files again and the last garden regrows on them',
+    cancelStats !== null && afterCancel.hash === filesHash && cancelStats.ground.source === 'heightmap ramp.png (65 x 65)'
+      && cancelStats.planting.refused.mask > 0 && Number(afterCancel.restoredFiles) >= 2 && Number(afterCancel.cancels) === 2,
+    `${afterCancel.status} ${afterCancel.error || ''} restored ${afterCancel.restoredFiles} cancels ${afterCancel.cancels}; ${cancelStats ? cancelStats.ground.source : ''}`);
   check('no console errors or warnings', problems.length === 0, problems.slice(0, 5).join(' | '));
 });

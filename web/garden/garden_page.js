@@ -81,6 +81,7 @@ const controller = new StudyController({
     worker.request('init', { hash: '' }, { done: ['ready'] });
   },
   onError: (msg, when) => {
+    if (restoring.delete(msg.id)) return true;  // a file sent again after Cancel and refused
     if (msg.control === 'wind') {  // Blow refused: its line beside the button
       gardenWind.failed(msg);
       return true;
@@ -120,6 +121,7 @@ const controller = new StudyController({
 });
 const { worker } = controller;
 let restarting = false;
+let lastGoodState = null;  // the last finished garden's state (with its files' names)
 let lastGoodHash = null;
 let panel = null;
 let windPanel = null;    // the View's Wind rows (the ready message's windTable)
@@ -357,10 +359,34 @@ function showMeshError(line) {
   setHooks({ meshError: line });
 }
 
+// The files the worker holds, by kind and name ({kind: 'mesh' | 'image', role, file}: the File
+// handles, not their bytes): after Cancel restarts the worker they are sent to the new one before
+// the last garden is decoded again, so a garden on a heightmap, a mask or mesh objects regrows
+// without asking for its files. `restoring`: the ids of those requests (their replies change
+// nothing on the page; a refusal leaves the decode to name the missing file, as before).
+const openedFiles = new Map();
+const restoring = new Set();
+let meshFile = null;  // the File of the 'mesh' request in flight
+async function restoreFiles() {
+  const sends = [...openedFiles.values()].map(async (f, k) => {
+    const group = `restore-${k}`;
+    if (f.kind === 'mesh') {
+      restoring.add((await sendMeshFile(worker, f.file, { group })).id);
+      return;
+    }
+    const buffer = await f.file.arrayBuffer();
+    restoring.add(worker.request('image', { role: f.role, name: f.file.name, bytes: buffer },
+      { group, done: ['imageLoaded'], transfer: [buffer] }).id);
+  });
+  await Promise.allSettled(sends);
+  setHooks({ restoredFiles: openedFiles.size });
+}
+
 async function loadMeshFile(file) {
   showMeshError('');
   ui.progress.textContent = `reading ${file.name}`;
   try {
+    meshFile = file;
     const sent = await sendMeshFile(worker, file);
     meshRequest = sent.id;
   } catch (e) {
@@ -370,8 +396,10 @@ async function loadMeshFile(file) {
 }
 
 worker.on('meshLoaded', (msg) => {
+  if (restoring.delete(msg.id)) return;
   if (!meshRequest || msg.id !== meshRequest) return;
   meshRequest = 0;
+  if (meshFile) openedFiles.set(`mesh:${msg.mesh.name}`, { kind: 'mesh', file: meshFile });
   ui.progress.textContent = '';
   const value = `mesh:${msg.mesh.name}`;
   if (![...meshGroup.children].some((o) => o.value === value)) meshGroup.append(new Option(`${msg.mesh.name} (${msg.mesh.triangles} triangles)`, value));
@@ -413,11 +441,13 @@ async function loadImageFile(role, file) {
   ui.progress.textContent = `reading ${file.name}`;
   const buffer = await file.arrayBuffer();
   const request = worker.request('image', { role, name: file.name, bytes: buffer }, { group: 'image', done: ['imageLoaded'], transfer: [buffer] });
-  imageRequest = { id: request.id, role };
+  imageRequest = { id: request.id, role, file };
 }
 
 worker.on('imageLoaded', (msg) => {
+  if (restoring.delete(msg.id)) return;
   if (!imageRequest || msg.id !== imageRequest.id) return;
+  openedFiles.set(`image:${msg.image.role}:${msg.image.name}`, { kind: 'image', role: msg.image.role, file: imageRequest.file });
   imageRequest = null;
   ui.progress.textContent = '';
   const im = msg.image;
@@ -599,6 +629,7 @@ worker.on('gardenWindRows', (msg) => {
   state = { ...(state || {}), wind: msg.state.wind || {} };
   controller.grown(msg.hash);
   lastGoodHash = msg.hash;
+  if (lastGoodState) lastGoodState = { ...lastGoodState, wind: msg.state.wind || {} };
   setHooks({ windRows: JSON.stringify(state.wind), windRowsError: '' });
   gardenWind.changed();
 });
@@ -607,7 +638,16 @@ worker.on('gardenWindRows', (msg) => {
 worker.on('ready', (msg) => {
   if (restarting) {
     restarting = false;
-    worker.request('decode', { hash: lastGoodHash ? `#${lastGoodHash}` : OPENING_HASH }, { done: ['decoded'] });
+    // The last finished garden's state, not its link: a link cannot carry the files.
+    restoreFiles().then(() => {
+      if (!lastGoodState) {
+        worker.request('decode', { hash: lastGoodHash ? `#${lastGoodHash}` : OPENING_HASH }, { done: ['decoded'] });
+        return;
+      }
+      applyState(lastGoodState);
+      frameNext = true;
+      sendUpdate(false);
+    });
     return;
   }
   const trees = document.createElement('optgroup');
@@ -646,6 +686,7 @@ worker.on('garden', (msg) => {
   showPlantError('');
   ui.groundError.hidden = true;
   lastGoodHash = msg.hash;
+  lastGoodState = msg.state;
   bounds = msg.bounds;
   // A wind set while this garden grew was set on the garden before it: set it on this one too.
   const wind = state?.wind || {};

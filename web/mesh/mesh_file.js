@@ -43,10 +43,11 @@ export async function meshFileBytes(file) {
 // Reads `file` (meshFileBytes) and sends its bytes to `worker` as a 'mesh' request ({name, bytes},
 // answered 'meshLoaded'), moved, not copied (a view on part of a buffer is cut out first). Returns
 // {id, transferred} (transferred: the page's buffer is detached); throws with a one-line message
-// when the file cannot be read (a Draco primitive that does not decode).
-export async function sendMeshFile(worker, file) {
+// when the file cannot be read (a Draco primitive that does not decode). `group`: the request's
+// group (a newer request of the same group supersedes it; default 'mesh').
+export async function sendMeshFile(worker, file, { group = 'mesh' } = {}) {
   const bytes = await meshFileBytes(file);
   const buffer = bytes.byteOffset === 0 && bytes.byteLength === bytes.buffer.byteLength ? bytes.buffer : bytes.slice().buffer;
-  const request = worker.request('mesh', { name: file.name, bytes: buffer }, { group: 'mesh', done: ['meshLoaded'], transfer: [buffer] });
+  const request = worker.request('mesh', { name: file.name, bytes: buffer }, { group, done: ['meshLoaded'], transfer: [buffer] });
   return { id: request.id, transferred: buffer.byteLength === 0 };
 }
