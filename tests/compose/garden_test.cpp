@@ -306,6 +306,16 @@ TEST(Garden, HeightmapAndMaskFilesAreCheckedAndReadByName) {
       *image::EncodeGray16Png(image::MakeGray16(kMaxGardenImageSide + 1, 2));
   EXPECT_EQ(DecodeGardenMask("wide.png", wide).status().Line(),
             "mask: 'wide.png' is 4097 x 2 pixels; each side must be in 1..4096");
+  // A file over kMaxGardenImageBytes is refused by its size before its chunks are read (a valid
+  // PNG's bytes with zeros after them).
+  std::vector<unsigned char> big = dot;
+  big.resize(kMaxGardenImageBytes + 1, 0);
+  EXPECT_EQ(DecodeGardenHeightmap("big.png", big).status().Line(),
+            "ground.file: 'big.png' is 67,108,865 bytes; at most 67,108,864 (64 MB)");
+  EXPECT_EQ(DecodeGardenMask("big.png", big).status().field(), "mask");
+  big.resize(kMaxGardenImageBytes);
+  EXPECT_TRUE(DecodeGardenMask("big.png", big).ok())
+      << "at the limit the size passes (the bytes after IEND are not read)";
   // Read by name through the front end's reader, the field named.
   GardenState s = SmallGarden();
   ASSERT_TRUE(ApplyGardenStateJson(
