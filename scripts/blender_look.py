@@ -5,7 +5,8 @@ vertices / polygons / edges, triangles, materials, armatures and bones, actions,
 glTF LINES) and writes a Cycles (CPU, 8 samples) render framed on the meshes; LOD siblings are
 spread along x. Does not: check anything by itself (read its line and look at the picture).
 
-Run: blender -b -P scripts/blender_look.py -- in.glb out.png   (Debian: apt-get install blender)
+Run: blender -b -P scripts/blender_look.py -- in.glb out.png [oblique]   (Debian: apt-get install blender)
+With `oblique` the camera looks down at 40 degrees (a garden: wide and flat), else from the side.
 """
 import sys, math, bpy, mathutils
 import numpy
@@ -14,6 +15,7 @@ if not hasattr(numpy, "bool"):
     numpy.bool = bool
 args = sys.argv[sys.argv.index('--') + 1:]
 src, out = args[0], args[1]
+oblique = len(args) > 2 and args[2] == 'oblique'
 bpy.ops.wm.read_factory_settings(use_empty=True)
 bpy.ops.import_scene.gltf(filepath=src)
 objs = list(bpy.context.scene.objects)
@@ -38,8 +40,12 @@ for o in meshes:
 centre = (lo + hi) / 2; size = max(hi - lo)
 cam = bpy.data.objects.new('cam', bpy.data.cameras.new('cam'))
 bpy.context.scene.collection.objects.link(cam)
-cam.location = centre + mathutils.Vector((0, -1.9 * size, 0.15 * size))
-cam.rotation_euler = (math.radians(86), 0, 0)
+if oblique:
+    cam.location = centre + mathutils.Vector((0, -0.95 * size, 0.8 * size))
+    cam.rotation_euler = (math.radians(50), 0, 0)
+else:
+    cam.location = centre + mathutils.Vector((0, -1.9 * size, 0.15 * size))
+    cam.rotation_euler = (math.radians(86), 0, 0)
 bpy.context.scene.camera = cam
 sun = bpy.data.objects.new('sun', bpy.data.lights.new('sun', 'SUN'))
 sun.data.energy = 3.0; sun.rotation_euler = (math.radians(40), math.radians(20), math.radians(30))
