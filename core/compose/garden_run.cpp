@@ -787,17 +787,35 @@ Result<gltf::Document> GardenRun::Document() const {
         gltf::Node node;
         node.name = level.name;
         node.mesh = mesh;
-        const bool scaled = std::any_of(drawn[k].begin(), drawn[k].end(),
-                                        [](const GardenExportTree& e) { return e.scale != 1.0; });
+        // The node stands where its first tree does (its own TRS), and the instances are relative
+        // to it (the extension applies the node's transform after each instance's): a loader that
+        // ignores EXT_mesh_gpu_instancing still shows that first tree in its place, not a tree at
+        // the garden's origin (Blender 3.4 showed none: docs/garden-model.md "Export").
+        const GardenExportTree& first = drawn[k].front();
+        const PlacedTree& p0 = planting_.trees[first.tree];
+        node.translation = {p0.x, p0.y, p0.z};
+        node.rotation = YawQuaternion(first.yaw_deg);
+        node.scale = {first.scale, first.scale, first.scale};
+        const double a0 = -first.yaw_deg * det::kPi / 180.0;
+        double s0 = 0, c0 = 1;
+        det::SinCos(a0, &s0, &c0);
+        const bool scaled =
+            std::any_of(drawn[k].begin(), drawn[k].end(),
+                        [&](const GardenExportTree& e) { return e.scale != first.scale; });
         for (const GardenExportTree& e : drawn[k]) {
           const PlacedTree& p = planting_.trees[e.tree];
+          // inverse(T0 R0 S0) applied to (p, yaw, scale): turned back by yaw0 about y, then / s0.
+          const double dx = p.x - p0.x, dy = p.y - p0.y, dz = p.z - p0.z;
+          const double x = (c0 * dx + s0 * dz) / first.scale,
+                       z = (-s0 * dx + c0 * dz) / first.scale;
           node.instance_translations.insert(
               node.instance_translations.end(),
-              {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)});
-          const std::array<double, 4> q = YawQuaternion(e.yaw_deg);
+              {static_cast<float>(x), static_cast<float>(dy / first.scale), static_cast<float>(z)});
+          const std::array<double, 4> q = YawQuaternion(e.yaw_deg - first.yaw_deg);
           for (double v : q) node.instance_rotations.push_back(static_cast<float>(v));
           if (scaled)
-            node.instance_scales.insert(node.instance_scales.end(), 3, static_cast<float>(e.scale));
+            node.instance_scales.insert(node.instance_scales.end(), 3,
+                                        static_cast<float>(e.scale / first.scale));
         }
         doc.scene_nodes.push_back(static_cast<int>(doc.nodes.size()));
         doc.nodes.push_back(std::move(node));

@@ -41,7 +41,7 @@ check('the garden has more trees than distinct meshes (copies shared)', s.trees.
   JSON.stringify(s.trees));
 
 // The instanced file with every node's EXT_mesh_gpu_instancing dropped: what a loader that ignores the
-// extension would draw (one tree at the origin per distinct mesh).
+// extension would draw (one tree per distinct mesh, at its first tree's place: the node's own TRS).
 const glb = fs.readFileSync(path.join(ARTIFACTS, 'garden-glb-instanced.glb'));
 const jsonLength = glb.readUInt32LE(12);
 const doc = JSON.parse(glb.subarray(20, 20 + jsonLength).toString('utf8'));
