@@ -164,6 +164,21 @@ NIWA_LANES_INLINE V AtLeast(const V& x, const V& floor) {
 #endif
 }
 
+// 1 in the lanes a mask sets (all ones), +0 in the others: natively the AND with 1; in WASM the
+// mask shifted (all ones >> 25 << 23 are 1.0f's bits, 0x3f800000), which clang emits as a shift and
+// an AND, where of the AND with 1 it made a select that V8 turns into three operations a v128
+// (and, andnot, or) with 1 and 0 reloaded from its frame. The same bits either way.
+template <class V, class I>
+NIWA_LANES_INLINE V OneWhere(const I& mask, const V& one) {
+#if defined(__wasm_simd128__)
+  typedef uint32_t Bits __attribute__((vector_size(sizeof(I))));
+  (void)one;
+  return (V)(((Bits)mask >> 25) << 23);
+#else
+  return (V)((I)one & mask);
+#endif
+}
+
 // Node a's state in lanes n..n+W−1.
 template <class V>
 struct NodeState {
@@ -211,7 +226,7 @@ NIWA_LANES_INLINE void SpringBatch(const SpringPass& p, const SpringLanes<V>& v,
   const V inv = v.one / l;
   const V nx = dx * inv, nz = dz * inv;
   const V rel = ((bwx - a.wx) + v.rx0[t]) * nx + ((bwz - a.wz) + v.rz0[t]) * nz;
-  const V alive = (V)((I)v.one & (intact & ~breaks));  // 1 where intact and unbroken, else +0
+  const V alive = OneWhere<V>(intact & ~breaks, v.one);  // 1 where intact and unbroken, else +0
   const V f = alive * (v.k[t] * (l - v.l0[t]) + v.c[t] * rel);
   StoreLanes(p.gx[t] + n, f * nx);
   StoreLanes(p.gz[t] + n, f * nz);
