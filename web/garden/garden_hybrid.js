@@ -20,6 +20,7 @@
 // Test hooks: data-trees-mode, data-hybrid-serial (rounds on screen), data-hybrid-pending,
 // data-hybrid-bark-trees (distinct trees whose atlas was painted from their simulated bark),
 // data-hybrid-trees, data-full-trees, data-hybrid-ms (a round's time, request to lists),
+// data-hybrid-atlas-triangles and data-hybrid-atlas-ms (the atlases' triangles and the page's time to queue their painting),
 // data-drawn-hybrid-serial (the round of the last frame drawn); window.__niwaGardenFrameMs(n): the
 // median ms of n whole frames of the view on screen (Frame.timeFrames).
 // Does not: grow, step the wind or pick anything, or keep the mode in the link (a view, like the
@@ -174,9 +175,11 @@ export class GardenHybrid {
     // A distinct tree in simulated bark (bark 1): its cards' bark painted from its base colour map
     // (the full trees' texture, GardenRenderer.barks; the worker's atlas uvs wrap its tile).
     const barks = this.barkShown ? this.full()?.barks || [] : [];
-    let barkTrees = 0;
+    let barkTrees = 0, atlasTriangles = 0;
     const groups = this.full()?.trees?.groups || [];
+    const paintStart = performance.now();
     msg.atlases.forEach((hybrid, g) => {
+      for (const part of ['bark', 'leaves', 'flowers']) atlasTriangles += (hybrid[part]?.indices?.byteLength || 0) / 12;
       const bark = barks[g] ? { bark: { texture: barks[g].colour } } : null;
       if (bark) barkTrees += 1;
       // Its copies' pose blocks (at rest until Blow's poses come: setPoses).
@@ -185,7 +188,9 @@ export class GardenHybrid {
     this.swaying = false;
     this.worker.recycle(atlasGroups(msg.atlases));
     this.atlases = true;
-    this.#hooks({ hybridBarkTrees: barkTrees });
+    // the atlases' triangles painted (each distinct tree's whole geometry, once) and the page's time
+    // to queue them (the GPU's own time follows in the next frame)
+    this.#hooks({ hybridBarkTrees: barkTrees, hybridAtlasTriangles: atlasTriangles, hybridAtlasMs: (performance.now() - paintStart).toFixed(0) });
     const plan = this.#plan();
     if (plan) this.#round(plan);
   }
