@@ -8,6 +8,8 @@
 // window.grove.timeFrames, the garden's window.__niwaGardenFrameMs: both web/gl/frame.js-style timing).
 // The garden is also timed with its ground's full grid (window.__niwaGardenGroundLod(0): the frame as
 // it was before web/garden/ground_lod.js), alternated with the rest.
+// Each page is also timed without its trees (no_trees_ms: the grove's ground; the garden's ground,
+// objects and ivy), so trees_ratio compares what the trees add.
 // Prints one JSON line per page and a last one with the ratio garden / grove (ms per frame):
 // {"workload": "garden-hybrid/grove" | "garden-hybrid/garden-100" | "garden-hybrid/ratio", ...}.
 // On a GPU the goal reads "≥ 20 fps where the grove does"; on SwiftShader it reads: the garden's hybrid
@@ -83,12 +85,14 @@ try {
   // Alternated timings, each page brought to the front before its frames (a hidden page's
   // requestAnimationFrame does not run).
   // The garden also with its ground's full grid (no level of detail: the frame before it, same view).
-  const groveMs = [], gardenMs = [], gridMs = [], loads = [loadAvg()];
+  // And each page without its trees (the grove's ground; the garden's ground, objects and ivy).
+  const groveMs = [], gardenMs = [], gridMs = [], groveBareMs = [], gardenBareMs = [], loads = [loadAvg()];
   let groveTiming = null;
   for (let rep = 0; rep < args.reps; ++rep) {
     await grove.bringToFront();
     groveTiming = await grove.evaluate((n) => window.grove.timeFrames(n), args.frames);
     groveMs.push(groveTiming.median);
+    groveBareMs.push((await grove.evaluate((n) => window.grove.timeFrames(n, -1), args.frames)).median);
     await garden.bringToFront();
     gardenMs.push(await garden.evaluate((n) => window.__niwaGardenFrameMs(n), args.frames));
     gridMs.push(await garden.evaluate(async (n) => {
@@ -97,6 +101,7 @@ try {
       window.__niwaGardenGroundLod(undefined);
       return ms;
     }, args.frames));
+    gardenBareMs.push(await garden.evaluate((n) => window.__niwaGardenFrameMs(n, { trees: false }), args.frames));
     loads.push(loadAvg());
   }
   // the hooks of a loop frame with the ground's level of detail
@@ -117,6 +122,7 @@ try {
   const groveRow = {
     workload: 'garden-hybrid/grove', note: 'public/grove.html#mode=hybrid, 100 instances of 10 unique trees',
     ms: round(median(groveMs)), ms_reps: groveMs.map((x) => round(x)), frames: args.frames, trees: groveTiming.instances,
+    no_trees_ms: round(median(groveBareMs)),
     unique: groveTiming.uniqueDrawn, triangles: groveTiming.triangles, lines: groveTiming.lines, draw_calls: groveTiming.drawCalls,
     width: groveTiming.width, height: groveTiming.height, load_s: round(groveLoadS),
   };
@@ -126,8 +132,8 @@ try {
     trees: Number(g.trees), distinct: Number(g.distinct), hybrid_trees: Number(g.hybridTrees), full_trees: Number(g.fullTrees),
     triangles: Number(g.drawnTriangles), ground_triangles: Number(g.drawnGround), ground_strides: g.groundStrides,
     lines: Number(g.drawnLines), draw_calls: Number(g.drawCalls),
-    full_grid_ms: round(median(gridMs)), full_grid_ms_reps: gridMs.map((x) => round(x)),
-    atlas_triangles: Number(g.hybridAtlasTriangles), atlas_queue_ms: Number(g.hybridAtlasMs),
+    no_trees_ms: round(median(gardenBareMs)), full_grid_ms: round(median(gridMs)), full_grid_ms_reps: gridMs.map((x) => round(x)),
+    atlas_triangles: Number(g.hybridAtlasTriangles), atlas_sides: g.hybridAtlasSides, atlas_queue_ms: Number(g.hybridAtlasMs),
     full_triangles: fullAtLoad.triangles, full_draw_calls: fullAtLoad.drawCalls, full_ms: round(gardenFullMs),
     width: g.width, height: g.height, grow_s: round(gardenGrowS), page_grow_ms: Number(g.growMs),
     hybrid_s: round(gardenHybridS), lists_ms: Number(g.hybridMs),
@@ -138,7 +144,7 @@ try {
   console.log(JSON.stringify(gardenRow));
   console.log(JSON.stringify({
     workload: 'garden-hybrid/ratio', note: 'garden / grove ms per frame, hybrid, same run (≤ 1: the garden draws at the grove\'s rate)',
-    ratio: round(ratio, 2), ratio_reps: gardenMs.map((x, i) => round(x / groveMs[i], 2)), ratio_per_pixel: round(perPixel, 2),
+    ratio: round(ratio, 2), trees_ratio: round((median(gardenMs) - median(gardenBareMs)) / (median(groveMs) - median(groveBareMs)), 2), ratio_reps: gardenMs.map((x, i) => round(x / groveMs[i], 2)), ratio_per_pixel: round(perPixel, 2),
     load: loads.map((x) => round(x, 2)),
   }));
 } catch (e) {
