@@ -88,19 +88,25 @@ try {
   // And each page without its trees (the grove's ground; the garden's ground, objects and ivy).
   const groveMs = [], gardenMs = [], gridMs = [], groveBareMs = [], gardenBareMs = [], loads = [loadAvg()];
   let groveTiming = null;
+  // A timing starts only once the page's own frame loop has drawn what the last change asked for
+  // (a frame it draws meanwhile would share the GPU with the timed frames): the garden's look serial
+  // (data-drawn-look) after __niwaGardenGroundLod; the grove's ground-only timing asks for a frame
+  // at its end, so it goes first and the whole grove's warm-up frame absorbs that one.
+  const settled = async (px) => {
+    const look = await garden.evaluate((v) => window.__niwaGardenGroundLod(v), px);
+    await garden.waitForFunction((n) => Number(document.documentElement.dataset.drawnLook) >= n, look, { timeout: 300_000, polling: 100 });
+  };
   for (let rep = 0; rep < args.reps; ++rep) {
     await grove.bringToFront();
+    groveBareMs.push((await grove.evaluate((n) => window.grove.timeFrames(n, -1), args.frames)).median);
     groveTiming = await grove.evaluate((n) => window.grove.timeFrames(n), args.frames);
     groveMs.push(groveTiming.median);
-    groveBareMs.push((await grove.evaluate((n) => window.grove.timeFrames(n, -1), args.frames)).median);
     await garden.bringToFront();
+    await settled(undefined);
     gardenMs.push(await garden.evaluate((n) => window.__niwaGardenFrameMs(n), args.frames));
-    gridMs.push(await garden.evaluate(async (n) => {
-      window.__niwaGardenGroundLod(0);
-      const ms = await window.__niwaGardenFrameMs(n);
-      window.__niwaGardenGroundLod(undefined);
-      return ms;
-    }, args.frames));
+    await settled(0);
+    gridMs.push(await garden.evaluate((n) => window.__niwaGardenFrameMs(n), args.frames));
+    await settled(undefined);
     gardenBareMs.push(await garden.evaluate((n) => window.__niwaGardenFrameMs(n, { trees: false }), args.frames));
     loads.push(loadAvg());
   }

@@ -373,7 +373,7 @@ class GardenLab {
     hybrid_year_ = year;
     // The card atlases' side: the grove's texels (10 atlases of 2048², the most a page of trees
     // paints and keeps) shared by the distinct trees, a power of two from 512 to 2048 (100
-    // distinct trees: 512², 112 MB with their mipmaps where 2048² would be 1.8 GB and minutes of
+    // distinct trees: 512², 140 MB with their mipmaps where 2048² would be 2.2 GB and minutes of
     // painting on a CPU rasteriser); a tree whose tiles do not fit at that side gets the next
     // side up (to RenderOptions' 2048).
     const RenderOptions defaults;
