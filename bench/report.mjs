@@ -4,7 +4,7 @@
 //                       [--gbench G.txt] [--grove GR.jsonl] [--terrain-page T1.jsonl[,...]]
 //                       [--worker WK.jsonl] [--page-timings PT.jsonl] [--moss-page M1.jsonl[,...]]
 //                       [--moss-rays R.jsonl] [--first-picture FP.jsonl] [--garden-page GP.jsonl]
-//                       [--meta META.json]
+//                       [--garden-hybrid GH.jsonl] [--meta META.json]
 //                       [--record docs/BENCHMARKS.md]
 // N/W/P hold one JSON object per line as printed by niwa_bench_runner / ez_tree_peer.mjs /
 // fastnoise_peer.mjs, one file per run (process): each workload keeps its fastest run, and the table
@@ -14,7 +14,8 @@
 // moss page's 300-day thesis run and its scrubber); R those of bench/moss_rays_peer.mjs (three-mesh-bvh
 // on the thesis rays of niwa moss photons --rays); FP those of bench/first_picture.mjs (the tree page's
 // first picture beside an ez-tree page's, fresh Chromium each); GP that of bench/garden_page.mjs (the
-// scale garden on the page and natively in one run); META holds {date, machine, cpu, cores, tools, load,
+// scale garden on the page and natively in one run); GH those of bench/garden_hybrid.mjs (a 100-tree
+// garden's hybrid frame beside the grove's, one chromium); META holds {date, machine, cpu, cores, tools, load,
 // command, seconds}.
 import {readFileSync, writeFileSync, existsSync} from 'node:fs';
 
@@ -244,6 +245,20 @@ for (const row of readLines(args['garden-page']).filter((r) => r.workload)) {
   goal(`${row.workload}: the page ≤ 2× native (link to frame, chromium, WASM; native niwa garden grow in the same run)`,
     `${fmt(row.ms)} ms against ${fmt(row.native_ms)} ms: ${row.ratio}× (ivy internodes page ${row.page_ivy_internodes}, native ${row.ivy_internodes})`,
     row.ratio <= 2);
+}
+// The garden page's hybrid frame (issue 33 item 7: "100 trees at ≥ 20 frames per second in hybrid mode
+// where the grove does"): on SwiftShader, no slower than the grove page's hybrid frame in the same run.
+{
+  const rows = readLines(args['garden-hybrid']).filter((r) => r.workload);
+  const ratio = rows.find((r) => r.workload === 'garden-hybrid/ratio');
+  const garden = rows.find((r) => r.workload.startsWith('garden-hybrid/garden'));
+  const grove = rows.find((r) => r.workload === 'garden-hybrid/grove');
+  if (ratio && garden && grove) {
+    const idle = Math.max(...ratio.load) < 1.5;
+    goal(`garden page, ${garden.trees} trees in hybrid ≤ the grove's hybrid frame (chromium, SwiftShader, same run; load ${ratio.load.join(' → ')}${idle ? '' : ': not measured idle'})`,
+      `${fmt(garden.ms)} ms against ${fmt(grove.ms)} ms: ${ratio.ratio}× (${garden.width}×${garden.height} px against ${grove.width}×${grove.height}; ground's full grid ${fmt(garden.full_grid_ms)} ms)`,
+      idle ? ratio.ratio <= 1 : undefined);  // no verdict from a loaded run
+  }
 }
 // The tree page's first picture (issue 32 item 5): within 2× an ez-tree page's load in the same run.
 {

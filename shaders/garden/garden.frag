@@ -9,7 +9,10 @@
 // 1: the garden's bark 1) wears its bark maps instead of the brown: base colour uBarkMap and the
 // tangent-space normal map uBarkNormal (tangent frame from screen-space derivatives, as the tree
 // page's tree_textured.frag). Ivy born after the year shown (vBirth over
-// uYear: the year scrubber) is not drawn.
+// uYear: the year scrubber) is not drawn. The ground drawn through its level of detail (uGround.w
+// 1: web/garden/ground_lod.js, fewer of the grid's vertices far away) reads its normal and moss light
+// per fragment from uGroundMap (the grid's own per-vertex values, one texel a vertex, filtered as the
+// full grid's triangles would interpolate them), so its light and overlays keep the grid's detail.
 // Lambert from the frame's sun, shadowed by its shadow map, over a sky/ground ambient; both faces
 // lit (leaves are cards).
 precision highp float;
@@ -33,6 +36,8 @@ uniform float uYear;   // the garden year shown
 uniform int uBarkSim;  // 1: the trees drawn wear uBarkMap and uBarkNormal on their bark
 uniform sampler2D uBarkMap;     // RGBA8 base colour, row 0 = v 0
 uniform sampler2D uBarkNormal;  // RGBA8 OpenGL normal map
+uniform vec4 uGround;           // the ground's grid: half its size (m), its cell (m), vertices a side, 1 on
+uniform sampler2D uGroundMap;   // RGBA16F per grid vertex: normal xyz, the moss light (vTint's)
 
 out vec4 outColor;
 
@@ -60,9 +65,16 @@ void main() {
     barkColour = texture(uBarkMap, vUv).rgb;
     barkN = texture(uBarkNormal, vUv).xyz * 2.0 - 1.0;
   }
+  float tint = vTint;
+  if (uMode == 0 && uGround.w > 0.5) {
+    vec4 g = texture(uGroundMap, ((vWorld.xz + uGround.x) / uGround.y + 0.5) / uGround.z);
+    n = normalize(g.xyz);
+    if (!gl_FrontFacing) n = -n;
+    tint = g.w;
+  }
   vec3 base;
   if (uMode == 0 && uOverlay == 1) {
-    float s = vTint;
+    float s = tint;
     vec3 dark = vec3(0.12, 0.10, 0.38), teal = vec3(0.10, 0.58, 0.52), yellow = vec3(0.96, 0.88, 0.22);
     base = s < 0.0 ? vec3(0.5) : s < 50.0 ? mix(dark, teal, s / 50.0) : mix(teal, yellow, clamp((s - 50.0) / 250.0, 0.0, 1.0));
   } else if (uMode == 0 && uOverlay == 2) {

@@ -23,7 +23,8 @@
 // a regrow stops the wind; Trees: hybrid draws the far copies
 // as cards and lines (the trees still show, fewer triangles, orbit and zoom keep them, Blow sways a
 // near full tree and a far card tree: their crown regions' pixels change) and full again the same
-// picture;
+// picture; the ground's level of detail draws closed meshes, fewer triangles than its grid and the
+// same picture;
 // a 16-bit heightmap opened as the ground, a bad PNG dropped
 // on the view and one opened as the mask (the core's line beside each), a bad mix weight (its line
 // beside the row), the mix edited and a mask opened, the files named beside Copy link, and that
@@ -267,6 +268,56 @@ await runBrowserTest(async (server, browser) => {
   const stillsEast = Number((await dataset()).windStills || 0);
   await page.click('#wind');
   await page.waitForFunction((n) => Number(document.documentElement.dataset.windStills || 0) > n, stillsEast, { timeout: TIMEOUT });
+
+  // 1f (before 1e, in its view). The ground's level of detail (web/garden/ground_lod.js, issue 33
+  // item 7): every mesh it can draw is closed (random strides on grids of 128, 100, 512 and 8 cells:
+  // each inner edge in two triangles, the square's area, one winding), and in this view it draws fewer
+  // ground triangles than the full grid (window.__niwaGardenGroundLod(0): the frame of before) with
+  // the picture within 0.5 % of its pixels.
+  const lodMeshes = await page.evaluate(async () => {
+    const { GroundLod } = await import('/web/garden/ground_lod.js');
+    let seed = 7, bad = 0, meshes = 0, triangles = 0;
+    const random = () => (seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648;
+    for (const n of [128, 100, 512, 8]) {
+      const m = n + 1;
+      for (let r = 0; r < 6; ++r, ++meshes) {
+        const lod = new GroundLod(n, 1, new Float32Array(m * m));
+        const strides = lod.tiles.map((t) => { let s = 1; for (let k = Math.floor(random() * 7); k > 0 && s * 2 <= t.most; --k) s *= 2; return s; });
+        const { indices, count } = lod.select(strides);
+        const edges = new Map();
+        let area = 0, winding = 0;
+        for (let t = 0; t < count; t += 3) {
+          const v = [indices[t], indices[t + 1], indices[t + 2]], p = v.map((k) => [k % m, Math.floor(k / m)]);
+          const cross = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+          winding += cross < 0 ? 0 : 1;  // GardenGround::Mesh's triangles: negative in (x, z)
+          area -= cross / 2;
+          for (const [a, b] of [[v[0], v[1]], [v[1], v[2]], [v[2], v[0]]]) edges.set(Math.min(a, b) * m * m + Math.max(a, b), (edges.get(Math.min(a, b) * m * m + Math.max(a, b)) || 0) + 1);
+        }
+        let open = 0;
+        for (const [key, uses] of edges) {
+          const a = Math.floor(key / (m * m)), b = key % (m * m), [ax, az, bx, bz] = [a % m, Math.floor(a / m), b % m, Math.floor(b / m)];
+          const border = (ax === bx && (ax === 0 || ax === n)) || (az === bz && (az === 0 || az === n));
+          if (uses > 2 || (uses === 1 && !border)) ++open;
+        }
+        triangles += count / 3;
+        if (open || winding || area !== n * n) ++bad;
+      }
+    }
+    return { bad, meshes, triangles };
+  });
+  check(`Ground level of detail: ${lodMeshes.meshes} meshes of random tile strides are closed (${lodMeshes.triangles} triangles)`, lodMeshes.bad === 0, `${lodMeshes.bad} not closed`);
+  const lodFrame = async (px) => {
+    const n = await page.evaluate((v) => window.__niwaGardenGroundLod(v), px);
+    await page.waitForFunction((k) => Number(document.documentElement.dataset.drawnLook) >= k, n, { timeout: TIMEOUT });
+    return dataset();
+  };
+  const gridFrame = await lodFrame(0);
+  await page.evaluate(() => { window.__gardenGrid = window.__niwaCanvasImage('#view').data; });
+  const lodShown = await lodFrame(undefined);
+  const lodShare = await differFrom(page, '__gardenGrid', true);
+  check('Ground level of detail: fewer ground triangles than the full grid, the picture within 0.5 % of its pixels',
+    Number(lodShown.drawnGround) < Number(gridFrame.drawnGround) && lodShare < 0.005,
+    `${lodShown.drawnGround} of ${gridFrame.drawnGround} ground triangles (tile strides ${lodShown.groundStrides}); ${(lodShare * 100).toFixed(3)} % of pixels differ`);
 
   // 1e. Trees: hybrid (issue 33 items 6-7): the far copies as the grove's cards and lines (one draw
   // list per distinct tree and distance band), the near ones full. The trees still show (leaf and

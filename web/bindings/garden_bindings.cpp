@@ -112,6 +112,10 @@ namespace {
 using nlohmann::ordered_json;
 
 constexpr double kPi = 3.14159265358979323846;
+// The page's hybrid card atlases (hybridBuild): their texels in all, the grove page's 10 atlases of
+// 2048² (web/tree/grove_page.js), and the smallest side they are cut to.
+constexpr double kGardenPageAtlasTexels = 10.0 * 2048 * 2048;
+constexpr int kGardenPageAtlasMin = 512;
 
 void AppendMesh(const geom::TriMesh& mesh, std::vector<float>* positions,
                 std::vector<float>* normals, std::vector<uint32_t>* indices) {
@@ -367,11 +371,26 @@ class GardenLab {
     if (year < 0 || year > run_->done() || !compose::GardenYearShown(*run_, year))
       return ErrorText(Status::Error("year", "year " + std::to_string(year) + " is not shown"));
     hybrid_year_ = year;
-    const RenderOptions options;
+    // The card atlases' side: the grove's texels (10 atlases of 2048², the most a page of trees
+    // paints and keeps) shared by the distinct trees, a power of two from 512 to 2048 (100
+    // distinct trees: 512², 140 MB with their mipmaps where 2048² would be 2.2 GB and minutes of
+    // painting on a CPU rasteriser); a tree whose tiles do not fit at that side gets the next
+    // side up (to RenderOptions' 2048).
+    const RenderOptions defaults;
+    const double groups = std::max<double>(1.0, static_cast<double>(run_->groups().size()));
+    int side = defaults.atlas_size;
+    while (side > kGardenPageAtlasMin && groups * side * side > kGardenPageAtlasTexels) side /= 2;
     for (std::size_t g = 0; g < run_->groups().size(); ++g) {
       const Tree* tree = run_->TreeAtYear(static_cast<int>(g), year);
       if (tree == nullptr) return ErrorText(Status::Error("year", "no tree of that year"));
-      hybrid_.push_back(BuildHybridScene(*tree, options));
+      RenderOptions options = defaults;
+      options.atlas_size = side;
+      HybridScene scene = BuildHybridScene(*tree, options);
+      while (!scene.atlas_fits && options.atlas_size < defaults.atlas_size) {
+        options.atlas_size *= 2;
+        scene = BuildHybridScene(*tree, options);
+      }
+      hybrid_.push_back(std::move(scene));
       // The tree's sway model (its node points: the skin of its draw lists, numbered as Blow's
       // compose/garden_wind simulators number them; the numbering is the tree's, not the rows').
       hybrid_models_.push_back(

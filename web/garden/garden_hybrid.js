@@ -20,8 +20,10 @@
 // Test hooks: data-trees-mode, data-hybrid-serial (rounds on screen), data-hybrid-pending,
 // data-hybrid-bark-trees (distinct trees whose atlas was painted from their simulated bark),
 // data-hybrid-trees, data-full-trees, data-hybrid-ms (a round's time, request to lists),
+// data-hybrid-atlas-triangles and data-hybrid-atlas-ms (the atlases' triangles and the page's time to queue their painting),
 // data-drawn-hybrid-serial (the round of the last frame drawn); window.__niwaGardenFrameMs(n): the
-// median ms of n whole frames of the view on screen (Frame.timeFrames).
+// median ms of n whole frames of the view on screen (Frame.timeFrames), with {trees: false} of the
+// view without its trees; data-hybrid-atlas-sides (side:count of the atlases on screen).
 // Does not: grow, step the wind or pick anything, or keep the mode in the link (a view, like the
 // camera).
 import { drawingBufferSize } from '../gl/context.js';
@@ -60,7 +62,20 @@ export class GardenHybrid {
     worker.on('gardenDrawLists', (msg) => this.#lists(msg));
     select.addEventListener('change', () => this.setMode(select.value));
     this.#hooks({ hybridSerial: 0, hybridPending: 0 });
-    window.__niwaGardenFrameMs = async (n) => (await this.frame.timeFrames(n)).ms;  // web/gl/frame.js
+    // trees: false times the frame without any tree (the ground, objects and ivy: its fixed cost).
+    window.__niwaGardenFrameMs = async (n, { trees = true } = {}) => {
+      if (trees) return (await this.frame.timeFrames(n)).ms;  // web/gl/frame.js
+      const full = this.full(), kept = full?.trees, only = this.layer?.only;
+      if (full) full.trees = null;
+      if (this.layer) this.layer.only = -1;
+      try {
+        return (await this.frame.timeFrames(n)).ms;
+      } finally {
+        if (full) full.trees = kept;
+        if (this.layer) this.layer.only = only;
+        this.request();
+      }
+    };
   }
 
   async init() {
@@ -174,9 +189,13 @@ export class GardenHybrid {
     // A distinct tree in simulated bark (bark 1): its cards' bark painted from its base colour map
     // (the full trees' texture, GardenRenderer.barks; the worker's atlas uvs wrap its tile).
     const barks = this.barkShown ? this.full()?.barks || [] : [];
-    let barkTrees = 0;
+    let barkTrees = 0, atlasTriangles = 0;
+    const sides = new Map();
     const groups = this.full()?.trees?.groups || [];
+    const paintStart = performance.now();
     msg.atlases.forEach((hybrid, g) => {
+      for (const part of ['bark', 'leaves', 'flowers']) atlasTriangles += (hybrid[part]?.indices?.byteLength || 0) / 12;
+      sides.set(hybrid.atlasSize, (sides.get(hybrid.atlasSize) || 0) + 1);
       const bark = barks[g] ? { bark: { texture: barks[g].colour } } : null;
       if (bark) barkTrees += 1;
       // Its copies' pose blocks (at rest until Blow's poses come: setPoses).
@@ -185,7 +204,10 @@ export class GardenHybrid {
     this.swaying = false;
     this.worker.recycle(atlasGroups(msg.atlases));
     this.atlases = true;
-    this.#hooks({ hybridBarkTrees: barkTrees });
+    // the atlases' triangles painted (each distinct tree's whole geometry, once) and the page's time
+    // to queue them (the GPU's own time follows in the next frame)
+    this.#hooks({ hybridBarkTrees: barkTrees, hybridAtlasTriangles: atlasTriangles, hybridAtlasMs: (performance.now() - paintStart).toFixed(0),
+      hybridAtlasSides: [...sides].map(([side, n]) => `${side}:${n}`).join(',') });
     const plan = this.#plan();
     if (plan) this.#round(plan);
   }

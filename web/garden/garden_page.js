@@ -142,7 +142,7 @@ const loop = new ProgressiveLoop({
   renderer: () => (renderer ? frame : null),
   camera,
   onDrawn: (drawn) => {
-    setHooks({ drawnSerial: gardenSerial, drawnTrees: drawn.trees ?? 0, drawnTriangles: drawn.triangles, drawnLines: drawn.lines ?? 0, drawCalls: drawn.drawCalls, shadow: drawn.shadow ?? '', drawnOverlay: renderer?.overlay ?? 'none', drawnLook: lookSerial });
+    setHooks({ drawnSerial: gardenSerial, drawnTrees: drawn.trees ?? 0, drawnTriangles: drawn.triangles, drawnLines: drawn.lines ?? 0, drawCalls: drawn.drawCalls, drawnGround: drawn.groundTriangles ?? 0, groundStrides: drawn.groundStrides ?? '', shadow: drawn.shadow ?? '', drawnOverlay: renderer?.overlay ?? 'none', drawnLook: lookSerial });
     yearDrawn();
     gardenWind.drawn();
     hybrid?.drawn();
@@ -937,6 +937,16 @@ window.__niwaGardenLook = ({ x = 0, z = 0, up = 0.8, distance = 3, bark = true, 
   lookSerial += 1;
   requestFrame();
   return { serial: lookSerial, view: before };
+};
+
+// For a test's A/B of one view: the ground's level of detail (web/garden/ground_lod.js) at its most
+// `px` pixels a drawn cell, 0 the full grid, undefined the page's own; the next frame drawn with it.
+window.__niwaGardenGroundLod = (px) => {
+  if (!renderer) return;
+  renderer.lodPx = px;
+  lookSerial += 1;
+  requestFrame();
+  return lookSerial;
 };
 
 // Blow / Still: the last year's trees swayed by a gust front crossing the garden.

@@ -17,17 +17,21 @@
 // Hybrid trees (garden_hybrid.js): setFull(mask) draws only the copies the mask keeps in full
 // (the others are the grove renderer's cards and lines, another layer), each skinned to its own
 // pose block while Blow plays; setFull(null) all of them.
+// The ground is drawn through its level of detail (ground_lod.js: far tiles of the grid with fewer of
+// its own vertices, no crack), chosen for each frame's eye; lodPx = 0 draws the full grid (a test's A/B).
 // A StudyLayer (web/gl/frame.js), a layer of a Frame of fit: false (metres).
 // Does not: talk to the worker, know the garden model, or draw the hybrid (card) trees itself.
 import { copyOf, floatAttribute, staticBuffer, uintAttribute, viewOf } from '../gl/buffers.js';
 import { StudyLayer } from '../gl/frame.js';
 import { loadPrograms } from '../gl/program.js';
 import { imageTexture, restPoses, uploadPoses } from '../gl/textures.js';
+import { GroundLod, pixelsAtOneMetre } from './ground_lod.js';
 
 const SHADERS = new URL('../../shaders/garden/', import.meta.url).href;
 const INSTANCE_BYTES = 16;  // x, y, z, turn (radians)
 const POSE_UNIT = 1;       // the texture unit of the sway poses (the shadow map's is 7)
 const BARK_UNIT = 2;       // the simulated bark's base colour; its normal map on BARK_UNIT + 1
+const GROUND_UNIT = 4;     // the ground's per-vertex normal and moss light (its level of detail)
 // The ground's overlays, in garden.frag's uOverlay order.
 export const OVERLAYS = ['none', 'moss', 'slope', 'altitude'];
 
@@ -46,6 +50,7 @@ export class GardenRenderer extends StudyLayer {
     this.poseSerial = 0;    // poses uploaded since the wind started (the shadow map's key)
     this.barks = [];        // per distinct tree: {colour, normal, digest} textures, or null (procedural)
     this.barkShown = true;  // false: every tree in the procedural brown (a test's A/B of one frame)
+    this.lodPx = undefined;  // the ground's level of detail: undefined its LOD_PX, 0 the full grid
   }
 
   async init() {
@@ -68,6 +73,7 @@ export class GardenRenderer extends StudyLayer {
     this.gl.deleteVertexArray(part.vao);
     for (const b of part.buffers) this.gl.deleteBuffer(b);
     if (part.full) this.gl.deleteBuffer(part.full.buffer);
+    if (part.lod) this.gl.deleteTexture(part.lod.texture);
   }
 
   // An indexed mesh (positions, normals, indices, a per-vertex tint or none, a per-vertex birth
@@ -110,6 +116,7 @@ export class GardenRenderer extends StudyLayer {
     const mossS = buffers.ground.moss_S;
     this.hasMoss = !!mossS && mossS.byteLength > 0;
     this.ground = this.#mesh(buffers.ground, this.hasMoss ? mossS : null);
+    this.#groundLod(bounds, buffers.ground);
     this.objects = buffers.objects.indices.byteLength > 0 ? this.#mesh(buffers.objects, buffers.objects.kind, buffers.objects.birth) : null;
     this.year = null;
     this.#setTrees(buffers.trees);
@@ -117,6 +124,54 @@ export class GardenRenderer extends StudyLayer {
     this.grid = { n: bounds.n, size: bounds.size, cell: bounds.cell, relief: bounds.relief, heights: copyOf(Float32Array, buffers.ground.heights) };
     this.boundsView = { min: [...bounds.min], max: [...bounds.max] };
     this.serial += 1;
+  }
+
+  // The ground's level of detail (ground_lod.js) when it is the grid it says ((n + 1)² vertices, n²
+  // cells): its own index buffer in the ground's VAO, rewritten when a frame's tiles change stride.
+  #groundLod(bounds, ground) {
+    const gl = this.gl, n = bounds.n;
+    const heights = viewOf(Float32Array, ground.heights);
+    if (!(n > 0) || heights.length !== (n + 1) * (n + 1) || this.ground.count !== n * n * 6 || ground.positions.byteLength !== heights.length * 12) return;
+    const lod = new GroundLod(n, bounds.cell, heights);
+    lod.full = this.ground.count;
+    lod.half = bounds.size / 2;
+    // The grid's normal and moss light per vertex as a texture (garden.frag reads them per
+    // fragment, so the coarse tiles keep the grid's light).
+    const normals = viewOf(Float32Array, ground.normals), moss = this.hasMoss ? viewOf(Float32Array, ground.moss_S) : null;
+    lod.map = new Float32Array(heights.length * 4);
+    for (let v = 0; v < heights.length; ++v) {
+      lod.map.set(normals.subarray(v * 3, v * 3 + 3), v * 4);
+      lod.map[v * 4 + 3] = moss ? moss[v] : 0;
+    }
+    lod.texture = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, lod.texture);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA16F, n + 1, n + 1, 0, gl.RGBA, gl.FLOAT, lod.map);
+    for (const [k, v] of [[gl.TEXTURE_MIN_FILTER, gl.LINEAR], [gl.TEXTURE_MAG_FILTER, gl.LINEAR], [gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE], [gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE]]) gl.texParameteri(gl.TEXTURE_2D, k, v);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    lod.buffer = gl.createBuffer();
+    gl.bindVertexArray(this.ground.vao);
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, lod.buffer);
+    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, lod.indices.byteLength, gl.DYNAMIC_DRAW);
+    gl.bindVertexArray(null);
+    this.ground.buffers.push(lod.buffer);
+    this.ground.lod = lod;
+    this.ground.count = 0;
+  }
+
+  // The ground's indices for `view` (its eye and pixels) uploaded when they changed; the count drawn.
+  #groundFor(view) {
+    const lod = this.ground.lod;
+    if (!lod) return;
+    const px = this.lodPx === 0 ? 0 : pixelsAtOneMetre(view.viewProjection, view.height);
+    const strides = this.lodPx === 0 ? lod.tiles.map(() => 1) : lod.strides(view.eye, px, this.lodPx);
+    const { indices, count, changed } = lod.select(strides);
+    if (changed || this.ground.count !== count) {
+      const gl = this.gl;
+      gl.bindVertexArray(this.ground.vao);
+      gl.bufferSubData(gl.ELEMENT_ARRAY_BUFFER, 0, indices);
+      gl.bindVertexArray(null);
+      this.ground.count = count;
+    }
   }
 
   // Garden year `year` of the garden on screen (the worker's 'gardenYear' buffers: the trees' six
@@ -133,6 +188,13 @@ export class GardenRenderer extends StudyLayer {
     if (this.hasMoss && this.ground?.tintBuffer && mossS && mossS.byteLength > 0) {
       gl.bindBuffer(gl.ARRAY_BUFFER, this.ground.tintBuffer);
       gl.bufferSubData(gl.ARRAY_BUFFER, 0, viewOf(Float32Array, mossS));
+      const lod = this.ground.lod, moss = viewOf(Float32Array, mossS);
+      if (lod && moss.length * 4 === lod.map.length) {
+        for (let v = 0; v < moss.length; ++v) lod.map[v * 4 + 3] = moss[v];
+        gl.bindTexture(gl.TEXTURE_2D, lod.texture);
+        gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, lod.n + 1, lod.n + 1, gl.RGBA, gl.FLOAT, lod.map);
+        gl.bindTexture(gl.TEXTURE_2D, null);
+      }
     }
     this.year = last ? null : year;
     this.serial += 1;
@@ -460,17 +522,28 @@ export class GardenRenderer extends StudyLayer {
       gl.uniform1i(p.uniforms.uOverlay, overlay === 1 && !this.hasMoss ? 0 : Math.max(0, overlay));
       gl.uniform1f(p.uniforms.uBand, Math.max(1, (this.grid ? this.grid.relief : 1) / 10));
       gl.uniform1f(p.uniforms.uYear, this.#shownYear());
+      // The ground's per-vertex map when its level of detail draws it (a blank texture otherwise:
+      // the sampler is never left on another unit).
+      const lod = mode === 0 && this.lodPx !== 0 ? this.ground.lod : null;
+      gl.activeTexture(gl.TEXTURE0 + GROUND_UNIT);
+      gl.bindTexture(gl.TEXTURE_2D, lod ? lod.texture : this.blankTexture);
+      gl.activeTexture(gl.TEXTURE0);
+      gl.uniform1i(p.uniforms.uGroundMap, GROUND_UNIT);
+      gl.uniform4f(p.uniforms.uGround, lod ? lod.half : 0, lod ? lod.cell : 1, lod ? lod.n + 1 : 1, lod ? 1 : 0);
       view.shadow?.bindFor(p, view.sun);
       gl.enable(gl.DEPTH_TEST);
       gl.disable(gl.CULL_FACE);
       gl.vertexAttrib1f(2, 0);  // the ground's tint (not an array in its VAO)
     };
+    this.#groundFor(view);
     const steps = [this.#meshStep(this.ground, uniforms(0), p)];
     if (this.objects) steps.push(this.#meshStep(this.objects, uniforms(1), p));
     const trees = this.#treeSteps(uniforms(2), p);
     steps.push(...trees);
     for (const s of steps) totals.triangles += s.primitives;
     totals.drawCalls = steps.length;
+    totals.groundTriangles = this.ground.count / 3;
+    totals.groundStrides = this.ground.lod ? this.ground.lod.key : '';
     totals.trees = this.trees ? this.trees.groups.reduce((n, g) => n + g.instances, 0) : 0;
     totals.fullTrees = this.trees?.full ? this.trees.full.ranges.reduce((n, r) => n + r.instances, 0) : totals.trees;
     return { steps, totals };
