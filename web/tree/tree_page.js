@@ -472,7 +472,8 @@ worker.on('tree', (msg) => {
     status: 'ready', treeSerial, internodes: msg.stats.internodes, leaves: msg.stats.leaves,
     flowers: msg.stats.flowers, year: msg.stats.years,
     // bench/edit_latency.mjs: the worker's time for this tree and when it reached the page
-    treeWorkerMs: msg.workerMs == null ? '' : msg.workerMs.toFixed(1), treeArrivedMs: performance.now().toFixed(1),
+    treeWorkerMs: msg.workerMs == null ? '' : msg.workerMs.toFixed(1), treeBuiltMs: msg.builtMs == null ? '' : msg.builtMs.toFixed(1),
+    treeArrivedMs: performance.now().toFixed(1),
   });
   if (windPlaying) worker.post('wind', { play: true });  // sway the new tree (or new wind) too
   else showWind(null);
