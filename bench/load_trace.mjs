@@ -3,12 +3,15 @@
 // tree's first whole frame (+1 s, as tests/browser/load_tasks.test.mjs), and each task of the page's
 // main thread over --min ms of wall time or of main-thread CPU time (`tdur`: on this shared machine a
 // task's wall time is mostly waiting for a core), with what took its CPU time: the trace events
-// inside it by self time (script by function and file, style, layout, parsing, GC).
+// inside it by self wall time (script by function and file, style, layout, parsing, GC) and the
+// function that posted it (`src`: e.g. Chrome's autofill, FormControlDidChange).
 //   node bench/load_trace.mjs [--reps 1] [--min 30] [--root DIR] [--hash '#...'] [--out FILE]
 // --root: serve another checkout's public/, web/ and shaders/ (a `git archive` of a commit, for
-// before/after runs) with this checkout's build/wasm; --out: keep the last trace's JSON.
-// Prints per load one JSON line {load1, drawnAt, tasks: [{at, wall, cpu, what: [[name, self ms]...]}]}
-// and the longest task's wall and CPU time.
+// before/after runs) with this checkout's build/wasm; --out: keep the last trace's JSON (with
+// the V8 CPU profile samples of every thread); TRACE_EXTRA=1: style and layout invalidations too.
+// Prints per load one JSON line {load1 (1-min load average), drawnAt, main_cpu (the main thread's CPU
+// over the load), longest_wall, longest_cpu, top (the three tasks of most CPU: "cpu/wall src what"),
+// tasks: [{at, wall, cpu, src, what: [[name, self ms]...]}]}.
 // Does not: judge the goal (docs/BENCHMARKS.md does, with the machine's load), or warm anything up.
 import fs from 'node:fs';
 import os from 'node:os';
