@@ -130,6 +130,11 @@ export class ParamPanel {
     return document.getElementById(`param-${key}`);
   }
 
+  // Whether the table has row `key`.
+  has(key) {
+    return this.fields.has(key);
+  }
+
   // The text in row `key`'s input ('' for none), built or not.
   text(key) {
     return this.fields.get(key)?.text() ?? '';

@@ -22,7 +22,7 @@ export const simpleRows = (paramTable) => paramTable.filter((spec) => typeof spe
 export class GettingStarted {
   // container: an element to fill; paramTable: the worker's table; years: the Years input;
   // openRow(key): shows a row of the full table (opens its section, focuses it); rows: the full
-  // table's rows ({text(key), element(key)}: the ParamPanel, whose closed groups may not be built
+  // table's rows ({has(key), text(key), element(key)}: the ParamPanel, whose closed groups may not be built
   // yet: a control reads its row's value through text() and asks for the row's input only to write it).
   constructor(container, paramTable, years, openRow, rows) {
     this.controls = [];
@@ -42,7 +42,7 @@ export class GettingStarted {
       help: 'How many years the tree has grown.', target: { text: () => years.value, element: () => years }, row: 'Years',
     }));
     for (const spec of simpleRows(paramTable)) {
-      if (!rows.fields.has(spec.key)) continue;
+      if (!rows.has(spec.key)) continue;
       group.append(this.#control({
         key: spec.key, label: spec.simple, unit: spec.unit, range: spec,
         help: spec.simple_help || spec.help, target: { text: () => rows.text(spec.key), element: () => rows.element(spec.key) },

@@ -460,7 +460,7 @@ worker.on('tree', (msg) => {
   } else {
     // To the view (while WebGL starts it keeps the last tree only), its buffers moved, not copied;
     // they come back once on the GPU ('recycle').
-    view.send('camera', { state: cameraState() });
+    view.send('camera', { state: cameraState(), withTree: true });  // drawn with the tree, no frame of its own
     const tree = { mesh: msg.mesh, bounds: msg.stats.bounds, swayNodes: msg.swayNodes, hybrid: msg.hybrid,
       hybridOn: Boolean(msg.hybrid), leafLength: Number(panel.values().leaf_size) / 100 || 0.05,
       serial: treeSerial, year: shownYear, selected };
