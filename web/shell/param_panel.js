@@ -6,6 +6,10 @@
 // edit invalidates.
 // Each slider's mapping (linear, or logarithmic over several decades) is the table row's range's
 // (web/shell/slider_scale.js).
+// With `later` (the tree page), the closed groups' rows are built after the first group's, one group
+// a task (issue 32 item 5: the panel's rows were most of the longest main-thread task of the page's
+// load); until then a row keeps its value in the panel, and opening its group, asking for its input
+// (element) or marking its error builds its group at once.
 // Does not: validate values (the core does and its error line is shown), or send anything.
 import { sliderScale } from './slider_scale.js';
 
@@ -27,10 +31,21 @@ function el(tag, attrs = {}, text) {
   return node;
 }
 
+// A number input's value as the browser keeps it: a valid floating-point number's text, else ''
+// (the HTML value sanitization of <input type=number>).
+const FLOAT_TEXT = /^-?(\d+(\.\d+)?|\.\d+)([eE][-+]?\d+)?$/;
+const numberText = (v) => (FLOAT_TEXT.test(String(v)) ? String(v) : '');
+// A number field's value for the state: valid numbers as numbers, anything else as text (the core
+// checks both and says what is wrong).
+const readNumber = (text) => (text.trim() !== '' && Number.isFinite(Number(text)) ? Number(text) : text);
+
 export class ParamPanel {
-  // container: element to fill; onChange(spec, stage): called after any edit of the row `spec`.
-  constructor(container, paramTable, onChange) {
-    this.fields = new Map();  // key -> {spec, read(), write(value), setInvalid(bool)}
+  // container: element to fill; onChange(spec, stage): called after any edit of the row `spec`;
+  // later(fn): runs fn in a later task (given: the closed groups' rows are built one group a task).
+  constructor(container, paramTable, onChange, { later = null } = {}) {
+    this.fields = new Map();  // key -> {spec, read(), write(value), setInvalid(bool), text()}
+    this.onChange = onChange;
+    this.waiting = new Map(); // a closed <details> whose rows are not built yet -> its specs
     const groups = new Map();
     for (const spec of paramTable) {
       if (!groups.has(spec.group)) groups.set(spec.group, []);
@@ -41,11 +56,88 @@ export class ParamPanel {
     for (const [group, specs] of groups) {
       const details = el('details', { class: 'group' });
       if (first) details.open = true;
+      const summary = el('summary', {}, `${groupTitle(specs[0])} (${specs.length})`);
+      details.append(summary);
+      if (first || !later) {
+        for (const spec of specs) details.append(this.#field(spec, onChange));
+      } else {
+        this.waiting.set(details, specs);
+        for (const spec of specs) this.fields.set(spec.key, this.#unbuilt(spec, details));
+        // A click on the summary builds the rows before the group opens (no empty frame); toggle
+        // covers `open` set by a script.
+        summary.addEventListener('click', () => this.#build(details));
+        details.addEventListener('toggle', () => this.#build(details));
+      }
       first = false;
-      details.append(el('summary', {}, `${groupTitle(specs[0])} (${specs.length})`));
-      for (const spec of specs) details.append(this.#field(spec, onChange));
       container.append(details);
     }
+    if (later && this.waiting.size) {
+      const next = () => {
+        const details = this.waiting.keys().next().value;
+        if (details) this.#build(details);
+        if (this.waiting.size) later(next);
+      };
+      later(next);
+    }
+  }
+
+  // A row not built yet: its value kept as its input would keep it; marking it invalid builds it.
+  #unbuilt(spec, details) {
+    const flag = isFlag(spec);
+    const kept = { written: false, value: flag ? 0 : '' };
+    return {
+      spec,
+      kept,
+      read: () => (flag ? kept.value : readNumber(kept.value)),
+      write: (v) => {
+        kept.written = true;
+        kept.value = flag ? (Number(v) !== 0 ? 1 : 0) : numberText(v);
+      },
+      setInvalid: (bad) => {
+        if (bad) {
+          this.#build(details);
+          this.fields.get(spec.key).setInvalid(true);
+        }
+      },
+      text: () => String(kept.value),
+    };
+  }
+
+  // Builds the rows of a group that waits (its kept values written into them).
+  #build(details) {
+    const specs = this.waiting.get(details);
+    if (!specs) return;
+    this.waiting.delete(details);
+    const rows = [];
+    for (const spec of specs) {
+      const { kept } = this.fields.get(spec.key);
+      rows.push(this.#field(spec, this.onChange));
+      if (kept.written) this.fields.get(spec.key).write(kept.value);
+    }
+    details.append(...rows);
+  }
+
+  // Builds every row still waiting.
+  buildAll() {
+    for (const details of [...this.waiting.keys()]) this.#build(details);
+  }
+
+  // The input of row `key` (its group built first when it waits), or null.
+  element(key) {
+    const field = this.fields.get(key);
+    if (!field) return null;
+    if (field.kept) for (const [details, specs] of this.waiting) if (specs.includes(field.spec)) this.#build(details);
+    return document.getElementById(`param-${key}`);
+  }
+
+  // Whether the table has row `key`.
+  has(key) {
+    return this.fields.has(key);
+  }
+
+  // The text in row `key`'s input ('' for none), built or not.
+  text(key) {
+    return this.fields.get(key)?.text() ?? '';
   }
 
   #field(spec, report) {
@@ -70,6 +162,7 @@ export class ParamPanel {
         read: () => (box.checked ? 1 : 0),
         write: (v) => { box.checked = Number(v) !== 0; },
         setInvalid: () => {},
+        text: () => (box.checked ? '1' : '0'),
       });
       return row;
     }
@@ -100,9 +193,10 @@ export class ParamPanel {
     this.fields.set(spec.key, {
       spec,
       // Valid numbers go as numbers, anything else as text: the core checks both and says what is wrong.
-      read: () => (number.value.trim() !== '' && Number.isFinite(Number(number.value)) ? Number(number.value) : number.value),
+      read: () => readNumber(number.value),
       write: (v) => { number.value = String(v); toRange(v); },
       setInvalid: (bad) => { number.setAttribute('aria-invalid', bad ? 'true' : 'false'); },
+      text: () => number.value,
     });
     return row;
   }

@@ -21,8 +21,10 @@ export const simpleRows = (paramTable) => paramTable.filter((spec) => typeof spe
 
 export class GettingStarted {
   // container: an element to fill; paramTable: the worker's table; years: the Years input;
-  // openRow(key): shows a row of the full table (opens its section, focuses it).
-  constructor(container, paramTable, years, openRow) {
+  // openRow(key): shows a row of the full table (opens its section, focuses it); rows: the full
+  // table's rows ({has(key), text(key), element(key)}: the ParamPanel, whose closed groups may not be built
+  // yet: a control reads its row's value through text() and asks for the row's input only to write it).
+  constructor(container, paramTable, years, openRow, rows) {
     this.controls = [];
     const box = el('details', { class: 'getting-started', open: '' });
     box.append(el('summary', {}, 'Getting started'));
@@ -37,14 +39,13 @@ export class GettingStarted {
     const group = el('div', { class: 'simple-controls', role: 'group', 'aria-label': 'Main controls' });
     group.append(this.#control({
       key: 'years', label: 'Age', unit: 'years', range: { min: Number(years.min), max: Number(years.max), integer: true },
-      help: 'How many years the tree has grown.', target: years, row: 'Years',
+      help: 'How many years the tree has grown.', target: { text: () => years.value, element: () => years }, row: 'Years',
     }));
     for (const spec of simpleRows(paramTable)) {
-      const target = document.getElementById(`param-${spec.key}`);
-      if (!target) continue;
+      if (!rows.has(spec.key)) continue;
       group.append(this.#control({
         key: spec.key, label: spec.simple, unit: spec.unit, range: spec,
-        help: spec.simple_help || spec.help, target,
+        help: spec.simple_help || spec.help, target: { text: () => rows.text(spec.key), element: () => rows.element(spec.key) },
         row: [spec.key, spec.symbol].filter(Boolean).join(', '), openRow: () => openRow(spec.key),
       }));
     }
@@ -71,8 +72,9 @@ export class GettingStarted {
       if (p !== null) range.value = p;
     };
     const write = (value) => {
-      target.value = value;
-      target.dispatchEvent(new Event('input', { bubbles: true }));
+      const input = target.element();
+      input.value = value;
+      input.dispatchEvent(new Event('input', { bubbles: true }));
     };
     range.addEventListener('input', () => {
       number.value = scale.value(range.value);
@@ -101,8 +103,8 @@ export class GettingStarted {
   sync() {
     for (const c of this.controls) {
       if (document.activeElement === c.number) continue;  // the user is typing here
-      c.number.value = c.target.value;
-      c.toRange(c.target.value);
+      c.number.value = c.target.text();
+      c.toRange(c.target.text());
     }
   }
 }

@@ -5,8 +5,13 @@
 import { FrameTimes } from '../shell/study_page.js';
 import { bumpHook, setHooks } from '../shell/test_hooks.js';
 
+// A count with thousands commas, as toLocaleString('en-US') writes it ("1,234,567"), without ICU:
+// the page's first toLocaleString builds its number formatter, 12 ms of main-thread CPU (67 ms of
+// wall time at load 8) in the first frame's message during the tree page's load (issue 32 item 5).
+export const withCommas = (n) => (Number.isSafeInteger(n) ? String(n).replace(/\B(?=(\d{3})+$)/g, ',') : n.toLocaleString('en-US'));
+
 // What a frame draws, as the stats line says it: "tris N · draw calls M".
-const frameSize = (drawn) => `tris ${Math.round(drawn.triangles).toLocaleString('en-US')} · draw calls ${drawn.drawCalls}`;
+const frameSize = (drawn) => `tris ${withCommas(Math.round(drawn.triangles))} · draw calls ${drawn.drawCalls}`;
 
 export class RenderTable {
   // table: the <table> with data-row / data-full cells; column: the header cell of the view
@@ -21,7 +26,7 @@ export class RenderTable {
   // One cell: column 'row' (this view) or 'full'; key as in the table's data-* attributes.
   set(column, key, value) {
     const cell = this.table.querySelector(`[data-${column}="${key}"]`);
-    if (cell) cell.textContent = typeof value === 'number' ? value.toLocaleString('en-US') : String(value);
+    if (cell) cell.textContent = typeof value === 'number' ? withCommas(value) : String(value);
   }
 
   // A frame drawn ({triangles, drawCalls, cpuMs, mode}, as Renderer.render returns it).

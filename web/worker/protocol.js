@@ -71,8 +71,9 @@
  * @typedef {{atlasSize: number, bark: MeshPart, leaves: MeshPart, flowers: MeshPart}} HybridAtlas
  * @typedef {Envelope & {type: 'tree', stats: Object, mesh: {bark: MeshPart, leaves: MeshPart,
  *   flowers: MeshPart}, hybrid: HybridAtlas|null, swayNodes: number, grown: boolean,
- *   stages: string[]|null, buffers: {reused: number, fresh: number}, workerMs: number|null}}
- *   TreeMessage (workerMs: a grow's wall time in the worker, from its request to this message)
+ *   stages: string[]|null, buffers: {reused: number, fresh: number}, workerMs: number|null, builtMs: number|null}}
+ *   TreeMessage (workerMs: a grow's wall time in the worker, from its request to this message, the
+ *   mesh's copies out of the heap included; builtMs: from its request to the mesh built)
  *   grown: false when the tree on screen was re-meshed, re-skinned or re-viewed (restage), not
  *   grown again; stages: then the stages core TreeRun::Update re-did ('mesh', 'sway', 'view').
  */
