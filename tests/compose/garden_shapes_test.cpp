@@ -165,12 +165,12 @@ TEST(GardenShapes, AShadedGardensGlbKeepsAtMostShapesMeshesAVariant) {
       }
       const PlacedTree& p = shared->planting().trees[e.tree];
       const glm::dvec3 c = shared->CrownCentroid(e.tree);
-      const double own = std::atan2(c.x - p.x, c.z - p.z);
+      const double own_dir = std::atan2(c.x - p.x, c.z - p.z);
       const double a = e.yaw_deg * det::kPi / 180.0;
       const double x = std::cos(a) * local.x + std::sin(a) * local.z;
       const double z = -std::sin(a) * local.x + std::cos(a) * local.z;
       const double drawn_dir = std::atan2(x, z);
-      EXPECT_NEAR(std::remainder(drawn_dir - own, 2 * det::kPi), 0.0, 1e-6) << e.tree;
+      EXPECT_NEAR(std::remainder(drawn_dir - own_dir, 2 * det::kPi), 0.0, 1e-6) << e.tree;
       ++turned;
     }
   }
