@@ -434,10 +434,10 @@ Status GardenRun::GrowIvyYear() {
   const ivy::IvyCosts costs = GardenIvyCosts();
   const double per_new = kGardenIvyMeshSecondsPerTriangle + costs.triangle_build;
   const double kept_d = static_cast<double>(kept), trunks_d = triangles - kept_d;
-  const Estimate support{(triangles + kept_d) * kIvySupportBytesPerTriangle,
-                         ((kept_new ? kept_d : 0) + trunks_d) * per_new +
-                             triangles * kGardenIvyJoinSecondsPerTriangle,
-                         "the ivy's support (" + FormatCount(triangles) + " triangles)"};
+  const Estimate support{
+      (triangles + kept_d) * kIvySupportBytesPerTriangle,
+      ((kept_new ? kept_d : 0) + trunks_d) * per_new + triangles * kGardenIvyJoinSecondsPerTriangle,
+      "the ivy's support (" + FormatCount(triangles) + " triangles)"};
   if (!ivy_) {
     // Each seed, placed once (the first year): the support point nearest to a point just outside
     // its object's footprint (south, 0.3 m up) or its trunk's foot (south, 0.3 m up).

@@ -33,8 +33,9 @@ inline constexpr char kIvyStatsChange[] =
 inline constexpr double kIvyBaseBytes = 64.0 * 1024 * 1024;
 
 // What the ivy's time estimates count a unit of work at, in seconds. The defaults are the study's
-// own (docs/budgets.md "Ivy": the slowest of several runs on its scenes, times a margin); a composed
-// run passes its measured figures (compose/garden_run.h GardenIvyCosts), as the moss's MossCosts.
+// own (docs/budgets.md "Ivy": the slowest of several runs on its scenes, times a margin); a
+// composed run passes its measured figures (compose/garden_run.h GardenIvyCosts), as the moss's
+// MossCosts.
 struct IvyCosts {
   double triangle_build = 3e-6;  // a final support triangle: subdividing it and its BVH
   double bud_step = 0.6e-6;      // a bud a step: PreOrder, rule choice, ΣN and Alive

@@ -105,7 +105,7 @@ class IvySupport {
   const geom::TriMesh* attach() const { return obstacles_ > 0 ? &attach_ : nullptr; }
   Support ForGrow() const;                                // what Grow climbs
   const Estimate& estimate() const { return estimate_; }  // the support's, with a tree's seconds
-  const IvyCosts& costs() const { return costs_; }  // IvySupportOptions::costs: the runs' too
+  const IvyCosts& costs() const { return costs_; }        // IvySupportOptions::costs: the runs' too
   const std::string& truncated_by() const { return truncated_by_; }
   double ms_bvh() const { return ms_bvh_; }  // building the BVHs (timing, not compared)
   // Its largest extent (0 on the free replay) and its own paper pixels per unit (IvyPxPerUnit with

@@ -550,8 +550,9 @@ TEST(Garden, TheIvyGrowsYearByYearOnTheTrunksOfEachYear) {
 // and docs/garden-model.md "The ivy's estimate"). Time: the garden's own figures (GardenIvyCosts,
 // not the ivy study's) are in the ivy's limits; the estimate prices every candidate tested and
 // every year's support, and the rest of it (the bud-steps) stays under the candidates' and
-// supports' share, so an estimate that dropped a count or grew a term by a multiple fails. Memory: the ivy's own structures as held at the end (its buds, internodes and
-// axes, the last support's mesh and BVH), against the estimate above the process's base.
+// supports' share, so an estimate that dropped a count or grew a term by a multiple fails. Memory:
+// the ivy's own structures as held at the end (its buds, internodes and axes, the last support's
+// mesh and BVH), against the estimate above the process's base.
 TEST(Garden, TheIvysEstimateCountsItsWork) {
   GardenState s = SmallGarden();
   ASSERT_TRUE(s.params.Set(GardenParam::kDensity, 0).ok());
