@@ -47,6 +47,7 @@ for (const g of GARDENS) {
     note: 'niwa garden grow --stats: the budget\'s estimates over the CPU time of the same work',
     moss_estimate_s: round(e.moss_s ?? 0), moss_cpu_s: round(mossCpu), moss_ratio: mossCpu > 0 ? round(e.moss_s / mossCpu) : null,
     ivy_estimate_s: round(e.ivy_s ?? 0), ivy_cpu_s: round(ivyCpu), ivy_ratio: ivyCpu > 0 ? round((e.ivy_s ?? 0) / ivyCpu) : null,
+    ivy_support_estimate_s: round(e.ivy_support_s ?? 0), ivy_support_cpu_s: round((stats.ms_ivy_support_cpu ?? 0) / 1000),
     ivy_steps: stats.ivy?.steps ?? null, ivy_internodes: stats.ivy?.internodes ?? null,
     moss_cells: stats.moss?.cells ?? null, moss_days: stats.moss?.days ?? null,
     truncated_by: stats.truncated_by ?? null,

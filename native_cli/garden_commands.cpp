@@ -165,8 +165,9 @@ int RunGardenGrow(const GardenOptions& o, std::ostream& out) {
     j["ms_moss_cpu"] = run->cpu_ms_moss();  // the same in the process's CPU time
     j["ms_ivy"] = run->ms_ivy();            // the ivy's years: its supports and its growth
     j["ms_ivy_support"] = run->ms_ivy_support();
-    j["ms_ivy_cpu"] = run->cpu_ms_ivy();  // ms_ivy in the process's CPU time
-    j["ms_bark"] = run->ms_bark();        // the simulated barks (bark 1), after the clock
+    j["ms_ivy_cpu"] = run->cpu_ms_ivy();                  // ms_ivy in the process's CPU time
+    j["ms_ivy_support_cpu"] = run->cpu_ms_ivy_support();  // ms_ivy_support in CPU time
+    j["ms_bark"] = run->ms_bark();  // the simulated barks (bark 1), after the clock
     j["ms_trees"] = Ms(t1, t2) - run->ms_ivy() - (run->ms_moss() - moss_start_ms) - run->ms_bark();
     j["ms_growth"] = run->ms_growth();  // within ms_trees: the trees' own years
     j["ms_export"] = Ms(t2, t3);

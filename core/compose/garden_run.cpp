@@ -330,15 +330,8 @@ namespace {
 
 // Trees whose trunk stands within this of an ivy seed's foot lend their bark to the ivy's support.
 constexpr double kIvyTreeReach = 6;
-// Bytes and seconds the ivy's support takes per triangle (its mesh and BVHs), as ivy_budget's.
-constexpr double kIvySupportBytesPerTriangle = 160, kIvySupportSecondsPerTriangle = 1e-6;
-// The garden's ivy, measured (docs/garden-model.md "The ivy's estimate"; CPU time natively, now
-// set beside the estimate by scripts/bench; tests/compose/garden_test.cpp
-// TheIvysEstimateCountsItsWork holds the estimate to these counted): a support triangle's BVH, on
-// top of kIvySupportSecondsPerTriangle for its mesh (together 1.5 µs against about 1.0-1.1
-// measured; ivy_budget's kNsPerTriangleBuild is 3000 alone), and a candidate position tested on the
-// garden's supports (ivy_budget's kNsPerCandidate is 1500), in ns.
-constexpr double kGardenIvyNsPerTriangleBuild = 500, kGardenIvyNsPerCandidate = 1100;
+// Bytes the ivy's support takes per triangle (its mesh and BVHs), as ivy_budget's.
+constexpr double kIvySupportBytesPerTriangle = 160;
 
 void AppendMoved(geom::TriMesh* into, const geom::TriMesh& part, double x, double y, double z,
                  double rot_deg) {
@@ -353,6 +346,19 @@ void AppendMoved(geom::TriMesh* into, const geom::TriMesh& part, double x, doubl
 }
 
 }  // namespace
+
+ivy::IvyCosts GardenIvyCosts() {
+  // CPU time natively (docs/garden-model.md "The ivy's estimate"; set beside the estimate by
+  // bench/garden_estimates.mjs; tests/compose/garden_test.cpp TheIvysEstimateCountsItsWork holds
+  // the estimate to these counted).
+  // The scale garden grown to its 900 steps (25.5 M candidates, 57.6 M bud-steps, 14.7 M support
+  // triangles over its 15 years; a year at a time, 15 points) and the small garden of that test.
+  ivy::IvyCosts c;
+  c.triangle_build = 0.3e-6;  // a support triangle's BVH (0.34-0.59 µs with its mesh measured)
+  c.candidate = 1.0e-6;       // a candidate position tested: 0.66-0.99 µs measured
+  c.bud_step = 0.15e-6;       // a bud a step: 0.12 µs fitted beside the candidates
+  return c;
+}
 
 Status GardenRun::GrowIvyYear() {
   // The ivy's steps of garden year year_ (docs/garden-model.md "One clock"), on the garden as it
@@ -371,12 +377,18 @@ Status GardenRun::GrowIvyYear() {
   scene.name = "garden";
   scene.description = "the garden's ground, objects and trunks (metres)";
   scene.px_per_unit = 1000;  // metres: the ivy's px are mm
-  scene.mesh = scene_.ground.Mesh();
-  scene.mesh.normals.clear();
-  scene.mesh.uvs.clear();
-  for (const PlacedObject& o : scene_.objects) AppendMoved(&scene.mesh, o.mesh, 0, 0, 0, 0);
-  // The ground and the objects are the same every year: a bud anchored there keeps its triangle.
-  const auto kept = static_cast<uint32_t>(scene.mesh.triangle_count());
+  // The ground and the objects are the same every year: a bud anchored there keeps its triangle,
+  // and their mesh is made once (their BVH too, below), the trunks' part after it each year.
+  const bool kept_new = !ivy_kept_meshed_;
+  if (kept_new) {
+    ivy_kept_mesh_ = scene_.ground.Mesh();
+    ivy_kept_mesh_.normals.clear();
+    ivy_kept_mesh_.uvs.clear();
+    for (const PlacedObject& o : scene_.objects) AppendMoved(&ivy_kept_mesh_, o.mesh, 0, 0, 0, 0);
+    ivy_kept_meshed_ = true;
+  }
+  const auto kept = static_cast<uint32_t>(ivy_kept_mesh_.triangle_count());
+  geom::TriMesh trunks;
   std::vector<glm::dvec3> feet;
   for (const std::string& on : state_.ivy_on) {
     Result<GardenIvyTarget> t = ParseIvyTarget(on, state_);
@@ -406,12 +418,26 @@ Status GardenRun::GrowIvyYear() {
       bare.look->autumn = AutumnColour::kRedOrange;
       bark_of_group[g] = BarkTriMesh(BuildTreeMesh(groups_[g].tree(), bare).bark);
     }
-    AppendMoved(&scene.mesh, bark_of_group[g], p.x, p.y, p.z, p.rot);
+    AppendMoved(&trunks, bark_of_group[g], p.x, p.y, p.z, p.rot);
   }
+  // The year's support: the kept part, then the trunks (the same floats and order as one mesh
+  // made at once).
+  scene.mesh = ivy_kept_mesh_;
+  const auto trunks_base = static_cast<uint32_t>(scene.mesh.positions.size());
+  scene.mesh.positions.insert(scene.mesh.positions.end(), trunks.positions.begin(),
+                              trunks.positions.end());
+  for (uint32_t i : trunks.indices) scene.mesh.indices.push_back(trunks_base + i);
   const double triangles = static_cast<double>(scene.mesh.triangle_count());
-  const Estimate support{triangles * kIvySupportBytesPerTriangle,
-                         triangles * kIvySupportSecondsPerTriangle,
-                         "the ivy's support (" + FormatCount(triangles) + " triangles)"};
+  // Its estimate: each triangle meshed and its BVH built when new (the kept part in the ivy's
+  // first year, the trunks every year), every triangle joined and copied each year; its memory
+  // the year's support and the kept part held beside it.
+  const ivy::IvyCosts costs = GardenIvyCosts();
+  const double per_new = kGardenIvyMeshSecondsPerTriangle + costs.triangle_build;
+  const double kept_d = static_cast<double>(kept), trunks_d = triangles - kept_d;
+  const Estimate support{
+      (triangles + kept_d) * kIvySupportBytesPerTriangle,
+      ((kept_new ? kept_d : 0) + trunks_d) * per_new + triangles * kGardenIvyJoinSecondsPerTriangle,
+      "the ivy's support (" + FormatCount(triangles) + " triangles)"};
   if (!ivy_) {
     // Each seed, placed once (the first year): the support point nearest to a point just outside
     // its object's footprint (south, 0.3 m up) or its trunk's foot (south, 0.3 m up).
@@ -465,9 +491,19 @@ Status GardenRun::GrowIvyYear() {
   ivy::IvySupportOptions options = ivy::IvySupportOptions::For(ivy_state);
   options.change = change;
   options.check_budget = false;  // the ivy's limits count it: a short budget stops the ivy
-  options.ns_per_triangle_build = kGardenIvyNsPerTriangleBuild;
-  Result<std::shared_ptr<const ivy::IvySupport>> prepared = ivy::IvySupport::Prepare(
-      ivy::IvySupportInput::Prepared(std::move(scene), support, ""), options, left);
+  options.costs = costs;         // the growth's (the support's are counted above)
+  ivy::IvySupportInput input = ivy::IvySupportInput::Prepared(std::move(scene), support, "");
+  if (options.accel == ivy::Accel::kBvh && options.subdivide == 0) {
+    // The kept part's BVH built once; each year the trunks' joined to it: the same answers to
+    // every query as one BVH built over the year's support (geom::Bvh::Join).
+    if (!ivy_kept_built_) {
+      ivy_kept_bvh_ = geom::Bvh::Build(ivy_kept_mesh_);
+      ivy_kept_built_ = true;
+    }
+    input.prepared_bvh = geom::Bvh::Join(ivy_kept_bvh_, geom::Bvh::Build(trunks));
+  }
+  Result<std::shared_ptr<const ivy::IvySupport>> prepared =
+      ivy::IvySupport::Prepare(std::move(input), options, left);
   if (!prepared.ok()) return prepared.status();
   ms_ivy_support_ += MsSince(t0);
   cpu_ms_ivy_support_ += 1000.0 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
@@ -475,7 +511,6 @@ Status GardenRun::GrowIvyYear() {
     ivy::IvyRunOptions run_options;
     run_options.change = change;
     run_options.extra_bytes_per_bud = ivy_extra_bytes_per_bud_;
-    run_options.ns_per_candidate = kGardenIvyNsPerCandidate;
     Result<ivy::IvyRun> run = ivy::IvyRun::Start(ivy_state, *prepared, left, run_options);
     if (!run.ok()) return run.status();
     ivy_ = std::make_unique<ivy::IvyRun>(std::move(*run));

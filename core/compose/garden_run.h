@@ -36,6 +36,19 @@
 
 namespace niwa::compose {
 
+// What the garden's ivy counts its work at (ivy::IvyCosts; docs/garden-model.md "The ivy's
+// estimate"): measured in CPU time natively on the garden's supports (its ground, objects and
+// trunks), where the ivy study's own figures (a bud-step 0.6 µs, a candidate 1.5 µs, a triangle's
+// BVH 3 µs) are upper bounds for its scenes, 2-5 times the garden's.
+ivy::IvyCosts GardenIvyCosts();
+// The garden's own time a support triangle, for meshing it (the ground, the objects, the trunks'
+// bark) before the ivy study builds its BVH (GardenIvyCosts().triangle_build).
+inline constexpr double kGardenIvyMeshSecondsPerTriangle = 0.3e-6;
+// The garden's time a support triangle each year for joining the trunks' BVH to the kept part's
+// (geom::Bvh::Join: the copy of both trees and the wide tree made again), and for copying the kept
+// part's mesh into the year's support.
+inline constexpr double kGardenIvyJoinSecondsPerTriangle = 0.05e-6;
+
 // ---- data ----
 
 // One distinct grown tree and the planted trees that are copies of it.
@@ -147,6 +160,9 @@ class GardenRun : public run::StudyRun {
   const Tree* TreeAtYear(int group, int year) const;
   // The garden's ivy once grown (nullptr without ivy seeds, ivy_steps 0 or before Advance).
   const ivy::IvyRun* ivy() const { return ivy_ && ivy_->grown() ? ivy_.get() : nullptr; }
+  // The same while it grows (between garden years; nullptr before year 1 or without ivy): its
+  // model_so_far(), log_so_far() and limits, e.g. the counts beside cpu_ms_ivy() year by year.
+  const ivy::IvyRun* ivy_so_far() const { return ivy_.get(); }
   // The ivy's internodes after each garden year 1, 2, ... (with or without record_years).
   const std::vector<long>& ivy_internodes_by_year() const { return ivy_by_year_; }
   double ms_ivy() const { return ms_ivy_; }
@@ -224,6 +240,12 @@ class GardenRun : public run::StudyRun {
   Status GrowIvyYear();
   std::vector<long> ivy_by_year_;
   bool ivy_done_ = false;  // the ivy is grown to its steps, extinct, stopped, or has none
+  // The part of the ivy's support that is the same every year (the ground and the objects): its
+  // mesh, made in the ivy's first year, and its BVH, built once and joined to each year's trunks'
+  // (geom::Bvh::Join) instead of building the whole support's every year.
+  geom::TriMesh ivy_kept_mesh_;
+  geom::Bvh ivy_kept_bvh_;
+  bool ivy_kept_meshed_ = false, ivy_kept_built_ = false;
   // The simulated bark (compose/garden_bark): the trunks recorded each year, the bark run on each
   // history after the clock, within what the trees' growth and the ivy's support left.
   GardenBarks barks_;

@@ -433,4 +433,41 @@ Bvh Bvh::Build(const TriMesh& mesh, const BvhOptions& options_in) {
   return bvh;
 }
 
+Bvh Bvh::Join(const Bvh& first, const Bvh& second) {
+  if (second.empty()) return first;
+  if (first.empty()) return second;  // no offset: first has no triangles
+  const auto offset = static_cast<uint32_t>(first.order_.size());
+  const auto n1 = static_cast<uint32_t>(first.nodes_.size());
+  Bvh bvh;
+  // Node 0 the new root, its children first's root (1) and second's (2), then first's other nodes
+  // (i -> i + 2) and second's (j -> j + n1 + 1); children stay pairs, leaves keep their order()
+  // ranges (second's after first's).
+  bvh.nodes_.reserve(first.nodes_.size() + second.nodes_.size() + 1);
+  BvhNode root;
+  root.bounds = first.nodes_[0].bounds;
+  root.bounds.Extend(second.nodes_[0].bounds);
+  root.first = 1;
+  root.count = 0;
+  bvh.nodes_.push_back(root);
+  auto moved = [](BvhNode n, uint32_t child_shift, uint32_t order_shift) {
+    n.first += n.is_leaf() ? order_shift : child_shift;
+    return n;
+  };
+  bvh.nodes_.push_back(moved(first.nodes_[0], 2, 0));
+  bvh.nodes_.push_back(moved(second.nodes_[0], n1 + 1, offset));
+  for (std::size_t i = 1; i < first.nodes_.size(); ++i)
+    bvh.nodes_.push_back(moved(first.nodes_[i], 2, 0));
+  for (std::size_t j = 1; j < second.nodes_.size(); ++j)
+    bvh.nodes_.push_back(moved(second.nodes_[j], n1 + 1, offset));
+  bvh.order_.reserve(first.order_.size() + second.order_.size());
+  bvh.order_.insert(bvh.order_.end(), first.order_.begin(), first.order_.end());
+  for (uint32_t t : second.order_) bvh.order_.push_back(t + offset);
+  bvh.corners_.reserve(first.corners_.size() + second.corners_.size());
+  bvh.corners_.insert(bvh.corners_.end(), first.corners_.begin(), first.corners_.end());
+  bvh.corners_.insert(bvh.corners_.end(), second.corners_.begin(), second.corners_.end());
+  bvh.depth_ = std::max(first.depth_, second.depth_) + 1;
+  bvh.BuildWide();
+  return bvh;
+}
+
 }  // namespace niwa::geom

@@ -173,6 +173,13 @@ class Bvh {
   // Degenerate triangles are kept (they never win a query the linear twins would not also give
   // them).
   static Bvh Build(const TriMesh& mesh, const BvhOptions& options = {});
+  // The tree of a mesh made of `first`'s mesh's triangles followed by `second`'s (its triangle
+  // indices offset by first.triangle_count(), its vertices the same floats), from the two trees as
+  // they are: a root over the two roots, then the wide tree again. Not Build's nodes over the
+  // joined mesh, but the same answers to every query (closest_point's and ray_cast's ties go to the
+  // lowest triangle index, so an answer does not depend on the tree's shape). For a part that does
+  // not change (the garden's ground and objects, built once) beside one that does (its trunks).
+  static Bvh Join(const Bvh& first, const Bvh& second);
 
   int node_count() const { return static_cast<int>(nodes_.size()); }
   int depth() const { return depth_; }  // levels; 1 for a single leaf, 0 when empty

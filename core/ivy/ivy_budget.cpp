@@ -22,10 +22,9 @@ constexpr double kBytesPerBud = 2.0 * (200 + 16 + 64) + 8;
 // after Subdivide (which makes new vertices per triangle: 3 × (12 + 12) + 12 = 84) and the BVH's
 // node and reference per triangle (64, measured); the subdivision holds the source and the result.
 constexpr double kBytesPerSubdividedTriangle = 84, kBytesPerBvhTriangle = 64;
-// Times (ns), native release (the slowest of several runs, times a margin).
-constexpr double kNsPerTriangleBuild = 3000;  // subdividing and the BVH, per final triangle
-constexpr double kNsPerBudStep = 600;         // PreOrder, rule choice, ΣN and Alive per bud a step
-constexpr double kNsPerCandidate = 1500;  // closest point, segment hit and crowding per candidate
+// The growth's and the support's times are IvyCosts' (ivy_budget.h): 3 µs a final triangle built,
+// 0.6 µs a bud-step and 1.5 µs a candidate by default, native release (the slowest of several runs,
+// times a margin).
 
 // --stats (MeasureIvy): a brute-force triangle test (closest point or segment crossing), a pair
 // of the overlap sweep tested by distance, and per bud the L-string (about 100 bytes printed, 5 ×
@@ -89,23 +88,22 @@ Estimate EstimateIvySupport(const IvySupportSize& s) {
       copies * (after * kBytesPerSubdividedTriangle + (s.bvh ? after * kBytesPerBvhTriangle : 0)) +
       (s.levels > 0 ? s.triangles * kBytesPerSubdividedTriangle : 0);
   e.memory_bytes += kBaseBytes;
-  e.seconds = copies * after *
-              (s.ns_per_triangle_build >= 0 ? s.ns_per_triangle_build : kNsPerTriangleBuild) * 1e-9;
+  e.seconds = copies * after * s.costs.triangle_build;
   e.what = s.levels > 0 ? "subdividing the support to " + FormatCount(after) + " triangles"
                         : "holding the support (" + FormatCount(after) + " triangles)";
   return e;
 }
 
 IvyGrowLimits IvyLimits(const IvyParams& params, const Budget& budget, const Estimate& support,
-                        bool has_support) {
+                        bool has_support, const IvyCosts& costs) {
   IvyGrowLimits l;
   l.max_bytes = static_cast<double>(budget.memory_bytes);
   l.max_seconds = budget.seconds;
   l.base_bytes = support.memory_bytes;  // the process and the support
   l.bytes_per_bud = kBytesPerBud;
   l.seconds_before = support.seconds;
-  l.seconds_per_bud_step = kNsPerBudStep * 1e-9;
-  l.seconds_per_candidate = kNsPerCandidate * 1e-9;
+  l.seconds_per_bud_step = costs.bud_step;
+  l.seconds_per_candidate = costs.candidate;
   // The walk's n_c · (R_max + 1), the tangent fan's directions when it is on, and a hanging
   // tendril's one when "hang" is.
   l.candidates_per_search =

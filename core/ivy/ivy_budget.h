@@ -32,6 +32,16 @@ inline constexpr char kIvyStatsChange[] =
 // The process, its tables and code: every ivy estimate's memory starts at it.
 inline constexpr double kIvyBaseBytes = 64.0 * 1024 * 1024;
 
+// What the ivy's time estimates count a unit of work at, in seconds. The defaults are the study's
+// own (docs/budgets.md "Ivy": the slowest of several runs on its scenes, times a margin); a
+// composed run passes its measured figures (compose/garden_run.h GardenIvyCosts), as the moss's
+// MossCosts.
+struct IvyCosts {
+  double triangle_build = 3e-6;  // a final support triangle: subdividing it and its BVH
+  double bud_step = 0.6e-6;      // a bud a step: PreOrder, rule choice, ΣN and Alive
+  double candidate = 1.5e-6;     // a candidate position: closest point, segment hit, crowding
+};
+
 struct IvyGrowLimits {
   double max_bytes = -1, max_seconds = -1;
   double base_bytes = 0, bytes_per_bud = 0;
@@ -50,18 +60,18 @@ struct IvySupportSize {
   int levels = 0;          // --subdivide K
   bool bvh = true;         // --accel bvh (the linear twin builds none)
   bool obstacles = false;  // a second (attach) mesh and BVH
-  // Seconds a final triangle takes to build (subdividing and the BVH); negative: the study's
-  // constant (kNsPerTriangleBuild, docs/budgets.md). A caller that measured its own sets it.
-  double ns_per_triangle_build = -1;
+  // What a final triangle takes to build (IvyCosts::triangle_build; the study's by default).
+  IvyCosts costs;
 };
 // Memory and time of the process with its support (the mesh, its subdivision and BVH, held while
 // the ivy grows); `what` names it ("subdividing the support to 4,194,304 triangles").
 Estimate EstimateIvySupport(const IvySupportSize& support);
 
 // The limits of growing `params` within `budget` on top of `support` (already held);
-// `has_support` false: the free replay, whose searches evaluate no candidates.
+// `has_support` false: the free replay, whose searches evaluate no candidates. The bud-steps and
+// candidates are counted at `costs` (the study's by default).
 IvyGrowLimits IvyLimits(const IvyParams& params, const Budget& budget, const Estimate& support,
-                        bool has_support);
+                        bool has_support, const IvyCosts& costs = IvyCosts{});
 
 // Grow's check before step `step` of `steps`: "" when the worst case after the step fits, else the
 // truncation line ("--max-memory: stopped at step 37 of 10000: more buds would need more than 2 GB;

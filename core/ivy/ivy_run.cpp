@@ -206,7 +206,13 @@ Result<std::shared_ptr<const IvySupport>> IvySupport::Prepare(IvySupportInput in
   size.levels = s.scene_.free ? 0 : levels;
   size.bvh = options.accel == Accel::kBvh;
   size.obstacles = s.is_mesh_ && (options.mesh_attach_always_counted || s.obstacles_ > 0);
-  size.ns_per_triangle_build = options.ns_per_triangle_build;
+  size.costs = options.costs;
+  s.costs_ = options.costs;
+  // A BVH made by the caller is used as it is (its time is in the prepared estimate).
+  const bool own_bvh = input.prepared_bvh.has_value() && levels == 0 && !s.scene_.free &&
+                       options.accel == Accel::kBvh &&
+                       input.prepared_bvh->triangle_count() == s.scene_.mesh.triangle_count();
+  if (own_bvh) size.costs.triangle_build = 0;
   s.estimate_ = EstimateIvySupport(size);
   // A prepared support's building (a tree's growth and bark) took its time before the ivy's.
   s.estimate_.seconds += prepared_seconds;
@@ -219,7 +225,10 @@ Result<std::shared_ptr<const IvySupport>> IvySupport::Prepare(IvySupportInput in
   if (levels > 0 && !s.scene_.free) s.scene_.mesh = geom::Subdivide(s.scene_.mesh, levels);
   const auto t0 = Clock::now();
   s.accel_ = options.accel;
-  if (!s.scene_.free && s.accel_ == Accel::kBvh) s.bvh_ = geom::Bvh::Build(s.scene_.mesh);
+  if (own_bvh)
+    s.bvh_ = std::move(*input.prepared_bvh);
+  else if (!s.scene_.free && s.accel_ == Accel::kBvh)
+    s.bvh_ = geom::Bvh::Build(s.scene_.mesh);
   if (s.obstacles_ > 0 && s.accel_ == Accel::kBvh) s.attach_bvh_ = geom::Bvh::Build(s.attach_);
   if (s.is_mesh_ && options.front_seed && s.accel_ == Accel::kBvh) {
     AddFrontSeed(s.obstacles_ > 0 ? s.attach_ : s.scene_.mesh,
@@ -281,10 +290,8 @@ const Support* IvyRun::LeafSupport() const {
 }
 
 void IvyRun::SetLimits() {
-  limits_ = IvyLimits(params_, budget_, support_->estimate(), !support_->free());
+  limits_ = IvyLimits(params_, budget_, support_->estimate(), !support_->free(), support_->costs());
   limits_.seconds_before += earlier_supports_seconds_;  // AdvanceOn's earlier supports
-  if (options_.ns_per_candidate >= 0)
-    limits_.seconds_per_candidate = options_.ns_per_candidate * 1e-9;
   limits_.bytes_per_bud += options_.extra_bytes_per_bud;
   // The page's meshes hold each bud's further leaves too (the row leaf_spacing).
   const double leaves_per_bud = IvyLeavesPerBud(params_);

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,11 @@ struct IvySupportInput {
   IvyScene prepared;                  // kPrepared: e.g. compose/ivy_on_tree's bark
   Estimate prepared_estimate;         // kPrepared: building it (its seconds count)
   std::string prepared_truncated_by;  // kPrepared: its stop line, "" if none
+  // kPrepared: the scene's BVH made by the caller (e.g. geom::Bvh::Join of a part built once and
+  // a part built again), its time in prepared_estimate; used as it is when the support is not
+  // subdivided and its queries are kBvh (else Prepare builds its own), and its build is then not
+  // counted again. Must be a tree of that very mesh.
+  std::optional<geom::Bvh> prepared_bvh;
 
   static IvySupportInput Scene(std::string name);
   static IvySupportInput Mesh(geom::TriMesh mesh, std::string name,
@@ -67,8 +73,10 @@ struct IvySupportOptions {
   // A mesh support's estimate counts its attach mesh and BVH: always (the CLI), or only when it
   // has obstacles (the page). Kept apart so both keep their figures.
   bool mesh_attach_always_counted = true;
-  // Nanoseconds a triangle of the support takes to build (IvySupportSize); negative: the study's.
-  double ns_per_triangle_build = -1;
+  // What the estimates count the work at (the study's by default; the garden passes its measured
+  // figures): the support's triangles here, and the growth's bud-steps and candidates in the
+  // limits of every run grown on this support (IvyRun::SetLimits reads IvySupport::costs).
+  IvyCosts costs;
 
   // The options a state asks for (its accel); the rest as above.
   static IvySupportOptions For(const IvyState& state);
@@ -97,6 +105,7 @@ class IvySupport {
   const geom::TriMesh* attach() const { return obstacles_ > 0 ? &attach_ : nullptr; }
   Support ForGrow() const;                                // what Grow climbs
   const Estimate& estimate() const { return estimate_; }  // the support's, with a tree's seconds
+  const IvyCosts& costs() const { return costs_; }        // IvySupportOptions::costs: the runs' too
   const std::string& truncated_by() const { return truncated_by_; }
   double ms_bvh() const { return ms_bvh_; }  // building the BVHs (timing, not compared)
   // Its largest extent (0 on the free replay) and its own paper pixels per unit (IvyPxPerUnit with
@@ -118,6 +127,7 @@ class IvySupport {
   geom::Bvh bvh_, attach_bvh_;
   Accel accel_ = Accel::kBvh;
   Estimate estimate_;
+  IvyCosts costs_;
   std::string truncated_by_;
   double ms_bvh_ = 0;
   double extent_ = 0;
@@ -129,9 +139,6 @@ struct IvyRunOptions {
   double extra_bytes_per_bud = 0;  // held per bud beside the model (the page's meshes)
   std::string change;              // the truncation line's advice ("" = kIvyChange)
   bool build_meshes = false;       // BuildIvyMeshes once grown (the page shows them)
-  // The growth's time per candidate position tested (IvyGrowLimits::seconds_per_candidate), in
-  // ns; negative: the study's constant. The garden sets the figure measured on its supports.
-  double ns_per_candidate = -1;
   // What an export refusal and a statistics refusal tell the user to change.
   std::string export_change = kIvyChange;
   std::string stats_change = kIvyStatsChange;

@@ -557,12 +557,12 @@ TEST(Garden, TheIvyGrowsYearByYearOnTheTrunksOfEachYear) {
 
 // The budget's estimate of the ivy (time and memory) against the work a small garden's ivy did,
 // counted (deterministic: no clock is read; the time each unit takes is measured in scripts/bench
-// and docs/garden-model.md "The ivy's estimate"). Time: the garden's own figures are in the ivy's
-// limits (1.1 µs a candidate position, 1.5 µs a support triangle a year); the estimate prices every
-// candidate tested and every year's support, and the rest of it (the bud-steps) stays under the
-// candidates' and supports' share, so an estimate that dropped a count or grew a term by a
-// multiple fails. Memory: the ivy's own structures as held at the end (its buds, internodes and
-// axes, the last support's mesh and BVH), against the estimate above the process's base.
+// and docs/garden-model.md "The ivy's estimate"). Time: the garden's own figures (GardenIvyCosts,
+// not the ivy study's) are in the ivy's limits; the estimate prices every candidate tested and
+// every year's support, and the rest of it (the bud-steps) stays under the candidates' and
+// supports' share, so an estimate that dropped a count or grew a term by a multiple fails. Memory:
+// the ivy's own structures as held at the end (its buds, internodes and axes, the last support's
+// mesh and BVH), against the estimate above the process's base.
 TEST(Garden, TheIvysEstimateCountsItsWork) {
   GardenState s = SmallGarden();
   ASSERT_TRUE(s.params.Set(GardenParam::kDensity, 0).ok());
@@ -578,14 +578,30 @@ TEST(Garden, TheIvysEstimateCountsItsWork) {
   const ivy::IvyGrowLimits& limits = ivy.limits();
   const ivy::GrowLog& log = ivy.log();
   EXPECT_EQ(log.steps_run, 160);
-  // The garden's measured figures (garden_run.cpp kGardenIvyNsPer*), not the study's 1.5 and 3 µs.
-  constexpr double kPerCandidate = 1.1e-6, kPerTriangleYear = 1.5e-6;
+  // The garden's measured figures, not the study's (which the study alone keeps).
+  const ivy::IvyCosts costs = GardenIvyCosts();
+  const double kPerCandidate = costs.candidate;
+  const double kPerNewTriangle = kGardenIvyMeshSecondsPerTriangle + costs.triangle_build;
   EXPECT_DOUBLE_EQ(limits.seconds_per_candidate, kPerCandidate);
-  // Every year's support counted, each no larger than the last year's (the trunks only widen).
-  const double last_support = kPerTriangleYear * ivy.support().triangles();
-  EXPECT_GT(last_support, 0.0);
-  EXPECT_GE(limits.seconds_before, last_support * (1 - 1e-9));
-  EXPECT_LE(limits.seconds_before, 4 * last_support * (1 + 1e-9));
+  EXPECT_DOUBLE_EQ(limits.seconds_per_bud_step, costs.bud_step);
+  const ivy::IvyGrowLimits study =
+      ivy::IvyLimits(ivy.params(), Budget{}, ivy::EstimateIvySupport({}), true);
+  EXPECT_DOUBLE_EQ(study.seconds_per_bud_step, ivy::IvyCosts{}.bud_step);
+  EXPECT_LT(limits.seconds_per_bud_step, study.seconds_per_bud_step);
+  EXPECT_LT(limits.seconds_per_candidate, study.seconds_per_candidate);
+  // Every year's support counted: the ground and the objects (the kept part) meshed and built once,
+  // each year's trunks (no more than the last year's: they only widen) meshed and built, and every
+  // triangle joined and copied each year.
+  double kept = static_cast<double>(run->scene().ground.Mesh().triangle_count());
+  for (const PlacedObject& o : run->scene().objects)
+    kept += static_cast<double>(o.mesh.triangle_count());
+  const double last = ivy.support().triangles();
+  ASSERT_GT(last, kept) << "the keyaki's trunk is in the support";
+  EXPECT_GE(limits.seconds_before,
+            (kPerNewTriangle + kGardenIvyJoinSecondsPerTriangle) * last * (1 - 1e-9));
+  EXPECT_LE(limits.seconds_before, (kPerNewTriangle * (kept + 4 * (last - kept)) +
+                                    4 * kGardenIvyJoinSecondsPerTriangle * last) *
+                                       (1 + 1e-9));
   const Estimate e = ivy::EstimateIvyGrown(ivy.model(), log, limits);
   const double counted =
       kPerCandidate * static_cast<double>(log.candidates) + limits.seconds_before;

@@ -89,8 +89,7 @@ int CheckWideSubtree(const TriMesh& mesh, const Bvh& bvh, uint32_t w, const Boun
   return depth;
 }
 
-void CheckStructure(const TriMesh& mesh, const BvhOptions& options = {}) {
-  Bvh bvh = Bvh::Build(mesh, options);
+void CheckTree(const TriMesh& mesh, const Bvh& bvh, const BvhOptions& options = {}) {
   std::vector<int> seen(mesh.triangle_count(), 0);
   int depth = CheckSubtree(mesh, bvh, 0, &seen, options.max_leaf_triangles);
   EXPECT_EQ(depth, bvh.depth());
@@ -107,6 +106,19 @@ void CheckStructure(const TriMesh& mesh, const BvhOptions& options = {}) {
   // Leaves of at most L triangles: at least N / L leaves, so at least 2 N / L - 1 nodes.
   const int leaves = static_cast<int>(mesh.triangle_count()) / options.max_leaf_triangles;
   EXPECT_GE(bvh.node_count(), 2 * leaves - 1);
+}
+
+void CheckStructure(const TriMesh& mesh, const BvhOptions& options = {}) {
+  CheckTree(mesh, Bvh::Build(mesh, options), options);
+}
+
+// `a`'s triangles, then `b`'s (as the garden's ivy support: its ground, then its trunks).
+TriMesh Joined(const TriMesh& a, const TriMesh& b) {
+  TriMesh m = a;
+  const auto base = static_cast<uint32_t>(m.positions.size());
+  m.positions.insert(m.positions.end(), b.positions.begin(), b.positions.end());
+  for (uint32_t i : b.indices) m.indices.push_back(base + i);
+  return m;
 }
 
 TEST(Bvh, StructureOnEveryTestMesh) {
@@ -193,6 +205,29 @@ TEST(Bvh, AllAxesTreesAgreeWithLinearToo) {
     EXPECT_EQ(counts.closest_mismatch + counts.ray_mismatch + counts.segment_mismatch, 0)
         << c.name << ": " << counts.first_mismatch;
   }
+}
+
+// Bvh::Join: a tree over a ground of shared edges (closest-point ties between its triangles) and a
+// soup and a sphere standing on it is a valid tree of the joined mesh, and every query answers as
+// the linear twins (so as Build over the joined mesh: the same triangle, the same bits).
+TEST(Bvh, JoinedTreesAnswerAsTheJoinedMesh) {
+  const TriMesh ground = MakePlane(4, 4, 24, 24);
+  const TriMesh sphere = MakeIcosphere(0.5f, 2);
+  const TriMesh soup = test::RandomSoup(500, 3);
+  const Bvh ground_bvh = Bvh::Build(ground);
+  for (const TriMesh* part : {&sphere, &soup}) {
+    const TriMesh mesh = Joined(ground, *part);
+    const Bvh joined = Bvh::Join(ground_bvh, Bvh::Build(*part));
+    CheckTree(mesh, joined);
+    EXPECT_EQ(joined.depth(), 1 + std::max(ground_bvh.depth(), Bvh::Build(*part).depth()));
+    const test::OracleCounts counts = test::CompareWithLinear(mesh, joined, 400, 200);
+    EXPECT_EQ(counts.closest_mismatch + counts.ray_mismatch + counts.segment_mismatch, 0)
+        << counts.first_mismatch;
+  }
+  // An empty part joins to the other tree as it is.
+  const Bvh none = Bvh::Build(TriMesh{});
+  EXPECT_EQ(Bvh::Join(ground_bvh, none).nodes().size(), ground_bvh.nodes().size());
+  EXPECT_EQ(Bvh::Join(none, ground_bvh).order(), ground_bvh.order());
 }
 
 TEST(Bvh, DepthAndNodeCountStaySmallOnALargeWall) {
