@@ -12,6 +12,7 @@
 // worker keeps their requests apart by a client id). Messages are shown as text, never as markup.
 // The shadow root, camera, frame loop and the shared worker are web/shell/embed_element.js's.
 import { EmbedElement, attributeValue } from './web/shell/embed_element.js';
+import { LatestRequest } from './web/shell/latest_request.js';
 import { setHooks } from './web/shell/test_hooks.js';
 import { Renderer } from './web/tree/tree_renderer.js';
 import { viewOf } from './web/gl/buffers.js';
@@ -26,6 +27,8 @@ class NiwaTree extends EmbedElement {
     this.years = 0;
     this.animating = false;
     this.pendingTree = null;
+    // Hybrid mode's draw lists: one request in flight, the newest camera wins.
+    this.viewRequest = new LatestRequest(() => this.worker.post('view', { camera: this.renderer.viewFor(this.camera) }));
   }
 
   // The tree as the layer of the element's Frame (the tree's sun, a ground).
@@ -60,13 +63,7 @@ class NiwaTree extends EmbedElement {
   // Hybrid mode (render_mode 1 in the state): one view request at a time, the newest camera wins.
   requestView() {
     if (!this.hybridOn || !this.renderer) return;
-    if (this.viewInFlight) {
-      this.viewDirty = true;
-      return;
-    }
-    this.viewInFlight = true;
-    this.viewDirty = false;
-    this.worker.post('view', { camera: this.renderer.viewFor(this.camera) });
+    this.viewRequest.request();
   }
 
   // Reads the attributes: state= goes through the core's hash decoder; the others are checked by the
@@ -132,12 +129,12 @@ class NiwaTree extends EmbedElement {
       if (this.renderer) this.showTree(msg);
       else this.pendingTree = msg;
     } else if (msg.type === 'drawList') {
-      this.viewInFlight = false;
+      this.viewRequest.done();
       if (!this.hybridOn || !this.renderer) return;
       this.renderer.setDrawList(msg);
       this.worker.recycle({ cards: msg.cards, lines: msg.lines });  // uploaded: back to the worker
       this.requestFrame();
-      if (this.viewDirty) this.requestView();
+      if (this.viewRequest.wanted) this.requestView();
     } else if (msg.type === 'pose') {
       if (!this.hasAttribute('wind') || !this.renderer) {
         this.worker.post('poseDone');
@@ -163,7 +160,7 @@ class NiwaTree extends EmbedElement {
       this.requestFrame();
     });
     this.hybridOn = Boolean(msg.hybrid);
-    this.viewInFlight = false;
+    this.viewRequest.done();
     if (this.sun) this.renderer.setSun(...this.sun);
     this.worker.post('wind', { play: this.hasAttribute('wind') });
     if (!this.framed) {

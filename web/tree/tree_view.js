@@ -23,6 +23,7 @@ import { FrameLoop } from '../gl/frame_loop.js';
 import { finishGpu } from '../gl/context.js';
 import { viewOf } from '../gl/buffers.js';
 import { atlasGroups, buffersOf, treeGroups } from '../shell/worker_client.js';
+import { LatestRequest } from '../shell/latest_request.js';
 import { Renderer } from './tree_renderer.js';
 
 export class TreeView {
@@ -51,10 +52,10 @@ export class TreeView {
     this.viewsReceived = 0;   // hybrid draw lists installed
     this.viewsAtFrameStart = 0;
     this.hybridOn = false;
-    this.viewInFlight = false;
-    this.viewDirty = false;
-    this.motionInFlight = false;
-    this.motionDirty = false;
+    // The hybrid and motion draw lists: one request each in flight, the newest camera wins.
+    this.viewRequest = new LatestRequest(() => this.toWorker('view', { camera: this.renderer.viewFor(this.camera) }));
+    this.motionRequest = new LatestRequest(() => this.toWorker('view',
+      { camera: this.renderer.viewFor(this.camera), motion: true, atlas: !this.renderer.hasMotionAtlas() }));
     this.motionOff = false;
     this.timing = null;       // {cancelled} while a timing runs
     this.reuse = {};
@@ -137,8 +138,8 @@ export class TreeView {
     } else if (msg.type === 'motionAtlas') {
       this.recycle(atlasGroups(msg.hybrid));
     } else if (msg.type === 'drawList') {
-      if (msg.motion) this.motionInFlight = false;
-      else this.viewInFlight = false;
+      if (msg.motion) this.motionRequest.done();
+      else this.viewRequest.done();
     } else if (msg.type === 'pick') {
       this.post('picked', { id: null });
     } else if (msg.type === 'png') {
@@ -256,13 +257,7 @@ export class TreeView {
   // hysteresis); one request at a time, the newest camera wins.
   requestView() {
     if (!this.hybridOn || !this.renderer) return;
-    if (this.viewInFlight) {
-      this.viewDirty = true;
-      return;
-    }
-    this.viewInFlight = true;
-    this.viewDirty = false;
-    this.toWorker('view', { camera: this.renderer.viewFor(this.camera) });
+    this.viewRequest.request();
   }
 
   // A full-mode tree's cheaper representation while it moves (the governor's cheap levels): its
@@ -270,13 +265,7 @@ export class TreeView {
   // at a time, the newest camera wins; none when the worker cannot build it for this tree.
   requestMotionView() {
     if (this.hybridOn || !this.renderer || this.motionOff) return;
-    if (this.motionInFlight) {
-      this.motionDirty = true;
-      return;
-    }
-    this.motionInFlight = true;
-    this.motionDirty = false;
-    this.toWorker('view', { camera: this.renderer.viewFor(this.camera), motion: true, atlas: !this.renderer.hasMotionAtlas() });
+    this.motionRequest.request();
   }
 
   #countReuse(kind, buffers) {
@@ -308,8 +297,8 @@ export class TreeView {
     });
     renderer.leafLength = msg.leafLength;
     this.hybridOn = Boolean(msg.hybridOn);
-    this.viewInFlight = false;
-    this.motionInFlight = false;
+    this.viewRequest.done();
+    this.motionRequest.done();
     this.motionOff = false;
     this.post('table', { method: 'showHybridCounts', arg: null });
     this.requestView();
@@ -332,13 +321,13 @@ export class TreeView {
 
   on_drawList(msg) {
     if (msg.motion) {
-      this.motionInFlight = false;
+      this.motionRequest.done();
       this.renderer.setMotionDrawList(msg);
       if (this.governor.moving()) this.requestFrame();
-      if (this.motionDirty) this.requestMotionView();
+      if (this.motionRequest.wanted) this.requestMotionView();
       return;
     }
-    this.viewInFlight = false;
+    this.viewRequest.done();
     if (!this.hybridOn) return;
     this.renderer.setDrawList(msg);
     this.viewsReceived += 1;
@@ -347,7 +336,7 @@ export class TreeView {
     this.#countReuse('view', msg.buffers);
     this.post('table', { method: 'showHybridCounts', arg: msg.stats });
     this.requestFrame(true);  // a hybrid frame is cheap: the new list at once, not after the frame in flight
-    if (this.viewDirty) this.requestView();
+    if (this.viewRequest.wanted) this.requestView();
   }
 
   on_pose(msg) {
@@ -404,7 +393,7 @@ export class TreeView {
   // The worker cannot build a cheaper representation for this tree: full frames only.
   on_motionOff() {
     this.motionOff = true;
-    this.motionInFlight = false;
+    this.motionRequest.done();
   }
 
   // Frame time with the GPU's work included (web/gl/frame.js timeFrames); cancelTiming stops it.
