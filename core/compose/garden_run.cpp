@@ -642,9 +642,8 @@ double GardenRun::CrownRadius(int group) const {
 glm::dvec3 GardenRun::CrownCentroid(int t) const {
   const PlacedTree& p = planting_.trees[t];
   const glm::dvec3 local = LocalLeafCentroid(groups_[tree_group_[t]].tree());
-  const double a = p.rot * det::kPi / 180.0;
-  const double c = det::Cos(a), s = det::Sin(a);
-  return {p.x + c * local.x + s * local.z, p.y + local.y, p.z - s * local.x + c * local.z};
+  const glm::dvec2 turned = TurnPlan(local.x, local.z, p.rot);
+  return {p.x + turned.x, p.y + local.y, p.z + turned.y};
 }
 
 std::vector<std::vector<GardenExportTree>> GardenRun::ExportTrees() const {
@@ -831,9 +830,6 @@ Result<gltf::Document> GardenRun::Document() const {
         node.translation = {p0.x, p0.y, p0.z};
         node.rotation = YawQuaternion(first.yaw_deg);
         node.scale = {first.scale, first.scale, first.scale};
-        const double a0 = -first.yaw_deg * det::kPi / 180.0;
-        double s0 = 0, c0 = 1;
-        det::SinCos(a0, &s0, &c0);
         const bool scaled =
             std::any_of(drawn[k].begin(), drawn[k].end(),
                         [&](const GardenExportTree& e) { return e.scale != first.scale; });
@@ -841,11 +837,11 @@ Result<gltf::Document> GardenRun::Document() const {
           const PlacedTree& p = planting_.trees[e.tree];
           // inverse(T0 R0 S0) applied to (p, yaw, scale): turned back by yaw0 about y, then / s0.
           const double dx = p.x - p0.x, dy = p.y - p0.y, dz = p.z - p0.z;
-          const double x = (c0 * dx + s0 * dz) / first.scale,
-                       z = (-s0 * dx + c0 * dz) / first.scale;
+          const glm::dvec2 back = TurnPlan(dx, dz, -first.yaw_deg) / first.scale;
           node.instance_translations.insert(
               node.instance_translations.end(),
-              {static_cast<float>(x), static_cast<float>(dy / first.scale), static_cast<float>(z)});
+              {static_cast<float>(back.x), static_cast<float>(dy / first.scale),
+               static_cast<float>(back.y)});
           const std::array<double, 4> q = YawQuaternion(e.yaw_deg - first.yaw_deg);
           for (double v : q) node.instance_rotations.push_back(static_cast<float>(v));
           if (scaled)

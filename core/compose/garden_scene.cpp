@@ -79,13 +79,6 @@ void FillFromNeighbours(std::vector<double>* h, std::vector<bool> known, int m) 
   }
 }
 
-// The rotation of (x, z) by rot degrees about y (counter-clockwise seen from above: +x towards −z).
-glm::dvec2 TurnPlan(double x, double z, double rot_deg) {
-  const double a = rot_deg * det::kPi / 180.0;
-  const double c = det::Cos(a), s = det::Sin(a);
-  return {c * x + s * z, -s * x + c * z};
-}
-
 void AppendMesh(geom::TriMesh* into, const geom::TriMesh& part) {
   const uint32_t base = static_cast<uint32_t>(into->positions.size());
   into->positions.insert(into->positions.end(), part.positions.begin(), part.positions.end());
@@ -104,6 +97,12 @@ geom::TriMesh Moved(geom::TriMesh mesh, const glm::vec3& by) {
 }
 
 }  // namespace
+
+glm::dvec2 TurnPlan(double x, double z, double rot_deg) {
+  const double a = rot_deg * det::kPi / 180.0;
+  const double c = det::Cos(a), s = det::Sin(a);
+  return {c * x + s * z, -s * x + c * z};
+}
 
 GardenGround::Plane GardenGround::PlaneAt(double x, double z) const {
   if (n <= 0) return {};

@@ -6,6 +6,7 @@
 // (garden_plant.h, garden_run.h), read files (the state carries the PNG bytes), or name a flag.
 #pragma once
 
+#include <glm/vec2.hpp>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,10 @@ struct GardenScene {
 };
 
 // ---- functions ----
+
+// The rotation of (x, z) by rot degrees about y (counter-clockwise seen from above: +x towards −z):
+// how a placed thing's own frame turns into the garden's (its `rot`), the inverse with −rot.
+glm::dvec2 TurnPlan(double x, double z, double rot_deg);
 
 // The ground of the state (its params' size, relief, ground_res; its ground kind) within budget.
 // Errors name "ground.terrain" (the terrain's own field after it), "ground.file" (a heightmap that
