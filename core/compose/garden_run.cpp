@@ -600,8 +600,7 @@ const Tree* GardenRun::TreeAtYear(int group, int year) const {
 
 namespace {
 
-// A tree's leaf-area centroid in its own frame (m; nodes are in cm), and its height (m): the
-// highest alive node.
+// A tree's leaf-area centroid in its own frame (m; nodes are in cm).
 glm::dvec3 LocalLeafCentroid(const Tree& tree) {
   glm::dvec3 sum(0.0);
   double n = 0;
@@ -613,15 +612,6 @@ glm::dvec3 LocalLeafCentroid(const Tree& tree) {
     }
   }
   return n > 0 ? sum / n / 100.0 : glm::dvec3(0.0);
-}
-
-double TreeHeight(const Tree& tree) {
-  double top = 0;
-  for (const Branch& b : tree.branches) {
-    if (!b.alive) continue;
-    for (const glm::vec3& p : b.nodes) top = std::max(top, static_cast<double>(p.y));
-  }
-  return top / 100.0;
 }
 
 // A lean shorter than this (m) has no direction worth turning a shape to.
@@ -665,8 +655,8 @@ std::vector<std::vector<GardenExportTree>> GardenRun::ExportTrees() const {
     for (int k : members) {
       const Tree& tree = groups_[k].tree();
       lean.push_back(LocalLeafCentroid(tree));
-      measured.push_back(
-          {TreeHeight(tree), CrownRadius(k), std::hypot(lean.back().x, lean.back().z)});
+      measured.push_back({ComputeStats(tree).height / 100.0, CrownRadius(k),
+                          std::hypot(lean.back().x, lean.back().z)});
     }
     const std::vector<int> rep_of = ShareShapes(measured, shapes);
     for (std::size_t i = 0; i < members.size(); ++i) {
