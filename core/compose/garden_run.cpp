@@ -636,20 +636,26 @@ glm::dvec3 GardenRun::CrownCentroid(int t) const {
   return {p.x + turned.x, p.y + local.y, p.z + turned.y};
 }
 
-std::vector<std::vector<GardenExportTree>> GardenRun::ExportTrees() const {
-  std::vector<std::vector<GardenExportTree>> out(groups_.size());
-  const int shapes = state_.params.GetInt(GardenParam::kShapes);
-  // The shaded groups of each (species, seed, age), in group order.
+std::vector<std::vector<int>> GardenRun::SharedVariants() const {
+  std::vector<std::vector<int>> out;
+  if (state_.params.GetInt(GardenParam::kShapes) <= 0) return out;
   std::map<std::tuple<std::string, uint64_t, int>, std::vector<int>> variants;
   for (std::size_t k = 0; k < groups_.size(); ++k) {
     const GardenTreeGroup& g = groups_[k];
-    if (shapes > 0 && g.shaded) {
-      variants[{g.species, g.seed, g.age}].push_back(static_cast<int>(k));
-      continue;
-    }
-    for (int t : g.trees) out[k].push_back({t, planting_.trees[t].rot, 1.0});
+    if (g.shaded) variants[{g.species, g.seed, g.age}].push_back(static_cast<int>(k));
   }
-  for (const auto& [key, members] : variants) {
+  for (auto& [key, members] : variants) out.push_back(std::move(members));
+  return out;
+}
+
+std::vector<std::vector<GardenExportTree>> GardenRun::ExportTrees() const {
+  std::vector<std::vector<GardenExportTree>> out(groups_.size());
+  const int shapes = state_.params.GetInt(GardenParam::kShapes);
+  const std::vector<std::vector<int>> variants = SharedVariants();
+  for (std::size_t k = 0; k < groups_.size(); ++k)
+    if (shapes <= 0 || !groups_[k].shaded)
+      for (int t : groups_[k].trees) out[k].push_back({t, planting_.trees[t].rot, 1.0});
+  for (const std::vector<int>& members : variants) {
     std::vector<TreeShape> measured;
     std::vector<glm::dvec3> lean;  // each member's leaf centroid in its own frame
     for (int k : members) {
@@ -931,15 +937,11 @@ Result<Estimate> GardenRun::ExportEstimate(const std::string& format) const {
   // The meshes the .glb holds: one a group, or at most `shapes` for the shaded groups of one
   // (species, seed, age) (an upper bound: the count before the trees have grown).
   const int shapes = state_.params.GetInt(GardenParam::kShapes);
-  std::map<std::tuple<std::string, uint64_t, int>, double> shaded;
-  double groups = 0;
-  for (const GardenTreeGroup& g : groups_) {
-    if (shapes > 0 && g.shaded)
-      shaded[{g.species, g.seed, g.age}] += 1;
-    else
-      groups += 1;
-  }
-  for (const auto& [key, count] : shaded) groups += std::min<double>(count, shapes);
+  const std::vector<std::vector<int>> variants = SharedVariants();
+  double groups = static_cast<double>(groups_.size());
+  for (const std::vector<int>& members : variants)
+    groups -= static_cast<double>(members.size()) -
+              std::min(static_cast<double>(members.size()), static_cast<double>(shapes));
   const double ground_vertices = static_cast<double>(scene_.ground.n + 1) * (scene_.ground.n + 1);
   if (format == "glb") {
     Estimate moss{0, 0, ""};

@@ -147,6 +147,9 @@ class GardenRun : public run::StudyRun {
   // shapes of the trees grown with their neighbours' shade, at most N meshes per (species, seed,
   // age) (compose/garden_shapes.h).
   std::vector<std::vector<GardenExportTree>> ExportTrees() const;
+  // The groups whose meshes `shapes` shares: the shaded groups of each (species, seed, age), in
+  // group order, variants in key order; none with shapes 0.
+  std::vector<std::vector<int>> SharedVariants() const;
   // The leaf-area centroid of planted tree t, in the garden's frame (m).
   glm::dvec3 CrownCentroid(int t) const;
   const std::string& truncated_by() const { return truncated_by_; }
